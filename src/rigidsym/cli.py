@@ -1,0 +1,202 @@
+"""Command-line interface: ``rigidsym verify | report | show`` (and more as they land).
+
+Exit codes: 0 = all as expected, 1 = some computed verdict differs from its expectation,
+2 = bad input (a one-line message naming what was expected).
+"""
+
+from __future__ import annotations
+
+import argparse
+import inspect
+import os
+import sys
+import time
+from collections.abc import Callable
+from pathlib import Path
+
+from .registry import REGISTRY, BadInput, select
+
+__all__ = ["main", "run_checks", "COMMANDS"]
+
+#: extra sub-commands: name -> (add_arguments, run) registered by other modules.
+COMMANDS: dict[str, tuple[Callable, Callable]] = {}
+
+
+def _check_one(eq_id: str):
+    from .checker import check
+    return check(eq_id)
+
+
+def run_checks(ids: list[str], jobs: int = 1, progress: bool = True):
+    """Check ``ids`` (in parallel over ``jobs`` processes), results in the order given."""
+    from rich.progress import Progress
+
+    results = {}
+    with Progress(disable=not progress, transient=True,
+                  console=_console(stderr=True)) as bar:
+        task = bar.add_task("verifying", total=len(ids))
+        if jobs > 1 and len(ids) > 1:
+            import multiprocessing as mp
+
+            ctx = mp.get_context("fork")
+            # big derivations first, so the two workers finish together
+            with ctx.Pool(jobs) as pool:
+                for r in pool.imap_unordered(_check_one, ids):
+                    results[r.id] = r
+                    bar.update(task, advance=1, description=f"verified ({r.id})")
+        else:
+            for i in ids:
+                results[i] = _check_one(i)
+                bar.update(task, advance=1, description=f"verified ({i})")
+    return [results[i] for i in ids]
+
+
+def _console(stderr: bool = False):
+    from rich.console import Console
+    return Console(stderr=stderr, width=120 if not sys.stdout.isatty() else None)
+
+
+def _table(results) -> None:
+    from rich.table import Table
+
+    t = Table(title="rigidsym verify")
+    for col in ("id", "title", "verdict", "method", "seconds"):
+        t.add_column(col)
+    for r in results:
+        style = "" if r.verdict == r.expected else "bold red"
+        v = r.verdict if r.verdict == r.expected else f"{r.verdict} (expected {r.expected})"
+        t.add_row(r.id, r.title[:48], v, r.method, f"{r.seconds:.2f}", style=style)
+    _console().print(t)
+
+
+def cmd_verify(args) -> int:
+    """``rigidsym verify``: decide equations, print a table, optionally write JSON."""
+    ids = select(args.ids, args.section)
+    t0 = time.perf_counter()
+    results = run_checks(ids, jobs=args.jobs, progress=not args.quiet)
+    wall = time.perf_counter() - t0
+    if not args.quiet:
+        _table(results)
+    from .report import summary, to_json
+    if args.json:
+        from .io import write_atomic
+        write_atomic(args.json, to_json(results))
+    off = [r for r in results if r.verdict != r.expected]
+    s = summary(results)
+    print(f"{len(results)} checked in {wall:.1f} s: "
+          + ", ".join(f"{k} {v}" for k, v in s.items()))
+    for r in off:
+        print(f"MISMATCH ({r.id}): computed {r.verdict}, expected {r.expected}: {r.detail}")
+    return 1 if off else 0
+
+
+def cmd_report(args) -> int:
+    """``rigidsym report``: write ``chapter3.md`` and ``chapter3.json`` to ``--out``."""
+    from .io import write_atomic
+    from .report import to_json, to_markdown
+    ids = select(None, None)
+    results = run_checks(ids, jobs=args.jobs, progress=True)
+    out = Path(args.out)
+    write_atomic(out / "chapter3.md", to_markdown(results))
+    write_atomic(out / "chapter3.json", to_json(results, timings=False))
+    for hook in REPORT_HOOKS:
+        hook(out)
+    print(f"wrote {out / 'chapter3.md'} and {out / 'chapter3.json'}")
+    return 1 if any(r.verdict != r.expected for r in results) else 0
+
+
+#: functions ``(out_dir: Path) -> None`` that add files to the report (exercises, figures).
+REPORT_HOOKS: list[Callable] = []
+
+
+def cmd_show(args) -> int:
+    """``rigidsym show ID``: one equation, pretty-printed, with where it is declared."""
+    import sympy as sp
+
+    from .checker import explicit
+    for eq_id in select([args.id], None):
+        eq = REGISTRY[eq_id]
+        st = eq.build()
+        mod = sys.modules[eq.module]
+        src = inspect.getsourcefile(getattr(mod, eq.function.split(".")[0]))
+        print(f"({eq.id}) {eq.title}   [Book: Sec. {eq.section}; kind: {eq.kind}; "
+              f"expected: {eq.expected}]")
+        print(f"declared in {eq.module}.{eq.function}  ({os.path.relpath(src)})")
+        print(f"printed LaTeX: {eq.latex}")
+        for r in st.printed:
+            print("\nprinted:")
+            print(sp.pretty(sp.Eq(r.lhs, r.rhs, evaluate=False) if not hasattr(r.lhs, "shape")
+                            else r.lhs, use_unicode=True), " =")
+            print(sp.pretty(r.rhs, use_unicode=True))
+        if st.corrected:
+            for r in st.corrected:
+                print("\ncorrected:")
+                print(sp.pretty(r.lhs, use_unicode=True), " =")
+                print(sp.pretty(r.rhs, use_unicode=True))
+        if eq.singular:
+            print(f"\nsingular set: {eq.singular}")
+        if st.derived is not None:
+            print("\nderived:")
+            print(sp.pretty(explicit(st.derived), use_unicode=True))
+    return 0
+
+
+def build_parser() -> argparse.ArgumentParser:
+    """The argument parser (sub-commands verify, report, show and registered extras)."""
+    p = argparse.ArgumentParser(prog="rigidsym", description=__doc__.splitlines()[0])
+    sub = p.add_subparsers(dest="command", required=True)
+    jobs = min(2, os.cpu_count() or 1)
+    v = sub.add_parser("verify", help="decide equations of chapter 3")
+    v.add_argument("ids", nargs="*", help="ids like 3.16, 3.96 (all parts), thm3.2.1")
+    v.add_argument("--section", action="append", help="3.2 ... 3.8 (repeatable)")
+    v.add_argument("--json", help="write the results as JSON to this path")
+    v.add_argument("--jobs", type=int, default=jobs, help=f"worker processes (default {jobs})")
+    v.add_argument("--quiet", action="store_true", help="no progress bar or table")
+    v.set_defaults(func=cmd_verify)
+    r = sub.add_parser("report", help="write generated/report/chapter3.{md,json}")
+    r.add_argument("--out", default="generated/report", help="output folder")
+    r.add_argument("--jobs", type=int, default=jobs)
+    r.set_defaults(func=cmd_report)
+    s = sub.add_parser("show", help="show one equation")
+    s.add_argument("id")
+    s.set_defaults(func=cmd_show)
+    for name, (add_args, run) in sorted(COMMANDS.items()):
+        c = sub.add_parser(name, help=(run.__doc__ or "").splitlines()[0])
+        add_args(c)
+        c.set_defaults(func=run)
+    return p
+
+
+def _load_extensions() -> None:
+    """Import optional command modules (code generation, exercises) if present."""
+    import importlib
+    for mod in ("rigidsym.codegen.cli", "derivations.exercises.cli"):
+        try:
+            importlib.import_module(mod)
+        except ModuleNotFoundError as exc:
+            if exc.name is None or not mod.startswith(exc.name):
+                raise
+
+
+def main(argv: list[str] | None = None) -> int:
+    """Entry point of the ``rigidsym`` command; returns the exit code."""
+    _load_extensions()
+    parser = build_parser()
+
+    def _error(message):  # argparse errors are bad input: one line, exit 2
+        print(f"rigidsym: error: {message}", file=sys.stderr)
+        raise SystemExit(2)
+
+    parser.error = _error
+    for sp_ in parser._subparsers._group_actions[0].choices.values():
+        sp_.error = _error
+    args = parser.parse_args(argv)
+    try:
+        return args.func(args)
+    except BadInput as exc:
+        print(f"rigidsym: error: {exc}", file=sys.stderr)
+        return 2
+
+
+if __name__ == "__main__":  # pragma: no cover
+    sys.exit(main())
