@@ -14,10 +14,10 @@ from __future__ import annotations
 
 import sympy as sp
 
-from rigidsym.primitives import cpm, rotation_from_natural_invariants
-from rigidsym.symbols import angle, unit_vector, vector
+from rigidsym.primitives import cpm, rotation_from_natural_invariants, vect
+from rigidsym.symbols import TIME, angle, rotation, unit_vector, vector
 
-__all__ = ["MS", "I3", "O3", "vec", "mat", "displacement_model", "Bk"]
+__all__ = ["MS", "I3", "O3", "vec", "mat", "displacement_model", "Bk", "Mt", "motion_model"]
 
 I3 = sp.Identity(3)
 O3 = sp.ZeroMatrix(3, 3)
@@ -68,3 +68,65 @@ def displacement_model() -> dict:
     im = sp.ImmutableMatrix
     return {Bk.Q: im(Q), Bk.E: im(cpm(e)), Bk.e: im(e), Bk.a: im(a), Bk.p: im(p),
             Bk.a_prime: im(a1), Bk.p_prime: im(p1), Bk.d_A: im(a1 - a), Bk.d_P: im(p1 - p)}
+
+
+class Mt:
+    """The book's symbols for a motion in time (Secs. 3.3-3.5): ``Q(t)``, its rates, points."""
+
+    Q = mat("Q")
+    Q_dot = mat("Qdot")
+    Q_ddot = mat("Qddot")
+    E = mat("E")
+    e = vec("e")
+    e_dot = vec("edot")
+    phi = sp.Symbol("phi", real=True)
+    phi_dot = sp.Symbol("phidot", real=True)
+    Omega = mat("Omega")
+    Omega_dot = mat("Omegadot")
+    omega = vec("omega")
+    omega_dot = vec("omegadot")
+    a = vec("a")
+    a_dot = vec("adot")
+    a_ddot = vec("addot")
+    p = vec("p")
+    p_dot = vec("pdot")
+    p_ddot = vec("pddot")
+
+
+def motion_model(invariants: bool = True) -> dict:
+    """First-principles values for a generic smooth rigid motion.
+
+    With ``invariants=False``, ``Q(t)`` is a generic rotation (rational quaternion jets):
+    much smaller expressions, for statements that do not mention ``e`` or ``phi``; the
+    ``e``, ``E``, ``phi`` entries are then absent from the model.
+
+    ``e(t)`` a unit vector and ``phi(t)`` an angle (their jets are free, the constraint
+    ``e.e = 1`` holds along the motion), ``Q(t)`` from (2.49), a reference point ``a(t)``
+    free, and a body point moving rigidly: ``p(t) = a(t) + Q(t) (p0 - a0)`` with ``p0, a0``
+    free constants, i.e. ``p(t) = a(t) + Q(t) r`` for a constant body vector ``r``.
+    ``Omega = Q_dot Q^T`` and ``omega = vect(Omega)`` are *computed* from the motion.
+    """
+    t = TIME
+    if invariants:
+        e = unit_vector("e", t)
+        phi = angle("phi", t)
+        Q = rotation_from_natural_invariants(e, phi)
+    else:
+        Q = rotation("Q", t)
+    Qd = Q.diff(t)
+    Qdd = Qd.diff(t)
+    Om = Qd * Q.T
+    om = vect(Om)
+    a = vector("a", t)
+    r = vector("r")  # constant body-fixed vector p0 - a0, seen in the reference pose
+    p = a + Q * r
+    im = sp.ImmutableMatrix
+    model = {Mt.Q: im(Q), Mt.Q_dot: im(Qd), Mt.Q_ddot: im(Qdd),
+            Mt.Omega: im(Om), Mt.Omega_dot: im(Om.diff(t)), Mt.omega: im(om),
+            Mt.omega_dot: im(om.diff(t)), Mt.a: im(a), Mt.a_dot: im(a.diff(t)),
+            Mt.a_ddot: im(a.diff(t, 2)), Mt.p: im(p), Mt.p_dot: im(p.diff(t)),
+            Mt.p_ddot: im(p.diff(t, 2))}
+    if invariants:
+        model.update({Mt.E: im(cpm(e)), Mt.e: im(e), Mt.e_dot: im(e.diff(t)), Mt.phi: phi,
+                      Mt.phi_dot: phi.diff(t)})
+    return model

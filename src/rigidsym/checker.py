@@ -105,17 +105,20 @@ def _seed(eq_id: str) -> int:
 
 
 # --------------------------------------------------------------------------- numeric
-def _atoms(exprs) -> list:
-    found: set = set()
-    for e in exprs:
-        for a in sp.sympify(e).atoms(sp.Derivative, AppliedUndef, sp.Symbol):
-            found.add(a)
-    # drop atoms nested inside derivatives / applied functions (e.g. t in e_1(t))
-    nested: set = set()
-    for a in found:
-        if isinstance(a, sp.Derivative | AppliedUndef):
-            nested |= (a.atoms(sp.Symbol) | a.atoms(AppliedUndef)) - {a}
-    return sorted(found - nested, key=sp.default_sort_key)
+def _dummify(exprs) -> tuple[list, list, list]:
+    """Replace derivatives, then applied functions, then symbols by dummies (outside-in,
+    so ``e_1(t)`` inside ``Derivative(e_1(t), t)`` is not mistaken for a lone atom)."""
+    exprs = [sp.sympify(e) for e in exprs]
+    atoms, dummies = [], []
+    for kind in (sp.Derivative, AppliedUndef, sp.Symbol):
+        found = set().union(*(e.atoms(kind) for e in exprs)) if exprs else set()
+        found = sorted((a for a in found if not isinstance(a, sp.Dummy)),
+                       key=sp.default_sort_key)
+        sub = {a: sp.Dummy() for a in found}
+        exprs = [e.xreplace(sub) for e in exprs]
+        atoms += found
+        dummies += [sub[a] for a in found]
+    return atoms, dummies, exprs
 
 
 def numeric_point(plan, rng: random.Random) -> dict:
@@ -147,11 +150,9 @@ def numeric_residual(rels: list[Rel], model: dict, seed: int, points: int = NUME
     flat_l = [e for x in lhs for e in _entries(x)]
     flat_r = [e for x in rhs for e in _entries(x)]
     plan = make_plan(flat_l + flat_r)
-    atoms = _atoms(flat_l + flat_r)
-    dummies = [sp.Dummy() for _ in atoms]
-    sub = dict(zip(atoms, dummies, strict=True))
-    fl = sp.lambdify(dummies, [sp.sympify(e).xreplace(sub) for e in flat_l], modules="mpmath")
-    fr = sp.lambdify(dummies, [sp.sympify(e).xreplace(sub) for e in flat_r], modules="mpmath")
+    atoms, dummies, flat = _dummify(flat_l + flat_r)
+    fl = sp.lambdify(dummies, flat[:len(flat_l)], modules="mpmath", cse=True)
+    fr = sp.lambdify(dummies, flat[len(flat_l):], modules="mpmath", cse=True)
     rng = random.Random(seed)
     worst = mpmath.mpf(0)
     residuals = []

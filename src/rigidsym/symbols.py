@@ -57,20 +57,21 @@ class Constraint:
     timed: bool
 
 
-_CONSTRAINTS: dict[str, Constraint] = {}
+_CONSTRAINTS: dict[tuple[str, bool], Constraint] = {}
 
 
 def _register(c: Constraint) -> None:
+    # keyed by (name, timed): the static e and the e(t) of a motion are different atoms
     for n in c.names:
-        old = _CONSTRAINTS.get(n)
+        old = _CONSTRAINTS.get((n, c.timed))
         if old is not None and old != c:
             raise ValueError(f"atom name {n!r} is already constrained as {old.kind} {old.name!r}")
-        _CONSTRAINTS[n] = c
+        _CONSTRAINTS[(n, c.timed)] = c
 
 
-def constraint_of(name: str) -> Constraint | None:
+def constraint_of(name: str, timed: bool = False) -> Constraint | None:
     """The constraint registered for an atom name, or ``None`` for a free atom."""
-    return _CONSTRAINTS.get(name)
+    return _CONSTRAINTS.get((name, timed))
 
 
 def _atom(name: str, t: sp.Symbol | None):

@@ -56,6 +56,9 @@ SAMPLE_SET_SIZE = 2**32 + 1
 _DEN = 2**16
 #: Node-count limit above which exact cancellation is not attempted.
 CANCEL_NODE_LIMIT = 2500
+#: Degree-bound limit above which exact cancellation is not attempted (multivariate gcds
+#: of high degree can take minutes; Schwartz-Zippel then decides in seconds).
+CANCEL_DEGREE_LIMIT = 160
 #: Points evaluated by the Schwartz-Zippel path.
 SZ_POINTS = 12
 
@@ -74,9 +77,13 @@ def _atom_name(a) -> str:
     raise TypeError(a)
 
 
+def _constraint(a):
+    return constraint_of(_atom_name(a), isinstance(a, AppliedUndef))
+
+
 def _is_angle_atom(a) -> bool:
     if isinstance(a, sp.Symbol | AppliedUndef):
-        c = constraint_of(_atom_name(a))
+        c = _constraint(a)
         return c is not None and c.kind == "angle"
     return False
 
@@ -91,8 +98,15 @@ def _deriv_order(d: sp.Derivative) -> int:
 
 
 # --------------------------------------------------------------------------- jets
-def _jet_symbol(name: str, k: int) -> sp.Symbol:
-    return sp.Symbol(name if k == 0 else f"{name}__d{k}", real=True)
+def _jet_symbol(name: str, k: int, timed: bool = True) -> sp.Symbol:
+    """Symbol for the k-th time derivative of atom ``name`` (``name(t)``, ``name__d1`` …).
+
+    Static atoms keep their own symbol; time-dependent ones get names that cannot clash
+    with a static atom of the same book name.
+    """
+    if not timed:
+        return sp.Symbol(name, real=True)
+    return sp.Symbol(f"{name}(t)" if k == 0 else f"{name}__d{k}", real=True)
 
 
 def _replace_jets(expr, funcs: dict[str, sp.Expr]):
@@ -114,7 +128,8 @@ def _group_rules(kind: str, name: str, names: tuple[str, ...], timed: bool, orde
         pn = [f"{name}__q1", f"{name}__q2", f"{name}__q3", f"{name}__q0"]
     else:
         raise ValueError(kind)
-    P = [sp.Function(p, real=True)(t) for p in pn] if timed else [_jet_symbol(p, 0) for p in pn]
+    P = [sp.Function(p, real=True)(t) for p in pn] if timed else \
+        [_jet_symbol(p, 0, timed=False) for p in pn]
     if kind == "unit":
         u, v = P
         den = 1 + u**2 + v**2
@@ -219,7 +234,7 @@ def make_plan(exprs) -> Plan:
         return True
 
     def _note(atom, k):
-        c = constraint_of(_atom_name(atom))
+        c = _constraint(atom)
         if c is None or c.kind == "angle":
             free.add((atom, k))
             if c is not None and k == 0:
@@ -249,7 +264,8 @@ def make_plan(exprs) -> Plan:
         if _is_angle_atom(atom) and k == 0:
             plan.bare[atom] = plan.rules[key]
     for a, M in denoms.items():
-        tau = sp.Symbol(f"tan({_atom_name(a)}/{2 * M})", real=True)
+        tag = "(t)" if isinstance(a, AppliedUndef) else ""
+        tau = sp.Symbol(f"tan({_atom_name(a)}{tag}/{2 * M})", real=True)
         plan.angles[a] = (tau, M)
         params.add(tau)
     plan.params = sorted(params, key=lambda s: s.name)
@@ -523,7 +539,8 @@ def decide_zero(entries, seed: int = 0, probes: int = 2) -> ZeroResult:
         if hit is not None:
             return ZeroResult(False, "counterexample", "non-zero at an exact rational point",
                               hit[0], hit[1], plan)
-        if all(_size(e) <= CANCEL_NODE_LIMIT for e in entries):
+        d = max(degree_bound(e, plan) for e in entries)
+        if d <= CANCEL_DEGREE_LIMIT and all(_size(e) <= CANCEL_NODE_LIMIT for e in entries):
             gens = plan.params
             if gens:
                 K, *_ = frac_field(gens, sp.QQ)
@@ -543,7 +560,6 @@ def decide_zero(entries, seed: int = 0, probes: int = 2) -> ZeroResult:
             return ZeroResult(True, "exact-cancel",
                               f"numerators cancel to 0 over Q({len(gens)} parameters)",
                               plan=plan)
-        d = max(degree_bound(e, plan) for e in entries)
         hit = probe(SZ_POINTS)
         if hit is not None:
             return ZeroResult(False, "counterexample", "non-zero at an exact rational point",
