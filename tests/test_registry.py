@@ -2,18 +2,27 @@
 
 from __future__ import annotations
 
+import os
+
 import pytest
 
-from rigidsym.checker import check
+from rigidsym.cli import run_checks
 from rigidsym.registry import REGISTRY, load_all
 
 load_all()
 IDS = sorted(REGISTRY)
 
 
+@pytest.fixture(scope="module")
+def results():
+    """Every declaration checked once, over two worker processes (as `rigidsym verify`)."""
+    jobs = min(2, os.cpu_count() or 1)
+    return {r.id: r for r in run_checks(IDS, jobs=jobs, progress=False)}
+
+
 @pytest.mark.parametrize("eq_id", IDS)
-def test_computed_verdict_equals_recorded(eq_id):
-    r = check(eq_id)
+def test_computed_verdict_equals_recorded(eq_id, results):
+    r = results[eq_id]
     assert r.verdict == r.expected, r.detail
     assert r.numeric["points"] >= 10 and r.numeric["digits"] >= 30
     if r.verdict == "does-not-hold":
