@@ -1,0 +1,92 @@
+"""The ``rigidsym exercise`` sub-command and the report hook writing ``exercises.md``."""
+
+from __future__ import annotations
+
+import json
+import os
+import sys
+import tempfile
+from pathlib import Path
+
+from rigidsym import cli as _cli
+from rigidsym.io import write_atomic
+
+from .worked import EXERCISE_IDS, normalise_id, render_markdown, render_text, solve, to_json_value
+
+__all__ = ["add_arguments", "run", "to_json", "write_report"]
+
+
+def add_arguments(p) -> None:
+    """Arguments of ``rigidsym exercise``."""
+    p.add_argument("id", nargs="?", help="exercise id: 3.10 or ex3.10")
+    p.add_argument("--all", action="store_true", help="solve all 21 exercises")
+    p.add_argument("--json", help="write the results (schema 1) as JSON to this path")
+
+
+def to_json(ids) -> str:
+    """The schema-1 JSON document for the exercises ``ids``."""
+    items = []
+    for i in ids:
+        s = solve(i)
+        items.append({"id": s.id, "status": s.status,
+                      "answers": {k: to_json_value(v) for k, v in s.answers.items()},
+                      "checked": s.checked, "assumptions": list(s.assumptions)})
+    return json.dumps({"schema": 1, "exercises": items}, indent=2) + "\n"
+
+
+def run(args) -> int:
+    """Solve chapter-3 exercises with computer algebra (worked solutions, machine-checked)."""
+    if args.all == bool(args.id):
+        print("rigidsym: error: give one exercise id (e.g. 3.10) or --all", file=sys.stderr)
+        return 2
+    try:
+        ids = EXERCISE_IDS if args.all else [normalise_id(args.id)]
+    except ValueError as exc:
+        print(f"rigidsym: error: {exc}", file=sys.stderr)
+        return 2
+    if args.json:
+        write_atomic(args.json, to_json(ids))
+    if args.all:
+        n_ok = 0
+        for i in ids:
+            s = solve(i)
+            ok = s.status == "solved" and s.checked
+            n_ok += ok
+            print(f"{s.id:7s} {s.status:8s} checked={str(s.checked).lower():5s} {s.title}")
+        print(f"{n_ok} / {len(ids)} solved and checked")
+        return 0 if n_ok == len(ids) else 1
+    s = solve(ids[0])
+    print(render_text(s))
+    return 0 if s.checked else 1
+
+
+def _write_png(fig, path: Path) -> None:
+    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".png", dir=path.parent)
+    os.close(fd)
+    try:
+        fig.savefig(tmp, format="png", dpi=120)
+        os.replace(tmp, path)
+    except BaseException:
+        Path(tmp).unlink(missing_ok=True)
+        raise
+
+
+def write_report(out_dir: Path) -> None:
+    """Report hook: write ``exercises.md`` (and the Exercise 3.10 figure) into ``out_dir``."""
+    out_dir = Path(out_dir)
+    out_dir.mkdir(parents=True, exist_ok=True)
+    parts = ["# Chapter 3 exercises, solved with computer algebra", ""]
+    rows = ["| exercise | status | checked |", "|---|---|---|"]
+    sols = [solve(i) for i in EXERCISE_IDS]
+    rows += [f"| {s.id} | {s.status} | {str(s.checked).lower()} |" for s in sols]
+    parts += rows + [""]
+    from .ex3_10 import condition_figure
+    fig_note = condition_figure(out_dir, _write_png)
+    parts += [fig_note, ""]
+    parts += [render_markdown(s) for s in sols]
+    write_atomic(out_dir / "exercises.md", "\n".join(parts))
+
+
+_cli.COMMANDS["exercise"] = (add_arguments, run)
+if write_report not in _cli.REPORT_HOOKS:
+    _cli.REPORT_HOOKS.append(write_report)

@@ -1,0 +1,178 @@
+"""Exercise 3.10: angular velocity from Euler-angle rates, ``omega = W eta_dot``.
+
+All twelve intrinsic sequences (six proper-Euler, six Tait-Bryan), with omega in the fixed
+frame and in the body frame; det W, its singular set (solved by sympy) and W^-1.
+"""
+
+from __future__ import annotations
+
+import sympy as sp
+
+from rigidsym.primitives import cpm, rotation_from_natural_invariants, vect
+from rigidsym.symbols import TIME, angle
+
+from .worked import Solution, identity_check
+
+ID = "ex3.10"
+PROPER_EULER = ["ZXZ", "XYX", "YZY", "ZYZ", "XZX", "YXY"]
+TAIT_BRYAN = ["XYZ", "YZX", "ZXY", "XZY", "ZYX", "YXZ"]
+SEQUENCES = PROPER_EULER + TAIT_BRYAN
+#: the sequence taken for the book's Exercise 2.19 (see ``solve``'s assumptions).
+BOOK_SEQUENCE = "ZXZ"
+
+theta, phi, psi = sp.symbols("theta phi psi", real=True)
+ETA = sp.Matrix([theta, phi, psi])
+_AXES = {"X": sp.Matrix([1, 0, 0]), "Y": sp.Matrix([0, 1, 0]), "Z": sp.Matrix([0, 0, 1])}
+
+
+def axis_rotation(axis: str, a) -> sp.Matrix:
+    """Rotation through ``a`` about the coordinate axis ``axis`` (Eq. 2.49 with e = axis)."""
+    return rotation_from_natural_invariants(_AXES[axis], a)
+
+
+def euler_rotation(seq: str, eta=ETA) -> sp.Matrix:
+    """Intrinsic sequence: ``Q = R_a(theta) R_b(phi) R_c(psi)`` (each about the moved axis)."""
+    a, b, c = seq
+    return axis_rotation(a, eta[0]) * axis_rotation(b, eta[1]) * axis_rotation(c, eta[2])
+
+
+def euler_rate_matrix(seq: str, frame: str = "fixed") -> sp.Matrix:
+    """``W`` with ``omega = W eta_dot`` for the intrinsic sequence ``seq``.
+
+    Fixed frame: ``W = [u_a, R_a u_b, R_a R_b u_c]`` (each rate contributes the current
+    direction of its axis). Body frame: ``W_B = Q^T W = [R_c^T R_b^T u_a, R_c^T u_b, u_c]``.
+    """
+    a, b, c = seq
+    Ra, Rb, Rc = (axis_rotation(x, v) for x, v in zip(seq, ETA, strict=True))
+    if frame == "fixed":
+        cols = [_AXES[a], Ra * _AXES[b], Ra * Rb * _AXES[c]]
+    else:
+        cols = [Rc.T * Rb.T * _AXES[a], Rc.T * _AXES[b], _AXES[c]]
+    return sp.Matrix.hstack(*cols).applyfunc(sp.trigsimp)
+
+
+def singular_set(det) -> sp.Set:
+    """Real solutions of ``det W = 0`` for the middle angle, by ``sympy.solveset``."""
+    return sp.solveset(det, phi, domain=sp.Interval.Ropen(-sp.pi, sp.pi))
+
+
+def condition_number(seq: str, phi_value: float) -> float:
+    """2-norm condition number of W at middle angle ``phi_value`` (independent of the others)."""
+    import numpy as np
+    f = sp.lambdify((theta, phi, psi), euler_rate_matrix(seq), "numpy")
+    return float(np.linalg.cond(np.array(f(0.3, phi_value, -0.7), dtype=float)))
+
+
+def table() -> list[tuple]:
+    """Rows (sequence, class, det W (fixed), det W (body), singular set of phi)."""
+    rows = []
+    for seq in SEQUENCES:
+        Wf, Wb = euler_rate_matrix(seq), euler_rate_matrix(seq, "body")
+        df, db = sp.trigsimp(Wf.det()), sp.trigsimp(Wb.det())
+        rows.append((seq, "proper Euler" if seq in PROPER_EULER else "Tait-Bryan", df, db,
+                     singular_set(df)))
+    return rows
+
+
+def condition_figure(out_dir, write_png) -> str:
+    """Plot cond(W) against the middle angle for both classes; return a Markdown note."""
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+        import numpy as np
+    except ImportError:
+        return ("*Figure of cond(W) for Exercise 3.10 skipped: matplotlib is not installed "
+                "(`pip install rigidsym[figures]`).*")
+    xs = np.linspace(-np.pi, np.pi, 721)
+    fig, ax = plt.subplots(figsize=(7, 4))
+    for seq, label in (("ZXZ", "proper Euler (all six)"), ("XYZ", "Tait-Bryan (all six)")):
+        ys = []
+        for x in xs:
+            try:
+                ys.append(min(condition_number(seq, float(x)), 1e4))
+            except np.linalg.LinAlgError:
+                ys.append(1e4)
+        ax.semilogy(xs, ys, label=label)
+    ax.set_xlabel("middle angle phi [rad]")
+    ax.set_ylabel("cond_2(W)")
+    ax.set_title("Exercise 3.10: conditioning of the Euler-angle rate matrix W")
+    ax.legend()
+    ax.grid(True, which="both", alpha=0.3)
+    path = out_dir / "ex3_10_condition.png"
+    write_png(fig, path)
+    plt.close(fig)
+    return "![cond(W) against the middle angle](ex3_10_condition.png)"
+
+
+def solve() -> Solution:
+    """Worked solution of Exercise 3.10."""
+    s = Solution(
+        ID, "Euler-angle rates and the angular velocity",
+        "\"find the matrix W such that omega = W eta_dot ... Find under which conditions W "
+        "becomes singular.\"",
+        "Angeles, Fundamentals of Robotic Mechanical Systems, Sec. 3.9, Exercise 3.10",
+        given={"eta": ETA, "sequences": ", ".join(SEQUENCES)},
+        assumptions=[
+            "Exercise 2.19 is not in the text we have: its Euler angles are taken as the "
+            "intrinsic Z-X-Z sequence Q = R_Z(theta) R_X(phi) R_Z(psi), the classical "
+            "(Goldstein) convention and the one whose singularity the book's remark about "
+            "non-invertible W describes; all twelve sequences are solved as well.",
+            "Intrinsic rotations: each about an axis of the frame moved by the previous ones.",
+            "omega in fixed-frame components unless labelled body frame (omega_B = Q^T omega).",
+        ])
+    Rz1 = s.step("first rotation", axis_rotation("Z", theta), "theta about Z.")
+    s.step("Q for Z-X-Z", euler_rotation(BOOK_SEQUENCE),
+           "Intrinsic rotations compose by post-multiplication: Q = R_Z(theta) R_X(phi) R_Z(psi).")
+    s.step("rate contributions", sp.Matrix.hstack(_AXES["Z"], Rz1 * _AXES["X"],
+                                                  Rz1 * axis_rotation("X", phi) * _AXES["Z"]),
+           "Angular velocities add: theta_dot about Z, phi_dot about the once-moved X, psi_dot "
+           "about the twice-moved Z; these directions are the columns of W.")
+    W = s.step("W (fixed frame)", euler_rate_matrix(BOOK_SEQUENCE),
+               "omega = W eta_dot with the columns above.")
+    Wb = s.step("W_B (body frame)", euler_rate_matrix(BOOK_SEQUENCE, "body"),
+                "omega_B = Q^T omega, so W_B = Q^T W.")
+    d = s.step("det W", sp.trigsimp(W.det()), "Expanded and simplified by sympy.")
+    sing = s.step("singular set", singular_set(d),
+                  "sympy solveset of det W = 0 for phi in [-pi, pi): the first and third "
+                  "axes become parallel (gimbal lock), theta and psi rotate about one line.")
+    Winv = s.step("W^-1 (where det W != 0)", (W.adjugate() / d).applyfunc(sp.trigsimp),
+                  "adj(W)/det W, so eta_dot = W^-1 omega off the singular set.")
+    rows = table()
+    s.answers = {"W": W, "W_body": Wb, "det_W": d, "singular_phi": sing,
+                 "W_inverse": Winv}
+    for seq, _cls, df, db, ss in rows:
+        s.answers[f"det_W_{seq}"] = df
+        s.answers[f"det_W_body_{seq}"] = db
+        s.answers[f"singular_{seq}"] = ss
+    lines = ["| sequence | class | det W (fixed) | det W (body) | singular phi in [-pi, pi) |",
+             "|---|---|---|---|---|"]
+    lines += [f"| {q} | {c} | `{df}` | `{db}` | `{ss}` |" for q, c, df, db, ss in rows]
+    s.extra = "\n".join(lines)
+    # Machine checks: differentiate Q(t) directly, omega = vect(Q_dot Q^T), for every sequence.
+    at = [angle(f"ex310_{n}", t=TIME) for n in ("theta", "phi", "psi")]
+    rate = sp.Matrix([sp.diff(x, TIME) for x in at])
+    for seq in SEQUENCES:
+        Q = euler_rotation(seq, at)
+        Qd = Q.diff(TIME)
+        Omega = Qd * Q.T
+        sub = dict(zip((theta, phi, psi), at, strict=True))
+        wf = euler_rate_matrix(seq).subs(sub) * rate
+        wb = euler_rate_matrix(seq, "body").subs(sub) * rate
+        s.check(identity_check(f"{seq}: vect(Q_dot Q^T) = W eta_dot, Omega = cpm(omega)",
+                               [vect(Omega) - wf, Omega - cpm(wf)]))
+        s.check(identity_check(f"{seq}: Q^T Q_dot = cpm(W_B eta_dot)",
+                               [Q.T * Qd - cpm(wb)]))
+    s.check(identity_check("Z-X-Z: W W^-1 = 1 (off the singular set)",
+                           [(W * Winv - sp.eye(3)).subs(
+                               {theta: at[0], phi: at[1], psi: at[2]})]))
+    # singular set: det vanishes at each reported point, and rank drops to 2 there
+    ok = True
+    for seq, _c, df, _db, ss in rows:
+        for p in ss:
+            ok &= df.subs(phi, p) == 0 and euler_rate_matrix(seq).subs(phi, p).rank() == 2
+        ok &= len(ss) == 2
+    from .worked import truth_check
+    s.check(truth_check("every singular point found zeroes det W and drops rank W to 2",
+                        ok, "two points per sequence in [-pi, pi)"))
+    return s
