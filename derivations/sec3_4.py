@@ -1,0 +1,213 @@
+"""Sec. 3.4: General instantaneous motion of a rigid body, Eqs. (3.47)-(3.51), Theorems
+3.4.1 and 3.4.2, Corollary 3.4.1.
+
+Book: J. Angeles, *Fundamentals of Robotic Mechanical Systems*, 4th ed., Sec. 3.4.
+
+First principles used here (nothing about the instant screw is assumed):
+
+- a rigid motion maps the reference configuration to the current one by
+  ``x0 -> Q(t) x0 + c(t)``, ``Q(t)`` a generic smooth rotation, ``c(t)`` a free smooth
+  translation (:func:`rigid_motion_model`);
+- the velocity of the body point that is at ``x`` at time ``t`` is obtained by
+  differentiating ``p(t) = a(t) + Q(t) r`` at constant body vector ``r = Q^T (x - a)``
+  (:func:`body_velocity`);
+- the instant screw axis (ISA) is the set of points whose velocity is parallel to
+  ``omega``; its point nearest to a given point is found by minimising the distance along
+  that line (:func:`isa_point_nearest`). Both are derived with sympy from those defining
+  properties, never from the book's closed forms.
+"""
+
+from __future__ import annotations
+
+from functools import cache
+
+import sympy as sp
+
+from rigidsym.primitives import cpm
+from rigidsym.registry import Rel, Statement, equation
+from rigidsym.symbols import TIME, scalar, vector
+
+from .common import Mt, motion_model, vec
+
+Q, Q_dot, Omega, omega = Mt.Q, Mt.Q_dot, Mt.Omega, Mt.omega
+a, a_dot, p, p_dot = Mt.a, Mt.a_dot, Mt.p, Mt.p_dot
+#: positions of A and P in the reference configuration C0
+a_0, p_0 = vec("a_0"), vec("p_0")
+
+_im = sp.ImmutableMatrix
+
+
+def cross(u, v):
+    """The book's ``u x v``, transcribed as ``CPM(u) v`` (Eq. (2.38)); any 3 x 1 inputs."""
+    return cpm(u) * v
+
+
+# --------------------------------------------------------------------------- models
+@cache
+def rigid_motion_model() -> dict:
+    """First-principles values for Eqs. (3.47)-(3.51): the map ``x0 -> Q(t) x0 + c(t)``.
+
+    ``Q(t)`` a generic rotation (rational quaternion jets), ``c(t)`` free, ``a0, p0`` free
+    constants; ``a = Q a0 + c``, ``p = Q p0 + c``; ``Omega = Qdot Q^T``, ``omega =
+    vect(Omega)`` computed (from :func:`derivations.common.motion_model`).
+    """
+    base = motion_model(invariants=False)
+    Qm = base[Mt.Q]
+    a0, p0 = vector("s34_a0"), vector("s34_p0")
+    c = vector("s34_c", TIME)
+    am, pm = Qm * a0 + c, Qm * p0 + c
+    model = {k: base[k] for k in (Mt.Q, Mt.Q_dot, Mt.Omega, Mt.omega)}
+    model.update({a_0: _im(a0), p_0: _im(p0), a: _im(am), a_dot: _im(am.diff(TIME)),
+                  p: _im(pm), p_dot: _im(pm.diff(TIME))})
+    return model
+
+
+@cache
+def instant_motion_model() -> dict:
+    """:func:`derivations.common.motion_model` with a generic rotation ``Q(t)``:
+    ``a(t)`` free, a body point ``p = a + Q r`` (``r`` constant), ``Omega``, ``omega``
+    computed from ``Q(t)``."""
+    return motion_model(invariants=False)
+
+
+def body_velocity(x, model: dict) -> sp.Matrix:
+    """Velocity of the body point that is at ``x`` now: ``a_dot + Qdot Q^T (x - a)``.
+
+    Derived from the motion: the point is ``a(t) + Q(t) r`` with the constant body vector
+    ``r = Q^T (x - a)`` (``Q^T Q = 1``), whose time derivative is ``a_dot + Qdot r``.
+
+    Args:
+        x: 3 x 1 position (metres), any sympy entries.
+        model: a motion model holding ``Q``, ``Qdot``, ``a``, ``adot``.
+    """
+    r = model[Mt.Q].T * (sp.Matrix(x) - model[Mt.a])
+    return sp.Matrix(model[Mt.a_dot] + model[Mt.Q_dot] * r)
+
+
+@cache
+def _isa_nearest_free():
+    """ISA point nearest to ``X``, derived on free symbols ``w`` (omega), ``A``, ``Ad``.
+
+    1. the ISA: points ``x`` whose velocity ``Ad + CPM(w)(x - A)`` (Omega = CPM(omega) is
+       the skew matrix of Theorem 3.3.1) is parallel to ``w``: ``w x v(x) = 0``; sympy's
+       ``linsolve`` gives the line, of which the point with free parameter 0 is taken;
+    2. the nearest point ``x1 + alpha w`` to ``X``: ``d/dalpha ||x1 + alpha w - X||^2 = 0``.
+    """
+    w, A, Ad, X = (sp.Matrix(sp.symbols(f"{n}1:4", real=True)) for n in ("w", "A", "Ad", "X"))
+    x = sp.Matrix(sp.symbols("x1:4", real=True))
+    sol = next(iter(sp.linsolve(list(cpm(w) * (Ad + cpm(w) * (x - A))), list(x))))
+    x1 = sp.Matrix(sol).subs({s: 0 for s in x})
+    alpha = sp.Symbol("alpha", real=True)
+    dist2 = ((x1 + alpha * w - X).T * (x1 + alpha * w - X))[0]
+    (alpha_star,) = sp.solve(sp.diff(dist2, alpha), alpha)
+    near = (x1 + alpha_star * w).applyfunc(sp.cancel)
+    return w, A, Ad, X, near
+
+
+def isa_point_nearest(x_ref, model: dict) -> sp.Matrix:
+    """First-principles point of the ISA nearest to ``x_ref`` (3 x 1, metres).
+
+    Singular set: ``omega = 0`` (no ISA). See :func:`_isa_nearest_free`.
+    """
+    w, A, Ad, X, near = _isa_nearest_free()
+    sub = dict(zip(list(w) + list(A) + list(Ad) + list(X),
+                   list(model[Mt.omega]) + list(model[Mt.a]) + list(model[Mt.a_dot])
+                   + list(sp.Matrix(x_ref)), strict=True))
+    return near.xreplace(sub)
+
+
+# --------------------------------------------------------------------------- Sec. 3.4
+@equation("3.47", "Position of a body point under a general motion", section="3.4",
+          latex=r"\mathbf{p}(t) = \mathbf{a}(t) + \mathbf{Q}(t)(\mathbf{p}_0 - \mathbf{a}_0)")
+def body_point_position() -> Statement:
+    """``p(t) = a(t) + Q(t) (p0 - a0)``. Book: Sec. 3.4, Eq. (3.47). 3-vectors, metres."""
+    return Statement([Rel(p, a + Q * (p_0 - a_0))], rigid_motion_model())
+
+
+@equation("3.48", "Velocity of a body point from the reference configuration", section="3.4",
+          latex=r"\dot{\mathbf{p}}(t) = \dot{\mathbf{a}}(t) + \dot{\mathbf{Q}}(t)(\mathbf{p}_0 "
+                r"- \mathbf{a}_0)")
+def body_point_velocity_reference() -> Statement:
+    """``pdot = adot + Qdot (p0 - a0)``. Book: Sec. 3.4, Eq. (3.48). 3-vectors, m/s."""
+    return Statement([Rel(p_dot, a_dot + Q_dot * (p_0 - a_0))], rigid_motion_model())
+
+
+@equation("3.49", "Velocity of a body point, angular-velocity matrix form", section="3.4",
+          latex=r"\dot{\mathbf{p}} = \dot{\mathbf{a}} + \boldsymbol{\Omega}(\mathbf{p} - "
+                r"\mathbf{a})")
+def body_point_velocity_matrix() -> Statement:
+    """``pdot = adot + Omega (p - a)``. Book: Sec. 3.4, Eq. (3.49). 3-vectors, m/s."""
+    return Statement([Rel(p_dot, a_dot + Omega * (p - a))], rigid_motion_model())
+
+
+@equation("3.50", "Velocity of a body point, angular-velocity vector form", section="3.4",
+          latex=r"\dot{\mathbf{p}} = \dot{\mathbf{a}} + \boldsymbol{\omega} \times (\mathbf{p} "
+                r"- \mathbf{a})")
+def body_point_velocity_vector() -> Statement:
+    """``pdot = adot + omega x (p - a)``. Book: Sec. 3.4, Eq. (3.50). 3-vectors, m/s."""
+    return Statement([Rel(p_dot, a_dot + cross(omega, p - a))], rigid_motion_model())
+
+
+@equation("3.51", "Relative velocity is normal to the joining line", section="3.4",
+          latex=r"(\dot{\mathbf{p}} - \dot{\mathbf{a}}) \cdot (\mathbf{p} - \mathbf{a}) = 0")
+def relative_velocity_normal() -> Statement:
+    """``(pdot - adot) . (p - a) = 0``. Book: Sec. 3.4, Eq. (3.51). Scalar, m^2/s."""
+    return Statement([Rel((p_dot - a_dot).T * (p - a), 0)], rigid_motion_model())
+
+
+@equation("thm3.4.1", "Relative velocity of two body points is normal to their line",
+          section="3.4", kind="claim",
+          latex=r"The relative velocity of two points of the same rigid body is perpendicular "
+                r"to the line joining them")
+def relative_velocity_theorem() -> Statement:
+    """Theorem 3.4.1: for any two body points A, P: ``(pdot - adot)^T (p - a) = 0``.
+
+    Both points are generic (``a0``, ``p0`` free). Book: Sec. 3.4, Theorem 3.4.1.
+    """
+    m = rigid_motion_model()
+    return Statement([Rel((p_dot - a_dot).T * (p - a), 0, "relative velocity . AP")], m)
+
+
+@equation("cor3.4.1", "Velocities of all body points have the same projection on omega",
+          section="3.4", kind="claim",
+          latex=r"The projections of the velocities of all the points of a rigid body onto "
+                r"the angular-velocity vector are identical")
+def velocity_projection_on_omega() -> Statement:
+    """Corollary 3.4.1 and the unnumbered ``omega . pdot = omega . adot`` before it.
+
+    Book: Sec. 3.4, Corollary 3.4.1. Generic body points A, P; scalar, rad m/s^2.
+    """
+    return Statement([Rel(omega.T * p_dot, omega.T * a_dot, "omega . pdot = omega . adot")],
+                     rigid_motion_model())
+
+
+@equation("thm3.4.2", "Points of a line share the minimum velocity, parallel to omega",
+          section="3.4", kind="claim", singular="omega = 0 (pure translation: no ISA)",
+          latex=r"a set of its points located on a line  $\mathcal{L}'$  undergoes the "
+                r"identical minimum-magnitude velocity  $\mathbf{v}_0$  parallel to the "
+                r"angular velocity")
+def minimum_velocity_line() -> Statement:
+    """Theorem 3.4.2, with the line ``L' = {x1 + alpha omega}`` as witness.
+
+    ``x1`` is the first-principles ISA point nearest to the origin
+    (:func:`isa_point_nearest`); ``v(x)`` is the velocity field of the motion
+    (:func:`body_velocity`). Checked: (i) ``v(x1 + alpha omega) = v(x1)`` for every
+    ``alpha`` (identical velocity on the line); (ii) ``omega x v(x1) = 0`` (parallel to
+    ``omega``); (iii) for every point ``x``, ``||v(x)||^2 - ||v(x1)||^2 =
+    ||omega x (x - x1)||^2 >= 0``, zero iff ``x`` lies on ``L'`` (minimum magnitude).
+
+    Book: Sec. 3.4, Theorem 3.4.2. Singular set: ``omega = 0``.
+    """
+    m = instant_motion_model()
+    om = sp.Matrix(m[Mt.omega])
+    x1 = isa_point_nearest(sp.zeros(3, 1), m)
+    alpha = scalar("s34_alpha")
+    x = vector("s34_x")
+    v1 = body_velocity(x1, m)
+    vx = body_velocity(x, m)
+    d = cross(om, x - x1)
+    return Statement([
+        Rel(body_velocity(x1 + alpha * om, m), v1, "same velocity along L'"),
+        Rel(cross(om, v1), sp.zeros(3, 1), "v0 parallel to omega"),
+        Rel((vx.T * vx)[0] - (v1.T * v1)[0], (d.T * d)[0], "||v(x)||^2 - ||v0||^2"),
+    ], m)
