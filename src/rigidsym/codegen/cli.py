@@ -1,0 +1,61 @@
+"""``rigidsym generate [--check]`` and ``rigidsym build-c``, registered in :mod:`rigidsym.cli`."""
+
+from __future__ import annotations
+
+import sys
+import time
+from pathlib import Path
+
+from rigidsym.cli import COMMANDS
+
+__all__ = ["cmd_generate", "cmd_build_c"]
+
+
+def _generate_args(p) -> None:
+    p.add_argument("--check", action="store_true",
+                   help="regenerate in memory; print a diff and exit 1 on any difference")
+    p.add_argument("--out", default=None, help="output folder (default: generated/)")
+
+
+def cmd_generate(args) -> int:
+    """Generate the NumPy and C kernels into generated/ (--check: compare only)."""
+    from .generator import check, default_out_dir, generate, write
+
+    t0 = time.perf_counter()
+    res = generate()
+    out = Path(args.out) if args.out else default_out_dir()
+    for note in res.notes:
+        print(f"note: {note}", file=sys.stderr)
+    if args.check:
+        diff = check(res, out)
+        if diff:
+            sys.stdout.write(diff)
+            print(f"generated/ is stale: run `rigidsym generate` "
+                  f"({time.perf_counter() - t0:.1f} s)", file=sys.stderr)
+            return 1
+        print(f"generated/ is up to date: {len(res.kernels)} kernels, {len(res.files)} files "
+              f"({time.perf_counter() - t0:.1f} s)")
+        return 0
+    touched = write(res, out)
+    for t in touched:
+        print(f"wrote {t}")
+    print(f"{len(res.kernels)} kernels, {len(res.files)} files, {len(touched)} changed "
+          f"({time.perf_counter() - t0:.1f} s)")
+    return 0
+
+
+def _build_args(p) -> None:
+    p.add_argument("--force", action="store_true", help="rebuild even if cached")
+
+
+def cmd_build_c(args) -> int:
+    """Compile the generated C kernels (cffi) into the user cache directory."""
+    from .cbuild import build
+
+    path = build(force=args.force)
+    print(f"built {path}")
+    return 0
+
+
+COMMANDS["generate"] = (_generate_args, cmd_generate)
+COMMANDS["build-c"] = (_build_args, cmd_build_c)

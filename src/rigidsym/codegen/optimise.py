@@ -1,0 +1,108 @@
+"""Symbolic optimisation of kernel expressions before printing.
+
+1. Half-angle rewrite of every angle input ``phi`` (own rewrite, through
+   :class:`sympy.codegen.rewriting.ReplaceOptim`): a sum ``k (1 - cos phi)`` hidden in an
+   ``Add`` becomes ``2 k sin^2(phi/2)``, ``k (1 + cos phi)`` becomes ``2 k cos^2(phi/2)``;
+   then ``sin phi -> 2 sin(phi/2) cos(phi/2)`` and ``cos phi -> 1 - 2 sin^2(phi/2)``. This
+   removes the cancellation of ``1 - cos phi`` near 0 (and of ``1 + cos phi`` near pi),
+   turns removable ratios such as ``sin phi / (1 - cos phi)`` into ``cot(phi/2)`` by
+   sympy's automatic power collection, and leaves two transcendental calls per angle.
+2. ``sympy.cse`` over all outputs (and denominators) of a kernel at once, so
+   sub-expressions are shared across outputs.
+3. Operation count of the result (``sympy.count_ops`` of the CSE'd program).
+
+Everything is deterministic: no sets are iterated without sorting.
+"""
+
+from __future__ import annotations
+
+import hashlib
+from dataclasses import dataclass
+
+import sympy as sp
+from sympy.codegen.rewriting import ReplaceOptim, optimize
+
+__all__ = ["half_angle_optims", "Program", "compile_program", "math_hash"]
+
+
+def half_angle_optims(phi: sp.Symbol) -> list:
+    """The rewrites of :mod:`sympy.codegen.rewriting` that make ``phi`` cancellation-free."""
+    C, S = sp.cos(phi), sp.sin(phi)
+    s, c = sp.sin(phi / 2), sp.cos(phi / 2)
+
+    def _fold(add: sp.Add) -> sp.Expr:
+        k = sp.S.Zero           # coefficient of cos(phi)
+        rest = []               # terms free of phi
+        other = []              # terms with phi but not linear in cos(phi)
+        for t in add.args:
+            if not t.has(phi):
+                rest.append(t)
+                continue
+            q = t / C
+            if not q.has(phi):
+                k += q
+            else:
+                other.append(t)
+        if k == 0:
+            return add
+        r = sp.Add(*rest)
+        if sp.expand(r + k) == 0:       # k cos - k = -k (1 - cos) = -2 k sin^2(phi/2)
+            return sp.Add(-2 * k * s**2, *other)
+        if sp.expand(r - k) == 0:       # k cos + k = 2 k cos^2(phi/2)
+            return sp.Add(2 * k * c**2, *other)
+        return add
+
+    fold = ReplaceOptim(lambda x: x.is_Add and x.has(C), _fold)
+    last = ReplaceOptim(lambda x: x in (S, C),
+                        lambda x: 2 * s * c if x == S else 1 - 2 * s**2)
+    return [fold, last]
+
+
+def rewrite(expr: sp.Expr, angles: list[sp.Symbol]) -> sp.Expr:
+    """Apply the half-angle rewrites for each angle symbol."""
+    for phi in angles:
+        expr = optimize(expr, half_angle_optims(phi))
+    return expr
+
+
+def denominators(exprs) -> list[sp.Expr]:
+    """Bases of negative powers in ``exprs`` (sorted, unique): where a division happens."""
+    found = set()
+    for e in exprs:
+        for p in sp.preorder_traversal(e):
+            if isinstance(p, sp.Pow) and p.exp.is_negative:
+                found.add(p.base)
+    return sorted(found, key=sp.default_sort_key)
+
+
+@dataclass
+class Program:
+    """A straight-line program: ``temps`` (symbol, expr) then ``outputs`` and ``dens``."""
+
+    temps: list
+    outputs: list
+    dens: list
+    ops: int
+
+
+def compile_program(outputs: list[sp.Expr], angles: list[sp.Symbol]) -> Program:
+    """Rewrite, CSE and count a flat list of scalar outputs.
+
+    Returns a :class:`Program` whose ``dens`` are the expressions divided by (a sample is
+    singular where one of them is exactly 0).
+    """
+    rw = [rewrite(sp.sympify(e), angles) for e in outputs]
+    dens = denominators(rw)
+    temps, red = sp.cse(rw + dens, symbols=sp.numbered_symbols("x"), order="canonical")
+    n = len(rw)
+    ops = sum(int(sp.count_ops(v)) for _, v in temps) + sum(int(sp.count_ops(v)) for v in red)
+    return Program(temps=list(temps), outputs=list(red[:n]), dens=list(red[n:]), ops=ops)
+
+
+def math_hash(parts) -> str:
+    """SHA-256 (first 16 hex digits) of the ``srepr`` of the derived mathematics."""
+    h = hashlib.sha256()
+    for p in parts:
+        h.update(sp.srepr(p).encode())
+        h.update(b"\0")
+    return h.hexdigest()[:16]

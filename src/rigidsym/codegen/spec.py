@@ -1,0 +1,132 @@
+"""Kernel specification types: what a generated kernel computes, independent of any backend.
+
+A :class:`Kernel` names its inputs and outputs (per-sample shapes), the book ids and the
+formula functions it composes, and a ``build`` callable that returns the explicit sympy
+outputs from explicit sympy inputs. Optional :class:`Branch` entries are alternative builds
+selected per sample by a declared condition (a template construct, e.g. near phi = pi).
+The particular kernels live in ``derivations/kernels_spec.py``; this module knows none.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from dataclasses import dataclass, field
+
+import sympy as sp
+
+__all__ = ["Arg", "Out", "Branch", "Kernel", "input_symbols"]
+
+
+@dataclass(frozen=True)
+class Arg:
+    """One kernel input.
+
+    Attributes:
+        name: the argument name (book letters in ASCII, e.g. ``a_dot``).
+        shape: per-sample shape, ``()`` for a scalar, ``(3,)``, ``(3, 3)``, ``(4,)``.
+        kind: validation class: ``"any"``, ``"unit"`` (unit vector), ``"rotation"``
+            (proper orthogonal), ``"positive"`` (scalar > 0), ``"nonneg"``.
+        doc: what it is (units, frame), for the docstring.
+    """
+
+    name: str
+    shape: tuple[int, ...]
+    kind: str = "any"
+    doc: str = ""
+
+    @property
+    def size(self) -> int:
+        return math.prod(self.shape)
+
+
+@dataclass(frozen=True)
+class Out:
+    """One kernel output: ``name``, per-sample ``shape`` and ``doc``."""
+
+    name: str
+    shape: tuple[int, ...]
+    doc: str = ""
+
+    @property
+    def size(self) -> int:
+        return math.prod(self.shape)
+
+
+@dataclass(frozen=True)
+class Branch:
+    """An alternative build used where ``when(inputs)`` (a sympy boolean) holds.
+
+    Branches are tried in order before the kernel's main ``build``; the first whose
+    condition holds is used for that sample.
+    """
+
+    name: str
+    when: Callable[..., sp.Basic]
+    build: Callable[..., dict]
+    doc: str = ""
+
+
+@dataclass(frozen=True)
+class Kernel:
+    """A batched kernel composed of declared formula functions.
+
+    Attributes:
+        name: public name (``rigidsym.kernels.<name>``).
+        summary: one-line docstring summary.
+        formula: the formula in plain text.
+        ids: book equation ids.
+        sources: dotted names of the formula functions composed (``module.function``).
+        args, outputs: inputs and outputs, in call order.
+        build: ``build(**symbols) -> {output name: sympy Matrix or scalar}``.
+        singular: human description of the singular set (``""`` when none).
+        singular_arg: the argument named in ``SingularConfigurationError``.
+        branches: per-sample alternatives (template construct).
+        notes: extra docstring notes.
+        public: exported as-is from :mod:`rigidsym.kernels` (False for building blocks
+            that a hand-written wrapper dispatches to, e.g. the Euler-angle sequences).
+    """
+
+    name: str
+    summary: str
+    formula: str
+    ids: tuple[str, ...]
+    sources: tuple[str, ...]
+    args: tuple[Arg, ...]
+    outputs: tuple[Out, ...]
+    build: Callable[..., dict]
+    singular: str = ""
+    singular_arg: str = ""
+    branches: tuple[Branch, ...] = field(default_factory=tuple)
+    notes: str = ""
+    public: bool = True
+
+
+def input_symbols(kernel: Kernel) -> dict:
+    """Explicit sympy inputs for ``kernel``: real scalar symbols arranged in its shapes.
+
+    A vector ``e`` of shape (3,) becomes the column ``Matrix([e_0, e_1, e_2])``; a matrix
+    ``Q`` of shape (3, 3) becomes ``Matrix([[Q_00, ...]])``; a scalar is a Symbol.
+    """
+    out = {}
+    for a in kernel.args:
+        if a.shape == ():
+            out[a.name] = sp.Symbol(a.name, real=True)
+        elif len(a.shape) == 1:
+            out[a.name] = sp.Matrix([sp.Symbol(f"{a.name}_{i}", real=True)
+                                     for i in range(a.shape[0])])
+        else:
+            r, c = a.shape
+            out[a.name] = sp.Matrix(r, c, [sp.Symbol(f"{a.name}_{i}{j}", real=True)
+                                           for i in range(r) for j in range(c)])
+    return out
+
+
+def flat_symbols(kernel: Kernel) -> list[tuple[str, list[sp.Symbol]]]:
+    """Per argument, its scalar symbols in row-major order."""
+    syms = input_symbols(kernel)
+    res = []
+    for a in kernel.args:
+        v = syms[a.name]
+        res.append((a.name, [v] if a.shape == () else list(v)))
+    return res

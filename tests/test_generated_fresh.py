@@ -1,0 +1,62 @@
+"""generated/ is what `rigidsym generate` would write: byte for byte, no missing or orphan file.
+
+Runs the `--check` logic in-process, and regenerates under another PYTHONHASHSEED to prove
+the output does not depend on set iteration order.
+"""
+
+from __future__ import annotations
+
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+from rigidsym.codegen.generator import check, default_out_dir, generate, write
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+def test_generated_is_fresh():
+    res = generate()
+    diff = check(res)
+    assert diff == "", "generated/ is stale; run `rigidsym generate`:\n" + diff[:4000]
+
+
+def test_check_reports_missing_orphan_and_changed(tmp_path):
+    res = generate()
+    write(res, tmp_path)
+    assert check(res, tmp_path) == ""
+    first = next(iter(res.files))
+    (tmp_path / first).write_text("changed\n")
+    (tmp_path / "numpy" / "orphan.py").write_text("x = 1\n")
+    (tmp_path / "kernels.json").unlink()
+    diff = check(res, tmp_path)
+    assert f"a/generated/{first}" in diff
+    assert "orphan file: generated/numpy/orphan.py" in diff
+    assert "missing file: generated/kernels.json" in diff
+    write(res, tmp_path)
+    assert check(res, tmp_path) == ""
+    assert not (tmp_path / "numpy" / "orphan.py").exists()
+
+
+def test_no_timestamps_or_absolute_paths():
+    res = generate()
+    for rel, text in res.files.items():
+        assert str(ROOT) not in text, rel
+        assert "/home/" not in text and "/root/" not in text, rel
+
+
+def test_independent_of_hash_seed(tmp_path):
+    env = dict(os.environ, PYTHONHASHSEED="4242",
+               PYTHONPATH=os.pathsep.join([str(ROOT / "src"), str(ROOT)]))
+    code = ("import sys; from rigidsym.codegen.generator import generate, write; "
+            "write(generate(), sys.argv[1])")
+    subprocess.run([sys.executable, "-c", code, str(tmp_path)], check=True, env=env,
+                   cwd=ROOT)
+    assert check(generate(), tmp_path) == ""
+    assert default_out_dir() == ROOT / "generated"
+
+
+def test_cli_check_exit_code(capsys):
+    from rigidsym.cli import main
+    assert main(["generate", "--check"]) == 0
