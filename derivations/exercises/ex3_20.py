@@ -1,0 +1,64 @@
+"""Exercise 3.20: the inertia dyad at a point A (Eq. 3.147), positive definiteness, and R."""
+
+from __future__ import annotations
+
+import sympy as sp
+
+from derivations.sec3_4_2 import twist_transfer_matrix
+from rigidsym.primitives import block, cpm
+from rigidsym.symbols import scalar, symmetric_matrix, vector
+
+from ._inertia import inertia_at_point, inertia_dyad
+from .worked import Solution, identity_check, nonidentity_check
+
+ID = "ex3.20"
+
+
+def solve() -> Solution:
+    """Worked solution of Exercise 3.20."""
+    J, m = symmetric_matrix("J"), scalar("m")
+    a, c, u = vector("a"), vector("c"), vector("u")
+    s = Solution(
+        ID, "Steiner's theorem in 6 x 6 form",
+        "\"Derive Eq. (3.147). Moreover, show that M_A ... is positive-definite ... Can this "
+        "matrix [R, with P = m R R^T] be found? If yes, give an expression for R; if not, "
+        "explain why.\"",
+        "Angeles, Sec. 3.9, Exercise 3.20; Eqs. (3.133a), (3.147), (3.148)",
+        given={"I_C": J, "m": m, "a": a, "c": c},
+        assumptions=["M_A is defined by the kinetic energy T = t_A^T M_A t_A / 2 with "
+                     "t_A = [omega; a_dot] (the twist at A).",
+                     "The hint M_A = M_C + P P^T (and the erratum's M_C + m P P^T) asks for a "
+                     "positive-semidefinite difference; it is shown indefinite unless a = c, "
+                     "so no real P (or R) exists; M_A = U^T M_C U is the correct 6 x 6 form."])
+    U = s.step("twist transfer", twist_transfer_matrix(a, c),
+               "t_C = U t_A with U = [[1, O], [A - C, 1]] (Eq. 3.83b): c_dot = a_dot + "
+               "omega x (c - a).")
+    M = inertia_dyad(J, m)
+    MA = s.step("dyad at A", U.T * M * U,
+                "T = t_C^T M t_C / 2 = t_A^T (U^T M U) t_A / 2, so M_A = U^T M U.")
+    C, A = cpm(c), cpm(a)
+    I_A = inertia_at_point(J, m, a, c)
+    printed = block([[I_A, m * (C - A)], [m * (C - A).T, m * sp.eye(3)]])
+    s.step("(3.147)", printed, "Blocks of U^T M U, with I_C - m (C - A)^2 = I_A (Eq. 3.133b).")
+    s.step("positive definite", "x^T M_A x = (U x)^T M_C (U x) > 0 for x != 0",
+           "M_C is positive definite (I_C > 0, m > 0) and U is invertible (det U = 1).")
+    D = MA - M
+    B = C - A
+    x = sp.Matrix.vstack(u, -B.T * u)
+    qf = s.step("the hint's difference", (x.T * D * x)[0],
+                "With x = [u; -(C - A)^T u]: x^T (M_A - M_C) x = -m ||(C - A)^T u||^2 < 0 "
+                "when a != c, so M_A - M_C is indefinite.")
+    s.answers = {"M_A": "U^T M_C U = [[I_A, m(C - A)], [m(C - A)^T, m 1]] (3.147 holds)",
+                 "positive_definite": sp.true,
+                 "P_with_M_A_eq_M_C_plus_PPT_exists": sp.false,
+                 "R_exists": sp.false,
+                 "why": "M_A - M_C = [[m B B^T, m B], [m B^T, O]] (B = C - A) has a zero "
+                        "diagonal block beside a non-zero off-diagonal block, so it is "
+                        "indefinite; P P^T and m R R^T are positive semidefinite."}
+    s.check(identity_check("U^T M_C U equals the printed (3.147)", [MA - printed]))
+    s.check(identity_check("x^T (M_A - M_C) x + m ||(C - A)^T u||^2 = 0",
+                           [qf + m * (B.T * u).dot(B.T * u)]))
+    s.check(identity_check("Schur complement of m 1 in M_A is I_C (so M_A > 0 iff I_C > 0, "
+                           "m > 0)", [I_A - m * B * B.T - J]))
+    s.check(nonidentity_check("M_A - M_C is not zero (a != c)", [D]))
+    return s
