@@ -19,7 +19,7 @@ from functools import partial
 import sympy as sp
 
 from rigidsym.codegen.spec import Arg, Branch, Kernel, Out
-from rigidsym.primitives import cpm, rotation_from_natural_invariants, trace, vect
+from rigidsym.primitives import rotation_from_natural_invariants, trace, vect
 
 __all__ = ["KERNELS", "formula", "missing_sources", "EULER_SEQUENCES"]
 
@@ -139,3 +139,249 @@ KERNELS: list[Kernel] = [
               "entry of Q).",
     ),
 ]
+
+
+# ----------------------------------------------------------------------------------------
+# Sections 3.2-3.8: kernels composed of the sections' formula functions
+_S21, _S22 = "derivations.sec3_2_1.", "derivations.sec3_2_2."
+_S41, _S42 = "derivations.sec3_4_1.", "derivations.sec3_4_2."
+_S5, _S5R, _S6 = "derivations.sec3_5.", "derivations.sec3_5_rates.", "derivations.sec3_6."
+_S7, _S8 = "derivations.sec3_7.", "derivations.sec3_8."
+_EX10 = "derivations.exercises.ex3_10."
+
+
+def _v(name, doc, kind="any"):
+    return Arg(name, (3,), kind, doc)
+
+
+def _one(out, fn, wire=None):
+    """A build returning ``{out: fn(*args)}`` with the kernel's arguments in order."""
+    def build(**kw):
+        args = list(kw.values()) if wire is None else wire(**kw)
+        return {out: formula(fn)(*args)}
+    return build
+
+
+def _screw_axis_point(e, phi, a, a_prime):
+    Q = rotation_from_natural_invariants(e, phi)
+    return {"p0": formula(_S21 + "screw_axis_point")(Q, a, a_prime, phi)}
+
+
+def _isa(omega, a, a_dot):
+    return {"p0": formula(_S41 + "instant_screw_axis_point")(omega, a, a_dot),
+            "pitch": formula(_S41 + "instant_screw_pitch")(omega, a_dot),
+            "plucker": formula(_S41 + "instant_screw_plucker")(omega, a, a_dot)}
+
+
+def _wrench_axis(w_A, a):
+    n_A, f = w_A[:3, :], w_A[3:, :]
+    p0 = formula(_S7 + "wrench_axis_point")(n_A, f, a)
+    return {"p0": p0, "pitch": formula(_S7 + "wrench_pitch")(n_A, f),
+            "plucker": formula(_S22 + "plucker_from_points")(p0, p0 + f)}
+
+
+_RATE_ARGS = (E, PHI)
+_RATE_DOT_ARGS = (E, PHI, OMEGA)
+_NL = {"N": "phi = 0 (mod 2 pi): the axis is undefined",
+       "L": "", "H": "",
+       "N_tilde": "", "L_tilde": "1 + cos(phi) = 0 (phi = pi)", "H_tilde": ""}
+
+
+def _rate_kernels() -> list[Kernel]:
+    ks = []
+    for base in ("N", "L", "H"):
+        for tilde in (False, True):
+            key = base + ("_tilde" if tilde else "")
+            fn = f"{base}_tilde" if tilde else f"{base}_matrix"
+            shape = (3, 4) if tilde else (4, 3)
+            what = {"N": "natural invariants [e; phi]", "L": "linear invariants [u; u0]",
+                    "H": "Euler-Rodrigues parameters [r; r0]"}[base]
+            summ = (f"Left inverse of the rate matrix of the {what}: omega = {fn} rate."
+                    if tilde else f"Rate matrix of the {what}: rate = {fn} omega.")
+            ks.append(Kernel(
+                name=fn, summary=summ, formula=f"{fn}(e, phi), {shape[0]}x{shape[1]}",
+                ids=("3.77",) if tilde else ("3.76",), sources=(_S42 + fn,),
+                args=_RATE_ARGS, outputs=(Out(fn, shape, ""),), build=_one(fn, _S42 + fn),
+                singular=_NL[key], singular_arg="phi" if _NL[key] else ""))
+            ks.append(Kernel(
+                name=fn + "_dot", summary=f"Time derivative of {fn} along omega.",
+                formula=f"d/dt {fn}(e(t), phi(t)) with e_dot, phi_dot from omega "
+                        "(the corrected form where the printed one does not hold)",
+                ids=("3.97",) if tilde else ("3.96",), sources=(_S5R + fn + "_dot",),
+                args=_RATE_DOT_ARGS, outputs=(Out(fn + "_dot", shape, "[1/s]"),),
+                build=_one(fn + "_dot", _S5R + fn + "_dot"),
+                singular=_NL[key], singular_arg="phi" if _NL[key] else ""))
+    return ks
+
+
+KERNELS += [
+    Kernel(
+        name="screw_axis_point", summary="Point of the screw axis closest to the origin.",
+        formula="p0 = (Q - 1)^T (Q a - a') / (2 (1 - cos phi)), Q from (e, phi) by (2.49)",
+        ids=("3.18", "2.49"), sources=(_PR + "rotation_from_natural_invariants",
+                                      _S21 + "screw_axis_point"),
+        args=(E, PHI, _v("a", "body point before the displacement [m]"),
+              _v("a_prime", "the same point after the displacement [m]")),
+        outputs=(Out("p0", (3,), "point of the axis closest to the origin [m]"),),
+        build=_screw_axis_point, singular="phi = 0 (pure translation)", singular_arg="phi"),
+    Kernel(
+        name="plucker_from_points", summary="Plücker array of the line through two points.",
+        formula="kappa = [e; p1 x e], e = (p2 - p1)/||p2 - p1||",
+        ids=("3.21", "3.22", "3.23"), sources=(_S22 + "plucker_from_points",),
+        args=(_v("p1", "first point [m]"), _v("p2", "second point [m]")),
+        outputs=(Out("kappa", (6,), "[e; n] (n in m)"),),
+        build=_one("kappa", _S22 + "plucker_from_points"),
+        singular="p1 = p2", singular_arg="p2"),
+    Kernel(
+        name="plucker_transfer", summary="Plücker array of a line referred to point B.",
+        formula="kappa_B = U(a, b) kappa_A", ids=("3.29",),
+        sources=(_S22 + "plucker_transfer",),
+        args=(Arg("kappa_A", (6,), "any", "Plücker array [e; n_A]"),
+              _v("a", "point A [m]"), _v("b", "point B [m]")),
+        outputs=(Out("kappa_B", (6,), "[e; n_B]"),),
+        build=_one("kappa_B", _S22 + "plucker_transfer")),
+    Kernel(
+        name="instant_screw_axis",
+        summary="Instant screw axis of a twist: point, pitch and Plücker array.",
+        formula="p0' = omega x (a_dot - omega x a)/||omega||^2, pitch' = a_dot.omega/"
+                "||omega||^2, kappa = [e'; p0' x e']",
+        ids=("3.53", "3.54", "3.55", "3.70"),
+        sources=(_S41 + "instant_screw_axis_point", _S41 + "instant_screw_pitch",
+                 _S41 + "instant_screw_plucker"),
+        args=(OMEGA, _v("a", "body point A [m]"), _v("a_dot", "velocity of A [m/s]")),
+        outputs=(Out("p0", (3,), "ISA point closest to the origin [m]"),
+                 Out("pitch", (), "pitch [m/rad]"), Out("plucker", (6,), "[e'; n']")),
+        build=_isa, singular="omega = 0 (pure translation)", singular_arg="omega"),
+    Kernel(
+        name="wrench_axis", summary="Axis of a wrench: point, pitch and Plücker array.",
+        formula="p0'' = f x (n_A - a x f)... per (3.109)-(3.111), kappa through p0'' along f",
+        ids=("3.109", "3.110", "3.111"),
+        sources=(_S7 + "wrench_axis_point", _S7 + "wrench_pitch",
+                 _S22 + "plucker_from_points"),
+        args=(Arg("w_A", (6,), "any", "wrench [n_A; f] at A [N m; N]"),
+              _v("a", "point A [m]")),
+        outputs=(Out("p0", (3,), "wrench-axis point closest to the origin [m]"),
+                 Out("pitch", (), "pitch [m]"), Out("plucker", (6,), "[e''; n'']")),
+        build=_wrench_axis, singular="f = 0 (pure moment)", singular_arg="w_A"),
+    Kernel(
+        name="twist_transfer", summary="Twist at P from the twist at A (same body).",
+        formula="t_P = U(a, p) t_A, U = [[1, O], [A - P, 1]]", ids=("3.83",),
+        sources=(_S42 + "twist_transfer",),
+        args=(Arg("t_A", (6,), "any", "twist [omega; v_A] [rad/s; m/s]"),
+              _v("a", "point A [m]"), _v("p", "point P [m]")),
+        outputs=(Out("t_P", (6,), "[omega; v_P]"),), build=_one("t_P", _S42 + "twist_transfer")),
+    Kernel(
+        name="twist_transfer_matrix", summary="Twist-transfer matrix U (6x6).",
+        formula="U = [[1, O], [A - P, 1]]", ids=("3.83",),
+        sources=(_S42 + "twist_transfer_matrix",),
+        args=(_v("a", "point A [m]"), _v("p", "point P [m]")),
+        outputs=(Out("U", (6, 6), ""),), build=_one("U", _S42 + "twist_transfer_matrix")),
+    Kernel(
+        name="wrench_transfer", summary="Wrench at P from the wrench at A.",
+        formula="w_P = V(a, p) w_A", ids=("3.119",), sources=(_S7 + "wrench_transfer",),
+        args=(Arg("w_A", (6,), "any", "wrench [n_A; f] [N m; N]"),
+              _v("a", "point A [m]"), _v("p", "point P [m]")),
+        outputs=(Out("w_P", (6,), "[n_P; f]"),), build=_one("w_P", _S7 + "wrench_transfer")),
+    Kernel(
+        name="wrench_transfer_matrix", summary="Wrench-transfer matrix V (6x6).",
+        formula="V = [[1, A - P], [O, 1]]", ids=("3.119",),
+        sources=(_S7 + "wrench_transfer_matrix",),
+        args=(_v("a", "point A [m]"), _v("p", "point P [m]")),
+        outputs=(Out("V", (6, 6), ""),), build=_one("V", _S7 + "wrench_transfer_matrix")),
+    *_rate_kernels(),
+    Kernel(
+        name="point_acceleration", summary="Acceleration of a body point P.",
+        formula="p_ddot = a_ddot + (Omega_dot + Omega^2)(p - a)", ids=("3.89",),
+        sources=(_S5 + "point_acceleration",),
+        args=(_v("a_ddot", "acceleration of A [m/s^2]"), OMEGA,
+              _v("omega_dot", "angular acceleration [rad/s^2]"), _v("p", "point P [m]"),
+              _v("a", "point A [m]")),
+        outputs=(Out("p_ddot", (3,), "[m/s^2]"),),
+        build=_one("p_ddot", _S5 + "point_acceleration")),
+    Kernel(
+        name="moving_frame_acceleration",
+        summary="Acceleration of a point in the fixed frame from moving-frame data.",
+        formula="[p_ddot]_F = o_ddot + Q(rho_ddot + 2 omega x rho_dot + omega_dot x rho + "
+                "omega x (omega x rho)) (Coriolis term included)", ids=("3.105",),
+        sources=(_S6 + "moving_frame_acceleration",),
+        args=(_v("o_ddot", "acceleration of the moving origin [m/s^2]"), Q_ARG,
+              _v("omega", "angular velocity of the moving frame, M-frame components"),
+              _v("omega_dot", "angular acceleration, M-frame components"),
+              _v("rho_M", "position in M [m]"), _v("rho_dot_M", "velocity in M [m/s]"),
+              _v("rho_ddot_M", "acceleration in M [m/s^2]")),
+        outputs=(Out("p_ddot", (3,), "[m/s^2], F-frame"),),
+        build=_one("p_ddot", _S6 + "moving_frame_acceleration")),
+    Kernel(
+        name="inertia_at_point", summary="Moment of inertia about a point A.",
+        formula="I_A = I_C - m CPM(a - c)^2", ids=("3.133",), sources=(_S8 + "inertia_at_point",),
+        args=(Arg("I_C", (3, 3), "any", "inertia at the mass centre [kg m^2]"),
+              Arg("m", (), "any", "mass [kg]"), _v("c", "mass centre [m]"),
+              _v("a", "point A [m]")),
+        outputs=(Out("I_A", (3, 3), "[kg m^2]"),), build=_one("I_A", _S8 + "inertia_at_point")),
+    Kernel(
+        name="inertia_dyad_at_point", summary="Inertia dyad M_A (6x6) at point A.",
+        formula="M_A per (3.147)", ids=("3.147",), sources=(_S8 + "inertia_dyad_at_point",),
+        args=(Arg("I_C", (3, 3), "any", "inertia at the mass centre [kg m^2]"),
+              Arg("m", (), "any", "mass [kg]"), _v("c", "mass centre [m]"),
+              _v("a", "point A [m]")),
+        outputs=(Out("M_A", (6, 6), ""),), build=_one("M_A", _S8 + "inertia_dyad_at_point")),
+    Kernel(
+        name="newton_euler_wrench", summary="Newton-Euler wrench [n_C; f] of a rigid body.",
+        formula="n_C = I_C omega_dot + omega x I_C omega, f = m c_ddot",
+        ids=("3.134", "3.139"), sources=(_S8 + "newton_euler_wrench",),
+        args=(Arg("I_C", (3, 3), "any", "inertia at the mass centre [kg m^2]"),
+              Arg("m", (), "any", "mass [kg]"), OMEGA,
+              _v("omega_dot", "angular acceleration [rad/s^2]"),
+              _v("c_ddot", "acceleration of the mass centre [m/s^2]")),
+        outputs=(Out("w", (6,), "[n_C; f] [N m; N]"),),
+        build=_one("w", _S8 + "newton_euler_wrench")),
+    Kernel(
+        name="kinetic_energy", summary="Kinetic energy of a rigid body.",
+        formula="T = 1/2 m c_dot.c_dot + 1/2 omega^T I_C omega", ids=("3.145",),
+        sources=(_S8 + "kinetic_energy",),
+        args=(Arg("I_C", (3, 3), "any", "inertia at the mass centre [kg m^2]"),
+              Arg("m", (), "any", "mass [kg]"), OMEGA,
+              _v("c_dot", "velocity of the mass centre [m/s]")),
+        outputs=(Out("T", (), "[J]"),), build=_one("T", _S8 + "kinetic_energy")),
+]
+
+
+# ----------------------------------------------------------------------------------------
+# Exercise 3.10: Euler-angle rates, one kernel per (sequence, frame); dispatched by name
+EULER_SEQUENCES = ("ZXZ", "XYX", "YZY", "ZYZ", "XZX", "YXY",
+                   "XYZ", "YZX", "ZXY", "XZY", "ZYX", "YXZ")
+
+
+def _euler_W(angles, seq, frame):
+    ex = importlib.import_module(_EX10[:-1])
+    W = ex.euler_rate_matrix(seq, frame)
+    return W.xreplace(dict(zip(list(ex.ETA), list(angles), strict=True)))
+
+
+def _euler_rates(angles, omega, seq, frame):
+    W = _euler_W(angles, seq, frame)
+    det = sp.trigsimp(W.det())
+    adj = W.adjugate().applyfunc(sp.trigsimp)
+    return {"eta_dot": adj * omega / det}
+
+
+for _seq in EULER_SEQUENCES:
+    for _frame in ("fixed", "body"):
+        _tag = f"{_seq.lower()}_{_frame}"
+        KERNELS.append(Kernel(
+            name=f"euler_rate_matrix_{_tag}", public=False,
+            summary=f"Euler-angle rate matrix W ({_seq}, omega in the {_frame} frame).",
+            formula="omega = W eta_dot", ids=("ex3.10",),
+            sources=(_EX10 + "euler_rate_matrix",),
+            args=(Arg("angles", (3,), "any", "Euler angles [rad]"),),
+            outputs=(Out("W", (3, 3), ""),),
+            build=lambda angles, _s=_seq, _f=_frame: {"W": _euler_W(angles, _s, _f)}))
+        KERNELS.append(Kernel(
+            name=f"euler_angle_rates_{_tag}", public=False,
+            summary=f"Euler-angle rates from omega ({_seq}, {_frame} frame).",
+            formula="eta_dot = W^-1 omega = adj(W) omega / det(W)", ids=("ex3.10",),
+            sources=(_EX10 + "euler_rate_matrix",),
+            args=(Arg("angles", (3,), "any", "Euler angles [rad]"), OMEGA),
+            outputs=(Out("eta_dot", (3,), "[rad/s]"),),
+            build=lambda angles, omega, _s=_seq, _f=_frame: _euler_rates(angles, omega, _s, _f),
+            singular="det W = 0 (gimbal lock)", singular_arg="angles"))
