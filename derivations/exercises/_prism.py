@@ -1,0 +1,56 @@
+"""Exact integration over the regular hexagonal prism and its parts (Exercises 3.11-3.12).
+
+The hexagon (side ``a``) is centred at the origin of the x-y plane with two edges at
+``y = +-s``, ``s = a sqrt(3)/2``; the prism spans ``0 <= z <= h``. A part is the set
+``zlo(y) <= z <= zhi(y)`` over the hexagon; every integral is an exact iterated sympy
+integral of a polynomial (density 1).
+"""
+
+from __future__ import annotations
+
+import sympy as sp
+
+x, y, z = sp.symbols("x y z", real=True)
+A_SIDE = sp.Rational(1, 40)   # 25 mm in m
+HEIGHT = sp.Rational(3, 20)   # 150 mm in m
+S = A_SIDE * sp.sqrt(3) / 2   # apothem
+
+
+def integrate_part(f, zlo, zhi, a=A_SIDE):
+    """``int f dV`` over ``{(x, y) in hexagon, zlo(y) <= z <= zhi(y)}``, exactly."""
+    s = a * sp.sqrt(3) / 2
+    g = sp.integrate(f, (z, zlo, zhi))
+    total = 0
+    for ylo, yhi, xmax in ((-s, 0, a + y / sp.sqrt(3)), (0, s, a - y / sp.sqrt(3))):
+        total += sp.integrate(sp.integrate(g, (x, -xmax, xmax)), (y, ylo, yhi))
+    return sp.radsimp(sp.expand(total))
+
+
+def mass_properties(zlo, zhi):
+    """Volume V, centroid c, centroidal inertia per unit density I_C / rho (exact)."""
+    r = sp.Matrix([x, y, z])
+    V = integrate_part(sp.Integer(1), zlo, zhi)
+    c = sp.Matrix([integrate_part(ri, zlo, zhi) for ri in r]) / V
+    c = c.applyfunc(lambda e: sp.radsimp(sp.expand(e)))
+    I_O = sp.Matrix(3, 3, lambda i, j: integrate_part(
+        (r.dot(r) if i == j else 0) - r[i] * r[j], zlo, zhi))
+    I_C = I_O - V * (c.dot(c) * sp.eye(3) - c * c.T)
+    return V, c, I_C.applyfunc(lambda e: sp.radsimp(sp.expand(e))), I_O
+
+
+def principal_yz(I):
+    """Principal moments and unit axes of a matrix with the x axis principal (I_xy = I_xz = 0).
+
+    The y-z block gives ``lambda = (I_yy + I_zz)/2 -+ sqrt(((I_yy - I_zz)/2)^2 + I_yz^2)`` and
+    unit axes ``[0, cos(alpha), sin(alpha)]``, ``tan(2 alpha) = 2 I_yz / (I_yy - I_zz)``.
+    Returns ``[(I_xx, e_x), (lambda_1, v_1), (lambda_2, v_2)]`` with unnormalised exact
+    ``v`` (``v_k = [0, I_yz, lambda_k - I_yy]``) and the angle ``alpha`` of ``v_1``.
+    """
+    Iyy, Izz, Iyz = I[1, 1], I[2, 2], I[1, 2]
+    mid = (Iyy + Izz) / 2
+    rad = sp.sqrt(sp.radsimp(sp.expand(((Iyy - Izz) / 2) ** 2 + Iyz**2)))
+    out = [(I[0, 0], sp.Matrix([1, 0, 0]))]
+    for lam in (mid - rad, mid + rad):
+        out.append((sp.radsimp(lam), sp.Matrix([0, Iyz, lam - Iyy])))
+    alpha = sp.atan(out[1][1][2] / out[1][1][1])
+    return out, alpha
