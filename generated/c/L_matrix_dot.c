@@ -4,9 +4,9 @@
  * source: derivations.sec3_5_rates.L_matrix_dot (composed in derivations/kernels_spec.py)
  * equations: (3.96)
  * template: c_kernel.c.j2
- * math hash: sha256:4521fab4c9754af8
+ * math hash: sha256:bc3db842eb2cf774
  * sympy 1.14.0, rigidsym 0.1.0
- * operations: 99
+ * operations: 98
  */
 #include "L_matrix_dot.h"
 

@@ -4,9 +4,9 @@
  * source: derivations.sec3_5_rates.L_matrix_dot (composed in derivations/kernels_spec.py)
  * equations: (3.96)
  * template: c_kernel.h.j2
- * math hash: sha256:4521fab4c9754af8
+ * math hash: sha256:bc3db842eb2cf774
  * sympy 1.14.0, rigidsym 0.1.0
- * operations: 99
+ * operations: 98
  *
  * Time derivative of L_matrix along omega.
  * d/dt L_matrix(e(t), phi(t)) with e_dot, phi_dot from omega (the corrected form where the printed one does not hold)
@@ -35,45 +35,45 @@ static inline int rigidsym_L_matrix_dot_sample(
     {
         const double x0 = (0.5)*phi;
         const double x1 = sin(x0);
-        const double x2 = 2.0*x1*cos(x0);
-        const double x3 = x2*(e_0*omega_0 + e_1*omega_1 + e_2*omega_2);
-        const double x4 = 2.0*x1*x1;
-        const double x5 = e_0*x4;
-        const double x6 = e_2*x5;
-        const double x7 = e_1*x2;
-        const double x8 = x6 - x7;
-        const double x9 = (0.5)*omega_1;
-        const double x10 = e_1*x5;
-        const double x11 = e_2*x2;
-        const double x12 = x10 + x11;
-        const double x13 = e_1*e_2*x4;
-        const double x14 = e_0*x2;
-        const double x15 = x13 + x14;
+        const double x2 = 2.0*x1*x1;
+        const double x3 = e_0*x2;
+        const double x4 = e_2*x3;
+        const double x5 = 2.0*x1*cos(x0);
+        const double x6 = e_1*x5;
+        const double x7 = x4 - x6;
+        const double x8 = (0.5)*omega_1;
+        const double x9 = e_1*x3;
+        const double x10 = e_2*x5;
+        const double x11 = x10 + x9;
+        const double x12 = e_0*x5;
+        const double x13 = omega_0*x12 + omega_1*x6 + omega_2*x10;
+        const double x14 = e_1*e_2*x2;
+        const double x15 = x12 + x14;
         const double x16 = e_1*e_1;
-        const double x17 = 1.0 - x4;
+        const double x17 = 1.0 - x2;
         const double x18 = x16 + x17*(1.0 - x16);
         const double x19 = e_2*e_2;
         const double x20 = x17*(1.0 - x19) + x19;
-        const double x21 = -x13 + x14;
+        const double x21 = x12 - x14;
         const double x22 = -x21;
         const double x23 = (0.5)*omega_0;
         const double x24 = e_0*e_0;
         const double x25 = x17*(1.0 - x24) + x24;
         const double x26 = (0.5)*omega_2;
-        const double x27 = x10 - x11;
-        const double x28 = x6 + x7;
-        out_L_matrix_dot[0] = (0.5)*omega_2*x12 - x3 - x8*x9;
-        out_L_matrix_dot[1] = (0.5)*omega_2*x18 - x15*x9;
-        out_L_matrix_dot[2] = (0.5)*omega_2*x22 - x20*x9;
-        out_L_matrix_dot[3] = x23*x8 - x25*x26;
-        out_L_matrix_dot[4] = (0.5)*omega_0*x15 - x26*x27 - x3;
+        const double x27 = -x10 + x9;
+        const double x28 = x4 + x6;
+        out_L_matrix_dot[0] = (0.5)*omega_2*x11 - x13 - x7*x8;
+        out_L_matrix_dot[1] = (0.5)*omega_2*x18 - x15*x8;
+        out_L_matrix_dot[2] = (0.5)*omega_2*x22 - x20*x8;
+        out_L_matrix_dot[3] = x23*x7 - x25*x26;
+        out_L_matrix_dot[4] = (0.5)*omega_0*x15 - x13 - x26*x27;
         out_L_matrix_dot[5] = x20*x23 - x26*x28;
-        out_L_matrix_dot[6] = (0.5)*omega_1*x25 - x12*x23;
+        out_L_matrix_dot[6] = (0.5)*omega_1*x25 - x11*x23;
         out_L_matrix_dot[7] = (0.5)*omega_1*x27 - x18*x23;
-        out_L_matrix_dot[8] = (0.5)*omega_1*x28 - x22*x23 - x3;
-        out_L_matrix_dot[9] = -x23*(x18 + x20) + x26*x28 + x27*x9;
-        out_L_matrix_dot[10] = x12*x23 - x21*x26 - x9*(x20 + x25);
-        out_L_matrix_dot[11] = x15*x9 + x23*x8 - x26*(x18 + x25);
+        out_L_matrix_dot[8] = (0.5)*omega_1*x28 - x13 - x22*x23;
+        out_L_matrix_dot[9] = -x23*(x18 + x20) + x26*x28 + x27*x8;
+        out_L_matrix_dot[10] = x11*x23 - x21*x26 - x8*(x20 + x25);
+        out_L_matrix_dot[11] = x15*x8 + x23*x7 - x26*(x18 + x25);
     }
     for (int j = 0; j < 12; ++j)
         singular |= !isfinite(out_L_matrix_dot[j]);

@@ -26,7 +26,6 @@ static inline int rigidsym_euler_angle_rates_yzx_fixed_sample(
 {
     const double angles_0 = in_angles[0];
     const double angles_1 = in_angles[1];
-    const double angles_2 = in_angles[2];
     const double omega_0 = in_omega[0];
     const double omega_1 = in_omega[1];
     const double omega_2 = in_omega[2];

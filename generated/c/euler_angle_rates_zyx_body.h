@@ -24,7 +24,6 @@ static inline int rigidsym_euler_angle_rates_zyx_body_sample(
     const double *RIGIDSYM_RESTRICT in_omega,
     double *RIGIDSYM_RESTRICT out_eta_dot)
 {
-    const double angles_0 = in_angles[0];
     const double angles_1 = in_angles[1];
     const double angles_2 = in_angles[2];
     const double omega_0 = in_omega[0];

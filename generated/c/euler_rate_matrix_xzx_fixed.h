@@ -24,7 +24,6 @@ static inline int rigidsym_euler_rate_matrix_xzx_fixed_sample(
 {
     const double angles_0 = in_angles[0];
     const double angles_1 = in_angles[1];
-    const double angles_2 = in_angles[2];
     int singular = 0;
     {
         const double x0 = sin(angles_0);

@@ -22,7 +22,6 @@ static inline int rigidsym_euler_rate_matrix_yxz_body_sample(
     const double *RIGIDSYM_RESTRICT in_angles,
     double *RIGIDSYM_RESTRICT out_W)
 {
-    const double angles_0 = in_angles[0];
     const double angles_1 = in_angles[1];
     const double angles_2 = in_angles[2];
     int singular = 0;

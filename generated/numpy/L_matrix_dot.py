@@ -3,9 +3,9 @@
 # source: derivations.sec3_5_rates.L_matrix_dot (composed in derivations/kernels_spec.py)
 # equations: (3.96)
 # template: numpy_kernel.py.j2
-# math hash: sha256:4521fab4c9754af8
+# math hash: sha256:bc3db842eb2cf774
 # sympy 1.14.0, rigidsym 0.1.0
-# operations: 99
+# operations: 98
 """Time derivative of L_matrix along omega.
 
 d/dt L_matrix(e(t), phi(t)) with e_dot, phi_dot from omega (the corrected form where the printed one does not hold)
@@ -17,53 +17,53 @@ the boolean mask of singular samples. Use :mod:`rigidsym.kernels` for the checke
 
 import numpy
 
-OPS = 99
-MATH_HASH = "4521fab4c9754af8"
+OPS = 98
+MATH_HASH = "bc3db842eb2cf774"
 
 
 def _main(e_0, e_1, e_2, phi, omega_0, omega_1, omega_2):
     x0 = (0.5)*phi
     x1 = numpy.sin(x0)
-    x2 = 2*x1*numpy.cos(x0)
-    x3 = x2*(e_0*omega_0 + e_1*omega_1 + e_2*omega_2)
-    x4 = 2*x1*x1
-    x5 = e_0*x4
-    x6 = e_2*x5
-    x7 = e_1*x2
-    x8 = x6 - x7
-    x9 = (0.5)*omega_1
-    x10 = e_1*x5
-    x11 = e_2*x2
-    x12 = x10 + x11
-    x13 = e_1*e_2*x4
-    x14 = e_0*x2
-    x15 = x13 + x14
+    x2 = 2*x1*x1
+    x3 = e_0*x2
+    x4 = e_2*x3
+    x5 = 2*x1*numpy.cos(x0)
+    x6 = e_1*x5
+    x7 = x4 - x6
+    x8 = (0.5)*omega_1
+    x9 = e_1*x3
+    x10 = e_2*x5
+    x11 = x10 + x9
+    x12 = e_0*x5
+    x13 = omega_0*x12 + omega_1*x6 + omega_2*x10
+    x14 = e_1*e_2*x2
+    x15 = x12 + x14
     x16 = e_1*e_1
-    x17 = 1 - x4
+    x17 = 1 - x2
     x18 = x16 + x17*(1 - x16)
     x19 = e_2*e_2
     x20 = x17*(1 - x19) + x19
-    x21 = -x13 + x14
+    x21 = x12 - x14
     x22 = -x21
     x23 = (0.5)*omega_0
     x24 = e_0*e_0
     x25 = x17*(1 - x24) + x24
     x26 = (0.5)*omega_2
-    x27 = x10 - x11
-    x28 = x6 + x7
+    x27 = -x10 + x9
+    x28 = x4 + x6
     return (
-        (0.5)*omega_2*x12 - x3 - x8*x9,
-        (0.5)*omega_2*x18 - x15*x9,
-        (0.5)*omega_2*x22 - x20*x9,
-        x23*x8 - x25*x26,
-        (0.5)*omega_0*x15 - x26*x27 - x3,
+        (0.5)*omega_2*x11 - x13 - x7*x8,
+        (0.5)*omega_2*x18 - x15*x8,
+        (0.5)*omega_2*x22 - x20*x8,
+        x23*x7 - x25*x26,
+        (0.5)*omega_0*x15 - x13 - x26*x27,
         x20*x23 - x26*x28,
-        (0.5)*omega_1*x25 - x12*x23,
+        (0.5)*omega_1*x25 - x11*x23,
         (0.5)*omega_1*x27 - x18*x23,
-        (0.5)*omega_1*x28 - x22*x23 - x3,
-        -x23*(x18 + x20) + x26*x28 + x27*x9,
-        x12*x23 - x21*x26 - x9*(x20 + x25),
-        x15*x9 + x23*x8 - x26*(x18 + x25),
+        (0.5)*omega_1*x28 - x13 - x22*x23,
+        -x23*(x18 + x20) + x26*x28 + x27*x8,
+        x11*x23 - x21*x26 - x8*(x20 + x25),
+        x15*x8 + x23*x7 - x26*(x18 + x25),
     ), (
     )
 

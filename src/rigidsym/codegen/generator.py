@@ -157,11 +157,16 @@ def _render_kernel(env, kc: KernelCode) -> dict[str, str]:
         header=_header(kc, t), ops=kc.ops, hash=kc.hash,
         variants=[{"name": v.name, "cond": None if v.cond is None else npp.doprint(v.cond),
                    **_program_lines(v.program, npp)} for v in kc.variants], **common)
+    used = set()
+    for v in kc.variants:
+        for e in [*(x for _, x in v.program.temps), *v.program.outputs, *v.program.dens,
+                  *([v.cond] if v.cond is not None else [])]:
+            used |= {str(s) for s in sp.sympify(e).free_symbols}
     cvars = [{"name": v.name, "cond": None if v.cond is None else cp.doprint(v.cond),
               **_program_lines(v.program, cp)} for v in kc.variants]
     for t, path in (("c_kernel.h.j2", f"c/{k.name}.h"), ("c_kernel.c.j2", f"c/{k.name}.c")):
         files[path] = env.get_template(t).render(header=_header(kc, t), variants=cvars,
-                                                 **common)
+                                                 used=used, **common)
     return files
 
 
