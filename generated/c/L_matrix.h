@@ -29,13 +29,13 @@ static inline int rigidsym_L_matrix_sample(
     const double phi = in_phi[0];
     int singular = 0;
     {
-        const double x0 = e_2*e_2;
+        const double x0 = (e_2*e_2);
         const double x1 = (0.5)*phi;
         const double x2 = sin(x1);
-        const double x3 = x2*x2;
+        const double x3 = (x2*x2);
         const double x4 = 0.5 - x3;
         const double x5 = (0.5)*x0 + x4*(1.0 - x0);
-        const double x6 = e_1*e_1;
+        const double x6 = (e_1*e_1);
         const double x7 = x4*(1.0 - x6) + (0.5)*x6;
         const double x8 = e_0*x3;
         const double x9 = e_1*x8;
@@ -43,7 +43,7 @@ static inline int rigidsym_L_matrix_sample(
         const double x11 = e_2*x10;
         const double x12 = e_2*x8;
         const double x13 = e_1*x10;
-        const double x14 = e_0*e_0;
+        const double x14 = (e_0*e_0);
         const double x15 = (0.5)*x14 + x4*(1.0 - x14);
         const double x16 = e_0*x10;
         const double x17 = e_1*e_2*x3;

@@ -35,7 +35,7 @@ static inline int rigidsym_L_matrix_dot_sample(
     {
         const double x0 = (0.5)*phi;
         const double x1 = sin(x0);
-        const double x2 = 2.0*x1*x1;
+        const double x2 = 2.0*(x1*x1);
         const double x3 = e_0*x2;
         const double x4 = e_2*x3;
         const double x5 = 2.0*x1*cos(x0);
@@ -49,15 +49,15 @@ static inline int rigidsym_L_matrix_dot_sample(
         const double x13 = omega_0*x12 + omega_1*x6 + omega_2*x10;
         const double x14 = e_1*e_2*x2;
         const double x15 = x12 + x14;
-        const double x16 = e_1*e_1;
+        const double x16 = (e_1*e_1);
         const double x17 = 1.0 - x2;
         const double x18 = x16 + x17*(1.0 - x16);
-        const double x19 = e_2*e_2;
+        const double x19 = (e_2*e_2);
         const double x20 = x17*(1.0 - x19) + x19;
         const double x21 = x12 - x14;
         const double x22 = -x21;
         const double x23 = (0.5)*omega_0;
-        const double x24 = e_0*e_0;
+        const double x24 = (e_0*e_0);
         const double x25 = x17*(1.0 - x24) + x24;
         const double x26 = (0.5)*omega_2;
         const double x27 = -x10 + x9;

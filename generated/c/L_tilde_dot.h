@@ -36,7 +36,7 @@ static inline int rigidsym_L_tilde_dot_sample(
     {
         const double x0 = (0.5)*phi;
         const double x1 = sin(x0);
-        const double x2 = x1*x1;
+        const double x2 = (x1*x1);
         const double x3 = e_2*x2;
         const double x4 = e_0*x3;
         const double x5 = cos(x0);
@@ -47,16 +47,16 @@ static inline int rigidsym_L_tilde_dot_sample(
         const double x10 = 1.0/x5;
         const double x11 = e_2*x6;
         const double x12 = -2.0*omega_0*x9 - 2.0*omega_1*x7 - 2.0*omega_2*x11;
-        const double x13 = e_0*e_0;
+        const double x13 = (e_0*e_0);
         const double x14 = 0.5 - x2;
         const double x15 = (0.5)*x13 + x14*(1.0 - x13);
-        const double x16 = e_1*e_1;
+        const double x16 = (e_1*e_1);
         const double x17 = x14*(1.0 - x16) + (0.5)*x16;
         const double x18 = -e_2*x1*x10*x12 + omega_0*(-x4 + x7) + omega_1*(-x8 - x9) + omega_2*(x15 + x17);
-        const double x19 = (0.5)/x5*x5;
+        const double x19 = (0.5)/(x5*x5);
         const double x20 = -x18*x19;
         const double x21 = e_0*e_1*x2;
-        const double x22 = e_2*e_2;
+        const double x22 = (e_2*e_2);
         const double x23 = x14*(1.0 - x22) + (0.5)*x22;
         const double x24 = -e_1*x1*x10*x12 + omega_0*(-x11 - x21) + omega_1*(x15 + x23) + omega_2*(-x8 + x9);
         const double x25 = -e_0*x1*x10*x12 + omega_0*(x17 + x23) + omega_1*(x11 - x21) + omega_2*(-x4 - x7);

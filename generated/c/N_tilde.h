@@ -32,7 +32,7 @@ static inline int rigidsym_N_tilde_sample(
         const double x0 = (0.5)*phi;
         const double x1 = sin(x0);
         const double x2 = 2.0*x1*cos(x0);
-        const double x3 = 2.0*x1*x1;
+        const double x3 = 2.0*(x1*x1);
         const double x4 = e_2*x3;
         const double x5 = e_1*x3;
         const double x6 = e_0*x3;

@@ -35,7 +35,7 @@ static inline int rigidsym_N_tilde_dot_sample(
     {
         const double x0 = (0.5)*phi;
         const double x1 = sin(x0);
-        const double x2 = x1*x1;
+        const double x2 = (x1*x1);
         const double x3 = 2.0*x2;
         const double x4 = e_0*omega_0 + e_1*omega_1 + e_2*omega_2;
         const double x5 = x4*(1.0 - x3);
@@ -49,12 +49,12 @@ static inline int rigidsym_N_tilde_dot_sample(
         const double x13 = x10*x12;
         const double x14 = x12*x9;
         const double x15 = (0.5)*x11;
-        const double x16 = omega_0*(-x13 + x9) + omega_1*(-x10 - x14) + omega_2*x15*(1.0 - e_2*e_2);
+        const double x16 = omega_0*(-x13 + x9) + omega_1*(-x10 - x14) + omega_2*x15*(1.0 - (e_2*e_2));
         const double x17 = e_1*x7;
         const double x18 = (0.5)*e_2;
         const double x19 = e_0*x11*x9;
-        const double x20 = omega_0*(-x18 - x19) + omega_1*x15*(1.0 - e_1*e_1) + omega_2*(x10 - x14);
-        const double x21 = omega_0*x15*(1.0 - e_0*e_0) + omega_1*(x18 - x19) + omega_2*(-x13 - x9);
+        const double x20 = omega_0*(-x18 - x19) + omega_1*x15*(1.0 - (e_1*e_1)) + omega_2*(x10 - x14);
+        const double x21 = omega_0*x15*(1.0 - (e_0*e_0)) + omega_1*(x18 - x19) + omega_2*(-x13 - x9);
         const double x22 = e_0*x7;
         out_N_tilde_dot[0] = x5;
         out_N_tilde_dot[1] = -2.0*x16*x2 - x8;

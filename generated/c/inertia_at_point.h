@@ -44,14 +44,14 @@ static inline int rigidsym_inertia_at_point_sample(
     int singular = 0;
     {
         const double x0 = a_1 - c_1;
-        const double x1 = x0*x0;
+        const double x1 = (x0*x0);
         const double x2 = a_2 - c_2;
-        const double x3 = x2*x2;
+        const double x3 = (x2*x2);
         const double x4 = a_0 - c_0;
         const double x5 = m*x4;
         const double x6 = -x0*x5;
         const double x7 = -x2*x5;
-        const double x8 = x4*x4;
+        const double x8 = (x4*x4);
         const double x9 = -m*x0*x2;
         out_I_A[0] = I_C_00 + m*(x1 + x3);
         out_I_A[1] = I_C_01 + x6;

@@ -38,7 +38,7 @@ static inline int rigidsym_instant_screw_axis_sample(
     const double a_dot_2 = in_a_dot[2];
     int singular = 0;
     {
-        const double x0 = omega_0*omega_0 + omega_1*omega_1 + omega_2*omega_2;
+        const double x0 = (omega_0*omega_0) + (omega_1*omega_1) + (omega_2*omega_2);
         const double x1 = 1.0/x0;
         const double x2 = a_0*omega_1 - a_1*omega_0 + a_dot_2;
         const double x3 = -a_0*omega_2 + a_2*omega_0 + a_dot_1;

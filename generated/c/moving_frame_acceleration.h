@@ -62,14 +62,14 @@ static inline int rigidsym_moving_frame_acceleration_sample(
         const double x2 = omega_dot_1 + x1;
         const double x3 = omega_0*omega_1;
         const double x4 = -omega_dot_2 + x3;
-        const double x5 = omega_1*omega_1;
-        const double x6 = omega_2*omega_2;
+        const double x5 = (omega_1*omega_1);
+        const double x6 = (omega_2*omega_2);
         const double x7 = -x5 - x6;
         const double x8 = 2.0*omega_0;
         const double x9 = omega_dot_2 + x3;
         const double x10 = omega_1*omega_2;
         const double x11 = -omega_dot_0 + x10;
-        const double x12 = omega_0*omega_0;
+        const double x12 = (omega_0*omega_0);
         const double x13 = -x12 - x6;
         const double x14 = 2.0*omega_1;
         const double x15 = omega_dot_0 + x10;

@@ -45,7 +45,7 @@ static inline int rigidsym_natural_invariants_from_rotation_sample(
         const double x6 = (0.5)*Q_02;
         const double x7 = (0.5)*Q_20;
         const double x8 = x6 + x7;
-        const double x9 = x3*x3 + x5*x5 + x8*x8;
+        const double x9 = (x3*x3) + (x5*x5) + (x8*x8);
         const double x10 = (0.5)*Q_10 - x4;
         const double x11 = x6 - x7;
         const double x12 = -0.5*Q_12 + (0.5)*Q_21;
@@ -53,7 +53,7 @@ static inline int rigidsym_natural_invariants_from_rotation_sample(
         out_e[0] = x13*x3;
         out_e[1] = x13*x5;
         out_e[2] = x13*x8;
-        out_phi[0] = atan2(sqrt(x10*x10 + x11*x11 + x12*x12), x0 + x1 + x2 - 0.5);
+        out_phi[0] = atan2(sqrt((x10*x10) + (x11*x11) + (x12*x12)), x0 + x1 + x2 - 0.5);
         singular |= (x9) == 0.0;
     } else if (Q_11 >= Q_00 && Q_11 >= Q_22 && Q_00 + Q_11 + Q_22 < 0.0) {
         const double x0 = (0.5)*Q_01;
@@ -62,7 +62,7 @@ static inline int rigidsym_natural_invariants_from_rotation_sample(
         const double x3 = (0.5)*Q_21 + x2;
         const double x4 = (0.5)*Q_00 + (0.5)*Q_22 - 0.5;
         const double x5 = (0.5)*Q_11 - x4;
-        const double x6 = x1*x1 + x3*x3 + x5*x5;
+        const double x6 = (x1*x1) + (x3*x3) + (x5*x5);
         const double x7 = (0.5)*Q_10 - x0;
         const double x8 = (0.5)*Q_21 - x2;
         const double x9 = (0.5)*Q_02 - 0.5*Q_20;
@@ -70,7 +70,7 @@ static inline int rigidsym_natural_invariants_from_rotation_sample(
         out_e[0] = x1*x10;
         out_e[1] = x10*x5;
         out_e[2] = x10*x3;
-        out_phi[0] = atan2(sqrt(x7*x7 + x8*x8 + x9*x9), (0.5)*Q_11 + x4);
+        out_phi[0] = atan2(sqrt((x7*x7) + (x8*x8) + (x9*x9)), (0.5)*Q_11 + x4);
         singular |= (x6) == 0.0;
     } else if (Q_22 >= Q_00 && Q_22 >= Q_11 && Q_00 + Q_11 + Q_22 < 0.0) {
         const double x0 = (0.5)*Q_02;
@@ -80,7 +80,7 @@ static inline int rigidsym_natural_invariants_from_rotation_sample(
         const double x4 = (0.5)*Q_21 + x3;
         const double x5 = (0.5)*Q_00 + (0.5)*Q_11 - 0.5;
         const double x6 = (0.5)*Q_22 - x5;
-        const double x7 = x2*x2 + x4*x4 + x6*x6;
+        const double x7 = (x2*x2) + (x4*x4) + (x6*x6);
         const double x8 = x0 - x1;
         const double x9 = (0.5)*Q_21 - x3;
         const double x10 = -0.5*Q_01 + (0.5)*Q_10;
@@ -88,13 +88,13 @@ static inline int rigidsym_natural_invariants_from_rotation_sample(
         out_e[0] = x11*x2;
         out_e[1] = x11*x4;
         out_e[2] = x11*x6;
-        out_phi[0] = atan2(sqrt(x10*x10 + x8*x8 + x9*x9), (0.5)*Q_22 + x5);
+        out_phi[0] = atan2(sqrt((x10*x10) + (x8*x8) + (x9*x9)), (0.5)*Q_22 + x5);
         singular |= (x7) == 0.0;
     } else {
         const double x0 = -0.5*Q_12 + (0.5)*Q_21;
         const double x1 = -0.5*Q_01 + (0.5)*Q_10;
         const double x2 = (0.5)*Q_02 - 0.5*Q_20;
-        const double x3 = x0*x0 + x1*x1 + x2*x2;
+        const double x3 = (x0*x0) + (x1*x1) + (x2*x2);
         const double x4 = sqrt(x3);
         const double x5 = 1.0/x4;
         out_e[0] = x0*x5;

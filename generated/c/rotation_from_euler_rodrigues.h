@@ -28,11 +28,11 @@ static inline int rigidsym_rotation_from_euler_rodrigues_sample(
     const double eta_3 = in_eta[3];
     int singular = 0;
     {
-        const double x0 = eta_3*eta_3;
-        const double x1 = eta_2*eta_2;
+        const double x0 = (eta_3*eta_3);
+        const double x1 = (eta_2*eta_2);
         const double x2 = -x1;
-        const double x3 = eta_0*eta_0;
-        const double x4 = eta_1*eta_1;
+        const double x3 = (eta_0*eta_0);
+        const double x4 = (eta_1*eta_1);
         const double x5 = x3 - x4;
         const double x6 = 2.0*eta_1;
         const double x7 = eta_0*x6;

@@ -29,10 +29,10 @@ static inline int rigidsym_rotation_from_natural_invariants_sample(
     const double phi = in_phi[0];
     int singular = 0;
     {
-        const double x0 = e_0*e_0;
+        const double x0 = (e_0*e_0);
         const double x1 = (0.5)*phi;
         const double x2 = sin(x1);
-        const double x3 = x2*x2;
+        const double x3 = (x2*x2);
         const double x4 = 2.0*x3;
         const double x5 = 1.0 - x4;
         const double x6 = e_0*x4;
@@ -41,9 +41,9 @@ static inline int rigidsym_rotation_from_natural_invariants_sample(
         const double x9 = e_2*x8;
         const double x10 = e_2*x6;
         const double x11 = e_1*x8;
-        const double x12 = e_1*e_1;
+        const double x12 = (e_1*e_1);
         const double x13 = e_0*x8;
-        const double x14 = e_2*e_2;
+        const double x14 = (e_2*e_2);
         out_Q[0] = x0 + x5*(1.0 - x0);
         out_Q[1] = x7 - x9;
         out_Q[2] = x10 + x11;

@@ -40,8 +40,8 @@ static inline int rigidsym_screw_axis_point_sample(
     {
         const double x0 = (0.5)*phi;
         const double x1 = sin(x0);
-        const double x2 = x1*x1;
-        const double x3 = e_0*e_0;
+        const double x2 = (x1*x1);
+        const double x3 = (e_0*e_0);
         const double x4 = 2.0*x2;
         const double x5 = 1.0 - x4;
         const double x6 = e_0*e_1*x4;
@@ -54,13 +54,13 @@ static inline int rigidsym_screw_axis_point_sample(
         const double x13 = x11 + x12;
         const double x14 = a_0*(x3 + x5*(1.0 - x3)) + a_1*x9 + a_2*x13 - a_prime_0;
         const double x15 = x6 + x8;
-        const double x16 = e_1*e_1;
+        const double x16 = (e_1*e_1);
         const double x17 = e_0*x7;
         const double x18 = 2.0*e_1*e_2*x2 - x17;
         const double x19 = a_0*x15 + a_1*(x16 + x5*(1.0 - x16)) + a_2*x18 - a_prime_1;
         const double x20 = x11 - x12;
         const double x21 = e_1*x10 + x17;
-        const double x22 = e_2*e_2;
+        const double x22 = (e_2*e_2);
         const double x23 = a_0*x20 + a_1*x21 + a_2*(x22 + x5*(1.0 - x22)) - a_prime_2;
         const double x24 = (0.25)/x2;
         out_p0[0] = x24*(x14*x2*(2.0*x3 - 2.0) + x15*x19 + x20*x23);

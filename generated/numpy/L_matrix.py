@@ -22,13 +22,13 @@ MATH_HASH = "ad587ca95a235ac2"
 
 
 def _main(e_0, e_1, e_2, phi):
-    x0 = e_2*e_2
+    x0 = (e_2*e_2)
     x1 = (0.5)*phi
     x2 = numpy.sin(x1)
-    x3 = x2*x2
+    x3 = (x2*x2)
     x4 = 0.5 - x3
     x5 = (0.5)*x0 + x4*(1 - x0)
-    x6 = e_1*e_1
+    x6 = (e_1*e_1)
     x7 = x4*(1 - x6) + (0.5)*x6
     x8 = e_0*x3
     x9 = e_1*x8
@@ -36,7 +36,7 @@ def _main(e_0, e_1, e_2, phi):
     x11 = e_2*x10
     x12 = e_2*x8
     x13 = e_1*x10
-    x14 = e_0*e_0
+    x14 = (e_0*e_0)
     x15 = (0.5)*x14 + x4*(1 - x14)
     x16 = e_0*x10
     x17 = e_1*e_2*x3

@@ -24,7 +24,7 @@ MATH_HASH = "bc3db842eb2cf774"
 def _main(e_0, e_1, e_2, phi, omega_0, omega_1, omega_2):
     x0 = (0.5)*phi
     x1 = numpy.sin(x0)
-    x2 = 2*x1*x1
+    x2 = 2*(x1*x1)
     x3 = e_0*x2
     x4 = e_2*x3
     x5 = 2*x1*numpy.cos(x0)
@@ -38,15 +38,15 @@ def _main(e_0, e_1, e_2, phi, omega_0, omega_1, omega_2):
     x13 = omega_0*x12 + omega_1*x6 + omega_2*x10
     x14 = e_1*e_2*x2
     x15 = x12 + x14
-    x16 = e_1*e_1
+    x16 = (e_1*e_1)
     x17 = 1 - x2
     x18 = x16 + x17*(1 - x16)
-    x19 = e_2*e_2
+    x19 = (e_2*e_2)
     x20 = x17*(1 - x19) + x19
     x21 = x12 - x14
     x22 = -x21
     x23 = (0.5)*omega_0
-    x24 = e_0*e_0
+    x24 = (e_0*e_0)
     x25 = x17*(1 - x24) + x24
     x26 = (0.5)*omega_2
     x27 = -x10 + x9

@@ -25,7 +25,7 @@ def _main(e_0, e_1, e_2, phi):
     x0 = (0.5)*phi
     x1 = numpy.sin(x0)
     x2 = 2*x1*numpy.cos(x0)
-    x3 = 2*x1*x1
+    x3 = 2*(x1*x1)
     x4 = e_2*x3
     x5 = e_1*x3
     x6 = e_0*x3

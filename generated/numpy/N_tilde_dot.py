@@ -24,7 +24,7 @@ MATH_HASH = "b1c3eb794fbb8245"
 def _main(e_0, e_1, e_2, phi, omega_0, omega_1, omega_2):
     x0 = (0.5)*phi
     x1 = numpy.sin(x0)
-    x2 = x1*x1
+    x2 = (x1*x1)
     x3 = 2*x2
     x4 = e_0*omega_0 + e_1*omega_1 + e_2*omega_2
     x5 = x4*(1 - x3)
@@ -38,12 +38,12 @@ def _main(e_0, e_1, e_2, phi, omega_0, omega_1, omega_2):
     x13 = x10*x12
     x14 = x12*x9
     x15 = (0.5)*x11
-    x16 = omega_0*(-x13 + x9) + omega_1*(-x10 - x14) + omega_2*x15*(1 - e_2*e_2)
+    x16 = omega_0*(-x13 + x9) + omega_1*(-x10 - x14) + omega_2*x15*(1 - (e_2*e_2))
     x17 = e_1*x7
     x18 = (0.5)*e_2
     x19 = e_0*x11*x9
-    x20 = omega_0*(-x18 - x19) + omega_1*x15*(1 - e_1*e_1) + omega_2*(x10 - x14)
-    x21 = omega_0*x15*(1 - e_0*e_0) + omega_1*(x18 - x19) + omega_2*(-x13 - x9)
+    x20 = omega_0*(-x18 - x19) + omega_1*x15*(1 - (e_1*e_1)) + omega_2*(x10 - x14)
+    x21 = omega_0*x15*(1 - (e_0*e_0)) + omega_1*(x18 - x19) + omega_2*(-x13 - x9)
     x22 = e_0*x7
     return (
         x5,

@@ -23,16 +23,16 @@ MATH_HASH = "68258707f5bb9e80"
 
 def _main(I_C_00, I_C_01, I_C_02, I_C_10, I_C_11, I_C_12, I_C_20, I_C_21, I_C_22, m, c_0, c_1, c_2, a_0, a_1, a_2):
     x0 = a_1 - c_1
-    x1 = x0*x0
+    x1 = (x0*x0)
     x2 = a_2 - c_2
-    x3 = x2*x2
+    x3 = (x2*x2)
     x4 = a_0 - c_0
     x5 = m*x4
     x6 = -x0*x5
     x7 = m*x2
     x8 = -x4*x7
     x9 = -m*x0
-    x10 = x4*x4
+    x10 = (x4*x4)
     x11 = -x0*x7
     x12 = -m*x2
     x13 = m*x0

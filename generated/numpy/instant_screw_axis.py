@@ -22,7 +22,7 @@ MATH_HASH = "bbbb3fe59daee446"
 
 
 def _main(omega_0, omega_1, omega_2, a_0, a_1, a_2, a_dot_0, a_dot_1, a_dot_2):
-    x0 = omega_0*omega_0 + omega_1*omega_1 + omega_2*omega_2
+    x0 = (omega_0*omega_0) + (omega_1*omega_1) + (omega_2*omega_2)
     x1 = 1.0/x0
     x2 = a_0*omega_1 - a_1*omega_0 + a_dot_2
     x3 = -a_0*omega_2 + a_2*omega_0 + a_dot_1

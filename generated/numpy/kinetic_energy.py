@@ -24,7 +24,7 @@ MATH_HASH = "59e2107c6b1479ae"
 def _main(I_C_00, I_C_01, I_C_02, I_C_10, I_C_11, I_C_12, I_C_20, I_C_21, I_C_22, m, omega_0, omega_1, omega_2, c_dot_0, c_dot_1, c_dot_2):
     x0 = (0.5)*m
     return (
-        c_dot_0*c_dot_0*x0 + c_dot_1*c_dot_1*x0 + c_dot_2*c_dot_2*x0 + (0.5)*omega_0*(I_C_00*omega_0 + I_C_10*omega_1 + I_C_20*omega_2) + (0.5)*omega_1*(I_C_01*omega_0 + I_C_11*omega_1 + I_C_21*omega_2) + (0.5)*omega_2*(I_C_02*omega_0 + I_C_12*omega_1 + I_C_22*omega_2),
+        (c_dot_0*c_dot_0)*x0 + (c_dot_1*c_dot_1)*x0 + (c_dot_2*c_dot_2)*x0 + (0.5)*omega_0*(I_C_00*omega_0 + I_C_10*omega_1 + I_C_20*omega_2) + (0.5)*omega_1*(I_C_01*omega_0 + I_C_11*omega_1 + I_C_21*omega_2) + (0.5)*omega_2*(I_C_02*omega_0 + I_C_12*omega_1 + I_C_22*omega_2),
     ), (
     )
 

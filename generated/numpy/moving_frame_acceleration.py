@@ -27,14 +27,14 @@ def _main(o_ddot_0, o_ddot_1, o_ddot_2, Q_00, Q_01, Q_02, Q_10, Q_11, Q_12, Q_20
     x2 = omega_dot_1 + x1
     x3 = omega_0*omega_1
     x4 = -omega_dot_2 + x3
-    x5 = omega_1*omega_1
-    x6 = omega_2*omega_2
+    x5 = (omega_1*omega_1)
+    x6 = (omega_2*omega_2)
     x7 = -x5 - x6
     x8 = 2*omega_0
     x9 = omega_dot_2 + x3
     x10 = omega_1*omega_2
     x11 = -omega_dot_0 + x10
-    x12 = omega_0*omega_0
+    x12 = (omega_0*omega_0)
     x13 = -x12 - x6
     x14 = 2*omega_1
     x15 = omega_dot_0 + x10

@@ -22,11 +22,11 @@ MATH_HASH = "59342dd978b76a46"
 
 
 def _main(eta_0, eta_1, eta_2, eta_3):
-    x0 = eta_3*eta_3
-    x1 = eta_2*eta_2
+    x0 = (eta_3*eta_3)
+    x1 = (eta_2*eta_2)
     x2 = -x1
-    x3 = eta_0*eta_0
-    x4 = eta_1*eta_1
+    x3 = (eta_0*eta_0)
+    x4 = (eta_1*eta_1)
     x5 = x3 - x4
     x6 = 2*eta_1
     x7 = eta_0*x6

@@ -22,10 +22,10 @@ MATH_HASH = "3a598761ac6bf1a3"
 
 
 def _main(e_0, e_1, e_2, phi):
-    x0 = e_0*e_0
+    x0 = (e_0*e_0)
     x1 = (0.5)*phi
     x2 = numpy.sin(x1)
-    x3 = x2*x2
+    x3 = (x2*x2)
     x4 = 2*x3
     x5 = 1 - x4
     x6 = e_0*x4
@@ -34,9 +34,9 @@ def _main(e_0, e_1, e_2, phi):
     x9 = e_2*x8
     x10 = e_2*x6
     x11 = e_1*x8
-    x12 = e_1*e_1
+    x12 = (e_1*e_1)
     x13 = e_0*x8
-    x14 = e_2*e_2
+    x14 = (e_2*e_2)
     return (
         x0 + x5*(1 - x0),
         x7 - x9,

@@ -24,8 +24,8 @@ MATH_HASH = "e89a638961851614"
 def _main(e_0, e_1, e_2, phi, a_0, a_1, a_2, a_prime_0, a_prime_1, a_prime_2):
     x0 = (0.5)*phi
     x1 = numpy.sin(x0)
-    x2 = x1*x1
-    x3 = e_0*e_0
+    x2 = (x1*x1)
+    x3 = (e_0*e_0)
     x4 = 2*x2
     x5 = 1 - x4
     x6 = e_0*e_1*x4
@@ -38,13 +38,13 @@ def _main(e_0, e_1, e_2, phi, a_0, a_1, a_2, a_prime_0, a_prime_1, a_prime_2):
     x13 = x11 + x12
     x14 = a_0*(x3 + x5*(1 - x3)) + a_1*x9 + a_2*x13 - a_prime_0
     x15 = x6 + x8
-    x16 = e_1*e_1
+    x16 = (e_1*e_1)
     x17 = e_0*x7
     x18 = 2*e_1*e_2*x2 - x17
     x19 = a_0*x15 + a_1*(x16 + x5*(1 - x16)) + a_2*x18 - a_prime_1
     x20 = x11 - x12
     x21 = e_1*x10 + x17
-    x22 = e_2*e_2
+    x22 = (e_2*e_2)
     x23 = a_0*x20 + a_1*x21 + a_2*(x22 + x5*(1 - x22)) - a_prime_2
     x24 = (0.25)/x2
     return (

@@ -30,7 +30,8 @@ class _PowMixin:
         base, exp = expr.as_base_exp()
         if exp.is_Integer and 2 <= int(exp) <= _MAX_EXPAND:
             b = self.parenthesize(base, PRECEDENCE["Mul"], strict=False)
-            return "*".join([b] * int(exp))
+            # parenthesised: the Mul printer may place a Pow after "/" without parentheses
+            return "(" + "*".join([b] * int(exp)) + ")"
         if exp.is_Integer and -_MAX_EXPAND <= int(exp) <= -1:
             if exp == -1:
                 return f"{self._one}/{self.parenthesize(base, PRECEDENCE['Mul'], strict=True)}"
