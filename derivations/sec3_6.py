@@ -9,11 +9,12 @@ First principles (the model of every declaration here): a fixed frame F, a movin
 whose origin has F-coordinates ``o(t)`` (free) and whose orientation is ``Q(t)``, an exactly
 orthogonal generic rotation (rational quaternion jets), "taking F into the orientation of
 M", so that the k-th axis of M has F-coordinates ``Q[:, k]``. A point P moves *arbitrarily*
-in F: ``p(t)`` is free. Then ``rho`` is the vector from the origin of M to P, so
-``[rho]_F = p - o``, and its M-coordinates are its components along the axes of M:
-``[rho]_M[k] = Q[:, k] . (p - o)``. Rates in a frame are time derivatives of the
-coordinates in that frame; ``[Omega]_F = [Qdot]_F [Q]_F^T`` (definition (3.44)).
-Nothing of (3.99)-(3.105) is assumed: the orthogonality they rest on is exact in ``Q(t)``.
+relative to M: its M-coordinates ``[rho]_M(t)`` are free. The vector ``rho`` from the
+origin of M to P is ``sum_k rho_k (axis k of M)``, so ``[rho]_F = sum_k rho_k Q[:, k]``
+(a sum of columns, not the product of (3.99)) and ``[p]_F = [o]_F + [rho]_F``. Rates in a
+frame are time derivatives of the coordinates in that frame; ``[Omega]_F = [Qdot]_F
+[Q]_F^T`` (definition (3.44)). Nothing of (3.102)-(3.105) is assumed: the orthogonality
+they rest on (``Q_dot = Q_dot Q^T Q``) is exact in ``Q(t)``.
 """
 
 from __future__ import annotations
@@ -67,9 +68,9 @@ def _moving_frame_model() -> tuple[dict, dict]:
     t = TIME
     Q = rotation("Q", t)
     o = vector("s36_o", t)
-    p = vector("s36_p", t)
-    rF = p - o
-    rM = sp.Matrix([Q[:, k].dot(rF) for k in range(3)])  # components along M's axes
+    rM = vector("s36_rho", t)  # the point's coordinates in M: an arbitrary motion in M
+    rF = sum((rM[k] * Q[:, k] for k in range(3)), sp.zeros(3, 1))  # sum rho_k (axis k of M)
+    p = o + rF  # the point: origin of M plus its coordinates times the axes of M
     Qd = Q.diff(t)
     Om = Qd * Q.T
     im = sp.ImmutableMatrix
