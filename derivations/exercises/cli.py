@@ -24,13 +24,19 @@ def add_arguments(p) -> None:
 
 
 def to_json(ids) -> str:
-    """The schema-1 JSON document for the exercises ``ids``."""
+    """The schema-1 JSON document for the exercises ``ids``.
+
+    ``answers`` holds sympy values only (``str()`` that ``sympify`` reads back); answers
+    stated in words (conditions, interpretations) go to ``statements``.
+    """
     items = []
     for i in ids:
         s = solve(i)
         items.append({"id": s.id, "status": s.status,
-                      "answers": {k: to_json_value(v) for k, v in s.answers.items()},
-                      "checked": s.checked, "assumptions": list(s.assumptions)})
+                      "answers": {k: to_json_value(v) for k, v in s.answers.items()
+                                  if not isinstance(v, str)},
+                      "checked": s.checked, "assumptions": list(s.assumptions),
+                      "statements": {k: v for k, v in s.answers.items() if isinstance(v, str)}})
     return json.dumps({"schema": 1, "exercises": items}, indent=2) + "\n"
 
 

@@ -1,0 +1,104 @@
+"""Exercise 3.3: the lines meeting three given lines sweep a quadric; when is det M != 0."""
+
+from __future__ import annotations
+
+import sympy as sp
+
+from rigidsym.symbols import scalar, vector
+
+from .worked import Solution, identity_check, nonidentity_check
+
+ID = "ex3.3"
+
+
+def plane_normal(a, e, p) -> sp.Matrix:
+    """Normal of the plane through point p and the line {a + lambda e}: ``n + e x p``,
+    ``n = a x e`` (the line's moment about O)."""
+    return a.cross(e) + e.cross(p)
+
+
+def quadric(lines, p):
+    """``f(p) = det[N_1, N_2, N_3]`` and its coefficients ``M`` (symmetric), ``g``, ``h``."""
+    f = sp.expand(sp.Matrix.hstack(*[plane_normal(a, e, p) for a, e in lines]).det())
+    M = sp.hessian(f, list(p)) / 2
+    zero = dict.fromkeys(p, 0)
+    g = sp.Matrix([sp.diff(f, v) for v in p]).subs(zero)
+    h = f.subs(zero)
+    return f, M.subs(zero), g, h
+
+
+def mutual_moment(l1, l2):
+    """Moment of one line about another (Exercise 3.3): ``(a_1 - a_2) . (e_1 x e_2)``
+    up to the norms of e_1, e_2; zero iff the lines meet (or are parallel)."""
+    (a1, e1), (a2, e2) = l1, l2
+    return (a1 - a2).dot(e1.cross(e2))
+
+
+def solve() -> Solution:
+    """Worked solution of Exercise 3.3."""
+    p = sp.Matrix(sp.symbols("x y z", real=True))
+    lines = [(vector(f"a{k}"), vector(f"e{k}")) for k in (1, 2, 3)]
+    s = Solution(
+        ID, "Lines meeting three lines: a ruled quadric",
+        "\"show that the locus of all lines L intersecting three given lines {L_k} is a "
+        "quadric ... Show, furthermore, that det(M) is nonzero ... and hence, the quadric is a "
+        "one-sheet hyperboloid.\"",
+        "Angeles, Sec. 3.9, Exercise 3.3",
+        given={"L_k": "{a_k + lambda e_k}, k = 1, 2, 3, pairwise skew (generic a_k, e_k)"},
+        assumptions=["The three lines are pairwise skew (two meeting lines make the locus "
+                     "degenerate into planes).",
+                     "h > 0 is a normalisation of the sign of f (f and -f define the same "
+                     "surface); it fails only when the origin is on the surface (h = 0).",
+                     "The book's claim det(M) != 0 is false in general: it holds iff the "
+                     "directions e_1, e_2, e_3 are linearly independent; when they are "
+                     "parallel to a common plane the quadric is a hyperbolic paraboloid."])
+    s.step("plane through p and L_k", plane_normal(*lines[0], p),
+           "A line through p meets L_k iff it lies in the plane through p and L_k, of normal "
+           "N_k = n_k + e_k x p (n_k = a_k x e_k); zero moment about L_k (the exercise's "
+           "criterion).")
+    s.step("locus", "f(p) = det[N_1, N_2, N_3] = 0",
+           "The line through p meeting L_1 and L_2 has direction N_1 x N_2; it meets L_3 iff "
+           "(N_1 x N_2) . N_3 = 0.")
+    s.step("no cubic term", "det[E_1 p, E_2 p, E_3 p] = 0",
+           "The three vectors e_k x p are all normal to p, hence coplanar: f is quadratic.")
+    f, M, g, h = quadric(lines, p)
+    s.step("h", h, "h = f(0) = det[n_1, n_2, n_3].")
+    # coefficient of det M: derive in the frame of the common perpendicular of L_1, L_2
+    d, t_, b1, b2, b3, q1, q2, q3 = sp.symbols("d t b1 b2 b3 q1 q2 q3", real=True)
+    special = [(sp.zeros(3, 1), sp.Matrix([1, 0, 0])),
+               (sp.Matrix([0, 0, d]), sp.Matrix([1, t_, 0])),
+               (sp.Matrix([b1, b2, b3]), sp.Matrix([q1, q2, q3]))]
+    _, Ms, _, _ = quadric(special, p)
+    prod_s = (mutual_moment(special[0], special[1]) * mutual_moment(special[1], special[2])
+              * mutual_moment(special[2], special[0])
+              * sp.Matrix.hstack(*[e for _, e in special]).det())
+    s.step("det M in adapted axes", sp.factor(Ms.det()),
+           "Axes: L_1 the X axis, L_2 through (0, 0, d) normal to Z (Z along the common "
+           "perpendicular), as the hint suggests.")
+    k = sp.cancel(Ms.det() / prod_s)
+    mu = [mutual_moment(lines[i], lines[j]) for i, j in ((0, 1), (1, 2), (2, 0))]
+    detE = sp.Matrix.hstack(*[e for _, e in lines]).det()
+    law = s.step("det M", k * mu[0] * mu[1] * mu[2] * detE,
+                 "det M = k mu_12 mu_23 mu_31 det[e_1, e_2, e_3] (frame-free form, decided "
+                 "below for generic lines); mu_ij = (a_i - a_j).(e_i x e_j) vanishes iff "
+                 "L_i, L_j meet.")
+    s.answers = {"f": "p^T M p + g^T p + h, with M, g, h below", "M": M, "g": g, "h": h,
+                 "det_M": law, "det_M_nonzero_in_general": sp.false,
+                 "det_M_nonzero_iff": "the lines are pairwise skew and e_1, e_2, e_3 are "
+                                      "linearly independent (not all parallel to one plane)"}
+    s.check(identity_check("f(p) = p^T M p + g^T p + h (quadratic) for generic lines",
+                           [f - ((p.T * M * p)[0] + (g.T * p)[0] + h)]))
+    lam = scalar("lambda")
+    s.check(identity_check("each given line lies on the quadric: f(a_k + lambda e_k) = 0",
+                           [f.subs(dict(zip(p, a + lam * e, strict=True)),
+                                   simultaneous=True) for a, e in lines]))
+    s.check(identity_check("det M = k mu_12 mu_23 mu_31 det[e_1, e_2, e_3], generic lines",
+                           [M.det() - law]))
+    s.check(nonidentity_check("det M is not identically zero (hyperboloid for generic lines)",
+                              [M.det()]))
+    par = [(sp.zeros(3, 1), sp.Matrix([1, 0, 0])), (sp.Matrix([0, 0, 1]), sp.Matrix([1, 1, 0])),
+           (sp.Matrix([0, 0, 2]), sp.Matrix([0, 1, 0]))]
+    _, Mp, _, _ = quadric(par, p)
+    s.check(identity_check("counterexample: three skew lines parallel to the X-Y plane give "
+                           "det M = 0 (hyperbolic paraboloid)", [Mp.det()]))
+    return s
