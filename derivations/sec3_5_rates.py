@@ -1,0 +1,539 @@
+"""Sec. 3.5: time derivatives of N, L, H and of their left inverses, Eqs. (3.96a)-(3.97e).
+
+Book: J. Angeles, *Fundamentals of Robotic Mechanical Systems*, 4th ed., Sec. 3.5.
+
+Method: every rate is obtained by differentiating the matrix along a generic smooth motion
+(``e(t)`` unit, ``phi(t)``; :func:`derivations.common.motion_model`), never assumed; the
+printed forms are then compared with it. The formula functions below give the same rates
+in closed form in the variables ``(e, phi, omega)`` only, using ``nu_dot = N omega``
+(3.76a) for ``e_dot``, ``phi_dot`` (and ``lambda_dot = L omega``, ``eta_dot = H omega``).
+
+The auxiliary matrices ``B`` (3.96e) and ``V`` (3.97d) are *introduced* by their use in
+(3.96a) and (3.97b): ``B = 4 (1 - cos phi)`` times the upper block of ``N_dot``, and
+``V = D`` times the upper block of the rate of ``L_tilde`` (3.77c); (3.96e) and (3.97d)
+state closed forms for them, which are checked against that characterisation.
+"""
+
+from __future__ import annotations
+
+from functools import cache
+
+import sympy as sp
+
+from rigidsym.primitives import block, cpm, rotation_from_natural_invariants
+from rigidsym.registry import Rel, Statement, equation
+from rigidsym.symbols import TIME, angle
+
+from .common import I3, MS, Mt, mat, motion_model, vec
+
+__all__ = ["B_matrix", "N_matrix_dot", "L_matrix_dot", "H_matrix_dot", "N_tilde_dot", "V_u",
+           "L_tilde_dot", "H_tilde_dot"]
+
+
+# --------------------------------------------------------------------------- (3.76), (3.77)
+def _col(v) -> sp.Matrix:
+    return sp.Matrix(v).reshape(3, 1)
+
+
+def _N(e, phi) -> sp.Matrix:
+    """(3.76b): ``N = [sin(phi)/(2(1 - cos phi)) (1 - e e^T) - E/2; e^T]`` (4 x 3)."""
+    e = _col(e)
+    k = sp.sin(phi) / (2 * (1 - sp.cos(phi)))
+    return block([[k * (sp.eye(3) - e * e.T) - cpm(e) / 2], [e.T]])
+
+
+def _L(e, phi) -> sp.Matrix:
+    """(3.76c): ``L = [(tr(Q) 1 - Q)/2; -sin(phi) e^T]`` (4 x 3)."""
+    e = _col(e)
+    Q = rotation_from_natural_invariants(e, phi)
+    return block([[(Q.trace() * sp.eye(3) - Q) / 2], [-sp.sin(phi) * e.T]])
+
+
+def _H(e, phi) -> sp.Matrix:
+    """(3.76d): ``H = 1/2 [cos(phi/2) 1 - sin(phi/2) E; -sin(phi/2) e^T]`` (4 x 3)."""
+    e = _col(e)
+    c, s = sp.cos(phi / 2), sp.sin(phi / 2)
+    return block([[c * sp.eye(3) - s * cpm(e)], [-s * e.T]]) / 2
+
+
+def _N_tilde(e, phi) -> sp.Matrix:
+    """(3.77b): ``N~ = [sin(phi) 1 + (1 - cos phi) E, e]`` (3 x 4)."""
+    e = _col(e)
+    return block([[sp.sin(phi) * sp.eye(3) + (1 - sp.cos(phi)) * cpm(e), e]])
+
+
+def _L_tilde(e, phi) -> sp.Matrix:
+    """(3.77c): ``L~ = [1 + sin(phi)/(1 + cos phi) E, -sin(phi)/(1 + cos phi) e]`` (3 x 4)."""
+    e = _col(e)
+    k = sp.sin(phi) / (1 + sp.cos(phi))
+    return block([[sp.eye(3) + k * cpm(e), -k * e]])
+
+
+def _H_tilde(e, phi) -> sp.Matrix:
+    """(3.77d): ``H~ = 2 [cos(phi/2) 1 + sin(phi/2) E, -sin(phi/2) e]`` (3 x 4)."""
+    e = _col(e)
+    c, s = sp.cos(phi / 2), sp.sin(phi / 2)
+    return 2 * block([[c * sp.eye(3) + s * cpm(e), -s * e]])
+
+
+try:  # the section-3.4.2 module, once it exists, is the single source of N ... H~
+    from .sec3_4_2 import H_matrix as _H  # noqa: F811
+    from .sec3_4_2 import H_tilde as _H_tilde  # noqa: F811
+    from .sec3_4_2 import L_matrix as _L  # noqa: F811
+    from .sec3_4_2 import L_tilde as _L_tilde  # noqa: F811
+    from .sec3_4_2 import N_matrix as _N  # noqa: F811
+    from .sec3_4_2 import N_tilde as _N_tilde  # noqa: F811
+except ImportError:  # pragma: no cover - before sec3_4_2 lands
+    pass
+
+RATE_MATRICES = {"N": _N, "L": _L, "H": _H}
+LEFT_INVERSES = {"N": _N_tilde, "L": _L_tilde, "H": _H_tilde}
+
+
+# --------------------------------------------------------------------------- book symbols
+class Rt:
+    """Book symbols of the rates (Sec. 3.5); ``Mt`` (common.py) holds e, phi, Q, omega, ..."""
+
+    N_dot, L_dot, H_dot = MS("Ndot", 4, 3), MS("Ldot", 4, 3), MS("Hdot", 4, 3)
+    Nt_dot, Lt_dot, Ht_dot = (MS("Ntildedot", 3, 4), MS("Ltildedot", 3, 4),
+                              MS("Htildedot", 3, 4))
+    Lt_alt_dot = MS("Ltilde_alt_dot", 3, 4)
+    B, V, V_alt = mat("B"), mat("V"), mat("V_alt")
+    U, U_dot, R, R_dot, E_dot = mat("U"), mat("Udot"), mat("R"), mat("Rdot"), mat("Edot")
+    u, u_dot, r, r_dot = vec("u"), vec("udot"), vec("r"), vec("rdot")
+    u0, u0_dot, r0, r0_dot = sp.symbols("u0 u0dot r0 r0dot", real=True)
+    D = sp.Symbol("D", real=True)
+
+
+# --------------------------------------------------------------------------- formula functions
+# Each formula is written once, generically: called with explicit sympy matrices it returns
+# the explicit rate in (e, phi, omega) (rates of the invariants from nu_dot = N omega etc.);
+# called with the book's symbols (Mt.e, Mt.phi, Mt.omega) it returns the same formula as a
+# compact matrix expression in the book's vocabulary (e_dot, phi_dot, u, U, r_dot, ...).
+def _symbolic(e) -> bool:
+    return isinstance(e, sp.MatrixSymbol)
+
+
+def _dot(a, b):
+    return (a.T * b)[0, 0]
+
+
+def _cp(v):
+    """``cpm(v)``, or the book's name for it (E, Omega, U, R, E_dot, ...) for a book symbol."""
+    if _symbolic(v):
+        return {Mt.e: Mt.E, Mt.omega: Mt.Omega, Mt.e_dot: Rt.E_dot, Rt.u: Rt.U,
+                Rt.u_dot: Rt.U_dot, Rt.r: Rt.R, Rt.r_dot: Rt.R_dot}[v]
+    return cpm(v)
+
+
+def _blk(rows, symbolic: bool):
+    return sp.BlockMatrix(rows) if symbolic else block(rows)
+
+
+def _one(symbolic: bool):
+    return I3 if symbolic else sp.eye(3)
+
+
+def _rates(e, phi, omega) -> dict:
+    """Invariants and their rates: book symbols, or explicit from N, L, H times omega."""
+    if _symbolic(e):
+        return {"e": e, "w": omega, "e_dot": Mt.e_dot, "phi_dot": Mt.phi_dot, "u": Rt.u,
+                "u_dot": Rt.u_dot, "u0_dot": Rt.u0_dot, "r_dot": Rt.r_dot,
+                "r0_dot": Rt.r0_dot, "Q": Mt.Q, "trQ": sp.Trace(Mt.Q), "D": Rt.D}
+    e, omega = _col(e), _col(omega)
+    nu, lam, eta = _N(e, phi) * omega, _L(e, phi) * omega, _H(e, phi) * omega
+    Q = rotation_from_natural_invariants(e, phi)
+    return {"e": e, "w": omega, "e_dot": nu[:3, :], "phi_dot": nu[3],
+            "u": sp.sin(phi) * e, "u_dot": lam[:3, :], "u0_dot": lam[3],
+            "r_dot": eta[:3, :], "r0_dot": eta[3], "Q": Q, "trQ": Q.trace(),
+            "D": 1 + sp.cos(phi)}
+
+
+def B_matrix(e, phi, omega):
+    """Auxiliary matrix of ``N_dot``: ``B = 4 (1 - cos phi)`` times the upper block of ``N_dot``.
+
+    ``B = -2 (e.w) 1 + 2 (2 + cos phi)(e.w) e e^T - 2 cos(phi) w e^T - 2 e w^T
+    - sin(phi) [Omega - (e.w) E] + sin(phi) [(E w) e^T + e (E w)^T]``, ``w = omega``.
+
+    Book: Sec. 3.5, Eq. (3.96e), corrected (the printed form does not hold).
+
+    Args:
+        e: unit axis, 3 x 1. phi: angle (rad). omega: angular velocity, 3 x 1 (rad/s).
+
+    Returns:
+        3 x 3 ``sympy.Matrix`` (rad/s); a matrix expression for book symbols.
+
+    Notes:
+        Regular everywhere; ``N_dot = [B / (4 (1 - cos phi)); e_dot^T]`` is singular at
+        ``phi = 0`` (mod 2 pi), like ``N``.
+    """
+    k = _rates(e, phi, omega)
+    e, w = k["e"], k["w"]
+    c, s, ew = sp.cos(phi), sp.sin(phi), _dot(e, w)
+    E = _cp(e)
+    Ew = E * w
+    return (-2 * ew * _one(_symbolic(e)) + 2 * (2 + c) * ew * e * e.T - 2 * c * w * e.T
+            - 2 * e * w.T - s * (_cp(w) - ew * E) + s * (Ew * e.T + e * Ew.T))
+
+
+def N_matrix_dot(e, phi, omega):
+    """Rate of N (3.76b): ``N_dot = [B / (4 (1 - cos phi)); e_dot^T]``, ``e_dot`` from N omega.
+
+    Book: Sec. 3.5, Eq. (3.96a) corrected (the factor multiplies B only; the last row is
+    ``e_dot^T``), with ``B`` from :func:`B_matrix`.
+
+    Args:
+        e: unit axis, 3 x 1. phi: angle (rad). omega: angular velocity, 3 x 1 (rad/s).
+
+    Returns:
+        4 x 3 ``sympy.Matrix`` (1/s). Singular set: ``phi = 0`` (mod 2 pi).
+    """
+    e_dot = _rates(e, phi, omega)["e_dot"]
+    return _blk([[B_matrix(e, phi, omega) / (4 * (1 - sp.cos(phi)))], [e_dot.T]],
+                _symbolic(e))
+
+
+def L_matrix_dot(e, phi, omega):
+    """Rate of L (3.76c): ``L_dot = [-(w.u) 1 - Omega Q / 2; -w^T (tr(Q) 1 - Q^T) / 2]``.
+
+    Book: Sec. 3.5, Eq. (3.96b), second member (``u = sin(phi) e``, ``Q`` from (2.49)).
+
+    Args:
+        e: unit axis, 3 x 1. phi: angle (rad). omega: angular velocity, 3 x 1 (rad/s).
+
+    Returns:
+        4 x 3 ``sympy.Matrix`` (1/s). Regular everywhere.
+    """
+    k = _rates(e, phi, omega)
+    w, Q, one = k["w"], k["Q"], _one(_symbolic(e))
+    return _blk([[-_dot(w, k["u"]) * one - _cp(w) * Q / 2],
+                 [-w.T * (k["trQ"] * one - Q.T) / 2]], _symbolic(e))
+
+
+def H_matrix_dot(e, phi, omega):
+    """Rate of H (3.76d): ``H_dot = 1/2 [r0_dot 1 - R_dot; -r_dot^T]``, ``[r_dot; r0_dot] = H w``.
+
+    Book: Sec. 3.5, Eq. (3.96c).
+
+    Args:
+        e: unit axis, 3 x 1. phi: angle (rad). omega: angular velocity, 3 x 1 (rad/s).
+
+    Returns:
+        4 x 3 ``sympy.Matrix`` (1/s). Regular everywhere.
+    """
+    k = _rates(e, phi, omega)
+    r_dot, r0_dot = k["r_dot"], k["r0_dot"]
+    return _blk([[r0_dot * _one(_symbolic(e)) - _cp(r_dot)], [-r_dot.T]], _symbolic(e)) / 2
+
+
+def N_tilde_dot(e, phi, omega):
+    """Rate of N~ (3.77b): ``[phi_dot (cos phi 1 + sin phi E) + (1 - cos phi) E_dot, e_dot]``.
+
+    ``E_dot = cpm(e_dot)``; ``e_dot``, ``phi_dot`` from ``nu_dot = N omega``.
+    Book: Sec. 3.5, Eq. (3.97a), corrected.
+
+    Args:
+        e: unit axis, 3 x 1. phi: angle (rad). omega: angular velocity, 3 x 1 (rad/s).
+
+    Returns:
+        3 x 4 ``sympy.Matrix`` (1/s). Singular set: ``phi = 0`` (through ``N``).
+    """
+    k = _rates(e, phi, omega)
+    e, e_dot, phi_dot = k["e"], k["e_dot"], k["phi_dot"]
+    c, s = sp.cos(phi), sp.sin(phi)
+    return _blk([[phi_dot * (c * _one(_symbolic(e)) + s * _cp(e)) + (1 - c) * _cp(e_dot),
+                  e_dot]], _symbolic(e))
+
+
+def V_u(e, phi, omega):
+    """Auxiliary matrix of the L~ rate: ``V = U_dot - (u0_dot / D) U`` (D = 1 + u0).
+
+    ``D`` times the rate of the upper block ``1 + U / D`` of L~ (3.77c).
+    Book: Sec. 3.5, Eq. (3.97d), corrected.
+
+    Args:
+        e: unit axis, 3 x 1. phi: angle (rad). omega: angular velocity, 3 x 1 (rad/s).
+
+    Returns:
+        3 x 3 ``sympy.Matrix`` (1/s). Singular set: ``phi = pi`` (``D = 0``).
+    """
+    k = _rates(e, phi, omega)
+    return _cp(k["u_dot"]) - k["u0_dot"] / k["D"] * _cp(k["u"])
+
+
+def L_tilde_dot(e, phi, omega):
+    """Rate of L~ (3.77c): ``[V / D, ((u0_dot / D) u - u_dot) / D]``, V from :func:`V_u`.
+
+    ``u = sin(phi) e``, ``u0 = cos phi``, ``D = 1 + u0``, ``[u_dot; u0_dot] = L omega``.
+    Book: Sec. 3.5, Eq. (3.97b), corrected.
+
+    Args:
+        e: unit axis, 3 x 1. phi: angle (rad). omega: angular velocity, 3 x 1 (rad/s).
+
+    Returns:
+        3 x 4 ``sympy.Matrix`` (1/s). Singular set: ``phi = pi`` (``D = 0``).
+    """
+    k = _rates(e, phi, omega)
+    u, u_dot, u0_dot, D = k["u"], k["u_dot"], k["u0_dot"], k["D"]
+    return _blk([[V_u(e, phi, omega) / D, (u0_dot / D * u - u_dot) / D]], _symbolic(e))
+
+
+def H_tilde_dot(e, phi, omega):
+    """Rate of H~ (3.77d): ``2 [r0_dot 1 + R_dot, -r_dot]``, ``[r_dot; r0_dot] = H omega``.
+
+    Book: Sec. 3.5, Eq. (3.97c), corrected (the factor 2 of (3.77d) restored).
+
+    Args:
+        e: unit axis, 3 x 1. phi: angle (rad). omega: angular velocity, 3 x 1 (rad/s).
+
+    Returns:
+        3 x 4 ``sympy.Matrix`` (1/s). Regular everywhere.
+    """
+    k = _rates(e, phi, omega)
+    r_dot, r0_dot = k["r_dot"], k["r0_dot"]
+    return _blk([[2 * (r0_dot * _one(_symbolic(e)) + _cp(r_dot)), -2 * r_dot]], _symbolic(e))
+
+
+# --------------------------------------------------------------------------- model
+@cache
+def rates_model() -> dict:
+    """First-principles values along a generic motion ``e(t)``, ``phi(t)`` (cached per run).
+
+    Rates are ``d/dt`` of the (3.76)/(3.77) matrices along the motion; ``B`` and ``V`` are
+    the characterisations of (3.96a)/(3.97b) (see the module docstring); ``V_alt`` is the
+    same for the other left inverse ``[1 + (U - u u^T)/D, -u]`` of ``L``.
+    """
+    m = motion_model(invariants=True)
+    e, phi, t = m[Mt.e], m[Mt.phi], TIME
+    im = sp.ImmutableMatrix
+    u, u0 = sp.sin(phi) * e, sp.cos(phi)
+    r, r0 = sp.sin(phi / 2) * e, sp.cos(phi / 2)
+    D = 1 + u0
+    N_dot = _N(e, phi).diff(t)
+    Lt_dot = _L_tilde(e, phi).diff(t)
+    Lt_alt_dot = block([[sp.eye(3) + (cpm(u) - u * u.T) / D, -u]]).diff(t)
+    m.update({
+        Rt.N_dot: im(N_dot), Rt.L_dot: im(_L(e, phi).diff(t)), Rt.H_dot: im(_H(e, phi).diff(t)),
+        Rt.Nt_dot: im(_N_tilde(e, phi).diff(t)), Rt.Lt_dot: im(Lt_dot),
+        Rt.Ht_dot: im(_H_tilde(e, phi).diff(t)), Rt.Lt_alt_dot: im(Lt_alt_dot),
+        Rt.B: im(4 * (1 - sp.cos(phi)) * N_dot[:3, :]), Rt.V: im(D * Lt_dot[:, :3]),
+        Rt.V_alt: im(D * Lt_alt_dot[:, :3]),
+        Rt.u: im(u), Rt.u_dot: im(u.diff(t)), Rt.U: im(cpm(u)), Rt.U_dot: im(cpm(u.diff(t))),
+        Rt.r: im(r), Rt.r_dot: im(r.diff(t)), Rt.R: im(cpm(r)), Rt.R_dot: im(cpm(r.diff(t))),
+        Rt.E_dot: im(cpm(e.diff(t))), Rt.u0: u0, Rt.u0_dot: u0.diff(t), Rt.r0: r0,
+        Rt.r0_dot: r0.diff(t), Rt.D: D,
+        I3: im(sp.eye(3))})  # the book's 1, explicit: keeps explicit() off its slow Sum path
+    return m
+
+
+def along_motion(fn):
+    """``fn(e, phi, omega)`` evaluated explicitly on the motion's e(t), phi(t), omega(t)."""
+    m = rates_model()
+    return fn(m[Mt.e], m[Mt.phi], m[Mt.omega])
+
+
+def _book(fn):
+    """``fn`` as a compact matrix expression in the book's symbols."""
+    return fn(Mt.e, Mt.phi, Mt.omega)
+
+
+e, phi, phi_dot, e_dot, E = Mt.e, Mt.phi, Mt.phi_dot, Mt.e_dot, Mt.E
+omega, Omega, Q, Q_dot = Mt.omega, Mt.Omega, Mt.Q, Mt.Q_dot
+c_phi, s_phi = sp.cos(phi), sp.sin(phi)
+
+
+def _ew():
+    return (e.T * omega)[0, 0]
+
+
+# --------------------------------------------------------------------------- (3.96)
+@equation("3.96a", "Rate of N", section="3.5", expected="does-not-hold", cause="unknown",
+          evidence="the last row of N_dot is e_dot^T (rate of the row e^T of N), yet the "
+                   "printed factor 1/(4(1 - cos phi)) multiplies it as well as B",
+          singular="phi = 0 (mod 2 pi)",
+          latex=r"\dot{\mathbf{N}} = \frac{1}{4(1 - \cos \phi)} \begin{bmatrix} \mathbf{B} "
+                r"\\ \dot{\mathbf{e}} \end{bmatrix}")
+def rate_of_N() -> Statement:
+    """``N_dot = [B; e_dot] / (4 (1 - cos phi))`` as printed; ``N_dot`` is 4 x 3 (1/s).
+
+    Book: Sec. 3.5, Eq. (3.96a). The printed ``e_dot`` sits in the bottom row of a 4 x 3
+    block, so it is read as the row ``e_dot^T`` (the only reading the block admits); the
+    verdict does not depend on it. ``B`` is what this equation introduces: 4 (1 - cos phi)
+    times the upper block of ``N_dot``. Corrected: ``N_dot = [B / (4 (1 - cos phi));
+    e_dot^T]``, with ``B`` in closed form from :func:`B_matrix` (corrected (3.96e)).
+    """
+    k = 1 / (4 * (1 - c_phi))
+    return Statement(
+        [Rel(Rt.N_dot, k * sp.BlockMatrix([[Rt.B], [e_dot.T]]))], rates_model(),
+        corrected=[Rel(Rt.N_dot, _book(N_matrix_dot), "closed form, B written out")])
+
+
+@equation("3.96b", "Rate of L", section="3.5",
+          latex=r"\begin{aligned} \dot{\mathbf{L}} &= \begin{bmatrix} (1/2)[\mathbf{1tr}"
+                r"(\dot{\mathbf{Q}}) - \dot{\mathbf{Q}}] \\ -(1/2)\boldsymbol{\omega}^T "
+                r"[\mathbf{1tr}(\mathbf{Q}) - \mathbf{Q}^T] \end{bmatrix} \\ &= "
+                r"\begin{bmatrix} -(\boldsymbol{\omega} \cdot \mathbf{u})\mathbf{1} - (1/2)"
+                r"\boldsymbol{\Omega}\mathbf{Q} \\ -(1/2)\boldsymbol{\omega}^T [\mathbf{1tr}"
+                r"(\mathbf{Q}) - \mathbf{Q}^T] \end{bmatrix} \end{aligned}")
+def rate_of_L() -> Statement:
+    """``L_dot = [(1 tr(Q_dot) - Q_dot)/2; -w^T (1 tr(Q) - Q^T)/2] = [-(w.u) 1 - Omega Q/2; ...]``.
+
+    Book: Sec. 3.5, Eq. (3.96b). 4 x 3 (1/s). The second member is :func:`L_matrix_dot`
+    called with the book's symbols (it prints as the book's second member).
+    """
+    bottom = -omega.T * (sp.Trace(Q) * I3 - Q.T) / 2
+    first = sp.BlockMatrix([[(sp.Trace(Q_dot) * I3 - Q_dot) / 2], [bottom]])
+    return Statement([Rel(Rt.L_dot, first, "first member"),
+                      Rel(Rt.L_dot, _book(L_matrix_dot), "second member")], rates_model())
+
+
+@equation("3.96c", "Rate of H", section="3.5",
+          latex=r"\dot{\mathbf{H}} = \frac{1}{2} \begin{bmatrix} \dot{r}_0\mathbf{1} - "
+                r"\dot{\mathbf{R}} \\ -\dot{\mathbf{r}}^T \end{bmatrix}")
+def rate_of_H() -> Statement:
+    """``H_dot = 1/2 [r0_dot 1 - R_dot; -r_dot^T]`` (4 x 3, 1/s); ``R = cpm(r)``.
+
+    Book: Sec. 3.5, Eq. (3.96c). The rhs is :func:`H_matrix_dot` called with the book's
+    symbols (it prints as the book's rhs).
+    """
+    return Statement([Rel(Rt.H_dot, _book(H_matrix_dot))], rates_model())
+
+
+@equation("3.96d", "Trace of the rotation rate", section="3.5",
+          latex=r"\text{tr}(\dot{\mathbf{Q}}) \equiv \text{tr}(\boldsymbol{\Omega}\mathbf{Q})"
+                r" \equiv -2\boldsymbol{\omega}^T \mathbf{u}")
+def trace_of_rotation_rate() -> Statement:
+    """``tr(Q_dot) = tr(Omega Q) = -2 w^T u`` (1/s), member by member.
+
+    Book: Sec. 3.5, Eq. (3.96d) (derived in the book's Appendix A).
+    """
+    return Statement([Rel(sp.Trace(Q_dot), sp.Trace(Omega * Q), "tr(Omega Q)"),
+                      Rel(sp.Trace(Q_dot), -2 * omega.T * Rt.u, "-2 omega^T u")],
+                     rates_model())
+
+
+@equation("3.96e", "Auxiliary matrix B of the rate of N", section="3.5",
+          expected="does-not-hold", cause="erratum",
+          evidence="4(1 - cos phi) times the upper block of N_dot has coefficients 2(2 + cos "
+                   "phi), -2 cos phi, -2 and a term sin phi [(E w) e^T + e (E w)^T]",
+          latex=r"\begin{aligned} \mathbf{B} &\equiv -2(\mathbf{e} \cdot "
+                r"\boldsymbol{\omega})\mathbf{1} + 2(3 - \cos \phi)(\mathbf{e} \cdot "
+                r"\boldsymbol{\omega})\mathbf{e}\mathbf{e}^T - 2(1 + \sin \phi)"
+                r"\boldsymbol{\omega}\mathbf{e}^T \\ &\quad - (2 \cos \phi + \sin \phi)"
+                r"\mathbf{e}\boldsymbol{\omega}^T - (\sin \phi)[\boldsymbol{\Omega} - "
+                r"(\mathbf{e} \cdot \boldsymbol{\omega})\mathbf{E}] \end{aligned}")
+def auxiliary_matrix_B() -> Statement:
+    """``B`` as printed; ``B`` is 4 (1 - cos phi) times the upper block of ``N_dot`` (3.96a).
+
+    Book: Sec. 3.5, Eq. (3.96e). 3 x 3 (rad/s). ``N`` (hence ``N_dot`` and ``B``) is unique
+    (``nu_dot = N omega`` for every ``omega``), so no other reading makes the printed form
+    hold. Corrected: :func:`B_matrix`.
+    """
+    ew = _ew()
+    printed = (-2 * ew * I3 + 2 * (3 - c_phi) * ew * e * e.T - 2 * (1 + s_phi) * omega * e.T
+               - (2 * c_phi + s_phi) * e * omega.T - s_phi * (Omega - ew * E))
+    return Statement([Rel(Rt.B, printed)], rates_model(),
+                     corrected=[Rel(Rt.B, _book(B_matrix))])
+
+
+# --------------------------------------------------------------------------- (3.97)
+THETA = angle("theta")  # the printed "sin theta" of (3.97a): a fresh symbol, never phi
+
+
+@equation("3.97a", "Rate of the left inverse N~", section="3.5", expected="does-not-hold",
+          cause="conversion",
+          evidence="tilde lost (rate of the 3x4 N~, not of N), theta for phi, and even so "
+                   "the term (1 - cos phi) E_dot of d/dt[(1 - cos phi) E] is missing",
+          singular="phi = 0 (mod 2 pi)",
+          latex=r"\dot{\mathbf{N}} = [\dot{\phi}(\cos \phi)\mathbf{1} + \dot{\phi}(\sin "
+                r"\theta)\mathbf{E} \dot{\mathbf{e}}]")
+def rate_of_N_tilde() -> Statement:
+    """``N_dot = [phi_dot cos(phi) 1 + phi_dot sin(theta) E, e_dot]`` as printed (3 x 4).
+
+    Book: Sec. 3.5, Eq. (3.97a). The printed lhs is ``N_dot`` (4 x 3); the rhs is 3 x 4, the
+    shape of the rate of ``N~`` (3.77b). Corrected: ``N~_dot = [phi_dot (cos phi 1 +
+    sin phi E) + (1 - cos phi) E_dot, e_dot]`` (:func:`N_tilde_dot`).
+    """
+    rhs = sp.BlockMatrix([[phi_dot * c_phi * I3 + phi_dot * sp.sin(THETA) * E, e_dot]])
+    return Statement(
+        [Rel(Rt.N_dot, rhs)], rates_model(),
+        corrected=[Rel(Rt.Nt_dot, _book(N_tilde_dot))])
+
+
+def _V_printed():
+    U, u, u_dot = Rt.U, Rt.u, Rt.u_dot
+    return Rt.U_dot - (u_dot * u.T + u * u_dot.T) - Rt.u0_dot / Rt.D * (U - u * u.T)
+
+
+@equation("3.97b", "Rate of the left inverse L~", section="3.5", expected="does-not-hold",
+          cause="erratum",
+          evidence="[V/D, -u_dot] is the rate of the other left inverse [1 + (U - u u^T)/D, "
+                   "-u] of L, not of (3.77c); also tilde lost and the sign of u_dot",
+          singular="phi = pi (D = 0)",
+          latex=r"\dot{\mathbf{L}} = [\mathbf{V}/D \dot{\mathbf{u}}]")
+def rate_of_L_tilde() -> Statement:
+    """``L_dot = [V / D, u_dot]`` as printed (3 x 4); ``V`` from (3.97d), ``D`` from (3.97e).
+
+    Book: Sec. 3.5, Eq. (3.97b). The printed lhs is ``L_dot`` (4 x 3). Corrected: the
+    rate of ``L~`` (3.77c) is ``[V / D, ((u0_dot / D) u - u_dot) / D]`` with
+    ``V = U_dot - (u0_dot / D) U`` (:func:`L_tilde_dot`). The printed ``V`` (3.97d) and
+    ``[V / D, -u_dot]`` are the rate of ``[1 + (U - u u^T) / D, -u]``, an equally valid left
+    inverse of ``L`` (it differs from (3.77c) by a multiple of ``lambda^T``, the left null
+    vector of ``L``): that member is verified too.
+    """
+    return Statement(
+        [Rel(Rt.L_dot, sp.BlockMatrix([[Rt.V / Rt.D, Rt.u_dot]]))], rates_model(),
+        corrected=[Rel(Rt.Lt_dot, _book(L_tilde_dot), "rate of L~ (3.77c)"),
+                   Rel(Rt.Lt_alt_dot, sp.BlockMatrix([[_V_printed() / Rt.D, -Rt.u_dot]]),
+                       "rate of [1 + (U - u u^T)/D, -u]")])
+
+
+@equation("3.97c", "Rate of the left inverse H~", section="3.5", expected="does-not-hold",
+          cause="conversion",
+          evidence="tilde lost (rate of the 3x4 H~, not of H), and the factor 2 of H~ "
+                   "(3.77d) is missing: d/dt H~ = 2 [r0_dot 1 + R_dot, -r_dot]",
+          latex=r"\dot{\mathbf{H}} = [\dot{r}_0\mathbf{1} + \dot{\mathbf{R}} - "
+                r"\dot{\mathbf{r}}]")
+def rate_of_H_tilde() -> Statement:
+    """``H_dot = [r0_dot 1 + R_dot, -r_dot]`` as printed (3 x 4).
+
+    Book: Sec. 3.5, Eq. (3.97c). The printed lhs is ``H_dot`` (4 x 3). Corrected:
+    ``H~_dot = 2 [r0_dot 1 + R_dot, -r_dot]`` (:func:`H_tilde_dot`).
+    """
+    rhs = sp.BlockMatrix([[Rt.r0_dot * I3 + Rt.R_dot, -Rt.r_dot]])
+    return Statement(
+        [Rel(Rt.H_dot, rhs)], rates_model(),
+        corrected=[Rel(Rt.Ht_dot, _book(H_tilde_dot))])
+
+
+@equation("3.97d", "Auxiliary matrix V of the rate of L~", section="3.5",
+          expected="does-not-hold", cause="erratum",
+          evidence="D times the rate of the block 1 + U/D of L~ (3.77c) is U_dot - (u0_dot/D) "
+                   "U; the printed V is that of 1 + (U - u u^T)/D (another left inverse)",
+          singular="phi = pi (D = 0)",
+          latex=r"\mathbf{V} \equiv \dot{\mathbf{U}} - (\dot{\mathbf{u}}\mathbf{u}^T + "
+                r"\mathbf{u}\dot{\mathbf{u}}^T) - \frac{\dot{u}_0}{D}(\mathbf{U} - "
+                r"\mathbf{u}\mathbf{u}^T)")
+def auxiliary_matrix_V() -> Statement:
+    """``V = U_dot - (u_dot u^T + u u_dot^T) - (u0_dot / D)(U - u u^T)`` as printed (3 x 3).
+
+    Book: Sec. 3.5, Eq. (3.97d). ``V`` is introduced by (3.97b): ``D`` times the upper
+    block of the rate of ``L~`` (3.77c). Corrected: ``V = U_dot - (u0_dot / D) U``
+    (:func:`V_u`); the printed expression is verified as ``V_alt``, the same quantity for
+    the left inverse ``[1 + (U - u u^T)/D, -u]`` of ``L``.
+    """
+    return Statement([Rel(Rt.V, _V_printed())], rates_model(),
+                     corrected=[Rel(Rt.V, _book(V_u), "for L~ of (3.77c)"),
+                                Rel(Rt.V_alt, _V_printed(), "for [1 + (U - u u^T)/D, -u]")])
+
+
+@equation("3.97e", "D = 1 + u0", section="3.5", kind="definition",
+          singular="D = 0 at phi = pi",
+          latex=r"D \equiv 1 + u_0")
+def denominator_D() -> Statement:
+    """``D = 1 + u0 = 1 + cos phi`` (dimensionless); claim: ``D = 2 r0^2``, zero at phi = pi.
+
+    Book: Sec. 3.5, Eq. (3.97e).
+    """
+    return Statement([Rel(Rt.D, 1 + Rt.u0)], rates_model(), defines=("D",),
+                     claims=[Rel(Rt.D, 2 * Rt.r0**2, "D = 2 r0^2")])
