@@ -41,7 +41,17 @@ class _PowMixin:
             return self._sqrt(self._print(base))
         if exp == -sp.S.Half:
             return f"{self._one}/{self._sqrt(self._print(base))}"
-        return super()._print_Pow(expr, rational=rational)
+        if exp.is_Rational and exp.q == 2 and abs(exp.p) <= 2 * _MAX_EXPAND + 1:
+            # x**(k/2) = x**((k-1)/2) * sqrt(x): one sqrt, no pow()
+            b = self._print(base)
+            k = (abs(exp.p) - 1) // 2
+            whole = self._print(sp.Pow(base, k, evaluate=False)) if k > 1 else \
+                self.parenthesize(base, PRECEDENCE["Mul"], strict=False)
+            num = f"({whole}*{self._sqrt(b)})"
+            return num if exp > 0 else f"{self._one}/{num}"
+        if isinstance(self, NumPyPrinter):
+            return super()._print_Pow(expr, rational=rational)
+        return super()._print_Pow(expr)
 
 
 def _dyadic(expr) -> str | None:
