@@ -1,0 +1,123 @@
+"""The public kernels API: broadcasting, validation, singular handling, out=, backends."""
+
+from __future__ import annotations
+
+import warnings
+
+import numpy as np
+import pytest
+
+from rigidsym import kernels as K
+
+E = np.array([0.0, 0.6, 0.8])
+
+
+@pytest.fixture(params=["numpy", "c"], autouse=True)
+def backend(request):
+    if K.use_backend(request.param) != request.param:
+        pytest.skip("no C compiler")
+    yield request.param
+    K.use_backend("numpy")
+
+
+def test_lists_and_floats_and_broadcasting():
+    Q = K.rotation_from_natural_invariants([0, 0, 1], 0.5)
+    assert Q.shape == (3, 3)
+    phis = np.linspace(0.1, 3.0, 10).reshape(2, 5)
+    Qs = K.rotation_from_natural_invariants(E, phis)
+    assert Qs.shape == (2, 5, 3, 3)
+    np.testing.assert_allclose(Qs[1, 2], K.rotation_from_natural_invariants(E, phis[1, 2]))
+    e2 = np.stack([E, [1.0, 0, 0]])[:, None, :]            # (2, 1, 3) x (4,) -> (2, 4)
+    assert K.rotation_from_natural_invariants(e2, np.ones(4)).shape == (2, 4, 3, 3)
+
+
+def test_multiple_outputs_and_round_trip():
+    phi = np.array([1e-8, 0.3, 2.0, np.pi - 1e-8, np.pi])
+    Q = K.rotation_from_natural_invariants(E, phi)
+    e, ph = K.natural_invariants_from_rotation(Q)
+    np.testing.assert_allclose(ph, phi, rtol=0, atol=1e-15 * 4)
+    np.testing.assert_allclose(e[:-1], np.broadcast_to(E, (4, 3)), atol=1e-7)
+    # at phi = pi the sign rule: largest-magnitude component positive
+    assert e[-1][np.argmax(np.abs(e[-1]))] > 0
+
+
+def test_out_argument():
+    out = np.empty((4, 3, 3))
+    res = K.rotation_from_natural_invariants(E, np.ones(4), out=out)
+    assert res is out
+    outs = (np.empty((2, 3)), np.empty(2))
+    Q = K.rotation_from_natural_invariants(E, [0.2, 0.4])
+    r = K.natural_invariants_from_rotation(Q, out=outs)
+    assert r[0] is outs[0] and r[1] is outs[1]
+    nc = np.empty((3, 3, 4)).transpose(2, 0, 1)              # non-contiguous out
+    res = K.rotation_from_natural_invariants(E, np.ones(4), out=nc)
+    assert res is nc and np.isfinite(nc).all()
+    with pytest.raises(ValueError, match="out"):
+        K.rotation_from_natural_invariants(E, np.ones(4), out=np.empty((3, 3)))
+
+
+def test_singular_raises_and_nan():
+    with pytest.raises(K.SingularConfigurationError, match="'phi'.*\\(1,\\)") as info:
+        K.N_matrix(E, [0.5, 0.0, 1.0])
+    assert isinstance(info.value, ValueError) and info.value.indices == [(1,)]
+    N = K.N_matrix(E, [0.5, 0.0, 1.0], on_singular="nan")
+    assert np.isnan(N[1]).all() and np.isfinite(N[[0, 2]]).all()
+    # near (not at) the singularity: finite, ~1/phi
+    N = K.N_matrix(E, 1e-12)
+    assert np.isfinite(N).all() and 1e11 < np.abs(N).max() < 1e13
+    with pytest.raises(K.SingularConfigurationError, match="omega"):
+        K.instant_screw_axis([0, 0, 0], [1, 2, 3], [0, 0, 1])
+    with pytest.raises(K.SingularConfigurationError):
+        K.screw_axis_point(E, 0.0, [1, 0, 0], [1, 0, 1])
+    with pytest.raises(K.SingularConfigurationError, match="angles"):
+        K.euler_angle_rates([0.1, 0.0, 0.2], [1, 2, 3], "ZXZ")
+
+
+def test_validation():
+    with pytest.raises(ValueError, match="e: not a unit vector"):
+        K.rotation_from_natural_invariants([1, 1, 0], 0.3)
+    with pytest.raises(ValueError, match="phi: non-finite"):
+        K.rotation_from_natural_invariants(E, np.nan)
+    with pytest.raises(ValueError, match=r"e: expected shape \(\.\.\., 3\)"):
+        K.rotation_from_natural_invariants([1, 0], 0.3)
+    with pytest.raises(ValueError, match="Q: not orthogonal"):
+        K.natural_invariants_from_rotation(2 * np.eye(3))
+    with pytest.raises(ValueError, match="proper"):
+        K.natural_invariants_from_rotation(-np.eye(3))
+    # check=False skips it
+    assert K.rotation_from_natural_invariants([1, 1, 0], 0.3, check=False).shape == (3, 3)
+    with pytest.raises(ValueError, match="sequence"):
+        K.euler_rate_matrix([0, 0, 0], "ZZZ")
+
+
+def test_euler_rates_invert_W():
+    rng = np.random.default_rng(0)
+    ang = rng.uniform(0.2, 1.2, (5, 3))
+    w = rng.standard_normal((5, 3))
+    for seq in ("ZXZ", "ZYX", "XYZ"):
+        for frame in ("fixed", "body"):
+            W = K.euler_rate_matrix(ang, seq, frame)
+            rates = K.euler_angle_rates(ang, w, seq, frame)
+            np.testing.assert_allclose(np.einsum("nij,nj->ni", W, rates), w, atol=1e-12)
+
+
+def test_swap_blocks():
+    t = np.arange(12.0).reshape(2, 6)
+    assert np.array_equal(K.swap_blocks(K.swap_blocks(t)), t)
+    U = K.twist_transfer_matrix([1, 2, 3], [0, 1, 0])
+    Us = K.swap_blocks(U, matrix=True)
+    np.testing.assert_allclose(Us @ K.swap_blocks(t[0]), K.swap_blocks(U @ t[0]))
+
+
+def test_fallback_warns_once(monkeypatch):
+    import rigidsym.kernels as mod
+
+    def boom(*a, **k):
+        raise OSError("no compiler")
+    monkeypatch.setattr(mod, "_STATE", {"backend": None, "warned": False, "lib": None})
+    monkeypatch.setattr("rigidsym.codegen.cbuild.load", boom)
+    with pytest.warns(RuntimeWarning, match="C backend unavailable"):
+        assert K.use_backend("c") == "numpy"
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        assert K.use_backend("c") == "numpy"
