@@ -11,7 +11,7 @@ from rigidsym.registry import Rel, Statement, equation
 from rigidsym.symbols import scalar, vector
 
 from .common import I3, Bk, displacement_model, vec
-from .sec3_2_1 import pitch_of_displacement, screw_axis_point, with_constants
+from .sec3_2_1 import Det, pitch_of_displacement, screw_axis_point, with_constants
 
 Q, e, phi, a, a_p, p, p_p, d_A, d_P = (Bk.Q, Bk.e, Bk.phi, Bk.a, Bk.a_prime, Bk.p,
                                        Bk.p_prime, Bk.d_A, Bk.d_P)
@@ -190,6 +190,6 @@ def mozzi_chasles() -> Statement:
          Rel(perp * disp(p_star), sp.zeros(3, 1), "P* has minimum displacement"),
          Rel(disp(p_star + lam * e_), d0 * e_, "points of L: identical, parallel to e"),
          Rel(perp * disp(p_), (Q_ - one) * (p_ - p_star), "d_perp = (Q - 1)(p - p*)"),
-         Rel(sp.Determinant(Q - I3 + e * e.T), 2 * (1 - sp.cos(phi)),
+         Rel(Det(Q - I3 + e * e.T), 2 * (1 - sp.cos(phi)),
              "null space of Q - 1 is span(e)")],
         model, derived=p_star)

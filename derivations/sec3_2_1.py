@@ -48,6 +48,35 @@ def with_constants(model: dict) -> dict:
     return model
 
 
+class Det(sp.Function):
+    """The book's ``det(M)`` of a square matrix expression.
+
+    Prints as ``Det(M)``; ``doit()`` substitutes the entries of an explicit ``M`` into the
+    cofactor expansion of a generic 3 x 3 (no expansion, no cancellation: shared subtrees
+    stay shared), where sympy's ``Determinant`` expands (slow) or stays unevaluated.
+    """
+
+    @classmethod
+    def eval(cls, M):
+        return None
+
+    def doit(self, **hints):
+        M = self.args[0]
+        M = M.doit(**hints) if isinstance(M, sp.Basic) else M
+        if isinstance(M, sp.MatrixExpr) and not M.atoms(sp.MatrixSymbol):
+            M = M.as_explicit()
+        if not isinstance(M, sp.MatrixBase):
+            return Det(M)
+        n = M.rows
+        if n > 3:  # larger ones here are sparse (block triangular): sympy's det is fast
+            return M.det()
+        g = sp.Matrix(n, n, [sp.Dummy() for _ in range(n * n)])
+        return g.det(method="berkowitz").xreplace(dict(zip(g, M, strict=True)))
+
+    def _sympystr(self, printer):
+        return f"Det({printer.doprint(self.args[0])})"
+
+
 # --------------------------------------------------------------------------- formulas
 def screw_axis_point(Q, a, a_prime, phi) -> sp.Matrix:
     """Point of the screw axis closest to the origin.
@@ -187,11 +216,14 @@ def closest_point_normal_to_axis() -> Statement:
           latex=r"\mathbf{d}_0 = \mathbf{d}_A + (\mathbf{Q} - \mathbf{1})(\mathbf{p}_0 - "
                 r"\mathbf{a})")
 def axis_point_displacement() -> Statement:
-    """``d_0 = d_A + (Q - 1)(p0 - a)``: Eq. (3.4) at ``P0``.
+    """``d_0 = d_A + (Q - 1)(p0 - a)``: Eq. (3.4) at ``P0``; the text's ``(Q - 1) d_0 = 0``
+    (the displacement of ``P0`` is parallel to the axis) is checked as a claim.
 
     Book: Sec. 3.2.1, Eq. (3.9a). Shapes: 3 x 1; metres.
     """
-    return Statement([Rel(d0_vec, d_A + (Q - I3) * (p_0 - a))], screw_displacement_model())
+    return Statement([Rel(d0_vec, d_A + (Q - I3) * (p_0 - a))], screw_displacement_model(),
+                     claims=[Rel((Q - I3) * d0_vec, sp.ZeroMatrix(3, 1),
+                                 "(Q - 1) d_0 = 0: d_0 parallel to e")])
 
 
 @equation("3.9b", "Singular system for the axis point", section="3.2.1",
@@ -208,9 +240,9 @@ def axis_point_system() -> Statement:
     return Statement(
         [Rel((Q - I3) * p_0, (Q - I3) * a - (I3 - e * e.T) * d_A)],
         screw_displacement_model(),
-        claims=[Rel(sp.Determinant(Q - I3), 0, "Q - 1 singular"),
+        claims=[Rel(Det(Q - I3), 0, "Q - 1 singular"),
                 Rel((Q - I3) * e, sp.ZeroMatrix(3, 1), "e spans the null space"),
-                Rel(sp.Determinant(Q - I3 + e * e.T), 2 * (1 - sp.cos(phi)),
+                Rel(Det(Q - I3 + e * e.T), 2 * (1 - sp.cos(phi)),
                     "rank 2 for phi != 0")])
 
 
@@ -243,11 +275,18 @@ def screw_system() -> Statement:
 
 
 @equation("3.12", "Normal equations for the axis point", section="3.2.1",
-          latex=r"\mathbf{A}^T \mathbf{A}\mathbf{p}_0 = \mathbf{A}^T \mathbf{b}")
+          latex=r"\mathbf{A}^T \mathbf{A}\mathbf{p}_0 = \mathbf{A}^T \mathbf{b}",
+          singular="phi = 0 (A^T A singular)")
 def axis_point_normal_equations() -> Statement:
-    """``A^T A p0 = A^T b``. Book: Sec. 3.2.1, Eq. (3.12). Shapes: 3 x 1."""
+    """``A^T A p0 = A^T b``; the text's claim that ``A^T A`` is invertible is checked as
+    ``det(A^T A) = 4 (1 - cos phi)^2``, non-zero for ``phi != 0``.
+
+    Book: Sec. 3.2.1, Eq. (3.12). Shapes: 3 x 1.
+    """
     return Statement([Rel(A_screw.T * A_screw * p_0, A_screw.T * b_screw)],
-                     screw_displacement_model())
+                     screw_displacement_model(),
+                     claims=[Rel(Det(A_screw.T * A_screw), 4 * (1 - sp.cos(phi))**2,
+                                 "A^T A invertible for phi != 0")])
 
 
 @equation("3.13", "A^T A in terms of e and phi", section="3.2.1",

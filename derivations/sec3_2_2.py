@@ -19,7 +19,7 @@ from rigidsym.registry import Rel, Statement, equation
 from rigidsym.symbols import scalar, unit_vector, vector
 
 from .common import I3, MS, O3, mat, vec
-from .sec3_2_1 import with_constants
+from .sec3_2_1 import Det, with_constants
 
 _im = sp.ImmutableMatrix
 
@@ -342,7 +342,7 @@ def plucker_transfer_matrix_definition() -> Statement:
 @equation("3.30", "U is unimodular", section="3.2.2", latex=r"\det(\mathbf{U}) = 1")
 def plucker_transfer_unimodular() -> Statement:
     """``det(U) = 1``. Book: Sec. 3.2.2, Eq. (3.30)."""
-    return Statement([Rel(sp.Determinant(U), 1)], transfer_model())
+    return Statement([Rel(Det(U), 1)], transfer_model())
 
 
 @equation("3.31", "Inverse of U", section="3.2.2",
