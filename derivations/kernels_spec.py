@@ -385,3 +385,20 @@ for _seq in EULER_SEQUENCES:
             outputs=(Out("eta_dot", (3,), "[rad/s]"),),
             build=lambda angles, omega, _s=_seq, _f=_frame: _euler_rates(angles, omega, _s, _f),
             singular="det W = 0 (gimbal lock)", singular_arg="angles"))
+
+
+def _isa_point_pitch(omega, a, a_dot):
+    return {"p0": formula(_S41 + "instant_screw_axis_point")(omega, a, a_dot),
+            "pitch": formula(_S41 + "instant_screw_pitch")(omega, a_dot)}
+
+
+KERNELS.append(Kernel(
+    name="instant_screw_point_pitch", public=False,
+    summary="Instant screw axis point and pitch (no Plücker array; benchmark kernel K4).",
+    formula="p0' = omega x (a_dot - omega x a)/||omega||^2, pitch' = a_dot.omega/||omega||^2",
+    ids=("3.53", "3.70"),
+    sources=(_S41 + "instant_screw_axis_point", _S41 + "instant_screw_pitch"),
+    args=(OMEGA, _v("a", "body point A [m]"), _v("a_dot", "velocity of A [m/s]")),
+    outputs=(Out("p0", (3,), "ISA point closest to the origin [m]"),
+             Out("pitch", (), "pitch [m/rad]")),
+    build=_isa_point_pitch, singular="omega = 0 (pure translation)", singular_arg="omega"))

@@ -51,8 +51,6 @@ static inline int rigidsym_H_matrix_sample(
         out_H_matrix[10] = x5;
         out_H_matrix[11] = x6;
     }
-    for (int j = 0; j < 12; ++j)
-        singular |= !isfinite(out_H_matrix[j]);
     return singular;
 }
 

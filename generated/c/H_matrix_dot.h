@@ -60,8 +60,6 @@ static inline int rigidsym_H_matrix_dot_sample(
         out_H_matrix_dot[10] = x10;
         out_H_matrix_dot[11] = x11;
     }
-    for (int j = 0; j < 12; ++j)
-        singular |= !isfinite(out_H_matrix_dot[j]);
     return singular;
 }
 

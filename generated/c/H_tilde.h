@@ -51,8 +51,6 @@ static inline int rigidsym_H_tilde_sample(
         out_H_tilde[10] = x1;
         out_H_tilde[11] = x4;
     }
-    for (int j = 0; j < 12; ++j)
-        singular |= !isfinite(out_H_tilde[j]);
     return singular;
 }
 

@@ -59,8 +59,6 @@ static inline int rigidsym_H_tilde_dot_sample(
         out_H_tilde_dot[10] = x5;
         out_H_tilde_dot[11] = x8;
     }
-    for (int j = 0; j < 12; ++j)
-        singular |= !isfinite(out_H_tilde_dot[j]);
     return singular;
 }
 

@@ -75,8 +75,6 @@ static inline int rigidsym_L_matrix_dot_sample(
         out_L_matrix_dot[10] = x11*x23 - x21*x26 - x8*(x20 + x25);
         out_L_matrix_dot[11] = x15*x8 + x23*x7 - x26*(x18 + x25);
     }
-    for (int j = 0; j < 12; ++j)
-        singular |= !isfinite(out_L_matrix_dot[j]);
     return singular;
 }
 

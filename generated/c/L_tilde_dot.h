@@ -75,9 +75,11 @@ static inline int rigidsym_L_tilde_dot_sample(
         out_L_tilde_dot[10] = 0.0;
         out_L_tilde_dot[11] = x20;
         singular |= (x5) == 0.0;
+        /* quantities that can be non-finite for finite inputs (divisions, roots):
+         * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
+        const double finite = ((x10 - x10) + (x19 - x19));
+        singular |= finite != finite;
     }
-    for (int j = 0; j < 12; ++j)
-        singular |= !isfinite(out_L_tilde_dot[j]);
     return singular;
 }
 

@@ -16,7 +16,17 @@ int64_t rigidsym_N_tilde(
     const double *RIGIDSYM_RESTRICT phi,
     double *RIGIDSYM_RESTRICT N_tilde)
 {
+    /* Pass 1, branch-free so that the compiler can vectorise it: evaluate and count. */
     int64_t count = 0;
+    for (int64_t i = 0; i < n; ++i) {
+        count += rigidsym_N_tilde_sample(
+            e + 3 * i,
+            phi + 1 * i,
+            N_tilde + 12 * i);
+    }
+    if (count == 0)
+        return 0;
+    /* Pass 2, only when some sample is singular: find them and write NaN there. */
     for (int64_t i = 0; i < n; ++i) {
         if (rigidsym_N_tilde_sample(
                 e + 3 * i,
@@ -24,7 +34,6 @@ int64_t rigidsym_N_tilde(
                 N_tilde + 12 * i)) {
             for (int j = 0; j < 12; ++j)
                 N_tilde[12 * i + j] = NAN;
-            ++count;
         }
     }
     return count;

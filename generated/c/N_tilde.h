@@ -49,8 +49,6 @@ static inline int rigidsym_N_tilde_sample(
         out_N_tilde[10] = x2;
         out_N_tilde[11] = e_2;
     }
-    for (int j = 0; j < 12; ++j)
-        singular |= !isfinite(out_N_tilde[j]);
     return singular;
 }
 

@@ -17,7 +17,18 @@ int64_t rigidsym_N_tilde_dot(
     const double *RIGIDSYM_RESTRICT omega,
     double *RIGIDSYM_RESTRICT N_tilde_dot)
 {
+    /* Pass 1, branch-free so that the compiler can vectorise it: evaluate and count. */
     int64_t count = 0;
+    for (int64_t i = 0; i < n; ++i) {
+        count += rigidsym_N_tilde_dot_sample(
+            e + 3 * i,
+            phi + 1 * i,
+            omega + 3 * i,
+            N_tilde_dot + 12 * i);
+    }
+    if (count == 0)
+        return 0;
+    /* Pass 2, only when some sample is singular: find them and write NaN there. */
     for (int64_t i = 0; i < n; ++i) {
         if (rigidsym_N_tilde_dot_sample(
                 e + 3 * i,
@@ -26,7 +37,6 @@ int64_t rigidsym_N_tilde_dot(
                 N_tilde_dot + 12 * i)) {
             for (int j = 0; j < 12; ++j)
                 N_tilde_dot[12 * i + j] = NAN;
-            ++count;
         }
     }
     return count;

@@ -69,9 +69,11 @@ static inline int rigidsym_N_tilde_dot_sample(
         out_N_tilde_dot[10] = x5;
         out_N_tilde_dot[11] = x16;
         singular |= (x1) == 0.0;
+        /* quantities that can be non-finite for finite inputs (divisions, roots):
+         * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
+        const double finite = (x11 - x11);
+        singular |= finite != finite;
     }
-    for (int j = 0; j < 12; ++j)
-        singular |= !isfinite(out_N_tilde_dot[j]);
     return singular;
 }
 

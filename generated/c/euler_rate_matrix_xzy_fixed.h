@@ -39,8 +39,6 @@ static inline int rigidsym_euler_rate_matrix_xzy_fixed_sample(
         out_W[7] = x1;
         out_W[8] = x0*x2;
     }
-    for (int j = 0; j < 9; ++j)
-        singular |= !isfinite(out_W[j]);
     return singular;
 }
 

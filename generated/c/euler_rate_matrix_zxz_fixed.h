@@ -39,8 +39,6 @@ static inline int rigidsym_euler_rate_matrix_zxz_fixed_sample(
         out_W[7] = 0.0;
         out_W[8] = cos(angles_1);
     }
-    for (int j = 0; j < 9; ++j)
-        singular |= !isfinite(out_W[j]);
     return singular;
 }
 

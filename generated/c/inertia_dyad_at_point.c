@@ -18,7 +18,19 @@ int64_t rigidsym_inertia_dyad_at_point(
     const double *RIGIDSYM_RESTRICT a,
     double *RIGIDSYM_RESTRICT M_A)
 {
+    /* Pass 1, branch-free so that the compiler can vectorise it: evaluate and count. */
     int64_t count = 0;
+    for (int64_t i = 0; i < n; ++i) {
+        count += rigidsym_inertia_dyad_at_point_sample(
+            I_C + 9 * i,
+            m + 1 * i,
+            c + 3 * i,
+            a + 3 * i,
+            M_A + 36 * i);
+    }
+    if (count == 0)
+        return 0;
+    /* Pass 2, only when some sample is singular: find them and write NaN there. */
     for (int64_t i = 0; i < n; ++i) {
         if (rigidsym_inertia_dyad_at_point_sample(
                 I_C + 9 * i,
@@ -28,7 +40,6 @@ int64_t rigidsym_inertia_dyad_at_point(
                 M_A + 36 * i)) {
             for (int j = 0; j < 36; ++j)
                 M_A[36 * i + j] = NAN;
-            ++count;
         }
     }
     return count;

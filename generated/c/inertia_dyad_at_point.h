@@ -95,8 +95,6 @@ static inline int rigidsym_inertia_dyad_at_point_sample(
         out_M_A[34] = 0.0;
         out_M_A[35] = m;
     }
-    for (int j = 0; j < 36; ++j)
-        singular |= !isfinite(out_M_A[j]);
     return singular;
 }
 

@@ -60,13 +60,11 @@ static inline int rigidsym_instant_screw_axis_sample(
         out_plucker[4] = x10*(omega_0*x9 - omega_2*x5);
         out_plucker[5] = x10*(-omega_0*x8 + omega_1*x1*x4);
         singular |= (x0) == 0.0;
+        /* quantities that can be non-finite for finite inputs (divisions, roots):
+         * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
+        const double finite = ((x1 - x1) + (x10 - x10));
+        singular |= finite != finite;
     }
-    for (int j = 0; j < 3; ++j)
-        singular |= !isfinite(out_p0[j]);
-    for (int j = 0; j < 1; ++j)
-        singular |= !isfinite(out_pitch[j]);
-    for (int j = 0; j < 6; ++j)
-        singular |= !isfinite(out_plucker[j]);
     return singular;
 }
 

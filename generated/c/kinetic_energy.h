@@ -46,8 +46,6 @@ static inline int rigidsym_kinetic_energy_sample(
         const double x0 = (0.5)*m;
         out_T[0] = (c_dot_0*c_dot_0)*x0 + (c_dot_1*c_dot_1)*x0 + (c_dot_2*c_dot_2)*x0 + (0.5)*omega_0*(I_C_00*omega_0 + I_C_10*omega_1 + I_C_20*omega_2) + (0.5)*omega_1*(I_C_01*omega_0 + I_C_11*omega_1 + I_C_21*omega_2) + (0.5)*omega_2*(I_C_02*omega_0 + I_C_12*omega_1 + I_C_22*omega_2);
     }
-    for (int j = 0; j < 1; ++j)
-        singular |= !isfinite(out_T[j]);
     return singular;
 }
 

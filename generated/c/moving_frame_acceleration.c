@@ -21,7 +21,22 @@ int64_t rigidsym_moving_frame_acceleration(
     const double *RIGIDSYM_RESTRICT rho_ddot_M,
     double *RIGIDSYM_RESTRICT p_ddot)
 {
+    /* Pass 1, branch-free so that the compiler can vectorise it: evaluate and count. */
     int64_t count = 0;
+    for (int64_t i = 0; i < n; ++i) {
+        count += rigidsym_moving_frame_acceleration_sample(
+            o_ddot + 3 * i,
+            Q + 9 * i,
+            omega + 3 * i,
+            omega_dot + 3 * i,
+            rho_M + 3 * i,
+            rho_dot_M + 3 * i,
+            rho_ddot_M + 3 * i,
+            p_ddot + 3 * i);
+    }
+    if (count == 0)
+        return 0;
+    /* Pass 2, only when some sample is singular: find them and write NaN there. */
     for (int64_t i = 0; i < n; ++i) {
         if (rigidsym_moving_frame_acceleration_sample(
                 o_ddot + 3 * i,
@@ -34,7 +49,6 @@ int64_t rigidsym_moving_frame_acceleration(
                 p_ddot + 3 * i)) {
             for (int j = 0; j < 3; ++j)
                 p_ddot[3 * i + j] = NAN;
-            ++count;
         }
     }
     return count;

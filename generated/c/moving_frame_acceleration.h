@@ -79,8 +79,6 @@ static inline int rigidsym_moving_frame_acceleration_sample(
         out_p_ddot[1] = Q_10*rho_ddot_M_0 + Q_11*rho_ddot_M_1 + Q_12*rho_ddot_M_2 + o_ddot_1 + rho_M_0*(Q_00*x9 + Q_10*x13 + Q_20*x11) + rho_M_1*(Q_01*x9 + Q_11*x13 + Q_21*x11) + rho_M_2*(Q_02*x9 + Q_12*x13 + Q_22*x11) + rho_dot_M_0*(Q_00*x0 - Q_20*x8) + rho_dot_M_1*(Q_01*x0 - Q_21*x8) + rho_dot_M_2*(Q_02*x0 - Q_22*x8);
         out_p_ddot[2] = Q_20*rho_ddot_M_0 + Q_21*rho_ddot_M_1 + Q_22*rho_ddot_M_2 + o_ddot_2 + rho_M_0*(Q_00*x16 + Q_10*x15 + Q_20*x17) + rho_M_1*(Q_01*x16 + Q_11*x15 + Q_21*x17) + rho_M_2*(Q_02*x16 + Q_12*x15 + Q_22*x17) + rho_dot_M_0*(-Q_00*x14 + 2.0*Q_10*omega_0) + rho_dot_M_1*(-Q_01*x14 + 2.0*Q_11*omega_0) + rho_dot_M_2*(-Q_02*x14 + 2.0*Q_12*omega_0);
     }
-    for (int j = 0; j < 3; ++j)
-        singular |= !isfinite(out_p_ddot[j]);
     return singular;
 }
 

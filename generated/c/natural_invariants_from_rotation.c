@@ -17,7 +17,17 @@ int64_t rigidsym_natural_invariants_from_rotation(
     double *RIGIDSYM_RESTRICT e,
     double *RIGIDSYM_RESTRICT phi)
 {
+    /* Pass 1, branch-free so that the compiler can vectorise it: evaluate and count. */
     int64_t count = 0;
+    for (int64_t i = 0; i < n; ++i) {
+        count += rigidsym_natural_invariants_from_rotation_sample(
+            Q + 9 * i,
+            e + 3 * i,
+            phi + 1 * i);
+    }
+    if (count == 0)
+        return 0;
+    /* Pass 2, only when some sample is singular: find them and write NaN there. */
     for (int64_t i = 0; i < n; ++i) {
         if (rigidsym_natural_invariants_from_rotation_sample(
                 Q + 9 * i,
@@ -27,7 +37,6 @@ int64_t rigidsym_natural_invariants_from_rotation(
                 e[3 * i + j] = NAN;
             for (int j = 0; j < 1; ++j)
                 phi[1 * i + j] = NAN;
-            ++count;
         }
     }
     return count;

@@ -55,6 +55,10 @@ static inline int rigidsym_natural_invariants_from_rotation_sample(
         out_e[2] = x13*x8;
         out_phi[0] = atan2(sqrt((x10*x10) + (x11*x11) + (x12*x12)), x0 + x1 + x2 - 0.5);
         singular |= (x9) == 0.0;
+        /* quantities that can be non-finite for finite inputs (divisions, roots):
+         * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
+        const double finite = ((x13 - x13) + (out_phi[0] - out_phi[0]));
+        singular |= finite != finite;
     } else if (Q_11 >= Q_00 && Q_11 >= Q_22 && Q_00 + Q_11 + Q_22 < 0.0) {
         const double x0 = (0.5)*Q_01;
         const double x1 = (0.5)*Q_10 + x0;
@@ -72,6 +76,10 @@ static inline int rigidsym_natural_invariants_from_rotation_sample(
         out_e[2] = x10*x3;
         out_phi[0] = atan2(sqrt((x7*x7) + (x8*x8) + (x9*x9)), (0.5)*Q_11 + x4);
         singular |= (x6) == 0.0;
+        /* quantities that can be non-finite for finite inputs (divisions, roots):
+         * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
+        const double finite = ((x10 - x10) + (out_phi[0] - out_phi[0]));
+        singular |= finite != finite;
     } else if (Q_22 >= Q_00 && Q_22 >= Q_11 && Q_00 + Q_11 + Q_22 < 0.0) {
         const double x0 = (0.5)*Q_02;
         const double x1 = (0.5)*Q_20;
@@ -90,6 +98,10 @@ static inline int rigidsym_natural_invariants_from_rotation_sample(
         out_e[2] = x11*x6;
         out_phi[0] = atan2(sqrt((x10*x10) + (x8*x8) + (x9*x9)), (0.5)*Q_22 + x5);
         singular |= (x7) == 0.0;
+        /* quantities that can be non-finite for finite inputs (divisions, roots):
+         * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
+        const double finite = ((x11 - x11) + (out_phi[0] - out_phi[0]));
+        singular |= finite != finite;
     } else {
         const double x0 = -0.5*Q_12 + (0.5)*Q_21;
         const double x1 = -0.5*Q_01 + (0.5)*Q_10;
@@ -102,11 +114,11 @@ static inline int rigidsym_natural_invariants_from_rotation_sample(
         out_e[2] = x1*x5;
         out_phi[0] = atan2(x4, (0.5)*Q_00 + (0.5)*Q_11 + (0.5)*Q_22 - 0.5);
         singular |= (x3) == 0.0;
+        /* quantities that can be non-finite for finite inputs (divisions, roots):
+         * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
+        const double finite = ((x4 - x4) + (x5 - x5));
+        singular |= finite != finite;
     }
-    for (int j = 0; j < 3; ++j)
-        singular |= !isfinite(out_e[j]);
-    for (int j = 0; j < 1; ++j)
-        singular |= !isfinite(out_phi[j]);
     return singular;
 }
 

@@ -57,8 +57,6 @@ static inline int rigidsym_newton_euler_wrench_sample(
         out_w[4] = c_ddot_1*m;
         out_w[5] = c_ddot_2*m;
     }
-    for (int j = 0; j < 6; ++j)
-        singular |= !isfinite(out_w[j]);
     return singular;
 }
 

@@ -16,7 +16,17 @@ int64_t rigidsym_plucker_from_points(
     const double *RIGIDSYM_RESTRICT p2,
     double *RIGIDSYM_RESTRICT kappa)
 {
+    /* Pass 1, branch-free so that the compiler can vectorise it: evaluate and count. */
     int64_t count = 0;
+    for (int64_t i = 0; i < n; ++i) {
+        count += rigidsym_plucker_from_points_sample(
+            p1 + 3 * i,
+            p2 + 3 * i,
+            kappa + 6 * i);
+    }
+    if (count == 0)
+        return 0;
+    /* Pass 2, only when some sample is singular: find them and write NaN there. */
     for (int64_t i = 0; i < n; ++i) {
         if (rigidsym_plucker_from_points_sample(
                 p1 + 3 * i,
@@ -24,7 +34,6 @@ int64_t rigidsym_plucker_from_points(
                 kappa + 6 * i)) {
             for (int j = 0; j < 6; ++j)
                 kappa[6 * i + j] = NAN;
-            ++count;
         }
     }
     return count;

@@ -47,9 +47,11 @@ static inline int rigidsym_plucker_from_points_sample(
         out_kappa[4] = -p1_0*x7 + p1_2*x0*x4;
         out_kappa[5] = p1_0*x6 - p1_1*x5;
         singular |= (x3) == 0.0;
+        /* quantities that can be non-finite for finite inputs (divisions, roots):
+         * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
+        const double finite = (x4 - x4);
+        singular |= finite != finite;
     }
-    for (int j = 0; j < 6; ++j)
-        singular |= !isfinite(out_kappa[j]);
     return singular;
 }
 

@@ -48,8 +48,6 @@ static inline int rigidsym_plucker_transfer_sample(
         out_kappa_B[4] = kappa_A_0*x0 - kappa_A_2*x2 + kappa_A_4;
         out_kappa_B[5] = -kappa_A_0*x1 + kappa_A_1*x2 + kappa_A_5;
     }
-    for (int j = 0; j < 6; ++j)
-        singular |= !isfinite(out_kappa_B[j]);
     return singular;
 }
 

@@ -19,7 +19,20 @@ int64_t rigidsym_point_acceleration(
     const double *RIGIDSYM_RESTRICT a,
     double *RIGIDSYM_RESTRICT p_ddot)
 {
+    /* Pass 1, branch-free so that the compiler can vectorise it: evaluate and count. */
     int64_t count = 0;
+    for (int64_t i = 0; i < n; ++i) {
+        count += rigidsym_point_acceleration_sample(
+            a_ddot + 3 * i,
+            omega + 3 * i,
+            omega_dot + 3 * i,
+            p + 3 * i,
+            a + 3 * i,
+            p_ddot + 3 * i);
+    }
+    if (count == 0)
+        return 0;
+    /* Pass 2, only when some sample is singular: find them and write NaN there. */
     for (int64_t i = 0; i < n; ++i) {
         if (rigidsym_point_acceleration_sample(
                 a_ddot + 3 * i,
@@ -30,7 +43,6 @@ int64_t rigidsym_point_acceleration(
                 p_ddot + 3 * i)) {
             for (int j = 0; j < 3; ++j)
                 p_ddot[3 * i + j] = NAN;
-            ++count;
         }
     }
     return count;

@@ -53,8 +53,6 @@ static inline int rigidsym_point_acceleration_sample(
         out_p_ddot[1] = a_ddot_1 - omega_0*x3 + omega_2*x5 - omega_dot_0*x0 + omega_dot_2*x2;
         out_p_ddot[2] = a_ddot_2 + omega_0*x4 - omega_1*x5 + omega_dot_0*x1 - omega_dot_1*x2;
     }
-    for (int j = 0; j < 3; ++j)
-        singular |= !isfinite(out_p_ddot[j]);
     return singular;
 }
 

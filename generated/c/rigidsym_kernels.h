@@ -72,6 +72,7 @@
 #include "inertia_at_point.h"
 #include "inertia_dyad_at_point.h"
 #include "instant_screw_axis.h"
+#include "instant_screw_point_pitch.h"
 #include "kinetic_energy.h"
 #include "moving_frame_acceleration.h"
 #include "natural_invariants_from_rotation.h"

@@ -52,8 +52,6 @@ static inline int rigidsym_rotation_from_euler_rodrigues_sample(
         out_Q[7] = eta_1*x8 + x13;
         out_Q[8] = -x12 - x2 - x3 - x4;
     }
-    for (int j = 0; j < 9; ++j)
-        singular |= !isfinite(out_Q[j]);
     return singular;
 }
 

@@ -54,8 +54,6 @@ static inline int rigidsym_rotation_from_natural_invariants_sample(
         out_Q[7] = e_1*e_2*x4 + x13;
         out_Q[8] = x14 + x5*(1.0 - x14);
     }
-    for (int j = 0; j < 9; ++j)
-        singular |= !isfinite(out_Q[j]);
     return singular;
 }
 

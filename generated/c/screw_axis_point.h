@@ -67,9 +67,11 @@ static inline int rigidsym_screw_axis_point_sample(
         out_p0[1] = x24*(x14*x9 + x19*x2*(2.0*x16 - 2.0) + x21*x23);
         out_p0[2] = x24*(x13*x14 + x18*x19 + x2*x23*(2.0*x22 - 2.0));
         singular |= (x1) == 0.0;
+        /* quantities that can be non-finite for finite inputs (divisions, roots):
+         * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
+        const double finite = (x24 - x24);
+        singular |= finite != finite;
     }
-    for (int j = 0; j < 3; ++j)
-        singular |= !isfinite(out_p0[j]);
     return singular;
 }
 

@@ -48,8 +48,6 @@ static inline int rigidsym_twist_transfer_sample(
         out_t_P[4] = t_A_0*x0 - t_A_2*x2 + t_A_4;
         out_t_P[5] = -t_A_0*x1 + t_A_1*x2 + t_A_5;
     }
-    for (int j = 0; j < 6; ++j)
-        singular |= !isfinite(out_t_P[j]);
     return singular;
 }
 

@@ -18,7 +18,19 @@ int64_t rigidsym_wrench_axis(
     double *RIGIDSYM_RESTRICT pitch,
     double *RIGIDSYM_RESTRICT plucker)
 {
+    /* Pass 1, branch-free so that the compiler can vectorise it: evaluate and count. */
     int64_t count = 0;
+    for (int64_t i = 0; i < n; ++i) {
+        count += rigidsym_wrench_axis_sample(
+            w_A + 6 * i,
+            a + 3 * i,
+            p0 + 3 * i,
+            pitch + 1 * i,
+            plucker + 6 * i);
+    }
+    if (count == 0)
+        return 0;
+    /* Pass 2, only when some sample is singular: find them and write NaN there. */
     for (int64_t i = 0; i < n; ++i) {
         if (rigidsym_wrench_axis_sample(
                 w_A + 6 * i,
@@ -32,7 +44,6 @@ int64_t rigidsym_wrench_axis(
                 pitch[1 * i + j] = NAN;
             for (int j = 0; j < 6; ++j)
                 plucker[6 * i + j] = NAN;
-            ++count;
         }
     }
     return count;

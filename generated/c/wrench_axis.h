@@ -59,13 +59,11 @@ static inline int rigidsym_wrench_axis_sample(
         out_plucker[4] = w_A_3*x10 - w_A_5*x4*x9;
         out_plucker[5] = -w_A_3*x6*x9 + w_A_4*x4*x9;
         singular |= (x0) == 0.0;
+        /* quantities that can be non-finite for finite inputs (divisions, roots):
+         * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
+        const double finite = ((x1 - x1) + ((x8 - x8) + (x9 - x9)));
+        singular |= finite != finite;
     }
-    for (int j = 0; j < 3; ++j)
-        singular |= !isfinite(out_p0[j]);
-    for (int j = 0; j < 1; ++j)
-        singular |= !isfinite(out_pitch[j]);
-    for (int j = 0; j < 6; ++j)
-        singular |= !isfinite(out_plucker[j]);
     return singular;
 }
 

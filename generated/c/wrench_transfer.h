@@ -48,8 +48,6 @@ static inline int rigidsym_wrench_transfer_sample(
         out_w_P[4] = w_A_4;
         out_w_P[5] = w_A_5;
     }
-    for (int j = 0; j < 6; ++j)
-        singular |= !isfinite(out_w_P[j]);
     return singular;
 }
 

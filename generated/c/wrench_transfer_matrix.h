@@ -71,8 +71,6 @@ static inline int rigidsym_wrench_transfer_matrix_sample(
         out_V[34] = 0.0;
         out_V[35] = 1.0;
     }
-    for (int j = 0; j < 36; ++j)
-        singular |= !isfinite(out_V[j]);
     return singular;
 }
 

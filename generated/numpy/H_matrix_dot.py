@@ -69,8 +69,6 @@ def H_matrix_dot(e, phi, omega, out_H_matrix_dot):
         _store(outs, vals, None)
         for d in dens:
             bad |= numpy.equal(d, 0.0)
-        for o in outs:
-            bad |= ~numpy.isfinite(o).all(axis=1)
     return bad
 
 

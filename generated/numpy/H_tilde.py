@@ -62,8 +62,6 @@ def H_tilde(e, phi, out_H_tilde):
         _store(outs, vals, None)
         for d in dens:
             bad |= numpy.equal(d, 0.0)
-        for o in outs:
-            bad |= ~numpy.isfinite(o).all(axis=1)
     return bad
 
 

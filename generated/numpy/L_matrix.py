@@ -71,8 +71,6 @@ def L_matrix(e, phi, out_L_matrix):
         _store(outs, vals, None)
         for d in dens:
             bad |= numpy.equal(d, 0.0)
-        for o in outs:
-            bad |= ~numpy.isfinite(o).all(axis=1)
     return bad
 
 

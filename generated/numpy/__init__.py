@@ -67,6 +67,7 @@ NAMES = (
     "inertia_at_point",
     "inertia_dyad_at_point",
     "instant_screw_axis",
+    "instant_screw_point_pitch",
     "kinetic_energy",
     "moving_frame_acceleration",
     "natural_invariants_from_rotation",

@@ -52,8 +52,6 @@ def euler_rate_matrix_zyx_fixed(angles, out_W):
         _store(outs, vals, None)
         for d in dens:
             bad |= numpy.equal(d, 0.0)
-        for o in outs:
-            bad |= ~numpy.isfinite(o).all(axis=1)
     return bad
 
 

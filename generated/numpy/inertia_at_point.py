@@ -64,8 +64,6 @@ def inertia_at_point(I_C, m, c, a, out_I_A):
         _store(outs, vals, None)
         for d in dens:
             bad |= numpy.equal(d, 0.0)
-        for o in outs:
-            bad |= ~numpy.isfinite(o).all(axis=1)
     return bad
 
 

@@ -47,8 +47,6 @@ def kinetic_energy(I_C, m, omega, c_dot, out_T):
         _store(outs, vals, None)
         for d in dens:
             bad |= numpy.equal(d, 0.0)
-        for o in outs:
-            bad |= ~numpy.isfinite(o).all(axis=1)
     return bad
 
 

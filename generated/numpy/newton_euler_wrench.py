@@ -56,8 +56,6 @@ def newton_euler_wrench(I_C, m, omega, omega_dot, c_ddot, out_w):
         _store(outs, vals, None)
         for d in dens:
             bad |= numpy.equal(d, 0.0)
-        for o in outs:
-            bad |= ~numpy.isfinite(o).all(axis=1)
     return bad
 
 

@@ -53,8 +53,6 @@ def plucker_transfer(kappa_A, a, b, out_kappa_B):
         _store(outs, vals, None)
         for d in dens:
             bad |= numpy.equal(d, 0.0)
-        for o in outs:
-            bad |= ~numpy.isfinite(o).all(axis=1)
     return bad
 
 

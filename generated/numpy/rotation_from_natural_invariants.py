@@ -65,8 +65,6 @@ def rotation_from_natural_invariants(e, phi, out_Q):
         _store(outs, vals, None)
         for d in dens:
             bad |= numpy.equal(d, 0.0)
-        for o in outs:
-            bad |= ~numpy.isfinite(o).all(axis=1)
     return bad
 
 

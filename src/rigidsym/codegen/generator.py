@@ -147,10 +147,35 @@ def _meta(kc: KernelCode) -> dict:
     }
 
 
+def _risky(e) -> bool:
+    """Whether ``e`` itself divides or takes a root (may be non-finite for finite inputs)."""
+    return any(isinstance(p, sp.Pow) and not (p.exp.is_Integer and p.exp > 0)
+               for p in sp.preorder_traversal(e))
+
+
+def _finite_check(p: Program, k: Kernel) -> str:
+    """C expression that is NaN iff a division/root temporary or output is non-finite."""
+    names = [str(s) for s, v in p.temps if _risky(v)]
+    slots = [f"out_{o.name}[{j}]" for o in k.outputs for j in range(o.size)]
+    names += [slot for slot, v in zip(slots, p.outputs, strict=True) if _risky(v)]
+    return _balanced([f"({n} - {n})" for n in names]) if names else ""
+
+
+def _balanced(terms: list[str]) -> str:
+    """``a + b + ...`` as a balanced tree of additions (C does not reassociate doubles)."""
+    if len(terms) == 1:
+        return terms[0]
+    h = len(terms) // 2
+    return f"({_balanced(terms[:h])} + {_balanced(terms[h:])})"
+
+
 def _render_kernel(env, kc: KernelCode) -> dict[str, str]:
     k = kc.kernel
     npp, cp = KernelNumPyPrinter(), KernelCPrinter()
-    common = {"k": k, "meta": _meta(kc), "inputs": kc.inputs}
+    # kernels without a division (or sqrt, atan2 of possibly zero arguments) give finite
+    # outputs for finite inputs: no finiteness check in the generated code
+    divides = any(v.program.dens for v in kc.variants)
+    common = {"k": k, "meta": _meta(kc), "inputs": kc.inputs, "divides": divides}
     files = {}
     t = "numpy_kernel.py.j2"
     files[f"numpy/{k.name}.py"] = env.get_template(t).render(
@@ -163,7 +188,8 @@ def _render_kernel(env, kc: KernelCode) -> dict[str, str]:
                   *([v.cond] if v.cond is not None else [])]:
             used |= {str(s) for s in sp.sympify(e).free_symbols}
     cvars = [{"name": v.name, "cond": None if v.cond is None else cp.doprint(v.cond),
-              **_program_lines(v.program, cp)} for v in kc.variants]
+              "finite": _finite_check(v.program, k), **_program_lines(v.program, cp)}
+             for v in kc.variants]
     for t, path in (("c_kernel.h.j2", f"c/{k.name}.h"), ("c_kernel.c.j2", f"c/{k.name}.c")):
         files[path] = env.get_template(t).render(header=_header(kc, t), variants=cvars,
                                                  used=used, **common)

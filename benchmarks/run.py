@@ -1,0 +1,246 @@
+"""Benchmark the generated kernels: ns/sample at N = 1e3, 1e5, 1e6, one thread.
+
+Columns: generated C (cffi batch loop), generated NumPy, hand-written vectorised NumPy
+(the peers-bench reference where it exists), ``sympy.lambdify(cse=True)`` of the declared
+expressions, and a plain ``sympy.cse`` + ``ccode`` C loop (gcc -O3 -march=native) of the same
+expressions; plus each kernel's operation count. Writes ``benchmarks/RESULTS.md``.
+
+Usage (from the repository root)::
+
+    PYTHONPATH=src:. python benchmarks/run.py [--quick] [--kernels K1,K2]
+
+Clock: thread CPU time; each cell is the median over rounds of (time of repeated calls until
+>= 10 ms) / (calls * N). Outputs are allocated inside every timed call for every column.
+"""
+
+from __future__ import annotations
+
+import argparse
+import ctypes
+import importlib.util
+import os
+import platform
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+import numpy as np
+import sympy as sp
+
+ROOT = Path(__file__).resolve().parents[1]
+sys.path[:0] = [str(ROOT / "src"), str(ROOT)]
+os.environ.setdefault("OMP_NUM_THREADS", "1")
+
+from derivations.kernels_spec import KERNELS  # noqa: E402
+from rigidsym import kernels as K  # noqa: E402
+from rigidsym.codegen.generator import _flatten  # noqa: E402
+from rigidsym.codegen.spec import flat_symbols, input_symbols  # noqa: E402
+
+PEERS = ROOT.parent / "shared" / "peers-bench" / "peerbench" / "kernels.py"
+#: benchmark id -> our kernel (K4 without the Plücker array, as the peers compute it)
+BENCH = {"K1": "rotation_from_euler_rodrigues", "K2": "rotation_from_natural_invariants",
+         "K3": "screw_axis_point", "K4": "instant_screw_point_pitch", "K5": "N_matrix",
+         "K6": "newton_euler_wrench"}
+SPECS = {k.name: k for k in KERNELS}
+META = None
+
+
+def _peers():
+    if not PEERS.exists():
+        return None
+    spec = importlib.util.spec_from_file_location("peer_kernels", PEERS)
+    mod = importlib.util.module_from_spec(spec)
+    sys.modules["peer_kernels"] = mod          # dataclasses look the module up
+    spec.loader.exec_module(mod)
+    return mod
+
+
+def inputs(name: str, n: int, rng) -> list[np.ndarray]:
+    k = SPECS[name]
+    out = []
+    for a in k.args:
+        if a.kind == "unit":
+            v = rng.standard_normal((n, a.size))
+            v /= np.linalg.norm(v, axis=1, keepdims=True)
+        elif a.kind == "angle":
+            v = rng.uniform(0.2, np.pi - 0.05, n)
+        elif a.kind == "rotation":
+            e = rng.standard_normal((n, 3))
+            e /= np.linalg.norm(e, axis=1, keepdims=True)
+            v = K.rotation_from_natural_invariants(e, rng.uniform(0.2, 3.0, n), check=False)
+        elif a.name == "m":
+            v = rng.uniform(0.5, 5.0, n)
+        else:
+            v = rng.standard_normal((n,) + a.shape)
+        out.append(np.ascontiguousarray(v, dtype=np.float64))
+    return out
+
+
+def _alloc_call(f, name):
+    k = SPECS[name]
+
+    def call(*xs):
+        n = xs[0].shape[0]
+        outs = [np.empty((n,) + o.shape) for o in k.outputs]
+        f(*xs, *outs)
+        return outs
+    return call
+
+
+def col_generated(name: str, backend: str):
+    return _alloc_call(K.batch_function(name, backend), name)
+
+
+def _declared(name: str):
+    k = SPECS[name]
+    syms = input_symbols(k)
+    flat = [s for _, ss in flat_symbols(k) for s in ss]
+    return k, flat, _flatten(k, k.build(**syms))
+
+
+def col_lambdify(name: str):
+    k, flat, exprs = _declared(name)
+    f = sp.lambdify(flat, exprs, modules="numpy", cse=True)
+
+    def call(*xs):
+        n = xs[0].shape[0]
+        cols = [c for x in xs for c in (x.reshape(n, -1).T)]
+        vals = f(*cols)
+        res = np.empty((n, len(exprs)))
+        for j, v in enumerate(vals):
+            res[:, j] = v
+        return res
+    return call
+
+
+def col_sympy_c(name: str, build: Path):
+    """Plain sympy.cse + ccode loop over the declared expressions (no rewrites)."""
+    k, flat, exprs = _declared(name)
+    temps, red = sp.cse(exprs)
+    ins = [a for a in k.args]
+    lines = ["#include <math.h>", "#include <stdint.h>",
+             f"void plain_{name}(int64_t n, " + ", ".join(f"const double *in{i}" for i in
+                                                         range(len(ins))) + ", double *out) {",
+             "  for (int64_t i = 0; i < n; ++i) {"]
+    for i, (_name, ss) in enumerate(flat_symbols(k)):
+        for j, s in enumerate(ss):
+            lines.append(f"    const double {s} = in{i}[{len(ss)} * i + {j}];")
+    for s, v in temps:
+        lines.append(f"    const double {s} = {sp.ccode(v)};")
+    for j, v in enumerate(red):
+        lines.append(f"    out[{len(red)} * i + {j}] = {sp.ccode(v)};")
+    lines += ["  }", "}"]
+    src = build / f"plain_{name}.c"
+    src.write_text("\n".join(lines) + "\n")
+    so = build / f"plain_{name}.so"
+    subprocess.run(["gcc", "-O3", "-march=native", "-fPIC", "-shared", str(src), "-o", str(so),
+                    "-lm"], check=True)
+    fn = getattr(ctypes.CDLL(str(so)), f"plain_{name}")
+    fn.restype = None
+    m = len(red)
+
+    def call(*xs):
+        n = xs[0].shape[0]
+        out = np.empty((n, m))
+        fn(ctypes.c_int64(n), *[ctypes.c_void_p(x.ctypes.data) for x in xs],
+           ctypes.c_void_p(out.ctypes.data))
+        return out
+    return call
+
+
+def timeit(f, xs, n: int, rounds: int) -> float:
+    f(*xs)
+    res = []
+    for _ in range(rounds):
+        calls = 0
+        t0 = time.thread_time()
+        while True:
+            f(*xs)
+            calls += 1
+            t = time.thread_time() - t0
+            if t >= 0.01:
+                break
+        res.append(t / calls / n * 1e9)
+    return statistics.median(res)
+
+
+def _flat_out(o, n):
+    o = o if isinstance(o, (list, tuple)) else [o]
+    return np.concatenate([np.asarray(x).reshape(n, -1) for x in o], axis=1)
+
+
+def main(argv=None) -> int:
+    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    p.add_argument("--quick", action="store_true", help="N = 1e3, 1e5 and 3 rounds")
+    p.add_argument("--kernels", default=",".join(BENCH), help="K1,...,K6")
+    p.add_argument("--out", default=str(ROOT / "benchmarks" / "RESULTS.md"))
+    args = p.parse_args(argv)
+    K.use_backend("c")
+    peers = _peers()
+    Ns = [1000, 100000] if args.quick else [1000, 100000, 1000000]
+    cols = ["generated C", "generated NumPy", "hand NumPy", "lambdify-cse", "sympy-cse C"]
+    rng = np.random.default_rng(1)
+    rows = []
+    meta = K._meta()
+    with tempfile.TemporaryDirectory() as tmp:
+        build = Path(tmp)
+        for kid in args.kernels.split(","):
+            name = BENCH[kid]
+            funcs = {"generated C": col_generated(name, "c"),
+                     "generated NumPy": col_generated(name, "numpy"),
+                     "lambdify-cse": col_lambdify(name),
+                     "sympy-cse C": col_sympy_c(name, build)}
+            if peers is not None:
+                hand = getattr(peers, f"np_{kid.lower()}")
+                if kid == "K6":     # the peers' residual with n = f = 0 is the wrench
+                    def hand(*xs, _f=hand):
+                        z = np.zeros((xs[0].shape[0], 3))
+                        return _f(*xs, z, z)
+                funcs["hand NumPy"] = hand
+            for N in Ns:
+                xs = inputs(name, N, rng)
+                ref = _flat_out(funcs["generated C"](*xs), N)
+                cells = {}
+                for c in cols:
+                    if c not in funcs:
+                        cells[c] = "n/a"
+                        continue
+                    got = _flat_out(funcs[c](*xs), N)
+                    scale = np.maximum(np.abs(ref).max(axis=1), 1e-300)
+                    err = (np.abs(got - ref).max(axis=1) / scale).max()
+                    if err > 1e-10:
+                        cells[c] = f"mismatch {err:.1e}"
+                        continue
+                    rounds = 3 if args.quick or N >= 1000000 else 7
+                    cells[c] = timeit(funcs[c], xs, N, rounds)
+                rows.append((kid, name, N, meta[name]["ops"], cells))
+                print(kid, N, {c: (f"{v:.1f}" if isinstance(v, float) else v)
+                               for c, v in cells.items()}, file=sys.stderr)
+    text = ["# Benchmarks: generated kernels vs. plain SymPy paths", "",
+            f"- host: {platform.machine()}, {os.cpu_count()} logical cores (shared), "
+            f"Python {platform.python_version()}, numpy {np.__version__}, sympy {sp.__version__}",
+            "- one thread; clock: thread CPU time; outputs allocated inside each timed call",
+            "- C: gcc -O3 -march=native (no -ffast-math); `generated C` includes the per-sample "
+            "singular/finiteness checks", "- `hand NumPy` is the peers-bench reference (a); "
+            "`sympy-cse C` is a plain sympy.cse + ccode loop over the declared expressions",
+            "- regenerate: `PYTHONPATH=src:. python benchmarks/run.py`", ""]
+    for N in Ns:
+        text += [f"## N = {N:.0e}: ns/sample", "",
+                 "| kernel | ours | ops | " + " | ".join(cols) + " |",
+                 "|---|---|---:|" + "---:|" * len(cols)]
+        for kid, name, n, ops, cells in rows:
+            if n != N:
+                continue
+            fmt = [f"{v:.3g}" if isinstance(v, float) else v for v in (cells[c] for c in cols)]
+            text.append(f"| {kid} | `{name}` | {ops} | " + " | ".join(fmt) + " |")
+        text.append("")
+    Path(args.out).write_text("\n".join(text))
+    print(f"wrote {args.out}", file=sys.stderr)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
