@@ -8,7 +8,7 @@ from __future__ import annotations
 import sympy as sp
 
 from rigidsym.registry import Rel, Statement, equation
-from rigidsym.symbols import scalar, vector
+from rigidsym.symbols import scalar
 
 from .common import I3, Bk, displacement_model, vec
 from .sec3_2_1 import Det, pitch_of_displacement, screw_axis_point, with_constants
@@ -173,23 +173,19 @@ def mozzi_chasles() -> Statement:
     Book: Sec. 3.2, Theorem 3.2.2.
     """
     model = split_model()
-    Q_, e_, a_, a1, p_ = (sp.Matrix(model[s]) for s in (Q, e, a, a_p, p))
-    c = vector("c")  # the translation of the displacement model x -> Q x + c
+    p_star = vec("p_star")
+    model[p_star] = _im(screw_axis_point(*(model[s] for s in (Q, a, a_p)), phi))
+    lam = scalar("lambda_mc")
 
     def disp(x):
-        return Q_ * x + c - x
+        """Displacement of the body point at ``x``: ``a' + Q (x - a) - x`` (3.2), (3.3)."""
+        return a_p + Q * (x - a) - x
 
-    p_star = screw_axis_point(Q_, a_, a1, phi)
-    lam = scalar("lambda_mc")
-    d0 = model[d_0]
-    one = sp.eye(3)
-    perp = one - e_ * e_.T
     return Statement(
         [Rel(d_P.T * d_P, d_0**2 * sp.Identity(1) + d_perp.T * d_perp,
              "||d_P||^2 = d_0^2 + ||d_perp||^2"),
-         Rel(perp * disp(p_star), sp.zeros(3, 1), "P* has minimum displacement"),
-         Rel(disp(p_star + lam * e_), d0 * e_, "points of L: identical, parallel to e"),
-         Rel(perp * disp(p_), (Q_ - one) * (p_ - p_star), "d_perp = (Q - 1)(p - p*)"),
-         Rel(Det(Q - I3 + e * e.T), 2 * (1 - sp.cos(phi)),
-             "null space of Q - 1 is span(e)")],
-        model, derived=p_star)
+         Rel((I3 - e * e.T) * disp(p_star), sp.ZeroMatrix(3, 1), "P* has minimum displacement"),
+         Rel(disp(p_star + lam * e), d_0 * e, "points of L: identical, parallel to e"),
+         Rel(d_perp, (Q - I3) * (p - p_star), "d_perp = (Q - 1)(p - p*)"),
+         Rel(Det(Q - I3 + e * e.T), 2 * (1 - sp.cos(phi)), "null space of Q - 1 is span(e)")],
+        model, derived=model[p_star])

@@ -376,18 +376,18 @@ def screw_axis_point_formula() -> Statement:
 
     Checked by the conditions that characterise ``p0`` for a generic displacement
     ``x -> Q x + c``: ``e^T p0 = 0`` (closest to the origin) and the displacement of ``p0``,
-    ``Q p0 + c - p0``, parallel to ``e`` (``(1 - e e^T)(Q p0 + c - p0) = 0``); for
-    ``phi != 0`` the two determine ``p0`` uniquely (rank of ``Q - 1`` is 2, Eq. (3.9b)).
+    ``a' + Q (p0 - a) - p0`` (Eqs. (3.2), (3.3)), parallel to ``e``
+    (``(1 - e e^T)(a' + Q (p0 - a) - p0) = 0``); for ``phi != 0`` the two determine ``p0``
+    uniquely (the rank of ``Q - 1`` is 2, Eq. (3.9b)). :func:`screw_axis_point` is checked
+    against the printed form.
 
     Book: Sec. 3.2.1, Eq. (3.18). Shapes: 3 x 1; metres.
     """
-    model = displacement_model()
-    Q_, e_, a_, a1 = (sp.Matrix(model[s]) for s in (Q, e, a, a_p))
-    c = vector("c")  # the translation of the generic displacement x -> Q x + c
-    p0 = screw_axis_point(Q_, a_, a1, phi)
-    disp = Q_ * p0 + c - p0
-    one = sp.eye(3)
-    return Statement([Rel(e_.T * p0, sp.zeros(1, 1), "e^T p0 = 0"),
-                      Rel((one - e_ * e_.T) * disp, sp.zeros(3, 1),
-                          "displacement of p0 parallel to e")],
-                     model, derived=p0)
+    model = with_constants(displacement_model())
+    printed = (Q - I3).T * (Q * a - a_p) / (2 * (1 - sp.cos(phi)))
+    kernel = screw_axis_point(*(model[s] for s in (Q, a, a_p)), phi)
+    return Statement([Rel(e.T * printed, sp.ZeroMatrix(1, 1), "e^T p0 = 0"),
+                      Rel((I3 - e * e.T) * (a_p + Q * (printed - a) - printed),
+                          sp.ZeroMatrix(3, 1), "displacement of p0 parallel to e")],
+                     model, derived=kernel,
+                     claims=[Rel(printed, kernel, "screw_axis_point")])
