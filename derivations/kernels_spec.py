@@ -402,3 +402,21 @@ KERNELS.append(Kernel(
     outputs=(Out("p0", (3,), "ISA point closest to the origin [m]"),
              Out("pitch", (), "pitch [m/rad]")),
     build=_isa_point_pitch, singular="omega = 0 (pure translation)", singular_arg="omega"))
+
+
+def _newton_euler_residual(I_C, m, omega, omega_dot, c_ddot, n, f):
+    w = formula(_S8 + "newton_euler_wrench")(I_C, m, omega, omega_dot, c_ddot)
+    return {"r": sp.Matrix(w) - sp.Matrix.vstack(n, f)}
+
+
+KERNELS.append(Kernel(
+    name="newton_euler_residual", public=False,
+    summary="Residual of the Newton-Euler equations, w - [n; f] (benchmark kernel K6).",
+    formula="r = [I_C omega_dot + omega x I_C omega - n; m c_ddot - f]",
+    ids=("3.134", "3.139"), sources=(_S8 + "newton_euler_wrench",),
+    args=(Arg("I_C", (3, 3), "any", "inertia at the mass centre [kg m^2]"),
+          Arg("m", (), "any", "mass [kg]"), OMEGA,
+          _v("omega_dot", "angular acceleration [rad/s^2]"),
+          _v("c_ddot", "acceleration of the mass centre [m/s^2]"),
+          _v("n", "applied moment about C [N m]"), _v("f", "applied force [N]")),
+    outputs=(Out("r", (6,), "[N m; N]"),), build=_newton_euler_residual))

@@ -12,31 +12,31 @@
 
 int64_t rigidsym_H_matrix_dot(
     int64_t n,
-    const double *RIGIDSYM_RESTRICT e,
-    const double *RIGIDSYM_RESTRICT phi,
-    const double *RIGIDSYM_RESTRICT omega,
-    double *RIGIDSYM_RESTRICT H_matrix_dot)
+    const double *RIGIDSYM_RESTRICT in_e,
+    const double *RIGIDSYM_RESTRICT in_phi,
+    const double *RIGIDSYM_RESTRICT in_omega,
+    double *RIGIDSYM_RESTRICT out_H_matrix_dot)
 {
     /* Pass 1, branch-free so that the compiler can vectorise it: evaluate and count. */
     int64_t count = 0;
     for (int64_t i = 0; i < n; ++i) {
         count += rigidsym_H_matrix_dot_sample(
-            e + 3 * i,
-            phi + 1 * i,
-            omega + 3 * i,
-            H_matrix_dot + 12 * i);
+            in_e + 3 * i,
+            in_phi + 1 * i,
+            in_omega + 3 * i,
+            out_H_matrix_dot + 12 * i);
     }
     if (count == 0)
         return 0;
     /* Pass 2, only when some sample is singular: find them and write NaN there. */
     for (int64_t i = 0; i < n; ++i) {
         if (rigidsym_H_matrix_dot_sample(
-                e + 3 * i,
-                phi + 1 * i,
-                omega + 3 * i,
-                H_matrix_dot + 12 * i)) {
+                in_e + 3 * i,
+                in_phi + 1 * i,
+                in_omega + 3 * i,
+                out_H_matrix_dot + 12 * i)) {
             for (int j = 0; j < 12; ++j)
-                H_matrix_dot[12 * i + j] = NAN;
+                out_H_matrix_dot[12 * i + j] = NAN;
         }
     }
     return count;

@@ -57,8 +57,8 @@ static inline int rigidsym_H_tilde_sample(
 /* Batch over n samples; singular samples are written as NaN; returns their number. */
 int64_t rigidsym_H_tilde(
     int64_t n,
-    const double *RIGIDSYM_RESTRICT e,
-    const double *RIGIDSYM_RESTRICT phi,
-    double *RIGIDSYM_RESTRICT H_tilde);
+    const double *RIGIDSYM_RESTRICT in_e,
+    const double *RIGIDSYM_RESTRICT in_phi,
+    double *RIGIDSYM_RESTRICT out_H_tilde);
 
 #endif /* RIGIDSYM_H_TILDE_H */

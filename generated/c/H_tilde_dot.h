@@ -65,9 +65,9 @@ static inline int rigidsym_H_tilde_dot_sample(
 /* Batch over n samples; singular samples are written as NaN; returns their number. */
 int64_t rigidsym_H_tilde_dot(
     int64_t n,
-    const double *RIGIDSYM_RESTRICT e,
-    const double *RIGIDSYM_RESTRICT phi,
-    const double *RIGIDSYM_RESTRICT omega,
-    double *RIGIDSYM_RESTRICT H_tilde_dot);
+    const double *RIGIDSYM_RESTRICT in_e,
+    const double *RIGIDSYM_RESTRICT in_phi,
+    const double *RIGIDSYM_RESTRICT in_omega,
+    double *RIGIDSYM_RESTRICT out_H_tilde_dot);
 
 #endif /* RIGIDSYM_H_TILDE_DOT_H */

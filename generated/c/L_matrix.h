@@ -66,8 +66,8 @@ static inline int rigidsym_L_matrix_sample(
 /* Batch over n samples; singular samples are written as NaN; returns their number. */
 int64_t rigidsym_L_matrix(
     int64_t n,
-    const double *RIGIDSYM_RESTRICT e,
-    const double *RIGIDSYM_RESTRICT phi,
-    double *RIGIDSYM_RESTRICT L_matrix);
+    const double *RIGIDSYM_RESTRICT in_e,
+    const double *RIGIDSYM_RESTRICT in_phi,
+    double *RIGIDSYM_RESTRICT out_L_matrix);
 
 #endif /* RIGIDSYM_L_MATRIX_H */

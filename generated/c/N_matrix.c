@@ -12,28 +12,28 @@
 
 int64_t rigidsym_N_matrix(
     int64_t n,
-    const double *RIGIDSYM_RESTRICT e,
-    const double *RIGIDSYM_RESTRICT phi,
-    double *RIGIDSYM_RESTRICT N_matrix)
+    const double *RIGIDSYM_RESTRICT in_e,
+    const double *RIGIDSYM_RESTRICT in_phi,
+    double *RIGIDSYM_RESTRICT out_N_matrix)
 {
     /* Pass 1, branch-free so that the compiler can vectorise it: evaluate and count. */
     int64_t count = 0;
     for (int64_t i = 0; i < n; ++i) {
         count += rigidsym_N_matrix_sample(
-            e + 3 * i,
-            phi + 1 * i,
-            N_matrix + 12 * i);
+            in_e + 3 * i,
+            in_phi + 1 * i,
+            out_N_matrix + 12 * i);
     }
     if (count == 0)
         return 0;
     /* Pass 2, only when some sample is singular: find them and write NaN there. */
     for (int64_t i = 0; i < n; ++i) {
         if (rigidsym_N_matrix_sample(
-                e + 3 * i,
-                phi + 1 * i,
-                N_matrix + 12 * i)) {
+                in_e + 3 * i,
+                in_phi + 1 * i,
+                out_N_matrix + 12 * i)) {
             for (int j = 0; j < 12; ++j)
-                N_matrix[12 * i + j] = NAN;
+                out_N_matrix[12 * i + j] = NAN;
         }
     }
     return count;

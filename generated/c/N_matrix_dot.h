@@ -105,9 +105,9 @@ static inline int rigidsym_N_matrix_dot_sample(
 /* Batch over n samples; singular samples are written as NaN; returns their number. */
 int64_t rigidsym_N_matrix_dot(
     int64_t n,
-    const double *RIGIDSYM_RESTRICT e,
-    const double *RIGIDSYM_RESTRICT phi,
-    const double *RIGIDSYM_RESTRICT omega,
-    double *RIGIDSYM_RESTRICT N_matrix_dot);
+    const double *RIGIDSYM_RESTRICT in_e,
+    const double *RIGIDSYM_RESTRICT in_phi,
+    const double *RIGIDSYM_RESTRICT in_omega,
+    double *RIGIDSYM_RESTRICT out_N_matrix_dot);
 
 #endif /* RIGIDSYM_N_MATRIX_DOT_H */

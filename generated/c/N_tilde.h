@@ -55,8 +55,8 @@ static inline int rigidsym_N_tilde_sample(
 /* Batch over n samples; singular samples are written as NaN; returns their number. */
 int64_t rigidsym_N_tilde(
     int64_t n,
-    const double *RIGIDSYM_RESTRICT e,
-    const double *RIGIDSYM_RESTRICT phi,
-    double *RIGIDSYM_RESTRICT N_tilde);
+    const double *RIGIDSYM_RESTRICT in_e,
+    const double *RIGIDSYM_RESTRICT in_phi,
+    double *RIGIDSYM_RESTRICT out_N_tilde);
 
 #endif /* RIGIDSYM_N_TILDE_H */

@@ -51,8 +51,8 @@ static inline int rigidsym_euler_angle_rates_yxy_body_sample(
 /* Batch over n samples; singular samples are written as NaN; returns their number. */
 int64_t rigidsym_euler_angle_rates_yxy_body(
     int64_t n,
-    const double *RIGIDSYM_RESTRICT angles,
-    const double *RIGIDSYM_RESTRICT omega,
-    double *RIGIDSYM_RESTRICT eta_dot);
+    const double *RIGIDSYM_RESTRICT in_angles,
+    const double *RIGIDSYM_RESTRICT in_omega,
+    double *RIGIDSYM_RESTRICT out_eta_dot);
 
 #endif /* RIGIDSYM_EULER_ANGLE_RATES_YXY_BODY_H */

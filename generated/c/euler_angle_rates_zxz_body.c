@@ -12,28 +12,28 @@
 
 int64_t rigidsym_euler_angle_rates_zxz_body(
     int64_t n,
-    const double *RIGIDSYM_RESTRICT angles,
-    const double *RIGIDSYM_RESTRICT omega,
-    double *RIGIDSYM_RESTRICT eta_dot)
+    const double *RIGIDSYM_RESTRICT in_angles,
+    const double *RIGIDSYM_RESTRICT in_omega,
+    double *RIGIDSYM_RESTRICT out_eta_dot)
 {
     /* Pass 1, branch-free so that the compiler can vectorise it: evaluate and count. */
     int64_t count = 0;
     for (int64_t i = 0; i < n; ++i) {
         count += rigidsym_euler_angle_rates_zxz_body_sample(
-            angles + 3 * i,
-            omega + 3 * i,
-            eta_dot + 3 * i);
+            in_angles + 3 * i,
+            in_omega + 3 * i,
+            out_eta_dot + 3 * i);
     }
     if (count == 0)
         return 0;
     /* Pass 2, only when some sample is singular: find them and write NaN there. */
     for (int64_t i = 0; i < n; ++i) {
         if (rigidsym_euler_angle_rates_zxz_body_sample(
-                angles + 3 * i,
-                omega + 3 * i,
-                eta_dot + 3 * i)) {
+                in_angles + 3 * i,
+                in_omega + 3 * i,
+                out_eta_dot + 3 * i)) {
             for (int j = 0; j < 3; ++j)
-                eta_dot[3 * i + j] = NAN;
+                out_eta_dot[3 * i + j] = NAN;
         }
     }
     return count;

@@ -12,25 +12,25 @@
 
 int64_t rigidsym_euler_rate_matrix_xyx_body(
     int64_t n,
-    const double *RIGIDSYM_RESTRICT angles,
-    double *RIGIDSYM_RESTRICT W)
+    const double *RIGIDSYM_RESTRICT in_angles,
+    double *RIGIDSYM_RESTRICT out_W)
 {
     /* Pass 1, branch-free so that the compiler can vectorise it: evaluate and count. */
     int64_t count = 0;
     for (int64_t i = 0; i < n; ++i) {
         count += rigidsym_euler_rate_matrix_xyx_body_sample(
-            angles + 3 * i,
-            W + 9 * i);
+            in_angles + 3 * i,
+            out_W + 9 * i);
     }
     if (count == 0)
         return 0;
     /* Pass 2, only when some sample is singular: find them and write NaN there. */
     for (int64_t i = 0; i < n; ++i) {
         if (rigidsym_euler_rate_matrix_xyx_body_sample(
-                angles + 3 * i,
-                W + 9 * i)) {
+                in_angles + 3 * i,
+                out_W + 9 * i)) {
             for (int j = 0; j < 9; ++j)
-                W[9 * i + j] = NAN;
+                out_W[9 * i + j] = NAN;
         }
     }
     return count;

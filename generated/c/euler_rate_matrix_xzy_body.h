@@ -45,7 +45,7 @@ static inline int rigidsym_euler_rate_matrix_xzy_body_sample(
 /* Batch over n samples; singular samples are written as NaN; returns their number. */
 int64_t rigidsym_euler_rate_matrix_xzy_body(
     int64_t n,
-    const double *RIGIDSYM_RESTRICT angles,
-    double *RIGIDSYM_RESTRICT W);
+    const double *RIGIDSYM_RESTRICT in_angles,
+    double *RIGIDSYM_RESTRICT out_W);
 
 #endif /* RIGIDSYM_EULER_RATE_MATRIX_XZY_BODY_H */

@@ -12,34 +12,34 @@
 
 int64_t rigidsym_inertia_at_point(
     int64_t n,
-    const double *RIGIDSYM_RESTRICT I_C,
-    const double *RIGIDSYM_RESTRICT m,
-    const double *RIGIDSYM_RESTRICT c,
-    const double *RIGIDSYM_RESTRICT a,
-    double *RIGIDSYM_RESTRICT I_A)
+    const double *RIGIDSYM_RESTRICT in_I_C,
+    const double *RIGIDSYM_RESTRICT in_m,
+    const double *RIGIDSYM_RESTRICT in_c,
+    const double *RIGIDSYM_RESTRICT in_a,
+    double *RIGIDSYM_RESTRICT out_I_A)
 {
     /* Pass 1, branch-free so that the compiler can vectorise it: evaluate and count. */
     int64_t count = 0;
     for (int64_t i = 0; i < n; ++i) {
         count += rigidsym_inertia_at_point_sample(
-            I_C + 9 * i,
-            m + 1 * i,
-            c + 3 * i,
-            a + 3 * i,
-            I_A + 9 * i);
+            in_I_C + 9 * i,
+            in_m + 1 * i,
+            in_c + 3 * i,
+            in_a + 3 * i,
+            out_I_A + 9 * i);
     }
     if (count == 0)
         return 0;
     /* Pass 2, only when some sample is singular: find them and write NaN there. */
     for (int64_t i = 0; i < n; ++i) {
         if (rigidsym_inertia_at_point_sample(
-                I_C + 9 * i,
-                m + 1 * i,
-                c + 3 * i,
-                a + 3 * i,
-                I_A + 9 * i)) {
+                in_I_C + 9 * i,
+                in_m + 1 * i,
+                in_c + 3 * i,
+                in_a + 3 * i,
+                out_I_A + 9 * i)) {
             for (int j = 0; j < 9; ++j)
-                I_A[9 * i + j] = NAN;
+                out_I_A[9 * i + j] = NAN;
         }
     }
     return count;

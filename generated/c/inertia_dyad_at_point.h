@@ -101,10 +101,10 @@ static inline int rigidsym_inertia_dyad_at_point_sample(
 /* Batch over n samples; singular samples are written as NaN; returns their number. */
 int64_t rigidsym_inertia_dyad_at_point(
     int64_t n,
-    const double *RIGIDSYM_RESTRICT I_C,
-    const double *RIGIDSYM_RESTRICT m,
-    const double *RIGIDSYM_RESTRICT c,
-    const double *RIGIDSYM_RESTRICT a,
-    double *RIGIDSYM_RESTRICT M_A);
+    const double *RIGIDSYM_RESTRICT in_I_C,
+    const double *RIGIDSYM_RESTRICT in_m,
+    const double *RIGIDSYM_RESTRICT in_c,
+    const double *RIGIDSYM_RESTRICT in_a,
+    double *RIGIDSYM_RESTRICT out_M_A);
 
 #endif /* RIGIDSYM_INERTIA_DYAD_AT_POINT_H */

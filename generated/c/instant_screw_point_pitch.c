@@ -12,36 +12,36 @@
 
 int64_t rigidsym_instant_screw_point_pitch(
     int64_t n,
-    const double *RIGIDSYM_RESTRICT omega,
-    const double *RIGIDSYM_RESTRICT a,
-    const double *RIGIDSYM_RESTRICT a_dot,
-    double *RIGIDSYM_RESTRICT p0,
-    double *RIGIDSYM_RESTRICT pitch)
+    const double *RIGIDSYM_RESTRICT in_omega,
+    const double *RIGIDSYM_RESTRICT in_a,
+    const double *RIGIDSYM_RESTRICT in_a_dot,
+    double *RIGIDSYM_RESTRICT out_p0,
+    double *RIGIDSYM_RESTRICT out_pitch)
 {
     /* Pass 1, branch-free so that the compiler can vectorise it: evaluate and count. */
     int64_t count = 0;
     for (int64_t i = 0; i < n; ++i) {
         count += rigidsym_instant_screw_point_pitch_sample(
-            omega + 3 * i,
-            a + 3 * i,
-            a_dot + 3 * i,
-            p0 + 3 * i,
-            pitch + 1 * i);
+            in_omega + 3 * i,
+            in_a + 3 * i,
+            in_a_dot + 3 * i,
+            out_p0 + 3 * i,
+            out_pitch + 1 * i);
     }
     if (count == 0)
         return 0;
     /* Pass 2, only when some sample is singular: find them and write NaN there. */
     for (int64_t i = 0; i < n; ++i) {
         if (rigidsym_instant_screw_point_pitch_sample(
-                omega + 3 * i,
-                a + 3 * i,
-                a_dot + 3 * i,
-                p0 + 3 * i,
-                pitch + 1 * i)) {
+                in_omega + 3 * i,
+                in_a + 3 * i,
+                in_a_dot + 3 * i,
+                out_p0 + 3 * i,
+                out_pitch + 1 * i)) {
             for (int j = 0; j < 3; ++j)
-                p0[3 * i + j] = NAN;
+                out_p0[3 * i + j] = NAN;
             for (int j = 0; j < 1; ++j)
-                pitch[1 * i + j] = NAN;
+                out_pitch[1 * i + j] = NAN;
         }
     }
     return count;

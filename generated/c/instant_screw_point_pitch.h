@@ -58,10 +58,10 @@ static inline int rigidsym_instant_screw_point_pitch_sample(
 /* Batch over n samples; singular samples are written as NaN; returns their number. */
 int64_t rigidsym_instant_screw_point_pitch(
     int64_t n,
-    const double *RIGIDSYM_RESTRICT omega,
-    const double *RIGIDSYM_RESTRICT a,
-    const double *RIGIDSYM_RESTRICT a_dot,
-    double *RIGIDSYM_RESTRICT p0,
-    double *RIGIDSYM_RESTRICT pitch);
+    const double *RIGIDSYM_RESTRICT in_omega,
+    const double *RIGIDSYM_RESTRICT in_a,
+    const double *RIGIDSYM_RESTRICT in_a_dot,
+    double *RIGIDSYM_RESTRICT out_p0,
+    double *RIGIDSYM_RESTRICT out_pitch);
 
 #endif /* RIGIDSYM_INSTANT_SCREW_POINT_PITCH_H */

@@ -12,34 +12,34 @@
 
 int64_t rigidsym_kinetic_energy(
     int64_t n,
-    const double *RIGIDSYM_RESTRICT I_C,
-    const double *RIGIDSYM_RESTRICT m,
-    const double *RIGIDSYM_RESTRICT omega,
-    const double *RIGIDSYM_RESTRICT c_dot,
-    double *RIGIDSYM_RESTRICT T)
+    const double *RIGIDSYM_RESTRICT in_I_C,
+    const double *RIGIDSYM_RESTRICT in_m,
+    const double *RIGIDSYM_RESTRICT in_omega,
+    const double *RIGIDSYM_RESTRICT in_c_dot,
+    double *RIGIDSYM_RESTRICT out_T)
 {
     /* Pass 1, branch-free so that the compiler can vectorise it: evaluate and count. */
     int64_t count = 0;
     for (int64_t i = 0; i < n; ++i) {
         count += rigidsym_kinetic_energy_sample(
-            I_C + 9 * i,
-            m + 1 * i,
-            omega + 3 * i,
-            c_dot + 3 * i,
-            T + 1 * i);
+            in_I_C + 9 * i,
+            in_m + 1 * i,
+            in_omega + 3 * i,
+            in_c_dot + 3 * i,
+            out_T + 1 * i);
     }
     if (count == 0)
         return 0;
     /* Pass 2, only when some sample is singular: find them and write NaN there. */
     for (int64_t i = 0; i < n; ++i) {
         if (rigidsym_kinetic_energy_sample(
-                I_C + 9 * i,
-                m + 1 * i,
-                omega + 3 * i,
-                c_dot + 3 * i,
-                T + 1 * i)) {
+                in_I_C + 9 * i,
+                in_m + 1 * i,
+                in_omega + 3 * i,
+                in_c_dot + 3 * i,
+                out_T + 1 * i)) {
             for (int j = 0; j < 1; ++j)
-                T[1 * i + j] = NAN;
+                out_T[1 * i + j] = NAN;
         }
     }
     return count;

@@ -52,10 +52,10 @@ static inline int rigidsym_kinetic_energy_sample(
 /* Batch over n samples; singular samples are written as NaN; returns their number. */
 int64_t rigidsym_kinetic_energy(
     int64_t n,
-    const double *RIGIDSYM_RESTRICT I_C,
-    const double *RIGIDSYM_RESTRICT m,
-    const double *RIGIDSYM_RESTRICT omega,
-    const double *RIGIDSYM_RESTRICT c_dot,
-    double *RIGIDSYM_RESTRICT T);
+    const double *RIGIDSYM_RESTRICT in_I_C,
+    const double *RIGIDSYM_RESTRICT in_m,
+    const double *RIGIDSYM_RESTRICT in_omega,
+    const double *RIGIDSYM_RESTRICT in_c_dot,
+    double *RIGIDSYM_RESTRICT out_T);
 
 #endif /* RIGIDSYM_KINETIC_ENERGY_H */

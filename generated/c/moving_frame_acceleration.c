@@ -12,43 +12,43 @@
 
 int64_t rigidsym_moving_frame_acceleration(
     int64_t n,
-    const double *RIGIDSYM_RESTRICT o_ddot,
-    const double *RIGIDSYM_RESTRICT Q,
-    const double *RIGIDSYM_RESTRICT omega,
-    const double *RIGIDSYM_RESTRICT omega_dot,
-    const double *RIGIDSYM_RESTRICT rho_M,
-    const double *RIGIDSYM_RESTRICT rho_dot_M,
-    const double *RIGIDSYM_RESTRICT rho_ddot_M,
-    double *RIGIDSYM_RESTRICT p_ddot)
+    const double *RIGIDSYM_RESTRICT in_o_ddot,
+    const double *RIGIDSYM_RESTRICT in_Q,
+    const double *RIGIDSYM_RESTRICT in_omega,
+    const double *RIGIDSYM_RESTRICT in_omega_dot,
+    const double *RIGIDSYM_RESTRICT in_rho_M,
+    const double *RIGIDSYM_RESTRICT in_rho_dot_M,
+    const double *RIGIDSYM_RESTRICT in_rho_ddot_M,
+    double *RIGIDSYM_RESTRICT out_p_ddot)
 {
     /* Pass 1, branch-free so that the compiler can vectorise it: evaluate and count. */
     int64_t count = 0;
     for (int64_t i = 0; i < n; ++i) {
         count += rigidsym_moving_frame_acceleration_sample(
-            o_ddot + 3 * i,
-            Q + 9 * i,
-            omega + 3 * i,
-            omega_dot + 3 * i,
-            rho_M + 3 * i,
-            rho_dot_M + 3 * i,
-            rho_ddot_M + 3 * i,
-            p_ddot + 3 * i);
+            in_o_ddot + 3 * i,
+            in_Q + 9 * i,
+            in_omega + 3 * i,
+            in_omega_dot + 3 * i,
+            in_rho_M + 3 * i,
+            in_rho_dot_M + 3 * i,
+            in_rho_ddot_M + 3 * i,
+            out_p_ddot + 3 * i);
     }
     if (count == 0)
         return 0;
     /* Pass 2, only when some sample is singular: find them and write NaN there. */
     for (int64_t i = 0; i < n; ++i) {
         if (rigidsym_moving_frame_acceleration_sample(
-                o_ddot + 3 * i,
-                Q + 9 * i,
-                omega + 3 * i,
-                omega_dot + 3 * i,
-                rho_M + 3 * i,
-                rho_dot_M + 3 * i,
-                rho_ddot_M + 3 * i,
-                p_ddot + 3 * i)) {
+                in_o_ddot + 3 * i,
+                in_Q + 9 * i,
+                in_omega + 3 * i,
+                in_omega_dot + 3 * i,
+                in_rho_M + 3 * i,
+                in_rho_dot_M + 3 * i,
+                in_rho_ddot_M + 3 * i,
+                out_p_ddot + 3 * i)) {
             for (int j = 0; j < 3; ++j)
-                p_ddot[3 * i + j] = NAN;
+                out_p_ddot[3 * i + j] = NAN;
         }
     }
     return count;

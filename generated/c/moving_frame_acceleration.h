@@ -85,13 +85,13 @@ static inline int rigidsym_moving_frame_acceleration_sample(
 /* Batch over n samples; singular samples are written as NaN; returns their number. */
 int64_t rigidsym_moving_frame_acceleration(
     int64_t n,
-    const double *RIGIDSYM_RESTRICT o_ddot,
-    const double *RIGIDSYM_RESTRICT Q,
-    const double *RIGIDSYM_RESTRICT omega,
-    const double *RIGIDSYM_RESTRICT omega_dot,
-    const double *RIGIDSYM_RESTRICT rho_M,
-    const double *RIGIDSYM_RESTRICT rho_dot_M,
-    const double *RIGIDSYM_RESTRICT rho_ddot_M,
-    double *RIGIDSYM_RESTRICT p_ddot);
+    const double *RIGIDSYM_RESTRICT in_o_ddot,
+    const double *RIGIDSYM_RESTRICT in_Q,
+    const double *RIGIDSYM_RESTRICT in_omega,
+    const double *RIGIDSYM_RESTRICT in_omega_dot,
+    const double *RIGIDSYM_RESTRICT in_rho_M,
+    const double *RIGIDSYM_RESTRICT in_rho_dot_M,
+    const double *RIGIDSYM_RESTRICT in_rho_ddot_M,
+    double *RIGIDSYM_RESTRICT out_p_ddot);
 
 #endif /* RIGIDSYM_MOVING_FRAME_ACCELERATION_H */

@@ -13,30 +13,30 @@
 
 int64_t rigidsym_natural_invariants_from_rotation(
     int64_t n,
-    const double *RIGIDSYM_RESTRICT Q,
-    double *RIGIDSYM_RESTRICT e,
-    double *RIGIDSYM_RESTRICT phi)
+    const double *RIGIDSYM_RESTRICT in_Q,
+    double *RIGIDSYM_RESTRICT out_e,
+    double *RIGIDSYM_RESTRICT out_phi)
 {
     /* Pass 1, branch-free so that the compiler can vectorise it: evaluate and count. */
     int64_t count = 0;
     for (int64_t i = 0; i < n; ++i) {
         count += rigidsym_natural_invariants_from_rotation_sample(
-            Q + 9 * i,
-            e + 3 * i,
-            phi + 1 * i);
+            in_Q + 9 * i,
+            out_e + 3 * i,
+            out_phi + 1 * i);
     }
     if (count == 0)
         return 0;
     /* Pass 2, only when some sample is singular: find them and write NaN there. */
     for (int64_t i = 0; i < n; ++i) {
         if (rigidsym_natural_invariants_from_rotation_sample(
-                Q + 9 * i,
-                e + 3 * i,
-                phi + 1 * i)) {
+                in_Q + 9 * i,
+                out_e + 3 * i,
+                out_phi + 1 * i)) {
             for (int j = 0; j < 3; ++j)
-                e[3 * i + j] = NAN;
+                out_e[3 * i + j] = NAN;
             for (int j = 0; j < 1; ++j)
-                phi[1 * i + j] = NAN;
+                out_phi[1 * i + j] = NAN;
         }
     }
     return count;

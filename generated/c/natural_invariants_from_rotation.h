@@ -125,8 +125,8 @@ static inline int rigidsym_natural_invariants_from_rotation_sample(
 /* Batch over n samples; singular samples are written as NaN; returns their number. */
 int64_t rigidsym_natural_invariants_from_rotation(
     int64_t n,
-    const double *RIGIDSYM_RESTRICT Q,
-    double *RIGIDSYM_RESTRICT e,
-    double *RIGIDSYM_RESTRICT phi);
+    const double *RIGIDSYM_RESTRICT in_Q,
+    double *RIGIDSYM_RESTRICT out_e,
+    double *RIGIDSYM_RESTRICT out_phi);
 
 #endif /* RIGIDSYM_NATURAL_INVARIANTS_FROM_ROTATION_H */

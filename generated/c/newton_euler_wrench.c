@@ -12,37 +12,37 @@
 
 int64_t rigidsym_newton_euler_wrench(
     int64_t n,
-    const double *RIGIDSYM_RESTRICT I_C,
-    const double *RIGIDSYM_RESTRICT m,
-    const double *RIGIDSYM_RESTRICT omega,
-    const double *RIGIDSYM_RESTRICT omega_dot,
-    const double *RIGIDSYM_RESTRICT c_ddot,
-    double *RIGIDSYM_RESTRICT w)
+    const double *RIGIDSYM_RESTRICT in_I_C,
+    const double *RIGIDSYM_RESTRICT in_m,
+    const double *RIGIDSYM_RESTRICT in_omega,
+    const double *RIGIDSYM_RESTRICT in_omega_dot,
+    const double *RIGIDSYM_RESTRICT in_c_ddot,
+    double *RIGIDSYM_RESTRICT out_w)
 {
     /* Pass 1, branch-free so that the compiler can vectorise it: evaluate and count. */
     int64_t count = 0;
     for (int64_t i = 0; i < n; ++i) {
         count += rigidsym_newton_euler_wrench_sample(
-            I_C + 9 * i,
-            m + 1 * i,
-            omega + 3 * i,
-            omega_dot + 3 * i,
-            c_ddot + 3 * i,
-            w + 6 * i);
+            in_I_C + 9 * i,
+            in_m + 1 * i,
+            in_omega + 3 * i,
+            in_omega_dot + 3 * i,
+            in_c_ddot + 3 * i,
+            out_w + 6 * i);
     }
     if (count == 0)
         return 0;
     /* Pass 2, only when some sample is singular: find them and write NaN there. */
     for (int64_t i = 0; i < n; ++i) {
         if (rigidsym_newton_euler_wrench_sample(
-                I_C + 9 * i,
-                m + 1 * i,
-                omega + 3 * i,
-                omega_dot + 3 * i,
-                c_ddot + 3 * i,
-                w + 6 * i)) {
+                in_I_C + 9 * i,
+                in_m + 1 * i,
+                in_omega + 3 * i,
+                in_omega_dot + 3 * i,
+                in_c_ddot + 3 * i,
+                out_w + 6 * i)) {
             for (int j = 0; j < 6; ++j)
-                w[6 * i + j] = NAN;
+                out_w[6 * i + j] = NAN;
         }
     }
     return count;

@@ -63,11 +63,11 @@ static inline int rigidsym_newton_euler_wrench_sample(
 /* Batch over n samples; singular samples are written as NaN; returns their number. */
 int64_t rigidsym_newton_euler_wrench(
     int64_t n,
-    const double *RIGIDSYM_RESTRICT I_C,
-    const double *RIGIDSYM_RESTRICT m,
-    const double *RIGIDSYM_RESTRICT omega,
-    const double *RIGIDSYM_RESTRICT omega_dot,
-    const double *RIGIDSYM_RESTRICT c_ddot,
-    double *RIGIDSYM_RESTRICT w);
+    const double *RIGIDSYM_RESTRICT in_I_C,
+    const double *RIGIDSYM_RESTRICT in_m,
+    const double *RIGIDSYM_RESTRICT in_omega,
+    const double *RIGIDSYM_RESTRICT in_omega_dot,
+    const double *RIGIDSYM_RESTRICT in_c_ddot,
+    double *RIGIDSYM_RESTRICT out_w);
 
 #endif /* RIGIDSYM_NEWTON_EULER_WRENCH_H */

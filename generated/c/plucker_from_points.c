@@ -12,28 +12,28 @@
 
 int64_t rigidsym_plucker_from_points(
     int64_t n,
-    const double *RIGIDSYM_RESTRICT p1,
-    const double *RIGIDSYM_RESTRICT p2,
-    double *RIGIDSYM_RESTRICT kappa)
+    const double *RIGIDSYM_RESTRICT in_p1,
+    const double *RIGIDSYM_RESTRICT in_p2,
+    double *RIGIDSYM_RESTRICT out_kappa)
 {
     /* Pass 1, branch-free so that the compiler can vectorise it: evaluate and count. */
     int64_t count = 0;
     for (int64_t i = 0; i < n; ++i) {
         count += rigidsym_plucker_from_points_sample(
-            p1 + 3 * i,
-            p2 + 3 * i,
-            kappa + 6 * i);
+            in_p1 + 3 * i,
+            in_p2 + 3 * i,
+            out_kappa + 6 * i);
     }
     if (count == 0)
         return 0;
     /* Pass 2, only when some sample is singular: find them and write NaN there. */
     for (int64_t i = 0; i < n; ++i) {
         if (rigidsym_plucker_from_points_sample(
-                p1 + 3 * i,
-                p2 + 3 * i,
-                kappa + 6 * i)) {
+                in_p1 + 3 * i,
+                in_p2 + 3 * i,
+                out_kappa + 6 * i)) {
             for (int j = 0; j < 6; ++j)
-                kappa[6 * i + j] = NAN;
+                out_kappa[6 * i + j] = NAN;
         }
     }
     return count;

@@ -58,8 +58,8 @@ static inline int rigidsym_plucker_from_points_sample(
 /* Batch over n samples; singular samples are written as NaN; returns their number. */
 int64_t rigidsym_plucker_from_points(
     int64_t n,
-    const double *RIGIDSYM_RESTRICT p1,
-    const double *RIGIDSYM_RESTRICT p2,
-    double *RIGIDSYM_RESTRICT kappa);
+    const double *RIGIDSYM_RESTRICT in_p1,
+    const double *RIGIDSYM_RESTRICT in_p2,
+    double *RIGIDSYM_RESTRICT out_kappa);
 
 #endif /* RIGIDSYM_PLUCKER_FROM_POINTS_H */

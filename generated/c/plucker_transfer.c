@@ -12,31 +12,31 @@
 
 int64_t rigidsym_plucker_transfer(
     int64_t n,
-    const double *RIGIDSYM_RESTRICT kappa_A,
-    const double *RIGIDSYM_RESTRICT a,
-    const double *RIGIDSYM_RESTRICT b,
-    double *RIGIDSYM_RESTRICT kappa_B)
+    const double *RIGIDSYM_RESTRICT in_kappa_A,
+    const double *RIGIDSYM_RESTRICT in_a,
+    const double *RIGIDSYM_RESTRICT in_b,
+    double *RIGIDSYM_RESTRICT out_kappa_B)
 {
     /* Pass 1, branch-free so that the compiler can vectorise it: evaluate and count. */
     int64_t count = 0;
     for (int64_t i = 0; i < n; ++i) {
         count += rigidsym_plucker_transfer_sample(
-            kappa_A + 6 * i,
-            a + 3 * i,
-            b + 3 * i,
-            kappa_B + 6 * i);
+            in_kappa_A + 6 * i,
+            in_a + 3 * i,
+            in_b + 3 * i,
+            out_kappa_B + 6 * i);
     }
     if (count == 0)
         return 0;
     /* Pass 2, only when some sample is singular: find them and write NaN there. */
     for (int64_t i = 0; i < n; ++i) {
         if (rigidsym_plucker_transfer_sample(
-                kappa_A + 6 * i,
-                a + 3 * i,
-                b + 3 * i,
-                kappa_B + 6 * i)) {
+                in_kappa_A + 6 * i,
+                in_a + 3 * i,
+                in_b + 3 * i,
+                out_kappa_B + 6 * i)) {
             for (int j = 0; j < 6; ++j)
-                kappa_B[6 * i + j] = NAN;
+                out_kappa_B[6 * i + j] = NAN;
         }
     }
     return count;

@@ -54,9 +54,9 @@ static inline int rigidsym_plucker_transfer_sample(
 /* Batch over n samples; singular samples are written as NaN; returns their number. */
 int64_t rigidsym_plucker_transfer(
     int64_t n,
-    const double *RIGIDSYM_RESTRICT kappa_A,
-    const double *RIGIDSYM_RESTRICT a,
-    const double *RIGIDSYM_RESTRICT b,
-    double *RIGIDSYM_RESTRICT kappa_B);
+    const double *RIGIDSYM_RESTRICT in_kappa_A,
+    const double *RIGIDSYM_RESTRICT in_a,
+    const double *RIGIDSYM_RESTRICT in_b,
+    double *RIGIDSYM_RESTRICT out_kappa_B);
 
 #endif /* RIGIDSYM_PLUCKER_TRANSFER_H */

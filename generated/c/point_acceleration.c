@@ -12,37 +12,37 @@
 
 int64_t rigidsym_point_acceleration(
     int64_t n,
-    const double *RIGIDSYM_RESTRICT a_ddot,
-    const double *RIGIDSYM_RESTRICT omega,
-    const double *RIGIDSYM_RESTRICT omega_dot,
-    const double *RIGIDSYM_RESTRICT p,
-    const double *RIGIDSYM_RESTRICT a,
-    double *RIGIDSYM_RESTRICT p_ddot)
+    const double *RIGIDSYM_RESTRICT in_a_ddot,
+    const double *RIGIDSYM_RESTRICT in_omega,
+    const double *RIGIDSYM_RESTRICT in_omega_dot,
+    const double *RIGIDSYM_RESTRICT in_p,
+    const double *RIGIDSYM_RESTRICT in_a,
+    double *RIGIDSYM_RESTRICT out_p_ddot)
 {
     /* Pass 1, branch-free so that the compiler can vectorise it: evaluate and count. */
     int64_t count = 0;
     for (int64_t i = 0; i < n; ++i) {
         count += rigidsym_point_acceleration_sample(
-            a_ddot + 3 * i,
-            omega + 3 * i,
-            omega_dot + 3 * i,
-            p + 3 * i,
-            a + 3 * i,
-            p_ddot + 3 * i);
+            in_a_ddot + 3 * i,
+            in_omega + 3 * i,
+            in_omega_dot + 3 * i,
+            in_p + 3 * i,
+            in_a + 3 * i,
+            out_p_ddot + 3 * i);
     }
     if (count == 0)
         return 0;
     /* Pass 2, only when some sample is singular: find them and write NaN there. */
     for (int64_t i = 0; i < n; ++i) {
         if (rigidsym_point_acceleration_sample(
-                a_ddot + 3 * i,
-                omega + 3 * i,
-                omega_dot + 3 * i,
-                p + 3 * i,
-                a + 3 * i,
-                p_ddot + 3 * i)) {
+                in_a_ddot + 3 * i,
+                in_omega + 3 * i,
+                in_omega_dot + 3 * i,
+                in_p + 3 * i,
+                in_a + 3 * i,
+                out_p_ddot + 3 * i)) {
             for (int j = 0; j < 3; ++j)
-                p_ddot[3 * i + j] = NAN;
+                out_p_ddot[3 * i + j] = NAN;
         }
     }
     return count;

@@ -59,11 +59,11 @@ static inline int rigidsym_point_acceleration_sample(
 /* Batch over n samples; singular samples are written as NaN; returns their number. */
 int64_t rigidsym_point_acceleration(
     int64_t n,
-    const double *RIGIDSYM_RESTRICT a_ddot,
-    const double *RIGIDSYM_RESTRICT omega,
-    const double *RIGIDSYM_RESTRICT omega_dot,
-    const double *RIGIDSYM_RESTRICT p,
-    const double *RIGIDSYM_RESTRICT a,
-    double *RIGIDSYM_RESTRICT p_ddot);
+    const double *RIGIDSYM_RESTRICT in_a_ddot,
+    const double *RIGIDSYM_RESTRICT in_omega,
+    const double *RIGIDSYM_RESTRICT in_omega_dot,
+    const double *RIGIDSYM_RESTRICT in_p,
+    const double *RIGIDSYM_RESTRICT in_a,
+    double *RIGIDSYM_RESTRICT out_p_ddot);
 
 #endif /* RIGIDSYM_POINT_ACCELERATION_H */

@@ -76,6 +76,7 @@
 #include "kinetic_energy.h"
 #include "moving_frame_acceleration.h"
 #include "natural_invariants_from_rotation.h"
+#include "newton_euler_residual.h"
 #include "newton_euler_wrench.h"
 #include "plucker_from_points.h"
 #include "plucker_transfer.h"

@@ -12,25 +12,25 @@
 
 int64_t rigidsym_rotation_from_euler_rodrigues(
     int64_t n,
-    const double *RIGIDSYM_RESTRICT eta,
-    double *RIGIDSYM_RESTRICT Q)
+    const double *RIGIDSYM_RESTRICT in_eta,
+    double *RIGIDSYM_RESTRICT out_Q)
 {
     /* Pass 1, branch-free so that the compiler can vectorise it: evaluate and count. */
     int64_t count = 0;
     for (int64_t i = 0; i < n; ++i) {
         count += rigidsym_rotation_from_euler_rodrigues_sample(
-            eta + 4 * i,
-            Q + 9 * i);
+            in_eta + 4 * i,
+            out_Q + 9 * i);
     }
     if (count == 0)
         return 0;
     /* Pass 2, only when some sample is singular: find them and write NaN there. */
     for (int64_t i = 0; i < n; ++i) {
         if (rigidsym_rotation_from_euler_rodrigues_sample(
-                eta + 4 * i,
-                Q + 9 * i)) {
+                in_eta + 4 * i,
+                out_Q + 9 * i)) {
             for (int j = 0; j < 9; ++j)
-                Q[9 * i + j] = NAN;
+                out_Q[9 * i + j] = NAN;
         }
     }
     return count;

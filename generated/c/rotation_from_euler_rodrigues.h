@@ -58,7 +58,7 @@ static inline int rigidsym_rotation_from_euler_rodrigues_sample(
 /* Batch over n samples; singular samples are written as NaN; returns their number. */
 int64_t rigidsym_rotation_from_euler_rodrigues(
     int64_t n,
-    const double *RIGIDSYM_RESTRICT eta,
-    double *RIGIDSYM_RESTRICT Q);
+    const double *RIGIDSYM_RESTRICT in_eta,
+    double *RIGIDSYM_RESTRICT out_Q);
 
 #endif /* RIGIDSYM_ROTATION_FROM_EULER_RODRIGUES_H */

@@ -60,8 +60,8 @@ static inline int rigidsym_rotation_from_natural_invariants_sample(
 /* Batch over n samples; singular samples are written as NaN; returns their number. */
 int64_t rigidsym_rotation_from_natural_invariants(
     int64_t n,
-    const double *RIGIDSYM_RESTRICT e,
-    const double *RIGIDSYM_RESTRICT phi,
-    double *RIGIDSYM_RESTRICT Q);
+    const double *RIGIDSYM_RESTRICT in_e,
+    const double *RIGIDSYM_RESTRICT in_phi,
+    double *RIGIDSYM_RESTRICT out_Q);
 
 #endif /* RIGIDSYM_ROTATION_FROM_NATURAL_INVARIANTS_H */

@@ -12,34 +12,34 @@
 
 int64_t rigidsym_screw_axis_point(
     int64_t n,
-    const double *RIGIDSYM_RESTRICT e,
-    const double *RIGIDSYM_RESTRICT phi,
-    const double *RIGIDSYM_RESTRICT a,
-    const double *RIGIDSYM_RESTRICT a_prime,
-    double *RIGIDSYM_RESTRICT p0)
+    const double *RIGIDSYM_RESTRICT in_e,
+    const double *RIGIDSYM_RESTRICT in_phi,
+    const double *RIGIDSYM_RESTRICT in_a,
+    const double *RIGIDSYM_RESTRICT in_a_prime,
+    double *RIGIDSYM_RESTRICT out_p0)
 {
     /* Pass 1, branch-free so that the compiler can vectorise it: evaluate and count. */
     int64_t count = 0;
     for (int64_t i = 0; i < n; ++i) {
         count += rigidsym_screw_axis_point_sample(
-            e + 3 * i,
-            phi + 1 * i,
-            a + 3 * i,
-            a_prime + 3 * i,
-            p0 + 3 * i);
+            in_e + 3 * i,
+            in_phi + 1 * i,
+            in_a + 3 * i,
+            in_a_prime + 3 * i,
+            out_p0 + 3 * i);
     }
     if (count == 0)
         return 0;
     /* Pass 2, only when some sample is singular: find them and write NaN there. */
     for (int64_t i = 0; i < n; ++i) {
         if (rigidsym_screw_axis_point_sample(
-                e + 3 * i,
-                phi + 1 * i,
-                a + 3 * i,
-                a_prime + 3 * i,
-                p0 + 3 * i)) {
+                in_e + 3 * i,
+                in_phi + 1 * i,
+                in_a + 3 * i,
+                in_a_prime + 3 * i,
+                out_p0 + 3 * i)) {
             for (int j = 0; j < 3; ++j)
-                p0[3 * i + j] = NAN;
+                out_p0[3 * i + j] = NAN;
         }
     }
     return count;

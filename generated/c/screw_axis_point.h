@@ -78,10 +78,10 @@ static inline int rigidsym_screw_axis_point_sample(
 /* Batch over n samples; singular samples are written as NaN; returns their number. */
 int64_t rigidsym_screw_axis_point(
     int64_t n,
-    const double *RIGIDSYM_RESTRICT e,
-    const double *RIGIDSYM_RESTRICT phi,
-    const double *RIGIDSYM_RESTRICT a,
-    const double *RIGIDSYM_RESTRICT a_prime,
-    double *RIGIDSYM_RESTRICT p0);
+    const double *RIGIDSYM_RESTRICT in_e,
+    const double *RIGIDSYM_RESTRICT in_phi,
+    const double *RIGIDSYM_RESTRICT in_a,
+    const double *RIGIDSYM_RESTRICT in_a_prime,
+    double *RIGIDSYM_RESTRICT out_p0);
 
 #endif /* RIGIDSYM_SCREW_AXIS_POINT_H */

@@ -12,31 +12,31 @@
 
 int64_t rigidsym_twist_transfer(
     int64_t n,
-    const double *RIGIDSYM_RESTRICT t_A,
-    const double *RIGIDSYM_RESTRICT a,
-    const double *RIGIDSYM_RESTRICT p,
-    double *RIGIDSYM_RESTRICT t_P)
+    const double *RIGIDSYM_RESTRICT in_t_A,
+    const double *RIGIDSYM_RESTRICT in_a,
+    const double *RIGIDSYM_RESTRICT in_p,
+    double *RIGIDSYM_RESTRICT out_t_P)
 {
     /* Pass 1, branch-free so that the compiler can vectorise it: evaluate and count. */
     int64_t count = 0;
     for (int64_t i = 0; i < n; ++i) {
         count += rigidsym_twist_transfer_sample(
-            t_A + 6 * i,
-            a + 3 * i,
-            p + 3 * i,
-            t_P + 6 * i);
+            in_t_A + 6 * i,
+            in_a + 3 * i,
+            in_p + 3 * i,
+            out_t_P + 6 * i);
     }
     if (count == 0)
         return 0;
     /* Pass 2, only when some sample is singular: find them and write NaN there. */
     for (int64_t i = 0; i < n; ++i) {
         if (rigidsym_twist_transfer_sample(
-                t_A + 6 * i,
-                a + 3 * i,
-                p + 3 * i,
-                t_P + 6 * i)) {
+                in_t_A + 6 * i,
+                in_a + 3 * i,
+                in_p + 3 * i,
+                out_t_P + 6 * i)) {
             for (int j = 0; j < 6; ++j)
-                t_P[6 * i + j] = NAN;
+                out_t_P[6 * i + j] = NAN;
         }
     }
     return count;

@@ -54,9 +54,9 @@ static inline int rigidsym_twist_transfer_sample(
 /* Batch over n samples; singular samples are written as NaN; returns their number. */
 int64_t rigidsym_twist_transfer(
     int64_t n,
-    const double *RIGIDSYM_RESTRICT t_A,
-    const double *RIGIDSYM_RESTRICT a,
-    const double *RIGIDSYM_RESTRICT p,
-    double *RIGIDSYM_RESTRICT t_P);
+    const double *RIGIDSYM_RESTRICT in_t_A,
+    const double *RIGIDSYM_RESTRICT in_a,
+    const double *RIGIDSYM_RESTRICT in_p,
+    double *RIGIDSYM_RESTRICT out_t_P);
 
 #endif /* RIGIDSYM_TWIST_TRANSFER_H */

@@ -77,8 +77,8 @@ static inline int rigidsym_twist_transfer_matrix_sample(
 /* Batch over n samples; singular samples are written as NaN; returns their number. */
 int64_t rigidsym_twist_transfer_matrix(
     int64_t n,
-    const double *RIGIDSYM_RESTRICT a,
-    const double *RIGIDSYM_RESTRICT p,
-    double *RIGIDSYM_RESTRICT U);
+    const double *RIGIDSYM_RESTRICT in_a,
+    const double *RIGIDSYM_RESTRICT in_p,
+    double *RIGIDSYM_RESTRICT out_U);
 
 #endif /* RIGIDSYM_TWIST_TRANSFER_MATRIX_H */

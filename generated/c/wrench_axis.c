@@ -12,38 +12,38 @@
 
 int64_t rigidsym_wrench_axis(
     int64_t n,
-    const double *RIGIDSYM_RESTRICT w_A,
-    const double *RIGIDSYM_RESTRICT a,
-    double *RIGIDSYM_RESTRICT p0,
-    double *RIGIDSYM_RESTRICT pitch,
-    double *RIGIDSYM_RESTRICT plucker)
+    const double *RIGIDSYM_RESTRICT in_w_A,
+    const double *RIGIDSYM_RESTRICT in_a,
+    double *RIGIDSYM_RESTRICT out_p0,
+    double *RIGIDSYM_RESTRICT out_pitch,
+    double *RIGIDSYM_RESTRICT out_plucker)
 {
     /* Pass 1, branch-free so that the compiler can vectorise it: evaluate and count. */
     int64_t count = 0;
     for (int64_t i = 0; i < n; ++i) {
         count += rigidsym_wrench_axis_sample(
-            w_A + 6 * i,
-            a + 3 * i,
-            p0 + 3 * i,
-            pitch + 1 * i,
-            plucker + 6 * i);
+            in_w_A + 6 * i,
+            in_a + 3 * i,
+            out_p0 + 3 * i,
+            out_pitch + 1 * i,
+            out_plucker + 6 * i);
     }
     if (count == 0)
         return 0;
     /* Pass 2, only when some sample is singular: find them and write NaN there. */
     for (int64_t i = 0; i < n; ++i) {
         if (rigidsym_wrench_axis_sample(
-                w_A + 6 * i,
-                a + 3 * i,
-                p0 + 3 * i,
-                pitch + 1 * i,
-                plucker + 6 * i)) {
+                in_w_A + 6 * i,
+                in_a + 3 * i,
+                out_p0 + 3 * i,
+                out_pitch + 1 * i,
+                out_plucker + 6 * i)) {
             for (int j = 0; j < 3; ++j)
-                p0[3 * i + j] = NAN;
+                out_p0[3 * i + j] = NAN;
             for (int j = 0; j < 1; ++j)
-                pitch[1 * i + j] = NAN;
+                out_pitch[1 * i + j] = NAN;
             for (int j = 0; j < 6; ++j)
-                plucker[6 * i + j] = NAN;
+                out_plucker[6 * i + j] = NAN;
         }
     }
     return count;

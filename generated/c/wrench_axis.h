@@ -70,10 +70,10 @@ static inline int rigidsym_wrench_axis_sample(
 /* Batch over n samples; singular samples are written as NaN; returns their number. */
 int64_t rigidsym_wrench_axis(
     int64_t n,
-    const double *RIGIDSYM_RESTRICT w_A,
-    const double *RIGIDSYM_RESTRICT a,
-    double *RIGIDSYM_RESTRICT p0,
-    double *RIGIDSYM_RESTRICT pitch,
-    double *RIGIDSYM_RESTRICT plucker);
+    const double *RIGIDSYM_RESTRICT in_w_A,
+    const double *RIGIDSYM_RESTRICT in_a,
+    double *RIGIDSYM_RESTRICT out_p0,
+    double *RIGIDSYM_RESTRICT out_pitch,
+    double *RIGIDSYM_RESTRICT out_plucker);
 
 #endif /* RIGIDSYM_WRENCH_AXIS_H */

@@ -12,28 +12,28 @@
 
 int64_t rigidsym_wrench_transfer_matrix(
     int64_t n,
-    const double *RIGIDSYM_RESTRICT a,
-    const double *RIGIDSYM_RESTRICT p,
-    double *RIGIDSYM_RESTRICT V)
+    const double *RIGIDSYM_RESTRICT in_a,
+    const double *RIGIDSYM_RESTRICT in_p,
+    double *RIGIDSYM_RESTRICT out_V)
 {
     /* Pass 1, branch-free so that the compiler can vectorise it: evaluate and count. */
     int64_t count = 0;
     for (int64_t i = 0; i < n; ++i) {
         count += rigidsym_wrench_transfer_matrix_sample(
-            a + 3 * i,
-            p + 3 * i,
-            V + 36 * i);
+            in_a + 3 * i,
+            in_p + 3 * i,
+            out_V + 36 * i);
     }
     if (count == 0)
         return 0;
     /* Pass 2, only when some sample is singular: find them and write NaN there. */
     for (int64_t i = 0; i < n; ++i) {
         if (rigidsym_wrench_transfer_matrix_sample(
-                a + 3 * i,
-                p + 3 * i,
-                V + 36 * i)) {
+                in_a + 3 * i,
+                in_p + 3 * i,
+                out_V + 36 * i)) {
             for (int j = 0; j < 36; ++j)
-                V[36 * i + j] = NAN;
+                out_V[36 * i + j] = NAN;
         }
     }
     return count;

@@ -77,8 +77,8 @@ static inline int rigidsym_wrench_transfer_matrix_sample(
 /* Batch over n samples; singular samples are written as NaN; returns their number. */
 int64_t rigidsym_wrench_transfer_matrix(
     int64_t n,
-    const double *RIGIDSYM_RESTRICT a,
-    const double *RIGIDSYM_RESTRICT p,
-    double *RIGIDSYM_RESTRICT V);
+    const double *RIGIDSYM_RESTRICT in_a,
+    const double *RIGIDSYM_RESTRICT in_p,
+    double *RIGIDSYM_RESTRICT out_V);
 
 #endif /* RIGIDSYM_WRENCH_TRANSFER_MATRIX_H */

@@ -65,23 +65,23 @@ def _main(e_0, e_1, e_2, phi, omega_0, omega_1, omega_2):
 
 def N_tilde_dot(e, phi, omega, out_N_tilde_dot):
     """Evaluate on ``n`` samples; write the outputs; return the singular mask ``(n,)``."""
-    n = e.shape[0]
-    e_f = e.reshape(n, 3)
-    e_s = tuple(e_f[:, i] for i in range(3))
+    _n = e.shape[0]
+    e_f = e.reshape(_n, 3)
+    e_s = tuple(e_f[:, _i] for _i in range(3))
     phi_s = (phi,)
-    omega_f = omega.reshape(n, 3)
-    omega_s = tuple(omega_f[:, i] for i in range(3))
-    cols = e_s + phi_s + omega_s
-    outs = (out_N_tilde_dot.reshape(n, 12), )
-    bad = numpy.zeros(n, dtype=bool)
+    omega_f = omega.reshape(_n, 3)
+    omega_s = tuple(omega_f[:, _i] for _i in range(3))
+    _cols = e_s + phi_s + omega_s
+    _outs = (out_N_tilde_dot.reshape(_n, 12), )
+    _bad = numpy.zeros(_n, dtype=bool)
     with numpy.errstate(all="ignore"):
-        vals, dens = _main(*cols)
-        _store(outs, vals, None)
-        for d in dens:
-            bad |= numpy.equal(d, 0.0)
-        for o in outs:
-            bad |= ~numpy.isfinite(o).all(axis=1)
-    return bad
+        _vals, _dens = _main(*_cols)
+        _store(_outs, _vals, None)
+        for _d in _dens:
+            _bad |= numpy.equal(_d, 0.0)
+        for _o in _outs:
+            _bad |= ~numpy.isfinite(_o).all(axis=1)
+    return _bad
 
 
 _SIZES = (12, )

@@ -71,6 +71,7 @@ NAMES = (
     "kinetic_energy",
     "moving_frame_acceleration",
     "natural_invariants_from_rotation",
+    "newton_euler_residual",
     "newton_euler_wrench",
     "plucker_from_points",
     "plucker_transfer",

@@ -40,22 +40,22 @@ def _main(angles_0, angles_1, angles_2, omega_0, omega_1, omega_2):
 
 def euler_angle_rates_zyx_body(angles, omega, out_eta_dot):
     """Evaluate on ``n`` samples; write the outputs; return the singular mask ``(n,)``."""
-    n = angles.shape[0]
-    angles_f = angles.reshape(n, 3)
-    angles_s = tuple(angles_f[:, i] for i in range(3))
-    omega_f = omega.reshape(n, 3)
-    omega_s = tuple(omega_f[:, i] for i in range(3))
-    cols = angles_s + omega_s
-    outs = (out_eta_dot.reshape(n, 3), )
-    bad = numpy.zeros(n, dtype=bool)
+    _n = angles.shape[0]
+    angles_f = angles.reshape(_n, 3)
+    angles_s = tuple(angles_f[:, _i] for _i in range(3))
+    omega_f = omega.reshape(_n, 3)
+    omega_s = tuple(omega_f[:, _i] for _i in range(3))
+    _cols = angles_s + omega_s
+    _outs = (out_eta_dot.reshape(_n, 3), )
+    _bad = numpy.zeros(_n, dtype=bool)
     with numpy.errstate(all="ignore"):
-        vals, dens = _main(*cols)
-        _store(outs, vals, None)
-        for d in dens:
-            bad |= numpy.equal(d, 0.0)
-        for o in outs:
-            bad |= ~numpy.isfinite(o).all(axis=1)
-    return bad
+        _vals, _dens = _main(*_cols)
+        _store(_outs, _vals, None)
+        for _d in _dens:
+            _bad |= numpy.equal(_d, 0.0)
+        for _o in _outs:
+            _bad |= ~numpy.isfinite(_o).all(axis=1)
+    return _bad
 
 
 _SIZES = (3, )

@@ -41,18 +41,18 @@ def _main(angles_0, angles_1, angles_2):
 
 def euler_rate_matrix_xyx_fixed(angles, out_W):
     """Evaluate on ``n`` samples; write the outputs; return the singular mask ``(n,)``."""
-    n = angles.shape[0]
-    angles_f = angles.reshape(n, 3)
-    angles_s = tuple(angles_f[:, i] for i in range(3))
-    cols = angles_s
-    outs = (out_W.reshape(n, 9), )
-    bad = numpy.zeros(n, dtype=bool)
+    _n = angles.shape[0]
+    angles_f = angles.reshape(_n, 3)
+    angles_s = tuple(angles_f[:, _i] for _i in range(3))
+    _cols = angles_s
+    _outs = (out_W.reshape(_n, 9), )
+    _bad = numpy.zeros(_n, dtype=bool)
     with numpy.errstate(all="ignore"):
-        vals, dens = _main(*cols)
-        _store(outs, vals, None)
-        for d in dens:
-            bad |= numpy.equal(d, 0.0)
-    return bad
+        _vals, _dens = _main(*_cols)
+        _store(_outs, _vals, None)
+        for _d in _dens:
+            _bad |= numpy.equal(_d, 0.0)
+    return _bad
 
 
 _SIZES = (9, )

@@ -80,23 +80,23 @@ def _main(I_C_00, I_C_01, I_C_02, I_C_10, I_C_11, I_C_12, I_C_20, I_C_21, I_C_22
 
 def inertia_dyad_at_point(I_C, m, c, a, out_M_A):
     """Evaluate on ``n`` samples; write the outputs; return the singular mask ``(n,)``."""
-    n = I_C.shape[0]
-    I_C_f = I_C.reshape(n, 9)
-    I_C_s = tuple(I_C_f[:, i] for i in range(9))
+    _n = I_C.shape[0]
+    I_C_f = I_C.reshape(_n, 9)
+    I_C_s = tuple(I_C_f[:, _i] for _i in range(9))
     m_s = (m,)
-    c_f = c.reshape(n, 3)
-    c_s = tuple(c_f[:, i] for i in range(3))
-    a_f = a.reshape(n, 3)
-    a_s = tuple(a_f[:, i] for i in range(3))
-    cols = I_C_s + m_s + c_s + a_s
-    outs = (out_M_A.reshape(n, 36), )
-    bad = numpy.zeros(n, dtype=bool)
+    c_f = c.reshape(_n, 3)
+    c_s = tuple(c_f[:, _i] for _i in range(3))
+    a_f = a.reshape(_n, 3)
+    a_s = tuple(a_f[:, _i] for _i in range(3))
+    _cols = I_C_s + m_s + c_s + a_s
+    _outs = (out_M_A.reshape(_n, 36), )
+    _bad = numpy.zeros(_n, dtype=bool)
     with numpy.errstate(all="ignore"):
-        vals, dens = _main(*cols)
-        _store(outs, vals, None)
-        for d in dens:
-            bad |= numpy.equal(d, 0.0)
-    return bad
+        _vals, _dens = _main(*_cols)
+        _store(_outs, _vals, None)
+        for _d in _dens:
+            _bad |= numpy.equal(_d, 0.0)
+    return _bad
 
 
 _SIZES = (36, )

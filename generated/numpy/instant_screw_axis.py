@@ -51,24 +51,24 @@ def _main(omega_0, omega_1, omega_2, a_0, a_1, a_2, a_dot_0, a_dot_1, a_dot_2):
 
 def instant_screw_axis(omega, a, a_dot, out_p0, out_pitch, out_plucker):
     """Evaluate on ``n`` samples; write the outputs; return the singular mask ``(n,)``."""
-    n = omega.shape[0]
-    omega_f = omega.reshape(n, 3)
-    omega_s = tuple(omega_f[:, i] for i in range(3))
-    a_f = a.reshape(n, 3)
-    a_s = tuple(a_f[:, i] for i in range(3))
-    a_dot_f = a_dot.reshape(n, 3)
-    a_dot_s = tuple(a_dot_f[:, i] for i in range(3))
-    cols = omega_s + a_s + a_dot_s
-    outs = (out_p0.reshape(n, 3), out_pitch.reshape(n, 1), out_plucker.reshape(n, 6), )
-    bad = numpy.zeros(n, dtype=bool)
+    _n = omega.shape[0]
+    omega_f = omega.reshape(_n, 3)
+    omega_s = tuple(omega_f[:, _i] for _i in range(3))
+    a_f = a.reshape(_n, 3)
+    a_s = tuple(a_f[:, _i] for _i in range(3))
+    a_dot_f = a_dot.reshape(_n, 3)
+    a_dot_s = tuple(a_dot_f[:, _i] for _i in range(3))
+    _cols = omega_s + a_s + a_dot_s
+    _outs = (out_p0.reshape(_n, 3), out_pitch.reshape(_n, 1), out_plucker.reshape(_n, 6), )
+    _bad = numpy.zeros(_n, dtype=bool)
     with numpy.errstate(all="ignore"):
-        vals, dens = _main(*cols)
-        _store(outs, vals, None)
-        for d in dens:
-            bad |= numpy.equal(d, 0.0)
-        for o in outs:
-            bad |= ~numpy.isfinite(o).all(axis=1)
-    return bad
+        _vals, _dens = _main(*_cols)
+        _store(_outs, _vals, None)
+        for _d in _dens:
+            _bad |= numpy.equal(_d, 0.0)
+        for _o in _outs:
+            _bad |= ~numpy.isfinite(_o).all(axis=1)
+    return _bad
 
 
 _SIZES = (3, 1, 6, )

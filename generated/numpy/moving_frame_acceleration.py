@@ -50,30 +50,30 @@ def _main(o_ddot_0, o_ddot_1, o_ddot_2, Q_00, Q_01, Q_02, Q_10, Q_11, Q_12, Q_20
 
 def moving_frame_acceleration(o_ddot, Q, omega, omega_dot, rho_M, rho_dot_M, rho_ddot_M, out_p_ddot):
     """Evaluate on ``n`` samples; write the outputs; return the singular mask ``(n,)``."""
-    n = o_ddot.shape[0]
-    o_ddot_f = o_ddot.reshape(n, 3)
-    o_ddot_s = tuple(o_ddot_f[:, i] for i in range(3))
-    Q_f = Q.reshape(n, 9)
-    Q_s = tuple(Q_f[:, i] for i in range(9))
-    omega_f = omega.reshape(n, 3)
-    omega_s = tuple(omega_f[:, i] for i in range(3))
-    omega_dot_f = omega_dot.reshape(n, 3)
-    omega_dot_s = tuple(omega_dot_f[:, i] for i in range(3))
-    rho_M_f = rho_M.reshape(n, 3)
-    rho_M_s = tuple(rho_M_f[:, i] for i in range(3))
-    rho_dot_M_f = rho_dot_M.reshape(n, 3)
-    rho_dot_M_s = tuple(rho_dot_M_f[:, i] for i in range(3))
-    rho_ddot_M_f = rho_ddot_M.reshape(n, 3)
-    rho_ddot_M_s = tuple(rho_ddot_M_f[:, i] for i in range(3))
-    cols = o_ddot_s + Q_s + omega_s + omega_dot_s + rho_M_s + rho_dot_M_s + rho_ddot_M_s
-    outs = (out_p_ddot.reshape(n, 3), )
-    bad = numpy.zeros(n, dtype=bool)
+    _n = o_ddot.shape[0]
+    o_ddot_f = o_ddot.reshape(_n, 3)
+    o_ddot_s = tuple(o_ddot_f[:, _i] for _i in range(3))
+    Q_f = Q.reshape(_n, 9)
+    Q_s = tuple(Q_f[:, _i] for _i in range(9))
+    omega_f = omega.reshape(_n, 3)
+    omega_s = tuple(omega_f[:, _i] for _i in range(3))
+    omega_dot_f = omega_dot.reshape(_n, 3)
+    omega_dot_s = tuple(omega_dot_f[:, _i] for _i in range(3))
+    rho_M_f = rho_M.reshape(_n, 3)
+    rho_M_s = tuple(rho_M_f[:, _i] for _i in range(3))
+    rho_dot_M_f = rho_dot_M.reshape(_n, 3)
+    rho_dot_M_s = tuple(rho_dot_M_f[:, _i] for _i in range(3))
+    rho_ddot_M_f = rho_ddot_M.reshape(_n, 3)
+    rho_ddot_M_s = tuple(rho_ddot_M_f[:, _i] for _i in range(3))
+    _cols = o_ddot_s + Q_s + omega_s + omega_dot_s + rho_M_s + rho_dot_M_s + rho_ddot_M_s
+    _outs = (out_p_ddot.reshape(_n, 3), )
+    _bad = numpy.zeros(_n, dtype=bool)
     with numpy.errstate(all="ignore"):
-        vals, dens = _main(*cols)
-        _store(outs, vals, None)
-        for d in dens:
-            bad |= numpy.equal(d, 0.0)
-    return bad
+        _vals, _dens = _main(*_cols)
+        _store(_outs, _vals, None)
+        for _d in _dens:
+            _bad |= numpy.equal(_d, 0.0)
+    return _bad
 
 
 _SIZES = (3, )

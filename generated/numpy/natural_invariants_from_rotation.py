@@ -111,51 +111,51 @@ def _main(Q_00, Q_01, Q_02, Q_10, Q_11, Q_12, Q_20, Q_21, Q_22):
 
 def natural_invariants_from_rotation(Q, out_e, out_phi):
     """Evaluate on ``n`` samples; write the outputs; return the singular mask ``(n,)``."""
-    n = Q.shape[0]
-    Q_f = Q.reshape(n, 9)
-    Q_s = tuple(Q_f[:, i] for i in range(9))
-    cols = Q_s
-    outs = (out_e.reshape(n, 3), out_phi.reshape(n, 1), )
-    bad = numpy.zeros(n, dtype=bool)
+    _n = Q.shape[0]
+    Q_f = Q.reshape(_n, 9)
+    Q_s = tuple(Q_f[:, _i] for _i in range(9))
+    _cols = Q_s
+    _outs = (out_e.reshape(_n, 3), out_phi.reshape(_n, 1), )
+    _bad = numpy.zeros(_n, dtype=bool)
     with numpy.errstate(all="ignore"):
-        vals, dens = _main(*cols)
-        _store(outs, vals, None)
-        for d in dens:
-            bad |= numpy.equal(d, 0.0)
-        rest = numpy.ones(n, dtype=bool)
-        Q_00, Q_01, Q_02, Q_10, Q_11, Q_12, Q_20, Q_21, Q_22, = cols
-        hit = numpy.logical_and(rest, numpy.logical_and.reduce((numpy.greater_equal(Q_00, Q_11),numpy.greater_equal(Q_00, Q_22),numpy.less(Q_00 + Q_11 + Q_22, 0))))
-        idx = numpy.flatnonzero(hit)
-        if idx.size:
-            rest &= ~hit
-            vals, dens = _near_pi_0(*(c[idx] for c in cols))
-            _store(outs, vals, idx)
-            bad[idx] = False
-            for d in dens:
-                bad[idx] |= numpy.equal(d, 0.0)
-        Q_00, Q_01, Q_02, Q_10, Q_11, Q_12, Q_20, Q_21, Q_22, = cols
-        hit = numpy.logical_and(rest, numpy.logical_and.reduce((numpy.greater_equal(Q_11, Q_00),numpy.greater_equal(Q_11, Q_22),numpy.less(Q_00 + Q_11 + Q_22, 0))))
-        idx = numpy.flatnonzero(hit)
-        if idx.size:
-            rest &= ~hit
-            vals, dens = _near_pi_1(*(c[idx] for c in cols))
-            _store(outs, vals, idx)
-            bad[idx] = False
-            for d in dens:
-                bad[idx] |= numpy.equal(d, 0.0)
-        Q_00, Q_01, Q_02, Q_10, Q_11, Q_12, Q_20, Q_21, Q_22, = cols
-        hit = numpy.logical_and(rest, numpy.logical_and.reduce((numpy.greater_equal(Q_22, Q_00),numpy.greater_equal(Q_22, Q_11),numpy.less(Q_00 + Q_11 + Q_22, 0))))
-        idx = numpy.flatnonzero(hit)
-        if idx.size:
-            rest &= ~hit
-            vals, dens = _near_pi_2(*(c[idx] for c in cols))
-            _store(outs, vals, idx)
-            bad[idx] = False
-            for d in dens:
-                bad[idx] |= numpy.equal(d, 0.0)
-        for o in outs:
-            bad |= ~numpy.isfinite(o).all(axis=1)
-    return bad
+        _vals, _dens = _main(*_cols)
+        _store(_outs, _vals, None)
+        for _d in _dens:
+            _bad |= numpy.equal(_d, 0.0)
+        _rest = numpy.ones(_n, dtype=bool)
+        Q_00, Q_01, Q_02, Q_10, Q_11, Q_12, Q_20, Q_21, Q_22, = _cols
+        _hit = numpy.logical_and(_rest, numpy.logical_and.reduce((numpy.greater_equal(Q_00, Q_11),numpy.greater_equal(Q_00, Q_22),numpy.less(Q_00 + Q_11 + Q_22, 0))))
+        _idx = numpy.flatnonzero(_hit)
+        if _idx.size:
+            _rest &= ~_hit
+            _vals, _dens = _near_pi_0(*(_c[_idx] for _c in _cols))
+            _store(_outs, _vals, _idx)
+            _bad[_idx] = False
+            for _d in _dens:
+                _bad[_idx] |= numpy.equal(_d, 0.0)
+        Q_00, Q_01, Q_02, Q_10, Q_11, Q_12, Q_20, Q_21, Q_22, = _cols
+        _hit = numpy.logical_and(_rest, numpy.logical_and.reduce((numpy.greater_equal(Q_11, Q_00),numpy.greater_equal(Q_11, Q_22),numpy.less(Q_00 + Q_11 + Q_22, 0))))
+        _idx = numpy.flatnonzero(_hit)
+        if _idx.size:
+            _rest &= ~_hit
+            _vals, _dens = _near_pi_1(*(_c[_idx] for _c in _cols))
+            _store(_outs, _vals, _idx)
+            _bad[_idx] = False
+            for _d in _dens:
+                _bad[_idx] |= numpy.equal(_d, 0.0)
+        Q_00, Q_01, Q_02, Q_10, Q_11, Q_12, Q_20, Q_21, Q_22, = _cols
+        _hit = numpy.logical_and(_rest, numpy.logical_and.reduce((numpy.greater_equal(Q_22, Q_00),numpy.greater_equal(Q_22, Q_11),numpy.less(Q_00 + Q_11 + Q_22, 0))))
+        _idx = numpy.flatnonzero(_hit)
+        if _idx.size:
+            _rest &= ~_hit
+            _vals, _dens = _near_pi_2(*(_c[_idx] for _c in _cols))
+            _store(_outs, _vals, _idx)
+            _bad[_idx] = False
+            for _d in _dens:
+                _bad[_idx] |= numpy.equal(_d, 0.0)
+        for _o in _outs:
+            _bad |= ~numpy.isfinite(_o).all(axis=1)
+    return _bad
 
 
 _SIZES = (3, 1, )

@@ -38,25 +38,25 @@ def _main(I_C_00, I_C_01, I_C_02, I_C_10, I_C_11, I_C_12, I_C_20, I_C_21, I_C_22
 
 def newton_euler_wrench(I_C, m, omega, omega_dot, c_ddot, out_w):
     """Evaluate on ``n`` samples; write the outputs; return the singular mask ``(n,)``."""
-    n = I_C.shape[0]
-    I_C_f = I_C.reshape(n, 9)
-    I_C_s = tuple(I_C_f[:, i] for i in range(9))
+    _n = I_C.shape[0]
+    I_C_f = I_C.reshape(_n, 9)
+    I_C_s = tuple(I_C_f[:, _i] for _i in range(9))
     m_s = (m,)
-    omega_f = omega.reshape(n, 3)
-    omega_s = tuple(omega_f[:, i] for i in range(3))
-    omega_dot_f = omega_dot.reshape(n, 3)
-    omega_dot_s = tuple(omega_dot_f[:, i] for i in range(3))
-    c_ddot_f = c_ddot.reshape(n, 3)
-    c_ddot_s = tuple(c_ddot_f[:, i] for i in range(3))
-    cols = I_C_s + m_s + omega_s + omega_dot_s + c_ddot_s
-    outs = (out_w.reshape(n, 6), )
-    bad = numpy.zeros(n, dtype=bool)
+    omega_f = omega.reshape(_n, 3)
+    omega_s = tuple(omega_f[:, _i] for _i in range(3))
+    omega_dot_f = omega_dot.reshape(_n, 3)
+    omega_dot_s = tuple(omega_dot_f[:, _i] for _i in range(3))
+    c_ddot_f = c_ddot.reshape(_n, 3)
+    c_ddot_s = tuple(c_ddot_f[:, _i] for _i in range(3))
+    _cols = I_C_s + m_s + omega_s + omega_dot_s + c_ddot_s
+    _outs = (out_w.reshape(_n, 6), )
+    _bad = numpy.zeros(_n, dtype=bool)
     with numpy.errstate(all="ignore"):
-        vals, dens = _main(*cols)
-        _store(outs, vals, None)
-        for d in dens:
-            bad |= numpy.equal(d, 0.0)
-    return bad
+        _vals, _dens = _main(*_cols)
+        _store(_outs, _vals, None)
+        for _d in _dens:
+            _bad |= numpy.equal(_d, 0.0)
+    return _bad
 
 
 _SIZES = (6, )

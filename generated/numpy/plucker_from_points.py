@@ -44,22 +44,22 @@ def _main(p1_0, p1_1, p1_2, p2_0, p2_1, p2_2):
 
 def plucker_from_points(p1, p2, out_kappa):
     """Evaluate on ``n`` samples; write the outputs; return the singular mask ``(n,)``."""
-    n = p1.shape[0]
-    p1_f = p1.reshape(n, 3)
-    p1_s = tuple(p1_f[:, i] for i in range(3))
-    p2_f = p2.reshape(n, 3)
-    p2_s = tuple(p2_f[:, i] for i in range(3))
-    cols = p1_s + p2_s
-    outs = (out_kappa.reshape(n, 6), )
-    bad = numpy.zeros(n, dtype=bool)
+    _n = p1.shape[0]
+    p1_f = p1.reshape(_n, 3)
+    p1_s = tuple(p1_f[:, _i] for _i in range(3))
+    p2_f = p2.reshape(_n, 3)
+    p2_s = tuple(p2_f[:, _i] for _i in range(3))
+    _cols = p1_s + p2_s
+    _outs = (out_kappa.reshape(_n, 6), )
+    _bad = numpy.zeros(_n, dtype=bool)
     with numpy.errstate(all="ignore"):
-        vals, dens = _main(*cols)
-        _store(outs, vals, None)
-        for d in dens:
-            bad |= numpy.equal(d, 0.0)
-        for o in outs:
-            bad |= ~numpy.isfinite(o).all(axis=1)
-    return bad
+        _vals, _dens = _main(*_cols)
+        _store(_outs, _vals, None)
+        for _d in _dens:
+            _bad |= numpy.equal(_d, 0.0)
+        for _o in _outs:
+            _bad |= ~numpy.isfinite(_o).all(axis=1)
+    return _bad
 
 
 _SIZES = (6, )

@@ -38,22 +38,22 @@ def _main(kappa_A_0, kappa_A_1, kappa_A_2, kappa_A_3, kappa_A_4, kappa_A_5, a_0,
 
 def plucker_transfer(kappa_A, a, b, out_kappa_B):
     """Evaluate on ``n`` samples; write the outputs; return the singular mask ``(n,)``."""
-    n = kappa_A.shape[0]
-    kappa_A_f = kappa_A.reshape(n, 6)
-    kappa_A_s = tuple(kappa_A_f[:, i] for i in range(6))
-    a_f = a.reshape(n, 3)
-    a_s = tuple(a_f[:, i] for i in range(3))
-    b_f = b.reshape(n, 3)
-    b_s = tuple(b_f[:, i] for i in range(3))
-    cols = kappa_A_s + a_s + b_s
-    outs = (out_kappa_B.reshape(n, 6), )
-    bad = numpy.zeros(n, dtype=bool)
+    _n = kappa_A.shape[0]
+    kappa_A_f = kappa_A.reshape(_n, 6)
+    kappa_A_s = tuple(kappa_A_f[:, _i] for _i in range(6))
+    a_f = a.reshape(_n, 3)
+    a_s = tuple(a_f[:, _i] for _i in range(3))
+    b_f = b.reshape(_n, 3)
+    b_s = tuple(b_f[:, _i] for _i in range(3))
+    _cols = kappa_A_s + a_s + b_s
+    _outs = (out_kappa_B.reshape(_n, 6), )
+    _bad = numpy.zeros(_n, dtype=bool)
     with numpy.errstate(all="ignore"):
-        vals, dens = _main(*cols)
-        _store(outs, vals, None)
-        for d in dens:
-            bad |= numpy.equal(d, 0.0)
-    return bad
+        _vals, _dens = _main(*_cols)
+        _store(_outs, _vals, None)
+        for _d in _dens:
+            _bad |= numpy.equal(_d, 0.0)
+    return _bad
 
 
 _SIZES = (6, )

@@ -38,26 +38,26 @@ def _main(a_ddot_0, a_ddot_1, a_ddot_2, omega_0, omega_1, omega_2, omega_dot_0, 
 
 def point_acceleration(a_ddot, omega, omega_dot, p, a, out_p_ddot):
     """Evaluate on ``n`` samples; write the outputs; return the singular mask ``(n,)``."""
-    n = a_ddot.shape[0]
-    a_ddot_f = a_ddot.reshape(n, 3)
-    a_ddot_s = tuple(a_ddot_f[:, i] for i in range(3))
-    omega_f = omega.reshape(n, 3)
-    omega_s = tuple(omega_f[:, i] for i in range(3))
-    omega_dot_f = omega_dot.reshape(n, 3)
-    omega_dot_s = tuple(omega_dot_f[:, i] for i in range(3))
-    p_f = p.reshape(n, 3)
-    p_s = tuple(p_f[:, i] for i in range(3))
-    a_f = a.reshape(n, 3)
-    a_s = tuple(a_f[:, i] for i in range(3))
-    cols = a_ddot_s + omega_s + omega_dot_s + p_s + a_s
-    outs = (out_p_ddot.reshape(n, 3), )
-    bad = numpy.zeros(n, dtype=bool)
+    _n = a_ddot.shape[0]
+    a_ddot_f = a_ddot.reshape(_n, 3)
+    a_ddot_s = tuple(a_ddot_f[:, _i] for _i in range(3))
+    omega_f = omega.reshape(_n, 3)
+    omega_s = tuple(omega_f[:, _i] for _i in range(3))
+    omega_dot_f = omega_dot.reshape(_n, 3)
+    omega_dot_s = tuple(omega_dot_f[:, _i] for _i in range(3))
+    p_f = p.reshape(_n, 3)
+    p_s = tuple(p_f[:, _i] for _i in range(3))
+    a_f = a.reshape(_n, 3)
+    a_s = tuple(a_f[:, _i] for _i in range(3))
+    _cols = a_ddot_s + omega_s + omega_dot_s + p_s + a_s
+    _outs = (out_p_ddot.reshape(_n, 3), )
+    _bad = numpy.zeros(_n, dtype=bool)
     with numpy.errstate(all="ignore"):
-        vals, dens = _main(*cols)
-        _store(outs, vals, None)
-        for d in dens:
-            bad |= numpy.equal(d, 0.0)
-    return bad
+        _vals, _dens = _main(*_cols)
+        _store(_outs, _vals, None)
+        for _d in _dens:
+            _bad |= numpy.equal(_d, 0.0)
+    return _bad
 
 
 _SIZES = (3, )

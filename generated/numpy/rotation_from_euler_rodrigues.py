@@ -52,18 +52,18 @@ def _main(eta_0, eta_1, eta_2, eta_3):
 
 def rotation_from_euler_rodrigues(eta, out_Q):
     """Evaluate on ``n`` samples; write the outputs; return the singular mask ``(n,)``."""
-    n = eta.shape[0]
-    eta_f = eta.reshape(n, 4)
-    eta_s = tuple(eta_f[:, i] for i in range(4))
-    cols = eta_s
-    outs = (out_Q.reshape(n, 9), )
-    bad = numpy.zeros(n, dtype=bool)
+    _n = eta.shape[0]
+    eta_f = eta.reshape(_n, 4)
+    eta_s = tuple(eta_f[:, _i] for _i in range(4))
+    _cols = eta_s
+    _outs = (out_Q.reshape(_n, 9), )
+    _bad = numpy.zeros(_n, dtype=bool)
     with numpy.errstate(all="ignore"):
-        vals, dens = _main(*cols)
-        _store(outs, vals, None)
-        for d in dens:
-            bad |= numpy.equal(d, 0.0)
-    return bad
+        _vals, _dens = _main(*_cols)
+        _store(_outs, _vals, None)
+        for _d in _dens:
+            _bad |= numpy.equal(_d, 0.0)
+    return _bad
 
 
 _SIZES = (9, )

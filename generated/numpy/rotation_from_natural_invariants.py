@@ -53,19 +53,19 @@ def _main(e_0, e_1, e_2, phi):
 
 def rotation_from_natural_invariants(e, phi, out_Q):
     """Evaluate on ``n`` samples; write the outputs; return the singular mask ``(n,)``."""
-    n = e.shape[0]
-    e_f = e.reshape(n, 3)
-    e_s = tuple(e_f[:, i] for i in range(3))
+    _n = e.shape[0]
+    e_f = e.reshape(_n, 3)
+    e_s = tuple(e_f[:, _i] for _i in range(3))
     phi_s = (phi,)
-    cols = e_s + phi_s
-    outs = (out_Q.reshape(n, 9), )
-    bad = numpy.zeros(n, dtype=bool)
+    _cols = e_s + phi_s
+    _outs = (out_Q.reshape(_n, 9), )
+    _bad = numpy.zeros(_n, dtype=bool)
     with numpy.errstate(all="ignore"):
-        vals, dens = _main(*cols)
-        _store(outs, vals, None)
-        for d in dens:
-            bad |= numpy.equal(d, 0.0)
-    return bad
+        _vals, _dens = _main(*_cols)
+        _store(_outs, _vals, None)
+        for _d in _dens:
+            _bad |= numpy.equal(_d, 0.0)
+    return _bad
 
 
 _SIZES = (9, )

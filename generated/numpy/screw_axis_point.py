@@ -58,25 +58,25 @@ def _main(e_0, e_1, e_2, phi, a_0, a_1, a_2, a_prime_0, a_prime_1, a_prime_2):
 
 def screw_axis_point(e, phi, a, a_prime, out_p0):
     """Evaluate on ``n`` samples; write the outputs; return the singular mask ``(n,)``."""
-    n = e.shape[0]
-    e_f = e.reshape(n, 3)
-    e_s = tuple(e_f[:, i] for i in range(3))
+    _n = e.shape[0]
+    e_f = e.reshape(_n, 3)
+    e_s = tuple(e_f[:, _i] for _i in range(3))
     phi_s = (phi,)
-    a_f = a.reshape(n, 3)
-    a_s = tuple(a_f[:, i] for i in range(3))
-    a_prime_f = a_prime.reshape(n, 3)
-    a_prime_s = tuple(a_prime_f[:, i] for i in range(3))
-    cols = e_s + phi_s + a_s + a_prime_s
-    outs = (out_p0.reshape(n, 3), )
-    bad = numpy.zeros(n, dtype=bool)
+    a_f = a.reshape(_n, 3)
+    a_s = tuple(a_f[:, _i] for _i in range(3))
+    a_prime_f = a_prime.reshape(_n, 3)
+    a_prime_s = tuple(a_prime_f[:, _i] for _i in range(3))
+    _cols = e_s + phi_s + a_s + a_prime_s
+    _outs = (out_p0.reshape(_n, 3), )
+    _bad = numpy.zeros(_n, dtype=bool)
     with numpy.errstate(all="ignore"):
-        vals, dens = _main(*cols)
-        _store(outs, vals, None)
-        for d in dens:
-            bad |= numpy.equal(d, 0.0)
-        for o in outs:
-            bad |= ~numpy.isfinite(o).all(axis=1)
-    return bad
+        _vals, _dens = _main(*_cols)
+        _store(_outs, _vals, None)
+        for _d in _dens:
+            _bad |= numpy.equal(_d, 0.0)
+        for _o in _outs:
+            _bad |= ~numpy.isfinite(_o).all(axis=1)
+    return _bad
 
 
 _SIZES = (3, )

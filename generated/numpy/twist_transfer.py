@@ -38,22 +38,22 @@ def _main(t_A_0, t_A_1, t_A_2, t_A_3, t_A_4, t_A_5, a_0, a_1, a_2, p_0, p_1, p_2
 
 def twist_transfer(t_A, a, p, out_t_P):
     """Evaluate on ``n`` samples; write the outputs; return the singular mask ``(n,)``."""
-    n = t_A.shape[0]
-    t_A_f = t_A.reshape(n, 6)
-    t_A_s = tuple(t_A_f[:, i] for i in range(6))
-    a_f = a.reshape(n, 3)
-    a_s = tuple(a_f[:, i] for i in range(3))
-    p_f = p.reshape(n, 3)
-    p_s = tuple(p_f[:, i] for i in range(3))
-    cols = t_A_s + a_s + p_s
-    outs = (out_t_P.reshape(n, 6), )
-    bad = numpy.zeros(n, dtype=bool)
+    _n = t_A.shape[0]
+    t_A_f = t_A.reshape(_n, 6)
+    t_A_s = tuple(t_A_f[:, _i] for _i in range(6))
+    a_f = a.reshape(_n, 3)
+    a_s = tuple(a_f[:, _i] for _i in range(3))
+    p_f = p.reshape(_n, 3)
+    p_s = tuple(p_f[:, _i] for _i in range(3))
+    _cols = t_A_s + a_s + p_s
+    _outs = (out_t_P.reshape(_n, 6), )
+    _bad = numpy.zeros(_n, dtype=bool)
     with numpy.errstate(all="ignore"):
-        vals, dens = _main(*cols)
-        _store(outs, vals, None)
-        for d in dens:
-            bad |= numpy.equal(d, 0.0)
-    return bad
+        _vals, _dens = _main(*_cols)
+        _store(_outs, _vals, None)
+        for _d in _dens:
+            _bad |= numpy.equal(_d, 0.0)
+    return _bad
 
 
 _SIZES = (6, )

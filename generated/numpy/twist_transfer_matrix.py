@@ -68,20 +68,20 @@ def _main(a_0, a_1, a_2, p_0, p_1, p_2):
 
 def twist_transfer_matrix(a, p, out_U):
     """Evaluate on ``n`` samples; write the outputs; return the singular mask ``(n,)``."""
-    n = a.shape[0]
-    a_f = a.reshape(n, 3)
-    a_s = tuple(a_f[:, i] for i in range(3))
-    p_f = p.reshape(n, 3)
-    p_s = tuple(p_f[:, i] for i in range(3))
-    cols = a_s + p_s
-    outs = (out_U.reshape(n, 36), )
-    bad = numpy.zeros(n, dtype=bool)
+    _n = a.shape[0]
+    a_f = a.reshape(_n, 3)
+    a_s = tuple(a_f[:, _i] for _i in range(3))
+    p_f = p.reshape(_n, 3)
+    p_s = tuple(p_f[:, _i] for _i in range(3))
+    _cols = a_s + p_s
+    _outs = (out_U.reshape(_n, 36), )
+    _bad = numpy.zeros(_n, dtype=bool)
     with numpy.errstate(all="ignore"):
-        vals, dens = _main(*cols)
-        _store(outs, vals, None)
-        for d in dens:
-            bad |= numpy.equal(d, 0.0)
-    return bad
+        _vals, _dens = _main(*_cols)
+        _store(_outs, _vals, None)
+        for _d in _dens:
+            _bad |= numpy.equal(_d, 0.0)
+    return _bad
 
 
 _SIZES = (36, )

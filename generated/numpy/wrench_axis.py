@@ -51,22 +51,22 @@ def _main(w_A_0, w_A_1, w_A_2, w_A_3, w_A_4, w_A_5, a_0, a_1, a_2):
 
 def wrench_axis(w_A, a, out_p0, out_pitch, out_plucker):
     """Evaluate on ``n`` samples; write the outputs; return the singular mask ``(n,)``."""
-    n = w_A.shape[0]
-    w_A_f = w_A.reshape(n, 6)
-    w_A_s = tuple(w_A_f[:, i] for i in range(6))
-    a_f = a.reshape(n, 3)
-    a_s = tuple(a_f[:, i] for i in range(3))
-    cols = w_A_s + a_s
-    outs = (out_p0.reshape(n, 3), out_pitch.reshape(n, 1), out_plucker.reshape(n, 6), )
-    bad = numpy.zeros(n, dtype=bool)
+    _n = w_A.shape[0]
+    w_A_f = w_A.reshape(_n, 6)
+    w_A_s = tuple(w_A_f[:, _i] for _i in range(6))
+    a_f = a.reshape(_n, 3)
+    a_s = tuple(a_f[:, _i] for _i in range(3))
+    _cols = w_A_s + a_s
+    _outs = (out_p0.reshape(_n, 3), out_pitch.reshape(_n, 1), out_plucker.reshape(_n, 6), )
+    _bad = numpy.zeros(_n, dtype=bool)
     with numpy.errstate(all="ignore"):
-        vals, dens = _main(*cols)
-        _store(outs, vals, None)
-        for d in dens:
-            bad |= numpy.equal(d, 0.0)
-        for o in outs:
-            bad |= ~numpy.isfinite(o).all(axis=1)
-    return bad
+        _vals, _dens = _main(*_cols)
+        _store(_outs, _vals, None)
+        for _d in _dens:
+            _bad |= numpy.equal(_d, 0.0)
+        for _o in _outs:
+            _bad |= ~numpy.isfinite(_o).all(axis=1)
+    return _bad
 
 
 _SIZES = (3, 1, 6, )
