@@ -1,0 +1,507 @@
+"""Sec. 3.4.2: The twist of a rigid body, Eqs. (3.71)-(3.83), and the Caveat after (3.77d).
+
+Book: J. Angeles, *Fundamentals of Robotic Mechanical Systems*, 4th ed., Sec. 3.4.2.
+
+The rate matrices ``N``, ``L``, ``H`` (3.76) and their left inverses ``Ntilde``,
+``Ltilde``, ``Htilde`` (3.77) are exposed as formula functions. Each accepts either explicit
+sympy inputs (``e`` a 3 x 1 ``Matrix``, ``phi`` a scalar), returning an explicit ``Matrix``,
+or the book symbols (``e`` a ``MatrixSymbol``), returning the book's block expression in
+``e``, ``E = CPM(e)`` and ``1``: the declarations transcribe the printed forms by calling
+them on book symbols, so the mathematics exists once.
+
+First principles used here: the motion of :func:`derivations.common.motion_model`
+(``e(t)`` unit, ``phi(t)``, ``Q(t)`` from (2.49), ``Omega = Qdot Q^T``, ``omega = vect(Omega)``
+computed). Independently of the printed N, L, H, their *pose Jacobians* are derived from the
+extraction of the invariants from ``Q``: ``u = vect(Q)``, ``u0 = (tr Q - 1)/2`` differentiated
+along ``Qdot = Omega Q`` (one column per basis vector of ``omega``), then the inverse-function
+derivatives ``lambda -> nu -> eta`` (:func:`pose_jacobians`).
+"""
+
+from __future__ import annotations
+
+from functools import cache
+
+import sympy as sp
+
+from rigidsym.primitives import block, cpm, eye3, trace, vect
+from rigidsym.registry import Rel, Statement, equation
+
+from .common import I3, MS, O3, Mt, motion_model
+
+__all__ = ["N_matrix", "L_matrix", "H_matrix", "N_tilde", "L_tilde", "H_tilde",
+           "twist_transfer_matrix", "twist_transfer", "pose_jacobians"]
+
+
+# --------------------------------------------------------------------------- helpers
+def _symbolic(v) -> bool:
+    return isinstance(v, sp.MatrixSymbol)
+
+
+def _ops(v):
+    """``(CPM(v), 1)``: the book symbols ``E``/``A``/``P``, ``1`` for a book symbol ``v``;
+    explicit matrices otherwise (the book names the CPM of a vector by its capital)."""
+    if _symbolic(v):
+        return sp.MatrixSymbol(v.name.upper(), 3, 3), I3
+    return cpm(v), eye3()
+
+
+def _stack(rows, symbolic: bool):
+    return sp.BlockMatrix(rows) if symbolic else block(rows)
+
+
+def _vec(v):
+    return v if _symbolic(v) else sp.Matrix(v).reshape(3, 1)
+
+
+# --------------------------------------------------------------------------- formulas
+def N_matrix(e, phi):
+    """Rate matrix of the natural invariants: ``nu_dot = N omega``, ``nu = [e; phi]``.
+
+    ``N = [ sin(phi)/(2 (1 - cos phi)) (1 - e e^T) - E/2 ;  e^T ]``, ``E = CPM(e)``.
+
+    Book: Sec. 3.4.2, Eq. (3.76b).
+
+    Args:
+        e: unit axis, 3 x 1 (explicit ``Matrix``, or the book's ``MatrixSymbol`` e).
+        phi: rotation angle (rad).
+
+    Returns:
+        4 x 3 matrix (1/s per rad/s; the angle row is dimensionless).
+
+    Notes:
+        Singular at ``phi = 0`` (mod 2 pi): there the axis of the rotation is undefined.
+    """
+    e = _vec(e)
+    E, one = _ops(e)
+    top = sp.sin(phi) / (2 * (1 - sp.cos(phi))) * (one - e * e.T) - E / 2
+    return _stack([[top], [e.T]], _symbolic(e))
+
+
+def L_matrix(e, phi):
+    """Rate matrix of the linear invariants: ``lambda_dot = L omega``, ``lambda = [u; u0]``.
+
+    ``L = [ (1/2) (tr(Q) 1 - Q) ;  -sin(phi) e^T ]`` with ``Q`` from (2.49).
+
+    Book: Sec. 3.4.2, Eq. (3.76c). Returns 4 x 3. No singularity.
+    """
+    e = _vec(e)
+    E, one = _ops(e)
+    if _symbolic(e):
+        Q = Mt.Q
+        top = sp.Rational(1, 2) * (sp.Trace(Q) * one - Q)
+    else:
+        Q = e * e.T + sp.cos(phi) * (one - e * e.T) + sp.sin(phi) * E
+        top = sp.Rational(1, 2) * (trace(Q) * one - Q)
+    return _stack([[top], [-sp.sin(phi) * e.T]], _symbolic(e))
+
+
+def H_matrix(e, phi):
+    """Rate matrix of the Euler-Rodrigues parameters: ``eta_dot = H omega``.
+
+    ``H = (1/2) [ cos(phi/2) 1 - sin(phi/2) E ;  -sin(phi/2) e^T ]``.
+
+    Book: Sec. 3.4.2, Eq. (3.76d). Returns 4 x 3. No singularity.
+    """
+    e = _vec(e)
+    E, one = _ops(e)
+    c, s = sp.cos(phi / 2), sp.sin(phi / 2)
+    m = _stack([[c * one - s * E], [-s * e.T]], _symbolic(e))
+    return sp.Rational(1, 2) * m
+
+
+def N_tilde(e, phi):
+    """Left inverse of N: ``omega = Ntilde nu_dot``, ``Ntilde N = 1``.
+
+    ``Ntilde = [ sin(phi) 1 + (1 - cos phi) E  |  e ]`` (3 x 3 block, then a column).
+
+    Book: Sec. 3.4.2, Eq. (3.77b). Returns 3 x 4. Defined everywhere; it inverts N (which
+    is singular at ``phi = 0``) off ``phi = 0``.
+    """
+    e = _vec(e)
+    E, one = _ops(e)
+    return _stack([[sp.sin(phi) * one + (1 - sp.cos(phi)) * E, e]], _symbolic(e))
+
+
+def L_tilde(e, phi):
+    """Left inverse of L: ``omega = Ltilde lambda_dot``, ``Ltilde L = 1``.
+
+    ``Ltilde = [ 1 + tan(phi/2) E  |  -tan(phi/2) e ]``, ``tan(phi/2) = sin phi/(1 + cos phi)``.
+
+    Book: Sec. 3.4.2, Eq. (3.77c). Returns 3 x 4. Singular at ``phi = pi``.
+    """
+    e = _vec(e)
+    E, one = _ops(e)
+    k = sp.sin(phi) / (1 + sp.cos(phi))
+    return _stack([[one + k * E, -k * e]], _symbolic(e))
+
+
+def H_tilde(e, phi):
+    """Left inverse of H: ``omega = Htilde eta_dot``, ``Htilde H = 1``.
+
+    ``Htilde = 2 [ cos(phi/2) 1 + sin(phi/2) E  |  -sin(phi/2) e ]``.
+
+    Book: Sec. 3.4.2, Eq. (3.77d). Returns 3 x 4. No singularity.
+    """
+    e = _vec(e)
+    E, one = _ops(e)
+    c, s = sp.cos(phi / 2), sp.sin(phi / 2)
+    return 2 * _stack([[c * one + s * E, -s * e]], _symbolic(e))
+
+
+def twist_transfer_matrix(a, p):
+    """Twist-transfer matrix: ``t_P = U t_A`` for twists ``[omega; v]`` (ray coordinates).
+
+    ``U = [[1, O], [A - P, 1]]``, ``A = CPM(a)``, ``P = CPM(p)``.
+
+    Book: Sec. 3.4.2, Eq. (3.83b) (same matrix as (3.29b)).
+
+    Args:
+        a, p: positions of points A and P, 3 x 1 (m).
+
+    Returns:
+        6 x 6 matrix. No singularity.
+    """
+    a, p = _vec(a), _vec(p)
+    A, one = _ops(a)
+    P, _ = _ops(p)
+    Z = O3 if _symbolic(a) else sp.zeros(3)
+    return _stack([[one, Z], [A - P, one]], _symbolic(a))
+
+
+def twist_transfer(t_A, a, p):
+    """Twist at P from the twist at A of the same body: ``t_P = U(a, p) t_A``.
+
+    Book: Sec. 3.4.2, Eq. (3.83a).
+
+    Args:
+        t_A: twist ``[omega; v_A]`` at A, 6 x 1 (rad/s; m/s).
+        a, p: positions of A and P, 3 x 1 (m).
+
+    Returns:
+        ``t_P = [omega; v_A + (a - p) x omega]``, 6 x 1.
+    """
+    return twist_transfer_matrix(a, p) * t_A
+
+
+def T_matrix(F):
+    """Pose-rate matrix: ``s_dot = T t`` for the pose ``s = [q; q0; d_A]`` and ``t = [omega; v_A]``.
+
+    ``T = [[F, O_43], [O, 1]]`` with ``F`` one of N, L, H (4 x 3).
+
+    Book: Sec. 3.4.2, Eq. (3.79). Returns 7 x 6; singular where F is (N: ``phi = 0``).
+    """
+    if _symbolic(F):
+        return sp.BlockMatrix([[F, sp.ZeroMatrix(4, 3)], [O3, I3]])
+    return block([[F, sp.zeros(4, 3)], [sp.zeros(3), eye3()]])
+
+
+def S_matrix(F_tilde):
+    """Twist from pose rate: ``t = S s_dot``; ``S = [[Ftilde, O], [O_34, 1]]``.
+
+    Book: Sec. 3.4.2, Eq. (3.80b). ``F_tilde`` one of Ntilde, Ltilde, Htilde (3 x 4).
+    Returns 6 x 7; singular where Ftilde is (Ltilde: ``phi = pi``).
+    """
+    if _symbolic(F_tilde):
+        return sp.BlockMatrix([[F_tilde, O3], [sp.ZeroMatrix(3, 4), I3]])
+    return block([[F_tilde, sp.zeros(3)], [sp.zeros(3, 4), eye3()]])
+
+
+def pose_jacobians(e, phi) -> tuple[sp.Matrix, sp.Matrix, sp.Matrix]:
+    """First-principles rate matrices ``(N, L, H)`` of the invariants, from the pose alone.
+
+    ``lambda = [vect(Q); (tr Q - 1)/2]`` is differentiated along ``Qdot = Omega Q`` for
+    ``Omega = CPM(omega)``, one column per basis vector of ``omega`` (this gives L); then the
+    inverse-function derivatives of ``phi = atan2(||u||, u0)``, ``e = u/||u||`` (N) and of
+    ``r = sin(phi/2) e``, ``r0 = cos(phi/2)`` (H). The printed (3.76b-d) are not used.
+
+    Args:
+        e: explicit unit axis, 3 x 1; phi: angle (rad), ``0 < phi < pi`` for the branch
+            ``||u|| = sin(phi)``.
+
+    Returns:
+        three explicit 4 x 3 matrices.
+    """
+    e = sp.Matrix(e).reshape(3, 1)
+    one = eye3()
+    Q = e * e.T + sp.cos(phi) * (one - e * e.T) + sp.sin(phi) * cpm(e)
+    cols = []
+    for k in range(3):
+        Qd = cpm(one[:, k]) * Q
+        cols.append(block([[vect(Qd)], [trace(Qd) / 2]]))
+    L_fp = sp.Matrix.hstack(*cols)
+    s, c = sp.sin(phi), sp.cos(phi)
+    dnu_dlam = block([[(one - e * e.T) / s, sp.zeros(3, 1)], [c * e.T, sp.Matrix([[-s]])]])
+    N_fp = dnu_dlam * L_fp
+    s2, c2 = sp.sin(phi / 2), sp.cos(phi / 2)
+    deta_dnu = block([[s2 * one, c2 / 2 * e], [sp.zeros(1, 3), sp.Matrix([[-s2 / 2]])]])
+    return N_fp, L_fp, deta_dnu * N_fp
+
+
+# --------------------------------------------------------------------------- book symbols
+e, E, phi, Q, omega = Mt.e, Mt.E, Mt.phi, Mt.Q, Mt.omega
+a, p = Mt.a, Mt.p
+nu, lam, eta = MS("nu", 4), MS("lambda", 4), MS("eta", 4)
+nu_dot, lam_dot, eta_dot = MS("nudot", 4), MS("lambdadot", 4), MS("etadot", 4)
+N, L, H = MS("N", 4, 3), MS("L", 4, 3), MS("H", 4, 3)
+Nt, Lt, Ht = MS("Ntilde", 3, 4), MS("Ltilde", 3, 4), MS("Htilde", 3, 4)
+t, v, v_A, v_P = MS("t", 6), MS("v"), MS("v_A"), MS("v_P")
+t_A, t_P, U = MS("t_A", 6), MS("t_P", 6), MS("U", 6, 6)
+A_cpm, P_cpm = MS("A", 3, 3), MS("P", 3, 3)  # book: A = CPM(a), P = CPM(p)
+#: the three choices of invariants F = N, L, H: (name, F, Ftilde, invariant rate symbol)
+CHOICES = (("N", N, Nt, nu_dot), ("L", L, Lt, lam_dot), ("H", H, Ht, eta_dot))
+T_of = {n: MS(f"T_{n}", 7, 6) for n, *_ in CHOICES}
+S_of = {n: MS(f"S_{n}", 6, 7) for n, *_ in CHOICES}
+sdot_of = {n: MS(f"sdot_{n}", 7) for n, *_ in CHOICES}
+
+_im = sp.ImmutableMatrix
+
+
+@cache
+def rates_model() -> dict:
+    """Motion model plus the invariants, their rates, the pose Jacobians and the formulas.
+
+    ``nu``, ``lambda``, ``eta`` and their rates from ``e(t)``, ``phi(t)`` (differentiated);
+    ``N``, ``L``, ``H`` -> :func:`pose_jacobians` (first principles); ``Ntilde``... -> the
+    formula functions (checked in (3.77b-d)); pose ``s_F = [q_F; d_A]`` with
+    ``d_A = a(t) - a(0)``, so ``s_F dot = [q_F dot; a_dot]``; twist at A ``t = [omega; a_dot]``.
+    """
+    m = dict(motion_model(invariants=True))
+    ev, ph = sp.Matrix(m[Mt.e]), m[Mt.phi]
+    tt = ph.free_symbols.pop() if ph.free_symbols else None
+    q = {"N": block([[ev], [ph]]),
+         "L": block([[sp.sin(ph) * ev], [sp.cos(ph)]]),
+         "H": block([[sp.sin(ph / 2) * ev], [sp.cos(ph / 2)]])}
+    qd = {k: x.diff(tt) for k, x in q.items()}
+    Nf, Lf, Hf = pose_jacobians(ev, ph)
+    Ft = {"N": N_tilde(ev, ph), "L": L_tilde(ev, ph), "H": H_tilde(ev, ph)}
+    Ff = {"N": Nf, "L": Lf, "H": Hf}
+    adot = sp.Matrix(m[Mt.a_dot])
+    tw = block([[sp.Matrix(m[Mt.omega])], [adot]])
+    m.update({nu: _im(q["N"]), lam: _im(q["L"]), eta: _im(q["H"]), nu_dot: _im(qd["N"]),
+              lam_dot: _im(qd["L"]), eta_dot: _im(qd["H"]), N: _im(Nf), L: _im(Lf),
+              H: _im(Hf), Nt: _im(Ft["N"]), Lt: _im(Ft["L"]), Ht: _im(Ft["H"]), t: _im(tw),
+              t_A: _im(tw), v: _im(adot), v_A: _im(adot),
+              v_P: m[Mt.p_dot], t_P: _im(block([[sp.Matrix(m[Mt.omega])], [m[Mt.p_dot]]])),
+              A_cpm: _im(cpm(m[Mt.a])), P_cpm: _im(cpm(m[Mt.p])),
+              U: _im(twist_transfer_matrix(m[Mt.a], m[Mt.p]))})
+    for n, *_ in CHOICES:
+        m[T_of[n]] = _im(T_matrix(Ff[n]))
+        m[S_of[n]] = _im(S_matrix(Ft[n]))
+        m[sdot_of[n]] = _im(block([[qd[n]], [adot]]))
+    return m
+
+
+# --------------------------------------------------------------------------- screws and twists
+screw, s_inf, pitch = MS("s", 6), MS("s_inf", 6), sp.Symbol("pitch", real=True)
+norm_v = sp.Symbol("norm_v", real=True)  # the book's ||v||
+ZERO3 = sp.ZeroMatrix(3, 1)
+
+
+@cache
+def _static_model() -> dict:
+    """A fixed line: unit ``e``, a point ``p`` on it, a pitch (free); ``P = CPM(p)``."""
+    from rigidsym.symbols import unit_vector, vector
+    ev, pv = unit_vector("e"), vector("p")
+    return {e: _im(ev), p: _im(pv), P_cpm: _im(cpm(pv)), E: _im(cpm(ev)),
+            screw: _im(block([[ev], [pv.cross(ev) + pitch * ev]]))}
+
+
+@cache
+def _translation_model() -> dict:
+    """A pure translation: ``Q`` constant, so ``Omega = Qdot Q^T = O`` and ``omega = 0``;
+    ``v = sigma e`` with ``e`` unit and ``sigma = ||v|| >= 0`` (so ``norm_v -> sigma``)."""
+    from rigidsym.symbols import scalar, unit_vector
+    ev, sigma = unit_vector("e"), scalar("sec342_sigma")
+    om = vect(sp.zeros(3) * eye3())
+    vv = sigma * ev
+    return {e: _im(ev), v: _im(vv), norm_v: sigma, t: _im(block([[om], [vv]])),
+            s_inf: _im(block([[sp.zeros(3, 1)], [ev]]))}
+
+
+@equation("3.71", "Screw array of a line with a pitch", section="3.4.2", kind="definition",
+          latex=r"\mathbf{s} \equiv \begin{bmatrix} \mathbf{e} \\ \mathbf{p} \times "
+                r"\mathbf{e} + p\mathbf{e} \end{bmatrix}")
+def screw_array() -> Statement:
+    """``s = [e; p x e + pitch e]`` (6): Plücker array of the line plus the pitch.
+
+    Book: Sec. 3.4.2, Eq. (3.71). ``p x e`` is transcribed ``P e`` with ``P = CPM(p)``;
+    the book's scalar pitch ``p`` is ``pitch`` (m/rad).
+    """
+    return Statement([Rel(screw, sp.BlockMatrix([[e], [P_cpm * e + pitch * e]]))],
+                     _static_model(), defines=("s",))
+
+
+@equation("3.72", "Twist in ray coordinates", section="3.4.2", kind="definition",
+          latex=r"\mathbf{t} \equiv \begin{bmatrix} \boldsymbol{\omega} \\ \mathbf{v} "
+                r"\end{bmatrix}")
+def twist_array() -> Statement:
+    """``t = [omega; v]`` (6; rad/s, m/s), ``v`` the velocity of the reference point.
+
+    Book: Sec. 3.4.2, Eq. (3.72).
+    """
+    return Statement([Rel(t, sp.BlockMatrix([[omega], [v]]))], rates_model(), defines=("t",))
+
+
+@equation("3.73", "Twist of a pure translation", section="3.4.2",
+          latex=r"\mathbf{t} \equiv \begin{bmatrix} \mathbf{0} \\ \mathbf{v} \end{bmatrix} = "
+                r"\|\mathbf{v}\| \begin{bmatrix} \mathbf{0} \\ \mathbf{e} \end{bmatrix}")
+def pure_translation_twist() -> Statement:
+    """``t = [0; v] = ||v|| [0; e]`` for a pure translation along the unit vector ``e``.
+
+    Book: Sec. 3.4.2, Eq. (3.73). The twist is computed from a motion with constant ``Q``.
+    """
+    return Statement([Rel(t, sp.BlockMatrix([[ZERO3], [v]]), "t = [0; v]"),
+                      Rel(t, norm_v * sp.BlockMatrix([[ZERO3], [e]]), "t = ||v|| [0; e]")],
+                     _translation_model())
+
+
+@equation("3.74", "Screw of infinite pitch", section="3.4.2", kind="definition",
+          latex=r"\mathbf{s}_\infty \equiv \begin{bmatrix} \mathbf{0} \\ \mathbf{e} "
+                r"\end{bmatrix}")
+def screw_infinite_pitch() -> Statement:
+    """``s_inf = [0; e]`` (6); claim: the pure-translation twist is ``||v|| s_inf``.
+
+    Book: Sec. 3.4.2, Eq. (3.74).
+    """
+    return Statement([Rel(s_inf, sp.BlockMatrix([[ZERO3], [e]]))], _translation_model(),
+                     defines=("s_inf",), claims=[Rel(t, norm_v * s_inf)])
+
+
+@equation("3.75", "Natural, linear and Euler-Rodrigues invariants as 4-arrays",
+          section="3.4.2", kind="definition",
+          latex=r"\boldsymbol{\nu} \equiv \begin{bmatrix} \mathbf{e} \\ \phi \end{bmatrix}, "
+                r"\quad \boldsymbol{\lambda} \equiv \begin{bmatrix} (\sin \phi)\mathbf{e} \\ "
+                r"\cos \phi \end{bmatrix}, \quad \boldsymbol{\eta} \equiv \begin{bmatrix} "
+                r"[\sin(\phi/2)]\mathbf{e} \\ \cos(\phi/2) \end{bmatrix}")
+def invariant_arrays() -> Statement:
+    """``nu = [e; phi]``, ``lambda = [sin(phi) e; cos(phi)]``, ``eta = [sin(phi/2) e; cos(phi/2)]``.
+
+    Book: Sec. 3.4.2, Eq. (3.75) (4-arrays, dimensionless / rad). Claims, from the rotation
+    ``Q`` of (2.49): ``lambda = [vect(Q); (tr Q - 1)/2]``; ``eta`` rebuilds ``Q`` by the
+    Euler-Rodrigues form; ``lambda`` and ``eta`` are unit 4-arrays.
+    """
+    from rigidsym.primitives import rotation_from_euler_rodrigues
+    m = rates_model()
+    Qv, ev, ph = sp.Matrix(m[Q]), sp.Matrix(m[e]), m[phi]
+
+    def one(x):
+        return sp.Matrix([[x]])
+
+    printed = [Rel(nu, sp.BlockMatrix([[e], [one(phi)]]), "nu"),
+               Rel(lam, sp.BlockMatrix([[sp.sin(phi) * e], [one(sp.cos(phi))]]), "lambda"),
+               Rel(eta, sp.BlockMatrix([[sp.sin(phi / 2) * e], [one(sp.cos(phi / 2))]]),
+                   "eta")]
+    claims = [Rel(lam, block([[vect(Qv)], [(trace(Qv) - 1) / 2]]), "lambda from Q"),
+              Rel(Q, rotation_from_euler_rodrigues(sp.sin(ph / 2) * ev, sp.cos(ph / 2)),
+                  "Q from eta"),
+              Rel(lam.T * lam, sp.Identity(1), "|lambda| = 1"),
+              Rel(eta.T * eta, sp.Identity(1), "|eta| = 1")]
+    return Statement(printed, m, defines=("nu", "lambda", "eta"), claims=claims)
+
+
+# --------------------------------------------------------------------------- pose rates and twists
+def _per_choice(fn):
+    return [fn(n, F, Ft, q_dot) for n, F, Ft, q_dot in CHOICES]
+
+
+@equation("3.78", "Pose rate from the twist", section="3.4.2",
+          latex=r"\dot{\mathbf{s}} = \mathbf{T}\mathbf{t}",
+          singular="phi = 0 for F = N")
+def pose_rate_from_twist() -> Statement:
+    """``s_dot = T t`` (7) for each choice F = N, L, H of rotation invariants.
+
+    Book: Sec. 3.4.2, Eq. (3.78). ``s = [q; q0; d_A]`` with ``d_A = a(t) - a(0)``;
+    ``t = [omega; a_dot]`` the twist at A; ``T`` from (3.79) with the pose Jacobian F.
+    """
+    return Statement(_per_choice(lambda n, F, Ft, q: Rel(sdot_of[n], T_of[n] * t, f"F = {n}")),
+                     rates_model())
+
+
+@equation("3.79", "Pose-rate matrix T", section="3.4.2", kind="definition",
+          latex=r"\mathbf{T} \equiv \begin{bmatrix} \mathbf{F} & \mathbf{O}_{43} \\ "
+                r"\mathbf{O} & \mathbf{1} \end{bmatrix}",
+          singular="phi = 0 for F = N")
+def pose_rate_matrix() -> Statement:
+    """``T = [[F, O_43], [O, 1]]`` (7 x 6), one per choice F = N, L, H (``T_N`` ...).
+
+    Book: Sec. 3.4.2, Eq. (3.79).
+    """
+    return Statement(_per_choice(lambda n, F, Ft, q: Rel(T_of[n], T_matrix(F), f"F = {n}")),
+                     rates_model(), defines=tuple(f"T_{n}" for n, *_ in CHOICES))
+
+
+@equation("3.80a", "Twist from the pose rate", section="3.4.2",
+          latex=r"\mathbf{t} = \mathbf{S}\dot{\mathbf{s}}",
+          singular="phi = pi for F = L")
+def twist_from_pose_rate() -> Statement:
+    """``t = S s_dot`` (6) for each choice F = N, L, H, ``S`` from (3.80b).
+
+    Book: Sec. 3.4.2, Eq. (3.80a). Checked along the motion.
+    """
+    return Statement(_per_choice(lambda n, F, Ft, q: Rel(t, S_of[n] * sdot_of[n], f"F = {n}")),
+                     rates_model())
+
+
+@equation("3.80b", "Twist matrix S", section="3.4.2", kind="definition",
+          latex=r"\mathbf{S} \equiv \begin{bmatrix} \tilde{\mathbf{F}} & \mathbf{O} \\ "
+                r"\mathbf{O}_{34} & \mathbf{1} \end{bmatrix}",
+          singular="phi = pi for F = L")
+def twist_matrix() -> Statement:
+    """``S = [[Ftilde, O], [O_34, 1]]`` (6 x 7), one per choice; claim ``S T = 1_6``.
+
+    Book: Sec. 3.4.2, Eq. (3.80b). ``T S = diag(F Ftilde, 1)`` is a projector (see
+    :mod:`derivations.sec3_4_2_rates`).
+    """
+    return Statement(
+        _per_choice(lambda n, F, Ft, q: Rel(S_of[n], S_matrix(Ft), f"F = {n}")),
+        rates_model(), defines=tuple(f"S_{n}" for n, *_ in CHOICES),
+        claims=_per_choice(lambda n, F, Ft, q: Rel(S_of[n] * T_of[n], sp.Identity(6),
+                                                   f"S T = 1 (F = {n})")))
+
+
+@equation("3.81", "Twists at two body points", section="3.4.2", kind="definition",
+          latex=r"\mathbf{t}_A = \begin{bmatrix} \boldsymbol{\omega} \\ \mathbf{v}_A "
+                r"\end{bmatrix}, \quad \mathbf{t}_P = \begin{bmatrix} \boldsymbol{\omega} \\ "
+                r"\mathbf{v}_P \end{bmatrix}")
+def twists_at_two_points() -> Statement:
+    """``t_A = [omega; v_A]``, ``t_P = [omega; v_P]`` (6), ``v_A = a_dot``, ``v_P = p_dot``.
+
+    Book: Sec. 3.4.2, Eq. (3.81).
+    """
+    return Statement([Rel(t_A, sp.BlockMatrix([[omega], [v_A]]), "t_A"),
+                      Rel(t_P, sp.BlockMatrix([[omega], [v_P]]), "t_P")], rates_model(),
+                     defines=("t_A", "t_P"))
+
+
+@equation("3.82", "Velocity of P from that of A", section="3.4.2",
+          latex=r"\mathbf{v}_P = \mathbf{v}_A + (\mathbf{a} - \mathbf{p}) \times "
+                r"\boldsymbol{\omega}")
+def velocity_transfer() -> Statement:
+    """``v_P = v_A + (a - p) x omega`` (m/s); ``x`` transcribed by ``A - P = CPM(a - p)``.
+
+    Book: Sec. 3.4.2, Eq. (3.82). ``p(t) = a(t) + Q(t) r`` moves rigidly.
+    """
+    return Statement([Rel(v_P, v_A + (A_cpm - P_cpm) * omega)], rates_model())
+
+
+@equation("3.83a", "Twist transfer", section="3.4.2",
+          latex=r"\mathbf{t}_P = \mathbf{U}\mathbf{t}_A")
+def twist_transfer_law() -> Statement:
+    """``t_P = U t_A`` (6) along the motion, ``U`` from (3.83b).
+
+    Book: Sec. 3.4.2, Eq. (3.83a).
+    """
+    return Statement([Rel(t_P, U * t_A)], rates_model())
+
+
+@equation("3.83b", "Twist-transfer matrix", section="3.4.2", kind="definition",
+          latex=r"\mathbf{U} \equiv \begin{bmatrix} \mathbf{1} & \mathbf{O} \\ \mathbf{A} - "
+                r"\mathbf{P} & \mathbf{1} \end{bmatrix}")
+def twist_transfer_matrix_definition() -> Statement:
+    """``U = [[1, O], [A - P, 1]]`` (6 x 6); claim: ``twist_transfer(t_A, a, p) = t_P``.
+
+    Book: Sec. 3.4.2, Eq. (3.83b) (as (3.29b)).
+    """
+    m = rates_model()
+    return Statement([Rel(U, twist_transfer_matrix(a, p))], m, defines=("U",),
+                     claims=[Rel(t_P, twist_transfer(m[t_A], m[a], m[p]), "t_P = U t_A")])
