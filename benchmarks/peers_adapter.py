@@ -42,8 +42,9 @@ def _build(build_dir: Path, cc: str, cflags: list[str]) -> Path:
     so = Path(build_dir) / f"librigidsym_{h.hexdigest()[:12]}.so"
     if not so.exists():
         so.parent.mkdir(parents=True, exist_ok=True)
-        subprocess.run([cc, *cflags, "-std=c99", "-fPIC", "-shared", *map(str, srcs),
-                        "-I", str(GEN / "c"), "-o", str(so), "-lm"], check=True)
+        subprocess.run([cc, *cflags, "-std=c99", "-ffp-contract=fast", "-fPIC", "-shared",
+                        *map(str, srcs), "-I", str(GEN / "c"), "-o", str(so), "-lm"],
+                       check=True)
     return so
 
 

@@ -58,6 +58,9 @@ def inputs(kernel, n: int, seed: int = 0) -> list[np.ndarray]:
             v = _rotations(_unit(rng, n + adv), ph)
         elif a.name == "m":
             v = rng.uniform(0.5, 2.0, n + adv)
+        elif a.name == "I_C":    # an inertia matrix: symmetric positive definite
+            g = rng.standard_normal((n + adv, 3, 3))
+            v = np.einsum("nij,nkj->nik", g, g) + 0.1 * np.eye(3)
         else:
             v = rng.standard_normal((n + adv,) + a.shape)
             if a.name == "omega" and "omega_dot" not in names and "phi" not in names:
