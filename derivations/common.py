@@ -12,6 +12,8 @@ free translation; nothing else about screws, Plücker lines or pitches is assume
 
 from __future__ import annotations
 
+from functools import cache
+
 import sympy as sp
 
 from rigidsym.primitives import cpm, rotation_from_natural_invariants, vect
@@ -54,6 +56,12 @@ class Bk:
 
 
 def displacement_model() -> dict:
+    """First-principles values of the displacement symbols (a fresh copy of a cached dict)."""
+    return dict(_displacement_model())
+
+
+@cache
+def _displacement_model() -> dict:
     """First-principles values of the displacement symbols.
 
     ``Q`` from its natural invariants (2.49) with a constrained unit ``e`` and angle ``phi``;
@@ -94,6 +102,15 @@ class Mt:
 
 
 def motion_model(invariants: bool = True) -> dict:
+    """First-principles values for a generic smooth rigid motion (see :func:`_motion_model`).
+
+    Returns a fresh copy of a cached dict: the differentiation is done once per process.
+    """
+    return dict(_motion_model(invariants))
+
+
+@cache
+def _motion_model(invariants: bool) -> dict:
     """First-principles values for a generic smooth rigid motion.
 
     With ``invariants=False``, ``Q(t)`` is a generic rotation (rational quaternion jets):
