@@ -22,7 +22,7 @@ import sympy as sp
 
 from rigidsym.primitives import block, cpm, rotation_from_natural_invariants
 from rigidsym.registry import Rel, Statement, equation
-from rigidsym.symbols import TIME, angle
+from rigidsym.symbols import TIME, angle, unit_vector, vector
 
 from .common import I3, MS, Mt, mat, motion_model, vec
 
@@ -115,7 +115,8 @@ def _symbolic(e) -> bool:
 
 
 def _dot(a, b):
-    return (a.T * b)[0, 0]
+    """``a . b``; for book symbols ``Trace(a^T b)``, which prints compactly."""
+    return sp.Trace(a.T * b) if _symbolic(a) else (a.T * b)[0, 0]
 
 
 def _cp(v):
@@ -326,6 +327,34 @@ def rates_model() -> dict:
     return m
 
 
+@cache
+def omega_model() -> dict:
+    """Rates along a motion given by its angular velocity: ``nu_dot = N omega`` (3.76a).
+
+    For the statements whose printed form is a formula in ``omega`` (3.96a, e): ``e``,
+    ``phi``, ``omega`` are free (``e`` unit), and the jets ``e_dot``, ``phi_dot`` of
+    :func:`rates_model` are replaced by ``N omega`` -- small expressions, where the motion's
+    ``omega = vect(Q_dot Q^T)`` of (2.49) would be large. ``N_dot`` and ``B`` are still
+    obtained by differentiating ``N`` (3.76b, verified there) along the motion.
+    """
+    m = rates_model()
+    e_t, phi_t = m[Mt.e], m[Mt.phi]
+    e_s, phi_s, w = unit_vector("e"), angle("phi"), vector("omega")
+    nu_dot = _N(e_s, phi_s) * w
+    jets = {sp.Derivative(e_t[i], TIME): nu_dot[i] for i in range(3)}
+    jets[sp.Derivative(phi_t, TIME)] = nu_dot[3]
+    static = {e_t[i]: e_s[i] for i in range(3)}
+    static[phi_t] = phi_s
+
+    def along(x):
+        return sp.ImmutableMatrix(x.xreplace(jets).xreplace(static))
+
+    im = sp.ImmutableMatrix
+    return {Mt.e: im(e_s), Mt.phi: phi_s, Mt.omega: im(w), Mt.Omega: im(cpm(w)),
+            Mt.E: im(cpm(e_s)), Mt.e_dot: im(nu_dot[:3, :]), Mt.phi_dot: nu_dot[3],
+            Rt.N_dot: along(m[Rt.N_dot]), Rt.B: along(m[Rt.B]), I3: im(sp.eye(3))}
+
+
 def along_motion(fn):
     """``fn(e, phi, omega)`` evaluated explicitly on the motion's e(t), phi(t), omega(t)."""
     m = rates_model()
@@ -340,10 +369,6 @@ def _book(fn):
 e, phi, phi_dot, e_dot, E = Mt.e, Mt.phi, Mt.phi_dot, Mt.e_dot, Mt.E
 omega, Omega, Q, Q_dot = Mt.omega, Mt.Omega, Mt.Q, Mt.Q_dot
 c_phi, s_phi = sp.cos(phi), sp.sin(phi)
-
-
-def _ew():
-    return (e.T * omega)[0, 0]
 
 
 # --------------------------------------------------------------------------- (3.96)
@@ -364,7 +389,7 @@ def rate_of_N() -> Statement:
     """
     k = 1 / (4 * (1 - c_phi))
     return Statement(
-        [Rel(Rt.N_dot, k * sp.BlockMatrix([[Rt.B], [e_dot.T]]))], rates_model(),
+        [Rel(Rt.N_dot, k * sp.BlockMatrix([[Rt.B], [e_dot.T]]))], omega_model(),
         corrected=[Rel(Rt.N_dot, _book(N_matrix_dot), "closed form, B written out")])
 
 
@@ -429,10 +454,10 @@ def auxiliary_matrix_B() -> Statement:
     (``nu_dot = N omega`` for every ``omega``), so no other reading makes the printed form
     hold. Corrected: :func:`B_matrix`.
     """
-    ew = _ew()
+    ew = _dot(e, omega)
     printed = (-2 * ew * I3 + 2 * (3 - c_phi) * ew * e * e.T - 2 * (1 + s_phi) * omega * e.T
                - (2 * c_phi + s_phi) * e * omega.T - s_phi * (Omega - ew * E))
-    return Statement([Rel(Rt.B, printed)], rates_model(),
+    return Statement([Rel(Rt.B, printed)], omega_model(),
                      corrected=[Rel(Rt.B, _book(B_matrix))])
 
 
