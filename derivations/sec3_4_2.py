@@ -261,8 +261,9 @@ def rates_model() -> dict:
     """Motion model plus the invariants, their rates, the pose Jacobians and the formulas.
 
     ``nu``, ``lambda``, ``eta`` and their rates from ``e(t)``, ``phi(t)`` (differentiated);
-    ``N``, ``L``, ``H`` -> :func:`pose_jacobians` (first principles); ``Ntilde``... -> the
-    formula functions (checked in (3.77b-d)); pose ``s_F = [q_F; d_A]`` with
+    ``N``, ``L``, ``H`` and ``Ntilde``... -> the formula functions (checked in (3.76b-d) against
+    the first-principles :func:`pose_jacobians`, in :func:`jacobian_model`, and in
+    (3.77b-d)); pose ``s_F = [q_F; d_A]`` with
     ``d_A = a(t) - a(0)``, so ``s_F dot = [q_F dot; a_dot]``; twist at A ``t = [omega; a_dot]``.
     """
     m = dict(motion_model(invariants=True))
@@ -272,14 +273,14 @@ def rates_model() -> dict:
          "L": block([[sp.sin(ph) * ev], [sp.cos(ph)]]),
          "H": block([[sp.sin(ph / 2) * ev], [sp.cos(ph / 2)]])}
     qd = {k: x.diff(tt) for k, x in q.items()}
-    Nf, Lf, Hf = pose_jacobians(ev, ph)
     Ft = {"N": N_tilde(ev, ph), "L": L_tilde(ev, ph), "H": H_tilde(ev, ph)}
-    Ff = {"N": Nf, "L": Lf, "H": Hf}
+    Ff = {"N": N_matrix(ev, ph), "L": L_matrix(ev, ph), "H": H_matrix(ev, ph)}
     adot = sp.Matrix(m[Mt.a_dot])
     tw = block([[sp.Matrix(m[Mt.omega])], [adot]])
     m.update({nu: _im(q["N"]), lam: _im(q["L"]), eta: _im(q["H"]), nu_dot: _im(qd["N"]),
-              lam_dot: _im(qd["L"]), eta_dot: _im(qd["H"]), N: _im(Nf), L: _im(Lf),
-              H: _im(Hf), Nt: _im(Ft["N"]), Lt: _im(Ft["L"]), Ht: _im(Ft["H"]), t: _im(tw),
+              lam_dot: _im(qd["L"]), eta_dot: _im(qd["H"]), N: _im(N_matrix(ev, ph)),
+              L: _im(L_matrix(ev, ph)), H: _im(H_matrix(ev, ph)), Nt: _im(Ft["N"]),
+              Lt: _im(Ft["L"]), Ht: _im(Ft["H"]), t: _im(tw),
               t_A: _im(tw), v: _im(adot), v_A: _im(adot),
               v_P: m[Mt.p_dot], t_P: _im(block([[sp.Matrix(m[Mt.omega])], [m[Mt.p_dot]]])),
               A_cpm: _im(cpm(m[Mt.a])), P_cpm: _im(cpm(m[Mt.p])),
@@ -288,6 +289,15 @@ def rates_model() -> dict:
         m[T_of[n]] = _im(T_matrix(Ff[n]))
         m[S_of[n]] = _im(S_matrix(Ft[n]))
         m[sdot_of[n]] = _im(block([[qd[n]], [adot]]))
+    return m
+
+
+@cache
+def jacobian_model() -> dict:
+    """:func:`rates_model` with ``N``, ``L``, ``H`` -> the first-principles pose Jacobians."""
+    m = dict(rates_model())
+    Nf, Lf, Hf = pose_jacobians(sp.Matrix(m[Mt.e]), m[Mt.phi])
+    m.update({N: _im(Nf), L: _im(Lf), H: _im(Hf)})
     return m
 
 
@@ -398,110 +408,3 @@ def invariant_arrays() -> Statement:
               Rel(eta.T * eta, sp.Identity(1), "|eta| = 1")]
     return Statement(printed, m, defines=("nu", "lambda", "eta"), claims=claims)
 
-
-# --------------------------------------------------------------------------- pose rates and twists
-def _per_choice(fn):
-    return [fn(n, F, Ft, q_dot) for n, F, Ft, q_dot in CHOICES]
-
-
-@equation("3.78", "Pose rate from the twist", section="3.4.2",
-          latex=r"\dot{\mathbf{s}} = \mathbf{T}\mathbf{t}",
-          singular="phi = 0 for F = N")
-def pose_rate_from_twist() -> Statement:
-    """``s_dot = T t`` (7) for each choice F = N, L, H of rotation invariants.
-
-    Book: Sec. 3.4.2, Eq. (3.78). ``s = [q; q0; d_A]`` with ``d_A = a(t) - a(0)``;
-    ``t = [omega; a_dot]`` the twist at A; ``T`` from (3.79) with the pose Jacobian F.
-    """
-    return Statement(_per_choice(lambda n, F, Ft, q: Rel(sdot_of[n], T_of[n] * t, f"F = {n}")),
-                     rates_model())
-
-
-@equation("3.79", "Pose-rate matrix T", section="3.4.2", kind="definition",
-          latex=r"\mathbf{T} \equiv \begin{bmatrix} \mathbf{F} & \mathbf{O}_{43} \\ "
-                r"\mathbf{O} & \mathbf{1} \end{bmatrix}",
-          singular="phi = 0 for F = N")
-def pose_rate_matrix() -> Statement:
-    """``T = [[F, O_43], [O, 1]]`` (7 x 6), one per choice F = N, L, H (``T_N`` ...).
-
-    Book: Sec. 3.4.2, Eq. (3.79).
-    """
-    return Statement(_per_choice(lambda n, F, Ft, q: Rel(T_of[n], T_matrix(F), f"F = {n}")),
-                     rates_model(), defines=tuple(f"T_{n}" for n, *_ in CHOICES))
-
-
-@equation("3.80a", "Twist from the pose rate", section="3.4.2",
-          latex=r"\mathbf{t} = \mathbf{S}\dot{\mathbf{s}}",
-          singular="phi = pi for F = L")
-def twist_from_pose_rate() -> Statement:
-    """``t = S s_dot`` (6) for each choice F = N, L, H, ``S`` from (3.80b).
-
-    Book: Sec. 3.4.2, Eq. (3.80a). Checked along the motion.
-    """
-    return Statement(_per_choice(lambda n, F, Ft, q: Rel(t, S_of[n] * sdot_of[n], f"F = {n}")),
-                     rates_model())
-
-
-@equation("3.80b", "Twist matrix S", section="3.4.2", kind="definition",
-          latex=r"\mathbf{S} \equiv \begin{bmatrix} \tilde{\mathbf{F}} & \mathbf{O} \\ "
-                r"\mathbf{O}_{34} & \mathbf{1} \end{bmatrix}",
-          singular="phi = pi for F = L")
-def twist_matrix() -> Statement:
-    """``S = [[Ftilde, O], [O_34, 1]]`` (6 x 7), one per choice; claim ``S T = 1_6``.
-
-    Book: Sec. 3.4.2, Eq. (3.80b). ``T S = diag(F Ftilde, 1)`` is a projector (see
-    :mod:`derivations.sec3_4_2_rates`).
-    """
-    return Statement(
-        _per_choice(lambda n, F, Ft, q: Rel(S_of[n], S_matrix(Ft), f"F = {n}")),
-        rates_model(), defines=tuple(f"S_{n}" for n, *_ in CHOICES),
-        claims=_per_choice(lambda n, F, Ft, q: Rel(S_of[n] * T_of[n], sp.Identity(6),
-                                                   f"S T = 1 (F = {n})")))
-
-
-@equation("3.81", "Twists at two body points", section="3.4.2", kind="definition",
-          latex=r"\mathbf{t}_A = \begin{bmatrix} \boldsymbol{\omega} \\ \mathbf{v}_A "
-                r"\end{bmatrix}, \quad \mathbf{t}_P = \begin{bmatrix} \boldsymbol{\omega} \\ "
-                r"\mathbf{v}_P \end{bmatrix}")
-def twists_at_two_points() -> Statement:
-    """``t_A = [omega; v_A]``, ``t_P = [omega; v_P]`` (6), ``v_A = a_dot``, ``v_P = p_dot``.
-
-    Book: Sec. 3.4.2, Eq. (3.81).
-    """
-    return Statement([Rel(t_A, sp.BlockMatrix([[omega], [v_A]]), "t_A"),
-                      Rel(t_P, sp.BlockMatrix([[omega], [v_P]]), "t_P")], rates_model(),
-                     defines=("t_A", "t_P"))
-
-
-@equation("3.82", "Velocity of P from that of A", section="3.4.2",
-          latex=r"\mathbf{v}_P = \mathbf{v}_A + (\mathbf{a} - \mathbf{p}) \times "
-                r"\boldsymbol{\omega}")
-def velocity_transfer() -> Statement:
-    """``v_P = v_A + (a - p) x omega`` (m/s); ``x`` transcribed by ``A - P = CPM(a - p)``.
-
-    Book: Sec. 3.4.2, Eq. (3.82). ``p(t) = a(t) + Q(t) r`` moves rigidly.
-    """
-    return Statement([Rel(v_P, v_A + (A_cpm - P_cpm) * omega)], rates_model())
-
-
-@equation("3.83a", "Twist transfer", section="3.4.2",
-          latex=r"\mathbf{t}_P = \mathbf{U}\mathbf{t}_A")
-def twist_transfer_law() -> Statement:
-    """``t_P = U t_A`` (6) along the motion, ``U`` from (3.83b).
-
-    Book: Sec. 3.4.2, Eq. (3.83a).
-    """
-    return Statement([Rel(t_P, U * t_A)], rates_model())
-
-
-@equation("3.83b", "Twist-transfer matrix", section="3.4.2", kind="definition",
-          latex=r"\mathbf{U} \equiv \begin{bmatrix} \mathbf{1} & \mathbf{O} \\ \mathbf{A} - "
-                r"\mathbf{P} & \mathbf{1} \end{bmatrix}")
-def twist_transfer_matrix_definition() -> Statement:
-    """``U = [[1, O], [A - P, 1]]`` (6 x 6); claim: ``twist_transfer(t_A, a, p) = t_P``.
-
-    Book: Sec. 3.4.2, Eq. (3.83b) (as (3.29b)).
-    """
-    m = rates_model()
-    return Statement([Rel(U, twist_transfer_matrix(a, p))], m, defines=("U",),
-                     claims=[Rel(t_P, twist_transfer(m[t_A], m[a], m[p]), "t_P = U t_A")])

@@ -1,12 +1,13 @@
-"""Sec. 3.4.2 (rates of the invariants): Eqs. (3.76a-d), (3.77a-d) and the Caveat.
+"""Sec. 3.4.2 (rates): Eqs. (3.76)-(3.77), the Caveat, pose rates and twists (3.78)-(3.83).
 
 Book: J. Angeles, *Fundamentals of Robotic Mechanical Systems*, 4th ed., Sec. 3.4.2.
 
 Every check runs along the generic motion of :func:`derivations.common.motion_model`
 (``e(t)`` unit, ``phi(t)``, ``Q(t)`` from (2.49), ``omega = vect(Qdot Q^T)`` computed): the
 rates ``nu_dot``, ``lambda_dot``, ``eta_dot`` are derivatives of the invariants of ``Q(t)``,
-and ``N``, ``L``, ``H`` are modelled by the pose Jacobians of
-:func:`derivations.sec3_4_2.pose_jacobians` (derived from ``Q`` alone, not from the book).
+and in (3.76a-d) ``N``, ``L``, ``H`` are modelled by the pose Jacobians of
+:func:`derivations.sec3_4_2.pose_jacobians` (derived from ``Q`` alone, not from the book);
+in (3.77) by the printed forms, once (3.76b-d) have verified them.
 
 Left inverses are not unique (``nu``, ``lambda``, ``eta`` live on 3-dimensional constraint
 sets of R^4), so (3.77b-d) are decided by their characterising conditions: ``omega`` is
@@ -31,6 +32,8 @@ from rigidsym.symbols import scalar, vector
 
 from .common import I3, MS
 from .sec3_4_2 import (
+    CHOICES,
+    A_cpm,
     H,
     H_matrix,
     H_tilde,
@@ -43,15 +46,32 @@ from .sec3_4_2 import (
     N_matrix,
     N_tilde,
     Nt,
+    P_cpm,
+    S_matrix,
+    S_of,
+    T_matrix,
+    T_of,
+    U,
+    a,
     e,
     eta,
     eta_dot,
+    jacobian_model,
     lam,
     lam_dot,
     nu_dot,
     omega,
+    p,
     phi,
     rates_model,
+    sdot_of,
+    t,
+    t_A,
+    t_P,
+    twist_transfer,
+    twist_transfer_matrix,
+    v_A,
+    v_P,
 )
 
 #: the garbled ``\dot{\mathbf{v}}`` of the printed (3.77a): a fresh 4-array
@@ -82,11 +102,11 @@ def invariant_rates() -> Statement:
     motion and ``omega`` is computed from ``Q(t)``.
     """
     return Statement([Rel(nu_dot, N * omega, "nu"), Rel(lam_dot, L * omega, "lambda"),
-                      Rel(eta_dot, H * omega, "eta")], rates_model())
+                      Rel(eta_dot, H * omega, "eta")], jacobian_model())
 
 
 def _rate_matrix(F, F_printed, q_dot, name: str) -> Statement:
-    return Statement([Rel(F, F_printed, name)], rates_model(),
+    return Statement([Rel(F, F_printed, name)], jacobian_model(),
                      claims=[Rel(q_dot, F_printed * omega, f"rate = {name} omega")])
 
 
@@ -252,3 +272,111 @@ def angular_velocity_not_a_derivative() -> Statement:
                      model,
                      claims=[Rel(curl_at_identity, sp.Matrix([0, 0, 4]),
                                  "curl at the identity pose is non-zero")])
+
+
+# --------------------------------------------------------------------------- pose rates and twists
+def _per_choice(fn):
+    return [fn(n, F, Ft, q_dot) for n, F, Ft, q_dot in CHOICES]
+
+
+@equation("3.78", "Pose rate from the twist", section="3.4.2",
+          latex=r"\dot{\mathbf{s}} = \mathbf{T}\mathbf{t}",
+          singular="phi = 0 for F = N")
+def pose_rate_from_twist() -> Statement:
+    """``s_dot = T t`` (7) for each choice F = N, L, H of rotation invariants.
+
+    Book: Sec. 3.4.2, Eq. (3.78). ``s = [q; q0; d_A]`` with ``d_A = a(t) - a(0)``;
+    ``t = [omega; a_dot]`` the twist at A; ``T`` from (3.79), F from (3.76b-d).
+    """
+    return Statement(_per_choice(lambda n, F, Ft, q: Rel(sdot_of[n], T_of[n] * t, f"F = {n}")),
+                     rates_model())
+
+
+@equation("3.79", "Pose-rate matrix T", section="3.4.2", kind="definition",
+          latex=r"\mathbf{T} \equiv \begin{bmatrix} \mathbf{F} & \mathbf{O}_{43} \\ "
+                r"\mathbf{O} & \mathbf{1} \end{bmatrix}",
+          singular="phi = 0 for F = N")
+def pose_rate_matrix() -> Statement:
+    """``T = [[F, O_43], [O, 1]]`` (7 x 6), one per choice F = N, L, H (``T_N`` ...).
+
+    Book: Sec. 3.4.2, Eq. (3.79).
+    """
+    return Statement(_per_choice(lambda n, F, Ft, q: Rel(T_of[n], T_matrix(F), f"F = {n}")),
+                     rates_model(), defines=tuple(f"T_{n}" for n, *_ in CHOICES))
+
+
+@equation("3.80a", "Twist from the pose rate", section="3.4.2",
+          latex=r"\mathbf{t} = \mathbf{S}\dot{\mathbf{s}}",
+          singular="phi = pi for F = L")
+def twist_from_pose_rate() -> Statement:
+    """``t = S s_dot`` (6) for each choice F = N, L, H, ``S`` from (3.80b).
+
+    Book: Sec. 3.4.2, Eq. (3.80a). Checked along the motion.
+    """
+    return Statement(_per_choice(lambda n, F, Ft, q: Rel(t, S_of[n] * sdot_of[n], f"F = {n}")),
+                     rates_model())
+
+
+@equation("3.80b", "Twist matrix S", section="3.4.2", kind="definition",
+          latex=r"\mathbf{S} \equiv \begin{bmatrix} \tilde{\mathbf{F}} & \mathbf{O} \\ "
+                r"\mathbf{O}_{34} & \mathbf{1} \end{bmatrix}",
+          singular="phi = pi for F = L")
+def twist_matrix() -> Statement:
+    """``S = [[Ftilde, O], [O_34, 1]]`` (6 x 7), one per choice; claim ``S T = 1_6``.
+
+    Book: Sec. 3.4.2, Eq. (3.80b). ``T S = diag(F Ftilde, 1)`` is a projector (see
+    :mod:`derivations.sec3_4_2_rates`).
+    """
+    return Statement(
+        _per_choice(lambda n, F, Ft, q: Rel(S_of[n], S_matrix(Ft), f"F = {n}")),
+        rates_model(), defines=tuple(f"S_{n}" for n, *_ in CHOICES),
+        claims=_per_choice(lambda n, F, Ft, q: Rel(S_of[n] * T_of[n], sp.Identity(6),
+                                                   f"S T = 1 (F = {n})")))
+
+
+@equation("3.81", "Twists at two body points", section="3.4.2", kind="definition",
+          latex=r"\mathbf{t}_A = \begin{bmatrix} \boldsymbol{\omega} \\ \mathbf{v}_A "
+                r"\end{bmatrix}, \quad \mathbf{t}_P = \begin{bmatrix} \boldsymbol{\omega} \\ "
+                r"\mathbf{v}_P \end{bmatrix}")
+def twists_at_two_points() -> Statement:
+    """``t_A = [omega; v_A]``, ``t_P = [omega; v_P]`` (6), ``v_A = a_dot``, ``v_P = p_dot``.
+
+    Book: Sec. 3.4.2, Eq. (3.81).
+    """
+    return Statement([Rel(t_A, sp.BlockMatrix([[omega], [v_A]]), "t_A"),
+                      Rel(t_P, sp.BlockMatrix([[omega], [v_P]]), "t_P")], rates_model(),
+                     defines=("t_A", "t_P"))
+
+
+@equation("3.82", "Velocity of P from that of A", section="3.4.2",
+          latex=r"\mathbf{v}_P = \mathbf{v}_A + (\mathbf{a} - \mathbf{p}) \times "
+                r"\boldsymbol{\omega}")
+def velocity_transfer() -> Statement:
+    """``v_P = v_A + (a - p) x omega`` (m/s); ``x`` transcribed by ``A - P = CPM(a - p)``.
+
+    Book: Sec. 3.4.2, Eq. (3.82). ``p(t) = a(t) + Q(t) r`` moves rigidly.
+    """
+    return Statement([Rel(v_P, v_A + (A_cpm - P_cpm) * omega)], rates_model())
+
+
+@equation("3.83a", "Twist transfer", section="3.4.2",
+          latex=r"\mathbf{t}_P = \mathbf{U}\mathbf{t}_A")
+def twist_transfer_law() -> Statement:
+    """``t_P = U t_A`` (6) along the motion, ``U`` from (3.83b).
+
+    Book: Sec. 3.4.2, Eq. (3.83a).
+    """
+    return Statement([Rel(t_P, U * t_A)], rates_model())
+
+
+@equation("3.83b", "Twist-transfer matrix", section="3.4.2", kind="definition",
+          latex=r"\mathbf{U} \equiv \begin{bmatrix} \mathbf{1} & \mathbf{O} \\ \mathbf{A} - "
+                r"\mathbf{P} & \mathbf{1} \end{bmatrix}")
+def twist_transfer_matrix_definition() -> Statement:
+    """``U = [[1, O], [A - P, 1]]`` (6 x 6); claim: ``twist_transfer(t_A, a, p) = t_P``.
+
+    Book: Sec. 3.4.2, Eq. (3.83b) (as (3.29b)).
+    """
+    m = rates_model()
+    return Statement([Rel(U, twist_transfer_matrix(a, p))], m, defines=("U",),
+                     claims=[Rel(t_P, twist_transfer(m[t_A], m[a], m[p]), "t_P = U t_A")])
