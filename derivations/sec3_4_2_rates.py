@@ -172,12 +172,13 @@ def angular_velocity_from_invariant_rates() -> Statement:
     return Statement(printed, m, corrected=corrected)
 
 
-def _left_inverse(F, F_tilde_printed, q_dot, name: str) -> Statement:
+def _left_inverse(F, F_tilde_printed, q_dot, name: str, extra=()) -> Statement:
     m = rates_model()
     return Statement(
         [Rel(omega, F_tilde_printed * q_dot, f"omega = {name}tilde rate"),
          Rel(F_tilde_printed * F, I3, f"{name}tilde {name} = 1")], m,
-        claims=[Rel(F * F_tilde_printed, _projectors(m)[name], f"{name} {name}tilde")])
+        claims=[Rel(F * F_tilde_printed, _projectors(m)[name], f"{name} {name}tilde"),
+                *extra])
 
 
 @equation("3.77b", "Left inverse Ntilde of N", section="3.4.2",
@@ -218,7 +219,8 @@ def euler_rodrigues_left_inverse() -> Statement:
     Book: Sec. 3.4.2, Eq. (3.77d). Claim: ``H Htilde = 1_4 - eta eta^T``, the orthogonal
     projector onto the tangent space of the unit 3-sphere at ``eta`` (``Htilde = 4 H^T``).
     """
-    return _left_inverse(H, H_tilde(e, phi), eta_dot, "H")
+    return _left_inverse(H, H_tilde(e, phi), eta_dot, "H",
+                         extra=[Rel(H_tilde(e, phi), 4 * H.T, "Htilde = 4 H^T")])
 
 
 # --------------------------------------------------------------------------- the caveat
