@@ -21,6 +21,7 @@ from rigidsym.registry import Rel, Statement, equation
 from rigidsym.symbols import TIME, angle, matrix, unit_vector, vector
 
 from .common import I3, MS, O3, Mt, mat, motion_model, vec
+from .sec3_4_2 import S_matrix, T_matrix
 from .sec3_5_rates import LEFT_INVERSES, RATE_MATRICES, Rt, rates_model
 
 __all__ = ["point_acceleration"]
@@ -161,17 +162,6 @@ def twist_rate() -> Statement:
 
 
 # --------------------------------------------------------------------------- (3.91)-(3.94)
-try:  # single source of T and S: Sec. 3.4.2
-    from .sec3_4_2 import S_matrix, T_matrix
-except ImportError:  # pragma: no cover - before sec3_4_2 lands
-    def T_matrix(F):
-        """(3.79) ``T = [[F, O_43], [O, 1]]`` (7 x 6)."""
-        return block([[F, sp.zeros(4, 3)], [sp.zeros(3), sp.eye(3)]])
-
-    def S_matrix(F_tilde):
-        """(3.80b) ``S = [[F~, O], [O_34, 1]]`` (6 x 7)."""
-        return block([[F_tilde, sp.zeros(3)], [sp.zeros(3, 4), sp.eye(3)]])
-
 CHOICES = ("N", "L", "H")
 F_DOT = {"N": Rt.N_dot, "L": Rt.L_dot, "H": Rt.H_dot}
 FT_DOT = {"N": Rt.Nt_dot, "L": Rt.Lt_dot, "H": Rt.Ht_dot}
@@ -221,7 +211,7 @@ def pose_second_derivative() -> Statement:
                       for n in CHOICES], _pose())
 
 
-@equation("3.92", "Rate of T", section="3.5",
+@equation("3.92", "Rate of T", section="3.5", singular="F = N: phi = 0 (mod 2 pi)",
           latex=r"\dot{\mathbf{T}} \equiv \begin{bmatrix} \dot{\mathbf{F}} & \mathbf{O}_{43} "
                 r"\\ \mathbf{O} & \mathbf{O} \end{bmatrix}")
 def rate_of_T() -> Statement:
@@ -247,6 +237,7 @@ def twist_rate_from_pose() -> Statement:
 
 
 @equation("3.94", "Rate of S", section="3.5", expected="does-not-hold", cause="conversion",
+          singular="F~ = L~: phi = pi",
           evidence="the upper-left block of S_dot is the 3x4 rate of F~ (N~, L~, H~); the "
                    "printed F_dot (= N_dot, L_dot, H_dot, 4x3) lost its tilde",
           latex=r"\dot{\mathbf{S}} = \begin{bmatrix} \dot{\mathbf{F}} & \mathbf{O} \\ "

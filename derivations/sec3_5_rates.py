@@ -25,66 +25,21 @@ from rigidsym.registry import Rel, Statement, equation
 from rigidsym.symbols import TIME, angle, unit_vector, vector
 
 from .common import I3, MS, Mt, mat, motion_model, vec
+from .sec3_4_2 import H_matrix, H_tilde, L_matrix, L_tilde, N_matrix, N_tilde
 
 __all__ = ["B_matrix", "N_matrix_dot", "L_matrix_dot", "H_matrix_dot", "N_tilde_dot", "V_u",
            "L_tilde_dot", "H_tilde_dot"]
 
 
 # --------------------------------------------------------------------------- (3.76), (3.77)
+# N, L, H and their left inverses exist once, in Sec. 3.4.2 (checked there).
+_N, _L, _H = N_matrix, L_matrix, H_matrix
+_N_tilde, _L_tilde, _H_tilde = N_tilde, L_tilde, H_tilde
+
+
 def _col(v) -> sp.Matrix:
     return sp.Matrix(v).reshape(3, 1)
 
-
-def _N(e, phi) -> sp.Matrix:
-    """(3.76b): ``N = [sin(phi)/(2(1 - cos phi)) (1 - e e^T) - E/2; e^T]`` (4 x 3)."""
-    e = _col(e)
-    k = sp.sin(phi) / (2 * (1 - sp.cos(phi)))
-    return block([[k * (sp.eye(3) - e * e.T) - cpm(e) / 2], [e.T]])
-
-
-def _L(e, phi) -> sp.Matrix:
-    """(3.76c): ``L = [(tr(Q) 1 - Q)/2; -sin(phi) e^T]`` (4 x 3)."""
-    e = _col(e)
-    Q = rotation_from_natural_invariants(e, phi)
-    return block([[(Q.trace() * sp.eye(3) - Q) / 2], [-sp.sin(phi) * e.T]])
-
-
-def _H(e, phi) -> sp.Matrix:
-    """(3.76d): ``H = 1/2 [cos(phi/2) 1 - sin(phi/2) E; -sin(phi/2) e^T]`` (4 x 3)."""
-    e = _col(e)
-    c, s = sp.cos(phi / 2), sp.sin(phi / 2)
-    return block([[c * sp.eye(3) - s * cpm(e)], [-s * e.T]]) / 2
-
-
-def _N_tilde(e, phi) -> sp.Matrix:
-    """(3.77b): ``N~ = [sin(phi) 1 + (1 - cos phi) E, e]`` (3 x 4)."""
-    e = _col(e)
-    return block([[sp.sin(phi) * sp.eye(3) + (1 - sp.cos(phi)) * cpm(e), e]])
-
-
-def _L_tilde(e, phi) -> sp.Matrix:
-    """(3.77c): ``L~ = [1 + sin(phi)/(1 + cos phi) E, -sin(phi)/(1 + cos phi) e]`` (3 x 4)."""
-    e = _col(e)
-    k = sp.sin(phi) / (1 + sp.cos(phi))
-    return block([[sp.eye(3) + k * cpm(e), -k * e]])
-
-
-def _H_tilde(e, phi) -> sp.Matrix:
-    """(3.77d): ``H~ = 2 [cos(phi/2) 1 + sin(phi/2) E, -sin(phi/2) e]`` (3 x 4)."""
-    e = _col(e)
-    c, s = sp.cos(phi / 2), sp.sin(phi / 2)
-    return 2 * block([[c * sp.eye(3) + s * cpm(e), -s * e]])
-
-
-try:  # the section-3.4.2 module, once it exists, is the single source of N ... H~
-    from .sec3_4_2 import H_matrix as _H  # noqa: F811
-    from .sec3_4_2 import H_tilde as _H_tilde  # noqa: F811
-    from .sec3_4_2 import L_matrix as _L  # noqa: F811
-    from .sec3_4_2 import L_tilde as _L_tilde  # noqa: F811
-    from .sec3_4_2 import N_matrix as _N  # noqa: F811
-    from .sec3_4_2 import N_tilde as _N_tilde  # noqa: F811
-except ImportError:  # pragma: no cover - before sec3_4_2 lands
-    pass
 
 RATE_MATRICES = {"N": _N, "L": _L, "H": _H}
 LEFT_INVERSES = {"N": _N_tilde, "L": _L_tilde, "H": _H_tilde}
@@ -469,7 +424,7 @@ THETA = angle("theta")  # the printed "sin theta" of (3.97a): a fresh symbol, ne
           cause="conversion",
           evidence="tilde lost (rate of the 3x4 N~, not of N), theta for phi, and even so "
                    "the term (1 - cos phi) E_dot of d/dt[(1 - cos phi) E] is missing",
-          singular="phi = 0 (mod 2 pi)",
+          singular="none in (e_dot, phi_dot); phi = 0 (mod 2 pi) once they come from N omega",
           latex=r"\dot{\mathbf{N}} = [\dot{\phi}(\cos \phi)\mathbf{1} + \dot{\phi}(\sin "
                 r"\theta)\mathbf{E} \dot{\mathbf{e}}]")
 def rate_of_N_tilde() -> Statement:
@@ -523,7 +478,8 @@ def rate_of_H_tilde() -> Statement:
     """``H_dot = [r0_dot 1 + R_dot, -r_dot]`` as printed (3 x 4).
 
     Book: Sec. 3.5, Eq. (3.97c). The printed lhs is ``H_dot`` (4 x 3). Corrected:
-    ``H~_dot = 2 [r0_dot 1 + R_dot, -r_dot]`` (:func:`H_tilde_dot`).
+    ``H~_dot = 2 [r0_dot 1 + R_dot, -r_dot]`` (:func:`H_tilde_dot`). The printed bracket
+    is the rate of ``H~ / 2``, which maps ``eta_dot`` to ``omega / 2`` (not a left inverse).
     """
     rhs = sp.BlockMatrix([[Rt.r0_dot * I3 + Rt.R_dot, -Rt.r_dot]])
     return Statement(
