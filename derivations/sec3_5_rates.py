@@ -197,8 +197,11 @@ def N_tilde_dot(e, phi, omega):
     k = _rates(e, phi, omega)
     e, e_dot, phi_dot = k["e"], k["e_dot"], k["phi_dot"]
     c, s = sp.cos(phi), sp.sin(phi)
-    return _blk([[phi_dot * (c * _one(_symbolic(e)) + s * _cp(e)) + (1 - c) * _cp(e_dot),
-                  e_dot]], _symbolic(e))
+    terms = ((1 - c) * _cp(e_dot), phi_dot * (c * _one(_symbolic(e)) + s * _cp(e)))
+    # unevaluated MatAdd in this order: sympy's pretty printer drops the "+" before a
+    # (1 - cos phi) coefficient when it comes second
+    upper = sp.MatAdd(*terms) if _symbolic(e) else terms[0] + terms[1]
+    return _blk([[upper, e_dot]], _symbolic(e))
 
 
 def V_u(e, phi, omega):
