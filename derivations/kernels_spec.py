@@ -420,3 +420,63 @@ KERNELS.append(Kernel(
           _v("c_ddot", "acceleration of the mass centre [m/s^2]"),
           _v("n", "applied moment about C [N m]"), _v("f", "applied force [N]")),
     outputs=(Out("r", (6,), "[N m; N]"),), build=_newton_euler_residual))
+
+
+# ----------------------------------------------------------------------------------------
+# The screw of a finite displacement from (Q, a, a'): natural invariants (with the near-pi
+# branches), the axis point (3.18), the pitch (3.7) and the Plücker array of the axis.
+
+
+def _screw_of_displacement(Q, a, a_prime, ni):
+    e, phi = ni["e"], ni["phi"]
+    # (3.18) needs cos(phi) only: with phi_c = acos((tr Q - 1)/2), cos(phi_c) is
+    # (tr Q - 1)/2 identically, so no trigonometric call and no acos is evaluated.
+    # (3.18) needs only cos(phi) = (tr Q - 1)/2, i.e. 1 - cos(phi) = ((1 - Q_00) + (1 - Q_11)
+    # + (1 - Q_22))/2: each 1 - Q_ii is exact in floating point near phi = 0 (Sterbenz), so
+    # the sum keeps full relative accuracy where 3 - tr Q would cancel. UnevaluatedExpr keeps
+    # that grouping through sympy's Add; no trigonometric call is needed.
+    ph, half = sp.Symbol("screw_phi", real=True), sp.Symbol("screw_half_omc", real=True)
+    p0 = formula(_S21 + "screw_axis_point")(Q, a, a_prime, ph)
+    p0 = p0.xreplace({sp.cos(ph): 1 - half})
+    if p0.has(ph):
+        raise ValueError("screw_axis_point: expected a function of cos(phi) only")
+    one_minus = sp.Add(*[sp.UnevaluatedExpr(1 - Q[i, i]) for i in range(3)])
+    p0 = p0.xreplace({half: one_minus / 2})
+    pitch = formula(_S21 + "pitch_of_displacement")(e, a_prime - a, phi)
+    kappa = formula(_S22 + "plucker_from_points")(p0, p0 + e)
+    return {"e": e, "phi": phi, "p0": p0, "pitch": pitch, "plucker": kappa}
+
+
+def _sod_main(Q, a, a_prime):
+    return _screw_of_displacement(Q, a, a_prime, _ni_main(Q))
+
+
+def _sod_near_pi(Q, a, a_prime, k):
+    return _screw_of_displacement(Q, a, a_prime, _ni_near_pi(Q, k))
+
+
+def _sod_when(Q, a, a_prime, k):
+    return _ni_when(Q, k)
+
+
+KERNELS.append(Kernel(
+    name="screw_of_displacement",
+    summary="Screw of a finite displacement: axis, angle, axis point, pitch, Plücker array.",
+    formula="(e, phi) from Q as natural_invariants_from_rotation; p0 = (Q - 1)^T (Q a - a')"
+            " / ((1 - Q_00) + (1 - Q_11) + (1 - Q_22));"
+            " pitch = e^T (a' - a) / phi; kappa = [e; p0 x e]",
+    ids=("3.7", "3.18", "3.23"),
+    sources=(_PR + "vect", _PR + "trace", _S21 + "screw_axis_point",
+             _S21 + "pitch_of_displacement", _S22 + "plucker_from_points"),
+    args=(Q_ARG, _v("a", "body point before the displacement [m]"),
+          _v("a_prime", "the same point after the displacement [m]")),
+    outputs=(Out("e", (3,), "unit axis"), Out("phi", (), "angle [rad], in [0, pi]"),
+             Out("p0", (3,), "axis point closest to the origin [m]"),
+             Out("pitch", (), "pitch [m/rad]"), Out("plucker", (6,), "[e; p0 x e]")),
+    build=_sod_main,
+    branches=tuple(Branch(f"near_pi_{k}", partial(_sod_when, k=k),
+                          partial(_sod_near_pi, k=k), doc=_NI_BRANCHES[k].doc)
+                   for k in range(3)),
+    singular="phi = 0 (pure translation: no axis, infinite pitch)", singular_arg="Q",
+    notes="At phi = pi the sign of e follows "
+          "natural_invariants_from_rotation's rule (largest-magnitude component positive)."))

@@ -53,7 +53,7 @@ def inputs(kernel, n: int, seed: int = 0) -> list[np.ndarray]:
         elif a.kind == "angle":
             v = np.concatenate([rng.uniform(0.0, np.pi, n), ADV_PHI])
         elif a.kind == "rotation":
-            ph = np.concatenate([rng.uniform(0.0, np.pi, n), [1e-8, np.pi - 1e-8, np.pi,
+            ph = np.concatenate([rng.uniform(0.0, np.pi, n), [1e-6, np.pi - 1e-8, np.pi,
                                                                np.pi - 1e-4]])
             v = _rotations(_unit(rng, n + adv), ph)
         elif a.name == "m":

@@ -84,6 +84,7 @@
 #include "rotation_from_euler_rodrigues.h"
 #include "rotation_from_natural_invariants.h"
 #include "screw_axis_point.h"
+#include "screw_of_displacement.h"
 #include "twist_transfer.h"
 #include "twist_transfer_matrix.h"
 #include "wrench_axis.h"

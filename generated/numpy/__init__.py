@@ -79,6 +79,7 @@ NAMES = (
     "rotation_from_euler_rodrigues",
     "rotation_from_natural_invariants",
     "screw_axis_point",
+    "screw_of_displacement",
     "twist_transfer",
     "twist_transfer_matrix",
     "wrench_axis",

@@ -102,6 +102,30 @@ def compile_kernel(kernel: Kernel) -> KernelCode:
     return KernelCode(kernel, variants, math_hash(parts), ops, flat_symbols(kernel))
 
 
+_TODO: list = []
+
+
+def _compile_index(i: int):
+    kc = compile_kernel(_TODO[i])
+    return kc.variants, kc.hash, kc.ops, kc.inputs
+
+
+def _compile_all(todo: list) -> list[KernelCode]:
+    """Compile kernels, over two forked workers when there are many (same result, in order)."""
+    jobs = min(2, os.cpu_count() or 1)
+    if len(todo) < 8 or jobs < 2 or os.environ.get("RIGIDSYM_GENERATE_JOBS") == "1":
+        return [compile_kernel(k) for k in todo]
+    import multiprocessing as mp
+
+    _TODO[:] = todo
+    try:
+        with mp.get_context("fork").Pool(jobs) as pool:
+            parts = pool.map(_compile_index, range(len(todo)), chunksize=1)
+    finally:
+        _TODO.clear()
+    return [KernelCode(k, *p) for k, p in zip(todo, parts, strict=True)]
+
+
 def _env() -> jinja2.Environment:
     return jinja2.Environment(
         loader=jinja2.FileSystemLoader(str(TEMPLATES)), keep_trailing_newline=True,
@@ -204,13 +228,15 @@ def generate(kernels=None) -> GenerationResult:
     files: dict[str, str] = {}
     notes: list[str] = []
     done: list[KernelCode] = []
+    todo = []
     for k in sorted(kernels if kernels is not None else KERNELS, key=lambda k: k.name):
         miss = missing_sources(k)
         if miss:
             notes.append(f"skipped {k.name}: formula function(s) not importable yet: "
                          + ", ".join(miss))
             continue
-        kc = compile_kernel(k)
+        todo.append(k)
+    for kc in _compile_all(todo):
         done.append(kc)
         files.update(_render_kernel(env, kc))
     metas = [_meta(kc) for kc in done]
