@@ -15,7 +15,8 @@ configuration of four points (when ``m_4 != 0``, take ``sigma_i = rho_i / m_4`` 
 the origin ``o`` to the centre of mass) and keeps ``1/m`` out of the expressions, which the
 zero test then decides fast. The centre of mass, ``I_C(t)``, ``omega``,
 the momenta and the forces are all *computed* from the points (``c = sum m_i p_i / m``,
-``omega = vect(Qdot Q^T)``, ``f = sum m_i pddot_i``, ``n_C = sum m_i r_i x pddot_i``), so
+``omega = vect(Qdot Q^T)``, ``f = sum m_i pddot_i`` (expanded, a polynomial in the jets),
+``n_C = sum m_i r_i x pddot_i``), so
 ``Idot_C = Omega I_C - I_C Omega`` comes out of the model, never assumed.
 
 Why four point masses suffice. Every integrand of the section is a polynomial of degree at
@@ -267,7 +268,7 @@ def motion_model() -> dict:
             Dy.r: _im(r), Dy.R: _im(cpm(r)), Dy.Omega: _im(Om), Dy.omega: _im(om),
             Dy.omega_dot: _im(om.diff(t)), Dy.I_C: _im(I_C), Dy.I_C_dot: _im(I_C.diff(t)),
             Dy.T: B.integral(lambda P: (P.p_dot.T * P.p_dot)[0] / 2),
-            Dy.f: _im(B.integral(lambda P: P.p_ddot)),
+            Dy.f: _im(B.integral(lambda P: P.p_ddot).expand()),
             Dy.n_C: _im(B.integral(lambda P: cpm(P.r) * P.p_ddot))}
 
 
