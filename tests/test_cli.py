@@ -53,7 +53,14 @@ def _mutate(monkeypatch, eq_id, change):
 
 
 def _flip_sign(st):
+    """Negate the printed right side; where it is zero (a characterising condition such as
+    e^T p0 = 0), shift the printed left side instead, so the mutation always changes it."""
     r = st.printed[0]
+    if sp.sympify(r.rhs).is_zero if not hasattr(r.rhs, "shape") else \
+            isinstance(r.rhs, sp.ZeroMatrix) or r.rhs == sp.zeros(*r.rhs.shape):
+        shift = sp.ones(*r.lhs.shape) if hasattr(r.lhs, "shape") else 1
+        return dataclasses.replace(st, printed=[Rel(r.lhs + shift, r.rhs, r.label)]
+                                   + st.printed[1:])
     return dataclasses.replace(st, printed=[Rel(r.lhs, -r.rhs, r.label)] + st.printed[1:])
 
 

@@ -29,7 +29,8 @@ def test_computed_verdict_equals_recorded(eq_id, results):
         ce = r.counterexample
         assert ce and ce["point"] and ce["lhs"] != ce["rhs"]
         assert r.corrected and r.cause in ("conversion", "erratum", "unknown")
-        assert r.numeric["printed_residual"] > 1e-12
+        res = r.numeric["printed_residual"]
+        assert res == "shape mismatch" or res > 1e-12
     if r.verdict == "verified":
         assert r.numeric["max_residual"] < 1e-30
 

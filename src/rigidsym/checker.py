@@ -72,6 +72,11 @@ def explicit(x, model: dict | None = None):
     if isinstance(x, sp.MatrixBase | sp.MatrixExpr):
         y = x.xreplace(model) if model else x
         if isinstance(y, sp.MatrixExpr):
+            # explicit identities/zeros first: sympy's block products otherwise take a slow
+            # symbolic-summation path (seconds per member)
+            y = y.replace(lambda z: isinstance(z, sp.Identity | sp.ZeroMatrix),
+                          lambda z: sp.ImmutableMatrix(sp.zeros(*z.shape)) if
+                          isinstance(z, sp.ZeroMatrix) else sp.ImmutableMatrix(sp.eye(z.rows)))
             y = y.doit()
             y = y.as_explicit() if isinstance(y, sp.MatrixExpr) else y
         return sp.Matrix(y)
@@ -348,6 +353,8 @@ def check(eq: Equation | str) -> Result:
                 bad_rel = (st.printed + st.claims)[outs.index(bad)]
                 if shape_of(bad_rel.lhs) == shape_of(bad_rel.rhs):
                     printed_res, _, _ = numeric_residual([bad_rel], st.model, seed)
+                else:  # a shape mismatch cannot hold at any point
+                    printed_res = mpmath.inf
             except (Unsupported, TypeError) as exc:  # pragma: no cover
                 detail += f"; numeric of printed form failed: {exc}"
     numeric = {"points": 0, "digits": NUMERIC_DIGITS, "max_residual": None, "seed": seed}
@@ -363,7 +370,8 @@ def check(eq: Equation | str) -> Result:
                     verdict = "undecided"
                     detail = f"numeric check disagrees: residual {mpmath.nstr(worst, 5)}"
         if printed_res is not None:
-            numeric["printed_residual"] = float(printed_res)
+            numeric["printed_residual"] = (float(printed_res) if mpmath.isfinite(printed_res)
+                                           else "shape mismatch")
             if verdict == "does-not-hold" and printed_res < DIFFER_TOL:
                 verdict, detail = "undecided", "numeric check finds the printed form holding"
     except Unsupported as exc:

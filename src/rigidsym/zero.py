@@ -59,6 +59,8 @@ CANCEL_NODE_LIMIT = 2500
 #: Degree-bound limit above which exact cancellation is not attempted (multivariate gcds
 #: of high degree can take minutes; Schwartz-Zippel then decides in seconds).
 CANCEL_DEGREE_LIMIT = 160
+#: Wall-clock budget of exact cancellation, seconds (then Schwartz-Zippel decides).
+CANCEL_SECONDS = 2.0
 #: Points evaluated by the Schwartz-Zippel path.
 SZ_POINTS = 12
 
@@ -494,6 +496,45 @@ class ZeroResult:
     plan: Plan | None = None
 
 
+class _OutOfTime(Exception):
+    pass
+
+
+def _cancel_within_budget(entries, plan: Plan) -> list[int] | None:
+    """Indices of entries whose reduced numerator is non-zero; ``None`` if the budget ran out.
+
+    The budget is enforced with SIGALRM where available (main thread on POSIX): multivariate
+    gcds occasionally take minutes where Schwartz-Zippel needs a second.
+    """
+    import signal
+    import threading
+
+    gens = plan.params
+    if gens:
+        K, *_ = frac_field(gens, sp.QQ)
+        conv = K.from_expr
+    else:
+        def conv(x):
+            return sp.Rational(x)
+    timed = hasattr(signal, "setitimer") and threading.current_thread() is \
+        threading.main_thread()
+
+    def on_alarm(signum, frame):
+        raise _OutOfTime
+
+    old = signal.signal(signal.SIGALRM, on_alarm) if timed else None
+    try:
+        if timed:
+            signal.setitimer(signal.ITIMER_REAL, CANCEL_SECONDS)
+        return [i for i, e in enumerate(entries) if conv(to_rational(e, plan)) != 0]
+    except _OutOfTime:
+        return None
+    finally:
+        if timed:
+            signal.setitimer(signal.ITIMER_REAL, 0)
+            signal.signal(signal.SIGALRM, old)
+
+
 def random_point(plan: Plan, rng: random.Random) -> dict:
     """A point drawn uniformly from S^n, S = {k / 2^16 : |k| <= 2^31}."""
     return {p: Fraction(rng.randint(-(2**31), 2**31), _DEN) for p in plan.params}
@@ -541,24 +582,19 @@ def decide_zero(entries, seed: int = 0, probes: int = 2) -> ZeroResult:
                               hit[0], hit[1], plan)
         d = max(degree_bound(e, plan) for e in entries)
         if d <= CANCEL_DEGREE_LIMIT and all(_size(e) <= CANCEL_NODE_LIMIT for e in entries):
-            gens = plan.params
-            if gens:
-                K, *_ = frac_field(gens, sp.QQ)
-                conv = K.from_expr
-            else:
-                def conv(x):
-                    return sp.Rational(x)
-            for i, e in enumerate(entries):
-                r = conv(to_rational(e, plan))
-                if r != 0:
-                    hit = probe(50)
-                    if hit is None:
-                        return ZeroResult(None, "undecided",
-                                          f"entry {i} non-zero but no witness found")
-                    return ZeroResult(False, "counterexample", "non-zero after cancellation",
-                                      hit[0], hit[1], plan)
+            nonzero = _cancel_within_budget(entries, plan)
+        else:
+            nonzero = None
+        if nonzero is not None:
+            for i in nonzero:
+                hit = probe(50)
+                if hit is None:
+                    return ZeroResult(None, "undecided",
+                                      f"entry {i} non-zero but no witness found")
+                return ZeroResult(False, "counterexample", "non-zero after cancellation",
+                                  hit[0], hit[1], plan)
             return ZeroResult(True, "exact-cancel",
-                              f"numerators cancel to 0 over Q({len(gens)} parameters)",
+                              f"numerators cancel to 0 over Q({len(plan.params)} parameters)",
                               plan=plan)
         hit = probe(SZ_POINTS)
         if hit is not None:
