@@ -29,6 +29,7 @@ from rigidsym.registry import Rel, Statement, equation
 from rigidsym.symbols import TIME, scalar, unit_vector, vector
 
 from .common import I3, MS, O3, Mt, mat, motion_model, vec
+from .sec3_4_2 import twist_transfer_matrix
 
 __all__ = ["wrench_axis_point", "wrench_pitch", "wrench_transfer_matrix", "wrench_transfer"]
 
@@ -123,11 +124,6 @@ def wrench_transfer(w_A, a, p) -> sp.Matrix:
 
 
 # --------------------------------------------------------------------------- models
-def _twist_transfer_matrix(a, p) -> sp.Matrix:
-    """``U = [[1, O], [A - P, 1]]`` as defined in Eq. (3.83b) (local copy of the definition)."""
-    return block([[sp.eye(3), sp.zeros(3)], [cpm(a) - cpm(p), sp.eye(3)]])
-
-
 def _gamma() -> sp.Matrix:
     return block([[sp.zeros(3), sp.eye(3)], [sp.eye(3), sp.zeros(3)]])
 
@@ -509,7 +505,7 @@ def _transfer_model() -> dict:
     return {a: im(av), p: im(pv), A_cpm: im(cpm(av)), P_cpm: im(cpm(pv)), f: im(fv),
             n_A: im(moment(av)), n_P: im(moment(pv)),
             w_A: im(block([[moment(av)], [fv]])), w_P: im(block([[moment(pv)], [fv]])),
-            V: im(wrench_transfer_matrix(av, pv)), U: im(_twist_transfer_matrix(av, pv))}
+            V: im(wrench_transfer_matrix(av, pv)), U: im(twist_transfer_matrix(av, pv))}
 
 
 @equation("3.119a", "Wrench-transfer formula", section="3.7",
@@ -546,7 +542,7 @@ def power_transfer() -> Statement:
     """
     model = _moving_body_model()
     av, pv = model[a], model[p]
-    model.update({U: im(_twist_transfer_matrix(av, pv)), V: im(wrench_transfer_matrix(av, pv))})
+    model.update({U: im(twist_transfer_matrix(av, pv)), V: im(wrench_transfer_matrix(av, pv))})
     return Statement([Rel(t_P.T * w_P, t_A.T * U.T * V * w_A)], model,
                      claims=[Rel(t_P.T * w_P, t_A.T * w_A, "power invariance")])
 
