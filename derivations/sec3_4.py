@@ -7,7 +7,11 @@ First principles used here (nothing about the instant screw is assumed):
 
 - a rigid motion maps the reference configuration to the current one by
   ``x0 -> Q(t) x0 + c(t)``, ``Q(t)`` a generic smooth rotation, ``c(t)`` a free smooth
-  translation (:func:`rigid_motion_model`);
+  translation (:func:`rigid_motion_model`, for (3.47)-(3.51) and Theorem 3.4.1);
+- for statements about one instant, an explicit generic trajectory ``Q(t) = R(q + t u)``,
+  ``a(t) = a + t adot`` whose 1-jets cover every pose and twist
+  (:func:`instant_motion_model`); ``Omega = Qdot Q^T`` and ``omega = vect(Omega)`` are
+  computed by differentiation in both models;
 - the velocity of the body point that is at ``x`` at time ``t`` is obtained by
   differentiating ``p(t) = a(t) + Q(t) r`` at constant body vector ``r = Q^T (x - a)``
   (:func:`body_velocity`);
@@ -23,7 +27,7 @@ from functools import cache
 
 import sympy as sp
 
-from rigidsym.primitives import cpm
+from rigidsym.primitives import cpm, rotation_from_quaternion, vect
 from rigidsym.registry import Rel, Statement, equation
 from rigidsym.symbols import TIME, scalar, vector
 
@@ -63,11 +67,32 @@ def rigid_motion_model() -> dict:
 
 
 @cache
+def _instant_motion_model() -> dict:
+    """A generic motion through an instant, as an explicit trajectory (exact derivatives).
+
+    ``Q(t) = R(q + t u)``, the rational quaternion rotation (exactly proper orthogonal for
+    every ``t``), ``a(t) = a + t adot``, a body point ``p(t) = a(t) + Q(t) r`` (``r``
+    constant); ``q, u`` (4 each), ``a, adot, r`` are free parameters, so the 1-jets at
+    ``t = 0`` cover every pose, angular velocity and velocity. ``Qdot``, ``Omega = Qdot Q^T``
+    and ``omega = vect(Omega)`` are computed by differentiation at ``t = 0`` and brought to
+    lowest terms (``sympy.cancel``: exact, and keeps the expressions small).
+    """
+    t = TIME
+    q, u = vector("s34_q", n=4), vector("s34_u", n=4)
+    Qt = rotation_from_quaternion(q + t * u)
+    Qm = Qt.subs(t, 0).applyfunc(sp.cancel)
+    Qd = Qt.diff(t).subs(t, 0).applyfunc(sp.cancel)
+    Om = (Qd * Qm.T).applyfunc(sp.cancel)
+    om = vect(Om).applyfunc(sp.cancel)
+    am, adm, r = vector("s34_a"), vector("s34_adot"), vector("s34_r")
+    return {Mt.Q: _im(Qm), Mt.Q_dot: _im(Qd), Mt.Omega: _im(Om), Mt.omega: _im(om),
+            Mt.a: _im(am), Mt.a_dot: _im(adm), Mt.p: _im(am + Qm * r),
+            Mt.p_dot: _im(adm + Qd * r)}
+
+
 def instant_motion_model() -> dict:
-    """:func:`derivations.common.motion_model` with a generic rotation ``Q(t)``:
-    ``a(t)`` free, a body point ``p = a + Q r`` (``r`` constant), ``Omega``, ``omega``
-    computed from ``Q(t)``."""
-    return motion_model(invariants=False)
+    """A fresh copy of :func:`_instant_motion_model` (callers may update it)."""
+    return dict(_instant_motion_model())
 
 
 def body_velocity(x, model: dict) -> sp.Matrix:
@@ -85,13 +110,19 @@ def body_velocity(x, model: dict) -> sp.Matrix:
 
 
 @cache
-def _isa_nearest_free():
-    """ISA point nearest to ``X``, derived on free symbols ``w`` (omega), ``A``, ``Ad``.
+def _isa_free():
+    """The ISA on free symbols ``w`` (omega), ``A``, ``Ad`` (a, adot), ``X`` (a point).
 
-    1. the ISA: points ``x`` whose velocity ``Ad + CPM(w)(x - A)`` (Omega = CPM(omega) is
-       the skew matrix of Theorem 3.3.1) is parallel to ``w``: ``w x v(x) = 0``; sympy's
+    The velocity field is ``v(x) = Ad + CPM(w)(x - A)``, i.e. (3.49) with ``Omega =
+    CPM(omega)`` (``Omega`` is skew, Theorem 3.3.1, and ``omega = vect(Omega)``, (3.45)).
+
+    1. the ISA: points ``x`` whose velocity is parallel to ``w``: ``w x v(x) = 0``; sympy's
        ``linsolve`` gives the line, of which the point with free parameter 0 is taken;
-    2. the nearest point ``x1 + alpha w`` to ``X``: ``d/dalpha ||x1 + alpha w - X||^2 = 0``.
+    2. the point ``x1 + alpha w`` nearest to ``X``: ``d/dalpha ||x1 + alpha w - X||^2 = 0``;
+    3. the velocity of that point, ``v(x)``.
+
+    Returns ``(w, A, Ad, X, nearest point, its velocity)``, each cancelled to one fraction
+    (compact: the checker then substitutes the motion's ``omega``, ``a``, ``adot``).
     """
     w, A, Ad, X = (sp.Matrix(sp.symbols(f"{n}1:4", real=True)) for n in ("w", "A", "Ad", "X"))
     x = sp.Matrix(sp.symbols("x1:4", real=True))
@@ -101,19 +132,36 @@ def _isa_nearest_free():
     dist2 = ((x1 + alpha * w - X).T * (x1 + alpha * w - X))[0]
     (alpha_star,) = sp.solve(sp.diff(dist2, alpha), alpha)
     near = (x1 + alpha_star * w).applyfunc(sp.cancel)
-    return w, A, Ad, X, near
+    vel = (Ad + cpm(w) * (near - A)).applyfunc(sp.cancel)
+    return w, A, Ad, X, near, vel
+
+
+def _on_motion(expr: sp.Matrix, x_ref, model: dict) -> sp.Matrix:
+    w, A, Ad, X, _, _ = _isa_free()
+    sub = dict(zip(list(w) + list(A) + list(Ad) + list(X),
+                   list(model[Mt.omega]) + list(model[Mt.a]) + list(model[Mt.a_dot])
+                   + list(sp.Matrix(x_ref)), strict=True))
+    return expr.xreplace(sub)
 
 
 def isa_point_nearest(x_ref, model: dict) -> sp.Matrix:
     """First-principles point of the ISA nearest to ``x_ref`` (3 x 1, metres).
 
-    Singular set: ``omega = 0`` (no ISA). See :func:`_isa_nearest_free`.
+    Singular set: ``omega = 0`` (no ISA). See :func:`_isa_free`.
     """
-    w, A, Ad, X, near = _isa_nearest_free()
-    sub = dict(zip(list(w) + list(A) + list(Ad) + list(X),
-                   list(model[Mt.omega]) + list(model[Mt.a]) + list(model[Mt.a_dot])
-                   + list(sp.Matrix(x_ref)), strict=True))
-    return near.xreplace(sub)
+    return _on_motion(_isa_free()[4], x_ref, model)
+
+
+def isa_velocity(model: dict) -> sp.Matrix:
+    """First-principles velocity of the points of the ISA (3 x 1, m/s). See :func:`_isa_free`.
+    """
+    return _on_motion(_isa_free()[5], sp.zeros(3, 1), model)
+
+
+def velocity_field(x, model: dict) -> sp.Matrix:
+    """``adot + CPM(omega)(x - a)``: (3.49) with ``Omega = CPM(omega)`` (Theorem 3.3.1,
+    (3.45)); smaller than :func:`body_velocity`, used to test points for the ISA."""
+    return sp.Matrix(model[Mt.a_dot]) + cpm(model[Mt.omega]) * (sp.Matrix(x) - model[Mt.a])
 
 
 # --------------------------------------------------------------------------- Sec. 3.4

@@ -1,0 +1,527 @@
+"""Sec. 3.4.1: The instant screw of a rigid-body motion, Eqs. (3.52)-(3.70).
+
+Book: J. Angeles, *Fundamentals of Robotic Mechanical Systems*, 4th ed., Sec. 3.4.1.
+
+Models: a generic smooth motion (:func:`derivations.sec3_4.instant_motion_model`:
+``Q(t)`` a generic rotation, ``a(t)`` free, a body point ``p = a + Q r``; ``Omega = Qdot
+Q^T`` and ``omega = vect(Omega)`` computed). Points of the instant screw axis (ISA) come
+from its defining property (velocity parallel to ``omega``) and the point nearest the
+origin from minimising the distance along the ISA (:func:`derivations.sec3_4.
+isa_point_nearest`), never from the book's closed forms, which are checked against them.
+
+``||omega||`` is a book symbol whose model is ``sqrt(omega . omega)``. The zero test
+decides rational expressions only, so every checked relation is written so that the square
+roots cancel structurally (``||omega||^2``, ``||omega|| e'``, ``e' . n'``).
+Singular set of the whole subsection: ``omega = 0`` (instantaneous translation, no ISA).
+"""
+
+from __future__ import annotations
+
+from functools import cache
+
+import sympy as sp
+
+from rigidsym.primitives import cpm
+from rigidsym.registry import Rel, Statement, equation
+from rigidsym.symbols import scalar
+
+from .common import I3, MS, Mt, vec
+from .sec3_4 import cross, instant_motion_model, isa_point_nearest, isa_velocity, velocity_field
+
+Omega, omega, a, a_dot, p, p_dot = Mt.Omega, Mt.omega, Mt.a, Mt.a_dot, Mt.p, Mt.p_dot
+norm_omega = sp.Symbol("norm_omega", positive=True)  # the book's ||omega||
+v_0 = vec("v_0")  # minimum-magnitude velocity (vector), Theorem 3.4.2
+v0 = sp.Symbol("v0", real=True)  # its signed magnitude (3.52)
+pitch = sp.Symbol("p'", real=True)  # pitch of the instant screw, m/rad (3.53)
+pitch_turn = sp.Symbol("p'_turn", real=True)  # the same in m/turn (3.53)
+e_isa, n_isa = vec("e'"), vec("n'")  # direction and moment of the ISA (3.55)
+plucker_isa = MS("p_L'", 6, 1)  # Pluecker array of the ISA (3.54)
+adot_par, adot_perp = vec("adot_par"), vec("adot_perp")  # (3.56)
+pdot_par, pdot_perp = vec("pdot_par"), vec("pdot_perp")  # (3.59)
+r_isa = vec("r_isa")  # (3.62b)
+p0_isa = vec("p'_0")  # ISA point nearest the origin (3.64)
+A_isa, b_isa = MS("A_isa", 4, 3), MS("b_isa", 4, 1)  # (3.66)
+
+_im = sp.ImmutableMatrix
+_Z3 = sp.zeros(3, 1)
+
+
+# --------------------------------------------------------------------------- kernels
+def instant_screw_axis_point(omega, a, a_dot) -> sp.Matrix:
+    """Point of the instant screw axis nearest to the origin.
+
+    ``p0' = omega x (a_dot - omega x a) / ||omega||^2 = Omega (a_dot - Omega a) /
+    ||omega||^2``.
+
+    Book: Sec. 3.4.1, Eq. (3.70).
+
+    Args:
+        omega: angular velocity, 3 x 1, rad/s.
+        a: position of a body point A, 3 x 1, m.
+        a_dot: velocity of A, 3 x 1, m/s.
+
+    Returns:
+        ``p0'``, 3 x 1, m.
+
+    Notes:
+        Singular set: ``omega = 0`` (pure translation: the ISA is not defined).
+    """
+    w, a, a_dot = sp.Matrix(omega), sp.Matrix(a), sp.Matrix(a_dot)
+    W = cpm(w)
+    return W * (a_dot - W * a) / (w.T * w)[0]
+
+
+def instant_screw_pitch(omega, a_dot):
+    """Pitch of the instant screw: ``p' = a_dot . omega / ||omega||^2`` (any body point).
+
+    Book: Sec. 3.4.1, Eq. (3.53) (m/rad; the m/turn variant is ``2 pi`` times this).
+
+    Args:
+        omega: angular velocity, 3 x 1, rad/s.
+        a_dot: velocity of any body point, 3 x 1, m/s.
+
+    Returns:
+        ``p'``, scalar, m/rad.
+
+    Notes:
+        Singular set: ``omega = 0``.
+    """
+    w, a_dot = sp.Matrix(omega), sp.Matrix(a_dot)
+    return (a_dot.T * w)[0] / (w.T * w)[0]
+
+
+def instant_screw_plucker(omega, a, a_dot) -> sp.Matrix:
+    """Pluecker array of the instant screw axis: ``[e'; p0' x e']``, ``e' = omega/||omega||``.
+
+    Book: Sec. 3.4.1, Eqs. (3.54)-(3.55), with ``p0'`` of Eq. (3.70).
+
+    Args:
+        omega: angular velocity, 3 x 1, rad/s.
+        a: position of a body point A, 3 x 1, m.
+        a_dot: velocity of A, 3 x 1, m/s.
+
+    Returns:
+        6 x 1 ``[e'; n']`` (``e'`` dimensionless unit vector, ``n'`` in m); contains
+        ``sqrt(omega . omega)``.
+
+    Notes:
+        Singular set: ``omega = 0`` (the book then takes ``e'`` along the common velocity).
+    """
+    w = sp.Matrix(omega)
+    nw = sp.sqrt((w.T * w)[0])
+    p0 = instant_screw_axis_point(w, a, a_dot)
+    return sp.Matrix.vstack(w / nw, (cpm(p0) * w) / nw)
+
+
+# --------------------------------------------------------------------------- models
+@cache
+def _model() -> dict:
+    """Generic motion plus ``||omega||`` and the projector ``e e^T`` pieces."""
+    m = dict(instant_motion_model())
+    w = sp.Matrix(m[omega])
+    m[norm_omega] = sp.sqrt((w.T * w)[0])
+    return m
+
+
+def _unit_omega(m) -> sp.Matrix:
+    return sp.Matrix(m[omega]) / m[norm_omega]
+
+
+@cache
+def _isa_model() -> dict:
+    """``p`` a generic point of the ISA: ``x1 + alpha omega`` (``x1`` first principles,
+    ``alpha`` free); ``pdot`` its velocity from the motion."""
+    m = dict(_model())
+    w = sp.Matrix(m[omega])
+    x = isa_point_nearest(_Z3, m) + scalar("s341_alpha") * w
+    m.update({p: _im(x), p_dot: _im(isa_velocity(m))})
+    return m
+
+
+@cache
+def _screw_model() -> dict:
+    """``v_0``, ``v0``, ``p'``, ``e'``, ``n'``, ``p_L'``, ``p'_0`` and ``r``."""
+    m = dict(_model())
+    w, am, adm = (sp.Matrix(m[k]) for k in (omega, a, a_dot))
+    Om = sp.Matrix(m[Omega])
+    x0 = isa_point_nearest(_Z3, m)
+    v = isa_velocity(m)  # Theorem 3.4.2: the common velocity of the ISA points
+    x = x0 + scalar("s341_alpha") * w  # any point of the ISA
+    e = _unit_omega(m)
+    n = (cpm(x) * w) / m[norm_omega]  # x cross e'
+    m.update({v_0: _im(v), v0: (v.T * w)[0] / m[norm_omega],
+              pitch: instant_screw_pitch(w, adm),
+              pitch_turn: 2 * sp.pi * instant_screw_pitch(w, adm),
+              e_isa: _im(e), n_isa: _im(n), plucker_isa: _im(sp.Matrix.vstack(e, n)),
+              p0_isa: _im(x0), r_isa: _im(am + Om * adm / (w.T * w)[0]),
+              p: _im(x), p_dot: _im(v)})
+    return m
+
+
+def _projector_model(vel_sym, par, perp, base: dict) -> dict:
+    """Components of a velocity along and normal to ``omega`` (Eqs. (2.6a), (2.6b))."""
+    m = dict(base)
+    e = _unit_omega(m)
+    P = e * e.T
+    v = sp.Matrix(m[vel_sym])
+    m.update({par: _im(P * v), perp: _im((sp.eye(3) - P) * v)})
+    return m
+
+
+def _ab_model() -> dict:
+    """``A``, ``b`` of (3.66) by their definitions, ``p'_0`` from first principles."""
+    m = dict(_screw_model())
+    w, am, adm, Om = (sp.Matrix(m[k]) for k in (omega, a, a_dot, Omega))
+    m[A_isa] = _im(sp.Matrix.vstack(Om, w.T))
+    m[b_isa] = _im(sp.Matrix.vstack(Om * am + Om**2 * adm / (w.T * w)[0], sp.zeros(1, 1)))
+    return m
+
+
+_W = "omega = 0 (instantaneous translation: no ISA)"
+
+
+# --------------------------------------------------------------------------- Sec. 3.4.1
+@equation("3.52", "Minimum velocity along omega, signed magnitude v0", section="3.4.1",
+          singular=_W,
+          latex=r"\mathbf{v}_0 = v_0 \frac{\boldsymbol{\omega}}{\|\boldsymbol{\omega}\|}")
+def minimum_velocity_along_omega() -> Statement:
+    """``v_0 = v0 omega / ||omega||``.
+
+    Model: ``v_0`` is the velocity of the first-principles ISA point (common to all ISA
+    points, Theorem 3.4.2); ``v0`` its signed magnitude for the direction ``omega``:
+    ``v_0 . omega / ||omega||``. Also checked: ``v0^2 = ||v_0||^2`` (the magnitude is right,
+    which with the printed relation says ``v_0`` is parallel to ``omega``).
+
+    Book: Sec. 3.4.1, Eq. (3.52). 3-vector, m/s. Singular set: ``omega = 0``.
+    """
+    return Statement([Rel(v_0, v0 * omega / norm_omega)], _screw_model(),
+                     claims=[Rel(v0**2, v_0.T * v_0, "|v0| = ||v_0||")])
+
+
+@equation("3.53", "Pitch of the instant screw", section="3.4.1", kind="definition",
+          singular=_W,
+          latex=r"p' \equiv \frac{v_0}{\|\boldsymbol{\omega}\|} \equiv \frac{\dot{\mathbf{p}} "
+                r"\cdot \boldsymbol{\omega}}{\|\boldsymbol{\omega}\|^2} \quad \text{or} \quad p' "
+                r"\equiv \frac{2\pi v_0}{\|\boldsymbol{\omega}\|}")
+def instant_screw_pitch_definition() -> Statement:
+    """``p' = v0 / ||omega|| = pdot . omega / ||omega||^2`` (m/rad), ``2 pi v0 / ||omega||``
+    (m/turn, a second quantity ``p'_turn``).
+
+    Model of ``p'``: :func:`instant_screw_pitch` (``omega``, velocity of A). Checked: both
+    members of the chain, for a generic body point P, and the m/turn variant.
+
+    Book: Sec. 3.4.1, Eq. (3.53). Scalars. Singular set: ``omega = 0``.
+    """
+    m = dict(_screw_model())
+    gen = instant_motion_model()  # a generic body point P, not on the ISA
+    m.update({p: gen[p], p_dot: gen[p_dot]})
+    return Statement(
+        [Rel(pitch, v0 / norm_omega), Rel(pitch, (p_dot.T * omega) / norm_omega**2),
+         Rel(pitch_turn, 2 * sp.pi * v0 / norm_omega)], m, defines=("p'", "p'_turn"),
+        claims=[Rel(pitch, v0 / norm_omega, "p' = v0/||omega||"),
+                Rel(pitch, (p_dot.T * omega) / norm_omega**2, "p' = pdot.omega/||omega||^2"),
+                Rel(pitch_turn, 2 * sp.pi * v0 / norm_omega, "m/turn variant")])
+
+
+@equation("3.54", "Pluecker array of the ISA", section="3.4.1", kind="definition",
+          singular=_W,
+          latex=r"\mathbf{p}_{\mathcal{L}'} \equiv \begin{bmatrix} \mathbf{e}' \\ \mathbf{n}' "
+                r"\end{bmatrix}")
+def isa_plucker_array() -> Statement:
+    """``p_L' = [e'; n']`` (6 x 1; ``e'`` unit, ``n'`` in m).
+
+    Checked: ``||omega|| p_L' = ||omega|| instant_screw_plucker(omega, a, adot)`` (the
+    kernel, with ``n'`` taken at a generic ISA point).
+
+    Book: Sec. 3.4.1, Eq. (3.54). Singular set: ``omega = 0``.
+    """
+    m = _screw_model()
+    w, am, adm = (sp.Matrix(m[k]) for k in (omega, a, a_dot))
+    return Statement([Rel(plucker_isa, sp.BlockMatrix([[e_isa], [n_isa]]))], m,
+                     defines=("p_L'",),
+                     claims=[Rel(norm_omega * plucker_isa,
+                                 m[norm_omega] * instant_screw_plucker(w, am, adm),
+                                 "||omega|| p_L' = ||omega|| [e'; p'_0 x e']")])
+
+
+@equation("3.55", "Direction and moment of the ISA", section="3.4.1", kind="definition",
+          singular=_W,
+          latex=r"\mathbf{e}' \equiv \frac{\boldsymbol{\omega}}{\|\boldsymbol{\omega}\|}, \quad "
+                r"\mathbf{n}' \equiv \mathbf{p} \times \mathbf{e}'")
+def isa_direction_and_moment() -> Statement:
+    """``e' = omega / ||omega||``, ``n' = p x e'`` with ``p`` any point of the ISA.
+
+    Checked (square-free): ``e' . e' = 1``, ``e' . n' = 0`` (Pluecker constraint) and
+    ``||omega|| n' = p'_0 x omega`` for a generic ISA point ``p`` (the moment does not
+    depend on the point chosen on the ISA).
+
+    Book: Sec. 3.4.1, Eq. (3.55). 3-vectors (``n'`` in m). Singular set: ``omega = 0``.
+    """
+    m = _screw_model()
+    return Statement([Rel(e_isa, omega / norm_omega), Rel(n_isa, cross(p, e_isa))], m,
+                     defines=("e'", "n'"),
+                     claims=[Rel(e_isa.T * e_isa, 1, "unit e'"),
+                             Rel(e_isa.T * n_isa, 0, "e' . n' = 0"),
+                             Rel(norm_omega * n_isa, cross(p0_isa, omega), "point-free")])
+
+
+@equation("3.56", "Axial and normal components of the velocity of A", section="3.4.1",
+          singular=_W, latex=r"\dot{\mathbf{a}} \equiv \dot{\mathbf{a}}_{\parallel} + "
+                             r"\dot{\mathbf{a}}_{\perp}")
+def velocity_split() -> Statement:
+    """``adot = adot_par + adot_perp``; model from Eqs. (2.6a/b) with ``e = omega/||omega||``.
+
+    Also checked: ``omega x adot_par = 0`` and ``omega . adot_perp = 0``.
+
+    Book: Sec. 3.4.1, Eq. (3.56). 3-vectors, m/s. Singular set: ``omega = 0``.
+    """
+    m = _projector_model(a_dot, adot_par, adot_perp, _model())
+    return Statement([Rel(a_dot, adot_par + adot_perp)], m,
+                     claims=[Rel(cross(omega, adot_par), _Z3, "parallel to omega"),
+                             Rel(omega.T * adot_perp, 0, "normal to omega")])
+
+
+def _adot_parallel_corrected():
+    return omega * (a_dot.T * omega) / norm_omega**2
+
+
+@equation("3.57", "Axial and normal components of adot", section="3.4.1", singular=_W,
+          expected="does-not-hold", cause="unknown",
+          evidence="first member a_dot . omega/||omega||^2 is a scalar for the vector a_par: "
+                   "the trailing factor omega is missing",
+          latex=r"\dot{\mathbf{a}}_{\parallel} \equiv \dot{\mathbf{a}} \cdot \frac{\boldsymbol"
+                r"{\omega}}{\|\boldsymbol{\omega}\|^2} \equiv \frac{\boldsymbol{\omega} "
+                r"\boldsymbol{\omega}^T}{\|\boldsymbol{\omega}\|^2} \dot{\mathbf{a}}, \quad "
+                r"\dot{\mathbf{a}}_{\perp} \equiv \left( \mathbf{1} - \frac{\boldsymbol{\omega}"
+                r" \boldsymbol{\omega}^T}{\|\boldsymbol{\omega}\|^2} \right) \dot{\mathbf{a}} "
+                r"\equiv -\frac{1}{\|\boldsymbol{\omega}\|^2} \boldsymbol{\Omega}^2 "
+                r"\dot{\mathbf{a}}")
+def velocity_components() -> Statement:
+    """``adot_par = adot . omega/||omega||^2 (sic) = omega omega^T adot/||omega||^2``,
+    ``adot_perp = (1 - omega omega^T/||omega||^2) adot = -Omega^2 adot/||omega||^2``.
+
+    Model: projections of Eqs. (2.6a/b) onto ``e = omega/||omega||``. The first member is a
+    scalar, not a vector; corrected: ``(adot . omega/||omega||^2) omega``.
+
+    Book: Sec. 3.4.1, Eq. (3.57). 3-vectors, m/s. Singular set: ``omega = 0``.
+    """
+    m = _projector_model(a_dot, adot_par, adot_perp, _model())
+    s = norm_omega**2
+    rest = [Rel(adot_par, omega * omega.T * a_dot / s, "omega omega^T adot/||omega||^2"),
+            Rel(adot_perp, (I3 - omega * omega.T / s) * a_dot, "(1 - ...) adot"),
+            Rel(adot_perp, -Omega**2 * a_dot / s, "-Omega^2 adot/||omega||^2")]
+    return Statement([Rel(adot_par, (a_dot.T * omega) / s, "adot . omega/||omega||^2")] + rest,
+                     m, corrected=[Rel(adot_par, _adot_parallel_corrected(),
+                                       "(adot . omega/||omega||^2) omega")] + rest)
+
+
+@equation("3.58", "Square of the angular-velocity matrix", section="3.4.1",
+          latex=r"\boldsymbol{\Omega}^2 \equiv \boldsymbol{\omega} \boldsymbol{\omega}^T - "
+                r"\|\boldsymbol{\omega}\|^2 \mathbf{1}")
+def omega_matrix_squared() -> Statement:
+    """``Omega^2 = omega omega^T - ||omega||^2 1`` (Eq. (2.40) for ``Omega = Qdot Q^T``).
+
+    Book: Sec. 3.4.1, Eq. (3.58). 3 x 3, rad^2/s^2. No singular set.
+    """
+    return Statement([Rel(Omega**2, omega * omega.T - norm_omega**2 * I3)], _model())
+
+
+@equation("3.59", "Axial and normal components of the velocity of P", section="3.4.1",
+          singular=_W, expected="does-not-hold", cause="unknown",
+          evidence="the minus sign sits outside the pdot_perp underbrace: the braced term "
+                   "reads +Omega^2 adot/||omega||^2 + Omega(p - a)",
+          latex=r"\dot{\mathbf{p}} = \underbrace{\frac{\boldsymbol{\omega} \boldsymbol{\omega}"
+                r"^T}{\|\boldsymbol{\omega}\|^2} \dot{\mathbf{a}}}_{\dot{\mathbf{p}}_{\parallel}}"
+                r" - \underbrace{\frac{1}{\|\boldsymbol{\omega}\|^2} \boldsymbol{\Omega}^2 "
+                r"\dot{\mathbf{a}} + \boldsymbol{\Omega}(\mathbf{p} - \mathbf{a})}_{\dot"
+                r"{\mathbf{p}}_{\perp}}")
+def velocity_axial_normal() -> Statement:
+    """``pdot = omega omega^T adot/||omega||^2 - Omega^2 adot/||omega||^2 + Omega (p - a)``,
+    with the underbraces ``pdot_par`` (first term) and ``pdot_perp`` (the rest).
+
+    Model: a generic body point P; ``pdot_par``, ``pdot_perp`` the projections of ``pdot``
+    (Eqs. (2.6a/b)). The whole equation holds; the ``pdot_perp`` brace, read literally,
+    holds ``+Omega^2 adot/||omega||^2 + Omega (p - a)``: its first term has the wrong sign.
+
+    Book: Sec. 3.4.1, Eq. (3.59). 3-vectors, m/s. Singular set: ``omega = 0``.
+    """
+    m = _projector_model(p_dot, pdot_par, pdot_perp, _model())
+    s = norm_omega**2
+    par = omega * omega.T * a_dot / s
+    head = [Rel(p_dot, par - Omega**2 * a_dot / s + Omega * (p - a), "pdot"),
+            Rel(pdot_par, par, "pdot_par brace")]
+    return Statement(
+        head + [Rel(pdot_perp, Omega**2 * a_dot / s + Omega * (p - a), "pdot_perp brace")], m,
+        corrected=head + [Rel(pdot_perp, -Omega**2 * a_dot / s + Omega * (p - a),
+                              "pdot_perp = -Omega^2 adot/||omega||^2 + Omega (p - a)")])
+
+
+@equation("3.60", "Points with vanishing normal velocity", section="3.4.1", singular=_W,
+          latex=r"\boldsymbol{\Omega}(\mathbf{p} - \mathbf{a}) - \frac{1}{\|\boldsymbol{\omega}"
+                r"\|^2} \boldsymbol{\Omega}^2 \dot{\mathbf{a}} = \mathbf{0}")
+def normal_velocity_vanishes() -> Statement:
+    """``Omega (p - a) - Omega^2 adot / ||omega||^2 = 0`` for ``p`` on the ISA.
+
+    Model: ``p`` a generic point of the first-principles ISA. Book: Sec. 3.4.1, Eq. (3.60).
+    3-vector, m/s. Singular set: ``omega = 0``.
+    """
+    return Statement([Rel(Omega * (p - a) - Omega**2 * a_dot / norm_omega**2, _Z3)],
+                     _isa_model())
+
+
+@equation("3.61", "ISA condition, linear in p", section="3.4.1", singular=_W,
+          latex=r"\boldsymbol{\Omega} \mathbf{p} = \boldsymbol{\Omega} \left( \mathbf{a} + "
+                r"\frac{1}{\|\boldsymbol{\omega}\|^2} \boldsymbol{\Omega} \dot{\mathbf{a}} "
+                r"\right)")
+def isa_condition_linear() -> Statement:
+    """``Omega p = Omega (a + Omega adot / ||omega||^2)`` for ``p`` on the ISA.
+
+    Book: Sec. 3.4.1, Eq. (3.61). 3-vector, m/s. Singular set: ``omega = 0``.
+    """
+    return Statement([Rel(Omega * p, Omega * (a + Omega * a_dot / norm_omega**2))],
+                     _isa_model())
+
+
+@equation("3.62a", "ISA condition about r", section="3.4.1", singular=_W,
+          latex=r"\boldsymbol{\Omega}(\mathbf{p} - \mathbf{r}) = \mathbf{0}")
+def isa_condition_about_r() -> Statement:
+    """``Omega (p - r) = 0`` for ``p`` on the ISA, ``r`` of Eq. (3.62b).
+
+    Book: Sec. 3.4.1, Eq. (3.62a). 3-vector, m/s. Singular set: ``omega = 0``.
+    """
+    m = dict(_isa_model())
+    m[r_isa] = _screw_model()[r_isa]
+    return Statement([Rel(Omega * (p - r_isa), _Z3)], m)
+
+
+@equation("3.62b", "A point r of the ISA", section="3.4.1", kind="definition", singular=_W,
+          latex=r"\mathbf{r} \equiv \mathbf{a} + \frac{1}{\|\boldsymbol{\omega}\|^2} "
+                r"\boldsymbol{\Omega} \dot{\mathbf{a}}")
+def isa_point_r() -> Statement:
+    """``r = a + Omega adot / ||omega||^2``. Checked: ``omega x v(r) = 0`` (``r`` lies on
+    the ISA: its velocity, from the motion, is parallel to ``omega``).
+
+    Book: Sec. 3.4.1, Eq. (3.62b). 3-vector, m. Singular set: ``omega = 0``.
+    """
+    m = _screw_model()
+    w = sp.Matrix(m[omega])
+    return Statement([Rel(r_isa, a + Omega * a_dot / norm_omega**2)], m, defines=("r_isa",),
+                     claims=[Rel(cross(w, velocity_field(m[r_isa], m)), _Z3, "r on the ISA")])
+
+
+@equation("3.63", "The ISA point r as a solution", section="3.4.1", singular=_W,
+          latex=r"\mathbf{p} = \mathbf{r} = \mathbf{a} + \frac{1}{\|\boldsymbol{\omega}\|^2} "
+                r"\boldsymbol{\Omega} \dot{\mathbf{a}}")
+def isa_point_solution() -> Statement:
+    """``p = r = a + Omega adot / ||omega||^2``.
+
+    Model: ``p`` the first-principles ISA point nearest to A (the foot of the perpendicular
+    from A: the solution the book picks). Also checked: the printed point lies on the ISA.
+
+    Book: Sec. 3.4.1, Eq. (3.63). 3-vector, m. Singular set: ``omega = 0``.
+    """
+    m = dict(_screw_model())
+    x = isa_point_nearest(m[a], m)
+    m.update({p: _im(x), p_dot: _im(velocity_field(x, m))})
+    expr = a + Omega * a_dot / norm_omega**2
+    w = sp.Matrix(m[omega])
+    return Statement([Rel(p, r_isa), Rel(p, expr)], m,
+                     claims=[Rel(cross(w, velocity_field(m[r_isa], m)), _Z3, "on the ISA")])
+
+
+@equation("3.64", "The ISA point nearest the origin is normal to omega", section="3.4.1",
+          singular=_W, latex=r"\boldsymbol{\omega}^T \mathbf{p}'_0 = 0")
+def isa_nearest_point_normal() -> Statement:
+    """``omega^T p'_0 = 0``; ``p'_0`` by minimising the distance to the origin along the ISA.
+
+    Book: Sec. 3.4.1, Eq. (3.64). Scalar. Singular set: ``omega = 0``.
+    """
+    return Statement([Rel(omega.T * p0_isa, 0)], _screw_model())
+
+
+@equation("3.65", "Overdetermined system for p'_0", section="3.4.1", singular=_W,
+          latex=r"\mathbf{A} \mathbf{p}'_0 = \mathbf{b}")
+def isa_system() -> Statement:
+    """``A p'_0 = b`` with ``A``, ``b`` of (3.66), ``p'_0`` first principles.
+
+    Book: Sec. 3.4.1, Eq. (3.65). 4-vector. Singular set: ``omega = 0``.
+    """
+    return Statement([Rel(A_isa * p0_isa, b_isa)], _ab_model())
+
+
+@equation("3.66", "The 4 x 3 system of the ISA", section="3.4.1", kind="definition",
+          singular=_W,
+          latex=r"\mathbf{A} \equiv \begin{bmatrix} \boldsymbol{\Omega} \\ \boldsymbol{\omega}"
+                r"^T \end{bmatrix}, \quad \mathbf{b} \equiv \begin{bmatrix} \boldsymbol{\Omega} "
+                r"\mathbf{a} + (1/\|\boldsymbol{\omega}\|^2) \boldsymbol{\Omega}^2 \dot{\mathbf"
+                r"{a}} \\ 0 \end{bmatrix}")
+def isa_system_matrices() -> Statement:
+    """``A = [Omega; omega^T]`` (4 x 3), ``b = [Omega a + Omega^2 adot/||omega||^2; 0]``
+    (4 x 1). Their properties are checked in (3.65), (3.67)-(3.69).
+
+    Book: Sec. 3.4.1, Eq. (3.66). Singular set: ``omega = 0``.
+    """
+    b_top = Omega * a + Omega**2 * a_dot / norm_omega**2
+    return Statement([Rel(A_isa, sp.BlockMatrix([[Omega], [omega.T]])),
+                      Rel(b_isa, sp.BlockMatrix([[b_top], [sp.ZeroMatrix(1, 1)]]))],
+                     _ab_model(), defines=("A_isa", "b_isa"))
+
+
+@equation("3.67", "Normal equations for p'_0", section="3.4.1", singular=_W,
+          latex=r"\mathbf{A}^T \mathbf{A} \mathbf{p}'_0 = \mathbf{A}^T \mathbf{b}")
+def isa_normal_equations() -> Statement:
+    """``A^T A p'_0 = A^T b``. Book: Sec. 3.4.1, Eq. (3.67). 3-vector. Singular: ``omega = 0``.
+    """
+    return Statement([Rel(A_isa.T * A_isa * p0_isa, A_isa.T * b_isa)], _ab_model())
+
+
+@equation("3.68", "A^T A in terms of Omega", section="3.4.1",
+          latex=r"\mathbf{A}^T \mathbf{A} = \boldsymbol{\Omega}^T \boldsymbol{\Omega} + "
+                r"\boldsymbol{\omega} \boldsymbol{\omega}^T = -\boldsymbol{\Omega}^2 + "
+                r"\boldsymbol{\omega} \boldsymbol{\omega}^T")
+def isa_gram_matrix() -> Statement:
+    """``A^T A = Omega^T Omega + omega omega^T = -Omega^2 + omega omega^T``.
+
+    Book: Sec. 3.4.1, Eq. (3.68). 3 x 3, rad^2/s^2.
+    """
+    return Statement([Rel(A_isa.T * A_isa, Omega.T * Omega + omega * omega.T),
+                      Rel(A_isa.T * A_isa, -Omega**2 + omega * omega.T)], _ab_model())
+
+
+@equation("3.69", "A^T A and A^T b reduced", section="3.4.1", singular=_W,
+          latex=r"\mathbf{A}^T \mathbf{A} = \|\boldsymbol{\omega}\|^2 \mathbf{1}, \quad "
+                r"\mathbf{A}^T \mathbf{b} = \boldsymbol{\Omega} (\dot{\mathbf{a}} - "
+                r"\boldsymbol{\Omega} \mathbf{a})")
+def isa_gram_reduced() -> Statement:
+    """``A^T A = ||omega||^2 1``, ``A^T b = Omega (adot - Omega a)``.
+
+    Book: Sec. 3.4.1, Eq. (3.69). Singular set (of ``b``): ``omega = 0``.
+    """
+    return Statement([Rel(A_isa.T * A_isa, norm_omega**2 * I3),
+                      Rel(A_isa.T * b_isa, Omega * (a_dot - Omega * a))], _ab_model())
+
+
+@equation("3.70", "ISA point nearest the origin", section="3.4.1", singular=_W,
+          latex=r"\mathbf{p}'_0 = \frac{\boldsymbol{\Omega} (\dot{\mathbf{a}} - \boldsymbol"
+                r"{\Omega} \mathbf{a})}{\|\boldsymbol{\omega}\|^2} \equiv \frac{\boldsymbol"
+                r"{\omega} \times (\dot{\mathbf{a}} - \boldsymbol{\omega} \times \mathbf{a})}"
+                r"{\|\boldsymbol{\omega}\|^2}")
+def isa_nearest_point() -> Statement:
+    """``p'_0 = Omega (adot - Omega a)/||omega||^2 = omega x (adot - omega x a)/||omega||^2``.
+
+    Model: ``p'_0`` by first principles (ISA from ``omega x v(x) = 0``, nearest point by
+    minimisation). Also checked on the kernel :func:`instant_screw_axis_point`: it equals
+    ``p'_0``, its velocity is parallel to ``omega`` and it is normal to ``omega``.
+
+    Book: Sec. 3.4.1, Eq. (3.70). 3-vector, m. Singular set: ``omega = 0``.
+    """
+    m = _screw_model()
+    w, am, adm = (sp.Matrix(m[k]) for k in (omega, a, a_dot))
+    k = instant_screw_axis_point(w, am, adm)
+    return Statement(
+        [Rel(p0_isa, Omega * (a_dot - Omega * a) / norm_omega**2),
+         Rel(p0_isa, cross(omega, a_dot - cross(omega, a)) / norm_omega**2)], m,
+        derived=k,
+        claims=[Rel(p0_isa, k, "kernel instant_screw_axis_point"),
+                Rel(cross(w, velocity_field(k, m)), _Z3, "kernel point on the ISA"),
+                Rel(w.T * k, sp.zeros(1, 1), "kernel point normal to omega")])
