@@ -123,15 +123,11 @@ def cmd_show(args) -> int:
               f"expected: {eq.expected}]")
         print(f"declared in {eq.module}.{eq.function}  ({os.path.relpath(src)})")
         print(f"printed LaTeX: {eq.latex}")
-        for r in st.printed:
-            print("\nprinted:")
-            print(sp.pretty(sp.Eq(r.lhs, r.rhs, evaluate=False) if not hasattr(r.lhs, "shape")
-                            else r.lhs, use_unicode=True), " =")
-            print(sp.pretty(r.rhs, use_unicode=True))
-        if st.corrected:
-            for r in st.corrected:
-                print("\ncorrected:")
-                print(sp.pretty(r.lhs, use_unicode=True), " =")
+        for label, rels in (("printed", st.printed), ("corrected", st.corrected or [])):
+            for r in rels:
+                print(f"\n{label}{' (' + r.label + ')' if r.label else ''}:")
+                print(sp.pretty(r.lhs, use_unicode=True))
+                print("  =")
                 print(sp.pretty(r.rhs, use_unicode=True))
         if eq.singular:
             print(f"\nsingular set: {eq.singular}")
