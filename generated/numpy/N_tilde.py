@@ -43,23 +43,26 @@ def _main(e_0, e_1, e_2, phi):
         x2,
         e_2,
     ), (
+    ), (
     )
 
 
 def N_tilde(e, phi, out_N_tilde):
     """Evaluate on ``n`` samples; write the outputs; return the singular mask ``(n,)``."""
     _n = e.shape[0]
-    e_f = e.reshape(_n, 3)
-    e_s = tuple(e_f[:, _i] for _i in range(3))
+    # one transposing copy: every component then is a contiguous array
+    e_s = tuple(numpy.ascontiguousarray(e.reshape(_n, 3).T))
     phi_s = (phi,)
     _cols = e_s + phi_s
     _outs = (out_N_tilde.reshape(_n, 12), )
     _bad = numpy.zeros(_n, dtype=bool)
     with numpy.errstate(all="ignore"):
-        _vals, _dens = _main(*_cols)
+        _vals, _dens, _risky = _main(*_cols)
         _store(_outs, _vals, None)
         for _d in _dens:
             _bad |= numpy.equal(_d, 0.0)
+        for _r in _risky:    # divisions and roots: the only non-finite candidates
+            _bad |= ~numpy.isfinite(_r)
     return _bad
 
 

@@ -34,26 +34,28 @@ def _main(angles_0, angles_1, angles_2, omega_0, omega_1, omega_2):
         -x1*(-omega_0*x0 + omega_2*x4*x5 - x3*x5),
     ), (
         x0,
+    ), (
+        x1,
     )
 
 
 def euler_angle_rates_xzx_body(angles, omega, out_eta_dot):
     """Evaluate on ``n`` samples; write the outputs; return the singular mask ``(n,)``."""
     _n = angles.shape[0]
-    angles_f = angles.reshape(_n, 3)
-    angles_s = tuple(angles_f[:, _i] for _i in range(3))
-    omega_f = omega.reshape(_n, 3)
-    omega_s = tuple(omega_f[:, _i] for _i in range(3))
+    # one transposing copy: every component then is a contiguous array
+    angles_s = tuple(numpy.ascontiguousarray(angles.reshape(_n, 3).T))
+    # one transposing copy: every component then is a contiguous array
+    omega_s = tuple(numpy.ascontiguousarray(omega.reshape(_n, 3).T))
     _cols = angles_s + omega_s
     _outs = (out_eta_dot.reshape(_n, 3), )
     _bad = numpy.zeros(_n, dtype=bool)
     with numpy.errstate(all="ignore"):
-        _vals, _dens = _main(*_cols)
+        _vals, _dens, _risky = _main(*_cols)
         _store(_outs, _vals, None)
         for _d in _dens:
             _bad |= numpy.equal(_d, 0.0)
-        for _o in _outs:
-            _bad |= ~numpy.isfinite(_o).all(axis=1)
+        for _r in _risky:    # divisions and roots: the only non-finite candidates
+            _bad |= ~numpy.isfinite(_r)
     return _bad
 
 

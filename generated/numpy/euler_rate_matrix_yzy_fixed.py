@@ -36,22 +36,25 @@ def _main(angles_0, angles_1, angles_2):
         x2,
         x0*x1,
     ), (
+    ), (
     )
 
 
 def euler_rate_matrix_yzy_fixed(angles, out_W):
     """Evaluate on ``n`` samples; write the outputs; return the singular mask ``(n,)``."""
     _n = angles.shape[0]
-    angles_f = angles.reshape(_n, 3)
-    angles_s = tuple(angles_f[:, _i] for _i in range(3))
+    # one transposing copy: every component then is a contiguous array
+    angles_s = tuple(numpy.ascontiguousarray(angles.reshape(_n, 3).T))
     _cols = angles_s
     _outs = (out_W.reshape(_n, 9), )
     _bad = numpy.zeros(_n, dtype=bool)
     with numpy.errstate(all="ignore"):
-        _vals, _dens = _main(*_cols)
+        _vals, _dens, _risky = _main(*_cols)
         _store(_outs, _vals, None)
         for _d in _dens:
             _bad |= numpy.equal(_d, 0.0)
+        for _r in _risky:    # divisions and roots: the only non-finite candidates
+            _bad |= ~numpy.isfinite(_r)
     return _bad
 
 

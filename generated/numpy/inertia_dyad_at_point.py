@@ -75,27 +75,30 @@ def _main(I_C_00, I_C_01, I_C_02, I_C_10, I_C_11, I_C_12, I_C_20, I_C_21, I_C_22
         0,
         m,
     ), (
+    ), (
     )
 
 
 def inertia_dyad_at_point(I_C, m, c, a, out_M_A):
     """Evaluate on ``n`` samples; write the outputs; return the singular mask ``(n,)``."""
     _n = I_C.shape[0]
-    I_C_f = I_C.reshape(_n, 9)
-    I_C_s = tuple(I_C_f[:, _i] for _i in range(9))
+    # one transposing copy: every component then is a contiguous array
+    I_C_s = tuple(numpy.ascontiguousarray(I_C.reshape(_n, 9).T))
     m_s = (m,)
-    c_f = c.reshape(_n, 3)
-    c_s = tuple(c_f[:, _i] for _i in range(3))
-    a_f = a.reshape(_n, 3)
-    a_s = tuple(a_f[:, _i] for _i in range(3))
+    # one transposing copy: every component then is a contiguous array
+    c_s = tuple(numpy.ascontiguousarray(c.reshape(_n, 3).T))
+    # one transposing copy: every component then is a contiguous array
+    a_s = tuple(numpy.ascontiguousarray(a.reshape(_n, 3).T))
     _cols = I_C_s + m_s + c_s + a_s
     _outs = (out_M_A.reshape(_n, 36), )
     _bad = numpy.zeros(_n, dtype=bool)
     with numpy.errstate(all="ignore"):
-        _vals, _dens = _main(*_cols)
+        _vals, _dens, _risky = _main(*_cols)
         _store(_outs, _vals, None)
         for _d in _dens:
             _bad |= numpy.equal(_d, 0.0)
+        for _r in _risky:    # divisions and roots: the only non-finite candidates
+            _bad |= ~numpy.isfinite(_r)
     return _bad
 
 

@@ -34,28 +34,30 @@ def _main(omega_0, omega_1, omega_2, a_0, a_1, a_2, a_dot_0, a_dot_1, a_dot_2):
         x1*(a_dot_0*omega_0 + a_dot_1*omega_1 + a_dot_2*omega_2),
     ), (
         x0,
+    ), (
+        x1,
     )
 
 
 def instant_screw_point_pitch(omega, a, a_dot, out_p0, out_pitch):
     """Evaluate on ``n`` samples; write the outputs; return the singular mask ``(n,)``."""
     _n = omega.shape[0]
-    omega_f = omega.reshape(_n, 3)
-    omega_s = tuple(omega_f[:, _i] for _i in range(3))
-    a_f = a.reshape(_n, 3)
-    a_s = tuple(a_f[:, _i] for _i in range(3))
-    a_dot_f = a_dot.reshape(_n, 3)
-    a_dot_s = tuple(a_dot_f[:, _i] for _i in range(3))
+    # one transposing copy: every component then is a contiguous array
+    omega_s = tuple(numpy.ascontiguousarray(omega.reshape(_n, 3).T))
+    # one transposing copy: every component then is a contiguous array
+    a_s = tuple(numpy.ascontiguousarray(a.reshape(_n, 3).T))
+    # one transposing copy: every component then is a contiguous array
+    a_dot_s = tuple(numpy.ascontiguousarray(a_dot.reshape(_n, 3).T))
     _cols = omega_s + a_s + a_dot_s
     _outs = (out_p0.reshape(_n, 3), out_pitch.reshape(_n, 1), )
     _bad = numpy.zeros(_n, dtype=bool)
     with numpy.errstate(all="ignore"):
-        _vals, _dens = _main(*_cols)
+        _vals, _dens, _risky = _main(*_cols)
         _store(_outs, _vals, None)
         for _d in _dens:
             _bad |= numpy.equal(_d, 0.0)
-        for _o in _outs:
-            _bad |= ~numpy.isfinite(_o).all(axis=1)
+        for _r in _risky:    # divisions and roots: the only non-finite candidates
+            _bad |= ~numpy.isfinite(_r)
     return _bad
 
 

@@ -26,27 +26,30 @@ def _main(I_C_00, I_C_01, I_C_02, I_C_10, I_C_11, I_C_12, I_C_20, I_C_21, I_C_22
     return (
         (c_dot_0*c_dot_0)*x0 + (c_dot_1*c_dot_1)*x0 + (c_dot_2*c_dot_2)*x0 + (0.5)*omega_0*(I_C_00*omega_0 + I_C_10*omega_1 + I_C_20*omega_2) + (0.5)*omega_1*(I_C_01*omega_0 + I_C_11*omega_1 + I_C_21*omega_2) + (0.5)*omega_2*(I_C_02*omega_0 + I_C_12*omega_1 + I_C_22*omega_2),
     ), (
+    ), (
     )
 
 
 def kinetic_energy(I_C, m, omega, c_dot, out_T):
     """Evaluate on ``n`` samples; write the outputs; return the singular mask ``(n,)``."""
     _n = I_C.shape[0]
-    I_C_f = I_C.reshape(_n, 9)
-    I_C_s = tuple(I_C_f[:, _i] for _i in range(9))
+    # one transposing copy: every component then is a contiguous array
+    I_C_s = tuple(numpy.ascontiguousarray(I_C.reshape(_n, 9).T))
     m_s = (m,)
-    omega_f = omega.reshape(_n, 3)
-    omega_s = tuple(omega_f[:, _i] for _i in range(3))
-    c_dot_f = c_dot.reshape(_n, 3)
-    c_dot_s = tuple(c_dot_f[:, _i] for _i in range(3))
+    # one transposing copy: every component then is a contiguous array
+    omega_s = tuple(numpy.ascontiguousarray(omega.reshape(_n, 3).T))
+    # one transposing copy: every component then is a contiguous array
+    c_dot_s = tuple(numpy.ascontiguousarray(c_dot.reshape(_n, 3).T))
     _cols = I_C_s + m_s + omega_s + c_dot_s
     _outs = (out_T.reshape(_n, 1), )
     _bad = numpy.zeros(_n, dtype=bool)
     with numpy.errstate(all="ignore"):
-        _vals, _dens = _main(*_cols)
+        _vals, _dens, _risky = _main(*_cols)
         _store(_outs, _vals, None)
         for _d in _dens:
             _bad |= numpy.equal(_d, 0.0)
+        for _r in _risky:    # divisions and roots: the only non-finite candidates
+            _bad |= ~numpy.isfinite(_r)
     return _bad
 
 

@@ -45,34 +45,37 @@ def _main(o_ddot_0, o_ddot_1, o_ddot_2, Q_00, Q_01, Q_02, Q_10, Q_11, Q_12, Q_20
         Q_10*rho_ddot_M_0 + Q_11*rho_ddot_M_1 + Q_12*rho_ddot_M_2 + o_ddot_1 + rho_M_0*(Q_00*x9 + Q_10*x13 + Q_20*x11) + rho_M_1*(Q_01*x9 + Q_11*x13 + Q_21*x11) + rho_M_2*(Q_02*x9 + Q_12*x13 + Q_22*x11) + rho_dot_M_0*(Q_00*x0 - Q_20*x8) + rho_dot_M_1*(Q_01*x0 - Q_21*x8) + rho_dot_M_2*(Q_02*x0 - Q_22*x8),
         Q_20*rho_ddot_M_0 + Q_21*rho_ddot_M_1 + Q_22*rho_ddot_M_2 + o_ddot_2 + rho_M_0*(Q_00*x16 + Q_10*x15 + Q_20*x17) + rho_M_1*(Q_01*x16 + Q_11*x15 + Q_21*x17) + rho_M_2*(Q_02*x16 + Q_12*x15 + Q_22*x17) + rho_dot_M_0*(-Q_00*x14 + 2*Q_10*omega_0) + rho_dot_M_1*(-Q_01*x14 + 2*Q_11*omega_0) + rho_dot_M_2*(-Q_02*x14 + 2*Q_12*omega_0),
     ), (
+    ), (
     )
 
 
 def moving_frame_acceleration(o_ddot, Q, omega, omega_dot, rho_M, rho_dot_M, rho_ddot_M, out_p_ddot):
     """Evaluate on ``n`` samples; write the outputs; return the singular mask ``(n,)``."""
     _n = o_ddot.shape[0]
-    o_ddot_f = o_ddot.reshape(_n, 3)
-    o_ddot_s = tuple(o_ddot_f[:, _i] for _i in range(3))
-    Q_f = Q.reshape(_n, 9)
-    Q_s = tuple(Q_f[:, _i] for _i in range(9))
-    omega_f = omega.reshape(_n, 3)
-    omega_s = tuple(omega_f[:, _i] for _i in range(3))
-    omega_dot_f = omega_dot.reshape(_n, 3)
-    omega_dot_s = tuple(omega_dot_f[:, _i] for _i in range(3))
-    rho_M_f = rho_M.reshape(_n, 3)
-    rho_M_s = tuple(rho_M_f[:, _i] for _i in range(3))
-    rho_dot_M_f = rho_dot_M.reshape(_n, 3)
-    rho_dot_M_s = tuple(rho_dot_M_f[:, _i] for _i in range(3))
-    rho_ddot_M_f = rho_ddot_M.reshape(_n, 3)
-    rho_ddot_M_s = tuple(rho_ddot_M_f[:, _i] for _i in range(3))
+    # one transposing copy: every component then is a contiguous array
+    o_ddot_s = tuple(numpy.ascontiguousarray(o_ddot.reshape(_n, 3).T))
+    # one transposing copy: every component then is a contiguous array
+    Q_s = tuple(numpy.ascontiguousarray(Q.reshape(_n, 9).T))
+    # one transposing copy: every component then is a contiguous array
+    omega_s = tuple(numpy.ascontiguousarray(omega.reshape(_n, 3).T))
+    # one transposing copy: every component then is a contiguous array
+    omega_dot_s = tuple(numpy.ascontiguousarray(omega_dot.reshape(_n, 3).T))
+    # one transposing copy: every component then is a contiguous array
+    rho_M_s = tuple(numpy.ascontiguousarray(rho_M.reshape(_n, 3).T))
+    # one transposing copy: every component then is a contiguous array
+    rho_dot_M_s = tuple(numpy.ascontiguousarray(rho_dot_M.reshape(_n, 3).T))
+    # one transposing copy: every component then is a contiguous array
+    rho_ddot_M_s = tuple(numpy.ascontiguousarray(rho_ddot_M.reshape(_n, 3).T))
     _cols = o_ddot_s + Q_s + omega_s + omega_dot_s + rho_M_s + rho_dot_M_s + rho_ddot_M_s
     _outs = (out_p_ddot.reshape(_n, 3), )
     _bad = numpy.zeros(_n, dtype=bool)
     with numpy.errstate(all="ignore"):
-        _vals, _dens = _main(*_cols)
+        _vals, _dens, _risky = _main(*_cols)
         _store(_outs, _vals, None)
         for _d in _dens:
             _bad |= numpy.equal(_d, 0.0)
+        for _r in _risky:    # divisions and roots: the only non-finite candidates
+            _bad |= ~numpy.isfinite(_r)
     return _bad
 
 

@@ -44,6 +44,9 @@ def _near_pi_0(Q_00, Q_01, Q_02, Q_10, Q_11, Q_12, Q_20, Q_21, Q_22):
         numpy.arctan2(numpy.sqrt((x10*x10) + (x11*x11) + (x12*x12)), x0 + x1 + x2 - 0.5),
     ), (
         x9,
+    ), (
+        x13,
+        numpy.arctan2(numpy.sqrt((x10*x10) + (x11*x11) + (x12*x12)), x0 + x1 + x2 - 0.5),
     )
 
 
@@ -66,6 +69,9 @@ def _near_pi_1(Q_00, Q_01, Q_02, Q_10, Q_11, Q_12, Q_20, Q_21, Q_22):
         numpy.arctan2(numpy.sqrt((x7*x7) + (x8*x8) + (x9*x9)), (0.5)*Q_11 + x4),
     ), (
         x6,
+    ), (
+        x10,
+        numpy.arctan2(numpy.sqrt((x7*x7) + (x8*x8) + (x9*x9)), (0.5)*Q_11 + x4),
     )
 
 
@@ -89,6 +95,9 @@ def _near_pi_2(Q_00, Q_01, Q_02, Q_10, Q_11, Q_12, Q_20, Q_21, Q_22):
         numpy.arctan2(numpy.sqrt((x10*x10) + (x8*x8) + (x9*x9)), (0.5)*Q_22 + x5),
     ), (
         x7,
+    ), (
+        x11,
+        numpy.arctan2(numpy.sqrt((x10*x10) + (x8*x8) + (x9*x9)), (0.5)*Q_22 + x5),
     )
 
 
@@ -106,55 +115,64 @@ def _main(Q_00, Q_01, Q_02, Q_10, Q_11, Q_12, Q_20, Q_21, Q_22):
         numpy.arctan2(x4, (0.5)*Q_00 + (0.5)*Q_11 + (0.5)*Q_22 - 0.5),
     ), (
         x3,
+    ), (
+        x4,
+        x5,
     )
 
 
 def natural_invariants_from_rotation(Q, out_e, out_phi):
     """Evaluate on ``n`` samples; write the outputs; return the singular mask ``(n,)``."""
     _n = Q.shape[0]
-    Q_f = Q.reshape(_n, 9)
-    Q_s = tuple(Q_f[:, _i] for _i in range(9))
+    # one transposing copy: every component then is a contiguous array
+    Q_s = tuple(numpy.ascontiguousarray(Q.reshape(_n, 9).T))
     _cols = Q_s
     _outs = (out_e.reshape(_n, 3), out_phi.reshape(_n, 1), )
     _bad = numpy.zeros(_n, dtype=bool)
     with numpy.errstate(all="ignore"):
-        _vals, _dens = _main(*_cols)
+        _vals, _dens, _risky = _main(*_cols)
         _store(_outs, _vals, None)
         for _d in _dens:
             _bad |= numpy.equal(_d, 0.0)
+        for _r in _risky:    # divisions and roots: the only non-finite candidates
+            _bad |= ~numpy.isfinite(_r)
         _rest = numpy.ones(_n, dtype=bool)
         Q_00, Q_01, Q_02, Q_10, Q_11, Q_12, Q_20, Q_21, Q_22, = _cols
         _hit = numpy.logical_and(_rest, numpy.logical_and.reduce((numpy.greater_equal(Q_00, Q_11),numpy.greater_equal(Q_00, Q_22),numpy.less(Q_00 + Q_11 + Q_22, 0))))
         _idx = numpy.flatnonzero(_hit)
         if _idx.size:
             _rest &= ~_hit
-            _vals, _dens = _near_pi_0(*(_c[_idx] for _c in _cols))
+            _vals, _dens, _risky = _near_pi_0(*(_c[_idx] for _c in _cols))
             _store(_outs, _vals, _idx)
             _bad[_idx] = False
             for _d in _dens:
                 _bad[_idx] |= numpy.equal(_d, 0.0)
+            for _r in _risky:
+                _bad[_idx] |= ~numpy.isfinite(_r)
         Q_00, Q_01, Q_02, Q_10, Q_11, Q_12, Q_20, Q_21, Q_22, = _cols
         _hit = numpy.logical_and(_rest, numpy.logical_and.reduce((numpy.greater_equal(Q_11, Q_00),numpy.greater_equal(Q_11, Q_22),numpy.less(Q_00 + Q_11 + Q_22, 0))))
         _idx = numpy.flatnonzero(_hit)
         if _idx.size:
             _rest &= ~_hit
-            _vals, _dens = _near_pi_1(*(_c[_idx] for _c in _cols))
+            _vals, _dens, _risky = _near_pi_1(*(_c[_idx] for _c in _cols))
             _store(_outs, _vals, _idx)
             _bad[_idx] = False
             for _d in _dens:
                 _bad[_idx] |= numpy.equal(_d, 0.0)
+            for _r in _risky:
+                _bad[_idx] |= ~numpy.isfinite(_r)
         Q_00, Q_01, Q_02, Q_10, Q_11, Q_12, Q_20, Q_21, Q_22, = _cols
         _hit = numpy.logical_and(_rest, numpy.logical_and.reduce((numpy.greater_equal(Q_22, Q_00),numpy.greater_equal(Q_22, Q_11),numpy.less(Q_00 + Q_11 + Q_22, 0))))
         _idx = numpy.flatnonzero(_hit)
         if _idx.size:
             _rest &= ~_hit
-            _vals, _dens = _near_pi_2(*(_c[_idx] for _c in _cols))
+            _vals, _dens, _risky = _near_pi_2(*(_c[_idx] for _c in _cols))
             _store(_outs, _vals, _idx)
             _bad[_idx] = False
             for _d in _dens:
                 _bad[_idx] |= numpy.equal(_d, 0.0)
-        for _o in _outs:
-            _bad |= ~numpy.isfinite(_o).all(axis=1)
+            for _r in _risky:
+                _bad[_idx] |= ~numpy.isfinite(_r)
     return _bad
 
 

@@ -33,33 +33,36 @@ def _main(I_C_00, I_C_01, I_C_02, I_C_10, I_C_11, I_C_12, I_C_20, I_C_21, I_C_22
         c_ddot_1*m - f_1,
         c_ddot_2*m - f_2,
     ), (
+    ), (
     )
 
 
 def newton_euler_residual(I_C, m, omega, omega_dot, c_ddot, n, f, out_r):
     """Evaluate on ``n`` samples; write the outputs; return the singular mask ``(n,)``."""
     _n = I_C.shape[0]
-    I_C_f = I_C.reshape(_n, 9)
-    I_C_s = tuple(I_C_f[:, _i] for _i in range(9))
+    # one transposing copy: every component then is a contiguous array
+    I_C_s = tuple(numpy.ascontiguousarray(I_C.reshape(_n, 9).T))
     m_s = (m,)
-    omega_f = omega.reshape(_n, 3)
-    omega_s = tuple(omega_f[:, _i] for _i in range(3))
-    omega_dot_f = omega_dot.reshape(_n, 3)
-    omega_dot_s = tuple(omega_dot_f[:, _i] for _i in range(3))
-    c_ddot_f = c_ddot.reshape(_n, 3)
-    c_ddot_s = tuple(c_ddot_f[:, _i] for _i in range(3))
-    n_f = n.reshape(_n, 3)
-    n_s = tuple(n_f[:, _i] for _i in range(3))
-    f_f = f.reshape(_n, 3)
-    f_s = tuple(f_f[:, _i] for _i in range(3))
+    # one transposing copy: every component then is a contiguous array
+    omega_s = tuple(numpy.ascontiguousarray(omega.reshape(_n, 3).T))
+    # one transposing copy: every component then is a contiguous array
+    omega_dot_s = tuple(numpy.ascontiguousarray(omega_dot.reshape(_n, 3).T))
+    # one transposing copy: every component then is a contiguous array
+    c_ddot_s = tuple(numpy.ascontiguousarray(c_ddot.reshape(_n, 3).T))
+    # one transposing copy: every component then is a contiguous array
+    n_s = tuple(numpy.ascontiguousarray(n.reshape(_n, 3).T))
+    # one transposing copy: every component then is a contiguous array
+    f_s = tuple(numpy.ascontiguousarray(f.reshape(_n, 3).T))
     _cols = I_C_s + m_s + omega_s + omega_dot_s + c_ddot_s + n_s + f_s
     _outs = (out_r.reshape(_n, 6), )
     _bad = numpy.zeros(_n, dtype=bool)
     with numpy.errstate(all="ignore"):
-        _vals, _dens = _main(*_cols)
+        _vals, _dens, _risky = _main(*_cols)
         _store(_outs, _vals, None)
         for _d in _dens:
             _bad |= numpy.equal(_d, 0.0)
+        for _r in _risky:    # divisions and roots: the only non-finite candidates
+            _bad |= ~numpy.isfinite(_r)
     return _bad
 
 

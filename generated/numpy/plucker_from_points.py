@@ -39,26 +39,28 @@ def _main(p1_0, p1_1, p1_2, p2_0, p2_1, p2_2):
         p1_0*x6 - p1_1*x5,
     ), (
         x3,
+    ), (
+        x4,
     )
 
 
 def plucker_from_points(p1, p2, out_kappa):
     """Evaluate on ``n`` samples; write the outputs; return the singular mask ``(n,)``."""
     _n = p1.shape[0]
-    p1_f = p1.reshape(_n, 3)
-    p1_s = tuple(p1_f[:, _i] for _i in range(3))
-    p2_f = p2.reshape(_n, 3)
-    p2_s = tuple(p2_f[:, _i] for _i in range(3))
+    # one transposing copy: every component then is a contiguous array
+    p1_s = tuple(numpy.ascontiguousarray(p1.reshape(_n, 3).T))
+    # one transposing copy: every component then is a contiguous array
+    p2_s = tuple(numpy.ascontiguousarray(p2.reshape(_n, 3).T))
     _cols = p1_s + p2_s
     _outs = (out_kappa.reshape(_n, 6), )
     _bad = numpy.zeros(_n, dtype=bool)
     with numpy.errstate(all="ignore"):
-        _vals, _dens = _main(*_cols)
+        _vals, _dens, _risky = _main(*_cols)
         _store(_outs, _vals, None)
         for _d in _dens:
             _bad |= numpy.equal(_d, 0.0)
-        for _o in _outs:
-            _bad |= ~numpy.isfinite(_o).all(axis=1)
+        for _r in _risky:    # divisions and roots: the only non-finite candidates
+            _bad |= ~numpy.isfinite(_r)
     return _bad
 
 

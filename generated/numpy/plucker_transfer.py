@@ -33,26 +33,29 @@ def _main(kappa_A_0, kappa_A_1, kappa_A_2, kappa_A_3, kappa_A_4, kappa_A_5, a_0,
         kappa_A_0*x0 - kappa_A_2*x2 + kappa_A_4,
         -kappa_A_0*x1 + kappa_A_1*x2 + kappa_A_5,
     ), (
+    ), (
     )
 
 
 def plucker_transfer(kappa_A, a, b, out_kappa_B):
     """Evaluate on ``n`` samples; write the outputs; return the singular mask ``(n,)``."""
     _n = kappa_A.shape[0]
-    kappa_A_f = kappa_A.reshape(_n, 6)
-    kappa_A_s = tuple(kappa_A_f[:, _i] for _i in range(6))
-    a_f = a.reshape(_n, 3)
-    a_s = tuple(a_f[:, _i] for _i in range(3))
-    b_f = b.reshape(_n, 3)
-    b_s = tuple(b_f[:, _i] for _i in range(3))
+    # one transposing copy: every component then is a contiguous array
+    kappa_A_s = tuple(numpy.ascontiguousarray(kappa_A.reshape(_n, 6).T))
+    # one transposing copy: every component then is a contiguous array
+    a_s = tuple(numpy.ascontiguousarray(a.reshape(_n, 3).T))
+    # one transposing copy: every component then is a contiguous array
+    b_s = tuple(numpy.ascontiguousarray(b.reshape(_n, 3).T))
     _cols = kappa_A_s + a_s + b_s
     _outs = (out_kappa_B.reshape(_n, 6), )
     _bad = numpy.zeros(_n, dtype=bool)
     with numpy.errstate(all="ignore"):
-        _vals, _dens = _main(*_cols)
+        _vals, _dens, _risky = _main(*_cols)
         _store(_outs, _vals, None)
         for _d in _dens:
             _bad |= numpy.equal(_d, 0.0)
+        for _r in _risky:    # divisions and roots: the only non-finite candidates
+            _bad |= ~numpy.isfinite(_r)
     return _bad
 
 

@@ -33,30 +33,33 @@ def _main(a_ddot_0, a_ddot_1, a_ddot_2, omega_0, omega_1, omega_2, omega_dot_0, 
         a_ddot_1 - omega_0*x3 + omega_2*x5 - omega_dot_0*x0 + omega_dot_2*x2,
         a_ddot_2 + omega_0*x4 - omega_1*x5 + omega_dot_0*x1 - omega_dot_1*x2,
     ), (
+    ), (
     )
 
 
 def point_acceleration(a_ddot, omega, omega_dot, p, a, out_p_ddot):
     """Evaluate on ``n`` samples; write the outputs; return the singular mask ``(n,)``."""
     _n = a_ddot.shape[0]
-    a_ddot_f = a_ddot.reshape(_n, 3)
-    a_ddot_s = tuple(a_ddot_f[:, _i] for _i in range(3))
-    omega_f = omega.reshape(_n, 3)
-    omega_s = tuple(omega_f[:, _i] for _i in range(3))
-    omega_dot_f = omega_dot.reshape(_n, 3)
-    omega_dot_s = tuple(omega_dot_f[:, _i] for _i in range(3))
-    p_f = p.reshape(_n, 3)
-    p_s = tuple(p_f[:, _i] for _i in range(3))
-    a_f = a.reshape(_n, 3)
-    a_s = tuple(a_f[:, _i] for _i in range(3))
+    # one transposing copy: every component then is a contiguous array
+    a_ddot_s = tuple(numpy.ascontiguousarray(a_ddot.reshape(_n, 3).T))
+    # one transposing copy: every component then is a contiguous array
+    omega_s = tuple(numpy.ascontiguousarray(omega.reshape(_n, 3).T))
+    # one transposing copy: every component then is a contiguous array
+    omega_dot_s = tuple(numpy.ascontiguousarray(omega_dot.reshape(_n, 3).T))
+    # one transposing copy: every component then is a contiguous array
+    p_s = tuple(numpy.ascontiguousarray(p.reshape(_n, 3).T))
+    # one transposing copy: every component then is a contiguous array
+    a_s = tuple(numpy.ascontiguousarray(a.reshape(_n, 3).T))
     _cols = a_ddot_s + omega_s + omega_dot_s + p_s + a_s
     _outs = (out_p_ddot.reshape(_n, 3), )
     _bad = numpy.zeros(_n, dtype=bool)
     with numpy.errstate(all="ignore"):
-        _vals, _dens = _main(*_cols)
+        _vals, _dens, _risky = _main(*_cols)
         _store(_outs, _vals, None)
         for _d in _dens:
             _bad |= numpy.equal(_d, 0.0)
+        for _r in _risky:    # divisions and roots: the only non-finite candidates
+            _bad |= ~numpy.isfinite(_r)
     return _bad
 
 

@@ -47,22 +47,25 @@ def _main(eta_0, eta_1, eta_2, eta_3):
         eta_1*x8 + x13,
         -x12 - x2 - x3 - x4,
     ), (
+    ), (
     )
 
 
 def rotation_from_euler_rodrigues(eta, out_Q):
     """Evaluate on ``n`` samples; write the outputs; return the singular mask ``(n,)``."""
     _n = eta.shape[0]
-    eta_f = eta.reshape(_n, 4)
-    eta_s = tuple(eta_f[:, _i] for _i in range(4))
+    # one transposing copy: every component then is a contiguous array
+    eta_s = tuple(numpy.ascontiguousarray(eta.reshape(_n, 4).T))
     _cols = eta_s
     _outs = (out_Q.reshape(_n, 9), )
     _bad = numpy.zeros(_n, dtype=bool)
     with numpy.errstate(all="ignore"):
-        _vals, _dens = _main(*_cols)
+        _vals, _dens, _risky = _main(*_cols)
         _store(_outs, _vals, None)
         for _d in _dens:
             _bad |= numpy.equal(_d, 0.0)
+        for _r in _risky:    # divisions and roots: the only non-finite candidates
+            _bad |= ~numpy.isfinite(_r)
     return _bad
 
 

@@ -53,29 +53,31 @@ def _main(e_0, e_1, e_2, phi, a_0, a_1, a_2, a_prime_0, a_prime_1, a_prime_2):
         x24*(x13*x14 + x18*x19 + x2*x23*(2*x22 - 2)),
     ), (
         x1,
+    ), (
+        x24,
     )
 
 
 def screw_axis_point(e, phi, a, a_prime, out_p0):
     """Evaluate on ``n`` samples; write the outputs; return the singular mask ``(n,)``."""
     _n = e.shape[0]
-    e_f = e.reshape(_n, 3)
-    e_s = tuple(e_f[:, _i] for _i in range(3))
+    # one transposing copy: every component then is a contiguous array
+    e_s = tuple(numpy.ascontiguousarray(e.reshape(_n, 3).T))
     phi_s = (phi,)
-    a_f = a.reshape(_n, 3)
-    a_s = tuple(a_f[:, _i] for _i in range(3))
-    a_prime_f = a_prime.reshape(_n, 3)
-    a_prime_s = tuple(a_prime_f[:, _i] for _i in range(3))
+    # one transposing copy: every component then is a contiguous array
+    a_s = tuple(numpy.ascontiguousarray(a.reshape(_n, 3).T))
+    # one transposing copy: every component then is a contiguous array
+    a_prime_s = tuple(numpy.ascontiguousarray(a_prime.reshape(_n, 3).T))
     _cols = e_s + phi_s + a_s + a_prime_s
     _outs = (out_p0.reshape(_n, 3), )
     _bad = numpy.zeros(_n, dtype=bool)
     with numpy.errstate(all="ignore"):
-        _vals, _dens = _main(*_cols)
+        _vals, _dens, _risky = _main(*_cols)
         _store(_outs, _vals, None)
         for _d in _dens:
             _bad |= numpy.equal(_d, 0.0)
-        for _o in _outs:
-            _bad |= ~numpy.isfinite(_o).all(axis=1)
+        for _r in _risky:    # divisions and roots: the only non-finite candidates
+            _bad |= ~numpy.isfinite(_r)
     return _bad
 
 

@@ -84,6 +84,13 @@ def _near_pi_0(Q_00, Q_01, Q_02, Q_10, Q_11, Q_12, Q_20, Q_21, Q_22, a_0, a_1, a
         x12,
         x31,
         x20,
+    ), (
+        x16,
+        x20,
+        x32,
+        x35,
+        x37,
+        (x17*(-a_0 - x26) + x18*(-a_1 - x21) + x19*(-a_2 - x23))/x20,
     )
 
 
@@ -146,6 +153,13 @@ def _near_pi_1(Q_00, Q_01, Q_02, Q_10, Q_11, Q_12, Q_20, Q_21, Q_22, a_0, a_1, a
         x9,
         x28,
         x17,
+    ), (
+        x13,
+        x17,
+        x29,
+        x32,
+        x34,
+        (x14*(-a_0 - x23) + x15*(-a_1 - x18) + x16*(-a_2 - x20))/x17,
     )
 
 
@@ -209,6 +223,13 @@ def _near_pi_2(Q_00, Q_01, Q_02, Q_10, Q_11, Q_12, Q_20, Q_21, Q_22, a_0, a_1, a
         x10,
         x29,
         x18,
+    ), (
+        x14,
+        x18,
+        x30,
+        x33,
+        x35,
+        (x15*(-a_0 - x24) + x16*(-a_1 - x19) + x17*(-a_2 - x21))/x18,
     )
 
 
@@ -266,59 +287,72 @@ def _main(Q_00, Q_01, Q_02, Q_10, Q_11, Q_12, Q_20, Q_21, Q_22, a_0, a_1, a_2, a
         x6,
         x23,
         x12,
+    ), (
+        x7,
+        x8,
+        x24,
+        x27,
+        x29,
+        (x10*(-a_1 - x13) + x11*(-a_2 - x15) + x9*(-a_0 - x18))/x12,
     )
 
 
 def screw_of_displacement(Q, a, a_prime, out_e, out_phi, out_p0, out_pitch, out_plucker):
     """Evaluate on ``n`` samples; write the outputs; return the singular mask ``(n,)``."""
     _n = Q.shape[0]
-    Q_f = Q.reshape(_n, 9)
-    Q_s = tuple(Q_f[:, _i] for _i in range(9))
-    a_f = a.reshape(_n, 3)
-    a_s = tuple(a_f[:, _i] for _i in range(3))
-    a_prime_f = a_prime.reshape(_n, 3)
-    a_prime_s = tuple(a_prime_f[:, _i] for _i in range(3))
+    # one transposing copy: every component then is a contiguous array
+    Q_s = tuple(numpy.ascontiguousarray(Q.reshape(_n, 9).T))
+    # one transposing copy: every component then is a contiguous array
+    a_s = tuple(numpy.ascontiguousarray(a.reshape(_n, 3).T))
+    # one transposing copy: every component then is a contiguous array
+    a_prime_s = tuple(numpy.ascontiguousarray(a_prime.reshape(_n, 3).T))
     _cols = Q_s + a_s + a_prime_s
     _outs = (out_e.reshape(_n, 3), out_phi.reshape(_n, 1), out_p0.reshape(_n, 3), out_pitch.reshape(_n, 1), out_plucker.reshape(_n, 6), )
     _bad = numpy.zeros(_n, dtype=bool)
     with numpy.errstate(all="ignore"):
-        _vals, _dens = _main(*_cols)
+        _vals, _dens, _risky = _main(*_cols)
         _store(_outs, _vals, None)
         for _d in _dens:
             _bad |= numpy.equal(_d, 0.0)
+        for _r in _risky:    # divisions and roots: the only non-finite candidates
+            _bad |= ~numpy.isfinite(_r)
         _rest = numpy.ones(_n, dtype=bool)
         Q_00, Q_01, Q_02, Q_10, Q_11, Q_12, Q_20, Q_21, Q_22, a_0, a_1, a_2, a_prime_0, a_prime_1, a_prime_2, = _cols
         _hit = numpy.logical_and(_rest, numpy.logical_and.reduce((numpy.greater_equal(Q_00, Q_11),numpy.greater_equal(Q_00, Q_22),numpy.less(Q_00 + Q_11 + Q_22, 0))))
         _idx = numpy.flatnonzero(_hit)
         if _idx.size:
             _rest &= ~_hit
-            _vals, _dens = _near_pi_0(*(_c[_idx] for _c in _cols))
+            _vals, _dens, _risky = _near_pi_0(*(_c[_idx] for _c in _cols))
             _store(_outs, _vals, _idx)
             _bad[_idx] = False
             for _d in _dens:
                 _bad[_idx] |= numpy.equal(_d, 0.0)
+            for _r in _risky:
+                _bad[_idx] |= ~numpy.isfinite(_r)
         Q_00, Q_01, Q_02, Q_10, Q_11, Q_12, Q_20, Q_21, Q_22, a_0, a_1, a_2, a_prime_0, a_prime_1, a_prime_2, = _cols
         _hit = numpy.logical_and(_rest, numpy.logical_and.reduce((numpy.greater_equal(Q_11, Q_00),numpy.greater_equal(Q_11, Q_22),numpy.less(Q_00 + Q_11 + Q_22, 0))))
         _idx = numpy.flatnonzero(_hit)
         if _idx.size:
             _rest &= ~_hit
-            _vals, _dens = _near_pi_1(*(_c[_idx] for _c in _cols))
+            _vals, _dens, _risky = _near_pi_1(*(_c[_idx] for _c in _cols))
             _store(_outs, _vals, _idx)
             _bad[_idx] = False
             for _d in _dens:
                 _bad[_idx] |= numpy.equal(_d, 0.0)
+            for _r in _risky:
+                _bad[_idx] |= ~numpy.isfinite(_r)
         Q_00, Q_01, Q_02, Q_10, Q_11, Q_12, Q_20, Q_21, Q_22, a_0, a_1, a_2, a_prime_0, a_prime_1, a_prime_2, = _cols
         _hit = numpy.logical_and(_rest, numpy.logical_and.reduce((numpy.greater_equal(Q_22, Q_00),numpy.greater_equal(Q_22, Q_11),numpy.less(Q_00 + Q_11 + Q_22, 0))))
         _idx = numpy.flatnonzero(_hit)
         if _idx.size:
             _rest &= ~_hit
-            _vals, _dens = _near_pi_2(*(_c[_idx] for _c in _cols))
+            _vals, _dens, _risky = _near_pi_2(*(_c[_idx] for _c in _cols))
             _store(_outs, _vals, _idx)
             _bad[_idx] = False
             for _d in _dens:
                 _bad[_idx] |= numpy.equal(_d, 0.0)
-        for _o in _outs:
-            _bad |= ~numpy.isfinite(_o).all(axis=1)
+            for _r in _risky:
+                _bad[_idx] |= ~numpy.isfinite(_r)
     return _bad
 
 

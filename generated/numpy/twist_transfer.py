@@ -33,26 +33,29 @@ def _main(t_A_0, t_A_1, t_A_2, t_A_3, t_A_4, t_A_5, a_0, a_1, a_2, p_0, p_1, p_2
         t_A_0*x0 - t_A_2*x2 + t_A_4,
         -t_A_0*x1 + t_A_1*x2 + t_A_5,
     ), (
+    ), (
     )
 
 
 def twist_transfer(t_A, a, p, out_t_P):
     """Evaluate on ``n`` samples; write the outputs; return the singular mask ``(n,)``."""
     _n = t_A.shape[0]
-    t_A_f = t_A.reshape(_n, 6)
-    t_A_s = tuple(t_A_f[:, _i] for _i in range(6))
-    a_f = a.reshape(_n, 3)
-    a_s = tuple(a_f[:, _i] for _i in range(3))
-    p_f = p.reshape(_n, 3)
-    p_s = tuple(p_f[:, _i] for _i in range(3))
+    # one transposing copy: every component then is a contiguous array
+    t_A_s = tuple(numpy.ascontiguousarray(t_A.reshape(_n, 6).T))
+    # one transposing copy: every component then is a contiguous array
+    a_s = tuple(numpy.ascontiguousarray(a.reshape(_n, 3).T))
+    # one transposing copy: every component then is a contiguous array
+    p_s = tuple(numpy.ascontiguousarray(p.reshape(_n, 3).T))
     _cols = t_A_s + a_s + p_s
     _outs = (out_t_P.reshape(_n, 6), )
     _bad = numpy.zeros(_n, dtype=bool)
     with numpy.errstate(all="ignore"):
-        _vals, _dens = _main(*_cols)
+        _vals, _dens, _risky = _main(*_cols)
         _store(_outs, _vals, None)
         for _d in _dens:
             _bad |= numpy.equal(_d, 0.0)
+        for _r in _risky:    # divisions and roots: the only non-finite candidates
+            _bad |= ~numpy.isfinite(_r)
     return _bad
 
 

@@ -46,26 +46,30 @@ def _main(w_A_0, w_A_1, w_A_2, w_A_3, w_A_4, w_A_5, a_0, a_1, a_2):
         -w_A_3*x6*x9 + w_A_4*x4*x9,
     ), (
         x0,
+    ), (
+        x1,
+        x8,
+        x9,
     )
 
 
 def wrench_axis(w_A, a, out_p0, out_pitch, out_plucker):
     """Evaluate on ``n`` samples; write the outputs; return the singular mask ``(n,)``."""
     _n = w_A.shape[0]
-    w_A_f = w_A.reshape(_n, 6)
-    w_A_s = tuple(w_A_f[:, _i] for _i in range(6))
-    a_f = a.reshape(_n, 3)
-    a_s = tuple(a_f[:, _i] for _i in range(3))
+    # one transposing copy: every component then is a contiguous array
+    w_A_s = tuple(numpy.ascontiguousarray(w_A.reshape(_n, 6).T))
+    # one transposing copy: every component then is a contiguous array
+    a_s = tuple(numpy.ascontiguousarray(a.reshape(_n, 3).T))
     _cols = w_A_s + a_s
     _outs = (out_p0.reshape(_n, 3), out_pitch.reshape(_n, 1), out_plucker.reshape(_n, 6), )
     _bad = numpy.zeros(_n, dtype=bool)
     with numpy.errstate(all="ignore"):
-        _vals, _dens = _main(*_cols)
+        _vals, _dens, _risky = _main(*_cols)
         _store(_outs, _vals, None)
         for _d in _dens:
             _bad |= numpy.equal(_d, 0.0)
-        for _o in _outs:
-            _bad |= ~numpy.isfinite(_o).all(axis=1)
+        for _r in _risky:    # divisions and roots: the only non-finite candidates
+            _bad |= ~numpy.isfinite(_r)
     return _bad
 
 

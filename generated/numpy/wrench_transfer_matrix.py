@@ -63,24 +63,27 @@ def _main(a_0, a_1, a_2, p_0, p_1, p_2):
         0,
         1,
     ), (
+    ), (
     )
 
 
 def wrench_transfer_matrix(a, p, out_V):
     """Evaluate on ``n`` samples; write the outputs; return the singular mask ``(n,)``."""
     _n = a.shape[0]
-    a_f = a.reshape(_n, 3)
-    a_s = tuple(a_f[:, _i] for _i in range(3))
-    p_f = p.reshape(_n, 3)
-    p_s = tuple(p_f[:, _i] for _i in range(3))
+    # one transposing copy: every component then is a contiguous array
+    a_s = tuple(numpy.ascontiguousarray(a.reshape(_n, 3).T))
+    # one transposing copy: every component then is a contiguous array
+    p_s = tuple(numpy.ascontiguousarray(p.reshape(_n, 3).T))
     _cols = a_s + p_s
     _outs = (out_V.reshape(_n, 36), )
     _bad = numpy.zeros(_n, dtype=bool)
     with numpy.errstate(all="ignore"):
-        _vals, _dens = _main(*_cols)
+        _vals, _dens, _risky = _main(*_cols)
         _store(_outs, _vals, None)
         for _d in _dens:
             _bad |= numpy.equal(_d, 0.0)
+        for _r in _risky:    # divisions and roots: the only non-finite candidates
+            _bad |= ~numpy.isfinite(_r)
     return _bad
 
 

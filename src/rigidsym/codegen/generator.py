@@ -177,6 +177,13 @@ def _risky(e) -> bool:
                for p in sp.preorder_traversal(e))
 
 
+def _risky_names(p: Program, printer) -> list[str]:
+    """Temporaries / outputs that divide or take a root, printed (NumPy finiteness check)."""
+    names = [str(s) for s, v in p.temps if _risky(v)]
+    names += [printer.doprint(v) for v in p.outputs if _risky(v)]
+    return names
+
+
 def _finite_check(p: Program, k: Kernel) -> str:
     """C expression that is NaN iff a division/root temporary or output is non-finite."""
     names = [str(s) for s, v in p.temps if _risky(v)]
@@ -205,7 +212,8 @@ def _render_kernel(env, kc: KernelCode) -> dict[str, str]:
     files[f"numpy/{k.name}.py"] = env.get_template(t).render(
         header=_header(kc, t), ops=kc.ops, hash=kc.hash,
         variants=[{"name": v.name, "cond": None if v.cond is None else npp.doprint(v.cond),
-                   **_program_lines(v.program, npp)} for v in kc.variants], **common)
+                   "risky": _risky_names(v.program, npp), **_program_lines(v.program, npp)}
+                  for v in kc.variants], **common)
     used = set()
     for v in kc.variants:
         for e in [*(x for _, x in v.program.temps), *v.program.outputs, *v.program.dens,
