@@ -96,17 +96,17 @@ def instant_motion_model() -> dict:
 
 
 def body_velocity(x, model: dict) -> sp.Matrix:
-    """Velocity of the body point that is at ``x`` now: ``a_dot + Qdot Q^T (x - a)``.
+    """Velocity of the body point that is at ``x`` now: ``a_dot + (Qdot Q^T)(x - a)``.
 
     Derived from the motion: the point is ``a(t) + Q(t) r`` with the constant body vector
-    ``r = Q^T (x - a)`` (``Q^T Q = 1``), whose time derivative is ``a_dot + Qdot r``.
+    ``r = Q^T (x - a)`` (``Q^T Q = 1``), whose time derivative is ``a_dot + Qdot r``; the
+    product ``Qdot Q^T`` is the model's computed (cancelled) ``Omega`` entry.
 
     Args:
         x: 3 x 1 position (metres), any sympy entries.
-        model: a motion model holding ``Q``, ``Qdot``, ``a``, ``adot``.
+        model: a motion model holding ``Omega`` (= ``Qdot Q^T``), ``a``, ``adot``.
     """
-    r = model[Mt.Q].T * (sp.Matrix(x) - model[Mt.a])
-    return sp.Matrix(model[Mt.a_dot] + model[Mt.Q_dot] * r)
+    return sp.Matrix(model[Mt.a_dot] + model[Mt.Omega] * (sp.Matrix(x) - model[Mt.a]))
 
 
 @cache
