@@ -51,18 +51,6 @@ def _blk(rows):
     return sp.BlockMatrix(rows)
 
 
-def _blocks(X):
-    """A 6 x 6 symbol as the 2 x 2 block matrix of its 3 x 3 blocks."""
-    return _blk([[X[0:3, 0:3], X[0:3, 3:6]], [X[3:6, 0:3], X[3:6, 3:6]]])
-
-
-def _bc(expr) -> sp.Matrix:
-    """A product of block matrices of book symbols, multiplied out into an explicit matrix of
-    the symbols' entries (``A[0, 1]``...). Left unexpanded, the checker would expand it
-    after substituting the model, entry by entry through symbolic sums: minutes."""
-    return sp.Matrix(sp.block_collapse(expr).as_explicit())
-
-
 @cache
 def dynamics_model() -> dict:
     """The motion model of :mod:`sec3_8` plus momenta, dyads, twist and wrench at C."""
@@ -95,7 +83,7 @@ def _dyad_from_kinetic_energy(about) -> sp.Matrix:
     """Hessian of ``T = 1/2 sum m_i ||v + omega x (p_i - about)||^2`` in ``[omega; v]``."""
     B = static_body()
     T_A = B.integral(lambda P: _sq(_TWIST_V + cpm(_TWIST_W) * (P.p - about)) / 2)
-    return sp.hessian(sp.expand(T_A), list(_TWIST_W) + list(_TWIST_V))
+    return sp.hessian(T_A, list(_TWIST_W) + list(_TWIST_V))
 
 
 @cache
@@ -309,21 +297,24 @@ def steiner_theorem_dyad_form() -> Statement:
 
     Book: Sec. 3.8, Eq. (3.148). 6x6.
     """
-    model = dyad_model()
-    D = M_A - M_C
+    model = dict(dyad_model())
+    Av, Cv, Iv, z3 = model[A], model[C], model[I_C], sp.zeros(3, 3)
     u = vector("s38_u")
-    x = _blk([[_im(u)], [(A - C).T * u]])
-    P = _blk([[C - A], [I3]])
-    R6 = _blk([[O3, C - A], [O3, I3]])
-    U = _blk([[I3, O3], [A - C, I3]])
-    top = _blk([[I_C, O3], [O3, O3]])
+    # the witness x and the corrected decomposition's matrices, as symbols valued in the model
+    x, P, R6, U, J = MS("x", 6), MS("P", 6, 3), MS("R", 6, 6), MS("U", 6, 6), MS("J", 6, 6)
+    model.update({x: _im(block([[u], [(Av - Cv).T * u]])),
+                  P: _im(block([[Cv - Av], [sp.eye(3)]])),
+                  R6: _im(block([[z3, Cv - Av], [z3, sp.eye(3)]])),
+                  U: _im(block([[sp.eye(3), z3], [Av - Cv, sp.eye(3)]])),
+                  J: _im(block([[Iv, z3], [z3, z3]]))})
+    D = M_A - M_C
     uxd = cpm(u) * (a - c)
     return Statement(
         [Rel(D[3:6, 3:6], O3, "lower-right block m P_2 P_2^T = O, so P_2 = O"),
          Rel(D[0:3, 3:6], O3, "upper-right block m P_1 P_2^T, = O since P_2 = O")],
         model,
-        claims=[Rel(_bc(x.T * D * x), -m * uxd.T * uxd,
-                    "x^T (M_A - M_C) x = -m ||u x (a - c)||^2")],
-        corrected=[Rel(M_A, _bc(top + m * P * P.T), "P = [C - A; 1]"),
-                   Rel(M_A, _bc(top + m * R6 * R6.T), "6x6 R = [[O, C - A], [O, 1]]"),
-                   Rel(M_A, _bc(U.T * _blocks(M_C) * U), "congruence U^T M_C U")])
+        claims=[Rel(x.T * D * x, -m * uxd.T * uxd,
+                    "x = [u; (A - C)^T u]: x^T (M_A - M_C) x = -m ||u x (a - c)||^2")],
+        corrected=[Rel(M_A, J + m * P * P.T, "J = diag(I_C, O), P = [C - A; 1]"),
+                   Rel(M_A, J + m * R6 * R6.T, "6x6 R = [[O, C - A], [O, 1]]"),
+                   Rel(M_A, U.T * M_C * U, "U = [[1, O], [A - C, 1]]")])
