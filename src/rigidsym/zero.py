@@ -59,8 +59,8 @@ CANCEL_NODE_LIMIT = 2500
 #: Degree-bound limit above which exact cancellation is not attempted (multivariate gcds
 #: of high degree can take minutes; Schwartz-Zippel then decides in seconds).
 CANCEL_DEGREE_LIMIT = 160
-#: Wall-clock budget of exact cancellation, seconds (then Schwartz-Zippel decides).
-CANCEL_SECONDS = 2.0
+#: CPU-time budget of exact cancellation, seconds (then Schwartz-Zippel decides).
+CANCEL_SECONDS = 0.6
 #: Points evaluated by the Schwartz-Zippel path.
 SZ_POINTS = 12
 
@@ -503,8 +503,9 @@ class _OutOfTime(Exception):
 def _cancel_within_budget(entries, plan: Plan) -> list[int] | None:
     """Indices of entries whose reduced numerator is non-zero; ``None`` if the budget ran out.
 
-    The budget is enforced with SIGALRM where available (main thread on POSIX): multivariate
-    gcds occasionally take minutes where Schwartz-Zippel needs a second.
+    The budget is process CPU time (ITIMER_VIRTUAL/SIGVTALRM, main thread on POSIX), so the
+    method chosen does not depend on how loaded the machine is: multivariate gcds
+    occasionally take minutes where Schwartz-Zippel needs a second.
     """
     import signal
     import threading
@@ -522,17 +523,17 @@ def _cancel_within_budget(entries, plan: Plan) -> list[int] | None:
     def on_alarm(signum, frame):
         raise _OutOfTime
 
-    old = signal.signal(signal.SIGALRM, on_alarm) if timed else None
+    old = signal.signal(signal.SIGVTALRM, on_alarm) if timed else None
     try:
         if timed:
-            signal.setitimer(signal.ITIMER_REAL, CANCEL_SECONDS)
+            signal.setitimer(signal.ITIMER_VIRTUAL, CANCEL_SECONDS)
         return [i for i, e in enumerate(entries) if conv(to_rational(e, plan)) != 0]
     except _OutOfTime:
         return None
     finally:
         if timed:
-            signal.setitimer(signal.ITIMER_REAL, 0)
-            signal.signal(signal.SIGALRM, old)
+            signal.setitimer(signal.ITIMER_VIRTUAL, 0)
+            signal.signal(signal.SIGVTALRM, old)
 
 
 def random_point(plan: Plan, rng: random.Random) -> dict:
