@@ -94,3 +94,17 @@ def test_a_changed_derivation_exits_1(eq_id, monkeypatch, capsys):
         assert main(["verify", eq_id, "--quiet", "--jobs", "1"]) == 1
     finally:
         registry._build.cache_clear()
+
+
+def test_an_exception_in_a_declaration_is_undecided_not_a_crash(monkeypatch, capsys):
+    def boom(st):
+        raise RecursionError("maximum recursion depth exceeded")
+
+    _mutate(monkeypatch, "3.1", boom)
+    try:
+        assert main(["verify", "3.1", "3.2", "--quiet", "--jobs", "1"]) == 1
+        out = capsys.readouterr().out
+        assert "MISMATCH (3.1): computed undecided" in out and "RecursionError" in out
+        assert "MISMATCH (3.2)" not in out
+    finally:
+        registry._build.cache_clear()

@@ -22,6 +22,7 @@ from fractions import Fraction
 import mpmath
 import sympy as sp
 from sympy.core.function import AppliedUndef
+from sympy.matrices.expressions.matexpr import MatrixElement
 
 from .registry import REGISTRY, Equation, Rel, Statement
 from .zero import Unsupported, decide_zero, evaluate, make_plan
@@ -67,21 +68,99 @@ class Result:
 
 # --------------------------------------------------------------------------- helpers
 def explicit(x, model: dict | None = None):
-    """Substitute the model and return an explicit ``sp.Matrix`` or scalar expression."""
+    """Substitute the model and return an explicit ``sp.Matrix`` or scalar expression.
+
+    Matrix expressions are evaluated structurally (blocks, sums, products, integer powers,
+    transposes, inverses, traces, determinants) on explicit operands: sympy's generic
+    ``doit()`` takes symbolic-summation and simplification paths that cost seconds or
+    minutes on block products and matrix powers.
+    """
     model = model or {}
+    key = (id(x), id(model))
+    hit = _EXPLICIT_CACHE.get(key)
+    if hit is not None and hit[0] is x:
+        return hit[1]
     if isinstance(x, sp.MatrixBase | sp.MatrixExpr):
-        y = x.xreplace(model) if model else x
-        if isinstance(y, sp.MatrixExpr):
-            # explicit identities/zeros first: sympy's block products otherwise take a slow
-            # symbolic-summation path (seconds per member)
-            y = y.replace(lambda z: isinstance(z, sp.Identity | sp.ZeroMatrix),
-                          lambda z: sp.ImmutableMatrix(sp.zeros(*z.shape)) if
-                          isinstance(z, sp.ZeroMatrix) else sp.ImmutableMatrix(sp.eye(z.rows)))
-            y = y.doit()
-            y = y.as_explicit() if isinstance(y, sp.MatrixExpr) else y
-        return sp.Matrix(y)
-    y = sp.sympify(x)
-    return y.xreplace(model).doit() if model else y
+        y = sp.Matrix(_mx(x, model))
+    else:
+        y = _sc(sp.sympify(x), model)
+    _EXPLICIT_CACHE[key] = (x, y)
+    return y
+
+
+#: explicit() results within one check (keyed by object identity; cleared per check)
+_EXPLICIT_CACHE: dict = {}
+
+
+def _sc(s, model):
+    """Explicit scalar: model substituted, matrix-valued sub-terms evaluated."""
+    y = s.xreplace(model) if model else s
+    if not y.has(sp.Trace, sp.Determinant, MatrixElement, sp.MatrixExpr):
+        return y
+
+    def ev(z):
+        if isinstance(z, sp.Trace):
+            return _mx(z.arg, {}).trace()
+        if isinstance(z, sp.Determinant):
+            return _mx(z.arg, {}).det(method="berkowitz")
+        if isinstance(z, MatrixElement):
+            return _mx(z.parent, {})[int(z.i), int(z.j)]
+        return None
+
+    out = y.replace(lambda z: isinstance(z, sp.Trace | sp.Determinant | MatrixElement), ev)
+    return out.doit() if out.has(sp.MatrixExpr) else out
+
+
+def _mx(x, model) -> sp.ImmutableMatrix:
+    """Explicit value of a matrix expression (see :func:`explicit`)."""
+    im = sp.ImmutableMatrix
+    if isinstance(x, sp.MatrixBase):
+        return im(x.xreplace(model)) if model else im(x)
+    if isinstance(x, sp.MatrixSymbol):
+        v = model.get(x)
+        return im(v) if v is not None else im(x.as_explicit())
+    if isinstance(x, sp.Identity):
+        return im(sp.eye(int(x.rows)))
+    if isinstance(x, sp.ZeroMatrix):
+        return im(sp.zeros(*(int(n) for n in x.shape)))
+    if isinstance(x, sp.MatAdd):
+        args = [_mx(a, model) for a in x.args]
+        acc = args[0]
+        for a in args[1:]:
+            acc = acc + a
+        return im(acc)
+    if isinstance(x, sp.MatMul):
+        coeff, mats = sp.S.One, []
+        for a in x.args:
+            if isinstance(a, sp.MatrixBase | sp.MatrixExpr):
+                mats.append(_mx(a, model))
+            else:
+                coeff = coeff * _sc(a, model)
+        acc = mats[0]
+        for m in mats[1:]:
+            acc = acc * m
+        return im(coeff * acc) if coeff != 1 else im(acc)
+    if isinstance(x, sp.MatPow) and x.exp.is_Integer:
+        base, n = _mx(x.base, model), int(x.exp)
+        if n < 0:
+            base, n = im(base.inv()), -n
+        acc = im(sp.eye(base.rows))
+        for _ in range(n):
+            acc = acc * base
+        return im(acc)
+    if isinstance(x, sp.Transpose):
+        return im(_mx(x.arg, model).T)
+    if isinstance(x, sp.Inverse):
+        return im(_mx(x.arg, model).inv())
+    if isinstance(x, sp.BlockMatrix):
+        blocks = x.blocks
+        rows = [[_mx(blocks[i, j], model) for j in range(blocks.cols)]
+                for i in range(blocks.rows)]
+        return im(sp.BlockMatrix(rows).as_explicit())
+    # anything else (a custom operator of a derivations module): sympy's generic path
+    y = x.xreplace(model) if model else x
+    y = y.doit()
+    return im(y.as_explicit() if isinstance(y, sp.MatrixExpr) else y)
 
 
 def shape_of(x) -> tuple[int, int]:
@@ -297,12 +376,30 @@ def check(eq: Equation | str) -> Result:
 
     Returns:
         A :class:`Result`; ``verdict`` is computed here, never read from the declaration.
+        An exception inside the declaration or the checker (a recursion limit in a huge
+        expression, say) gives ``undecided`` with the error named, never a crashed run.
     """
     if isinstance(eq, str):
         eq = REGISTRY[eq]
     t0 = time.perf_counter()
+    try:
+        return _check(eq, t0)
+    except Exception as exc:  # a defect to report as undecided, not to hide
+        return Result(
+            id=eq.id, title=eq.title, kind=eq.kind, verdict="undecided", expected=eq.expected,
+            method="undecided", printed_latex=eq.latex, printed="", derived="",
+            corrected=None, counterexample=None, cause=None,
+            numeric={"points": 0, "digits": NUMERIC_DIGITS, "max_residual": None,
+                     "seed": _seed(eq.id)},
+            seconds=round(time.perf_counter() - t0, 3), section=eq.section,
+            detail=f"{type(exc).__name__} while checking: {str(exc)[:200]}",
+            singular=eq.singular)
+
+
+def _check(eq: Equation, t0: float) -> Result:
     seed = _seed(eq.id)
     st = eq.build()
+    _EXPLICIT_CACHE.clear()
     verdict, method, detail = "undecided", "undecided", ""
     ce = None
     failing = None
