@@ -213,7 +213,8 @@ def numeric_point(plan, rng: random.Random) -> dict:
     """
     pt = {p: Fraction(rng.randint(-40, 40), rng.randint(1, 12)) for p in plan.params}
     out = {}
-    for atom, rule in plan.rules.items():
+    # sorted: the draws must not follow set/dict order, which varies with PYTHONHASHSEED
+    for atom, rule in sorted(plan.rules.items(), key=lambda kv: sp.default_sort_key(kv[0])):
         if atom == sp.pi:
             continue
         if isinstance(rule, sp.Symbol):  # a free atom, a jet, or a bare angle
@@ -221,7 +222,7 @@ def numeric_point(plan, rng: random.Random) -> dict:
         else:  # a constrained group: an exact rational point of its parametrisation
             f = evaluate(rule, plan, pt)
             out[atom] = mpmath.mpf(f.numerator) / f.denominator
-    for a in plan.angles:  # one value per angle, shared by its bare and trig occurrences
+    for a in sorted(plan.angles, key=sp.default_sort_key):  # one value per angle
         if a not in out:
             out[a] = mpmath.mpf(rng.randint(1, 10**8)) / 10**8 * 3
     return out
