@@ -192,6 +192,10 @@ def main(argv: list[str] | None = None) -> int:
     except BadInput as exc:
         print(f"rigidsym: error: {exc}", file=sys.stderr)
         return 2
+    except BrokenPipeError:  # `rigidsym exercise 3.10 | head`: the reader left, not an error
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())
+        return 0
 
 
 if __name__ == "__main__":  # pragma: no cover
