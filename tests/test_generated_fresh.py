@@ -60,3 +60,11 @@ def test_independent_of_hash_seed(tmp_path):
 def test_cli_check_exit_code(capsys):
     from rigidsym.cli import main
     assert main(["generate", "--check"]) == 0
+
+
+def test_cli_check_without_generated_folder(tmp_path, capsys):
+    """Outside a checkout (no generated/ folder): a one-line error and exit code 2."""
+    from rigidsym.cli import main
+    assert main(["generate", "--check", "--out", str(tmp_path / "generated")]) == 2
+    err = capsys.readouterr().err
+    assert "no generated/ folder here" in err and "stale" not in err

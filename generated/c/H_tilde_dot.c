@@ -19,6 +19,7 @@ int64_t rigidsym_H_tilde_dot(
 {
     /* Pass 1, branch-free so that the compiler can vectorise it: evaluate and count. */
     int64_t count = 0;
+    RIGIDSYM_SIMD_COUNT
     for (int64_t i = 0; i < n; ++i) {
         count += rigidsym_H_tilde_dot_sample(
             in_e + 3 * i,

@@ -18,6 +18,7 @@ int64_t rigidsym_L_tilde(
 {
     /* Pass 1, branch-free so that the compiler can vectorise it: evaluate and count. */
     int64_t count = 0;
+    RIGIDSYM_SIMD_COUNT
     for (int64_t i = 0; i < n; ++i) {
         count += rigidsym_L_tilde_sample(
             in_e + 3 * i,

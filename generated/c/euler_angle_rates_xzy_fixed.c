@@ -18,6 +18,7 @@ int64_t rigidsym_euler_angle_rates_xzy_fixed(
 {
     /* Pass 1, branch-free so that the compiler can vectorise it: evaluate and count. */
     int64_t count = 0;
+    RIGIDSYM_SIMD_COUNT
     for (int64_t i = 0; i < n; ++i) {
         count += rigidsym_euler_angle_rates_xzy_fixed_sample(
             in_angles + 3 * i,

@@ -20,6 +20,7 @@ int64_t rigidsym_instant_screw_point_pitch(
 {
     /* Pass 1, branch-free so that the compiler can vectorise it: evaluate and count. */
     int64_t count = 0;
+    RIGIDSYM_SIMD_COUNT
     for (int64_t i = 0; i < n; ++i) {
         count += rigidsym_instant_screw_point_pitch_sample(
             in_omega + 3 * i,

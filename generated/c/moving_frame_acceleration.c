@@ -23,6 +23,7 @@ int64_t rigidsym_moving_frame_acceleration(
 {
     /* Pass 1, branch-free so that the compiler can vectorise it: evaluate and count. */
     int64_t count = 0;
+    RIGIDSYM_SIMD_COUNT
     for (int64_t i = 0; i < n; ++i) {
         count += rigidsym_moving_frame_acceleration_sample(
             in_o_ddot + 3 * i,

@@ -21,6 +21,7 @@ int64_t rigidsym_newton_euler_wrench(
 {
     /* Pass 1, branch-free so that the compiler can vectorise it: evaluate and count. */
     int64_t count = 0;
+    RIGIDSYM_SIMD_COUNT
     for (int64_t i = 0; i < n; ++i) {
         count += rigidsym_newton_euler_wrench_sample(
             in_I_C + 9 * i,

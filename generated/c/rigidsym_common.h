@@ -19,4 +19,18 @@
 #endif
 #endif
 
+/* Vectorised sin/cos (SIMD batch loops): defined by `rigidsym build-c` when glibc's libmvec
+ * links (with -fopenmp-simd -fno-builtin-sin -fno-builtin-cos, so that sin and cos are not
+ * fused into a scalar sincos call). libmvec's sin and cos are within 4 ulp. Otherwise the
+ * batch loops are plain loops, vectorised where the compiler can. */
+#if defined(RIGIDSYM_LIBMVEC)
+#pragma omp declare simd notinbranch
+double sin(double);
+#pragma omp declare simd notinbranch
+double cos(double);
+#define RIGIDSYM_SIMD_COUNT _Pragma("omp simd reduction(+:count)")
+#else
+#define RIGIDSYM_SIMD_COUNT
+#endif
+
 #endif /* RIGIDSYM_COMMON_H */

@@ -24,6 +24,7 @@ int64_t rigidsym_screw_of_displacement(
 {
     /* Pass 1, branch-free so that the compiler can vectorise it: evaluate and count. */
     int64_t count = 0;
+    RIGIDSYM_SIMD_COUNT
     for (int64_t i = 0; i < n; ++i) {
         count += rigidsym_screw_of_displacement_sample(
             in_Q + 9 * i,

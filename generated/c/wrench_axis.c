@@ -20,6 +20,7 @@ int64_t rigidsym_wrench_axis(
 {
     /* Pass 1, branch-free so that the compiler can vectorise it: evaluate and count. */
     int64_t count = 0;
+    RIGIDSYM_SIMD_COUNT
     for (int64_t i = 0; i < n; ++i) {
         count += rigidsym_wrench_axis_sample(
             in_w_A + 6 * i,

@@ -13,7 +13,8 @@ __all__ = ["cmd_generate", "cmd_build_c"]
 
 def _generate_args(p) -> None:
     p.add_argument("--check", action="store_true",
-                   help="regenerate in memory; print a diff and exit 1 on any difference")
+                   help="regenerate in memory; print a diff and exit 1 on any difference "
+                        "(2 when there is no generated/ folder to compare with)")
     p.add_argument("--out", default=None, help="output folder (default: generated/)")
 
 
@@ -22,8 +23,13 @@ def cmd_generate(args) -> int:
     from .generator import check, default_out_dir, generate, write
 
     t0 = time.perf_counter()
-    res = generate()
     out = Path(args.out) if args.out else default_out_dir()
+    if args.check and not out.is_dir():
+        # e.g. an installed wheel: there is no checkout to compare with
+        print(f"error: no generated/ folder here ({out}): run from the repository root",
+              file=sys.stderr)
+        return 2
+    res = generate()
     for note in res.notes:
         print(f"note: {note}", file=sys.stderr)
     if args.check:
