@@ -10,8 +10,8 @@ import sympy as sp
 from rigidsym.registry import Rel, Statement, equation
 from rigidsym.symbols import scalar
 
-from .common import I3, Bk, displacement_model, vec
-from .sec3_2_1 import Det, pitch_of_displacement, screw_axis_point, with_constants
+from .common import I3, Bk, Det, displacement_model, vec
+from .sec3_2_1 import pitch_of_displacement, screw_axis_point, with_constants
 
 Q, e, phi, a, a_p, p, p_p, d_A, d_P = (Bk.Q, Bk.e, Bk.phi, Bk.a, Bk.a_prime, Bk.p,
                                        Bk.p_prime, Bk.d_A, Bk.d_P)

@@ -20,7 +20,7 @@ from rigidsym.primitives import as_vector, block, cpm, rotation_from_natural_inv
 from rigidsym.registry import Rel, Statement, equation
 from rigidsym.symbols import scalar, unit_vector, vector
 
-from .common import I3, MS, O3, Bk, displacement_model
+from .common import I3, MS, O3, Bk, Det, displacement_model
 
 Q, E, e, phi, a, a_p, d_A = Bk.Q, Bk.E, Bk.e, Bk.phi, Bk.a, Bk.a_prime, Bk.d_A
 #: book symbols of this subsection: the point P0 of the screw axis closest to the origin,
@@ -46,35 +46,6 @@ def with_constants(model: dict) -> dict:
     model[I3] = _im(sp.eye(3))
     model[O3] = _im(sp.zeros(3, 3))
     return model
-
-
-class Det(sp.Function):
-    """The book's ``det(M)`` of a square matrix expression.
-
-    Prints as ``Det(M)``; ``doit()`` substitutes the entries of an explicit ``M`` into the
-    cofactor expansion of a generic 3 x 3 (no expansion, no cancellation: shared subtrees
-    stay shared), where sympy's ``Determinant`` expands (slow) or stays unevaluated.
-    """
-
-    @classmethod
-    def eval(cls, M):
-        return None
-
-    def doit(self, **hints):
-        M = self.args[0]
-        M = M.doit(**hints) if isinstance(M, sp.Basic) else M
-        if isinstance(M, sp.MatrixExpr) and not M.atoms(sp.MatrixSymbol):
-            M = M.as_explicit()
-        if not isinstance(M, sp.MatrixBase):
-            return Det(M)
-        n = M.rows
-        if n > 3:  # larger ones here are sparse (block triangular): sympy's det is fast
-            return M.det()
-        g = sp.Matrix(n, n, [sp.Dummy() for _ in range(n * n)])
-        return g.det(method="berkowitz").xreplace(dict(zip(g, M, strict=True)))
-
-    def _sympystr(self, printer):
-        return f"Det({printer.doprint(self.args[0])})"
 
 
 # --------------------------------------------------------------------------- formulas

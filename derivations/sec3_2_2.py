@@ -18,50 +18,10 @@ from rigidsym.primitives import as_vector, block, cpm
 from rigidsym.registry import Rel, Statement, equation
 from rigidsym.symbols import scalar, unit_vector, vector
 
-from .common import I3, MS, O3, mat, vec
-from .sec3_2_1 import Det, with_constants
+from .common import I3, MS, O3, Blocks, Cross, Det, mat, vec
+from .sec3_2_1 import with_constants
 
 _im = sp.ImmutableMatrix
-
-
-class Cross(sp.MatrixExpr):
-    """The book's ``u x v`` of two 3-vectors as a matrix expression.
-
-    Prints as ``Cross(u, v)``; ``doit()`` gives the explicit cross product once both
-    factors are explicit (after the checker substitutes the model).
-    """
-
-    def __new__(cls, u, v):
-        return sp.Basic.__new__(cls, u, v)
-
-    @property
-    def shape(self):
-        return (sp.Integer(3), sp.Integer(1))
-
-    def _entry(self, i, j, **kwargs):
-        u, v = self.args
-        k, m = (i + 1) % 3, (i + 2) % 3
-        return u[k, 0] * v[m, 0] - u[m, 0] * v[k, 0]
-
-    def doit(self, **hints):
-        u, v = (a.doit(**hints) if isinstance(a, sp.Basic) else a for a in self.args)
-        u, v = (x.as_explicit() if isinstance(x, sp.MatrixExpr) and
-                not x.atoms(sp.MatrixSymbol) else x for x in (u, v))
-        if isinstance(u, sp.MatrixBase) and isinstance(v, sp.MatrixBase):
-            return _im(sp.Matrix(u).cross(sp.Matrix(v)))
-        return Cross(u, v)
-
-
-class Blocks(sp.BlockMatrix):
-    """A book block matrix (``[[1, O], [A - B, 1]]``) that becomes explicit on ``doit()``
-    once its blocks are (sympy's ``BlockMatrix`` stays symbolic inside a product, and the
-    product's ``as_explicit`` then goes through symbolic sums: slow)."""
-
-    def doit(self, **hints):
-        r = super().doit(**hints)
-        if isinstance(r, sp.BlockMatrix) and not r.atoms(sp.MatrixSymbol):
-            return _im(r.as_explicit())
-        return r
 
 
 # book symbols: two points of the line, their CPMs, a point P of it, the arrays

@@ -17,9 +17,8 @@ from rigidsym.primitives import euler_rodrigues_parameters, linear_invariants
 from rigidsym.registry import Rel, Statement, equation
 from rigidsym.symbols import rotation, vector
 
-from .common import MS, Bk, displacement_model, mat, vec
+from .common import MS, Bk, Blocks, Cross, displacement_model, mat, vec
 from .sec3_2_1 import with_constants
-from .sec3_2_2 import Blocks, Cross
 
 _im = sp.ImmutableMatrix
 e, phi, d_A = Bk.e, Bk.phi, Bk.d_A

@@ -20,9 +20,8 @@ from rigidsym.primitives import rotation_from_natural_invariants, vect
 from rigidsym.registry import Rel, Statement, equation
 from rigidsym.symbols import TIME, angle, unit_vector, vector
 
-from .common import O3, Mt, vec
+from .common import O3, Cross, Mt, vec
 from .sec3_2_1 import with_constants
-from .sec3_2_2 import Cross
 
 Q, Q_dot, Omega, omega, p, p_dot = Mt.Q, Mt.Q_dot, Mt.Omega, Mt.omega, Mt.p, Mt.p_dot
 #: position of P in the original configuration

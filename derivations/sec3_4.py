@@ -42,7 +42,13 @@ _im = sp.ImmutableMatrix
 
 
 def cross(u, v):
-    """The book's ``u x v``, transcribed as ``CPM(u) v`` (Eq. (2.38)); any 3 x 1 inputs."""
+    """The book's ``u x v``, transcribed as ``CPM(u) v`` (Eq. (2.38)); any 3 x 1 inputs.
+
+    Eager, unlike the lazy book operator :class:`derivations.common.Cross` (which prints as
+    ``Cross(u, v)`` and waits for ``doit()``): it returns an explicit 3 x 1 matrix at once,
+    and is used both in printed members and on model values inside derivations here and in
+    :mod:`derivations.sec3_4_1`. Different semantics, so it is kept, not merged into Cross.
+    """
     return cpm(u) * v
 
 
