@@ -151,6 +151,12 @@ def col_sympy_c(name: str, build: Path):
     return call
 
 
+def _mvec() -> bool:
+    """Whether the generated C was built in its libmvec variant."""
+    from rigidsym.codegen import cbuild
+    return cbuild.MVEC_FLAGS[0] in cbuild._variants(cbuild._flags())[0][0]
+
+
 def timeit(f, xs, n: int, rounds: int) -> float:
     f(*xs)
     res = []
@@ -230,7 +236,9 @@ def main(argv=None) -> int:
             "- one thread; clock: thread CPU time; outputs allocated inside each timed call; "
             "glibc malloc put in its steady large-array regime first (as peers-bench)",
             "- C: gcc -O3 -march=native (no -ffast-math); `generated C` includes the per-sample "
-            "singular/finiteness checks", "- `hand NumPy` is the peers-bench reference (a); "
+            "singular/finiteness checks" + (" and is built against glibc's libmvec (vectorised "
+                                            "sin/cos, SIMD batch loop)" if _mvec() else ""),
+            "- `hand NumPy` is the peers-bench reference (a); "
             "`sympy-cse C` is a plain sympy.cse + ccode loop over the declared expressions",
             "- regenerate: `PYTHONPATH=src:. python benchmarks/run.py`", ""]
     for N in Ns:
