@@ -20,7 +20,7 @@ from rigidsym.primitives import as_vector, block, cpm, rotation_from_natural_inv
 from rigidsym.registry import Rel, Statement, equation
 from rigidsym.symbols import scalar, unit_vector, vector
 
-from .common import I3, MS, O3, Bk, Det, displacement_model
+from .common import I3, MS, Bk, Det, displacement_model
 
 Q, E, e, phi, a, a_p, d_A = Bk.Q, Bk.E, Bk.e, Bk.phi, Bk.a, Bk.a_prime, Bk.d_A
 #: book symbols of this subsection: the point P0 of the screw axis closest to the origin,
@@ -36,15 +36,13 @@ _im = sp.ImmutableMatrix
 
 
 def with_constants(model: dict) -> dict:
-    """The model plus explicit values of the book's ``1`` and ``O`` (3 x 3).
+    """Obsolete, the identity: returns ``model`` unchanged.
 
-    The checker's ``doit()`` leaves ``Identity(3)`` unevaluated next to explicit matrices
-    (sympy 1.14), and ``as_explicit`` then goes through symbolic sums (slow) and a
-    ``Determinant`` stays unevaluated; mapping the constants to explicit matrices avoids
-    both.
+    It used to add explicit values of the book's ``1`` and ``O`` (3 x 3); the checker's
+    ``explicit()`` now evaluates ``Identity``/``ZeroMatrix`` structurally (measured: same
+    verdicts for Secs. 3.2-3.3, no slower). Kept only for the remaining call sites in
+    ``sec3_2``, ``sec3_2_3`` and ``sec3_3``; delete it with them.
     """
-    model[I3] = _im(sp.eye(3))
-    model[O3] = _im(sp.zeros(3, 3))
     return model
 
 
@@ -123,7 +121,7 @@ def screw_displacement_model() -> dict:
     model = {Q: _im(Q_), E: _im(cpm(e_)), e: _im(e_), a: _im(a_), a_p: _im(a1),
              d_A: _im(a1 - a_), p_0: _im(p0), d0_vec: _im(Q_ * p0 + c - p0)}
     model.update(screw_system_model(model))
-    return with_constants(model)
+    return model
 
 
 def screw_system_model(model: dict) -> dict:
@@ -169,7 +167,7 @@ def gram_inverse_coefficients_model(model: dict) -> dict:
 def _generic_model() -> dict:
     model = displacement_model()
     model.update(screw_system_model(model))
-    return with_constants(model)
+    return model
 
 
 # --------------------------------------------------------------------------- declarations
@@ -354,7 +352,7 @@ def screw_axis_point_formula() -> Statement:
 
     Book: Sec. 3.2.1, Eq. (3.18). Shapes: 3 x 1; metres.
     """
-    model = with_constants(displacement_model())
+    model = displacement_model()
     printed = (Q - I3).T * (Q * a - a_p) / (2 * (1 - sp.cos(phi)))
     kernel = screw_axis_point(*(model[s] for s in (Q, a, a_p)), phi)
     return Statement([Rel(e.T * printed, sp.ZeroMatrix(1, 1), "e^T p0 = 0"),

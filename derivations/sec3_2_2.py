@@ -19,7 +19,6 @@ from rigidsym.registry import Rel, Statement, equation
 from rigidsym.symbols import scalar, unit_vector, vector
 
 from .common import I3, MS, O3, Blocks, Cross, Det, mat, vec
-from .sec3_2_1 import with_constants
 
 _im = sp.ImmutableMatrix
 
@@ -122,7 +121,7 @@ def line_model() -> dict:
              gamma_L: _im(block([[p2 - p1], [p1.cross(p2 - p1)]])),
              e: _im(e_), n: _im(p1.cross(e_)),
              kappa: _im(plucker_from_points(p1, p2, length=ell))}
-    return with_constants(model)
+    return model
 
 
 def transfer_model() -> dict:
@@ -136,7 +135,7 @@ def transfer_model() -> dict:
              B: _im(cpm(b_)), n_A: _im(nA), n_B: _im(nB),
              kappa_A: _im(block([[e_], [nA]])), kappa_B: _im(block([[e_], [nB]])),
              U: _im(plucker_transfer_matrix(a_, b_))}
-    return with_constants(model)
+    return model
 
 
 # --------------------------------------------------------------------------- declarations
@@ -340,6 +339,6 @@ def plucker_array_at_infinity() -> Statement:
     model = {f: _im(f_), kappa_inf: _im(block([[sp.zeros(3, 1)], [f_]]))}
     k = kappa_inf
     return Statement([Rel(kappa_inf, Blocks([[sp.ZeroMatrix(3, 1)], [f]]))],
-                     with_constants(model), defines=("kappa_inf",),
+                     model, defines=("kappa_inf",),
                      claims=[Rel((k[3:, :].T * k[:3, :])[0, 0], 0, "n . e = 0"),
                              Rel((f.T * f)[0, 0], 1, "f is a unit vector")])
