@@ -11,7 +11,7 @@ from rigidsym.registry import Rel, Statement, equation
 from rigidsym.symbols import scalar
 
 from .common import I3, Bk, Det, displacement_model, vec
-from .sec3_2_1 import pitch_of_displacement, screw_axis_point, with_constants
+from .sec3_2_1 import pitch_of_displacement, screw_axis_point
 
 Q, e, phi, a, a_p, p, p_p, d_A, d_P = (Bk.Q, Bk.e, Bk.phi, Bk.a, Bk.a_prime, Bk.p,
                                        Bk.p_prime, Bk.d_A, Bk.d_P)
@@ -33,7 +33,7 @@ def split_model() -> dict:
     model.update({d_0: (e_.T * dA)[0, 0], d_par: _im(e_ * e_.T * dP),
                   d_perp: _im((sp.eye(3) - e_ * e_.T) * dP),
                   d0_vec: _im((e_.T * dA)[0, 0] * e_)})
-    return with_constants(model)
+    return model
 
 
 @equation("3.1", "Relative position is rotated by Q", section="3.2",
@@ -89,7 +89,7 @@ def displacement_from_reference_point() -> Statement:
     return Statement([Rel(d_P, a_p - p + Q * (p - a), "first member"),
                       Rel(d_P, a_p - a - p + Q * (p - a) + a, "second member"),
                       Rel(d_P, d_A + (Q - I3) * (p - a), "third member")],
-                     with_constants(displacement_model()))
+                     displacement_model())
 
 
 @equation("3.5", "Common axial displacement d_0", section="3.2", kind="definition",

@@ -35,17 +35,6 @@ beta = sp.Symbol("beta_AtA", real=True)
 _im = sp.ImmutableMatrix
 
 
-def with_constants(model: dict) -> dict:
-    """Obsolete, the identity: returns ``model`` unchanged.
-
-    It used to add explicit values of the book's ``1`` and ``O`` (3 x 3); the checker's
-    ``explicit()`` now evaluates ``Identity``/``ZeroMatrix`` structurally (measured: same
-    verdicts for Secs. 3.2-3.3, no slower). Kept only for the remaining call sites in
-    ``sec3_2``, ``sec3_2_3`` and ``sec3_3``; delete it with them.
-    """
-    return model
-
-
 # --------------------------------------------------------------------------- formulas
 def screw_axis_point(Q, a, a_prime, phi) -> sp.Matrix:
     """Point of the screw axis closest to the origin.

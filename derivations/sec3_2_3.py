@@ -18,7 +18,6 @@ from rigidsym.registry import Rel, Statement, equation
 from rigidsym.symbols import rotation, vector
 
 from .common import MS, Bk, Blocks, Cross, displacement_model, mat, vec
-from .sec3_2_1 import with_constants
 
 _im = sp.ImmutableMatrix
 e, phi, d_A = Bk.e, Bk.phi, Bk.d_A
@@ -47,7 +46,7 @@ def invariants_model() -> dict:
     uu, uu0 = linear_invariants(e_, phi)
     model.update({q: _im(rr), q_0: rr0, r: _im(rr), r_0: rr0, u: _im(uu), u_0: uu0})
     model[pose] = _im(sp.Matrix.vstack(rr, sp.Matrix([[rr0]]), sp.Matrix(model[d_A])))
-    return with_constants(model)
+    return model
 
 
 def triad_model() -> dict:
@@ -66,7 +65,7 @@ def triad_model() -> dict:
         model[e_i[i]] = _im(pi - a_)
         model[e_i_prime[i]] = _im((Qm * pi + c) - (Qm * a_ + c))
     model.update({q_ij[i, j]: (R.T * Qm * R)[i, j] for i in range(3) for j in range(3)})
-    return with_constants(model)
+    return model
 
 
 def _dots(left, right) -> sp.Matrix:

@@ -21,7 +21,6 @@ from rigidsym.registry import Rel, Statement, equation
 from rigidsym.symbols import TIME, angle, unit_vector, vector
 
 from .common import O3, Cross, Mt, vec
-from .sec3_2_1 import with_constants
 
 Q, Q_dot, Omega, omega, p, p_dot = Mt.Q, Mt.Q_dot, Mt.Omega, Mt.omega, Mt.p, Mt.p_dot
 #: position of P in the original configuration
@@ -43,7 +42,7 @@ def fixed_point_motion_model() -> dict:
     Om = Qd * Qm.T
     model = {Q: _im(Qm), Q_dot: _im(Qd), p_0: _im(p0), p: _im(pm), p_dot: _im(pm.diff(TIME)),
              Omega: _im(Om), omega: _im(vect(Om))}
-    return with_constants(model)
+    return model
 
 
 def _model() -> dict:
