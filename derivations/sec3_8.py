@@ -30,8 +30,14 @@ root), turn ``V`` by an orthogonal ``O`` taking its last row ``l^T`` (``|l|^2 = 
 ``sqrt(m)/2 [1, 1, 1, 1]``, and read column k of ``V O`` as ``sqrt(m_k) [p_k; 1]``: here
 ``m_k = m/4`` and ``p_k`` = its first three entries divided by ``sqrt(m)/2``. Hence every
 body, uniform or not, has the moments of some four-point body, and an identity that holds
-for every four-point body holds for every body. The checker decides the identities for
-symbolic masses and positions (every real value, not only positive ones), which is more.
+for every four-point body holds for every body. The masses of this construction are all
+positive (``m_k = m/4 > 0``), so positive point masses alone already reach every
+positive-definite moment matrix ``X``. The checker decides the identities for symbolic
+masses and positions (every real value, not only positive ones), which is more. Where a
+statement fails, :func:`with_positive_masses` rewrites the masses as ``m_i = 1 + mu_i^2`` so
+that the checker's exact counterexample is a physical body (all ``m_i >= 1``); it reaches
+the open set ``m_i >= 1``, on which a rational identity holding means it holds everywhere,
+so the verified members and corrections lose nothing.
 """
 
 from __future__ import annotations
@@ -48,7 +54,8 @@ from rigidsym.symbols import TIME, rotation, scalar, vector
 from .common import I3, mat, vec
 
 __all__ = ["inertia_at_point", "inertia_dyad_at_point", "newton_euler_wrench",
-           "kinetic_energy", "PointBody", "static_body", "moving_body", "Dy", "N_POINTS"]
+           "kinetic_energy", "PointBody", "static_body", "moving_body", "Dy", "N_POINTS",
+           "with_positive_masses"]
 
 N_POINTS = 4
 _im = sp.ImmutableMatrix
@@ -179,6 +186,20 @@ class PointBody:
 
 def _masses():
     return [scalar(f"s38_m{i}") for i in range(1, N_POINTS + 1)]
+
+
+def with_positive_masses(model: dict) -> dict:
+    """The same model with every point mass written ``m_i = 1 + mu_i^2`` (free ``mu_i``).
+
+    Positive at every real point, so a counterexample found in it is a physical body (the
+    plain model lets the checker's witness search pick ``m_i <= 0``). Nothing is lost for the
+    identities: the masses ``m_i >= 1`` it reaches form an open set, and a rational identity
+    that holds on an open set holds for every value; dimensional homogeneity (a change of the
+    unit of mass scales both members alike) also brings the ``m_k = m/4`` of the
+    four-point construction above to ``m_k >= 1``.
+    """
+    sub = {mi: 1 + scalar(f"s38_mu{i}") ** 2 for i, mi in enumerate(_masses(), start=1)}
+    return {k: v.xreplace(sub) for k, v in model.items()}
 
 
 def _body_coordinates(ms) -> list[sp.Matrix]:

@@ -34,6 +34,7 @@ from .sec3_8 import (
     newton_euler_wrench,
     static_body,
     static_model,
+    with_positive_masses,
 )
 
 _im = sp.ImmutableMatrix
@@ -295,9 +296,13 @@ def steiner_theorem_dyad_form() -> Statement:
     ``M_A = U^T M_C U``, ``U = [[1, O], [A - C, 1]]`` (the twist transfer from A to C).
     ``M_A`` is positive definite by the congruence, not by an additive split with ``M_C``.
 
+    The model is :func:`sec3_8.with_positive_masses` of the dyad model (``m_i = 1 + mu_i^2``),
+    so the counterexample is a physical body: its point gives ``mu_i``, the masses are
+    ``1 + mu_i^2 >= 1`` (e.g. ``mu = (-3/2, 1, 0, 0)``: ``m_i = (13/4, 2, 1, 1)``, ``m = 29/4``).
+
     Book: Sec. 3.8, Eq. (3.148). 6x6.
     """
-    model = dict(dyad_model())
+    model = with_positive_masses(dyad_model())
     Av, Cv, Iv, z3 = model[A], model[C], model[I_C], sp.zeros(3, 3)
     u = vector("s38_u")
     # the witness x and the corrected decomposition's matrices, as symbols valued in the model
