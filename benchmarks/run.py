@@ -154,7 +154,7 @@ def col_sympy_c(name: str, build: Path):
 def _mvec() -> bool:
     """Whether the generated C was built in its libmvec variant."""
     from rigidsym.codegen import cbuild
-    return cbuild.MVEC_FLAGS[0] in cbuild._variants(cbuild._flags())[0][0]
+    return cbuild.MVEC_FLAGS[0] in cbuild.build_variants(cbuild._flags())[0][0]
 
 
 def timeit(f, xs, n: int, rounds: int) -> float:
@@ -236,8 +236,10 @@ def main(argv=None) -> int:
             "- one thread; clock: thread CPU time; outputs allocated inside each timed call; "
             "glibc malloc put in its steady large-array regime first (as peers-bench)",
             "- C: gcc -O3 -march=native (no -ffast-math); `generated C` includes the per-sample "
-            "singular/finiteness checks" + (" and is built against glibc's libmvec (vectorised "
-                                            "sin/cos, SIMD batch loop)" if _mvec() else ""),
+            "singular/finiteness checks; kernels calling sin/cos run in blocks of 64 samples "
+            "(a loop computing the sin/cos values into stack arrays, then the per-sample loop)"
+            + (", built against glibc's libmvec (that first loop SIMD with vectorised sin/cos)"
+               if _mvec() else ""),
             "- `hand NumPy` is the peers-bench reference (a); "
             "`sympy-cse C` is a plain sympy.cse + ccode loop over the declared expressions",
             "- regenerate: `PYTHONPATH=src:. python benchmarks/run.py`", ""]

@@ -167,3 +167,25 @@ def test_c_and_numpy_agree(name):
     a, _ = run(name, arrays, "numpy")
     b, _ = run(name, arrays, "c")
     assert rel_err(a, b).max() <= 1e-14
+
+
+@pytest.mark.parametrize("name", ["N_matrix", "screw_axis_point"])
+def test_c_blocked_trig_loop_singular_rows(name):
+    """The blocked sin/cos batch loop (blocks of 64): singular rows at block edges and in a
+    partial last block are counted and written as NaN, the others equal NumPy's."""
+    if K.use_backend("c") != "c":
+        if shutil.which("gcc") or shutil.which("cc"):
+            pytest.fail("a C compiler is present but the C backend did not build")
+        pytest.skip("no C compiler")
+    kernel = AVAILABLE[name]
+    arrays = inputs(kernel, 131, seed=3)
+    bad = [0, 63, 64, 130]
+    phi = [a.name for a in kernel.args].index("phi")
+    arrays[phi][bad] = 0.0
+    a, sa = run(name, arrays, "numpy")
+    b, sb = run(name, arrays, "c")
+    assert np.flatnonzero(sb).tolist() == bad
+    assert np.isnan(b[bad]).all()
+    assert np.array_equal(sa, sb)
+    good = ~sb
+    assert rel_err(a[good], b[good]).max() <= 1e-14

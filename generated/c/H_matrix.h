@@ -54,6 +54,47 @@ static inline int rigidsym_H_matrix_sample(
     return singular;
 }
 
+
+/* The same sample with its sin/cos values given (trig_0, trig_1, computed by the
+ * vectorised loop of the blocked batch function). */
+static inline int rigidsym_H_matrix_sample_trig(
+    const double *RIGIDSYM_RESTRICT in_e,
+    const double *RIGIDSYM_RESTRICT in_phi,
+    const double trig_0,
+    const double trig_1,
+    double *RIGIDSYM_RESTRICT out_H_matrix)
+{
+    const double e_0 = in_e[0];
+    const double e_1 = in_e[1];
+    const double e_2 = in_e[2];
+    (void)in_phi;
+    int singular = 0;
+    {
+        const double x1 = (0.5)*trig_0;
+        const double x2 = (0.5)*trig_1;
+        const double x3 = e_2*x2;
+        const double x4 = e_1*x2;
+        const double x5 = -x4;
+        const double x6 = -x3;
+        const double x7 = e_0*x2;
+        const double x8 = -x7;
+        out_H_matrix[0] = x1;
+        out_H_matrix[1] = x3;
+        out_H_matrix[2] = x5;
+        out_H_matrix[3] = x6;
+        out_H_matrix[4] = x1;
+        out_H_matrix[5] = x7;
+        out_H_matrix[6] = x4;
+        out_H_matrix[7] = x8;
+        out_H_matrix[8] = x1;
+        out_H_matrix[9] = x8;
+        out_H_matrix[10] = x5;
+        out_H_matrix[11] = x6;
+    }
+    return singular;
+}
+
+
 /* Batch over n samples; singular samples are written as NaN; returns their number. */
 int64_t rigidsym_H_matrix(
     int64_t n,

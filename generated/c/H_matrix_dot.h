@@ -63,6 +63,56 @@ static inline int rigidsym_H_matrix_dot_sample(
     return singular;
 }
 
+
+/* The same sample with its sin/cos values given (trig_0, trig_1, computed by the
+ * vectorised loop of the blocked batch function). */
+static inline int rigidsym_H_matrix_dot_sample_trig(
+    const double *RIGIDSYM_RESTRICT in_e,
+    const double *RIGIDSYM_RESTRICT in_phi,
+    const double *RIGIDSYM_RESTRICT in_omega,
+    const double trig_0,
+    const double trig_1,
+    double *RIGIDSYM_RESTRICT out_H_matrix_dot)
+{
+    const double e_0 = in_e[0];
+    const double e_1 = in_e[1];
+    const double e_2 = in_e[2];
+    (void)in_phi;
+    const double omega_0 = in_omega[0];
+    const double omega_1 = in_omega[1];
+    const double omega_2 = in_omega[2];
+    int singular = 0;
+    {
+        const double x1 = trig_0;
+        const double x2 = (0.25)*x1;
+        const double x3 = e_0*x2;
+        const double x4 = e_1*x2;
+        const double x5 = e_2*x2;
+        const double x6 = -omega_0*x3 - omega_1*x4 - omega_2*x5;
+        const double x7 = (0.25)*trig_1;
+        const double x8 = omega_0*x4 - omega_1*x3 + omega_2*x7;
+        const double x9 = -0.25*e_2*omega_0*x1 + omega_1*x7 + omega_2*x3;
+        const double x10 = -x9;
+        const double x11 = -x8;
+        const double x12 = omega_0*x7 + omega_1*x5 - omega_2*x4;
+        const double x13 = -x12;
+        out_H_matrix_dot[0] = x6;
+        out_H_matrix_dot[1] = x8;
+        out_H_matrix_dot[2] = x10;
+        out_H_matrix_dot[3] = x11;
+        out_H_matrix_dot[4] = x6;
+        out_H_matrix_dot[5] = x12;
+        out_H_matrix_dot[6] = x9;
+        out_H_matrix_dot[7] = x13;
+        out_H_matrix_dot[8] = x6;
+        out_H_matrix_dot[9] = x13;
+        out_H_matrix_dot[10] = x10;
+        out_H_matrix_dot[11] = x11;
+    }
+    return singular;
+}
+
+
 /* Batch over n samples; singular samples are written as NaN; returns their number. */
 int64_t rigidsym_H_matrix_dot(
     int64_t n,

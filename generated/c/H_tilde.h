@@ -54,6 +54,47 @@ static inline int rigidsym_H_tilde_sample(
     return singular;
 }
 
+
+/* The same sample with its sin/cos values given (trig_0, trig_1, computed by the
+ * vectorised loop of the blocked batch function). */
+static inline int rigidsym_H_tilde_sample_trig(
+    const double *RIGIDSYM_RESTRICT in_e,
+    const double *RIGIDSYM_RESTRICT in_phi,
+    const double trig_0,
+    const double trig_1,
+    double *RIGIDSYM_RESTRICT out_H_tilde)
+{
+    const double e_0 = in_e[0];
+    const double e_1 = in_e[1];
+    const double e_2 = in_e[2];
+    (void)in_phi;
+    int singular = 0;
+    {
+        const double x1 = 2.0*trig_0;
+        const double x2 = 2.0*trig_1;
+        const double x3 = e_2*x2;
+        const double x4 = -x3;
+        const double x5 = e_1*x2;
+        const double x6 = e_0*x2;
+        const double x7 = -x6;
+        const double x8 = -x5;
+        out_H_tilde[0] = x1;
+        out_H_tilde[1] = x4;
+        out_H_tilde[2] = x5;
+        out_H_tilde[3] = x7;
+        out_H_tilde[4] = x3;
+        out_H_tilde[5] = x1;
+        out_H_tilde[6] = x7;
+        out_H_tilde[7] = x8;
+        out_H_tilde[8] = x8;
+        out_H_tilde[9] = x6;
+        out_H_tilde[10] = x1;
+        out_H_tilde[11] = x4;
+    }
+    return singular;
+}
+
+
 /* Batch over n samples; singular samples are written as NaN; returns their number. */
 int64_t rigidsym_H_tilde(
     int64_t n,

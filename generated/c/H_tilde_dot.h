@@ -62,6 +62,55 @@ static inline int rigidsym_H_tilde_dot_sample(
     return singular;
 }
 
+
+/* The same sample with its sin/cos values given (trig_0, trig_1, computed by the
+ * vectorised loop of the blocked batch function). */
+static inline int rigidsym_H_tilde_dot_sample_trig(
+    const double *RIGIDSYM_RESTRICT in_e,
+    const double *RIGIDSYM_RESTRICT in_phi,
+    const double *RIGIDSYM_RESTRICT in_omega,
+    const double trig_0,
+    const double trig_1,
+    double *RIGIDSYM_RESTRICT out_H_tilde_dot)
+{
+    const double e_0 = in_e[0];
+    const double e_1 = in_e[1];
+    const double e_2 = in_e[2];
+    (void)in_phi;
+    const double omega_0 = in_omega[0];
+    const double omega_1 = in_omega[1];
+    const double omega_2 = in_omega[2];
+    int singular = 0;
+    {
+        const double x1 = trig_0;
+        const double x2 = e_0*x1;
+        const double x3 = e_1*x1;
+        const double x4 = e_2*x1;
+        const double x5 = -omega_0*x2 - omega_1*x3 - omega_2*x4;
+        const double x6 = trig_1;
+        const double x7 = -e_0*omega_1*x1 + omega_0*x3 + omega_2*x6;
+        const double x8 = -x7;
+        const double x9 = -omega_0*x4 + omega_1*x6 + omega_2*x2;
+        const double x10 = -e_1*omega_2*x1 + omega_0*x6 + omega_1*x4;
+        const double x11 = -x10;
+        const double x12 = -x9;
+        out_H_tilde_dot[0] = x5;
+        out_H_tilde_dot[1] = x8;
+        out_H_tilde_dot[2] = x9;
+        out_H_tilde_dot[3] = x11;
+        out_H_tilde_dot[4] = x7;
+        out_H_tilde_dot[5] = x5;
+        out_H_tilde_dot[6] = x11;
+        out_H_tilde_dot[7] = x12;
+        out_H_tilde_dot[8] = x12;
+        out_H_tilde_dot[9] = x10;
+        out_H_tilde_dot[10] = x5;
+        out_H_tilde_dot[11] = x8;
+    }
+    return singular;
+}
+
+
 /* Batch over n samples; singular samples are written as NaN; returns their number. */
 int64_t rigidsym_H_tilde_dot(
     int64_t n,

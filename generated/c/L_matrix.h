@@ -63,6 +63,56 @@ static inline int rigidsym_L_matrix_sample(
     return singular;
 }
 
+
+/* The same sample with its sin/cos values given (trig_0, trig_1, computed by the
+ * vectorised loop of the blocked batch function). */
+static inline int rigidsym_L_matrix_sample_trig(
+    const double *RIGIDSYM_RESTRICT in_e,
+    const double *RIGIDSYM_RESTRICT in_phi,
+    const double trig_0,
+    const double trig_1,
+    double *RIGIDSYM_RESTRICT out_L_matrix)
+{
+    const double e_0 = in_e[0];
+    const double e_1 = in_e[1];
+    const double e_2 = in_e[2];
+    (void)in_phi;
+    int singular = 0;
+    {
+        const double x0 = (e_2*e_2);
+        const double x2 = trig_0;
+        const double x3 = (x2*x2);
+        const double x4 = 0.5 - x3;
+        const double x5 = (0.5)*x0 + x4*(1.0 - x0);
+        const double x6 = (e_1*e_1);
+        const double x7 = x4*(1.0 - x6) + (0.5)*x6;
+        const double x8 = e_0*x3;
+        const double x9 = e_1*x8;
+        const double x10 = trig_1*x2;
+        const double x11 = e_2*x10;
+        const double x12 = e_2*x8;
+        const double x13 = e_1*x10;
+        const double x14 = (e_0*e_0);
+        const double x15 = (0.5)*x14 + x4*(1.0 - x14);
+        const double x16 = e_0*x10;
+        const double x17 = e_1*e_2*x3;
+        out_L_matrix[0] = x5 + x7;
+        out_L_matrix[1] = x11 - x9;
+        out_L_matrix[2] = -x12 - x13;
+        out_L_matrix[3] = -x11 - x9;
+        out_L_matrix[4] = x15 + x5;
+        out_L_matrix[5] = x16 - x17;
+        out_L_matrix[6] = -x12 + x13;
+        out_L_matrix[7] = -x16 - x17;
+        out_L_matrix[8] = x15 + x7;
+        out_L_matrix[9] = -2.0*x16;
+        out_L_matrix[10] = -2.0*x13;
+        out_L_matrix[11] = -2.0*x11;
+    }
+    return singular;
+}
+
+
 /* Batch over n samples; singular samples are written as NaN; returns their number. */
 int64_t rigidsym_L_matrix(
     int64_t n,

@@ -78,6 +78,71 @@ static inline int rigidsym_L_matrix_dot_sample(
     return singular;
 }
 
+
+/* The same sample with its sin/cos values given (trig_0, trig_1, computed by the
+ * vectorised loop of the blocked batch function). */
+static inline int rigidsym_L_matrix_dot_sample_trig(
+    const double *RIGIDSYM_RESTRICT in_e,
+    const double *RIGIDSYM_RESTRICT in_phi,
+    const double *RIGIDSYM_RESTRICT in_omega,
+    const double trig_0,
+    const double trig_1,
+    double *RIGIDSYM_RESTRICT out_L_matrix_dot)
+{
+    const double e_0 = in_e[0];
+    const double e_1 = in_e[1];
+    const double e_2 = in_e[2];
+    (void)in_phi;
+    const double omega_0 = in_omega[0];
+    const double omega_1 = in_omega[1];
+    const double omega_2 = in_omega[2];
+    int singular = 0;
+    {
+        const double x1 = trig_0;
+        const double x2 = 2.0*(x1*x1);
+        const double x3 = e_0*x2;
+        const double x4 = e_2*x3;
+        const double x5 = 2.0*trig_1*x1;
+        const double x6 = e_1*x5;
+        const double x7 = x4 - x6;
+        const double x8 = (0.5)*omega_1;
+        const double x9 = e_1*x3;
+        const double x10 = e_2*x5;
+        const double x11 = x10 + x9;
+        const double x12 = e_0*x5;
+        const double x13 = omega_0*x12 + omega_1*x6 + omega_2*x10;
+        const double x14 = e_1*e_2*x2;
+        const double x15 = x12 + x14;
+        const double x16 = (e_1*e_1);
+        const double x17 = 1.0 - x2;
+        const double x18 = x16 + x17*(1.0 - x16);
+        const double x19 = (e_2*e_2);
+        const double x20 = x17*(1.0 - x19) + x19;
+        const double x21 = x12 - x14;
+        const double x22 = -x21;
+        const double x23 = (0.5)*omega_0;
+        const double x24 = (e_0*e_0);
+        const double x25 = x17*(1.0 - x24) + x24;
+        const double x26 = (0.5)*omega_2;
+        const double x27 = -x10 + x9;
+        const double x28 = x4 + x6;
+        out_L_matrix_dot[0] = (0.5)*omega_2*x11 - x13 - x7*x8;
+        out_L_matrix_dot[1] = (0.5)*omega_2*x18 - x15*x8;
+        out_L_matrix_dot[2] = (0.5)*omega_2*x22 - x20*x8;
+        out_L_matrix_dot[3] = x23*x7 - x25*x26;
+        out_L_matrix_dot[4] = (0.5)*omega_0*x15 - x13 - x26*x27;
+        out_L_matrix_dot[5] = x20*x23 - x26*x28;
+        out_L_matrix_dot[6] = (0.5)*omega_1*x25 - x11*x23;
+        out_L_matrix_dot[7] = (0.5)*omega_1*x27 - x18*x23;
+        out_L_matrix_dot[8] = (0.5)*omega_1*x28 - x13 - x22*x23;
+        out_L_matrix_dot[9] = -x23*(x18 + x20) + x26*x28 + x27*x8;
+        out_L_matrix_dot[10] = x11*x23 - x21*x26 - x8*(x20 + x25);
+        out_L_matrix_dot[11] = x15*x8 + x23*x7 - x26*(x18 + x25);
+    }
+    return singular;
+}
+
+
 /* Batch over n samples; singular samples are written as NaN; returns their number. */
 int64_t rigidsym_L_matrix_dot(
     int64_t n,

@@ -60,6 +60,52 @@ static inline int rigidsym_L_tilde_sample(
     return singular;
 }
 
+
+/* The same sample with its sin/cos values given (trig_0, trig_1, computed by the
+ * vectorised loop of the blocked batch function). */
+static inline int rigidsym_L_tilde_sample_trig(
+    const double *RIGIDSYM_RESTRICT in_e,
+    const double *RIGIDSYM_RESTRICT in_phi,
+    const double trig_0,
+    const double trig_1,
+    double *RIGIDSYM_RESTRICT out_L_tilde)
+{
+    const double e_0 = in_e[0];
+    const double e_1 = in_e[1];
+    const double e_2 = in_e[2];
+    (void)in_phi;
+    int singular = 0;
+    {
+        const double x1 = trig_0;
+        const double x2 = trig_1/x1;
+        const double x3 = e_2*x2;
+        const double x4 = -x3;
+        const double x5 = e_1*x2;
+        const double x6 = e_0*x2;
+        const double x7 = -x6;
+        const double x8 = -x5;
+        out_L_tilde[0] = 1.0;
+        out_L_tilde[1] = x4;
+        out_L_tilde[2] = x5;
+        out_L_tilde[3] = x7;
+        out_L_tilde[4] = x3;
+        out_L_tilde[5] = 1.0;
+        out_L_tilde[6] = x7;
+        out_L_tilde[7] = x8;
+        out_L_tilde[8] = x8;
+        out_L_tilde[9] = x6;
+        out_L_tilde[10] = 1.0;
+        out_L_tilde[11] = x4;
+        singular |= (x1) == 0.0;
+        /* quantities that can be non-finite for finite inputs (divisions, roots):
+         * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
+        const double finite = (x2 - x2);
+        singular |= finite != finite;
+    }
+    return singular;
+}
+
+
 /* Batch over n samples; singular samples are written as NaN; returns their number. */
 int64_t rigidsym_L_tilde(
     int64_t n,

@@ -83,6 +83,75 @@ static inline int rigidsym_L_tilde_dot_sample(
     return singular;
 }
 
+
+/* The same sample with its sin/cos values given (trig_0, trig_1, computed by the
+ * vectorised loop of the blocked batch function). */
+static inline int rigidsym_L_tilde_dot_sample_trig(
+    const double *RIGIDSYM_RESTRICT in_e,
+    const double *RIGIDSYM_RESTRICT in_phi,
+    const double *RIGIDSYM_RESTRICT in_omega,
+    const double trig_0,
+    const double trig_1,
+    double *RIGIDSYM_RESTRICT out_L_tilde_dot)
+{
+    const double e_0 = in_e[0];
+    const double e_1 = in_e[1];
+    const double e_2 = in_e[2];
+    (void)in_phi;
+    const double omega_0 = in_omega[0];
+    const double omega_1 = in_omega[1];
+    const double omega_2 = in_omega[2];
+    int singular = 0;
+    {
+        const double x1 = trig_0;
+        const double x2 = (x1*x1);
+        const double x3 = e_2*x2;
+        const double x4 = e_0*x3;
+        const double x5 = trig_1;
+        const double x6 = x1*x5;
+        const double x7 = e_1*x6;
+        const double x8 = e_1*x3;
+        const double x9 = e_0*x6;
+        const double x10 = 1.0/x5;
+        const double x11 = e_2*x6;
+        const double x12 = -2.0*omega_0*x9 - 2.0*omega_1*x7 - 2.0*omega_2*x11;
+        const double x13 = (e_0*e_0);
+        const double x14 = 0.5 - x2;
+        const double x15 = (0.5)*x13 + x14*(1.0 - x13);
+        const double x16 = (e_1*e_1);
+        const double x17 = x14*(1.0 - x16) + (0.5)*x16;
+        const double x18 = -e_2*x1*x10*x12 + omega_0*(-x4 + x7) + omega_1*(-x8 - x9) + omega_2*(x15 + x17);
+        const double x19 = (0.5)/(x5*x5);
+        const double x20 = -x18*x19;
+        const double x21 = e_0*e_1*x2;
+        const double x22 = (e_2*e_2);
+        const double x23 = x14*(1.0 - x22) + (0.5)*x22;
+        const double x24 = -e_1*x1*x10*x12 + omega_0*(-x11 - x21) + omega_1*(x15 + x23) + omega_2*(-x8 + x9);
+        const double x25 = -e_0*x1*x10*x12 + omega_0*(x17 + x23) + omega_1*(x11 - x21) + omega_2*(-x4 - x7);
+        const double x26 = -x19*x25;
+        const double x27 = -x19*x24;
+        out_L_tilde_dot[0] = 0.0;
+        out_L_tilde_dot[1] = x20;
+        out_L_tilde_dot[2] = x19*x24;
+        out_L_tilde_dot[3] = x26;
+        out_L_tilde_dot[4] = x18*x19;
+        out_L_tilde_dot[5] = 0.0;
+        out_L_tilde_dot[6] = x26;
+        out_L_tilde_dot[7] = x27;
+        out_L_tilde_dot[8] = x27;
+        out_L_tilde_dot[9] = x19*x25;
+        out_L_tilde_dot[10] = 0.0;
+        out_L_tilde_dot[11] = x20;
+        singular |= (x5) == 0.0;
+        /* quantities that can be non-finite for finite inputs (divisions, roots):
+         * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
+        const double finite = ((x10 - x10) + (x19 - x19));
+        singular |= finite != finite;
+    }
+    return singular;
+}
+
+
 /* Batch over n samples; singular samples are written as NaN; returns their number. */
 int64_t rigidsym_L_tilde_dot(
     int64_t n,

@@ -62,6 +62,54 @@ static inline int rigidsym_N_matrix_sample(
     return singular;
 }
 
+
+/* The same sample with its sin/cos values given (trig_0, trig_1, computed by the
+ * vectorised loop of the blocked batch function). */
+static inline int rigidsym_N_matrix_sample_trig(
+    const double *RIGIDSYM_RESTRICT in_e,
+    const double *RIGIDSYM_RESTRICT in_phi,
+    const double trig_0,
+    const double trig_1,
+    double *RIGIDSYM_RESTRICT out_N_matrix)
+{
+    const double e_0 = in_e[0];
+    const double e_1 = in_e[1];
+    const double e_2 = in_e[2];
+    (void)in_phi;
+    int singular = 0;
+    {
+        const double x1 = trig_0;
+        const double x2 = trig_1/x1;
+        const double x3 = (0.5)*x2;
+        const double x4 = (0.5)*e_2;
+        const double x5 = (0.5)*e_1;
+        const double x6 = e_0*x2;
+        const double x7 = x5*x6;
+        const double x8 = x4*x6;
+        const double x9 = (0.5)*e_0;
+        const double x10 = e_1*x2*x4;
+        out_N_matrix[0] = x3*(1.0 - (e_0*e_0));
+        out_N_matrix[1] = x4 - x7;
+        out_N_matrix[2] = -x5 - x8;
+        out_N_matrix[3] = -x4 - x7;
+        out_N_matrix[4] = x3*(1.0 - (e_1*e_1));
+        out_N_matrix[5] = -x10 + x9;
+        out_N_matrix[6] = x5 - x8;
+        out_N_matrix[7] = -x10 - x9;
+        out_N_matrix[8] = x3*(1.0 - (e_2*e_2));
+        out_N_matrix[9] = e_0;
+        out_N_matrix[10] = e_1;
+        out_N_matrix[11] = e_2;
+        singular |= (x1) == 0.0;
+        /* quantities that can be non-finite for finite inputs (divisions, roots):
+         * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
+        const double finite = (x2 - x2);
+        singular |= finite != finite;
+    }
+    return singular;
+}
+
+
 /* Batch over n samples; singular samples are written as NaN; returns their number. */
 int64_t rigidsym_N_matrix(
     int64_t n,

@@ -102,6 +102,94 @@ static inline int rigidsym_N_matrix_dot_sample(
     return singular;
 }
 
+
+/* The same sample with its sin/cos values given (trig_0, trig_1, computed by the
+ * vectorised loop of the blocked batch function). */
+static inline int rigidsym_N_matrix_dot_sample_trig(
+    const double *RIGIDSYM_RESTRICT in_e,
+    const double *RIGIDSYM_RESTRICT in_phi,
+    const double *RIGIDSYM_RESTRICT in_omega,
+    const double trig_0,
+    const double trig_1,
+    double *RIGIDSYM_RESTRICT out_N_matrix_dot)
+{
+    const double e_0 = in_e[0];
+    const double e_1 = in_e[1];
+    const double e_2 = in_e[2];
+    (void)in_phi;
+    const double omega_0 = in_omega[0];
+    const double omega_1 = in_omega[1];
+    const double omega_2 = in_omega[2];
+    int singular = 0;
+    {
+        const double x0 = e_0*omega_0;
+        const double x1 = e_1*omega_1;
+        const double x2 = 2.0*x1;
+        const double x3 = e_2*omega_2;
+        const double x4 = 2.0*x3;
+        const double x6 = trig_0;
+        const double x7 = (x6*x6);
+        const double x8 = 1.0 - 2.0*x7;
+        const double x9 = 2.0*x0;
+        const double x10 = trig_1;
+        const double x11 = e_1*omega_2;
+        const double x12 = e_2*omega_1;
+        const double x13 = x11 - x12;
+        const double x14 = (e_0*e_0);
+        const double x15 = 6.0 - 4.0*x7;
+        const double x16 = x0 + x1 + x3;
+        const double x17 = (0.125)/x7;
+        const double x18 = e_0*omega_1;
+        const double x19 = 2.0*x18;
+        const double x20 = e_1*omega_0;
+        const double x21 = 2.0*x20;
+        const double x22 = e_2*x16 - omega_2;
+        const double x23 = 2.0*x10*x6;
+        const double x24 = e_0*omega_2;
+        const double x25 = e_2*omega_0 - x24;
+        const double x26 = -e_0*e_1*x15*x16 - 2.0*x10*x6*(e_0*x25 + e_1*x13);
+        const double x27 = 2.0*x24;
+        const double x28 = 2.0*e_2*omega_0;
+        const double x29 = e_1*x16 - omega_1;
+        const double x30 = x18 - x20;
+        const double x31 = -e_0*e_2*x15*x16 - 2.0*x10*x6*(e_0*x30 + e_2*x13);
+        const double x32 = (e_1*e_1);
+        const double x33 = 2.0*x11;
+        const double x34 = 2.0*x12;
+        const double x35 = e_0*x16 - omega_0;
+        const double x36 = -e_1*e_2*x15*x16 - 2.0*x10*x6*(e_1*x30 + e_2*x25);
+        const double x37 = (e_2*e_2);
+        const double x38 = (0.5)*e_2;
+        const double x39 = (0.5)*e_1;
+        const double x40 = x10/x6;
+        const double x41 = e_0*x40;
+        const double x42 = x39*x41;
+        const double x43 = x38*x41;
+        const double x44 = (0.5)*x40;
+        const double x45 = (0.5)*e_0;
+        const double x46 = e_1*x38*x40;
+        out_N_matrix_dot[0] = x17*(4.0*e_0*x10*x13*x6 - 4.0*x0 + x14*x15*x16 - x2 - x4 - x8*x9);
+        out_N_matrix_dot[1] = x17*(-x19 - x21*x8 - x22*x23 - x26);
+        out_N_matrix_dot[2] = x17*(x23*x29 - x27 - x28*x8 - x31);
+        out_N_matrix_dot[3] = x17*(-x19*x8 - x21 + x22*x23 - x26);
+        out_N_matrix_dot[4] = x17*(4.0*e_1*x10*x25*x6 - 4.0*x1 + x15*x16*x32 - x2*x8 - x4 - x9);
+        out_N_matrix_dot[5] = x17*(-x23*x35 - x33 - x34*x8 - x36);
+        out_N_matrix_dot[6] = x17*(-x23*x29 - x27*x8 - x28 - x31);
+        out_N_matrix_dot[7] = x17*(x23*x35 - x33*x8 - x34 - x36);
+        out_N_matrix_dot[8] = x17*(4.0*e_2*x10*x30*x6 + x15*x16*x37 - x2 - 4.0*x3 - x4*x8 - x9);
+        out_N_matrix_dot[9] = omega_0*x44*(1.0 - x14) + omega_1*(x38 - x42) + omega_2*(-x39 - x43);
+        out_N_matrix_dot[10] = omega_0*(-x38 - x42) + omega_1*x44*(1.0 - x32) + omega_2*(x45 - x46);
+        out_N_matrix_dot[11] = omega_0*(x39 - x43) + omega_1*(-x45 - x46) + omega_2*x44*(1.0 - x37);
+        singular |= (x6) == 0.0;
+        /* quantities that can be non-finite for finite inputs (divisions, roots):
+         * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
+        const double finite = ((x17 - x17) + (x40 - x40));
+        singular |= finite != finite;
+    }
+    return singular;
+}
+
+
 /* Batch over n samples; singular samples are written as NaN; returns their number. */
 int64_t rigidsym_N_matrix_dot(
     int64_t n,

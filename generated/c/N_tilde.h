@@ -52,6 +52,45 @@ static inline int rigidsym_N_tilde_sample(
     return singular;
 }
 
+
+/* The same sample with its sin/cos values given (trig_0, trig_1, computed by the
+ * vectorised loop of the blocked batch function). */
+static inline int rigidsym_N_tilde_sample_trig(
+    const double *RIGIDSYM_RESTRICT in_e,
+    const double *RIGIDSYM_RESTRICT in_phi,
+    const double trig_0,
+    const double trig_1,
+    double *RIGIDSYM_RESTRICT out_N_tilde)
+{
+    const double e_0 = in_e[0];
+    const double e_1 = in_e[1];
+    const double e_2 = in_e[2];
+    (void)in_phi;
+    int singular = 0;
+    {
+        const double x1 = trig_0;
+        const double x2 = 2.0*trig_1*x1;
+        const double x3 = 2.0*(x1*x1);
+        const double x4 = e_2*x3;
+        const double x5 = e_1*x3;
+        const double x6 = e_0*x3;
+        out_N_tilde[0] = x2;
+        out_N_tilde[1] = -x4;
+        out_N_tilde[2] = x5;
+        out_N_tilde[3] = e_0;
+        out_N_tilde[4] = x4;
+        out_N_tilde[5] = x2;
+        out_N_tilde[6] = -x6;
+        out_N_tilde[7] = e_1;
+        out_N_tilde[8] = -x5;
+        out_N_tilde[9] = x6;
+        out_N_tilde[10] = x2;
+        out_N_tilde[11] = e_2;
+    }
+    return singular;
+}
+
+
 /* Batch over n samples; singular samples are written as NaN; returns their number. */
 int64_t rigidsym_N_tilde(
     int64_t n,

@@ -17,15 +17,31 @@ int64_t rigidsym_N_tilde_dot(
     const double *RIGIDSYM_RESTRICT in_omega,
     double *RIGIDSYM_RESTRICT out_N_tilde_dot)
 {
-    /* Pass 1, branch-free so that the compiler can vectorise it: evaluate and count. */
+    /* Pass 1, blocked: per block of 64 samples, a SIMD loop evaluates the sin/cos
+     * values into stack arrays, then a per-sample loop reads them; evaluate and count. */
     int64_t count = 0;
-    RIGIDSYM_SIMD_COUNT
-    for (int64_t i = 0; i < n; ++i) {
-        count += rigidsym_N_tilde_dot_sample(
-            in_e + 3 * i,
-            in_phi + 1 * i,
-            in_omega + 3 * i,
-            out_N_tilde_dot + 12 * i);
+    double trig_0[64];
+    double trig_1[64];
+    for (int64_t i0 = 0; i0 < n; i0 += 64) {
+        const int64_t m = n - i0 < 64 ? n - i0 : 64;
+        RIGIDSYM_SIMD
+        for (int64_t j = 0; j < m; ++j) {
+            const int64_t i = i0 + j;
+            const double phi = in_phi[1 * i + 0];
+            const double x0 = (0.5)*phi;
+            trig_0[j] = sin(x0);
+            trig_1[j] = cos(x0);
+        }
+        for (int64_t j = 0; j < m; ++j) {
+            const int64_t i = i0 + j;
+            count += rigidsym_N_tilde_dot_sample_trig(
+                in_e + 3 * i,
+                in_phi + 1 * i,
+                in_omega + 3 * i,
+                trig_0[j],
+                trig_1[j],
+                out_N_tilde_dot + 12 * i);
+        }
     }
     if (count == 0)
         return 0;

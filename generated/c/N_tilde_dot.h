@@ -77,6 +77,70 @@ static inline int rigidsym_N_tilde_dot_sample(
     return singular;
 }
 
+
+/* The same sample with its sin/cos values given (trig_0, trig_1, computed by the
+ * vectorised loop of the blocked batch function). */
+static inline int rigidsym_N_tilde_dot_sample_trig(
+    const double *RIGIDSYM_RESTRICT in_e,
+    const double *RIGIDSYM_RESTRICT in_phi,
+    const double *RIGIDSYM_RESTRICT in_omega,
+    const double trig_0,
+    const double trig_1,
+    double *RIGIDSYM_RESTRICT out_N_tilde_dot)
+{
+    const double e_0 = in_e[0];
+    const double e_1 = in_e[1];
+    const double e_2 = in_e[2];
+    (void)in_phi;
+    const double omega_0 = in_omega[0];
+    const double omega_1 = in_omega[1];
+    const double omega_2 = in_omega[2];
+    int singular = 0;
+    {
+        const double x1 = trig_0;
+        const double x2 = (x1*x1);
+        const double x3 = 2.0*x2;
+        const double x4 = e_0*omega_0 + e_1*omega_1 + e_2*omega_2;
+        const double x5 = x4*(1.0 - x3);
+        const double x6 = trig_1;
+        const double x7 = 2.0*x1*x4*x6;
+        const double x8 = e_2*x7;
+        const double x9 = (0.5)*e_1;
+        const double x10 = (0.5)*e_0;
+        const double x11 = x6/x1;
+        const double x12 = e_2*x11;
+        const double x13 = x10*x12;
+        const double x14 = x12*x9;
+        const double x15 = (0.5)*x11;
+        const double x16 = omega_0*(-x13 + x9) + omega_1*(-x10 - x14) + omega_2*x15*(1.0 - (e_2*e_2));
+        const double x17 = e_1*x7;
+        const double x18 = (0.5)*e_2;
+        const double x19 = e_0*x11*x9;
+        const double x20 = omega_0*(-x18 - x19) + omega_1*x15*(1.0 - (e_1*e_1)) + omega_2*(x10 - x14);
+        const double x21 = omega_0*x15*(1.0 - (e_0*e_0)) + omega_1*(x18 - x19) + omega_2*(-x13 - x9);
+        const double x22 = e_0*x7;
+        out_N_tilde_dot[0] = x5;
+        out_N_tilde_dot[1] = -2.0*x16*x2 - x8;
+        out_N_tilde_dot[2] = x17 + x20*x3;
+        out_N_tilde_dot[3] = x21;
+        out_N_tilde_dot[4] = x16*x3 + x8;
+        out_N_tilde_dot[5] = x5;
+        out_N_tilde_dot[6] = -2.0*x2*x21 - x22;
+        out_N_tilde_dot[7] = x20;
+        out_N_tilde_dot[8] = -x17 - 2.0*x2*x20;
+        out_N_tilde_dot[9] = x21*x3 + x22;
+        out_N_tilde_dot[10] = x5;
+        out_N_tilde_dot[11] = x16;
+        singular |= (x1) == 0.0;
+        /* quantities that can be non-finite for finite inputs (divisions, roots):
+         * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
+        const double finite = (x11 - x11);
+        singular |= finite != finite;
+    }
+    return singular;
+}
+
+
 /* Batch over n samples; singular samples are written as NaN; returns their number. */
 int64_t rigidsym_N_tilde_dot(
     int64_t n,

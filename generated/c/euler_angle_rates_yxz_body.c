@@ -16,14 +16,36 @@ int64_t rigidsym_euler_angle_rates_yxz_body(
     const double *RIGIDSYM_RESTRICT in_omega,
     double *RIGIDSYM_RESTRICT out_eta_dot)
 {
-    /* Pass 1, branch-free so that the compiler can vectorise it: evaluate and count. */
+    /* Pass 1, blocked: per block of 64 samples, a SIMD loop evaluates the sin/cos
+     * values into stack arrays, then a per-sample loop reads them; evaluate and count. */
     int64_t count = 0;
-    RIGIDSYM_SIMD_COUNT
-    for (int64_t i = 0; i < n; ++i) {
-        count += rigidsym_euler_angle_rates_yxz_body_sample(
-            in_angles + 3 * i,
-            in_omega + 3 * i,
-            out_eta_dot + 3 * i);
+    double trig_0[64];
+    double trig_1[64];
+    double trig_2[64];
+    double trig_3[64];
+    for (int64_t i0 = 0; i0 < n; i0 += 64) {
+        const int64_t m = n - i0 < 64 ? n - i0 : 64;
+        RIGIDSYM_SIMD
+        for (int64_t j = 0; j < m; ++j) {
+            const int64_t i = i0 + j;
+            const double angles_1 = in_angles[3 * i + 1];
+            const double angles_2 = in_angles[3 * i + 2];
+            trig_0[j] = cos(angles_1);
+            trig_1[j] = sin(angles_2);
+            trig_2[j] = cos(angles_2);
+            trig_3[j] = sin(angles_1);
+        }
+        for (int64_t j = 0; j < m; ++j) {
+            const int64_t i = i0 + j;
+            count += rigidsym_euler_angle_rates_yxz_body_sample_trig(
+                in_angles + 3 * i,
+                in_omega + 3 * i,
+                trig_0[j],
+                trig_1[j],
+                trig_2[j],
+                trig_3[j],
+                out_eta_dot + 3 * i);
+        }
     }
     if (count == 0)
         return 0;

@@ -49,6 +49,43 @@ static inline int rigidsym_euler_angle_rates_zyz_body_sample(
     return singular;
 }
 
+
+/* The same sample with its sin/cos values given (trig_0, trig_1, trig_2, trig_3, computed by the
+ * vectorised loop of the blocked batch function). */
+static inline int rigidsym_euler_angle_rates_zyz_body_sample_trig(
+    const double *RIGIDSYM_RESTRICT in_angles,
+    const double *RIGIDSYM_RESTRICT in_omega,
+    const double trig_0,
+    const double trig_1,
+    const double trig_2,
+    const double trig_3,
+    double *RIGIDSYM_RESTRICT out_eta_dot)
+{
+    (void)in_angles;
+    const double omega_0 = in_omega[0];
+    const double omega_1 = in_omega[1];
+    const double omega_2 = in_omega[2];
+    int singular = 0;
+    {
+        const double x0 = trig_0;
+        const double x1 = 1.0/x0;
+        const double x2 = trig_1;
+        const double x3 = omega_0*x2;
+        const double x4 = trig_2;
+        const double x5 = trig_3;
+        out_eta_dot[0] = -x1*(-omega_1*x4 + x3);
+        out_eta_dot[1] = -x1*(-omega_0*x0*x4 - omega_1*x0*x2);
+        out_eta_dot[2] = -x1*(omega_1*x4*x5 - omega_2*x0 - x3*x5);
+        singular |= (x0) == 0.0;
+        /* quantities that can be non-finite for finite inputs (divisions, roots):
+         * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
+        const double finite = (x1 - x1);
+        singular |= finite != finite;
+    }
+    return singular;
+}
+
+
 /* Batch over n samples; singular samples are written as NaN; returns their number. */
 int64_t rigidsym_euler_angle_rates_zyz_body(
     int64_t n,

@@ -42,6 +42,37 @@ static inline int rigidsym_euler_rate_matrix_zyx_fixed_sample(
     return singular;
 }
 
+
+/* The same sample with its sin/cos values given (trig_0, trig_1, trig_2, trig_3, computed by the
+ * vectorised loop of the blocked batch function). */
+static inline int rigidsym_euler_rate_matrix_zyx_fixed_sample_trig(
+    const double *RIGIDSYM_RESTRICT in_angles,
+    const double trig_0,
+    const double trig_1,
+    const double trig_2,
+    const double trig_3,
+    double *RIGIDSYM_RESTRICT out_W)
+{
+    (void)in_angles;
+    int singular = 0;
+    {
+        const double x0 = trig_0;
+        const double x1 = trig_1;
+        const double x2 = trig_2;
+        out_W[0] = 0.0;
+        out_W[1] = -x0;
+        out_W[2] = x1*x2;
+        out_W[3] = 0.0;
+        out_W[4] = x1;
+        out_W[5] = x0*x2;
+        out_W[6] = 1.0;
+        out_W[7] = 0.0;
+        out_W[8] = -trig_3;
+    }
+    return singular;
+}
+
+
 /* Batch over n samples; singular samples are written as NaN; returns their number. */
 int64_t rigidsym_euler_rate_matrix_zyx_fixed(
     int64_t n,

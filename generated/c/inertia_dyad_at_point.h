@@ -98,6 +98,7 @@ static inline int rigidsym_inertia_dyad_at_point_sample(
     return singular;
 }
 
+
 /* Batch over n samples; singular samples are written as NaN; returns their number. */
 int64_t rigidsym_inertia_dyad_at_point(
     int64_t n,

@@ -68,6 +68,7 @@ static inline int rigidsym_instant_screw_axis_sample(
     return singular;
 }
 
+
 /* Batch over n samples; singular samples are written as NaN; returns their number. */
 int64_t rigidsym_instant_screw_axis(
     int64_t n,

@@ -55,6 +55,7 @@ static inline int rigidsym_instant_screw_point_pitch_sample(
     return singular;
 }
 
+
 /* Batch over n samples; singular samples are written as NaN; returns their number. */
 int64_t rigidsym_instant_screw_point_pitch(
     int64_t n,

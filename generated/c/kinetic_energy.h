@@ -49,6 +49,7 @@ static inline int rigidsym_kinetic_energy_sample(
     return singular;
 }
 
+
 /* Batch over n samples; singular samples are written as NaN; returns their number. */
 int64_t rigidsym_kinetic_energy(
     int64_t n,

@@ -82,6 +82,7 @@ static inline int rigidsym_moving_frame_acceleration_sample(
     return singular;
 }
 
+
 /* Batch over n samples; singular samples are written as NaN; returns their number. */
 int64_t rigidsym_moving_frame_acceleration(
     int64_t n,

@@ -122,6 +122,7 @@ static inline int rigidsym_natural_invariants_from_rotation_sample(
     return singular;
 }
 
+
 /* Batch over n samples; singular samples are written as NaN; returns their number. */
 int64_t rigidsym_natural_invariants_from_rotation(
     int64_t n,

@@ -68,6 +68,7 @@ static inline int rigidsym_newton_euler_residual_sample(
     return singular;
 }
 
+
 /* Batch over n samples; singular samples are written as NaN; returns their number. */
 int64_t rigidsym_newton_euler_residual(
     int64_t n,

@@ -60,6 +60,7 @@ static inline int rigidsym_newton_euler_wrench_sample(
     return singular;
 }
 
+
 /* Batch over n samples; singular samples are written as NaN; returns their number. */
 int64_t rigidsym_newton_euler_wrench(
     int64_t n,

@@ -55,6 +55,7 @@ static inline int rigidsym_plucker_from_points_sample(
     return singular;
 }
 
+
 /* Batch over n samples; singular samples are written as NaN; returns their number. */
 int64_t rigidsym_plucker_from_points(
     int64_t n,

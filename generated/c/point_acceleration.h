@@ -56,6 +56,7 @@ static inline int rigidsym_point_acceleration_sample(
     return singular;
 }
 
+
 /* Batch over n samples; singular samples are written as NaN; returns their number. */
 int64_t rigidsym_point_acceleration(
     int64_t n,

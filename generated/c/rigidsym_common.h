@@ -29,8 +29,10 @@ double sin(double);
 #pragma omp declare simd notinbranch
 double cos(double);
 #define RIGIDSYM_SIMD_COUNT _Pragma("omp simd reduction(+:count)")
+#define RIGIDSYM_SIMD _Pragma("omp simd")
 #else
 #define RIGIDSYM_SIMD_COUNT
+#define RIGIDSYM_SIMD
 #endif
 
 #endif /* RIGIDSYM_COMMON_H */

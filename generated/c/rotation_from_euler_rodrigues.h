@@ -55,6 +55,7 @@ static inline int rigidsym_rotation_from_euler_rodrigues_sample(
     return singular;
 }
 
+
 /* Batch over n samples; singular samples are written as NaN; returns their number. */
 int64_t rigidsym_rotation_from_euler_rodrigues(
     int64_t n,

@@ -16,14 +16,30 @@ int64_t rigidsym_rotation_from_natural_invariants(
     const double *RIGIDSYM_RESTRICT in_phi,
     double *RIGIDSYM_RESTRICT out_Q)
 {
-    /* Pass 1, branch-free so that the compiler can vectorise it: evaluate and count. */
+    /* Pass 1, blocked: per block of 64 samples, a SIMD loop evaluates the sin/cos
+     * values into stack arrays, then a per-sample loop reads them; evaluate and count. */
     int64_t count = 0;
-    RIGIDSYM_SIMD_COUNT
-    for (int64_t i = 0; i < n; ++i) {
-        count += rigidsym_rotation_from_natural_invariants_sample(
-            in_e + 3 * i,
-            in_phi + 1 * i,
-            out_Q + 9 * i);
+    double trig_0[64];
+    double trig_1[64];
+    for (int64_t i0 = 0; i0 < n; i0 += 64) {
+        const int64_t m = n - i0 < 64 ? n - i0 : 64;
+        RIGIDSYM_SIMD
+        for (int64_t j = 0; j < m; ++j) {
+            const int64_t i = i0 + j;
+            const double phi = in_phi[1 * i + 0];
+            const double x1 = (0.5)*phi;
+            trig_0[j] = sin(x1);
+            trig_1[j] = cos(x1);
+        }
+        for (int64_t j = 0; j < m; ++j) {
+            const int64_t i = i0 + j;
+            count += rigidsym_rotation_from_natural_invariants_sample_trig(
+                in_e + 3 * i,
+                in_phi + 1 * i,
+                trig_0[j],
+                trig_1[j],
+                out_Q + 9 * i);
+        }
     }
     if (count == 0)
         return 0;

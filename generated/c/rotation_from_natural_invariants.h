@@ -57,6 +57,50 @@ static inline int rigidsym_rotation_from_natural_invariants_sample(
     return singular;
 }
 
+
+/* The same sample with its sin/cos values given (trig_0, trig_1, computed by the
+ * vectorised loop of the blocked batch function). */
+static inline int rigidsym_rotation_from_natural_invariants_sample_trig(
+    const double *RIGIDSYM_RESTRICT in_e,
+    const double *RIGIDSYM_RESTRICT in_phi,
+    const double trig_0,
+    const double trig_1,
+    double *RIGIDSYM_RESTRICT out_Q)
+{
+    const double e_0 = in_e[0];
+    const double e_1 = in_e[1];
+    const double e_2 = in_e[2];
+    (void)in_phi;
+    int singular = 0;
+    {
+        const double x0 = (e_0*e_0);
+        const double x2 = trig_0;
+        const double x3 = (x2*x2);
+        const double x4 = 2.0*x3;
+        const double x5 = 1.0 - x4;
+        const double x6 = e_0*x4;
+        const double x7 = e_1*x6;
+        const double x8 = 2.0*trig_1*x2;
+        const double x9 = e_2*x8;
+        const double x10 = e_2*x6;
+        const double x11 = e_1*x8;
+        const double x12 = (e_1*e_1);
+        const double x13 = e_0*x8;
+        const double x14 = (e_2*e_2);
+        out_Q[0] = x0 + x5*(1.0 - x0);
+        out_Q[1] = x7 - x9;
+        out_Q[2] = x10 + x11;
+        out_Q[3] = x7 + x9;
+        out_Q[4] = x12 + x5*(1.0 - x12);
+        out_Q[5] = 2.0*e_1*e_2*x3 - x13;
+        out_Q[6] = x10 - x11;
+        out_Q[7] = e_1*e_2*x4 + x13;
+        out_Q[8] = x14 + x5*(1.0 - x14);
+    }
+    return singular;
+}
+
+
 /* Batch over n samples; singular samples are written as NaN; returns their number. */
 int64_t rigidsym_rotation_from_natural_invariants(
     int64_t n,

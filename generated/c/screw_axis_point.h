@@ -75,6 +75,67 @@ static inline int rigidsym_screw_axis_point_sample(
     return singular;
 }
 
+
+/* The same sample with its sin/cos values given (trig_0, trig_1, computed by the
+ * vectorised loop of the blocked batch function). */
+static inline int rigidsym_screw_axis_point_sample_trig(
+    const double *RIGIDSYM_RESTRICT in_e,
+    const double *RIGIDSYM_RESTRICT in_phi,
+    const double *RIGIDSYM_RESTRICT in_a,
+    const double *RIGIDSYM_RESTRICT in_a_prime,
+    const double trig_0,
+    const double trig_1,
+    double *RIGIDSYM_RESTRICT out_p0)
+{
+    const double e_0 = in_e[0];
+    const double e_1 = in_e[1];
+    const double e_2 = in_e[2];
+    (void)in_phi;
+    const double a_0 = in_a[0];
+    const double a_1 = in_a[1];
+    const double a_2 = in_a[2];
+    const double a_prime_0 = in_a_prime[0];
+    const double a_prime_1 = in_a_prime[1];
+    const double a_prime_2 = in_a_prime[2];
+    int singular = 0;
+    {
+        const double x1 = trig_0;
+        const double x2 = (x1*x1);
+        const double x3 = (e_0*e_0);
+        const double x4 = 2.0*x2;
+        const double x5 = 1.0 - x4;
+        const double x6 = e_0*e_1*x4;
+        const double x7 = 2.0*trig_1*x1;
+        const double x8 = e_2*x7;
+        const double x9 = x6 - x8;
+        const double x10 = e_2*x4;
+        const double x11 = e_0*x10;
+        const double x12 = e_1*x7;
+        const double x13 = x11 + x12;
+        const double x14 = a_0*(x3 + x5*(1.0 - x3)) + a_1*x9 + a_2*x13 - a_prime_0;
+        const double x15 = x6 + x8;
+        const double x16 = (e_1*e_1);
+        const double x17 = e_0*x7;
+        const double x18 = 2.0*e_1*e_2*x2 - x17;
+        const double x19 = a_0*x15 + a_1*(x16 + x5*(1.0 - x16)) + a_2*x18 - a_prime_1;
+        const double x20 = x11 - x12;
+        const double x21 = e_1*x10 + x17;
+        const double x22 = (e_2*e_2);
+        const double x23 = a_0*x20 + a_1*x21 + a_2*(x22 + x5*(1.0 - x22)) - a_prime_2;
+        const double x24 = (0.25)/x2;
+        out_p0[0] = x24*(x14*x2*(2.0*x3 - 2.0) + x15*x19 + x20*x23);
+        out_p0[1] = x24*(x14*x9 + x19*x2*(2.0*x16 - 2.0) + x21*x23);
+        out_p0[2] = x24*(x13*x14 + x18*x19 + x2*x23*(2.0*x22 - 2.0));
+        singular |= (x1) == 0.0;
+        /* quantities that can be non-finite for finite inputs (divisions, roots):
+         * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
+        const double finite = (x24 - x24);
+        singular |= finite != finite;
+    }
+    return singular;
+}
+
+
 /* Batch over n samples; singular samples are written as NaN; returns their number. */
 int64_t rigidsym_screw_axis_point(
     int64_t n,

@@ -293,6 +293,7 @@ static inline int rigidsym_screw_of_displacement_sample(
     return singular;
 }
 
+
 /* Batch over n samples; singular samples are written as NaN; returns their number. */
 int64_t rigidsym_screw_of_displacement(
     int64_t n,

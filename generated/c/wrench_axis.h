@@ -67,6 +67,7 @@ static inline int rigidsym_wrench_axis_sample(
     return singular;
 }
 
+
 /* Batch over n samples; singular samples are written as NaN; returns their number. */
 int64_t rigidsym_wrench_axis(
     int64_t n,

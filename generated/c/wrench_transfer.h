@@ -51,6 +51,7 @@ static inline int rigidsym_wrench_transfer_sample(
     return singular;
 }
 
+
 /* Batch over n samples; singular samples are written as NaN; returns their number. */
 int64_t rigidsym_wrench_transfer(
     int64_t n,

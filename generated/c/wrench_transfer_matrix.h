@@ -74,6 +74,7 @@ static inline int rigidsym_wrench_transfer_matrix_sample(
     return singular;
 }
 
+
 /* Batch over n samples; singular samples are written as NaN; returns their number. */
 int64_t rigidsym_wrench_transfer_matrix(
     int64_t n,

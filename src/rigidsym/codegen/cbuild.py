@@ -22,7 +22,8 @@ import sys
 import tempfile
 from pathlib import Path
 
-__all__ = ["build", "load", "cache_dir", "generated_dir", "cdef", "CFLAGS"]
+__all__ = ["build", "load", "cache_dir", "generated_dir", "cdef", "build_variants", "CFLAGS",
+           "MVEC_FLAGS"]
 
 CFLAGS = ["-O3", "-march=native", "-std=c99", "-ffp-contract=fast"]
 #: extra flags of the libmvec build (sin/cos not fused into a scalar sincos call)
@@ -85,7 +86,7 @@ def build(force: bool = False) -> Path:
     meta = json.loads((gdir / "kernels.json").read_text())
     base = _flags()
     last = None
-    for flags, libs in _variants(base):
+    for flags, libs in build_variants(base):
         try:
             return _build(gdir, meta, flags, libs, force)
         except Exception as exc:  # noqa: BLE001 - the next variant is the fallback
@@ -93,14 +94,17 @@ def build(force: bool = False) -> Path:
     raise last
 
 
-def _variants(base: list[str]) -> list[tuple[list[str], list[str]]]:
-    """Build variants, best first: libmvec (glibc only), then plain."""
+def build_variants(base: list[str]) -> list[tuple[list[str], list[str]]]:
+    """Build variants ``(flags, libraries)``, best first: libmvec (glibc only), then plain."""
     out = []
     if sys.platform.startswith("linux") and platform.libc_ver()[0] == "glibc" \
             and os.environ.get("RIGIDSYM_LIBMVEC", "1") != "0":
         out.append((base + MVEC_FLAGS, ["mvec", "m"]))
     out.append((base, ["m"]))
     return out
+
+
+_variants = build_variants
 
 
 def _build(gdir: Path, meta: dict, flags: list[str], libs: list[str], force: bool) -> Path:

@@ -200,6 +200,71 @@ def _balanced(terms: list[str]) -> str:
     return f"({_balanced(terms[:h])} + {_balanced(terms[h:])})"
 
 
+#: samples per block of the blocked batch loop (trig values precomputed on the stack)
+TRIG_BLOCK = 64
+_TRIG = (sp.sin, sp.cos)
+
+
+def _trig_plan(kc: KernelCode, printer) -> dict | None:
+    """Split a trig-calling kernel into a SIMD trig loop and a per-sample loop.
+
+    For a kernel without branches whose ``sin``/``cos`` arguments do not themselves depend
+    on a trig call, returns the prelude (the temporaries the arguments need, in order, and
+    one printed ``sin``/``cos`` per distinct call) and the per-sample program with each call
+    replaced by a parameter ``trig_<k>``; ``None`` when the kernel is not blocked.
+    """
+    if len(kc.variants) != 1:
+        return None
+    p = kc.variants[0].program
+    exprs = [v for _, v in p.temps] + list(p.outputs) + list(p.dens)
+    calls: list = []
+    for e in exprs:
+        for node in sp.preorder_traversal(sp.sympify(e)):
+            if isinstance(node, _TRIG) and node not in calls:
+                calls.append(node)
+    if not calls:
+        return None
+    defs = dict(p.temps)
+    need: set = set()
+    todo = [s for c in calls for s in c.args[0].free_symbols]
+    while todo:
+        s = todo.pop()
+        if s in defs and s not in need:
+            need.add(s)
+            todo.extend(defs[s].free_symbols)
+    pre = [(s, v) for s, v in p.temps if s in need]
+    if any(v.has(*_TRIG) for _, v in pre):
+        return None
+    names = {c: sp.Symbol(f"trig_{k}") for k, c in enumerate(calls)}
+    temps = [(s, v.xreplace(names)) for s, v in p.temps]
+    outputs = [sp.sympify(v).xreplace(names) for v in p.outputs]
+    dens = [sp.sympify(v).xreplace(names) for v in p.dens]
+    # drop the temporaries that only fed the trig arguments (keep divisions and roots: the
+    # finiteness check stays the same)
+    live = set().union(*(sp.sympify(v).free_symbols for v in outputs + dens))
+    kept = []
+    for s, v in reversed(temps):
+        if s in live or _risky(v):
+            kept.append((s, v))
+            live |= v.free_symbols
+    kept.reverse()
+    prog = Program(kept, outputs, dens, p.ops)
+    used_pre = set().union(*(v.free_symbols for _, v in pre),
+                           *(c.args[0].free_symbols for c in calls))
+    used = set().union(*(v.free_symbols for _, v in kept),
+                       *(sp.sympify(v).free_symbols for v in outputs + dens))
+    return {
+        "block": TRIG_BLOCK,
+        "names": [str(names[c]) for c in calls],
+        "pre_temps": [(str(s), printer.doprint(v)) for s, v in pre],
+        "pre_calls": [(str(names[c]), printer.doprint(c)) for c in calls],
+        "pre_used": {str(s) for s in used_pre},
+        "used": {str(s) for s in used},
+        "variant": {"name": "main", "cond": None, "finite": _finite_check(prog, kc.kernel),
+                    **_program_lines(prog, printer)},
+    }
+
+
 def _render_kernel(env, kc: KernelCode) -> dict[str, str]:
     k = kc.kernel
     npp, cp = KernelNumPyPrinter(), KernelCPrinter()
@@ -224,7 +289,7 @@ def _render_kernel(env, kc: KernelCode) -> dict[str, str]:
              for v in kc.variants]
     for t, path in (("c_kernel.h.j2", f"c/{k.name}.h"), ("c_kernel.c.j2", f"c/{k.name}.c")):
         files[path] = env.get_template(t).render(header=_header(kc, t), variants=cvars,
-                                                 used=used, **common)
+                                                 used=used, trig=_trig_plan(kc, cp), **common)
     return files
 
 
