@@ -134,9 +134,10 @@ KERNELS: list[Kernel] = [
         build=_ni_main, branches=_NI_BRANCHES,
         singular="phi = 0 (Q = 1): the axis e is undefined",
         singular_arg="Q",
-        notes="At phi = pi the sign of e is fixed by the rule: the component of e of largest "
-              "magnitude is positive (e is taken from the column of the largest diagonal "
-              "entry of Q).",
+        notes="For an exactly symmetric Q (phi = pi) the sign of e is fixed by the rule: the "
+              "component of e of largest magnitude is positive (e is taken from the column "
+              "of the largest diagonal entry of Q); near pi, the skew part of Q fixes the "
+              "sign, as in Pinocchio's log3.",
     ),
 ]
 
@@ -478,5 +479,5 @@ KERNELS.append(Kernel(
                           partial(_sod_near_pi, k=k), doc=_NI_BRANCHES[k].doc)
                    for k in range(3)),
     singular="phi = 0 (pure translation: no axis, infinite pitch)", singular_arg="Q",
-    notes="At phi = pi the sign of e follows "
+    notes="For an exactly symmetric Q (phi = pi) the sign of e follows "
           "natural_invariants_from_rotation's rule (largest-magnitude component positive)."))
