@@ -44,3 +44,21 @@ def test_every_declaration_names_its_book_section():
     for eq in REGISTRY.values():
         assert eq.section.startswith("3."), eq.id
         assert eq.title and eq.latex
+
+
+def test_committed_chapter_report_is_fresh(results):
+    """generated/report/chapter3.{md,json} equal what the current declarations produce
+    (the report is deterministic: no timings, tiny residuals bounded)."""
+    from pathlib import Path
+
+    from rigidsym.registry import select
+    from rigidsym.report import to_json, to_markdown
+
+    folder = Path(__file__).resolve().parents[1] / "generated" / "report"
+    if not (folder / "chapter3.md").exists():
+        pytest.skip("no committed report in this checkout")
+    rows = [results[i] for i in select(None, None)]
+    assert (folder / "chapter3.md").read_text(encoding="utf-8") == to_markdown(rows), \
+        "generated/report/chapter3.md is stale: run `rigidsym report`"
+    assert (folder / "chapter3.json").read_text(encoding="utf-8") == \
+        to_json(rows, timings=False), "generated/report/chapter3.json is stale"
