@@ -16,7 +16,7 @@ from __future__ import annotations
 import random
 import time
 import zlib
-from dataclasses import asdict, dataclass, field
+from dataclasses import asdict, dataclass
 from fractions import Fraction
 
 import mpmath
@@ -323,7 +323,6 @@ class _RelOutcome:
     detail: str
     counterexample: dict | None = None
     label: str = ""
-    extra: dict = field(default_factory=dict)
 
 
 def decide_rel(rel: Rel, model: dict, seed: int) -> _RelOutcome:

@@ -119,7 +119,7 @@ def _build(eq_id: str) -> Statement:
 
 def section_of(eq_id: str) -> str:
     """The book section (``"3.2"`` … ``"3.8"``) an id belongs to, from the registry."""
-    return REGISTRY[eq_id].section.split(".")[0] + "." + REGISTRY[eq_id].section.split(".")[1]
+    return ".".join(REGISTRY[eq_id].section.split(".")[:2])
 
 
 def equation(eq_id: str, title: str, *, section: str, latex: str, kind: str = "identity",
@@ -178,11 +178,6 @@ def _sort_key(eq_id: str):
         return (int(sec.split(".")[1]), 1, eq_id)
     return (int(section_of(eq_id).split(".")[1]) if eq_id in REGISTRY else 99, 0,
             int(m.group(1)), m.group(3))
-
-
-def ordered_ids() -> list[str]:
-    """All registered ids in book order (claims after the equations of their section)."""
-    return sorted(REGISTRY, key=_sort_key)
 
 
 def parse_id(text: str) -> str:
