@@ -16,12 +16,10 @@ Clock: thread CPU time; each cell is the median over rounds of (time of repeated
 from __future__ import annotations
 
 import argparse
-import ctypes
 import importlib.util
 import os
 import platform
 import statistics
-import subprocess
 import sys
 import tempfile
 import time
@@ -117,13 +115,19 @@ def col_lambdify(name: str):
 
 
 def col_sympy_c(name: str, build: Path):
-    """Plain sympy.cse + ccode loop over the declared expressions (no rewrites)."""
+    """Plain sympy.cse + ccode loop over the declared expressions (no rewrites), built and
+    called through cffi with the base flags of the generated C, so that the two C columns
+    differ only in the code (not in call overhead or compiler flags)."""
+    import cffi
+
+    from rigidsym.codegen import cbuild
+
     k, flat, exprs = _declared(name)
     temps, red = sp.cse(exprs)
     ins = [a for a in k.args]
-    lines = ["#include <math.h>", "#include <stdint.h>",
-             f"void plain_{name}(int64_t n, " + ", ".join(f"const double *in{i}" for i in
-                                                         range(len(ins))) + ", double *out) {",
+    sig = (f"void plain_{name}(int64_t n, "
+           + ", ".join(f"const double *in{i}" for i in range(len(ins))) + ", double *out)")
+    lines = ["#include <math.h>", "#include <stdint.h>", sig + " {",
              "  for (int64_t i = 0; i < n; ++i) {"]
     for i, (_name, ss) in enumerate(flat_symbols(k)):
         for j, s in enumerate(ss):
@@ -133,20 +137,21 @@ def col_sympy_c(name: str, build: Path):
     for j, v in enumerate(red):
         lines.append(f"    out[{len(red)} * i + {j}] = {sp.ccode(v)};")
     lines += ["  }", "}"]
-    src = build / f"plain_{name}.c"
-    src.write_text("\n".join(lines) + "\n")
-    so = build / f"plain_{name}.so"
-    subprocess.run(["gcc", "-O3", "-march=native", "-fPIC", "-shared", str(src), "-o", str(so),
-                    "-lm"], check=True)
-    fn = getattr(ctypes.CDLL(str(so)), f"plain_{name}")
-    fn.restype = None
-    m = len(red)
+    ffi = cffi.FFI()
+    ffi.cdef(sig + ";")
+    mod = f"_plain_{name}"
+    ffi.set_source(mod, "\n".join(lines) + "\n", extra_compile_args=list(cbuild.CFLAGS),
+                   libraries=["m"])
+    so = ffi.compile(tmpdir=str(build), verbose=False)
+    spec = importlib.util.spec_from_file_location(mod, so)
+    lib = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(lib)
+    fn, fb, m = getattr(lib.lib, f"plain_{name}"), lib.ffi.from_buffer, len(red)
 
-    def call(*xs):
+    def call(*xs, out=None):
         n = xs[0].shape[0]
-        out = np.empty((n, m))
-        fn(ctypes.c_int64(n), *[ctypes.c_void_p(x.ctypes.data) for x in xs],
-           ctypes.c_void_p(out.ctypes.data))
+        out = np.empty((n, m)) if out is None else out
+        fn(n, *[fb("double[]", x) for x in xs], fb("double[]", out))
         return out
     return call
 

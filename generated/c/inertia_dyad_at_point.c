@@ -18,30 +18,16 @@ int64_t rigidsym_inertia_dyad_at_point(
     const double *RIGIDSYM_RESTRICT in_a,
     double *RIGIDSYM_RESTRICT out_M_A)
 {
-    /* Pass 1, branch-free so that the compiler can vectorise it: evaluate and count. */
-    int64_t count = 0;
-    RIGIDSYM_SIMD_COUNT
+    /* No division, root or branch: finite inputs give finite outputs, nothing to count.
+     * A plain loop; the compiler's cost model decides on vectorisation (forcing it turns
+     * the strided row-major loads into gathers, measured slower). */
     for (int64_t i = 0; i < n; ++i) {
-        count += rigidsym_inertia_dyad_at_point_sample(
+        (void)rigidsym_inertia_dyad_at_point_sample(
             in_I_C + 9 * i,
             in_m + 1 * i,
             in_c + 3 * i,
             in_a + 3 * i,
             out_M_A + 36 * i);
     }
-    if (count == 0)
-        return 0;
-    /* Pass 2, only when some sample is singular: find them and write NaN there. */
-    for (int64_t i = 0; i < n; ++i) {
-        if (rigidsym_inertia_dyad_at_point_sample(
-                in_I_C + 9 * i,
-                in_m + 1 * i,
-                in_c + 3 * i,
-                in_a + 3 * i,
-                out_M_A + 36 * i)) {
-            for (int j = 0; j < 36; ++j)
-                out_M_A[36 * i + j] = NAN;
-        }
-    }
-    return count;
+    return 0;
 }

@@ -71,8 +71,23 @@ def _main(e_0, e_1, e_2, phi, omega_0, omega_1, omega_2):
     )
 
 
+#: samples per block: NumPy's temporaries of one block stay in cache
+CHUNK = 16384
+
+
 def L_tilde_dot(e, phi, omega, out_L_tilde_dot):
     """Evaluate on ``n`` samples; write the outputs; return the singular mask ``(n,)``."""
+    _n = e.shape[0]
+    if _n <= CHUNK:
+        return _block(e, phi, omega, out_L_tilde_dot)
+    _bad = numpy.empty(_n, dtype=bool)
+    for _s in range(0, _n, CHUNK):
+        _b = slice(_s, _s + CHUNK)
+        _bad[_b] = _block(e[_b], phi[_b], omega[_b], out_L_tilde_dot[_b])
+    return _bad
+
+
+def _block(e, phi, omega, out_L_tilde_dot):
     _n = e.shape[0]
     # one transposing copy: every component then is a contiguous array
     e_s = tuple(numpy.ascontiguousarray(e.reshape(_n, 3).T))

@@ -47,8 +47,23 @@ def _main(e_0, e_1, e_2, phi):
     )
 
 
+#: samples per block: NumPy's temporaries of one block stay in cache
+CHUNK = 16384
+
+
 def N_tilde(e, phi, out_N_tilde):
     """Evaluate on ``n`` samples; write the outputs; return the singular mask ``(n,)``."""
+    _n = e.shape[0]
+    if _n <= CHUNK:
+        return _block(e, phi, out_N_tilde)
+    _bad = numpy.empty(_n, dtype=bool)
+    for _s in range(0, _n, CHUNK):
+        _b = slice(_s, _s + CHUNK)
+        _bad[_b] = _block(e[_b], phi[_b], out_N_tilde[_b])
+    return _bad
+
+
+def _block(e, phi, out_N_tilde):
     _n = e.shape[0]
     # one transposing copy: every component then is a contiguous array
     e_s = tuple(numpy.ascontiguousarray(e.reshape(_n, 3).T))

@@ -40,8 +40,23 @@ def _main(angles_0, angles_1, angles_2, omega_0, omega_1, omega_2):
     )
 
 
+#: samples per block: NumPy's temporaries of one block stay in cache
+CHUNK = 16384
+
+
 def euler_angle_rates_yzx_fixed(angles, omega, out_eta_dot):
     """Evaluate on ``n`` samples; write the outputs; return the singular mask ``(n,)``."""
+    _n = angles.shape[0]
+    if _n <= CHUNK:
+        return _block(angles, omega, out_eta_dot)
+    _bad = numpy.empty(_n, dtype=bool)
+    for _s in range(0, _n, CHUNK):
+        _b = slice(_s, _s + CHUNK)
+        _bad[_b] = _block(angles[_b], omega[_b], out_eta_dot[_b])
+    return _bad
+
+
+def _block(angles, omega, out_eta_dot):
     _n = angles.shape[0]
     # one transposing copy: every component then is a contiguous array
     angles_s = tuple(numpy.ascontiguousarray(angles.reshape(_n, 3).T))

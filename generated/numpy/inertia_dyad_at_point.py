@@ -79,8 +79,23 @@ def _main(I_C_00, I_C_01, I_C_02, I_C_10, I_C_11, I_C_12, I_C_20, I_C_21, I_C_22
     )
 
 
+#: samples per block: NumPy's temporaries of one block stay in cache
+CHUNK = 16384
+
+
 def inertia_dyad_at_point(I_C, m, c, a, out_M_A):
     """Evaluate on ``n`` samples; write the outputs; return the singular mask ``(n,)``."""
+    _n = I_C.shape[0]
+    if _n <= CHUNK:
+        return _block(I_C, m, c, a, out_M_A)
+    _bad = numpy.empty(_n, dtype=bool)
+    for _s in range(0, _n, CHUNK):
+        _b = slice(_s, _s + CHUNK)
+        _bad[_b] = _block(I_C[_b], m[_b], c[_b], a[_b], out_M_A[_b])
+    return _bad
+
+
+def _block(I_C, m, c, a, out_M_A):
     _n = I_C.shape[0]
     # one transposing copy: every component then is a contiguous array
     I_C_s = tuple(numpy.ascontiguousarray(I_C.reshape(_n, 9).T))

@@ -52,8 +52,23 @@ def _main(omega_0, omega_1, omega_2, a_0, a_1, a_2, a_dot_0, a_dot_1, a_dot_2):
     )
 
 
+#: samples per block: NumPy's temporaries of one block stay in cache
+CHUNK = 16384
+
+
 def instant_screw_axis(omega, a, a_dot, out_p0, out_pitch, out_plucker):
     """Evaluate on ``n`` samples; write the outputs; return the singular mask ``(n,)``."""
+    _n = omega.shape[0]
+    if _n <= CHUNK:
+        return _block(omega, a, a_dot, out_p0, out_pitch, out_plucker)
+    _bad = numpy.empty(_n, dtype=bool)
+    for _s in range(0, _n, CHUNK):
+        _b = slice(_s, _s + CHUNK)
+        _bad[_b] = _block(omega[_b], a[_b], a_dot[_b], out_p0[_b], out_pitch[_b], out_plucker[_b])
+    return _bad
+
+
+def _block(omega, a, a_dot, out_p0, out_pitch, out_plucker):
     _n = omega.shape[0]
     # one transposing copy: every component then is a contiguous array
     omega_s = tuple(numpy.ascontiguousarray(omega.reshape(_n, 3).T))

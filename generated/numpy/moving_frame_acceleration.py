@@ -49,8 +49,23 @@ def _main(o_ddot_0, o_ddot_1, o_ddot_2, Q_00, Q_01, Q_02, Q_10, Q_11, Q_12, Q_20
     )
 
 
+#: samples per block: NumPy's temporaries of one block stay in cache
+CHUNK = 16384
+
+
 def moving_frame_acceleration(o_ddot, Q, omega, omega_dot, rho_M, rho_dot_M, rho_ddot_M, out_p_ddot):
     """Evaluate on ``n`` samples; write the outputs; return the singular mask ``(n,)``."""
+    _n = o_ddot.shape[0]
+    if _n <= CHUNK:
+        return _block(o_ddot, Q, omega, omega_dot, rho_M, rho_dot_M, rho_ddot_M, out_p_ddot)
+    _bad = numpy.empty(_n, dtype=bool)
+    for _s in range(0, _n, CHUNK):
+        _b = slice(_s, _s + CHUNK)
+        _bad[_b] = _block(o_ddot[_b], Q[_b], omega[_b], omega_dot[_b], rho_M[_b], rho_dot_M[_b], rho_ddot_M[_b], out_p_ddot[_b])
+    return _bad
+
+
+def _block(o_ddot, Q, omega, omega_dot, rho_M, rho_dot_M, rho_ddot_M, out_p_ddot):
     _n = o_ddot.shape[0]
     # one transposing copy: every component then is a contiguous array
     o_ddot_s = tuple(numpy.ascontiguousarray(o_ddot.reshape(_n, 3).T))

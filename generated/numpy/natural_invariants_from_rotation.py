@@ -121,8 +121,23 @@ def _main(Q_00, Q_01, Q_02, Q_10, Q_11, Q_12, Q_20, Q_21, Q_22):
     )
 
 
+#: samples per block: NumPy's temporaries of one block stay in cache
+CHUNK = 16384
+
+
 def natural_invariants_from_rotation(Q, out_e, out_phi):
     """Evaluate on ``n`` samples; write the outputs; return the singular mask ``(n,)``."""
+    _n = Q.shape[0]
+    if _n <= CHUNK:
+        return _block(Q, out_e, out_phi)
+    _bad = numpy.empty(_n, dtype=bool)
+    for _s in range(0, _n, CHUNK):
+        _b = slice(_s, _s + CHUNK)
+        _bad[_b] = _block(Q[_b], out_e[_b], out_phi[_b])
+    return _bad
+
+
+def _block(Q, out_e, out_phi):
     _n = Q.shape[0]
     # one transposing copy: every component then is a contiguous array
     Q_s = tuple(numpy.ascontiguousarray(Q.reshape(_n, 9).T))

@@ -44,8 +44,23 @@ def _main(p1_0, p1_1, p1_2, p2_0, p2_1, p2_2):
     )
 
 
+#: samples per block: NumPy's temporaries of one block stay in cache
+CHUNK = 16384
+
+
 def plucker_from_points(p1, p2, out_kappa):
     """Evaluate on ``n`` samples; write the outputs; return the singular mask ``(n,)``."""
+    _n = p1.shape[0]
+    if _n <= CHUNK:
+        return _block(p1, p2, out_kappa)
+    _bad = numpy.empty(_n, dtype=bool)
+    for _s in range(0, _n, CHUNK):
+        _b = slice(_s, _s + CHUNK)
+        _bad[_b] = _block(p1[_b], p2[_b], out_kappa[_b])
+    return _bad
+
+
+def _block(p1, p2, out_kappa):
     _n = p1.shape[0]
     # one transposing copy: every component then is a contiguous array
     p1_s = tuple(numpy.ascontiguousarray(p1.reshape(_n, 3).T))

@@ -37,8 +37,23 @@ def _main(kappa_A_0, kappa_A_1, kappa_A_2, kappa_A_3, kappa_A_4, kappa_A_5, a_0,
     )
 
 
+#: samples per block: NumPy's temporaries of one block stay in cache
+CHUNK = 16384
+
+
 def plucker_transfer(kappa_A, a, b, out_kappa_B):
     """Evaluate on ``n`` samples; write the outputs; return the singular mask ``(n,)``."""
+    _n = kappa_A.shape[0]
+    if _n <= CHUNK:
+        return _block(kappa_A, a, b, out_kappa_B)
+    _bad = numpy.empty(_n, dtype=bool)
+    for _s in range(0, _n, CHUNK):
+        _b = slice(_s, _s + CHUNK)
+        _bad[_b] = _block(kappa_A[_b], a[_b], b[_b], out_kappa_B[_b])
+    return _bad
+
+
+def _block(kappa_A, a, b, out_kappa_B):
     _n = kappa_A.shape[0]
     # one transposing copy: every component then is a contiguous array
     kappa_A_s = tuple(numpy.ascontiguousarray(kappa_A.reshape(_n, 6).T))

@@ -37,8 +37,23 @@ def _main(a_ddot_0, a_ddot_1, a_ddot_2, omega_0, omega_1, omega_2, omega_dot_0, 
     )
 
 
+#: samples per block: NumPy's temporaries of one block stay in cache
+CHUNK = 16384
+
+
 def point_acceleration(a_ddot, omega, omega_dot, p, a, out_p_ddot):
     """Evaluate on ``n`` samples; write the outputs; return the singular mask ``(n,)``."""
+    _n = a_ddot.shape[0]
+    if _n <= CHUNK:
+        return _block(a_ddot, omega, omega_dot, p, a, out_p_ddot)
+    _bad = numpy.empty(_n, dtype=bool)
+    for _s in range(0, _n, CHUNK):
+        _b = slice(_s, _s + CHUNK)
+        _bad[_b] = _block(a_ddot[_b], omega[_b], omega_dot[_b], p[_b], a[_b], out_p_ddot[_b])
+    return _bad
+
+
+def _block(a_ddot, omega, omega_dot, p, a, out_p_ddot):
     _n = a_ddot.shape[0]
     # one transposing copy: every component then is a contiguous array
     a_ddot_s = tuple(numpy.ascontiguousarray(a_ddot.reshape(_n, 3).T))

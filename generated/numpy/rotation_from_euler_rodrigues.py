@@ -51,8 +51,23 @@ def _main(eta_0, eta_1, eta_2, eta_3):
     )
 
 
+#: samples per block: NumPy's temporaries of one block stay in cache
+CHUNK = 16384
+
+
 def rotation_from_euler_rodrigues(eta, out_Q):
     """Evaluate on ``n`` samples; write the outputs; return the singular mask ``(n,)``."""
+    _n = eta.shape[0]
+    if _n <= CHUNK:
+        return _block(eta, out_Q)
+    _bad = numpy.empty(_n, dtype=bool)
+    for _s in range(0, _n, CHUNK):
+        _b = slice(_s, _s + CHUNK)
+        _bad[_b] = _block(eta[_b], out_Q[_b])
+    return _bad
+
+
+def _block(eta, out_Q):
     _n = eta.shape[0]
     # one transposing copy: every component then is a contiguous array
     eta_s = tuple(numpy.ascontiguousarray(eta.reshape(_n, 4).T))

@@ -58,8 +58,23 @@ def _main(e_0, e_1, e_2, phi, a_0, a_1, a_2, a_prime_0, a_prime_1, a_prime_2):
     )
 
 
+#: samples per block: NumPy's temporaries of one block stay in cache
+CHUNK = 16384
+
+
 def screw_axis_point(e, phi, a, a_prime, out_p0):
     """Evaluate on ``n`` samples; write the outputs; return the singular mask ``(n,)``."""
+    _n = e.shape[0]
+    if _n <= CHUNK:
+        return _block(e, phi, a, a_prime, out_p0)
+    _bad = numpy.empty(_n, dtype=bool)
+    for _s in range(0, _n, CHUNK):
+        _b = slice(_s, _s + CHUNK)
+        _bad[_b] = _block(e[_b], phi[_b], a[_b], a_prime[_b], out_p0[_b])
+    return _bad
+
+
+def _block(e, phi, a, a_prime, out_p0):
     _n = e.shape[0]
     # one transposing copy: every component then is a contiguous array
     e_s = tuple(numpy.ascontiguousarray(e.reshape(_n, 3).T))

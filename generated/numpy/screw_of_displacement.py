@@ -297,8 +297,23 @@ def _main(Q_00, Q_01, Q_02, Q_10, Q_11, Q_12, Q_20, Q_21, Q_22, a_0, a_1, a_2, a
     )
 
 
+#: samples per block: NumPy's temporaries of one block stay in cache
+CHUNK = 16384
+
+
 def screw_of_displacement(Q, a, a_prime, out_e, out_phi, out_p0, out_pitch, out_plucker):
     """Evaluate on ``n`` samples; write the outputs; return the singular mask ``(n,)``."""
+    _n = Q.shape[0]
+    if _n <= CHUNK:
+        return _block(Q, a, a_prime, out_e, out_phi, out_p0, out_pitch, out_plucker)
+    _bad = numpy.empty(_n, dtype=bool)
+    for _s in range(0, _n, CHUNK):
+        _b = slice(_s, _s + CHUNK)
+        _bad[_b] = _block(Q[_b], a[_b], a_prime[_b], out_e[_b], out_phi[_b], out_p0[_b], out_pitch[_b], out_plucker[_b])
+    return _bad
+
+
+def _block(Q, a, a_prime, out_e, out_phi, out_p0, out_pitch, out_plucker):
     _n = Q.shape[0]
     # one transposing copy: every component then is a contiguous array
     Q_s = tuple(numpy.ascontiguousarray(Q.reshape(_n, 9).T))

@@ -37,8 +37,23 @@ def _main(t_A_0, t_A_1, t_A_2, t_A_3, t_A_4, t_A_5, a_0, a_1, a_2, p_0, p_1, p_2
     )
 
 
+#: samples per block: NumPy's temporaries of one block stay in cache
+CHUNK = 16384
+
+
 def twist_transfer(t_A, a, p, out_t_P):
     """Evaluate on ``n`` samples; write the outputs; return the singular mask ``(n,)``."""
+    _n = t_A.shape[0]
+    if _n <= CHUNK:
+        return _block(t_A, a, p, out_t_P)
+    _bad = numpy.empty(_n, dtype=bool)
+    for _s in range(0, _n, CHUNK):
+        _b = slice(_s, _s + CHUNK)
+        _bad[_b] = _block(t_A[_b], a[_b], p[_b], out_t_P[_b])
+    return _bad
+
+
+def _block(t_A, a, p, out_t_P):
     _n = t_A.shape[0]
     # one transposing copy: every component then is a contiguous array
     t_A_s = tuple(numpy.ascontiguousarray(t_A.reshape(_n, 6).T))

@@ -67,8 +67,23 @@ def _main(a_0, a_1, a_2, p_0, p_1, p_2):
     )
 
 
+#: samples per block: NumPy's temporaries of one block stay in cache
+CHUNK = 16384
+
+
 def twist_transfer_matrix(a, p, out_U):
     """Evaluate on ``n`` samples; write the outputs; return the singular mask ``(n,)``."""
+    _n = a.shape[0]
+    if _n <= CHUNK:
+        return _block(a, p, out_U)
+    _bad = numpy.empty(_n, dtype=bool)
+    for _s in range(0, _n, CHUNK):
+        _b = slice(_s, _s + CHUNK)
+        _bad[_b] = _block(a[_b], p[_b], out_U[_b])
+    return _bad
+
+
+def _block(a, p, out_U):
     _n = a.shape[0]
     # one transposing copy: every component then is a contiguous array
     a_s = tuple(numpy.ascontiguousarray(a.reshape(_n, 3).T))

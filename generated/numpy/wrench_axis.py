@@ -53,8 +53,23 @@ def _main(w_A_0, w_A_1, w_A_2, w_A_3, w_A_4, w_A_5, a_0, a_1, a_2):
     )
 
 
+#: samples per block: NumPy's temporaries of one block stay in cache
+CHUNK = 16384
+
+
 def wrench_axis(w_A, a, out_p0, out_pitch, out_plucker):
     """Evaluate on ``n`` samples; write the outputs; return the singular mask ``(n,)``."""
+    _n = w_A.shape[0]
+    if _n <= CHUNK:
+        return _block(w_A, a, out_p0, out_pitch, out_plucker)
+    _bad = numpy.empty(_n, dtype=bool)
+    for _s in range(0, _n, CHUNK):
+        _b = slice(_s, _s + CHUNK)
+        _bad[_b] = _block(w_A[_b], a[_b], out_p0[_b], out_pitch[_b], out_plucker[_b])
+    return _bad
+
+
+def _block(w_A, a, out_p0, out_pitch, out_plucker):
     _n = w_A.shape[0]
     # one transposing copy: every component then is a contiguous array
     w_A_s = tuple(numpy.ascontiguousarray(w_A.reshape(_n, 6).T))

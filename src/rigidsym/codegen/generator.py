@@ -202,6 +202,10 @@ def _balanced(terms: list[str]) -> str:
 
 #: samples per block of the blocked batch loop (trig values precomputed on the stack)
 TRIG_BLOCK = 64
+#: samples per block of the generated NumPy kernels: the temporaries of one block (tens of
+#: arrays of 8 bytes a sample) stay in L2, so large batches are not memory-bound; measured in
+#: benchmarks/RESULTS.md
+NUMPY_CHUNK = 16384
 _TRIG = (sp.sin, sp.cos)
 
 
@@ -275,7 +279,7 @@ def _render_kernel(env, kc: KernelCode) -> dict[str, str]:
     files = {}
     t = "numpy_kernel.py.j2"
     files[f"numpy/{k.name}.py"] = env.get_template(t).render(
-        header=_header(kc, t), ops=kc.ops, hash=kc.hash,
+        header=_header(kc, t), ops=kc.ops, hash=kc.hash, chunk=NUMPY_CHUNK,
         variants=[{"name": v.name, "cond": None if v.cond is None else npp.doprint(v.cond),
                    "risky": _risky_names(v.program, npp), **_program_lines(v.program, npp)}
                   for v in kc.variants], **common)
