@@ -80,9 +80,9 @@ def inputs(name: str, n: int, rng) -> list[np.ndarray]:
 def _alloc_call(f, name):
     k = SPECS[name]
 
-    def call(*xs):
+    def call(*xs, out=None):
         n = xs[0].shape[0]
-        outs = [np.empty((n,) + o.shape) for o in k.outputs]
+        outs = [np.empty((n,) + o.shape) for o in k.outputs] if out is None else out
         f(*xs, *outs)
         return outs
     return call
@@ -90,6 +90,51 @@ def _alloc_call(f, name):
 
 def col_generated(name: str, backend: str):
     return _alloc_call(K.batch_function(name, backend), name)
+
+
+_FLOOR_SRC = """
+#include <stdint.h>
+#include <string.h>
+uint64_t floor_read(const double *x, int64_t len) {
+    uint64_t acc = 0;            /* integer xor: vectorises without reassociating floats */
+    for (int64_t i = 0; i < len; ++i) { uint64_t b; memcpy(&b, x + i, 8); acc ^= b; }
+    return acc;
+}
+void floor_write(double *x, int64_t len) {
+    for (int64_t i = 0; i < len; ++i) x[i] = 0.0;
+}
+"""
+
+
+def col_floor(name: str, build: Path):
+    """Memory floor: allocate the outputs as the other columns do, read every input byte once
+    and write every output byte once (no arithmetic). No kernel with the same inputs and
+    outputs can go below it by much; a kernel at this floor is memory-bound."""
+    import cffi
+
+    from rigidsym.codegen import cbuild
+
+    ffi = cffi.FFI()
+    ffi.cdef("uint64_t floor_read(const double *x, int64_t len);"
+             "void floor_write(double *x, int64_t len);")
+    ffi.set_source("_floor_io", _FLOOR_SRC, extra_compile_args=list(cbuild.CFLAGS))
+    lib = _load_cffi("_floor_io", ffi.compile(tmpdir=str(build), verbose=False))
+    fb = lib.ffi.from_buffer
+
+    def f(*arrays):
+        nin = len(SPECS[name].args)
+        for x in arrays[:nin]:
+            lib.lib.floor_read(fb("double[]", x), x.size)
+        for o in arrays[nin:]:
+            lib.lib.floor_write(fb("double[]", o), o.size)
+    return _alloc_call(f, name)
+
+
+def _load_cffi(mod: str, so: str):
+    spec = importlib.util.spec_from_file_location(mod, so)
+    lib = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(lib)
+    return lib
 
 
 def _declared(name: str):
@@ -143,9 +188,7 @@ def col_sympy_c(name: str, build: Path):
     ffi.set_source(mod, "\n".join(lines) + "\n", extra_compile_args=list(cbuild.CFLAGS),
                    libraries=["m"])
     so = ffi.compile(tmpdir=str(build), verbose=False)
-    spec = importlib.util.spec_from_file_location(mod, so)
-    lib = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(lib)
+    lib = _load_cffi(mod, so)
     fn, fb, m = getattr(lib.lib, f"plain_{name}"), lib.ffi.from_buffer, len(red)
 
     def call(*xs, out=None):
@@ -153,6 +196,9 @@ def col_sympy_c(name: str, build: Path):
         out = np.empty((n, m)) if out is None else out
         fn(n, *[fb("double[]", x) for x in xs], fb("double[]", out))
         return out
+    # counted as the generator counts its own (sympy.count_ops of the CSE'd program)
+    call.ops = sum(int(sp.count_ops(v)) for _, v in temps) + sum(int(sp.count_ops(v))
+                                                                   for v in red)
     return call
 
 
@@ -183,6 +229,59 @@ def _flat_out(o, n):
     return np.concatenate([np.asarray(x).reshape(n, -1) for x in o], axis=1)
 
 
+ALLOC_COLS = ["generated C", "generated NumPy", "hand NumPy", "lambdify-cse", "sympy-cse C",
+              "memory floor"]
+#: columns that can write into caller-provided outputs
+PRE_COLS = ["generated C", "generated NumPy", "sympy-cse C", "memory floor"]
+
+
+def _outputs(name: str, col: str, n: int):
+    k = SPECS[name]
+    if col == "sympy-cse C":
+        return np.empty((n, sum(o.size for o in k.outputs)))
+    return [np.empty((n,) + o.shape) for o in k.outputs]
+
+
+def _measure(name, funcs, xs, n, rounds, rng_ref):
+    """Both regimes for one kernel and one N: {regime: {column: ns/sample or a note}}."""
+    ref = _flat_out(funcs["generated C"](*xs), n)
+    res = {"allocated": {}, "caller-provided outputs": {}}
+    for c in ALLOC_COLS:
+        if c not in funcs:
+            res["allocated"][c] = "n/a"
+            continue
+        if c != "memory floor":
+            got = _flat_out(funcs[c](*xs), n)
+            scale = np.maximum(np.abs(ref).max(axis=1), 1e-300)
+            err = (np.abs(got - ref).max(axis=1) / scale).max()
+            if err > 1e-10:
+                res["allocated"][c] = f"mismatch {err:.1e}"
+                continue
+        res["allocated"][c] = timeit(funcs[c], xs, n, rounds)
+        if c in PRE_COLS:
+            outs = _outputs(name, c, n)
+            res["caller-provided outputs"][c] = timeit(
+                lambda *a, _f=funcs[c], _o=outs: _f(*a, out=_o), xs, n, rounds)
+    return res
+
+
+def _table(rows, N, regime, cols):
+    text = [f"### {regime}", "",
+            "| kernel | ours | ops | sympy-cse ops | " + " | ".join(cols)
+            + " | C / sympy-cse C |",
+            "|---|---|---:|---:|" + "---:|" * (len(cols) + 1)]
+    for kid, name, n, ops, res in rows:
+        if n != N:
+            continue
+        cells = res[regime]
+        fmt = [f"{v:.3g}" if isinstance(v, float) else v for v in (cells[c] for c in cols)]
+        a, b = cells.get("generated C"), cells.get("sympy-cse C")
+        ratio = f"{a / b:.2f}" if isinstance(a, float) and isinstance(b, float) else "n/a"
+        text.append(f"| {kid} | `{name}` | {ops[0]} | {ops[1]} | " + " | ".join(fmt)
+                    + f" | {ratio} |")
+    return text + [""]
+
+
 def main(argv=None) -> int:
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     p.add_argument("--quick", action="store_true", help="N = 1e3, 1e5 and 3 rounds")
@@ -197,7 +296,6 @@ def main(argv=None) -> int:
     del big
     peers = _peers()
     Ns = [1000, 100000] if args.quick else [1000, 100000, 1000000]
-    cols = ["generated C", "generated NumPy", "hand NumPy", "lambdify-cse", "sympy-cse C"]
     rng = np.random.default_rng(1)
     rows = []
     meta = K._meta()
@@ -208,7 +306,8 @@ def main(argv=None) -> int:
             funcs = {"generated C": col_generated(name, "c"),
                      "generated NumPy": col_generated(name, "numpy"),
                      "lambdify-cse": col_lambdify(name),
-                     "sympy-cse C": col_sympy_c(name, build)}
+                     "sympy-cse C": col_sympy_c(name, build),
+                     "memory floor": col_floor(name, build)}
             if peers is not None:
                 hand = getattr(peers, f"np_{kid.lower()}")
                 if kid == "K6":     # the peers' residual with n = f = 0 is the wrench
@@ -218,49 +317,48 @@ def main(argv=None) -> int:
                 funcs["hand NumPy"] = hand
             for N in Ns:
                 xs = inputs(name, N, rng)
-                ref = _flat_out(funcs["generated C"](*xs), N)
-                cells = {}
-                for c in cols:
-                    if c not in funcs:
-                        cells[c] = "n/a"
-                        continue
-                    got = _flat_out(funcs[c](*xs), N)
-                    scale = np.maximum(np.abs(ref).max(axis=1), 1e-300)
-                    err = (np.abs(got - ref).max(axis=1) / scale).max()
-                    if err > 1e-10:
-                        cells[c] = f"mismatch {err:.1e}"
-                        continue
-                    rounds = 3 if args.quick or N >= 1000000 else 7
-                    cells[c] = timeit(funcs[c], xs, N, rounds)
-                rows.append((kid, name, N, meta[name]["ops"], cells))
-                print(kid, N, {c: (f"{v:.1f}" if isinstance(v, float) else v)
-                               for c, v in cells.items()}, file=sys.stderr)
+                rounds = 3 if args.quick else 7
+                res = _measure(name, funcs, xs, N, rounds, rng)
+                rows.append((kid, name, N, (meta[name]["ops"], funcs["sympy-cse C"].ops), res))
+                for regime, cells in res.items():
+                    print(kid, N, regime, {c: (f"{v:.1f}" if isinstance(v, float) else v)
+                                           for c, v in cells.items()}, file=sys.stderr)
     text = ["# Benchmarks: generated kernels vs. plain SymPy paths", "",
             f"- host: {platform.machine()}, {os.cpu_count()} logical cores (shared), "
             f"Python {platform.python_version()}, numpy {np.__version__}, sympy {sp.__version__}",
-            "- one thread; clock: thread CPU time; outputs allocated inside each timed call; "
-            "glibc malloc put in its steady large-array regime first (as peers-bench)",
-            "- C: gcc -O3 -march=native (no -ffast-math); `generated C` includes the per-sample "
-            "singular/finiteness checks; kernels calling sin/cos run in blocks of 64 samples "
-            "(a loop computing the sin/cos values into stack arrays, then the per-sample loop)"
+            "- one thread; clock: thread CPU time; each cell the median over rounds of repeated "
+            "calls for >= 10 ms; glibc malloc put in its steady large-array regime first "
+            "(as peers-bench)",
+            "- two regimes: *allocated* (outputs allocated inside each timed call, as "
+            "peers-bench does) and *caller-provided outputs* (`out=`: the kernel alone)",
+            "- C: gcc -O3 -march=native -ffp-contract=fast (no -ffast-math), both C columns "
+            "built and called through cffi; `generated C` includes the per-sample "
+            "singular/finiteness checks of kernels with a singular set; kernels calling "
+            "sin/cos run in blocks of 64 samples (a loop computing the sin/cos values into "
+            "stack arrays, then the per-sample loop)"
             + (", built against glibc's libmvec (that first loop SIMD with vectorised sin/cos)"
                if _mvec() else ""),
+            "- `generated NumPy` evaluates in blocks of "
+            f"{_numpy_chunk()} samples (temporaries stay in cache)",
             "- `hand NumPy` is the peers-bench reference (a); "
-            "`sympy-cse C` is a plain sympy.cse + ccode loop over the declared expressions",
+            "`sympy-cse C` is a plain sympy.cse + ccode loop over the declared expressions; "
+            "`memory floor` allocates the outputs like the others, reads every input byte "
+            "once and writes every output byte once, with no arithmetic: a kernel near it is "
+            "bound by memory (and, when allocated, by the kernel zeroing fresh pages), not "
+            "by its code",
             "- regenerate: `PYTHONPATH=src:. python benchmarks/run.py`", ""]
     for N in Ns:
-        text += [f"## N = {N:.0e}: ns/sample", "",
-                 "| kernel | ours | ops | " + " | ".join(cols) + " |",
-                 "|---|---|---:|" + "---:|" * len(cols)]
-        for kid, name, n, ops, cells in rows:
-            if n != N:
-                continue
-            fmt = [f"{v:.3g}" if isinstance(v, float) else v for v in (cells[c] for c in cols)]
-            text.append(f"| {kid} | `{name}` | {ops} | " + " | ".join(fmt) + " |")
-        text.append("")
+        text += [f"## N = {N:.0e}: ns/sample", ""]
+        text += _table(rows, N, "allocated", ALLOC_COLS)
+        text += _table(rows, N, "caller-provided outputs", PRE_COLS)
     Path(args.out).write_text("\n".join(text))
     print(f"wrote {args.out}", file=sys.stderr)
     return 0
+
+
+def _numpy_chunk() -> int:
+    from rigidsym.codegen.generator import NUMPY_CHUNK
+    return NUMPY_CHUNK
 
 
 if __name__ == "__main__":
