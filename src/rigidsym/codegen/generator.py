@@ -291,9 +291,13 @@ def _render_kernel(env, kc: KernelCode) -> dict[str, str]:
     cvars = [{"name": v.name, "cond": None if v.cond is None else cp.doprint(v.cond),
               "finite": _finite_check(v.program, k), **_program_lines(v.program, cp)}
              for v in kc.variants]
+    # nothing a sample could flag (no division, no finiteness test, no branch): the batch
+    # loop needs no count
+    never_singular = len(cvars) == 1 and not divides and not cvars[0]["finite"]
     for t, path in (("c_kernel.h.j2", f"c/{k.name}.h"), ("c_kernel.c.j2", f"c/{k.name}.c")):
         files[path] = env.get_template(t).render(header=_header(kc, t), variants=cvars,
-                                                 used=used, trig=_trig_plan(kc, cp), **common)
+                                                 used=used, trig=_trig_plan(kc, cp),
+                                                 never_singular=never_singular, **common)
     return files
 
 
