@@ -169,7 +169,7 @@ def col_sympy_c(name: str, build: Path):
 
     k, flat, exprs = _declared(name)
     temps, red = sp.cse(exprs)
-    ins = [a for a in k.args]
+    ins = k.args
     sig = (f"void plain_{name}(int64_t n, "
            + ", ".join(f"const double *in{i}" for i in range(len(ins))) + ", double *out)")
     lines = ["#include <math.h>", "#include <stdint.h>", sig + " {",
@@ -242,7 +242,7 @@ def _outputs(name: str, col: str, n: int):
     return [np.empty((n,) + o.shape) for o in k.outputs]
 
 
-def _measure(name, funcs, xs, n, rounds, rng_ref):
+def _measure(name, funcs, xs, n, rounds):
     """Both regimes for one kernel and one N: {regime: {column: ns/sample or a note}}."""
     ref = _flat_out(funcs["generated C"](*xs), n)
     res = {"allocated": {}, "caller-provided outputs": {}}
@@ -318,7 +318,7 @@ def main(argv=None) -> int:
             for N in Ns:
                 xs = inputs(name, N, rng)
                 rounds = 3 if args.quick else 7
-                res = _measure(name, funcs, xs, N, rounds, rng)
+                res = _measure(name, funcs, xs, N, rounds)
                 rows.append((kid, name, N, (meta[name]["ops"], funcs["sympy-cse C"].ops), res))
                 for regime, cells in res.items():
                     print(kid, N, regime, {c: (f"{v:.1f}" if isinstance(v, float) else v)
