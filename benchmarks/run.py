@@ -7,7 +7,7 @@ expressions; plus each kernel's operation count. Writes ``benchmarks/RESULTS.md`
 
 Usage (from the repository root)::
 
-    PYTHONPATH=src:. python benchmarks/run.py [--quick] [--kernels K1,K2]
+    python benchmarks/run.py [--quick] [--kernels K1,K2]
 
 Clock: thread CPU time; each cell is the median over rounds of (time of repeated calls until
 >= 10 ms) / (calls * N). Outputs are allocated inside every timed call for every column.
@@ -29,10 +29,10 @@ import numpy as np
 import sympy as sp
 
 ROOT = Path(__file__).resolve().parents[1]
-sys.path[:0] = [str(ROOT / "src"), str(ROOT)]
 os.environ.setdefault("OMP_NUM_THREADS", "1")
 
-from derivations.kernels_spec import KERNELS  # noqa: E402
+from rigidsym.derivations.kernels_spec import KERNELS  # noqa: E402
+
 from rigidsym import kernels as K  # noqa: E402
 from rigidsym.codegen.generator import _flatten  # noqa: E402
 from rigidsym.codegen.spec import flat_symbols, input_symbols  # noqa: E402
@@ -346,7 +346,7 @@ def main(argv=None) -> int:
             "once and writes every output byte once, with no arithmetic: a kernel near it is "
             "bound by memory (and, when allocated, by the kernel zeroing fresh pages), not "
             "by its code",
-            "- regenerate: `PYTHONPATH=src:. python benchmarks/run.py`", ""]
+            "- regenerate: `python benchmarks/run.py`", ""]
     for N in Ns:
         text += [f"## N = {N:.0e}: ns/sample", ""]
         text += _table(rows, N, "allocated", ALLOC_COLS)

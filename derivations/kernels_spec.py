@@ -144,11 +144,12 @@ KERNELS: list[Kernel] = [
 
 # ----------------------------------------------------------------------------------------
 # Sections 3.2-3.8: kernels composed of the sections' formula functions
-_S21, _S22 = "derivations.sec3_2_1.", "derivations.sec3_2_2."
-_S41, _S42 = "derivations.sec3_4_1.", "derivations.sec3_4_2."
-_S5, _S5R, _S6 = "derivations.sec3_5.", "derivations.sec3_5_rates.", "derivations.sec3_6."
-_S7, _S8 = "derivations.sec3_7.", "derivations.sec3_8."
-_EX10 = "derivations.exercises.ex3_10."
+_S21, _S22 = "rigidsym.derivations.sec3_2_1.", "rigidsym.derivations.sec3_2_2."
+_S41, _S42 = "rigidsym.derivations.sec3_4_1.", "rigidsym.derivations.sec3_4_2."
+_S5, _S5R = "rigidsym.derivations.sec3_5.", "rigidsym.derivations.sec3_5_rates."
+_S6 = "rigidsym.derivations.sec3_6."
+_S7, _S8 = "rigidsym.derivations.sec3_7.", "rigidsym.derivations.sec3_8."
+_EX10 = "rigidsym.derivations.exercises.ex3_10."
 
 
 def _v(name, doc, kind="any"):

@@ -59,10 +59,10 @@ def _fake(sources, build):
 
 
 def test_missing_source_is_skipped_with_a_note():
-    k = _fake(("derivations.sec9_9.nothing_here",), lambda v: {"w": v})
+    k = _fake(("rigidsym.derivations.sec9_9.nothing_here",), lambda v: {"w": v})
     res = generate([k])
     assert res.kernels == [] and "fake_kernel" in res.notes[0]
-    assert "derivations.sec9_9.nothing_here" in res.notes[0]
+    assert "rigidsym.derivations.sec9_9.nothing_here" in res.notes[0]
 
 
 def test_header_and_files_of_a_kernel():

@@ -17,8 +17,8 @@ import mpmath
 import numpy as np
 import pytest
 import sympy as sp
+from rigidsym.derivations.kernels_spec import KERNELS, missing_sources
 
-from derivations.kernels_spec import KERNELS, missing_sources
 from rigidsym import kernels as K
 from rigidsym.codegen.generator import _flatten
 from rigidsym.codegen.spec import flat_symbols, input_symbols

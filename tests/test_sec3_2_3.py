@@ -12,9 +12,13 @@ import pytest
 import sympy as sp
 from hypothesis import given, settings
 from hypothesis import strategies as st
+from rigidsym.derivations.sec3_2_1 import pitch_of_displacement, screw_axis_point
+from rigidsym.derivations.sec3_2_2 import (
+    plucker_from_points,
+    plucker_transfer,
+    plucker_transfer_matrix,
+)
 
-from derivations.sec3_2_1 import pitch_of_displacement, screw_axis_point
-from derivations.sec3_2_2 import plucker_from_points, plucker_transfer, plucker_transfer_matrix
 from rigidsym.primitives import cpm
 
 DIGITS = 50

@@ -11,8 +11,7 @@ import mpmath
 import sympy as sp
 from hypothesis import given, settings
 from hypothesis import strategies as st
-
-from derivations.sec3_4_1 import (
+from rigidsym.derivations.sec3_4_1 import (
     instant_screw_axis_point,
     instant_screw_pitch,
     instant_screw_plucker,

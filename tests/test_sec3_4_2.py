@@ -12,8 +12,7 @@ import pytest
 import sympy as sp
 from hypothesis import given, settings
 from hypothesis import strategies as st
-
-from derivations.sec3_4_2 import (
+from rigidsym.derivations.sec3_4_2 import (
     H_matrix,
     H_tilde,
     L_matrix,
@@ -23,6 +22,7 @@ from derivations.sec3_4_2 import (
     twist_transfer,
     twist_transfer_matrix,
 )
+
 from rigidsym.primitives import rotation_from_natural_invariants, vect
 
 _e = sp.Matrix(sp.symbols("e1:4", real=True))

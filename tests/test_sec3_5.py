@@ -10,10 +10,10 @@ from __future__ import annotations
 
 import pytest
 import sympy as sp
+from rigidsym.derivations import sec3_5_rates as R
+from rigidsym.derivations.common import Mt
+from rigidsym.derivations.sec3_5 import point_acceleration
 
-from derivations import sec3_5_rates as R
-from derivations.common import Mt
-from derivations.sec3_5 import point_acceleration
 from rigidsym.checker import explicit
 from rigidsym.primitives import block, cpm
 from rigidsym.symbols import TIME

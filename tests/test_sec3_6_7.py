@@ -5,8 +5,8 @@ from __future__ import annotations
 import sympy as sp
 from hypothesis import given, settings
 from hypothesis import strategies as st
+from rigidsym.derivations import sec3_6, sec3_7
 
-from derivations import sec3_6, sec3_7
 from rigidsym.checker import decide_rel
 from rigidsym.primitives import cpm, rotation_from_quaternion
 from rigidsym.registry import Rel

@@ -12,8 +12,7 @@ import numpy as np
 import sympy as sp
 from hypothesis import given, settings
 from hypothesis import strategies as st
-
-from derivations.sec3_8 import (
+from rigidsym.derivations.sec3_8 import (
     inertia_at_point,
     inertia_dyad_at_point,
     kinetic_energy,

@@ -3,8 +3,8 @@
 from __future__ import annotations
 
 import sympy as sp
+from rigidsym.derivations.sec3_2_1 import screw_axis_point
 
-from derivations.sec3_2_1 import screw_axis_point
 from rigidsym.primitives import trace, vect
 
 

@@ -3,8 +3,8 @@
 from __future__ import annotations
 
 import sympy as sp
+from rigidsym.derivations.sec3_4_2 import twist_transfer_matrix
 
-from derivations.sec3_4_2 import twist_transfer_matrix
 from rigidsym.primitives import block
 from rigidsym.symbols import rotation, vector
 

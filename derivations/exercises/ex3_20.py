@@ -3,8 +3,8 @@
 from __future__ import annotations
 
 import sympy as sp
+from rigidsym.derivations.sec3_4_2 import twist_transfer_matrix
 
-from derivations.sec3_4_2 import twist_transfer_matrix
 from rigidsym.primitives import block, cpm
 from rigidsym.symbols import scalar, symmetric_matrix, vector
 

@@ -186,7 +186,7 @@ def normalise_id(text: str) -> str:
 
 def _module(ex_id: str):
     k = int(ex_id.split(".")[1])
-    return importlib.import_module(f"derivations.exercises.ex3_{k:02d}")
+    return importlib.import_module(f"rigidsym.derivations.exercises.ex3_{k:02d}")
 
 
 _CACHE: dict[str, Solution] = {}

@@ -166,7 +166,7 @@ def build_parser() -> argparse.ArgumentParser:
 def _load_extensions() -> None:
     """Import optional command modules (code generation, exercises) if present."""
     import importlib
-    for mod in ("rigidsym.codegen.cli", "derivations.exercises.cli"):
+    for mod in ("rigidsym.codegen.cli", "rigidsym.derivations.exercises.cli"):
         try:
             importlib.import_module(mod)
         except ModuleNotFoundError as exc:

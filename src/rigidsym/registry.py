@@ -166,7 +166,7 @@ def equation(eq_id: str, title: str, *, section: str, latex: str, kind: str = "i
 
 def load_all() -> dict[str, Equation]:
     """Import every derivations module (which registers its declarations)."""
-    import derivations  # noqa: F401  (import registers)
+    import rigidsym.derivations  # noqa: F401  (import registers)
 
     return REGISTRY
 
