@@ -10,8 +10,12 @@ Common keyword arguments of every kernel:
 
 * ``out``: preallocated output array (a tuple for several outputs), shape batch + output.
 * ``check``: validate shapes, finiteness, unit vectors and rotations (default True).
-* ``on_singular``: ``"raise"`` (default) raises :class:`SingularConfigurationError` naming
-  the argument and the batch indices; ``"nan"`` returns NaN in exactly those rows.
+* ``on_singular``: ``"raise"`` (the default for NumPy inputs) raises
+  :class:`SingularConfigurationError` naming the argument and the batch indices; ``"nan"``
+  (the default for Dask inputs) returns NaN in exactly those rows.
+
+Dask arrays in (NumPy arrays mixed in are wrapped): the result is lazy Dask arrays chunked
+along the batch axes; nothing is computed until the caller computes (:mod:`rigidsym._dask`).
 
 Example:
     >>> import numpy as np
@@ -33,6 +37,8 @@ from collections.abc import Callable
 from functools import cache
 
 import numpy as np
+
+from rigidsym import _dask
 
 __all__ = ["SingularConfigurationError", "use_backend", "backend", "swap_blocks",
            "batch_function", "euler_rate_matrix", "euler_angle_rates", "KERNEL_NAMES",
@@ -59,6 +65,10 @@ class SingularConfigurationError(ValueError):
         super().__init__(message)
         self.argument = argument
         self.indices = indices
+
+    def __reduce__(self):
+        # pickled with its fields (distributed re-raises a worker's error on the client)
+        return (type(self), (str(self), self.argument, self.indices))
 
 
 @cache
@@ -167,7 +177,10 @@ def _validate(a: np.ndarray, arg: dict) -> None:
 
 
 def _call(name: str, args: tuple, out=None, check: bool = True,
-          on_singular: str = "raise"):
+          on_singular: str | None = None):
+    if _dask.is_dask(args):
+        return _dask.apply(name, args, out=out, check=check, on_singular=on_singular)
+    on_singular = "raise" if on_singular is None else on_singular
     meta = _meta()[name]
     if on_singular not in ("raise", "nan"):
         raise ValueError(f"on_singular: expected 'raise' or 'nan', got {on_singular!r}")
@@ -261,7 +274,7 @@ def _doc(meta: dict) -> str:
 def _make(name: str) -> Callable:
     meta = _meta()[name]
 
-    def kernel(*args, out=None, check=True, on_singular="raise"):
+    def kernel(*args, out=None, check=True, on_singular=None):
         return _call(name, args, out=out, check=check, on_singular=on_singular)
     kernel.__name__ = kernel.__qualname__ = name
     kernel.__doc__ = _doc(meta)
@@ -269,7 +282,7 @@ def _make(name: str) -> Callable:
     kernel.__signature__ = inspect.Signature(
         [P(a["name"], P.POSITIONAL_OR_KEYWORD) for a in meta["args"]]
         + [P("out", P.KEYWORD_ONLY, default=None), P("check", P.KEYWORD_ONLY, default=True),
-           P("on_singular", P.KEYWORD_ONLY, default="raise")])
+           P("on_singular", P.KEYWORD_ONLY, default=None)])
     kernel.__module__ = __name__
     return kernel
 
@@ -311,7 +324,7 @@ def euler_rate_matrix(angles, sequence: str, frame: str = "fixed", *, out=None,
 
 
 def euler_angle_rates(angles, omega, sequence: str, frame: str = "fixed", *, out=None,
-                      check: bool = True, on_singular: str = "raise"):
+                      check: bool = True, on_singular: str | None = None):
     """Euler-angle rates ``eta_dot = W^-1 omega`` (Exercise 3.10).
 
     Args:
