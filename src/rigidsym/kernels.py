@@ -32,6 +32,7 @@ import inspect
 import json
 import math
 import sys
+import threading
 import warnings
 from collections.abc import Callable
 from functools import cache
@@ -91,13 +92,20 @@ def _numpy_kernel(name: str) -> Callable:
 
 
 _STATE = {"backend": None, "warned": False, "lib": None}
+# one lock for the lazy build and the backend switch: kernels may first be called from
+# several threads at once (a thread pool, a Dask worker)
+_LOCK = threading.RLock()
 
 
 def _c_lib():
-    if _STATE["lib"] is None:
-        from rigidsym.codegen.cbuild import load
-        _STATE["lib"] = load()
-    return _STATE["lib"]
+    lib = _STATE["lib"]
+    if lib is None:
+        with _LOCK:
+            if _STATE["lib"] is None:
+                from rigidsym.codegen.cbuild import load
+                _STATE["lib"] = load()
+            lib = _STATE["lib"]
+    return lib
 
 
 def use_backend(name: str) -> str:
@@ -108,24 +116,27 @@ def use_backend(name: str) -> str:
     """
     if name not in ("c", "numpy"):
         raise ValueError(f"backend: expected 'c' or 'numpy', got {name!r}")
-    if name == "c":
-        try:
-            _c_lib()
-        except Exception as exc:  # noqa: BLE001 - any build failure means: no C backend
-            if not _STATE["warned"]:
-                warnings.warn(f"rigidsym.kernels: C backend unavailable ({exc}); using NumPy",
-                              RuntimeWarning, stacklevel=2)
-                _STATE["warned"] = True
-            name = "numpy"
-    _STATE["backend"] = name
+    with _LOCK:
+        if name == "c":
+            try:
+                _c_lib()
+            except Exception as exc:  # noqa: BLE001 - any build failure means: no C backend
+                if not _STATE["warned"]:
+                    warnings.warn(f"rigidsym.kernels: C backend unavailable ({exc}); "
+                                  "using NumPy", RuntimeWarning, stacklevel=2)
+                    _STATE["warned"] = True
+                name = "numpy"
+        _STATE["backend"] = name
     return name
 
 
 def backend() -> str:
     """The backend in use (selects ``"c"`` with NumPy fallback on first call)."""
-    if _STATE["backend"] is None:
-        use_backend("c")
-    return _STATE["backend"]
+    b = _STATE["backend"]
+    if b is None:
+        with _LOCK:
+            b = _STATE["backend"] or use_backend("c")
+    return b
 
 
 def batch_function(name: str, backend_name: str | None = None) -> Callable:
