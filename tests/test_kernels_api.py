@@ -124,3 +124,61 @@ def test_fallback_warns_once(monkeypatch):
     with warnings.catch_warnings():
         warnings.simplefilter("error")
         assert K.use_backend("c") == "numpy"
+
+
+# (name, argument scaled, scale): finite inputs whose output overflows, one per batch-loop
+# shape of the C template: plain loop (no singular set), counting loop, blocked sin/cos loop
+OVERFLOW = [("kinetic_energy", "omega", 1e200), ("plucker_from_points", "p1", 1e308),
+            ("N_matrix_dot", "omega", 1e307)]
+_ARGS = {"kinetic_energy": dict(I_C=np.diag([1.0, 2.0, 3.0]), m=2.0, omega=[1.0, 2.0, 3.0],
+                                c_dot=[0.5, 0.0, 1.0]),
+         "plucker_from_points": dict(p1=[1.0, 0.0, 0.0], p2=[-0.9e308, 1.0, 0.0]),
+         "N_matrix_dot": dict(e=E, phi=0.3, omega=[1.0, 2.0, -1.0])}
+
+
+def _positional(name, kw):
+    return [kw[a["name"]] for a in K._meta()[name]["args"]]
+
+
+@pytest.mark.parametrize("name,arg,scale", OVERFLOW)
+def test_overflow_is_reported(name, arg, scale):
+    """Finite inputs whose output overflows: NonFiniteResultError naming the largest input and
+    the batch indices, or NaN in exactly those rows; never a silent inf/NaN."""
+    kw = {k: np.asarray(v, dtype=float) for k, v in _ARGS[name].items()}
+    big = np.stack([kw[arg], kw[arg] * scale, kw[arg], kw[arg] * scale])      # batch (4,)
+    kw_big = dict(kw, **{arg: big})
+    assert all(np.isfinite(v).all() for v in kw_big.values())
+    with pytest.raises(K.NonFiniteResultError, match="non-finite output \\(overflow\\)") as info:
+        getattr(K, name)(*_positional(name, kw_big))
+    assert isinstance(info.value, K.SingularConfigurationError)
+    assert info.value.indices == [(1,), (3,)] and info.value.argument == arg
+    assert f"'{arg}'" in str(info.value)
+    res = getattr(K, name)(*_positional(name, kw_big), on_singular="nan")
+    res = np.asarray(res).reshape(4, -1)
+    assert np.isnan(res[[1, 3]]).all() and np.isfinite(res[[0, 2]]).all()
+    one = getattr(K, name)(*_positional(name, kw))
+    np.testing.assert_array_equal(res[0], np.asarray(one).ravel())
+
+
+@pytest.mark.parametrize("name,arg,scale", OVERFLOW)
+def test_c_batch_counts_overflow_rows_across_blocks(name, arg, scale, backend):
+    """The C batch function flags overflowing rows as it flags singular ones: NaN in exactly
+    those rows, their number returned; rows in several blocks and in a partial last block."""
+    if backend != "c":
+        pytest.skip("C batch loop")
+    meta = K._meta()[name]
+    n = 1000
+    bad = [0, 63, 64, 255, 256, 700, 999]
+    flat = []
+    for a in meta["args"]:
+        v = np.broadcast_to(np.asarray(_ARGS[name][a["name"]], dtype=float),
+                            (n,) + tuple(a["shape"])).copy()
+        if a["name"] == arg:
+            v[bad] *= scale
+        flat.append(v)
+    outs = [np.empty((n,) + tuple(o["shape"])) for o in meta["outputs"]]
+    with np.errstate(all="ignore"):
+        count = K.batch_function(name, "c")(*flat, *outs)
+    flagged = np.flatnonzero(np.isnan(np.concatenate([o.reshape(n, -1) for o in outs], 1))
+                             .any(axis=1))
+    assert count == len(bad) and flagged.tolist() == bad

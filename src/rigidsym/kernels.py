@@ -41,9 +41,9 @@ import numpy as np
 
 from rigidsym import _dask
 
-__all__ = ["SingularConfigurationError", "use_backend", "backend", "swap_blocks",
-           "batch_function", "euler_rate_matrix", "euler_angle_rates", "KERNEL_NAMES",
-           "UNIT_TOL", "ORTHO_TOL"]
+__all__ = ["SingularConfigurationError", "NonFiniteResultError", "use_backend", "backend",
+           "swap_blocks", "batch_function", "euler_rate_matrix", "euler_angle_rates",
+           "KERNEL_NAMES", "UNIT_TOL", "ORTHO_TOL"]
 
 #: tolerance on | ||e|| - 1 | for unit-vector arguments (e, eta).
 UNIT_TOL = 1e-8
@@ -70,6 +70,62 @@ class SingularConfigurationError(ValueError):
     def __reduce__(self):
         # pickled with its fields (distributed re-raises a worker's error on the client)
         return (type(self), (str(self), self.argument, self.indices))
+
+
+class NonFiniteResultError(SingularConfigurationError):
+    """Finite inputs gave a non-finite output (overflow): reported with ``check=True``.
+
+    Attributes:
+        argument: the input of largest magnitude in the offending samples.
+        indices: the batch indices (tuples over the batch shape) of those samples.
+    """
+
+
+#: sample flags of the generated batch functions (see numpy_kernel.py.j2)
+_SINGULAR, _NONFINITE = 1, 2
+
+
+def _classify_c_rows(name: str, flat: list, bufs: list, n: int) -> np.ndarray:
+    """Flags of the C batch: it writes NaN rows without saying why; the NumPy kernel,
+    re-run on just those rows, tells a singular sample from an overflow."""
+    idx = np.flatnonzero(np.isnan(bufs[0].reshape(n, -1)[:, 0]))
+    flags = np.zeros(n, dtype=np.uint8)
+    if idx.size:
+        tmp = [np.empty((idx.size,) + b.shape[1:]) for b in bufs]
+        sub = _numpy_kernel(name)(*[np.ascontiguousarray(a[idx]) for a in flat], *tmp)
+        # a row C flagged and NumPy did not (rounding at the edge of the range): overflow
+        flags[idx] = np.where(sub == 0, _NONFINITE, sub)
+    return flags
+
+
+def _report_flags(name, meta, flags, flat, bufs, batch, check, on_singular) -> None:
+    """Raise for flagged samples, or write NaN in their rows (``on_singular="nan"``)."""
+    specs = meta["args"]
+    sing = np.flatnonzero(flags == _SINGULAR)
+    over = np.flatnonzero(flags == _NONFINITE) if check else np.empty(0, dtype=np.intp)
+
+    def where(idx):
+        return [tuple(int(j) for j in np.unravel_index(i, batch)) for i in idx[:20]]
+    more = " ..."
+    if on_singular == "raise" and sing.size:
+        arg = meta["singular_arg"] or specs[0]["name"]
+        w = where(sing)
+        raise SingularConfigurationError(
+            f"{name}: singular configuration ({meta['singular'] or 'non-finite result'}"
+            f") in argument {arg!r} at batch indices {w}{more if sing.size > 20 else ''}",
+            arg, w)
+    if on_singular == "raise" and over.size:
+        # name the input of largest magnitude there: the likely cause of the overflow
+        mags = [np.abs(a[over]).max() for a in flat]
+        k = int(np.argmax(mags))
+        arg, w = specs[k]["name"], where(over)
+        raise NonFiniteResultError(
+            f"{name}: non-finite output (overflow) from finite inputs at batch indices {w}"
+            f"{more if over.size > 20 else ''}; largest input there: {arg!r} "
+            f"(max |{arg}| = {mags[k]:.3g})", arg, w)
+    for buf in bufs:
+        buf[sing] = np.nan
+        buf[over] = np.nan
 
 
 @cache
@@ -230,20 +286,13 @@ def _call(name: str, args: tuple, out=None, check: bool = True,
         b = backend()
         res = batch_function(name, b)(*flat, *bufs)
         if b == "numpy":
-            mask = res
+            flags = res
+        elif res:
+            flags = _classify_c_rows(name, flat, bufs, n)
         else:
-            mask = np.isnan(bufs[0].reshape(n, -1)[:, 0]) if res else None
-        if mask is not None and mask.any():
-            idx = np.flatnonzero(mask)
-            if on_singular == "raise":
-                where = [tuple(int(j) for j in np.unravel_index(i, batch)) for i in idx[:20]]
-                arg = meta["singular_arg"] or specs[0]["name"]
-                raise SingularConfigurationError(
-                    f"{name}: singular configuration ({meta['singular'] or 'non-finite result'}"
-                    f") in argument {arg!r} at batch indices {where}"
-                    f"{' ...' if len(idx) > 20 else ''}", arg, where)
-            for buf in bufs:
-                buf[idx] = np.nan
+            flags = None
+        if flags is not None and flags.any():
+            _report_flags(name, meta, flags, flat, bufs, batch, check, on_singular)
     results = []
     for i, o in enumerate(outs_meta):
         shp = batch + tuple(o["shape"])
