@@ -191,9 +191,18 @@ static inline int rigidsym_N_matrix_dot_sample_trig(
 
 
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
- * are written as NaN; returns their number. */
+ * are written as NaN; returns their number. One thread. */
 int64_t rigidsym_N_matrix_dot(
     int64_t n,
+    const double *RIGIDSYM_RESTRICT in_e,
+    const double *RIGIDSYM_RESTRICT in_phi,
+    const double *RIGIDSYM_RESTRICT in_omega,
+    double *RIGIDSYM_RESTRICT out_N_matrix_dot);
+
+/* The same on `threads` threads (OpenMP; one thread below RIGIDSYM_MIN_PARALLEL samples or
+ * without OpenMP); the outputs and the count are the same for every thread count. */
+int64_t rigidsym_N_matrix_dot_threads(
+    int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_e,
     const double *RIGIDSYM_RESTRICT in_phi,
     const double *RIGIDSYM_RESTRICT in_omega,

@@ -89,9 +89,17 @@ static inline int rigidsym_euler_angle_rates_yxy_fixed_sample_trig(
 
 
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
- * are written as NaN; returns their number. */
+ * are written as NaN; returns their number. One thread. */
 int64_t rigidsym_euler_angle_rates_yxy_fixed(
     int64_t n,
+    const double *RIGIDSYM_RESTRICT in_angles,
+    const double *RIGIDSYM_RESTRICT in_omega,
+    double *RIGIDSYM_RESTRICT out_eta_dot);
+
+/* The same on `threads` threads (OpenMP; one thread below RIGIDSYM_MIN_PARALLEL samples or
+ * without OpenMP); the outputs and the count are the same for every thread count. */
+int64_t rigidsym_euler_angle_rates_yxy_fixed_threads(
+    int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_angles,
     const double *RIGIDSYM_RESTRICT in_omega,
     double *RIGIDSYM_RESTRICT out_eta_dot);

@@ -51,9 +51,19 @@ static inline int rigidsym_kinetic_energy_sample(
 
 
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
- * are written as NaN; returns their number. */
+ * are written as NaN; returns their number. One thread. */
 int64_t rigidsym_kinetic_energy(
     int64_t n,
+    const double *RIGIDSYM_RESTRICT in_I_C,
+    const double *RIGIDSYM_RESTRICT in_m,
+    const double *RIGIDSYM_RESTRICT in_omega,
+    const double *RIGIDSYM_RESTRICT in_c_dot,
+    double *RIGIDSYM_RESTRICT out_T);
+
+/* The same on `threads` threads (OpenMP; one thread below RIGIDSYM_MIN_PARALLEL samples or
+ * without OpenMP); the outputs and the count are the same for every thread count. */
+int64_t rigidsym_kinetic_energy_threads(
+    int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_I_C,
     const double *RIGIDSYM_RESTRICT in_m,
     const double *RIGIDSYM_RESTRICT in_omega,

@@ -53,9 +53,18 @@ static inline int rigidsym_plucker_transfer_sample(
 
 
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
- * are written as NaN; returns their number. */
+ * are written as NaN; returns their number. One thread. */
 int64_t rigidsym_plucker_transfer(
     int64_t n,
+    const double *RIGIDSYM_RESTRICT in_kappa_A,
+    const double *RIGIDSYM_RESTRICT in_a,
+    const double *RIGIDSYM_RESTRICT in_b,
+    double *RIGIDSYM_RESTRICT out_kappa_B);
+
+/* The same on `threads` threads (OpenMP; one thread below RIGIDSYM_MIN_PARALLEL samples or
+ * without OpenMP); the outputs and the count are the same for every thread count. */
+int64_t rigidsym_plucker_transfer_threads(
+    int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_kappa_A,
     const double *RIGIDSYM_RESTRICT in_a,
     const double *RIGIDSYM_RESTRICT in_b,

@@ -36,6 +36,31 @@ double cos(double);
 #define RIGIDSYM_SIMD
 #endif
 
+/* Threads: the batch functions take their thread count as an argument and pass it to OpenMP
+ * explicitly (num_threads), so OMP_NUM_THREADS does not change it; one thread below
+ * RIGIDSYM_MIN_PARALLEL samples, where starting the threads costs more than it saves
+ * (measured in benchmarks/scale.py). Without OpenMP the loops run on one thread. */
+#ifndef RIGIDSYM_MIN_PARALLEL
+#define RIGIDSYM_MIN_PARALLEL 4096
+#endif
+#if defined(_OPENMP)
+#define RIGIDSYM_PRAGMA(x) _Pragma(#x)
+#define RIGIDSYM_PARALLEL_FOR(t) \
+    RIGIDSYM_PRAGMA(omp parallel for schedule(static) num_threads(t) reduction(+:count) if(t > 1))
+#else
+#define RIGIDSYM_PARALLEL_FOR(t)
+#endif
+
+/* The block function of a kernel is compiled once and called for full and padded blocks
+ * alike: never inlined, so both run the same machine code. */
+#if defined(__GNUC__)
+#define RIGIDSYM_NOINLINE __attribute__((noinline))
+#define RIGIDSYM_ALIGNED __attribute__((aligned(64)))
+#else
+#define RIGIDSYM_NOINLINE
+#define RIGIDSYM_ALIGNED
+#endif
+
 /* Samples per block of the batch loops that test their outputs for finiteness once per block
  * (the outputs of a block are still in cache). */
 #define RIGIDSYM_CHECK_BLOCK 256

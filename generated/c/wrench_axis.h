@@ -69,9 +69,19 @@ static inline int rigidsym_wrench_axis_sample(
 
 
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
- * are written as NaN; returns their number. */
+ * are written as NaN; returns their number. One thread. */
 int64_t rigidsym_wrench_axis(
     int64_t n,
+    const double *RIGIDSYM_RESTRICT in_w_A,
+    const double *RIGIDSYM_RESTRICT in_a,
+    double *RIGIDSYM_RESTRICT out_p0,
+    double *RIGIDSYM_RESTRICT out_pitch,
+    double *RIGIDSYM_RESTRICT out_plucker);
+
+/* The same on `threads` threads (OpenMP; one thread below RIGIDSYM_MIN_PARALLEL samples or
+ * without OpenMP); the outputs and the count are the same for every thread count. */
+int64_t rigidsym_wrench_axis_threads(
+    int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_w_A,
     const double *RIGIDSYM_RESTRICT in_a,
     double *RIGIDSYM_RESTRICT out_p0,

@@ -9,6 +9,9 @@ compiled through cffi on first use into the user cache (``rigidsym build-c``).
 Common keyword arguments of every kernel:
 
 * ``out``: preallocated output array (a tuple for several outputs), shape batch + output.
+* ``threads``: threads of the C batch loop (OpenMP); None: :func:`get_num_threads`
+  (:func:`set_num_threads`, else ``RIGIDSYM_NUM_THREADS``, else 1). Outputs do not depend on
+  it (bit for bit). The NumPy backend runs one thread (one warning when more are asked).
 * ``check``: validate shapes, finiteness, unit vectors and rotations (default True).
 * ``on_singular``: ``"raise"`` (the default for NumPy inputs) raises
   :class:`SingularConfigurationError` naming the argument and the batch indices; ``"nan"``
@@ -31,6 +34,7 @@ import importlib.util
 import inspect
 import json
 import math
+import os
 import sys
 import threading
 import warnings
@@ -42,6 +46,7 @@ import numpy as np
 from rigidsym import _dask
 
 __all__ = ["SingularConfigurationError", "NonFiniteResultError", "use_backend", "backend",
+           "set_num_threads", "get_num_threads",
            "swap_blocks", "batch_function", "euler_rate_matrix", "euler_angle_rates",
            "KERNEL_NAMES", "UNIT_TOL", "ORTHO_TOL"]
 
@@ -195,22 +200,68 @@ def backend() -> str:
     return b
 
 
-def batch_function(name: str, backend_name: str | None = None) -> Callable:
+def set_num_threads(n: int | None) -> None:
+    """Process-wide thread count of the C kernels called with ``threads=None``.
+
+    Args:
+        n: threads (>= 1), or None to go back to ``RIGIDSYM_NUM_THREADS`` (else 1).
+
+    Raises:
+        ValueError: ``n`` is not a positive integer.
+    """
+    _STATE["threads"] = None if n is None else _check_threads(n, "n")
+
+
+def get_num_threads() -> int:
+    """Thread count used with ``threads=None``: :func:`set_num_threads`, else the
+    environment variable ``RIGIDSYM_NUM_THREADS``, else 1 (never oversubscribes unasked)."""
+    if _STATE.get("threads") is not None:
+        return _STATE["threads"]
+    env = os.environ.get("RIGIDSYM_NUM_THREADS")
+    return _check_threads(env, "RIGIDSYM_NUM_THREADS") if env else 1
+
+
+def _check_threads(n, what: str) -> int:
+    try:
+        t = int(n)
+    except (TypeError, ValueError):
+        t = 0
+    if t < 1 or (not isinstance(n, str) and t != n) or isinstance(n, bool):
+        raise ValueError(f"{what}: expected a positive integer number of threads, got {n!r}")
+    return t
+
+
+def _threads(threads, b: str) -> int:
+    """Resolve ``threads`` for backend ``b``; NumPy runs one thread (one warning)."""
+    t = get_num_threads() if threads is None else _check_threads(threads, "threads")
+    if t > 1 and b == "numpy":
+        if not _STATE.get("warned_threads"):
+            _STATE["warned_threads"] = True
+            warnings.warn("rigidsym.kernels: the NumPy backend runs on one thread "
+                          f"(threads={t} asked)", RuntimeWarning, stacklevel=3)
+        t = 1
+    return t
+
+
+def batch_function(name: str, backend_name: str | None = None,
+                   threads: int | None = None) -> Callable:
     """Low-level ``f(*inputs, *outputs) -> singular mask or count`` on C-contiguous
     ``(n, ...)`` float64 arrays, without validation or broadcasting (for benchmarks).
 
     For the C backend the return value is the number of singular samples (written as NaN);
-    for NumPy it is the boolean mask of singular samples.
+    for NumPy it is the boolean mask of singular samples. ``threads`` as for the kernels
+    (None: :func:`get_num_threads`); the outputs are the same for every thread count.
     """
     b = backend_name or backend()
+    t = _threads(threads, b)
     if b == "numpy":
         return _numpy_kernel(name)
     ffi, lib = _c_lib()
-    cfun = getattr(lib, f"rigidsym_{name}")
+    cfun = getattr(lib, f"rigidsym_{name}_threads")
     fb = ffi.from_buffer
 
     def f(*arrays):
-        return cfun(arrays[0].shape[0], *[fb("double[]", a) for a in arrays])
+        return cfun(arrays[0].shape[0], t, *[fb("double[]", a) for a in arrays])
     return f
 
 
@@ -244,9 +295,10 @@ def _validate(a: np.ndarray, arg: dict) -> None:
 
 
 def _call(name: str, args: tuple, out=None, check: bool = True,
-          on_singular: str | None = None):
+          on_singular: str | None = None, threads: int | None = None):
     if _dask.is_dask(args):
-        return _dask.apply(name, args, out=out, check=check, on_singular=on_singular)
+        return _dask.apply(name, args, out=out, check=check, on_singular=on_singular,
+                           threads=threads)
     on_singular = "raise" if on_singular is None else on_singular
     meta = _meta()[name]
     if on_singular not in ("raise", "nan"):
@@ -284,7 +336,7 @@ def _call(name: str, args: tuple, out=None, check: bool = True,
             bufs.append(np.empty(shp))
     if n:
         b = backend()
-        res = batch_function(name, b)(*flat, *bufs)
+        res = batch_function(name, b, threads)(*flat, *bufs)
         if b == "numpy":
             flags = res
         elif res:
@@ -316,7 +368,7 @@ def _doc(meta: dict) -> str:
     for a in meta["args"]:
         kind = {"unit": ", unit", "rotation": ", proper orthogonal"}.get(a["kind"], "")
         lines.append(f"    {a['name']}: array-like {shp(a['shape'])}{kind}; {a['doc']}")
-    lines += ["    out, check, on_singular: see :mod:`rigidsym.kernels`.", "", "Returns:"]
+    lines += ["    out, check, on_singular, threads: see :mod:`rigidsym.kernels`.", "", "Returns:"]
     for o in meta["outputs"]:
         lines.append(f"    {o['name']}: ndarray {shp(o['shape'])}; {o['doc']}")
     lines += ["", "Raises:", "    ValueError: bad shape, non-finite input, non-unit or "
@@ -334,15 +386,17 @@ def _doc(meta: dict) -> str:
 def _make(name: str) -> Callable:
     meta = _meta()[name]
 
-    def kernel(*args, out=None, check=True, on_singular=None):
-        return _call(name, args, out=out, check=check, on_singular=on_singular)
+    def kernel(*args, out=None, check=True, on_singular=None, threads=None):
+        return _call(name, args, out=out, check=check, on_singular=on_singular,
+                     threads=threads)
     kernel.__name__ = kernel.__qualname__ = name
     kernel.__doc__ = _doc(meta)
     P = inspect.Parameter
     kernel.__signature__ = inspect.Signature(
         [P(a["name"], P.POSITIONAL_OR_KEYWORD) for a in meta["args"]]
         + [P("out", P.KEYWORD_ONLY, default=None), P("check", P.KEYWORD_ONLY, default=True),
-           P("on_singular", P.KEYWORD_ONLY, default=None)])
+           P("on_singular", P.KEYWORD_ONLY, default=None),
+           P("threads", P.KEYWORD_ONLY, default=None)])
     kernel.__module__ = __name__
     return kernel
 
@@ -364,7 +418,7 @@ def _euler_name(kind: str, sequence: str, frame: str) -> str:
 
 
 def euler_rate_matrix(angles, sequence: str, frame: str = "fixed", *, out=None,
-                      check: bool = True):
+                      check: bool = True, threads: int | None = None):
     """Euler-angle rate matrix ``W`` with ``omega = W eta_dot`` (Exercise 3.10).
 
     Args:
@@ -380,11 +434,12 @@ def euler_rate_matrix(angles, sequence: str, frame: str = "fixed", *, out=None,
         (3, 3)
     """
     return _call(_euler_name("euler_rate_matrix", sequence, frame), (angles,), out=out,
-                 check=check)
+                 check=check, threads=threads)
 
 
 def euler_angle_rates(angles, omega, sequence: str, frame: str = "fixed", *, out=None,
-                      check: bool = True, on_singular: str | None = None):
+                      check: bool = True, on_singular: str | None = None,
+                      threads: int | None = None):
     """Euler-angle rates ``eta_dot = W^-1 omega`` (Exercise 3.10).
 
     Args:
@@ -398,7 +453,7 @@ def euler_angle_rates(angles, omega, sequence: str, frame: str = "fixed", *, out
         SingularConfigurationError: at gimbal lock (det W = 0), unless on_singular="nan".
     """
     return _call(_euler_name("euler_angle_rates", sequence, frame), (angles, omega), out=out,
-                 check=check, on_singular=on_singular)
+                 check=check, on_singular=on_singular, threads=threads)
 
 
 def swap_blocks(x, matrix: bool = False) -> np.ndarray:

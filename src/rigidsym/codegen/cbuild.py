@@ -83,6 +83,8 @@ def cdef(meta: dict) -> str:
         params = ["int64_t n"] + [f"const double *{a['name']}" for a in k["args"]] \
             + [f"double *{o['name']}" for o in k["outputs"]]
         lines.append(f"int64_t rigidsym_{k['name']}({', '.join(params)});")
+        lines.append(f"int64_t rigidsym_{k['name']}_threads({', '.join(params[:1])}, "
+                     f"int threads, {', '.join(params[1:])});")
     lines.append("int rigidsym_openmp(void);")
     return "\n".join(lines)
 
