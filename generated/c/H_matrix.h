@@ -111,4 +111,13 @@ int64_t rigidsym_H_matrix_threads(
     const double *RIGIDSYM_RESTRICT in_phi,
     double *RIGIDSYM_RESTRICT out_H_matrix);
 
+
+/* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
+ * is flagged too). */
+int64_t rigidsym_H_matrix_f32_threads(
+    int64_t n, int threads,
+    const float *RIGIDSYM_RESTRICT in_e,
+    const float *RIGIDSYM_RESTRICT in_phi,
+    float *RIGIDSYM_RESTRICT out_H_matrix);
+
 #endif /* RIGIDSYM_H_MATRIX_H */

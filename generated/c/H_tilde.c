@@ -96,6 +96,72 @@ static int64_t rigidsym_H_tilde_run(
     return count;
 }
 
+/* float32 storage, float64 arithmetic: samples [i0, i0 + m) widened into the block's local
+ * double arrays, evaluated by the same block function, rounded back. A finite double output
+ * can overflow float32: such rows are flagged too (NaN). Returns the number flagged. */
+static int64_t rigidsym_H_tilde_run_f32(
+    int64_t i0, int64_t m,
+    const float *RIGIDSYM_RESTRICT in_e,
+    const float *RIGIDSYM_RESTRICT in_phi,
+    float *RIGIDSYM_RESTRICT out_H_tilde)
+{
+    double pad_e[3 * 64];
+    double pad_phi[1 * 64];
+    double pad_H_tilde[12 * 64];
+    for (int64_t j = 0; j < 64; ++j) {
+        const int64_t s = i0 + (j < m ? j : m - 1);
+        for (int c = 0; c < 3; ++c)
+            pad_e[3 * j + c] = in_e[3 * s + c];
+        for (int c = 0; c < 1; ++c)
+            pad_phi[1 * j + c] = in_phi[1 * s + c];
+    }
+    int64_t count = rigidsym_H_tilde_block(m,
+        pad_e,
+        pad_phi,
+        pad_H_tilde);
+    for (int64_t c = 0; c < 12 * m; ++c)
+        out_H_tilde[12 * i0 + c] = (float)pad_H_tilde[c];
+    int64_t over = 0;
+    over += rigidsym_any_nonfinite_f32(out_H_tilde + 12 * i0, 12 * m);
+    if (over == 0)
+        return count;
+    for (int64_t j = 0; j < m; ++j) {
+        const int64_t i = i0 + j;
+        if (out_H_tilde[12 * i] != out_H_tilde[12 * i])
+            continue;                       /* flagged already: its row is NaN */
+        int flagged = 0;
+        flagged |= rigidsym_any_nonfinite_f32(out_H_tilde + 12 * i, 12);
+        if (flagged) {
+            ++count;
+            for (int c = 0; c < 12; ++c)
+                out_H_tilde[12 * i + c] = NAN;
+        }
+    }
+    return count;
+}
+
+int64_t rigidsym_H_tilde_f32_threads(
+    int64_t n, int threads,
+    const float *RIGIDSYM_RESTRICT in_e,
+    const float *RIGIDSYM_RESTRICT in_phi,
+    float *RIGIDSYM_RESTRICT out_H_tilde)
+{
+    const int64_t nblocks = (n + 64 - 1) / 64;
+    int64_t count = 0;
+    if (n < RIGIDSYM_MIN_PARALLEL || threads < 1)
+        threads = 1;
+    RIGIDSYM_PARALLEL_FOR(threads)
+    for (int64_t b = 0; b < nblocks; ++b) {
+        const int64_t i0 = b * 64;
+        count += rigidsym_H_tilde_run_f32(
+            i0, n - i0 < 64 ? n - i0 : 64,
+            in_e,
+            in_phi,
+            out_H_tilde);
+    }
+    return count;
+}
+
 int64_t rigidsym_H_tilde_threads(
     int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_e,

@@ -170,4 +170,14 @@ int64_t rigidsym_L_tilde_dot_threads(
     const double *RIGIDSYM_RESTRICT in_omega,
     double *RIGIDSYM_RESTRICT out_L_tilde_dot);
 
+
+/* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
+ * is flagged too). */
+int64_t rigidsym_L_tilde_dot_f32_threads(
+    int64_t n, int threads,
+    const float *RIGIDSYM_RESTRICT in_e,
+    const float *RIGIDSYM_RESTRICT in_phi,
+    const float *RIGIDSYM_RESTRICT in_omega,
+    float *RIGIDSYM_RESTRICT out_L_tilde_dot);
+
 #endif /* RIGIDSYM_L_TILDE_DOT_H */

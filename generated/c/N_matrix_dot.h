@@ -208,4 +208,14 @@ int64_t rigidsym_N_matrix_dot_threads(
     const double *RIGIDSYM_RESTRICT in_omega,
     double *RIGIDSYM_RESTRICT out_N_matrix_dot);
 
+
+/* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
+ * is flagged too). */
+int64_t rigidsym_N_matrix_dot_f32_threads(
+    int64_t n, int threads,
+    const float *RIGIDSYM_RESTRICT in_e,
+    const float *RIGIDSYM_RESTRICT in_phi,
+    const float *RIGIDSYM_RESTRICT in_omega,
+    float *RIGIDSYM_RESTRICT out_N_matrix_dot);
+
 #endif /* RIGIDSYM_N_MATRIX_DOT_H */

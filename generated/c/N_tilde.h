@@ -107,4 +107,13 @@ int64_t rigidsym_N_tilde_threads(
     const double *RIGIDSYM_RESTRICT in_phi,
     double *RIGIDSYM_RESTRICT out_N_tilde);
 
+
+/* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
+ * is flagged too). */
+int64_t rigidsym_N_tilde_f32_threads(
+    int64_t n, int threads,
+    const float *RIGIDSYM_RESTRICT in_e,
+    const float *RIGIDSYM_RESTRICT in_phi,
+    float *RIGIDSYM_RESTRICT out_N_tilde);
+
 #endif /* RIGIDSYM_N_TILDE_H */

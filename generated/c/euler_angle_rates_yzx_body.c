@@ -112,6 +112,72 @@ static int64_t rigidsym_euler_angle_rates_yzx_body_run(
     return count;
 }
 
+/* float32 storage, float64 arithmetic: samples [i0, i0 + m) widened into the block's local
+ * double arrays, evaluated by the same block function, rounded back. A finite double output
+ * can overflow float32: such rows are flagged too (NaN). Returns the number flagged. */
+static int64_t rigidsym_euler_angle_rates_yzx_body_run_f32(
+    int64_t i0, int64_t m,
+    const float *RIGIDSYM_RESTRICT in_angles,
+    const float *RIGIDSYM_RESTRICT in_omega,
+    float *RIGIDSYM_RESTRICT out_eta_dot)
+{
+    double pad_angles[3 * 64];
+    double pad_omega[3 * 64];
+    double pad_eta_dot[3 * 64];
+    for (int64_t j = 0; j < 64; ++j) {
+        const int64_t s = i0 + (j < m ? j : m - 1);
+        for (int c = 0; c < 3; ++c)
+            pad_angles[3 * j + c] = in_angles[3 * s + c];
+        for (int c = 0; c < 3; ++c)
+            pad_omega[3 * j + c] = in_omega[3 * s + c];
+    }
+    int64_t count = rigidsym_euler_angle_rates_yzx_body_block(m,
+        pad_angles,
+        pad_omega,
+        pad_eta_dot);
+    for (int64_t c = 0; c < 3 * m; ++c)
+        out_eta_dot[3 * i0 + c] = (float)pad_eta_dot[c];
+    int64_t over = 0;
+    over += rigidsym_any_nonfinite_f32(out_eta_dot + 3 * i0, 3 * m);
+    if (over == 0)
+        return count;
+    for (int64_t j = 0; j < m; ++j) {
+        const int64_t i = i0 + j;
+        if (out_eta_dot[3 * i] != out_eta_dot[3 * i])
+            continue;                       /* flagged already: its row is NaN */
+        int flagged = 0;
+        flagged |= rigidsym_any_nonfinite_f32(out_eta_dot + 3 * i, 3);
+        if (flagged) {
+            ++count;
+            for (int c = 0; c < 3; ++c)
+                out_eta_dot[3 * i + c] = NAN;
+        }
+    }
+    return count;
+}
+
+int64_t rigidsym_euler_angle_rates_yzx_body_f32_threads(
+    int64_t n, int threads,
+    const float *RIGIDSYM_RESTRICT in_angles,
+    const float *RIGIDSYM_RESTRICT in_omega,
+    float *RIGIDSYM_RESTRICT out_eta_dot)
+{
+    const int64_t nblocks = (n + 64 - 1) / 64;
+    int64_t count = 0;
+    if (n < RIGIDSYM_MIN_PARALLEL || threads < 1)
+        threads = 1;
+    RIGIDSYM_PARALLEL_FOR(threads)
+    for (int64_t b = 0; b < nblocks; ++b) {
+        const int64_t i0 = b * 64;
+        count += rigidsym_euler_angle_rates_yzx_body_run_f32(
+            i0, n - i0 < 64 ? n - i0 : 64,
+            in_angles,
+            in_omega,
+            out_eta_dot);
+    }
+    return count;
+}
+
 int64_t rigidsym_euler_angle_rates_yzx_body_threads(
     int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_angles,

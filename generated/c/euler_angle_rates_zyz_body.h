@@ -102,4 +102,13 @@ int64_t rigidsym_euler_angle_rates_zyz_body_threads(
     const double *RIGIDSYM_RESTRICT in_omega,
     double *RIGIDSYM_RESTRICT out_eta_dot);
 
+
+/* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
+ * is flagged too). */
+int64_t rigidsym_euler_angle_rates_zyz_body_f32_threads(
+    int64_t n, int threads,
+    const float *RIGIDSYM_RESTRICT in_angles,
+    const float *RIGIDSYM_RESTRICT in_omega,
+    float *RIGIDSYM_RESTRICT out_eta_dot);
+
 #endif /* RIGIDSYM_EULER_ANGLE_RATES_ZYZ_BODY_H */

@@ -87,4 +87,12 @@ int64_t rigidsym_euler_rate_matrix_zxz_fixed_threads(
     const double *RIGIDSYM_RESTRICT in_angles,
     double *RIGIDSYM_RESTRICT out_W);
 
+
+/* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
+ * is flagged too). */
+int64_t rigidsym_euler_rate_matrix_zxz_fixed_f32_threads(
+    int64_t n, int threads,
+    const float *RIGIDSYM_RESTRICT in_angles,
+    float *RIGIDSYM_RESTRICT out_W);
+
 #endif /* RIGIDSYM_EULER_RATE_MATRIX_ZXZ_FIXED_H */

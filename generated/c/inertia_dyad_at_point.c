@@ -97,6 +97,86 @@ static int64_t rigidsym_inertia_dyad_at_point_run(
     return count;
 }
 
+/* float32 storage, float64 arithmetic: samples [i0, i0 + m) widened into the block's local
+ * double arrays, evaluated by the same block function, rounded back. A finite double output
+ * can overflow float32: such rows are flagged too (NaN). Returns the number flagged. */
+static int64_t rigidsym_inertia_dyad_at_point_run_f32(
+    int64_t i0, int64_t m,
+    const float *RIGIDSYM_RESTRICT in_I_C,
+    const float *RIGIDSYM_RESTRICT in_m,
+    const float *RIGIDSYM_RESTRICT in_c,
+    const float *RIGIDSYM_RESTRICT in_a,
+    float *RIGIDSYM_RESTRICT out_M_A)
+{
+    double pad_I_C[9 * RIGIDSYM_CHECK_BLOCK];
+    double pad_m[1 * RIGIDSYM_CHECK_BLOCK];
+    double pad_c[3 * RIGIDSYM_CHECK_BLOCK];
+    double pad_a[3 * RIGIDSYM_CHECK_BLOCK];
+    double pad_M_A[36 * RIGIDSYM_CHECK_BLOCK];
+    for (int64_t j = 0; j < RIGIDSYM_CHECK_BLOCK; ++j) {
+        const int64_t s = i0 + (j < m ? j : m - 1);
+        for (int c = 0; c < 9; ++c)
+            pad_I_C[9 * j + c] = in_I_C[9 * s + c];
+        for (int c = 0; c < 1; ++c)
+            pad_m[1 * j + c] = in_m[1 * s + c];
+        for (int c = 0; c < 3; ++c)
+            pad_c[3 * j + c] = in_c[3 * s + c];
+        for (int c = 0; c < 3; ++c)
+            pad_a[3 * j + c] = in_a[3 * s + c];
+    }
+    int64_t count = rigidsym_inertia_dyad_at_point_block(m,
+        pad_I_C,
+        pad_m,
+        pad_c,
+        pad_a,
+        pad_M_A);
+    for (int64_t c = 0; c < 36 * m; ++c)
+        out_M_A[36 * i0 + c] = (float)pad_M_A[c];
+    int64_t over = 0;
+    over += rigidsym_any_nonfinite_f32(out_M_A + 36 * i0, 36 * m);
+    if (over == 0)
+        return count;
+    for (int64_t j = 0; j < m; ++j) {
+        const int64_t i = i0 + j;
+        if (out_M_A[36 * i] != out_M_A[36 * i])
+            continue;                       /* flagged already: its row is NaN */
+        int flagged = 0;
+        flagged |= rigidsym_any_nonfinite_f32(out_M_A + 36 * i, 36);
+        if (flagged) {
+            ++count;
+            for (int c = 0; c < 36; ++c)
+                out_M_A[36 * i + c] = NAN;
+        }
+    }
+    return count;
+}
+
+int64_t rigidsym_inertia_dyad_at_point_f32_threads(
+    int64_t n, int threads,
+    const float *RIGIDSYM_RESTRICT in_I_C,
+    const float *RIGIDSYM_RESTRICT in_m,
+    const float *RIGIDSYM_RESTRICT in_c,
+    const float *RIGIDSYM_RESTRICT in_a,
+    float *RIGIDSYM_RESTRICT out_M_A)
+{
+    const int64_t nblocks = (n + RIGIDSYM_CHECK_BLOCK - 1) / RIGIDSYM_CHECK_BLOCK;
+    int64_t count = 0;
+    if (n < RIGIDSYM_MIN_PARALLEL || threads < 1)
+        threads = 1;
+    RIGIDSYM_PARALLEL_FOR(threads)
+    for (int64_t b = 0; b < nblocks; ++b) {
+        const int64_t i0 = b * RIGIDSYM_CHECK_BLOCK;
+        count += rigidsym_inertia_dyad_at_point_run_f32(
+            i0, n - i0 < RIGIDSYM_CHECK_BLOCK ? n - i0 : RIGIDSYM_CHECK_BLOCK,
+            in_I_C,
+            in_m,
+            in_c,
+            in_a,
+            out_M_A);
+    }
+    return count;
+}
+
 int64_t rigidsym_inertia_dyad_at_point_threads(
     int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_I_C,

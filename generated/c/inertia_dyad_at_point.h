@@ -119,4 +119,15 @@ int64_t rigidsym_inertia_dyad_at_point_threads(
     const double *RIGIDSYM_RESTRICT in_a,
     double *RIGIDSYM_RESTRICT out_M_A);
 
+
+/* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
+ * is flagged too). */
+int64_t rigidsym_inertia_dyad_at_point_f32_threads(
+    int64_t n, int threads,
+    const float *RIGIDSYM_RESTRICT in_I_C,
+    const float *RIGIDSYM_RESTRICT in_m,
+    const float *RIGIDSYM_RESTRICT in_c,
+    const float *RIGIDSYM_RESTRICT in_a,
+    float *RIGIDSYM_RESTRICT out_M_A);
+
 #endif /* RIGIDSYM_INERTIA_DYAD_AT_POINT_H */

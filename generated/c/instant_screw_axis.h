@@ -91,4 +91,16 @@ int64_t rigidsym_instant_screw_axis_threads(
     double *RIGIDSYM_RESTRICT out_pitch,
     double *RIGIDSYM_RESTRICT out_plucker);
 
+
+/* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
+ * is flagged too). */
+int64_t rigidsym_instant_screw_axis_f32_threads(
+    int64_t n, int threads,
+    const float *RIGIDSYM_RESTRICT in_omega,
+    const float *RIGIDSYM_RESTRICT in_a,
+    const float *RIGIDSYM_RESTRICT in_a_dot,
+    float *RIGIDSYM_RESTRICT out_p0,
+    float *RIGIDSYM_RESTRICT out_pitch,
+    float *RIGIDSYM_RESTRICT out_plucker);
+
 #endif /* RIGIDSYM_INSTANT_SCREW_AXIS_H */

@@ -106,6 +106,90 @@ static int64_t rigidsym_instant_screw_point_pitch_run(
     return count;
 }
 
+/* float32 storage, float64 arithmetic: samples [i0, i0 + m) widened into the block's local
+ * double arrays, evaluated by the same block function, rounded back. A finite double output
+ * can overflow float32: such rows are flagged too (NaN). Returns the number flagged. */
+static int64_t rigidsym_instant_screw_point_pitch_run_f32(
+    int64_t i0, int64_t m,
+    const float *RIGIDSYM_RESTRICT in_omega,
+    const float *RIGIDSYM_RESTRICT in_a,
+    const float *RIGIDSYM_RESTRICT in_a_dot,
+    float *RIGIDSYM_RESTRICT out_p0,
+    float *RIGIDSYM_RESTRICT out_pitch)
+{
+    double pad_omega[3 * RIGIDSYM_CHECK_BLOCK];
+    double pad_a[3 * RIGIDSYM_CHECK_BLOCK];
+    double pad_a_dot[3 * RIGIDSYM_CHECK_BLOCK];
+    double pad_p0[3 * RIGIDSYM_CHECK_BLOCK];
+    double pad_pitch[1 * RIGIDSYM_CHECK_BLOCK];
+    for (int64_t j = 0; j < RIGIDSYM_CHECK_BLOCK; ++j) {
+        const int64_t s = i0 + (j < m ? j : m - 1);
+        for (int c = 0; c < 3; ++c)
+            pad_omega[3 * j + c] = in_omega[3 * s + c];
+        for (int c = 0; c < 3; ++c)
+            pad_a[3 * j + c] = in_a[3 * s + c];
+        for (int c = 0; c < 3; ++c)
+            pad_a_dot[3 * j + c] = in_a_dot[3 * s + c];
+    }
+    int64_t count = rigidsym_instant_screw_point_pitch_block(m,
+        pad_omega,
+        pad_a,
+        pad_a_dot,
+        pad_p0,
+        pad_pitch);
+    for (int64_t c = 0; c < 3 * m; ++c)
+        out_p0[3 * i0 + c] = (float)pad_p0[c];
+    for (int64_t c = 0; c < 1 * m; ++c)
+        out_pitch[1 * i0 + c] = (float)pad_pitch[c];
+    int64_t over = 0;
+    over += rigidsym_any_nonfinite_f32(out_p0 + 3 * i0, 3 * m);
+    over += rigidsym_any_nonfinite_f32(out_pitch + 1 * i0, 1 * m);
+    if (over == 0)
+        return count;
+    for (int64_t j = 0; j < m; ++j) {
+        const int64_t i = i0 + j;
+        if (out_p0[3 * i] != out_p0[3 * i])
+            continue;                       /* flagged already: its row is NaN */
+        int flagged = 0;
+        flagged |= rigidsym_any_nonfinite_f32(out_p0 + 3 * i, 3);
+        flagged |= rigidsym_any_nonfinite_f32(out_pitch + 1 * i, 1);
+        if (flagged) {
+            ++count;
+            for (int c = 0; c < 3; ++c)
+                out_p0[3 * i + c] = NAN;
+            for (int c = 0; c < 1; ++c)
+                out_pitch[1 * i + c] = NAN;
+        }
+    }
+    return count;
+}
+
+int64_t rigidsym_instant_screw_point_pitch_f32_threads(
+    int64_t n, int threads,
+    const float *RIGIDSYM_RESTRICT in_omega,
+    const float *RIGIDSYM_RESTRICT in_a,
+    const float *RIGIDSYM_RESTRICT in_a_dot,
+    float *RIGIDSYM_RESTRICT out_p0,
+    float *RIGIDSYM_RESTRICT out_pitch)
+{
+    const int64_t nblocks = (n + RIGIDSYM_CHECK_BLOCK - 1) / RIGIDSYM_CHECK_BLOCK;
+    int64_t count = 0;
+    if (n < RIGIDSYM_MIN_PARALLEL || threads < 1)
+        threads = 1;
+    RIGIDSYM_PARALLEL_FOR(threads)
+    for (int64_t b = 0; b < nblocks; ++b) {
+        const int64_t i0 = b * RIGIDSYM_CHECK_BLOCK;
+        count += rigidsym_instant_screw_point_pitch_run_f32(
+            i0, n - i0 < RIGIDSYM_CHECK_BLOCK ? n - i0 : RIGIDSYM_CHECK_BLOCK,
+            in_omega,
+            in_a,
+            in_a_dot,
+            out_p0,
+            out_pitch);
+    }
+    return count;
+}
+
 int64_t rigidsym_instant_screw_point_pitch_threads(
     int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_omega,

@@ -97,6 +97,86 @@ static int64_t rigidsym_kinetic_energy_run(
     return count;
 }
 
+/* float32 storage, float64 arithmetic: samples [i0, i0 + m) widened into the block's local
+ * double arrays, evaluated by the same block function, rounded back. A finite double output
+ * can overflow float32: such rows are flagged too (NaN). Returns the number flagged. */
+static int64_t rigidsym_kinetic_energy_run_f32(
+    int64_t i0, int64_t m,
+    const float *RIGIDSYM_RESTRICT in_I_C,
+    const float *RIGIDSYM_RESTRICT in_m,
+    const float *RIGIDSYM_RESTRICT in_omega,
+    const float *RIGIDSYM_RESTRICT in_c_dot,
+    float *RIGIDSYM_RESTRICT out_T)
+{
+    double pad_I_C[9 * RIGIDSYM_CHECK_BLOCK];
+    double pad_m[1 * RIGIDSYM_CHECK_BLOCK];
+    double pad_omega[3 * RIGIDSYM_CHECK_BLOCK];
+    double pad_c_dot[3 * RIGIDSYM_CHECK_BLOCK];
+    double pad_T[1 * RIGIDSYM_CHECK_BLOCK];
+    for (int64_t j = 0; j < RIGIDSYM_CHECK_BLOCK; ++j) {
+        const int64_t s = i0 + (j < m ? j : m - 1);
+        for (int c = 0; c < 9; ++c)
+            pad_I_C[9 * j + c] = in_I_C[9 * s + c];
+        for (int c = 0; c < 1; ++c)
+            pad_m[1 * j + c] = in_m[1 * s + c];
+        for (int c = 0; c < 3; ++c)
+            pad_omega[3 * j + c] = in_omega[3 * s + c];
+        for (int c = 0; c < 3; ++c)
+            pad_c_dot[3 * j + c] = in_c_dot[3 * s + c];
+    }
+    int64_t count = rigidsym_kinetic_energy_block(m,
+        pad_I_C,
+        pad_m,
+        pad_omega,
+        pad_c_dot,
+        pad_T);
+    for (int64_t c = 0; c < 1 * m; ++c)
+        out_T[1 * i0 + c] = (float)pad_T[c];
+    int64_t over = 0;
+    over += rigidsym_any_nonfinite_f32(out_T + 1 * i0, 1 * m);
+    if (over == 0)
+        return count;
+    for (int64_t j = 0; j < m; ++j) {
+        const int64_t i = i0 + j;
+        if (out_T[1 * i] != out_T[1 * i])
+            continue;                       /* flagged already: its row is NaN */
+        int flagged = 0;
+        flagged |= rigidsym_any_nonfinite_f32(out_T + 1 * i, 1);
+        if (flagged) {
+            ++count;
+            for (int c = 0; c < 1; ++c)
+                out_T[1 * i + c] = NAN;
+        }
+    }
+    return count;
+}
+
+int64_t rigidsym_kinetic_energy_f32_threads(
+    int64_t n, int threads,
+    const float *RIGIDSYM_RESTRICT in_I_C,
+    const float *RIGIDSYM_RESTRICT in_m,
+    const float *RIGIDSYM_RESTRICT in_omega,
+    const float *RIGIDSYM_RESTRICT in_c_dot,
+    float *RIGIDSYM_RESTRICT out_T)
+{
+    const int64_t nblocks = (n + RIGIDSYM_CHECK_BLOCK - 1) / RIGIDSYM_CHECK_BLOCK;
+    int64_t count = 0;
+    if (n < RIGIDSYM_MIN_PARALLEL || threads < 1)
+        threads = 1;
+    RIGIDSYM_PARALLEL_FOR(threads)
+    for (int64_t b = 0; b < nblocks; ++b) {
+        const int64_t i0 = b * RIGIDSYM_CHECK_BLOCK;
+        count += rigidsym_kinetic_energy_run_f32(
+            i0, n - i0 < RIGIDSYM_CHECK_BLOCK ? n - i0 : RIGIDSYM_CHECK_BLOCK,
+            in_I_C,
+            in_m,
+            in_omega,
+            in_c_dot,
+            out_T);
+    }
+    return count;
+}
+
 int64_t rigidsym_kinetic_energy_threads(
     int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_I_C,

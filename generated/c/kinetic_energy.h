@@ -70,4 +70,15 @@ int64_t rigidsym_kinetic_energy_threads(
     const double *RIGIDSYM_RESTRICT in_c_dot,
     double *RIGIDSYM_RESTRICT out_T);
 
+
+/* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
+ * is flagged too). */
+int64_t rigidsym_kinetic_energy_f32_threads(
+    int64_t n, int threads,
+    const float *RIGIDSYM_RESTRICT in_I_C,
+    const float *RIGIDSYM_RESTRICT in_m,
+    const float *RIGIDSYM_RESTRICT in_omega,
+    const float *RIGIDSYM_RESTRICT in_c_dot,
+    float *RIGIDSYM_RESTRICT out_T);
+
 #endif /* RIGIDSYM_KINETIC_ENERGY_H */

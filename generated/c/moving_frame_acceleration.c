@@ -121,6 +121,107 @@ static int64_t rigidsym_moving_frame_acceleration_run(
     return count;
 }
 
+/* float32 storage, float64 arithmetic: samples [i0, i0 + m) widened into the block's local
+ * double arrays, evaluated by the same block function, rounded back. A finite double output
+ * can overflow float32: such rows are flagged too (NaN). Returns the number flagged. */
+static int64_t rigidsym_moving_frame_acceleration_run_f32(
+    int64_t i0, int64_t m,
+    const float *RIGIDSYM_RESTRICT in_o_ddot,
+    const float *RIGIDSYM_RESTRICT in_Q,
+    const float *RIGIDSYM_RESTRICT in_omega,
+    const float *RIGIDSYM_RESTRICT in_omega_dot,
+    const float *RIGIDSYM_RESTRICT in_rho_M,
+    const float *RIGIDSYM_RESTRICT in_rho_dot_M,
+    const float *RIGIDSYM_RESTRICT in_rho_ddot_M,
+    float *RIGIDSYM_RESTRICT out_p_ddot)
+{
+    double pad_o_ddot[3 * RIGIDSYM_CHECK_BLOCK];
+    double pad_Q[9 * RIGIDSYM_CHECK_BLOCK];
+    double pad_omega[3 * RIGIDSYM_CHECK_BLOCK];
+    double pad_omega_dot[3 * RIGIDSYM_CHECK_BLOCK];
+    double pad_rho_M[3 * RIGIDSYM_CHECK_BLOCK];
+    double pad_rho_dot_M[3 * RIGIDSYM_CHECK_BLOCK];
+    double pad_rho_ddot_M[3 * RIGIDSYM_CHECK_BLOCK];
+    double pad_p_ddot[3 * RIGIDSYM_CHECK_BLOCK];
+    for (int64_t j = 0; j < RIGIDSYM_CHECK_BLOCK; ++j) {
+        const int64_t s = i0 + (j < m ? j : m - 1);
+        for (int c = 0; c < 3; ++c)
+            pad_o_ddot[3 * j + c] = in_o_ddot[3 * s + c];
+        for (int c = 0; c < 9; ++c)
+            pad_Q[9 * j + c] = in_Q[9 * s + c];
+        for (int c = 0; c < 3; ++c)
+            pad_omega[3 * j + c] = in_omega[3 * s + c];
+        for (int c = 0; c < 3; ++c)
+            pad_omega_dot[3 * j + c] = in_omega_dot[3 * s + c];
+        for (int c = 0; c < 3; ++c)
+            pad_rho_M[3 * j + c] = in_rho_M[3 * s + c];
+        for (int c = 0; c < 3; ++c)
+            pad_rho_dot_M[3 * j + c] = in_rho_dot_M[3 * s + c];
+        for (int c = 0; c < 3; ++c)
+            pad_rho_ddot_M[3 * j + c] = in_rho_ddot_M[3 * s + c];
+    }
+    int64_t count = rigidsym_moving_frame_acceleration_block(m,
+        pad_o_ddot,
+        pad_Q,
+        pad_omega,
+        pad_omega_dot,
+        pad_rho_M,
+        pad_rho_dot_M,
+        pad_rho_ddot_M,
+        pad_p_ddot);
+    for (int64_t c = 0; c < 3 * m; ++c)
+        out_p_ddot[3 * i0 + c] = (float)pad_p_ddot[c];
+    int64_t over = 0;
+    over += rigidsym_any_nonfinite_f32(out_p_ddot + 3 * i0, 3 * m);
+    if (over == 0)
+        return count;
+    for (int64_t j = 0; j < m; ++j) {
+        const int64_t i = i0 + j;
+        if (out_p_ddot[3 * i] != out_p_ddot[3 * i])
+            continue;                       /* flagged already: its row is NaN */
+        int flagged = 0;
+        flagged |= rigidsym_any_nonfinite_f32(out_p_ddot + 3 * i, 3);
+        if (flagged) {
+            ++count;
+            for (int c = 0; c < 3; ++c)
+                out_p_ddot[3 * i + c] = NAN;
+        }
+    }
+    return count;
+}
+
+int64_t rigidsym_moving_frame_acceleration_f32_threads(
+    int64_t n, int threads,
+    const float *RIGIDSYM_RESTRICT in_o_ddot,
+    const float *RIGIDSYM_RESTRICT in_Q,
+    const float *RIGIDSYM_RESTRICT in_omega,
+    const float *RIGIDSYM_RESTRICT in_omega_dot,
+    const float *RIGIDSYM_RESTRICT in_rho_M,
+    const float *RIGIDSYM_RESTRICT in_rho_dot_M,
+    const float *RIGIDSYM_RESTRICT in_rho_ddot_M,
+    float *RIGIDSYM_RESTRICT out_p_ddot)
+{
+    const int64_t nblocks = (n + RIGIDSYM_CHECK_BLOCK - 1) / RIGIDSYM_CHECK_BLOCK;
+    int64_t count = 0;
+    if (n < RIGIDSYM_MIN_PARALLEL || threads < 1)
+        threads = 1;
+    RIGIDSYM_PARALLEL_FOR(threads)
+    for (int64_t b = 0; b < nblocks; ++b) {
+        const int64_t i0 = b * RIGIDSYM_CHECK_BLOCK;
+        count += rigidsym_moving_frame_acceleration_run_f32(
+            i0, n - i0 < RIGIDSYM_CHECK_BLOCK ? n - i0 : RIGIDSYM_CHECK_BLOCK,
+            in_o_ddot,
+            in_Q,
+            in_omega,
+            in_omega_dot,
+            in_rho_M,
+            in_rho_dot_M,
+            in_rho_ddot_M,
+            out_p_ddot);
+    }
+    return count;
+}
+
 int64_t rigidsym_moving_frame_acceleration_threads(
     int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_o_ddot,

@@ -109,4 +109,18 @@ int64_t rigidsym_moving_frame_acceleration_threads(
     const double *RIGIDSYM_RESTRICT in_rho_ddot_M,
     double *RIGIDSYM_RESTRICT out_p_ddot);
 
+
+/* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
+ * is flagged too). */
+int64_t rigidsym_moving_frame_acceleration_f32_threads(
+    int64_t n, int threads,
+    const float *RIGIDSYM_RESTRICT in_o_ddot,
+    const float *RIGIDSYM_RESTRICT in_Q,
+    const float *RIGIDSYM_RESTRICT in_omega,
+    const float *RIGIDSYM_RESTRICT in_omega_dot,
+    const float *RIGIDSYM_RESTRICT in_rho_M,
+    const float *RIGIDSYM_RESTRICT in_rho_dot_M,
+    const float *RIGIDSYM_RESTRICT in_rho_ddot_M,
+    float *RIGIDSYM_RESTRICT out_p_ddot);
+
 #endif /* RIGIDSYM_MOVING_FRAME_ACCELERATION_H */

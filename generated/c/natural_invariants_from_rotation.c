@@ -89,6 +89,76 @@ static int64_t rigidsym_natural_invariants_from_rotation_run(
     return count;
 }
 
+/* float32 storage, float64 arithmetic: samples [i0, i0 + m) widened into the block's local
+ * double arrays, evaluated by the same block function, rounded back. A finite double output
+ * can overflow float32: such rows are flagged too (NaN). Returns the number flagged. */
+static int64_t rigidsym_natural_invariants_from_rotation_run_f32(
+    int64_t i0, int64_t m,
+    const float *RIGIDSYM_RESTRICT in_Q,
+    float *RIGIDSYM_RESTRICT out_e,
+    float *RIGIDSYM_RESTRICT out_phi)
+{
+    double pad_Q[9 * RIGIDSYM_CHECK_BLOCK];
+    double pad_e[3 * RIGIDSYM_CHECK_BLOCK];
+    double pad_phi[1 * RIGIDSYM_CHECK_BLOCK];
+    for (int64_t j = 0; j < RIGIDSYM_CHECK_BLOCK; ++j) {
+        const int64_t s = i0 + (j < m ? j : m - 1);
+        for (int c = 0; c < 9; ++c)
+            pad_Q[9 * j + c] = in_Q[9 * s + c];
+    }
+    int64_t count = rigidsym_natural_invariants_from_rotation_block(m,
+        pad_Q,
+        pad_e,
+        pad_phi);
+    for (int64_t c = 0; c < 3 * m; ++c)
+        out_e[3 * i0 + c] = (float)pad_e[c];
+    for (int64_t c = 0; c < 1 * m; ++c)
+        out_phi[1 * i0 + c] = (float)pad_phi[c];
+    int64_t over = 0;
+    over += rigidsym_any_nonfinite_f32(out_e + 3 * i0, 3 * m);
+    over += rigidsym_any_nonfinite_f32(out_phi + 1 * i0, 1 * m);
+    if (over == 0)
+        return count;
+    for (int64_t j = 0; j < m; ++j) {
+        const int64_t i = i0 + j;
+        if (out_e[3 * i] != out_e[3 * i])
+            continue;                       /* flagged already: its row is NaN */
+        int flagged = 0;
+        flagged |= rigidsym_any_nonfinite_f32(out_e + 3 * i, 3);
+        flagged |= rigidsym_any_nonfinite_f32(out_phi + 1 * i, 1);
+        if (flagged) {
+            ++count;
+            for (int c = 0; c < 3; ++c)
+                out_e[3 * i + c] = NAN;
+            for (int c = 0; c < 1; ++c)
+                out_phi[1 * i + c] = NAN;
+        }
+    }
+    return count;
+}
+
+int64_t rigidsym_natural_invariants_from_rotation_f32_threads(
+    int64_t n, int threads,
+    const float *RIGIDSYM_RESTRICT in_Q,
+    float *RIGIDSYM_RESTRICT out_e,
+    float *RIGIDSYM_RESTRICT out_phi)
+{
+    const int64_t nblocks = (n + RIGIDSYM_CHECK_BLOCK - 1) / RIGIDSYM_CHECK_BLOCK;
+    int64_t count = 0;
+    if (n < RIGIDSYM_MIN_PARALLEL || threads < 1)
+        threads = 1;
+    RIGIDSYM_PARALLEL_FOR(threads)
+    for (int64_t b = 0; b < nblocks; ++b) {
+        const int64_t i0 = b * RIGIDSYM_CHECK_BLOCK;
+        count += rigidsym_natural_invariants_from_rotation_run_f32(
+            i0, n - i0 < RIGIDSYM_CHECK_BLOCK ? n - i0 : RIGIDSYM_CHECK_BLOCK,
+            in_Q,
+            out_e,
+            out_phi);
+    }
+    return count;
+}
+
 int64_t rigidsym_natural_invariants_from_rotation_threads(
     int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_Q,

@@ -139,4 +139,13 @@ int64_t rigidsym_natural_invariants_from_rotation_threads(
     double *RIGIDSYM_RESTRICT out_e,
     double *RIGIDSYM_RESTRICT out_phi);
 
+
+/* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
+ * is flagged too). */
+int64_t rigidsym_natural_invariants_from_rotation_f32_threads(
+    int64_t n, int threads,
+    const float *RIGIDSYM_RESTRICT in_Q,
+    float *RIGIDSYM_RESTRICT out_e,
+    float *RIGIDSYM_RESTRICT out_phi);
+
 #endif /* RIGIDSYM_NATURAL_INVARIANTS_FROM_ROTATION_H */

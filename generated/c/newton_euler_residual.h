@@ -95,4 +95,18 @@ int64_t rigidsym_newton_euler_residual_threads(
     const double *RIGIDSYM_RESTRICT in_f,
     double *RIGIDSYM_RESTRICT out_r);
 
+
+/* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
+ * is flagged too). */
+int64_t rigidsym_newton_euler_residual_f32_threads(
+    int64_t n, int threads,
+    const float *RIGIDSYM_RESTRICT in_I_C,
+    const float *RIGIDSYM_RESTRICT in_m,
+    const float *RIGIDSYM_RESTRICT in_omega,
+    const float *RIGIDSYM_RESTRICT in_omega_dot,
+    const float *RIGIDSYM_RESTRICT in_c_ddot,
+    const float *RIGIDSYM_RESTRICT in_n,
+    const float *RIGIDSYM_RESTRICT in_f,
+    float *RIGIDSYM_RESTRICT out_r);
+
 #endif /* RIGIDSYM_NEWTON_EULER_RESIDUAL_H */

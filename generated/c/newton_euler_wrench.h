@@ -83,4 +83,16 @@ int64_t rigidsym_newton_euler_wrench_threads(
     const double *RIGIDSYM_RESTRICT in_c_ddot,
     double *RIGIDSYM_RESTRICT out_w);
 
+
+/* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
+ * is flagged too). */
+int64_t rigidsym_newton_euler_wrench_f32_threads(
+    int64_t n, int threads,
+    const float *RIGIDSYM_RESTRICT in_I_C,
+    const float *RIGIDSYM_RESTRICT in_m,
+    const float *RIGIDSYM_RESTRICT in_omega,
+    const float *RIGIDSYM_RESTRICT in_omega_dot,
+    const float *RIGIDSYM_RESTRICT in_c_ddot,
+    float *RIGIDSYM_RESTRICT out_w);
+
 #endif /* RIGIDSYM_NEWTON_EULER_WRENCH_H */

@@ -72,4 +72,13 @@ int64_t rigidsym_plucker_from_points_threads(
     const double *RIGIDSYM_RESTRICT in_p2,
     double *RIGIDSYM_RESTRICT out_kappa);
 
+
+/* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
+ * is flagged too). */
+int64_t rigidsym_plucker_from_points_f32_threads(
+    int64_t n, int threads,
+    const float *RIGIDSYM_RESTRICT in_p1,
+    const float *RIGIDSYM_RESTRICT in_p2,
+    float *RIGIDSYM_RESTRICT out_kappa);
+
 #endif /* RIGIDSYM_PLUCKER_FROM_POINTS_H */

@@ -89,6 +89,79 @@ static int64_t rigidsym_plucker_transfer_run(
     return count;
 }
 
+/* float32 storage, float64 arithmetic: samples [i0, i0 + m) widened into the block's local
+ * double arrays, evaluated by the same block function, rounded back. A finite double output
+ * can overflow float32: such rows are flagged too (NaN). Returns the number flagged. */
+static int64_t rigidsym_plucker_transfer_run_f32(
+    int64_t i0, int64_t m,
+    const float *RIGIDSYM_RESTRICT in_kappa_A,
+    const float *RIGIDSYM_RESTRICT in_a,
+    const float *RIGIDSYM_RESTRICT in_b,
+    float *RIGIDSYM_RESTRICT out_kappa_B)
+{
+    double pad_kappa_A[6 * RIGIDSYM_CHECK_BLOCK];
+    double pad_a[3 * RIGIDSYM_CHECK_BLOCK];
+    double pad_b[3 * RIGIDSYM_CHECK_BLOCK];
+    double pad_kappa_B[6 * RIGIDSYM_CHECK_BLOCK];
+    for (int64_t j = 0; j < RIGIDSYM_CHECK_BLOCK; ++j) {
+        const int64_t s = i0 + (j < m ? j : m - 1);
+        for (int c = 0; c < 6; ++c)
+            pad_kappa_A[6 * j + c] = in_kappa_A[6 * s + c];
+        for (int c = 0; c < 3; ++c)
+            pad_a[3 * j + c] = in_a[3 * s + c];
+        for (int c = 0; c < 3; ++c)
+            pad_b[3 * j + c] = in_b[3 * s + c];
+    }
+    int64_t count = rigidsym_plucker_transfer_block(m,
+        pad_kappa_A,
+        pad_a,
+        pad_b,
+        pad_kappa_B);
+    for (int64_t c = 0; c < 6 * m; ++c)
+        out_kappa_B[6 * i0 + c] = (float)pad_kappa_B[c];
+    int64_t over = 0;
+    over += rigidsym_any_nonfinite_f32(out_kappa_B + 6 * i0, 6 * m);
+    if (over == 0)
+        return count;
+    for (int64_t j = 0; j < m; ++j) {
+        const int64_t i = i0 + j;
+        if (out_kappa_B[6 * i] != out_kappa_B[6 * i])
+            continue;                       /* flagged already: its row is NaN */
+        int flagged = 0;
+        flagged |= rigidsym_any_nonfinite_f32(out_kappa_B + 6 * i, 6);
+        if (flagged) {
+            ++count;
+            for (int c = 0; c < 6; ++c)
+                out_kappa_B[6 * i + c] = NAN;
+        }
+    }
+    return count;
+}
+
+int64_t rigidsym_plucker_transfer_f32_threads(
+    int64_t n, int threads,
+    const float *RIGIDSYM_RESTRICT in_kappa_A,
+    const float *RIGIDSYM_RESTRICT in_a,
+    const float *RIGIDSYM_RESTRICT in_b,
+    float *RIGIDSYM_RESTRICT out_kappa_B)
+{
+    const int64_t nblocks = (n + RIGIDSYM_CHECK_BLOCK - 1) / RIGIDSYM_CHECK_BLOCK;
+    int64_t count = 0;
+    if (n < RIGIDSYM_MIN_PARALLEL || threads < 1)
+        threads = 1;
+    RIGIDSYM_PARALLEL_FOR(threads)
+    for (int64_t b = 0; b < nblocks; ++b) {
+        const int64_t i0 = b * RIGIDSYM_CHECK_BLOCK;
+        count += rigidsym_plucker_transfer_run_f32(
+            i0, n - i0 < RIGIDSYM_CHECK_BLOCK ? n - i0 : RIGIDSYM_CHECK_BLOCK,
+            in_kappa_A,
+            in_a,
+            in_b,
+            out_kappa_B);
+    }
+    return count;
+}
+
 int64_t rigidsym_plucker_transfer_threads(
     int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_kappa_A,

@@ -70,4 +70,14 @@ int64_t rigidsym_plucker_transfer_threads(
     const double *RIGIDSYM_RESTRICT in_b,
     double *RIGIDSYM_RESTRICT out_kappa_B);
 
+
+/* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
+ * is flagged too). */
+int64_t rigidsym_plucker_transfer_f32_threads(
+    int64_t n, int threads,
+    const float *RIGIDSYM_RESTRICT in_kappa_A,
+    const float *RIGIDSYM_RESTRICT in_a,
+    const float *RIGIDSYM_RESTRICT in_b,
+    float *RIGIDSYM_RESTRICT out_kappa_B);
+
 #endif /* RIGIDSYM_PLUCKER_TRANSFER_H */

@@ -79,4 +79,16 @@ int64_t rigidsym_point_acceleration_threads(
     const double *RIGIDSYM_RESTRICT in_a,
     double *RIGIDSYM_RESTRICT out_p_ddot);
 
+
+/* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
+ * is flagged too). */
+int64_t rigidsym_point_acceleration_f32_threads(
+    int64_t n, int threads,
+    const float *RIGIDSYM_RESTRICT in_a_ddot,
+    const float *RIGIDSYM_RESTRICT in_omega,
+    const float *RIGIDSYM_RESTRICT in_omega_dot,
+    const float *RIGIDSYM_RESTRICT in_p,
+    const float *RIGIDSYM_RESTRICT in_a,
+    float *RIGIDSYM_RESTRICT out_p_ddot);
+
 #endif /* RIGIDSYM_POINT_ACCELERATION_H */

@@ -79,4 +79,16 @@ static inline int rigidsym_any_nonfinite(const double *RIGIDSYM_RESTRICT p, int6
     return (int)(acc >> 63);
 }
 
+/* The same for float32 values (exponent bits 0x7f800000). */
+static inline int rigidsym_any_nonfinite_f32(const float *RIGIDSYM_RESTRICT p, int64_t len)
+{
+    uint32_t acc = 0;
+    for (int64_t j = 0; j < len; ++j) {
+        uint32_t b;
+        memcpy(&b, p + j, sizeof b);
+        acc |= (b & 0x7f800000U) + 0x00800000U;
+    }
+    return (int)(acc >> 31);
+}
+
 #endif /* RIGIDSYM_COMMON_H */

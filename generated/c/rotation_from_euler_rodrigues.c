@@ -73,6 +73,65 @@ static int64_t rigidsym_rotation_from_euler_rodrigues_run(
     return count;
 }
 
+/* float32 storage, float64 arithmetic: samples [i0, i0 + m) widened into the block's local
+ * double arrays, evaluated by the same block function, rounded back. A finite double output
+ * can overflow float32: such rows are flagged too (NaN). Returns the number flagged. */
+static int64_t rigidsym_rotation_from_euler_rodrigues_run_f32(
+    int64_t i0, int64_t m,
+    const float *RIGIDSYM_RESTRICT in_eta,
+    float *RIGIDSYM_RESTRICT out_Q)
+{
+    double pad_eta[4 * RIGIDSYM_CHECK_BLOCK];
+    double pad_Q[9 * RIGIDSYM_CHECK_BLOCK];
+    for (int64_t j = 0; j < RIGIDSYM_CHECK_BLOCK; ++j) {
+        const int64_t s = i0 + (j < m ? j : m - 1);
+        for (int c = 0; c < 4; ++c)
+            pad_eta[4 * j + c] = in_eta[4 * s + c];
+    }
+    int64_t count = rigidsym_rotation_from_euler_rodrigues_block(m,
+        pad_eta,
+        pad_Q);
+    for (int64_t c = 0; c < 9 * m; ++c)
+        out_Q[9 * i0 + c] = (float)pad_Q[c];
+    int64_t over = 0;
+    over += rigidsym_any_nonfinite_f32(out_Q + 9 * i0, 9 * m);
+    if (over == 0)
+        return count;
+    for (int64_t j = 0; j < m; ++j) {
+        const int64_t i = i0 + j;
+        if (out_Q[9 * i] != out_Q[9 * i])
+            continue;                       /* flagged already: its row is NaN */
+        int flagged = 0;
+        flagged |= rigidsym_any_nonfinite_f32(out_Q + 9 * i, 9);
+        if (flagged) {
+            ++count;
+            for (int c = 0; c < 9; ++c)
+                out_Q[9 * i + c] = NAN;
+        }
+    }
+    return count;
+}
+
+int64_t rigidsym_rotation_from_euler_rodrigues_f32_threads(
+    int64_t n, int threads,
+    const float *RIGIDSYM_RESTRICT in_eta,
+    float *RIGIDSYM_RESTRICT out_Q)
+{
+    const int64_t nblocks = (n + RIGIDSYM_CHECK_BLOCK - 1) / RIGIDSYM_CHECK_BLOCK;
+    int64_t count = 0;
+    if (n < RIGIDSYM_MIN_PARALLEL || threads < 1)
+        threads = 1;
+    RIGIDSYM_PARALLEL_FOR(threads)
+    for (int64_t b = 0; b < nblocks; ++b) {
+        const int64_t i0 = b * RIGIDSYM_CHECK_BLOCK;
+        count += rigidsym_rotation_from_euler_rodrigues_run_f32(
+            i0, n - i0 < RIGIDSYM_CHECK_BLOCK ? n - i0 : RIGIDSYM_CHECK_BLOCK,
+            in_eta,
+            out_Q);
+    }
+    return count;
+}
+
 int64_t rigidsym_rotation_from_euler_rodrigues_threads(
     int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_eta,

@@ -70,4 +70,12 @@ int64_t rigidsym_rotation_from_euler_rodrigues_threads(
     const double *RIGIDSYM_RESTRICT in_eta,
     double *RIGIDSYM_RESTRICT out_Q);
 
+
+/* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
+ * is flagged too). */
+int64_t rigidsym_rotation_from_euler_rodrigues_f32_threads(
+    int64_t n, int threads,
+    const float *RIGIDSYM_RESTRICT in_eta,
+    float *RIGIDSYM_RESTRICT out_Q);
+
 #endif /* RIGIDSYM_ROTATION_FROM_EULER_RODRIGUES_H */

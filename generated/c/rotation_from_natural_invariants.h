@@ -117,4 +117,13 @@ int64_t rigidsym_rotation_from_natural_invariants_threads(
     const double *RIGIDSYM_RESTRICT in_phi,
     double *RIGIDSYM_RESTRICT out_Q);
 
+
+/* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
+ * is flagged too). */
+int64_t rigidsym_rotation_from_natural_invariants_f32_threads(
+    int64_t n, int threads,
+    const float *RIGIDSYM_RESTRICT in_e,
+    const float *RIGIDSYM_RESTRICT in_phi,
+    float *RIGIDSYM_RESTRICT out_Q);
+
 #endif /* RIGIDSYM_ROTATION_FROM_NATURAL_INVARIANTS_H */

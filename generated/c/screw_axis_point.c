@@ -120,6 +120,86 @@ static int64_t rigidsym_screw_axis_point_run(
     return count;
 }
 
+/* float32 storage, float64 arithmetic: samples [i0, i0 + m) widened into the block's local
+ * double arrays, evaluated by the same block function, rounded back. A finite double output
+ * can overflow float32: such rows are flagged too (NaN). Returns the number flagged. */
+static int64_t rigidsym_screw_axis_point_run_f32(
+    int64_t i0, int64_t m,
+    const float *RIGIDSYM_RESTRICT in_e,
+    const float *RIGIDSYM_RESTRICT in_phi,
+    const float *RIGIDSYM_RESTRICT in_a,
+    const float *RIGIDSYM_RESTRICT in_a_prime,
+    float *RIGIDSYM_RESTRICT out_p0)
+{
+    double pad_e[3 * 64];
+    double pad_phi[1 * 64];
+    double pad_a[3 * 64];
+    double pad_a_prime[3 * 64];
+    double pad_p0[3 * 64];
+    for (int64_t j = 0; j < 64; ++j) {
+        const int64_t s = i0 + (j < m ? j : m - 1);
+        for (int c = 0; c < 3; ++c)
+            pad_e[3 * j + c] = in_e[3 * s + c];
+        for (int c = 0; c < 1; ++c)
+            pad_phi[1 * j + c] = in_phi[1 * s + c];
+        for (int c = 0; c < 3; ++c)
+            pad_a[3 * j + c] = in_a[3 * s + c];
+        for (int c = 0; c < 3; ++c)
+            pad_a_prime[3 * j + c] = in_a_prime[3 * s + c];
+    }
+    int64_t count = rigidsym_screw_axis_point_block(m,
+        pad_e,
+        pad_phi,
+        pad_a,
+        pad_a_prime,
+        pad_p0);
+    for (int64_t c = 0; c < 3 * m; ++c)
+        out_p0[3 * i0 + c] = (float)pad_p0[c];
+    int64_t over = 0;
+    over += rigidsym_any_nonfinite_f32(out_p0 + 3 * i0, 3 * m);
+    if (over == 0)
+        return count;
+    for (int64_t j = 0; j < m; ++j) {
+        const int64_t i = i0 + j;
+        if (out_p0[3 * i] != out_p0[3 * i])
+            continue;                       /* flagged already: its row is NaN */
+        int flagged = 0;
+        flagged |= rigidsym_any_nonfinite_f32(out_p0 + 3 * i, 3);
+        if (flagged) {
+            ++count;
+            for (int c = 0; c < 3; ++c)
+                out_p0[3 * i + c] = NAN;
+        }
+    }
+    return count;
+}
+
+int64_t rigidsym_screw_axis_point_f32_threads(
+    int64_t n, int threads,
+    const float *RIGIDSYM_RESTRICT in_e,
+    const float *RIGIDSYM_RESTRICT in_phi,
+    const float *RIGIDSYM_RESTRICT in_a,
+    const float *RIGIDSYM_RESTRICT in_a_prime,
+    float *RIGIDSYM_RESTRICT out_p0)
+{
+    const int64_t nblocks = (n + 64 - 1) / 64;
+    int64_t count = 0;
+    if (n < RIGIDSYM_MIN_PARALLEL || threads < 1)
+        threads = 1;
+    RIGIDSYM_PARALLEL_FOR(threads)
+    for (int64_t b = 0; b < nblocks; ++b) {
+        const int64_t i0 = b * 64;
+        count += rigidsym_screw_axis_point_run_f32(
+            i0, n - i0 < 64 ? n - i0 : 64,
+            in_e,
+            in_phi,
+            in_a,
+            in_a_prime,
+            out_p0);
+    }
+    return count;
+}
+
 int64_t rigidsym_screw_axis_point_threads(
     int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_e,

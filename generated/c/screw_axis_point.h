@@ -156,4 +156,15 @@ int64_t rigidsym_screw_axis_point_threads(
     const double *RIGIDSYM_RESTRICT in_a_prime,
     double *RIGIDSYM_RESTRICT out_p0);
 
+
+/* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
+ * is flagged too). */
+int64_t rigidsym_screw_axis_point_f32_threads(
+    int64_t n, int threads,
+    const float *RIGIDSYM_RESTRICT in_e,
+    const float *RIGIDSYM_RESTRICT in_phi,
+    const float *RIGIDSYM_RESTRICT in_a,
+    const float *RIGIDSYM_RESTRICT in_a_prime,
+    float *RIGIDSYM_RESTRICT out_p0);
+
 #endif /* RIGIDSYM_SCREW_AXIS_POINT_H */

@@ -320,4 +320,18 @@ int64_t rigidsym_screw_of_displacement_threads(
     double *RIGIDSYM_RESTRICT out_pitch,
     double *RIGIDSYM_RESTRICT out_plucker);
 
+
+/* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
+ * is flagged too). */
+int64_t rigidsym_screw_of_displacement_f32_threads(
+    int64_t n, int threads,
+    const float *RIGIDSYM_RESTRICT in_Q,
+    const float *RIGIDSYM_RESTRICT in_a,
+    const float *RIGIDSYM_RESTRICT in_a_prime,
+    float *RIGIDSYM_RESTRICT out_e,
+    float *RIGIDSYM_RESTRICT out_phi,
+    float *RIGIDSYM_RESTRICT out_p0,
+    float *RIGIDSYM_RESTRICT out_pitch,
+    float *RIGIDSYM_RESTRICT out_plucker);
+
 #endif /* RIGIDSYM_SCREW_OF_DISPLACEMENT_H */

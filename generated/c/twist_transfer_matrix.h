@@ -91,4 +91,13 @@ int64_t rigidsym_twist_transfer_matrix_threads(
     const double *RIGIDSYM_RESTRICT in_p,
     double *RIGIDSYM_RESTRICT out_U);
 
+
+/* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
+ * is flagged too). */
+int64_t rigidsym_twist_transfer_matrix_f32_threads(
+    int64_t n, int threads,
+    const float *RIGIDSYM_RESTRICT in_a,
+    const float *RIGIDSYM_RESTRICT in_p,
+    float *RIGIDSYM_RESTRICT out_U);
+
 #endif /* RIGIDSYM_TWIST_TRANSFER_MATRIX_H */

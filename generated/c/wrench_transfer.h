@@ -70,4 +70,14 @@ int64_t rigidsym_wrench_transfer_threads(
     const double *RIGIDSYM_RESTRICT in_p,
     double *RIGIDSYM_RESTRICT out_w_P);
 
+
+/* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
+ * is flagged too). */
+int64_t rigidsym_wrench_transfer_f32_threads(
+    int64_t n, int threads,
+    const float *RIGIDSYM_RESTRICT in_w_A,
+    const float *RIGIDSYM_RESTRICT in_a,
+    const float *RIGIDSYM_RESTRICT in_p,
+    float *RIGIDSYM_RESTRICT out_w_P);
+
 #endif /* RIGIDSYM_WRENCH_TRANSFER_H */

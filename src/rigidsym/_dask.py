@@ -162,7 +162,9 @@ def apply(name: str, args: tuple, *, out=None, check: bool = True,
     except ValueError:
         raise ValueError("batch shapes do not broadcast: " + ", ".join(
             f"{s['name']} {tuple(a.shape)}" for a, s in zip(arrs, specs, strict=True))) from None
-    dtype = np.result_type(*[a.dtype for a in arrs], np.float64)
+    # NEP 50 as in memory: float32 Dask arrays with Python floats stay float32
+    dtype = kernels._dtype(tuple(np.empty(0, a.dtype) if isinstance(a, da.Array) else a
+                                 for a in args))
     nb, m = len(batch), len(specs)
     chunks = _batch_chunks(arrs, specs, batch)
     expanded = [_expand(a, s, j, m, batch, chunks)

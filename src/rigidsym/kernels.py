@@ -17,6 +17,16 @@ Common keyword arguments of every kernel:
   :class:`SingularConfigurationError` naming the argument and the batch indices; ``"nan"``
   (the default for Dask inputs) returns NaN in exactly those rows.
 
+float32: the dtype is ``np.result_type`` of the array inputs (NEP 50: Python floats are weak,
+so float32 arrays with a Python float stay float32; lists and integers are float64). float32
+inputs run float32 C (or NumPy) batch functions that widen each block to float64, evaluate
+the same generated code and round the outputs once: error against the 50-digit reference at
+the same float32 inputs measured at most 0.49 ulp of float32 (max-norm relative), at random
+points and near phi -> 0, pi, ||omega|| -> 0, gimbal lock and Q near 1 and pi alike
+(``tests/test_float32.py``); an output that overflows float32 is flagged like any overflow.
+``out=`` must have the inputs' dtype (``TypeError`` naming ``out``); the unit and
+orthogonality tolerances are ``max(UNIT_TOL, 100 eps)`` of the argument's dtype.
+
 Dask arrays in (NumPy arrays mixed in are wrapped): the result is lazy Dask arrays chunked
 along the batch axes; nothing is computed until the caller computes (:mod:`rigidsym._dask`).
 
@@ -97,7 +107,8 @@ def _classify_c_rows(name: str, flat: list, bufs: list, n: int) -> np.ndarray:
     flags = np.zeros(n, dtype=np.uint8)
     if idx.size:
         tmp = [np.empty((idx.size,) + b.shape[1:]) for b in bufs]
-        sub = _numpy_kernel(name)(*[np.ascontiguousarray(a[idx]) for a in flat], *tmp)
+        sub = _numpy_kernel(name)(*[np.ascontiguousarray(a[idx], dtype=np.float64)
+                                    for a in flat], *tmp)
         # a row C flagged and NumPy did not (rounding at the edge of the range): overflow
         flags[idx] = np.where(sub == 0, _NONFINITE, sub)
     return flags
@@ -244,29 +255,69 @@ def _threads(threads, b: str) -> int:
 
 
 def batch_function(name: str, backend_name: str | None = None,
-                   threads: int | None = None) -> Callable:
+                   threads: int | None = None, dtype=np.float64) -> Callable:
     """Low-level ``f(*inputs, *outputs) -> singular mask or count`` on C-contiguous
     ``(n, ...)`` float64 arrays, without validation or broadcasting (for benchmarks).
 
     For the C backend the return value is the number of singular samples (written as NaN);
     for NumPy it is the boolean mask of singular samples. ``threads`` as for the kernels
     (None: :func:`get_num_threads`); the outputs are the same for every thread count.
+    ``dtype`` float32: float32 arrays in and out, float64 arithmetic inside.
     """
     b = backend_name or backend()
     t = _threads(threads, b)
+    f32 = np.dtype(dtype) == np.float32
     if b == "numpy":
-        return _numpy_kernel(name)
+        return _numpy_f32(_numpy_kernel(name), len(_meta()[name]["args"])) if f32 \
+            else _numpy_kernel(name)
     ffi, lib = _c_lib()
-    cfun = getattr(lib, f"rigidsym_{name}_threads")
+    cfun = getattr(lib, f"rigidsym_{name}_f32_threads" if f32 else f"rigidsym_{name}_threads")
     fb = ffi.from_buffer
+    ctype = "float[]" if f32 else "double[]"
 
     def f(*arrays):
-        return cfun(arrays[0].shape[0], t, *[fb("double[]", a) for a in arrays])
+        return cfun(arrays[0].shape[0], t, *[fb(ctype, a) for a in arrays])
     return f
 
 
-def _as_array(x, arg: dict, check: bool) -> np.ndarray:
-    a = np.asarray(x, dtype=np.float64)
+def _numpy_f32(kernel: Callable, n_in: int) -> Callable:
+    """A generated NumPy kernel on float32 arrays: float64 arithmetic (as the C kernels),
+    outputs rounded to float32; a row whose output overflows float32 is flagged (2)."""
+    def f(*arrays):
+        ins = [np.asarray(a, dtype=np.float64) for a in arrays[:n_in]]
+        tmp = [np.empty(o.shape) for o in arrays[n_in:]]
+        flags = np.asarray(kernel(*ins, *tmp)).astype(np.uint8)
+        n = ins[0].shape[0]
+        with np.errstate(over="ignore"):
+            for o, t in zip(arrays[n_in:], tmp, strict=True):
+                o[...] = t
+                bad = ~np.isfinite(o.reshape(n, -1)).all(axis=1) & (flags == 0)
+                flags[bad] = _NONFINITE
+        return flags
+    return f
+
+
+
+def _dtype(args: tuple) -> np.dtype:
+    """float32 when the array inputs are float32 (NEP 50: Python floats and ints are weak,
+    lists become float64 arrays), else float64."""
+    kinds = []
+    for x in args:
+        if isinstance(x, (np.ndarray, np.generic)):
+            kinds.append(x.dtype if x.dtype.kind == "f" else np.float64)
+        elif not isinstance(x, (int, float)):
+            kinds.append(np.float64)
+    dt = np.result_type(*kinds) if kinds else np.dtype(np.float64)
+    return np.dtype(np.float32) if dt.itemsize <= 4 else np.dtype(np.float64)
+
+
+def _tol(base: float, dtype) -> float:
+    """Validation tolerance for ``dtype``: ``base`` for float64, 100 eps for float32."""
+    return max(base, 100 * float(np.finfo(dtype).eps))
+
+
+def _as_array(x, arg: dict, check: bool, dtype=np.float64) -> np.ndarray:
+    a = np.asarray(x, dtype=dtype)
     shape = tuple(arg["shape"])
     k = len(shape)
     if a.ndim < k or a.shape[a.ndim - k:] != shape:
@@ -275,21 +326,26 @@ def _as_array(x, arg: dict, check: bool) -> np.ndarray:
     return a
 
 
-def _validate(a: np.ndarray, arg: dict) -> None:
+def _validate(a: np.ndarray, arg: dict, given=None) -> None:
+    """Finiteness, unit vectors, rotations; tolerances of the dtype ``given`` (the argument's
+    own, e.g. float32 values in a float64 call keep the float32 tolerance)."""
     name, kind = arg["name"], arg["kind"]
+    prec = given if given is not None and given.kind == "f" and given.itemsize < 8 else a.dtype
     if not np.isfinite(a).all():
         raise ValueError(f"{name}: non-finite values")
     if kind == "unit":
         err = np.abs(np.sqrt(np.einsum("...i,...i->...", a, a)) - 1.0)
-        if (err > UNIT_TOL).any():
+        tol = _tol(UNIT_TOL, prec)
+        if (err > tol).any():
             raise ValueError(f"{name}: not a unit vector (| ||{name}|| - 1 | = "
-                             f"{err.max():.3g} > {UNIT_TOL})")
+                             f"{err.max():.3g} > {tol:.3g})")
     elif kind == "rotation":
         g = np.einsum("...ki,...kj->...ij", a, a) - np.eye(3)
         err = np.abs(g).max() if g.size else 0.0
-        if err > ORTHO_TOL:
+        tol = _tol(ORTHO_TOL, prec)
+        if err > tol:
             raise ValueError(f"{name}: not orthogonal (max |{name}^T {name} - 1| = "
-                             f"{err:.3g} > {ORTHO_TOL})")
+                             f"{err:.3g} > {tol:.3g})")
         if (np.linalg.det(a) <= 0).any():
             raise ValueError(f"{name}: not a proper rotation (det <= 0)")
 
@@ -306,10 +362,11 @@ def _call(name: str, args: tuple, out=None, check: bool = True,
     specs = meta["args"]
     if len(args) != len(specs):
         raise TypeError(f"{name}() takes {len(specs)} arguments, got {len(args)}")
-    arrs = [_as_array(x, s, check) for x, s in zip(args, specs, strict=True)]
+    dtype = _dtype(args)
+    arrs = [_as_array(x, s, check, dtype) for x, s in zip(args, specs, strict=True)]
     if check:
-        for a, s in zip(arrs, specs, strict=True):
-            _validate(a, s)
+        for x, a, s in zip(args, arrs, specs, strict=True):
+            _validate(a, s, getattr(x, "dtype", None))
     batch = np.broadcast_shapes(*[a.shape[:a.ndim - len(s["shape"])]
                                   for a, s in zip(arrs, specs, strict=True)])
     n = math.prod(batch)
@@ -322,8 +379,11 @@ def _call(name: str, args: tuple, out=None, check: bool = True,
             raise ValueError(f"out: expected {len(outs_meta)} arrays")
         for u, o in zip(user, outs_meta, strict=True):
             want = batch + tuple(o["shape"])
-            if not isinstance(u, np.ndarray) or u.shape != want or u.dtype != np.float64:
-                raise ValueError(f"out ({o['name']}): expected a float64 array of shape {want}")
+            if isinstance(u, np.ndarray) and u.dtype != dtype:
+                raise TypeError(f"out ({o['name']}): expected dtype {dtype} (the inputs' "
+                                f"dtype), got {u.dtype}")
+            if not isinstance(u, np.ndarray) or u.shape != want:
+                raise ValueError(f"out ({o['name']}): expected a {dtype} array of shape {want}")
     else:
         user = None
     bufs = []
@@ -333,10 +393,10 @@ def _call(name: str, args: tuple, out=None, check: bool = True,
         if u is not None and u.flags.c_contiguous:
             bufs.append(u.reshape(shp))
         else:
-            bufs.append(np.empty(shp))
+            bufs.append(np.empty(shp, dtype=dtype))
     if n:
         b = backend()
-        res = batch_function(name, b, threads)(*flat, *bufs)
+        res = batch_function(name, b, threads, dtype)(*flat, *bufs)
         if b == "numpy":
             flags = res
         elif res:

@@ -85,6 +85,9 @@ def cdef(meta: dict) -> str:
         lines.append(f"int64_t rigidsym_{k['name']}({', '.join(params)});")
         lines.append(f"int64_t rigidsym_{k['name']}_threads({', '.join(params[:1])}, "
                      f"int threads, {', '.join(params[1:])});")
+        p32 = [p.replace("double", "float") for p in params[1:]]
+        lines.append(f"int64_t rigidsym_{k['name']}_f32_threads(int64_t n, int threads, "
+                     f"{', '.join(p32)});")
     lines.append("int rigidsym_openmp(void);")
     return "\n".join(lines)
 
