@@ -198,7 +198,9 @@ def test_thread_count_setting_order(monkeypatch):
 
 
 def test_numpy_backend_warns_once_and_runs_one_thread(monkeypatch):
-    monkeypatch.setitem(K._STATE, "warned_threads", False)
+    from rigidsym import _scale
+
+    monkeypatch.setitem(_scale._STATE, "warned", False)
     K.use_backend("numpy")
     with pytest.warns(RuntimeWarning, match="one thread"):
         a = K.rotation_from_natural_invariants([0, 0, 1], [0.1, 0.2], threads=2)

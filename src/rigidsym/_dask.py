@@ -142,7 +142,7 @@ def apply(name: str, args: tuple, *, out=None, check: bool = True,
     """
     import dask.array as da
 
-    from rigidsym import kernels
+    from rigidsym import _scale, kernels
 
     meta = kernels._meta()[name]
     specs = meta["args"]
@@ -163,7 +163,7 @@ def apply(name: str, args: tuple, *, out=None, check: bool = True,
         raise ValueError("batch shapes do not broadcast: " + ", ".join(
             f"{s['name']} {tuple(a.shape)}" for a, s in zip(arrs, specs, strict=True))) from None
     # NEP 50 as in memory: float32 Dask arrays with Python floats stay float32
-    dtype = kernels._dtype(tuple(np.empty(0, a.dtype) if isinstance(a, da.Array) else a
+    dtype = _scale.result_dtype(tuple(np.empty(0, a.dtype) if isinstance(a, da.Array) else a
                                  for a in args))
     nb, m = len(batch), len(specs)
     chunks = _batch_chunks(arrs, specs, batch)

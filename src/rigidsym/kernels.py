@@ -44,7 +44,6 @@ import importlib.util
 import inspect
 import json
 import math
-import os
 import sys
 import threading
 import warnings
@@ -53,7 +52,8 @@ from functools import cache
 
 import numpy as np
 
-from rigidsym import _dask
+from rigidsym import _dask, _scale
+from rigidsym._scale import get_num_threads, set_num_threads
 
 __all__ = ["SingularConfigurationError", "NonFiniteResultError", "use_backend", "backend",
            "set_num_threads", "get_num_threads",
@@ -211,49 +211,6 @@ def backend() -> str:
     return b
 
 
-def set_num_threads(n: int | None) -> None:
-    """Process-wide thread count of the C kernels called with ``threads=None``.
-
-    Args:
-        n: threads (>= 1), or None to go back to ``RIGIDSYM_NUM_THREADS`` (else 1).
-
-    Raises:
-        ValueError: ``n`` is not a positive integer.
-    """
-    _STATE["threads"] = None if n is None else _check_threads(n, "n")
-
-
-def get_num_threads() -> int:
-    """Thread count used with ``threads=None``: :func:`set_num_threads`, else the
-    environment variable ``RIGIDSYM_NUM_THREADS``, else 1 (never oversubscribes unasked)."""
-    if _STATE.get("threads") is not None:
-        return _STATE["threads"]
-    env = os.environ.get("RIGIDSYM_NUM_THREADS")
-    return _check_threads(env, "RIGIDSYM_NUM_THREADS") if env else 1
-
-
-def _check_threads(n, what: str) -> int:
-    try:
-        t = int(n)
-    except (TypeError, ValueError):
-        t = 0
-    if t < 1 or (not isinstance(n, str) and t != n) or isinstance(n, bool):
-        raise ValueError(f"{what}: expected a positive integer number of threads, got {n!r}")
-    return t
-
-
-def _threads(threads, b: str) -> int:
-    """Resolve ``threads`` for backend ``b``; NumPy runs one thread (one warning)."""
-    t = get_num_threads() if threads is None else _check_threads(threads, "threads")
-    if t > 1 and b == "numpy":
-        if not _STATE.get("warned_threads"):
-            _STATE["warned_threads"] = True
-            warnings.warn("rigidsym.kernels: the NumPy backend runs on one thread "
-                          f"(threads={t} asked)", RuntimeWarning, stacklevel=3)
-        t = 1
-    return t
-
-
 def batch_function(name: str, backend_name: str | None = None,
                    threads: int | None = None, dtype=np.float64) -> Callable:
     """Low-level ``f(*inputs, *outputs) -> singular mask or count`` on C-contiguous
@@ -265,10 +222,10 @@ def batch_function(name: str, backend_name: str | None = None,
     ``dtype`` float32: float32 arrays in and out, float64 arithmetic inside.
     """
     b = backend_name or backend()
-    t = _threads(threads, b)
+    t = _scale.resolve_threads(threads, b)
     f32 = np.dtype(dtype) == np.float32
     if b == "numpy":
-        return _numpy_f32(_numpy_kernel(name), len(_meta()[name]["args"])) if f32 \
+        return _scale.numpy_f32(_numpy_kernel(name), len(_meta()[name]["args"])) if f32 \
             else _numpy_kernel(name)
     ffi, lib = _c_lib()
     cfun = getattr(lib, f"rigidsym_{name}_f32_threads" if f32 else f"rigidsym_{name}_threads")
@@ -278,42 +235,6 @@ def batch_function(name: str, backend_name: str | None = None,
     def f(*arrays):
         return cfun(arrays[0].shape[0], t, *[fb(ctype, a) for a in arrays])
     return f
-
-
-def _numpy_f32(kernel: Callable, n_in: int) -> Callable:
-    """A generated NumPy kernel on float32 arrays: float64 arithmetic (as the C kernels),
-    outputs rounded to float32; a row whose output overflows float32 is flagged (2)."""
-    def f(*arrays):
-        ins = [np.asarray(a, dtype=np.float64) for a in arrays[:n_in]]
-        tmp = [np.empty(o.shape) for o in arrays[n_in:]]
-        flags = np.asarray(kernel(*ins, *tmp)).astype(np.uint8)
-        n = ins[0].shape[0]
-        with np.errstate(over="ignore"):
-            for o, t in zip(arrays[n_in:], tmp, strict=True):
-                o[...] = t
-                bad = ~np.isfinite(o.reshape(n, -1)).all(axis=1) & (flags == 0)
-                flags[bad] = _NONFINITE
-        return flags
-    return f
-
-
-
-def _dtype(args: tuple) -> np.dtype:
-    """float32 when the array inputs are float32 (NEP 50: Python floats and ints are weak,
-    lists become float64 arrays), else float64."""
-    kinds = []
-    for x in args:
-        if isinstance(x, (np.ndarray, np.generic)):
-            kinds.append(x.dtype if x.dtype.kind == "f" else np.float64)
-        elif not isinstance(x, (int, float)):
-            kinds.append(np.float64)
-    dt = np.result_type(*kinds) if kinds else np.dtype(np.float64)
-    return np.dtype(np.float32) if dt.itemsize <= 4 else np.dtype(np.float64)
-
-
-def _tol(base: float, dtype) -> float:
-    """Validation tolerance for ``dtype``: ``base`` for float64, 100 eps for float32."""
-    return max(base, 100 * float(np.finfo(dtype).eps))
 
 
 def _as_array(x, arg: dict, check: bool, dtype=np.float64) -> np.ndarray:
@@ -335,14 +256,14 @@ def _validate(a: np.ndarray, arg: dict, given=None) -> None:
         raise ValueError(f"{name}: non-finite values")
     if kind == "unit":
         err = np.abs(np.sqrt(np.einsum("...i,...i->...", a, a)) - 1.0)
-        tol = _tol(UNIT_TOL, prec)
+        tol = _scale.tolerance(UNIT_TOL, prec)
         if (err > tol).any():
             raise ValueError(f"{name}: not a unit vector (| ||{name}|| - 1 | = "
                              f"{err.max():.3g} > {tol:.3g})")
     elif kind == "rotation":
         g = np.einsum("...ki,...kj->...ij", a, a) - np.eye(3)
         err = np.abs(g).max() if g.size else 0.0
-        tol = _tol(ORTHO_TOL, prec)
+        tol = _scale.tolerance(ORTHO_TOL, prec)
         if err > tol:
             raise ValueError(f"{name}: not orthogonal (max |{name}^T {name} - 1| = "
                              f"{err:.3g} > {tol:.3g})")
@@ -362,7 +283,7 @@ def _call(name: str, args: tuple, out=None, check: bool = True,
     specs = meta["args"]
     if len(args) != len(specs):
         raise TypeError(f"{name}() takes {len(specs)} arguments, got {len(args)}")
-    dtype = _dtype(args)
+    dtype = _scale.result_dtype(args)
     arrs = [_as_array(x, s, check, dtype) for x, s in zip(args, specs, strict=True)]
     if check:
         for x, a, s in zip(args, arrs, specs, strict=True):
