@@ -166,6 +166,29 @@ def table_threads(rounds: int, sizes: list[int]) -> list[str]:
     return lines
 
 
+def table_threshold(rounds: int) -> list[str]:
+    """1 against 2 threads around MIN_PARALLEL, through the C entry point itself (the checked
+    API and batch_function run one thread below it)."""
+    ffi, lib = K._c_lib()
+    lines = ["| kernel | " + " | ".join(f"N = {n}" for n in _THRESHOLD_N) + " |",
+             "|---|" + "---|" * len(_THRESHOLD_N)]
+    for kid in ("K1", "K2", "K5"):
+        name = BENCH[kid]
+        cells = []
+        for n in _THRESHOLD_N:
+            xs, outs = _case(name, n)
+            ptrs = [ffi.from_buffer("double[]", a) for a in xs + outs]
+            fn = getattr(lib, f"rigidsym_{name}_threads")
+            t1 = timeit(lambda fn=fn, n=n, p=ptrs: fn(n, 1, *p), rounds, n)
+            t2 = timeit(lambda fn=fn, n=n, p=ptrs: fn(n, 2, *p), rounds, n)
+            cells.append(f"{t1 / t2:.2f}×")
+        lines.append(f"| {kid} `{name}` | " + " | ".join(cells) + " |")
+    return lines
+
+
+_THRESHOLD_N = [512, 1024, 2048, 4096, 8192, 16384, 65536]
+
+
 def table_float32(rounds: int, n: int) -> list[str]:
     lines = ["| kernel | float64 | float32 | speed-up |", "|---|---|---|---|"]
     for kid, name in BENCH.items():
@@ -303,6 +326,9 @@ def main(argv=None) -> int:
             body += ["### Threads (C, OpenMP; CasADi `Function.map(N, \"thread\", 2)` as the "
                      "peer)", ""]
             body += table_threads(rounds, [10**3, 10**4, 10**6]) + [""]
+            body += ["### Threads below and above `MIN_PARALLEL` "
+                     f"({K._scale.MIN_PARALLEL}): 2-thread speed-up of the C entry point", ""]
+            body += table_threshold(rounds) + [""]
         if "float32" not in skip:
             body += ["### float32 against float64 (C, 1 thread, N = 1e6)", ""]
             body += table_float32(rounds, 10**6) + [""]

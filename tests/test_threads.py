@@ -92,8 +92,9 @@ def test_no_openmp_falls_back_to_one_thread_with_one_warning(monkeypatch, tmp_pa
 
 from test_kernels import AVAILABLE, inputs  # noqa: E402  (the kernels' input sampler)
 
-#: above RIGIDSYM_MIN_PARALLEL (4096), so that 2 and 3 threads really run in parallel
+#: above MIN_PARALLEL, so that 2 and 3 threads really run in parallel
 N_THREADED = 2 * 4096 + 37
+assert N_THREADED > 2 * K._scale.MIN_PARALLEL
 #: block edges of both batch-loop block sizes (64, 256), the parallel split, the tail
 EDGES = [0, 63, 64, 65, 255, 256, 257, 4095, 4096, 4097, N_THREADED - 2, N_THREADED - 1]
 

@@ -103,8 +103,8 @@ int64_t rigidsym_H_matrix(
     const double *RIGIDSYM_RESTRICT in_phi,
     double *RIGIDSYM_RESTRICT out_H_matrix);
 
-/* The same on `threads` threads (OpenMP; one thread below RIGIDSYM_MIN_PARALLEL samples or
- * without OpenMP); the outputs and the count are the same for every thread count. */
+/* The same on `threads` threads (OpenMP; one thread without it); the outputs and the count
+ * are the same for every thread count. */
 int64_t rigidsym_H_matrix_threads(
     int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_e,

@@ -142,7 +142,7 @@ int64_t rigidsym_euler_rate_matrix_yzx_body_f32_threads(
 {
     const int64_t nblocks = (n + 64 - 1) / 64;
     int64_t count = 0;
-    if (n < RIGIDSYM_MIN_PARALLEL || threads < 1)
+    if (threads < 1)
         threads = 1;
     RIGIDSYM_PARALLEL_FOR(threads)
     for (int64_t b = 0; b < nblocks; ++b) {
@@ -162,7 +162,7 @@ int64_t rigidsym_euler_rate_matrix_yzx_body_threads(
 {
     const int64_t nblocks = (n + 64 - 1) / 64;
     int64_t count = 0;
-    if (n < RIGIDSYM_MIN_PARALLEL || threads < 1)
+    if (threads < 1)
         threads = 1;
     /* blocks are independent and the count is an integer sum: the result is the same for
      * every thread count */

@@ -80,8 +80,8 @@ int64_t rigidsym_euler_rate_matrix_zxy_fixed(
     const double *RIGIDSYM_RESTRICT in_angles,
     double *RIGIDSYM_RESTRICT out_W);
 
-/* The same on `threads` threads (OpenMP; one thread below RIGIDSYM_MIN_PARALLEL samples or
- * without OpenMP); the outputs and the count are the same for every thread count. */
+/* The same on `threads` threads (OpenMP; one thread without it); the outputs and the count
+ * are the same for every thread count. */
 int64_t rigidsym_euler_rate_matrix_zxy_fixed_threads(
     int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_angles,

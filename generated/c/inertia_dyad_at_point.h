@@ -109,8 +109,8 @@ int64_t rigidsym_inertia_dyad_at_point(
     const double *RIGIDSYM_RESTRICT in_a,
     double *RIGIDSYM_RESTRICT out_M_A);
 
-/* The same on `threads` threads (OpenMP; one thread below RIGIDSYM_MIN_PARALLEL samples or
- * without OpenMP); the outputs and the count are the same for every thread count. */
+/* The same on `threads` threads (OpenMP; one thread without it); the outputs and the count
+ * are the same for every thread count. */
 int64_t rigidsym_inertia_dyad_at_point_threads(
     int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_I_C,

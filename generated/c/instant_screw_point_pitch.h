@@ -66,8 +66,8 @@ int64_t rigidsym_instant_screw_point_pitch(
     double *RIGIDSYM_RESTRICT out_p0,
     double *RIGIDSYM_RESTRICT out_pitch);
 
-/* The same on `threads` threads (OpenMP; one thread below RIGIDSYM_MIN_PARALLEL samples or
- * without OpenMP); the outputs and the count are the same for every thread count. */
+/* The same on `threads` threads (OpenMP; one thread without it); the outputs and the count
+ * are the same for every thread count. */
 int64_t rigidsym_instant_screw_point_pitch_threads(
     int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_omega,

@@ -60,8 +60,8 @@ int64_t rigidsym_kinetic_energy(
     const double *RIGIDSYM_RESTRICT in_c_dot,
     double *RIGIDSYM_RESTRICT out_T);
 
-/* The same on `threads` threads (OpenMP; one thread below RIGIDSYM_MIN_PARALLEL samples or
- * without OpenMP); the outputs and the count are the same for every thread count. */
+/* The same on `threads` threads (OpenMP; one thread without it); the outputs and the count
+ * are the same for every thread count. */
 int64_t rigidsym_kinetic_energy_threads(
     int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_I_C,

@@ -145,7 +145,7 @@ int64_t rigidsym_natural_invariants_from_rotation_f32_threads(
 {
     const int64_t nblocks = (n + RIGIDSYM_CHECK_BLOCK - 1) / RIGIDSYM_CHECK_BLOCK;
     int64_t count = 0;
-    if (n < RIGIDSYM_MIN_PARALLEL || threads < 1)
+    if (threads < 1)
         threads = 1;
     RIGIDSYM_PARALLEL_FOR(threads)
     for (int64_t b = 0; b < nblocks; ++b) {
@@ -167,7 +167,7 @@ int64_t rigidsym_natural_invariants_from_rotation_threads(
 {
     const int64_t nblocks = (n + RIGIDSYM_CHECK_BLOCK - 1) / RIGIDSYM_CHECK_BLOCK;
     int64_t count = 0;
-    if (n < RIGIDSYM_MIN_PARALLEL || threads < 1)
+    if (threads < 1)
         threads = 1;
     /* blocks are independent and the count is an integer sum: the result is the same for
      * every thread count */

@@ -131,8 +131,8 @@ int64_t rigidsym_natural_invariants_from_rotation(
     double *RIGIDSYM_RESTRICT out_e,
     double *RIGIDSYM_RESTRICT out_phi);
 
-/* The same on `threads` threads (OpenMP; one thread below RIGIDSYM_MIN_PARALLEL samples or
- * without OpenMP); the outputs and the count are the same for every thread count. */
+/* The same on `threads` threads (OpenMP; one thread without it); the outputs and the count
+ * are the same for every thread count. */
 int64_t rigidsym_natural_invariants_from_rotation_threads(
     int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_Q,

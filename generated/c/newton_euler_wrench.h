@@ -72,8 +72,8 @@ int64_t rigidsym_newton_euler_wrench(
     const double *RIGIDSYM_RESTRICT in_c_ddot,
     double *RIGIDSYM_RESTRICT out_w);
 
-/* The same on `threads` threads (OpenMP; one thread below RIGIDSYM_MIN_PARALLEL samples or
- * without OpenMP); the outputs and the count are the same for every thread count. */
+/* The same on `threads` threads (OpenMP; one thread without it); the outputs and the count
+ * are the same for every thread count. */
 int64_t rigidsym_newton_euler_wrench_threads(
     int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_I_C,

@@ -64,8 +64,8 @@ int64_t rigidsym_plucker_from_points(
     const double *RIGIDSYM_RESTRICT in_p2,
     double *RIGIDSYM_RESTRICT out_kappa);
 
-/* The same on `threads` threads (OpenMP; one thread below RIGIDSYM_MIN_PARALLEL samples or
- * without OpenMP); the outputs and the count are the same for every thread count. */
+/* The same on `threads` threads (OpenMP; one thread without it); the outputs and the count
+ * are the same for every thread count. */
 int64_t rigidsym_plucker_from_points_threads(
     int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_p1,

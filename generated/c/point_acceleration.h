@@ -68,8 +68,8 @@ int64_t rigidsym_point_acceleration(
     const double *RIGIDSYM_RESTRICT in_a,
     double *RIGIDSYM_RESTRICT out_p_ddot);
 
-/* The same on `threads` threads (OpenMP; one thread below RIGIDSYM_MIN_PARALLEL samples or
- * without OpenMP); the outputs and the count are the same for every thread count. */
+/* The same on `threads` threads (OpenMP; one thread without it); the outputs and the count
+ * are the same for every thread count. */
 int64_t rigidsym_point_acceleration_threads(
     int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_a_ddot,

@@ -37,12 +37,9 @@ double cos(double);
 #endif
 
 /* Threads: the batch functions take their thread count as an argument and pass it to OpenMP
- * explicitly (num_threads), so OMP_NUM_THREADS does not change it; one thread below
- * RIGIDSYM_MIN_PARALLEL samples, where starting the threads costs more than it saves
- * (measured in benchmarks/scale.py). Without OpenMP the loops run on one thread. */
-#ifndef RIGIDSYM_MIN_PARALLEL
-#define RIGIDSYM_MIN_PARALLEL 4096
-#endif
+ * explicitly (num_threads), so OMP_NUM_THREADS does not change it (rigidsym.kernels asks for
+ * one thread below a measured batch size, MIN_PARALLEL). Without OpenMP the loops run on one
+ * thread. */
 #if defined(_OPENMP)
 #define RIGIDSYM_PRAGMA(x) _Pragma(#x)
 #define RIGIDSYM_PARALLEL_FOR(t) \

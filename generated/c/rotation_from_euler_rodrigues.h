@@ -63,8 +63,8 @@ int64_t rigidsym_rotation_from_euler_rodrigues(
     const double *RIGIDSYM_RESTRICT in_eta,
     double *RIGIDSYM_RESTRICT out_Q);
 
-/* The same on `threads` threads (OpenMP; one thread below RIGIDSYM_MIN_PARALLEL samples or
- * without OpenMP); the outputs and the count are the same for every thread count. */
+/* The same on `threads` threads (OpenMP; one thread without it); the outputs and the count
+ * are the same for every thread count. */
 int64_t rigidsym_rotation_from_euler_rodrigues_threads(
     int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_eta,

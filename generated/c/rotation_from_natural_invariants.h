@@ -109,8 +109,8 @@ int64_t rigidsym_rotation_from_natural_invariants(
     const double *RIGIDSYM_RESTRICT in_phi,
     double *RIGIDSYM_RESTRICT out_Q);
 
-/* The same on `threads` threads (OpenMP; one thread below RIGIDSYM_MIN_PARALLEL samples or
- * without OpenMP); the outputs and the count are the same for every thread count. */
+/* The same on `threads` threads (OpenMP; one thread without it); the outputs and the count
+ * are the same for every thread count. */
 int64_t rigidsym_rotation_from_natural_invariants_threads(
     int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_e,

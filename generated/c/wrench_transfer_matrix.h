@@ -83,8 +83,8 @@ int64_t rigidsym_wrench_transfer_matrix(
     const double *RIGIDSYM_RESTRICT in_p,
     double *RIGIDSYM_RESTRICT out_V);
 
-/* The same on `threads` threads (OpenMP; one thread below RIGIDSYM_MIN_PARALLEL samples or
- * without OpenMP); the outputs and the count are the same for every thread count. */
+/* The same on `threads` threads (OpenMP; one thread without it); the outputs and the count
+ * are the same for every thread count. */
 int64_t rigidsym_wrench_transfer_matrix_threads(
     int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_a,

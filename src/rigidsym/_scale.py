@@ -13,9 +13,13 @@ from collections.abc import Callable
 
 import numpy as np
 
-__all__ = ["set_num_threads", "get_num_threads", "check_threads", "resolve_threads",
+__all__ = ["MIN_PARALLEL", "set_num_threads", "get_num_threads", "check_threads", "resolve_threads",
            "result_dtype", "tolerance", "numpy_f32", "NONFINITE"]
 
+#: batch size below which the C kernels run on one thread whatever is asked: starting and
+#: joining the threads costs more than half the work saves below it (benchmarks/scale.py,
+#: "Threads below and above MIN_PARALLEL")
+MIN_PARALLEL = 4096
 #: sample flag of a non-finite output (as the generated NumPy kernels return it)
 NONFINITE = 2
 _STATE = {"threads": None, "warned": False}

@@ -233,7 +233,8 @@ def batch_function(name: str, backend_name: str | None = None,
     ctype = "float[]" if f32 else "double[]"
 
     def f(*arrays):
-        return cfun(arrays[0].shape[0], t, *[fb(ctype, a) for a in arrays])
+        n = arrays[0].shape[0]
+        return cfun(n, t if n >= _scale.MIN_PARALLEL else 1, *[fb(ctype, a) for a in arrays])
     return f
 
 
