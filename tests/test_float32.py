@@ -141,12 +141,12 @@ def test_float32_threads_and_dask_keep_the_bits(backend):
         pytest.skip("threads: C")
     da = pytest.importorskip("dask.array")
     rng = np.random.default_rng(4)
-    n = 9000
+    n = 2 * K._scale.MIN_PARALLEL + 123
     e = rng.standard_normal((n, 3))
     e = (e / np.linalg.norm(e, axis=1, keepdims=True)).astype(np.float32)
     phi = rng.uniform(-3, 3, n).astype(np.float32)
     ref = K.rotation_from_natural_invariants(e, phi, threads=1)
     np.testing.assert_array_equal(K.rotation_from_natural_invariants(e, phi, threads=3), ref)
-    lazy = K.rotation_from_natural_invariants(da.from_array(e, chunks=1234), phi)
+    lazy = K.rotation_from_natural_invariants(da.from_array(e, chunks=(7001, 3)), phi)
     assert lazy.dtype == np.float32
     np.testing.assert_array_equal(lazy.compute(), ref)

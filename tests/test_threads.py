@@ -93,10 +93,10 @@ def test_no_openmp_falls_back_to_one_thread_with_one_warning(monkeypatch, tmp_pa
 from test_kernels import AVAILABLE, inputs  # noqa: E402  (the kernels' input sampler)
 
 #: above MIN_PARALLEL, so that 2 and 3 threads really run in parallel
-N_THREADED = 2 * 4096 + 37
+N_THREADED = 2 * 16384 + 37
 assert N_THREADED > 2 * K._scale.MIN_PARALLEL
 #: block edges of both batch-loop block sizes (64, 256), the parallel split, the tail
-EDGES = [0, 63, 64, 65, 255, 256, 257, 4095, 4096, 4097, N_THREADED - 2, N_THREADED - 1]
+EDGES = [0, 63, 64, 65, 255, 256, 257, 16383, 16384, 16385, N_THREADED - 2, N_THREADED - 1]
 
 
 def _hard_inputs(name: str) -> list[np.ndarray]:
@@ -171,10 +171,10 @@ def test_some_rows_at_block_edges_are_flagged(c_backend):
 def test_public_api_threads_keyword(c_backend):
     e = np.tile([0.0, 0.6, 0.8], (N_THREADED, 1))
     phi = np.linspace(0.1, 3, N_THREADED)
-    phi[[64, 4096]] = 0.0
+    phi[[64, 16384]] = 0.0
     one = K.N_matrix(e, phi, threads=1, on_singular="nan")
     np.testing.assert_array_equal(K.N_matrix(e, phi, threads=3, on_singular="nan"), one)
-    with pytest.raises(K.SingularConfigurationError, match=r"\[\(64,\), \(4096,\)\]"):
+    with pytest.raises(K.SingularConfigurationError, match=r"\[\(64,\), \(16384,\)\]"):
         K.N_matrix(e, phi, threads=2)
     with pytest.raises(ValueError, match="threads"):
         K.N_matrix(e, phi, threads=0)

@@ -16,10 +16,12 @@ import numpy as np
 __all__ = ["MIN_PARALLEL", "set_num_threads", "get_num_threads", "check_threads", "resolve_threads",
            "result_dtype", "tolerance", "numpy_f32", "NONFINITE"]
 
-#: batch size below which the C kernels run on one thread whatever is asked: starting and
-#: joining the threads costs more than half the work saves below it (benchmarks/scale.py,
-#: "Threads below and above MIN_PARALLEL")
-MIN_PARALLEL = 4096
+#: batch size below which the C kernels run on one thread whatever is asked: waking the
+#: (sleeping, OMP_WAIT_POLICY=PASSIVE) second thread costs tens of microseconds, more than
+#: half the work of a smaller batch saves; measured on the shared 2-core machine, where 2
+#: threads first broke even between 16384 and 65536 samples (benchmarks/RESULTS.md,
+#: "Threads below and above MIN_PARALLEL"; re-measure on a quiet machine)
+MIN_PARALLEL = 16384
 #: sample flag of a non-finite output (as the generated NumPy kernels return it)
 NONFINITE = 2
 _STATE = {"threads": None, "warned": False}

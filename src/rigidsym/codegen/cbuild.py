@@ -180,6 +180,11 @@ def load(force: bool = False):
         if name in sys.modules:
             mod = sys.modules[name]
         else:
+            # idle OpenMP threads sleep instead of spinning (read by libgomp when it loads;
+            # a user's setting wins): between two kernel calls a spinning worker takes the
+            # caller's core, measured 11 ms per 2-thread call on a busy 2-core machine
+            # instead of 0.1 ms (benchmarks/scale.py)
+            os.environ.setdefault("OMP_WAIT_POLICY", "PASSIVE")
             spec = importlib.util.spec_from_file_location(name, path)
             mod = importlib.util.module_from_spec(spec)
             spec.loader.exec_module(mod)
