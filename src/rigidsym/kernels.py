@@ -347,3 +347,5 @@ def swap_blocks(x, matrix: bool = False) -> np.ndarray:
     if a.shape[-1:] != (6,):
         raise ValueError(f"x: expected shape (..., 6), got {a.shape}")
     return a[..., perm]
+
+from ._jacobian import jacobian  # noqa: E402,F401 - re-exported; imports kernels lazily

@@ -301,6 +301,17 @@ def _render_kernel(env, kc: KernelCode) -> dict[str, str]:
     return files
 
 
+def _with_jacobian_kernels(todo: list[Kernel]) -> list[Kernel]:
+    """``todo`` and, for each smooth kernel, its ``<name>_with_jacobians`` (sorted by name).
+
+    The Jacobian kernels are ordinary (non-public) kernels with extra outputs, so they go
+    through the same rewrite, CSE, templates and checks as the values.
+    """
+    from .jacobians import jacobian_kernels
+
+    return sorted(todo + jacobian_kernels(todo), key=lambda k: k.name)
+
+
 def generate(kernels=None) -> GenerationResult:
     """Render every available kernel; returns the files (relative path -> text) and notes."""
     from rigidsym.derivations.kernels_spec import KERNELS, missing_sources
@@ -317,7 +328,7 @@ def generate(kernels=None) -> GenerationResult:
                          + ", ".join(miss))
             continue
         todo.append(k)
-    for kc in _compile_all(todo):
+    for kc in _compile_all(_with_jacobian_kernels(todo)):
         done.append(kc)
         files.update(_render_kernel(env, kc))
     metas = [_meta(kc) for kc in done]
