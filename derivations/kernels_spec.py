@@ -386,7 +386,10 @@ for _seq in EULER_SEQUENCES:
             args=(Arg("angles", (3,), "any", "Euler angles [rad]"), OMEGA),
             outputs=(Out("eta_dot", (3,), "[rad/s]"),),
             build=lambda angles, omega, _s=_seq, _f=_frame: _euler_rates(angles, omega, _s, _f),
-            singular="det W = 0 (gimbal lock)", singular_arg="angles"))
+            singular="det W = 0 (gimbal lock)", singular_arg="angles",
+            # no generated Jacobian: its build (trigsimp of adj W and det W) dominates the
+            # generation time; d eta_dot = W^-1 (d omega - dW eta_dot) from W's Jacobian
+            jacobian=False))
 
 
 def _isa_point_pitch(omega, a, a_dot):

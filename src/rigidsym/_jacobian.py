@@ -18,12 +18,12 @@ import inspect
 import textwrap
 from collections.abc import Callable
 
-__all__ = ["jacobian", "euler_rate_matrix_jacobian", "euler_angle_rates_jacobian"]
+__all__ = ["jacobian", "euler_rate_matrix_jacobian"]
 
 #: suffix of the generated kernels with Jacobians (rigidsym.codegen.jacobians.SUFFIX)
 _SUFFIX = "_with_jacobians"
 _FN = "_jacobian"
-_EULER = ("euler_rate_matrix", "euler_angle_rates")
+_EULER = ("euler_rate_matrix",)
 
 _TANGENT = {
     "unit": "{a} is a unit vector: d/d{a} is the ambient derivative (all components "
@@ -55,8 +55,7 @@ def jacobian(name: str) -> Callable:
 
     Args:
         name: a public kernel of :mod:`rigidsym.kernels` whose outputs are one smooth
-            formula (every kernel without per-sample branches), or ``"euler_rate_matrix"``
-            / ``"euler_angle_rates"``.
+            formula (every kernel without per-sample branches), or ``"euler_rate_matrix"``.
 
     Returns:
         A module-level (picklable) function with the kernel's arguments (positional or
@@ -189,26 +188,3 @@ def euler_rate_matrix_jacobian(angles, sequence: str, frame: str = "fixed", *,
     K = _kernels()
     base = K._euler_name("euler_rate_matrix", sequence, frame)
     return _evaluate(base + _SUFFIX, (angles,), check, on_singular)
-
-
-def euler_angle_rates_jacobian(angles, omega, sequence: str, frame: str = "fixed", *,
-                               check: bool = True, on_singular: str = "raise"):
-    """Euler-angle rates ``eta_dot = W^-1 omega`` (Exercise 3.10) and their derivatives.
-
-    Args:
-        angles: array-like (..., 3) [rad]; omega: array-like (..., 3) [rad/s].
-        sequence: one of the twelve intrinsic sequences; frame: "fixed" or "body".
-        check, on_singular: see :mod:`rigidsym.kernels`.
-
-    Returns:
-        (eta_dot, jac): eta_dot (..., 3); jac["eta_dot"]["angles"] and
-        jac["eta_dot"]["omega"], each (..., 3, 3).
-
-    Raises:
-        SingularConfigurationError: at gimbal lock (det W = 0), which the derivatives share,
-            unless on_singular="nan".
-    """
-    K = _kernels()
-    base = K._euler_name("euler_angle_rates", sequence, frame)
-    return _evaluate(base + _SUFFIX, (angles, omega), check, on_singular)
-
