@@ -113,11 +113,12 @@ def test_swap_blocks():
 
 
 def test_fallback_warns_once(monkeypatch):
-    import rigidsym.kernels as mod
+    import rigidsym.kernels._core as core
 
     def boom(*a, **k):
         raise OSError("no compiler")
-    monkeypatch.setattr(mod, "_STATE", {"backend": None, "warned": False, "lib": None})
+    monkeypatch.setattr(core, "_STATE", {"backend": None, "warned": False})
+    monkeypatch.setattr(K._builtin_space(), "_clib", None)
     monkeypatch.setattr("rigidsym.codegen.cbuild.load", boom)
     with pytest.warns(RuntimeWarning, match="C backend unavailable"):
         assert K.use_backend("c") == "numpy"
@@ -136,9 +137,6 @@ _ARGS = {"kinetic_energy": dict(I_C=np.diag([1.0, 2.0, 3.0]), m=2.0, omega=[1.0,
          "N_matrix_dot": dict(e=E, phi=0.3, omega=[1.0, 2.0, -1.0])}
 
 
-def _positional(name, kw):
-    return [kw[a["name"]] for a in K._meta()[name]["args"]]
-
 
 @pytest.mark.parametrize("name,arg,scale", OVERFLOW)
 def test_overflow_is_reported(name, arg, scale):
@@ -149,14 +147,14 @@ def test_overflow_is_reported(name, arg, scale):
     kw_big = dict(kw, **{arg: big})
     assert all(np.isfinite(v).all() for v in kw_big.values())
     with pytest.raises(K.NonFiniteResultError, match="non-finite output \\(overflow\\)") as info:
-        getattr(K, name)(*_positional(name, kw_big))
+        getattr(K, name)(**kw_big)
     assert isinstance(info.value, K.SingularConfigurationError)
     assert info.value.indices == [(1,), (3,)] and info.value.argument == arg
     assert f"'{arg}'" in str(info.value)
-    res = getattr(K, name)(*_positional(name, kw_big), on_singular="nan")
+    res = getattr(K, name)(**kw_big, on_singular="nan")
     res = np.asarray(res).reshape(4, -1)
     assert np.isnan(res[[1, 3]]).all() and np.isfinite(res[[0, 2]]).all()
-    one = getattr(K, name)(*_positional(name, kw))
+    one = getattr(K, name)(**kw)
     np.testing.assert_array_equal(res[0], np.asarray(one).ravel())
 
 
