@@ -149,13 +149,16 @@ def batch_shape(arrs: list[np.ndarray], specs: list[dict]) -> tuple[int, ...]:
         return np.broadcast_shapes(*shapes)
     except ValueError:
         acc: tuple = ()
-        for b, s in zip(shapes, specs, strict=True):
+        for i, b in enumerate(shapes):
             try:
                 acc = np.broadcast_shapes(acc, b)
             except ValueError:
-                before = ", ".join(t["name"] for t in specs[:specs.index(s)])
-                raise ValueError(f"{s['name']}: batch shape {b} does not broadcast with the "
-                                 f"batch shape {acc} of {before}") from None
+                # name every argument with a batch so far: which one is wrong is the caller's
+                names = [s["name"] for s, c in zip(specs[:i + 1], shapes, strict=False) if c]
+                raise ValueError(f"{', '.join(names)}: batch shapes do not broadcast ("
+                                 + ", ".join(f"{s['name']} {c}" for s, c in
+                                             zip(specs[:i + 1], shapes, strict=False) if c)
+                                 + ")") from None
         raise
 
 
