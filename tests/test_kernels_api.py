@@ -180,3 +180,28 @@ def test_c_batch_counts_overflow_rows_across_blocks(name, arg, scale, backend):
     flagged = np.flatnonzero(np.isnan(np.concatenate([o.reshape(n, -1) for o in outs], 1))
                              .any(axis=1))
     assert count == len(bad) and flagged.tolist() == bad
+
+
+def test_load_other_generated_directory(tmp_path, backend):
+    """load(DIR) builds the same checked namespace from any generated directory (here two
+    kernels written by the generator into a temporary folder)."""
+    from rigidsym.codegen.generator import generate, write
+    from rigidsym.derivations.kernels_spec import KERNELS
+
+    picked = [k for k in KERNELS if k.name in ("plucker_from_points", "N_matrix")]
+    write(generate(picked), tmp_path)
+    ns = K.load(tmp_path)
+    assert K.load(tmp_path) is ns and ns is not K.load()
+    assert ns.KERNEL_NAMES == ("N_matrix", "plucker_from_points")
+    p1, p2 = [[1.0, 2.0, 3.0], [0.0, 0.0, 0.0]], [-1.0, 0.5, 2.0]
+    np.testing.assert_array_equal(ns.plucker_from_points(p2=p2, p1=p1),
+                                  K.plucker_from_points(p1, p2))
+    with pytest.raises(K.SingularConfigurationError, match="'phi'"):
+        ns.N_matrix(e=E, phi=[0.3, 0.0])
+    assert np.isnan(ns.N_matrix(e=E, phi=[0.3, 0.0], on_singular="nan")[1]).all()
+    with pytest.raises(TypeError, match="^p1:"):
+        ns.plucker_from_points(p1="abc", p2=p2)
+    if backend == "c":
+        assert ns._SPACE._clib is not None      # its own C, built through cffi
+    with pytest.raises(FileNotFoundError, match="directory"):
+        K.load(tmp_path / "nowhere")
