@@ -3,8 +3,8 @@
 For a kernel ``f`` with a generated ``f_with_jacobians`` (see
 :mod:`rigidsym.codegen.jacobians`), ``jacobian("f")`` is the module-level function
 ``rigidsym._jacobian.f_jacobian``: same arguments as ``f`` (positional or keyword, plus
-``check`` and ``on_singular``; no ``out``), returning ``(values, jac)`` where ``values`` is
-what ``f`` returns and ``jac[output][input]`` has shape ``batch + output_shape +
+``check``, ``on_singular`` and ``threads``; no ``out``), returning ``(values, jac)`` where
+``values`` is what ``f`` returns and ``jac[output][input]`` has shape ``batch + output_shape +
 input_shape``, entry ``[..., i, j]`` = ``d output[i] / d input[j]`` (JAX convention), one
 Jacobian per sample of the broadcast batch (never summed over a broadcast input).
 
@@ -59,9 +59,10 @@ def jacobian(name: str) -> Callable:
 
     Returns:
         A module-level (picklable) function with the kernel's arguments (positional or
-        keyword) and ``check``, ``on_singular``, returning ``(values, jac)``: ``values`` as
-        the kernel returns them, ``jac[output][input]`` of shape ``batch + output_shape +
-        input_shape`` (``d output[i] / d input[j]`` at ``[..., i, j]``), per sample.
+        keyword) and ``check``, ``on_singular``, ``threads``, returning ``(values, jac)``:
+        ``values`` as the kernel returns them, ``jac[output][input]`` of shape
+        ``batch + output_shape + input_shape`` (``d output[i] / d input[j]`` at
+        ``[..., i, j]``), per sample.
 
     Raises:
         ValueError: ``name`` has no generated Jacobian (the message lists those that do).
@@ -88,12 +89,13 @@ def _split(res: tuple, args: list[dict], outs: list[dict]):
     return values, jac
 
 
-def _evaluate(jname: str, args: tuple, check: bool, on_singular: str):
-    """Call the generated kernel ``jname`` through the kernels' checked path; split it."""
+def _evaluate(jname: str, args: tuple, check: bool, on_singular: str, threads: int | None):
+    """Call the generated kernel ``jname`` through the kernels' checked path (validation,
+    broadcasting, singular and non-finite rows); split its outputs into values and jac."""
     K = _kernels()
     meta = K._meta()[jname]
     n_out = len(meta["outputs"]) // (1 + len(meta["args"]))
-    res = K._call(jname, tuple(args), check=check, on_singular=on_singular)
+    res = K._call(jname, tuple(args), check=check, on_singular=on_singular, threads=threads)
     return _split(res, meta["args"], meta["outputs"][:n_out])
 
 
@@ -108,7 +110,7 @@ def _doc(name: str, meta: dict) -> str:
              "sympy of the declared formula, before the half-angle rewrite.", "", "Args:"]
     for a in meta["args"]:
         lines.append(f"    {a['name']}: array-like {shp(a['shape'])}; {a['doc']}")
-    lines += ["    check, on_singular: see :mod:`rigidsym.kernels` (no ``out``).", "",
+    lines += ["    check, on_singular, threads: see :mod:`rigidsym.kernels` (no ``out``).", "",
               "Returns:", "    (values, jac): values as the kernel returns them ("
               + ", ".join(f"{o['name']} {shp(o['shape'])}" for o in outs) + "); "
               "jac[output][input] of shape batch + output_shape + input_shape:"]
@@ -137,14 +139,15 @@ def _make(name: str) -> Callable:
     sig = inspect.Signature(
         [P(a["name"], P.POSITIONAL_OR_KEYWORD) for a in meta["args"]]
         + [P("check", P.KEYWORD_ONLY, default=True),
-           P("on_singular", P.KEYWORD_ONLY, default="raise")])
+           P("on_singular", P.KEYWORD_ONLY, default="raise"),
+           P("threads", P.KEYWORD_ONLY, default=None)])
 
     def fn(*args, **kwargs):
         ba = sig.bind(*args, **kwargs)
         ba.apply_defaults()
         kw = dict(ba.arguments)
-        check, on_singular = kw.pop("check"), kw.pop("on_singular")
-        return _evaluate(jname, tuple(kw.values()), check, on_singular)
+        check, on_singular, threads = kw.pop("check"), kw.pop("on_singular"), kw.pop("threads")
+        return _evaluate(jname, tuple(kw.values()), check, on_singular, threads)
 
     fn.__name__ = fn.__qualname__ = name + _FN
     fn.__module__ = __name__
@@ -164,14 +167,15 @@ def __getattr__(attr: str):
 
 
 def euler_rate_matrix_jacobian(angles, sequence: str, frame: str = "fixed", *,
-                               check: bool = True, on_singular: str = "raise"):
+                               check: bool = True, on_singular: str = "raise",
+                               threads: int | None = None):
     """Euler-angle rate matrix ``W`` (``omega = W eta_dot``, Exercise 3.10) and dW/d angles.
 
     Args:
         angles: array-like (..., 3), the Euler angles [rad] of ``sequence``.
         sequence: one of the twelve intrinsic sequences ("ZXZ", "ZYX", ...).
         frame: "fixed" (omega in the fixed frame) or "body".
-        check, on_singular: see :mod:`rigidsym.kernels`.
+        check, on_singular, threads: see :mod:`rigidsym.kernels`.
 
     Returns:
         (W, jac): W (..., 3, 3); jac["W"]["angles"] (..., 3, 3, 3), entry [..., i, j, k] =
@@ -187,4 +191,4 @@ def euler_rate_matrix_jacobian(angles, sequence: str, frame: str = "fixed", *,
     """
     K = _kernels()
     base = K._euler_name("euler_rate_matrix", sequence, frame)
-    return _evaluate(base + _SUFFIX, (angles,), check, on_singular)
+    return _evaluate(base + _SUFFIX, (angles,), check, on_singular, threads)
