@@ -313,3 +313,12 @@ def test_derivative_names_follow_symforce():
     assert [o["name"] for o in meta["outputs"]] == ["T", "T_D_I_C", "T_D_m", "T_D_omega",
                                                    "T_D_c_dot"]
     assert meta["public"] is False
+
+
+def test_docstring_examples_run():
+    import doctest
+
+    import rigidsym._jacobian as mod
+
+    res = doctest.testmod(mod, optionflags=doctest.NORMALIZE_WHITESPACE)
+    assert res.attempted >= 2 and res.failed == 0
