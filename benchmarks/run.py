@@ -363,7 +363,7 @@ def _other_sections(path: Path) -> str:
     import re
 
     old = path.read_text(encoding="utf-8") if path.exists() else ""
-    found = re.findall(r"\n?(<!-- (\w+) -->.*?<!-- /\2 -->)", old, flags=re.S)
+    found = re.findall(r"\n?(<!-- ([\w-]+) -->.*?<!-- /\2 -->)", old, flags=re.S)
     return "".join("\n" + block + "\n" for block, _ in found)
 
 
