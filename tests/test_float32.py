@@ -15,6 +15,7 @@ import numpy as np
 import pytest
 from test_kernels import ADV_PHI, AVAILABLE, EULER, PUBLIC, inputs, ref_eval, rel_err
 
+from rigidsym import _scale
 from rigidsym import kernels as K
 
 ULP32 = float(np.finfo(np.float32).eps)         # 2**-23
@@ -141,7 +142,7 @@ def test_float32_threads_and_dask_keep_the_bits(backend):
         pytest.skip("threads: C")
     da = pytest.importorskip("dask.array")
     rng = np.random.default_rng(4)
-    n = 2 * K._scale.MIN_PARALLEL + 123
+    n = 2 * _scale.MIN_PARALLEL + 123
     e = rng.standard_normal((n, 3))
     e = (e / np.linalg.norm(e, axis=1, keepdims=True)).astype(np.float32)
     phi = rng.uniform(-3, 3, n).astype(np.float32)

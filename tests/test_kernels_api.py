@@ -113,11 +113,12 @@ def test_swap_blocks():
 
 
 def test_fallback_warns_once(monkeypatch):
-    import rigidsym.kernels as mod
+    import rigidsym.kernels._core as core
 
     def boom(*a, **k):
         raise OSError("no compiler")
-    monkeypatch.setattr(mod, "_STATE", {"backend": None, "warned": False, "lib": None})
+    monkeypatch.setattr(core, "_STATE", {"backend": None, "warned": False})
+    monkeypatch.setattr(K._builtin_space(), "_clib", None)
     monkeypatch.setattr("rigidsym.codegen.cbuild.load", boom)
     with pytest.warns(RuntimeWarning, match="C backend unavailable"):
         assert K.use_backend("c") == "numpy"
@@ -136,9 +137,6 @@ _ARGS = {"kinetic_energy": dict(I_C=np.diag([1.0, 2.0, 3.0]), m=2.0, omega=[1.0,
          "N_matrix_dot": dict(e=E, phi=0.3, omega=[1.0, 2.0, -1.0])}
 
 
-def _positional(name, kw):
-    return [kw[a["name"]] for a in K._meta()[name]["args"]]
-
 
 @pytest.mark.parametrize("name,arg,scale", OVERFLOW)
 def test_overflow_is_reported(name, arg, scale):
@@ -149,14 +147,14 @@ def test_overflow_is_reported(name, arg, scale):
     kw_big = dict(kw, **{arg: big})
     assert all(np.isfinite(v).all() for v in kw_big.values())
     with pytest.raises(K.NonFiniteResultError, match="non-finite output \\(overflow\\)") as info:
-        getattr(K, name)(*_positional(name, kw_big))
+        getattr(K, name)(**kw_big)
     assert isinstance(info.value, K.SingularConfigurationError)
     assert info.value.indices == [(1,), (3,)] and info.value.argument == arg
     assert f"'{arg}'" in str(info.value)
-    res = getattr(K, name)(*_positional(name, kw_big), on_singular="nan")
+    res = getattr(K, name)(**kw_big, on_singular="nan")
     res = np.asarray(res).reshape(4, -1)
     assert np.isnan(res[[1, 3]]).all() and np.isfinite(res[[0, 2]]).all()
-    one = getattr(K, name)(*_positional(name, kw))
+    one = getattr(K, name)(**kw)
     np.testing.assert_array_equal(res[0], np.asarray(one).ravel())
 
 
@@ -182,3 +180,29 @@ def test_c_batch_counts_overflow_rows_across_blocks(name, arg, scale, backend):
     flagged = np.flatnonzero(np.isnan(np.concatenate([o.reshape(n, -1) for o in outs], 1))
                              .any(axis=1))
     assert count == len(bad) and flagged.tolist() == bad
+
+
+def test_load_other_generated_directory(tmp_path, backend):
+    """load(DIR) builds the same checked namespace from any generated directory (here two
+    kernels written by the generator into a temporary folder)."""
+    from rigidsym.derivations.kernels_spec import KERNELS
+
+    from rigidsym.codegen.generator import generate, write
+
+    picked = [k for k in KERNELS if k.name in ("plucker_from_points", "N_matrix")]
+    write(generate(picked), tmp_path)
+    ns = K.load(tmp_path)
+    assert K.load(tmp_path) is ns and ns is not K.load()
+    assert ns.KERNEL_NAMES == ("N_matrix", "plucker_from_points")
+    p1, p2 = [[1.0, 2.0, 3.0], [0.0, 0.0, 0.0]], [-1.0, 0.5, 2.0]
+    np.testing.assert_array_equal(ns.plucker_from_points(p2=p2, p1=p1),
+                                  K.plucker_from_points(p1, p2))
+    with pytest.raises(K.SingularConfigurationError, match="'phi'"):
+        ns.N_matrix(e=E, phi=[0.3, 0.0])
+    assert np.isnan(ns.N_matrix(e=E, phi=[0.3, 0.0], on_singular="nan")[1]).all()
+    with pytest.raises(TypeError, match="^p1:"):
+        ns.plucker_from_points(p1="abc", p2=p2)
+    if backend == "c":
+        assert ns._SPACE._clib is not None      # its own C, built through cffi
+    with pytest.raises(FileNotFoundError, match="directory"):
+        K.load(tmp_path / "nowhere")

@@ -13,6 +13,7 @@ import numpy as np
 import pytest
 
 import rigidsym.kernels as K
+from rigidsym import _scale
 from rigidsym.codegen import cbuild
 
 HAVE_CC = bool(shutil.which("gcc") or shutil.which("cc"))
@@ -22,12 +23,14 @@ def test_lazy_build_runs_once_under_a_thread_pool(monkeypatch):
     real = cbuild.load
     calls = []
 
-    def slow_load(force=False):
+    def slow_load(force=False, gdir=None):
         calls.append(threading.get_ident())
         time.sleep(0.2)            # wide window: without the lock every thread would build
-        return real(force)
+        return real(force, gdir)
 
-    monkeypatch.setattr(K, "_STATE", {"backend": None, "warned": False, "lib": None})
+    space = K._builtin_space()
+    monkeypatch.setattr(space, "_clib", None)
+    monkeypatch.setitem(K._STATE, "backend", None)
     monkeypatch.setattr(cbuild, "load", slow_load)
     phi = np.linspace(0.1, 3.0, 1000)
     with ThreadPoolExecutor(8) as pool:
@@ -94,7 +97,7 @@ from test_kernels import AVAILABLE, inputs  # noqa: E402  (the kernels' input sa
 
 #: above MIN_PARALLEL, so that 2 and 3 threads really run in parallel
 N_THREADED = 2 * 16384 + 37
-assert N_THREADED > 2 * K._scale.MIN_PARALLEL
+assert N_THREADED > 2 * _scale.MIN_PARALLEL
 #: block edges of both batch-loop block sizes (64, 256), the parallel split, the tail
 EDGES = [0, 63, 64, 65, 255, 256, 257, 16383, 16384, 16385, N_THREADED - 2, N_THREADED - 1]
 
@@ -199,8 +202,6 @@ def test_thread_count_setting_order(monkeypatch):
 
 
 def test_numpy_backend_warns_once_and_runs_one_thread(monkeypatch):
-    from rigidsym import _scale
-
     monkeypatch.setitem(_scale._STATE, "warned", False)
     K.use_backend("numpy")
     with pytest.warns(RuntimeWarning, match="one thread"):

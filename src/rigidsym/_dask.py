@@ -19,6 +19,7 @@ from __future__ import annotations
 import math
 import re
 import sys
+from functools import cache
 
 import numpy as np
 
@@ -87,13 +88,26 @@ def _expand(a, spec: dict, j: int, m: int, batch: tuple, chunks: tuple):
     return a.reshape(a.shape[:nb] + tail)
 
 
-def _block(*blocks, kernel_name, specs, outs, nb, check, on_singular, threads, backend_name,
-           out_dtype, block_info=None):
+@cache
+def _space(directory: str):
+    """The kernel space of a generated directory, once per process (a worker's too)."""
+    from rigidsym import kernels
+    from rigidsym.kernels._core import KernelSpace
+
+    builtin = kernels._builtin_space()
+    if str(builtin.directory) == directory:
+        return builtin
+    return KernelSpace.from_directory(directory)
+
+
+def _block(*blocks, kernel_name, directory, specs, outs, nb, check, on_singular, threads,
+           backend_name, out_dtype, block_info=None):
     """Evaluate one block with the in-memory kernel; singular indices made global."""
     from rigidsym import kernels
 
     if kernels.backend() != backend_name:
         kernels.use_backend(backend_name)
+    space = _space(directory)
     args = []
     for b, s in zip(blocks, specs, strict=True):
         args.append(b.reshape(b.shape[:nb] + tuple(s["shape"])))
@@ -101,7 +115,7 @@ def _block(*blocks, kernel_name, specs, outs, nb, check, on_singular, threads, b
     if threads is not None:
         kw["threads"] = threads
     try:
-        res = kernels._call(kernel_name, tuple(args), **kw)
+        res = space.call(kernel_name, tuple(args), **kw)
     except kernels.SingularConfigurationError as exc:
         start = [lo for lo, _ in block_info[None]["array-location"][:nb]]
         where = [tuple(int(i) + s for i, s in zip(idx, start, strict=True))
@@ -116,11 +130,12 @@ def _block(*blocks, kernel_name, specs, outs, nb, check, on_singular, threads, b
         np.concatenate(flat, axis=-1).astype(out_dtype, copy=False)
 
 
-def apply(name: str, args: tuple, *, out=None, check: bool = True,
+def apply(space, name: str, args: tuple, *, out=None, check: bool = True,
           on_singular: str | None = None, threads: int | None = None):
     """Lazy evaluation of kernel ``name`` on Dask (and NumPy) arguments.
 
     Args:
+        space: the :class:`~rigidsym.kernels._core.KernelSpace` the kernel belongs to.
         name: the kernel's name in ``kernels.json``.
         args: the kernel's array arguments, at least one a ``dask.array.Array``; NumPy
             arrays and array-likes are wrapped.
@@ -144,7 +159,7 @@ def apply(name: str, args: tuple, *, out=None, check: bool = True,
 
     from rigidsym import _scale, kernels
 
-    meta = kernels._meta()[name]
+    meta = space.meta[name]
     specs = meta["args"]
     if out is not None:
         raise TypeError("out: not supported with Dask inputs (the result is lazy); "
@@ -176,7 +191,8 @@ def apply(name: str, args: tuple, *, out=None, check: bool = True,
         _block, *expanded, token=f"rigidsym-{name}", dtype=dtype,
         meta=np.empty((0,) * (nb + 1), dtype=dtype),
         chunks=chunks + ((total,),), drop_axis=list(range(nb, nb + m - 1)),
-        kernel_name=name, specs=specs, outs=outs, nb=nb, check=check,
+        kernel_name=name, directory=str(space.directory), specs=specs, outs=outs, nb=nb,
+        check=check,
         on_singular=on_singular, threads=threads, backend_name=kernels.backend(), out_dtype=dtype)
     results = []
     off = 0
