@@ -20,6 +20,7 @@ import sympy as sp
 
 import rigidsym
 
+from .api_spec import render_api
 from .optimise import Program, compile_program, math_hash
 from .printers import KernelCPrinter, KernelNumPyPrinter
 from .spec import Kernel, flat_symbols, input_symbols
@@ -301,6 +302,17 @@ def _render_kernel(env, kc: KernelCode) -> dict[str, str]:
     return files
 
 
+def _with_jacobian_kernels(todo: list[Kernel]) -> list[Kernel]:
+    """``todo`` and, for each smooth kernel, its ``<name>_with_jacobians`` (sorted by name).
+
+    The Jacobian kernels are ordinary (non-public) kernels with extra outputs, so they go
+    through the same rewrite, CSE, templates and checks as the values.
+    """
+    from .jacobians import jacobian_kernels
+
+    return sorted(todo + jacobian_kernels(todo), key=lambda k: k.name)
+
+
 def generate(kernels=None) -> GenerationResult:
     """Render every available kernel; returns the files (relative path -> text) and notes."""
     from rigidsym.derivations.kernels_spec import KERNELS, missing_sources
@@ -317,13 +329,14 @@ def generate(kernels=None) -> GenerationResult:
                          + ", ".join(miss))
             continue
         todo.append(k)
-    for kc in _compile_all(todo):
+    for kc in _compile_all(_with_jacobian_kernels(todo)):
         done.append(kc)
         files.update(_render_kernel(env, kc))
     metas = [_meta(kc) for kc in done]
     ver = {"sympy": sp.__version__, "rigidsym": rigidsym.__version__}
     files["kernels.json"] = json.dumps({"generator": ver, "kernels": metas,
                                         "skipped": notes}, indent=1, sort_keys=True) + "\n"
+    files["api.py"] = render_api(env, metas, ver)
     for t, path in (("package_init.py.j2", "__init__.py"),
                     ("numpy_index.py.j2", "numpy/__init__.py"),
                     ("c_common.h.j2", "c/rigidsym_common.h"),
