@@ -16,7 +16,7 @@ from __future__ import annotations
 import random
 import time
 import zlib
-from dataclasses import asdict, dataclass
+from dataclasses import asdict, dataclass, field
 from fractions import Fraction
 
 import mpmath
@@ -24,6 +24,7 @@ import sympy as sp
 from sympy.core.function import AppliedUndef
 from sympy.matrices.expressions.matexpr import MatrixElement
 
+from .records import member_record, model_words
 from .registry import REGISTRY, Equation, Rel, Statement
 from .zero import Unsupported, decide_zero, evaluate, make_plan
 
@@ -60,9 +61,15 @@ class Result:
     detail: str = ""
     singular: str | None = None
     failing_member: str | None = None
+    #: one record per member (printed, claim, corrected), see
+    #: :func:`rigidsym.records.member_record`
+    members: list[dict] = field(default_factory=list)
+    #: the model's atoms and their constraints, in words ("e: unit vector, ...")
+    model: list[str] = field(default_factory=list)
 
     def as_json(self) -> dict:
-        """The row as a plain dict (schema 1)."""
+        """Every field as a plain dict (the full record; the lean schema-2 row is
+        :func:`rigidsym.report.result_record`)."""
         return asdict(self)
 
 
@@ -312,7 +319,10 @@ def _counterexample(lhs, rhs, witness, seed) -> dict:
     for a, (tau, M) in plan.angles.items():
         point[sp.sstr(a)] = f"{2 * M}*atan({pt[tau]})"
     lv, rv = _exact_value(lhs, plan, pt), _exact_value(rhs, plan, pt)
-    return {"point": point, "lhs": sp.sstr(lv), "rhs": sp.sstr(rv)}
+    ce = {"point": point, "lhs": sp.sstr(lv), "rhs": sp.sstr(rv)}
+    if shape_of(lhs) == shape_of(rhs):
+        ce["residual"] = sp.sstr(lv - rv)
+    return ce
 
 
 # --------------------------------------------------------------------------- decide
@@ -401,6 +411,7 @@ def _check(eq: Equation, t0: float) -> Result:
     st = eq.build()
     _EXPLICIT_CACHE.clear()
     verdict, method, detail = "undecided", "undecided", ""
+    members: list[dict] = []
     ce = None
     failing = None
     backing: list[Rel] = []
@@ -417,6 +428,8 @@ def _check(eq: Equation, t0: float) -> Result:
                 ok = False
                 detail = f"lhs {_fmt(r.lhs)} is not a symbol this definition introduces"
         outs = [decide_rel(r, st.model, seed) for r in st.claims]
+        members = [member_record(r, "printed", None) for r in st.printed]
+        members += [member_record(r, "claim", o) for r, o in zip(st.claims, outs, strict=True)]
         if ok and all(o.zero for o in outs):
             verdict, method = "definition", "definition"
             detail = "introduces " + ", ".join(st.defines)
@@ -426,6 +439,8 @@ def _check(eq: Equation, t0: float) -> Result:
                                        "a claim attached to the definition was not verified")
     else:
         outs = [decide_rel(r, st.model, seed + i) for i, r in enumerate(st.printed + st.claims)]
+        members = [member_record(r, "printed" if i < len(st.printed) else "claim", o)
+                   for i, (r, o) in enumerate(zip(st.printed + st.claims, outs, strict=True))]
         zero, method, detail = _combine(outs)
         if zero:
             verdict = "verified"
@@ -434,11 +449,15 @@ def _check(eq: Equation, t0: float) -> Result:
             verdict = "does-not-hold"
             bad = next(o for o in outs if o.zero is False)
             ce, failing = bad.counterexample, bad.label or None
+            if ce is not None:
+                ce["member"] = bad.label
             if not st.corrected:
                 verdict, detail = "undecided", "does not hold, but no corrected form is declared"
             else:
                 couts = [decide_rel(r, st.model, seed + 100 + i)
                          for i, r in enumerate(st.corrected)]
+                members += [member_record(r, "corrected", o)
+                            for r, o in zip(st.corrected, couts, strict=True)]
                 cz, cm, cd = _combine(couts)
                 if not cz:
                     verdict = "undecided"
@@ -481,4 +500,6 @@ def _check(eq: Equation, t0: float) -> Result:
         cause=eq.cause if verdict == "does-not-hold" else None, numeric=numeric,
         seconds=round(time.perf_counter() - t0, 3), section=eq.section,
         evidence=eq.evidence if verdict == "does-not-hold" else None, detail=detail,
-        singular=eq.singular, failing_member=failing)
+        singular=eq.singular, failing_member=failing, members=members,
+        model=model_words([explicit(r.lhs, st.model) for r in st.printed]
+                          + [explicit(r.rhs, st.model) for r in st.printed]))
