@@ -15,15 +15,15 @@ from rigidsym.registry import REGISTRY, Rel, load_all
 load_all()
 
 
-def test_verify_exits_0_and_writes_schema_1(tmp_path, capsys):
+def test_verify_exits_0_and_writes_schema_2(tmp_path, capsys):
     out = tmp_path / "v.json"
     assert main(["verify", "3.1", "thm3.2.1", "--json", str(out), "--quiet", "--jobs", "1"]) == 0
     doc = json.loads(out.read_text())
-    assert doc["schema"] == 1
+    assert doc["schema"] == 2
     row = doc["equations"][0]
     for key in ("id", "title", "kind", "verdict", "expected", "method", "printed_latex",
-                "printed", "derived", "corrected", "counterexample", "cause", "numeric",
-                "seconds"):
+                "members", "model", "failing_member", "counterexample", "cause",
+                "cause_class", "numeric", "seconds"):
         assert key in row
     assert set(row["numeric"]) >= {"points", "digits", "max_residual", "seed"}
     assert sum(doc["summary"].values()) == 2

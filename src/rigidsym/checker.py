@@ -16,7 +16,7 @@ from __future__ import annotations
 import random
 import time
 import zlib
-from dataclasses import asdict, dataclass
+from dataclasses import asdict, dataclass, field
 from fractions import Fraction
 
 import mpmath
@@ -24,7 +24,9 @@ import sympy as sp
 from sympy.core.function import AppliedUndef
 from sympy.matrices.expressions.matexpr import MatrixElement
 
+from . import notation
 from .registry import REGISTRY, Equation, Rel, Statement
+from .symbols import TIME, constraint_of
 from .zero import Unsupported, decide_zero, evaluate, make_plan
 
 __all__ = ["Result", "check", "explicit", "shape_of", "NUMERIC_DIGITS", "NUMERIC_POINTS"]
@@ -60,10 +62,81 @@ class Result:
     detail: str = ""
     singular: str | None = None
     failing_member: str | None = None
+    #: one record per member (printed, claim, corrected), see :func:`member_record`
+    members: list[dict] = field(default_factory=list)
+    #: the model's atoms and their constraints, in words ("e: unit vector, ...")
+    model: list[str] = field(default_factory=list)
 
     def as_json(self) -> dict:
-        """The row as a plain dict (schema 1)."""
+        """Every field as a plain dict (the full record; the lean schema-2 row is
+        :func:`rigidsym.report.result_record`)."""
         return asdict(self)
+
+
+#: member texts longer than this are not kept (an explicit matrix, not book notation)
+MEMBER_TEXT_LIMIT = 1200
+
+
+def member_record(rel: Rel, role: str, out: _RelOutcome | None) -> dict:
+    """A member of a statement as plain data.
+
+    Args:
+        rel: the relation.
+        role: ``printed``, ``claim`` or ``corrected``.
+        out: its decision, or ``None`` for a member that a definition introduces.
+
+    Returns:
+        ``{"role", "label", "status", "method", "detail", "text", "latex"}``: status is
+        ``holds``, ``fails``, ``undecided`` or ``defines``; ``text`` (book notation,
+        Unicode) and ``latex`` are ``None`` when longer than :data:`MEMBER_TEXT_LIMIT`.
+    """
+    if out is None:
+        status, method, detail = "defines", "definition", ""
+    else:
+        status = {True: "holds", False: "fails", None: "undecided"}[out.zero]
+        method, detail = out.method, out.detail
+    text = f"{notation.text(rel.lhs)} = {notation.text(rel.rhs)}"
+    tex = f"{notation.latex(rel.lhs)} = {notation.latex(rel.rhs)}"
+    return {"role": role, "label": rel.label, "status": status, "method": method,
+            "detail": detail,
+            "text": text if len(text) <= MEMBER_TEXT_LIMIT else None,
+            "latex": tex if len(tex) <= MEMBER_TEXT_LIMIT else None}
+
+
+_KIND_WORDS = {"unit": "unit vector (stereographic projection)",
+               "angle": "angle (cos, sin rational in a tangent of a fraction of it)",
+               "rotation": "rotation matrix (rational quaternion)"}
+
+
+def model_words(exprs) -> list[str]:
+    """The atoms of explicit expressions grouped by constraint, in words.
+
+    Returns:
+        Sorted lines such as ``"e: unit vector (stereographic projection)"``, then one
+        ``"free: a, ω"`` line, then ``"along a motion: ..."`` when atoms depend on time.
+    """
+    groups, free, timed_any = {}, set(), False
+    for x in exprs:
+        for e in _entries(x):
+            e = sp.sympify(e)
+            for a in e.atoms(sp.Symbol, AppliedUndef):
+                if a == TIME:
+                    continue
+                timed = isinstance(a, AppliedUndef)
+                timed_any |= timed
+                name = a.func.__name__ if timed else a.name
+                c = constraint_of(name, timed)
+                if c is not None:
+                    groups[c.name] = c.kind
+                else:
+                    free.add(notation.book_group(name))
+    out = sorted(f"{notation.book_text(n)}: {_KIND_WORDS.get(k, k)}" for n, k in groups.items())
+    if free:
+        out.append("free: " + ", ".join(sorted(free)))
+    if timed_any:
+        out.append("along a motion: atoms are functions of t; their time derivatives are "
+                   "independent jets, so the constraints hold along every trajectory")
+    return out
 
 
 # --------------------------------------------------------------------------- helpers
@@ -312,7 +385,10 @@ def _counterexample(lhs, rhs, witness, seed) -> dict:
     for a, (tau, M) in plan.angles.items():
         point[sp.sstr(a)] = f"{2 * M}*atan({pt[tau]})"
     lv, rv = _exact_value(lhs, plan, pt), _exact_value(rhs, plan, pt)
-    return {"point": point, "lhs": sp.sstr(lv), "rhs": sp.sstr(rv)}
+    ce = {"point": point, "lhs": sp.sstr(lv), "rhs": sp.sstr(rv)}
+    if shape_of(lhs) == shape_of(rhs):
+        ce["residual"] = sp.sstr(lv - rv)
+    return ce
 
 
 # --------------------------------------------------------------------------- decide
@@ -401,6 +477,7 @@ def _check(eq: Equation, t0: float) -> Result:
     st = eq.build()
     _EXPLICIT_CACHE.clear()
     verdict, method, detail = "undecided", "undecided", ""
+    members: list[dict] = []
     ce = None
     failing = None
     backing: list[Rel] = []
@@ -417,6 +494,8 @@ def _check(eq: Equation, t0: float) -> Result:
                 ok = False
                 detail = f"lhs {_fmt(r.lhs)} is not a symbol this definition introduces"
         outs = [decide_rel(r, st.model, seed) for r in st.claims]
+        members = [member_record(r, "printed", None) for r in st.printed]
+        members += [member_record(r, "claim", o) for r, o in zip(st.claims, outs, strict=True)]
         if ok and all(o.zero for o in outs):
             verdict, method = "definition", "definition"
             detail = "introduces " + ", ".join(st.defines)
@@ -426,6 +505,8 @@ def _check(eq: Equation, t0: float) -> Result:
                                        "a claim attached to the definition was not verified")
     else:
         outs = [decide_rel(r, st.model, seed + i) for i, r in enumerate(st.printed + st.claims)]
+        members = [member_record(r, "printed" if i < len(st.printed) else "claim", o)
+                   for i, (r, o) in enumerate(zip(st.printed + st.claims, outs, strict=True))]
         zero, method, detail = _combine(outs)
         if zero:
             verdict = "verified"
@@ -434,11 +515,15 @@ def _check(eq: Equation, t0: float) -> Result:
             verdict = "does-not-hold"
             bad = next(o for o in outs if o.zero is False)
             ce, failing = bad.counterexample, bad.label or None
+            if ce is not None:
+                ce["member"] = bad.label
             if not st.corrected:
                 verdict, detail = "undecided", "does not hold, but no corrected form is declared"
             else:
                 couts = [decide_rel(r, st.model, seed + 100 + i)
                          for i, r in enumerate(st.corrected)]
+                members += [member_record(r, "corrected", o)
+                            for r, o in zip(st.corrected, couts, strict=True)]
                 cz, cm, cd = _combine(couts)
                 if not cz:
                     verdict = "undecided"
@@ -481,4 +566,6 @@ def _check(eq: Equation, t0: float) -> Result:
         cause=eq.cause if verdict == "does-not-hold" else None, numeric=numeric,
         seconds=round(time.perf_counter() - t0, 3), section=eq.section,
         evidence=eq.evidence if verdict == "does-not-hold" else None, detail=detail,
-        singular=eq.singular, failing_member=failing)
+        singular=eq.singular, failing_member=failing, members=members,
+        model=model_words([explicit(r.lhs, st.model) for r in st.printed]
+                          + [explicit(r.rhs, st.model) for r in st.printed]))
