@@ -21,7 +21,7 @@ from types import ModuleType
 from typing import overload
 
 from .checker import Result as _CheckerResult
-from .registry import REGISTRY, VERDICTS, BadInput, select
+from .registry import VERDICTS, BadInput, select
 
 __all__ = ["check", "verify", "Result", "Results"]
 
@@ -49,22 +49,24 @@ class Result(_CheckerResult):
         return (f"<Result {self.id}: {self.verdict}{flag} ({self.method}, "
                 f"{self.seconds:.2f} s)>")
 
-    def forms_latex(self) -> dict[str, str]:
-        """LaTeX of the printed form (the book's own LaTeX when there is one) and, when
-        declared, of the corrected form (sympy's printer)."""
-        out = {}
-        st = _statement(self.id)
-        if self.printed_latex.strip():
-            out["printed"] = self.printed_latex.strip()
-        elif st is not None:
-            out["printed"] = _rels_latex(st.printed)
-        if st is not None and st.corrected:
-            out["corrected"] = _rels_latex(st.corrected)
+    def forms_latex(self) -> list[tuple[str, str]]:
+        """``(role, LaTeX)`` of each member in book notation (printed, claim, corrected),
+        from the schema-2 member records; the book's printed LaTeX stands in for printed
+        members too long to show."""
+        out = []
+        for m in self.members:
+            label = m["role"] + (f" ({m['label']})" if m.get("label") else "")
+            if m.get("latex"):
+                out.append((label, m["latex"]))
+        if not any(role.startswith("printed") for role, _ in out) and self.printed_latex:
+            out.insert(0, ("printed", self.printed_latex.strip()))
         return out
 
     def _repr_latex_(self) -> str:
-        forms = self.forms_latex()
-        body = forms.get("printed", r"\text{(no printed form)}")
+        forms = [tex for role, tex in self.forms_latex() if role.startswith("printed")]
+        body = r" \\ ".join(forms) if forms else r"\text{(no printed form)}"
+        if len(forms) > 1:
+            body = r"\begin{aligned}" + body + r"\end{aligned}"
         return f"$\\displaystyle {body}$"
 
     def _repr_html_(self) -> str:
@@ -74,7 +76,7 @@ class Result(_CheckerResult):
         rows = [f"<p><b>({e(self.id)}) {e(self.title)}</b>: <b>{e(self.verdict)}</b> "
                 f"(expected {e(self.expected)}; method {e(self.method)}; "
                 f"{self.seconds:.2f} s)</p>"]
-        for label, latex in self.forms_latex().items():
+        for label, latex in self.forms_latex():
             try:
                 shown = latex_to_mathml(latex, display=True)
             except Exception:  # noqa: BLE001  (a converter gap must not hide the result)
@@ -86,22 +88,6 @@ class Result(_CheckerResult):
         if self.detail:
             rows.append(f"<p><small>{e(self.detail)}</small></p>")
         return "<div class=\"rigidsym-result\">" + "".join(rows) + "</div>"
-
-
-def _statement(eq_id: str):
-    eq = REGISTRY.get(eq_id)
-    if eq is None:
-        return None
-    try:
-        return eq.build()
-    except Exception:  # noqa: BLE001  (the result already names the error)
-        return None
-
-
-def _rels_latex(rels) -> str:
-    import sympy as sp
-
-    return r" \\ ".join(f"{sp.latex(r.lhs)} = {sp.latex(r.rhs)}" for r in rels)
 
 
 class Results(Sequence[Result]):
@@ -141,12 +127,12 @@ class Results(Sequence[Result]):
         return summary(list(self._rows))
 
     def to_json(self) -> dict:
-        """The JSON document of ``rigidsym verify --json`` as a dict."""
-        import json
+        """The schema-2 document of ``rigidsym verify --json`` as a dict:
+        ``{"schema": 2, "equations": [record, ...], "summary": {verdict: count}}``."""
+        from .report import SCHEMA, result_record
 
-        from .report import to_json
-
-        return json.loads(to_json(list(self._rows)))
+        return {"schema": SCHEMA, "equations": [result_record(r) for r in self._rows],
+                "summary": self.summary()}
 
     def where(self, verdict: str | None = None, *, kind: str | None = None,
               section: str | None = None, mismatched: bool | None = None) -> Results:

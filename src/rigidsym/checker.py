@@ -104,6 +104,7 @@ def member_record(rel: Rel, role: str, out: _RelOutcome | None) -> dict:
 
 
 _KIND_WORDS = {"unit": "unit vector (stereographic projection)",
+               "unit4": "unit 4-vector (stereographic projection)",
                "angle": "angle (cos, sin rational in a tangent of a fraction of it)",
                "rotation": "rotation matrix (rational quaternion)"}
 
@@ -125,7 +126,7 @@ def model_words(exprs) -> list[str]:
                 timed = isinstance(a, AppliedUndef)
                 timed_any |= timed
                 name = a.func.__name__ if timed else a.name
-                c = constraint_of(name, timed)
+                c = constraint_of(a)  # carried by the atom (rigidsym.symbols), not its name
                 if c is not None:
                     groups[c.name] = c.kind
                 else:

@@ -15,6 +15,8 @@ from collections.abc import Callable
 from pathlib import Path
 
 from .registry import REGISTRY, BadInput, select
+from .usermodules import MODULE_HELP as _MODULE_HELP
+from .usermodules import select_with_modules, write_user_report
 
 __all__ = ["main", "run_checks", "COMMANDS"]
 
@@ -71,7 +73,7 @@ def _table(results) -> None:
 
 def cmd_verify(args) -> int:
     """``rigidsym verify``: decide equations, print a table, optionally write JSON."""
-    ids = select(args.ids, args.section)
+    ids = select_with_modules(args.ids, args.section, args.module)
     t0 = time.perf_counter()
     results = run_checks(ids, jobs=args.jobs, progress=not args.quiet)
     wall = time.perf_counter() - t0
@@ -92,6 +94,8 @@ def cmd_verify(args) -> int:
 
 def cmd_report(args) -> int:
     """``rigidsym report``: write ``chapter3.md`` and ``chapter3.json`` to ``--out``."""
+    if args.module:  # a user module's report: titled by it, files named after it
+        return write_user_report(args.module, Path(args.out), args.jobs)
     from .io import write_atomic
     from .report import to_json, to_markdown
     ids = select(None, None)
@@ -114,7 +118,7 @@ def cmd_show(args) -> int:
     import sympy as sp
 
     from .checker import explicit
-    for eq_id in select([args.id], None):
+    for eq_id in select_with_modules([args.id], None, args.module):
         eq = REGISTRY[eq_id]
         st = eq.build()
         mod = sys.modules[eq.module]
@@ -148,13 +152,18 @@ def build_parser() -> argparse.ArgumentParser:
     v.add_argument("--json", help="write the results as JSON to this path")
     v.add_argument("--jobs", type=int, default=jobs, help=f"worker processes (default {jobs})")
     v.add_argument("--quiet", action="store_true", help="no progress bar or table")
+    v.add_argument("--module", action="append", metavar="PATH_OR_DOTTED",
+                   help=_MODULE_HELP + "; only its ids unless ids or sections are given")
     v.set_defaults(func=cmd_verify)
     r = sub.add_parser("report", help="write generated/report/chapter3.{md,json}")
     r.add_argument("--out", default="generated/report", help="output folder")
     r.add_argument("--jobs", type=int, default=jobs)
+    r.add_argument("--module", action="append", metavar="PATH_OR_DOTTED",
+                   help=_MODULE_HELP + ": report its ids into --out as <module>.{md,json}")
     r.set_defaults(func=cmd_report)
     s = sub.add_parser("show", help="show one equation")
     s.add_argument("id")
+    s.add_argument("--module", action="append", metavar="PATH_OR_DOTTED", help=_MODULE_HELP)
     s.set_defaults(func=cmd_show)
     for name, (add_args, run) in sorted(COMMANDS.items()):
         c = sub.add_parser(name, help=(run.__doc__ or "").splitlines()[0])
