@@ -12,6 +12,7 @@ verdict sits next to the declaration as data so that a regression flips loudly.
 from __future__ import annotations
 
 import re
+import sys
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Any
@@ -51,6 +52,10 @@ _USER_ID = re.compile(r"^[a-z][a-z0-9_-]*:[A-Za-z0-9_.-]+$")
 BOOK_PACKAGE = "rigidsym.derivations"
 #: The cause of a user's does-not-hold when the declaration names none.
 USER_CAUSE_DEFAULT = "not determined"
+
+
+def _in_book(module: str) -> bool:
+    return module == BOOK_PACKAGE or module.startswith(BOOK_PACKAGE + ".")
 
 
 def is_user_id(eq_id: str) -> bool:
@@ -205,6 +210,9 @@ def equation(eq_id: str, title: str, *, section: str | None = None,
         expected = "definition" if kind == "definition" else "verified"
     if expected not in VERDICTS:
         raise ValueError(f"expected: expected one of {VERDICTS}, got {expected!r}")
+    if not user and not _in_book(sys._getframe(1).f_globals.get("__name__", "")):
+        raise ValueError(f"eq_id: {eq_id!r} is a book id, reserved for the chapter; "
+                         f"declare your own as namespace:name (e.g. notes:eq1)")
     if user:
         if expected == "does-not-hold":
             cause = cause or USER_CAUSE_DEFAULT
@@ -217,7 +225,7 @@ def equation(eq_id: str, title: str, *, section: str | None = None,
 
     def deco(fn):
         module = fn.__module__
-        if not user and not (module == BOOK_PACKAGE or module.startswith(BOOK_PACKAGE + ".")):
+        if not user and not _in_book(module):
             raise ValueError(f"eq_id: {eq_id!r} is a book id, reserved for the chapter; "
                              f"declare your own as namespace:name (e.g. notes:eq1)")
         new = Equation(eq_id, title, section, kind, latex, expected, fn, cause, evidence,
