@@ -26,6 +26,7 @@ stays free however many unit vectors named ``e`` other modules declare.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import cache
 
 import sympy as sp
 from sympy.core.function import AppliedUndef
@@ -108,6 +109,7 @@ def constraint_of(atom) -> Constraint | None:
     return None
 
 
+@cache  # one object per atom: identity comparisons stay cheap in sympy's hot paths
 def constrained_atom(name: str, c: Constraint):
     """The atom ``name`` of the group ``c`` (equal to the one its factory returned)."""
     if c.timed:
