@@ -3,9 +3,7 @@
 from __future__ import annotations
 
 import json
-import os
 import sys
-import tempfile
 from pathlib import Path
 
 from rigidsym import cli as _cli
@@ -66,31 +64,44 @@ def run(args) -> int:
     return 0 if s.checked else 1
 
 
-def _write_png(fig, path: Path) -> None:
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".png", dir=path.parent)
-    os.close(fd)
-    try:
-        fig.savefig(tmp, format="png", dpi=120)
-        os.replace(tmp, path)
-    except BaseException:
-        Path(tmp).unlink(missing_ok=True)
-        raise
+def svg_text(fig) -> str:
+    """The figure as SVG text, byte-identical from run to run (fixed id salt, no date)."""
+    import io
+
+    import matplotlib as mpl
+    buf = io.StringIO()
+    with mpl.rc_context({"svg.hashsalt": "rigidsym", "svg.fonttype": "path"}):
+        fig.savefig(buf, format="svg", metadata={"Date": None})
+    return buf.getvalue()
 
 
-def write_report(out_dir: Path) -> None:
-    """Report hook: write ``exercises.md`` (and the Exercise 3.10 figure) into ``out_dir``."""
+def write_report(out_dir: Path) -> list[Path]:
+    """Report hook: write ``exercises.md``, ``exercises.html`` (maths as MathML, the figure
+    inline) and the Exercise 3.10 figure (SVG) into ``out_dir``; return the paths."""
+    from rigidsym.report_html import markdown_to_html
+
     out_dir = Path(out_dir)
-    out_dir.mkdir(parents=True, exist_ok=True)
     parts = ["# Chapter 3 exercises, solved with computer algebra", ""]
     rows = ["| exercise | status | checked |", "|---|---|---|"]
     sols = [solve(i) for i in EXERCISE_IDS]
-    rows += [f"| {s.id} | {s.status} | {str(s.checked).lower()} |" for s in sols]
+    rows += [f"| [{s.id}](#ex-{s.id[2:]}) | {s.status} | "
+             f"{str(s.checked).lower()} |" for s in sols]
     parts += rows + [""]
     from .ex3_10 import condition_figure
-    fig_note = condition_figure(out_dir, _write_png)
-    parts += [fig_note, ""]
+    figures: dict[str, str] = {}
+    written: list[Path] = []
+
+    def keep(fig, path: Path) -> None:
+        figures[path.name] = svg_text(fig)
+        written.append(write_atomic(path, figures[path.name]))
+
+    parts += [condition_figure(out_dir, keep), ""]
     parts += [render_markdown(s) for s in sols]
-    write_atomic(out_dir / "exercises.md", "\n".join(parts))
+    text = "\n".join(parts)
+    written.append(write_atomic(out_dir / "exercises.md", text))
+    written.append(write_atomic(out_dir / "exercises.html", markdown_to_html(
+        text, "Chapter 3 exercises, solved with computer algebra", figures)))
+    return written
 
 
 _cli.COMMANDS["exercise"] = (add_arguments, run)

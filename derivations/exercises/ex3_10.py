@@ -74,8 +74,11 @@ def table() -> list[tuple]:
     return rows
 
 
-def condition_figure(out_dir, write_png) -> str:
-    """Plot cond(W) against the middle angle for both classes; return a Markdown note."""
+def condition_figure(out_dir, write_figure) -> str:
+    """Plot cond(W) against the middle angle for both classes; return a Markdown note.
+
+    ``write_figure(fig, path)`` saves the figure (SVG) at ``path``.
+    """
     try:
         import matplotlib
         matplotlib.use("Agg")
@@ -99,10 +102,10 @@ def condition_figure(out_dir, write_png) -> str:
     ax.set_title("Exercise 3.10: conditioning of the Euler-angle rate matrix W")
     ax.legend()
     ax.grid(True, which="both", alpha=0.3)
-    path = out_dir / "ex3_10_condition.png"
-    write_png(fig, path)
+    path = out_dir / "ex3_10_condition.svg"
+    write_figure(fig, path)
     plt.close(fig)
-    return "![cond(W) against the middle angle](ex3_10_condition.png)"
+    return "![cond(W) against the middle angle](ex3_10_condition.svg)"
 
 
 def solve() -> Solution:

@@ -277,7 +277,8 @@ def _latex(v) -> str:
 
 def render_markdown(s: Solution) -> str:
     """Markdown rendering (LaTeX maths) for the report."""
-    out = [f"## Exercise {s.id[2:]}: {s.title}", "", f"*{s.citation}*", "",
+    out = [f'<a id="ex-{s.id[2:]}"></a>', "", f"## Exercise {s.id[2:]}: {s.title}", "",
+           f"*{s.citation}*", "",
            f"> {s.statement}", "",
            f"**Status:** {s.status}; **checked:** {str(s.checked).lower()}", ""]
     if s.assumptions:

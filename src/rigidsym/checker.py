@@ -73,8 +73,11 @@ class Result:
         return asdict(self)
 
 
-#: member texts longer than this are not kept (an explicit matrix, not book notation)
-MEMBER_TEXT_LIMIT = 1200
+#: member texts longer than this are not kept: such a member is an explicit component
+#: matrix (a formula function applied entry by entry), not book notation
+MEMBER_TEXT_LIMIT = 400
+#: the same for the LaTeX of a member (LaTeX spends about three characters per symbol)
+MEMBER_LATEX_LIMIT = 1200
 
 
 def member_record(rel: Rel, role: str, out: _RelOutcome | None) -> dict:
@@ -88,7 +91,8 @@ def member_record(rel: Rel, role: str, out: _RelOutcome | None) -> dict:
     Returns:
         ``{"role", "label", "status", "method", "detail", "text", "latex"}``: status is
         ``holds``, ``fails``, ``undecided`` or ``defines``; ``text`` (book notation,
-        Unicode) and ``latex`` are ``None`` when longer than :data:`MEMBER_TEXT_LIMIT`.
+        Unicode) and ``latex`` are ``None`` when longer than :data:`MEMBER_TEXT_LIMIT`
+        and :data:`MEMBER_LATEX_LIMIT`.
     """
     if out is None:
         status, method, detail = "defines", "definition", ""
@@ -100,21 +104,20 @@ def member_record(rel: Rel, role: str, out: _RelOutcome | None) -> dict:
     return {"role": role, "label": rel.label, "status": status, "method": method,
             "detail": detail,
             "text": text if len(text) <= MEMBER_TEXT_LIMIT else None,
-            "latex": tex if len(tex) <= MEMBER_TEXT_LIMIT else None}
+            "latex": tex if len(tex) <= MEMBER_LATEX_LIMIT else None}
 
 
-_KIND_WORDS = {"unit": "unit vector (stereographic projection)",
-               "unit4": "unit 4-vector (stereographic projection)",
-               "angle": "angle (cos, sin rational in a tangent of a fraction of it)",
-               "rotation": "rotation matrix (rational quaternion)"}
+_KIND_WORDS = {"unit": "unit vector, stereographic", "angle": "angle, half-angle tangent",
+               "rotation": "rotation, rational quaternion",
+               "unit4": "unit 4-vector, stereographic"}
 
 
 def model_words(exprs) -> list[str]:
     """The atoms of explicit expressions grouped by constraint, in words.
 
     Returns:
-        Sorted lines such as ``"e: unit vector (stereographic projection)"``, then one
-        ``"free: a, ω"`` line, then ``"along a motion: ..."`` when atoms depend on time.
+        Sorted lines such as ``"e: unit vector, stereographic"``, then one ``"free: a, ω"``
+        line, then ``"along a motion (...)"`` when atoms depend on time.
     """
     groups, free, timed_any = {}, set(), False
     for x in exprs:
@@ -135,8 +138,7 @@ def model_words(exprs) -> list[str]:
     if free:
         out.append("free: " + ", ".join(sorted(free)))
     if timed_any:
-        out.append("along a motion: atoms are functions of t; their time derivatives are "
-                   "independent jets, so the constraints hold along every trajectory")
+        out.append("along a motion (derivatives as jets)")
     return out
 
 

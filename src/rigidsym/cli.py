@@ -92,52 +92,84 @@ def cmd_verify(args) -> int:
     return 1 if off else 0
 
 
+def default_report_dir(cwd: Path | None = None) -> Path:
+    """Where ``rigidsym report`` writes by default: ``generated/report/`` at the root of a
+    rigidsym source tree (a ``pyproject.toml`` naming ``rigidsym``), else
+    ``./rigidsym-report/``."""
+    import tomllib
+    here = Path.cwd() if cwd is None else Path(cwd)
+    try:
+        meta = tomllib.loads((here / "pyproject.toml").read_text(encoding="utf-8"))
+        if meta.get("project", {}).get("name") == "rigidsym":
+            return here / "generated" / "report"
+    except (OSError, ValueError):
+        pass
+    return here / "rigidsym-report"
+
+
 def cmd_report(args) -> int:
-    """``rigidsym report``: write ``chapter3.md`` and ``chapter3.json`` to ``--out``."""
+    """``rigidsym report``: write ``chapter3.{md,json,html}`` and the exercises to ``--out``."""
     if args.module:  # a user module's report: titled by it, files named after it
-        return write_user_report(args.module, Path(args.out), args.jobs)
+        return write_user_report(args.module, Path(args.out) if args.out else Path.cwd(),
+                                 args.jobs)
     from .io import write_atomic
     from .report import to_json, to_markdown
+    from .report_html import to_html
     ids = select(None, None)
     results = run_checks(ids, jobs=args.jobs, progress=True)
-    out = Path(args.out)
-    write_atomic(out / "chapter3.md", to_markdown(results))
-    write_atomic(out / "chapter3.json", to_json(results, timings=False))
+    out = Path(args.out) if args.out else default_report_dir()
+    written = [write_atomic(out / "chapter3.md", to_markdown(results)),
+               write_atomic(out / "chapter3.json", to_json(results, timings=False)),
+               write_atomic(out / "chapter3.html", to_html(results))]
+    if args.full:  # expanded values: never over the lean, committed files
+        written += [write_atomic(out / "chapter3-full.md", to_markdown(results, full=True)),
+                    write_atomic(out / "chapter3-full.json",
+                                 to_json(results, timings=False, full=True))]
     for hook in REPORT_HOOKS:
-        hook(out)
-    print(f"wrote {out / 'chapter3.md'} and {out / 'chapter3.json'}")
+        written += hook(out) or []
+    where = os.path.relpath(out) if not os.path.relpath(out).startswith("..") else str(out)
+    print(f"wrote {len(written)} files to {where}{os.sep}: "
+          + ", ".join(sorted(Path(p).name for p in written)))
     return 1 if any(r.verdict != r.expected for r in results) else 0
 
 
-#: functions ``(out_dir: Path) -> None`` that add files to the report (exercises, figures).
+#: functions ``(out_dir: Path) -> list[Path]`` that add files to the report (exercises,
+#: figures) and return the paths they wrote.
 REPORT_HOOKS: list[Callable] = []
 
 
 def cmd_show(args) -> int:
-    """``rigidsym show ID``: one equation, pretty-printed, with where it is declared."""
-    import sympy as sp
+    """``rigidsym show ID``: one equation explained (verdict, members, counterexample, cause,
+    corrected form, singular set) in book notation; ``--latex`` or ``--json`` instead."""
+    import json
 
-    from .checker import explicit
-    for eq_id in select_with_modules([args.id], None, args.module):
+    from . import notation
+    from .checker import check
+    from .report import result_record
+    from .show import explain, output_width
+    width = output_width()
+    for k, eq_id in enumerate(select_with_modules([args.id], None, args.module)):
         eq = REGISTRY[eq_id]
         st = eq.build()
+        r = check(eq_id)
+        if args.json:
+            print(json.dumps(result_record(r), indent=1, ensure_ascii=False))
+            continue
+        if args.latex:
+            print(f"% ({eq.id}) {eq.title}; printed:\n{eq.latex}")
+            for role, rels in (("printed", st.printed), ("claim", st.claims),
+                               ("corrected", st.corrected or [])):
+                for rel in rels:
+                    print(f"% {role}{': ' + rel.label if rel.label else ''}\n"
+                          f"{notation.latex(rel.lhs)} = {notation.latex(rel.rhs)}")
+            continue
         mod = sys.modules[eq.module]
         src = inspect.getsourcefile(getattr(mod, eq.function.split(".")[0]))
-        print(f"({eq.id}) {eq.title}   [Book: Sec. {eq.section}; kind: {eq.kind}; "
-              f"expected: {eq.expected}]")
-        print(f"declared in {eq.module}.{eq.function}  ({os.path.relpath(src)})")
-        print(f"printed LaTeX: {eq.latex}")
-        for label, rels in (("printed", st.printed), ("corrected", st.corrected or [])):
-            for r in rels:
-                print(f"\n{label}{' (' + r.label + ')' if r.label else ''}:")
-                print(sp.pretty(r.lhs, use_unicode=True))
-                print("  =")
-                print(sp.pretty(r.rhs, use_unicode=True))
-        if eq.singular:
-            print(f"\nsingular set: {eq.singular}")
-        if st.derived is not None:
-            print("\nderived:")
-            print(sp.pretty(explicit(st.derived), use_unicode=True))
+        where = f"{eq.module}.{eq.function} ({os.path.relpath(src)})"
+        if k:
+            print("\n" + "-" * min(width, 40) + "\n")
+        print(explain(r, {"printed": st.printed, "claim": st.claims,
+                          "corrected": st.corrected or []}, where, width))
     return 0
 
 
@@ -155,15 +187,22 @@ def build_parser() -> argparse.ArgumentParser:
     v.add_argument("--module", action="append", metavar="PATH_OR_DOTTED",
                    help=_MODULE_HELP + "; only its ids unless ids or sections are given")
     v.set_defaults(func=cmd_verify)
-    r = sub.add_parser("report", help="write generated/report/chapter3.{md,json}")
-    r.add_argument("--out", default="generated/report", help="output folder")
+    r = sub.add_parser("report", help="write the chapter report (Markdown, JSON, HTML)")
+    r.add_argument("--out", default=None,
+                   help="output folder (default: generated/report/ at the root of a rigidsym "
+                        "source tree, else ./rigidsym-report/)")
+    r.add_argument("--full", action="store_true",
+                   help="also write chapter3-full.{md,json} with the expanded values")
     r.add_argument("--jobs", type=int, default=jobs)
     r.add_argument("--module", action="append", metavar="PATH_OR_DOTTED",
                    help=_MODULE_HELP + ": report its ids into --out as <module>.{md,json}")
     r.set_defaults(func=cmd_report)
-    s = sub.add_parser("show", help="show one equation")
+    s = sub.add_parser("show", help="explain one equation (verdict, why, counterexample)")
     s.add_argument("id")
     s.add_argument("--module", action="append", metavar="PATH_OR_DOTTED", help=_MODULE_HELP)
+    fmt = s.add_mutually_exclusive_group()
+    fmt.add_argument("--latex", action="store_true", help="print the members as LaTeX")
+    fmt.add_argument("--json", action="store_true", help="print the schema-2 record")
     s.set_defaults(func=cmd_show)
     for name, (add_args, run) in sorted(COMMANDS.items()):
         c = sub.add_parser(name, help=(run.__doc__ or "").splitlines()[0])

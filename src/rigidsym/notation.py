@@ -196,7 +196,16 @@ class BookStrPrinter(StrPrinter):
 
     def _print_MatrixElement(self, expr):
         d = _dot_operands(expr)
-        return self._dot(*d) if d else super()._print_MatrixElement(expr)
+        if d:
+            return self._dot(*d)
+        parent, i, j = expr.parent, expr.i, expr.j
+        if isinstance(parent, sp.MatrixSymbol) and i.is_Integer and j.is_Integer:
+            sub = str(i + 1) if parent.shape[1] == 1 else f"{i + 1}{j + 1}"  # book: 1-based
+            return book_text(parent.name) + sub.translate(_SUBSCRIPT_DIGITS)
+        return super()._print_MatrixElement(expr)
+
+    def _print_Pi(self, expr):
+        return "π"
 
     def _factor(self, x) -> str:
         return self.parenthesize(x, PRECEDENCE["Mul"], strict=True)
@@ -309,6 +318,9 @@ class BookLatexPrinter(LatexPrinter):
         if isinstance(expr, AppliedUndef):
             s = book_latex(expr.func.__name__)
             return s if exp is None else f"{s}^{{{exp}}}"
+        if isinstance(expr, sp.sin | sp.cos | sp.tan) and expr.args[0].is_Atom:
+            head = rf"\{expr.func.__name__}" + (f"^{{{exp}}}" if exp is not None else "")
+            return f"{head} {self._print(expr.args[0])}"  # the book's \cos \phi
         return super()._print_Function(expr, exp)
 
     def _print_Derivative(self, expr):
@@ -333,7 +345,13 @@ class BookLatexPrinter(LatexPrinter):
 
     def _print_MatrixElement(self, expr):
         d = _dot_operands(expr)
-        return self._dot(*d) if d else super()._print_MatrixElement(expr)
+        if d:
+            return self._dot(*d)
+        parent, i, j = expr.parent, expr.i, expr.j
+        if isinstance(parent, sp.MatrixSymbol) and i.is_Integer and j.is_Integer:
+            sub = str(i + 1) if parent.shape[1] == 1 else f"{i + 1}{j + 1}"  # book: 1-based
+            return f"{book_latex(parent.name)}_{{{sub}}}"
+        return super()._print_MatrixElement(expr)
 
     def _print_MatMul(self, expr):
         d = _dot_operands(expr)

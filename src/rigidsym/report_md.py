@@ -9,7 +9,7 @@ from __future__ import annotations
 from .checker import Result
 from .report import CITATION, RESIDUAL_FLOOR, result_record, summary
 
-__all__ = ["to_markdown", "anchor", "sections"]
+__all__ = ["to_markdown", "anchor", "sections", "how_checked", "numeric_words"]
 
 
 def anchor(eq_id: str) -> str:
@@ -36,11 +36,33 @@ def _code(text: str) -> str:
 def _members(rec: dict) -> list[str]:
     out = []
     for m in rec["members"]:
-        label = f" *{_cell(m['label'])}*" if m["label"] else ""
-        form = f": {_code(m['text'])}" if m["text"] else ""
-        how = f" ({m['method']})" if m["status"] in ("holds", "fails") else ""
-        out.append(f"- {m['role']}{label}: **{m['status']}**{how}{form}")
+        who = [m["role"]] if m["role"] != "printed" else []
+        who += [f"*{_cell(m['label'])}*"] if m["label"] else []
+        how = f" ({m['method']})" if m["status"] in ("holds", "fails") and \
+            m["method"] != rec["method"] else ""  # the verdict line names the common method
+        form = f" {_code(m['text'])}" if m["text"] else " (long explicit form: see the full report)"
+        out.append(f"- {' '.join(who) + ': ' if who else ''}**{m['status']}**{how}{form}")
     return out
+
+
+def numeric_words(n: dict) -> str:
+    """The numeric backing in one sentence ("" when there is none)."""
+    res = n.get("max_residual")
+    if res is None:
+        return ""
+    shown = f"< {RESIDUAL_FLOOR:.0e}" if res <= RESIDUAL_FLOOR else f"{res:.1e}"
+    return f"Numeric: {n['points']} points, {n['digits']} digits, residual {shown}."
+
+
+def how_checked(rec: dict) -> str:
+    """Model, singular set and numeric backing in one paragraph."""
+    out = []
+    if rec["model"]:
+        out.append("Model: " + "; ".join(rec["model"]) + ".")
+    if rec["singular"]:
+        out.append(f"Singular set: {rec['singular']}.")
+    out.append(numeric_words(rec["numeric"]))
+    return " ".join(x for x in out if x)
 
 
 def _counterexample(ce: dict) -> list[str]:
@@ -60,29 +82,25 @@ def _counterexample(ce: dict) -> list[str]:
 
 
 def _entry(rec: dict, full: bool) -> list[str]:
-    out = [f'<a id="{anchor(rec["id"])}"></a>', "", f"### ({rec['id']}) {rec['title']}", ""]
-    how = f"method: {rec['method']}"
-    if rec["failure_bound"] is not None:
-        how += f", failure probability ≤ {rec['failure_bound']:.2e}"
-    out += [f"Book: Sec. {rec['section']}. Kind: {rec['kind']}. **Verdict: {rec['verdict']}** "
-            f"({how}).", "", "Printed:", "", f"$${rec['printed_latex']}$$", ""]
-    out += ["Members:", ""] + _members(rec) + [""]
+    out = [f'### ({rec["id"]}) {rec["title"]} <a id="{anchor(rec["id"])}"></a>', ""]
+    how = rec["method"]
+    if rec["failure_bound"] is not None and rec["verdict"] != "does-not-hold":
+        how += f", P(false zero) ≤ {rec['failure_bound']:.1e}"
+    line = f"Sec. {rec['section']} · {rec['kind']} · **{rec['verdict']}** · {how}"
+    if rec["verdict"] == rec["kind"] == "definition":
+        line = f"Sec. {rec['section']} · **definition**"
+    out += [line, "",
+            f"$${rec['printed_latex']}$$", ""]
+    ms = rec["members"]
+    if not (len(ms) == 1 and ms[0]["status"] == "holds" and not ms[0]["label"]):
+        out += _members(rec) + [""]  # one unlabelled member that holds: the line above says it
     if rec["verdict"] == "does-not-hold":
         fm = rec["failing_member"]
         out += [f"Fails: {'member *' + _cell(fm) + '*' if fm else 'the equation (one member)'}."
                 f" Cause: **{rec['cause_class']}**. {rec['evidence']}", ""]
         if rec["counterexample"]:
             out += _counterexample(rec["counterexample"])
-    if rec["model"]:
-        out += ["Checked in the model: " + "; ".join(rec["model"]) + ".", ""]
-    if rec["singular"]:
-        out += [f"Singular set: {rec['singular']}.", ""]
-    n = rec["numeric"]
-    if n.get("max_residual") is not None:
-        res = n["max_residual"]
-        shown = f"< {RESIDUAL_FLOOR:.0e}" if res <= RESIDUAL_FLOOR else f"{res:.1e}"
-        out += [f"Numeric backing: {n['points']} points at {n['digits']} digits, max "
-                f"relative residual {shown} (seed {n['seed']}).", ""]
+    out += [how_checked(rec), ""]
     if full:
         out += ["Transcribed:", "", "```", rec["printed"], "```", "",
                 "Derived from first principles:", "", "```", rec["derived"], "```", ""]

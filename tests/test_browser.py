@@ -1,0 +1,121 @@
+"""The committed HTML report in a real browser: Debian's chromium through Playwright.
+
+Skips with a reason when playwright or /usr/bin/chromium is missing (``.ci/run`` installs
+chromium and a math font with apt-get). Never downloads a browser. Screenshots of the
+does-not-hold table and of (3.96e) go to ``build/screenshots/`` for a person to look at.
+"""
+
+from __future__ import annotations
+
+import io
+import os
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parents[1]
+REPORT = ROOT / "generated" / "report"
+CHROMIUM = Path(os.environ.get("RIGIDSYM_CHROMIUM", "/usr/bin/chromium"))
+SHOTS = ROOT / "build" / "screenshots"
+
+sync_api = pytest.importorskip("playwright.sync_api",
+                               reason="playwright is not installed (pip install -e '.[test]')")
+
+
+@pytest.fixture(scope="module")
+def browser():
+    if not CHROMIUM.exists():
+        pytest.skip(f"no system chromium at {CHROMIUM} (apt-get install chromium fonts-stix)")
+    args = ["--disable-gpu", "--disable-background-networking", "--disable-component-update",
+            "--disable-sync", "--no-first-run"]
+    if hasattr(os, "geteuid") and os.geteuid() == 0:
+        args.append("--no-sandbox")  # chromium refuses to run as root with its sandbox
+    with sync_api.sync_playwright() as p:
+        b = p.chromium.launch(executable_path=str(CHROMIUM), args=args, headless=True)
+        yield b
+        b.close()
+
+
+def _open(browser, name: str):
+    path = REPORT / name
+    if not path.exists():
+        pytest.skip(f"no committed {name} in this checkout")
+    page = browser.new_page(viewport={"width": 1200, "height": 900})
+    page.goto(path.as_uri())
+    page.evaluate("document.querySelectorAll('details').forEach(d => d.open = true)")
+    return page
+
+
+_FORMULA_DEFECTS = """() => {
+  const bad = [];
+  for (const el of document.querySelectorAll('math mi, math mo, math mn, math mtext')) {
+    const t = el.textContent.trim();
+    if (t === '&') bad.push('text & in ' + el.closest('[id]')?.id);
+    if (el.tagName.toLowerCase() !== 'mtext' && /^\\\\[A-Za-z]/.test(t))
+      bad.push('command ' + t + ' in ' + el.closest('[id]')?.id);
+  }
+  return bad;
+}"""
+
+_EMPTY_BOXES = """() => Array.from(document.querySelectorAll('math')).filter(m => {
+  const r = m.getBoundingClientRect(); return !(r.width > 0 && r.height > 0);
+}).map(m => m.closest('[id]')?.id)"""
+
+_BROKEN_LINKS = """() => Array.from(document.querySelectorAll('a[href^="#"]'))
+  .map(a => a.getAttribute('href').slice(1))
+  .filter(id => !document.getElementById(id))"""
+
+
+@pytest.mark.parametrize("name", ["chapter3.html", "exercises.html"])
+def test_formulas_render(browser, name):
+    page = _open(browser, name)
+    assert page.locator("math").count() > 100
+    assert page.locator("merror").count() == 0
+    assert page.evaluate(_FORMULA_DEFECTS) == []
+    assert page.evaluate(_EMPTY_BOXES) == []
+    assert page.evaluate(_BROKEN_LINKS) == []
+    page.close()
+
+
+def test_exercise_figure_is_inline_svg(browser):
+    page = _open(browser, "exercises.html")
+    box = page.locator("figure svg").first.bounding_box()
+    assert box and box["width"] > 200 and box["height"] > 100
+    page.close()
+
+
+def _ink(png: bytes) -> int:
+    """Dark pixels in a screenshot (PIL comes with matplotlib)."""
+    from PIL import Image
+    img = Image.open(io.BytesIO(png)).convert("L")
+    return sum(1 for v in img.getdata() if v < 128)
+
+
+def test_bold_vectors_render_bold(browser):
+    """A bold 𝐞 of the page draws more ink than a plain e set in the same place."""
+    page = _open(browser, "chapter3.html")
+    page.evaluate("""() => {
+      const mi = Array.from(document.querySelectorAll('[id="eq-3.96e"] mi'))
+        .find(m => m.textContent === '\\u{1D41E}');
+      const math = mi.closest('math').cloneNode(false);
+      math.id = 'bold-probe'; math.style.fontSize = '64px';
+      for (const t of ['\\u{1D41E}', 'e']) {
+        const m = document.createElementNS('http://www.w3.org/1998/Math/MathML', 'mi');
+        m.setAttribute('mathvariant', 'normal'); m.textContent = t; math.appendChild(m);
+      }
+      document.body.prepend(math);
+    }""")
+    bold, plain = page.locator("#bold-probe mi").all()
+    ink_bold, ink_plain = _ink(bold.screenshot()), _ink(plain.screenshot())
+    assert ink_plain > 0 and ink_bold > 1.15 * ink_plain, (ink_bold, ink_plain)
+    page.close()
+
+
+def test_screenshots_for_a_person(browser):
+    page = _open(browser, "chapter3.html")
+    SHOTS.mkdir(parents=True, exist_ok=True)
+    page.locator("#does-not-hold-table").screenshot(path=str(SHOTS / "does-not-hold.png"))
+    page.locator('[id="eq-3.96e"]').screenshot(path=str(SHOTS / "eq-3.96e.png"))
+    print(f"\nscreenshots written to {SHOTS}")
+    assert (SHOTS / "eq-3.96e.png").stat().st_size > 1000
+    page.close()
