@@ -1,14 +1,14 @@
-"""Sec. 3.4.1 (continued): the ISA point nearest the origin by least squares, Eqs.
-(3.64)-(3.70).
+"""Sec. 3.4.1 (continued): the points of the ISA, Eqs. (3.60)-(3.63), and the ISA point
+nearest the origin by least squares, Eqs. (3.64)-(3.70).
 
 Book: J. Angeles, *Fundamentals of Robotic Mechanical Systems*, 4th ed., Sec. 3.4.1.
 
-Split from :mod:`derivations.sec3_4_1` (same models, symbols and singular set): ``p'_0``
+Split from :mod:`rigidsym.derivations.sec3_4_1` (same models, symbols and singular set): ``p'_0``
 is the first-principles ISA point nearest the origin (minimising the distance along the
-ISA, :func:`derivations.sec3_4.isa_point_nearest`); the overdetermined system ``A p'_0 =
+ISA, :func:`rigidsym.derivations.sec3_4.isa_point_nearest`); the overdetermined system ``A p'_0 =
 b`` of (3.65)-(3.66), its normal equations and the closed form (3.70) are checked against
-it. The kernel :func:`derivations.sec3_4_1.instant_screw_axis_point` stays in
-:mod:`derivations.sec3_4_1` (it is also used there by ``instant_screw_plucker``).
+it. The kernel :func:`rigidsym.derivations.sec3_4_1.instant_screw_axis_point` stays in
+:mod:`rigidsym.derivations.sec3_4_1` (it is also used there by ``instant_screw_plucker``).
 Singular set: ``omega = 0`` (instantaneous translation, no ISA).
 """
 
@@ -19,13 +19,95 @@ import sympy as sp
 from rigidsym.registry import Rel, Statement, equation
 
 from .common import I3, MS, Mt
-from .sec3_4 import cross, velocity_field
-from .sec3_4_1 import _W, _Z3, _screw_model, instant_screw_axis_point, norm_omega, p0_isa
+from .sec3_4 import cross, isa_point_nearest, velocity_field
+from .sec3_4_1 import (
+    _W,
+    _Z3,
+    _isa_model,
+    _screw_model,
+    instant_screw_axis_point,
+    norm_omega,
+    p0_isa,
+    r_isa,
+)
 
-Omega, omega, a, a_dot = Mt.Omega, Mt.omega, Mt.a, Mt.a_dot
+Omega, omega, a, a_dot, p, p_dot = Mt.Omega, Mt.omega, Mt.a, Mt.a_dot, Mt.p, Mt.p_dot
 A_isa, b_isa = MS("A_isa", 4, 3), MS("b_isa", 4, 1)  # (3.66)
 
 _im = sp.ImmutableMatrix
+
+
+@equation("3.60", "Points with vanishing normal velocity", section="3.4.1", singular=_W,
+          latex=r"\boldsymbol{\Omega}(\mathbf{p} - \mathbf{a}) - \frac{1}{\|\boldsymbol{\omega}"
+                r"\|^2} \boldsymbol{\Omega}^2 \dot{\mathbf{a}} = \mathbf{0}")
+def normal_velocity_vanishes() -> Statement:
+    """``Omega (p - a) - Omega^2 adot / ||omega||^2 = 0`` for ``p`` on the ISA.
+
+    Model: ``p`` a generic point of the first-principles ISA. Book: Sec. 3.4.1, Eq. (3.60).
+    3-vector, m/s. Singular set: ``omega = 0``.
+    """
+    return Statement([Rel(Omega * (p - a) - Omega**2 * a_dot / norm_omega**2, _Z3)],
+                     _isa_model())
+
+
+@equation("3.61", "ISA condition, linear in p", section="3.4.1", singular=_W,
+          latex=r"\boldsymbol{\Omega} \mathbf{p} = \boldsymbol{\Omega} \left( \mathbf{a} + "
+                r"\frac{1}{\|\boldsymbol{\omega}\|^2} \boldsymbol{\Omega} \dot{\mathbf{a}} "
+                r"\right)")
+def isa_condition_linear() -> Statement:
+    """``Omega p = Omega (a + Omega adot / ||omega||^2)`` for ``p`` on the ISA.
+
+    Book: Sec. 3.4.1, Eq. (3.61). 3-vector, m/s. Singular set: ``omega = 0``.
+    """
+    return Statement([Rel(Omega * p, Omega * (a + Omega * a_dot / norm_omega**2))],
+                     _isa_model())
+
+
+@equation("3.62a", "ISA condition about r", section="3.4.1", singular=_W,
+          latex=r"\boldsymbol{\Omega}(\mathbf{p} - \mathbf{r}) = \mathbf{0}")
+def isa_condition_about_r() -> Statement:
+    """``Omega (p - r) = 0`` for ``p`` on the ISA, ``r`` of Eq. (3.62b).
+
+    Book: Sec. 3.4.1, Eq. (3.62a). 3-vector, m/s. Singular set: ``omega = 0``.
+    """
+    m = dict(_isa_model())
+    m[r_isa] = _screw_model()[r_isa]
+    return Statement([Rel(Omega * (p - r_isa), _Z3)], m)
+
+
+@equation("3.62b", "A point r of the ISA", section="3.4.1", kind="definition", singular=_W,
+          latex=r"\mathbf{r} \equiv \mathbf{a} + \frac{1}{\|\boldsymbol{\omega}\|^2} "
+                r"\boldsymbol{\Omega} \dot{\mathbf{a}}")
+def isa_point_r() -> Statement:
+    """``r = a + Omega adot / ||omega||^2``. Checked: ``omega x v(r) = 0`` (``r`` lies on
+    the ISA: its velocity, from the motion, is parallel to ``omega``).
+
+    Book: Sec. 3.4.1, Eq. (3.62b). 3-vector, m. Singular set: ``omega = 0``.
+    """
+    m = _screw_model()
+    w = sp.Matrix(m[omega])
+    return Statement([Rel(r_isa, a + Omega * a_dot / norm_omega**2)], m, defines=("r_isa",),
+                     claims=[Rel(cross(w, velocity_field(m[r_isa], m)), _Z3, "r on the ISA")])
+
+
+@equation("3.63", "The ISA point r as a solution", section="3.4.1", singular=_W,
+          latex=r"\mathbf{p} = \mathbf{r} = \mathbf{a} + \frac{1}{\|\boldsymbol{\omega}\|^2} "
+                r"\boldsymbol{\Omega} \dot{\mathbf{a}}")
+def isa_point_solution() -> Statement:
+    """``p = r = a + Omega adot / ||omega||^2``.
+
+    Model: ``p`` the first-principles ISA point nearest to A (the foot of the perpendicular
+    from A: the solution the book picks). Also checked: the printed point lies on the ISA.
+
+    Book: Sec. 3.4.1, Eq. (3.63). 3-vector, m. Singular set: ``omega = 0``.
+    """
+    m = dict(_screw_model())
+    x = isa_point_nearest(m[a], m)
+    m.update({p: _im(x), p_dot: _im(velocity_field(x, m))})
+    expr = a + Omega * a_dot / norm_omega**2
+    w = sp.Matrix(m[omega])
+    return Statement([Rel(p, r_isa), Rel(p, expr)], m,
+                     claims=[Rel(cross(w, velocity_field(m[r_isa], m)), _Z3, "on the ISA")])
 
 
 # --------------------------------------------------------------------------- models

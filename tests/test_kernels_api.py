@@ -113,14 +113,95 @@ def test_swap_blocks():
 
 
 def test_fallback_warns_once(monkeypatch):
-    import rigidsym.kernels as mod
+    import rigidsym.kernels._core as core
 
     def boom(*a, **k):
         raise OSError("no compiler")
-    monkeypatch.setattr(mod, "_STATE", {"backend": None, "warned": False, "lib": None})
+    monkeypatch.setattr(core, "_STATE", {"backend": None, "warned": False})
+    monkeypatch.setattr(K._builtin_space(), "_clib", None)
     monkeypatch.setattr("rigidsym.codegen.cbuild.load", boom)
     with pytest.warns(RuntimeWarning, match="C backend unavailable"):
         assert K.use_backend("c") == "numpy"
     with warnings.catch_warnings():
         warnings.simplefilter("error")
         assert K.use_backend("c") == "numpy"
+
+
+# (name, argument scaled, scale): finite inputs whose output overflows, one per batch-loop
+# shape of the C template: plain loop (no singular set), counting loop, blocked sin/cos loop
+OVERFLOW = [("kinetic_energy", "omega", 1e200), ("plucker_from_points", "p1", 1e308),
+            ("N_matrix_dot", "omega", 1e307)]
+_ARGS = {"kinetic_energy": dict(I_C=np.diag([1.0, 2.0, 3.0]), m=2.0, omega=[1.0, 2.0, 3.0],
+                                c_dot=[0.5, 0.0, 1.0]),
+         "plucker_from_points": dict(p1=[1.0, 0.0, 0.0], p2=[-0.9e308, 1.0, 0.0]),
+         "N_matrix_dot": dict(e=E, phi=0.3, omega=[1.0, 2.0, -1.0])}
+
+
+
+@pytest.mark.parametrize("name,arg,scale", OVERFLOW)
+def test_overflow_is_reported(name, arg, scale):
+    """Finite inputs whose output overflows: NonFiniteResultError naming the largest input and
+    the batch indices, or NaN in exactly those rows; never a silent inf/NaN."""
+    kw = {k: np.asarray(v, dtype=float) for k, v in _ARGS[name].items()}
+    big = np.stack([kw[arg], kw[arg] * scale, kw[arg], kw[arg] * scale])      # batch (4,)
+    kw_big = dict(kw, **{arg: big})
+    assert all(np.isfinite(v).all() for v in kw_big.values())
+    with pytest.raises(K.NonFiniteResultError, match="non-finite output \\(overflow\\)") as info:
+        getattr(K, name)(**kw_big)
+    assert isinstance(info.value, K.SingularConfigurationError)
+    assert info.value.indices == [(1,), (3,)] and info.value.argument == arg
+    assert f"'{arg}'" in str(info.value)
+    res = getattr(K, name)(**kw_big, on_singular="nan")
+    res = np.asarray(res).reshape(4, -1)
+    assert np.isnan(res[[1, 3]]).all() and np.isfinite(res[[0, 2]]).all()
+    one = getattr(K, name)(**kw)
+    np.testing.assert_array_equal(res[0], np.asarray(one).ravel())
+
+
+@pytest.mark.parametrize("name,arg,scale", OVERFLOW)
+def test_c_batch_counts_overflow_rows_across_blocks(name, arg, scale, backend):
+    """The C batch function flags overflowing rows as it flags singular ones: NaN in exactly
+    those rows, their number returned; rows in several blocks and in a partial last block."""
+    if backend != "c":
+        pytest.skip("C batch loop")
+    meta = K._meta()[name]
+    n = 1000
+    bad = [0, 63, 64, 255, 256, 700, 999]
+    flat = []
+    for a in meta["args"]:
+        v = np.broadcast_to(np.asarray(_ARGS[name][a["name"]], dtype=float),
+                            (n,) + tuple(a["shape"])).copy()
+        if a["name"] == arg:
+            v[bad] *= scale
+        flat.append(v)
+    outs = [np.empty((n,) + tuple(o["shape"])) for o in meta["outputs"]]
+    with np.errstate(all="ignore"):
+        count = K.batch_function(name, "c")(*flat, *outs)
+    flagged = np.flatnonzero(np.isnan(np.concatenate([o.reshape(n, -1) for o in outs], 1))
+                             .any(axis=1))
+    assert count == len(bad) and flagged.tolist() == bad
+
+
+def test_load_other_generated_directory(tmp_path, backend):
+    """load(DIR) builds the same checked namespace from any generated directory (here two
+    kernels written by the generator into a temporary folder)."""
+    from rigidsym.codegen.generator import generate, write
+    from rigidsym.derivations.kernels_spec import KERNELS
+
+    picked = [k for k in KERNELS if k.name in ("plucker_from_points", "N_matrix")]
+    write(generate(picked), tmp_path)
+    ns = K.load(tmp_path)
+    assert K.load(tmp_path) is ns and ns is not K.load()
+    assert ns.KERNEL_NAMES == ("N_matrix", "plucker_from_points")
+    p1, p2 = [[1.0, 2.0, 3.0], [0.0, 0.0, 0.0]], [-1.0, 0.5, 2.0]
+    np.testing.assert_array_equal(ns.plucker_from_points(p2=p2, p1=p1),
+                                  K.plucker_from_points(p1, p2))
+    with pytest.raises(K.SingularConfigurationError, match="'phi'"):
+        ns.N_matrix(e=E, phi=[0.3, 0.0])
+    assert np.isnan(ns.N_matrix(e=E, phi=[0.3, 0.0], on_singular="nan")[1]).all()
+    with pytest.raises(TypeError, match="^p1:"):
+        ns.plucker_from_points(p1="abc", p2=p2)
+    if backend == "c":
+        assert ns._SPACE._clib is not None      # its own C, built through cffi
+    with pytest.raises(FileNotFoundError, match="directory"):
+        K.load(tmp_path / "nowhere")

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import pytest
 import sympy as sp
+from rigidsym.derivations import sec3_5_rate_equations as RE
 from rigidsym.derivations import sec3_5_rates as R
 from rigidsym.derivations.common import Mt
 from rigidsym.derivations.sec3_5 import point_acceleration
@@ -91,7 +92,7 @@ def test_the_other_left_inverse_of_L_is_a_left_inverse(motion):
 def test_397b_sign_of_u_dot(motion):
     """With the printed +u_dot, [V/D, u_dot] is not the rate of any of the two left inverses."""
     m, *_ = motion
-    printed = sp.BlockMatrix([[R._V_printed() / R.Rt.D, R.Rt.u_dot]])
+    printed = sp.BlockMatrix([[RE._V_printed() / R.Rt.D, R.Rt.u_dot]])
     assert _zero(R.Rt.Lt_alt_dot, printed, m) is False
     assert _zero(R.Rt.Lt_dot, printed, m) is False
 

@@ -110,7 +110,8 @@ static inline int rigidsym_N_matrix_sample_trig(
 }
 
 
-/* Batch over n samples; singular samples are written as NaN; returns their number. */
+/* Batch over n samples; singular samples and samples with a non-finite output (overflow)
+ * are written as NaN; returns their number. */
 int64_t rigidsym_N_matrix(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_e,

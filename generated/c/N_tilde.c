@@ -16,13 +16,16 @@ int64_t rigidsym_N_tilde(
     const double *RIGIDSYM_RESTRICT in_phi,
     double *RIGIDSYM_RESTRICT out_N_tilde)
 {
-    /* Pass 1, blocked: per block of 64 samples, a SIMD loop evaluates the sin/cos
-     * values into stack arrays, then a per-sample loop reads them; evaluate and count. */
+    /* Pass 1, in blocks of 64 samples: evaluate and count the flagged samples,
+     * then one finiteness test over the block's outputs (still in cache): finite inputs
+     * can overflow into a non-finite output, flagged as a singular sample is. */
     int64_t count = 0;
     double trig_0[64];
     double trig_1[64];
     for (int64_t i0 = 0; i0 < n; i0 += 64) {
         const int64_t m = n - i0 < 64 ? n - i0 : 64;
+        /* a SIMD loop evaluates the sin/cos values into stack arrays, then a per-sample loop
+         * reads them */
         RIGIDSYM_SIMD
         for (int64_t j = 0; j < m; ++j) {
             const int64_t i = i0 + j;
@@ -40,15 +43,20 @@ int64_t rigidsym_N_tilde(
                 trig_1[j],
                 out_N_tilde + 12 * i);
         }
+        count += rigidsym_any_nonfinite(out_N_tilde + 12 * i0, 12 * m);
     }
     if (count == 0)
         return 0;
-    /* Pass 2, only when some sample is singular: find them and write NaN there. */
+    /* Pass 2, only when some sample is flagged: find them, write NaN there, count them. */
+    count = 0;
     for (int64_t i = 0; i < n; ++i) {
-        if (rigidsym_N_tilde_sample(
-                in_e + 3 * i,
-                in_phi + 1 * i,
-                out_N_tilde + 12 * i)) {
+        int flagged = rigidsym_N_tilde_sample(
+            in_e + 3 * i,
+            in_phi + 1 * i,
+            out_N_tilde + 12 * i);
+        flagged |= rigidsym_any_nonfinite(out_N_tilde + 12 * i, 12);
+        if (flagged) {
+            ++count;
             for (int j = 0; j < 12; ++j)
                 out_N_tilde[12 * i + j] = NAN;
         }

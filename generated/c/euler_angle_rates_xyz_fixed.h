@@ -86,7 +86,8 @@ static inline int rigidsym_euler_angle_rates_xyz_fixed_sample_trig(
 }
 
 
-/* Batch over n samples; singular samples are written as NaN; returns their number. */
+/* Batch over n samples; singular samples and samples with a non-finite output (overflow)
+ * are written as NaN; returns their number. */
 int64_t rigidsym_euler_angle_rates_xyz_fixed(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_angles,

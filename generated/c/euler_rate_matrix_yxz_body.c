@@ -15,8 +15,9 @@ int64_t rigidsym_euler_rate_matrix_yxz_body(
     const double *RIGIDSYM_RESTRICT in_angles,
     double *RIGIDSYM_RESTRICT out_W)
 {
-    /* Pass 1, blocked: per block of 64 samples, a SIMD loop evaluates the sin/cos
-     * values into stack arrays, then a per-sample loop reads them; evaluate and count. */
+    /* Pass 1, in blocks of 64 samples: evaluate and count the flagged samples,
+     * then one finiteness test over the block's outputs (still in cache): finite inputs
+     * can overflow into a non-finite output, flagged as a singular sample is. */
     int64_t count = 0;
     double trig_0[64];
     double trig_1[64];
@@ -24,6 +25,8 @@ int64_t rigidsym_euler_rate_matrix_yxz_body(
     double trig_3[64];
     for (int64_t i0 = 0; i0 < n; i0 += 64) {
         const int64_t m = n - i0 < 64 ? n - i0 : 64;
+        /* a SIMD loop evaluates the sin/cos values into stack arrays, then a per-sample loop
+         * reads them */
         RIGIDSYM_SIMD
         for (int64_t j = 0; j < m; ++j) {
             const int64_t i = i0 + j;
@@ -44,14 +47,19 @@ int64_t rigidsym_euler_rate_matrix_yxz_body(
                 trig_3[j],
                 out_W + 9 * i);
         }
+        count += rigidsym_any_nonfinite(out_W + 9 * i0, 9 * m);
     }
     if (count == 0)
         return 0;
-    /* Pass 2, only when some sample is singular: find them and write NaN there. */
+    /* Pass 2, only when some sample is flagged: find them, write NaN there, count them. */
+    count = 0;
     for (int64_t i = 0; i < n; ++i) {
-        if (rigidsym_euler_rate_matrix_yxz_body_sample(
-                in_angles + 3 * i,
-                out_W + 9 * i)) {
+        int flagged = rigidsym_euler_rate_matrix_yxz_body_sample(
+            in_angles + 3 * i,
+            out_W + 9 * i);
+        flagged |= rigidsym_any_nonfinite(out_W + 9 * i, 9);
+        if (flagged) {
+            ++count;
             for (int j = 0; j < 9; ++j)
                 out_W[9 * i + j] = NAN;
         }

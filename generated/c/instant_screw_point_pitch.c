@@ -18,27 +18,41 @@ int64_t rigidsym_instant_screw_point_pitch(
     double *RIGIDSYM_RESTRICT out_p0,
     double *RIGIDSYM_RESTRICT out_pitch)
 {
-    /* Pass 1, branch-free so that the compiler can vectorise it: evaluate and count. */
+    /* Pass 1, in blocks of RIGIDSYM_CHECK_BLOCK samples: evaluate and count the flagged samples,
+     * then one finiteness test over the block's outputs (still in cache): finite inputs
+     * can overflow into a non-finite output, flagged as a singular sample is. */
     int64_t count = 0;
-    RIGIDSYM_SIMD_COUNT
+    for (int64_t i0 = 0; i0 < n; i0 += RIGIDSYM_CHECK_BLOCK) {
+        const int64_t m = n - i0 < RIGIDSYM_CHECK_BLOCK ? n - i0 : RIGIDSYM_CHECK_BLOCK;
+        /* branch-free so that the compiler can vectorise it */
+        RIGIDSYM_SIMD_COUNT
+        for (int64_t j = 0; j < m; ++j) {
+            const int64_t i = i0 + j;
+            count += rigidsym_instant_screw_point_pitch_sample(
+                in_omega + 3 * i,
+                in_a + 3 * i,
+                in_a_dot + 3 * i,
+                out_p0 + 3 * i,
+                out_pitch + 1 * i);
+        }
+        count += rigidsym_any_nonfinite(out_p0 + 3 * i0, 3 * m);
+        count += rigidsym_any_nonfinite(out_pitch + 1 * i0, 1 * m);
+    }
+    if (count == 0)
+        return 0;
+    /* Pass 2, only when some sample is flagged: find them, write NaN there, count them. */
+    count = 0;
     for (int64_t i = 0; i < n; ++i) {
-        count += rigidsym_instant_screw_point_pitch_sample(
+        int flagged = rigidsym_instant_screw_point_pitch_sample(
             in_omega + 3 * i,
             in_a + 3 * i,
             in_a_dot + 3 * i,
             out_p0 + 3 * i,
             out_pitch + 1 * i);
-    }
-    if (count == 0)
-        return 0;
-    /* Pass 2, only when some sample is singular: find them and write NaN there. */
-    for (int64_t i = 0; i < n; ++i) {
-        if (rigidsym_instant_screw_point_pitch_sample(
-                in_omega + 3 * i,
-                in_a + 3 * i,
-                in_a_dot + 3 * i,
-                out_p0 + 3 * i,
-                out_pitch + 1 * i)) {
+        flagged |= rigidsym_any_nonfinite(out_p0 + 3 * i, 3);
+        flagged |= rigidsym_any_nonfinite(out_pitch + 1 * i, 1);
+        if (flagged) {
+            ++count;
             for (int j = 0; j < 3; ++j)
                 out_p0[3 * i + j] = NAN;
             for (int j = 0; j < 1; ++j)

@@ -56,7 +56,8 @@ static inline int rigidsym_instant_screw_point_pitch_sample(
 }
 
 
-/* Batch over n samples; singular samples are written as NaN; returns their number. */
+/* Batch over n samples; singular samples and samples with a non-finite output (overflow)
+ * are written as NaN; returns their number. */
 int64_t rigidsym_instant_screw_point_pitch(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_omega,

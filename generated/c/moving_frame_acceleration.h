@@ -83,7 +83,8 @@ static inline int rigidsym_moving_frame_acceleration_sample(
 }
 
 
-/* Batch over n samples; singular samples are written as NaN; returns their number. */
+/* Batch over n samples; singular samples and samples with a non-finite output (overflow)
+ * are written as NaN; returns their number. */
 int64_t rigidsym_moving_frame_acceleration(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_o_ddot,

@@ -123,7 +123,8 @@ static inline int rigidsym_natural_invariants_from_rotation_sample(
 }
 
 
-/* Batch over n samples; singular samples are written as NaN; returns their number. */
+/* Batch over n samples; singular samples and samples with a non-finite output (overflow)
+ * are written as NaN; returns their number. */
 int64_t rigidsym_natural_invariants_from_rotation(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_Q,

@@ -61,7 +61,8 @@ static inline int rigidsym_newton_euler_wrench_sample(
 }
 
 
-/* Batch over n samples; singular samples are written as NaN; returns their number. */
+/* Batch over n samples; singular samples and samples with a non-finite output (overflow)
+ * are written as NaN; returns their number. */
 int64_t rigidsym_newton_euler_wrench(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_I_C,

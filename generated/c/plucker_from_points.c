@@ -16,23 +16,35 @@ int64_t rigidsym_plucker_from_points(
     const double *RIGIDSYM_RESTRICT in_p2,
     double *RIGIDSYM_RESTRICT out_kappa)
 {
-    /* Pass 1, branch-free so that the compiler can vectorise it: evaluate and count. */
+    /* Pass 1, in blocks of RIGIDSYM_CHECK_BLOCK samples: evaluate and count the flagged samples,
+     * then one finiteness test over the block's outputs (still in cache): finite inputs
+     * can overflow into a non-finite output, flagged as a singular sample is. */
     int64_t count = 0;
-    RIGIDSYM_SIMD_COUNT
-    for (int64_t i = 0; i < n; ++i) {
-        count += rigidsym_plucker_from_points_sample(
-            in_p1 + 3 * i,
-            in_p2 + 3 * i,
-            out_kappa + 6 * i);
+    for (int64_t i0 = 0; i0 < n; i0 += RIGIDSYM_CHECK_BLOCK) {
+        const int64_t m = n - i0 < RIGIDSYM_CHECK_BLOCK ? n - i0 : RIGIDSYM_CHECK_BLOCK;
+        /* branch-free so that the compiler can vectorise it */
+        RIGIDSYM_SIMD_COUNT
+        for (int64_t j = 0; j < m; ++j) {
+            const int64_t i = i0 + j;
+            count += rigidsym_plucker_from_points_sample(
+                in_p1 + 3 * i,
+                in_p2 + 3 * i,
+                out_kappa + 6 * i);
+        }
+        count += rigidsym_any_nonfinite(out_kappa + 6 * i0, 6 * m);
     }
     if (count == 0)
         return 0;
-    /* Pass 2, only when some sample is singular: find them and write NaN there. */
+    /* Pass 2, only when some sample is flagged: find them, write NaN there, count them. */
+    count = 0;
     for (int64_t i = 0; i < n; ++i) {
-        if (rigidsym_plucker_from_points_sample(
-                in_p1 + 3 * i,
-                in_p2 + 3 * i,
-                out_kappa + 6 * i)) {
+        int flagged = rigidsym_plucker_from_points_sample(
+            in_p1 + 3 * i,
+            in_p2 + 3 * i,
+            out_kappa + 6 * i);
+        flagged |= rigidsym_any_nonfinite(out_kappa + 6 * i, 6);
+        if (flagged) {
+            ++count;
             for (int j = 0; j < 6; ++j)
                 out_kappa[6 * i + j] = NAN;
         }

@@ -56,7 +56,8 @@ static inline int rigidsym_plucker_from_points_sample(
 }
 
 
-/* Batch over n samples; singular samples are written as NaN; returns their number. */
+/* Batch over n samples; singular samples and samples with a non-finite output (overflow)
+ * are written as NaN; returns their number. */
 int64_t rigidsym_plucker_from_points(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_p1,

@@ -8,6 +8,7 @@
 
 #include <math.h>
 #include <stdint.h>
+#include <string.h>
 
 #ifndef RIGIDSYM_RESTRICT
 #if defined(__STDC_VERSION__) && __STDC_VERSION__ >= 199901L
@@ -34,5 +35,23 @@ double cos(double);
 #define RIGIDSYM_SIMD_COUNT
 #define RIGIDSYM_SIMD
 #endif
+
+/* Samples per block of the batch loops that test their outputs for finiteness once per block
+ * (the outputs of a block are still in cache). */
+#define RIGIDSYM_CHECK_BLOCK 256
+
+/* Nonzero when one of the len doubles at p is infinite or NaN (exponent bits all ones).
+ * Integer arithmetic: adding 1 to an all-ones exponent carries into the sign bit, so an OR
+ * reduction over the sums vectorises without reassociating floating-point operations. */
+static inline int rigidsym_any_nonfinite(const double *RIGIDSYM_RESTRICT p, int64_t len)
+{
+    uint64_t acc = 0;
+    for (int64_t j = 0; j < len; ++j) {
+        uint64_t b;
+        memcpy(&b, p + j, sizeof b);
+        acc |= (b & 0x7ff0000000000000ULL) + 0x0010000000000000ULL;
+    }
+    return (int)(acc >> 63);
+}
 
 #endif /* RIGIDSYM_COMMON_H */

@@ -136,7 +136,8 @@ static inline int rigidsym_screw_axis_point_sample_trig(
 }
 
 
-/* Batch over n samples; singular samples are written as NaN; returns their number. */
+/* Batch over n samples; singular samples and samples with a non-finite output (overflow)
+ * are written as NaN; returns their number. */
 int64_t rigidsym_screw_axis_point(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_e,

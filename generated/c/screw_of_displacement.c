@@ -22,11 +22,38 @@ int64_t rigidsym_screw_of_displacement(
     double *RIGIDSYM_RESTRICT out_pitch,
     double *RIGIDSYM_RESTRICT out_plucker)
 {
-    /* Pass 1, branch-free so that the compiler can vectorise it: evaluate and count. */
+    /* Pass 1, in blocks of RIGIDSYM_CHECK_BLOCK samples: evaluate and count the flagged samples,
+     * then one finiteness test over the block's outputs (still in cache): finite inputs
+     * can overflow into a non-finite output, flagged as a singular sample is. */
     int64_t count = 0;
-    RIGIDSYM_SIMD_COUNT
+    for (int64_t i0 = 0; i0 < n; i0 += RIGIDSYM_CHECK_BLOCK) {
+        const int64_t m = n - i0 < RIGIDSYM_CHECK_BLOCK ? n - i0 : RIGIDSYM_CHECK_BLOCK;
+        /* branch-free so that the compiler can vectorise it */
+        RIGIDSYM_SIMD_COUNT
+        for (int64_t j = 0; j < m; ++j) {
+            const int64_t i = i0 + j;
+            count += rigidsym_screw_of_displacement_sample(
+                in_Q + 9 * i,
+                in_a + 3 * i,
+                in_a_prime + 3 * i,
+                out_e + 3 * i,
+                out_phi + 1 * i,
+                out_p0 + 3 * i,
+                out_pitch + 1 * i,
+                out_plucker + 6 * i);
+        }
+        count += rigidsym_any_nonfinite(out_e + 3 * i0, 3 * m);
+        count += rigidsym_any_nonfinite(out_phi + 1 * i0, 1 * m);
+        count += rigidsym_any_nonfinite(out_p0 + 3 * i0, 3 * m);
+        count += rigidsym_any_nonfinite(out_pitch + 1 * i0, 1 * m);
+        count += rigidsym_any_nonfinite(out_plucker + 6 * i0, 6 * m);
+    }
+    if (count == 0)
+        return 0;
+    /* Pass 2, only when some sample is flagged: find them, write NaN there, count them. */
+    count = 0;
     for (int64_t i = 0; i < n; ++i) {
-        count += rigidsym_screw_of_displacement_sample(
+        int flagged = rigidsym_screw_of_displacement_sample(
             in_Q + 9 * i,
             in_a + 3 * i,
             in_a_prime + 3 * i,
@@ -35,20 +62,13 @@ int64_t rigidsym_screw_of_displacement(
             out_p0 + 3 * i,
             out_pitch + 1 * i,
             out_plucker + 6 * i);
-    }
-    if (count == 0)
-        return 0;
-    /* Pass 2, only when some sample is singular: find them and write NaN there. */
-    for (int64_t i = 0; i < n; ++i) {
-        if (rigidsym_screw_of_displacement_sample(
-                in_Q + 9 * i,
-                in_a + 3 * i,
-                in_a_prime + 3 * i,
-                out_e + 3 * i,
-                out_phi + 1 * i,
-                out_p0 + 3 * i,
-                out_pitch + 1 * i,
-                out_plucker + 6 * i)) {
+        flagged |= rigidsym_any_nonfinite(out_e + 3 * i, 3);
+        flagged |= rigidsym_any_nonfinite(out_phi + 1 * i, 1);
+        flagged |= rigidsym_any_nonfinite(out_p0 + 3 * i, 3);
+        flagged |= rigidsym_any_nonfinite(out_pitch + 1 * i, 1);
+        flagged |= rigidsym_any_nonfinite(out_plucker + 6 * i, 6);
+        if (flagged) {
+            ++count;
             for (int j = 0; j < 3; ++j)
                 out_e[3 * i + j] = NAN;
             for (int j = 0; j < 1; ++j)

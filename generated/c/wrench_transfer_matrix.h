@@ -75,7 +75,8 @@ static inline int rigidsym_wrench_transfer_matrix_sample(
 }
 
 
-/* Batch over n samples; singular samples are written as NaN; returns their number. */
+/* Batch over n samples; singular samples and samples with a non-finite output (overflow)
+ * are written as NaN; returns their number. */
 int64_t rigidsym_wrench_transfer_matrix(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_a,

@@ -12,13 +12,17 @@ omega = W eta_dot
 
 Low-level generated NumPy kernel: inputs are C-contiguous float64 ``(n, ...)`` arrays,
 outputs are written into preallocated C-contiguous ``(n, ...)`` arrays; the return value is
-the boolean mask of singular samples. Use :mod:`rigidsym.kernels` for the checked API.
+the ``(n,)`` uint8 array of flags: 0 fine, ``SINGULAR`` (a denominator is exactly 0),
+``NONFINITE`` (otherwise a non-finite division, root or output: overflow). Use
+:mod:`rigidsym.kernels` for the checked API.
 """
 
 import numpy
 
 OPS = 7
 MATH_HASH = "de5d05afd7eb1e0a"
+#: sample flags returned by the batch function
+SINGULAR, NONFINITE = 1, 2
 
 
 def _main(angles_0, angles_1, angles_2):
@@ -45,11 +49,11 @@ CHUNK = 16384
 
 
 def euler_rate_matrix_xzx_body(angles, out_W):
-    """Evaluate on ``n`` samples; write the outputs; return the singular mask ``(n,)``."""
+    """Evaluate on ``n`` samples; write the outputs; return the flags ``(n,)``."""
     _n = angles.shape[0]
     if _n <= CHUNK:
         return _block(angles, out_W)
-    _bad = numpy.empty(_n, dtype=bool)
+    _bad = numpy.empty(_n, dtype=numpy.uint8)
     for _s in range(0, _n, CHUNK):
         _b = slice(_s, _s + CHUNK)
         _bad[_b] = _block(angles[_b], out_W[_b])
@@ -62,15 +66,21 @@ def _block(angles, out_W):
     angles_s = tuple(numpy.ascontiguousarray(angles.reshape(_n, 3).T))
     _cols = angles_s
     _outs = (out_W.reshape(_n, 9), )
-    _bad = numpy.zeros(_n, dtype=bool)
+    _bad = numpy.zeros(_n, dtype=bool)      # a denominator is exactly 0
+    _nf = numpy.zeros(_n, dtype=bool)       # a division or root is non-finite
     with numpy.errstate(all="ignore"):
         _vals, _dens, _risky = _main(*_cols)
         _store(_outs, _vals, None)
         for _d in _dens:
             _bad |= numpy.equal(_d, 0.0)
         for _r in _risky:    # divisions and roots: the only non-finite candidates
-            _bad |= ~numpy.isfinite(_r)
-    return _bad
+            _nf |= ~numpy.isfinite(_r)
+    # finite inputs can overflow into a non-finite output without any division
+    for _o in _outs:
+        _nf |= ~numpy.isfinite(_o).all(axis=1)
+    _flags = _nf.view(numpy.uint8) * numpy.uint8(NONFINITE)
+    _flags[_bad] = SINGULAR
+    return _flags
 
 
 _SIZES = (9, )

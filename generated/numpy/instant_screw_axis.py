@@ -12,13 +12,17 @@ p0' = omega x (a_dot - omega x a)/||omega||^2, pitch' = a_dot.omega/||omega||^2,
 
 Low-level generated NumPy kernel: inputs are C-contiguous float64 ``(n, ...)`` arrays,
 outputs are written into preallocated C-contiguous ``(n, ...)`` arrays; the return value is
-the boolean mask of singular samples. Use :mod:`rigidsym.kernels` for the checked API.
+the ``(n,)`` uint8 array of flags: 0 fine, ``SINGULAR`` (a denominator is exactly 0),
+``NONFINITE`` (otherwise a non-finite division, root or output: overflow). Use
+:mod:`rigidsym.kernels` for the checked API.
 """
 
 import numpy
 
 OPS = 56
 MATH_HASH = "bbbb3fe59daee446"
+#: sample flags returned by the batch function
+SINGULAR, NONFINITE = 1, 2
 
 
 def _main(omega_0, omega_1, omega_2, a_0, a_1, a_2, a_dot_0, a_dot_1, a_dot_2):
@@ -57,11 +61,11 @@ CHUNK = 16384
 
 
 def instant_screw_axis(omega, a, a_dot, out_p0, out_pitch, out_plucker):
-    """Evaluate on ``n`` samples; write the outputs; return the singular mask ``(n,)``."""
+    """Evaluate on ``n`` samples; write the outputs; return the flags ``(n,)``."""
     _n = omega.shape[0]
     if _n <= CHUNK:
         return _block(omega, a, a_dot, out_p0, out_pitch, out_plucker)
-    _bad = numpy.empty(_n, dtype=bool)
+    _bad = numpy.empty(_n, dtype=numpy.uint8)
     for _s in range(0, _n, CHUNK):
         _b = slice(_s, _s + CHUNK)
         _bad[_b] = _block(omega[_b], a[_b], a_dot[_b], out_p0[_b], out_pitch[_b], out_plucker[_b])
@@ -78,15 +82,21 @@ def _block(omega, a, a_dot, out_p0, out_pitch, out_plucker):
     a_dot_s = tuple(numpy.ascontiguousarray(a_dot.reshape(_n, 3).T))
     _cols = omega_s + a_s + a_dot_s
     _outs = (out_p0.reshape(_n, 3), out_pitch.reshape(_n, 1), out_plucker.reshape(_n, 6), )
-    _bad = numpy.zeros(_n, dtype=bool)
+    _bad = numpy.zeros(_n, dtype=bool)      # a denominator is exactly 0
+    _nf = numpy.zeros(_n, dtype=bool)       # a division or root is non-finite
     with numpy.errstate(all="ignore"):
         _vals, _dens, _risky = _main(*_cols)
         _store(_outs, _vals, None)
         for _d in _dens:
             _bad |= numpy.equal(_d, 0.0)
         for _r in _risky:    # divisions and roots: the only non-finite candidates
-            _bad |= ~numpy.isfinite(_r)
-    return _bad
+            _nf |= ~numpy.isfinite(_r)
+    # finite inputs can overflow into a non-finite output without any division
+    for _o in _outs:
+        _nf |= ~numpy.isfinite(_o).all(axis=1)
+    _flags = _nf.view(numpy.uint8) * numpy.uint8(NONFINITE)
+    _flags[_bad] = SINGULAR
+    return _flags
 
 
 _SIZES = (3, 1, 6, )

@@ -12,13 +12,17 @@
 
 Low-level generated NumPy kernel: inputs are C-contiguous float64 ``(n, ...)`` arrays,
 outputs are written into preallocated C-contiguous ``(n, ...)`` arrays; the return value is
-the boolean mask of singular samples. Use :mod:`rigidsym.kernels` for the checked API.
+the ``(n,)`` uint8 array of flags: 0 fine, ``SINGULAR`` (a denominator is exactly 0),
+``NONFINITE`` (otherwise a non-finite division, root or output: overflow). Use
+:mod:`rigidsym.kernels` for the checked API.
 """
 
 import numpy
 
 OPS = 153
 MATH_HASH = "9ff5554b1ab9fff0"
+#: sample flags returned by the batch function
+SINGULAR, NONFINITE = 1, 2
 
 
 def _main(o_ddot_0, o_ddot_1, o_ddot_2, Q_00, Q_01, Q_02, Q_10, Q_11, Q_12, Q_20, Q_21, Q_22, omega_0, omega_1, omega_2, omega_dot_0, omega_dot_1, omega_dot_2, rho_M_0, rho_M_1, rho_M_2, rho_dot_M_0, rho_dot_M_1, rho_dot_M_2, rho_ddot_M_0, rho_ddot_M_1, rho_ddot_M_2):
@@ -54,11 +58,11 @@ CHUNK = 16384
 
 
 def moving_frame_acceleration(o_ddot, Q, omega, omega_dot, rho_M, rho_dot_M, rho_ddot_M, out_p_ddot):
-    """Evaluate on ``n`` samples; write the outputs; return the singular mask ``(n,)``."""
+    """Evaluate on ``n`` samples; write the outputs; return the flags ``(n,)``."""
     _n = o_ddot.shape[0]
     if _n <= CHUNK:
         return _block(o_ddot, Q, omega, omega_dot, rho_M, rho_dot_M, rho_ddot_M, out_p_ddot)
-    _bad = numpy.empty(_n, dtype=bool)
+    _bad = numpy.empty(_n, dtype=numpy.uint8)
     for _s in range(0, _n, CHUNK):
         _b = slice(_s, _s + CHUNK)
         _bad[_b] = _block(o_ddot[_b], Q[_b], omega[_b], omega_dot[_b], rho_M[_b], rho_dot_M[_b], rho_ddot_M[_b], out_p_ddot[_b])
@@ -83,15 +87,21 @@ def _block(o_ddot, Q, omega, omega_dot, rho_M, rho_dot_M, rho_ddot_M, out_p_ddot
     rho_ddot_M_s = tuple(numpy.ascontiguousarray(rho_ddot_M.reshape(_n, 3).T))
     _cols = o_ddot_s + Q_s + omega_s + omega_dot_s + rho_M_s + rho_dot_M_s + rho_ddot_M_s
     _outs = (out_p_ddot.reshape(_n, 3), )
-    _bad = numpy.zeros(_n, dtype=bool)
+    _bad = numpy.zeros(_n, dtype=bool)      # a denominator is exactly 0
+    _nf = numpy.zeros(_n, dtype=bool)       # a division or root is non-finite
     with numpy.errstate(all="ignore"):
         _vals, _dens, _risky = _main(*_cols)
         _store(_outs, _vals, None)
         for _d in _dens:
             _bad |= numpy.equal(_d, 0.0)
         for _r in _risky:    # divisions and roots: the only non-finite candidates
-            _bad |= ~numpy.isfinite(_r)
-    return _bad
+            _nf |= ~numpy.isfinite(_r)
+    # finite inputs can overflow into a non-finite output without any division
+    for _o in _outs:
+        _nf |= ~numpy.isfinite(_o).all(axis=1)
+    _flags = _nf.view(numpy.uint8) * numpy.uint8(NONFINITE)
+    _flags[_bad] = SINGULAR
+    return _flags
 
 
 _SIZES = (3, )

@@ -13,13 +13,17 @@ phi = atan2(||vect(Q)||, (tr Q - 1)/2), e = vect(Q)/||vect(Q)||; for cos phi < -
 
 Low-level generated NumPy kernel: inputs are C-contiguous float64 ``(n, ...)`` arrays,
 outputs are written into preallocated C-contiguous ``(n, ...)`` arrays; the return value is
-the boolean mask of singular samples. Use :mod:`rigidsym.kernels` for the checked API.
+the ``(n,)`` uint8 array of flags: 0 fine, ``SINGULAR`` (a denominator is exactly 0),
+``NONFINITE`` (otherwise a non-finite division, root or output: overflow). Use
+:mod:`rigidsym.kernels` for the checked API.
 """
 
 import numpy
 
 OPS = 172
 MATH_HASH = "445339cc0a3a5a8f"
+#: sample flags returned by the batch function
+SINGULAR, NONFINITE = 1, 2
 
 
 def _near_pi_0(Q_00, Q_01, Q_02, Q_10, Q_11, Q_12, Q_20, Q_21, Q_22):
@@ -126,11 +130,11 @@ CHUNK = 16384
 
 
 def natural_invariants_from_rotation(Q, out_e, out_phi):
-    """Evaluate on ``n`` samples; write the outputs; return the singular mask ``(n,)``."""
+    """Evaluate on ``n`` samples; write the outputs; return the flags ``(n,)``."""
     _n = Q.shape[0]
     if _n <= CHUNK:
         return _block(Q, out_e, out_phi)
-    _bad = numpy.empty(_n, dtype=bool)
+    _bad = numpy.empty(_n, dtype=numpy.uint8)
     for _s in range(0, _n, CHUNK):
         _b = slice(_s, _s + CHUNK)
         _bad[_b] = _block(Q[_b], out_e[_b], out_phi[_b])
@@ -143,14 +147,15 @@ def _block(Q, out_e, out_phi):
     Q_s = tuple(numpy.ascontiguousarray(Q.reshape(_n, 9).T))
     _cols = Q_s
     _outs = (out_e.reshape(_n, 3), out_phi.reshape(_n, 1), )
-    _bad = numpy.zeros(_n, dtype=bool)
+    _bad = numpy.zeros(_n, dtype=bool)      # a denominator is exactly 0
+    _nf = numpy.zeros(_n, dtype=bool)       # a division or root is non-finite
     with numpy.errstate(all="ignore"):
         _vals, _dens, _risky = _main(*_cols)
         _store(_outs, _vals, None)
         for _d in _dens:
             _bad |= numpy.equal(_d, 0.0)
         for _r in _risky:    # divisions and roots: the only non-finite candidates
-            _bad |= ~numpy.isfinite(_r)
+            _nf |= ~numpy.isfinite(_r)
         _rest = numpy.ones(_n, dtype=bool)
         Q_00, Q_01, Q_02, Q_10, Q_11, Q_12, Q_20, Q_21, Q_22, = _cols
         _hit = numpy.logical_and(_rest, numpy.logical_and.reduce((numpy.greater_equal(Q_00, Q_11),numpy.greater_equal(Q_00, Q_22),numpy.less(Q_00 + Q_11 + Q_22, 0))))
@@ -160,10 +165,11 @@ def _block(Q, out_e, out_phi):
             _vals, _dens, _risky = _near_pi_0(*(_c[_idx] for _c in _cols))
             _store(_outs, _vals, _idx)
             _bad[_idx] = False
+            _nf[_idx] = False
             for _d in _dens:
                 _bad[_idx] |= numpy.equal(_d, 0.0)
             for _r in _risky:
-                _bad[_idx] |= ~numpy.isfinite(_r)
+                _nf[_idx] |= ~numpy.isfinite(_r)
         Q_00, Q_01, Q_02, Q_10, Q_11, Q_12, Q_20, Q_21, Q_22, = _cols
         _hit = numpy.logical_and(_rest, numpy.logical_and.reduce((numpy.greater_equal(Q_11, Q_00),numpy.greater_equal(Q_11, Q_22),numpy.less(Q_00 + Q_11 + Q_22, 0))))
         _idx = numpy.flatnonzero(_hit)
@@ -172,10 +178,11 @@ def _block(Q, out_e, out_phi):
             _vals, _dens, _risky = _near_pi_1(*(_c[_idx] for _c in _cols))
             _store(_outs, _vals, _idx)
             _bad[_idx] = False
+            _nf[_idx] = False
             for _d in _dens:
                 _bad[_idx] |= numpy.equal(_d, 0.0)
             for _r in _risky:
-                _bad[_idx] |= ~numpy.isfinite(_r)
+                _nf[_idx] |= ~numpy.isfinite(_r)
         Q_00, Q_01, Q_02, Q_10, Q_11, Q_12, Q_20, Q_21, Q_22, = _cols
         _hit = numpy.logical_and(_rest, numpy.logical_and.reduce((numpy.greater_equal(Q_22, Q_00),numpy.greater_equal(Q_22, Q_11),numpy.less(Q_00 + Q_11 + Q_22, 0))))
         _idx = numpy.flatnonzero(_hit)
@@ -184,11 +191,17 @@ def _block(Q, out_e, out_phi):
             _vals, _dens, _risky = _near_pi_2(*(_c[_idx] for _c in _cols))
             _store(_outs, _vals, _idx)
             _bad[_idx] = False
+            _nf[_idx] = False
             for _d in _dens:
                 _bad[_idx] |= numpy.equal(_d, 0.0)
             for _r in _risky:
-                _bad[_idx] |= ~numpy.isfinite(_r)
-    return _bad
+                _nf[_idx] |= ~numpy.isfinite(_r)
+    # finite inputs can overflow into a non-finite output without any division
+    for _o in _outs:
+        _nf |= ~numpy.isfinite(_o).all(axis=1)
+    _flags = _nf.view(numpy.uint8) * numpy.uint8(NONFINITE)
+    _flags[_bad] = SINGULAR
+    return _flags
 
 
 _SIZES = (3, 1, )

@@ -12,13 +12,17 @@ r = [I_C omega_dot + omega x I_C omega - n; m c_ddot - f]
 
 Low-level generated NumPy kernel: inputs are C-contiguous float64 ``(n, ...)`` arrays,
 outputs are written into preallocated C-contiguous ``(n, ...)`` arrays; the return value is
-the boolean mask of singular samples. Use :mod:`rigidsym.kernels` for the checked API.
+the ``(n,)`` uint8 array of flags: 0 fine, ``SINGULAR`` (a denominator is exactly 0),
+``NONFINITE`` (otherwise a non-finite division, root or output: overflow). Use
+:mod:`rigidsym.kernels` for the checked API.
 """
 
 import numpy
 
 OPS = 51
 MATH_HASH = "01e869ac3a6a7a98"
+#: sample flags returned by the batch function
+SINGULAR, NONFINITE = 1, 2
 
 
 def _main(I_C_00, I_C_01, I_C_02, I_C_10, I_C_11, I_C_12, I_C_20, I_C_21, I_C_22, m, omega_0, omega_1, omega_2, omega_dot_0, omega_dot_1, omega_dot_2, c_ddot_0, c_ddot_1, c_ddot_2, n_0, n_1, n_2, f_0, f_1, f_2):
@@ -42,11 +46,11 @@ CHUNK = 16384
 
 
 def newton_euler_residual(I_C, m, omega, omega_dot, c_ddot, n, f, out_r):
-    """Evaluate on ``n`` samples; write the outputs; return the singular mask ``(n,)``."""
+    """Evaluate on ``n`` samples; write the outputs; return the flags ``(n,)``."""
     _n = I_C.shape[0]
     if _n <= CHUNK:
         return _block(I_C, m, omega, omega_dot, c_ddot, n, f, out_r)
-    _bad = numpy.empty(_n, dtype=bool)
+    _bad = numpy.empty(_n, dtype=numpy.uint8)
     for _s in range(0, _n, CHUNK):
         _b = slice(_s, _s + CHUNK)
         _bad[_b] = _block(I_C[_b], m[_b], omega[_b], omega_dot[_b], c_ddot[_b], n[_b], f[_b], out_r[_b])
@@ -70,15 +74,21 @@ def _block(I_C, m, omega, omega_dot, c_ddot, n, f, out_r):
     f_s = tuple(numpy.ascontiguousarray(f.reshape(_n, 3).T))
     _cols = I_C_s + m_s + omega_s + omega_dot_s + c_ddot_s + n_s + f_s
     _outs = (out_r.reshape(_n, 6), )
-    _bad = numpy.zeros(_n, dtype=bool)
+    _bad = numpy.zeros(_n, dtype=bool)      # a denominator is exactly 0
+    _nf = numpy.zeros(_n, dtype=bool)       # a division or root is non-finite
     with numpy.errstate(all="ignore"):
         _vals, _dens, _risky = _main(*_cols)
         _store(_outs, _vals, None)
         for _d in _dens:
             _bad |= numpy.equal(_d, 0.0)
         for _r in _risky:    # divisions and roots: the only non-finite candidates
-            _bad |= ~numpy.isfinite(_r)
-    return _bad
+            _nf |= ~numpy.isfinite(_r)
+    # finite inputs can overflow into a non-finite output without any division
+    for _o in _outs:
+        _nf |= ~numpy.isfinite(_o).all(axis=1)
+    _flags = _nf.view(numpy.uint8) * numpy.uint8(NONFINITE)
+    _flags[_bad] = SINGULAR
+    return _flags
 
 
 _SIZES = (6, )

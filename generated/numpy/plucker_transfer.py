@@ -12,13 +12,17 @@ kappa_B = U(a, b) kappa_A
 
 Low-level generated NumPy kernel: inputs are C-contiguous float64 ``(n, ...)`` arrays,
 outputs are written into preallocated C-contiguous ``(n, ...)`` arrays; the return value is
-the boolean mask of singular samples. Use :mod:`rigidsym.kernels` for the checked API.
+the ``(n,)`` uint8 array of flags: 0 fine, ``SINGULAR`` (a denominator is exactly 0),
+``NONFINITE`` (otherwise a non-finite division, root or output: overflow). Use
+:mod:`rigidsym.kernels` for the checked API.
 """
 
 import numpy
 
 OPS = 15
 MATH_HASH = "69d9b4ff4ea5cbea"
+#: sample flags returned by the batch function
+SINGULAR, NONFINITE = 1, 2
 
 
 def _main(kappa_A_0, kappa_A_1, kappa_A_2, kappa_A_3, kappa_A_4, kappa_A_5, a_0, a_1, a_2, b_0, b_1, b_2):
@@ -42,11 +46,11 @@ CHUNK = 16384
 
 
 def plucker_transfer(kappa_A, a, b, out_kappa_B):
-    """Evaluate on ``n`` samples; write the outputs; return the singular mask ``(n,)``."""
+    """Evaluate on ``n`` samples; write the outputs; return the flags ``(n,)``."""
     _n = kappa_A.shape[0]
     if _n <= CHUNK:
         return _block(kappa_A, a, b, out_kappa_B)
-    _bad = numpy.empty(_n, dtype=bool)
+    _bad = numpy.empty(_n, dtype=numpy.uint8)
     for _s in range(0, _n, CHUNK):
         _b = slice(_s, _s + CHUNK)
         _bad[_b] = _block(kappa_A[_b], a[_b], b[_b], out_kappa_B[_b])
@@ -63,15 +67,21 @@ def _block(kappa_A, a, b, out_kappa_B):
     b_s = tuple(numpy.ascontiguousarray(b.reshape(_n, 3).T))
     _cols = kappa_A_s + a_s + b_s
     _outs = (out_kappa_B.reshape(_n, 6), )
-    _bad = numpy.zeros(_n, dtype=bool)
+    _bad = numpy.zeros(_n, dtype=bool)      # a denominator is exactly 0
+    _nf = numpy.zeros(_n, dtype=bool)       # a division or root is non-finite
     with numpy.errstate(all="ignore"):
         _vals, _dens, _risky = _main(*_cols)
         _store(_outs, _vals, None)
         for _d in _dens:
             _bad |= numpy.equal(_d, 0.0)
         for _r in _risky:    # divisions and roots: the only non-finite candidates
-            _bad |= ~numpy.isfinite(_r)
-    return _bad
+            _nf |= ~numpy.isfinite(_r)
+    # finite inputs can overflow into a non-finite output without any division
+    for _o in _outs:
+        _nf |= ~numpy.isfinite(_o).all(axis=1)
+    _flags = _nf.view(numpy.uint8) * numpy.uint8(NONFINITE)
+    _flags[_bad] = SINGULAR
+    return _flags
 
 
 _SIZES = (6, )

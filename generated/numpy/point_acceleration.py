@@ -12,13 +12,17 @@ p_ddot = a_ddot + (Omega_dot + Omega^2)(p - a)
 
 Low-level generated NumPy kernel: inputs are C-contiguous float64 ``(n, ...)`` arrays,
 outputs are written into preallocated C-contiguous ``(n, ...)`` arrays; the return value is
-the boolean mask of singular samples. Use :mod:`rigidsym.kernels` for the checked API.
+the ``(n,)`` uint8 array of flags: 0 fine, ``SINGULAR`` (a denominator is exactly 0),
+``NONFINITE`` (otherwise a non-finite division, root or output: overflow). Use
+:mod:`rigidsym.kernels` for the checked API.
 """
 
 import numpy
 
 OPS = 36
 MATH_HASH = "bba0e838d11c478a"
+#: sample flags returned by the batch function
+SINGULAR, NONFINITE = 1, 2
 
 
 def _main(a_ddot_0, a_ddot_1, a_ddot_2, omega_0, omega_1, omega_2, omega_dot_0, omega_dot_1, omega_dot_2, p_0, p_1, p_2, a_0, a_1, a_2):
@@ -42,11 +46,11 @@ CHUNK = 16384
 
 
 def point_acceleration(a_ddot, omega, omega_dot, p, a, out_p_ddot):
-    """Evaluate on ``n`` samples; write the outputs; return the singular mask ``(n,)``."""
+    """Evaluate on ``n`` samples; write the outputs; return the flags ``(n,)``."""
     _n = a_ddot.shape[0]
     if _n <= CHUNK:
         return _block(a_ddot, omega, omega_dot, p, a, out_p_ddot)
-    _bad = numpy.empty(_n, dtype=bool)
+    _bad = numpy.empty(_n, dtype=numpy.uint8)
     for _s in range(0, _n, CHUNK):
         _b = slice(_s, _s + CHUNK)
         _bad[_b] = _block(a_ddot[_b], omega[_b], omega_dot[_b], p[_b], a[_b], out_p_ddot[_b])
@@ -67,15 +71,21 @@ def _block(a_ddot, omega, omega_dot, p, a, out_p_ddot):
     a_s = tuple(numpy.ascontiguousarray(a.reshape(_n, 3).T))
     _cols = a_ddot_s + omega_s + omega_dot_s + p_s + a_s
     _outs = (out_p_ddot.reshape(_n, 3), )
-    _bad = numpy.zeros(_n, dtype=bool)
+    _bad = numpy.zeros(_n, dtype=bool)      # a denominator is exactly 0
+    _nf = numpy.zeros(_n, dtype=bool)       # a division or root is non-finite
     with numpy.errstate(all="ignore"):
         _vals, _dens, _risky = _main(*_cols)
         _store(_outs, _vals, None)
         for _d in _dens:
             _bad |= numpy.equal(_d, 0.0)
         for _r in _risky:    # divisions and roots: the only non-finite candidates
-            _bad |= ~numpy.isfinite(_r)
-    return _bad
+            _nf |= ~numpy.isfinite(_r)
+    # finite inputs can overflow into a non-finite output without any division
+    for _o in _outs:
+        _nf |= ~numpy.isfinite(_o).all(axis=1)
+    _flags = _nf.view(numpy.uint8) * numpy.uint8(NONFINITE)
+    _flags[_bad] = SINGULAR
+    return _flags
 
 
 _SIZES = (3, )

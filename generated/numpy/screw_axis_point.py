@@ -12,13 +12,17 @@ p0 = (Q - 1)^T (Q a - a') / (2 (1 - cos phi)), Q from (e, phi) by (2.49)
 
 Low-level generated NumPy kernel: inputs are C-contiguous float64 ``(n, ...)`` arrays,
 outputs are written into preallocated C-contiguous ``(n, ...)`` arrays; the return value is
-the boolean mask of singular samples. Use :mod:`rigidsym.kernels` for the checked API.
+the ``(n,)`` uint8 array of flags: 0 fine, ``SINGULAR`` (a denominator is exactly 0),
+``NONFINITE`` (otherwise a non-finite division, root or output: overflow). Use
+:mod:`rigidsym.kernels` for the checked API.
 """
 
 import numpy
 
 OPS = 84
 MATH_HASH = "e89a638961851614"
+#: sample flags returned by the batch function
+SINGULAR, NONFINITE = 1, 2
 
 
 def _main(e_0, e_1, e_2, phi, a_0, a_1, a_2, a_prime_0, a_prime_1, a_prime_2):
@@ -63,11 +67,11 @@ CHUNK = 16384
 
 
 def screw_axis_point(e, phi, a, a_prime, out_p0):
-    """Evaluate on ``n`` samples; write the outputs; return the singular mask ``(n,)``."""
+    """Evaluate on ``n`` samples; write the outputs; return the flags ``(n,)``."""
     _n = e.shape[0]
     if _n <= CHUNK:
         return _block(e, phi, a, a_prime, out_p0)
-    _bad = numpy.empty(_n, dtype=bool)
+    _bad = numpy.empty(_n, dtype=numpy.uint8)
     for _s in range(0, _n, CHUNK):
         _b = slice(_s, _s + CHUNK)
         _bad[_b] = _block(e[_b], phi[_b], a[_b], a_prime[_b], out_p0[_b])
@@ -85,15 +89,21 @@ def _block(e, phi, a, a_prime, out_p0):
     a_prime_s = tuple(numpy.ascontiguousarray(a_prime.reshape(_n, 3).T))
     _cols = e_s + phi_s + a_s + a_prime_s
     _outs = (out_p0.reshape(_n, 3), )
-    _bad = numpy.zeros(_n, dtype=bool)
+    _bad = numpy.zeros(_n, dtype=bool)      # a denominator is exactly 0
+    _nf = numpy.zeros(_n, dtype=bool)       # a division or root is non-finite
     with numpy.errstate(all="ignore"):
         _vals, _dens, _risky = _main(*_cols)
         _store(_outs, _vals, None)
         for _d in _dens:
             _bad |= numpy.equal(_d, 0.0)
         for _r in _risky:    # divisions and roots: the only non-finite candidates
-            _bad |= ~numpy.isfinite(_r)
-    return _bad
+            _nf |= ~numpy.isfinite(_r)
+    # finite inputs can overflow into a non-finite output without any division
+    for _o in _outs:
+        _nf |= ~numpy.isfinite(_o).all(axis=1)
+    _flags = _nf.view(numpy.uint8) * numpy.uint8(NONFINITE)
+    _flags[_bad] = SINGULAR
+    return _flags
 
 
 _SIZES = (3, )

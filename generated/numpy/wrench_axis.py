@@ -12,13 +12,17 @@ p0'' = f x (n_A - a x f)... per (3.109)-(3.111), kappa through p0'' along f
 
 Low-level generated NumPy kernel: inputs are C-contiguous float64 ``(n, ...)`` arrays,
 outputs are written into preallocated C-contiguous ``(n, ...)`` arrays; the return value is
-the boolean mask of singular samples. Use :mod:`rigidsym.kernels` for the checked API.
+the ``(n,)`` uint8 array of flags: 0 fine, ``SINGULAR`` (a denominator is exactly 0),
+``NONFINITE`` (otherwise a non-finite division, root or output: overflow). Use
+:mod:`rigidsym.kernels` for the checked API.
 """
 
 import numpy
 
 OPS = 59
 MATH_HASH = "6e28211949601ec4"
+#: sample flags returned by the batch function
+SINGULAR, NONFINITE = 1, 2
 
 
 def _main(w_A_0, w_A_1, w_A_2, w_A_3, w_A_4, w_A_5, a_0, a_1, a_2):
@@ -58,11 +62,11 @@ CHUNK = 16384
 
 
 def wrench_axis(w_A, a, out_p0, out_pitch, out_plucker):
-    """Evaluate on ``n`` samples; write the outputs; return the singular mask ``(n,)``."""
+    """Evaluate on ``n`` samples; write the outputs; return the flags ``(n,)``."""
     _n = w_A.shape[0]
     if _n <= CHUNK:
         return _block(w_A, a, out_p0, out_pitch, out_plucker)
-    _bad = numpy.empty(_n, dtype=bool)
+    _bad = numpy.empty(_n, dtype=numpy.uint8)
     for _s in range(0, _n, CHUNK):
         _b = slice(_s, _s + CHUNK)
         _bad[_b] = _block(w_A[_b], a[_b], out_p0[_b], out_pitch[_b], out_plucker[_b])
@@ -77,15 +81,21 @@ def _block(w_A, a, out_p0, out_pitch, out_plucker):
     a_s = tuple(numpy.ascontiguousarray(a.reshape(_n, 3).T))
     _cols = w_A_s + a_s
     _outs = (out_p0.reshape(_n, 3), out_pitch.reshape(_n, 1), out_plucker.reshape(_n, 6), )
-    _bad = numpy.zeros(_n, dtype=bool)
+    _bad = numpy.zeros(_n, dtype=bool)      # a denominator is exactly 0
+    _nf = numpy.zeros(_n, dtype=bool)       # a division or root is non-finite
     with numpy.errstate(all="ignore"):
         _vals, _dens, _risky = _main(*_cols)
         _store(_outs, _vals, None)
         for _d in _dens:
             _bad |= numpy.equal(_d, 0.0)
         for _r in _risky:    # divisions and roots: the only non-finite candidates
-            _bad |= ~numpy.isfinite(_r)
-    return _bad
+            _nf |= ~numpy.isfinite(_r)
+    # finite inputs can overflow into a non-finite output without any division
+    for _o in _outs:
+        _nf |= ~numpy.isfinite(_o).all(axis=1)
+    _flags = _nf.view(numpy.uint8) * numpy.uint8(NONFINITE)
+    _flags[_bad] = SINGULAR
+    return _flags
 
 
 _SIZES = (3, 1, 6, )

@@ -76,13 +76,17 @@ def _key(gdir: Path, flags: list[str]) -> str:
     return h.hexdigest()[:16]
 
 
-def build(force: bool = False) -> Path:
+def build(force: bool = False, gdir: Path | None = None) -> Path:
     """Compile (if needed) and return the path of the extension module.
+
+    Args:
+        force: rebuild even if a build of the same sources is cached.
+        gdir: a generated directory (``kernels.json`` + ``c/``); default the package's.
 
     Raises:
         Exception: whatever the compiler / cffi raises when no C compiler works.
     """
-    gdir = generated_dir()
+    gdir = generated_dir() if gdir is None else Path(gdir)
     meta = json.loads((gdir / "kernels.json").read_text())
     base = _flags()
     last = None
@@ -129,9 +133,10 @@ def _build(gdir: Path, meta: dict, flags: list[str], libs: list[str], force: boo
     return final
 
 
-def load(force: bool = False):
-    """Build if needed and import the extension; returns ``(ffi, lib)``."""
-    path = build(force=force)
+def load(force: bool = False, gdir: Path | None = None):
+    """Build if needed and import the extension of ``gdir`` (default the package's
+    generated directory); returns ``(ffi, lib)``."""
+    path = build(force=force, gdir=gdir)
     name = path.name.split(".")[0]
     if name in sys.modules:
         mod = sys.modules[name]

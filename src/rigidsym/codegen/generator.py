@@ -20,6 +20,7 @@ import sympy as sp
 
 import rigidsym
 
+from .api_spec import render_api
 from .optimise import Program, compile_program, math_hash
 from .printers import KernelCPrinter, KernelNumPyPrinter
 from .spec import Kernel, flat_symbols, input_symbols
@@ -332,6 +333,7 @@ def generate(kernels=None, origin: str = BOOK_ORIGIN) -> GenerationResult:
     ver = {"sympy": sp.__version__, "rigidsym": rigidsym.__version__}
     files["kernels.json"] = json.dumps({"generator": ver, "kernels": metas,
                                         "skipped": notes}, indent=1, sort_keys=True) + "\n"
+    files["api.py"] = render_api(env, metas, ver)
     for t, path in (("package_init.py.j2", "__init__.py"),
                     ("numpy_index.py.j2", "numpy/__init__.py"),
                     ("c_common.h.j2", "c/rigidsym_common.h"),

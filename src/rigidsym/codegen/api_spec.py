@@ -1,0 +1,92 @@
+"""The Python face of the generated kernels: common keywords and the ``api.py`` module.
+
+``rigidsym generate`` writes ``api.py`` beside ``kernels.json``: one real function per
+public kernel, whose parameters are the kernel's arguments followed by the common keywords
+(:data:`COMMON_KEYWORDS`, defined here once), with type hints (``ArrayLike`` in,
+``NDArray[np.floating]`` out) and the docstring built from the metadata. Static tools and
+``help()`` therefore see the true signatures; :func:`rigidsym.kernels.load` binds each
+module to the checked evaluation of its own generated directory.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+__all__ = ["Keyword", "COMMON_KEYWORDS", "render_api", "docstring"]
+
+
+@dataclass(frozen=True)
+class Keyword:
+    """A keyword-only parameter shared by every kernel.
+
+    Attributes:
+        name: parameter name.
+        annotation: type hint (source text, resolved in the generated module).
+        default: default value (source text).
+        doc: one line for the docstrings.
+    """
+
+    name: str
+    annotation: str
+    default: str
+    doc: str
+
+
+#: the keywords every kernel accepts after its arguments (the one definition)
+COMMON_KEYWORDS = (
+    Keyword("out", "Out", "None",
+            "preallocated float64 output array (a tuple of them for several outputs), "
+            "shape batch + output shape; returned filled"),
+    Keyword("check", "bool", "True",
+            "validate the inputs (finite, unit e/eta, orthogonal Q) and report a non-finite "
+            "output (overflow)"),
+    Keyword("on_singular", "OnSingular", '"raise"',
+            '"raise" (SingularConfigurationError naming the argument and the batch indices) '
+            'or "nan" (NaN in exactly those rows)'),
+    Keyword("threads", "int | None", "None",
+            "worker threads of the C batch loop (a positive int; None: the default)"),
+)
+
+
+def _shape(s: list) -> str:
+    return "(...)" if not s else f"(..., {', '.join(map(str, s))})"
+
+
+def docstring(meta: dict) -> str:
+    """Google-style docstring of a kernel from its ``kernels.json`` entry."""
+    lines = [meta["summary"], "", f"    {meta['formula']}", "",
+             f"Book: Eq. {', '.join('(' + i + ')' for i in meta['ids'])}; composed of "
+             f"{', '.join(meta['sources'])}.", "", "Args:"]
+    for a in meta["args"]:
+        kind = {"unit": ", unit", "rotation": ", proper orthogonal"}.get(a["kind"], "")
+        doc = f"; {a['doc']}" if a["doc"] else ""
+        lines.append(f"    {a['name']}: array-like {_shape(a['shape'])}{kind}{doc}")
+    for k in COMMON_KEYWORDS:
+        lines.append(f"    {k.name}: {k.doc}.")
+    lines += ["", "Returns:"]
+    for o in meta["outputs"]:
+        doc = f"; {o['doc']}" if o["doc"] else ""
+        lines.append(f"    {o['name']}: ndarray {_shape(o['shape'])}{doc}")
+    lines += ["", "Raises:",
+              "    TypeError: an argument that is not an array of real numbers (str, object, "
+              "complex, bool).",
+              "    ValueError: bad shape, batch shapes that do not broadcast, ragged or "
+              "non-finite input, non-unit or non-orthogonal argument (naming it).",
+              "    NonFiniteResultError: finite inputs overflowed into a non-finite output "
+              "(with check=True), unless on_singular='nan'."]
+    if meta["singular"]:
+        lines += ["    SingularConfigurationError: on the singular set "
+                  f"({meta['singular']}), unless on_singular='nan'.",
+                  "", "Notes:", f"    Singular set: {meta['singular']}."]
+    if meta["notes"]:
+        lines += ["", f"    {meta['notes']}"]
+    lines += ["", f"    Generated; {meta['ops']} operations; math hash {meta['hash']}."]
+    return "\n".join(lines)
+
+
+def render_api(env, metas: list[dict], versions: dict) -> str:
+    """Text of the generated ``api.py`` for the public kernels among ``metas``."""
+    public = [m for m in metas if m["public"]]
+    return env.get_template("api.py.j2").render(
+        kernels=public, keywords=COMMON_KEYWORDS, docstring=docstring,
+        template="api.py.j2", **versions)

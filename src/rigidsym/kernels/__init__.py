@@ -1,0 +1,267 @@
+"""Batched NumPy/C kernels generated from the verified chapter-3 declarations.
+
+Every kernel accepts array-likes with leading batch axes that broadcast (vectors
+``(..., 3)``, matrices ``(..., 3, 3)`` row-major, twists ``[omega; v]``, wrenches ``[n; f]``,
+float64; ints are converted), positionally or by keyword, validates them, calls the
+generated code and returns new arrays (or fills ``out=``). The kernels are real functions
+generated into ``generated/api.py`` (``rigidsym generate``), with type hints; the C is
+compiled through cffi on first use into the user cache (``rigidsym build-c``).
+
+Common keyword arguments of every kernel (``rigidsym.codegen.api_spec.COMMON_KEYWORDS``):
+
+* ``out``: preallocated output array (a tuple for several outputs), shape batch + output.
+* ``check``: validate finiteness, unit vectors and rotations, and report a non-finite output
+  from finite inputs (overflow) (default True).
+* ``on_singular``: ``"raise"`` (default) raises :class:`SingularConfigurationError` naming
+  the argument and the batch indices (:class:`NonFiniteResultError` for an overflow);
+  ``"nan"`` returns NaN in exactly those rows.
+* ``threads``: worker threads of the C batch loop (a positive int, or None).
+
+Bad input raises ``TypeError`` (str, objects, complex or bool values) or ``ValueError``
+(shape, broadcasting, ragged lists, non-finite values, constraints), naming the argument.
+
+:func:`load` builds the same namespace from any generated directory
+(``rigidsym generate --out DIR``); this module's kernels are ``load()`` of the package's.
+
+Example:
+    >>> import numpy as np
+    >>> from rigidsym import kernels
+    >>> Q = kernels.rotation_from_natural_invariants(e=[0.0, 0.0, 1.0], phi=np.pi / 2)
+    >>> np.round(Q, 12).tolist()
+    [[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]]
+"""
+
+from __future__ import annotations
+
+import importlib
+import types
+from collections.abc import Callable
+from functools import cache
+from pathlib import Path
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from rigidsym.generated.api import *  # noqa: F403 - the generated kernels (true signatures)
+from rigidsym.generated.api import __all__ as _KERNELS
+
+from ._core import (
+    _STATE,
+    KernelSpace,
+    NonFiniteResultError,
+    SingularConfigurationError,
+    _select,
+)
+from ._core import ORTHO_TOL as ORTHO_TOL  # re-exported: the tolerances of check=True
+from ._core import UNIT_TOL as UNIT_TOL
+
+__all__ = ["SingularConfigurationError", "NonFiniteResultError", "use_backend", "backend",
+           "swap_blocks", "load", "batch_function", "euler_rate_matrix", "euler_angle_rates"]
+__all__ += _KERNELS
+
+#: names of the public generated kernels
+KERNEL_NAMES = tuple(sorted(_KERNELS))
+
+_EULER_SEQUENCES = ("ZXZ", "XYX", "YZY", "ZYZ", "XZX", "YXY",
+                    "XYZ", "YZX", "ZXY", "XZY", "ZYX", "YXZ")
+_PACKAGE_API = "rigidsym.generated.api"
+
+
+@cache
+def _builtin_space() -> KernelSpace:
+    from rigidsym.codegen.cbuild import generated_dir
+    # the NumPy module names of the package's kernels are stable (tests look them up)
+    return KernelSpace.from_directory(generated_dir(), prefix="rigidsym._generated_numpy")
+
+
+def _bind_module(mod: types.ModuleType) -> KernelSpace:
+    """Bind a generated ``api`` module to the kernel space of its directory."""
+    here = Path(mod.__file__).resolve().parent
+    if mod.__name__ == _PACKAGE_API:
+        space = _builtin_space()
+    else:
+        space = KernelSpace.from_directory(here)
+    mod._SPACE = space
+    return space
+
+
+_LOADED: dict[Path, types.ModuleType] = {}
+
+
+def load(directory: str | Path | None = None) -> types.ModuleType:
+    """The checked kernel namespace of a generated directory.
+
+    Args:
+        directory: a folder as ``rigidsym generate --out DIR`` writes it (``kernels.json``,
+            ``api.py``, ``numpy/``, ``c/``); default the package's own kernels.
+
+    Returns:
+        A module whose public functions are the directory's kernels, with the same
+        validation, ``on_singular`` handling and C (through cffi, NumPy fallback) as
+        :mod:`rigidsym.kernels`; also ``KERNEL_NAMES`` and ``batch_function(name, backend)``.
+        Loading the same directory twice returns the same module.
+
+    Raises:
+        FileNotFoundError: ``directory`` has no ``kernels.json`` or ``api.py``.
+
+    Example:
+        >>> load().twist_transfer is twist_transfer
+        True
+    """
+    from rigidsym.codegen.cbuild import generated_dir
+
+    gdir = generated_dir() if directory is None else Path(directory).resolve()
+    for f in ("kernels.json", "api.py"):
+        if not (gdir / f).is_file():
+            raise FileNotFoundError(f"directory: no {f} in {gdir} (run `rigidsym generate "
+                                    f"--out {gdir}`)")
+    if gdir in _LOADED:
+        return _LOADED[gdir]
+    if gdir == generated_dir().resolve():
+        mod = importlib.import_module(_PACKAGE_API)
+    else:
+        space = KernelSpace.from_directory(gdir)
+        from ._core import _load_module
+        mod = _load_module(f"{space.prefix}.api", gdir / "api.py")
+    space = _bind_module(mod)
+    mod.KERNEL_NAMES = tuple(mod.__all__)
+    mod.batch_function = space.batch_function
+    _LOADED[gdir] = mod
+    return mod
+
+
+def use_backend(name: str) -> str:
+    """Select ``"c"`` (compiled through cffi) or ``"numpy"``; returns the backend in use.
+
+    ``"c"`` falls back to ``"numpy"`` with a one-time warning when compiling fails (no
+    compiler, no cffi).
+
+    Raises:
+        ValueError: ``name`` is neither.
+    """
+    return _select(name)
+
+
+def backend() -> str:
+    """The backend in use (selects ``"c"`` with NumPy fallback on first call)."""
+    return _STATE["backend"] or _select("c")
+
+
+def batch_function(name: str, backend_name: str | None = None,
+                   threads: int | None = None) -> Callable:
+    """Low-level ``f(*inputs, *outputs) -> flags`` of a package kernel (for benchmarks).
+
+    Inputs and outputs are C-contiguous ``(n, ...)`` float64 arrays, without validation or
+    broadcasting. For the C backend the return value is the number of flagged samples
+    (singular or non-finite, written as NaN); for NumPy the ``(n,)`` uint8 flags (1
+    singular, 2 non-finite output).
+    """
+    return _builtin_space().batch_function(name, backend_name, threads)
+
+
+def _meta() -> dict:
+    return _builtin_space().meta
+
+
+def _numpy_kernel(name: str) -> Callable:
+    return _builtin_space().numpy_kernel(name)
+
+
+def _call(name: str, args: tuple, **keywords):
+    return _builtin_space().call(name, args, **keywords)
+
+
+def _euler_name(kind: str, sequence: str, frame: str) -> str:
+    seq = sequence.upper() if isinstance(sequence, str) else sequence
+    if seq not in _EULER_SEQUENCES:
+        raise ValueError(f"sequence: expected one of {', '.join(_EULER_SEQUENCES)}, "
+                         f"got {sequence!r}")
+    if frame not in ("fixed", "body"):
+        raise ValueError(f"frame: expected 'fixed' or 'body', got {frame!r}")
+    return f"{kind}_{seq.lower()}_{frame}"
+
+
+def euler_rate_matrix(angles: ArrayLike, sequence: str, frame: str = "fixed", *,
+                      out: NDArray[np.float64] | None = None, check: bool = True,
+                      threads: int | None = None) -> NDArray[np.floating]:
+    """Euler-angle rate matrix ``W`` with ``omega = W eta_dot`` (Exercise 3.10).
+
+    Args:
+        angles: array-like (..., 3), the intrinsic Euler angles [rad] of ``sequence``.
+        sequence: one of the twelve intrinsic sequences ("ZXZ", "ZYX", ...).
+        frame: "fixed" (omega in the fixed frame) or "body".
+        out, check, threads: see :mod:`rigidsym.kernels`.
+
+    Returns:
+        ndarray (..., 3, 3) [1].
+
+    Raises:
+        TypeError, ValueError: bad input, naming the argument (also a bad ``sequence`` or
+            ``frame``).
+
+    Example:
+        >>> euler_rate_matrix([0.1, 0.2, 0.3], "ZYX").shape
+        (3, 3)
+    """
+    return _call(_euler_name("euler_rate_matrix", sequence, frame), (angles,), out=out,
+                 check=check, threads=threads)
+
+
+def euler_angle_rates(angles: ArrayLike, omega: ArrayLike, sequence: str,
+                      frame: str = "fixed", *, out: NDArray[np.float64] | None = None,
+                      check: bool = True, on_singular: str = "raise",
+                      threads: int | None = None) -> NDArray[np.floating]:
+    """Euler-angle rates ``eta_dot = W^-1 omega`` (Exercise 3.10).
+
+    Args:
+        angles: array-like (..., 3) [rad].
+        omega: array-like (..., 3) [rad/s], in the frame given by ``frame``.
+        sequence: one of the twelve intrinsic sequences.
+        frame: "fixed" or "body".
+        out, check, on_singular, threads: see :mod:`rigidsym.kernels`.
+
+    Returns:
+        ndarray (..., 3) [rad/s].
+
+    Raises:
+        TypeError, ValueError: bad input, naming the argument.
+        SingularConfigurationError: at gimbal lock (det W = 0), unless on_singular="nan".
+
+    Example:
+        >>> euler_angle_rates([0.1, 0.2, 0.3], [0.0, 0.0, 1.0], "ZYX").shape
+        (3,)
+    """
+    return _call(_euler_name("euler_angle_rates", sequence, frame), (angles, omega), out=out,
+                 check=check, on_singular=on_singular, threads=threads)
+
+
+def swap_blocks(x: ArrayLike, matrix: bool = False) -> NDArray[np.floating]:
+    """Swap the 3-blocks of 6-arrays: ``[omega; v] <-> [v; omega]``, ``[n; f] <-> [f; n]``.
+
+    Converts to and from the order of Pinocchio and ROS. With ``matrix=True`` a
+    ``(..., 6, 6)`` operator is converted (rows and columns).
+
+    Args:
+        x: array-like (..., 6), or (..., 6, 6) with ``matrix=True``.
+        matrix: convert an operator instead of a vector.
+
+    Returns:
+        ndarray of the shape of ``x``.
+
+    Raises:
+        TypeError, ValueError: ``x`` not real numbers, or of the wrong trailing shape.
+
+    Example:
+        >>> swap_blocks([1, 2, 3, 4, 5, 6]).tolist()
+        [4.0, 5.0, 6.0, 1.0, 2.0, 3.0]
+    """
+    from ._core import as_array
+
+    shape = (6, 6) if matrix else (6,)
+    a = as_array(x, {"name": "x", "tshape": shape})
+    perm = [3, 4, 5, 0, 1, 2]
+    return a[..., perm, :][..., perm] if matrix else a[..., perm]
+
+
+# the package's kernels are load() of its generated directory (binds generated.api here)
+load()

@@ -1,0 +1,371 @@
+"""The checked evaluation of one generated directory (``kernels.json`` + ``numpy/`` + ``c/``).
+
+A :class:`KernelSpace` reads the metadata, loads the NumPy kernels and (lazily) compiles
+the C ones through cffi; :meth:`KernelSpace.call` validates the inputs (errors name the
+argument), broadcasts the batch, runs the selected backend, and reports singular and
+non-finite samples. The generated ``api.py`` functions end in that call.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import importlib.util
+import json
+import math
+import sys
+import warnings
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+#: tolerance on | ||e|| - 1 | for unit-vector arguments (e, eta).
+UNIT_TOL = 1e-8
+#: tolerance on max |Q^T Q - 1| for rotation arguments (and det Q > 0).
+ORTHO_TOL = 1e-8
+
+#: sample flags of the generated batch functions (numpy_kernel.py.j2)
+_SINGULAR, _NONFINITE = 1, 2
+_DTYPE_WORDS = {"b": "bool", "c": "complex", "O": "Python objects", "U": "str", "S": "bytes",
+                "M": "datetime", "m": "timedelta", "V": "structured"}
+
+
+class SingularConfigurationError(ValueError):
+    """The kernel is evaluated on its singular set (division by an exact zero).
+
+    Attributes:
+        argument: the argument that makes the configuration singular.
+        indices: the batch indices (tuples over the batch shape) of the singular samples.
+    """
+
+    def __init__(self, message: str, argument: str, indices: list):
+        super().__init__(message)
+        self.argument = argument
+        self.indices = indices
+
+
+class NonFiniteResultError(SingularConfigurationError):
+    """Finite inputs gave a non-finite output (overflow): reported with ``check=True``.
+
+    Attributes:
+        argument: the input of largest magnitude in the offending samples.
+        indices: the batch indices (tuples over the batch shape) of those samples.
+    """
+
+
+_STATE: dict = {"backend": None, "warned": False}
+
+
+def _warn_once(exc: Exception) -> None:
+    if not _STATE["warned"]:
+        warnings.warn(f"rigidsym.kernels: C backend unavailable ({exc}); using NumPy",
+                      RuntimeWarning, stacklevel=3)
+        _STATE["warned"] = True
+
+
+def check_keywords(check: bool, on_singular: str, threads: int | None) -> None:
+    """Validate the common keywords (``out`` is checked against the batch shape later).
+
+    Raises:
+        TypeError: ``check`` not a bool, ``threads`` not an int.
+        ValueError: ``on_singular`` not "raise"/"nan", ``threads`` < 1.
+    """
+    if on_singular != "raise" and on_singular != "nan":
+        raise ValueError(f"on_singular: expected 'raise' or 'nan', got {on_singular!r}")
+    if check is not True and check is not False:
+        raise TypeError(f"check: expected True or False, got {check!r}")
+    if threads is not None:
+        if isinstance(threads, bool) or not isinstance(threads, int | np.integer):
+            raise TypeError(f"threads: expected a positive int or None, got {threads!r}")
+        if threads < 1:
+            raise ValueError(f"threads: expected a positive int or None, got {threads}")
+
+
+def as_array(x: Any, spec: dict) -> np.ndarray:
+    """``x`` as a float64 array with the trailing shape of ``spec``; errors name the argument.
+
+    Raises:
+        TypeError: str, bytes, arbitrary objects, complex or bool values.
+        ValueError: a ragged nested sequence, a wrong trailing shape.
+    """
+    name = spec["name"]
+    if type(x) is not np.ndarray:
+        if isinstance(x, str | bytes):
+            raise TypeError(f"{name}: expected an array-like of real numbers, "
+                            f"got {type(x).__name__} {x!r:.40}")
+        try:
+            x = np.asarray(x)
+        except ValueError as exc:      # NumPy's message for a ragged nested sequence
+            raise ValueError(f"{name}: expected a rectangular array-like of real numbers "
+                             f"(a ragged nested sequence?): {exc}") from None
+        except Exception as exc:  # noqa: BLE001 - any failure to convert is a type error
+            raise TypeError(f"{name}: expected an array-like of real numbers, "
+                            f"got {type(x).__name__} ({exc})") from None
+    if x.dtype != np.float64:
+        kind = x.dtype.kind
+        if kind not in "fiu":
+            what = _DTYPE_WORDS.get(kind, str(x.dtype))
+            raise TypeError(f"{name}: expected real numbers (float or int), got {what} "
+                            f"values (dtype {x.dtype})")
+        x = x.astype(np.float64)
+    shape = spec["tshape"]
+    k = len(shape)
+    if x.ndim < k or x.shape[x.ndim - k:] != shape:
+        raise ValueError(f"{name}: expected shape (..., {', '.join(map(str, shape))})"
+                         f"{'' if k else ' (a scalar per sample)'}, got {x.shape}")
+    return x
+
+
+def validate(a: np.ndarray, spec: dict) -> None:
+    """Finiteness, and the constraint of ``spec["kind"]`` (unit vector, rotation).
+
+    Raises:
+        ValueError: naming the argument and what was expected.
+    """
+    name, kind = spec["name"], spec["kind"]
+    if not np.isfinite(a).all():
+        raise ValueError(f"{name}: non-finite values (NaN or inf); expected finite values")
+    if kind == "unit":
+        err = np.abs(np.sqrt(np.einsum("...i,...i->...", a, a)) - 1.0)
+        if (err > UNIT_TOL).any():
+            raise ValueError(f"{name}: not a unit vector (| ||{name}|| - 1 | = "
+                             f"{err.max():.3g} > {UNIT_TOL})")
+    elif kind == "rotation":
+        g = np.einsum("...ki,...kj->...ij", a, a) - np.eye(3)
+        err = np.abs(g).max() if g.size else 0.0
+        if not err <= ORTHO_TOL:
+            raise ValueError(f"{name}: not orthogonal (max |{name}^T {name} - 1| = "
+                             f"{err:.3g} > {ORTHO_TOL})")
+        if (np.linalg.det(a) <= 0).any():
+            raise ValueError(f"{name}: not a proper rotation (det <= 0)")
+
+
+def batch_shape(arrs: list[np.ndarray], specs: list[dict]) -> tuple[int, ...]:
+    """The broadcast batch shape; the error names the first argument that does not fit."""
+    shapes = [a.shape[:a.ndim - len(s["tshape"])] for a, s in zip(arrs, specs, strict=True)]
+    try:
+        return np.broadcast_shapes(*shapes)
+    except ValueError:
+        acc: tuple = ()
+        for i, b in enumerate(shapes):
+            try:
+                acc = np.broadcast_shapes(acc, b)
+            except ValueError:
+                # name every argument with a batch so far: which one is wrong is the caller's
+                names = [s["name"] for s, c in zip(specs[:i + 1], shapes, strict=False) if c]
+                raise ValueError(f"{', '.join(names)}: batch shapes do not broadcast ("
+                                 + ", ".join(f"{s['name']} {c}" for s, c in
+                                             zip(specs[:i + 1], shapes, strict=False) if c)
+                                 + ")") from None
+        raise
+
+
+def _load_module(modname: str, path: Path):
+    spec = importlib.util.spec_from_file_location(modname, path)
+    mod = importlib.util.module_from_spec(spec)
+    sys.modules[modname] = mod
+    spec.loader.exec_module(mod)
+    return mod
+
+
+@dataclass
+class KernelSpace:
+    """The kernels of one generated directory and their checked evaluation.
+
+    Attributes:
+        directory: the generated directory.
+        prefix: module-name prefix of its NumPy kernels.
+        meta: ``kernels.json`` entries by kernel name.
+    """
+
+    directory: Path
+    prefix: str
+    meta: dict
+    _numpy: dict = field(default_factory=dict)
+    _clib: Any = None
+    _c_failed: bool = False
+
+    @classmethod
+    def from_directory(cls, directory: Path, prefix: str | None = None) -> KernelSpace:
+        """Read ``directory/kernels.json``.
+
+        Raises:
+            FileNotFoundError: no ``kernels.json`` there.
+        """
+        directory = Path(directory).resolve()
+        data = json.loads((directory / "kernels.json").read_text(encoding="utf-8"))
+        meta = {}
+        for k in data["kernels"]:
+            for a in k["args"]:
+                a["tshape"] = tuple(a["shape"])
+            for o in k["outputs"]:
+                o["tshape"] = tuple(o["shape"])
+            meta[k["name"]] = k
+        if prefix is None:
+            key = hashlib.sha256(str(directory).encode()).hexdigest()[:12]
+            prefix = f"rigidsym._loaded_{key}"
+        return cls(directory, prefix, meta)
+
+    def numpy_kernel(self, name: str) -> Callable:
+        f = self._numpy.get(name)
+        if f is None:
+            mod = _load_module(f"{self.prefix}.{name}", self.directory / "numpy" / f"{name}.py")
+            f = self._numpy[name] = getattr(mod, name)
+        return f
+
+    def c_lib(self):
+        if self._clib is None:
+            from rigidsym.codegen.cbuild import load
+            self._clib = load(gdir=self.directory)
+        return self._clib
+
+    def backend(self) -> str:
+        """The backend in effect here: the global choice, NumPy if this C did not build."""
+        b = _STATE["backend"] or _select("c")
+        if b == "c" and self._clib is None:
+            if self._c_failed:
+                return "numpy"
+            try:
+                self.c_lib()
+            except Exception as exc:  # noqa: BLE001 - any build failure means: no C backend
+                self._c_failed = True
+                _warn_once(exc)
+                return "numpy"
+        return b
+
+    def batch_function(self, name: str, backend_name: str | None = None,
+                       threads: int | None = None) -> Callable:
+        """``f(*inputs, *outputs)`` on C-contiguous ``(n, ...)`` float64 arrays.
+
+        ``threads`` is accepted for the C loops (single-threaded until they use it).
+        """
+        b = backend_name or self.backend()
+        if b == "numpy":
+            return self.numpy_kernel(name)
+        ffi, lib = self.c_lib()
+        cfun = getattr(lib, f"rigidsym_{name}")
+        fb = ffi.from_buffer
+
+        def f(*arrays):
+            return cfun(arrays[0].shape[0], *[fb("double[]", a) for a in arrays])
+        return f
+
+    def call(self, name: str, args: tuple, out=None, check: bool = True,
+             on_singular: str = "raise", threads: int | None = None):
+        """Validate, broadcast, evaluate ``name`` and report singular/non-finite samples."""
+        meta = self.meta[name]
+        check_keywords(check, on_singular, threads)
+        specs = meta["args"]
+        arrs = [as_array(x, s) for x, s in zip(args, specs, strict=True)]
+        if check:
+            for a, s in zip(arrs, specs, strict=True):
+                validate(a, s)
+        batch = batch_shape(arrs, specs)
+        n = math.prod(batch)
+        flat = [np.ascontiguousarray(np.broadcast_to(a, batch + s["tshape"]))
+                .reshape((n,) + s["tshape"]) for a, s in zip(arrs, specs, strict=True)]
+        outs_meta = meta["outputs"]
+        user = None if out is None else _check_out(out, outs_meta, batch)
+        bufs = []
+        for i, o in enumerate(outs_meta):
+            u = None if user is None else user[i]
+            if u is not None and u.flags.c_contiguous:
+                bufs.append(u.reshape((n,) + o["tshape"]))
+            else:
+                bufs.append(np.empty((n,) + o["tshape"]))
+        if n:
+            b = self.backend()
+            res = self.batch_function(name, b, threads)(*flat, *bufs)
+            if b == "numpy":
+                flags = res
+            else:
+                flags = self._classify_c_rows(name, flat, bufs, n) if res else None
+            if flags is not None and flags.any():
+                _report_flags(name, meta, flags, flat, bufs, batch, check, on_singular)
+        results = []
+        for i, o in enumerate(outs_meta):
+            r = bufs[i].reshape(batch + o["tshape"])
+            if user is not None:
+                if not user[i].flags.c_contiguous:
+                    user[i][...] = r
+                r = user[i]
+            results.append(r)
+        return results[0] if len(results) == 1 else tuple(results)
+
+    def _classify_c_rows(self, name: str, flat: list, bufs: list, n: int) -> np.ndarray:
+        """Flags of the C batch: it writes NaN rows without saying why; the NumPy kernel,
+        re-run on just those rows, tells a singular sample from an overflow."""
+        idx = np.flatnonzero(np.isnan(bufs[0].reshape(n, -1)[:, 0]))
+        flags = np.zeros(n, dtype=np.uint8)
+        if idx.size:
+            tmp = [np.empty((idx.size,) + b.shape[1:]) for b in bufs]
+            with np.errstate(all="ignore"):
+                sub = self.numpy_kernel(name)(*[np.ascontiguousarray(a[idx]) for a in flat],
+                                              *tmp)
+            # a row C flagged and NumPy did not (rounding at the edge of the range): overflow
+            flags[idx] = np.where(sub == 0, _NONFINITE, sub)
+        return flags
+
+
+def _check_out(out, outs_meta: list, batch: tuple) -> tuple:
+    user = (out,) if len(outs_meta) == 1 and not isinstance(out, tuple) else tuple(out)
+    if len(user) != len(outs_meta):
+        raise ValueError(f"out: expected {len(outs_meta)} arrays, got {len(user)}")
+    for u, o in zip(user, outs_meta, strict=True):
+        want = batch + o["tshape"]
+        if not isinstance(u, np.ndarray) or u.shape != want or u.dtype != np.float64 \
+                or not u.flags.writeable:
+            raise ValueError(f"out ({o['name']}): expected a writeable float64 array of "
+                             f"shape {want}")
+    return user
+
+
+def _report_flags(name, meta, flags, flat, bufs, batch, check, on_singular) -> None:
+    """Raise for flagged samples, or write NaN in their rows (``on_singular="nan"``)."""
+    specs = meta["args"]
+    sing = np.flatnonzero(flags == _SINGULAR)
+    over = np.flatnonzero(flags == _NONFINITE) if check else np.empty(0, dtype=np.intp)
+
+    def where(idx):
+        return [tuple(int(j) for j in np.unravel_index(i, batch)) for i in idx[:20]]
+    if on_singular == "raise" and sing.size:
+        arg = meta["singular_arg"] or specs[0]["name"]
+        w = where(sing)
+        raise SingularConfigurationError(
+            f"{name}: singular configuration ({meta['singular'] or 'non-finite result'}"
+            f") in argument {arg!r} at batch indices {w}{' ...' if sing.size > 20 else ''}",
+            arg, w)
+    if on_singular == "raise" and over.size:
+        # name the input of largest magnitude there: the likely cause of the overflow
+        mags = [float(np.abs(a[over]).max()) if a[over].size else 0.0 for a in flat]
+        k = max(range(len(mags)), key=mags.__getitem__)
+        arg, w = specs[k]["name"], where(over)
+        raise NonFiniteResultError(
+            f"{name}: non-finite output (overflow) from finite inputs at batch indices {w}"
+            f"{' ...' if over.size > 20 else ''}; largest input there: {arg!r} "
+            f"(max |{arg}| = {mags[k]:.3g})", arg, w)
+    for buf in bufs:
+        buf[sing] = np.nan
+        buf[over] = np.nan
+
+
+def _select(name: str) -> str:
+    """Select the global backend (``"c"`` falls back to NumPy when the package's C does not
+    build); returns it."""
+    if name not in ("c", "numpy"):
+        raise ValueError(f"backend: expected 'c' or 'numpy', got {name!r}")
+    if name == "c":
+        from . import _builtin_space
+        space = _builtin_space()
+        space._c_failed = False
+        try:
+            space.c_lib()
+        except Exception as exc:  # noqa: BLE001 - any build failure means: no C backend
+            space._c_failed = True
+            _warn_once(exc)
+            name = "numpy"
+    _STATE["backend"] = name
+    return name
+
