@@ -185,8 +185,9 @@ def test_c_batch_counts_overflow_rows_across_blocks(name, arg, scale, backend):
 def test_load_other_generated_directory(tmp_path, backend):
     """load(DIR) builds the same checked namespace from any generated directory (here two
     kernels written by the generator into a temporary folder)."""
-    from rigidsym.codegen.generator import generate, write
     from rigidsym.derivations.kernels_spec import KERNELS
+
+    from rigidsym.codegen.generator import generate, write
 
     picked = [k for k in KERNELS if k.name in ("plucker_from_points", "N_matrix")]
     write(generate(picked), tmp_path)

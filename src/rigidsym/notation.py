@@ -330,6 +330,12 @@ class BookLatexPrinter(LatexPrinter):
             return book_latex(base.func.__name__ + acc)
         return super()._print_Derivative(expr)
 
+    def _print_Cross(self, expr):
+        # the book's u x v (rigidsym's lazy Cross); sympy's own _print_Cross is for
+        # sympy.vector and reads attributes this class does not have
+        u, v = (self.parenthesize(a, PRECEDENCE["Mul"]) for a in expr.args)
+        return rf"{u} \times {v}"
+
     def _print_Identity(self, expr):
         return r"\mathbf{1}"
 
