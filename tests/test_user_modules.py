@@ -227,6 +227,8 @@ def test_report_and_generate_for_a_user_module(tmp_path, capsys):
     assert code == 0
     assert (out / "kern.md").read_text().startswith("# kern checked: verdicts")
     assert json.loads((out / "kern.json").read_text())["equations"][0]["id"] == "kern:double"
+    page = (out / "kern.html").read_text()
+    assert "<title>kern checked: verdicts</title>" in page and "Angeles" not in page
     gen = tmp_path / "gen"
     assert main(["generate", "--module", str(path), "--out", str(gen)]) == 0
     c_text = (gen / "c" / "doubled_value.c").read_text()

@@ -195,7 +195,7 @@ def build_parser() -> argparse.ArgumentParser:
                    help="also write chapter3-full.{md,json} with the expanded values")
     r.add_argument("--jobs", type=int, default=jobs)
     r.add_argument("--module", action="append", metavar="PATH_OR_DOTTED",
-                   help=_MODULE_HELP + ": report its ids into --out as <module>.{md,json}")
+                   help=_MODULE_HELP + ": report its ids into --out as <module>.{md,json,html}")
     r.set_defaults(func=cmd_report)
     s = sub.add_parser("show", help="explain one equation (verdict, why, counterexample)")
     s.add_argument("id")
