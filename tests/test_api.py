@@ -48,6 +48,7 @@ def test_results_where_index_and_json(section33):
     assert doc["schema"] == 2 and [e["id"] for e in doc["equations"]] == \
         [r.id for r in section33]
     assert doc["summary"] == section33.summary()
+    assert first.to_json() == doc["equations"][0]
     with pytest.raises(ValueError, match="verdict"):
         section33.where(verdict="true")
 

@@ -49,6 +49,12 @@ class Result(_CheckerResult):
         return (f"<Result {self.id}: {self.verdict}{flag} ({self.method}, "
                 f"{self.seconds:.2f} s)>")
 
+    def to_json(self) -> dict:
+        """The schema-2 record of this result (a row of ``Results.to_json()``)."""
+        from .report import result_record
+
+        return result_record(self)
+
     def forms_latex(self) -> list[tuple[str, str]]:
         """``(role, LaTeX)`` of each member in book notation (printed, claim, corrected),
         from the schema-2 member records; the book's printed LaTeX stands in for printed
