@@ -47,7 +47,7 @@ def test_every_declaration_names_its_book_section():
 
 
 def test_committed_chapter_report_is_fresh(results):
-    """generated/report/chapter3.{md,json} equal what the current declarations produce
+    """generated/report/chapter3.{md,json,html} equal what the current declarations produce
     (the report is deterministic: no timings, tiny residuals bounded)."""
     from pathlib import Path
 
@@ -62,3 +62,6 @@ def test_committed_chapter_report_is_fresh(results):
         "generated/report/chapter3.md is stale: run `rigidsym report`"
     assert (folder / "chapter3.json").read_text(encoding="utf-8") == \
         to_json(rows, timings=False), "generated/report/chapter3.json is stale"
+    from rigidsym.report_html import to_html
+    assert (folder / "chapter3.html").read_text(encoding="utf-8") == to_html(rows), \
+        "generated/report/chapter3.html is stale: run `rigidsym report`"

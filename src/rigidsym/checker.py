@@ -100,7 +100,7 @@ def member_record(rel: Rel, role: str, out: _RelOutcome | None) -> dict:
         status = {True: "holds", False: "fails", None: "undecided"}[out.zero]
         method, detail = out.method, out.detail
     text = f"{notation.text(rel.lhs)} = {notation.text(rel.rhs)}"
-    tex = f"{notation.latex(rel.lhs)} = {notation.latex(rel.rhs)}"
+    tex = notation.latex_relation(rel.lhs, rel.rhs)
     return {"role": role, "label": rel.label, "status": status, "method": method,
             "detail": detail,
             "text": text if len(text) <= MEMBER_TEXT_LIMIT else None,

@@ -18,6 +18,7 @@ from sympy.printing.precedence import PRECEDENCE, precedence
 from sympy.printing.str import StrPrinter
 
 __all__ = ["is_negative_term", "book_group", "book_text", "book_latex", "text", "latex",
+           "latex_relation",
            "BookStrPrinter", "BookLatexPrinter"]
 
 _GREEK = {
@@ -390,3 +391,36 @@ def text(expr) -> str:
 def latex(expr) -> str:
     """``expr`` (sympy) in book notation as LaTeX."""
     return _LATEX.doprint(expr)
+
+
+def latex_relation(lhs, rhs, width: int = 50) -> str:
+    """``lhs = rhs`` as LaTeX; a right side wider than ``width`` characters of text is set
+    as aligned rows of whole terms (MathML Core does not break lines by itself).
+
+    Args:
+        lhs, rhs: sympy expressions.
+        width: the width of a row, in characters of the plain-text rendering.
+
+    Returns:
+        LaTeX, ``\\begin{aligned}...\\end{aligned}`` when broken into rows.
+    """
+    head = latex(lhs)
+    terms = list(rhs.args) if isinstance(rhs, sp.Add | sp.MatAdd) else [rhs]
+    if len(terms) < 2 or len(text(rhs)) <= width:
+        return f"{head} = {latex(rhs)}"
+    terms.sort(key=is_negative_term)  # as the printers: positive terms first
+    rows, row, used = [], [], 0
+    for k, t in enumerate(terms):
+        neg = is_negative_term(t)
+        body = -t if neg else t
+        piece = ("- " if neg else ("+ " if k else "")) + _LATEX.parenthesize(
+            body, PRECEDENCE["Add"], strict=False)
+        n = len(text(body)) + 3
+        if row and used + n > width:
+            rows.append(" ".join(row))
+            row, used = [], 0
+        row.append(piece)
+        used += n
+    rows.append(" ".join(row))
+    body = r" \\ &\quad ".join(rows)
+    return rf"\begin{{aligned}} {head} &= {body} \end{{aligned}}"

@@ -6,6 +6,9 @@ component dumps; ``full=True`` adds them (``chapter3-full.md``, never committed)
 
 from __future__ import annotations
 
+import sympy as sp
+
+from . import notation
 from .checker import Result
 from .report import CITATION, RESIDUAL_FLOOR, result_record, summary
 
@@ -65,15 +68,23 @@ def how_checked(rec: dict) -> str:
     return " ".join(x for x in out if x)
 
 
+def _value(text: str) -> str:
+    """An exact value (sympy's string) in book notation on one line: ``[1/2, 0; 0, 1]``."""
+    try:
+        return notation.text(sp.sympify(text))
+    except (sp.SympifyError, SyntaxError, TypeError):
+        return text
+
+
 def _counterexample(ce: dict) -> list[str]:
     out = ["Counterexample (exact rational point"
            + (f", member *{_cell(ce['member'])}*" if ce["member"] else "") + "):", "",
            "| atom | exact | decimal |", "|---|---|---|"]
     out += [f"| {_cell(p['book'])} | {_code(p['exact'])} | {p['decimal']} |" for p in ce["point"]]
     out += ["", "Both sides there, and the residual (left minus right):", "", "```",
-            f"left  = {ce['lhs']}", f"right = {ce['rhs']}"]
+            f"left  = {_value(ce['lhs'])}", f"right = {_value(ce['rhs'])}"]
     if ce.get("residual") is not None:
-        out += [f"left - right = {ce['residual']}", "```", "",
+        out += [f"left - right = {_value(ce['residual'])}", "```", "",
                 f"Largest residual entry: {ce['residual_max_abs']} "
                 f"(≈ {ce['residual_max_abs_decimal']}).", ""]
     else:

@@ -198,6 +198,6 @@ def explain(r: Result, rels: dict[str, list[Rel]], where: str, width: int) -> st
         out += _hard_wrap("Model: " + "; ".join(r.model), width, "")
     n = r.numeric
     if n.get("max_residual") is not None:
-        out.append(f"Numeric backing: {n['points']} points at {n['digits']} digits, max "
-                   f"relative residual {n['max_residual']:.1e}")
+        out += _hard_wrap(f"Numeric backing: {n['points']} points at {n['digits']} digits, "
+                          f"max relative residual {n['max_residual']:.1e}", width, "")
     return "\n".join(out)

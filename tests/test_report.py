@@ -1,0 +1,105 @@
+"""The reports: where they go, their modes, sizes, self-containment and determinism."""
+
+from __future__ import annotations
+
+import os
+import re
+import stat
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from rigidsym import cli
+from rigidsym.checker import check
+from rigidsym.registry import load_all
+
+load_all()
+ROOT = Path(__file__).resolve().parents[1]
+COMMITTED = ROOT / "generated" / "report"
+IDS = ["3.1", "3.59", "3.75"]
+
+
+@pytest.fixture(scope="module")
+def few():
+    return [check(i) for i in IDS]
+
+
+def test_default_out_dir(tmp_path):
+    assert cli.default_report_dir(tmp_path) == tmp_path / "rigidsym-report"
+    (tmp_path / "pyproject.toml").write_text('[project]\nname = "other"\n')
+    assert cli.default_report_dir(tmp_path) == tmp_path / "rigidsym-report"
+    (tmp_path / "pyproject.toml").write_text('[project]\nname = "rigidsym"\n')
+    assert cli.default_report_dir(tmp_path) == tmp_path / "generated" / "report"
+    assert cli.default_report_dir(ROOT) == COMMITTED
+
+
+def test_report_command_says_where_and_writes_0644(tmp_path, monkeypatch, capsys, few):
+    cli._load_extensions()  # so that importing them later cannot add a hook to the patch
+    monkeypatch.chdir(tmp_path)  # not a source tree: ./rigidsym-report/
+    monkeypatch.setattr(cli, "run_checks", lambda ids, jobs=1, progress=True: few)
+    monkeypatch.setattr(cli, "REPORT_HOOKS", [])
+    old = os.umask(0o022)
+    try:
+        assert cli.main(["report", "--full"]) == 0
+    finally:
+        os.umask(old)
+    out = capsys.readouterr().out
+    folder = tmp_path / "rigidsym-report"
+    assert f"to rigidsym-report{os.sep}" in out
+    names = sorted(p.name for p in folder.iterdir())
+    assert names == ["chapter3-full.json", "chapter3-full.md", "chapter3.html", "chapter3.json",
+                     "chapter3.md"]
+    for p in folder.iterdir():
+        assert stat.S_IMODE(p.stat().st_mode) == 0o644, p.name
+    assert len((folder / "chapter3-full.json").read_text()) > \
+        len((folder / "chapter3.json").read_text())
+
+
+def test_exercise_figure_and_pages_are_0644_and_deterministic(tmp_path):
+    from rigidsym.derivations.exercises.cli import write_report
+    old = os.umask(0o022)
+    try:
+        first = write_report(tmp_path / "a")
+        second = write_report(tmp_path / "b")
+    finally:
+        os.umask(old)
+    assert {p.name for p in first} == {"ex3_10_condition.svg", "exercises.md", "exercises.html"}
+    for a, b in zip(sorted(first), sorted(second), strict=True):
+        assert stat.S_IMODE(a.stat().st_mode) == 0o644, a.name
+        assert a.read_bytes() == b.read_bytes(), a.name
+    page = (tmp_path / "a" / "exercises.html").read_text()
+    assert "<svg" in page and "<img" not in page and "$$" not in page
+
+
+def test_html_is_self_contained(few):
+    from rigidsym.report_html import to_html
+    page = to_html(few)
+    assert "<script" not in page.lower()
+    assert not re.search(r'(src|href)="(https?:)?//', page)
+    assert 'id="eq-3.59"' in page and 'href="#eq-3.59"' in page
+    assert "unknown:" not in page and "cause not determined" in page
+
+
+def test_html_independent_of_hash_seed(few, tmp_path):
+    from rigidsym.report_html import to_html
+    code = ("import sys; from rigidsym.checker import check; from rigidsym.registry import "
+            "load_all; from rigidsym.report_html import to_html; load_all(); "
+            f"sys.stdout.write(to_html([check(i) for i in {IDS!r}]))")
+    env = dict(os.environ, PYTHONHASHSEED="4242")
+    other = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                           env=env, cwd=ROOT, check=True).stdout
+    assert other == to_html(few)
+
+
+def test_committed_reports_are_lean():
+    if not (COMMITTED / "chapter3.md").exists():
+        pytest.skip("no committed report in this checkout")
+    assert (COMMITTED / "chapter3.md").stat().st_size <= 120_000
+    assert (COMMITTED / "chapter3.json").stat().st_size <= 400_000
+    assert (COMMITTED / "chapter3.html").stat().st_size <= 1_500_000
+    md = (COMMITTED / "chapter3.md").read_text(encoding="utf-8")
+    assert "Matrix([" not in md  # no expanded dumps, values in book notation
+    assert "unknown:" not in md
+    assert not (COMMITTED / "chapter3-full.json").exists()

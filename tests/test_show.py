@@ -1,0 +1,86 @@
+"""`rigidsym show ID` explains: failing member, cause, counterexample, in book notation,
+within the width, never cut mid-term."""
+
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+import sympy as sp
+
+from rigidsym.cli import main
+from rigidsym.show import expr_lines
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+@pytest.fixture(scope="module")
+def shown():
+    """`rigidsym show` of three does-not-hold ids, stdout a pipe (not a TTY), no COLUMNS."""
+    env = {k: v for k, v in os.environ.items() if k != "COLUMNS"}
+    out = {}
+    for i in ("3.96e", "3.59", "3.148"):
+        p = subprocess.run([sys.executable, "-m", "rigidsym", "show", i], capture_output=True,
+                           text=True, env=env, cwd=ROOT, check=True)
+        out[i] = p.stdout
+    return out
+
+
+@pytest.mark.parametrize("eq_id", ["3.96e", "3.59", "3.148"])
+def test_explains_within_100_columns(shown, eq_id):
+    text = shown[eq_id]
+    assert "↪" not in text
+    assert max(len(line) for line in text.splitlines()) <= 100
+    assert "Verdict: does-not-hold" in text
+    assert "Fails:" in text and "Cause:" in text and "unknown" not in text.lower()
+    assert "Counterexample" in text and "residual (left - right)" in text
+    assert "Corrected form (verified)" in text
+
+
+def test_book_notation(shown):
+    t = shown["3.96e"]
+    assert "(e·ω)" in t and "tr(" not in t and "ωᵀ" in t
+    assert "‖ω‖" in shown["3.59"] and "norm_omega" not in shown["3.59"]
+
+
+def test_3_59_names_only_the_wrong_brace(shown):
+    t = shown["3.59"]
+    assert "Fails: member 'pdot_perp brace'" in t
+    assert t.count("[fails]") == 1
+    assert "cause not determined" in t and "what is known" in t
+
+
+def test_3_148_counterexample_sides(shown):
+    t = shown["3.148"]
+    assert "upper-right block" in t.split("Fails:")[1].splitlines()[0]
+    assert "right side there: [0, 0, 0; 0, 0, 0; 0, 0, 0]" in t
+
+
+def test_columns_is_honoured(monkeypatch, capsys):
+    monkeypatch.setenv("COLUMNS", "60")
+    assert main(["show", "3.96e"]) == 0
+    lines = capsys.readouterr().out.splitlines()
+    assert max(len(x) for x in lines) <= 60
+
+
+def test_wide_matrix_one_entry_per_line():
+    x = sp.Symbol("omega_1")
+    m = sp.Matrix(2, 2, [sum(x**k for k in range(12))] * 4)
+    lines = expr_lines(m, 40)
+    assert lines[0].startswith("[1,1] =")
+    assert all(len(ln) <= 40 for ln in lines)
+    # every term intact: each line that is not a header holds whole terms "ω₁ⁿ"
+    assert any(ln.strip().startswith("+ ω₁") for ln in lines)
+
+
+def test_latex_and_json(capsys):
+    assert main(["show", "3.96e", "--latex"]) == 0
+    out = capsys.readouterr().out
+    assert r"\left(\mathbf{e} \cdot \boldsymbol{\omega}\right)" in out
+    assert main(["show", "3.96e", "--json"]) == 0
+    rec = json.loads(capsys.readouterr().out)
+    assert rec["id"] == "3.96e" and rec["counterexample"]["residual"]
