@@ -12,10 +12,13 @@ Usage::
 
     python benchmarks/kernel_api.py --save new.json           # this checkout
     PYTHONPATH=/tmp/old/src python benchmarks/kernel_api.py --save old.json
-    python benchmarks/kernel_api.py --compare old.json new.json   # RESULTS.md section
+    python benchmarks/kernel_api.py --ab /tmp/old/generated --ab-json ab.json   # C A/B
+    python benchmarks/kernel_api.py --compare old.json new.json --ab-json ab.json   # RESULTS.md
 
 Timing: thread CPU time, median over rounds of repeated calls for >= 20 ms, rounds
-interleaved over kernels so that a load change on the shared machine hits all of them.
+interleaved over kernels so that a load change on the shared machine hits all of them;
+``--save`` to an existing file keeps the minimum per entry, so runs alternating between
+the two commits can be pooled.
 """
 
 from __future__ import annotations
@@ -68,7 +71,7 @@ def _time(f, budget: float = 0.02) -> float:
         reps *= 2
 
 
-def measure(rounds: int) -> dict:
+def measure(rounds: int, batch: bool = True) -> dict:
     from rigidsym import kernels as K
 
     assert K.use_backend("c") == "c", "C backend unavailable"
@@ -80,7 +83,7 @@ def measure(rounds: int) -> dict:
         return lambda: f(*args)
     for name in OVERHEAD:
         calls[name] = bind(getattr(K, name), _inputs(meta[name], 1000, rng))
-    for name, m in sorted(meta.items()):
+    for name, m in sorted(meta.items()) if batch else ():
         n = 1_000_000
         outs = [np.empty((n,) + tuple(o["shape"])) for o in m["outputs"]]
         batches[name] = bind(K.batch_function(name, "c"), _inputs(m, n, rng) + outs)
@@ -93,7 +96,35 @@ def measure(rounds: int) -> dict:
     return {sec: {k: statistics.median(v) for k, v in d.items()} for sec, d in res.items()}
 
 
-def section(old: dict, new: dict, old_label: str, note: str) -> str:
+def measure_ab(old_dir: Path, rounds: int) -> dict:
+    """C batch at N = 1e6, old and new generated C loaded in this one process (both built
+    by this checkout's cbuild, same flags) and timed alternately: fair on a loaded machine."""
+    from rigidsym import kernels as K
+    from rigidsym.codegen.cbuild import load
+
+    libs = {"old": load(gdir=old_dir), "new": K._builtin_space().c_lib()}
+    meta = {k: m for k, m in K._meta().items() if m["public"]}
+    rng = np.random.default_rng(7)
+    n = 1_000_000
+    res: dict = {"old": {}, "new": {}}
+    for name, m in sorted(meta.items()):
+        arrays = _inputs(m, n, rng) + [np.empty((n,) + tuple(o["shape"]))
+                                       for o in m["outputs"]]
+        calls = {}
+        for tag, (ffi, lib) in libs.items():
+            f = getattr(lib, f"rigidsym_{name}")
+            bufs = [ffi.from_buffer("double[]", a) for a in arrays]
+            calls[tag] = (lambda f=f, b=bufs: f(n, *b))
+        times: dict = {"old": [], "new": []}
+        for _ in range(rounds):
+            for tag in ("old", "new"):
+                times[tag].append(_time(calls[tag], 0.05) * 1e9 / n)
+        for tag in times:
+            res[tag][name] = min(times[tag])
+    return res
+
+
+def section(old: dict, new: dict, old_label: str, note: str, ab: dict | None = None) -> str:
     lines = [MARK[0], "## Kernel API cost (issue 12)", "",
              f"C backend, one thread; {note}. `old` is commit {old_label} "
              "(wrappers taking `*args`, finiteness tested only after divisions and roots); "
@@ -108,14 +139,17 @@ def section(old: dict, new: dict, old_label: str, note: str) -> str:
         o, n = old["overhead_us"][k], new["overhead_us"][k]
         ratios.append(n / o)
         lines.append(f"| `{k}` | {o:.1f} | {n:.1f} | {n / o:.3f} |")
+    batch_old, batch_new = (ab["old"], ab["new"]) if ab else (old["batch_ns"], new["batch_ns"])
+    how = ("both C builds loaded in one process and timed alternately, minimum over rounds"
+           if ab else "separate processes")
     lines += [f"| geometric mean | | | {np.exp(np.mean(np.log(ratios))):.3f} |", "",
-              "### C batch alone, N = 1e6 (ns/sample, caller-provided outputs)", "",
+              f"### C batch alone, N = 1e6 (ns/sample, caller-provided outputs; {how})", "",
               "| kernel | old | new | new / old |", "|---|---:|---:|---:|"]
     ratios = []
-    for k in old["batch_ns"]:
-        if k not in new["batch_ns"]:
+    for k in batch_old:
+        if k not in batch_new:
             continue
-        o, n = old["batch_ns"][k], new["batch_ns"][k]
+        o, n = batch_old[k], batch_new[k]
         ratios.append(n / o)
         lines.append(f"| `{k}` | {o:.2f} | {n:.2f} | {n / o:.3f} |")
     lines += [f"| geometric mean | | | {np.exp(np.mean(np.log(ratios))):.3f} |", MARK[1]]
@@ -126,19 +160,34 @@ def main(argv=None) -> int:
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     p.add_argument("--save", help="measure this checkout and write JSON here")
     p.add_argument("--rounds", type=int, default=5)
+    p.add_argument("--overhead-only", action="store_true", help="skip the N = 1e6 batches")
     p.add_argument("--compare", nargs=2, metavar=("OLD", "NEW"))
+    p.add_argument("--ab", metavar="OLD_GENERATED_DIR",
+                   help="time the old commit's generated C against this one in-process")
+    p.add_argument("--ab-json", default="ab.json", help="where --ab writes / --compare reads")
     p.add_argument("--old-label", default="f6c9ea0")
     p.add_argument("--note", default="measured on the shared 2-core machine under load")
     p.add_argument("--results", default=str(Path(__file__).with_name("RESULTS.md")))
     args = p.parse_args(argv)
     if args.save:
-        data = measure(args.rounds)
-        Path(args.save).write_text(json.dumps(data, indent=1))
+        data = measure(args.rounds, batch=not args.overhead_only)
+        path = Path(args.save)
+        if path.exists():       # repeated runs (alternating commits): keep the minimum
+            prev = json.loads(path.read_text())
+            data = {sec: {k: min(v, d.get(k, v)) for k, v in prev.get(sec, {}).items()}
+                    | {k: min(v, prev.get(sec, {}).get(k, v)) for k, v in d.items()}
+                    for sec, d in (prev | data).items()}
+        path.write_text(json.dumps(data, indent=1))
         json.dump(data, sys.stdout, indent=1)
         print()
+    if args.ab:
+        data = measure_ab(Path(args.ab), args.rounds)
+        Path(args.ab_json).write_text(json.dumps(data, indent=1))
     if args.compare:
         old, new = (json.loads(Path(f).read_text()) for f in args.compare)
-        text = section(old, new, args.old_label, args.note)
+        abp = Path(args.ab_json)
+        ab = json.loads(abp.read_text()) if abp.exists() else None
+        text = section(old, new, args.old_label, args.note, ab)
         path = Path(args.results)
         body = path.read_text(encoding="utf-8")
         if MARK[0] in body:
