@@ -130,8 +130,10 @@ def section(old: dict, new: dict, old_label: str, note: str, ab: dict | None = N
              "(wrappers taking `*args`, finiteness tested only after divisions and roots); "
              "`new` has true signatures, argument-naming validation, the per-block finiteness "
              "test of the outputs and the overflow classification. Regenerate: "
-             "`python benchmarks/kernel_api.py --save new.json` here and in a checkout of the "
-             "old commit, then `--compare old.json new.json`.", "",
+             "`python benchmarks/kernel_api.py --overhead-only --save new.json` here and "
+             "(with PYTHONPATH at its src/) in a checkout of the old commit, alternately; "
+             "`--ab OLD/generated --ab-json ab.json`; then "
+             "`--compare old.json new.json --ab-json ab.json`.", "",
              "### Call overhead, N = 1e3 (us per public call, allocated outputs)", "",
              "| kernel | old | new | new / old |", "|---|---:|---:|---:|"]
     ratios = []

@@ -264,8 +264,12 @@ class KernelSpace:
                 validate(a, s)
         batch = batch_shape(arrs, specs)
         n = math.prod(batch)
-        flat = [np.ascontiguousarray(np.broadcast_to(a, batch + s["tshape"]))
-                .reshape((n,) + s["tshape"]) for a, s in zip(arrs, specs, strict=True)]
+        flat = []
+        for a, s in zip(arrs, specs, strict=True):
+            full = batch + s["tshape"]
+            if a.shape != full:     # broadcast_to is most of the overhead: only when needed
+                a = np.broadcast_to(a, full)
+            flat.append(np.ascontiguousarray(a).reshape((n,) + s["tshape"]))
         outs_meta = meta["outputs"]
         user = None if out is None else _check_out(out, outs_meta, batch)
         bufs = []
