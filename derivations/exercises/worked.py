@@ -277,7 +277,7 @@ def _latex(v) -> str:
 
 def render_markdown(s: Solution) -> str:
     """Markdown rendering (LaTeX maths) for the report."""
-    out = [f'<a id="ex-{s.id[2:]}"></a>', "", f"## Exercise {s.id[2:]}: {s.title}", "",
+    out = [f'## Exercise {s.id[2:]}: {s.title} <a id="ex-{s.id[2:]}"></a>', "",
            f"*{s.citation}*", "",
            f"> {s.statement}", "",
            f"**Status:** {s.status}; **checked:** {str(s.checked).lower()}", ""]

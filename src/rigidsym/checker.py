@@ -24,9 +24,8 @@ import sympy as sp
 from sympy.core.function import AppliedUndef
 from sympy.matrices.expressions.matexpr import MatrixElement
 
-from . import notation
+from .records import member_record, model_words
 from .registry import REGISTRY, Equation, Rel, Statement
-from .symbols import TIME, constraint_of
 from .zero import Unsupported, decide_zero, evaluate, make_plan
 
 __all__ = ["Result", "check", "explicit", "shape_of", "NUMERIC_DIGITS", "NUMERIC_POINTS"]
@@ -62,7 +61,8 @@ class Result:
     detail: str = ""
     singular: str | None = None
     failing_member: str | None = None
-    #: one record per member (printed, claim, corrected), see :func:`member_record`
+    #: one record per member (printed, claim, corrected), see
+    #: :func:`rigidsym.records.member_record`
     members: list[dict] = field(default_factory=list)
     #: the model's atoms and their constraints, in words ("e: unit vector, ...")
     model: list[str] = field(default_factory=list)
@@ -71,75 +71,6 @@ class Result:
         """Every field as a plain dict (the full record; the lean schema-2 row is
         :func:`rigidsym.report.result_record`)."""
         return asdict(self)
-
-
-#: member texts longer than this are not kept: such a member is an explicit component
-#: matrix (a formula function applied entry by entry), not book notation
-MEMBER_TEXT_LIMIT = 400
-#: the same for the LaTeX of a member (LaTeX spends about three characters per symbol)
-MEMBER_LATEX_LIMIT = 1200
-
-
-def member_record(rel: Rel, role: str, out: _RelOutcome | None) -> dict:
-    """A member of a statement as plain data.
-
-    Args:
-        rel: the relation.
-        role: ``printed``, ``claim`` or ``corrected``.
-        out: its decision, or ``None`` for a member that a definition introduces.
-
-    Returns:
-        ``{"role", "label", "status", "method", "detail", "text", "latex"}``: status is
-        ``holds``, ``fails``, ``undecided`` or ``defines``; ``text`` (book notation,
-        Unicode) and ``latex`` are ``None`` when longer than :data:`MEMBER_TEXT_LIMIT`
-        and :data:`MEMBER_LATEX_LIMIT`.
-    """
-    if out is None:
-        status, method, detail = "defines", "definition", ""
-    else:
-        status = {True: "holds", False: "fails", None: "undecided"}[out.zero]
-        method, detail = out.method, out.detail
-    text = f"{notation.text(rel.lhs)} = {notation.text(rel.rhs)}"
-    tex = notation.latex_relation(rel.lhs, rel.rhs)
-    return {"role": role, "label": rel.label, "status": status, "method": method,
-            "detail": detail,
-            "text": text if len(text) <= MEMBER_TEXT_LIMIT else None,
-            "latex": tex if len(tex) <= MEMBER_LATEX_LIMIT else None}
-
-
-_KIND_WORDS = {"unit": "unit vector, stereographic", "angle": "angle, half-angle tangent",
-               "rotation": "rotation, rational quaternion",
-               "unit4": "unit 4-vector, stereographic"}
-
-
-def model_words(exprs) -> list[str]:
-    """The atoms of explicit expressions grouped by constraint, in words.
-
-    Returns:
-        Sorted lines such as ``"e: unit vector, stereographic"``, then one ``"free: a, ω"``
-        line, then ``"along a motion (...)"`` when atoms depend on time.
-    """
-    groups, free, timed_any = {}, set(), False
-    for x in exprs:
-        for e in _entries(x):
-            e = sp.sympify(e)
-            for a in e.atoms(sp.Symbol, AppliedUndef):
-                if a == TIME:
-                    continue
-                timed = isinstance(a, AppliedUndef)
-                timed_any |= timed
-                name = a.func.__name__ if timed else a.name
-                c = constraint_of(a)  # carried by the atom (rigidsym.symbols), not its name
-                if c is not None:
-                    groups[c.name] = c.kind
-                else:
-                    free.add(notation.book_group(name))
-    out = sorted(f"{notation.book_text(n)}: {_KIND_WORDS.get(k, k)}" for n, k in groups.items())
-    if free:
-        out.append("free: " + ", ".join(sorted(free)))
-    if timed_any:
-        out.append("along a motion (derivatives as jets)")
-    return out
 
 
 # --------------------------------------------------------------------------- helpers

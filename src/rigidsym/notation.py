@@ -291,6 +291,12 @@ class BookStrPrinter(StrPrinter):
     def _print_Inverse(self, expr):
         return self.parenthesize(expr.arg, PRECEDENCE["Pow"], strict=True) + "⁻¹"
 
+    def _print_Cross(self, expr):
+        # the derivations' Cross(u, v) matrix expression (sympy's own _print_Cross is for
+        # sympy.vector and would read attributes this class does not have)
+        u, v = expr.args
+        return f"{self._factor(u)} × {self._factor(v)}"
+
     def _print_BlockMatrix(self, expr):
         b = expr.blocks
         rows = [", ".join(self._print(b[i, j]) for j in range(b.cols)) for i in range(b.rows)]
@@ -331,12 +337,6 @@ class BookLatexPrinter(LatexPrinter):
             return book_latex(base.func.__name__ + acc)
         return super()._print_Derivative(expr)
 
-    def _print_Cross(self, expr):
-        # the book's u x v (rigidsym's lazy Cross); sympy's own _print_Cross is for
-        # sympy.vector and reads attributes this class does not have
-        u, v = (self.parenthesize(a, PRECEDENCE["Mul"]) for a in expr.args)
-        return rf"{u} \times {v}"
-
     def _print_Identity(self, expr):
         return r"\mathbf{1}"
 
@@ -372,6 +372,10 @@ class BookLatexPrinter(LatexPrinter):
             s = self._print(-t if neg else t)
             out.append(("-" if neg else "") + s if i == 0 else (" - " if neg else " + ") + s)
         return "".join(out)
+
+    def _print_Cross(self, expr):  # the derivations' Cross(u, v), not sympy.vector's
+        u, v = (self.parenthesize(a, PRECEDENCE["Mul"], strict=True) for a in expr.args)
+        return rf"{u} \times {v}"
 
     def _print_BlockMatrix(self, expr):
         b = expr.blocks
