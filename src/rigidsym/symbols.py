@@ -93,10 +93,10 @@ class ConstrainedSymbol(sp.Symbol):
     def _hashable_content(self):
         return sp.Symbol._hashable_content(self) + (self.constraint,)
 
-    @classmethod
-    def class_key(cls):
-        # sort (hence print) exactly as a plain Symbol: generated code and reports unchanged
-        return sp.Symbol.class_key()
+
+# sympy orders the factors of a product and dispatches printers by class *name*: named as
+# the plain Symbol, a constrained atom sorts and prints exactly as before (same reports)
+ConstrainedSymbol.__name__ = "Symbol"
 
 
 def constraint_of(atom) -> Constraint | None:
