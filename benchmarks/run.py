@@ -351,9 +351,20 @@ def main(argv=None) -> int:
         text += [f"## N = {N:.0e}: ns/sample", ""]
         text += _table(rows, N, "allocated", ALLOC_COLS)
         text += _table(rows, N, "caller-provided outputs", PRE_COLS)
-    Path(args.out).write_text("\n".join(text))
+    out = Path(args.out)
+    out.write_text("\n".join(text) + _other_sections(out))
     print(f"wrote {args.out}", file=sys.stderr)
     return 0
+
+
+def _other_sections(path: Path) -> str:
+    """The sections other scripts keep in RESULTS.md between ``<!-- x -->`` and
+    ``<!-- /x -->`` markers (e.g. benchmarks/jacobians.py), to carry over on a rewrite."""
+    import re
+
+    old = path.read_text(encoding="utf-8") if path.exists() else ""
+    found = re.findall(r"\n?(<!-- ([\w-]+) -->.*?<!-- /\2 -->)", old, flags=re.S)
+    return "".join("\n" + block + "\n" for block, _ in found)
 
 
 def _numpy_chunk() -> int:

@@ -386,7 +386,10 @@ for _seq in EULER_SEQUENCES:
             args=(Arg("angles", (3,), "any", "Euler angles [rad]"), OMEGA),
             outputs=(Out("eta_dot", (3,), "[rad/s]"),),
             build=lambda angles, omega, _s=_seq, _f=_frame: _euler_rates(angles, omega, _s, _f),
-            singular="det W = 0 (gimbal lock)", singular_arg="angles"))
+            singular="det W = 0 (gimbal lock)", singular_arg="angles",
+            # no generated Jacobian: its build (trigsimp of adj W and det W) dominates the
+            # generation time; d eta_dot = W^-1 (d omega - dW eta_dot) from W's Jacobian
+            jacobian=False))
 
 
 def _isa_point_pitch(omega, a, a_dot):
@@ -403,7 +406,8 @@ KERNELS.append(Kernel(
     args=(OMEGA, _v("a", "body point A [m]"), _v("a_dot", "velocity of A [m/s]")),
     outputs=(Out("p0", (3,), "ISA point closest to the origin [m]"),
              Out("pitch", (), "pitch [m/rad]")),
-    build=_isa_point_pitch, singular="omega = 0 (pure translation)", singular_arg="omega"))
+    build=_isa_point_pitch, singular="omega = 0 (pure translation)", singular_arg="omega",
+    jacobian=False))
 
 
 def _newton_euler_residual(I_C, m, omega, omega_dot, c_ddot, n, f):
@@ -421,7 +425,7 @@ KERNELS.append(Kernel(
           _v("omega_dot", "angular acceleration [rad/s^2]"),
           _v("c_ddot", "acceleration of the mass centre [m/s^2]"),
           _v("n", "applied moment about C [N m]"), _v("f", "applied force [N]")),
-    outputs=(Out("r", (6,), "[N m; N]"),), build=_newton_euler_residual))
+    outputs=(Out("r", (6,), "[N m; N]"),), build=_newton_euler_residual, jacobian=False))
 
 
 # ----------------------------------------------------------------------------------------

@@ -9,6 +9,7 @@ from __future__ import annotations
 import os
 import subprocess
 import sys
+from functools import cache
 from pathlib import Path
 
 from rigidsym.codegen.generator import check, default_out_dir, generate, write
@@ -16,14 +17,21 @@ from rigidsym.codegen.generator import check, default_out_dir, generate, write
 ROOT = Path(__file__).resolve().parents[1]
 
 
+@cache
+def _generated():
+    # one in-process generation shared by the tests below (it is deterministic; the
+    # subprocess test regenerates independently)
+    return generate()
+
+
 def test_generated_is_fresh():
-    res = generate()
+    res = _generated()
     diff = check(res)
     assert diff == "", "generated/ is stale; run `rigidsym generate`:\n" + diff[:4000]
 
 
 def test_check_reports_missing_orphan_and_changed(tmp_path):
-    res = generate()
+    res = _generated()
     write(res, tmp_path)
     assert check(res, tmp_path) == ""
     first = next(iter(res.files))
@@ -40,7 +48,7 @@ def test_check_reports_missing_orphan_and_changed(tmp_path):
 
 
 def test_no_timestamps_or_absolute_paths():
-    res = generate()
+    res = _generated()
     for rel, text in res.files.items():
         assert str(ROOT) not in text, rel
         assert "/home/" not in text and "/root/" not in text, rel
@@ -52,7 +60,7 @@ def test_independent_of_hash_seed(tmp_path):
             "write(generate(), sys.argv[1])")
     subprocess.run([sys.executable, "-c", code, str(tmp_path)], check=True, env=env,
                    cwd=ROOT)
-    assert check(generate(), tmp_path) == ""
+    assert check(_generated(), tmp_path) == ""
     assert default_out_dir() == ROOT / "generated"
 
 

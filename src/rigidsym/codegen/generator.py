@@ -306,6 +306,17 @@ def _render_kernel(env, kc: KernelCode, origin: str = BOOK_ORIGIN) -> dict[str, 
     return files
 
 
+def _with_jacobian_kernels(todo: list[Kernel]) -> list[Kernel]:
+    """``todo`` and, for each smooth kernel, its ``<name>_with_jacobians`` (sorted by name).
+
+    The Jacobian kernels are ordinary (non-public) kernels with extra outputs, so they go
+    through the same rewrite, CSE, templates and checks as the values.
+    """
+    from .jacobians import jacobian_kernels
+
+    return sorted(todo + jacobian_kernels(todo), key=lambda k: k.name)
+
+
 def generate(kernels=None, origin: str = BOOK_ORIGIN) -> GenerationResult:
     """Render every available kernel; returns the files (relative path -> text) and notes.
 
@@ -326,7 +337,7 @@ def generate(kernels=None, origin: str = BOOK_ORIGIN) -> GenerationResult:
                          + ", ".join(miss))
             continue
         todo.append(k)
-    for kc in _compile_all(todo):
+    for kc in _compile_all(_with_jacobian_kernels(todo)):
         done.append(kc)
         files.update(_render_kernel(env, kc, origin))
     metas = [_meta(kc) for kc in done]

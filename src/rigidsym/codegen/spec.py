@@ -85,6 +85,8 @@ class Kernel:
         notes: extra docstring notes.
         public: exported as-is from :mod:`rigidsym.kernels` (False for building blocks
             that a hand-written wrapper dispatches to, e.g. the Euler-angle sequences).
+        jacobian: also generate ``<name>_with_jacobians`` (values and derivatives w.r.t.
+            every input, :mod:`rigidsym.codegen.jacobians`) when the kernel has no branches.
     """
 
     name: str
@@ -100,6 +102,7 @@ class Kernel:
     branches: tuple[Branch, ...] = field(default_factory=tuple)
     notes: str = ""
     public: bool = True
+    jacobian: bool = True
 
 
 def input_symbols(kernel: Kernel) -> dict:

@@ -56,7 +56,8 @@ from ._core import ORTHO_TOL as ORTHO_TOL  # re-exported: the tolerances of chec
 from ._core import UNIT_TOL as UNIT_TOL
 
 __all__ = ["SingularConfigurationError", "NonFiniteResultError", "use_backend", "backend",
-           "swap_blocks", "load", "batch_function", "euler_rate_matrix", "euler_angle_rates"]
+           "swap_blocks", "load", "batch_function", "euler_rate_matrix", "euler_angle_rates",
+           "jacobian"]
 __all__ += _KERNELS
 
 #: names of the public generated kernels
@@ -265,3 +266,5 @@ def swap_blocks(x: ArrayLike, matrix: bool = False) -> NDArray[np.floating]:
 
 # the package's kernels are load() of its generated directory (binds generated.api here)
 load()
+
+from rigidsym._jacobian import jacobian  # noqa: E402 - values and Jacobians (issue 12)

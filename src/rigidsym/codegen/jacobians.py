@@ -1,0 +1,115 @@
+"""The Jacobian transform of a kernel spec: a kernel with the derivatives as extra outputs.
+
+As SymForce's ``Codegen.with_jacobians``, :func:`with_jacobians` turns one spec into a second
+spec, named ``<name>_with_jacobians``, that returns the values and, for each output ``o`` and
+array input ``a``, the output ``o_D_a`` of per-sample shape ``o.shape + a.shape`` (the entry
+``[i..., j...]`` is ``d o[i...] / d a[j...]``, the JAX convention). The derivatives are taken
+by sympy on the **declared formula**, i.e. on what ``kernel.build`` returns, before the
+generator's half-angle rewrite; the generator then rewrites and CSEs values and derivatives
+as one program, so they share sub-expressions and the same rewrite.
+
+Derivatives are in the ambient coordinates of each input (every component of a unit ``e``
+or of a rotation ``Q`` is an independent variable); the tangent-space maps of the rotation
+invariants are the book's N, L, H (3.76)-(3.77).
+
+Kernels with per-sample branches are not transformed: their branches agree on the
+constraint manifold only, so an ambient derivative would depend on the branch taken.
+"""
+
+from __future__ import annotations
+
+import sympy as sp
+
+from .spec import Kernel, Out, flat_symbols
+
+__all__ = ["with_jacobians", "jacobian_kernels", "has_jacobian", "jacobian_name",
+           "derivative_name", "SUFFIX"]
+
+#: name suffix of a kernel with Jacobians (as SymForce's generated names)
+SUFFIX = "_with_jacobians"
+
+
+def jacobian_name(kernel_name: str) -> str:
+    """Name of the generated kernel that returns the values and Jacobians of ``kernel_name``."""
+    return kernel_name + SUFFIX
+
+
+def derivative_name(output: str, arg: str) -> str:
+    """Name of the output ``d output / d arg`` (SymForce's ``<result>_D_<arg>``)."""
+    return f"{output}_D_{arg}"
+
+
+def has_jacobian(kernel: Kernel) -> bool:
+    """Whether ``kernel`` asks for a Jacobian and is one smooth formula (no per-sample branch)."""
+    return kernel.jacobian and not kernel.branches and not kernel.name.endswith(SUFFIX)
+
+
+def _flat(value, out: Out) -> list[sp.Expr]:
+    if out.shape == ():
+        if isinstance(value, sp.MatrixBase):
+            return [value[0, 0]]
+        return [sp.sympify(value)]
+    return list(sp.Matrix(value))          # row-major
+
+
+def _shaped(entries: list[sp.Expr], shape: tuple[int, ...]):
+    if shape == ():
+        return entries[0]
+    if len(shape) == 2:
+        return sp.Matrix(shape[0], shape[1], entries)
+    return sp.Matrix(entries)               # flat, row-major over ``shape``
+
+
+def with_jacobians(kernel: Kernel) -> Kernel:
+    """The spec returning ``kernel``'s outputs and their derivatives w.r.t. every input.
+
+    Args:
+        kernel: a kernel without branches (see :func:`has_jacobian`).
+
+    Returns:
+        A non-public :class:`~rigidsym.codegen.spec.Kernel` named
+        ``jacobian_name(kernel.name)``: outputs ``kernel.outputs`` followed by
+        ``derivative_name(o, a)`` of shape ``o.shape + a.shape`` for each output ``o`` and
+        input ``a`` (output-major).
+
+    Raises:
+        ValueError: ``kernel`` has per-sample branches.
+    """
+    if not has_jacobian(kernel):
+        raise ValueError(f"kernel: {kernel.name} has per-sample branches (or is already a "
+                         "Jacobian kernel); its ambient derivative is not one formula")
+    outs = list(kernel.outputs)
+    for o in kernel.outputs:
+        for a in kernel.args:
+            outs.append(Out(derivative_name(o.name, a.name), o.shape + a.shape,
+                            f"d {o.name} / d {a.name}, shape {o.shape} + {a.shape}"))
+
+    def build(**syms):
+        values = kernel.build(**syms)
+        res = dict(values)
+        # same names and assumptions as ``syms``: the same sympy symbols
+        flat_in = dict(flat_symbols(kernel))
+        for o in kernel.outputs:
+            f = _flat(values[o.name], o)
+            for a in kernel.args:
+                xs = flat_in[a.name]
+                # the declared formula, differentiated before any rewrite (row-major: output
+                # index first, then input index)
+                d = [sp.diff(fi, x) for fi in f for x in xs]
+                res[derivative_name(o.name, a.name)] = _shaped(d, o.shape + a.shape)
+        return res
+
+    singular = kernel.singular
+    return Kernel(
+        name=jacobian_name(kernel.name),
+        summary=f"{kernel.summary.rstrip('.')}, with the Jacobians of its outputs.",
+        formula=f"{kernel.formula}; and d(output)/d(input) by sympy on the declared formula",
+        ids=kernel.ids, sources=kernel.sources, args=kernel.args, outputs=tuple(outs),
+        build=build, singular=singular, singular_arg=kernel.singular_arg,
+        notes=kernel.notes, public=False, jacobian=False)
+
+
+def jacobian_kernels(kernels) -> list[Kernel]:
+    """``with_jacobians(k)`` for every kernel of ``kernels`` that has a Jacobian."""
+    return [with_jacobians(k) for k in kernels if has_jacobian(k)]
+
