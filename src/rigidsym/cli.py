@@ -165,7 +165,7 @@ def cmd_show(args) -> int:
             continue
         mod = sys.modules[eq.module]
         src = inspect.getsourcefile(getattr(mod, eq.function.split(".")[0]))
-        where = f"{eq.module}.{eq.function} ({os.path.relpath(src)})"
+        where = f"{eq.function} of {eq.module} ({os.path.relpath(src)})"
         if k:
             print("\n" + "-" * min(width, 40) + "\n")
         print(explain(r, {"printed": st.printed, "claim": st.claims,
