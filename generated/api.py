@@ -73,7 +73,7 @@ def H_matrix(
     *,
     out: Out = None,
     check: bool = True,
-    on_singular: OnSingular = "raise",
+    on_singular: OnSingular | None = None,
     threads: int | None = None,
 ) -> NDArray[np.floating]:
     r"""Rate matrix of the Euler-Rodrigues parameters [r; r0]: rate = H_matrix omega.
@@ -87,8 +87,8 @@ def H_matrix(
         phi: array-like (...); rotation angle [rad]
         out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
         check: validate the inputs (finite, unit e/eta, orthogonal Q) and report a non-finite output (overflow).
-        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows).
-        threads: worker threads of the C batch loop (a positive int; None: the default).
+        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
+        threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
         H_matrix: ndarray (..., 4, 3)
@@ -114,7 +114,7 @@ def H_matrix_dot(
     *,
     out: Out = None,
     check: bool = True,
-    on_singular: OnSingular = "raise",
+    on_singular: OnSingular | None = None,
     threads: int | None = None,
 ) -> NDArray[np.floating]:
     r"""Time derivative of H_matrix along omega.
@@ -129,8 +129,8 @@ def H_matrix_dot(
         omega: array-like (..., 3); angular velocity [rad/s]
         out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
         check: validate the inputs (finite, unit e/eta, orthogonal Q) and report a non-finite output (overflow).
-        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows).
-        threads: worker threads of the C batch loop (a positive int; None: the default).
+        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
+        threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
         H_matrix_dot: ndarray (..., 4, 3); [1/s]
@@ -155,7 +155,7 @@ def H_tilde(
     *,
     out: Out = None,
     check: bool = True,
-    on_singular: OnSingular = "raise",
+    on_singular: OnSingular | None = None,
     threads: int | None = None,
 ) -> NDArray[np.floating]:
     r"""Left inverse of the rate matrix of the Euler-Rodrigues parameters [r; r0]: omega = H_tilde rate.
@@ -169,8 +169,8 @@ def H_tilde(
         phi: array-like (...); rotation angle [rad]
         out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
         check: validate the inputs (finite, unit e/eta, orthogonal Q) and report a non-finite output (overflow).
-        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows).
-        threads: worker threads of the C batch loop (a positive int; None: the default).
+        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
+        threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
         H_tilde: ndarray (..., 3, 4)
@@ -196,7 +196,7 @@ def H_tilde_dot(
     *,
     out: Out = None,
     check: bool = True,
-    on_singular: OnSingular = "raise",
+    on_singular: OnSingular | None = None,
     threads: int | None = None,
 ) -> NDArray[np.floating]:
     r"""Time derivative of H_tilde along omega.
@@ -211,8 +211,8 @@ def H_tilde_dot(
         omega: array-like (..., 3); angular velocity [rad/s]
         out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
         check: validate the inputs (finite, unit e/eta, orthogonal Q) and report a non-finite output (overflow).
-        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows).
-        threads: worker threads of the C batch loop (a positive int; None: the default).
+        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
+        threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
         H_tilde_dot: ndarray (..., 3, 4); [1/s]
@@ -237,7 +237,7 @@ def L_matrix(
     *,
     out: Out = None,
     check: bool = True,
-    on_singular: OnSingular = "raise",
+    on_singular: OnSingular | None = None,
     threads: int | None = None,
 ) -> NDArray[np.floating]:
     r"""Rate matrix of the linear invariants [u; u0]: rate = L_matrix omega.
@@ -251,8 +251,8 @@ def L_matrix(
         phi: array-like (...); rotation angle [rad]
         out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
         check: validate the inputs (finite, unit e/eta, orthogonal Q) and report a non-finite output (overflow).
-        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows).
-        threads: worker threads of the C batch loop (a positive int; None: the default).
+        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
+        threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
         L_matrix: ndarray (..., 4, 3)
@@ -278,7 +278,7 @@ def L_matrix_dot(
     *,
     out: Out = None,
     check: bool = True,
-    on_singular: OnSingular = "raise",
+    on_singular: OnSingular | None = None,
     threads: int | None = None,
 ) -> NDArray[np.floating]:
     r"""Time derivative of L_matrix along omega.
@@ -293,8 +293,8 @@ def L_matrix_dot(
         omega: array-like (..., 3); angular velocity [rad/s]
         out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
         check: validate the inputs (finite, unit e/eta, orthogonal Q) and report a non-finite output (overflow).
-        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows).
-        threads: worker threads of the C batch loop (a positive int; None: the default).
+        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
+        threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
         L_matrix_dot: ndarray (..., 4, 3); [1/s]
@@ -319,7 +319,7 @@ def L_tilde(
     *,
     out: Out = None,
     check: bool = True,
-    on_singular: OnSingular = "raise",
+    on_singular: OnSingular | None = None,
     threads: int | None = None,
 ) -> NDArray[np.floating]:
     r"""Left inverse of the rate matrix of the linear invariants [u; u0]: omega = L_tilde rate.
@@ -333,8 +333,8 @@ def L_tilde(
         phi: array-like (...); rotation angle [rad]
         out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
         check: validate the inputs (finite, unit e/eta, orthogonal Q) and report a non-finite output (overflow).
-        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows).
-        threads: worker threads of the C batch loop (a positive int; None: the default).
+        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
+        threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
         L_tilde: ndarray (..., 3, 4)
@@ -364,7 +364,7 @@ def L_tilde_dot(
     *,
     out: Out = None,
     check: bool = True,
-    on_singular: OnSingular = "raise",
+    on_singular: OnSingular | None = None,
     threads: int | None = None,
 ) -> NDArray[np.floating]:
     r"""Time derivative of L_tilde along omega.
@@ -379,8 +379,8 @@ def L_tilde_dot(
         omega: array-like (..., 3); angular velocity [rad/s]
         out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
         check: validate the inputs (finite, unit e/eta, orthogonal Q) and report a non-finite output (overflow).
-        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows).
-        threads: worker threads of the C batch loop (a positive int; None: the default).
+        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
+        threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
         L_tilde_dot: ndarray (..., 3, 4); [1/s]
@@ -409,7 +409,7 @@ def N_matrix(
     *,
     out: Out = None,
     check: bool = True,
-    on_singular: OnSingular = "raise",
+    on_singular: OnSingular | None = None,
     threads: int | None = None,
 ) -> NDArray[np.floating]:
     r"""Rate matrix of the natural invariants [e; phi]: rate = N_matrix omega.
@@ -423,8 +423,8 @@ def N_matrix(
         phi: array-like (...); rotation angle [rad]
         out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
         check: validate the inputs (finite, unit e/eta, orthogonal Q) and report a non-finite output (overflow).
-        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows).
-        threads: worker threads of the C batch loop (a positive int; None: the default).
+        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
+        threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
         N_matrix: ndarray (..., 4, 3)
@@ -454,7 +454,7 @@ def N_matrix_dot(
     *,
     out: Out = None,
     check: bool = True,
-    on_singular: OnSingular = "raise",
+    on_singular: OnSingular | None = None,
     threads: int | None = None,
 ) -> NDArray[np.floating]:
     r"""Time derivative of N_matrix along omega.
@@ -469,8 +469,8 @@ def N_matrix_dot(
         omega: array-like (..., 3); angular velocity [rad/s]
         out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
         check: validate the inputs (finite, unit e/eta, orthogonal Q) and report a non-finite output (overflow).
-        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows).
-        threads: worker threads of the C batch loop (a positive int; None: the default).
+        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
+        threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
         N_matrix_dot: ndarray (..., 4, 3); [1/s]
@@ -499,7 +499,7 @@ def N_tilde(
     *,
     out: Out = None,
     check: bool = True,
-    on_singular: OnSingular = "raise",
+    on_singular: OnSingular | None = None,
     threads: int | None = None,
 ) -> NDArray[np.floating]:
     r"""Left inverse of the rate matrix of the natural invariants [e; phi]: omega = N_tilde rate.
@@ -513,8 +513,8 @@ def N_tilde(
         phi: array-like (...); rotation angle [rad]
         out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
         check: validate the inputs (finite, unit e/eta, orthogonal Q) and report a non-finite output (overflow).
-        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows).
-        threads: worker threads of the C batch loop (a positive int; None: the default).
+        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
+        threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
         N_tilde: ndarray (..., 3, 4)
@@ -540,7 +540,7 @@ def N_tilde_dot(
     *,
     out: Out = None,
     check: bool = True,
-    on_singular: OnSingular = "raise",
+    on_singular: OnSingular | None = None,
     threads: int | None = None,
 ) -> NDArray[np.floating]:
     r"""Time derivative of N_tilde along omega.
@@ -555,8 +555,8 @@ def N_tilde_dot(
         omega: array-like (..., 3); angular velocity [rad/s]
         out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
         check: validate the inputs (finite, unit e/eta, orthogonal Q) and report a non-finite output (overflow).
-        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows).
-        threads: worker threads of the C batch loop (a positive int; None: the default).
+        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
+        threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
         N_tilde_dot: ndarray (..., 3, 4); [1/s]
@@ -583,7 +583,7 @@ def inertia_at_point(
     *,
     out: Out = None,
     check: bool = True,
-    on_singular: OnSingular = "raise",
+    on_singular: OnSingular | None = None,
     threads: int | None = None,
 ) -> NDArray[np.floating]:
     r"""Moment of inertia about a point A.
@@ -599,8 +599,8 @@ def inertia_at_point(
         a: array-like (..., 3); point A [m]
         out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
         check: validate the inputs (finite, unit e/eta, orthogonal Q) and report a non-finite output (overflow).
-        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows).
-        threads: worker threads of the C batch loop (a positive int; None: the default).
+        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
+        threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
         I_A: ndarray (..., 3, 3); [kg m^2]
@@ -627,7 +627,7 @@ def inertia_dyad_at_point(
     *,
     out: Out = None,
     check: bool = True,
-    on_singular: OnSingular = "raise",
+    on_singular: OnSingular | None = None,
     threads: int | None = None,
 ) -> NDArray[np.floating]:
     r"""Inertia dyad M_A (6x6) at point A.
@@ -643,8 +643,8 @@ def inertia_dyad_at_point(
         a: array-like (..., 3); point A [m]
         out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
         check: validate the inputs (finite, unit e/eta, orthogonal Q) and report a non-finite output (overflow).
-        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows).
-        threads: worker threads of the C batch loop (a positive int; None: the default).
+        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
+        threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
         M_A: ndarray (..., 6, 6)
@@ -670,7 +670,7 @@ def instant_screw_axis(
     *,
     out: Out = None,
     check: bool = True,
-    on_singular: OnSingular = "raise",
+    on_singular: OnSingular | None = None,
     threads: int | None = None,
 ) -> tuple[NDArray[np.floating], NDArray[np.floating], NDArray[np.floating]]:
     r"""Instant screw axis of a twist: point, pitch and Plücker array.
@@ -685,8 +685,8 @@ def instant_screw_axis(
         a_dot: array-like (..., 3); velocity of A [m/s]
         out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
         check: validate the inputs (finite, unit e/eta, orthogonal Q) and report a non-finite output (overflow).
-        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows).
-        threads: worker threads of the C batch loop (a positive int; None: the default).
+        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
+        threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
         p0: ndarray (..., 3); ISA point closest to the origin [m]
@@ -719,7 +719,7 @@ def kinetic_energy(
     *,
     out: Out = None,
     check: bool = True,
-    on_singular: OnSingular = "raise",
+    on_singular: OnSingular | None = None,
     threads: int | None = None,
 ) -> NDArray[np.floating]:
     r"""Kinetic energy of a rigid body.
@@ -735,8 +735,8 @@ def kinetic_energy(
         c_dot: array-like (..., 3); velocity of the mass centre [m/s]
         out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
         check: validate the inputs (finite, unit e/eta, orthogonal Q) and report a non-finite output (overflow).
-        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows).
-        threads: worker threads of the C batch loop (a positive int; None: the default).
+        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
+        threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
         T: ndarray (...); [J]
@@ -766,7 +766,7 @@ def moving_frame_acceleration(
     *,
     out: Out = None,
     check: bool = True,
-    on_singular: OnSingular = "raise",
+    on_singular: OnSingular | None = None,
     threads: int | None = None,
 ) -> NDArray[np.floating]:
     r"""Acceleration of a point in the fixed frame from moving-frame data.
@@ -785,8 +785,8 @@ def moving_frame_acceleration(
         rho_ddot_M: array-like (..., 3); acceleration in M [m/s^2]
         out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
         check: validate the inputs (finite, unit e/eta, orthogonal Q) and report a non-finite output (overflow).
-        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows).
-        threads: worker threads of the C batch loop (a positive int; None: the default).
+        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
+        threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
         p_ddot: ndarray (..., 3); [m/s^2], F-frame
@@ -810,7 +810,7 @@ def natural_invariants_from_rotation(
     *,
     out: Out = None,
     check: bool = True,
-    on_singular: OnSingular = "raise",
+    on_singular: OnSingular | None = None,
     threads: int | None = None,
 ) -> tuple[NDArray[np.floating], NDArray[np.floating]]:
     r"""Natural invariants (e, phi) of a rotation matrix, phi in [0, pi].
@@ -823,8 +823,8 @@ def natural_invariants_from_rotation(
         Q: array-like (..., 3, 3), proper orthogonal; rotation matrix (proper orthogonal)
         out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
         check: validate the inputs (finite, unit e/eta, orthogonal Q) and report a non-finite output (overflow).
-        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows).
-        threads: worker threads of the C batch loop (a positive int; None: the default).
+        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
+        threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
         e: ndarray (..., 3); unit axis
@@ -859,7 +859,7 @@ def newton_euler_wrench(
     *,
     out: Out = None,
     check: bool = True,
-    on_singular: OnSingular = "raise",
+    on_singular: OnSingular | None = None,
     threads: int | None = None,
 ) -> NDArray[np.floating]:
     r"""Newton-Euler wrench [n_C; f] of a rigid body.
@@ -876,8 +876,8 @@ def newton_euler_wrench(
         c_ddot: array-like (..., 3); acceleration of the mass centre [m/s^2]
         out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
         check: validate the inputs (finite, unit e/eta, orthogonal Q) and report a non-finite output (overflow).
-        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows).
-        threads: worker threads of the C batch loop (a positive int; None: the default).
+        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
+        threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
         w: ndarray (..., 6); [n_C; f] [N m; N]
@@ -902,7 +902,7 @@ def plucker_from_points(
     *,
     out: Out = None,
     check: bool = True,
-    on_singular: OnSingular = "raise",
+    on_singular: OnSingular | None = None,
     threads: int | None = None,
 ) -> NDArray[np.floating]:
     r"""Plücker array of the line through two points.
@@ -916,8 +916,8 @@ def plucker_from_points(
         p2: array-like (..., 3); second point [m]
         out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
         check: validate the inputs (finite, unit e/eta, orthogonal Q) and report a non-finite output (overflow).
-        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows).
-        threads: worker threads of the C batch loop (a positive int; None: the default).
+        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
+        threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
         kappa: ndarray (..., 6); [e; n] (n in m)
@@ -947,7 +947,7 @@ def plucker_transfer(
     *,
     out: Out = None,
     check: bool = True,
-    on_singular: OnSingular = "raise",
+    on_singular: OnSingular | None = None,
     threads: int | None = None,
 ) -> NDArray[np.floating]:
     r"""Plücker array of a line referred to point B.
@@ -962,8 +962,8 @@ def plucker_transfer(
         b: array-like (..., 3); point B [m]
         out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
         check: validate the inputs (finite, unit e/eta, orthogonal Q) and report a non-finite output (overflow).
-        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows).
-        threads: worker threads of the C batch loop (a positive int; None: the default).
+        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
+        threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
         kappa_B: ndarray (..., 6); [e; n_B]
@@ -991,7 +991,7 @@ def point_acceleration(
     *,
     out: Out = None,
     check: bool = True,
-    on_singular: OnSingular = "raise",
+    on_singular: OnSingular | None = None,
     threads: int | None = None,
 ) -> NDArray[np.floating]:
     r"""Acceleration of a body point P.
@@ -1008,8 +1008,8 @@ def point_acceleration(
         a: array-like (..., 3); point A [m]
         out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
         check: validate the inputs (finite, unit e/eta, orthogonal Q) and report a non-finite output (overflow).
-        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows).
-        threads: worker threads of the C batch loop (a positive int; None: the default).
+        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
+        threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
         p_ddot: ndarray (..., 3); [m/s^2]
@@ -1033,7 +1033,7 @@ def rotation_from_euler_rodrigues(
     *,
     out: Out = None,
     check: bool = True,
-    on_singular: OnSingular = "raise",
+    on_singular: OnSingular | None = None,
     threads: int | None = None,
 ) -> NDArray[np.floating]:
     r"""Rotation matrix from the Euler-Rodrigues parameters eta = [r; r0].
@@ -1046,8 +1046,8 @@ def rotation_from_euler_rodrigues(
         eta: array-like (..., 4), unit; Euler-Rodrigues parameters [r1, r2, r3, r0]
         out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
         check: validate the inputs (finite, unit e/eta, orthogonal Q) and report a non-finite output (overflow).
-        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows).
-        threads: worker threads of the C batch loop (a positive int; None: the default).
+        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
+        threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
         Q: ndarray (..., 3, 3); rotation matrix
@@ -1072,7 +1072,7 @@ def rotation_from_natural_invariants(
     *,
     out: Out = None,
     check: bool = True,
-    on_singular: OnSingular = "raise",
+    on_singular: OnSingular | None = None,
     threads: int | None = None,
 ) -> NDArray[np.floating]:
     r"""Rotation matrix from its natural invariants (e, phi).
@@ -1086,8 +1086,8 @@ def rotation_from_natural_invariants(
         phi: array-like (...); rotation angle [rad]
         out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
         check: validate the inputs (finite, unit e/eta, orthogonal Q) and report a non-finite output (overflow).
-        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows).
-        threads: worker threads of the C batch loop (a positive int; None: the default).
+        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
+        threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
         Q: ndarray (..., 3, 3); rotation matrix
@@ -1114,7 +1114,7 @@ def screw_axis_point(
     *,
     out: Out = None,
     check: bool = True,
-    on_singular: OnSingular = "raise",
+    on_singular: OnSingular | None = None,
     threads: int | None = None,
 ) -> NDArray[np.floating]:
     r"""Point of the screw axis closest to the origin.
@@ -1130,8 +1130,8 @@ def screw_axis_point(
         a_prime: array-like (..., 3); the same point after the displacement [m]
         out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
         check: validate the inputs (finite, unit e/eta, orthogonal Q) and report a non-finite output (overflow).
-        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows).
-        threads: worker threads of the C batch loop (a positive int; None: the default).
+        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
+        threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
         p0: ndarray (..., 3); point of the axis closest to the origin [m]
@@ -1161,7 +1161,7 @@ def screw_of_displacement(
     *,
     out: Out = None,
     check: bool = True,
-    on_singular: OnSingular = "raise",
+    on_singular: OnSingular | None = None,
     threads: int | None = None,
 ) -> tuple[NDArray[np.floating], NDArray[np.floating], NDArray[np.floating], NDArray[np.floating], NDArray[np.floating]]:
     r"""Screw of a finite displacement: axis, angle, axis point, pitch, Plücker array.
@@ -1176,8 +1176,8 @@ def screw_of_displacement(
         a_prime: array-like (..., 3); the same point after the displacement [m]
         out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
         check: validate the inputs (finite, unit e/eta, orthogonal Q) and report a non-finite output (overflow).
-        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows).
-        threads: worker threads of the C batch loop (a positive int; None: the default).
+        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
+        threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
         e: ndarray (..., 3); unit axis
@@ -1213,7 +1213,7 @@ def twist_transfer(
     *,
     out: Out = None,
     check: bool = True,
-    on_singular: OnSingular = "raise",
+    on_singular: OnSingular | None = None,
     threads: int | None = None,
 ) -> NDArray[np.floating]:
     r"""Twist at P from the twist at A (same body).
@@ -1228,8 +1228,8 @@ def twist_transfer(
         p: array-like (..., 3); point P [m]
         out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
         check: validate the inputs (finite, unit e/eta, orthogonal Q) and report a non-finite output (overflow).
-        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows).
-        threads: worker threads of the C batch loop (a positive int; None: the default).
+        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
+        threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
         t_P: ndarray (..., 6); [omega; v_P]
@@ -1254,7 +1254,7 @@ def twist_transfer_matrix(
     *,
     out: Out = None,
     check: bool = True,
-    on_singular: OnSingular = "raise",
+    on_singular: OnSingular | None = None,
     threads: int | None = None,
 ) -> NDArray[np.floating]:
     r"""Twist-transfer matrix U (6x6).
@@ -1268,8 +1268,8 @@ def twist_transfer_matrix(
         p: array-like (..., 3); point P [m]
         out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
         check: validate the inputs (finite, unit e/eta, orthogonal Q) and report a non-finite output (overflow).
-        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows).
-        threads: worker threads of the C batch loop (a positive int; None: the default).
+        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
+        threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
         U: ndarray (..., 6, 6)
@@ -1294,7 +1294,7 @@ def wrench_axis(
     *,
     out: Out = None,
     check: bool = True,
-    on_singular: OnSingular = "raise",
+    on_singular: OnSingular | None = None,
     threads: int | None = None,
 ) -> tuple[NDArray[np.floating], NDArray[np.floating], NDArray[np.floating]]:
     r"""Axis of a wrench: point, pitch and Plücker array.
@@ -1308,8 +1308,8 @@ def wrench_axis(
         a: array-like (..., 3); point A [m]
         out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
         check: validate the inputs (finite, unit e/eta, orthogonal Q) and report a non-finite output (overflow).
-        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows).
-        threads: worker threads of the C batch loop (a positive int; None: the default).
+        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
+        threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
         p0: ndarray (..., 3); wrench-axis point closest to the origin [m]
@@ -1341,7 +1341,7 @@ def wrench_transfer(
     *,
     out: Out = None,
     check: bool = True,
-    on_singular: OnSingular = "raise",
+    on_singular: OnSingular | None = None,
     threads: int | None = None,
 ) -> NDArray[np.floating]:
     r"""Wrench at P from the wrench at A.
@@ -1356,8 +1356,8 @@ def wrench_transfer(
         p: array-like (..., 3); point P [m]
         out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
         check: validate the inputs (finite, unit e/eta, orthogonal Q) and report a non-finite output (overflow).
-        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows).
-        threads: worker threads of the C batch loop (a positive int; None: the default).
+        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
+        threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
         w_P: ndarray (..., 6); [n_P; f]
@@ -1382,7 +1382,7 @@ def wrench_transfer_matrix(
     *,
     out: Out = None,
     check: bool = True,
-    on_singular: OnSingular = "raise",
+    on_singular: OnSingular | None = None,
     threads: int | None = None,
 ) -> NDArray[np.floating]:
     r"""Wrench-transfer matrix V (6x6).
@@ -1396,8 +1396,8 @@ def wrench_transfer_matrix(
         p: array-like (..., 3); point P [m]
         out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
         check: validate the inputs (finite, unit e/eta, orthogonal Q) and report a non-finite output (overflow).
-        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows).
-        threads: worker threads of the C batch loop (a positive int; None: the default).
+        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
+        threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
         V: ndarray (..., 6, 6)

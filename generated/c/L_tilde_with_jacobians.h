@@ -231,7 +231,7 @@ static inline int rigidsym_L_tilde_with_jacobians_sample_trig(
 
 
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
- * are written as NaN; returns their number. */
+ * are written as NaN; returns their number. One thread. */
 int64_t rigidsym_L_tilde_with_jacobians(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_e,
@@ -239,5 +239,26 @@ int64_t rigidsym_L_tilde_with_jacobians(
     double *RIGIDSYM_RESTRICT out_L_tilde,
     double *RIGIDSYM_RESTRICT out_L_tilde_D_e,
     double *RIGIDSYM_RESTRICT out_L_tilde_D_phi);
+
+/* The same on `threads` threads (OpenMP; one thread without it); the outputs and the count
+ * are the same for every thread count. */
+int64_t rigidsym_L_tilde_with_jacobians_threads(
+    int64_t n, int threads,
+    const double *RIGIDSYM_RESTRICT in_e,
+    const double *RIGIDSYM_RESTRICT in_phi,
+    double *RIGIDSYM_RESTRICT out_L_tilde,
+    double *RIGIDSYM_RESTRICT out_L_tilde_D_e,
+    double *RIGIDSYM_RESTRICT out_L_tilde_D_phi);
+
+
+/* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
+ * is flagged too). */
+int64_t rigidsym_L_tilde_with_jacobians_f32_threads(
+    int64_t n, int threads,
+    const float *RIGIDSYM_RESTRICT in_e,
+    const float *RIGIDSYM_RESTRICT in_phi,
+    float *RIGIDSYM_RESTRICT out_L_tilde,
+    float *RIGIDSYM_RESTRICT out_L_tilde_D_e,
+    float *RIGIDSYM_RESTRICT out_L_tilde_D_phi);
 
 #endif /* RIGIDSYM_L_TILDE_WITH_JACOBIANS_H */

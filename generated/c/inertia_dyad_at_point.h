@@ -100,7 +100,7 @@ static inline int rigidsym_inertia_dyad_at_point_sample(
 
 
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
- * are written as NaN; returns their number. */
+ * are written as NaN; returns their number. One thread. */
 int64_t rigidsym_inertia_dyad_at_point(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_I_C,
@@ -108,5 +108,26 @@ int64_t rigidsym_inertia_dyad_at_point(
     const double *RIGIDSYM_RESTRICT in_c,
     const double *RIGIDSYM_RESTRICT in_a,
     double *RIGIDSYM_RESTRICT out_M_A);
+
+/* The same on `threads` threads (OpenMP; one thread without it); the outputs and the count
+ * are the same for every thread count. */
+int64_t rigidsym_inertia_dyad_at_point_threads(
+    int64_t n, int threads,
+    const double *RIGIDSYM_RESTRICT in_I_C,
+    const double *RIGIDSYM_RESTRICT in_m,
+    const double *RIGIDSYM_RESTRICT in_c,
+    const double *RIGIDSYM_RESTRICT in_a,
+    double *RIGIDSYM_RESTRICT out_M_A);
+
+
+/* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
+ * is flagged too). */
+int64_t rigidsym_inertia_dyad_at_point_f32_threads(
+    int64_t n, int threads,
+    const float *RIGIDSYM_RESTRICT in_I_C,
+    const float *RIGIDSYM_RESTRICT in_m,
+    const float *RIGIDSYM_RESTRICT in_c,
+    const float *RIGIDSYM_RESTRICT in_a,
+    float *RIGIDSYM_RESTRICT out_M_A);
 
 #endif /* RIGIDSYM_INERTIA_DYAD_AT_POINT_H */

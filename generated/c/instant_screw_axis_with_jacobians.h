@@ -237,7 +237,7 @@ static inline int rigidsym_instant_screw_axis_with_jacobians_sample(
 
 
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
- * are written as NaN; returns their number. */
+ * are written as NaN; returns their number. One thread. */
 int64_t rigidsym_instant_screw_axis_with_jacobians(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_omega,
@@ -255,5 +255,46 @@ int64_t rigidsym_instant_screw_axis_with_jacobians(
     double *RIGIDSYM_RESTRICT out_plucker_D_omega,
     double *RIGIDSYM_RESTRICT out_plucker_D_a,
     double *RIGIDSYM_RESTRICT out_plucker_D_a_dot);
+
+/* The same on `threads` threads (OpenMP; one thread without it); the outputs and the count
+ * are the same for every thread count. */
+int64_t rigidsym_instant_screw_axis_with_jacobians_threads(
+    int64_t n, int threads,
+    const double *RIGIDSYM_RESTRICT in_omega,
+    const double *RIGIDSYM_RESTRICT in_a,
+    const double *RIGIDSYM_RESTRICT in_a_dot,
+    double *RIGIDSYM_RESTRICT out_p0,
+    double *RIGIDSYM_RESTRICT out_pitch,
+    double *RIGIDSYM_RESTRICT out_plucker,
+    double *RIGIDSYM_RESTRICT out_p0_D_omega,
+    double *RIGIDSYM_RESTRICT out_p0_D_a,
+    double *RIGIDSYM_RESTRICT out_p0_D_a_dot,
+    double *RIGIDSYM_RESTRICT out_pitch_D_omega,
+    double *RIGIDSYM_RESTRICT out_pitch_D_a,
+    double *RIGIDSYM_RESTRICT out_pitch_D_a_dot,
+    double *RIGIDSYM_RESTRICT out_plucker_D_omega,
+    double *RIGIDSYM_RESTRICT out_plucker_D_a,
+    double *RIGIDSYM_RESTRICT out_plucker_D_a_dot);
+
+
+/* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
+ * is flagged too). */
+int64_t rigidsym_instant_screw_axis_with_jacobians_f32_threads(
+    int64_t n, int threads,
+    const float *RIGIDSYM_RESTRICT in_omega,
+    const float *RIGIDSYM_RESTRICT in_a,
+    const float *RIGIDSYM_RESTRICT in_a_dot,
+    float *RIGIDSYM_RESTRICT out_p0,
+    float *RIGIDSYM_RESTRICT out_pitch,
+    float *RIGIDSYM_RESTRICT out_plucker,
+    float *RIGIDSYM_RESTRICT out_p0_D_omega,
+    float *RIGIDSYM_RESTRICT out_p0_D_a,
+    float *RIGIDSYM_RESTRICT out_p0_D_a_dot,
+    float *RIGIDSYM_RESTRICT out_pitch_D_omega,
+    float *RIGIDSYM_RESTRICT out_pitch_D_a,
+    float *RIGIDSYM_RESTRICT out_pitch_D_a_dot,
+    float *RIGIDSYM_RESTRICT out_plucker_D_omega,
+    float *RIGIDSYM_RESTRICT out_plucker_D_a,
+    float *RIGIDSYM_RESTRICT out_plucker_D_a_dot);
 
 #endif /* RIGIDSYM_INSTANT_SCREW_AXIS_WITH_JACOBIANS_H */

@@ -88,7 +88,7 @@ static inline int rigidsym_kinetic_energy_with_jacobians_sample(
 
 
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
- * are written as NaN; returns their number. */
+ * are written as NaN; returns their number. One thread. */
 int64_t rigidsym_kinetic_energy_with_jacobians(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_I_C,
@@ -100,5 +100,34 @@ int64_t rigidsym_kinetic_energy_with_jacobians(
     double *RIGIDSYM_RESTRICT out_T_D_m,
     double *RIGIDSYM_RESTRICT out_T_D_omega,
     double *RIGIDSYM_RESTRICT out_T_D_c_dot);
+
+/* The same on `threads` threads (OpenMP; one thread without it); the outputs and the count
+ * are the same for every thread count. */
+int64_t rigidsym_kinetic_energy_with_jacobians_threads(
+    int64_t n, int threads,
+    const double *RIGIDSYM_RESTRICT in_I_C,
+    const double *RIGIDSYM_RESTRICT in_m,
+    const double *RIGIDSYM_RESTRICT in_omega,
+    const double *RIGIDSYM_RESTRICT in_c_dot,
+    double *RIGIDSYM_RESTRICT out_T,
+    double *RIGIDSYM_RESTRICT out_T_D_I_C,
+    double *RIGIDSYM_RESTRICT out_T_D_m,
+    double *RIGIDSYM_RESTRICT out_T_D_omega,
+    double *RIGIDSYM_RESTRICT out_T_D_c_dot);
+
+
+/* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
+ * is flagged too). */
+int64_t rigidsym_kinetic_energy_with_jacobians_f32_threads(
+    int64_t n, int threads,
+    const float *RIGIDSYM_RESTRICT in_I_C,
+    const float *RIGIDSYM_RESTRICT in_m,
+    const float *RIGIDSYM_RESTRICT in_omega,
+    const float *RIGIDSYM_RESTRICT in_c_dot,
+    float *RIGIDSYM_RESTRICT out_T,
+    float *RIGIDSYM_RESTRICT out_T_D_I_C,
+    float *RIGIDSYM_RESTRICT out_T_D_m,
+    float *RIGIDSYM_RESTRICT out_T_D_omega,
+    float *RIGIDSYM_RESTRICT out_T_D_c_dot);
 
 #endif /* RIGIDSYM_KINETIC_ENERGY_WITH_JACOBIANS_H */

@@ -84,7 +84,7 @@ static inline int rigidsym_moving_frame_acceleration_sample(
 
 
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
- * are written as NaN; returns their number. */
+ * are written as NaN; returns their number. One thread. */
 int64_t rigidsym_moving_frame_acceleration(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_o_ddot,
@@ -95,5 +95,32 @@ int64_t rigidsym_moving_frame_acceleration(
     const double *RIGIDSYM_RESTRICT in_rho_dot_M,
     const double *RIGIDSYM_RESTRICT in_rho_ddot_M,
     double *RIGIDSYM_RESTRICT out_p_ddot);
+
+/* The same on `threads` threads (OpenMP; one thread without it); the outputs and the count
+ * are the same for every thread count. */
+int64_t rigidsym_moving_frame_acceleration_threads(
+    int64_t n, int threads,
+    const double *RIGIDSYM_RESTRICT in_o_ddot,
+    const double *RIGIDSYM_RESTRICT in_Q,
+    const double *RIGIDSYM_RESTRICT in_omega,
+    const double *RIGIDSYM_RESTRICT in_omega_dot,
+    const double *RIGIDSYM_RESTRICT in_rho_M,
+    const double *RIGIDSYM_RESTRICT in_rho_dot_M,
+    const double *RIGIDSYM_RESTRICT in_rho_ddot_M,
+    double *RIGIDSYM_RESTRICT out_p_ddot);
+
+
+/* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
+ * is flagged too). */
+int64_t rigidsym_moving_frame_acceleration_f32_threads(
+    int64_t n, int threads,
+    const float *RIGIDSYM_RESTRICT in_o_ddot,
+    const float *RIGIDSYM_RESTRICT in_Q,
+    const float *RIGIDSYM_RESTRICT in_omega,
+    const float *RIGIDSYM_RESTRICT in_omega_dot,
+    const float *RIGIDSYM_RESTRICT in_rho_M,
+    const float *RIGIDSYM_RESTRICT in_rho_dot_M,
+    const float *RIGIDSYM_RESTRICT in_rho_ddot_M,
+    float *RIGIDSYM_RESTRICT out_p_ddot);
 
 #endif /* RIGIDSYM_MOVING_FRAME_ACCELERATION_H */

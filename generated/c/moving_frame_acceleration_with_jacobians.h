@@ -244,7 +244,7 @@ static inline int rigidsym_moving_frame_acceleration_with_jacobians_sample(
 
 
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
- * are written as NaN; returns their number. */
+ * are written as NaN; returns their number. One thread. */
 int64_t rigidsym_moving_frame_acceleration_with_jacobians(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_o_ddot,
@@ -262,5 +262,46 @@ int64_t rigidsym_moving_frame_acceleration_with_jacobians(
     double *RIGIDSYM_RESTRICT out_p_ddot_D_rho_M,
     double *RIGIDSYM_RESTRICT out_p_ddot_D_rho_dot_M,
     double *RIGIDSYM_RESTRICT out_p_ddot_D_rho_ddot_M);
+
+/* The same on `threads` threads (OpenMP; one thread without it); the outputs and the count
+ * are the same for every thread count. */
+int64_t rigidsym_moving_frame_acceleration_with_jacobians_threads(
+    int64_t n, int threads,
+    const double *RIGIDSYM_RESTRICT in_o_ddot,
+    const double *RIGIDSYM_RESTRICT in_Q,
+    const double *RIGIDSYM_RESTRICT in_omega,
+    const double *RIGIDSYM_RESTRICT in_omega_dot,
+    const double *RIGIDSYM_RESTRICT in_rho_M,
+    const double *RIGIDSYM_RESTRICT in_rho_dot_M,
+    const double *RIGIDSYM_RESTRICT in_rho_ddot_M,
+    double *RIGIDSYM_RESTRICT out_p_ddot,
+    double *RIGIDSYM_RESTRICT out_p_ddot_D_o_ddot,
+    double *RIGIDSYM_RESTRICT out_p_ddot_D_Q,
+    double *RIGIDSYM_RESTRICT out_p_ddot_D_omega,
+    double *RIGIDSYM_RESTRICT out_p_ddot_D_omega_dot,
+    double *RIGIDSYM_RESTRICT out_p_ddot_D_rho_M,
+    double *RIGIDSYM_RESTRICT out_p_ddot_D_rho_dot_M,
+    double *RIGIDSYM_RESTRICT out_p_ddot_D_rho_ddot_M);
+
+
+/* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
+ * is flagged too). */
+int64_t rigidsym_moving_frame_acceleration_with_jacobians_f32_threads(
+    int64_t n, int threads,
+    const float *RIGIDSYM_RESTRICT in_o_ddot,
+    const float *RIGIDSYM_RESTRICT in_Q,
+    const float *RIGIDSYM_RESTRICT in_omega,
+    const float *RIGIDSYM_RESTRICT in_omega_dot,
+    const float *RIGIDSYM_RESTRICT in_rho_M,
+    const float *RIGIDSYM_RESTRICT in_rho_dot_M,
+    const float *RIGIDSYM_RESTRICT in_rho_ddot_M,
+    float *RIGIDSYM_RESTRICT out_p_ddot,
+    float *RIGIDSYM_RESTRICT out_p_ddot_D_o_ddot,
+    float *RIGIDSYM_RESTRICT out_p_ddot_D_Q,
+    float *RIGIDSYM_RESTRICT out_p_ddot_D_omega,
+    float *RIGIDSYM_RESTRICT out_p_ddot_D_omega_dot,
+    float *RIGIDSYM_RESTRICT out_p_ddot_D_rho_M,
+    float *RIGIDSYM_RESTRICT out_p_ddot_D_rho_dot_M,
+    float *RIGIDSYM_RESTRICT out_p_ddot_D_rho_ddot_M);
 
 #endif /* RIGIDSYM_MOVING_FRAME_ACCELERATION_WITH_JACOBIANS_H */

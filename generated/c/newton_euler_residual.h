@@ -70,7 +70,7 @@ static inline int rigidsym_newton_euler_residual_sample(
 
 
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
- * are written as NaN; returns their number. */
+ * are written as NaN; returns their number. One thread. */
 int64_t rigidsym_newton_euler_residual(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_I_C,
@@ -81,5 +81,32 @@ int64_t rigidsym_newton_euler_residual(
     const double *RIGIDSYM_RESTRICT in_n,
     const double *RIGIDSYM_RESTRICT in_f,
     double *RIGIDSYM_RESTRICT out_r);
+
+/* The same on `threads` threads (OpenMP; one thread without it); the outputs and the count
+ * are the same for every thread count. */
+int64_t rigidsym_newton_euler_residual_threads(
+    int64_t n, int threads,
+    const double *RIGIDSYM_RESTRICT in_I_C,
+    const double *RIGIDSYM_RESTRICT in_m,
+    const double *RIGIDSYM_RESTRICT in_omega,
+    const double *RIGIDSYM_RESTRICT in_omega_dot,
+    const double *RIGIDSYM_RESTRICT in_c_ddot,
+    const double *RIGIDSYM_RESTRICT in_n,
+    const double *RIGIDSYM_RESTRICT in_f,
+    double *RIGIDSYM_RESTRICT out_r);
+
+
+/* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
+ * is flagged too). */
+int64_t rigidsym_newton_euler_residual_f32_threads(
+    int64_t n, int threads,
+    const float *RIGIDSYM_RESTRICT in_I_C,
+    const float *RIGIDSYM_RESTRICT in_m,
+    const float *RIGIDSYM_RESTRICT in_omega,
+    const float *RIGIDSYM_RESTRICT in_omega_dot,
+    const float *RIGIDSYM_RESTRICT in_c_ddot,
+    const float *RIGIDSYM_RESTRICT in_n,
+    const float *RIGIDSYM_RESTRICT in_f,
+    float *RIGIDSYM_RESTRICT out_r);
 
 #endif /* RIGIDSYM_NEWTON_EULER_RESIDUAL_H */

@@ -62,7 +62,7 @@ static inline int rigidsym_newton_euler_wrench_sample(
 
 
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
- * are written as NaN; returns their number. */
+ * are written as NaN; returns their number. One thread. */
 int64_t rigidsym_newton_euler_wrench(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_I_C,
@@ -71,5 +71,28 @@ int64_t rigidsym_newton_euler_wrench(
     const double *RIGIDSYM_RESTRICT in_omega_dot,
     const double *RIGIDSYM_RESTRICT in_c_ddot,
     double *RIGIDSYM_RESTRICT out_w);
+
+/* The same on `threads` threads (OpenMP; one thread without it); the outputs and the count
+ * are the same for every thread count. */
+int64_t rigidsym_newton_euler_wrench_threads(
+    int64_t n, int threads,
+    const double *RIGIDSYM_RESTRICT in_I_C,
+    const double *RIGIDSYM_RESTRICT in_m,
+    const double *RIGIDSYM_RESTRICT in_omega,
+    const double *RIGIDSYM_RESTRICT in_omega_dot,
+    const double *RIGIDSYM_RESTRICT in_c_ddot,
+    double *RIGIDSYM_RESTRICT out_w);
+
+
+/* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
+ * is flagged too). */
+int64_t rigidsym_newton_euler_wrench_f32_threads(
+    int64_t n, int threads,
+    const float *RIGIDSYM_RESTRICT in_I_C,
+    const float *RIGIDSYM_RESTRICT in_m,
+    const float *RIGIDSYM_RESTRICT in_omega,
+    const float *RIGIDSYM_RESTRICT in_omega_dot,
+    const float *RIGIDSYM_RESTRICT in_c_ddot,
+    float *RIGIDSYM_RESTRICT out_w);
 
 #endif /* RIGIDSYM_NEWTON_EULER_WRENCH_H */

@@ -130,7 +130,7 @@ static inline int rigidsym_plucker_from_points_with_jacobians_sample(
 
 
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
- * are written as NaN; returns their number. */
+ * are written as NaN; returns their number. One thread. */
 int64_t rigidsym_plucker_from_points_with_jacobians(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_p1,
@@ -138,5 +138,26 @@ int64_t rigidsym_plucker_from_points_with_jacobians(
     double *RIGIDSYM_RESTRICT out_kappa,
     double *RIGIDSYM_RESTRICT out_kappa_D_p1,
     double *RIGIDSYM_RESTRICT out_kappa_D_p2);
+
+/* The same on `threads` threads (OpenMP; one thread without it); the outputs and the count
+ * are the same for every thread count. */
+int64_t rigidsym_plucker_from_points_with_jacobians_threads(
+    int64_t n, int threads,
+    const double *RIGIDSYM_RESTRICT in_p1,
+    const double *RIGIDSYM_RESTRICT in_p2,
+    double *RIGIDSYM_RESTRICT out_kappa,
+    double *RIGIDSYM_RESTRICT out_kappa_D_p1,
+    double *RIGIDSYM_RESTRICT out_kappa_D_p2);
+
+
+/* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
+ * is flagged too). */
+int64_t rigidsym_plucker_from_points_with_jacobians_f32_threads(
+    int64_t n, int threads,
+    const float *RIGIDSYM_RESTRICT in_p1,
+    const float *RIGIDSYM_RESTRICT in_p2,
+    float *RIGIDSYM_RESTRICT out_kappa,
+    float *RIGIDSYM_RESTRICT out_kappa_D_p1,
+    float *RIGIDSYM_RESTRICT out_kappa_D_p2);
 
 #endif /* RIGIDSYM_PLUCKER_FROM_POINTS_WITH_JACOBIANS_H */

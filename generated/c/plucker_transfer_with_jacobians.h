@@ -134,7 +134,7 @@ static inline int rigidsym_plucker_transfer_with_jacobians_sample(
 
 
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
- * are written as NaN; returns their number. */
+ * are written as NaN; returns their number. One thread. */
 int64_t rigidsym_plucker_transfer_with_jacobians(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_kappa_A,
@@ -144,5 +144,30 @@ int64_t rigidsym_plucker_transfer_with_jacobians(
     double *RIGIDSYM_RESTRICT out_kappa_B_D_kappa_A,
     double *RIGIDSYM_RESTRICT out_kappa_B_D_a,
     double *RIGIDSYM_RESTRICT out_kappa_B_D_b);
+
+/* The same on `threads` threads (OpenMP; one thread without it); the outputs and the count
+ * are the same for every thread count. */
+int64_t rigidsym_plucker_transfer_with_jacobians_threads(
+    int64_t n, int threads,
+    const double *RIGIDSYM_RESTRICT in_kappa_A,
+    const double *RIGIDSYM_RESTRICT in_a,
+    const double *RIGIDSYM_RESTRICT in_b,
+    double *RIGIDSYM_RESTRICT out_kappa_B,
+    double *RIGIDSYM_RESTRICT out_kappa_B_D_kappa_A,
+    double *RIGIDSYM_RESTRICT out_kappa_B_D_a,
+    double *RIGIDSYM_RESTRICT out_kappa_B_D_b);
+
+
+/* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
+ * is flagged too). */
+int64_t rigidsym_plucker_transfer_with_jacobians_f32_threads(
+    int64_t n, int threads,
+    const float *RIGIDSYM_RESTRICT in_kappa_A,
+    const float *RIGIDSYM_RESTRICT in_a,
+    const float *RIGIDSYM_RESTRICT in_b,
+    float *RIGIDSYM_RESTRICT out_kappa_B,
+    float *RIGIDSYM_RESTRICT out_kappa_B_D_kappa_A,
+    float *RIGIDSYM_RESTRICT out_kappa_B_D_a,
+    float *RIGIDSYM_RESTRICT out_kappa_B_D_b);
 
 #endif /* RIGIDSYM_PLUCKER_TRANSFER_WITH_JACOBIANS_H */

@@ -132,7 +132,7 @@ static inline int rigidsym_point_acceleration_with_jacobians_sample(
 
 
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
- * are written as NaN; returns their number. */
+ * are written as NaN; returns their number. One thread. */
 int64_t rigidsym_point_acceleration_with_jacobians(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_a_ddot,
@@ -146,5 +146,38 @@ int64_t rigidsym_point_acceleration_with_jacobians(
     double *RIGIDSYM_RESTRICT out_p_ddot_D_omega_dot,
     double *RIGIDSYM_RESTRICT out_p_ddot_D_p,
     double *RIGIDSYM_RESTRICT out_p_ddot_D_a);
+
+/* The same on `threads` threads (OpenMP; one thread without it); the outputs and the count
+ * are the same for every thread count. */
+int64_t rigidsym_point_acceleration_with_jacobians_threads(
+    int64_t n, int threads,
+    const double *RIGIDSYM_RESTRICT in_a_ddot,
+    const double *RIGIDSYM_RESTRICT in_omega,
+    const double *RIGIDSYM_RESTRICT in_omega_dot,
+    const double *RIGIDSYM_RESTRICT in_p,
+    const double *RIGIDSYM_RESTRICT in_a,
+    double *RIGIDSYM_RESTRICT out_p_ddot,
+    double *RIGIDSYM_RESTRICT out_p_ddot_D_a_ddot,
+    double *RIGIDSYM_RESTRICT out_p_ddot_D_omega,
+    double *RIGIDSYM_RESTRICT out_p_ddot_D_omega_dot,
+    double *RIGIDSYM_RESTRICT out_p_ddot_D_p,
+    double *RIGIDSYM_RESTRICT out_p_ddot_D_a);
+
+
+/* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
+ * is flagged too). */
+int64_t rigidsym_point_acceleration_with_jacobians_f32_threads(
+    int64_t n, int threads,
+    const float *RIGIDSYM_RESTRICT in_a_ddot,
+    const float *RIGIDSYM_RESTRICT in_omega,
+    const float *RIGIDSYM_RESTRICT in_omega_dot,
+    const float *RIGIDSYM_RESTRICT in_p,
+    const float *RIGIDSYM_RESTRICT in_a,
+    float *RIGIDSYM_RESTRICT out_p_ddot,
+    float *RIGIDSYM_RESTRICT out_p_ddot_D_a_ddot,
+    float *RIGIDSYM_RESTRICT out_p_ddot_D_omega,
+    float *RIGIDSYM_RESTRICT out_p_ddot_D_omega_dot,
+    float *RIGIDSYM_RESTRICT out_p_ddot_D_p,
+    float *RIGIDSYM_RESTRICT out_p_ddot_D_a);
 
 #endif /* RIGIDSYM_POINT_ACCELERATION_WITH_JACOBIANS_H */

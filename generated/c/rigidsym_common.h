@@ -36,6 +36,28 @@ double cos(double);
 #define RIGIDSYM_SIMD
 #endif
 
+/* Threads: the batch functions take their thread count as an argument and pass it to OpenMP
+ * explicitly (num_threads), so OMP_NUM_THREADS does not change it (rigidsym.kernels asks for
+ * one thread below a measured batch size, MIN_PARALLEL). Without OpenMP the loops run on one
+ * thread. */
+#if defined(_OPENMP)
+#define RIGIDSYM_PRAGMA(x) _Pragma(#x)
+#define RIGIDSYM_PARALLEL_FOR(t) \
+    RIGIDSYM_PRAGMA(omp parallel for schedule(static) num_threads(t) reduction(+:count) if(t > 1))
+#else
+#define RIGIDSYM_PARALLEL_FOR(t)
+#endif
+
+/* The block function of a kernel is compiled once and called for full and padded blocks
+ * alike: never inlined, so both run the same machine code. */
+#if defined(__GNUC__)
+#define RIGIDSYM_NOINLINE __attribute__((noinline))
+#define RIGIDSYM_ALIGNED __attribute__((aligned(64)))
+#else
+#define RIGIDSYM_NOINLINE
+#define RIGIDSYM_ALIGNED
+#endif
+
 /* Samples per block of the batch loops that test their outputs for finiteness once per block:
  * the outputs of a block are still in L1 (64 samples of a 6 x 6 output: 18 KB; measured
  * faster than 256). */
@@ -53,6 +75,18 @@ static inline int rigidsym_any_nonfinite(const double *RIGIDSYM_RESTRICT p, int6
         acc |= (b & 0x7ff0000000000000ULL) + 0x0010000000000000ULL;
     }
     return (int)(acc >> 63);
+}
+
+/* The same for float32 values (exponent bits 0x7f800000). */
+static inline int rigidsym_any_nonfinite_f32(const float *RIGIDSYM_RESTRICT p, int64_t len)
+{
+    uint32_t acc = 0;
+    for (int64_t j = 0; j < len; ++j) {
+        uint32_t b;
+        memcpy(&b, p + j, sizeof b);
+        acc |= (b & 0x7f800000U) + 0x00800000U;
+    }
+    return (int)(acc >> 31);
 }
 
 #endif /* RIGIDSYM_COMMON_H */

@@ -204,7 +204,7 @@ static inline int rigidsym_rotation_from_natural_invariants_with_jacobians_sampl
 
 
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
- * are written as NaN; returns their number. */
+ * are written as NaN; returns their number. One thread. */
 int64_t rigidsym_rotation_from_natural_invariants_with_jacobians(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_e,
@@ -212,5 +212,26 @@ int64_t rigidsym_rotation_from_natural_invariants_with_jacobians(
     double *RIGIDSYM_RESTRICT out_Q,
     double *RIGIDSYM_RESTRICT out_Q_D_e,
     double *RIGIDSYM_RESTRICT out_Q_D_phi);
+
+/* The same on `threads` threads (OpenMP; one thread without it); the outputs and the count
+ * are the same for every thread count. */
+int64_t rigidsym_rotation_from_natural_invariants_with_jacobians_threads(
+    int64_t n, int threads,
+    const double *RIGIDSYM_RESTRICT in_e,
+    const double *RIGIDSYM_RESTRICT in_phi,
+    double *RIGIDSYM_RESTRICT out_Q,
+    double *RIGIDSYM_RESTRICT out_Q_D_e,
+    double *RIGIDSYM_RESTRICT out_Q_D_phi);
+
+
+/* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
+ * is flagged too). */
+int64_t rigidsym_rotation_from_natural_invariants_with_jacobians_f32_threads(
+    int64_t n, int threads,
+    const float *RIGIDSYM_RESTRICT in_e,
+    const float *RIGIDSYM_RESTRICT in_phi,
+    float *RIGIDSYM_RESTRICT out_Q,
+    float *RIGIDSYM_RESTRICT out_Q_D_e,
+    float *RIGIDSYM_RESTRICT out_Q_D_phi);
 
 #endif /* RIGIDSYM_ROTATION_FROM_NATURAL_INVARIANTS_WITH_JACOBIANS_H */

@@ -10,6 +10,328 @@
  */
 #include "screw_axis_point_with_jacobians.h"
 
+/* Exactly 64 samples, always: a full block of the batch, or the last partial block
+ * padded. One code path for every sample, so that a sample's bits do not depend on where it
+ * sits in the batch: no scalar remainder of a vector loop, and the sin/cos loop works on
+ * local aligned arrays only (no alias or alignment versions of it); never
+ * inlined, so that both uses run the same machine code. Then one finiteness test over the
+ * first m samples' outputs (still in cache): finite inputs can overflow into a non-finite
+ * output, flagged as a singular sample is. When something is flagged, each sample's flag is
+ * recomputed from that sample alone (its own flag and its own output row) and its row
+ * written as NaN. Returns the number of flagged samples among the first m. */
+static RIGIDSYM_NOINLINE int64_t rigidsym_screw_axis_point_with_jacobians_block(
+    int64_t m,
+    const double *RIGIDSYM_RESTRICT in_e,
+    const double *RIGIDSYM_RESTRICT in_phi,
+    const double *RIGIDSYM_RESTRICT in_a,
+    const double *RIGIDSYM_RESTRICT in_a_prime,
+    double *RIGIDSYM_RESTRICT out_p0,
+    double *RIGIDSYM_RESTRICT out_p0_D_e,
+    double *RIGIDSYM_RESTRICT out_p0_D_phi,
+    double *RIGIDSYM_RESTRICT out_p0_D_a,
+    double *RIGIDSYM_RESTRICT out_p0_D_a_prime)
+{
+    int64_t count = 0;
+    RIGIDSYM_ALIGNED double trig_0[64];
+    RIGIDSYM_ALIGNED double trig_1[64];
+    RIGIDSYM_ALIGNED double col_phi[64];
+    for (int64_t j = 0; j < 64; ++j) {
+        col_phi[j] = in_phi[1 * j + 0];
+    }
+    /* a SIMD loop evaluates the sin/cos values into local arrays, then a per-sample loop
+     * reads them */
+    RIGIDSYM_SIMD
+    for (int64_t j = 0; j < 64; ++j) {
+        const double phi = col_phi[j];
+        const double x2 = (0.5)*phi;
+        trig_0[j] = sin(x2);
+        trig_1[j] = cos(x2);
+    }
+    for (int64_t j = 0; j < 64; ++j) {
+        count += rigidsym_screw_axis_point_with_jacobians_sample_trig(
+            in_e + 3 * j,
+            in_phi + 1 * j,
+            in_a + 3 * j,
+            in_a_prime + 3 * j,
+            trig_0[j],
+            trig_1[j],
+            out_p0 + 3 * j,
+            out_p0_D_e + 9 * j,
+            out_p0_D_phi + 3 * j,
+            out_p0_D_a + 9 * j,
+            out_p0_D_a_prime + 9 * j);
+    }
+    count += rigidsym_any_nonfinite(out_p0, 3 * m);
+    count += rigidsym_any_nonfinite(out_p0_D_e, 9 * m);
+    count += rigidsym_any_nonfinite(out_p0_D_phi, 3 * m);
+    count += rigidsym_any_nonfinite(out_p0_D_a, 9 * m);
+    count += rigidsym_any_nonfinite(out_p0_D_a_prime, 9 * m);
+    if (count == 0)
+        return 0;
+    count = 0;
+    for (int64_t j = 0; j < m; ++j) {
+        double tmp_p0[3];
+        double tmp_p0_D_e[9];
+        double tmp_p0_D_phi[3];
+        double tmp_p0_D_a[9];
+        double tmp_p0_D_a_prime[9];
+        int flagged = rigidsym_screw_axis_point_with_jacobians_sample_trig(
+            in_e + 3 * j,
+            in_phi + 1 * j,
+            in_a + 3 * j,
+            in_a_prime + 3 * j,
+            trig_0[j],
+            trig_1[j],
+            tmp_p0,
+            tmp_p0_D_e,
+            tmp_p0_D_phi,
+            tmp_p0_D_a,
+            tmp_p0_D_a_prime);
+        flagged |= rigidsym_any_nonfinite(out_p0 + 3 * j, 3);
+        flagged |= rigidsym_any_nonfinite(out_p0_D_e + 9 * j, 9);
+        flagged |= rigidsym_any_nonfinite(out_p0_D_phi + 3 * j, 3);
+        flagged |= rigidsym_any_nonfinite(out_p0_D_a + 9 * j, 9);
+        flagged |= rigidsym_any_nonfinite(out_p0_D_a_prime + 9 * j, 9);
+        if (flagged) {
+            ++count;
+            for (int c = 0; c < 3; ++c)
+                out_p0[3 * j + c] = NAN;
+            for (int c = 0; c < 9; ++c)
+                out_p0_D_e[9 * j + c] = NAN;
+            for (int c = 0; c < 3; ++c)
+                out_p0_D_phi[3 * j + c] = NAN;
+            for (int c = 0; c < 9; ++c)
+                out_p0_D_a[9 * j + c] = NAN;
+            for (int c = 0; c < 9; ++c)
+                out_p0_D_a_prime[9 * j + c] = NAN;
+        }
+    }
+    return count;
+}
+
+/* Samples [i0, i0 + m) of the batch, m <= 64; the tail through padded copies (the real
+ * samples, then copies of the last one: valid inputs). Returns the number flagged. */
+static int64_t rigidsym_screw_axis_point_with_jacobians_run(
+    int64_t i0, int64_t m,
+    const double *RIGIDSYM_RESTRICT in_e,
+    const double *RIGIDSYM_RESTRICT in_phi,
+    const double *RIGIDSYM_RESTRICT in_a,
+    const double *RIGIDSYM_RESTRICT in_a_prime,
+    double *RIGIDSYM_RESTRICT out_p0,
+    double *RIGIDSYM_RESTRICT out_p0_D_e,
+    double *RIGIDSYM_RESTRICT out_p0_D_phi,
+    double *RIGIDSYM_RESTRICT out_p0_D_a,
+    double *RIGIDSYM_RESTRICT out_p0_D_a_prime)
+{
+    double pad_e[3 * 64];
+    double pad_phi[1 * 64];
+    double pad_a[3 * 64];
+    double pad_a_prime[3 * 64];
+    double pad_p0[3 * 64];
+    double pad_p0_D_e[9 * 64];
+    double pad_p0_D_phi[3 * 64];
+    double pad_p0_D_a[9 * 64];
+    double pad_p0_D_a_prime[9 * 64];
+    if (m == 64)
+        return rigidsym_screw_axis_point_with_jacobians_block(m,
+            in_e + 3 * i0,
+            in_phi + 1 * i0,
+            in_a + 3 * i0,
+            in_a_prime + 3 * i0,
+            out_p0 + 3 * i0,
+            out_p0_D_e + 9 * i0,
+            out_p0_D_phi + 3 * i0,
+            out_p0_D_a + 9 * i0,
+            out_p0_D_a_prime + 9 * i0);
+    for (int64_t j = 0; j < 64; ++j) {
+        const int64_t s = i0 + (j < m ? j : m - 1);
+        memcpy(pad_e + 3 * j, in_e + 3 * s,
+               3 * sizeof(double));
+        memcpy(pad_phi + 1 * j, in_phi + 1 * s,
+               1 * sizeof(double));
+        memcpy(pad_a + 3 * j, in_a + 3 * s,
+               3 * sizeof(double));
+        memcpy(pad_a_prime + 3 * j, in_a_prime + 3 * s,
+               3 * sizeof(double));
+    }
+    const int64_t count = rigidsym_screw_axis_point_with_jacobians_block(m,
+        pad_e,
+        pad_phi,
+        pad_a,
+        pad_a_prime,
+        pad_p0,
+        pad_p0_D_e,
+        pad_p0_D_phi,
+        pad_p0_D_a,
+        pad_p0_D_a_prime);
+    memcpy(out_p0 + 3 * i0, pad_p0, 3 * m * sizeof(double));
+    memcpy(out_p0_D_e + 9 * i0, pad_p0_D_e, 9 * m * sizeof(double));
+    memcpy(out_p0_D_phi + 3 * i0, pad_p0_D_phi, 3 * m * sizeof(double));
+    memcpy(out_p0_D_a + 9 * i0, pad_p0_D_a, 9 * m * sizeof(double));
+    memcpy(out_p0_D_a_prime + 9 * i0, pad_p0_D_a_prime, 9 * m * sizeof(double));
+    return count;
+}
+
+/* float32 storage, float64 arithmetic: samples [i0, i0 + m) widened into the block's local
+ * double arrays, evaluated by the same block function, rounded back. A finite double output
+ * can overflow float32: such rows are flagged too (NaN). Returns the number flagged. */
+static int64_t rigidsym_screw_axis_point_with_jacobians_run_f32(
+    int64_t i0, int64_t m,
+    const float *RIGIDSYM_RESTRICT in_e,
+    const float *RIGIDSYM_RESTRICT in_phi,
+    const float *RIGIDSYM_RESTRICT in_a,
+    const float *RIGIDSYM_RESTRICT in_a_prime,
+    float *RIGIDSYM_RESTRICT out_p0,
+    float *RIGIDSYM_RESTRICT out_p0_D_e,
+    float *RIGIDSYM_RESTRICT out_p0_D_phi,
+    float *RIGIDSYM_RESTRICT out_p0_D_a,
+    float *RIGIDSYM_RESTRICT out_p0_D_a_prime)
+{
+    double pad_e[3 * 64];
+    double pad_phi[1 * 64];
+    double pad_a[3 * 64];
+    double pad_a_prime[3 * 64];
+    double pad_p0[3 * 64];
+    double pad_p0_D_e[9 * 64];
+    double pad_p0_D_phi[3 * 64];
+    double pad_p0_D_a[9 * 64];
+    double pad_p0_D_a_prime[9 * 64];
+    for (int64_t j = 0; j < 64; ++j) {
+        const int64_t s = i0 + (j < m ? j : m - 1);
+        for (int c = 0; c < 3; ++c)
+            pad_e[3 * j + c] = in_e[3 * s + c];
+        for (int c = 0; c < 1; ++c)
+            pad_phi[1 * j + c] = in_phi[1 * s + c];
+        for (int c = 0; c < 3; ++c)
+            pad_a[3 * j + c] = in_a[3 * s + c];
+        for (int c = 0; c < 3; ++c)
+            pad_a_prime[3 * j + c] = in_a_prime[3 * s + c];
+    }
+    int64_t count = rigidsym_screw_axis_point_with_jacobians_block(m,
+        pad_e,
+        pad_phi,
+        pad_a,
+        pad_a_prime,
+        pad_p0,
+        pad_p0_D_e,
+        pad_p0_D_phi,
+        pad_p0_D_a,
+        pad_p0_D_a_prime);
+    for (int64_t c = 0; c < 3 * m; ++c)
+        out_p0[3 * i0 + c] = (float)pad_p0[c];
+    for (int64_t c = 0; c < 9 * m; ++c)
+        out_p0_D_e[9 * i0 + c] = (float)pad_p0_D_e[c];
+    for (int64_t c = 0; c < 3 * m; ++c)
+        out_p0_D_phi[3 * i0 + c] = (float)pad_p0_D_phi[c];
+    for (int64_t c = 0; c < 9 * m; ++c)
+        out_p0_D_a[9 * i0 + c] = (float)pad_p0_D_a[c];
+    for (int64_t c = 0; c < 9 * m; ++c)
+        out_p0_D_a_prime[9 * i0 + c] = (float)pad_p0_D_a_prime[c];
+    int64_t over = 0;
+    over += rigidsym_any_nonfinite_f32(out_p0 + 3 * i0, 3 * m);
+    over += rigidsym_any_nonfinite_f32(out_p0_D_e + 9 * i0, 9 * m);
+    over += rigidsym_any_nonfinite_f32(out_p0_D_phi + 3 * i0, 3 * m);
+    over += rigidsym_any_nonfinite_f32(out_p0_D_a + 9 * i0, 9 * m);
+    over += rigidsym_any_nonfinite_f32(out_p0_D_a_prime + 9 * i0, 9 * m);
+    if (over == 0)
+        return count;
+    for (int64_t j = 0; j < m; ++j) {
+        const int64_t i = i0 + j;
+        if (out_p0[3 * i] != out_p0[3 * i])
+            continue;                       /* flagged already: its row is NaN */
+        int flagged = 0;
+        flagged |= rigidsym_any_nonfinite_f32(out_p0 + 3 * i, 3);
+        flagged |= rigidsym_any_nonfinite_f32(out_p0_D_e + 9 * i, 9);
+        flagged |= rigidsym_any_nonfinite_f32(out_p0_D_phi + 3 * i, 3);
+        flagged |= rigidsym_any_nonfinite_f32(out_p0_D_a + 9 * i, 9);
+        flagged |= rigidsym_any_nonfinite_f32(out_p0_D_a_prime + 9 * i, 9);
+        if (flagged) {
+            ++count;
+            for (int c = 0; c < 3; ++c)
+                out_p0[3 * i + c] = NAN;
+            for (int c = 0; c < 9; ++c)
+                out_p0_D_e[9 * i + c] = NAN;
+            for (int c = 0; c < 3; ++c)
+                out_p0_D_phi[3 * i + c] = NAN;
+            for (int c = 0; c < 9; ++c)
+                out_p0_D_a[9 * i + c] = NAN;
+            for (int c = 0; c < 9; ++c)
+                out_p0_D_a_prime[9 * i + c] = NAN;
+        }
+    }
+    return count;
+}
+
+int64_t rigidsym_screw_axis_point_with_jacobians_f32_threads(
+    int64_t n, int threads,
+    const float *RIGIDSYM_RESTRICT in_e,
+    const float *RIGIDSYM_RESTRICT in_phi,
+    const float *RIGIDSYM_RESTRICT in_a,
+    const float *RIGIDSYM_RESTRICT in_a_prime,
+    float *RIGIDSYM_RESTRICT out_p0,
+    float *RIGIDSYM_RESTRICT out_p0_D_e,
+    float *RIGIDSYM_RESTRICT out_p0_D_phi,
+    float *RIGIDSYM_RESTRICT out_p0_D_a,
+    float *RIGIDSYM_RESTRICT out_p0_D_a_prime)
+{
+    const int64_t nblocks = (n + 64 - 1) / 64;
+    int64_t count = 0;
+    if (threads < 1)
+        threads = 1;
+    RIGIDSYM_PARALLEL_FOR(threads)
+    for (int64_t b = 0; b < nblocks; ++b) {
+        const int64_t i0 = b * 64;
+        count += rigidsym_screw_axis_point_with_jacobians_run_f32(
+            i0, n - i0 < 64 ? n - i0 : 64,
+            in_e,
+            in_phi,
+            in_a,
+            in_a_prime,
+            out_p0,
+            out_p0_D_e,
+            out_p0_D_phi,
+            out_p0_D_a,
+            out_p0_D_a_prime);
+    }
+    return count;
+}
+
+int64_t rigidsym_screw_axis_point_with_jacobians_threads(
+    int64_t n, int threads,
+    const double *RIGIDSYM_RESTRICT in_e,
+    const double *RIGIDSYM_RESTRICT in_phi,
+    const double *RIGIDSYM_RESTRICT in_a,
+    const double *RIGIDSYM_RESTRICT in_a_prime,
+    double *RIGIDSYM_RESTRICT out_p0,
+    double *RIGIDSYM_RESTRICT out_p0_D_e,
+    double *RIGIDSYM_RESTRICT out_p0_D_phi,
+    double *RIGIDSYM_RESTRICT out_p0_D_a,
+    double *RIGIDSYM_RESTRICT out_p0_D_a_prime)
+{
+    const int64_t nblocks = (n + 64 - 1) / 64;
+    int64_t count = 0;
+    if (threads < 1)
+        threads = 1;
+    /* blocks are independent and the count is an integer sum: the result is the same for
+     * every thread count */
+    RIGIDSYM_PARALLEL_FOR(threads)
+    for (int64_t b = 0; b < nblocks; ++b) {
+        const int64_t i0 = b * 64;
+        count += rigidsym_screw_axis_point_with_jacobians_run(
+            i0, n - i0 < 64 ? n - i0 : 64,
+            in_e,
+            in_phi,
+            in_a,
+            in_a_prime,
+            out_p0,
+            out_p0_D_e,
+            out_p0_D_phi,
+            out_p0_D_a,
+            out_p0_D_a_prime);
+    }
+    return count;
+}
+
 int64_t rigidsym_screw_axis_point_with_jacobians(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_e,
@@ -22,78 +344,14 @@ int64_t rigidsym_screw_axis_point_with_jacobians(
     double *RIGIDSYM_RESTRICT out_p0_D_a,
     double *RIGIDSYM_RESTRICT out_p0_D_a_prime)
 {
-    /* Pass 1, in blocks of 64 samples: evaluate and count the flagged samples,
-     * then one finiteness test over the block's outputs (still in cache): finite inputs
-     * can overflow into a non-finite output, flagged as a singular sample is. */
-    int64_t count = 0;
-    double trig_0[64];
-    double trig_1[64];
-    for (int64_t i0 = 0; i0 < n; i0 += 64) {
-        const int64_t m = n - i0 < 64 ? n - i0 : 64;
-        /* a SIMD loop evaluates the sin/cos values into stack arrays, then a per-sample loop
-         * reads them */
-        RIGIDSYM_SIMD
-        for (int64_t j = 0; j < m; ++j) {
-            const int64_t i = i0 + j;
-            const double phi = in_phi[1 * i + 0];
-            const double x2 = (0.5)*phi;
-            trig_0[j] = sin(x2);
-            trig_1[j] = cos(x2);
-        }
-        for (int64_t j = 0; j < m; ++j) {
-            const int64_t i = i0 + j;
-            count += rigidsym_screw_axis_point_with_jacobians_sample_trig(
-                in_e + 3 * i,
-                in_phi + 1 * i,
-                in_a + 3 * i,
-                in_a_prime + 3 * i,
-                trig_0[j],
-                trig_1[j],
-                out_p0 + 3 * i,
-                out_p0_D_e + 9 * i,
-                out_p0_D_phi + 3 * i,
-                out_p0_D_a + 9 * i,
-                out_p0_D_a_prime + 9 * i);
-        }
-        count += rigidsym_any_nonfinite(out_p0 + 3 * i0, 3 * m);
-        count += rigidsym_any_nonfinite(out_p0_D_e + 9 * i0, 9 * m);
-        count += rigidsym_any_nonfinite(out_p0_D_phi + 3 * i0, 3 * m);
-        count += rigidsym_any_nonfinite(out_p0_D_a + 9 * i0, 9 * m);
-        count += rigidsym_any_nonfinite(out_p0_D_a_prime + 9 * i0, 9 * m);
-    }
-    if (count == 0)
-        return 0;
-    /* Pass 2, only when some sample is flagged: find them, write NaN there, count them. */
-    count = 0;
-    for (int64_t i = 0; i < n; ++i) {
-        int flagged = rigidsym_screw_axis_point_with_jacobians_sample(
-            in_e + 3 * i,
-            in_phi + 1 * i,
-            in_a + 3 * i,
-            in_a_prime + 3 * i,
-            out_p0 + 3 * i,
-            out_p0_D_e + 9 * i,
-            out_p0_D_phi + 3 * i,
-            out_p0_D_a + 9 * i,
-            out_p0_D_a_prime + 9 * i);
-        flagged |= rigidsym_any_nonfinite(out_p0 + 3 * i, 3);
-        flagged |= rigidsym_any_nonfinite(out_p0_D_e + 9 * i, 9);
-        flagged |= rigidsym_any_nonfinite(out_p0_D_phi + 3 * i, 3);
-        flagged |= rigidsym_any_nonfinite(out_p0_D_a + 9 * i, 9);
-        flagged |= rigidsym_any_nonfinite(out_p0_D_a_prime + 9 * i, 9);
-        if (flagged) {
-            ++count;
-            for (int j = 0; j < 3; ++j)
-                out_p0[3 * i + j] = NAN;
-            for (int j = 0; j < 9; ++j)
-                out_p0_D_e[9 * i + j] = NAN;
-            for (int j = 0; j < 3; ++j)
-                out_p0_D_phi[3 * i + j] = NAN;
-            for (int j = 0; j < 9; ++j)
-                out_p0_D_a[9 * i + j] = NAN;
-            for (int j = 0; j < 9; ++j)
-                out_p0_D_a_prime[9 * i + j] = NAN;
-        }
-    }
-    return count;
+    return rigidsym_screw_axis_point_with_jacobians_threads(n, 1,
+        in_e,
+        in_phi,
+        in_a,
+        in_a_prime,
+        out_p0,
+        out_p0_D_e,
+        out_p0_D_phi,
+        out_p0_D_a,
+        out_p0_D_a_prime);
 }

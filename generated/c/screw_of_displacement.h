@@ -295,7 +295,7 @@ static inline int rigidsym_screw_of_displacement_sample(
 
 
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
- * are written as NaN; returns their number. */
+ * are written as NaN; returns their number. One thread. */
 int64_t rigidsym_screw_of_displacement(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_Q,
@@ -306,5 +306,32 @@ int64_t rigidsym_screw_of_displacement(
     double *RIGIDSYM_RESTRICT out_p0,
     double *RIGIDSYM_RESTRICT out_pitch,
     double *RIGIDSYM_RESTRICT out_plucker);
+
+/* The same on `threads` threads (OpenMP; one thread without it); the outputs and the count
+ * are the same for every thread count. */
+int64_t rigidsym_screw_of_displacement_threads(
+    int64_t n, int threads,
+    const double *RIGIDSYM_RESTRICT in_Q,
+    const double *RIGIDSYM_RESTRICT in_a,
+    const double *RIGIDSYM_RESTRICT in_a_prime,
+    double *RIGIDSYM_RESTRICT out_e,
+    double *RIGIDSYM_RESTRICT out_phi,
+    double *RIGIDSYM_RESTRICT out_p0,
+    double *RIGIDSYM_RESTRICT out_pitch,
+    double *RIGIDSYM_RESTRICT out_plucker);
+
+
+/* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
+ * is flagged too). */
+int64_t rigidsym_screw_of_displacement_f32_threads(
+    int64_t n, int threads,
+    const float *RIGIDSYM_RESTRICT in_Q,
+    const float *RIGIDSYM_RESTRICT in_a,
+    const float *RIGIDSYM_RESTRICT in_a_prime,
+    float *RIGIDSYM_RESTRICT out_e,
+    float *RIGIDSYM_RESTRICT out_phi,
+    float *RIGIDSYM_RESTRICT out_p0,
+    float *RIGIDSYM_RESTRICT out_pitch,
+    float *RIGIDSYM_RESTRICT out_plucker);
 
 #endif /* RIGIDSYM_SCREW_OF_DISPLACEMENT_H */

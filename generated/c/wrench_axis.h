@@ -69,7 +69,7 @@ static inline int rigidsym_wrench_axis_sample(
 
 
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
- * are written as NaN; returns their number. */
+ * are written as NaN; returns their number. One thread. */
 int64_t rigidsym_wrench_axis(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_w_A,
@@ -77,5 +77,26 @@ int64_t rigidsym_wrench_axis(
     double *RIGIDSYM_RESTRICT out_p0,
     double *RIGIDSYM_RESTRICT out_pitch,
     double *RIGIDSYM_RESTRICT out_plucker);
+
+/* The same on `threads` threads (OpenMP; one thread without it); the outputs and the count
+ * are the same for every thread count. */
+int64_t rigidsym_wrench_axis_threads(
+    int64_t n, int threads,
+    const double *RIGIDSYM_RESTRICT in_w_A,
+    const double *RIGIDSYM_RESTRICT in_a,
+    double *RIGIDSYM_RESTRICT out_p0,
+    double *RIGIDSYM_RESTRICT out_pitch,
+    double *RIGIDSYM_RESTRICT out_plucker);
+
+
+/* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
+ * is flagged too). */
+int64_t rigidsym_wrench_axis_f32_threads(
+    int64_t n, int threads,
+    const float *RIGIDSYM_RESTRICT in_w_A,
+    const float *RIGIDSYM_RESTRICT in_a,
+    float *RIGIDSYM_RESTRICT out_p0,
+    float *RIGIDSYM_RESTRICT out_pitch,
+    float *RIGIDSYM_RESTRICT out_plucker);
 
 #endif /* RIGIDSYM_WRENCH_AXIS_H */

@@ -226,7 +226,7 @@ static inline int rigidsym_wrench_axis_with_jacobians_sample(
 
 
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
- * are written as NaN; returns their number. */
+ * are written as NaN; returns their number. One thread. */
 int64_t rigidsym_wrench_axis_with_jacobians(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_w_A,
@@ -240,5 +240,38 @@ int64_t rigidsym_wrench_axis_with_jacobians(
     double *RIGIDSYM_RESTRICT out_pitch_D_a,
     double *RIGIDSYM_RESTRICT out_plucker_D_w_A,
     double *RIGIDSYM_RESTRICT out_plucker_D_a);
+
+/* The same on `threads` threads (OpenMP; one thread without it); the outputs and the count
+ * are the same for every thread count. */
+int64_t rigidsym_wrench_axis_with_jacobians_threads(
+    int64_t n, int threads,
+    const double *RIGIDSYM_RESTRICT in_w_A,
+    const double *RIGIDSYM_RESTRICT in_a,
+    double *RIGIDSYM_RESTRICT out_p0,
+    double *RIGIDSYM_RESTRICT out_pitch,
+    double *RIGIDSYM_RESTRICT out_plucker,
+    double *RIGIDSYM_RESTRICT out_p0_D_w_A,
+    double *RIGIDSYM_RESTRICT out_p0_D_a,
+    double *RIGIDSYM_RESTRICT out_pitch_D_w_A,
+    double *RIGIDSYM_RESTRICT out_pitch_D_a,
+    double *RIGIDSYM_RESTRICT out_plucker_D_w_A,
+    double *RIGIDSYM_RESTRICT out_plucker_D_a);
+
+
+/* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
+ * is flagged too). */
+int64_t rigidsym_wrench_axis_with_jacobians_f32_threads(
+    int64_t n, int threads,
+    const float *RIGIDSYM_RESTRICT in_w_A,
+    const float *RIGIDSYM_RESTRICT in_a,
+    float *RIGIDSYM_RESTRICT out_p0,
+    float *RIGIDSYM_RESTRICT out_pitch,
+    float *RIGIDSYM_RESTRICT out_plucker,
+    float *RIGIDSYM_RESTRICT out_p0_D_w_A,
+    float *RIGIDSYM_RESTRICT out_p0_D_a,
+    float *RIGIDSYM_RESTRICT out_pitch_D_w_A,
+    float *RIGIDSYM_RESTRICT out_pitch_D_a,
+    float *RIGIDSYM_RESTRICT out_plucker_D_w_A,
+    float *RIGIDSYM_RESTRICT out_plucker_D_a);
 
 #endif /* RIGIDSYM_WRENCH_AXIS_WITH_JACOBIANS_H */

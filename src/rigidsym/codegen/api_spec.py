@@ -40,11 +40,12 @@ COMMON_KEYWORDS = (
     Keyword("check", "bool", "True",
             "validate the inputs (finite, unit e/eta, orthogonal Q) and report a non-finite "
             "output (overflow)"),
-    Keyword("on_singular", "OnSingular", '"raise"',
+    Keyword("on_singular", "OnSingular | None", "None",
             '"raise" (SingularConfigurationError naming the argument and the batch indices) '
-            'or "nan" (NaN in exactly those rows)'),
+            'or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs'),
     Keyword("threads", "int | None", "None",
-            "worker threads of the C batch loop (a positive int; None: the default)"),
+            "threads of the C batch loop; None: kernels.set_num_threads, else "
+            "RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count)"),
 )
 
 

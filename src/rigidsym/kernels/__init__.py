@@ -42,6 +42,8 @@ from pathlib import Path
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from rigidsym._scale import get_num_threads as get_num_threads
+from rigidsym._scale import set_num_threads as set_num_threads
 from rigidsym.generated.api import *  # noqa: F403 - the generated kernels (true signatures)
 from rigidsym.generated.api import __all__ as _KERNELS
 
@@ -57,7 +59,7 @@ from ._core import UNIT_TOL as UNIT_TOL
 
 __all__ = ["SingularConfigurationError", "NonFiniteResultError", "use_backend", "backend",
            "swap_blocks", "load", "batch_function", "euler_rate_matrix", "euler_angle_rates",
-           "jacobian"]
+           "jacobian", "set_num_threads", "get_num_threads"]
 __all__ += _KERNELS
 
 #: names of the public generated kernels
@@ -149,7 +151,7 @@ def backend() -> str:
 
 
 def batch_function(name: str, backend_name: str | None = None,
-                   threads: int | None = None) -> Callable:
+                   threads: int | None = None, dtype=np.float64) -> Callable:
     """Low-level ``f(*inputs, *outputs) -> flags`` of a package kernel (for benchmarks).
 
     Inputs and outputs are C-contiguous ``(n, ...)`` float64 arrays, without validation or
@@ -157,7 +159,7 @@ def batch_function(name: str, backend_name: str | None = None,
     (singular or non-finite, written as NaN); for NumPy the ``(n,)`` uint8 flags (1
     singular, 2 non-finite output).
     """
-    return _builtin_space().batch_function(name, backend_name, threads)
+    return _builtin_space().batch_function(name, backend_name, threads, dtype)
 
 
 def _meta() -> dict:
@@ -210,7 +212,7 @@ def euler_rate_matrix(angles: ArrayLike, sequence: str, frame: str = "fixed", *,
 
 def euler_angle_rates(angles: ArrayLike, omega: ArrayLike, sequence: str,
                       frame: str = "fixed", *, out: NDArray[np.float64] | None = None,
-                      check: bool = True, on_singular: str = "raise",
+                      check: bool = True, on_singular: str | None = None,
                       threads: int | None = None) -> NDArray[np.floating]:
     """Euler-angle rates ``eta_dot = W^-1 omega`` (Exercise 3.10).
 

@@ -13,6 +13,7 @@ import importlib.util
 import json
 import math
 import sys
+import threading
 import warnings
 from collections.abc import Callable
 from dataclasses import dataclass, field
@@ -20,6 +21,9 @@ from pathlib import Path
 from typing import Any
 
 import numpy as np
+
+from rigidsym import _dask
+from rigidsym._scale import MIN_PARALLEL, numpy_f32, resolve_threads, result_dtype, tolerance
 
 #: tolerance on | ||e|| - 1 | for unit-vector arguments (e, eta).
 UNIT_TOL = 1e-8
@@ -45,6 +49,10 @@ class SingularConfigurationError(ValueError):
         self.argument = argument
         self.indices = indices
 
+    def __reduce__(self):
+        # pickled with its fields (distributed re-raises a worker's error on the client)
+        return (type(self), (str(self), self.argument, self.indices))
+
 
 class NonFiniteResultError(SingularConfigurationError):
     """Finite inputs gave a non-finite output (overflow): reported with ``check=True``.
@@ -56,6 +64,9 @@ class NonFiniteResultError(SingularConfigurationError):
 
 
 _STATE: dict = {"backend": None, "warned": False}
+# one lock for the lazy C build and the backend switch: kernels may first be called from
+# several threads at once (a thread pool, a Dask worker)
+_LOCK = threading.RLock()
 
 
 def _warn_once(exc: Exception) -> None:
@@ -83,7 +94,7 @@ def check_keywords(check: bool, on_singular: str, threads: int | None) -> None:
             raise ValueError(f"threads: expected a positive int or None, got {threads}")
 
 
-def as_array(x: Any, spec: dict) -> np.ndarray:
+def as_array(x: Any, spec: dict, dtype=np.float64) -> np.ndarray:
     """``x`` as a float64 array with the trailing shape of ``spec``; errors name the argument.
 
     Raises:
@@ -103,13 +114,13 @@ def as_array(x: Any, spec: dict) -> np.ndarray:
         except Exception as exc:  # noqa: BLE001 - any failure to convert is a type error
             raise TypeError(f"{name}: expected an array-like of real numbers, "
                             f"got {type(x).__name__} ({exc})") from None
-    if x.dtype != np.float64:
+    if x.dtype != dtype:
         kind = x.dtype.kind
         if kind not in "fiu":
             what = _DTYPE_WORDS.get(kind, str(x.dtype))
             raise TypeError(f"{name}: expected real numbers (float or int), got {what} "
                             f"values (dtype {x.dtype})")
-        x = x.astype(np.float64)
+        x = x.astype(dtype)
     shape = spec["tshape"]
     k = len(shape)
     if x.ndim < k or x.shape[x.ndim - k:] != shape:
@@ -118,26 +129,30 @@ def as_array(x: Any, spec: dict) -> np.ndarray:
     return x
 
 
-def validate(a: np.ndarray, spec: dict) -> None:
-    """Finiteness, and the constraint of ``spec["kind"]`` (unit vector, rotation).
+def validate(a: np.ndarray, spec: dict, given=None) -> None:
+    """Finiteness, and the constraint of ``spec["kind"]`` (unit vector, rotation), with the
+    tolerances of the dtype ``given`` (the argument's own: float32 values in a float64 call
+    keep the float32 tolerance).
 
     Raises:
         ValueError: naming the argument and what was expected.
     """
     name, kind = spec["name"], spec["kind"]
+    prec = given if given is not None and given.kind == "f" and given.itemsize < 8 else a.dtype
+    unit_tol, ortho_tol = tolerance(UNIT_TOL, prec), tolerance(ORTHO_TOL, prec)
     if not np.isfinite(a).all():
         raise ValueError(f"{name}: non-finite values (NaN or inf); expected finite values")
     if kind == "unit":
         err = np.abs(np.sqrt(np.einsum("...i,...i->...", a, a)) - 1.0)
-        if (err > UNIT_TOL).any():
+        if (err > unit_tol).any():
             raise ValueError(f"{name}: not a unit vector (| ||{name}|| - 1 | = "
-                             f"{err.max():.3g} > {UNIT_TOL})")
+                             f"{err.max():.3g} > {unit_tol:.3g})")
     elif kind == "rotation":
         g = np.einsum("...ki,...kj->...ij", a, a) - np.eye(3)
         err = np.abs(g).max() if g.size else 0.0
-        if not err <= ORTHO_TOL:
+        if not err <= ortho_tol:
             raise ValueError(f"{name}: not orthogonal (max |{name}^T {name} - 1| = "
-                             f"{err:.3g} > {ORTHO_TOL})")
+                             f"{err:.3g} > {ortho_tol:.3g})")
         if (np.linalg.det(a) <= 0).any():
             raise ValueError(f"{name}: not a proper rotation (det <= 0)")
 
@@ -217,8 +232,10 @@ class KernelSpace:
 
     def c_lib(self):
         if self._clib is None:
-            from rigidsym.codegen.cbuild import load
-            self._clib = load(gdir=self.directory)
+            with _LOCK:
+                if self._clib is None:
+                    from rigidsym.codegen.cbuild import load
+                    self._clib = load(gdir=self.directory)
         return self._clib
 
     def backend(self) -> str:
@@ -236,32 +253,45 @@ class KernelSpace:
         return b
 
     def batch_function(self, name: str, backend_name: str | None = None,
-                       threads: int | None = None) -> Callable:
-        """``f(*inputs, *outputs)`` on C-contiguous ``(n, ...)`` float64 arrays.
+                       threads: int | None = None, dtype=np.float64) -> Callable:
+        """``f(*inputs, *outputs)`` on C-contiguous ``(n, ...)`` arrays of ``dtype``.
 
-        ``threads`` is accepted for the C loops (single-threaded until they use it).
+        ``threads`` as for the kernels (None: :func:`rigidsym._scale.get_num_threads`; one
+        thread below ``MIN_PARALLEL`` samples); outputs are the same for every count.
+        float32: float32 arrays in and out, float64 arithmetic inside.
         """
         b = backend_name or self.backend()
+        t = resolve_threads(threads, b)
+        f32 = np.dtype(dtype) == np.float32
         if b == "numpy":
-            return self.numpy_kernel(name)
+            k = self.numpy_kernel(name)
+            return numpy_f32(k, len(self.meta[name]["args"])) if f32 else k
         ffi, lib = self.c_lib()
-        cfun = getattr(lib, f"rigidsym_{name}")
+        cfun = getattr(lib, f"rigidsym_{name}_f32_threads" if f32 else f"rigidsym_{name}_threads")
         fb = ffi.from_buffer
+        ctype = "float[]" if f32 else "double[]"
 
         def f(*arrays):
-            return cfun(arrays[0].shape[0], *[fb("double[]", a) for a in arrays])
+            n = arrays[0].shape[0]
+            return cfun(n, t if n >= MIN_PARALLEL else 1, *[fb(ctype, a) for a in arrays])
         return f
 
     def call(self, name: str, args: tuple, out=None, check: bool = True,
-             on_singular: str = "raise", threads: int | None = None):
-        """Validate, broadcast, evaluate ``name`` and report singular/non-finite samples."""
+             on_singular: str | None = None, threads: int | None = None):
+        """Validate, broadcast, evaluate ``name`` and report singular/non-finite samples.
+        Dask inputs: a lazy result (:mod:`rigidsym._dask`)."""
+        if _dask.is_dask(args):
+            return _dask.apply(self, name, args, out=out, check=check,
+                               on_singular=on_singular, threads=threads)
+        on_singular = "raise" if on_singular is None else on_singular
         meta = self.meta[name]
         check_keywords(check, on_singular, threads)
         specs = meta["args"]
-        arrs = [as_array(x, s) for x, s in zip(args, specs, strict=True)]
+        dtype = result_dtype(args)
+        arrs = [as_array(x, s, dtype) for x, s in zip(args, specs, strict=True)]
         if check:
-            for a, s in zip(arrs, specs, strict=True):
-                validate(a, s)
+            for x, a, s in zip(args, arrs, specs, strict=True):
+                validate(a, s, getattr(x, "dtype", None))
         batch = batch_shape(arrs, specs)
         n = math.prod(batch)
         flat = []
@@ -271,17 +301,17 @@ class KernelSpace:
                 a = np.broadcast_to(a, full)
             flat.append(np.ascontiguousarray(a).reshape((n,) + s["tshape"]))
         outs_meta = meta["outputs"]
-        user = None if out is None else _check_out(out, outs_meta, batch)
+        user = None if out is None else _check_out(out, outs_meta, batch, dtype)
         bufs = []
         for i, o in enumerate(outs_meta):
             u = None if user is None else user[i]
             if u is not None and u.flags.c_contiguous:
                 bufs.append(u.reshape((n,) + o["tshape"]))
             else:
-                bufs.append(np.empty((n,) + o["tshape"]))
+                bufs.append(np.empty((n,) + o["tshape"], dtype=dtype))
         if n:
             b = self.backend()
-            res = self.batch_function(name, b, threads)(*flat, *bufs)
+            res = self.batch_function(name, b, threads, dtype)(*flat, *bufs)
             if b == "numpy":
                 flags = res
             else:
@@ -306,23 +336,25 @@ class KernelSpace:
         if idx.size:
             tmp = [np.empty((idx.size,) + b.shape[1:]) for b in bufs]
             with np.errstate(all="ignore"):
-                sub = self.numpy_kernel(name)(*[np.ascontiguousarray(a[idx]) for a in flat],
-                                              *tmp)
+                sub = self.numpy_kernel(name)(*[np.ascontiguousarray(a[idx], dtype=np.float64)
+                                                for a in flat], *tmp)
             # a row C flagged and NumPy did not (rounding at the edge of the range): overflow
             flags[idx] = np.where(sub == 0, _NONFINITE, sub)
         return flags
 
 
-def _check_out(out, outs_meta: list, batch: tuple) -> tuple:
+def _check_out(out, outs_meta: list, batch: tuple, dtype=np.float64) -> tuple:
     user = (out,) if len(outs_meta) == 1 and not isinstance(out, tuple) else tuple(out)
     if len(user) != len(outs_meta):
         raise ValueError(f"out: expected {len(outs_meta)} arrays, got {len(user)}")
     for u, o in zip(user, outs_meta, strict=True):
         want = batch + o["tshape"]
-        if not isinstance(u, np.ndarray) or u.shape != want or u.dtype != np.float64 \
-                or not u.flags.writeable:
-            raise ValueError(f"out ({o['name']}): expected a writeable float64 array of "
-                             f"shape {want}")
+        if isinstance(u, np.ndarray) and u.dtype != dtype:
+            raise TypeError(f"out ({o['name']}): expected dtype {np.dtype(dtype)} (the inputs' "
+                            f"dtype), got {u.dtype}")
+        if not isinstance(u, np.ndarray) or u.shape != want or not u.flags.writeable:
+            raise ValueError(f"out ({o['name']}): expected a writeable {np.dtype(dtype)} array "
+                             f"of shape {want}")
     return user
 
 
@@ -360,6 +392,11 @@ def _select(name: str) -> str:
     build); returns it."""
     if name not in ("c", "numpy"):
         raise ValueError(f"backend: expected 'c' or 'numpy', got {name!r}")
+    with _LOCK:
+        return _select_locked(name)
+
+
+def _select_locked(name: str) -> str:
     if name == "c":
         from . import _builtin_space
         space = _builtin_space()
