@@ -15,6 +15,8 @@ from collections.abc import Callable
 from pathlib import Path
 
 from .registry import REGISTRY, BadInput, select
+from .usermodules import MODULE_HELP as _MODULE_HELP
+from .usermodules import select_with_modules, write_user_report
 
 __all__ = ["main", "run_checks", "COMMANDS"]
 
@@ -71,7 +73,7 @@ def _table(results) -> None:
 
 def cmd_verify(args) -> int:
     """``rigidsym verify``: decide equations, print a table, optionally write JSON."""
-    ids = select(args.ids, args.section)
+    ids = select_with_modules(args.ids, args.section, args.module)
     t0 = time.perf_counter()
     results = run_checks(ids, jobs=args.jobs, progress=not args.quiet)
     wall = time.perf_counter() - t0
@@ -107,6 +109,9 @@ def default_report_dir(cwd: Path | None = None) -> Path:
 
 def cmd_report(args) -> int:
     """``rigidsym report``: write ``chapter3.{md,json,html}`` and the exercises to ``--out``."""
+    if args.module:  # a user module's report: titled by it, files named after it
+        return write_user_report(args.module, Path(args.out) if args.out else Path.cwd(),
+                                 args.jobs)
     from .io import write_atomic
     from .report import to_json, to_markdown
     from .report_html import to_html
@@ -143,7 +148,7 @@ def cmd_show(args) -> int:
     from .report import result_record
     from .show import explain, output_width
     width = output_width()
-    for k, eq_id in enumerate(select([args.id], None)):
+    for k, eq_id in enumerate(select_with_modules([args.id], None, args.module)):
         eq = REGISTRY[eq_id]
         st = eq.build()
         r = check(eq_id)
@@ -179,6 +184,8 @@ def build_parser() -> argparse.ArgumentParser:
     v.add_argument("--json", help="write the results as JSON to this path")
     v.add_argument("--jobs", type=int, default=jobs, help=f"worker processes (default {jobs})")
     v.add_argument("--quiet", action="store_true", help="no progress bar or table")
+    v.add_argument("--module", action="append", metavar="PATH_OR_DOTTED",
+                   help=_MODULE_HELP + "; only its ids unless ids or sections are given")
     v.set_defaults(func=cmd_verify)
     r = sub.add_parser("report", help="write the chapter report (Markdown, JSON, HTML)")
     r.add_argument("--out", default=None,
@@ -187,9 +194,12 @@ def build_parser() -> argparse.ArgumentParser:
     r.add_argument("--full", action="store_true",
                    help="also write chapter3-full.{md,json} with the expanded values")
     r.add_argument("--jobs", type=int, default=jobs)
+    r.add_argument("--module", action="append", metavar="PATH_OR_DOTTED",
+                   help=_MODULE_HELP + ": report its ids into --out as <module>.{md,json,html}")
     r.set_defaults(func=cmd_report)
     s = sub.add_parser("show", help="explain one equation (verdict, why, counterexample)")
     s.add_argument("id")
+    s.add_argument("--module", action="append", metavar="PATH_OR_DOTTED", help=_MODULE_HELP)
     fmt = s.add_mutually_exclusive_group()
     fmt.add_argument("--latex", action="store_true", help="print the members as LaTeX")
     fmt.add_argument("--json", action="store_true", help="print the schema-2 record")

@@ -57,7 +57,8 @@ def member_record(rel, role: str, out) -> dict:
             "latex": tex if 0 < len(tex) <= MEMBER_LATEX_LIMIT else None}
 
 
-_KIND_WORDS = {"unit": "unit vector, stereographic", "angle": "angle, half-angle tangent",
+_KIND_WORDS = {"unit": "unit vector, stereographic", "unit4": "unit 4-vector, stereographic",
+               "angle": "angle, half-angle tangent",
                "rotation": "rotation, rational quaternion"}
 
 
@@ -85,7 +86,7 @@ def _model_words(exprs) -> list[str]:
                 timed = isinstance(a, AppliedUndef)
                 timed_any |= timed
                 name = a.func.__name__ if timed else a.name
-                c = constraint_of(name, timed)
+                c = constraint_of(a)  # carried by the atom (rigidsym.symbols), not its name
                 if c is not None:
                     groups[c.name] = c.kind
                 else:

@@ -5,6 +5,8 @@ A declaration never writes ``e1**2 + e2**2 + e3**2 = 1`` anywhere: it asks for a
 by a rational parametrisation. The kinds of atoms:
 
 - ``unit_vector``: ``e . e = 1`` (stereographic projection of two free rationals);
+- ``unit_vector4``: ``x . x = 1`` in R^4 (stereographic projection of three rationals),
+  e.g. the Euler-Rodrigues parameters;
 - ``angle``: ``cos^2 + sin^2 = 1`` (tangent of a fraction of the angle); the bare angle
   itself is kept as an independent variable, which is sound because an angle and its
   sine/cosine are algebraically independent functions;
@@ -15,19 +17,28 @@ Each factory accepts ``t`` (the time symbol :data:`TIME`) to make the atoms func
 time; their derivatives, taken by ``sympy.diff``, are jets that the zero test treats as
 free variables (for unit vectors and rotations, through the jets of the parameters, so
 ``e . e_dot = 0`` and ``Q^T Q_dot + Q_dot^T Q = 0`` hold exactly).
+
+A constraint belongs to the atoms a factory returns (:class:`ConstrainedSymbol`, or an
+undefined function carrying it), never to a name: a free ``vector("e")`` in a user module
+stays free however many unit vectors named ``e`` other modules declare.
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import cache
 
 import sympy as sp
+from sympy.core.function import AppliedUndef
 
 __all__ = [
     "TIME",
     "Constraint",
+    "ConstrainedSymbol",
     "constraint_of",
+    "constrained_atom",
     "unit_vector",
+    "unit_vector4",
     "angle",
     "rotation",
     "vector",
@@ -40,12 +51,12 @@ __all__ = [
 TIME = sp.Symbol("t", real=True)
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, order=True)  # ordered: sympy's Basic.compare orders atom contents
 class Constraint:
-    """A constraint on a group of atoms, keyed by the atoms' names.
+    """A constraint on a group of atoms; every atom of the group carries it.
 
     Attributes:
-        kind: ``"unit"``, ``"angle"`` or ``"rotation"``.
+        kind: ``"unit"``, ``"unit4"``, ``"angle"`` or ``"rotation"``.
         name: the group's book name (``"e"``, ``"phi"``, ``"Q"``).
         names: the names of the atoms (symbol or function names), row-major for matrices.
         timed: whether the atoms are functions of :data:`TIME`.
@@ -57,24 +68,61 @@ class Constraint:
     timed: bool
 
 
-_CONSTRAINTS: dict[tuple[str, bool], Constraint] = {}
+class ConstrainedSymbol(sp.Symbol):
+    """A real symbol that carries its :class:`Constraint`.
+
+    The constraint is part of the symbol's identity (like ``Dummy``'s index), so a free
+    ``Symbol("e_1", real=True)`` declared anywhere else is a *different* atom and is never
+    treated as a component of a unit vector: constraints are scoped to atoms, not to names.
+    It prints and sorts exactly as the plain symbol of the same name.
+    """
+
+    __slots__ = ("constraint",)
+
+    constraint: Constraint
+
+    def __new__(cls, name: str, constraint: Constraint, **assumptions):
+        cls._sanitize(assumptions, cls)
+        obj = sp.Symbol.__xnew__(cls, name, **assumptions)
+        obj.constraint = constraint
+        return obj
+
+    def __getnewargs_ex__(self):
+        return ((self.name, self.constraint), self._assumptions_orig)
+
+    def _hashable_content(self):
+        return sp.Symbol._hashable_content(self) + (self.constraint,)
 
 
-def _register(c: Constraint) -> None:
-    # keyed by (name, timed): the static e and the e(t) of a motion are different atoms
-    for n in c.names:
-        old = _CONSTRAINTS.get((n, c.timed))
-        if old is not None and old != c:
-            raise ValueError(f"atom name {n!r} is already constrained as {old.kind} {old.name!r}")
-        _CONSTRAINTS[(n, c.timed)] = c
+# sympy orders the factors of a product and dispatches printers by class *name*: named as
+# the plain Symbol, a constrained atom sorts and prints exactly as before (same reports)
+ConstrainedSymbol.__name__ = "Symbol"
 
 
-def constraint_of(name: str, timed: bool = False) -> Constraint | None:
-    """The constraint registered for an atom name, or ``None`` for a free atom."""
-    return _CONSTRAINTS.get((name, timed))
+def constraint_of(atom) -> Constraint | None:
+    """The constraint an atom carries (a symbol or an applied function ``f(t)``), or ``None``
+    for a free atom."""
+    if isinstance(atom, ConstrainedSymbol):
+        return atom.constraint
+    if isinstance(atom, AppliedUndef):
+        return getattr(atom.func, "constraint", None)
+    return None
 
 
-def _atom(name: str, t: sp.Symbol | None):
+@cache  # one object per atom: identity comparisons stay cheap in sympy's hot paths
+def constrained_atom(name: str, c: Constraint):
+    """The atom ``name`` of the group ``c`` (equal to the one its factory returned)."""
+    if c.timed:
+        # extra keyword arguments of an undefined function take part in its equality
+        return sp.Function(name, real=True, constraint=c)(TIME)
+    return ConstrainedSymbol(name, c, real=True)
+
+
+def _atom(name: str, t: sp.Symbol | None, c: Constraint | None = None):
+    if c is not None:
+        if t is not None and t != TIME:
+            raise ValueError(f"t: expected rigidsym.symbols.TIME or None, got {t!r}")
+        return constrained_atom(name, c)
     if t is None:
         return sp.Symbol(name, real=True)
     return sp.Function(name, real=True)(t)
@@ -87,21 +135,31 @@ def _components(name: str, n: int) -> list[str]:
 def unit_vector(name: str, t: sp.Symbol | None = None) -> sp.Matrix:
     """A 3 x 1 unit vector (``e . e = 1`` imposed exactly by the zero test)."""
     names = _components(name, 3)
-    _register(Constraint("unit", name, tuple(names), t is not None))
-    return sp.Matrix([_atom(n, t) for n in names])
+    c = Constraint("unit", name, tuple(names), t is not None)
+    return sp.Matrix([_atom(n, t, c) for n in names])
+
+
+def unit_vector4(name: str, t: sp.Symbol | None = None) -> sp.Matrix:
+    """A 4 x 1 unit vector, entries ``name_1 ... name_4`` (``x . x = 1`` imposed exactly).
+
+    The Euler-Rodrigues parameters ``eta = [r; r0]`` of a rotation are one (Sec. 2.3:
+    ``r . r + r0^2 = 1``).
+    """
+    names = _components(name, 4)
+    c = Constraint("unit4", name, tuple(names), t is not None)
+    return sp.Matrix([_atom(n, t, c) for n in names])
 
 
 def angle(name: str, t: sp.Symbol | None = None):
     """An angle in radians (``cos^2 + sin^2 = 1`` imposed exactly by the zero test)."""
-    _register(Constraint("angle", name, (name,), t is not None))
-    return _atom(name, t)
+    return _atom(name, t, Constraint("angle", name, (name,), t is not None))
 
 
 def rotation(name: str, t: sp.Symbol | None = None) -> sp.Matrix:
     """A generic 3 x 3 proper orthogonal matrix (entries ``name_ij``, row-major)."""
     names = [f"{name}_{i}{j}" for i in range(1, 4) for j in range(1, 4)]
-    _register(Constraint("rotation", name, tuple(names), t is not None))
-    return sp.Matrix(3, 3, [_atom(n, t) for n in names])
+    c = Constraint("rotation", name, tuple(names), t is not None)
+    return sp.Matrix(3, 3, [_atom(n, t, c) for n in names])
 
 
 def vector(name: str, t: sp.Symbol | None = None, n: int = 3) -> sp.Matrix:

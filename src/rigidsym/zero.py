@@ -3,11 +3,12 @@
 Method (never ``simplify()``, never floating point):
 
 1. **Parametrise.** Every constrained atom is replaced by a rational function of free
-   parameters (:mod:`rigidsym.symbols`): a unit vector by stereographic projection, a
-   rotation by a rational quaternion, ``cos``/``sin`` of multiples of an angle ``phi`` by
-   rational functions of ``tau = tan(phi / (2M))``; derivatives of time-dependent atoms
-   become jets of those parameters. The bare angle stays an independent variable (an angle
-   and its cosine/sine are algebraically independent functions, so this is exact).
+   parameters (:mod:`rigidsym.symbols`): a unit vector (in R^3 or R^4) by stereographic
+   projection, a rotation by a rational quaternion, ``cos``/``sin`` of multiples of an
+   angle ``phi`` by rational functions of ``tau = tan(phi / (2M))``; derivatives of
+   time-dependent atoms become jets of those parameters. The bare angle stays an independent
+   variable (an angle and its cosine/sine are algebraically independent functions, so this
+   is exact).
    After this step the expression is a rational function over Q of free variables, and the
    constraints hold identically.
 2. **Random-exact probe.** Evaluate with Python ``Fraction`` at seeded random rational
@@ -37,7 +38,7 @@ import sympy as sp
 from sympy.core.function import AppliedUndef
 from sympy.polys.fields import field as frac_field
 
-from .symbols import TIME, constraint_of
+from .symbols import TIME, constrained_atom, constraint_of
 
 __all__ = [
     "Unsupported",
@@ -88,7 +89,7 @@ def _atom_name(a) -> str:
 
 
 def _constraint(a):
-    return constraint_of(_atom_name(a), isinstance(a, AppliedUndef))
+    return constraint_of(a)  # carried by the atom itself, never looked up by name
 
 
 def _is_angle_atom(a) -> bool:
@@ -134,6 +135,8 @@ def _group_rules(kind: str, name: str, names: tuple[str, ...], timed: bool, orde
     t = TIME
     if kind == "unit":
         pn = [f"{name}__u", f"{name}__v"]
+    elif kind == "unit4":
+        pn = [f"{name}__u", f"{name}__v", f"{name}__w"]
     elif kind == "rotation":
         pn = [f"{name}__q1", f"{name}__q2", f"{name}__q3", f"{name}__q0"]
     else:
@@ -144,6 +147,10 @@ def _group_rules(kind: str, name: str, names: tuple[str, ...], timed: bool, orde
         u, v = P
         den = 1 + u**2 + v**2
         vals = [2 * u / den, 2 * v / den, (1 - u**2 - v**2) / den]
+    elif kind == "unit4":
+        u, v, w = P
+        den = 1 + u**2 + v**2 + w**2
+        vals = [2 * u / den, 2 * v / den, 2 * w / den, (1 - u**2 - v**2 - w**2) / den]
     else:
         from .primitives import rotation_from_quaternion
         vals = list(rotation_from_quaternion(P))
@@ -258,7 +265,7 @@ def make_plan(exprs) -> Plan:
     for c, order in groups.items():
         rules = _group_rules(c.kind, c.name, c.names, c.timed, order)
         for (n, k), ex in rules.items():
-            atom = sp.Function(n, real=True)(TIME) if c.timed else sp.Symbol(n, real=True)
+            atom = constrained_atom(n, c)
             key = atom if k == 0 else sp.Derivative(atom, (TIME, k))
             plan.rules[key] = ex
             params |= ex.free_symbols

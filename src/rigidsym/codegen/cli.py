@@ -16,12 +16,17 @@ def _generate_args(p) -> None:
                    help="regenerate in memory; print a diff and exit 1 on any difference "
                         "(2 when there is no generated/ folder to compare with)")
     p.add_argument("--out", default=None, help="output folder (default: generated/)")
+    p.add_argument("--module", action="append", metavar="PATH_OR_DOTTED",
+                   help="a user module whose KERNELS to generate into --out (repeatable)")
 
 
 def cmd_generate(args) -> int:
     """Generate the NumPy and C kernels into generated/ (--check: compare only)."""
     from .generator import check, default_out_dir, generate, write
 
+    if args.module:
+        from .usergen import cmd_generate_user
+        return cmd_generate_user(args)
     t0 = time.perf_counter()
     out = Path(args.out) if args.out else default_out_dir()
     if args.check and not out.is_dir():

@@ -1,0 +1,259 @@
+"""The public Python API: check one id, verify many, read and display the results.
+
+    >>> import rigidsym
+    >>> rigidsym.check("3.96e").verdict                       # doctest: +SKIP
+    'does-not-hold'
+    >>> rigidsym.verify(sections=["3.2"]).summary()           # doctest: +SKIP
+    {'verified': ..., 'definition': ..., 'does-not-hold': ..., 'undecided': 0}
+
+In Jupyter a :class:`Results` displays as a table and one :class:`Result` as mathematics
+(MathML in HTML, LaTeX otherwise); ``repr`` stays one line.
+"""
+
+from __future__ import annotations
+
+import html
+import os
+import time
+from collections.abc import Iterable, Sequence
+from dataclasses import dataclass, fields
+from types import ModuleType
+from typing import overload
+
+from .checker import Result as _CheckerResult
+from .registry import VERDICTS, BadInput, select
+
+__all__ = ["check", "verify", "Result", "Results"]
+
+ModuleSpec = str | os.PathLike | ModuleType
+
+
+@dataclass(repr=False)
+class Result(_CheckerResult):
+    """The checker's outcome for one id, with notebook display.
+
+    The fields are those of the ``rigidsym verify --json`` rows (``id``, ``title``,
+    ``kind``, ``verdict``, ``expected``, ``method``, ``printed``, ``corrected``,
+    ``counterexample``, ``numeric``, ``seconds``, ...).
+    """
+
+    @classmethod
+    def of(cls, r: _CheckerResult) -> Result:
+        """The same result with display methods (no copy of its values)."""
+        if isinstance(r, cls):
+            return r
+        return cls(**{f.name: getattr(r, f.name) for f in fields(_CheckerResult)})
+
+    def __repr__(self) -> str:
+        flag = "" if self.verdict == self.expected else f", expected {self.expected}"
+        return (f"<Result {self.id}: {self.verdict}{flag} ({self.method}, "
+                f"{self.seconds:.2f} s)>")
+
+    def to_json(self) -> dict:
+        """The schema-2 record of this result (a row of ``Results.to_json()``)."""
+        from .report import result_record
+
+        return result_record(self)
+
+    def forms_latex(self) -> list[tuple[str, str]]:
+        """``(role, LaTeX)`` of each member in book notation (printed, claim, corrected),
+        from the schema-2 member records; the book's printed LaTeX stands in for printed
+        members too long to show."""
+        out = []
+        for m in self.members:
+            label = m["role"] + (f" ({m['label']})" if m.get("label") else "")
+            if m.get("latex"):
+                out.append((label, m["latex"]))
+        if not any(role.startswith("printed") for role, _ in out) and self.printed_latex:
+            out.insert(0, ("printed", self.printed_latex.strip()))
+        return out
+
+    def _repr_latex_(self) -> str:
+        forms = [tex for role, tex in self.forms_latex() if role.startswith("printed")]
+        body = r" \\ ".join(forms) if forms else r"\text{(no printed form)}"
+        if len(forms) > 1:
+            body = r"\begin{aligned}" + body + r"\end{aligned}"
+        return f"$\\displaystyle {body}$"
+
+    def _repr_html_(self) -> str:
+        from .mathml import latex_to_mathml
+
+        e = html.escape
+        rows = [f"<p><b>({e(self.id)}) {e(self.title)}</b>: <b>{e(self.verdict)}</b> "
+                f"(expected {e(self.expected)}; method {e(self.method)}; "
+                f"{self.seconds:.2f} s)</p>"]
+        for label, latex in self.forms_latex():
+            try:
+                shown = latex_to_mathml(latex, display=True)
+            except Exception:  # noqa: BLE001  (a converter gap must not hide the result)
+                shown = f"<pre>{e(latex)}</pre>"
+            rows.append(f"<div><i>{label}</i>{shown}</div>")
+        if self.counterexample:
+            pt = ", ".join(f"{k} = {v}" for k, v in self.counterexample["point"].items())
+            rows.append(f"<p>counterexample (exact): <code>{e(pt[:800])}</code></p>")
+        if self.detail:
+            rows.append(f"<p><small>{e(self.detail)}</small></p>")
+        return "<div class=\"rigidsym-result\">" + "".join(rows) + "</div>"
+
+
+class Results(Sequence[Result]):
+    """The results of :func:`verify`: a sequence of :class:`Result` in id order.
+
+    Indexing by position or slice gives a ``Result`` or ``Results``; by id
+    (``results["3.16"]``) the result of that id.
+    """
+
+    def __init__(self, results: Iterable[Result], seconds: float | None = None):
+        self._rows = tuple(Result.of(r) for r in results)
+        self.seconds = seconds
+
+    @overload
+    def __getitem__(self, key: int | str) -> Result: ...
+
+    @overload
+    def __getitem__(self, key: slice) -> Results: ...
+
+    def __getitem__(self, key):
+        if isinstance(key, slice):
+            return Results(self._rows[key])
+        if isinstance(key, str):
+            for r in self._rows:
+                if r.id == key:
+                    return r
+            raise KeyError(key)
+        return self._rows[key]
+
+    def __len__(self) -> int:
+        return len(self._rows)
+
+    def summary(self) -> dict[str, int]:
+        """Counts per verdict, every verdict listed (zeros included)."""
+        from .report import summary
+
+        return summary(list(self._rows))
+
+    def to_json(self) -> dict:
+        """The schema-2 document of ``rigidsym verify --json`` as a dict:
+        ``{"schema": 2, "equations": [record, ...], "summary": {verdict: count}}``."""
+        from .report import SCHEMA, result_record
+
+        return {"schema": SCHEMA, "equations": [result_record(r) for r in self._rows],
+                "summary": self.summary()}
+
+    def where(self, verdict: str | None = None, *, kind: str | None = None,
+              section: str | None = None, mismatched: bool | None = None) -> Results:
+        """The results that match every given criterion.
+
+        Args:
+            verdict: ``verified``, ``definition``, ``does-not-hold`` or ``undecided``.
+            kind: ``identity``, ``definition`` or ``claim``.
+            section: a section (``"3.2"`` takes its subsections too) or a user section.
+            mismatched: True for the results whose verdict differs from the expected one.
+
+        Raises:
+            ValueError: for an unknown verdict.
+        """
+        if verdict is not None and verdict not in VERDICTS:
+            raise ValueError(f"verdict: expected one of {VERDICTS}, got {verdict!r}")
+
+        def keep(r: Result) -> bool:
+            return ((verdict is None or r.verdict == verdict)
+                    and (kind is None or r.kind == kind)
+                    and (section is None or r.section == section
+                         or r.section.startswith(section + "."))
+                    and (mismatched is None or (r.verdict != r.expected) == mismatched))
+
+        return Results([r for r in self._rows if keep(r)])
+
+    def __repr__(self) -> str:
+        counts = ", ".join(f"{k} {v}" for k, v in self.summary().items())
+        return f"<Results: {len(self)} ids: {counts}>"
+
+    def _repr_html_(self) -> str:
+        e = html.escape
+        head = "".join(f"<th>{c}</th>" for c in ("id", "title", "verdict", "expected",
+                                                 "method", "seconds"))
+        body = []
+        for r in self._rows:
+            style = "" if r.verdict == r.expected else " style=\"color:#b00\""
+            body.append(f"<tr{style}><td>{e(r.id)}</td><td>{e(r.title)}</td>"
+                        f"<td>{e(r.verdict)}</td><td>{e(r.expected)}</td>"
+                        f"<td>{e(r.method)}</td><td>{r.seconds:.2f}</td></tr>")
+        counts = ", ".join(f"{k} {v}" for k, v in self.summary().items())
+        return (f"<table class=\"rigidsym-results\"><caption>{len(self)} ids: {e(counts)}"
+                f"</caption><thead><tr>{head}</tr></thead><tbody>{''.join(body)}</tbody>"
+                f"</table>")
+
+
+def _load(modules) -> list[str]:
+    """Load user modules (paths, dotted names or module objects); their import names."""
+    from . import usermodules
+
+    if isinstance(modules, str | os.PathLike | ModuleType):
+        modules = [modules]
+    names = []
+    for m in modules or ():
+        um = usermodules.adopt(m) if isinstance(m, ModuleType) else usermodules.load(m)
+        names.append(um.name)
+    return names
+
+
+def check(eq_id: str, *, modules: Iterable[ModuleSpec] = ()) -> Result:
+    """Decide one equation and back the verdict numerically.
+
+    Args:
+        eq_id: a book id (``"3.16"``, ``"3.96e"``, ``"thm3.2.1"``) or a user id
+            (``"notes:rodrigues"``) of a loaded module or of ``modules``.
+        modules: user modules to load first (paths, dotted names or module objects).
+
+    Returns:
+        The :class:`Result`; its ``verdict`` is computed, never read from the declaration.
+        An exception inside the declaration gives ``undecided`` with the error named.
+
+    Raises:
+        BadInput: for a malformed or unknown id, an id with several lettered parts
+            (``"3.96"``: use :func:`verify`), or a user module that cannot be loaded.
+    """
+    from .checker import check as _check
+
+    _load(modules)
+    ids = select([eq_id], None)
+    if len(ids) != 1:
+        raise BadInput(f"eq_id: {eq_id} has {len(ids)} parts ({', '.join(ids)}): check one, "
+                       f"or verify([{eq_id!r}])")
+    return Result.of(_check(ids[0]))
+
+
+def verify(ids: Sequence[str] | str | None = None, sections: Sequence[str] | str | None = None,
+           *, modules: Iterable[ModuleSpec] = (), jobs: int = 1,
+           progress: bool = False) -> Results:
+    """Decide many equations (the Python side of ``rigidsym verify``).
+
+    Args:
+        ids: ids to check (``"3.96"`` means all its lettered parts); a single string is one id.
+        sections: book sections ``"3.2"`` … ``"3.8"`` or sections of user declarations.
+        modules: user modules to load (paths to ``.py`` files, dotted names, or module
+            objects); with no ids and no sections, only their ids are checked.
+        jobs: worker processes (forked; 1 checks in this process).
+        progress: show a progress bar on stderr.
+
+    Returns:
+        :class:`Results` in id order (book order, then user ids in declaration order). With
+        no argument at all: the whole chapter.
+
+    Raises:
+        BadInput: for a malformed or unknown id or section, or a user module that cannot be
+            loaded (one line naming the module and the problem).
+        ValueError: if ``jobs`` is not a positive integer.
+    """
+    from .cli import run_checks
+
+    if not isinstance(jobs, int) or isinstance(jobs, bool) or jobs < 1:
+        raise ValueError(f"jobs: expected a positive integer, got {jobs!r}")
+    ids = [ids] if isinstance(ids, str) else ids
+    sections = [sections] if isinstance(sections, str) else sections
+    names = _load(modules)
+    selected = select(list(ids) if ids else None, list(sections) if sections else None, names)
+    t0 = time.perf_counter()
+    rows = run_checks(selected, jobs=jobs, progress=progress)
+    return Results(rows, seconds=time.perf_counter() - t0)

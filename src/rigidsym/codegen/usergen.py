@@ -1,0 +1,110 @@
+"""``rigidsym generate --module M --out DIR``: a user module's kernels, same generator.
+
+A user module lists :class:`~rigidsym.codegen.spec.Kernel` specs in ``KERNELS``; their
+``sources`` may be the formula callables themselves (named here as ``<module>.<function>``
+in the headers and ``kernels.json``). The output folder has the layout of ``generated/``
+(``numpy/``, ``c/``, ``kernels.json``) and is loaded by ``rigidsym.kernels.load(DIR)``.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import sys
+import time
+from pathlib import Path
+
+from rigidsym.registry import BadInput
+
+from .spec import Kernel
+
+__all__ = ["user_kernels", "generate_user", "cmd_generate_user"]
+
+
+def _source_name(src, title: str) -> str:
+    if isinstance(src, str):
+        return src
+    qual = getattr(src, "__qualname__", None)
+    if qual is None or not callable(src):
+        raise BadInput(f"module {title}: a kernel source must be a formula function or its "
+                       f"dotted name, got {type(src).__name__}")
+    return f"{title}.{qual}"
+
+
+def user_kernels(um) -> list[Kernel]:
+    """The kernels of a loaded user module, sources named (callables -> dotted names).
+
+    Raises:
+        BadInput: for a source that is neither a string nor a function, or a kernel name
+            that is not a Python identifier.
+    """
+    out = []
+    for k in um.kernels:
+        if not k.name.isidentifier():
+            raise BadInput(f"module {um.title}: kernel name {k.name!r} is not an identifier")
+        srcs = tuple(_source_name(s, um.title) for s in k.sources)
+        out.append(dataclasses.replace(k, sources=srcs))
+    return out
+
+
+def generate_user(modules):
+    """Generate the kernels of user modules (paths or dotted names) in memory.
+
+    Returns:
+        The generator's result (relative path -> text), headers naming the modules.
+
+    Raises:
+        BadInput: for a module that cannot be loaded, one without ``KERNELS``, or two
+            kernels of one name.
+    """
+    from rigidsym.usermodules import load_many
+
+    from .generator import generate
+
+    ums = load_many(modules)
+    kernels, titles = [], []
+    for um in ums:
+        ks = user_kernels(um)
+        if not ks:
+            raise BadInput(f"module {um.title}: declares no KERNELS (a list of "
+                           f"rigidsym.codegen.spec.Kernel)")
+        kernels += ks
+        titles.append(um.title)
+    names = [k.name for k in kernels]
+    dup = sorted({n for n in names if names.count(n) > 1})
+    if dup:
+        raise BadInput(f"kernel {dup[0]} is declared twice in {', '.join(titles)}")
+    return generate(kernels, origin=", ".join(titles))
+
+
+def cmd_generate_user(args) -> int:
+    """``rigidsym generate --module M --out DIR [--check]``."""
+    from .generator import check, write
+
+    t0 = time.perf_counter()
+    if not args.out:
+        raise BadInput("--out: a folder is required with --module")
+    out = Path(args.out)
+    if args.check and not (out / "kernels.json").is_file():
+        raise BadInput(f"--out: {out} holds no generated kernels to compare with")
+    if not args.check and out.exists() and any(out.iterdir()) and \
+            not (out / "kernels.json").is_file():
+        # write() removes files it does not own: never in a folder of someone else's files
+        raise BadInput(f"--out: {out} is not empty and holds no generated kernels; give a new "
+                       f"or empty folder")
+    res = generate_user(args.module)
+    for note in res.notes:
+        print(f"note: {note}", file=sys.stderr)
+    if args.check:
+        diff = check(res, out)
+        if diff:
+            sys.stdout.write(diff)
+            print(f"{out} is stale: run `rigidsym generate --module ... --out {out}`",
+                  file=sys.stderr)
+            return 1
+        print(f"{out} is up to date: {len(res.kernels)} kernels, {len(res.files)} files "
+              f"({time.perf_counter() - t0:.1f} s)")
+        return 0
+    touched = write(res, out)
+    print(f"{len(res.kernels)} kernels, {len(res.files)} files, {len(touched)} changed in "
+          f"{out} ({time.perf_counter() - t0:.1f} s)")
+    return 0

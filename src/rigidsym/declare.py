@@ -1,0 +1,122 @@
+"""The declaration vocabulary: everything a user module needs to declare equations.
+
+All of it is re-exported from :mod:`rigidsym` (``from rigidsym import equation, ...``).
+
+- Declaring: :func:`equation` (decorator), :class:`Statement`, :class:`Rel`.
+- Constrained atoms (the zero test imposes their constraints exactly):
+  :func:`unit_vector` (``e . e = 1``), :func:`unit_vector4` (a unit 4-vector, e.g. the
+  Euler-Rodrigues parameters ``[r; r0]``), :func:`rotation` (``Q^T Q = 1``, ``det Q = 1``),
+  :func:`angle` (``cos^2 + sin^2 = 1``), :func:`rigid_motion` (a rotation and a translation
+  as functions of :data:`TIME`, with their time derivatives).
+- Free atoms: :func:`vector`, :func:`scalar`, :func:`matrix`, :func:`symmetric_matrix`.
+- Book symbols, for printed forms that read like the book: :func:`vec` (3-vector),
+  :func:`mat` (3 x 3), :func:`MS` (any shape), ``I3``, ``O3``.
+- Operators printed forms use: :func:`cpm` (cross-product matrix), :func:`vect` (axial
+  vector), :func:`trace`, :class:`Cross`, :class:`Det`, :class:`Blocks` (lazy book
+  operators, explicit once the model is substituted), and the chapter-2 formulas
+  :func:`rotation_from_natural_invariants` (2.49), :func:`rotation_from_euler_rodrigues`,
+  :func:`rotation_from_quaternion`, :func:`linear_invariants`,
+  :func:`euler_rodrigues_parameters`.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import sympy as sp
+
+from .derivations.common import I3, MS, O3, Blocks, Cross, Det, mat, vec
+from .primitives import (
+    cpm,
+    euler_rodrigues_parameters,
+    linear_invariants,
+    rotation_from_euler_rodrigues,
+    rotation_from_natural_invariants,
+    rotation_from_quaternion,
+    trace,
+    vect,
+)
+from .registry import Rel, Statement, equation
+from .symbols import (
+    TIME,
+    angle,
+    matrix,
+    rotation,
+    scalar,
+    symmetric_matrix,
+    unit_vector,
+    unit_vector4,
+    vector,
+)
+
+__all__ = [
+    "equation", "Statement", "Rel",
+    "TIME", "unit_vector", "unit_vector4", "rotation", "angle", "rigid_motion", "RigidMotion",
+    "vector", "scalar", "matrix", "symmetric_matrix",
+    "vec", "mat", "MS", "I3", "O3",
+    "cpm", "vect", "trace", "Cross", "Det", "Blocks",
+    "rotation_from_natural_invariants", "rotation_from_euler_rodrigues",
+    "rotation_from_quaternion", "linear_invariants", "euler_rodrigues_parameters",
+]
+
+
+@dataclass(frozen=True)
+class RigidMotion:
+    """A generic smooth rigid motion ``x(t) = Q(t) x0 + c(t)`` and its time derivatives.
+
+    Attributes:
+        Q, Q_dot, Q_ddot: the rotation (3 x 3, proper orthogonal at every ``t``) and its
+            first two derivatives.
+        Omega, omega: the angular-velocity matrix ``Q_dot Q^T`` (skew) and vector
+            ``vect(Omega)`` [rad/s].
+        omega_dot: the angular acceleration [rad/s^2].
+        c, c_dot, c_ddot: the translation (3 x 1) [m] and its derivatives.
+        e, phi: the axis (unit) and angle when built from natural invariants, else None.
+    """
+
+    Q: sp.Matrix
+    Q_dot: sp.Matrix
+    Q_ddot: sp.Matrix
+    Omega: sp.Matrix
+    omega: sp.Matrix
+    omega_dot: sp.Matrix
+    c: sp.Matrix
+    c_dot: sp.Matrix
+    c_ddot: sp.Matrix
+    e: sp.Matrix | None = None
+    phi: sp.Expr | None = None
+
+
+def rigid_motion(name: str = "Q", translation: str = "c", *,
+                 invariants: bool = False) -> RigidMotion:
+    """A rigid motion along which every constraint holds at every instant.
+
+    Args:
+        name: the rotation's name (atoms ``name_ij(t)``; with ``invariants=True`` the axis
+            and angle are ``name_e`` and ``name_phi``).
+        translation: the translation's name (atoms ``translation_i(t)``).
+        invariants: build ``Q(t)`` from a unit axis ``e(t)`` and an angle ``phi(t)`` (2.49)
+            instead of a generic rotation (rational quaternion): larger expressions, for
+            identities that mention the axis or the angle.
+
+    Returns:
+        A :class:`RigidMotion` of explicit sympy matrices in the time symbol :data:`TIME`.
+
+    Example:
+        >>> m = rigid_motion()
+        >>> (m.Omega + m.Omega.T).shape  # Omega is skew: the zero test decides it is 0
+        (3, 3)
+    """
+    t = TIME
+    e = phi = None
+    if invariants:
+        e, phi = unit_vector(f"{name}_e", t), angle(f"{name}_phi", t)
+        Q = rotation_from_natural_invariants(e, phi)
+    else:
+        Q = rotation(name, t)
+    Q_dot = Q.diff(t)
+    Omega = Q_dot * Q.T
+    omega = vect(Omega)
+    c = vector(translation, t)
+    return RigidMotion(Q, Q_dot, Q_dot.diff(t), Omega, omega, omega.diff(t), c, c.diff(t),
+                       c.diff(t, 2), e, phi)
