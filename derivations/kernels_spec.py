@@ -13,7 +13,6 @@ wrenches ``[n; f]``, Plücker arrays ``[e; n]``, SI units.
 
 from __future__ import annotations
 
-import importlib
 from functools import partial
 
 import sympy as sp
@@ -21,46 +20,30 @@ import sympy as sp
 from rigidsym.codegen.spec import Arg, Branch, Kernel, Out
 from rigidsym.primitives import rotation_from_natural_invariants, trace, vect
 
+from .kernel_wiring import (
+    _PR,
+    _S5,
+    _S5R,
+    _S6,
+    _S7,
+    _S8,
+    _S21,
+    _S22,
+    _S41,
+    _S42,
+    OMEGA,
+    PHI,
+    Q_ARG,
+    E,
+    _one,
+    _v,
+    formula,
+    missing_sources,
+)
+from .kernels_spec_internal import EULER_SEQUENCES, INTERNAL_KERNELS
+
 __all__ = ["KERNELS", "formula", "missing_sources", "EULER_SEQUENCES"]
 
-
-def formula(dotted: str):
-    """The formula function named ``module.function`` (imported lazily)."""
-    mod, _, fn = dotted.rpartition(".")
-    return getattr(importlib.import_module(mod), fn)
-
-
-def missing_sources(kernel: Kernel) -> list[str]:
-    """The formula functions of ``kernel`` that are not importable yet (sorted)."""
-    missing = []
-    for s in kernel.sources:
-        try:
-            formula(s)
-        except (ImportError, AttributeError):
-            missing.append(s)
-    return sorted(missing)
-
-
-def _col(v, n: int | None = None) -> sp.Matrix:
-    m = sp.Matrix(v)
-    return m.reshape(len(m), 1) if n is None else m.reshape(n, 1)
-
-
-def _scalar(x) -> sp.Expr:
-    if isinstance(x, sp.MatrixBase):
-        if x.shape != (1, 1):
-            raise ValueError(f"expected a scalar, got shape {x.shape}")
-        return x[0, 0]
-    return sp.sympify(x)
-
-
-# ----------------------------------------------------------------------------------------
-# common arguments
-E = Arg("e", (3,), "unit", "unit vector along the rotation axis")
-PHI = Arg("phi", (), "angle", "rotation angle [rad]")
-OMEGA = Arg("omega", (3,), "any", "angular velocity [rad/s]")
-Q_ARG = Arg("Q", (3, 3), "rotation", "rotation matrix (proper orthogonal)")
-_PR = "rigidsym.primitives."
 
 # ----------------------------------------------------------------------------------------
 # Sec. 2.3 / 3.2: rotations
@@ -140,28 +123,6 @@ KERNELS: list[Kernel] = [
               "sign, as in Pinocchio's log3.",
     ),
 ]
-
-
-# ----------------------------------------------------------------------------------------
-# Sections 3.2-3.8: kernels composed of the sections' formula functions
-_S21, _S22 = "rigidsym.derivations.sec3_2_1.", "rigidsym.derivations.sec3_2_2."
-_S41, _S42 = "rigidsym.derivations.sec3_4_1.", "rigidsym.derivations.sec3_4_2."
-_S5, _S5R = "rigidsym.derivations.sec3_5.", "rigidsym.derivations.sec3_5_rates."
-_S6 = "rigidsym.derivations.sec3_6."
-_S7, _S8 = "rigidsym.derivations.sec3_7.", "rigidsym.derivations.sec3_8."
-_EX10 = "rigidsym.derivations.exercises.ex3_10."
-
-
-def _v(name, doc, kind="any"):
-    return Arg(name, (3,), kind, doc)
-
-
-def _one(out, fn, wire=None):
-    """A build returning ``{out: fn(*args)}`` with the kernel's arguments in order."""
-    def build(**kw):
-        args = list(kw.values()) if wire is None else wire(**kw)
-        return {out: formula(fn)(*args)}
-    return build
 
 
 def _screw_axis_point(e, phi, a, a_prime):
@@ -349,86 +310,6 @@ KERNELS += [
 
 
 # ----------------------------------------------------------------------------------------
-# Exercise 3.10: Euler-angle rates, one kernel per (sequence, frame); dispatched by name
-EULER_SEQUENCES = ("ZXZ", "XYX", "YZY", "ZYZ", "XZX", "YXY",
-                   "XYZ", "YZX", "ZXY", "XZY", "ZYX", "YXZ")
-
-
-def _euler_W(angles, seq, frame):
-    ex = importlib.import_module(_EX10[:-1])
-    W = ex.euler_rate_matrix(seq, frame)
-    return W.xreplace(dict(zip(list(ex.ETA), list(angles), strict=True)))
-
-
-def _euler_rates(angles, omega, seq, frame):
-    W = _euler_W(angles, seq, frame)
-    det = sp.trigsimp(W.det())
-    adj = W.adjugate().applyfunc(sp.trigsimp)
-    return {"eta_dot": adj * omega / det}
-
-
-for _seq in EULER_SEQUENCES:
-    for _frame in ("fixed", "body"):
-        _tag = f"{_seq.lower()}_{_frame}"
-        KERNELS.append(Kernel(
-            name=f"euler_rate_matrix_{_tag}", public=False,
-            summary=f"Euler-angle rate matrix W ({_seq}, omega in the {_frame} frame).",
-            formula="omega = W eta_dot", ids=("ex3.10",),
-            sources=(_EX10 + "euler_rate_matrix",),
-            args=(Arg("angles", (3,), "any", "Euler angles [rad]"),),
-            outputs=(Out("W", (3, 3), ""),),
-            build=lambda angles, _s=_seq, _f=_frame: {"W": _euler_W(angles, _s, _f)}))
-        KERNELS.append(Kernel(
-            name=f"euler_angle_rates_{_tag}", public=False,
-            summary=f"Euler-angle rates from omega ({_seq}, {_frame} frame).",
-            formula="eta_dot = W^-1 omega = adj(W) omega / det(W)", ids=("ex3.10",),
-            sources=(_EX10 + "euler_rate_matrix",),
-            args=(Arg("angles", (3,), "any", "Euler angles [rad]"), OMEGA),
-            outputs=(Out("eta_dot", (3,), "[rad/s]"),),
-            build=lambda angles, omega, _s=_seq, _f=_frame: _euler_rates(angles, omega, _s, _f),
-            singular="det W = 0 (gimbal lock)", singular_arg="angles",
-            # no generated Jacobian: its build (trigsimp of adj W and det W) dominates the
-            # generation time; d eta_dot = W^-1 (d omega - dW eta_dot) from W's Jacobian
-            jacobian=False))
-
-
-def _isa_point_pitch(omega, a, a_dot):
-    return {"p0": formula(_S41 + "instant_screw_axis_point")(omega, a, a_dot),
-            "pitch": formula(_S41 + "instant_screw_pitch")(omega, a_dot)}
-
-
-KERNELS.append(Kernel(
-    name="instant_screw_point_pitch", public=False,
-    summary="Instant screw axis point and pitch (no Plücker array; benchmark kernel K4).",
-    formula="p0' = omega x (a_dot - omega x a)/||omega||^2, pitch' = a_dot.omega/||omega||^2",
-    ids=("3.53", "3.70"),
-    sources=(_S41 + "instant_screw_axis_point", _S41 + "instant_screw_pitch"),
-    args=(OMEGA, _v("a", "body point A [m]"), _v("a_dot", "velocity of A [m/s]")),
-    outputs=(Out("p0", (3,), "ISA point closest to the origin [m]"),
-             Out("pitch", (), "pitch [m/rad]")),
-    build=_isa_point_pitch, singular="omega = 0 (pure translation)", singular_arg="omega",
-    jacobian=False))
-
-
-def _newton_euler_residual(I_C, m, omega, omega_dot, c_ddot, n, f):
-    w = formula(_S8 + "newton_euler_wrench")(I_C, m, omega, omega_dot, c_ddot)
-    return {"r": sp.Matrix(w) - sp.Matrix.vstack(n, f)}
-
-
-KERNELS.append(Kernel(
-    name="newton_euler_residual", public=False,
-    summary="Residual of the Newton-Euler equations, w - [n; f] (benchmark kernel K6).",
-    formula="r = [I_C omega_dot + omega x I_C omega - n; m c_ddot - f]",
-    ids=("3.134", "3.139"), sources=(_S8 + "newton_euler_wrench",),
-    args=(Arg("I_C", (3, 3), "any", "inertia at the mass centre [kg m^2]"),
-          Arg("m", (), "any", "mass [kg]"), OMEGA,
-          _v("omega_dot", "angular acceleration [rad/s^2]"),
-          _v("c_ddot", "acceleration of the mass centre [m/s^2]"),
-          _v("n", "applied moment about C [N m]"), _v("f", "applied force [N]")),
-    outputs=(Out("r", (6,), "[N m; N]"),), build=_newton_euler_residual, jacobian=False))
-
-
-# ----------------------------------------------------------------------------------------
 # The screw of a finite displacement from (Q, a, a'): natural invariants (with the near-pi
 # branches), the axis point (3.18), the pitch (3.7) and the Plücker array of the axis.
 
@@ -486,3 +367,5 @@ KERNELS.append(Kernel(
     singular="phi = 0 (pure translation: no axis, infinite pitch)", singular_arg="Q",
     notes="For an exactly symmetric Q (phi = pi) the sign of e follows "
           "natural_invariants_from_rotation's rule (largest-magnitude component positive)."))
+
+KERNELS += INTERNAL_KERNELS
