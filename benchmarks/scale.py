@@ -30,6 +30,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 from run import BENCH, SPECS, inputs  # noqa: E402
 
+from rigidsym import _scale  # noqa: E402
 from rigidsym import kernels as K  # noqa: E402
 from rigidsym.io import write_atomic  # noqa: E402
 
@@ -169,7 +170,7 @@ def table_threads(rounds: int, sizes: list[int]) -> list[str]:
 def table_threshold(rounds: int) -> list[str]:
     """1 against 2 threads around MIN_PARALLEL, through the C entry point itself (the checked
     API and batch_function run one thread below it)."""
-    ffi, lib = K._c_lib()
+    ffi, lib = K._builtin_space().c_lib()
     lines = ["| kernel | " + " | ".join(f"N = {n}" for n in _THRESHOLD_N) + " |",
              "|---|" + "---|" * len(_THRESHOLD_N)]
     for kid in ("K1", "K2", "K5"):
@@ -329,7 +330,7 @@ def main(argv=None) -> int:
                      "peer)", ""]
             body += table_threads(rounds, [10**3, 10**4, 10**6]) + [""]
             body += ["### Threads below and above `MIN_PARALLEL` "
-                     f"({K._scale.MIN_PARALLEL}): 2-thread speed-up of the C entry point", ""]
+                     f"({_scale.MIN_PARALLEL}): 2-thread speed-up of the C entry point", ""]
             body += table_threshold(rounds) + [""]
         if "float32" not in skip:
             body += ["### float32 against float64 (C, 1 thread, N = 1e6)", ""]

@@ -18,9 +18,10 @@ __all__ = ["MIN_PARALLEL", "set_num_threads", "get_num_threads", "check_threads"
 
 #: batch size below which the C kernels run on one thread whatever is asked: waking the
 #: (sleeping, OMP_WAIT_POLICY=PASSIVE) second thread costs tens of microseconds, more than
-#: half the work of a smaller batch saves; measured on the shared 2-core machine, where 2
-#: threads first broke even between 16384 and 65536 samples (benchmarks/RESULTS.md,
-#: "Threads below and above MIN_PARALLEL"; re-measure on a quiet machine)
+#: half the work of a smaller batch saves. Measured on the quiet 2-core machine
+#: (benchmarks/RESULTS.md, "Threads below and above MIN_PARALLEL"): through the C entry
+#: point 2 threads give 0.67-0.90x at 16384 samples and 1.22-1.47x at 65536; break-even
+#: lies between, so this errs on the side of using the second core
 MIN_PARALLEL = 16384
 #: sample flag of a non-finite output (as the generated NumPy kernels return it)
 NONFINITE = 2
