@@ -5,7 +5,6 @@ time with global batch indices, nothing computed on call; and one run on a
 from __future__ import annotations
 
 import pickle
-import shutil
 
 import numpy as np
 import pytest
@@ -16,14 +15,6 @@ da = pytest.importorskip("dask.array")
 dask = pytest.importorskip("dask")
 
 
-@pytest.fixture(params=["numpy", "c"])
-def backend(request):
-    if K.use_backend(request.param) != request.param:
-        if shutil.which("gcc") or shutil.which("cc"):
-            pytest.fail("a C compiler is present but the C backend did not build")
-        pytest.skip("no C compiler")
-    yield request.param
-    K.use_backend("numpy")
 
 
 def _unit(rng, shape):

@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import shutil
 import warnings
 
 import numpy as np
@@ -13,14 +12,7 @@ from rigidsym import kernels as K
 E = np.array([0.0, 0.6, 0.8])
 
 
-@pytest.fixture(params=["numpy", "c"], autouse=True)
-def backend(request):
-    if K.use_backend(request.param) != request.param:
-        if shutil.which("gcc") or shutil.which("cc"):
-            pytest.fail("a C compiler is present but the C backend did not build")
-        pytest.skip("no C compiler")
-    yield request.param
-    K.use_backend("numpy")
+pytestmark = pytest.mark.usefixtures("backend")  # conftest: NumPy, then C
 
 
 def test_lists_and_floats_and_broadcasting():

@@ -20,7 +20,6 @@ mark runs many more examples.
 
 from __future__ import annotations
 
-import shutil
 import warnings
 
 import numpy as np
@@ -56,14 +55,7 @@ def _table() -> dict:
 KERNELS = _table()
 
 
-@pytest.fixture(params=["numpy", "c"], autouse=True)
-def backend(request):
-    if K.use_backend(request.param) != request.param:
-        if shutil.which("gcc") or shutil.which("cc"):
-            pytest.fail("a C compiler is present but the C backend did not build")
-        pytest.skip("no C compiler")
-    yield request.param
-    K.use_backend("numpy")
+pytestmark = pytest.mark.usefixtures("backend")  # conftest: NumPy, then C
 
 
 def valid(spec: dict, batch: tuple, rng) -> np.ndarray:
