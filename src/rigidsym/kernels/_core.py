@@ -139,15 +139,16 @@ def validate(a: np.ndarray, spec: dict, given=None) -> None:
     """
     name, kind = spec["name"], spec["kind"]
     prec = given if given is not None and given.kind == "f" and given.itemsize < 8 else a.dtype
-    unit_tol, ortho_tol = tolerance(UNIT_TOL, prec), tolerance(ORTHO_TOL, prec)
     if not np.isfinite(a).all():
         raise ValueError(f"{name}: non-finite values (NaN or inf); expected finite values")
     if kind == "unit":
+        unit_tol = tolerance(UNIT_TOL, prec)
         err = np.abs(np.sqrt(np.einsum("...i,...i->...", a, a)) - 1.0)
         if (err > unit_tol).any():
             raise ValueError(f"{name}: not a unit vector (| ||{name}|| - 1 | = "
                              f"{err.max():.3g} > {unit_tol:.3g})")
     elif kind == "rotation":
+        ortho_tol = tolerance(ORTHO_TOL, prec)
         g = np.einsum("...ki,...kj->...ij", a, a) - np.eye(3)
         err = np.abs(g).max() if g.size else 0.0
         if not err <= ortho_tol:
