@@ -20,7 +20,7 @@ from dataclasses import dataclass, fields
 from types import ModuleType
 from typing import overload
 
-from rigidsym.checking.checker import Result as _CheckerResult
+from rigidsym.checking.checker import Outcome
 from rigidsym.checking.registry import VERDICTS, BadInput, select
 
 __all__ = ["check", "verify", "Result", "Results"]
@@ -29,7 +29,7 @@ ModuleSpec = str | os.PathLike | ModuleType
 
 
 @dataclass(repr=False)
-class Result(_CheckerResult):
+class Result(Outcome):
     """The checker's outcome for one id, with notebook display.
 
     The fields are those of the ``rigidsym verify --json`` rows (``id``, ``title``,
@@ -38,11 +38,11 @@ class Result(_CheckerResult):
     """
 
     @classmethod
-    def of(cls, r: _CheckerResult) -> Result:
+    def of(cls, r: Outcome) -> Result:
         """The same result with display methods (no copy of its values)."""
         if isinstance(r, cls):
             return r
-        return cls(**{f.name: getattr(r, f.name) for f in fields(_CheckerResult)})
+        return cls(**{f.name: getattr(r, f.name) for f in fields(Outcome)})
 
     def __repr__(self) -> str:
         flag = "" if self.verdict == self.expected else f", expected {self.expected}"
@@ -76,17 +76,14 @@ class Result(_CheckerResult):
         return f"$\\displaystyle {body}$"
 
     def _repr_html_(self) -> str:
-        from rigidsym.printing.mathml import latex_to_mathml
+        from rigidsym.printing.mathml import mathml_or_text
 
         e = html.escape
         rows = [f"<p><b>({e(self.id)}) {e(self.title)}</b>: <b>{e(self.verdict)}</b> "
                 f"(expected {e(self.expected)}; method {e(self.method)}; "
                 f"{self.seconds:.2f} s)</p>"]
         for label, latex in self.forms_latex():
-            try:
-                shown = latex_to_mathml(latex, display=True)
-            except Exception:  # noqa: BLE001  (a converter gap must not hide the result)
-                shown = f"<pre>{e(latex)}</pre>"
+            shown = mathml_or_text(latex, latex, display=True, tag="pre")
             rows.append(f"<div><i>{label}</i>{shown}</div>")
         if self.counterexample:
             pt = ", ".join(f"{k} = {v}" for k, v in self.counterexample["point"].items())

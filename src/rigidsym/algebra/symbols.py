@@ -31,12 +31,15 @@ from functools import cache
 import sympy as sp
 from sympy.core.function import AppliedUndef
 
+from rigidsym import _kinds
+
 __all__ = [
     "TIME",
     "Constraint",
     "ConstrainedSymbol",
     "constraint_of",
     "constrained_atom",
+    "constrained_group",
     "unit_vector",
     "unit_vector4",
     "angle",
@@ -56,7 +59,8 @@ class Constraint:
     """A constraint on a group of atoms; every atom of the group carries it.
 
     Attributes:
-        kind: ``"unit"``, ``"unit4"``, ``"angle"`` or ``"rotation"``.
+        kind: the name of a kind of :data:`rigidsym._kinds.KINDS` (``"unit"``,
+            ``"unit4"``, ``"angle"``, ``"rotation"``).
         name: the group's book name (``"e"``, ``"phi"``, ``"Q"``).
         names: the names of the atoms (symbol or function names), row-major for matrices.
         timed: whether the atoms are functions of :data:`TIME`.
@@ -132,11 +136,34 @@ def _components(name: str, n: int) -> list[str]:
     return [f"{name}_{i}" for i in range(1, n + 1)]
 
 
+def constrained_group(kind: str, name: str, t: sp.Symbol | None = None):
+    """The atoms of one group of the constraint ``kind`` (a row of
+    :data:`rigidsym._kinds.KINDS`), shaped as the kind says.
+
+    Args:
+        kind: a kind name (``"unit"``, ``"unit4"``, ``"rotation"``, ``"angle"``, or one
+            registered later).
+        name: the group's book name; the atoms are ``Kind.components(name)``.
+        t: :data:`TIME` for atoms that are functions of time, else ``None``.
+
+    Returns:
+        A scalar atom for a kind of shape ``()``, else a ``sympy.Matrix`` of that shape.
+
+    Raises:
+        ValueError: an unknown kind, or ``t`` neither ``TIME`` nor ``None``.
+    """
+    k = _kinds.get(kind)
+    names = k.components(name)
+    c = Constraint(kind, name, names, t is not None)
+    atoms = [_atom(n, t, c) for n in names]
+    if k.shape == ():
+        return atoms[0]
+    return sp.Matrix(*k.shape, atoms) if len(k.shape) == 2 else sp.Matrix(atoms)
+
+
 def unit_vector(name: str, t: sp.Symbol | None = None) -> sp.Matrix:
     """A 3 x 1 unit vector (``e . e = 1`` imposed exactly by the zero test)."""
-    names = _components(name, 3)
-    c = Constraint("unit", name, tuple(names), t is not None)
-    return sp.Matrix([_atom(n, t, c) for n in names])
+    return constrained_group("unit", name, t)
 
 
 def unit_vector4(name: str, t: sp.Symbol | None = None) -> sp.Matrix:
@@ -145,21 +172,17 @@ def unit_vector4(name: str, t: sp.Symbol | None = None) -> sp.Matrix:
     The Euler-Rodrigues parameters ``eta = [r; r0]`` of a rotation are one (Sec. 2.3:
     ``r . r + r0^2 = 1``).
     """
-    names = _components(name, 4)
-    c = Constraint("unit4", name, tuple(names), t is not None)
-    return sp.Matrix([_atom(n, t, c) for n in names])
+    return constrained_group("unit4", name, t)
 
 
 def angle(name: str, t: sp.Symbol | None = None):
     """An angle in radians (``cos^2 + sin^2 = 1`` imposed exactly by the zero test)."""
-    return _atom(name, t, Constraint("angle", name, (name,), t is not None))
+    return constrained_group("angle", name, t)
 
 
 def rotation(name: str, t: sp.Symbol | None = None) -> sp.Matrix:
     """A generic 3 x 3 proper orthogonal matrix (entries ``name_ij``, row-major)."""
-    names = [f"{name}_{i}{j}" for i in range(1, 4) for j in range(1, 4)]
-    c = Constraint("rotation", name, tuple(names), t is not None)
-    return sp.Matrix(3, 3, [_atom(n, t, c) for n in names])
+    return constrained_group("rotation", name, t)
 
 
 def vector(name: str, t: sp.Symbol | None = None, n: int = 3) -> sp.Matrix:

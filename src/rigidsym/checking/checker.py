@@ -39,7 +39,7 @@ from rigidsym.checking.records import member_record, model_words
 from rigidsym.checking.registry import REGISTRY, Equation, Rel, Statement
 from rigidsym.zero.decide import Unsupported, decide_zero, make_plan
 
-__all__ = ["Result", "check", "explicit", "shape_of", "NUMERIC_DIGITS", "NUMERIC_POINTS"]
+__all__ = ["Outcome", "check", "explicit", "shape_of", "NUMERIC_DIGITS", "NUMERIC_POINTS"]
 
 #: relative residual below which the numeric check agrees with "holds".
 AGREE_TOL = mpmath.mpf(10) ** -(NUMERIC_DIGITS - 15)
@@ -48,8 +48,12 @@ DIFFER_TOL = mpmath.mpf(10) ** -12
 
 
 @dataclass
-class Result:
-    """The checker's outcome for one id (the JSON row of ``rigidsym verify --json``)."""
+class Outcome:
+    """The checker's outcome for one id (the JSON row of ``rigidsym verify --json``).
+
+    The public :class:`rigidsym.Result` is this with notebook display and the schema-2
+    record (:mod:`rigidsym.api`, a layer above the checker).
+    """
 
     id: str
     title: str
@@ -135,14 +139,14 @@ def _derived_str(st: Statement) -> str:
     return "; ".join(_fmt(explicit(r.lhs, st.model)) for r in st.printed)
 
 
-def check(eq: Equation | str) -> Result:
+def check(eq: Equation | str) -> Outcome:
     """Compute the verdict of one declaration, with its numeric backing.
 
     Args:
         eq: an :class:`Equation` or its id.
 
     Returns:
-        A :class:`Result`; ``verdict`` is computed here, never read from the declaration.
+        A :class:`Outcome`; ``verdict`` is computed here, never read from the declaration.
         An exception inside the declaration or the checker (a recursion limit in a huge
         expression, say) gives ``undecided`` with the error named, never a crashed run.
     """
@@ -152,7 +156,7 @@ def check(eq: Equation | str) -> Result:
     try:
         return _check(eq, t0)
     except Exception as exc:  # a defect to report as undecided, not to hide
-        return Result(
+        return Outcome(
             id=eq.id, title=eq.title, kind=eq.kind, verdict="undecided", expected=eq.expected,
             method="undecided", printed_latex=eq.latex, printed="", derived="",
             corrected=None, counterexample=None, cause=None,
@@ -163,7 +167,7 @@ def check(eq: Equation | str) -> Result:
             singular=eq.singular)
 
 
-def _check(eq: Equation, t0: float) -> Result:
+def _check(eq: Equation, t0: float) -> Outcome:
     seed = _seed(eq.id)
     st = eq.build()
     _EXPLICIT_CACHE.clear()
@@ -249,7 +253,7 @@ def _check(eq: Equation, t0: float) -> Result:
                 verdict, detail = "undecided", "numeric check finds the printed form holding"
     except Unsupported as exc:
         verdict, detail = "undecided", f"numeric check impossible: {exc}"
-    return Result(
+    return Outcome(
         id=eq.id, title=eq.title, kind=eq.kind, verdict=verdict, expected=eq.expected,
         method=method if verdict != "undecided" else "undecided",
         printed_latex=eq.latex, printed=_rel_str(st.printed) or "",

@@ -34,8 +34,6 @@ def cmd_generate(args) -> int:
               file=sys.stderr)
         return 2
     res = generate()
-    for note in res.notes:
-        print(f"note: {note}", file=sys.stderr)
     if args.check:
         diff = check(res, out)
         if diff:

@@ -12,6 +12,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from rigidsym import _kinds
+
 __all__ = ["Keyword", "COMMON_KEYWORDS", "render_api", "docstring"]
 
 
@@ -59,7 +61,8 @@ def docstring(meta: dict) -> str:
              f"Book: Eq. {', '.join('(' + i + ')' for i in meta['ids'])}; composed of "
              f"{', '.join(meta['sources'])}.", "", "Args:"]
     for a in meta["args"]:
-        kind = {"unit": ", unit", "rotation": ", proper orthogonal"}.get(a["kind"], "")
+        k = _kinds.for_spec(a["kind"], a["shape"])
+        kind = k.arg_words if k is not None else ""
         doc = f"; {a['doc']}" if a["doc"] else ""
         lines.append(f"    {a['name']}: array-like {_shape(a['shape'])}{kind}{doc}")
     for k in COMMON_KEYWORDS:

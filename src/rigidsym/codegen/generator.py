@@ -20,7 +20,9 @@ import jinja2
 import sympy as sp
 
 import rigidsym
+from rigidsym import _kinds
 from rigidsym._config import KERNEL_SPEC as BOOK_ORIGIN
+from rigidsym._config import generated_dir
 from rigidsym.codegen.api_spec import render_api
 from rigidsym.codegen.optimise import Program, compile_program, math_hash
 from rigidsym.codegen.printers import KernelCPrinter, KernelNumPyPrinter
@@ -35,8 +37,8 @@ _FOREIGN = ("report/",)
 
 
 def default_out_dir() -> Path:
-    """``generated/`` beside ``src/`` in a checkout."""
-    return Path(__file__).resolve().parents[3] / "generated"
+    """``generated/`` of the checkout (:func:`rigidsym._config.generated_dir`)."""
+    return generated_dir()
 
 
 @dataclass
@@ -60,7 +62,6 @@ class KernelCode:
 @dataclass
 class GenerationResult:
     files: dict[str, str]
-    notes: list[str]
     kernels: list[KernelCode]
 
 
@@ -89,7 +90,8 @@ def _flatten(kernel: Kernel, values: dict) -> list[sp.Expr]:
 def compile_kernel(kernel: Kernel) -> KernelCode:
     """Build, hash and optimise every variant of ``kernel``."""
     syms = input_symbols(kernel)
-    angles = [syms[a.name] for a in kernel.args if a.kind == "angle"]
+    angles = [syms[a.name] for a in kernel.args
+              if (k := _kinds.for_spec(a.kind, a.shape)) is not None and k.half_angle]
     parts: list = []
     variants = []
     for br in kernel.branches:
@@ -318,40 +320,32 @@ def _with_jacobian_kernels(todo: list[Kernel]) -> list[Kernel]:
 
 
 def generate(kernels=None, origin: str = BOOK_ORIGIN) -> GenerationResult:
-    """Render every available kernel; returns the files (relative path -> text) and notes.
+    """Render every kernel; returns the files (relative path -> text) and the compiled kernels.
 
     ``kernels`` defaults to the book's; a user module's kernels come with ``origin`` (the
     module's name, written in the headers) and sources already named, not imported here.
     """
-    spec = importlib.import_module(BOOK_ORIGIN)  # by name: the generator imports no book
-    KERNELS, missing_sources = spec.KERNELS, spec.missing_sources
-
+    if kernels is None:  # by name: the generator imports no book
+        kernels = importlib.import_module(BOOK_ORIGIN).KERNELS
     env = _env()
     files: dict[str, str] = {}
-    notes: list[str] = []
     done: list[KernelCode] = []
-    todo = []
-    for k in sorted(kernels if kernels is not None else KERNELS, key=lambda k: k.name):
-        miss = missing_sources(k) if origin == BOOK_ORIGIN else []
-        if miss:
-            notes.append(f"skipped {k.name}: formula function(s) not importable yet: "
-                         + ", ".join(miss))
-            continue
-        todo.append(k)
+    todo = sorted(kernels, key=lambda k: k.name)
     for kc in _compile_all(_with_jacobian_kernels(todo)):
         done.append(kc)
         files.update(_render_kernel(env, kc, origin))
     metas = [_meta(kc) for kc in done]
     ver = {"sympy": sp.__version__, "rigidsym": rigidsym.__version__}
-    files["kernels.json"] = json.dumps({"generator": ver, "kernels": metas,
-                                        "skipped": notes}, indent=1, sort_keys=True) + "\n"
+    files["kernels.json"] = json.dumps({"generator": ver, "kernels": metas},
+                                       indent=1, sort_keys=True) + "\n"
     files["api.py"] = render_api(env, metas, ver)
     for t, path in (("package_init.py.j2", "__init__.py"),
                     ("numpy_index.py.j2", "numpy/__init__.py"),
                     ("c_common.h.j2", "c/rigidsym_common.h"),
                     ("c_kernels_index.h.j2", "c/rigidsym_kernels.h")):
-        files[path] = env.get_template(t).render(kernels=metas, template=t, **ver)
-    return GenerationResult(dict(sorted(files.items())), notes, done)
+        files[path] = env.get_template(t).render(kernels=metas, template=t,
+                                                 tolerances=_kinds.c_defines(), **ver)
+    return GenerationResult(dict(sorted(files.items())), done)
 
 
 def _on_disk(out: Path) -> dict[str, Path]:

@@ -11,7 +11,7 @@ from __future__ import annotations
 import sympy as sp
 from sympy.printing.c import C99CodePrinter
 from sympy.printing.numpy import NumPyPrinter
-from sympy.printing.precedence import PRECEDENCE, precedence
+from sympy.printing.precedence import PRECEDENCE
 
 __all__ = ["KernelNumPyPrinter", "KernelCPrinter", "numpy_code", "c_code"]
 
@@ -126,5 +126,3 @@ def c_code(expr) -> str:
     """Print ``expr`` as a C99 expression on doubles."""
     return KernelCPrinter().doprint(expr)
 
-
-_ = precedence  # re-exported for printers extending this module

@@ -19,7 +19,6 @@ the kernels run on one thread and :func:`build` warns once. ``RIGIDSYM_OPENMP=0`
 from __future__ import annotations
 
 import hashlib
-import importlib.util
 import json
 import os
 import platform
@@ -29,7 +28,10 @@ import threading
 import warnings
 from pathlib import Path
 
-__all__ = ["build", "load", "cache_dir", "generated_dir", "cdef", "build_variants", "CFLAGS",
+from rigidsym._config import generated_dir
+from rigidsym._io import load_module
+
+__all__ = ["build", "load", "cache_dir", "cdef", "build_variants", "CFLAGS",
            "MVEC_FLAGS", "OMP_FLAGS", "openmp"]
 
 CFLAGS = ["-O3", "-march=native", "-std=c99", "-ffp-contract=fast"]
@@ -48,15 +50,6 @@ int rigidsym_openmp(void) { return 0; }
 """
 _LOCK = threading.RLock()
 _WARNED = {"omp": False}
-
-
-def generated_dir() -> Path:
-    """The folder of generated kernels: inside the installed package, else the checkout's."""
-    here = Path(__file__).resolve()
-    for cand in (here.parents[1] / "generated", here.parents[3] / "generated"):
-        if (cand / "kernels.json").exists():
-            return cand
-    raise FileNotFoundError("generated kernels not found; run `rigidsym generate`")
 
 
 def cache_dir() -> Path:
@@ -150,8 +143,6 @@ def openmp() -> bool:
     return bool(load()[1].rigidsym_openmp())
 
 
-_variants = build_variants
-
 
 def _build(gdir: Path, meta: dict, flags: list[str], libs: list[str], force: bool) -> Path:
     import cffi
@@ -190,8 +181,5 @@ def load(force: bool = False, gdir: Path | None = None):
             # caller's core, measured 11 ms per 2-thread call on a busy 2-core machine
             # instead of 0.1 ms (benchmarks/scale.py)
             os.environ.setdefault("OMP_WAIT_POLICY", "PASSIVE")
-            spec = importlib.util.spec_from_file_location(name, path)
-            mod = importlib.util.module_from_spec(spec)
-            spec.loader.exec_module(mod)
-            sys.modules[name] = mod
+            mod = load_module(name, path)
     return mod.ffi, mod.lib

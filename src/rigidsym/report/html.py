@@ -15,11 +15,12 @@ import sympy as sp
 from jinja2 import Environment, PackageLoader, StrictUndefined
 from markupsafe import Markup
 
-from rigidsym.checking.checker import Result
+from rigidsym.checking.checker import Outcome
 from rigidsym.printing import notation
-from rigidsym.printing.mathml import latex_to_mathml
+from rigidsym.printing.mathml import mathml_or_text
 from rigidsym.report.markdown import anchor, sections
-from rigidsym.report.record import CITATION, RESIDUAL_FLOOR, result_record, summary
+from rigidsym.report.numeric import numeric_sentence
+from rigidsym.report.record import CITATION, result_record, summary
 
 __all__ = ["to_html", "markdown_to_html", "math_or_text"]
 
@@ -34,12 +35,7 @@ def _env() -> Environment:
 def math_or_text(latex: str | None, fallback: str | None, display: bool = True) -> Markup:
     """MathML of ``latex``; the text ``fallback`` in ``<code>`` when there is no LaTeX or
     the converter rejects it (a member too long to print, an unusual construct)."""
-    if latex:
-        try:
-            return Markup(latex_to_mathml(latex, display=display))
-        except ValueError:
-            pass
-    return Markup(f"<code>{html.escape(fallback or '(not shown: too long)')}</code>")
+    return Markup(mathml_or_text(latex, fallback, display))
 
 
 def _value_mathml(text: str | None) -> Markup:
@@ -53,19 +49,10 @@ def _value_mathml(text: str | None) -> Markup:
     return math_or_text(notation.latex(v), text, display=False)
 
 
-def _numeric_text(n: dict) -> str:
-    res = n.get("max_residual")
-    if res is None:
-        return ""
-    shown = f"< {RESIDUAL_FLOOR:.0e}" if res <= RESIDUAL_FLOOR else f"{res:.1e}"
-    return (f"Numeric backing: {n['points']} points at {n['digits']} digits, max relative "
-            f"residual {shown} (seed {n['seed']}).")
-
-
 def _view(rec: dict) -> dict:
     v = dict(rec, anchor=anchor(rec["id"]),
              printed_mathml=math_or_text(rec["printed_latex"], rec["printed_latex"]),
-             numeric_text=_numeric_text(rec["numeric"]))
+             numeric_text=numeric_sentence(rec["numeric"]))
     v["members"] = [dict(m, mathml=math_or_text(m["latex"], m["text"])) for m in rec["members"]]
     v["failing_text"] = next((m["text"] for m in rec["members"]
                               if m["status"] == "fails" and m["role"] != "corrected"), None)
@@ -81,7 +68,7 @@ def _view(rec: dict) -> dict:
     return v
 
 
-def to_html(results: list[Result]) -> str:
+def to_html(results: list[Outcome]) -> str:
     """The chapter report as one self-contained HTML page.
 
     Args:

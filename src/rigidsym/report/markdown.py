@@ -8,9 +8,10 @@ from __future__ import annotations
 
 import sympy as sp
 
-from rigidsym.checking.checker import NUMERIC_DIGITS, NUMERIC_POINTS, Result
+from rigidsym.checking.checker import NUMERIC_DIGITS, NUMERIC_POINTS, Outcome
 from rigidsym.printing import notation
-from rigidsym.report.record import CITATION, RESIDUAL_FLOOR, result_record, summary
+from rigidsym.report.numeric import numeric_sentence
+from rigidsym.report.record import CITATION, result_record, summary
 
 __all__ = ["to_markdown", "anchor", "sections", "how_checked", "numeric_words"]
 
@@ -49,14 +50,9 @@ def _members(rec: dict) -> list[str]:
 
 
 def numeric_words(n: dict) -> str:
-    """The numeric backing in one sentence ("" when there is none)."""
-    res = n.get("max_residual")
-    if res is None:
-        return ""
-    shown = f"< {RESIDUAL_FLOOR:.0e}" if res <= RESIDUAL_FLOOR else f"{res:.1e}"
-    extra = "" if (n["points"], n["digits"]) == (NUMERIC_POINTS, NUMERIC_DIGITS) else \
-        f" ({n['points']} points, {n['digits']} digits)"  # the header states the usual ones
-    return f"Numeric residual {shown}{extra}."
+    """The numeric backing in one sentence ("" when there is none), the usual points and
+    precision left to the header (:func:`rigidsym.report.numeric.numeric_sentence`)."""
+    return numeric_sentence(n, usual_stated=True)
 
 
 def how_checked(rec: dict) -> str:
@@ -122,7 +118,7 @@ def _entry(rec: dict, full: bool) -> list[str]:
     return out
 
 
-def to_markdown(results: list[Result], full: bool = False) -> str:
+def to_markdown(results: list[Outcome], full: bool = False) -> str:
     """The chapter report: summary, equations that do not hold, then every equation.
 
     Args:

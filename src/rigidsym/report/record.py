@@ -14,7 +14,7 @@ from collections import Counter
 
 import sympy as sp
 
-from rigidsym.checking.checker import Result
+from rigidsym.checking.checker import Outcome
 from rigidsym.checking.registry import VERDICTS
 from rigidsym.printing import notation
 
@@ -36,7 +36,7 @@ _CAUSE_CLASS = {"conversion": "conversion garble", "erratum": "erratum"}
 _BOUND = re.compile(r"P\(false zero\) <= ([0-9.]+E[-+]?\d+)")
 
 
-def summary(results: list[Result]) -> dict[str, int]:
+def summary(results: list[Outcome]) -> dict[str, int]:
     """Counts per verdict (every verdict listed, zeros included)."""
     c = Counter(r.verdict for r in results)
     return {v: c.get(v, 0) for v in VERDICTS}
@@ -46,7 +46,7 @@ def _bounded(x):
     return RESIDUAL_FLOOR if isinstance(x, float) and x < RESIDUAL_FLOOR else x
 
 
-def cause_words(r: Result) -> tuple[str, str]:
+def cause_words(r: Outcome) -> tuple[str, str]:
     """The cause class of a does-not-hold and one sentence of what is known.
 
     Returns:
@@ -66,7 +66,7 @@ def cause_words(r: Result) -> tuple[str, str]:
     return cls, known
 
 
-def failure_bound(r: Result) -> float | None:
+def failure_bound(r: Outcome) -> float | None:
     """The largest Schwartz-Zippel failure probability bound behind the verdict, if any."""
     texts = [r.detail] + [m["detail"] for m in r.members if m["status"] == "holds"]
     found = [float(x) for t in texts for x in _BOUND.findall(t or "")]
@@ -116,7 +116,7 @@ def counterexample_record(ce: dict | None) -> dict | None:
     return out
 
 
-def result_record(r: Result, timings: bool = True, full: bool = False) -> dict:
+def result_record(r: Outcome, timings: bool = True, full: bool = False) -> dict:
     """The schema-2 record of one result (plain data, JSON-ready).
 
     Args:
@@ -151,7 +151,7 @@ def result_record(r: Result, timings: bool = True, full: bool = False) -> dict:
     return rec
 
 
-def to_json(results: list[Result], timings: bool = True, full: bool = False) -> str:
+def to_json(results: list[Outcome], timings: bool = True, full: bool = False) -> str:
     """The JSON document ``{"schema": 2, "equations": [...], "summary": {...}}``.
 
     ``timings=False`` (the committed report) drops the seconds and bounds tiny residuals;
