@@ -96,6 +96,7 @@ def H_matrix(
         ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
         NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
 
+    Notes:
         Generated; 11 operations; math hash d161921036f1484c.
     """
     return _call("H_matrix", (e, phi),
@@ -138,6 +139,7 @@ def H_matrix_dot(
         ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
         NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
 
+    Notes:
         Generated; 34 operations; math hash 0c036980272247c8.
     """
     return _call("H_matrix_dot", (e, phi, omega),
@@ -178,6 +180,7 @@ def H_tilde(
         ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
         NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
 
+    Notes:
         Generated; 11 operations; math hash 394d6fafe3d12373.
     """
     return _call("H_tilde", (e, phi),
@@ -220,6 +223,7 @@ def H_tilde_dot(
         ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
         NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
 
+    Notes:
         Generated; 32 operations; math hash a75606877943bdb2.
     """
     return _call("H_tilde_dot", (e, phi, omega),
@@ -260,6 +264,7 @@ def L_matrix(
         ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
         NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
 
+    Notes:
         Generated; 48 operations; math hash ad587ca95a235ac2.
     """
     return _call("L_matrix", (e, phi),
@@ -302,6 +307,7 @@ def L_matrix_dot(
         ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
         NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
 
+    Notes:
         Generated; 98 operations; math hash bc3db842eb2cf774.
     """
     return _call("L_matrix_dot", (e, phi, omega),
@@ -522,6 +528,7 @@ def N_tilde(
         ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
         NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
 
+    Notes:
         Generated; 13 operations; math hash 27fa6424b1903ca5.
     """
     return _call("N_tilde", (e, phi),
@@ -564,6 +571,7 @@ def N_tilde_dot(
         ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
         NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
 
+    Notes:
         Generated; 79 operations; math hash b1c3eb794fbb8245.
     """
     return _call("N_tilde_dot", (e, phi, omega),
@@ -608,6 +616,7 @@ def inertia_at_point(
         ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
         NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
 
+    Notes:
         Generated; 29 operations; math hash 421dca07df5d4b7a.
     """
     return _call("inertia_at_point", (I_C, m, c, a),
@@ -652,6 +661,7 @@ def inertia_dyad_at_point(
         ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
         NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
 
+    Notes:
         Generated; 36 operations; math hash 68258707f5bb9e80.
     """
     return _call("inertia_dyad_at_point", (I_C, m, c, a),
@@ -744,6 +754,7 @@ def kinetic_energy(
         ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
         NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
 
+    Notes:
         Generated; 33 operations; math hash 59e2107c6b1479ae.
     """
     return _call("kinetic_energy", (I_C, m, omega, c_dot),
@@ -794,6 +805,7 @@ def moving_frame_acceleration(
         ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
         NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
 
+    Notes:
         Generated; 153 operations; math hash 9ff5554b1ab9fff0.
     """
     return _call("moving_frame_acceleration", (o_ddot, Q, omega, omega_dot, rho_M, rho_dot_M, rho_ddot_M),
@@ -885,6 +897,7 @@ def newton_euler_wrench(
         ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
         NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
 
+    Notes:
         Generated; 45 operations; math hash a4f13db2095d7265.
     """
     return _call("newton_euler_wrench", (I_C, m, omega, omega_dot, c_ddot),
@@ -971,6 +984,7 @@ def plucker_transfer(
         ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
         NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
 
+    Notes:
         Generated; 15 operations; math hash 69d9b4ff4ea5cbea.
     """
     return _call("plucker_transfer", (kappa_A, a, b),
@@ -1017,6 +1031,7 @@ def point_acceleration(
         ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
         NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
 
+    Notes:
         Generated; 36 operations; math hash bba0e838d11c478a.
     """
     return _call("point_acceleration", (a_ddot, omega, omega_dot, p, a),
@@ -1055,6 +1070,7 @@ def rotation_from_euler_rodrigues(
         ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
         NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
 
+    Notes:
         Generated; 33 operations; math hash 59342dd978b76a46.
     """
     return _call("rotation_from_euler_rodrigues", (eta,),
@@ -1095,6 +1111,7 @@ def rotation_from_natural_invariants(
         ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
         NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
 
+    Notes:
         Generated; 37 operations; math hash 3a598761ac6bf1a3.
     """
     return _call("rotation_from_natural_invariants", (e, phi),
@@ -1237,6 +1254,7 @@ def twist_transfer(
         ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
         NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
 
+    Notes:
         Generated; 15 operations; math hash 0b921c0c211334f5.
     """
     return _call("twist_transfer", (t_A, a, p),
@@ -1277,6 +1295,7 @@ def twist_transfer_matrix(
         ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
         NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
 
+    Notes:
         Generated; 6 operations; math hash b790e8d04828afbd.
     """
     return _call("twist_transfer_matrix", (a, p),
@@ -1365,6 +1384,7 @@ def wrench_transfer(
         ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
         NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
 
+    Notes:
         Generated; 15 operations; math hash 719fe1e42bb6247d.
     """
     return _call("wrench_transfer", (w_A, a, p),
@@ -1405,6 +1425,7 @@ def wrench_transfer_matrix(
         ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
         NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
 
+    Notes:
         Generated; 6 operations; math hash d1200d894b2faa3f.
     """
     return _call("wrench_transfer_matrix", (a, p),

@@ -107,7 +107,11 @@ def condition_figure(out_dir, write_figure) -> str:
 
 
 def solve() -> Solution:
-    """Worked solution of Exercise 3.10."""
+    """Worked solution of Exercise 3.10.
+
+    Long: a worked solution is read top to bottom as the book's steps (statement, steps,
+    answers, checks); split into functions it would no longer read as one solution.
+    """
     s = Solution(
         ID, "Euler-angle rates and the angular velocity",
         "\"find the matrix W such that omega = W eta_dot ... Find under which conditions W "

@@ -32,9 +32,23 @@ ModuleSpec = str | os.PathLike | ModuleType
 class Result(Outcome):
     """The checker's outcome for one id, with notebook display.
 
-    The fields are those of the ``rigidsym verify --json`` rows (``id``, ``title``,
-    ``kind``, ``verdict``, ``expected``, ``method``, ``printed``, ``corrected``,
-    ``counterexample``, ``numeric``, ``seconds``, ...).
+    The fields are those of the ``rigidsym verify --json`` rows; :meth:`to_json` gives the
+    schema-2 record (documented on the "JSON schema 2" page of the documentation).
+
+    Attributes:
+        id: the equation id (``"3.96e"``, ``"notes:rodrigues"``).
+        title: its title.
+        kind: ``identity``, ``definition`` or ``claim``.
+        verdict: ``verified``, ``definition``, ``does-not-hold`` or ``undecided``, computed.
+        expected: the verdict the declaration expects.
+        method: how it was decided (``exact-cancel``, ``random-exact``,
+            ``counterexample``, ...).
+        printed, derived, corrected: the expanded sympy strings (``corrected`` is None
+            unless the printed form does not hold).
+        counterexample: for a does-not-hold, the exact point and both sides there.
+        numeric: the numeric backing (``points``, ``digits``, ``max_residual``, ``seed``).
+        seconds: the time the check took.
+        members: one record per member (printed, claim, corrected) in book notation.
     """
 
     @classmethod
@@ -98,6 +112,10 @@ class Results(Sequence[Result]):
 
     Indexing by position or slice gives a ``Result`` or ``Results``; by id
     (``results["3.16"]``) the result of that id.
+
+    Args:
+        results: the results, in id order (checker outcomes are wrapped as ``Result``).
+        seconds: the wall time the run took, if known.
     """
 
     def __init__(self, results: Iterable[Result], seconds: float | None = None):

@@ -162,7 +162,19 @@ def constrained_group(kind: str, name: str, t: sp.Symbol | None = None):
 
 
 def unit_vector(name: str, t: sp.Symbol | None = None) -> sp.Matrix:
-    """A 3 x 1 unit vector (``e . e = 1`` imposed exactly by the zero test)."""
+    """A 3 x 1 unit vector (``e . e = 1`` imposed exactly by the zero test).
+
+    Args:
+        name: the book name; the entries are ``name_1``, ``name_2``, ``name_3``.
+        t: :data:`TIME` for a unit vector that moves (entries are functions of time, and
+            ``e . e_dot = 0`` holds exactly), else ``None``.
+
+    Returns:
+        3 x 1 ``sympy.Matrix`` of constrained atoms (dimensionless).
+
+    Raises:
+        ValueError: ``t`` is neither :data:`TIME` nor ``None``.
+    """
     return constrained_group("unit", name, t)
 
 
@@ -171,38 +183,107 @@ def unit_vector4(name: str, t: sp.Symbol | None = None) -> sp.Matrix:
 
     The Euler-Rodrigues parameters ``eta = [r; r0]`` of a rotation are one (Sec. 2.3:
     ``r . r + r0^2 = 1``).
+
+    Args:
+        name: the book name.
+        t: :data:`TIME` for entries that are functions of time, else ``None``.
+
+    Returns:
+        4 x 1 ``sympy.Matrix`` of constrained atoms.
+
+    Raises:
+        ValueError: ``t`` is neither :data:`TIME` nor ``None``.
     """
     return constrained_group("unit4", name, t)
 
 
 def angle(name: str, t: sp.Symbol | None = None):
-    """An angle in radians (``cos^2 + sin^2 = 1`` imposed exactly by the zero test)."""
+    """An angle in radians (``cos^2 + sin^2 = 1`` imposed exactly by the zero test).
+
+    Args:
+        name: the book name (``"phi"``).
+        t: :data:`TIME` for an angle that is a function of time, else ``None``.
+
+    Returns:
+        A real constrained atom (a symbol, or ``name(t)``) [rad].
+
+    Raises:
+        ValueError: ``t`` is neither :data:`TIME` nor ``None``.
+    """
     return constrained_group("angle", name, t)
 
 
 def rotation(name: str, t: sp.Symbol | None = None) -> sp.Matrix:
-    """A generic 3 x 3 proper orthogonal matrix (entries ``name_ij``, row-major)."""
+    """A generic 3 x 3 proper orthogonal matrix (``Q^T Q = 1``, ``det Q = 1`` imposed
+    exactly by the zero test through a rational quaternion).
+
+    Args:
+        name: the book name; the entries are ``name_ij``, row-major, from 1.
+        t: :data:`TIME` for a rotation that moves (``Q^T Q_dot`` is then skew exactly),
+            else ``None``.
+
+    Returns:
+        3 x 3 ``sympy.Matrix`` of constrained atoms.
+
+    Raises:
+        ValueError: ``t`` is neither :data:`TIME` nor ``None``.
+    """
     return constrained_group("rotation", name, t)
 
 
 def vector(name: str, t: sp.Symbol | None = None, n: int = 3) -> sp.Matrix:
-    """A free n x 1 vector (entries ``name_1 ... name_n``)."""
+    """A free n x 1 vector (no constraint).
+
+    Args:
+        name: the book name; the entries are ``name_1 ... name_n``.
+        t: :data:`TIME` for entries that are functions of time, else ``None``.
+        n: the number of entries.
+
+    Returns:
+        n x 1 ``sympy.Matrix`` of real atoms.
+    """
     return sp.Matrix([_atom(c, t) for c in _components(name, n)])
 
 
 def scalar(name: str, t: sp.Symbol | None = None):
-    """A free real scalar."""
+    """A free real scalar.
+
+    Args:
+        name: the book name.
+        t: :data:`TIME` for a function of time, else ``None``.
+
+    Returns:
+        A real symbol, or the applied function ``name(t)``.
+    """
     return _atom(name, t)
 
 
 def matrix(name: str, rows: int = 3, cols: int = 3, t: sp.Symbol | None = None) -> sp.Matrix:
-    """A free rows x cols matrix (entries ``name_ij``)."""
+    """A free rows x cols matrix.
+
+    Args:
+        name: the book name; the entries are ``name_ij``, row-major, from 1.
+        rows: number of rows.
+        cols: number of columns.
+        t: :data:`TIME` for entries that are functions of time, else ``None``.
+
+    Returns:
+        rows x cols ``sympy.Matrix`` of real atoms.
+    """
     return sp.Matrix(rows, cols, [_atom(f"{name}_{i}{j}", t)
                                   for i in range(1, rows + 1) for j in range(1, cols + 1)])
 
 
 def symmetric_matrix(name: str, t: sp.Symbol | None = None) -> sp.Matrix:
-    """A free symmetric 3 x 3 matrix (entries ``name_ij`` with i <= j)."""
+    """A free symmetric 3 x 3 matrix (an inertia matrix, say).
+
+    Args:
+        name: the book name; the six atoms are ``name_ij`` with ``i <= j``.
+        t: :data:`TIME` for entries that are functions of time, else ``None``.
+
+    Returns:
+        3 x 3 symmetric ``sympy.Matrix``.
+    """
     a = {(i, j): _atom(f"{name}_{min(i, j)}{max(i, j)}", t) for i in range(1, 4)
          for j in range(1, 4)}
     return sp.Matrix(3, 3, lambda i, j: a[(i + 1, j + 1)])

@@ -168,6 +168,13 @@ def check(eq: Equation | str) -> Outcome:
 
 
 def _check(eq: Equation, t0: float) -> Outcome:
+    """The verdict of one declaration (:func:`check` without its safety net).
+
+    Long: the verdict, method and detail are refined step by step (a definition or an
+    identity; the failing member and the corrected form; then the numeric backing, which may
+    demote any verdict to undecided), each step reading what the previous ones decided; the
+    steps stay in that one reading order.
+    """
     seed = _seed(eq.id)
     st = eq.build()
     _EXPLICIT_CACHE.clear()

@@ -65,14 +65,22 @@ def is_user_id(eq_id: str) -> bool:
 
 
 class BadInput(ValueError):
-    """Bad user input (CLI exit code 2)."""
+    """Bad user input: an unknown or malformed id or section, a user module that cannot be
+    loaded (the CLI exits with code 2). A ``ValueError``.
+
+    Args:
+        message: one line naming the input and what was expected.
+    """
 
 
 @dataclass(frozen=True)
 class Rel:
     """One equality ``lhs = rhs`` to decide (sympy expressions, matrices or matrix expressions).
 
-    ``label`` names the member (``"d_P"``, ``"second member"``) in reports.
+    Attributes:
+        lhs: the left-hand side.
+        rhs: the right-hand side, of the same shape.
+        label: names the member in reports (``"d_P"``, ``"second member"``); optional.
     """
 
     lhs: Any
@@ -196,6 +204,10 @@ def equation(eq_id: str, title: str, *, section: str | None = None,
             for a book id; any text for a user id (default ``"not determined"``).
         evidence: one line of evidence for the cause (required for a book id).
         singular: the singular set of the formula, in words (``"phi = 0"``).
+
+    Returns:
+        A decorator that registers the function (which takes no argument and returns a
+        :class:`Statement`) and returns it unchanged.
 
     Raises:
         ValueError: for a malformed id, a book id declared outside the book, an id declared

@@ -80,11 +80,13 @@ def docstring(meta: dict) -> str:
               "(with check=True), unless on_singular='nan'."]
     if meta["singular"]:
         lines += ["    SingularConfigurationError: on the singular set "
-                  f"({meta['singular']}), unless on_singular='nan'.",
-                  "", "Notes:", f"    Singular set: {meta['singular']}."]
+                  f"({meta['singular']}), unless on_singular='nan'."]
+    lines += ["", "Notes:"]
+    if meta["singular"]:
+        lines += [f"    Singular set: {meta['singular']}.", ""]
     if meta["notes"]:
-        lines += ["", f"    {meta['notes']}"]
-    lines += ["", f"    Generated; {meta['ops']} operations; math hash {meta['hash']}."]
+        lines += [f"    {meta['notes']}", ""]
+    lines += [f"    Generated; {meta['ops']} operations; math hash {meta['hash']}."]
     return "\n".join(lines)
 
 

@@ -4,12 +4,12 @@ Pipeline per kernel: build the explicit sympy outputs from the formula functions
 build and per-sample branches), hash them (before any rewrite or printing), rewrite and CSE
 them (:mod:`.optimise`), print them (:mod:`.printers`) into role-named Jinja2 templates.
 :func:`generate` returns ``{relative path: text}``; :func:`write` writes it atomically and
-removes orphans; :func:`check` compares it with the disk and returns a unified diff.
+removes orphans; :func:`check` compares it with the disk and returns a unified diff (both in
+:mod:`rigidsym.codegen.files`, re-exported here).
 """
 
 from __future__ import annotations
 
-import difflib
 import importlib
 import json
 import os
@@ -24,6 +24,7 @@ from rigidsym import _kinds
 from rigidsym._config import KERNEL_SPEC as BOOK_ORIGIN
 from rigidsym._config import generated_dir
 from rigidsym.codegen.api_spec import render_api
+from rigidsym.codegen.files import check, write
 from rigidsym.codegen.optimise import Program, compile_program, math_hash
 from rigidsym.codegen.printers import KernelCPrinter, KernelNumPyPrinter
 from rigidsym.codegen.spec import Kernel, flat_symbols, input_symbols
@@ -31,9 +32,6 @@ from rigidsym.codegen.spec import Kernel, flat_symbols, input_symbols
 __all__ = ["generate", "write", "check", "GenerationResult", "default_out_dir", "TEMPLATES"]
 
 TEMPLATES = Path(__file__).parent / "templates"
-#: file names under generated/ owned by the generator (anything else there is an orphan,
-#: except the report folder which belongs to ``rigidsym report``).
-_FOREIGN = ("report/",)
 
 
 def default_out_dir() -> Path:
@@ -346,57 +344,3 @@ def generate(kernels=None, origin: str = BOOK_ORIGIN) -> GenerationResult:
         files[path] = env.get_template(t).render(kernels=metas, template=t,
                                                  tolerances=_kinds.c_defines(), **ver)
     return GenerationResult(dict(sorted(files.items())), done)
-
-
-def _on_disk(out: Path) -> dict[str, Path]:
-    found = {}
-    if out.exists():
-        for p in sorted(out.rglob("*")):
-            rel = p.relative_to(out).as_posix()
-            if p.is_file() and "__pycache__" not in rel and not rel.startswith(_FOREIGN) \
-                    and not p.name.startswith("."):
-                found[rel] = p
-    return found
-
-
-def write(result: GenerationResult, out: Path | None = None) -> list[str]:
-    """Write changed files atomically, delete orphans; returns the paths touched."""
-    from rigidsym._io import write_atomic
-
-    out = Path(out) if out is not None else default_out_dir()
-    touched = []
-    disk = _on_disk(out)
-    for rel, text in result.files.items():
-        p = out / rel
-        if rel in disk and p.read_text(encoding="utf-8") == text:
-            continue
-        write_atomic(p, text)
-        touched.append(rel)
-    for rel, p in disk.items():
-        if rel not in result.files:
-            os.unlink(p)
-            touched.append(f"{rel} (removed orphan)")
-    return touched
-
-
-def check(result: GenerationResult, out: Path | None = None) -> str:
-    """Unified diff between ``result`` and the disk ("" when byte-identical, no orphans)."""
-    out = Path(out) if out is not None else default_out_dir()
-    disk = _on_disk(out)
-    chunks = []
-    for rel in sorted(set(disk) | set(result.files)):
-        old = disk[rel].read_text(encoding="utf-8") if rel in disk else None
-        new = result.files.get(rel)
-        if old == new:
-            continue
-        a = [] if old is None else old.splitlines(keepends=True)
-        b = [] if new is None else new.splitlines(keepends=True)
-        label_a = f"a/generated/{rel}" if old is not None else "/dev/null"
-        label_b = f"b/generated/{rel}" if new is not None else "/dev/null"
-        diff = "".join(difflib.unified_diff(a, b, label_a, label_b))
-        if old is None:
-            diff = f"missing file: generated/{rel}\n" + diff
-        elif new is None:
-            diff = f"orphan file: generated/{rel}\n" + diff
-        chunks.append(diff if diff.endswith("\n") else diff + "\n")
-    return "".join(chunks)

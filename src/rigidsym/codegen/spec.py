@@ -60,7 +60,13 @@ class Arg:
 
 @dataclass(frozen=True)
 class Out:
-    """One kernel output: ``name``, per-sample ``shape`` and ``doc``."""
+    """One kernel output.
+
+    Attributes:
+        name: the output name (book letters in ASCII).
+        shape: per-sample shape, ``()`` for a scalar.
+        doc: what it is (units, frame), for the docstring.
+    """
 
     name: str
     shape: tuple[int, ...]
@@ -77,6 +83,12 @@ class Branch:
 
     Branches are tried in order before the kernel's main ``build``; the first whose
     condition holds is used for that sample.
+
+    Attributes:
+        name: the branch's name (in the generated code).
+        when: ``when(**inputs)``: a sympy boolean of the explicit inputs.
+        build: ``build(**inputs) -> {output name: value}``, as :attr:`Kernel.build`.
+        doc: why the branch exists (for the generated code's comments).
     """
 
     name: str
@@ -128,6 +140,12 @@ def input_symbols(kernel: Kernel) -> dict:
 
     A vector ``e`` of shape (3,) becomes the column ``Matrix([e_0, e_1, e_2])``; a matrix
     ``Q`` of shape (3, 3) becomes ``Matrix([[Q_00, ...]])``; a scalar is a Symbol.
+
+    Args:
+        kernel: the kernel declaration.
+
+    Returns:
+        ``{argument name: sympy Symbol or Matrix}``, real symbols, in the argument order.
     """
     out = {}
     for a in kernel.args:

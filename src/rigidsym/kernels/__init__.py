@@ -135,10 +135,16 @@ def load(directory: str | Path | None = None) -> types.ModuleType:
 
 
 def use_backend(name: str) -> str:
-    """Select ``"c"`` (compiled through cffi) or ``"numpy"``; returns the backend in use.
+    """Select the backend of every kernel call: ``"c"`` (compiled) or ``"numpy"``.
 
     ``"c"`` falls back to ``"numpy"`` with a one-time warning when compiling fails (no
     compiler, no cffi).
+
+    Args:
+        name: ``"c"`` or ``"numpy"``.
+
+    Returns:
+        The backend in use after the call (``"numpy"`` when ``"c"`` fell back).
 
     Raises:
         ValueError: ``name`` is neither.
@@ -147,7 +153,11 @@ def use_backend(name: str) -> str:
 
 
 def backend() -> str:
-    """The backend in use (selects ``"c"`` with NumPy fallback on first call)."""
+    """The backend in use.
+
+    Returns:
+        ``"c"`` or ``"numpy"``; the first call selects ``"c"``, with the NumPy fallback.
+    """
     return _state.backend()
 
 
@@ -155,10 +165,20 @@ def batch_function(name: str, backend_name: str | None = None,
                    threads: int | None = None, dtype=np.float64) -> Callable:
     """Low-level ``f(*inputs, *outputs) -> flags`` of a package kernel (for benchmarks).
 
-    Inputs and outputs are C-contiguous ``(n, ...)`` float64 arrays, without validation or
-    broadcasting. For the C backend the return value is the number of flagged samples
-    (singular or non-finite, written as NaN); for NumPy the ``(n,)`` uint8 flags (1
-    singular, 2 non-finite output).
+    Args:
+        name: a kernel of ``kernels.json`` (public or not).
+        backend_name: ``"c"`` or ``"numpy"``; default the backend in use.
+        threads: threads of the C loop (as the kernels' ``threads=``).
+        dtype: ``numpy.float64`` or ``numpy.float32``.
+
+    Returns:
+        ``f(*inputs, *outputs)`` on C-contiguous ``(n, ...)`` arrays of ``dtype``, without
+        validation or broadcasting. For the C backend it returns the number of flagged
+        samples (singular or non-finite, written as NaN); for NumPy the ``(n,)`` uint8
+        flags (1 singular, 2 non-finite output).
+
+    Raises:
+        KeyError: no kernel ``name``.
     """
     return _state.builtin().batch_function(name, backend_name, threads, dtype)
 

@@ -43,8 +43,15 @@ def set_num_threads(n: int | None) -> None:
 
 
 def get_num_threads() -> int:
-    """Thread count used with ``threads=None``: :func:`set_num_threads`, else the
-    environment variable ``RIGIDSYM_NUM_THREADS``, else 1 (never oversubscribes unasked)."""
+    """Thread count used with ``threads=None``.
+
+    Returns:
+        :func:`set_num_threads`'s count, else the environment variable
+        ``RIGIDSYM_NUM_THREADS``, else 1 (never oversubscribes unasked).
+
+    Raises:
+        ValueError: ``RIGIDSYM_NUM_THREADS`` is not a positive integer.
+    """
     if _STATE["threads"] is not None:
         return _STATE["threads"]
     env = os.environ.get("RIGIDSYM_NUM_THREADS")

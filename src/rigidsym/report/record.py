@@ -19,10 +19,12 @@ from rigidsym.checking.registry import VERDICTS
 from rigidsym.printing import notation
 
 __all__ = ["summary", "result_record", "to_json", "cause_words",
-           "failure_bound", "CITATION", "SCHEMA", "RESIDUAL_FLOOR"]
+           "failure_bound", "CITATION", "TITLE", "SCHEMA", "RESIDUAL_FLOOR"]
 
 CITATION = ("J. Angeles, *Fundamentals of Robotic Mechanical Systems*, 4th ed., Springer, "
             "Chap. 3")
+#: the title of the chapter's report (a user report is titled by its module)
+TITLE = "Chapter 3 checked: verdicts"
 #: version of the JSON record; 2 added per-member records, the model in words, the cause
 #: class and the counterexample's residual and decimals, and moved expanded values to
 #: ``full`` documents.

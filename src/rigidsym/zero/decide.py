@@ -143,6 +143,31 @@ def _eval_entries(entries, plan, point):
     return [evaluate(e, plan, point) for e in entries]
 
 
+def _probe(entries, plan: Plan, rng: random.Random, n: int):
+    """Evaluate ``entries`` at ``n`` random points off the singular set; ``(point, entry)``
+    of the first non-zero value (a proof that an entry is not zero), or ``None``.
+
+    Raises:
+        Unsupported: no ``n`` points off the singular set in ``20 n + 20`` tries.
+    """
+    tries = 0
+    done = 0
+    while done < n:
+        tries += 1
+        if tries > 20 * n + 20:
+            raise Unsupported("could not find sample points off the singular set")
+        pt = random_point(plan, rng)
+        try:
+            vals = _eval_entries(entries, plan, pt)
+        except ZeroDivisionError:
+            continue
+        done += 1
+        for i, v in enumerate(vals):
+            if v != 0:
+                return pt, i
+    return None
+
+
 def decide_zero(entries, seed: int = 0, probes: int = 2) -> ZeroResult:
     """Decide whether every expression in ``entries`` is identically zero on the
     constraint set (see the module docstring for the method and its guarantees)."""
@@ -157,22 +182,7 @@ def decide_zero(entries, seed: int = 0, probes: int = 2) -> ZeroResult:
     rng = random.Random(seed)
 
     def probe(n):
-        tries = 0
-        done = 0
-        while done < n:
-            tries += 1
-            if tries > 20 * n + 20:
-                raise Unsupported("could not find sample points off the singular set")
-            pt = random_point(plan, rng)
-            try:
-                vals = _eval_entries(entries, plan, pt)
-            except ZeroDivisionError:
-                continue
-            done += 1
-            for i, v in enumerate(vals):
-                if v != 0:
-                    return pt, i
-        return None
+        return _probe(entries, plan, rng, n)
 
     try:
         hit = probe(probes)

@@ -192,6 +192,13 @@ def make_plan(exprs) -> Plan:
 
     for e in exprs:
         _walk(sp.sympify(e), visit)
+    _assemble(plan, params, denoms, groups, free)
+    return plan
+
+
+def _assemble(plan: Plan, params: set, denoms: dict, groups: dict, free: set) -> None:
+    """Fill ``plan`` from what :func:`make_plan`'s walk collected: the constrained groups
+    (with their highest derivative order), the free atoms, the angles' denominators."""
     # Constrained groups: rational rules for all atoms and derivative orders present.
     for c, order in groups.items():
         rules = _group_rules(c.kind, c.name, c.names, c.timed, order)
@@ -217,4 +224,3 @@ def make_plan(exprs) -> Plan:
         plan.angles[a] = (tau, M)
         params.add(tau)
     plan.params = sorted(params, key=lambda s: s.name)
-    return plan
