@@ -33,6 +33,8 @@ napoleon_numpy_docstring = False
 napoleon_use_ivar = True
 autodoc_member_order = "bysource"
 autodoc_typehints = "signature"
+# signatures show the aliases, not NumPy's expansion of ArrayLike into a page of unions
+autodoc_type_aliases = {n: n for n in ("ArrayLike", "NDArray", "OnSingular", "OutArrays")}
 autodoc_default_options = {"members": True, "undoc-members": False}
 
 # every reference is checked, except those to other projects (no intersphinx) and to the
@@ -43,7 +45,7 @@ nitpick_ignore_regex = [
     (r"py:.*", r"(?!rigidsym\b)[\w.]+"),                    # numpy, sympy, the stdlib, ...
     (r"py:.*", r"rigidsym\.(algebra|checking|zero|printing|report|generated|derivations"
                r"|_\w+|codegen\.(?!spec\b)\w+|kernels\._\w+)(\.\w+)*"),
-    (r"py:.*", r"(ArrayLike|NDArray|Out|OnSingular|Outcome|ModuleSpec|Path)"),
+    (r"py:.*", r"(ArrayLike|NDArray|OnSingular|OutArrays|Outcome|ModuleSpec|Path)"),
 ]
 
 

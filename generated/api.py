@@ -54,7 +54,7 @@ __all__ = [
 #: the checked evaluation of this directory, set by rigidsym.kernels.load()
 _SPACE: Any = None
 
-Out = NDArray[np.float64] | tuple[NDArray[np.float64], ...] | None
+OutArrays = NDArray[np.float64] | tuple[NDArray[np.float64], ...] | None
 OnSingular = Literal["raise", "nan"]
 
 
@@ -69,7 +69,7 @@ def H_matrix(
     e: ArrayLike,
     phi: ArrayLike,
     *,
-    out: Out = None,
+    out: OutArrays = None,
     check: bool = True,
     on_singular: OnSingular | None = None,
     threads: int | None = None,
@@ -89,7 +89,7 @@ def H_matrix(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        H_matrix: ndarray (..., 4, 3)
+        ndarray (..., 4, 3): H_matrix: ndarray (..., 4, 3)
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
@@ -111,7 +111,7 @@ def H_matrix_dot(
     phi: ArrayLike,
     omega: ArrayLike,
     *,
-    out: Out = None,
+    out: OutArrays = None,
     check: bool = True,
     on_singular: OnSingular | None = None,
     threads: int | None = None,
@@ -132,7 +132,7 @@ def H_matrix_dot(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        H_matrix_dot: ndarray (..., 4, 3); [1/s]
+        ndarray (..., 4, 3): H_matrix_dot: ndarray (..., 4, 3); [1/s]
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
@@ -153,7 +153,7 @@ def H_tilde(
     e: ArrayLike,
     phi: ArrayLike,
     *,
-    out: Out = None,
+    out: OutArrays = None,
     check: bool = True,
     on_singular: OnSingular | None = None,
     threads: int | None = None,
@@ -173,7 +173,7 @@ def H_tilde(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        H_tilde: ndarray (..., 3, 4)
+        ndarray (..., 3, 4): H_tilde: ndarray (..., 3, 4)
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
@@ -195,7 +195,7 @@ def H_tilde_dot(
     phi: ArrayLike,
     omega: ArrayLike,
     *,
-    out: Out = None,
+    out: OutArrays = None,
     check: bool = True,
     on_singular: OnSingular | None = None,
     threads: int | None = None,
@@ -216,7 +216,7 @@ def H_tilde_dot(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        H_tilde_dot: ndarray (..., 3, 4); [1/s]
+        ndarray (..., 3, 4): H_tilde_dot: ndarray (..., 3, 4); [1/s]
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
@@ -237,7 +237,7 @@ def L_matrix(
     e: ArrayLike,
     phi: ArrayLike,
     *,
-    out: Out = None,
+    out: OutArrays = None,
     check: bool = True,
     on_singular: OnSingular | None = None,
     threads: int | None = None,
@@ -257,7 +257,7 @@ def L_matrix(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        L_matrix: ndarray (..., 4, 3)
+        ndarray (..., 4, 3): L_matrix: ndarray (..., 4, 3)
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
@@ -279,7 +279,7 @@ def L_matrix_dot(
     phi: ArrayLike,
     omega: ArrayLike,
     *,
-    out: Out = None,
+    out: OutArrays = None,
     check: bool = True,
     on_singular: OnSingular | None = None,
     threads: int | None = None,
@@ -300,7 +300,7 @@ def L_matrix_dot(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        L_matrix_dot: ndarray (..., 4, 3); [1/s]
+        ndarray (..., 4, 3): L_matrix_dot: ndarray (..., 4, 3); [1/s]
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
@@ -321,7 +321,7 @@ def L_tilde(
     e: ArrayLike,
     phi: ArrayLike,
     *,
-    out: Out = None,
+    out: OutArrays = None,
     check: bool = True,
     on_singular: OnSingular | None = None,
     threads: int | None = None,
@@ -341,7 +341,7 @@ def L_tilde(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        L_tilde: ndarray (..., 3, 4)
+        ndarray (..., 3, 4): L_tilde: ndarray (..., 3, 4)
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
@@ -366,7 +366,7 @@ def L_tilde_dot(
     phi: ArrayLike,
     omega: ArrayLike,
     *,
-    out: Out = None,
+    out: OutArrays = None,
     check: bool = True,
     on_singular: OnSingular | None = None,
     threads: int | None = None,
@@ -387,7 +387,7 @@ def L_tilde_dot(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        L_tilde_dot: ndarray (..., 3, 4); [1/s]
+        ndarray (..., 3, 4): L_tilde_dot: ndarray (..., 3, 4); [1/s]
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
@@ -411,7 +411,7 @@ def N_matrix(
     e: ArrayLike,
     phi: ArrayLike,
     *,
-    out: Out = None,
+    out: OutArrays = None,
     check: bool = True,
     on_singular: OnSingular | None = None,
     threads: int | None = None,
@@ -431,7 +431,7 @@ def N_matrix(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        N_matrix: ndarray (..., 4, 3)
+        ndarray (..., 4, 3): N_matrix: ndarray (..., 4, 3)
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
@@ -456,7 +456,7 @@ def N_matrix_dot(
     phi: ArrayLike,
     omega: ArrayLike,
     *,
-    out: Out = None,
+    out: OutArrays = None,
     check: bool = True,
     on_singular: OnSingular | None = None,
     threads: int | None = None,
@@ -477,7 +477,7 @@ def N_matrix_dot(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        N_matrix_dot: ndarray (..., 4, 3); [1/s]
+        ndarray (..., 4, 3): N_matrix_dot: ndarray (..., 4, 3); [1/s]
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
@@ -501,7 +501,7 @@ def N_tilde(
     e: ArrayLike,
     phi: ArrayLike,
     *,
-    out: Out = None,
+    out: OutArrays = None,
     check: bool = True,
     on_singular: OnSingular | None = None,
     threads: int | None = None,
@@ -521,7 +521,7 @@ def N_tilde(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        N_tilde: ndarray (..., 3, 4)
+        ndarray (..., 3, 4): N_tilde: ndarray (..., 3, 4)
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
@@ -543,7 +543,7 @@ def N_tilde_dot(
     phi: ArrayLike,
     omega: ArrayLike,
     *,
-    out: Out = None,
+    out: OutArrays = None,
     check: bool = True,
     on_singular: OnSingular | None = None,
     threads: int | None = None,
@@ -564,7 +564,7 @@ def N_tilde_dot(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        N_tilde_dot: ndarray (..., 3, 4); [1/s]
+        ndarray (..., 3, 4): N_tilde_dot: ndarray (..., 3, 4); [1/s]
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
@@ -587,7 +587,7 @@ def inertia_at_point(
     c: ArrayLike,
     a: ArrayLike,
     *,
-    out: Out = None,
+    out: OutArrays = None,
     check: bool = True,
     on_singular: OnSingular | None = None,
     threads: int | None = None,
@@ -609,7 +609,7 @@ def inertia_at_point(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        I_A: ndarray (..., 3, 3); [kg m^2]
+        ndarray (..., 3, 3): I_A: ndarray (..., 3, 3); [kg m^2]
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
@@ -632,7 +632,7 @@ def inertia_dyad_at_point(
     c: ArrayLike,
     a: ArrayLike,
     *,
-    out: Out = None,
+    out: OutArrays = None,
     check: bool = True,
     on_singular: OnSingular | None = None,
     threads: int | None = None,
@@ -654,7 +654,7 @@ def inertia_dyad_at_point(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        M_A: ndarray (..., 6, 6)
+        ndarray (..., 6, 6): M_A: ndarray (..., 6, 6)
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
@@ -676,7 +676,7 @@ def instant_screw_axis(
     a: ArrayLike,
     a_dot: ArrayLike,
     *,
-    out: Out = None,
+    out: OutArrays = None,
     check: bool = True,
     on_singular: OnSingular | None = None,
     threads: int | None = None,
@@ -697,9 +697,11 @@ def instant_screw_axis(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        p0: ndarray (..., 3); ISA point closest to the origin [m]
-        pitch: ndarray (...); pitch [m/rad]
-        plucker: ndarray (..., 6); [e'; n']
+        tuple of ndarray: (p0, pitch, plucker), with
+
+            - p0: ndarray (..., 3); ISA point closest to the origin [m]
+            - pitch: ndarray (...); pitch [m/rad]
+            - plucker: ndarray (..., 6); [e'; n']
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
@@ -725,7 +727,7 @@ def kinetic_energy(
     omega: ArrayLike,
     c_dot: ArrayLike,
     *,
-    out: Out = None,
+    out: OutArrays = None,
     check: bool = True,
     on_singular: OnSingular | None = None,
     threads: int | None = None,
@@ -747,7 +749,7 @@ def kinetic_energy(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        T: ndarray (...); [J]
+        ndarray (...): T: ndarray (...); [J]
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
@@ -773,7 +775,7 @@ def moving_frame_acceleration(
     rho_dot_M: ArrayLike,
     rho_ddot_M: ArrayLike,
     *,
-    out: Out = None,
+    out: OutArrays = None,
     check: bool = True,
     on_singular: OnSingular | None = None,
     threads: int | None = None,
@@ -798,7 +800,7 @@ def moving_frame_acceleration(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        p_ddot: ndarray (..., 3); [m/s^2], F-frame
+        ndarray (..., 3): p_ddot: ndarray (..., 3); [m/s^2], F-frame
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
@@ -818,7 +820,7 @@ def moving_frame_acceleration(
 def natural_invariants_from_rotation(
     Q: ArrayLike,
     *,
-    out: Out = None,
+    out: OutArrays = None,
     check: bool = True,
     on_singular: OnSingular | None = None,
     threads: int | None = None,
@@ -837,8 +839,10 @@ def natural_invariants_from_rotation(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        e: ndarray (..., 3); unit axis
-        phi: ndarray (...); angle [rad]
+        tuple of ndarray: (e, phi), with
+
+            - e: ndarray (..., 3); unit axis
+            - phi: ndarray (...); angle [rad]
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
@@ -867,7 +871,7 @@ def newton_euler_wrench(
     omega_dot: ArrayLike,
     c_ddot: ArrayLike,
     *,
-    out: Out = None,
+    out: OutArrays = None,
     check: bool = True,
     on_singular: OnSingular | None = None,
     threads: int | None = None,
@@ -890,7 +894,7 @@ def newton_euler_wrench(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        w: ndarray (..., 6); [n_C; f] [N m; N]
+        ndarray (..., 6): w: ndarray (..., 6); [n_C; f] [N m; N]
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
@@ -911,7 +915,7 @@ def plucker_from_points(
     p1: ArrayLike,
     p2: ArrayLike,
     *,
-    out: Out = None,
+    out: OutArrays = None,
     check: bool = True,
     on_singular: OnSingular | None = None,
     threads: int | None = None,
@@ -931,7 +935,7 @@ def plucker_from_points(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        kappa: ndarray (..., 6); [e; n] (n in m)
+        ndarray (..., 6): kappa: ndarray (..., 6); [e; n] (n in m)
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
@@ -956,7 +960,7 @@ def plucker_transfer(
     a: ArrayLike,
     b: ArrayLike,
     *,
-    out: Out = None,
+    out: OutArrays = None,
     check: bool = True,
     on_singular: OnSingular | None = None,
     threads: int | None = None,
@@ -977,7 +981,7 @@ def plucker_transfer(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        kappa_B: ndarray (..., 6); [e; n_B]
+        ndarray (..., 6): kappa_B: ndarray (..., 6); [e; n_B]
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
@@ -1001,7 +1005,7 @@ def point_acceleration(
     p: ArrayLike,
     a: ArrayLike,
     *,
-    out: Out = None,
+    out: OutArrays = None,
     check: bool = True,
     on_singular: OnSingular | None = None,
     threads: int | None = None,
@@ -1024,7 +1028,7 @@ def point_acceleration(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        p_ddot: ndarray (..., 3); [m/s^2]
+        ndarray (..., 3): p_ddot: ndarray (..., 3); [m/s^2]
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
@@ -1044,7 +1048,7 @@ def point_acceleration(
 def rotation_from_euler_rodrigues(
     eta: ArrayLike,
     *,
-    out: Out = None,
+    out: OutArrays = None,
     check: bool = True,
     on_singular: OnSingular | None = None,
     threads: int | None = None,
@@ -1063,7 +1067,7 @@ def rotation_from_euler_rodrigues(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        Q: ndarray (..., 3, 3); rotation matrix
+        ndarray (..., 3, 3): Q: ndarray (..., 3, 3); rotation matrix
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
@@ -1084,7 +1088,7 @@ def rotation_from_natural_invariants(
     e: ArrayLike,
     phi: ArrayLike,
     *,
-    out: Out = None,
+    out: OutArrays = None,
     check: bool = True,
     on_singular: OnSingular | None = None,
     threads: int | None = None,
@@ -1104,7 +1108,7 @@ def rotation_from_natural_invariants(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        Q: ndarray (..., 3, 3); rotation matrix
+        ndarray (..., 3, 3): Q: ndarray (..., 3, 3); rotation matrix
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
@@ -1127,7 +1131,7 @@ def screw_axis_point(
     a: ArrayLike,
     a_prime: ArrayLike,
     *,
-    out: Out = None,
+    out: OutArrays = None,
     check: bool = True,
     on_singular: OnSingular | None = None,
     threads: int | None = None,
@@ -1149,7 +1153,7 @@ def screw_axis_point(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        p0: ndarray (..., 3); point of the axis closest to the origin [m]
+        ndarray (..., 3): p0: ndarray (..., 3); point of the axis closest to the origin [m]
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
@@ -1174,7 +1178,7 @@ def screw_of_displacement(
     a: ArrayLike,
     a_prime: ArrayLike,
     *,
-    out: Out = None,
+    out: OutArrays = None,
     check: bool = True,
     on_singular: OnSingular | None = None,
     threads: int | None = None,
@@ -1195,11 +1199,13 @@ def screw_of_displacement(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        e: ndarray (..., 3); unit axis
-        phi: ndarray (...); angle [rad], in [0, pi]
-        p0: ndarray (..., 3); axis point closest to the origin [m]
-        pitch: ndarray (...); pitch [m/rad]
-        plucker: ndarray (..., 6); [e; p0 x e]
+        tuple of ndarray: (e, phi, p0, pitch, plucker), with
+
+            - e: ndarray (..., 3); unit axis
+            - phi: ndarray (...); angle [rad], in [0, pi]
+            - p0: ndarray (..., 3); axis point closest to the origin [m]
+            - pitch: ndarray (...); pitch [m/rad]
+            - plucker: ndarray (..., 6); [e; p0 x e]
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
@@ -1226,7 +1232,7 @@ def twist_transfer(
     a: ArrayLike,
     p: ArrayLike,
     *,
-    out: Out = None,
+    out: OutArrays = None,
     check: bool = True,
     on_singular: OnSingular | None = None,
     threads: int | None = None,
@@ -1247,7 +1253,7 @@ def twist_transfer(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        t_P: ndarray (..., 6); [omega; v_P]
+        ndarray (..., 6): t_P: ndarray (..., 6); [omega; v_P]
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
@@ -1268,7 +1274,7 @@ def twist_transfer_matrix(
     a: ArrayLike,
     p: ArrayLike,
     *,
-    out: Out = None,
+    out: OutArrays = None,
     check: bool = True,
     on_singular: OnSingular | None = None,
     threads: int | None = None,
@@ -1288,7 +1294,7 @@ def twist_transfer_matrix(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        U: ndarray (..., 6, 6)
+        ndarray (..., 6, 6): U: ndarray (..., 6, 6)
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
@@ -1309,7 +1315,7 @@ def wrench_axis(
     w_A: ArrayLike,
     a: ArrayLike,
     *,
-    out: Out = None,
+    out: OutArrays = None,
     check: bool = True,
     on_singular: OnSingular | None = None,
     threads: int | None = None,
@@ -1329,9 +1335,11 @@ def wrench_axis(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        p0: ndarray (..., 3); wrench-axis point closest to the origin [m]
-        pitch: ndarray (...); pitch [m]
-        plucker: ndarray (..., 6); [e''; n'']
+        tuple of ndarray: (p0, pitch, plucker), with
+
+            - p0: ndarray (..., 3); wrench-axis point closest to the origin [m]
+            - pitch: ndarray (...); pitch [m]
+            - plucker: ndarray (..., 6); [e''; n'']
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
@@ -1356,7 +1364,7 @@ def wrench_transfer(
     a: ArrayLike,
     p: ArrayLike,
     *,
-    out: Out = None,
+    out: OutArrays = None,
     check: bool = True,
     on_singular: OnSingular | None = None,
     threads: int | None = None,
@@ -1377,7 +1385,7 @@ def wrench_transfer(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        w_P: ndarray (..., 6); [n_P; f]
+        ndarray (..., 6): w_P: ndarray (..., 6); [n_P; f]
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
@@ -1398,7 +1406,7 @@ def wrench_transfer_matrix(
     a: ArrayLike,
     p: ArrayLike,
     *,
-    out: Out = None,
+    out: OutArrays = None,
     check: bool = True,
     on_singular: OnSingular | None = None,
     threads: int | None = None,
@@ -1418,7 +1426,7 @@ def wrench_transfer_matrix(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        V: ndarray (..., 6, 6)
+        ndarray (..., 6, 6): V: ndarray (..., 6, 6)
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).

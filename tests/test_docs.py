@@ -93,6 +93,21 @@ def test_internal_links_resolve(built):
     assert not bad, "\n".join(bad[:40])
 
 
+def test_the_readme_links_into_the_docs(built):
+    """The README's links to docs/ pages name built pages and headings that exist."""
+    import re
+
+    bad = []
+    for target in re.findall(r"\]\((docs/[^)\s]+)\)", (ROOT / "README.md").read_text()):
+        path, _, frag = target.partition("#")
+        page = built / Path(path).relative_to("docs").with_suffix(".html")
+        if not (ROOT / path).is_file() or not page.is_file():
+            bad.append(f"{target}: no such page")
+        elif frag and frag not in _parse(page).ids:
+            bad.append(f"{target}: no heading {frag!r}")
+    assert not bad, bad
+
+
 def test_the_api_reference_covers_the_public_names(built):
     text = (built / "api.html").read_text(encoding="utf-8")
     missing = []

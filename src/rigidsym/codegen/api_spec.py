@@ -36,7 +36,7 @@ class Keyword:
 
 #: the keywords every kernel accepts after its arguments (the one definition)
 COMMON_KEYWORDS = (
-    Keyword("out", "Out", "None",
+    Keyword("out", "OutArrays", "None",
             "preallocated float64 output array (a tuple of them for several outputs), "
             "shape batch + output shape; returned filled"),
     Keyword("check", "bool", "True",
@@ -68,9 +68,14 @@ def docstring(meta: dict) -> str:
     for k in COMMON_KEYWORDS:
         lines.append(f"    {k.name}: {k.doc}.")
     lines += ["", "Returns:"]
-    for o in meta["outputs"]:
-        doc = f"; {o['doc']}" if o["doc"] else ""
-        lines.append(f"    {o['name']}: ndarray {_shape(o['shape'])}{doc}")
+    outs = [f"{o['name']}: ndarray {_shape(o['shape'])}" + (f"; {o['doc']}" if o["doc"] else "")
+            for o in meta["outputs"]]
+    if len(outs) == 1:  # Google style: "type: description"
+        lines.append(f"    ndarray {_shape(meta['outputs'][0]['shape'])}: {outs[0]}")
+    else:
+        names = ", ".join(o["name"] for o in meta["outputs"])
+        lines += [f"    tuple of ndarray: ({names}), with", ""]
+        lines += [f"        - {x}" for x in outs]
     lines += ["", "Raises:",
               "    TypeError: an argument that is not an array of real numbers (str, object, "
               "complex, bool).",

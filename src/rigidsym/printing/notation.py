@@ -53,7 +53,37 @@ def _dot_operands(x):
     return None
 
 
-class BookStrPrinter(StrPrinter):
+class _BookNotation:
+    """What the text and LaTeX printers share: a dot product written ``a^T b`` (in a trace
+    or an element ``[0, 0]``) prints as ``a·b``, an entry of a book matrix symbol with its
+    1-based subscript, a sum with its positive terms first. A printer supplies ``_dot``,
+    ``_trace`` and ``_entry``."""
+
+    def _print_Trace(self, expr):
+        d = _dot_operands(expr)
+        return self._dot(*d) if d else self._trace(expr.arg)
+
+    def _print_MatrixElement(self, expr):
+        d = _dot_operands(expr)
+        if d:
+            return self._dot(*d)
+        parent, i, j = expr.parent, expr.i, expr.j
+        if isinstance(parent, sp.MatrixSymbol) and i.is_Integer and j.is_Integer:
+            sub = str(i + 1) if parent.shape[1] == 1 else f"{i + 1}{j + 1}"  # book: 1-based
+            return self._entry(parent.name, sub)
+        return super()._print_MatrixElement(expr)
+
+    def _print_MatAdd(self, expr):
+        out = []
+        # positive terms first: M_A - M_C, p - a (sympy's order gives -M_C + M_A)
+        for i, t in enumerate(sorted(expr.args, key=is_negative_term)):
+            neg = is_negative_term(t)
+            s = self._print(-t if neg else t)
+            out.append(("-" if neg else "") + s if i == 0 else (" - " if neg else " + ") + s)
+        return "".join(out)
+
+
+class BookStrPrinter(_BookNotation, StrPrinter):
     """Plain-text printer in book notation (one line; products by juxtaposition)."""
 
     def _print_Symbol(self, expr):
@@ -80,19 +110,11 @@ class BookStrPrinter(StrPrinter):
     def _dot(self, a, b) -> str:
         return f"({self._print(a)}·{self._print(b)})"
 
-    def _print_Trace(self, expr):
-        d = _dot_operands(expr)
-        return self._dot(*d) if d else f"tr({self._print(expr.arg)})"
+    def _trace(self, arg) -> str:
+        return f"tr({self._print(arg)})"
 
-    def _print_MatrixElement(self, expr):
-        d = _dot_operands(expr)
-        if d:
-            return self._dot(*d)
-        parent, i, j = expr.parent, expr.i, expr.j
-        if isinstance(parent, sp.MatrixSymbol) and i.is_Integer and j.is_Integer:
-            sub = str(i + 1) if parent.shape[1] == 1 else f"{i + 1}{j + 1}"  # book: 1-based
-            return book_text(parent.name) + sub.translate(_SUBSCRIPT_DIGITS)
-        return super()._print_MatrixElement(expr)
+    def _entry(self, name: str, sub: str) -> str:
+        return book_text(name) + sub.translate(_SUBSCRIPT_DIGITS)
 
     def _print_Pi(self, expr):
         return "π"
@@ -139,15 +161,6 @@ class BookStrPrinter(StrPrinter):
             if q != 1:  # the book writes omega omega^T adot/||omega||^2
                 den = "/" + self.parenthesize(q, PRECEDENCE["Mul"])
         return sign + " ".join(head + body) + den
-
-    def _print_MatAdd(self, expr):
-        out = []
-        # positive terms first: M_A - M_C, p - a (sympy's order gives -M_C + M_A)
-        for i, t in enumerate(sorted(expr.args, key=is_negative_term)):
-            neg = is_negative_term(t)
-            s = self._print(-t if neg else t)
-            out.append(("-" if neg else "") + s if i == 0 else (" - " if neg else " + ") + s)
-        return "".join(out)
 
     def _print_Function(self, expr):
         if isinstance(expr, AppliedUndef):
@@ -200,7 +213,7 @@ class BookStrPrinter(StrPrinter):
     _print_MutableDenseMatrix = _print_MatrixBase
 
 
-class BookLatexPrinter(LatexPrinter):
+class BookLatexPrinter(_BookNotation, LatexPrinter):
     """LaTeX printer in book notation: bold vectors and matrices, ``\\cdot`` for a dot
     product, ``\\|ω\\|`` for a norm, ``\\mathbf{1}``/``\\mathbf{O}``."""
 
@@ -235,32 +248,15 @@ class BookLatexPrinter(LatexPrinter):
     def _dot(self, a, b) -> str:
         return rf"\left({self._print(a)} \cdot {self._print(b)}\right)"
 
-    def _print_Trace(self, expr):
-        d = _dot_operands(expr)
-        return self._dot(*d) if d else rf"\mathrm{{tr}}\left({self._print(expr.arg)}\right)"
+    def _trace(self, arg) -> str:
+        return rf"\mathrm{{tr}}\left({self._print(arg)}\right)"
 
-    def _print_MatrixElement(self, expr):
-        d = _dot_operands(expr)
-        if d:
-            return self._dot(*d)
-        parent, i, j = expr.parent, expr.i, expr.j
-        if isinstance(parent, sp.MatrixSymbol) and i.is_Integer and j.is_Integer:
-            sub = str(i + 1) if parent.shape[1] == 1 else f"{i + 1}{j + 1}"  # book: 1-based
-            return f"{book_latex(parent.name)}_{{{sub}}}"
-        return super()._print_MatrixElement(expr)
+    def _entry(self, name: str, sub: str) -> str:
+        return f"{book_latex(name)}_{{{sub}}}"
 
     def _print_MatMul(self, expr):
         d = _dot_operands(expr)
         return self._dot(*d) if d else super()._print_MatMul(expr)
-
-    def _print_MatAdd(self, expr):
-        out = []
-        # positive terms first: M_A - M_C, p - a (sympy's order gives -M_C + M_A)
-        for i, t in enumerate(sorted(expr.args, key=is_negative_term)):
-            neg = is_negative_term(t)
-            s = self._print(-t if neg else t)
-            out.append(("-" if neg else "") + s if i == 0 else (" - " if neg else " + ") + s)
-        return "".join(out)
 
     def _print_Cross(self, expr):  # the derivations' Cross(u, v), not sympy.vector's
         u, v = (self.parenthesize(a, PRECEDENCE["Mul"], strict=True) for a in expr.args)
