@@ -125,7 +125,7 @@ static inline int rigidsym_natural_invariants_from_rotation_sample(
 
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
  * are written as NaN; returns their number. One thread. */
-int64_t rigidsym_natural_invariants_from_rotation(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_natural_invariants_from_rotation)(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_Q,
     double *RIGIDSYM_RESTRICT out_e,
@@ -133,7 +133,7 @@ int64_t rigidsym_natural_invariants_from_rotation(
 
 /* The same on `threads` threads (OpenMP; one thread without it); the outputs and the count
  * are the same for every thread count. */
-int64_t rigidsym_natural_invariants_from_rotation_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_natural_invariants_from_rotation_threads)(
     int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_Q,
     double *RIGIDSYM_RESTRICT out_e,
@@ -142,7 +142,7 @@ int64_t rigidsym_natural_invariants_from_rotation_threads(
 
 /* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
  * is flagged too). */
-int64_t rigidsym_natural_invariants_from_rotation_f32_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_natural_invariants_from_rotation_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_Q,
     float *RIGIDSYM_RESTRICT out_e,

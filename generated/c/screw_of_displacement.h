@@ -296,7 +296,7 @@ static inline int rigidsym_screw_of_displacement_sample(
 
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
  * are written as NaN; returns their number. One thread. */
-int64_t rigidsym_screw_of_displacement(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_screw_of_displacement)(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_Q,
     const double *RIGIDSYM_RESTRICT in_a,
@@ -309,7 +309,7 @@ int64_t rigidsym_screw_of_displacement(
 
 /* The same on `threads` threads (OpenMP; one thread without it); the outputs and the count
  * are the same for every thread count. */
-int64_t rigidsym_screw_of_displacement_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_screw_of_displacement_threads)(
     int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_Q,
     const double *RIGIDSYM_RESTRICT in_a,
@@ -323,7 +323,7 @@ int64_t rigidsym_screw_of_displacement_threads(
 
 /* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
  * is flagged too). */
-int64_t rigidsym_screw_of_displacement_f32_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_screw_of_displacement_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_Q,
     const float *RIGIDSYM_RESTRICT in_a,

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import difflib
 import json
+import math
 import os
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -350,7 +351,24 @@ def generate(kernels=None, origin: str = BOOK_ORIGIN) -> GenerationResult:
                     ("c_common.h.j2", "c/rigidsym_common.h"),
                     ("c_kernels_index.h.j2", "c/rigidsym_kernels.h")):
         files[path] = env.get_template(t).render(kernels=metas, template=t, **ver)
+    files.update(_render_extension(env, metas, ver))
     return GenerationResult(dict(sorted(files.items())), notes, done)
+
+
+def _render_extension(env, metas: list[dict], ver: dict) -> dict[str, str]:
+    """The extension module's own C: the module (``c_module.c.j2``), the per-path table of
+    batch functions (``c_table.c.j2``) and the CPU dispatcher (``c_dispatch.h.j2``)."""
+    def size(shape) -> int:
+        return int(math.prod(shape))
+    ck = [{"name": m["name"], "ins": [size(a["shape"]) for a in m["args"]],
+           "outs": [size(o["shape"]) for o in m["outputs"]],
+           "narrays": len(m["args"]) + len(m["outputs"])} for m in metas]
+    files = {}
+    for t, path in (("c_module.c.j2", "c/rigidsym_module.c"),
+                    ("c_table.c.j2", "c/rigidsym_table.c"),
+                    ("c_dispatch.h.j2", "c/rigidsym_dispatch.h")):
+        files[path] = env.get_template(t).render(kernels=ck, template=t, **ver)
+    return files
 
 
 def _on_disk(out: Path) -> dict[str, Path]:
