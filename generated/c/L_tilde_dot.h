@@ -77,7 +77,7 @@ static inline int rigidsym_L_tilde_dot_sample(
         singular |= (x5) == 0.0;
         /* quantities that can be non-finite for finite inputs (divisions, roots):
          * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
-        const double finite = ((x10 - x10) + (x19 - x19));
+        const double finite = ((x10 - x10) + ((x19 - x19) + (x5 - x5)));
         singular |= finite != finite;
     }
     return singular;
@@ -145,7 +145,7 @@ static inline int rigidsym_L_tilde_dot_sample_trig(
         singular |= (x5) == 0.0;
         /* quantities that can be non-finite for finite inputs (divisions, roots):
          * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
-        const double finite = ((x10 - x10) + (x19 - x19));
+        const double finite = ((x10 - x10) + ((x19 - x19) + (x5 - x5)));
         singular |= finite != finite;
     }
     return singular;

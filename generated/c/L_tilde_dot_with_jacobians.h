@@ -250,7 +250,7 @@ static inline int rigidsym_L_tilde_dot_with_jacobians_sample(
         singular |= (x5) == 0.0;
         /* quantities that can be non-finite for finite inputs (divisions, roots):
          * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
-        const double finite = ((x14 - x14) + ((x29 - x29) + (x84 - x84)));
+        const double finite = (((x14 - x14) + (x29 - x29)) + ((x84 - x84) + (x5 - x5)));
         singular |= finite != finite;
     }
     return singular;
@@ -491,7 +491,7 @@ static inline int rigidsym_L_tilde_dot_with_jacobians_sample_trig(
         singular |= (x5) == 0.0;
         /* quantities that can be non-finite for finite inputs (divisions, roots):
          * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
-        const double finite = ((x14 - x14) + ((x29 - x29) + (x84 - x84)));
+        const double finite = (((x14 - x14) + (x29 - x29)) + ((x84 - x84) + (x5 - x5)));
         singular |= finite != finite;
     }
     return singular;

@@ -116,7 +116,7 @@ static inline int rigidsym_L_tilde_with_jacobians_sample(
         singular |= (x2) == 0.0;
         /* quantities that can be non-finite for finite inputs (divisions, roots):
          * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
-        const double finite = ((x3 - x3) + (x12 - x12));
+        const double finite = ((x3 - x3) + ((x12 - x12) + (x2 - x2)));
         singular |= finite != finite;
     }
     return singular;
@@ -223,7 +223,7 @@ static inline int rigidsym_L_tilde_with_jacobians_sample_trig(
         singular |= (x2) == 0.0;
         /* quantities that can be non-finite for finite inputs (divisions, roots):
          * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
-        const double finite = ((x3 - x3) + (x12 - x12));
+        const double finite = ((x3 - x3) + ((x12 - x12) + (x2 - x2)));
         singular |= finite != finite;
     }
     return singular;

@@ -56,7 +56,7 @@ static inline int rigidsym_N_matrix_sample(
         singular |= (x1) == 0.0;
         /* quantities that can be non-finite for finite inputs (divisions, roots):
          * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
-        const double finite = (x2 - x2);
+        const double finite = ((x2 - x2) + (x1 - x1));
         singular |= finite != finite;
     }
     return singular;
@@ -103,7 +103,7 @@ static inline int rigidsym_N_matrix_sample_trig(
         singular |= (x1) == 0.0;
         /* quantities that can be non-finite for finite inputs (divisions, roots):
          * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
-        const double finite = (x2 - x2);
+        const double finite = ((x2 - x2) + (x1 - x1));
         singular |= finite != finite;
     }
     return singular;

@@ -96,7 +96,7 @@ static inline int rigidsym_N_matrix_dot_sample(
         singular |= (x6) == 0.0;
         /* quantities that can be non-finite for finite inputs (divisions, roots):
          * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
-        const double finite = ((x17 - x17) + (x40 - x40));
+        const double finite = (((x17 - x17) + (x40 - x40)) + ((x7 - x7) + (x6 - x6)));
         singular |= finite != finite;
     }
     return singular;
@@ -183,7 +183,7 @@ static inline int rigidsym_N_matrix_dot_sample_trig(
         singular |= (x6) == 0.0;
         /* quantities that can be non-finite for finite inputs (divisions, roots):
          * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
-        const double finite = ((x17 - x17) + (x40 - x40));
+        const double finite = (((x17 - x17) + (x40 - x40)) + ((x7 - x7) + (x6 - x6)));
         singular |= finite != finite;
     }
     return singular;

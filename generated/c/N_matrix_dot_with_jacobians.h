@@ -329,7 +329,7 @@ static inline int rigidsym_N_matrix_dot_with_jacobians_sample(
         singular |= (x7) == 0.0;
         /* quantities that can be non-finite for finite inputs (divisions, roots):
          * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
-        const double finite = ((x21 - x21) + ((x68 - x68) + (x149 - x149)));
+        const double finite = (((x21 - x21) + (x68 - x68)) + ((x149 - x149) + ((x8 - x8) + (x7 - x7))));
         singular |= finite != finite;
     }
     return singular;
@@ -649,7 +649,7 @@ static inline int rigidsym_N_matrix_dot_with_jacobians_sample_trig(
         singular |= (x7) == 0.0;
         /* quantities that can be non-finite for finite inputs (divisions, roots):
          * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
-        const double finite = ((x21 - x21) + ((x68 - x68) + (x149 - x149)));
+        const double finite = (((x21 - x21) + (x68 - x68)) + ((x149 - x149) + ((x8 - x8) + (x7 - x7))));
         singular |= finite != finite;
     }
     return singular;

@@ -126,7 +126,7 @@ static inline int rigidsym_N_matrix_with_jacobians_sample(
         singular |= (x2) == 0.0;
         /* quantities that can be non-finite for finite inputs (divisions, roots):
          * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
-        const double finite = ((x4 - x4) + (x20 - x20));
+        const double finite = (((x4 - x4) + (x20 - x20)) + ((x2 - x2) + (x19 - x19)));
         singular |= finite != finite;
     }
     return singular;
@@ -243,7 +243,7 @@ static inline int rigidsym_N_matrix_with_jacobians_sample_trig(
         singular |= (x2) == 0.0;
         /* quantities that can be non-finite for finite inputs (divisions, roots):
          * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
-        const double finite = ((x4 - x4) + (x20 - x20));
+        const double finite = (((x4 - x4) + (x20 - x20)) + ((x2 - x2) + (x19 - x19)));
         singular |= finite != finite;
     }
     return singular;

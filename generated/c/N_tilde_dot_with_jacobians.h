@@ -10,6 +10,7 @@
  *
  * Time derivative of N_tilde along omega, with the Jacobians of its outputs.
  * d/dt N_tilde(e(t), phi(t)) with e_dot, phi_dot from omega (the corrected form where the printed one does not hold); and d(output)/d(input) by sympy on the declared formula
+ * Singular set: phi = 0 (mod 2 pi): the axis, and so its rate, is undefined
  */
 #ifndef RIGIDSYM_N_TILDE_DOT_WITH_JACOBIANS_H
 #define RIGIDSYM_N_TILDE_DOT_WITH_JACOBIANS_H
@@ -255,7 +256,7 @@ static inline int rigidsym_N_tilde_dot_with_jacobians_sample(
         singular |= (x1) == 0.0;
         /* quantities that can be non-finite for finite inputs (divisions, roots):
          * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
-        const double finite = ((x17 - x17) + (x97 - x97));
+        const double finite = (((x17 - x17) + (x97 - x97)) + ((x1 - x1) + (x2 - x2)));
         singular |= finite != finite;
     }
     return singular;
@@ -502,7 +503,7 @@ static inline int rigidsym_N_tilde_dot_with_jacobians_sample_trig(
         singular |= (x1) == 0.0;
         /* quantities that can be non-finite for finite inputs (divisions, roots):
          * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
-        const double finite = ((x17 - x17) + (x97 - x97));
+        const double finite = (((x17 - x17) + (x97 - x97)) + ((x1 - x1) + (x2 - x2)));
         singular |= finite != finite;
     }
     return singular;

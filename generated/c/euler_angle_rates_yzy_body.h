@@ -44,7 +44,7 @@ static inline int rigidsym_euler_angle_rates_yzy_body_sample(
         singular |= (x0) == 0.0;
         /* quantities that can be non-finite for finite inputs (divisions, roots):
          * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
-        const double finite = (x1 - x1);
+        const double finite = ((x1 - x1) + (x0 - x0));
         singular |= finite != finite;
     }
     return singular;
@@ -81,7 +81,7 @@ static inline int rigidsym_euler_angle_rates_yzy_body_sample_trig(
         singular |= (x0) == 0.0;
         /* quantities that can be non-finite for finite inputs (divisions, roots):
          * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
-        const double finite = (x1 - x1);
+        const double finite = ((x1 - x1) + (x0 - x0));
         singular |= finite != finite;
     }
     return singular;

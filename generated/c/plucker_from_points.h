@@ -49,7 +49,7 @@ static inline int rigidsym_plucker_from_points_sample(
         singular |= (x3) == 0.0;
         /* quantities that can be non-finite for finite inputs (divisions, roots):
          * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
-        const double finite = (x4 - x4);
+        const double finite = ((x4 - x4) + (x3 - x3));
         singular |= finite != finite;
     }
     return singular;

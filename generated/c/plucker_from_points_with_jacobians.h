@@ -122,7 +122,7 @@ static inline int rigidsym_plucker_from_points_with_jacobians_sample(
         singular |= (x9) == 0.0;
         /* quantities that can be non-finite for finite inputs (divisions, roots):
          * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
-        const double finite = ((x10 - x10) + (x15 - x15));
+        const double finite = ((x10 - x10) + ((x15 - x15) + (x9 - x9)));
         singular |= finite != finite;
     }
     return singular;

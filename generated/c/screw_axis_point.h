@@ -69,7 +69,7 @@ static inline int rigidsym_screw_axis_point_sample(
         singular |= (x1) == 0.0;
         /* quantities that can be non-finite for finite inputs (divisions, roots):
          * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
-        const double finite = (x24 - x24);
+        const double finite = ((x24 - x24) + (x2 - x2));
         singular |= finite != finite;
     }
     return singular;
@@ -129,7 +129,7 @@ static inline int rigidsym_screw_axis_point_sample_trig(
         singular |= (x1) == 0.0;
         /* quantities that can be non-finite for finite inputs (divisions, roots):
          * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
-        const double finite = (x24 - x24);
+        const double finite = ((x24 - x24) + (x2 - x2));
         singular |= finite != finite;
     }
     return singular;

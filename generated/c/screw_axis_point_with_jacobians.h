@@ -165,7 +165,7 @@ static inline int rigidsym_screw_axis_point_with_jacobians_sample(
         singular |= (x3) == 0.0;
         /* quantities that can be non-finite for finite inputs (divisions, roots):
          * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
-        const double finite = ((x36 - x36) + (x69 - x69));
+        const double finite = (((x36 - x36) + (x69 - x69)) + ((x4 - x4) + (x3 - x3)));
         singular |= finite != finite;
     }
     return singular;
@@ -321,7 +321,7 @@ static inline int rigidsym_screw_axis_point_with_jacobians_sample_trig(
         singular |= (x3) == 0.0;
         /* quantities that can be non-finite for finite inputs (divisions, roots):
          * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
-        const double finite = ((x36 - x36) + (x69 - x69));
+        const double finite = (((x36 - x36) + (x69 - x69)) + ((x4 - x4) + (x3 - x3)));
         singular |= finite != finite;
     }
     return singular;

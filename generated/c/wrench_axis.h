@@ -61,7 +61,7 @@ static inline int rigidsym_wrench_axis_sample(
         singular |= (x0) == 0.0;
         /* quantities that can be non-finite for finite inputs (divisions, roots):
          * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
-        const double finite = ((x1 - x1) + ((x8 - x8) + (x9 - x9)));
+        const double finite = (((x1 - x1) + (x8 - x8)) + ((x9 - x9) + (x0 - x0)));
         singular |= finite != finite;
     }
     return singular;

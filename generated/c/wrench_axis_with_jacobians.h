@@ -218,7 +218,7 @@ static inline int rigidsym_wrench_axis_with_jacobians_sample(
         singular |= (x4) == 0.0;
         /* quantities that can be non-finite for finite inputs (divisions, roots):
          * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
-        const double finite = (((x5 - x5) + (x20 - x20)) + ((x21 - x21) + ((x30 - x30) + (x61 - x61))));
+        const double finite = (((x5 - x5) + ((x20 - x20) + (x21 - x21))) + ((x30 - x30) + ((x61 - x61) + (x4 - x4))));
         singular |= finite != finite;
     }
     return singular;
