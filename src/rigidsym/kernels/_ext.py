@@ -24,6 +24,7 @@ from __future__ import annotations
 import hashlib
 import importlib.machinery
 import importlib.util
+import json
 import os
 import platform
 import sys
@@ -38,10 +39,12 @@ from types import ModuleType
 from rigidsym import _cache
 from rigidsym.kernels import _build
 
-__all__ = ["Loaded", "load", "ensure", "entry", "package_module", "NoCompiledKernels"]
+__all__ = ["Loaded", "load", "generated_dir", "info", "ensure", "entry", "package_module",
+           "NoCompiledKernels"]
 
 _LOCK = threading.RLock()
 _MODULES: dict[Path, Loaded] = {}
+_WARNED = {"omp": False}
 
 
 class NoCompiledKernels(RuntimeError):
@@ -58,6 +61,19 @@ class Loaded:
     file: Path
     origin: str
     sources: str
+
+
+def generated_dir() -> Path:
+    """The package's generated kernels: inside the installed package, else the checkout's.
+
+    Raises:
+        FileNotFoundError: neither has a ``kernels.json``.
+    """
+    here = Path(__file__).resolve()
+    for cand in (here.parents[1] / "generated", here.parents[3] / "generated"):
+        if (cand / "kernels.json").exists():
+            return cand
+    raise FileNotFoundError("generated kernels not found; run `rigidsym generate`")
 
 
 def package_module() -> Path | None:
@@ -171,6 +187,12 @@ def _import(path: Path, origin: str, sources: str, name: str) -> Loaded:
     if mod.sources != sources:     # read from the bytes already; a race with a rebuild
         raise ImportError(f"{path}: built from other sources than it was checked against")
     sys.modules[name] = mod
+    if not mod.openmp and os.environ.get("RIGIDSYM_OPENMP", "1") != "0" \
+            and not _WARNED["omp"]:
+        _WARNED["omp"] = True
+        warnings.warn(f"rigidsym: the C kernels of {path} were built without OpenMP (the "
+                      f"compiler had none); they run on one thread", RuntimeWarning,
+                      stacklevel=4)
     return Loaded(mod, path, origin, sources)
 
 
@@ -230,3 +252,34 @@ def _load_default(gdir: Path, package: bool, sources: str, name: str) -> Loaded:
         raise NoCompiledKernels(f"{what} are not compiled ({why}) and {exc}: to get the C "
                                 f"backend, {fix}") from None
     return _import(path, "cache", sources, name)
+
+
+#: the libmvec variants each x86-64 path calls (nm -u of its objects, gcc 12, glibc 2.36)
+_MVEC_VARIANTS = {"x86-64-v2": "SSE (_ZGVbN2v_sin, _ZGVbN2v_cos)",
+                  "x86-64-v3": "AVX2 (_ZGVdN4v_sin, _ZGVdN4v_cos)",
+                  "x86-64-v4": "AVX2 (_ZGVdN4v_sin, _ZGVdN4v_cos)"}
+
+
+def _mvec_variant(loaded: Loaded) -> str | None:
+    m = loaded.module
+    if not m.libmvec:
+        return None
+    if len(m.paths) > 1 and m.path in _MVEC_VARIANTS:
+        return _MVEC_VARIANTS[m.path]
+    # one path (native, baseline): the module's own undefined symbols say it
+    import re
+
+    names = sorted(set(re.findall(rb"_ZGV[a-z]N[0-9]+v_(?:sin|cos)", loaded.file.read_bytes())))
+    return ", ".join(n.decode() for n in names) or "none called"
+
+
+def info(loaded: Loaded) -> dict:
+    """The build information of a loaded extension (:func:`rigidsym.kernels.build_info`)."""
+    m = loaded.module
+    cpu = json.loads(_build.cpu_features()) if sys.platform.startswith("linux") else {}
+    return {"path": m.path, "paths": list(m.paths),
+            "forced": os.environ.get("RIGIDSYM_DISPATCH") or None,
+            "openmp": bool(m.openmp), "libmvec": _mvec_variant(loaded),
+            "file": str(loaded.file), "origin": loaded.origin, "sources": m.sources,
+            "compiler": getattr(m, "compiler", None), "flags": m.build,
+            "cpu": cpu.get("model name") or platform.processor() or platform.machine()}
