@@ -38,6 +38,7 @@ from types import ModuleType
 
 from rigidsym import _cache
 from rigidsym.kernels import _build
+from rigidsym.kernels._build import generated_dir
 
 __all__ = ["Loaded", "load", "generated_dir", "info", "ensure", "entry", "package_module",
            "NoCompiledKernels"]
@@ -61,19 +62,6 @@ class Loaded:
     file: Path
     origin: str
     sources: str
-
-
-def generated_dir() -> Path:
-    """The package's generated kernels: inside the installed package, else the checkout's.
-
-    Raises:
-        FileNotFoundError: neither has a ``kernels.json``.
-    """
-    here = Path(__file__).resolve()
-    for cand in (here.parents[1] / "generated", here.parents[3] / "generated"):
-        if (cand / "kernels.json").exists():
-            return cand
-    raise FileNotFoundError("generated kernels not found; run `rigidsym generate`")
 
 
 def package_module() -> Path | None:
