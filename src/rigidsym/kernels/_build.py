@@ -286,9 +286,18 @@ def embedded_hash(data: bytes | Path) -> str | None:
 
 
 def estimate_seconds(cdir: Path, cfg: Config) -> float:
-    """A rough wall time of :func:`build` (for the notice before it starts)."""
+    """A rough wall time of :func:`build` (for the notice before it starts): the measured
+    CPU time per object over the parallel compiles, slowed by the machine's other work
+    (the 1-minute load average)."""
     n = len(kernel_sources(cdir)) * len(cfg.paths) + 1
-    return n * SECONDS_PER_OBJECT / min(jobs(), n)
+    par = min(jobs(), n)
+    cores = os.cpu_count() or 1
+    try:
+        busy = os.getloadavg()[0]
+    except (AttributeError, OSError):   # not Unix
+        busy = 0.0
+    share = min(1.0, cores / max(cores, busy + par))
+    return n * SECONDS_PER_OBJECT / (par * share)
 
 
 Progress = Callable[[int, int], None]
