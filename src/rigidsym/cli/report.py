@@ -50,8 +50,8 @@ def run(args) -> int:
                                  args.jobs)
     from rigidsym.cli.exercise import write_report as write_exercises
     from rigidsym.report.html import to_html
-    from rigidsym.report.record import to_json
     from rigidsym.report.markdown import to_markdown
+    from rigidsym.report.record import to_json
     ids = select(None, None)
     results = run_checks(ids, jobs=args.jobs, progress=True)
     out = Path(args.out) if args.out else default_report_dir()

@@ -9,8 +9,8 @@ from rigidsym.checking.registry import select
 from rigidsym.checking.runner import run_checks
 from rigidsym.checking.usermodules import load_many
 from rigidsym.report.html import to_html
-from rigidsym.report.record import CITATION, to_json
 from rigidsym.report.markdown import to_markdown
+from rigidsym.report.record import CITATION, to_json
 
 __all__ = ["write_user_report"]
 
