@@ -28,13 +28,8 @@ import json
 import os
 import platform
 import shlex
-import shutil
-import subprocess
 import sys
-import sysconfig
-import tempfile
 from collections.abc import Callable
-from concurrent.futures import ThreadPoolExecutor, as_completed
 from dataclasses import dataclass
 from functools import cache
 from pathlib import Path
@@ -148,6 +143,9 @@ def kernel_flags() -> tuple[str, ...]:
 def compiler() -> list[str] | None:
     """The C compiler command (``CC``, else the one Python was built with, else ``cc``), or
     ``None`` when it is not on ``PATH``."""
+    import shutil
+    import sysconfig
+
     cmd = shlex.split(os.environ.get("CC") or sysconfig.get_config_var("CC") or "cc")
     return cmd if cmd and shutil.which(cmd[0]) else None
 
@@ -225,6 +223,9 @@ _MVEC_DECL = ("#pragma omp declare simd notinbranch\ndouble sin(double);\n"
 def _probe(cc: tuple[str, ...], flags: tuple[str, ...], libs: tuple[str, ...], simd: bool) -> bool:
     """Whether a small program compiles and links (an executable: a shared object would
     accept an unresolved libmvec symbol) with ``flags`` and ``libs``."""
+    import subprocess
+    import tempfile
+
     with tempfile.TemporaryDirectory() as tmp:
         src = Path(tmp) / "probe.c"
         src.write_text(_PROBE % (_MVEC_DECL if simd else "",
@@ -243,6 +244,8 @@ def configure(native: bool = False, cc: list[str] | None = None) -> Config:
     """
     cc = cc or compiler()
     if cc is None:
+        import sysconfig
+
         name = os.environ.get("CC") or sysconfig.get_config_var("CC") or "cc"
         raise CompilerNotFound(f"no C compiler found ({name!r} is not on PATH)")
     cmd, flags, paths = tuple(cc), kernel_flags(), default_paths(native)
@@ -305,6 +308,8 @@ Progress = Callable[[int, int], None]
 
 def _tasks(cdir: Path, cfg: Config, tmp: Path) -> list[tuple[list[str], Path]]:
     """``(argv, object)`` of every compile, largest sources first (balances the workers)."""
+    import sysconfig
+
     inc = ["-I", str(cdir)]
     tasks = []
     for path in cfg.paths:
@@ -326,6 +331,8 @@ def _tasks(cdir: Path, cfg: Config, tmp: Path) -> list[tuple[list[str], Path]]:
 
 
 def _run(argv: list[str]) -> None:
+    import subprocess
+
     r = subprocess.run(argv, capture_output=True, text=True)
     if r.returncode != 0:
         tail = "\n".join((r.stderr or r.stdout).strip().splitlines()[-20:])
@@ -339,6 +346,8 @@ def build(gdir: Path, out: Path, cfg: Config, tmp: Path,
     Raises:
         BuildError: a compile or the link failed (the compiler's last lines in the message).
     """
+    from concurrent.futures import ThreadPoolExecutor, as_completed
+
     cdir = Path(gdir) / "c"
     if not (cdir / MODULE_SOURCE).is_file():
         raise BuildError(f"{cdir}: no {MODULE_SOURCE}; regenerate this folder with this "

@@ -28,8 +28,6 @@ import json
 import os
 import platform
 import sys
-import sysconfig
-import tempfile
 import threading
 import warnings
 from dataclasses import dataclass
@@ -92,7 +90,7 @@ def entry(gdir: Path, native: bool = False, sources: str | None = None) -> Path:
     sources = sources or _build.sources_hash(Path(gdir) / "c")
     label = "native" if native else "+".join(p.name for p in _build.default_paths())
     name = f"{label}-{sys.implementation.cache_tag}-{_key(sources, native)}"
-    suffix = sysconfig.get_config_var("EXT_SUFFIX") or ".so"
+    suffix = importlib.machinery.EXTENSION_SUFFIXES[0]
     return _cache.folder("kernels") / name / f"{_build.MODULE}{suffix}"
 
 
@@ -117,6 +115,8 @@ def _notice(gdir: Path, cfg: _build.Config, where: Path, why: str) -> None:
 def _compile(gdir: Path, cfg: _build.Config, path: Path) -> None:
     """Build into a temporary folder beside ``path``, then :func:`_cache.put` (atomic,
     checksummed). A progress bar on a terminal."""
+    import tempfile
+
     path.parent.mkdir(parents=True, exist_ok=True)
     with tempfile.TemporaryDirectory(dir=path.parent, prefix=".build-") as tmp:
         out = Path(tmp) / path.name
@@ -128,7 +128,8 @@ def _compile(gdir: Path, cfg: _build.Config, path: Path) -> None:
                           TextColumn("{task.completed}/{task.total} objects"),
                           TimeElapsedColumn(), console=Console(stderr=True),
                           transient=True) as bar:
-                task = bar.add_task("compile", total=None)
+                total = len(_build.kernel_sources(Path(gdir) / "c")) * len(cfg.paths) + 2
+                task = bar.add_task("compile", total=total)
                 _build.build(gdir, out, cfg, Path(tmp),
                              lambda done, total: bar.update(task, completed=done, total=total))
         else:
