@@ -279,3 +279,47 @@ def test_n_tilde_dot_names_phi_at_its_singular_set(backend):
     with pytest.raises(K.SingularConfigurationError, match="phi = 0") as err:
         K.N_tilde_dot(e=[0.0, 0.6, 0.8], phi=0.0, omega=[0.1, 0.2, 0.3])
     assert err.value.argument == "phi"
+
+
+@needs_cc
+def test_native_build_is_used_when_present(user_dir, tmp_path):
+    cache = tmp_path / "cache"
+    p = subprocess.run([sys.executable, "-m", "rigidsym", "build-c", "--native",
+                        str(user_dir)], env=_env(cache), capture_output=True, text=True,
+                       timeout=600)
+    assert p.returncode == 0, p.stderr
+    assert "rigidsym: compiling" in p.stderr and "native" in p.stderr
+    p = _python(_LOAD.format(d=str(user_dir), out=str(tmp_path / "w.npy")), _env(cache),
+                tmp_path)
+    out, err = p.communicate(timeout=600)
+    assert p.returncode == 0, err
+    assert "compiling" not in err
+    assert json.loads(out.splitlines()[-1])["origin"] == "cache (native)"
+    p = subprocess.run([sys.executable, "-m", "rigidsym", "build-c", "--info",
+                        str(user_dir)], env=_env(cache), capture_output=True, text=True,
+                       timeout=600)
+    assert p.returncode == 0, p.stderr
+    info = json.loads(p.stdout)
+    assert info["paths"] == ["native"] and "-march=native" in info["flags"]
+
+
+def test_loading_a_user_directory_never_loads_the_package_kernels(user_dir, tmp_path,
+                                                                    monkeypatch):
+    from rigidsym.kernels import _state
+
+    calls = []
+    real = _ext.load
+
+    def spy(gdir, package=False):
+        calls.append(package)
+        return real(gdir, package)
+    monkeypatch.setenv("RIGIDSYM_CACHE", str(tmp_path / "cache"))
+    monkeypatch.setattr(_ext, "load", spy)
+    monkeypatch.setitem(_state.STATE, "backend", None)
+    monkeypatch.setattr(_state.builtin(), "_clib", None)
+    k = K.load(user_dir)
+    monkeypatch.setattr(k._SPACE, "_clib", None)
+    w = k.rescaled([1.0, 2.0, 3.0], 2.0)
+    np.testing.assert_array_equal(w, [2.0, 4.0, 6.0])
+    assert True not in calls
+    assert calls == [False]

@@ -56,7 +56,7 @@ def test_the_wheel_has_one_top_level_package(wheel):
         top = {n.split("/")[0] for n in z.namelist()}
     dist_info = {t for t in top if t.endswith(".dist-info")}
     assert top - dist_info == {"rigidsym"}
-    assert dist_info == {wheel.name.split("-py")[0] + ".dist-info"}
+    assert dist_info == {"-".join(wheel.name.split("-")[:2]) + ".dist-info"}
 
 
 def _run(installed, cwd, *args) -> subprocess.CompletedProcess:

@@ -186,8 +186,11 @@ def _import(path: Path, origin: str, sources: str, name: str) -> Loaded:
 
 
 def _origin(path: Path) -> str:
-    parts = set(path.parts)
-    return "wheel" if {"site-packages", "dist-packages"} & parts else "editable build"
+    """``"editable build"`` for a module built in place in a checkout (``src/rigidsym/...``
+    beside ``pyproject.toml``), else ``"wheel"`` (installed from one, whatever the folder)."""
+    root = path.resolve().parents[3]
+    in_checkout = path.resolve().parents[2].name == "src" and (root / "pyproject.toml").is_file()
+    return "editable build" if in_checkout else "wheel"
 
 
 def load(gdir: Path, package: bool = False) -> Loaded:
