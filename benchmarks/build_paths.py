@@ -168,11 +168,35 @@ def table(res: dict) -> str:
     return "\n".join(lines)
 
 
+MARK, END = "<!-- build-paths -->", "<!-- /build-paths -->"
+
+
+def write_section(res: dict, path: Path, notes: list[str]) -> None:
+    """Replace (or append) this benchmark's section of RESULTS.md, between its markers
+    (benchmarks/run.py carries such sections over when it rewrites the file)."""
+    lines = [MARK, "## Default build against native (issue 19)", "",
+             f"`python benchmarks/build_paths.py --results`: N = {res['n']:.0e}, one thread, "
+             f"ns/sample, caller-provided outputs, minimum of {res['rounds']} alternating "
+             f"rounds; load average {res['load']:.1f} at the start. Native flags: "
+             f"`{res['native_flags']}`.", "", table(res), "", *notes, END]
+    old = path.read_text(encoding="utf-8") if path.exists() else ""
+    block = "\n".join(lines)
+    if MARK in old and END in old:
+        head, rest = old.split(MARK, 1)
+        new = head + block + rest.split(END, 1)[1]
+    else:
+        new = old.rstrip("\n") + "\n\n" + block + "\n"
+    path.write_text(new, encoding="utf-8")
+
+
 def main(argv=None) -> int:
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     p.add_argument("--n", type=int, default=1_000_000)
     p.add_argument("--rounds", type=int, default=7)
     p.add_argument("--json", default=None, help="also write the numbers here")
+    p.add_argument("--results", action="store_true",
+                   help="write the table into benchmarks/RESULTS.md (its own section)")
+    p.add_argument("--note", action="append", default=[], help="a line under the table")
     a = p.parse_args(argv)
     res = measure(a.n, a.rounds)
     print(f"N = {a.n:.0e}, one thread, ns/sample, minimum of {a.rounds} alternating rounds; "
@@ -180,6 +204,8 @@ def main(argv=None) -> int:
     print(table(res))
     if a.json:
         Path(a.json).write_text(json.dumps(res, indent=1))
+    if a.results:
+        write_section(res, ROOT / "benchmarks" / "RESULTS.md", a.note)
     return 0
 
 

@@ -92,6 +92,8 @@ def test_four_processes_on_an_empty_cache_compile_once(user_dir, tmp_path):
         assert p.returncode == 0, err
     notices = [err.count("rigidsym: compiling") for _, err in outs]
     assert sum(notices) == 1, [err for _, err in outs]
+    for (_, err), n in zip(outs, notices, strict=True):    # the others waited, or loaded
+        assert n or "waiting for it" in err or not err.strip(), err
     infos = [json.loads(out.splitlines()[-1]) for out, _ in outs]
     assert {i["backend"] for i in infos} == {"c"}
     assert {i["origin"] for i in infos} == {"cache"}

@@ -30,6 +30,8 @@ import platform
 import sys
 import threading
 import warnings
+from collections.abc import Iterator
+from contextlib import contextmanager
 from dataclasses import dataclass
 from pathlib import Path
 from types import ModuleType
@@ -137,6 +139,24 @@ def _compile(gdir: Path, cfg: _build.Config, path: Path) -> None:
         _cache.put(path, out.read_bytes())
 
 
+@contextmanager
+def _lock(path: Path) -> Iterator[None]:
+    """The cross-process lock of one cache entry; a process that has to wait for another's
+    compile says so first (waiting is not silent either)."""
+    from filelock import Timeout
+
+    try:
+        with _cache.lock("kernels", path.parent.name, timeout=0):
+            yield
+            return
+    except Timeout:
+        pass
+    print(f"rigidsym: another process is compiling these kernels into {path.parent}; "
+          f"waiting for it", file=sys.stderr, flush=True)
+    with _cache.lock("kernels", path.parent.name):
+        yield
+
+
 def ensure(gdir: Path, native: bool = False, why: str = "not compiled yet",
            force: bool = False) -> Path:
     """The cache entry of ``gdir``'s module, compiled first when missing, corrupt (with a
@@ -152,7 +172,7 @@ def ensure(gdir: Path, native: bool = False, why: str = "not compiled yet",
     if not force and _valid(path, sources):
         return path
     cfg = _build.configure(native)
-    with _cache.lock("kernels", path.parent.name):
+    with _lock(path):
         state = _valid(path, sources)
         if state and not force:
             return path                     # another process built it meanwhile
