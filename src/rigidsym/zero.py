@@ -11,11 +11,12 @@ Method (never ``simplify()``, never floating point):
    is exact).
    After this step the expression is a rational function over Q of free variables, and the
    constraints hold identically.
-2. **Random-exact probe.** Evaluate with Python ``Fraction`` at seeded random rational
+2. **Random-exact probe.** Evaluate with FLINT rationals (``fmpq``) at seeded random rational
    points. A non-zero value is a *proof* that the expression is not identically zero, and
    the point is an exact counterexample.
-3. **Exact cancellation** (``exact-cancel``): for expressions of moderate size, bring the
-   rational function to lowest terms in ``sympy.polys`` fields; zero iff the numerator is 0.
+3. **Exact cancellation** (``exact-cancel``): for expressions of moderate size, compute the
+   rational function as a fraction of FLINT polynomials (python-flint ``fmpq_mpoly``,
+   common factors removed by FLINT's multivariate gcd); zero iff the numerator is 0.
 4. **Schwartz-Zippel** (``random-exact``): for expressions too large to expand, a bound
    ``d`` on the total degree of the numerator is computed from the expression tree, and the
    expression is evaluated exactly at ``n`` independent points drawn uniformly from a set
@@ -23,7 +24,8 @@ Method (never ``simplify()``, never floating point):
    with probability at most ``(d / |S|)^n``, which is recorded.
 
 Anything else (a float, an unknown function, an irrational power) makes the result
-``undecided``.
+``undecided``. Each family of expressions is translated once into a straight-line program
+(:mod:`rigidsym.program`) that steps 2-4 share.
 """
 
 from __future__ import annotations
@@ -32,11 +34,12 @@ import random
 from dataclasses import dataclass
 from fractions import Fraction
 
+import flint
 import sympy as sp
-from sympy.polys.fields import field as frac_field
 
 from .exact import _size, degree_bound, evaluate, to_rational
 from .plan import Plan, Unsupported, make_plan
+from .program import Program, parametrised, run_exact, run_rational
 
 __all__ = [
     "Unsupported",
@@ -98,23 +101,17 @@ class _OutOfTime(Exception):
     pass
 
 
-def _cancel_within_budget(entries, plan: Plan) -> list[int] | None:
-    """Indices of entries whose reduced numerator is non-zero; ``None`` if the budget ran out.
+def _cancel_within_budget(prog: Program, plan: Plan) -> list[int] | None:
+    """Indices of entries whose numerator is non-zero; ``None`` if the budget ran out.
 
     The budget is process CPU time (ITIMER_VIRTUAL/SIGVTALRM, main thread on POSIX), so the
     method chosen does not depend on how loaded the machine is: multivariate gcds
-    occasionally take minutes where Schwartz-Zippel needs a second.
+    occasionally take minutes where Schwartz-Zippel needs a second. (A FLINT call is not
+    interrupted: the alarm is seen when it returns.)
     """
     import signal
     import threading
 
-    gens = plan.params
-    if gens:
-        K, *_ = frac_field(gens, sp.QQ)
-        conv = K.from_expr
-    else:
-        def conv(x):
-            return sp.Rational(x)
     timed = hasattr(signal, "setitimer") and threading.current_thread() is \
         threading.main_thread()
 
@@ -125,7 +122,12 @@ def _cancel_within_budget(entries, plan: Plan) -> list[int] | None:
     try:
         if timed:
             signal.setitimer(signal.ITIMER_VIRTUAL, CANCEL_SECONDS)
-        return [i for i, e in enumerate(entries) if conv(to_rational(e, plan)) != 0]
+        if not plan.params:  # constants: their exact values decide
+            return [i for i, v in enumerate(run_exact(prog, [])) if v != 0]
+        # positional names: two parameters may print alike
+        ctx = flint.fmpq_mpoly_ctx.get([f"x{i}" for i in range(len(plan.params))],
+                                       "degrevlex")
+        return [i for i, (num, _) in enumerate(run_rational(prog, ctx)) if not num.is_zero()]
     except _OutOfTime:
         return None
     finally:
@@ -139,8 +141,10 @@ def random_point(plan: Plan, rng: random.Random) -> dict:
     return {p: Fraction(rng.randint(-(2**31), 2**31), _DEN) for p in plan.params}
 
 
-def _eval_entries(entries, plan, point):
-    return [evaluate(e, plan, point) for e in entries]
+def _eval_entries(prog: Program, plan: Plan, point: dict) -> list:
+    """Exact values (``fmpq``) of the program's outputs at ``point`` (``Fraction`` values)."""
+    return run_exact(prog, [flint.fmpq(point[p].numerator, point[p].denominator)
+                            for p in plan.params])
 
 
 def decide_zero(entries, seed: int = 0, probes: int = 2) -> ZeroResult:
@@ -155,6 +159,10 @@ def decide_zero(entries, seed: int = 0, probes: int = 2) -> ZeroResult:
     except Unsupported as exc:
         return ZeroResult(None, "undecided", str(exc))
     rng = random.Random(seed)
+    try:
+        prog = parametrised(entries, plan)  # once: shared by the probes and cancellation
+    except Unsupported as exc:
+        return ZeroResult(None, "undecided", str(exc), plan=plan)
 
     def probe(n):
         tries = 0
@@ -165,7 +173,7 @@ def decide_zero(entries, seed: int = 0, probes: int = 2) -> ZeroResult:
                 raise Unsupported("could not find sample points off the singular set")
             pt = random_point(plan, rng)
             try:
-                vals = _eval_entries(entries, plan, pt)
+                vals = _eval_entries(prog, plan, pt)
             except ZeroDivisionError:
                 continue
             done += 1
@@ -183,7 +191,7 @@ def decide_zero(entries, seed: int = 0, probes: int = 2) -> ZeroResult:
         small = d <= CANCEL_SMALL_DEGREE or (d <= CANCEL_DEGREE_LIMIT and
                                               len(plan.params) <= CANCEL_PARAM_LIMIT)
         if small and all(_size(e, CANCEL_NODE_LIMIT) <= CANCEL_NODE_LIMIT for e in entries):
-            nonzero = _cancel_within_budget(entries, plan)
+            nonzero = _cancel_within_budget(prog, plan)
         else:
             nonzero = None
         if nonzero is not None:
