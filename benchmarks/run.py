@@ -36,6 +36,7 @@ from rigidsym.derivations.kernels_spec import KERNELS  # noqa: E402
 from rigidsym import kernels as K  # noqa: E402
 from rigidsym.codegen.generator import _flatten  # noqa: E402
 from rigidsym.codegen.spec import flat_symbols, input_symbols  # noqa: E402
+from rigidsym.kernels import _state  # noqa: E402
 
 PEERS = ROOT.parent / "shared" / "peers-bench" / "peerbench" / "kernels.py"
 #: benchmark id -> our kernel (K4 without the Plücker array, as the peers compute it)
@@ -298,7 +299,7 @@ def main(argv=None) -> int:
     Ns = [1000, 100000] if args.quick else [1000, 100000, 1000000]
     rng = np.random.default_rng(1)
     rows = []
-    meta = K._meta()
+    meta = _state.meta()
     with tempfile.TemporaryDirectory() as tmp:
         build = Path(tmp)
         for kid in args.kernels.split(","):

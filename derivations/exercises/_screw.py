@@ -3,9 +3,10 @@
 from __future__ import annotations
 
 import sympy as sp
-from rigidsym.derivations.sec3_2_1 import screw_axis_point
 
-from rigidsym.primitives import trace, vect
+from rigidsym.declare import trace, vect
+
+from ..sec3_2_1 import screw_axis_point
 
 
 def screw_of_displacement(Q, a, a_prime):

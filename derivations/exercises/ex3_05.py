@@ -4,9 +4,8 @@ from __future__ import annotations
 
 import sympy as sp
 
-from rigidsym.symbols import unit_vector, vector
-
-from .worked import Solution, exact_check, identity_check
+from rigidsym.checking.worked import Solution, exact_check, identity_check
+from rigidsym.declare import unit_vector, vector
 
 ID = "ex3.5"
 

@@ -4,8 +4,9 @@ from __future__ import annotations
 
 import sympy as sp
 
+from rigidsym.checking.worked import Solution, exact_check
+
 from ._screw import screw_of_displacement
-from .worked import Solution, exact_check
 
 ID = "ex3.6"
 

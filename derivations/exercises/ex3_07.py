@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import sympy as sp
 
-from .worked import Solution, exact_check, truth_check
+from rigidsym.checking.worked import Solution, exact_check, truth_check
 
 ID = "ex3.7"
 

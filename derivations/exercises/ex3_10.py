@@ -8,10 +8,8 @@ from __future__ import annotations
 
 import sympy as sp
 
-from rigidsym.primitives import cpm, rotation_from_natural_invariants, vect
-from rigidsym.symbols import TIME, angle
-
-from .worked import Solution, identity_check
+from rigidsym.checking.worked import Solution, identity_check
+from rigidsym.declare import TIME, angle, cpm, rotation_from_natural_invariants, vect
 
 ID = "ex3.10"
 PROPER_EULER = ["ZXZ", "XYX", "YZY", "ZYZ", "XZX", "YXY"]
@@ -175,7 +173,7 @@ def solve() -> Solution:
         for p in ss:
             ok &= df.subs(phi, p) == 0 and euler_rate_matrix(seq).subs(phi, p).rank() == 2
         ok &= len(ss) == 2
-    from .worked import truth_check
+    from rigidsym.checking.worked import truth_check
     s.check(truth_check("every singular point found zeroes det W and drops rank W to 2",
                         ok, "two points per sequence in [-pi, pi)"))
     return s

@@ -3,12 +3,11 @@
 from __future__ import annotations
 
 import sympy as sp
-from rigidsym.derivations.sec3_4_2 import twist_transfer_matrix
 
-from rigidsym.primitives import block
-from rigidsym.symbols import rotation, vector
+from rigidsym.checking.worked import Solution, exact_check, identity_check
+from rigidsym.declare import block, rotation, vector
 
-from .worked import Solution, exact_check, identity_check
+from ..sec3_4_2 import twist_transfer_matrix
 
 ID = "ex3.19"
 
