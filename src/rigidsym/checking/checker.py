@@ -77,6 +77,8 @@ class Result:
     members: list[dict] = field(default_factory=list)
     #: the model's atoms and their constraints, in words ("e: unit vector, ...")
     model: list[str] = field(default_factory=list)
+    #: read from the verdict cache (a run field, like ``seconds``: not in written reports)
+    cached: bool = False
 
     def as_json(self) -> dict:
         """Every field as a plain dict (the full record; the lean schema-2 row is
