@@ -268,5 +268,5 @@ def store(results: list, keys: dict) -> int:
         for r, k in todo:
             row = dict(r.as_json(), cached=False)
             entry = {"format": FORMAT, "key": k, "id": r.id, "result": row}
-            _cache.put(_path(k), json.dumps(entry, sort_keys=True).encode())
+            _cache.put(_path(k), json.dumps(entry).encode())  # key order is record order
     return len(todo)

@@ -49,7 +49,7 @@ def run(args) -> int:
     if args.module:  # a user module's report: titled by it, files named after it
         from rigidsym.report.user import write_user_report
         return write_user_report(args.module, Path(args.out) if args.out else Path.cwd(),
-                                 args.jobs)
+                                 args.jobs, cache=not args.no_cache)
     from rigidsym.cli.exercise import write_report as write_exercises
     from rigidsym.report.html import to_html
     from rigidsym.report.markdown import to_markdown
