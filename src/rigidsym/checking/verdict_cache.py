@@ -98,9 +98,8 @@ def _settings() -> str:
     from rigidsym.checking import balls, checker
     from rigidsym.zero import decide
 
-    names = {decide: ("SAMPLE_SET_SIZE", "CANCEL_NODE_LIMIT", "CANCEL_DEGREE_LIMIT",
-                      "CANCEL_SMALL_DEGREE", "CANCEL_PARAM_LIMIT", "CANCEL_SECONDS",
-                      "CANCEL_TERMS_LIMIT", "SZ_POINTS"),
+    names = {decide: ("SAMPLE_SET_SIZE", "CANCEL_NODE_LIMIT", "CANCEL_TERMS_LIMIT",
+                      "CANCEL_PRODUCT_LIMIT", "CANCEL_SECONDS", "SZ_POINTS"),
              balls: ("NUMERIC_DIGITS", "NUMERIC_POINTS", "MAX_DIGITS", "CERTIFIED_BOUND"),
              checker: ("AGREE_TOL", "DIFFER_TOL")}
     return json.dumps({f"{m.__name__}.{n}": str(getattr(m, n, None))

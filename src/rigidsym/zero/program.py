@@ -33,7 +33,7 @@ from sympy.core.function import AppliedUndef
 
 from rigidsym.zero.plan import _TRIG, Plan, Unsupported, _linear_angles
 
-__all__ = ["Program", "parametrised", "unparametrised", "run_exact", "run_rational",
+__all__ = ["Program", "TooLarge", "parametrised", "unparametrised", "run_exact", "run_rational",
            "CONST", "LEAF", "ADD", "MUL", "POW", "ROOT", "ABS", "FUNC", "PI"]
 
 CONST, LEAF, ADD, MUL, POW, ROOT, ABS, FUNC, PI = range(9)
@@ -43,6 +43,11 @@ _FUNCS = {sp.cos: "cos", sp.sin: "sin", sp.tan: "tan", sp.cot: "cot", sp.sec: "s
           sp.csc: "csc", sp.exp: "exp", sp.log: "log", sp.atan: "atan", sp.asin: "asin",
           sp.acos: "acos", sp.atan2: "atan2", sp.sinh: "sinh", sp.cosh: "cosh",
           sp.tanh: "tanh"}
+
+
+class TooLarge(Exception):
+    """A rational-function run went past its work budget (terms of a polynomial, or pairs of
+    terms of a product)."""
 
 
 @dataclass
@@ -281,7 +286,8 @@ def _root(v, p: int, q: int):
     return flint.fmpq(r.numerator, r.denominator)
 
 
-def run_rational(prog: Program, ctx) -> list:
+def run_rational(prog: Program, ctx, terms_limit: int = 10**9,
+                 product_limit: int = 10**18) -> list:
     """The outputs as fractions ``(numerator, denominator)`` of ``fmpq_mpoly`` in ``ctx``
     (whose generators are the leaves), each kept free of the common factors that a gcd of
     the denominators finds (FLINT's multivariate gcd).
@@ -289,32 +295,33 @@ def run_rational(prog: Program, ctx) -> list:
     A numerator is the zero polynomial exactly when its expression vanishes identically
     (the denominator is never the zero polynomial: that raises ``Unsupported``).
 
+    Args:
+        prog: a :func:`parametrised` program.
+        ctx: a ``fmpq_mpoly_ctx`` with one generator per leaf.
+        terms_limit: the most terms an intermediate numerator or denominator may have.
+        product_limit: the most pairs of terms a product may multiply.
+
     Raises:
         Unsupported: for ``ABS``/``ROOT`` (not rational functions) or the inverse of an
             identically zero subexpression.
+        TooLarge: past ``terms_limit`` or ``product_limit``.
     """
     gens = ctx.gens()
     one = ctx.from_dict({(0,) * len(gens): 1})
+    budget = (terms_limit, product_limit)
     vals: list = [None] * len(prog.ops)
     for i, op in enumerate(prog.ops):
         code = op[0]
         if code == MUL:
             acc = vals[op[1]]
             for j in op[2:]:
-                acc = _mul(acc, vals[j])
+                acc = _mul(acc, vals[j], budget)
         elif code == ADD:
             acc = vals[op[1]]
             for j in op[2:]:
-                acc = _add(acc, vals[j])
+                acc = _add(acc, vals[j], budget)
         elif code == POW:
-            n, d = vals[op[1]]
-            k = op[2]
-            if k < 0:
-                if n.is_zero():
-                    raise Unsupported("inverse of an identically zero subexpression")
-                n, d, k = d, n, -k
-                n, d = _normal(n, d)
-            acc = (n**k, d**k)
+            acc = _pow(vals[op[1]], op[2], budget)
         elif code == CONST:
             acc = (one * flint.fmpq(op[1].numerator, op[1].denominator), one)
         elif code == LEAF:
@@ -325,30 +332,51 @@ def run_rational(prog: Program, ctx) -> list:
     return [vals[k] for k in prog.outputs]
 
 
-def _normal(n, d):
-    """Move the leading coefficient of the denominator to the numerator (d monic)."""
-    lc = d.leading_coefficient()
-    if lc != 1:
-        n, d = n / lc, d / lc
-    return n, d
+def _check(budget, *sizes: int) -> None:
+    if max(sizes) > budget[0]:
+        raise TooLarge(f"a polynomial of {max(sizes)} terms")
 
 
-def _add(a, b):
+def _product(budget, a, b):
+    if len(a) * len(b) > budget[1]:
+        raise TooLarge(f"a product of {len(a)} by {len(b)} terms")
+    return a * b
+
+
+def _pow(x, k: int, budget):
+    n, d = x
+    if k < 0:
+        if n.is_zero():
+            raise Unsupported("inverse of an identically zero subexpression")
+        n, d, k = d, n, -k
+        lc = d.leading_coefficient()  # denominators monic: equal ones compare equal
+        if lc != 1:
+            n, d = n / lc, d / lc
+    # (len)^k bounds the terms of the power: checked before FLINT expands it
+    if max(len(n), len(d)) > 1 and max(len(n), len(d)) ** min(k, 64) > budget[1]:
+        raise TooLarge(f"a power {k} of {max(len(n), len(d))} terms")
+    out = (n**k, d**k)
+    _check(budget, len(out[0]), len(out[1]))
+    return out
+
+
+def _add(a, b, budget):
     (n1, d1), (n2, d2) = a, b
     if d1 == d2:
-        return n1 + n2, d1
-    if d1.is_one():
-        return n1 * d2 + n2, d2
-    if d2.is_one():
-        return n1 + n2 * d1, d1
-    g = d1.gcd(d2)
-    if g.is_one():
-        return n1 * d2 + n2 * d1, d1 * d2
-    e1, e2 = d1 / g, d2 / g
-    return n1 * e2 + n2 * e1, d1 * e2
+        out = (n1 + n2, d1)
+    elif d1.is_one():
+        out = (_product(budget, n1, d2) + n2, d2)
+    elif d2.is_one():
+        out = (n1 + _product(budget, n2, d1), d1)
+    else:
+        g = d1.gcd(d2)
+        e1, e2 = (d1, d2) if g.is_one() else (d1 / g, d2 / g)
+        out = (_product(budget, n1, e2) + _product(budget, n2, e1), _product(budget, d1, e2))
+    _check(budget, len(out[0]), len(out[1]))
+    return out
 
 
-def _mul(a, b):
+def _mul(a, b, budget):
     (n1, d1), (n2, d2) = a, b
     if not d2.is_one() and not n1.is_constant():
         g = n1.gcd(d2)
@@ -358,4 +386,6 @@ def _mul(a, b):
         g = n2.gcd(d1)
         if not g.is_one():
             n2, d1 = n2 / g, d1 / g
-    return n1 * n2, d1 * d2
+    out = (_product(budget, n1, n2), _product(budget, d1, d2))
+    _check(budget, len(out[0]), len(out[1]))
+    return out
