@@ -10,6 +10,11 @@ from rigidsym.symbols import TIME, vector
 from .worked import Solution, identity_check, nonidentity_check
 
 ID = "ex3.21"
+TITLE = "Orthogonality of the two parts of the angular-acceleration matrix"
+STATEMENT = ("\"Show that the two components of the foregoing decomposition are mutually "
+             "orthogonal, which is a restatement of the orthogonality of the tangential and the "
+             "centripetal relative acceleration\"")
+CITATION = "Angeles, Sec. 3.9, Exercise 3.21; Eq. (3.86)"
 
 
 def solve() -> Solution:
@@ -17,11 +22,7 @@ def solve() -> Solution:
     w = vector("omega", t=TIME)
     r = vector("r")
     s = Solution(
-        ID, "Orthogonality of the two parts of the angular-acceleration matrix",
-        "\"Show that the two components of the foregoing decomposition are mutually "
-        "orthogonal, which is a restatement of the orthogonality of the tangential and the "
-        "centripetal relative acceleration\"",
-        "Angeles, Sec. 3.9, Exercise 3.21; Eq. (3.86)",
+        ID, TITLE, STATEMENT, CITATION,
         given={"omega(t)": w, "W": "Omega_dot + Omega^2 (3.86)", "r": r},
         assumptions=["The 'restatement' for vectors is decided too: it is false in general."])
     Om = cpm(w)
