@@ -12,8 +12,8 @@ from __future__ import annotations
 import numpy as np
 import sympy as sp
 
-__all__ = ["new_figure", "frame", "arrow", "segment", "point", "line", "edges", "axes3d",
-           "as_array"]
+__all__ = ["new_figure", "frame", "arrow", "segment", "point", "line", "line_in_box", "box",
+           "edges", "axes3d", "as_array"]
 
 #: one view for every 3-D figure (elevation, azimuth in degrees)
 VIEW = (22, -58)
@@ -21,7 +21,7 @@ VIEW = (22, -58)
 
 def as_array(v) -> np.ndarray:
     """A sympy vector (or list) as a float array of shape (3,)."""
-    return np.array([float(sp.N(x)) for x in (list(v) if hasattr(v, "__iter__") else [v])])
+    return np.array([float(sp.N(x)) for x in list(v)])
 
 
 def new_figure(title: str, size=(6.4, 5.2)):
@@ -53,7 +53,7 @@ def frame(ax, origin, R, name: str, color: str, scale: float = 1.0) -> None:
         d = as_array(sp.Matrix(R)[:, k]) * scale
         ax.quiver(*o, *d, color=color, linewidth=1.2, arrow_length_ratio=0.1)
         ax.text(*(o + 1.08 * d), f"${axis}_{{{name}}}$" if name else f"${axis}$",
-                color=color, fontsize=8)
+                color=color, fontsize=10)
 
 
 def segment(ax, a, b, color: str = "0.3", label: str | None = None, **kw) -> None:
@@ -77,6 +77,30 @@ def line(ax, p, e, extent: float, color: str, label: str | None = None) -> None:
     segment(ax, p - extent * e, p + extent * e, color=color, label=label, linewidth=2.0)
 
 
+def box(points, pad: float = 0.15) -> tuple[np.ndarray, float]:
+    """Centre and half-size of the cube drawn around ``points`` (see :func:`axes3d`)."""
+    P = np.array([as_array(p) for p in points])
+    lo, hi = P.min(axis=0), P.max(axis=0)
+    return (lo + hi) / 2, max(float((hi - lo).max()) / 2, 1e-9) * (1 + pad)
+
+
+def line_in_box(ax, p, e, points, color: str, label: str | None = None) -> None:
+    """The part of the line ``{p + lambda e}`` inside the drawing box of ``points``."""
+    mid, half = box(points)
+    p, e = as_array(p), as_array(e)
+    e = e / np.linalg.norm(e)
+    lo, hi = -np.inf, np.inf
+    for k in range(3):           # slab clipping, one coordinate at a time
+        if abs(e[k]) < 1e-12:
+            if abs(p[k] - mid[k]) > half:
+                return
+            continue
+        t1, t2 = sorted(((mid[k] - half - p[k]) / e[k], (mid[k] + half - p[k]) / e[k]))
+        lo, hi = max(lo, t1), min(hi, t2)
+    if lo < hi:
+        segment(ax, p + lo * e, p + hi * e, color=color, label=label, linewidth=2.0)
+
+
 def edges(ax, vertices: dict, pairs, color: str, label: str | None = None, **kw) -> None:
     """The edges ``pairs`` (names) of a polyhedron with ``vertices`` (name -> point)."""
     for i, (a, b) in enumerate(pairs):
@@ -86,9 +110,7 @@ def edges(ax, vertices: dict, pairs, color: str, label: str | None = None, **kw)
 
 def axes3d(ax, points, legend: bool = True, pad: float = 0.15) -> None:
     """Equal scales on a box covering ``points``; legend (fixed place) when asked."""
-    P = np.array([as_array(p) for p in points])
-    lo, hi = P.min(axis=0), P.max(axis=0)
-    mid, half = (lo + hi) / 2, max(float((hi - lo).max()) / 2, 1e-9) * (1 + pad)
+    mid, half = box(points, pad)
     ax.set_xlim(mid[0] - half, mid[0] + half)
     ax.set_ylim(mid[1] - half, mid[1] + half)
     ax.set_zlim(mid[2] - half, mid[2] + half)

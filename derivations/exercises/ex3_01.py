@@ -109,7 +109,7 @@ def _finish(s: Solution, Q, P, Pp, phi, e, p0, pl) -> Solution:
 def figure(s: Solution):
     """The cube before (grey) and after (blue) the displacement, with the line L of
     minimum displacement (red) and its intersections with the coordinate planes."""
-    from ._draw import axes3d, edges, line, new_figure, point
+    from ._draw import axes3d, edges, line_in_box, new_figure, point
 
     before = [s.given["A, B, D, E"][:, k] for k in range(4)]
     after = [s.given["A', B', D', E'"][:, k] for k in range(4)]
@@ -123,11 +123,10 @@ def figure(s: Solution):
         point(ax, V1[k], "tab:blue", text=k + "'")
     pts = list(V0.values()) + list(V1.values())
     e, p0 = s.answers["e"], s.answers["plucker"][:3, :].cross(s.answers["plucker"][3:, :])
-    span = max(abs(float(sp.N(x))) for p in pts for x in p) + 1
-    line(ax, p0, e, span, "tab:red", "L (minimum displacement)")
     for k, v in s.answers.items():
         if k.startswith("intersection_"):
             point(ax, v, "tab:red", text=k.split("_")[1])
             pts.append(v)
+    line_in_box(ax, p0, e, pts, "tab:red", "L (minimum displacement)")
     axes3d(ax, pts)
     return fig

@@ -76,7 +76,7 @@ def solve(P_1=PARAMETERS[0].default, P_2=PARAMETERS[1].default, P_3=PARAMETERS[2
 def figure(s: Solution):
     """The tetrahedron, the two forces on their edges, the central axis and the point P
     closest to P_4 with the least moment."""
-    from ._draw import arrow, axes3d, edges, line, new_figure, point, segment
+    from ._draw import arrow, axes3d, edges, line_in_box, new_figure, point, segment
 
     V = {k: s.given[f"P{k}"] for k in "1234"}
     fig, ax = new_figure("Exercise 3.2: forces on the tetrahedron, the point of least moment")
@@ -86,8 +86,7 @@ def figure(s: Solution):
     arrow(ax, V["2"], unit(V["3"] - V["2"]), "tab:red", "f_1")
     arrow(ax, V["4"], unit(V["1"] - V["4"]), "tab:orange", "f_2")
     P, f = s.answers["P"], s.answers["f"]
-    span = max(float(sp.N(sp.sqrt((a - b).dot(a - b)))) for a in V.values() for b in V.values())
-    line(ax, P, f, span, "tab:green", "central axis")
+    line_in_box(ax, P, f, list(V.values()) + [P], "tab:green", "central axis")
     point(ax, P, "tab:green", "P (least moment)", "P")
     segment(ax, V["4"], P, color="tab:green", linestyle=":")
     axes3d(ax, list(V.values()) + [P])

@@ -125,14 +125,14 @@ def figure(s: Solution):
     measured force and moment drawn in F_1; F_2's readings mapped by Q as dashed arrows."""
     from ._draw import arrow, axes3d, frame, new_figure
 
-    Q = s.answers["Q_1_2"]
+    Q, g = s.answers["Q_1_2"], s.given
+    size = max(float(sp.N(sp.sqrt(v.dot(v)))) for v in (g["f_1"], g["n_1"])) * 0.6
     fig, ax = new_figure("Exercise 3.4: the two sensor frames")
-    frame(ax, sp.zeros(3, 1), sp.eye(3), "F_1", "0.2")
-    frame(ax, sp.zeros(3, 1), Q, "F_2", "tab:purple", scale=0.8)
-    g = s.given
+    frame(ax, sp.zeros(3, 1), sp.eye(3), "1", "0.2", scale=size)
+    frame(ax, sp.zeros(3, 1), Q, "2", "tab:purple", scale=size)
     arrow(ax, sp.zeros(3, 1), g["f_1"], "tab:red", "f (F_1)")
     arrow(ax, sp.zeros(3, 1), g["n_1"], "tab:blue", "n (F_1)")
     arrow(ax, sp.zeros(3, 1), Q * g["f_2"], "tab:red", "Q f_2", dashed=True)
     arrow(ax, sp.zeros(3, 1), Q * g["n_2"], "tab:blue", "Q n_2", dashed=True)
-    axes3d(ax, [g["f_1"], g["n_1"], sp.ones(3, 1), -sp.ones(3, 1)])
+    axes3d(ax, [g["f_1"], g["n_1"], sp.ones(3, 1) * size, -sp.ones(3, 1) * size])
     return fig

@@ -72,7 +72,7 @@ def solve(plucker=PARAMETERS[0].default) -> Solution:
 
 def figure(s: Solution):
     """The joint axis, the gripper origin O and the closest point P* (distance d)."""
-    from ._draw import arrow, axes3d, frame, line, new_figure, point, segment
+    from ._draw import arrow, axes3d, frame, line_in_box, new_figure, point, segment
 
     pstar, d = s.answers["p_star"], s.answers["d"]
     data = s.given["[pi_L]_G"]
@@ -80,10 +80,11 @@ def figure(s: Solution):
     fig, ax = new_figure("Exercise 3.5: the joint axis and its point closest to O")
     size = float(sp.N(d)) + 1
     frame(ax, sp.zeros(3, 1), sp.eye(3) * size / 2, "G", "0.4")
-    line(ax, pstar, e, 1.5 * size, "tab:blue", "axis L")
+    pts = [sp.zeros(3, 1), pstar + size * e, pstar - size * e, sp.ones(3, 1) * size / 2]
+    line_in_box(ax, pstar, e, pts, "tab:blue", "axis L")
     arrow(ax, pstar, e, "tab:blue", "e")
     point(ax, pstar, "tab:red", "P* = e x n", "P*")
     segment(ax, sp.zeros(3, 1), pstar, color="tab:red", linestyle="--",
             label=f"d = ||n|| = {float(sp.N(d)):.4g} m")
-    axes3d(ax, [sp.zeros(3, 1), pstar + size * e, pstar - size * e, sp.ones(3, 1) * size / 2])
+    axes3d(ax, pts)
     return fig

@@ -83,7 +83,7 @@ def figure(s: Solution):
     screw axis (the points of G with a displacement of minimum magnitude)."""
     import itertools
 
-    from ._draw import axes3d, frame, line, new_figure, point, segment
+    from ._draw import axes3d, frame, line_in_box, new_figure, point, segment
 
     t = sp.Rational(1, 3)   # depth of the corner cuts, for drawing only
     corners = [sp.Matrix(c) for c in itertools.product((0, 1), repeat=3)]
@@ -105,6 +105,7 @@ def figure(s: Solution):
     frame(ax, Cp, s.answers["Q"] * sp.Rational(1, 2), "G''", "tab:purple")
     point(ax, p, "tab:blue", "P (reference pose)", "P")
     point(ax, Cp, "tab:purple", "P after the grasp (= C')", "C'")
-    line(ax, s.answers["axis_point_p0"], s.answers["e"], 3, "tab:red", "screw axis")
-    axes3d(ax, corners + [p, Cp, s.answers["axis_point_p0"]])
+    pts = corners + [p, Cp, s.answers["axis_point_p0"]]
+    line_in_box(ax, s.answers["axis_point_p0"], s.answers["e"], pts, "tab:red", "screw axis")
+    axes3d(ax, pts)
     return fig

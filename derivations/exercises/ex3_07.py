@@ -61,7 +61,7 @@ def solve(a=PARAMETERS[0].default, b=PARAMETERS[1].default, n_A=PARAMETERS[2].de
 def figure(s: Solution):
     """The axis with its unit vector e, the points A and B with the measured moments, and
     the point P* closest to the origin."""
-    from ._draw import arrow, axes3d, line, new_figure, point
+    from ._draw import arrow, axes3d, line_in_box, new_figure, point
 
     g, e, ps = s.given, s.answers["e"], s.answers["p_star"]
     fig, ax = new_figure("Exercise 3.7: the axis from two moment measurements")
@@ -71,8 +71,7 @@ def figure(s: Solution):
     arrow(ax, g["a"], g["n_A"], "tab:green", "n_A at A")
     arrow(ax, g["b"], g["n_B"], "tab:purple", "n_B at B")
     pts = [sp.zeros(3, 1), g["a"], g["b"], g["a"] + g["n_A"], g["b"] + g["n_B"], ps]
-    span = max(float(sp.N(sp.sqrt((x - ps).dot(x - ps)))) for x in pts) + 1
-    line(ax, ps, e, span, "tab:blue", "axis")
+    line_in_box(ax, ps, e, pts, "tab:blue", "axis")
     arrow(ax, ps, e, "tab:blue", "e")
     point(ax, ps, "tab:red", "P* (closest to O)", "P*")
     axes3d(ax, pts)
