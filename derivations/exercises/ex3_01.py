@@ -26,6 +26,12 @@ PARAMETERS = (
     Param("D_prime", _V([0, 2, 1]), (3,), "vertex D after", "m"),
     Param("E_prime", _V([1, 2, 0]), (3,), "vertex E after", "m"),
 )
+VARIANTS = (
+    ("a half turn about the z axis", {"A_prime": [0, 0, 0], "B_prime": [-1, 0, 0],
+                                      "D_prime": [0, -1, 0], "E_prime": [0, 0, 1]}),
+    ("a pure translation (ill-posed)", {"A_prime": [1, 0, 0], "B_prime": [2, 0, 0],
+                                        "D_prime": [1, 1, 0], "E_prime": [1, 0, 1]}),
+)
 _PLANES = {"X": "x=0", "Y": "y=0", "Z": "z=0"}
 
 

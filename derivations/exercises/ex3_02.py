@@ -19,6 +19,11 @@ PARAMETERS = tuple(Param(f"P_{k}", sp.ImmutableMatrix(v), (3,), m, "m") for k, v
     (1, 2, 3, 4), _BOOK,
     ("vertex P_1 (f_2 points to it)", "vertex P_2 (f_1 starts there)",
      "vertex P_3 (f_1 points to it)", "vertex P_4 (f_2 starts there)"), strict=True))
+VARIANTS = (
+    ("a taller tetrahedron", {"P_4": ["1/2", "sqrt(3)/6", 2]}),
+    ("a square, where the forces are opposite (ill-posed)",
+     {"P_1": [0, 0, 0], "P_2": [1, 0, 0], "P_3": [1, 1, 0], "P_4": [0, 1, 0]}),
+)
 
 
 def unit(v) -> sp.Matrix:

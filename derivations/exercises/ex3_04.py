@@ -30,6 +30,11 @@ PARAMETERS = (
     Param("f_2", sp.ImmutableMatrix([-R(4, 3), R(4, 3), R(2, 3)]), (3,),
           "force read by sensor 2, in F_2", "N"),
 )
+VARIANTS = (
+    ("noisy float readings (least squares, tol)", {"n_2": [-1.667, -3.333, 3.334],
+                                                   "f_2": [-1.333, 1.334, 0.667]}),
+    ("readings that are not compatible (ill-posed)", {"f_2": [1, 1, 1]}),
+)
 _INVARIANTS = ("||f||^2", "||n||^2", "n.f")
 _FIGURE_HINT = "the two sensor frames, F_2 drawn in F_1 by the answer Q"
 

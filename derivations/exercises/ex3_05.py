@@ -18,6 +18,10 @@ _h = sp.sqrt(2) / 2
 PARAMETERS = (Param("plucker", sp.ImmutableMatrix([-_h, 0, _h, 0, -sp.sqrt(2), 0]), (6,),
                     "estimated Plücker coordinates [e; n] of the joint axis in the gripper "
                     "frame G (e its direction, n its moment about the origin)", "-; m"),)
+VARIANTS = (
+    ("Plücker coordinates not normalised", {"plucker": [0, 0, 2, 2, 0, 0]}),
+    ("not a line, e.n != 0 (ill-posed)", {"plucker": [1, 0, 0, 1, 0, 0]}),
+)
 
 
 def solve(plucker=PARAMETERS[0].default) -> Solution:

@@ -22,6 +22,10 @@ PARAMETERS = (
     Param("p", _V([2, -1, sp.Rational(1, 4)]), (3,), "point P of the gripper in the "
           "reference pose, in F", "m"),
 )
+VARIANTS = (
+    ("P at the origin of F", {"p": [0, 0, 0]}),
+    ("a diagonal normal to the faces (ill-posed)", {"CC_prime": [1, 1, 1]}),
+)
 
 
 def solve(face_normal=PARAMETERS[0].default, CC_prime=PARAMETERS[1].default,

@@ -19,6 +19,10 @@ PARAMETERS = (
     Param("n_A", _V([0, 2, 0]), (3,), "measured moment of the axis about A", "m"),
     Param("n_B", _V([0, 1, 1]), (3,), "measured moment of the axis about B", "m"),
 )
+VARIANTS = (
+    ("the moment about the origin instead of A", {"a": [0, 0, 0], "n_A": [0, 2, 0]}),
+    ("moments of no single line (ill-posed)", {"n_B": [0, 1, 2]}),
+)
 
 
 def solve(a=PARAMETERS[0].default, b=PARAMETERS[1].default, n_A=PARAMETERS[2].default,

@@ -27,6 +27,9 @@ BOOK_SEQUENCE = "ZXZ"
 PARAMETERS = (Param("sequence", BOOK_SEQUENCE, None, "the intrinsic Euler-angle sequence "
                     "whose W is derived step by step (all twelve are tabulated)",
                     choices=tuple(SEQUENCES)),)
+VARIANTS = (
+    ("a Tait-Bryan sequence (roll, pitch, yaw)", {"sequence": "XYZ"}),
+)
 DATA_NOTE = ("the Euler-angle convention; the angles themselves stay symbolic (theta, phi, "
              "psi)")
 

@@ -15,6 +15,9 @@ STATEMENT = ("\"A rectangular prism with regular hexagonal bases whose sides are
 CITATION = "Angeles, Sec. 3.9, Exercise 3.11"
 PARAMETERS = (Param("a", A_SIDE, (), "side of the regular hexagonal bases", "m"),
               Param("h", HEIGHT, (), "height of the prism", "m"))
+VARIANTS = (
+    ("a flat hexagonal plate", {"a": "0.05", "h": "0.01"}),
+)
 
 
 def solve(a=A_SIDE, h=HEIGHT) -> Solution:

@@ -17,6 +17,10 @@ CITATION = "Angeles, Sec. 3.9, Exercise 3.12"
 PARAMETERS = (Param("a", A_SIDE, (), "side of the regular hexagonal bases", "m"),
               Param("h", HEIGHT, (), "height of the prism (at least a sqrt(3), so that the "
                     "cut leaves through a side face)", "m"))
+VARIANTS = (
+    ("a wider prism", {"a": "0.05", "h": "0.15"}),
+    ("a prism too short for the cut (ill-posed)", {"h": "0.04"}),
+)
 
 
 def _part(s: Solution, name: str, zlo, zhi, a):

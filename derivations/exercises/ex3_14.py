@@ -26,6 +26,11 @@ PARAMETERS = (
     Param("I_B", sp.ImmutableMatrix([[6, 2, 2], [2, 5, 0], [2, 0, 7]]) / 3, (3, 3),
           "the same body's centroidal inertia matrix reported by observer B", "kg m^2"),
 )
+VARIANTS = (
+    ("noisy float measurements (tol)", {"I_B": [[2.0, 0.667, 0.666], [0.667, 1.667, 0.0],
+                                                [0.666, 0.0, 2.333]]}),
+    ("different bodies (ill-posed)", {"I_B": [[1, 0, 0], [0, 2, 0], [0, 0, 4]]}),
+)
 _LAM = sp.Symbol("lambda")
 _INV = ("tr I", "the second invariant", "det I")
 

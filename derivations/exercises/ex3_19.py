@@ -32,6 +32,11 @@ PARAMETERS = (
           "the gripper point P, in F_S", "m"),
     Param("Q", _V(sp.eye(3)), (3, 3), "orientation of F_2 in F_S: [x]_S = Q [x]_2", ""),
 )
+VARIANTS = (
+    ("P 100 mm along x, F_2 turned 90 deg about z", {"d": ["0.1", 0, 0],
+                                                     "Q": [[0, -1, 0], [1, 0, 0], [0, 0, 1]]}),
+    ("a Q that is not a rotation (ill-posed)", {"Q": [[1, 1, 0], [0, 1, 0], [0, 0, 1]]}),
+)
 
 
 def default_tol(values: dict) -> tuple[sp.Rational, str]:
