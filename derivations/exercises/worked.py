@@ -19,7 +19,7 @@ import sympy as sp
 
 from rigidsym.zero import decide_zero
 
-from .worked_data import IllPosed, Param, Parameters, read_data, read_value
+from .worked_data import IllPosed, Param, Parameters, read_data, read_value  # noqa: F401
 from .worked_render import (
     render_html,
     render_latex,
@@ -41,6 +41,7 @@ __all__ = [
     "parameters",
     "solve",
     "read_value",
+    "read_data",
     "is_zero",
     "identity_check",
     "nonidentity_check",

@@ -35,7 +35,7 @@ def _float_of(v) -> str:
         return ""
     try:
         if isinstance(v, sp.MatrixBase):
-            if v.free_symbols:
+            if v.free_symbols or all(x.is_Integer for x in v):
                 return ""
             return str(sp.N(v, 6).tolist())
         v = sp.sympify(v)
@@ -95,14 +95,24 @@ def _latex(v) -> str:
     return f"$${sp.latex(v)}$$"
 
 
-def render_markdown(s: Solution) -> str:
-    """Markdown rendering (LaTeX maths) for the report."""
-    out = [f'## Exercise {s.id[2:]}: {s.title} <a id="ex-{s.id[2:]}"></a>', "",
-           f"*{s.citation}*", "",
-           f"> {s.statement}", "",
-           f"**Status:** {s.status}; **checked:** {str(s.checked).lower()}", ""]
+_REPORT_MARKS = ("[x]", "[ ]")
+
+
+def render_markdown(s: Solution, *, level: int = 2, statement: bool = True,
+                    checks: bool = True, marks: tuple[str, str] = _REPORT_MARKS) -> str:
+    """Markdown rendering (LaTeX maths) for the report.
+
+    ``level`` is the heading level; ``statement=False`` leaves out the quoted statement
+    (a notebook shows it above), ``checks=False`` the machine checks; ``marks`` prefix
+    passed and failed checks.
+    """
+    out = [f'{"#" * level} Exercise {s.id[2:]}: {s.title} <a id="ex-{s.id[2:]}"></a>', "",
+           f"*{s.citation}*", ""]
+    if statement:
+        out += [f"> {s.statement}", ""]
+    out += [f"**Status:** {s.status}; **checked:** {str(s.checked).lower()}", ""]
     if s.status == "ill-posed":
-        out[-1:] = [f"**Status:** ill-posed: {s.reason}", ""]
+        out[-2:] = [f"**Status:** ill-posed: {s.reason}", ""]
     if s.assumptions:
         out.append("**Assumptions**")
         out += [f"- {a}" for a in s.assumptions] + [""]
@@ -123,10 +133,11 @@ def render_markdown(s: Solution) -> str:
         out += [f"- `{k}` = {_latex(v)}" + (f" ≈ `{f}`" if f else ""), ""]
     if s.extra:
         out += [s.extra, ""]
-    out.append("**Machine checks**")
-    out.append("")
-    out += [f"- [{'x' if c.passed else ' '}] {c.name}: {c.detail}" for c in s.checks]
-    out.append("")
+    if checks:
+        out += ["**Machine checks**", ""]
+        out += [f"- {marks[0] if c.passed else marks[1]} {c.name}: {c.detail}"
+                for c in s.checks]
+        out.append("")
     return "\n".join(out)
 
 
@@ -144,15 +155,36 @@ def render_html(s: Solution) -> str:
     from rigidsym.mathml import latex_to_mathml
 
     def render_math(content: str, opts: dict) -> str:
+        display = opts.get("display_mode", False)
         try:
-            return latex_to_mathml(content, display=opts.get("display_mode", False))
+            m = latex_to_mathml(content, display=display)
         except ValueError:
             return f"<code>{html.escape(content)}</code>"
+        # inline styles survive a notebook's sanitiser: a font with a MATH table (so that
+        # brackets stretch), and block formulas beside their label, not centred
+        return m.replace("<math ", f'<math style="{_MATH_STYLE}{_BLOCK_STYLE if display else ""}" ',
+                         1)
 
     md = MarkdownIt("commonmark", {"html": True}).enable("table")
     md.use(dollarmath_plugin, double_inline=True, renderer=render_math)
-    return f'<div class="rigidsym-solution">{md.render(render_markdown(s))}</div>'
+    body = md.render(render_markdown(s, level=3, statement=False, checks=False))
+    return f'<div class="rigidsym-solution">{body}{_checks_html(s)}</div>'
 
+
+def _checks_html(s: Solution) -> str:
+    """The machine checks folded under a one-line verdict (``<details>``)."""
+    if not s.checks:
+        return ""
+    n = sum(c.passed for c in s.checks)
+    items = "".join(f"<li>{'✓' if c.passed else '✗ FAILED:'} {html.escape(c.name)}: "
+                    f"<small>{html.escape(c.detail)}</small></li>" for c in s.checks)
+    return (f"<details><summary><b>Machine checks</b>: {n} of {len(s.checks)} passed"
+            f"</summary><ul>{items}</ul></details>")
+
+
+_MATH_STYLE = ("font-family: math, 'STIX Two Math', 'Latin Modern Math', 'STIX Math', "
+               "'DejaVu Math TeX Gyre', serif;")
+_BLOCK_STYLE = " display: inline-block; margin: 0.2em 0.6em; vertical-align: middle;"
 
 _TEX_SPECIAL = {"\\": r"\textbackslash{}", "&": r"\&", "%": r"\%", "$": r"\$", "#": r"\#",
                 "_": r"\_", "{": r"\{", "}": r"\}", "~": r"\textasciitilde{}",
