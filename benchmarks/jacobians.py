@@ -32,6 +32,7 @@ import run as R  # noqa: E402  (the benchmark helpers of benchmarks/run.py)
 
 from rigidsym import kernels as K  # noqa: E402
 from rigidsym.codegen.jacobians import jacobian_name, with_jacobians  # noqa: E402
+from rigidsym.kernels import _state
 
 #: the kernels issue 12 asks for (euler_rate_matrix: one of its 24 sequence/frame kernels)
 KERNELS = ["rotation_from_natural_invariants", "rotation_from_euler_rodrigues",
@@ -78,7 +79,7 @@ def measure(names: list[str], Ns: list[int], rounds: int) -> list[dict]:
                     cells[col] = R.timeit(lambda *a, _f=f, _o=outs: _f(*a, out=_o), xs, N,
                                           rounds)
                 row = {"name": name, "N": N, "trig": trig, "cells": cells,
-                       "ops": (K._meta()[name]["ops"], K._meta()[jname]["ops"],
+                       "ops": (_state.meta()[name]["ops"], _state.meta()[jname]["ops"],
                                funcs["sympy-cse C (same derivatives)"][1].ops),
                        "bytes": _bytes(jname)}
                 rows.append(row)
@@ -134,7 +135,7 @@ def table(rows: list[dict], Ns: list[int]) -> list[str]:
 
 def write_section(path: Path, lines: list[str]) -> None:
     """Replace (or append) the text between the markers of ``path``, atomically."""
-    from rigidsym.io import write_atomic
+    from rigidsym._io import write_atomic
 
     old = path.read_text(encoding="utf-8") if path.exists() else ""
     block = "\n".join([MARK, *lines, END])

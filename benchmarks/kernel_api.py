@@ -73,9 +73,10 @@ def _time(f, budget: float = 0.02) -> float:
 
 def measure(rounds: int, batch: bool = True) -> dict:
     from rigidsym import kernels as K
+    from rigidsym.kernels import _state
 
     assert K.use_backend("c") == "c", "C backend unavailable"
-    meta = {k: m for k, m in K._meta().items() if m["public"]}
+    meta = {k: m for k, m in _state.meta().items() if m["public"]}
     rng = np.random.default_rng(7)
     calls, batches = {}, {}
 
@@ -99,11 +100,11 @@ def measure(rounds: int, batch: bool = True) -> dict:
 def measure_ab(old_dir: Path, rounds: int) -> dict:
     """C batch at N = 1e6, old and new generated C loaded in this one process (both built
     by this checkout's cbuild, same flags) and timed alternately: fair on a loaded machine."""
-    from rigidsym import kernels as K
-    from rigidsym.codegen.cbuild import load
+    from rigidsym.kernels import _state
+    from rigidsym.kernels._build import load
 
-    libs = {"old": load(gdir=old_dir), "new": K._builtin_space().c_lib()}
-    meta = {k: m for k, m in K._meta().items() if m["public"]}
+    libs = {"old": load(gdir=old_dir), "new": _state.builtin().c_lib()}
+    meta = {k: m for k, m in _state.meta().items() if m["public"]}
     rng = np.random.default_rng(7)
     n = 1_000_000
     res: dict = {"old": {}, "new": {}}
@@ -197,7 +198,7 @@ def main(argv=None) -> int:
             body = body[:a] + text + body[b:]
         else:
             body = body.rstrip("\n") + "\n\n" + text
-        from rigidsym.io import write_atomic
+        from rigidsym._io import write_atomic
         write_atomic(path, body)
         print(text)
     return 0

@@ -4,7 +4,7 @@
 
 ``setup(ctx)`` compiles ``generated/c/*.c`` with the harness's compiler and flags into
 ``ctx["build_dir"]`` (plain shared library, no cffi needed in the harness's environment), the
-same way as ``rigidsym build-c``: the flags of ``rigidsym.codegen.cbuild`` (``CFLAGS`` added to
+same way as ``rigidsym build-c``: the flags of ``rigidsym.kernels._build`` (``CFLAGS`` added to
 the harness's ``-O3 -march=native``) and its build variants, libmvec's vectorised sin/cos
 first (``MVEC_FLAGS``, ``-lmvec``; glibc only, ``RIGIDSYM_LIBMVEC=0`` turns it off), the plain
 build as the fallback; ``VARIANT`` names the one built;
@@ -31,7 +31,7 @@ ROOT = Path(__file__).resolve().parents[1]
 if str(ROOT / "src") not in sys.path:
     sys.path.insert(0, str(ROOT / "src"))
 
-from rigidsym.codegen.cbuild import CFLAGS, MVEC_FLAGS, build_variants  # noqa: E402
+from rigidsym.kernels._build import CFLAGS, MVEC_FLAGS, build_variants  # noqa: E402
 
 NAME = "rigidsym-c"
 PER_SAMPLE_LOOP = False

@@ -36,6 +36,7 @@ from rigidsym.derivations.kernels_spec import KERNELS  # noqa: E402
 from rigidsym import kernels as K  # noqa: E402
 from rigidsym.codegen.generator import _flatten  # noqa: E402
 from rigidsym.codegen.spec import flat_symbols, input_symbols  # noqa: E402
+from rigidsym.kernels import _state  # noqa: E402
 
 PEERS = ROOT.parent / "shared" / "peers-bench" / "peerbench" / "kernels.py"
 #: benchmark id -> our kernel (K4 without the Plücker array, as the peers compute it)
@@ -112,7 +113,7 @@ def col_floor(name: str, build: Path):
     outputs can go below it by much; a kernel at this floor is memory-bound."""
     import cffi
 
-    from rigidsym.codegen import cbuild
+    from rigidsym.kernels import _build as cbuild
 
     ffi = cffi.FFI()
     ffi.cdef("uint64_t floor_read(const double *x, int64_t len);"
@@ -165,7 +166,7 @@ def col_sympy_c(name: str, build: Path):
     differ only in the code (not in call overhead or compiler flags)."""
     import cffi
 
-    from rigidsym.codegen import cbuild
+    from rigidsym.kernels import _build as cbuild
 
     k, flat, exprs = _declared(name)
     temps, red = sp.cse(exprs)
@@ -204,7 +205,7 @@ def col_sympy_c(name: str, build: Path):
 
 def _mvec() -> bool:
     """Whether the generated C was built in its libmvec variant."""
-    from rigidsym.codegen import cbuild
+    from rigidsym.kernels import _build as cbuild
     return cbuild.MVEC_FLAGS[0] in cbuild.build_variants(cbuild._flags())[0][0]
 
 
@@ -298,7 +299,7 @@ def main(argv=None) -> int:
     Ns = [1000, 100000] if args.quick else [1000, 100000, 1000000]
     rng = np.random.default_rng(1)
     rows = []
-    meta = K._meta()
+    meta = _state.meta()
     with tempfile.TemporaryDirectory() as tmp:
         build = Path(tmp)
         for kid in args.kernels.split(","):

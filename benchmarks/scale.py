@@ -30,9 +30,9 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 from run import BENCH, SPECS, inputs  # noqa: E402
 
-from rigidsym import _scale  # noqa: E402
 from rigidsym import kernels as K  # noqa: E402
-from rigidsym.io import write_atomic  # noqa: E402
+from rigidsym._io import write_atomic  # noqa: E402
+from rigidsym.kernels import _scale, _state  # noqa: E402
 
 RESULTS = ROOT / "benchmarks" / "RESULTS.md"
 PEERS = ROOT.parent / "shared" / "peers-bench"
@@ -93,7 +93,7 @@ uint64_t floor_io(int64_t n, int threads, int nin, const char **in, const int64_
 def _floor_lib(build: Path):
     import cffi
 
-    from rigidsym.codegen import cbuild
+    from rigidsym.kernels import _build as cbuild
 
     ffi = cffi.FFI()
     ffi.cdef("uint64_t floor_io(int64_t n, int threads, int nin, const char **in, "
@@ -170,7 +170,7 @@ def table_threads(rounds: int, sizes: list[int]) -> list[str]:
 def table_threshold(rounds: int) -> list[str]:
     """1 against 2 threads around MIN_PARALLEL, through the C entry point itself (the checked
     API and batch_function run one thread below it)."""
-    ffi, lib = K._builtin_space().c_lib()
+    ffi, lib = _state.builtin().c_lib()
     lines = ["| kernel | " + " | ".join(f"N = {n}" for n in _THRESHOLD_N) + " |",
              "|---|" + "---|" * len(_THRESHOLD_N)]
     for kid in ("K1", "K2", "K5"):
@@ -236,7 +236,7 @@ def _dask_pipeline(name: str, n: int, chunk: int):
         else:
             v = rs.standard_normal(shape, chunks=chunks)
         args.append(v)
-    res = K._call(name, tuple(args))
+    res = _state.call(name, tuple(args))
     res = res if isinstance(res, tuple) else (res,)
     return sum(r.sum() for r in res)
 
@@ -269,7 +269,7 @@ def table_latency(rounds: int) -> list[str]:
     lines = ["| kernel | N = 1 call (µs), C | NumPy |", "|---|---|---|"]
     rng = np.random.default_rng(0)
     for name in K.KERNEL_NAMES:
-        meta = K._meta()[name]
+        meta = _state.meta()[name]
         xs = []
         for a in meta["args"]:
             if a["kind"] == "unit":
@@ -316,7 +316,7 @@ def main(argv=None) -> int:
     skip = set(filter(None, args.skip.split(",")))
     rounds = 3 if args.quick else 7
     assert K.use_backend("c") == "c", "the benchmarks need the C backend"
-    from rigidsym.codegen import cbuild
+    from rigidsym.kernels import _build as cbuild
 
     load0 = os.getloadavg()
     body = ["## Kernels at scale (issue 14)", "",

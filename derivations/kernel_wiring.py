@@ -34,7 +34,7 @@ E = Arg("e", (3,), "unit", "unit vector along the rotation axis")
 PHI = Arg("phi", (), "angle", "rotation angle [rad]")
 OMEGA = Arg("omega", (3,), "any", "angular velocity [rad/s]")
 Q_ARG = Arg("Q", (3, 3), "rotation", "rotation matrix (proper orthogonal)")
-_PR = "rigidsym.primitives."
+_PR = "rigidsym.algebra.primitives."
 
 # ----------------------------------------------------------------------------------------
 # Sections 3.2-3.8: kernels composed of the sections' formula functions

@@ -3,7 +3,7 @@
 This module binds mathematics (it says which formula functions a kernel composes and how
 their arguments are wired), so it lives in ``derivations/``; it declares no equation and is
 not auto-imported as a section. It never restates a formula: every output is the return
-value of a formula function from :mod:`rigidsym.primitives` or a ``derivations.sec3_*``
+value of a formula function from :mod:`rigidsym.algebra.primitives` or a ``derivations.sec3_*``
 module. A kernel whose formula function is not importable is skipped by the generator with
 a note (see :func:`missing_sources`).
 
@@ -18,7 +18,7 @@ from functools import partial
 import sympy as sp
 
 from rigidsym.codegen.spec import Arg, Branch, Kernel, Out
-from rigidsym.primitives import rotation_from_natural_invariants, trace, vect
+from rigidsym.declare import rotation_from_natural_invariants, trace, vect
 
 from .kernel_wiring import (
     _PR,

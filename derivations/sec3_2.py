@@ -7,8 +7,7 @@ from __future__ import annotations
 
 import sympy as sp
 
-from rigidsym.registry import Rel, Statement, equation
-from rigidsym.symbols import scalar
+from rigidsym.declare import Rel, Statement, equation, scalar
 
 from .common import I3, Bk, Det, displacement_model, vec
 from .sec3_2_1 import pitch_of_displacement, screw_axis_point

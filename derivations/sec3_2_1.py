@@ -16,9 +16,18 @@ from __future__ import annotations
 
 import sympy as sp
 
-from rigidsym.primitives import as_vector, block, cpm, rotation_from_natural_invariants
-from rigidsym.registry import Rel, Statement, equation
-from rigidsym.symbols import scalar, unit_vector, vector
+from rigidsym.declare import (
+    Rel,
+    Statement,
+    as_vector,
+    block,
+    cpm,
+    equation,
+    rotation_from_natural_invariants,
+    scalar,
+    unit_vector,
+    vector,
+)
 
 from .common import I3, MS, Bk, Det, displacement_model
 

@@ -14,9 +14,17 @@ from __future__ import annotations
 
 import sympy as sp
 
-from rigidsym.primitives import as_vector, block, cpm
-from rigidsym.registry import Rel, Statement, equation
-from rigidsym.symbols import scalar, unit_vector, vector
+from rigidsym.declare import (
+    Rel,
+    Statement,
+    as_vector,
+    block,
+    cpm,
+    equation,
+    scalar,
+    unit_vector,
+    vector,
+)
 
 from .common import I3, MS, O3, Blocks, Cross, Det, mat, vec
 

@@ -13,9 +13,15 @@ from __future__ import annotations
 
 import sympy as sp
 
-from rigidsym.primitives import euler_rodrigues_parameters, linear_invariants
-from rigidsym.registry import Rel, Statement, equation
-from rigidsym.symbols import rotation, vector
+from rigidsym.declare import (
+    Rel,
+    Statement,
+    equation,
+    euler_rodrigues_parameters,
+    linear_invariants,
+    rotation,
+    vector,
+)
 
 from .common import MS, Bk, Blocks, Cross, displacement_model, mat, vec
 

@@ -16,9 +16,17 @@ from functools import cache
 
 import sympy as sp
 
-from rigidsym.primitives import rotation_from_natural_invariants, vect
-from rigidsym.registry import Rel, Statement, equation
-from rigidsym.symbols import TIME, angle, unit_vector, vector
+from rigidsym.declare import (
+    TIME,
+    Rel,
+    Statement,
+    angle,
+    equation,
+    rotation_from_natural_invariants,
+    unit_vector,
+    vect,
+    vector,
+)
 
 from .common import O3, Cross, Mt, vec
 

@@ -27,9 +27,17 @@ from functools import cache
 
 import sympy as sp
 
-from rigidsym.primitives import cpm, rotation_from_quaternion, vect
-from rigidsym.registry import Rel, Statement, equation
-from rigidsym.symbols import TIME, scalar, vector
+from rigidsym.declare import (
+    TIME,
+    Rel,
+    Statement,
+    cpm,
+    equation,
+    rotation_from_quaternion,
+    scalar,
+    vect,
+    vector,
+)
 
 from .common import Mt, motion_model, vec
 

@@ -22,9 +22,7 @@ from functools import cache
 
 import sympy as sp
 
-from rigidsym.primitives import cpm
-from rigidsym.registry import Rel, Statement, equation
-from rigidsym.symbols import scalar
+from rigidsym.declare import Rel, Statement, cpm, equation, scalar
 
 from .common import I3, MS, Mt, vec
 from .sec3_4 import cross, instant_motion_model, isa_point_nearest, isa_velocity

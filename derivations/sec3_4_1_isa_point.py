@@ -16,7 +16,7 @@ from __future__ import annotations
 
 import sympy as sp
 
-from rigidsym.registry import Rel, Statement, equation
+from rigidsym.declare import Rel, Statement, equation
 
 from .common import I3, MS, Mt
 from .sec3_4 import cross, isa_point_nearest, velocity_field

@@ -23,8 +23,7 @@ from functools import cache
 
 import sympy as sp
 
-from rigidsym.primitives import block, cpm, eye3, trace, vect
-from rigidsym.registry import Rel, Statement, equation
+from rigidsym.declare import Rel, Statement, block, cpm, equation, eye3, trace, vect
 
 from .common import I3, MS, O3, Mt, motion_model
 
@@ -310,7 +309,7 @@ ZERO3 = sp.ZeroMatrix(3, 1)
 @cache
 def _static_model() -> dict:
     """A fixed line: unit ``e``, a point ``p`` on it, a pitch (free); ``P = CPM(p)``."""
-    from rigidsym.symbols import unit_vector, vector
+    from rigidsym.declare import unit_vector, vector
     ev, pv = unit_vector("e"), vector("p")
     return {e: _im(ev), p: _im(pv), P_cpm: _im(cpm(pv)), E: _im(cpm(ev)),
             screw: _im(block([[ev], [pv.cross(ev) + pitch * ev]]))}
@@ -320,7 +319,7 @@ def _static_model() -> dict:
 def _translation_model() -> dict:
     """A pure translation: ``Q`` constant, so ``Omega = Qdot Q^T = O`` and ``omega = 0``;
     ``v = sigma e`` with ``e`` unit and ``sigma = ||v|| >= 0`` (so ``norm_v -> sigma``)."""
-    from rigidsym.symbols import scalar, unit_vector
+    from rigidsym.declare import scalar, unit_vector
     ev, sigma = unit_vector("e"), scalar("sec342_sigma")
     om = vect(sp.zeros(3) * eye3())
     vv = sigma * ev
@@ -390,7 +389,7 @@ def invariant_arrays() -> Statement:
     ``Q`` of (2.49): ``lambda = [vect(Q); (tr Q - 1)/2]``; ``eta`` rebuilds ``Q`` by the
     Euler-Rodrigues form; ``lambda`` and ``eta`` are unit 4-arrays.
     """
-    from rigidsym.primitives import rotation_from_euler_rodrigues
+    from rigidsym.declare import rotation_from_euler_rodrigues
     m = rates_model()
     Qv, ev, ph = sp.Matrix(m[Q]), sp.Matrix(m[e]), m[phi]
 

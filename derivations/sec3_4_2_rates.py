@@ -26,9 +26,17 @@ from functools import cache
 
 import sympy as sp
 
-from rigidsym.primitives import block, cpm, rotation_from_quaternion, vect
-from rigidsym.registry import Rel, Statement, equation
-from rigidsym.symbols import scalar, vector
+from rigidsym.declare import (
+    Rel,
+    Statement,
+    block,
+    cpm,
+    equation,
+    rotation_from_quaternion,
+    scalar,
+    vect,
+    vector,
+)
 
 from .common import I3, MS
 from .sec3_4_2 import (

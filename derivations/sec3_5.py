@@ -16,9 +16,20 @@ from functools import cache
 
 import sympy as sp
 
-from rigidsym.primitives import as_vector, block, cpm, vect
-from rigidsym.registry import Rel, Statement, equation
-from rigidsym.symbols import TIME, angle, matrix, unit_vector, vector
+from rigidsym.declare import (
+    TIME,
+    Rel,
+    Statement,
+    angle,
+    as_vector,
+    block,
+    cpm,
+    equation,
+    matrix,
+    unit_vector,
+    vect,
+    vector,
+)
 
 from .common import I3, MS, O3, Mt, mat, motion_model, vec
 from .sec3_4_2 import S_matrix, T_matrix

@@ -10,8 +10,7 @@ from __future__ import annotations
 
 import sympy as sp
 
-from rigidsym.registry import Rel, Statement, equation
-from rigidsym.symbols import angle
+from rigidsym.declare import Rel, Statement, angle, equation
 
 from .common import I3, Mt
 from .sec3_5_rates import (

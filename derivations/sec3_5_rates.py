@@ -22,8 +22,15 @@ from functools import cache
 
 import sympy as sp
 
-from rigidsym.primitives import block, cpm, rotation_from_natural_invariants
-from rigidsym.symbols import TIME, angle, unit_vector, vector
+from rigidsym.declare import (
+    TIME,
+    angle,
+    block,
+    cpm,
+    rotation_from_natural_invariants,
+    unit_vector,
+    vector,
+)
 
 from .common import I3, MS, Mt, mat, motion_model, vec
 from .sec3_4_2 import H_matrix, H_tilde, L_matrix, L_tilde, N_matrix, N_tilde

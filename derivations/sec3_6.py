@@ -21,9 +21,7 @@ from __future__ import annotations
 
 import sympy as sp
 
-from rigidsym.primitives import as_vector, cpm, vect
-from rigidsym.registry import Rel, Statement, equation
-from rigidsym.symbols import TIME, rotation, vector
+from rigidsym.declare import TIME, Rel, Statement, as_vector, cpm, equation, rotation, vect, vector
 
 from .common import mat, vec
 

@@ -24,9 +24,17 @@ from __future__ import annotations
 
 import sympy as sp
 
-from rigidsym.primitives import as_vector, block, cpm
-from rigidsym.registry import Rel, Statement, equation
-from rigidsym.symbols import scalar, unit_vector, vector
+from rigidsym.declare import (
+    Rel,
+    Statement,
+    as_vector,
+    block,
+    cpm,
+    equation,
+    scalar,
+    unit_vector,
+    vector,
+)
 
 from .common import MS, mat, vec
 

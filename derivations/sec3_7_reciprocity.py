@@ -10,9 +10,7 @@ from __future__ import annotations
 
 import sympy as sp
 
-from rigidsym.primitives import block, cpm
-from rigidsym.registry import Rel, Statement, equation
-from rigidsym.symbols import TIME, scalar, unit_vector, vector
+from rigidsym.declare import TIME, Rel, Statement, block, cpm, equation, scalar, unit_vector, vector
 
 from .common import I3, MS, O3, Mt, motion_model
 from .sec3_4_2 import twist_transfer_matrix

@@ -47,8 +47,7 @@ from functools import cache
 
 import sympy as sp
 
-from rigidsym.primitives import as_vector, block, cpm, vect
-from rigidsym.symbols import TIME, rotation, scalar, vector
+from rigidsym.declare import TIME, as_vector, block, cpm, rotation, scalar, vect, vector
 
 from .common import mat, vec
 

@@ -10,9 +10,7 @@ from __future__ import annotations
 
 import sympy as sp
 
-from rigidsym.primitives import cpm
-from rigidsym.registry import Rel, Statement, equation
-from rigidsym.symbols import vector
+from rigidsym.declare import Rel, Statement, cpm, equation, vector
 
 from .common import I3
 from .sec3_8 import (

@@ -19,9 +19,7 @@ from functools import cache
 
 import sympy as sp
 
-from rigidsym.primitives import block, cpm
-from rigidsym.registry import Rel, Statement, equation
-from rigidsym.symbols import TIME, vector
+from rigidsym.declare import TIME, Rel, Statement, block, cpm, equation, vector
 
 from .common import I3, MS, O3
 from .sec3_8 import (

@@ -12,7 +12,6 @@ that :func:`rigidsym.kernels.load` binds to this module. Import them through
 
 from __future__ import annotations
 
-import sys
 from typing import Any, Literal
 
 import numpy as np
@@ -61,9 +60,8 @@ OnSingular = Literal["raise", "nan"]
 
 def _call(name: str, args: tuple, **keywords: Any) -> Any:
     space = _SPACE
-    if space is None:       # imported directly (e.g. when unpickling a kernel): bind now
-        from rigidsym.kernels import _bind_module
-        space = _bind_module(sys.modules[__name__])
+    if space is None:  # bound by rigidsym.kernels.load(), which also pickles these kernels
+        raise RuntimeError(f"{__name__}: load it with rigidsym.kernels.load(), not directly")
     return space.call(name, args, **keywords)
 
 
@@ -817,7 +815,7 @@ def natural_invariants_from_rotation(
 
         phi = atan2(||vect(Q)||, (tr Q - 1)/2), e = vect(Q)/||vect(Q)||; for cos phi < -1/2, e from the symmetric part of Q (never acos)
 
-    Book: Eq. (2.49), (3.95); composed of rigidsym.primitives.vect, rigidsym.primitives.trace.
+    Book: Eq. (2.49), (3.95); composed of rigidsym.algebra.primitives.vect, rigidsym.algebra.primitives.trace.
 
     Args:
         Q: array-like (..., 3, 3), proper orthogonal; rotation matrix (proper orthogonal)
@@ -1040,7 +1038,7 @@ def rotation_from_euler_rodrigues(
 
         Q = (r0^2 - r.r) 1 + 2 r r^T + 2 r0 CPM(r)
 
-    Book: Eq. (2.3); composed of rigidsym.primitives.rotation_from_euler_rodrigues.
+    Book: Eq. (2.3); composed of rigidsym.algebra.primitives.rotation_from_euler_rodrigues.
 
     Args:
         eta: array-like (..., 4), unit; Euler-Rodrigues parameters [r1, r2, r3, r0]
@@ -1079,7 +1077,7 @@ def rotation_from_natural_invariants(
 
         Q = e e^T + cos(phi) (1 - e e^T) + sin(phi) CPM(e)
 
-    Book: Eq. (2.49); composed of rigidsym.primitives.rotation_from_natural_invariants.
+    Book: Eq. (2.49); composed of rigidsym.algebra.primitives.rotation_from_natural_invariants.
 
     Args:
         e: array-like (..., 3), unit; unit vector along the rotation axis
@@ -1121,7 +1119,7 @@ def screw_axis_point(
 
         p0 = (Q - 1)^T (Q a - a') / (2 (1 - cos phi)), Q from (e, phi) by (2.49)
 
-    Book: Eq. (3.18), (2.49); composed of rigidsym.primitives.rotation_from_natural_invariants, rigidsym.derivations.sec3_2_1.screw_axis_point.
+    Book: Eq. (3.18), (2.49); composed of rigidsym.algebra.primitives.rotation_from_natural_invariants, rigidsym.derivations.sec3_2_1.screw_axis_point.
 
     Args:
         e: array-like (..., 3), unit; unit vector along the rotation axis
@@ -1168,7 +1166,7 @@ def screw_of_displacement(
 
         (e, phi) from Q as natural_invariants_from_rotation; p0 = (Q - 1)^T (Q a - a') / ((1 - Q_00) + (1 - Q_11) + (1 - Q_22)); pitch = e^T (a' - a) / phi; kappa = [e; p0 x e]
 
-    Book: Eq. (3.7), (3.18), (3.23); composed of rigidsym.primitives.vect, rigidsym.primitives.trace, rigidsym.derivations.sec3_2_1.screw_axis_point, rigidsym.derivations.sec3_2_1.pitch_of_displacement, rigidsym.derivations.sec3_2_2.plucker_from_points.
+    Book: Eq. (3.7), (3.18), (3.23); composed of rigidsym.algebra.primitives.vect, rigidsym.algebra.primitives.trace, rigidsym.derivations.sec3_2_1.screw_axis_point, rigidsym.derivations.sec3_2_1.pitch_of_displacement, rigidsym.derivations.sec3_2_2.plucker_from_points.
 
     Args:
         Q: array-like (..., 3, 3), proper orthogonal; rotation matrix (proper orthogonal)

@@ -10,7 +10,7 @@ from pathlib import Path
 import pytest
 
 from rigidsym import kernels as K
-from rigidsym.registry import load_all
+from rigidsym.checking.registry import load_all
 
 CHAPTER = Path(__file__).resolve().parents[2] / "shared" / "book" / "angeles-chapter3.md"
 

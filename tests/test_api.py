@@ -5,7 +5,7 @@ from __future__ import annotations
 import pytest
 
 import rigidsym
-from rigidsym.registry import REGISTRY, VERDICTS, BadInput, load_all
+from rigidsym.checking.registry import REGISTRY, VERDICTS, BadInput, load_all
 
 load_all()
 
@@ -107,7 +107,7 @@ def test_a_notebook_declaration_run_twice_replaces_itself():
 
 
 def test_rigid_motion_keeps_its_constraints():
-    from rigidsym.zero import decide_zero
+    from rigidsym.zero.decide import decide_zero
 
     m = rigidsym.rigid_motion()
     assert decide_zero(list(m.Omega + m.Omega.T)).zero is True

@@ -8,9 +8,9 @@ import json
 import pytest
 import sympy as sp
 
-from rigidsym import registry
+from rigidsym.checking import registry
+from rigidsym.checking.registry import REGISTRY, Rel, load_all
 from rigidsym.cli import main
-from rigidsym.registry import REGISTRY, Rel, load_all
 
 load_all()
 

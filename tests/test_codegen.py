@@ -66,7 +66,7 @@ def test_missing_source_is_skipped_with_a_note():
 
 
 def test_header_and_files_of_a_kernel():
-    k = _fake(("rigidsym.primitives.cpm",), lambda v: {"w": v.cross(v + sp.ones(3, 1))})
+    k = _fake(("rigidsym.algebra.primitives.cpm",), lambda v: {"w": v.cross(v + sp.ones(3, 1))})
     res = generate([k])
     c = res.files["c/fake_kernel.h"]
     for item in ("do not modify by hand", "math hash: sha256:", "operations:",

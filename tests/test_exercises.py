@@ -11,8 +11,8 @@ import json
 import pytest
 import sympy as sp
 from rigidsym.derivations.exercises import EXERCISE_IDS, normalise_id, solve
-from rigidsym.derivations.exercises.worked import render_markdown, render_text
 
+from rigidsym.checking.worked import render_markdown, render_text
 from rigidsym.cli import main
 
 
@@ -61,7 +61,7 @@ def test_cli_single_and_bad_input(capsys):
 
 
 def test_report_hook(tmp_path):
-    from rigidsym.derivations.exercises.cli import write_report
+    from rigidsym.cli.exercise import write_report
     write_report(tmp_path)
     text = (tmp_path / "exercises.md").read_text()
     assert "## Exercise 3.10" in text and "| ZXZ |" in text

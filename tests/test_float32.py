@@ -15,8 +15,8 @@ import numpy as np
 import pytest
 from test_kernels import ADV_PHI, AVAILABLE, EULER, PUBLIC, inputs, ref_eval, rel_err
 
-from rigidsym import _scale
 from rigidsym import kernels as K
+from rigidsym.kernels import _scale
 
 ULP32 = float(np.finfo(np.float32).eps)         # 2**-23
 #: random points: measured at most 0.49 ulp of float32 (float64 inside, one rounding), far

@@ -8,6 +8,7 @@ import numpy as np
 import pytest
 
 from rigidsym import kernels as K
+from rigidsym.kernels import _state
 
 E = np.array([0.0, 0.6, 0.8])
 
@@ -110,8 +111,8 @@ def test_fallback_warns_once(monkeypatch):
     def boom(*a, **k):
         raise OSError("no compiler")
     monkeypatch.setattr(core, "_STATE", {"backend": None, "warned": False})
-    monkeypatch.setattr(K._builtin_space(), "_clib", None)
-    monkeypatch.setattr("rigidsym.codegen.cbuild.load", boom)
+    monkeypatch.setattr(_state.builtin(), "_clib", None)
+    monkeypatch.setattr("rigidsym.kernels._build.load", boom)
     with pytest.warns(RuntimeWarning, match="C backend unavailable"):
         assert K.use_backend("c") == "numpy"
     with warnings.catch_warnings():
@@ -156,7 +157,7 @@ def test_c_batch_counts_overflow_rows_across_blocks(name, arg, scale, backend):
     those rows, their number returned; rows in several blocks and in a partial last block."""
     if backend != "c":
         pytest.skip("C batch loop")
-    meta = K._meta()[name]
+    meta = _state.meta()[name]
     n = 1000
     bad = [0, 63, 64, 255, 256, 700, 999]
     flat = []

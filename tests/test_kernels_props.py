@@ -28,6 +28,7 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from rigidsym import kernels as K
+from rigidsym.kernels import _state
 
 SEQS = ("ZXZ", "XYX", "YZY", "ZYZ", "XZX", "YXY", "XYZ", "YZX", "ZXY", "XZY", "ZYX", "YXZ")
 
@@ -40,7 +41,7 @@ def _table() -> dict:
     """name -> (call(**inputs), [argument specs]) for every public kernel."""
     out = {}
     for name in K.KERNEL_NAMES:
-        specs = [_spec(a["name"], a["shape"], a["kind"]) for a in K._meta()[name]["args"]]
+        specs = [_spec(a["name"], a["shape"], a["kind"]) for a in _state.meta()[name]["args"]]
         out[name] = (getattr(K, name), specs)
     # the Euler-angle kernels select a generated variant by sequence and frame
     out["euler_rate_matrix"] = (

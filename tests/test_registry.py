@@ -6,8 +6,8 @@ import os
 
 import pytest
 
-from rigidsym.cli import run_checks
-from rigidsym.registry import REGISTRY, load_all
+from rigidsym.checking.registry import REGISTRY, load_all
+from rigidsym.checking.runner import run_checks
 
 load_all()
 IDS = sorted(REGISTRY)
@@ -51,8 +51,9 @@ def test_committed_chapter_report_is_fresh(results):
     (the report is deterministic: no timings, tiny residuals bounded)."""
     from pathlib import Path
 
-    from rigidsym.registry import select
-    from rigidsym.report import to_json, to_markdown
+    from rigidsym.checking.registry import select
+    from rigidsym.report.markdown import to_markdown
+    from rigidsym.report.record import to_json
 
     folder = Path(__file__).resolve().parents[1] / "generated" / "report"
     if not (folder / "chapter3.md").exists():
@@ -62,6 +63,6 @@ def test_committed_chapter_report_is_fresh(results):
         "generated/report/chapter3.md is stale: run `rigidsym report`"
     assert (folder / "chapter3.json").read_text(encoding="utf-8") == \
         to_json(rows, timings=False), "generated/report/chapter3.json is stale"
-    from rigidsym.report_html import to_html
+    from rigidsym.report.html import to_html
     assert (folder / "chapter3.html").read_text(encoding="utf-8") == to_html(rows), \
         "generated/report/chapter3.html is stale: run `rigidsym report`"

@@ -12,8 +12,9 @@ from pathlib import Path
 import pytest
 
 from rigidsym import cli
-from rigidsym.checker import check
-from rigidsym.registry import load_all
+from rigidsym.checking.checker import check
+from rigidsym.checking.registry import load_all
+from rigidsym.cli import report as cli_report
 
 load_all()
 ROOT = Path(__file__).resolve().parents[1]
@@ -27,19 +28,18 @@ def few():
 
 
 def test_default_out_dir(tmp_path):
-    assert cli.default_report_dir(tmp_path) == tmp_path / "rigidsym-report"
+    assert cli_report.default_report_dir(tmp_path) == tmp_path / "rigidsym-report"
     (tmp_path / "pyproject.toml").write_text('[project]\nname = "other"\n')
-    assert cli.default_report_dir(tmp_path) == tmp_path / "rigidsym-report"
+    assert cli_report.default_report_dir(tmp_path) == tmp_path / "rigidsym-report"
     (tmp_path / "pyproject.toml").write_text('[project]\nname = "rigidsym"\n')
-    assert cli.default_report_dir(tmp_path) == tmp_path / "generated" / "report"
-    assert cli.default_report_dir(ROOT) == COMMITTED
+    assert cli_report.default_report_dir(tmp_path) == tmp_path / "generated" / "report"
+    assert cli_report.default_report_dir(ROOT) == COMMITTED
 
 
 def test_report_command_says_where_and_writes_0644(tmp_path, monkeypatch, capsys, few):
-    cli._load_extensions()  # so that importing them later cannot add a hook to the patch
     monkeypatch.chdir(tmp_path)  # not a source tree: ./rigidsym-report/
-    monkeypatch.setattr(cli, "run_checks", lambda ids, jobs=1, progress=True: few)
-    monkeypatch.setattr(cli, "REPORT_HOOKS", [])
+    monkeypatch.setattr(cli_report, "run_checks", lambda ids, jobs=1, progress=True: few)
+    monkeypatch.setattr("rigidsym.cli.exercise.write_report", lambda out: [])
     old = os.umask(0o022)
     try:
         assert cli.main(["report", "--full"]) == 0
@@ -58,7 +58,7 @@ def test_report_command_says_where_and_writes_0644(tmp_path, monkeypatch, capsys
 
 
 def test_exercise_figure_and_pages_are_0644_and_deterministic(tmp_path):
-    from rigidsym.derivations.exercises.cli import write_report
+    from rigidsym.cli.exercise import write_report
     old = os.umask(0o022)
     try:
         first = write_report(tmp_path / "a")
@@ -74,7 +74,7 @@ def test_exercise_figure_and_pages_are_0644_and_deterministic(tmp_path):
 
 
 def test_html_is_self_contained(few):
-    from rigidsym.report_html import to_html
+    from rigidsym.report.html import to_html
     page = to_html(few)
     assert "<script" not in page.lower()
     assert not re.search(r'(src|href)="(https?:)?//', page)
@@ -83,9 +83,10 @@ def test_html_is_self_contained(few):
 
 
 def test_html_independent_of_hash_seed(few, tmp_path):
-    from rigidsym.report_html import to_html
-    code = ("import sys; from rigidsym.checker import check; from rigidsym.registry import "
-            "load_all; from rigidsym.report_html import to_html; load_all(); "
+    from rigidsym.report.html import to_html
+    code = ("import sys; from rigidsym.checking.checker import check; "
+            "from rigidsym.checking.registry import load_all; "
+            "from rigidsym.report.html import to_html; load_all(); "
             f"sys.stdout.write(to_html([check(i) for i in {IDS!r}]))")
     env = dict(os.environ, PYTHONHASHSEED="4242")
     other = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,

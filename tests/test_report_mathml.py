@@ -7,8 +7,8 @@ import unicodedata
 
 import pytest
 
-from rigidsym.mathml import bold_char, latex_to_mathml
-from rigidsym.registry import REGISTRY, load_all
+from rigidsym.checking.registry import REGISTRY, load_all
+from rigidsym.printing.mathml import bold_char, latex_to_mathml
 
 load_all()
 

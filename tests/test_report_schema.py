@@ -8,9 +8,9 @@ from fractions import Fraction
 import pytest
 import sympy as sp
 
-from rigidsym.checker import check
-from rigidsym.registry import REGISTRY, load_all
-from rigidsym.report import SCHEMA, result_record, to_json
+from rigidsym.checking.checker import check
+from rigidsym.checking.registry import REGISTRY, load_all
+from rigidsym.report.record import SCHEMA, result_record, to_json
 
 load_all()
 IDS = ["3.1", "3.59", "3.96e", "3.75"]

@@ -19,7 +19,7 @@ from rigidsym.derivations.sec3_2_2 import (
     plucker_transfer_matrix,
 )
 
-from rigidsym.primitives import cpm
+from rigidsym.algebra.primitives import cpm
 
 DIGITS = 50
 coord = st.floats(-5, 5, allow_nan=False, allow_infinity=False)

@@ -23,7 +23,7 @@ from rigidsym.derivations.sec3_4_2 import (
     twist_transfer_matrix,
 )
 
-from rigidsym.primitives import rotation_from_natural_invariants, vect
+from rigidsym.algebra.primitives import rotation_from_natural_invariants, vect
 
 _e = sp.Matrix(sp.symbols("e1:4", real=True))
 _phi = sp.Symbol("phi", real=True)

@@ -15,10 +15,10 @@ from rigidsym.derivations import sec3_5_rates as R
 from rigidsym.derivations.common import Mt
 from rigidsym.derivations.sec3_5 import point_acceleration
 
-from rigidsym.checker import explicit
-from rigidsym.primitives import block, cpm
-from rigidsym.symbols import TIME
-from rigidsym.zero import decide_zero
+from rigidsym.algebra.primitives import block, cpm
+from rigidsym.algebra.symbols import TIME
+from rigidsym.checking.checker import explicit
+from rigidsym.zero.decide import decide_zero
 
 
 def _zero(lhs, rhs, model=None):

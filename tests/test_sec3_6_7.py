@@ -7,9 +7,9 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 from rigidsym.derivations import sec3_6, sec3_7, sec3_7_reciprocity
 
-from rigidsym.checker import decide_rel
-from rigidsym.primitives import cpm, rotation_from_quaternion
-from rigidsym.registry import Rel
+from rigidsym.algebra.primitives import cpm, rotation_from_quaternion
+from rigidsym.checking.checker import decide_rel
+from rigidsym.checking.registry import Rel
 
 ints = st.integers(-9, 9)
 vec3 = st.tuples(ints, ints, ints).map(lambda v: sp.Matrix(v))

@@ -13,7 +13,7 @@ import pytest
 import sympy as sp
 
 from rigidsym.cli import main
-from rigidsym.show import expr_lines
+from rigidsym.report.show import expr_lines
 
 ROOT = Path(__file__).resolve().parents[1]
 

@@ -13,8 +13,8 @@ import numpy as np
 import pytest
 
 import rigidsym.kernels as K
-from rigidsym import _scale
-from rigidsym.codegen import cbuild
+from rigidsym.kernels import _build as cbuild
+from rigidsym.kernels import _scale, _state
 
 HAVE_CC = bool(shutil.which("gcc") or shutil.which("cc"))
 
@@ -28,9 +28,9 @@ def test_lazy_build_runs_once_under_a_thread_pool(monkeypatch):
         time.sleep(0.2)            # wide window: without the lock every thread would build
         return real(force, gdir)
 
-    space = K._builtin_space()
+    space = _state.builtin()
     monkeypatch.setattr(space, "_clib", None)
-    monkeypatch.setitem(K._STATE, "backend", None)
+    monkeypatch.setitem(_state.STATE, "backend", None)
     monkeypatch.setattr(cbuild, "load", slow_load)
     phi = np.linspace(0.1, 3.0, 1000)
     with ThreadPoolExecutor(8) as pool:
@@ -120,7 +120,7 @@ def _hard_inputs(name: str) -> list[np.ndarray]:
 
 
 def _run_c(name, arrays, threads):
-    meta = K._meta()[name]
+    meta = _state.meta()[name]
     n = arrays[0].shape[0]
     outs = [np.full((n,) + tuple(o["shape"]), -7.0) for o in meta["outputs"]]
     with np.errstate(all="ignore"):

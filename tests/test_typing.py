@@ -17,6 +17,7 @@ from pathlib import Path
 import pytest
 
 from rigidsym import kernels as K
+from rigidsym.kernels import _state
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -78,7 +79,7 @@ def test_signatures_are_real():
     common = [k.name for k in COMMON_KEYWORDS]
     for name in K.KERNEL_NAMES:
         sig = inspect.signature(getattr(K, name))
-        args = [a["name"] for a in K._meta()[name]["args"]]
+        args = [a["name"] for a in _state.meta()[name]["args"]]
         assert list(sig.parameters) == args + common, name
         kinds = [p.kind for p in sig.parameters.values()]
         assert kinds == [inspect.Parameter.POSITIONAL_OR_KEYWORD] * len(args) \

@@ -7,9 +7,9 @@ import textwrap
 
 import pytest
 
-from rigidsym import registry, usermodules
+from rigidsym.checking import registry, usermodules
+from rigidsym.checking.registry import REGISTRY, BadInput, load_all
 from rigidsym.cli import main
-from rigidsym.registry import REGISTRY, BadInput, load_all
 
 load_all()  # the book first: its unit vector e and angle phi exist in this process
 
@@ -63,8 +63,8 @@ def test_a_free_e_is_not_the_books_unit_vector(tmp_path, capsys):
 
 
 def _book_constraints(name):
-    from rigidsym.symbols import constraint_of
-    from rigidsym.zero import make_plan
+    from rigidsym.algebra.symbols import constraint_of
+    from rigidsym.zero.decide import make_plan
 
     found = []
     for eq_id in ("3.1", "3.16"):

@@ -8,9 +8,9 @@ import sympy as sp
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from rigidsym.primitives import cpm, rotation_from_natural_invariants, vect
-from rigidsym.symbols import TIME, angle, rotation, unit_vector, vector
-from rigidsym.zero import decide_zero, evaluate, make_plan
+from rigidsym.algebra.primitives import cpm, rotation_from_natural_invariants, vect
+from rigidsym.algebra.symbols import TIME, angle, rotation, unit_vector, vector
+from rigidsym.zero.decide import decide_zero, evaluate, make_plan
 
 e = unit_vector("ze")
 phi = angle("zphi")
@@ -80,7 +80,7 @@ def test_time_derivatives_stay_on_the_constraint_set():
 
 
 def test_large_expressions_take_the_schwartz_zippel_path(monkeypatch):
-    import rigidsym.zero as z
+    import rigidsym.zero.decide as z
     monkeypatch.setattr(z, "CANCEL_NODE_LIMIT", 5)
     r = decide_zero(list(Q.T * Q - sp.eye(3)))
     assert r.zero is True and r.method == "random-exact"

@@ -18,7 +18,7 @@ from fractions import Fraction
 import numpy as np
 import sympy as sp
 
-from rigidsym.primitives import cpm
+from rigidsym.declare import cpm
 
 _FLIPS = [sp.diag(1, 1, 1), sp.diag(1, -1, -1), sp.diag(-1, 1, -1), sp.diag(-1, -1, 1)]
 
@@ -61,6 +61,8 @@ def exact_rotation(Qf: np.ndarray, max_den: int = 10**6) -> sp.Matrix:
     best = None
     for F in _FLIPS:
         R = np.array(F.tolist(), dtype=float) @ Qf
+        if abs(np.linalg.det(R + np.eye(3))) < 1e-6:   # a half turn: no Cayley parameters
+            continue
         S = (R - np.eye(3)) @ np.linalg.inv(R + np.eye(3))
         s = np.array([S[2, 1], S[0, 2], S[1, 0]])
         if best is None or np.linalg.norm(s) < np.linalg.norm(best[1]):

@@ -1,6 +1,6 @@
 """Shared inertia helpers for the exercises: Steiner's theorem and the 6 x 6 dyads.
 
-Thin wrappers over :mod:`rigidsym.primitives`; the chapter's formula is Eq. (3.133b),
+Thin wrappers over :mod:`rigidsym.algebra.primitives`; the chapter's formula is Eq. (3.133b),
 ``I_A = I_C + m (A - C)(A - C)^T = I_C - m CPM(a - c)^2``.
 """
 
@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import sympy as sp
 
-from rigidsym.primitives import block, cpm
+from rigidsym.declare import block, cpm
 
 
 def inertia_at_point(I_C, m, a, c) -> sp.Matrix:

@@ -3,11 +3,11 @@
 from __future__ import annotations
 
 import sympy as sp
-from rigidsym.derivations.sec3_2_1 import screw_axis_point
 
-from rigidsym.primitives import trace, vect
+from rigidsym.checking.worked import is_zero
+from rigidsym.declare import trace, vect
 
-from .worked import is_zero
+from ..sec3_2_1 import screw_axis_point
 
 
 def angle_axis(Q):

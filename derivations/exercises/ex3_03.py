@@ -4,9 +4,8 @@ from __future__ import annotations
 
 import sympy as sp
 
-from rigidsym.symbols import scalar, vector
-
-from .worked import Solution, identity_check, nonidentity_check
+from rigidsym.checking.worked import Solution, identity_check, nonidentity_check
+from rigidsym.declare import scalar, vector
 
 ID = "ex3.3"
 TITLE = "Lines meeting three lines: a ruled quadric"

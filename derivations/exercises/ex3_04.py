@@ -11,8 +11,9 @@ from __future__ import annotations
 import numpy as np
 import sympy as sp
 
+from rigidsym.checking.worked import Param, Solution, exact_check, is_zero, truth_check
+
 from ._fit import exact_rotation, is_local_minimum, nearest_rotation, squared_residual
-from .worked import Param, Solution, exact_check, is_zero, truth_check
 
 ID = "ex3.4"
 R = sp.Rational
@@ -55,8 +56,8 @@ def solve(n_1=PARAMETERS[0].default, f_1=PARAMETERS[1].default, n_2=PARAMETERS[2
     inv1 = s.step("invariants in F1", _invariants(n1, f1),
                   "A rotation preserves ||f||^2, ||n||^2 and n.f.")
     inv2 = s.step("invariants in F2", _invariants(n2, f2),
-                  "Equal to those in F1: the measurements are compatible."
-                  if tol is None else "Compared with those in F1 within the tolerance.")
+                  "A rotation must leave them equal to those in F1 (exactly, or within the "
+                  "tolerance for measured data).")
     for n, f, frame in ((n1, f1, "F_1"), (n2, f2, "F_2")):
         if is_zero(f.cross(n)):
             s.fail(f"In {frame} the force and the moment are parallel (or one is zero), so "

@@ -4,9 +4,8 @@ from __future__ import annotations
 
 import sympy as sp
 
-from rigidsym.symbols import unit_vector, vector
-
-from .worked import Param, Solution, exact_check, identity_check, is_zero
+from rigidsym.checking.worked import Param, Solution, exact_check, identity_check, is_zero
+from rigidsym.declare import unit_vector, vector
 
 ID = "ex3.5"
 TITLE = "Joint-axis calibration from Plücker coordinates"

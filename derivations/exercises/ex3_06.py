@@ -4,8 +4,9 @@ from __future__ import annotations
 
 import sympy as sp
 
+from rigidsym.checking.worked import Param, Solution, exact_check, is_zero
+
 from ._screw import screw_of_displacement
-from .worked import Param, Solution, exact_check, is_zero
 
 ID = "ex3.6"
 TITLE = "Gripper grasping a truncated cube"

@@ -6,10 +6,8 @@ import random
 
 import sympy as sp
 
-from rigidsym.primitives import cpm
-from rigidsym.symbols import scalar, vector
-
-from .worked import Solution, identity_check, truth_check
+from rigidsym.checking.worked import Solution, identity_check, truth_check
+from rigidsym.declare import cpm, scalar, vector
 
 ID = "ex3.8"
 TITLE = "Even and odd powers of the cross-product matrix"

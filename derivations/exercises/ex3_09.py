@@ -4,10 +4,8 @@ from __future__ import annotations
 
 import sympy as sp
 
-from rigidsym.primitives import rotation_from_natural_invariants, vect
-from rigidsym.symbols import TIME, scalar, unit_vector
-
-from .worked import Solution, identity_check, nonidentity_check
+from rigidsym.checking.worked import Solution, identity_check, nonidentity_check
+from rigidsym.declare import TIME, rotation_from_natural_invariants, scalar, unit_vector, vect
 
 ID = "ex3.9"
 TITLE = "Small rotations"

@@ -8,10 +8,8 @@ from __future__ import annotations
 
 import sympy as sp
 
-from rigidsym.primitives import cpm, rotation_from_natural_invariants, vect
-from rigidsym.symbols import TIME, angle
-
-from .worked import Param, Solution, identity_check, truth_check
+from rigidsym.checking.worked import Param, Solution, identity_check, truth_check
+from rigidsym.declare import TIME, angle, cpm, rotation_from_natural_invariants, vect
 
 ID = "ex3.10"
 TITLE = "Euler-angle rates and the angular velocity"

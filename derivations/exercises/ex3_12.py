@@ -4,8 +4,9 @@ from __future__ import annotations
 
 import sympy as sp
 
+from rigidsym.checking.worked import Param, Solution, exact_check
+
 from ._prism import A_SIDE, HEIGHT, mass_properties, positive_sizes, principal_yz, y
-from .worked import Param, Solution, exact_check
 
 ID = "ex3.12"
 TITLE = "Prism cut at 45 degrees: two parts"

@@ -4,10 +4,8 @@ from __future__ import annotations
 
 import sympy as sp
 
-from rigidsym.primitives import cpm, trace
-from rigidsym.symbols import scalar, vector
-
-from .worked import Solution, identity_check
+from rigidsym.checking.worked import Solution, identity_check
+from rigidsym.declare import cpm, scalar, trace, vector
 
 ID = "ex3.13"
 TITLE = "Mechanical meaning of m[tr(P P^T) 1 - P P^T]"

@@ -11,8 +11,9 @@ from __future__ import annotations
 
 import sympy as sp
 
+from rigidsym.checking.worked import Param, Solution, exact_check, is_zero, truth_check
+
 from ._fit import exact_rotation, is_local_minimum, sorted_eigh
-from .worked import Param, Solution, exact_check, is_zero, truth_check
 
 ID = "ex3.14"
 TITLE = "Two observers of one inertia matrix"

@@ -4,10 +4,10 @@ from __future__ import annotations
 
 import sympy as sp
 
-from rigidsym.symbols import rotation, scalar, symmetric_matrix, vector
+from rigidsym.checking.worked import Solution, identity_check
+from rigidsym.declare import rotation, scalar, symmetric_matrix, vector
 
 from ._inertia import inertia_at_point
-from .worked import Solution, identity_check
 
 ID = "ex3.16"
 TITLE = "Minimum of the smallest principal moment"

@@ -4,11 +4,10 @@ from __future__ import annotations
 
 import sympy as sp
 
-from rigidsym.primitives import vect
-from rigidsym.symbols import TIME, rotation, scalar, symmetric_matrix, vector
+from rigidsym.checking.worked import Solution, identity_check
+from rigidsym.declare import TIME, rotation, scalar, symmetric_matrix, vect, vector
 
 from ._inertia import angular_velocity_dyad, inertia_dyad
-from .worked import Solution, identity_check
 
 ID = "ex3.17"
 TITLE = "Time-rate of the inertia dyad and of the momentum screw"

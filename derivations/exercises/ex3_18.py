@@ -4,10 +4,10 @@ from __future__ import annotations
 
 import sympy as sp
 
-from rigidsym.symbols import TIME
+from rigidsym.checking.worked import Solution, identity_check
+from rigidsym.declare import TIME
 
 from .ex3_17 import motion
-from .worked import Solution, identity_check
 
 ID = "ex3.18"
 TITLE = "Skew-symmetry of M_dot - 2 W M"

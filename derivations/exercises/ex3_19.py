@@ -9,14 +9,13 @@ from __future__ import annotations
 
 import numpy as np
 import sympy as sp
-from rigidsym.derivations.sec3_4_2 import twist_transfer_matrix
 
-from rigidsym.primitives import block
-from rigidsym.symbols import rotation, vector
+from rigidsym.checking.worked import Param, Solution, exact_check, identity_check, is_zero
+from rigidsym.declare import block, rotation, vector
 
+from ..sec3_4_2 import twist_transfer_matrix
 from ._fit import exact_rotation, nearest_rotation
 from ._screw import rotation_defect
-from .worked import Param, Solution, exact_check, identity_check, is_zero
 
 ID = "ex3.19"
 TITLE = "Six-axis force sensor"

@@ -3,13 +3,12 @@
 from __future__ import annotations
 
 import sympy as sp
-from rigidsym.derivations.sec3_4_2 import twist_transfer_matrix
 
-from rigidsym.primitives import block, cpm
-from rigidsym.symbols import scalar, symmetric_matrix, vector
+from rigidsym.checking.worked import Solution, identity_check, nonidentity_check
+from rigidsym.declare import block, cpm, scalar, symmetric_matrix, vector
 
+from ..sec3_4_2 import twist_transfer_matrix
 from ._inertia import inertia_at_point, inertia_dyad
-from .worked import Solution, identity_check, nonidentity_check
 
 ID = "ex3.20"
 TITLE = "Steiner's theorem in 6 x 6 form"

@@ -4,10 +4,8 @@ from __future__ import annotations
 
 import sympy as sp
 
-from rigidsym.primitives import cpm, trace
-from rigidsym.symbols import TIME, vector
-
-from .worked import Solution, identity_check, nonidentity_check
+from rigidsym.checking.worked import Solution, identity_check, nonidentity_check
+from rigidsym.declare import TIME, cpm, trace, vector
 
 ID = "ex3.21"
 TITLE = "Orthogonality of the two parts of the angular-acceleration matrix"

@@ -20,8 +20,8 @@ from dataclasses import dataclass, fields
 from types import ModuleType
 from typing import overload
 
-from .checker import Result as _CheckerResult
-from .registry import VERDICTS, BadInput, select
+from rigidsym.checking.checker import Result as _CheckerResult
+from rigidsym.checking.registry import VERDICTS, BadInput, select
 
 __all__ = ["check", "verify", "Result", "Results"]
 
@@ -51,7 +51,7 @@ class Result(_CheckerResult):
 
     def to_json(self) -> dict:
         """The schema-2 record of this result (a row of ``Results.to_json()``)."""
-        from .report import result_record
+        from rigidsym.report.record import result_record
 
         return result_record(self)
 
@@ -76,7 +76,7 @@ class Result(_CheckerResult):
         return f"$\\displaystyle {body}$"
 
     def _repr_html_(self) -> str:
-        from .mathml import latex_to_mathml
+        from rigidsym.printing.mathml import latex_to_mathml
 
         e = html.escape
         rows = [f"<p><b>({e(self.id)}) {e(self.title)}</b>: <b>{e(self.verdict)}</b> "
@@ -128,14 +128,14 @@ class Results(Sequence[Result]):
 
     def summary(self) -> dict[str, int]:
         """Counts per verdict, every verdict listed (zeros included)."""
-        from .report import summary
+        from rigidsym.report.record import summary
 
         return summary(list(self._rows))
 
     def to_json(self) -> dict:
         """The schema-2 document of ``rigidsym verify --json`` as a dict:
         ``{"schema": 2, "equations": [record, ...], "summary": {verdict: count}}``."""
-        from .report import SCHEMA, result_record
+        from rigidsym.report.record import SCHEMA, result_record
 
         return {"schema": SCHEMA, "equations": [result_record(r) for r in self._rows],
                 "summary": self.summary()}
@@ -187,7 +187,7 @@ class Results(Sequence[Result]):
 
 def _load(modules) -> list[str]:
     """Load user modules (paths, dotted names or module objects); their import names."""
-    from . import usermodules
+    from rigidsym.checking import usermodules
 
     if isinstance(modules, str | os.PathLike | ModuleType):
         modules = [modules]
@@ -214,7 +214,7 @@ def check(eq_id: str, *, modules: Iterable[ModuleSpec] = ()) -> Result:
         BadInput: for a malformed or unknown id, an id with several lettered parts
             (``"3.96"``: use :func:`verify`), or a user module that cannot be loaded.
     """
-    from .checker import check as _check
+    from rigidsym.checking.checker import check as _check
 
     _load(modules)
     ids = select([eq_id], None)
@@ -246,7 +246,7 @@ def verify(ids: Sequence[str] | str | None = None, sections: Sequence[str] | str
             loaded (one line naming the module and the problem).
         ValueError: if ``jobs`` is not a positive integer.
     """
-    from .cli import run_checks
+    from rigidsym.checking.runner import run_checks
 
     if not isinstance(jobs, int) or isinstance(jobs, bool) or jobs < 1:
         raise ValueError(f"jobs: expected a positive integer, got {jobs!r}")

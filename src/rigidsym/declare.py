@@ -25,10 +25,13 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from .derivations.common import I3, MS, O3, Blocks, Cross, Det, mat, vec
-from .primitives import (
+from rigidsym.algebra.operators import I3, MS, O3, Blocks, Cross, Det, mat, vec
+from rigidsym.algebra.primitives import (
+    as_vector,
+    block,
     cpm,
     euler_rodrigues_parameters,
+    eye3,
     linear_invariants,
     rotation_from_euler_rodrigues,
     rotation_from_natural_invariants,
@@ -36,8 +39,7 @@ from .primitives import (
     trace,
     vect,
 )
-from .registry import Rel, Statement, equation
-from .symbols import (
+from rigidsym.algebra.symbols import (
     TIME,
     angle,
     matrix,
@@ -48,6 +50,7 @@ from .symbols import (
     unit_vector4,
     vector,
 )
+from rigidsym.checking.registry import Rel, Statement, equation
 
 __all__ = [
     "equation", "Statement", "Rel",
@@ -57,6 +60,7 @@ __all__ = [
     "cpm", "vect", "trace", "Cross", "Det", "Blocks",
     "rotation_from_natural_invariants", "rotation_from_euler_rodrigues",
     "rotation_from_quaternion", "linear_invariants", "euler_rodrigues_parameters",
+    "as_vector", "block", "eye3",
 ]
 
 

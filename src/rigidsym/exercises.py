@@ -16,7 +16,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from rigidsym.derivations.exercises.worked import (
+from rigidsym.checking.worked import (
     EXERCISE_IDS,
     IllPosed,
     Param,
@@ -25,8 +25,8 @@ from rigidsym.derivations.exercises.worked import (
     exercise_module,
     normalise_id,
 )
-from rigidsym.derivations.exercises.worked import parameters as _parameters
-from rigidsym.derivations.exercises.worked import solve as _solve
+from rigidsym.checking.worked import parameters as _parameters
+from rigidsym.checking.worked import solve as _solve
 
 __all__ = ["solve", "parameters", "figure", "write_notebook", "EXERCISE_IDS", "Solution",
            "Parameters", "Param", "IllPosed"]
@@ -111,7 +111,7 @@ def write_notebook(exercise: str, path: str | Path, **data) -> Path:
         ValueError, TypeError: as :func:`solve`, for the exercise id and the data.
         OSError: the file cannot be written.
     """
-    from rigidsym.io import write_atomic
+    from rigidsym._io import write_atomic
     from rigidsym.notebooks import notebook_text
 
     ex_id = normalise_id(exercise)

@@ -10,6 +10,7 @@ removes orphans; :func:`check` compares it with the disk and returns a unified d
 from __future__ import annotations
 
 import difflib
+import importlib
 import json
 import os
 from dataclasses import dataclass, field
@@ -19,11 +20,11 @@ import jinja2
 import sympy as sp
 
 import rigidsym
-
-from .api_spec import render_api
-from .optimise import Program, compile_program, math_hash
-from .printers import KernelCPrinter, KernelNumPyPrinter
-from .spec import Kernel, flat_symbols, input_symbols
+from rigidsym._config import KERNEL_SPEC as BOOK_ORIGIN
+from rigidsym.codegen.api_spec import render_api
+from rigidsym.codegen.optimise import Program, compile_program, math_hash
+from rigidsym.codegen.printers import KernelCPrinter, KernelNumPyPrinter
+from rigidsym.codegen.spec import Kernel, flat_symbols, input_symbols
 
 __all__ = ["generate", "write", "check", "GenerationResult", "default_out_dir", "TEMPLATES"]
 
@@ -136,7 +137,6 @@ def _env() -> jinja2.Environment:
 
 
 #: where the book's kernels are composed (a user module's kernels name that module)
-BOOK_ORIGIN = "rigidsym.derivations.kernels_spec"
 
 
 def _header(kc: KernelCode, template: str, origin: str = BOOK_ORIGIN) -> list[str]:
@@ -313,7 +313,7 @@ def _with_jacobian_kernels(todo: list[Kernel]) -> list[Kernel]:
     The Jacobian kernels are ordinary (non-public) kernels with extra outputs, so they go
     through the same rewrite, CSE, templates and checks as the values.
     """
-    from .jacobians import jacobian_kernels
+    from rigidsym.codegen.jacobians import jacobian_kernels
 
     return sorted(todo + jacobian_kernels(todo), key=lambda k: k.name)
 
@@ -324,7 +324,8 @@ def generate(kernels=None, origin: str = BOOK_ORIGIN) -> GenerationResult:
     ``kernels`` defaults to the book's; a user module's kernels come with ``origin`` (the
     module's name, written in the headers) and sources already named, not imported here.
     """
-    from rigidsym.derivations.kernels_spec import KERNELS, missing_sources
+    spec = importlib.import_module(BOOK_ORIGIN)  # by name: the generator imports no book
+    KERNELS, missing_sources = spec.KERNELS, spec.missing_sources
 
     env = _env()
     files: dict[str, str] = {}
@@ -367,7 +368,7 @@ def _on_disk(out: Path) -> dict[str, Path]:
 
 def write(result: GenerationResult, out: Path | None = None) -> list[str]:
     """Write changed files atomically, delete orphans; returns the paths touched."""
-    from rigidsym.io import write_atomic
+    from rigidsym._io import write_atomic
 
     out = Path(out) if out is not None else default_out_dir()
     touched = []

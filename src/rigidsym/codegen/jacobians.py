@@ -20,7 +20,7 @@ from __future__ import annotations
 
 import sympy as sp
 
-from .spec import Kernel, Out, flat_symbols
+from rigidsym.codegen.spec import Kernel, Out, flat_symbols
 
 __all__ = ["with_jacobians", "jacobian_kernels", "has_jacobian", "jacobian_name",
            "derivative_name", "SUFFIX"]

@@ -13,9 +13,8 @@ import sys
 import time
 from pathlib import Path
 
-from rigidsym.registry import BadInput
-
-from .spec import Kernel
+from rigidsym.checking.registry import BadInput
+from rigidsym.codegen.spec import Kernel
 
 __all__ = ["user_kernels", "generate_user", "cmd_generate_user"]
 
@@ -34,11 +33,14 @@ def user_kernels(um) -> list[Kernel]:
     """The kernels of a loaded user module, sources named (callables -> dotted names).
 
     Raises:
-        BadInput: for a source that is neither a string nor a function, or a kernel name
-            that is not a Python identifier.
+        BadInput: for a ``KERNELS`` entry that is not a :class:`Kernel`, a source that is
+            neither a string nor a function, or a kernel name that is not an identifier.
     """
     out = []
     for k in um.kernels:
+        if not isinstance(k, Kernel):  # checked here: the checking layer knows no codegen
+            raise BadInput(f"module {um.title}: KERNELS holds a {type(k).__name__}, expected "
+                           f"rigidsym.codegen.spec.Kernel")
         if not k.name.isidentifier():
             raise BadInput(f"module {um.title}: kernel name {k.name!r} is not an identifier")
         srcs = tuple(_source_name(s, um.title) for s in k.sources)
@@ -56,9 +58,8 @@ def generate_user(modules):
         BadInput: for a module that cannot be loaded, one without ``KERNELS``, or two
             kernels of one name.
     """
-    from rigidsym.usermodules import load_many
-
-    from .generator import generate
+    from rigidsym.checking.usermodules import load_many
+    from rigidsym.codegen.generator import generate
 
     ums = load_many(modules)
     kernels, titles = [], []
@@ -78,7 +79,7 @@ def generate_user(modules):
 
 def cmd_generate_user(args) -> int:
     """``rigidsym generate --module M --out DIR [--check]``."""
-    from .generator import check, write
+    from rigidsym.codegen.generator import check, write
 
     t0 = time.perf_counter()
     if not args.out:

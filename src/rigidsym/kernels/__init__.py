@@ -33,29 +33,24 @@ Example:
 
 from __future__ import annotations
 
-import importlib
 import types
 from collections.abc import Callable
-from functools import cache
 from pathlib import Path
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from rigidsym._scale import get_num_threads as get_num_threads
-from rigidsym._scale import set_num_threads as set_num_threads
 from rigidsym.generated.api import *  # noqa: F403 - the generated kernels (true signatures)
 from rigidsym.generated.api import __all__ as _KERNELS
-
-from ._core import (
-    _STATE,
-    KernelSpace,
-    NonFiniteResultError,
-    SingularConfigurationError,
-    _select,
-)
-from ._core import ORTHO_TOL as ORTHO_TOL  # re-exported: the tolerances of check=True
-from ._core import UNIT_TOL as UNIT_TOL
+from rigidsym.kernels import _state
+from rigidsym.kernels._build import generated_dir
+from rigidsym.kernels._core import ORTHO_TOL as ORTHO_TOL  # the tolerances of check=True
+from rigidsym.kernels._core import UNIT_TOL as UNIT_TOL
+from rigidsym.kernels._core import KernelSpace, _load_module
+from rigidsym.kernels._errors import NonFiniteResultError, SingularConfigurationError
+from rigidsym.kernels._jacobian import jacobian
+from rigidsym.kernels._scale import get_num_threads as get_num_threads
+from rigidsym.kernels._scale import set_num_threads as set_num_threads
 
 __all__ = ["SingularConfigurationError", "NonFiniteResultError", "use_backend", "backend",
            "swap_blocks", "load", "batch_function", "euler_rate_matrix", "euler_angle_rates",
@@ -64,24 +59,19 @@ __all__ += _KERNELS
 
 #: names of the public generated kernels
 KERNEL_NAMES = tuple(sorted(_KERNELS))
-
-_EULER_SEQUENCES = ("ZXZ", "XYX", "YZY", "ZYZ", "XZX", "YXY",
-                    "XYZ", "YZX", "ZXY", "XZY", "ZYX", "YXZ")
-_PACKAGE_API = "rigidsym.generated.api"
-
-
-@cache
-def _builtin_space() -> KernelSpace:
-    from rigidsym.codegen.cbuild import generated_dir
-    # the NumPy module names of the package's kernels are stable (tests look them up)
-    return KernelSpace.from_directory(generated_dir(), prefix="rigidsym._generated_numpy")
+for _name in _KERNELS:  # pickled by reference through this module, which binds them on import
+    globals()[_name].__module__ = __name__
 
 
 def _bind_module(mod: types.ModuleType) -> KernelSpace:
     """Bind a generated ``api`` module to the kernel space of its directory."""
     here = Path(mod.__file__).resolve().parent
-    if mod.__name__ == _PACKAGE_API:
-        space = _builtin_space()
+    if mod.__name__ == _state.PACKAGE_API:
+        if _state.STATE["builtin"] is None:
+            # the NumPy module names of the package's kernels are stable (tests look them up)
+            _state.register_builtin(KernelSpace.from_directory(
+                generated_dir(), prefix="rigidsym._generated_numpy"))
+        space = _state.builtin()
     else:
         space = KernelSpace.from_directory(here)
     mod._SPACE = space
@@ -89,6 +79,8 @@ def _bind_module(mod: types.ModuleType) -> KernelSpace:
 
 
 _LOADED: dict[Path, types.ModuleType] = {}
+#: names a loaded namespace exposes besides its kernels
+_NAMESPACE_HELPERS = ("KERNEL_NAMES", "batch_function")
 
 
 def load(directory: str | Path | None = None) -> types.ModuleType:
@@ -111,8 +103,6 @@ def load(directory: str | Path | None = None) -> types.ModuleType:
         >>> load().twist_transfer is twist_transfer
         True
     """
-    from rigidsym.codegen.cbuild import generated_dir
-
     gdir = generated_dir() if directory is None else Path(directory).resolve()
     for f in ("kernels.json", "api.py"):
         if not (gdir / f).is_file():
@@ -121,10 +111,9 @@ def load(directory: str | Path | None = None) -> types.ModuleType:
     if gdir in _LOADED:
         return _LOADED[gdir]
     if gdir == generated_dir().resolve():
-        mod = importlib.import_module(_PACKAGE_API)
+        import rigidsym.generated.api as mod
     else:
         space = KernelSpace.from_directory(gdir)
-        from ._core import _load_module
         mod = _load_module(f"{space.prefix}.api", gdir / "api.py")
     space = _bind_module(mod)
     mod.KERNEL_NAMES = tuple(mod.__all__)
@@ -142,12 +131,12 @@ def use_backend(name: str) -> str:
     Raises:
         ValueError: ``name`` is neither.
     """
-    return _select(name)
+    return _state.select(name)
 
 
 def backend() -> str:
     """The backend in use (selects ``"c"`` with NumPy fallback on first call)."""
-    return _STATE["backend"] or _select("c")
+    return _state.backend()
 
 
 def batch_function(name: str, backend_name: str | None = None,
@@ -159,29 +148,7 @@ def batch_function(name: str, backend_name: str | None = None,
     (singular or non-finite, written as NaN); for NumPy the ``(n,)`` uint8 flags (1
     singular, 2 non-finite output).
     """
-    return _builtin_space().batch_function(name, backend_name, threads, dtype)
-
-
-def _meta() -> dict:
-    return _builtin_space().meta
-
-
-def _numpy_kernel(name: str) -> Callable:
-    return _builtin_space().numpy_kernel(name)
-
-
-def _call(name: str, args: tuple, **keywords):
-    return _builtin_space().call(name, args, **keywords)
-
-
-def _euler_name(kind: str, sequence: str, frame: str) -> str:
-    seq = sequence.upper() if isinstance(sequence, str) else sequence
-    if seq not in _EULER_SEQUENCES:
-        raise ValueError(f"sequence: expected one of {', '.join(_EULER_SEQUENCES)}, "
-                         f"got {sequence!r}")
-    if frame not in ("fixed", "body"):
-        raise ValueError(f"frame: expected 'fixed' or 'body', got {frame!r}")
-    return f"{kind}_{seq.lower()}_{frame}"
+    return _state.builtin().batch_function(name, backend_name, threads, dtype)
 
 
 def euler_rate_matrix(angles: ArrayLike, sequence: str, frame: str = "fixed", *,
@@ -206,8 +173,8 @@ def euler_rate_matrix(angles: ArrayLike, sequence: str, frame: str = "fixed", *,
         >>> euler_rate_matrix([0.1, 0.2, 0.3], "ZYX").shape
         (3, 3)
     """
-    return _call(_euler_name("euler_rate_matrix", sequence, frame), (angles,), out=out,
-                 check=check, threads=threads)
+    return _state.call(_state.euler_name("euler_rate_matrix", sequence, frame), (angles,),
+                       out=out, check=check, threads=threads)
 
 
 def euler_angle_rates(angles: ArrayLike, omega: ArrayLike, sequence: str,
@@ -234,8 +201,8 @@ def euler_angle_rates(angles: ArrayLike, omega: ArrayLike, sequence: str,
         >>> euler_angle_rates([0.1, 0.2, 0.3], [0.0, 0.0, 1.0], "ZYX").shape
         (3,)
     """
-    return _call(_euler_name("euler_angle_rates", sequence, frame), (angles, omega), out=out,
-                 check=check, on_singular=on_singular, threads=threads)
+    return _state.call(_state.euler_name("euler_angle_rates", sequence, frame), (angles, omega),
+                       out=out, check=check, on_singular=on_singular, threads=threads)
 
 
 def swap_blocks(x: ArrayLike, matrix: bool = False) -> NDArray[np.floating]:
@@ -258,7 +225,7 @@ def swap_blocks(x: ArrayLike, matrix: bool = False) -> NDArray[np.floating]:
         >>> swap_blocks([1, 2, 3, 4, 5, 6]).tolist()
         [4.0, 5.0, 6.0, 1.0, 2.0, 3.0]
     """
-    from ._core import as_array
+    from rigidsym.kernels._core import as_array
 
     shape = (6, 6) if matrix else (6,)
     a = as_array(x, {"name": "x", "tshape": shape})
@@ -268,5 +235,3 @@ def swap_blocks(x: ArrayLike, matrix: bool = False) -> NDArray[np.floating]:
 
 # the package's kernels are load() of its generated directory (binds generated.api here)
 load()
-
-from rigidsym._jacobian import jacobian  # noqa: E402 - values and Jacobians (issue 12)

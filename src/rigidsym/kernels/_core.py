@@ -13,8 +13,6 @@ import importlib.util
 import json
 import math
 import sys
-import threading
-import warnings
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -22,8 +20,15 @@ from typing import Any
 
 import numpy as np
 
-from rigidsym import _dask
-from rigidsym._scale import MIN_PARALLEL, numpy_f32, resolve_threads, result_dtype, tolerance
+from rigidsym.kernels import _dask, _state
+from rigidsym.kernels._errors import NonFiniteResultError, SingularConfigurationError
+from rigidsym.kernels._scale import (
+    MIN_PARALLEL,
+    numpy_f32,
+    resolve_threads,
+    result_dtype,
+    tolerance,
+)
 
 #: tolerance on | ||e|| - 1 | for unit-vector arguments (e, eta).
 UNIT_TOL = 1e-8
@@ -34,46 +39,6 @@ ORTHO_TOL = 1e-8
 _SINGULAR, _NONFINITE = 1, 2
 _DTYPE_WORDS = {"b": "bool", "c": "complex", "O": "Python objects", "U": "str", "S": "bytes",
                 "M": "datetime", "m": "timedelta", "V": "structured"}
-
-
-class SingularConfigurationError(ValueError):
-    """The kernel is evaluated on its singular set (division by an exact zero).
-
-    Attributes:
-        argument: the argument that makes the configuration singular.
-        indices: the batch indices (tuples over the batch shape) of the singular samples.
-    """
-
-    def __init__(self, message: str, argument: str, indices: list):
-        super().__init__(message)
-        self.argument = argument
-        self.indices = indices
-
-    def __reduce__(self):
-        # pickled with its fields (distributed re-raises a worker's error on the client)
-        return (type(self), (str(self), self.argument, self.indices))
-
-
-class NonFiniteResultError(SingularConfigurationError):
-    """Finite inputs gave a non-finite output (overflow): reported with ``check=True``.
-
-    Attributes:
-        argument: the input of largest magnitude in the offending samples.
-        indices: the batch indices (tuples over the batch shape) of those samples.
-    """
-
-
-_STATE: dict = {"backend": None, "warned": False}
-# one lock for the lazy C build and the backend switch: kernels may first be called from
-# several threads at once (a thread pool, a Dask worker)
-_LOCK = threading.RLock()
-
-
-def _warn_once(exc: Exception) -> None:
-    if not _STATE["warned"]:
-        warnings.warn(f"rigidsym.kernels: C backend unavailable ({exc}); using NumPy",
-                      RuntimeWarning, stacklevel=3)
-        _STATE["warned"] = True
 
 
 def check_keywords(check: bool, on_singular: str, threads: int | None) -> None:
@@ -233,15 +198,15 @@ class KernelSpace:
 
     def c_lib(self):
         if self._clib is None:
-            with _LOCK:
+            with _state.LOCK:
                 if self._clib is None:
-                    from rigidsym.codegen.cbuild import load
+                    from rigidsym.kernels._build import load
                     self._clib = load(gdir=self.directory)
         return self._clib
 
     def backend(self) -> str:
         """The backend in effect here: the global choice, NumPy if this C did not build."""
-        b = _STATE["backend"] or _select("c")
+        b = _state.backend()
         if b == "c" and self._clib is None:
             if self._c_failed:
                 return "numpy"
@@ -249,7 +214,7 @@ class KernelSpace:
                 self.c_lib()
             except Exception as exc:  # noqa: BLE001 - any build failure means: no C backend
                 self._c_failed = True
-                _warn_once(exc)
+                _state.warn_once(exc)
                 return "numpy"
         return b
 
@@ -257,7 +222,7 @@ class KernelSpace:
                        threads: int | None = None, dtype=np.float64) -> Callable:
         """``f(*inputs, *outputs)`` on C-contiguous ``(n, ...)`` arrays of ``dtype``.
 
-        ``threads`` as for the kernels (None: :func:`rigidsym._scale.get_num_threads`; one
+        ``threads`` as for the kernels (None: :func:`rigidsym.kernels._scale.get_num_threads`; one
         thread below ``MIN_PARALLEL`` samples); outputs are the same for every count.
         float32: float32 arrays in and out, float64 arithmetic inside.
         """
@@ -280,7 +245,7 @@ class KernelSpace:
     def call(self, name: str, args: tuple, out=None, check: bool = True,
              on_singular: str | None = None, threads: int | None = None):
         """Validate, broadcast, evaluate ``name`` and report singular/non-finite samples.
-        Dask inputs: a lazy result (:mod:`rigidsym._dask`)."""
+        Dask inputs: a lazy result (:mod:`rigidsym.kernels._dask`)."""
         if _dask.is_dask(args):
             return _dask.apply(self, name, args, out=out, check=check,
                                on_singular=on_singular, threads=threads)
@@ -386,28 +351,3 @@ def _report_flags(name, meta, flags, flat, bufs, batch, check, on_singular) -> N
     for buf in bufs:
         buf[sing] = np.nan
         buf[over] = np.nan
-
-
-def _select(name: str) -> str:
-    """Select the global backend (``"c"`` falls back to NumPy when the package's C does not
-    build); returns it."""
-    if name not in ("c", "numpy"):
-        raise ValueError(f"backend: expected 'c' or 'numpy', got {name!r}")
-    with _LOCK:
-        return _select_locked(name)
-
-
-def _select_locked(name: str) -> str:
-    if name == "c":
-        from . import _builtin_space
-        space = _builtin_space()
-        space._c_failed = False
-        try:
-            space.c_lib()
-        except Exception as exc:  # noqa: BLE001 - any build failure means: no C backend
-            space._c_failed = True
-            _warn_once(exc)
-            name = "numpy"
-    _STATE["backend"] = name
-    return name
-

@@ -1,0 +1,166 @@
+"""Symbolic primitives of rigid-body mechanics: the book's operators and chapter-2 facts.
+
+Everything here builds explicit ``sympy.Matrix`` objects; nothing decides truth (that is
+:mod:`rigidsym.zero.decide`). Shapes follow ``NOTATION.md``: vectors are 3 x 1 columns.
+"""
+
+from __future__ import annotations
+
+import sympy as sp
+
+__all__ = [
+    "as_vector",
+    "cpm",
+    "vect",
+    "trace",
+    "eye3",
+    "zeros3",
+    "rotation_from_natural_invariants",
+    "linear_invariants",
+    "euler_rodrigues_parameters",
+    "rotation_from_euler_rodrigues",
+    "rotation_from_quaternion",
+    "block",
+]
+
+
+def as_vector(v, name: str = "v") -> sp.Matrix:
+    """Return ``v`` as an explicit 3 x 1 sympy column.
+
+    Args:
+        v: a sequence of 3 sympy expressions or a 3 x 1 / 1 x 3 matrix.
+        name: the argument's name, used in the error message.
+
+    Raises:
+        ValueError: if ``v`` does not hold exactly three entries.
+    """
+    m = sp.Matrix(v)
+    if m.shape not in ((3, 1), (1, 3)):
+        raise ValueError(f"{name}: expected a 3-vector, got shape {m.shape}")
+    return m.reshape(3, 1)
+
+
+def cpm(v) -> sp.Matrix:
+    """Cross-product matrix of a 3-vector: ``cpm(v) @ x == v x x`` for every x.
+
+    Book: Sec. 2.3, Eq. (2.38). Skew-symmetric, rank 2 for v != 0.
+
+    Args:
+        v: 3-vector (any sympy entries).
+
+    Returns:
+        3 x 3 skew-symmetric ``sympy.Matrix``.
+
+    Example:
+        >>> import sympy as sp
+        >>> v, x = sp.Matrix([1, 2, 3]), sp.Matrix([4, 5, 6])
+        >>> cpm(v) * x == v.cross(x)
+        True
+    """
+    x, y, z = as_vector(v)
+    return sp.Matrix([[0, -z, y], [z, 0, -x], [-y, x, 0]])
+
+
+def vect(A) -> sp.Matrix:
+    """Axial vector of a 3 x 3 matrix: ``vect(A) = 1/2 [a32 - a23, a13 - a31, a21 - a12]``.
+
+    Book: Sec. 2.3.3. ``vect(cpm(v)) == v``.
+
+    Raises:
+        ValueError: if ``A`` is not 3 x 3.
+    """
+    A = sp.Matrix(A)
+    if A.shape != (3, 3):
+        raise ValueError(f"A: expected a 3 x 3 matrix, got shape {A.shape}")
+    half = sp.Rational(1, 2)
+    return sp.Matrix([half * (A[2, 1] - A[1, 2]), half * (A[0, 2] - A[2, 0]),
+                      half * (A[1, 0] - A[0, 1])])
+
+
+def trace(A) -> sp.Expr:
+    """Trace of a square matrix. Book: Sec. 2.3 (tr)."""
+    A = sp.Matrix(A)
+    if A.rows != A.cols:
+        raise ValueError(f"A: expected a square matrix, got shape {A.shape}")
+    return A.trace()
+
+
+def eye3() -> sp.Matrix:
+    """The 3 x 3 identity, the book's ``1``."""
+    return sp.eye(3)
+
+
+def zeros3() -> sp.Matrix:
+    """The 3 x 3 zero matrix, the book's ``O``."""
+    return sp.zeros(3, 3)
+
+
+def rotation_from_natural_invariants(e, phi) -> sp.Matrix:
+    """Rotation matrix from its natural invariants.
+
+    ``Q = e e^T + cos(phi) (1 - e e^T) + sin(phi) E``, ``E = cpm(e)``, ``||e|| = 1``.
+
+    Book: Sec. 2.3, Eq. (2.49).
+
+    Args:
+        e: unit 3-vector along the axis (the caller guarantees ``e.e = 1``; the zero
+            test of :mod:`rigidsym.zero.decide` imposes it exactly).
+        phi: angle in radians (a sympy expression).
+
+    Returns:
+        3 x 3 proper orthogonal matrix (when ``e.e = 1``).
+    """
+    e = as_vector(e, "e")
+    eeT = e * e.T
+    return eeT + sp.cos(phi) * (sp.eye(3) - eeT) + sp.sin(phi) * cpm(e)
+
+
+def linear_invariants(e, phi) -> tuple[sp.Matrix, sp.Expr]:
+    """Linear invariants ``u = sin(phi) e``, ``u0 = cos(phi)``. Book: Sec. 2.3; Eq. (3.95b)."""
+    e = as_vector(e, "e")
+    return sp.sin(phi) * e, sp.cos(phi)
+
+
+def euler_rodrigues_parameters(e, phi) -> tuple[sp.Matrix, sp.Expr]:
+    """Euler-Rodrigues parameters ``r = sin(phi/2) e``, ``r0 = cos(phi/2)``.
+
+    Book: Sec. 2.3; Eq. (3.95b).
+    """
+    e = as_vector(e, "e")
+    return sp.sin(phi / 2) * e, sp.cos(phi / 2)
+
+
+def rotation_from_euler_rodrigues(r, r0) -> sp.Matrix:
+    """``Q = (r0^2 - r.r) 1 + 2 r r^T + 2 r0 cpm(r)``, valid when ``r.r + r0^2 = 1``.
+
+    Book: Sec. 2.3 (Euler-Rodrigues form of the rotation).
+    """
+    r = as_vector(r, "r")
+    return (r0**2 - (r.T * r)[0]) * sp.eye(3) + 2 * r * r.T + 2 * r0 * cpm(r)
+
+
+def rotation_from_quaternion(q) -> sp.Matrix:
+    """Proper orthogonal matrix from an *unnormalised* quaternion ``q = [q1, q2, q3, q0]``.
+
+    ``Q = ((q0^2 - v.v) 1 + 2 v v^T + 2 q0 cpm(v)) / (v.v + q0^2)`` with ``v = [q1, q2, q3]``.
+    Rational in ``q`` and exactly orthogonal for every ``q != 0``: this is the rational
+    parametrisation of SO(3) that lets the zero test honour ``Q^T Q = 1`` by cancellation.
+    """
+    q = list(sp.Matrix(q))
+    if len(q) != 4:
+        raise ValueError(f"q: expected 4 entries, got {len(q)}")
+    v = sp.Matrix(q[:3])
+    q0 = q[3]
+    n2 = (v.T * v)[0] + q0**2
+    return ((q0**2 - (v.T * v)[0]) * sp.eye(3) + 2 * v * v.T + 2 * q0 * cpm(v)) / n2
+
+
+def block(rows) -> sp.Matrix:
+    """Explicit block matrix from a nested list of matrices/scalars (scalars become 1 x 1).
+
+    Used for the book's stacked arrays (``[e; phi]``, ``[[1, O], [A - B, 1]]``).
+    """
+    def _m(x):
+        return x if isinstance(x, sp.MatrixBase) else sp.Matrix([[x]])
+
+    return sp.Matrix(sp.BlockMatrix([[_m(x) for x in row] for row in rows]).as_explicit())

@@ -1,0 +1,185 @@
+"""Constrained symbols: the atoms declarations are built from.
+
+A declaration never writes ``e1**2 + e2**2 + e3**2 = 1`` anywhere: it asks for a
+``unit_vector("e")`` and the zero test (:mod:`rigidsym.zero.decide`) imposes the constraint exactly
+by a rational parametrisation. The kinds of atoms:
+
+- ``unit_vector``: ``e . e = 1`` (stereographic projection of two free rationals);
+- ``unit_vector4``: ``x . x = 1`` in R^4 (stereographic projection of three rationals),
+  e.g. the Euler-Rodrigues parameters;
+- ``angle``: ``cos^2 + sin^2 = 1`` (tangent of a fraction of the angle); the bare angle
+  itself is kept as an independent variable, which is sound because an angle and its
+  sine/cosine are algebraically independent functions;
+- ``rotation``: ``Q^T Q = 1``, ``det Q = 1`` (rational quaternion parametrisation);
+- ``vector``/``scalar``/``matrix``: free.
+
+Each factory accepts ``t`` (the time symbol :data:`TIME`) to make the atoms functions of
+time; their derivatives, taken by ``sympy.diff``, are jets that the zero test treats as
+free variables (for unit vectors and rotations, through the jets of the parameters, so
+``e . e_dot = 0`` and ``Q^T Q_dot + Q_dot^T Q = 0`` hold exactly).
+
+A constraint belongs to the atoms a factory returns (:class:`ConstrainedSymbol`, or an
+undefined function carrying it), never to a name: a free ``vector("e")`` in a user module
+stays free however many unit vectors named ``e`` other modules declare.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import cache
+
+import sympy as sp
+from sympy.core.function import AppliedUndef
+
+__all__ = [
+    "TIME",
+    "Constraint",
+    "ConstrainedSymbol",
+    "constraint_of",
+    "constrained_atom",
+    "unit_vector",
+    "unit_vector4",
+    "angle",
+    "rotation",
+    "vector",
+    "scalar",
+    "matrix",
+    "symmetric_matrix",
+]
+
+#: The time symbol for trajectories.
+TIME = sp.Symbol("t", real=True)
+
+
+@dataclass(frozen=True, order=True)  # ordered: sympy's Basic.compare orders atom contents
+class Constraint:
+    """A constraint on a group of atoms; every atom of the group carries it.
+
+    Attributes:
+        kind: ``"unit"``, ``"unit4"``, ``"angle"`` or ``"rotation"``.
+        name: the group's book name (``"e"``, ``"phi"``, ``"Q"``).
+        names: the names of the atoms (symbol or function names), row-major for matrices.
+        timed: whether the atoms are functions of :data:`TIME`.
+    """
+
+    kind: str
+    name: str
+    names: tuple[str, ...]
+    timed: bool
+
+
+class ConstrainedSymbol(sp.Symbol):
+    """A real symbol that carries its :class:`Constraint`.
+
+    The constraint is part of the symbol's identity (like ``Dummy``'s index), so a free
+    ``Symbol("e_1", real=True)`` declared anywhere else is a *different* atom and is never
+    treated as a component of a unit vector: constraints are scoped to atoms, not to names.
+    It prints and sorts exactly as the plain symbol of the same name.
+    """
+
+    __slots__ = ("constraint",)
+
+    constraint: Constraint
+
+    def __new__(cls, name: str, constraint: Constraint, **assumptions):
+        cls._sanitize(assumptions, cls)
+        obj = sp.Symbol.__xnew__(cls, name, **assumptions)
+        obj.constraint = constraint
+        return obj
+
+    def __getnewargs_ex__(self):
+        return ((self.name, self.constraint), self._assumptions_orig)
+
+    def _hashable_content(self):
+        return sp.Symbol._hashable_content(self) + (self.constraint,)
+
+
+# sympy orders the factors of a product and dispatches printers by class *name*: named as
+# the plain Symbol, a constrained atom sorts and prints exactly as before (same reports)
+ConstrainedSymbol.__name__ = "Symbol"
+
+
+def constraint_of(atom) -> Constraint | None:
+    """The constraint an atom carries (a symbol or an applied function ``f(t)``), or ``None``
+    for a free atom."""
+    if isinstance(atom, ConstrainedSymbol):
+        return atom.constraint
+    if isinstance(atom, AppliedUndef):
+        return getattr(atom.func, "constraint", None)
+    return None
+
+
+@cache  # one object per atom: identity comparisons stay cheap in sympy's hot paths
+def constrained_atom(name: str, c: Constraint):
+    """The atom ``name`` of the group ``c`` (equal to the one its factory returned)."""
+    if c.timed:
+        # extra keyword arguments of an undefined function take part in its equality
+        return sp.Function(name, real=True, constraint=c)(TIME)
+    return ConstrainedSymbol(name, c, real=True)
+
+
+def _atom(name: str, t: sp.Symbol | None, c: Constraint | None = None):
+    if c is not None:
+        if t is not None and t != TIME:
+            raise ValueError(f"t: expected rigidsym.algebra.symbols.TIME or None, got {t!r}")
+        return constrained_atom(name, c)
+    if t is None:
+        return sp.Symbol(name, real=True)
+    return sp.Function(name, real=True)(t)
+
+
+def _components(name: str, n: int) -> list[str]:
+    return [f"{name}_{i}" for i in range(1, n + 1)]
+
+
+def unit_vector(name: str, t: sp.Symbol | None = None) -> sp.Matrix:
+    """A 3 x 1 unit vector (``e . e = 1`` imposed exactly by the zero test)."""
+    names = _components(name, 3)
+    c = Constraint("unit", name, tuple(names), t is not None)
+    return sp.Matrix([_atom(n, t, c) for n in names])
+
+
+def unit_vector4(name: str, t: sp.Symbol | None = None) -> sp.Matrix:
+    """A 4 x 1 unit vector, entries ``name_1 ... name_4`` (``x . x = 1`` imposed exactly).
+
+    The Euler-Rodrigues parameters ``eta = [r; r0]`` of a rotation are one (Sec. 2.3:
+    ``r . r + r0^2 = 1``).
+    """
+    names = _components(name, 4)
+    c = Constraint("unit4", name, tuple(names), t is not None)
+    return sp.Matrix([_atom(n, t, c) for n in names])
+
+
+def angle(name: str, t: sp.Symbol | None = None):
+    """An angle in radians (``cos^2 + sin^2 = 1`` imposed exactly by the zero test)."""
+    return _atom(name, t, Constraint("angle", name, (name,), t is not None))
+
+
+def rotation(name: str, t: sp.Symbol | None = None) -> sp.Matrix:
+    """A generic 3 x 3 proper orthogonal matrix (entries ``name_ij``, row-major)."""
+    names = [f"{name}_{i}{j}" for i in range(1, 4) for j in range(1, 4)]
+    c = Constraint("rotation", name, tuple(names), t is not None)
+    return sp.Matrix(3, 3, [_atom(n, t, c) for n in names])
+
+
+def vector(name: str, t: sp.Symbol | None = None, n: int = 3) -> sp.Matrix:
+    """A free n x 1 vector (entries ``name_1 ... name_n``)."""
+    return sp.Matrix([_atom(c, t) for c in _components(name, n)])
+
+
+def scalar(name: str, t: sp.Symbol | None = None):
+    """A free real scalar."""
+    return _atom(name, t)
+
+
+def matrix(name: str, rows: int = 3, cols: int = 3, t: sp.Symbol | None = None) -> sp.Matrix:
+    """A free rows x cols matrix (entries ``name_ij``)."""
+    return sp.Matrix(rows, cols, [_atom(f"{name}_{i}{j}", t)
+                                  for i in range(1, rows + 1) for j in range(1, cols + 1)])
+
+
+def symmetric_matrix(name: str, t: sp.Symbol | None = None) -> sp.Matrix:
+    """A free symmetric 3 x 3 matrix (entries ``name_ij`` with i <= j)."""
+    a = {(i, j): _atom(f"{name}_{min(i, j)}{max(i, j)}", t) for i in range(1, 4)
+         for j in range(1, 4)}
+    return sp.Matrix(3, 3, lambda i, j: a[(i + 1, j + 1)])

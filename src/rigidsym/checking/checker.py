@@ -1,0 +1,262 @@
+"""The checker: compute each declaration's verdict and back it with a numeric check.
+
+Verdicts: ``verified`` (every printed member equals the first, under the first-principles
+model, decided by :func:`rigidsym.zero.decide.decide_zero`), ``definition`` (a statement that
+introduces a new symbol), ``does-not-hold`` (some member differs: an exact rational
+counterexample is given, and the corrected form must verify), ``undecided`` (no method
+decided, or the numeric check disagrees: a defect, never counted as verified).
+
+Every verdict is backed by an mpmath evaluation of the *unparametrised* expressions at
+``NUMERIC_POINTS`` seeded points that satisfy the constraints exactly, at ``NUMERIC_DIGITS``
+digits.
+"""
+
+from __future__ import annotations
+
+import random
+import time
+from dataclasses import asdict, dataclass, field
+from fractions import Fraction
+
+import mpmath
+
+from rigidsym.checking.evidence import (
+    NUMERIC_DIGITS,
+    NUMERIC_POINTS,
+    _counterexample,
+    numeric_residual,
+)
+from rigidsym.checking.explicit import (
+    _EXPLICIT_CACHE,
+    _entries,
+    _fmt,
+    _rel_str,
+    _seed,
+    explicit,
+    shape_of,
+)
+from rigidsym.checking.records import member_record, model_words
+from rigidsym.checking.registry import REGISTRY, Equation, Rel, Statement
+from rigidsym.zero.decide import Unsupported, decide_zero, make_plan
+
+__all__ = ["Result", "check", "explicit", "shape_of", "NUMERIC_DIGITS", "NUMERIC_POINTS"]
+
+#: relative residual below which the numeric check agrees with "holds".
+AGREE_TOL = mpmath.mpf(10) ** -(NUMERIC_DIGITS - 15)
+#: relative residual above which the numeric check agrees with "does not hold".
+DIFFER_TOL = mpmath.mpf(10) ** -12
+
+
+@dataclass
+class Result:
+    """The checker's outcome for one id (the JSON row of ``rigidsym verify --json``)."""
+
+    id: str
+    title: str
+    kind: str
+    verdict: str
+    expected: str
+    method: str
+    printed_latex: str
+    printed: str
+    derived: str
+    corrected: str | None
+    counterexample: dict | None
+    cause: str | None
+    numeric: dict
+    seconds: float
+    section: str = ""
+    evidence: str | None = None
+    detail: str = ""
+    singular: str | None = None
+    failing_member: str | None = None
+    #: one record per member (printed, claim, corrected), see
+    #: :func:`rigidsym.checking.records.member_record`
+    members: list[dict] = field(default_factory=list)
+    #: the model's atoms and their constraints, in words ("e: unit vector, ...")
+    model: list[str] = field(default_factory=list)
+
+    def as_json(self) -> dict:
+        """Every field as a plain dict (the full record; the lean schema-2 row is
+        :func:`rigidsym.report.record.result_record`)."""
+        return asdict(self)
+
+
+# --------------------------------------------------------------------------- decide
+@dataclass
+class _RelOutcome:
+    zero: bool | None
+    method: str
+    detail: str
+    counterexample: dict | None = None
+    label: str = ""
+
+
+def decide_rel(rel: Rel, model: dict, seed: int) -> _RelOutcome:
+    """Decide one relation exactly (shape check first, then the zero test)."""
+    ls, rs = shape_of(rel.lhs), shape_of(rel.rhs)
+    lhs, rhs = explicit(rel.lhs, model), explicit(rel.rhs, model)
+    if ls != rs:
+        plan = make_plan(_entries(lhs) + _entries(rhs))
+        rng = random.Random(seed)
+        ce = None
+        for _ in range(100):
+            pt = {p: Fraction(rng.randint(-3, 3), rng.randint(1, 3)) for p in plan.params}
+            try:
+                ce = _counterexample(lhs, rhs, pt, seed)
+                break
+            except ZeroDivisionError:
+                continue
+        return _RelOutcome(False, "counterexample",
+                           f"shape mismatch: {ls[0]}x{ls[1]} vs {rs[0]}x{rs[1]}", ce, rel.label)
+    diff = [a - b for a, b in zip(_entries(lhs), _entries(rhs), strict=True)]
+    zr = decide_zero(diff, seed=seed)
+    if zr.zero is False:
+        ce = _counterexample(lhs, rhs, zr.witness, seed)
+        return _RelOutcome(False, "counterexample", zr.detail, ce, rel.label)
+    return _RelOutcome(zr.zero, zr.method, zr.detail, None, rel.label)
+
+
+def _combine(outs: list[_RelOutcome]) -> tuple[bool | None, str, str]:
+    if any(o.zero is False for o in outs):
+        o = next(o for o in outs if o.zero is False)
+        return False, "counterexample", o.detail
+    if any(o.zero is None for o in outs):
+        o = next(o for o in outs if o.zero is None)
+        return None, "undecided", o.detail
+    method = "random-exact" if any(o.method == "random-exact" for o in outs) else "exact-cancel"
+    details = "; ".join(sorted({o.detail for o in outs if o.method == method}))
+    return True, method, details
+
+
+def _derived_str(st: Statement) -> str:
+    if st.derived is not None:
+        return _fmt(st.derived)
+    return "; ".join(_fmt(explicit(r.lhs, st.model)) for r in st.printed)
+
+
+def check(eq: Equation | str) -> Result:
+    """Compute the verdict of one declaration, with its numeric backing.
+
+    Args:
+        eq: an :class:`Equation` or its id.
+
+    Returns:
+        A :class:`Result`; ``verdict`` is computed here, never read from the declaration.
+        An exception inside the declaration or the checker (a recursion limit in a huge
+        expression, say) gives ``undecided`` with the error named, never a crashed run.
+    """
+    if isinstance(eq, str):
+        eq = REGISTRY[eq]
+    t0 = time.perf_counter()
+    try:
+        return _check(eq, t0)
+    except Exception as exc:  # a defect to report as undecided, not to hide
+        return Result(
+            id=eq.id, title=eq.title, kind=eq.kind, verdict="undecided", expected=eq.expected,
+            method="undecided", printed_latex=eq.latex, printed="", derived="",
+            corrected=None, counterexample=None, cause=None,
+            numeric={"points": 0, "digits": NUMERIC_DIGITS, "max_residual": None,
+                     "seed": _seed(eq.id)},
+            seconds=round(time.perf_counter() - t0, 3), section=eq.section,
+            detail=f"{type(exc).__name__} while checking: {str(exc)[:200]}",
+            singular=eq.singular)
+
+
+def _check(eq: Equation, t0: float) -> Result:
+    seed = _seed(eq.id)
+    st = eq.build()
+    _EXPLICIT_CACHE.clear()
+    verdict, method, detail = "undecided", "undecided", ""
+    members: list[dict] = []
+    ce = None
+    failing = None
+    backing: list[Rel] = []
+    printed_res = None
+    corrected_str = _rel_str(st.corrected)
+    if eq.kind == "definition":
+        ok = True
+        for r in st.printed:
+            name = getattr(r.lhs, "name", None)
+            if shape_of(r.lhs) != shape_of(r.rhs):
+                ok = False
+                detail = f"shape mismatch in definition of {name}"
+            elif name not in st.defines:
+                ok = False
+                detail = f"lhs {_fmt(r.lhs)} is not a symbol this definition introduces"
+        outs = [decide_rel(r, st.model, seed) for r in st.claims]
+        members = [member_record(r, "printed", None) for r in st.printed]
+        members += [member_record(r, "claim", o) for r, o in zip(st.claims, outs, strict=True)]
+        if ok and all(o.zero for o in outs):
+            verdict, method = "definition", "definition"
+            detail = "introduces " + ", ".join(st.defines)
+            backing = list(st.claims)
+        elif ok:
+            verdict, method, detail = ("undecided", "undecided",
+                                       "a claim attached to the definition was not verified")
+    else:
+        outs = [decide_rel(r, st.model, seed + i) for i, r in enumerate(st.printed + st.claims)]
+        members = [member_record(r, "printed" if i < len(st.printed) else "claim", o)
+                   for i, (r, o) in enumerate(zip(st.printed + st.claims, outs, strict=True))]
+        zero, method, detail = _combine(outs)
+        if zero:
+            verdict = "verified"
+            backing = st.printed + st.claims
+        elif zero is False:
+            verdict = "does-not-hold"
+            bad = next(o for o in outs if o.zero is False)
+            ce, failing = bad.counterexample, bad.label or None
+            if ce is not None:
+                ce["member"] = bad.label
+            if not st.corrected:
+                verdict, detail = "undecided", "does not hold, but no corrected form is declared"
+            else:
+                couts = [decide_rel(r, st.model, seed + 100 + i)
+                         for i, r in enumerate(st.corrected)]
+                members += [member_record(r, "corrected", o)
+                            for r, o in zip(st.corrected, couts, strict=True)]
+                cz, cm, cd = _combine(couts)
+                if not cz:
+                    verdict = "undecided"
+                    detail = f"the corrected form did not verify ({cm}: {cd})"
+                else:
+                    detail = f"{bad.detail}; corrected form verified by {cm}"
+                backing = list(st.corrected)
+            try:
+                bad_rel = (st.printed + st.claims)[outs.index(bad)]
+                if shape_of(bad_rel.lhs) == shape_of(bad_rel.rhs):
+                    printed_res, _, _ = numeric_residual([bad_rel], st.model, seed)
+                else:  # a shape mismatch cannot hold at any point
+                    printed_res = mpmath.inf
+            except (Unsupported, TypeError) as exc:  # pragma: no cover
+                detail += f"; numeric of printed form failed: {exc}"
+    numeric = {"points": 0, "digits": NUMERIC_DIGITS, "max_residual": None, "seed": seed}
+    try:
+        rels = backing or [r for r in st.printed if shape_of(r.lhs) == shape_of(r.rhs)]
+        if rels:
+            worst, n, _ = numeric_residual(rels, st.model, seed)
+            numeric.update(points=n, max_residual=float(worst))
+            if verdict in ("verified", "definition", "does-not-hold") and backing:
+                if n < NUMERIC_POINTS:
+                    verdict, detail = "undecided", f"numeric check reached only {n} points"
+                elif worst > AGREE_TOL:
+                    verdict = "undecided"
+                    detail = f"numeric check disagrees: residual {mpmath.nstr(worst, 5)}"
+        if printed_res is not None:
+            numeric["printed_residual"] = (float(printed_res) if mpmath.isfinite(printed_res)
+                                           else "shape mismatch")
+            if verdict == "does-not-hold" and printed_res < DIFFER_TOL:
+                verdict, detail = "undecided", "numeric check finds the printed form holding"
+    except Unsupported as exc:
+        verdict, detail = "undecided", f"numeric check impossible: {exc}"
+    return Result(
+        id=eq.id, title=eq.title, kind=eq.kind, verdict=verdict, expected=eq.expected,
+        method=method if verdict != "undecided" else "undecided",
+        printed_latex=eq.latex, printed=_rel_str(st.printed) or "",
+        derived=_derived_str(st), corrected=corrected_str, counterexample=ce,
+        cause=eq.cause if verdict == "does-not-hold" else None, numeric=numeric,
+        seconds=round(time.perf_counter() - t0, 3), section=eq.section,
+        evidence=eq.evidence if verdict == "does-not-hold" else None, detail=detail,
+        singular=eq.singular, failing_member=failing, members=members,
+        model=model_words([explicit(r.lhs, st.model) for r in st.printed]
+                          + [explicit(r.rhs, st.model) for r in st.printed]))

@@ -1,0 +1,134 @@
+"""Explicit values of book symbols under a declaration's model, and small helpers of the
+checker (:mod:`rigidsym.checking.checker`): shapes, entries, the per-id seed.
+"""
+
+from __future__ import annotations
+
+import zlib
+
+import sympy as sp
+from sympy.matrices.expressions.matexpr import MatrixElement
+
+from rigidsym.checking.registry import Rel
+
+
+# --------------------------------------------------------------------------- helpers
+def explicit(x, model: dict | None = None):
+    """Substitute the model and return an explicit ``sp.Matrix`` or scalar expression.
+
+    Matrix expressions are evaluated structurally (blocks, sums, products, integer powers,
+    transposes, inverses, traces, determinants) on explicit operands: sympy's generic
+    ``doit()`` takes symbolic-summation and simplification paths that cost seconds or
+    minutes on block products and matrix powers.
+    """
+    model = model or {}
+    key = (id(x), id(model))
+    hit = _EXPLICIT_CACHE.get(key)
+    if hit is not None and hit[0] is x:
+        return hit[1]
+    if isinstance(x, sp.MatrixBase | sp.MatrixExpr):
+        y = sp.Matrix(_mx(x, model))
+    else:
+        y = _sc(sp.sympify(x), model)
+    _EXPLICIT_CACHE[key] = (x, y)
+    return y
+
+
+#: explicit() results within one check (keyed by object identity; cleared per check)
+_EXPLICIT_CACHE: dict = {}
+
+
+def _sc(s, model):
+    """Explicit scalar: model substituted, matrix-valued sub-terms evaluated."""
+    y = s.xreplace(model) if model else s
+    if not y.has(sp.Trace, sp.Determinant, MatrixElement, sp.MatrixExpr):
+        return y
+
+    def ev(z):
+        if isinstance(z, sp.Trace):
+            return _mx(z.arg, {}).trace()
+        if isinstance(z, sp.Determinant):
+            return _mx(z.arg, {}).det(method="berkowitz")
+        if isinstance(z, MatrixElement):
+            return _mx(z.parent, {})[int(z.i), int(z.j)]
+        return None
+
+    out = y.replace(lambda z: isinstance(z, sp.Trace | sp.Determinant | MatrixElement), ev)
+    return out.doit() if out.has(sp.MatrixExpr) else out
+
+
+def _mx(x, model) -> sp.ImmutableMatrix:
+    """Explicit value of a matrix expression (see :func:`explicit`)."""
+    im = sp.ImmutableMatrix
+    if isinstance(x, sp.MatrixBase):
+        return im(x.xreplace(model)) if model else im(x)
+    if isinstance(x, sp.MatrixSymbol):
+        v = model.get(x)
+        return im(v) if v is not None else im(x.as_explicit())
+    if isinstance(x, sp.Identity):
+        return im(sp.eye(int(x.rows)))
+    if isinstance(x, sp.ZeroMatrix):
+        return im(sp.zeros(*(int(n) for n in x.shape)))
+    if isinstance(x, sp.MatAdd):
+        args = [_mx(a, model) for a in x.args]
+        acc = args[0]
+        for a in args[1:]:
+            acc = acc + a
+        return im(acc)
+    if isinstance(x, sp.MatMul):
+        coeff, mats = sp.S.One, []
+        for a in x.args:
+            if isinstance(a, sp.MatrixBase | sp.MatrixExpr):
+                mats.append(_mx(a, model))
+            else:
+                coeff = coeff * _sc(a, model)
+        acc = mats[0]
+        for m in mats[1:]:
+            acc = acc * m
+        return im(coeff * acc) if coeff != 1 else im(acc)
+    if isinstance(x, sp.MatPow) and x.exp.is_Integer:
+        base, n = _mx(x.base, model), int(x.exp)
+        if n < 0:
+            base, n = im(base.inv()), -n
+        acc = im(sp.eye(base.rows))
+        for _ in range(n):
+            acc = acc * base
+        return im(acc)
+    if isinstance(x, sp.Transpose):
+        return im(_mx(x.arg, model).T)
+    if isinstance(x, sp.Inverse):
+        return im(_mx(x.arg, model).inv())
+    if isinstance(x, sp.BlockMatrix):
+        blocks = x.blocks
+        rows = [[_mx(blocks[i, j], model) for j in range(blocks.cols)]
+                for i in range(blocks.rows)]
+        return im(sp.BlockMatrix(rows).as_explicit())
+    # anything else (a custom operator of a derivations module): sympy's generic path
+    y = x.xreplace(model) if model else x
+    y = y.doit()
+    return im(y.as_explicit() if isinstance(y, sp.MatrixExpr) else y)
+
+
+def shape_of(x) -> tuple[int, int]:
+    """Shape of a matrix, matrix expression or scalar (a scalar is 1 x 1)."""
+    if isinstance(x, sp.MatrixBase | sp.MatrixExpr):
+        return tuple(int(n) for n in x.shape)
+    return (1, 1)
+
+
+def _entries(x) -> list:
+    return list(x) if isinstance(x, sp.MatrixBase) else [x]
+
+
+def _fmt(x) -> str:
+    return sp.sstr(x)
+
+
+def _rel_str(rels: list[Rel] | None) -> str | None:
+    if not rels:
+        return None
+    return "; ".join(f"{_fmt(r.lhs)} = {_fmt(r.rhs)}" for r in rels)
+
+
+def _seed(eq_id: str) -> int:
+    return zlib.crc32(eq_id.encode())

@@ -1,0 +1,99 @@
+"""Plain-data records the checker attaches to a result: members and the model in words.
+
+Kept apart from :mod:`rigidsym.checking.checker` (which decides) because these only describe: book
+notation for each member (:mod:`rigidsym.printing.notation`) and the constraints of the atoms.
+"""
+
+from __future__ import annotations
+
+import sympy as sp
+from sympy.core.function import AppliedUndef
+
+from rigidsym.algebra.symbols import TIME, constraint_of
+from rigidsym.printing import notation
+
+__all__ = ["member_record", "model_words", "MEMBER_TEXT_LIMIT", "MEMBER_LATEX_LIMIT"]
+
+
+def _entries(x) -> list:
+    return list(x) if isinstance(x, sp.MatrixBase) else [x]
+
+
+#: member texts longer than this are not kept: such a member is an explicit component
+#: matrix (a formula function applied entry by entry), not book notation
+MEMBER_TEXT_LIMIT = 400
+#: the same for the LaTeX of a member (LaTeX spends about three characters per symbol)
+MEMBER_LATEX_LIMIT = 1200
+
+
+def member_record(rel, role: str, out) -> dict:
+    """A member of a statement as plain data.
+
+    Args:
+        rel: the relation (:class:`rigidsym.checking.registry.Rel`).
+        role: ``printed``, ``claim`` or ``corrected``.
+        out: its decision (``zero``, ``method``, ``detail`` attributes), or ``None`` for a
+            member that a definition introduces.
+
+    Returns:
+        ``{"role", "label", "status", "method", "detail", "text", "latex"}``: status is
+        ``holds``, ``fails``, ``undecided`` or ``defines``; ``text`` (book notation,
+        Unicode) and ``latex`` are ``None`` when longer than :data:`MEMBER_TEXT_LIMIT`
+        and :data:`MEMBER_LATEX_LIMIT`.
+    """
+    if out is None:
+        status, method, detail = "defines", "definition", ""
+    else:
+        status = {True: "holds", False: "fails", None: "undecided"}[out.zero]
+        method, detail = out.method, out.detail
+    try:
+        text = f"{notation.text(rel.lhs)} = {notation.text(rel.rhs)}"
+        tex = notation.latex_relation(rel.lhs, rel.rhs)
+    except Exception:  # noqa: BLE001  describing a member must never change a verdict
+        text = tex = ""
+    return {"role": role, "label": rel.label, "status": status, "method": method,
+            "detail": detail,
+            "text": text if 0 < len(text) <= MEMBER_TEXT_LIMIT else None,
+            "latex": tex if 0 < len(tex) <= MEMBER_LATEX_LIMIT else None}
+
+
+_KIND_WORDS = {"unit": "unit vector, stereographic", "unit4": "unit 4-vector, stereographic",
+               "angle": "angle, half-angle tangent",
+               "rotation": "rotation, rational quaternion"}
+
+
+def model_words(exprs) -> list[str]:
+    """The atoms of explicit expressions grouped by constraint, in words.
+
+    Returns:
+        Sorted lines such as ``"e: unit vector, stereographic"``, then one ``"free: a, ω"``
+        line, then ``"along a motion (...)"`` when atoms depend on time.
+    """
+    try:
+        return _model_words(exprs)
+    except Exception:  # noqa: BLE001  a description must never change a verdict
+        return []
+
+
+def _model_words(exprs) -> list[str]:
+    groups, free, timed_any = {}, set(), False
+    for x in exprs:
+        for e in _entries(x):
+            e = sp.sympify(e)
+            for a in e.atoms(sp.Symbol, AppliedUndef):
+                if a == TIME:
+                    continue
+                timed = isinstance(a, AppliedUndef)
+                timed_any |= timed
+                name = a.func.__name__ if timed else a.name
+                c = constraint_of(a)  # carried by the atom (rigidsym.algebra.symbols), not its name
+                if c is not None:
+                    groups[c.name] = c.kind
+                else:
+                    free.add(notation.book_group(name))
+    out = sorted(f"{notation.book_text(n)}: {_KIND_WORDS.get(k, k)}" for n, k in groups.items())
+    if free:
+        out.append("free: " + ", ".join(sorted(free)))
+    if timed_any:
+        out.append("along a motion (derivatives as jets)")
+    return out

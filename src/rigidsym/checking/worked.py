@@ -1,0 +1,318 @@
+"""Worked-solution framework for the chapter's exercises: steps, answers, machine checks.
+
+A solution is data (:class:`Solution`): the statement with its citation, the given data,
+named steps (a sympy expression and one sentence of why), the answers (exact, floats
+beside them when rendered) and machine checks that do not reuse the solution path. The
+given data are declared parameters (:mod:`.worked_data`), so a solution re-runs on a
+student's data; :mod:`.worked_render` renders solutions (text, Markdown, HTML, LaTeX).
+Deciding truth is never done here by ``simplify()``: identities go to
+:func:`rigidsym.zero.decide.decide_zero`; closed algebraic numbers to their minimal polynomial.
+"""
+
+from __future__ import annotations
+
+import importlib
+from collections import OrderedDict
+from collections.abc import Callable
+from dataclasses import dataclass, field
+
+import sympy as sp
+
+from rigidsym.zero.decide import decide_zero
+
+from .worked_data import IllPosed, Param, Parameters, read_data, read_value  # noqa: F401
+from .worked_render import (
+    render_html,
+    render_latex,
+    render_markdown,
+    render_text,
+    to_json_value,
+)
+
+__all__ = [
+    "Step",
+    "Check",
+    "Solution",
+    "Param",
+    "Parameters",
+    "IllPosed",
+    "EXERCISE_IDS",
+    "normalise_id",
+    "exercise_module",
+    "parameters",
+    "solve",
+    "read_value",
+    "read_data",
+    "is_zero",
+    "identity_check",
+    "nonidentity_check",
+    "algebraic_zero",
+    "truth_check",
+    "exact_check",
+    "to_json_value",
+    "render_text",
+    "render_markdown",
+    "render_html",
+    "render_latex",
+]
+
+#: ``ex3.1`` ... ``ex3.21``.
+EXERCISE_IDS = [f"ex3.{k}" for k in range(1, 22)]
+_X = sp.Symbol("x_minpoly")
+
+
+@dataclass
+class Step:
+    """One named step: an expression and why it is taken."""
+
+    name: str
+    expr: object
+    why: str
+
+
+@dataclass
+class Check:
+    """A machine check: its name, whether it passed, and how it was decided."""
+
+    name: str
+    passed: bool
+    detail: str = ""
+
+
+@dataclass
+class Solution:
+    """A worked solution of one exercise.
+
+    Attributes:
+        id: ``"ex3.10"``.
+        title: a short title.
+        statement: a short quotation of the exercise.
+        citation: where the statement is (book, section, exercise).
+        given: the data, by name (exact sympy values or short strings).
+        steps: the solution, in order.
+        answers: the final answers by name (exact sympy values; matrices allowed).
+        checks: machine checks of the answers (independent of the solution path).
+        assumptions: data not in the text we have (figures, chapter 2), and caveats.
+        status: ``"solved"``, ``"partial"`` or ``"ill-posed"`` (the data admit no
+            answer; the steps end at the one that fails).
+        extra: free-form rendered text (tables) appended after the answers.
+        reason: for an ill-posed solution, why, in one sentence.
+    """
+
+    id: str
+    title: str
+    statement: str
+    citation: str
+    given: dict = field(default_factory=dict)
+    steps: list = field(default_factory=list)
+    answers: dict = field(default_factory=dict)
+    checks: list = field(default_factory=list)
+    assumptions: list = field(default_factory=list)
+    status: str = "solved"
+    extra: str = ""
+    reason: str = ""
+
+    @property
+    def checked(self) -> bool:
+        """True when there is at least one check and every check passed."""
+        return bool(self.checks) and all(c.passed for c in self.checks)
+
+    def step(self, name: str, expr, why: str):
+        """Append a step and return its expression (so derivations read top-down)."""
+        self.steps.append(Step(name, expr, why))
+        return expr
+
+    def check(self, c: Check) -> Check:
+        """Append a check and return it."""
+        self.checks.append(c)
+        return c
+
+    def fail(self, reason: str):
+        """End the solution here: the data make the exercise ill-posed.
+
+        Raises:
+            IllPosed: always, carrying this solution and ``reason`` (one sentence);
+                :func:`solve` returns the solution.
+        """
+        self.status = "ill-posed"
+        self.reason = reason
+        raise IllPosed(self, reason)
+
+    def __repr__(self) -> str:
+        verdict = f"checked={self.checked}" if self.status != "ill-posed" else self.reason
+        return f"<Solution {self.id} {self.title!r}: {self.status}, {verdict}>"
+
+    def _repr_html_(self) -> str:
+        return render_html(self)
+
+    def _repr_latex_(self) -> str:
+        return render_latex(self)
+
+
+# --------------------------------------------------------------------------- checks
+def identity_check(name: str, exprs, seed: int = 0) -> Check:
+    """Decide soundly that every expression in ``exprs`` vanishes identically.
+
+    Matrices are flattened. Constrained atoms (unit vectors, angles, rotations from
+    :mod:`rigidsym.algebra.symbols`) are parametrised exactly by the zero test.
+    """
+    flat = []
+    for e in exprs if isinstance(exprs, list | tuple) else [exprs]:
+        if isinstance(e, sp.MatrixBase):
+            flat.extend(list(e))
+        else:
+            flat.append(e)
+    r = decide_zero(flat, seed=seed)
+    detail = f"{r.method}: {r.detail}"
+    if r.zero is False and r.witness is not None:
+        detail += f" (entry {r.entry} non-zero at an exact point)"
+    return Check(name, r.zero is True, detail)
+
+
+def nonidentity_check(name: str, exprs, seed: int = 0) -> Check:
+    """Passes when the zero test *refutes* the identity with an exact counterexample."""
+    c = identity_check(name, exprs, seed)
+    refuted = not c.passed and c.detail.startswith("counterexample")
+    return Check(name, refuted, ("refuted by an exact rational counterexample: " if refuted
+                                 else "not refuted: ") + c.detail)
+
+
+def algebraic_zero(e) -> bool:
+    """Exactly decide that a closed expression (an algebraic number) is zero.
+
+    Uses the minimal polynomial over Q: ``e == 0`` iff that polynomial is ``x``.
+    """
+    e = sp.nsimplify(e) if isinstance(e, sp.Float) else sp.sympify(e)
+    if e.free_symbols:
+        raise ValueError(f"not a closed number: {e}")
+    e = sp.expand(e)
+    if e == 0:
+        return True
+    if e.is_Rational:
+        return False
+    return sp.minimal_polynomial(e, _X) == _X
+
+
+def exact_check(name: str, exprs) -> Check:
+    """Check that closed algebraic expressions (entries of matrices too) are all zero."""
+    flat = []
+    for e in exprs if isinstance(exprs, list | tuple) else [exprs]:
+        flat.extend(list(e) if isinstance(e, sp.MatrixBase) else [e])
+    bad = [i for i, e in enumerate(flat) if not algebraic_zero(e)]
+    if bad:
+        return Check(name, False, f"entries {bad} are not zero (minimal polynomial)")
+    return Check(name, True, f"{len(flat)} closed algebraic entries are 0 (minimal polynomial)")
+
+
+def truth_check(name: str, ok: bool, detail: str) -> Check:
+    """A check decided by exact comparison done by the caller (rationals, signs)."""
+    return Check(name, bool(ok), detail)
+
+
+def is_zero(v) -> bool:
+    """Exactly decide that a closed number, or every entry of a closed matrix, is zero
+    (the minimal polynomial, as :func:`algebraic_zero`)."""
+    return all(algebraic_zero(x) for x in (list(v) if isinstance(v, sp.MatrixBase) else [v]))
+
+
+# --------------------------------------------------------------------------- registry
+def normalise_id(text: str) -> str:
+    """``"3.10"``, ``"ex3.10"``, ``"3.01"`` -> ``"ex3.10"``.
+
+    Raises:
+        ValueError: if ``text`` names no exercise of the chapter.
+    """
+    t = text.strip().lower()
+    if t.startswith("ex"):
+        t = t[2:]
+    try:
+        chap, num = t.split(".")
+        k = int(num)
+    except ValueError:
+        raise ValueError(f"expected an exercise id like 3.10 or ex3.10, got {text!r}") from None
+    if chap != "3" or not 1 <= k <= 21:
+        raise ValueError(f"expected an exercise 3.1 ... 3.21, got {text!r}")
+    return f"ex3.{k}"
+
+
+def _exercises_package() -> str:
+    """The configured package of the worked exercises (the machinery reaches the book by
+    name, never by a static import)."""
+    from rigidsym import _config
+
+    return _config.EXERCISES
+
+
+def exercise_module(ex_id: str):
+    """The module of exercise ``ex_id`` (``PARAMETERS``, ``solve``, optional ``figure``).
+
+    Raises:
+        ValueError: if ``ex_id`` names no exercise of the chapter.
+    """
+    k = int(normalise_id(ex_id).split(".")[1])
+    return importlib.import_module(f"{_exercises_package()}.ex3_{k:02d}")
+
+
+def parameters(ex_id: str) -> Parameters:
+    """The given data of exercise ``ex_id``: names, the book's values, shapes, meanings.
+
+    An exercise with no numeric data (a proof for every body, line or motion) gives an
+    empty table and a sentence saying so.
+
+    Raises:
+        ValueError: if ``ex_id`` names no exercise of the chapter.
+    """
+    ex_id = normalise_id(ex_id)
+    mod = exercise_module(ex_id)
+    rows = tuple(getattr(mod, "PARAMETERS", ()))
+    note = getattr(mod, "DATA_NOTE", "") or (
+        "the book's data; change any of them" if rows else
+        "no numeric data: the exercise is stated for every body, line or motion, so "
+        "there is nothing to vary")
+    return Parameters(ex_id, rows, note, bool(getattr(mod, "MEASURED", False)),
+                      getattr(mod, "default_tol", None))
+
+
+#: solutions by exercise and data, most recent last (bounded: a student varies the data)
+_CACHE: OrderedDict[tuple, Solution] = OrderedDict()
+_CACHE_SIZE = 64
+
+
+def solve(ex_id: str, tol=None, **data) -> Solution:
+    """The worked solution of exercise ``ex_id`` on the book's data or on ``data``.
+
+    Args:
+        ex_id: ``"ex3.4"``, ``"3.4"``.
+        tol: compatibility tolerance of measured data (Exercises 3.4, 3.14, 3.19 only);
+            by default ``10^-3`` times the largest magnitude among the data when any
+            datum is a float, and exact compatibility otherwise.
+        **data: values of the exercise's parameters (:func:`parameters`); the others
+            keep the book's values. See :func:`read_value` for what a value may be.
+
+    Returns:
+        The :class:`Solution` (cached on the exercise and the data). Data that make the
+        exercise ill-posed give a solution with ``status == "ill-posed"`` that ends at
+        the failing step, ``reason`` saying why in one sentence.
+
+    Raises:
+        ValueError: an unknown exercise, a bad shape or value.
+        TypeError: an unknown parameter name or a bad type (the message names it).
+    """
+    ex_id = normalise_id(ex_id)
+    params = parameters(ex_id)
+    d = read_data(params, data, tol)
+    key = (ex_id, d.key())
+    if key in _CACHE:
+        _CACHE.move_to_end(key)
+        return _CACHE[key]
+    solver: Callable[..., Solution] = exercise_module(ex_id).solve
+    kwargs = dict(d.values, **({"tol": d.tol} if params.measured else {}))
+    try:
+        s = solver(**kwargs)
+    except IllPosed as exc:
+        s = exc.solution
+    s.assumptions.extend(d.notes)
+    _CACHE[key] = s
+    while len(_CACHE) > _CACHE_SIZE:
+        _CACHE.popitem(last=False)
+    return s

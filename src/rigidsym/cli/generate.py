@@ -1,0 +1,102 @@
+"""``rigidsym generate [--check]`` and ``rigidsym build-c``."""
+
+from __future__ import annotations
+
+import sys
+import time
+from pathlib import Path
+from types import SimpleNamespace
+
+__all__ = ["cmd_generate", "cmd_build_c", "GENERATE", "BUILD_C"]
+
+
+def _generate_args(p) -> None:
+    p.add_argument("--check", action="store_true",
+                   help="regenerate in memory; print a diff and exit 1 on any difference "
+                        "(2 when there is no generated/ folder to compare with)")
+    p.add_argument("--out", default=None, help="output folder (default: generated/)")
+    p.add_argument("--module", action="append", metavar="PATH_OR_DOTTED",
+                   help="a user module whose KERNELS to generate into --out (repeatable)")
+
+
+def cmd_generate(args) -> int:
+    """Generate the NumPy and C kernels into generated/ (--check: compare only)."""
+    from rigidsym.codegen.generator import check, default_out_dir, generate, write
+
+    if args.module:
+        from rigidsym.codegen.usergen import cmd_generate_user
+        return cmd_generate_user(args)
+    t0 = time.perf_counter()
+    out = Path(args.out) if args.out else default_out_dir()
+    if args.check and not out.is_dir():
+        # e.g. an installed wheel: there is no checkout to compare with
+        print(f"error: no generated/ folder here ({out}): run from the repository root",
+              file=sys.stderr)
+        return 2
+    res = generate()
+    for note in res.notes:
+        print(f"note: {note}", file=sys.stderr)
+    books = _notebooks()
+    if args.check:
+        diff = check(res, out)
+        stale = _check_notebooks(books, out)
+        if diff or stale:
+            sys.stdout.write(diff)
+            print(f"generated/ is stale: run `rigidsym generate` "
+                  f"({time.perf_counter() - t0:.1f} s)", file=sys.stderr)
+            return 1
+        print(f"generated/ is up to date: {len(res.kernels)} kernels, {len(res.files)} files, "
+              f"{len(books)} notebook files ({time.perf_counter() - t0:.1f} s)")
+        return 0
+    touched = write(res, out)
+    if books:
+        from rigidsym.notebooks import NOTEBOOK_DIR, write_files
+        touched += [f"{NOTEBOOK_DIR}/{n}" for n in write_files(books, out / NOTEBOOK_DIR)]
+    for t in touched:
+        print(f"wrote {t}")
+    print(f"{len(res.kernels)} kernels, {len(res.files)} files, {len(touched)} changed "
+          f"({time.perf_counter() - t0:.1f} s)")
+    return 0
+
+
+def _notebooks() -> dict[str, str]:
+    """The exercise notebooks (``{}`` with a note when nbformat is not installed)."""
+    try:
+        from rigidsym.notebooks import notebook_files
+        return notebook_files()
+    except ModuleNotFoundError as exc:
+        if exc.name != "nbformat":
+            raise
+        print("note: notebooks skipped: nbformat is not installed "
+              "(pip install \"rigidsym[notebooks]\")", file=sys.stderr)
+        return {}
+
+
+def _check_notebooks(books: dict[str, str], out: Path) -> bool:
+    """Print the stale notebook files; True when any differs."""
+    if not books:
+        return False
+    from rigidsym.notebooks import NOTEBOOK_DIR, check_files
+    stale = check_files(books, out / NOTEBOOK_DIR)
+    for name in stale:
+        print(f"stale notebook file: generated/{NOTEBOOK_DIR}/{name}")
+    return bool(stale)
+
+
+def _build_args(p) -> None:
+    p.add_argument("--force", action="store_true", help="rebuild even if cached")
+
+
+def cmd_build_c(args) -> int:
+    """Compile the generated C kernels (cffi) into the user cache directory."""
+    from rigidsym.kernels._build import build
+
+    path = build(force=args.force)
+    print(f"built {path}")
+    return 0
+
+
+GENERATE = SimpleNamespace(HELP="generate the NumPy and C kernels into generated/",
+                           add_arguments=_generate_args, run=cmd_generate)
+BUILD_C = SimpleNamespace(HELP="compile the generated C kernels into the user cache",
+                          add_arguments=_build_args, run=cmd_build_c)

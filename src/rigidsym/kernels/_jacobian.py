@@ -1,0 +1,189 @@
+"""Jacobians of the generated kernels: ``rigidsym.kernels.jacobian(name)``.
+
+For a kernel ``f`` with a generated ``f_with_jacobians`` (see
+:mod:`rigidsym.codegen.jacobians`), ``jacobian("f")`` is the module-level function
+``rigidsym.kernels._jacobian.f_jacobian``: same arguments as ``f`` (positional or keyword, plus
+``check``, ``on_singular`` and ``threads``; no ``out``), returning ``(values, jac)`` where
+``values`` is what ``f`` returns and ``jac[output][input]`` has shape ``batch + output_shape +
+input_shape``, entry ``[..., i, j]`` = ``d output[i] / d input[j]`` (JAX convention), one
+Jacobian per sample of the broadcast batch (never summed over a broadcast input).
+
+The functions are created on first access (module ``__getattr__``) and cached here, so they
+pickle by reference like any module-level function.
+"""
+
+from __future__ import annotations
+
+import inspect
+import textwrap
+from collections.abc import Callable
+
+from rigidsym.kernels import _state
+
+__all__ = ["jacobian", "euler_rate_matrix_jacobian"]
+
+#: suffix of the generated kernels with Jacobians (rigidsym.codegen.jacobians.SUFFIX)
+_SUFFIX = "_with_jacobians"
+_FN = "_jacobian"
+_EULER = ("euler_rate_matrix",)
+
+_TANGENT = {
+    "unit": "{a} is a unit vector: d/d{a} is the ambient derivative (all components "
+            "independent); along the sphere only directions d{a} with {a}.d{a} = 0 are "
+            "admissible (restrict jac[.][{a!r}] to them). The rates of the rotation "
+            "invariants in terms of omega are the book's N, L, H (3.76), with the left "
+            "inverses N~, L~, H~ (3.77) (kernels N_matrix, L_matrix, H_matrix, ...).",
+    "rotation": "{a} is a rotation: d/d{a} is the ambient derivative over its 9 entries; "
+                "admissible directions are d{a} = CPM(theta) {a} (tangent space of SO(3)); "
+                "their relation to the rates of the invariants is N, L, H (3.76)-(3.77).",
+}
+
+
+def _names() -> list[str]:
+    meta = _state.meta()
+    found = [n for n, m in meta.items() if m["public"] and n + _SUFFIX in meta]
+    found += [e for e in _EULER if any(n.startswith(e + "_") and n.endswith(_SUFFIX)
+                                       for n in meta)]
+    return sorted(found)
+
+
+def jacobian(name: str) -> Callable:
+    """The values-and-Jacobians function of kernel ``name``.
+
+    Args:
+        name: a public kernel of :mod:`rigidsym.kernels` whose outputs are one smooth
+            formula (every kernel without per-sample branches), or ``"euler_rate_matrix"``.
+
+    Returns:
+        A module-level (picklable) function with the kernel's arguments (positional or
+        keyword) and ``check``, ``on_singular``, ``threads``, returning ``(values, jac)``:
+        ``values`` as the kernel returns them, ``jac[output][input]`` of shape
+        ``batch + output_shape + input_shape`` (``d output[i] / d input[j]`` at
+        ``[..., i, j]``), per sample.
+
+    Raises:
+        ValueError: ``name`` has no generated Jacobian (the message lists those that do).
+
+    Example:
+        >>> from rigidsym import kernels
+        >>> f = kernels.jacobian("kinetic_energy")
+        >>> T, jac = f(I_C=[[1.0, 0, 0], [0, 2.0, 0], [0, 0, 3.0]], m=2.0,
+        ...            omega=[1.0, 0.0, 0.0], c_dot=[0.0, 1.0, 0.0])
+        >>> float(T), jac["T"]["c_dot"].tolist()
+        (1.5, [0.0, 2.0, 0.0])
+    """
+    if not isinstance(name, str) or name not in _names():
+        raise ValueError(f"name: expected a kernel with a generated Jacobian, one of "
+                         f"{', '.join(_names())}; got {name!r}")
+    return globals()[name + _FN] if name in _EULER else __getattr__(name + _FN)
+
+
+def _split(res: tuple, args: list[dict], outs: list[dict]):
+    n_out = len(outs)
+    values = res[0] if n_out == 1 else tuple(res[:n_out])
+    rest = iter(res[n_out:])
+    jac = {o["name"]: {a["name"]: next(rest) for a in args} for o in outs}
+    return values, jac
+
+
+def _evaluate(jname: str, args: tuple, check: bool, on_singular: str, threads: int | None):
+    """Call the generated kernel ``jname`` through the kernels' checked path (validation,
+    broadcasting, singular and non-finite rows); split its outputs into values and jac."""
+    meta = _state.meta()[jname]
+    n_out = len(meta["outputs"]) // (1 + len(meta["args"]))
+    res = _state.call(jname, tuple(args), check=check, on_singular=on_singular, threads=threads)
+    return _split(res, meta["args"], meta["outputs"][:n_out])
+
+
+def _doc(name: str, meta: dict) -> str:
+    def shp(s):
+        return "(...)" if not s else f"(..., {', '.join(map(str, s))})"
+    n_out = len(meta["outputs"]) // (1 + len(meta["args"]))
+    outs = meta["outputs"][:n_out]
+    lines = [f"Values and Jacobians of :func:`rigidsym.kernels.{name}`.", "",
+             f"    {meta['formula']}", "",
+             f"Book: Eq. {', '.join('(' + i + ')' for i in meta['ids'])}; derivatives by "
+             "sympy of the declared formula, before the half-angle rewrite.", "", "Args:"]
+    for a in meta["args"]:
+        lines.append(f"    {a['name']}: array-like {shp(a['shape'])}; {a['doc']}")
+    lines += ["    check, on_singular, threads: see :mod:`rigidsym.kernels` (no ``out``).", "",
+              "Returns:", "    (values, jac): values as the kernel returns them ("
+              + ", ".join(f"{o['name']} {shp(o['shape'])}" for o in outs) + "); "
+              "jac[output][input] of shape batch + output_shape + input_shape:"]
+    for o in outs:
+        for a in meta["args"]:
+            lines.append(f"        jac[{o['name']!r}][{a['name']!r}]: "
+                         f"{shp(tuple(o['shape']) + tuple(a['shape']))}")
+    lines += ["", "Raises:", "    TypeError / ValueError: as the kernel (bad argument)."]
+    if meta["singular"]:
+        lines.append(f"    SingularConfigurationError: on the singular set ({meta['singular']})"
+                     ", which the derivatives share, unless on_singular='nan'.")
+    notes = [_TANGENT[a["kind"]].format(a=a["name"]) for a in meta["args"]
+             if a["kind"] in _TANGENT]
+    lines += ["", "Notes:", "    Derivatives are in the ambient coordinates of each input."]
+    for t in notes:
+        lines += textwrap.wrap(t, 88, initial_indent="    ", subsequent_indent="    ")
+    lines += [f"    Generated kernel {name}{_SUFFIX}: {meta['ops']} operations, math hash "
+              f"{meta['hash']}."]
+    return "\n".join(lines)
+
+
+def _make(name: str) -> Callable:
+    jname = name + _SUFFIX
+    meta = _state.meta()[jname]
+    P = inspect.Parameter
+    sig = inspect.Signature(
+        [P(a["name"], P.POSITIONAL_OR_KEYWORD) for a in meta["args"]]
+        + [P("check", P.KEYWORD_ONLY, default=True),
+           P("on_singular", P.KEYWORD_ONLY, default="raise"),
+           P("threads", P.KEYWORD_ONLY, default=None)])
+
+    def fn(*args, **kwargs):
+        ba = sig.bind(*args, **kwargs)
+        ba.apply_defaults()
+        kw = dict(ba.arguments)
+        check, on_singular, threads = kw.pop("check"), kw.pop("on_singular"), kw.pop("threads")
+        return _evaluate(jname, tuple(kw.values()), check, on_singular, threads)
+
+    fn.__name__ = fn.__qualname__ = name + _FN
+    fn.__module__ = __name__
+    fn.__doc__ = _doc(name, meta)
+    fn.__signature__ = sig
+    return fn
+
+
+def __getattr__(attr: str):
+    # module-level functions made on first access, then cached: pickle finds them by name
+    if attr.endswith(_FN) and attr[:-len(_FN)] in _names() \
+            and attr[:-len(_FN)] not in _EULER:
+        fn = _make(attr[:-len(_FN)])
+        globals()[attr] = fn
+        return fn
+    raise AttributeError(f"module {__name__!r} has no attribute {attr!r}")
+
+
+def euler_rate_matrix_jacobian(angles, sequence: str, frame: str = "fixed", *,
+                               check: bool = True, on_singular: str = "raise",
+                               threads: int | None = None):
+    """Euler-angle rate matrix ``W`` (``omega = W eta_dot``, Exercise 3.10) and dW/d angles.
+
+    Args:
+        angles: array-like (..., 3), the Euler angles [rad] of ``sequence``.
+        sequence: one of the twelve intrinsic sequences ("ZXZ", "ZYX", ...).
+        frame: "fixed" (omega in the fixed frame) or "body".
+        check, on_singular, threads: see :mod:`rigidsym.kernels`.
+
+    Returns:
+        (W, jac): W (..., 3, 3); jac["W"]["angles"] (..., 3, 3, 3), entry [..., i, j, k] =
+        d W[i, j] / d angles[k].
+
+    Raises:
+        ValueError: bad sequence, frame or angles.
+
+    Example:
+        >>> W, jac = euler_rate_matrix_jacobian([0.1, 0.2, 0.3], "ZYX")
+        >>> jac["W"]["angles"].shape
+        (3, 3, 3)
+    """
+    base = _state.euler_name("euler_rate_matrix", sequence, frame)
+    return _evaluate(base + _SUFFIX, (angles,), check, on_singular, threads)

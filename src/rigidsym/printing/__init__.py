@@ -1,0 +1,1 @@
+"""The printing layer: book notation (Unicode, LaTeX) and LaTeX to MathML Core."""

@@ -1,0 +1,143 @@
+"""The chapter report and the exercises as self-contained HTML with MathML.
+
+One file each, inline CSS, no JavaScript, no network: it opens from disk on an offline
+machine, and MathML Core renders natively (Chromium >= 109, Firefox, Safari). Rendered from
+the schema-2 records (:func:`rigidsym.report.record.result_record`) through Jinja2 templates
+(``rigidsym/report/templates``); byte-identical from run to run.
+"""
+
+from __future__ import annotations
+
+import html
+from functools import cache
+
+import sympy as sp
+from jinja2 import Environment, PackageLoader, StrictUndefined
+from markupsafe import Markup
+
+from rigidsym.checking.checker import Result
+from rigidsym.printing import notation
+from rigidsym.printing.mathml import latex_to_mathml
+from rigidsym.report.markdown import anchor, sections
+from rigidsym.report.record import CITATION, RESIDUAL_FLOOR, result_record, summary
+
+__all__ = ["to_html", "markdown_to_html", "math_or_text"]
+
+
+@cache
+def _env() -> Environment:
+    return Environment(loader=PackageLoader("rigidsym.report", "templates"), autoescape=True,
+                       undefined=StrictUndefined, keep_trailing_newline=True,
+                       trim_blocks=False, lstrip_blocks=False)
+
+
+def math_or_text(latex: str | None, fallback: str | None, display: bool = True) -> Markup:
+    """MathML of ``latex``; the text ``fallback`` in ``<code>`` when there is no LaTeX or
+    the converter rejects it (a member too long to print, an unusual construct)."""
+    if latex:
+        try:
+            return Markup(latex_to_mathml(latex, display=display))
+        except ValueError:
+            pass
+    return Markup(f"<code>{html.escape(fallback or '(not shown: too long)')}</code>")
+
+
+def _value_mathml(text: str | None) -> Markup:
+    """An exact value printed by sympy (``Matrix([[1/2], ...])``) as MathML."""
+    if text is None:
+        return Markup("<i>shapes differ</i>")
+    try:
+        v = sp.sympify(text)
+    except (sp.SympifyError, SyntaxError, TypeError):
+        return Markup(f"<code>{html.escape(text)}</code>")
+    return math_or_text(notation.latex(v), text, display=False)
+
+
+def _numeric_text(n: dict) -> str:
+    res = n.get("max_residual")
+    if res is None:
+        return ""
+    shown = f"< {RESIDUAL_FLOOR:.0e}" if res <= RESIDUAL_FLOOR else f"{res:.1e}"
+    return (f"Numeric backing: {n['points']} points at {n['digits']} digits, max relative "
+            f"residual {shown} (seed {n['seed']}).")
+
+
+def _view(rec: dict) -> dict:
+    v = dict(rec, anchor=anchor(rec["id"]),
+             printed_mathml=math_or_text(rec["printed_latex"], rec["printed_latex"]),
+             numeric_text=_numeric_text(rec["numeric"]))
+    v["members"] = [dict(m, mathml=math_or_text(m["latex"], m["text"])) for m in rec["members"]]
+    v["failing_text"] = next((m["text"] for m in rec["members"]
+                              if m["status"] == "fails" and m["role"] != "corrected"), None)
+    ce = rec["counterexample"]
+    if ce:
+        v["ce"] = dict(ce, lhs_mathml=_value_mathml(ce["lhs"]),
+                       rhs_mathml=_value_mathml(ce["rhs"]),
+                       residual_mathml=_value_mathml(ce.get("residual")),
+                       residual_max_abs=ce.get("residual_max_abs"),
+                       residual_max_abs_decimal=ce.get("residual_max_abs_decimal"))
+    else:
+        v["ce"] = None
+    return v
+
+
+def to_html(results: list[Result]) -> str:
+    """The chapter report as one self-contained HTML page.
+
+    Args:
+        results: checker results in book order.
+
+    Returns:
+        HTML text: summary counts, the equations that do not hold (each linking to its
+        entry), a table of contents by section, then one entry per equation with the anchor
+        ``#eq-<id>``.
+    """
+    views = [_view(result_record(r, timings=False)) for r in results]
+    s = summary(results)
+    return _env().get_template("chapter3.html.j2").render(
+        citation=CITATION.replace("*", ""), counts=list(s.items()), total=len(results),
+        bad=[v for v in views if v["verdict"] == "does-not-hold"],
+        off=[v for v in views if v["verdict"] != v["expected"]],
+        groups=sections(views))
+
+
+def markdown_to_html(text: str, title: str, figures: dict[str, str] | None = None) -> str:
+    """A Markdown document with ``$...$``/``$$...$$`` maths as one self-contained page.
+
+    Converted by markdown-it-py with its dollar-math plugin, each formula through
+    :func:`latex_to_mathml`; an image whose source is a key of ``figures`` is replaced by
+    that SVG text, inline (so the page needs no other file).
+
+    Args:
+        text: Markdown.
+        title: the page title.
+        figures: image source -> SVG document text.
+
+    Returns:
+        HTML text.
+    """
+    from markdown_it import MarkdownIt
+    from mdit_py_plugins.dollarmath import dollarmath_plugin
+
+    figures = figures or {}
+
+    def render_math(content: str, opts: dict) -> str:
+        return str(math_or_text(content, content, display=opts.get("display_mode", False)))
+
+    # html: the anchors <a id="ex-3.10"> of our own Markdown pass through
+    md = MarkdownIt("commonmark", {"html": True}).enable("table")
+    md.use(dollarmath_plugin, double_inline=True, renderer=render_math)
+    default_image = md.renderer.rules.get("image")
+
+    def image(renderer, tokens, idx, options, env):
+        src = tokens[idx].attrGet("src")
+        if src in figures:
+            svg = figures[src]
+            svg = svg[svg.index("<svg"):]  # drop the XML prolog and doctype: inline SVG
+            alt = html.escape(tokens[idx].content or "")
+            return f'<figure role="img" aria-label="{alt}">{svg}</figure>'
+        return default_image(tokens, idx, options, env)
+
+    md.add_render_rule("image", image)
+    body = md.render(text)
+    return _env().get_template("page.html.j2").render(title=title, body=Markup(body))

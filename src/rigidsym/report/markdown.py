@@ -1,0 +1,169 @@
+"""The chapter report in Markdown (rendered by GitHub and GitLab), from schema-2 records.
+
+The lean report (committed) carries the same content as the HTML report and no expanded
+component dumps; ``full=True`` adds them (``chapter3-full.md``, never committed).
+"""
+
+from __future__ import annotations
+
+import sympy as sp
+
+from rigidsym.checking.checker import NUMERIC_DIGITS, NUMERIC_POINTS, Result
+from rigidsym.printing import notation
+from rigidsym.report.record import CITATION, RESIDUAL_FLOOR, result_record, summary
+
+__all__ = ["to_markdown", "anchor", "sections", "how_checked", "numeric_words"]
+
+
+def anchor(eq_id: str) -> str:
+    """The anchor of an equation in the reports (``eq-3.96e``)."""
+    return f"eq-{eq_id}"
+
+
+def sections(records: list[dict]) -> list[tuple[str, list[dict]]]:
+    """Records grouped by book section (``3.4.1`` -> ``3.4``), in book order."""
+    out: dict[str, list[dict]] = {}
+    for rec in records:
+        out.setdefault(".".join(rec["section"].split(".")[:2]), []).append(rec)
+    return list(out.items())
+
+
+def _cell(text: str) -> str:
+    return (text or "").replace("|", "\\|").replace("\n", " ")
+
+
+def _code(text: str) -> str:
+    return "`" + (text or "").replace("`", "'") + "`"
+
+
+def _members(rec: dict) -> list[str]:
+    out = []
+    for m in rec["members"]:
+        who = [m["role"]] if m["role"] != "printed" else []
+        who += [f"*{_cell(m['label'])}*"] if m["label"] else []
+        how = f" ({m['method']})" if m["status"] in ("holds", "fails") and \
+            m["method"] != rec["method"] else ""  # the verdict line names the common method
+        form = f" {_code(m['text'])}" if m["text"] else " (long explicit form: see the full report)"
+        out.append(f"- {' '.join(who) + ': ' if who else ''}**{m['status']}**{how}{form}")
+    return out
+
+
+def numeric_words(n: dict) -> str:
+    """The numeric backing in one sentence ("" when there is none)."""
+    res = n.get("max_residual")
+    if res is None:
+        return ""
+    shown = f"< {RESIDUAL_FLOOR:.0e}" if res <= RESIDUAL_FLOOR else f"{res:.1e}"
+    extra = "" if (n["points"], n["digits"]) == (NUMERIC_POINTS, NUMERIC_DIGITS) else \
+        f" ({n['points']} points, {n['digits']} digits)"  # the header states the usual ones
+    return f"Numeric residual {shown}{extra}."
+
+
+def how_checked(rec: dict) -> str:
+    """Model, singular set and numeric backing in one paragraph."""
+    out = []
+    if rec["model"]:
+        out.append("Model: " + "; ".join(rec["model"]) + ".")
+    if rec["singular"]:
+        out.append(f"Singular set: {rec['singular']}.")
+    out.append(numeric_words(rec["numeric"]))
+    return " ".join(x for x in out if x)
+
+
+def _value(text: str) -> str:
+    """An exact value (sympy's string) in book notation on one line: ``[1/2, 0; 0, 1]``."""
+    try:
+        return notation.text(sp.sympify(text))
+    except (sp.SympifyError, SyntaxError, TypeError):
+        return text
+
+
+def _counterexample(ce: dict) -> list[str]:
+    out = ["Counterexample (exact rational point"
+           + (f", member *{_cell(ce['member'])}*" if ce["member"] else "") + "):", "",
+           "| atom | exact | decimal |", "|---|---|---|"]
+    out += [f"| {_cell(p['book'])} | {_code(p['exact'])} | {p['decimal']} |" for p in ce["point"]]
+    out += ["", "Both sides there, and the residual (left minus right):", "", "```",
+            f"left  = {_value(ce['lhs'])}", f"right = {_value(ce['rhs'])}"]
+    if ce.get("residual") is not None:
+        out += [f"left - right = {_value(ce['residual'])}", "```", "",
+                f"Largest residual entry: {ce['residual_max_abs']} "
+                f"(≈ {ce['residual_max_abs_decimal']}).", ""]
+    else:
+        out += ["```", "", "The two sides have different shapes.", ""]
+    return out
+
+
+def _entry(rec: dict, full: bool) -> list[str]:
+    out = [f'### ({rec["id"]}) {rec["title"]} <a id="{anchor(rec["id"])}"></a>', ""]
+    how = rec["method"]
+    if rec["failure_bound"] is not None and rec["verdict"] != "does-not-hold":
+        how += f", P(false zero) ≤ {rec['failure_bound']:.1e}"
+    line = f"Sec. {rec['section']} · {rec['kind']} · **{rec['verdict']}** · {how}"
+    if rec["verdict"] == rec["kind"] == "definition":
+        line = f"Sec. {rec['section']} · **definition**"
+    out += [line, "",
+            f"$${rec['printed_latex']}$$", ""]
+    ms = rec["members"]
+    if not (len(ms) == 1 and ms[0]["status"] == "holds" and not ms[0]["label"]):
+        out += _members(rec) + [""]  # one unlabelled member that holds: the line above says it
+    if rec["verdict"] == "does-not-hold":
+        fm = rec["failing_member"]
+        out += [f"Fails: {'member *' + _cell(fm) + '*' if fm else 'the equation (one member)'}."
+                f" Cause: **{rec['cause_class']}**. {rec['evidence']}", ""]
+        if rec["counterexample"]:
+            out += _counterexample(rec["counterexample"])
+    out += [how_checked(rec), ""]
+    if full:
+        out += ["Transcribed:", "", "```", rec["printed"], "```", "",
+                "Derived from first principles:", "", "```", rec["derived"], "```", ""]
+        if rec["corrected"]:
+            out += ["Corrected (expanded):", "", "```", rec["corrected"], "```", ""]
+    return out
+
+
+def to_markdown(results: list[Result], full: bool = False) -> str:
+    """The chapter report: summary, equations that do not hold, then every equation.
+
+    Args:
+        results: checker results in book order.
+        full: add each equation's expanded values (``chapter3-full.md``).
+
+    Returns:
+        Markdown text, deterministic (no timings).
+    """
+    recs = [result_record(r, timings=False, full=full) for r in results]
+    s = summary(results)
+    out = ["# Chapter 3 checked: verdicts", "",
+           f"Source: {CITATION}. Each equation is quoted singly with its number; the report "
+           "is generated by `rigidsym report` and is not edited by hand. The same content "
+           "with rendered mathematics: `chapter3.html`. Every verdict is backed by an mpmath "
+           f"evaluation at {NUMERIC_POINTS} seeded points, {NUMERIC_DIGITS} digits (the "
+           "numeric residual of each entry).", "",
+           "| verdict | count |", "|---|---|"]
+    out += [f"| {v} | {n} |" for v, n in s.items()]
+    out += [f"| **total** | {len(results)} |", ""]
+    bad = [r for r in recs if r["verdict"] == "does-not-hold"]
+    if bad:
+        out += ["## Equations that do not hold as printed", "",
+                "| id | title | failing member | cause | what is known |", "|---|---|---|---|---|"]
+        out += [f"| [({r['id']})](#{anchor(r['id'])}) | {_cell(r['title'])} | "
+                f"{_cell(r['failing_member'] or 'the equation')} | {r['cause_class']} | "
+                f"{_cell(r['evidence'])} |" for r in bad]
+        out.append("")
+    off = [r for r in recs if r["verdict"] != r["expected"]]
+    if off:
+        out += ["## Verdicts that differ from the recorded expectation", ""]
+        out += [f"- ({r['id']}): computed {r['verdict']}, expected {r['expected']}: "
+                f"{r['decision']}" for r in off]
+        out.append("")
+    groups = sections(recs)
+    out += ["## Contents", ""]
+    out += [f"- Section {sec}: " + ", ".join(f"[({r['id']})](#{anchor(r['id'])})" for r in rs)
+            for sec, rs in groups]
+    out.append("")
+    for sec, rs in groups:
+        out += [f"## Section {sec}", ""]
+        for rec in rs:
+            out += _entry(rec, full)
+    return "\n".join(out) + "\n"

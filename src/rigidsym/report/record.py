@@ -1,0 +1,164 @@
+"""Reports of checker results: the schema-2 record, JSON, and the chapter reports.
+
+The record of one result (:func:`result_record`) is the single source of every output: the
+JSON (``chapter3.json``, ``verify --json``), the Markdown (:mod:`rigidsym.report.markdown`), the
+HTML (:mod:`rigidsym.report.html`) and ``rigidsym show``. The committed reports hold no
+timings, so they are deterministic.
+"""
+
+from __future__ import annotations
+
+import json
+import re
+from collections import Counter
+
+import sympy as sp
+
+from rigidsym.checking.checker import Result
+from rigidsym.checking.registry import VERDICTS
+from rigidsym.printing import notation
+
+__all__ = ["summary", "result_record", "to_json", "cause_words",
+           "failure_bound", "CITATION", "SCHEMA", "RESIDUAL_FLOOR"]
+
+CITATION = ("J. Angeles, *Fundamentals of Robotic Mechanical Systems*, 4th ed., Springer, "
+            "Chap. 3")
+#: version of the JSON record; 2 added per-member records, the model in words, the cause
+#: class and the counterexample's residual and decimals, and moved expanded values to
+#: ``full`` documents.
+SCHEMA = 2
+
+#: In the committed report a residual below this is shown as this bound: the last digits
+#: of a 50-digit evaluation depend on evaluation order, which is not ours to fix.
+RESIDUAL_FLOOR = 1e-40
+
+_CAUSE_CLASS = {"conversion": "conversion garble", "erratum": "erratum"}
+_BOUND = re.compile(r"P\(false zero\) <= ([0-9.]+E[-+]?\d+)")
+
+
+def summary(results: list[Result]) -> dict[str, int]:
+    """Counts per verdict (every verdict listed, zeros included)."""
+    c = Counter(r.verdict for r in results)
+    return {v: c.get(v, 0) for v in VERDICTS}
+
+
+def _bounded(x):
+    return RESIDUAL_FLOOR if isinstance(x, float) and x < RESIDUAL_FLOOR else x
+
+
+def cause_words(r: Result) -> tuple[str, str]:
+    """The cause class of a does-not-hold and one sentence of what is known.
+
+    Returns:
+        ``(class, text)``: class is ``conversion garble``, ``erratum`` or ``cause not
+        determined`` (neither a garble nor a known erratum); text is the evidence, or for an
+        undetermined cause ``"Neither a conversion garble nor a known erratum; what is
+        known: ..."``. ``("", "")`` for
+        any other verdict.
+    """
+    if r.verdict != "does-not-hold":
+        return "", ""
+    cls = _CAUSE_CLASS.get(r.cause or "", "cause not determined")
+    known = r.evidence or r.detail
+    if cls == "cause not determined":
+        return cls, (f"Neither a conversion garble nor a known erratum; what is known: "
+                     f"{known}")
+    return cls, known
+
+
+def failure_bound(r: Result) -> float | None:
+    """The largest Schwartz-Zippel failure probability bound behind the verdict, if any."""
+    texts = [r.detail] + [m["detail"] for m in r.members if m["status"] == "holds"]
+    found = [float(x) for t in texts for x in _BOUND.findall(t or "")]
+    return max(found) if found else None
+
+
+def _decimal(value: str) -> str:
+    try:
+        v = sp.sympify(value)
+        if v.is_Integer:
+            return str(v)
+        return f"{float(sp.N(v, 17)):.8g}" if v.is_number else ""
+    except (sp.SympifyError, TypeError):
+        return ""
+
+
+def _atom_text(name: str) -> str:
+    """An atom's ``sstr`` (``Derivative(e_1(t), t)``, ``phi(t)``, ``s34_adot_1``) in book
+    notation."""
+    m = re.fullmatch(r"Derivative\((\w+)\(t\), (?:t, 2|\(t, 2\))\)", name)
+    if m:
+        return notation.book_text(m.group(1) + "_ddot")
+    m = re.fullmatch(r"Derivative\((\w+)\(t\), t\)", name)
+    if m:
+        return notation.book_text(m.group(1) + "_dot")
+    m = re.fullmatch(r"(\w+)\(t\)", name)
+    return notation.book_text(m.group(1) if m else name)
+
+
+def counterexample_record(ce: dict | None) -> dict | None:
+    """The counterexample with book names, decimals, the residual and its largest entry."""
+    if not ce:
+        return None
+    point = [{"atom": k, "book": _atom_text(k), "exact": v, "decimal": _decimal(v)}
+             for k, v in ce["point"].items()]
+    out = {"member": ce.get("member", ""), "point": point, "lhs": ce["lhs"], "rhs": ce["rhs"]}
+    res = ce.get("residual")
+    if res is not None:
+        out["residual"] = res
+        entries = sp.sympify(res)
+        entries = list(entries) if isinstance(entries, sp.MatrixBase) else [entries]
+        worst = max(abs(sp.Rational(x)) for x in entries)
+        out["residual_max_abs"] = str(worst)
+        out["residual_max_abs_decimal"] = _decimal(str(worst))
+    else:
+        out["residual"] = None
+    return out
+
+
+def result_record(r: Result, timings: bool = True, full: bool = False) -> dict:
+    """The schema-2 record of one result (plain data, JSON-ready).
+
+    Args:
+        r: a checker result.
+        timings: keep ``seconds``; ``False`` (committed reports) drops it and bounds tiny
+            residuals by :data:`RESIDUAL_FLOOR`, so that the record is byte-stable.
+        full: add the expanded first-principles values (``printed``, ``derived``,
+            ``corrected`` as sympy strings), which can be hundreds of kilobytes.
+
+    Returns:
+        A dict with the keys documented in the README ("JSON schema 2").
+    """
+    cls, why = cause_words(r)
+    numeric = dict(r.numeric)
+    if not timings:
+        numeric["max_residual"] = _bounded(numeric.get("max_residual"))
+    rec = {
+        "id": r.id, "title": r.title, "section": r.section, "kind": r.kind,
+        "verdict": r.verdict, "expected": r.expected, "method": r.method,
+        "failure_bound": failure_bound(r), "decision": r.detail,
+        "printed_latex": r.printed_latex, "members": r.members,
+        "failing_member": r.failing_member,
+        "cause": r.cause if r.verdict == "does-not-hold" else None,
+        "cause_class": cls or None, "evidence": why or None,
+        "counterexample": counterexample_record(r.counterexample),
+        "singular": r.singular, "model": r.model, "numeric": numeric,
+    }
+    if timings:
+        rec["seconds"] = r.seconds
+    if full:
+        rec.update(printed=r.printed, derived=r.derived, corrected=r.corrected)
+    return rec
+
+
+def to_json(results: list[Result], timings: bool = True, full: bool = False) -> str:
+    """The JSON document ``{"schema": 2, "equations": [...], "summary": {...}}``.
+
+    ``timings=False`` (the committed report) drops the seconds and bounds tiny residuals;
+    ``full=True`` adds the expanded values (``chapter3-full.json``).
+    """
+    rows = [result_record(r, timings=timings, full=full) for r in results]
+    return json.dumps({"schema": SCHEMA, "equations": rows, "summary": summary(results)},
+                      indent=1, sort_keys=False, ensure_ascii=False) + "\n"
+
+

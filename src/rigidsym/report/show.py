@@ -1,0 +1,203 @@
+"""``rigidsym show ID``: one equation explained in the terminal, in book notation.
+
+Verdict and method; each member with its status; for a does-not-hold the failing member,
+the cause and its evidence, the counterexample (the point, both sides there and the
+residual) and the corrected form; the singular set. Lines fit the width (``COLUMNS``, else
+the terminal's, else 100 when stdout is not a terminal) and are broken only between the
+terms of a sum, the rows of a matrix or its entries, never inside a term when that can be
+avoided.
+"""
+
+from __future__ import annotations
+
+import os
+import shutil
+import sys
+
+import sympy as sp
+
+from rigidsym.checking.checker import Result
+from rigidsym.checking.registry import Rel
+from rigidsym.printing import notation
+from rigidsym.report.record import cause_words, counterexample_record, result_record
+
+__all__ = ["explain", "output_width", "expr_lines", "DEFAULT_WIDTH"]
+
+#: width when stdout is not a terminal and ``COLUMNS`` is not set
+DEFAULT_WIDTH = 100
+
+
+def output_width() -> int:
+    """``COLUMNS`` when set to a positive integer, else the terminal's width when stdout is
+    a terminal, else :data:`DEFAULT_WIDTH`."""
+    try:
+        cols = int(os.environ.get("COLUMNS", ""))
+        if cols > 0:
+            return max(cols, 40)
+    except ValueError:
+        pass
+    if sys.stdout.isatty():
+        return max(shutil.get_terminal_size((DEFAULT_WIDTH, 24)).columns, 40)
+    return DEFAULT_WIDTH
+
+
+def _terms(expr) -> list:
+    if isinstance(expr, sp.Add | sp.MatAdd):
+        return list(expr.args)
+    return [expr]
+
+
+def _hard_wrap(text: str, width: int, indent: str) -> list[str]:
+    """Last resort for a single term wider than the line: break at spaces only."""
+    out, line = [], indent
+    for word in text.split(" "):
+        if len(line) + len(word) + 1 > width and line.strip():
+            out.append(line.rstrip())
+            line = indent + "  "
+        line += word + " "
+    out.append(line.rstrip())
+    return out
+
+
+def expr_lines(expr, width: int, indent: str = "") -> list[str]:
+    """``expr`` in book notation as lines no wider than ``width`` (where possible).
+
+    A sum too wide for one line gets one term per line (``+``/``-`` leading), a matrix one
+    row per line, then one entry per line; a single term still too wide is broken at
+    spaces.
+    """
+    t = notation.text(expr)
+    if len(indent) + len(t) <= width:
+        return [indent + t]
+    if isinstance(expr, sp.MatrixBase):
+        rows = [notation.text(expr.row(i)) for i in range(expr.rows)]
+        if all(len(indent) + len(r) + 2 <= width for r in rows):
+            return [indent + ("[" if i == 0 else " ") + r[1:-1] + ("]" if i == expr.rows - 1
+                                                                   else ";")
+                    for i, r in enumerate(rows)]
+        out = []
+        for i in range(expr.rows):
+            for j in range(expr.cols):
+                out.append(f"{indent}[{i + 1},{j + 1}] =")
+                out += expr_lines(expr[i, j], width, indent + "    ")
+        return out
+    if isinstance(expr, sp.BlockMatrix):
+        out = []
+        b = expr.blocks
+        for i in range(b.rows):
+            for j in range(b.cols):
+                out.append(f"{indent}block [{i + 1},{j + 1}] =")
+                out += expr_lines(b[i, j], width, indent + "    ")
+        return out
+    terms = _terms(expr)
+    if len(terms) > 1:
+        out = []
+        for k, term in enumerate(terms):
+            neg = notation.is_negative_term(term)
+            body = -term if neg else term
+            sign = ("- " if neg else "+ ") if k else ("-" if neg else "")
+            sub = expr_lines(body, width, indent + "  ")
+            out.append(indent + sign + sub[0].lstrip())
+            out += sub[1:]
+        return out
+    if isinstance(expr, sp.MatMul | sp.Mul) and any(len(notation.text(a)) > width // 2
+                                                   for a in expr.args):
+        # a product with a long factor (a sum in parentheses): factors on their own lines
+        out = [f"{indent}product of:"]
+        for a in expr.args:
+            out += expr_lines(a, width, indent + "    ")
+        return out
+    return _hard_wrap(t, width, indent)
+
+
+def _rel_lines(rel: Rel, width: int, indent: str) -> list[str]:
+    lhs = notation.text(rel.lhs)
+    one = f"{indent}{lhs} = {notation.text(rel.rhs)}"
+    if len(one) <= width:
+        return [one]
+    return [f"{indent}{lhs} ="] + expr_lines(rel.rhs, width, indent + "    ")
+
+
+def _value_lines(label: str, text: str | None, width: int, indent: str) -> list[str]:
+    if text is None:
+        return [f"{indent}{label}: (the two sides have different shapes)"]
+    try:
+        v = sp.sympify(text)
+    except (sp.SympifyError, SyntaxError, TypeError):
+        return [f"{indent}{label}: {text}"]
+    head = f"{indent}{label}: "
+    one = notation.text(v)
+    if len(head) + len(one) <= width:
+        return [head + one]
+    return [head.rstrip()] + expr_lines(v, width, indent + "    ")
+
+
+def explain(r: Result, rels: dict[str, list[Rel]], where: str, width: int) -> str:
+    """The explanation printed by ``rigidsym show``.
+
+    Args:
+        r: the checker's result.
+        rels: the statement's relations by role (``printed``, ``claim``, ``corrected``),
+            in the order of ``r.members``.
+        where: where the declaration lives (module, function, file).
+        width: the line width to fit.
+
+    Returns:
+        Text, no line wider than ``width`` unless a single unbreakable token is.
+    """
+    rec = result_record(r, timings=False)
+    out = [f"({r.id}) {r.title}",
+           *_hard_wrap(f"Book: Sec. {r.section} · {r.kind} · declared in {where}", width, "")]
+    verdict = f"Verdict: {r.verdict}"
+    if r.verdict != r.expected:
+        verdict += f" (EXPECTED {r.expected})"
+    verdict += f" · method: {r.method}"
+    bound = rec["failure_bound"]
+    if bound is not None and r.verdict != "does-not-hold":
+        verdict += f" · failure probability <= {bound:.1e}"
+    out += [verdict, ""]
+    pools = {k: list(v) for k, v in rels.items()}
+    blocks = {"printed": [], "claim": [], "corrected": []}
+    for m in r.members:
+        rel = pools[m["role"]].pop(0) if pools.get(m["role"]) else None
+        head = f"  [{m['status']}] {m['label'] or m['role']}"
+        if m["status"] in ("holds", "fails"):
+            head += f" ({m['method']})"
+        blocks[m["role"]].append(head + ":")
+        if rel is not None:
+            blocks[m["role"]] += _rel_lines(rel, width, "      ")
+    titles = {"printed": "Members as printed:", "claim": "Claims it makes:",
+              "corrected": "Corrected form (verified):"}
+    for role in ("printed", "claim"):
+        if blocks[role]:
+            out += [titles[role]] + blocks[role] + [""]
+    if r.verdict == "does-not-hold":
+        cls, why = cause_words(r)
+        fm = r.failing_member
+        out += [f"Fails: {'member ' + repr(fm) if fm else 'the equation (its only member)'}",
+                *_hard_wrap(f"Cause: {cls}. {why}", width, "  "), ""]
+        ce = counterexample_record(r.counterexample)
+        if ce:
+            out.append("Counterexample (an exact rational point):")
+            for p in ce["point"]:
+                dec = f"   (≈ {p['decimal']})" if p["decimal"] and p["decimal"] != p["exact"] \
+                    else ""
+                out += _hard_wrap(f"{p['book']} = {p['exact']}{dec}", width, "  ")
+            out += _value_lines("left side there", ce["lhs"], width, "  ")
+            out += _value_lines("right side there", ce["rhs"], width, "  ")
+            out += _value_lines("residual (left - right)", ce.get("residual"), width, "  ")
+            out.append("")
+    if blocks["corrected"]:
+        title = titles["corrected"]
+        if bound is not None:
+            title = title[:-1] + f" (failure probability <= {bound:.1e}):"
+        out += [title] + blocks["corrected"] + [""]
+    if r.singular:
+        out += _hard_wrap(f"Singular set: {r.singular}", width, "")
+    if r.model:
+        out += _hard_wrap("Model: " + "; ".join(r.model), width, "")
+    n = r.numeric
+    if n.get("max_residual") is not None:
+        out += _hard_wrap(f"Numeric backing: {n['points']} points at {n['digits']} digits, "
+                          f"max relative residual {n['max_residual']:.1e}", width, "")
+    return "\n".join(out)

@@ -1,0 +1,214 @@
+"""Exact evaluation of a planned expression (:mod:`rigidsym.zero.decide`, steps 2-4): at rational
+points with ``Fraction``, to a rational function over Q, and a bound on its degree.
+"""
+
+from __future__ import annotations
+
+from fractions import Fraction
+
+import sympy as sp
+from sympy.core.function import AppliedUndef
+
+from rigidsym.zero.plan import _TRIG, Plan, Unsupported, _linear_angles, _walk
+
+
+# --------------------------------------------------------------------------- evaluation
+def _cis(tau, k: int, one):
+    """(cos(2k atan tau), sin(2k atan tau)) as exact values: ((1 + i tau)^2/(1+tau^2))^k."""
+    d = one + tau * tau
+    c, s = (one - tau * tau) / d, 2 * tau / d
+    re, im = one, 0 * one
+    base_re, base_im = (c, s) if k >= 0 else (c, -s)
+    for _ in range(abs(k)):
+        re, im = re * base_re - im * base_im, re * base_im + im * base_re
+    return re, im
+
+
+def evaluate(expr, plan: Plan, point: dict, lift=Fraction, bare_value=None):
+    """Evaluate ``expr`` exactly at ``point`` (parameter symbol -> value).
+
+    Args:
+        expr: a sympy expression built from the plan's atoms.
+        plan: from :func:`make_plan`.
+        point: values of ``plan.params`` (``Fraction`` by default).
+        lift: converts a sympy Rational to the number type (``Fraction``, ``sp.Rational``…).
+        bare_value: optional ``angle atom -> value`` overriding the bare-angle variable
+            (used to make a counterexample consistent: ``phi = 2M atan(tau)``).
+
+    Raises:
+        Unsupported: for a node the exact evaluator cannot treat.
+        ZeroDivisionError: where a denominator vanishes at the point.
+    """
+    memo: dict = {}
+    one = lift(sp.Integer(1))
+
+    def ev(x):
+        r = memo.get(x)
+        if r is not None:
+            return r
+        r = _ev(x)
+        memo[x] = r
+        return r
+
+    def _ev(x):
+        if x.is_Rational:
+            return lift(x)
+        if x in point:
+            return point[x]
+        if bare_value is not None and x in bare_value:
+            return bare_value[x]
+        if x == sp.pi or isinstance(x, sp.Symbol | AppliedUndef | sp.Derivative):
+            rule = plan.rules.get(x)
+            if rule is None or rule == x:
+                raise Unsupported(f"no value for atom {x}")
+            return ev(rule)
+        if isinstance(x, sp.Add):
+            acc = 0 * one
+            for a in x.args:
+                acc = acc + ev(a)
+            return acc
+        if isinstance(x, sp.Mul):
+            acc = one
+            for a in x.args:
+                acc = acc * ev(a)
+            return acc
+        if isinstance(x, sp.Pow):
+            b, n = x.args
+            if n.is_Integer:
+                bv = ev(b)
+                n = int(n)
+                if n < 0:
+                    if bv == 0:
+                        raise ZeroDivisionError(str(x))
+                    return (one / bv) ** (-n)
+                return bv**n
+            if n.is_Rational and lift is Fraction:
+                bv = ev(b)
+                return _rational_root(bv, int(n.p), int(n.q))
+            raise Unsupported(f"power {x}")
+        if isinstance(x, sp.Abs):
+            return abs(ev(x.args[0]))
+        if isinstance(x, _TRIG):
+            coeffs, cpi = _linear_angles(x.args[0])
+            re, im = one, 0 * one
+            for a, c in coeffs.items():
+                tau, M = plan.angles[a]
+                k = int(c * M)
+                cr, ci = _cis(point[tau], k, one)
+                re, im = re * cr - im * ci, re * ci + im * cr
+            # rotation by cpi * pi, cpi a multiple of 1/2
+            q = int(2 * cpi) % 4
+            for _ in range(q):
+                re, im = -im, re
+            f = x.func
+            if f is sp.cos:
+                return re
+            if f is sp.sin:
+                return im
+            num, den = {sp.tan: (im, re), sp.cot: (re, im), sp.sec: (one, re),
+                        sp.csc: (one, im)}[f]
+            if den == 0:
+                raise ZeroDivisionError(str(x))
+            return num / den
+        raise Unsupported(f"node {type(x).__name__}: {x}")
+
+    return ev(sp.sympify(expr))
+
+
+def _rational_root(v: Fraction, p: int, q: int) -> Fraction:
+    if v < 0 and q % 2 == 0:
+        raise Unsupported("even root of a negative number")
+    sgn = -1 if v < 0 else 1
+    num, den = abs(v.numerator), v.denominator
+    rn, rd = _iroot(num, q), _iroot(den, q)
+    if rn is None or rd is None:
+        raise Unsupported("irrational root at the sample point")
+    return (Fraction(sgn * rn, rd)) ** p
+
+
+def _iroot(n: int, q: int):
+    r = round(n ** (1.0 / q)) if n < 2**1000 else None
+    if r is None:
+        return None
+    for c in (r - 1, r, r + 1):
+        if c >= 0 and c**q == n:
+            return c
+    return None
+
+
+def to_rational(expr, plan: Plan):
+    """The parametrised expression: a rational function over Q of ``plan.params``."""
+    memo: dict = {}
+
+    def tr(x):
+        if x in memo:
+            return memo[x]
+        if x.is_Rational or (x.is_Atom or isinstance(x, AppliedUndef | sp.Derivative)) and \
+                x not in plan.rules:
+            r = x
+        elif x in plan.rules:
+            r = plan.rules[x]
+            r = r if r == x else tr(r)
+        elif isinstance(x, _TRIG):
+            r = evaluate(x, plan, {tau: tau for tau, _ in plan.angles.values()},
+                         lift=lambda v: v)
+        elif x.args:
+            r = x.func(*[tr(a) for a in x.args])
+        else:
+            raise Unsupported(f"node {x}")
+        memo[x] = r
+        return r
+
+    return tr(sp.sympify(expr))
+
+
+def degree_bound(expr, plan: Plan) -> int:
+    """Upper bound on the total degree of the numerator of the parametrised expression."""
+    memo: dict = {}
+
+    def db(x) -> tuple[int, int]:
+        if x in memo:
+            return memo[x]
+        if x.is_Rational:
+            r = (0, 0)
+        elif isinstance(x, sp.Symbol | AppliedUndef | sp.Derivative):
+            rule = plan.rules.get(x, x)
+            r = (1, 0) if rule == x or isinstance(rule, sp.Symbol) else db(rule)
+        elif x == sp.pi:
+            r = (1, 0)
+        elif isinstance(x, sp.Add):
+            ds = [db(a) for a in x.args]
+            tot = sum(d for _, d in ds)
+            r = (max(n + tot - d for n, d in ds), tot)
+        elif isinstance(x, sp.Mul):
+            ds = [db(a) for a in x.args]
+            r = (sum(n for n, _ in ds), sum(d for _, d in ds))
+        elif isinstance(x, sp.Pow) and x.args[1].is_Integer:
+            n, d = db(x.args[0])
+            k = int(x.args[1])
+            r = (k * n, k * d) if k >= 0 else (-k * d, -k * n)
+        elif isinstance(x, _TRIG):
+            coeffs, _ = _linear_angles(x.args[0])
+            deg = sum(2 * abs(int(c * plan.angles[a][1])) for a, c in coeffs.items())
+            r = (deg, deg)
+        elif isinstance(x, sp.Abs):
+            r = db(x.args[0])
+        else:
+            raise Unsupported(f"degree of {x}")
+        memo[x] = r
+        return r
+
+    return db(sp.sympify(expr))[0]
+
+
+def _size(expr, limit: int) -> int:
+    """Node count of ``expr``, counting stops past ``limit``."""
+    n = 0
+
+    def visit(x):
+        nonlocal n
+        n += 1
+        return n <= limit
+
+    _walk(expr, visit)
+    return n

@@ -1,0 +1,232 @@
+"""Step 1 of the zero test (:mod:`rigidsym.zero.decide`): the *plan* that parametrises constrained
+atoms by rational functions of free parameters (stereographic unit vectors, rational
+quaternions, ``tan(phi / 2M)`` for the trigonometric functions of an angle) and turns
+derivatives along a motion into jets of those parameters.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from fractions import Fraction
+from functools import cache
+from math import gcd
+
+import sympy as sp
+from sympy.core.function import AppliedUndef
+
+from rigidsym.algebra.symbols import TIME, constrained_atom, constraint_of
+
+_TRIG = (sp.cos, sp.sin, sp.tan, sp.cot, sp.sec, sp.csc)
+
+
+class Unsupported(Exception):
+    """The expression holds something the exact evaluator cannot treat."""
+
+
+def _atom_name(a) -> str:
+    if isinstance(a, sp.Symbol):
+        return a.name
+    if isinstance(a, AppliedUndef):
+        return a.func.__name__
+    raise TypeError(a)
+
+
+def _constraint(a):
+    return constraint_of(a)  # carried by the atom itself, never looked up by name
+
+
+def _is_angle_atom(a) -> bool:
+    if isinstance(a, sp.Symbol | AppliedUndef):
+        c = _constraint(a)
+        return c is not None and c.kind == "angle"
+    return False
+
+
+def _deriv_order(d: sp.Derivative) -> int:
+    n = 0
+    for v, k in d.variable_count:
+        if v != TIME:
+            raise Unsupported(f"derivative with respect to {v}, not time")
+        n += int(k)
+    return n
+
+
+# --------------------------------------------------------------------------- jets
+def _jet_symbol(name: str, k: int, timed: bool = True) -> sp.Symbol:
+    """Symbol for the k-th time derivative of atom ``name`` (``name(t)``, ``name__d1`` …).
+
+    Static atoms keep their own symbol; time-dependent ones get names that cannot clash
+    with a static atom of the same book name.
+    """
+    if not timed:
+        return sp.Symbol(name, real=True)
+    return sp.Symbol(f"{name}(t)" if k == 0 else f"{name}__d{k}", real=True)
+
+
+def _replace_jets(expr, funcs: dict[str, sp.Expr]):
+    """Replace f(t) and its derivatives, for f named in ``funcs``, by jet symbols."""
+    reps = {}
+    for d in expr.atoms(sp.Derivative):
+        reps[d] = _jet_symbol(_atom_name(d.expr), _deriv_order(d))
+    expr = expr.xreplace(reps)
+    return expr.xreplace({f: _jet_symbol(n, 0) for n, f in funcs.items()})
+
+
+@cache
+def _group_rules(kind: str, name: str, names: tuple[str, ...], timed: bool, order: int):
+    """Rational rules ``(atom name, derivative order) -> expr`` for a constrained group."""
+    t = TIME
+    if kind == "unit":
+        pn = [f"{name}__u", f"{name}__v"]
+    elif kind == "unit4":
+        pn = [f"{name}__u", f"{name}__v", f"{name}__w"]
+    elif kind == "rotation":
+        pn = [f"{name}__q1", f"{name}__q2", f"{name}__q3", f"{name}__q0"]
+    else:
+        raise ValueError(kind)
+    P = [sp.Function(p, real=True)(t) for p in pn] if timed else \
+        [_jet_symbol(p, 0, timed=False) for p in pn]
+    if kind == "unit":
+        u, v = P
+        den = 1 + u**2 + v**2
+        vals = [2 * u / den, 2 * v / den, (1 - u**2 - v**2) / den]
+    elif kind == "unit4":
+        u, v, w = P
+        den = 1 + u**2 + v**2 + w**2
+        vals = [2 * u / den, 2 * v / den, 2 * w / den, (1 - u**2 - v**2 - w**2) / den]
+    else:
+        from rigidsym.algebra.primitives import rotation_from_quaternion
+        vals = list(rotation_from_quaternion(P))
+    rules = {}
+    funcs = dict(zip(pn, P, strict=True)) if timed else {}
+    for n, val in zip(names, vals, strict=True):
+        for k in range(order + 1):
+            ex = sp.diff(val, t, k) if (timed and k) else val
+            rules[(n, k)] = _replace_jets(ex, funcs) if timed else ex
+            if not timed:
+                break
+    return rules
+
+
+# --------------------------------------------------------------------------- plan
+@dataclass
+class Plan:
+    """How to evaluate a family of expressions exactly.
+
+    Attributes:
+        rules: atom (Symbol, f(t) or Derivative) -> rational expression in parameters.
+        angles: angle atom -> (tau symbol, M) with ``tau = tan(angle / (2 M))``.
+        bare: angle atom -> symbol standing for the bare angle (independent variable).
+        params: the free parameters, sorted by name.
+    """
+
+    rules: dict = field(default_factory=dict)
+    angles: dict = field(default_factory=dict)
+    bare: dict = field(default_factory=dict)
+    params: list = field(default_factory=list)
+
+
+def _linear_angles(arg) -> tuple[dict, Fraction]:
+    """Write a trig argument as sum c_j * angle_j + c * pi with rational c_j, c."""
+    arg = sp.expand(arg)
+    coeffs: dict = {}
+    cpi = Fraction(0)
+    for term in sp.Add.make_args(arg):
+        c, rest = term.as_coeff_Mul()
+        if not c.is_Rational:
+            raise Unsupported(f"trig argument {arg}")
+        if rest == sp.pi:
+            cpi += Fraction(int(c.p), int(c.q))
+        elif _is_angle_atom(rest):
+            coeffs[rest] = coeffs.get(rest, Fraction(0)) + Fraction(int(c.p), int(c.q))
+        else:
+            raise Unsupported(f"trig of non-angle argument {arg}")
+    if (2 * cpi).denominator != 1:
+        raise Unsupported(f"trig argument with pi multiple {cpi}")
+    return coeffs, cpi
+
+
+def _walk(expr, visit):
+    seen = set()
+    stack = [expr]
+    while stack:
+        x = stack.pop()
+        if x in seen:
+            continue
+        seen.add(x)
+        if visit(x):
+            stack.extend(x.args)
+
+
+def make_plan(exprs) -> Plan:
+    """Collect atoms of ``exprs`` and build the parametrisation that imposes constraints."""
+    plan = Plan()
+    params: set = set()
+    denoms: dict = {}
+    groups: dict = {}
+    free: set = set()
+
+    def visit(x):
+        if isinstance(x, sp.Derivative):
+            base = x.expr
+            if not isinstance(base, AppliedUndef):
+                raise Unsupported(f"derivative of a non-atom {x}")
+            _note(base, _deriv_order(x))
+            return False
+        if isinstance(x, AppliedUndef):
+            _note(x, 0)
+            return False
+        if isinstance(x, sp.Symbol):
+            if x != TIME:
+                _note(x, 0)
+            return False
+        if x == sp.pi:
+            # pi outside a trig argument: transcendental, so an independent variable is exact
+            plan.rules[sp.pi] = sp.Symbol("pi__var", real=True)
+            params.add(plan.rules[sp.pi])
+            return False
+        if isinstance(x, _TRIG):
+            coeffs, _ = _linear_angles(x.args[0])
+            for a, c in coeffs.items():
+                denoms[a] = denoms.get(a, 1) * c.denominator // gcd(denoms.get(a, 1),
+                                                                    c.denominator)
+            return False
+        return True
+
+    def _note(atom, k):
+        c = _constraint(atom)
+        if c is None or c.kind == "angle":
+            free.add((atom, k))
+            if c is not None and k == 0:
+                denoms.setdefault(atom, 1)
+        else:
+            groups[c] = max(groups.get(c, 0), k)
+
+    for e in exprs:
+        _walk(sp.sympify(e), visit)
+    # Constrained groups: rational rules for all atoms and derivative orders present.
+    for c, order in groups.items():
+        rules = _group_rules(c.kind, c.name, c.names, c.timed, order)
+        for (n, k), ex in rules.items():
+            atom = constrained_atom(n, c)
+            key = atom if k == 0 else sp.Derivative(atom, (TIME, k))
+            plan.rules[key] = ex
+            params |= ex.free_symbols
+    # Free atoms (and bare angles, kept independent): each its own variable.
+    for atom, k in free:
+        sym = _jet_symbol(_atom_name(atom), k)
+        key = atom if k == 0 else sp.Derivative(atom, (TIME, k))
+        if isinstance(atom, sp.Symbol) and k == 0:
+            plan.rules.setdefault(key, atom)
+        else:
+            plan.rules[key] = sym
+        params.add(plan.rules[key] if k == 0 and isinstance(atom, sp.Symbol) else sym)
+        if _is_angle_atom(atom) and k == 0:
+            plan.bare[atom] = plan.rules[key]
+    for a, M in denoms.items():
+        tag = "(t)" if isinstance(a, AppliedUndef) else ""
+        tau = sp.Symbol(f"tan({_atom_name(a)}{tag}/{2 * M})", real=True)
+        plan.angles[a] = (tau, M)
+        params.add(tau)
+    plan.params = sorted(params, key=lambda s: s.name)
+    return plan

@@ -1,0 +1,66 @@
+"""The public surface, pinned (in the style of NumPy's ``numpy/tests/test_public_api.py``).
+
+Each public module's ``__all__`` is listed here in full: adding or removing a public name
+fails this test until the list is updated on purpose (issues add their new names here).
+Everything else is private: an underscore, or not re-exported.
+"""
+
+from __future__ import annotations
+
+import importlib
+
+import pytest
+
+DECLARE = [
+    "Blocks", "Cross", "Det", "I3", "MS", "O3", "Rel", "RigidMotion", "Statement", "TIME",
+    "angle", "as_vector", "block", "cpm", "equation", "euler_rodrigues_parameters", "eye3",
+    "linear_invariants", "mat", "matrix", "rigid_motion", "rotation",
+    "rotation_from_euler_rodrigues", "rotation_from_natural_invariants",
+    "rotation_from_quaternion", "scalar", "symmetric_matrix", "trace", "unit_vector",
+    "unit_vector4", "vec", "vect", "vector",
+]
+KERNELS = [
+    "H_matrix", "H_matrix_dot", "H_tilde", "H_tilde_dot", "L_matrix", "L_matrix_dot",
+    "L_tilde", "L_tilde_dot", "N_matrix", "N_matrix_dot", "N_tilde", "N_tilde_dot",
+    "inertia_at_point", "inertia_dyad_at_point", "instant_screw_axis", "kinetic_energy",
+    "moving_frame_acceleration", "natural_invariants_from_rotation", "newton_euler_wrench",
+    "plucker_from_points", "plucker_transfer", "point_acceleration",
+    "rotation_from_euler_rodrigues", "rotation_from_natural_invariants", "screw_axis_point",
+    "screw_of_displacement", "twist_transfer", "twist_transfer_matrix", "wrench_axis",
+    "wrench_transfer", "wrench_transfer_matrix",
+]
+PUBLIC = {
+    "rigidsym": ["BadInput", "Result", "Results", "check", "load_module", "verify", *DECLARE],
+    "rigidsym.declare": DECLARE,
+    "rigidsym.kernels": [
+        "NonFiniteResultError", "SingularConfigurationError", "backend", "batch_function",
+        "euler_angle_rates", "euler_rate_matrix", "get_num_threads", "jacobian", "load",
+        "set_num_threads", "swap_blocks", "use_backend", *KERNELS],
+    "rigidsym.codegen.spec": ["Arg", "Branch", "Kernel", "Out", "input_symbols"],
+    "rigidsym.cli": ["build_parser", "main"],
+}
+
+
+@pytest.mark.parametrize("name", sorted(PUBLIC))
+def test_public_names_are_pinned(name):
+    mod = importlib.import_module(name)
+    assert sorted(mod.__all__) == sorted(PUBLIC[name]), (
+        f"{name}.__all__ changed: added {sorted(set(mod.__all__) - set(PUBLIC[name]))}, "
+        f"removed {sorted(set(PUBLIC[name]) - set(mod.__all__))}; update PUBLIC on purpose")
+    assert len(mod.__all__) == len(set(mod.__all__)), f"{name}.__all__ lists a name twice"
+
+
+@pytest.mark.parametrize("name", sorted(PUBLIC))
+def test_every_public_name_resolves(name):
+    mod = importlib.import_module(name)
+    for attr in PUBLIC[name]:
+        assert getattr(mod, attr) is not None, f"{name}.{attr}"
+
+
+def test_old_public_import_paths_keep_working():
+    from rigidsym.cli import main
+    from rigidsym.codegen.spec import Arg, Kernel
+    from rigidsym.kernels import N_matrix, load
+
+    assert callable(main) and callable(load) and callable(N_matrix)
+    assert Kernel.__module__ == Arg.__module__ == "rigidsym.codegen.spec"
