@@ -25,8 +25,9 @@ class Generation(Protocol):
     files: dict[str, str]
 
 #: file names under generated/ owned by the generator (anything else there is an orphan,
-#: except the report folder which belongs to ``rigidsym report``).
-_FOREIGN = ("report/",)
+#: except the report folder, which belongs to ``rigidsym report``, and the notebooks, which
+#: ``rigidsym generate`` writes through :mod:`rigidsym.notebooks`).
+_FOREIGN = ("report/", "notebooks/")
 
 
 def _on_disk(out: Path) -> dict[str, Path]:

@@ -4,10 +4,16 @@ show``, the Markdown and the HTML reports print (from the record's ``numeric`` f
 
 from __future__ import annotations
 
-from rigidsym.checking.checker import NUMERIC_DIGITS, NUMERIC_POINTS
+from rigidsym.checking.balls import NUMERIC_DIGITS, NUMERIC_POINTS
 from rigidsym.report.record import RESIDUAL_FLOOR
 
 __all__ = ["numeric_sentence"]
+
+
+def _bound(r: float) -> str:
+    # a committed record holds the floor for anything below it (its digits would depend on
+    # the working precision, not on the mathematics): print it as the round number it is
+    return f"{r:.0e}" if r == RESIDUAL_FLOOR else f"{r:.1e}"
 
 
 def numeric_sentence(n: dict, usual_stated: bool = False) -> str:
@@ -15,24 +21,39 @@ def numeric_sentence(n: dict, usual_stated: bool = False) -> str:
 
     Args:
         n: the record's ``numeric`` field (schema 2: ``points``, ``digits``,
-            ``max_residual``, ``seed``).
-        usual_stated: the document already states the usual points and precision
-            (:data:`~rigidsym.checking.checker.NUMERIC_POINTS`,
-            :data:`~rigidsym.checking.checker.NUMERIC_DIGITS`), so only departures from
-            them are named.
+            ``max_residual``, ``seed``, ``enclosure``, ``certified``, and for a
+            does-not-hold ``printed_residual`` and ``printed_enclosure``).
+        usual_stated: the document already states the usual points and precision, so
+            only departures from them are named.
 
     Returns:
-        ``"Numeric backing: 10 points at 50 digits, max relative residual < 1e-40 (seed
-        42)."``; with ``usual_stated``, ``"Numeric residual < 1e-40."``. A residual at or
-        below :data:`~rigidsym.report.record.RESIDUAL_FLOOR` is shown as ``< 1e-40``.
+        For example ``"Numeric backing (ball arithmetic, seed 42): residual enclosed in
+        [−r, r] at 10 points, r ≤ 1e-40; certified."``; for a does-not-hold it starts
+        with ``"0 ∉ [3.73 ± 3.3e-10], the printed form's residual ball at the
+        counterexample"``. A record without ``enclosure`` (written before the balls) gets
+        the former words: the max relative residual.
     """
-    res = n.get("max_residual")
-    if res is None:
+    if n.get("max_residual") is None and n.get("enclosure") is None:
         return ""
-    shown = f"< {RESIDUAL_FLOOR:.0e}" if res <= RESIDUAL_FLOOR else f"{res:.1e}"
-    if usual_stated:
-        usual = (n["points"], n["digits"]) == (NUMERIC_POINTS, NUMERIC_DIGITS)
-        extra = "" if usual else f" ({n['points']} points, {n['digits']} digits)"
-        return f"Numeric residual {shown}{extra}."
-    return (f"Numeric backing: {n['points']} points at {n['digits']} digits, max relative "
-            f"residual {shown} (seed {n['seed']}).")
+    if "enclosure" not in n:  # an older record: mpmath midpoints only
+        return (f"Numeric backing: {n['points']} points at {n['digits']} digits, max relative "
+                f"residual {_bound(n['max_residual'])} (seed {n['seed']}).")
+    parts = []
+    ball = n.get("printed_enclosure")
+    if ball:
+        shown = ball.replace("+/-", "±")
+        parts.append(f"0 ∉ {shown}, the printed form's residual ball at the counterexample")
+    if n.get("enclosure") is not None:
+        whose = "the corrected form's residual" if ball else "residual"
+        parts.append(f"{whose} enclosed in [−r, r] at {n['points']} points, "
+                     f"r ≤ {_bound(n['enclosure'])}")
+    how = [] if usual_stated else [f"seed {n['seed']}"]
+    if not usual_stated or n["digits"] != NUMERIC_DIGITS:
+        raised = " (precision raised where a ball was too wide)" \
+            if n["digits"] > NUMERIC_DIGITS else ""
+        how.append(f"{n['digits']} digits{raised}")
+    if usual_stated and n["points"] != NUMERIC_POINTS:
+        how.append(f"{n['points']} points")
+    verdict = "certified" if n.get("certified") else "not certified"
+    head = "Numeric backing (ball arithmetic" + (f", {', '.join(how)}" if how else "") + ")"
+    return f"{head}: {'; '.join(parts)}; {verdict}." if parts else f"{head}: {verdict}."

@@ -15,18 +15,21 @@ from rigidsym.report.record import to_json
 __all__ = ["write_user_report"]
 
 
-def write_user_report(modules, out: Path, jobs: int = 1) -> int:
+def write_user_report(modules, out: Path, jobs: int = 1, cache: bool = False) -> int:
     """``rigidsym report --module M --out DIR``: ``DIR/<M>.{md,json,html}``.
 
     The same Markdown, JSON and HTML as the chapter's, titled by the module and named after
     it (several modules: one set of files each).
+
+    ``cache`` reads and stores results in the verdict cache (the files are the same).
 
     Returns:
         The exit code: 1 when a computed verdict differs from the declared expectation.
     """
     code = 0
     for um in load_many(modules):
-        results = run_checks(select(None, None, [um.name]), jobs=jobs, progress=True)
+        results = run_checks(select(None, None, [um.name]), jobs=jobs, progress=True,
+                             cache=cache)
         title, source = f"{um.title} checked: verdicts", f"the user module {um.title}"
         files = {f"{um.title}.md": to_markdown(results, title=title, source=source),
                  f"{um.title}.json": to_json(results, timings=False),
