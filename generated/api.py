@@ -575,7 +575,6 @@ def N_tilde_dot(
     Notes:
         Singular set: phi = 0 (mod 2 pi): the axis, and so its rate, is undefined.
 
-    Notes:
         Generated; 79 operations; math hash b1c3eb794fbb8245.
     """
     return _call("N_tilde_dot", (e, phi, omega),
