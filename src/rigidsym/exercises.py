@@ -67,6 +67,9 @@ def solve(exercise: str, /, *, tol=None, **data) -> Solution:
 def parameters(exercise: str) -> Parameters:
     """The given data of ``exercise``: name, the book's value, shape, unit and meaning.
 
+    Args:
+        exercise: ``"ex3.4"``, ``"3.4"``.
+
     Returns:
         A :class:`Parameters` table (iterable of :class:`Param`; ``.names``,
         ``.defaults()``; shown as a table in a notebook). The ten exercises with no
@@ -81,6 +84,9 @@ def parameters(exercise: str) -> Parameters:
 
 def figure(solution: Solution):
     """The figure of a solved exercise, drawn from its own data and answers.
+
+    Args:
+        solution: a :class:`Solution` from :func:`solve`.
 
     Returns:
         A :class:`matplotlib.figure.Figure` (3-D axes for the geometric exercises; not
@@ -102,6 +108,11 @@ def figure(solution: Solution):
 def write_notebook(exercise: str, path: str | Path, **data) -> Path:
     """Write the notebook of ``exercise`` to ``path``; with ``data``, its data cell holds
     them instead of the book's values (checked as :func:`solve` checks them).
+
+    Args:
+        exercise: ``"ex3.4"``, ``"3.4"``.
+        path: the ``.ipynb`` file to write.
+        **data: the exercise's parameters by name, as for :func:`solve`.
 
     Returns:
         The path written (atomically).
