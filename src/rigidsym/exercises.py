@@ -16,8 +16,8 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from rigidsym.checking import worked as _worked
 from rigidsym.checking.worked import (
-    EXERCISE_IDS,
     IllPosed,
     Param,
     Parameters,
@@ -30,6 +30,9 @@ from rigidsym.checking.worked import solve as _solve
 
 __all__ = ["solve", "parameters", "figure", "write_notebook", "EXERCISE_IDS", "Solution",
            "Parameters", "Param", "IllPosed"]
+
+#: The ids of the chapter's exercises in order, ``"ex3.1"`` to ``"ex3.21"``.
+EXERCISE_IDS = _worked.EXERCISE_IDS
 
 
 def solve(exercise: str, /, *, tol=None, **data) -> Solution:
