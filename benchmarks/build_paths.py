@@ -7,8 +7,8 @@ rendered for them) is built by the package's driver three ways and loaded in one
 the default build the wheel ships (x86-64-v2, v3 and v4 objects, the dispatcher's choice;
 ``RIGIDSYM_DISPATCH=baseline`` times the baseline), the native build (``-march=native``, as
 ``rigidsym build-c --native``) and x86-64-v3 alone (what a CPU without AVX-512 runs; the
-AVX-512 path is built because it measured faster than it). Each kernel is timed alternately on them, one thread, caller-provided
-outputs, the same inputs; a cell is the minimum over rounds of one call at N samples
+AVX-512 path is built because it measured faster than it). Each kernel is timed
+alternately on them, one thread, caller-provided outputs, the same inputs; a cell is the minimum over rounds of one call at N samples
 (ns/sample), timed by the thread's CPU time as the peers benchmark does (on two cores shared
 with other jobs, wall time varies severalfold from preemption alone).
 K1 rotation_from_euler_rodrigues, K2 rotation_from_natural_invariants, K3 screw_axis_point,

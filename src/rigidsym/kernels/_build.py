@@ -11,7 +11,8 @@ compiled once per build path, with that path's ``-march`` and ``-DRIGIDSYM_ISA_S
 ``rigidsym_module.c`` once, with the baseline path's flags; all objects link into one module
 whose dispatcher (``rigidsym_dispatch.h``) picks a path at import. Paths: ``x86-64-v2``
 (baseline), ``x86-64-v3`` (AVX2 + FMA) and ``x86-64-v4`` (AVX-512) on x86-64, no ``-march``
-elsewhere, ``native`` (``-march=native``, one path) on request. Nothing built by default uses ``-march=native``.
+elsewhere, ``native`` (``-march=native``, one path) on request. Nothing built by default
+uses ``-march=native``.
 
 Flags of the kernels: ``-O3 -std=c99 -ffp-contract=fast`` (FMA contraction, never
 ``-ffast-math``; ``RIGIDSYM_CFLAGS`` replaces them). OpenMP (threads of the batch loops) and
