@@ -1,6 +1,6 @@
 """The default (portable, dispatched) build against a ``-march=native`` build, K1-K6.
 
-    python benchmarks/build_paths.py [--n 1000000] [--rounds 7] [--md]
+    python benchmarks/build_paths.py [--n 1000000] [--rounds 15] [--results]
 
 The six kernels' generated C (copied from ``generated/c``, with the extension's own C
 rendered for them) is built by the package's driver three ways and loaded in one process:
@@ -8,11 +8,12 @@ the default build the wheel ships (x86-64-v2, v3 and v4 objects, the dispatcher'
 ``RIGIDSYM_DISPATCH=baseline`` times the baseline), the native build (``-march=native``, as
 ``rigidsym build-c --native``) and x86-64-v3 alone (what a CPU without AVX-512 runs; the
 AVX-512 path is built because it measured faster than it). Each kernel is timed
-alternately on them, one thread, caller-provided outputs, the same inputs; a cell is the minimum over rounds of one call at N samples
-(ns/sample), timed by the thread's CPU time as the peers benchmark does (on two cores shared
-with other jobs, wall time varies severalfold from preemption alone).
-K1 rotation_from_euler_rodrigues, K2 rotation_from_natural_invariants, K3 screw_axis_point,
-K4 instant_screw_point_pitch, K5 N_matrix, K6 newton_euler_wrench.
+alternately on them, one thread, caller-provided outputs, the same inputs; a cell is the
+minimum over rounds of one call at N samples (ns/sample), timed by the thread's CPU time as
+the peers benchmark does (on two cores shared with other jobs, wall time varies severalfold
+from preemption alone). K1 rotation_from_euler_rodrigues, K2
+rotation_from_natural_invariants, K3 screw_axis_point, K4 instant_screw_point_pitch,
+K5 N_matrix, K6 newton_euler_wrench.
 """
 
 from __future__ import annotations
