@@ -39,6 +39,9 @@ PUBLIC = {
         "set_num_threads", "swap_blocks", "use_backend", *KERNELS],
     "rigidsym.codegen.spec": ["Arg", "Branch", "Kernel", "Out", "input_symbols"],
     "rigidsym.cli": ["build_parser", "main"],
+    # issue 22: the exercises to run, see and vary
+    "rigidsym.exercises": ["EXERCISE_IDS", "IllPosed", "Param", "Parameters", "Solution",
+                           "figure", "parameters", "solve", "write_notebook"],
 }
 
 
