@@ -113,7 +113,7 @@ def col_floor(name: str, build: Path):
     outputs can go below it by much; a kernel at this floor is memory-bound."""
     import cffi
 
-    from rigidsym.codegen import cbuild
+    from rigidsym.kernels import _build as cbuild
 
     ffi = cffi.FFI()
     ffi.cdef("uint64_t floor_read(const double *x, int64_t len);"
@@ -166,7 +166,7 @@ def col_sympy_c(name: str, build: Path):
     differ only in the code (not in call overhead or compiler flags)."""
     import cffi
 
-    from rigidsym.codegen import cbuild
+    from rigidsym.kernels import _build as cbuild
 
     k, flat, exprs = _declared(name)
     temps, red = sp.cse(exprs)
@@ -205,7 +205,7 @@ def col_sympy_c(name: str, build: Path):
 
 def _mvec() -> bool:
     """Whether the generated C was built in its libmvec variant."""
-    from rigidsym.codegen import cbuild
+    from rigidsym.kernels import _build as cbuild
     return cbuild.MVEC_FLAGS[0] in cbuild.build_variants(cbuild._flags())[0][0]
 
 

@@ -93,7 +93,7 @@ uint64_t floor_io(int64_t n, int threads, int nin, const char **in, const int64_
 def _floor_lib(build: Path):
     import cffi
 
-    from rigidsym.codegen import cbuild
+    from rigidsym.kernels import _build as cbuild
 
     ffi = cffi.FFI()
     ffi.cdef("uint64_t floor_io(int64_t n, int threads, int nin, const char **in, "
@@ -316,7 +316,7 @@ def main(argv=None) -> int:
     skip = set(filter(None, args.skip.split(",")))
     rounds = 3 if args.quick else 7
     assert K.use_backend("c") == "c", "the benchmarks need the C backend"
-    from rigidsym.codegen import cbuild
+    from rigidsym.kernels import _build as cbuild
 
     load0 = os.getloadavg()
     body = ["## Kernels at scale (issue 14)", "",

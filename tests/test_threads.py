@@ -13,7 +13,7 @@ import numpy as np
 import pytest
 
 import rigidsym.kernels as K
-from rigidsym.codegen import cbuild
+from rigidsym.kernels import _build as cbuild
 from rigidsym.kernels import _scale, _state
 
 HAVE_CC = bool(shutil.which("gcc") or shutil.which("cc"))
