@@ -130,3 +130,15 @@ np.savez("outputs.npz", Q=k.rodrigues_rotation(d["e"], d["phi"]),
         a, b = (sp.Matrix(x[i].tolist()) for x in eta)
         want = np.array(src.er_product(a, b).evalf(30), dtype=float).ravel()
         np.testing.assert_allclose(got["eta"][i], want, rtol=0, atol=1e-14)
+
+
+def test_wheel_ships_the_exercise_notebooks(wheel, installed, tmp_path):
+    """Issue 22: the 21 notebooks are package data, and an installed wheel writes one."""
+    with zipfile.ZipFile(wheel) as z:
+        names = set(z.namelist())
+    for k in range(1, 22):
+        assert f"rigidsym/generated/notebooks/ex3_{k:02d}.ipynb" in names, k
+    assert "rigidsym/generated/notebooks/README.md" in names
+    p = _run(installed, tmp_path, "-m", "rigidsym", "exercise", "3.4", "--notebook", "ex.ipynb")
+    assert p.returncode == 0, p.stderr
+    assert json.loads((tmp_path / "ex.ipynb").read_text())["cells"][0]["cell_type"] == "markdown"
