@@ -97,6 +97,8 @@ class Solution:
             answer; the steps end at the one that fails).
         extra: free-form rendered text (tables) appended after the answers.
         reason: for an ill-posed solution, why, in one sentence.
+        floats: the data given as floats (measurements); rendering then shows long
+            exact numbers to 10 digits.
     """
 
     id: str
@@ -111,6 +113,7 @@ class Solution:
     status: str = "solved"
     extra: str = ""
     reason: str = ""
+    floats: tuple = ()
 
     @property
     def checked(self) -> bool:
@@ -312,6 +315,7 @@ def solve(ex_id: str, tol=None, **data) -> Solution:
     except IllPosed as exc:
         s = exc.solution
     s.assumptions.extend(d.notes)
+    s.floats = d.floats
     _CACHE[key] = s
     while len(_CACHE) > _CACHE_SIZE:
         _CACHE.popitem(last=False)

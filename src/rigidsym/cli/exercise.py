@@ -115,7 +115,9 @@ def _notebook(ex_id: str, path: str, data: dict) -> None:
         from rigidsym.exercises import write_notebook
         print(f"wrote {write_notebook(ex_id, path, **data)}")
     except ModuleNotFoundError as exc:
-        if exc.name != "nbformat" or data:
+        if exc.name != "nbformat":
+            raise
+        if data:
             raise ValueError("--notebook with data needs nbformat: pip install "
                              "\"rigidsym[notebooks]\"") from None
         from importlib.resources import files
