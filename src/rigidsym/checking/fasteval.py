@@ -21,6 +21,7 @@ modular arithmetic).
 
 from __future__ import annotations
 
+import hashlib
 import random
 from fractions import Fraction
 
@@ -35,7 +36,8 @@ from rigidsym.checking.explicit import _entries, _sc, explicit
 from rigidsym.checking.treeops import RawBlocks
 from rigidsym.zero.decide import Unsupported, evaluate
 
-__all__ = ["PRIME", "Inconclusive", "Undecidable", "PointValues", "points_for", "differs"]
+__all__ = ["PRIME", "Inconclusive", "Undecidable", "PointValues", "GenericValues", "points_for",
+           "differs", "difference"]
 
 #: the modulus: the Mersenne prime 2^61 - 1 (fits FLINT's word-size ``nmod``)
 PRIME = 2**61 - 1
@@ -252,6 +254,18 @@ def differs(pv: PointValues, lhs, rhs) -> bool:
     return a != b
 
 
+def difference(pv: PointValues, lhs, rhs):
+    """``lhs - rhs`` at the point (``nmod`` or ``nmod_mat``; a scalar as 1 x 1).
+
+    Raises:
+        Inconclusive: when the point cannot evaluate a side.
+    """
+    a, b = pv._matrix(lhs), pv._matrix(rhs)
+    if (a.nrows(), a.ncols()) != (b.nrows(), b.ncols()):
+        raise Inconclusive("the sides have different shapes")
+    return a - b
+
+
 def points_for(model: dict, plan, sides: list, seed: int, count: int = 2) -> list:
     """``count`` points at which every side in ``sides`` evaluates (off the singular set
     and off the prime's zero divisors), drawn from a seeded generator.
@@ -274,3 +288,33 @@ def points_for(model: dict, plan, sides: list, seed: int, count: int = 2) -> lis
             continue
         out.append(pv)
     return out
+
+
+class GenericValues(PointValues):
+    """Values with the book symbols left unsubstituted: every entry of a matrix symbol, every
+    scalar symbol and every function application (``sin φ``) gets its own pseudo-random
+    residue (from a hash of its name, the same in every run), as if it were an independent
+    variable, which is how ``sympy.expand`` treats them.
+
+    Two book-symbol expressions with different values here differ after expansion (the
+    reduction is a ring homomorphism again), so the expansion is needed only to confirm an
+    equality: :mod:`rigidsym.checking.repair` uses it to recognise a trivial candidate
+    (``Eᵀ = Eᵀ``), the same repair found twice, and a repair equal to the declared one.
+    """
+
+    def __init__(self):
+        super().__init__({}, None, {})
+
+    @staticmethod
+    def _residue(key: str) -> flint.nmod:
+        digest = hashlib.blake2b(key.encode(), digest_size=16).digest()
+        return flint.nmod(int.from_bytes(digest, "little"), PRIME)
+
+    def _explicit(self, x):
+        if isinstance(x, sp.MatrixSymbol):
+            r, c = (int(n) for n in x.shape)
+            return flint.nmod_mat(r, c, [self._residue(f"{x.name}[{i},{j}]")
+                                         for i in range(r) for j in range(c)], PRIME)
+        if isinstance(x, sp.MatrixExpr | sp.MatrixBase):
+            raise Undecidable(f"no generic value for {type(x).__name__}")
+        return self._residue(sp.srepr(x))

@@ -32,13 +32,21 @@ import sympy as sp
 from rigidsym.checking import candidates, mutate
 from rigidsym.checking import treeops as T
 from rigidsym.checking.explicit import _entries, explicit, shape_of
-from rigidsym.checking.fasteval import Inconclusive, Undecidable, differs, points_for
+from rigidsym.checking.fasteval import (
+    GenericValues,
+    Inconclusive,
+    Undecidable,
+    difference,
+    differs,
+    points_for,
+)
 from rigidsym.checking.registry import Rel
 from rigidsym.printing import notation
 from rigidsym.zero.decide import Unsupported, make_plan
 
-__all__ = ["REPAIR_BUDGET", "KEEP", "FULL_TESTS", "Search", "Found", "search_member",
-           "book_difference", "same_relation", "repair_record", "search_record"]
+__all__ = ["REPAIR_BUDGET", "KEEP", "FULL_TESTS", "Search", "Found", "Shared", "share",
+           "search_member", "book_difference", "same_relation", "trivial", "repair_record",
+           "search_record"]
 
 #: candidates tried per failing member unless the run or the declaration says otherwise
 REPAIR_BUDGET = 5000
@@ -59,6 +67,11 @@ class Found:
     method: str
     detail: str
 
+    @property
+    def rel_sides(self) -> tuple:
+        """``(lhs, rhs)`` of the repaired member."""
+        return (self.rel.lhs, self.rel.rhs)
+
 
 @dataclass
 class Search:
@@ -75,19 +88,29 @@ class Search:
 
 
 @dataclass
-class _Ctx:
-    rel: Rel
-    pools: mutate.Pools
+class Shared:
+    """What the searches of one statement share: the pools, the fixed points (with their
+    memoised values), the generic evaluator and the shapes."""
+
+    rels: list
     model: dict
+    pools: mutate.Pools
     points: list
     decide: Callable
     seed: int
+    generic: GenericValues = field(default_factory=GenericValues)
+    shapes: dict = field(default_factory=dict)
+
+
+@dataclass
+class _Ctx:
+    rel: Rel
+    sh: Shared
     budget: int
     search: Search
+    sides: tuple
     seen: set = field(default_factory=set)
-    shapes: dict = field(default_factory=dict)
-    sides: tuple = ()
-    differences: list = field(default_factory=list)
+    found_diffs: list = field(default_factory=list)
 
 
 # --------------------------------------------------------------------------- book symbols
@@ -100,13 +123,35 @@ def book_difference(lhs, rhs) -> list | None:
     return [sp.expand(x - y) for x, y in zip(_entries(a), _entries(b), strict=True)]
 
 
-def same_relation(d1: list | None, d2: list | None) -> bool:
-    """Whether two book differences state the same equation (equal, or opposite: ``a = b``
-    is ``-a = -b``)."""
-    if d1 is None or d2 is None or len(d1) != len(d2):
+def _generic(g: GenericValues, lhs, rhs):
+    try:
+        return difference(g, lhs, rhs)
+    except Inconclusive:
+        return None
+
+
+def same_relation(g: GenericValues, r1: tuple, r2: tuple) -> bool:
+    """Whether ``r1 = (lhs, rhs)`` and ``r2`` state the same equation with the book symbols
+    left unsubstituted: their expanded differences are equal or opposite (``a = b`` is
+    ``-a = -b``). A generic evaluation rules most pairs out; the expansion confirms."""
+    d1, d2 = _generic(g, *r1), _generic(g, *r2)
+    if d1 is not None and d2 is not None and d1 != d2 and d1 != -d2:
         return False
-    return all(sp.expand(x - y) == 0 for x, y in zip(d1, d2, strict=True)) or \
-        all(sp.expand(x + y) == 0 for x, y in zip(d1, d2, strict=True))
+    e1, e2 = book_difference(*r1), book_difference(*r2)
+    if e1 is None or e2 is None or len(e1) != len(e2):
+        return False
+    return all(sp.expand(x - y) == 0 for x, y in zip(e1, e2, strict=True)) or \
+        all(sp.expand(x + y) == 0 for x, y in zip(e1, e2, strict=True))
+
+
+def trivial(g: GenericValues, lhs, rhs) -> bool:
+    """Whether the two sides are the same expression with the book symbols left
+    unsubstituted (``Eᵀ = Eᵀ``): expanded, their difference is zero."""
+    d = _generic(g, lhs, rhs)
+    if d is not None and any(x != 0 for x in d.entries()):
+        return False
+    e = book_difference(lhs, rhs)
+    return e is not None and all(x == 0 for x in e)
 
 
 # --------------------------------------------------------------------------- search
@@ -119,32 +164,43 @@ def _plan(rels, model, pl: mutate.Pools):
     return make_plan(exprs)
 
 
-def search_member(rel: Rel, rels: list[Rel], model: dict, decide: Callable, seed: int,
-                  budget: int = REPAIR_BUDGET) -> Search:
-    """Search the repairs of one failing member.
+def share(failing: list[Rel], rels: list[Rel], model: dict, decide: Callable,
+          seed: int) -> Shared:
+    """The shared part of the searches of one statement's failing members.
 
     Args:
-        rel: the member that does not hold.
+        failing: the members that do not hold.
         rels: the statement's printed members and claims (the pools of terms, factors and
             symbols; never the corrected form).
         model: the statement's model.
         decide: ``decide(rel, model, seed)`` -> an outcome with ``zero``, ``method`` and
             ``detail`` (the checker's sound decision of one relation).
         seed: the seed of the fixed points and of the full tests.
+    """
+    pl = mutate.pools(rels, model)
+    try:
+        plan = _plan(rels, model, pl)
+        pts = points_for(model, plan, [x for r in failing for x in T.sides(r)], seed)
+    except (Unsupported, TypeError, ValueError):
+        pts = []
+    return Shared(rels, model, pl, pts, decide, seed)
+
+
+def search_member(rel: Rel, sh: Shared, budget: int = REPAIR_BUDGET) -> Search:
+    """Search the repairs of one failing member.
+
+    Args:
+        rel: the member that does not hold.
+        sh: from :func:`share`.
         budget: the most candidates to try.
 
     Returns:
         A :class:`Search`; ``found`` holds the verified repairs in report order.
     """
     s = Search(member=rel.label)
-    pl = mutate.pools(rels, model)
-    try:
-        plan = _plan(rels, model, pl)
-        pts = points_for(model, plan, list(T.sides(rel)), seed)
-    except (Unsupported, TypeError, ValueError):
-        pts = []
-    ctx = _Ctx(rel, pl, model, pts, decide, seed, budget, s, sides=T.sides(rel))
-    singles = candidates.prepare(rel, mutate.single_edits(rel, pl), ctx.sides, ctx.shapes)
+    ctx = _Ctx(rel, sh, budget, s, T.sides(rel))
+    singles = candidates.prepare(rel, mutate.single_edits(rel, sh.pools), ctx.sides,
+                                 sh.shapes)
     done = _run(ctx, (((x.edit,), x.raw) for x in singles))
     if s.found:
         s.depth, s.complete = 1, done
@@ -162,12 +218,13 @@ def _run(ctx: _Ctx, cands) -> bool:
     """Try ``(edits, raw)`` candidates in order; True when they were all tried within the
     budget."""
     survivors = []
+    shapes = ctx.sh.shapes
     for edits, raw in cands:
         if raw is None or raw in ctx.seen:
             continue
         ctx.seen.add(raw)
         try:
-            a, b = T.shape(raw[0], ctx.shapes), T.shape(raw[1], ctx.shapes)
+            a, b = T.shape(raw[0], shapes), T.shape(raw[1], shapes)
         except T.ShapeError:
             continue
         if (a or (1, 1)) != (b or (1, 1)):
@@ -185,7 +242,7 @@ def _run(ctx: _Ctx, cands) -> bool:
 def _dies(ctx: _Ctx, raw) -> bool:
     """Whether the candidate is out: it differs at a fixed point (so it does not hold), or
     the engine cannot decide it at all (counted in ``undecidable``)."""
-    for pv in ctx.points:
+    for pv in ctx.sh.points:
         try:
             if differs(pv, raw[0], raw[1]):
                 return True
@@ -198,23 +255,23 @@ def _dies(ctx: _Ctx, raw) -> bool:
 
 
 def _verify(ctx: _Ctx, survivors) -> bool:
+    sh = ctx.sh
     for edits in survivors:
         if ctx.search.full_tests >= FULL_TESTS:
             ctx.search.stopped = "full tests"
             return False
         try:
-            lhs, rhs = mutate.apply_edits(ctx.rel, edits, "canonical", ctx.pools.keep)
-            diff = book_difference(lhs, rhs)
+            lhs, rhs = mutate.apply_edits(ctx.rel, edits, "canonical", sh.pools.keep)
+            if shape_of(lhs) != shape_of(rhs) or trivial(sh.generic, lhs, rhs):
+                continue  # holds trivially, with the book symbols left unsubstituted
         except (T.ShapeError, TypeError, ValueError):
             continue
-        if diff is None or all(d == 0 for d in diff):
-            continue  # holds trivially, with the book symbols left unsubstituted
-        if any(same_relation(diff, d) for d in ctx.differences):
+        if any(same_relation(sh.generic, (lhs, rhs), f.rel_sides)
+               for f in ctx.search.found):
             continue  # the same repaired equation as an earlier repair
         ctx.search.full_tests += 1
-        out = ctx.decide(Rel(lhs, rhs, ctx.rel.label), ctx.model, ctx.seed)
+        out = sh.decide(Rel(lhs, rhs, ctx.rel.label), sh.model, sh.seed)
         if out.zero is True:
-            ctx.differences.append(diff)
             ctx.search.found.append(Found(tuple(edits), Rel(lhs, rhs, ctx.rel.label),
                                           out.method, out.detail))
     return True

@@ -213,10 +213,10 @@ _RAW_UNARY = (sp.Transpose, sp.Inverse, sp.Trace, sp.Determinant, sp.MatPow, sp.
 
 
 def _rebuild_raw_unchecked(x, kids: list):
+    if isinstance(x, sp.MatAdd | sp.MatMul):  # before Add/Mul, which they subclass
+        return sp.Basic.__new__(x.func, *kids)
     if isinstance(x, sp.Add | sp.Mul):
         return x.func._from_args(kids, True)  # scalars commute: skip the assumption query
-    if isinstance(x, sp.MatAdd | sp.MatMul):
-        return sp.Basic.__new__(x.func, *kids)
     if isinstance(x, _RAW_UNARY):  # the first argument replaced; shapes are checked by shape()
         return sp.Basic.__new__(x.func, kids[0], *x.args[1:])
     if isinstance(x, sp.BlockMatrix):
@@ -249,21 +249,50 @@ def _rebuild_with(x, kids: list, raw: bool):
 
 
 def _rebuild_canonical(x, kids: list):
+    if isinstance(x, sp.MatMul):  # before Mul: sympy's MatMul subclasses Mul
+        return _matmul(kids)
+    if isinstance(x, sp.MatAdd):
+        return _matadd(kids)
     if isinstance(x, sp.Add | sp.Mul):
         return x.func(*kids)
-    if isinstance(x, sp.MatAdd | sp.MatMul):
-        if not any(is_matrix(k) for k in kids):
-            return sp.Mul(*kids)
-        out = x.func(*kids).doit(deep=False)
-        return out
     return _rebuild_with(x, kids, raw=False)
+
+
+def _matmul(kids: list):
+    """A product as the book writes it: nested products flattened, the scalars gathered in
+    front (``-1 (-sin φ E)`` is ``sin φ E``). No ``doit``: it would expand a dot product
+    written as ``Trace(eᵀ ω)`` into its components."""
+    scal, mats = [], []
+    for k in kids:
+        for a in (k.args if isinstance(k, sp.MatMul) else (k,)):
+            (mats if is_matrix(a) else scal).append(a)
+    c = sp.Mul(*scal)
+    if not mats:
+        return c
+    if c == 0:
+        return sp.ZeroMatrix(mats[0].shape[0], mats[-1].shape[1])
+    if c == 1:
+        return mats[0] if len(mats) == 1 else sp.MatMul(*mats)
+    return sp.MatMul(c, *mats)
+
+
+def _matadd(kids: list):
+    """A sum with nested sums flattened and zero matrices dropped (like terms are not
+    combined: the display shows what the edit wrote)."""
+    terms = [a for k in kids for a in (k.args if isinstance(k, sp.MatAdd) else (k,))
+             if not isinstance(a, sp.ZeroMatrix)]
+    if not terms:
+        return sp.ZeroMatrix(*kids[0].shape)
+    if not any(is_matrix(t) for t in terms):
+        return sp.Add(*terms)
+    return terms[0] if len(terms) == 1 else sp.MatAdd(*terms)
 
 
 # --------------------------------------------------------------------------- builders
 def add(x, term):
     """``x + term`` (raw): a term appended to a sum, or a new sum of the two."""
     if isinstance(x, sp.MatAdd | sp.Add):
-        return _rebuild_raw(x, [*x.args, term])
+        return _rebuild_raw(x, [*x.args, term])  # (MatAdd first inside _rebuild_raw)
     if is_matrix(x):
         return sp.Basic.__new__(sp.MatAdd, x, term)
     return sp.Add._from_args((x, term), True)
