@@ -202,8 +202,7 @@ def _factor_edits(side, p, t, pl: Pools) -> list[Edit]:
         for where in sides:
             fn = (lambda x, m, f=f: T.mul(m(f), x)) if where == "left" else \
                 (lambda x, m, f=f: T.mul(x, m(f)))
-            out.append(_edit("multiply-factor", side, p, fn, ("multiply", t, f, where),
-                             printed_mark=False))
+            out.append(_edit("multiply-factor", side, p, fn, ("multiply", t, f, where)))
     return out
 
 

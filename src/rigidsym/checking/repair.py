@@ -44,7 +44,8 @@ from rigidsym.checking.registry import Rel
 from rigidsym.printing import notation
 from rigidsym.zero.decide import Unsupported, make_plan
 
-__all__ = ["REPAIR_BUDGET", "KEEP", "FULL_TESTS", "Search", "Found", "Shared", "share",
+__all__ = ["REPAIR_BUDGET", "KEEP", "FULL_TESTS", "Search", "Found", "Decision", "Shared",
+           "share",
            "search_member", "book_difference", "same_relation", "trivial", "repair_record",
            "search_record"]
 
@@ -56,6 +57,15 @@ KEEP = 5
 #: filter cannot evaluate would otherwise send every candidate to the full test)
 FULL_TESTS = 40
 _BOUND = re.compile(r"P\(false zero\) <= ([0-9.]+E[-+]?\d+)")
+
+
+@dataclass
+class Decision:
+    """A decision in the shape :func:`rigidsym.checking.records.member_record` reads."""
+
+    zero: bool | None
+    method: str
+    detail: str
 
 
 @dataclass
