@@ -83,8 +83,10 @@ class Edit:
 
     @property
     def order(self) -> tuple:
-        """Sort key: the kind's rank in :data:`KINDS`, then the position in the tree."""
-        return (_RANK[self.kind], tuple((c.side, c.path) for c in self.changes))
+        """Sort key: the kind's rank in :data:`KINDS`, then the position in the tree, the
+        right side first (the formula; the left usually names what it gives: ``Eᵀ = -E``
+        rather than ``-Eᵀ = E``), pre-order within a side."""
+        return (_RANK[self.kind], tuple((1 - c.side, c.path) for c in self.changes))
 
 
 @dataclass

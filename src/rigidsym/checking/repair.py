@@ -17,8 +17,9 @@ tried, single edits first, then pairs. Each candidate is
 The search is bounded by a count of candidates (:data:`REPAIR_BUDGET` per member), never by
 time, so its results do not depend on the machine. It reports every single-edit repair,
 else every two-edit one, sorted by edit kind and then position in the tree, keeps
-:data:`KEEP` and says how many were found; a repaired equation found twice (``-Eᵀ = E`` and
-``Eᵀ = -E``) counts once.
+:data:`KEEP` and says how many were found; a repaired equation found twice by the same kind
+of edit (``-Eᵀ = E`` and ``Eᵀ = -E``) counts once (found by two kinds, it is two
+explanations of the slip, and both are reported).
 """
 
 from __future__ import annotations
@@ -134,6 +135,7 @@ def book_difference(lhs, rhs) -> list | None:
 
 
 def _generic(g: GenericValues, lhs, rhs):
+    lhs, rhs = T.sides(Rel(lhs, rhs))  # hashable (a declared side may be a mutable Matrix)
     try:
         return difference(g, lhs, rhs)
     except Inconclusive:
@@ -276,9 +278,11 @@ def _verify(ctx: _Ctx, survivors) -> bool:
                 continue  # holds trivially, with the book symbols left unsubstituted
         except (T.ShapeError, TypeError, ValueError):
             continue
-        if any(same_relation(sh.generic, (lhs, rhs), f.rel_sides)
+        kinds = [e.kind for e in edits]
+        if any([e.kind for e in f.edits] == kinds
+               and same_relation(sh.generic, (lhs, rhs), f.rel_sides)
                for f in ctx.search.found):
-            continue  # the same repaired equation as an earlier repair
+            continue  # the same repaired equation by the same kind of edit (-Eᵀ = E, Eᵀ = -E)
         ctx.search.full_tests += 1
         out = sh.decide(Rel(lhs, rhs, ctx.rel.label), sh.model, sh.seed)
         if out.zero is True:
@@ -297,8 +301,9 @@ def repair_record(f: Found, printed: Rel, keep: set, equals_declared: bool) -> d
     """The schema-2 record of one repair.
 
     Returns:
-        ``{"member", "edits", "text", "latex", "printed_text", "printed_latex", "method",
-        "failure_bound", "equals_declared"}``: ``text``/``latex`` are the repaired member
+        ``{"member", "edits", "kinds", "text", "latex", "printed_text", "printed_latex",
+        "method", "failure_bound", "equals_declared"}``: ``edits`` in words and ``kinds``
+        (:data:`rigidsym.checking.mutate.KINDS`); ``text``/``latex`` are the repaired member
         in book notation with each edited subterm marked (``⟦…⟧``, ``\\boxed{…}``), and
         ``printed_text``/``printed_latex`` the printed member with the subterms the edits
         change marked.
@@ -306,6 +311,7 @@ def repair_record(f: Found, printed: Rel, keep: set, equals_declared: bool) -> d
     lm, rm = mutate.apply_edits(printed, f.edits, "marked", keep)
     lp, rp = mutate.apply_edits(printed, f.edits, "printed", keep)
     return {"member": printed.label, "edits": [mutate.describe(e) for e in f.edits],
+            "kinds": [e.kind for e in f.edits],
             "text": f"{notation.text(lm)} = {notation.text(rm)}",
             "latex": notation.latex_relation(lm, rm),
             "printed_text": f"{notation.text(lp)} = {notation.text(rp)}",
