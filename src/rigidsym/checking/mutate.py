@@ -45,7 +45,7 @@ from rigidsym.checking import treeops as T
 from rigidsym.printing import notation
 
 __all__ = ["KINDS", "MUTATION_KINDS", "VOCABULARY_VERSION", "Edit", "Pools", "pools",
-           "single_edits", "compatible", "apply_edits", "describe"]
+           "single_edits", "compatible", "apply_edits", "describe", "mutants"]
 
 #: bumped whenever the vocabulary or its order changes (it joins the verdict cache's key)
 VOCABULARY_VERSION = 1
@@ -357,6 +357,29 @@ def apply_edits(rel, edits, how: str = "raw", keep: set | None = None,
         else:
             out.append(T.canonical(root, ch, keep or set(), marked=how != "canonical"))
     return tuple(out)
+
+
+def mutants(rel, rels, model: dict, kinds=MUTATION_KINDS) -> list[tuple[Edit, tuple]]:
+    """Every single-edit mutant of ``rel`` of the given kinds: ``(edit, (lhs, rhs))``,
+    canonical (the form the zero test decides); edits whose shapes do not fit are left out.
+
+    Args:
+        rel: the member to mutate.
+        rels: the statement's members (the pools; see :func:`pools`).
+        model: the statement's model.
+        kinds: kinds of :data:`KINDS` (default: the mutation test's, :data:`MUTATION_KINDS`).
+    """
+    pl = pools(rels, model)
+    out = []
+    for e in single_edits(rel, pl, kinds):
+        try:
+            lhs, rhs = apply_edits(rel, (e,), "canonical", pl.keep)
+            if (T.shape(lhs) or (1, 1)) != (T.shape(rhs) or (1, 1)):
+                continue
+        except T.ShapeError:
+            continue
+        out.append((e, (lhs, rhs)))
+    return out
 
 
 # --------------------------------------------------------------------------- words

@@ -284,7 +284,11 @@ def _verify(ctx: _Ctx, survivors) -> bool:
                for f in ctx.search.found):
             continue  # the same repaired equation by the same kind of edit (-Eᵀ = E, Eᵀ = -E)
         ctx.search.full_tests += 1
-        out = sh.decide(Rel(lhs, rhs, ctx.rel.label), sh.model, sh.seed)
+        try:
+            out = sh.decide(Rel(lhs, rhs, ctx.rel.label), sh.model, sh.seed)
+        except (ValueError, ArithmeticError, TypeError, Unsupported):
+            ctx.search.undecidable += 1  # no meaning: the inverse of a singular matrix
+            continue
         if out.zero is True:
             ctx.search.found.append(Found(tuple(edits), Rel(lhs, rhs, ctx.rel.label),
                                           out.method, out.detail))
