@@ -19,6 +19,7 @@ The expressions are translated once into a program with shared subexpressions
 
 from __future__ import annotations
 
+import math
 import random
 from dataclasses import dataclass, field
 from fractions import Fraction
@@ -122,15 +123,19 @@ def lower(x) -> Fraction:
 
 
 def round_up(x: Fraction) -> float:
-    """``x`` rounded up to two significant decimal digits (a bound stays a bound)."""
+    """``x`` rounded up to two significant decimal digits, as a float that is still >= x
+    (a bound stays a bound)."""
     if x <= 0:
         return 0.0
-    e = len(str(x.numerator)) - len(str(x.denominator))  # 10^(e-1) <= x < 10^(e+1)
-    unit = Fraction(10) ** (e - 2)
-    while x / unit >= 100:
-        unit *= 10
-    q = -(-x // unit)  # ceil
-    return float(f"{q}e{e - 2 if unit == Fraction(10) ** (e - 2) else e - 1}")
+    e = len(str(x.numerator)) - len(str(x.denominator))  # 10^(e-1) < x < 10^(e+1)
+    while Fraction(10) ** e > x:
+        e -= 1
+    while Fraction(10) ** (e + 1) <= x:
+        e += 1
+    unit = Fraction(10) ** (e - 1)  # x / unit in [10, 100)
+    q = -(-x // unit)  # ceil: 10 ... 100
+    out = float(f"{q}e{e - 1}")
+    return out if Fraction(out) >= x else math.nextafter(out, math.inf)
 
 
 # --------------------------------------------------------------------------- points

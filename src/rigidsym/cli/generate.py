@@ -17,6 +17,8 @@ def _generate_args(p) -> None:
     p.add_argument("--out", default=None, help="output folder (default: generated/)")
     p.add_argument("--module", action="append", metavar="PATH_OR_DOTTED",
                    help="a user module whose KERNELS to generate into --out (repeatable)")
+    p.add_argument("--no-build", action="store_true",
+                   help="with --module: write the C only; do not compile it into the cache")
 
 
 def cmd_generate(args) -> int:
@@ -36,17 +38,22 @@ def cmd_generate(args) -> int:
     res = generate()
     for note in res.notes:
         print(f"note: {note}", file=sys.stderr)
+    books = _notebooks()
     if args.check:
         diff = check(res, out)
-        if diff:
+        stale = _check_notebooks(books, out)
+        if diff or stale:
             sys.stdout.write(diff)
             print(f"generated/ is stale: run `rigidsym generate` "
                   f"({time.perf_counter() - t0:.1f} s)", file=sys.stderr)
             return 1
-        print(f"generated/ is up to date: {len(res.kernels)} kernels, {len(res.files)} files "
-              f"({time.perf_counter() - t0:.1f} s)")
+        print(f"generated/ is up to date: {len(res.kernels)} kernels, {len(res.files)} files, "
+              f"{len(books)} notebook files ({time.perf_counter() - t0:.1f} s)")
         return 0
     touched = write(res, out)
+    if books:
+        from rigidsym.notebooks import NOTEBOOK_DIR, write_files
+        touched += [f"{NOTEBOOK_DIR}/{n}" for n in write_files(books, out / NOTEBOOK_DIR)]
     for t in touched:
         print(f"wrote {t}")
     print(f"{len(res.kernels)} kernels, {len(res.files)} files, {len(touched)} changed "
@@ -54,15 +61,82 @@ def cmd_generate(args) -> int:
     return 0
 
 
+def _notebooks() -> dict[str, str]:
+    """The exercise notebooks (``{}`` with a note when nbformat is not installed)."""
+    try:
+        from rigidsym.notebooks import notebook_files
+        return notebook_files()
+    except ModuleNotFoundError as exc:
+        if exc.name != "nbformat":
+            raise
+        print("note: notebooks skipped: nbformat is not installed "
+              "(pip install \"rigidsym[notebooks]\")", file=sys.stderr)
+        return {}
+
+
+def _check_notebooks(books: dict[str, str], out: Path) -> bool:
+    """Print the stale notebook files; True when any differs."""
+    if not books:
+        return False
+    from rigidsym.notebooks import NOTEBOOK_DIR, check_files
+    stale = check_files(books, out / NOTEBOOK_DIR)
+    for name in stale:
+        print(f"stale notebook file: generated/{NOTEBOOK_DIR}/{name}")
+    return bool(stale)
+
+
 def _build_args(p) -> None:
+    p.add_argument("directory", nargs="?", default=None, metavar="DIR",
+                   help="a generated folder (rigidsym generate --out DIR); default the "
+                        "package's kernels")
+    p.add_argument("--module", action="append", metavar="PATH_OR_DOTTED",
+                   help="generate this user module's kernels into --out, then compile them")
+    p.add_argument("--out", default=None, help="output folder of --module")
+    p.add_argument("--native", action="store_true",
+                   help="build for this CPU only (-march=native) into the cache; used "
+                        "whenever present")
     p.add_argument("--force", action="store_true", help="rebuild even if cached")
+    p.add_argument("--info", action="store_true",
+                   help="print the build information of the kernels in use (JSON) and exit")
 
 
 def cmd_build_c(args) -> int:
-    """Compile the generated C kernels (cffi) into the user cache directory."""
-    from rigidsym.kernels._build import build
+    """Compile generated C kernels into the user cache (the package's own kernels only when
+    their module is stale, or with --native), with a notice and a progress bar."""
+    from rigidsym.kernels import _build, _ext
 
-    path = build(force=args.force)
+    if args.info:
+        import json
+
+        from rigidsym import kernels
+        print(json.dumps(kernels.build_info(args.directory), indent=1))
+        return 0
+    if args.module:
+        if args.directory:
+            print("error: give either DIR or --module (with --out), not both", file=sys.stderr)
+            return 2
+        from rigidsym.codegen.usergen import cmd_generate_user
+        args.check = False
+        args.no_build = False
+        return cmd_generate_user(args)
+    gdir = Path(args.directory).resolve() if args.directory else _ext.generated_dir()
+    if not (gdir / "c").is_dir():
+        print(f"error: {gdir} holds no generated C (run `rigidsym generate --out {gdir}`)",
+              file=sys.stderr)
+        return 2
+    package = args.directory is None
+    sources = _build.sources_hash(gdir / "c")
+    built = _ext.package_module() if package else None
+    if package and not (args.native or args.force) and built is not None \
+            and _build.embedded_hash(built) == sources:
+        print(f"up to date: {built} (built with the package)")
+        return 0
+    try:
+        path = _ext.ensure(gdir, native=args.native, force=args.force,
+                           why="rigidsym build-c" + (" --native" if args.native else ""))
+    except _build.BuildError as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return 1
     print(f"built {path}")
     return 0
 
