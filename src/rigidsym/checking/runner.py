@@ -3,28 +3,36 @@
 from __future__ import annotations
 
 import sys
+from functools import partial
+
+from rigidsym.checking.correction import RepairSettings
 
 __all__ = ["run_checks"]
 
 
-def _check_one(eq_id: str):
+def _check_one(eq_id: str, settings: RepairSettings | None = None):
     from rigidsym.checking.checker import check
-    return check(eq_id)
+    settings = settings or RepairSettings()
+    return check(eq_id, repairs=settings.enabled, repair_budget=settings.budget)
 
 
-def run_checks(ids: list[str], jobs: int = 1, progress: bool = True, cache: bool = False):
+def run_checks(ids: list[str], jobs: int = 1, progress: bool = True, cache: bool = False,
+               repairs: bool = True, repair_budget: int | None = None):
     """Check ``ids`` (in parallel over ``jobs`` processes), results in the order given.
 
     With ``cache``, results are read from the verdict cache where their key matches
     (:mod:`rigidsym.checking.verdict_cache`; ``Result.cached`` is then true) and the others
-    are computed and stored.
+    are computed and stored. ``repairs`` and ``repair_budget`` are those of
+    :func:`rigidsym.checking.checker.check` (and join the cache key).
     """
     from rich.progress import Progress
 
+    settings = RepairSettings(repairs, repair_budget)
+    one = partial(_check_one, settings=settings)
     hits, keys = ({}, {})
     if cache:
         from rigidsym.checking import verdict_cache
-        hits, keys = verdict_cache.lookup(ids)
+        hits, keys = verdict_cache.lookup(ids, settings)
     results = dict(hits)
     todo = [i for i in ids if i not in hits]
     with Progress(disable=not progress, transient=True,
@@ -35,12 +43,12 @@ def run_checks(ids: list[str], jobs: int = 1, progress: bool = True, cache: bool
 
             ctx = mp.get_context("fork")
             with ctx.Pool(min(jobs, len(todo))) as pool:
-                for r in pool.imap_unordered(_check_one, todo):
+                for r in pool.imap_unordered(one, todo):
                     results[r.id] = r
                     bar.update(task, advance=1, description=f"verified ({r.id})")
         else:
             for i in todo:
-                results[i] = _check_one(i)
+                results[i] = one(i)
                 bar.update(task, advance=1, description=f"verified ({i})")
     if cache and todo:
         verdict_cache.store([results[i] for i in todo], keys)

@@ -8,7 +8,7 @@ import sys
 
 from rigidsym.checking.registry import REGISTRY
 from rigidsym.checking.usermodules import select_with_modules
-from rigidsym.cli._common import MODULE_HELP
+from rigidsym.cli._common import MODULE_HELP, add_repair_arguments, repair_options
 
 __all__ = ["add_arguments", "run"]
 
@@ -22,6 +22,7 @@ def add_arguments(s) -> None:
     fmt = s.add_mutually_exclusive_group()
     fmt.add_argument("--latex", action="store_true", help="print the members as LaTeX")
     fmt.add_argument("--json", action="store_true", help="print the schema-2 record")
+    add_repair_arguments(s)
 
 
 def run(args) -> int:
@@ -37,7 +38,7 @@ def run(args) -> int:
     for k, eq_id in enumerate(select_with_modules([args.id], None, args.module)):
         eq = REGISTRY[eq_id]
         st = eq.build()
-        r = check(eq_id)
+        r = check(eq_id, **repair_options(args))
         if args.json:
             print(json.dumps(result_record(r), indent=1, ensure_ascii=False))
             continue

@@ -7,7 +7,13 @@ import time
 from rigidsym._io import write_atomic
 from rigidsym.checking.runner import run_checks
 from rigidsym.checking.usermodules import select_with_modules
-from rigidsym.cli._common import JOBS, MODULE_HELP, console
+from rigidsym.cli._common import (
+    JOBS,
+    MODULE_HELP,
+    add_repair_arguments,
+    console,
+    repair_options,
+)
 
 __all__ = ["add_arguments", "run"]
 
@@ -25,6 +31,7 @@ def add_arguments(v) -> None:
                    help=MODULE_HELP + "; only its ids unless ids or sections are given")
     v.add_argument("--no-cache", action="store_true",
                    help="check every id again; neither read nor write the verdict cache")
+    add_repair_arguments(v)
 
 
 def _table(results) -> None:
@@ -48,7 +55,7 @@ def run(args) -> int:
     ids = select_with_modules(args.ids, args.section, args.module)
     t0 = time.perf_counter()
     results = run_checks(ids, jobs=args.jobs, progress=not args.quiet,
-                         cache=not args.no_cache)
+                         cache=not args.no_cache, **repair_options(args))
     wall = time.perf_counter() - t0
     if not args.quiet:
         _table(results)

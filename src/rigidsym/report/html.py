@@ -21,6 +21,7 @@ from rigidsym.printing.mathml import latex_to_mathml
 from rigidsym.report.markdown import anchor, sections
 from rigidsym.report.numeric import numeric_sentence
 from rigidsym.report.record import CITATION, result_record, summary
+from rigidsym.report.repairs import errata_rows, repairs_view
 
 __all__ = ["to_html", "markdown_to_html", "math_or_text"]
 
@@ -70,6 +71,7 @@ def _view(rec: dict) -> dict:
                        residual_max_abs_decimal=ce.get("residual_max_abs_decimal"))
     else:
         v["ce"] = None
+    v["repair_groups"] = repairs_view(rec)
     return v
 
 
@@ -90,7 +92,7 @@ def to_html(results: list[Result]) -> str:
         citation=CITATION.replace("*", ""), counts=list(s.items()), total=len(results),
         bad=[v for v in views if v["verdict"] == "does-not-hold"],
         off=[v for v in views if v["verdict"] != v["expected"]],
-        groups=sections(views))
+        groups=sections(views), errata=errata_rows(views))
 
 
 def markdown_to_html(text: str, title: str, figures: dict[str, str] | None = None) -> str:

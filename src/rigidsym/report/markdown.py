@@ -12,6 +12,7 @@ from rigidsym.checking.checker import NUMERIC_DIGITS, NUMERIC_POINTS, Result
 from rigidsym.printing import notation
 from rigidsym.report.numeric import numeric_sentence
 from rigidsym.report.record import CITATION, result_record, summary
+from rigidsym.report.repairs import markdown_errata, markdown_repairs
 
 __all__ = ["to_markdown", "anchor", "sections", "how_checked", "numeric_words"]
 
@@ -109,6 +110,7 @@ def _entry(rec: dict, full: bool) -> list[str]:
                 f" Cause: **{rec['cause_class']}**. {rec['evidence']}", ""]
         if rec["counterexample"]:
             out += _counterexample(rec["counterexample"])
+    out += markdown_repairs(rec)
     out += [how_checked(rec), ""]
     if full:
         out += ["Transcribed:", "", "```", rec["printed"], "```", "",
@@ -148,6 +150,7 @@ def to_markdown(results: list[Result], full: bool = False) -> str:
                 f"{_cell(r['failing_member'] or 'the equation')} | {r['cause_class']} | "
                 f"{_cell(r['evidence'])} |" for r in bad]
         out.append("")
+    out += markdown_errata(recs, anchor)
     off = [r for r in recs if r["verdict"] != r["expected"]]
     if off:
         out += ["## Verdicts that differ from the recorded expectation", ""]

@@ -17,6 +17,7 @@ import sympy as sp
 from rigidsym.checking.checker import Result
 from rigidsym.checking.registry import VERDICTS
 from rigidsym.printing import notation
+from rigidsym.report.repairs import repair_fields
 
 __all__ = ["summary", "result_record", "to_json", "cause_words",
            "failure_bound", "CITATION", "SCHEMA", "RESIDUAL_FLOOR", "document_header"]
@@ -146,6 +147,7 @@ def result_record(r: Result, timings: bool = True, full: bool = False) -> dict:
         "counterexample": counterexample_record(r.counterexample),
         "singular": r.singular, "model": r.model, "numeric": numeric,
     }
+    rec.update(repair_fields(r))  # issue 23: correction, repairs, repair_search
     if timings:
         rec["seconds"] = r.seconds
         rec["cached"] = getattr(r, "cached", False)

@@ -22,7 +22,7 @@ from rigidsym.printing import notation
 from rigidsym.report.numeric import numeric_sentence
 from rigidsym.report.record import cause_words, counterexample_record, result_record
 
-__all__ = ["explain", "output_width", "expr_lines", "DEFAULT_WIDTH"]
+__all__ = ["explain", "output_width", "expr_lines", "repair_lines", "DEFAULT_WIDTH"]
 
 #: width when stdout is not a terminal and ``COLUMNS`` is not set
 DEFAULT_WIDTH = 100
@@ -167,6 +167,8 @@ def explain(r: Result, rels: dict[str, list[Rel]], where: str, width: int) -> st
         blocks[m["role"]].append(head + ":")
         if rel is not None:
             blocks[m["role"]] += _rel_lines(rel, width, "      ")
+        elif m.get("text"):  # a corrected member found by the repair search
+            blocks[m["role"]] += _hard_wrap(m["text"], width, "      ")
     titles = {"printed": "Members as printed:", "claim": "Claims it makes:",
               "corrected": "Corrected form (verified):"}
     for role in ("printed", "claim"):
@@ -190,9 +192,12 @@ def explain(r: Result, rels: dict[str, list[Rel]], where: str, width: int) -> st
             out.append("")
     if blocks["corrected"]:
         title = titles["corrected"]
+        if r.correction == "found by search":
+            title = "Corrected form (found by the repair search, verified):"
         if bound is not None:
             title = title[:-1] + f" (failure probability <= {bound:.1e}):"
         out += [title] + blocks["corrected"] + [""]
+    out += repair_lines(r, width)
     if r.singular:
         out += _hard_wrap(f"Singular set: {r.singular}", width, "")
     if r.model:
@@ -200,3 +205,30 @@ def explain(r: Result, rels: dict[str, list[Rel]], where: str, width: int) -> st
     if numeric_sentence(r.numeric):
         out += _hard_wrap(numeric_sentence(r.numeric), width, "")
     return "\n".join(out)
+
+
+def repair_lines(r: Result, width: int) -> list[str]:
+    """The repairs of a does-not-hold (issue 23), in book notation with each edited
+    subterm in ``⟦…⟧``: per failing member, what was searched and each repair kept, with
+    its method, failure bound and whether it is the declared correction."""
+    if not r.repair_search and r.correction is None:
+        return []
+    out = ["Repairs (the smallest edits that make a failing member hold, each verified; "
+           "⟦…⟧ marks the edited subterm):"]
+    out = _hard_wrap(out[0], width, "")
+    if r.correction is not None:
+        out += _hard_wrap(f"Correction: {r.correction}", width, "  ")
+    for s in r.repair_search:
+        who = f"member {s['member']!r}" if s["member"] else "the equation"
+        out += _hard_wrap(f"{who}: {s['words']}", width, "  ")
+        mine = [x for x in r.repairs if x["member"] == s["member"]]
+        for k, x in enumerate(mine, 1):
+            tags = [x["method"]]
+            if x["failure_bound"] is not None:
+                tags.append(f"failure probability <= {x['failure_bound']:.1e}")
+            if x["equals_declared"]:
+                tags.append("the declared correction")
+            out += _hard_wrap(f"{k}. {'; then '.join(x['edits'])} ({', '.join(tags)})",
+                              width, "    ")
+            out += _hard_wrap(x["text"], width, "       ")
+    return out + [""]
