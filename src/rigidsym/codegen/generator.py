@@ -24,7 +24,8 @@ import rigidsym
 from rigidsym._config import KERNEL_SPEC as BOOK_ORIGIN
 from rigidsym.codegen.api_spec import render_api
 from rigidsym.codegen.optimise import Program, compile_program, math_hash
-from rigidsym.codegen.printers import KernelCPrinter, KernelNumPyPrinter
+from rigidsym.codegen.float32 import plan_kernel
+from rigidsym.codegen.printers import KernelCFloatPrinter, KernelCPrinter, KernelNumPyPrinter
 from rigidsym.codegen.spec import Kernel, flat_symbols, input_symbols
 
 __all__ = ["generate", "write", "check", "GenerationResult", "default_out_dir", "TEMPLATES"]
@@ -56,6 +57,7 @@ class KernelCode:
     hash: str
     ops: int
     inputs: list = field(default_factory=list)   # [(arg, [symbols])]
+    plan32: dict = field(default_factory=dict)   # float32 precision plans (codegen.float32)
 
 
 @dataclass
@@ -102,7 +104,9 @@ def compile_kernel(kernel: Kernel) -> KernelCode:
     parts += flat
     variants.append(Variant("main", compile_program(flat, angles), None))
     ops = sum(v.program.ops for v in variants)
-    return KernelCode(kernel, variants, math_hash(parts), ops, flat_symbols(kernel))
+    kc = KernelCode(kernel, variants, math_hash(parts), ops, flat_symbols(kernel))
+    kc.plan32 = plan_kernel(kernel, variants, _trig_split(kc))
+    return kc
 
 
 _TODO: list = []
@@ -110,7 +114,7 @@ _TODO: list = []
 
 def _compile_index(i: int):
     kc = compile_kernel(_TODO[i])
-    return kc.variants, kc.hash, kc.ops, kc.inputs
+    return kc.variants, kc.hash, kc.ops, kc.inputs, kc.plan32
 
 
 def _compile_all(todo: list) -> list[KernelCode]:
@@ -207,13 +211,13 @@ def _risky_names(p: Program, printer) -> list[str]:
     return names + [b for b in _risky_bases(p, printer) if b not in names]
 
 
-def _finite_check(p: Program, k: Kernel) -> str:
+def _finite_check(p: Program, k: Kernel, printer=None) -> str:
     """C expression that is NaN iff a division/root temporary or output, or a divisor or
-    radicand, is non-finite."""
+    radicand, is non-finite (divisors and radicands printed by ``printer``)."""
     names = [str(s) for s, v in p.temps if _risky(v)]
     slots = [f"out_{o.name}[{j}]" for o in k.outputs for j in range(o.size)]
     names += [slot for slot, v in zip(slots, p.outputs, strict=True) if _risky(v)]
-    names += [b for b in _risky_bases(p, KernelCPrinter()) if b not in names]
+    names += [b for b in _risky_bases(p, printer or KernelCPrinter()) if b not in names]
     return _balanced([f"({n} - {n})" for n in names]) if names else ""
 
 
@@ -234,13 +238,13 @@ NUMPY_CHUNK = 16384
 _TRIG = (sp.sin, sp.cos)
 
 
-def _trig_plan(kc: KernelCode, printer) -> dict | None:
+def _trig_split(kc: KernelCode) -> dict | None:
     """Split a trig-calling kernel into a SIMD trig loop and a per-sample loop.
 
     For a kernel without branches whose ``sin``/``cos`` arguments do not themselves depend
     on a trig call, returns the prelude (the temporaries the arguments need, in order, and
-    one printed ``sin``/``cos`` per distinct call) and the per-sample program with each call
-    replaced by a parameter ``trig_<k>``; ``None`` when the kernel is not blocked.
+    the ``sin``/``cos`` calls by parameter name ``trig_<k>``) and the per-sample program with
+    each call replaced by its parameter; ``None`` when the kernel is not blocked.
     """
     if len(kc.variants) != 1:
         return None
@@ -277,21 +281,65 @@ def _trig_plan(kc: KernelCode, printer) -> dict | None:
             kept.append((s, v))
             live |= v.free_symbols
     kept.reverse()
-    prog = Program(kept, outputs, dens, p.ops)
+    return {"calls": {str(names[c]): c for c in calls}, "pre": pre,
+            "program": Program(kept, outputs, dens, p.ops)}
+
+
+def _trig_plan(kc: KernelCode, printer) -> dict | None:
+    """The printed trig split of :func:`_trig_split` (``None``: the kernel is not blocked)."""
+    split = _trig_split(kc)
+    if split is None:
+        return None
+    prog, pre, calls = split["program"], split["pre"], split["calls"]
     used_pre = set().union(*(v.free_symbols for _, v in pre),
-                           *(c.args[0].free_symbols for c in calls))
-    used = set().union(*(v.free_symbols for _, v in kept),
-                       *(sp.sympify(v).free_symbols for v in outputs + dens))
+                           *(c.args[0].free_symbols for c in calls.values()))
+    used = set().union(*(v.free_symbols for _, v in prog.temps),
+                       *(sp.sympify(v).free_symbols for v in list(prog.outputs) + prog.dens))
     return {
         "block": TRIG_BLOCK,
-        "names": [str(names[c]) for c in calls],
+        "names": list(calls),
         "pre_temps": [(str(s), printer.doprint(v)) for s, v in pre],
-        "pre_calls": [(str(names[c]), printer.doprint(c)) for c in calls],
+        "pre_calls": [(t, printer.doprint(c)) for t, c in calls.items()],
         "pre_used": {str(s) for s in used_pre},
         "used": {str(s) for s in used},
         "variant": {"name": "main", "cond": None, "finite": _finite_check(prog, kc.kernel),
                     **_program_lines(prog, printer)},
     }
+
+
+def _f32_variant(p: Program, plan: dict, k: Kernel, cond=None) -> dict:
+    """One float32 sample program printed under its precision plan (float or double per
+    temporary and output; conditions, denominators in double)."""
+    fp = KernelCFloatPrinter(plan)
+    ctype = {"f": "float", "d": "double"}
+    return {"cond": None if cond is None else fp.print_in(cond, "d"),
+            "temps": [(ctype[plan[str(s)]], str(s), fp.print_in(v, plan[str(s)]))
+                      for s, v in p.temps],
+            "outputs": [fp.print_in(v, plan[f"out:{j}"]) for j, v in enumerate(p.outputs)],
+            "dens": [fp.print_in(d, "d") for d in p.dens],
+            "finite": _finite_check(p, k, fp)}
+
+
+def _f32_code(kc: KernelCode) -> dict:
+    """The float32 sample function(s) of ``kc`` and the nodes its plan keeps in double."""
+    k, plans = kc.kernel, kc.plan32
+    slots = [f"{o.name}[{j}]" for o in k.outputs for j in range(o.size)]
+
+    def widened(plan: dict) -> list[str]:
+        return [slots[int(n[4:])] if n.startswith("out:") else n
+                for n, t in plan.items() if t == "d"]
+    if plans["trig"] is not None:
+        split = _trig_split(kc)
+        plan = plans["trig"]["plan"]
+        v = _f32_variant(split["program"], plan, k)
+        return {"trig_variant": v, "variants": None, "errors": [plans["trig"]["error"]],
+                "trig_types": {t: {"f": "float", "d": "double"}[plan[t]] for t in split["calls"]},
+                "widened": [widened(plan)]}
+    vs = [_f32_variant(v.program, pl["plan"], k, v.cond)
+          for v, pl in zip(kc.variants, plans["variants"], strict=True)]
+    return {"trig_variant": None, "variants": vs,
+            "errors": [pl["error"] for pl in plans["variants"]],
+            "widened": [widened(pl["plan"]) for pl in plans["variants"]]}
 
 
 def _render_kernel(env, kc: KernelCode, origin: str = BOOK_ORIGIN) -> dict[str, str]:
@@ -322,7 +370,8 @@ def _render_kernel(env, kc: KernelCode, origin: str = BOOK_ORIGIN) -> dict[str, 
     for t, path in (("c_kernel.h.j2", f"c/{k.name}.h"), ("c_kernel.c.j2", f"c/{k.name}.c")):
         files[path] = env.get_template(t).render(header=_header(kc, t, origin), variants=cvars,
                                                  used=used, trig=_trig_plan(kc, cp),
-                                                 never_singular=never_singular, **common)
+                                                 never_singular=never_singular,
+                                                 f32=_f32_code(kc), **common)
     return files
 
 
@@ -377,16 +426,26 @@ def generate(kernels=None, origin: str = BOOK_ORIGIN) -> GenerationResult:
 
 def _render_extension(env, metas: list[dict], ver: dict) -> dict[str, str]:
     """The extension module's own C: the module (``c_module.c.j2``), the per-path table of
-    batch functions (``c_table.c.j2``) and the CPU dispatcher (``c_dispatch.h.j2``)."""
+    batch functions (``c_table.c.j2``), the CPU dispatcher (``c_dispatch.h.j2``) and the
+    per-call entry points (``c_fast.h.j2``)."""
     def size(shape) -> int:
         return int(math.prod(shape))
+    kinds = {"unit": 1, "rotation": 2}
+
+    def slot(a: dict) -> dict:
+        return {"nd": len(a["shape"]), "dims": list(a["shape"]), "size": size(a["shape"]),
+                "kind": kinds.get(a.get("kind"), 0)}
     ck = [{"name": m["name"], "ins": [size(a["shape"]) for a in m["args"]],
            "outs": [size(o["shape"]) for o in m["outputs"]],
-           "narrays": len(m["args"]) + len(m["outputs"])} for m in metas]
+           "narrays": len(m["args"]) + len(m["outputs"]),
+           "nin": len(m["args"]), "nout": len(m["outputs"]),
+           "args": [slot(a) for a in m["args"]],
+           "outs_meta": [slot(o) for o in m["outputs"]]} for m in metas]
     files = {}
     for t, path in (("c_module.c.j2", "c/rigidsym_module.c"),
                     ("c_table.c.j2", "c/rigidsym_table.c"),
-                    ("c_dispatch.h.j2", "c/rigidsym_dispatch.h")):
+                    ("c_dispatch.h.j2", "c/rigidsym_dispatch.h"),
+                    ("c_fast.h.j2", "c/rigidsym_fast.h")):
         files[path] = env.get_template(t).render(kernels=ck, template=t, **ver)
     return files
 
