@@ -10,14 +10,25 @@
  */
 #include "rotation_from_euler_rodrigues.h"
 
-/* Exactly RIGIDSYM_CHECK_BLOCK samples, always: a full block of the batch, or the last partial block
- * padded. One code path for every sample, so that a sample's bits do not depend on where it
- * sits in the batch: no scalar remainder of a vector loop; never
- * inlined, so that both uses run the same machine code. Then one finiteness test over the
- * first m samples' outputs (still in cache): finite inputs can overflow into a non-finite
- * output, flagged as a singular sample is. When something is flagged, each sample's flag is
- * recomputed from that sample alone (its own flag and its own output row) and its row
- * written as NaN. Returns the number of flagged samples among the first m. */
+/* Exactly NB samples, always (RIGIDSYM_CHECK_BLOCK for a full block of the batch, RIGIDSYM_SMALL_BLOCK for
+ * the small blocks of a tail or of a short batch). One code path for every sample, so that a
+ * sample's bits do not depend on where it sits in the batch: no scalar remainder of a vector
+ * loop; never inlined, so that every use runs the same machine code.
+ * Then one finiteness test over the first m samples' outputs (still in cache): finite inputs
+ * can overflow into a non-finite output, flagged as a singular sample is. When something is
+ * flagged, each sample's flag is recomputed from that sample alone (its own flag and its own
+ * output row) and its row written as NaN. Returns the number of flagged samples among the
+ * first m. T float: the float32 sample function (float inputs and outputs, the arithmetic of
+ * the precision plan in the header; sin/cos in double from the widened inputs). */
+
+/* Samples [i0, i0 + m) of the batch, m <= RIGIDSYM_CHECK_BLOCK: a full block, or small blocks, the last
+ * one through padded copies (its real samples, then copies of its last one: valid inputs).
+ * Returns the number flagged. */
+
+/* The batch of n samples on `threads` threads: blocks are independent and the count is an
+ * integer sum, so the result is the same for every thread count. One thread (or one block):
+ * no OpenMP region at all (entering one, even with if(0), costs about a microsecond:
+ * measured, more than a one-sample call). */
 static RIGIDSYM_NOINLINE int64_t rigidsym_rotation_from_euler_rodrigues_block(
     int64_t m,
     const double *RIGIDSYM_RESTRICT in_eta,
@@ -31,6 +42,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_rotation_from_euler_rodrigues_block(
         (void)rigidsym_rotation_from_euler_rodrigues_sample(
             in_eta + 4 * j,
             out_Q + 9 * j);
+
     }
     count += rigidsym_any_nonfinite(out_Q, 9 * m);
     if (count == 0)
@@ -48,69 +60,176 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_rotation_from_euler_rodrigues_block(
     return count;
 }
 
-/* Samples [i0, i0 + m) of the batch, m <= RIGIDSYM_CHECK_BLOCK; the tail through padded copies (the real
- * samples, then copies of the last one: valid inputs). Returns the number flagged. */
+
+static RIGIDSYM_NOINLINE int64_t rigidsym_rotation_from_euler_rodrigues_block_small(
+    int64_t m,
+    const double *RIGIDSYM_RESTRICT in_eta,
+    double *RIGIDSYM_RESTRICT out_Q)
+{
+    int64_t count = 0;
+    /* No division, root or branch: nothing to count per sample. A plain loop; the
+     * compiler's cost model decides on vectorisation (forcing it turns the strided
+     * row-major loads into gathers, measured slower). */
+    for (int64_t j = 0; j < RIGIDSYM_SMALL_BLOCK; ++j) {
+        (void)rigidsym_rotation_from_euler_rodrigues_sample(
+            in_eta + 4 * j,
+            out_Q + 9 * j);
+
+    }
+    count += rigidsym_any_nonfinite(out_Q, 9 * m);
+    if (count == 0)
+        return 0;
+    count = 0;
+    for (int64_t j = 0; j < m; ++j) {
+        int flagged = 0;
+        flagged |= rigidsym_any_nonfinite(out_Q + 9 * j, 9);
+        if (flagged) {
+            ++count;
+            for (int c = 0; c < 9; ++c)
+                out_Q[9 * j + c] = NAN;
+        }
+    }
+    return count;
+}
+
+
+static RIGIDSYM_NOINLINE int64_t rigidsym_rotation_from_euler_rodrigues_block_f32(
+    int64_t m,
+    const float *RIGIDSYM_RESTRICT in_eta,
+    float *RIGIDSYM_RESTRICT out_Q)
+{
+    int64_t count = 0;
+    /* No division, root or branch: nothing to count per sample. A plain loop; the
+     * compiler's cost model decides on vectorisation (forcing it turns the strided
+     * row-major loads into gathers, measured slower). */
+    for (int64_t j = 0; j < RIGIDSYM_CHECK_BLOCK; ++j) {
+        (void)rigidsym_rotation_from_euler_rodrigues_sample_f32(
+            in_eta + 4 * j,
+            out_Q + 9 * j);
+
+    }
+    count += rigidsym_any_nonfinite_f32(out_Q, 9 * m);
+    if (count == 0)
+        return 0;
+    count = 0;
+    for (int64_t j = 0; j < m; ++j) {
+        int flagged = 0;
+        flagged |= rigidsym_any_nonfinite_f32(out_Q + 9 * j, 9);
+        if (flagged) {
+            ++count;
+            for (int c = 0; c < 9; ++c)
+                out_Q[9 * j + c] = NAN;
+        }
+    }
+    return count;
+}
+
+
+static RIGIDSYM_NOINLINE int64_t rigidsym_rotation_from_euler_rodrigues_block_small_f32(
+    int64_t m,
+    const float *RIGIDSYM_RESTRICT in_eta,
+    float *RIGIDSYM_RESTRICT out_Q)
+{
+    int64_t count = 0;
+    /* No division, root or branch: nothing to count per sample. A plain loop; the
+     * compiler's cost model decides on vectorisation (forcing it turns the strided
+     * row-major loads into gathers, measured slower). */
+    for (int64_t j = 0; j < RIGIDSYM_SMALL_BLOCK; ++j) {
+        (void)rigidsym_rotation_from_euler_rodrigues_sample_f32(
+            in_eta + 4 * j,
+            out_Q + 9 * j);
+
+    }
+    count += rigidsym_any_nonfinite_f32(out_Q, 9 * m);
+    if (count == 0)
+        return 0;
+    count = 0;
+    for (int64_t j = 0; j < m; ++j) {
+        int flagged = 0;
+        flagged |= rigidsym_any_nonfinite_f32(out_Q + 9 * j, 9);
+        if (flagged) {
+            ++count;
+            for (int c = 0; c < 9; ++c)
+                out_Q[9 * j + c] = NAN;
+        }
+    }
+    return count;
+}
+
+
 static int64_t rigidsym_rotation_from_euler_rodrigues_run(
     int64_t i0, int64_t m,
     const double *RIGIDSYM_RESTRICT in_eta,
     double *RIGIDSYM_RESTRICT out_Q)
 {
-    double pad_eta[4 * RIGIDSYM_CHECK_BLOCK];
-    double pad_Q[9 * RIGIDSYM_CHECK_BLOCK];
     if (m == RIGIDSYM_CHECK_BLOCK)
         return rigidsym_rotation_from_euler_rodrigues_block(m,
             in_eta + 4 * i0,
             out_Q + 9 * i0);
-    for (int64_t j = 0; j < RIGIDSYM_CHECK_BLOCK; ++j) {
-        const int64_t s = i0 + (j < m ? j : m - 1);
-        memcpy(pad_eta + 4 * j, in_eta + 4 * s,
-               4 * sizeof(double));
+
+    int64_t count = 0;
+    for (int64_t j0 = i0; j0 < i0 + m; j0 += RIGIDSYM_SMALL_BLOCK) {
+        const int64_t mm = i0 + m - j0 < RIGIDSYM_SMALL_BLOCK ? i0 + m - j0 : RIGIDSYM_SMALL_BLOCK;
+        if (mm == RIGIDSYM_SMALL_BLOCK) {
+            count += rigidsym_rotation_from_euler_rodrigues_block_small(mm,
+            in_eta + 4 * j0,
+            out_Q + 9 * j0);
+
+            continue;
+        }
+        double pad_eta[4 * RIGIDSYM_SMALL_BLOCK];
+        double pad_Q[9 * RIGIDSYM_SMALL_BLOCK];
+        for (int64_t j = 0; j < RIGIDSYM_SMALL_BLOCK; ++j) {
+            const int64_t s = j0 + (j < mm ? j : mm - 1);
+            memcpy(pad_eta + 4 * j, in_eta + 4 * s,
+                   4 * sizeof(double));
+        }
+        count += rigidsym_rotation_from_euler_rodrigues_block_small(mm,
+            pad_eta,
+            pad_Q);
+        memcpy(out_Q + 9 * j0, pad_Q,
+               9 * mm * sizeof(double));
     }
-    const int64_t count = rigidsym_rotation_from_euler_rodrigues_block(m,
-        pad_eta,
-        pad_Q);
-    memcpy(out_Q + 9 * i0, pad_Q, 9 * m * sizeof(double));
     return count;
 }
 
-/* float32 storage, float64 arithmetic: samples [i0, i0 + m) widened into the block's local
- * double arrays, evaluated by the same block function, rounded back. A finite double output
- * can overflow float32: such rows are flagged too (NaN). Returns the number flagged. */
+
 static int64_t rigidsym_rotation_from_euler_rodrigues_run_f32(
     int64_t i0, int64_t m,
     const float *RIGIDSYM_RESTRICT in_eta,
     float *RIGIDSYM_RESTRICT out_Q)
 {
-    double pad_eta[4 * RIGIDSYM_CHECK_BLOCK];
-    double pad_Q[9 * RIGIDSYM_CHECK_BLOCK];
-    for (int64_t j = 0; j < RIGIDSYM_CHECK_BLOCK; ++j) {
-        const int64_t s = i0 + (j < m ? j : m - 1);
-        for (int c = 0; c < 4; ++c)
-            pad_eta[4 * j + c] = in_eta[4 * s + c];
-    }
-    int64_t count = rigidsym_rotation_from_euler_rodrigues_block(m,
-        pad_eta,
-        pad_Q);
-    for (int64_t c = 0; c < 9 * m; ++c)
-        out_Q[9 * i0 + c] = (float)pad_Q[c];
-    int64_t over = 0;
-    over += rigidsym_any_nonfinite_f32(out_Q + 9 * i0, 9 * m);
-    if (over == 0)
-        return count;
-    for (int64_t j = 0; j < m; ++j) {
-        const int64_t i = i0 + j;
-        if (out_Q[9 * i] != out_Q[9 * i])
-            continue;                       /* flagged already: its row is NaN */
-        int flagged = 0;
-        flagged |= rigidsym_any_nonfinite_f32(out_Q + 9 * i, 9);
-        if (flagged) {
-            ++count;
-            for (int c = 0; c < 9; ++c)
-                out_Q[9 * i + c] = NAN;
+    if (m == RIGIDSYM_CHECK_BLOCK)
+        return rigidsym_rotation_from_euler_rodrigues_block_f32(m,
+            in_eta + 4 * i0,
+            out_Q + 9 * i0);
+
+    int64_t count = 0;
+    for (int64_t j0 = i0; j0 < i0 + m; j0 += RIGIDSYM_SMALL_BLOCK) {
+        const int64_t mm = i0 + m - j0 < RIGIDSYM_SMALL_BLOCK ? i0 + m - j0 : RIGIDSYM_SMALL_BLOCK;
+        if (mm == RIGIDSYM_SMALL_BLOCK) {
+            count += rigidsym_rotation_from_euler_rodrigues_block_small_f32(mm,
+            in_eta + 4 * j0,
+            out_Q + 9 * j0);
+
+            continue;
         }
+        float pad_eta[4 * RIGIDSYM_SMALL_BLOCK];
+        float pad_Q[9 * RIGIDSYM_SMALL_BLOCK];
+        for (int64_t j = 0; j < RIGIDSYM_SMALL_BLOCK; ++j) {
+            const int64_t s = j0 + (j < mm ? j : mm - 1);
+            memcpy(pad_eta + 4 * j, in_eta + 4 * s,
+                   4 * sizeof(float));
+        }
+        count += rigidsym_rotation_from_euler_rodrigues_block_small_f32(mm,
+            pad_eta,
+            pad_Q);
+        memcpy(out_Q + 9 * j0, pad_Q,
+               9 * mm * sizeof(float));
     }
     return count;
 }
+
 
 int64_t RIGIDSYM_ISA_NAME(rigidsym_rotation_from_euler_rodrigues_f32_threads)(
     int64_t n, int threads,
@@ -119,18 +238,25 @@ int64_t RIGIDSYM_ISA_NAME(rigidsym_rotation_from_euler_rodrigues_f32_threads)(
 {
     const int64_t nblocks = (n + RIGIDSYM_CHECK_BLOCK - 1) / RIGIDSYM_CHECK_BLOCK;
     int64_t count = 0;
-    if (threads < 1)
-        threads = 1;
+    if (threads <= 1 || nblocks <= 1) {
+        for (int64_t b = 0; b < nblocks; ++b) {
+            const int64_t i0 = b * RIGIDSYM_CHECK_BLOCK;
+            count += rigidsym_rotation_from_euler_rodrigues_run_f32(i0, n - i0 < RIGIDSYM_CHECK_BLOCK ? n - i0 : RIGIDSYM_CHECK_BLOCK,
+                in_eta,
+                out_Q);
+        }
+        return count;
+    }
     RIGIDSYM_PARALLEL_FOR(threads)
     for (int64_t b = 0; b < nblocks; ++b) {
         const int64_t i0 = b * RIGIDSYM_CHECK_BLOCK;
-        count += rigidsym_rotation_from_euler_rodrigues_run_f32(
-            i0, n - i0 < RIGIDSYM_CHECK_BLOCK ? n - i0 : RIGIDSYM_CHECK_BLOCK,
+        count += rigidsym_rotation_from_euler_rodrigues_run_f32(i0, n - i0 < RIGIDSYM_CHECK_BLOCK ? n - i0 : RIGIDSYM_CHECK_BLOCK,
             in_eta,
             out_Q);
     }
     return count;
 }
+
 
 int64_t RIGIDSYM_ISA_NAME(rigidsym_rotation_from_euler_rodrigues_threads)(
     int64_t n, int threads,
@@ -139,20 +265,25 @@ int64_t RIGIDSYM_ISA_NAME(rigidsym_rotation_from_euler_rodrigues_threads)(
 {
     const int64_t nblocks = (n + RIGIDSYM_CHECK_BLOCK - 1) / RIGIDSYM_CHECK_BLOCK;
     int64_t count = 0;
-    if (threads < 1)
-        threads = 1;
-    /* blocks are independent and the count is an integer sum: the result is the same for
-     * every thread count */
+    if (threads <= 1 || nblocks <= 1) {
+        for (int64_t b = 0; b < nblocks; ++b) {
+            const int64_t i0 = b * RIGIDSYM_CHECK_BLOCK;
+            count += rigidsym_rotation_from_euler_rodrigues_run(i0, n - i0 < RIGIDSYM_CHECK_BLOCK ? n - i0 : RIGIDSYM_CHECK_BLOCK,
+                in_eta,
+                out_Q);
+        }
+        return count;
+    }
     RIGIDSYM_PARALLEL_FOR(threads)
     for (int64_t b = 0; b < nblocks; ++b) {
         const int64_t i0 = b * RIGIDSYM_CHECK_BLOCK;
-        count += rigidsym_rotation_from_euler_rodrigues_run(
-            i0, n - i0 < RIGIDSYM_CHECK_BLOCK ? n - i0 : RIGIDSYM_CHECK_BLOCK,
+        count += rigidsym_rotation_from_euler_rodrigues_run(i0, n - i0 < RIGIDSYM_CHECK_BLOCK ? n - i0 : RIGIDSYM_CHECK_BLOCK,
             in_eta,
             out_Q);
     }
     return count;
 }
+
 
 int64_t RIGIDSYM_ISA_NAME(rigidsym_rotation_from_euler_rodrigues)(
     int64_t n,

@@ -23,8 +23,8 @@ import sympy as sp
 import rigidsym
 from rigidsym._config import KERNEL_SPEC as BOOK_ORIGIN
 from rigidsym.codegen.api_spec import render_api
-from rigidsym.codegen.optimise import Program, compile_program, math_hash
 from rigidsym.codegen.float32 import plan_kernel
+from rigidsym.codegen.optimise import Program, compile_program, math_hash
 from rigidsym.codegen.printers import KernelCFloatPrinter, KernelCPrinter, KernelNumPyPrinter
 from rigidsym.codegen.spec import Kernel, flat_symbols, input_symbols
 

@@ -18,8 +18,9 @@ import types
 import warnings
 from typing import Any
 
-__all__ = ["STATE", "LISTENERS", "LOCK", "PACKAGE_API", "EULER_SEQUENCES", "warn_once", "register_builtin",
-           "builtin", "select", "backend", "meta", "call", "euler_name", "bind_module"]
+__all__ = ["STATE", "LISTENERS", "LOCK", "PACKAGE_API", "EULER_SEQUENCES", "warn_once",
+           "register_builtin", "builtin", "select", "backend", "meta", "call", "euler_name",
+           "bind_module"]
 
 STATE: dict = {"backend": None, "warned": False, "builtin": None}
 #: called with the backend's name after every selection (the C entry points turn off for
