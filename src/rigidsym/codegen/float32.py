@@ -31,8 +31,11 @@ from rigidsym.codegen.printers import KernelNumPyPrinter
 __all__ = ["BUDGET", "N_RANDOM", "sample_inputs", "choose", "ProgramSpec", "trig_spec",
            "plan_kernel"]
 
-#: the plan's error budget, ulp of float32 (normwise); the tests assert 2
-BUDGET = 1.5
+#: the plan's error budget, ulp of float32 (normwise) against the float64 program; the
+#: tests assert 2 against the 50-digit declared formula, which also sees the model error of
+#: float32 inputs that are not exactly unit or orthogonal (measured up to about 1 ulp: 1.5
+#: here left screw_axis_point at 2.5 there)
+BUDGET = 1.0
 #: random points per kernel (then the adversarial ones)
 N_RANDOM = 1000
 _ADV_PHI = [1e-12, 1e-8, 1e-4, 1e-2, np.pi - 1e-4, np.pi - 1e-2, -1e-6, 3.0]
@@ -79,8 +82,9 @@ def sample_inputs(args, n: int = N_RANDOM, seed: int = 20) -> dict[str, np.ndarr
             if a.name == "omega" and "omega_dot" not in names and "phi" not in names:
                 v[n:n + 3] *= np.array([1e-12, 1e-6, 1e-3])[:, None] / np.linalg.norm(
                     v[n:n + 3], axis=1, keepdims=True)
-            if a.name == "angles":
-                v[n:n + 6, 1] = [1e-6, np.pi / 2 - 1e-3, -1e-6, np.pi / 2 + 1e-3, 1e-2, 1.5]
+            if a.name == "angles":   # gimbal lock of either family, as close as float32 gets
+                v[n:n + 8, 1] = [1e-9, np.pi / 2 - 1e-9, -1e-9, np.pi / 2 + 1e-9, 1e-6,
+                                 np.pi / 2 - 1e-3, 1e-2, 1.5]
         flat = np.asarray(v, dtype=_F32).reshape(m, -1)
         if a.shape == ():
             cols[a.name] = flat[:, 0]
