@@ -44,7 +44,7 @@ _CASES: dict = {}
 def _case(name: str, n: int):
     """float32 inputs (random rows, then the adversarial ones) and the 50-digit reference at
     exactly those values."""
-    if name not in _CASES:
+    if (name, n) not in _CASES:
         arrays = [a.astype(np.float32) for a in inputs(AVAILABLE[name], n, seed=11)]
         wide = [a.astype(np.float64) for a in arrays]
         try:
@@ -62,8 +62,8 @@ def _case(name: str, n: int):
             assert len(keep) >= n + N_ADV - 1, f"{name}: reference undefined at many rows"
             arrays = [a[keep] for a in arrays]
             ref = ref_eval(name, [w[keep] for w in wide])
-        _CASES[name] = arrays, ref
-    return _CASES[name]
+        _CASES[name, n] = arrays, ref
+    return _CASES[name, n]
 
 
 def _run32(name, arrays, backend):
@@ -85,6 +85,18 @@ def test_float32_error_bound_against_50_digits(name, backend):
     assert np.isfinite(err).all(), f"{name}: non-finite output"
     assert rnd.max() <= TOL_RANDOM, f"{name} [{backend}] random: {rnd.max():.3g}"
     assert adv.max() <= TOL_ADVERSARIAL, f"{name} [{backend}] adversarial: {adv.max():.3g}"
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("name", PUBLIC)
+def test_float32_error_bound_1000_points(name):
+    """Issue 20: 1000 random points and the adversarial ones per kernel, compiled float32."""
+    if K.use_backend("c") != "c":
+        pytest.skip("no C backend")
+    arrays, ref = _case(name, 1000)
+    err = rel_err(_run32(name, arrays, "c").astype(np.float64), ref)
+    assert np.isfinite(err).all(), f"{name}: non-finite output"
+    assert err.max() <= TOL_RANDOM, f"{name}: {err.max() / ULP32:.2f} ulp"
 
 
 def test_dtype_rules_nep50(backend):
