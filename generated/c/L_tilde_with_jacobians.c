@@ -10,8 +10,8 @@
  */
 #include "L_tilde_with_jacobians.h"
 
-/* Exactly NB samples, always (64 for a full block of the batch, RIGIDSYM_SMALL_BLOCK for
- * the small blocks of a tail or of a short batch). One code path for every sample, so that a
+/* Exactly NB = 64 samples, always: a full block of the batch, or a partial one padded.
+ * One code path for every sample, so that a
  * sample's bits do not depend on where it sits in the batch: no scalar remainder of a vector
  * loop, and the sin/cos loop works on local aligned arrays only (no alias or alignment
  * versions of it); never inlined, so that every use runs the same machine code.
@@ -22,9 +22,12 @@
  * first m. T float: the float32 sample function (float inputs and outputs, the arithmetic of
  * the precision plan in the header; sin/cos in double from the widened inputs). */
 
-/* Samples [i0, i0 + m) of the batch, m <= 64: a full block, or small blocks, the last
- * one through padded copies (its real samples, then copies of its last one: valid inputs).
- * Returns the number flagged. */
+/* Samples [i0, i0 + m) of the batch, m <= 64: a full block, or a partial one (the tail
+ * of a batch, a batch of a few samples, one sample) through a padded block (its samples, then
+ * copies of its last one: valid inputs). Always the same block function, so a sample's bits
+ * do not depend on its batch: smaller blocks for short batches were measured to change the
+ * last bit of some samples (the compiler vectorises a loop of 4 samples differently, and FMA
+ * contraction with it). Returns the number flagged. */
 
 /* The batch of n samples on `threads` threads: blocks are independent and the count is an
  * integer sum, so the result is the same for every thread count. One thread (or one block):
@@ -55,75 +58,6 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_L_tilde_with_jacobians_block(
         trig_1[j] = cos(x0);
     }
     for (int64_t j = 0; j < 64; ++j) {
-        count += rigidsym_L_tilde_with_jacobians_sample_trig(
-            in_e + 3 * j,
-            in_phi + 1 * j,
-            trig_0[j],
-            trig_1[j],
-            out_L_tilde + 12 * j,
-            out_L_tilde_D_e + 36 * j,
-            out_L_tilde_D_phi + 12 * j);
-    }
-    count += rigidsym_any_nonfinite(out_L_tilde, 12 * m);
-    count += rigidsym_any_nonfinite(out_L_tilde_D_e, 36 * m);
-    count += rigidsym_any_nonfinite(out_L_tilde_D_phi, 12 * m);
-    if (count == 0)
-        return 0;
-    count = 0;
-    for (int64_t j = 0; j < m; ++j) {
-        double tmp_L_tilde[12];
-        double tmp_L_tilde_D_e[36];
-        double tmp_L_tilde_D_phi[12];
-        int flagged = rigidsym_L_tilde_with_jacobians_sample_trig(
-            in_e + 3 * j,
-            in_phi + 1 * j,
-            trig_0[j],
-            trig_1[j],
-            tmp_L_tilde,
-            tmp_L_tilde_D_e,
-            tmp_L_tilde_D_phi);
-        flagged |= rigidsym_any_nonfinite(out_L_tilde + 12 * j, 12);
-        flagged |= rigidsym_any_nonfinite(out_L_tilde_D_e + 36 * j, 36);
-        flagged |= rigidsym_any_nonfinite(out_L_tilde_D_phi + 12 * j, 12);
-        if (flagged) {
-            ++count;
-            for (int c = 0; c < 12; ++c)
-                out_L_tilde[12 * j + c] = NAN;
-            for (int c = 0; c < 36; ++c)
-                out_L_tilde_D_e[36 * j + c] = NAN;
-            for (int c = 0; c < 12; ++c)
-                out_L_tilde_D_phi[12 * j + c] = NAN;
-        }
-    }
-    return count;
-}
-
-
-static RIGIDSYM_NOINLINE int64_t rigidsym_L_tilde_with_jacobians_block_small(
-    int64_t m,
-    const double *RIGIDSYM_RESTRICT in_e,
-    const double *RIGIDSYM_RESTRICT in_phi,
-    double *RIGIDSYM_RESTRICT out_L_tilde,
-    double *RIGIDSYM_RESTRICT out_L_tilde_D_e,
-    double *RIGIDSYM_RESTRICT out_L_tilde_D_phi)
-{
-    int64_t count = 0;
-    RIGIDSYM_ALIGNED double trig_0[RIGIDSYM_SMALL_BLOCK];
-    RIGIDSYM_ALIGNED double trig_1[RIGIDSYM_SMALL_BLOCK];
-    RIGIDSYM_ALIGNED double col_phi[RIGIDSYM_SMALL_BLOCK];
-    for (int64_t j = 0; j < RIGIDSYM_SMALL_BLOCK; ++j) {
-        col_phi[j] = in_phi[1 * j + 0];
-    }
-    /* a SIMD loop evaluates the sin/cos values into local arrays, then a per-sample loop
-     * reads them */
-    RIGIDSYM_SIMD
-    for (int64_t j = 0; j < RIGIDSYM_SMALL_BLOCK; ++j) {
-        const double phi = col_phi[j];
-        const double x0 = (0.5)*phi;
-        trig_0[j] = sin(x0);
-        trig_1[j] = cos(x0);
-    }
-    for (int64_t j = 0; j < RIGIDSYM_SMALL_BLOCK; ++j) {
         count += rigidsym_L_tilde_with_jacobians_sample_trig(
             in_e + 3 * j,
             in_phi + 1 * j,
@@ -237,75 +171,6 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_L_tilde_with_jacobians_block_f32(
 }
 
 
-static RIGIDSYM_NOINLINE int64_t rigidsym_L_tilde_with_jacobians_block_small_f32(
-    int64_t m,
-    const float *RIGIDSYM_RESTRICT in_e,
-    const float *RIGIDSYM_RESTRICT in_phi,
-    float *RIGIDSYM_RESTRICT out_L_tilde,
-    float *RIGIDSYM_RESTRICT out_L_tilde_D_e,
-    float *RIGIDSYM_RESTRICT out_L_tilde_D_phi)
-{
-    int64_t count = 0;
-    RIGIDSYM_ALIGNED double trig_0[RIGIDSYM_SMALL_BLOCK];
-    RIGIDSYM_ALIGNED double trig_1[RIGIDSYM_SMALL_BLOCK];
-    RIGIDSYM_ALIGNED double col_phi[RIGIDSYM_SMALL_BLOCK];
-    for (int64_t j = 0; j < RIGIDSYM_SMALL_BLOCK; ++j) {
-        col_phi[j] = in_phi[1 * j + 0];
-    }
-    /* a SIMD loop evaluates the sin/cos values into local arrays, then a per-sample loop
-     * reads them */
-    RIGIDSYM_SIMD
-    for (int64_t j = 0; j < RIGIDSYM_SMALL_BLOCK; ++j) {
-        const double phi = col_phi[j];
-        const double x0 = (0.5)*phi;
-        trig_0[j] = sin(x0);
-        trig_1[j] = cos(x0);
-    }
-    for (int64_t j = 0; j < RIGIDSYM_SMALL_BLOCK; ++j) {
-        count += rigidsym_L_tilde_with_jacobians_sample_trig_f32(
-            in_e + 3 * j,
-            in_phi + 1 * j,
-            trig_0[j],
-            trig_1[j],
-            out_L_tilde + 12 * j,
-            out_L_tilde_D_e + 36 * j,
-            out_L_tilde_D_phi + 12 * j);
-    }
-    count += rigidsym_any_nonfinite_f32(out_L_tilde, 12 * m);
-    count += rigidsym_any_nonfinite_f32(out_L_tilde_D_e, 36 * m);
-    count += rigidsym_any_nonfinite_f32(out_L_tilde_D_phi, 12 * m);
-    if (count == 0)
-        return 0;
-    count = 0;
-    for (int64_t j = 0; j < m; ++j) {
-        float tmp_L_tilde[12];
-        float tmp_L_tilde_D_e[36];
-        float tmp_L_tilde_D_phi[12];
-        int flagged = rigidsym_L_tilde_with_jacobians_sample_trig_f32(
-            in_e + 3 * j,
-            in_phi + 1 * j,
-            trig_0[j],
-            trig_1[j],
-            tmp_L_tilde,
-            tmp_L_tilde_D_e,
-            tmp_L_tilde_D_phi);
-        flagged |= rigidsym_any_nonfinite_f32(out_L_tilde + 12 * j, 12);
-        flagged |= rigidsym_any_nonfinite_f32(out_L_tilde_D_e + 36 * j, 36);
-        flagged |= rigidsym_any_nonfinite_f32(out_L_tilde_D_phi + 12 * j, 12);
-        if (flagged) {
-            ++count;
-            for (int c = 0; c < 12; ++c)
-                out_L_tilde[12 * j + c] = NAN;
-            for (int c = 0; c < 36; ++c)
-                out_L_tilde_D_e[36 * j + c] = NAN;
-            for (int c = 0; c < 12; ++c)
-                out_L_tilde_D_phi[12 * j + c] = NAN;
-        }
-    }
-    return count;
-}
-
-
 static int64_t rigidsym_L_tilde_with_jacobians_run(
     int64_t i0, int64_t m,
     const double *RIGIDSYM_RESTRICT in_e,
@@ -322,44 +187,27 @@ static int64_t rigidsym_L_tilde_with_jacobians_run(
             out_L_tilde_D_e + 36 * i0,
             out_L_tilde_D_phi + 12 * i0);
 
-    int64_t count = 0;
-    for (int64_t j0 = i0; j0 < i0 + m; j0 += RIGIDSYM_SMALL_BLOCK) {
-        const int64_t mm = i0 + m - j0 < RIGIDSYM_SMALL_BLOCK ? i0 + m - j0 : RIGIDSYM_SMALL_BLOCK;
-        if (mm == RIGIDSYM_SMALL_BLOCK) {
-            count += rigidsym_L_tilde_with_jacobians_block_small(mm,
-            in_e + 3 * j0,
-            in_phi + 1 * j0,
-            out_L_tilde + 12 * j0,
-            out_L_tilde_D_e + 36 * j0,
-            out_L_tilde_D_phi + 12 * j0);
-
-            continue;
-        }
-        double pad_e[3 * RIGIDSYM_SMALL_BLOCK];
-        double pad_phi[1 * RIGIDSYM_SMALL_BLOCK];
-        double pad_L_tilde[12 * RIGIDSYM_SMALL_BLOCK];
-        double pad_L_tilde_D_e[36 * RIGIDSYM_SMALL_BLOCK];
-        double pad_L_tilde_D_phi[12 * RIGIDSYM_SMALL_BLOCK];
-        for (int64_t j = 0; j < RIGIDSYM_SMALL_BLOCK; ++j) {
-            const int64_t s = j0 + (j < mm ? j : mm - 1);
-            memcpy(pad_e + 3 * j, in_e + 3 * s,
-                   3 * sizeof(double));
-            memcpy(pad_phi + 1 * j, in_phi + 1 * s,
-                   1 * sizeof(double));
-        }
-        count += rigidsym_L_tilde_with_jacobians_block_small(mm,
-            pad_e,
-            pad_phi,
-            pad_L_tilde,
-            pad_L_tilde_D_e,
-            pad_L_tilde_D_phi);
-        memcpy(out_L_tilde + 12 * j0, pad_L_tilde,
-               12 * mm * sizeof(double));
-        memcpy(out_L_tilde_D_e + 36 * j0, pad_L_tilde_D_e,
-               36 * mm * sizeof(double));
-        memcpy(out_L_tilde_D_phi + 12 * j0, pad_L_tilde_D_phi,
-               12 * mm * sizeof(double));
+    double pad_e[3 * 64];
+    double pad_phi[1 * 64];
+    double pad_L_tilde[12 * 64];
+    double pad_L_tilde_D_e[36 * 64];
+    double pad_L_tilde_D_phi[12 * 64];
+    for (int64_t j = 0; j < 64; ++j) {
+        const int64_t s = i0 + (j < m ? j : m - 1);
+        memcpy(pad_e + 3 * j, in_e + 3 * s,
+               3 * sizeof(double));
+        memcpy(pad_phi + 1 * j, in_phi + 1 * s,
+               1 * sizeof(double));
     }
+    const int64_t count = rigidsym_L_tilde_with_jacobians_block(m,
+        pad_e,
+        pad_phi,
+        pad_L_tilde,
+        pad_L_tilde_D_e,
+        pad_L_tilde_D_phi);
+    memcpy(out_L_tilde + 12 * i0, pad_L_tilde, 12 * m * sizeof(double));
+    memcpy(out_L_tilde_D_e + 36 * i0, pad_L_tilde_D_e, 36 * m * sizeof(double));
+    memcpy(out_L_tilde_D_phi + 12 * i0, pad_L_tilde_D_phi, 12 * m * sizeof(double));
     return count;
 }
 
@@ -380,44 +228,27 @@ static int64_t rigidsym_L_tilde_with_jacobians_run_f32(
             out_L_tilde_D_e + 36 * i0,
             out_L_tilde_D_phi + 12 * i0);
 
-    int64_t count = 0;
-    for (int64_t j0 = i0; j0 < i0 + m; j0 += RIGIDSYM_SMALL_BLOCK) {
-        const int64_t mm = i0 + m - j0 < RIGIDSYM_SMALL_BLOCK ? i0 + m - j0 : RIGIDSYM_SMALL_BLOCK;
-        if (mm == RIGIDSYM_SMALL_BLOCK) {
-            count += rigidsym_L_tilde_with_jacobians_block_small_f32(mm,
-            in_e + 3 * j0,
-            in_phi + 1 * j0,
-            out_L_tilde + 12 * j0,
-            out_L_tilde_D_e + 36 * j0,
-            out_L_tilde_D_phi + 12 * j0);
-
-            continue;
-        }
-        float pad_e[3 * RIGIDSYM_SMALL_BLOCK];
-        float pad_phi[1 * RIGIDSYM_SMALL_BLOCK];
-        float pad_L_tilde[12 * RIGIDSYM_SMALL_BLOCK];
-        float pad_L_tilde_D_e[36 * RIGIDSYM_SMALL_BLOCK];
-        float pad_L_tilde_D_phi[12 * RIGIDSYM_SMALL_BLOCK];
-        for (int64_t j = 0; j < RIGIDSYM_SMALL_BLOCK; ++j) {
-            const int64_t s = j0 + (j < mm ? j : mm - 1);
-            memcpy(pad_e + 3 * j, in_e + 3 * s,
-                   3 * sizeof(float));
-            memcpy(pad_phi + 1 * j, in_phi + 1 * s,
-                   1 * sizeof(float));
-        }
-        count += rigidsym_L_tilde_with_jacobians_block_small_f32(mm,
-            pad_e,
-            pad_phi,
-            pad_L_tilde,
-            pad_L_tilde_D_e,
-            pad_L_tilde_D_phi);
-        memcpy(out_L_tilde + 12 * j0, pad_L_tilde,
-               12 * mm * sizeof(float));
-        memcpy(out_L_tilde_D_e + 36 * j0, pad_L_tilde_D_e,
-               36 * mm * sizeof(float));
-        memcpy(out_L_tilde_D_phi + 12 * j0, pad_L_tilde_D_phi,
-               12 * mm * sizeof(float));
+    float pad_e[3 * 64];
+    float pad_phi[1 * 64];
+    float pad_L_tilde[12 * 64];
+    float pad_L_tilde_D_e[36 * 64];
+    float pad_L_tilde_D_phi[12 * 64];
+    for (int64_t j = 0; j < 64; ++j) {
+        const int64_t s = i0 + (j < m ? j : m - 1);
+        memcpy(pad_e + 3 * j, in_e + 3 * s,
+               3 * sizeof(float));
+        memcpy(pad_phi + 1 * j, in_phi + 1 * s,
+               1 * sizeof(float));
     }
+    const int64_t count = rigidsym_L_tilde_with_jacobians_block_f32(m,
+        pad_e,
+        pad_phi,
+        pad_L_tilde,
+        pad_L_tilde_D_e,
+        pad_L_tilde_D_phi);
+    memcpy(out_L_tilde + 12 * i0, pad_L_tilde, 12 * m * sizeof(float));
+    memcpy(out_L_tilde_D_e + 36 * i0, pad_L_tilde_D_e, 36 * m * sizeof(float));
+    memcpy(out_L_tilde_D_phi + 12 * i0, pad_L_tilde_D_phi, 12 * m * sizeof(float));
     return count;
 }
 

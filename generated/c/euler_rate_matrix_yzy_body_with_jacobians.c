@@ -10,8 +10,8 @@
  */
 #include "euler_rate_matrix_yzy_body_with_jacobians.h"
 
-/* Exactly NB samples, always (64 for a full block of the batch, RIGIDSYM_SMALL_BLOCK for
- * the small blocks of a tail or of a short batch). One code path for every sample, so that a
+/* Exactly NB = 64 samples, always: a full block of the batch, or a partial one padded.
+ * One code path for every sample, so that a
  * sample's bits do not depend on where it sits in the batch: no scalar remainder of a vector
  * loop, and the sin/cos loop works on local aligned arrays only (no alias or alignment
  * versions of it); never inlined, so that every use runs the same machine code.
@@ -22,9 +22,12 @@
  * first m. T float: the float32 sample function (float inputs and outputs, the arithmetic of
  * the precision plan in the header; sin/cos in double from the widened inputs). */
 
-/* Samples [i0, i0 + m) of the batch, m <= 64: a full block, or small blocks, the last
- * one through padded copies (its real samples, then copies of its last one: valid inputs).
- * Returns the number flagged. */
+/* Samples [i0, i0 + m) of the batch, m <= 64: a full block, or a partial one (the tail
+ * of a batch, a batch of a few samples, one sample) through a padded block (its samples, then
+ * copies of its last one: valid inputs). Always the same block function, so a sample's bits
+ * do not depend on its batch: smaller blocks for short batches were measured to change the
+ * last bit of some samples (the compiler vectorises a loop of 4 samples differently, and FMA
+ * contraction with it). Returns the number flagged. */
 
 /* The batch of n samples on `threads` threads: blocks are independent and the count is an
  * integer sum, so the result is the same for every thread count. One thread (or one block):
@@ -59,65 +62,6 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_euler_rate_matrix_yzy_body_with_jacobi
         trig_3[j] = cos(angles_1);
     }
     for (int64_t j = 0; j < 64; ++j) {
-        count += rigidsym_euler_rate_matrix_yzy_body_with_jacobians_sample_trig(
-            in_angles + 3 * j,
-            trig_0[j],
-            trig_1[j],
-            trig_2[j],
-            trig_3[j],
-            out_W + 9 * j,
-            out_W_D_angles + 27 * j);
-    }
-    count += rigidsym_any_nonfinite(out_W, 9 * m);
-    count += rigidsym_any_nonfinite(out_W_D_angles, 27 * m);
-    if (count == 0)
-        return 0;
-    count = 0;
-    for (int64_t j = 0; j < m; ++j) {
-        int flagged = 0;
-        flagged |= rigidsym_any_nonfinite(out_W + 9 * j, 9);
-        flagged |= rigidsym_any_nonfinite(out_W_D_angles + 27 * j, 27);
-        if (flagged) {
-            ++count;
-            for (int c = 0; c < 9; ++c)
-                out_W[9 * j + c] = NAN;
-            for (int c = 0; c < 27; ++c)
-                out_W_D_angles[27 * j + c] = NAN;
-        }
-    }
-    return count;
-}
-
-
-static RIGIDSYM_NOINLINE int64_t rigidsym_euler_rate_matrix_yzy_body_with_jacobians_block_small(
-    int64_t m,
-    const double *RIGIDSYM_RESTRICT in_angles,
-    double *RIGIDSYM_RESTRICT out_W,
-    double *RIGIDSYM_RESTRICT out_W_D_angles)
-{
-    int64_t count = 0;
-    RIGIDSYM_ALIGNED double trig_0[RIGIDSYM_SMALL_BLOCK];
-    RIGIDSYM_ALIGNED double trig_1[RIGIDSYM_SMALL_BLOCK];
-    RIGIDSYM_ALIGNED double trig_2[RIGIDSYM_SMALL_BLOCK];
-    RIGIDSYM_ALIGNED double trig_3[RIGIDSYM_SMALL_BLOCK];
-    RIGIDSYM_ALIGNED double col_angles_1[RIGIDSYM_SMALL_BLOCK];
-    RIGIDSYM_ALIGNED double col_angles_2[RIGIDSYM_SMALL_BLOCK];
-    for (int64_t j = 0; j < RIGIDSYM_SMALL_BLOCK; ++j) {
-        col_angles_1[j] = in_angles[3 * j + 1];
-        col_angles_2[j] = in_angles[3 * j + 2];
-    }
-    /* a SIMD loop evaluates the sin/cos values into local arrays, then a per-sample loop
-     * reads them */
-    RIGIDSYM_SIMD
-    for (int64_t j = 0; j < RIGIDSYM_SMALL_BLOCK; ++j) {
-        const double angles_1 = col_angles_1[j];
-        const double angles_2 = col_angles_2[j];
-        trig_0[j] = sin(angles_1);
-        trig_1[j] = cos(angles_2);
-        trig_2[j] = sin(angles_2);
-        trig_3[j] = cos(angles_1);
-    }
-    for (int64_t j = 0; j < RIGIDSYM_SMALL_BLOCK; ++j) {
         count += rigidsym_euler_rate_matrix_yzy_body_with_jacobians_sample_trig(
             in_angles + 3 * j,
             trig_0[j],
@@ -207,65 +151,6 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_euler_rate_matrix_yzy_body_with_jacobi
 }
 
 
-static RIGIDSYM_NOINLINE int64_t rigidsym_euler_rate_matrix_yzy_body_with_jacobians_block_small_f32(
-    int64_t m,
-    const float *RIGIDSYM_RESTRICT in_angles,
-    float *RIGIDSYM_RESTRICT out_W,
-    float *RIGIDSYM_RESTRICT out_W_D_angles)
-{
-    int64_t count = 0;
-    RIGIDSYM_ALIGNED double trig_0[RIGIDSYM_SMALL_BLOCK];
-    RIGIDSYM_ALIGNED double trig_1[RIGIDSYM_SMALL_BLOCK];
-    RIGIDSYM_ALIGNED double trig_2[RIGIDSYM_SMALL_BLOCK];
-    RIGIDSYM_ALIGNED double trig_3[RIGIDSYM_SMALL_BLOCK];
-    RIGIDSYM_ALIGNED double col_angles_1[RIGIDSYM_SMALL_BLOCK];
-    RIGIDSYM_ALIGNED double col_angles_2[RIGIDSYM_SMALL_BLOCK];
-    for (int64_t j = 0; j < RIGIDSYM_SMALL_BLOCK; ++j) {
-        col_angles_1[j] = in_angles[3 * j + 1];
-        col_angles_2[j] = in_angles[3 * j + 2];
-    }
-    /* a SIMD loop evaluates the sin/cos values into local arrays, then a per-sample loop
-     * reads them */
-    RIGIDSYM_SIMD
-    for (int64_t j = 0; j < RIGIDSYM_SMALL_BLOCK; ++j) {
-        const double angles_1 = col_angles_1[j];
-        const double angles_2 = col_angles_2[j];
-        trig_0[j] = sin(angles_1);
-        trig_1[j] = cos(angles_2);
-        trig_2[j] = sin(angles_2);
-        trig_3[j] = cos(angles_1);
-    }
-    for (int64_t j = 0; j < RIGIDSYM_SMALL_BLOCK; ++j) {
-        count += rigidsym_euler_rate_matrix_yzy_body_with_jacobians_sample_trig_f32(
-            in_angles + 3 * j,
-            trig_0[j],
-            trig_1[j],
-            trig_2[j],
-            trig_3[j],
-            out_W + 9 * j,
-            out_W_D_angles + 27 * j);
-    }
-    count += rigidsym_any_nonfinite_f32(out_W, 9 * m);
-    count += rigidsym_any_nonfinite_f32(out_W_D_angles, 27 * m);
-    if (count == 0)
-        return 0;
-    count = 0;
-    for (int64_t j = 0; j < m; ++j) {
-        int flagged = 0;
-        flagged |= rigidsym_any_nonfinite_f32(out_W + 9 * j, 9);
-        flagged |= rigidsym_any_nonfinite_f32(out_W_D_angles + 27 * j, 27);
-        if (flagged) {
-            ++count;
-            for (int c = 0; c < 9; ++c)
-                out_W[9 * j + c] = NAN;
-            for (int c = 0; c < 27; ++c)
-                out_W_D_angles[27 * j + c] = NAN;
-        }
-    }
-    return count;
-}
-
-
 static int64_t rigidsym_euler_rate_matrix_yzy_body_with_jacobians_run(
     int64_t i0, int64_t m,
     const double *RIGIDSYM_RESTRICT in_angles,
@@ -278,34 +163,20 @@ static int64_t rigidsym_euler_rate_matrix_yzy_body_with_jacobians_run(
             out_W + 9 * i0,
             out_W_D_angles + 27 * i0);
 
-    int64_t count = 0;
-    for (int64_t j0 = i0; j0 < i0 + m; j0 += RIGIDSYM_SMALL_BLOCK) {
-        const int64_t mm = i0 + m - j0 < RIGIDSYM_SMALL_BLOCK ? i0 + m - j0 : RIGIDSYM_SMALL_BLOCK;
-        if (mm == RIGIDSYM_SMALL_BLOCK) {
-            count += rigidsym_euler_rate_matrix_yzy_body_with_jacobians_block_small(mm,
-            in_angles + 3 * j0,
-            out_W + 9 * j0,
-            out_W_D_angles + 27 * j0);
-
-            continue;
-        }
-        double pad_angles[3 * RIGIDSYM_SMALL_BLOCK];
-        double pad_W[9 * RIGIDSYM_SMALL_BLOCK];
-        double pad_W_D_angles[27 * RIGIDSYM_SMALL_BLOCK];
-        for (int64_t j = 0; j < RIGIDSYM_SMALL_BLOCK; ++j) {
-            const int64_t s = j0 + (j < mm ? j : mm - 1);
-            memcpy(pad_angles + 3 * j, in_angles + 3 * s,
-                   3 * sizeof(double));
-        }
-        count += rigidsym_euler_rate_matrix_yzy_body_with_jacobians_block_small(mm,
-            pad_angles,
-            pad_W,
-            pad_W_D_angles);
-        memcpy(out_W + 9 * j0, pad_W,
-               9 * mm * sizeof(double));
-        memcpy(out_W_D_angles + 27 * j0, pad_W_D_angles,
-               27 * mm * sizeof(double));
+    double pad_angles[3 * 64];
+    double pad_W[9 * 64];
+    double pad_W_D_angles[27 * 64];
+    for (int64_t j = 0; j < 64; ++j) {
+        const int64_t s = i0 + (j < m ? j : m - 1);
+        memcpy(pad_angles + 3 * j, in_angles + 3 * s,
+               3 * sizeof(double));
     }
+    const int64_t count = rigidsym_euler_rate_matrix_yzy_body_with_jacobians_block(m,
+        pad_angles,
+        pad_W,
+        pad_W_D_angles);
+    memcpy(out_W + 9 * i0, pad_W, 9 * m * sizeof(double));
+    memcpy(out_W_D_angles + 27 * i0, pad_W_D_angles, 27 * m * sizeof(double));
     return count;
 }
 
@@ -322,34 +193,20 @@ static int64_t rigidsym_euler_rate_matrix_yzy_body_with_jacobians_run_f32(
             out_W + 9 * i0,
             out_W_D_angles + 27 * i0);
 
-    int64_t count = 0;
-    for (int64_t j0 = i0; j0 < i0 + m; j0 += RIGIDSYM_SMALL_BLOCK) {
-        const int64_t mm = i0 + m - j0 < RIGIDSYM_SMALL_BLOCK ? i0 + m - j0 : RIGIDSYM_SMALL_BLOCK;
-        if (mm == RIGIDSYM_SMALL_BLOCK) {
-            count += rigidsym_euler_rate_matrix_yzy_body_with_jacobians_block_small_f32(mm,
-            in_angles + 3 * j0,
-            out_W + 9 * j0,
-            out_W_D_angles + 27 * j0);
-
-            continue;
-        }
-        float pad_angles[3 * RIGIDSYM_SMALL_BLOCK];
-        float pad_W[9 * RIGIDSYM_SMALL_BLOCK];
-        float pad_W_D_angles[27 * RIGIDSYM_SMALL_BLOCK];
-        for (int64_t j = 0; j < RIGIDSYM_SMALL_BLOCK; ++j) {
-            const int64_t s = j0 + (j < mm ? j : mm - 1);
-            memcpy(pad_angles + 3 * j, in_angles + 3 * s,
-                   3 * sizeof(float));
-        }
-        count += rigidsym_euler_rate_matrix_yzy_body_with_jacobians_block_small_f32(mm,
-            pad_angles,
-            pad_W,
-            pad_W_D_angles);
-        memcpy(out_W + 9 * j0, pad_W,
-               9 * mm * sizeof(float));
-        memcpy(out_W_D_angles + 27 * j0, pad_W_D_angles,
-               27 * mm * sizeof(float));
+    float pad_angles[3 * 64];
+    float pad_W[9 * 64];
+    float pad_W_D_angles[27 * 64];
+    for (int64_t j = 0; j < 64; ++j) {
+        const int64_t s = i0 + (j < m ? j : m - 1);
+        memcpy(pad_angles + 3 * j, in_angles + 3 * s,
+               3 * sizeof(float));
     }
+    const int64_t count = rigidsym_euler_rate_matrix_yzy_body_with_jacobians_block_f32(m,
+        pad_angles,
+        pad_W,
+        pad_W_D_angles);
+    memcpy(out_W + 9 * i0, pad_W, 9 * m * sizeof(float));
+    memcpy(out_W_D_angles + 27 * i0, pad_W_D_angles, 27 * m * sizeof(float));
     return count;
 }
 

@@ -10,8 +10,8 @@
  */
 #include "instant_screw_axis.h"
 
-/* Exactly NB samples, always (RIGIDSYM_CHECK_BLOCK for a full block of the batch, RIGIDSYM_SMALL_BLOCK for
- * the small blocks of a tail or of a short batch). One code path for every sample, so that a
+/* Exactly NB = RIGIDSYM_CHECK_BLOCK samples, always: a full block of the batch, or a partial one padded.
+ * One code path for every sample, so that a
  * sample's bits do not depend on where it sits in the batch: no scalar remainder of a vector
  * loop; never inlined, so that every use runs the same machine code.
  * Then one finiteness test over the first m samples' outputs (still in cache): finite inputs
@@ -21,9 +21,12 @@
  * first m. T float: the float32 sample function (float inputs and outputs, the arithmetic of
  * the precision plan in the header; sin/cos in double from the widened inputs). */
 
-/* Samples [i0, i0 + m) of the batch, m <= RIGIDSYM_CHECK_BLOCK: a full block, or small blocks, the last
- * one through padded copies (its real samples, then copies of its last one: valid inputs).
- * Returns the number flagged. */
+/* Samples [i0, i0 + m) of the batch, m <= RIGIDSYM_CHECK_BLOCK: a full block, or a partial one (the tail
+ * of a batch, a batch of a few samples, one sample) through a padded block (its samples, then
+ * copies of its last one: valid inputs). Always the same block function, so a sample's bits
+ * do not depend on its batch: smaller blocks for short batches were measured to change the
+ * last bit of some samples (the compiler vectorises a loop of 4 samples differently, and FMA
+ * contraction with it). Returns the number flagged. */
 
 /* The batch of n samples on `threads` threads: blocks are independent and the count is an
  * integer sum, so the result is the same for every thread count. One thread (or one block):
@@ -42,62 +45,6 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_instant_screw_axis_block(
     /* branch-free so that the compiler can vectorise it */
     RIGIDSYM_SIMD_COUNT
     for (int64_t j = 0; j < RIGIDSYM_CHECK_BLOCK; ++j) {
-        count += rigidsym_instant_screw_axis_sample(
-            in_omega + 3 * j,
-            in_a + 3 * j,
-            in_a_dot + 3 * j,
-            out_p0 + 3 * j,
-            out_pitch + 1 * j,
-            out_plucker + 6 * j);
-
-    }
-    count += rigidsym_any_nonfinite(out_p0, 3 * m);
-    count += rigidsym_any_nonfinite(out_pitch, 1 * m);
-    count += rigidsym_any_nonfinite(out_plucker, 6 * m);
-    if (count == 0)
-        return 0;
-    count = 0;
-    for (int64_t j = 0; j < m; ++j) {
-        double tmp_p0[3];
-        double tmp_pitch[1];
-        double tmp_plucker[6];
-        int flagged = rigidsym_instant_screw_axis_sample(
-            in_omega + 3 * j,
-            in_a + 3 * j,
-            in_a_dot + 3 * j,
-            tmp_p0,
-            tmp_pitch,
-            tmp_plucker);
-        flagged |= rigidsym_any_nonfinite(out_p0 + 3 * j, 3);
-        flagged |= rigidsym_any_nonfinite(out_pitch + 1 * j, 1);
-        flagged |= rigidsym_any_nonfinite(out_plucker + 6 * j, 6);
-        if (flagged) {
-            ++count;
-            for (int c = 0; c < 3; ++c)
-                out_p0[3 * j + c] = NAN;
-            for (int c = 0; c < 1; ++c)
-                out_pitch[1 * j + c] = NAN;
-            for (int c = 0; c < 6; ++c)
-                out_plucker[6 * j + c] = NAN;
-        }
-    }
-    return count;
-}
-
-
-static RIGIDSYM_NOINLINE int64_t rigidsym_instant_screw_axis_block_small(
-    int64_t m,
-    const double *RIGIDSYM_RESTRICT in_omega,
-    const double *RIGIDSYM_RESTRICT in_a,
-    const double *RIGIDSYM_RESTRICT in_a_dot,
-    double *RIGIDSYM_RESTRICT out_p0,
-    double *RIGIDSYM_RESTRICT out_pitch,
-    double *RIGIDSYM_RESTRICT out_plucker)
-{
-    int64_t count = 0;
-    /* branch-free so that the compiler can vectorise it */
-    RIGIDSYM_SIMD_COUNT
-    for (int64_t j = 0; j < RIGIDSYM_SMALL_BLOCK; ++j) {
         count += rigidsym_instant_screw_axis_sample(
             in_omega + 3 * j,
             in_a + 3 * j,
@@ -197,62 +144,6 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_instant_screw_axis_block_f32(
 }
 
 
-static RIGIDSYM_NOINLINE int64_t rigidsym_instant_screw_axis_block_small_f32(
-    int64_t m,
-    const float *RIGIDSYM_RESTRICT in_omega,
-    const float *RIGIDSYM_RESTRICT in_a,
-    const float *RIGIDSYM_RESTRICT in_a_dot,
-    float *RIGIDSYM_RESTRICT out_p0,
-    float *RIGIDSYM_RESTRICT out_pitch,
-    float *RIGIDSYM_RESTRICT out_plucker)
-{
-    int64_t count = 0;
-    /* branch-free so that the compiler can vectorise it */
-    RIGIDSYM_SIMD_COUNT
-    for (int64_t j = 0; j < RIGIDSYM_SMALL_BLOCK; ++j) {
-        count += rigidsym_instant_screw_axis_sample_f32(
-            in_omega + 3 * j,
-            in_a + 3 * j,
-            in_a_dot + 3 * j,
-            out_p0 + 3 * j,
-            out_pitch + 1 * j,
-            out_plucker + 6 * j);
-
-    }
-    count += rigidsym_any_nonfinite_f32(out_p0, 3 * m);
-    count += rigidsym_any_nonfinite_f32(out_pitch, 1 * m);
-    count += rigidsym_any_nonfinite_f32(out_plucker, 6 * m);
-    if (count == 0)
-        return 0;
-    count = 0;
-    for (int64_t j = 0; j < m; ++j) {
-        float tmp_p0[3];
-        float tmp_pitch[1];
-        float tmp_plucker[6];
-        int flagged = rigidsym_instant_screw_axis_sample_f32(
-            in_omega + 3 * j,
-            in_a + 3 * j,
-            in_a_dot + 3 * j,
-            tmp_p0,
-            tmp_pitch,
-            tmp_plucker);
-        flagged |= rigidsym_any_nonfinite_f32(out_p0 + 3 * j, 3);
-        flagged |= rigidsym_any_nonfinite_f32(out_pitch + 1 * j, 1);
-        flagged |= rigidsym_any_nonfinite_f32(out_plucker + 6 * j, 6);
-        if (flagged) {
-            ++count;
-            for (int c = 0; c < 3; ++c)
-                out_p0[3 * j + c] = NAN;
-            for (int c = 0; c < 1; ++c)
-                out_pitch[1 * j + c] = NAN;
-            for (int c = 0; c < 6; ++c)
-                out_plucker[6 * j + c] = NAN;
-        }
-    }
-    return count;
-}
-
-
 static int64_t rigidsym_instant_screw_axis_run(
     int64_t i0, int64_t m,
     const double *RIGIDSYM_RESTRICT in_omega,
@@ -271,49 +162,31 @@ static int64_t rigidsym_instant_screw_axis_run(
             out_pitch + 1 * i0,
             out_plucker + 6 * i0);
 
-    int64_t count = 0;
-    for (int64_t j0 = i0; j0 < i0 + m; j0 += RIGIDSYM_SMALL_BLOCK) {
-        const int64_t mm = i0 + m - j0 < RIGIDSYM_SMALL_BLOCK ? i0 + m - j0 : RIGIDSYM_SMALL_BLOCK;
-        if (mm == RIGIDSYM_SMALL_BLOCK) {
-            count += rigidsym_instant_screw_axis_block_small(mm,
-            in_omega + 3 * j0,
-            in_a + 3 * j0,
-            in_a_dot + 3 * j0,
-            out_p0 + 3 * j0,
-            out_pitch + 1 * j0,
-            out_plucker + 6 * j0);
-
-            continue;
-        }
-        double pad_omega[3 * RIGIDSYM_SMALL_BLOCK];
-        double pad_a[3 * RIGIDSYM_SMALL_BLOCK];
-        double pad_a_dot[3 * RIGIDSYM_SMALL_BLOCK];
-        double pad_p0[3 * RIGIDSYM_SMALL_BLOCK];
-        double pad_pitch[1 * RIGIDSYM_SMALL_BLOCK];
-        double pad_plucker[6 * RIGIDSYM_SMALL_BLOCK];
-        for (int64_t j = 0; j < RIGIDSYM_SMALL_BLOCK; ++j) {
-            const int64_t s = j0 + (j < mm ? j : mm - 1);
-            memcpy(pad_omega + 3 * j, in_omega + 3 * s,
-                   3 * sizeof(double));
-            memcpy(pad_a + 3 * j, in_a + 3 * s,
-                   3 * sizeof(double));
-            memcpy(pad_a_dot + 3 * j, in_a_dot + 3 * s,
-                   3 * sizeof(double));
-        }
-        count += rigidsym_instant_screw_axis_block_small(mm,
-            pad_omega,
-            pad_a,
-            pad_a_dot,
-            pad_p0,
-            pad_pitch,
-            pad_plucker);
-        memcpy(out_p0 + 3 * j0, pad_p0,
-               3 * mm * sizeof(double));
-        memcpy(out_pitch + 1 * j0, pad_pitch,
-               1 * mm * sizeof(double));
-        memcpy(out_plucker + 6 * j0, pad_plucker,
-               6 * mm * sizeof(double));
+    double pad_omega[3 * RIGIDSYM_CHECK_BLOCK];
+    double pad_a[3 * RIGIDSYM_CHECK_BLOCK];
+    double pad_a_dot[3 * RIGIDSYM_CHECK_BLOCK];
+    double pad_p0[3 * RIGIDSYM_CHECK_BLOCK];
+    double pad_pitch[1 * RIGIDSYM_CHECK_BLOCK];
+    double pad_plucker[6 * RIGIDSYM_CHECK_BLOCK];
+    for (int64_t j = 0; j < RIGIDSYM_CHECK_BLOCK; ++j) {
+        const int64_t s = i0 + (j < m ? j : m - 1);
+        memcpy(pad_omega + 3 * j, in_omega + 3 * s,
+               3 * sizeof(double));
+        memcpy(pad_a + 3 * j, in_a + 3 * s,
+               3 * sizeof(double));
+        memcpy(pad_a_dot + 3 * j, in_a_dot + 3 * s,
+               3 * sizeof(double));
     }
+    const int64_t count = rigidsym_instant_screw_axis_block(m,
+        pad_omega,
+        pad_a,
+        pad_a_dot,
+        pad_p0,
+        pad_pitch,
+        pad_plucker);
+    memcpy(out_p0 + 3 * i0, pad_p0, 3 * m * sizeof(double));
+    memcpy(out_pitch + 1 * i0, pad_pitch, 1 * m * sizeof(double));
+    memcpy(out_plucker + 6 * i0, pad_plucker, 6 * m * sizeof(double));
     return count;
 }
 
@@ -336,49 +209,31 @@ static int64_t rigidsym_instant_screw_axis_run_f32(
             out_pitch + 1 * i0,
             out_plucker + 6 * i0);
 
-    int64_t count = 0;
-    for (int64_t j0 = i0; j0 < i0 + m; j0 += RIGIDSYM_SMALL_BLOCK) {
-        const int64_t mm = i0 + m - j0 < RIGIDSYM_SMALL_BLOCK ? i0 + m - j0 : RIGIDSYM_SMALL_BLOCK;
-        if (mm == RIGIDSYM_SMALL_BLOCK) {
-            count += rigidsym_instant_screw_axis_block_small_f32(mm,
-            in_omega + 3 * j0,
-            in_a + 3 * j0,
-            in_a_dot + 3 * j0,
-            out_p0 + 3 * j0,
-            out_pitch + 1 * j0,
-            out_plucker + 6 * j0);
-
-            continue;
-        }
-        float pad_omega[3 * RIGIDSYM_SMALL_BLOCK];
-        float pad_a[3 * RIGIDSYM_SMALL_BLOCK];
-        float pad_a_dot[3 * RIGIDSYM_SMALL_BLOCK];
-        float pad_p0[3 * RIGIDSYM_SMALL_BLOCK];
-        float pad_pitch[1 * RIGIDSYM_SMALL_BLOCK];
-        float pad_plucker[6 * RIGIDSYM_SMALL_BLOCK];
-        for (int64_t j = 0; j < RIGIDSYM_SMALL_BLOCK; ++j) {
-            const int64_t s = j0 + (j < mm ? j : mm - 1);
-            memcpy(pad_omega + 3 * j, in_omega + 3 * s,
-                   3 * sizeof(float));
-            memcpy(pad_a + 3 * j, in_a + 3 * s,
-                   3 * sizeof(float));
-            memcpy(pad_a_dot + 3 * j, in_a_dot + 3 * s,
-                   3 * sizeof(float));
-        }
-        count += rigidsym_instant_screw_axis_block_small_f32(mm,
-            pad_omega,
-            pad_a,
-            pad_a_dot,
-            pad_p0,
-            pad_pitch,
-            pad_plucker);
-        memcpy(out_p0 + 3 * j0, pad_p0,
-               3 * mm * sizeof(float));
-        memcpy(out_pitch + 1 * j0, pad_pitch,
-               1 * mm * sizeof(float));
-        memcpy(out_plucker + 6 * j0, pad_plucker,
-               6 * mm * sizeof(float));
+    float pad_omega[3 * RIGIDSYM_CHECK_BLOCK];
+    float pad_a[3 * RIGIDSYM_CHECK_BLOCK];
+    float pad_a_dot[3 * RIGIDSYM_CHECK_BLOCK];
+    float pad_p0[3 * RIGIDSYM_CHECK_BLOCK];
+    float pad_pitch[1 * RIGIDSYM_CHECK_BLOCK];
+    float pad_plucker[6 * RIGIDSYM_CHECK_BLOCK];
+    for (int64_t j = 0; j < RIGIDSYM_CHECK_BLOCK; ++j) {
+        const int64_t s = i0 + (j < m ? j : m - 1);
+        memcpy(pad_omega + 3 * j, in_omega + 3 * s,
+               3 * sizeof(float));
+        memcpy(pad_a + 3 * j, in_a + 3 * s,
+               3 * sizeof(float));
+        memcpy(pad_a_dot + 3 * j, in_a_dot + 3 * s,
+               3 * sizeof(float));
     }
+    const int64_t count = rigidsym_instant_screw_axis_block_f32(m,
+        pad_omega,
+        pad_a,
+        pad_a_dot,
+        pad_p0,
+        pad_pitch,
+        pad_plucker);
+    memcpy(out_p0 + 3 * i0, pad_p0, 3 * m * sizeof(float));
+    memcpy(out_pitch + 1 * i0, pad_pitch, 1 * m * sizeof(float));
+    memcpy(out_plucker + 6 * i0, pad_plucker, 6 * m * sizeof(float));
     return count;
 }
 

@@ -10,8 +10,8 @@
  */
 #include "kinetic_energy.h"
 
-/* Exactly NB samples, always (RIGIDSYM_CHECK_BLOCK for a full block of the batch, RIGIDSYM_SMALL_BLOCK for
- * the small blocks of a tail or of a short batch). One code path for every sample, so that a
+/* Exactly NB = RIGIDSYM_CHECK_BLOCK samples, always: a full block of the batch, or a partial one padded.
+ * One code path for every sample, so that a
  * sample's bits do not depend on where it sits in the batch: no scalar remainder of a vector
  * loop; never inlined, so that every use runs the same machine code.
  * Then one finiteness test over the first m samples' outputs (still in cache): finite inputs
@@ -21,9 +21,12 @@
  * first m. T float: the float32 sample function (float inputs and outputs, the arithmetic of
  * the precision plan in the header; sin/cos in double from the widened inputs). */
 
-/* Samples [i0, i0 + m) of the batch, m <= RIGIDSYM_CHECK_BLOCK: a full block, or small blocks, the last
- * one through padded copies (its real samples, then copies of its last one: valid inputs).
- * Returns the number flagged. */
+/* Samples [i0, i0 + m) of the batch, m <= RIGIDSYM_CHECK_BLOCK: a full block, or a partial one (the tail
+ * of a batch, a batch of a few samples, one sample) through a padded block (its samples, then
+ * copies of its last one: valid inputs). Always the same block function, so a sample's bits
+ * do not depend on its batch: smaller blocks for short batches were measured to change the
+ * last bit of some samples (the compiler vectorises a loop of 4 samples differently, and FMA
+ * contraction with it). Returns the number flagged. */
 
 /* The batch of n samples on `threads` threads: blocks are independent and the count is an
  * integer sum, so the result is the same for every thread count. One thread (or one block):
@@ -42,44 +45,6 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_kinetic_energy_block(
      * compiler's cost model decides on vectorisation (forcing it turns the strided
      * row-major loads into gathers, measured slower). */
     for (int64_t j = 0; j < RIGIDSYM_CHECK_BLOCK; ++j) {
-        (void)rigidsym_kinetic_energy_sample(
-            in_I_C + 9 * j,
-            in_m + 1 * j,
-            in_omega + 3 * j,
-            in_c_dot + 3 * j,
-            out_T + 1 * j);
-
-    }
-    count += rigidsym_any_nonfinite(out_T, 1 * m);
-    if (count == 0)
-        return 0;
-    count = 0;
-    for (int64_t j = 0; j < m; ++j) {
-        int flagged = 0;
-        flagged |= rigidsym_any_nonfinite(out_T + 1 * j, 1);
-        if (flagged) {
-            ++count;
-            for (int c = 0; c < 1; ++c)
-                out_T[1 * j + c] = NAN;
-        }
-    }
-    return count;
-}
-
-
-static RIGIDSYM_NOINLINE int64_t rigidsym_kinetic_energy_block_small(
-    int64_t m,
-    const double *RIGIDSYM_RESTRICT in_I_C,
-    const double *RIGIDSYM_RESTRICT in_m,
-    const double *RIGIDSYM_RESTRICT in_omega,
-    const double *RIGIDSYM_RESTRICT in_c_dot,
-    double *RIGIDSYM_RESTRICT out_T)
-{
-    int64_t count = 0;
-    /* No division, root or branch: nothing to count per sample. A plain loop; the
-     * compiler's cost model decides on vectorisation (forcing it turns the strided
-     * row-major loads into gathers, measured slower). */
-    for (int64_t j = 0; j < RIGIDSYM_SMALL_BLOCK; ++j) {
         (void)rigidsym_kinetic_energy_sample(
             in_I_C + 9 * j,
             in_m + 1 * j,
@@ -143,44 +108,6 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_kinetic_energy_block_f32(
 }
 
 
-static RIGIDSYM_NOINLINE int64_t rigidsym_kinetic_energy_block_small_f32(
-    int64_t m,
-    const float *RIGIDSYM_RESTRICT in_I_C,
-    const float *RIGIDSYM_RESTRICT in_m,
-    const float *RIGIDSYM_RESTRICT in_omega,
-    const float *RIGIDSYM_RESTRICT in_c_dot,
-    float *RIGIDSYM_RESTRICT out_T)
-{
-    int64_t count = 0;
-    /* No division, root or branch: nothing to count per sample. A plain loop; the
-     * compiler's cost model decides on vectorisation (forcing it turns the strided
-     * row-major loads into gathers, measured slower). */
-    for (int64_t j = 0; j < RIGIDSYM_SMALL_BLOCK; ++j) {
-        (void)rigidsym_kinetic_energy_sample_f32(
-            in_I_C + 9 * j,
-            in_m + 1 * j,
-            in_omega + 3 * j,
-            in_c_dot + 3 * j,
-            out_T + 1 * j);
-
-    }
-    count += rigidsym_any_nonfinite_f32(out_T, 1 * m);
-    if (count == 0)
-        return 0;
-    count = 0;
-    for (int64_t j = 0; j < m; ++j) {
-        int flagged = 0;
-        flagged |= rigidsym_any_nonfinite_f32(out_T + 1 * j, 1);
-        if (flagged) {
-            ++count;
-            for (int c = 0; c < 1; ++c)
-                out_T[1 * j + c] = NAN;
-        }
-    }
-    return count;
-}
-
-
 static int64_t rigidsym_kinetic_energy_run(
     int64_t i0, int64_t m,
     const double *RIGIDSYM_RESTRICT in_I_C,
@@ -197,44 +124,29 @@ static int64_t rigidsym_kinetic_energy_run(
             in_c_dot + 3 * i0,
             out_T + 1 * i0);
 
-    int64_t count = 0;
-    for (int64_t j0 = i0; j0 < i0 + m; j0 += RIGIDSYM_SMALL_BLOCK) {
-        const int64_t mm = i0 + m - j0 < RIGIDSYM_SMALL_BLOCK ? i0 + m - j0 : RIGIDSYM_SMALL_BLOCK;
-        if (mm == RIGIDSYM_SMALL_BLOCK) {
-            count += rigidsym_kinetic_energy_block_small(mm,
-            in_I_C + 9 * j0,
-            in_m + 1 * j0,
-            in_omega + 3 * j0,
-            in_c_dot + 3 * j0,
-            out_T + 1 * j0);
-
-            continue;
-        }
-        double pad_I_C[9 * RIGIDSYM_SMALL_BLOCK];
-        double pad_m[1 * RIGIDSYM_SMALL_BLOCK];
-        double pad_omega[3 * RIGIDSYM_SMALL_BLOCK];
-        double pad_c_dot[3 * RIGIDSYM_SMALL_BLOCK];
-        double pad_T[1 * RIGIDSYM_SMALL_BLOCK];
-        for (int64_t j = 0; j < RIGIDSYM_SMALL_BLOCK; ++j) {
-            const int64_t s = j0 + (j < mm ? j : mm - 1);
-            memcpy(pad_I_C + 9 * j, in_I_C + 9 * s,
-                   9 * sizeof(double));
-            memcpy(pad_m + 1 * j, in_m + 1 * s,
-                   1 * sizeof(double));
-            memcpy(pad_omega + 3 * j, in_omega + 3 * s,
-                   3 * sizeof(double));
-            memcpy(pad_c_dot + 3 * j, in_c_dot + 3 * s,
-                   3 * sizeof(double));
-        }
-        count += rigidsym_kinetic_energy_block_small(mm,
-            pad_I_C,
-            pad_m,
-            pad_omega,
-            pad_c_dot,
-            pad_T);
-        memcpy(out_T + 1 * j0, pad_T,
-               1 * mm * sizeof(double));
+    double pad_I_C[9 * RIGIDSYM_CHECK_BLOCK];
+    double pad_m[1 * RIGIDSYM_CHECK_BLOCK];
+    double pad_omega[3 * RIGIDSYM_CHECK_BLOCK];
+    double pad_c_dot[3 * RIGIDSYM_CHECK_BLOCK];
+    double pad_T[1 * RIGIDSYM_CHECK_BLOCK];
+    for (int64_t j = 0; j < RIGIDSYM_CHECK_BLOCK; ++j) {
+        const int64_t s = i0 + (j < m ? j : m - 1);
+        memcpy(pad_I_C + 9 * j, in_I_C + 9 * s,
+               9 * sizeof(double));
+        memcpy(pad_m + 1 * j, in_m + 1 * s,
+               1 * sizeof(double));
+        memcpy(pad_omega + 3 * j, in_omega + 3 * s,
+               3 * sizeof(double));
+        memcpy(pad_c_dot + 3 * j, in_c_dot + 3 * s,
+               3 * sizeof(double));
     }
+    const int64_t count = rigidsym_kinetic_energy_block(m,
+        pad_I_C,
+        pad_m,
+        pad_omega,
+        pad_c_dot,
+        pad_T);
+    memcpy(out_T + 1 * i0, pad_T, 1 * m * sizeof(double));
     return count;
 }
 
@@ -255,44 +167,29 @@ static int64_t rigidsym_kinetic_energy_run_f32(
             in_c_dot + 3 * i0,
             out_T + 1 * i0);
 
-    int64_t count = 0;
-    for (int64_t j0 = i0; j0 < i0 + m; j0 += RIGIDSYM_SMALL_BLOCK) {
-        const int64_t mm = i0 + m - j0 < RIGIDSYM_SMALL_BLOCK ? i0 + m - j0 : RIGIDSYM_SMALL_BLOCK;
-        if (mm == RIGIDSYM_SMALL_BLOCK) {
-            count += rigidsym_kinetic_energy_block_small_f32(mm,
-            in_I_C + 9 * j0,
-            in_m + 1 * j0,
-            in_omega + 3 * j0,
-            in_c_dot + 3 * j0,
-            out_T + 1 * j0);
-
-            continue;
-        }
-        float pad_I_C[9 * RIGIDSYM_SMALL_BLOCK];
-        float pad_m[1 * RIGIDSYM_SMALL_BLOCK];
-        float pad_omega[3 * RIGIDSYM_SMALL_BLOCK];
-        float pad_c_dot[3 * RIGIDSYM_SMALL_BLOCK];
-        float pad_T[1 * RIGIDSYM_SMALL_BLOCK];
-        for (int64_t j = 0; j < RIGIDSYM_SMALL_BLOCK; ++j) {
-            const int64_t s = j0 + (j < mm ? j : mm - 1);
-            memcpy(pad_I_C + 9 * j, in_I_C + 9 * s,
-                   9 * sizeof(float));
-            memcpy(pad_m + 1 * j, in_m + 1 * s,
-                   1 * sizeof(float));
-            memcpy(pad_omega + 3 * j, in_omega + 3 * s,
-                   3 * sizeof(float));
-            memcpy(pad_c_dot + 3 * j, in_c_dot + 3 * s,
-                   3 * sizeof(float));
-        }
-        count += rigidsym_kinetic_energy_block_small_f32(mm,
-            pad_I_C,
-            pad_m,
-            pad_omega,
-            pad_c_dot,
-            pad_T);
-        memcpy(out_T + 1 * j0, pad_T,
-               1 * mm * sizeof(float));
+    float pad_I_C[9 * RIGIDSYM_CHECK_BLOCK];
+    float pad_m[1 * RIGIDSYM_CHECK_BLOCK];
+    float pad_omega[3 * RIGIDSYM_CHECK_BLOCK];
+    float pad_c_dot[3 * RIGIDSYM_CHECK_BLOCK];
+    float pad_T[1 * RIGIDSYM_CHECK_BLOCK];
+    for (int64_t j = 0; j < RIGIDSYM_CHECK_BLOCK; ++j) {
+        const int64_t s = i0 + (j < m ? j : m - 1);
+        memcpy(pad_I_C + 9 * j, in_I_C + 9 * s,
+               9 * sizeof(float));
+        memcpy(pad_m + 1 * j, in_m + 1 * s,
+               1 * sizeof(float));
+        memcpy(pad_omega + 3 * j, in_omega + 3 * s,
+               3 * sizeof(float));
+        memcpy(pad_c_dot + 3 * j, in_c_dot + 3 * s,
+               3 * sizeof(float));
     }
+    const int64_t count = rigidsym_kinetic_energy_block_f32(m,
+        pad_I_C,
+        pad_m,
+        pad_omega,
+        pad_c_dot,
+        pad_T);
+    memcpy(out_T + 1 * i0, pad_T, 1 * m * sizeof(float));
     return count;
 }
 

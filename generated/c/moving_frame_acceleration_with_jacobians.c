@@ -10,8 +10,8 @@
  */
 #include "moving_frame_acceleration_with_jacobians.h"
 
-/* Exactly NB samples, always (RIGIDSYM_CHECK_BLOCK for a full block of the batch, RIGIDSYM_SMALL_BLOCK for
- * the small blocks of a tail or of a short batch). One code path for every sample, so that a
+/* Exactly NB = RIGIDSYM_CHECK_BLOCK samples, always: a full block of the batch, or a partial one padded.
+ * One code path for every sample, so that a
  * sample's bits do not depend on where it sits in the batch: no scalar remainder of a vector
  * loop; never inlined, so that every use runs the same machine code.
  * Then one finiteness test over the first m samples' outputs (still in cache): finite inputs
@@ -21,9 +21,12 @@
  * first m. T float: the float32 sample function (float inputs and outputs, the arithmetic of
  * the precision plan in the header; sin/cos in double from the widened inputs). */
 
-/* Samples [i0, i0 + m) of the batch, m <= RIGIDSYM_CHECK_BLOCK: a full block, or small blocks, the last
- * one through padded copies (its real samples, then copies of its last one: valid inputs).
- * Returns the number flagged. */
+/* Samples [i0, i0 + m) of the batch, m <= RIGIDSYM_CHECK_BLOCK: a full block, or a partial one (the tail
+ * of a batch, a batch of a few samples, one sample) through a padded block (its samples, then
+ * copies of its last one: valid inputs). Always the same block function, so a sample's bits
+ * do not depend on its batch: smaller blocks for short batches were measured to change the
+ * last bit of some samples (the compiler vectorises a loop of 4 samples differently, and FMA
+ * contraction with it). Returns the number flagged. */
 
 /* The batch of n samples on `threads` threads: blocks are independent and the count is an
  * integer sum, so the result is the same for every thread count. One thread (or one block):
@@ -52,92 +55,6 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_moving_frame_acceleration_with_jacobia
      * compiler's cost model decides on vectorisation (forcing it turns the strided
      * row-major loads into gathers, measured slower). */
     for (int64_t j = 0; j < RIGIDSYM_CHECK_BLOCK; ++j) {
-        (void)rigidsym_moving_frame_acceleration_with_jacobians_sample(
-            in_o_ddot + 3 * j,
-            in_Q + 9 * j,
-            in_omega + 3 * j,
-            in_omega_dot + 3 * j,
-            in_rho_M + 3 * j,
-            in_rho_dot_M + 3 * j,
-            in_rho_ddot_M + 3 * j,
-            out_p_ddot + 3 * j,
-            out_p_ddot_D_o_ddot + 9 * j,
-            out_p_ddot_D_Q + 27 * j,
-            out_p_ddot_D_omega + 9 * j,
-            out_p_ddot_D_omega_dot + 9 * j,
-            out_p_ddot_D_rho_M + 9 * j,
-            out_p_ddot_D_rho_dot_M + 9 * j,
-            out_p_ddot_D_rho_ddot_M + 9 * j);
-
-    }
-    count += rigidsym_any_nonfinite(out_p_ddot, 3 * m);
-    count += rigidsym_any_nonfinite(out_p_ddot_D_o_ddot, 9 * m);
-    count += rigidsym_any_nonfinite(out_p_ddot_D_Q, 27 * m);
-    count += rigidsym_any_nonfinite(out_p_ddot_D_omega, 9 * m);
-    count += rigidsym_any_nonfinite(out_p_ddot_D_omega_dot, 9 * m);
-    count += rigidsym_any_nonfinite(out_p_ddot_D_rho_M, 9 * m);
-    count += rigidsym_any_nonfinite(out_p_ddot_D_rho_dot_M, 9 * m);
-    count += rigidsym_any_nonfinite(out_p_ddot_D_rho_ddot_M, 9 * m);
-    if (count == 0)
-        return 0;
-    count = 0;
-    for (int64_t j = 0; j < m; ++j) {
-        int flagged = 0;
-        flagged |= rigidsym_any_nonfinite(out_p_ddot + 3 * j, 3);
-        flagged |= rigidsym_any_nonfinite(out_p_ddot_D_o_ddot + 9 * j, 9);
-        flagged |= rigidsym_any_nonfinite(out_p_ddot_D_Q + 27 * j, 27);
-        flagged |= rigidsym_any_nonfinite(out_p_ddot_D_omega + 9 * j, 9);
-        flagged |= rigidsym_any_nonfinite(out_p_ddot_D_omega_dot + 9 * j, 9);
-        flagged |= rigidsym_any_nonfinite(out_p_ddot_D_rho_M + 9 * j, 9);
-        flagged |= rigidsym_any_nonfinite(out_p_ddot_D_rho_dot_M + 9 * j, 9);
-        flagged |= rigidsym_any_nonfinite(out_p_ddot_D_rho_ddot_M + 9 * j, 9);
-        if (flagged) {
-            ++count;
-            for (int c = 0; c < 3; ++c)
-                out_p_ddot[3 * j + c] = NAN;
-            for (int c = 0; c < 9; ++c)
-                out_p_ddot_D_o_ddot[9 * j + c] = NAN;
-            for (int c = 0; c < 27; ++c)
-                out_p_ddot_D_Q[27 * j + c] = NAN;
-            for (int c = 0; c < 9; ++c)
-                out_p_ddot_D_omega[9 * j + c] = NAN;
-            for (int c = 0; c < 9; ++c)
-                out_p_ddot_D_omega_dot[9 * j + c] = NAN;
-            for (int c = 0; c < 9; ++c)
-                out_p_ddot_D_rho_M[9 * j + c] = NAN;
-            for (int c = 0; c < 9; ++c)
-                out_p_ddot_D_rho_dot_M[9 * j + c] = NAN;
-            for (int c = 0; c < 9; ++c)
-                out_p_ddot_D_rho_ddot_M[9 * j + c] = NAN;
-        }
-    }
-    return count;
-}
-
-
-static RIGIDSYM_NOINLINE int64_t rigidsym_moving_frame_acceleration_with_jacobians_block_small(
-    int64_t m,
-    const double *RIGIDSYM_RESTRICT in_o_ddot,
-    const double *RIGIDSYM_RESTRICT in_Q,
-    const double *RIGIDSYM_RESTRICT in_omega,
-    const double *RIGIDSYM_RESTRICT in_omega_dot,
-    const double *RIGIDSYM_RESTRICT in_rho_M,
-    const double *RIGIDSYM_RESTRICT in_rho_dot_M,
-    const double *RIGIDSYM_RESTRICT in_rho_ddot_M,
-    double *RIGIDSYM_RESTRICT out_p_ddot,
-    double *RIGIDSYM_RESTRICT out_p_ddot_D_o_ddot,
-    double *RIGIDSYM_RESTRICT out_p_ddot_D_Q,
-    double *RIGIDSYM_RESTRICT out_p_ddot_D_omega,
-    double *RIGIDSYM_RESTRICT out_p_ddot_D_omega_dot,
-    double *RIGIDSYM_RESTRICT out_p_ddot_D_rho_M,
-    double *RIGIDSYM_RESTRICT out_p_ddot_D_rho_dot_M,
-    double *RIGIDSYM_RESTRICT out_p_ddot_D_rho_ddot_M)
-{
-    int64_t count = 0;
-    /* No division, root or branch: nothing to count per sample. A plain loop; the
-     * compiler's cost model decides on vectorisation (forcing it turns the strided
-     * row-major loads into gathers, measured slower). */
-    for (int64_t j = 0; j < RIGIDSYM_SMALL_BLOCK; ++j) {
         (void)rigidsym_moving_frame_acceleration_with_jacobians_sample(
             in_o_ddot + 3 * j,
             in_Q + 9 * j,
@@ -287,92 +204,6 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_moving_frame_acceleration_with_jacobia
 }
 
 
-static RIGIDSYM_NOINLINE int64_t rigidsym_moving_frame_acceleration_with_jacobians_block_small_f32(
-    int64_t m,
-    const float *RIGIDSYM_RESTRICT in_o_ddot,
-    const float *RIGIDSYM_RESTRICT in_Q,
-    const float *RIGIDSYM_RESTRICT in_omega,
-    const float *RIGIDSYM_RESTRICT in_omega_dot,
-    const float *RIGIDSYM_RESTRICT in_rho_M,
-    const float *RIGIDSYM_RESTRICT in_rho_dot_M,
-    const float *RIGIDSYM_RESTRICT in_rho_ddot_M,
-    float *RIGIDSYM_RESTRICT out_p_ddot,
-    float *RIGIDSYM_RESTRICT out_p_ddot_D_o_ddot,
-    float *RIGIDSYM_RESTRICT out_p_ddot_D_Q,
-    float *RIGIDSYM_RESTRICT out_p_ddot_D_omega,
-    float *RIGIDSYM_RESTRICT out_p_ddot_D_omega_dot,
-    float *RIGIDSYM_RESTRICT out_p_ddot_D_rho_M,
-    float *RIGIDSYM_RESTRICT out_p_ddot_D_rho_dot_M,
-    float *RIGIDSYM_RESTRICT out_p_ddot_D_rho_ddot_M)
-{
-    int64_t count = 0;
-    /* No division, root or branch: nothing to count per sample. A plain loop; the
-     * compiler's cost model decides on vectorisation (forcing it turns the strided
-     * row-major loads into gathers, measured slower). */
-    for (int64_t j = 0; j < RIGIDSYM_SMALL_BLOCK; ++j) {
-        (void)rigidsym_moving_frame_acceleration_with_jacobians_sample_f32(
-            in_o_ddot + 3 * j,
-            in_Q + 9 * j,
-            in_omega + 3 * j,
-            in_omega_dot + 3 * j,
-            in_rho_M + 3 * j,
-            in_rho_dot_M + 3 * j,
-            in_rho_ddot_M + 3 * j,
-            out_p_ddot + 3 * j,
-            out_p_ddot_D_o_ddot + 9 * j,
-            out_p_ddot_D_Q + 27 * j,
-            out_p_ddot_D_omega + 9 * j,
-            out_p_ddot_D_omega_dot + 9 * j,
-            out_p_ddot_D_rho_M + 9 * j,
-            out_p_ddot_D_rho_dot_M + 9 * j,
-            out_p_ddot_D_rho_ddot_M + 9 * j);
-
-    }
-    count += rigidsym_any_nonfinite_f32(out_p_ddot, 3 * m);
-    count += rigidsym_any_nonfinite_f32(out_p_ddot_D_o_ddot, 9 * m);
-    count += rigidsym_any_nonfinite_f32(out_p_ddot_D_Q, 27 * m);
-    count += rigidsym_any_nonfinite_f32(out_p_ddot_D_omega, 9 * m);
-    count += rigidsym_any_nonfinite_f32(out_p_ddot_D_omega_dot, 9 * m);
-    count += rigidsym_any_nonfinite_f32(out_p_ddot_D_rho_M, 9 * m);
-    count += rigidsym_any_nonfinite_f32(out_p_ddot_D_rho_dot_M, 9 * m);
-    count += rigidsym_any_nonfinite_f32(out_p_ddot_D_rho_ddot_M, 9 * m);
-    if (count == 0)
-        return 0;
-    count = 0;
-    for (int64_t j = 0; j < m; ++j) {
-        int flagged = 0;
-        flagged |= rigidsym_any_nonfinite_f32(out_p_ddot + 3 * j, 3);
-        flagged |= rigidsym_any_nonfinite_f32(out_p_ddot_D_o_ddot + 9 * j, 9);
-        flagged |= rigidsym_any_nonfinite_f32(out_p_ddot_D_Q + 27 * j, 27);
-        flagged |= rigidsym_any_nonfinite_f32(out_p_ddot_D_omega + 9 * j, 9);
-        flagged |= rigidsym_any_nonfinite_f32(out_p_ddot_D_omega_dot + 9 * j, 9);
-        flagged |= rigidsym_any_nonfinite_f32(out_p_ddot_D_rho_M + 9 * j, 9);
-        flagged |= rigidsym_any_nonfinite_f32(out_p_ddot_D_rho_dot_M + 9 * j, 9);
-        flagged |= rigidsym_any_nonfinite_f32(out_p_ddot_D_rho_ddot_M + 9 * j, 9);
-        if (flagged) {
-            ++count;
-            for (int c = 0; c < 3; ++c)
-                out_p_ddot[3 * j + c] = NAN;
-            for (int c = 0; c < 9; ++c)
-                out_p_ddot_D_o_ddot[9 * j + c] = NAN;
-            for (int c = 0; c < 27; ++c)
-                out_p_ddot_D_Q[27 * j + c] = NAN;
-            for (int c = 0; c < 9; ++c)
-                out_p_ddot_D_omega[9 * j + c] = NAN;
-            for (int c = 0; c < 9; ++c)
-                out_p_ddot_D_omega_dot[9 * j + c] = NAN;
-            for (int c = 0; c < 9; ++c)
-                out_p_ddot_D_rho_M[9 * j + c] = NAN;
-            for (int c = 0; c < 9; ++c)
-                out_p_ddot_D_rho_dot_M[9 * j + c] = NAN;
-            for (int c = 0; c < 9; ++c)
-                out_p_ddot_D_rho_ddot_M[9 * j + c] = NAN;
-        }
-    }
-    return count;
-}
-
-
 static int64_t rigidsym_moving_frame_acceleration_with_jacobians_run(
     int64_t i0, int64_t m,
     const double *RIGIDSYM_RESTRICT in_o_ddot,
@@ -409,94 +240,62 @@ static int64_t rigidsym_moving_frame_acceleration_with_jacobians_run(
             out_p_ddot_D_rho_dot_M + 9 * i0,
             out_p_ddot_D_rho_ddot_M + 9 * i0);
 
-    int64_t count = 0;
-    for (int64_t j0 = i0; j0 < i0 + m; j0 += RIGIDSYM_SMALL_BLOCK) {
-        const int64_t mm = i0 + m - j0 < RIGIDSYM_SMALL_BLOCK ? i0 + m - j0 : RIGIDSYM_SMALL_BLOCK;
-        if (mm == RIGIDSYM_SMALL_BLOCK) {
-            count += rigidsym_moving_frame_acceleration_with_jacobians_block_small(mm,
-            in_o_ddot + 3 * j0,
-            in_Q + 9 * j0,
-            in_omega + 3 * j0,
-            in_omega_dot + 3 * j0,
-            in_rho_M + 3 * j0,
-            in_rho_dot_M + 3 * j0,
-            in_rho_ddot_M + 3 * j0,
-            out_p_ddot + 3 * j0,
-            out_p_ddot_D_o_ddot + 9 * j0,
-            out_p_ddot_D_Q + 27 * j0,
-            out_p_ddot_D_omega + 9 * j0,
-            out_p_ddot_D_omega_dot + 9 * j0,
-            out_p_ddot_D_rho_M + 9 * j0,
-            out_p_ddot_D_rho_dot_M + 9 * j0,
-            out_p_ddot_D_rho_ddot_M + 9 * j0);
-
-            continue;
-        }
-        double pad_o_ddot[3 * RIGIDSYM_SMALL_BLOCK];
-        double pad_Q[9 * RIGIDSYM_SMALL_BLOCK];
-        double pad_omega[3 * RIGIDSYM_SMALL_BLOCK];
-        double pad_omega_dot[3 * RIGIDSYM_SMALL_BLOCK];
-        double pad_rho_M[3 * RIGIDSYM_SMALL_BLOCK];
-        double pad_rho_dot_M[3 * RIGIDSYM_SMALL_BLOCK];
-        double pad_rho_ddot_M[3 * RIGIDSYM_SMALL_BLOCK];
-        double pad_p_ddot[3 * RIGIDSYM_SMALL_BLOCK];
-        double pad_p_ddot_D_o_ddot[9 * RIGIDSYM_SMALL_BLOCK];
-        double pad_p_ddot_D_Q[27 * RIGIDSYM_SMALL_BLOCK];
-        double pad_p_ddot_D_omega[9 * RIGIDSYM_SMALL_BLOCK];
-        double pad_p_ddot_D_omega_dot[9 * RIGIDSYM_SMALL_BLOCK];
-        double pad_p_ddot_D_rho_M[9 * RIGIDSYM_SMALL_BLOCK];
-        double pad_p_ddot_D_rho_dot_M[9 * RIGIDSYM_SMALL_BLOCK];
-        double pad_p_ddot_D_rho_ddot_M[9 * RIGIDSYM_SMALL_BLOCK];
-        for (int64_t j = 0; j < RIGIDSYM_SMALL_BLOCK; ++j) {
-            const int64_t s = j0 + (j < mm ? j : mm - 1);
-            memcpy(pad_o_ddot + 3 * j, in_o_ddot + 3 * s,
-                   3 * sizeof(double));
-            memcpy(pad_Q + 9 * j, in_Q + 9 * s,
-                   9 * sizeof(double));
-            memcpy(pad_omega + 3 * j, in_omega + 3 * s,
-                   3 * sizeof(double));
-            memcpy(pad_omega_dot + 3 * j, in_omega_dot + 3 * s,
-                   3 * sizeof(double));
-            memcpy(pad_rho_M + 3 * j, in_rho_M + 3 * s,
-                   3 * sizeof(double));
-            memcpy(pad_rho_dot_M + 3 * j, in_rho_dot_M + 3 * s,
-                   3 * sizeof(double));
-            memcpy(pad_rho_ddot_M + 3 * j, in_rho_ddot_M + 3 * s,
-                   3 * sizeof(double));
-        }
-        count += rigidsym_moving_frame_acceleration_with_jacobians_block_small(mm,
-            pad_o_ddot,
-            pad_Q,
-            pad_omega,
-            pad_omega_dot,
-            pad_rho_M,
-            pad_rho_dot_M,
-            pad_rho_ddot_M,
-            pad_p_ddot,
-            pad_p_ddot_D_o_ddot,
-            pad_p_ddot_D_Q,
-            pad_p_ddot_D_omega,
-            pad_p_ddot_D_omega_dot,
-            pad_p_ddot_D_rho_M,
-            pad_p_ddot_D_rho_dot_M,
-            pad_p_ddot_D_rho_ddot_M);
-        memcpy(out_p_ddot + 3 * j0, pad_p_ddot,
-               3 * mm * sizeof(double));
-        memcpy(out_p_ddot_D_o_ddot + 9 * j0, pad_p_ddot_D_o_ddot,
-               9 * mm * sizeof(double));
-        memcpy(out_p_ddot_D_Q + 27 * j0, pad_p_ddot_D_Q,
-               27 * mm * sizeof(double));
-        memcpy(out_p_ddot_D_omega + 9 * j0, pad_p_ddot_D_omega,
-               9 * mm * sizeof(double));
-        memcpy(out_p_ddot_D_omega_dot + 9 * j0, pad_p_ddot_D_omega_dot,
-               9 * mm * sizeof(double));
-        memcpy(out_p_ddot_D_rho_M + 9 * j0, pad_p_ddot_D_rho_M,
-               9 * mm * sizeof(double));
-        memcpy(out_p_ddot_D_rho_dot_M + 9 * j0, pad_p_ddot_D_rho_dot_M,
-               9 * mm * sizeof(double));
-        memcpy(out_p_ddot_D_rho_ddot_M + 9 * j0, pad_p_ddot_D_rho_ddot_M,
-               9 * mm * sizeof(double));
+    double pad_o_ddot[3 * RIGIDSYM_CHECK_BLOCK];
+    double pad_Q[9 * RIGIDSYM_CHECK_BLOCK];
+    double pad_omega[3 * RIGIDSYM_CHECK_BLOCK];
+    double pad_omega_dot[3 * RIGIDSYM_CHECK_BLOCK];
+    double pad_rho_M[3 * RIGIDSYM_CHECK_BLOCK];
+    double pad_rho_dot_M[3 * RIGIDSYM_CHECK_BLOCK];
+    double pad_rho_ddot_M[3 * RIGIDSYM_CHECK_BLOCK];
+    double pad_p_ddot[3 * RIGIDSYM_CHECK_BLOCK];
+    double pad_p_ddot_D_o_ddot[9 * RIGIDSYM_CHECK_BLOCK];
+    double pad_p_ddot_D_Q[27 * RIGIDSYM_CHECK_BLOCK];
+    double pad_p_ddot_D_omega[9 * RIGIDSYM_CHECK_BLOCK];
+    double pad_p_ddot_D_omega_dot[9 * RIGIDSYM_CHECK_BLOCK];
+    double pad_p_ddot_D_rho_M[9 * RIGIDSYM_CHECK_BLOCK];
+    double pad_p_ddot_D_rho_dot_M[9 * RIGIDSYM_CHECK_BLOCK];
+    double pad_p_ddot_D_rho_ddot_M[9 * RIGIDSYM_CHECK_BLOCK];
+    for (int64_t j = 0; j < RIGIDSYM_CHECK_BLOCK; ++j) {
+        const int64_t s = i0 + (j < m ? j : m - 1);
+        memcpy(pad_o_ddot + 3 * j, in_o_ddot + 3 * s,
+               3 * sizeof(double));
+        memcpy(pad_Q + 9 * j, in_Q + 9 * s,
+               9 * sizeof(double));
+        memcpy(pad_omega + 3 * j, in_omega + 3 * s,
+               3 * sizeof(double));
+        memcpy(pad_omega_dot + 3 * j, in_omega_dot + 3 * s,
+               3 * sizeof(double));
+        memcpy(pad_rho_M + 3 * j, in_rho_M + 3 * s,
+               3 * sizeof(double));
+        memcpy(pad_rho_dot_M + 3 * j, in_rho_dot_M + 3 * s,
+               3 * sizeof(double));
+        memcpy(pad_rho_ddot_M + 3 * j, in_rho_ddot_M + 3 * s,
+               3 * sizeof(double));
     }
+    const int64_t count = rigidsym_moving_frame_acceleration_with_jacobians_block(m,
+        pad_o_ddot,
+        pad_Q,
+        pad_omega,
+        pad_omega_dot,
+        pad_rho_M,
+        pad_rho_dot_M,
+        pad_rho_ddot_M,
+        pad_p_ddot,
+        pad_p_ddot_D_o_ddot,
+        pad_p_ddot_D_Q,
+        pad_p_ddot_D_omega,
+        pad_p_ddot_D_omega_dot,
+        pad_p_ddot_D_rho_M,
+        pad_p_ddot_D_rho_dot_M,
+        pad_p_ddot_D_rho_ddot_M);
+    memcpy(out_p_ddot + 3 * i0, pad_p_ddot, 3 * m * sizeof(double));
+    memcpy(out_p_ddot_D_o_ddot + 9 * i0, pad_p_ddot_D_o_ddot, 9 * m * sizeof(double));
+    memcpy(out_p_ddot_D_Q + 27 * i0, pad_p_ddot_D_Q, 27 * m * sizeof(double));
+    memcpy(out_p_ddot_D_omega + 9 * i0, pad_p_ddot_D_omega, 9 * m * sizeof(double));
+    memcpy(out_p_ddot_D_omega_dot + 9 * i0, pad_p_ddot_D_omega_dot, 9 * m * sizeof(double));
+    memcpy(out_p_ddot_D_rho_M + 9 * i0, pad_p_ddot_D_rho_M, 9 * m * sizeof(double));
+    memcpy(out_p_ddot_D_rho_dot_M + 9 * i0, pad_p_ddot_D_rho_dot_M, 9 * m * sizeof(double));
+    memcpy(out_p_ddot_D_rho_ddot_M + 9 * i0, pad_p_ddot_D_rho_ddot_M, 9 * m * sizeof(double));
     return count;
 }
 
@@ -537,94 +336,62 @@ static int64_t rigidsym_moving_frame_acceleration_with_jacobians_run_f32(
             out_p_ddot_D_rho_dot_M + 9 * i0,
             out_p_ddot_D_rho_ddot_M + 9 * i0);
 
-    int64_t count = 0;
-    for (int64_t j0 = i0; j0 < i0 + m; j0 += RIGIDSYM_SMALL_BLOCK) {
-        const int64_t mm = i0 + m - j0 < RIGIDSYM_SMALL_BLOCK ? i0 + m - j0 : RIGIDSYM_SMALL_BLOCK;
-        if (mm == RIGIDSYM_SMALL_BLOCK) {
-            count += rigidsym_moving_frame_acceleration_with_jacobians_block_small_f32(mm,
-            in_o_ddot + 3 * j0,
-            in_Q + 9 * j0,
-            in_omega + 3 * j0,
-            in_omega_dot + 3 * j0,
-            in_rho_M + 3 * j0,
-            in_rho_dot_M + 3 * j0,
-            in_rho_ddot_M + 3 * j0,
-            out_p_ddot + 3 * j0,
-            out_p_ddot_D_o_ddot + 9 * j0,
-            out_p_ddot_D_Q + 27 * j0,
-            out_p_ddot_D_omega + 9 * j0,
-            out_p_ddot_D_omega_dot + 9 * j0,
-            out_p_ddot_D_rho_M + 9 * j0,
-            out_p_ddot_D_rho_dot_M + 9 * j0,
-            out_p_ddot_D_rho_ddot_M + 9 * j0);
-
-            continue;
-        }
-        float pad_o_ddot[3 * RIGIDSYM_SMALL_BLOCK];
-        float pad_Q[9 * RIGIDSYM_SMALL_BLOCK];
-        float pad_omega[3 * RIGIDSYM_SMALL_BLOCK];
-        float pad_omega_dot[3 * RIGIDSYM_SMALL_BLOCK];
-        float pad_rho_M[3 * RIGIDSYM_SMALL_BLOCK];
-        float pad_rho_dot_M[3 * RIGIDSYM_SMALL_BLOCK];
-        float pad_rho_ddot_M[3 * RIGIDSYM_SMALL_BLOCK];
-        float pad_p_ddot[3 * RIGIDSYM_SMALL_BLOCK];
-        float pad_p_ddot_D_o_ddot[9 * RIGIDSYM_SMALL_BLOCK];
-        float pad_p_ddot_D_Q[27 * RIGIDSYM_SMALL_BLOCK];
-        float pad_p_ddot_D_omega[9 * RIGIDSYM_SMALL_BLOCK];
-        float pad_p_ddot_D_omega_dot[9 * RIGIDSYM_SMALL_BLOCK];
-        float pad_p_ddot_D_rho_M[9 * RIGIDSYM_SMALL_BLOCK];
-        float pad_p_ddot_D_rho_dot_M[9 * RIGIDSYM_SMALL_BLOCK];
-        float pad_p_ddot_D_rho_ddot_M[9 * RIGIDSYM_SMALL_BLOCK];
-        for (int64_t j = 0; j < RIGIDSYM_SMALL_BLOCK; ++j) {
-            const int64_t s = j0 + (j < mm ? j : mm - 1);
-            memcpy(pad_o_ddot + 3 * j, in_o_ddot + 3 * s,
-                   3 * sizeof(float));
-            memcpy(pad_Q + 9 * j, in_Q + 9 * s,
-                   9 * sizeof(float));
-            memcpy(pad_omega + 3 * j, in_omega + 3 * s,
-                   3 * sizeof(float));
-            memcpy(pad_omega_dot + 3 * j, in_omega_dot + 3 * s,
-                   3 * sizeof(float));
-            memcpy(pad_rho_M + 3 * j, in_rho_M + 3 * s,
-                   3 * sizeof(float));
-            memcpy(pad_rho_dot_M + 3 * j, in_rho_dot_M + 3 * s,
-                   3 * sizeof(float));
-            memcpy(pad_rho_ddot_M + 3 * j, in_rho_ddot_M + 3 * s,
-                   3 * sizeof(float));
-        }
-        count += rigidsym_moving_frame_acceleration_with_jacobians_block_small_f32(mm,
-            pad_o_ddot,
-            pad_Q,
-            pad_omega,
-            pad_omega_dot,
-            pad_rho_M,
-            pad_rho_dot_M,
-            pad_rho_ddot_M,
-            pad_p_ddot,
-            pad_p_ddot_D_o_ddot,
-            pad_p_ddot_D_Q,
-            pad_p_ddot_D_omega,
-            pad_p_ddot_D_omega_dot,
-            pad_p_ddot_D_rho_M,
-            pad_p_ddot_D_rho_dot_M,
-            pad_p_ddot_D_rho_ddot_M);
-        memcpy(out_p_ddot + 3 * j0, pad_p_ddot,
-               3 * mm * sizeof(float));
-        memcpy(out_p_ddot_D_o_ddot + 9 * j0, pad_p_ddot_D_o_ddot,
-               9 * mm * sizeof(float));
-        memcpy(out_p_ddot_D_Q + 27 * j0, pad_p_ddot_D_Q,
-               27 * mm * sizeof(float));
-        memcpy(out_p_ddot_D_omega + 9 * j0, pad_p_ddot_D_omega,
-               9 * mm * sizeof(float));
-        memcpy(out_p_ddot_D_omega_dot + 9 * j0, pad_p_ddot_D_omega_dot,
-               9 * mm * sizeof(float));
-        memcpy(out_p_ddot_D_rho_M + 9 * j0, pad_p_ddot_D_rho_M,
-               9 * mm * sizeof(float));
-        memcpy(out_p_ddot_D_rho_dot_M + 9 * j0, pad_p_ddot_D_rho_dot_M,
-               9 * mm * sizeof(float));
-        memcpy(out_p_ddot_D_rho_ddot_M + 9 * j0, pad_p_ddot_D_rho_ddot_M,
-               9 * mm * sizeof(float));
+    float pad_o_ddot[3 * RIGIDSYM_CHECK_BLOCK];
+    float pad_Q[9 * RIGIDSYM_CHECK_BLOCK];
+    float pad_omega[3 * RIGIDSYM_CHECK_BLOCK];
+    float pad_omega_dot[3 * RIGIDSYM_CHECK_BLOCK];
+    float pad_rho_M[3 * RIGIDSYM_CHECK_BLOCK];
+    float pad_rho_dot_M[3 * RIGIDSYM_CHECK_BLOCK];
+    float pad_rho_ddot_M[3 * RIGIDSYM_CHECK_BLOCK];
+    float pad_p_ddot[3 * RIGIDSYM_CHECK_BLOCK];
+    float pad_p_ddot_D_o_ddot[9 * RIGIDSYM_CHECK_BLOCK];
+    float pad_p_ddot_D_Q[27 * RIGIDSYM_CHECK_BLOCK];
+    float pad_p_ddot_D_omega[9 * RIGIDSYM_CHECK_BLOCK];
+    float pad_p_ddot_D_omega_dot[9 * RIGIDSYM_CHECK_BLOCK];
+    float pad_p_ddot_D_rho_M[9 * RIGIDSYM_CHECK_BLOCK];
+    float pad_p_ddot_D_rho_dot_M[9 * RIGIDSYM_CHECK_BLOCK];
+    float pad_p_ddot_D_rho_ddot_M[9 * RIGIDSYM_CHECK_BLOCK];
+    for (int64_t j = 0; j < RIGIDSYM_CHECK_BLOCK; ++j) {
+        const int64_t s = i0 + (j < m ? j : m - 1);
+        memcpy(pad_o_ddot + 3 * j, in_o_ddot + 3 * s,
+               3 * sizeof(float));
+        memcpy(pad_Q + 9 * j, in_Q + 9 * s,
+               9 * sizeof(float));
+        memcpy(pad_omega + 3 * j, in_omega + 3 * s,
+               3 * sizeof(float));
+        memcpy(pad_omega_dot + 3 * j, in_omega_dot + 3 * s,
+               3 * sizeof(float));
+        memcpy(pad_rho_M + 3 * j, in_rho_M + 3 * s,
+               3 * sizeof(float));
+        memcpy(pad_rho_dot_M + 3 * j, in_rho_dot_M + 3 * s,
+               3 * sizeof(float));
+        memcpy(pad_rho_ddot_M + 3 * j, in_rho_ddot_M + 3 * s,
+               3 * sizeof(float));
     }
+    const int64_t count = rigidsym_moving_frame_acceleration_with_jacobians_block_f32(m,
+        pad_o_ddot,
+        pad_Q,
+        pad_omega,
+        pad_omega_dot,
+        pad_rho_M,
+        pad_rho_dot_M,
+        pad_rho_ddot_M,
+        pad_p_ddot,
+        pad_p_ddot_D_o_ddot,
+        pad_p_ddot_D_Q,
+        pad_p_ddot_D_omega,
+        pad_p_ddot_D_omega_dot,
+        pad_p_ddot_D_rho_M,
+        pad_p_ddot_D_rho_dot_M,
+        pad_p_ddot_D_rho_ddot_M);
+    memcpy(out_p_ddot + 3 * i0, pad_p_ddot, 3 * m * sizeof(float));
+    memcpy(out_p_ddot_D_o_ddot + 9 * i0, pad_p_ddot_D_o_ddot, 9 * m * sizeof(float));
+    memcpy(out_p_ddot_D_Q + 27 * i0, pad_p_ddot_D_Q, 27 * m * sizeof(float));
+    memcpy(out_p_ddot_D_omega + 9 * i0, pad_p_ddot_D_omega, 9 * m * sizeof(float));
+    memcpy(out_p_ddot_D_omega_dot + 9 * i0, pad_p_ddot_D_omega_dot, 9 * m * sizeof(float));
+    memcpy(out_p_ddot_D_rho_M + 9 * i0, pad_p_ddot_D_rho_M, 9 * m * sizeof(float));
+    memcpy(out_p_ddot_D_rho_dot_M + 9 * i0, pad_p_ddot_D_rho_dot_M, 9 * m * sizeof(float));
+    memcpy(out_p_ddot_D_rho_ddot_M + 9 * i0, pad_p_ddot_D_rho_ddot_M, 9 * m * sizeof(float));
     return count;
 }
 

@@ -10,8 +10,8 @@
  */
 #include "plucker_from_points_with_jacobians.h"
 
-/* Exactly NB samples, always (RIGIDSYM_CHECK_BLOCK for a full block of the batch, RIGIDSYM_SMALL_BLOCK for
- * the small blocks of a tail or of a short batch). One code path for every sample, so that a
+/* Exactly NB = RIGIDSYM_CHECK_BLOCK samples, always: a full block of the batch, or a partial one padded.
+ * One code path for every sample, so that a
  * sample's bits do not depend on where it sits in the batch: no scalar remainder of a vector
  * loop; never inlined, so that every use runs the same machine code.
  * Then one finiteness test over the first m samples' outputs (still in cache): finite inputs
@@ -21,9 +21,12 @@
  * first m. T float: the float32 sample function (float inputs and outputs, the arithmetic of
  * the precision plan in the header; sin/cos in double from the widened inputs). */
 
-/* Samples [i0, i0 + m) of the batch, m <= RIGIDSYM_CHECK_BLOCK: a full block, or small blocks, the last
- * one through padded copies (its real samples, then copies of its last one: valid inputs).
- * Returns the number flagged. */
+/* Samples [i0, i0 + m) of the batch, m <= RIGIDSYM_CHECK_BLOCK: a full block, or a partial one (the tail
+ * of a batch, a batch of a few samples, one sample) through a padded block (its samples, then
+ * copies of its last one: valid inputs). Always the same block function, so a sample's bits
+ * do not depend on its batch: smaller blocks for short batches were measured to change the
+ * last bit of some samples (the compiler vectorises a loop of 4 samples differently, and FMA
+ * contraction with it). Returns the number flagged. */
 
 /* The batch of n samples on `threads` threads: blocks are independent and the count is an
  * integer sum, so the result is the same for every thread count. One thread (or one block):
@@ -41,59 +44,6 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_plucker_from_points_with_jacobians_blo
     /* branch-free so that the compiler can vectorise it */
     RIGIDSYM_SIMD_COUNT
     for (int64_t j = 0; j < RIGIDSYM_CHECK_BLOCK; ++j) {
-        count += rigidsym_plucker_from_points_with_jacobians_sample(
-            in_p1 + 3 * j,
-            in_p2 + 3 * j,
-            out_kappa + 6 * j,
-            out_kappa_D_p1 + 18 * j,
-            out_kappa_D_p2 + 18 * j);
-
-    }
-    count += rigidsym_any_nonfinite(out_kappa, 6 * m);
-    count += rigidsym_any_nonfinite(out_kappa_D_p1, 18 * m);
-    count += rigidsym_any_nonfinite(out_kappa_D_p2, 18 * m);
-    if (count == 0)
-        return 0;
-    count = 0;
-    for (int64_t j = 0; j < m; ++j) {
-        double tmp_kappa[6];
-        double tmp_kappa_D_p1[18];
-        double tmp_kappa_D_p2[18];
-        int flagged = rigidsym_plucker_from_points_with_jacobians_sample(
-            in_p1 + 3 * j,
-            in_p2 + 3 * j,
-            tmp_kappa,
-            tmp_kappa_D_p1,
-            tmp_kappa_D_p2);
-        flagged |= rigidsym_any_nonfinite(out_kappa + 6 * j, 6);
-        flagged |= rigidsym_any_nonfinite(out_kappa_D_p1 + 18 * j, 18);
-        flagged |= rigidsym_any_nonfinite(out_kappa_D_p2 + 18 * j, 18);
-        if (flagged) {
-            ++count;
-            for (int c = 0; c < 6; ++c)
-                out_kappa[6 * j + c] = NAN;
-            for (int c = 0; c < 18; ++c)
-                out_kappa_D_p1[18 * j + c] = NAN;
-            for (int c = 0; c < 18; ++c)
-                out_kappa_D_p2[18 * j + c] = NAN;
-        }
-    }
-    return count;
-}
-
-
-static RIGIDSYM_NOINLINE int64_t rigidsym_plucker_from_points_with_jacobians_block_small(
-    int64_t m,
-    const double *RIGIDSYM_RESTRICT in_p1,
-    const double *RIGIDSYM_RESTRICT in_p2,
-    double *RIGIDSYM_RESTRICT out_kappa,
-    double *RIGIDSYM_RESTRICT out_kappa_D_p1,
-    double *RIGIDSYM_RESTRICT out_kappa_D_p2)
-{
-    int64_t count = 0;
-    /* branch-free so that the compiler can vectorise it */
-    RIGIDSYM_SIMD_COUNT
-    for (int64_t j = 0; j < RIGIDSYM_SMALL_BLOCK; ++j) {
         count += rigidsym_plucker_from_points_with_jacobians_sample(
             in_p1 + 3 * j,
             in_p2 + 3 * j,
@@ -188,59 +138,6 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_plucker_from_points_with_jacobians_blo
 }
 
 
-static RIGIDSYM_NOINLINE int64_t rigidsym_plucker_from_points_with_jacobians_block_small_f32(
-    int64_t m,
-    const float *RIGIDSYM_RESTRICT in_p1,
-    const float *RIGIDSYM_RESTRICT in_p2,
-    float *RIGIDSYM_RESTRICT out_kappa,
-    float *RIGIDSYM_RESTRICT out_kappa_D_p1,
-    float *RIGIDSYM_RESTRICT out_kappa_D_p2)
-{
-    int64_t count = 0;
-    /* branch-free so that the compiler can vectorise it */
-    RIGIDSYM_SIMD_COUNT
-    for (int64_t j = 0; j < RIGIDSYM_SMALL_BLOCK; ++j) {
-        count += rigidsym_plucker_from_points_with_jacobians_sample_f32(
-            in_p1 + 3 * j,
-            in_p2 + 3 * j,
-            out_kappa + 6 * j,
-            out_kappa_D_p1 + 18 * j,
-            out_kappa_D_p2 + 18 * j);
-
-    }
-    count += rigidsym_any_nonfinite_f32(out_kappa, 6 * m);
-    count += rigidsym_any_nonfinite_f32(out_kappa_D_p1, 18 * m);
-    count += rigidsym_any_nonfinite_f32(out_kappa_D_p2, 18 * m);
-    if (count == 0)
-        return 0;
-    count = 0;
-    for (int64_t j = 0; j < m; ++j) {
-        float tmp_kappa[6];
-        float tmp_kappa_D_p1[18];
-        float tmp_kappa_D_p2[18];
-        int flagged = rigidsym_plucker_from_points_with_jacobians_sample_f32(
-            in_p1 + 3 * j,
-            in_p2 + 3 * j,
-            tmp_kappa,
-            tmp_kappa_D_p1,
-            tmp_kappa_D_p2);
-        flagged |= rigidsym_any_nonfinite_f32(out_kappa + 6 * j, 6);
-        flagged |= rigidsym_any_nonfinite_f32(out_kappa_D_p1 + 18 * j, 18);
-        flagged |= rigidsym_any_nonfinite_f32(out_kappa_D_p2 + 18 * j, 18);
-        if (flagged) {
-            ++count;
-            for (int c = 0; c < 6; ++c)
-                out_kappa[6 * j + c] = NAN;
-            for (int c = 0; c < 18; ++c)
-                out_kappa_D_p1[18 * j + c] = NAN;
-            for (int c = 0; c < 18; ++c)
-                out_kappa_D_p2[18 * j + c] = NAN;
-        }
-    }
-    return count;
-}
-
-
 static int64_t rigidsym_plucker_from_points_with_jacobians_run(
     int64_t i0, int64_t m,
     const double *RIGIDSYM_RESTRICT in_p1,
@@ -257,44 +154,27 @@ static int64_t rigidsym_plucker_from_points_with_jacobians_run(
             out_kappa_D_p1 + 18 * i0,
             out_kappa_D_p2 + 18 * i0);
 
-    int64_t count = 0;
-    for (int64_t j0 = i0; j0 < i0 + m; j0 += RIGIDSYM_SMALL_BLOCK) {
-        const int64_t mm = i0 + m - j0 < RIGIDSYM_SMALL_BLOCK ? i0 + m - j0 : RIGIDSYM_SMALL_BLOCK;
-        if (mm == RIGIDSYM_SMALL_BLOCK) {
-            count += rigidsym_plucker_from_points_with_jacobians_block_small(mm,
-            in_p1 + 3 * j0,
-            in_p2 + 3 * j0,
-            out_kappa + 6 * j0,
-            out_kappa_D_p1 + 18 * j0,
-            out_kappa_D_p2 + 18 * j0);
-
-            continue;
-        }
-        double pad_p1[3 * RIGIDSYM_SMALL_BLOCK];
-        double pad_p2[3 * RIGIDSYM_SMALL_BLOCK];
-        double pad_kappa[6 * RIGIDSYM_SMALL_BLOCK];
-        double pad_kappa_D_p1[18 * RIGIDSYM_SMALL_BLOCK];
-        double pad_kappa_D_p2[18 * RIGIDSYM_SMALL_BLOCK];
-        for (int64_t j = 0; j < RIGIDSYM_SMALL_BLOCK; ++j) {
-            const int64_t s = j0 + (j < mm ? j : mm - 1);
-            memcpy(pad_p1 + 3 * j, in_p1 + 3 * s,
-                   3 * sizeof(double));
-            memcpy(pad_p2 + 3 * j, in_p2 + 3 * s,
-                   3 * sizeof(double));
-        }
-        count += rigidsym_plucker_from_points_with_jacobians_block_small(mm,
-            pad_p1,
-            pad_p2,
-            pad_kappa,
-            pad_kappa_D_p1,
-            pad_kappa_D_p2);
-        memcpy(out_kappa + 6 * j0, pad_kappa,
-               6 * mm * sizeof(double));
-        memcpy(out_kappa_D_p1 + 18 * j0, pad_kappa_D_p1,
-               18 * mm * sizeof(double));
-        memcpy(out_kappa_D_p2 + 18 * j0, pad_kappa_D_p2,
-               18 * mm * sizeof(double));
+    double pad_p1[3 * RIGIDSYM_CHECK_BLOCK];
+    double pad_p2[3 * RIGIDSYM_CHECK_BLOCK];
+    double pad_kappa[6 * RIGIDSYM_CHECK_BLOCK];
+    double pad_kappa_D_p1[18 * RIGIDSYM_CHECK_BLOCK];
+    double pad_kappa_D_p2[18 * RIGIDSYM_CHECK_BLOCK];
+    for (int64_t j = 0; j < RIGIDSYM_CHECK_BLOCK; ++j) {
+        const int64_t s = i0 + (j < m ? j : m - 1);
+        memcpy(pad_p1 + 3 * j, in_p1 + 3 * s,
+               3 * sizeof(double));
+        memcpy(pad_p2 + 3 * j, in_p2 + 3 * s,
+               3 * sizeof(double));
     }
+    const int64_t count = rigidsym_plucker_from_points_with_jacobians_block(m,
+        pad_p1,
+        pad_p2,
+        pad_kappa,
+        pad_kappa_D_p1,
+        pad_kappa_D_p2);
+    memcpy(out_kappa + 6 * i0, pad_kappa, 6 * m * sizeof(double));
+    memcpy(out_kappa_D_p1 + 18 * i0, pad_kappa_D_p1, 18 * m * sizeof(double));
+    memcpy(out_kappa_D_p2 + 18 * i0, pad_kappa_D_p2, 18 * m * sizeof(double));
     return count;
 }
 
@@ -315,44 +195,27 @@ static int64_t rigidsym_plucker_from_points_with_jacobians_run_f32(
             out_kappa_D_p1 + 18 * i0,
             out_kappa_D_p2 + 18 * i0);
 
-    int64_t count = 0;
-    for (int64_t j0 = i0; j0 < i0 + m; j0 += RIGIDSYM_SMALL_BLOCK) {
-        const int64_t mm = i0 + m - j0 < RIGIDSYM_SMALL_BLOCK ? i0 + m - j0 : RIGIDSYM_SMALL_BLOCK;
-        if (mm == RIGIDSYM_SMALL_BLOCK) {
-            count += rigidsym_plucker_from_points_with_jacobians_block_small_f32(mm,
-            in_p1 + 3 * j0,
-            in_p2 + 3 * j0,
-            out_kappa + 6 * j0,
-            out_kappa_D_p1 + 18 * j0,
-            out_kappa_D_p2 + 18 * j0);
-
-            continue;
-        }
-        float pad_p1[3 * RIGIDSYM_SMALL_BLOCK];
-        float pad_p2[3 * RIGIDSYM_SMALL_BLOCK];
-        float pad_kappa[6 * RIGIDSYM_SMALL_BLOCK];
-        float pad_kappa_D_p1[18 * RIGIDSYM_SMALL_BLOCK];
-        float pad_kappa_D_p2[18 * RIGIDSYM_SMALL_BLOCK];
-        for (int64_t j = 0; j < RIGIDSYM_SMALL_BLOCK; ++j) {
-            const int64_t s = j0 + (j < mm ? j : mm - 1);
-            memcpy(pad_p1 + 3 * j, in_p1 + 3 * s,
-                   3 * sizeof(float));
-            memcpy(pad_p2 + 3 * j, in_p2 + 3 * s,
-                   3 * sizeof(float));
-        }
-        count += rigidsym_plucker_from_points_with_jacobians_block_small_f32(mm,
-            pad_p1,
-            pad_p2,
-            pad_kappa,
-            pad_kappa_D_p1,
-            pad_kappa_D_p2);
-        memcpy(out_kappa + 6 * j0, pad_kappa,
-               6 * mm * sizeof(float));
-        memcpy(out_kappa_D_p1 + 18 * j0, pad_kappa_D_p1,
-               18 * mm * sizeof(float));
-        memcpy(out_kappa_D_p2 + 18 * j0, pad_kappa_D_p2,
-               18 * mm * sizeof(float));
+    float pad_p1[3 * RIGIDSYM_CHECK_BLOCK];
+    float pad_p2[3 * RIGIDSYM_CHECK_BLOCK];
+    float pad_kappa[6 * RIGIDSYM_CHECK_BLOCK];
+    float pad_kappa_D_p1[18 * RIGIDSYM_CHECK_BLOCK];
+    float pad_kappa_D_p2[18 * RIGIDSYM_CHECK_BLOCK];
+    for (int64_t j = 0; j < RIGIDSYM_CHECK_BLOCK; ++j) {
+        const int64_t s = i0 + (j < m ? j : m - 1);
+        memcpy(pad_p1 + 3 * j, in_p1 + 3 * s,
+               3 * sizeof(float));
+        memcpy(pad_p2 + 3 * j, in_p2 + 3 * s,
+               3 * sizeof(float));
     }
+    const int64_t count = rigidsym_plucker_from_points_with_jacobians_block_f32(m,
+        pad_p1,
+        pad_p2,
+        pad_kappa,
+        pad_kappa_D_p1,
+        pad_kappa_D_p2);
+    memcpy(out_kappa + 6 * i0, pad_kappa, 6 * m * sizeof(float));
+    memcpy(out_kappa_D_p1 + 18 * i0, pad_kappa_D_p1, 18 * m * sizeof(float));
+    memcpy(out_kappa_D_p2 + 18 * i0, pad_kappa_D_p2, 18 * m * sizeof(float));
     return count;
 }
 

@@ -10,8 +10,8 @@
  */
 #include "plucker_transfer_with_jacobians.h"
 
-/* Exactly NB samples, always (RIGIDSYM_CHECK_BLOCK for a full block of the batch, RIGIDSYM_SMALL_BLOCK for
- * the small blocks of a tail or of a short batch). One code path for every sample, so that a
+/* Exactly NB = RIGIDSYM_CHECK_BLOCK samples, always: a full block of the batch, or a partial one padded.
+ * One code path for every sample, so that a
  * sample's bits do not depend on where it sits in the batch: no scalar remainder of a vector
  * loop; never inlined, so that every use runs the same machine code.
  * Then one finiteness test over the first m samples' outputs (still in cache): finite inputs
@@ -21,9 +21,12 @@
  * first m. T float: the float32 sample function (float inputs and outputs, the arithmetic of
  * the precision plan in the header; sin/cos in double from the widened inputs). */
 
-/* Samples [i0, i0 + m) of the batch, m <= RIGIDSYM_CHECK_BLOCK: a full block, or small blocks, the last
- * one through padded copies (its real samples, then copies of its last one: valid inputs).
- * Returns the number flagged. */
+/* Samples [i0, i0 + m) of the batch, m <= RIGIDSYM_CHECK_BLOCK: a full block, or a partial one (the tail
+ * of a batch, a batch of a few samples, one sample) through a padded block (its samples, then
+ * copies of its last one: valid inputs). Always the same block function, so a sample's bits
+ * do not depend on its batch: smaller blocks for short batches were measured to change the
+ * last bit of some samples (the compiler vectorises a loop of 4 samples differently, and FMA
+ * contraction with it). Returns the number flagged. */
 
 /* The batch of n samples on `threads` threads: blocks are independent and the count is an
  * integer sum, so the result is the same for every thread count. One thread (or one block):
@@ -44,60 +47,6 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_plucker_transfer_with_jacobians_block(
      * compiler's cost model decides on vectorisation (forcing it turns the strided
      * row-major loads into gathers, measured slower). */
     for (int64_t j = 0; j < RIGIDSYM_CHECK_BLOCK; ++j) {
-        (void)rigidsym_plucker_transfer_with_jacobians_sample(
-            in_kappa_A + 6 * j,
-            in_a + 3 * j,
-            in_b + 3 * j,
-            out_kappa_B + 6 * j,
-            out_kappa_B_D_kappa_A + 36 * j,
-            out_kappa_B_D_a + 18 * j,
-            out_kappa_B_D_b + 18 * j);
-
-    }
-    count += rigidsym_any_nonfinite(out_kappa_B, 6 * m);
-    count += rigidsym_any_nonfinite(out_kappa_B_D_kappa_A, 36 * m);
-    count += rigidsym_any_nonfinite(out_kappa_B_D_a, 18 * m);
-    count += rigidsym_any_nonfinite(out_kappa_B_D_b, 18 * m);
-    if (count == 0)
-        return 0;
-    count = 0;
-    for (int64_t j = 0; j < m; ++j) {
-        int flagged = 0;
-        flagged |= rigidsym_any_nonfinite(out_kappa_B + 6 * j, 6);
-        flagged |= rigidsym_any_nonfinite(out_kappa_B_D_kappa_A + 36 * j, 36);
-        flagged |= rigidsym_any_nonfinite(out_kappa_B_D_a + 18 * j, 18);
-        flagged |= rigidsym_any_nonfinite(out_kappa_B_D_b + 18 * j, 18);
-        if (flagged) {
-            ++count;
-            for (int c = 0; c < 6; ++c)
-                out_kappa_B[6 * j + c] = NAN;
-            for (int c = 0; c < 36; ++c)
-                out_kappa_B_D_kappa_A[36 * j + c] = NAN;
-            for (int c = 0; c < 18; ++c)
-                out_kappa_B_D_a[18 * j + c] = NAN;
-            for (int c = 0; c < 18; ++c)
-                out_kappa_B_D_b[18 * j + c] = NAN;
-        }
-    }
-    return count;
-}
-
-
-static RIGIDSYM_NOINLINE int64_t rigidsym_plucker_transfer_with_jacobians_block_small(
-    int64_t m,
-    const double *RIGIDSYM_RESTRICT in_kappa_A,
-    const double *RIGIDSYM_RESTRICT in_a,
-    const double *RIGIDSYM_RESTRICT in_b,
-    double *RIGIDSYM_RESTRICT out_kappa_B,
-    double *RIGIDSYM_RESTRICT out_kappa_B_D_kappa_A,
-    double *RIGIDSYM_RESTRICT out_kappa_B_D_a,
-    double *RIGIDSYM_RESTRICT out_kappa_B_D_b)
-{
-    int64_t count = 0;
-    /* No division, root or branch: nothing to count per sample. A plain loop; the
-     * compiler's cost model decides on vectorisation (forcing it turns the strided
-     * row-major loads into gathers, measured slower). */
-    for (int64_t j = 0; j < RIGIDSYM_SMALL_BLOCK; ++j) {
         (void)rigidsym_plucker_transfer_with_jacobians_sample(
             in_kappa_A + 6 * j,
             in_a + 3 * j,
@@ -191,60 +140,6 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_plucker_transfer_with_jacobians_block_
 }
 
 
-static RIGIDSYM_NOINLINE int64_t rigidsym_plucker_transfer_with_jacobians_block_small_f32(
-    int64_t m,
-    const float *RIGIDSYM_RESTRICT in_kappa_A,
-    const float *RIGIDSYM_RESTRICT in_a,
-    const float *RIGIDSYM_RESTRICT in_b,
-    float *RIGIDSYM_RESTRICT out_kappa_B,
-    float *RIGIDSYM_RESTRICT out_kappa_B_D_kappa_A,
-    float *RIGIDSYM_RESTRICT out_kappa_B_D_a,
-    float *RIGIDSYM_RESTRICT out_kappa_B_D_b)
-{
-    int64_t count = 0;
-    /* No division, root or branch: nothing to count per sample. A plain loop; the
-     * compiler's cost model decides on vectorisation (forcing it turns the strided
-     * row-major loads into gathers, measured slower). */
-    for (int64_t j = 0; j < RIGIDSYM_SMALL_BLOCK; ++j) {
-        (void)rigidsym_plucker_transfer_with_jacobians_sample_f32(
-            in_kappa_A + 6 * j,
-            in_a + 3 * j,
-            in_b + 3 * j,
-            out_kappa_B + 6 * j,
-            out_kappa_B_D_kappa_A + 36 * j,
-            out_kappa_B_D_a + 18 * j,
-            out_kappa_B_D_b + 18 * j);
-
-    }
-    count += rigidsym_any_nonfinite_f32(out_kappa_B, 6 * m);
-    count += rigidsym_any_nonfinite_f32(out_kappa_B_D_kappa_A, 36 * m);
-    count += rigidsym_any_nonfinite_f32(out_kappa_B_D_a, 18 * m);
-    count += rigidsym_any_nonfinite_f32(out_kappa_B_D_b, 18 * m);
-    if (count == 0)
-        return 0;
-    count = 0;
-    for (int64_t j = 0; j < m; ++j) {
-        int flagged = 0;
-        flagged |= rigidsym_any_nonfinite_f32(out_kappa_B + 6 * j, 6);
-        flagged |= rigidsym_any_nonfinite_f32(out_kappa_B_D_kappa_A + 36 * j, 36);
-        flagged |= rigidsym_any_nonfinite_f32(out_kappa_B_D_a + 18 * j, 18);
-        flagged |= rigidsym_any_nonfinite_f32(out_kappa_B_D_b + 18 * j, 18);
-        if (flagged) {
-            ++count;
-            for (int c = 0; c < 6; ++c)
-                out_kappa_B[6 * j + c] = NAN;
-            for (int c = 0; c < 36; ++c)
-                out_kappa_B_D_kappa_A[36 * j + c] = NAN;
-            for (int c = 0; c < 18; ++c)
-                out_kappa_B_D_a[18 * j + c] = NAN;
-            for (int c = 0; c < 18; ++c)
-                out_kappa_B_D_b[18 * j + c] = NAN;
-        }
-    }
-    return count;
-}
-
-
 static int64_t rigidsym_plucker_transfer_with_jacobians_run(
     int64_t i0, int64_t m,
     const double *RIGIDSYM_RESTRICT in_kappa_A,
@@ -265,54 +160,34 @@ static int64_t rigidsym_plucker_transfer_with_jacobians_run(
             out_kappa_B_D_a + 18 * i0,
             out_kappa_B_D_b + 18 * i0);
 
-    int64_t count = 0;
-    for (int64_t j0 = i0; j0 < i0 + m; j0 += RIGIDSYM_SMALL_BLOCK) {
-        const int64_t mm = i0 + m - j0 < RIGIDSYM_SMALL_BLOCK ? i0 + m - j0 : RIGIDSYM_SMALL_BLOCK;
-        if (mm == RIGIDSYM_SMALL_BLOCK) {
-            count += rigidsym_plucker_transfer_with_jacobians_block_small(mm,
-            in_kappa_A + 6 * j0,
-            in_a + 3 * j0,
-            in_b + 3 * j0,
-            out_kappa_B + 6 * j0,
-            out_kappa_B_D_kappa_A + 36 * j0,
-            out_kappa_B_D_a + 18 * j0,
-            out_kappa_B_D_b + 18 * j0);
-
-            continue;
-        }
-        double pad_kappa_A[6 * RIGIDSYM_SMALL_BLOCK];
-        double pad_a[3 * RIGIDSYM_SMALL_BLOCK];
-        double pad_b[3 * RIGIDSYM_SMALL_BLOCK];
-        double pad_kappa_B[6 * RIGIDSYM_SMALL_BLOCK];
-        double pad_kappa_B_D_kappa_A[36 * RIGIDSYM_SMALL_BLOCK];
-        double pad_kappa_B_D_a[18 * RIGIDSYM_SMALL_BLOCK];
-        double pad_kappa_B_D_b[18 * RIGIDSYM_SMALL_BLOCK];
-        for (int64_t j = 0; j < RIGIDSYM_SMALL_BLOCK; ++j) {
-            const int64_t s = j0 + (j < mm ? j : mm - 1);
-            memcpy(pad_kappa_A + 6 * j, in_kappa_A + 6 * s,
-                   6 * sizeof(double));
-            memcpy(pad_a + 3 * j, in_a + 3 * s,
-                   3 * sizeof(double));
-            memcpy(pad_b + 3 * j, in_b + 3 * s,
-                   3 * sizeof(double));
-        }
-        count += rigidsym_plucker_transfer_with_jacobians_block_small(mm,
-            pad_kappa_A,
-            pad_a,
-            pad_b,
-            pad_kappa_B,
-            pad_kappa_B_D_kappa_A,
-            pad_kappa_B_D_a,
-            pad_kappa_B_D_b);
-        memcpy(out_kappa_B + 6 * j0, pad_kappa_B,
-               6 * mm * sizeof(double));
-        memcpy(out_kappa_B_D_kappa_A + 36 * j0, pad_kappa_B_D_kappa_A,
-               36 * mm * sizeof(double));
-        memcpy(out_kappa_B_D_a + 18 * j0, pad_kappa_B_D_a,
-               18 * mm * sizeof(double));
-        memcpy(out_kappa_B_D_b + 18 * j0, pad_kappa_B_D_b,
-               18 * mm * sizeof(double));
+    double pad_kappa_A[6 * RIGIDSYM_CHECK_BLOCK];
+    double pad_a[3 * RIGIDSYM_CHECK_BLOCK];
+    double pad_b[3 * RIGIDSYM_CHECK_BLOCK];
+    double pad_kappa_B[6 * RIGIDSYM_CHECK_BLOCK];
+    double pad_kappa_B_D_kappa_A[36 * RIGIDSYM_CHECK_BLOCK];
+    double pad_kappa_B_D_a[18 * RIGIDSYM_CHECK_BLOCK];
+    double pad_kappa_B_D_b[18 * RIGIDSYM_CHECK_BLOCK];
+    for (int64_t j = 0; j < RIGIDSYM_CHECK_BLOCK; ++j) {
+        const int64_t s = i0 + (j < m ? j : m - 1);
+        memcpy(pad_kappa_A + 6 * j, in_kappa_A + 6 * s,
+               6 * sizeof(double));
+        memcpy(pad_a + 3 * j, in_a + 3 * s,
+               3 * sizeof(double));
+        memcpy(pad_b + 3 * j, in_b + 3 * s,
+               3 * sizeof(double));
     }
+    const int64_t count = rigidsym_plucker_transfer_with_jacobians_block(m,
+        pad_kappa_A,
+        pad_a,
+        pad_b,
+        pad_kappa_B,
+        pad_kappa_B_D_kappa_A,
+        pad_kappa_B_D_a,
+        pad_kappa_B_D_b);
+    memcpy(out_kappa_B + 6 * i0, pad_kappa_B, 6 * m * sizeof(double));
+    memcpy(out_kappa_B_D_kappa_A + 36 * i0, pad_kappa_B_D_kappa_A, 36 * m * sizeof(double));
+    memcpy(out_kappa_B_D_a + 18 * i0, pad_kappa_B_D_a, 18 * m * sizeof(double));
+    memcpy(out_kappa_B_D_b + 18 * i0, pad_kappa_B_D_b, 18 * m * sizeof(double));
     return count;
 }
 
@@ -337,54 +212,34 @@ static int64_t rigidsym_plucker_transfer_with_jacobians_run_f32(
             out_kappa_B_D_a + 18 * i0,
             out_kappa_B_D_b + 18 * i0);
 
-    int64_t count = 0;
-    for (int64_t j0 = i0; j0 < i0 + m; j0 += RIGIDSYM_SMALL_BLOCK) {
-        const int64_t mm = i0 + m - j0 < RIGIDSYM_SMALL_BLOCK ? i0 + m - j0 : RIGIDSYM_SMALL_BLOCK;
-        if (mm == RIGIDSYM_SMALL_BLOCK) {
-            count += rigidsym_plucker_transfer_with_jacobians_block_small_f32(mm,
-            in_kappa_A + 6 * j0,
-            in_a + 3 * j0,
-            in_b + 3 * j0,
-            out_kappa_B + 6 * j0,
-            out_kappa_B_D_kappa_A + 36 * j0,
-            out_kappa_B_D_a + 18 * j0,
-            out_kappa_B_D_b + 18 * j0);
-
-            continue;
-        }
-        float pad_kappa_A[6 * RIGIDSYM_SMALL_BLOCK];
-        float pad_a[3 * RIGIDSYM_SMALL_BLOCK];
-        float pad_b[3 * RIGIDSYM_SMALL_BLOCK];
-        float pad_kappa_B[6 * RIGIDSYM_SMALL_BLOCK];
-        float pad_kappa_B_D_kappa_A[36 * RIGIDSYM_SMALL_BLOCK];
-        float pad_kappa_B_D_a[18 * RIGIDSYM_SMALL_BLOCK];
-        float pad_kappa_B_D_b[18 * RIGIDSYM_SMALL_BLOCK];
-        for (int64_t j = 0; j < RIGIDSYM_SMALL_BLOCK; ++j) {
-            const int64_t s = j0 + (j < mm ? j : mm - 1);
-            memcpy(pad_kappa_A + 6 * j, in_kappa_A + 6 * s,
-                   6 * sizeof(float));
-            memcpy(pad_a + 3 * j, in_a + 3 * s,
-                   3 * sizeof(float));
-            memcpy(pad_b + 3 * j, in_b + 3 * s,
-                   3 * sizeof(float));
-        }
-        count += rigidsym_plucker_transfer_with_jacobians_block_small_f32(mm,
-            pad_kappa_A,
-            pad_a,
-            pad_b,
-            pad_kappa_B,
-            pad_kappa_B_D_kappa_A,
-            pad_kappa_B_D_a,
-            pad_kappa_B_D_b);
-        memcpy(out_kappa_B + 6 * j0, pad_kappa_B,
-               6 * mm * sizeof(float));
-        memcpy(out_kappa_B_D_kappa_A + 36 * j0, pad_kappa_B_D_kappa_A,
-               36 * mm * sizeof(float));
-        memcpy(out_kappa_B_D_a + 18 * j0, pad_kappa_B_D_a,
-               18 * mm * sizeof(float));
-        memcpy(out_kappa_B_D_b + 18 * j0, pad_kappa_B_D_b,
-               18 * mm * sizeof(float));
+    float pad_kappa_A[6 * RIGIDSYM_CHECK_BLOCK];
+    float pad_a[3 * RIGIDSYM_CHECK_BLOCK];
+    float pad_b[3 * RIGIDSYM_CHECK_BLOCK];
+    float pad_kappa_B[6 * RIGIDSYM_CHECK_BLOCK];
+    float pad_kappa_B_D_kappa_A[36 * RIGIDSYM_CHECK_BLOCK];
+    float pad_kappa_B_D_a[18 * RIGIDSYM_CHECK_BLOCK];
+    float pad_kappa_B_D_b[18 * RIGIDSYM_CHECK_BLOCK];
+    for (int64_t j = 0; j < RIGIDSYM_CHECK_BLOCK; ++j) {
+        const int64_t s = i0 + (j < m ? j : m - 1);
+        memcpy(pad_kappa_A + 6 * j, in_kappa_A + 6 * s,
+               6 * sizeof(float));
+        memcpy(pad_a + 3 * j, in_a + 3 * s,
+               3 * sizeof(float));
+        memcpy(pad_b + 3 * j, in_b + 3 * s,
+               3 * sizeof(float));
     }
+    const int64_t count = rigidsym_plucker_transfer_with_jacobians_block_f32(m,
+        pad_kappa_A,
+        pad_a,
+        pad_b,
+        pad_kappa_B,
+        pad_kappa_B_D_kappa_A,
+        pad_kappa_B_D_a,
+        pad_kappa_B_D_b);
+    memcpy(out_kappa_B + 6 * i0, pad_kappa_B, 6 * m * sizeof(float));
+    memcpy(out_kappa_B_D_kappa_A + 36 * i0, pad_kappa_B_D_kappa_A, 36 * m * sizeof(float));
+    memcpy(out_kappa_B_D_a + 18 * i0, pad_kappa_B_D_a, 18 * m * sizeof(float));
+    memcpy(out_kappa_B_D_b + 18 * i0, pad_kappa_B_D_b, 18 * m * sizeof(float));
     return count;
 }
 

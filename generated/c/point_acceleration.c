@@ -10,8 +10,8 @@
  */
 #include "point_acceleration.h"
 
-/* Exactly NB samples, always (RIGIDSYM_CHECK_BLOCK for a full block of the batch, RIGIDSYM_SMALL_BLOCK for
- * the small blocks of a tail or of a short batch). One code path for every sample, so that a
+/* Exactly NB = RIGIDSYM_CHECK_BLOCK samples, always: a full block of the batch, or a partial one padded.
+ * One code path for every sample, so that a
  * sample's bits do not depend on where it sits in the batch: no scalar remainder of a vector
  * loop; never inlined, so that every use runs the same machine code.
  * Then one finiteness test over the first m samples' outputs (still in cache): finite inputs
@@ -21,9 +21,12 @@
  * first m. T float: the float32 sample function (float inputs and outputs, the arithmetic of
  * the precision plan in the header; sin/cos in double from the widened inputs). */
 
-/* Samples [i0, i0 + m) of the batch, m <= RIGIDSYM_CHECK_BLOCK: a full block, or small blocks, the last
- * one through padded copies (its real samples, then copies of its last one: valid inputs).
- * Returns the number flagged. */
+/* Samples [i0, i0 + m) of the batch, m <= RIGIDSYM_CHECK_BLOCK: a full block, or a partial one (the tail
+ * of a batch, a batch of a few samples, one sample) through a padded block (its samples, then
+ * copies of its last one: valid inputs). Always the same block function, so a sample's bits
+ * do not depend on its batch: smaller blocks for short batches were measured to change the
+ * last bit of some samples (the compiler vectorises a loop of 4 samples differently, and FMA
+ * contraction with it). Returns the number flagged. */
 
 /* The batch of n samples on `threads` threads: blocks are independent and the count is an
  * integer sum, so the result is the same for every thread count. One thread (or one block):
@@ -43,46 +46,6 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_point_acceleration_block(
      * compiler's cost model decides on vectorisation (forcing it turns the strided
      * row-major loads into gathers, measured slower). */
     for (int64_t j = 0; j < RIGIDSYM_CHECK_BLOCK; ++j) {
-        (void)rigidsym_point_acceleration_sample(
-            in_a_ddot + 3 * j,
-            in_omega + 3 * j,
-            in_omega_dot + 3 * j,
-            in_p + 3 * j,
-            in_a + 3 * j,
-            out_p_ddot + 3 * j);
-
-    }
-    count += rigidsym_any_nonfinite(out_p_ddot, 3 * m);
-    if (count == 0)
-        return 0;
-    count = 0;
-    for (int64_t j = 0; j < m; ++j) {
-        int flagged = 0;
-        flagged |= rigidsym_any_nonfinite(out_p_ddot + 3 * j, 3);
-        if (flagged) {
-            ++count;
-            for (int c = 0; c < 3; ++c)
-                out_p_ddot[3 * j + c] = NAN;
-        }
-    }
-    return count;
-}
-
-
-static RIGIDSYM_NOINLINE int64_t rigidsym_point_acceleration_block_small(
-    int64_t m,
-    const double *RIGIDSYM_RESTRICT in_a_ddot,
-    const double *RIGIDSYM_RESTRICT in_omega,
-    const double *RIGIDSYM_RESTRICT in_omega_dot,
-    const double *RIGIDSYM_RESTRICT in_p,
-    const double *RIGIDSYM_RESTRICT in_a,
-    double *RIGIDSYM_RESTRICT out_p_ddot)
-{
-    int64_t count = 0;
-    /* No division, root or branch: nothing to count per sample. A plain loop; the
-     * compiler's cost model decides on vectorisation (forcing it turns the strided
-     * row-major loads into gathers, measured slower). */
-    for (int64_t j = 0; j < RIGIDSYM_SMALL_BLOCK; ++j) {
         (void)rigidsym_point_acceleration_sample(
             in_a_ddot + 3 * j,
             in_omega + 3 * j,
@@ -149,46 +112,6 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_point_acceleration_block_f32(
 }
 
 
-static RIGIDSYM_NOINLINE int64_t rigidsym_point_acceleration_block_small_f32(
-    int64_t m,
-    const float *RIGIDSYM_RESTRICT in_a_ddot,
-    const float *RIGIDSYM_RESTRICT in_omega,
-    const float *RIGIDSYM_RESTRICT in_omega_dot,
-    const float *RIGIDSYM_RESTRICT in_p,
-    const float *RIGIDSYM_RESTRICT in_a,
-    float *RIGIDSYM_RESTRICT out_p_ddot)
-{
-    int64_t count = 0;
-    /* No division, root or branch: nothing to count per sample. A plain loop; the
-     * compiler's cost model decides on vectorisation (forcing it turns the strided
-     * row-major loads into gathers, measured slower). */
-    for (int64_t j = 0; j < RIGIDSYM_SMALL_BLOCK; ++j) {
-        (void)rigidsym_point_acceleration_sample_f32(
-            in_a_ddot + 3 * j,
-            in_omega + 3 * j,
-            in_omega_dot + 3 * j,
-            in_p + 3 * j,
-            in_a + 3 * j,
-            out_p_ddot + 3 * j);
-
-    }
-    count += rigidsym_any_nonfinite_f32(out_p_ddot, 3 * m);
-    if (count == 0)
-        return 0;
-    count = 0;
-    for (int64_t j = 0; j < m; ++j) {
-        int flagged = 0;
-        flagged |= rigidsym_any_nonfinite_f32(out_p_ddot + 3 * j, 3);
-        if (flagged) {
-            ++count;
-            for (int c = 0; c < 3; ++c)
-                out_p_ddot[3 * j + c] = NAN;
-        }
-    }
-    return count;
-}
-
-
 static int64_t rigidsym_point_acceleration_run(
     int64_t i0, int64_t m,
     const double *RIGIDSYM_RESTRICT in_a_ddot,
@@ -207,49 +130,33 @@ static int64_t rigidsym_point_acceleration_run(
             in_a + 3 * i0,
             out_p_ddot + 3 * i0);
 
-    int64_t count = 0;
-    for (int64_t j0 = i0; j0 < i0 + m; j0 += RIGIDSYM_SMALL_BLOCK) {
-        const int64_t mm = i0 + m - j0 < RIGIDSYM_SMALL_BLOCK ? i0 + m - j0 : RIGIDSYM_SMALL_BLOCK;
-        if (mm == RIGIDSYM_SMALL_BLOCK) {
-            count += rigidsym_point_acceleration_block_small(mm,
-            in_a_ddot + 3 * j0,
-            in_omega + 3 * j0,
-            in_omega_dot + 3 * j0,
-            in_p + 3 * j0,
-            in_a + 3 * j0,
-            out_p_ddot + 3 * j0);
-
-            continue;
-        }
-        double pad_a_ddot[3 * RIGIDSYM_SMALL_BLOCK];
-        double pad_omega[3 * RIGIDSYM_SMALL_BLOCK];
-        double pad_omega_dot[3 * RIGIDSYM_SMALL_BLOCK];
-        double pad_p[3 * RIGIDSYM_SMALL_BLOCK];
-        double pad_a[3 * RIGIDSYM_SMALL_BLOCK];
-        double pad_p_ddot[3 * RIGIDSYM_SMALL_BLOCK];
-        for (int64_t j = 0; j < RIGIDSYM_SMALL_BLOCK; ++j) {
-            const int64_t s = j0 + (j < mm ? j : mm - 1);
-            memcpy(pad_a_ddot + 3 * j, in_a_ddot + 3 * s,
-                   3 * sizeof(double));
-            memcpy(pad_omega + 3 * j, in_omega + 3 * s,
-                   3 * sizeof(double));
-            memcpy(pad_omega_dot + 3 * j, in_omega_dot + 3 * s,
-                   3 * sizeof(double));
-            memcpy(pad_p + 3 * j, in_p + 3 * s,
-                   3 * sizeof(double));
-            memcpy(pad_a + 3 * j, in_a + 3 * s,
-                   3 * sizeof(double));
-        }
-        count += rigidsym_point_acceleration_block_small(mm,
-            pad_a_ddot,
-            pad_omega,
-            pad_omega_dot,
-            pad_p,
-            pad_a,
-            pad_p_ddot);
-        memcpy(out_p_ddot + 3 * j0, pad_p_ddot,
-               3 * mm * sizeof(double));
+    double pad_a_ddot[3 * RIGIDSYM_CHECK_BLOCK];
+    double pad_omega[3 * RIGIDSYM_CHECK_BLOCK];
+    double pad_omega_dot[3 * RIGIDSYM_CHECK_BLOCK];
+    double pad_p[3 * RIGIDSYM_CHECK_BLOCK];
+    double pad_a[3 * RIGIDSYM_CHECK_BLOCK];
+    double pad_p_ddot[3 * RIGIDSYM_CHECK_BLOCK];
+    for (int64_t j = 0; j < RIGIDSYM_CHECK_BLOCK; ++j) {
+        const int64_t s = i0 + (j < m ? j : m - 1);
+        memcpy(pad_a_ddot + 3 * j, in_a_ddot + 3 * s,
+               3 * sizeof(double));
+        memcpy(pad_omega + 3 * j, in_omega + 3 * s,
+               3 * sizeof(double));
+        memcpy(pad_omega_dot + 3 * j, in_omega_dot + 3 * s,
+               3 * sizeof(double));
+        memcpy(pad_p + 3 * j, in_p + 3 * s,
+               3 * sizeof(double));
+        memcpy(pad_a + 3 * j, in_a + 3 * s,
+               3 * sizeof(double));
     }
+    const int64_t count = rigidsym_point_acceleration_block(m,
+        pad_a_ddot,
+        pad_omega,
+        pad_omega_dot,
+        pad_p,
+        pad_a,
+        pad_p_ddot);
+    memcpy(out_p_ddot + 3 * i0, pad_p_ddot, 3 * m * sizeof(double));
     return count;
 }
 
@@ -272,49 +179,33 @@ static int64_t rigidsym_point_acceleration_run_f32(
             in_a + 3 * i0,
             out_p_ddot + 3 * i0);
 
-    int64_t count = 0;
-    for (int64_t j0 = i0; j0 < i0 + m; j0 += RIGIDSYM_SMALL_BLOCK) {
-        const int64_t mm = i0 + m - j0 < RIGIDSYM_SMALL_BLOCK ? i0 + m - j0 : RIGIDSYM_SMALL_BLOCK;
-        if (mm == RIGIDSYM_SMALL_BLOCK) {
-            count += rigidsym_point_acceleration_block_small_f32(mm,
-            in_a_ddot + 3 * j0,
-            in_omega + 3 * j0,
-            in_omega_dot + 3 * j0,
-            in_p + 3 * j0,
-            in_a + 3 * j0,
-            out_p_ddot + 3 * j0);
-
-            continue;
-        }
-        float pad_a_ddot[3 * RIGIDSYM_SMALL_BLOCK];
-        float pad_omega[3 * RIGIDSYM_SMALL_BLOCK];
-        float pad_omega_dot[3 * RIGIDSYM_SMALL_BLOCK];
-        float pad_p[3 * RIGIDSYM_SMALL_BLOCK];
-        float pad_a[3 * RIGIDSYM_SMALL_BLOCK];
-        float pad_p_ddot[3 * RIGIDSYM_SMALL_BLOCK];
-        for (int64_t j = 0; j < RIGIDSYM_SMALL_BLOCK; ++j) {
-            const int64_t s = j0 + (j < mm ? j : mm - 1);
-            memcpy(pad_a_ddot + 3 * j, in_a_ddot + 3 * s,
-                   3 * sizeof(float));
-            memcpy(pad_omega + 3 * j, in_omega + 3 * s,
-                   3 * sizeof(float));
-            memcpy(pad_omega_dot + 3 * j, in_omega_dot + 3 * s,
-                   3 * sizeof(float));
-            memcpy(pad_p + 3 * j, in_p + 3 * s,
-                   3 * sizeof(float));
-            memcpy(pad_a + 3 * j, in_a + 3 * s,
-                   3 * sizeof(float));
-        }
-        count += rigidsym_point_acceleration_block_small_f32(mm,
-            pad_a_ddot,
-            pad_omega,
-            pad_omega_dot,
-            pad_p,
-            pad_a,
-            pad_p_ddot);
-        memcpy(out_p_ddot + 3 * j0, pad_p_ddot,
-               3 * mm * sizeof(float));
+    float pad_a_ddot[3 * RIGIDSYM_CHECK_BLOCK];
+    float pad_omega[3 * RIGIDSYM_CHECK_BLOCK];
+    float pad_omega_dot[3 * RIGIDSYM_CHECK_BLOCK];
+    float pad_p[3 * RIGIDSYM_CHECK_BLOCK];
+    float pad_a[3 * RIGIDSYM_CHECK_BLOCK];
+    float pad_p_ddot[3 * RIGIDSYM_CHECK_BLOCK];
+    for (int64_t j = 0; j < RIGIDSYM_CHECK_BLOCK; ++j) {
+        const int64_t s = i0 + (j < m ? j : m - 1);
+        memcpy(pad_a_ddot + 3 * j, in_a_ddot + 3 * s,
+               3 * sizeof(float));
+        memcpy(pad_omega + 3 * j, in_omega + 3 * s,
+               3 * sizeof(float));
+        memcpy(pad_omega_dot + 3 * j, in_omega_dot + 3 * s,
+               3 * sizeof(float));
+        memcpy(pad_p + 3 * j, in_p + 3 * s,
+               3 * sizeof(float));
+        memcpy(pad_a + 3 * j, in_a + 3 * s,
+               3 * sizeof(float));
     }
+    const int64_t count = rigidsym_point_acceleration_block_f32(m,
+        pad_a_ddot,
+        pad_omega,
+        pad_omega_dot,
+        pad_p,
+        pad_a,
+        pad_p_ddot);
+    memcpy(out_p_ddot + 3 * i0, pad_p_ddot, 3 * m * sizeof(float));
     return count;
 }
 

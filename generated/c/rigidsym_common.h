@@ -84,13 +84,6 @@ double cos(double);
  * faster than 256). */
 #define RIGIDSYM_CHECK_BLOCK 64
 
-/* Samples per small block: the tail of a batch after its full blocks, and a batch of fewer
- * samples than a block (a call on one sample), run blocks of this many, the last one padded,
- * instead of one padded block of 64. The same per-sample code in a loop of the same shape
- * (4 doubles: one AVX2 vector, two SSE ones), so a sample's bits do not depend on the size
- * of its batch (tests/test_fast.py). */
-#define RIGIDSYM_SMALL_BLOCK 4
-
 /* Nonzero when one of the len doubles at p is infinite or NaN (exponent bits all ones).
  * Integer arithmetic: adding 1 to an all-ones exponent carries into the sign bit, so an OR
  * reduction over the sums vectorises without reassociating floating-point operations. */

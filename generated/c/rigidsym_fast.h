@@ -1468,15 +1468,13 @@ static void rigidsym_scatter(PyArrayObject *y, const rigidsym_slot *s, int f32, 
 
 /* The checks of rigidsym.kernels._core.validate on a C-contiguous buffer: finite values,
  * then | ||x|| - 1 | <= tol for unit vectors, max |Q^T Q - 1| <= tol and det Q > 0 for
- * rotations. 1 when valid. In double arithmetic for float32 values too. */
-#define RIGIDSYM_VALIDATE(NAME, T)                                                        \
+ * rotations. 1 when valid. In double arithmetic for float32 values too; the finiteness test
+ * on the bits (rigidsym_common.h: it vectorises). */
+#define RIGIDSYM_VALIDATE(NAME, T, NONFINITE)                                             \
 static int NAME(const T *x, npy_intp n, const rigidsym_slot *s, const double *tol)          \
 {                                                                                         \
-    const npy_intp len = n * s->size;                                                     \
     int bad = 0;                                                                          \
-    for (npy_intp i = 0; i < len; ++i)                                                    \
-        bad |= !isfinite(x[i]);                                                           \
-    if (bad)                                                                              \
+    if (NONFINITE(x, (int64_t)n * s->size))                                               \
         return 0;                                                                         \
     if (s->kind == RIGIDSYM_UNIT) {                                                       \
         for (npy_intp i = 0; i < n; ++i) {                                                \
@@ -1502,8 +1500,8 @@ static int NAME(const T *x, npy_intp n, const rigidsym_slot *s, const double *to
     }                                                                                     \
     return !bad;                                                                          \
 }
-RIGIDSYM_VALIDATE(rigidsym_valid_f64, double)
-RIGIDSYM_VALIDATE(rigidsym_valid_f32, float)
+RIGIDSYM_VALIDATE(rigidsym_valid_f64, double, rigidsym_any_nonfinite)
+RIGIDSYM_VALIDATE(rigidsym_valid_f32, float, rigidsym_any_nonfinite_f32)
 
 /* Whether the memory of arrays x and y may overlap (their extents intersect). */
 static int rigidsym_overlap(PyArrayObject *x, PyArrayObject *y)

@@ -13,9 +13,9 @@
  * Singular set: phi = 0 (pure translation)
  *
  * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
- * measured at generation, rigidsym.codegen.float32; error within 1.452 ulp of float32,
+ * measured at generation, rigidsym.codegen.float32; error within 0.992 ulp of float32,
  * normwise, at its points). In double:
- *   trig_0, trig_1, x0, x1, x3, x4, x6, x7, x8, x10, x11, x12, x13, x14, x16, x17, x18, x20, x21, x22, x25, x26, x27, x28, x29, x30, x34, x36, x41, x47, x59, x64, x69, x70, x74, x77, x78, x79, x81
+ *   trig_0, trig_1, x0, x1, x3, x4, x5, x6, x7, x8, x10, x11, x12, x13, x14, x15, x16, x17, x18, x20, x21, x22, x25, x26, x27, x28, x29, x30, x31, x32, x34, x35, x36, x37, x38, x39, x40, x41, x47, x50, x51, x58, x59, x64, x69, x70, x74, x77, x78, x79, x81
  */
 #ifndef RIGIDSYM_SCREW_AXIS_POINT_WITH_JACOBIANS_H
 #define RIGIDSYM_SCREW_AXIS_POINT_WITH_JACOBIANS_H
@@ -364,19 +364,19 @@ static inline int rigidsym_screw_axis_point_with_jacobians_sample_trig_f32(
         const double x1 = 1.0 - x0;
         const double x3 = trig_0;
         const double x4 = (x3*x3);
-        const float x5 = 2.0f*x4;
-        const double x6 = 1.0 - ((double)x5);
+        const double x5 = 2.0*x4;
+        const double x6 = 1.0 - x5;
         const double x7 = x0 + x1*x6;
-        const double x8 = ((double)e_1)*((double)x5);
+        const double x8 = ((double)e_1)*x5;
         const float x9 = e_0*x8;
         const double x10 = trig_1;
         const double x11 = 2.0*x10*x3;
         const double x12 = ((double)e_2)*x11;
         const double x13 = -x12 + ((double)x9);
-        const double x14 = ((double)e_2)*((double)x5);
-        const float x15 = e_0*x14;
+        const double x14 = ((double)e_2)*x5;
+        const double x15 = ((double)e_0)*x14;
         const double x16 = ((double)e_1)*x11;
-        const double x17 = ((double)x15) + x16;
+        const double x17 = x15 + x16;
         const double x18 = ((double)a_0)*x7 + ((double)a_1)*x13 + ((double)a_2)*x17 - ((double)a_prime_0);
         const float x19 = x4*(2.0f*x0 - 2.0f);
         const double x20 = x12 + ((double)x9);
@@ -388,19 +388,19 @@ static inline int rigidsym_screw_axis_point_with_jacobians_sample_trig_f32(
         const double x26 = -((double)x24) + x25;
         const double x27 = -x26;
         const double x28 = ((double)a_0)*x20 + ((double)a_1)*((double)x23) + ((double)a_2)*x27 - ((double)a_prime_1);
-        const double x29 = ((double)x15) - x16;
+        const double x29 = x15 - x16;
         const double x30 = ((double)x24) + x25;
-        const float x31 = (e_2*e_2);
-        const float x32 = 1.0f - x31;
+        const double x31 = (((double)e_2)*((double)e_2));
+        const double x32 = 1.0 - x31;
         const float x33 = x31 + x32*x6;
         const double x34 = ((double)a_0)*x29 + ((double)a_1)*x30 + ((double)a_2)*((double)x33) - ((double)a_prime_2);
-        const float x35 = x18*x19 + x20*x28 + x29*x34;
+        const double x35 = x18*((double)x19) + x20*x28 + x29*x34;
         const double x36 = 1.0/x4;
-        const float x37 = (0.25f)*x36;
-        const float x38 = x4*(2.0f*x21 - 2.0f);
-        const float x39 = x13*x18 + x28*x38 + x30*x34;
-        const float x40 = x4*(2.0f*x31 - 2.0f);
-        const double x41 = x17*x18 + x27*x28 + x34*((double)x40);
+        const double x37 = (0.25)*x36;
+        const double x38 = x4*(2.0*x21 - 2.0);
+        const double x39 = x13*x18 + x28*x38 + x30*x34;
+        const double x40 = x4*(2.0*x31 - 2.0);
+        const double x41 = x17*x18 + x27*x28 + x34*x40;
         const float x42 = a_2*x11;
         const float x43 = a_0*x8 - x42;
         const float x44 = a_1*x11;
@@ -409,15 +409,15 @@ static inline int rigidsym_screw_axis_point_with_jacobians_sample_trig_f32(
         const double x47 = 4.0*x4;
         const float x48 = a_1*x8;
         const float x49 = a_2*x14;
-        const float x50 = x46*x47 + x48 + x49;
-        const float x51 = e_0*x18;
+        const double x50 = ((double)x46)*x47 + ((double)x48) + ((double)x49);
+        const double x51 = ((double)e_0)*x18;
         const float x52 = x28*x8;
         const float x53 = x14*x34;
         const float x54 = e_0*x5;
         const float x55 = a_1*x54 + x42;
         const float x56 = a_0*x11;
         const float x57 = 2.0f*a_1*e_2*x4 - x56;
-        const float x58 = x46*x5;
+        const double x58 = ((double)x46)*x5;
         const double x59 = ((double)e_1)*x47;
         const float x60 = a_1*x59 + x49 + x58;
         const float x61 = x11*x34;

@@ -14,12 +14,12 @@
  * Singular set: phi = 0 (pure translation: no axis, infinite pitch)
  *
  * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
- * measured at generation, rigidsym.codegen.float32; error within 1.487 ulp of float32,
+ * measured at generation, rigidsym.codegen.float32; error within 0.964 ulp of float32,
  * normwise, at its points). In double:
- *   branch 1: x32
- *   branch 2: none
- *   branch 3: none
- *   branch 4: x0, x3, x7, x8, x12, x14, x16, x19, x20, x24, x25, x27
+ *   branch 1: x16, x37
+ *   branch 2: x31, x33, x34, x36
+ *   branch 3: x38
+ *   branch 4: x6, x7, x8, x12, x14, x16, x19, x23, x24, x27, pitch[0]
  */
 #ifndef RIGIDSYM_SCREW_OF_DISPLACEMENT_H
 #define RIGIDSYM_SCREW_OF_DISPLACEMENT_H
@@ -347,7 +347,7 @@ static inline int rigidsym_screw_of_displacement_sample_f32(
         const float x13 = (0.5f)*Q_10 - x4;
         const float x14 = x7 - x8;
         const float x15 = -0.5f*Q_12 + (0.5f)*Q_21;
-        const float x16 = ((x13*x9 + x14*x5 + x15*x3 < 0.0f) ? (-1.0f) : (1.0f))/sqrtf(x12);
+        const double x16 = ((((double)x13)*((double)x9) + ((double)x14)*((double)x5) + ((double)x15)*((double)x3) < 0.0) ? (-1.0) : (1.0))/sqrt(((double)x12));
         const float x17 = x16*x3;
         const float x18 = x16*x5;
         const float x19 = x16*x9;
@@ -363,12 +363,12 @@ static inline int rigidsym_screw_of_displacement_sample_f32(
         const float x29 = Q_11 - 1.0f;
         const float x30 = Q_22 - 1.0f;
         const float x31 = -(x25) - (x29) - (x30);
-        const double x32 = 1.0/((double)x31);
+        const float x32 = 1.0f/x31;
         const float x33 = Q_01*x27 + Q_21*x24 + x22*x29;
         const float x34 = Q_02*x27 + Q_12*x22 + x24*x30;
         const float x35 = 1.0f/x12;
         const float x36 = x10*x35 + x11*x35 + x35*x6;
-        const float x37 = 1.0f/sqrtf(x36);
+        const double x37 = 1.0/sqrt(((double)x36));
         const float x38 = x17*x37;
         const float x39 = x18*x37;
         const float x40 = x19*x37;
@@ -424,12 +424,12 @@ static inline int rigidsym_screw_of_displacement_sample_f32(
         const float x28 = -(x22) - (x26) - (x27);
         const float x29 = 1.0f/x28;
         const float x30 = Q_01*x24 + Q_21*x21 + x19*x26;
-        const float x31 = Q_02*x24 + Q_12*x19 + x21*x27;
+        const double x31 = ((double)Q_02)*((double)x24) + ((double)Q_12)*((double)x19) + ((double)x21)*((double)x27);
         const float x32 = 1.0f/x9;
-        const float x33 = x2*x32 + x32*x5 + x32*x8;
-        const float x34 = 1.0f/sqrtf(x33);
+        const double x33 = ((double)x2)*((double)x32) + ((double)x32)*((double)x5) + ((double)x32)*((double)x8);
+        const double x34 = 1.0/sqrt(x33);
         const float x35 = x14*x34;
-        const float x36 = x15*x34;
+        const double x36 = ((double)x15)*x34;
         const float x37 = x16*x34;
         out_e[0] = x14;
         out_e[1] = x15;
@@ -445,7 +445,7 @@ static inline int rigidsym_screw_of_displacement_sample_f32(
         out_plucker[3] = x29*x30*x37 - x29*x31*x36;
         out_plucker[4] = -x25*x29*x37 + x29*x31*x35;
         out_plucker[5] = x25*x29*x36 - x29*x30*x35;
-        singular |= (((double)x33)) == 0.0;
+        singular |= (x33) == 0.0;
         singular |= (((double)x9)) == 0.0;
         singular |= (((double)x28)) == 0.0;
         singular |= (((double)x17)) == 0.0;
@@ -490,7 +490,7 @@ static inline int rigidsym_screw_of_displacement_sample_f32(
         const float x35 = 1.0f/sqrtf(x34);
         const float x36 = x15*x35;
         const float x37 = x16*x35;
-        const float x38 = x17*x35;
+        const double x38 = ((double)x17)*((double)x35);
         out_e[0] = x15;
         out_e[1] = x16;
         out_e[2] = x17;
@@ -512,14 +512,14 @@ static inline int rigidsym_screw_of_displacement_sample_f32(
         const double finite = ((((x14 - x14) + (x18 - x18)) + ((x30 - x30) + ((x33 - x33) + (x35 - x35)))) + (((out_pitch[0] - out_pitch[0]) + (x10 - x10)) + ((((x11*x11) + (x12*x12) + (x13*x13)) - ((x11*x11) + (x12*x12) + (x13*x13))) + ((x29 - x29) + (x34 - x34)))));
         singular |= finite != finite;
     } else {
-        const double x0 = -0.5*((double)Q_12) + (0.5)*((double)Q_21);
+        const float x0 = -0.5f*Q_12 + (0.5f)*Q_21;
         const float x1 = -0.5f*Q_01 + (0.5f)*Q_10;
         const float x2 = (x1*x1);
-        const double x3 = (0.5)*((double)Q_02) - 0.5*((double)Q_20);
+        const float x3 = (0.5f)*Q_02 - 0.5f*Q_20;
         const float x4 = (x3*x3);
         const float x5 = (x0*x0);
-        const float x6 = x2 + x4 + x5;
-        const double x7 = sqrt(((double)x6));
+        const double x6 = ((double)x2) + ((double)x4) + ((double)x5);
+        const double x7 = sqrt(x6);
         const double x8 = 1.0/x7;
         const float x9 = x0*x8;
         const float x10 = x3*x8;
@@ -532,14 +532,14 @@ static inline int rigidsym_screw_of_displacement_sample_f32(
         const float x17 = Q_00 - 1.0f;
         const float x18 = -a_prime_0;
         const double x19 = ((double)Q_00)*((double)a_0) + ((double)Q_01)*((double)a_1) + ((double)Q_02)*((double)a_2) + ((double)x18);
-        const double x20 = ((double)Q_10)*x14 + ((double)Q_20)*x16 + ((double)x17)*x19;
+        const float x20 = Q_10*x14 + Q_20*x16 + x17*x19;
         const float x21 = Q_11 - 1.0f;
         const float x22 = Q_22 - 1.0f;
-        const float x23 = -(x17) - (x21) - (x22);
-        const double x24 = 1.0/((double)x23);
-        const double x25 = ((double)Q_01)*x19 + ((double)Q_21)*x16 + x14*((double)x21);
+        const double x23 = -(((double)x17)) - (((double)x21)) - (((double)x22));
+        const double x24 = 1.0/x23;
+        const float x25 = Q_01*x19 + Q_21*x16 + x14*x21;
         const float x26 = Q_02*x19 + Q_12*x14 + x16*x22;
-        const double x27 = 1.0/((double)x6);
+        const double x27 = 1.0/x6;
         const float x28 = x2*x27 + x27*x4 + x27*x5;
         const float x29 = 1.0f/sqrtf(x28);
         const float x30 = x29*x9;
@@ -552,7 +552,7 @@ static inline int rigidsym_screw_of_displacement_sample_f32(
         out_p0[0] = x20*x24;
         out_p0[1] = x24*x25;
         out_p0[2] = x24*x26;
-        out_pitch[0] = (x10*(-a_1 - x13) + x11*(-a_2 - x15) + x9*(-a_0 - x18))/x12;
+        out_pitch[0] = (((double)x10)*(-((double)a_1) - ((double)x13)) + ((double)x11)*(-((double)a_2) - ((double)x15)) + ((double)x9)*(-((double)a_0) - ((double)x18)))/x12;
         out_plucker[0] = x30;
         out_plucker[1] = x31;
         out_plucker[2] = x32;
@@ -560,8 +560,8 @@ static inline int rigidsym_screw_of_displacement_sample_f32(
         out_plucker[4] = -x20*x24*x32 + x24*x26*x30;
         out_plucker[5] = x20*x24*x31 - x24*x25*x30;
         singular |= (((double)x28)) == 0.0;
-        singular |= (((double)x6)) == 0.0;
-        singular |= (((double)x23)) == 0.0;
+        singular |= (x6) == 0.0;
+        singular |= (x23) == 0.0;
         singular |= (x12) == 0.0;
         const double finite = ((((x7 - x7) + (x8 - x8)) + ((x24 - x24) + ((x27 - x27) + (x29 - x29)))) + (((out_pitch[0] - out_pitch[0]) + (x6 - x6)) + ((x23 - x23) + ((x28 - x28) + (x12 - x12)))));
         singular |= finite != finite;
