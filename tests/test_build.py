@@ -92,6 +92,8 @@ def test_four_processes_on_an_empty_cache_compile_once(user_dir, tmp_path):
         assert p.returncode == 0, err
     notices = [err.count("rigidsym: compiling") for _, err in outs]
     assert sum(notices) == 1, [err for _, err in outs]
+    for (_, err), n in zip(outs, notices, strict=True):    # the others waited, or loaded
+        assert n or "waiting for it" in err or not err.strip(), err
     infos = [json.loads(out.splitlines()[-1]) for out, _ in outs]
     assert {i["backend"] for i in infos} == {"c"}
     assert {i["origin"] for i in infos} == {"cache"}
@@ -167,7 +169,8 @@ def test_default_build_never_uses_march_native(monkeypatch):
     flags = [f for p in _build.default_paths() for f in p.flags]
     assert "-march=native" not in flags
     if _build._x86():
-        assert [p.name for p in _build.default_paths()] == ["x86-64-v3", "x86-64-v2"]
+        assert [p.name for p in _build.default_paths()] == ["x86-64-v4", "x86-64-v3",
+                                                             "x86-64-v2"]
 
 
 _DISPATCH = """
@@ -235,8 +238,9 @@ def test_build_info_reports_the_path_in_use(backend):
     assert info["path"] in info["paths"] and Path(info["file"]).is_file()
     assert info["origin"] in ("wheel", "editable build", "cache", "cache (native)")
     assert info["sources"] == _build.sources_hash(_ext.generated_dir() / "c")
-    if info["libmvec"] and info["path"] == "x86-64-v3":
-        assert "_ZGVdN4v_sin" in info["libmvec"]
+    variant = {"x86-64-v3": "_ZGVdN4v_sin", "x86-64-v4": "_ZGVeN8v_sin"}
+    if info["libmvec"] and info["path"] in variant:
+        assert variant[info["path"]] in info["libmvec"]
 
 
 # -- item 6: normalising kernels near the overflow threshold (sqrt(DBL_MAX) = 1.34e154) --
@@ -279,3 +283,47 @@ def test_n_tilde_dot_names_phi_at_its_singular_set(backend):
     with pytest.raises(K.SingularConfigurationError, match="phi = 0") as err:
         K.N_tilde_dot(e=[0.0, 0.6, 0.8], phi=0.0, omega=[0.1, 0.2, 0.3])
     assert err.value.argument == "phi"
+
+
+@needs_cc
+def test_native_build_is_used_when_present(user_dir, tmp_path):
+    cache = tmp_path / "cache"
+    p = subprocess.run([sys.executable, "-m", "rigidsym", "build-c", "--native",
+                        str(user_dir)], env=_env(cache), capture_output=True, text=True,
+                       timeout=600)
+    assert p.returncode == 0, p.stderr
+    assert "rigidsym: compiling" in p.stderr and "native" in p.stderr
+    p = _python(_LOAD.format(d=str(user_dir), out=str(tmp_path / "w.npy")), _env(cache),
+                tmp_path)
+    out, err = p.communicate(timeout=600)
+    assert p.returncode == 0, err
+    assert "compiling" not in err
+    assert json.loads(out.splitlines()[-1])["origin"] == "cache (native)"
+    p = subprocess.run([sys.executable, "-m", "rigidsym", "build-c", "--info",
+                        str(user_dir)], env=_env(cache), capture_output=True, text=True,
+                       timeout=600)
+    assert p.returncode == 0, p.stderr
+    info = json.loads(p.stdout)
+    assert info["paths"] == ["native"] and "-march=native" in info["flags"]
+
+
+def test_loading_a_user_directory_never_loads_the_package_kernels(user_dir, tmp_path,
+                                                                    monkeypatch):
+    from rigidsym.kernels import _state
+
+    calls = []
+    real = _ext.load
+
+    def spy(gdir, package=False):
+        calls.append(package)
+        return real(gdir, package)
+    monkeypatch.setenv("RIGIDSYM_CACHE", str(tmp_path / "cache"))
+    monkeypatch.setattr(_ext, "load", spy)
+    monkeypatch.setitem(_state.STATE, "backend", None)
+    monkeypatch.setattr(_state.builtin(), "_clib", None)
+    k = K.load(user_dir)
+    monkeypatch.setattr(k._SPACE, "_clib", None)
+    w = k.rescaled([1.0, 2.0, 3.0], 2.0)
+    np.testing.assert_array_equal(w, [2.0, 4.0, 6.0])
+    assert True not in calls
+    assert calls == [False]

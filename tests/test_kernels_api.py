@@ -106,11 +106,10 @@ def test_swap_blocks():
 
 
 def test_fallback_warns_once(monkeypatch):
-    import rigidsym.kernels._core as core
-
     def boom(*a, **k):
         raise OSError("no compiler")
-    monkeypatch.setattr(core, "_STATE", {"backend": None, "warned": False})
+    monkeypatch.setitem(_state.STATE, "backend", None)
+    monkeypatch.setitem(_state.STATE, "warned", False)
     monkeypatch.setattr(_state.builtin(), "_clib", None)
     monkeypatch.setattr("rigidsym.kernels._ext.load", boom)
     with pytest.warns(RuntimeWarning, match="C backend unavailable"):

@@ -26,14 +26,14 @@ def integrate_part(f, zlo, zhi, a=A_SIDE):
     return sp.radsimp(sp.expand(total))
 
 
-def mass_properties(zlo, zhi):
+def mass_properties(zlo, zhi, a=A_SIDE):
     """Volume V, centroid c, centroidal inertia per unit density I_C / rho (exact)."""
     r = sp.Matrix([x, y, z])
-    V = integrate_part(sp.Integer(1), zlo, zhi)
-    c = sp.Matrix([integrate_part(ri, zlo, zhi) for ri in r]) / V
+    V = integrate_part(sp.Integer(1), zlo, zhi, a)
+    c = sp.Matrix([integrate_part(ri, zlo, zhi, a) for ri in r]) / V
     c = c.applyfunc(lambda e: sp.radsimp(sp.expand(e)))
     I_O = sp.Matrix(3, 3, lambda i, j: integrate_part(
-        (r.dot(r) if i == j else 0) - r[i] * r[j], zlo, zhi))
+        (r.dot(r) if i == j else 0) - r[i] * r[j], zlo, zhi, a))
     I_C = I_O - V * (c.dot(c) * sp.eye(3) - c * c.T)
     return V, c, I_C.applyfunc(lambda e: sp.radsimp(sp.expand(e))), I_O
 
@@ -54,3 +54,32 @@ def principal_yz(I):
         out.append((sp.radsimp(lam), sp.Matrix([0, Iyz, lam - Iyy])))
     alpha = sp.atan(out[1][1][2] / out[1][1][1])
     return out, alpha
+
+
+def hexagon(a) -> list:
+    """The six vertices ``(x, y)`` of the base hexagon (side ``a``, edges at ``y = +-s``)."""
+    s = a * sp.sqrt(3) / 2
+    return [(a, 0), (a / 2, s), (-a / 2, s), (-a, 0), (-a / 2, -s), (a / 2, -s)]
+
+
+def draw_prism(ax, a, h, color: str = "0.55", label: str | None = "prism") -> list:
+    """The prism's edges on 3-D axes; returns its corner points (for the axes limits)."""
+    from ._draw import segment
+
+    hx = hexagon(a)
+    pts = []
+    for k, (px, py) in enumerate(hx):
+        qx, qy = hx[(k + 1) % 6]
+        for zz in (0, h):
+            segment(ax, (px, py, zz), (qx, qy, zz), color=color,
+                    label=label if (k, zz) == (0, 0) else None)
+        segment(ax, (px, py, 0), (px, py, h), color=color)
+        pts += [sp.Matrix([px, py, 0]), sp.Matrix([px, py, h])]
+    return pts
+
+
+def positive_sizes(s, a, h) -> None:
+    """End ``s`` (ill-posed) unless the side and the height are positive."""
+    if not (a > 0 and h > 0):
+        s.fail(f"The side a = {a} and the height h = {h} must both be positive for a "
+               f"prism.")

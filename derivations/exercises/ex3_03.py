@@ -8,6 +8,11 @@ from rigidsym.checking.worked import Solution, identity_check, nonidentity_check
 from rigidsym.declare import scalar, vector
 
 ID = "ex3.3"
+TITLE = "Lines meeting three lines: a ruled quadric"
+STATEMENT = ("\"show that the locus of all lines L intersecting three given lines {L_k} is a "
+             "quadric ... Show, furthermore, that det(M) is nonzero ... and hence, the "
+             "quadric is a one-sheet hyperboloid.\"")
+CITATION = "Angeles, Sec. 3.9, Exercise 3.3"
 
 
 def plane_normal(a, e, p) -> sp.Matrix:
@@ -38,11 +43,7 @@ def solve() -> Solution:
     p = sp.Matrix(sp.symbols("x y z", real=True))
     lines = [(vector(f"a{k}"), vector(f"e{k}")) for k in (1, 2, 3)]
     s = Solution(
-        ID, "Lines meeting three lines: a ruled quadric",
-        "\"show that the locus of all lines L intersecting three given lines {L_k} is a "
-        "quadric ... Show, furthermore, that det(M) is nonzero ... and hence, the quadric is a "
-        "one-sheet hyperboloid.\"",
-        "Angeles, Sec. 3.9, Exercise 3.3",
+        ID, TITLE, STATEMENT, CITATION,
         given={"L_k": "{a_k + lambda e_k}, k = 1, 2, 3, pairwise skew (generic a_k, e_k)"},
         assumptions=["The three lines are pairwise skew (two meeting lines make the locus "
                      "degenerate into planes).",

@@ -4,25 +4,38 @@ from __future__ import annotations
 
 import sympy as sp
 
-from rigidsym.checking.worked import Solution, exact_check, identity_check
+from rigidsym.checking.worked import Param, Solution, exact_check, identity_check, is_zero
 from rigidsym.declare import unit_vector, vector
 
 ID = "ex3.5"
+TITLE = "Joint-axis calibration from Plücker coordinates"
+STATEMENT = ("\"Show that the distance of the axis to the origin ... d = ||n||. Show that the "
+             "point P* on the axis, which lies closest to the above-mentioned origin, has a "
+             "position vector p* = e x n\"")
+CITATION = "Angeles, Sec. 3.9, Exercise 3.5"
+FIGURE_NAME = "axis"
+_h = sp.sqrt(2) / 2
+PARAMETERS = (Param("plucker", sp.ImmutableMatrix([-_h, 0, _h, 0, -sp.sqrt(2), 0]), (6,),
+                    "estimated Plücker coordinates [e; n] of the joint axis in the gripper "
+                    "frame G (e its direction, n its moment about the origin)", "-; m"),)
+VARIANTS = (
+    ("Plücker coordinates not normalised", {"plucker": [0, 0, 2, 2, 0, 0]}),
+    ("not a line, e.n != 0 (ill-posed)", {"plucker": [1, 0, 0, 1, 0, 0]}),
+)
 
 
-def solve() -> Solution:
-    """Worked solution of Exercise 3.5."""
+def solve(plucker=PARAMETERS[0].default) -> Solution:
+    """Worked solution of Exercise 3.5 (``plucker``: the 6 Plücker coordinates [e; n])."""
     e = unit_vector("ex35_e")
     p = vector("p")
+    data = sp.Matrix(plucker)
     s = Solution(
-        ID, "Joint-axis calibration from Plücker coordinates",
-        "\"Show that the distance of the axis to the origin ... d = ||n||. Show that the point "
-        "P* on the axis, which lies closest to the above-mentioned origin, has a position "
-        "vector p* = e x n\"",
-        "Angeles, Sec. 3.9, Exercise 3.5",
+        ID, TITLE, STATEMENT, CITATION,
         given={"line": "through a point p, unit direction e; n = p x e (Plücker moment)",
-               "[pi_L]_G": "[-sqrt(2)/2, 0, sqrt(2)/2, 0, -sqrt(2), 0]^T"},
-        assumptions=["e is a unit vector (normalised Plücker coordinates), as the data have."])
+               "[pi_L]_G": data},
+        assumptions=["e is a unit vector (normalised Plücker coordinates), as the book's "
+                     "data have; other data are normalised first (Plücker coordinates are "
+                     "homogeneous)."])
     n = s.step("moment", p.cross(e), "Moment of the line about the origin, Sec. 3.3.")
     ps = s.step("candidate", e.cross(n), "p* = e x n = e x (p x e) = p - (e.p) e.")
     s.step("on the line", ps.cross(e) - n,
@@ -30,8 +43,18 @@ def solve() -> Solution:
     s.step("closest", ps.dot(e),
            "p*.e = 0: O - p* is normal to the line, so p* is the foot of the perpendicular.")
     s.step("distance", ps.dot(ps) - n.dot(n), "||p*|| = ||e x n|| = ||n|| since e is normal to n.")
-    ec = sp.Matrix([-sp.sqrt(2) / 2, 0, sp.sqrt(2) / 2])
-    nc = sp.Matrix([0, -sp.sqrt(2), 0])
+    ec, nc = data[:3, :], data[3:, :]
+    if is_zero(ec):
+        s.fail("The direction part e of the data is zero, so they are not the Plücker "
+               "coordinates of a line.")
+    if not is_zero(ec.dot(nc)):
+        s.fail(f"e.n = {sp.radsimp(ec.dot(nc))} is not zero, so the data are not the Plücker "
+               f"coordinates of a line (the moment of a line is normal to it).")
+    if not is_zero(ec.dot(ec) - 1):
+        k = sp.sqrt(ec.dot(ec))
+        ec, nc = (ec / k).applyfunc(sp.radsimp), (nc / k).applyfunc(sp.radsimp)
+        s.step("(c) normalised", sp.Matrix.vstack(ec, nc),
+               "Divide [e; n] by ||e|| (homogeneous coordinates of the same line).")
     d = s.step("(c) d", sp.sqrt(nc.dot(nc)), "d = ||n||.")
     pstar = s.step("(c) p*", ec.cross(nc), "p* = e x n.")
     s.answers = {"d": d, "p_star": pstar}
@@ -39,11 +62,33 @@ def solve() -> Solution:
                            [ps.cross(e) - n, ps.dot(e), ps.dot(ps) - n.dot(n)]))
     # independent check of (c): minimise ||x||^2 over x = p* + lambda e, compare
     lam = sp.Symbol("lambda", real=True)
-    s.check(exact_check("(c) data: ||e|| = 1, e.n = 0; p* x e = n, p*.e = 0, ||p*|| = d",
-                        [ec.dot(ec) - 1, ec.dot(nc), pstar.cross(ec) - nc, pstar.dot(ec),
+    s.check(exact_check("(c) data: ||e|| = 1, e.n = 0; p* x e = n (also for the data as "
+                        "given), p*.e = 0, ||p*|| = d",
+                        [ec.dot(ec) - 1, ec.dot(nc), pstar.cross(ec) - nc,
+                         pstar.cross(data[:3, :]) - data[3:, :], pstar.dot(ec),
                          pstar.dot(pstar) - d**2]))
     x = pstar + lam * ec
     lam_min = sp.solve(sp.diff(x.dot(x), lam), lam)
     s.check(exact_check("(c) minimising ||p* + lambda e||^2 gives lambda = 0",
                         [lam_min[0]]))
     return s
+
+
+def figure(s: Solution):
+    """The joint axis, the gripper origin O and the closest point P* (distance d)."""
+    from ._draw import arrow, axes3d, frame, line_in_box, new_figure, point, segment
+
+    pstar, d = s.answers["p_star"], s.answers["d"]
+    data = s.given["[pi_L]_G"]
+    e = data[:3, :] / sp.sqrt(data[:3, :].dot(data[:3, :]))
+    fig, ax = new_figure("Exercise 3.5: the joint axis and its point closest to O")
+    size = float(sp.N(d)) + 1
+    frame(ax, sp.zeros(3, 1), sp.eye(3) * size / 2, "G", "0.4")
+    pts = [sp.zeros(3, 1), pstar + size * e, pstar - size * e, sp.ones(3, 1) * size / 2]
+    line_in_box(ax, pstar, e, pts, "tab:blue", "axis L")
+    arrow(ax, pstar, e, "tab:blue", "e")
+    point(ax, pstar, "tab:red", "P* = e x n", "P*")
+    segment(ax, sp.zeros(3, 1), pstar, color="tab:red", linestyle="--",
+            label=f"d = ||n|| = {float(sp.N(d)):.4g} m")
+    axes3d(ax, pts)
+    return fig

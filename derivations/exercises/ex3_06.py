@@ -4,25 +4,38 @@ from __future__ import annotations
 
 import sympy as sp
 
-from rigidsym.checking.worked import Solution, exact_check
+from rigidsym.checking.worked import Param, Solution, exact_check, is_zero
 
 from ._screw import screw_of_displacement
 
 ID = "ex3.6"
+TITLE = "Gripper grasping a truncated cube"
+STATEMENT = ("\"Compute the angle of rotation of the motion undergone by G ... and find the "
+             "unit vector parallel to the axis of rotation ... Determine the set of points of "
+             "G undergoing a displacement of minimum magnitude\"")
+CITATION = "Angeles, Sec. 3.9, Exercise 3.6"
+FIGURE_NAME = "grasp"
+_V = sp.ImmutableMatrix
+PARAMETERS = (
+    Param("face_normal", _V([1, 1, 1]), (3,), "normal of the triangular faces DEF, D'E'F' "
+          "(the finger planes), in F", ""),
+    Param("CC_prime", _V([-1, 1, 1]), (3,), "the diagonal from C to C' of the workpiece", "m"),
+    Param("C_prime", _V([0, 1, 1]), (3,), "vertex C', where P is carried", "m"),
+    Param("p", _V([2, -1, sp.Rational(1, 4)]), (3,), "point P of the gripper in the "
+          "reference pose, in F", "m"),
+)
+VARIANTS = (
+    ("P at the origin of F", {"p": [0, 0, 0]}),
+    ("a diagonal normal to the faces (ill-posed)", {"CC_prime": [1, 1, 1]}),
+)
 
 
-def solve() -> Solution:
-    """Worked solution of Exercise 3.6."""
-    d_faces = sp.Matrix([1, 1, 1])          # normal of the triangular faces DEF, D'E'F'
-    CCp = sp.Matrix([-1, 1, 1])             # diagonal C -> C'
-    Cp = sp.Matrix([0, 1, 1])
-    p = sp.Matrix([2, -1, sp.Rational(1, 4)])
+def solve(face_normal=PARAMETERS[0].default, CC_prime=PARAMETERS[1].default,
+          C_prime=PARAMETERS[2].default, p=PARAMETERS[3].default) -> Solution:
+    """Worked solution of Exercise 3.6 (vectors in F, lengths in metres)."""
+    d_faces, CCp, Cp, p = (sp.Matrix(v) for v in (face_normal, CC_prime, C_prime, p))
     s = Solution(
-        ID, "Gripper grasping a truncated cube",
-        "\"Compute the angle of rotation of the motion undergone by G ... and find the unit "
-        "vector parallel to the axis of rotation ... Determine the set of points of G "
-        "undergoing a displacement of minimum magnitude\"",
-        "Angeles, Sec. 3.9, Exercise 3.6",
+        ID, TITLE, STATEMENT, CITATION,
         given={"face normal": d_faces, "diagonal CC'": CCp, "C'": Cp, "[p]_F": p},
         assumptions=["Fig. 3.11 is not in the text we have. Assumed: unit cube [0, 1]^3 in F; "
                      "the removed vertices are O and (1, 1, 1), so the faces DEF, D'E'F' are "
@@ -30,16 +43,31 @@ def solve() -> Solution:
                      "Grasp: X'' normal to the finger planes (= faces), i'' with positive "
                      "components; j'' normal to i'' and to CC' with positive Z component; "
                      "k'' = i'' x j''. The method applies to any other reading of the figure."])
-    i2 = s.step("i''", d_faces / d_faces.norm(), "Normal to the faces, all components positive.")
+    signs = {sp.sign(x) for x in d_faces}
+    if signs not in ({1}, {-1}):
+        s.fail("The face normal has a zero component or components of both signs, so no "
+               "normal i'' has all three components positive, as the grasp requires.")
+    i2 = s.step("i''", (d_faces / d_faces.norm() * signs.pop()).applyfunc(sp.radsimp),
+                "Normal to the faces, all components positive.")
     j = i2.cross(CCp)
-    j2 = j / j.norm()
+    if is_zero(j):
+        s.fail("The diagonal CC' is normal to the faces (parallel to i''), so j'', normal "
+               "to both, is not fixed.")
+    j2 = (j / j.norm()).applyfunc(sp.radsimp)
+    if is_zero(j2[2]):
+        s.fail("j'' has a zero Z component, so the grasp's rule (Z component positive) does "
+               "not fix its sense.")
     if j2[2] < 0:
         j2 = -j2
     j2 = s.step("j''", j2, "Normal to i'' and to CC', Z component positive.")
     k2 = s.step("k''", i2.cross(j2).applyfunc(sp.radsimp), "Right-handed frame.")
     Q = s.step("rotation", sp.Matrix.hstack(i2, j2, k2),
                "F' starts parallel to F, so Q's columns are i'', j'', k'' in F.")
-    phi, e, p0, pl = screw_of_displacement(Q, p, Cp)
+    screw = screw_of_displacement(Q, p, Cp)
+    if screw is None:
+        s.fail("The gripper does not turn (Q = 1): the motion is a translation and no screw "
+               "axis is singled out.")
+    phi, e, p0, pl = screw
     s.step("(a) angle", phi, "cos(phi) = (tr Q - 1)/2.")
     s.step("(a) axis", e, "e = vect(Q)/sin(phi).")
     s.step("(b) point of the screw axis", p0,
@@ -54,3 +82,36 @@ def solve() -> Solution:
     s.check(exact_check("axis points move along e by the minimum |e.c|",
                         [((Q - sp.eye(3)) * x + c).cross(e) for x in (p0, p0 + e)]))
     return s
+
+
+def figure(s: Solution):
+    """The truncated unit cube, the grasp frame F'' at C', P before and after, and the
+    screw axis (the points of G with a displacement of minimum magnitude)."""
+    import itertools
+
+    from ._draw import axes3d, frame, line_in_box, new_figure, point, segment
+
+    t = sp.Rational(1, 3)   # depth of the corner cuts, for drawing only
+    corners = [sp.Matrix(c) for c in itertools.product((0, 1), repeat=3)]
+    cut = {(0, 0, 0), (1, 1, 1)}
+    fig, ax = new_figure("Exercise 3.6: the grasp of the truncated cube and the screw axis")
+    for a, b in itertools.combinations(corners, 2):
+        if sum(abs(x - y) for x, y in zip(a, b, strict=True)) != 1:
+            continue
+        a2 = a + t * (b - a) if tuple(a) in cut else a
+        b2 = b + t * (a - b) if tuple(b) in cut else b
+        segment(ax, a2, b2, color="0.5")
+    for c in cut:
+        c = sp.Matrix(c)
+        tri = [c + t * (sp.Matrix(n) - c) for n in corners
+               if sum(abs(x - y) for x, y in zip(c, n, strict=True)) == 1]
+        for a, b in itertools.combinations(tri, 2):
+            segment(ax, a, b, color="tab:olive")
+    Cp, p = s.given["C'"], s.given["[p]_F"]
+    frame(ax, Cp, s.answers["Q"] * sp.Rational(1, 2), "G''", "tab:purple")
+    point(ax, p, "tab:blue", "P (reference pose)", "P")
+    point(ax, Cp, "tab:purple", "P after the grasp (= C')", "C'")
+    pts = corners + [p, Cp, s.answers["axis_point_p0"]]
+    line_in_box(ax, s.answers["axis_point_p0"], s.answers["e"], pts, "tab:red", "screw axis")
+    axes3d(ax, pts)
+    return fig

@@ -10,6 +10,11 @@ from rigidsym.checking.worked import Solution, identity_check, truth_check
 from rigidsym.declare import cpm, scalar, vector
 
 ID = "ex3.8"
+TITLE = "Even and odd powers of the cross-product matrix"
+STATEMENT = ("\"Prove that for any three-dimensional vectors omega and p, [2k factors] = (-1)^k "
+             "(||omega||^(2k) 1 - ||omega||^(2(k-1)) omega omega^T) p, [2k+1 factors] = (-1)^k "
+             "(||omega||^(2k) omega) x p\"")
+CITATION = "Angeles, Sec. 3.9, Exercise 3.8"
 
 
 def solve() -> Solution:
@@ -18,11 +23,7 @@ def solve() -> Solution:
     p = vector("p")
     sigma, P = scalar("sigma"), scalar("P")  # (-1)^k and ||w||^(2(k-1))
     s = Solution(
-        ID, "Even and odd powers of the cross-product matrix",
-        "\"Prove that for any three-dimensional vectors omega and p, [2k factors] = (-1)^k "
-        "(||omega||^(2k) 1 - ||omega||^(2(k-1)) omega omega^T) p, [2k+1 factors] = (-1)^k "
-        "(||omega||^(2k) omega) x p\"",
-        "Angeles, Sec. 3.9, Exercise 3.8",
+        ID, TITLE, STATEMENT, CITATION,
         given={"omega": w, "p": p},
         assumptions=["k >= 1 (for k = 0 the even formula has ||omega||^(-2) omega omega^T "
                      "and fails unless omega omega^T p = 0; the odd one holds for k = 0)."])

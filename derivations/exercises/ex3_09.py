@@ -8,6 +8,11 @@ from rigidsym.checking.worked import Solution, identity_check, nonidentity_check
 from rigidsym.declare import TIME, rotation_from_natural_invariants, scalar, unit_vector, vect
 
 ID = "ex3.9"
+TITLE = "Small rotations"
+STATEMENT = ("\"Prove that the angular-velocity vector, in the special case of 'small' rotations, "
+             "turns out to be a time-derivative. What is the vector whose time-derivative yields "
+             "the angular-velocity vector?\"")
+CITATION = "Angeles, Sec. 3.9, Exercise 3.9"
 
 
 def solve() -> Solution:
@@ -16,11 +21,7 @@ def solve() -> Solution:
     phi = scalar("phi", t=TIME)
     eps = sp.Symbol("epsilon", real=True)
     s = Solution(
-        ID, "Small rotations",
-        "\"Prove that the angular-velocity vector, in the special case of 'small' rotations, "
-        "turns out to be a time-derivative. What is the vector whose time-derivative yields "
-        "the angular-velocity vector?\"",
-        "Angeles, Sec. 3.9, Exercise 3.9",
+        ID, TITLE, STATEMENT, CITATION,
         given={"Q(t)": "rotation about e(t) through phi(t) (Eq. 2.49)"},
         assumptions=["'Small' means first order in phi: phi is replaced by epsilon*phi and "
                      "omega is expanded to first order in epsilon (phi_dot is of the same "

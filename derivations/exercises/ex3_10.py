@@ -8,15 +8,28 @@ from __future__ import annotations
 
 import sympy as sp
 
-from rigidsym.checking.worked import Solution, identity_check
+from rigidsym.checking.worked import Param, Solution, identity_check, truth_check
 from rigidsym.declare import TIME, angle, cpm, rotation_from_natural_invariants, vect
 
 ID = "ex3.10"
+TITLE = "Euler-angle rates and the angular velocity"
+STATEMENT = ("\"find the matrix W such that omega = W eta_dot ... Find under which conditions "
+             "W becomes singular.\"")
+CITATION = "Angeles, Fundamentals of Robotic Mechanical Systems, Sec. 3.9, Exercise 3.10"
+FIGURE_NAME = "condition"
 PROPER_EULER = ["ZXZ", "XYX", "YZY", "ZYZ", "XZX", "YXY"]
 TAIT_BRYAN = ["XYZ", "YZX", "ZXY", "XZY", "ZYX", "YXZ"]
 SEQUENCES = PROPER_EULER + TAIT_BRYAN
 #: the sequence taken for the book's Exercise 2.19 (see ``solve``'s assumptions).
 BOOK_SEQUENCE = "ZXZ"
+PARAMETERS = (Param("sequence", BOOK_SEQUENCE, None, "the intrinsic Euler-angle sequence "
+                    "whose W is derived step by step (all twelve are tabulated)",
+                    choices=tuple(SEQUENCES)),)
+VARIANTS = (
+    ("a Tait-Bryan sequence (roll, pitch, yaw)", {"sequence": "XYZ"}),
+)
+DATA_NOTE = ("the Euler-angle convention; the angles themselves stay symbolic (theta, phi, "
+             "psi)")
 
 theta, phi, psi = sp.symbols("theta phi psi", real=True)
 ETA = sp.Matrix([theta, phi, psi])
@@ -72,48 +85,50 @@ def table() -> list[tuple]:
     return rows
 
 
-def condition_figure(out_dir, write_figure) -> str:
-    """Plot cond(W) against the middle angle for both classes; return a Markdown note.
+def condition_curve(seq: str, xs) -> list[float]:
+    """cond_2(W) of ``seq`` at the middle angles ``xs`` (capped at 1e4 near the singular set)."""
+    import numpy as np
+    f = sp.lambdify((theta, phi, psi), euler_rate_matrix(seq), "numpy")
+    out = []
+    for x in xs:
+        try:
+            out.append(min(float(np.linalg.cond(np.array(f(0.3, float(x), -0.7),
+                                                          dtype=float))), 1e4))
+        except np.linalg.LinAlgError:
+            out.append(1e4)
+    return out
 
-    ``write_figure(fig, path)`` saves the figure (SVG) at ``path``.
-    """
-    try:
-        import matplotlib
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-        import numpy as np
-    except ImportError:
-        return ("*Figure of cond(W) for Exercise 3.10 skipped: matplotlib is not installed "
-                "(`pip install rigidsym[figures]`).*")
+
+def figure(s: Solution):
+    """cond_2(W) against the middle angle: the solution's sequence and a sequence of the
+    other class (the conditioning is the same within each class)."""
+    import numpy as np
+    from matplotlib.figure import Figure
+
+    seq = s.given["sequence"]
+    other = "XYZ" if seq in PROPER_EULER else "ZXZ"
     xs = np.linspace(-np.pi, np.pi, 721)
-    fig, ax = plt.subplots(figsize=(7, 4))
-    for seq, label in (("ZXZ", "proper Euler (all six)"), ("XYZ", "Tait-Bryan (all six)")):
-        ys = []
-        for x in xs:
-            try:
-                ys.append(min(condition_number(seq, float(x)), 1e4))
-            except np.linalg.LinAlgError:
-                ys.append(1e4)
-        ax.semilogy(xs, ys, label=label)
+    fig = Figure(figsize=(7, 4))
+    ax = fig.add_subplot()
+    for q in (seq, other):
+        cls = "proper Euler" if q in PROPER_EULER else "Tait-Bryan"
+        label = (f"{q} ({cls}, this solution)" if q == seq
+                 else f"{q} ({cls}: all six alike)")
+        ax.semilogy(xs, condition_curve(q, xs), label=label)
     ax.set_xlabel("middle angle phi [rad]")
     ax.set_ylabel("cond_2(W)")
     ax.set_title("Exercise 3.10: conditioning of the Euler-angle rate matrix W")
     ax.legend()
     ax.grid(True, which="both", alpha=0.3)
-    path = out_dir / "ex3_10_condition.svg"
-    write_figure(fig, path)
-    plt.close(fig)
-    return "![cond(W) against the middle angle](ex3_10_condition.svg)"
+    return fig
 
 
-def solve() -> Solution:
-    """Worked solution of Exercise 3.10."""
+def solve(sequence: str = BOOK_SEQUENCE) -> Solution:
+    """Worked solution of Exercise 3.10, step by step for ``sequence`` (e.g. ``"ZXZ"``)."""
+    seq = sequence
     s = Solution(
-        ID, "Euler-angle rates and the angular velocity",
-        "\"find the matrix W such that omega = W eta_dot ... Find under which conditions W "
-        "becomes singular.\"",
-        "Angeles, Fundamentals of Robotic Mechanical Systems, Sec. 3.9, Exercise 3.10",
-        given={"eta": ETA, "sequences": ", ".join(SEQUENCES)},
+        ID, TITLE, STATEMENT, CITATION,
+        given={"eta": ETA, "sequence": seq, "sequences": ", ".join(SEQUENCES)},
         assumptions=[
             "Exercise 2.19 is not in the text we have: its Euler angles are taken as the "
             "intrinsic Z-X-Z sequence Q = R_Z(theta) R_X(phi) R_Z(psi), the classical "
@@ -122,16 +137,18 @@ def solve() -> Solution:
             "Intrinsic rotations: each about an axis of the frame moved by the previous ones.",
             "omega in fixed-frame components unless labelled body frame (omega_B = Q^T omega).",
         ])
-    Rz1 = s.step("first rotation", axis_rotation("Z", theta), "theta about Z.")
-    s.step("Q for Z-X-Z", euler_rotation(BOOK_SEQUENCE),
-           "Intrinsic rotations compose by post-multiplication: Q = R_Z(theta) R_X(phi) R_Z(psi).")
-    s.step("rate contributions", sp.Matrix.hstack(_AXES["Z"], Rz1 * _AXES["X"],
-                                                  Rz1 * axis_rotation("X", phi) * _AXES["Z"]),
-           "Angular velocities add: theta_dot about Z, phi_dot about the once-moved X, psi_dot "
-           "about the twice-moved Z; these directions are the columns of W.")
-    W = s.step("W (fixed frame)", euler_rate_matrix(BOOK_SEQUENCE),
+    a, b, c = seq
+    Ra = s.step("first rotation", axis_rotation(a, theta), f"theta about {a}.")
+    s.step(f"Q for {a}-{b}-{c}", euler_rotation(seq),
+           f"Intrinsic rotations compose by post-multiplication: Q = R_{a}(theta) R_{b}(phi) "
+           f"R_{c}(psi).")
+    s.step("rate contributions", sp.Matrix.hstack(_AXES[a], Ra * _AXES[b],
+                                                  Ra * axis_rotation(b, phi) * _AXES[c]),
+           f"Angular velocities add: theta_dot about {a}, phi_dot about the once-moved {b}, "
+           f"psi_dot about the twice-moved {c}; these directions are the columns of W.")
+    W = s.step("W (fixed frame)", euler_rate_matrix(seq),
                "omega = W eta_dot with the columns above.")
-    Wb = s.step("W_B (body frame)", euler_rate_matrix(BOOK_SEQUENCE, "body"),
+    Wb = s.step("W_B (body frame)", euler_rate_matrix(seq, "body"),
                 "omega_B = Q^T omega, so W_B = Q^T W.")
     d = s.step("det W", sp.trigsimp(W.det()), "Expanded and simplified by sympy.")
     sing = s.step("singular set", singular_set(d),
@@ -142,10 +159,10 @@ def solve() -> Solution:
     rows = table()
     s.answers = {"W": W, "W_body": Wb, "det_W": d, "singular_phi": sing,
                  "W_inverse": Winv}
-    for seq, _cls, df, db, ss in rows:
-        s.answers[f"det_W_{seq}"] = df
-        s.answers[f"det_W_body_{seq}"] = db
-        s.answers[f"singular_{seq}"] = ss
+    for q, _cls, df, db, ss in rows:
+        s.answers[f"det_W_{q}"] = df
+        s.answers[f"det_W_body_{q}"] = db
+        s.answers[f"singular_{q}"] = ss
     lines = ["| sequence | class | det W (fixed) | det W (body) | singular phi in [-pi, pi) |",
              "|---|---|---|---|---|"]
     lines += [f"| {q} | {c} | `{df}` | `{db}` | `{ss}` |" for q, c, df, db, ss in rows]
@@ -153,27 +170,26 @@ def solve() -> Solution:
     # Machine checks: differentiate Q(t) directly, omega = vect(Q_dot Q^T), for every sequence.
     at = [angle(f"ex310_{n}", t=TIME) for n in ("theta", "phi", "psi")]
     rate = sp.Matrix([sp.diff(x, TIME) for x in at])
-    for seq in SEQUENCES:
-        Q = euler_rotation(seq, at)
+    for q in SEQUENCES:
+        Q = euler_rotation(q, at)
         Qd = Q.diff(TIME)
         Omega = Qd * Q.T
         sub = dict(zip((theta, phi, psi), at, strict=True))
-        wf = euler_rate_matrix(seq).subs(sub) * rate
-        wb = euler_rate_matrix(seq, "body").subs(sub) * rate
-        s.check(identity_check(f"{seq}: vect(Q_dot Q^T) = W eta_dot, Omega = cpm(omega)",
+        wf = euler_rate_matrix(q).subs(sub) * rate
+        wb = euler_rate_matrix(q, "body").subs(sub) * rate
+        s.check(identity_check(f"{q}: vect(Q_dot Q^T) = W eta_dot, Omega = cpm(omega)",
                                [vect(Omega) - wf, Omega - cpm(wf)]))
-        s.check(identity_check(f"{seq}: Q^T Q_dot = cpm(W_B eta_dot)",
+        s.check(identity_check(f"{q}: Q^T Q_dot = cpm(W_B eta_dot)",
                                [Q.T * Qd - cpm(wb)]))
-    s.check(identity_check("Z-X-Z: W W^-1 = 1 (off the singular set)",
+    s.check(identity_check(f"{a}-{b}-{c}: W W^-1 = 1 (off the singular set)",
                            [(W * Winv - sp.eye(3)).subs(
                                {theta: at[0], phi: at[1], psi: at[2]})]))
     # singular set: det vanishes at each reported point, and rank drops to 2 there
     ok = True
-    for seq, _c, df, _db, ss in rows:
+    for q, _c, df, _db, ss in rows:
         for p in ss:
-            ok &= df.subs(phi, p) == 0 and euler_rate_matrix(seq).subs(phi, p).rank() == 2
+            ok &= df.subs(phi, p) == 0 and euler_rate_matrix(q).subs(phi, p).rank() == 2
         ok &= len(ss) == 2
-    from rigidsym.checking.worked import truth_check
     s.check(truth_check("every singular point found zeroes det W and drops rank W to 2",
                         ok, "two points per sequence in [-pi, pi)"))
     return s

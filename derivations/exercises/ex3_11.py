@@ -4,28 +4,35 @@ from __future__ import annotations
 
 import sympy as sp
 
-from rigidsym.checking.worked import Solution, exact_check
+from rigidsym.checking.worked import Param, Solution, exact_check
 
-from ._prism import A_SIDE, HEIGHT, mass_properties
+from ._prism import A_SIDE, HEIGHT, mass_properties, positive_sizes
 
 ID = "ex3.11"
+TITLE = "Hexagonal prism: centroid and principal inertia"
+STATEMENT = ("\"A rectangular prism with regular hexagonal bases whose sides are 25 mm long "
+             "and whose height is 150 mm ... Find the centroidal principal axes and moments "
+             "of inertia\"")
+CITATION = "Angeles, Sec. 3.9, Exercise 3.11"
+FIGURE_NAME = "prism"
+PARAMETERS = (Param("a", A_SIDE, (), "side of the regular hexagonal bases", "m"),
+              Param("h", HEIGHT, (), "height of the prism", "m"))
+VARIANTS = (
+    ("a flat hexagonal plate", {"a": "0.05", "h": "0.01"}),
+)
 
 
-def solve() -> Solution:
-    """Worked solution of Exercise 3.11."""
-    a, h = A_SIDE, HEIGHT
+def solve(a=A_SIDE, h=HEIGHT) -> Solution:
+    """Worked solution of Exercise 3.11 (side ``a`` and height ``h`` in metres)."""
     s = Solution(
-        ID, "Hexagonal prism: centroid and principal inertia",
-        "\"A rectangular prism with regular hexagonal bases whose sides are 25 mm long and "
-        "whose height is 150 mm ... Find the centroidal principal axes and moments of "
-        "inertia\"",
-        "Angeles, Sec. 3.9, Exercise 3.11",
+        ID, TITLE, STATEMENT, CITATION,
         given={"a (m)": a, "h (m)": h,
                "region": "hexagon centred at O in the x-y plane, 0 <= z <= h; two edges at "
                          "y = +-a sqrt(3)/2"},
         assumptions=["Homogeneous density rho; results per unit density (m^5) and per kg "
                      "of mass (m^2)."])
-    V, c, I_C, _ = mass_properties(0, h)
+    positive_sizes(s, a, h)
+    V, c, I_C, _ = mass_properties(0, h, a)
     s.step("volume", V, "Exact iterated integral of 1 over the prism.")
     s.step("centroid", c, "First moments / V: on the axis, at mid-height.")
     s.step("centroidal inertia per unit density", I_C,
@@ -49,3 +56,25 @@ def solve() -> Solution:
                         [I_C * sp.Matrix([0, 0, 1]) - I_C[2, 2] * sp.Matrix([0, 0, 1]),
                          I_C * sp.Matrix([1, 0, 0]) - I_C[0, 0] * sp.Matrix([1, 0, 0])]))
     return s
+
+
+def figure(s: Solution):
+    """The prism, its centroid and its centroidal principal axes (labelled with the
+    principal moments per kg)."""
+    from ._draw import arrow, axes3d, new_figure, point
+    from ._prism import draw_prism
+
+    a, h = s.given["a (m)"], s.given["h (m)"]
+    c, mom = s.answers["centroid_m"], s.answers["principal_moments_per_kg_m2"]
+    fig, ax = new_figure("Exercise 3.11: hexagonal prism, centroid and principal axes")
+    pts = draw_prism(ax, a, h)
+    size = max(a, h) / 3
+    colours = ("tab:red", "tab:green", "tab:blue")
+    for k, name in enumerate("xyz"):
+        axis = sp.zeros(3, 1)
+        axis[k] = size
+        arrow(ax, c, axis, colours[k], f"principal axis {name}: I/m = "
+              f"{float(sp.N(mom[k])):.3g} m^2")
+    point(ax, c, "k", "centroid C", "C")
+    axes3d(ax, pts)
+    return fig

@@ -4,15 +4,29 @@ from __future__ import annotations
 
 import sympy as sp
 
-from rigidsym.checking.worked import Solution, exact_check
+from rigidsym.checking.worked import Param, Solution, exact_check
 
-from ._prism import A_SIDE, HEIGHT, S, mass_properties, principal_yz, y
+from ._prism import A_SIDE, HEIGHT, mass_properties, positive_sizes, principal_yz, y
 
 ID = "ex3.12"
+TITLE = "Prism cut at 45 degrees: two parts"
+STATEMENT = ("\"cutting it into two parts, which are separated by a plane that contains one of "
+             "the edges of the base and makes an angle of 45 deg with the axis of the prism. "
+             "Find the centroidal principal axes and moments of inertia of each of the two "
+             "parts.\"")
+CITATION = "Angeles, Sec. 3.9, Exercise 3.12"
+FIGURE_NAME = "cut"
+PARAMETERS = (Param("a", A_SIDE, (), "side of the regular hexagonal bases", "m"),
+              Param("h", HEIGHT, (), "height of the prism (at least a sqrt(3), so that the "
+                    "cut leaves through a side face)", "m"))
+VARIANTS = (
+    ("a wider prism", {"a": "0.05", "h": "0.15"}),
+    ("a prism too short for the cut (ill-posed)", {"h": "0.04"}),
+)
 
 
-def _part(s: Solution, name: str, zlo, zhi):
-    V, c, I_C, I_O = mass_properties(zlo, zhi)
+def _part(s: Solution, name: str, zlo, zhi, a):
+    V, c, I_C, I_O = mass_properties(zlo, zhi, a)
     s.step(f"{name}: volume", V, "Exact iterated integral over the part.")
     s.step(f"{name}: centroid", c, "First moments / V (x = 0 by symmetry in the plane x = 0).")
     s.step(f"{name}: I_C per unit density", I_C,
@@ -26,25 +40,26 @@ def _part(s: Solution, name: str, zlo, zhi):
     return V, c, I_C, I_O, pr, alpha
 
 
-def solve() -> Solution:
-    """Worked solution of Exercise 3.12."""
-    h = HEIGHT
+def solve(a=A_SIDE, h=HEIGHT) -> Solution:
+    """Worked solution of Exercise 3.12 (side ``a`` and height ``h`` in metres)."""
+    S = a * sp.sqrt(3) / 2
     s = Solution(
-        ID, "Prism cut at 45 degrees: two parts",
-        "\"cutting it into two parts, which are separated by a plane that contains one of the "
-        "edges of the base and makes an angle of 45 deg with the axis of the prism. Find the "
-        "centroidal principal axes and moments of inertia of each of the two parts.\"",
-        "Angeles, Sec. 3.9, Exercise 3.12",
+        ID, TITLE, STATEMENT, CITATION,
         given={"cut plane": "z = y + a sqrt(3)/2 (contains the base edge y = -a sqrt(3)/2, "
                             "z = 0; normal [0, -1, 1]/sqrt(2), at 45 deg to the Z axis)",
-               "a (m)": A_SIDE, "h (m)": h},
+               "a (m)": a, "h (m)": h},
         assumptions=["Same frame as Exercise 3.11 (hexagon centred at O, 0 <= z <= h). The "
-                     "plane reaches z = a sqrt(3) = 43.3 mm < h, so it cuts off a wedge "
-                     "(lower part) and leaves the upper part.",
+                     "plane reaches z = a sqrt(3) (43.3 mm for the book's a) <= h, so it cuts "
+                     "off a wedge (lower part) and leaves the upper part.",
                      "Results per unit density (m^5) and per kg of the part (m^2)."])
-    lower = _part(s, "wedge", 0, y + S)
-    upper = _part(s, "upper part", y + S, h)
-    I_full = mass_properties(0, h)[3]
+    positive_sizes(s, a, h)
+    if 2 * S > h:
+        s.fail(f"The cut plane reaches z = a sqrt(3) = {float(2 * S):.4g} m above the base, "
+               f"higher than h = {float(h):.4g} m, so it leaves through the top face and the "
+               f"parts are not a wedge and a remainder as solved here.")
+    lower = _part(s, "wedge", 0, y + S, a)
+    upper = _part(s, "upper part", y + S, h, a)
+    I_full = mass_properties(0, h, a)[3]
     for tag, (V, c, I_C, _, pr, alpha) in (("wedge", lower), ("upper", upper)):
         s.answers[f"{tag}_volume_m3"] = V
         s.answers[f"{tag}_centroid_m"] = c
@@ -53,7 +68,7 @@ def solve() -> Solution:
         s.answers[f"{tag}_principal_moments_per_kg_m2"] = sp.Matrix([p[0] / V for p in pr])
         s.answers[f"{tag}_principal_axes"] = sp.Matrix.hstack(*[p[1] for p in pr])
         s.answers[f"{tag}_axis_angle_from_y_rad"] = alpha
-    A = 3 * sp.sqrt(3) / 2 * A_SIDE**2
+    A = 3 * sp.sqrt(3) / 2 * a**2
     s.check(exact_check("wedge volume = apothem x hexagon area (Cavalieri), volumes add to "
                         "the prism's", [lower[0] - S * A, lower[0] + upper[0] - A * h]))
     s.check(exact_check("inertia about O is additive: wedge + upper = whole prism",
@@ -62,3 +77,29 @@ def solve() -> Solution:
         s.check(exact_check(f"{tag}: I_C v = lambda v for the three principal pairs",
                             [I_C * v - lam * v for lam, v in pr]))
     return s
+
+
+def figure(s: Solution):
+    """The prism, the 45-degree cut plane, and each part's centroid with its principal
+    axes (drawn from the answers)."""
+    from ._draw import arrow, axes3d, new_figure, point, segment
+    from ._prism import draw_prism, hexagon
+
+    a, h = s.given["a (m)"], s.given["h (m)"]
+    S = a * sp.sqrt(3) / 2
+    fig, ax = new_figure("Exercise 3.12: the prism cut at 45 degrees, two parts")
+    pts = draw_prism(ax, a, h)
+    hx = hexagon(a)
+    for k, (px, py) in enumerate(hx):     # the cut: z = y + S on the side faces
+        qx, qy = hx[(k + 1) % 6]
+        segment(ax, (px, py, py + S), (qx, qy, qy + S), color="tab:orange",
+                label="cut plane" if k == 0 else None)
+    size = max(a, h) / 4
+    for tag, colour in (("wedge", "tab:red"), ("upper", "tab:blue")):
+        c, axes = s.answers[f"{tag}_centroid_m"], s.answers[f"{tag}_principal_axes"]
+        point(ax, c, colour, f"{tag}: centroid and principal axes")
+        for k in range(3):
+            v = axes[:, k]
+            arrow(ax, c, v / sp.sqrt(v.dot(v)), colour, scale=float(sp.N(size)))
+    axes3d(ax, pts)
+    return fig

@@ -8,6 +8,10 @@ from rigidsym.checking.worked import Solution, identity_check
 from rigidsym.declare import cpm, scalar, trace, vector
 
 ID = "ex3.13"
+TITLE = "Mechanical meaning of m[tr(P P^T) 1 - P P^T]"
+STATEMENT = ("\"assume that a mass m is located at every point P_i of position vector p_i. Give a "
+             "mechanical interpretation of the matrix m[tr(P P^T) 1 - P P^T]\"")
+CITATION = "Angeles, Sec. 3.9, Exercise 3.13"
 
 
 def solve() -> Solution:
@@ -17,10 +21,7 @@ def solve() -> Solution:
     pts = [vector(f"p{i}") for i in range(1, n + 1)]
     P = sp.Matrix.hstack(*pts)
     s = Solution(
-        ID, "Mechanical meaning of m[tr(P P^T) 1 - P P^T]",
-        "\"assume that a mass m is located at every point P_i of position vector p_i. Give a "
-        "mechanical interpretation of the matrix m[tr(P P^T) 1 - P P^T]\"",
-        "Angeles, Sec. 3.9, Exercise 3.13",
+        ID, TITLE, STATEMENT, CITATION,
         given={"P": "3 x n matrix [p_1 ... p_n]", "m": m},
         assumptions=["Exercise 2.23 is not in the text we have: P is taken as the 3 x n "
                      "matrix whose columns are the position vectors p_i of the n points.",

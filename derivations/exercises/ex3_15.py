@@ -10,6 +10,11 @@ from rigidsym.declare import rotation, scalar, symmetric_matrix, vector
 from ._inertia import inertia_at_point
 
 ID = "ex3.15"
+TITLE = "Common principal axes at a point and at the centre of mass"
+STATEMENT = ("\"State the conditions under which the two matrices have common eigenvectors. "
+             "Moreover, under these conditions, what are the relationships between the two sets of "
+             "principal moments of inertia?\"")
+CITATION = "Angeles, Sec. 3.9, Exercise 3.15"
 
 
 def solve() -> Solution:
@@ -19,11 +24,7 @@ def solve() -> Solution:
     I_C = R * sp.diag(l1, l2, l3) * R.T
     c = sp.zeros(3, 1)
     s = Solution(
-        ID, "Common principal axes at a point and at the centre of mass",
-        "\"State the conditions under which the two matrices have common eigenvectors. "
-        "Moreover, under these conditions, what are the relationships between the two sets of "
-        "principal moments of inertia?\"",
-        "Angeles, Sec. 3.9, Exercise 3.15",
+        ID, TITLE, STATEMENT, CITATION,
         given={"I_C": "R diag(I_1, I_2, I_3) R^T (principal axes R e_k)", "d": "p - c"},
         assumptions=["Origin at C; 'common eigenvectors' = a full common orthonormal "
                      "eigenbasis (the two symmetric matrices commute)."])

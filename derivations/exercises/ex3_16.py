@@ -10,16 +10,17 @@ from rigidsym.declare import rotation, scalar, symmetric_matrix, vector
 from ._inertia import inertia_at_point
 
 ID = "ex3.16"
+TITLE = "Minimum of the smallest principal moment"
+STATEMENT = ("\"Show that the smallest principal moment of inertia of a rigid body attains its "
+             "minimum value at the center of mass.\"")
+CITATION = "Angeles, Sec. 3.9, Exercise 3.16"
 
 
 def solve() -> Solution:
     """Worked solution of Exercise 3.16."""
     J, m, d, x = symmetric_matrix("J"), scalar("m"), vector("d"), vector("x")
     s = Solution(
-        ID, "Minimum of the smallest principal moment",
-        "\"Show that the smallest principal moment of inertia of a rigid body attains its "
-        "minimum value at the center of mass.\"",
-        "Angeles, Sec. 3.9, Exercise 3.16",
+        ID, TITLE, STATEMENT, CITATION,
         given={"I_C": J, "d": "a - c", "m": "mass, m > 0"},
         assumptions=["The minimum is attained at C but not only there: also at every point "
                      "of the principal axis of the smallest moment through C (shown below)."])

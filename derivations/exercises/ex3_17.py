@@ -10,6 +10,10 @@ from rigidsym.declare import TIME, rotation, scalar, symmetric_matrix, vect, vec
 from ._inertia import angular_velocity_dyad, inertia_dyad
 
 ID = "ex3.17"
+TITLE = "Time-rate of the inertia dyad and of the momentum screw"
+STATEMENT = ("\"Show that the time-rate of change of the inertia dyad M of a rigid body is given "
+             "by M_dot = W M - M W ... show that mu_dot = M t_dot + W M t\"")
+CITATION = "Angeles, Sec. 3.9, Exercise 3.17; Eqs. (3.138)-(3.143)"
 
 
 def motion():
@@ -30,10 +34,7 @@ def solve() -> Solution:
     """Worked solution of Exercise 3.17."""
     Q, J, m, omega, M, W, t = motion()
     s = Solution(
-        ID, "Time-rate of the inertia dyad and of the momentum screw",
-        "\"Show that the time-rate of change of the inertia dyad M of a rigid body is given "
-        "by M_dot = W M - M W ... show that mu_dot = M t_dot + W M t\"",
-        "Angeles, Sec. 3.9, Exercise 3.17; Eqs. (3.138)-(3.143)",
+        ID, TITLE, STATEMENT, CITATION,
         given={"Q(t)": "generic rotation", "J": J, "m": m,
                "I_C": "Q J Q^T (body-fixed J: the centroidal inertia moves with the body)",
                "t": "[omega; c_dot]"},

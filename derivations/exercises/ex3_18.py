@@ -10,16 +10,17 @@ from rigidsym.declare import TIME
 from .ex3_17 import motion
 
 ID = "ex3.18"
+TITLE = "Skew-symmetry of M_dot - 2 W M"
+STATEMENT = ("\"show that the difference M_dot - 2 W M is skew-symmetric, with M and W introduced "
+             "in Sect. 3.8\"")
+CITATION = "Angeles, Sec. 3.9, Exercise 3.18"
 
 
 def solve() -> Solution:
     """Worked solution of Exercise 3.18."""
     Q, J, m, omega, M, W, t = motion()
     s = Solution(
-        ID, "Skew-symmetry of M_dot - 2 W M",
-        "\"show that the difference M_dot - 2 W M is skew-symmetric, with M and W introduced "
-        "in Sect. 3.8\"",
-        "Angeles, Sec. 3.9, Exercise 3.18",
+        ID, TITLE, STATEMENT, CITATION,
         given={"M": "diag(Q J Q^T, m 1)", "W": "diag(Omega, O)"},
         assumptions=["Same setting as Exercise 3.17 (inertial-frame components)."])
     s.step("use Exercise 3.17", "M_dot - 2 W M = W M - M W - 2 W M = -(W M + M W)",

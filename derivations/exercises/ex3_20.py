@@ -11,6 +11,11 @@ from ..sec3_4_2 import twist_transfer_matrix
 from ._inertia import inertia_at_point, inertia_dyad
 
 ID = "ex3.20"
+TITLE = "Steiner's theorem in 6 x 6 form"
+STATEMENT = ("\"Derive Eq. (3.147). Moreover, show that M_A ... is positive-definite ... Can this "
+             "matrix [R, with P = m R R^T] be found? If yes, give an expression for R; if not, "
+             "explain why.\"")
+CITATION = "Angeles, Sec. 3.9, Exercise 3.20; Eqs. (3.133a), (3.147), (3.148)"
 
 
 def solve() -> Solution:
@@ -18,11 +23,7 @@ def solve() -> Solution:
     J, m = symmetric_matrix("J"), scalar("m")
     a, c, u = vector("a"), vector("c"), vector("u")
     s = Solution(
-        ID, "Steiner's theorem in 6 x 6 form",
-        "\"Derive Eq. (3.147). Moreover, show that M_A ... is positive-definite ... Can this "
-        "matrix [R, with P = m R R^T] be found? If yes, give an expression for R; if not, "
-        "explain why.\"",
-        "Angeles, Sec. 3.9, Exercise 3.20; Eqs. (3.133a), (3.147), (3.148)",
+        ID, TITLE, STATEMENT, CITATION,
         given={"I_C": J, "m": m, "a": a, "c": c},
         assumptions=["M_A is defined by the kinetic energy T = t_A^T M_A t_A / 2 with "
                      "t_A = [omega; a_dot] (the twist at A).",

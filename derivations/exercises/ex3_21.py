@@ -8,6 +8,11 @@ from rigidsym.checking.worked import Solution, identity_check, nonidentity_check
 from rigidsym.declare import TIME, cpm, trace, vector
 
 ID = "ex3.21"
+TITLE = "Orthogonality of the two parts of the angular-acceleration matrix"
+STATEMENT = ("\"Show that the two components of the foregoing decomposition are mutually "
+             "orthogonal, which is a restatement of the orthogonality of the tangential and the "
+             "centripetal relative acceleration\"")
+CITATION = "Angeles, Sec. 3.9, Exercise 3.21; Eq. (3.86)"
 
 
 def solve() -> Solution:
@@ -15,11 +20,7 @@ def solve() -> Solution:
     w = vector("omega", t=TIME)
     r = vector("r")
     s = Solution(
-        ID, "Orthogonality of the two parts of the angular-acceleration matrix",
-        "\"Show that the two components of the foregoing decomposition are mutually "
-        "orthogonal, which is a restatement of the orthogonality of the tangential and the "
-        "centripetal relative acceleration\"",
-        "Angeles, Sec. 3.9, Exercise 3.21; Eq. (3.86)",
+        ID, TITLE, STATEMENT, CITATION,
         given={"omega(t)": w, "W": "Omega_dot + Omega^2 (3.86)", "r": r},
         assumptions=["The 'restatement' for vectors is decided too: it is false in general."])
     Om = cpm(w)

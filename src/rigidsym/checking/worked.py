@@ -2,8 +2,9 @@
 
 A solution is data (:class:`Solution`): the statement with its citation, the given data,
 named steps (a sympy expression and one sentence of why), the answers (exact, floats
-beside them when rendered) and machine checks that do not reuse the solution path. This
-module also renders solutions (terminal text, Markdown) and serialises them to JSON.
+beside them when rendered) and machine checks that do not reuse the solution path. The
+given data are declared parameters (:mod:`.worked_data`), so a solution re-runs on a
+student's data; :mod:`.worked_render` renders solutions (text, Markdown, HTML, LaTeX).
 Deciding truth is never done here by ``simplify()``: identities go to
 :func:`rigidsym.zero.decide.decide_zero`; closed algebraic numbers to their minimal polynomial.
 """
@@ -11,6 +12,7 @@ Deciding truth is never done here by ``simplify()``: identities go to
 from __future__ import annotations
 
 import importlib
+from collections import OrderedDict
 from collections.abc import Callable
 from dataclasses import dataclass, field
 
@@ -18,13 +20,30 @@ import sympy as sp
 
 from rigidsym.zero.decide import decide_zero
 
+from .worked_data import IllPosed, Param, Parameters, read_data, read_value  # noqa: F401
+from .worked_render import (
+    render_html,
+    render_latex,
+    render_markdown,
+    render_text,
+    to_json_value,
+)
+
 __all__ = [
     "Step",
     "Check",
     "Solution",
+    "Param",
+    "Parameters",
+    "IllPosed",
     "EXERCISE_IDS",
     "normalise_id",
+    "exercise_module",
+    "parameters",
     "solve",
+    "read_value",
+    "read_data",
+    "is_zero",
     "identity_check",
     "nonidentity_check",
     "algebraic_zero",
@@ -33,6 +52,8 @@ __all__ = [
     "to_json_value",
     "render_text",
     "render_markdown",
+    "render_html",
+    "render_latex",
 ]
 
 #: ``ex3.1`` ... ``ex3.21``.
@@ -72,8 +93,10 @@ class Solution:
         answers: the final answers by name (exact sympy values; matrices allowed).
         checks: machine checks of the answers (independent of the solution path).
         assumptions: data not in the text we have (figures, chapter 2), and caveats.
-        status: ``"solved"`` or ``"partial"``.
+        status: ``"solved"``, ``"partial"`` or ``"ill-posed"`` (the data admit no
+            answer; the steps end at the one that fails).
         extra: free-form rendered text (tables) appended after the answers.
+        reason: for an ill-posed solution, why, in one sentence.
     """
 
     id: str
@@ -87,6 +110,7 @@ class Solution:
     assumptions: list = field(default_factory=list)
     status: str = "solved"
     extra: str = ""
+    reason: str = ""
 
     @property
     def checked(self) -> bool:
@@ -102,6 +126,27 @@ class Solution:
         """Append a check and return it."""
         self.checks.append(c)
         return c
+
+    def fail(self, reason: str):
+        """End the solution here: the data make the exercise ill-posed.
+
+        Raises:
+            IllPosed: always, carrying this solution and ``reason`` (one sentence);
+                :func:`solve` returns the solution.
+        """
+        self.status = "ill-posed"
+        self.reason = reason
+        raise IllPosed(self, reason)
+
+    def __repr__(self) -> str:
+        verdict = f"checked={self.checked}" if self.status != "ill-posed" else self.reason
+        return f"<Solution {self.id} {self.title!r}: {self.status}, {verdict}>"
+
+    def _repr_html_(self) -> str:
+        return render_html(self)
+
+    def _repr_latex_(self) -> str:
+        return render_latex(self)
 
 
 # --------------------------------------------------------------------------- checks
@@ -164,6 +209,12 @@ def truth_check(name: str, ok: bool, detail: str) -> Check:
     return Check(name, bool(ok), detail)
 
 
+def is_zero(v) -> bool:
+    """Exactly decide that a closed number, or every entry of a closed matrix, is zero
+    (the minimal polynomial, as :func:`algebraic_zero`)."""
+    return all(algebraic_zero(x) for x in (list(v) if isinstance(v, sp.MatrixBase) else [v]))
+
+
 # --------------------------------------------------------------------------- registry
 def normalise_id(text: str) -> str:
     """``"3.10"``, ``"ex3.10"``, ``"3.01"`` -> ``"ex3.10"``.
@@ -184,124 +235,84 @@ def normalise_id(text: str) -> str:
     return f"ex3.{k}"
 
 
-def _module(ex_id: str):
-    k = int(ex_id.split(".")[1])
+def _exercises_package() -> str:
+    """The configured package of the worked exercises (the machinery reaches the book by
+    name, never by a static import)."""
     from rigidsym import _config
 
-    return importlib.import_module(f"{_config.EXERCISES}.ex3_{k:02d}")
+    return _config.EXERCISES
 
 
-_CACHE: dict[str, Solution] = {}
+def exercise_module(ex_id: str):
+    """The module of exercise ``ex_id`` (``PARAMETERS``, ``solve``, optional ``figure``).
+
+    Raises:
+        ValueError: if ``ex_id`` names no exercise of the chapter.
+    """
+    k = int(normalise_id(ex_id).split(".")[1])
+    return importlib.import_module(f"{_exercises_package()}.ex3_{k:02d}")
 
 
-def solve(ex_id: str) -> Solution:
-    """Build (once per process) the worked solution of exercise ``ex_id``."""
+def parameters(ex_id: str) -> Parameters:
+    """The given data of exercise ``ex_id``: names, the book's values, shapes, meanings.
+
+    An exercise with no numeric data (a proof for every body, line or motion) gives an
+    empty table and a sentence saying so.
+
+    Raises:
+        ValueError: if ``ex_id`` names no exercise of the chapter.
+    """
     ex_id = normalise_id(ex_id)
-    if ex_id not in _CACHE:
-        solver: Callable[[], Solution] = _module(ex_id).solve
-        _CACHE[ex_id] = solver()
-    return _CACHE[ex_id]
+    mod = exercise_module(ex_id)
+    rows = tuple(getattr(mod, "PARAMETERS", ()))
+    note = getattr(mod, "DATA_NOTE", "") or (
+        "the book's data; change any of them" if rows else
+        "no numeric data: the exercise is stated for every body, line or motion, so "
+        "there is nothing to vary")
+    return Parameters(ex_id, rows, note, bool(getattr(mod, "MEASURED", False)),
+                      getattr(mod, "default_tol", None))
 
 
-# --------------------------------------------------------------------------- output
-def to_json_value(v):
-    """A sympy value as JSON: ``str()`` that ``sympify`` reads back; matrices nested."""
-    if isinstance(v, sp.MatrixBase):
-        return [[str(x) for x in v.row(i)] for i in range(v.rows)]
-    if isinstance(v, list | tuple):
-        return [to_json_value(x) for x in v]
-    if isinstance(v, str):
-        return v
-    return str(sp.sympify(v))
+#: solutions by exercise and data, most recent last (bounded: a student varies the data)
+_CACHE: OrderedDict[tuple, Solution] = OrderedDict()
+_CACHE_SIZE = 64
 
 
-def _float_of(v) -> str:
-    if isinstance(v, str):
-        return ""
+def solve(ex_id: str, tol=None, **data) -> Solution:
+    """The worked solution of exercise ``ex_id`` on the book's data or on ``data``.
+
+    Args:
+        ex_id: ``"ex3.4"``, ``"3.4"``.
+        tol: compatibility tolerance of measured data (Exercises 3.4, 3.14, 3.19 only);
+            by default ``10^-3`` times the largest magnitude among the data when any
+            datum is a float, and exact compatibility otherwise.
+        **data: values of the exercise's parameters (:func:`parameters`); the others
+            keep the book's values. See :func:`read_value` for what a value may be.
+
+    Returns:
+        The :class:`Solution` (cached on the exercise and the data). Data that make the
+        exercise ill-posed give a solution with ``status == "ill-posed"`` that ends at
+        the failing step, ``reason`` saying why in one sentence.
+
+    Raises:
+        ValueError: an unknown exercise, a bad shape or value.
+        TypeError: an unknown parameter name or a bad type (the message names it).
+    """
+    ex_id = normalise_id(ex_id)
+    params = parameters(ex_id)
+    d = read_data(params, data, tol)
+    key = (ex_id, d.key())
+    if key in _CACHE:
+        _CACHE.move_to_end(key)
+        return _CACHE[key]
+    solver: Callable[..., Solution] = exercise_module(ex_id).solve
+    kwargs = dict(d.values, **({"tol": d.tol} if params.measured else {}))
     try:
-        if isinstance(v, sp.MatrixBase):
-            if v.free_symbols:
-                return ""
-            return str(sp.N(v, 6).tolist())
-        v = sp.sympify(v)
-        if not isinstance(v, sp.Expr) or v.free_symbols or v.is_number is not True:
-            return ""
-        f = sp.N(v, 6)
-        return "" if f == v else str(f)
-    except (TypeError, ValueError, sp.SympifyError):
-        return ""
-
-
-def _pretty(v) -> str:
-    if isinstance(v, str):
-        return v
-    return sp.pretty(v, use_unicode=True, wrap_line=False)
-
-
-def render_text(s: Solution) -> str:
-    """Terminal rendering: statement, given, numbered steps, answers, checks."""
-    out = [f"Exercise {s.id[2:]}: {s.title}", f"  {s.citation}", "", s.statement, ""]
-    if s.assumptions:
-        out.append("Assumptions:")
-        out += [f"  - {a}" for a in s.assumptions]
-        out.append("")
-    if s.given:
-        out.append("Given:")
-        for k, v in s.given.items():
-            out.append(f"  {k} =")
-            out += ["    " + ln for ln in _pretty(v).splitlines()]
-        out.append("")
-    out.append("Solution:")
-    for i, st in enumerate(s.steps, 1):
-        out.append(f"  Step {i}. {st.name}: {st.why}")
-        out += ["      " + ln for ln in _pretty(st.expr).splitlines()]
-    out.append("")
-    out.append("Answers:")
-    for k, v in s.answers.items():
-        f = _float_of(v)
-        out.append(f"  {k} =" + (f"   (~ {f})" if f else ""))
-        out += ["    " + ln for ln in _pretty(v).splitlines()]
-    if s.extra:
-        out += ["", s.extra]
-    out.append("")
-    out.append("Machine checks:")
-    for c in s.checks:
-        out.append(f"  [{'ok' if c.passed else 'FAIL'}] {c.name}: {c.detail}")
-    out.append(f"\nstatus: {s.status}; checked: {str(s.checked).lower()}")
-    return "\n".join(out)
-
-
-def _latex(v) -> str:
-    if isinstance(v, str):
-        return v
-    return f"$${sp.latex(v)}$$"
-
-
-def render_markdown(s: Solution) -> str:
-    """Markdown rendering (LaTeX maths) for the report."""
-    out = [f'## Exercise {s.id[2:]}: {s.title} <a id="ex-{s.id[2:]}"></a>', "",
-           f"*{s.citation}*", "",
-           f"> {s.statement}", "",
-           f"**Status:** {s.status}; **checked:** {str(s.checked).lower()}", ""]
-    if s.assumptions:
-        out.append("**Assumptions**")
-        out += [f"- {a}" for a in s.assumptions] + [""]
-    if s.given:
-        out.append("**Given**")
-        out += [f"- `{k}` = {_latex(v)}" for k, v in s.given.items()] + [""]
-    out.append("**Solution**")
-    out.append("")
-    for i, st in enumerate(s.steps, 1):
-        out += [f"{i}. *{st.name}*: {st.why}", "", f"   {_latex(st.expr)}", ""]
-    out.append("**Answers**")
-    out.append("")
-    for k, v in s.answers.items():
-        f = _float_of(v)
-        out += [f"- `{k}` = {_latex(v)}" + (f" ≈ `{f}`" if f else ""), ""]
-    if s.extra:
-        out += [s.extra, ""]
-    out.append("**Machine checks**")
-    out.append("")
-    out += [f"- [{'x' if c.passed else ' '}] {c.name}: {c.detail}" for c in s.checks]
-    out.append("")
-    return "\n".join(out)
+        s = solver(**kwargs)
+    except IllPosed as exc:
+        s = exc.solution
+    s.assumptions.extend(d.notes)
+    _CACHE[key] = s
+    while len(_CACHE) > _CACHE_SIZE:
+        _CACHE.popitem(last=False)
+    return s

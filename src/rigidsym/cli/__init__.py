@@ -1,4 +1,4 @@
-"""The ``rigidsym`` command: verify, report, show, exercise, generate, build-c.
+"""The ``rigidsym`` command: verify, report, show, exercise, generate, build-c, cache.
 
 Exit codes: 0 = all as expected, 1 = some computed verdict differs from its expectation,
 2 = bad input (a one-line message naming what was expected).
@@ -11,13 +11,13 @@ import os
 import sys
 
 from rigidsym.checking.registry import BadInput
-from rigidsym.cli import exercise, generate, report, show, verify
+from rigidsym.cli import cache, exercise, generate, report, show, verify
 
 __all__ = ["main", "build_parser"]
 
 #: the sub-commands: name -> module with ``HELP``, ``add_arguments(parser)``, ``run(args)``
 _COMMANDS = {"verify": verify, "report": report, "show": show, "exercise": exercise,
-             "generate": generate.GENERATE, "build-c": generate.BUILD_C}
+             "generate": generate.GENERATE, "build-c": generate.BUILD_C, "cache": cache}
 
 
 def build_parser() -> argparse.ArgumentParser:

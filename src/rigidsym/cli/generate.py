@@ -38,22 +38,51 @@ def cmd_generate(args) -> int:
     res = generate()
     for note in res.notes:
         print(f"note: {note}", file=sys.stderr)
+    books = _notebooks()
     if args.check:
         diff = check(res, out)
-        if diff:
+        stale = _check_notebooks(books, out)
+        if diff or stale:
             sys.stdout.write(diff)
             print(f"generated/ is stale: run `rigidsym generate` "
                   f"({time.perf_counter() - t0:.1f} s)", file=sys.stderr)
             return 1
-        print(f"generated/ is up to date: {len(res.kernels)} kernels, {len(res.files)} files "
-              f"({time.perf_counter() - t0:.1f} s)")
+        print(f"generated/ is up to date: {len(res.kernels)} kernels, {len(res.files)} files, "
+              f"{len(books)} notebook files ({time.perf_counter() - t0:.1f} s)")
         return 0
     touched = write(res, out)
+    if books:
+        from rigidsym.notebooks import NOTEBOOK_DIR, write_files
+        touched += [f"{NOTEBOOK_DIR}/{n}" for n in write_files(books, out / NOTEBOOK_DIR)]
     for t in touched:
         print(f"wrote {t}")
     print(f"{len(res.kernels)} kernels, {len(res.files)} files, {len(touched)} changed "
           f"({time.perf_counter() - t0:.1f} s)")
     return 0
+
+
+def _notebooks() -> dict[str, str]:
+    """The exercise notebooks (``{}`` with a note when nbformat is not installed)."""
+    try:
+        from rigidsym.notebooks import notebook_files
+        return notebook_files()
+    except ModuleNotFoundError as exc:
+        if exc.name != "nbformat":
+            raise
+        print("note: notebooks skipped: nbformat is not installed "
+              "(pip install \"rigidsym[notebooks]\")", file=sys.stderr)
+        return {}
+
+
+def _check_notebooks(books: dict[str, str], out: Path) -> bool:
+    """Print the stale notebook files; True when any differs."""
+    if not books:
+        return False
+    from rigidsym.notebooks import NOTEBOOK_DIR, check_files
+    stale = check_files(books, out / NOTEBOOK_DIR)
+    for name in stale:
+        print(f"stale notebook file: generated/{NOTEBOOK_DIR}/{name}")
+    return bool(stale)
 
 
 def _build_args(p) -> None:

@@ -23,6 +23,8 @@ def add_arguments(r) -> None:
     r.add_argument("--full", action="store_true",
                    help="also write chapter3-full.{md,json} with the expanded values")
     r.add_argument("--jobs", type=int, default=JOBS)
+    r.add_argument("--no-cache", action="store_true",
+                   help="check every id again; neither read nor write the verdict cache")
     r.add_argument("--module", action="append", metavar="PATH_OR_DOTTED",
                    help=MODULE_HELP + ": report its ids into --out as <module>.{md,json,html}")
 
@@ -47,13 +49,13 @@ def run(args) -> int:
     if args.module:  # a user module's report: titled by it, files named after it
         from rigidsym.report.user import write_user_report
         return write_user_report(args.module, Path(args.out) if args.out else Path.cwd(),
-                                 args.jobs)
+                                 args.jobs, cache=not args.no_cache)
     from rigidsym.cli.exercise import write_report as write_exercises
     from rigidsym.report.html import to_html
     from rigidsym.report.markdown import to_markdown
     from rigidsym.report.record import to_json
     ids = select(None, None)
-    results = run_checks(ids, jobs=args.jobs, progress=True)
+    results = run_checks(ids, jobs=args.jobs, progress=True, cache=not args.no_cache)
     out = Path(args.out) if args.out else default_report_dir()
     written = [write_atomic(out / "chapter3.md", to_markdown(results)),
                write_atomic(out / "chapter3.json", to_json(results, timings=False)),

@@ -23,6 +23,8 @@ def add_arguments(v) -> None:
     v.add_argument("--quiet", action="store_true", help="no progress bar or table")
     v.add_argument("--module", action="append", metavar="PATH_OR_DOTTED",
                    help=MODULE_HELP + "; only its ids unless ids or sections are given")
+    v.add_argument("--no-cache", action="store_true",
+                   help="check every id again; neither read nor write the verdict cache")
 
 
 def _table(results) -> None:
@@ -34,7 +36,8 @@ def _table(results) -> None:
     for r in results:
         style = "" if r.verdict == r.expected else "bold red"
         v = r.verdict if r.verdict == r.expected else f"{r.verdict} (expected {r.expected})"
-        t.add_row(r.id, r.title[:48], v, r.method, f"{r.seconds:.2f}", style=style)
+        secs = "cached" if getattr(r, "cached", False) else f"{r.seconds:.2f}"
+        t.add_row(r.id, r.title[:48], v, r.method, secs, style=style)
     console().print(t)
 
 
@@ -44,7 +47,8 @@ def run(args) -> int:
 
     ids = select_with_modules(args.ids, args.section, args.module)
     t0 = time.perf_counter()
-    results = run_checks(ids, jobs=args.jobs, progress=not args.quiet)
+    results = run_checks(ids, jobs=args.jobs, progress=not args.quiet,
+                         cache=not args.no_cache)
     wall = time.perf_counter() - t0
     if not args.quiet:
         _table(results)
@@ -52,7 +56,9 @@ def run(args) -> int:
         write_atomic(args.json, to_json(results))
     off = [r for r in results if r.verdict != r.expected]
     s = summary(results)
-    print(f"{len(results)} checked in {wall:.1f} s: "
+    hits = "" if args.no_cache else \
+        f" ({sum(bool(getattr(r, 'cached', False)) for r in results)} from the cache)"
+    print(f"{len(results)} checked in {wall:.1f} s{hits}: "
           + ", ".join(f"{k} {v}" for k, v in s.items()))
     for r in off:
         print(f"MISMATCH ({r.id}): computed {r.verdict}, expected {r.expected}: {r.detail}")

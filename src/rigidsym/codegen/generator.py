@@ -41,8 +41,9 @@ __all__ = ["generate", "write", "check", "GenerationResult", "default_out_dir", 
 
 TEMPLATES = Path(__file__).parent / "templates"
 #: file names under generated/ owned by the generator (anything else there is an orphan,
-#: except the report folder which belongs to ``rigidsym report``).
-_FOREIGN = ("report/",)
+#: except the report folder, which belongs to ``rigidsym report``, and the notebooks, which
+#: ``rigidsym generate`` writes through :mod:`rigidsym.notebooks`).
+_FOREIGN = ("report/", "notebooks/")
 
 
 def default_out_dir() -> Path:

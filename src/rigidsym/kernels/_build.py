@@ -10,8 +10,9 @@ CPU dispatch as in NumPy: every kernel source (and the table ``rigidsym_table.c`
 compiled once per build path, with that path's ``-march`` and ``-DRIGIDSYM_ISA_SUFFIX``;
 ``rigidsym_module.c`` once, with the baseline path's flags; all objects link into one module
 whose dispatcher (``rigidsym_dispatch.h``) picks a path at import. Paths: ``x86-64-v2``
-(baseline) and ``x86-64-v3`` (AVX2 + FMA) on x86-64, no ``-march`` elsewhere, ``native``
-(``-march=native``, one path) on request. Nothing built by default uses ``-march=native``.
+(baseline), ``x86-64-v3`` (AVX2 + FMA) and ``x86-64-v4`` (AVX-512) on x86-64, no ``-march``
+elsewhere, ``native`` (``-march=native``, one path) on request. Nothing built by default
+uses ``-march=native``.
 
 Flags of the kernels: ``-O3 -std=c99 -ffp-contract=fast`` (FMA contraction, never
 ``-ffast-math``; ``RIGIDSYM_CFLAGS`` replaces them). OpenMP (threads of the batch loops) and
@@ -28,13 +29,8 @@ import json
 import os
 import platform
 import shlex
-import shutil
-import subprocess
 import sys
-import sysconfig
-import tempfile
 from collections.abc import Callable
-from concurrent.futures import ThreadPoolExecutor, as_completed
 from dataclasses import dataclass
 from functools import cache
 from pathlib import Path
@@ -73,11 +69,12 @@ class IsaPath:
     flags: tuple[str, ...]
 
 
-X86_PATHS = (IsaPath("v3", "x86-64-v3", ("-march=x86-64-v3",)),
-             IsaPath("v2", "x86-64-v2", ("-march=x86-64-v2",)))
-#: optional AVX-512 path (``RIGIDSYM_PATHS=v4,v3,v2``); not built by default: measured no
-#: faster than x86-64-v3 (benchmarks/RESULTS.md)
+#: the AVX-512 path: measured 0.83-0.92x the x86-64-v3 time on the trigonometric K2, K3,
+#: K5 (libmvec's 8-wide _ZGVeN8v_sin/cos), level on K1, K4, K6 (benchmarks/RESULTS.md), and
+#: what keeps the default build within 1.10x of -march=native on K3 on an AVX-512 CPU
 X86_V4 = IsaPath("v4", "x86-64-v4", ("-march=x86-64-v4",))
+X86_PATHS = (X86_V4, IsaPath("v3", "x86-64-v3", ("-march=x86-64-v3",)),
+             IsaPath("v2", "x86-64-v2", ("-march=x86-64-v2",)))
 NATIVE = IsaPath("native", "native", ("-march=native",))
 BASELINE = IsaPath("base", "baseline", ())
 
@@ -110,8 +107,9 @@ def _x86() -> bool:
 def default_paths(native: bool = False) -> tuple[IsaPath, ...]:
     """The build paths, best first (the last is the baseline).
 
-    ``native``: ``-march=native`` only. Else ``RIGIDSYM_PATHS`` (suffixes, e.g. ``v4,v3,v2``)
-    if set, else x86-64-v3 and x86-64-v2 on x86-64 and one path without ``-march`` elsewhere.
+    ``native``: ``-march=native`` only. Else ``RIGIDSYM_PATHS`` (suffixes, e.g. ``v3,v2`` for
+    a quicker build) if set, else x86-64-v4, x86-64-v3 and x86-64-v2 on x86-64 and one path
+    without ``-march`` elsewhere.
 
     Raises:
         ValueError: ``RIGIDSYM_PATHS`` names an unknown path.
@@ -123,7 +121,7 @@ def default_paths(native: bool = False) -> tuple[IsaPath, ...]:
     env = os.environ.get("RIGIDSYM_PATHS")
     if not env:
         return X86_PATHS
-    known = {p.suffix: p for p in (X86_V4, *X86_PATHS)}
+    known = {p.suffix: p for p in X86_PATHS}
     wanted = [s.strip() for s in env.split(",") if s.strip()]
     bad = [s for s in wanted if s not in known]
     if bad or not wanted:
@@ -148,6 +146,9 @@ def kernel_flags() -> tuple[str, ...]:
 def compiler() -> list[str] | None:
     """The C compiler command (``CC``, else the one Python was built with, else ``cc``), or
     ``None`` when it is not on ``PATH``."""
+    import shutil
+    import sysconfig
+
     cmd = shlex.split(os.environ.get("CC") or sysconfig.get_config_var("CC") or "cc")
     return cmd if cmd and shutil.which(cmd[0]) else None
 
@@ -225,6 +226,9 @@ _MVEC_DECL = ("#pragma omp declare simd notinbranch\ndouble sin(double);\n"
 def _probe(cc: tuple[str, ...], flags: tuple[str, ...], libs: tuple[str, ...], simd: bool) -> bool:
     """Whether a small program compiles and links (an executable: a shared object would
     accept an unresolved libmvec symbol) with ``flags`` and ``libs``."""
+    import subprocess
+    import tempfile
+
     with tempfile.TemporaryDirectory() as tmp:
         src = Path(tmp) / "probe.c"
         src.write_text(_PROBE % (_MVEC_DECL if simd else "",
@@ -243,6 +247,8 @@ def configure(native: bool = False, cc: list[str] | None = None) -> Config:
     """
     cc = cc or compiler()
     if cc is None:
+        import sysconfig
+
         name = os.environ.get("CC") or sysconfig.get_config_var("CC") or "cc"
         raise CompilerNotFound(f"no C compiler found ({name!r} is not on PATH)")
     cmd, flags, paths = tuple(cc), kernel_flags(), default_paths(native)
@@ -286,9 +292,18 @@ def embedded_hash(data: bytes | Path) -> str | None:
 
 
 def estimate_seconds(cdir: Path, cfg: Config) -> float:
-    """A rough wall time of :func:`build` (for the notice before it starts)."""
+    """A rough wall time of :func:`build` (for the notice before it starts): the measured
+    CPU time per object over the parallel compiles, slowed by the machine's other work
+    (the 1-minute load average)."""
     n = len(kernel_sources(cdir)) * len(cfg.paths) + 1
-    return n * SECONDS_PER_OBJECT / min(jobs(), n)
+    par = min(jobs(), n)
+    cores = os.cpu_count() or 1
+    try:
+        busy = os.getloadavg()[0]
+    except (AttributeError, OSError):   # not Unix
+        busy = 0.0
+    share = min(1.0, cores / max(cores, busy + par))
+    return n * SECONDS_PER_OBJECT / (par * share)
 
 
 Progress = Callable[[int, int], None]
@@ -296,6 +311,8 @@ Progress = Callable[[int, int], None]
 
 def _tasks(cdir: Path, cfg: Config, tmp: Path) -> list[tuple[list[str], Path]]:
     """``(argv, object)`` of every compile, largest sources first (balances the workers)."""
+    import sysconfig
+
     inc = ["-I", str(cdir)]
     tasks = []
     for path in cfg.paths:
@@ -326,6 +343,8 @@ def _numpy_include() -> str:
 
 
 def _run(argv: list[str]) -> None:
+    import subprocess
+
     r = subprocess.run(argv, capture_output=True, text=True)
     if r.returncode != 0:
         tail = "\n".join((r.stderr or r.stdout).strip().splitlines()[-20:])
@@ -339,6 +358,8 @@ def build(gdir: Path, out: Path, cfg: Config, tmp: Path,
     Raises:
         BuildError: a compile or the link failed (the compiler's last lines in the message).
     """
+    from concurrent.futures import ThreadPoolExecutor, as_completed
+
     cdir = Path(gdir) / "c"
     if not (cdir / MODULE_SOURCE).is_file():
         raise BuildError(f"{cdir}: no {MODULE_SOURCE}; regenerate this folder with this "

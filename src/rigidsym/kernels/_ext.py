@@ -28,10 +28,10 @@ import json
 import os
 import platform
 import sys
-import sysconfig
-import tempfile
 import threading
 import warnings
+from collections.abc import Iterator
+from contextlib import contextmanager
 from dataclasses import dataclass
 from pathlib import Path
 from types import ModuleType
@@ -92,7 +92,7 @@ def entry(gdir: Path, native: bool = False, sources: str | None = None) -> Path:
     sources = sources or _build.sources_hash(Path(gdir) / "c")
     label = "native" if native else "+".join(p.name for p in _build.default_paths())
     name = f"{label}-{sys.implementation.cache_tag}-{_key(sources, native)}"
-    suffix = sysconfig.get_config_var("EXT_SUFFIX") or ".so"
+    suffix = importlib.machinery.EXTENSION_SUFFIXES[0]
     return _cache.folder("kernels") / name / f"{_build.MODULE}{suffix}"
 
 
@@ -117,6 +117,8 @@ def _notice(gdir: Path, cfg: _build.Config, where: Path, why: str) -> None:
 def _compile(gdir: Path, cfg: _build.Config, path: Path) -> None:
     """Build into a temporary folder beside ``path``, then :func:`_cache.put` (atomic,
     checksummed). A progress bar on a terminal."""
+    import tempfile
+
     path.parent.mkdir(parents=True, exist_ok=True)
     with tempfile.TemporaryDirectory(dir=path.parent, prefix=".build-") as tmp:
         out = Path(tmp) / path.name
@@ -128,12 +130,31 @@ def _compile(gdir: Path, cfg: _build.Config, path: Path) -> None:
                           TextColumn("{task.completed}/{task.total} objects"),
                           TimeElapsedColumn(), console=Console(stderr=True),
                           transient=True) as bar:
-                task = bar.add_task("compile", total=None)
+                total = len(_build.kernel_sources(Path(gdir) / "c")) * len(cfg.paths) + 2
+                task = bar.add_task("compile", total=total)
                 _build.build(gdir, out, cfg, Path(tmp),
                              lambda done, total: bar.update(task, completed=done, total=total))
         else:
             _build.build(gdir, out, cfg, Path(tmp))
         _cache.put(path, out.read_bytes())
+
+
+@contextmanager
+def _lock(path: Path) -> Iterator[None]:
+    """The cross-process lock of one cache entry; a process that has to wait for another's
+    compile says so first (waiting is not silent either)."""
+    from filelock import Timeout
+
+    try:
+        with _cache.lock("kernels", path.parent.name, timeout=0):
+            yield
+            return
+    except Timeout:
+        pass
+    print(f"rigidsym: another process is compiling these kernels into {path.parent}; "
+          f"waiting for it", file=sys.stderr, flush=True)
+    with _cache.lock("kernels", path.parent.name):
+        yield
 
 
 def ensure(gdir: Path, native: bool = False, why: str = "not compiled yet",
@@ -151,7 +172,7 @@ def ensure(gdir: Path, native: bool = False, why: str = "not compiled yet",
     if not force and _valid(path, sources):
         return path
     cfg = _build.configure(native)
-    with _cache.lock("kernels", path.parent.name):
+    with _lock(path):
         state = _valid(path, sources)
         if state and not force:
             return path                     # another process built it meanwhile
@@ -185,8 +206,11 @@ def _import(path: Path, origin: str, sources: str, name: str) -> Loaded:
 
 
 def _origin(path: Path) -> str:
-    parts = set(path.parts)
-    return "wheel" if {"site-packages", "dist-packages"} & parts else "editable build"
+    """``"editable build"`` for a module built in place in a checkout (``src/rigidsym/...``
+    beside ``pyproject.toml``), else ``"wheel"`` (installed from one, whatever the folder)."""
+    root = path.resolve().parents[3]
+    in_checkout = path.resolve().parents[2].name == "src" and (root / "pyproject.toml").is_file()
+    return "editable build" if in_checkout else "wheel"
 
 
 def load(gdir: Path, package: bool = False) -> Loaded:
@@ -245,7 +269,7 @@ def _load_default(gdir: Path, package: bool, sources: str, name: str) -> Loaded:
 #: the libmvec variants each x86-64 path calls (nm -u of its objects, gcc 12, glibc 2.36)
 _MVEC_VARIANTS = {"x86-64-v2": "SSE (_ZGVbN2v_sin, _ZGVbN2v_cos)",
                   "x86-64-v3": "AVX2 (_ZGVdN4v_sin, _ZGVdN4v_cos)",
-                  "x86-64-v4": "AVX2 (_ZGVdN4v_sin, _ZGVdN4v_cos)"}
+                  "x86-64-v4": "AVX-512 (_ZGVeN8v_sin, _ZGVeN8v_cos)"}
 
 
 def _mvec_variant(loaded: Loaded) -> str | None:

@@ -19,7 +19,8 @@ from rigidsym.checking.checker import Result
 from rigidsym.printing import notation
 from rigidsym.printing.mathml import latex_to_mathml
 from rigidsym.report.markdown import anchor, sections
-from rigidsym.report.record import CITATION, RESIDUAL_FLOOR, result_record, summary
+from rigidsym.report.numeric import numeric_sentence
+from rigidsym.report.record import CITATION, result_record, summary
 
 __all__ = ["to_html", "markdown_to_html", "math_or_text"]
 
@@ -53,19 +54,10 @@ def _value_mathml(text: str | None) -> Markup:
     return math_or_text(notation.latex(v), text, display=False)
 
 
-def _numeric_text(n: dict) -> str:
-    res = n.get("max_residual")
-    if res is None:
-        return ""
-    shown = f"< {RESIDUAL_FLOOR:.0e}" if res <= RESIDUAL_FLOOR else f"{res:.1e}"
-    return (f"Numeric backing: {n['points']} points at {n['digits']} digits, max relative "
-            f"residual {shown} (seed {n['seed']}).")
-
-
 def _view(rec: dict) -> dict:
     v = dict(rec, anchor=anchor(rec["id"]),
              printed_mathml=math_or_text(rec["printed_latex"], rec["printed_latex"]),
-             numeric_text=_numeric_text(rec["numeric"]))
+             numeric_text=numeric_sentence(rec["numeric"]))
     v["members"] = [dict(m, mathml=math_or_text(m["latex"], m["text"])) for m in rec["members"]]
     v["failing_text"] = next((m["text"] for m in rec["members"]
                               if m["status"] == "fails" and m["role"] != "corrected"), None)

@@ -1,0 +1,347 @@
+"""The given data of a worked exercise: declared parameters, read exactly or as measurements.
+
+An exercise declares its numeric data as :class:`Param` rows (name, the book's value,
+shape, one-line meaning, unit). A student's value is read by :func:`read_value`:
+
+- exact: an ``int``, a :class:`fractions.Fraction`, a :class:`decimal.Decimal`, a decimal
+  string (``"0.1"`` is 1/10), a string that sympifies to a closed real number
+  (``"sqrt(3)/2"``) or a closed real sympy number;
+- a measurement: a ``float`` (or a NumPy float, or a sympy ``Float``), converted exactly
+  to the binary fraction it stores (0.1 is 3602879701896397/36028797018963968), and
+  flagged, so the solution can say so and judge compatibility within a tolerance.
+
+Bad input raises an error that names the parameter (and the entry) and what was expected:
+``TypeError`` for a wrong type or an unknown name, ``ValueError`` for a wrong shape or a
+value that is not a finite real number.
+"""
+
+from __future__ import annotations
+
+import decimal
+import numbers
+import re
+from dataclasses import dataclass, field
+from fractions import Fraction
+
+import sympy as sp
+
+__all__ = ["Param", "Parameters", "Data", "read_value", "read_data", "IllPosed"]
+
+_DECIMAL = re.compile(r"^[+-]?(\d+(\.\d*)?|\.\d+)([eE][+-]?\d+)?$|^[+-]?\d+/\d+$")
+_SHAPE_WORDS = {(): "a real number", (3,): "a 3-vector (3 numbers)",
+                (6,): "a 6-array (6 numbers)", (3, 3): "a 3 x 3 matrix (3 rows of 3 numbers)"}
+#: default tolerance of measured data, relative to the largest magnitude among the data
+DEFAULT_RELATIVE_TOL = sp.Rational(1, 1000)
+
+
+class IllPosed(Exception):
+    """The data make the exercise ill-posed; ``solution`` ends at the failing step and
+    ``reason`` says why in one sentence."""
+
+    def __init__(self, solution, reason: str):
+        super().__init__(reason)
+        self.solution = solution
+        self.reason = reason
+
+
+@dataclass(frozen=True)
+class Param:
+    """One given datum of an exercise.
+
+    Attributes:
+        name: a valid identifier, after NOTATION.md (``n_1``, ``I_A``, ``C_prime``).
+        default: the book's value (exact sympy: a number or a Matrix; a str for a choice).
+        shape: ``()`` a number, ``(3,)`` a vector, ``(6,)``, ``(3, 3)`` a matrix; ``None``
+            for a choice among ``choices``.
+        meaning: one line.
+        unit: SI unit of the entries ("" when dimensionless).
+        choices: the allowed strings of a choice parameter.
+    """
+
+    name: str
+    default: object
+    shape: tuple | None
+    meaning: str
+    unit: str = ""
+    choices: tuple = ()
+
+    @property
+    def shape_text(self) -> str:
+        """The shape as a reader says it: ``(3,)``, ``(3, 3)``, ``scalar``, ``one of ...``."""
+        if self.shape is None:
+            return "one of " + ", ".join(self.choices)
+        return "scalar" if self.shape == () else str(self.shape)
+
+
+@dataclass(frozen=True)
+class Parameters:
+    """The given data of one exercise: a table of :class:`Param` and a sentence.
+
+    Iterating gives the rows; ``params["n_1"]`` one row; ``defaults()`` the book's values.
+    Displayed as a table in a notebook (``_repr_html_``) and as text by ``str()``.
+    """
+
+    exercise: str
+    rows: tuple = ()
+    note: str = ""
+    measured: bool = False
+    #: ``values -> (tol, how it was chosen)``; None: 10^-3 x the largest |datum|
+    default_tol: object = None
+
+    def __iter__(self):
+        return iter(self.rows)
+
+    def __len__(self) -> int:
+        return len(self.rows)
+
+    def __getitem__(self, name: str) -> Param:
+        for p in self.rows:
+            if p.name == name:
+                return p
+        raise KeyError(f"{self.exercise} has no parameter {name!r}")
+
+    @property
+    def names(self) -> list[str]:
+        """The parameter names, in the order of the table."""
+        return [p.name for p in self.rows]
+
+    def defaults(self) -> dict:
+        """``{name: the book's value}``."""
+        return {p.name: p.default for p in self.rows}
+
+    def __str__(self) -> str:
+        if not self.rows:
+            return f"{self.exercise}: {self.note}"
+        out = [f"{self.exercise}: {self.note}" if self.note else f"{self.exercise}:"]
+        for p in self.rows:
+            unit = f" [{p.unit}]" if p.unit else ""
+            out.append(f"  {p.name:10s} {p.shape_text:8s} = {_flat_text(p.default)}{unit}")
+            out.append(f"  {'':10s} {p.meaning}")
+        if self.measured:
+            out.append("  tol        scalar   (keyword) tolerance of float (measured) data; by "
+                       "default set from the data, and stated in the solution")
+        return "\n".join(out)
+
+    def _repr_html_(self) -> str:
+        import html
+        head = f"<p><b>{html.escape(self.exercise)}</b>: {html.escape(self.note)}</p>"
+        if not self.rows:
+            return head
+        rows = "".join(
+            f"<tr><td><code>{html.escape(p.name)}</code></td><td>{html.escape(p.shape_text)}"
+            f"</td><td><code>{html.escape(_flat_text(p.default))}</code></td>"
+            f"<td>{html.escape(p.unit)}</td><td>{html.escape(p.meaning)}</td></tr>"
+            for p in self.rows)
+        return (head + "<table><thead><tr><th>name</th><th>shape</th><th>book's value</th>"
+                "<th>unit</th><th>meaning</th></tr></thead><tbody>" + rows + "</tbody></table>")
+
+
+def _flat_text(v) -> str:
+    if isinstance(v, sp.MatrixBase):
+        if v.cols == 1:
+            return "[" + ", ".join(str(x) for x in v) + "]"
+        return "[" + "; ".join(", ".join(str(x) for x in v.row(i)) for i in range(v.rows)) + "]"
+    return str(v)
+
+
+@dataclass
+class Data:
+    """The values a solver receives: exact sympy data, which were floats, and ``tol``."""
+
+    values: dict
+    floats: tuple = ()
+    tol: sp.Rational | None = None
+    tol_default: bool = False
+    notes: list = field(default_factory=list)
+
+    def key(self) -> tuple:
+        """A hashable key of the data (for the solution cache)."""
+        return (tuple((k, sp.srepr(v) if isinstance(v, sp.Basic) else repr(v))
+                      for k, v in sorted(self.values.items())),
+                self.floats, None if self.tol is None else str(self.tol))
+
+
+# --------------------------------------------------------------------------- reading
+def _scalar(v, where: str) -> tuple[sp.Expr, bool]:
+    """One real number: ``(exact value, was it a float)``."""
+    if isinstance(v, bool):
+        raise TypeError(f"{where}: expected a real number, got a bool ({v})")
+    if isinstance(v, sp.Float):
+        v = float(v)
+    elif isinstance(v, sp.Basic):    # before numbers.Real: sympy registers its numbers there
+        return _closed_real(v, where, repr(v)), False
+    if isinstance(v, numbers.Integral):
+        return sp.Integer(int(v)), False
+    if isinstance(v, Fraction):
+        return sp.Rational(v.numerator, v.denominator), False
+    if isinstance(v, decimal.Decimal):
+        if not v.is_finite():
+            raise ValueError(f"{where}: expected a finite real number, got {v}")
+        return sp.Rational(str(v)), False
+    if isinstance(v, numbers.Real):
+        x = float(v)
+        if x != x or x in (float("inf"), float("-inf")):
+            raise ValueError(f"{where}: expected a finite real number, got {x}")
+        return sp.Rational(x), True
+    if isinstance(v, str):
+        return _from_text(v, where), False
+    raise TypeError(f"{where}: expected a real number (int, Fraction, decimal string such "
+                    f"as '0.1', 'sqrt(3)/2', a sympy number or a float), got "
+                    f"{type(v).__name__}")
+
+
+def _from_text(text: str, where: str) -> sp.Expr:
+    t = text.strip()
+    if _DECIMAL.match(t):
+        return sp.Rational(t)
+    try:
+        e = sp.sympify(t, rational=True)
+    except (sp.SympifyError, SyntaxError, TypeError, ValueError, AttributeError):
+        raise ValueError(f"{where}: {text!r} is not a number (expected e.g. 2, -5/3, 0.1 "
+                         f"or sqrt(3)/2)") from None
+    return _closed_real(e, where, repr(text))
+
+
+def _closed_real(e, where: str, shown: str) -> sp.Expr:
+    if not isinstance(e, sp.Expr) or e.free_symbols or not e.is_number:
+        raise ValueError(f"{where}: {shown} is not a closed number (no symbols allowed)")
+    if e.has(sp.Float):
+        e = sp.nsimplify(e, rational=True)
+    if e.is_finite is not True or e.is_extended_real is not True:
+        raise ValueError(f"{where}: {shown} is not a finite real number")
+    return e
+
+
+def _entries(p: Param, v) -> list:
+    """``v`` as a flat row-major list of entries with the shape of ``p`` checked."""
+    want = p.shape
+    try:
+        import numpy as np
+        if isinstance(v, np.ndarray):
+            v = v.tolist()
+    except ImportError:  # pragma: no cover - numpy is a dependency
+        pass
+    if isinstance(v, sp.MatrixBase):
+        got = (v.rows, v.cols)
+        if len(want) == 1 and v.shape in ((want[0], 1), (1, want[0])):
+            return list(v)
+        if got == want:
+            return list(v)
+        raise ValueError(f"{p.name}: expected {_SHAPE_WORDS[want]}, shape {want}, got a "
+                         f"sympy Matrix of shape {got}")
+    if isinstance(v, str | bytes) or not isinstance(v, list | tuple):
+        raise TypeError(f"{p.name}: expected {_SHAPE_WORDS[want]}, shape {want}, as a "
+                        f"list, tuple, NumPy array or sympy Matrix; got {type(v).__name__}")
+    if len(want) == 1:
+        if len(v) != want[0] or any(isinstance(x, list | tuple) for x in v):
+            raise ValueError(f"{p.name}: expected {_SHAPE_WORDS[want]}, shape {want}, got "
+                             f"{_shape_of(v)}")
+        return list(v)
+    if len(v) != want[0] or any(not isinstance(r, list | tuple) or len(r) != want[1]
+                                for r in v):
+        raise ValueError(f"{p.name}: expected {_SHAPE_WORDS[want]}, shape {want}, got "
+                         f"{_shape_of(v)}")
+    return [x for r in v for x in r]
+
+
+def _shape_of(v) -> str:
+    if isinstance(v, list | tuple):
+        inner = {len(r) if isinstance(r, list | tuple) else None for r in v}
+        if inner == {None} or not v:
+            return f"{len(v)} entries"
+        return f"{len(v)} rows of " + "/".join(str(i) for i in sorted(inner, key=str)) \
+            + " entries"
+    return type(v).__name__
+
+
+def read_value(p: Param, v) -> tuple[object, bool]:
+    """Read a student's value of parameter ``p``: ``(exact sympy value, was a float)``.
+
+    Args:
+        p: the declared parameter.
+        v: a number (see the module docstring) for a scalar; for a vector or matrix a
+            list/tuple (nested for a matrix), a NumPy array or a sympy Matrix of numbers;
+            for a choice one of ``p.choices`` (case-insensitive).
+
+    Returns:
+        A sympy number, a ``sympy.ImmutableMatrix`` (vectors as columns) or a str.
+
+    Raises:
+        TypeError: wrong type (the message names the parameter).
+        ValueError: wrong shape, a string that is not a number, NaN/inf, complex.
+    """
+    if p.shape is None:
+        if not isinstance(v, str) or v.strip().upper() not in p.choices:
+            raise ValueError(f"{p.name}: expected one of {', '.join(p.choices)}, got {v!r}")
+        return v.strip().upper(), False
+    if p.shape == ():
+        return _scalar(v, p.name)
+    flat = _entries(p, v)
+    read = [_scalar(x, f"{p.name}[{i}]") for i, x in enumerate(flat)]
+    rows, cols = (p.shape[0], 1) if len(p.shape) == 1 else p.shape
+    return sp.ImmutableMatrix(rows, cols, [x for x, _ in read]), any(f for _, f in read)
+
+
+def _magnitude(values: dict) -> sp.Rational:
+    best = sp.Integer(0)
+    for v in values.values():
+        for x in (list(v) if isinstance(v, sp.MatrixBase) else [v]):
+            if isinstance(x, sp.Expr):
+                best = max(best, abs(sp.Rational(str(sp.N(abs(x), 30)))))
+    return best
+
+
+def _default_tol(values: dict) -> tuple[sp.Rational, str]:
+    mag = _magnitude(values)
+    tol = DEFAULT_RELATIVE_TOL * (mag if mag > 0 else 1)
+    return sp.Rational(f"{float(tol):.2g}"), "10^-3 x the largest magnitude among the data"
+
+
+def read_data(params: Parameters, data: dict, tol=None) -> Data:
+    """Check and read ``data`` (name -> value) against ``params``; missing names take the
+    book's values. ``tol`` applies to measured data only (``params.measured``).
+
+    Raises:
+        TypeError: an unknown name (the message lists the exercise's parameters), a bad
+            type, or ``tol`` given for an exercise whose data are not measurements.
+        ValueError: a bad shape or value, or ``tol <= 0``.
+    """
+    unknown = [k for k in data if k not in params.names]
+    if unknown:
+        have = ", ".join(params.names) if params.names else "none (no numeric data)"
+        raise TypeError(f"{params.exercise} has no parameter {unknown[0]!r}; its parameters "
+                        f"are: {have}")
+    values, floats = {}, []
+    for p in params:
+        if p.name in data:
+            values[p.name], was_float = read_value(p, data[p.name])
+            if was_float:
+                floats.append(p.name)
+        else:
+            values[p.name] = p.default
+    out = Data(values, tuple(floats))
+    if floats:
+        out.notes.append(f"Floats are measurements: {', '.join(floats)} were given as "
+                         f"floats, each converted exactly to the binary fraction it stores "
+                         f"(0.1 is 3602879701896397/36028797018963968); give strings such "
+                         f"as '0.1' or '1/3' for exact data.")
+    if tol is not None:
+        if not params.measured:
+            raise TypeError(f"tol: the data of {params.exercise} are not measurements; tol "
+                            f"applies to Exercises 3.4, 3.14 and 3.19")
+        if isinstance(tol, float):
+            tol = repr(tol)  # a tolerance is not data: read 1e-3 as the decimal it shows
+        out.tol, _ = _scalar(tol, "tol")
+        if not out.tol > 0:
+            raise ValueError(f"tol: expected a positive number, got {tol!r}")
+        if not out.tol.is_Rational:
+            out.tol = sp.Rational(str(sp.N(out.tol, 30)))
+    elif floats and params.measured:
+        out.tol, how = (params.default_tol or _default_tol)(values)
+        out.tol_default = True
+    if out.tol is not None:
+        how = f"the default, {how}" if out.tol_default else "as given"
+        out.notes.append(f"Measured data: compatibility is judged within tol = {out.tol} "
+                         f"(~ {float(out.tol):.3g}; {how}); the answer is the least-squares "
+                         f"one, with its residual.")
+    return out

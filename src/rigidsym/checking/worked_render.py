@@ -1,0 +1,246 @@
+"""Rendering of a worked solution: terminal text, Markdown, HTML with MathML, LaTeX; JSON values.
+
+The HTML is what a notebook shows (:meth:`Solution._repr_html_`): the Markdown rendering
+converted by markdown-it-py, each formula through :func:`rigidsym.printing.mathml.latex_to_mathml`
+(MathML Core, as the HTML report). The LaTeX (:meth:`Solution._repr_latex_`) is a
+document fragment for nbconvert's LaTeX/PDF export.
+"""
+
+from __future__ import annotations
+
+import html
+from typing import Protocol
+
+import sympy as sp
+
+
+class Solution(Protocol):
+    """What the renderers read of a :class:`rigidsym.checking.worked.Solution` (declared
+    here so that this module does not import the one that imports it)."""
+
+    id: str
+    title: str
+    statement: str
+    citation: str
+    given: dict
+    steps: list
+    answers: dict
+    checks: list
+    assumptions: list
+    status: str
+    extra: str
+    reason: str
+
+    @property
+    def checked(self) -> bool: ...
+
+__all__ = ["to_json_value", "render_text", "render_markdown", "render_html", "render_latex"]
+
+
+def to_json_value(v):
+    """A sympy value as JSON: ``str()`` that ``sympify`` reads back; matrices nested."""
+    if isinstance(v, sp.MatrixBase):
+        return [[str(x) for x in v.row(i)] for i in range(v.rows)]
+    if isinstance(v, list | tuple):
+        return [to_json_value(x) for x in v]
+    if isinstance(v, str):
+        return v
+    return str(sp.sympify(v))
+
+
+def _float_of(v) -> str:
+    if isinstance(v, str):
+        return ""
+    try:
+        if isinstance(v, sp.MatrixBase):
+            if v.free_symbols or all(x.is_Integer for x in v):
+                return ""
+            return str(sp.N(v, 6).tolist())
+        v = sp.sympify(v)
+        if not isinstance(v, sp.Expr) or v.free_symbols or v.is_number is not True:
+            return ""
+        f = sp.N(v, 6)
+        return "" if f == v else str(f)
+    except (TypeError, ValueError, sp.SympifyError):
+        return ""
+
+
+def _pretty(v) -> str:
+    if isinstance(v, str):
+        return v
+    return sp.pretty(v, use_unicode=True, wrap_line=False)
+
+
+def render_text(s: Solution) -> str:
+    """Terminal rendering: statement, given, numbered steps, answers, checks."""
+    out = [f"Exercise {s.id[2:]}: {s.title}", f"  {s.citation}", "", s.statement, ""]
+    if s.assumptions:
+        out.append("Assumptions:")
+        out += [f"  - {a}" for a in s.assumptions]
+        out.append("")
+    if s.given:
+        out.append("Given:")
+        for k, v in s.given.items():
+            out.append(f"  {k} =")
+            out += ["    " + ln for ln in _pretty(v).splitlines()]
+        out.append("")
+    out.append("Solution:")
+    for i, st in enumerate(s.steps, 1):
+        out.append(f"  Step {i}. {st.name}: {st.why}")
+        out += ["      " + ln for ln in _pretty(st.expr).splitlines()]
+    out.append("")
+    if s.status == "ill-posed":
+        out += [f"Ill-posed: {s.reason}", "", "status: ill-posed; checked: false"]
+        return "\n".join(out)
+    out.append("Answers:")
+    for k, v in s.answers.items():
+        f = _float_of(v)
+        out.append(f"  {k} =" + (f"   (~ {f})" if f else ""))
+        out += ["    " + ln for ln in _pretty(v).splitlines()]
+    if s.extra:
+        out += ["", s.extra]
+    out.append("")
+    out.append("Machine checks:")
+    for c in s.checks:
+        out.append(f"  [{'ok' if c.passed else 'FAIL'}] {c.name}: {c.detail}")
+    out.append(f"\nstatus: {s.status}; checked: {str(s.checked).lower()}")
+    return "\n".join(out)
+
+
+def _latex(v) -> str:
+    if isinstance(v, str):
+        return v
+    return f"$${sp.latex(v)}$$"
+
+
+_REPORT_MARKS = ("[x]", "[ ]")
+
+
+def render_markdown(s: Solution, *, level: int = 2, statement: bool = True,
+                    checks: bool = True, marks: tuple[str, str] = _REPORT_MARKS) -> str:
+    """Markdown rendering (LaTeX maths) for the report.
+
+    ``level`` is the heading level; ``statement=False`` leaves out the quoted statement
+    (a notebook shows it above), ``checks=False`` the machine checks; ``marks`` prefix
+    passed and failed checks.
+    """
+    out = [f'{"#" * level} Exercise {s.id[2:]}: {s.title} <a id="ex-{s.id[2:]}"></a>', "",
+           f"*{s.citation}*", ""]
+    if statement:
+        out += [f"> {s.statement}", ""]
+    out += [f"**Status:** {s.status}; **checked:** {str(s.checked).lower()}", ""]
+    if s.status == "ill-posed":
+        out[-2:] = [f"**Status:** ill-posed: {s.reason}", ""]
+    if s.assumptions:
+        out.append("**Assumptions**")
+        out += [f"- {a}" for a in s.assumptions] + [""]
+    if s.given:
+        out.append("**Given**")
+        out += [f"- `{k}` = {_latex(v)}" for k, v in s.given.items()] + [""]
+    out.append("**Solution**")
+    out.append("")
+    for i, st in enumerate(s.steps, 1):
+        out += [f"{i}. *{st.name}*: {st.why}", "", f"   {_latex(st.expr)}", ""]
+    if s.status == "ill-posed":
+        out += [f"**Ill-posed:** {s.reason}", ""]
+        return "\n".join(out)
+    out.append("**Answers**")
+    out.append("")
+    for k, v in s.answers.items():
+        f = _float_of(v)
+        out += [f"- `{k}` = {_latex(v)}" + (f" ≈ `{f}`" if f else ""), ""]
+    if s.extra:
+        out += [s.extra, ""]
+    if checks:
+        out += ["**Machine checks**", ""]
+        out += [f"- {marks[0] if c.passed else marks[1]} {c.name}: {c.detail}"
+                for c in s.checks]
+        out.append("")
+    return "\n".join(out)
+
+
+def render_html(s: Solution) -> str:
+    """The solution as an HTML fragment, maths as MathML (what a notebook displays).
+
+    Returns:
+        HTML text: the Markdown rendering converted by markdown-it-py, each ``$$...$$``
+        formula through :func:`latex_to_mathml` (a formula the converter rejects is shown
+        as its LaTeX source in ``<code>``).
+    """
+    from markdown_it import MarkdownIt
+    from mdit_py_plugins.dollarmath import dollarmath_plugin
+
+    from rigidsym.printing.mathml import latex_to_mathml
+
+    def render_math(content: str, opts: dict) -> str:
+        display = opts.get("display_mode", False)
+        try:
+            m = latex_to_mathml(content, display=display)
+        except ValueError:
+            return f"<code>{html.escape(content)}</code>"
+        # inline styles survive a notebook's sanitiser: a font with a MATH table (so that
+        # brackets stretch), and block formulas beside their label, not centred
+        return m.replace("<math ", f'<math style="{_MATH_STYLE}{_BLOCK_STYLE if display else ""}" ',
+                         1)
+
+    md = MarkdownIt("commonmark", {"html": True}).enable("table")
+    md.use(dollarmath_plugin, double_inline=True, renderer=render_math)
+    body = md.render(render_markdown(s, level=3, statement=False, checks=False))
+    return f'<div class="rigidsym-solution">{body}{_checks_html(s)}</div>'
+
+
+def _checks_html(s: Solution) -> str:
+    """The machine checks folded under a one-line verdict (``<details>``)."""
+    if not s.checks:
+        return ""
+    n = sum(c.passed for c in s.checks)
+    items = "".join(f"<li>{'✓' if c.passed else '✗ FAILED:'} {html.escape(c.name)}: "
+                    f"<small>{html.escape(c.detail)}</small></li>" for c in s.checks)
+    return (f"<details><summary><b>Machine checks</b>: {n} of {len(s.checks)} passed"
+            f"</summary><ul>{items}</ul></details>")
+
+
+_MATH_STYLE = ("font-family: math, 'STIX Two Math', 'Latin Modern Math', 'STIX Math', "
+               "'DejaVu Math TeX Gyre', serif;")
+_BLOCK_STYLE = " display: inline-block; margin: 0.2em 0.6em; vertical-align: middle;"
+
+_TEX_SPECIAL = {"\\": r"\textbackslash{}", "&": r"\&", "%": r"\%", "$": r"\$", "#": r"\#",
+                "_": r"\_", "{": r"\{", "}": r"\}", "~": r"\textasciitilde{}",
+                "^": r"\textasciicircum{}"}
+
+
+def _tex(text: str) -> str:
+    return "".join(_TEX_SPECIAL.get(ch, ch) for ch in text)
+
+
+def _tex_value(v) -> str:
+    return _tex(v) if isinstance(v, str) else f"\\[{sp.latex(v)}\\]"
+
+
+def render_latex(s: Solution) -> str:
+    """The solution as a LaTeX fragment (``amsmath``), for nbconvert's LaTeX and PDF export.
+
+    Text is escaped; values are sympy's LaTeX in display maths.
+    """
+    out = [f"\\subsection*{{Exercise {s.id[2:]}: {_tex(s.title)}}}",
+           f"\\textit{{{_tex(s.citation)}}}\\par", f"\\begin{{quote}}{_tex(s.statement)}"
+           "\\end{quote}"]
+    if s.assumptions:
+        out += ["\\paragraph{Assumptions}", "\\begin{itemize}"]
+        out += [f"\\item {_tex(a)}" for a in s.assumptions] + ["\\end{itemize}"]
+    if s.given:
+        out += ["\\paragraph{Given}", "\\begin{itemize}"]
+        out += [f"\\item \\texttt{{{_tex(k)}}} = {_tex_value(v)}" for k, v in s.given.items()]
+        out += ["\\end{itemize}"]
+    out += ["\\paragraph{Solution}", "\\begin{enumerate}"]
+    out += [f"\\item \\textit{{{_tex(st.name)}}}: {_tex(st.why)} {_tex_value(st.expr)}"
+            for st in s.steps]
+    out += ["\\end{enumerate}"]
+    if s.status == "ill-posed":
+        return "\n".join(out + [f"\\paragraph{{Ill-posed}} {_tex(s.reason)}"])
+    out += ["\\paragraph{Answers}", "\\begin{itemize}"]
+    out += [f"\\item \\texttt{{{_tex(k)}}} = {_tex_value(v)}" for k, v in s.answers.items()]
+    out += ["\\end{itemize}", "\\paragraph{Machine checks}", "\\begin{itemize}"]
+    marks = {True: r"[$\checkmark$]", False: r"[$\times$]"}
+    out += [f"\\item{marks[c.passed]} {_tex(c.name)}" for c in s.checks]
+    return "\n".join(out + ["\\end{itemize}"])

@@ -1,0 +1,118 @@
+"""The chapter-3 exercises, to run, see and vary: solve on your own data, draw, check.
+
+A thin front to the worked-exercise framework: the exercises themselves are reached by
+their configured module name, as the machinery reaches the book.
+
+Example:
+    >>> import rigidsym.exercises as ex
+    >>> ex.parameters("ex3.4").names
+    ['n_1', 'f_1', 'n_2', 'f_2']
+    >>> s = ex.solve("ex3.4", f_2=[1, 1, 1])      # readings that are not compatible
+    >>> s.status
+    'ill-posed'
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from rigidsym.checking.worked import (
+    EXERCISE_IDS,
+    IllPosed,
+    Param,
+    Parameters,
+    Solution,
+    exercise_module,
+    normalise_id,
+)
+from rigidsym.checking.worked import parameters as _parameters
+from rigidsym.checking.worked import solve as _solve
+
+__all__ = ["solve", "parameters", "figure", "write_notebook", "EXERCISE_IDS", "Solution",
+           "Parameters", "Param", "IllPosed"]
+
+
+def solve(exercise: str, /, *, tol=None, **data) -> Solution:
+    """Solve exercise ``exercise`` of chapter 3 on the book's data or on ``data``.
+
+    Every step, answer and machine check is recomputed on the data; the checks stay
+    independent of the solution path.
+
+    Args:
+        exercise: ``"ex3.4"``, ``"3.4"``.
+        tol: tolerance for measured (float) data, in the data's units (Exercises 3.4, 3.14,
+            3.19); default: set from the data and stated in the solution. Given for exact
+            data, it also selects the measured (least-squares) path.
+        **data: the exercise's parameters by name (see :func:`parameters`): a scalar is an
+            int, a ``Fraction``, a decimal string (``"0.1"`` is 1/10), a string such as
+            ``"sqrt(3)/2"``, a sympy number, or a float (a measurement, converted exactly);
+            a vector is 3 (or 6) of them (list, tuple, NumPy array, sympy Matrix); a matrix
+            3 rows of 3. Units as :func:`parameters` lists them (SI: m, N, N m, kg m^2).
+
+    Returns:
+        The :class:`Solution`: ``steps``, ``answers`` (exact sympy; vectors as 3 x 1
+        matrices), ``checks``, ``status`` (``"solved"``, or ``"ill-posed"`` with
+        ``reason``, one sentence, when the data admit no answer). It displays itself as
+        HTML with MathML in a notebook. Cached on the exercise and the data.
+
+    Raises:
+        ValueError: ``exercise`` names no exercise 3.1-3.21; a value has the wrong shape,
+            is not a finite real number, or ``tol <= 0``.
+        TypeError: an unknown parameter name, a value of the wrong type, or ``tol`` for
+            an exercise whose data are not measurements. Messages name the parameter.
+    """
+    return _solve(exercise, tol=tol, **data)
+
+
+def parameters(exercise: str) -> Parameters:
+    """The given data of ``exercise``: name, the book's value, shape, unit and meaning.
+
+    Returns:
+        A :class:`Parameters` table (iterable of :class:`Param`; ``.names``,
+        ``.defaults()``; shown as a table in a notebook). The ten exercises with no
+        numeric data (3.3, 3.8, 3.9, 3.13, 3.15-3.18, 3.20, 3.21) give an empty table and
+        a sentence (``.note``).
+
+    Raises:
+        ValueError: ``exercise`` names no exercise 3.1-3.21.
+    """
+    return _parameters(exercise)
+
+
+def figure(solution: Solution):
+    """The figure of a solved exercise, drawn from its own data and answers.
+
+    Returns:
+        A :class:`matplotlib.figure.Figure` (3-D axes for the geometric exercises; not
+        registered with pyplot), or ``None`` when the exercise has no figure or the
+        solution is ill-posed.
+
+    Raises:
+        TypeError: if ``solution`` is not a :class:`Solution`.
+    """
+    if not isinstance(solution, Solution):
+        raise TypeError(f"solution: expected a Solution from rigidsym.exercises.solve, got "
+                        f"{type(solution).__name__}")
+    draw = getattr(exercise_module(solution.id), "figure", None)
+    if draw is None or solution.status != "solved":
+        return None
+    return draw(solution)
+
+
+def write_notebook(exercise: str, path: str | Path, **data) -> Path:
+    """Write the notebook of ``exercise`` to ``path``; with ``data``, its data cell holds
+    them instead of the book's values (checked as :func:`solve` checks them).
+
+    Returns:
+        The path written (atomically).
+
+    Raises:
+        ModuleNotFoundError: nbformat is missing (``pip install "rigidsym[notebooks]"``).
+        ValueError, TypeError: as :func:`solve`, for the exercise id and the data.
+        OSError: the file cannot be written.
+    """
+    from rigidsym._io import write_atomic
+    from rigidsym.notebooks import notebook_text
+
+    ex_id = normalise_id(exercise)
+    return write_atomic(Path(path), notebook_text(ex_id, data or None))
