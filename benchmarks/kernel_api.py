@@ -155,7 +155,7 @@ def _median_us(f, rounds: int, budget: float = 0.05) -> float:
     return statistics.median(_time(f, budget) * 1e6 for _ in range(rounds))
 
 
-def measure_fast(rounds: int) -> dict:
+def measure_fast(rounds: int, old_dir: Path | None = None) -> dict:
     """N = 1, N = 1e3 and float32 of :data:`FAST`, one process, interleaved rounds."""
     from rigidsym import kernels as K
     from rigidsym.kernels import _state
@@ -194,11 +194,11 @@ def measure_fast(rounds: int) -> dict:
         for k, f in calls.items():
             res[k].append(_time(f, 0.02) * 1e6)
     data = {"|".join(k): statistics.median(v) for k, v in res.items()}
-    data.update(measure_f32(rounds))
+    data.update(measure_f32(rounds, old_dir=old_dir))
     return data
 
 
-def measure_f32(rounds: int, n: int = 1_000_000) -> dict:
+def measure_f32(rounds: int, n: int = 1_000_000, old_dir: Path | None = None) -> dict:
     """float64 and float32 batch at N = 1e6 (caller outputs, one thread), and the float32
     error in ulp against the float64 kernel at the same float32 inputs (whose own error is
     ~1e-15, tests/test_kernels.py)."""
@@ -216,10 +216,22 @@ def measure_f32(rounds: int, n: int = 1_000_000) -> dict:
         o64 = [np.empty((n,) + tuple(o["shape"])) for o in m["outputs"]]
         b32 = K.batch_function(name, "c", threads=1, dtype=np.float32)
         b64 = K.batch_function(name, "c", threads=1)
-        t32, t64 = [], []
+        old = None
+        if old_dir is not None:    # the other build's float32 (float64 arithmetic inside)
+            from rigidsym.kernels import _ext
+
+            mod = _ext.load(old_dir).module
+            k = mod.kernels.index(name)
+            arrays = ins + [np.empty_like(o) for o in o32]
+            old = (lambda b=mod.batch, k=k, a=arrays: b(k, True, n, 1, *a))
+        t32, t64, told = [], [], []
         for _ in range(rounds):
             t64.append(_time(lambda b=b64, a=ins64 + o64: b(*a), 0.1) * 1e9 / n)
             t32.append(_time(lambda b=b32, a=ins + o32: b(*a), 0.1) * 1e9 / n)
+            if old is not None:
+                told.append(_time(old, 0.1) * 1e9 / n)
+        if told:
+            out[f"f32|{name}|old_f32_ns"] = min(told)
         got = np.concatenate([o.reshape(n, -1) for o in o32], axis=1).astype(np.float64)
         ref = np.concatenate([o.reshape(n, -1) for o in o64], axis=1)
         scale = np.abs(ref).max(axis=1)
@@ -252,11 +264,14 @@ def fast_section(d: dict, note: str, ab: dict | None) -> str:
         lines.append(f"| `{name}` | {b:.2f} | {u:.2f} | {u - b:+.2f} | {c:.2f} | "
                      f"{c / b:.2f} |")
     lines += ["", "### float32 at N = 1e6 (ns/sample, caller outputs, one thread)", "",
-              "| kernel | float64 | float32 | float64 / float32 | target | error (ulp of "
-              "float32) |", "|---|---:|---:|---:|---:|---:|"]
+              "| kernel | float64 | float32 | float64 / float32 | target | float32 before "
+              "(float64 arithmetic) | error (ulp of float32) |",
+              "|---|---:|---:|---:|---:|---:|---:|"]
     for name, target in F32_TARGET.items():
         a, b, e = (d[f"f32|{name}|{w}"] for w in ("f64_ns", "f32_ns", "ulp"))
-        lines.append(f"| `{name}` | {a:.2f} | {b:.2f} | {a / b:.2f} | {target} | {e:.2f} |")
+        o = d.get(f"f32|{name}|old_f32_ns")
+        lines.append(f"| `{name}` | {a:.2f} | {b:.2f} | {a / b:.2f} | {target} | "
+                     f"{'' if o is None else f'{o:.2f}'} | {e:.2f} |")
     if ab:
         lines += ["", "### C batch at N = 1e6, A/B in one process (ns/sample; geometric mean "
                   "over the public kernels)", "", "| threads | old | new | new / old |",
@@ -322,7 +337,7 @@ def main(argv=None) -> int:
     p.add_argument("--threads", default="1", help="--ab thread counts, e.g. 1,2")
     args = p.parse_args(argv)
     if args.fast:
-        data = measure_fast(args.rounds)
+        data = measure_fast(args.rounds, Path(args.ab) if args.ab else None)
         ab = None
         if args.ab:
             ab = {int(t): measure_ab(Path(args.ab), args.rounds, int(t))
