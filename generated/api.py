@@ -4,9 +4,11 @@
 """The public kernels of this generated directory as real Python functions.
 
 One function per public kernel of ``kernels.json``: its parameters are the kernel's
-arguments, then the keyword-only parameters common to every kernel. Each call goes through
-the checked evaluation (validation, broadcasting, singular handling, C with NumPy fallback)
-that :func:`rigidsym.kernels.load` binds to this module. Import them through
+arguments, then the keyword-only parameters common to every kernel. Each call goes to its
+entry point, which :func:`rigidsym.kernels.load` binds to this module: the compiled one
+(validation and evaluation in C for the common cases) or the checked evaluation in Python
+(validation, broadcasting, singular handling, C with NumPy fallback), with the same results
+and errors. Import them through
 :mod:`rigidsym.kernels` (the package's own kernels) or ``rigidsym.kernels.load(DIR)``.
 """
 
@@ -54,15 +56,18 @@ __all__ = [
 #: the checked evaluation of this directory, set by rigidsym.kernels.load()
 _SPACE: Any = None
 
+
+class _Unbound:
+    def __getattr__(self, name: str) -> Any:
+        raise RuntimeError(f"{__name__}: load it with rigidsym.kernels.load(), not directly")
+
+
+#: the kernels' entry points, set by rigidsym.kernels.load(): the compiled module's (the
+#: common cases validated and computed in C), or the Python path's (rigidsym.kernels._entries)
+_F: Any = _Unbound()
+
 Out = NDArray[np.float64] | tuple[NDArray[np.float64], ...] | None
 OnSingular = Literal["raise", "nan"]
-
-
-def _call(name: str, args: tuple, **keywords: Any) -> Any:
-    space = _SPACE
-    if space is None:  # bound by rigidsym.kernels.load(), which also pickles these kernels
-        raise RuntimeError(f"{__name__}: load it with rigidsym.kernels.load(), not directly")
-    return space.call(name, args, **keywords)
 
 
 def H_matrix(
@@ -98,11 +103,7 @@ def H_matrix(
 
         Generated; 11 operations; math hash d161921036f1484c.
     """
-    return _call("H_matrix", (e, phi),
-                 out=out,
-                 check=check,
-                 on_singular=on_singular,
-                 threads=threads)
+    return _F.H_matrix(e, phi, out, check, on_singular, threads)
 
 
 def H_matrix_dot(
@@ -140,11 +141,7 @@ def H_matrix_dot(
 
         Generated; 34 operations; math hash 0c036980272247c8.
     """
-    return _call("H_matrix_dot", (e, phi, omega),
-                 out=out,
-                 check=check,
-                 on_singular=on_singular,
-                 threads=threads)
+    return _F.H_matrix_dot(e, phi, omega, out, check, on_singular, threads)
 
 
 def H_tilde(
@@ -180,11 +177,7 @@ def H_tilde(
 
         Generated; 11 operations; math hash 394d6fafe3d12373.
     """
-    return _call("H_tilde", (e, phi),
-                 out=out,
-                 check=check,
-                 on_singular=on_singular,
-                 threads=threads)
+    return _F.H_tilde(e, phi, out, check, on_singular, threads)
 
 
 def H_tilde_dot(
@@ -222,11 +215,7 @@ def H_tilde_dot(
 
         Generated; 32 operations; math hash a75606877943bdb2.
     """
-    return _call("H_tilde_dot", (e, phi, omega),
-                 out=out,
-                 check=check,
-                 on_singular=on_singular,
-                 threads=threads)
+    return _F.H_tilde_dot(e, phi, omega, out, check, on_singular, threads)
 
 
 def L_matrix(
@@ -262,11 +251,7 @@ def L_matrix(
 
         Generated; 48 operations; math hash ad587ca95a235ac2.
     """
-    return _call("L_matrix", (e, phi),
-                 out=out,
-                 check=check,
-                 on_singular=on_singular,
-                 threads=threads)
+    return _F.L_matrix(e, phi, out, check, on_singular, threads)
 
 
 def L_matrix_dot(
@@ -304,11 +289,7 @@ def L_matrix_dot(
 
         Generated; 98 operations; math hash bc3db842eb2cf774.
     """
-    return _call("L_matrix_dot", (e, phi, omega),
-                 out=out,
-                 check=check,
-                 on_singular=on_singular,
-                 threads=threads)
+    return _F.L_matrix_dot(e, phi, omega, out, check, on_singular, threads)
 
 
 def L_tilde(
@@ -348,11 +329,7 @@ def L_tilde(
 
         Generated; 10 operations; math hash 224ea51c5b2204c1.
     """
-    return _call("L_tilde", (e, phi),
-                 out=out,
-                 check=check,
-                 on_singular=on_singular,
-                 threads=threads)
+    return _F.L_tilde(e, phi, out, check, on_singular, threads)
 
 
 def L_tilde_dot(
@@ -394,11 +371,7 @@ def L_tilde_dot(
 
         Generated; 91 operations; math hash 4a1f179ad0d8d060.
     """
-    return _call("L_tilde_dot", (e, phi, omega),
-                 out=out,
-                 check=check,
-                 on_singular=on_singular,
-                 threads=threads)
+    return _F.L_tilde_dot(e, phi, omega, out, check, on_singular, threads)
 
 
 def N_matrix(
@@ -438,11 +411,7 @@ def N_matrix(
 
         Generated; 31 operations; math hash 717c2182df7e8788.
     """
-    return _call("N_matrix", (e, phi),
-                 out=out,
-                 check=check,
-                 on_singular=on_singular,
-                 threads=threads)
+    return _F.N_matrix(e, phi, out, check, on_singular, threads)
 
 
 def N_matrix_dot(
@@ -484,11 +453,7 @@ def N_matrix_dot(
 
         Generated; 199 operations; math hash a50ef6111f8ca170.
     """
-    return _call("N_matrix_dot", (e, phi, omega),
-                 out=out,
-                 check=check,
-                 on_singular=on_singular,
-                 threads=threads)
+    return _F.N_matrix_dot(e, phi, omega, out, check, on_singular, threads)
 
 
 def N_tilde(
@@ -524,11 +489,7 @@ def N_tilde(
 
         Generated; 13 operations; math hash 27fa6424b1903ca5.
     """
-    return _call("N_tilde", (e, phi),
-                 out=out,
-                 check=check,
-                 on_singular=on_singular,
-                 threads=threads)
+    return _F.N_tilde(e, phi, out, check, on_singular, threads)
 
 
 def N_tilde_dot(
@@ -570,11 +531,7 @@ def N_tilde_dot(
 
         Generated; 79 operations; math hash b1c3eb794fbb8245.
     """
-    return _call("N_tilde_dot", (e, phi, omega),
-                 out=out,
-                 check=check,
-                 on_singular=on_singular,
-                 threads=threads)
+    return _F.N_tilde_dot(e, phi, omega, out, check, on_singular, threads)
 
 
 def inertia_at_point(
@@ -614,11 +571,7 @@ def inertia_at_point(
 
         Generated; 29 operations; math hash 421dca07df5d4b7a.
     """
-    return _call("inertia_at_point", (I_C, m, c, a),
-                 out=out,
-                 check=check,
-                 on_singular=on_singular,
-                 threads=threads)
+    return _F.inertia_at_point(I_C, m, c, a, out, check, on_singular, threads)
 
 
 def inertia_dyad_at_point(
@@ -658,11 +611,7 @@ def inertia_dyad_at_point(
 
         Generated; 36 operations; math hash 68258707f5bb9e80.
     """
-    return _call("inertia_dyad_at_point", (I_C, m, c, a),
-                 out=out,
-                 check=check,
-                 on_singular=on_singular,
-                 threads=threads)
+    return _F.inertia_dyad_at_point(I_C, m, c, a, out, check, on_singular, threads)
 
 
 def instant_screw_axis(
@@ -706,11 +655,7 @@ def instant_screw_axis(
 
         Generated; 56 operations; math hash bbbb3fe59daee446.
     """
-    return _call("instant_screw_axis", (omega, a, a_dot),
-                 out=out,
-                 check=check,
-                 on_singular=on_singular,
-                 threads=threads)
+    return _F.instant_screw_axis(omega, a, a_dot, out, check, on_singular, threads)
 
 
 def kinetic_energy(
@@ -750,11 +695,7 @@ def kinetic_energy(
 
         Generated; 33 operations; math hash 59e2107c6b1479ae.
     """
-    return _call("kinetic_energy", (I_C, m, omega, c_dot),
-                 out=out,
-                 check=check,
-                 on_singular=on_singular,
-                 threads=threads)
+    return _F.kinetic_energy(I_C, m, omega, c_dot, out, check, on_singular, threads)
 
 
 def moving_frame_acceleration(
@@ -800,11 +741,7 @@ def moving_frame_acceleration(
 
         Generated; 153 operations; math hash 9ff5554b1ab9fff0.
     """
-    return _call("moving_frame_acceleration", (o_ddot, Q, omega, omega_dot, rho_M, rho_dot_M, rho_ddot_M),
-                 out=out,
-                 check=check,
-                 on_singular=on_singular,
-                 threads=threads)
+    return _F.moving_frame_acceleration(o_ddot, Q, omega, omega_dot, rho_M, rho_dot_M, rho_ddot_M, out, check, on_singular, threads)
 
 
 def natural_invariants_from_rotation(
@@ -845,11 +782,7 @@ def natural_invariants_from_rotation(
 
         Generated; 172 operations; math hash 445339cc0a3a5a8f.
     """
-    return _call("natural_invariants_from_rotation", (Q,),
-                 out=out,
-                 check=check,
-                 on_singular=on_singular,
-                 threads=threads)
+    return _F.natural_invariants_from_rotation(Q, out, check, on_singular, threads)
 
 
 def newton_euler_wrench(
@@ -891,11 +824,7 @@ def newton_euler_wrench(
 
         Generated; 45 operations; math hash a4f13db2095d7265.
     """
-    return _call("newton_euler_wrench", (I_C, m, omega, omega_dot, c_ddot),
-                 out=out,
-                 check=check,
-                 on_singular=on_singular,
-                 threads=threads)
+    return _F.newton_euler_wrench(I_C, m, omega, omega_dot, c_ddot, out, check, on_singular, threads)
 
 
 def plucker_from_points(
@@ -935,11 +864,7 @@ def plucker_from_points(
 
         Generated; 24 operations; math hash 37ca360961ff48ba.
     """
-    return _call("plucker_from_points", (p1, p2),
-                 out=out,
-                 check=check,
-                 on_singular=on_singular,
-                 threads=threads)
+    return _F.plucker_from_points(p1, p2, out, check, on_singular, threads)
 
 
 def plucker_transfer(
@@ -977,11 +902,7 @@ def plucker_transfer(
 
         Generated; 15 operations; math hash 69d9b4ff4ea5cbea.
     """
-    return _call("plucker_transfer", (kappa_A, a, b),
-                 out=out,
-                 check=check,
-                 on_singular=on_singular,
-                 threads=threads)
+    return _F.plucker_transfer(kappa_A, a, b, out, check, on_singular, threads)
 
 
 def point_acceleration(
@@ -1023,11 +944,7 @@ def point_acceleration(
 
         Generated; 36 operations; math hash bba0e838d11c478a.
     """
-    return _call("point_acceleration", (a_ddot, omega, omega_dot, p, a),
-                 out=out,
-                 check=check,
-                 on_singular=on_singular,
-                 threads=threads)
+    return _F.point_acceleration(a_ddot, omega, omega_dot, p, a, out, check, on_singular, threads)
 
 
 def rotation_from_euler_rodrigues(
@@ -1061,11 +978,7 @@ def rotation_from_euler_rodrigues(
 
         Generated; 33 operations; math hash 59342dd978b76a46.
     """
-    return _call("rotation_from_euler_rodrigues", (eta,),
-                 out=out,
-                 check=check,
-                 on_singular=on_singular,
-                 threads=threads)
+    return _F.rotation_from_euler_rodrigues(eta, out, check, on_singular, threads)
 
 
 def rotation_from_natural_invariants(
@@ -1101,11 +1014,7 @@ def rotation_from_natural_invariants(
 
         Generated; 37 operations; math hash 3a598761ac6bf1a3.
     """
-    return _call("rotation_from_natural_invariants", (e, phi),
-                 out=out,
-                 check=check,
-                 on_singular=on_singular,
-                 threads=threads)
+    return _F.rotation_from_natural_invariants(e, phi, out, check, on_singular, threads)
 
 
 def screw_axis_point(
@@ -1149,11 +1058,7 @@ def screw_axis_point(
 
         Generated; 84 operations; math hash e89a638961851614.
     """
-    return _call("screw_axis_point", (e, phi, a, a_prime),
-                 out=out,
-                 check=check,
-                 on_singular=on_singular,
-                 threads=threads)
+    return _F.screw_axis_point(e, phi, a, a_prime, out, check, on_singular, threads)
 
 
 def screw_of_displacement(
@@ -1201,11 +1106,7 @@ def screw_of_displacement(
 
         Generated; 520 operations; math hash 24c2ead304ca194c.
     """
-    return _call("screw_of_displacement", (Q, a, a_prime),
-                 out=out,
-                 check=check,
-                 on_singular=on_singular,
-                 threads=threads)
+    return _F.screw_of_displacement(Q, a, a_prime, out, check, on_singular, threads)
 
 
 def twist_transfer(
@@ -1243,11 +1144,7 @@ def twist_transfer(
 
         Generated; 15 operations; math hash 0b921c0c211334f5.
     """
-    return _call("twist_transfer", (t_A, a, p),
-                 out=out,
-                 check=check,
-                 on_singular=on_singular,
-                 threads=threads)
+    return _F.twist_transfer(t_A, a, p, out, check, on_singular, threads)
 
 
 def twist_transfer_matrix(
@@ -1283,11 +1180,7 @@ def twist_transfer_matrix(
 
         Generated; 6 operations; math hash b790e8d04828afbd.
     """
-    return _call("twist_transfer_matrix", (a, p),
-                 out=out,
-                 check=check,
-                 on_singular=on_singular,
-                 threads=threads)
+    return _F.twist_transfer_matrix(a, p, out, check, on_singular, threads)
 
 
 def wrench_axis(
@@ -1329,11 +1222,7 @@ def wrench_axis(
 
         Generated; 59 operations; math hash 6e28211949601ec4.
     """
-    return _call("wrench_axis", (w_A, a),
-                 out=out,
-                 check=check,
-                 on_singular=on_singular,
-                 threads=threads)
+    return _F.wrench_axis(w_A, a, out, check, on_singular, threads)
 
 
 def wrench_transfer(
@@ -1371,11 +1260,7 @@ def wrench_transfer(
 
         Generated; 15 operations; math hash 719fe1e42bb6247d.
     """
-    return _call("wrench_transfer", (w_A, a, p),
-                 out=out,
-                 check=check,
-                 on_singular=on_singular,
-                 threads=threads)
+    return _F.wrench_transfer(w_A, a, p, out, check, on_singular, threads)
 
 
 def wrench_transfer_matrix(
@@ -1411,8 +1296,4 @@ def wrench_transfer_matrix(
 
         Generated; 6 operations; math hash d1200d894b2faa3f.
     """
-    return _call("wrench_transfer_matrix", (a, p),
-                 out=out,
-                 check=check,
-                 on_singular=on_singular,
-                 threads=threads)
+    return _F.wrench_transfer_matrix(a, p, out, check, on_singular, threads)

@@ -76,7 +76,7 @@ def _bind_module(mod: types.ModuleType) -> KernelSpace:
         space = _state.builtin()
     else:
         space = KernelSpace.from_directory(here)
-    mod._SPACE = space
+    space.bind_api(mod)
     return space
 
 

@@ -326,11 +326,20 @@ def _tasks(cdir: Path, cfg: Config, tmp: Path) -> list[tuple[list[str], Path]]:
            *(f"-DRIGIDSYM_PATH_{p.suffix}" for p in cfg.paths),
            f"-DRIGIDSYM_SOURCES={json.dumps(sources_hash(cdir))}",
            f"-DRIGIDSYM_BUILD={json.dumps(cfg.describe())}",
-           *inc, "-I", sysconfig.get_paths()["include"], "-c", str(cdir / MODULE_SOURCE),
+           *inc, "-I", sysconfig.get_paths()["include"], "-I", _numpy_include(),
+           "-c", str(cdir / MODULE_SOURCE),
            "-o", str(tmp / "module.o")]
     tasks.append((mod, 1 << 30))      # first: its errors (Python headers) show early
     tasks.sort(key=lambda t: -t[1])
     return [(argv, Path(argv[argv.index("-o") + 1])) for argv, _ in tasks]
+
+
+def _numpy_include() -> str:
+    """NumPy's C headers: the module's entry points (rigidsym_fast.h) allocate and read
+    ndarrays through NumPy's C API (NumPy is a build requirement, pyproject.toml)."""
+    import numpy
+
+    return numpy.get_include()
 
 
 def _run(argv: list[str]) -> None:

@@ -21,7 +21,7 @@ from typing import Any
 
 import numpy as np
 
-from rigidsym.kernels import _dask, _state
+from rigidsym.kernels import _dask, _entries, _state
 from rigidsym.kernels._errors import NonFiniteResultError, SingularConfigurationError
 from rigidsym.kernels._scale import (
     MIN_PARALLEL,
@@ -169,6 +169,9 @@ class KernelSpace:
     _clib: Any = None
     _cindex: dict = field(default_factory=dict)
     _c_failed: bool = False
+    _entries: Any = None        # the C entry points by name (rigidsym.kernels._entries)
+    _py_entries: Any = None
+    _apis: list = field(default_factory=list)
 
     @classmethod
     def from_directory(cls, directory: Path, prefix: str | None = None) -> KernelSpace:
@@ -190,6 +193,20 @@ class KernelSpace:
             key = hashlib.sha256(str(directory).encode()).hexdigest()[:12]
             prefix = f"rigidsym._loaded_{key}"
         return cls(directory, prefix, meta)
+
+    def bind_api(self, mod) -> None:
+        """Bind a generated ``api`` module to this space (its ``_SPACE`` and ``_F``)."""
+        _entries.bind_api(self, mod)
+        self._apis.append(mod)
+
+    def entries(self):
+        """The per-call entry points by kernel name (:mod:`rigidsym.kernels._entries`)."""
+        return _entries.entries(self, UNIT_TOL, ORTHO_TOL)
+
+    def entry(self, name: str) -> Callable:
+        """The entry point of kernel ``name``: ``f(*inputs, out, check, on_singular,
+        threads)``."""
+        return getattr(self.entries(), name)
 
     def numpy_kernel(self, name: str) -> Callable:
         f = self._numpy.get(name)
