@@ -20,6 +20,7 @@ from fractions import Fraction
 
 import mpmath
 
+from rigidsym.checking.bookpoint import describe_point
 from rigidsym.checking.evidence import (
     NUMERIC_DIGITS,
     NUMERIC_POINTS,
@@ -92,10 +93,17 @@ class _RelOutcome:
     label: str = ""
 
 
-def decide_rel(rel: Rel, model: dict, seed: int) -> _RelOutcome:
-    """Decide one relation exactly (shape check first, then the zero test)."""
+def decide_rel(rel: Rel, model: dict, seed: int, st: Statement | None = None) -> _RelOutcome:
+    """Decide one relation exactly (shape check first, then the zero test); a
+    counterexample is described in the book symbols of ``st`` when it is given."""
     ls, rs = shape_of(rel.lhs), shape_of(rel.rhs)
     lhs, rhs = explicit(rel.lhs, model), explicit(rel.rhs, model)
+    describe = None
+    if st is not None:
+        rels = st.printed + st.claims + (st.corrected or [])
+
+        def describe(plan, pt):
+            return describe_point(rel, model, rels, plan, pt, st.parametrisation)
     if ls != rs:
         plan = make_plan(_entries(lhs) + _entries(rhs))
         rng = random.Random(seed)
@@ -103,7 +111,7 @@ def decide_rel(rel: Rel, model: dict, seed: int) -> _RelOutcome:
         for _ in range(100):
             pt = {p: Fraction(rng.randint(-3, 3), rng.randint(1, 3)) for p in plan.params}
             try:
-                ce = _counterexample(lhs, rhs, pt, seed)
+                ce = _counterexample(lhs, rhs, pt, seed, describe)
                 break
             except ZeroDivisionError:
                 continue
@@ -112,7 +120,7 @@ def decide_rel(rel: Rel, model: dict, seed: int) -> _RelOutcome:
     diff = [a - b for a, b in zip(_entries(lhs), _entries(rhs), strict=True)]
     zr = decide_zero(diff, seed=seed)
     if zr.zero is False:
-        ce = _counterexample(lhs, rhs, zr.witness, seed)
+        ce = _counterexample(lhs, rhs, zr.witness, seed, describe)
         return _RelOutcome(False, "counterexample", zr.detail, ce, rel.label)
     return _RelOutcome(zr.zero, zr.method, zr.detail, None, rel.label)
 
@@ -195,7 +203,8 @@ def _check(eq: Equation, t0: float) -> Result:
             verdict, method, detail = ("undecided", "undecided",
                                        "a claim attached to the definition was not verified")
     else:
-        outs = [decide_rel(r, st.model, seed + i) for i, r in enumerate(st.printed + st.claims)]
+        outs = [decide_rel(r, st.model, seed + i, st)
+                for i, r in enumerate(st.printed + st.claims)]
         members = [member_record(r, "printed" if i < len(st.printed) else "claim", o)
                    for i, (r, o) in enumerate(zip(st.printed + st.claims, outs, strict=True))]
         zero, method, detail = _combine(outs)

@@ -126,7 +126,9 @@ def _exact_value(x, plan, pt):
     return one(x)
 
 
-def _counterexample(lhs, rhs, witness, seed) -> dict:
+def _counterexample(lhs, rhs, witness, seed, describe=None) -> dict:
+    """The readable exact counterexample; ``describe(plan, point)``, when given, adds the
+    book symbols there (:func:`rigidsym.checking.bookpoint.describe_point`)."""
     plan = make_plan(_entries(lhs) + _entries(rhs))
     diff = [a - b for a, b in zip(_entries(lhs), _entries(rhs), strict=True)] \
         if shape_of(lhs) == shape_of(rhs) else []
@@ -145,4 +147,6 @@ def _counterexample(lhs, rhs, witness, seed) -> dict:
     ce = {"point": point, "lhs": sp.sstr(lv), "rhs": sp.sstr(rv)}
     if shape_of(lhs) == shape_of(rhs):
         ce["residual"] = sp.sstr(lv - rv)
+    if describe is not None:
+        ce.update(describe(plan, pt))
     return ce

@@ -96,6 +96,11 @@ class Statement:
         defines: names of the symbols a definition introduces.
         claims: extra relations a definition or claim asserts that must hold (e.g. the unit
             norm of a direction just defined).
+        parametrisation: one sentence on how the model writes its own free variables
+            (those that are not book symbols), shown with a counterexample under "how the
+            point was chosen", e.g. ``"Q(t) is the rotation of the quaternion q + t u, so
+            that QᵀQ = 1 holds exactly"``. Constrained atoms (unit vectors, rotations,
+            angles) are described without it.
     """
 
     printed: list[Rel]
@@ -104,6 +109,7 @@ class Statement:
     corrected: list[Rel] | None = None
     defines: tuple[str, ...] = ()
     claims: list[Rel] = field(default_factory=list)
+    parametrisation: str = ""
 
 
 @dataclass(frozen=True)
@@ -233,9 +239,9 @@ def equation(eq_id: str, title: str, *, section: str | None = None,
                        singular, module, fn.__qualname__, _where(fn))
         old = REGISTRY.get(eq_id)
         if old is not None and (old.module, old.function) != (new.module, new.function):
-            raise ValueError(f"equation {eq_id} is declared twice: in {old.module}."
-                             f"{old.function} ({old.where}) and in {new.module}."
-                             f"{new.function} ({new.where})")
+            raise ValueError(f"equation {eq_id} is declared twice: by {old.function} at "
+                             f"{old.where} and by {new.function} at {new.where}; rename one "
+                             f"of the ids")
         # the same function declared again (a notebook cell run twice): the new one replaces it
         REGISTRY[eq_id] = new
         _BUILT.pop(eq_id, None)
