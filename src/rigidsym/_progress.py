@@ -78,10 +78,12 @@ class Reporter:
         command: the command's name, the head of each piped line (``rigidsym report``).
         enabled: ``False`` prints nothing (``--quiet``).
         stream: where to write (default ``sys.stderr``); a terminal gets the live display.
+        keep: on a terminal, leave one line per finished phase (``False``: the display
+            vanishes, for a command whose own output follows at once, ``show``).
     """
 
-    def __init__(self, command: str, enabled: bool = True, stream=None):
-        self.command, self.enabled = command, enabled
+    def __init__(self, command: str, enabled: bool = True, stream=None, keep: bool = True):
+        self.command, self.enabled, self.keep = command, enabled, keep
         self.stream = stream
         self.bar = None
         self.live = False
@@ -149,7 +151,8 @@ class Reporter:
                 self.bar.remove_task(ph._task)
             tail = f": {ph.summary}" if ph.summary else ""
             if self.bar is not None:
-                self.say(f"✓ {what}: {took}{tail}")
+                if self.keep:
+                    self.say(f"✓ {what}: {took}{tail}")
             elif self.enabled:
                 print(f"{self.command}: {what}: done in {took}{tail}", file=self._stream(),
                       flush=True)

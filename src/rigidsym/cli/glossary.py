@@ -8,7 +8,7 @@ import textwrap
 
 __all__ = ["add_arguments", "run", "HELP", "EXAMPLES"]
 
-HELP = "explain the words of the verdicts and reports (verdict, member, model, ...)"
+HELP = "explain the words used (verdict, member, model, ...)"
 EXAMPLES = """\
   rigidsym glossary                   every word
   rigidsym glossary parametrisation   one word (stereographic finds it too)"""

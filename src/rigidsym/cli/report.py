@@ -12,7 +12,7 @@ from rigidsym.cli._common import JOBS, MODULE_HELP
 
 __all__ = ["add_arguments", "run", "default_report_dir"]
 
-HELP = "write the chapter report (HTML, Markdown, JSON) and the exercises"
+HELP = "write the report: HTML, Markdown, JSON, the exercises"
 EXAMPLES = """\
   rigidsym report                          into generated/report/ (a source tree) or
                                            ./rigidsym-report/ (~1 min 15 s on 2 cores)

@@ -12,7 +12,7 @@ from rigidsym.cli._common import MODULE_HELP
 
 __all__ = ["add_arguments", "run"]
 
-HELP = "explain one equation: verdict, counterexample, cause, corrected form"
+HELP = "explain one equation: verdict, counterexample, correction"
 EXAMPLES = """\
   rigidsym show 3.57                  why (3.57) does not hold, in the book's symbols
   rigidsym show 3.96                  every part of (3.96), one after the other
@@ -52,15 +52,20 @@ def run(args) -> int:
     corrected form, singular set) in book notation; ``--latex`` or ``--json`` instead."""
     import json
 
+    from rigidsym._progress import Reporter
     from rigidsym.checking.checker import check
+    from rigidsym.checking.runner import verdict_words
     from rigidsym.printing import notation
     from rigidsym.report.record import result_record
     from rigidsym.report.show import explain, output_width
     width = output_width()
     for k, eq_id in enumerate(select_with_modules([args.id], None, args.module)):
         eq = REGISTRY[eq_id]
-        st = eq.build()
-        r = check(eq_id)
+        with Reporter("rigidsym show", keep=False) as rep, \
+                rep.phase(f"checking {eq_id}") as ph:
+            st = eq.build()
+            r = check(eq_id)
+            ph.finish(verdict_words(r))
         if args.json:
             print(json.dumps(result_record(r), indent=1, ensure_ascii=False))
             continue

@@ -9,6 +9,7 @@ from rigidsym._io import write_atomic
 from rigidsym.checking.runner import run_checks
 from rigidsym.checking.usermodules import select_with_modules
 from rigidsym.cli._common import FORMATS, JOBS, MODULE_HELP, console, output_format
+from rigidsym.printing.labels import label_text
 
 __all__ = ["add_arguments", "run"]
 
@@ -49,15 +50,15 @@ def _table(results) -> None:
     for r in results:
         style = "" if r.verdict == r.expected else "bold red"
         v = r.verdict if r.verdict == r.expected else f"{r.verdict} (expected {r.expected})"
-        t.add_row(r.id, r.title, v, r.method, f"{r.seconds:.2f}", style=style)
+        t.add_row(r.id, label_text(r.title), v, r.method, f"{r.seconds:.2f}", style=style)
     console().print(t)
 
 
 def _plain(results) -> None:
     """One line per id, columns aligned, nothing cut (for pipes, logs and grep)."""
     rows = [(r.id, r.verdict if r.verdict == r.expected else
-             f"{r.verdict} (EXPECTED {r.expected})", r.method, f"{r.seconds:.2f}", r.title)
-            for r in results]
+             f"{r.verdict} (EXPECTED {r.expected})", r.method, f"{r.seconds:.2f}",
+             label_text(r.title)) for r in results]
     head = ("id", "verdict", "method", "seconds", "title")
     w = [max(len(x[k]) for x in [head, *rows]) for k in range(4)]
     for row in [head, *rows]:

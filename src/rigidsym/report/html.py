@@ -83,6 +83,8 @@ def _prose_view(rec: dict) -> dict:
                     if m["status"] == "fails" and m["role"] != "corrected"), None)
     return {"evidence_html": prose_html(rec["evidence"]), "ce_sides": sides_of(failing),
             "failing_member_shown": label_text(rec["failing_member"] or ""),
+            "title_shown": label_text(rec["title"]),
+            "singular_shown": label_text(rec["singular"] or ""),
             "ce_member_shown": label_text(ce.get("member") or "")}
 
 

@@ -72,13 +72,14 @@ def how_checked(rec: dict) -> str:
     if rec["model"]:
         out.append("Model: " + "; ".join(rec["model"]) + ".")
     if rec["singular"]:
-        out.append(f"Singular set: {rec['singular']}.")
+        out.append(f"Singular set: {label_text(rec['singular'])}.")
     out.append(numeric_words(rec["numeric"]))
     return " ".join(x for x in out if x)
 
 
 def _entry(rec: dict, full: bool) -> list[str]:
-    out = [f'### ({rec["id"]}) {rec["title"]} <a id="{anchor(rec["id"])}"></a>', ""]
+    out = [f'### ({rec["id"]}) {label_text(rec["title"])} <a id="{anchor(rec["id"])}"></a>',
+           ""]
     how = rec["method"]
     if rec["failure_bound"] is not None and rec["verdict"] != "does-not-hold":
         how += f", P(false zero) ≤ {rec['failure_bound']:.1e}"
@@ -133,7 +134,7 @@ def to_markdown(results: list[Result], full: bool = False) -> str:
     if bad:
         out += ["## Equations that do not hold as printed", "",
                 "| id | title | failing member | cause | what is known |", "|---|---|---|---|---|"]
-        out += [f"| [({r['id']})](#{anchor(r['id'])}) | {_cell(r['title'])} | "
+        out += [f"| [({r['id']})](#{anchor(r['id'])}) | {_cell(label_text(r['title']))} | "
                 f"{_cell(label_text(r['failing_member']) or 'the equation')} | "
                 f"{r['cause_class']} | {_cell(prose_markdown(r['evidence']))} |" for r in bad]
         out.append("")

@@ -141,7 +141,7 @@ def explain(r: Result, rels: dict[str, list[Rel]], where: str, width: int) -> st
     """
     rec = result_record(r, timings=False)
     sec = f"Section {r.section}" if is_user_id(r.id) else f"Book: Sec. {r.section}"
-    out = [f"({r.id}) {r.title}",
+    out = [f"({r.id}) {label_text(r.title)}",
            *_hard_wrap(f"{sec} · {r.kind} · declared in {where}", width, "")]
     verdict = f"Verdict: {r.verdict}"
     if r.verdict != r.expected:
@@ -181,7 +181,7 @@ def explain(r: Result, rels: dict[str, list[Rel]], where: str, width: int) -> st
             title = title[:-1] + f" (failure probability <= {bound:.1e}):"
         out += [title] + blocks["corrected"] + [""]
     if r.singular:
-        out += _hard_wrap(f"Singular set: {r.singular}", width, "")
+        out += _hard_wrap(f"Singular set: {label_text(r.singular)}", width, "")
     if r.model:
         out += _hard_wrap("Model: " + "; ".join(r.model), width, "")
     n = r.numeric
