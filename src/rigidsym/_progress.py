@@ -99,14 +99,13 @@ class Reporter:
             from rich.console import Console
             from rich.progress import (
                 BarColumn,
-                MofNCompleteColumn,
                 Progress,
                 SpinnerColumn,
                 TextColumn,
                 TimeElapsedColumn,
             )
             self.bar = Progress(SpinnerColumn(), TextColumn("{task.description}"), BarColumn(),
-                                MofNCompleteColumn(), TimeElapsedColumn(),
+                                _count_column(), TimeElapsedColumn(),
                                 TextColumn("{task.fields[eta]}"),
                                 console=Console(file=s), transient=True,
                                 refresh_per_second=REFRESH,
@@ -156,6 +155,20 @@ class Reporter:
             elif self.enabled:
                 print(f"{self.command}: {what}: done in {took}{tail}", file=self._stream(),
                       flush=True)
+
+
+def _count_column():
+    """``12/181`` when the phase has a count, nothing when it has not (no ``0/?``)."""
+    from rich.progress import ProgressColumn
+    from rich.text import Text
+
+    class Count(ProgressColumn):
+        def render(self, task):
+            if task.total is None:
+                return Text("")
+            return Text(f"{int(task.completed)}/{int(task.total)}", style="progress.download")
+
+    return Count()
 
 
 # --------------------------------------------------------------------------- durations

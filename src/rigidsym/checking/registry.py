@@ -349,8 +349,9 @@ def select(ids: list[str] | None = None, sections: list[str] | None = None,
             continue
         parts = [k for k in REGISTRY if re.fullmatch(re.escape(i) + "[a-e]", k)]
         if not parts:
-            known = ("a loaded user module's ids" if is_user_id(i) else
-                     "3.1 ... 3.148 and claims such as thm3.2.1")
+            known = ("a loaded user module's ids: give its file with --module" if is_user_id(i)
+                     else "3.1 ... 3.148 and claims such as thm3.2.1; the ids of a section: "
+                          "rigidsym verify --section 3.4")
             raise BadInput(f"id: {i} holds no declared equation (known: {known})")
         out.update(parts)
     for s in sections or []:

@@ -68,20 +68,26 @@ def main(argv: list[str] | None = None) -> int:
     """
     parser = build_parser()
 
-    def _error(message):  # argparse errors are bad input: one line, exit 2
-        print(f"rigidsym: error: {message} (rigidsym --help lists the commands)",
-              file=sys.stderr)
-        raise SystemExit(2)
+    def _error(where: str):
+        def error(message):  # argparse errors are bad input: one line, exit 2
+            print(f"rigidsym: error: {message} ({where})", file=sys.stderr)
+            raise SystemExit(2)
+        return error
 
-    parser.error = _error
-    for sp_ in parser._subparsers._group_actions[0].choices.values():
-        sp_.error = _error
+    given = sys.argv[1:] if argv is None else argv
+    cmd = next((a for a in given if a in _COMMANDS), None)  # "unrecognized arguments" of it
+    parser.error = _error(f"rigidsym {cmd} --help lists its options" if cmd else
+                          "rigidsym --help lists the commands")
+    for name, sp_ in parser._subparsers._group_actions[0].choices.items():
+        sp_.error = _error(f"rigidsym {name} --help lists its options")
     args = parser.parse_args(argv)
     with ascii_output(getattr(args, "ascii", False)):
         try:
             return args.func(args)
         except BadInput as exc:
-            print(f"rigidsym: error: {exc}", file=sys.stderr)
+            hint = "" if "rigidsym " in str(exc) else \
+                f" (rigidsym {args.command} --help shows what it takes)"
+            print(f"rigidsym: error: {exc}{hint}", file=sys.stderr)
             return 2
         except BrokenPipeError:  # `rigidsym exercise 3.10 | head`: the reader left
             devnull = os.open(os.devnull, os.O_WRONLY)

@@ -21,15 +21,16 @@ FORMATS = ("table", "plain", "json")
 
 class HelpFormatter(argparse.RawDescriptionHelpFormatter):
     """Descriptions and examples as written; every option's help ends with its default
-    (``(default: 2)``) unless it says it already, or the option is a flag."""
+    (``(default: 2)``, ``(default: none)`` when absent means nothing is given) unless it
+    says it already, or the option is a flag."""
 
     def _get_help_string(self, action):
         text = action.help or ""
         d = action.default
-        if ("default" not in text and d not in (None, False, argparse.SUPPRESS, [])
-                and action.option_strings and action.nargs != 0):
-            text += f" (default: {d})"
-        return text
+        if "default" in text or not action.option_strings or action.nargs == 0 or \
+                d is argparse.SUPPRESS:
+            return text
+        return text + (" (default: none)" if d in (None, []) else f" (default: {d})")
 
 
 def console(stderr: bool = False):

@@ -164,10 +164,21 @@ def run(args) -> int:
         if args.json:
             write_atomic(args.json, to_json(ids, data))
     except (ValueError, TypeError) as exc:
-        print(f"rigidsym: error: {exc}", file=sys.stderr)
+        print(f"rigidsym: error: {exc} ({_next_step(args)})", file=sys.stderr)
         return 2
     print(render_text(s))
     return 0 if s.checked else 1
+
+
+def _next_step(args) -> str:
+    """What to run after a bad exercise id or bad data."""
+    try:
+        ex = normalise_id(args.id) if args.id else None
+    except ValueError:
+        return "rigidsym exercise lists the exercises"
+    if ex and (args.set or args.data or args.tol is not None):
+        return f"rigidsym exercise {ex[2:]} --parameters lists its data"
+    return "rigidsym exercise --help shows the options"
 
 
 def _list() -> int:

@@ -34,8 +34,8 @@ def run(args) -> int:
 
     found = lookup(args.word) if args.word else list(entries().items())
     if not found:
-        print(f"rigidsym: error: word: {args.word!r} is not in the glossary; known: "
-              + ", ".join(entries()), file=sys.stderr)
+        print(f"rigidsym: error: word: {args.word!r} is not in the glossary (known: "
+              + ", ".join(entries()) + "; rigidsym glossary prints them all)", file=sys.stderr)
         return 2
     width = min(output_width(), 100)
     for k, (word, body) in enumerate(found):

@@ -15,6 +15,7 @@ operands) are rewritten. LaTeX commands (``\\dot{\\mathbf{v}}``) become Unicode 
 from __future__ import annotations
 
 import re
+import unicodedata
 
 from rigidsym.printing.notation import _GREEK, book_text
 
@@ -69,7 +70,7 @@ def label_text(text: str) -> str:
                  and _mathy(m.group(2)) else m.group(0), out)
     # a cross product: " x " between two operands (the x of "x = ..." is an operand)
     out = re.sub(r"(?<=[\w)\]‖'\u0307\u0308\u0303]) x (?=[A-Za-z(\[‖])", " × ", out)
-    return _TOKEN.sub(lambda m: _token(m.group(0)), out)
+    return unicodedata.normalize("NFC", _TOKEN.sub(lambda m: _token(m.group(0)), out))
 
 
 # --------------------------------------------------------------------------- LaTeX
