@@ -49,22 +49,24 @@ def _rows(text: str) -> list[list[str]]:
 
 def _grid(name: str, text: str, dec: str, width: int, indent: str) -> list[str] | None:
     """A matrix with more than one column, one row per line, columns aligned, its
-    decimals beneath the same way; ``None`` when it does not fit ``width``."""
+    decimals beneath the same way: after ``name = `` when that fits ``width``, else below
+    a line ``name =``; ``None`` when neither fits."""
     if not (text.startswith("[") and "; " in text and ", " in text):
         return None
     blocks = [_rows(text)] + ([_rows(dec)] if dec else [])
-    out = []
-    for k, rows in enumerate(blocks):
-        w = [max(len(r[j]) for r in rows) for j in range(len(rows[0]))]
-        head = f"{name} = " if k == 0 else "≈ ".rjust(len(name) + 3)
-        for i, r in enumerate(rows):
-            line = indent + (head if i == 0 else " " * len(head)) + ("[" if i == 0 else " ") \
-                + ", ".join(x.rjust(w[j]) for j, x in enumerate(r)) \
-                + ("]" if i == len(rows) - 1 else ";")
-            if len(line) > width:
-                return None
-            out.append(line)
-    return out
+    for head, lead in ((f"{name} = ", []), ("  ", [f"{indent}{name} ="])):
+        out, pad = list(lead), indent + ("    " if lead else "")
+        for k, rows in enumerate(blocks):
+            w = [max(len(r[j]) for r in rows) for j in range(len(rows[0]))]
+            first = head if k == 0 else "≈ ".rjust(max(len(head), 2))
+            for i, r in enumerate(rows):
+                out.append(pad + (first if i == 0 else " " * len(first))
+                           + ("[" if i == 0 else " ")
+                           + ", ".join(x.rjust(w[j]) for j, x in enumerate(r))
+                           + ("]" if i == len(rows) - 1 else ";"))
+        if all(len(line) <= width for line in out):
+            return out
+    return None
 
 
 def _symbol_lines(s: dict, width: int, indent: str) -> list[str]:
@@ -120,8 +122,8 @@ def text_lines(ce: dict, sides: tuple[str, str], width: int) -> list[str]:
         sides: the failing member's two sides in book notation (:func:`sides_of`).
         width: the line width to fit (breaks at spaces).
     """
-    out = ["Counterexample: the failing member at an exact point, in the book's symbols",
-           "  (exact values; decimals after ≈):"]
+    out = _wrap("Counterexample: the failing member at an exact point, in the book's "
+                "symbols (exact values; decimals after ≈):", width, "")
     if ce.get("symbols"):
         for s in ce["symbols"]:
             out += _symbol_lines(s, width, "  ")
@@ -139,7 +141,8 @@ def text_lines(ce: dict, sides: tuple[str, str], width: int) -> list[str]:
         out += _value_lines("residual (left - right)", res, width)
     chosen = ce.get("chosen") or {}
     if chosen.get("text") or chosen.get("params"):
-        out.append("  How the point was chosen (the zero test's parametrisation):")
+        out += _wrap("How the point was chosen (the zero test's parametrisation):", width,
+                     "  ")
         if chosen.get("text"):
             out += _wrap(chosen["text"], width, "    ")
         row = "; ".join(f"{p['name']} = {p['exact']}" for p in chosen.get("params", []))
