@@ -99,11 +99,12 @@ def measure(rounds: int, batch: bool = True) -> dict:
 
 def measure_ab(old_dir: Path, rounds: int) -> dict:
     """C batch at N = 1e6, old and new generated C loaded in this one process (both built
-    by this checkout's cbuild, same flags) and timed alternately: fair on a loaded machine."""
-    from rigidsym.kernels import _state
-    from rigidsym.kernels._build import load
+    by this checkout's driver, rigidsym.kernels._build, same flags; the old folder needs the
+    extension's own C, c/rigidsym_module.c, of this version's generator) and timed
+    alternately: fair on a loaded machine."""
+    from rigidsym.kernels import _ext, _state
 
-    libs = {"old": load(gdir=old_dir), "new": _state.builtin().c_lib()}
+    mods = {"old": _ext.load(old_dir).module, "new": _state.builtin().c_lib().module}
     meta = {k: m for k, m in _state.meta().items() if m["public"]}
     rng = np.random.default_rng(7)
     n = 1_000_000
@@ -112,10 +113,9 @@ def measure_ab(old_dir: Path, rounds: int) -> dict:
         arrays = _inputs(m, n, rng) + [np.empty((n,) + tuple(o["shape"]))
                                        for o in m["outputs"]]
         calls = {}
-        for tag, (ffi, lib) in libs.items():
-            f = getattr(lib, f"rigidsym_{name}")
-            bufs = [ffi.from_buffer("double[]", a) for a in arrays]
-            calls[tag] = (lambda f=f, b=bufs: f(n, *b))
+        for tag, mod in mods.items():
+            k = mod.kernels.index(name)
+            calls[tag] = (lambda b=mod.batch, k=k, a=arrays: b(k, False, n, 1, *a))
         times: dict = {"old": [], "new": []}
         for _ in range(rounds):
             for tag in ("old", "new"):

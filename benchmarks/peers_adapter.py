@@ -1,40 +1,37 @@
 """rigidsym's generated C kernels as an extra column of ../shared/peers-bench (``--extra``).
 
-    python run_all.py --extra /path/to/rigidsym/benchmarks/peers_adapter.py
+    python run_all.py --extra /path/to/rigidsym/benchmarks/peers_adapter.py \
+                      --extra /path/to/rigidsym/benchmarks/peers_adapter_native.py
 
-``setup(ctx)`` compiles ``generated/c/*.c`` with the harness's compiler and flags into
-``ctx["build_dir"]`` (plain shared library, no cffi needed in the harness's environment), the
-same way as ``rigidsym build-c``: the flags of ``rigidsym.kernels._build`` (``CFLAGS`` added to
-the harness's ``-O3 -march=native``) and its build variants, libmvec's vectorised sin/cos
-first (``MVEC_FLAGS``, ``-lmvec``; glibc only, ``RIGIDSYM_LIBMVEC=0`` turns it off), the plain
-build as the fallback; ``VARIANT`` names the one built;
-each K is one ctypes call of the batch function ``rigidsym_<kernel>`` (no validation, the
+``setup(ctx)`` builds ``generated/c`` into the extension module the package ships (``pip
+install .``: x86-64-v2 and x86-64-v3 objects, the module's dispatcher picks one at import),
+with :mod:`rigidsym.kernels._build` (the same driver, flags, OpenMP and libmvec probes),
+into ``ctx["build_dir"]``, cached by the sources' hash: the default build is what a user of
+the wheel runs. ``peers_adapter_native.py`` is the second column: the ``-march=native``
+build (``rigidsym build-c --native``). The harness's ``cflags`` are not used: the point is
+the build users get. Each K is one call of the module's ``batch`` (no validation, the
 equivalent of ``check=False``), outputs allocated inside the call like every other peer.
 
 K1 rotation_from_euler_rodrigues, K2 rotation_from_natural_invariants, K3 screw_axis_point,
 K4 instant_screw_point_pitch (ISA point and pitch), K5 N_matrix, K6 newton_euler_residual
-(``newton_euler_wrench(...) - [n; f]``).
+(``newton_euler_wrench(...) - [n; f]``: the harness's K6 is the residual).
 """
 
 from __future__ import annotations
 
-import ctypes
-import hashlib
+import importlib.util
 import json
-import subprocess
 import sys
+import sysconfig
+import tempfile
 from pathlib import Path
 
 import numpy as np
 
 ROOT = Path(__file__).resolve().parents[1]
-if str(ROOT / "src") not in sys.path:
-    sys.path.insert(0, str(ROOT / "src"))
-
-from rigidsym.kernels._build import CFLAGS, MVEC_FLAGS, build_variants  # noqa: E402
-
 NAME = "rigidsym-c"
 PER_SAMPLE_LOOP = False
+NATIVE = False
 GEN = ROOT / "generated"
 BENCH = {"K1": "rotation_from_euler_rodrigues", "K2": "rotation_from_natural_invariants",
          "K3": "screw_axis_point", "K4": "instant_screw_point_pitch", "K5": "N_matrix",
@@ -45,60 +42,57 @@ KERNELS: dict = {}
 VARIANT = ""
 
 
-def _flags(cflags: list[str]) -> list[str]:
-    """The harness's flags plus cbuild's (``-std=c99 -ffp-contract=fast``), no duplicates."""
-    return list(cflags) + [f for f in CFLAGS if f not in cflags]
+def _driver():
+    """rigidsym.kernels._build, loaded by path (standard library only: the harness's
+    environment need not have rigidsym's dependencies)."""
+    path = ROOT / "src" / "rigidsym" / "kernels" / "_build.py"
+    spec = importlib.util.spec_from_file_location("_rigidsym_build", path)
+    mod = importlib.util.module_from_spec(spec)
+    sys.modules[spec.name] = mod
+    spec.loader.exec_module(mod)
+    return mod
 
 
-def _build(build_dir: Path, cc: str, cflags: list[str]) -> tuple[Path, str]:
-    """Compile (cached by sources and flags); returns the library and its variant name."""
+def _build(build_dir: Path, native: bool):
+    """Build (cached by sources, paths and flags) and import the module; returns it."""
     global VARIANT
-    srcs = [GEN / "c" / f"{name}.c" for name in BENCH.values() if name in _META]
-    last = None
-    for flags, libs in build_variants(_flags(cflags)):
-        h = hashlib.sha256(" ".join([cc, *flags, *libs]).encode())
-        for p in sorted((GEN / "c").glob("*")):
-            h.update(p.read_bytes())
-        so = Path(build_dir) / f"librigidsym_{h.hexdigest()[:12]}.so"
-        VARIANT = "libmvec" if MVEC_FLAGS[0] in flags else "plain"
-        if so.exists():
-            return so, VARIANT
+    drv = _driver()
+    cfg = drv.configure(native=native)
+    key = drv.sources_hash(GEN / "c")[:12] + "-" + "+".join(p.suffix for p in cfg.paths)
+    so = Path(build_dir) / key / ("_ckernels" + sysconfig.get_config_var("EXT_SUFFIX"))
+    if not so.exists():
         so.parent.mkdir(parents=True, exist_ok=True)
-        try:
-            subprocess.run([cc, *flags, "-fPIC", "-shared", *map(str, srcs), "-I",
-                            str(GEN / "c"), "-o", str(so), *(f"-l{x}" for x in libs)],
-                           check=True, capture_output=True)
-        except (subprocess.CalledProcessError, OSError) as exc:  # next variant: fallback
-            last = exc
-            continue
-        return so, VARIANT
-    raise last
+        with tempfile.TemporaryDirectory(dir=so.parent) as tmp:
+            drv.build(GEN, Path(tmp) / so.name, cfg, Path(tmp))
+            (Path(tmp) / so.name).replace(so)
+    spec = importlib.util.spec_from_file_location(f"_peers_{key.replace('+', '_')}._ckernels",
+                                                  so)
+    mod = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mod)
+    VARIANT = f"{mod.path}, libmvec {bool(mod.libmvec)}"
+    return mod
 
 
-def _wrap(lib, name: str):
+def _wrap(mod, name: str):
     meta = _META[name]
-    fn = getattr(lib, f"rigidsym_{name}")
-    fn.argtypes = [ctypes.c_int64] + [ctypes.c_void_p] * (len(meta["args"])
-                                                          + len(meta["outputs"]))
-    fn.restype = ctypes.c_int64
+    k = mod.kernels.index(name)
+    batch = mod.batch
     shapes = [tuple(o["shape"]) for o in meta["outputs"]]
 
     def call(*xs):
         n = xs[0].shape[0]
         outs = [np.empty((n,) + s) for s in shapes]
-        fn(n, *[x.ctypes.data for x in xs], *[o.ctypes.data for o in outs])
+        batch(k, False, n, 1, *xs, *outs)
         return outs[0] if len(outs) == 1 else tuple(outs)
     call.__name__ = name
     return call
 
 
 def setup(ctx=None) -> None:
-    """Compile (cached) and bind K1..K6; ``ctx`` as passed by the peers-bench harness."""
+    """Build (cached) and bind K1..K6; ``ctx`` as passed by the peers-bench harness."""
     ctx = ctx or {}
     build_dir = Path(ctx.get("build_dir") or (ROOT / "benchmarks" / ".build"))
-    cflags = list(ctx.get("cflags") or ["-O3", "-march=native"])
-    so, _ = _build(build_dir, ctx.get("cc", "gcc"), cflags)
-    lib = ctypes.CDLL(str(so))
+    mod = _build(build_dir, NATIVE)
     for kid, name in BENCH.items():
         if name in _META:
-            KERNELS[kid] = _wrap(lib, name)
+            KERNELS[kid] = _wrap(mod, name)

@@ -113,12 +113,10 @@ def col_floor(name: str, build: Path):
     outputs can go below it by much; a kernel at this floor is memory-bound."""
     import cffi
 
-    from rigidsym.kernels import _build as cbuild
-
     ffi = cffi.FFI()
     ffi.cdef("uint64_t floor_read(const double *x, int64_t len);"
              "void floor_write(double *x, int64_t len);")
-    ffi.set_source("_floor_io", _FLOOR_SRC, extra_compile_args=list(cbuild.CFLAGS))
+    ffi.set_source("_floor_io", _FLOOR_SRC, extra_compile_args=_cflags())
     lib = _load_cffi("_floor_io", ffi.compile(tmpdir=str(build), verbose=False))
     fb = lib.ffi.from_buffer
 
@@ -166,8 +164,6 @@ def col_sympy_c(name: str, build: Path):
     differ only in the code (not in call overhead or compiler flags)."""
     import cffi
 
-    from rigidsym.kernels import _build as cbuild
-
     k, flat, exprs = _declared(name)
     temps, red = sp.cse(exprs)
     ins = k.args
@@ -186,7 +182,7 @@ def col_sympy_c(name: str, build: Path):
     ffi = cffi.FFI()
     ffi.cdef(sig + ";")
     mod = f"_plain_{name}"
-    ffi.set_source(mod, "\n".join(lines) + "\n", extra_compile_args=list(cbuild.CFLAGS),
+    ffi.set_source(mod, "\n".join(lines) + "\n", extra_compile_args=_cflags(),
                    libraries=["m"])
     so = ffi.compile(tmpdir=str(build), verbose=False)
     lib = _load_cffi(mod, so)
@@ -203,10 +199,19 @@ def col_sympy_c(name: str, build: Path):
     return call
 
 
+def _cflags() -> list[str]:
+    """The kernels' flags and the dispatched path in use (``-march=x86-64-v3`` on an AVX2
+    machine): the baselines are compiled as the package's own C runs."""
+    from rigidsym.kernels import _build
+
+    path = K.build_info()["path"]
+    march = [] if path == "baseline" else [f"-march={path}"]
+    return [*_build.kernel_flags(), *march]
+
+
 def _mvec() -> bool:
-    """Whether the generated C was built in its libmvec variant."""
-    from rigidsym.kernels import _build as cbuild
-    return cbuild.MVEC_FLAGS[0] in cbuild.build_variants(cbuild._flags())[0][0]
+    """Whether the generated C in use calls libmvec's vector sin/cos."""
+    return bool(K.build_info()["libmvec"])
 
 
 def timeit(f, xs, n: int, rounds: int) -> float:

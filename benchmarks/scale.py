@@ -93,13 +93,16 @@ uint64_t floor_io(int64_t n, int threads, int nin, const char **in, const int64_
 def _floor_lib(build: Path):
     import cffi
 
-    from rigidsym.kernels import _build as cbuild
+    from rigidsym.kernels import _build
 
+    path = K.build_info()["path"]
+    march = [] if path == "baseline" else [f"-march={path}"]
     ffi = cffi.FFI()
     ffi.cdef("uint64_t floor_io(int64_t n, int threads, int nin, const char **in, "
              "const int64_t *isz, int nout, char **out, const int64_t *osz);")
-    ffi.set_source("_scale_floor", _FLOOR, extra_compile_args=list(cbuild.CFLAGS)
-                   + cbuild.OMP_FLAGS, extra_link_args=cbuild.OMP_FLAGS)
+    ffi.set_source("_scale_floor", _FLOOR, extra_compile_args=[*_build.kernel_flags(), *march,
+                                                             *_build.OMP_FLAGS],
+                   extra_link_args=list(_build.OMP_FLAGS))
     so = ffi.compile(tmpdir=str(build), verbose=False)
     spec = importlib.util.spec_from_file_location("_scale_floor", so)
     mod = importlib.util.module_from_spec(spec)
@@ -316,12 +319,11 @@ def main(argv=None) -> int:
     skip = set(filter(None, args.skip.split(",")))
     rounds = 3 if args.quick else 7
     assert K.use_backend("c") == "c", "the benchmarks need the C backend"
-    from rigidsym.kernels import _build as cbuild
-
     load0 = os.getloadavg()
     body = ["## Kernels at scale (issue 14)", "",
             f"`python benchmarks/scale.py{' --quick' if args.quick else ''}`; "
-            f"OpenMP build: {cbuild.openmp()}; {os.cpu_count()} cores; load average at the "
+            f"OpenMP build: {K.build_info()['openmp']}; {os.cpu_count()} cores; load average "
+            f"at the "
             f"start {load0[0]:.1f} (1 min), ns/sample unless stated; outputs caller-provided. "
             "Other work on the machine changes absolute numbers; ratios are side by side.", ""]
     with tempfile.TemporaryDirectory() as tmp:

@@ -149,6 +149,9 @@ _NL = {"N": "phi = 0 (mod 2 pi): the axis is undefined",
        "L": "", "H": "",
        "N_tilde": "", "L_tilde": "1 + cos(phi) = 0 (phi = pi)", "H_tilde": ""}
 
+#: the rates add e_dot, undefined where the axis is: N_tilde_dot divides by sin(phi/2)
+_NL_DOT = dict(_NL, N_tilde="phi = 0 (mod 2 pi): the axis, and so its rate, is undefined")
+
 
 def _rate_kernels() -> list[Kernel]:
     ks = []
@@ -173,7 +176,7 @@ def _rate_kernels() -> list[Kernel]:
                 ids=("3.97",) if tilde else ("3.96",), sources=(_S5R + fn + "_dot",),
                 args=_RATE_DOT_ARGS, outputs=(Out(fn + "_dot", shape, "[1/s]"),),
                 build=_one(fn + "_dot", _S5R + fn + "_dot"),
-                singular=_NL[key], singular_arg="phi" if _NL[key] else ""))
+                singular=_NL_DOT[key], singular_arg="phi" if _NL_DOT[key] else ""))
     return ks
 
 

@@ -563,6 +563,10 @@ def N_tilde_dot(
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
         ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
         NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
+        SingularConfigurationError: on the singular set (phi = 0 (mod 2 pi): the axis, and so its rate, is undefined), unless on_singular='nan'.
+
+    Notes:
+        Singular set: phi = 0 (mod 2 pi): the axis, and so its rate, is undefined.
 
         Generated; 79 operations; math hash b1c3eb794fbb8245.
     """

@@ -34,10 +34,14 @@ PUBLIC = {
     "rigidsym.declare": DECLARE,
     "rigidsym.kernels": [
         "NonFiniteResultError", "SingularConfigurationError", "backend", "batch_function",
+        "build_info",
         "euler_angle_rates", "euler_rate_matrix", "get_num_threads", "jacobian", "load",
         "set_num_threads", "swap_blocks", "use_backend", *KERNELS],
     "rigidsym.codegen.spec": ["Arg", "Branch", "Kernel", "Out", "input_symbols"],
     "rigidsym.cli": ["build_parser", "main"],
+    # issue 22: the exercises to run, see and vary
+    "rigidsym.exercises": ["EXERCISE_IDS", "IllPosed", "Param", "Parameters", "Solution",
+                           "figure", "parameters", "solve", "write_notebook"],
 }
 
 

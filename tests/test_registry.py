@@ -66,3 +66,15 @@ def test_committed_chapter_report_is_fresh(results):
     from rigidsym.report.html import to_html
     assert (folder / "chapter3.html").read_text(encoding="utf-8") == to_html(rows), \
         "generated/report/chapter3.html is stale: run `rigidsym report`"
+
+
+def test_verdicts_match_the_snapshot_taken_before_python_flint(results):
+    """Same verdicts and member statuses as tests/data/verdict_snapshot.json (taken on the
+    engine before issue 21), failure bounds no higher, exact counterexamples."""
+    from test_verdict_snapshot import SNAPSHOT, assert_matches_snapshot
+
+    recorded = SNAPSHOT["chapter"]
+    book = {k: r for k, r in results.items() if ":" not in k}
+    assert sorted(book) == sorted(recorded)
+    for eq_id, r in book.items():
+        assert_matches_snapshot(r, recorded[eq_id])

@@ -8,30 +8,30 @@ import threading
 import time
 import warnings
 from concurrent.futures import ThreadPoolExecutor
+from pathlib import Path
 
 import numpy as np
 import pytest
 
 import rigidsym.kernels as K
-from rigidsym.kernels import _build as cbuild
-from rigidsym.kernels import _scale, _state
+from rigidsym.kernels import _build, _ext, _scale, _state
 
 HAVE_CC = bool(shutil.which("gcc") or shutil.which("cc"))
 
 
 def test_lazy_build_runs_once_under_a_thread_pool(monkeypatch):
-    real = cbuild.load
+    real = _ext.load
     calls = []
 
-    def slow_load(force=False, gdir=None):
+    def slow_load(gdir, package=False):
         calls.append(threading.get_ident())
-        time.sleep(0.2)            # wide window: without the lock every thread would build
-        return real(force, gdir)
+        time.sleep(0.2)            # wide window: without the lock every thread would load
+        return real(gdir, package)
 
     space = _state.builtin()
     monkeypatch.setattr(space, "_clib", None)
     monkeypatch.setitem(_state.STATE, "backend", None)
-    monkeypatch.setattr(cbuild, "load", slow_load)
+    monkeypatch.setattr(_ext, "load", slow_load)
     phi = np.linspace(0.1, 3.0, 1000)
     with ThreadPoolExecutor(8) as pool:
         res = list(pool.map(lambda _: K.rotation_from_natural_invariants([0, 0.6, 0.8], phi),
@@ -58,37 +58,48 @@ def test_use_backend_from_many_threads_is_consistent():
     K.use_backend("numpy")
 
 
-def test_cbuild_load_from_many_threads_returns_one_library():
-    if not HAVE_CC:
-        pytest.skip("no C compiler")
+def test_extension_load_from_many_threads_returns_one_module():
+    if not HAVE_CC and _ext.package_module() is None:
+        pytest.skip("no C compiler and no compiled module")
+    gdir = _ext.generated_dir()
     with ThreadPoolExecutor(4) as pool:
-        libs = list(pool.map(lambda _: cbuild.load()[1], range(8)))
-    assert all(lib is libs[0] for lib in libs)
+        mods = list(pool.map(lambda _: _ext.load(gdir, package=True).module, range(8)))
+    assert all(m is mods[0] for m in mods)
 
 
 def test_openmp_build_when_the_compiler_has_it():
     if not HAVE_CC:
         pytest.skip("no C compiler")
-    assert cbuild.openmp(), "gcc is present but the OpenMP build of the kernels failed"
+    assert _build.configure().openmp, "gcc is present but cannot build OpenMP code"
+    if K.use_backend("c") == "c":
+        assert K.build_info()["openmp"], "the kernels in use were built without OpenMP"
+    K.use_backend("numpy")
 
 
 def test_no_openmp_falls_back_to_one_thread_with_one_warning(monkeypatch, tmp_path):
-    built = []
-
-    def fake_build(gdir, meta, flags, libs, force):
-        if "-fopenmp" in flags:
-            raise OSError("omp.h: no such file")
-        built.append(flags)
-        return tmp_path / "fake.so"
-
-    monkeypatch.setattr(cbuild, "_build", fake_build)
-    monkeypatch.setattr(cbuild, "_WARNED", {"omp": False})
+    """A compiler without OpenMP builds the one-thread kernels; loading them warns once."""
+    if not HAVE_CC:
+        pytest.skip("no C compiler")
+    real = _build._probe
+    monkeypatch.setattr(_build, "_probe",
+                        lambda cc, flags, libs, simd: "-fopenmp" not in flags
+                        and real(cc, flags, libs, simd))
+    assert _build.configure().openmp is False
+    monkeypatch.setenv("RIGIDSYM_CACHE", str(tmp_path / "cache"))
+    monkeypatch.setattr(_ext, "_MODULES", {})
+    monkeypatch.setitem(_ext._WARNED, "omp", False)
+    out = tmp_path / "k"
+    from rigidsym.codegen.generator import write
+    from rigidsym.codegen.usergen import generate_user
+    write(generate_user([str(Path(__file__).parents[1] / "examples" /
+                             "rotation_identities.py")]), out)
     with pytest.warns(RuntimeWarning, match="without OpenMP.*one thread"):
-        assert cbuild.build() == tmp_path / "fake.so"
+        loaded = _ext.load(out)
+    assert not loaded.module.openmp
+    monkeypatch.setattr(_ext, "_MODULES", {})
     with warnings.catch_warnings():
         warnings.simplefilter("error")
-        cbuild.build()
-    assert all("-fopenmp" not in f for f in built)
+        _ext.load(out)
 
 
 # --- threads in the C batch loops: same bits for every thread count and position ---------

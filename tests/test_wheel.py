@@ -56,7 +56,7 @@ def test_the_wheel_has_one_top_level_package(wheel):
         top = {n.split("/")[0] for n in z.namelist()}
     dist_info = {t for t in top if t.endswith(".dist-info")}
     assert top - dist_info == {"rigidsym"}
-    assert dist_info == {wheel.name.split("-py")[0] + ".dist-info"}
+    assert dist_info == {"-".join(wheel.name.split("-")[:2]) + ".dist-info"}
 
 
 def _run(installed, cwd, *args) -> subprocess.CompletedProcess:
@@ -130,3 +130,96 @@ np.savez("outputs.npz", Q=k.rodrigues_rotation(d["e"], d["phi"]),
         a, b = (sp.Matrix(x[i].tolist()) for x in eta)
         want = np.array(src.er_product(a, b).evalf(30), dtype=float).ravel()
         np.testing.assert_allclose(got["eta"][i], want, rtol=0, atol=1e-14)
+
+
+# -- issue 19: the wheel carries the compiled kernels; nothing is compiled at run time -----
+
+_FIRST_CALL = """
+import time
+t0, c0 = time.perf_counter(), time.process_time()
+from rigidsym import kernels
+N = kernels.N_matrix(e=[0.0, 0.6, 0.8], phi=0.3)
+t, cpu = time.perf_counter() - t0, time.process_time() - c0
+import json, shutil
+info = kernels.build_info()
+print(json.dumps({"t": t, "cpu": cpu, "backend": kernels.backend(), "origin": info["origin"],
+                  "path": info["path"], "cc": shutil.which("gcc") or shutil.which("cc"),
+                  "N": N.tolist()}))
+"""
+
+
+def _without_compiler(installed, tmp_path) -> tuple[dict, Path]:
+    """The wheel's environment with an empty cache and a PATH holding only Python."""
+    bindir = tmp_path / "bin"
+    bindir.mkdir()
+    (bindir / "python").symlink_to(sys.executable)
+    cache = tmp_path / "empty-cache"
+    env = dict(installed["env"], PATH=str(bindir), RIGIDSYM_CACHE=str(cache))
+    env.pop("CC", None)
+    return env, cache
+
+
+def test_wheel_is_a_platform_wheel_with_the_compiled_kernels(wheel):
+    assert not wheel.name.endswith("-none-any.whl")
+    with zipfile.ZipFile(wheel) as z:
+        names = z.namelist()
+    assert any(n.startswith("rigidsym/kernels/_ckernels.") and n.endswith((".so", ".pyd"))
+               for n in names), names
+
+
+def test_first_call_from_the_wheel_runs_prebuilt_c_without_a_compiler(installed, tmp_path):
+    """Import plus the first N_matrix call: C from the wheel in <= 0.5 s (best of 3 fresh
+    processes), no compiler on PATH, nothing written to the (empty) cache. The process's CPU
+    time is held to it always; its wall time only when the machine is not oversubscribed
+    (load average below the core count: measured 0.21 s CPU and 0.50-0.57 s wall at a load
+    of 10 on 2 cores)."""
+    env, cache = _without_compiler(installed, tmp_path)
+    runs = []
+    for _ in range(3):
+        p = subprocess.run([str(tmp_path / "bin" / "python"), "-c", _FIRST_CALL], env=env,
+                           cwd=tmp_path, capture_output=True, text=True, timeout=120)
+        assert p.returncode == 0, p.stderr
+        assert "warn" not in p.stderr.lower(), p.stderr
+        runs.append(json.loads(p.stdout.splitlines()[-1]))
+    r = runs[0]
+    assert r["cc"] is None and r["backend"] == "c" and r["origin"] == "wheel", r
+    assert not cache.exists() or not any(cache.rglob("*")), list(cache.rglob("*"))
+    N, e = np.array(r["N"]), np.array([0.0, 0.6, 0.8])
+    # [e_dot; phi_dot] = N omega (3.76): phi_dot = e . omega, and e_dot is normal to e
+    assert N.shape == (4, 3) and np.allclose(N[3], e, rtol=0, atol=1e-15)
+    assert np.allclose(e @ N[:3], 0.0, rtol=0, atol=1e-15) and np.abs(N[:3]).max() > 0.1
+    assert min(x["cpu"] for x in runs) <= 0.5, runs
+    if os.getloadavg()[0] < (os.cpu_count() or 1):
+        assert min(x["t"] for x in runs) <= 0.5, runs
+
+
+def test_user_kernels_without_a_compiler_run_on_numpy_with_one_warning(installed, tmp_path):
+    env, cache = _without_compiler(installed, tmp_path)
+    work = tmp_path / "reader"
+    work.mkdir()
+    shutil.copy(EXAMPLE, work / EXAMPLE.name)
+    out = tmp_path / "kernels"
+    py = str(tmp_path / "bin" / "python")
+    p = subprocess.run([py, "-m", "rigidsym", "generate", "--module", EXAMPLE.name, "--out",
+                        str(out)], env=env, cwd=work, capture_output=True, text=True,
+                       timeout=600)
+    assert p.returncode == 0, p.stderr
+    assert "not compiled" in p.stderr and "C compiler" in p.stderr
+    script = f"""
+import warnings
+warnings.simplefilter("always")
+import numpy as np
+from rigidsym import kernels
+k = kernels.load({str(out)!r})
+Q = k.rodrigues_rotation([0.0, 0.0, 1.0], np.linspace(0, 1, 5))
+Q = k.rodrigues_rotation([0.0, 0.0, 1.0], 0.5)
+print(k._SPACE.backend(), float(Q[0, 1]))
+"""
+    p = subprocess.run([py, "-c", script], env=env, cwd=work, capture_output=True, text=True,
+                       timeout=120)
+    assert p.returncode == 0, p.stderr
+    backend, q01 = p.stdout.split()
+    assert backend == "numpy" and abs(float(q01) + np.sin(0.5)) < 1e-15
+    assert p.stderr.count("RuntimeWarning") == 1, p.stderr
+    assert "C compiler" in p.stderr and "rigidsym build-c" in p.stderr, p.stderr
+    assert not cache.exists() or not any(cache.rglob("*.so"))

@@ -14,6 +14,7 @@ STATEMENT = ("\"Determine the matrix representing the rotation Q undergone by th
              "Find the Plücker coordinates of line L of the cube undergoing displacements of "
              "minimum magnitude. Find the intersections of L with the coordinate planes.\"")
 CITATION = "Angeles, Sec. 3.9, Exercise 3.1"
+FIGURE_NAME = "cube"
 _V = sp.ImmutableMatrix
 # Assumed geometry (Fig. 3.9 is not in the text): unit cube, A at O, B on X, D on Y, E on Z,
 # turned 120 deg about [1, 1, 1] and shifted.

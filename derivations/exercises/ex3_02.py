@@ -12,6 +12,7 @@ STATEMENT = ("\"f_1 is directed from P_2 to P_3, whereas f_2 is directed from P_
              "Find the location of point P lying closest to P_4 that will make the magnitude "
              "of n a minimum.\"")
 CITATION = "Angeles, Sec. 3.9, Exercise 3.2"
+FIGURE_NAME = "tetrahedron"
 _r3, _r6 = sp.sqrt(3), sp.sqrt(6)
 _BOOK = ([0, 0, 0], [1, 0, 0], [sp.Rational(1, 2), _r3 / 2, 0],
          [sp.Rational(1, 2), _r3 / 6, _r6 / 3])

@@ -21,6 +21,7 @@ TITLE = "Two redundant wrench sensors"
 STATEMENT = ("\"Show that the measurements are compatible, based on invariance arguments. "
              "Determine the relative orientation of the two frames\"")
 CITATION = "Angeles, Sec. 3.9, Exercise 3.4"
+FIGURE_NAME = "frames"
 MEASURED = True
 PARAMETERS = (
     Param("n_1", sp.ImmutableMatrix([0, 0, 5]), (3,), "moment read by sensor 1, in its frame "
@@ -37,7 +38,6 @@ VARIANTS = (
     ("readings that are not compatible (ill-posed)", {"f_2": [1, 1, 1]}),
 )
 _INVARIANTS = ("||f||^2", "||n||^2", "n.f")
-_FIGURE_HINT = "the two sensor frames, F_2 drawn in F_1 by the answer Q"
 
 
 def _invariants(n, f) -> sp.Matrix:

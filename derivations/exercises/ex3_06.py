@@ -14,6 +14,7 @@ STATEMENT = ("\"Compute the angle of rotation of the motion undergone by G ... a
              "unit vector parallel to the axis of rotation ... Determine the set of points of "
              "G undergoing a displacement of minimum magnitude\"")
 CITATION = "Angeles, Sec. 3.9, Exercise 3.6"
+FIGURE_NAME = "grasp"
 _V = sp.ImmutableMatrix
 PARAMETERS = (
     Param("face_normal", _V([1, 1, 1]), (3,), "normal of the triangular faces DEF, D'E'F' "

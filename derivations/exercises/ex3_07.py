@@ -12,6 +12,7 @@ STATEMENT = ("\"the moment of this axis is measured with respect to two points, 
              "Determine the unit vector e ... the point P* ... the Plücker coordinates of the "
              "axis about the origin\"")
 CITATION = "Angeles, Sec. 3.9, Exercise 3.7"
+FIGURE_NAME = "axis"
 _V = sp.ImmutableMatrix
 PARAMETERS = (
     Param("a", _V([1, 0, 0]), (3,), "position of point A", "m"),

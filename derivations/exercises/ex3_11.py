@@ -14,6 +14,7 @@ STATEMENT = ("\"A rectangular prism with regular hexagonal bases whose sides are
              "and whose height is 150 mm ... Find the centroidal principal axes and moments "
              "of inertia\"")
 CITATION = "Angeles, Sec. 3.9, Exercise 3.11"
+FIGURE_NAME = "prism"
 PARAMETERS = (Param("a", A_SIDE, (), "side of the regular hexagonal bases", "m"),
               Param("h", HEIGHT, (), "height of the prism", "m"))
 VARIANTS = (

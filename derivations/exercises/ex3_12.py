@@ -15,6 +15,7 @@ STATEMENT = ("\"cutting it into two parts, which are separated by a plane that c
              "Find the centroidal principal axes and moments of inertia of each of the two "
              "parts.\"")
 CITATION = "Angeles, Sec. 3.9, Exercise 3.12"
+FIGURE_NAME = "cut"
 PARAMETERS = (Param("a", A_SIDE, (), "side of the regular hexagonal bases", "m"),
               Param("h", HEIGHT, (), "height of the prism (at least a sqrt(3), so that the "
                     "cut leaves through a side face)", "m"))

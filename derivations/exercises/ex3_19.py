@@ -22,6 +22,7 @@ TITLE = "Six-axis force sensor"
 STATEMENT = ("\"If points P and S lie a distance of 100 mm apart, find the wrench in F_2, when "
              "the readouts of the sensor are [n]_S = [1, 0, 1]^T Nm, [f]_S = [0, 1, 0]^T N\"")
 CITATION = "Angeles, Sec. 3.9, Exercise 3.19"
+FIGURE_NAME = "sensor"
 MEASURED = True
 _V = sp.ImmutableMatrix
 PARAMETERS = (

@@ -140,7 +140,7 @@ static int64_t rigidsym_H_matrix_run_f32(
     return count;
 }
 
-int64_t rigidsym_H_matrix_f32_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_H_matrix_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_e,
     const float *RIGIDSYM_RESTRICT in_phi,
@@ -162,7 +162,7 @@ int64_t rigidsym_H_matrix_f32_threads(
     return count;
 }
 
-int64_t rigidsym_H_matrix_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_H_matrix_threads)(
     int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_e,
     const double *RIGIDSYM_RESTRICT in_phi,
@@ -186,13 +186,13 @@ int64_t rigidsym_H_matrix_threads(
     return count;
 }
 
-int64_t rigidsym_H_matrix(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_H_matrix)(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_e,
     const double *RIGIDSYM_RESTRICT in_phi,
     double *RIGIDSYM_RESTRICT out_H_matrix)
 {
-    return rigidsym_H_matrix_threads(n, 1,
+    return RIGIDSYM_ISA_NAME(rigidsym_H_matrix_threads)(n, 1,
         in_e,
         in_phi,
         out_H_matrix);

@@ -115,7 +115,7 @@ static inline int rigidsym_L_matrix_sample_trig(
 
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
  * are written as NaN; returns their number. One thread. */
-int64_t rigidsym_L_matrix(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_L_matrix)(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_e,
     const double *RIGIDSYM_RESTRICT in_phi,
@@ -123,7 +123,7 @@ int64_t rigidsym_L_matrix(
 
 /* The same on `threads` threads (OpenMP; one thread without it); the outputs and the count
  * are the same for every thread count. */
-int64_t rigidsym_L_matrix_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_L_matrix_threads)(
     int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_e,
     const double *RIGIDSYM_RESTRICT in_phi,
@@ -132,7 +132,7 @@ int64_t rigidsym_L_matrix_threads(
 
 /* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
  * is flagged too). */
-int64_t rigidsym_L_matrix_f32_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_L_matrix_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_e,
     const float *RIGIDSYM_RESTRICT in_phi,

@@ -146,7 +146,7 @@ static int64_t rigidsym_L_tilde_run_f32(
     return count;
 }
 
-int64_t rigidsym_L_tilde_f32_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_L_tilde_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_e,
     const float *RIGIDSYM_RESTRICT in_phi,
@@ -168,7 +168,7 @@ int64_t rigidsym_L_tilde_f32_threads(
     return count;
 }
 
-int64_t rigidsym_L_tilde_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_L_tilde_threads)(
     int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_e,
     const double *RIGIDSYM_RESTRICT in_phi,
@@ -192,13 +192,13 @@ int64_t rigidsym_L_tilde_threads(
     return count;
 }
 
-int64_t rigidsym_L_tilde(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_L_tilde)(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_e,
     const double *RIGIDSYM_RESTRICT in_phi,
     double *RIGIDSYM_RESTRICT out_L_tilde)
 {
-    return rigidsym_L_tilde_threads(n, 1,
+    return RIGIDSYM_ISA_NAME(rigidsym_L_tilde_threads)(n, 1,
         in_e,
         in_phi,
         out_L_tilde);

@@ -54,7 +54,7 @@ static inline int rigidsym_L_tilde_sample(
         singular |= (x1) == 0.0;
         /* quantities that can be non-finite for finite inputs (divisions, roots):
          * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
-        const double finite = (x2 - x2);
+        const double finite = ((x2 - x2) + (x1 - x1));
         singular |= finite != finite;
     }
     return singular;
@@ -99,7 +99,7 @@ static inline int rigidsym_L_tilde_sample_trig(
         singular |= (x1) == 0.0;
         /* quantities that can be non-finite for finite inputs (divisions, roots):
          * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
-        const double finite = (x2 - x2);
+        const double finite = ((x2 - x2) + (x1 - x1));
         singular |= finite != finite;
     }
     return singular;
@@ -108,7 +108,7 @@ static inline int rigidsym_L_tilde_sample_trig(
 
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
  * are written as NaN; returns their number. One thread. */
-int64_t rigidsym_L_tilde(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_L_tilde)(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_e,
     const double *RIGIDSYM_RESTRICT in_phi,
@@ -116,7 +116,7 @@ int64_t rigidsym_L_tilde(
 
 /* The same on `threads` threads (OpenMP; one thread without it); the outputs and the count
  * are the same for every thread count. */
-int64_t rigidsym_L_tilde_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_L_tilde_threads)(
     int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_e,
     const double *RIGIDSYM_RESTRICT in_phi,
@@ -125,7 +125,7 @@ int64_t rigidsym_L_tilde_threads(
 
 /* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
  * is flagged too). */
-int64_t rigidsym_L_tilde_f32_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_L_tilde_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_e,
     const float *RIGIDSYM_RESTRICT in_phi,

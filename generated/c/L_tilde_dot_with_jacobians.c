@@ -226,7 +226,7 @@ static int64_t rigidsym_L_tilde_dot_with_jacobians_run_f32(
     return count;
 }
 
-int64_t rigidsym_L_tilde_dot_with_jacobians_f32_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_L_tilde_dot_with_jacobians_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_e,
     const float *RIGIDSYM_RESTRICT in_phi,
@@ -256,7 +256,7 @@ int64_t rigidsym_L_tilde_dot_with_jacobians_f32_threads(
     return count;
 }
 
-int64_t rigidsym_L_tilde_dot_with_jacobians_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_L_tilde_dot_with_jacobians_threads)(
     int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_e,
     const double *RIGIDSYM_RESTRICT in_phi,
@@ -288,7 +288,7 @@ int64_t rigidsym_L_tilde_dot_with_jacobians_threads(
     return count;
 }
 
-int64_t rigidsym_L_tilde_dot_with_jacobians(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_L_tilde_dot_with_jacobians)(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_e,
     const double *RIGIDSYM_RESTRICT in_phi,
@@ -298,7 +298,7 @@ int64_t rigidsym_L_tilde_dot_with_jacobians(
     double *RIGIDSYM_RESTRICT out_L_tilde_dot_D_phi,
     double *RIGIDSYM_RESTRICT out_L_tilde_dot_D_omega)
 {
-    return rigidsym_L_tilde_dot_with_jacobians_threads(n, 1,
+    return RIGIDSYM_ISA_NAME(rigidsym_L_tilde_dot_with_jacobians_threads)(n, 1,
         in_e,
         in_phi,
         in_omega,

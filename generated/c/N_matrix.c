@@ -146,7 +146,7 @@ static int64_t rigidsym_N_matrix_run_f32(
     return count;
 }
 
-int64_t rigidsym_N_matrix_f32_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_N_matrix_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_e,
     const float *RIGIDSYM_RESTRICT in_phi,
@@ -168,7 +168,7 @@ int64_t rigidsym_N_matrix_f32_threads(
     return count;
 }
 
-int64_t rigidsym_N_matrix_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_N_matrix_threads)(
     int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_e,
     const double *RIGIDSYM_RESTRICT in_phi,
@@ -192,13 +192,13 @@ int64_t rigidsym_N_matrix_threads(
     return count;
 }
 
-int64_t rigidsym_N_matrix(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_N_matrix)(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_e,
     const double *RIGIDSYM_RESTRICT in_phi,
     double *RIGIDSYM_RESTRICT out_N_matrix)
 {
-    return rigidsym_N_matrix_threads(n, 1,
+    return RIGIDSYM_ISA_NAME(rigidsym_N_matrix_threads)(n, 1,
         in_e,
         in_phi,
         out_N_matrix);

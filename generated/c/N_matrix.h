@@ -56,7 +56,7 @@ static inline int rigidsym_N_matrix_sample(
         singular |= (x1) == 0.0;
         /* quantities that can be non-finite for finite inputs (divisions, roots):
          * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
-        const double finite = (x2 - x2);
+        const double finite = ((x2 - x2) + (x1 - x1));
         singular |= finite != finite;
     }
     return singular;
@@ -103,7 +103,7 @@ static inline int rigidsym_N_matrix_sample_trig(
         singular |= (x1) == 0.0;
         /* quantities that can be non-finite for finite inputs (divisions, roots):
          * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
-        const double finite = (x2 - x2);
+        const double finite = ((x2 - x2) + (x1 - x1));
         singular |= finite != finite;
     }
     return singular;
@@ -112,7 +112,7 @@ static inline int rigidsym_N_matrix_sample_trig(
 
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
  * are written as NaN; returns their number. One thread. */
-int64_t rigidsym_N_matrix(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_N_matrix)(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_e,
     const double *RIGIDSYM_RESTRICT in_phi,
@@ -120,7 +120,7 @@ int64_t rigidsym_N_matrix(
 
 /* The same on `threads` threads (OpenMP; one thread without it); the outputs and the count
  * are the same for every thread count. */
-int64_t rigidsym_N_matrix_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_N_matrix_threads)(
     int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_e,
     const double *RIGIDSYM_RESTRICT in_phi,
@@ -129,7 +129,7 @@ int64_t rigidsym_N_matrix_threads(
 
 /* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
  * is flagged too). */
-int64_t rigidsym_N_matrix_f32_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_N_matrix_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_e,
     const float *RIGIDSYM_RESTRICT in_phi,

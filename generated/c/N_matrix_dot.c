@@ -160,7 +160,7 @@ static int64_t rigidsym_N_matrix_dot_run_f32(
     return count;
 }
 
-int64_t rigidsym_N_matrix_dot_f32_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_N_matrix_dot_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_e,
     const float *RIGIDSYM_RESTRICT in_phi,
@@ -184,7 +184,7 @@ int64_t rigidsym_N_matrix_dot_f32_threads(
     return count;
 }
 
-int64_t rigidsym_N_matrix_dot_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_N_matrix_dot_threads)(
     int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_e,
     const double *RIGIDSYM_RESTRICT in_phi,
@@ -210,14 +210,14 @@ int64_t rigidsym_N_matrix_dot_threads(
     return count;
 }
 
-int64_t rigidsym_N_matrix_dot(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_N_matrix_dot)(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_e,
     const double *RIGIDSYM_RESTRICT in_phi,
     const double *RIGIDSYM_RESTRICT in_omega,
     double *RIGIDSYM_RESTRICT out_N_matrix_dot)
 {
-    return rigidsym_N_matrix_dot_threads(n, 1,
+    return RIGIDSYM_ISA_NAME(rigidsym_N_matrix_dot_threads)(n, 1,
         in_e,
         in_phi,
         in_omega,

@@ -126,7 +126,7 @@ static inline int rigidsym_N_matrix_with_jacobians_sample(
         singular |= (x2) == 0.0;
         /* quantities that can be non-finite for finite inputs (divisions, roots):
          * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
-        const double finite = ((x4 - x4) + (x20 - x20));
+        const double finite = (((x4 - x4) + (x20 - x20)) + ((x2 - x2) + (x19 - x19)));
         singular |= finite != finite;
     }
     return singular;
@@ -243,7 +243,7 @@ static inline int rigidsym_N_matrix_with_jacobians_sample_trig(
         singular |= (x2) == 0.0;
         /* quantities that can be non-finite for finite inputs (divisions, roots):
          * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
-        const double finite = ((x4 - x4) + (x20 - x20));
+        const double finite = (((x4 - x4) + (x20 - x20)) + ((x2 - x2) + (x19 - x19)));
         singular |= finite != finite;
     }
     return singular;
@@ -252,7 +252,7 @@ static inline int rigidsym_N_matrix_with_jacobians_sample_trig(
 
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
  * are written as NaN; returns their number. One thread. */
-int64_t rigidsym_N_matrix_with_jacobians(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_N_matrix_with_jacobians)(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_e,
     const double *RIGIDSYM_RESTRICT in_phi,
@@ -262,7 +262,7 @@ int64_t rigidsym_N_matrix_with_jacobians(
 
 /* The same on `threads` threads (OpenMP; one thread without it); the outputs and the count
  * are the same for every thread count. */
-int64_t rigidsym_N_matrix_with_jacobians_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_N_matrix_with_jacobians_threads)(
     int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_e,
     const double *RIGIDSYM_RESTRICT in_phi,
@@ -273,7 +273,7 @@ int64_t rigidsym_N_matrix_with_jacobians_threads(
 
 /* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
  * is flagged too). */
-int64_t rigidsym_N_matrix_with_jacobians_f32_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_N_matrix_with_jacobians_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_e,
     const float *RIGIDSYM_RESTRICT in_phi,

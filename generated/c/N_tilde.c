@@ -140,7 +140,7 @@ static int64_t rigidsym_N_tilde_run_f32(
     return count;
 }
 
-int64_t rigidsym_N_tilde_f32_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_N_tilde_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_e,
     const float *RIGIDSYM_RESTRICT in_phi,
@@ -162,7 +162,7 @@ int64_t rigidsym_N_tilde_f32_threads(
     return count;
 }
 
-int64_t rigidsym_N_tilde_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_N_tilde_threads)(
     int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_e,
     const double *RIGIDSYM_RESTRICT in_phi,
@@ -186,13 +186,13 @@ int64_t rigidsym_N_tilde_threads(
     return count;
 }
 
-int64_t rigidsym_N_tilde(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_N_tilde)(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_e,
     const double *RIGIDSYM_RESTRICT in_phi,
     double *RIGIDSYM_RESTRICT out_N_tilde)
 {
-    return rigidsym_N_tilde_threads(n, 1,
+    return RIGIDSYM_ISA_NAME(rigidsym_N_tilde_threads)(n, 1,
         in_e,
         in_phi,
         out_N_tilde);

@@ -10,6 +10,7 @@
  *
  * Time derivative of N_tilde along omega, with the Jacobians of its outputs.
  * d/dt N_tilde(e(t), phi(t)) with e_dot, phi_dot from omega (the corrected form where the printed one does not hold); and d(output)/d(input) by sympy on the declared formula
+ * Singular set: phi = 0 (mod 2 pi): the axis, and so its rate, is undefined
  */
 #ifndef RIGIDSYM_N_TILDE_DOT_WITH_JACOBIANS_H
 #define RIGIDSYM_N_TILDE_DOT_WITH_JACOBIANS_H
@@ -255,7 +256,7 @@ static inline int rigidsym_N_tilde_dot_with_jacobians_sample(
         singular |= (x1) == 0.0;
         /* quantities that can be non-finite for finite inputs (divisions, roots):
          * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
-        const double finite = ((x17 - x17) + (x97 - x97));
+        const double finite = (((x17 - x17) + (x97 - x97)) + ((x1 - x1) + (x2 - x2)));
         singular |= finite != finite;
     }
     return singular;
@@ -502,7 +503,7 @@ static inline int rigidsym_N_tilde_dot_with_jacobians_sample_trig(
         singular |= (x1) == 0.0;
         /* quantities that can be non-finite for finite inputs (divisions, roots):
          * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
-        const double finite = ((x17 - x17) + (x97 - x97));
+        const double finite = (((x17 - x17) + (x97 - x97)) + ((x1 - x1) + (x2 - x2)));
         singular |= finite != finite;
     }
     return singular;
@@ -511,7 +512,7 @@ static inline int rigidsym_N_tilde_dot_with_jacobians_sample_trig(
 
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
  * are written as NaN; returns their number. One thread. */
-int64_t rigidsym_N_tilde_dot_with_jacobians(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_N_tilde_dot_with_jacobians)(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_e,
     const double *RIGIDSYM_RESTRICT in_phi,
@@ -523,7 +524,7 @@ int64_t rigidsym_N_tilde_dot_with_jacobians(
 
 /* The same on `threads` threads (OpenMP; one thread without it); the outputs and the count
  * are the same for every thread count. */
-int64_t rigidsym_N_tilde_dot_with_jacobians_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_N_tilde_dot_with_jacobians_threads)(
     int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_e,
     const double *RIGIDSYM_RESTRICT in_phi,
@@ -536,7 +537,7 @@ int64_t rigidsym_N_tilde_dot_with_jacobians_threads(
 
 /* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
  * is flagged too). */
-int64_t rigidsym_N_tilde_dot_with_jacobians_f32_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_N_tilde_dot_with_jacobians_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_e,
     const float *RIGIDSYM_RESTRICT in_phi,

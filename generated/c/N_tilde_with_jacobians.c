@@ -180,7 +180,7 @@ static int64_t rigidsym_N_tilde_with_jacobians_run_f32(
     return count;
 }
 
-int64_t rigidsym_N_tilde_with_jacobians_f32_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_N_tilde_with_jacobians_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_e,
     const float *RIGIDSYM_RESTRICT in_phi,
@@ -206,7 +206,7 @@ int64_t rigidsym_N_tilde_with_jacobians_f32_threads(
     return count;
 }
 
-int64_t rigidsym_N_tilde_with_jacobians_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_N_tilde_with_jacobians_threads)(
     int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_e,
     const double *RIGIDSYM_RESTRICT in_phi,
@@ -234,7 +234,7 @@ int64_t rigidsym_N_tilde_with_jacobians_threads(
     return count;
 }
 
-int64_t rigidsym_N_tilde_with_jacobians(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_N_tilde_with_jacobians)(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_e,
     const double *RIGIDSYM_RESTRICT in_phi,
@@ -242,7 +242,7 @@ int64_t rigidsym_N_tilde_with_jacobians(
     double *RIGIDSYM_RESTRICT out_N_tilde_D_e,
     double *RIGIDSYM_RESTRICT out_N_tilde_D_phi)
 {
-    return rigidsym_N_tilde_with_jacobians_threads(n, 1,
+    return RIGIDSYM_ISA_NAME(rigidsym_N_tilde_with_jacobians_threads)(n, 1,
         in_e,
         in_phi,
         out_N_tilde,

@@ -43,7 +43,7 @@ static inline int rigidsym_euler_angle_rates_xyz_fixed_sample(
         singular |= (x0) == 0.0;
         /* quantities that can be non-finite for finite inputs (divisions, roots):
          * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
-        const double finite = (x1 - x1);
+        const double finite = ((x1 - x1) + (x0 - x0));
         singular |= finite != finite;
     }
     return singular;
@@ -79,7 +79,7 @@ static inline int rigidsym_euler_angle_rates_xyz_fixed_sample_trig(
         singular |= (x0) == 0.0;
         /* quantities that can be non-finite for finite inputs (divisions, roots):
          * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
-        const double finite = (x1 - x1);
+        const double finite = ((x1 - x1) + (x0 - x0));
         singular |= finite != finite;
     }
     return singular;
@@ -88,7 +88,7 @@ static inline int rigidsym_euler_angle_rates_xyz_fixed_sample_trig(
 
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
  * are written as NaN; returns their number. One thread. */
-int64_t rigidsym_euler_angle_rates_xyz_fixed(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_euler_angle_rates_xyz_fixed)(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_angles,
     const double *RIGIDSYM_RESTRICT in_omega,
@@ -96,7 +96,7 @@ int64_t rigidsym_euler_angle_rates_xyz_fixed(
 
 /* The same on `threads` threads (OpenMP; one thread without it); the outputs and the count
  * are the same for every thread count. */
-int64_t rigidsym_euler_angle_rates_xyz_fixed_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_euler_angle_rates_xyz_fixed_threads)(
     int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_angles,
     const double *RIGIDSYM_RESTRICT in_omega,
@@ -105,7 +105,7 @@ int64_t rigidsym_euler_angle_rates_xyz_fixed_threads(
 
 /* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
  * is flagged too). */
-int64_t rigidsym_euler_angle_rates_xyz_fixed_f32_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_euler_angle_rates_xyz_fixed_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_angles,
     const float *RIGIDSYM_RESTRICT in_omega,

@@ -156,7 +156,7 @@ static int64_t rigidsym_euler_angle_rates_zyz_fixed_run_f32(
     return count;
 }
 
-int64_t rigidsym_euler_angle_rates_zyz_fixed_f32_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_euler_angle_rates_zyz_fixed_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_angles,
     const float *RIGIDSYM_RESTRICT in_omega,
@@ -178,7 +178,7 @@ int64_t rigidsym_euler_angle_rates_zyz_fixed_f32_threads(
     return count;
 }
 
-int64_t rigidsym_euler_angle_rates_zyz_fixed_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_euler_angle_rates_zyz_fixed_threads)(
     int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_angles,
     const double *RIGIDSYM_RESTRICT in_omega,
@@ -202,13 +202,13 @@ int64_t rigidsym_euler_angle_rates_zyz_fixed_threads(
     return count;
 }
 
-int64_t rigidsym_euler_angle_rates_zyz_fixed(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_euler_angle_rates_zyz_fixed)(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_angles,
     const double *RIGIDSYM_RESTRICT in_omega,
     double *RIGIDSYM_RESTRICT out_eta_dot)
 {
-    return rigidsym_euler_angle_rates_zyz_fixed_threads(n, 1,
+    return RIGIDSYM_ISA_NAME(rigidsym_euler_angle_rates_zyz_fixed_threads)(n, 1,
         in_angles,
         in_omega,
         out_eta_dot);

@@ -75,14 +75,14 @@ static inline int rigidsym_euler_rate_matrix_xyz_fixed_sample_trig(
 
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
  * are written as NaN; returns their number. One thread. */
-int64_t rigidsym_euler_rate_matrix_xyz_fixed(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_euler_rate_matrix_xyz_fixed)(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_angles,
     double *RIGIDSYM_RESTRICT out_W);
 
 /* The same on `threads` threads (OpenMP; one thread without it); the outputs and the count
  * are the same for every thread count. */
-int64_t rigidsym_euler_rate_matrix_xyz_fixed_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_euler_rate_matrix_xyz_fixed_threads)(
     int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_angles,
     double *RIGIDSYM_RESTRICT out_W);
@@ -90,7 +90,7 @@ int64_t rigidsym_euler_rate_matrix_xyz_fixed_threads(
 
 /* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
  * is flagged too). */
-int64_t rigidsym_euler_rate_matrix_xyz_fixed_f32_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_euler_rate_matrix_xyz_fixed_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_angles,
     float *RIGIDSYM_RESTRICT out_W);

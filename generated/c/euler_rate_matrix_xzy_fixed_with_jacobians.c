@@ -155,7 +155,7 @@ static int64_t rigidsym_euler_rate_matrix_xzy_fixed_with_jacobians_run_f32(
     return count;
 }
 
-int64_t rigidsym_euler_rate_matrix_xzy_fixed_with_jacobians_f32_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_euler_rate_matrix_xzy_fixed_with_jacobians_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_angles,
     float *RIGIDSYM_RESTRICT out_W,
@@ -177,7 +177,7 @@ int64_t rigidsym_euler_rate_matrix_xzy_fixed_with_jacobians_f32_threads(
     return count;
 }
 
-int64_t rigidsym_euler_rate_matrix_xzy_fixed_with_jacobians_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_euler_rate_matrix_xzy_fixed_with_jacobians_threads)(
     int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_angles,
     double *RIGIDSYM_RESTRICT out_W,
@@ -201,13 +201,13 @@ int64_t rigidsym_euler_rate_matrix_xzy_fixed_with_jacobians_threads(
     return count;
 }
 
-int64_t rigidsym_euler_rate_matrix_xzy_fixed_with_jacobians(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_euler_rate_matrix_xzy_fixed_with_jacobians)(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_angles,
     double *RIGIDSYM_RESTRICT out_W,
     double *RIGIDSYM_RESTRICT out_W_D_angles)
 {
-    return rigidsym_euler_rate_matrix_xzy_fixed_with_jacobians_threads(n, 1,
+    return RIGIDSYM_ISA_NAME(rigidsym_euler_rate_matrix_xzy_fixed_with_jacobians_threads)(n, 1,
         in_angles,
         out_W,
         out_W_D_angles);

@@ -135,7 +135,7 @@ static int64_t rigidsym_euler_rate_matrix_zxy_body_run_f32(
     return count;
 }
 
-int64_t rigidsym_euler_rate_matrix_zxy_body_f32_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_euler_rate_matrix_zxy_body_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_angles,
     float *RIGIDSYM_RESTRICT out_W)
@@ -155,7 +155,7 @@ int64_t rigidsym_euler_rate_matrix_zxy_body_f32_threads(
     return count;
 }
 
-int64_t rigidsym_euler_rate_matrix_zxy_body_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_euler_rate_matrix_zxy_body_threads)(
     int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_angles,
     double *RIGIDSYM_RESTRICT out_W)
@@ -177,12 +177,12 @@ int64_t rigidsym_euler_rate_matrix_zxy_body_threads(
     return count;
 }
 
-int64_t rigidsym_euler_rate_matrix_zxy_body(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_euler_rate_matrix_zxy_body)(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_angles,
     double *RIGIDSYM_RESTRICT out_W)
 {
-    return rigidsym_euler_rate_matrix_zxy_body_threads(n, 1,
+    return RIGIDSYM_ISA_NAME(rigidsym_euler_rate_matrix_zxy_body_threads)(n, 1,
         in_angles,
         out_W);
 }

@@ -69,7 +69,7 @@ static inline int rigidsym_inertia_at_point_sample(
 
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
  * are written as NaN; returns their number. One thread. */
-int64_t rigidsym_inertia_at_point(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_inertia_at_point)(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_I_C,
     const double *RIGIDSYM_RESTRICT in_m,
@@ -79,7 +79,7 @@ int64_t rigidsym_inertia_at_point(
 
 /* The same on `threads` threads (OpenMP; one thread without it); the outputs and the count
  * are the same for every thread count. */
-int64_t rigidsym_inertia_at_point_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_inertia_at_point_threads)(
     int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_I_C,
     const double *RIGIDSYM_RESTRICT in_m,
@@ -90,7 +90,7 @@ int64_t rigidsym_inertia_at_point_threads(
 
 /* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
  * is flagged too). */
-int64_t rigidsym_inertia_at_point_f32_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_inertia_at_point_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_I_C,
     const float *RIGIDSYM_RESTRICT in_m,

@@ -231,7 +231,7 @@ static int64_t rigidsym_inertia_at_point_with_jacobians_run_f32(
     return count;
 }
 
-int64_t rigidsym_inertia_at_point_with_jacobians_f32_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_inertia_at_point_with_jacobians_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_I_C,
     const float *RIGIDSYM_RESTRICT in_m,
@@ -265,7 +265,7 @@ int64_t rigidsym_inertia_at_point_with_jacobians_f32_threads(
     return count;
 }
 
-int64_t rigidsym_inertia_at_point_with_jacobians_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_inertia_at_point_with_jacobians_threads)(
     int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_I_C,
     const double *RIGIDSYM_RESTRICT in_m,
@@ -301,7 +301,7 @@ int64_t rigidsym_inertia_at_point_with_jacobians_threads(
     return count;
 }
 
-int64_t rigidsym_inertia_at_point_with_jacobians(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_inertia_at_point_with_jacobians)(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_I_C,
     const double *RIGIDSYM_RESTRICT in_m,
@@ -313,7 +313,7 @@ int64_t rigidsym_inertia_at_point_with_jacobians(
     double *RIGIDSYM_RESTRICT out_I_A_D_c,
     double *RIGIDSYM_RESTRICT out_I_A_D_a)
 {
-    return rigidsym_inertia_at_point_with_jacobians_threads(n, 1,
+    return RIGIDSYM_ISA_NAME(rigidsym_inertia_at_point_with_jacobians_threads)(n, 1,
         in_I_C,
         in_m,
         in_c,

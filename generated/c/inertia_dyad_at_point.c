@@ -151,7 +151,7 @@ static int64_t rigidsym_inertia_dyad_at_point_run_f32(
     return count;
 }
 
-int64_t rigidsym_inertia_dyad_at_point_f32_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_inertia_dyad_at_point_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_I_C,
     const float *RIGIDSYM_RESTRICT in_m,
@@ -177,7 +177,7 @@ int64_t rigidsym_inertia_dyad_at_point_f32_threads(
     return count;
 }
 
-int64_t rigidsym_inertia_dyad_at_point_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_inertia_dyad_at_point_threads)(
     int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_I_C,
     const double *RIGIDSYM_RESTRICT in_m,
@@ -205,7 +205,7 @@ int64_t rigidsym_inertia_dyad_at_point_threads(
     return count;
 }
 
-int64_t rigidsym_inertia_dyad_at_point(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_inertia_dyad_at_point)(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_I_C,
     const double *RIGIDSYM_RESTRICT in_m,
@@ -213,7 +213,7 @@ int64_t rigidsym_inertia_dyad_at_point(
     const double *RIGIDSYM_RESTRICT in_a,
     double *RIGIDSYM_RESTRICT out_M_A)
 {
-    return rigidsym_inertia_dyad_at_point_threads(n, 1,
+    return RIGIDSYM_ISA_NAME(rigidsym_inertia_dyad_at_point_threads)(n, 1,
         in_I_C,
         in_m,
         in_c,

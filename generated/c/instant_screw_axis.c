@@ -186,7 +186,7 @@ static int64_t rigidsym_instant_screw_axis_run_f32(
     return count;
 }
 
-int64_t rigidsym_instant_screw_axis_f32_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_instant_screw_axis_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_omega,
     const float *RIGIDSYM_RESTRICT in_a,
@@ -214,7 +214,7 @@ int64_t rigidsym_instant_screw_axis_f32_threads(
     return count;
 }
 
-int64_t rigidsym_instant_screw_axis_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_instant_screw_axis_threads)(
     int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_omega,
     const double *RIGIDSYM_RESTRICT in_a,
@@ -244,7 +244,7 @@ int64_t rigidsym_instant_screw_axis_threads(
     return count;
 }
 
-int64_t rigidsym_instant_screw_axis(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_instant_screw_axis)(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_omega,
     const double *RIGIDSYM_RESTRICT in_a,
@@ -253,7 +253,7 @@ int64_t rigidsym_instant_screw_axis(
     double *RIGIDSYM_RESTRICT out_pitch,
     double *RIGIDSYM_RESTRICT out_plucker)
 {
-    return rigidsym_instant_screw_axis_threads(n, 1,
+    return RIGIDSYM_ISA_NAME(rigidsym_instant_screw_axis_threads)(n, 1,
         in_omega,
         in_a,
         in_a_dot,

@@ -384,7 +384,7 @@ static int64_t rigidsym_instant_screw_axis_with_jacobians_run_f32(
     return count;
 }
 
-int64_t rigidsym_instant_screw_axis_with_jacobians_f32_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_instant_screw_axis_with_jacobians_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_omega,
     const float *RIGIDSYM_RESTRICT in_a,
@@ -430,7 +430,7 @@ int64_t rigidsym_instant_screw_axis_with_jacobians_f32_threads(
     return count;
 }
 
-int64_t rigidsym_instant_screw_axis_with_jacobians_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_instant_screw_axis_with_jacobians_threads)(
     int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_omega,
     const double *RIGIDSYM_RESTRICT in_a,
@@ -478,7 +478,7 @@ int64_t rigidsym_instant_screw_axis_with_jacobians_threads(
     return count;
 }
 
-int64_t rigidsym_instant_screw_axis_with_jacobians(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_instant_screw_axis_with_jacobians)(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_omega,
     const double *RIGIDSYM_RESTRICT in_a,
@@ -496,7 +496,7 @@ int64_t rigidsym_instant_screw_axis_with_jacobians(
     double *RIGIDSYM_RESTRICT out_plucker_D_a,
     double *RIGIDSYM_RESTRICT out_plucker_D_a_dot)
 {
-    return rigidsym_instant_screw_axis_with_jacobians_threads(n, 1,
+    return RIGIDSYM_ISA_NAME(rigidsym_instant_screw_axis_with_jacobians_threads)(n, 1,
         in_omega,
         in_a,
         in_a_dot,

@@ -229,7 +229,7 @@ static inline int rigidsym_instant_screw_axis_with_jacobians_sample(
         singular |= (x4) == 0.0;
         /* quantities that can be non-finite for finite inputs (divisions, roots):
          * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
-        const double finite = (((x5 - x5) + (x23 - x23)) + ((x30 - x30) + (x61 - x61)));
+        const double finite = (((x5 - x5) + (x23 - x23)) + ((x30 - x30) + ((x61 - x61) + (x4 - x4))));
         singular |= finite != finite;
     }
     return singular;
@@ -238,7 +238,7 @@ static inline int rigidsym_instant_screw_axis_with_jacobians_sample(
 
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
  * are written as NaN; returns their number. One thread. */
-int64_t rigidsym_instant_screw_axis_with_jacobians(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_instant_screw_axis_with_jacobians)(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_omega,
     const double *RIGIDSYM_RESTRICT in_a,
@@ -258,7 +258,7 @@ int64_t rigidsym_instant_screw_axis_with_jacobians(
 
 /* The same on `threads` threads (OpenMP; one thread without it); the outputs and the count
  * are the same for every thread count. */
-int64_t rigidsym_instant_screw_axis_with_jacobians_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_instant_screw_axis_with_jacobians_threads)(
     int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_omega,
     const double *RIGIDSYM_RESTRICT in_a,
@@ -279,7 +279,7 @@ int64_t rigidsym_instant_screw_axis_with_jacobians_threads(
 
 /* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
  * is flagged too). */
-int64_t rigidsym_instant_screw_axis_with_jacobians_f32_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_instant_screw_axis_with_jacobians_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_omega,
     const float *RIGIDSYM_RESTRICT in_a,

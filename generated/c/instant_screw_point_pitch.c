@@ -164,7 +164,7 @@ static int64_t rigidsym_instant_screw_point_pitch_run_f32(
     return count;
 }
 
-int64_t rigidsym_instant_screw_point_pitch_f32_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_instant_screw_point_pitch_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_omega,
     const float *RIGIDSYM_RESTRICT in_a,
@@ -190,7 +190,7 @@ int64_t rigidsym_instant_screw_point_pitch_f32_threads(
     return count;
 }
 
-int64_t rigidsym_instant_screw_point_pitch_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_instant_screw_point_pitch_threads)(
     int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_omega,
     const double *RIGIDSYM_RESTRICT in_a,
@@ -218,7 +218,7 @@ int64_t rigidsym_instant_screw_point_pitch_threads(
     return count;
 }
 
-int64_t rigidsym_instant_screw_point_pitch(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_instant_screw_point_pitch)(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_omega,
     const double *RIGIDSYM_RESTRICT in_a,
@@ -226,7 +226,7 @@ int64_t rigidsym_instant_screw_point_pitch(
     double *RIGIDSYM_RESTRICT out_p0,
     double *RIGIDSYM_RESTRICT out_pitch)
 {
-    return rigidsym_instant_screw_point_pitch_threads(n, 1,
+    return RIGIDSYM_ISA_NAME(rigidsym_instant_screw_point_pitch_threads)(n, 1,
         in_omega,
         in_a,
         in_a_dot,

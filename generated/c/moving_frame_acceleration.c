@@ -190,7 +190,7 @@ static int64_t rigidsym_moving_frame_acceleration_run_f32(
     return count;
 }
 
-int64_t rigidsym_moving_frame_acceleration_f32_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_moving_frame_acceleration_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_o_ddot,
     const float *RIGIDSYM_RESTRICT in_Q,
@@ -222,7 +222,7 @@ int64_t rigidsym_moving_frame_acceleration_f32_threads(
     return count;
 }
 
-int64_t rigidsym_moving_frame_acceleration_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_moving_frame_acceleration_threads)(
     int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_o_ddot,
     const double *RIGIDSYM_RESTRICT in_Q,
@@ -256,7 +256,7 @@ int64_t rigidsym_moving_frame_acceleration_threads(
     return count;
 }
 
-int64_t rigidsym_moving_frame_acceleration(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_moving_frame_acceleration)(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_o_ddot,
     const double *RIGIDSYM_RESTRICT in_Q,
@@ -267,7 +267,7 @@ int64_t rigidsym_moving_frame_acceleration(
     const double *RIGIDSYM_RESTRICT in_rho_ddot_M,
     double *RIGIDSYM_RESTRICT out_p_ddot)
 {
-    return rigidsym_moving_frame_acceleration_threads(n, 1,
+    return RIGIDSYM_ISA_NAME(rigidsym_moving_frame_acceleration_threads)(n, 1,
         in_o_ddot,
         in_Q,
         in_omega,

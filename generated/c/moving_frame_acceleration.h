@@ -85,7 +85,7 @@ static inline int rigidsym_moving_frame_acceleration_sample(
 
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
  * are written as NaN; returns their number. One thread. */
-int64_t rigidsym_moving_frame_acceleration(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_moving_frame_acceleration)(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_o_ddot,
     const double *RIGIDSYM_RESTRICT in_Q,
@@ -98,7 +98,7 @@ int64_t rigidsym_moving_frame_acceleration(
 
 /* The same on `threads` threads (OpenMP; one thread without it); the outputs and the count
  * are the same for every thread count. */
-int64_t rigidsym_moving_frame_acceleration_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_moving_frame_acceleration_threads)(
     int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_o_ddot,
     const double *RIGIDSYM_RESTRICT in_Q,
@@ -112,7 +112,7 @@ int64_t rigidsym_moving_frame_acceleration_threads(
 
 /* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
  * is flagged too). */
-int64_t rigidsym_moving_frame_acceleration_f32_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_moving_frame_acceleration_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_o_ddot,
     const float *RIGIDSYM_RESTRICT in_Q,

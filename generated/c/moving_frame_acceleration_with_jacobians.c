@@ -330,7 +330,7 @@ static int64_t rigidsym_moving_frame_acceleration_with_jacobians_run_f32(
     return count;
 }
 
-int64_t rigidsym_moving_frame_acceleration_with_jacobians_f32_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_moving_frame_acceleration_with_jacobians_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_o_ddot,
     const float *RIGIDSYM_RESTRICT in_Q,
@@ -376,7 +376,7 @@ int64_t rigidsym_moving_frame_acceleration_with_jacobians_f32_threads(
     return count;
 }
 
-int64_t rigidsym_moving_frame_acceleration_with_jacobians_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_moving_frame_acceleration_with_jacobians_threads)(
     int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_o_ddot,
     const double *RIGIDSYM_RESTRICT in_Q,
@@ -424,7 +424,7 @@ int64_t rigidsym_moving_frame_acceleration_with_jacobians_threads(
     return count;
 }
 
-int64_t rigidsym_moving_frame_acceleration_with_jacobians(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_moving_frame_acceleration_with_jacobians)(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_o_ddot,
     const double *RIGIDSYM_RESTRICT in_Q,
@@ -442,7 +442,7 @@ int64_t rigidsym_moving_frame_acceleration_with_jacobians(
     double *RIGIDSYM_RESTRICT out_p_ddot_D_rho_dot_M,
     double *RIGIDSYM_RESTRICT out_p_ddot_D_rho_ddot_M)
 {
-    return rigidsym_moving_frame_acceleration_with_jacobians_threads(n, 1,
+    return RIGIDSYM_ISA_NAME(rigidsym_moving_frame_acceleration_with_jacobians_threads)(n, 1,
         in_o_ddot,
         in_Q,
         in_omega,

@@ -137,7 +137,7 @@ static int64_t rigidsym_natural_invariants_from_rotation_run_f32(
     return count;
 }
 
-int64_t rigidsym_natural_invariants_from_rotation_f32_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_natural_invariants_from_rotation_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_Q,
     float *RIGIDSYM_RESTRICT out_e,
@@ -159,7 +159,7 @@ int64_t rigidsym_natural_invariants_from_rotation_f32_threads(
     return count;
 }
 
-int64_t rigidsym_natural_invariants_from_rotation_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_natural_invariants_from_rotation_threads)(
     int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_Q,
     double *RIGIDSYM_RESTRICT out_e,
@@ -183,13 +183,13 @@ int64_t rigidsym_natural_invariants_from_rotation_threads(
     return count;
 }
 
-int64_t rigidsym_natural_invariants_from_rotation(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_natural_invariants_from_rotation)(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_Q,
     double *RIGIDSYM_RESTRICT out_e,
     double *RIGIDSYM_RESTRICT out_phi)
 {
-    return rigidsym_natural_invariants_from_rotation_threads(n, 1,
+    return RIGIDSYM_ISA_NAME(rigidsym_natural_invariants_from_rotation_threads)(n, 1,
         in_Q,
         out_e,
         out_phi);

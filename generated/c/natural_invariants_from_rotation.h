@@ -57,7 +57,7 @@ static inline int rigidsym_natural_invariants_from_rotation_sample(
         singular |= (x9) == 0.0;
         /* quantities that can be non-finite for finite inputs (divisions, roots):
          * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
-        const double finite = ((x13 - x13) + (out_phi[0] - out_phi[0]));
+        const double finite = (((x13 - x13) + (out_phi[0] - out_phi[0])) + ((x9 - x9) + (((x10*x10) + (x11*x11) + (x12*x12)) - ((x10*x10) + (x11*x11) + (x12*x12)))));
         singular |= finite != finite;
     } else if (Q_11 >= Q_00 && Q_11 >= Q_22 && Q_00 + Q_11 + Q_22 < 0.0) {
         const double x0 = (0.5)*Q_01;
@@ -78,7 +78,7 @@ static inline int rigidsym_natural_invariants_from_rotation_sample(
         singular |= (x6) == 0.0;
         /* quantities that can be non-finite for finite inputs (divisions, roots):
          * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
-        const double finite = ((x10 - x10) + (out_phi[0] - out_phi[0]));
+        const double finite = (((x10 - x10) + (out_phi[0] - out_phi[0])) + ((x6 - x6) + (((x7*x7) + (x8*x8) + (x9*x9)) - ((x7*x7) + (x8*x8) + (x9*x9)))));
         singular |= finite != finite;
     } else if (Q_22 >= Q_00 && Q_22 >= Q_11 && Q_00 + Q_11 + Q_22 < 0.0) {
         const double x0 = (0.5)*Q_02;
@@ -100,7 +100,7 @@ static inline int rigidsym_natural_invariants_from_rotation_sample(
         singular |= (x7) == 0.0;
         /* quantities that can be non-finite for finite inputs (divisions, roots):
          * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
-        const double finite = ((x11 - x11) + (out_phi[0] - out_phi[0]));
+        const double finite = (((x11 - x11) + (out_phi[0] - out_phi[0])) + ((x7 - x7) + (((x10*x10) + (x8*x8) + (x9*x9)) - ((x10*x10) + (x8*x8) + (x9*x9)))));
         singular |= finite != finite;
     } else {
         const double x0 = -0.5*Q_12 + (0.5)*Q_21;
@@ -116,7 +116,7 @@ static inline int rigidsym_natural_invariants_from_rotation_sample(
         singular |= (x3) == 0.0;
         /* quantities that can be non-finite for finite inputs (divisions, roots):
          * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
-        const double finite = ((x4 - x4) + (x5 - x5));
+        const double finite = ((x4 - x4) + ((x5 - x5) + (x3 - x3)));
         singular |= finite != finite;
     }
     return singular;
@@ -125,7 +125,7 @@ static inline int rigidsym_natural_invariants_from_rotation_sample(
 
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
  * are written as NaN; returns their number. One thread. */
-int64_t rigidsym_natural_invariants_from_rotation(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_natural_invariants_from_rotation)(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_Q,
     double *RIGIDSYM_RESTRICT out_e,
@@ -133,7 +133,7 @@ int64_t rigidsym_natural_invariants_from_rotation(
 
 /* The same on `threads` threads (OpenMP; one thread without it); the outputs and the count
  * are the same for every thread count. */
-int64_t rigidsym_natural_invariants_from_rotation_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_natural_invariants_from_rotation_threads)(
     int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_Q,
     double *RIGIDSYM_RESTRICT out_e,
@@ -142,7 +142,7 @@ int64_t rigidsym_natural_invariants_from_rotation_threads(
 
 /* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
  * is flagged too). */
-int64_t rigidsym_natural_invariants_from_rotation_f32_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_natural_invariants_from_rotation_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_Q,
     float *RIGIDSYM_RESTRICT out_e,

@@ -190,7 +190,7 @@ static int64_t rigidsym_newton_euler_residual_run_f32(
     return count;
 }
 
-int64_t rigidsym_newton_euler_residual_f32_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_newton_euler_residual_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_I_C,
     const float *RIGIDSYM_RESTRICT in_m,
@@ -222,7 +222,7 @@ int64_t rigidsym_newton_euler_residual_f32_threads(
     return count;
 }
 
-int64_t rigidsym_newton_euler_residual_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_newton_euler_residual_threads)(
     int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_I_C,
     const double *RIGIDSYM_RESTRICT in_m,
@@ -256,7 +256,7 @@ int64_t rigidsym_newton_euler_residual_threads(
     return count;
 }
 
-int64_t rigidsym_newton_euler_residual(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_newton_euler_residual)(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_I_C,
     const double *RIGIDSYM_RESTRICT in_m,
@@ -267,7 +267,7 @@ int64_t rigidsym_newton_euler_residual(
     const double *RIGIDSYM_RESTRICT in_f,
     double *RIGIDSYM_RESTRICT out_r)
 {
-    return rigidsym_newton_euler_residual_threads(n, 1,
+    return RIGIDSYM_ISA_NAME(rigidsym_newton_euler_residual_threads)(n, 1,
         in_I_C,
         in_m,
         in_omega,

@@ -164,7 +164,7 @@ static int64_t rigidsym_newton_euler_wrench_run_f32(
     return count;
 }
 
-int64_t rigidsym_newton_euler_wrench_f32_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_newton_euler_wrench_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_I_C,
     const float *RIGIDSYM_RESTRICT in_m,
@@ -192,7 +192,7 @@ int64_t rigidsym_newton_euler_wrench_f32_threads(
     return count;
 }
 
-int64_t rigidsym_newton_euler_wrench_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_newton_euler_wrench_threads)(
     int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_I_C,
     const double *RIGIDSYM_RESTRICT in_m,
@@ -222,7 +222,7 @@ int64_t rigidsym_newton_euler_wrench_threads(
     return count;
 }
 
-int64_t rigidsym_newton_euler_wrench(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_newton_euler_wrench)(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_I_C,
     const double *RIGIDSYM_RESTRICT in_m,
@@ -231,7 +231,7 @@ int64_t rigidsym_newton_euler_wrench(
     const double *RIGIDSYM_RESTRICT in_c_ddot,
     double *RIGIDSYM_RESTRICT out_w)
 {
-    return rigidsym_newton_euler_wrench_threads(n, 1,
+    return RIGIDSYM_ISA_NAME(rigidsym_newton_euler_wrench_threads)(n, 1,
         in_I_C,
         in_m,
         in_omega,

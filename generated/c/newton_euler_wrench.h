@@ -63,7 +63,7 @@ static inline int rigidsym_newton_euler_wrench_sample(
 
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
  * are written as NaN; returns their number. One thread. */
-int64_t rigidsym_newton_euler_wrench(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_newton_euler_wrench)(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_I_C,
     const double *RIGIDSYM_RESTRICT in_m,
@@ -74,7 +74,7 @@ int64_t rigidsym_newton_euler_wrench(
 
 /* The same on `threads` threads (OpenMP; one thread without it); the outputs and the count
  * are the same for every thread count. */
-int64_t rigidsym_newton_euler_wrench_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_newton_euler_wrench_threads)(
     int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_I_C,
     const double *RIGIDSYM_RESTRICT in_m,
@@ -86,7 +86,7 @@ int64_t rigidsym_newton_euler_wrench_threads(
 
 /* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
  * is flagged too). */
-int64_t rigidsym_newton_euler_wrench_f32_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_newton_euler_wrench_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_I_C,
     const float *RIGIDSYM_RESTRICT in_m,

@@ -264,7 +264,7 @@ static int64_t rigidsym_newton_euler_wrench_with_jacobians_run_f32(
     return count;
 }
 
-int64_t rigidsym_newton_euler_wrench_with_jacobians_f32_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_newton_euler_wrench_with_jacobians_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_I_C,
     const float *RIGIDSYM_RESTRICT in_m,
@@ -302,7 +302,7 @@ int64_t rigidsym_newton_euler_wrench_with_jacobians_f32_threads(
     return count;
 }
 
-int64_t rigidsym_newton_euler_wrench_with_jacobians_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_newton_euler_wrench_with_jacobians_threads)(
     int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_I_C,
     const double *RIGIDSYM_RESTRICT in_m,
@@ -342,7 +342,7 @@ int64_t rigidsym_newton_euler_wrench_with_jacobians_threads(
     return count;
 }
 
-int64_t rigidsym_newton_euler_wrench_with_jacobians(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_newton_euler_wrench_with_jacobians)(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_I_C,
     const double *RIGIDSYM_RESTRICT in_m,
@@ -356,7 +356,7 @@ int64_t rigidsym_newton_euler_wrench_with_jacobians(
     double *RIGIDSYM_RESTRICT out_w_D_omega_dot,
     double *RIGIDSYM_RESTRICT out_w_D_c_ddot)
 {
-    return rigidsym_newton_euler_wrench_with_jacobians_threads(n, 1,
+    return RIGIDSYM_ISA_NAME(rigidsym_newton_euler_wrench_with_jacobians_threads)(n, 1,
         in_I_C,
         in_m,
         in_omega,

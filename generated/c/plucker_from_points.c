@@ -128,7 +128,7 @@ static int64_t rigidsym_plucker_from_points_run_f32(
     return count;
 }
 
-int64_t rigidsym_plucker_from_points_f32_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_plucker_from_points_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_p1,
     const float *RIGIDSYM_RESTRICT in_p2,
@@ -150,7 +150,7 @@ int64_t rigidsym_plucker_from_points_f32_threads(
     return count;
 }
 
-int64_t rigidsym_plucker_from_points_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_plucker_from_points_threads)(
     int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_p1,
     const double *RIGIDSYM_RESTRICT in_p2,
@@ -174,13 +174,13 @@ int64_t rigidsym_plucker_from_points_threads(
     return count;
 }
 
-int64_t rigidsym_plucker_from_points(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_plucker_from_points)(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_p1,
     const double *RIGIDSYM_RESTRICT in_p2,
     double *RIGIDSYM_RESTRICT out_kappa)
 {
-    return rigidsym_plucker_from_points_threads(n, 1,
+    return RIGIDSYM_ISA_NAME(rigidsym_plucker_from_points_threads)(n, 1,
         in_p1,
         in_p2,
         out_kappa);

@@ -49,7 +49,7 @@ static inline int rigidsym_plucker_from_points_sample(
         singular |= (x3) == 0.0;
         /* quantities that can be non-finite for finite inputs (divisions, roots):
          * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
-        const double finite = (x4 - x4);
+        const double finite = ((x4 - x4) + (x3 - x3));
         singular |= finite != finite;
     }
     return singular;
@@ -58,7 +58,7 @@ static inline int rigidsym_plucker_from_points_sample(
 
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
  * are written as NaN; returns their number. One thread. */
-int64_t rigidsym_plucker_from_points(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_plucker_from_points)(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_p1,
     const double *RIGIDSYM_RESTRICT in_p2,
@@ -66,7 +66,7 @@ int64_t rigidsym_plucker_from_points(
 
 /* The same on `threads` threads (OpenMP; one thread without it); the outputs and the count
  * are the same for every thread count. */
-int64_t rigidsym_plucker_from_points_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_plucker_from_points_threads)(
     int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_p1,
     const double *RIGIDSYM_RESTRICT in_p2,
@@ -75,7 +75,7 @@ int64_t rigidsym_plucker_from_points_threads(
 
 /* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
  * is flagged too). */
-int64_t rigidsym_plucker_from_points_f32_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_plucker_from_points_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_p1,
     const float *RIGIDSYM_RESTRICT in_p2,

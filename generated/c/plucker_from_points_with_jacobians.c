@@ -172,7 +172,7 @@ static int64_t rigidsym_plucker_from_points_with_jacobians_run_f32(
     return count;
 }
 
-int64_t rigidsym_plucker_from_points_with_jacobians_f32_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_plucker_from_points_with_jacobians_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_p1,
     const float *RIGIDSYM_RESTRICT in_p2,
@@ -198,7 +198,7 @@ int64_t rigidsym_plucker_from_points_with_jacobians_f32_threads(
     return count;
 }
 
-int64_t rigidsym_plucker_from_points_with_jacobians_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_plucker_from_points_with_jacobians_threads)(
     int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_p1,
     const double *RIGIDSYM_RESTRICT in_p2,
@@ -226,7 +226,7 @@ int64_t rigidsym_plucker_from_points_with_jacobians_threads(
     return count;
 }
 
-int64_t rigidsym_plucker_from_points_with_jacobians(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_plucker_from_points_with_jacobians)(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_p1,
     const double *RIGIDSYM_RESTRICT in_p2,
@@ -234,7 +234,7 @@ int64_t rigidsym_plucker_from_points_with_jacobians(
     double *RIGIDSYM_RESTRICT out_kappa_D_p1,
     double *RIGIDSYM_RESTRICT out_kappa_D_p2)
 {
-    return rigidsym_plucker_from_points_with_jacobians_threads(n, 1,
+    return RIGIDSYM_ISA_NAME(rigidsym_plucker_from_points_with_jacobians_threads)(n, 1,
         in_p1,
         in_p2,
         out_kappa,

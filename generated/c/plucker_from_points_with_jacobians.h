@@ -122,7 +122,7 @@ static inline int rigidsym_plucker_from_points_with_jacobians_sample(
         singular |= (x9) == 0.0;
         /* quantities that can be non-finite for finite inputs (divisions, roots):
          * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
-        const double finite = ((x10 - x10) + (x15 - x15));
+        const double finite = ((x10 - x10) + ((x15 - x15) + (x9 - x9)));
         singular |= finite != finite;
     }
     return singular;
@@ -131,7 +131,7 @@ static inline int rigidsym_plucker_from_points_with_jacobians_sample(
 
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
  * are written as NaN; returns their number. One thread. */
-int64_t rigidsym_plucker_from_points_with_jacobians(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_plucker_from_points_with_jacobians)(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_p1,
     const double *RIGIDSYM_RESTRICT in_p2,
@@ -141,7 +141,7 @@ int64_t rigidsym_plucker_from_points_with_jacobians(
 
 /* The same on `threads` threads (OpenMP; one thread without it); the outputs and the count
  * are the same for every thread count. */
-int64_t rigidsym_plucker_from_points_with_jacobians_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_plucker_from_points_with_jacobians_threads)(
     int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_p1,
     const double *RIGIDSYM_RESTRICT in_p2,
@@ -152,7 +152,7 @@ int64_t rigidsym_plucker_from_points_with_jacobians_threads(
 
 /* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
  * is flagged too). */
-int64_t rigidsym_plucker_from_points_with_jacobians_f32_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_plucker_from_points_with_jacobians_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_p1,
     const float *RIGIDSYM_RESTRICT in_p2,

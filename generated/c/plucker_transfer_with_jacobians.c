@@ -198,7 +198,7 @@ static int64_t rigidsym_plucker_transfer_with_jacobians_run_f32(
     return count;
 }
 
-int64_t rigidsym_plucker_transfer_with_jacobians_f32_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_plucker_transfer_with_jacobians_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_kappa_A,
     const float *RIGIDSYM_RESTRICT in_a,
@@ -228,7 +228,7 @@ int64_t rigidsym_plucker_transfer_with_jacobians_f32_threads(
     return count;
 }
 
-int64_t rigidsym_plucker_transfer_with_jacobians_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_plucker_transfer_with_jacobians_threads)(
     int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_kappa_A,
     const double *RIGIDSYM_RESTRICT in_a,
@@ -260,7 +260,7 @@ int64_t rigidsym_plucker_transfer_with_jacobians_threads(
     return count;
 }
 
-int64_t rigidsym_plucker_transfer_with_jacobians(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_plucker_transfer_with_jacobians)(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_kappa_A,
     const double *RIGIDSYM_RESTRICT in_a,
@@ -270,7 +270,7 @@ int64_t rigidsym_plucker_transfer_with_jacobians(
     double *RIGIDSYM_RESTRICT out_kappa_B_D_a,
     double *RIGIDSYM_RESTRICT out_kappa_B_D_b)
 {
-    return rigidsym_plucker_transfer_with_jacobians_threads(n, 1,
+    return RIGIDSYM_ISA_NAME(rigidsym_plucker_transfer_with_jacobians_threads)(n, 1,
         in_kappa_A,
         in_a,
         in_b,

@@ -164,7 +164,7 @@ static int64_t rigidsym_point_acceleration_run_f32(
     return count;
 }
 
-int64_t rigidsym_point_acceleration_f32_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_point_acceleration_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_a_ddot,
     const float *RIGIDSYM_RESTRICT in_omega,
@@ -192,7 +192,7 @@ int64_t rigidsym_point_acceleration_f32_threads(
     return count;
 }
 
-int64_t rigidsym_point_acceleration_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_point_acceleration_threads)(
     int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_a_ddot,
     const double *RIGIDSYM_RESTRICT in_omega,
@@ -222,7 +222,7 @@ int64_t rigidsym_point_acceleration_threads(
     return count;
 }
 
-int64_t rigidsym_point_acceleration(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_point_acceleration)(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_a_ddot,
     const double *RIGIDSYM_RESTRICT in_omega,
@@ -231,7 +231,7 @@ int64_t rigidsym_point_acceleration(
     const double *RIGIDSYM_RESTRICT in_a,
     double *RIGIDSYM_RESTRICT out_p_ddot)
 {
-    return rigidsym_point_acceleration_threads(n, 1,
+    return RIGIDSYM_ISA_NAME(rigidsym_point_acceleration_threads)(n, 1,
         in_a_ddot,
         in_omega,
         in_omega_dot,

@@ -264,7 +264,7 @@ static int64_t rigidsym_point_acceleration_with_jacobians_run_f32(
     return count;
 }
 
-int64_t rigidsym_point_acceleration_with_jacobians_f32_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_point_acceleration_with_jacobians_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_a_ddot,
     const float *RIGIDSYM_RESTRICT in_omega,
@@ -302,7 +302,7 @@ int64_t rigidsym_point_acceleration_with_jacobians_f32_threads(
     return count;
 }
 
-int64_t rigidsym_point_acceleration_with_jacobians_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_point_acceleration_with_jacobians_threads)(
     int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_a_ddot,
     const double *RIGIDSYM_RESTRICT in_omega,
@@ -342,7 +342,7 @@ int64_t rigidsym_point_acceleration_with_jacobians_threads(
     return count;
 }
 
-int64_t rigidsym_point_acceleration_with_jacobians(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_point_acceleration_with_jacobians)(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_a_ddot,
     const double *RIGIDSYM_RESTRICT in_omega,
@@ -356,7 +356,7 @@ int64_t rigidsym_point_acceleration_with_jacobians(
     double *RIGIDSYM_RESTRICT out_p_ddot_D_p,
     double *RIGIDSYM_RESTRICT out_p_ddot_D_a)
 {
-    return rigidsym_point_acceleration_with_jacobians_threads(n, 1,
+    return RIGIDSYM_ISA_NAME(rigidsym_point_acceleration_with_jacobians_threads)(n, 1,
         in_a_ddot,
         in_omega,
         in_omega_dot,

@@ -20,6 +20,27 @@
 #endif
 #endif
 
+/* CPU dispatch (rigidsym.kernels._build): the batch functions are compiled once per build
+ * path (x86-64-v2, x86-64-v3, or -march=native on request), each time with
+ * -DRIGIDSYM_ISA_SUFFIX=_<path>, so that their exported names carry the path and the objects
+ * of several paths link into one extension module; rigidsym_dispatch.h picks one path's
+ * table at import. Without the macro (a plain build of these files) the names are bare. */
+#define RIGIDSYM_ISA_CAT_(a, b) a##b
+#define RIGIDSYM_ISA_CAT(a, b) RIGIDSYM_ISA_CAT_(a, b)
+#if defined(RIGIDSYM_ISA_SUFFIX)
+#define RIGIDSYM_ISA_NAME(f) RIGIDSYM_ISA_CAT(f, RIGIDSYM_ISA_SUFFIX)
+#else
+#define RIGIDSYM_ISA_NAME(f) f
+#endif
+
+/* One kernel's batch functions in a path's table (rigidsym_table.c): float64 and float32
+ * storage, cast back to their own types by the module (rigidsym_module.c). */
+typedef void (*rigidsym_fn)(void);
+typedef struct {
+    rigidsym_fn f64;
+    rigidsym_fn f32;
+} rigidsym_fns;
+
 /* Vectorised sin/cos (SIMD batch loops): defined by `rigidsym build-c` when glibc's libmvec
  * links (with -fopenmp-simd -fno-builtin-sin -fno-builtin-cos, so that sin and cos are not
  * fused into a scalar sincos call). libmvec's sin and cos are within 4 ulp. Otherwise the

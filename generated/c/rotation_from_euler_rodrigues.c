@@ -112,7 +112,7 @@ static int64_t rigidsym_rotation_from_euler_rodrigues_run_f32(
     return count;
 }
 
-int64_t rigidsym_rotation_from_euler_rodrigues_f32_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_rotation_from_euler_rodrigues_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_eta,
     float *RIGIDSYM_RESTRICT out_Q)
@@ -132,7 +132,7 @@ int64_t rigidsym_rotation_from_euler_rodrigues_f32_threads(
     return count;
 }
 
-int64_t rigidsym_rotation_from_euler_rodrigues_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_rotation_from_euler_rodrigues_threads)(
     int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_eta,
     double *RIGIDSYM_RESTRICT out_Q)
@@ -154,12 +154,12 @@ int64_t rigidsym_rotation_from_euler_rodrigues_threads(
     return count;
 }
 
-int64_t rigidsym_rotation_from_euler_rodrigues(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_rotation_from_euler_rodrigues)(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_eta,
     double *RIGIDSYM_RESTRICT out_Q)
 {
-    return rigidsym_rotation_from_euler_rodrigues_threads(n, 1,
+    return RIGIDSYM_ISA_NAME(rigidsym_rotation_from_euler_rodrigues_threads)(n, 1,
         in_eta,
         out_Q);
 }

@@ -58,14 +58,14 @@ static inline int rigidsym_rotation_from_euler_rodrigues_sample(
 
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
  * are written as NaN; returns their number. One thread. */
-int64_t rigidsym_rotation_from_euler_rodrigues(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_rotation_from_euler_rodrigues)(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_eta,
     double *RIGIDSYM_RESTRICT out_Q);
 
 /* The same on `threads` threads (OpenMP; one thread without it); the outputs and the count
  * are the same for every thread count. */
-int64_t rigidsym_rotation_from_euler_rodrigues_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_rotation_from_euler_rodrigues_threads)(
     int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_eta,
     double *RIGIDSYM_RESTRICT out_Q);
@@ -73,7 +73,7 @@ int64_t rigidsym_rotation_from_euler_rodrigues_threads(
 
 /* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
  * is flagged too). */
-int64_t rigidsym_rotation_from_euler_rodrigues_f32_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_rotation_from_euler_rodrigues_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_eta,
     float *RIGIDSYM_RESTRICT out_Q);

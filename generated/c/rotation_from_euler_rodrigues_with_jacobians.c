@@ -132,7 +132,7 @@ static int64_t rigidsym_rotation_from_euler_rodrigues_with_jacobians_run_f32(
     return count;
 }
 
-int64_t rigidsym_rotation_from_euler_rodrigues_with_jacobians_f32_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_rotation_from_euler_rodrigues_with_jacobians_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_eta,
     float *RIGIDSYM_RESTRICT out_Q,
@@ -154,7 +154,7 @@ int64_t rigidsym_rotation_from_euler_rodrigues_with_jacobians_f32_threads(
     return count;
 }
 
-int64_t rigidsym_rotation_from_euler_rodrigues_with_jacobians_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_rotation_from_euler_rodrigues_with_jacobians_threads)(
     int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_eta,
     double *RIGIDSYM_RESTRICT out_Q,
@@ -178,13 +178,13 @@ int64_t rigidsym_rotation_from_euler_rodrigues_with_jacobians_threads(
     return count;
 }
 
-int64_t rigidsym_rotation_from_euler_rodrigues_with_jacobians(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_rotation_from_euler_rodrigues_with_jacobians)(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_eta,
     double *RIGIDSYM_RESTRICT out_Q,
     double *RIGIDSYM_RESTRICT out_Q_D_eta)
 {
-    return rigidsym_rotation_from_euler_rodrigues_with_jacobians_threads(n, 1,
+    return RIGIDSYM_ISA_NAME(rigidsym_rotation_from_euler_rodrigues_with_jacobians_threads)(n, 1,
         in_eta,
         out_Q,
         out_Q_D_eta);

@@ -140,7 +140,7 @@ static int64_t rigidsym_rotation_from_natural_invariants_run_f32(
     return count;
 }
 
-int64_t rigidsym_rotation_from_natural_invariants_f32_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_rotation_from_natural_invariants_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_e,
     const float *RIGIDSYM_RESTRICT in_phi,
@@ -162,7 +162,7 @@ int64_t rigidsym_rotation_from_natural_invariants_f32_threads(
     return count;
 }
 
-int64_t rigidsym_rotation_from_natural_invariants_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_rotation_from_natural_invariants_threads)(
     int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_e,
     const double *RIGIDSYM_RESTRICT in_phi,
@@ -186,13 +186,13 @@ int64_t rigidsym_rotation_from_natural_invariants_threads(
     return count;
 }
 
-int64_t rigidsym_rotation_from_natural_invariants(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_rotation_from_natural_invariants)(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_e,
     const double *RIGIDSYM_RESTRICT in_phi,
     double *RIGIDSYM_RESTRICT out_Q)
 {
-    return rigidsym_rotation_from_natural_invariants_threads(n, 1,
+    return RIGIDSYM_ISA_NAME(rigidsym_rotation_from_natural_invariants_threads)(n, 1,
         in_e,
         in_phi,
         out_Q);

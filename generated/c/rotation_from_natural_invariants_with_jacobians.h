@@ -205,7 +205,7 @@ static inline int rigidsym_rotation_from_natural_invariants_with_jacobians_sampl
 
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
  * are written as NaN; returns their number. One thread. */
-int64_t rigidsym_rotation_from_natural_invariants_with_jacobians(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_rotation_from_natural_invariants_with_jacobians)(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_e,
     const double *RIGIDSYM_RESTRICT in_phi,
@@ -215,7 +215,7 @@ int64_t rigidsym_rotation_from_natural_invariants_with_jacobians(
 
 /* The same on `threads` threads (OpenMP; one thread without it); the outputs and the count
  * are the same for every thread count. */
-int64_t rigidsym_rotation_from_natural_invariants_with_jacobians_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_rotation_from_natural_invariants_with_jacobians_threads)(
     int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_e,
     const double *RIGIDSYM_RESTRICT in_phi,
@@ -226,7 +226,7 @@ int64_t rigidsym_rotation_from_natural_invariants_with_jacobians_threads(
 
 /* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
  * is flagged too). */
-int64_t rigidsym_rotation_from_natural_invariants_with_jacobians_f32_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_rotation_from_natural_invariants_with_jacobians_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_e,
     const float *RIGIDSYM_RESTRICT in_phi,

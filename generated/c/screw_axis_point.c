@@ -174,7 +174,7 @@ static int64_t rigidsym_screw_axis_point_run_f32(
     return count;
 }
 
-int64_t rigidsym_screw_axis_point_f32_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_screw_axis_point_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_e,
     const float *RIGIDSYM_RESTRICT in_phi,
@@ -200,7 +200,7 @@ int64_t rigidsym_screw_axis_point_f32_threads(
     return count;
 }
 
-int64_t rigidsym_screw_axis_point_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_screw_axis_point_threads)(
     int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_e,
     const double *RIGIDSYM_RESTRICT in_phi,
@@ -228,7 +228,7 @@ int64_t rigidsym_screw_axis_point_threads(
     return count;
 }
 
-int64_t rigidsym_screw_axis_point(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_screw_axis_point)(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_e,
     const double *RIGIDSYM_RESTRICT in_phi,
@@ -236,7 +236,7 @@ int64_t rigidsym_screw_axis_point(
     const double *RIGIDSYM_RESTRICT in_a_prime,
     double *RIGIDSYM_RESTRICT out_p0)
 {
-    return rigidsym_screw_axis_point_threads(n, 1,
+    return RIGIDSYM_ISA_NAME(rigidsym_screw_axis_point_threads)(n, 1,
         in_e,
         in_phi,
         in_a,

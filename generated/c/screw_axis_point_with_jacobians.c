@@ -262,7 +262,7 @@ static int64_t rigidsym_screw_axis_point_with_jacobians_run_f32(
     return count;
 }
 
-int64_t rigidsym_screw_axis_point_with_jacobians_f32_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_screw_axis_point_with_jacobians_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_e,
     const float *RIGIDSYM_RESTRICT in_phi,
@@ -296,7 +296,7 @@ int64_t rigidsym_screw_axis_point_with_jacobians_f32_threads(
     return count;
 }
 
-int64_t rigidsym_screw_axis_point_with_jacobians_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_screw_axis_point_with_jacobians_threads)(
     int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_e,
     const double *RIGIDSYM_RESTRICT in_phi,
@@ -332,7 +332,7 @@ int64_t rigidsym_screw_axis_point_with_jacobians_threads(
     return count;
 }
 
-int64_t rigidsym_screw_axis_point_with_jacobians(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_screw_axis_point_with_jacobians)(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_e,
     const double *RIGIDSYM_RESTRICT in_phi,
@@ -344,7 +344,7 @@ int64_t rigidsym_screw_axis_point_with_jacobians(
     double *RIGIDSYM_RESTRICT out_p0_D_a,
     double *RIGIDSYM_RESTRICT out_p0_D_a_prime)
 {
-    return rigidsym_screw_axis_point_with_jacobians_threads(n, 1,
+    return RIGIDSYM_ISA_NAME(rigidsym_screw_axis_point_with_jacobians_threads)(n, 1,
         in_e,
         in_phi,
         in_a,

@@ -231,7 +231,7 @@ static int64_t rigidsym_screw_of_displacement_run_f32(
     return count;
 }
 
-int64_t rigidsym_screw_of_displacement_f32_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_screw_of_displacement_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_Q,
     const float *RIGIDSYM_RESTRICT in_a,
@@ -263,7 +263,7 @@ int64_t rigidsym_screw_of_displacement_f32_threads(
     return count;
 }
 
-int64_t rigidsym_screw_of_displacement_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_screw_of_displacement_threads)(
     int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_Q,
     const double *RIGIDSYM_RESTRICT in_a,
@@ -297,7 +297,7 @@ int64_t rigidsym_screw_of_displacement_threads(
     return count;
 }
 
-int64_t rigidsym_screw_of_displacement(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_screw_of_displacement)(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_Q,
     const double *RIGIDSYM_RESTRICT in_a,
@@ -308,7 +308,7 @@ int64_t rigidsym_screw_of_displacement(
     double *RIGIDSYM_RESTRICT out_pitch,
     double *RIGIDSYM_RESTRICT out_plucker)
 {
-    return rigidsym_screw_of_displacement_threads(n, 1,
+    return RIGIDSYM_ISA_NAME(rigidsym_screw_of_displacement_threads)(n, 1,
         in_Q,
         in_a,
         in_a_prime,

@@ -108,7 +108,7 @@ static inline int rigidsym_screw_of_displacement_sample(
         singular |= (x20) == 0.0;
         /* quantities that can be non-finite for finite inputs (divisions, roots):
          * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
-        const double finite = (((x16 - x16) + ((x20 - x20) + (x32 - x32))) + ((x35 - x35) + ((x37 - x37) + (out_pitch[0] - out_pitch[0]))));
+        const double finite = ((((x16 - x16) + (x20 - x20)) + ((x32 - x32) + ((x35 - x35) + (x37 - x37)))) + (((out_pitch[0] - out_pitch[0]) + (x12 - x12)) + ((((x13*x13) + (x14*x14) + (x15*x15)) - ((x13*x13) + (x14*x14) + (x15*x15))) + ((x31 - x31) + (x36 - x36)))));
         singular |= finite != finite;
     } else if (Q_11 >= Q_00 && Q_11 >= Q_22 && Q_00 + Q_11 + Q_22 < 0.0) {
         const double x0 = (0.5)*Q_01;
@@ -169,7 +169,7 @@ static inline int rigidsym_screw_of_displacement_sample(
         singular |= (x17) == 0.0;
         /* quantities that can be non-finite for finite inputs (divisions, roots):
          * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
-        const double finite = (((x13 - x13) + ((x17 - x17) + (x29 - x29))) + ((x32 - x32) + ((x34 - x34) + (out_pitch[0] - out_pitch[0]))));
+        const double finite = ((((x13 - x13) + (x17 - x17)) + ((x29 - x29) + ((x32 - x32) + (x34 - x34)))) + (((out_pitch[0] - out_pitch[0]) + (x9 - x9)) + ((((x10*x10) + (x11*x11) + (x12*x12)) - ((x10*x10) + (x11*x11) + (x12*x12))) + ((x28 - x28) + (x33 - x33)))));
         singular |= finite != finite;
     } else if (Q_22 >= Q_00 && Q_22 >= Q_11 && Q_00 + Q_11 + Q_22 < 0.0) {
         const double x0 = (0.5)*Q_02;
@@ -231,7 +231,7 @@ static inline int rigidsym_screw_of_displacement_sample(
         singular |= (x18) == 0.0;
         /* quantities that can be non-finite for finite inputs (divisions, roots):
          * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
-        const double finite = (((x14 - x14) + ((x18 - x18) + (x30 - x30))) + ((x33 - x33) + ((x35 - x35) + (out_pitch[0] - out_pitch[0]))));
+        const double finite = ((((x14 - x14) + (x18 - x18)) + ((x30 - x30) + ((x33 - x33) + (x35 - x35)))) + (((out_pitch[0] - out_pitch[0]) + (x10 - x10)) + ((((x11*x11) + (x12*x12) + (x13*x13)) - ((x11*x11) + (x12*x12) + (x13*x13))) + ((x29 - x29) + (x34 - x34)))));
         singular |= finite != finite;
     } else {
         const double x0 = -0.5*Q_12 + (0.5)*Q_21;
@@ -287,7 +287,7 @@ static inline int rigidsym_screw_of_displacement_sample(
         singular |= (x12) == 0.0;
         /* quantities that can be non-finite for finite inputs (divisions, roots):
          * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
-        const double finite = (((x7 - x7) + ((x8 - x8) + (x24 - x24))) + ((x27 - x27) + ((x29 - x29) + (out_pitch[0] - out_pitch[0]))));
+        const double finite = ((((x7 - x7) + (x8 - x8)) + ((x24 - x24) + ((x27 - x27) + (x29 - x29)))) + (((out_pitch[0] - out_pitch[0]) + (x6 - x6)) + ((x23 - x23) + ((x28 - x28) + (x12 - x12)))));
         singular |= finite != finite;
     }
     return singular;
@@ -296,7 +296,7 @@ static inline int rigidsym_screw_of_displacement_sample(
 
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
  * are written as NaN; returns their number. One thread. */
-int64_t rigidsym_screw_of_displacement(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_screw_of_displacement)(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_Q,
     const double *RIGIDSYM_RESTRICT in_a,
@@ -309,7 +309,7 @@ int64_t rigidsym_screw_of_displacement(
 
 /* The same on `threads` threads (OpenMP; one thread without it); the outputs and the count
  * are the same for every thread count. */
-int64_t rigidsym_screw_of_displacement_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_screw_of_displacement_threads)(
     int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_Q,
     const double *RIGIDSYM_RESTRICT in_a,
@@ -323,7 +323,7 @@ int64_t rigidsym_screw_of_displacement_threads(
 
 /* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
  * is flagged too). */
-int64_t rigidsym_screw_of_displacement_f32_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_screw_of_displacement_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_Q,
     const float *RIGIDSYM_RESTRICT in_a,

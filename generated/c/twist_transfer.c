@@ -138,7 +138,7 @@ static int64_t rigidsym_twist_transfer_run_f32(
     return count;
 }
 
-int64_t rigidsym_twist_transfer_f32_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_twist_transfer_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_t_A,
     const float *RIGIDSYM_RESTRICT in_a,
@@ -162,7 +162,7 @@ int64_t rigidsym_twist_transfer_f32_threads(
     return count;
 }
 
-int64_t rigidsym_twist_transfer_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_twist_transfer_threads)(
     int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_t_A,
     const double *RIGIDSYM_RESTRICT in_a,
@@ -188,14 +188,14 @@ int64_t rigidsym_twist_transfer_threads(
     return count;
 }
 
-int64_t rigidsym_twist_transfer(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_twist_transfer)(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_t_A,
     const double *RIGIDSYM_RESTRICT in_a,
     const double *RIGIDSYM_RESTRICT in_p,
     double *RIGIDSYM_RESTRICT out_t_P)
 {
-    return rigidsym_twist_transfer_threads(n, 1,
+    return RIGIDSYM_ISA_NAME(rigidsym_twist_transfer_threads)(n, 1,
         in_t_A,
         in_a,
         in_p,

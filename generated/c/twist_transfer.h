@@ -54,7 +54,7 @@ static inline int rigidsym_twist_transfer_sample(
 
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
  * are written as NaN; returns their number. One thread. */
-int64_t rigidsym_twist_transfer(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_twist_transfer)(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_t_A,
     const double *RIGIDSYM_RESTRICT in_a,
@@ -63,7 +63,7 @@ int64_t rigidsym_twist_transfer(
 
 /* The same on `threads` threads (OpenMP; one thread without it); the outputs and the count
  * are the same for every thread count. */
-int64_t rigidsym_twist_transfer_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_twist_transfer_threads)(
     int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_t_A,
     const double *RIGIDSYM_RESTRICT in_a,
@@ -73,7 +73,7 @@ int64_t rigidsym_twist_transfer_threads(
 
 /* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
  * is flagged too). */
-int64_t rigidsym_twist_transfer_f32_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_twist_transfer_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_t_A,
     const float *RIGIDSYM_RESTRICT in_a,

@@ -125,7 +125,7 @@ static int64_t rigidsym_twist_transfer_matrix_run_f32(
     return count;
 }
 
-int64_t rigidsym_twist_transfer_matrix_f32_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_twist_transfer_matrix_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_a,
     const float *RIGIDSYM_RESTRICT in_p,
@@ -147,7 +147,7 @@ int64_t rigidsym_twist_transfer_matrix_f32_threads(
     return count;
 }
 
-int64_t rigidsym_twist_transfer_matrix_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_twist_transfer_matrix_threads)(
     int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_a,
     const double *RIGIDSYM_RESTRICT in_p,
@@ -171,13 +171,13 @@ int64_t rigidsym_twist_transfer_matrix_threads(
     return count;
 }
 
-int64_t rigidsym_twist_transfer_matrix(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_twist_transfer_matrix)(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_a,
     const double *RIGIDSYM_RESTRICT in_p,
     double *RIGIDSYM_RESTRICT out_U)
 {
-    return rigidsym_twist_transfer_matrix_threads(n, 1,
+    return RIGIDSYM_ISA_NAME(rigidsym_twist_transfer_matrix_threads)(n, 1,
         in_a,
         in_p,
         out_U);

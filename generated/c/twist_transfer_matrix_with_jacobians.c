@@ -165,7 +165,7 @@ static int64_t rigidsym_twist_transfer_matrix_with_jacobians_run_f32(
     return count;
 }
 
-int64_t rigidsym_twist_transfer_matrix_with_jacobians_f32_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_twist_transfer_matrix_with_jacobians_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_a,
     const float *RIGIDSYM_RESTRICT in_p,
@@ -191,7 +191,7 @@ int64_t rigidsym_twist_transfer_matrix_with_jacobians_f32_threads(
     return count;
 }
 
-int64_t rigidsym_twist_transfer_matrix_with_jacobians_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_twist_transfer_matrix_with_jacobians_threads)(
     int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_a,
     const double *RIGIDSYM_RESTRICT in_p,
@@ -219,7 +219,7 @@ int64_t rigidsym_twist_transfer_matrix_with_jacobians_threads(
     return count;
 }
 
-int64_t rigidsym_twist_transfer_matrix_with_jacobians(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_twist_transfer_matrix_with_jacobians)(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_a,
     const double *RIGIDSYM_RESTRICT in_p,
@@ -227,7 +227,7 @@ int64_t rigidsym_twist_transfer_matrix_with_jacobians(
     double *RIGIDSYM_RESTRICT out_U_D_a,
     double *RIGIDSYM_RESTRICT out_U_D_p)
 {
-    return rigidsym_twist_transfer_matrix_with_jacobians_threads(n, 1,
+    return RIGIDSYM_ISA_NAME(rigidsym_twist_transfer_matrix_with_jacobians_threads)(n, 1,
         in_a,
         in_p,
         out_U,

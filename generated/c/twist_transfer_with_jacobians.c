@@ -198,7 +198,7 @@ static int64_t rigidsym_twist_transfer_with_jacobians_run_f32(
     return count;
 }
 
-int64_t rigidsym_twist_transfer_with_jacobians_f32_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_twist_transfer_with_jacobians_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_t_A,
     const float *RIGIDSYM_RESTRICT in_a,
@@ -228,7 +228,7 @@ int64_t rigidsym_twist_transfer_with_jacobians_f32_threads(
     return count;
 }
 
-int64_t rigidsym_twist_transfer_with_jacobians_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_twist_transfer_with_jacobians_threads)(
     int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_t_A,
     const double *RIGIDSYM_RESTRICT in_a,
@@ -260,7 +260,7 @@ int64_t rigidsym_twist_transfer_with_jacobians_threads(
     return count;
 }
 
-int64_t rigidsym_twist_transfer_with_jacobians(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_twist_transfer_with_jacobians)(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_t_A,
     const double *RIGIDSYM_RESTRICT in_a,
@@ -270,7 +270,7 @@ int64_t rigidsym_twist_transfer_with_jacobians(
     double *RIGIDSYM_RESTRICT out_t_P_D_a,
     double *RIGIDSYM_RESTRICT out_t_P_D_p)
 {
-    return rigidsym_twist_transfer_with_jacobians_threads(n, 1,
+    return RIGIDSYM_ISA_NAME(rigidsym_twist_transfer_with_jacobians_threads)(n, 1,
         in_t_A,
         in_a,
         in_p,

@@ -172,7 +172,7 @@ static int64_t rigidsym_wrench_axis_run_f32(
     return count;
 }
 
-int64_t rigidsym_wrench_axis_f32_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_wrench_axis_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_w_A,
     const float *RIGIDSYM_RESTRICT in_a,
@@ -198,7 +198,7 @@ int64_t rigidsym_wrench_axis_f32_threads(
     return count;
 }
 
-int64_t rigidsym_wrench_axis_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_wrench_axis_threads)(
     int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_w_A,
     const double *RIGIDSYM_RESTRICT in_a,
@@ -226,7 +226,7 @@ int64_t rigidsym_wrench_axis_threads(
     return count;
 }
 
-int64_t rigidsym_wrench_axis(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_wrench_axis)(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_w_A,
     const double *RIGIDSYM_RESTRICT in_a,
@@ -234,7 +234,7 @@ int64_t rigidsym_wrench_axis(
     double *RIGIDSYM_RESTRICT out_pitch,
     double *RIGIDSYM_RESTRICT out_plucker)
 {
-    return rigidsym_wrench_axis_threads(n, 1,
+    return RIGIDSYM_ISA_NAME(rigidsym_wrench_axis_threads)(n, 1,
         in_w_A,
         in_a,
         out_p0,

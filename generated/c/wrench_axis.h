@@ -61,7 +61,7 @@ static inline int rigidsym_wrench_axis_sample(
         singular |= (x0) == 0.0;
         /* quantities that can be non-finite for finite inputs (divisions, roots):
          * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
-        const double finite = ((x1 - x1) + ((x8 - x8) + (x9 - x9)));
+        const double finite = (((x1 - x1) + (x8 - x8)) + ((x9 - x9) + (x0 - x0)));
         singular |= finite != finite;
     }
     return singular;
@@ -70,7 +70,7 @@ static inline int rigidsym_wrench_axis_sample(
 
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
  * are written as NaN; returns their number. One thread. */
-int64_t rigidsym_wrench_axis(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_wrench_axis)(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_w_A,
     const double *RIGIDSYM_RESTRICT in_a,
@@ -80,7 +80,7 @@ int64_t rigidsym_wrench_axis(
 
 /* The same on `threads` threads (OpenMP; one thread without it); the outputs and the count
  * are the same for every thread count. */
-int64_t rigidsym_wrench_axis_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_wrench_axis_threads)(
     int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_w_A,
     const double *RIGIDSYM_RESTRICT in_a,
@@ -91,7 +91,7 @@ int64_t rigidsym_wrench_axis_threads(
 
 /* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
  * is flagged too). */
-int64_t rigidsym_wrench_axis_f32_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_wrench_axis_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_w_A,
     const float *RIGIDSYM_RESTRICT in_a,

@@ -304,7 +304,7 @@ static int64_t rigidsym_wrench_axis_with_jacobians_run_f32(
     return count;
 }
 
-int64_t rigidsym_wrench_axis_with_jacobians_f32_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_wrench_axis_with_jacobians_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_w_A,
     const float *RIGIDSYM_RESTRICT in_a,
@@ -342,7 +342,7 @@ int64_t rigidsym_wrench_axis_with_jacobians_f32_threads(
     return count;
 }
 
-int64_t rigidsym_wrench_axis_with_jacobians_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_wrench_axis_with_jacobians_threads)(
     int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_w_A,
     const double *RIGIDSYM_RESTRICT in_a,
@@ -382,7 +382,7 @@ int64_t rigidsym_wrench_axis_with_jacobians_threads(
     return count;
 }
 
-int64_t rigidsym_wrench_axis_with_jacobians(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_wrench_axis_with_jacobians)(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_w_A,
     const double *RIGIDSYM_RESTRICT in_a,
@@ -396,7 +396,7 @@ int64_t rigidsym_wrench_axis_with_jacobians(
     double *RIGIDSYM_RESTRICT out_plucker_D_w_A,
     double *RIGIDSYM_RESTRICT out_plucker_D_a)
 {
-    return rigidsym_wrench_axis_with_jacobians_threads(n, 1,
+    return RIGIDSYM_ISA_NAME(rigidsym_wrench_axis_with_jacobians_threads)(n, 1,
         in_w_A,
         in_a,
         out_p0,

@@ -218,7 +218,7 @@ static inline int rigidsym_wrench_axis_with_jacobians_sample(
         singular |= (x4) == 0.0;
         /* quantities that can be non-finite for finite inputs (divisions, roots):
          * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
-        const double finite = (((x5 - x5) + (x20 - x20)) + ((x21 - x21) + ((x30 - x30) + (x61 - x61))));
+        const double finite = (((x5 - x5) + ((x20 - x20) + (x21 - x21))) + ((x30 - x30) + ((x61 - x61) + (x4 - x4))));
         singular |= finite != finite;
     }
     return singular;
@@ -227,7 +227,7 @@ static inline int rigidsym_wrench_axis_with_jacobians_sample(
 
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
  * are written as NaN; returns their number. One thread. */
-int64_t rigidsym_wrench_axis_with_jacobians(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_wrench_axis_with_jacobians)(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_w_A,
     const double *RIGIDSYM_RESTRICT in_a,
@@ -243,7 +243,7 @@ int64_t rigidsym_wrench_axis_with_jacobians(
 
 /* The same on `threads` threads (OpenMP; one thread without it); the outputs and the count
  * are the same for every thread count. */
-int64_t rigidsym_wrench_axis_with_jacobians_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_wrench_axis_with_jacobians_threads)(
     int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_w_A,
     const double *RIGIDSYM_RESTRICT in_a,
@@ -260,7 +260,7 @@ int64_t rigidsym_wrench_axis_with_jacobians_threads(
 
 /* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
  * is flagged too). */
-int64_t rigidsym_wrench_axis_with_jacobians_f32_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_wrench_axis_with_jacobians_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_w_A,
     const float *RIGIDSYM_RESTRICT in_a,

@@ -77,7 +77,7 @@ static inline int rigidsym_wrench_transfer_matrix_sample(
 
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
  * are written as NaN; returns their number. One thread. */
-int64_t rigidsym_wrench_transfer_matrix(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_wrench_transfer_matrix)(
     int64_t n,
     const double *RIGIDSYM_RESTRICT in_a,
     const double *RIGIDSYM_RESTRICT in_p,
@@ -85,7 +85,7 @@ int64_t rigidsym_wrench_transfer_matrix(
 
 /* The same on `threads` threads (OpenMP; one thread without it); the outputs and the count
  * are the same for every thread count. */
-int64_t rigidsym_wrench_transfer_matrix_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_wrench_transfer_matrix_threads)(
     int64_t n, int threads,
     const double *RIGIDSYM_RESTRICT in_a,
     const double *RIGIDSYM_RESTRICT in_p,
@@ -94,7 +94,7 @@ int64_t rigidsym_wrench_transfer_matrix_threads(
 
 /* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
  * is flagged too). */
-int64_t rigidsym_wrench_transfer_matrix_f32_threads(
+int64_t RIGIDSYM_ISA_NAME(rigidsym_wrench_transfer_matrix_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_a,
     const float *RIGIDSYM_RESTRICT in_p,

@@ -72,6 +72,7 @@ def _main(e_0, e_1, e_2, phi, omega_0, omega_1, omega_2):
     ), (
         x10,
         x19,
+        x5,
     )
 
 

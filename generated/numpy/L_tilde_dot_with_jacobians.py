@@ -243,6 +243,7 @@ def _main(e_0, e_1, e_2, phi, omega_0, omega_1, omega_2):
         x14,
         x29,
         x84,
+        x5,
     )
 
 

@@ -91,6 +91,8 @@ def _main(e_0, e_1, e_2, phi, omega_0, omega_1, omega_2):
     ), (
         x17,
         x40,
+        x7,
+        x6,
     )
 
 

@@ -322,6 +322,8 @@ def _main(e_0, e_1, e_2, phi, omega_0, omega_1, omega_2):
         x21,
         x68,
         x149,
+        x8,
+        x7,
     )
 
 

@@ -66,6 +66,7 @@ def _main(e_0, e_1, e_2, phi, omega_0, omega_1, omega_2):
         x1,
     ), (
         x11,
+        x1,
     )
 
 

@@ -248,6 +248,8 @@ def _main(e_0, e_1, e_2, phi, omega_0, omega_1, omega_2):
     ), (
         x17,
         x97,
+        x1,
+        x2,
     )
 
 

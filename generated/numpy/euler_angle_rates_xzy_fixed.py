@@ -41,6 +41,7 @@ def _main(angles_0, angles_1, angles_2, omega_0, omega_1, omega_2):
         x0,
     ), (
         x1,
+        x0,
     )
 
 

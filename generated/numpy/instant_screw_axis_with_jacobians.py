@@ -213,6 +213,7 @@ def _main(omega_0, omega_1, omega_2, a_0, a_1, a_2, a_dot_0, a_dot_1, a_dot_2):
         x23,
         x30,
         x61,
+        x4,
     )
 
 

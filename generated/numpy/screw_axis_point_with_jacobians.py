@@ -152,6 +152,8 @@ def _main(e_0, e_1, e_2, phi, a_0, a_1, a_2, a_prime_0, a_prime_1, a_prime_2):
     ), (
         x36,
         x69,
+        x4,
+        x3,
     )
 
 

@@ -134,10 +134,11 @@ class Results(Sequence[Result]):
 
     def to_json(self) -> dict:
         """The schema-2 document of ``rigidsym verify --json`` as a dict:
-        ``{"schema": 2, "equations": [record, ...], "summary": {verdict: count}}``."""
-        from rigidsym.report.record import SCHEMA, result_record
+        ``{"schema": 2, "python_flint": version, "equations": [record, ...], "summary":
+        {verdict: count}}``."""
+        from rigidsym.report.record import document_header, result_record
 
-        return {"schema": SCHEMA, "equations": [result_record(r) for r in self._rows],
+        return {**document_header(), "equations": [result_record(r) for r in self._rows],
                 "summary": self.summary()}
 
     def where(self, verdict: str | None = None, *, kind: str | None = None,
@@ -226,7 +227,7 @@ def check(eq_id: str, *, modules: Iterable[ModuleSpec] = ()) -> Result:
 
 def verify(ids: Sequence[str] | str | None = None, sections: Sequence[str] | str | None = None,
            *, modules: Iterable[ModuleSpec] = (), jobs: int = 1,
-           progress: bool = False) -> Results:
+           progress: bool = False, cache: bool = True) -> Results:
     """Decide many equations (the Python side of ``rigidsym verify``).
 
     Args:
@@ -236,6 +237,8 @@ def verify(ids: Sequence[str] | str | None = None, sections: Sequence[str] | str
             objects); with no ids and no sections, only their ids are checked.
         jobs: worker processes (forked; 1 checks in this process).
         progress: show a progress bar on stderr.
+        cache: read unchanged ids from the verdict cache and store the others (``RIGIDSYM_CACHE``,
+            ``verdicts/``; ``Result.cached`` says which); ``False`` checks every id again.
 
     Returns:
         :class:`Results` in id order (book order, then user ids in declaration order). With
@@ -255,5 +258,5 @@ def verify(ids: Sequence[str] | str | None = None, sections: Sequence[str] | str
     names = _load(modules)
     selected = select(list(ids) if ids else None, list(sections) if sections else None, names)
     t0 = time.perf_counter()
-    rows = run_checks(selected, jobs=jobs, progress=progress)
+    rows = run_checks(selected, jobs=jobs, progress=progress, cache=cache)
     return Results(rows, seconds=time.perf_counter() - t0)

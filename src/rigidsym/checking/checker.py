@@ -6,9 +6,10 @@ introduces a new symbol), ``does-not-hold`` (some member differs: an exact ratio
 counterexample is given, and the corrected form must verify), ``undecided`` (no method
 decided, or the numeric check disagrees: a defect, never counted as verified).
 
-Every verdict is backed by an mpmath evaluation of the *unparametrised* expressions at
-``NUMERIC_POINTS`` seeded points that satisfy the constraints exactly, at ``NUMERIC_DIGITS``
-digits.
+Every verdict is backed by a ball-arithmetic evaluation (python-flint ``arb``) of the
+*unparametrised* expressions at ``NUMERIC_POINTS`` seeded points that satisfy the
+constraints exactly, from ``NUMERIC_DIGITS`` digits up (:mod:`rigidsym.checking.balls`). The balls
+back a verdict and never make one: a disagreement turns it ``undecided``.
 """
 
 from __future__ import annotations
@@ -18,14 +19,14 @@ import time
 from dataclasses import asdict, dataclass, field
 from fractions import Fraction
 
-import mpmath
-
+from rigidsym.checking.balls import round_up
 from rigidsym.checking.bookpoint import describe_point
 from rigidsym.checking.evidence import (
     NUMERIC_DIGITS,
     NUMERIC_POINTS,
     _counterexample,
-    numeric_residual,
+    counterexample_ball,
+    numeric_backing,
 )
 from rigidsym.checking.explicit import (
     _EXPLICIT_CACHE,
@@ -42,10 +43,11 @@ from rigidsym.zero.decide import Unsupported, decide_zero, make_plan
 
 __all__ = ["Result", "check", "explicit", "shape_of", "NUMERIC_DIGITS", "NUMERIC_POINTS"]
 
-#: relative residual below which the numeric check agrees with "holds".
-AGREE_TOL = mpmath.mpf(10) ** -(NUMERIC_DIGITS - 15)
-#: relative residual above which the numeric check agrees with "does not hold".
-DIFFER_TOL = mpmath.mpf(10) ** -12
+#: certified bound of the relative residual below which the numeric check agrees with
+#: "holds" (a wider ball at the highest precision turns the verdict undecided).
+AGREE_TOL = Fraction(1, 10 ** (NUMERIC_DIGITS - 15))
+#: relative residual (midpoints) above which the numeric check agrees with "does not hold".
+DIFFER_TOL = 1e-12
 
 
 @dataclass
@@ -76,6 +78,8 @@ class Result:
     members: list[dict] = field(default_factory=list)
     #: the model's atoms and their constraints, in words ("e: unit vector, ...")
     model: list[str] = field(default_factory=list)
+    #: read from the verdict cache (a run field, like ``seconds``: not in written reports)
+    cached: bool = False
 
     def as_json(self) -> dict:
         """Every field as a plain dict (the full record; the lean schema-2 row is
@@ -91,6 +95,8 @@ class _RelOutcome:
     detail: str
     counterexample: dict | None = None
     label: str = ""
+    #: the residual's ball at the counterexample: (excludes 0, ball text, digits)
+    ball: tuple | None = None
 
 
 def decide_rel(rel: Rel, model: dict, seed: int, st: Statement | None = None) -> _RelOutcome:
@@ -111,7 +117,9 @@ def decide_rel(rel: Rel, model: dict, seed: int, st: Statement | None = None) ->
         for _ in range(100):
             pt = {p: Fraction(rng.randint(-3, 3), rng.randint(1, 3)) for p in plan.params}
             try:
-                ce = _counterexample(lhs, rhs, pt, seed, describe)
+                ce, cplan, cpt = _counterexample(lhs, rhs, pt, seed)
+                if describe is not None:
+                    ce.update(describe(cplan, cpt))
                 break
             except ZeroDivisionError:
                 continue
@@ -120,8 +128,14 @@ def decide_rel(rel: Rel, model: dict, seed: int, st: Statement | None = None) ->
     diff = [a - b for a, b in zip(_entries(lhs), _entries(rhs), strict=True)]
     zr = decide_zero(diff, seed=seed)
     if zr.zero is False:
-        ce = _counterexample(lhs, rhs, zr.witness, seed, describe)
-        return _RelOutcome(False, "counterexample", zr.detail, ce, rel.label)
+        ce, plan, pt = _counterexample(lhs, rhs, zr.witness, seed)
+        if describe is not None:
+            ce.update(describe(plan, pt))
+        try:
+            ball = counterexample_ball(lhs, rhs, plan, pt)
+        except Unsupported as exc:
+            ball = (False, f"no ball: {exc}", NUMERIC_DIGITS)
+        return _RelOutcome(False, "counterexample", zr.detail, ce, rel.label, ball)
     return _RelOutcome(zr.zero, zr.method, zr.detail, None, rel.label)
 
 
@@ -165,7 +179,7 @@ def check(eq: Equation | str) -> Result:
             method="undecided", printed_latex=eq.latex, printed="", derived="",
             corrected=None, counterexample=None, cause=None,
             numeric={"points": 0, "digits": NUMERIC_DIGITS, "max_residual": None,
-                     "seed": _seed(eq.id)},
+                     "seed": _seed(eq.id), "enclosure": None, "certified": False},
             seconds=round(time.perf_counter() - t0, 3), section=eq.section,
             detail=f"{type(exc).__name__} while checking: {str(exc)[:200]}",
             singular=eq.singular)
@@ -180,7 +194,7 @@ def _check(eq: Equation, t0: float) -> Result:
     ce = None
     failing = None
     backing: list[Rel] = []
-    printed_res = None
+    bad = bad_rel = None
     corrected_str = _rel_str(st.corrected)
     if eq.kind == "definition":
         ok = True
@@ -231,33 +245,11 @@ def _check(eq: Equation, t0: float) -> Result:
                 else:
                     detail = f"{bad.detail}; corrected form verified by {cm}"
                 backing = list(st.corrected)
-            try:
-                bad_rel = (st.printed + st.claims)[outs.index(bad)]
-                if shape_of(bad_rel.lhs) == shape_of(bad_rel.rhs):
-                    printed_res, _, _ = numeric_residual([bad_rel], st.model, seed)
-                else:  # a shape mismatch cannot hold at any point
-                    printed_res = mpmath.inf
-            except (Unsupported, TypeError) as exc:  # pragma: no cover
-                detail += f"; numeric of printed form failed: {exc}"
-    numeric = {"points": 0, "digits": NUMERIC_DIGITS, "max_residual": None, "seed": seed}
-    try:
-        rels = backing or [r for r in st.printed if shape_of(r.lhs) == shape_of(r.rhs)]
-        if rels:
-            worst, n, _ = numeric_residual(rels, st.model, seed)
-            numeric.update(points=n, max_residual=float(worst))
-            if verdict in ("verified", "definition", "does-not-hold") and backing:
-                if n < NUMERIC_POINTS:
-                    verdict, detail = "undecided", f"numeric check reached only {n} points"
-                elif worst > AGREE_TOL:
-                    verdict = "undecided"
-                    detail = f"numeric check disagrees: residual {mpmath.nstr(worst, 5)}"
-        if printed_res is not None:
-            numeric["printed_residual"] = (float(printed_res) if mpmath.isfinite(printed_res)
-                                           else "shape mismatch")
-            if verdict == "does-not-hold" and printed_res < DIFFER_TOL:
-                verdict, detail = "undecided", "numeric check finds the printed form holding"
-    except Unsupported as exc:
-        verdict, detail = "undecided", f"numeric check impossible: {exc}"
+            bad_rel = (st.printed + st.claims)[outs.index(bad)]
+    rels = backing or [r for r in st.printed if shape_of(r.lhs) == shape_of(r.rhs)]
+    verdict, detail, numeric = _numeric(verdict, detail, rels, bool(backing), st.model, seed,
+                                        bad_rel if verdict == "does-not-hold" else None,
+                                        bad)
     return Result(
         id=eq.id, title=eq.title, kind=eq.kind, verdict=verdict, expected=eq.expected,
         method=method if verdict != "undecided" else "undecided",
@@ -269,3 +261,61 @@ def _check(eq: Equation, t0: float) -> Result:
         singular=eq.singular, failing_member=failing, members=members,
         model=model_words([explicit(r.lhs, st.model) for r in st.printed]
                           + [explicit(r.rhs, st.model) for r in st.printed]))
+
+
+def _numeric(verdict: str, detail: str, rels: list[Rel], decisive: bool, model: dict,
+             seed: int, bad_rel: Rel | None, bad: _RelOutcome | None):
+    """The numeric record, and the verdict turned ``undecided`` where the balls disagree.
+
+    ``rels`` are evaluated at the seeded points (the verdict's backing when ``decisive``);
+    for a does-not-hold, ``bad_rel`` (the failing printed member) at the same points and
+    ``bad.ball`` (its ball at the counterexample) back the failure.
+    """
+    numeric = {"points": 0, "digits": NUMERIC_DIGITS, "max_residual": None, "seed": seed,
+               "enclosure": None, "certified": False}
+    try:
+        certified = False
+        if rels:
+            b = numeric_backing(rels, model, seed)
+            numeric.update(points=b.points, digits=b.digits, max_residual=b.max_residual,
+                           enclosure=None if b.enclosure is None else round_up(b.enclosure))
+            certified = b.certified and b.points >= NUMERIC_POINTS
+            if verdict in ("verified", "definition", "does-not-hold") and decisive:
+                if b.points < NUMERIC_POINTS:
+                    verdict, detail = "undecided", f"numeric check reached only {b.points} points"
+                elif b.excluded is not None:
+                    verdict = "undecided"
+                    detail = f"numeric check disagrees: the residual ball {b.excluded} excludes 0"
+                elif b.enclosure > AGREE_TOL:
+                    verdict = "undecided"
+                    detail = (f"numeric check too wide: residual enclosed within "
+                              f"{round_up(b.enclosure):.1e} at {b.digits} digits")
+        if bad_rel is not None:
+            if shape_of(bad_rel.lhs) != shape_of(bad_rel.rhs):  # cannot hold at any point
+                numeric["printed_residual"] = "shape mismatch"
+            else:
+                verdict, detail, ok = _printed_numeric(verdict, detail, numeric, bad_rel, bad,
+                                                       model, seed)
+                certified = certified and ok
+        numeric["certified"] = certified and verdict != "undecided"
+    except Unsupported as exc:
+        verdict, detail = "undecided", f"numeric check impossible: {exc}"
+    return verdict, detail, numeric
+
+
+def _printed_numeric(verdict, detail, numeric, bad_rel, bad, model, seed):
+    """The failing printed member at the seeded points and its ball at the counterexample;
+    returns the verdict, the detail and whether the ball excludes 0."""
+    try:
+        pb = numeric_backing([bad_rel], model, seed)
+    except Unsupported as exc:  # pragma: no cover
+        return verdict, detail + f"; numeric of printed form failed: {exc}", False
+    excludes, ball, digits = bad.ball
+    numeric.update(printed_residual=pb.max_residual, printed_enclosure=ball,
+                   digits=max(numeric["digits"], pb.digits, digits))
+    if verdict == "does-not-hold" and pb.max_residual < DIFFER_TOL:
+        verdict, detail = "undecided", "numeric check finds the printed form holding"
+    elif verdict == "does-not-hold" and not excludes:
+        verdict = "undecided"
+        detail = f"numeric check: the ball {ball} at the counterexample holds 0"
+    return verdict, detail, excludes

@@ -1,5 +1,6 @@
-"""The evidence behind a verdict (:mod:`rigidsym.checking.checker`): the 50-digit mpmath backing of
-the unparametrised relations at seeded points, and a readable exact counterexample.
+"""The evidence behind a verdict (:mod:`rigidsym.checking.checker`): the ball-arithmetic
+backing of the unparametrised relations at seeded points (:mod:`rigidsym.checking.balls`),
+and a readable exact counterexample with its ball.
 """
 
 from __future__ import annotations
@@ -7,91 +8,28 @@ from __future__ import annotations
 import random
 from fractions import Fraction
 
-import mpmath
 import sympy as sp
-from sympy.core.function import AppliedUndef
 
+from rigidsym.checking.balls import NUMERIC_DIGITS, NUMERIC_POINTS, Backing, backing, ball_at
 from rigidsym.checking.explicit import _entries, explicit, shape_of
 from rigidsym.checking.registry import Rel
 from rigidsym.zero.decide import Unsupported, evaluate, make_plan
 
-NUMERIC_DIGITS = 50
-NUMERIC_POINTS = 10
+__all__ = ["NUMERIC_DIGITS", "NUMERIC_POINTS", "numeric_backing", "counterexample_ball"]
 
 
 # --------------------------------------------------------------------------- numeric
-def _dummify(exprs) -> tuple[list, list, list]:
-    """Replace derivatives, then applied functions, then symbols by dummies (outside-in,
-    so ``e_1(t)`` inside ``Derivative(e_1(t), t)`` is not mistaken for a lone atom)."""
-    exprs = [sp.sympify(e) for e in exprs]
-    atoms, dummies = [], []
-    for kind in (sp.Derivative, AppliedUndef, sp.Symbol):
-        found = set().union(*(e.atoms(kind) for e in exprs)) if exprs else set()
-        found = sorted((a for a in found if not isinstance(a, sp.Dummy)),
-                       key=sp.default_sort_key)
-        sub = {a: sp.Dummy() for a in found}
-        exprs = [e.xreplace(sub) for e in exprs]
-        atoms += found
-        dummies += [sub[a] for a in found]
-    return atoms, dummies, exprs
+def numeric_backing(rels: list[Rel], model: dict, seed: int,
+                    points: int = NUMERIC_POINTS) -> Backing:
+    """Ball-arithmetic backing of ``lhs - rhs`` for every relation (same shapes), at
+    ``points`` seeded constraint-satisfying points (:func:`rigidsym.checking.balls.backing`).
 
-
-def numeric_point(plan, rng: random.Random) -> dict:
-    """Values (mpf) of every atom of ``plan`` at a random point satisfying the constraints.
-
-    Constrained groups get exact rational points of their parametrisation (so ``e.e = 1``
-    and ``Q^T Q = 1`` hold exactly); angles and free atoms get random reals.
+    Raises:
+        Unsupported: for a node with no numeric meaning.
     """
-    pt = {p: Fraction(rng.randint(-40, 40), rng.randint(1, 12)) for p in plan.params}
-    out = {}
-    # sorted: the draws must not follow set/dict order, which varies with PYTHONHASHSEED
-    for atom, rule in sorted(plan.rules.items(), key=lambda kv: sp.default_sort_key(kv[0])):
-        if atom == sp.pi:
-            continue
-        if isinstance(rule, sp.Symbol):  # a free atom, a jet, or a bare angle
-            out[atom] = mpmath.mpf(rng.randint(-10**8, 10**8)) / 10**8 * 3
-        else:  # a constrained group: an exact rational point of its parametrisation
-            f = evaluate(rule, plan, pt)
-            out[atom] = mpmath.mpf(f.numerator) / f.denominator
-    for a in sorted(plan.angles, key=sp.default_sort_key):  # one value per angle
-        if a not in out:
-            out[a] = mpmath.mpf(rng.randint(1, 10**8)) / 10**8 * 3
-    return out
-
-
-def numeric_residual(rels: list[Rel], model: dict, seed: int, points: int = NUMERIC_POINTS):
-    """Max relative residual of ``lhs - rhs`` over seeded constraint-satisfying points."""
-    lhs = [explicit(r.lhs, model) for r in rels]
-    rhs = [explicit(r.rhs, model) for r in rels]
-    flat_l = [e for x in lhs for e in _entries(x)]
-    flat_r = [e for x in rhs for e in _entries(x)]
-    plan = make_plan(flat_l + flat_r)
-    atoms, dummies, flat = _dummify(flat_l + flat_r)
-    fl = sp.lambdify(dummies, flat[:len(flat_l)], modules="mpmath", cse=True)
-    fr = sp.lambdify(dummies, flat[len(flat_l):], modules="mpmath", cse=True)
-    rng = random.Random(seed)
-    worst = mpmath.mpf(0)
-    residuals = []
-    done = tries = 0
-    with mpmath.workdps(NUMERIC_DIGITS):
-        while done < points and tries < 20 * points:
-            tries += 1
-            pt = numeric_point(plan, rng)
-            args = [pt.get(a, mpmath.mpf(rng.random())) for a in atoms]
-            try:
-                lv, rv = fl(*args), fr(*args)
-            except (ZeroDivisionError, ValueError):
-                continue
-            scale = max([mpmath.mpf(1)] + [abs(mpmath.mpf(x)) for x in list(lv) + list(rv)])
-            res = max((abs(mpmath.mpf(a) - mpmath.mpf(b)) for a, b in zip(lv, rv,
-                                                                          strict=True)),
-                      default=mpmath.mpf(0)) / scale
-            if not mpmath.isfinite(res):
-                continue
-            residuals.append(res)
-            worst = max(worst, res)
-            done += 1
-    return worst, done, residuals
+    lhs = [e for r in rels for e in _entries(explicit(r.lhs, model))]
+    rhs = [e for r in rels for e in _entries(explicit(r.rhs, model))]
+    return backing(lhs, rhs, make_plan(lhs + rhs), seed, points)
 
 
 # --------------------------------------------------------------------------- counterexample
@@ -126,9 +64,8 @@ def _exact_value(x, plan, pt):
     return one(x)
 
 
-def _counterexample(lhs, rhs, witness, seed, describe=None) -> dict:
-    """The readable exact counterexample; ``describe(plan, point)``, when given, adds the
-    book symbols there (:func:`rigidsym.checking.bookpoint.describe_point`)."""
+def _counterexample(lhs, rhs, witness, seed) -> tuple[dict, object, dict]:
+    """The readable counterexample record, with the plan and the exact parameter point."""
     plan = make_plan(_entries(lhs) + _entries(rhs))
     diff = [a - b for a, b in zip(_entries(lhs), _entries(rhs), strict=True)] \
         if shape_of(lhs) == shape_of(rhs) else []
@@ -147,6 +84,10 @@ def _counterexample(lhs, rhs, witness, seed, describe=None) -> dict:
     ce = {"point": point, "lhs": sp.sstr(lv), "rhs": sp.sstr(rv)}
     if shape_of(lhs) == shape_of(rhs):
         ce["residual"] = sp.sstr(lv - rv)
-    if describe is not None:
-        ce.update(describe(plan, pt))
-    return ce
+    return ce, plan, pt
+
+
+def counterexample_ball(lhs, rhs, plan, pt) -> tuple[bool, str, int]:
+    """``lhs - rhs`` in ball arithmetic at the counterexample
+    (:func:`rigidsym.checking.balls.ball_at`): ``(excludes_zero, ball text, digits)``."""
+    return ball_at(_entries(lhs), _entries(rhs), plan, pt)

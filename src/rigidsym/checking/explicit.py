@@ -121,7 +121,9 @@ def _entries(x) -> list:
 
 
 def _fmt(x) -> str:
-    return sp.sstr(x)
+    # the terms in sympy's own (deterministic) order: sorting them for print took more time
+    # than deciding; these expanded strings appear in the full reports only
+    return sp.sstr(x, order="none")
 
 
 def _rel_str(rels: list[Rel] | None) -> str | None:

@@ -46,15 +46,35 @@ def member_record(rel, role: str, out) -> dict:
     else:
         status = {True: "holds", False: "fails", None: "undecided"}[out.zero]
         method, detail = out.method, out.detail
+    # every atom prints as one character at least: past a limit, printing is not needed to
+    # know that the form is too long to keep (most of the time of a member record)
+    atoms = _atoms(rel.lhs, MEMBER_LATEX_LIMIT + 1) + _atoms(rel.rhs, MEMBER_LATEX_LIMIT + 1)
     try:
-        text = f"{notation.text(rel.lhs)} = {notation.text(rel.rhs)}"
-        tex = notation.latex_relation(rel.lhs, rel.rhs)
+        text = "" if atoms + 3 > MEMBER_TEXT_LIMIT else \
+            f"{notation.text(rel.lhs)} = {notation.text(rel.rhs)}"
+        tex = "" if atoms + 3 > MEMBER_LATEX_LIMIT else \
+            notation.latex_relation(rel.lhs, rel.rhs)
     except Exception:  # noqa: BLE001  describing a member must never change a verdict
         text = tex = ""
     return {"role": role, "label": rel.label, "status": status, "method": method,
             "detail": detail,
             "text": text if 0 < len(text) <= MEMBER_TEXT_LIMIT else None,
             "latex": tex if 0 < len(tex) <= MEMBER_LATEX_LIMIT else None}
+
+
+def _atoms(x, cap: int) -> int:
+    """Occurrences of symbols, functions of time and their derivatives in ``x`` (counted up
+    to ``cap``): a lower bound on the length of its text and of its LaTeX."""
+    n, stack = 0, [x]
+    while stack and n < cap:
+        y = stack.pop()
+        if isinstance(y, sp.Symbol | sp.MatrixSymbol | AppliedUndef | sp.Derivative):
+            n += 1
+        elif isinstance(y, sp.MatrixBase):
+            stack.extend(y)
+        elif isinstance(y, sp.Basic):
+            stack.extend(y.args)
+    return n
 
 
 _KIND_WORDS = {"unit": "unit vector, stereographic", "unit4": "unit 4-vector, stereographic",

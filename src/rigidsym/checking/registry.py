@@ -148,7 +148,13 @@ def _build(eq_id: str) -> Statement:
     hit = _BUILT.get(eq_id)
     if hit is not None:
         return hit
-    st = REGISTRY[eq_id].build_fn()
+    from sympy.matrices.utilities import dotprodsimp
+
+    # no simplification of intermediate matrix products (sympy applies `cancel` to each
+    # entry of a Matrix power, for instance): a model is decided exactly, not read, and
+    # this took a third of the time of building the chapter's declarations
+    with dotprodsimp(False):
+        st = REGISTRY[eq_id].build_fn()
     if not isinstance(st, Statement):
         raise DeclarationTypeError(f"declaration {eq_id} returned {type(st).__name__}, "
                                    f"not Statement")

@@ -72,7 +72,7 @@ class _Estimate:
         return rest / min(self.jobs, max(1, len(self.ids) - len(self.actual)))
 
 
-def run_checks(ids: list[str], jobs: int = 1, progress: bool = True,
+def run_checks(ids: list[str], jobs: int = 1, progress: bool = True, cache: bool = False,
                reporter: Reporter | None = None):
     """Check ``ids`` (in parallel over ``jobs`` processes), results in the order given.
 
@@ -80,28 +80,41 @@ def run_checks(ids: list[str], jobs: int = 1, progress: bool = True,
         ids: the ids to check.
         jobs: worker processes (1: in this process).
         progress: show progress on stderr (:mod:`rigidsym._progress`).
+        cache: read results from the verdict cache where their key matches
+            (:mod:`rigidsym.checking.verdict_cache`; ``Result.cached`` is then true);
+            compute and store the others.
         reporter: the command's :class:`~rigidsym._progress.Reporter` (its phases), else
             one of its own.
 
     Returns:
         The :class:`~rigidsym.checking.checker.Result` of each id, in the order of ``ids``.
     """
+    hits, keys = ({}, {})
+    if cache:
+        from rigidsym.checking import verdict_cache
+        hits, keys = verdict_cache.lookup(ids)
+    results = dict(hits)
+    todo = [i for i in ids if i not in hits]
     rep = reporter or Reporter("rigidsym verify", enabled=progress)
-    est = _Estimate(list(ids), jobs)
-    results: dict = {}
+    est = _Estimate(todo, jobs)
+    what = f"checking {len(ids)} ids" + (f" ({len(hits)} from the cache)" if hits else "")
     with (nullcontext(rep) if reporter else rep), \
-            rep.phase(f"checking {len(ids)} ids", total=len(ids), doing="starting") as ph:
-        if jobs > 1 and len(ids) > 1:
-            _parallel(est, jobs, ph, results)
+            rep.phase(what, total=len(ids), doing="starting") as ph:
+        if hits:
+            ph.advance(len(hits), label=f"{len(hits)} from the verdict cache")
+        if jobs > 1 and len(todo) > 1:
+            _parallel(est, min(jobs, len(todo)), ph, results)
         else:
-            for i in ids:
+            for i in todo:
                 running = {i: time.time()}
                 ph.label(f"checking {i}")
                 ph.estimate(est.left(running))
                 results[i] = _check_one(i)
                 _finished(results[i], est, ph, {})
         ph.finish(_summary(results.values()))
-    save_durations(DURATIONS, {r.id: r.seconds for r in results.values()})
+    if cache and todo:
+        verdict_cache.store([results[i] for i in todo], keys)
+    save_durations(DURATIONS, {i: results[i].seconds for i in todo})
     return [results[i] for i in ids]
 
 
@@ -127,7 +140,7 @@ def _parallel(est: _Estimate, jobs: int, ph, results: dict) -> None:
     with ctx.Pool(jobs, initializer=_init_worker, initargs=(started,)) as pool:
         it = pool.imap_unordered(_check_one, est.order())
         last = None
-        while len(results) < len(est.ids):
+        while len(est.actual) < len(est.ids):
             while not started.empty():
                 i, t = started.get()
                 if i not in results:  # its result may have come first

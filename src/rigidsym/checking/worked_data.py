@@ -168,6 +168,8 @@ def _scalar(v, where: str) -> tuple[sp.Expr, bool]:
         raise TypeError(f"{where}: expected a real number, got a bool ({v})")
     if isinstance(v, sp.Float):
         v = float(v)
+    elif isinstance(v, sp.Basic):    # before numbers.Real: sympy registers its numbers there
+        return _closed_real(v, where, repr(v)), False
     if isinstance(v, numbers.Integral):
         return sp.Integer(int(v)), False
     if isinstance(v, Fraction):
@@ -183,8 +185,6 @@ def _scalar(v, where: str) -> tuple[sp.Expr, bool]:
         return sp.Rational(x), True
     if isinstance(v, str):
         return _from_text(v, where), False
-    if isinstance(v, sp.Basic):
-        return _closed_real(v, where, repr(v)), False
     raise TypeError(f"{where}: expected a real number (int, Fraction, decimal string such "
                     f"as '0.1', 'sqrt(3)/2', a sympy number or a float), got "
                     f"{type(v).__name__}")

@@ -1,4 +1,5 @@
-"""The ``rigidsym`` command: verify, report, show, exercise, generate, build-c, glossary.
+"""The ``rigidsym`` command: verify, report, show, exercise, generate, build-c, cache,
+glossary.
 
 Exit codes: 0 = all as expected, 1 = some computed verdict differs from its expectation,
 2 = bad input (a one-line message naming what was expected and, where there is one, the
@@ -12,7 +13,7 @@ import os
 import sys
 
 from rigidsym.checking.registry import BadInput
-from rigidsym.cli import exercise, generate, glossary, report, show, verify
+from rigidsym.cli import cache, exercise, generate, glossary, report, show, verify
 from rigidsym.cli._common import HelpFormatter, add_ascii, ascii_output
 
 __all__ = ["main", "build_parser"]
@@ -20,7 +21,7 @@ __all__ = ["main", "build_parser"]
 #: the sub-commands: name -> module with ``HELP``, ``add_arguments(parser)``, ``run(args)``
 #: (and optionally ``EXAMPLES``, shown under the command's own ``--help``)
 _COMMANDS = {"verify": verify, "report": report, "show": show, "exercise": exercise,
-             "generate": generate.GENERATE, "build-c": generate.BUILD_C,
+             "generate": generate.GENERATE, "build-c": generate.BUILD_C, "cache": cache,
              "glossary": glossary}
 
 DESCRIPTION = """\

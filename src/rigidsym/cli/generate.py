@@ -20,6 +20,8 @@ def _generate_args(p) -> None:
     p.add_argument("--module", action="append", metavar="PATH_OR_DOTTED",
                    help="a user module whose KERNELS to generate into --out (repeatable; "
                         "default: none, the package's kernels)")
+    p.add_argument("--no-build", action="store_true",
+                   help="with --module: write the C only; do not compile it into the cache")
 
 
 def cmd_generate(args) -> int:
@@ -91,15 +93,60 @@ def _check_notebooks(books: dict[str, str], out: Path) -> bool:
 
 
 def _build_args(p) -> None:
+    p.add_argument("directory", nargs="?", default=None, metavar="DIR",
+                   help="a generated folder (rigidsym generate --out DIR); default the "
+                        "package's kernels")
+    p.add_argument("--module", action="append", metavar="PATH_OR_DOTTED",
+                   help="generate this user module's kernels into --out, then compile them "
+                        "(default: none)")
+    p.add_argument("--out", default=None, metavar="DIR",
+                   help="output folder of --module (default: none)")
+    p.add_argument("--native", action="store_true",
+                   help="build for this CPU only (-march=native) into the cache; used "
+                        "whenever present")
     p.add_argument("--force", action="store_true",
                    help="rebuild even if a build is cached (default: off)")
+    p.add_argument("--info", action="store_true",
+                   help="print the build information of the kernels in use (JSON) and exit")
 
 
 def cmd_build_c(args) -> int:
-    """Compile the generated C kernels (cffi) into the user cache directory."""
-    from rigidsym.kernels._build import build
+    """Compile generated C kernels into the user cache (the package's own kernels only when
+    their module is stale, or with --native), with a notice and a progress bar."""
+    from rigidsym.kernels import _build, _ext
 
-    path = build(force=args.force)
+    if args.info:
+        import json
+
+        from rigidsym import kernels
+        print(json.dumps(kernels.build_info(args.directory), indent=1))
+        return 0
+    if args.module:
+        if args.directory:
+            print("error: give either DIR or --module (with --out), not both", file=sys.stderr)
+            return 2
+        from rigidsym.codegen.usergen import cmd_generate_user
+        args.check = False
+        args.no_build = False
+        return cmd_generate_user(args)
+    gdir = Path(args.directory).resolve() if args.directory else _ext.generated_dir()
+    if not (gdir / "c").is_dir():
+        print(f"error: {gdir} holds no generated C (run `rigidsym generate --out {gdir}`)",
+              file=sys.stderr)
+        return 2
+    package = args.directory is None
+    sources = _build.sources_hash(gdir / "c")
+    built = _ext.package_module() if package else None
+    if package and not (args.native or args.force) and built is not None \
+            and _build.embedded_hash(built) == sources:
+        print(f"up to date: {built} (built with the package)")
+        return 0
+    try:
+        path = _ext.ensure(gdir, native=args.native, force=args.force,
+                           why="rigidsym build-c" + (" --native" if args.native else ""))
+    except _build.BuildError as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return 1
     print(f"built {path}")
     return 0
 

@@ -28,6 +28,9 @@ def add_arguments(r) -> None:
                    help="also write chapter3-full.{md,json} with the expanded values "
                         "(default: off)")
     r.add_argument("--jobs", type=int, default=JOBS, metavar="N", help="worker processes")
+    r.add_argument("--no-cache", action="store_true",
+                   help="check every id again; neither read nor write the verdict cache "
+                        "(default: off, the cache is used)")
     r.add_argument("--module", action="append", metavar="PATH_OR_DOTTED",
                    help=MODULE_HELP + ": report its ids into --out as <module>.{md,json,html} "
                                       "(default: none, the chapter)")
@@ -83,7 +86,7 @@ def run(args) -> int:
     if args.module:  # a user module's report: titled by it, files named after it
         from rigidsym.report.user import write_user_report
         return write_user_report(args.module, Path(args.out) if args.out else Path.cwd(),
-                                 args.jobs)
+                                 args.jobs, cache=not args.no_cache)
     from rigidsym._progress import Reporter
     from rigidsym.cli.exercise import write_report as write_exercises
 
@@ -92,7 +95,8 @@ def run(args) -> int:
         with rep.phase("loading the chapter's declarations") as ph:
             ids = select(None, None)
             ph.finish(f"{len(ids)} ids")
-        results = run_checks(ids, jobs=args.jobs, progress=True, reporter=rep)
+        results = run_checks(ids, jobs=args.jobs, progress=True, cache=not args.no_cache,
+                             reporter=rep)
         files = _chapter_files(results, args.full)
         written = []
         with rep.phase(f"rendering and writing {len(files)} files of the chapter report",

@@ -39,6 +39,9 @@ def add_arguments(v) -> None:
     v.add_argument("--module", action="append", metavar="PATH_OR_DOTTED",
                    help=MODULE_HELP + "; only its ids unless ids or sections are given "
                                       "(default: none)")
+    v.add_argument("--no-cache", action="store_true",
+                   help="check every id again; neither read nor write the verdict cache "
+                        "(default: off, the cache is used)")
 
 
 def _table(results) -> None:
@@ -50,14 +53,16 @@ def _table(results) -> None:
     for r in results:
         style = "" if r.verdict == r.expected else "bold red"
         v = r.verdict if r.verdict == r.expected else f"{r.verdict} (expected {r.expected})"
-        t.add_row(r.id, label_text(r.title), v, r.method, f"{r.seconds:.2f}", style=style)
+        secs = "cached" if getattr(r, "cached", False) else f"{r.seconds:.2f}"
+        t.add_row(r.id, label_text(r.title), v, r.method, secs, style=style)
     console().print(t)
 
 
 def _plain(results) -> None:
     """One line per id, columns aligned, nothing cut (for pipes, logs and grep)."""
     rows = [(r.id, r.verdict if r.verdict == r.expected else
-             f"{r.verdict} (EXPECTED {r.expected})", r.method, f"{r.seconds:.2f}",
+             f"{r.verdict} (EXPECTED {r.expected})", r.method,
+             "cached" if getattr(r, "cached", False) else f"{r.seconds:.2f}",
              label_text(r.title)) for r in results]
     head = ("id", "verdict", "method", "seconds", "title")
     w = [max(len(x[k]) for x in [head, *rows]) for k in range(4)]
@@ -71,14 +76,17 @@ def run(args) -> int:
 
     ids = select_with_modules(args.ids, args.section, args.module)
     t0 = time.perf_counter()
-    results = run_checks(ids, jobs=args.jobs, progress=not args.quiet)
+    results = run_checks(ids, jobs=args.jobs, progress=not args.quiet,
+                         cache=not args.no_cache)
     wall = time.perf_counter() - t0
     fmt = output_format(args)
     if args.json:
         write_atomic(args.json, to_json(results))
     off = [r for r in results if r.verdict != r.expected]
     s = summary(results)
-    line = (f"{len(results)} checked in {wall:.1f} s: "
+    hits = "" if args.no_cache else \
+        f" ({sum(bool(getattr(r, 'cached', False)) for r in results)} from the cache)"
+    line = (f"{len(results)} checked in {wall:.1f} s{hits}: "
             + ", ".join(f"{k} {v}" for k, v in s.items()))
     if fmt == "json":  # stdout is the document; the words go to stderr
         sys.stdout.write(to_json(results))

@@ -2,5 +2,5 @@
 
 Layers: :mod:`.spec` (kernel types), :mod:`.optimise` (rewrites, CSE, op count),
 :mod:`.printers` (sympy printer subclasses), :mod:`.generator` (templates, files, check),
-:mod:`.cbuild` (cffi compilation into the user cache), :mod:`.cli` (commands).
+:mod:`.cli` (commands).
 """

@@ -12,6 +12,7 @@ from __future__ import annotations
 import difflib
 import importlib
 import json
+import math
 import os
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -183,18 +184,37 @@ def _risky(e) -> bool:
                for p in sp.preorder_traversal(e))
 
 
+def _risky_bases(p: Program, printer) -> list[str]:
+    """The divisors and radicands of ``p``, printed: a finite quotient of an overflowed
+    divisor (``x / inf == 0``: the unit vector of ``1/sqrt(|p|^2)`` with ``|p|^2 = inf``) is
+    finite but wrong, so they are checked for finiteness too (issue 19, item 6)."""
+    out: list[str] = []
+    for e in [v for _, v in p.temps] + list(p.outputs):
+        for node in sp.preorder_traversal(sp.sympify(e)):
+            if isinstance(node, sp.Pow) and not (node.exp.is_Integer and node.exp > 0) \
+                    and not node.base.is_number:
+                s = printer.doprint(node.base)
+                s = s if s.isidentifier() else f"({s})"
+                if s not in out:
+                    out.append(s)
+    return out
+
+
 def _risky_names(p: Program, printer) -> list[str]:
-    """Temporaries / outputs that divide or take a root, printed (NumPy finiteness check)."""
+    """Temporaries / outputs that divide or take a root, and their divisors and radicands,
+    printed (NumPy finiteness check)."""
     names = [str(s) for s, v in p.temps if _risky(v)]
     names += [printer.doprint(v) for v in p.outputs if _risky(v)]
-    return names
+    return names + [b for b in _risky_bases(p, printer) if b not in names]
 
 
 def _finite_check(p: Program, k: Kernel) -> str:
-    """C expression that is NaN iff a division/root temporary or output is non-finite."""
+    """C expression that is NaN iff a division/root temporary or output, or a divisor or
+    radicand, is non-finite."""
     names = [str(s) for s, v in p.temps if _risky(v)]
     slots = [f"out_{o.name}[{j}]" for o in k.outputs for j in range(o.size)]
     names += [slot for slot, v in zip(slots, p.outputs, strict=True) if _risky(v)]
+    names += [b for b in _risky_bases(p, KernelCPrinter()) if b not in names]
     return _balanced([f"({n} - {n})" for n in names]) if names else ""
 
 
@@ -352,7 +372,24 @@ def generate(kernels=None, origin: str = BOOK_ORIGIN) -> GenerationResult:
                     ("c_common.h.j2", "c/rigidsym_common.h"),
                     ("c_kernels_index.h.j2", "c/rigidsym_kernels.h")):
         files[path] = env.get_template(t).render(kernels=metas, template=t, **ver)
+    files.update(_render_extension(env, metas, ver))
     return GenerationResult(dict(sorted(files.items())), notes, done)
+
+
+def _render_extension(env, metas: list[dict], ver: dict) -> dict[str, str]:
+    """The extension module's own C: the module (``c_module.c.j2``), the per-path table of
+    batch functions (``c_table.c.j2``) and the CPU dispatcher (``c_dispatch.h.j2``)."""
+    def size(shape) -> int:
+        return int(math.prod(shape))
+    ck = [{"name": m["name"], "ins": [size(a["shape"]) for a in m["args"]],
+           "outs": [size(o["shape"]) for o in m["outputs"]],
+           "narrays": len(m["args"]) + len(m["outputs"])} for m in metas]
+    files = {}
+    for t, path in (("c_module.c.j2", "c/rigidsym_module.c"),
+                    ("c_table.c.j2", "c/rigidsym_table.c"),
+                    ("c_dispatch.h.j2", "c/rigidsym_dispatch.h")):
+        files[path] = env.get_template(t).render(kernels=ck, template=t, **ver)
+    return files
 
 
 def _on_disk(out: Path) -> dict[str, Path]:

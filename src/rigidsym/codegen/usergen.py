@@ -108,4 +108,24 @@ def cmd_generate_user(args) -> int:
     touched = write(res, out)
     print(f"{len(res.kernels)} kernels, {len(res.files)} files, {len(touched)} changed in "
           f"{out} ({time.perf_counter() - t0:.1f} s)")
+    if getattr(args, "no_build", False):
+        return 0
+    return _compile(out)
+
+
+def _compile(out: Path) -> int:
+    """Compile the C of ``out`` into the cache now, so that ``kernels.load(out)`` in another
+    process only loads it; without a compiler, say so (the kernels then run on NumPy)."""
+    from rigidsym.kernels import _build, _ext
+
+    try:
+        path = _ext.ensure(out, why="rigidsym generate")
+    except _build.CompilerNotFound as exc:
+        print(f"note: not compiled: {exc}; kernels.load({str(out)!r}) runs them on NumPy "
+              f"(install a C compiler and run `rigidsym build-c {out}` for C)", file=sys.stderr)
+        return 0
+    except _build.BuildError as exc:
+        print(f"error: compiling {out} failed: {exc}", file=sys.stderr)
+        return 1
+    print(f"compiled {path}")
     return 0

@@ -5,7 +5,9 @@ Every kernel accepts array-likes with leading batch axes that broadcast (vectors
 float64; ints are converted), positionally or by keyword, validates them, calls the
 generated code and returns new arrays (or fills ``out=``). The kernels are real functions
 generated into ``generated/api.py`` (``rigidsym generate``), with type hints; the C is
-compiled through cffi on first use into the user cache (``rigidsym build-c``).
+compiled when the package is built, into an extension module with one path per CPU level
+(x86-64-v2, x86-64-v3) chosen at import (:func:`build_info`). A user's kernels and a stale
+editable build are compiled into the user cache, with a notice (``rigidsym build-c``).
 
 Common keyword arguments of every kernel (``rigidsym.codegen.api_spec.COMMON_KEYWORDS``):
 
@@ -54,7 +56,7 @@ from rigidsym.kernels._scale import set_num_threads as set_num_threads
 
 __all__ = ["SingularConfigurationError", "NonFiniteResultError", "use_backend", "backend",
            "swap_blocks", "load", "batch_function", "euler_rate_matrix", "euler_angle_rates",
-           "jacobian", "set_num_threads", "get_num_threads"]
+           "jacobian", "set_num_threads", "get_num_threads", "build_info"]
 __all__ += _KERNELS
 
 #: names of the public generated kernels
@@ -92,7 +94,8 @@ def load(directory: str | Path | None = None) -> types.ModuleType:
 
     Returns:
         A module whose public functions are the directory's kernels, with the same
-        validation, ``on_singular`` handling and C (through cffi, NumPy fallback) as
+        validation, ``on_singular`` handling and C (compiled into the user cache once, with
+        a notice on stderr, when no build matches; NumPy fallback without a compiler) as
         :mod:`rigidsym.kernels`; also ``KERNEL_NAMES`` and ``batch_function(name, backend)``.
         Loading the same directory twice returns the same module.
 
@@ -123,15 +126,45 @@ def load(directory: str | Path | None = None) -> types.ModuleType:
 
 
 def use_backend(name: str) -> str:
-    """Select ``"c"`` (compiled through cffi) or ``"numpy"``; returns the backend in use.
+    """Select ``"c"`` (the compiled extension) or ``"numpy"``; returns the backend in use.
 
-    ``"c"`` falls back to ``"numpy"`` with a one-time warning when compiling fails (no
-    compiler, no cffi).
+    ``"c"`` falls back to ``"numpy"`` with a one-time warning when no compiled module
+    matches the kernels and none can be built (no compiler): the warning says how to get one.
 
     Raises:
         ValueError: ``name`` is neither.
     """
     return _state.select(name)
+
+
+def build_info(directory: str | Path | None = None) -> dict:
+    """How the C kernels in use were built and which CPU path runs, in the spirit of
+    ``numpy.show_runtime()``.
+
+    Args:
+        directory: a generated directory (``rigidsym generate --out DIR``); default the
+            package's kernels.
+
+    Returns:
+        dict with ``path`` (the path in use, e.g. ``"x86-64-v3"``), ``paths`` (compiled, best
+        first), ``forced`` (``RIGIDSYM_DISPATCH``, or None), ``openmp``, ``libmvec`` (the
+        vector sin/cos variant the path calls, or None), ``file`` (the extension),
+        ``origin`` (``"wheel"``, ``"editable build"``, ``"cache"`` or ``"cache (native)"``),
+        ``sources`` (SHA-256 of the C it was built from), ``compiler``, ``flags`` and
+        ``cpu`` (this machine's model).
+
+    Raises:
+        rigidsym.kernels._ext.NoCompiledKernels: nothing compiled matches and no compiler
+            can build it (the NumPy backend runs then).
+
+    Example:
+        >>> build_info()["path"] in build_info()["paths"]
+        True
+    """
+    from rigidsym.kernels import _ext
+
+    space = _state.builtin() if directory is None else load(directory)._SPACE
+    return _ext.info(space.c_lib())
 
 
 def backend() -> str:

@@ -1,57 +1,96 @@
-"""Compile the generated C kernels through cffi into a user cache directory.
+"""The C compiler driver: a generated directory's ``c/`` into the extension module ``_ckernels``.
 
-The shared object is keyed by a hash of the generated sources, the compiler flags, the
-Python ABI and the machine, and lives in ``$RIGIDSYM_CACHE`` or the platform's user cache
-(``~/.cache/rigidsym``), never in site-packages. Flags: ``-O3 -march=native -std=c99
--ffp-contract=fast`` (FMA contraction, as gcc does by default in GNU C mode; never
-``-ffast-math``); ``RIGIDSYM_CFLAGS`` overrides them.
+Used with the same flags in two places: by ``setup.py`` when the package is built (``pip
+install``, ``pip wheel``: the package's kernels go into the wheel), and at run time by
+:mod:`rigidsym.kernels._ext` for what no wheel holds (a user's kernels, a stale editable
+build, ``rigidsym build-c --native``), into the user cache. Standard library only, so that
+``setup.py`` can load this file by path before rigidsym is importable.
 
-On Linux with glibc the batch loops are first compiled against libmvec (vectorised ``sin`` and
-``cos``, within 4 ulp: ``MVEC_FLAGS`` and ``-lmvec``, macro ``RIGIDSYM_LIBMVEC``); if that does
-not compile or link, or ``RIGIDSYM_LIBMVEC=0``, the plain build is used.
+CPU dispatch as in NumPy: every kernel source (and the table ``rigidsym_table.c``) is
+compiled once per build path, with that path's ``-march`` and ``-DRIGIDSYM_ISA_SUFFIX``;
+``rigidsym_module.c`` once, with the baseline path's flags; all objects link into one module
+whose dispatcher (``rigidsym_dispatch.h``) picks a path at import. Paths: ``x86-64-v2``
+(baseline) and ``x86-64-v3`` (AVX2 + FMA) on x86-64, no ``-march`` elsewhere, ``native``
+(``-march=native``, one path) on request. Nothing built by default uses ``-march=native``.
 
-Threads: every variant is first tried with OpenMP (``OMP_FLAGS``; the batch loops take their
-thread count as an argument, never from ``OMP_NUM_THREADS``); when no OpenMP build works
-the kernels run on one thread and :func:`build` warns once. ``RIGIDSYM_OPENMP=0`` skips it.
-:func:`load` is safe to call from several threads at once (one lock around build and import).
+Flags of the kernels: ``-O3 -std=c99 -ffp-contract=fast`` (FMA contraction, never
+``-ffast-math``; ``RIGIDSYM_CFLAGS`` replaces them). OpenMP (threads of the batch loops) and
+glibc's libmvec (vectorised ``sin``/``cos``) are used when a probe compiles and links with
+them (``RIGIDSYM_OPENMP=0``, ``RIGIDSYM_LIBMVEC=0`` skip them). The objects are compiled in
+parallel (``RIGIDSYM_BUILD_JOBS``, default the usable cores): setuptools would compile one
+extension's sources one after the other.
 """
 
 from __future__ import annotations
 
 import hashlib
-import importlib.util
 import json
 import os
 import platform
+import shlex
 import sys
-import tempfile
-import threading
-import warnings
+from collections.abc import Callable
+from dataclasses import dataclass
+from functools import cache
 from pathlib import Path
 
-__all__ = ["build", "load", "cache_dir", "generated_dir", "cdef", "build_variants", "CFLAGS",
-           "MVEC_FLAGS", "OMP_FLAGS", "openmp"]
+__all__ = ["MODULE", "generated_dir", "IsaPath", "Config", "BuildError", "CompilerNotFound",
+           "default_paths",
+           "compiler", "configure", "kernel_sources", "sources_hash", "embedded_hash",
+           "build", "estimate_seconds", "jobs", "cpu_features", "X86_PATHS", "NATIVE",
+           "BASELINE", "KERNEL_FLAGS", "MVEC_FLAGS", "OMP_FLAGS"]
 
-CFLAGS = ["-O3", "-march=native", "-std=c99", "-ffp-contract=fast"]
-#: extra flags of the libmvec build (sin/cos not fused into a scalar sincos call)
-MVEC_FLAGS = ["-fopenmp-simd", "-fno-builtin-sin", "-fno-builtin-cos", "-DRIGIDSYM_LIBMVEC"]
-#: flags of the OpenMP build (compile and link): threads in the batch loops
-OMP_FLAGS = ["-fopenmp"]
+#: the extension module's name (every generated directory builds one of this name)
+MODULE = "_ckernels"
+#: the module's own C (compiled once); every other ``c/*.c`` is compiled once per path
+MODULE_SOURCE = "rigidsym_module.c"
+#: optimisation flags of the kernels (``RIGIDSYM_CFLAGS`` replaces them)
+KERNEL_FLAGS = ("-O3", "-std=c99", "-ffp-contract=fast")
+#: every object: position-independent, only PyInit__ckernels exported
+COMMON_FLAGS = ("-fPIC", "-fvisibility=hidden", "-DNDEBUG")
+#: flags of the libmvec build (sin/cos not fused into a scalar sincos call)
+MVEC_FLAGS = ("-fopenmp-simd", "-fno-builtin-sin", "-fno-builtin-cos", "-DRIGIDSYM_LIBMVEC")
+#: flags of the OpenMP build (compile and link)
+OMP_FLAGS = ("-fopenmp",)
+#: CPU seconds to compile one kernel object at -O3 (measured: 50 s for the 134 kernels of
+#: the package at x86-64-v3 with gcc 12), for the "about N s" of the notice
+SECONDS_PER_OBJECT = 0.4
+_TAG = b"rigidsym-sources:"
 
-#: the extension's own C (not generated): whether it was built with OpenMP
-_PREAMBLE = """#include "rigidsym_kernels.h"
-#ifdef _OPENMP
-int rigidsym_openmp(void) { return 1; }
-#else
-int rigidsym_openmp(void) { return 0; }
-#endif
-"""
-_LOCK = threading.RLock()
-_WARNED = {"omp": False}
+
+@dataclass(frozen=True)
+class IsaPath:
+    """One build path: a suffix for the exported names, the name build_info() reports,
+    and its flags."""
+
+    suffix: str
+    name: str
+    flags: tuple[str, ...]
+
+
+X86_PATHS = (IsaPath("v3", "x86-64-v3", ("-march=x86-64-v3",)),
+             IsaPath("v2", "x86-64-v2", ("-march=x86-64-v2",)))
+#: optional AVX-512 path (``RIGIDSYM_PATHS=v4,v3,v2``); not built by default: measured no
+#: faster than x86-64-v3 (benchmarks/RESULTS.md)
+X86_V4 = IsaPath("v4", "x86-64-v4", ("-march=x86-64-v4",))
+NATIVE = IsaPath("native", "native", ("-march=native",))
+BASELINE = IsaPath("base", "baseline", ())
+
+
+class BuildError(RuntimeError):
+    """Compiling or linking the kernels failed (the message ends with the compiler's)."""
+
+
+class CompilerNotFound(BuildError):
+    """No C compiler on ``PATH`` (``CC``, else the compiler Python was built with)."""
 
 
 def generated_dir() -> Path:
-    """The folder of generated kernels: inside the installed package, else the checkout's."""
+    """The package's generated kernels: inside the installed package, else the checkout's.
+
+    Raises:
+        FileNotFoundError: neither has a ``kernels.json``.
+    """
     here = Path(__file__).resolve()
     for cand in (here.parents[1] / "generated", here.parents[3] / "generated"):
         if (cand / "kernels.json").exists():
@@ -59,139 +98,279 @@ def generated_dir() -> Path:
     raise FileNotFoundError("generated kernels not found; run `rigidsym generate`")
 
 
-def cache_dir() -> Path:
-    """User cache folder for compiled kernels."""
-    env = os.environ.get("RIGIDSYM_CACHE")
-    if env:
-        return Path(env)
-    base = os.environ.get("XDG_CACHE_HOME") or (Path.home() / ".cache")
-    return Path(base) / "rigidsym"
+def _x86() -> bool:
+    return platform.machine().lower() in ("x86_64", "amd64")
 
 
-def _flags() -> list[str]:
+def default_paths(native: bool = False) -> tuple[IsaPath, ...]:
+    """The build paths, best first (the last is the baseline).
+
+    ``native``: ``-march=native`` only. Else ``RIGIDSYM_PATHS`` (suffixes, e.g. ``v4,v3,v2``)
+    if set, else x86-64-v3 and x86-64-v2 on x86-64 and one path without ``-march`` elsewhere.
+
+    Raises:
+        ValueError: ``RIGIDSYM_PATHS`` names an unknown path.
+    """
+    if native:
+        return (NATIVE,)
+    if not _x86():
+        return (BASELINE,)
+    env = os.environ.get("RIGIDSYM_PATHS")
+    if not env:
+        return X86_PATHS
+    known = {p.suffix: p for p in (X86_V4, *X86_PATHS)}
+    wanted = [s.strip() for s in env.split(",") if s.strip()]
+    bad = [s for s in wanted if s not in known]
+    if bad or not wanted:
+        raise ValueError(f"RIGIDSYM_PATHS: expected suffixes among {', '.join(known)}, got "
+                         f"{env!r}")
+    return tuple(sorted((known[s] for s in set(wanted)), key=lambda p: -int(p.suffix[1])))
+
+
+def kernel_flags() -> tuple[str, ...]:
+    """``RIGIDSYM_CFLAGS`` (split) or :data:`KERNEL_FLAGS`.
+
+    Raises:
+        ValueError: the flags contain ``-ffast-math`` (it breaks the NaN/singular logic).
+    """
     env = os.environ.get("RIGIDSYM_CFLAGS")
-    flags = env.split() if env else list(CFLAGS)
+    flags = tuple(shlex.split(env)) if env else KERNEL_FLAGS
     if "-ffast-math" in flags:
         raise ValueError("RIGIDSYM_CFLAGS: -ffast-math breaks the kernels' NaN/singular logic")
     return flags
 
 
-def cdef(meta: dict) -> str:
-    """cffi declarations of the batch functions listed in ``kernels.json``."""
-    lines = []
-    for k in meta["kernels"]:
-        params = ["int64_t n"] + [f"const double *{a['name']}" for a in k["args"]] \
-            + [f"double *{o['name']}" for o in k["outputs"]]
-        lines.append(f"int64_t rigidsym_{k['name']}({', '.join(params)});")
-        lines.append(f"int64_t rigidsym_{k['name']}_threads({', '.join(params[:1])}, "
-                     f"int threads, {', '.join(params[1:])});")
-        p32 = [p.replace("double", "float") for p in params[1:]]
-        lines.append(f"int64_t rigidsym_{k['name']}_f32_threads(int64_t n, int threads, "
-                     f"{', '.join(p32)});")
-    lines.append("int rigidsym_openmp(void);")
-    return "\n".join(lines)
+def compiler() -> list[str] | None:
+    """The C compiler command (``CC``, else the one Python was built with, else ``cc``), or
+    ``None`` when it is not on ``PATH``."""
+    import shutil
+    import sysconfig
+
+    cmd = shlex.split(os.environ.get("CC") or sysconfig.get_config_var("CC") or "cc")
+    return cmd if cmd and shutil.which(cmd[0]) else None
 
 
-def _key(gdir: Path, flags: list[str]) -> str:
-    h = hashlib.sha256()
-    for p in sorted((gdir / "c").glob("*")):
-        h.update(p.name.encode())
-        h.update(p.read_bytes())
-    h.update(" ".join(flags).encode())
-    h.update(f"{sys.implementation.cache_tag}{platform.machine()}{platform.node()}".encode())
-    return h.hexdigest()[:16]
+def jobs() -> int:
+    """Parallel compiles: ``RIGIDSYM_BUILD_JOBS``, else the cores this process may use."""
+    env = os.environ.get("RIGIDSYM_BUILD_JOBS")
+    if env and env.isdigit() and int(env) > 0:
+        return int(env)
+    try:
+        return max(1, len(os.sched_getaffinity(0)))
+    except AttributeError:  # not Linux
+        return os.cpu_count() or 1
 
 
-def build(force: bool = False, gdir: Path | None = None) -> Path:
-    """Compile (if needed) and return the path of the extension module.
+def cpu_features() -> str:
+    """The CPU's model and feature flags (``/proc/cpuinfo``), for the key of a native build:
+    identical machines share it, whatever their host names."""
+    try:
+        text = Path("/proc/cpuinfo").read_text(errors="replace")
+    except OSError:
+        return f"{platform.machine()} {platform.processor()}"
+    fields = {}
+    for line in text.splitlines():
+        key, _, value = line.partition(":")
+        key = key.strip()
+        if key in ("flags", "Features", "model name", "vendor_id", "CPU part") \
+                and key not in fields:
+            fields[key] = " ".join(sorted(value.split())) if key in ("flags", "Features") \
+                else value.strip()
+    return json.dumps(fields, sort_keys=True)
 
-    Args:
-        force: rebuild even if a build of the same sources is cached.
-        gdir: a generated directory (``kernels.json`` + ``c/``); default the package's.
+
+@dataclass(frozen=True)
+class Config:
+    """What to build with: the compiler, the paths (best first), the kernels' flags, and
+    whether OpenMP and libmvec are used."""
+
+    cc: tuple[str, ...]
+    paths: tuple[IsaPath, ...]
+    flags: tuple[str, ...]
+    openmp: bool
+    libmvec: bool
+
+    def object_flags(self, path: IsaPath) -> list[str]:
+        """Flags of one path's kernel objects."""
+        return [*COMMON_FLAGS, *self.flags, *path.flags, *(MVEC_FLAGS if self.libmvec else ()),
+                *(OMP_FLAGS if self.openmp else ()), f"-DRIGIDSYM_ISA_SUFFIX=_{path.suffix}"]
+
+    def libraries(self) -> list[str]:
+        return (["-lmvec"] if self.libmvec else []) + ["-lm"]
+
+    def describe(self) -> str:
+        """One line per path: its name and flags (the module's ``build`` attribute)."""
+        return "; ".join(f"{p.name}: {' '.join(self.object_flags(p)[len(COMMON_FLAGS):-1])}"
+                         for p in self.paths)
+
+
+_PROBE = """#include <math.h>
+%s
+double x[64], y[64];
+int main(void)
+{
+    %s
+    for (int i = 0; i < 64; ++i)
+        y[i] = sin(x[i]) + cos(x[i]);
+    return (int)y[0];
+}
+"""
+_MVEC_DECL = ("#pragma omp declare simd notinbranch\ndouble sin(double);\n"
+              "#pragma omp declare simd notinbranch\ndouble cos(double);")
+
+
+@cache
+def _probe(cc: tuple[str, ...], flags: tuple[str, ...], libs: tuple[str, ...], simd: bool) -> bool:
+    """Whether a small program compiles and links (an executable: a shared object would
+    accept an unresolved libmvec symbol) with ``flags`` and ``libs``."""
+    import subprocess
+    import tempfile
+
+    with tempfile.TemporaryDirectory() as tmp:
+        src = Path(tmp) / "probe.c"
+        src.write_text(_PROBE % (_MVEC_DECL if simd else "",
+                                 "#pragma omp simd" if simd else ""))
+        r = subprocess.run([*cc, *flags, str(src), "-o", str(Path(tmp) / "probe"), *libs],
+                           capture_output=True)
+        return r.returncode == 0
+
+
+def configure(native: bool = False, cc: list[str] | None = None) -> Config:
+    """The build of this machine: compiler, paths, flags, OpenMP and libmvec when they link.
 
     Raises:
-        Exception: whatever the compiler / cffi raises when no C compiler works.
+        CompilerNotFound: no C compiler on ``PATH``.
+        ValueError: bad ``RIGIDSYM_CFLAGS`` or ``RIGIDSYM_PATHS``.
     """
-    gdir = generated_dir() if gdir is None else Path(gdir)
-    meta = json.loads((gdir / "kernels.json").read_text())
-    base = _flags()
-    last = None
-    with _LOCK:
-        for flags, libs in build_variants(base):
-            try:
-                path = _build(gdir, meta, flags, libs, force)
-            except Exception as exc:  # noqa: BLE001 - the next variant is the fallback
-                last = exc
-                continue
-            if "-fopenmp" not in flags and not _WARNED["omp"]:
-                _WARNED["omp"] = True
-                warnings.warn("rigidsym: the C kernels built without OpenMP "
-                              f"({last or 'RIGIDSYM_OPENMP=0'}); they run on one thread",
-                              RuntimeWarning, stacklevel=2)
-            return path
-    raise last
+    cc = cc or compiler()
+    if cc is None:
+        import sysconfig
+
+        name = os.environ.get("CC") or sysconfig.get_config_var("CC") or "cc"
+        raise CompilerNotFound(f"no C compiler found ({name!r} is not on PATH)")
+    cmd, flags, paths = tuple(cc), kernel_flags(), default_paths(native)
+    base = (*flags, *paths[-1].flags)
+    mvec = (sys.platform.startswith("linux") and platform.libc_ver()[0] == "glibc"
+            and os.environ.get("RIGIDSYM_LIBMVEC", "1") != "0"
+            and _probe(cmd, (*base, *MVEC_FLAGS), ("-lmvec", "-lm"), True))
+    omp = (os.environ.get("RIGIDSYM_OPENMP", "1") != "0"
+           and _probe(cmd, (*base, *OMP_FLAGS), ("-lm",), False))
+    return Config(cmd, paths, flags, omp, mvec)
 
 
-def build_variants(base: list[str]) -> list[tuple[list[str], list[str]]]:
-    """Build variants ``(flags, libraries)``, best first: with OpenMP (unless
-    ``RIGIDSYM_OPENMP=0``), then without; each with libmvec (glibc only), then plain."""
-    plain = []
-    if sys.platform.startswith("linux") and platform.libc_ver()[0] == "glibc" \
-            and os.environ.get("RIGIDSYM_LIBMVEC", "1") != "0":
-        plain.append((base + MVEC_FLAGS, ["mvec", "m"]))
-    plain.append((base, ["m"]))
-    if os.environ.get("RIGIDSYM_OPENMP", "1") == "0":
-        return plain
-    return [(f + OMP_FLAGS, libs) for f, libs in plain] + plain
+def kernel_sources(cdir: Path) -> list[Path]:
+    """The sources compiled once per path: every ``c/*.c`` but the module's."""
+    return sorted(p for p in Path(cdir).glob("*.c") if p.name != MODULE_SOURCE)
 
 
-def openmp() -> bool:
-    """Whether the loaded C kernels were built with OpenMP (builds them if needed)."""
-    return bool(load()[1].rigidsym_openmp())
+def sources_hash(cdir: Path) -> str:
+    """SHA-256 over the names and bytes of every file in ``cdir`` (the C of one generated
+    directory); built into the module, compared with the folder before it is loaded."""
+    h = hashlib.sha256()
+    for p in sorted(Path(cdir).iterdir()):
+        if p.is_file() and p.suffix in (".c", ".h"):
+            h.update(p.name.encode() + b"\0" + p.read_bytes() + b"\0")
+    return h.hexdigest()
 
 
-_variants = build_variants
+def embedded_hash(data: bytes | Path) -> str | None:
+    """The sources hash built into a module (its bytes or its file), read without loading
+    it; ``None`` when there is none."""
+    if isinstance(data, Path):
+        try:
+            data = data.read_bytes()
+        except OSError:
+            return None
+    i = data.find(_TAG)
+    if i < 0:
+        return None
+    value = data[i + len(_TAG):i + len(_TAG) + 64]
+    return value.decode("ascii", "replace") if len(value) == 64 else None
 
 
-def _build(gdir: Path, meta: dict, flags: list[str], libs: list[str], force: bool) -> Path:
-    import cffi
-
-    name = f"_rigidsym_kernels_{_key(gdir, flags + libs)}"
-    out = cache_dir() / name
-    found = sorted(out.glob(f"{name}*.so")) + sorted(out.glob(f"{name}*.pyd"))
-    if found and not force:
-        return found[0]
-    out.mkdir(parents=True, exist_ok=True)
-    ffi = cffi.FFI()
-    ffi.cdef(cdef(meta))
-    cdir = gdir / "c"
-    sources = [str(cdir / f"{k['name']}.c") for k in meta["kernels"]]
-    ffi.set_source(name, _PREAMBLE, sources=sources, include_dirs=[str(cdir)],
-                   extra_compile_args=flags, libraries=libs,
-                   extra_link_args=[f for f in flags if f in OMP_FLAGS])
-    with tempfile.TemporaryDirectory(dir=out) as tmp:
-        so = Path(ffi.compile(tmpdir=tmp, verbose=False))
-        final = out / so.name
-        os.replace(so, final)
-    return final
+def estimate_seconds(cdir: Path, cfg: Config) -> float:
+    """A rough wall time of :func:`build` (for the notice before it starts): the measured
+    CPU time per object over the parallel compiles, slowed by the machine's other work
+    (the 1-minute load average)."""
+    n = len(kernel_sources(cdir)) * len(cfg.paths) + 1
+    par = min(jobs(), n)
+    cores = os.cpu_count() or 1
+    try:
+        busy = os.getloadavg()[0]
+    except (AttributeError, OSError):   # not Unix
+        busy = 0.0
+    share = min(1.0, cores / max(cores, busy + par))
+    return n * SECONDS_PER_OBJECT / (par * share)
 
 
-def load(force: bool = False, gdir: Path | None = None):
-    """Build if needed and import the extension of ``gdir`` (default the package's
-    generated directory); returns ``(ffi, lib)``. Thread-safe."""
-    with _LOCK:
-        path = build(force=force, gdir=gdir)
-        name = path.name.split(".")[0]
-        if name in sys.modules:
-            mod = sys.modules[name]
-        else:
-            # idle OpenMP threads sleep instead of spinning (read by libgomp when it loads;
-            # a user's setting wins): between two kernel calls a spinning worker takes the
-            # caller's core, measured 11 ms per 2-thread call on a busy 2-core machine
-            # instead of 0.1 ms (benchmarks/scale.py)
-            os.environ.setdefault("OMP_WAIT_POLICY", "PASSIVE")
-            spec = importlib.util.spec_from_file_location(name, path)
-            mod = importlib.util.module_from_spec(spec)
-            spec.loader.exec_module(mod)
-            sys.modules[name] = mod
-    return mod.ffi, mod.lib
+Progress = Callable[[int, int], None]
+
+
+def _tasks(cdir: Path, cfg: Config, tmp: Path) -> list[tuple[list[str], Path]]:
+    """``(argv, object)`` of every compile, largest sources first (balances the workers)."""
+    import sysconfig
+
+    inc = ["-I", str(cdir)]
+    tasks = []
+    for path in cfg.paths:
+        (tmp / path.suffix).mkdir(parents=True, exist_ok=True)
+        for src in kernel_sources(cdir):
+            obj = tmp / path.suffix / (src.stem + ".o")
+            tasks.append(([*cfg.cc, *cfg.object_flags(path), *inc, "-c", str(src), "-o",
+                           str(obj)], src.stat().st_size))
+    base = cfg.paths[-1]
+    mod = [*cfg.cc, *COMMON_FLAGS, "-O2", *base.flags, *(OMP_FLAGS if cfg.openmp else ()),
+           *(f"-DRIGIDSYM_PATH_{p.suffix}" for p in cfg.paths),
+           f"-DRIGIDSYM_SOURCES={json.dumps(sources_hash(cdir))}",
+           f"-DRIGIDSYM_BUILD={json.dumps(cfg.describe())}",
+           *inc, "-I", sysconfig.get_paths()["include"], "-c", str(cdir / MODULE_SOURCE),
+           "-o", str(tmp / "module.o")]
+    tasks.append((mod, 1 << 30))      # first: its errors (Python headers) show early
+    tasks.sort(key=lambda t: -t[1])
+    return [(argv, Path(argv[argv.index("-o") + 1])) for argv, _ in tasks]
+
+
+def _run(argv: list[str]) -> None:
+    import subprocess
+
+    r = subprocess.run(argv, capture_output=True, text=True)
+    if r.returncode != 0:
+        tail = "\n".join((r.stderr or r.stdout).strip().splitlines()[-20:])
+        raise BuildError(f"{shlex.join(argv)}\nfailed with exit code {r.returncode}:\n{tail}")
+
+
+def build(gdir: Path, out: Path, cfg: Config, tmp: Path,
+          progress: Progress | None = None) -> Path:
+    """Compile ``gdir/c`` into the module file ``out`` (objects in ``tmp``); returns ``out``.
+
+    Raises:
+        BuildError: a compile or the link failed (the compiler's last lines in the message).
+    """
+    from concurrent.futures import ThreadPoolExecutor, as_completed
+
+    cdir = Path(gdir) / "c"
+    if not (cdir / MODULE_SOURCE).is_file():
+        raise BuildError(f"{cdir}: no {MODULE_SOURCE}; regenerate this folder with this "
+                         f"version of rigidsym (`rigidsym generate`)")
+    tasks = _tasks(cdir, cfg, Path(tmp))
+    total = len(tasks) + 1
+    with ThreadPoolExecutor(max_workers=min(jobs(), len(tasks))) as pool:
+        futures = [pool.submit(_run, argv) for argv, _ in tasks]
+        try:
+            for done, f in enumerate(as_completed(futures), 1):
+                f.result()
+                if progress is not None:
+                    progress(done, total)
+        except BaseException:
+            for f in futures:       # the first failure: do not start the rest
+                f.cancel()
+            raise
+    link = [*cfg.cc, "-shared", *(("-bundle", "-undefined", "dynamic_lookup")
+                                  if sys.platform == "darwin" else ()),
+            *(str(o) for _, o in tasks), *cfg.libraries(),
+            *(OMP_FLAGS if cfg.openmp else ()), "-o", str(out)]
+    Path(out).parent.mkdir(parents=True, exist_ok=True)
+    _run(link)
+    if progress is not None:
+        progress(total, total)
+    return Path(out)

@@ -1,9 +1,10 @@
 """The checked evaluation of one generated directory (``kernels.json`` + ``numpy/`` + ``c/``).
 
-A :class:`KernelSpace` reads the metadata, loads the NumPy kernels and (lazily) compiles
-the C ones through cffi; :meth:`KernelSpace.call` validates the inputs (errors name the
-argument), broadcasts the batch, runs the selected backend, and reports singular and
-non-finite samples. The generated ``api.py`` functions end in that call.
+A :class:`KernelSpace` reads the metadata, loads the NumPy kernels and (lazily) the C
+extension module of the directory (:mod:`rigidsym.kernels._ext`);
+:meth:`KernelSpace.call` validates the inputs (errors name the argument), broadcasts the
+batch, runs the selected backend, and reports singular and non-finite samples. The
+generated ``api.py`` functions end in that call.
 """
 
 from __future__ import annotations
@@ -166,6 +167,7 @@ class KernelSpace:
     meta: dict
     _numpy: dict = field(default_factory=dict)
     _clib: Any = None
+    _cindex: dict = field(default_factory=dict)
     _c_failed: bool = False
 
     @classmethod
@@ -197,16 +199,22 @@ class KernelSpace:
         return f
 
     def c_lib(self):
+        """The loaded extension of this directory (:class:`rigidsym.kernels._ext.Loaded`):
+        built with the package, or from the cache, compiled there first if needed."""
         if self._clib is None:
             with _state.LOCK:
                 if self._clib is None:
-                    from rigidsym.kernels._build import load
-                    self._clib = load(gdir=self.directory)
+                    from rigidsym.kernels import _ext
+                    self._clib = _ext.load(self.directory,
+                                           package=self.directory == _ext.generated_dir())
+                    names = self._clib.module.kernels
+                    self._cindex = {n: i for i, n in enumerate(names)}
         return self._clib
 
     def backend(self) -> str:
         """The backend in effect here: the global choice, NumPy if this C did not build."""
-        b = _state.backend()
+        # a user directory's C never waits for the package's: "c" unless NumPy was chosen
+        b = _state.STATE["backend"] or "c"
         if b == "c" and self._clib is None:
             if self._c_failed:
                 return "numpy"
@@ -234,14 +242,12 @@ class KernelSpace:
         if b == "numpy":
             k = self.numpy_kernel(name)
             return numpy_f32(k, len(self.meta[name]["args"])) if f32 else k
-        ffi, lib = self.c_lib()
-        cfun = getattr(lib, f"rigidsym_{name}_f32_threads" if f32 else f"rigidsym_{name}_threads")
-        fb = ffi.from_buffer
-        ctype = "float[]" if f32 else "double[]"
+        batch = self.c_lib().module.batch
+        k = self._cindex[name]
 
         def f(*arrays):
             n = arrays[0].shape[0]
-            return cfun(n, t if n >= MIN_PARALLEL else 1, *[fb(ctype, a) for a in arrays])
+            return batch(k, f32, n, t if n >= MIN_PARALLEL else 1, *arrays)
         return f
 
     def call(self, name: str, args: tuple, out=None, check: bool = True,

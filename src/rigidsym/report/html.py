@@ -22,7 +22,8 @@ from rigidsym.printing.mathml import latex_to_mathml
 from rigidsym.report.counterexample import html_view, sides_of
 from rigidsym.report.glossary import html_entries
 from rigidsym.report.markdown import anchor, sections
-from rigidsym.report.record import CITATION, RESIDUAL_FLOOR, result_record, summary
+from rigidsym.report.numeric import numeric_sentence
+from rigidsym.report.record import CITATION, result_record, summary
 
 __all__ = ["to_html", "markdown_to_html", "math_or_text", "prose_html"]
 
@@ -56,15 +57,6 @@ def _value_mathml(text: str | None) -> Markup:
     return math_or_text(notation.latex(v), text, display=False)
 
 
-def _numeric_text(n: dict) -> str:
-    res = n.get("max_residual")
-    if res is None:
-        return ""
-    shown = f"< {RESIDUAL_FLOOR:.0e}" if res <= RESIDUAL_FLOOR else f"{res:.1e}"
-    return (f"Numeric backing: {n['points']} points at {n['digits']} digits, max relative "
-            f"residual {shown} (seed {n['seed']}).")
-
-
 def prose_html(text: str | None) -> Markup:
     """Running text of a declaration (evidence, a label) as HTML: its LaTeX pieces
     (``\\dot{\\boldsymbol{\\nu}}``) as inline MathML, its ASCII mathematics in book
@@ -91,7 +83,7 @@ def _prose_view(rec: dict) -> dict:
 def _view(rec: dict) -> dict:
     v = dict(rec, anchor=anchor(rec["id"]),
              printed_mathml=math_or_text(rec["printed_latex"], rec["printed_latex"]),
-             numeric_text=_numeric_text(rec["numeric"]))
+             numeric_text=numeric_sentence(rec["numeric"]))
     v["members"] = [dict(m, mathml=math_or_text(m["latex"], m["text"]),
                          label_shown=label_text(m["label"])) for m in rec["members"]]
     v.update(_prose_view(rec))

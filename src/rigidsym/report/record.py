@@ -19,7 +19,7 @@ from rigidsym.checking.registry import USER_CAUSE_DEFAULT, VERDICTS, is_user_id
 from rigidsym.printing import notation
 
 __all__ = ["summary", "result_record", "to_json", "cause_words",
-           "failure_bound", "CITATION", "SCHEMA", "RESIDUAL_FLOOR"]
+           "failure_bound", "CITATION", "SCHEMA", "RESIDUAL_FLOOR", "document_header"]
 
 CITATION = ("J. Angeles, *Fundamentals of Robotic Mechanical Systems*, 4th ed., Springer, "
             "Chap. 3")
@@ -141,6 +141,8 @@ def result_record(r: Result, timings: bool = True, full: bool = False) -> dict:
     numeric = dict(r.numeric)
     if not timings:
         numeric["max_residual"] = _bounded(numeric.get("max_residual"))
+        if "enclosure" in numeric:
+            numeric["enclosure"] = _bounded(numeric["enclosure"])
     rec = {
         "id": r.id, "title": r.title, "section": r.section, "kind": r.kind,
         "verdict": r.verdict, "expected": r.expected, "method": r.method,
@@ -154,19 +156,29 @@ def result_record(r: Result, timings: bool = True, full: bool = False) -> dict:
     }
     if timings:
         rec["seconds"] = r.seconds
+        rec["cached"] = getattr(r, "cached", False)
     if full:
         rec.update(printed=r.printed, derived=r.derived, corrected=r.corrected)
     return rec
 
 
+def document_header() -> dict:
+    """The head of a schema-2 document: ``{"schema": 2, "python_flint": version}`` (the
+    library of the exact engine and of the ball-arithmetic backing)."""
+    from rigidsym.checking.balls import flint_version
+
+    return {"schema": SCHEMA, "python_flint": flint_version()}
+
+
 def to_json(results: list[Result], timings: bool = True, full: bool = False) -> str:
-    """The JSON document ``{"schema": 2, "equations": [...], "summary": {...}}``.
+    """The JSON document ``{"schema": 2, "python_flint": ..., "equations": [...],
+    "summary": {...}}``.
 
     ``timings=False`` (the committed report) drops the seconds and bounds tiny residuals;
     ``full=True`` adds the expanded values (``chapter3-full.json``).
     """
     rows = [result_record(r, timings=timings, full=full) for r in results]
-    return json.dumps({"schema": SCHEMA, "equations": rows, "summary": summary(results)},
+    return json.dumps({**document_header(), "equations": rows, "summary": summary(results)},
                       indent=1, sort_keys=False, ensure_ascii=False) + "\n"
 
 

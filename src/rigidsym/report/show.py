@@ -21,6 +21,7 @@ from rigidsym.checking.registry import Rel, is_user_id
 from rigidsym.printing import notation
 from rigidsym.printing.labels import label_text
 from rigidsym.report.counterexample import GLOSSARY_HINT, sides_of, text_lines
+from rigidsym.report.numeric import numeric_sentence
 from rigidsym.report.record import cause_words, counterexample_record, result_record
 
 __all__ = ["explain", "output_width", "expr_lines", "DEFAULT_WIDTH"]
@@ -184,9 +185,7 @@ def explain(r: Result, rels: dict[str, list[Rel]], where: str, width: int) -> st
         out += _hard_wrap(f"Singular set: {label_text(r.singular)}", width, "")
     if r.model:
         out += _hard_wrap("Model: " + "; ".join(r.model), width, "")
-    n = r.numeric
-    if n.get("max_residual") is not None:
-        out += _hard_wrap(f"Numeric backing: {n['points']} points at {n['digits']} digits, "
-                          f"max relative residual {n['max_residual']:.1e}", width, "")
+    if numeric_sentence(r.numeric):
+        out += _hard_wrap(numeric_sentence(r.numeric), width, "")
     out += _hard_wrap(GLOSSARY_HINT, width, "")
     return "\n".join(out)

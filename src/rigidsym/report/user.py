@@ -15,11 +15,13 @@ from rigidsym.report.record import CITATION, to_json
 __all__ = ["write_user_report"]
 
 
-def write_user_report(modules, out: Path, jobs: int = 1) -> int:
+def write_user_report(modules, out: Path, jobs: int = 1, cache: bool = False) -> int:
     """``rigidsym report --module M --out DIR``: ``DIR/<M>.{md,json,html}``.
 
     The same Markdown, JSON and HTML as the chapter's, titled by the module and named after
     it (several modules: one set of files each).
+
+    ``cache`` reads and stores results in the verdict cache (the files are the same).
 
     Returns:
         The exit code: 1 when a computed verdict differs from the declared expectation.
@@ -28,7 +30,8 @@ def write_user_report(modules, out: Path, jobs: int = 1) -> int:
 
     code = 0
     for um in load_many(modules):
-        results = run_checks(select(None, None, [um.name]), jobs=jobs, progress=True)
+        results = run_checks(select(None, None, [um.name]), jobs=jobs, progress=True,
+                             cache=cache)
         # the chapter's renderers title the page by the book: here the module names it
         book_title, title = "Chapter 3 checked: verdicts", f"{um.title} checked: verdicts"
         md = to_markdown(results).split("\n")

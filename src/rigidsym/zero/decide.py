@@ -11,19 +11,22 @@ Method (never ``simplify()``, never floating point):
    is exact).
    After this step the expression is a rational function over Q of free variables, and the
    constraints hold identically.
-2. **Random-exact probe.** Evaluate with Python ``Fraction`` at seeded random rational
+2. **Random-exact probe.** Evaluate with FLINT rationals (``fmpq``) at seeded random rational
    points. A non-zero value is a *proof* that the expression is not identically zero, and
    the point is an exact counterexample.
-3. **Exact cancellation** (``exact-cancel``): for expressions of moderate size, bring the
-   rational function to lowest terms in ``sympy.polys`` fields; zero iff the numerator is 0.
-4. **Schwartz-Zippel** (``random-exact``): for expressions too large to expand, a bound
+3. **Exact cancellation** (``exact-cancel``): compute the rational function as a fraction
+   of FLINT polynomials (python-flint ``fmpq_mpoly``, common factors removed by FLINT's
+   multivariate gcd); zero iff the numerator is 0. Attempted within a work budget on the
+   sizes of the polynomials (:data:`CANCEL_TERMS_LIMIT`), not on time.
+4. **Schwartz-Zippel** (``random-exact``): for expressions past that budget, a bound
    ``d`` on the total degree of the numerator is computed from the expression tree, and the
    expression is evaluated exactly at ``n`` independent points drawn uniformly from a set
    ``S`` of ``2^32 + 1`` rationals: if it is not identically zero, all ``n`` values vanish
    with probability at most ``(d / |S|)^n``, which is recorded.
 
 Anything else (a float, an unknown function, an irrational power) makes the result
-``undecided``.
+``undecided``. Each family of expressions is translated once into a straight-line program
+(:mod:`rigidsym.zero.program`) that steps 2-4 share.
 """
 
 from __future__ import annotations
@@ -32,11 +35,12 @@ import random
 from dataclasses import dataclass
 from fractions import Fraction
 
+import flint
 import sympy as sp
-from sympy.polys.fields import field as frac_field
 
 from rigidsym.zero.exact import _size, degree_bound, evaluate, to_rational
 from rigidsym.zero.plan import Plan, Unsupported, make_plan
+from rigidsym.zero.program import Program, TooLarge, parametrised, run_exact, run_rational
 
 __all__ = [
     "Unsupported",
@@ -55,17 +59,13 @@ SAMPLE_SET_SIZE = 2**32 + 1
 _DEN = 2**16
 #: Node-count limit above which exact cancellation is not attempted.
 CANCEL_NODE_LIMIT = 2500
-#: Degree-bound limit above which exact cancellation is not attempted (multivariate gcds
-#: of high degree can take minutes; Schwartz-Zippel then decides in seconds).
-CANCEL_DEGREE_LIMIT = 160
-#: Exact cancellation is attempted when the degree bound is at most this, whatever the
-#: number of parameters...
-CANCEL_SMALL_DEGREE = 48
-#: ... or when there are at most this many parameters (and the degree is within
-#: CANCEL_DEGREE_LIMIT). Measured on the chapter: every attempt under this rule takes
-#: <= 1 s; with 14+ parameters and degree > 48, multivariate gcds took 2 s to minutes.
-#: A rule on the data, not a timer, so the method recorded does not depend on the machine.
-CANCEL_PARAM_LIMIT = 13
+#: The work budget of exact cancellation, on the data (so the method recorded does not
+#: depend on the machine): no intermediate numerator or denominator may exceed this many
+#: terms, and no product this many pairs of terms (FLINT then decides in about a second at
+#: most); past it, Schwartz-Zippel decides. Measured on the chapter (python-flint 0.9):
+#: at most 44,924 terms and 3.3e7 pairs, every family cancels, 5.9 s in all.
+CANCEL_TERMS_LIMIT = 200_000
+CANCEL_PRODUCT_LIMIT = 2 * 10**8
 #: Safety net only (CPU seconds; not reached on the chapter): then Schwartz-Zippel decides.
 CANCEL_SECONDS = 5.0
 #: Points evaluated by the Schwartz-Zippel path.
@@ -98,23 +98,17 @@ class _OutOfTime(Exception):
     pass
 
 
-def _cancel_within_budget(entries, plan: Plan) -> list[int] | None:
-    """Indices of entries whose reduced numerator is non-zero; ``None`` if the budget ran out.
+def _cancel_within_budget(prog: Program, plan: Plan) -> list[int] | None:
+    """Indices of entries whose numerator is non-zero; ``None`` if the budget ran out.
 
     The budget is process CPU time (ITIMER_VIRTUAL/SIGVTALRM, main thread on POSIX), so the
     method chosen does not depend on how loaded the machine is: multivariate gcds
-    occasionally take minutes where Schwartz-Zippel needs a second.
+    occasionally take minutes where Schwartz-Zippel needs a second. (A FLINT call is not
+    interrupted: the alarm is seen when it returns.)
     """
     import signal
     import threading
 
-    gens = plan.params
-    if gens:
-        K, *_ = frac_field(gens, sp.QQ)
-        conv = K.from_expr
-    else:
-        def conv(x):
-            return sp.Rational(x)
     timed = hasattr(signal, "setitimer") and threading.current_thread() is \
         threading.main_thread()
 
@@ -125,8 +119,14 @@ def _cancel_within_budget(entries, plan: Plan) -> list[int] | None:
     try:
         if timed:
             signal.setitimer(signal.ITIMER_VIRTUAL, CANCEL_SECONDS)
-        return [i for i, e in enumerate(entries) if conv(to_rational(e, plan)) != 0]
-    except _OutOfTime:
+        if not plan.params:  # constants: their exact values decide
+            return [i for i, v in enumerate(run_exact(prog, [])) if v != 0]
+        # positional names: two parameters may print alike
+        ctx = flint.fmpq_mpoly_ctx.get([f"x{i}" for i in range(len(plan.params))],
+                                       "degrevlex")
+        out = run_rational(prog, ctx, CANCEL_TERMS_LIMIT, CANCEL_PRODUCT_LIMIT)
+        return [i for i, (num, _) in enumerate(out) if not num.is_zero()]
+    except (_OutOfTime, TooLarge):
         return None
     finally:
         if timed:
@@ -139,8 +139,10 @@ def random_point(plan: Plan, rng: random.Random) -> dict:
     return {p: Fraction(rng.randint(-(2**31), 2**31), _DEN) for p in plan.params}
 
 
-def _eval_entries(entries, plan, point):
-    return [evaluate(e, plan, point) for e in entries]
+def _eval_entries(prog: Program, plan: Plan, point: dict) -> list:
+    """Exact values (``fmpq``) of the program's outputs at ``point`` (``Fraction`` values)."""
+    return run_exact(prog, [flint.fmpq(point[p].numerator, point[p].denominator)
+                            for p in plan.params])
 
 
 def decide_zero(entries, seed: int = 0, probes: int = 2) -> ZeroResult:
@@ -155,6 +157,10 @@ def decide_zero(entries, seed: int = 0, probes: int = 2) -> ZeroResult:
     except Unsupported as exc:
         return ZeroResult(None, "undecided", str(exc))
     rng = random.Random(seed)
+    try:
+        prog = parametrised(entries, plan)  # once: shared by the probes and cancellation
+    except Unsupported as exc:
+        return ZeroResult(None, "undecided", str(exc), plan=plan)
 
     def probe(n):
         tries = 0
@@ -165,7 +171,7 @@ def decide_zero(entries, seed: int = 0, probes: int = 2) -> ZeroResult:
                 raise Unsupported("could not find sample points off the singular set")
             pt = random_point(plan, rng)
             try:
-                vals = _eval_entries(entries, plan, pt)
+                vals = _eval_entries(prog, plan, pt)
             except ZeroDivisionError:
                 continue
             done += 1
@@ -179,11 +185,8 @@ def decide_zero(entries, seed: int = 0, probes: int = 2) -> ZeroResult:
         if hit is not None:
             return ZeroResult(False, "counterexample", "non-zero at an exact rational point",
                               hit[0], hit[1], plan)
-        d = max(degree_bound(e, plan) for e in entries)
-        small = d <= CANCEL_SMALL_DEGREE or (d <= CANCEL_DEGREE_LIMIT and
-                                              len(plan.params) <= CANCEL_PARAM_LIMIT)
-        if small and all(_size(e, CANCEL_NODE_LIMIT) <= CANCEL_NODE_LIMIT for e in entries):
-            nonzero = _cancel_within_budget(entries, plan)
+        if all(_size(e, CANCEL_NODE_LIMIT) <= CANCEL_NODE_LIMIT for e in entries):
+            nonzero = _cancel_within_budget(prog, plan)
         else:
             nonzero = None
         if nonzero is not None:
@@ -197,6 +200,7 @@ def decide_zero(entries, seed: int = 0, probes: int = 2) -> ZeroResult:
             return ZeroResult(True, "exact-cancel",
                               f"numerators cancel to 0 over Q({len(plan.params)} parameters)",
                               plan=plan)
+        d = max(degree_bound(e, plan) for e in entries)  # raises for |x| and roots
         hit = probe(SZ_POINTS)
         if hit is not None:
             return ZeroResult(False, "counterexample", "non-zero at an exact rational point",

@@ -191,9 +191,7 @@ def degree_bound(expr, plan: Plan) -> int:
             coeffs, _ = _linear_angles(x.args[0])
             deg = sum(2 * abs(int(c * plan.angles[a][1])) for a, c in coeffs.items())
             r = (deg, deg)
-        elif isinstance(x, sp.Abs):
-            r = db(x.args[0])
-        else:
+        else:  # |f| too: not a rational function, so Schwartz-Zippel says nothing of it
             raise Unsupported(f"degree of {x}")
         memo[x] = r
         return r

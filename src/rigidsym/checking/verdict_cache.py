@@ -1,0 +1,271 @@
+"""The verdict cache: a checked result is stored once and read back while nothing it depends
+on has changed (``<cache>/verdicts/``, see :mod:`rigidsym._cache` for where and how).
+
+**The key** of an id is a SHA-256 over everything its verdict depends on:
+
+- the source of the ``rigidsym`` package and of the book's declarations (every file of
+  both folders, by content);
+- for a user id, the declaring module's file and every *local* module it imports,
+  transitively (an ``import`` in its source, resolved through ``sys.modules``; local means
+  outside the standard library and site-packages), by content;
+- the declaration itself: its metadata (title, kind, LaTeX, expected verdict, ...) and the
+  compiled code of its function;
+- the versions of Python, sympy, mpmath and python-flint;
+- the engine's settings as they are at run time (point counts, precision, limits).
+
+**Not tracked** (say ``--no-cache`` or ``rigidsym cache clear --verdicts`` after changing
+them): data files a declaration reads at run time; modules imported dynamically
+(``importlib``) or by a helper's C code; environment variables a declaration reads; a
+helper module imported before rigidsym first looked at it and edited in between. A helper
+module edited on disk *after* this process imported it is detected: its dependents are
+checked and not stored (the code in memory is not the code on disk).
+
+A declaration that is not the function its module defines (replaced in a notebook or a
+test) or whose module has no file is never cached. Entries are written atomically under
+the cache lock; an entry that is corrupt or foreign (checksum, format, key or id do not
+match) is ignored with a :class:`VerdictCacheWarning` and recomputed, never trusted.
+"""
+
+from __future__ import annotations
+
+import ast
+import hashlib
+import importlib.util
+import json
+import marshal
+import site
+import sys
+import sysconfig
+import warnings
+from dataclasses import fields
+from functools import cache
+from pathlib import Path
+
+from rigidsym import _cache, _config
+from rigidsym.checking.registry import REGISTRY, Equation
+
+__all__ = ["lookup", "store", "key_of", "VerdictCacheWarning", "FORMAT"]
+
+#: version of the entry format (an entry of another format is foreign)
+FORMAT = 1
+
+
+class VerdictCacheWarning(UserWarning):
+    """A cache entry was ignored (corrupt or foreign) or a module changed under us."""
+
+
+# --------------------------------------------------------------------------- digests
+def _file_digest(path: Path) -> str:
+    return hashlib.sha256(path.read_bytes()).hexdigest()
+
+
+def _package_roots() -> list[Path]:
+    import rigidsym
+
+    roots = [Path(rigidsym.__file__).resolve().parent]
+    spec = importlib.util.find_spec(_config.BOOK)
+    for loc in (spec.submodule_search_locations or []) if spec else []:
+        p = Path(loc).resolve()
+        if not any(p == r or r in p.parents for r in roots):
+            roots.append(p)
+    return roots
+
+
+@cache
+def package_digest() -> str:
+    """SHA-256 of every file of the ``rigidsym`` package and of the book's folder (relative
+    path and content; compiled ``__pycache__`` left out). Computed once per process."""
+    h = hashlib.sha256()
+    for k, root in enumerate(_package_roots()):
+        for p in sorted(root.rglob("*")):
+            if p.is_file() and "__pycache__" not in p.parts and p.suffix != ".pyc":
+                h.update(f"{k}:{p.relative_to(root).as_posix()}\0{_file_digest(p)}\n".encode())
+    return h.hexdigest()
+
+
+@cache
+def _environment() -> str:
+    import flint
+    import mpmath
+    import sympy
+
+    return json.dumps({"python": sys.version, "sympy": sympy.__version__,
+                       "mpmath": mpmath.__version__, "python-flint": flint.__version__})
+
+
+def _settings() -> str:
+    """The engine's settings as they are now (a test or a user may have changed them)."""
+    from rigidsym.checking import balls, checker
+    from rigidsym.zero import decide
+
+    names = {decide: ("SAMPLE_SET_SIZE", "CANCEL_NODE_LIMIT", "CANCEL_TERMS_LIMIT",
+                      "CANCEL_PRODUCT_LIMIT", "CANCEL_SECONDS", "SZ_POINTS"),
+             balls: ("NUMERIC_DIGITS", "NUMERIC_POINTS", "MAX_DIGITS", "CERTIFIED_BOUND"),
+             checker: ("AGREE_TOL", "DIFFER_TOL")}
+    return json.dumps({f"{m.__name__}.{n}": str(getattr(m, n, None))
+                       for m, ns in names.items() for n in ns}, sort_keys=True)
+
+
+@cache
+def _nonlocal_dirs() -> tuple[Path, ...]:
+    paths = {sysconfig.get_paths().get(k) for k in ("stdlib", "platstdlib", "purelib",
+                                                    "platlib")}
+    paths |= set(site.getsitepackages()) | {site.getusersitepackages()}
+    return tuple(Path(p).resolve() for p in paths if p) + tuple(_package_roots())
+
+
+def _is_local(path: Path) -> bool:
+    return path.suffix == ".py" and not any(d == path or d in path.parents
+                                            for d in _nonlocal_dirs())
+
+
+def _imported_names(path: Path, package: str) -> set[str]:
+    """Module names an ``import`` of the file may bind (submodules of ``from`` imports too)."""
+    out: set[str] = set()
+    for node in ast.walk(ast.parse(path.read_bytes(), str(path))):
+        if isinstance(node, ast.Import):
+            for a in node.names:
+                parts = a.name.split(".")
+                out.update(".".join(parts[:k]) for k in range(1, len(parts) + 1))
+        elif isinstance(node, ast.ImportFrom):
+            try:
+                base = importlib.util.resolve_name("." * node.level + (node.module or ""),
+                                                   package) if node.level else node.module
+            except (ImportError, ValueError):
+                continue
+            if base:
+                out.add(base)
+                out.update(f"{base}.{a.name}" for a in node.names)
+    return out
+
+
+#: path -> (id of the module object, digest of the file when first seen with it)
+_SEEN: dict[str, tuple[int, str]] = {}
+
+
+def _module_files(name: str) -> dict[str, str] | None:
+    """``{path: digest}`` of module ``name`` and of the local modules it imports,
+    transitively; ``None`` when one of them changed on disk since it was imported."""
+    out: dict[str, str] = {}
+    stack = [name]
+    while stack:
+        mod = sys.modules.get(stack.pop())
+        file = getattr(mod, "__file__", None)
+        if not file:
+            continue
+        path = Path(file).resolve()
+        if str(path) in out or not _is_local(path) or not path.is_file():
+            continue
+        now = _file_digest(path)
+        seen = _SEEN.get(str(path))
+        if seen is not None and seen[0] == id(mod) and seen[1] != now:
+            warnings.warn(f"verdict cache: {path} changed on disk since it was imported; the "
+                          f"ids that depend on it are checked and not stored (restart or "
+                          f"reload it)", VerdictCacheWarning, stacklevel=3)
+            return None
+        _SEEN[str(path)] = (id(mod), now)
+        out[str(path)] = now
+        stack.extend(n for n in _imported_names(path, mod.__package__ or "")
+                     if n in sys.modules)
+    return out
+
+
+def _declared_function(eq: Equation):
+    obj = sys.modules.get(eq.module)
+    for part in eq.function.split("."):
+        obj = getattr(obj, part, None)
+    return obj
+
+
+def key_of(eq_id: str, _deps: dict | None = None) -> str | None:
+    """The cache key of ``eq_id`` (hex SHA-256), or ``None`` when it must not be cached (a
+    declaration replaced in memory, a module without a file, a helper changed on disk).
+
+    Raises:
+        KeyError: for an id that is not registered.
+    """
+    eq = REGISTRY[eq_id]
+    mod = sys.modules.get(eq.module)
+    if mod is None or not getattr(mod, "__file__", None) or "<locals>" in eq.function \
+            or _declared_function(eq) is not eq.build_fn:
+        return None
+    if eq.module == _config.BOOK or eq.module.startswith(_config.BOOK + "."):
+        files: dict | None = {}  # in the package digest
+    else:
+        deps = {} if _deps is None else _deps
+        if eq.module not in deps:
+            deps[eq.module] = _module_files(eq.module)
+        files = deps[eq.module]
+    if files is None:
+        return None
+    meta = [eq.id, eq.title, eq.section, eq.kind, eq.latex, eq.expected, eq.cause,
+            eq.evidence, eq.singular, eq.module, eq.function]
+    h = hashlib.sha256()
+    for part in (f"format {FORMAT}", package_digest(), _environment(), _settings(),
+                 json.dumps(meta), json.dumps(sorted(files.items()))):
+        h.update(part.encode() + b"\0")
+    h.update(marshal.dumps(eq.build_fn.__code__))
+    return h.hexdigest()
+
+
+# --------------------------------------------------------------------------- entries
+def _path(key: str) -> Path:
+    return _cache.folder("verdicts") / key[:2] / f"{key}.json"
+
+
+def _read(eq_id: str, key: str):
+    """The cached result of ``eq_id`` under ``key``, or ``None`` (missing, or ignored)."""
+    from rigidsym.checking.checker import Result
+
+    path = _path(key)
+    if not path.exists():
+        return None
+    data = _cache.get(path)
+    try:
+        if data is None:
+            raise ValueError("checksum does not match")
+        entry = json.loads(data)
+        if entry.get("format") != FORMAT or entry.get("key") != key or \
+                entry.get("id") != eq_id:
+            raise ValueError("written for another key")
+        row = entry["result"]
+        if set(row) != {f.name for f in fields(Result)} or row["id"] != eq_id:
+            raise ValueError("not a result of this version")
+        return Result(**dict(row, cached=True))
+    except (ValueError, TypeError, KeyError, AttributeError) as exc:
+        warnings.warn(f"verdict cache: ignored the entry of {eq_id} ({path}): {exc}; "
+                      f"recomputed", VerdictCacheWarning, stacklevel=3)
+        return None
+
+
+def lookup(ids: list[str]) -> tuple[dict, dict]:
+    """Cached results and keys of ``ids``.
+
+    Returns:
+        ``(hits, keys)``: ``id -> Result`` (with ``cached=True``) for the ids found, and
+        ``id -> key`` for every id that may be stored (``None``: never cached).
+    """
+    deps: dict = {}
+    keys = {i: key_of(i, deps) for i in ids}
+    hits = {}
+    with _cache.lock("verdicts"):
+        for i, k in keys.items():
+            r = _read(i, k) if k else None
+            if r is not None:
+                hits[i] = r
+    return hits, keys
+
+
+def store(results: list, keys: dict) -> int:
+    """Write each result whose id has a key (atomically, under the cache lock); returns how
+    many were written. An ``undecided`` result is never written: it may come from a defect
+    of the run (memory, an interrupt) rather than of the code, and is worth a new look."""
+    todo = [(r, keys[r.id]) for r in results if keys.get(r.id) and r.verdict != "undecided"]
+    if not todo:
+        return 0
+    with _cache.lock("verdicts"):
+        for r, k in todo:
+            row = dict(r.as_json(), cached=False)
+            entry = {"format": FORMAT, "key": k, "id": r.id, "result": row}
+            _cache.put(_path(k), json.dumps(entry).encode())  # key order is record order
+    return len(todo)

@@ -1,0 +1,50 @@
+"""``rigidsym cache info | clear``: where the user cache is, what it holds, and emptying it.
+
+The cache (:mod:`rigidsym._cache`) holds compiled kernels (``kernels/``) and checked results
+(``verdicts/``, :mod:`rigidsym.checking.verdict_cache`). Clearing never changes a verdict:
+what is gone is computed again on the next run.
+"""
+
+from __future__ import annotations
+
+from rigidsym import _cache
+
+__all__ = ["add_arguments", "run", "HELP"]
+
+HELP = "where the user cache is and what it holds (info), or empty it (clear)"
+
+
+def add_arguments(c) -> None:
+    """Arguments of ``rigidsym cache``."""
+    sub = c.add_subparsers(dest="action", required=True)
+    sub.add_parser("info", help="where the cache is, how big, how many entries")
+    clear = sub.add_parser("clear", help="remove cached verdicts and compiled kernels")
+    which = clear.add_mutually_exclusive_group()
+    which.add_argument("--verdicts", action="store_true", help="only the checked results")
+    which.add_argument("--kernels", action="store_true", help="only the compiled kernels")
+
+
+def _size(n: int) -> str:
+    for unit in ("B", "KiB", "MiB", "GiB"):
+        if n < 1024 or unit == "GiB":
+            return f"{n} {unit}" if unit == "B" else f"{n:.1f} {unit}"
+        n /= 1024
+    return f"{n} B"  # pragma: no cover
+
+
+def run(args) -> int:
+    """``rigidsym cache info`` prints the cache folder (``RIGIDSYM_CACHE``, else the user
+    cache folder) and per kind its path, entries and size; ``rigidsym cache clear`` removes
+    the verdicts and the kernels (``--verdicts`` or ``--kernels``: only those)."""
+    if args.action == "info":
+        info = _cache.info()
+        print(f"cache: {info['root']} (set RIGIDSYM_CACHE to move it)")
+        for kind in _cache.KINDS:
+            k = info[kind]
+            print(f"  {kind}: {k['entries']} entries, {_size(k['bytes'])} in {k['path']}")
+        return 0
+    kinds = ("verdicts",) if args.verdicts else ("kernels",) if args.kernels else _cache.KINDS
+    gone = _cache.clear(kinds)
+    print(f"cleared {' and '.join(kinds)}: "
+          + (", ".join(str(p) for p in gone) if gone else "nothing to remove"))
+    return 0

@@ -1,0 +1,327 @@
+"""The compiled kernels (issue 19): CPU dispatch, the cache (one compile for many processes,
+checksums), the notice before a compile, staleness, and overflow in the normalising kernels.
+
+The wheel itself (built once per session, no compiler at run time) is tested in
+tests/test_wheel.py, which owns the session's wheel fixture.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+import sys
+import textwrap
+from pathlib import Path
+
+import numpy as np
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from rigidsym import kernels as K
+from rigidsym.kernels import _build, _ext
+
+REPO = Path(__file__).resolve().parents[1]
+HAVE_CC = _build.compiler() is not None
+needs_cc = pytest.mark.skipif(not HAVE_CC, reason="no C compiler")
+
+#: a user module of one kernel (and its generated Jacobian kernel)
+ONE_KERNEL = '''
+from rigidsym.codegen.spec import Arg, Kernel, Out
+
+
+def rescaled(v, s):
+    return v * s
+
+
+KERNELS = [Kernel(
+    name="rescaled", summary="A vector times a scalar.", formula="w = s v",
+    ids=("t:rescaled",), sources=(rescaled,),
+    args=(Arg("v", (3,), "any", "a vector"), Arg("s", (), "any", "a factor")),
+    outputs=(Out("w", (3,), "s v"),), build=lambda v, s: {"w": rescaled(v, s)})]
+'''
+
+
+def _env(cache: Path, **extra: str) -> dict:
+    env = {k: v for k, v in os.environ.items() if k != "RIGIDSYM_DISPATCH"}
+    env.update(RIGIDSYM_CACHE=str(cache), **extra)
+    return env
+
+
+def _python(code: str, env: dict, cwd: Path) -> subprocess.Popen:
+    return subprocess.Popen([sys.executable, "-c", textwrap.dedent(code)], env=env, cwd=cwd,
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+
+
+@pytest.fixture(scope="module")
+def user_dir(tmp_path_factory) -> Path:
+    """A generated one-kernel user directory (C not compiled: --no-build)."""
+    work = tmp_path_factory.mktemp("user")
+    (work / "one_kernel.py").write_text(ONE_KERNEL)
+    out = work / "kernels"
+    p = subprocess.run([sys.executable, "-m", "rigidsym", "generate", "--module",
+                        "one_kernel.py", "--out", str(out), "--no-build"], cwd=work,
+                       capture_output=True, text=True, timeout=300)
+    assert p.returncode == 0, p.stdout + p.stderr
+    assert "compiling" not in p.stderr
+    return out
+
+
+_LOAD = """
+    import json, sys
+    import numpy as np
+    from rigidsym import kernels
+    k = kernels.load({d!r})
+    v = np.arange(30.0).reshape(10, 3) / 7
+    w = k.rescaled(v, np.linspace(-2, 2, 10))
+    info = kernels.build_info({d!r})
+    np.save({out!r}, w)
+    print(json.dumps({{"backend": k._SPACE.backend(), "origin": info["origin"],
+                      "file": info["file"]}}))
+"""
+
+
+@needs_cc
+def test_four_processes_on_an_empty_cache_compile_once(user_dir, tmp_path):
+    cache = tmp_path / "cache"
+    procs = [_python(_LOAD.format(d=str(user_dir), out=str(tmp_path / f"w{i}.npy")),
+                     _env(cache), tmp_path) for i in range(4)]
+    outs = [p.communicate(timeout=600) for p in procs]
+    for p, (_, err) in zip(procs, outs, strict=True):
+        assert p.returncode == 0, err
+    notices = [err.count("rigidsym: compiling") for _, err in outs]
+    assert sum(notices) == 1, [err for _, err in outs]
+    for (_, err), n in zip(outs, notices, strict=True):    # the others waited, or loaded
+        assert n or "waiting for it" in err or not err.strip(), err
+    infos = [json.loads(out.splitlines()[-1]) for out, _ in outs]
+    assert {i["backend"] for i in infos} == {"c"}
+    assert {i["origin"] for i in infos} == {"cache"}
+    assert len({i["file"] for i in infos}) == 1
+    ws = [np.load(tmp_path / f"w{i}.npy") for i in range(4)]
+    for w in ws[1:]:
+        assert np.array_equal(w, ws[0])
+    v = np.arange(30.0).reshape(10, 3) / 7
+    np.testing.assert_allclose(ws[0], v * np.linspace(-2, 2, 10)[:, None], rtol=1e-15)
+
+
+@needs_cc
+def test_corrupt_cached_module_is_rebuilt_with_a_warning_never_loaded(user_dir, tmp_path):
+    cache = tmp_path / "cache"
+    env = _env(cache)
+    p = _python(_LOAD.format(d=str(user_dir), out=str(tmp_path / "a.npy")), env, tmp_path)
+    out, err = p.communicate(timeout=600)
+    assert p.returncode == 0, err
+    so = Path(json.loads(out.splitlines()[-1])["file"])
+    good = so.read_bytes()
+    so.write_bytes(b"\x7fELF garbage" * 100)          # overwritten by something else
+    code = "import warnings; warnings.simplefilter('always')\n" + textwrap.dedent(
+        _LOAD.format(d=str(user_dir), out=str(tmp_path / "b.npy")))
+    p = _python(code, env, tmp_path)
+    out, err = p.communicate(timeout=600)
+    assert p.returncode == 0, err
+    assert "fail their checksum" in err and "rigidsym: compiling" in err
+    assert json.loads(out.splitlines()[-1])["backend"] == "c"
+    assert np.array_equal(np.load(tmp_path / "a.npy"), np.load(tmp_path / "b.npy"))
+    assert _ext._valid(so, _build.embedded_hash(good)) is True
+    so.write_bytes(good[: len(good) // 2])           # truncated
+    assert _ext._valid(so, _build.embedded_hash(good)) is False
+
+
+@needs_cc
+def test_stale_module_is_never_loaded_and_rebuilt_with_a_notice(user_dir, tmp_path,
+                                                                monkeypatch, capfd):
+    """A module whose built-in sources hash differs from the folder's (an editable install
+    after `rigidsym generate`) is not loaded: the folder is compiled into the cache."""
+    monkeypatch.setenv("RIGIDSYM_CACHE", str(tmp_path / "cache"))
+    built = _ext.package_module()
+    if built is None:
+        pytest.skip("the package was installed without its compiled module")
+    assert _build.embedded_hash(built) != _build.sources_hash(user_dir / "c")
+    monkeypatch.setattr(_ext, "_MODULES", {})
+    loaded = _ext.load(user_dir, package=True)      # as if user_dir were generated/
+    err = capfd.readouterr().err
+    assert "stale" in err and "rigidsym: compiling" in err
+    assert loaded.origin == "cache" and loaded.file != built
+    assert loaded.module.sources == _build.sources_hash(user_dir / "c")
+
+
+def test_embedded_hash_is_read_without_loading(tmp_path):
+    f = tmp_path / "m.so"
+    f.write_bytes(b"\0junk rigidsym-sources:" + b"a" * 64 + b"\0more")
+    assert _build.embedded_hash(f) == "a" * 64
+    f.write_bytes(b"no tag here")
+    assert _build.embedded_hash(f) is None
+
+
+def test_cache_key_names_cpu_features_not_the_host(monkeypatch, tmp_path):
+    monkeypatch.setenv("RIGIDSYM_CACHE", str(tmp_path))
+    gdir = _ext.generated_dir()
+    a = (_ext.entry(gdir), _ext.entry(gdir, native=True))
+    monkeypatch.setattr("platform.node", lambda: "another-host")
+    assert (_ext.entry(gdir), _ext.entry(gdir, native=True)) == a
+    monkeypatch.setattr(_build, "cpu_features", lambda: "a different CPU")
+    assert _ext.entry(gdir) == a[0] and _ext.entry(gdir, native=True) != a[1]
+
+
+def test_default_build_never_uses_march_native(monkeypatch):
+    monkeypatch.delenv("RIGIDSYM_PATHS", raising=False)
+    flags = [f for p in _build.default_paths() for f in p.flags]
+    assert "-march=native" not in flags
+    if _build._x86():
+        assert [p.name for p in _build.default_paths()] == ["x86-64-v3", "x86-64-v2"]
+
+
+_DISPATCH = """
+    import sys
+    sys.path.insert(0, {tests!r})
+    import numpy as np
+    import test_kernels as T
+    from rigidsym import kernels
+    kernels.use_backend("c")
+    xs = np.load({inputs!r})
+    got = {{}}
+    for name in T.PUBLIC + T.EULER:
+        arrays = [xs[f"{{name}}/{{i}}"] for i in range(len(T.AVAILABLE[name].args))]
+        got[name] = T.run(name, arrays, "c")[0]
+    np.savez({out!r}, **got)
+    print(kernels.build_info()["path"])
+"""
+
+
+@needs_cc
+def test_forced_baseline_agrees_with_the_dispatched_path(tmp_path):
+    """RIGIDSYM_DISPATCH=baseline runs the x86-64-v2 objects: every kernel agrees with the
+    dispatched path (normwise, as C and NumPy must) and with the 50-digit reference."""
+    sys.path.insert(0, str(REPO / "tests"))
+    import test_kernels as T
+
+    info = K.build_info()
+    if len(info["paths"]) < 2:
+        pytest.skip(f"one path compiled ({info['paths']})")
+    K.use_backend("c")
+    # the same inputs in both processes (the rotations among them come from a kernel, whose
+    # last bits depend on the path; near phi = pi that would move the outputs by 1e-4)
+    cases = {name: T.inputs(T.AVAILABLE[name], 64, seed=5) for name in T.PUBLIC + T.EULER}
+    np.savez(tmp_path / "in.npz", **{f"{n}/{i}": a for n, arrays in cases.items()
+                                     for i, a in enumerate(arrays)})
+    env = _env(tmp_path / "cache", RIGIDSYM_DISPATCH="baseline")
+    p = _python(_DISPATCH.format(tests=str(REPO / "tests"), inputs=str(tmp_path / "in.npz"),
+                                 out=str(tmp_path / "b.npz")), env, tmp_path)
+    out, err = p.communicate(timeout=900)
+    assert p.returncode == 0, err
+    assert out.split()[-1] == info["paths"][-1]          # the baseline ran there
+    base = np.load(tmp_path / "b.npz")
+    for name, arrays in cases.items():
+        disp = T.run(name, arrays, "c")[0]
+        assert T.rel_err(base[name], disp).max() <= 1e-14, name
+        if name in ("N_matrix", "rotation_from_natural_invariants", "screw_axis_point"):
+            ref = T.ref_eval(name, arrays)
+            assert T.rel_err(base[name], ref).max() <= T.TOL, name
+
+
+def test_dispatch_env_names_an_unknown_path(tmp_path):
+    if not HAVE_CC and _ext.package_module() is None:
+        pytest.skip("no compiled module")
+    env = _env(tmp_path / "cache", RIGIDSYM_DISPATCH="pentium-pro")
+    p = _python("import warnings; warnings.simplefilter('error')\n"
+                "from rigidsym import kernels\nkernels.build_info()", env, tmp_path)
+    _, err = p.communicate(timeout=600)
+    assert p.returncode != 0 and "RIGIDSYM_DISPATCH" in err and "pentium-pro" in err
+
+
+def test_build_info_reports_the_path_in_use(backend):
+    if backend != "c":
+        pytest.skip("C only")
+    info = K.build_info()
+    assert info["path"] in info["paths"] and Path(info["file"]).is_file()
+    assert info["origin"] in ("wheel", "editable build", "cache", "cache (native)")
+    assert info["sources"] == _build.sources_hash(_ext.generated_dir() / "c")
+    if info["libmvec"] and info["path"] == "x86-64-v3":
+        assert "_ZGVdN4v_sin" in info["libmvec"]
+
+
+# -- item 6: normalising kernels near the overflow threshold (sqrt(DBL_MAX) = 1.34e154) --
+
+_NORMALISING = {   # kernel -> (args given a direction d and a scale s, unit output slice)
+    "plucker_from_points": (lambda d, s: (np.zeros(3), s * d), lambda r: r[:3]),
+    "instant_screw_axis": (lambda d, s: (s * d, np.zeros(3), np.zeros(3)),
+                           lambda r: r[2][:3]),
+    "wrench_axis": (lambda d, s: (np.concatenate([np.zeros(3), s * d]), np.zeros(3)),
+                    lambda r: r[2][:3]),
+}
+
+
+@settings(max_examples=40, deadline=None,
+          suppress_health_check=[HealthCheck.function_scoped_fixture])
+@given(name=st.sampled_from(sorted(_NORMALISING)),
+       exponent=st.floats(150.0, 160.0),
+       d=st.lists(st.floats(-1.0, 1.0), min_size=3, max_size=3))
+def test_normalised_vectors_near_overflow_are_right_or_raise(backend, name, exponent, d):
+    d = np.array(d)
+    if np.abs(d).max() < 1e-3:
+        return
+    s = 10.0 ** exponent
+    args, unit = _NORMALISING[name]
+    try:
+        res = getattr(K, name)(*args(d, s))
+    except K.NonFiniteResultError as exc:
+        assert np.abs(s * d).max() * np.sqrt(3) > 1e153, exc    # only near the threshold
+        return
+    want = d / np.linalg.norm(d)
+    np.testing.assert_allclose(unit(res), want, rtol=0, atol=1e-14)
+
+
+def test_plucker_from_points_of_the_probe_raises_not_zeros(backend):
+    with pytest.raises(K.NonFiniteResultError, match="p2"):
+        K.plucker_from_points(p1=[0, 0, 0], p2=[1e155, 2e155, 2e155])
+
+
+def test_n_tilde_dot_names_phi_at_its_singular_set(backend):
+    with pytest.raises(K.SingularConfigurationError, match="phi = 0") as err:
+        K.N_tilde_dot(e=[0.0, 0.6, 0.8], phi=0.0, omega=[0.1, 0.2, 0.3])
+    assert err.value.argument == "phi"
+
+
+@needs_cc
+def test_native_build_is_used_when_present(user_dir, tmp_path):
+    cache = tmp_path / "cache"
+    p = subprocess.run([sys.executable, "-m", "rigidsym", "build-c", "--native",
+                        str(user_dir)], env=_env(cache), capture_output=True, text=True,
+                       timeout=600)
+    assert p.returncode == 0, p.stderr
+    assert "rigidsym: compiling" in p.stderr and "native" in p.stderr
+    p = _python(_LOAD.format(d=str(user_dir), out=str(tmp_path / "w.npy")), _env(cache),
+                tmp_path)
+    out, err = p.communicate(timeout=600)
+    assert p.returncode == 0, err
+    assert "compiling" not in err
+    assert json.loads(out.splitlines()[-1])["origin"] == "cache (native)"
+    p = subprocess.run([sys.executable, "-m", "rigidsym", "build-c", "--info",
+                        str(user_dir)], env=_env(cache), capture_output=True, text=True,
+                       timeout=600)
+    assert p.returncode == 0, p.stderr
+    info = json.loads(p.stdout)
+    assert info["paths"] == ["native"] and "-march=native" in info["flags"]
+
+
+def test_loading_a_user_directory_never_loads_the_package_kernels(user_dir, tmp_path,
+                                                                    monkeypatch):
+    from rigidsym.kernels import _state
+
+    calls = []
+    real = _ext.load
+
+    def spy(gdir, package=False):
+        calls.append(package)
+        return real(gdir, package)
+    monkeypatch.setenv("RIGIDSYM_CACHE", str(tmp_path / "cache"))
+    monkeypatch.setattr(_ext, "load", spy)
+    monkeypatch.setitem(_state.STATE, "backend", None)
+    monkeypatch.setattr(_state.builtin(), "_clib", None)
+    k = K.load(user_dir)
+    monkeypatch.setattr(k._SPACE, "_clib", None)
+    w = k.rescaled([1.0, 2.0, 3.0], 2.0)
+    np.testing.assert_array_equal(w, [2.0, 4.0, 6.0])
+    assert True not in calls
+    assert calls == [False]
