@@ -58,7 +58,7 @@ def test_markdown_evidence_latex_is_maths(latex_evidence):
 
 def test_counterexample_in_book_symbols_with_the_point_folded(latex_evidence):
     page = to_html([latex_evidence])
-    block = page.split("<b>Counterexample</b>")[1].split("How it was checked")[0]
+    block = page.split(">Counterexample</a></b>")[1].split("How it was checked")[0]
     assert "<th>symbol</th>" in block
     assert '<details class="chosen"><summary>How the point was chosen</summary>' in block
     assert 'href="#word-parametrisation"' in block

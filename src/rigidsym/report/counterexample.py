@@ -122,8 +122,7 @@ def text_lines(ce: dict, sides: tuple[str, str], width: int) -> list[str]:
         sides: the failing member's two sides in book notation (:func:`sides_of`).
         width: the line width to fit (breaks at spaces).
     """
-    out = _wrap("Counterexample: the failing member at an exact point, in the book's "
-                "symbols (exact values; decimals after ≈):", width, "")
+    out = _wrap("Counterexample, in the book's symbols (exact; decimals after ≈):", width, "")
     if ce.get("symbols"):
         for s in ce["symbols"]:
             out += _symbol_lines(s, width, "  ")
