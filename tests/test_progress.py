@@ -207,3 +207,29 @@ def test_durations_survive_a_corrupt_file(monkeypatch, tmp_path):
     assert _progress.load_durations("checks") == {}
     _progress.save_durations("checks", {"3.16": 1.25})
     assert _progress.load_durations("checks") == {"3.16": 1.25}
+
+
+def test_shown_estimate_moves_smoothly(monkeypatch):
+    """One surprising id does not make the shown estimate jump: it moves a third of the way
+    towards a new estimate, and otherwise counts down."""
+    clock = [0.0]
+    monkeypatch.setattr(_progress.time, "perf_counter", lambda: clock[0])
+    ph = _progress.Phase(Reporter("x", enabled=False), "y", 10)
+    ph.estimate(60.0)
+    assert ph._eta == 60.0
+    clock[0] = 10.0
+    ph.estimate(50.0)                     # as counted down: unchanged
+    assert ph._eta == pytest.approx(50.0)
+    clock[0] = 11.0
+    ph.estimate(200.0)                    # a slow id: a third of the way, not 200
+    assert ph._eta == pytest.approx(49.0 + (200.0 - 49.0) / 3)
+
+
+def test_first_run_estimate_does_not_explode(monkeypatch, tmp_path):
+    """No earlier durations: one slow first id does not multiply the estimate by the count."""
+    monkeypatch.setenv("RIGIDSYM_CACHE", str(tmp_path))
+    est = runner._Estimate([f"i{k}" for k in range(50)], jobs=2)
+    est.actual["i0"] = 12.0               # the first id is slow
+    prior_only = runner._Estimate([f"i{k}" for k in range(50)], jobs=2).left({})
+    naive = 49 * 12.0 / 2                 # every id as slow as the first
+    assert prior_only < est.left({}) < naive / 4

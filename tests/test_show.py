@@ -64,7 +64,8 @@ def test_3_148_counterexample_sides(shown):
 def test_3_148_counterexample_in_the_book_symbols(shown):
     """M_A and M_C, with m, a and c, in the book's symbols; the point masses' own variables
     (μ, s_i) only under "How the point was chosen", with the sentence on them."""
-    t = shown["3.148"].split("Counterexample:")[1].split("Corrected form")[0]
+    t = shown["3.148"].split("Counterexample, in the book's symbols")[1] \
+        .split("Corrected form")[0]
     symbols, chosen = t.split("How the point was chosen")
     for name in ("M_A = [", "M_C = [", "m = ", "a = [", "c = ["):
         assert f"\n  {name}" in symbols, name

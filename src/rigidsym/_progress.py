@@ -24,6 +24,8 @@ __all__ = ["Reporter", "Phase", "load_durations", "save_durations", "format_seco
 
 #: refreshes per second of the live display (the issue's floor is one)
 REFRESH = 4
+#: the share of a new estimate taken at once (the rest follows over the next updates)
+SMOOTHING = 1 / 3
 
 
 def format_seconds(s: float) -> str:
@@ -45,6 +47,7 @@ class Phase:
         self.summary = ""
         self.t0 = time.perf_counter()
         self._eta: float | None = None
+        self._eta_at = self.t0
         self._task = None
 
     def label(self, text: str) -> None:
@@ -60,8 +63,14 @@ class Phase:
             self.reporter.bar.update(self._task, advance=n, **kw)
 
     def estimate(self, seconds_left: float | None) -> None:
-        """The caller's estimate of the time left (``None``: unknown)."""
-        self._eta = seconds_left
+        """The caller's estimate of the time left (``None``: unknown), smoothed: the shown
+        value moves a third of the way from where the last one has counted down to, so one
+        surprising id does not make it jump."""
+        now = time.perf_counter()
+        if seconds_left is not None and self._eta is not None:
+            counted = max(self._eta - (now - self._eta_at), 0.0)
+            seconds_left = counted + SMOOTHING * (seconds_left - counted)
+        self._eta, self._eta_at = seconds_left, now
         if self._task is not None:
             text = "" if seconds_left is None else f"≈ {format_seconds(seconds_left)} left"
             self.reporter.bar.update(self._task, eta=text)

@@ -15,6 +15,8 @@ __all__ = ["run_checks", "verdict_words"]
 DURATIONS = "checks"
 #: the seconds assumed for an id never timed before, until some id of the run finishes
 _PRIOR = 0.5
+#: how many ids' worth of weight the prior keeps in the mean of a run's first ids
+_SHRINK = 5
 _STARTED = None  # the start queue, in a worker (set by the pool's initializer)
 
 
@@ -50,9 +52,10 @@ class _Estimate:
     def _pred(self, i: str) -> float:
         if i in self.before:
             return self.before[i] * self._scale()
-        if self.actual:
-            return sum(self.actual.values()) / len(self.actual)
-        return _PRIOR
+        # never timed: this run's mean so far, shrunk towards the prior while it rests on
+        # few ids (one slow id first must not multiply the estimate by ten)
+        n = len(self.actual)
+        return (sum(self.actual.values()) + _SHRINK * _PRIOR) / (n + _SHRINK)
 
     def _scale(self) -> float:
         known = [i for i in self.actual if i in self.before and self.before[i] > 0.05]
