@@ -130,7 +130,8 @@ def solve(sequence: str = BOOK_SEQUENCE) -> Solution:
         ID, TITLE, STATEMENT, CITATION,
         given={"eta": ETA, "sequence": seq, "sequences": ", ".join(SEQUENCES)},
         assumptions=[
-            "Exercise 2.19 is not in the text we have: its Euler angles are taken as the "
+            "Exercise 2.19 is in chapter 2, which our source (chapter 3 only) lacks: its Euler "
+            "angles are taken as the "
             "intrinsic Z-X-Z sequence Q = R_Z(theta) R_X(phi) R_Z(psi), the classical "
             "(Goldstein) convention and the one whose singularity the book's remark about "
             "non-invertible W describes; all twelve sequences are solved as well.",

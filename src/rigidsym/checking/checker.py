@@ -25,6 +25,7 @@ from dataclasses import asdict, dataclass, field
 from fractions import Fraction
 
 from rigidsym.checking.balls import round_up
+from rigidsym.checking.bookpoint import describe_point
 from rigidsym.checking.correction import RepairSettings, correct
 from rigidsym.checking.evidence import (
     NUMERIC_DIGITS,
@@ -112,10 +113,17 @@ class _RelOutcome:
     ball: tuple | None = None
 
 
-def decide_rel(rel: Rel, model: dict, seed: int) -> _RelOutcome:
-    """Decide one relation exactly (shape check first, then the zero test)."""
+def decide_rel(rel: Rel, model: dict, seed: int, st: Statement | None = None) -> _RelOutcome:
+    """Decide one relation exactly (shape check first, then the zero test); a
+    counterexample is described in the book symbols of ``st`` when it is given."""
     ls, rs = shape_of(rel.lhs), shape_of(rel.rhs)
     lhs, rhs = explicit(rel.lhs, model), explicit(rel.rhs, model)
+    describe = None
+    if st is not None:
+        rels = st.printed + st.claims + (st.corrected or [])
+
+        def describe(plan, pt):
+            return describe_point(rel, model, rels, plan, pt, st.parametrisation)
     if ls != rs:
         plan = make_plan(_entries(lhs) + _entries(rhs))
         rng = random.Random(seed)
@@ -123,7 +131,9 @@ def decide_rel(rel: Rel, model: dict, seed: int) -> _RelOutcome:
         for _ in range(100):
             pt = {p: Fraction(rng.randint(-3, 3), rng.randint(1, 3)) for p in plan.params}
             try:
-                ce = _counterexample(lhs, rhs, pt, seed)[0]
+                ce, cplan, cpt = _counterexample(lhs, rhs, pt, seed)
+                if describe is not None:
+                    ce.update(describe(cplan, cpt))
                 break
             except ZeroDivisionError:
                 continue
@@ -133,6 +143,8 @@ def decide_rel(rel: Rel, model: dict, seed: int) -> _RelOutcome:
     zr = decide_zero(diff, seed=seed)
     if zr.zero is False:
         ce, plan, pt = _counterexample(lhs, rhs, zr.witness, seed)
+        if describe is not None:
+            ce.update(describe(plan, pt))
         try:
             ball = counterexample_ball(lhs, rhs, plan, pt)
         except Unsupported as exc:
@@ -225,7 +237,8 @@ def _check(eq: Equation, t0: float, settings: RepairSettings) -> Result:
             verdict, method, detail = ("undecided", "undecided",
                                        "a claim attached to the definition was not verified")
     else:
-        outs = [decide_rel(r, st.model, seed + i) for i, r in enumerate(st.printed + st.claims)]
+        outs = [decide_rel(r, st.model, seed + i, st)
+                for i, r in enumerate(st.printed + st.claims)]
         members = [member_record(r, "printed" if i < len(st.printed) else "claim", o)
                    for i, (r, o) in enumerate(zip(st.printed + st.claims, outs, strict=True))]
         zero, method, detail = _combine(outs)

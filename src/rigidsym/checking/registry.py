@@ -97,6 +97,11 @@ class Statement:
         defines: names of the symbols a definition introduces.
         claims: extra relations a definition or claim asserts that must hold (e.g. the unit
             norm of a direction just defined).
+        parametrisation: one sentence on how the model writes its own free variables
+            (those that are not book symbols), shown with a counterexample under "how the
+            point was chosen", e.g. ``"Q(t) is the rotation of the quaternion q + t u, so
+            that QᵀQ = 1 holds exactly"``. Constrained atoms (unit vectors, rotations,
+            angles) are described without it.
     """
 
     printed: list[Rel]
@@ -105,6 +110,7 @@ class Statement:
     corrected: list[Rel] | None = None
     defines: tuple[str, ...] = ()
     claims: list[Rel] = field(default_factory=list)
+    parametrisation: str = ""
 
 
 @dataclass(frozen=True)
@@ -247,9 +253,9 @@ def equation(eq_id: str, title: str, *, section: str | None = None,
                        singular, module, fn.__qualname__, _where(fn), repair_budget)
         old = REGISTRY.get(eq_id)
         if old is not None and (old.module, old.function) != (new.module, new.function):
-            raise ValueError(f"equation {eq_id} is declared twice: in {old.module}."
-                             f"{old.function} ({old.where}) and in {new.module}."
-                             f"{new.function} ({new.where})")
+            raise ValueError(f"equation {eq_id} is declared twice: by {old.function} at "
+                             f"{old.where} and by {new.function} at {new.where}; rename one "
+                             f"of the ids")
         # the same function declared again (a notebook cell run twice): the new one replaces it
         REGISTRY[eq_id] = new
         _BUILT.pop(eq_id, None)
@@ -367,8 +373,9 @@ def select(ids: list[str] | None = None, sections: list[str] | None = None,
             continue
         parts = [k for k in REGISTRY if re.fullmatch(re.escape(i) + "[a-e]", k)]
         if not parts:
-            known = ("a loaded user module's ids" if is_user_id(i) else
-                     "3.1 ... 3.148 and claims such as thm3.2.1")
+            known = ("a loaded user module's ids: give its file with --module" if is_user_id(i)
+                     else "3.1 ... 3.148 and claims such as thm3.2.1; the ids of a section: "
+                          "rigidsym verify --section 3.4")
             raise BadInput(f"id: {i} holds no declared equation (known: {known})")
         out.update(parts)
     for s in sections or []:

@@ -92,7 +92,8 @@ class Solution:
         steps: the solution, in order.
         answers: the final answers by name (exact sympy values; matrices allowed).
         checks: machine checks of the answers (independent of the solution path).
-        assumptions: data not in the text we have (figures, chapter 2), and caveats.
+        assumptions: data not in the project's source (chapter 3 converted to text,
+            without its figures; chapter 2 is not in it), and caveats.
         status: ``"solved"``, ``"partial"`` or ``"ill-posed"`` (the data admit no
             answer; the steps end at the one that fails).
         extra: free-form rendered text (tables) appended after the answers.

@@ -17,8 +17,10 @@ import sys
 import sympy as sp
 
 from rigidsym.checking.checker import Result
-from rigidsym.checking.registry import Rel
+from rigidsym.checking.registry import Rel, is_user_id
 from rigidsym.printing import notation
+from rigidsym.printing.labels import label_text
+from rigidsym.report.counterexample import GLOSSARY_HINT, sides_of, text_lines
 from rigidsym.report.numeric import numeric_sentence
 from rigidsym.report.record import cause_words, counterexample_record, result_record
 
@@ -119,18 +121,10 @@ def _rel_lines(rel: Rel, width: int, indent: str) -> list[str]:
     return [f"{indent}{lhs} ="] + expr_lines(rel.rhs, width, indent + "    ")
 
 
-def _value_lines(label: str, text: str | None, width: int, indent: str) -> list[str]:
-    if text is None:
-        return [f"{indent}{label}: (the two sides have different shapes)"]
-    try:
-        v = sp.sympify(text)
-    except (sp.SympifyError, SyntaxError, TypeError):
-        return [f"{indent}{label}: {text}"]
-    head = f"{indent}{label}: "
-    one = notation.text(v)
-    if len(head) + len(one) <= width:
-        return [head + one]
-    return [head.rstrip()] + expr_lines(v, width, indent + "    ")
+def _failing_text(r: Result) -> str | None:
+    """The book text of the failing member (``ȧ∥ = (ȧ·ω)/‖ω‖²``), if it has one."""
+    return next((m["text"] for m in r.members
+                 if m["status"] == "fails" and m["role"] != "corrected"), None)
 
 
 def explain(r: Result, rels: dict[str, list[Rel]], where: str, width: int) -> str:
@@ -147,8 +141,9 @@ def explain(r: Result, rels: dict[str, list[Rel]], where: str, width: int) -> st
         Text, no line wider than ``width`` unless a single unbreakable token is.
     """
     rec = result_record(r, timings=False)
-    out = [f"({r.id}) {r.title}",
-           *_hard_wrap(f"Book: Sec. {r.section} · {r.kind} · declared in {where}", width, "")]
+    sec = f"Section {r.section}" if is_user_id(r.id) else f"Book: Sec. {r.section}"
+    out = [f"({r.id}) {label_text(r.title)}",
+           *_hard_wrap(f"{sec} · {r.kind} · declared in {where}", width, "")]
     verdict = f"Verdict: {r.verdict}"
     if r.verdict != r.expected:
         verdict += f" (EXPECTED {r.expected})"
@@ -161,7 +156,7 @@ def explain(r: Result, rels: dict[str, list[Rel]], where: str, width: int) -> st
     blocks = {"printed": [], "claim": [], "corrected": []}
     for m in r.members:
         rel = pools[m["role"]].pop(0) if pools.get(m["role"]) else None
-        head = f"  [{m['status']}] {m['label'] or m['role']}"
+        head = f"  [{m['status']}] {label_text(m['label']) or m['role']}"
         if m["status"] in ("holds", "fails"):
             head += f" ({m['method']})"
         blocks[m["role"]].append(head + ":")
@@ -177,19 +172,12 @@ def explain(r: Result, rels: dict[str, list[Rel]], where: str, width: int) -> st
     if r.verdict == "does-not-hold":
         cls, why = cause_words(r)
         fm = r.failing_member
-        out += [f"Fails: {'member ' + repr(fm) if fm else 'the equation (its only member)'}",
-                *_hard_wrap(f"Cause: {cls}. {why}", width, "  "), ""]
+        fails = f"member “{label_text(fm)}”" if fm else "the equation (its only member)"
+        out += [f"Fails: {fails}",
+                *_hard_wrap(f"Cause: {cls}. {label_text(why)}", width, "  "), ""]
         ce = counterexample_record(r.counterexample)
         if ce:
-            out.append("Counterexample (an exact rational point):")
-            for p in ce["point"]:
-                dec = f"   (≈ {p['decimal']})" if p["decimal"] and p["decimal"] != p["exact"] \
-                    else ""
-                out += _hard_wrap(f"{p['book']} = {p['exact']}{dec}", width, "  ")
-            out += _value_lines("left side there", ce["lhs"], width, "  ")
-            out += _value_lines("right side there", ce["rhs"], width, "  ")
-            out += _value_lines("residual (left - right)", ce.get("residual"), width, "  ")
-            out.append("")
+            out += text_lines(ce, sides_of(_failing_text(r)), width) + [""]
     if blocks["corrected"]:
         title = titles["corrected"]
         if r.correction == "found by search":
@@ -199,11 +187,12 @@ def explain(r: Result, rels: dict[str, list[Rel]], where: str, width: int) -> st
         out += [title] + blocks["corrected"] + [""]
     out += repair_lines(r, width)
     if r.singular:
-        out += _hard_wrap(f"Singular set: {r.singular}", width, "")
+        out += _hard_wrap(f"Singular set: {label_text(r.singular)}", width, "")
     if r.model:
         out += _hard_wrap("Model: " + "; ".join(r.model), width, "")
     if numeric_sentence(r.numeric):
         out += _hard_wrap(numeric_sentence(r.numeric), width, "")
+    out += _hard_wrap(GLOSSARY_HINT, width, "")
     return "\n".join(out)
 
 
