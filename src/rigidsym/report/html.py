@@ -18,10 +18,10 @@ from markupsafe import Markup
 from rigidsym.checking.checker import Result
 from rigidsym.printing import notation
 from rigidsym.printing.labels import label_text, latex_spans, latex_text
-from rigidsym.printing.mathml import latex_to_mathml
 from rigidsym.report.counterexample import html_view, sides_of
 from rigidsym.report.glossary import html_entries
 from rigidsym.report.markdown import anchor, sections
+from rigidsym.report.mathtext import math_or_text
 from rigidsym.report.numeric import numeric_sentence
 from rigidsym.report.record import CITATION, result_record, summary
 from rigidsym.report.repairs import errata_rows, repairs_view
@@ -34,17 +34,6 @@ def _env() -> Environment:
     return Environment(loader=PackageLoader("rigidsym.report", "templates"), autoescape=True,
                        undefined=StrictUndefined, keep_trailing_newline=True,
                        trim_blocks=False, lstrip_blocks=False)
-
-
-def math_or_text(latex: str | None, fallback: str | None, display: bool = True) -> Markup:
-    """MathML of ``latex``; the text ``fallback`` in ``<code>`` when there is no LaTeX or
-    the converter rejects it (a member too long to print, an unusual construct)."""
-    if latex:
-        try:
-            return Markup(latex_to_mathml(latex, display=display))
-        except ValueError:
-            pass
-    return Markup(f"<code>{html.escape(fallback or '(not shown: too long)')}</code>")
 
 
 def _value_mathml(text: str | None) -> Markup:

@@ -18,6 +18,8 @@ import re
 
 from markupsafe import Markup
 
+from rigidsym.report.mathtext import math_or_text
+
 __all__ = ["repair_fields", "marked_mathml", "repairs_view", "errata_rows",
            "markdown_repairs", "markdown_errata", "EDIT_CLASS"]
 
@@ -35,8 +37,6 @@ def repair_fields(r) -> dict:
 def marked_mathml(latex: str | None, fallback: str | None) -> Markup:
     """MathML of a repair's LaTeX with each ``\\boxed`` subterm as
     ``<mrow class="rigidsym-edit">``; the text in ``<code>`` when it does not convert."""
-    from rigidsym.report.html import math_or_text
-
     m = str(math_or_text(latex, fallback))
     m = _OPEN.sub(f'<mrow class="{EDIT_CLASS}">', m).replace("</menclose>", "</mrow>")
     return Markup(m)
