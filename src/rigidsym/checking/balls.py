@@ -88,7 +88,7 @@ def run_balls(prog: Program, leaves: list) -> list:
             for j in op[2:]:
                 acc = acc + vals[j]
         elif code == POW:
-            acc = vals[op[1]] ** op[2]
+            acc = _ipow(vals[op[1]], op[2])
         elif code == CONST:
             acc = arb(fmpq(op[1].numerator, op[1].denominator))
         elif code == LEAF:
@@ -106,6 +106,21 @@ def run_balls(prog: Program, leaves: list) -> list:
             raise Unsupported(f"operation {code}")
         vals[i] = acc
     return [vals[k] for k in prog.outputs]
+
+
+def _ipow(x, n: int):
+    """``x ** n`` by squarings: python-flint's ``arb ** int`` (0.9) returns nan for a ball
+    that contains 0, which made an ordinary point look singular at every precision."""
+    if n < 0:
+        return 1 / _ipow(x, -n)
+    acc, base = arb(1), x
+    while n:
+        if n & 1:
+            acc = acc * base
+        n >>= 1
+        if n:
+            base = base * base
+    return acc
 
 
 # --------------------------------------------------------------------------- exact bounds
