@@ -12,6 +12,7 @@ import os
 import subprocess
 import sys
 import textwrap
+import unicodedata
 from pathlib import Path
 
 import pytest
@@ -263,3 +264,39 @@ def test_a_trivial_candidate_is_no_repair():
     assert trivial(g, E.T, E.T) and not trivial(g, E.T, -E)
     assert trivial(g, (MA - MA)[:3, 3:], sp.ZeroMatrix(3, 3))
     assert not trivial(g, (MA - MC)[:3, 3:], sp.ZeroMatrix(3, 3))
+
+
+# --------------------------------------------------------------------------- the book
+COMMITTED = ROOT / "generated" / "report"
+
+
+def test_the_committed_report_has_the_books_repairs():
+    """The errata table covers the 11 does-not-hold ids; (3.59)'s brace has the one-edit sign
+    repair that is its declared correction (the JSON is what `show 3.59 --json` prints)."""
+    if not (COMMITTED / "chapter3.json").exists():
+        pytest.skip("no committed report in this checkout")
+    recs = {r["id"]: r for r in json.loads((COMMITTED / "chapter3.json").read_text(
+        encoding="utf-8"))["equations"]}
+    bad = sorted(i for i, r in recs.items() if r["verdict"] == "does-not-hold")
+    assert len(bad) == 11
+    md = (COMMITTED / "chapter3.md").read_text(encoding="utf-8")
+    table = md[md.index("## Errata: the smallest repairs"):]
+    table = table[:table.index("\n## ", 5)]
+    assert all(f"[({i})](#eq-{i})" in table for i in bad)
+    for i in bad:  # every failing member was searched and says what was found
+        assert recs[i]["correction"] == "declared" and recs[i]["repair_search"]
+    (brace,) = [x for x in recs["3.59"]["repairs"] if x["member"] == "pdot_perp brace"]
+    assert brace["kinds"] == ["flip-sign"] and brace["equals_declared"]
+    assert unicodedata.normalize("NFC", "⟦Ω² ȧ/‖ω‖²⟧") in \
+        unicodedata.normalize("NFC", brace["text"])  # ȧ: a and a combining dot
+    html = (COMMITTED / "chapter3.html").read_text(encoding="utf-8")
+    assert 'id="errata-table"' in html and '<mrow class="rigidsym-edit">' in html
+
+
+def test_show_prints_the_json_with_the_repair(capsys):
+    from rigidsym.cli import main
+
+    assert main(["show", "3.59", "--json"]) == 0
+    rec = json.loads(capsys.readouterr().out)
+    assert any(x["kinds"] == ["flip-sign"] and x["equals_declared"] and len(x["edits"]) == 1
+               for x in rec["repairs"])

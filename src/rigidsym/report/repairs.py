@@ -14,11 +14,12 @@ Core does not render anyway, so every ``menclose`` of a repair is rewritten).
 
 from __future__ import annotations
 
+import html
 import re
 
 from markupsafe import Markup
 
-from rigidsym.report.mathtext import math_or_text
+from rigidsym.printing.mathml import latex_to_mathml
 
 __all__ = ["repair_fields", "marked_mathml", "repairs_view", "errata_rows",
            "markdown_repairs", "markdown_errata", "EDIT_CLASS"]
@@ -37,7 +38,12 @@ def repair_fields(r) -> dict:
 def marked_mathml(latex: str | None, fallback: str | None) -> Markup:
     """MathML of a repair's LaTeX with each ``\\boxed`` subterm as
     ``<mrow class="rigidsym-edit">``; the text in ``<code>`` when it does not convert."""
-    m = str(math_or_text(latex, fallback))
+    try:
+        m = latex_to_mathml(latex, display=True) if latex else None
+    except ValueError:  # a form the converter rejects: its text instead
+        m = None
+    if m is None:
+        return Markup(f"<code>{html.escape(fallback or '(not shown: too long)')}</code>")
     m = _OPEN.sub(f'<mrow class="{EDIT_CLASS}">', m).replace("</menclose>", "</mrow>")
     return Markup(m)
 
