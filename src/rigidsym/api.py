@@ -89,7 +89,10 @@ class Result(_CheckerResult):
                 shown = f"<pre>{e(latex)}</pre>"
             rows.append(f"<div><i>{label}</i>{shown}</div>")
         if self.counterexample:
-            pt = ", ".join(f"{k} = {v}" for k, v in self.counterexample["point"].items())
+            # in the book's symbols when described (rigidsym.checking.bookpoint)
+            syms = self.counterexample.get("symbols") or []
+            pt = "; ".join(f"{x['symbol']} = {x['text']}" for x in syms) or \
+                ", ".join(f"{k} = {v}" for k, v in self.counterexample["point"].items())
             rows.append(f"<p>counterexample (exact): <code>{e(pt[:800])}</code></p>")
         if self.detail:
             rows.append(f"<p><small>{e(self.detail)}</small></p>")

@@ -14,18 +14,24 @@ anything: a failure to describe a symbol drops that symbol, never the verdict.
 
 from __future__ import annotations
 
-import re
-
 import sympy as sp
 from sympy.core.function import AppliedUndef
 
 from rigidsym.algebra.symbols import TIME, constrained_atom, constraint_of
 from rigidsym.checking.explicit import _entries, explicit, shape_of
+from rigidsym.checking.pointvalues import (
+    PointValues,
+    atom_base,
+    decimal,
+    decimal_text,
+    group_base,
+    plain_name,
+    point_atoms,
+)
 from rigidsym.printing import notation
-from rigidsym.zero.decide import Unsupported, evaluate
-from rigidsym.zero.plan import _TRIG
+from rigidsym.zero.decide import Unsupported
 
-__all__ = ["describe_point", "decimal_text", "MAX_ENTRIES"]
+__all__ = ["describe_point", "MAX_ENTRIES"]
 
 #: a symbol whose value has more entries than this is left out (the sides still show it)
 MAX_ENTRIES = 49
@@ -66,83 +72,6 @@ def describe_point(rel, model: dict, rels: list, plan, pt: dict, sentence: str =
         return {}
 
 
-# --------------------------------------------------------------------------- values
-class _Values:
-    """Exact values at the point: plan atoms by the plan's rules, angles consistent."""
-
-    def __init__(self, plan, pt: dict):
-        self.plan, self.pt = plan, pt
-        self.spt = {k: sp.Rational(v.numerator, v.denominator) for k, v in pt.items()}
-        self.memo: dict = {}
-        #: free atoms the failing member does not depend on (they cancel), set to 1/2
-        self.filled: list = []
-
-    def angle(self, a):
-        """The bare angle ``2M atan(t)`` of an angle atom."""
-        tau, M = self.plan.angles[a]
-        return 2 * M * sp.atan(self.spt[tau])
-
-    def atom(self, a):
-        hit = self.memo.get(a)
-        if hit is None:
-            if a in self.plan.angles:  # bare or not: phi = 2M atan(t), consistent
-                hit = self.angle(a)
-            elif a not in self.plan.rules and constraint_of(_atom_base(a)[0]) is None:
-                hit = sp.Rational(1, 2)  # any value: the member does not depend on it
-                self.filled.append(a)
-            else:
-                f = evaluate(a, self.plan, self.pt)
-                hit = sp.Rational(f.numerator, f.denominator)
-            self.memo[a] = hit
-        return hit
-
-    def scalar(self, e):
-        e = sp.sympify(e)
-        if not e.has(sp.pi, *self.plan.bare):
-            try:  # the fast exact evaluator, when it applies
-                f = evaluate(e, self.plan, self.pt)
-                return sp.Rational(f.numerator, f.denominator)
-            except (Unsupported, KeyError):
-                pass
-        if e.has(*_TRIG):
-            e = e.replace(lambda x: isinstance(x, _TRIG), lambda x: self._trig(x))
-        atoms = e.atoms(sp.Derivative) | e.atoms(AppliedUndef) | e.free_symbols
-        sub = {a: self.atom(a) for a in atoms if a != TIME}
-        out = e.xreplace(sub)
-        if out.free_symbols:
-            raise Unsupported(f"no value for {sorted(map(str, out.free_symbols))}")
-        return sp.radsimp(out) if out.has(sp.Pow) else out
-
-    def _trig(self, x):
-        f = evaluate(x, self.plan, self.pt)
-        return sp.Rational(f.numerator, f.denominator)
-
-    def value(self, v):
-        if isinstance(v, sp.MatrixBase):
-            return sp.ImmutableMatrix(v.rows, v.cols, [self.scalar(e) for e in v])
-        return self.scalar(v)
-
-
-def _decimal(x) -> str:
-    """Decimals of an exact number (8 significant digits), "" when it is an integer."""
-    if x.is_Integer:
-        return str(x)
-    v = float(sp.N(x, 17))
-    return f"{v:.8g}"
-
-
-def decimal_text(v) -> str:
-    """Decimals of an exact value in book layout (``[0.6; 1; 0.8]``), "" when exact is
-    already all integers."""
-    entries = _entries(v)
-    if all(sp.sympify(e).is_Integer for e in entries):
-        return ""
-    if isinstance(v, sp.MatrixBase):
-        return "[" + "; ".join(", ".join(_decimal(v[i, j]) for j in range(v.cols))
-                               for i in range(v.rows)) + "]"
-    return _decimal(v)
-
-
 def _symbol_entry(name_text: str, name_latex: str, value, angle, vals) -> dict:
     """``{"symbol", "latex", "exact", "text", "decimal"}``; for an angle (``angle`` its
     atom) also ``cos`` and ``sin``, exact."""
@@ -176,13 +105,6 @@ def _owner_map(model: dict) -> dict:
     return owners
 
 
-def _atom_base(a):
-    """``(base atom, derivative order)`` of a plan atom."""
-    if isinstance(a, sp.Derivative):
-        return a.expr, sum(int(k) for _, k in a.variable_count)
-    return a, 0
-
-
 def _group_value(c, k: int):
     """The value of a constrained group (or its k-th rate) as book layout: the rotation's
     3x3, a unit vector's column, an angle's atom."""
@@ -202,8 +124,8 @@ def _name(base_name: str, k: int, bold: bool) -> tuple[str, str]:
 
 
 def _describe(rel, model, rels, plan, pt, sentence) -> dict:
-    vals = _Values(plan, pt)
-    known = set(_point_atoms(plan)) | {TIME}
+    vals = PointValues(plan, pt)
+    known = set(point_atoms(plan)) | {TIME}
     shown: list[dict] = []
     seen: set = set()
 
@@ -237,8 +159,8 @@ def _describe(rel, model, rels, plan, pt, sentence) -> dict:
     owners = _owner_map(model)
     in_rels = set().union(*(_atoms_of(r.lhs) | _atoms_of(r.rhs) for r in rels)) if rels else set()
     params: list = []
-    for a in _point_atoms(plan):
-        base, k = _atom_base(a)
+    for a in point_atoms(plan):
+        base, k = atom_base(a)
         if a in owners:
             key = owners[a]
             add(key, notation.text(key), notation.latex(key), explicit(key, model),
@@ -262,19 +184,11 @@ def _describe(rel, model, rels, plan, pt, sentence) -> dict:
             add(s, notation.text(s), notation.latex(s), v)
     chosen = _chosen(plan, pt, params, sentence)
     if vals.filled:
-        names = sorted({notation.book_group(_plain(a)) for a in vals.filled})
+        names = sorted({notation.book_group(plain_name(a)) for a in vals.filled})
         chosen["text"] += (f" {', '.join(names)} cancel from the failing member, so any value "
                            f"does: 1/2 is taken for each entry.")
         chosen["text"] = chosen["text"].strip()
     return {"symbols": shown, "chosen": chosen}
-
-
-def _point_atoms(plan) -> list:
-    """The atoms the point gives a value: the plan's (π aside) and the angles that appear
-    only inside cos/sin."""
-    atoms = set(plan.rules) | set(plan.angles)
-    atoms.discard(sp.pi)
-    return sorted(atoms, key=sp.default_sort_key)
 
 
 def _has_atoms(v) -> bool:
@@ -296,26 +210,13 @@ def _atoms_of(x) -> set:
     return out
 
 
-def _plain(a) -> str:
-    base, _ = _atom_base(a)
-    return base.func.__name__ if isinstance(base, AppliedUndef) else base.name
-
-
-def _group_base(name: str) -> str:
-    """The ASCII name of the vector an entry atom belongs to (``s38_mu1`` -> ``mu``,
-    ``a_2`` -> ``a``), as :func:`rigidsym.printing.notation.book_group` reads it."""
-    name = notation._PRIVATE.sub("", name)
-    return re.sub(r"_\d+$", "", name) if re.search(r"_\d+$", name) else \
-        re.sub(r"(?<=[A-Za-z])\d+$", "", name)
-
-
 def _add_free(add, a, plan) -> None:
     """A free atom with its siblings of the same book name (``a_1..a_3`` -> ``a``)."""
-    base, k = _atom_base(a)
-    g = _group_base(_plain(a))
-    mates = sorted((x for x in plan.rules if x != sp.pi and _atom_base(x)[1] == k
-                    and constraint_of(_atom_base(x)[0]) is None
-                    and _group_base(_plain(x)) == g), key=sp.default_sort_key)
+    base, k = atom_base(a)
+    g = group_base(plain_name(a))
+    mates = sorted((x for x in plan.rules if x != sp.pi and atom_base(x)[1] == k
+                    and constraint_of(atom_base(x)[0]) is None
+                    and group_base(plain_name(x)) == g), key=sp.default_sort_key)
     value = sp.ImmutableMatrix(mates) if len(mates) > 1 else a
     add(("free", g, k), *_name(g, k, len(mates) > 1), value)
 
@@ -366,9 +267,9 @@ def _chosen(plan, pt, params: list, sentence: str) -> dict:
     words = [sentence.strip().rstrip(".")] if sentence.strip() else []
     groups: dict = {}
     for a in params:
-        groups.setdefault(notation.book_group(_plain(a)), []).append(a)
+        groups.setdefault(notation.book_group(plain_name(a)), []).append(a)
     rows = []
-    vals = _Values(plan, pt)
+    vals = PointValues(plan, pt)
     for g, atoms in groups.items():
         v = [vals.atom(a) for a in atoms]
         rows.append(_row(g, v))
@@ -377,16 +278,16 @@ def _chosen(plan, pt, params: list, sentence: str) -> dict:
                      + " the model's own variables (see the declaration): every value is "
                        "allowed, so the point is a valid configuration")
     seen_kinds = set()
-    for a in _point_atoms(plan):
-        c = constraint_of(_atom_base(a)[0])
+    for a in point_atoms(plan):
+        c = constraint_of(atom_base(a)[0])
         if c is None or (c.kind, c.name) in seen_kinds:
             continue
         seen_kinds.add((c.kind, c.name))
         n = notation.book_text(c.name)
         if c.kind == "angle":
-            if _atom_base(a)[0] not in plan.angles:
+            if atom_base(a)[0] not in plan.angles:
                 continue
-            M = plan.angles[_atom_base(a)[0]][1]
+            M = plan.angles[atom_base(a)[0]][1]
             words.append(_KIND_SENTENCE["angle"].format(n=n, d=2 * M, m=2 * M))
         else:
             words.append(_KIND_SENTENCE[c.kind].format(n=n) + (
@@ -406,7 +307,7 @@ def _chosen(plan, pt, params: list, sentence: str) -> dict:
 def _row(name: str, values: list) -> dict:
     """One variable (or a group of them) of the parametrisation: ``(2, -2, 1, 0)``."""
     exact = ", ".join(str(x) for x in values)
-    dec = "" if all(x.is_Integer for x in values) else ", ".join(_decimal(x) for x in values)
+    dec = "" if all(x.is_Integer for x in values) else ", ".join(decimal(x) for x in values)
     if len(values) > 1:
         exact, dec = f"({exact})", (f"({dec})" if dec else "")
     return {"name": name, "exact": exact, "decimal": dec}
