@@ -236,6 +236,9 @@ def test_show_html_markdown_and_json_carry_the_repairs(example):
                                       "printed_text", "printed_latex", "method",
                                       "failure_bound", "equals_declared"}
     assert rec["repair_search"][0]["budget"] == 5000
+    from rigidsym.api import Result
+
+    assert '<mrow class="rigidsym-edit">' in Result.of(r)._repr_html_()  # a notebook shows it
 
 
 def test_repairs_are_the_same_across_hash_seeds(example):
