@@ -172,6 +172,10 @@ def test_cli_flags(user, capsys):
     rec = json.loads(out.read_text())["equations"][0]
     assert rec["repair_search"][0]["budget"] == 3
     assert rec["repair_search"][0]["candidates"] <= 3
+    capsys.readouterr()
+    main(["verify", "--module", str(user), "mine:skew", "--no-cache"])
+    assert "(mine:skew): repair (flip the sign of the term E): Eᵀ = ⟦-E⟧" in \
+        capsys.readouterr().out
     with pytest.raises(SystemExit) as exc:
         main(["verify", "--module", str(user), "--repair-budget", "many"])
     assert exc.value.code == 2

@@ -48,6 +48,19 @@ def _table(results) -> None:
     console().print(t)
 
 
+def _repairs(results) -> None:
+    """One line per failing member: its first repair (``rigidsym show ID`` lists them all)."""
+    for r in results:
+        for s in getattr(r, "repair_search", None) or []:
+            who = f"({r.id})" + (f" {s['member']!r}" if s["member"] else "")
+            first = next((x for x in r.repairs if x["member"] == s["member"]), None)
+            if first is None:
+                print(f"{who}: {s['words']}")
+                continue
+            tag = ", the declared correction" if first["equals_declared"] else ""
+            print(f"{who}: repair ({'; then '.join(first['edits'])}{tag}): {first['text']}")
+
+
 def run(args) -> int:
     """``rigidsym verify``: decide equations, print a table, optionally write JSON."""
     from rigidsym.report.record import summary, to_json
@@ -59,6 +72,7 @@ def run(args) -> int:
     wall = time.perf_counter() - t0
     if not args.quiet:
         _table(results)
+        _repairs(results)
     if args.json:
         write_atomic(args.json, to_json(results))
     off = [r for r in results if r.verdict != r.expected]
