@@ -172,6 +172,10 @@ def test_cli_flags(user, capsys):
     rec = json.loads(out.read_text())["equations"][0]
     assert rec["repair_search"][0]["budget"] == 3
     assert rec["repair_search"][0]["candidates"] <= 3
+    capsys.readouterr()
+    main(["verify", "--module", str(user), "mine:skew", "--no-cache"])
+    assert "(mine:skew): repair (flip the sign of the term E): Eᵀ = ⟦-E⟧" in \
+        capsys.readouterr().out
     with pytest.raises(SystemExit) as exc:
         main(["verify", "--module", str(user), "--repair-budget", "many"])
     assert exc.value.code == 2
@@ -236,6 +240,9 @@ def test_show_html_markdown_and_json_carry_the_repairs(example):
                                       "printed_text", "printed_latex", "method",
                                       "failure_bound", "equals_declared"}
     assert rec["repair_search"][0]["budget"] == 5000
+    from rigidsym.api import Result
+
+    assert '<mrow class="rigidsym-edit">' in Result.of(r)._repr_html_()  # a notebook shows it
 
 
 def test_repairs_are_the_same_across_hash_seeds(example):

@@ -94,9 +94,25 @@ class Result(_CheckerResult):
             pt = "; ".join(f"{x['symbol']} = {x['text']}" for x in syms) or \
                 ", ".join(f"{k} = {v}" for k, v in self.counterexample["point"].items())
             rows.append(f"<p>counterexample (exact): <code>{e(pt[:800])}</code></p>")
+        rows += self._repairs_html()
         if self.detail:
             rows.append(f"<p><small>{e(self.detail)}</small></p>")
         return "<div class=\"rigidsym-result\">" + "".join(rows) + "</div>"
+
+
+    def _repairs_html(self) -> list[str]:
+        """The verified repairs (issue 23), the edited subterm highlighted."""
+        from rigidsym.report.repairs import EDIT_CLASS, marked_mathml
+
+        e = html.escape
+        out = []
+        for x in self.repairs:
+            tag = "; the declared correction" if x["equals_declared"] else ""
+            out.append(f"<div><i>repair: {e('; then '.join(x['edits']))} ({e(x['method'])}"
+                       f"{tag})</i>{marked_mathml(x['latex'], x['text'])}</div>")
+        if out:
+            out.insert(0, f"<style>.{EDIT_CLASS} {{ background: #ffe98a; }}</style>")
+        return out
 
 
 class Results(Sequence[Result]):

@@ -67,6 +67,7 @@ def _table(results) -> None:
     console().print(t)
 
 
+<<<<<<< HEAD
 def _plain(results) -> None:
     """One line per id, columns aligned, nothing cut (for pipes, logs and grep)."""
     rows = [(r.id, r.verdict if r.verdict == r.expected else
@@ -77,6 +78,19 @@ def _plain(results) -> None:
     w = [max(len(x[k]) for x in [head, *rows]) for k in range(4)]
     for row in [head, *rows]:
         print("  ".join(x.ljust(w[k]) for k, x in enumerate(row[:4])) + "  " + row[4])
+=======
+def _repairs(results) -> None:
+    """One line per failing member: its first repair (``rigidsym show ID`` lists them all)."""
+    for r in results:
+        for s in getattr(r, "repair_search", None) or []:
+            who = f"({r.id})" + (f" {s['member']!r}" if s["member"] else "")
+            first = next((x for x in r.repairs if x["member"] == s["member"]), None)
+            if first is None:
+                print(f"{who}: {s['words']}")
+                continue
+            tag = ", the declared correction" if first["equals_declared"] else ""
+            print(f"{who}: repair ({'; then '.join(first['edits'])}{tag}): {first['text']}")
+>>>>>>> repairs
 
 
 def run(args) -> int:
@@ -88,7 +102,13 @@ def run(args) -> int:
     results = run_checks(ids, jobs=args.jobs, progress=not args.quiet,
                          cache=not args.no_cache, **repair_options(args))
     wall = time.perf_counter() - t0
+<<<<<<< HEAD
     fmt = output_format(args)
+=======
+    if not args.quiet:
+        _table(results)
+        _repairs(results)
+>>>>>>> repairs
     if args.json:
         write_atomic(args.json, to_json(results))
     off = [r for r in results if r.verdict != r.expected]
