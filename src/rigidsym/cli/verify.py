@@ -67,7 +67,6 @@ def _table(results) -> None:
     console().print(t)
 
 
-<<<<<<< HEAD
 def _plain(results) -> None:
     """One line per id, columns aligned, nothing cut (for pipes, logs and grep)."""
     rows = [(r.id, r.verdict if r.verdict == r.expected else
@@ -78,7 +77,8 @@ def _plain(results) -> None:
     w = [max(len(x[k]) for x in [head, *rows]) for k in range(4)]
     for row in [head, *rows]:
         print("  ".join(x.ljust(w[k]) for k, x in enumerate(row[:4])) + "  " + row[4])
-=======
+
+
 def _repairs(results) -> None:
     """One line per failing member: its first repair (``rigidsym show ID`` lists them all)."""
     for r in results:
@@ -90,7 +90,6 @@ def _repairs(results) -> None:
                 continue
             tag = ", the declared correction" if first["equals_declared"] else ""
             print(f"{who}: repair ({'; then '.join(first['edits'])}{tag}): {first['text']}")
->>>>>>> repairs
 
 
 def run(args) -> int:
@@ -102,13 +101,7 @@ def run(args) -> int:
     results = run_checks(ids, jobs=args.jobs, progress=not args.quiet,
                          cache=not args.no_cache, **repair_options(args))
     wall = time.perf_counter() - t0
-<<<<<<< HEAD
     fmt = output_format(args)
-=======
-    if not args.quiet:
-        _table(results)
-        _repairs(results)
->>>>>>> repairs
     if args.json:
         write_atomic(args.json, to_json(results))
     off = [r for r in results if r.verdict != r.expected]
@@ -123,6 +116,7 @@ def run(args) -> int:
         return 1 if off else 0
     if not args.quiet:
         (_table if fmt == "table" else _plain)(results)
+        _repairs(results)
     print(line)
     for r in off:
         print(f"MISMATCH ({r.id}): computed {r.verdict}, expected {r.expected}: {r.detail} "
