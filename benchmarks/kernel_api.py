@@ -1,4 +1,5 @@
-"""Cost of the checked kernel API: call overhead at N = 1e3 and batch cost at N = 1e6.
+"""Cost of the checked kernel API: one sample (N = 1), call overhead at N = 1e3, batch cost
+at N = 1e6, and float32 against float64.
 
 Two measurements of the C backend, comparable across commits (it uses only
 ``kernels.use_backend``, ``kernels.batch_function``, the public kernels and ``kernels.json``):
@@ -14,6 +15,14 @@ Usage::
     PYTHONPATH=/tmp/old/src python benchmarks/kernel_api.py --save old.json
     python benchmarks/kernel_api.py --ab /tmp/old/generated --ab-json ab.json   # C A/B
     python benchmarks/kernel_api.py --compare old.json new.json --ab-json ab.json   # RESULTS.md
+
+Issue 20 (``--fast``, one run, side by side): N = 1 per call (checked, ``check=False``,
+``check=False`` with a reused ``out=``) of K1, K2, K3, ``instant_screw_axis``, K5 and
+``newton_euler_wrench`` from Python lists and floats, beside ``np.asarray`` of a 3-list,
+``np.vecdot`` of two and, when Pinocchio is installed, ``pin.exp3`` and ``SE3.act``; N = 1e3
+with caller outputs against the bare batch call; float32 against float64 at N = 1e6 (caller
+outputs) with the float32 error in ulp; ``--ab OLD --threads 1,2``: the C batch at N = 1e6
+against another build, geometric mean over the public kernels.
 
 Timing: thread CPU time, median over rounds of repeated calls for >= 20 ms, rounds
 interleaved over kernels so that a load change on the shared machine hits all of them;
@@ -97,7 +106,7 @@ def measure(rounds: int, batch: bool = True) -> dict:
     return {sec: {k: statistics.median(v) for k, v in d.items()} for sec, d in res.items()}
 
 
-def measure_ab(old_dir: Path, rounds: int) -> dict:
+def measure_ab(old_dir: Path, rounds: int, threads: int = 1) -> dict:
     """C batch at N = 1e6, old and new generated C loaded in this one process (both built
     by this checkout's driver, rigidsym.kernels._build, same flags; the old folder needs the
     extension's own C, c/rigidsym_module.c, of this version's generator) and timed
@@ -115,7 +124,7 @@ def measure_ab(old_dir: Path, rounds: int) -> dict:
         calls = {}
         for tag, mod in mods.items():
             k = mod.kernels.index(name)
-            calls[tag] = (lambda b=mod.batch, k=k, a=arrays: b(k, False, n, 1, *a))
+            calls[tag] = (lambda b=mod.batch, k=k, a=arrays: b(k, False, n, threads, *a))
         times: dict = {"old": [], "new": []}
         for _ in range(rounds):
             for tag in ("old", "new"):
@@ -123,6 +132,157 @@ def measure_ab(old_dir: Path, rounds: int) -> dict:
         for tag in times:
             res[tag][name] = min(times[tag])
     return res
+
+
+#: the kernels of issue 20's N = 1 bounds (K1, K2, K3, instant_screw_axis, K5, wrench)
+FAST = ["rotation_from_euler_rodrigues", "rotation_from_natural_invariants", "screw_axis_point",
+        "instant_screw_axis", "N_matrix", "newton_euler_wrench"]
+#: memory-bound (float32 target 1.6x) and trigonometric (1.3x) kernels of issue 20
+F32_TARGET = {"rotation_from_euler_rodrigues": 1.6, "instant_screw_axis": 1.6,
+              "newton_euler_wrench": 1.6, "rotation_from_natural_invariants": 1.3,
+              "screw_axis_point": 1.3, "N_matrix": 1.3}
+FAST_MARK = ("<!-- kernel-fast -->", "<!-- /kernel-fast -->")
+
+
+def _sample_lists(meta: dict) -> list:
+    """One sample of each argument as Python floats and lists (the N = 1 case)."""
+    rng = np.random.default_rng(5)
+    return [a.reshape(a.shape[1:]).tolist() if a.ndim > 1 else float(a[0])
+            for a in _inputs(meta, 1, rng)]
+
+
+def _median_us(f, rounds: int, budget: float = 0.05) -> float:
+    return statistics.median(_time(f, budget) * 1e6 for _ in range(rounds))
+
+
+def measure_fast(rounds: int, old_dir: Path | None = None) -> dict:
+    """N = 1, N = 1e3 and float32 of :data:`FAST`, one process, interleaved rounds."""
+    from rigidsym import kernels as K
+    from rigidsym.kernels import _state
+
+    assert K.use_backend("c") == "c", "C backend unavailable"
+    meta = _state.meta()
+    rng = np.random.default_rng(7)
+    calls: dict = {}
+    for name in FAST:
+        f, args = getattr(K, name), _sample_lists(meta[name])
+        out = f(*args)
+        out = tuple(o.copy() for o in out) if isinstance(out, tuple) else out.copy()
+        calls[("n1", name, "checked")] = lambda f=f, a=args: f(*a)
+        calls[("n1", name, "unchecked")] = lambda f=f, a=args: f(*a, check=False)
+        calls[("n1", name, "out")] = lambda f=f, a=args, o=out: f(*a, check=False, out=o)
+        ins = _inputs(meta[name], 1000, rng)
+        outs = [np.empty((1000,) + tuple(o["shape"])) for o in meta[name]["outputs"]]
+        o = outs[0] if len(outs) == 1 else tuple(outs)
+        bare = K.batch_function(name, "c")
+        calls[("n1e3", name, "bare")] = lambda b=bare, a=ins + outs: b(*a)
+        calls[("n1e3", name, "unchecked")] = lambda f=f, a=ins, o=o: f(*a, check=False, out=o)
+        calls[("n1e3", name, "checked")] = lambda f=f, a=ins, o=o: f(*a, out=o)
+    lst = [0.1, 0.2, 0.3]
+    calls[("ref", "np.asarray(3-list)", "")] = lambda: np.asarray(lst)
+    calls[("ref", "np.vecdot(3-list, 3-list)", "")] = lambda: np.vecdot(lst, lst)
+    try:
+        import pinocchio as pin
+
+        w, M, v = np.array(lst), pin.SE3.Random(), pin.Motion.Random()
+        calls[("ref", f"pin.exp3 (Pinocchio {pin.__version__})", "")] = lambda: pin.exp3(w)
+        calls[("ref", "pin.SE3.act(Motion)", "")] = lambda: M.act(v)
+    except ImportError:
+        pass
+    res: dict = {k: [] for k in calls}
+    for _ in range(rounds):
+        for k, f in calls.items():
+            res[k].append(_time(f, 0.02) * 1e6)
+    data = {"|".join(k): statistics.median(v) for k, v in res.items()}
+    data.update(measure_f32(rounds, old_dir=old_dir))
+    return data
+
+
+def measure_f32(rounds: int, n: int = 1_000_000, old_dir: Path | None = None) -> dict:
+    """float64 and float32 batch at N = 1e6 (caller outputs, one thread), and the float32
+    error in ulp against the float64 kernel at the same float32 inputs (whose own error is
+    ~1e-15, tests/test_kernels.py)."""
+    from rigidsym import kernels as K
+    from rigidsym.kernels import _state
+
+    meta = _state.meta()
+    rng = np.random.default_rng(9)
+    out: dict = {}
+    for name in F32_TARGET:
+        m = meta[name]
+        ins = [a.astype(np.float32) for a in _inputs(m, n, rng)]
+        ins64 = [a.astype(np.float64) for a in ins]
+        o32 = [np.empty((n,) + tuple(o["shape"]), np.float32) for o in m["outputs"]]
+        o64 = [np.empty((n,) + tuple(o["shape"])) for o in m["outputs"]]
+        b32 = K.batch_function(name, "c", threads=1, dtype=np.float32)
+        b64 = K.batch_function(name, "c", threads=1)
+        old = None
+        if old_dir is not None:    # the other build's float32 (float64 arithmetic inside)
+            from rigidsym.kernels import _ext
+
+            mod = _ext.load(old_dir).module
+            k = mod.kernels.index(name)
+            arrays = ins + [np.empty_like(o) for o in o32]
+            old = (lambda b=mod.batch, k=k, a=arrays: b(k, True, n, 1, *a))
+        t32, t64, told = [], [], []
+        for _ in range(rounds):
+            t64.append(_time(lambda b=b64, a=ins64 + o64: b(*a), 0.1) * 1e9 / n)
+            t32.append(_time(lambda b=b32, a=ins + o32: b(*a), 0.1) * 1e9 / n)
+            if old is not None:
+                told.append(_time(old, 0.1) * 1e9 / n)
+        if told:
+            out[f"f32|{name}|old_f32_ns"] = min(told)
+        got = np.concatenate([o.reshape(n, -1) for o in o32], axis=1).astype(np.float64)
+        ref = np.concatenate([o.reshape(n, -1) for o in o64], axis=1)
+        scale = np.abs(ref).max(axis=1)
+        err = np.abs(got - ref).max(axis=1) / np.where(scale == 0, 1, scale)
+        out[f"f32|{name}|f64_ns"] = min(t64)
+        out[f"f32|{name}|f32_ns"] = min(t32)
+        out[f"f32|{name}|ulp"] = float(np.nanmax(err) / np.finfo(np.float32).eps)
+    return out
+
+
+def fast_section(d: dict, note: str, ab: dict | None) -> str:
+    """The RESULTS.md section of issue 20 from :func:`measure_fast` (and ``--ab``)."""
+    lines = [FAST_MARK[0], "## Kernels cheap at every size (issue 20)", "", note, "",
+             "### N = 1 (us per call, median; Python lists and floats in, C backend)", "",
+             "| kernel | checked | check=False | check=False, reused out= |",
+             "|---|---:|---:|---:|"]
+    for name in FAST:
+        c, u, o = (d[f"n1|{name}|{w}"] for w in ("checked", "unchecked", "out"))
+        lines.append(f"| `{name}` | {c:.2f} | {u:.2f} | {o:.2f} |")
+    lines += ["", "| reference, same run | us per call |", "|---|---:|"]
+    lines += [f"| `{k.split('|')[1]}` | {v:.2f} |" for k, v in d.items()
+              if k.startswith("ref|")]
+    if not any("pin." in k for k in d):
+        lines.append("| Pinocchio | not installed |")
+    lines += ["", "### N = 1e3 (us per call, caller-provided out=, contiguous inputs)", "",
+              "| kernel | bare batch call | check=False | - bare | checked | / bare |",
+              "|---|---:|---:|---:|---:|---:|"]
+    for name in FAST:
+        b, u, c = (d[f"n1e3|{name}|{w}"] for w in ("bare", "unchecked", "checked"))
+        lines.append(f"| `{name}` | {b:.2f} | {u:.2f} | {u - b:+.2f} | {c:.2f} | "
+                     f"{c / b:.2f} |")
+    lines += ["", "### float32 at N = 1e6 (ns/sample, caller outputs, one thread)", "",
+              "| kernel | float64 | float32 | float64 / float32 | target | float32 before "
+              "(float64 arithmetic) | error (ulp of float32) |",
+              "|---|---:|---:|---:|---:|---:|---:|"]
+    for name, target in F32_TARGET.items():
+        a, b, e = (d[f"f32|{name}|{w}"] for w in ("f64_ns", "f32_ns", "ulp"))
+        o = d.get(f"f32|{name}|old_f32_ns")
+        lines.append(f"| `{name}` | {a:.2f} | {b:.2f} | {a / b:.2f} | {target} | "
+                     f"{'' if o is None else f'{o:.2f}'} | {e:.2f} |")
+    if ab:
+        lines += ["", "### C batch at N = 1e6, A/B in one process (ns/sample; geometric mean "
+                  "over the public kernels)", "", "| threads | old | new | new / old |",
+                  "|---:|---:|---:|---:|"]
+        for t, r in sorted(ab.items()):
+            ratios = [r["new"][k] / r["old"][k] for k in r["new"]]
+            g = float(np.exp(np.mean(np.log(ratios))))
+            go = float(np.exp(np.mean(np.log(list(r["old"].values())))))
+            gn = float(np.exp(np.mean(np.log(list(r["new"].values())))))
+            lines.append(f"| {t} | {go:.2f} | {gn:.2f} | {g:.3f} |")
+    return "\n".join(lines + [FAST_MARK[1]]) + "\n"
 
 
 def section(old: dict, new: dict, old_label: str, note: str, ab: dict | None = None) -> str:
@@ -171,7 +331,21 @@ def main(argv=None) -> int:
     p.add_argument("--old-label", default="f6c9ea0")
     p.add_argument("--note", default="measured on the shared 2-core machine under load")
     p.add_argument("--results", default=str(Path(__file__).with_name("RESULTS.md")))
+    p.add_argument("--fast", action="store_true",
+                   help="issue 20: N = 1, N = 1e3, float32 (and --ab with --threads) into "
+                        "RESULTS.md")
+    p.add_argument("--threads", default="1", help="--ab thread counts, e.g. 1,2")
     args = p.parse_args(argv)
+    if args.fast:
+        data = measure_fast(args.rounds, Path(args.ab) if args.ab else None)
+        ab = None
+        if args.ab:
+            ab = {int(t): measure_ab(Path(args.ab), args.rounds, int(t))
+                  for t in args.threads.split(",")}
+        if args.save:
+            Path(args.save).write_text(json.dumps({"fast": data, "ab": ab}, indent=1))
+        _write_section(Path(args.results), fast_section(data, args.note, ab), FAST_MARK)
+        return 0
     if args.save:
         data = measure(args.rounds, batch=not args.overhead_only)
         path = Path(args.save)
@@ -202,6 +376,20 @@ def main(argv=None) -> int:
         write_atomic(path, body)
         print(text)
     return 0
+
+
+def _write_section(path: Path, text: str, mark: tuple) -> None:
+    """Replace the section between ``mark`` in ``path`` (or append it); print it."""
+    from rigidsym._io import write_atomic
+
+    body = path.read_text(encoding="utf-8")
+    if mark[0] in body:
+        a, b = body.index(mark[0]), body.index(mark[1]) + len(mark[1]) + 1
+        body = body[:a] + text + body[b:]
+    else:
+        body = body.rstrip("\n") + "\n\n" + text
+    write_atomic(path, body)
+    print(text)
 
 
 if __name__ == "__main__":

@@ -4,9 +4,11 @@
 """The public kernels of this generated directory as real Python functions.
 
 One function per public kernel of ``kernels.json``: its parameters are the kernel's
-arguments, then the keyword-only parameters common to every kernel. Each call goes through
-the checked evaluation (validation, broadcasting, singular handling, C with NumPy fallback)
-that :func:`rigidsym.kernels.load` binds to this module. Import them through
+arguments, then the keyword-only parameters common to every kernel. Each call goes to its
+entry point, which :func:`rigidsym.kernels.load` binds to this module: the compiled one
+(validation and evaluation in C for the common cases) or the checked evaluation in Python
+(validation, broadcasting, singular handling, C with NumPy fallback), with the same results
+and errors. Import them through
 :mod:`rigidsym.kernels` (the package's own kernels) or ``rigidsym.kernels.load(DIR)``.
 """
 
@@ -54,15 +56,18 @@ __all__ = [
 #: the checked evaluation of this directory, set by rigidsym.kernels.load()
 _SPACE: Any = None
 
+
+class _Unbound:
+    def __getattr__(self, name: str) -> Any:
+        raise RuntimeError(f"{__name__}: load it with rigidsym.kernels.load(), not directly")
+
+
+#: the kernels' entry points, set by rigidsym.kernels.load(): the compiled module's (the
+#: common cases validated and computed in C), or the Python path's (rigidsym.kernels._entries)
+_F: Any = _Unbound()
+
 OutArrays = NDArray[np.float64] | tuple[NDArray[np.float64], ...] | None
 OnSingular = Literal["raise", "nan"]
-
-
-def _call(name: str, args: tuple, **keywords: Any) -> Any:
-    space = _SPACE
-    if space is None:  # bound by rigidsym.kernels.load(), which also pickles these kernels
-        raise RuntimeError(f"{__name__}: load it with rigidsym.kernels.load(), not directly")
-    return space.call(name, args, **keywords)
 
 
 def H_matrix(
@@ -99,11 +104,7 @@ def H_matrix(
     Notes:
         Generated; 11 operations; math hash d161921036f1484c.
     """
-    return _call("H_matrix", (e, phi),
-                 out=out,
-                 check=check,
-                 on_singular=on_singular,
-                 threads=threads)
+    return _F.H_matrix(e, phi, out, check, on_singular, threads)
 
 
 def H_matrix_dot(
@@ -142,11 +143,7 @@ def H_matrix_dot(
     Notes:
         Generated; 34 operations; math hash 0c036980272247c8.
     """
-    return _call("H_matrix_dot", (e, phi, omega),
-                 out=out,
-                 check=check,
-                 on_singular=on_singular,
-                 threads=threads)
+    return _F.H_matrix_dot(e, phi, omega, out, check, on_singular, threads)
 
 
 def H_tilde(
@@ -183,11 +180,7 @@ def H_tilde(
     Notes:
         Generated; 11 operations; math hash 394d6fafe3d12373.
     """
-    return _call("H_tilde", (e, phi),
-                 out=out,
-                 check=check,
-                 on_singular=on_singular,
-                 threads=threads)
+    return _F.H_tilde(e, phi, out, check, on_singular, threads)
 
 
 def H_tilde_dot(
@@ -226,11 +219,7 @@ def H_tilde_dot(
     Notes:
         Generated; 32 operations; math hash a75606877943bdb2.
     """
-    return _call("H_tilde_dot", (e, phi, omega),
-                 out=out,
-                 check=check,
-                 on_singular=on_singular,
-                 threads=threads)
+    return _F.H_tilde_dot(e, phi, omega, out, check, on_singular, threads)
 
 
 def L_matrix(
@@ -267,11 +256,7 @@ def L_matrix(
     Notes:
         Generated; 48 operations; math hash ad587ca95a235ac2.
     """
-    return _call("L_matrix", (e, phi),
-                 out=out,
-                 check=check,
-                 on_singular=on_singular,
-                 threads=threads)
+    return _F.L_matrix(e, phi, out, check, on_singular, threads)
 
 
 def L_matrix_dot(
@@ -310,11 +295,7 @@ def L_matrix_dot(
     Notes:
         Generated; 98 operations; math hash bc3db842eb2cf774.
     """
-    return _call("L_matrix_dot", (e, phi, omega),
-                 out=out,
-                 check=check,
-                 on_singular=on_singular,
-                 threads=threads)
+    return _F.L_matrix_dot(e, phi, omega, out, check, on_singular, threads)
 
 
 def L_tilde(
@@ -354,11 +335,7 @@ def L_tilde(
 
         Generated; 10 operations; math hash 224ea51c5b2204c1.
     """
-    return _call("L_tilde", (e, phi),
-                 out=out,
-                 check=check,
-                 on_singular=on_singular,
-                 threads=threads)
+    return _F.L_tilde(e, phi, out, check, on_singular, threads)
 
 
 def L_tilde_dot(
@@ -400,11 +377,7 @@ def L_tilde_dot(
 
         Generated; 91 operations; math hash 4a1f179ad0d8d060.
     """
-    return _call("L_tilde_dot", (e, phi, omega),
-                 out=out,
-                 check=check,
-                 on_singular=on_singular,
-                 threads=threads)
+    return _F.L_tilde_dot(e, phi, omega, out, check, on_singular, threads)
 
 
 def N_matrix(
@@ -444,11 +417,7 @@ def N_matrix(
 
         Generated; 31 operations; math hash 717c2182df7e8788.
     """
-    return _call("N_matrix", (e, phi),
-                 out=out,
-                 check=check,
-                 on_singular=on_singular,
-                 threads=threads)
+    return _F.N_matrix(e, phi, out, check, on_singular, threads)
 
 
 def N_matrix_dot(
@@ -490,11 +459,7 @@ def N_matrix_dot(
 
         Generated; 199 operations; math hash a50ef6111f8ca170.
     """
-    return _call("N_matrix_dot", (e, phi, omega),
-                 out=out,
-                 check=check,
-                 on_singular=on_singular,
-                 threads=threads)
+    return _F.N_matrix_dot(e, phi, omega, out, check, on_singular, threads)
 
 
 def N_tilde(
@@ -531,11 +496,7 @@ def N_tilde(
     Notes:
         Generated; 13 operations; math hash 27fa6424b1903ca5.
     """
-    return _call("N_tilde", (e, phi),
-                 out=out,
-                 check=check,
-                 on_singular=on_singular,
-                 threads=threads)
+    return _F.N_tilde(e, phi, out, check, on_singular, threads)
 
 
 def N_tilde_dot(
@@ -577,11 +538,7 @@ def N_tilde_dot(
 
         Generated; 79 operations; math hash b1c3eb794fbb8245.
     """
-    return _call("N_tilde_dot", (e, phi, omega),
-                 out=out,
-                 check=check,
-                 on_singular=on_singular,
-                 threads=threads)
+    return _F.N_tilde_dot(e, phi, omega, out, check, on_singular, threads)
 
 
 def inertia_at_point(
@@ -622,11 +579,7 @@ def inertia_at_point(
     Notes:
         Generated; 29 operations; math hash 421dca07df5d4b7a.
     """
-    return _call("inertia_at_point", (I_C, m, c, a),
-                 out=out,
-                 check=check,
-                 on_singular=on_singular,
-                 threads=threads)
+    return _F.inertia_at_point(I_C, m, c, a, out, check, on_singular, threads)
 
 
 def inertia_dyad_at_point(
@@ -667,11 +620,7 @@ def inertia_dyad_at_point(
     Notes:
         Generated; 36 operations; math hash 68258707f5bb9e80.
     """
-    return _call("inertia_dyad_at_point", (I_C, m, c, a),
-                 out=out,
-                 check=check,
-                 on_singular=on_singular,
-                 threads=threads)
+    return _F.inertia_dyad_at_point(I_C, m, c, a, out, check, on_singular, threads)
 
 
 def instant_screw_axis(
@@ -717,11 +666,7 @@ def instant_screw_axis(
 
         Generated; 56 operations; math hash bbbb3fe59daee446.
     """
-    return _call("instant_screw_axis", (omega, a, a_dot),
-                 out=out,
-                 check=check,
-                 on_singular=on_singular,
-                 threads=threads)
+    return _F.instant_screw_axis(omega, a, a_dot, out, check, on_singular, threads)
 
 
 def kinetic_energy(
@@ -762,11 +707,7 @@ def kinetic_energy(
     Notes:
         Generated; 33 operations; math hash 59e2107c6b1479ae.
     """
-    return _call("kinetic_energy", (I_C, m, omega, c_dot),
-                 out=out,
-                 check=check,
-                 on_singular=on_singular,
-                 threads=threads)
+    return _F.kinetic_energy(I_C, m, omega, c_dot, out, check, on_singular, threads)
 
 
 def moving_frame_acceleration(
@@ -813,11 +754,7 @@ def moving_frame_acceleration(
     Notes:
         Generated; 153 operations; math hash 9ff5554b1ab9fff0.
     """
-    return _call("moving_frame_acceleration", (o_ddot, Q, omega, omega_dot, rho_M, rho_dot_M, rho_ddot_M),
-                 out=out,
-                 check=check,
-                 on_singular=on_singular,
-                 threads=threads)
+    return _F.moving_frame_acceleration(o_ddot, Q, omega, omega_dot, rho_M, rho_dot_M, rho_ddot_M, out, check, on_singular, threads)
 
 
 def natural_invariants_from_rotation(
@@ -860,11 +797,7 @@ def natural_invariants_from_rotation(
 
         Generated; 172 operations; math hash 445339cc0a3a5a8f.
     """
-    return _call("natural_invariants_from_rotation", (Q,),
-                 out=out,
-                 check=check,
-                 on_singular=on_singular,
-                 threads=threads)
+    return _F.natural_invariants_from_rotation(Q, out, check, on_singular, threads)
 
 
 def newton_euler_wrench(
@@ -907,11 +840,7 @@ def newton_euler_wrench(
     Notes:
         Generated; 45 operations; math hash a4f13db2095d7265.
     """
-    return _call("newton_euler_wrench", (I_C, m, omega, omega_dot, c_ddot),
-                 out=out,
-                 check=check,
-                 on_singular=on_singular,
-                 threads=threads)
+    return _F.newton_euler_wrench(I_C, m, omega, omega_dot, c_ddot, out, check, on_singular, threads)
 
 
 def plucker_from_points(
@@ -951,11 +880,7 @@ def plucker_from_points(
 
         Generated; 24 operations; math hash 37ca360961ff48ba.
     """
-    return _call("plucker_from_points", (p1, p2),
-                 out=out,
-                 check=check,
-                 on_singular=on_singular,
-                 threads=threads)
+    return _F.plucker_from_points(p1, p2, out, check, on_singular, threads)
 
 
 def plucker_transfer(
@@ -994,11 +919,7 @@ def plucker_transfer(
     Notes:
         Generated; 15 operations; math hash 69d9b4ff4ea5cbea.
     """
-    return _call("plucker_transfer", (kappa_A, a, b),
-                 out=out,
-                 check=check,
-                 on_singular=on_singular,
-                 threads=threads)
+    return _F.plucker_transfer(kappa_A, a, b, out, check, on_singular, threads)
 
 
 def point_acceleration(
@@ -1041,11 +962,7 @@ def point_acceleration(
     Notes:
         Generated; 36 operations; math hash bba0e838d11c478a.
     """
-    return _call("point_acceleration", (a_ddot, omega, omega_dot, p, a),
-                 out=out,
-                 check=check,
-                 on_singular=on_singular,
-                 threads=threads)
+    return _F.point_acceleration(a_ddot, omega, omega_dot, p, a, out, check, on_singular, threads)
 
 
 def rotation_from_euler_rodrigues(
@@ -1080,11 +997,7 @@ def rotation_from_euler_rodrigues(
     Notes:
         Generated; 33 operations; math hash 59342dd978b76a46.
     """
-    return _call("rotation_from_euler_rodrigues", (eta,),
-                 out=out,
-                 check=check,
-                 on_singular=on_singular,
-                 threads=threads)
+    return _F.rotation_from_euler_rodrigues(eta, out, check, on_singular, threads)
 
 
 def rotation_from_natural_invariants(
@@ -1121,11 +1034,7 @@ def rotation_from_natural_invariants(
     Notes:
         Generated; 37 operations; math hash 3a598761ac6bf1a3.
     """
-    return _call("rotation_from_natural_invariants", (e, phi),
-                 out=out,
-                 check=check,
-                 on_singular=on_singular,
-                 threads=threads)
+    return _F.rotation_from_natural_invariants(e, phi, out, check, on_singular, threads)
 
 
 def screw_axis_point(
@@ -1169,11 +1078,7 @@ def screw_axis_point(
 
         Generated; 84 operations; math hash e89a638961851614.
     """
-    return _call("screw_axis_point", (e, phi, a, a_prime),
-                 out=out,
-                 check=check,
-                 on_singular=on_singular,
-                 threads=threads)
+    return _F.screw_axis_point(e, phi, a, a_prime, out, check, on_singular, threads)
 
 
 def screw_of_displacement(
@@ -1223,11 +1128,7 @@ def screw_of_displacement(
 
         Generated; 520 operations; math hash 24c2ead304ca194c.
     """
-    return _call("screw_of_displacement", (Q, a, a_prime),
-                 out=out,
-                 check=check,
-                 on_singular=on_singular,
-                 threads=threads)
+    return _F.screw_of_displacement(Q, a, a_prime, out, check, on_singular, threads)
 
 
 def twist_transfer(
@@ -1266,11 +1167,7 @@ def twist_transfer(
     Notes:
         Generated; 15 operations; math hash 0b921c0c211334f5.
     """
-    return _call("twist_transfer", (t_A, a, p),
-                 out=out,
-                 check=check,
-                 on_singular=on_singular,
-                 threads=threads)
+    return _F.twist_transfer(t_A, a, p, out, check, on_singular, threads)
 
 
 def twist_transfer_matrix(
@@ -1307,11 +1204,7 @@ def twist_transfer_matrix(
     Notes:
         Generated; 6 operations; math hash b790e8d04828afbd.
     """
-    return _call("twist_transfer_matrix", (a, p),
-                 out=out,
-                 check=check,
-                 on_singular=on_singular,
-                 threads=threads)
+    return _F.twist_transfer_matrix(a, p, out, check, on_singular, threads)
 
 
 def wrench_axis(
@@ -1355,11 +1248,7 @@ def wrench_axis(
 
         Generated; 59 operations; math hash 6e28211949601ec4.
     """
-    return _call("wrench_axis", (w_A, a),
-                 out=out,
-                 check=check,
-                 on_singular=on_singular,
-                 threads=threads)
+    return _F.wrench_axis(w_A, a, out, check, on_singular, threads)
 
 
 def wrench_transfer(
@@ -1398,11 +1287,7 @@ def wrench_transfer(
     Notes:
         Generated; 15 operations; math hash 719fe1e42bb6247d.
     """
-    return _call("wrench_transfer", (w_A, a, p),
-                 out=out,
-                 check=check,
-                 on_singular=on_singular,
-                 threads=threads)
+    return _F.wrench_transfer(w_A, a, p, out, check, on_singular, threads)
 
 
 def wrench_transfer_matrix(
@@ -1439,8 +1324,4 @@ def wrench_transfer_matrix(
     Notes:
         Generated; 6 operations; math hash d1200d894b2faa3f.
     """
-    return _call("wrench_transfer_matrix", (a, p),
-                 out=out,
-                 check=check,
-                 on_singular=on_singular,
-                 threads=threads)
+    return _F.wrench_transfer_matrix(a, p, out, check, on_singular, threads)

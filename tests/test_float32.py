@@ -2,9 +2,10 @@
 the error against the 50-digit reference evaluated at the *same* float32 inputs.
 
 Error measure of tests/test_kernels.py (max-norm of the difference over the max-norm of the
-reference, per sample). The kernels compute in float64 and round the outputs once, so the
-error is about half an ulp of float32 at random and adversarial points alike, far inside the
-16 ulp (1.9e-6) aimed at.
+reference, per sample). The C kernels compute in float32 arithmetic, in float64 only for the
+subexpressions their precision plan keeps there (issue 20; rigidsym.codegen.float32, named
+in each generated header): bounded at 2 ulp of float32, at random and adversarial points
+alike. The NumPy backend computes in float64 and rounds once (about half an ulp).
 """
 
 from __future__ import annotations
@@ -19,12 +20,12 @@ from rigidsym import kernels as K
 from rigidsym.kernels import _scale
 
 ULP32 = float(np.finfo(np.float32).eps)         # 2**-23
-#: random points: measured at most 0.49 ulp of float32 (float64 inside, one rounding), far
-#: inside the 16 ulp aimed at by issue 14; 1 ulp asserted
-TOL_RANDOM = ULP32
+#: random points: the float32 arithmetic of the C kernels, within 2 ulp of float32 (issue 20;
+#: the plans aim at 1.5 ulp at their own points); the only loosening of this test, from 1 ulp
+TOL_RANDOM = 2 * ULP32
 #: adversarial rows (phi -> 0, pi, ||omega|| -> 0, gimbal lock, Q near 1 and pi), at the same
-#: float32 inputs: measured at most 0.49 ulp too
-TOL_ADVERSARIAL = ULP32
+#: float32 inputs: the same 2 ulp
+TOL_ADVERSARIAL = 2 * ULP32
 N_ADV = len(ADV_PHI)
 
 
@@ -43,7 +44,7 @@ _CASES: dict = {}
 def _case(name: str, n: int):
     """float32 inputs (random rows, then the adversarial ones) and the 50-digit reference at
     exactly those values."""
-    if name not in _CASES:
+    if (name, n) not in _CASES:
         arrays = [a.astype(np.float32) for a in inputs(AVAILABLE[name], n, seed=11)]
         wide = [a.astype(np.float64) for a in arrays]
         try:
@@ -61,8 +62,8 @@ def _case(name: str, n: int):
             assert len(keep) >= n + N_ADV - 1, f"{name}: reference undefined at many rows"
             arrays = [a[keep] for a in arrays]
             ref = ref_eval(name, [w[keep] for w in wide])
-        _CASES[name] = arrays, ref
-    return _CASES[name]
+        _CASES[name, n] = arrays, ref
+    return _CASES[name, n]
 
 
 def _run32(name, arrays, backend):
@@ -84,6 +85,18 @@ def test_float32_error_bound_against_50_digits(name, backend):
     assert np.isfinite(err).all(), f"{name}: non-finite output"
     assert rnd.max() <= TOL_RANDOM, f"{name} [{backend}] random: {rnd.max():.3g}"
     assert adv.max() <= TOL_ADVERSARIAL, f"{name} [{backend}] adversarial: {adv.max():.3g}"
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("name", PUBLIC)
+def test_float32_error_bound_1000_points(name):
+    """Issue 20: 1000 random points and the adversarial ones per kernel, compiled float32."""
+    if K.use_backend("c") != "c":
+        pytest.skip("no C backend")
+    arrays, ref = _case(name, 1000)
+    err = rel_err(_run32(name, arrays, "c").astype(np.float64), ref)
+    assert np.isfinite(err).all(), f"{name}: non-finite output"
+    assert err.max() <= TOL_RANDOM, f"{name}: {err.max() / ULP32:.2f} ulp"
 
 
 def test_dtype_rules_nep50(backend):

@@ -237,3 +237,15 @@ print(k._SPACE.backend(), float(Q[0, 1]))
     assert p.stderr.count("RuntimeWarning") == 1, p.stderr
     assert "C compiler" in p.stderr and "rigidsym build-c" in p.stderr, p.stderr
     assert not cache.exists() or not any(cache.rglob("*.so"))
+
+
+def test_wheel_ships_the_exercise_notebooks(wheel, installed, tmp_path):
+    """Issue 22: the 21 notebooks are package data, and an installed wheel writes one."""
+    with zipfile.ZipFile(wheel) as z:
+        names = set(z.namelist())
+    for k in range(1, 22):
+        assert f"rigidsym/generated/notebooks/ex3_{k:02d}.ipynb" in names, k
+    assert "rigidsym/generated/notebooks/README.md" in names
+    p = _run(installed, tmp_path, "-m", "rigidsym", "exercise", "3.4", "--notebook", "ex.ipynb")
+    assert p.returncode == 0, p.stderr
+    assert json.loads((tmp_path / "ex.ipynb").read_text())["cells"][0]["cell_type"] == "markdown"

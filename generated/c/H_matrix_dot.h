@@ -10,11 +10,17 @@
  *
  * Time derivative of H_matrix along omega.
  * d/dt H_matrix(e(t), phi(t)) with e_dot, phi_dot from omega (the corrected form where the printed one does not hold)
+ *
+ * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
+ * measured at generation, rigidsym.codegen.float32; error within 0.877 ulp of float32,
+ * normwise, at its points). In double:
+ *   trig_0, x1, x2, x4, x7
  */
 #ifndef RIGIDSYM_H_MATRIX_DOT_H
 #define RIGIDSYM_H_MATRIX_DOT_H
 
 #include "rigidsym_common.h"
+
 
 /* One sample: returns nonzero when the sample is singular (division by an exact zero or a
  * non-finite result). Inputs and outputs are row-major per sample. */
@@ -113,6 +119,54 @@ static inline int rigidsym_H_matrix_dot_sample_trig(
 }
 
 
+/* One float32 sample: float inputs and outputs, arithmetic of the precision plan above. */
+static inline int rigidsym_H_matrix_dot_sample_trig_f32(
+    const float *RIGIDSYM_RESTRICT in_e,
+    const float *RIGIDSYM_RESTRICT in_phi,
+    const float *RIGIDSYM_RESTRICT in_omega,
+    const double trig_0,
+    const float trig_1,
+    float *RIGIDSYM_RESTRICT out_H_matrix_dot)
+{
+    const float e_0 = in_e[0];
+    const float e_1 = in_e[1];
+    const float e_2 = in_e[2];
+    (void)in_phi;
+    const float omega_0 = in_omega[0];
+    const float omega_1 = in_omega[1];
+    const float omega_2 = in_omega[2];
+    int singular = 0;
+    {
+        const double x1 = trig_0;
+        const double x2 = (0.25)*x1;
+        const float x3 = e_0*x2;
+        const double x4 = ((double)e_1)*x2;
+        const float x5 = e_2*x2;
+        const float x6 = -omega_0*x3 - omega_1*x4 - omega_2*x5;
+        const double x7 = (0.25)*((double)trig_1);
+        const float x8 = omega_0*x4 - omega_1*x3 + omega_2*x7;
+        const float x9 = -0.25f*e_2*omega_0*x1 + omega_1*x7 + omega_2*x3;
+        const float x10 = -x9;
+        const float x11 = -x8;
+        const float x12 = omega_0*x7 + omega_1*x5 - omega_2*x4;
+        const float x13 = -x12;
+        out_H_matrix_dot[0] = x6;
+        out_H_matrix_dot[1] = x8;
+        out_H_matrix_dot[2] = x10;
+        out_H_matrix_dot[3] = x11;
+        out_H_matrix_dot[4] = x6;
+        out_H_matrix_dot[5] = x12;
+        out_H_matrix_dot[6] = x9;
+        out_H_matrix_dot[7] = x13;
+        out_H_matrix_dot[8] = x6;
+        out_H_matrix_dot[9] = x13;
+        out_H_matrix_dot[10] = x10;
+        out_H_matrix_dot[11] = x11;
+    }
+    return singular;
+}
+
+
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
  * are written as NaN; returns their number. One thread. */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_H_matrix_dot)(
@@ -132,8 +186,8 @@ int64_t RIGIDSYM_ISA_NAME(rigidsym_H_matrix_dot_threads)(
     double *RIGIDSYM_RESTRICT out_H_matrix_dot);
 
 
-/* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
- * is flagged too). */
+/* The same on float32 arrays (the float32 sample function: float arithmetic of the
+ * precision plan; a row whose output overflows float32 is flagged too). */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_H_matrix_dot_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_e,

@@ -10,11 +10,17 @@
  *
  * Time derivative of H_matrix along omega, with the Jacobians of its outputs.
  * d/dt H_matrix(e(t), phi(t)) with e_dot, phi_dot from omega (the corrected form where the printed one does not hold); and d(output)/d(input) by sympy on the declared formula
+ *
+ * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
+ * measured at generation, rigidsym.codegen.float32; error within 0.954 ulp of float32,
+ * normwise, at its points). In double:
+ *   x1, x4
  */
 #ifndef RIGIDSYM_H_MATRIX_DOT_WITH_JACOBIANS_H
 #define RIGIDSYM_H_MATRIX_DOT_WITH_JACOBIANS_H
 
 #include "rigidsym_common.h"
+
 
 /* One sample: returns nonzero when the sample is singular (division by an exact zero or a
  * non-finite result). Inputs and outputs are row-major per sample. */
@@ -327,6 +333,161 @@ static inline int rigidsym_H_matrix_dot_with_jacobians_sample_trig(
 }
 
 
+/* One float32 sample: float inputs and outputs, arithmetic of the precision plan above. */
+static inline int rigidsym_H_matrix_dot_with_jacobians_sample_trig_f32(
+    const float *RIGIDSYM_RESTRICT in_e,
+    const float *RIGIDSYM_RESTRICT in_phi,
+    const float *RIGIDSYM_RESTRICT in_omega,
+    const float trig_0,
+    const float trig_1,
+    float *RIGIDSYM_RESTRICT out_H_matrix_dot,
+    float *RIGIDSYM_RESTRICT out_H_matrix_dot_D_e,
+    float *RIGIDSYM_RESTRICT out_H_matrix_dot_D_phi,
+    float *RIGIDSYM_RESTRICT out_H_matrix_dot_D_omega)
+{
+    const float e_0 = in_e[0];
+    const float e_1 = in_e[1];
+    const float e_2 = in_e[2];
+    (void)in_phi;
+    const float omega_0 = in_omega[0];
+    const float omega_1 = in_omega[1];
+    const float omega_2 = in_omega[2];
+    int singular = 0;
+    {
+        const double x1 = ((double)trig_0);
+        const float x2 = (0.25f)*x1;
+        const float x3 = omega_0*x2;
+        const double x4 = ((double)omega_1)*((double)x2);
+        const float x5 = omega_2*x2;
+        const float x6 = -e_0*x3 - e_1*x4 - e_2*x5;
+        const float x7 = trig_1;
+        const float x8 = (0.25f)*x7;
+        const float x9 = -e_0*x4 + e_1*x3 + omega_2*x8;
+        const float x10 = e_0*x5 - 0.25f*e_2*omega_0*x1 + omega_1*x8;
+        const float x11 = -x10;
+        const float x12 = -x9;
+        const float x13 = -e_1*x5 + e_2*x4 + omega_0*x8;
+        const float x14 = -x13;
+        const float x15 = -x3;
+        const float x16 = -x4;
+        const float x17 = -x5;
+        const float x18 = (0.125f)*x7;
+        const float x19 = e_0*x18;
+        const float x20 = e_1*x18;
+        const float x21 = e_2*x18;
+        const float x22 = -omega_0*x19 - omega_1*x20 - omega_2*x21;
+        const float x23 = (0.125f)*x1;
+        const float x24 = -0.125f*e_1*omega_0*x7 + omega_1*x19 + omega_2*x23;
+        const float x25 = omega_0*x21 + omega_1*x23 - omega_2*x19;
+        const float x26 = -0.125f*e_2*omega_1*x7 + omega_0*x23 + omega_2*x20;
+        const float x27 = e_0*x2;
+        const float x28 = -x27;
+        const float x29 = e_1*x2;
+        const float x30 = -x29;
+        const float x31 = e_2*x2;
+        const float x32 = -x31;
+        const float x33 = -x8;
+        out_H_matrix_dot[0] = x6;
+        out_H_matrix_dot[1] = x9;
+        out_H_matrix_dot[2] = x11;
+        out_H_matrix_dot[3] = x12;
+        out_H_matrix_dot[4] = x6;
+        out_H_matrix_dot[5] = x13;
+        out_H_matrix_dot[6] = x10;
+        out_H_matrix_dot[7] = x14;
+        out_H_matrix_dot[8] = x6;
+        out_H_matrix_dot[9] = x14;
+        out_H_matrix_dot[10] = x11;
+        out_H_matrix_dot[11] = x12;
+        out_H_matrix_dot_D_e[0] = x15;
+        out_H_matrix_dot_D_e[1] = x16;
+        out_H_matrix_dot_D_e[2] = x17;
+        out_H_matrix_dot_D_e[3] = x16;
+        out_H_matrix_dot_D_e[4] = x3;
+        out_H_matrix_dot_D_e[5] = 0.0f;
+        out_H_matrix_dot_D_e[6] = x17;
+        out_H_matrix_dot_D_e[7] = 0.0f;
+        out_H_matrix_dot_D_e[8] = x3;
+        out_H_matrix_dot_D_e[9] = x4;
+        out_H_matrix_dot_D_e[10] = x15;
+        out_H_matrix_dot_D_e[11] = 0.0f;
+        out_H_matrix_dot_D_e[12] = x15;
+        out_H_matrix_dot_D_e[13] = x16;
+        out_H_matrix_dot_D_e[14] = x17;
+        out_H_matrix_dot_D_e[15] = 0.0f;
+        out_H_matrix_dot_D_e[16] = x17;
+        out_H_matrix_dot_D_e[17] = x4;
+        out_H_matrix_dot_D_e[18] = x5;
+        out_H_matrix_dot_D_e[19] = 0.0f;
+        out_H_matrix_dot_D_e[20] = x15;
+        out_H_matrix_dot_D_e[21] = 0.0f;
+        out_H_matrix_dot_D_e[22] = x5;
+        out_H_matrix_dot_D_e[23] = x16;
+        out_H_matrix_dot_D_e[24] = x15;
+        out_H_matrix_dot_D_e[25] = x16;
+        out_H_matrix_dot_D_e[26] = x17;
+        out_H_matrix_dot_D_e[27] = 0.0f;
+        out_H_matrix_dot_D_e[28] = x5;
+        out_H_matrix_dot_D_e[29] = x16;
+        out_H_matrix_dot_D_e[30] = x17;
+        out_H_matrix_dot_D_e[31] = 0.0f;
+        out_H_matrix_dot_D_e[32] = x3;
+        out_H_matrix_dot_D_e[33] = x4;
+        out_H_matrix_dot_D_e[34] = x15;
+        out_H_matrix_dot_D_e[35] = 0.0f;
+        out_H_matrix_dot_D_phi[0] = x22;
+        out_H_matrix_dot_D_phi[1] = -x24;
+        out_H_matrix_dot_D_phi[2] = x25;
+        out_H_matrix_dot_D_phi[3] = x24;
+        out_H_matrix_dot_D_phi[4] = x22;
+        out_H_matrix_dot_D_phi[5] = -x26;
+        out_H_matrix_dot_D_phi[6] = -x25;
+        out_H_matrix_dot_D_phi[7] = x26;
+        out_H_matrix_dot_D_phi[8] = x22;
+        out_H_matrix_dot_D_phi[9] = x26;
+        out_H_matrix_dot_D_phi[10] = x25;
+        out_H_matrix_dot_D_phi[11] = x24;
+        out_H_matrix_dot_D_omega[0] = x28;
+        out_H_matrix_dot_D_omega[1] = x30;
+        out_H_matrix_dot_D_omega[2] = x32;
+        out_H_matrix_dot_D_omega[3] = x29;
+        out_H_matrix_dot_D_omega[4] = x28;
+        out_H_matrix_dot_D_omega[5] = x8;
+        out_H_matrix_dot_D_omega[6] = x31;
+        out_H_matrix_dot_D_omega[7] = x33;
+        out_H_matrix_dot_D_omega[8] = x28;
+        out_H_matrix_dot_D_omega[9] = x30;
+        out_H_matrix_dot_D_omega[10] = x27;
+        out_H_matrix_dot_D_omega[11] = x33;
+        out_H_matrix_dot_D_omega[12] = x28;
+        out_H_matrix_dot_D_omega[13] = x30;
+        out_H_matrix_dot_D_omega[14] = x32;
+        out_H_matrix_dot_D_omega[15] = x8;
+        out_H_matrix_dot_D_omega[16] = x31;
+        out_H_matrix_dot_D_omega[17] = x30;
+        out_H_matrix_dot_D_omega[18] = x32;
+        out_H_matrix_dot_D_omega[19] = x8;
+        out_H_matrix_dot_D_omega[20] = x27;
+        out_H_matrix_dot_D_omega[21] = x33;
+        out_H_matrix_dot_D_omega[22] = x32;
+        out_H_matrix_dot_D_omega[23] = x29;
+        out_H_matrix_dot_D_omega[24] = x28;
+        out_H_matrix_dot_D_omega[25] = x30;
+        out_H_matrix_dot_D_omega[26] = x32;
+        out_H_matrix_dot_D_omega[27] = x33;
+        out_H_matrix_dot_D_omega[28] = x32;
+        out_H_matrix_dot_D_omega[29] = x29;
+        out_H_matrix_dot_D_omega[30] = x31;
+        out_H_matrix_dot_D_omega[31] = x33;
+        out_H_matrix_dot_D_omega[32] = x28;
+        out_H_matrix_dot_D_omega[33] = x30;
+        out_H_matrix_dot_D_omega[34] = x27;
+        out_H_matrix_dot_D_omega[35] = x33;
+    }
+    return singular;
+}
+
+
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
  * are written as NaN; returns their number. One thread. */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_H_matrix_dot_with_jacobians)(
@@ -352,8 +513,8 @@ int64_t RIGIDSYM_ISA_NAME(rigidsym_H_matrix_dot_with_jacobians_threads)(
     double *RIGIDSYM_RESTRICT out_H_matrix_dot_D_omega);
 
 
-/* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
- * is flagged too). */
+/* The same on float32 arrays (the float32 sample function: float arithmetic of the
+ * precision plan; a row whose output overflows float32 is flagged too). */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_H_matrix_dot_with_jacobians_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_e,

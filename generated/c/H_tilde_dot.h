@@ -10,11 +10,17 @@
  *
  * Time derivative of H_tilde along omega.
  * d/dt H_tilde(e(t), phi(t)) with e_dot, phi_dot from omega (the corrected form where the printed one does not hold)
+ *
+ * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
+ * measured at generation, rigidsym.codegen.float32; error within 0.931 ulp of float32,
+ * normwise, at its points). In double:
+ *   x3, x6
  */
 #ifndef RIGIDSYM_H_TILDE_DOT_H
 #define RIGIDSYM_H_TILDE_DOT_H
 
 #include "rigidsym_common.h"
+
 
 /* One sample: returns nonzero when the sample is singular (division by an exact zero or a
  * non-finite result). Inputs and outputs are row-major per sample. */
@@ -111,6 +117,53 @@ static inline int rigidsym_H_tilde_dot_sample_trig(
 }
 
 
+/* One float32 sample: float inputs and outputs, arithmetic of the precision plan above. */
+static inline int rigidsym_H_tilde_dot_sample_trig_f32(
+    const float *RIGIDSYM_RESTRICT in_e,
+    const float *RIGIDSYM_RESTRICT in_phi,
+    const float *RIGIDSYM_RESTRICT in_omega,
+    const float trig_0,
+    const float trig_1,
+    float *RIGIDSYM_RESTRICT out_H_tilde_dot)
+{
+    const float e_0 = in_e[0];
+    const float e_1 = in_e[1];
+    const float e_2 = in_e[2];
+    (void)in_phi;
+    const float omega_0 = in_omega[0];
+    const float omega_1 = in_omega[1];
+    const float omega_2 = in_omega[2];
+    int singular = 0;
+    {
+        const float x1 = trig_0;
+        const float x2 = e_0*x1;
+        const double x3 = ((double)e_1)*((double)x1);
+        const float x4 = e_2*x1;
+        const float x5 = -omega_0*x2 - omega_1*x3 - omega_2*x4;
+        const double x6 = ((double)trig_1);
+        const float x7 = -e_0*omega_1*x1 + omega_0*x3 + omega_2*x6;
+        const float x8 = -x7;
+        const float x9 = -omega_0*x4 + omega_1*x6 + omega_2*x2;
+        const float x10 = -e_1*omega_2*x1 + omega_0*x6 + omega_1*x4;
+        const float x11 = -x10;
+        const float x12 = -x9;
+        out_H_tilde_dot[0] = x5;
+        out_H_tilde_dot[1] = x8;
+        out_H_tilde_dot[2] = x9;
+        out_H_tilde_dot[3] = x11;
+        out_H_tilde_dot[4] = x7;
+        out_H_tilde_dot[5] = x5;
+        out_H_tilde_dot[6] = x11;
+        out_H_tilde_dot[7] = x12;
+        out_H_tilde_dot[8] = x12;
+        out_H_tilde_dot[9] = x10;
+        out_H_tilde_dot[10] = x5;
+        out_H_tilde_dot[11] = x8;
+    }
+    return singular;
+}
+
+
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
  * are written as NaN; returns their number. One thread. */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_H_tilde_dot)(
@@ -130,8 +183,8 @@ int64_t RIGIDSYM_ISA_NAME(rigidsym_H_tilde_dot_threads)(
     double *RIGIDSYM_RESTRICT out_H_tilde_dot);
 
 
-/* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
- * is flagged too). */
+/* The same on float32 arrays (the float32 sample function: float arithmetic of the
+ * precision plan; a row whose output overflows float32 is flagged too). */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_H_tilde_dot_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_e,

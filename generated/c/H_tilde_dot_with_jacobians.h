@@ -10,11 +10,17 @@
  *
  * Time derivative of H_tilde along omega, with the Jacobians of its outputs.
  * d/dt H_tilde(e(t), phi(t)) with e_dot, phi_dot from omega (the corrected form where the printed one does not hold); and d(output)/d(input) by sympy on the declared formula
+ *
+ * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
+ * measured at generation, rigidsym.codegen.float32; error within 0.954 ulp of float32,
+ * normwise, at its points). In double:
+ *   x1, x2
  */
 #ifndef RIGIDSYM_H_TILDE_DOT_WITH_JACOBIANS_H
 #define RIGIDSYM_H_TILDE_DOT_WITH_JACOBIANS_H
 
 #include "rigidsym_common.h"
+
 
 /* One sample: returns nonzero when the sample is singular (division by an exact zero or a
  * non-finite result). Inputs and outputs are row-major per sample. */
@@ -325,6 +331,160 @@ static inline int rigidsym_H_tilde_dot_with_jacobians_sample_trig(
 }
 
 
+/* One float32 sample: float inputs and outputs, arithmetic of the precision plan above. */
+static inline int rigidsym_H_tilde_dot_with_jacobians_sample_trig_f32(
+    const float *RIGIDSYM_RESTRICT in_e,
+    const float *RIGIDSYM_RESTRICT in_phi,
+    const float *RIGIDSYM_RESTRICT in_omega,
+    const float trig_0,
+    const float trig_1,
+    float *RIGIDSYM_RESTRICT out_H_tilde_dot,
+    float *RIGIDSYM_RESTRICT out_H_tilde_dot_D_e,
+    float *RIGIDSYM_RESTRICT out_H_tilde_dot_D_phi,
+    float *RIGIDSYM_RESTRICT out_H_tilde_dot_D_omega)
+{
+    const float e_0 = in_e[0];
+    const float e_1 = in_e[1];
+    const float e_2 = in_e[2];
+    (void)in_phi;
+    const float omega_0 = in_omega[0];
+    const float omega_1 = in_omega[1];
+    const float omega_2 = in_omega[2];
+    int singular = 0;
+    {
+        const double x1 = ((double)trig_0);
+        const double x2 = ((double)omega_0)*x1;
+        const float x3 = omega_1*x1;
+        const float x4 = omega_2*x1;
+        const float x5 = -e_0*x2 - e_1*x3 - e_2*x4;
+        const float x6 = trig_1;
+        const float x7 = omega_2*x6;
+        const float x8 = -e_0*omega_1*x1 + e_1*x2 + x7;
+        const float x9 = -x8;
+        const float x10 = omega_1*x6;
+        const float x11 = e_0*x4 - e_2*x2 + x10;
+        const float x12 = omega_0*x6;
+        const float x13 = -e_1*omega_2*x1 + e_2*x3 + x12;
+        const float x14 = -x13;
+        const float x15 = -x11;
+        const float x16 = -x2;
+        const float x17 = -x3;
+        const float x18 = -x4;
+        const float x19 = (0.5f)*e_0;
+        const float x20 = (0.5f)*e_1;
+        const float x21 = (0.5f)*e_2;
+        const float x22 = -x10*x20 - x12*x19 - x21*x7;
+        const float x23 = x10*x19 - x12*x20 + (0.5f)*x4;
+        const float x24 = -0.5f*e_0*omega_2*x6 + x12*x21 + (0.5f)*x3;
+        const float x25 = -x10*x21 + (0.5f)*x2 + x20*x7;
+        const float x26 = e_0*x1;
+        const float x27 = -x26;
+        const float x28 = e_1*x1;
+        const float x29 = -x28;
+        const float x30 = e_2*x1;
+        const float x31 = -x30;
+        const float x32 = -x6;
+        out_H_tilde_dot[0] = x5;
+        out_H_tilde_dot[1] = x9;
+        out_H_tilde_dot[2] = x11;
+        out_H_tilde_dot[3] = x14;
+        out_H_tilde_dot[4] = x8;
+        out_H_tilde_dot[5] = x5;
+        out_H_tilde_dot[6] = x14;
+        out_H_tilde_dot[7] = x15;
+        out_H_tilde_dot[8] = x15;
+        out_H_tilde_dot[9] = x13;
+        out_H_tilde_dot[10] = x5;
+        out_H_tilde_dot[11] = x9;
+        out_H_tilde_dot_D_e[0] = x16;
+        out_H_tilde_dot_D_e[1] = x17;
+        out_H_tilde_dot_D_e[2] = x18;
+        out_H_tilde_dot_D_e[3] = x3;
+        out_H_tilde_dot_D_e[4] = x16;
+        out_H_tilde_dot_D_e[5] = 0.0f;
+        out_H_tilde_dot_D_e[6] = x4;
+        out_H_tilde_dot_D_e[7] = 0.0f;
+        out_H_tilde_dot_D_e[8] = x16;
+        out_H_tilde_dot_D_e[9] = 0.0f;
+        out_H_tilde_dot_D_e[10] = x4;
+        out_H_tilde_dot_D_e[11] = x17;
+        out_H_tilde_dot_D_e[12] = x17;
+        out_H_tilde_dot_D_e[13] = x2;
+        out_H_tilde_dot_D_e[14] = 0.0f;
+        out_H_tilde_dot_D_e[15] = x16;
+        out_H_tilde_dot_D_e[16] = x17;
+        out_H_tilde_dot_D_e[17] = x18;
+        out_H_tilde_dot_D_e[18] = 0.0f;
+        out_H_tilde_dot_D_e[19] = x4;
+        out_H_tilde_dot_D_e[20] = x17;
+        out_H_tilde_dot_D_e[21] = x18;
+        out_H_tilde_dot_D_e[22] = 0.0f;
+        out_H_tilde_dot_D_e[23] = x2;
+        out_H_tilde_dot_D_e[24] = x18;
+        out_H_tilde_dot_D_e[25] = 0.0f;
+        out_H_tilde_dot_D_e[26] = x2;
+        out_H_tilde_dot_D_e[27] = 0.0f;
+        out_H_tilde_dot_D_e[28] = x18;
+        out_H_tilde_dot_D_e[29] = x3;
+        out_H_tilde_dot_D_e[30] = x16;
+        out_H_tilde_dot_D_e[31] = x17;
+        out_H_tilde_dot_D_e[32] = x18;
+        out_H_tilde_dot_D_e[33] = x3;
+        out_H_tilde_dot_D_e[34] = x16;
+        out_H_tilde_dot_D_e[35] = 0.0f;
+        out_H_tilde_dot_D_phi[0] = x22;
+        out_H_tilde_dot_D_phi[1] = x23;
+        out_H_tilde_dot_D_phi[2] = -x24;
+        out_H_tilde_dot_D_phi[3] = x25;
+        out_H_tilde_dot_D_phi[4] = -x23;
+        out_H_tilde_dot_D_phi[5] = x22;
+        out_H_tilde_dot_D_phi[6] = x25;
+        out_H_tilde_dot_D_phi[7] = x24;
+        out_H_tilde_dot_D_phi[8] = x24;
+        out_H_tilde_dot_D_phi[9] = -x25;
+        out_H_tilde_dot_D_phi[10] = x22;
+        out_H_tilde_dot_D_phi[11] = x23;
+        out_H_tilde_dot_D_omega[0] = x27;
+        out_H_tilde_dot_D_omega[1] = x29;
+        out_H_tilde_dot_D_omega[2] = x31;
+        out_H_tilde_dot_D_omega[3] = x29;
+        out_H_tilde_dot_D_omega[4] = x26;
+        out_H_tilde_dot_D_omega[5] = x32;
+        out_H_tilde_dot_D_omega[6] = x31;
+        out_H_tilde_dot_D_omega[7] = x6;
+        out_H_tilde_dot_D_omega[8] = x26;
+        out_H_tilde_dot_D_omega[9] = x32;
+        out_H_tilde_dot_D_omega[10] = x31;
+        out_H_tilde_dot_D_omega[11] = x28;
+        out_H_tilde_dot_D_omega[12] = x28;
+        out_H_tilde_dot_D_omega[13] = x27;
+        out_H_tilde_dot_D_omega[14] = x6;
+        out_H_tilde_dot_D_omega[15] = x27;
+        out_H_tilde_dot_D_omega[16] = x29;
+        out_H_tilde_dot_D_omega[17] = x31;
+        out_H_tilde_dot_D_omega[18] = x32;
+        out_H_tilde_dot_D_omega[19] = x31;
+        out_H_tilde_dot_D_omega[20] = x28;
+        out_H_tilde_dot_D_omega[21] = x30;
+        out_H_tilde_dot_D_omega[22] = x32;
+        out_H_tilde_dot_D_omega[23] = x27;
+        out_H_tilde_dot_D_omega[24] = x30;
+        out_H_tilde_dot_D_omega[25] = x32;
+        out_H_tilde_dot_D_omega[26] = x27;
+        out_H_tilde_dot_D_omega[27] = x6;
+        out_H_tilde_dot_D_omega[28] = x30;
+        out_H_tilde_dot_D_omega[29] = x29;
+        out_H_tilde_dot_D_omega[30] = x27;
+        out_H_tilde_dot_D_omega[31] = x29;
+        out_H_tilde_dot_D_omega[32] = x31;
+        out_H_tilde_dot_D_omega[33] = x29;
+        out_H_tilde_dot_D_omega[34] = x26;
+        out_H_tilde_dot_D_omega[35] = x32;
+    }
+    return singular;
+}
+
+
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
  * are written as NaN; returns their number. One thread. */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_H_tilde_dot_with_jacobians)(
@@ -350,8 +510,8 @@ int64_t RIGIDSYM_ISA_NAME(rigidsym_H_tilde_dot_with_jacobians_threads)(
     double *RIGIDSYM_RESTRICT out_H_tilde_dot_D_omega);
 
 
-/* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
- * is flagged too). */
+/* The same on float32 arrays (the float32 sample function: float arithmetic of the
+ * precision plan; a row whose output overflows float32 is flagged too). */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_H_tilde_dot_with_jacobians_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_e,

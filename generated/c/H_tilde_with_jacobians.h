@@ -10,11 +10,17 @@
  *
  * Left inverse of the rate matrix of the Euler-Rodrigues parameters [r; r0]: omega = H_tilde rate, with the Jacobians of its outputs.
  * H_tilde(e, phi), 3x4; and d(output)/d(input) by sympy on the declared formula
+ *
+ * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
+ * measured at generation, rigidsym.codegen.float32; error within 0.601 ulp of float32,
+ * normwise, at its points). In double:
+ *   none
  */
 #ifndef RIGIDSYM_H_TILDE_WITH_JACOBIANS_H
 #define RIGIDSYM_H_TILDE_WITH_JACOBIANS_H
 
 #include "rigidsym_common.h"
+
 
 /* One sample: returns nonzero when the sample is singular (division by an exact zero or a
  * non-finite result). Inputs and outputs are row-major per sample. */
@@ -215,6 +221,105 @@ static inline int rigidsym_H_tilde_with_jacobians_sample_trig(
 }
 
 
+/* One float32 sample: float inputs and outputs, arithmetic of the precision plan above. */
+static inline int rigidsym_H_tilde_with_jacobians_sample_trig_f32(
+    const float *RIGIDSYM_RESTRICT in_e,
+    const float *RIGIDSYM_RESTRICT in_phi,
+    const float trig_0,
+    const float trig_1,
+    float *RIGIDSYM_RESTRICT out_H_tilde,
+    float *RIGIDSYM_RESTRICT out_H_tilde_D_e,
+    float *RIGIDSYM_RESTRICT out_H_tilde_D_phi)
+{
+    const float e_0 = in_e[0];
+    const float e_1 = in_e[1];
+    const float e_2 = in_e[2];
+    (void)in_phi;
+    int singular = 0;
+    {
+        const float x1 = trig_0;
+        const float x2 = 2.0f*x1;
+        const float x3 = trig_1;
+        const float x4 = 2.0f*x3;
+        const float x5 = e_2*x4;
+        const float x6 = -x5;
+        const float x7 = e_1*x4;
+        const float x8 = e_0*x4;
+        const float x9 = -x8;
+        const float x10 = -x7;
+        const float x11 = -x4;
+        const float x12 = -x3;
+        const float x13 = e_2*x1;
+        const float x14 = -x13;
+        const float x15 = e_1*x1;
+        const float x16 = e_0*x1;
+        const float x17 = -x16;
+        const float x18 = -x15;
+        out_H_tilde[0] = x2;
+        out_H_tilde[1] = x6;
+        out_H_tilde[2] = x7;
+        out_H_tilde[3] = x9;
+        out_H_tilde[4] = x5;
+        out_H_tilde[5] = x2;
+        out_H_tilde[6] = x9;
+        out_H_tilde[7] = x10;
+        out_H_tilde[8] = x10;
+        out_H_tilde[9] = x8;
+        out_H_tilde[10] = x2;
+        out_H_tilde[11] = x6;
+        out_H_tilde_D_e[0] = 0.0f;
+        out_H_tilde_D_e[1] = 0.0f;
+        out_H_tilde_D_e[2] = 0.0f;
+        out_H_tilde_D_e[3] = 0.0f;
+        out_H_tilde_D_e[4] = 0.0f;
+        out_H_tilde_D_e[5] = x11;
+        out_H_tilde_D_e[6] = 0.0f;
+        out_H_tilde_D_e[7] = x4;
+        out_H_tilde_D_e[8] = 0.0f;
+        out_H_tilde_D_e[9] = x11;
+        out_H_tilde_D_e[10] = 0.0f;
+        out_H_tilde_D_e[11] = 0.0f;
+        out_H_tilde_D_e[12] = 0.0f;
+        out_H_tilde_D_e[13] = 0.0f;
+        out_H_tilde_D_e[14] = x4;
+        out_H_tilde_D_e[15] = 0.0f;
+        out_H_tilde_D_e[16] = 0.0f;
+        out_H_tilde_D_e[17] = 0.0f;
+        out_H_tilde_D_e[18] = x11;
+        out_H_tilde_D_e[19] = 0.0f;
+        out_H_tilde_D_e[20] = 0.0f;
+        out_H_tilde_D_e[21] = 0.0f;
+        out_H_tilde_D_e[22] = x11;
+        out_H_tilde_D_e[23] = 0.0f;
+        out_H_tilde_D_e[24] = 0.0f;
+        out_H_tilde_D_e[25] = x11;
+        out_H_tilde_D_e[26] = 0.0f;
+        out_H_tilde_D_e[27] = x4;
+        out_H_tilde_D_e[28] = 0.0f;
+        out_H_tilde_D_e[29] = 0.0f;
+        out_H_tilde_D_e[30] = 0.0f;
+        out_H_tilde_D_e[31] = 0.0f;
+        out_H_tilde_D_e[32] = 0.0f;
+        out_H_tilde_D_e[33] = 0.0f;
+        out_H_tilde_D_e[34] = 0.0f;
+        out_H_tilde_D_e[35] = x11;
+        out_H_tilde_D_phi[0] = x12;
+        out_H_tilde_D_phi[1] = x14;
+        out_H_tilde_D_phi[2] = x15;
+        out_H_tilde_D_phi[3] = x17;
+        out_H_tilde_D_phi[4] = x13;
+        out_H_tilde_D_phi[5] = x12;
+        out_H_tilde_D_phi[6] = x17;
+        out_H_tilde_D_phi[7] = x18;
+        out_H_tilde_D_phi[8] = x18;
+        out_H_tilde_D_phi[9] = x16;
+        out_H_tilde_D_phi[10] = x12;
+        out_H_tilde_D_phi[11] = x14;
+    }
+    return singular;
+}
+
+
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
  * are written as NaN; returns their number. One thread. */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_H_tilde_with_jacobians)(
@@ -236,8 +341,8 @@ int64_t RIGIDSYM_ISA_NAME(rigidsym_H_tilde_with_jacobians_threads)(
     double *RIGIDSYM_RESTRICT out_H_tilde_D_phi);
 
 
-/* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
- * is flagged too). */
+/* The same on float32 arrays (the float32 sample function: float arithmetic of the
+ * precision plan; a row whose output overflows float32 is flagged too). */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_H_tilde_with_jacobians_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_e,

@@ -10,11 +10,17 @@
  *
  * Time derivative of L_matrix along omega.
  * d/dt L_matrix(e(t), phi(t)) with e_dot, phi_dot from omega (the corrected form where the printed one does not hold)
+ *
+ * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
+ * measured at generation, rigidsym.codegen.float32; error within 0.979 ulp of float32,
+ * normwise, at its points). In double:
+ *   trig_0, trig_1, x1, x2, x3, x13, x17, x18, x20, x21
  */
 #ifndef RIGIDSYM_L_MATRIX_DOT_H
 #define RIGIDSYM_L_MATRIX_DOT_H
 
 #include "rigidsym_common.h"
+
 
 /* One sample: returns nonzero when the sample is singular (division by an exact zero or a
  * non-finite result). Inputs and outputs are row-major per sample. */
@@ -143,6 +149,69 @@ static inline int rigidsym_L_matrix_dot_sample_trig(
 }
 
 
+/* One float32 sample: float inputs and outputs, arithmetic of the precision plan above. */
+static inline int rigidsym_L_matrix_dot_sample_trig_f32(
+    const float *RIGIDSYM_RESTRICT in_e,
+    const float *RIGIDSYM_RESTRICT in_phi,
+    const float *RIGIDSYM_RESTRICT in_omega,
+    const double trig_0,
+    const double trig_1,
+    float *RIGIDSYM_RESTRICT out_L_matrix_dot)
+{
+    const float e_0 = in_e[0];
+    const float e_1 = in_e[1];
+    const float e_2 = in_e[2];
+    (void)in_phi;
+    const float omega_0 = in_omega[0];
+    const float omega_1 = in_omega[1];
+    const float omega_2 = in_omega[2];
+    int singular = 0;
+    {
+        const double x1 = trig_0;
+        const double x2 = 2.0*(x1*x1);
+        const double x3 = ((double)e_0)*x2;
+        const float x4 = e_2*x3;
+        const float x5 = 2.0f*trig_1*x1;
+        const float x6 = e_1*x5;
+        const float x7 = x4 - x6;
+        const float x8 = (0.5f)*omega_1;
+        const float x9 = e_1*x3;
+        const float x10 = e_2*x5;
+        const float x11 = x10 + x9;
+        const float x12 = e_0*x5;
+        const double x13 = ((double)omega_0)*((double)x12) + ((double)omega_1)*((double)x6) + ((double)omega_2)*((double)x10);
+        const float x14 = e_1*e_2*x2;
+        const float x15 = x12 + x14;
+        const float x16 = (e_1*e_1);
+        const double x17 = 1.0 - x2;
+        const double x18 = ((double)x16) + x17*(1.0 - ((double)x16));
+        const float x19 = (e_2*e_2);
+        const double x20 = x17*(1.0 - ((double)x19)) + ((double)x19);
+        const double x21 = ((double)x12) - ((double)x14);
+        const float x22 = -x21;
+        const float x23 = (0.5f)*omega_0;
+        const float x24 = (e_0*e_0);
+        const float x25 = x17*(1.0f - x24) + x24;
+        const float x26 = (0.5f)*omega_2;
+        const float x27 = -x10 + x9;
+        const float x28 = x4 + x6;
+        out_L_matrix_dot[0] = (0.5f)*omega_2*x11 - x13 - x7*x8;
+        out_L_matrix_dot[1] = (0.5f)*omega_2*x18 - x15*x8;
+        out_L_matrix_dot[2] = (0.5f)*omega_2*x22 - x20*x8;
+        out_L_matrix_dot[3] = x23*x7 - x25*x26;
+        out_L_matrix_dot[4] = (0.5f)*omega_0*x15 - x13 - x26*x27;
+        out_L_matrix_dot[5] = x20*x23 - x26*x28;
+        out_L_matrix_dot[6] = (0.5f)*omega_1*x25 - x11*x23;
+        out_L_matrix_dot[7] = (0.5f)*omega_1*x27 - x18*x23;
+        out_L_matrix_dot[8] = (0.5f)*omega_1*x28 - x13 - x22*x23;
+        out_L_matrix_dot[9] = -x23*(x18 + x20) + x26*x28 + x27*x8;
+        out_L_matrix_dot[10] = x11*x23 - x21*x26 - x8*(x20 + x25);
+        out_L_matrix_dot[11] = x15*x8 + x23*x7 - x26*(x18 + x25);
+    }
+    return singular;
+}
+
+
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
  * are written as NaN; returns their number. One thread. */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_L_matrix_dot)(
@@ -162,8 +231,8 @@ int64_t RIGIDSYM_ISA_NAME(rigidsym_L_matrix_dot_threads)(
     double *RIGIDSYM_RESTRICT out_L_matrix_dot);
 
 
-/* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
- * is flagged too). */
+/* The same on float32 arrays (the float32 sample function: float arithmetic of the
+ * precision plan; a row whose output overflows float32 is flagged too). */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_L_matrix_dot_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_e,

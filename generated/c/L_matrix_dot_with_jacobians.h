@@ -10,11 +10,17 @@
  *
  * Time derivative of L_matrix along omega, with the Jacobians of its outputs.
  * d/dt L_matrix(e(t), phi(t)) with e_dot, phi_dot from omega (the corrected form where the printed one does not hold); and d(output)/d(input) by sympy on the declared formula
+ *
+ * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
+ * measured at generation, rigidsym.codegen.float32; error within 0.989 ulp of float32,
+ * normwise, at its points). In double:
+ *   trig_0, trig_1, x1, x2, x3, x20, x21, x22, x29, x32, x36, x56, x58, x61, x81, x91
  */
 #ifndef RIGIDSYM_L_MATRIX_DOT_WITH_JACOBIANS_H
 #define RIGIDSYM_L_MATRIX_DOT_WITH_JACOBIANS_H
 
 #include "rigidsym_common.h"
+
 
 /* One sample: returns nonzero when the sample is singular (division by an exact zero or a
  * non-finite result). Inputs and outputs are row-major per sample. */
@@ -475,6 +481,235 @@ static inline int rigidsym_L_matrix_dot_with_jacobians_sample_trig(
 }
 
 
+/* One float32 sample: float inputs and outputs, arithmetic of the precision plan above. */
+static inline int rigidsym_L_matrix_dot_with_jacobians_sample_trig_f32(
+    const float *RIGIDSYM_RESTRICT in_e,
+    const float *RIGIDSYM_RESTRICT in_phi,
+    const float *RIGIDSYM_RESTRICT in_omega,
+    const double trig_0,
+    const double trig_1,
+    float *RIGIDSYM_RESTRICT out_L_matrix_dot,
+    float *RIGIDSYM_RESTRICT out_L_matrix_dot_D_e,
+    float *RIGIDSYM_RESTRICT out_L_matrix_dot_D_phi,
+    float *RIGIDSYM_RESTRICT out_L_matrix_dot_D_omega)
+{
+    const float e_0 = in_e[0];
+    const float e_1 = in_e[1];
+    const float e_2 = in_e[2];
+    (void)in_phi;
+    const float omega_0 = in_omega[0];
+    const float omega_1 = in_omega[1];
+    const float omega_2 = in_omega[2];
+    int singular = 0;
+    {
+        const double x1 = trig_0;
+        const double x2 = (x1*x1);
+        const double x3 = 2.0*x2;
+        const float x4 = e_0*x3;
+        const float x5 = e_2*x4;
+        const float x6 = trig_1*x1;
+        const float x7 = e_1*x6;
+        const float x8 = 2.0f*x7;
+        const float x9 = -x8;
+        const float x10 = x5 + x9;
+        const float x11 = (0.5f)*omega_1;
+        const float x12 = e_1*x4;
+        const float x13 = e_2*x6;
+        const float x14 = 2.0f*x13;
+        const float x15 = x12 + x14;
+        const float x16 = omega_0*x6;
+        const float x17 = 2.0f*x16;
+        const float x18 = omega_1*x6;
+        const float x19 = 2.0f*x18;
+        const double x20 = ((double)omega_2)*((double)x6);
+        const double x21 = 2.0*x20;
+        const double x22 = ((double)e_0)*((double)x17) + ((double)e_1)*((double)x19) + ((double)e_2)*x21;
+        const float x23 = e_1*e_2;
+        const float x24 = x23*x3;
+        const float x25 = e_0*x6;
+        const float x26 = 2.0f*x25;
+        const float x27 = x24 + x26;
+        const float x28 = (e_1*e_1);
+        const double x29 = 1.0 - ((double)x28);
+        const float x30 = 1.0f - x3;
+        const float x31 = x29*x30;
+        const double x32 = ((double)x28) + ((double)x31);
+        const float x33 = (e_2*e_2);
+        const float x34 = 1.0f - x33;
+        const float x35 = x30*x34;
+        const double x36 = ((double)x33) + ((double)x35);
+        const float x37 = -x24 + x26;
+        const float x38 = -x37;
+        const float x39 = (0.5f)*omega_0;
+        const float x40 = (e_0*e_0);
+        const float x41 = 1.0f - x40;
+        const float x42 = x30*x41;
+        const float x43 = x40 + x42;
+        const float x44 = (0.5f)*omega_2;
+        const float x45 = -x14;
+        const float x46 = x12 + x45;
+        const float x47 = x5 + x8;
+        const float x48 = omega_1*x2;
+        const float x49 = e_2*x48;
+        const float x50 = omega_2*x2;
+        const float x51 = e_1*x50;
+        const float x52 = e_0*x50;
+        const float x53 = -x18;
+        const float x54 = e_0*x48;
+        const float x55 = x20 + x54;
+        const double x56 = ((double)e_1)*x3;
+        const float x57 = omega_2*x56 - x49;
+        const double x58 = ((double)e_1)*((double)x48);
+        const float x59 = -x20;
+        const float x60 = e_2*x50;
+        const double x61 = ((double)e_2)*x3;
+        const float x62 = -omega_1*x61 + x51;
+        const float x63 = omega_2*x4;
+        const float x64 = omega_0*x2;
+        const float x65 = e_2*x64;
+        const float x66 = -x65;
+        const float x67 = -x16;
+        const float x68 = e_0*x64;
+        const float x69 = e_1*x64;
+        const float x70 = omega_0*x61;
+        const float x71 = omega_1*x4 - x69;
+        const float x72 = -omega_0*x56;
+        const float x73 = x18 + x65;
+        const float x74 = e_0*x14;
+        const float x75 = e_1*x30;
+        const float x76 = x74 - x75;
+        const float x77 = e_2*x30;
+        const float x78 = e_0*x8;
+        const float x79 = x77 + x78;
+        const float x80 = e_0*x30;
+        const double x81 = ((double)omega_0)*((double)x80) + ((double)omega_1)*((double)x75) + ((double)omega_2)*((double)x77);
+        const float x82 = e_2*x8;
+        const float x83 = x80 + x82;
+        const float x84 = x80 - x82;
+        const float x85 = -x84;
+        const float x86 = -x77 + x78;
+        const float x87 = x74 + x75;
+        const float x88 = 2.0f*x6;
+        const float x89 = x29*x88;
+        const float x90 = x34*x88;
+        const double x91 = ((double)x41)*((double)x88);
+        const float x92 = e_0*x2;
+        const float x93 = e_2*x92;
+        const float x94 = x7 + x93;
+        const float x95 = -x94;
+        const float x96 = e_1*x92;
+        const float x97 = -x13 + x96;
+        const float x98 = x2*x23;
+        const float x99 = x25 + x98;
+        const float x100 = -x99;
+        const float x101 = (0.5f)*x28 + (0.5f)*x31;
+        const float x102 = (0.5f)*x33 + (0.5f)*x35;
+        const float x103 = -x25 + x98;
+        const float x104 = -x7 + x93;
+        const float x105 = (0.5f)*x40 + (0.5f)*x42;
+        const float x106 = x13 + x96;
+        const float x107 = -x106;
+        out_L_matrix_dot[0] = (0.5f)*omega_2*x15 - x10*x11 - x22;
+        out_L_matrix_dot[1] = (0.5f)*omega_2*x32 - x11*x27;
+        out_L_matrix_dot[2] = (0.5f)*omega_2*x38 - x11*x36;
+        out_L_matrix_dot[3] = x10*x39 - x43*x44;
+        out_L_matrix_dot[4] = (0.5f)*omega_0*x27 - x22 - x44*x46;
+        out_L_matrix_dot[5] = x36*x39 - x44*x47;
+        out_L_matrix_dot[6] = (0.5f)*omega_1*x43 - x15*x39;
+        out_L_matrix_dot[7] = (0.5f)*omega_1*x46 - x32*x39;
+        out_L_matrix_dot[8] = (0.5f)*omega_1*x47 - x22 - x38*x39;
+        out_L_matrix_dot[9] = x11*x46 - x39*(x32 + x36) + x44*x47;
+        out_L_matrix_dot[10] = -x11*(x36 + x43) + x15*x39 - x37*x44;
+        out_L_matrix_dot[11] = x10*x39 + x11*x27 - x44*(x32 + x43);
+        out_L_matrix_dot_D_e[0] = -x17 - x49 + x51;
+        out_L_matrix_dot_D_e[1] = x52 + x53;
+        out_L_matrix_dot_D_e[2] = -x55;
+        out_L_matrix_dot_D_e[3] = x53;
+        out_L_matrix_dot_D_e[4] = x57;
+        out_L_matrix_dot_D_e[5] = -x58;
+        out_L_matrix_dot_D_e[6] = x59;
+        out_L_matrix_dot_D_e[7] = x60;
+        out_L_matrix_dot_D_e[8] = x62;
+        out_L_matrix_dot_D_e[9] = -x63 - x66;
+        out_L_matrix_dot_D_e[10] = x67;
+        out_L_matrix_dot_D_e[11] = x68;
+        out_L_matrix_dot_D_e[12] = -x16 - x51;
+        out_L_matrix_dot_D_e[13] = -x19 - x52 - x66;
+        out_L_matrix_dot_D_e[14] = x59 + x69;
+        out_L_matrix_dot_D_e[15] = -x60;
+        out_L_matrix_dot_D_e[16] = x59;
+        out_L_matrix_dot_D_e[17] = -x52 + x70;
+        out_L_matrix_dot_D_e[18] = x71;
+        out_L_matrix_dot_D_e[19] = -x68;
+        out_L_matrix_dot_D_e[20] = x67;
+        out_L_matrix_dot_D_e[21] = x58;
+        out_L_matrix_dot_D_e[22] = x54 + x72;
+        out_L_matrix_dot_D_e[23] = x53;
+        out_L_matrix_dot_D_e[24] = x49 + x67;
+        out_L_matrix_dot_D_e[25] = -x73;
+        out_L_matrix_dot_D_e[26] = -x21 + x54 - x69;
+        out_L_matrix_dot_D_e[27] = x58 + x60;
+        out_L_matrix_dot_D_e[28] = x55 + x72;
+        out_L_matrix_dot_D_e[29] = -x18 + x52 - x70;
+        out_L_matrix_dot_D_e[30] = -x20 - x71;
+        out_L_matrix_dot_D_e[31] = x60 + x68;
+        out_L_matrix_dot_D_e[32] = x16 + x62;
+        out_L_matrix_dot_D_e[33] = -x63 + x73;
+        out_L_matrix_dot_D_e[34] = -x16 - x57;
+        out_L_matrix_dot_D_e[35] = x58 + x68;
+        out_L_matrix_dot_D_phi[0] = (0.5f)*omega_2*x79 - x11*x76 - x81;
+        out_L_matrix_dot_D_phi[1] = -x11*x83 - x20*x29;
+        out_L_matrix_dot_D_phi[2] = x18*x34 + x44*x85;
+        out_L_matrix_dot_D_phi[3] = x20*x41 + x39*x76;
+        out_L_matrix_dot_D_phi[4] = (0.5f)*omega_0*x83 - x44*x86 - x81;
+        out_L_matrix_dot_D_phi[5] = -x16*x34 - x44*x87;
+        out_L_matrix_dot_D_phi[6] = -x18*x41 - x39*x79;
+        out_L_matrix_dot_D_phi[7] = x11*x86 + x16*x29;
+        out_L_matrix_dot_D_phi[8] = (0.5f)*omega_1*x87 - x39*x85 - x81;
+        out_L_matrix_dot_D_phi[9] = x11*x86 - x39*(-x89 - x90) + x44*x87;
+        out_L_matrix_dot_D_phi[10] = -x11*(-x90 - x91) + x39*x79 - x44*x84;
+        out_L_matrix_dot_D_phi[11] = x11*x83 + x39*x76 - x44*(-x89 - x91);
+        out_L_matrix_dot_D_omega[0] = -x26;
+        out_L_matrix_dot_D_omega[1] = x95;
+        out_L_matrix_dot_D_omega[2] = x97;
+        out_L_matrix_dot_D_omega[3] = 0.0f;
+        out_L_matrix_dot_D_omega[4] = x100;
+        out_L_matrix_dot_D_omega[5] = x101;
+        out_L_matrix_dot_D_omega[6] = 0.0f;
+        out_L_matrix_dot_D_omega[7] = -x102;
+        out_L_matrix_dot_D_omega[8] = x103;
+        out_L_matrix_dot_D_omega[9] = x104;
+        out_L_matrix_dot_D_omega[10] = 0.0f;
+        out_L_matrix_dot_D_omega[11] = -x105;
+        out_L_matrix_dot_D_omega[12] = x103;
+        out_L_matrix_dot_D_omega[13] = x9;
+        out_L_matrix_dot_D_omega[14] = x107;
+        out_L_matrix_dot_D_omega[15] = x102;
+        out_L_matrix_dot_D_omega[16] = 0.0f;
+        out_L_matrix_dot_D_omega[17] = x95;
+        out_L_matrix_dot_D_omega[18] = x107;
+        out_L_matrix_dot_D_omega[19] = x105;
+        out_L_matrix_dot_D_omega[20] = 0.0f;
+        out_L_matrix_dot_D_omega[21] = -x101;
+        out_L_matrix_dot_D_omega[22] = x97;
+        out_L_matrix_dot_D_omega[23] = 0.0f;
+        out_L_matrix_dot_D_omega[24] = x100;
+        out_L_matrix_dot_D_omega[25] = x104;
+        out_L_matrix_dot_D_omega[26] = x45;
+        out_L_matrix_dot_D_omega[27] = -x101 - x102;
+        out_L_matrix_dot_D_omega[28] = x97;
+        out_L_matrix_dot_D_omega[29] = x94;
+        out_L_matrix_dot_D_omega[30] = x106;
+        out_L_matrix_dot_D_omega[31] = -x102 - x105;
+        out_L_matrix_dot_D_omega[32] = x103;
+        out_L_matrix_dot_D_omega[33] = x104;
+        out_L_matrix_dot_D_omega[34] = x99;
+        out_L_matrix_dot_D_omega[35] = -x101 - x105;
+    }
+    return singular;
+}
+
+
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
  * are written as NaN; returns their number. One thread. */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_L_matrix_dot_with_jacobians)(
@@ -500,8 +735,8 @@ int64_t RIGIDSYM_ISA_NAME(rigidsym_L_matrix_dot_with_jacobians_threads)(
     double *RIGIDSYM_RESTRICT out_L_matrix_dot_D_omega);
 
 
-/* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
- * is flagged too). */
+/* The same on float32 arrays (the float32 sample function: float arithmetic of the
+ * precision plan; a row whose output overflows float32 is flagged too). */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_L_matrix_dot_with_jacobians_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_e,

@@ -10,11 +10,17 @@
  *
  * Rate matrix of the linear invariants [u; u0]: rate = L_matrix omega, with the Jacobians of its outputs.
  * L_matrix(e, phi), 4x3; and d(output)/d(input) by sympy on the declared formula
+ *
+ * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
+ * measured at generation, rigidsym.codegen.float32; error within 0.86 ulp of float32,
+ * normwise, at its points). In double:
+ *   trig_0, x3
  */
 #ifndef RIGIDSYM_L_MATRIX_WITH_JACOBIANS_H
 #define RIGIDSYM_L_MATRIX_WITH_JACOBIANS_H
 
 #include "rigidsym_common.h"
+
 
 /* One sample: returns nonzero when the sample is singular (division by an exact zero or a
  * non-finite result). Inputs and outputs are row-major per sample. */
@@ -265,6 +271,130 @@ static inline int rigidsym_L_matrix_with_jacobians_sample_trig(
 }
 
 
+/* One float32 sample: float inputs and outputs, arithmetic of the precision plan above. */
+static inline int rigidsym_L_matrix_with_jacobians_sample_trig_f32(
+    const float *RIGIDSYM_RESTRICT in_e,
+    const float *RIGIDSYM_RESTRICT in_phi,
+    const double trig_0,
+    const float trig_1,
+    float *RIGIDSYM_RESTRICT out_L_matrix,
+    float *RIGIDSYM_RESTRICT out_L_matrix_D_e,
+    float *RIGIDSYM_RESTRICT out_L_matrix_D_phi)
+{
+    const float e_0 = in_e[0];
+    const float e_1 = in_e[1];
+    const float e_2 = in_e[2];
+    (void)in_phi;
+    int singular = 0;
+    {
+        const float x0 = (e_2*e_2);
+        const float x1 = 1.0f - x0;
+        const double x3 = trig_0;
+        const float x4 = (x3*x3);
+        const float x5 = 2.0f*x4;
+        const float x6 = 1.0f - x5;
+        const float x7 = (0.5f)*x6;
+        const float x8 = (0.5f)*x0 + x1*x7;
+        const float x9 = (e_1*e_1);
+        const float x10 = 1.0f - x9;
+        const float x11 = x10*x7 + (0.5f)*x9;
+        const float x12 = e_1*x4;
+        const float x13 = e_0*x12;
+        const float x14 = trig_1*x3;
+        const float x15 = e_2*x14;
+        const float x16 = e_0*x4;
+        const float x17 = e_2*x16;
+        const float x18 = e_1*x14;
+        const float x19 = (e_0*e_0);
+        const float x20 = 1.0f - x19;
+        const float x21 = (0.5f)*x19 + x20*x7;
+        const float x22 = e_0*x14;
+        const float x23 = e_2*x12;
+        const float x24 = e_1*x5;
+        const float x25 = e_2*x5;
+        const float x26 = -x12;
+        const float x27 = -x16;
+        const float x28 = -e_2*x4;
+        const float x29 = -x14;
+        const float x30 = e_0*x5;
+        const float x31 = -2.0f*x14;
+        const float x32 = x10*x14;
+        const float x33 = x1*x14;
+        const float x34 = e_0*x18;
+        const float x35 = e_2*x6;
+        const float x36 = (0.5f)*x35;
+        const float x37 = e_0*x15;
+        const float x38 = e_1*x6;
+        const float x39 = (0.5f)*x38;
+        const float x40 = x14*x20;
+        const float x41 = e_1*x15;
+        const float x42 = e_0*x6;
+        const float x43 = (0.5f)*x42;
+        out_L_matrix[0] = x11 + x8;
+        out_L_matrix[1] = -x13 + x15;
+        out_L_matrix[2] = -x17 - x18;
+        out_L_matrix[3] = -x13 - x15;
+        out_L_matrix[4] = x21 + x8;
+        out_L_matrix[5] = x22 - x23;
+        out_L_matrix[6] = -x17 + x18;
+        out_L_matrix[7] = -x22 - x23;
+        out_L_matrix[8] = x11 + x21;
+        out_L_matrix[9] = -2.0f*x22;
+        out_L_matrix[10] = -2.0f*x18;
+        out_L_matrix[11] = -2.0f*x15;
+        out_L_matrix_D_e[0] = 0.0f;
+        out_L_matrix_D_e[1] = x24;
+        out_L_matrix_D_e[2] = x25;
+        out_L_matrix_D_e[3] = x26;
+        out_L_matrix_D_e[4] = x27;
+        out_L_matrix_D_e[5] = x14;
+        out_L_matrix_D_e[6] = x28;
+        out_L_matrix_D_e[7] = x29;
+        out_L_matrix_D_e[8] = x27;
+        out_L_matrix_D_e[9] = x26;
+        out_L_matrix_D_e[10] = x27;
+        out_L_matrix_D_e[11] = x29;
+        out_L_matrix_D_e[12] = x30;
+        out_L_matrix_D_e[13] = 0.0f;
+        out_L_matrix_D_e[14] = x25;
+        out_L_matrix_D_e[15] = x14;
+        out_L_matrix_D_e[16] = x28;
+        out_L_matrix_D_e[17] = x26;
+        out_L_matrix_D_e[18] = x28;
+        out_L_matrix_D_e[19] = x14;
+        out_L_matrix_D_e[20] = x27;
+        out_L_matrix_D_e[21] = x29;
+        out_L_matrix_D_e[22] = x28;
+        out_L_matrix_D_e[23] = x26;
+        out_L_matrix_D_e[24] = x30;
+        out_L_matrix_D_e[25] = x24;
+        out_L_matrix_D_e[26] = 0.0f;
+        out_L_matrix_D_e[27] = x31;
+        out_L_matrix_D_e[28] = 0.0f;
+        out_L_matrix_D_e[29] = 0.0f;
+        out_L_matrix_D_e[30] = 0.0f;
+        out_L_matrix_D_e[31] = x31;
+        out_L_matrix_D_e[32] = 0.0f;
+        out_L_matrix_D_e[33] = 0.0f;
+        out_L_matrix_D_e[34] = 0.0f;
+        out_L_matrix_D_e[35] = x31;
+        out_L_matrix_D_phi[0] = -x32 - x33;
+        out_L_matrix_D_phi[1] = -x34 + x36;
+        out_L_matrix_D_phi[2] = -x37 - x39;
+        out_L_matrix_D_phi[3] = -x34 - x36;
+        out_L_matrix_D_phi[4] = -x33 - x40;
+        out_L_matrix_D_phi[5] = -x41 + x43;
+        out_L_matrix_D_phi[6] = -x37 + x39;
+        out_L_matrix_D_phi[7] = -x41 - x43;
+        out_L_matrix_D_phi[8] = -x32 - x40;
+        out_L_matrix_D_phi[9] = -x42;
+        out_L_matrix_D_phi[10] = -x38;
+        out_L_matrix_D_phi[11] = -x35;
+    }
+    return singular;
+}
+
+
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
  * are written as NaN; returns their number. One thread. */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_L_matrix_with_jacobians)(
@@ -286,8 +416,8 @@ int64_t RIGIDSYM_ISA_NAME(rigidsym_L_matrix_with_jacobians_threads)(
     double *RIGIDSYM_RESTRICT out_L_matrix_D_phi);
 
 
-/* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
- * is flagged too). */
+/* The same on float32 arrays (the float32 sample function: float arithmetic of the
+ * precision plan; a row whose output overflows float32 is flagged too). */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_L_matrix_with_jacobians_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_e,

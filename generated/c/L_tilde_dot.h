@@ -11,11 +11,17 @@
  * Time derivative of L_tilde along omega.
  * d/dt L_tilde(e(t), phi(t)) with e_dot, phi_dot from omega (the corrected form where the printed one does not hold)
  * Singular set: 1 + cos(phi) = 0 (phi = pi)
+ *
+ * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
+ * measured at generation, rigidsym.codegen.float32; error within 0.994 ulp of float32,
+ * normwise, at its points). In double:
+ *   trig_0, trig_1, x1, x2, x3, x4, x5, x6, x7, x8, x9, x10, x11, x12, x13, x14, x15, x16, x17, x19, x21, x22
  */
 #ifndef RIGIDSYM_L_TILDE_DOT_H
 #define RIGIDSYM_L_TILDE_DOT_H
 
 #include "rigidsym_common.h"
+
 
 /* One sample: returns nonzero when the sample is singular (division by an exact zero or a
  * non-finite result). Inputs and outputs are row-major per sample. */
@@ -152,6 +158,71 @@ static inline int rigidsym_L_tilde_dot_sample_trig(
 }
 
 
+/* One float32 sample: float inputs and outputs, arithmetic of the precision plan above. */
+static inline int rigidsym_L_tilde_dot_sample_trig_f32(
+    const float *RIGIDSYM_RESTRICT in_e,
+    const float *RIGIDSYM_RESTRICT in_phi,
+    const float *RIGIDSYM_RESTRICT in_omega,
+    const double trig_0,
+    const double trig_1,
+    float *RIGIDSYM_RESTRICT out_L_tilde_dot)
+{
+    const float e_0 = in_e[0];
+    const float e_1 = in_e[1];
+    const float e_2 = in_e[2];
+    (void)in_phi;
+    const float omega_0 = in_omega[0];
+    const float omega_1 = in_omega[1];
+    const float omega_2 = in_omega[2];
+    int singular = 0;
+    {
+        const double x1 = trig_0;
+        const double x2 = (x1*x1);
+        const double x3 = ((double)e_2)*x2;
+        const double x4 = ((double)e_0)*x3;
+        const double x5 = trig_1;
+        const double x6 = x1*x5;
+        const double x7 = ((double)e_1)*x6;
+        const double x8 = ((double)e_1)*x3;
+        const double x9 = ((double)e_0)*x6;
+        const double x10 = 1.0/x5;
+        const double x11 = ((double)e_2)*x6;
+        const double x12 = -2.0*((double)omega_0)*x9 - 2.0*((double)omega_1)*x7 - 2.0*((double)omega_2)*x11;
+        const double x13 = (((double)e_0)*((double)e_0));
+        const double x14 = 0.5 - x2;
+        const double x15 = (0.5)*x13 + x14*(1.0 - x13);
+        const double x16 = (((double)e_1)*((double)e_1));
+        const double x17 = x14*(1.0 - x16) + (0.5)*x16;
+        const float x18 = -e_2*x1*x10*x12 + omega_0*(-x4 + x7) + omega_1*(-x8 - x9) + omega_2*(x15 + x17);
+        const double x19 = (0.5)/(x5*x5);
+        const float x20 = -x18*x19;
+        const double x21 = ((double)e_0)*((double)e_1)*x2;
+        const double x22 = (((double)e_2)*((double)e_2));
+        const float x23 = x14*(1.0f - x22) + (0.5f)*x22;
+        const float x24 = -e_1*x1*x10*x12 + omega_0*(-x11 - x21) + omega_1*(x15 + x23) + omega_2*(-x8 + x9);
+        const float x25 = -e_0*x1*x10*x12 + omega_0*(x17 + x23) + omega_1*(x11 - x21) + omega_2*(-x4 - x7);
+        const float x26 = -x19*x25;
+        const float x27 = -x19*x24;
+        out_L_tilde_dot[0] = 0.0f;
+        out_L_tilde_dot[1] = x20;
+        out_L_tilde_dot[2] = x19*x24;
+        out_L_tilde_dot[3] = x26;
+        out_L_tilde_dot[4] = x18*x19;
+        out_L_tilde_dot[5] = 0.0f;
+        out_L_tilde_dot[6] = x26;
+        out_L_tilde_dot[7] = x27;
+        out_L_tilde_dot[8] = x27;
+        out_L_tilde_dot[9] = x19*x25;
+        out_L_tilde_dot[10] = 0.0f;
+        out_L_tilde_dot[11] = x20;
+        singular |= (x5) == 0.0;
+        const double finite = ((x10 - x10) + ((x19 - x19) + (x5 - x5)));
+        singular |= finite != finite;
+    }
+    return singular;
+}
+
+
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
  * are written as NaN; returns their number. One thread. */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_L_tilde_dot)(
@@ -171,8 +242,8 @@ int64_t RIGIDSYM_ISA_NAME(rigidsym_L_tilde_dot_threads)(
     double *RIGIDSYM_RESTRICT out_L_tilde_dot);
 
 
-/* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
- * is flagged too). */
+/* The same on float32 arrays (the float32 sample function: float arithmetic of the
+ * precision plan; a row whose output overflows float32 is flagged too). */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_L_tilde_dot_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_e,

@@ -11,11 +11,17 @@
  * Time derivative of L_tilde along omega, with the Jacobians of its outputs.
  * d/dt L_tilde(e(t), phi(t)) with e_dot, phi_dot from omega (the corrected form where the printed one does not hold); and d(output)/d(input) by sympy on the declared formula
  * Singular set: 1 + cos(phi) = 0 (phi = pi)
+ *
+ * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
+ * measured at generation, rigidsym.codegen.float32; error within 0.979 ulp of float32,
+ * normwise, at its points). In double:
+ *   trig_0, trig_1, x1, x2, x3, x4, x5, x6, x7, x8, x9, x11, x14, x15, x16, x17, x18, x19, x20, x21, x22, x23, x24, x25, x26, x27, x29, x30, x33, x35, x36, x37, x38, x39, x40, x43, x48, x52, x59, x61, x63, x73, x76, x84, x91, x92
  */
 #ifndef RIGIDSYM_L_TILDE_DOT_WITH_JACOBIANS_H
 #define RIGIDSYM_L_TILDE_DOT_WITH_JACOBIANS_H
 
 #include "rigidsym_common.h"
+
 
 /* One sample: returns nonzero when the sample is singular (division by an exact zero or a
  * non-finite result). Inputs and outputs are row-major per sample. */
@@ -498,6 +504,244 @@ static inline int rigidsym_L_tilde_dot_with_jacobians_sample_trig(
 }
 
 
+/* One float32 sample: float inputs and outputs, arithmetic of the precision plan above. */
+static inline int rigidsym_L_tilde_dot_with_jacobians_sample_trig_f32(
+    const float *RIGIDSYM_RESTRICT in_e,
+    const float *RIGIDSYM_RESTRICT in_phi,
+    const float *RIGIDSYM_RESTRICT in_omega,
+    const double trig_0,
+    const double trig_1,
+    float *RIGIDSYM_RESTRICT out_L_tilde_dot,
+    float *RIGIDSYM_RESTRICT out_L_tilde_dot_D_e,
+    float *RIGIDSYM_RESTRICT out_L_tilde_dot_D_phi,
+    float *RIGIDSYM_RESTRICT out_L_tilde_dot_D_omega)
+{
+    const float e_0 = in_e[0];
+    const float e_1 = in_e[1];
+    const float e_2 = in_e[2];
+    (void)in_phi;
+    const float omega_0 = in_omega[0];
+    const float omega_1 = in_omega[1];
+    const float omega_2 = in_omega[2];
+    int singular = 0;
+    {
+        const double x1 = trig_0;
+        const double x2 = (x1*x1);
+        const double x3 = ((double)e_2)*x2;
+        const double x4 = ((double)e_0)*x3;
+        const double x5 = trig_1;
+        const double x6 = x1*x5;
+        const double x7 = ((double)e_1)*x6;
+        const double x8 = x4 - x7;
+        const double x9 = -x8;
+        const float x10 = e_1*x3;
+        const double x11 = ((double)e_0)*x6;
+        const float x12 = x10 + x11;
+        const float x13 = -x12;
+        const double x14 = 1.0/x5;
+        const double x15 = ((double)e_2)*x6;
+        const double x16 = -2.0*((double)omega_0)*x11 - 2.0*((double)omega_1)*x7 - 2.0*((double)omega_2)*x15;
+        const double x17 = (((double)e_0)*((double)e_0));
+        const double x18 = 1.0 - x17;
+        const double x19 = 2.0*x2;
+        const double x20 = 1.0 - x19;
+        const double x21 = (0.5)*x20;
+        const double x22 = (0.5)*x17 + x18*x21;
+        const double x23 = (((double)e_1)*((double)e_1));
+        const double x24 = 1.0 - x23;
+        const double x25 = x21*x24 + (0.5)*x23;
+        const double x26 = x22 + x25;
+        const double x27 = -((double)e_2)*x1*x14*x16 + ((double)omega_0)*x9 + ((double)omega_1)*((double)x13) + ((double)omega_2)*x26;
+        const float x28 = -x27;
+        const double x29 = 1.0/(x5*x5);
+        const double x30 = (0.5)*x29;
+        const float x31 = x28*x30;
+        const float x32 = -x10 + x11;
+        const double x33 = ((double)e_0)*x2;
+        const float x34 = e_1*x33;
+        const double x35 = x15 + ((double)x34);
+        const double x36 = -x35;
+        const double x37 = x1*x14;
+        const double x38 = x16*x37;
+        const double x39 = (((double)e_2)*((double)e_2));
+        const double x40 = 1.0 - x39;
+        const float x41 = x21*x40 + (0.5f)*x39;
+        const float x42 = x22 + x41;
+        const double x43 = -((double)e_1)*x38 + ((double)omega_0)*x36 + ((double)omega_1)*((double)x42) + ((double)omega_2)*((double)x32);
+        const float x44 = -x15 + x34;
+        const float x45 = -x44;
+        const float x46 = x4 + x7;
+        const float x47 = -x46;
+        const double x48 = x25 + ((double)x41);
+        const float x49 = -e_0*x1*x14*x16 + omega_0*x48 + omega_1*x45 + omega_2*x47;
+        const float x50 = -x49;
+        const float x51 = x30*x50;
+        const double x52 = -x43;
+        const float x53 = x30*x52;
+        const float x54 = omega_2*x19;
+        const float x55 = omega_1*x6;
+        const float x56 = e_0*x54 + omega_0*x3 - x55;
+        const float x57 = -x30*x56;
+        const float x58 = omega_0*x6;
+        const double x59 = ((double)e_1)*((double)x54) + ((double)omega_1)*x3 + ((double)x58);
+        const float x60 = -x30*x59;
+        const double x61 = ((double)e_1)*x2;
+        const float x62 = omega_1*x61;
+        const double x63 = ((double)e_2)*((double)omega_2);
+        const float x64 = omega_0*x33 + x38;
+        const float x65 = -x19*x63 + x62 + x64;
+        const float x66 = x30*x65;
+        const float x67 = omega_1*x19;
+        const float x68 = omega_2*x6;
+        const float x69 = e_0*x67 + omega_0*x61 + x68;
+        const float x70 = omega_2*x3;
+        const float x71 = -2.0f*e_1*omega_1*x2 + x64 + x70;
+        const float x72 = e_2*x67 + omega_2*x61 - x58;
+        const double x73 = ((double)e_0)*((double)omega_0);
+        const float x74 = -x19*x73 + x38 + x62 + x70;
+        const float x75 = x30*x74;
+        const double x76 = ((double)omega_0)*x19;
+        const float x77 = e_1*x76 + omega_1*x33 - x68;
+        const float x78 = -x30*x77;
+        const float x79 = e_2*x76 + omega_2*x33 + x55;
+        const float x80 = -x30*x79;
+        const float x81 = -x30*x69;
+        const float x82 = x30*x71;
+        const float x83 = -x30*x72;
+        const double x84 = (0.5)*x1/(x5*x5*x5);
+        const float x85 = e_2*x11;
+        const float x86 = e_1*x21;
+        const float x87 = e_2*x7;
+        const float x88 = e_0*x21;
+        const float x89 = x18*x6;
+        const float x90 = x24*x6;
+        const double x91 = x16*x29;
+        const double x92 = x37*(-((double)e_1)*((double)omega_1)*x20 - x20*x63 - x20*x73);
+        const float x93 = e_2*x21;
+        const float x94 = e_2*x92 - omega_0*(-x85 + x86) - omega_1*(-x87 - x88) - omega_2*(-x89 - x90) + x3*x91 + x91*x93;
+        const float x95 = x28*x84 + x30*x94;
+        const float x96 = e_0*x7;
+        const float x97 = x40*x6;
+        const float x98 = e_1*x92 - omega_0*(-x93 - x96) - omega_1*(-x89 - x97) - omega_2*(-x87 + x88) + x61*x91 + x86*x91;
+        const float x99 = e_0*x92 - omega_0*(-x90 - x97) - omega_1*(x93 - x96) - omega_2*(-x85 - x86) + x33*x91 + x88*x91;
+        const float x100 = x30*x99 + x50*x84;
+        const float x101 = x30*x98 + x52*x84;
+        const float x102 = x30*x47;
+        const float x103 = x30*x32;
+        const float x104 = x19*x39 + x26;
+        const float x105 = -x104*x30;
+        const float x106 = x19*x23 + x42;
+        const float x107 = x17*x19 + x48;
+        const float x108 = -x107*x30;
+        const float x109 = x30*x36;
+        const float x110 = x30*x9;
+        const float x111 = x30*x45;
+        const float x112 = -x106*x30;
+        const float x113 = x13*x30;
+        out_L_tilde_dot[0] = 0.0f;
+        out_L_tilde_dot[1] = x31;
+        out_L_tilde_dot[2] = x30*x43;
+        out_L_tilde_dot[3] = x51;
+        out_L_tilde_dot[4] = x27*x30;
+        out_L_tilde_dot[5] = 0.0f;
+        out_L_tilde_dot[6] = x51;
+        out_L_tilde_dot[7] = x53;
+        out_L_tilde_dot[8] = x53;
+        out_L_tilde_dot[9] = x30*x49;
+        out_L_tilde_dot[10] = 0.0f;
+        out_L_tilde_dot[11] = x31;
+        out_L_tilde_dot_D_e[0] = 0.0f;
+        out_L_tilde_dot_D_e[1] = 0.0f;
+        out_L_tilde_dot_D_e[2] = 0.0f;
+        out_L_tilde_dot_D_e[3] = x57;
+        out_L_tilde_dot_D_e[4] = x60;
+        out_L_tilde_dot_D_e[5] = x66;
+        out_L_tilde_dot_D_e[6] = x30*x69;
+        out_L_tilde_dot_D_e[7] = -x30*x71;
+        out_L_tilde_dot_D_e[8] = x30*x72;
+        out_L_tilde_dot_D_e[9] = x75;
+        out_L_tilde_dot_D_e[10] = x78;
+        out_L_tilde_dot_D_e[11] = x80;
+        out_L_tilde_dot_D_e[12] = x30*x56;
+        out_L_tilde_dot_D_e[13] = x30*x59;
+        out_L_tilde_dot_D_e[14] = -x30*x65;
+        out_L_tilde_dot_D_e[15] = 0.0f;
+        out_L_tilde_dot_D_e[16] = 0.0f;
+        out_L_tilde_dot_D_e[17] = 0.0f;
+        out_L_tilde_dot_D_e[18] = x75;
+        out_L_tilde_dot_D_e[19] = x78;
+        out_L_tilde_dot_D_e[20] = x80;
+        out_L_tilde_dot_D_e[21] = x81;
+        out_L_tilde_dot_D_e[22] = x82;
+        out_L_tilde_dot_D_e[23] = x83;
+        out_L_tilde_dot_D_e[24] = x81;
+        out_L_tilde_dot_D_e[25] = x82;
+        out_L_tilde_dot_D_e[26] = x83;
+        out_L_tilde_dot_D_e[27] = -x30*x74;
+        out_L_tilde_dot_D_e[28] = x30*x77;
+        out_L_tilde_dot_D_e[29] = x30*x79;
+        out_L_tilde_dot_D_e[30] = 0.0f;
+        out_L_tilde_dot_D_e[31] = 0.0f;
+        out_L_tilde_dot_D_e[32] = 0.0f;
+        out_L_tilde_dot_D_e[33] = x57;
+        out_L_tilde_dot_D_e[34] = x60;
+        out_L_tilde_dot_D_e[35] = x66;
+        out_L_tilde_dot_D_phi[0] = 0.0f;
+        out_L_tilde_dot_D_phi[1] = x95;
+        out_L_tilde_dot_D_phi[2] = -x30*x98 + x43*x84;
+        out_L_tilde_dot_D_phi[3] = x100;
+        out_L_tilde_dot_D_phi[4] = x27*x84 - x30*x94;
+        out_L_tilde_dot_D_phi[5] = 0.0f;
+        out_L_tilde_dot_D_phi[6] = x100;
+        out_L_tilde_dot_D_phi[7] = x101;
+        out_L_tilde_dot_D_phi[8] = x101;
+        out_L_tilde_dot_D_phi[9] = -x30*x99 + x49*x84;
+        out_L_tilde_dot_D_phi[10] = 0.0f;
+        out_L_tilde_dot_D_phi[11] = x95;
+        out_L_tilde_dot_D_omega[0] = 0.0f;
+        out_L_tilde_dot_D_omega[1] = 0.0f;
+        out_L_tilde_dot_D_omega[2] = 0.0f;
+        out_L_tilde_dot_D_omega[3] = x102;
+        out_L_tilde_dot_D_omega[4] = x103;
+        out_L_tilde_dot_D_omega[5] = x105;
+        out_L_tilde_dot_D_omega[6] = x30*x44;
+        out_L_tilde_dot_D_omega[7] = x106*x30;
+        out_L_tilde_dot_D_omega[8] = x12*x30;
+        out_L_tilde_dot_D_omega[9] = x108;
+        out_L_tilde_dot_D_omega[10] = x109;
+        out_L_tilde_dot_D_omega[11] = x110;
+        out_L_tilde_dot_D_omega[12] = x30*x46;
+        out_L_tilde_dot_D_omega[13] = -x30*x32;
+        out_L_tilde_dot_D_omega[14] = x104*x30;
+        out_L_tilde_dot_D_omega[15] = 0.0f;
+        out_L_tilde_dot_D_omega[16] = 0.0f;
+        out_L_tilde_dot_D_omega[17] = 0.0f;
+        out_L_tilde_dot_D_omega[18] = x108;
+        out_L_tilde_dot_D_omega[19] = x109;
+        out_L_tilde_dot_D_omega[20] = x110;
+        out_L_tilde_dot_D_omega[21] = x111;
+        out_L_tilde_dot_D_omega[22] = x112;
+        out_L_tilde_dot_D_omega[23] = x113;
+        out_L_tilde_dot_D_omega[24] = x111;
+        out_L_tilde_dot_D_omega[25] = x112;
+        out_L_tilde_dot_D_omega[26] = x113;
+        out_L_tilde_dot_D_omega[27] = x107*x30;
+        out_L_tilde_dot_D_omega[28] = x30*x35;
+        out_L_tilde_dot_D_omega[29] = x30*x8;
+        out_L_tilde_dot_D_omega[30] = 0.0f;
+        out_L_tilde_dot_D_omega[31] = 0.0f;
+        out_L_tilde_dot_D_omega[32] = 0.0f;
+        out_L_tilde_dot_D_omega[33] = x102;
+        out_L_tilde_dot_D_omega[34] = x103;
+        out_L_tilde_dot_D_omega[35] = x105;
+        singular |= (x5) == 0.0;
+        const double finite = (((x14 - x14) + (x29 - x29)) + ((x84 - x84) + (x5 - x5)));
+        singular |= finite != finite;
+    }
+    return singular;
+}
+
+
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
  * are written as NaN; returns their number. One thread. */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_L_tilde_dot_with_jacobians)(
@@ -523,8 +767,8 @@ int64_t RIGIDSYM_ISA_NAME(rigidsym_L_tilde_dot_with_jacobians_threads)(
     double *RIGIDSYM_RESTRICT out_L_tilde_dot_D_omega);
 
 
-/* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
- * is flagged too). */
+/* The same on float32 arrays (the float32 sample function: float arithmetic of the
+ * precision plan; a row whose output overflows float32 is flagged too). */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_L_tilde_dot_with_jacobians_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_e,

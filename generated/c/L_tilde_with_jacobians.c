@@ -10,15 +10,29 @@
  */
 #include "L_tilde_with_jacobians.h"
 
-/* Exactly 64 samples, always: a full block of the batch, or the last partial block
- * padded. One code path for every sample, so that a sample's bits do not depend on where it
- * sits in the batch: no scalar remainder of a vector loop, and the sin/cos loop works on
- * local aligned arrays only (no alias or alignment versions of it); never
- * inlined, so that both uses run the same machine code. Then one finiteness test over the
- * first m samples' outputs (still in cache): finite inputs can overflow into a non-finite
- * output, flagged as a singular sample is. When something is flagged, each sample's flag is
- * recomputed from that sample alone (its own flag and its own output row) and its row
- * written as NaN. Returns the number of flagged samples among the first m. */
+/* Exactly NB = 64 samples, always: a full block of the batch, or a partial one padded.
+ * One code path for every sample, so that a
+ * sample's bits do not depend on where it sits in the batch: no scalar remainder of a vector
+ * loop, and the sin/cos loop works on local aligned arrays only (no alias or alignment
+ * versions of it); never inlined, so that every use runs the same machine code.
+ * Then one finiteness test over the first m samples' outputs (still in cache): finite inputs
+ * can overflow into a non-finite output, flagged as a singular sample is. When something is
+ * flagged, each sample's flag is recomputed from that sample alone (its own flag and its own
+ * output row) and its row written as NaN. Returns the number of flagged samples among the
+ * first m. T float: the float32 sample function (float inputs and outputs, the arithmetic of
+ * the precision plan in the header; sin/cos in double from the widened inputs). */
+
+/* Samples [i0, i0 + m) of the batch, m <= 64: a full block, or a partial one (the tail
+ * of a batch, a batch of a few samples, one sample) through a padded block (its samples, then
+ * copies of its last one: valid inputs). Always the same block function, so a sample's bits
+ * do not depend on its batch: smaller blocks for short batches were measured to change the
+ * last bit of some samples (the compiler vectorises a loop of 4 samples differently, and FMA
+ * contraction with it). Returns the number flagged. */
+
+/* The batch of n samples on `threads` threads: blocks are independent and the count is an
+ * integer sum, so the result is the same for every thread count. One thread (or one block):
+ * no OpenMP region at all (entering one, even with if(0), costs about a microsecond:
+ * measured, more than a one-sample call). */
 static RIGIDSYM_NOINLINE int64_t rigidsym_L_tilde_with_jacobians_block(
     int64_t m,
     const double *RIGIDSYM_RESTRICT in_e,
@@ -87,8 +101,76 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_L_tilde_with_jacobians_block(
     return count;
 }
 
-/* Samples [i0, i0 + m) of the batch, m <= 64; the tail through padded copies (the real
- * samples, then copies of the last one: valid inputs). Returns the number flagged. */
+
+static RIGIDSYM_NOINLINE int64_t rigidsym_L_tilde_with_jacobians_block_f32(
+    int64_t m,
+    const float *RIGIDSYM_RESTRICT in_e,
+    const float *RIGIDSYM_RESTRICT in_phi,
+    float *RIGIDSYM_RESTRICT out_L_tilde,
+    float *RIGIDSYM_RESTRICT out_L_tilde_D_e,
+    float *RIGIDSYM_RESTRICT out_L_tilde_D_phi)
+{
+    int64_t count = 0;
+    RIGIDSYM_ALIGNED double trig_0[64];
+    RIGIDSYM_ALIGNED double trig_1[64];
+    RIGIDSYM_ALIGNED double col_phi[64];
+    for (int64_t j = 0; j < 64; ++j) {
+        col_phi[j] = in_phi[1 * j + 0];
+    }
+    /* a SIMD loop evaluates the sin/cos values into local arrays, then a per-sample loop
+     * reads them */
+    RIGIDSYM_SIMD
+    for (int64_t j = 0; j < 64; ++j) {
+        const double phi = col_phi[j];
+        const double x0 = (0.5)*phi;
+        trig_0[j] = sin(x0);
+        trig_1[j] = cos(x0);
+    }
+    for (int64_t j = 0; j < 64; ++j) {
+        count += rigidsym_L_tilde_with_jacobians_sample_trig_f32(
+            in_e + 3 * j,
+            in_phi + 1 * j,
+            trig_0[j],
+            trig_1[j],
+            out_L_tilde + 12 * j,
+            out_L_tilde_D_e + 36 * j,
+            out_L_tilde_D_phi + 12 * j);
+    }
+    count += rigidsym_any_nonfinite_f32(out_L_tilde, 12 * m);
+    count += rigidsym_any_nonfinite_f32(out_L_tilde_D_e, 36 * m);
+    count += rigidsym_any_nonfinite_f32(out_L_tilde_D_phi, 12 * m);
+    if (count == 0)
+        return 0;
+    count = 0;
+    for (int64_t j = 0; j < m; ++j) {
+        float tmp_L_tilde[12];
+        float tmp_L_tilde_D_e[36];
+        float tmp_L_tilde_D_phi[12];
+        int flagged = rigidsym_L_tilde_with_jacobians_sample_trig_f32(
+            in_e + 3 * j,
+            in_phi + 1 * j,
+            trig_0[j],
+            trig_1[j],
+            tmp_L_tilde,
+            tmp_L_tilde_D_e,
+            tmp_L_tilde_D_phi);
+        flagged |= rigidsym_any_nonfinite_f32(out_L_tilde + 12 * j, 12);
+        flagged |= rigidsym_any_nonfinite_f32(out_L_tilde_D_e + 36 * j, 36);
+        flagged |= rigidsym_any_nonfinite_f32(out_L_tilde_D_phi + 12 * j, 12);
+        if (flagged) {
+            ++count;
+            for (int c = 0; c < 12; ++c)
+                out_L_tilde[12 * j + c] = NAN;
+            for (int c = 0; c < 36; ++c)
+                out_L_tilde_D_e[36 * j + c] = NAN;
+            for (int c = 0; c < 12; ++c)
+                out_L_tilde_D_phi[12 * j + c] = NAN;
+        }
+    }
+    return count;
+}
+
+
 static int64_t rigidsym_L_tilde_with_jacobians_run(
     int64_t i0, int64_t m,
     const double *RIGIDSYM_RESTRICT in_e,
@@ -97,11 +179,6 @@ static int64_t rigidsym_L_tilde_with_jacobians_run(
     double *RIGIDSYM_RESTRICT out_L_tilde_D_e,
     double *RIGIDSYM_RESTRICT out_L_tilde_D_phi)
 {
-    double pad_e[3 * 64];
-    double pad_phi[1 * 64];
-    double pad_L_tilde[12 * 64];
-    double pad_L_tilde_D_e[36 * 64];
-    double pad_L_tilde_D_phi[12 * 64];
     if (m == 64)
         return rigidsym_L_tilde_with_jacobians_block(m,
             in_e + 3 * i0,
@@ -109,6 +186,12 @@ static int64_t rigidsym_L_tilde_with_jacobians_run(
             out_L_tilde + 12 * i0,
             out_L_tilde_D_e + 36 * i0,
             out_L_tilde_D_phi + 12 * i0);
+
+    double pad_e[3 * 64];
+    double pad_phi[1 * 64];
+    double pad_L_tilde[12 * 64];
+    double pad_L_tilde_D_e[36 * 64];
+    double pad_L_tilde_D_phi[12 * 64];
     for (int64_t j = 0; j < 64; ++j) {
         const int64_t s = i0 + (j < m ? j : m - 1);
         memcpy(pad_e + 3 * j, in_e + 3 * s,
@@ -128,9 +211,7 @@ static int64_t rigidsym_L_tilde_with_jacobians_run(
     return count;
 }
 
-/* float32 storage, float64 arithmetic: samples [i0, i0 + m) widened into the block's local
- * double arrays, evaluated by the same block function, rounded back. A finite double output
- * can overflow float32: such rows are flagged too (NaN). Returns the number flagged. */
+
 static int64_t rigidsym_L_tilde_with_jacobians_run_f32(
     int64_t i0, int64_t m,
     const float *RIGIDSYM_RESTRICT in_e,
@@ -139,56 +220,38 @@ static int64_t rigidsym_L_tilde_with_jacobians_run_f32(
     float *RIGIDSYM_RESTRICT out_L_tilde_D_e,
     float *RIGIDSYM_RESTRICT out_L_tilde_D_phi)
 {
-    double pad_e[3 * 64];
-    double pad_phi[1 * 64];
-    double pad_L_tilde[12 * 64];
-    double pad_L_tilde_D_e[36 * 64];
-    double pad_L_tilde_D_phi[12 * 64];
+    if (m == 64)
+        return rigidsym_L_tilde_with_jacobians_block_f32(m,
+            in_e + 3 * i0,
+            in_phi + 1 * i0,
+            out_L_tilde + 12 * i0,
+            out_L_tilde_D_e + 36 * i0,
+            out_L_tilde_D_phi + 12 * i0);
+
+    float pad_e[3 * 64];
+    float pad_phi[1 * 64];
+    float pad_L_tilde[12 * 64];
+    float pad_L_tilde_D_e[36 * 64];
+    float pad_L_tilde_D_phi[12 * 64];
     for (int64_t j = 0; j < 64; ++j) {
         const int64_t s = i0 + (j < m ? j : m - 1);
-        for (int c = 0; c < 3; ++c)
-            pad_e[3 * j + c] = in_e[3 * s + c];
-        for (int c = 0; c < 1; ++c)
-            pad_phi[1 * j + c] = in_phi[1 * s + c];
+        memcpy(pad_e + 3 * j, in_e + 3 * s,
+               3 * sizeof(float));
+        memcpy(pad_phi + 1 * j, in_phi + 1 * s,
+               1 * sizeof(float));
     }
-    int64_t count = rigidsym_L_tilde_with_jacobians_block(m,
+    const int64_t count = rigidsym_L_tilde_with_jacobians_block_f32(m,
         pad_e,
         pad_phi,
         pad_L_tilde,
         pad_L_tilde_D_e,
         pad_L_tilde_D_phi);
-    for (int64_t c = 0; c < 12 * m; ++c)
-        out_L_tilde[12 * i0 + c] = (float)pad_L_tilde[c];
-    for (int64_t c = 0; c < 36 * m; ++c)
-        out_L_tilde_D_e[36 * i0 + c] = (float)pad_L_tilde_D_e[c];
-    for (int64_t c = 0; c < 12 * m; ++c)
-        out_L_tilde_D_phi[12 * i0 + c] = (float)pad_L_tilde_D_phi[c];
-    int64_t over = 0;
-    over += rigidsym_any_nonfinite_f32(out_L_tilde + 12 * i0, 12 * m);
-    over += rigidsym_any_nonfinite_f32(out_L_tilde_D_e + 36 * i0, 36 * m);
-    over += rigidsym_any_nonfinite_f32(out_L_tilde_D_phi + 12 * i0, 12 * m);
-    if (over == 0)
-        return count;
-    for (int64_t j = 0; j < m; ++j) {
-        const int64_t i = i0 + j;
-        if (out_L_tilde[12 * i] != out_L_tilde[12 * i])
-            continue;                       /* flagged already: its row is NaN */
-        int flagged = 0;
-        flagged |= rigidsym_any_nonfinite_f32(out_L_tilde + 12 * i, 12);
-        flagged |= rigidsym_any_nonfinite_f32(out_L_tilde_D_e + 36 * i, 36);
-        flagged |= rigidsym_any_nonfinite_f32(out_L_tilde_D_phi + 12 * i, 12);
-        if (flagged) {
-            ++count;
-            for (int c = 0; c < 12; ++c)
-                out_L_tilde[12 * i + c] = NAN;
-            for (int c = 0; c < 36; ++c)
-                out_L_tilde_D_e[36 * i + c] = NAN;
-            for (int c = 0; c < 12; ++c)
-                out_L_tilde_D_phi[12 * i + c] = NAN;
-        }
-    }
+    memcpy(out_L_tilde + 12 * i0, pad_L_tilde, 12 * m * sizeof(float));
+    memcpy(out_L_tilde_D_e + 36 * i0, pad_L_tilde_D_e, 36 * m * sizeof(float));
+    memcpy(out_L_tilde_D_phi + 12 * i0, pad_L_tilde_D_phi, 12 * m * sizeof(float));
     return count;
 }
+
 
 int64_t RIGIDSYM_ISA_NAME(rigidsym_L_tilde_with_jacobians_f32_threads)(
     int64_t n, int threads,
@@ -200,13 +263,22 @@ int64_t RIGIDSYM_ISA_NAME(rigidsym_L_tilde_with_jacobians_f32_threads)(
 {
     const int64_t nblocks = (n + 64 - 1) / 64;
     int64_t count = 0;
-    if (threads < 1)
-        threads = 1;
+    if (threads <= 1 || nblocks <= 1) {
+        for (int64_t b = 0; b < nblocks; ++b) {
+            const int64_t i0 = b * 64;
+            count += rigidsym_L_tilde_with_jacobians_run_f32(i0, n - i0 < 64 ? n - i0 : 64,
+                in_e,
+                in_phi,
+                out_L_tilde,
+                out_L_tilde_D_e,
+                out_L_tilde_D_phi);
+        }
+        return count;
+    }
     RIGIDSYM_PARALLEL_FOR(threads)
     for (int64_t b = 0; b < nblocks; ++b) {
         const int64_t i0 = b * 64;
-        count += rigidsym_L_tilde_with_jacobians_run_f32(
-            i0, n - i0 < 64 ? n - i0 : 64,
+        count += rigidsym_L_tilde_with_jacobians_run_f32(i0, n - i0 < 64 ? n - i0 : 64,
             in_e,
             in_phi,
             out_L_tilde,
@@ -215,6 +287,7 @@ int64_t RIGIDSYM_ISA_NAME(rigidsym_L_tilde_with_jacobians_f32_threads)(
     }
     return count;
 }
+
 
 int64_t RIGIDSYM_ISA_NAME(rigidsym_L_tilde_with_jacobians_threads)(
     int64_t n, int threads,
@@ -226,15 +299,22 @@ int64_t RIGIDSYM_ISA_NAME(rigidsym_L_tilde_with_jacobians_threads)(
 {
     const int64_t nblocks = (n + 64 - 1) / 64;
     int64_t count = 0;
-    if (threads < 1)
-        threads = 1;
-    /* blocks are independent and the count is an integer sum: the result is the same for
-     * every thread count */
+    if (threads <= 1 || nblocks <= 1) {
+        for (int64_t b = 0; b < nblocks; ++b) {
+            const int64_t i0 = b * 64;
+            count += rigidsym_L_tilde_with_jacobians_run(i0, n - i0 < 64 ? n - i0 : 64,
+                in_e,
+                in_phi,
+                out_L_tilde,
+                out_L_tilde_D_e,
+                out_L_tilde_D_phi);
+        }
+        return count;
+    }
     RIGIDSYM_PARALLEL_FOR(threads)
     for (int64_t b = 0; b < nblocks; ++b) {
         const int64_t i0 = b * 64;
-        count += rigidsym_L_tilde_with_jacobians_run(
-            i0, n - i0 < 64 ? n - i0 : 64,
+        count += rigidsym_L_tilde_with_jacobians_run(i0, n - i0 < 64 ? n - i0 : 64,
             in_e,
             in_phi,
             out_L_tilde,
@@ -243,6 +323,7 @@ int64_t RIGIDSYM_ISA_NAME(rigidsym_L_tilde_with_jacobians_threads)(
     }
     return count;
 }
+
 
 int64_t RIGIDSYM_ISA_NAME(rigidsym_L_tilde_with_jacobians)(
     int64_t n,

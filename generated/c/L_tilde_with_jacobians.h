@@ -11,11 +11,17 @@
  * Left inverse of the rate matrix of the linear invariants [u; u0]: omega = L_tilde rate, with the Jacobians of its outputs.
  * L_tilde(e, phi), 3x4; and d(output)/d(input) by sympy on the declared formula
  * Singular set: 1 + cos(phi) = 0 (phi = pi)
+ *
+ * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
+ * measured at generation, rigidsym.codegen.float32; error within 0.784 ulp of float32,
+ * normwise, at its points). In double:
+ *   trig_1, x2, x13, x14
  */
 #ifndef RIGIDSYM_L_TILDE_WITH_JACOBIANS_H
 #define RIGIDSYM_L_TILDE_WITH_JACOBIANS_H
 
 #include "rigidsym_common.h"
+
 
 /* One sample: returns nonzero when the sample is singular (division by an exact zero or a
  * non-finite result). Inputs and outputs are row-major per sample. */
@@ -230,6 +236,110 @@ static inline int rigidsym_L_tilde_with_jacobians_sample_trig(
 }
 
 
+/* One float32 sample: float inputs and outputs, arithmetic of the precision plan above. */
+static inline int rigidsym_L_tilde_with_jacobians_sample_trig_f32(
+    const float *RIGIDSYM_RESTRICT in_e,
+    const float *RIGIDSYM_RESTRICT in_phi,
+    const float trig_0,
+    const double trig_1,
+    float *RIGIDSYM_RESTRICT out_L_tilde,
+    float *RIGIDSYM_RESTRICT out_L_tilde_D_e,
+    float *RIGIDSYM_RESTRICT out_L_tilde_D_phi)
+{
+    const float e_0 = in_e[0];
+    const float e_1 = in_e[1];
+    const float e_2 = in_e[2];
+    (void)in_phi;
+    int singular = 0;
+    {
+        const float x1 = trig_0;
+        const double x2 = trig_1;
+        const float x3 = x1/x2;
+        const float x4 = e_2*x3;
+        const float x5 = -x4;
+        const float x6 = e_1*x3;
+        const float x7 = e_0*x3;
+        const float x8 = -x7;
+        const float x9 = -x6;
+        const float x10 = -x3;
+        const float x11 = (x1*x1);
+        const float x12 = 1.0f/(x2*x2);
+        const double x13 = ((double)x11)*((double)x12);
+        const double x14 = (0.5)*((double)x12)*(1.0 - 2.0*((double)x11));
+        const float x15 = e_2*x13 + e_2*x14;
+        const float x16 = -x15;
+        const float x17 = e_1*x13 + e_1*x14;
+        const float x18 = e_0*x13 + e_0*x14;
+        const float x19 = -x18;
+        const float x20 = -x17;
+        out_L_tilde[0] = 1.0f;
+        out_L_tilde[1] = x5;
+        out_L_tilde[2] = x6;
+        out_L_tilde[3] = x8;
+        out_L_tilde[4] = x4;
+        out_L_tilde[5] = 1.0f;
+        out_L_tilde[6] = x8;
+        out_L_tilde[7] = x9;
+        out_L_tilde[8] = x9;
+        out_L_tilde[9] = x7;
+        out_L_tilde[10] = 1.0f;
+        out_L_tilde[11] = x5;
+        out_L_tilde_D_e[0] = 0.0f;
+        out_L_tilde_D_e[1] = 0.0f;
+        out_L_tilde_D_e[2] = 0.0f;
+        out_L_tilde_D_e[3] = 0.0f;
+        out_L_tilde_D_e[4] = 0.0f;
+        out_L_tilde_D_e[5] = x10;
+        out_L_tilde_D_e[6] = 0.0f;
+        out_L_tilde_D_e[7] = x3;
+        out_L_tilde_D_e[8] = 0.0f;
+        out_L_tilde_D_e[9] = x10;
+        out_L_tilde_D_e[10] = 0.0f;
+        out_L_tilde_D_e[11] = 0.0f;
+        out_L_tilde_D_e[12] = 0.0f;
+        out_L_tilde_D_e[13] = 0.0f;
+        out_L_tilde_D_e[14] = x3;
+        out_L_tilde_D_e[15] = 0.0f;
+        out_L_tilde_D_e[16] = 0.0f;
+        out_L_tilde_D_e[17] = 0.0f;
+        out_L_tilde_D_e[18] = x10;
+        out_L_tilde_D_e[19] = 0.0f;
+        out_L_tilde_D_e[20] = 0.0f;
+        out_L_tilde_D_e[21] = 0.0f;
+        out_L_tilde_D_e[22] = x10;
+        out_L_tilde_D_e[23] = 0.0f;
+        out_L_tilde_D_e[24] = 0.0f;
+        out_L_tilde_D_e[25] = x10;
+        out_L_tilde_D_e[26] = 0.0f;
+        out_L_tilde_D_e[27] = x3;
+        out_L_tilde_D_e[28] = 0.0f;
+        out_L_tilde_D_e[29] = 0.0f;
+        out_L_tilde_D_e[30] = 0.0f;
+        out_L_tilde_D_e[31] = 0.0f;
+        out_L_tilde_D_e[32] = 0.0f;
+        out_L_tilde_D_e[33] = 0.0f;
+        out_L_tilde_D_e[34] = 0.0f;
+        out_L_tilde_D_e[35] = x10;
+        out_L_tilde_D_phi[0] = 0.0f;
+        out_L_tilde_D_phi[1] = x16;
+        out_L_tilde_D_phi[2] = x17;
+        out_L_tilde_D_phi[3] = x19;
+        out_L_tilde_D_phi[4] = x15;
+        out_L_tilde_D_phi[5] = 0.0f;
+        out_L_tilde_D_phi[6] = x19;
+        out_L_tilde_D_phi[7] = x20;
+        out_L_tilde_D_phi[8] = x20;
+        out_L_tilde_D_phi[9] = x18;
+        out_L_tilde_D_phi[10] = 0.0f;
+        out_L_tilde_D_phi[11] = x16;
+        singular |= (x2) == 0.0;
+        const double finite = ((x3 - x3) + ((x12 - x12) + (x2 - x2)));
+        singular |= finite != finite;
+    }
+    return singular;
+}
+
+
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
  * are written as NaN; returns their number. One thread. */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_L_tilde_with_jacobians)(
@@ -251,8 +361,8 @@ int64_t RIGIDSYM_ISA_NAME(rigidsym_L_tilde_with_jacobians_threads)(
     double *RIGIDSYM_RESTRICT out_L_tilde_D_phi);
 
 
-/* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
- * is flagged too). */
+/* The same on float32 arrays (the float32 sample function: float arithmetic of the
+ * precision plan; a row whose output overflows float32 is flagged too). */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_L_tilde_with_jacobians_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_e,

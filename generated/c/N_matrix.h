@@ -11,11 +11,17 @@
  * Rate matrix of the natural invariants [e; phi]: rate = N_matrix omega.
  * N_matrix(e, phi), 4x3
  * Singular set: phi = 0 (mod 2 pi): the axis is undefined
+ *
+ * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
+ * measured at generation, rigidsym.codegen.float32; error within 0.9 ulp of float32,
+ * normwise, at its points). In double:
+ *   x2, x3, N_matrix[0], N_matrix[4], N_matrix[8]
  */
 #ifndef RIGIDSYM_N_MATRIX_H
 #define RIGIDSYM_N_MATRIX_H
 
 #include "rigidsym_common.h"
+
 
 /* One sample: returns nonzero when the sample is singular (division by an exact zero or a
  * non-finite result). Inputs and outputs are row-major per sample. */
@@ -110,6 +116,50 @@ static inline int rigidsym_N_matrix_sample_trig(
 }
 
 
+/* One float32 sample: float inputs and outputs, arithmetic of the precision plan above. */
+static inline int rigidsym_N_matrix_sample_trig_f32(
+    const float *RIGIDSYM_RESTRICT in_e,
+    const float *RIGIDSYM_RESTRICT in_phi,
+    const float trig_0,
+    const float trig_1,
+    float *RIGIDSYM_RESTRICT out_N_matrix)
+{
+    const float e_0 = in_e[0];
+    const float e_1 = in_e[1];
+    const float e_2 = in_e[2];
+    (void)in_phi;
+    int singular = 0;
+    {
+        const float x1 = trig_0;
+        const double x2 = ((double)trig_1)/((double)x1);
+        const double x3 = (0.5)*x2;
+        const float x4 = (0.5f)*e_2;
+        const float x5 = (0.5f)*e_1;
+        const float x6 = e_0*x2;
+        const float x7 = x5*x6;
+        const float x8 = x4*x6;
+        const float x9 = (0.5f)*e_0;
+        const float x10 = e_1*x2*x4;
+        out_N_matrix[0] = x3*(1.0 - (((double)e_0)*((double)e_0)));
+        out_N_matrix[1] = x4 - x7;
+        out_N_matrix[2] = -x5 - x8;
+        out_N_matrix[3] = -x4 - x7;
+        out_N_matrix[4] = x3*(1.0 - (((double)e_1)*((double)e_1)));
+        out_N_matrix[5] = -x10 + x9;
+        out_N_matrix[6] = x5 - x8;
+        out_N_matrix[7] = -x10 - x9;
+        out_N_matrix[8] = x3*(1.0 - (((double)e_2)*((double)e_2)));
+        out_N_matrix[9] = e_0;
+        out_N_matrix[10] = e_1;
+        out_N_matrix[11] = e_2;
+        singular |= (((double)x1)) == 0.0;
+        const double finite = ((x2 - x2) + (x1 - x1));
+        singular |= finite != finite;
+    }
+    return singular;
+}
+
+
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
  * are written as NaN; returns their number. One thread. */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_N_matrix)(
@@ -127,8 +177,8 @@ int64_t RIGIDSYM_ISA_NAME(rigidsym_N_matrix_threads)(
     double *RIGIDSYM_RESTRICT out_N_matrix);
 
 
-/* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
- * is flagged too). */
+/* The same on float32 arrays (the float32 sample function: float arithmetic of the
+ * precision plan; a row whose output overflows float32 is flagged too). */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_N_matrix_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_e,

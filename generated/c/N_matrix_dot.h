@@ -11,11 +11,17 @@
  * Time derivative of N_matrix along omega.
  * d/dt N_matrix(e(t), phi(t)) with e_dot, phi_dot from omega (the corrected form where the printed one does not hold)
  * Singular set: phi = 0 (mod 2 pi): the axis is undefined
+ *
+ * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
+ * measured at generation, rigidsym.codegen.float32; error within 0.986 ulp of float32,
+ * normwise, at its points). In double:
+ *   trig_0, trig_1, x6, x7, x8, x10, x15, x16, x17, x32, x37, x46, N_matrix_dot[9]
  */
 #ifndef RIGIDSYM_N_MATRIX_DOT_H
 #define RIGIDSYM_N_MATRIX_DOT_H
 
 #include "rigidsym_common.h"
+
 
 /* One sample: returns nonzero when the sample is singular (division by an exact zero or a
  * non-finite result). Inputs and outputs are row-major per sample. */
@@ -190,6 +196,90 @@ static inline int rigidsym_N_matrix_dot_sample_trig(
 }
 
 
+/* One float32 sample: float inputs and outputs, arithmetic of the precision plan above. */
+static inline int rigidsym_N_matrix_dot_sample_trig_f32(
+    const float *RIGIDSYM_RESTRICT in_e,
+    const float *RIGIDSYM_RESTRICT in_phi,
+    const float *RIGIDSYM_RESTRICT in_omega,
+    const double trig_0,
+    const double trig_1,
+    float *RIGIDSYM_RESTRICT out_N_matrix_dot)
+{
+    const float e_0 = in_e[0];
+    const float e_1 = in_e[1];
+    const float e_2 = in_e[2];
+    (void)in_phi;
+    const float omega_0 = in_omega[0];
+    const float omega_1 = in_omega[1];
+    const float omega_2 = in_omega[2];
+    int singular = 0;
+    {
+        const float x0 = e_0*omega_0;
+        const float x1 = e_1*omega_1;
+        const float x2 = 2.0f*x1;
+        const float x3 = e_2*omega_2;
+        const float x4 = 2.0f*x3;
+        const double x6 = trig_0;
+        const double x7 = (x6*x6);
+        const double x8 = 1.0 - 2.0*x7;
+        const float x9 = 2.0f*x0;
+        const double x10 = trig_1;
+        const float x11 = e_1*omega_2;
+        const float x12 = e_2*omega_1;
+        const float x13 = x11 - x12;
+        const float x14 = (e_0*e_0);
+        const double x15 = 6.0 - 4.0*x7;
+        const double x16 = ((double)x0) + ((double)x1) + ((double)x3);
+        const double x17 = (0.125)/x7;
+        const float x18 = e_0*omega_1;
+        const float x19 = 2.0f*x18;
+        const float x20 = e_1*omega_0;
+        const float x21 = 2.0f*x20;
+        const float x22 = e_2*x16 - omega_2;
+        const float x23 = 2.0f*x10*x6;
+        const float x24 = e_0*omega_2;
+        const float x25 = e_2*omega_0 - x24;
+        const float x26 = -e_0*e_1*x15*x16 - 2.0f*x10*x6*(e_0*x25 + e_1*x13);
+        const float x27 = 2.0f*x24;
+        const float x28 = 2.0f*e_2*omega_0;
+        const float x29 = e_1*x16 - omega_1;
+        const float x30 = x18 - x20;
+        const float x31 = -e_0*e_2*x15*x16 - 2.0f*x10*x6*(e_0*x30 + e_2*x13);
+        const double x32 = (((double)e_1)*((double)e_1));
+        const float x33 = 2.0f*x11;
+        const float x34 = 2.0f*x12;
+        const float x35 = e_0*x16 - omega_0;
+        const float x36 = -e_1*e_2*x15*x16 - 2.0f*x10*x6*(e_1*x30 + e_2*x25);
+        const double x37 = (((double)e_2)*((double)e_2));
+        const float x38 = (0.5f)*e_2;
+        const float x39 = (0.5f)*e_1;
+        const float x40 = x10/x6;
+        const float x41 = e_0*x40;
+        const float x42 = x39*x41;
+        const float x43 = x38*x41;
+        const float x44 = (0.5f)*x40;
+        const float x45 = (0.5f)*e_0;
+        const double x46 = ((double)e_1)*((double)x38)*((double)x40);
+        out_N_matrix_dot[0] = x17*(4.0f*e_0*x10*x13*x6 - 4.0f*x0 + x14*x15*x16 - x2 - x4 - x8*x9);
+        out_N_matrix_dot[1] = x17*(-x19 - x21*x8 - x22*x23 - x26);
+        out_N_matrix_dot[2] = x17*(x23*x29 - x27 - x28*x8 - x31);
+        out_N_matrix_dot[3] = x17*(-x19*x8 - x21 + x22*x23 - x26);
+        out_N_matrix_dot[4] = x17*(4.0f*e_1*x10*x25*x6 - 4.0f*x1 + x15*x16*x32 - x2*x8 - x4 - x9);
+        out_N_matrix_dot[5] = x17*(-x23*x35 - x33 - x34*x8 - x36);
+        out_N_matrix_dot[6] = x17*(-x23*x29 - x27*x8 - x28 - x31);
+        out_N_matrix_dot[7] = x17*(x23*x35 - x33*x8 - x34 - x36);
+        out_N_matrix_dot[8] = x17*(4.0f*e_2*x10*x30*x6 + x15*x16*x37 - x2 - 4.0f*x3 - x4*x8 - x9);
+        out_N_matrix_dot[9] = ((double)omega_0)*((double)x44)*(1.0 - ((double)x14)) + ((double)omega_1)*(((double)x38) - ((double)x42)) + ((double)omega_2)*(-((double)x39) - ((double)x43));
+        out_N_matrix_dot[10] = omega_0*(-x38 - x42) + omega_1*x44*(1.0f - x32) + omega_2*(x45 - x46);
+        out_N_matrix_dot[11] = omega_0*(x39 - x43) + omega_1*(-x45 - x46) + omega_2*x44*(1.0f - x37);
+        singular |= (x6) == 0.0;
+        const double finite = (((x17 - x17) + (x40 - x40)) + ((x7 - x7) + (x6 - x6)));
+        singular |= finite != finite;
+    }
+    return singular;
+}
+
+
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
  * are written as NaN; returns their number. One thread. */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_N_matrix_dot)(
@@ -209,8 +299,8 @@ int64_t RIGIDSYM_ISA_NAME(rigidsym_N_matrix_dot_threads)(
     double *RIGIDSYM_RESTRICT out_N_matrix_dot);
 
 
-/* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
- * is flagged too). */
+/* The same on float32 arrays (the float32 sample function: float arithmetic of the
+ * precision plan; a row whose output overflows float32 is flagged too). */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_N_matrix_dot_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_e,

@@ -11,11 +11,17 @@
  * Time derivative of N_matrix along omega, with the Jacobians of its outputs.
  * d/dt N_matrix(e(t), phi(t)) with e_dot, phi_dot from omega (the corrected form where the printed one does not hold); and d(output)/d(input) by sympy on the declared formula
  * Singular set: phi = 0 (mod 2 pi): the axis is undefined
+ *
+ * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
+ * measured at generation, rigidsym.codegen.float32; error within 1.0 ulp of float32,
+ * normwise, at its points). In double:
+ *   trig_0, trig_1, x0, x1, x2, x4, x7, x8, x11, x16, x17, x18, x19, x21, x22, x35, x36, x51, x52, x59, x60, x62, x63, x64, x73, x87, x95, x102, x114, x123, x125, x149, x162
  */
 #ifndef RIGIDSYM_N_MATRIX_DOT_WITH_JACOBIANS_H
 #define RIGIDSYM_N_MATRIX_DOT_WITH_JACOBIANS_H
 
 #include "rigidsym_common.h"
+
 
 /* One sample: returns nonzero when the sample is singular (division by an exact zero or a
  * non-finite result). Inputs and outputs are row-major per sample. */
@@ -656,6 +662,323 @@ static inline int rigidsym_N_matrix_dot_with_jacobians_sample_trig(
 }
 
 
+/* One float32 sample: float inputs and outputs, arithmetic of the precision plan above. */
+static inline int rigidsym_N_matrix_dot_with_jacobians_sample_trig_f32(
+    const float *RIGIDSYM_RESTRICT in_e,
+    const float *RIGIDSYM_RESTRICT in_phi,
+    const float *RIGIDSYM_RESTRICT in_omega,
+    const double trig_0,
+    const double trig_1,
+    float *RIGIDSYM_RESTRICT out_N_matrix_dot,
+    float *RIGIDSYM_RESTRICT out_N_matrix_dot_D_e,
+    float *RIGIDSYM_RESTRICT out_N_matrix_dot_D_phi,
+    float *RIGIDSYM_RESTRICT out_N_matrix_dot_D_omega)
+{
+    const float e_0 = in_e[0];
+    const float e_1 = in_e[1];
+    const float e_2 = in_e[2];
+    (void)in_phi;
+    const float omega_0 = in_omega[0];
+    const float omega_1 = in_omega[1];
+    const float omega_2 = in_omega[2];
+    int singular = 0;
+    {
+        const double x0 = ((double)e_0)*((double)omega_0);
+        const double x1 = 4.0*x0;
+        const double x2 = ((double)e_1)*((double)omega_1);
+        const float x3 = 2.0f*x2;
+        const double x4 = ((double)e_2)*((double)omega_2);
+        const float x5 = 2.0f*x4;
+        const double x7 = trig_0;
+        const double x8 = (x7*x7);
+        const float x9 = 1.0f - 2.0f*x8;
+        const float x10 = 2.0f*x0;
+        const double x11 = trig_1;
+        const float x12 = e_1*omega_2;
+        const float x13 = e_2*omega_1;
+        const float x14 = -x13;
+        const float x15 = x12 + x14;
+        const double x16 = (((double)e_0)*((double)e_0));
+        const double x17 = 6.0 - 4.0*x8;
+        const double x18 = x0 + x2;
+        const double x19 = x18 + x4;
+        const float x20 = 4.0f*e_0*x11*x15*x7 - x1 - x10*x9 + x16*x17*x19 - x3 - x5;
+        const double x21 = 1.0/x8;
+        const double x22 = (0.125)*x21;
+        const float x23 = e_0*omega_1;
+        const float x24 = 2.0f*x23;
+        const float x25 = e_1*omega_0;
+        const float x26 = 2.0f*x25;
+        const float x27 = e_2*x19;
+        const float x28 = -omega_2 + x27;
+        const float x29 = x11*x7;
+        const float x30 = 2.0f*x29;
+        const float x31 = e_0*omega_2;
+        const float x32 = -e_2*omega_0;
+        const float x33 = -x31 - x32;
+        const float x34 = e_0*x33 + e_1*x15;
+        const double x35 = -((double)e_0)*((double)e_1)*x17*x19 - 2.0*x11*((double)x34)*x7;
+        const double x36 = -((double)x24) - ((double)x26)*((double)x9) - ((double)x28)*((double)x30) - x35;
+        const float x37 = 2.0f*x31;
+        const float x38 = e_2*omega_0;
+        const float x39 = 2.0f*x38;
+        const float x40 = e_1*x19;
+        const float x41 = -omega_1 + x40;
+        const float x42 = -x41;
+        const float x43 = -x25;
+        const float x44 = x23 + x43;
+        const float x45 = e_0*x44 + e_2*x15;
+        const float x46 = -e_0*e_2*x17*x19 - 2.0f*x11*x45*x7;
+        const float x47 = -x30*x42 - x37 - x39*x9 - x46;
+        const float x48 = -x28;
+        const float x49 = -x24*x9 - x26 - x30*x48 - x35;
+        const float x50 = 4.0f*x2;
+        const double x51 = (((double)e_1)*((double)e_1));
+        const double x52 = 4.0*((double)e_1)*x11*((double)x33)*x7 - ((double)x10) + x17*x19*x51 - ((double)x3)*((double)x9) - ((double)x5) - ((double)x50);
+        const float x53 = 2.0f*x12;
+        const float x54 = 2.0f*x13;
+        const float x55 = e_0*x19;
+        const float x56 = -omega_0 + x55;
+        const float x57 = e_1*x44 + e_2*x33;
+        const float x58 = -e_1*e_2*x17*x19 - 2.0f*x11*x57*x7;
+        const double x59 = -((double)x30)*((double)x56) - ((double)x53) - ((double)x54)*((double)x9) - ((double)x58);
+        const double x60 = -((double)x30)*((double)x41) - ((double)x37)*((double)x9) - ((double)x39) - ((double)x46);
+        const float x61 = -x56;
+        const double x62 = -((double)x30)*((double)x61) - ((double)x53)*((double)x9) - ((double)x54) - ((double)x58);
+        const double x63 = 4.0*x4;
+        const double x64 = (((double)e_2)*((double)e_2));
+        const float x65 = 4.0f*e_2*x11*x44*x7 - x10 + x17*x19*x64 - x3 - x5*x9 - x63;
+        const float x66 = (0.5f)*e_2;
+        const float x67 = (0.5f)*e_1;
+        const float x68 = x11/x7;
+        const float x69 = e_0*x68;
+        const float x70 = x67*x69;
+        const float x71 = x66 - x70;
+        const float x72 = x66*x69;
+        const double x73 = -((double)x67) - ((double)x72);
+        const float x74 = x16 - 1.0f;
+        const float x75 = -x74;
+        const float x76 = (0.5f)*omega_0;
+        const float x77 = x75*x76;
+        const float x78 = -x66 - x70;
+        const float x79 = (0.5f)*e_0;
+        const float x80 = e_1*x66*x68;
+        const float x81 = x79 - x80;
+        const float x82 = x51 - 1.0f;
+        const float x83 = -x82;
+        const float x84 = (0.5f)*omega_1;
+        const float x85 = x83*x84;
+        const float x86 = x67 - x72;
+        const double x87 = -((double)x79) - ((double)x80);
+        const float x88 = x64 - 1.0f;
+        const float x89 = -x88;
+        const float x90 = (0.5f)*omega_2;
+        const float x91 = x89*x90;
+        const float x92 = 2.0f*omega_0;
+        const float x93 = -x9*x92;
+        const float x94 = x16*x17;
+        const double x95 = 4.0*((double)x29);
+        const float x96 = x17*x55;
+        const float x97 = 2.0f*omega_1;
+        const float x98 = -x97;
+        const float x99 = 2.0f*omega_2;
+        const float x100 = x23*x95;
+        const float x101 = x29*x39;
+        const double x102 = x17*((double)x40);
+        const float x103 = x102 + x98;
+        const float x104 = x0*x17;
+        const float x105 = e_1*x104 + x30*(-x32 - x37);
+        const float x106 = x29*x54;
+        const float x107 = x93 + x96;
+        const float x108 = e_0*x17;
+        const float x109 = x108*x2 + x30*(x14 + x53);
+        const float x110 = x18 + x5;
+        const float x111 = x108*x12 + x30*(x0 - x2);
+        const float x112 = x26*x29;
+        const float x113 = -x99;
+        const double x114 = x17*((double)x27);
+        const float x115 = x113 + x114;
+        const float x116 = e_2*x104 + x30*(x24 + x43);
+        const float x117 = x0 + x3 + x4;
+        const float x118 = -x4;
+        const float x119 = x108*x13 + x30*(-x0 - x118);
+        const float x120 = x29*x53;
+        const float x121 = x108*x4 + x30*(x12 - x54);
+        const float x122 = -x9*x97;
+        const double x123 = x102 + ((double)x122);
+        const float x124 = -x92;
+        const double x125 = ((double)x124) + ((double)x96);
+        const float x126 = x12*x95;
+        const float x127 = x17*x51;
+        const float x128 = x10 + x2 + x4;
+        const float x129 = e_1*x17;
+        const float x130 = x129*x38 + x30*(x118 + x2);
+        const float x131 = x24*x29;
+        const float x132 = e_2*x17*x2 + x30*(x23 - x26);
+        const float x133 = x29*x37;
+        const float x134 = x129*x4 + x30*(-x31 + x39);
+        const float x135 = -x9*x99;
+        const float x136 = x114 + x135;
+        const float x137 = x17*x64;
+        const float x138 = x38*x95;
+        const float x139 = x0*x68;
+        const float x140 = x2*x68;
+        const float x141 = (0.5f)*x140;
+        const float x142 = x4*x68;
+        const float x143 = (0.5f)*x142;
+        const float x144 = (0.5f)*x68;
+        const float x145 = (0.5f)*x139;
+        const float x146 = 2.0f*e_0;
+        const float x147 = x146*x9;
+        const float x148 = x19*x95;
+        const double x149 = (0.125)*x11/(x7*x7*x7);
+        const float x150 = 4.0f*e_0;
+        const float x151 = x150*x29;
+        const float x152 = x151*x40 - x34*x9;
+        const float x153 = x151*x27 - x45*x9;
+        const float x154 = 2.0f*e_1;
+        const float x155 = x154*x9;
+        const float x156 = 4.0f*e_1;
+        const float x157 = x156*x29;
+        const float x158 = x157*x27 - x57*x9;
+        const float x159 = 2.0f*e_2;
+        const float x160 = x159*x9;
+        const float x161 = (x11*x11);
+        const double x162 = ((double)x161)*x21;
+        const float x163 = (0.25f)*x9;
+        const float x164 = x163*x21;
+        const float x165 = e_0*x163*x21;
+        const float x166 = (0.5f)*e_0*e_1*x161*x21 - e_1*x165;
+        const float x167 = (0.5f)*e_0*e_2*x161*x21 - e_2*x165;
+        const float x168 = e_1*e_2;
+        const float x169 = (0.5f)*e_1*e_2*x161*x21 - x164*x168;
+        const float x170 = e_2*x151;
+        const float x171 = x154 + x170;
+        const float x172 = e_2*x94;
+        const float x173 = e_1*x151;
+        const float x174 = -x159 + x173;
+        const float x175 = -x155;
+        const float x176 = e_1*x94;
+        const float x177 = e_2*x157;
+        const float x178 = x146 + x177;
+        const float x179 = x108*x168;
+        const float x180 = x179 + x30*(-x16 + x51);
+        const float x181 = -x160;
+        const float x182 = -x64;
+        const float x183 = x179 + x30*(x16 + x182);
+        const float x184 = e_0*x137;
+        const float x185 = -x146 + x177;
+        const float x186 = -x154 + x170;
+        const float x187 = -x147;
+        const float x188 = e_0*x127;
+        const float x189 = x159 + x173;
+        const float x190 = x179 + x30*(-x182 - x51);
+        const float x191 = e_2*x127;
+        const float x192 = e_1*x137;
+        out_N_matrix_dot[0] = x20*x22;
+        out_N_matrix_dot[1] = x22*x36;
+        out_N_matrix_dot[2] = x22*x47;
+        out_N_matrix_dot[3] = x22*x49;
+        out_N_matrix_dot[4] = x22*x52;
+        out_N_matrix_dot[5] = x22*x59;
+        out_N_matrix_dot[6] = x22*x60;
+        out_N_matrix_dot[7] = x22*x62;
+        out_N_matrix_dot[8] = x22*x65;
+        out_N_matrix_dot[9] = omega_1*x71 + omega_2*x73 + x68*x77;
+        out_N_matrix_dot[10] = omega_0*x78 + omega_2*x81 + x68*x85;
+        out_N_matrix_dot[11] = omega_0*x86 + omega_1*x87 + x68*x91;
+        out_N_matrix_dot_D_e[0] = x22*(omega_0*x94 - 4.0f*omega_0 + x15*x95 + x93 + 2.0f*x96);
+        out_N_matrix_dot_D_e[1] = x22*(omega_1*x94 + x31*x95 + x98);
+        out_N_matrix_dot_D_e[2] = x22*(omega_2*x16*x17 - x100 - x99);
+        out_N_matrix_dot_D_e[3] = x22*(-x101 + x103 + x105);
+        out_N_matrix_dot_D_e[4] = x22*(-x106 + x107 + x109);
+        out_N_matrix_dot_D_e[5] = x22*(-x110*x30 + x111);
+        out_N_matrix_dot_D_e[6] = x22*(x112 + x115 + x116);
+        out_N_matrix_dot_D_e[7] = x22*(x117*x30 + x119);
+        out_N_matrix_dot_D_e[8] = x22*(x107 + x120 + x121);
+        out_N_matrix_dot_D_e[9] = x22*(x101 + x105 + x123);
+        out_N_matrix_dot_D_e[10] = x22*(x106 + x109 + x125);
+        out_N_matrix_dot_D_e[11] = x22*(x110*x30 + x111);
+        out_N_matrix_dot_D_e[12] = x22*(omega_0*x17*x51 - x126 - x92);
+        out_N_matrix_dot_D_e[13] = x22*(omega_1*x127 - 4.0f*omega_1 + 2.0f*x102 + x122 + x33*x95);
+        out_N_matrix_dot_D_e[14] = x22*(omega_2*x127 + x113 + x25*x95);
+        out_N_matrix_dot_D_e[15] = x22*(-x128*x30 + x130);
+        out_N_matrix_dot_D_e[16] = x22*(x115 - x131 + x132);
+        out_N_matrix_dot_D_e[17] = x22*(x123 - x133 + x134);
+        out_N_matrix_dot_D_e[18] = x22*(-x112 + x116 + x136);
+        out_N_matrix_dot_D_e[19] = x22*(-x117*x30 + x119);
+        out_N_matrix_dot_D_e[20] = x22*(-x120 + x121 + x125);
+        out_N_matrix_dot_D_e[21] = x22*(x128*x30 + x130);
+        out_N_matrix_dot_D_e[22] = x22*(x131 + x132 + x136);
+        out_N_matrix_dot_D_e[23] = x22*(x103 + x133 + x134);
+        out_N_matrix_dot_D_e[24] = x22*(omega_0*x137 + x124 + x13*x95);
+        out_N_matrix_dot_D_e[25] = x22*(omega_1*x17*x64 - x138 - x97);
+        out_N_matrix_dot_D_e[26] = x22*(omega_2*x137 - 4.0f*omega_2 + 2.0f*x114 + x135 + x44*x95);
+        out_N_matrix_dot_D_e[27] = -x139 - x141 - x143;
+        out_N_matrix_dot_D_e[28] = -x144*x23 - x90;
+        out_N_matrix_dot_D_e[29] = -x144*x31 + x84;
+        out_N_matrix_dot_D_e[30] = -x144*x25 + x90;
+        out_N_matrix_dot_D_e[31] = -x140 - x143 - x145;
+        out_N_matrix_dot_D_e[32] = -x12*x144 - x76;
+        out_N_matrix_dot_D_e[33] = -x144*x38 - x84;
+        out_N_matrix_dot_D_e[34] = -x13*x144 + x76;
+        out_N_matrix_dot_D_e[35] = -x141 - x142 - x145;
+        out_N_matrix_dot_D_phi[0] = -x149*x20 + x22*(x1*x29 + x147*x15 - x148*x16);
+        out_N_matrix_dot_D_phi[1] = -x149*x36 + x22*(4.0f*e_1*omega_0*x11*x7 - x152 - x28*x9);
+        out_N_matrix_dot_D_phi[2] = -x149*x47 + x22*(x138 - x153 - x42*x9);
+        out_N_matrix_dot_D_phi[3] = -x149*x49 + x22*(x100 - x152 - x48*x9);
+        out_N_matrix_dot_D_phi[4] = -x149*x52 + x22*(-x148*x51 + x155*x33 + x29*x50);
+        out_N_matrix_dot_D_phi[5] = -x149*x59 + x22*(4.0f*e_2*omega_1*x11*x7 - x158 - x56*x9);
+        out_N_matrix_dot_D_phi[6] = -x149*x60 + x22*(4.0f*e_0*omega_2*x11*x7 - x153 - x41*x9);
+        out_N_matrix_dot_D_phi[7] = -x149*x62 + x22*(x126 - x158 - x61*x9);
+        out_N_matrix_dot_D_phi[8] = -x149*x65 + x22*(-x148*x64 + x160*x44 + x29*x63);
+        out_N_matrix_dot_D_phi[9] = omega_0*x164*x75 + omega_1*x166 + omega_2*x167 - x162*x77;
+        out_N_matrix_dot_D_phi[10] = omega_0*x166 + omega_1*x164*x83 + omega_2*x169 - x162*x85;
+        out_N_matrix_dot_D_phi[11] = omega_0*x167 + omega_1*x169 + omega_2*x164*x89 - x162*x91;
+        out_N_matrix_dot_D_omega[0] = x22*((e_0*e_0*e_0)*x17 - x147 - x150);
+        out_N_matrix_dot_D_omega[1] = x22*(e_1*x16*x17 - x171);
+        out_N_matrix_dot_D_omega[2] = x22*(x172 + x174);
+        out_N_matrix_dot_D_omega[3] = x22*(x175 + x176);
+        out_N_matrix_dot_D_omega[4] = x22*(e_0*x17*x51 - x178);
+        out_N_matrix_dot_D_omega[5] = x22*(x180 - x30*x88);
+        out_N_matrix_dot_D_omega[6] = x22*(x172 + x181);
+        out_N_matrix_dot_D_omega[7] = x22*(x183 - x30*x83);
+        out_N_matrix_dot_D_omega[8] = x22*(x184 + x185);
+        out_N_matrix_dot_D_omega[9] = x22*(x176 + x186);
+        out_N_matrix_dot_D_omega[10] = x22*(x187 + x188);
+        out_N_matrix_dot_D_omega[11] = x22*(x180 - x30*x89);
+        out_N_matrix_dot_D_omega[12] = x22*(x185 + x188);
+        out_N_matrix_dot_D_omega[13] = x22*((e_1*e_1*e_1)*x17 - x155 - x156);
+        out_N_matrix_dot_D_omega[14] = x22*(e_2*x17*x51 - x189);
+        out_N_matrix_dot_D_omega[15] = x22*(x190 - x30*x74);
+        out_N_matrix_dot_D_omega[16] = x22*(x181 + x191);
+        out_N_matrix_dot_D_omega[17] = x22*(e_1*x17*x64 - x171);
+        out_N_matrix_dot_D_omega[18] = x22*(e_2*x16*x17 - x189);
+        out_N_matrix_dot_D_omega[19] = x22*(x183 - x30*x82);
+        out_N_matrix_dot_D_omega[20] = x22*(x184 + x187);
+        out_N_matrix_dot_D_omega[21] = x22*(x190 - x30*x75);
+        out_N_matrix_dot_D_omega[22] = x22*(x174 + x191);
+        out_N_matrix_dot_D_omega[23] = x22*(x175 + x192);
+        out_N_matrix_dot_D_omega[24] = x22*(e_0*x17*x64 - x178);
+        out_N_matrix_dot_D_omega[25] = x22*(x186 + x192);
+        out_N_matrix_dot_D_omega[26] = x22*((e_2*e_2*e_2)*x17 - 4.0f*e_2 - x160);
+        out_N_matrix_dot_D_omega[27] = x144*x75;
+        out_N_matrix_dot_D_omega[28] = x71;
+        out_N_matrix_dot_D_omega[29] = x73;
+        out_N_matrix_dot_D_omega[30] = x78;
+        out_N_matrix_dot_D_omega[31] = x144*x83;
+        out_N_matrix_dot_D_omega[32] = x81;
+        out_N_matrix_dot_D_omega[33] = x86;
+        out_N_matrix_dot_D_omega[34] = x87;
+        out_N_matrix_dot_D_omega[35] = x144*x89;
+        singular |= (x7) == 0.0;
+        const double finite = (((x21 - x21) + (x68 - x68)) + ((x149 - x149) + ((x8 - x8) + (x7 - x7))));
+        singular |= finite != finite;
+    }
+    return singular;
+}
+
+
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
  * are written as NaN; returns their number. One thread. */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_N_matrix_dot_with_jacobians)(
@@ -681,8 +1004,8 @@ int64_t RIGIDSYM_ISA_NAME(rigidsym_N_matrix_dot_with_jacobians_threads)(
     double *RIGIDSYM_RESTRICT out_N_matrix_dot_D_omega);
 
 
-/* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
- * is flagged too). */
+/* The same on float32 arrays (the float32 sample function: float arithmetic of the
+ * precision plan; a row whose output overflows float32 is flagged too). */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_N_matrix_dot_with_jacobians_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_e,

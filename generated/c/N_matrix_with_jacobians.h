@@ -11,11 +11,17 @@
  * Rate matrix of the natural invariants [e; phi]: rate = N_matrix omega, with the Jacobians of its outputs.
  * N_matrix(e, phi), 4x3; and d(output)/d(input) by sympy on the declared formula
  * Singular set: phi = 0 (mod 2 pi): the axis is undefined
+ *
+ * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
+ * measured at generation, rigidsym.codegen.float32; error within 0.878 ulp of float32,
+ * normwise, at its points). In double:
+ *   trig_0, trig_1, x2, x3, x20, x22, x23, x24
  */
 #ifndef RIGIDSYM_N_MATRIX_WITH_JACOBIANS_H
 #define RIGIDSYM_N_MATRIX_WITH_JACOBIANS_H
 
 #include "rigidsym_common.h"
+
 
 /* One sample: returns nonzero when the sample is singular (division by an exact zero or a
  * non-finite result). Inputs and outputs are row-major per sample. */
@@ -250,6 +256,120 @@ static inline int rigidsym_N_matrix_with_jacobians_sample_trig(
 }
 
 
+/* One float32 sample: float inputs and outputs, arithmetic of the precision plan above. */
+static inline int rigidsym_N_matrix_with_jacobians_sample_trig_f32(
+    const float *RIGIDSYM_RESTRICT in_e,
+    const float *RIGIDSYM_RESTRICT in_phi,
+    const double trig_0,
+    const double trig_1,
+    float *RIGIDSYM_RESTRICT out_N_matrix,
+    float *RIGIDSYM_RESTRICT out_N_matrix_D_e,
+    float *RIGIDSYM_RESTRICT out_N_matrix_D_phi)
+{
+    const float e_0 = in_e[0];
+    const float e_1 = in_e[1];
+    const float e_2 = in_e[2];
+    (void)in_phi;
+    int singular = 0;
+    {
+        const float x0 = 1.0f - (e_0*e_0);
+        const double x2 = trig_0;
+        const double x3 = trig_1;
+        const float x4 = x3/x2;
+        const float x5 = (0.5f)*x4;
+        const float x6 = (0.5f)*e_2;
+        const float x7 = (0.5f)*e_1;
+        const float x8 = e_0*x4;
+        const float x9 = x7*x8;
+        const float x10 = x6*x8;
+        const float x11 = 1.0f - (e_1*e_1);
+        const float x12 = (0.5f)*e_0;
+        const float x13 = e_1*x4;
+        const float x14 = x13*x6;
+        const float x15 = 1.0f - (e_2*e_2);
+        const float x16 = -x4*x7;
+        const float x17 = -x12*x4;
+        const float x18 = -x4*x6;
+        const float x19 = (x2*x2);
+        const double x20 = 1.0/((double)x19);
+        const float x21 = x0*x20;
+        const double x22 = (x3*x3);
+        const double x23 = (0.5)*x22;
+        const double x24 = 0.25 - 0.5*((double)x19);
+        const float x25 = e_0*x20*x24;
+        const float x26 = (0.5f)*e_0*e_1*x20*x22 - e_1*x25;
+        const float x27 = (0.5f)*e_0*e_2*x20*x22 - e_2*x25;
+        const float x28 = x11*x20;
+        const float x29 = (0.5f)*e_1*e_2*x20*x22 - e_1*e_2*x20*x24;
+        const float x30 = x15*x20;
+        out_N_matrix[0] = x0*x5;
+        out_N_matrix[1] = x6 - x9;
+        out_N_matrix[2] = -x10 - x7;
+        out_N_matrix[3] = -x6 - x9;
+        out_N_matrix[4] = x11*x5;
+        out_N_matrix[5] = x12 - x14;
+        out_N_matrix[6] = -x10 + x7;
+        out_N_matrix[7] = -x12 - x14;
+        out_N_matrix[8] = x15*x5;
+        out_N_matrix[9] = e_0;
+        out_N_matrix[10] = e_1;
+        out_N_matrix[11] = e_2;
+        out_N_matrix_D_e[0] = -x8;
+        out_N_matrix_D_e[1] = 0.0f;
+        out_N_matrix_D_e[2] = 0.0f;
+        out_N_matrix_D_e[3] = x16;
+        out_N_matrix_D_e[4] = x17;
+        out_N_matrix_D_e[5] = 0.5f;
+        out_N_matrix_D_e[6] = x18;
+        out_N_matrix_D_e[7] = -0.5f;
+        out_N_matrix_D_e[8] = x17;
+        out_N_matrix_D_e[9] = x16;
+        out_N_matrix_D_e[10] = x17;
+        out_N_matrix_D_e[11] = -0.5f;
+        out_N_matrix_D_e[12] = 0.0f;
+        out_N_matrix_D_e[13] = -x13;
+        out_N_matrix_D_e[14] = 0.0f;
+        out_N_matrix_D_e[15] = 0.5f;
+        out_N_matrix_D_e[16] = x18;
+        out_N_matrix_D_e[17] = x16;
+        out_N_matrix_D_e[18] = x18;
+        out_N_matrix_D_e[19] = 0.5f;
+        out_N_matrix_D_e[20] = x17;
+        out_N_matrix_D_e[21] = -0.5f;
+        out_N_matrix_D_e[22] = x18;
+        out_N_matrix_D_e[23] = x16;
+        out_N_matrix_D_e[24] = 0.0f;
+        out_N_matrix_D_e[25] = 0.0f;
+        out_N_matrix_D_e[26] = -e_2*x4;
+        out_N_matrix_D_e[27] = 1.0f;
+        out_N_matrix_D_e[28] = 0.0f;
+        out_N_matrix_D_e[29] = 0.0f;
+        out_N_matrix_D_e[30] = 0.0f;
+        out_N_matrix_D_e[31] = 1.0f;
+        out_N_matrix_D_e[32] = 0.0f;
+        out_N_matrix_D_e[33] = 0.0f;
+        out_N_matrix_D_e[34] = 0.0f;
+        out_N_matrix_D_e[35] = 1.0f;
+        out_N_matrix_D_phi[0] = -x21*x23 + x21*x24;
+        out_N_matrix_D_phi[1] = x26;
+        out_N_matrix_D_phi[2] = x27;
+        out_N_matrix_D_phi[3] = x26;
+        out_N_matrix_D_phi[4] = -x23*x28 + x24*x28;
+        out_N_matrix_D_phi[5] = x29;
+        out_N_matrix_D_phi[6] = x27;
+        out_N_matrix_D_phi[7] = x29;
+        out_N_matrix_D_phi[8] = -x23*x30 + x24*x30;
+        out_N_matrix_D_phi[9] = 0.0f;
+        out_N_matrix_D_phi[10] = 0.0f;
+        out_N_matrix_D_phi[11] = 0.0f;
+        singular |= (x2) == 0.0;
+        const double finite = (((x4 - x4) + (x20 - x20)) + ((x2 - x2) + (x19 - x19)));
+        singular |= finite != finite;
+    }
+    return singular;
+}
+
+
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
  * are written as NaN; returns their number. One thread. */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_N_matrix_with_jacobians)(
@@ -271,8 +391,8 @@ int64_t RIGIDSYM_ISA_NAME(rigidsym_N_matrix_with_jacobians_threads)(
     double *RIGIDSYM_RESTRICT out_N_matrix_D_phi);
 
 
-/* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
- * is flagged too). */
+/* The same on float32 arrays (the float32 sample function: float arithmetic of the
+ * precision plan; a row whose output overflows float32 is flagged too). */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_N_matrix_with_jacobians_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_e,

@@ -11,11 +11,17 @@
  * Time derivative of N_tilde along omega.
  * d/dt N_tilde(e(t), phi(t)) with e_dot, phi_dot from omega (the corrected form where the printed one does not hold)
  * Singular set: phi = 0 (mod 2 pi): the axis, and so its rate, is undefined
+ *
+ * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
+ * measured at generation, rigidsym.codegen.float32; error within 0.851 ulp of float32,
+ * normwise, at its points). In double:
+ *   trig_0, x1, x4, x7, x11, x15, x16, x20, x21
  */
 #ifndef RIGIDSYM_N_TILDE_DOT_H
 #define RIGIDSYM_N_TILDE_DOT_H
 
 #include "rigidsym_common.h"
+
 
 /* One sample: returns nonzero when the sample is singular (division by an exact zero or a
  * non-finite result). Inputs and outputs are row-major per sample. */
@@ -142,6 +148,66 @@ static inline int rigidsym_N_tilde_dot_sample_trig(
 }
 
 
+/* One float32 sample: float inputs and outputs, arithmetic of the precision plan above. */
+static inline int rigidsym_N_tilde_dot_sample_trig_f32(
+    const float *RIGIDSYM_RESTRICT in_e,
+    const float *RIGIDSYM_RESTRICT in_phi,
+    const float *RIGIDSYM_RESTRICT in_omega,
+    const double trig_0,
+    const float trig_1,
+    float *RIGIDSYM_RESTRICT out_N_tilde_dot)
+{
+    const float e_0 = in_e[0];
+    const float e_1 = in_e[1];
+    const float e_2 = in_e[2];
+    (void)in_phi;
+    const float omega_0 = in_omega[0];
+    const float omega_1 = in_omega[1];
+    const float omega_2 = in_omega[2];
+    int singular = 0;
+    {
+        const double x1 = trig_0;
+        const float x2 = (x1*x1);
+        const float x3 = 2.0f*x2;
+        const double x4 = ((double)e_0)*((double)omega_0) + ((double)e_1)*((double)omega_1) + ((double)e_2)*((double)omega_2);
+        const float x5 = x4*(1.0f - x3);
+        const float x6 = trig_1;
+        const double x7 = 2.0*x1*x4*((double)x6);
+        const float x8 = e_2*x7;
+        const float x9 = (0.5f)*e_1;
+        const float x10 = (0.5f)*e_0;
+        const double x11 = ((double)x6)/x1;
+        const float x12 = e_2*x11;
+        const float x13 = x10*x12;
+        const float x14 = x12*x9;
+        const double x15 = (0.5)*x11;
+        const double x16 = ((double)omega_0)*(-((double)x13) + ((double)x9)) + ((double)omega_1)*(-((double)x10) - ((double)x14)) + ((double)omega_2)*x15*(1.0 - (((double)e_2)*((double)e_2)));
+        const float x17 = e_1*x7;
+        const float x18 = (0.5f)*e_2;
+        const float x19 = e_0*x11*x9;
+        const double x20 = ((double)omega_0)*(-((double)x18) - ((double)x19)) + ((double)omega_1)*x15*(1.0 - (((double)e_1)*((double)e_1))) + ((double)omega_2)*(((double)x10) - ((double)x14));
+        const double x21 = ((double)omega_0)*x15*(1.0 - (((double)e_0)*((double)e_0))) + ((double)omega_1)*(((double)x18) - ((double)x19)) + ((double)omega_2)*(-((double)x13) - ((double)x9));
+        const float x22 = e_0*x7;
+        out_N_tilde_dot[0] = x5;
+        out_N_tilde_dot[1] = -2.0f*x16*x2 - x8;
+        out_N_tilde_dot[2] = x17 + x20*x3;
+        out_N_tilde_dot[3] = x21;
+        out_N_tilde_dot[4] = x16*x3 + x8;
+        out_N_tilde_dot[5] = x5;
+        out_N_tilde_dot[6] = -2.0f*x2*x21 - x22;
+        out_N_tilde_dot[7] = x20;
+        out_N_tilde_dot[8] = -x17 - 2.0f*x2*x20;
+        out_N_tilde_dot[9] = x21*x3 + x22;
+        out_N_tilde_dot[10] = x5;
+        out_N_tilde_dot[11] = x16;
+        singular |= (x1) == 0.0;
+        const double finite = ((x11 - x11) + (x1 - x1));
+        singular |= finite != finite;
+    }
+    return singular;
+}
+
+
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
  * are written as NaN; returns their number. One thread. */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_N_tilde_dot)(
@@ -161,8 +227,8 @@ int64_t RIGIDSYM_ISA_NAME(rigidsym_N_tilde_dot_threads)(
     double *RIGIDSYM_RESTRICT out_N_tilde_dot);
 
 
-/* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
- * is flagged too). */
+/* The same on float32 arrays (the float32 sample function: float arithmetic of the
+ * precision plan; a row whose output overflows float32 is flagged too). */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_N_tilde_dot_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_e,

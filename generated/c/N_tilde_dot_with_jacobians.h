@@ -11,11 +11,17 @@
  * Time derivative of N_tilde along omega, with the Jacobians of its outputs.
  * d/dt N_tilde(e(t), phi(t)) with e_dot, phi_dot from omega (the corrected form where the printed one does not hold); and d(output)/d(input) by sympy on the declared formula
  * Singular set: phi = 0 (mod 2 pi): the axis, and so its rate, is undefined
+ *
+ * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
+ * measured at generation, rigidsym.codegen.float32; error within 0.993 ulp of float32,
+ * normwise, at its points). In double:
+ *   trig_0, trig_1, x1, x2, x3, x4, x6, x7, x8, x10, x11, x12, x13, x17, x26, x28, x37, x40, x49, x50, x55, x56, x62, x64, x75, x76, x79, x80, x81, x82, x97, x98, x99, x101, x107, x108
  */
 #ifndef RIGIDSYM_N_TILDE_DOT_WITH_JACOBIANS_H
 #define RIGIDSYM_N_TILDE_DOT_WITH_JACOBIANS_H
 
 #include "rigidsym_common.h"
+
 
 /* One sample: returns nonzero when the sample is singular (division by an exact zero or a
  * non-finite result). Inputs and outputs are row-major per sample. */
@@ -510,6 +516,250 @@ static inline int rigidsym_N_tilde_dot_with_jacobians_sample_trig(
 }
 
 
+/* One float32 sample: float inputs and outputs, arithmetic of the precision plan above. */
+static inline int rigidsym_N_tilde_dot_with_jacobians_sample_trig_f32(
+    const float *RIGIDSYM_RESTRICT in_e,
+    const float *RIGIDSYM_RESTRICT in_phi,
+    const float *RIGIDSYM_RESTRICT in_omega,
+    const double trig_0,
+    const double trig_1,
+    float *RIGIDSYM_RESTRICT out_N_tilde_dot,
+    float *RIGIDSYM_RESTRICT out_N_tilde_dot_D_e,
+    float *RIGIDSYM_RESTRICT out_N_tilde_dot_D_phi,
+    float *RIGIDSYM_RESTRICT out_N_tilde_dot_D_omega)
+{
+    const float e_0 = in_e[0];
+    const float e_1 = in_e[1];
+    const float e_2 = in_e[2];
+    (void)in_phi;
+    const float omega_0 = in_omega[0];
+    const float omega_1 = in_omega[1];
+    const float omega_2 = in_omega[2];
+    int singular = 0;
+    {
+        const double x1 = trig_0;
+        const double x2 = (x1*x1);
+        const double x3 = 2.0*x2;
+        const double x4 = 1.0 - x3;
+        const float x5 = e_0*omega_0;
+        const double x6 = ((double)e_1)*((double)omega_1);
+        const double x7 = ((double)e_2)*((double)omega_2);
+        const double x8 = ((double)x5) + x6 + x7;
+        const float x9 = x4*x8;
+        const double x10 = trig_1;
+        const double x11 = x1*x10;
+        const double x12 = 2.0*x11;
+        const double x13 = x12*x8;
+        const float x14 = e_2*x13;
+        const float x15 = (0.5f)*e_1;
+        const float x16 = (0.5f)*e_0;
+        const double x17 = x10/x1;
+        const float x18 = e_2*x17;
+        const float x19 = x16*x18;
+        const float x20 = -x15 + x19;
+        const float x21 = -x20;
+        const float x22 = x15*x18;
+        const float x23 = x16 + x22;
+        const float x24 = -x23;
+        const float x25 = (e_2*e_2);
+        const double x26 = 1.0 - ((double)x25);
+        const float x27 = (0.5f)*omega_2;
+        const double x28 = ((double)omega_0)*((double)x21) + ((double)omega_1)*((double)x24) + x17*x26*((double)x27);
+        const float x29 = -x28;
+        const float x30 = e_1*x13;
+        const float x31 = (0.5f)*e_2;
+        const float x32 = x15*x17;
+        const float x33 = e_0*x32;
+        const float x34 = x31 + x33;
+        const float x35 = -x34;
+        const float x36 = x16 - x22;
+        const double x37 = (((double)e_1)*((double)e_1));
+        const float x38 = 1.0f - x37;
+        const float x39 = (0.5f)*omega_1;
+        const double x40 = ((double)x38)*((double)x39);
+        const float x41 = omega_0*x35 + omega_2*x36 + x17*x40;
+        const float x42 = -x31 + x33;
+        const float x43 = -x42;
+        const float x44 = x15 + x19;
+        const float x45 = -x44;
+        const float x46 = (e_0*e_0);
+        const float x47 = 1.0f - x46;
+        const float x48 = (0.5f)*omega_0;
+        const double x49 = ((double)x47)*((double)x48);
+        const double x50 = ((double)omega_1)*((double)x43) + ((double)omega_2)*((double)x45) + x17*x49;
+        const float x51 = e_0*x13;
+        const float x52 = -x50;
+        const float x53 = -x41;
+        const float x54 = omega_0*x4;
+        const double x55 = ((double)omega_1)*x4;
+        const double x56 = ((double)omega_2)*x4;
+        const float x57 = e_2*x12;
+        const float x58 = omega_0*x57;
+        const float x59 = x17*x31;
+        const float x60 = omega_0*x59 + x39;
+        const float x61 = omega_1*x57;
+        const double x62 = ((double)omega_1)*((double)x59) - ((double)x48);
+        const float x63 = x17*x7;
+        const double x64 = x17*((double)x5);
+        const float x65 = (0.5f)*x64;
+        const float x66 = x17*x6;
+        const float x67 = (0.5f)*x66;
+        const float x68 = x63 + x65 + x67;
+        const float x69 = x12*x7 + x13;
+        const float x70 = e_1*x12;
+        const float x71 = omega_0*x70;
+        const float x72 = omega_0*x32 - x27;
+        const float x73 = -x72;
+        const float x74 = (0.5f)*x63;
+        const double x75 = ((double)x65) + ((double)x66) + ((double)x74);
+        const double x76 = -x75;
+        const float x77 = x12*x6 + x13;
+        const float x78 = omega_2*x70;
+        const double x79 = ((double)omega_2)*((double)x32) + ((double)x48);
+        const double x80 = -x79;
+        const double x81 = x64 + ((double)x67) + ((double)x74);
+        const double x82 = -x81;
+        const float x83 = x16*x17;
+        const float x84 = omega_1*x83 + x27;
+        const float x85 = -x84;
+        const float x86 = omega_2*x83 - x39;
+        const float x87 = -x86;
+        const float x88 = -x60;
+        const float x89 = -x62;
+        const float x90 = -x68;
+        const float x91 = x12*x5 + x13;
+        const float x92 = e_0*x12;
+        const float x93 = omega_1*x92;
+        const float x94 = omega_2*x92;
+        const float x95 = -x13;
+        const float x96 = e_2*x9;
+        const double x97 = 1.0/x2;
+        const double x98 = (x10*x10);
+        const double x99 = (0.25)*x97;
+        const float x100 = e_0*x4;
+        const double x101 = (0.25)*((double)e_2)*x97;
+        const float x102 = (0.5f)*e_0*e_2*x97*x98 - x100*x101;
+        const float x103 = e_1*x4;
+        const float x104 = (0.5f)*e_1*e_2*x97*x98 - x101*x103;
+        const float x105 = omega_0*x102 + omega_1*x104 - 0.5f*omega_2*x26*x97*x98 + x26*x56*x99;
+        const float x106 = e_1*x9;
+        const double x107 = x97*x98;
+        const double x108 = (0.5)*((double)e_0)*((double)e_1)*x97*x98 - ((double)e_1)*((double)x100)*x99;
+        const float x109 = omega_0*x108 + omega_2*x104 - x107*x40 + x38*x55*x99;
+        const float x110 = omega_1*x108 + omega_2*x102 - x107*x49 + x47*x54*x99;
+        const float x111 = e_0*x9;
+        const float x112 = e_2*x4;
+        const float x113 = e_0*x57;
+        const float x114 = e_1*x57;
+        const float x115 = x11*x26 + x12*x25;
+        const float x116 = e_0*x70;
+        const float x117 = x11*x38 + x12*x37;
+        const float x118 = (0.5f)*x17;
+        const float x119 = x11*x47 + x12*x46;
+        out_N_tilde_dot[0] = x9;
+        out_N_tilde_dot[1] = -x14 + 2.0f*x2*x29;
+        out_N_tilde_dot[2] = x3*x41 + x30;
+        out_N_tilde_dot[3] = x50;
+        out_N_tilde_dot[4] = x14 + x28*x3;
+        out_N_tilde_dot[5] = x9;
+        out_N_tilde_dot[6] = 2.0f*x2*x52 - x51;
+        out_N_tilde_dot[7] = x41;
+        out_N_tilde_dot[8] = 2.0f*x2*x53 - x30;
+        out_N_tilde_dot[9] = x3*x50 + x51;
+        out_N_tilde_dot[10] = x9;
+        out_N_tilde_dot[11] = x28;
+        out_N_tilde_dot_D_e[0] = x54;
+        out_N_tilde_dot_D_e[1] = x55;
+        out_N_tilde_dot_D_e[2] = x56;
+        out_N_tilde_dot_D_e[3] = 2.0f*x2*x60 - x58;
+        out_N_tilde_dot_D_e[4] = 2.0f*x2*x62 - x61;
+        out_N_tilde_dot_D_e[5] = 2.0f*x2*x68 - x69;
+        out_N_tilde_dot_D_e[6] = x3*x73 + x71;
+        out_N_tilde_dot_D_e[7] = x3*x76 + x77;
+        out_N_tilde_dot_D_e[8] = x3*x80 + x78;
+        out_N_tilde_dot_D_e[9] = x82;
+        out_N_tilde_dot_D_e[10] = x85;
+        out_N_tilde_dot_D_e[11] = x87;
+        out_N_tilde_dot_D_e[12] = x3*x88 + x58;
+        out_N_tilde_dot_D_e[13] = x3*x89 + x61;
+        out_N_tilde_dot_D_e[14] = x3*x90 + x69;
+        out_N_tilde_dot_D_e[15] = x54;
+        out_N_tilde_dot_D_e[16] = x55;
+        out_N_tilde_dot_D_e[17] = x56;
+        out_N_tilde_dot_D_e[18] = 2.0f*x2*x81 - x91;
+        out_N_tilde_dot_D_e[19] = 2.0f*x2*x84 - x93;
+        out_N_tilde_dot_D_e[20] = 2.0f*x2*x86 - x94;
+        out_N_tilde_dot_D_e[21] = x73;
+        out_N_tilde_dot_D_e[22] = x76;
+        out_N_tilde_dot_D_e[23] = x80;
+        out_N_tilde_dot_D_e[24] = 2.0f*x2*x72 - x71;
+        out_N_tilde_dot_D_e[25] = 2.0f*x2*x75 - x77;
+        out_N_tilde_dot_D_e[26] = 2.0f*x2*x79 - x78;
+        out_N_tilde_dot_D_e[27] = x3*x82 + x91;
+        out_N_tilde_dot_D_e[28] = x3*x85 + x93;
+        out_N_tilde_dot_D_e[29] = x3*x87 + x94;
+        out_N_tilde_dot_D_e[30] = x54;
+        out_N_tilde_dot_D_e[31] = x55;
+        out_N_tilde_dot_D_e[32] = x56;
+        out_N_tilde_dot_D_e[33] = x88;
+        out_N_tilde_dot_D_e[34] = x89;
+        out_N_tilde_dot_D_e[35] = x90;
+        out_N_tilde_dot_D_phi[0] = x95;
+        out_N_tilde_dot_D_phi[1] = -x105*x3 + x12*x29 - x96;
+        out_N_tilde_dot_D_phi[2] = x106 + x109*x3 + x12*x41;
+        out_N_tilde_dot_D_phi[3] = x110;
+        out_N_tilde_dot_D_phi[4] = x105*x3 + x12*x28 + x96;
+        out_N_tilde_dot_D_phi[5] = x95;
+        out_N_tilde_dot_D_phi[6] = -x110*x3 - x111 + x12*x52;
+        out_N_tilde_dot_D_phi[7] = x109;
+        out_N_tilde_dot_D_phi[8] = -x106 - x109*x3 + x12*x53;
+        out_N_tilde_dot_D_phi[9] = x110*x3 + x111 + x12*x50;
+        out_N_tilde_dot_D_phi[10] = x95;
+        out_N_tilde_dot_D_phi[11] = x105;
+        out_N_tilde_dot_D_omega[0] = x100;
+        out_N_tilde_dot_D_omega[1] = x103;
+        out_N_tilde_dot_D_omega[2] = x112;
+        out_N_tilde_dot_D_omega[3] = -x113 + 2.0f*x2*x20;
+        out_N_tilde_dot_D_omega[4] = -x114 + 2.0f*x2*x23;
+        out_N_tilde_dot_D_omega[5] = -x115;
+        out_N_tilde_dot_D_omega[6] = x116 + x3*x35;
+        out_N_tilde_dot_D_omega[7] = x117;
+        out_N_tilde_dot_D_omega[8] = x114 + x3*x36;
+        out_N_tilde_dot_D_omega[9] = x118*x47;
+        out_N_tilde_dot_D_omega[10] = x43;
+        out_N_tilde_dot_D_omega[11] = x45;
+        out_N_tilde_dot_D_omega[12] = x113 + x21*x3;
+        out_N_tilde_dot_D_omega[13] = x114 + x24*x3;
+        out_N_tilde_dot_D_omega[14] = x115;
+        out_N_tilde_dot_D_omega[15] = x100;
+        out_N_tilde_dot_D_omega[16] = x103;
+        out_N_tilde_dot_D_omega[17] = x112;
+        out_N_tilde_dot_D_omega[18] = -x119;
+        out_N_tilde_dot_D_omega[19] = -x116 + 2.0f*x2*x42;
+        out_N_tilde_dot_D_omega[20] = -x113 + 2.0f*x2*x44;
+        out_N_tilde_dot_D_omega[21] = x35;
+        out_N_tilde_dot_D_omega[22] = x118*x38;
+        out_N_tilde_dot_D_omega[23] = x36;
+        out_N_tilde_dot_D_omega[24] = -x116 + 2.0f*x2*x34;
+        out_N_tilde_dot_D_omega[25] = -x117;
+        out_N_tilde_dot_D_omega[26] = -x114 - 2.0f*x2*x36;
+        out_N_tilde_dot_D_omega[27] = x119;
+        out_N_tilde_dot_D_omega[28] = x116 + x3*x43;
+        out_N_tilde_dot_D_omega[29] = x113 + x3*x45;
+        out_N_tilde_dot_D_omega[30] = x100;
+        out_N_tilde_dot_D_omega[31] = x103;
+        out_N_tilde_dot_D_omega[32] = x112;
+        out_N_tilde_dot_D_omega[33] = x21;
+        out_N_tilde_dot_D_omega[34] = x24;
+        out_N_tilde_dot_D_omega[35] = x118*x26;
+        singular |= (x1) == 0.0;
+        const double finite = (((x17 - x17) + (x97 - x97)) + ((x1 - x1) + (x2 - x2)));
+        singular |= finite != finite;
+    }
+    return singular;
+}
+
+
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
  * are written as NaN; returns their number. One thread. */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_N_tilde_dot_with_jacobians)(
@@ -535,8 +785,8 @@ int64_t RIGIDSYM_ISA_NAME(rigidsym_N_tilde_dot_with_jacobians_threads)(
     double *RIGIDSYM_RESTRICT out_N_tilde_dot_D_omega);
 
 
-/* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
- * is flagged too). */
+/* The same on float32 arrays (the float32 sample function: float arithmetic of the
+ * precision plan; a row whose output overflows float32 is flagged too). */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_N_tilde_dot_with_jacobians_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_e,

@@ -11,11 +11,17 @@
  * Euler-angle rates from omega (XZX, fixed frame).
  * eta_dot = W^-1 omega = adj(W) omega / det(W)
  * Singular set: det W = 0 (gimbal lock)
+ *
+ * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
+ * measured at generation, rigidsym.codegen.float32; error within 0.931 ulp of float32,
+ * normwise, at its points). In double:
+ *   trig_2, trig_3, x0, x1, x3, x4, x5, x6
  */
 #ifndef RIGIDSYM_EULER_ANGLE_RATES_XZX_FIXED_H
 #define RIGIDSYM_EULER_ANGLE_RATES_XZX_FIXED_H
 
 #include "rigidsym_common.h"
+
 
 /* One sample: returns nonzero when the sample is singular (division by an exact zero or a
  * non-finite result). Inputs and outputs are row-major per sample. */
@@ -88,6 +94,40 @@ static inline int rigidsym_euler_angle_rates_xzx_fixed_sample_trig(
 }
 
 
+/* One float32 sample: float inputs and outputs, arithmetic of the precision plan above. */
+static inline int rigidsym_euler_angle_rates_xzx_fixed_sample_trig_f32(
+    const float *RIGIDSYM_RESTRICT in_angles,
+    const float *RIGIDSYM_RESTRICT in_omega,
+    const float trig_0,
+    const float trig_1,
+    const double trig_2,
+    const double trig_3,
+    float *RIGIDSYM_RESTRICT out_eta_dot)
+{
+    (void)in_angles;
+    const float omega_0 = in_omega[0];
+    const float omega_1 = in_omega[1];
+    const float omega_2 = in_omega[2];
+    int singular = 0;
+    {
+        const double x0 = ((double)trig_0);
+        const double x1 = 1.0/x0;
+        const float x2 = trig_1;
+        const double x3 = trig_2;
+        const double x4 = ((double)omega_1)*x3;
+        const double x5 = trig_3;
+        const double x6 = ((double)omega_2)*x5;
+        out_eta_dot[0] = -x1*(-omega_0*x0 + x2*x4 + x2*x6);
+        out_eta_dot[1] = -x1*(omega_1*x0*x5 - omega_2*x0*x3);
+        out_eta_dot[2] = -x1*(-x4 - x6);
+        singular |= (x0) == 0.0;
+        const double finite = ((x1 - x1) + (x0 - x0));
+        singular |= finite != finite;
+    }
+    return singular;
+}
+
+
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
  * are written as NaN; returns their number. One thread. */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_euler_angle_rates_xzx_fixed)(
@@ -105,8 +145,8 @@ int64_t RIGIDSYM_ISA_NAME(rigidsym_euler_angle_rates_xzx_fixed_threads)(
     double *RIGIDSYM_RESTRICT out_eta_dot);
 
 
-/* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
- * is flagged too). */
+/* The same on float32 arrays (the float32 sample function: float arithmetic of the
+ * precision plan; a row whose output overflows float32 is flagged too). */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_euler_angle_rates_xzx_fixed_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_angles,

@@ -10,11 +10,17 @@
  *
  * Euler-angle rate matrix W (XZX, omega in the body frame).
  * omega = W eta_dot
+ *
+ * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
+ * measured at generation, rigidsym.codegen.float32; error within 0.591 ulp of float32,
+ * normwise, at its points). In double:
+ *   none
  */
 #ifndef RIGIDSYM_EULER_RATE_MATRIX_XZX_BODY_H
 #define RIGIDSYM_EULER_RATE_MATRIX_XZX_BODY_H
 
 #include "rigidsym_common.h"
+
 
 /* One sample: returns nonzero when the sample is singular (division by an exact zero or a
  * non-finite result). Inputs and outputs are row-major per sample. */
@@ -73,6 +79,35 @@ static inline int rigidsym_euler_rate_matrix_xzx_body_sample_trig(
 }
 
 
+/* One float32 sample: float inputs and outputs, arithmetic of the precision plan above. */
+static inline int rigidsym_euler_rate_matrix_xzx_body_sample_trig_f32(
+    const float *RIGIDSYM_RESTRICT in_angles,
+    const float trig_0,
+    const float trig_1,
+    const float trig_2,
+    const float trig_3,
+    float *RIGIDSYM_RESTRICT out_W)
+{
+    (void)in_angles;
+    int singular = 0;
+    {
+        const float x0 = trig_0;
+        const float x1 = trig_1;
+        const float x2 = trig_2;
+        out_W[0] = trig_3;
+        out_W[1] = 0.0f;
+        out_W[2] = 1.0f;
+        out_W[3] = -x0*x1;
+        out_W[4] = x2;
+        out_W[5] = 0.0f;
+        out_W[6] = x0*x2;
+        out_W[7] = x1;
+        out_W[8] = 0.0f;
+    }
+    return singular;
+}
+
+
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
  * are written as NaN; returns their number. One thread. */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_euler_rate_matrix_xzx_body)(
@@ -88,8 +123,8 @@ int64_t RIGIDSYM_ISA_NAME(rigidsym_euler_rate_matrix_xzx_body_threads)(
     double *RIGIDSYM_RESTRICT out_W);
 
 
-/* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
- * is flagged too). */
+/* The same on float32 arrays (the float32 sample function: float arithmetic of the
+ * precision plan; a row whose output overflows float32 is flagged too). */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_euler_rate_matrix_xzx_body_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_angles,

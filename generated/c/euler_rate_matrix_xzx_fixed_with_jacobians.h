@@ -10,11 +10,17 @@
  *
  * Euler-angle rate matrix W (XZX, omega in the fixed frame), with the Jacobians of its outputs.
  * omega = W eta_dot; and d(output)/d(input) by sympy on the declared formula
+ *
+ * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
+ * measured at generation, rigidsym.codegen.float32; error within 0.627 ulp of float32,
+ * normwise, at its points). In double:
+ *   none
  */
 #ifndef RIGIDSYM_EULER_RATE_MATRIX_XZX_FIXED_WITH_JACOBIANS_H
 #define RIGIDSYM_EULER_RATE_MATRIX_XZX_FIXED_WITH_JACOBIANS_H
 
 #include "rigidsym_common.h"
+
 
 /* One sample: returns nonzero when the sample is singular (division by an exact zero or a
  * non-finite result). Inputs and outputs are row-major per sample. */
@@ -137,6 +143,67 @@ static inline int rigidsym_euler_rate_matrix_xzx_fixed_with_jacobians_sample_tri
 }
 
 
+/* One float32 sample: float inputs and outputs, arithmetic of the precision plan above. */
+static inline int rigidsym_euler_rate_matrix_xzx_fixed_with_jacobians_sample_trig_f32(
+    const float *RIGIDSYM_RESTRICT in_angles,
+    const float trig_0,
+    const float trig_1,
+    const float trig_2,
+    const float trig_3,
+    float *RIGIDSYM_RESTRICT out_W,
+    float *RIGIDSYM_RESTRICT out_W_D_angles)
+{
+    (void)in_angles;
+    int singular = 0;
+    {
+        const float x0 = trig_0;
+        const float x1 = trig_1;
+        const float x2 = -x1;
+        const float x3 = trig_2;
+        const float x4 = trig_3;
+        const float x5 = x3*x4;
+        const float x6 = x1*x3;
+        out_W[0] = 1.0f;
+        out_W[1] = 0.0f;
+        out_W[2] = x0;
+        out_W[3] = 0.0f;
+        out_W[4] = x2;
+        out_W[5] = x5;
+        out_W[6] = 0.0f;
+        out_W[7] = x4;
+        out_W[8] = x6;
+        out_W_D_angles[0] = 0.0f;
+        out_W_D_angles[1] = 0.0f;
+        out_W_D_angles[2] = 0.0f;
+        out_W_D_angles[3] = 0.0f;
+        out_W_D_angles[4] = 0.0f;
+        out_W_D_angles[5] = 0.0f;
+        out_W_D_angles[6] = 0.0f;
+        out_W_D_angles[7] = -x3;
+        out_W_D_angles[8] = 0.0f;
+        out_W_D_angles[9] = 0.0f;
+        out_W_D_angles[10] = 0.0f;
+        out_W_D_angles[11] = 0.0f;
+        out_W_D_angles[12] = -x4;
+        out_W_D_angles[13] = 0.0f;
+        out_W_D_angles[14] = 0.0f;
+        out_W_D_angles[15] = -x6;
+        out_W_D_angles[16] = x0*x4;
+        out_W_D_angles[17] = 0.0f;
+        out_W_D_angles[18] = 0.0f;
+        out_W_D_angles[19] = 0.0f;
+        out_W_D_angles[20] = 0.0f;
+        out_W_D_angles[21] = x2;
+        out_W_D_angles[22] = 0.0f;
+        out_W_D_angles[23] = 0.0f;
+        out_W_D_angles[24] = x5;
+        out_W_D_angles[25] = x0*x1;
+        out_W_D_angles[26] = 0.0f;
+    }
+    return singular;
+}
+
+
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
  * are written as NaN; returns their number. One thread. */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_euler_rate_matrix_xzx_fixed_with_jacobians)(
@@ -154,8 +221,8 @@ int64_t RIGIDSYM_ISA_NAME(rigidsym_euler_rate_matrix_xzx_fixed_with_jacobians_th
     double *RIGIDSYM_RESTRICT out_W_D_angles);
 
 
-/* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
- * is flagged too). */
+/* The same on float32 arrays (the float32 sample function: float arithmetic of the
+ * precision plan; a row whose output overflows float32 is flagged too). */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_euler_rate_matrix_xzx_fixed_with_jacobians_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_angles,

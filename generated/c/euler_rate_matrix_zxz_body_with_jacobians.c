@@ -10,15 +10,29 @@
  */
 #include "euler_rate_matrix_zxz_body_with_jacobians.h"
 
-/* Exactly 64 samples, always: a full block of the batch, or the last partial block
- * padded. One code path for every sample, so that a sample's bits do not depend on where it
- * sits in the batch: no scalar remainder of a vector loop, and the sin/cos loop works on
- * local aligned arrays only (no alias or alignment versions of it); never
- * inlined, so that both uses run the same machine code. Then one finiteness test over the
- * first m samples' outputs (still in cache): finite inputs can overflow into a non-finite
- * output, flagged as a singular sample is. When something is flagged, each sample's flag is
- * recomputed from that sample alone (its own flag and its own output row) and its row
- * written as NaN. Returns the number of flagged samples among the first m. */
+/* Exactly NB = 64 samples, always: a full block of the batch, or a partial one padded.
+ * One code path for every sample, so that a
+ * sample's bits do not depend on where it sits in the batch: no scalar remainder of a vector
+ * loop, and the sin/cos loop works on local aligned arrays only (no alias or alignment
+ * versions of it); never inlined, so that every use runs the same machine code.
+ * Then one finiteness test over the first m samples' outputs (still in cache): finite inputs
+ * can overflow into a non-finite output, flagged as a singular sample is. When something is
+ * flagged, each sample's flag is recomputed from that sample alone (its own flag and its own
+ * output row) and its row written as NaN. Returns the number of flagged samples among the
+ * first m. T float: the float32 sample function (float inputs and outputs, the arithmetic of
+ * the precision plan in the header; sin/cos in double from the widened inputs). */
+
+/* Samples [i0, i0 + m) of the batch, m <= 64: a full block, or a partial one (the tail
+ * of a batch, a batch of a few samples, one sample) through a padded block (its samples, then
+ * copies of its last one: valid inputs). Always the same block function, so a sample's bits
+ * do not depend on its batch: smaller blocks for short batches were measured to change the
+ * last bit of some samples (the compiler vectorises a loop of 4 samples differently, and FMA
+ * contraction with it). Returns the number flagged. */
+
+/* The batch of n samples on `threads` threads: blocks are independent and the count is an
+ * integer sum, so the result is the same for every thread count. One thread (or one block):
+ * no OpenMP region at all (entering one, even with if(0), costs about a microsecond:
+ * measured, more than a one-sample call). */
 static RIGIDSYM_NOINLINE int64_t rigidsym_euler_rate_matrix_zxz_body_with_jacobians_block(
     int64_t m,
     const double *RIGIDSYM_RESTRICT in_angles,
@@ -77,22 +91,81 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_euler_rate_matrix_zxz_body_with_jacobi
     return count;
 }
 
-/* Samples [i0, i0 + m) of the batch, m <= 64; the tail through padded copies (the real
- * samples, then copies of the last one: valid inputs). Returns the number flagged. */
+
+static RIGIDSYM_NOINLINE int64_t rigidsym_euler_rate_matrix_zxz_body_with_jacobians_block_f32(
+    int64_t m,
+    const float *RIGIDSYM_RESTRICT in_angles,
+    float *RIGIDSYM_RESTRICT out_W,
+    float *RIGIDSYM_RESTRICT out_W_D_angles)
+{
+    int64_t count = 0;
+    RIGIDSYM_ALIGNED double trig_0[64];
+    RIGIDSYM_ALIGNED double trig_1[64];
+    RIGIDSYM_ALIGNED double trig_2[64];
+    RIGIDSYM_ALIGNED double trig_3[64];
+    RIGIDSYM_ALIGNED double col_angles_1[64];
+    RIGIDSYM_ALIGNED double col_angles_2[64];
+    for (int64_t j = 0; j < 64; ++j) {
+        col_angles_1[j] = in_angles[3 * j + 1];
+        col_angles_2[j] = in_angles[3 * j + 2];
+    }
+    /* a SIMD loop evaluates the sin/cos values into local arrays, then a per-sample loop
+     * reads them */
+    RIGIDSYM_SIMD
+    for (int64_t j = 0; j < 64; ++j) {
+        const double angles_1 = col_angles_1[j];
+        const double angles_2 = col_angles_2[j];
+        trig_0[j] = sin(angles_1);
+        trig_1[j] = sin(angles_2);
+        trig_2[j] = cos(angles_2);
+        trig_3[j] = cos(angles_1);
+    }
+    for (int64_t j = 0; j < 64; ++j) {
+        count += rigidsym_euler_rate_matrix_zxz_body_with_jacobians_sample_trig_f32(
+            in_angles + 3 * j,
+            trig_0[j],
+            trig_1[j],
+            trig_2[j],
+            trig_3[j],
+            out_W + 9 * j,
+            out_W_D_angles + 27 * j);
+    }
+    count += rigidsym_any_nonfinite_f32(out_W, 9 * m);
+    count += rigidsym_any_nonfinite_f32(out_W_D_angles, 27 * m);
+    if (count == 0)
+        return 0;
+    count = 0;
+    for (int64_t j = 0; j < m; ++j) {
+        int flagged = 0;
+        flagged |= rigidsym_any_nonfinite_f32(out_W + 9 * j, 9);
+        flagged |= rigidsym_any_nonfinite_f32(out_W_D_angles + 27 * j, 27);
+        if (flagged) {
+            ++count;
+            for (int c = 0; c < 9; ++c)
+                out_W[9 * j + c] = NAN;
+            for (int c = 0; c < 27; ++c)
+                out_W_D_angles[27 * j + c] = NAN;
+        }
+    }
+    return count;
+}
+
+
 static int64_t rigidsym_euler_rate_matrix_zxz_body_with_jacobians_run(
     int64_t i0, int64_t m,
     const double *RIGIDSYM_RESTRICT in_angles,
     double *RIGIDSYM_RESTRICT out_W,
     double *RIGIDSYM_RESTRICT out_W_D_angles)
 {
-    double pad_angles[3 * 64];
-    double pad_W[9 * 64];
-    double pad_W_D_angles[27 * 64];
     if (m == 64)
         return rigidsym_euler_rate_matrix_zxz_body_with_jacobians_block(m,
             in_angles + 3 * i0,
             out_W + 9 * i0,
             out_W_D_angles + 27 * i0);
+
+    double pad_angles[3 * 64];
+    double pad_W[9 * 64];
+    double pad_W_D_angles[27 * 64];
     for (int64_t j = 0; j < 64; ++j) {
         const int64_t s = i0 + (j < m ? j : m - 1);
         memcpy(pad_angles + 3 * j, in_angles + 3 * s,
@@ -107,53 +180,36 @@ static int64_t rigidsym_euler_rate_matrix_zxz_body_with_jacobians_run(
     return count;
 }
 
-/* float32 storage, float64 arithmetic: samples [i0, i0 + m) widened into the block's local
- * double arrays, evaluated by the same block function, rounded back. A finite double output
- * can overflow float32: such rows are flagged too (NaN). Returns the number flagged. */
+
 static int64_t rigidsym_euler_rate_matrix_zxz_body_with_jacobians_run_f32(
     int64_t i0, int64_t m,
     const float *RIGIDSYM_RESTRICT in_angles,
     float *RIGIDSYM_RESTRICT out_W,
     float *RIGIDSYM_RESTRICT out_W_D_angles)
 {
-    double pad_angles[3 * 64];
-    double pad_W[9 * 64];
-    double pad_W_D_angles[27 * 64];
+    if (m == 64)
+        return rigidsym_euler_rate_matrix_zxz_body_with_jacobians_block_f32(m,
+            in_angles + 3 * i0,
+            out_W + 9 * i0,
+            out_W_D_angles + 27 * i0);
+
+    float pad_angles[3 * 64];
+    float pad_W[9 * 64];
+    float pad_W_D_angles[27 * 64];
     for (int64_t j = 0; j < 64; ++j) {
         const int64_t s = i0 + (j < m ? j : m - 1);
-        for (int c = 0; c < 3; ++c)
-            pad_angles[3 * j + c] = in_angles[3 * s + c];
+        memcpy(pad_angles + 3 * j, in_angles + 3 * s,
+               3 * sizeof(float));
     }
-    int64_t count = rigidsym_euler_rate_matrix_zxz_body_with_jacobians_block(m,
+    const int64_t count = rigidsym_euler_rate_matrix_zxz_body_with_jacobians_block_f32(m,
         pad_angles,
         pad_W,
         pad_W_D_angles);
-    for (int64_t c = 0; c < 9 * m; ++c)
-        out_W[9 * i0 + c] = (float)pad_W[c];
-    for (int64_t c = 0; c < 27 * m; ++c)
-        out_W_D_angles[27 * i0 + c] = (float)pad_W_D_angles[c];
-    int64_t over = 0;
-    over += rigidsym_any_nonfinite_f32(out_W + 9 * i0, 9 * m);
-    over += rigidsym_any_nonfinite_f32(out_W_D_angles + 27 * i0, 27 * m);
-    if (over == 0)
-        return count;
-    for (int64_t j = 0; j < m; ++j) {
-        const int64_t i = i0 + j;
-        if (out_W[9 * i] != out_W[9 * i])
-            continue;                       /* flagged already: its row is NaN */
-        int flagged = 0;
-        flagged |= rigidsym_any_nonfinite_f32(out_W + 9 * i, 9);
-        flagged |= rigidsym_any_nonfinite_f32(out_W_D_angles + 27 * i, 27);
-        if (flagged) {
-            ++count;
-            for (int c = 0; c < 9; ++c)
-                out_W[9 * i + c] = NAN;
-            for (int c = 0; c < 27; ++c)
-                out_W_D_angles[27 * i + c] = NAN;
-        }
-    }
+    memcpy(out_W + 9 * i0, pad_W, 9 * m * sizeof(float));
+    memcpy(out_W_D_angles + 27 * i0, pad_W_D_angles, 27 * m * sizeof(float));
     return count;
 }
+
 
 int64_t RIGIDSYM_ISA_NAME(rigidsym_euler_rate_matrix_zxz_body_with_jacobians_f32_threads)(
     int64_t n, int threads,
@@ -163,19 +219,27 @@ int64_t RIGIDSYM_ISA_NAME(rigidsym_euler_rate_matrix_zxz_body_with_jacobians_f32
 {
     const int64_t nblocks = (n + 64 - 1) / 64;
     int64_t count = 0;
-    if (threads < 1)
-        threads = 1;
+    if (threads <= 1 || nblocks <= 1) {
+        for (int64_t b = 0; b < nblocks; ++b) {
+            const int64_t i0 = b * 64;
+            count += rigidsym_euler_rate_matrix_zxz_body_with_jacobians_run_f32(i0, n - i0 < 64 ? n - i0 : 64,
+                in_angles,
+                out_W,
+                out_W_D_angles);
+        }
+        return count;
+    }
     RIGIDSYM_PARALLEL_FOR(threads)
     for (int64_t b = 0; b < nblocks; ++b) {
         const int64_t i0 = b * 64;
-        count += rigidsym_euler_rate_matrix_zxz_body_with_jacobians_run_f32(
-            i0, n - i0 < 64 ? n - i0 : 64,
+        count += rigidsym_euler_rate_matrix_zxz_body_with_jacobians_run_f32(i0, n - i0 < 64 ? n - i0 : 64,
             in_angles,
             out_W,
             out_W_D_angles);
     }
     return count;
 }
+
 
 int64_t RIGIDSYM_ISA_NAME(rigidsym_euler_rate_matrix_zxz_body_with_jacobians_threads)(
     int64_t n, int threads,
@@ -185,21 +249,27 @@ int64_t RIGIDSYM_ISA_NAME(rigidsym_euler_rate_matrix_zxz_body_with_jacobians_thr
 {
     const int64_t nblocks = (n + 64 - 1) / 64;
     int64_t count = 0;
-    if (threads < 1)
-        threads = 1;
-    /* blocks are independent and the count is an integer sum: the result is the same for
-     * every thread count */
+    if (threads <= 1 || nblocks <= 1) {
+        for (int64_t b = 0; b < nblocks; ++b) {
+            const int64_t i0 = b * 64;
+            count += rigidsym_euler_rate_matrix_zxz_body_with_jacobians_run(i0, n - i0 < 64 ? n - i0 : 64,
+                in_angles,
+                out_W,
+                out_W_D_angles);
+        }
+        return count;
+    }
     RIGIDSYM_PARALLEL_FOR(threads)
     for (int64_t b = 0; b < nblocks; ++b) {
         const int64_t i0 = b * 64;
-        count += rigidsym_euler_rate_matrix_zxz_body_with_jacobians_run(
-            i0, n - i0 < 64 ? n - i0 : 64,
+        count += rigidsym_euler_rate_matrix_zxz_body_with_jacobians_run(i0, n - i0 < 64 ? n - i0 : 64,
             in_angles,
             out_W,
             out_W_D_angles);
     }
     return count;
 }
+
 
 int64_t RIGIDSYM_ISA_NAME(rigidsym_euler_rate_matrix_zxz_body_with_jacobians)(
     int64_t n,

@@ -10,11 +10,17 @@
  *
  * Moment of inertia about a point A, with the Jacobians of its outputs.
  * I_A = I_C - m CPM(a - c)^2; and d(output)/d(input) by sympy on the declared formula
+ *
+ * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
+ * measured at generation, rigidsym.codegen.float32; error within 0.97 ulp of float32,
+ * normwise, at its points). In double:
+ *   x0, x2, x5
  */
 #ifndef RIGIDSYM_INERTIA_AT_POINT_WITH_JACOBIANS_H
 #define RIGIDSYM_INERTIA_AT_POINT_WITH_JACOBIANS_H
 
 #include "rigidsym_common.h"
+
 
 /* One sample: returns nonzero when the sample is singular (division by an exact zero or a
  * non-finite result). Inputs and outputs are row-major per sample. */
@@ -238,6 +244,227 @@ static inline int rigidsym_inertia_at_point_with_jacobians_sample(
 }
 
 
+/* One float32 sample: float inputs and outputs, arithmetic of the precision plan above. */
+static inline int rigidsym_inertia_at_point_with_jacobians_sample_f32(
+    const float *RIGIDSYM_RESTRICT in_I_C,
+    const float *RIGIDSYM_RESTRICT in_m,
+    const float *RIGIDSYM_RESTRICT in_c,
+    const float *RIGIDSYM_RESTRICT in_a,
+    float *RIGIDSYM_RESTRICT out_I_A,
+    float *RIGIDSYM_RESTRICT out_I_A_D_I_C,
+    float *RIGIDSYM_RESTRICT out_I_A_D_m,
+    float *RIGIDSYM_RESTRICT out_I_A_D_c,
+    float *RIGIDSYM_RESTRICT out_I_A_D_a)
+{
+    const float I_C_00 = in_I_C[0];
+    const float I_C_01 = in_I_C[1];
+    const float I_C_02 = in_I_C[2];
+    const float I_C_10 = in_I_C[3];
+    const float I_C_11 = in_I_C[4];
+    const float I_C_12 = in_I_C[5];
+    const float I_C_20 = in_I_C[6];
+    const float I_C_21 = in_I_C[7];
+    const float I_C_22 = in_I_C[8];
+    const float m = in_m[0];
+    const float c_0 = in_c[0];
+    const float c_1 = in_c[1];
+    const float c_2 = in_c[2];
+    const float a_0 = in_a[0];
+    const float a_1 = in_a[1];
+    const float a_2 = in_a[2];
+    int singular = 0;
+    {
+        const double x0 = ((double)a_1) - ((double)c_1);
+        const float x1 = (x0*x0);
+        const double x2 = ((double)a_2) - ((double)c_2);
+        const float x3 = (x2*x2);
+        const float x4 = x1 + x3;
+        const double x5 = ((double)a_0) - ((double)c_0);
+        const float x6 = x0*x5;
+        const float x7 = -m*x6;
+        const float x8 = x2*x5;
+        const float x9 = -m*x8;
+        const float x10 = (x5*x5);
+        const float x11 = x10 + x3;
+        const float x12 = x0*x2;
+        const float x13 = -m*x12;
+        const float x14 = x1 + x10;
+        const float x15 = -x6;
+        const float x16 = -x8;
+        const float x17 = -x12;
+        const float x18 = 2.0f*a_1 - 2.0f*c_1;
+        const float x19 = -m*x18;
+        const float x20 = 2.0f*a_2 - 2.0f*c_2;
+        const float x21 = -m*x20;
+        const float x22 = m*x0;
+        const float x23 = m*x5;
+        const float x24 = m*x2;
+        const float x25 = 2.0f*a_0 - 2.0f*c_0;
+        const float x26 = -m*x25;
+        const float x27 = m*x18;
+        const float x28 = m*x20;
+        const float x29 = -x22;
+        const float x30 = -x23;
+        const float x31 = -x24;
+        const float x32 = m*x25;
+        out_I_A[0] = I_C_00 + m*x4;
+        out_I_A[1] = I_C_01 + x7;
+        out_I_A[2] = I_C_02 + x9;
+        out_I_A[3] = I_C_10 + x7;
+        out_I_A[4] = I_C_11 + m*x11;
+        out_I_A[5] = I_C_12 + x13;
+        out_I_A[6] = I_C_20 + x9;
+        out_I_A[7] = I_C_21 + x13;
+        out_I_A[8] = I_C_22 + m*x14;
+        out_I_A_D_I_C[0] = 1.0f;
+        out_I_A_D_I_C[1] = 0.0f;
+        out_I_A_D_I_C[2] = 0.0f;
+        out_I_A_D_I_C[3] = 0.0f;
+        out_I_A_D_I_C[4] = 0.0f;
+        out_I_A_D_I_C[5] = 0.0f;
+        out_I_A_D_I_C[6] = 0.0f;
+        out_I_A_D_I_C[7] = 0.0f;
+        out_I_A_D_I_C[8] = 0.0f;
+        out_I_A_D_I_C[9] = 0.0f;
+        out_I_A_D_I_C[10] = 1.0f;
+        out_I_A_D_I_C[11] = 0.0f;
+        out_I_A_D_I_C[12] = 0.0f;
+        out_I_A_D_I_C[13] = 0.0f;
+        out_I_A_D_I_C[14] = 0.0f;
+        out_I_A_D_I_C[15] = 0.0f;
+        out_I_A_D_I_C[16] = 0.0f;
+        out_I_A_D_I_C[17] = 0.0f;
+        out_I_A_D_I_C[18] = 0.0f;
+        out_I_A_D_I_C[19] = 0.0f;
+        out_I_A_D_I_C[20] = 1.0f;
+        out_I_A_D_I_C[21] = 0.0f;
+        out_I_A_D_I_C[22] = 0.0f;
+        out_I_A_D_I_C[23] = 0.0f;
+        out_I_A_D_I_C[24] = 0.0f;
+        out_I_A_D_I_C[25] = 0.0f;
+        out_I_A_D_I_C[26] = 0.0f;
+        out_I_A_D_I_C[27] = 0.0f;
+        out_I_A_D_I_C[28] = 0.0f;
+        out_I_A_D_I_C[29] = 0.0f;
+        out_I_A_D_I_C[30] = 1.0f;
+        out_I_A_D_I_C[31] = 0.0f;
+        out_I_A_D_I_C[32] = 0.0f;
+        out_I_A_D_I_C[33] = 0.0f;
+        out_I_A_D_I_C[34] = 0.0f;
+        out_I_A_D_I_C[35] = 0.0f;
+        out_I_A_D_I_C[36] = 0.0f;
+        out_I_A_D_I_C[37] = 0.0f;
+        out_I_A_D_I_C[38] = 0.0f;
+        out_I_A_D_I_C[39] = 0.0f;
+        out_I_A_D_I_C[40] = 1.0f;
+        out_I_A_D_I_C[41] = 0.0f;
+        out_I_A_D_I_C[42] = 0.0f;
+        out_I_A_D_I_C[43] = 0.0f;
+        out_I_A_D_I_C[44] = 0.0f;
+        out_I_A_D_I_C[45] = 0.0f;
+        out_I_A_D_I_C[46] = 0.0f;
+        out_I_A_D_I_C[47] = 0.0f;
+        out_I_A_D_I_C[48] = 0.0f;
+        out_I_A_D_I_C[49] = 0.0f;
+        out_I_A_D_I_C[50] = 1.0f;
+        out_I_A_D_I_C[51] = 0.0f;
+        out_I_A_D_I_C[52] = 0.0f;
+        out_I_A_D_I_C[53] = 0.0f;
+        out_I_A_D_I_C[54] = 0.0f;
+        out_I_A_D_I_C[55] = 0.0f;
+        out_I_A_D_I_C[56] = 0.0f;
+        out_I_A_D_I_C[57] = 0.0f;
+        out_I_A_D_I_C[58] = 0.0f;
+        out_I_A_D_I_C[59] = 0.0f;
+        out_I_A_D_I_C[60] = 1.0f;
+        out_I_A_D_I_C[61] = 0.0f;
+        out_I_A_D_I_C[62] = 0.0f;
+        out_I_A_D_I_C[63] = 0.0f;
+        out_I_A_D_I_C[64] = 0.0f;
+        out_I_A_D_I_C[65] = 0.0f;
+        out_I_A_D_I_C[66] = 0.0f;
+        out_I_A_D_I_C[67] = 0.0f;
+        out_I_A_D_I_C[68] = 0.0f;
+        out_I_A_D_I_C[69] = 0.0f;
+        out_I_A_D_I_C[70] = 1.0f;
+        out_I_A_D_I_C[71] = 0.0f;
+        out_I_A_D_I_C[72] = 0.0f;
+        out_I_A_D_I_C[73] = 0.0f;
+        out_I_A_D_I_C[74] = 0.0f;
+        out_I_A_D_I_C[75] = 0.0f;
+        out_I_A_D_I_C[76] = 0.0f;
+        out_I_A_D_I_C[77] = 0.0f;
+        out_I_A_D_I_C[78] = 0.0f;
+        out_I_A_D_I_C[79] = 0.0f;
+        out_I_A_D_I_C[80] = 1.0f;
+        out_I_A_D_m[0] = x4;
+        out_I_A_D_m[1] = x15;
+        out_I_A_D_m[2] = x16;
+        out_I_A_D_m[3] = x15;
+        out_I_A_D_m[4] = x11;
+        out_I_A_D_m[5] = x17;
+        out_I_A_D_m[6] = x16;
+        out_I_A_D_m[7] = x17;
+        out_I_A_D_m[8] = x14;
+        out_I_A_D_c[0] = 0.0f;
+        out_I_A_D_c[1] = x19;
+        out_I_A_D_c[2] = x21;
+        out_I_A_D_c[3] = x22;
+        out_I_A_D_c[4] = x23;
+        out_I_A_D_c[5] = 0.0f;
+        out_I_A_D_c[6] = x24;
+        out_I_A_D_c[7] = 0.0f;
+        out_I_A_D_c[8] = x23;
+        out_I_A_D_c[9] = x22;
+        out_I_A_D_c[10] = x23;
+        out_I_A_D_c[11] = 0.0f;
+        out_I_A_D_c[12] = x26;
+        out_I_A_D_c[13] = 0.0f;
+        out_I_A_D_c[14] = x21;
+        out_I_A_D_c[15] = 0.0f;
+        out_I_A_D_c[16] = x24;
+        out_I_A_D_c[17] = x22;
+        out_I_A_D_c[18] = x24;
+        out_I_A_D_c[19] = 0.0f;
+        out_I_A_D_c[20] = x23;
+        out_I_A_D_c[21] = 0.0f;
+        out_I_A_D_c[22] = x24;
+        out_I_A_D_c[23] = x22;
+        out_I_A_D_c[24] = x26;
+        out_I_A_D_c[25] = x19;
+        out_I_A_D_c[26] = 0.0f;
+        out_I_A_D_a[0] = 0.0f;
+        out_I_A_D_a[1] = x27;
+        out_I_A_D_a[2] = x28;
+        out_I_A_D_a[3] = x29;
+        out_I_A_D_a[4] = x30;
+        out_I_A_D_a[5] = 0.0f;
+        out_I_A_D_a[6] = x31;
+        out_I_A_D_a[7] = 0.0f;
+        out_I_A_D_a[8] = x30;
+        out_I_A_D_a[9] = x29;
+        out_I_A_D_a[10] = x30;
+        out_I_A_D_a[11] = 0.0f;
+        out_I_A_D_a[12] = x32;
+        out_I_A_D_a[13] = 0.0f;
+        out_I_A_D_a[14] = x28;
+        out_I_A_D_a[15] = 0.0f;
+        out_I_A_D_a[16] = x31;
+        out_I_A_D_a[17] = x29;
+        out_I_A_D_a[18] = x31;
+        out_I_A_D_a[19] = 0.0f;
+        out_I_A_D_a[20] = x30;
+        out_I_A_D_a[21] = 0.0f;
+        out_I_A_D_a[22] = x31;
+        out_I_A_D_a[23] = x29;
+        out_I_A_D_a[24] = x32;
+        out_I_A_D_a[25] = x27;
+        out_I_A_D_a[26] = 0.0f;
+    }
+    return singular;
+}
+
+
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
  * are written as NaN; returns their number. One thread. */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_inertia_at_point_with_jacobians)(
@@ -267,8 +494,8 @@ int64_t RIGIDSYM_ISA_NAME(rigidsym_inertia_at_point_with_jacobians_threads)(
     double *RIGIDSYM_RESTRICT out_I_A_D_a);
 
 
-/* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
- * is flagged too). */
+/* The same on float32 arrays (the float32 sample function: float arithmetic of the
+ * precision plan; a row whose output overflows float32 is flagged too). */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_inertia_at_point_with_jacobians_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_I_C,

@@ -10,11 +10,17 @@
  *
  * Inertia dyad M_A (6x6) at point A.
  * M_A per (3.147)
+ *
+ * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
+ * measured at generation, rigidsym.codegen.float32; error within 0.97 ulp of float32,
+ * normwise, at its points). In double:
+ *   x0, x2, x4
  */
 #ifndef RIGIDSYM_INERTIA_DYAD_AT_POINT_H
 #define RIGIDSYM_INERTIA_DYAD_AT_POINT_H
 
 #include "rigidsym_common.h"
+
 
 /* One sample: returns nonzero when the sample is singular (division by an exact zero or a
  * non-finite result). Inputs and outputs are row-major per sample. */
@@ -99,6 +105,88 @@ static inline int rigidsym_inertia_dyad_at_point_sample(
 }
 
 
+/* One float32 sample: float inputs and outputs, arithmetic of the precision plan above. */
+static inline int rigidsym_inertia_dyad_at_point_sample_f32(
+    const float *RIGIDSYM_RESTRICT in_I_C,
+    const float *RIGIDSYM_RESTRICT in_m,
+    const float *RIGIDSYM_RESTRICT in_c,
+    const float *RIGIDSYM_RESTRICT in_a,
+    float *RIGIDSYM_RESTRICT out_M_A)
+{
+    const float I_C_00 = in_I_C[0];
+    const float I_C_01 = in_I_C[1];
+    const float I_C_02 = in_I_C[2];
+    const float I_C_10 = in_I_C[3];
+    const float I_C_11 = in_I_C[4];
+    const float I_C_12 = in_I_C[5];
+    const float I_C_20 = in_I_C[6];
+    const float I_C_21 = in_I_C[7];
+    const float I_C_22 = in_I_C[8];
+    const float m = in_m[0];
+    const float c_0 = in_c[0];
+    const float c_1 = in_c[1];
+    const float c_2 = in_c[2];
+    const float a_0 = in_a[0];
+    const float a_1 = in_a[1];
+    const float a_2 = in_a[2];
+    int singular = 0;
+    {
+        const double x0 = ((double)a_1) - ((double)c_1);
+        const float x1 = (x0*x0);
+        const double x2 = ((double)a_2) - ((double)c_2);
+        const float x3 = (x2*x2);
+        const double x4 = ((double)a_0) - ((double)c_0);
+        const float x5 = m*x4;
+        const float x6 = -x0*x5;
+        const float x7 = m*x2;
+        const float x8 = -x4*x7;
+        const float x9 = -m*x0;
+        const float x10 = (x4*x4);
+        const float x11 = -x0*x7;
+        const float x12 = -m*x2;
+        const float x13 = m*x0;
+        const float x14 = -m*x4;
+        out_M_A[0] = I_C_00 + m*(x1 + x3);
+        out_M_A[1] = I_C_01 + x6;
+        out_M_A[2] = I_C_02 + x8;
+        out_M_A[3] = 0.0f;
+        out_M_A[4] = x7;
+        out_M_A[5] = x9;
+        out_M_A[6] = I_C_10 + x6;
+        out_M_A[7] = I_C_11 + m*(x10 + x3);
+        out_M_A[8] = I_C_12 + x11;
+        out_M_A[9] = x12;
+        out_M_A[10] = 0.0f;
+        out_M_A[11] = x5;
+        out_M_A[12] = I_C_20 + x8;
+        out_M_A[13] = I_C_21 + x11;
+        out_M_A[14] = I_C_22 + m*(x1 + x10);
+        out_M_A[15] = x13;
+        out_M_A[16] = x14;
+        out_M_A[17] = 0.0f;
+        out_M_A[18] = 0.0f;
+        out_M_A[19] = x12;
+        out_M_A[20] = x13;
+        out_M_A[21] = m;
+        out_M_A[22] = 0.0f;
+        out_M_A[23] = 0.0f;
+        out_M_A[24] = x7;
+        out_M_A[25] = 0.0f;
+        out_M_A[26] = x14;
+        out_M_A[27] = 0.0f;
+        out_M_A[28] = m;
+        out_M_A[29] = 0.0f;
+        out_M_A[30] = x9;
+        out_M_A[31] = x5;
+        out_M_A[32] = 0.0f;
+        out_M_A[33] = 0.0f;
+        out_M_A[34] = 0.0f;
+        out_M_A[35] = m;
+    }
+    return singular;
+}
+
+
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
  * are written as NaN; returns their number. One thread. */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_inertia_dyad_at_point)(
@@ -120,8 +208,8 @@ int64_t RIGIDSYM_ISA_NAME(rigidsym_inertia_dyad_at_point_threads)(
     double *RIGIDSYM_RESTRICT out_M_A);
 
 
-/* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
- * is flagged too). */
+/* The same on float32 arrays (the float32 sample function: float arithmetic of the
+ * precision plan; a row whose output overflows float32 is flagged too). */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_inertia_dyad_at_point_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_I_C,

@@ -10,14 +10,28 @@
  */
 #include "instant_screw_axis.h"
 
-/* Exactly RIGIDSYM_CHECK_BLOCK samples, always: a full block of the batch, or the last partial block
- * padded. One code path for every sample, so that a sample's bits do not depend on where it
- * sits in the batch: no scalar remainder of a vector loop; never
- * inlined, so that both uses run the same machine code. Then one finiteness test over the
- * first m samples' outputs (still in cache): finite inputs can overflow into a non-finite
- * output, flagged as a singular sample is. When something is flagged, each sample's flag is
- * recomputed from that sample alone (its own flag and its own output row) and its row
- * written as NaN. Returns the number of flagged samples among the first m. */
+/* Exactly NB = RIGIDSYM_CHECK_BLOCK samples, always: a full block of the batch, or a partial one padded.
+ * One code path for every sample, so that a
+ * sample's bits do not depend on where it sits in the batch: no scalar remainder of a vector
+ * loop; never inlined, so that every use runs the same machine code.
+ * Then one finiteness test over the first m samples' outputs (still in cache): finite inputs
+ * can overflow into a non-finite output, flagged as a singular sample is. When something is
+ * flagged, each sample's flag is recomputed from that sample alone (its own flag and its own
+ * output row) and its row written as NaN. Returns the number of flagged samples among the
+ * first m. T float: the float32 sample function (float inputs and outputs, the arithmetic of
+ * the precision plan in the header; sin/cos in double from the widened inputs). */
+
+/* Samples [i0, i0 + m) of the batch, m <= RIGIDSYM_CHECK_BLOCK: a full block, or a partial one (the tail
+ * of a batch, a batch of a few samples, one sample) through a padded block (its samples, then
+ * copies of its last one: valid inputs). Always the same block function, so a sample's bits
+ * do not depend on its batch: smaller blocks for short batches were measured to change the
+ * last bit of some samples (the compiler vectorises a loop of 4 samples differently, and FMA
+ * contraction with it). Returns the number flagged. */
+
+/* The batch of n samples on `threads` threads: blocks are independent and the count is an
+ * integer sum, so the result is the same for every thread count. One thread (or one block):
+ * no OpenMP region at all (entering one, even with if(0), costs about a microsecond:
+ * measured, more than a one-sample call). */
 static RIGIDSYM_NOINLINE int64_t rigidsym_instant_screw_axis_block(
     int64_t m,
     const double *RIGIDSYM_RESTRICT in_omega,
@@ -38,6 +52,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_instant_screw_axis_block(
             out_p0 + 3 * j,
             out_pitch + 1 * j,
             out_plucker + 6 * j);
+
     }
     count += rigidsym_any_nonfinite(out_p0, 3 * m);
     count += rigidsym_any_nonfinite(out_pitch, 1 * m);
@@ -72,8 +87,63 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_instant_screw_axis_block(
     return count;
 }
 
-/* Samples [i0, i0 + m) of the batch, m <= RIGIDSYM_CHECK_BLOCK; the tail through padded copies (the real
- * samples, then copies of the last one: valid inputs). Returns the number flagged. */
+
+static RIGIDSYM_NOINLINE int64_t rigidsym_instant_screw_axis_block_f32(
+    int64_t m,
+    const float *RIGIDSYM_RESTRICT in_omega,
+    const float *RIGIDSYM_RESTRICT in_a,
+    const float *RIGIDSYM_RESTRICT in_a_dot,
+    float *RIGIDSYM_RESTRICT out_p0,
+    float *RIGIDSYM_RESTRICT out_pitch,
+    float *RIGIDSYM_RESTRICT out_plucker)
+{
+    int64_t count = 0;
+    /* branch-free so that the compiler can vectorise it */
+    RIGIDSYM_SIMD_COUNT
+    for (int64_t j = 0; j < RIGIDSYM_CHECK_BLOCK; ++j) {
+        count += rigidsym_instant_screw_axis_sample_f32(
+            in_omega + 3 * j,
+            in_a + 3 * j,
+            in_a_dot + 3 * j,
+            out_p0 + 3 * j,
+            out_pitch + 1 * j,
+            out_plucker + 6 * j);
+
+    }
+    count += rigidsym_any_nonfinite_f32(out_p0, 3 * m);
+    count += rigidsym_any_nonfinite_f32(out_pitch, 1 * m);
+    count += rigidsym_any_nonfinite_f32(out_plucker, 6 * m);
+    if (count == 0)
+        return 0;
+    count = 0;
+    for (int64_t j = 0; j < m; ++j) {
+        float tmp_p0[3];
+        float tmp_pitch[1];
+        float tmp_plucker[6];
+        int flagged = rigidsym_instant_screw_axis_sample_f32(
+            in_omega + 3 * j,
+            in_a + 3 * j,
+            in_a_dot + 3 * j,
+            tmp_p0,
+            tmp_pitch,
+            tmp_plucker);
+        flagged |= rigidsym_any_nonfinite_f32(out_p0 + 3 * j, 3);
+        flagged |= rigidsym_any_nonfinite_f32(out_pitch + 1 * j, 1);
+        flagged |= rigidsym_any_nonfinite_f32(out_plucker + 6 * j, 6);
+        if (flagged) {
+            ++count;
+            for (int c = 0; c < 3; ++c)
+                out_p0[3 * j + c] = NAN;
+            for (int c = 0; c < 1; ++c)
+                out_pitch[1 * j + c] = NAN;
+            for (int c = 0; c < 6; ++c)
+                out_plucker[6 * j + c] = NAN;
+        }
+    }
+    return count;
+}
+
+
 static int64_t rigidsym_instant_screw_axis_run(
     int64_t i0, int64_t m,
     const double *RIGIDSYM_RESTRICT in_omega,
@@ -83,12 +153,6 @@ static int64_t rigidsym_instant_screw_axis_run(
     double *RIGIDSYM_RESTRICT out_pitch,
     double *RIGIDSYM_RESTRICT out_plucker)
 {
-    double pad_omega[3 * RIGIDSYM_CHECK_BLOCK];
-    double pad_a[3 * RIGIDSYM_CHECK_BLOCK];
-    double pad_a_dot[3 * RIGIDSYM_CHECK_BLOCK];
-    double pad_p0[3 * RIGIDSYM_CHECK_BLOCK];
-    double pad_pitch[1 * RIGIDSYM_CHECK_BLOCK];
-    double pad_plucker[6 * RIGIDSYM_CHECK_BLOCK];
     if (m == RIGIDSYM_CHECK_BLOCK)
         return rigidsym_instant_screw_axis_block(m,
             in_omega + 3 * i0,
@@ -97,6 +161,13 @@ static int64_t rigidsym_instant_screw_axis_run(
             out_p0 + 3 * i0,
             out_pitch + 1 * i0,
             out_plucker + 6 * i0);
+
+    double pad_omega[3 * RIGIDSYM_CHECK_BLOCK];
+    double pad_a[3 * RIGIDSYM_CHECK_BLOCK];
+    double pad_a_dot[3 * RIGIDSYM_CHECK_BLOCK];
+    double pad_p0[3 * RIGIDSYM_CHECK_BLOCK];
+    double pad_pitch[1 * RIGIDSYM_CHECK_BLOCK];
+    double pad_plucker[6 * RIGIDSYM_CHECK_BLOCK];
     for (int64_t j = 0; j < RIGIDSYM_CHECK_BLOCK; ++j) {
         const int64_t s = i0 + (j < m ? j : m - 1);
         memcpy(pad_omega + 3 * j, in_omega + 3 * s,
@@ -119,9 +190,7 @@ static int64_t rigidsym_instant_screw_axis_run(
     return count;
 }
 
-/* float32 storage, float64 arithmetic: samples [i0, i0 + m) widened into the block's local
- * double arrays, evaluated by the same block function, rounded back. A finite double output
- * can overflow float32: such rows are flagged too (NaN). Returns the number flagged. */
+
 static int64_t rigidsym_instant_screw_axis_run_f32(
     int64_t i0, int64_t m,
     const float *RIGIDSYM_RESTRICT in_omega,
@@ -131,60 +200,43 @@ static int64_t rigidsym_instant_screw_axis_run_f32(
     float *RIGIDSYM_RESTRICT out_pitch,
     float *RIGIDSYM_RESTRICT out_plucker)
 {
-    double pad_omega[3 * RIGIDSYM_CHECK_BLOCK];
-    double pad_a[3 * RIGIDSYM_CHECK_BLOCK];
-    double pad_a_dot[3 * RIGIDSYM_CHECK_BLOCK];
-    double pad_p0[3 * RIGIDSYM_CHECK_BLOCK];
-    double pad_pitch[1 * RIGIDSYM_CHECK_BLOCK];
-    double pad_plucker[6 * RIGIDSYM_CHECK_BLOCK];
+    if (m == RIGIDSYM_CHECK_BLOCK)
+        return rigidsym_instant_screw_axis_block_f32(m,
+            in_omega + 3 * i0,
+            in_a + 3 * i0,
+            in_a_dot + 3 * i0,
+            out_p0 + 3 * i0,
+            out_pitch + 1 * i0,
+            out_plucker + 6 * i0);
+
+    float pad_omega[3 * RIGIDSYM_CHECK_BLOCK];
+    float pad_a[3 * RIGIDSYM_CHECK_BLOCK];
+    float pad_a_dot[3 * RIGIDSYM_CHECK_BLOCK];
+    float pad_p0[3 * RIGIDSYM_CHECK_BLOCK];
+    float pad_pitch[1 * RIGIDSYM_CHECK_BLOCK];
+    float pad_plucker[6 * RIGIDSYM_CHECK_BLOCK];
     for (int64_t j = 0; j < RIGIDSYM_CHECK_BLOCK; ++j) {
         const int64_t s = i0 + (j < m ? j : m - 1);
-        for (int c = 0; c < 3; ++c)
-            pad_omega[3 * j + c] = in_omega[3 * s + c];
-        for (int c = 0; c < 3; ++c)
-            pad_a[3 * j + c] = in_a[3 * s + c];
-        for (int c = 0; c < 3; ++c)
-            pad_a_dot[3 * j + c] = in_a_dot[3 * s + c];
+        memcpy(pad_omega + 3 * j, in_omega + 3 * s,
+               3 * sizeof(float));
+        memcpy(pad_a + 3 * j, in_a + 3 * s,
+               3 * sizeof(float));
+        memcpy(pad_a_dot + 3 * j, in_a_dot + 3 * s,
+               3 * sizeof(float));
     }
-    int64_t count = rigidsym_instant_screw_axis_block(m,
+    const int64_t count = rigidsym_instant_screw_axis_block_f32(m,
         pad_omega,
         pad_a,
         pad_a_dot,
         pad_p0,
         pad_pitch,
         pad_plucker);
-    for (int64_t c = 0; c < 3 * m; ++c)
-        out_p0[3 * i0 + c] = (float)pad_p0[c];
-    for (int64_t c = 0; c < 1 * m; ++c)
-        out_pitch[1 * i0 + c] = (float)pad_pitch[c];
-    for (int64_t c = 0; c < 6 * m; ++c)
-        out_plucker[6 * i0 + c] = (float)pad_plucker[c];
-    int64_t over = 0;
-    over += rigidsym_any_nonfinite_f32(out_p0 + 3 * i0, 3 * m);
-    over += rigidsym_any_nonfinite_f32(out_pitch + 1 * i0, 1 * m);
-    over += rigidsym_any_nonfinite_f32(out_plucker + 6 * i0, 6 * m);
-    if (over == 0)
-        return count;
-    for (int64_t j = 0; j < m; ++j) {
-        const int64_t i = i0 + j;
-        if (out_p0[3 * i] != out_p0[3 * i])
-            continue;                       /* flagged already: its row is NaN */
-        int flagged = 0;
-        flagged |= rigidsym_any_nonfinite_f32(out_p0 + 3 * i, 3);
-        flagged |= rigidsym_any_nonfinite_f32(out_pitch + 1 * i, 1);
-        flagged |= rigidsym_any_nonfinite_f32(out_plucker + 6 * i, 6);
-        if (flagged) {
-            ++count;
-            for (int c = 0; c < 3; ++c)
-                out_p0[3 * i + c] = NAN;
-            for (int c = 0; c < 1; ++c)
-                out_pitch[1 * i + c] = NAN;
-            for (int c = 0; c < 6; ++c)
-                out_plucker[6 * i + c] = NAN;
-        }
-    }
+    memcpy(out_p0 + 3 * i0, pad_p0, 3 * m * sizeof(float));
+    memcpy(out_pitch + 1 * i0, pad_pitch, 1 * m * sizeof(float));
+    memcpy(out_plucker + 6 * i0, pad_plucker, 6 * m * sizeof(float));
     return count;
 }
+
 
 int64_t RIGIDSYM_ISA_NAME(rigidsym_instant_screw_axis_f32_threads)(
     int64_t n, int threads,
@@ -197,13 +249,23 @@ int64_t RIGIDSYM_ISA_NAME(rigidsym_instant_screw_axis_f32_threads)(
 {
     const int64_t nblocks = (n + RIGIDSYM_CHECK_BLOCK - 1) / RIGIDSYM_CHECK_BLOCK;
     int64_t count = 0;
-    if (threads < 1)
-        threads = 1;
+    if (threads <= 1 || nblocks <= 1) {
+        for (int64_t b = 0; b < nblocks; ++b) {
+            const int64_t i0 = b * RIGIDSYM_CHECK_BLOCK;
+            count += rigidsym_instant_screw_axis_run_f32(i0, n - i0 < RIGIDSYM_CHECK_BLOCK ? n - i0 : RIGIDSYM_CHECK_BLOCK,
+                in_omega,
+                in_a,
+                in_a_dot,
+                out_p0,
+                out_pitch,
+                out_plucker);
+        }
+        return count;
+    }
     RIGIDSYM_PARALLEL_FOR(threads)
     for (int64_t b = 0; b < nblocks; ++b) {
         const int64_t i0 = b * RIGIDSYM_CHECK_BLOCK;
-        count += rigidsym_instant_screw_axis_run_f32(
-            i0, n - i0 < RIGIDSYM_CHECK_BLOCK ? n - i0 : RIGIDSYM_CHECK_BLOCK,
+        count += rigidsym_instant_screw_axis_run_f32(i0, n - i0 < RIGIDSYM_CHECK_BLOCK ? n - i0 : RIGIDSYM_CHECK_BLOCK,
             in_omega,
             in_a,
             in_a_dot,
@@ -213,6 +275,7 @@ int64_t RIGIDSYM_ISA_NAME(rigidsym_instant_screw_axis_f32_threads)(
     }
     return count;
 }
+
 
 int64_t RIGIDSYM_ISA_NAME(rigidsym_instant_screw_axis_threads)(
     int64_t n, int threads,
@@ -225,15 +288,23 @@ int64_t RIGIDSYM_ISA_NAME(rigidsym_instant_screw_axis_threads)(
 {
     const int64_t nblocks = (n + RIGIDSYM_CHECK_BLOCK - 1) / RIGIDSYM_CHECK_BLOCK;
     int64_t count = 0;
-    if (threads < 1)
-        threads = 1;
-    /* blocks are independent and the count is an integer sum: the result is the same for
-     * every thread count */
+    if (threads <= 1 || nblocks <= 1) {
+        for (int64_t b = 0; b < nblocks; ++b) {
+            const int64_t i0 = b * RIGIDSYM_CHECK_BLOCK;
+            count += rigidsym_instant_screw_axis_run(i0, n - i0 < RIGIDSYM_CHECK_BLOCK ? n - i0 : RIGIDSYM_CHECK_BLOCK,
+                in_omega,
+                in_a,
+                in_a_dot,
+                out_p0,
+                out_pitch,
+                out_plucker);
+        }
+        return count;
+    }
     RIGIDSYM_PARALLEL_FOR(threads)
     for (int64_t b = 0; b < nblocks; ++b) {
         const int64_t i0 = b * RIGIDSYM_CHECK_BLOCK;
-        count += rigidsym_instant_screw_axis_run(
-            i0, n - i0 < RIGIDSYM_CHECK_BLOCK ? n - i0 : RIGIDSYM_CHECK_BLOCK,
+        count += rigidsym_instant_screw_axis_run(i0, n - i0 < RIGIDSYM_CHECK_BLOCK ? n - i0 : RIGIDSYM_CHECK_BLOCK,
             in_omega,
             in_a,
             in_a_dot,
@@ -243,6 +314,7 @@ int64_t RIGIDSYM_ISA_NAME(rigidsym_instant_screw_axis_threads)(
     }
     return count;
 }
+
 
 int64_t RIGIDSYM_ISA_NAME(rigidsym_instant_screw_axis)(
     int64_t n,

@@ -11,11 +11,17 @@
  * Instant screw axis of a twist: point, pitch and Plücker array.
  * p0' = omega x (a_dot - omega x a)/||omega||^2, pitch' = a_dot.omega/||omega||^2, kappa = [e'; p0' x e']
  * Singular set: omega = 0 (pure translation)
+ *
+ * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
+ * measured at generation, rigidsym.codegen.float32; error within 0.92 ulp of float32,
+ * normwise, at its points). In double:
+ *   x0, x1, x2, x3, x4, x6, x9, x10, pitch[0]
  */
 #ifndef RIGIDSYM_INSTANT_SCREW_AXIS_H
 #define RIGIDSYM_INSTANT_SCREW_AXIS_H
 
 #include "rigidsym_common.h"
+
 
 /* One sample: returns nonzero when the sample is singular (division by an exact zero or a
  * non-finite result). Inputs and outputs are row-major per sample. */
@@ -69,6 +75,55 @@ static inline int rigidsym_instant_screw_axis_sample(
 }
 
 
+/* One float32 sample: float inputs and outputs, arithmetic of the precision plan above. */
+static inline int rigidsym_instant_screw_axis_sample_f32(
+    const float *RIGIDSYM_RESTRICT in_omega,
+    const float *RIGIDSYM_RESTRICT in_a,
+    const float *RIGIDSYM_RESTRICT in_a_dot,
+    float *RIGIDSYM_RESTRICT out_p0,
+    float *RIGIDSYM_RESTRICT out_pitch,
+    float *RIGIDSYM_RESTRICT out_plucker)
+{
+    const float omega_0 = in_omega[0];
+    const float omega_1 = in_omega[1];
+    const float omega_2 = in_omega[2];
+    const float a_0 = in_a[0];
+    const float a_1 = in_a[1];
+    const float a_2 = in_a[2];
+    const float a_dot_0 = in_a_dot[0];
+    const float a_dot_1 = in_a_dot[1];
+    const float a_dot_2 = in_a_dot[2];
+    int singular = 0;
+    {
+        const double x0 = (((double)omega_0)*((double)omega_0)) + (((double)omega_1)*((double)omega_1)) + (((double)omega_2)*((double)omega_2));
+        const double x1 = 1.0/x0;
+        const double x2 = ((double)a_0)*((double)omega_1) - ((double)a_1)*((double)omega_0) + ((double)a_dot_2);
+        const double x3 = -((double)a_0)*((double)omega_2) + ((double)a_2)*((double)omega_0) + ((double)a_dot_1);
+        const double x4 = ((double)omega_1)*x2 - ((double)omega_2)*x3;
+        const float x5 = x1*x4;
+        const double x6 = ((double)a_1)*((double)omega_2) - ((double)a_2)*((double)omega_1) + ((double)a_dot_0);
+        const float x7 = -omega_0*x2 + omega_2*x6;
+        const float x8 = x1*x7;
+        const double x9 = x1*(((double)omega_0)*x3 - ((double)omega_1)*x6);
+        const double x10 = 1.0/sqrt(x0);
+        out_p0[0] = x5;
+        out_p0[1] = x8;
+        out_p0[2] = x9;
+        out_pitch[0] = x1*(((double)a_dot_0)*((double)omega_0) + ((double)a_dot_1)*((double)omega_1) + ((double)a_dot_2)*((double)omega_2));
+        out_plucker[0] = omega_0*x10;
+        out_plucker[1] = omega_1*x10;
+        out_plucker[2] = omega_2*x10;
+        out_plucker[3] = x10*(-omega_1*x9 + omega_2*x1*x7);
+        out_plucker[4] = x10*(omega_0*x9 - omega_2*x5);
+        out_plucker[5] = x10*(-omega_0*x8 + omega_1*x1*x4);
+        singular |= (x0) == 0.0;
+        const double finite = ((x1 - x1) + ((x10 - x10) + (x0 - x0)));
+        singular |= finite != finite;
+    }
+    return singular;
+}
+
+
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
  * are written as NaN; returns their number. One thread. */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_instant_screw_axis)(
@@ -92,8 +147,8 @@ int64_t RIGIDSYM_ISA_NAME(rigidsym_instant_screw_axis_threads)(
     double *RIGIDSYM_RESTRICT out_plucker);
 
 
-/* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
- * is flagged too). */
+/* The same on float32 arrays (the float32 sample function: float arithmetic of the
+ * precision plan; a row whose output overflows float32 is flagged too). */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_instant_screw_axis_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_omega,

@@ -11,11 +11,17 @@
  * Instant screw axis of a twist: point, pitch and Plücker array, with the Jacobians of its outputs.
  * p0' = omega x (a_dot - omega x a)/||omega||^2, pitch' = a_dot.omega/||omega||^2, kappa = [e'; p0' x e']; and d(output)/d(input) by sympy on the declared formula
  * Singular set: omega = 0 (pure translation)
+ *
+ * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
+ * measured at generation, rigidsym.codegen.float32; error within 0.952 ulp of float32,
+ * normwise, at its points). In double:
+ *   x0, x1, x2, x3, x4, x5, x7, x8, x10, x11, x12, x13, x16, x17, x18, x20, x21, x22, x23, x24, x25, x30, x31, x32, x34, x36, x37, x38, x44, x45, x47, x49, x59, x68, x72, x73, x75
  */
 #ifndef RIGIDSYM_INSTANT_SCREW_AXIS_WITH_JACOBIANS_H
 #define RIGIDSYM_INSTANT_SCREW_AXIS_WITH_JACOBIANS_H
 
 #include "rigidsym_common.h"
+
 
 /* One sample: returns nonzero when the sample is singular (division by an exact zero or a
  * non-finite result). Inputs and outputs are row-major per sample. */
@@ -236,6 +242,222 @@ static inline int rigidsym_instant_screw_axis_with_jacobians_sample(
 }
 
 
+/* One float32 sample: float inputs and outputs, arithmetic of the precision plan above. */
+static inline int rigidsym_instant_screw_axis_with_jacobians_sample_f32(
+    const float *RIGIDSYM_RESTRICT in_omega,
+    const float *RIGIDSYM_RESTRICT in_a,
+    const float *RIGIDSYM_RESTRICT in_a_dot,
+    float *RIGIDSYM_RESTRICT out_p0,
+    float *RIGIDSYM_RESTRICT out_pitch,
+    float *RIGIDSYM_RESTRICT out_plucker,
+    float *RIGIDSYM_RESTRICT out_p0_D_omega,
+    float *RIGIDSYM_RESTRICT out_p0_D_a,
+    float *RIGIDSYM_RESTRICT out_p0_D_a_dot,
+    float *RIGIDSYM_RESTRICT out_pitch_D_omega,
+    float *RIGIDSYM_RESTRICT out_pitch_D_a,
+    float *RIGIDSYM_RESTRICT out_pitch_D_a_dot,
+    float *RIGIDSYM_RESTRICT out_plucker_D_omega,
+    float *RIGIDSYM_RESTRICT out_plucker_D_a,
+    float *RIGIDSYM_RESTRICT out_plucker_D_a_dot)
+{
+    const float omega_0 = in_omega[0];
+    const float omega_1 = in_omega[1];
+    const float omega_2 = in_omega[2];
+    const float a_0 = in_a[0];
+    const float a_1 = in_a[1];
+    const float a_2 = in_a[2];
+    const float a_dot_0 = in_a_dot[0];
+    const float a_dot_1 = in_a_dot[1];
+    const float a_dot_2 = in_a_dot[2];
+    int singular = 0;
+    {
+        const double x0 = (((double)omega_0)*((double)omega_0));
+        const double x1 = (((double)omega_1)*((double)omega_1));
+        const double x2 = (((double)omega_2)*((double)omega_2));
+        const double x3 = x1 + x2;
+        const double x4 = x0 + x3;
+        const double x5 = 1.0/x4;
+        const float x6 = a_0*omega_1;
+        const double x7 = -((double)a_1)*((double)omega_0) + ((double)a_dot_2);
+        const double x8 = ((double)x6) + x7;
+        const float x9 = -a_0*omega_2;
+        const double x10 = ((double)a_2)*((double)omega_0);
+        const double x11 = ((double)a_dot_1) + x10;
+        const double x12 = x11 + ((double)x9);
+        const double x13 = ((double)omega_1)*x8 - ((double)omega_2)*x12;
+        const float x14 = x13*x5;
+        const float x15 = a_1*omega_2;
+        const double x16 = -((double)a_2)*((double)omega_1) + ((double)a_dot_0);
+        const double x17 = ((double)x15) + x16;
+        const double x18 = -((double)omega_0)*x8 + ((double)omega_2)*x17;
+        const float x19 = x18*x5;
+        const double x20 = ((double)omega_0)*x12 - ((double)omega_1)*x17;
+        const double x21 = x20*x5;
+        const double x22 = ((double)a_dot_0)*((double)omega_0) + ((double)a_dot_1)*((double)omega_1) + ((double)a_dot_2)*((double)omega_2);
+        const double x23 = 1.0/sqrt(x4);
+        const double x24 = -((double)omega_1)*x21 + ((double)omega_2)*x18*x5;
+        const double x25 = ((double)omega_0)*x21 - ((double)omega_2)*((double)x14);
+        const float x26 = -omega_0*x19 + omega_1*x13*x5;
+        const float x27 = a_1*omega_1;
+        const float x28 = a_2*omega_2;
+        const float x29 = -x27 - x28;
+        const double x30 = 1.0/(x4*x4);
+        const double x31 = 2.0*x30;
+        const double x32 = x13*x31;
+        const float x33 = omega_0*x32;
+        const double x34 = 2.0*((double)x6) + x7;
+        const float x35 = omega_1*x32;
+        const double x36 = 2.0*((double)a_0)*((double)omega_2) - x11;
+        const double x37 = 2.0*((double)a_1)*((double)omega_0) - ((double)a_dot_2) - ((double)x6);
+        const double x38 = x18*x31;
+        const float x39 = omega_0*x38;
+        const float x40 = a_0*omega_0;
+        const float x41 = -x28 - x40;
+        const float x42 = omega_1*x38;
+        const float x43 = 2.0f*x15 + x16;
+        const double x44 = ((double)a_dot_1) + 2.0*x10 + ((double)x9);
+        const double x45 = x20*x31;
+        const float x46 = omega_0*x45;
+        const double x47 = 2.0*((double)a_2)*((double)omega_1) - ((double)a_dot_0) - ((double)x15);
+        const float x48 = omega_1*x45;
+        const double x49 = -((double)x27) - ((double)x40);
+        const float x50 = x3*x5;
+        const float x51 = omega_1*x5;
+        const float x52 = -omega_0*x51;
+        const float x53 = omega_2*x5;
+        const float x54 = -omega_0*x53;
+        const float x55 = x5*(x0 + x2);
+        const float x56 = -omega_1*x53;
+        const float x57 = x5*(x0 + x1);
+        const float x58 = omega_0*x5;
+        const double x59 = x22*x31;
+        const float x60 = -x23;
+        const float x61 = 1.0f/(x4*sqrt(x4));
+        const float x62 = omega_0*x61;
+        const float x63 = -omega_1*x62;
+        const float x64 = -omega_2*x62;
+        const float x65 = omega_1*x61;
+        const float x66 = -omega_2*x65;
+        const float x67 = x44*x5;
+        const double x68 = x37*x5;
+        const float x69 = omega_1*x46;
+        const float x70 = omega_2*x39;
+        const float x71 = omega_2*x61;
+        const double x72 = ((double)x43)*x5;
+        const double x73 = x34*x5;
+        const float x74 = -omega_2*x35;
+        const double x75 = x36*x5;
+        const float x76 = x1*x5;
+        const float x77 = x2*x5;
+        const float x78 = x0*x5;
+        out_p0[0] = x14;
+        out_p0[1] = x19;
+        out_p0[2] = x21;
+        out_pitch[0] = x22*x5;
+        out_plucker[0] = omega_0*x23;
+        out_plucker[1] = omega_1*x23;
+        out_plucker[2] = omega_2*x23;
+        out_plucker[3] = x23*x24;
+        out_plucker[4] = x23*x25;
+        out_plucker[5] = x23*x26;
+        out_p0_D_omega[0] = x29*x5 - x33;
+        out_p0_D_omega[1] = x34*x5 - x35;
+        out_p0_D_omega[2] = -omega_2*x32 + x36*x5;
+        out_p0_D_omega[3] = x37*x5 - x39;
+        out_p0_D_omega[4] = x41*x5 - x42;
+        out_p0_D_omega[5] = -omega_2*x38 + x43*x5;
+        out_p0_D_omega[6] = x44*x5 - x46;
+        out_p0_D_omega[7] = x47*x5 - x48;
+        out_p0_D_omega[8] = -omega_2*x45 + x49*x5;
+        out_p0_D_a[0] = x50;
+        out_p0_D_a[1] = x52;
+        out_p0_D_a[2] = x54;
+        out_p0_D_a[3] = x52;
+        out_p0_D_a[4] = x55;
+        out_p0_D_a[5] = x56;
+        out_p0_D_a[6] = x54;
+        out_p0_D_a[7] = x56;
+        out_p0_D_a[8] = x57;
+        out_p0_D_a_dot[0] = 0.0f;
+        out_p0_D_a_dot[1] = -x53;
+        out_p0_D_a_dot[2] = x51;
+        out_p0_D_a_dot[3] = x53;
+        out_p0_D_a_dot[4] = 0.0f;
+        out_p0_D_a_dot[5] = -x58;
+        out_p0_D_a_dot[6] = -x51;
+        out_p0_D_a_dot[7] = x58;
+        out_p0_D_a_dot[8] = 0.0f;
+        out_pitch_D_omega[0] = a_dot_0*x5 - omega_0*x59;
+        out_pitch_D_omega[1] = a_dot_1*x5 - omega_1*x59;
+        out_pitch_D_omega[2] = a_dot_2*x5 - omega_2*x59;
+        out_pitch_D_a[0] = 0.0f;
+        out_pitch_D_a[1] = 0.0f;
+        out_pitch_D_a[2] = 0.0f;
+        out_pitch_D_a_dot[0] = x58;
+        out_pitch_D_a_dot[1] = x51;
+        out_pitch_D_a_dot[2] = x53;
+        out_plucker_D_omega[0] = -x0*x61 - x60;
+        out_plucker_D_omega[1] = x63;
+        out_plucker_D_omega[2] = x64;
+        out_plucker_D_omega[3] = x63;
+        out_plucker_D_omega[4] = -x1*x61 - x60;
+        out_plucker_D_omega[5] = x66;
+        out_plucker_D_omega[6] = x64;
+        out_plucker_D_omega[7] = x66;
+        out_plucker_D_omega[8] = -x2*x61 - x60;
+        out_plucker_D_omega[9] = x23*(-omega_1*x67 + omega_2*x68 + x69 - x70) - x24*x62;
+        out_plucker_D_omega[10] = x23*(-omega_1*x47*x5 + omega_2*x41*x5 - omega_2*x42 + 2.0f*x1*x20*x30 - x21) - x24*x65;
+        out_plucker_D_omega[11] = x23*(-omega_1*x49*x5 + omega_2*x48 + omega_2*x72 + x19 - x2*x38) - x24*x71;
+        out_plucker_D_omega[12] = x23*(omega_0*x67 - omega_2*x29*x5 + omega_2*x33 - x0*x45 + x21) - x25*x62;
+        out_plucker_D_omega[13] = x23*(omega_0*x47*x5 - omega_2*x73 - x69 - x74) - x25*x65;
+        out_plucker_D_omega[14] = x23*(omega_0*x49*x5 - omega_2*x46 - omega_2*x75 + 2.0f*x13*x2*x30 - x14) - x25*x71;
+        out_plucker_D_omega[15] = x23*(-omega_0*x68 + omega_1*x29*x5 - omega_1*x33 + 2.0f*x0*x18*x30 - x19) - x26*x62;
+        out_plucker_D_omega[16] = x23*(-omega_0*x41*x5 + omega_1*x39 + omega_1*x73 - x1*x32 + x14) - x26*x65;
+        out_plucker_D_omega[17] = x23*(-omega_0*x72 + omega_1*x75 + x70 + x74) - x26*x71;
+        out_plucker_D_a[0] = 0.0f;
+        out_plucker_D_a[1] = 0.0f;
+        out_plucker_D_a[2] = 0.0f;
+        out_plucker_D_a[3] = 0.0f;
+        out_plucker_D_a[4] = 0.0f;
+        out_plucker_D_a[5] = 0.0f;
+        out_plucker_D_a[6] = 0.0f;
+        out_plucker_D_a[7] = 0.0f;
+        out_plucker_D_a[8] = 0.0f;
+        out_plucker_D_a[9] = 0.0f;
+        out_plucker_D_a[10] = x23*(omega_2*x55 + x1*x53);
+        out_plucker_D_a[11] = x23*(-omega_1*x57 - x2*x51);
+        out_plucker_D_a[12] = x23*(-omega_2*x50 - x0*x53);
+        out_plucker_D_a[13] = 0.0f;
+        out_plucker_D_a[14] = x23*(omega_0*x57 + x2*x58);
+        out_plucker_D_a[15] = x23*(omega_1*x50 + x0*x51);
+        out_plucker_D_a[16] = x23*(-omega_0*x55 - x1*x58);
+        out_plucker_D_a[17] = 0.0f;
+        out_plucker_D_a_dot[0] = 0.0f;
+        out_plucker_D_a_dot[1] = 0.0f;
+        out_plucker_D_a_dot[2] = 0.0f;
+        out_plucker_D_a_dot[3] = 0.0f;
+        out_plucker_D_a_dot[4] = 0.0f;
+        out_plucker_D_a_dot[5] = 0.0f;
+        out_plucker_D_a_dot[6] = 0.0f;
+        out_plucker_D_a_dot[7] = 0.0f;
+        out_plucker_D_a_dot[8] = 0.0f;
+        out_plucker_D_a_dot[9] = x23*(x76 + x77);
+        out_plucker_D_a_dot[10] = x63;
+        out_plucker_D_a_dot[11] = x64;
+        out_plucker_D_a_dot[12] = x63;
+        out_plucker_D_a_dot[13] = x23*(x77 + x78);
+        out_plucker_D_a_dot[14] = x66;
+        out_plucker_D_a_dot[15] = x64;
+        out_plucker_D_a_dot[16] = x66;
+        out_plucker_D_a_dot[17] = x23*(x76 + x78);
+        singular |= (x4) == 0.0;
+        const double finite = (((x5 - x5) + (x23 - x23)) + ((x30 - x30) + ((x61 - x61) + (x4 - x4))));
+        singular |= finite != finite;
+    }
+    return singular;
+}
+
+
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
  * are written as NaN; returns their number. One thread. */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_instant_screw_axis_with_jacobians)(
@@ -277,8 +499,8 @@ int64_t RIGIDSYM_ISA_NAME(rigidsym_instant_screw_axis_with_jacobians_threads)(
     double *RIGIDSYM_RESTRICT out_plucker_D_a_dot);
 
 
-/* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
- * is flagged too). */
+/* The same on float32 arrays (the float32 sample function: float arithmetic of the
+ * precision plan; a row whose output overflows float32 is flagged too). */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_instant_screw_axis_with_jacobians_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_omega,

@@ -10,11 +10,17 @@
  *
  * Acceleration of a point in the fixed frame from moving-frame data.
  * [p_ddot]_F = o_ddot + Q(rho_ddot + 2 omega x rho_dot + omega_dot x rho + omega x (omega x rho)) (Coriolis term included)
+ *
+ * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
+ * measured at generation, rigidsym.codegen.float32; error within 0.842 ulp of float32,
+ * normwise, at its points). In double:
+ *   x1, x2, x4, x5, x6, x9, x12, x17, p_ddot[0], p_ddot[1], p_ddot[2]
  */
 #ifndef RIGIDSYM_MOVING_FRAME_ACCELERATION_H
 #define RIGIDSYM_MOVING_FRAME_ACCELERATION_H
 
 #include "rigidsym_common.h"
+
 
 /* One sample: returns nonzero when the sample is singular (division by an exact zero or a
  * non-finite result). Inputs and outputs are row-major per sample. */
@@ -83,6 +89,72 @@ static inline int rigidsym_moving_frame_acceleration_sample(
 }
 
 
+/* One float32 sample: float inputs and outputs, arithmetic of the precision plan above. */
+static inline int rigidsym_moving_frame_acceleration_sample_f32(
+    const float *RIGIDSYM_RESTRICT in_o_ddot,
+    const float *RIGIDSYM_RESTRICT in_Q,
+    const float *RIGIDSYM_RESTRICT in_omega,
+    const float *RIGIDSYM_RESTRICT in_omega_dot,
+    const float *RIGIDSYM_RESTRICT in_rho_M,
+    const float *RIGIDSYM_RESTRICT in_rho_dot_M,
+    const float *RIGIDSYM_RESTRICT in_rho_ddot_M,
+    float *RIGIDSYM_RESTRICT out_p_ddot)
+{
+    const float o_ddot_0 = in_o_ddot[0];
+    const float o_ddot_1 = in_o_ddot[1];
+    const float o_ddot_2 = in_o_ddot[2];
+    const float Q_00 = in_Q[0];
+    const float Q_01 = in_Q[1];
+    const float Q_02 = in_Q[2];
+    const float Q_10 = in_Q[3];
+    const float Q_11 = in_Q[4];
+    const float Q_12 = in_Q[5];
+    const float Q_20 = in_Q[6];
+    const float Q_21 = in_Q[7];
+    const float Q_22 = in_Q[8];
+    const float omega_0 = in_omega[0];
+    const float omega_1 = in_omega[1];
+    const float omega_2 = in_omega[2];
+    const float omega_dot_0 = in_omega_dot[0];
+    const float omega_dot_1 = in_omega_dot[1];
+    const float omega_dot_2 = in_omega_dot[2];
+    const float rho_M_0 = in_rho_M[0];
+    const float rho_M_1 = in_rho_M[1];
+    const float rho_M_2 = in_rho_M[2];
+    const float rho_dot_M_0 = in_rho_dot_M[0];
+    const float rho_dot_M_1 = in_rho_dot_M[1];
+    const float rho_dot_M_2 = in_rho_dot_M[2];
+    const float rho_ddot_M_0 = in_rho_ddot_M[0];
+    const float rho_ddot_M_1 = in_rho_ddot_M[1];
+    const float rho_ddot_M_2 = in_rho_ddot_M[2];
+    int singular = 0;
+    {
+        const float x0 = 2.0f*omega_2;
+        const double x1 = ((double)omega_0)*((double)omega_2);
+        const double x2 = ((double)omega_dot_1) + x1;
+        const float x3 = omega_0*omega_1;
+        const double x4 = -((double)omega_dot_2) + ((double)x3);
+        const double x5 = (((double)omega_1)*((double)omega_1));
+        const double x6 = (((double)omega_2)*((double)omega_2));
+        const float x7 = -x5 - x6;
+        const float x8 = 2.0f*omega_0;
+        const double x9 = ((double)omega_dot_2) + ((double)x3);
+        const float x10 = omega_1*omega_2;
+        const float x11 = -omega_dot_0 + x10;
+        const double x12 = (((double)omega_0)*((double)omega_0));
+        const float x13 = -x12 - x6;
+        const float x14 = 2.0f*omega_1;
+        const float x15 = omega_dot_0 + x10;
+        const float x16 = -omega_dot_1 + x1;
+        const double x17 = -x12 - x5;
+        out_p_ddot[0] = ((double)Q_00)*((double)rho_ddot_M_0) + ((double)Q_01)*((double)rho_ddot_M_1) + ((double)Q_02)*((double)rho_ddot_M_2) + ((double)o_ddot_0) + ((double)rho_M_0)*(((double)Q_00)*((double)x7) + ((double)Q_10)*x4 + ((double)Q_20)*x2) + ((double)rho_M_1)*(((double)Q_01)*((double)x7) + ((double)Q_11)*x4 + ((double)Q_21)*x2) + ((double)rho_M_2)*(((double)Q_02)*((double)x7) + ((double)Q_12)*x4 + ((double)Q_22)*x2) + ((double)rho_dot_M_0)*(-((double)Q_10)*((double)x0) + 2.0*((double)Q_20)*((double)omega_1)) + ((double)rho_dot_M_1)*(-((double)Q_11)*((double)x0) + 2.0*((double)Q_21)*((double)omega_1)) + ((double)rho_dot_M_2)*(-((double)Q_12)*((double)x0) + 2.0*((double)Q_22)*((double)omega_1));
+        out_p_ddot[1] = ((double)Q_10)*((double)rho_ddot_M_0) + ((double)Q_11)*((double)rho_ddot_M_1) + ((double)Q_12)*((double)rho_ddot_M_2) + ((double)o_ddot_1) + ((double)rho_M_0)*(((double)Q_00)*x9 + ((double)Q_10)*((double)x13) + ((double)Q_20)*((double)x11)) + ((double)rho_M_1)*(((double)Q_01)*x9 + ((double)Q_11)*((double)x13) + ((double)Q_21)*((double)x11)) + ((double)rho_M_2)*(((double)Q_02)*x9 + ((double)Q_12)*((double)x13) + ((double)Q_22)*((double)x11)) + ((double)rho_dot_M_0)*(((double)Q_00)*((double)x0) - ((double)Q_20)*((double)x8)) + ((double)rho_dot_M_1)*(((double)Q_01)*((double)x0) - ((double)Q_21)*((double)x8)) + ((double)rho_dot_M_2)*(((double)Q_02)*((double)x0) - ((double)Q_22)*((double)x8));
+        out_p_ddot[2] = ((double)Q_20)*((double)rho_ddot_M_0) + ((double)Q_21)*((double)rho_ddot_M_1) + ((double)Q_22)*((double)rho_ddot_M_2) + ((double)o_ddot_2) + ((double)rho_M_0)*(((double)Q_00)*((double)x16) + ((double)Q_10)*((double)x15) + ((double)Q_20)*x17) + ((double)rho_M_1)*(((double)Q_01)*((double)x16) + ((double)Q_11)*((double)x15) + ((double)Q_21)*x17) + ((double)rho_M_2)*(((double)Q_02)*((double)x16) + ((double)Q_12)*((double)x15) + ((double)Q_22)*x17) + ((double)rho_dot_M_0)*(-((double)Q_00)*((double)x14) + 2.0*((double)Q_10)*((double)omega_0)) + ((double)rho_dot_M_1)*(-((double)Q_01)*((double)x14) + 2.0*((double)Q_11)*((double)omega_0)) + ((double)rho_dot_M_2)*(-((double)Q_02)*((double)x14) + 2.0*((double)Q_12)*((double)omega_0));
+    }
+    return singular;
+}
+
+
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
  * are written as NaN; returns their number. One thread. */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_moving_frame_acceleration)(
@@ -110,8 +182,8 @@ int64_t RIGIDSYM_ISA_NAME(rigidsym_moving_frame_acceleration_threads)(
     double *RIGIDSYM_RESTRICT out_p_ddot);
 
 
-/* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
- * is flagged too). */
+/* The same on float32 arrays (the float32 sample function: float arithmetic of the
+ * precision plan; a row whose output overflows float32 is flagged too). */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_moving_frame_acceleration_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_o_ddot,

@@ -10,11 +10,17 @@
  *
  * Acceleration of a point in the fixed frame from moving-frame data, with the Jacobians of its outputs.
  * [p_ddot]_F = o_ddot + Q(rho_ddot + 2 omega x rho_dot + omega_dot x rho + omega x (omega x rho)) (Coriolis term included); and d(output)/d(input) by sympy on the declared formula
+ *
+ * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
+ * measured at generation, rigidsym.codegen.float32; error within 0.98 ulp of float32,
+ * normwise, at its points). In double:
+ *   x0, x15, x17, x38, x42, x54, x56, x81, x82, p_ddot[0], p_ddot[1], p_ddot[2], p_ddot_D_omega[8]
  */
 #ifndef RIGIDSYM_MOVING_FRAME_ACCELERATION_WITH_JACOBIANS_H
 #define RIGIDSYM_MOVING_FRAME_ACCELERATION_WITH_JACOBIANS_H
 
 #include "rigidsym_common.h"
+
 
 /* One sample: returns nonzero when the sample is singular (division by an exact zero or a
  * non-finite result). Inputs and outputs are row-major per sample. */
@@ -243,6 +249,232 @@ static inline int rigidsym_moving_frame_acceleration_with_jacobians_sample(
 }
 
 
+/* One float32 sample: float inputs and outputs, arithmetic of the precision plan above. */
+static inline int rigidsym_moving_frame_acceleration_with_jacobians_sample_f32(
+    const float *RIGIDSYM_RESTRICT in_o_ddot,
+    const float *RIGIDSYM_RESTRICT in_Q,
+    const float *RIGIDSYM_RESTRICT in_omega,
+    const float *RIGIDSYM_RESTRICT in_omega_dot,
+    const float *RIGIDSYM_RESTRICT in_rho_M,
+    const float *RIGIDSYM_RESTRICT in_rho_dot_M,
+    const float *RIGIDSYM_RESTRICT in_rho_ddot_M,
+    float *RIGIDSYM_RESTRICT out_p_ddot,
+    float *RIGIDSYM_RESTRICT out_p_ddot_D_o_ddot,
+    float *RIGIDSYM_RESTRICT out_p_ddot_D_Q,
+    float *RIGIDSYM_RESTRICT out_p_ddot_D_omega,
+    float *RIGIDSYM_RESTRICT out_p_ddot_D_omega_dot,
+    float *RIGIDSYM_RESTRICT out_p_ddot_D_rho_M,
+    float *RIGIDSYM_RESTRICT out_p_ddot_D_rho_dot_M,
+    float *RIGIDSYM_RESTRICT out_p_ddot_D_rho_ddot_M)
+{
+    const float o_ddot_0 = in_o_ddot[0];
+    const float o_ddot_1 = in_o_ddot[1];
+    const float o_ddot_2 = in_o_ddot[2];
+    const float Q_00 = in_Q[0];
+    const float Q_01 = in_Q[1];
+    const float Q_02 = in_Q[2];
+    const float Q_10 = in_Q[3];
+    const float Q_11 = in_Q[4];
+    const float Q_12 = in_Q[5];
+    const float Q_20 = in_Q[6];
+    const float Q_21 = in_Q[7];
+    const float Q_22 = in_Q[8];
+    const float omega_0 = in_omega[0];
+    const float omega_1 = in_omega[1];
+    const float omega_2 = in_omega[2];
+    const float omega_dot_0 = in_omega_dot[0];
+    const float omega_dot_1 = in_omega_dot[1];
+    const float omega_dot_2 = in_omega_dot[2];
+    const float rho_M_0 = in_rho_M[0];
+    const float rho_M_1 = in_rho_M[1];
+    const float rho_M_2 = in_rho_M[2];
+    const float rho_dot_M_0 = in_rho_dot_M[0];
+    const float rho_dot_M_1 = in_rho_dot_M[1];
+    const float rho_dot_M_2 = in_rho_dot_M[2];
+    const float rho_ddot_M_0 = in_rho_ddot_M[0];
+    const float rho_ddot_M_1 = in_rho_ddot_M[1];
+    const float rho_ddot_M_2 = in_rho_ddot_M[2];
+    int singular = 0;
+    {
+        const double x0 = ((double)Q_10)*((double)omega_2);
+        const float x1 = 2.0f*x0;
+        const float x2 = -2.0f*Q_20*omega_1;
+        const float x3 = -x1 - x2;
+        const float x4 = Q_11*omega_2;
+        const float x5 = 2.0f*x4;
+        const float x6 = -2.0f*Q_21*omega_1;
+        const float x7 = -x5 - x6;
+        const float x8 = Q_12*omega_2;
+        const float x9 = 2.0f*x8;
+        const float x10 = -2.0f*Q_22*omega_1;
+        const float x11 = -x10 - x9;
+        const float x12 = omega_0*omega_2;
+        const float x13 = omega_dot_1 + x12;
+        const float x14 = omega_0*omega_1;
+        const double x15 = -((double)omega_dot_2) + ((double)x14);
+        const float x16 = (omega_1*omega_1);
+        const double x17 = (((double)omega_2)*((double)omega_2));
+        const float x18 = -x16 - x17;
+        const float x19 = Q_00*x18 + Q_10*x15 + Q_20*x13;
+        const float x20 = Q_01*x18 + Q_11*x15 + Q_21*x13;
+        const float x21 = Q_02*x18 + Q_12*x15 + Q_22*x13;
+        const float x22 = Q_00*omega_2;
+        const float x23 = 2.0f*x22;
+        const float x24 = -2.0f*Q_20*omega_0;
+        const float x25 = x23 + x24;
+        const float x26 = Q_01*omega_2;
+        const float x27 = 2.0f*x26;
+        const float x28 = -2.0f*Q_21*omega_0;
+        const float x29 = x27 + x28;
+        const float x30 = Q_02*omega_2;
+        const float x31 = 2.0f*x30;
+        const float x32 = -2.0f*Q_22*omega_0;
+        const float x33 = x31 + x32;
+        const float x34 = omega_dot_2 + x14;
+        const float x35 = omega_1*omega_2;
+        const float x36 = -omega_dot_0 + x35;
+        const float x37 = (omega_0*omega_0);
+        const double x38 = -x17 - ((double)x37);
+        const float x39 = Q_00*x34 + Q_10*x38 + Q_20*x36;
+        const float x40 = Q_01*x34 + Q_11*x38 + Q_21*x36;
+        const float x41 = Q_02*x34 + Q_12*x38 + Q_22*x36;
+        const double x42 = ((double)Q_00)*((double)omega_1);
+        const float x43 = 2.0f*x42;
+        const float x44 = -2.0f*Q_10*omega_0;
+        const float x45 = -x43 - x44;
+        const float x46 = Q_01*omega_1;
+        const float x47 = 2.0f*x46;
+        const float x48 = -2.0f*Q_11*omega_0;
+        const float x49 = -x47 - x48;
+        const float x50 = Q_02*omega_1;
+        const float x51 = 2.0f*x50;
+        const float x52 = -2.0f*Q_12*omega_0;
+        const float x53 = -x51 - x52;
+        const double x54 = ((double)omega_dot_0) + ((double)x35);
+        const float x55 = -omega_dot_1 + x12;
+        const double x56 = -((double)x16) - ((double)x37);
+        const float x57 = Q_00*x55 + Q_10*x54 + Q_20*x56;
+        const float x58 = Q_01*x55 + Q_11*x54 + Q_21*x56;
+        const float x59 = Q_02*x55 + Q_12*x54 + Q_22*x56;
+        const float x60 = 2.0f*omega_2;
+        const float x61 = rho_dot_M_0*x60;
+        const float x62 = rho_dot_M_1*x60;
+        const float x63 = rho_dot_M_2*x60;
+        const float x64 = 2.0f*omega_1;
+        const float x65 = rho_dot_M_0*x64;
+        const float x66 = rho_dot_M_1*x64;
+        const float x67 = rho_dot_M_2*x64;
+        const float x68 = 2.0f*omega_0;
+        const float x69 = rho_dot_M_0*x68;
+        const float x70 = rho_dot_M_1*x68;
+        const float x71 = rho_dot_M_2*x68;
+        const float x72 = Q_10*omega_1;
+        const float x73 = Q_20*omega_2;
+        const float x74 = Q_11*omega_1;
+        const float x75 = Q_21*omega_2;
+        const float x76 = Q_12*omega_1;
+        const float x77 = Q_22*omega_2;
+        const float x78 = 2.0f*rho_dot_M_0;
+        const float x79 = 2.0f*rho_dot_M_1;
+        const float x80 = 2.0f*rho_dot_M_2;
+        const double x81 = ((double)Q_20)*((double)x78) + ((double)Q_21)*((double)x79) + ((double)Q_22)*((double)x80);
+        const double x82 = ((double)Q_10)*((double)x78) + ((double)Q_11)*((double)x79) + ((double)Q_12)*((double)x80);
+        const float x83 = Q_00*omega_0;
+        const float x84 = Q_01*omega_0;
+        const float x85 = Q_02*omega_0;
+        const float x86 = Q_00*x78 + Q_01*x79 + Q_02*x80;
+        const float x87 = Q_20*rho_M_0 + Q_21*rho_M_1 + Q_22*rho_M_2;
+        const float x88 = Q_10*rho_M_0 + Q_11*rho_M_1 + Q_12*rho_M_2;
+        const float x89 = Q_00*rho_M_0 + Q_01*rho_M_1 + Q_02*rho_M_2;
+        out_p_ddot[0] = ((double)Q_00)*((double)rho_ddot_M_0) + ((double)Q_01)*((double)rho_ddot_M_1) + ((double)Q_02)*((double)rho_ddot_M_2) + ((double)o_ddot_0) + ((double)rho_M_0)*((double)x19) + ((double)rho_M_1)*((double)x20) + ((double)rho_M_2)*((double)x21) + ((double)rho_dot_M_0)*((double)x3) + ((double)rho_dot_M_1)*((double)x7) + ((double)rho_dot_M_2)*((double)x11);
+        out_p_ddot[1] = ((double)Q_10)*((double)rho_ddot_M_0) + ((double)Q_11)*((double)rho_ddot_M_1) + ((double)Q_12)*((double)rho_ddot_M_2) + ((double)o_ddot_1) + ((double)rho_M_0)*((double)x39) + ((double)rho_M_1)*((double)x40) + ((double)rho_M_2)*((double)x41) + ((double)rho_dot_M_0)*((double)x25) + ((double)rho_dot_M_1)*((double)x29) + ((double)rho_dot_M_2)*((double)x33);
+        out_p_ddot[2] = ((double)Q_20)*((double)rho_ddot_M_0) + ((double)Q_21)*((double)rho_ddot_M_1) + ((double)Q_22)*((double)rho_ddot_M_2) + ((double)o_ddot_2) + ((double)rho_M_0)*((double)x57) + ((double)rho_M_1)*((double)x58) + ((double)rho_M_2)*((double)x59) + ((double)rho_dot_M_0)*((double)x45) + ((double)rho_dot_M_1)*((double)x49) + ((double)rho_dot_M_2)*((double)x53);
+        out_p_ddot_D_o_ddot[0] = 1.0f;
+        out_p_ddot_D_o_ddot[1] = 0.0f;
+        out_p_ddot_D_o_ddot[2] = 0.0f;
+        out_p_ddot_D_o_ddot[3] = 0.0f;
+        out_p_ddot_D_o_ddot[4] = 1.0f;
+        out_p_ddot_D_o_ddot[5] = 0.0f;
+        out_p_ddot_D_o_ddot[6] = 0.0f;
+        out_p_ddot_D_o_ddot[7] = 0.0f;
+        out_p_ddot_D_o_ddot[8] = 1.0f;
+        out_p_ddot_D_Q[0] = rho_M_0*x18 + rho_ddot_M_0;
+        out_p_ddot_D_Q[1] = rho_M_1*x18 + rho_ddot_M_1;
+        out_p_ddot_D_Q[2] = rho_M_2*x18 + rho_ddot_M_2;
+        out_p_ddot_D_Q[3] = rho_M_0*x15 - x61;
+        out_p_ddot_D_Q[4] = rho_M_1*x15 - x62;
+        out_p_ddot_D_Q[5] = rho_M_2*x15 - x63;
+        out_p_ddot_D_Q[6] = rho_M_0*x13 + x65;
+        out_p_ddot_D_Q[7] = rho_M_1*x13 + x66;
+        out_p_ddot_D_Q[8] = rho_M_2*x13 + x67;
+        out_p_ddot_D_Q[9] = rho_M_0*x34 + x61;
+        out_p_ddot_D_Q[10] = rho_M_1*x34 + x62;
+        out_p_ddot_D_Q[11] = rho_M_2*x34 + x63;
+        out_p_ddot_D_Q[12] = rho_M_0*x38 + rho_ddot_M_0;
+        out_p_ddot_D_Q[13] = rho_M_1*x38 + rho_ddot_M_1;
+        out_p_ddot_D_Q[14] = rho_M_2*x38 + rho_ddot_M_2;
+        out_p_ddot_D_Q[15] = rho_M_0*x36 - x69;
+        out_p_ddot_D_Q[16] = rho_M_1*x36 - x70;
+        out_p_ddot_D_Q[17] = rho_M_2*x36 - x71;
+        out_p_ddot_D_Q[18] = rho_M_0*x55 - x65;
+        out_p_ddot_D_Q[19] = rho_M_1*x55 - x66;
+        out_p_ddot_D_Q[20] = rho_M_2*x55 - x67;
+        out_p_ddot_D_Q[21] = rho_M_0*x54 + x69;
+        out_p_ddot_D_Q[22] = rho_M_1*x54 + x70;
+        out_p_ddot_D_Q[23] = rho_M_2*x54 + x71;
+        out_p_ddot_D_Q[24] = rho_M_0*x56 + rho_ddot_M_0;
+        out_p_ddot_D_Q[25] = rho_M_1*x56 + rho_ddot_M_1;
+        out_p_ddot_D_Q[26] = rho_M_2*x56 + rho_ddot_M_2;
+        out_p_ddot_D_omega[0] = rho_M_0*(x72 + x73) + rho_M_1*(x74 + x75) + rho_M_2*(x76 + x77);
+        out_p_ddot_D_omega[1] = rho_M_0*(Q_10*omega_0 - x43) + rho_M_1*(Q_11*omega_0 - x47) + rho_M_2*(Q_12*omega_0 - x51) + x81;
+        out_p_ddot_D_omega[2] = rho_M_0*(Q_20*omega_0 - x23) + rho_M_1*(Q_21*omega_0 - x27) + rho_M_2*(Q_22*omega_0 - x31) - x82;
+        out_p_ddot_D_omega[3] = rho_M_0*(x42 + x44) + rho_M_1*(x46 + x48) + rho_M_2*(x50 + x52) - x81;
+        out_p_ddot_D_omega[4] = rho_M_0*(x73 + x83) + rho_M_1*(x75 + x84) + rho_M_2*(x77 + x85);
+        out_p_ddot_D_omega[5] = rho_M_0*(Q_20*omega_1 - x1) + rho_M_1*(Q_21*omega_1 - x5) + rho_M_2*(Q_22*omega_1 - x9) + x86;
+        out_p_ddot_D_omega[6] = rho_M_0*(x22 + x24) + rho_M_1*(x26 + x28) + rho_M_2*(x30 + x32) + x82;
+        out_p_ddot_D_omega[7] = rho_M_0*(x0 + x2) + rho_M_1*(x4 + x6) + rho_M_2*(x10 + x8) - x86;
+        out_p_ddot_D_omega[8] = ((double)rho_M_0)*(((double)x72) + ((double)x83)) + ((double)rho_M_1)*(((double)x74) + ((double)x84)) + ((double)rho_M_2)*(((double)x76) + ((double)x85));
+        out_p_ddot_D_omega_dot[0] = 0.0f;
+        out_p_ddot_D_omega_dot[1] = x87;
+        out_p_ddot_D_omega_dot[2] = -x88;
+        out_p_ddot_D_omega_dot[3] = -x87;
+        out_p_ddot_D_omega_dot[4] = 0.0f;
+        out_p_ddot_D_omega_dot[5] = x89;
+        out_p_ddot_D_omega_dot[6] = x88;
+        out_p_ddot_D_omega_dot[7] = -x89;
+        out_p_ddot_D_omega_dot[8] = 0.0f;
+        out_p_ddot_D_rho_M[0] = x19;
+        out_p_ddot_D_rho_M[1] = x20;
+        out_p_ddot_D_rho_M[2] = x21;
+        out_p_ddot_D_rho_M[3] = x39;
+        out_p_ddot_D_rho_M[4] = x40;
+        out_p_ddot_D_rho_M[5] = x41;
+        out_p_ddot_D_rho_M[6] = x57;
+        out_p_ddot_D_rho_M[7] = x58;
+        out_p_ddot_D_rho_M[8] = x59;
+        out_p_ddot_D_rho_dot_M[0] = x3;
+        out_p_ddot_D_rho_dot_M[1] = x7;
+        out_p_ddot_D_rho_dot_M[2] = x11;
+        out_p_ddot_D_rho_dot_M[3] = x25;
+        out_p_ddot_D_rho_dot_M[4] = x29;
+        out_p_ddot_D_rho_dot_M[5] = x33;
+        out_p_ddot_D_rho_dot_M[6] = x45;
+        out_p_ddot_D_rho_dot_M[7] = x49;
+        out_p_ddot_D_rho_dot_M[8] = x53;
+        out_p_ddot_D_rho_ddot_M[0] = Q_00;
+        out_p_ddot_D_rho_ddot_M[1] = Q_01;
+        out_p_ddot_D_rho_ddot_M[2] = Q_02;
+        out_p_ddot_D_rho_ddot_M[3] = Q_10;
+        out_p_ddot_D_rho_ddot_M[4] = Q_11;
+        out_p_ddot_D_rho_ddot_M[5] = Q_12;
+        out_p_ddot_D_rho_ddot_M[6] = Q_20;
+        out_p_ddot_D_rho_ddot_M[7] = Q_21;
+        out_p_ddot_D_rho_ddot_M[8] = Q_22;
+    }
+    return singular;
+}
+
+
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
  * are written as NaN; returns their number. One thread. */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_moving_frame_acceleration_with_jacobians)(
@@ -284,8 +516,8 @@ int64_t RIGIDSYM_ISA_NAME(rigidsym_moving_frame_acceleration_with_jacobians_thre
     double *RIGIDSYM_RESTRICT out_p_ddot_D_rho_ddot_M);
 
 
-/* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
- * is flagged too). */
+/* The same on float32 arrays (the float32 sample function: float arithmetic of the
+ * precision plan; a row whose output overflows float32 is flagged too). */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_moving_frame_acceleration_with_jacobians_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_o_ddot,

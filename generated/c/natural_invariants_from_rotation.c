@@ -11,14 +11,28 @@
  */
 #include "natural_invariants_from_rotation.h"
 
-/* Exactly RIGIDSYM_CHECK_BLOCK samples, always: a full block of the batch, or the last partial block
- * padded. One code path for every sample, so that a sample's bits do not depend on where it
- * sits in the batch: no scalar remainder of a vector loop; never
- * inlined, so that both uses run the same machine code. Then one finiteness test over the
- * first m samples' outputs (still in cache): finite inputs can overflow into a non-finite
- * output, flagged as a singular sample is. When something is flagged, each sample's flag is
- * recomputed from that sample alone (its own flag and its own output row) and its row
- * written as NaN. Returns the number of flagged samples among the first m. */
+/* Exactly NB = RIGIDSYM_CHECK_BLOCK samples, always: a full block of the batch, or a partial one padded.
+ * One code path for every sample, so that a
+ * sample's bits do not depend on where it sits in the batch: no scalar remainder of a vector
+ * loop; never inlined, so that every use runs the same machine code.
+ * Then one finiteness test over the first m samples' outputs (still in cache): finite inputs
+ * can overflow into a non-finite output, flagged as a singular sample is. When something is
+ * flagged, each sample's flag is recomputed from that sample alone (its own flag and its own
+ * output row) and its row written as NaN. Returns the number of flagged samples among the
+ * first m. T float: the float32 sample function (float inputs and outputs, the arithmetic of
+ * the precision plan in the header; sin/cos in double from the widened inputs). */
+
+/* Samples [i0, i0 + m) of the batch, m <= RIGIDSYM_CHECK_BLOCK: a full block, or a partial one (the tail
+ * of a batch, a batch of a few samples, one sample) through a padded block (its samples, then
+ * copies of its last one: valid inputs). Always the same block function, so a sample's bits
+ * do not depend on its batch: smaller blocks for short batches were measured to change the
+ * last bit of some samples (the compiler vectorises a loop of 4 samples differently, and FMA
+ * contraction with it). Returns the number flagged. */
+
+/* The batch of n samples on `threads` threads: blocks are independent and the count is an
+ * integer sum, so the result is the same for every thread count. One thread (or one block):
+ * no OpenMP region at all (entering one, even with if(0), costs about a microsecond:
+ * measured, more than a one-sample call). */
 static RIGIDSYM_NOINLINE int64_t rigidsym_natural_invariants_from_rotation_block(
     int64_t m,
     const double *RIGIDSYM_RESTRICT in_Q,
@@ -33,6 +47,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_natural_invariants_from_rotation_block
             in_Q + 9 * j,
             out_e + 3 * j,
             out_phi + 1 * j);
+
     }
     count += rigidsym_any_nonfinite(out_e, 3 * m);
     count += rigidsym_any_nonfinite(out_phi, 1 * m);
@@ -59,22 +74,64 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_natural_invariants_from_rotation_block
     return count;
 }
 
-/* Samples [i0, i0 + m) of the batch, m <= RIGIDSYM_CHECK_BLOCK; the tail through padded copies (the real
- * samples, then copies of the last one: valid inputs). Returns the number flagged. */
+
+static RIGIDSYM_NOINLINE int64_t rigidsym_natural_invariants_from_rotation_block_f32(
+    int64_t m,
+    const float *RIGIDSYM_RESTRICT in_Q,
+    float *RIGIDSYM_RESTRICT out_e,
+    float *RIGIDSYM_RESTRICT out_phi)
+{
+    int64_t count = 0;
+    /* branch-free so that the compiler can vectorise it */
+    RIGIDSYM_SIMD_COUNT
+    for (int64_t j = 0; j < RIGIDSYM_CHECK_BLOCK; ++j) {
+        count += rigidsym_natural_invariants_from_rotation_sample_f32(
+            in_Q + 9 * j,
+            out_e + 3 * j,
+            out_phi + 1 * j);
+
+    }
+    count += rigidsym_any_nonfinite_f32(out_e, 3 * m);
+    count += rigidsym_any_nonfinite_f32(out_phi, 1 * m);
+    if (count == 0)
+        return 0;
+    count = 0;
+    for (int64_t j = 0; j < m; ++j) {
+        float tmp_e[3];
+        float tmp_phi[1];
+        int flagged = rigidsym_natural_invariants_from_rotation_sample_f32(
+            in_Q + 9 * j,
+            tmp_e,
+            tmp_phi);
+        flagged |= rigidsym_any_nonfinite_f32(out_e + 3 * j, 3);
+        flagged |= rigidsym_any_nonfinite_f32(out_phi + 1 * j, 1);
+        if (flagged) {
+            ++count;
+            for (int c = 0; c < 3; ++c)
+                out_e[3 * j + c] = NAN;
+            for (int c = 0; c < 1; ++c)
+                out_phi[1 * j + c] = NAN;
+        }
+    }
+    return count;
+}
+
+
 static int64_t rigidsym_natural_invariants_from_rotation_run(
     int64_t i0, int64_t m,
     const double *RIGIDSYM_RESTRICT in_Q,
     double *RIGIDSYM_RESTRICT out_e,
     double *RIGIDSYM_RESTRICT out_phi)
 {
-    double pad_Q[9 * RIGIDSYM_CHECK_BLOCK];
-    double pad_e[3 * RIGIDSYM_CHECK_BLOCK];
-    double pad_phi[1 * RIGIDSYM_CHECK_BLOCK];
     if (m == RIGIDSYM_CHECK_BLOCK)
         return rigidsym_natural_invariants_from_rotation_block(m,
             in_Q + 9 * i0,
             out_e + 3 * i0,
             out_phi + 1 * i0);
+
+    double pad_Q[9 * RIGIDSYM_CHECK_BLOCK];
+    double pad_e[3 * RIGIDSYM_CHECK_BLOCK];
+    double pad_phi[1 * RIGIDSYM_CHECK_BLOCK];
     for (int64_t j = 0; j < RIGIDSYM_CHECK_BLOCK; ++j) {
         const int64_t s = i0 + (j < m ? j : m - 1);
         memcpy(pad_Q + 9 * j, in_Q + 9 * s,
@@ -89,53 +146,36 @@ static int64_t rigidsym_natural_invariants_from_rotation_run(
     return count;
 }
 
-/* float32 storage, float64 arithmetic: samples [i0, i0 + m) widened into the block's local
- * double arrays, evaluated by the same block function, rounded back. A finite double output
- * can overflow float32: such rows are flagged too (NaN). Returns the number flagged. */
+
 static int64_t rigidsym_natural_invariants_from_rotation_run_f32(
     int64_t i0, int64_t m,
     const float *RIGIDSYM_RESTRICT in_Q,
     float *RIGIDSYM_RESTRICT out_e,
     float *RIGIDSYM_RESTRICT out_phi)
 {
-    double pad_Q[9 * RIGIDSYM_CHECK_BLOCK];
-    double pad_e[3 * RIGIDSYM_CHECK_BLOCK];
-    double pad_phi[1 * RIGIDSYM_CHECK_BLOCK];
+    if (m == RIGIDSYM_CHECK_BLOCK)
+        return rigidsym_natural_invariants_from_rotation_block_f32(m,
+            in_Q + 9 * i0,
+            out_e + 3 * i0,
+            out_phi + 1 * i0);
+
+    float pad_Q[9 * RIGIDSYM_CHECK_BLOCK];
+    float pad_e[3 * RIGIDSYM_CHECK_BLOCK];
+    float pad_phi[1 * RIGIDSYM_CHECK_BLOCK];
     for (int64_t j = 0; j < RIGIDSYM_CHECK_BLOCK; ++j) {
         const int64_t s = i0 + (j < m ? j : m - 1);
-        for (int c = 0; c < 9; ++c)
-            pad_Q[9 * j + c] = in_Q[9 * s + c];
+        memcpy(pad_Q + 9 * j, in_Q + 9 * s,
+               9 * sizeof(float));
     }
-    int64_t count = rigidsym_natural_invariants_from_rotation_block(m,
+    const int64_t count = rigidsym_natural_invariants_from_rotation_block_f32(m,
         pad_Q,
         pad_e,
         pad_phi);
-    for (int64_t c = 0; c < 3 * m; ++c)
-        out_e[3 * i0 + c] = (float)pad_e[c];
-    for (int64_t c = 0; c < 1 * m; ++c)
-        out_phi[1 * i0 + c] = (float)pad_phi[c];
-    int64_t over = 0;
-    over += rigidsym_any_nonfinite_f32(out_e + 3 * i0, 3 * m);
-    over += rigidsym_any_nonfinite_f32(out_phi + 1 * i0, 1 * m);
-    if (over == 0)
-        return count;
-    for (int64_t j = 0; j < m; ++j) {
-        const int64_t i = i0 + j;
-        if (out_e[3 * i] != out_e[3 * i])
-            continue;                       /* flagged already: its row is NaN */
-        int flagged = 0;
-        flagged |= rigidsym_any_nonfinite_f32(out_e + 3 * i, 3);
-        flagged |= rigidsym_any_nonfinite_f32(out_phi + 1 * i, 1);
-        if (flagged) {
-            ++count;
-            for (int c = 0; c < 3; ++c)
-                out_e[3 * i + c] = NAN;
-            for (int c = 0; c < 1; ++c)
-                out_phi[1 * i + c] = NAN;
-        }
-    }
+    memcpy(out_e + 3 * i0, pad_e, 3 * m * sizeof(float));
+    memcpy(out_phi + 1 * i0, pad_phi, 1 * m * sizeof(float));
     return count;
 }
+
 
 int64_t RIGIDSYM_ISA_NAME(rigidsym_natural_invariants_from_rotation_f32_threads)(
     int64_t n, int threads,
@@ -145,19 +185,27 @@ int64_t RIGIDSYM_ISA_NAME(rigidsym_natural_invariants_from_rotation_f32_threads)
 {
     const int64_t nblocks = (n + RIGIDSYM_CHECK_BLOCK - 1) / RIGIDSYM_CHECK_BLOCK;
     int64_t count = 0;
-    if (threads < 1)
-        threads = 1;
+    if (threads <= 1 || nblocks <= 1) {
+        for (int64_t b = 0; b < nblocks; ++b) {
+            const int64_t i0 = b * RIGIDSYM_CHECK_BLOCK;
+            count += rigidsym_natural_invariants_from_rotation_run_f32(i0, n - i0 < RIGIDSYM_CHECK_BLOCK ? n - i0 : RIGIDSYM_CHECK_BLOCK,
+                in_Q,
+                out_e,
+                out_phi);
+        }
+        return count;
+    }
     RIGIDSYM_PARALLEL_FOR(threads)
     for (int64_t b = 0; b < nblocks; ++b) {
         const int64_t i0 = b * RIGIDSYM_CHECK_BLOCK;
-        count += rigidsym_natural_invariants_from_rotation_run_f32(
-            i0, n - i0 < RIGIDSYM_CHECK_BLOCK ? n - i0 : RIGIDSYM_CHECK_BLOCK,
+        count += rigidsym_natural_invariants_from_rotation_run_f32(i0, n - i0 < RIGIDSYM_CHECK_BLOCK ? n - i0 : RIGIDSYM_CHECK_BLOCK,
             in_Q,
             out_e,
             out_phi);
     }
     return count;
 }
+
 
 int64_t RIGIDSYM_ISA_NAME(rigidsym_natural_invariants_from_rotation_threads)(
     int64_t n, int threads,
@@ -167,21 +215,27 @@ int64_t RIGIDSYM_ISA_NAME(rigidsym_natural_invariants_from_rotation_threads)(
 {
     const int64_t nblocks = (n + RIGIDSYM_CHECK_BLOCK - 1) / RIGIDSYM_CHECK_BLOCK;
     int64_t count = 0;
-    if (threads < 1)
-        threads = 1;
-    /* blocks are independent and the count is an integer sum: the result is the same for
-     * every thread count */
+    if (threads <= 1 || nblocks <= 1) {
+        for (int64_t b = 0; b < nblocks; ++b) {
+            const int64_t i0 = b * RIGIDSYM_CHECK_BLOCK;
+            count += rigidsym_natural_invariants_from_rotation_run(i0, n - i0 < RIGIDSYM_CHECK_BLOCK ? n - i0 : RIGIDSYM_CHECK_BLOCK,
+                in_Q,
+                out_e,
+                out_phi);
+        }
+        return count;
+    }
     RIGIDSYM_PARALLEL_FOR(threads)
     for (int64_t b = 0; b < nblocks; ++b) {
         const int64_t i0 = b * RIGIDSYM_CHECK_BLOCK;
-        count += rigidsym_natural_invariants_from_rotation_run(
-            i0, n - i0 < RIGIDSYM_CHECK_BLOCK ? n - i0 : RIGIDSYM_CHECK_BLOCK,
+        count += rigidsym_natural_invariants_from_rotation_run(i0, n - i0 < RIGIDSYM_CHECK_BLOCK ? n - i0 : RIGIDSYM_CHECK_BLOCK,
             in_Q,
             out_e,
             out_phi);
     }
     return count;
 }
+
 
 int64_t RIGIDSYM_ISA_NAME(rigidsym_natural_invariants_from_rotation)(
     int64_t n,

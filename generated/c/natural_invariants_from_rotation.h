@@ -12,11 +12,20 @@
  * Natural invariants (e, phi) of a rotation matrix, phi in [0, pi].
  * phi = atan2(||vect(Q)||, (tr Q - 1)/2), e = vect(Q)/||vect(Q)||; for cos phi < -1/2, e from the symmetric part of Q (never acos)
  * Singular set: phi = 0 (Q = 1): the axis e is undefined
+ *
+ * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
+ * measured at generation, rigidsym.codegen.float32; error within 0.982 ulp of float32,
+ * normwise, at its points). In double:
+ *   branch 1: none
+ *   branch 2: none
+ *   branch 3: none
+ *   branch 4: x4
  */
 #ifndef RIGIDSYM_NATURAL_INVARIANTS_FROM_ROTATION_H
 #define RIGIDSYM_NATURAL_INVARIANTS_FROM_ROTATION_H
 
 #include "rigidsym_common.h"
+
 
 /* One sample: returns nonzero when the sample is singular (division by an exact zero or a
  * non-finite result). Inputs and outputs are row-major per sample. */
@@ -123,6 +132,102 @@ static inline int rigidsym_natural_invariants_from_rotation_sample(
 }
 
 
+/* One float32 sample: float inputs and outputs, arithmetic of the precision plan above. */
+static inline int rigidsym_natural_invariants_from_rotation_sample_f32(
+    const float *RIGIDSYM_RESTRICT in_Q,
+    float *RIGIDSYM_RESTRICT out_e,
+    float *RIGIDSYM_RESTRICT out_phi)
+{
+    const float Q_00 = in_Q[0];
+    const float Q_01 = in_Q[1];
+    const float Q_02 = in_Q[2];
+    const float Q_10 = in_Q[3];
+    const float Q_11 = in_Q[4];
+    const float Q_12 = in_Q[5];
+    const float Q_20 = in_Q[6];
+    const float Q_21 = in_Q[7];
+    const float Q_22 = in_Q[8];
+    int singular = 0;
+    if (((double)Q_00) >= ((double)Q_11) && ((double)Q_00) >= ((double)Q_22) && ((double)Q_00) + ((double)Q_11) + ((double)Q_22) < 0.0) {
+        const float x0 = (0.5f)*Q_00;
+        const float x1 = (0.5f)*Q_11;
+        const float x2 = (0.5f)*Q_22;
+        const float x3 = x0 - x1 - x2 + 0.5f;
+        const float x4 = (0.5f)*Q_01;
+        const float x5 = (0.5f)*Q_10 + x4;
+        const float x6 = (0.5f)*Q_02;
+        const float x7 = (0.5f)*Q_20;
+        const float x8 = x6 + x7;
+        const float x9 = (x3*x3) + (x5*x5) + (x8*x8);
+        const float x10 = (0.5f)*Q_10 - x4;
+        const float x11 = x6 - x7;
+        const float x12 = -0.5f*Q_12 + (0.5f)*Q_21;
+        const float x13 = ((x10*x8 + x11*x5 + x12*x3 < 0.0f) ? (-1.0f) : (1.0f))/sqrtf(x9);
+        out_e[0] = x13*x3;
+        out_e[1] = x13*x5;
+        out_e[2] = x13*x8;
+        out_phi[0] = atan2(sqrtf((x10*x10) + (x11*x11) + (x12*x12)), x0 + x1 + x2 - 0.5f);
+        singular |= (((double)x9)) == 0.0;
+        const double finite = (((x13 - x13) + (out_phi[0] - out_phi[0])) + ((x9 - x9) + (((x10*x10) + (x11*x11) + (x12*x12)) - ((x10*x10) + (x11*x11) + (x12*x12)))));
+        singular |= finite != finite;
+    } else if (((double)Q_11) >= ((double)Q_00) && ((double)Q_11) >= ((double)Q_22) && ((double)Q_00) + ((double)Q_11) + ((double)Q_22) < 0.0) {
+        const float x0 = (0.5f)*Q_01;
+        const float x1 = (0.5f)*Q_10 + x0;
+        const float x2 = (0.5f)*Q_12;
+        const float x3 = (0.5f)*Q_21 + x2;
+        const float x4 = (0.5f)*Q_00 + (0.5f)*Q_22 - 0.5f;
+        const float x5 = (0.5f)*Q_11 - x4;
+        const float x6 = (x1*x1) + (x3*x3) + (x5*x5);
+        const float x7 = (0.5f)*Q_10 - x0;
+        const float x8 = (0.5f)*Q_21 - x2;
+        const float x9 = (0.5f)*Q_02 - 0.5f*Q_20;
+        const float x10 = ((x1*x8 + x3*x7 + x5*x9 < 0.0f) ? (-1.0f) : (1.0f))/sqrtf(x6);
+        out_e[0] = x1*x10;
+        out_e[1] = x10*x5;
+        out_e[2] = x10*x3;
+        out_phi[0] = atan2(sqrtf((x7*x7) + (x8*x8) + (x9*x9)), (0.5f)*Q_11 + x4);
+        singular |= (((double)x6)) == 0.0;
+        const double finite = (((x10 - x10) + (out_phi[0] - out_phi[0])) + ((x6 - x6) + (((x7*x7) + (x8*x8) + (x9*x9)) - ((x7*x7) + (x8*x8) + (x9*x9)))));
+        singular |= finite != finite;
+    } else if (((double)Q_22) >= ((double)Q_00) && ((double)Q_22) >= ((double)Q_11) && ((double)Q_00) + ((double)Q_11) + ((double)Q_22) < 0.0) {
+        const float x0 = (0.5f)*Q_02;
+        const float x1 = (0.5f)*Q_20;
+        const float x2 = x0 + x1;
+        const float x3 = (0.5f)*Q_12;
+        const float x4 = (0.5f)*Q_21 + x3;
+        const float x5 = (0.5f)*Q_00 + (0.5f)*Q_11 - 0.5f;
+        const float x6 = (0.5f)*Q_22 - x5;
+        const float x7 = (x2*x2) + (x4*x4) + (x6*x6);
+        const float x8 = x0 - x1;
+        const float x9 = (0.5f)*Q_21 - x3;
+        const float x10 = -0.5f*Q_01 + (0.5f)*Q_10;
+        const float x11 = ((x10*x6 + x2*x9 + x4*x8 < 0.0f) ? (-1.0f) : (1.0f))/sqrtf(x7);
+        out_e[0] = x11*x2;
+        out_e[1] = x11*x4;
+        out_e[2] = x11*x6;
+        out_phi[0] = atan2(sqrtf((x10*x10) + (x8*x8) + (x9*x9)), (0.5f)*Q_22 + x5);
+        singular |= (((double)x7)) == 0.0;
+        const double finite = (((x11 - x11) + (out_phi[0] - out_phi[0])) + ((x7 - x7) + (((x10*x10) + (x8*x8) + (x9*x9)) - ((x10*x10) + (x8*x8) + (x9*x9)))));
+        singular |= finite != finite;
+    } else {
+        const float x0 = -0.5f*Q_12 + (0.5f)*Q_21;
+        const float x1 = -0.5f*Q_01 + (0.5f)*Q_10;
+        const float x2 = (0.5f)*Q_02 - 0.5f*Q_20;
+        const float x3 = (x0*x0) + (x1*x1) + (x2*x2);
+        const double x4 = sqrt(((double)x3));
+        const float x5 = 1.0f/x4;
+        out_e[0] = x0*x5;
+        out_e[1] = x2*x5;
+        out_e[2] = x1*x5;
+        out_phi[0] = atan2(x4, (0.5f)*Q_00 + (0.5f)*Q_11 + (0.5f)*Q_22 - 0.5f);
+        singular |= (((double)x3)) == 0.0;
+        const double finite = ((x4 - x4) + ((x5 - x5) + (x3 - x3)));
+        singular |= finite != finite;
+    }
+    return singular;
+}
+
+
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
  * are written as NaN; returns their number. One thread. */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_natural_invariants_from_rotation)(
@@ -140,8 +245,8 @@ int64_t RIGIDSYM_ISA_NAME(rigidsym_natural_invariants_from_rotation_threads)(
     double *RIGIDSYM_RESTRICT out_phi);
 
 
-/* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
- * is flagged too). */
+/* The same on float32 arrays (the float32 sample function: float arithmetic of the
+ * precision plan; a row whose output overflows float32 is flagged too). */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_natural_invariants_from_rotation_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_Q,

@@ -10,11 +10,17 @@
  *
  * Residual of the Newton-Euler equations, w - [n; f] (benchmark kernel K6).
  * r = [I_C omega_dot + omega x I_C omega - n; m c_ddot - f]
+ *
+ * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
+ * measured at generation, rigidsym.codegen.float32; error within 0.585 ulp of float32,
+ * normwise, at its points). In double:
+ *   x0, x1, x2, r[0], r[1], r[2]
  */
 #ifndef RIGIDSYM_NEWTON_EULER_RESIDUAL_H
 #define RIGIDSYM_NEWTON_EULER_RESIDUAL_H
 
 #include "rigidsym_common.h"
+
 
 /* One sample: returns nonzero when the sample is singular (division by an exact zero or a
  * non-finite result). Inputs and outputs are row-major per sample. */
@@ -69,6 +75,58 @@ static inline int rigidsym_newton_euler_residual_sample(
 }
 
 
+/* One float32 sample: float inputs and outputs, arithmetic of the precision plan above. */
+static inline int rigidsym_newton_euler_residual_sample_f32(
+    const float *RIGIDSYM_RESTRICT in_I_C,
+    const float *RIGIDSYM_RESTRICT in_m,
+    const float *RIGIDSYM_RESTRICT in_omega,
+    const float *RIGIDSYM_RESTRICT in_omega_dot,
+    const float *RIGIDSYM_RESTRICT in_c_ddot,
+    const float *RIGIDSYM_RESTRICT in_n,
+    const float *RIGIDSYM_RESTRICT in_f,
+    float *RIGIDSYM_RESTRICT out_r)
+{
+    const float I_C_00 = in_I_C[0];
+    const float I_C_01 = in_I_C[1];
+    const float I_C_02 = in_I_C[2];
+    const float I_C_10 = in_I_C[3];
+    const float I_C_11 = in_I_C[4];
+    const float I_C_12 = in_I_C[5];
+    const float I_C_20 = in_I_C[6];
+    const float I_C_21 = in_I_C[7];
+    const float I_C_22 = in_I_C[8];
+    const float m = in_m[0];
+    const float omega_0 = in_omega[0];
+    const float omega_1 = in_omega[1];
+    const float omega_2 = in_omega[2];
+    const float omega_dot_0 = in_omega_dot[0];
+    const float omega_dot_1 = in_omega_dot[1];
+    const float omega_dot_2 = in_omega_dot[2];
+    const float c_ddot_0 = in_c_ddot[0];
+    const float c_ddot_1 = in_c_ddot[1];
+    const float c_ddot_2 = in_c_ddot[2];
+    const float n_0 = in_n[0];
+    const float n_1 = in_n[1];
+    const float n_2 = in_n[2];
+    const float f_0 = in_f[0];
+    const float f_1 = in_f[1];
+    const float f_2 = in_f[2];
+    int singular = 0;
+    {
+        const double x0 = ((double)I_C_20)*((double)omega_0) + ((double)I_C_21)*((double)omega_1) + ((double)I_C_22)*((double)omega_2);
+        const double x1 = ((double)I_C_10)*((double)omega_0) + ((double)I_C_11)*((double)omega_1) + ((double)I_C_12)*((double)omega_2);
+        const double x2 = ((double)I_C_00)*((double)omega_0) + ((double)I_C_01)*((double)omega_1) + ((double)I_C_02)*((double)omega_2);
+        out_r[0] = ((double)I_C_00)*((double)omega_dot_0) + ((double)I_C_01)*((double)omega_dot_1) + ((double)I_C_02)*((double)omega_dot_2) - ((double)n_0) + ((double)omega_1)*x0 - ((double)omega_2)*x1;
+        out_r[1] = ((double)I_C_10)*((double)omega_dot_0) + ((double)I_C_11)*((double)omega_dot_1) + ((double)I_C_12)*((double)omega_dot_2) - ((double)n_1) - ((double)omega_0)*x0 + ((double)omega_2)*x2;
+        out_r[2] = ((double)I_C_20)*((double)omega_dot_0) + ((double)I_C_21)*((double)omega_dot_1) + ((double)I_C_22)*((double)omega_dot_2) - ((double)n_2) + ((double)omega_0)*x1 - ((double)omega_1)*x2;
+        out_r[3] = c_ddot_0*m - f_0;
+        out_r[4] = c_ddot_1*m - f_1;
+        out_r[5] = c_ddot_2*m - f_2;
+    }
+    return singular;
+}
+
+
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
  * are written as NaN; returns their number. One thread. */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_newton_euler_residual)(
@@ -96,8 +154,8 @@ int64_t RIGIDSYM_ISA_NAME(rigidsym_newton_euler_residual_threads)(
     double *RIGIDSYM_RESTRICT out_r);
 
 
-/* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
- * is flagged too). */
+/* The same on float32 arrays (the float32 sample function: float arithmetic of the
+ * precision plan; a row whose output overflows float32 is flagged too). */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_newton_euler_residual_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_I_C,

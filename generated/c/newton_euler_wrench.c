@@ -10,14 +10,28 @@
  */
 #include "newton_euler_wrench.h"
 
-/* Exactly RIGIDSYM_CHECK_BLOCK samples, always: a full block of the batch, or the last partial block
- * padded. One code path for every sample, so that a sample's bits do not depend on where it
- * sits in the batch: no scalar remainder of a vector loop; never
- * inlined, so that both uses run the same machine code. Then one finiteness test over the
- * first m samples' outputs (still in cache): finite inputs can overflow into a non-finite
- * output, flagged as a singular sample is. When something is flagged, each sample's flag is
- * recomputed from that sample alone (its own flag and its own output row) and its row
- * written as NaN. Returns the number of flagged samples among the first m. */
+/* Exactly NB = RIGIDSYM_CHECK_BLOCK samples, always: a full block of the batch, or a partial one padded.
+ * One code path for every sample, so that a
+ * sample's bits do not depend on where it sits in the batch: no scalar remainder of a vector
+ * loop; never inlined, so that every use runs the same machine code.
+ * Then one finiteness test over the first m samples' outputs (still in cache): finite inputs
+ * can overflow into a non-finite output, flagged as a singular sample is. When something is
+ * flagged, each sample's flag is recomputed from that sample alone (its own flag and its own
+ * output row) and its row written as NaN. Returns the number of flagged samples among the
+ * first m. T float: the float32 sample function (float inputs and outputs, the arithmetic of
+ * the precision plan in the header; sin/cos in double from the widened inputs). */
+
+/* Samples [i0, i0 + m) of the batch, m <= RIGIDSYM_CHECK_BLOCK: a full block, or a partial one (the tail
+ * of a batch, a batch of a few samples, one sample) through a padded block (its samples, then
+ * copies of its last one: valid inputs). Always the same block function, so a sample's bits
+ * do not depend on its batch: smaller blocks for short batches were measured to change the
+ * last bit of some samples (the compiler vectorises a loop of 4 samples differently, and FMA
+ * contraction with it). Returns the number flagged. */
+
+/* The batch of n samples on `threads` threads: blocks are independent and the count is an
+ * integer sum, so the result is the same for every thread count. One thread (or one block):
+ * no OpenMP region at all (entering one, even with if(0), costs about a microsecond:
+ * measured, more than a one-sample call). */
 static RIGIDSYM_NOINLINE int64_t rigidsym_newton_euler_wrench_block(
     int64_t m,
     const double *RIGIDSYM_RESTRICT in_I_C,
@@ -39,6 +53,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_newton_euler_wrench_block(
             in_omega_dot + 3 * j,
             in_c_ddot + 3 * j,
             out_w + 6 * j);
+
     }
     count += rigidsym_any_nonfinite(out_w, 6 * m);
     if (count == 0)
@@ -56,8 +71,47 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_newton_euler_wrench_block(
     return count;
 }
 
-/* Samples [i0, i0 + m) of the batch, m <= RIGIDSYM_CHECK_BLOCK; the tail through padded copies (the real
- * samples, then copies of the last one: valid inputs). Returns the number flagged. */
+
+static RIGIDSYM_NOINLINE int64_t rigidsym_newton_euler_wrench_block_f32(
+    int64_t m,
+    const float *RIGIDSYM_RESTRICT in_I_C,
+    const float *RIGIDSYM_RESTRICT in_m,
+    const float *RIGIDSYM_RESTRICT in_omega,
+    const float *RIGIDSYM_RESTRICT in_omega_dot,
+    const float *RIGIDSYM_RESTRICT in_c_ddot,
+    float *RIGIDSYM_RESTRICT out_w)
+{
+    int64_t count = 0;
+    /* No division, root or branch: nothing to count per sample. A plain loop; the
+     * compiler's cost model decides on vectorisation (forcing it turns the strided
+     * row-major loads into gathers, measured slower). */
+    for (int64_t j = 0; j < RIGIDSYM_CHECK_BLOCK; ++j) {
+        (void)rigidsym_newton_euler_wrench_sample_f32(
+            in_I_C + 9 * j,
+            in_m + 1 * j,
+            in_omega + 3 * j,
+            in_omega_dot + 3 * j,
+            in_c_ddot + 3 * j,
+            out_w + 6 * j);
+
+    }
+    count += rigidsym_any_nonfinite_f32(out_w, 6 * m);
+    if (count == 0)
+        return 0;
+    count = 0;
+    for (int64_t j = 0; j < m; ++j) {
+        int flagged = 0;
+        flagged |= rigidsym_any_nonfinite_f32(out_w + 6 * j, 6);
+        if (flagged) {
+            ++count;
+            for (int c = 0; c < 6; ++c)
+                out_w[6 * j + c] = NAN;
+        }
+    }
+    return count;
+}
+
+
 static int64_t rigidsym_newton_euler_wrench_run(
     int64_t i0, int64_t m,
     const double *RIGIDSYM_RESTRICT in_I_C,
@@ -67,12 +121,6 @@ static int64_t rigidsym_newton_euler_wrench_run(
     const double *RIGIDSYM_RESTRICT in_c_ddot,
     double *RIGIDSYM_RESTRICT out_w)
 {
-    double pad_I_C[9 * RIGIDSYM_CHECK_BLOCK];
-    double pad_m[1 * RIGIDSYM_CHECK_BLOCK];
-    double pad_omega[3 * RIGIDSYM_CHECK_BLOCK];
-    double pad_omega_dot[3 * RIGIDSYM_CHECK_BLOCK];
-    double pad_c_ddot[3 * RIGIDSYM_CHECK_BLOCK];
-    double pad_w[6 * RIGIDSYM_CHECK_BLOCK];
     if (m == RIGIDSYM_CHECK_BLOCK)
         return rigidsym_newton_euler_wrench_block(m,
             in_I_C + 9 * i0,
@@ -81,6 +129,13 @@ static int64_t rigidsym_newton_euler_wrench_run(
             in_omega_dot + 3 * i0,
             in_c_ddot + 3 * i0,
             out_w + 6 * i0);
+
+    double pad_I_C[9 * RIGIDSYM_CHECK_BLOCK];
+    double pad_m[1 * RIGIDSYM_CHECK_BLOCK];
+    double pad_omega[3 * RIGIDSYM_CHECK_BLOCK];
+    double pad_omega_dot[3 * RIGIDSYM_CHECK_BLOCK];
+    double pad_c_ddot[3 * RIGIDSYM_CHECK_BLOCK];
+    double pad_w[6 * RIGIDSYM_CHECK_BLOCK];
     for (int64_t j = 0; j < RIGIDSYM_CHECK_BLOCK; ++j) {
         const int64_t s = i0 + (j < m ? j : m - 1);
         memcpy(pad_I_C + 9 * j, in_I_C + 9 * s,
@@ -105,9 +160,7 @@ static int64_t rigidsym_newton_euler_wrench_run(
     return count;
 }
 
-/* float32 storage, float64 arithmetic: samples [i0, i0 + m) widened into the block's local
- * double arrays, evaluated by the same block function, rounded back. A finite double output
- * can overflow float32: such rows are flagged too (NaN). Returns the number flagged. */
+
 static int64_t rigidsym_newton_euler_wrench_run_f32(
     int64_t i0, int64_t m,
     const float *RIGIDSYM_RESTRICT in_I_C,
@@ -117,52 +170,45 @@ static int64_t rigidsym_newton_euler_wrench_run_f32(
     const float *RIGIDSYM_RESTRICT in_c_ddot,
     float *RIGIDSYM_RESTRICT out_w)
 {
-    double pad_I_C[9 * RIGIDSYM_CHECK_BLOCK];
-    double pad_m[1 * RIGIDSYM_CHECK_BLOCK];
-    double pad_omega[3 * RIGIDSYM_CHECK_BLOCK];
-    double pad_omega_dot[3 * RIGIDSYM_CHECK_BLOCK];
-    double pad_c_ddot[3 * RIGIDSYM_CHECK_BLOCK];
-    double pad_w[6 * RIGIDSYM_CHECK_BLOCK];
+    if (m == RIGIDSYM_CHECK_BLOCK)
+        return rigidsym_newton_euler_wrench_block_f32(m,
+            in_I_C + 9 * i0,
+            in_m + 1 * i0,
+            in_omega + 3 * i0,
+            in_omega_dot + 3 * i0,
+            in_c_ddot + 3 * i0,
+            out_w + 6 * i0);
+
+    float pad_I_C[9 * RIGIDSYM_CHECK_BLOCK];
+    float pad_m[1 * RIGIDSYM_CHECK_BLOCK];
+    float pad_omega[3 * RIGIDSYM_CHECK_BLOCK];
+    float pad_omega_dot[3 * RIGIDSYM_CHECK_BLOCK];
+    float pad_c_ddot[3 * RIGIDSYM_CHECK_BLOCK];
+    float pad_w[6 * RIGIDSYM_CHECK_BLOCK];
     for (int64_t j = 0; j < RIGIDSYM_CHECK_BLOCK; ++j) {
         const int64_t s = i0 + (j < m ? j : m - 1);
-        for (int c = 0; c < 9; ++c)
-            pad_I_C[9 * j + c] = in_I_C[9 * s + c];
-        for (int c = 0; c < 1; ++c)
-            pad_m[1 * j + c] = in_m[1 * s + c];
-        for (int c = 0; c < 3; ++c)
-            pad_omega[3 * j + c] = in_omega[3 * s + c];
-        for (int c = 0; c < 3; ++c)
-            pad_omega_dot[3 * j + c] = in_omega_dot[3 * s + c];
-        for (int c = 0; c < 3; ++c)
-            pad_c_ddot[3 * j + c] = in_c_ddot[3 * s + c];
+        memcpy(pad_I_C + 9 * j, in_I_C + 9 * s,
+               9 * sizeof(float));
+        memcpy(pad_m + 1 * j, in_m + 1 * s,
+               1 * sizeof(float));
+        memcpy(pad_omega + 3 * j, in_omega + 3 * s,
+               3 * sizeof(float));
+        memcpy(pad_omega_dot + 3 * j, in_omega_dot + 3 * s,
+               3 * sizeof(float));
+        memcpy(pad_c_ddot + 3 * j, in_c_ddot + 3 * s,
+               3 * sizeof(float));
     }
-    int64_t count = rigidsym_newton_euler_wrench_block(m,
+    const int64_t count = rigidsym_newton_euler_wrench_block_f32(m,
         pad_I_C,
         pad_m,
         pad_omega,
         pad_omega_dot,
         pad_c_ddot,
         pad_w);
-    for (int64_t c = 0; c < 6 * m; ++c)
-        out_w[6 * i0 + c] = (float)pad_w[c];
-    int64_t over = 0;
-    over += rigidsym_any_nonfinite_f32(out_w + 6 * i0, 6 * m);
-    if (over == 0)
-        return count;
-    for (int64_t j = 0; j < m; ++j) {
-        const int64_t i = i0 + j;
-        if (out_w[6 * i] != out_w[6 * i])
-            continue;                       /* flagged already: its row is NaN */
-        int flagged = 0;
-        flagged |= rigidsym_any_nonfinite_f32(out_w + 6 * i, 6);
-        if (flagged) {
-            ++count;
-            for (int c = 0; c < 6; ++c)
-                out_w[6 * i + c] = NAN;
-        }
-    }
+    memcpy(out_w + 6 * i0, pad_w, 6 * m * sizeof(float));
     return count;
 }
+
 
 int64_t RIGIDSYM_ISA_NAME(rigidsym_newton_euler_wrench_f32_threads)(
     int64_t n, int threads,
@@ -175,13 +221,23 @@ int64_t RIGIDSYM_ISA_NAME(rigidsym_newton_euler_wrench_f32_threads)(
 {
     const int64_t nblocks = (n + RIGIDSYM_CHECK_BLOCK - 1) / RIGIDSYM_CHECK_BLOCK;
     int64_t count = 0;
-    if (threads < 1)
-        threads = 1;
+    if (threads <= 1 || nblocks <= 1) {
+        for (int64_t b = 0; b < nblocks; ++b) {
+            const int64_t i0 = b * RIGIDSYM_CHECK_BLOCK;
+            count += rigidsym_newton_euler_wrench_run_f32(i0, n - i0 < RIGIDSYM_CHECK_BLOCK ? n - i0 : RIGIDSYM_CHECK_BLOCK,
+                in_I_C,
+                in_m,
+                in_omega,
+                in_omega_dot,
+                in_c_ddot,
+                out_w);
+        }
+        return count;
+    }
     RIGIDSYM_PARALLEL_FOR(threads)
     for (int64_t b = 0; b < nblocks; ++b) {
         const int64_t i0 = b * RIGIDSYM_CHECK_BLOCK;
-        count += rigidsym_newton_euler_wrench_run_f32(
-            i0, n - i0 < RIGIDSYM_CHECK_BLOCK ? n - i0 : RIGIDSYM_CHECK_BLOCK,
+        count += rigidsym_newton_euler_wrench_run_f32(i0, n - i0 < RIGIDSYM_CHECK_BLOCK ? n - i0 : RIGIDSYM_CHECK_BLOCK,
             in_I_C,
             in_m,
             in_omega,
@@ -191,6 +247,7 @@ int64_t RIGIDSYM_ISA_NAME(rigidsym_newton_euler_wrench_f32_threads)(
     }
     return count;
 }
+
 
 int64_t RIGIDSYM_ISA_NAME(rigidsym_newton_euler_wrench_threads)(
     int64_t n, int threads,
@@ -203,15 +260,23 @@ int64_t RIGIDSYM_ISA_NAME(rigidsym_newton_euler_wrench_threads)(
 {
     const int64_t nblocks = (n + RIGIDSYM_CHECK_BLOCK - 1) / RIGIDSYM_CHECK_BLOCK;
     int64_t count = 0;
-    if (threads < 1)
-        threads = 1;
-    /* blocks are independent and the count is an integer sum: the result is the same for
-     * every thread count */
+    if (threads <= 1 || nblocks <= 1) {
+        for (int64_t b = 0; b < nblocks; ++b) {
+            const int64_t i0 = b * RIGIDSYM_CHECK_BLOCK;
+            count += rigidsym_newton_euler_wrench_run(i0, n - i0 < RIGIDSYM_CHECK_BLOCK ? n - i0 : RIGIDSYM_CHECK_BLOCK,
+                in_I_C,
+                in_m,
+                in_omega,
+                in_omega_dot,
+                in_c_ddot,
+                out_w);
+        }
+        return count;
+    }
     RIGIDSYM_PARALLEL_FOR(threads)
     for (int64_t b = 0; b < nblocks; ++b) {
         const int64_t i0 = b * RIGIDSYM_CHECK_BLOCK;
-        count += rigidsym_newton_euler_wrench_run(
-            i0, n - i0 < RIGIDSYM_CHECK_BLOCK ? n - i0 : RIGIDSYM_CHECK_BLOCK,
+        count += rigidsym_newton_euler_wrench_run(i0, n - i0 < RIGIDSYM_CHECK_BLOCK ? n - i0 : RIGIDSYM_CHECK_BLOCK,
             in_I_C,
             in_m,
             in_omega,
@@ -221,6 +286,7 @@ int64_t RIGIDSYM_ISA_NAME(rigidsym_newton_euler_wrench_threads)(
     }
     return count;
 }
+
 
 int64_t RIGIDSYM_ISA_NAME(rigidsym_newton_euler_wrench)(
     int64_t n,

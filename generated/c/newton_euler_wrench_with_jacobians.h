@@ -10,11 +10,17 @@
  *
  * Newton-Euler wrench [n_C; f] of a rigid body, with the Jacobians of its outputs.
  * n_C = I_C omega_dot + omega x I_C omega, f = m c_ddot; and d(output)/d(input) by sympy on the declared formula
+ *
+ * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
+ * measured at generation, rigidsym.codegen.float32; error within 0.945 ulp of float32,
+ * normwise, at its points). In double:
+ *   x2, x3, x7, x8, x9, x10, x12, x13, w[0], w[1], w[2], w_D_omega[1], w_D_omega[3], w_D_omega[6]
  */
 #ifndef RIGIDSYM_NEWTON_EULER_WRENCH_WITH_JACOBIANS_H
 #define RIGIDSYM_NEWTON_EULER_WRENCH_WITH_JACOBIANS_H
 
 #include "rigidsym_common.h"
+
 
 /* One sample: returns nonzero when the sample is singular (division by an exact zero or a
  * non-finite result). Inputs and outputs are row-major per sample. */
@@ -201,6 +207,190 @@ static inline int rigidsym_newton_euler_wrench_with_jacobians_sample(
 }
 
 
+/* One float32 sample: float inputs and outputs, arithmetic of the precision plan above. */
+static inline int rigidsym_newton_euler_wrench_with_jacobians_sample_f32(
+    const float *RIGIDSYM_RESTRICT in_I_C,
+    const float *RIGIDSYM_RESTRICT in_m,
+    const float *RIGIDSYM_RESTRICT in_omega,
+    const float *RIGIDSYM_RESTRICT in_omega_dot,
+    const float *RIGIDSYM_RESTRICT in_c_ddot,
+    float *RIGIDSYM_RESTRICT out_w,
+    float *RIGIDSYM_RESTRICT out_w_D_I_C,
+    float *RIGIDSYM_RESTRICT out_w_D_m,
+    float *RIGIDSYM_RESTRICT out_w_D_omega,
+    float *RIGIDSYM_RESTRICT out_w_D_omega_dot,
+    float *RIGIDSYM_RESTRICT out_w_D_c_ddot)
+{
+    const float I_C_00 = in_I_C[0];
+    const float I_C_01 = in_I_C[1];
+    const float I_C_02 = in_I_C[2];
+    const float I_C_10 = in_I_C[3];
+    const float I_C_11 = in_I_C[4];
+    const float I_C_12 = in_I_C[5];
+    const float I_C_20 = in_I_C[6];
+    const float I_C_21 = in_I_C[7];
+    const float I_C_22 = in_I_C[8];
+    const float m = in_m[0];
+    const float omega_0 = in_omega[0];
+    const float omega_1 = in_omega[1];
+    const float omega_2 = in_omega[2];
+    const float omega_dot_0 = in_omega_dot[0];
+    const float omega_dot_1 = in_omega_dot[1];
+    const float omega_dot_2 = in_omega_dot[2];
+    const float c_ddot_0 = in_c_ddot[0];
+    const float c_ddot_1 = in_c_ddot[1];
+    const float c_ddot_2 = in_c_ddot[2];
+    int singular = 0;
+    {
+        const float x0 = I_C_21*omega_1;
+        const float x1 = I_C_20*omega_0;
+        const double x2 = ((double)I_C_22)*((double)omega_2);
+        const double x3 = ((double)x1) + x2;
+        const float x4 = x0 + x3;
+        const float x5 = I_C_12*omega_2;
+        const float x6 = I_C_10*omega_0;
+        const double x7 = ((double)I_C_11)*((double)omega_1);
+        const double x8 = ((double)x6) + x7;
+        const double x9 = ((double)x5) + x8;
+        const double x10 = ((double)I_C_02)*((double)omega_2);
+        const float x11 = I_C_00*omega_0;
+        const double x12 = ((double)I_C_01)*((double)omega_1);
+        const double x13 = ((double)x11) + x12;
+        const float x14 = x10 + x13;
+        const float x15 = omega_0*omega_2;
+        const float x16 = -x15;
+        const float x17 = omega_1*omega_2;
+        const float x18 = -x17;
+        const float x19 = (omega_2*omega_2);
+        const float x20 = omega_0*omega_1;
+        const float x21 = (omega_1*omega_1);
+        const float x22 = (omega_0*omega_0);
+        const float x23 = -x20;
+        out_w[0] = ((double)I_C_00)*((double)omega_dot_0) + ((double)I_C_01)*((double)omega_dot_1) + ((double)I_C_02)*((double)omega_dot_2) + ((double)omega_1)*((double)x4) - ((double)omega_2)*x9;
+        out_w[1] = ((double)I_C_10)*((double)omega_dot_0) + ((double)I_C_11)*((double)omega_dot_1) + ((double)I_C_12)*((double)omega_dot_2) - ((double)omega_0)*((double)x4) + ((double)omega_2)*((double)x14);
+        out_w[2] = ((double)I_C_20)*((double)omega_dot_0) + ((double)I_C_21)*((double)omega_dot_1) + ((double)I_C_22)*((double)omega_dot_2) + ((double)omega_0)*x9 - ((double)omega_1)*((double)x14);
+        out_w[3] = c_ddot_0*m;
+        out_w[4] = c_ddot_1*m;
+        out_w[5] = c_ddot_2*m;
+        out_w_D_I_C[0] = omega_dot_0;
+        out_w_D_I_C[1] = omega_dot_1;
+        out_w_D_I_C[2] = omega_dot_2;
+        out_w_D_I_C[3] = x16;
+        out_w_D_I_C[4] = x18;
+        out_w_D_I_C[5] = -x19;
+        out_w_D_I_C[6] = x20;
+        out_w_D_I_C[7] = x21;
+        out_w_D_I_C[8] = x17;
+        out_w_D_I_C[9] = x15;
+        out_w_D_I_C[10] = x17;
+        out_w_D_I_C[11] = x19;
+        out_w_D_I_C[12] = omega_dot_0;
+        out_w_D_I_C[13] = omega_dot_1;
+        out_w_D_I_C[14] = omega_dot_2;
+        out_w_D_I_C[15] = -x22;
+        out_w_D_I_C[16] = x23;
+        out_w_D_I_C[17] = x16;
+        out_w_D_I_C[18] = x23;
+        out_w_D_I_C[19] = -x21;
+        out_w_D_I_C[20] = x18;
+        out_w_D_I_C[21] = x22;
+        out_w_D_I_C[22] = x20;
+        out_w_D_I_C[23] = x15;
+        out_w_D_I_C[24] = omega_dot_0;
+        out_w_D_I_C[25] = omega_dot_1;
+        out_w_D_I_C[26] = omega_dot_2;
+        out_w_D_I_C[27] = 0.0f;
+        out_w_D_I_C[28] = 0.0f;
+        out_w_D_I_C[29] = 0.0f;
+        out_w_D_I_C[30] = 0.0f;
+        out_w_D_I_C[31] = 0.0f;
+        out_w_D_I_C[32] = 0.0f;
+        out_w_D_I_C[33] = 0.0f;
+        out_w_D_I_C[34] = 0.0f;
+        out_w_D_I_C[35] = 0.0f;
+        out_w_D_I_C[36] = 0.0f;
+        out_w_D_I_C[37] = 0.0f;
+        out_w_D_I_C[38] = 0.0f;
+        out_w_D_I_C[39] = 0.0f;
+        out_w_D_I_C[40] = 0.0f;
+        out_w_D_I_C[41] = 0.0f;
+        out_w_D_I_C[42] = 0.0f;
+        out_w_D_I_C[43] = 0.0f;
+        out_w_D_I_C[44] = 0.0f;
+        out_w_D_I_C[45] = 0.0f;
+        out_w_D_I_C[46] = 0.0f;
+        out_w_D_I_C[47] = 0.0f;
+        out_w_D_I_C[48] = 0.0f;
+        out_w_D_I_C[49] = 0.0f;
+        out_w_D_I_C[50] = 0.0f;
+        out_w_D_I_C[51] = 0.0f;
+        out_w_D_I_C[52] = 0.0f;
+        out_w_D_I_C[53] = 0.0f;
+        out_w_D_m[0] = 0.0f;
+        out_w_D_m[1] = 0.0f;
+        out_w_D_m[2] = 0.0f;
+        out_w_D_m[3] = c_ddot_0;
+        out_w_D_m[4] = c_ddot_1;
+        out_w_D_m[5] = c_ddot_2;
+        out_w_D_omega[0] = -I_C_10*omega_2 + I_C_20*omega_1;
+        out_w_D_omega[1] = -((double)I_C_11)*((double)omega_2) + 2.0*((double)x0) + x3;
+        out_w_D_omega[2] = I_C_22*omega_1 - 2.0f*x5 - x8;
+        out_w_D_omega[3] = ((double)I_C_00)*((double)omega_2) - ((double)x0) - 2.0*((double)x1) - x2;
+        out_w_D_omega[4] = I_C_01*omega_2 - I_C_21*omega_0;
+        out_w_D_omega[5] = -I_C_22*omega_0 + 2.0f*x10 + x13;
+        out_w_D_omega[6] = -((double)I_C_00)*((double)omega_1) + ((double)x5) + 2.0*((double)x6) + x7;
+        out_w_D_omega[7] = I_C_11*omega_0 - x10 - x11 - 2.0f*x12;
+        out_w_D_omega[8] = -I_C_02*omega_1 + I_C_12*omega_0;
+        out_w_D_omega[9] = 0.0f;
+        out_w_D_omega[10] = 0.0f;
+        out_w_D_omega[11] = 0.0f;
+        out_w_D_omega[12] = 0.0f;
+        out_w_D_omega[13] = 0.0f;
+        out_w_D_omega[14] = 0.0f;
+        out_w_D_omega[15] = 0.0f;
+        out_w_D_omega[16] = 0.0f;
+        out_w_D_omega[17] = 0.0f;
+        out_w_D_omega_dot[0] = I_C_00;
+        out_w_D_omega_dot[1] = I_C_01;
+        out_w_D_omega_dot[2] = I_C_02;
+        out_w_D_omega_dot[3] = I_C_10;
+        out_w_D_omega_dot[4] = I_C_11;
+        out_w_D_omega_dot[5] = I_C_12;
+        out_w_D_omega_dot[6] = I_C_20;
+        out_w_D_omega_dot[7] = I_C_21;
+        out_w_D_omega_dot[8] = I_C_22;
+        out_w_D_omega_dot[9] = 0.0f;
+        out_w_D_omega_dot[10] = 0.0f;
+        out_w_D_omega_dot[11] = 0.0f;
+        out_w_D_omega_dot[12] = 0.0f;
+        out_w_D_omega_dot[13] = 0.0f;
+        out_w_D_omega_dot[14] = 0.0f;
+        out_w_D_omega_dot[15] = 0.0f;
+        out_w_D_omega_dot[16] = 0.0f;
+        out_w_D_omega_dot[17] = 0.0f;
+        out_w_D_c_ddot[0] = 0.0f;
+        out_w_D_c_ddot[1] = 0.0f;
+        out_w_D_c_ddot[2] = 0.0f;
+        out_w_D_c_ddot[3] = 0.0f;
+        out_w_D_c_ddot[4] = 0.0f;
+        out_w_D_c_ddot[5] = 0.0f;
+        out_w_D_c_ddot[6] = 0.0f;
+        out_w_D_c_ddot[7] = 0.0f;
+        out_w_D_c_ddot[8] = 0.0f;
+        out_w_D_c_ddot[9] = m;
+        out_w_D_c_ddot[10] = 0.0f;
+        out_w_D_c_ddot[11] = 0.0f;
+        out_w_D_c_ddot[12] = 0.0f;
+        out_w_D_c_ddot[13] = m;
+        out_w_D_c_ddot[14] = 0.0f;
+        out_w_D_c_ddot[15] = 0.0f;
+        out_w_D_c_ddot[16] = 0.0f;
+        out_w_D_c_ddot[17] = m;
+    }
+    return singular;
+}
+
+
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
  * are written as NaN; returns their number. One thread. */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_newton_euler_wrench_with_jacobians)(
@@ -234,8 +424,8 @@ int64_t RIGIDSYM_ISA_NAME(rigidsym_newton_euler_wrench_with_jacobians_threads)(
     double *RIGIDSYM_RESTRICT out_w_D_c_ddot);
 
 
-/* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
- * is flagged too). */
+/* The same on float32 arrays (the float32 sample function: float arithmetic of the
+ * precision plan; a row whose output overflows float32 is flagged too). */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_newton_euler_wrench_with_jacobians_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_I_C,

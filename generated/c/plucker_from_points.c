@@ -10,14 +10,28 @@
  */
 #include "plucker_from_points.h"
 
-/* Exactly RIGIDSYM_CHECK_BLOCK samples, always: a full block of the batch, or the last partial block
- * padded. One code path for every sample, so that a sample's bits do not depend on where it
- * sits in the batch: no scalar remainder of a vector loop; never
- * inlined, so that both uses run the same machine code. Then one finiteness test over the
- * first m samples' outputs (still in cache): finite inputs can overflow into a non-finite
- * output, flagged as a singular sample is. When something is flagged, each sample's flag is
- * recomputed from that sample alone (its own flag and its own output row) and its row
- * written as NaN. Returns the number of flagged samples among the first m. */
+/* Exactly NB = RIGIDSYM_CHECK_BLOCK samples, always: a full block of the batch, or a partial one padded.
+ * One code path for every sample, so that a
+ * sample's bits do not depend on where it sits in the batch: no scalar remainder of a vector
+ * loop; never inlined, so that every use runs the same machine code.
+ * Then one finiteness test over the first m samples' outputs (still in cache): finite inputs
+ * can overflow into a non-finite output, flagged as a singular sample is. When something is
+ * flagged, each sample's flag is recomputed from that sample alone (its own flag and its own
+ * output row) and its row written as NaN. Returns the number of flagged samples among the
+ * first m. T float: the float32 sample function (float inputs and outputs, the arithmetic of
+ * the precision plan in the header; sin/cos in double from the widened inputs). */
+
+/* Samples [i0, i0 + m) of the batch, m <= RIGIDSYM_CHECK_BLOCK: a full block, or a partial one (the tail
+ * of a batch, a batch of a few samples, one sample) through a padded block (its samples, then
+ * copies of its last one: valid inputs). Always the same block function, so a sample's bits
+ * do not depend on its batch: smaller blocks for short batches were measured to change the
+ * last bit of some samples (the compiler vectorises a loop of 4 samples differently, and FMA
+ * contraction with it). Returns the number flagged. */
+
+/* The batch of n samples on `threads` threads: blocks are independent and the count is an
+ * integer sum, so the result is the same for every thread count. One thread (or one block):
+ * no OpenMP region at all (entering one, even with if(0), costs about a microsecond:
+ * measured, more than a one-sample call). */
 static RIGIDSYM_NOINLINE int64_t rigidsym_plucker_from_points_block(
     int64_t m,
     const double *RIGIDSYM_RESTRICT in_p1,
@@ -32,6 +46,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_plucker_from_points_block(
             in_p1 + 3 * j,
             in_p2 + 3 * j,
             out_kappa + 6 * j);
+
     }
     count += rigidsym_any_nonfinite(out_kappa, 6 * m);
     if (count == 0)
@@ -53,22 +68,59 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_plucker_from_points_block(
     return count;
 }
 
-/* Samples [i0, i0 + m) of the batch, m <= RIGIDSYM_CHECK_BLOCK; the tail through padded copies (the real
- * samples, then copies of the last one: valid inputs). Returns the number flagged. */
+
+static RIGIDSYM_NOINLINE int64_t rigidsym_plucker_from_points_block_f32(
+    int64_t m,
+    const float *RIGIDSYM_RESTRICT in_p1,
+    const float *RIGIDSYM_RESTRICT in_p2,
+    float *RIGIDSYM_RESTRICT out_kappa)
+{
+    int64_t count = 0;
+    /* branch-free so that the compiler can vectorise it */
+    RIGIDSYM_SIMD_COUNT
+    for (int64_t j = 0; j < RIGIDSYM_CHECK_BLOCK; ++j) {
+        count += rigidsym_plucker_from_points_sample_f32(
+            in_p1 + 3 * j,
+            in_p2 + 3 * j,
+            out_kappa + 6 * j);
+
+    }
+    count += rigidsym_any_nonfinite_f32(out_kappa, 6 * m);
+    if (count == 0)
+        return 0;
+    count = 0;
+    for (int64_t j = 0; j < m; ++j) {
+        float tmp_kappa[6];
+        int flagged = rigidsym_plucker_from_points_sample_f32(
+            in_p1 + 3 * j,
+            in_p2 + 3 * j,
+            tmp_kappa);
+        flagged |= rigidsym_any_nonfinite_f32(out_kappa + 6 * j, 6);
+        if (flagged) {
+            ++count;
+            for (int c = 0; c < 6; ++c)
+                out_kappa[6 * j + c] = NAN;
+        }
+    }
+    return count;
+}
+
+
 static int64_t rigidsym_plucker_from_points_run(
     int64_t i0, int64_t m,
     const double *RIGIDSYM_RESTRICT in_p1,
     const double *RIGIDSYM_RESTRICT in_p2,
     double *RIGIDSYM_RESTRICT out_kappa)
 {
-    double pad_p1[3 * RIGIDSYM_CHECK_BLOCK];
-    double pad_p2[3 * RIGIDSYM_CHECK_BLOCK];
-    double pad_kappa[6 * RIGIDSYM_CHECK_BLOCK];
     if (m == RIGIDSYM_CHECK_BLOCK)
         return rigidsym_plucker_from_points_block(m,
             in_p1 + 3 * i0,
             in_p2 + 3 * i0,
             out_kappa + 6 * i0);
+
+    double pad_p1[3 * RIGIDSYM_CHECK_BLOCK];
+    double pad_p2[3 * RIGIDSYM_CHECK_BLOCK];
+    double pad_kappa[6 * RIGIDSYM_CHECK_BLOCK];
     for (int64_t j = 0; j < RIGIDSYM_CHECK_BLOCK; ++j) {
         const int64_t s = i0 + (j < m ? j : m - 1);
         memcpy(pad_p1 + 3 * j, in_p1 + 3 * s,
@@ -84,49 +136,37 @@ static int64_t rigidsym_plucker_from_points_run(
     return count;
 }
 
-/* float32 storage, float64 arithmetic: samples [i0, i0 + m) widened into the block's local
- * double arrays, evaluated by the same block function, rounded back. A finite double output
- * can overflow float32: such rows are flagged too (NaN). Returns the number flagged. */
+
 static int64_t rigidsym_plucker_from_points_run_f32(
     int64_t i0, int64_t m,
     const float *RIGIDSYM_RESTRICT in_p1,
     const float *RIGIDSYM_RESTRICT in_p2,
     float *RIGIDSYM_RESTRICT out_kappa)
 {
-    double pad_p1[3 * RIGIDSYM_CHECK_BLOCK];
-    double pad_p2[3 * RIGIDSYM_CHECK_BLOCK];
-    double pad_kappa[6 * RIGIDSYM_CHECK_BLOCK];
+    if (m == RIGIDSYM_CHECK_BLOCK)
+        return rigidsym_plucker_from_points_block_f32(m,
+            in_p1 + 3 * i0,
+            in_p2 + 3 * i0,
+            out_kappa + 6 * i0);
+
+    float pad_p1[3 * RIGIDSYM_CHECK_BLOCK];
+    float pad_p2[3 * RIGIDSYM_CHECK_BLOCK];
+    float pad_kappa[6 * RIGIDSYM_CHECK_BLOCK];
     for (int64_t j = 0; j < RIGIDSYM_CHECK_BLOCK; ++j) {
         const int64_t s = i0 + (j < m ? j : m - 1);
-        for (int c = 0; c < 3; ++c)
-            pad_p1[3 * j + c] = in_p1[3 * s + c];
-        for (int c = 0; c < 3; ++c)
-            pad_p2[3 * j + c] = in_p2[3 * s + c];
+        memcpy(pad_p1 + 3 * j, in_p1 + 3 * s,
+               3 * sizeof(float));
+        memcpy(pad_p2 + 3 * j, in_p2 + 3 * s,
+               3 * sizeof(float));
     }
-    int64_t count = rigidsym_plucker_from_points_block(m,
+    const int64_t count = rigidsym_plucker_from_points_block_f32(m,
         pad_p1,
         pad_p2,
         pad_kappa);
-    for (int64_t c = 0; c < 6 * m; ++c)
-        out_kappa[6 * i0 + c] = (float)pad_kappa[c];
-    int64_t over = 0;
-    over += rigidsym_any_nonfinite_f32(out_kappa + 6 * i0, 6 * m);
-    if (over == 0)
-        return count;
-    for (int64_t j = 0; j < m; ++j) {
-        const int64_t i = i0 + j;
-        if (out_kappa[6 * i] != out_kappa[6 * i])
-            continue;                       /* flagged already: its row is NaN */
-        int flagged = 0;
-        flagged |= rigidsym_any_nonfinite_f32(out_kappa + 6 * i, 6);
-        if (flagged) {
-            ++count;
-            for (int c = 0; c < 6; ++c)
-                out_kappa[6 * i + c] = NAN;
-        }
-    }
+    memcpy(out_kappa + 6 * i0, pad_kappa, 6 * m * sizeof(float));
     return count;
 }
+
 
 int64_t RIGIDSYM_ISA_NAME(rigidsym_plucker_from_points_f32_threads)(
     int64_t n, int threads,
@@ -136,19 +176,27 @@ int64_t RIGIDSYM_ISA_NAME(rigidsym_plucker_from_points_f32_threads)(
 {
     const int64_t nblocks = (n + RIGIDSYM_CHECK_BLOCK - 1) / RIGIDSYM_CHECK_BLOCK;
     int64_t count = 0;
-    if (threads < 1)
-        threads = 1;
+    if (threads <= 1 || nblocks <= 1) {
+        for (int64_t b = 0; b < nblocks; ++b) {
+            const int64_t i0 = b * RIGIDSYM_CHECK_BLOCK;
+            count += rigidsym_plucker_from_points_run_f32(i0, n - i0 < RIGIDSYM_CHECK_BLOCK ? n - i0 : RIGIDSYM_CHECK_BLOCK,
+                in_p1,
+                in_p2,
+                out_kappa);
+        }
+        return count;
+    }
     RIGIDSYM_PARALLEL_FOR(threads)
     for (int64_t b = 0; b < nblocks; ++b) {
         const int64_t i0 = b * RIGIDSYM_CHECK_BLOCK;
-        count += rigidsym_plucker_from_points_run_f32(
-            i0, n - i0 < RIGIDSYM_CHECK_BLOCK ? n - i0 : RIGIDSYM_CHECK_BLOCK,
+        count += rigidsym_plucker_from_points_run_f32(i0, n - i0 < RIGIDSYM_CHECK_BLOCK ? n - i0 : RIGIDSYM_CHECK_BLOCK,
             in_p1,
             in_p2,
             out_kappa);
     }
     return count;
 }
+
 
 int64_t RIGIDSYM_ISA_NAME(rigidsym_plucker_from_points_threads)(
     int64_t n, int threads,
@@ -158,21 +206,27 @@ int64_t RIGIDSYM_ISA_NAME(rigidsym_plucker_from_points_threads)(
 {
     const int64_t nblocks = (n + RIGIDSYM_CHECK_BLOCK - 1) / RIGIDSYM_CHECK_BLOCK;
     int64_t count = 0;
-    if (threads < 1)
-        threads = 1;
-    /* blocks are independent and the count is an integer sum: the result is the same for
-     * every thread count */
+    if (threads <= 1 || nblocks <= 1) {
+        for (int64_t b = 0; b < nblocks; ++b) {
+            const int64_t i0 = b * RIGIDSYM_CHECK_BLOCK;
+            count += rigidsym_plucker_from_points_run(i0, n - i0 < RIGIDSYM_CHECK_BLOCK ? n - i0 : RIGIDSYM_CHECK_BLOCK,
+                in_p1,
+                in_p2,
+                out_kappa);
+        }
+        return count;
+    }
     RIGIDSYM_PARALLEL_FOR(threads)
     for (int64_t b = 0; b < nblocks; ++b) {
         const int64_t i0 = b * RIGIDSYM_CHECK_BLOCK;
-        count += rigidsym_plucker_from_points_run(
-            i0, n - i0 < RIGIDSYM_CHECK_BLOCK ? n - i0 : RIGIDSYM_CHECK_BLOCK,
+        count += rigidsym_plucker_from_points_run(i0, n - i0 < RIGIDSYM_CHECK_BLOCK ? n - i0 : RIGIDSYM_CHECK_BLOCK,
             in_p1,
             in_p2,
             out_kappa);
     }
     return count;
 }
+
 
 int64_t RIGIDSYM_ISA_NAME(rigidsym_plucker_from_points)(
     int64_t n,

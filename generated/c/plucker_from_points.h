@@ -11,11 +11,17 @@
  * Plücker array of the line through two points.
  * kappa = [e; p1 x e], e = (p2 - p1)/||p2 - p1||
  * Singular set: p1 = p2
+ *
+ * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
+ * measured at generation, rigidsym.codegen.float32; error within 0.993 ulp of float32,
+ * normwise, at its points). In double:
+ *   x0, x1, x4, x6, x7
  */
 #ifndef RIGIDSYM_PLUCKER_FROM_POINTS_H
 #define RIGIDSYM_PLUCKER_FROM_POINTS_H
 
 #include "rigidsym_common.h"
+
 
 /* One sample: returns nonzero when the sample is singular (division by an exact zero or a
  * non-finite result). Inputs and outputs are row-major per sample. */
@@ -56,6 +62,42 @@ static inline int rigidsym_plucker_from_points_sample(
 }
 
 
+/* One float32 sample: float inputs and outputs, arithmetic of the precision plan above. */
+static inline int rigidsym_plucker_from_points_sample_f32(
+    const float *RIGIDSYM_RESTRICT in_p1,
+    const float *RIGIDSYM_RESTRICT in_p2,
+    float *RIGIDSYM_RESTRICT out_kappa)
+{
+    const float p1_0 = in_p1[0];
+    const float p1_1 = in_p1[1];
+    const float p1_2 = in_p1[2];
+    const float p2_0 = in_p2[0];
+    const float p2_1 = in_p2[1];
+    const float p2_2 = in_p2[2];
+    int singular = 0;
+    {
+        const double x0 = -((double)p1_0) + ((double)p2_0);
+        const double x1 = -((double)p1_1) + ((double)p2_1);
+        const float x2 = -p1_2 + p2_2;
+        const float x3 = (x0*x0) + (x1*x1) + (x2*x2);
+        const double x4 = 1.0/sqrt(((double)x3));
+        const float x5 = x0*x4;
+        const double x6 = x1*x4;
+        const double x7 = ((double)x2)*x4;
+        out_kappa[0] = x5;
+        out_kappa[1] = x6;
+        out_kappa[2] = x7;
+        out_kappa[3] = p1_1*x7 - p1_2*x6;
+        out_kappa[4] = -p1_0*x7 + p1_2*x0*x4;
+        out_kappa[5] = p1_0*x6 - p1_1*x5;
+        singular |= (((double)x3)) == 0.0;
+        const double finite = ((x4 - x4) + (x3 - x3));
+        singular |= finite != finite;
+    }
+    return singular;
+}
+
+
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
  * are written as NaN; returns their number. One thread. */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_plucker_from_points)(
@@ -73,8 +115,8 @@ int64_t RIGIDSYM_ISA_NAME(rigidsym_plucker_from_points_threads)(
     double *RIGIDSYM_RESTRICT out_kappa);
 
 
-/* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
- * is flagged too). */
+/* The same on float32 arrays (the float32 sample function: float arithmetic of the
+ * precision plan; a row whose output overflows float32 is flagged too). */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_plucker_from_points_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_p1,

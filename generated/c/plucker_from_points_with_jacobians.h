@@ -11,11 +11,17 @@
  * Plücker array of the line through two points, with the Jacobians of its outputs.
  * kappa = [e; p1 x e], e = (p2 - p1)/||p2 - p1||; and d(output)/d(input) by sympy on the declared formula
  * Singular set: p1 = p2
+ *
+ * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
+ * measured at generation, rigidsym.codegen.float32; error within 0.997 ulp of float32,
+ * normwise, at its points). In double:
+ *   x0, x1, x3, x4, x9, x10, x12, x13, x27, x28
  */
 #ifndef RIGIDSYM_PLUCKER_FROM_POINTS_WITH_JACOBIANS_H
 #define RIGIDSYM_PLUCKER_FROM_POINTS_WITH_JACOBIANS_H
 
 #include "rigidsym_common.h"
+
 
 /* One sample: returns nonzero when the sample is singular (division by an exact zero or a
  * non-finite result). Inputs and outputs are row-major per sample. */
@@ -129,6 +135,115 @@ static inline int rigidsym_plucker_from_points_with_jacobians_sample(
 }
 
 
+/* One float32 sample: float inputs and outputs, arithmetic of the precision plan above. */
+static inline int rigidsym_plucker_from_points_with_jacobians_sample_f32(
+    const float *RIGIDSYM_RESTRICT in_p1,
+    const float *RIGIDSYM_RESTRICT in_p2,
+    float *RIGIDSYM_RESTRICT out_kappa,
+    float *RIGIDSYM_RESTRICT out_kappa_D_p1,
+    float *RIGIDSYM_RESTRICT out_kappa_D_p2)
+{
+    const float p1_0 = in_p1[0];
+    const float p1_1 = in_p1[1];
+    const float p1_2 = in_p1[2];
+    const float p2_0 = in_p2[0];
+    const float p2_1 = in_p2[1];
+    const float p2_2 = in_p2[2];
+    int singular = 0;
+    {
+        const double x0 = ((double)p1_0) - ((double)p2_0);
+        const double x1 = -x0;
+        const float x2 = (x1*x1);
+        const double x3 = ((double)p1_1) - ((double)p2_1);
+        const double x4 = -x3;
+        const float x5 = (x4*x4);
+        const float x6 = p1_2 - p2_2;
+        const float x7 = -x6;
+        const float x8 = (x7*x7);
+        const double x9 = ((double)x2) + ((double)x5) + ((double)x8);
+        const double x10 = 1.0/sqrt(x9);
+        const float x11 = x1*x10;
+        const double x12 = x10*x4;
+        const double x13 = x10*((double)x7);
+        const float x14 = -x10;
+        const float x15 = 1.0f/(x9*sqrt(x9));
+        const float x16 = x15*x2;
+        const float x17 = x1*x15;
+        const float x18 = x17*x4;
+        const float x19 = x17*x7;
+        const float x20 = x15*x5;
+        const float x21 = x15*x4;
+        const float x22 = x21*x7;
+        const float x23 = x15*x8;
+        const float x24 = p1_1*x19;
+        const float x25 = -p1_2*x18;
+        const float x26 = p1_2*x10;
+        const double x27 = x13 + ((double)x26);
+        const double x28 = ((double)p1_1)*x10;
+        const float x29 = x12 + x28;
+        const float x30 = p1_0*x22;
+        const float x31 = p1_0*x10;
+        const float x32 = x11 + x31;
+        const float x33 = x0*x17;
+        const float x34 = x17*x3;
+        const float x35 = x17*x6;
+        const float x36 = x0*x21;
+        const float x37 = x21*x3;
+        const float x38 = x21*x6;
+        const float x39 = x15*x7;
+        const float x40 = x0*x39;
+        const float x41 = x3*x39;
+        const float x42 = x39*x6;
+        out_kappa[0] = x11;
+        out_kappa[1] = x12;
+        out_kappa[2] = x13;
+        out_kappa[3] = p1_1*x13 - p1_2*x12;
+        out_kappa[4] = -p1_0*x13 + p1_2*x1*x10;
+        out_kappa[5] = p1_0*x12 - p1_1*x11;
+        out_kappa_D_p1[0] = x14 + x16;
+        out_kappa_D_p1[1] = x18;
+        out_kappa_D_p1[2] = x19;
+        out_kappa_D_p1[3] = x18;
+        out_kappa_D_p1[4] = x14 + x20;
+        out_kappa_D_p1[5] = x22;
+        out_kappa_D_p1[6] = x19;
+        out_kappa_D_p1[7] = x22;
+        out_kappa_D_p1[8] = x14 + x23;
+        out_kappa_D_p1[9] = x24 + x25;
+        out_kappa_D_p1[10] = p1_1*x22 - p1_2*x20 + x27;
+        out_kappa_D_p1[11] = p1_1*x15*x8 - p1_2*x22 - x29;
+        out_kappa_D_p1[12] = -p1_0*x19 + p1_2*x15*x2 - x27;
+        out_kappa_D_p1[13] = -x25 - x30;
+        out_kappa_D_p1[14] = -p1_0*x23 + p1_2*x19 + x32;
+        out_kappa_D_p1[15] = p1_0*x18 - p1_1*x16 + x29;
+        out_kappa_D_p1[16] = p1_0*x15*x5 - p1_1*x18 - x32;
+        out_kappa_D_p1[17] = -x24 + x30;
+        out_kappa_D_p2[0] = x10 + x33;
+        out_kappa_D_p2[1] = x34;
+        out_kappa_D_p2[2] = x35;
+        out_kappa_D_p2[3] = x36;
+        out_kappa_D_p2[4] = x10 + x37;
+        out_kappa_D_p2[5] = x38;
+        out_kappa_D_p2[6] = x40;
+        out_kappa_D_p2[7] = x41;
+        out_kappa_D_p2[8] = x10 + x42;
+        out_kappa_D_p2[9] = p1_1*x40 - p1_2*x36;
+        out_kappa_D_p2[10] = p1_1*x15*x3*x7 - p1_2*x37 - x26;
+        out_kappa_D_p2[11] = p1_1*x42 - p1_2*x38 + x28;
+        out_kappa_D_p2[12] = -p1_0*x40 + p1_2*x33 + x26;
+        out_kappa_D_p2[13] = -p1_0*x41 + p1_2*x1*x15*x3;
+        out_kappa_D_p2[14] = -p1_0*x42 + p1_2*x1*x15*x6 - x31;
+        out_kappa_D_p2[15] = p1_0*x0*x15*x4 - p1_1*x33 - x28;
+        out_kappa_D_p2[16] = p1_0*x37 - p1_1*x34 + x31;
+        out_kappa_D_p2[17] = p1_0*x38 - p1_1*x35;
+        singular |= (x9) == 0.0;
+        const double finite = ((x10 - x10) + ((x15 - x15) + (x9 - x9)));
+        singular |= finite != finite;
+    }
+    return singular;
+}
+
+
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
  * are written as NaN; returns their number. One thread. */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_plucker_from_points_with_jacobians)(
@@ -150,8 +265,8 @@ int64_t RIGIDSYM_ISA_NAME(rigidsym_plucker_from_points_with_jacobians_threads)(
     double *RIGIDSYM_RESTRICT out_kappa_D_p2);
 
 
-/* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
- * is flagged too). */
+/* The same on float32 arrays (the float32 sample function: float arithmetic of the
+ * precision plan; a row whose output overflows float32 is flagged too). */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_plucker_from_points_with_jacobians_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_p1,

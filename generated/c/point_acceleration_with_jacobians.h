@@ -10,11 +10,17 @@
  *
  * Acceleration of a body point P, with the Jacobians of its outputs.
  * p_ddot = a_ddot + (Omega_dot + Omega^2)(p - a); and d(output)/d(input) by sympy on the declared formula
+ *
+ * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
+ * measured at generation, rigidsym.codegen.float32; error within 0.957 ulp of float32,
+ * normwise, at its points). In double:
+ *   x0, x1, x2, x3, x5, x6, x8, x10
  */
 #ifndef RIGIDSYM_POINT_ACCELERATION_WITH_JACOBIANS_H
 #define RIGIDSYM_POINT_ACCELERATION_WITH_JACOBIANS_H
 
 #include "rigidsym_common.h"
+
 
 /* One sample: returns nonzero when the sample is singular (division by an exact zero or a
  * non-finite result). Inputs and outputs are row-major per sample. */
@@ -131,6 +137,120 @@ static inline int rigidsym_point_acceleration_with_jacobians_sample(
 }
 
 
+/* One float32 sample: float inputs and outputs, arithmetic of the precision plan above. */
+static inline int rigidsym_point_acceleration_with_jacobians_sample_f32(
+    const float *RIGIDSYM_RESTRICT in_a_ddot,
+    const float *RIGIDSYM_RESTRICT in_omega,
+    const float *RIGIDSYM_RESTRICT in_omega_dot,
+    const float *RIGIDSYM_RESTRICT in_p,
+    const float *RIGIDSYM_RESTRICT in_a,
+    float *RIGIDSYM_RESTRICT out_p_ddot,
+    float *RIGIDSYM_RESTRICT out_p_ddot_D_a_ddot,
+    float *RIGIDSYM_RESTRICT out_p_ddot_D_omega,
+    float *RIGIDSYM_RESTRICT out_p_ddot_D_omega_dot,
+    float *RIGIDSYM_RESTRICT out_p_ddot_D_p,
+    float *RIGIDSYM_RESTRICT out_p_ddot_D_a)
+{
+    const float a_ddot_0 = in_a_ddot[0];
+    const float a_ddot_1 = in_a_ddot[1];
+    const float a_ddot_2 = in_a_ddot[2];
+    const float omega_0 = in_omega[0];
+    const float omega_1 = in_omega[1];
+    const float omega_2 = in_omega[2];
+    const float omega_dot_0 = in_omega_dot[0];
+    const float omega_dot_1 = in_omega_dot[1];
+    const float omega_dot_2 = in_omega_dot[2];
+    const float p_0 = in_p[0];
+    const float p_1 = in_p[1];
+    const float p_2 = in_p[2];
+    const float a_0 = in_a[0];
+    const float a_1 = in_a[1];
+    const float a_2 = in_a[2];
+    int singular = 0;
+    {
+        const double x0 = ((double)a_2) - ((double)p_2);
+        const double x1 = -x0;
+        const double x2 = ((double)a_1) - ((double)p_1);
+        const double x3 = -x2;
+        const float x4 = omega_0*x3;
+        const double x5 = ((double)a_0) - ((double)p_0);
+        const double x6 = -x5;
+        const float x7 = -omega_1*x6;
+        const double x8 = ((double)x4) + ((double)x7);
+        const float x9 = omega_0*x1;
+        const double x10 = ((double)omega_2)*x6 - ((double)x9);
+        const float x11 = omega_1*x1;
+        const float x12 = -omega_2*x3;
+        const float x13 = x11 + x12;
+        const float x14 = omega_2*x6;
+        const float x15 = (omega_1*omega_1);
+        const float x16 = (omega_2*omega_2);
+        const float x17 = x15 + x16;
+        const float x18 = omega_0*omega_1;
+        const float x19 = -omega_dot_2 + x18;
+        const float x20 = omega_0*omega_2;
+        const float x21 = omega_dot_1 + x20;
+        const float x22 = omega_dot_2 + x18;
+        const float x23 = (omega_0*omega_0);
+        const float x24 = x16 + x23;
+        const float x25 = omega_1*omega_2;
+        const float x26 = -omega_dot_0 + x25;
+        const float x27 = -omega_dot_1 + x20;
+        const float x28 = omega_dot_0 + x25;
+        const float x29 = x15 + x23;
+        out_p_ddot[0] = a_ddot_0 + omega_1*x8 - omega_2*x10 + omega_dot_1*x1 - omega_dot_2*x3;
+        out_p_ddot[1] = a_ddot_1 - omega_0*x8 + omega_2*x13 - omega_dot_0*x1 + omega_dot_2*x6;
+        out_p_ddot[2] = a_ddot_2 + omega_0*x10 - omega_1*x13 + omega_dot_0*x3 - omega_dot_1*x6;
+        out_p_ddot_D_a_ddot[0] = 1.0f;
+        out_p_ddot_D_a_ddot[1] = 0.0f;
+        out_p_ddot_D_a_ddot[2] = 0.0f;
+        out_p_ddot_D_a_ddot[3] = 0.0f;
+        out_p_ddot_D_a_ddot[4] = 1.0f;
+        out_p_ddot_D_a_ddot[5] = 0.0f;
+        out_p_ddot_D_a_ddot[6] = 0.0f;
+        out_p_ddot_D_a_ddot[7] = 0.0f;
+        out_p_ddot_D_a_ddot[8] = 1.0f;
+        out_p_ddot_D_omega[0] = omega_1*x3 - omega_2*x0;
+        out_p_ddot_D_omega[1] = omega_1*x5 + x8;
+        out_p_ddot_D_omega[2] = -2.0f*x14 + x9;
+        out_p_ddot_D_omega[3] = -2.0f*x4 - x7;
+        out_p_ddot_D_omega[4] = -omega_0*x5 + omega_2*x1;
+        out_p_ddot_D_omega[5] = omega_2*x2 + x13;
+        out_p_ddot_D_omega[6] = omega_0*x0 + x14 - x9;
+        out_p_ddot_D_omega[7] = -2.0f*x11 - x12;
+        out_p_ddot_D_omega[8] = omega_0*x6 - omega_1*x2;
+        out_p_ddot_D_omega_dot[0] = 0.0f;
+        out_p_ddot_D_omega_dot[1] = x1;
+        out_p_ddot_D_omega_dot[2] = x2;
+        out_p_ddot_D_omega_dot[3] = x0;
+        out_p_ddot_D_omega_dot[4] = 0.0f;
+        out_p_ddot_D_omega_dot[5] = x6;
+        out_p_ddot_D_omega_dot[6] = x3;
+        out_p_ddot_D_omega_dot[7] = x5;
+        out_p_ddot_D_omega_dot[8] = 0.0f;
+        out_p_ddot_D_p[0] = -x17;
+        out_p_ddot_D_p[1] = x19;
+        out_p_ddot_D_p[2] = x21;
+        out_p_ddot_D_p[3] = x22;
+        out_p_ddot_D_p[4] = -x24;
+        out_p_ddot_D_p[5] = x26;
+        out_p_ddot_D_p[6] = x27;
+        out_p_ddot_D_p[7] = x28;
+        out_p_ddot_D_p[8] = -x29;
+        out_p_ddot_D_a[0] = x17;
+        out_p_ddot_D_a[1] = -x19;
+        out_p_ddot_D_a[2] = -x21;
+        out_p_ddot_D_a[3] = -x22;
+        out_p_ddot_D_a[4] = x24;
+        out_p_ddot_D_a[5] = -x26;
+        out_p_ddot_D_a[6] = -x27;
+        out_p_ddot_D_a[7] = -x28;
+        out_p_ddot_D_a[8] = x29;
+    }
+    return singular;
+}
+
+
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
  * are written as NaN; returns their number. One thread. */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_point_acceleration_with_jacobians)(
@@ -164,8 +284,8 @@ int64_t RIGIDSYM_ISA_NAME(rigidsym_point_acceleration_with_jacobians_threads)(
     double *RIGIDSYM_RESTRICT out_p_ddot_D_a);
 
 
-/* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
- * is flagged too). */
+/* The same on float32 arrays (the float32 sample function: float arithmetic of the
+ * precision plan; a row whose output overflows float32 is flagged too). */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_point_acceleration_with_jacobians_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_a_ddot,

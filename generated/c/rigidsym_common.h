@@ -10,15 +10,6 @@
 #include <stdint.h>
 #include <string.h>
 
-/* Validation tolerances of the constrained arguments (check=True), per kind and dtype: the
- * kind table's (rigidsym._kinds), the same numbers the Python validation uses. */
-#define RIGIDSYM_TOL_UNIT_F64 1e-08
-#define RIGIDSYM_TOL_UNIT_F32 1.1920928955078125e-05
-#define RIGIDSYM_TOL_UNIT4_F64 1e-08
-#define RIGIDSYM_TOL_UNIT4_F32 1.1920928955078125e-05
-#define RIGIDSYM_TOL_ROTATION_F64 1e-08
-#define RIGIDSYM_TOL_ROTATION_F32 1.1920928955078125e-05
-
 #ifndef RIGIDSYM_RESTRICT
 #if defined(__STDC_VERSION__) && __STDC_VERSION__ >= 199901L
 #define RIGIDSYM_RESTRICT restrict

@@ -4,8 +4,8 @@
  * CPU dispatch of the extension module (included by rigidsym_module.c only).
  *
  * As in NumPy's dispatcher, each kernel source is compiled once per build path with that
- * path's flags (rigidsym.kernels._build: -march=x86-64-v2 and -march=x86-64-v3 by default,
- * -march=native on request, no -march off x86-64), the exported names suffixed by the path
+ * path's flags (rigidsym.kernels._build: -march=x86-64-v2, x86-64-v3 and x86-64-v4 by
+ * default, -march=native on request, no -march off x86-64), the exported names suffixed by the path
  * (RIGIDSYM_ISA_NAME); the objects of every path link into one module, and this header picks
  * one path's table of function pointers when the module is imported, from the CPU's
  * features. A path is compiled in when the build defines RIGIDSYM_PATH_<suffix>. Rather than
@@ -14,10 +14,11 @@
  *
  * libmvec (objdump -d / nm -u of the objects, gcc 12, glibc 2.36): the x86-64-v2 objects call
  * the SSE variants _ZGVbN2v_sin / _ZGVbN2v_cos (2 doubles a call), the x86-64-v3 objects
- * the AVX2 variants _ZGVdN4v_sin / _ZGVdN4v_cos (4 doubles a call); -march=native on an
- * AVX-512 CPU also calls _ZGVdN4v_* (gcc prefers 256-bit vectors there). The variants round
- * differently (each within 4 ulp), and FMA contraction differs between the paths, so the
- * paths agree to a normwise bound, not bitwise.
+ * the AVX2 variants _ZGVdN4v_sin / _ZGVdN4v_cos (4 doubles a call), the x86-64-v4 objects
+ * the AVX-512 variants _ZGVeN8v_sin / _ZGVeN8v_cos (8 doubles a call, zmm registers);
+ * -march=native on a Sapphire Rapids CPU calls _ZGVdN4v_* (its tuning prefers 256-bit
+ * vectors). The variants round differently (each within 4 ulp), and FMA contraction differs
+ * between the paths, so the paths agree to a normwise bound, not bitwise.
  */
 #ifndef RIGIDSYM_DISPATCH_H
 #define RIGIDSYM_DISPATCH_H

@@ -10,7 +10,8 @@
  * module without loading it), RIGIDSYM_PATH_<suffix> per path and RIGIDSYM_BUILD (flags).
  *
  * Methods: batch(k, f32, n, threads, *arrays), the batch function of kernel k (index in
- * `kernels`) on C-contiguous buffers; further entry points are added to rigidsym_methods.
+ * `kernels`) on C-contiguous buffers; _bind and _enable of the per-call entry points, which
+ * are the attribute `entries` (rigidsym_fast.h).
  */
 #define PY_SSIZE_T_CLEAN
 #include <Python.h>
@@ -1604,9 +1605,12 @@ done:
     return result;
 }
 
+/* the per-call entry points (issue 20): rigidsym_fast.h, generated from c_fast.h.j2 */
+#include "rigidsym_fast.h"
+
 static PyMethodDef rigidsym_methods[] = {
     {"batch", (PyCFunction)(void (*)(void))rigidsym_batch, METH_FASTCALL, rigidsym_batch_doc},
-    /* further entry points of the kernels go here */
+    RIGIDSYM_FAST_METHODS
     {NULL, NULL, 0, NULL}
 };
 
@@ -1624,6 +1628,8 @@ static int rigidsym_exec(PyObject *m)
         }
         rigidsym_active = p;
     }
+    if (rigidsym_fast_init(m) < 0)
+        return -1;
     PyObject *names = PyTuple_New(RIGIDSYM_NKERNELS);
     PyObject *paths = PyTuple_New(RIGIDSYM_NPATHS);
     if (names == NULL || paths == NULL)

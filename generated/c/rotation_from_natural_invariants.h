@@ -10,11 +10,17 @@
  *
  * Rotation matrix from its natural invariants (e, phi).
  * Q = e e^T + cos(phi) (1 - e e^T) + sin(phi) CPM(e)
+ *
+ * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
+ * measured at generation, rigidsym.codegen.float32; error within 0.954 ulp of float32,
+ * normwise, at its points). In double:
+ *   trig_0, x2, x3, x4
  */
 #ifndef RIGIDSYM_ROTATION_FROM_NATURAL_INVARIANTS_H
 #define RIGIDSYM_ROTATION_FROM_NATURAL_INVARIANTS_H
 
 #include "rigidsym_common.h"
+
 
 /* One sample: returns nonzero when the sample is singular (division by an exact zero or a
  * non-finite result). Inputs and outputs are row-major per sample. */
@@ -101,6 +107,48 @@ static inline int rigidsym_rotation_from_natural_invariants_sample_trig(
 }
 
 
+/* One float32 sample: float inputs and outputs, arithmetic of the precision plan above. */
+static inline int rigidsym_rotation_from_natural_invariants_sample_trig_f32(
+    const float *RIGIDSYM_RESTRICT in_e,
+    const float *RIGIDSYM_RESTRICT in_phi,
+    const double trig_0,
+    const float trig_1,
+    float *RIGIDSYM_RESTRICT out_Q)
+{
+    const float e_0 = in_e[0];
+    const float e_1 = in_e[1];
+    const float e_2 = in_e[2];
+    (void)in_phi;
+    int singular = 0;
+    {
+        const float x0 = (e_0*e_0);
+        const double x2 = trig_0;
+        const double x3 = (x2*x2);
+        const double x4 = 2.0*x3;
+        const float x5 = 1.0f - x4;
+        const float x6 = e_0*x4;
+        const float x7 = e_1*x6;
+        const float x8 = 2.0f*trig_1*x2;
+        const float x9 = e_2*x8;
+        const float x10 = e_2*x6;
+        const float x11 = e_1*x8;
+        const float x12 = (e_1*e_1);
+        const float x13 = e_0*x8;
+        const float x14 = (e_2*e_2);
+        out_Q[0] = x0 + x5*(1.0f - x0);
+        out_Q[1] = x7 - x9;
+        out_Q[2] = x10 + x11;
+        out_Q[3] = x7 + x9;
+        out_Q[4] = x12 + x5*(1.0f - x12);
+        out_Q[5] = 2.0f*e_1*e_2*x3 - x13;
+        out_Q[6] = x10 - x11;
+        out_Q[7] = e_1*e_2*x4 + x13;
+        out_Q[8] = x14 + x5*(1.0f - x14);
+    }
+    return singular;
+}
+
+
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
  * are written as NaN; returns their number. One thread. */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_rotation_from_natural_invariants)(
@@ -118,8 +166,8 @@ int64_t RIGIDSYM_ISA_NAME(rigidsym_rotation_from_natural_invariants_threads)(
     double *RIGIDSYM_RESTRICT out_Q);
 
 
-/* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
- * is flagged too). */
+/* The same on float32 arrays (the float32 sample function: float arithmetic of the
+ * precision plan; a row whose output overflows float32 is flagged too). */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_rotation_from_natural_invariants_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_e,

@@ -10,11 +10,17 @@
  *
  * Rotation matrix from its natural invariants (e, phi), with the Jacobians of its outputs.
  * Q = e e^T + cos(phi) (1 - e e^T) + sin(phi) CPM(e); and d(output)/d(input) by sympy on the declared formula
+ *
+ * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
+ * measured at generation, rigidsym.codegen.float32; error within 0.919 ulp of float32,
+ * normwise, at its points). In double:
+ *   trig_0, x3
  */
 #ifndef RIGIDSYM_ROTATION_FROM_NATURAL_INVARIANTS_WITH_JACOBIANS_H
 #define RIGIDSYM_ROTATION_FROM_NATURAL_INVARIANTS_WITH_JACOBIANS_H
 
 #include "rigidsym_common.h"
+
 
 /* One sample: returns nonzero when the sample is singular (division by an exact zero or a
  * non-finite result). Inputs and outputs are row-major per sample. */
@@ -203,6 +209,99 @@ static inline int rigidsym_rotation_from_natural_invariants_with_jacobians_sampl
 }
 
 
+/* One float32 sample: float inputs and outputs, arithmetic of the precision plan above. */
+static inline int rigidsym_rotation_from_natural_invariants_with_jacobians_sample_trig_f32(
+    const float *RIGIDSYM_RESTRICT in_e,
+    const float *RIGIDSYM_RESTRICT in_phi,
+    const double trig_0,
+    const float trig_1,
+    float *RIGIDSYM_RESTRICT out_Q,
+    float *RIGIDSYM_RESTRICT out_Q_D_e,
+    float *RIGIDSYM_RESTRICT out_Q_D_phi)
+{
+    const float e_0 = in_e[0];
+    const float e_1 = in_e[1];
+    const float e_2 = in_e[2];
+    (void)in_phi;
+    int singular = 0;
+    {
+        const float x0 = (e_0*e_0);
+        const float x1 = 1.0f - x0;
+        const double x3 = trig_0;
+        const float x4 = (x3*x3);
+        const float x5 = 2.0f*x4;
+        const float x6 = 1.0f - x5;
+        const float x7 = e_1*x5;
+        const float x8 = e_0*x7;
+        const float x9 = trig_1;
+        const float x10 = 2.0f*x3*x9;
+        const float x11 = e_2*x10;
+        const float x12 = e_0*x5;
+        const float x13 = e_2*x12;
+        const float x14 = e_1*x10;
+        const float x15 = (e_1*e_1);
+        const float x16 = 1.0f - x15;
+        const float x17 = e_0*x10;
+        const float x18 = (e_2*e_2);
+        const float x19 = 1.0f - x18;
+        const float x20 = 4.0f*x4;
+        const float x21 = -x10;
+        const float x22 = e_2*x5;
+        const float x23 = e_0*x14;
+        const float x24 = e_2*x6;
+        const float x25 = e_1*x6;
+        const float x26 = e_0*x11;
+        const float x27 = e_0*x6;
+        out_Q[0] = x0 + x1*x6;
+        out_Q[1] = -x11 + x8;
+        out_Q[2] = x13 + x14;
+        out_Q[3] = x11 + x8;
+        out_Q[4] = x15 + x16*x6;
+        out_Q[5] = 2.0f*e_1*e_2*x4 - x17;
+        out_Q[6] = x13 - x14;
+        out_Q[7] = e_2*x7 + x17;
+        out_Q[8] = x18 + x19*x6;
+        out_Q_D_e[0] = e_0*x20;
+        out_Q_D_e[1] = 0.0f;
+        out_Q_D_e[2] = 0.0f;
+        out_Q_D_e[3] = x7;
+        out_Q_D_e[4] = x12;
+        out_Q_D_e[5] = x21;
+        out_Q_D_e[6] = x22;
+        out_Q_D_e[7] = x10;
+        out_Q_D_e[8] = x12;
+        out_Q_D_e[9] = x7;
+        out_Q_D_e[10] = x12;
+        out_Q_D_e[11] = x10;
+        out_Q_D_e[12] = 0.0f;
+        out_Q_D_e[13] = e_1*x20;
+        out_Q_D_e[14] = 0.0f;
+        out_Q_D_e[15] = x21;
+        out_Q_D_e[16] = x22;
+        out_Q_D_e[17] = x7;
+        out_Q_D_e[18] = x22;
+        out_Q_D_e[19] = x21;
+        out_Q_D_e[20] = x12;
+        out_Q_D_e[21] = x10;
+        out_Q_D_e[22] = x22;
+        out_Q_D_e[23] = x7;
+        out_Q_D_e[24] = 0.0f;
+        out_Q_D_e[25] = 0.0f;
+        out_Q_D_e[26] = e_2*x20;
+        out_Q_D_phi[0] = -x1*x10;
+        out_Q_D_phi[1] = x23 - x24;
+        out_Q_D_phi[2] = x25 + x26;
+        out_Q_D_phi[3] = x23 + x24;
+        out_Q_D_phi[4] = -x10*x16;
+        out_Q_D_phi[5] = 2.0f*e_1*e_2*x3*x9 - x27;
+        out_Q_D_phi[6] = -x25 + x26;
+        out_Q_D_phi[7] = e_1*x11 + x27;
+        out_Q_D_phi[8] = -x10*x19;
+    }
+    return singular;
+}
+
+
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
  * are written as NaN; returns their number. One thread. */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_rotation_from_natural_invariants_with_jacobians)(
@@ -224,8 +323,8 @@ int64_t RIGIDSYM_ISA_NAME(rigidsym_rotation_from_natural_invariants_with_jacobia
     double *RIGIDSYM_RESTRICT out_Q_D_phi);
 
 
-/* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
- * is flagged too). */
+/* The same on float32 arrays (the float32 sample function: float arithmetic of the
+ * precision plan; a row whose output overflows float32 is flagged too). */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_rotation_from_natural_invariants_with_jacobians_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_e,

@@ -11,11 +11,17 @@
  * Point of the screw axis closest to the origin.
  * p0 = (Q - 1)^T (Q a - a') / (2 (1 - cos phi)), Q from (e, phi) by (2.49)
  * Singular set: phi = 0 (pure translation)
+ *
+ * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
+ * measured at generation, rigidsym.codegen.float32; error within 0.846 ulp of float32,
+ * normwise, at its points). In double:
+ *   trig_0, trig_1, x1, x2, x3, x4, x5, x6, x7, x8, x9, x10, x11, x12, x13, x14, x15, x16, x17, x18, x19, x20, x21, x22, x23
  */
 #ifndef RIGIDSYM_SCREW_AXIS_POINT_H
 #define RIGIDSYM_SCREW_AXIS_POINT_H
 
 #include "rigidsym_common.h"
+
 
 /* One sample: returns nonzero when the sample is singular (division by an exact zero or a
  * non-finite result). Inputs and outputs are row-major per sample. */
@@ -136,6 +142,63 @@ static inline int rigidsym_screw_axis_point_sample_trig(
 }
 
 
+/* One float32 sample: float inputs and outputs, arithmetic of the precision plan above. */
+static inline int rigidsym_screw_axis_point_sample_trig_f32(
+    const float *RIGIDSYM_RESTRICT in_e,
+    const float *RIGIDSYM_RESTRICT in_phi,
+    const float *RIGIDSYM_RESTRICT in_a,
+    const float *RIGIDSYM_RESTRICT in_a_prime,
+    const double trig_0,
+    const double trig_1,
+    float *RIGIDSYM_RESTRICT out_p0)
+{
+    const float e_0 = in_e[0];
+    const float e_1 = in_e[1];
+    const float e_2 = in_e[2];
+    (void)in_phi;
+    const float a_0 = in_a[0];
+    const float a_1 = in_a[1];
+    const float a_2 = in_a[2];
+    const float a_prime_0 = in_a_prime[0];
+    const float a_prime_1 = in_a_prime[1];
+    const float a_prime_2 = in_a_prime[2];
+    int singular = 0;
+    {
+        const double x1 = trig_0;
+        const double x2 = (x1*x1);
+        const double x3 = (((double)e_0)*((double)e_0));
+        const double x4 = 2.0*x2;
+        const double x5 = 1.0 - x4;
+        const double x6 = ((double)e_0)*((double)e_1)*x4;
+        const double x7 = 2.0*trig_1*x1;
+        const double x8 = ((double)e_2)*x7;
+        const double x9 = x6 - x8;
+        const double x10 = ((double)e_2)*x4;
+        const double x11 = ((double)e_0)*x10;
+        const double x12 = ((double)e_1)*x7;
+        const double x13 = x11 + x12;
+        const double x14 = ((double)a_0)*(x3 + x5*(1.0 - x3)) + ((double)a_1)*x9 + ((double)a_2)*x13 - ((double)a_prime_0);
+        const double x15 = x6 + x8;
+        const double x16 = (((double)e_1)*((double)e_1));
+        const double x17 = ((double)e_0)*x7;
+        const double x18 = 2.0*((double)e_1)*((double)e_2)*x2 - x17;
+        const double x19 = ((double)a_0)*x15 + ((double)a_1)*(x16 + x5*(1.0 - x16)) + ((double)a_2)*x18 - ((double)a_prime_1);
+        const double x20 = x11 - x12;
+        const double x21 = ((double)e_1)*x10 + x17;
+        const double x22 = (((double)e_2)*((double)e_2));
+        const double x23 = ((double)a_0)*x20 + ((double)a_1)*x21 + ((double)a_2)*(x22 + x5*(1.0 - x22)) - ((double)a_prime_2);
+        const float x24 = (0.25f)/x2;
+        out_p0[0] = x24*(x14*x2*(2.0f*x3 - 2.0f) + x15*x19 + x20*x23);
+        out_p0[1] = x24*(x14*x9 + x19*x2*(2.0f*x16 - 2.0f) + x21*x23);
+        out_p0[2] = x24*(x13*x14 + x18*x19 + x2*x23*(2.0f*x22 - 2.0f));
+        singular |= (x1) == 0.0;
+        const double finite = ((x24 - x24) + (x2 - x2));
+        singular |= finite != finite;
+    }
+    return singular;
+}
+
+
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
  * are written as NaN; returns their number. One thread. */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_screw_axis_point)(
@@ -157,8 +220,8 @@ int64_t RIGIDSYM_ISA_NAME(rigidsym_screw_axis_point_threads)(
     double *RIGIDSYM_RESTRICT out_p0);
 
 
-/* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
- * is flagged too). */
+/* The same on float32 arrays (the float32 sample function: float arithmetic of the
+ * precision plan; a row whose output overflows float32 is flagged too). */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_screw_axis_point_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_e,

@@ -11,11 +11,17 @@
  * Point of the screw axis closest to the origin, with the Jacobians of its outputs.
  * p0 = (Q - 1)^T (Q a - a') / (2 (1 - cos phi)), Q from (e, phi) by (2.49); and d(output)/d(input) by sympy on the declared formula
  * Singular set: phi = 0 (pure translation)
+ *
+ * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
+ * measured at generation, rigidsym.codegen.float32; error within 0.992 ulp of float32,
+ * normwise, at its points). In double:
+ *   trig_0, trig_1, x0, x1, x3, x4, x5, x6, x7, x8, x10, x11, x12, x13, x14, x15, x16, x17, x18, x20, x21, x22, x25, x26, x27, x28, x29, x30, x31, x32, x34, x35, x36, x37, x38, x39, x40, x41, x47, x50, x51, x58, x59, x64, x69, x70, x74, x77, x78, x79, x81
  */
 #ifndef RIGIDSYM_SCREW_AXIS_POINT_WITH_JACOBIANS_H
 #define RIGIDSYM_SCREW_AXIS_POINT_WITH_JACOBIANS_H
 
 #include "rigidsym_common.h"
+
 
 /* One sample: returns nonzero when the sample is singular (division by an exact zero or a
  * non-finite result). Inputs and outputs are row-major per sample. */
@@ -328,6 +334,159 @@ static inline int rigidsym_screw_axis_point_with_jacobians_sample_trig(
 }
 
 
+/* One float32 sample: float inputs and outputs, arithmetic of the precision plan above. */
+static inline int rigidsym_screw_axis_point_with_jacobians_sample_trig_f32(
+    const float *RIGIDSYM_RESTRICT in_e,
+    const float *RIGIDSYM_RESTRICT in_phi,
+    const float *RIGIDSYM_RESTRICT in_a,
+    const float *RIGIDSYM_RESTRICT in_a_prime,
+    const double trig_0,
+    const double trig_1,
+    float *RIGIDSYM_RESTRICT out_p0,
+    float *RIGIDSYM_RESTRICT out_p0_D_e,
+    float *RIGIDSYM_RESTRICT out_p0_D_phi,
+    float *RIGIDSYM_RESTRICT out_p0_D_a,
+    float *RIGIDSYM_RESTRICT out_p0_D_a_prime)
+{
+    const float e_0 = in_e[0];
+    const float e_1 = in_e[1];
+    const float e_2 = in_e[2];
+    (void)in_phi;
+    const float a_0 = in_a[0];
+    const float a_1 = in_a[1];
+    const float a_2 = in_a[2];
+    const float a_prime_0 = in_a_prime[0];
+    const float a_prime_1 = in_a_prime[1];
+    const float a_prime_2 = in_a_prime[2];
+    int singular = 0;
+    {
+        const double x0 = (((double)e_0)*((double)e_0));
+        const double x1 = 1.0 - x0;
+        const double x3 = trig_0;
+        const double x4 = (x3*x3);
+        const double x5 = 2.0*x4;
+        const double x6 = 1.0 - x5;
+        const double x7 = x0 + x1*x6;
+        const double x8 = ((double)e_1)*x5;
+        const float x9 = e_0*x8;
+        const double x10 = trig_1;
+        const double x11 = 2.0*x10*x3;
+        const double x12 = ((double)e_2)*x11;
+        const double x13 = -x12 + ((double)x9);
+        const double x14 = ((double)e_2)*x5;
+        const double x15 = ((double)e_0)*x14;
+        const double x16 = ((double)e_1)*x11;
+        const double x17 = x15 + x16;
+        const double x18 = ((double)a_0)*x7 + ((double)a_1)*x13 + ((double)a_2)*x17 - ((double)a_prime_0);
+        const float x19 = x4*(2.0f*x0 - 2.0f);
+        const double x20 = x12 + ((double)x9);
+        const double x21 = (((double)e_1)*((double)e_1));
+        const double x22 = 1.0 - x21;
+        const float x23 = x21 + x22*x6;
+        const float x24 = e_1*x14;
+        const double x25 = ((double)e_0)*x11;
+        const double x26 = -((double)x24) + x25;
+        const double x27 = -x26;
+        const double x28 = ((double)a_0)*x20 + ((double)a_1)*((double)x23) + ((double)a_2)*x27 - ((double)a_prime_1);
+        const double x29 = x15 - x16;
+        const double x30 = ((double)x24) + x25;
+        const double x31 = (((double)e_2)*((double)e_2));
+        const double x32 = 1.0 - x31;
+        const float x33 = x31 + x32*x6;
+        const double x34 = ((double)a_0)*x29 + ((double)a_1)*x30 + ((double)a_2)*((double)x33) - ((double)a_prime_2);
+        const double x35 = x18*((double)x19) + x20*x28 + x29*x34;
+        const double x36 = 1.0/x4;
+        const double x37 = (0.25)*x36;
+        const double x38 = x4*(2.0*x21 - 2.0);
+        const double x39 = x13*x18 + x28*x38 + x30*x34;
+        const double x40 = x4*(2.0*x31 - 2.0);
+        const double x41 = x17*x18 + x27*x28 + x34*x40;
+        const float x42 = a_2*x11;
+        const float x43 = a_0*x8 - x42;
+        const float x44 = a_1*x11;
+        const float x45 = a_0*x14 + x44;
+        const float x46 = a_0*e_0;
+        const double x47 = 4.0*x4;
+        const float x48 = a_1*x8;
+        const float x49 = a_2*x14;
+        const double x50 = ((double)x46)*x47 + ((double)x48) + ((double)x49);
+        const double x51 = ((double)e_0)*x18;
+        const float x52 = x28*x8;
+        const float x53 = x14*x34;
+        const float x54 = e_0*x5;
+        const float x55 = a_1*x54 + x42;
+        const float x56 = a_0*x11;
+        const float x57 = 2.0f*a_1*e_2*x4 - x56;
+        const double x58 = ((double)x46)*x5;
+        const double x59 = ((double)e_1)*x47;
+        const float x60 = a_1*x59 + x49 + x58;
+        const float x61 = x11*x34;
+        const float x62 = 2.0f*a_2*e_0*x4 - x44;
+        const float x63 = a_2*x8 + x56;
+        const double x64 = ((double)e_2)*x47;
+        const float x65 = a_2*x64 + x48 + x58;
+        const float x66 = x11*x28;
+        const float x67 = x5*x51;
+        const float x68 = x11*x18;
+        const double x69 = (0.25)*x10/(x3*x3*x3);
+        const double x70 = ((double)e_1)*x6;
+        const float x71 = e_2*x25;
+        const float x72 = x70 + x71;
+        const float x73 = e_0*x16;
+        const double x74 = ((double)e_2)*x6;
+        const float x75 = x73 - x74;
+        const float x76 = a_1*x75 + a_2*x72 - x1*x56;
+        const double x77 = ((double)x73) + x74;
+        const double x78 = ((double)e_0)*x6;
+        const double x79 = 2.0*((double)e_1)*((double)e_2)*x10*x3 - x78;
+        const float x80 = a_0*x77 + a_2*x79 - x22*x44;
+        const double x81 = ((double)e_2)*x16 + x78;
+        const float x82 = -x70 + x71;
+        const float x83 = a_0*x82 + a_1*x81 - x32*x42;
+        const float x84 = x29*x30;
+        const float x85 = x20*x27;
+        const float x86 = x13*x17;
+        out_p0[0] = x35*x37;
+        out_p0[1] = x37*x39;
+        out_p0[2] = x37*x41;
+        out_p0_D_e[0] = x37*(x19*x50 + x20*x43 + x29*x45 + x47*x51 + x52 + x53);
+        out_p0_D_e[1] = x37*(x19*x55 + x20*x60 + x28*x54 + x29*x57 - x61);
+        out_p0_D_e[2] = x37*(x19*x62 + x20*x63 + x29*x65 + x34*x54 + x66);
+        out_p0_D_e[3] = x37*(x13*x50 + x18*x8 + x30*x45 + x38*x43 + x61);
+        out_p0_D_e[4] = x37*(x13*x55 + x28*x59 + x30*x57 + x38*x60 + x53 + x67);
+        out_p0_D_e[5] = x37*(x13*x62 + x30*x65 + x34*x8 + x38*x63 - x68);
+        out_p0_D_e[6] = x37*(x14*x18 + x17*x50 + x27*x43 + x40*x45 - x66);
+        out_p0_D_e[7] = x37*(x14*x28 + x17*x55 + x27*x60 + x40*x57 + x68);
+        out_p0_D_e[8] = x37*(x17*x62 + x27*x63 + x34*x64 + x40*x65 + x52 + x67);
+        out_p0_D_phi[0] = -x35*x69 + (0.25f)*x36*(-x1*x68 + x19*x76 + x20*x80 + x28*x77 + x29*x83 + x34*x82);
+        out_p0_D_phi[1] = (0.25f)*x36*(x13*x76 + x18*x75 - x22*x66 + x30*x83 + x34*x81 + x38*x80) - x39*x69;
+        out_p0_D_phi[2] = (0.25f)*x36*(x17*x76 + x18*x72 + x27*x80 + x28*x79 - x32*x61 + x40*x83) - x41*x69;
+        out_p0_D_a[0] = x37*(x19*x7 + (x20*x20) + (x29*x29));
+        out_p0_D_a[1] = x37*(x13*x19 + x20*x23 + x84);
+        out_p0_D_a[2] = x37*(x17*x19 + x29*x33 + x85);
+        out_p0_D_a[3] = x37*(x13*x7 + x20*x38 + x84);
+        out_p0_D_a[4] = x37*((x13*x13) + x23*x38 + (x30*x30));
+        out_p0_D_a[5] = x37*(x27*x38 + x30*x33 + x86);
+        out_p0_D_a[6] = x37*(x17*x7 + x29*x40 + x85);
+        out_p0_D_a[7] = x37*(x23*x27 + x30*x40 + x86);
+        out_p0_D_a[8] = x37*((x17*x17) + (x27*x27) + x33*x40);
+        out_p0_D_a_prime[0] = 0.5f - 0.5f*x0;
+        out_p0_D_a_prime[1] = -x20*x37;
+        out_p0_D_a_prime[2] = -x29*x37;
+        out_p0_D_a_prime[3] = -x13*x37;
+        out_p0_D_a_prime[4] = 0.5f - 0.5f*x21;
+        out_p0_D_a_prime[5] = -x30*x37;
+        out_p0_D_a_prime[6] = -x17*x37;
+        out_p0_D_a_prime[7] = x26*x37;
+        out_p0_D_a_prime[8] = 0.5f - 0.5f*x31;
+        singular |= (x3) == 0.0;
+        const double finite = (((x36 - x36) + (x69 - x69)) + ((x4 - x4) + (x3 - x3)));
+        singular |= finite != finite;
+    }
+    return singular;
+}
+
+
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
  * are written as NaN; returns their number. One thread. */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_screw_axis_point_with_jacobians)(
@@ -357,8 +516,8 @@ int64_t RIGIDSYM_ISA_NAME(rigidsym_screw_axis_point_with_jacobians_threads)(
     double *RIGIDSYM_RESTRICT out_p0_D_a_prime);
 
 
-/* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
- * is flagged too). */
+/* The same on float32 arrays (the float32 sample function: float arithmetic of the
+ * precision plan; a row whose output overflows float32 is flagged too). */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_screw_axis_point_with_jacobians_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_e,

@@ -12,11 +12,20 @@
  * Screw of a finite displacement: axis, angle, axis point, pitch, Plücker array.
  * (e, phi) from Q as natural_invariants_from_rotation; p0 = (Q - 1)^T (Q a - a') / ((1 - Q_00) + (1 - Q_11) + (1 - Q_22)); pitch = e^T (a' - a) / phi; kappa = [e; p0 x e]
  * Singular set: phi = 0 (pure translation: no axis, infinite pitch)
+ *
+ * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
+ * measured at generation, rigidsym.codegen.float32; error within 0.964 ulp of float32,
+ * normwise, at its points). In double:
+ *   branch 1: x16, x37
+ *   branch 2: x31, x33, x34, x36
+ *   branch 3: x38
+ *   branch 4: x6, x7, x8, x12, x14, x16, x19, x23, x24, x27, pitch[0]
  */
 #ifndef RIGIDSYM_SCREW_OF_DISPLACEMENT_H
 #define RIGIDSYM_SCREW_OF_DISPLACEMENT_H
 
 #include "rigidsym_common.h"
+
 
 /* One sample: returns nonzero when the sample is singular (division by an exact zero or a
  * non-finite result). Inputs and outputs are row-major per sample. */
@@ -294,6 +303,273 @@ static inline int rigidsym_screw_of_displacement_sample(
 }
 
 
+/* One float32 sample: float inputs and outputs, arithmetic of the precision plan above. */
+static inline int rigidsym_screw_of_displacement_sample_f32(
+    const float *RIGIDSYM_RESTRICT in_Q,
+    const float *RIGIDSYM_RESTRICT in_a,
+    const float *RIGIDSYM_RESTRICT in_a_prime,
+    float *RIGIDSYM_RESTRICT out_e,
+    float *RIGIDSYM_RESTRICT out_phi,
+    float *RIGIDSYM_RESTRICT out_p0,
+    float *RIGIDSYM_RESTRICT out_pitch,
+    float *RIGIDSYM_RESTRICT out_plucker)
+{
+    const float Q_00 = in_Q[0];
+    const float Q_01 = in_Q[1];
+    const float Q_02 = in_Q[2];
+    const float Q_10 = in_Q[3];
+    const float Q_11 = in_Q[4];
+    const float Q_12 = in_Q[5];
+    const float Q_20 = in_Q[6];
+    const float Q_21 = in_Q[7];
+    const float Q_22 = in_Q[8];
+    const float a_0 = in_a[0];
+    const float a_1 = in_a[1];
+    const float a_2 = in_a[2];
+    const float a_prime_0 = in_a_prime[0];
+    const float a_prime_1 = in_a_prime[1];
+    const float a_prime_2 = in_a_prime[2];
+    int singular = 0;
+    if (((double)Q_00) >= ((double)Q_11) && ((double)Q_00) >= ((double)Q_22) && ((double)Q_00) + ((double)Q_11) + ((double)Q_22) < 0.0) {
+        const float x0 = (0.5f)*Q_00;
+        const float x1 = (0.5f)*Q_11;
+        const float x2 = (0.5f)*Q_22;
+        const float x3 = x0 - x1 - x2 + 0.5f;
+        const float x4 = (0.5f)*Q_01;
+        const float x5 = (0.5f)*Q_10 + x4;
+        const float x6 = (x5*x5);
+        const float x7 = (0.5f)*Q_02;
+        const float x8 = (0.5f)*Q_20;
+        const float x9 = x7 + x8;
+        const float x10 = (x9*x9);
+        const float x11 = (x3*x3);
+        const float x12 = x10 + x11 + x6;
+        const float x13 = (0.5f)*Q_10 - x4;
+        const float x14 = x7 - x8;
+        const float x15 = -0.5f*Q_12 + (0.5f)*Q_21;
+        const double x16 = ((((double)x13)*((double)x9) + ((double)x14)*((double)x5) + ((double)x15)*((double)x3) < 0.0) ? (-1.0) : (1.0))/sqrt(((double)x12));
+        const float x17 = x16*x3;
+        const float x18 = x16*x5;
+        const float x19 = x16*x9;
+        const float x20 = atan2(sqrtf((x13*x13) + (x14*x14) + (x15*x15)), x0 + x1 + x2 - 0.5f);
+        const float x21 = -a_prime_1;
+        const float x22 = Q_10*a_0 + Q_11*a_1 + Q_12*a_2 + x21;
+        const float x23 = -a_prime_2;
+        const float x24 = Q_20*a_0 + Q_21*a_1 + Q_22*a_2 + x23;
+        const float x25 = Q_00 - 1.0f;
+        const float x26 = -a_prime_0;
+        const float x27 = Q_00*a_0 + Q_01*a_1 + Q_02*a_2 + x26;
+        const float x28 = Q_10*x22 + Q_20*x24 + x25*x27;
+        const float x29 = Q_11 - 1.0f;
+        const float x30 = Q_22 - 1.0f;
+        const float x31 = -(x25) - (x29) - (x30);
+        const float x32 = 1.0f/x31;
+        const float x33 = Q_01*x27 + Q_21*x24 + x22*x29;
+        const float x34 = Q_02*x27 + Q_12*x22 + x24*x30;
+        const float x35 = 1.0f/x12;
+        const float x36 = x10*x35 + x11*x35 + x35*x6;
+        const double x37 = 1.0/sqrt(((double)x36));
+        const float x38 = x17*x37;
+        const float x39 = x18*x37;
+        const float x40 = x19*x37;
+        out_e[0] = x17;
+        out_e[1] = x18;
+        out_e[2] = x19;
+        out_phi[0] = x20;
+        out_p0[0] = x28*x32;
+        out_p0[1] = x32*x33;
+        out_p0[2] = x32*x34;
+        out_pitch[0] = (x17*(-a_0 - x26) + x18*(-a_1 - x21) + x19*(-a_2 - x23))/x20;
+        out_plucker[0] = x38;
+        out_plucker[1] = x39;
+        out_plucker[2] = x40;
+        out_plucker[3] = x32*x33*x40 - x32*x34*x39;
+        out_plucker[4] = -x28*x32*x40 + x32*x34*x38;
+        out_plucker[5] = x28*x32*x39 - x32*x33*x38;
+        singular |= (((double)x36)) == 0.0;
+        singular |= (((double)x12)) == 0.0;
+        singular |= (((double)x31)) == 0.0;
+        singular |= (((double)x20)) == 0.0;
+        const double finite = ((((x16 - x16) + (x20 - x20)) + ((x32 - x32) + ((x35 - x35) + (x37 - x37)))) + (((out_pitch[0] - out_pitch[0]) + (x12 - x12)) + ((((x13*x13) + (x14*x14) + (x15*x15)) - ((x13*x13) + (x14*x14) + (x15*x15))) + ((x31 - x31) + (x36 - x36)))));
+        singular |= finite != finite;
+    } else if (((double)Q_11) >= ((double)Q_00) && ((double)Q_11) >= ((double)Q_22) && ((double)Q_00) + ((double)Q_11) + ((double)Q_22) < 0.0) {
+        const float x0 = (0.5f)*Q_01;
+        const float x1 = (0.5f)*Q_10 + x0;
+        const float x2 = (x1*x1);
+        const float x3 = (0.5f)*Q_12;
+        const float x4 = (0.5f)*Q_21 + x3;
+        const float x5 = (x4*x4);
+        const float x6 = (0.5f)*Q_00 + (0.5f)*Q_22 - 0.5f;
+        const float x7 = (0.5f)*Q_11 - x6;
+        const float x8 = (x7*x7);
+        const float x9 = x2 + x5 + x8;
+        const float x10 = (0.5f)*Q_10 - x0;
+        const float x11 = (0.5f)*Q_21 - x3;
+        const float x12 = (0.5f)*Q_02 - 0.5f*Q_20;
+        const float x13 = ((x1*x11 + x10*x4 + x12*x7 < 0.0f) ? (-1.0f) : (1.0f))/sqrtf(x9);
+        const float x14 = x1*x13;
+        const float x15 = x13*x7;
+        const float x16 = x13*x4;
+        const float x17 = atan2(sqrtf((x10*x10) + (x11*x11) + (x12*x12)), (0.5f)*Q_11 + x6);
+        const float x18 = -a_prime_1;
+        const float x19 = Q_10*a_0 + Q_11*a_1 + Q_12*a_2 + x18;
+        const float x20 = -a_prime_2;
+        const float x21 = Q_20*a_0 + Q_21*a_1 + Q_22*a_2 + x20;
+        const float x22 = Q_00 - 1.0f;
+        const float x23 = -a_prime_0;
+        const float x24 = Q_00*a_0 + Q_01*a_1 + Q_02*a_2 + x23;
+        const float x25 = Q_10*x19 + Q_20*x21 + x22*x24;
+        const float x26 = Q_11 - 1.0f;
+        const float x27 = Q_22 - 1.0f;
+        const float x28 = -(x22) - (x26) - (x27);
+        const float x29 = 1.0f/x28;
+        const float x30 = Q_01*x24 + Q_21*x21 + x19*x26;
+        const double x31 = ((double)Q_02)*((double)x24) + ((double)Q_12)*((double)x19) + ((double)x21)*((double)x27);
+        const float x32 = 1.0f/x9;
+        const double x33 = ((double)x2)*((double)x32) + ((double)x32)*((double)x5) + ((double)x32)*((double)x8);
+        const double x34 = 1.0/sqrt(x33);
+        const float x35 = x14*x34;
+        const double x36 = ((double)x15)*x34;
+        const float x37 = x16*x34;
+        out_e[0] = x14;
+        out_e[1] = x15;
+        out_e[2] = x16;
+        out_phi[0] = x17;
+        out_p0[0] = x25*x29;
+        out_p0[1] = x29*x30;
+        out_p0[2] = x29*x31;
+        out_pitch[0] = (x14*(-a_0 - x23) + x15*(-a_1 - x18) + x16*(-a_2 - x20))/x17;
+        out_plucker[0] = x35;
+        out_plucker[1] = x36;
+        out_plucker[2] = x37;
+        out_plucker[3] = x29*x30*x37 - x29*x31*x36;
+        out_plucker[4] = -x25*x29*x37 + x29*x31*x35;
+        out_plucker[5] = x25*x29*x36 - x29*x30*x35;
+        singular |= (x33) == 0.0;
+        singular |= (((double)x9)) == 0.0;
+        singular |= (((double)x28)) == 0.0;
+        singular |= (((double)x17)) == 0.0;
+        const double finite = ((((x13 - x13) + (x17 - x17)) + ((x29 - x29) + ((x32 - x32) + (x34 - x34)))) + (((out_pitch[0] - out_pitch[0]) + (x9 - x9)) + ((((x10*x10) + (x11*x11) + (x12*x12)) - ((x10*x10) + (x11*x11) + (x12*x12))) + ((x28 - x28) + (x33 - x33)))));
+        singular |= finite != finite;
+    } else if (((double)Q_22) >= ((double)Q_00) && ((double)Q_22) >= ((double)Q_11) && ((double)Q_00) + ((double)Q_11) + ((double)Q_22) < 0.0) {
+        const float x0 = (0.5f)*Q_02;
+        const float x1 = (0.5f)*Q_20;
+        const float x2 = x0 + x1;
+        const float x3 = (x2*x2);
+        const float x4 = (0.5f)*Q_12;
+        const float x5 = (0.5f)*Q_21 + x4;
+        const float x6 = (x5*x5);
+        const float x7 = (0.5f)*Q_00 + (0.5f)*Q_11 - 0.5f;
+        const float x8 = (0.5f)*Q_22 - x7;
+        const float x9 = (x8*x8);
+        const float x10 = x3 + x6 + x9;
+        const float x11 = x0 - x1;
+        const float x12 = (0.5f)*Q_21 - x4;
+        const float x13 = -0.5f*Q_01 + (0.5f)*Q_10;
+        const float x14 = ((x11*x5 + x12*x2 + x13*x8 < 0.0f) ? (-1.0f) : (1.0f))/sqrtf(x10);
+        const float x15 = x14*x2;
+        const float x16 = x14*x5;
+        const float x17 = x14*x8;
+        const float x18 = atan2(sqrtf((x11*x11) + (x12*x12) + (x13*x13)), (0.5f)*Q_22 + x7);
+        const float x19 = -a_prime_1;
+        const float x20 = Q_10*a_0 + Q_11*a_1 + Q_12*a_2 + x19;
+        const float x21 = -a_prime_2;
+        const float x22 = Q_20*a_0 + Q_21*a_1 + Q_22*a_2 + x21;
+        const float x23 = Q_00 - 1.0f;
+        const float x24 = -a_prime_0;
+        const float x25 = Q_00*a_0 + Q_01*a_1 + Q_02*a_2 + x24;
+        const float x26 = Q_10*x20 + Q_20*x22 + x23*x25;
+        const float x27 = Q_11 - 1.0f;
+        const float x28 = Q_22 - 1.0f;
+        const float x29 = -(x23) - (x27) - (x28);
+        const float x30 = 1.0f/x29;
+        const float x31 = Q_01*x25 + Q_21*x22 + x20*x27;
+        const float x32 = Q_02*x25 + Q_12*x20 + x22*x28;
+        const float x33 = 1.0f/x10;
+        const float x34 = x3*x33 + x33*x6 + x33*x9;
+        const float x35 = 1.0f/sqrtf(x34);
+        const float x36 = x15*x35;
+        const float x37 = x16*x35;
+        const double x38 = ((double)x17)*((double)x35);
+        out_e[0] = x15;
+        out_e[1] = x16;
+        out_e[2] = x17;
+        out_phi[0] = x18;
+        out_p0[0] = x26*x30;
+        out_p0[1] = x30*x31;
+        out_p0[2] = x30*x32;
+        out_pitch[0] = (x15*(-a_0 - x24) + x16*(-a_1 - x19) + x17*(-a_2 - x21))/x18;
+        out_plucker[0] = x36;
+        out_plucker[1] = x37;
+        out_plucker[2] = x38;
+        out_plucker[3] = x30*x31*x38 - x30*x32*x37;
+        out_plucker[4] = -x26*x30*x38 + x30*x32*x36;
+        out_plucker[5] = x26*x30*x37 - x30*x31*x36;
+        singular |= (((double)x34)) == 0.0;
+        singular |= (((double)x10)) == 0.0;
+        singular |= (((double)x29)) == 0.0;
+        singular |= (((double)x18)) == 0.0;
+        const double finite = ((((x14 - x14) + (x18 - x18)) + ((x30 - x30) + ((x33 - x33) + (x35 - x35)))) + (((out_pitch[0] - out_pitch[0]) + (x10 - x10)) + ((((x11*x11) + (x12*x12) + (x13*x13)) - ((x11*x11) + (x12*x12) + (x13*x13))) + ((x29 - x29) + (x34 - x34)))));
+        singular |= finite != finite;
+    } else {
+        const float x0 = -0.5f*Q_12 + (0.5f)*Q_21;
+        const float x1 = -0.5f*Q_01 + (0.5f)*Q_10;
+        const float x2 = (x1*x1);
+        const float x3 = (0.5f)*Q_02 - 0.5f*Q_20;
+        const float x4 = (x3*x3);
+        const float x5 = (x0*x0);
+        const double x6 = ((double)x2) + ((double)x4) + ((double)x5);
+        const double x7 = sqrt(x6);
+        const double x8 = 1.0/x7;
+        const float x9 = x0*x8;
+        const float x10 = x3*x8;
+        const float x11 = x1*x8;
+        const double x12 = atan2(x7, (0.5)*((double)Q_00) + (0.5)*((double)Q_11) + (0.5)*((double)Q_22) - 0.5);
+        const float x13 = -a_prime_1;
+        const double x14 = ((double)Q_10)*((double)a_0) + ((double)Q_11)*((double)a_1) + ((double)Q_12)*((double)a_2) + ((double)x13);
+        const float x15 = -a_prime_2;
+        const double x16 = ((double)Q_20)*((double)a_0) + ((double)Q_21)*((double)a_1) + ((double)Q_22)*((double)a_2) + ((double)x15);
+        const float x17 = Q_00 - 1.0f;
+        const float x18 = -a_prime_0;
+        const double x19 = ((double)Q_00)*((double)a_0) + ((double)Q_01)*((double)a_1) + ((double)Q_02)*((double)a_2) + ((double)x18);
+        const float x20 = Q_10*x14 + Q_20*x16 + x17*x19;
+        const float x21 = Q_11 - 1.0f;
+        const float x22 = Q_22 - 1.0f;
+        const double x23 = -(((double)x17)) - (((double)x21)) - (((double)x22));
+        const double x24 = 1.0/x23;
+        const float x25 = Q_01*x19 + Q_21*x16 + x14*x21;
+        const float x26 = Q_02*x19 + Q_12*x14 + x16*x22;
+        const double x27 = 1.0/x6;
+        const float x28 = x2*x27 + x27*x4 + x27*x5;
+        const float x29 = 1.0f/sqrtf(x28);
+        const float x30 = x29*x9;
+        const float x31 = x10*x29;
+        const float x32 = x11*x29;
+        out_e[0] = x9;
+        out_e[1] = x10;
+        out_e[2] = x11;
+        out_phi[0] = x12;
+        out_p0[0] = x20*x24;
+        out_p0[1] = x24*x25;
+        out_p0[2] = x24*x26;
+        out_pitch[0] = (((double)x10)*(-((double)a_1) - ((double)x13)) + ((double)x11)*(-((double)a_2) - ((double)x15)) + ((double)x9)*(-((double)a_0) - ((double)x18)))/x12;
+        out_plucker[0] = x30;
+        out_plucker[1] = x31;
+        out_plucker[2] = x32;
+        out_plucker[3] = x24*x25*x32 - x24*x26*x31;
+        out_plucker[4] = -x20*x24*x32 + x24*x26*x30;
+        out_plucker[5] = x20*x24*x31 - x24*x25*x30;
+        singular |= (((double)x28)) == 0.0;
+        singular |= (x6) == 0.0;
+        singular |= (x23) == 0.0;
+        singular |= (x12) == 0.0;
+        const double finite = ((((x7 - x7) + (x8 - x8)) + ((x24 - x24) + ((x27 - x27) + (x29 - x29)))) + (((out_pitch[0] - out_pitch[0]) + (x6 - x6)) + ((x23 - x23) + ((x28 - x28) + (x12 - x12)))));
+        singular |= finite != finite;
+    }
+    return singular;
+}
+
+
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
  * are written as NaN; returns their number. One thread. */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_screw_of_displacement)(
@@ -321,8 +597,8 @@ int64_t RIGIDSYM_ISA_NAME(rigidsym_screw_of_displacement_threads)(
     double *RIGIDSYM_RESTRICT out_plucker);
 
 
-/* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
- * is flagged too). */
+/* The same on float32 arrays (the float32 sample function: float arithmetic of the
+ * precision plan; a row whose output overflows float32 is flagged too). */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_screw_of_displacement_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_Q,

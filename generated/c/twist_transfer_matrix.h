@@ -10,11 +10,17 @@
  *
  * Twist-transfer matrix U (6x6).
  * U = [[1, O], [A - P, 1]]
+ *
+ * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
+ * measured at generation, rigidsym.codegen.float32; error within 0.499 ulp of float32,
+ * normwise, at its points). In double:
+ *   none
  */
 #ifndef RIGIDSYM_TWIST_TRANSFER_MATRIX_H
 #define RIGIDSYM_TWIST_TRANSFER_MATRIX_H
 
 #include "rigidsym_common.h"
+
 
 /* One sample: returns nonzero when the sample is singular (division by an exact zero or a
  * non-finite result). Inputs and outputs are row-major per sample. */
@@ -75,6 +81,64 @@ static inline int rigidsym_twist_transfer_matrix_sample(
 }
 
 
+/* One float32 sample: float inputs and outputs, arithmetic of the precision plan above. */
+static inline int rigidsym_twist_transfer_matrix_sample_f32(
+    const float *RIGIDSYM_RESTRICT in_a,
+    const float *RIGIDSYM_RESTRICT in_p,
+    float *RIGIDSYM_RESTRICT out_U)
+{
+    const float a_0 = in_a[0];
+    const float a_1 = in_a[1];
+    const float a_2 = in_a[2];
+    const float p_0 = in_p[0];
+    const float p_1 = in_p[1];
+    const float p_2 = in_p[2];
+    int singular = 0;
+    {
+        const float x0 = a_2 - p_2;
+        const float x1 = a_1 - p_1;
+        const float x2 = a_0 - p_0;
+        out_U[0] = 1.0f;
+        out_U[1] = 0.0f;
+        out_U[2] = 0.0f;
+        out_U[3] = 0.0f;
+        out_U[4] = 0.0f;
+        out_U[5] = 0.0f;
+        out_U[6] = 0.0f;
+        out_U[7] = 1.0f;
+        out_U[8] = 0.0f;
+        out_U[9] = 0.0f;
+        out_U[10] = 0.0f;
+        out_U[11] = 0.0f;
+        out_U[12] = 0.0f;
+        out_U[13] = 0.0f;
+        out_U[14] = 1.0f;
+        out_U[15] = 0.0f;
+        out_U[16] = 0.0f;
+        out_U[17] = 0.0f;
+        out_U[18] = 0.0f;
+        out_U[19] = -x0;
+        out_U[20] = x1;
+        out_U[21] = 1.0f;
+        out_U[22] = 0.0f;
+        out_U[23] = 0.0f;
+        out_U[24] = x0;
+        out_U[25] = 0.0f;
+        out_U[26] = -x2;
+        out_U[27] = 0.0f;
+        out_U[28] = 1.0f;
+        out_U[29] = 0.0f;
+        out_U[30] = -x1;
+        out_U[31] = x2;
+        out_U[32] = 0.0f;
+        out_U[33] = 0.0f;
+        out_U[34] = 0.0f;
+        out_U[35] = 1.0f;
+    }
+    return singular;
+}
+
+
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
  * are written as NaN; returns their number. One thread. */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_twist_transfer_matrix)(
@@ -92,8 +156,8 @@ int64_t RIGIDSYM_ISA_NAME(rigidsym_twist_transfer_matrix_threads)(
     double *RIGIDSYM_RESTRICT out_U);
 
 
-/* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
- * is flagged too). */
+/* The same on float32 arrays (the float32 sample function: float arithmetic of the
+ * precision plan; a row whose output overflows float32 is flagged too). */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_twist_transfer_matrix_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_a,

@@ -11,11 +11,17 @@
  * Axis of a wrench: point, pitch and Plücker array.
  * p0'' = f x (n_A - a x f)... per (3.109)-(3.111), kappa through p0'' along f
  * Singular set: f = 0 (pure moment)
+ *
+ * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
+ * measured at generation, rigidsym.codegen.float32; error within 0.992 ulp of float32,
+ * normwise, at its points). In double:
+ *   x0, x1, x2, x3, x5, x9
  */
 #ifndef RIGIDSYM_WRENCH_AXIS_H
 #define RIGIDSYM_WRENCH_AXIS_H
 
 #include "rigidsym_common.h"
+
 
 /* One sample: returns nonzero when the sample is singular (division by an exact zero or a
  * non-finite result). Inputs and outputs are row-major per sample. */
@@ -68,6 +74,54 @@ static inline int rigidsym_wrench_axis_sample(
 }
 
 
+/* One float32 sample: float inputs and outputs, arithmetic of the precision plan above. */
+static inline int rigidsym_wrench_axis_sample_f32(
+    const float *RIGIDSYM_RESTRICT in_w_A,
+    const float *RIGIDSYM_RESTRICT in_a,
+    float *RIGIDSYM_RESTRICT out_p0,
+    float *RIGIDSYM_RESTRICT out_pitch,
+    float *RIGIDSYM_RESTRICT out_plucker)
+{
+    const float w_A_0 = in_w_A[0];
+    const float w_A_1 = in_w_A[1];
+    const float w_A_2 = in_w_A[2];
+    const float w_A_3 = in_w_A[3];
+    const float w_A_4 = in_w_A[4];
+    const float w_A_5 = in_w_A[5];
+    const float a_0 = in_a[0];
+    const float a_1 = in_a[1];
+    const float a_2 = in_a[2];
+    int singular = 0;
+    {
+        const double x0 = (((double)w_A_3)*((double)w_A_3)) + (((double)w_A_4)*((double)w_A_4)) + (((double)w_A_5)*((double)w_A_5));
+        const double x1 = 1.0/x0;
+        const double x2 = ((double)a_0)*((double)w_A_4) - ((double)a_1)*((double)w_A_3) + ((double)w_A_2);
+        const double x3 = -((double)a_0)*((double)w_A_5) + ((double)a_2)*((double)w_A_3) + ((double)w_A_1);
+        const float x4 = w_A_4*x2 - w_A_5*x3;
+        const double x5 = ((double)a_1)*((double)w_A_5) - ((double)a_2)*((double)w_A_4) + ((double)w_A_0);
+        const float x6 = -w_A_3*x2 + w_A_5*x5;
+        const float x7 = w_A_3*x3 - w_A_4*x5;
+        const float x8 = 1.0f/sqrt(x0);
+        const double x9 = 1.0/(x0*sqrt(x0));
+        const float x10 = x7*x9;
+        out_p0[0] = x1*x4;
+        out_p0[1] = x1*x6;
+        out_p0[2] = x1*x7;
+        out_pitch[0] = x1*(w_A_0*w_A_3 + w_A_1*w_A_4 + w_A_2*w_A_5);
+        out_plucker[0] = w_A_3*x8;
+        out_plucker[1] = w_A_4*x8;
+        out_plucker[2] = w_A_5*x8;
+        out_plucker[3] = -w_A_4*x10 + w_A_5*x6*x9;
+        out_plucker[4] = w_A_3*x10 - w_A_5*x4*x9;
+        out_plucker[5] = -w_A_3*x6*x9 + w_A_4*x4*x9;
+        singular |= (x0) == 0.0;
+        const double finite = (((x1 - x1) + (x8 - x8)) + ((x9 - x9) + (x0 - x0)));
+        singular |= finite != finite;
+    }
+    return singular;
+}
+
+
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
  * are written as NaN; returns their number. One thread. */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_wrench_axis)(
@@ -89,8 +143,8 @@ int64_t RIGIDSYM_ISA_NAME(rigidsym_wrench_axis_threads)(
     double *RIGIDSYM_RESTRICT out_plucker);
 
 
-/* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
- * is flagged too). */
+/* The same on float32 arrays (the float32 sample function: float arithmetic of the
+ * precision plan; a row whose output overflows float32 is flagged too). */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_wrench_axis_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_w_A,

@@ -11,11 +11,17 @@
  * Axis of a wrench: point, pitch and Plücker array, with the Jacobians of its outputs.
  * p0'' = f x (n_A - a x f)... per (3.109)-(3.111), kappa through p0'' along f; and d(output)/d(input) by sympy on the declared formula
  * Singular set: f = 0 (pure moment)
+ *
+ * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
+ * measured at generation, rigidsym.codegen.float32; error within 0.961 ulp of float32,
+ * normwise, at its points). In double:
+ *   x0, x1, x2, x3, x4, x5, x7, x8, x10, x12, x13, x15, x16, x17, x19, x21, x29, x30, x31, x32, x33, x34, x36, x37, x40, x41, x42, x43, x50, x53, x60, x61, x62, x63, x68, x70, x71, plucker_D_w_A[33]
  */
 #ifndef RIGIDSYM_WRENCH_AXIS_WITH_JACOBIANS_H
 #define RIGIDSYM_WRENCH_AXIS_WITH_JACOBIANS_H
 
 #include "rigidsym_common.h"
+
 
 /* One sample: returns nonzero when the sample is singular (division by an exact zero or a
  * non-finite result). Inputs and outputs are row-major per sample. */
@@ -225,6 +231,211 @@ static inline int rigidsym_wrench_axis_with_jacobians_sample(
 }
 
 
+/* One float32 sample: float inputs and outputs, arithmetic of the precision plan above. */
+static inline int rigidsym_wrench_axis_with_jacobians_sample_f32(
+    const float *RIGIDSYM_RESTRICT in_w_A,
+    const float *RIGIDSYM_RESTRICT in_a,
+    float *RIGIDSYM_RESTRICT out_p0,
+    float *RIGIDSYM_RESTRICT out_pitch,
+    float *RIGIDSYM_RESTRICT out_plucker,
+    float *RIGIDSYM_RESTRICT out_p0_D_w_A,
+    float *RIGIDSYM_RESTRICT out_p0_D_a,
+    float *RIGIDSYM_RESTRICT out_pitch_D_w_A,
+    float *RIGIDSYM_RESTRICT out_pitch_D_a,
+    float *RIGIDSYM_RESTRICT out_plucker_D_w_A,
+    float *RIGIDSYM_RESTRICT out_plucker_D_a)
+{
+    const float w_A_0 = in_w_A[0];
+    const float w_A_1 = in_w_A[1];
+    const float w_A_2 = in_w_A[2];
+    const float w_A_3 = in_w_A[3];
+    const float w_A_4 = in_w_A[4];
+    const float w_A_5 = in_w_A[5];
+    const float a_0 = in_a[0];
+    const float a_1 = in_a[1];
+    const float a_2 = in_a[2];
+    int singular = 0;
+    {
+        const double x0 = (((double)w_A_3)*((double)w_A_3));
+        const double x1 = (((double)w_A_4)*((double)w_A_4));
+        const double x2 = (((double)w_A_5)*((double)w_A_5));
+        const double x3 = x1 + x2;
+        const double x4 = x0 + x3;
+        const double x5 = 1.0/x4;
+        const float x6 = a_0*w_A_4;
+        const double x7 = -((double)a_1)*((double)w_A_3) + ((double)w_A_2);
+        const double x8 = ((double)x6) + x7;
+        const float x9 = -a_0*w_A_5;
+        const double x10 = ((double)a_2)*((double)w_A_3);
+        const float x11 = w_A_1 + x10;
+        const double x12 = ((double)x11) + ((double)x9);
+        const double x13 = ((double)w_A_4)*x8 - ((double)w_A_5)*x12;
+        const float x14 = a_1*w_A_5;
+        const double x15 = -((double)a_2)*((double)w_A_4) + ((double)w_A_0);
+        const double x16 = ((double)x14) + x15;
+        const double x17 = -((double)w_A_3)*x8 + ((double)w_A_5)*x16;
+        const float x18 = w_A_3*x12 - w_A_4*x16;
+        const double x19 = ((double)w_A_0)*((double)w_A_3) + ((double)w_A_1)*((double)w_A_4) + ((double)w_A_2)*((double)w_A_5);
+        const float x20 = 1.0f/sqrt(x4);
+        const double x21 = 1.0/(x4*sqrt(x4));
+        const float x22 = x18*x21;
+        const float x23 = x13*x21;
+        const float x24 = x17*x21;
+        const float x25 = w_A_5*x5;
+        const float x26 = w_A_4*x5;
+        const float x27 = a_1*w_A_4;
+        const float x28 = a_2*w_A_5;
+        const double x29 = -((double)x27) - ((double)x28);
+        const double x30 = 2.0/(x4*x4);
+        const double x31 = ((double)w_A_3)*x13;
+        const double x32 = 2.0*((double)x6) + x7;
+        const double x33 = x13*x30;
+        const double x34 = 2.0*((double)a_0)*((double)w_A_5) - ((double)x11);
+        const float x35 = w_A_3*x5;
+        const double x36 = 2.0*((double)a_1)*((double)w_A_3) - ((double)w_A_2) - ((double)x6);
+        const double x37 = x17*x30;
+        const float x38 = a_0*w_A_3;
+        const float x39 = -x28 - x38;
+        const double x40 = 2.0*((double)x14) + x15;
+        const double x41 = ((double)w_A_1) + 2.0*x10 + ((double)x9);
+        const double x42 = ((double)x18)*x30;
+        const double x43 = 2.0*((double)a_2)*((double)w_A_4) - ((double)w_A_0) - ((double)x14);
+        const float x44 = -x27 - x38;
+        const float x45 = -w_A_3*x26;
+        const float x46 = -w_A_3*x25;
+        const float x47 = x0 + x2;
+        const float x48 = -w_A_4*x25;
+        const float x49 = x0 + x1;
+        const double x50 = x19*x30;
+        const float x51 = -x20;
+        const float x52 = x0*x21;
+        const double x53 = ((double)w_A_3)*x21;
+        const float x54 = -w_A_4*x53;
+        const float x55 = -w_A_5*x53;
+        const float x56 = x1*x21;
+        const float x57 = w_A_5*x21;
+        const float x58 = -w_A_4*x57;
+        const float x59 = x2*x21;
+        const double x60 = ((double)w_A_4)*x21;
+        const double x61 = 1.0/((x4*x4)*sqrt(x4));
+        const double x62 = 3.0*x61;
+        const double x63 = ((double)x18)*x62;
+        const float x64 = w_A_4*x63;
+        const float x65 = w_A_3*x64;
+        const float x66 = x17*x62;
+        const float x67 = w_A_5*x66;
+        const double x68 = ((double)w_A_3)*((double)x67);
+        const float x69 = x31*x62;
+        const double x70 = x13*x62;
+        const double x71 = -((double)w_A_4)*((double)w_A_5)*x70;
+        out_p0[0] = x13*x5;
+        out_p0[1] = x17*x5;
+        out_p0[2] = x18*x5;
+        out_pitch[0] = x19*x5;
+        out_plucker[0] = w_A_3*x20;
+        out_plucker[1] = w_A_4*x20;
+        out_plucker[2] = w_A_5*x20;
+        out_plucker[3] = -w_A_4*x22 + w_A_5*x17*x21;
+        out_plucker[4] = w_A_3*x22 - w_A_5*x23;
+        out_plucker[5] = -w_A_3*x24 + w_A_4*x13*x21;
+        out_p0_D_w_A[0] = 0.0f;
+        out_p0_D_w_A[1] = -x25;
+        out_p0_D_w_A[2] = x26;
+        out_p0_D_w_A[3] = x29*x5 - x30*x31;
+        out_p0_D_w_A[4] = -w_A_4*x33 + x32*x5;
+        out_p0_D_w_A[5] = -w_A_5*x33 + x34*x5;
+        out_p0_D_w_A[6] = x25;
+        out_p0_D_w_A[7] = 0.0f;
+        out_p0_D_w_A[8] = -x35;
+        out_p0_D_w_A[9] = -w_A_3*x37 + x36*x5;
+        out_p0_D_w_A[10] = -w_A_4*x37 + x39*x5;
+        out_p0_D_w_A[11] = -w_A_5*x37 + x40*x5;
+        out_p0_D_w_A[12] = -x26;
+        out_p0_D_w_A[13] = x35;
+        out_p0_D_w_A[14] = 0.0f;
+        out_p0_D_w_A[15] = -w_A_3*x42 + x41*x5;
+        out_p0_D_w_A[16] = -w_A_4*x42 + x43*x5;
+        out_p0_D_w_A[17] = -w_A_5*x42 + x44*x5;
+        out_p0_D_a[0] = x3*x5;
+        out_p0_D_a[1] = x45;
+        out_p0_D_a[2] = x46;
+        out_p0_D_a[3] = x45;
+        out_p0_D_a[4] = x47*x5;
+        out_p0_D_a[5] = x48;
+        out_p0_D_a[6] = x46;
+        out_p0_D_a[7] = x48;
+        out_p0_D_a[8] = x49*x5;
+        out_pitch_D_w_A[0] = x35;
+        out_pitch_D_w_A[1] = x26;
+        out_pitch_D_w_A[2] = x25;
+        out_pitch_D_w_A[3] = w_A_0*x5 - w_A_3*x50;
+        out_pitch_D_w_A[4] = w_A_1*x5 - w_A_4*x50;
+        out_pitch_D_w_A[5] = w_A_2*x5 - w_A_5*x50;
+        out_pitch_D_a[0] = 0.0f;
+        out_pitch_D_a[1] = 0.0f;
+        out_pitch_D_a[2] = 0.0f;
+        out_plucker_D_w_A[0] = 0.0f;
+        out_plucker_D_w_A[1] = 0.0f;
+        out_plucker_D_w_A[2] = 0.0f;
+        out_plucker_D_w_A[3] = -x51 - x52;
+        out_plucker_D_w_A[4] = x54;
+        out_plucker_D_w_A[5] = x55;
+        out_plucker_D_w_A[6] = 0.0f;
+        out_plucker_D_w_A[7] = 0.0f;
+        out_plucker_D_w_A[8] = 0.0f;
+        out_plucker_D_w_A[9] = x54;
+        out_plucker_D_w_A[10] = -x51 - x56;
+        out_plucker_D_w_A[11] = x58;
+        out_plucker_D_w_A[12] = 0.0f;
+        out_plucker_D_w_A[13] = 0.0f;
+        out_plucker_D_w_A[14] = 0.0f;
+        out_plucker_D_w_A[15] = x55;
+        out_plucker_D_w_A[16] = x58;
+        out_plucker_D_w_A[17] = -x51 - x59;
+        out_plucker_D_w_A[18] = x56 + x59;
+        out_plucker_D_w_A[19] = x54;
+        out_plucker_D_w_A[20] = x55;
+        out_plucker_D_w_A[21] = x36*x57 - x41*x60 + x65 - x68;
+        out_plucker_D_w_A[22] = -w_A_4*x67 + w_A_5*x21*x39 + 3.0f*x1*x18*x61 - x22 - x43*x60;
+        out_plucker_D_w_A[23] = w_A_5*x64 - x17*x2*x62 + x24 + x40*x57 - x44*x60;
+        out_plucker_D_w_A[24] = x54;
+        out_plucker_D_w_A[25] = x52 + x59;
+        out_plucker_D_w_A[26] = x58;
+        out_plucker_D_w_A[27] = w_A_5*x69 - x0*x63 + x22 - x29*x57 + x41*x53;
+        out_plucker_D_w_A[28] = w_A_3*x21*x43 - x32*x57 - x65 - x71;
+        out_plucker_D_w_A[29] = -w_A_3*w_A_5*x63 + w_A_3*x21*x44 + 3.0f*x13*x2*x61 - x23 - x34*x57;
+        out_plucker_D_w_A[30] = x55;
+        out_plucker_D_w_A[31] = x58;
+        out_plucker_D_w_A[32] = x52 + x56;
+        out_plucker_D_w_A[33] = ((double)w_A_4)*x21*x29 - ((double)w_A_4)*((double)x69) + 3.0*x0*x17*x61 - ((double)x24) - x36*x53;
+        out_plucker_D_w_A[34] = w_A_3*w_A_4*x66 - x1*x70 + x23 + x32*x60 - x39*x53;
+        out_plucker_D_w_A[35] = x34*x60 - x40*x53 + x68 + x71;
+        out_plucker_D_a[0] = 0.0f;
+        out_plucker_D_a[1] = 0.0f;
+        out_plucker_D_a[2] = 0.0f;
+        out_plucker_D_a[3] = 0.0f;
+        out_plucker_D_a[4] = 0.0f;
+        out_plucker_D_a[5] = 0.0f;
+        out_plucker_D_a[6] = 0.0f;
+        out_plucker_D_a[7] = 0.0f;
+        out_plucker_D_a[8] = 0.0f;
+        out_plucker_D_a[9] = 0.0f;
+        out_plucker_D_a[10] = w_A_5*x56 + x47*x57;
+        out_plucker_D_a[11] = -w_A_4*x59 - x49*x60;
+        out_plucker_D_a[12] = -w_A_5*x52 - x3*x57;
+        out_plucker_D_a[13] = 0.0f;
+        out_plucker_D_a[14] = w_A_3*x59 + x49*x53;
+        out_plucker_D_a[15] = w_A_4*x52 + x3*x60;
+        out_plucker_D_a[16] = -w_A_3*x56 - x47*x53;
+        out_plucker_D_a[17] = 0.0f;
+        singular |= (x4) == 0.0;
+        const double finite = (((x5 - x5) + ((x20 - x20) + (x21 - x21))) + ((x30 - x30) + ((x61 - x61) + (x4 - x4))));
+        singular |= finite != finite;
+    }
+    return singular;
+}
+
+
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
  * are written as NaN; returns their number. One thread. */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_wrench_axis_with_jacobians)(
@@ -258,8 +469,8 @@ int64_t RIGIDSYM_ISA_NAME(rigidsym_wrench_axis_with_jacobians_threads)(
     double *RIGIDSYM_RESTRICT out_plucker_D_a);
 
 
-/* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
- * is flagged too). */
+/* The same on float32 arrays (the float32 sample function: float arithmetic of the
+ * precision plan; a row whose output overflows float32 is flagged too). */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_wrench_axis_with_jacobians_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_w_A,

@@ -10,11 +10,17 @@
  *
  * Wrench at P from the wrench at A.
  * w_P = V(a, p) w_A
+ *
+ * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
+ * measured at generation, rigidsym.codegen.float32; error within 0.489 ulp of float32,
+ * normwise, at its points). In double:
+ *   x0, x1, x2
  */
 #ifndef RIGIDSYM_WRENCH_TRANSFER_H
 #define RIGIDSYM_WRENCH_TRANSFER_H
 
 #include "rigidsym_common.h"
+
 
 /* One sample: returns nonzero when the sample is singular (division by an exact zero or a
  * non-finite result). Inputs and outputs are row-major per sample. */
@@ -52,6 +58,41 @@ static inline int rigidsym_wrench_transfer_sample(
 }
 
 
+/* One float32 sample: float inputs and outputs, arithmetic of the precision plan above. */
+static inline int rigidsym_wrench_transfer_sample_f32(
+    const float *RIGIDSYM_RESTRICT in_w_A,
+    const float *RIGIDSYM_RESTRICT in_a,
+    const float *RIGIDSYM_RESTRICT in_p,
+    float *RIGIDSYM_RESTRICT out_w_P)
+{
+    const float w_A_0 = in_w_A[0];
+    const float w_A_1 = in_w_A[1];
+    const float w_A_2 = in_w_A[2];
+    const float w_A_3 = in_w_A[3];
+    const float w_A_4 = in_w_A[4];
+    const float w_A_5 = in_w_A[5];
+    const float a_0 = in_a[0];
+    const float a_1 = in_a[1];
+    const float a_2 = in_a[2];
+    const float p_0 = in_p[0];
+    const float p_1 = in_p[1];
+    const float p_2 = in_p[2];
+    int singular = 0;
+    {
+        const double x0 = ((double)a_2) - ((double)p_2);
+        const double x1 = ((double)a_1) - ((double)p_1);
+        const double x2 = ((double)a_0) - ((double)p_0);
+        out_w_P[0] = w_A_0 - w_A_4*x0 + w_A_5*x1;
+        out_w_P[1] = w_A_1 + w_A_3*x0 - w_A_5*x2;
+        out_w_P[2] = w_A_2 - w_A_3*x1 + w_A_4*x2;
+        out_w_P[3] = w_A_3;
+        out_w_P[4] = w_A_4;
+        out_w_P[5] = w_A_5;
+    }
+    return singular;
+}
+
+
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
  * are written as NaN; returns their number. One thread. */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_wrench_transfer)(
@@ -71,8 +112,8 @@ int64_t RIGIDSYM_ISA_NAME(rigidsym_wrench_transfer_threads)(
     double *RIGIDSYM_RESTRICT out_w_P);
 
 
-/* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
- * is flagged too). */
+/* The same on float32 arrays (the float32 sample function: float arithmetic of the
+ * precision plan; a row whose output overflows float32 is flagged too). */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_wrench_transfer_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_w_A,

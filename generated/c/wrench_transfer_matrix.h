@@ -10,11 +10,17 @@
  *
  * Wrench-transfer matrix V (6x6).
  * V = [[1, A - P], [O, 1]]
+ *
+ * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
+ * measured at generation, rigidsym.codegen.float32; error within 0.499 ulp of float32,
+ * normwise, at its points). In double:
+ *   none
  */
 #ifndef RIGIDSYM_WRENCH_TRANSFER_MATRIX_H
 #define RIGIDSYM_WRENCH_TRANSFER_MATRIX_H
 
 #include "rigidsym_common.h"
+
 
 /* One sample: returns nonzero when the sample is singular (division by an exact zero or a
  * non-finite result). Inputs and outputs are row-major per sample. */
@@ -75,6 +81,64 @@ static inline int rigidsym_wrench_transfer_matrix_sample(
 }
 
 
+/* One float32 sample: float inputs and outputs, arithmetic of the precision plan above. */
+static inline int rigidsym_wrench_transfer_matrix_sample_f32(
+    const float *RIGIDSYM_RESTRICT in_a,
+    const float *RIGIDSYM_RESTRICT in_p,
+    float *RIGIDSYM_RESTRICT out_V)
+{
+    const float a_0 = in_a[0];
+    const float a_1 = in_a[1];
+    const float a_2 = in_a[2];
+    const float p_0 = in_p[0];
+    const float p_1 = in_p[1];
+    const float p_2 = in_p[2];
+    int singular = 0;
+    {
+        const float x0 = a_2 - p_2;
+        const float x1 = a_1 - p_1;
+        const float x2 = a_0 - p_0;
+        out_V[0] = 1.0f;
+        out_V[1] = 0.0f;
+        out_V[2] = 0.0f;
+        out_V[3] = 0.0f;
+        out_V[4] = -x0;
+        out_V[5] = x1;
+        out_V[6] = 0.0f;
+        out_V[7] = 1.0f;
+        out_V[8] = 0.0f;
+        out_V[9] = x0;
+        out_V[10] = 0.0f;
+        out_V[11] = -x2;
+        out_V[12] = 0.0f;
+        out_V[13] = 0.0f;
+        out_V[14] = 1.0f;
+        out_V[15] = -x1;
+        out_V[16] = x2;
+        out_V[17] = 0.0f;
+        out_V[18] = 0.0f;
+        out_V[19] = 0.0f;
+        out_V[20] = 0.0f;
+        out_V[21] = 1.0f;
+        out_V[22] = 0.0f;
+        out_V[23] = 0.0f;
+        out_V[24] = 0.0f;
+        out_V[25] = 0.0f;
+        out_V[26] = 0.0f;
+        out_V[27] = 0.0f;
+        out_V[28] = 1.0f;
+        out_V[29] = 0.0f;
+        out_V[30] = 0.0f;
+        out_V[31] = 0.0f;
+        out_V[32] = 0.0f;
+        out_V[33] = 0.0f;
+        out_V[34] = 0.0f;
+        out_V[35] = 1.0f;
+    }
+    return singular;
+}
+
+
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
  * are written as NaN; returns their number. One thread. */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_wrench_transfer_matrix)(
@@ -92,8 +156,8 @@ int64_t RIGIDSYM_ISA_NAME(rigidsym_wrench_transfer_matrix_threads)(
     double *RIGIDSYM_RESTRICT out_V);
 
 
-/* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
- * is flagged too). */
+/* The same on float32 arrays (the float32 sample function: float arithmetic of the
+ * precision plan; a row whose output overflows float32 is flagged too). */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_wrench_transfer_matrix_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_a,

@@ -10,11 +10,17 @@
  *
  * Wrench-transfer matrix V (6x6), with the Jacobians of its outputs.
  * V = [[1, A - P], [O, 1]]; and d(output)/d(input) by sympy on the declared formula
+ *
+ * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
+ * measured at generation, rigidsym.codegen.float32; error within 0.499 ulp of float32,
+ * normwise, at its points). In double:
+ *   none
  */
 #ifndef RIGIDSYM_WRENCH_TRANSFER_MATRIX_WITH_JACOBIANS_H
 #define RIGIDSYM_WRENCH_TRANSFER_MATRIX_WITH_JACOBIANS_H
 
 #include "rigidsym_common.h"
+
 
 /* One sample: returns nonzero when the sample is singular (division by an exact zero or a
  * non-finite result). Inputs and outputs are row-major per sample. */
@@ -293,6 +299,282 @@ static inline int rigidsym_wrench_transfer_matrix_with_jacobians_sample(
 }
 
 
+/* One float32 sample: float inputs and outputs, arithmetic of the precision plan above. */
+static inline int rigidsym_wrench_transfer_matrix_with_jacobians_sample_f32(
+    const float *RIGIDSYM_RESTRICT in_a,
+    const float *RIGIDSYM_RESTRICT in_p,
+    float *RIGIDSYM_RESTRICT out_V,
+    float *RIGIDSYM_RESTRICT out_V_D_a,
+    float *RIGIDSYM_RESTRICT out_V_D_p)
+{
+    const float a_0 = in_a[0];
+    const float a_1 = in_a[1];
+    const float a_2 = in_a[2];
+    const float p_0 = in_p[0];
+    const float p_1 = in_p[1];
+    const float p_2 = in_p[2];
+    int singular = 0;
+    {
+        const float x0 = a_2 - p_2;
+        const float x1 = a_1 - p_1;
+        const float x2 = a_0 - p_0;
+        out_V[0] = 1.0f;
+        out_V[1] = 0.0f;
+        out_V[2] = 0.0f;
+        out_V[3] = 0.0f;
+        out_V[4] = -x0;
+        out_V[5] = x1;
+        out_V[6] = 0.0f;
+        out_V[7] = 1.0f;
+        out_V[8] = 0.0f;
+        out_V[9] = x0;
+        out_V[10] = 0.0f;
+        out_V[11] = -x2;
+        out_V[12] = 0.0f;
+        out_V[13] = 0.0f;
+        out_V[14] = 1.0f;
+        out_V[15] = -x1;
+        out_V[16] = x2;
+        out_V[17] = 0.0f;
+        out_V[18] = 0.0f;
+        out_V[19] = 0.0f;
+        out_V[20] = 0.0f;
+        out_V[21] = 1.0f;
+        out_V[22] = 0.0f;
+        out_V[23] = 0.0f;
+        out_V[24] = 0.0f;
+        out_V[25] = 0.0f;
+        out_V[26] = 0.0f;
+        out_V[27] = 0.0f;
+        out_V[28] = 1.0f;
+        out_V[29] = 0.0f;
+        out_V[30] = 0.0f;
+        out_V[31] = 0.0f;
+        out_V[32] = 0.0f;
+        out_V[33] = 0.0f;
+        out_V[34] = 0.0f;
+        out_V[35] = 1.0f;
+        out_V_D_a[0] = 0.0f;
+        out_V_D_a[1] = 0.0f;
+        out_V_D_a[2] = 0.0f;
+        out_V_D_a[3] = 0.0f;
+        out_V_D_a[4] = 0.0f;
+        out_V_D_a[5] = 0.0f;
+        out_V_D_a[6] = 0.0f;
+        out_V_D_a[7] = 0.0f;
+        out_V_D_a[8] = 0.0f;
+        out_V_D_a[9] = 0.0f;
+        out_V_D_a[10] = 0.0f;
+        out_V_D_a[11] = 0.0f;
+        out_V_D_a[12] = 0.0f;
+        out_V_D_a[13] = 0.0f;
+        out_V_D_a[14] = -1.0f;
+        out_V_D_a[15] = 0.0f;
+        out_V_D_a[16] = 1.0f;
+        out_V_D_a[17] = 0.0f;
+        out_V_D_a[18] = 0.0f;
+        out_V_D_a[19] = 0.0f;
+        out_V_D_a[20] = 0.0f;
+        out_V_D_a[21] = 0.0f;
+        out_V_D_a[22] = 0.0f;
+        out_V_D_a[23] = 0.0f;
+        out_V_D_a[24] = 0.0f;
+        out_V_D_a[25] = 0.0f;
+        out_V_D_a[26] = 0.0f;
+        out_V_D_a[27] = 0.0f;
+        out_V_D_a[28] = 0.0f;
+        out_V_D_a[29] = 1.0f;
+        out_V_D_a[30] = 0.0f;
+        out_V_D_a[31] = 0.0f;
+        out_V_D_a[32] = 0.0f;
+        out_V_D_a[33] = -1.0f;
+        out_V_D_a[34] = 0.0f;
+        out_V_D_a[35] = 0.0f;
+        out_V_D_a[36] = 0.0f;
+        out_V_D_a[37] = 0.0f;
+        out_V_D_a[38] = 0.0f;
+        out_V_D_a[39] = 0.0f;
+        out_V_D_a[40] = 0.0f;
+        out_V_D_a[41] = 0.0f;
+        out_V_D_a[42] = 0.0f;
+        out_V_D_a[43] = 0.0f;
+        out_V_D_a[44] = 0.0f;
+        out_V_D_a[45] = 0.0f;
+        out_V_D_a[46] = -1.0f;
+        out_V_D_a[47] = 0.0f;
+        out_V_D_a[48] = 1.0f;
+        out_V_D_a[49] = 0.0f;
+        out_V_D_a[50] = 0.0f;
+        out_V_D_a[51] = 0.0f;
+        out_V_D_a[52] = 0.0f;
+        out_V_D_a[53] = 0.0f;
+        out_V_D_a[54] = 0.0f;
+        out_V_D_a[55] = 0.0f;
+        out_V_D_a[56] = 0.0f;
+        out_V_D_a[57] = 0.0f;
+        out_V_D_a[58] = 0.0f;
+        out_V_D_a[59] = 0.0f;
+        out_V_D_a[60] = 0.0f;
+        out_V_D_a[61] = 0.0f;
+        out_V_D_a[62] = 0.0f;
+        out_V_D_a[63] = 0.0f;
+        out_V_D_a[64] = 0.0f;
+        out_V_D_a[65] = 0.0f;
+        out_V_D_a[66] = 0.0f;
+        out_V_D_a[67] = 0.0f;
+        out_V_D_a[68] = 0.0f;
+        out_V_D_a[69] = 0.0f;
+        out_V_D_a[70] = 0.0f;
+        out_V_D_a[71] = 0.0f;
+        out_V_D_a[72] = 0.0f;
+        out_V_D_a[73] = 0.0f;
+        out_V_D_a[74] = 0.0f;
+        out_V_D_a[75] = 0.0f;
+        out_V_D_a[76] = 0.0f;
+        out_V_D_a[77] = 0.0f;
+        out_V_D_a[78] = 0.0f;
+        out_V_D_a[79] = 0.0f;
+        out_V_D_a[80] = 0.0f;
+        out_V_D_a[81] = 0.0f;
+        out_V_D_a[82] = 0.0f;
+        out_V_D_a[83] = 0.0f;
+        out_V_D_a[84] = 0.0f;
+        out_V_D_a[85] = 0.0f;
+        out_V_D_a[86] = 0.0f;
+        out_V_D_a[87] = 0.0f;
+        out_V_D_a[88] = 0.0f;
+        out_V_D_a[89] = 0.0f;
+        out_V_D_a[90] = 0.0f;
+        out_V_D_a[91] = 0.0f;
+        out_V_D_a[92] = 0.0f;
+        out_V_D_a[93] = 0.0f;
+        out_V_D_a[94] = 0.0f;
+        out_V_D_a[95] = 0.0f;
+        out_V_D_a[96] = 0.0f;
+        out_V_D_a[97] = 0.0f;
+        out_V_D_a[98] = 0.0f;
+        out_V_D_a[99] = 0.0f;
+        out_V_D_a[100] = 0.0f;
+        out_V_D_a[101] = 0.0f;
+        out_V_D_a[102] = 0.0f;
+        out_V_D_a[103] = 0.0f;
+        out_V_D_a[104] = 0.0f;
+        out_V_D_a[105] = 0.0f;
+        out_V_D_a[106] = 0.0f;
+        out_V_D_a[107] = 0.0f;
+        out_V_D_p[0] = 0.0f;
+        out_V_D_p[1] = 0.0f;
+        out_V_D_p[2] = 0.0f;
+        out_V_D_p[3] = 0.0f;
+        out_V_D_p[4] = 0.0f;
+        out_V_D_p[5] = 0.0f;
+        out_V_D_p[6] = 0.0f;
+        out_V_D_p[7] = 0.0f;
+        out_V_D_p[8] = 0.0f;
+        out_V_D_p[9] = 0.0f;
+        out_V_D_p[10] = 0.0f;
+        out_V_D_p[11] = 0.0f;
+        out_V_D_p[12] = 0.0f;
+        out_V_D_p[13] = 0.0f;
+        out_V_D_p[14] = 1.0f;
+        out_V_D_p[15] = 0.0f;
+        out_V_D_p[16] = -1.0f;
+        out_V_D_p[17] = 0.0f;
+        out_V_D_p[18] = 0.0f;
+        out_V_D_p[19] = 0.0f;
+        out_V_D_p[20] = 0.0f;
+        out_V_D_p[21] = 0.0f;
+        out_V_D_p[22] = 0.0f;
+        out_V_D_p[23] = 0.0f;
+        out_V_D_p[24] = 0.0f;
+        out_V_D_p[25] = 0.0f;
+        out_V_D_p[26] = 0.0f;
+        out_V_D_p[27] = 0.0f;
+        out_V_D_p[28] = 0.0f;
+        out_V_D_p[29] = -1.0f;
+        out_V_D_p[30] = 0.0f;
+        out_V_D_p[31] = 0.0f;
+        out_V_D_p[32] = 0.0f;
+        out_V_D_p[33] = 1.0f;
+        out_V_D_p[34] = 0.0f;
+        out_V_D_p[35] = 0.0f;
+        out_V_D_p[36] = 0.0f;
+        out_V_D_p[37] = 0.0f;
+        out_V_D_p[38] = 0.0f;
+        out_V_D_p[39] = 0.0f;
+        out_V_D_p[40] = 0.0f;
+        out_V_D_p[41] = 0.0f;
+        out_V_D_p[42] = 0.0f;
+        out_V_D_p[43] = 0.0f;
+        out_V_D_p[44] = 0.0f;
+        out_V_D_p[45] = 0.0f;
+        out_V_D_p[46] = 1.0f;
+        out_V_D_p[47] = 0.0f;
+        out_V_D_p[48] = -1.0f;
+        out_V_D_p[49] = 0.0f;
+        out_V_D_p[50] = 0.0f;
+        out_V_D_p[51] = 0.0f;
+        out_V_D_p[52] = 0.0f;
+        out_V_D_p[53] = 0.0f;
+        out_V_D_p[54] = 0.0f;
+        out_V_D_p[55] = 0.0f;
+        out_V_D_p[56] = 0.0f;
+        out_V_D_p[57] = 0.0f;
+        out_V_D_p[58] = 0.0f;
+        out_V_D_p[59] = 0.0f;
+        out_V_D_p[60] = 0.0f;
+        out_V_D_p[61] = 0.0f;
+        out_V_D_p[62] = 0.0f;
+        out_V_D_p[63] = 0.0f;
+        out_V_D_p[64] = 0.0f;
+        out_V_D_p[65] = 0.0f;
+        out_V_D_p[66] = 0.0f;
+        out_V_D_p[67] = 0.0f;
+        out_V_D_p[68] = 0.0f;
+        out_V_D_p[69] = 0.0f;
+        out_V_D_p[70] = 0.0f;
+        out_V_D_p[71] = 0.0f;
+        out_V_D_p[72] = 0.0f;
+        out_V_D_p[73] = 0.0f;
+        out_V_D_p[74] = 0.0f;
+        out_V_D_p[75] = 0.0f;
+        out_V_D_p[76] = 0.0f;
+        out_V_D_p[77] = 0.0f;
+        out_V_D_p[78] = 0.0f;
+        out_V_D_p[79] = 0.0f;
+        out_V_D_p[80] = 0.0f;
+        out_V_D_p[81] = 0.0f;
+        out_V_D_p[82] = 0.0f;
+        out_V_D_p[83] = 0.0f;
+        out_V_D_p[84] = 0.0f;
+        out_V_D_p[85] = 0.0f;
+        out_V_D_p[86] = 0.0f;
+        out_V_D_p[87] = 0.0f;
+        out_V_D_p[88] = 0.0f;
+        out_V_D_p[89] = 0.0f;
+        out_V_D_p[90] = 0.0f;
+        out_V_D_p[91] = 0.0f;
+        out_V_D_p[92] = 0.0f;
+        out_V_D_p[93] = 0.0f;
+        out_V_D_p[94] = 0.0f;
+        out_V_D_p[95] = 0.0f;
+        out_V_D_p[96] = 0.0f;
+        out_V_D_p[97] = 0.0f;
+        out_V_D_p[98] = 0.0f;
+        out_V_D_p[99] = 0.0f;
+        out_V_D_p[100] = 0.0f;
+        out_V_D_p[101] = 0.0f;
+        out_V_D_p[102] = 0.0f;
+        out_V_D_p[103] = 0.0f;
+        out_V_D_p[104] = 0.0f;
+        out_V_D_p[105] = 0.0f;
+        out_V_D_p[106] = 0.0f;
+        out_V_D_p[107] = 0.0f;
+    }
+    return singular;
+}
+
+
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
  * are written as NaN; returns their number. One thread. */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_wrench_transfer_matrix_with_jacobians)(
@@ -314,8 +596,8 @@ int64_t RIGIDSYM_ISA_NAME(rigidsym_wrench_transfer_matrix_with_jacobians_threads
     double *RIGIDSYM_RESTRICT out_V_D_p);
 
 
-/* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
- * is flagged too). */
+/* The same on float32 arrays (the float32 sample function: float arithmetic of the
+ * precision plan; a row whose output overflows float32 is flagged too). */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_wrench_transfer_matrix_with_jacobians_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_a,

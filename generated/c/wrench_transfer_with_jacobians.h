@@ -10,11 +10,17 @@
  *
  * Wrench at P from the wrench at A, with the Jacobians of its outputs.
  * w_P = V(a, p) w_A; and d(output)/d(input) by sympy on the declared formula
+ *
+ * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
+ * measured at generation, rigidsym.codegen.float32; error within 0.833 ulp of float32,
+ * normwise, at its points). In double:
+ *   x0, x1, x3
  */
 #ifndef RIGIDSYM_WRENCH_TRANSFER_WITH_JACOBIANS_H
 #define RIGIDSYM_WRENCH_TRANSFER_WITH_JACOBIANS_H
 
 #include "rigidsym_common.h"
+
 
 /* One sample: returns nonzero when the sample is singular (division by an exact zero or a
  * non-finite result). Inputs and outputs are row-major per sample. */
@@ -133,6 +139,122 @@ static inline int rigidsym_wrench_transfer_with_jacobians_sample(
 }
 
 
+/* One float32 sample: float inputs and outputs, arithmetic of the precision plan above. */
+static inline int rigidsym_wrench_transfer_with_jacobians_sample_f32(
+    const float *RIGIDSYM_RESTRICT in_w_A,
+    const float *RIGIDSYM_RESTRICT in_a,
+    const float *RIGIDSYM_RESTRICT in_p,
+    float *RIGIDSYM_RESTRICT out_w_P,
+    float *RIGIDSYM_RESTRICT out_w_P_D_w_A,
+    float *RIGIDSYM_RESTRICT out_w_P_D_a,
+    float *RIGIDSYM_RESTRICT out_w_P_D_p)
+{
+    const float w_A_0 = in_w_A[0];
+    const float w_A_1 = in_w_A[1];
+    const float w_A_2 = in_w_A[2];
+    const float w_A_3 = in_w_A[3];
+    const float w_A_4 = in_w_A[4];
+    const float w_A_5 = in_w_A[5];
+    const float a_0 = in_a[0];
+    const float a_1 = in_a[1];
+    const float a_2 = in_a[2];
+    const float p_0 = in_p[0];
+    const float p_1 = in_p[1];
+    const float p_2 = in_p[2];
+    int singular = 0;
+    {
+        const double x0 = ((double)a_2) - ((double)p_2);
+        const double x1 = -x0;
+        const float x2 = a_1 - p_1;
+        const double x3 = ((double)a_0) - ((double)p_0);
+        const float x4 = -x3;
+        const float x5 = -x2;
+        const float x6 = -w_A_4;
+        const float x7 = -w_A_5;
+        const float x8 = -w_A_3;
+        out_w_P[0] = w_A_0 + w_A_4*x1 + w_A_5*x2;
+        out_w_P[1] = w_A_1 + w_A_3*x0 + w_A_5*x4;
+        out_w_P[2] = w_A_2 + w_A_3*x5 + w_A_4*x3;
+        out_w_P[3] = w_A_3;
+        out_w_P[4] = w_A_4;
+        out_w_P[5] = w_A_5;
+        out_w_P_D_w_A[0] = 1.0f;
+        out_w_P_D_w_A[1] = 0.0f;
+        out_w_P_D_w_A[2] = 0.0f;
+        out_w_P_D_w_A[3] = 0.0f;
+        out_w_P_D_w_A[4] = x1;
+        out_w_P_D_w_A[5] = x2;
+        out_w_P_D_w_A[6] = 0.0f;
+        out_w_P_D_w_A[7] = 1.0f;
+        out_w_P_D_w_A[8] = 0.0f;
+        out_w_P_D_w_A[9] = x0;
+        out_w_P_D_w_A[10] = 0.0f;
+        out_w_P_D_w_A[11] = x4;
+        out_w_P_D_w_A[12] = 0.0f;
+        out_w_P_D_w_A[13] = 0.0f;
+        out_w_P_D_w_A[14] = 1.0f;
+        out_w_P_D_w_A[15] = x5;
+        out_w_P_D_w_A[16] = x3;
+        out_w_P_D_w_A[17] = 0.0f;
+        out_w_P_D_w_A[18] = 0.0f;
+        out_w_P_D_w_A[19] = 0.0f;
+        out_w_P_D_w_A[20] = 0.0f;
+        out_w_P_D_w_A[21] = 1.0f;
+        out_w_P_D_w_A[22] = 0.0f;
+        out_w_P_D_w_A[23] = 0.0f;
+        out_w_P_D_w_A[24] = 0.0f;
+        out_w_P_D_w_A[25] = 0.0f;
+        out_w_P_D_w_A[26] = 0.0f;
+        out_w_P_D_w_A[27] = 0.0f;
+        out_w_P_D_w_A[28] = 1.0f;
+        out_w_P_D_w_A[29] = 0.0f;
+        out_w_P_D_w_A[30] = 0.0f;
+        out_w_P_D_w_A[31] = 0.0f;
+        out_w_P_D_w_A[32] = 0.0f;
+        out_w_P_D_w_A[33] = 0.0f;
+        out_w_P_D_w_A[34] = 0.0f;
+        out_w_P_D_w_A[35] = 1.0f;
+        out_w_P_D_a[0] = 0.0f;
+        out_w_P_D_a[1] = w_A_5;
+        out_w_P_D_a[2] = x6;
+        out_w_P_D_a[3] = x7;
+        out_w_P_D_a[4] = 0.0f;
+        out_w_P_D_a[5] = w_A_3;
+        out_w_P_D_a[6] = w_A_4;
+        out_w_P_D_a[7] = x8;
+        out_w_P_D_a[8] = 0.0f;
+        out_w_P_D_a[9] = 0.0f;
+        out_w_P_D_a[10] = 0.0f;
+        out_w_P_D_a[11] = 0.0f;
+        out_w_P_D_a[12] = 0.0f;
+        out_w_P_D_a[13] = 0.0f;
+        out_w_P_D_a[14] = 0.0f;
+        out_w_P_D_a[15] = 0.0f;
+        out_w_P_D_a[16] = 0.0f;
+        out_w_P_D_a[17] = 0.0f;
+        out_w_P_D_p[0] = 0.0f;
+        out_w_P_D_p[1] = x7;
+        out_w_P_D_p[2] = w_A_4;
+        out_w_P_D_p[3] = w_A_5;
+        out_w_P_D_p[4] = 0.0f;
+        out_w_P_D_p[5] = x8;
+        out_w_P_D_p[6] = x6;
+        out_w_P_D_p[7] = w_A_3;
+        out_w_P_D_p[8] = 0.0f;
+        out_w_P_D_p[9] = 0.0f;
+        out_w_P_D_p[10] = 0.0f;
+        out_w_P_D_p[11] = 0.0f;
+        out_w_P_D_p[12] = 0.0f;
+        out_w_P_D_p[13] = 0.0f;
+        out_w_P_D_p[14] = 0.0f;
+        out_w_P_D_p[15] = 0.0f;
+        out_w_P_D_p[16] = 0.0f;
+        out_w_P_D_p[17] = 0.0f;
+    }
+    return singular;
+}
+
+
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
  * are written as NaN; returns their number. One thread. */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_wrench_transfer_with_jacobians)(
@@ -158,8 +280,8 @@ int64_t RIGIDSYM_ISA_NAME(rigidsym_wrench_transfer_with_jacobians_threads)(
     double *RIGIDSYM_RESTRICT out_w_P_D_p);
 
 
-/* The same on float32 arrays (float64 arithmetic inside; a row whose output overflows float32
- * is flagged too). */
+/* The same on float32 arrays (the float32 sample function: float arithmetic of the
+ * precision plan; a row whose output overflows float32 is flagged too). */
 int64_t RIGIDSYM_ISA_NAME(rigidsym_wrench_transfer_with_jacobians_f32_threads)(
     int64_t n, int threads,
     const float *RIGIDSYM_RESTRICT in_w_A,

@@ -9,7 +9,8 @@ A kind (unit 3-vector, unit 4-vector, rotation, angle) is one :class:`Kind` entr
   tangent of a fraction of it, :attr:`Kind.half_angle`);
 - its words for reports (:attr:`Kind.words`, :attr:`Kind.arg_words`);
 - its run-time validation (:attr:`Kind.check`) and tolerance per dtype
-  (:meth:`Kind.tolerance`, and :func:`c_defines` for the C side);
+  (:meth:`Kind.tolerance`; the compiled kernels' C validation is bound to the same numbers,
+  :mod:`rigidsym.kernels._entries`);
 - its tangent space for Jacobians and their checks (:attr:`Kind.project`,
   :attr:`Kind.curve`, :attr:`Kind.tangent`);
 - its spec name (:attr:`Kind.spec`), the ``kind`` of a kernel argument
@@ -31,11 +32,7 @@ from typing import Any
 
 import numpy as np
 
-__all__ = ["Kind", "KINDS", "register", "unregister", "get", "for_spec", "spec_names",
-           "c_defines", "TOLERANCE_DTYPES"]
-
-#: the dtypes the kernels validate in, and for which :func:`c_defines` writes tolerances
-TOLERANCE_DTYPES = ("float64", "float32")
+__all__ = ["Kind", "KINDS", "register", "unregister", "get", "for_spec", "spec_names"]
 
 
 @dataclass(frozen=True)
@@ -64,6 +61,9 @@ class Kind:
             or ``None`` when every sample satisfies the constraint within ``tol``.
         tol: the validation tolerance in float64.
         tol_eps: for narrower dtypes the tolerance is ``max(tol, tol_eps * eps)``.
+        c_check: the validation routine of the compiled entry points (``c_fast.h.j2``):
+            0 none (finiteness only), 1 unit norm (``RIGIDSYM_UNIT``), 2 proper orthogonal
+            (``RIGIDSYM_ROTATION``); a kind with a new check adds its C routine there.
         project: ``project(x, d)``: the admissible (tangent) direction nearest to an
             ambient direction ``d`` at a point ``x`` of the constraint set; flat sequences
             in row-major order, plain arithmetic (floats or mpmath numbers).
@@ -85,6 +85,7 @@ class Kind:
     check: Callable[[np.ndarray, str, float], str | None] | None = None
     tol: float = 0.0
     tol_eps: float = 100.0
+    c_check: int = 0
     project: Callable[[Sequence, Sequence], list] | None = None
     curve: Callable[[Sequence, Sequence], Callable[[Any], list]] | None = None
     tangent: str = ""
@@ -293,30 +294,17 @@ def spec_names() -> tuple[str, ...]:
     return ("any", *dict.fromkeys(k.spec for k in KINDS.values()))
 
 
-def c_defines() -> str:
-    """The validation tolerances as C macros, one per checked kind and dtype
-    (``#define RIGIDSYM_TOL_UNIT_F64 1e-08``), for the generated ``rigidsym_common.h``."""
-    lines = []
-    for k in KINDS.values():
-        if k.check is None:
-            continue
-        for dt in TOLERANCE_DTYPES:
-            macro = f"RIGIDSYM_TOL_{k.name.upper()}_F{np.dtype(dt).itemsize * 8}"
-            lines.append(f"#define {macro} {k.tolerance(dt)!r}")
-    return "\n".join(lines)
-
-
 register(Kind(
     "unit", (3,), "unit", "unit vector, stereographic", ", unit", ("u", "v"),
-    _stereographic, check=_check_unit, tol=1e-8, project=_project_sphere,
+    _stereographic, check=_check_unit, tol=1e-8, c_check=1, project=_project_sphere,
     curve=_curve_sphere, tangent=_UNIT_TANGENT))
 register(Kind(
     "unit4", (4,), "unit", "unit 4-vector, stereographic", ", unit", ("u", "v", "w"),
-    _stereographic, check=_check_unit, tol=1e-8, project=_project_sphere,
+    _stereographic, check=_check_unit, tol=1e-8, c_check=1, project=_project_sphere,
     curve=_curve_sphere, tangent=_UNIT_TANGENT))
 register(Kind(
     "rotation", (3, 3), "rotation", "rotation, rational quaternion", ", proper orthogonal",
-    ("q1", "q2", "q3", "q0"), _quaternion_rotation, check=_check_rotation, tol=1e-8,
+    ("q1", "q2", "q3", "q0"), _quaternion_rotation, check=_check_rotation, tol=1e-8, c_check=2,
     project=_project_rotation, curve=_curve_rotation,
     tangent="{a} is a rotation: d/d{a} is the ambient derivative over its 9 entries; "
             "admissible directions are d{a} = CPM(theta) {a} (tangent space of SO(3)); their "

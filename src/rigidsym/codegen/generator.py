@@ -25,7 +25,17 @@ from rigidsym import _kinds
 from rigidsym._config import KERNEL_SPEC as BOOK_ORIGIN
 from rigidsym._config import generated_dir
 from rigidsym.codegen.api_spec import render_api
+from rigidsym.codegen.cprogram import TRIG_BLOCK as TRIG_BLOCK
+from rigidsym.codegen.cprogram import (
+    _f32_code,
+    _finite_check,
+    _program_lines,
+    _risky_names,
+    _trig_plan,
+    _trig_split,
+)
 from rigidsym.codegen.files import check, write
+from rigidsym.codegen.float32 import plan_kernel
 from rigidsym.codegen.optimise import Program, compile_program, math_hash
 from rigidsym.codegen.printers import KernelCPrinter, KernelNumPyPrinter
 from rigidsym.codegen.spec import Kernel, flat_symbols, input_symbols
@@ -56,6 +66,7 @@ class KernelCode:
     hash: str
     ops: int
     inputs: list = field(default_factory=list)   # [(arg, [symbols])]
+    plan32: dict = field(default_factory=dict)   # float32 precision plans (codegen.float32)
 
 
 @dataclass
@@ -102,7 +113,9 @@ def compile_kernel(kernel: Kernel) -> KernelCode:
     parts += flat
     variants.append(Variant("main", compile_program(flat, angles), None))
     ops = sum(v.program.ops for v in variants)
-    return KernelCode(kernel, variants, math_hash(parts), ops, flat_symbols(kernel))
+    kc = KernelCode(kernel, variants, math_hash(parts), ops, flat_symbols(kernel))
+    kc.plan32 = plan_kernel(kernel, variants, _trig_split(kc))
+    return kc
 
 
 _TODO: list = []
@@ -110,7 +123,7 @@ _TODO: list = []
 
 def _compile_index(i: int):
     kc = compile_kernel(_TODO[i])
-    return kc.variants, kc.hash, kc.ops, kc.inputs
+    return kc.variants, kc.hash, kc.ops, kc.inputs, kc.plan32
 
 
 def _compile_all(todo: list) -> list[KernelCode]:
@@ -156,14 +169,6 @@ def _header(kc: KernelCode, template: str, origin: str = BOOK_ORIGIN) -> list[st
     return lines
 
 
-def _program_lines(p: Program, printer) -> dict:
-    return {
-        "temps": [(str(s), printer.doprint(v)) for s, v in p.temps],
-        "outputs": [printer.doprint(v) for v in p.outputs],
-        "dens": [printer.doprint(v) for v in p.dens],
-    }
-
-
 def _meta(kc: KernelCode) -> dict:
     k = kc.kernel
     return {
@@ -177,123 +182,10 @@ def _meta(kc: KernelCode) -> dict:
     }
 
 
-def _risky(e) -> bool:
-    """Whether ``e`` itself divides or takes a root (may be non-finite for finite inputs)."""
-    return any(isinstance(p, sp.Pow) and not (p.exp.is_Integer and p.exp > 0)
-               for p in sp.preorder_traversal(e))
-
-
-def _risky_bases(p: Program, printer) -> list[str]:
-    """The divisors and radicands of ``p``, printed: a finite quotient of an overflowed
-    divisor (``x / inf == 0``: the unit vector of ``1/sqrt(|p|^2)`` with ``|p|^2 = inf``) is
-    finite but wrong, so they are checked for finiteness too (issue 19, item 6)."""
-    out: list[str] = []
-    for e in [v for _, v in p.temps] + list(p.outputs):
-        for node in sp.preorder_traversal(sp.sympify(e)):
-            if isinstance(node, sp.Pow) and not (node.exp.is_Integer and node.exp > 0) \
-                    and not node.base.is_number:
-                s = printer.doprint(node.base)
-                s = s if s.isidentifier() else f"({s})"
-                if s not in out:
-                    out.append(s)
-    return out
-
-
-def _risky_names(p: Program, printer) -> list[str]:
-    """Temporaries / outputs that divide or take a root, and their divisors and radicands,
-    printed (NumPy finiteness check)."""
-    names = [str(s) for s, v in p.temps if _risky(v)]
-    names += [printer.doprint(v) for v in p.outputs if _risky(v)]
-    return names + [b for b in _risky_bases(p, printer) if b not in names]
-
-
-def _finite_check(p: Program, k: Kernel) -> str:
-    """C expression that is NaN iff a division/root temporary or output, or a divisor or
-    radicand, is non-finite."""
-    names = [str(s) for s, v in p.temps if _risky(v)]
-    slots = [f"out_{o.name}[{j}]" for o in k.outputs for j in range(o.size)]
-    names += [slot for slot, v in zip(slots, p.outputs, strict=True) if _risky(v)]
-    names += [b for b in _risky_bases(p, KernelCPrinter()) if b not in names]
-    return _balanced([f"({n} - {n})" for n in names]) if names else ""
-
-
-def _balanced(terms: list[str]) -> str:
-    """``a + b + ...`` as a balanced tree of additions (C does not reassociate doubles)."""
-    if len(terms) == 1:
-        return terms[0]
-    h = len(terms) // 2
-    return f"({_balanced(terms[:h])} + {_balanced(terms[h:])})"
-
-
-#: samples per block of the blocked batch loop (trig values precomputed on the stack)
-TRIG_BLOCK = 64
 #: samples per block of the generated NumPy kernels: the temporaries of one block (tens of
 #: arrays of 8 bytes a sample) stay in L2, so large batches are not memory-bound; measured in
 #: benchmarks/RESULTS.md
 NUMPY_CHUNK = 16384
-_TRIG = (sp.sin, sp.cos)
-
-
-def _trig_plan(kc: KernelCode, printer) -> dict | None:
-    """Split a trig-calling kernel into a SIMD trig loop and a per-sample loop.
-
-    For a kernel without branches whose ``sin``/``cos`` arguments do not themselves depend
-    on a trig call, returns the prelude (the temporaries the arguments need, in order, and
-    one printed ``sin``/``cos`` per distinct call) and the per-sample program with each call
-    replaced by a parameter ``trig_<k>``; ``None`` when the kernel is not blocked.
-    """
-    if len(kc.variants) != 1:
-        return None
-    p = kc.variants[0].program
-    exprs = [v for _, v in p.temps] + list(p.outputs) + list(p.dens)
-    calls: list = []
-    for e in exprs:
-        for node in sp.preorder_traversal(sp.sympify(e)):
-            if isinstance(node, _TRIG) and node not in calls:
-                calls.append(node)
-    if not calls:
-        return None
-    defs = dict(p.temps)
-    need: set = set()
-    todo = [s for c in calls for s in c.args[0].free_symbols]
-    while todo:
-        s = todo.pop()
-        if s in defs and s not in need:
-            need.add(s)
-            todo.extend(defs[s].free_symbols)
-    pre = [(s, v) for s, v in p.temps if s in need]
-    if any(v.has(*_TRIG) for _, v in pre):
-        return None
-    names = {c: sp.Symbol(f"trig_{k}") for k, c in enumerate(calls)}
-    temps = [(s, v.xreplace(names)) for s, v in p.temps]
-    outputs = [sp.sympify(v).xreplace(names) for v in p.outputs]
-    dens = [sp.sympify(v).xreplace(names) for v in p.dens]
-    # drop the temporaries that only fed the trig arguments (keep divisions and roots: the
-    # finiteness check stays the same)
-    live = set().union(*(sp.sympify(v).free_symbols for v in outputs + dens))
-    kept = []
-    for s, v in reversed(temps):
-        if s in live or _risky(v):
-            kept.append((s, v))
-            live |= v.free_symbols
-    kept.reverse()
-    prog = Program(kept, outputs, dens, p.ops)
-    used_pre = set().union(*(v.free_symbols for _, v in pre),
-                           *(c.args[0].free_symbols for c in calls))
-    used = set().union(*(v.free_symbols for _, v in kept),
-                       *(sp.sympify(v).free_symbols for v in outputs + dens))
-    return {
-        "block": TRIG_BLOCK,
-        "names": [str(names[c]) for c in calls],
-        "pre_temps": [(str(s), printer.doprint(v)) for s, v in pre],
-        "pre_calls": [(str(names[c]), printer.doprint(c)) for c in calls],
-        "pre_used": {str(s) for s in used_pre},
-        "used": {str(s) for s in used},
-        "variant": {"name": "main", "cond": None, "finite": _finite_check(prog, kc.kernel),
-                    **_program_lines(prog, printer)},
-    }
-
-
 def _render_kernel(env, kc: KernelCode, origin: str = BOOK_ORIGIN) -> dict[str, str]:
     k = kc.kernel
     npp, cp = KernelNumPyPrinter(), KernelCPrinter()
@@ -322,7 +214,8 @@ def _render_kernel(env, kc: KernelCode, origin: str = BOOK_ORIGIN) -> dict[str, 
     for t, path in (("c_kernel.h.j2", f"c/{k.name}.h"), ("c_kernel.c.j2", f"c/{k.name}.c")):
         files[path] = env.get_template(t).render(header=_header(kc, t, origin), variants=cvars,
                                                  used=used, trig=_trig_plan(kc, cp),
-                                                 never_singular=never_singular, **common)
+                                                 never_singular=never_singular,
+                                                 f32=_f32_code(kc), **common)
     return files
 
 
@@ -361,23 +254,34 @@ def generate(kernels=None, origin: str = BOOK_ORIGIN) -> GenerationResult:
                     ("numpy_index.py.j2", "numpy/__init__.py"),
                     ("c_common.h.j2", "c/rigidsym_common.h"),
                     ("c_kernels_index.h.j2", "c/rigidsym_kernels.h")):
-        files[path] = env.get_template(t).render(kernels=metas, template=t,
-                                                 tolerances=_kinds.c_defines(), **ver)
+        files[path] = env.get_template(t).render(kernels=metas, template=t, **ver)
     files.update(_render_extension(env, metas, ver))
     return GenerationResult(dict(sorted(files.items())), done)
 
 
 def _render_extension(env, metas: list[dict], ver: dict) -> dict[str, str]:
     """The extension module's own C: the module (``c_module.c.j2``), the per-path table of
-    batch functions (``c_table.c.j2``) and the CPU dispatcher (``c_dispatch.h.j2``)."""
+    batch functions (``c_table.c.j2``), the CPU dispatcher (``c_dispatch.h.j2``) and the
+    per-call entry points (``c_fast.h.j2``)."""
     def size(shape) -> int:
         return int(math.prod(shape))
+    def c_check(a: dict) -> int:  # the kind table's C validation routine (0 for outputs)
+        k = _kinds.for_spec(a["kind"], a["shape"]) if "kind" in a else None
+        return k.c_check if k is not None else 0
+
+    def slot(a: dict) -> dict:
+        return {"nd": len(a["shape"]), "dims": list(a["shape"]), "size": size(a["shape"]),
+                "kind": c_check(a)}
     ck = [{"name": m["name"], "ins": [size(a["shape"]) for a in m["args"]],
            "outs": [size(o["shape"]) for o in m["outputs"]],
-           "narrays": len(m["args"]) + len(m["outputs"])} for m in metas]
+           "narrays": len(m["args"]) + len(m["outputs"]),
+           "nin": len(m["args"]), "nout": len(m["outputs"]),
+           "args": [slot(a) for a in m["args"]],
+           "outs_meta": [slot(o) for o in m["outputs"]]} for m in metas]
     files = {}
     for t, path in (("c_module.c.j2", "c/rigidsym_module.c"),
                     ("c_table.c.j2", "c/rigidsym_table.c"),
-                    ("c_dispatch.h.j2", "c/rigidsym_dispatch.h")):
+                    ("c_dispatch.h.j2", "c/rigidsym_dispatch.h"),
+                    ("c_fast.h.j2", "c/rigidsym_fast.h")):
         files[path] = env.get_template(t).render(kernels=ck, template=t, **ver)
     return files

@@ -10,8 +10,9 @@ CPU dispatch as in NumPy: every kernel source (and the table ``rigidsym_table.c`
 compiled once per build path, with that path's ``-march`` and ``-DRIGIDSYM_ISA_SUFFIX``;
 ``rigidsym_module.c`` once, with the baseline path's flags; all objects link into one module
 whose dispatcher (``rigidsym_dispatch.h``) picks a path at import. Paths: ``x86-64-v2``
-(baseline) and ``x86-64-v3`` (AVX2 + FMA) on x86-64, no ``-march`` elsewhere, ``native``
-(``-march=native``, one path) on request. Nothing built by default uses ``-march=native``.
+(baseline), ``x86-64-v3`` (AVX2 + FMA) and ``x86-64-v4`` (AVX-512) on x86-64, no ``-march``
+elsewhere, ``native`` (``-march=native``, one path) on request. Nothing built by default
+uses ``-march=native``.
 
 Flags of the kernels: ``-O3 -std=c99 -ffp-contract=fast`` (FMA contraction, never
 ``-ffast-math``; ``RIGIDSYM_CFLAGS`` replaces them). OpenMP (threads of the batch loops) and
@@ -68,11 +69,12 @@ class IsaPath:
     flags: tuple[str, ...]
 
 
-X86_PATHS = (IsaPath("v3", "x86-64-v3", ("-march=x86-64-v3",)),
-             IsaPath("v2", "x86-64-v2", ("-march=x86-64-v2",)))
-#: optional AVX-512 path (``RIGIDSYM_PATHS=v4,v3,v2``); not built by default: measured no
-#: faster than x86-64-v3 (benchmarks/RESULTS.md)
+#: the AVX-512 path: measured 0.83-0.92x the x86-64-v3 time on the trigonometric K2, K3,
+#: K5 (libmvec's 8-wide _ZGVeN8v_sin/cos), level on K1, K4, K6 (benchmarks/RESULTS.md), and
+#: what keeps the default build within 1.10x of -march=native on K3 on an AVX-512 CPU
 X86_V4 = IsaPath("v4", "x86-64-v4", ("-march=x86-64-v4",))
+X86_PATHS = (X86_V4, IsaPath("v3", "x86-64-v3", ("-march=x86-64-v3",)),
+             IsaPath("v2", "x86-64-v2", ("-march=x86-64-v2",)))
 NATIVE = IsaPath("native", "native", ("-march=native",))
 BASELINE = IsaPath("base", "baseline", ())
 
@@ -92,8 +94,9 @@ def _x86() -> bool:
 def default_paths(native: bool = False) -> tuple[IsaPath, ...]:
     """The build paths, best first (the last is the baseline).
 
-    ``native``: ``-march=native`` only. Else ``RIGIDSYM_PATHS`` (suffixes, e.g. ``v4,v3,v2``)
-    if set, else x86-64-v3 and x86-64-v2 on x86-64 and one path without ``-march`` elsewhere.
+    ``native``: ``-march=native`` only. Else ``RIGIDSYM_PATHS`` (suffixes, e.g. ``v3,v2`` for
+    a quicker build) if set, else x86-64-v4, x86-64-v3 and x86-64-v2 on x86-64 and one path
+    without ``-march`` elsewhere.
 
     Raises:
         ValueError: ``RIGIDSYM_PATHS`` names an unknown path.
@@ -105,7 +108,7 @@ def default_paths(native: bool = False) -> tuple[IsaPath, ...]:
     env = os.environ.get("RIGIDSYM_PATHS")
     if not env:
         return X86_PATHS
-    known = {p.suffix: p for p in (X86_V4, *X86_PATHS)}
+    known = {p.suffix: p for p in X86_PATHS}
     wanted = [s.strip() for s in env.split(",") if s.strip()]
     bad = [s for s in wanted if s not in known]
     if bad or not wanted:
@@ -310,11 +313,20 @@ def _tasks(cdir: Path, cfg: Config, tmp: Path) -> list[tuple[list[str], Path]]:
            *(f"-DRIGIDSYM_PATH_{p.suffix}" for p in cfg.paths),
            f"-DRIGIDSYM_SOURCES={json.dumps(sources_hash(cdir))}",
            f"-DRIGIDSYM_BUILD={json.dumps(cfg.describe())}",
-           *inc, "-I", sysconfig.get_paths()["include"], "-c", str(cdir / MODULE_SOURCE),
+           *inc, "-I", sysconfig.get_paths()["include"], "-I", _numpy_include(),
+           "-c", str(cdir / MODULE_SOURCE),
            "-o", str(tmp / "module.o")]
     tasks.append((mod, 1 << 30))      # first: its errors (Python headers) show early
     tasks.sort(key=lambda t: -t[1])
     return [(argv, Path(argv[argv.index("-o") + 1])) for argv, _ in tasks]
+
+
+def _numpy_include() -> str:
+    """NumPy's C headers: the module's entry points (rigidsym_fast.h) allocate and read
+    ndarrays through NumPy's C API (NumPy is a build requirement, pyproject.toml)."""
+    import numpy
+
+    return numpy.get_include()
 
 
 def _run(argv: list[str]) -> None:

@@ -21,7 +21,7 @@ import numpy as np
 
 from rigidsym import _kinds
 from rigidsym._io import load_module
-from rigidsym.kernels import _dask, _state
+from rigidsym.kernels import _dask, _entries, _state
 from rigidsym.kernels._errors import NonFiniteResultError, SingularConfigurationError
 from rigidsym.kernels._scale import (
     MIN_PARALLEL,
@@ -148,6 +148,9 @@ class KernelSpace:
     _clib: Any = None
     _cindex: dict = field(default_factory=dict)
     _c_failed: bool = False
+    _entries: Any = None        # the C entry points by name (rigidsym.kernels._entries)
+    _py_entries: Any = None
+    _apis: list = field(default_factory=list)
 
     @classmethod
     def from_directory(cls, directory: Path, prefix: str | None = None) -> KernelSpace:
@@ -170,6 +173,20 @@ class KernelSpace:
             key = hashlib.sha256(str(directory).encode()).hexdigest()[:12]
             prefix = f"rigidsym._loaded_{key}"
         return cls(directory, prefix, meta)
+
+    def bind_api(self, mod) -> None:
+        """Bind a generated ``api`` module to this space (its ``_SPACE`` and ``_F``)."""
+        _entries.bind_api(self, mod)
+        self._apis.append(mod)
+
+    def entries(self):
+        """The per-call entry points by kernel name (:mod:`rigidsym.kernels._entries`)."""
+        return _entries.entries(self)
+
+    def entry(self, name: str) -> Callable:
+        """The entry point of kernel ``name``: ``f(*inputs, out, check, on_singular,
+        threads)``."""
+        return getattr(self.entries(), name)
 
     def numpy_kernel(self, name: str) -> Callable:
         f = self._numpy.get(name)
@@ -208,7 +225,9 @@ class KernelSpace:
 
     def batch_function(self, name: str, backend_name: str | None = None,
                        threads: int | None = None, dtype=np.float64) -> Callable:
-        """``f(*inputs, *outputs)`` on C-contiguous ``(n, ...)`` arrays of ``dtype``.
+        """``f(*inputs, *outputs)`` on C-contiguous ``(n, ...)`` arrays of ``dtype``: every
+        input then every output, preallocated by the caller, in the kernel's order
+        (:func:`rigidsym.kernels.batch_function` has an example).
 
         ``threads`` as for the kernels (None: :func:`rigidsym.kernels._scale.get_num_threads`; one
         thread below ``MIN_PARALLEL`` samples); outputs are the same for every count.

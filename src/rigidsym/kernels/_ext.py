@@ -268,7 +268,7 @@ def _load_default(gdir: Path, package: bool, sources: str, name: str) -> Loaded:
 #: the libmvec variants each x86-64 path calls (nm -u of its objects, gcc 12, glibc 2.36)
 _MVEC_VARIANTS = {"x86-64-v2": "SSE (_ZGVbN2v_sin, _ZGVbN2v_cos)",
                   "x86-64-v3": "AVX2 (_ZGVdN4v_sin, _ZGVdN4v_cos)",
-                  "x86-64-v4": "AVX2 (_ZGVdN4v_sin, _ZGVdN4v_cos)"}
+                  "x86-64-v4": "AVX-512 (_ZGVeN8v_sin, _ZGVeN8v_cos)"}
 
 
 def _mvec_variant(loaded: Loaded) -> str | None:

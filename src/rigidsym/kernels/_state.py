@@ -18,10 +18,14 @@ import types
 import warnings
 from typing import Any
 
-__all__ = ["STATE", "LOCK", "PACKAGE_API", "euler_sequences", "warn_once", "register_builtin",
-           "builtin", "select", "backend", "meta", "call", "euler_name", "bind_module"]
+__all__ = ["STATE", "LISTENERS", "LOCK", "PACKAGE_API", "euler_sequences", "warn_once",
+           "register_builtin", "builtin", "select", "backend", "meta", "call", "euler_name",
+           "bind_module"]
 
 STATE: dict = {"backend": None, "warned": False, "builtin": None}
+#: called with the backend's name after every selection (the C entry points turn off for
+#: "numpy": rigidsym.kernels._entries)
+LISTENERS: list = []
 LOCK = threading.RLock()
 #: the module name of the package's generated API
 PACKAGE_API = "rigidsym.generated.api"
@@ -70,6 +74,8 @@ def select(name: str) -> str:
                 warn_once(exc)
                 name = "numpy"
         STATE["backend"] = name
+        for listener in LISTENERS:
+            listener(name)
         return name
 
 
@@ -83,9 +89,11 @@ def meta() -> dict:
     return builtin().meta
 
 
-def call(name: str, args: tuple, **keywords: Any) -> Any:
-    """The checked call of package kernel ``name`` (see :meth:`KernelSpace.call`)."""
-    return builtin().call(name, args, **keywords)
+def call(name: str, args: tuple, out: Any = None, check: bool = True,
+         on_singular: str | None = None, threads: int | None = None) -> Any:
+    """The checked call of package kernel ``name`` (see :meth:`KernelSpace.call`), through
+    its entry point (the compiled one when the C loads: :mod:`rigidsym.kernels._entries`)."""
+    return builtin().entry(name)(*args, out, check, on_singular, threads)
 
 
 def euler_sequences() -> tuple[str, ...]:
@@ -128,5 +136,5 @@ def bind_module(mod: types.ModuleType | str) -> Any:
         return mod._SPACE
     if mod.__name__ != PACKAGE_API:
         raise RuntimeError(f"{mod.__name__}: load its directory with rigidsym.kernels.load(DIR)")
-    mod._SPACE = builtin()
+    builtin().bind_api(mod)
     return mod._SPACE

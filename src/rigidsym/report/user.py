@@ -5,6 +5,7 @@ from __future__ import annotations
 from pathlib import Path
 
 from rigidsym._io import write_atomic
+from rigidsym._progress import Reporter
 from rigidsym.checking.registry import select
 from rigidsym.checking.runner import run_checks
 from rigidsym.checking.usermodules import load_many
@@ -28,8 +29,9 @@ def write_user_report(modules, out: Path, jobs: int = 1, cache: bool = False) ->
     """
     code = 0
     for um in load_many(modules):
-        results = run_checks(select(None, None, [um.name]), jobs=jobs, progress=True,
-                             cache=cache)
+        with Reporter(f"rigidsym report --module {um.title}") as rep:
+            results = run_checks(select(None, None, [um.name]), jobs=jobs, progress=True,
+                                 cache=cache, reporter=rep)
         title, source = f"{um.title} checked: verdicts", f"the user module {um.title}"
         files = {f"{um.title}.md": to_markdown(results, title=title, source=source),
                  f"{um.title}.json": to_json(results, timings=False),
