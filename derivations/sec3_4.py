@@ -80,6 +80,12 @@ def rigid_motion_model() -> dict:
     return model
 
 
+#: how :func:`instant_motion_model` writes its own variables (shown with a counterexample)
+INSTANT_MOTION_WORDS = ("Q(t) is the rotation of the quaternion q + t u, so that Q(t)ᵀQ(t) = 𝟏 "
+                        "holds exactly for every t; a(t) = a + t ȧ, and a body point is "
+                        "p(t) = a(t) + Q(t) r; q, u, a, ȧ and r are free rationals")
+
+
 @cache
 def _instant_motion_model() -> dict:
     """A generic motion through an instant, as an explicit trajectory (exact derivatives).

@@ -25,7 +25,13 @@ import sympy as sp
 from rigidsym.declare import Rel, Statement, cpm, equation, scalar
 
 from .common import I3, MS, Mt, vec
-from .sec3_4 import cross, instant_motion_model, isa_point_nearest, isa_velocity
+from .sec3_4 import (
+    INSTANT_MOTION_WORDS,
+    cross,
+    instant_motion_model,
+    isa_point_nearest,
+    isa_velocity,
+)
 
 Omega, omega, a, a_dot, p, p_dot = Mt.Omega, Mt.omega, Mt.a, Mt.a_dot, Mt.p, Mt.p_dot
 norm_omega = sp.Symbol("norm_omega", positive=True)  # the book's ||omega||
@@ -301,7 +307,8 @@ def velocity_components() -> Statement:
             Rel(adot_perp, -Omega**2 * a_dot / s, "-Omega^2 adot/||omega||^2")]
     return Statement([Rel(adot_par, (a_dot.T * omega) / s, "adot . omega/||omega||^2")] + rest,
                      m, corrected=[Rel(adot_par, _adot_parallel_corrected(),
-                                       "(adot . omega/||omega||^2) omega")] + rest)
+                                       "(adot . omega/||omega||^2) omega")] + rest,
+                     parametrisation=INSTANT_MOTION_WORDS)
 
 
 @equation("3.58", "Square of the angular-velocity matrix", section="3.4.1",
@@ -342,4 +349,5 @@ def velocity_axial_normal() -> Statement:
     return Statement(
         head + [Rel(pdot_perp, Omega**2 * a_dot / s + Omega * (p - a), "pdot_perp brace")], m,
         corrected=head + [Rel(pdot_perp, -Omega**2 * a_dot / s + Omega * (p - a),
-                              "pdot_perp = -Omega^2 adot/||omega||^2 + Omega (p - a)")])
+                              "pdot_perp = -Omega^2 adot/||omega||^2 + Omega (p - a)")],
+        parametrisation=INSTANT_MOTION_WORDS)

@@ -186,6 +186,14 @@ def _masses():
     return [scalar(f"s38_m{i}") for i in range(1, N_POINTS + 1)]
 
 
+#: how :func:`with_positive_masses` of the point-mass body writes its own variables (shown
+#: with a counterexample)
+POINT_BODY_WORDS = ("The body is four point masses m_i = 1 + μ_i² ≥ 1 at o + ρ_i, with body "
+                    "coordinates ρ_i = m₄ s_i (i < 4) and ρ₄ = -(m₁ s₁ + m₂ s₂ + m₃ s₃), so "
+                    "that its centre of mass is c = o and every value of μ, o, s_i is a "
+                    "physical body")
+
+
 def with_positive_masses(model: dict) -> dict:
     """The same model with every point mass written ``m_i = 1 + mu_i^2`` (free ``mu_i``).
 

@@ -23,6 +23,7 @@ from rigidsym.declare import TIME, Rel, Statement, block, cpm, equation, vector
 
 from .common import I3, MS, O3
 from .sec3_8 import (
+    POINT_BODY_WORDS,
     Dy,
     _sq,
     inertia_dyad_at_point,
@@ -320,4 +321,5 @@ def steiner_theorem_dyad_form() -> Statement:
                     "x = [u; (A - C)^T u]: x^T (M_A - M_C) x = -m ||u x (a - c)||^2")],
         corrected=[Rel(M_A, J + m * P * P.T, "J = diag(I_C, O), P = [C - A; 1]"),
                    Rel(M_A, J + m * R6 * R6.T, "6x6 R = [[O, C - A], [O, 1]]"),
-                   Rel(M_A, U.T * M_C * U, "U = [[1, O], [A - C, 1]]")])
+                   Rel(M_A, U.T * M_C * U, "U = [[1, O], [A - C, 1]]")],
+        parametrisation=POINT_BODY_WORDS)

@@ -101,7 +101,12 @@ def test_a_notebook_declaration_run_twice_replaces_itself():
         declare(x + x)
         assert rigidsym.check("nb:cell").verdict == "verified"
         declare(x * 3)  # the cell edited and run again: replaced, not "declared twice"
-        assert rigidsym.check("nb:cell").verdict == "undecided"  # fails, no corrected form
+        r = rigidsym.check("nb:cell")
+        # an exact counterexample: does-not-hold although no corrected form is declared; with
+        # no model every repair (2x = 2x) is the same expression on both sides, said nothing
+        assert r.verdict == "does-not-hold" and r.counterexample is not None
+        assert r.correction == "none" and r.repairs == []
+        assert "no correction declared or found" in r.detail
     finally:
         REGISTRY.pop("nb:cell", None)
 

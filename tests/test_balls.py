@@ -145,3 +145,11 @@ def test_numeric_sentence_is_one_helper():
 @pytest.mark.parametrize("digits", [10, 50, 400])
 def test_bits_cover_the_digits(digits):
     assert 2 ** balls.bits_of(digits) > 10 ** (digits + 2)
+
+
+def test_integer_powers_of_a_ball_around_zero_stay_finite():
+    # python-flint's arb ** int is nan here; a residual that is 0 squares to a tiny ball
+    x = flint.arb(0, 1e-50)
+    assert balls._ipow(x, 2).is_finite() and balls.upper(balls._ipow(x, 3)) < Fraction(1, 10**149)
+    assert not balls._ipow(x, -2).is_finite()  # 1/0 stays undefined
+    assert balls._ipow(flint.arb(flint.fmpq(-3, 7)), 5).contains(flint.fmpq(-243, 16807))

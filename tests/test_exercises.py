@@ -57,7 +57,8 @@ def test_cli_single_and_bad_input(capsys):
     assert main(["exercise", "3.99"]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and err[0].startswith("rigidsym: error:")
-    assert main(["exercise"]) == 2
+    assert main(["exercise"]) == 0  # no id: the list of the exercises (issue 24)
+    assert capsys.readouterr().out.count("\n  3.") == 21
 
 
 def test_report_hook(tmp_path):
@@ -65,3 +66,36 @@ def test_report_hook(tmp_path):
     write_report(tmp_path)
     text = (tmp_path / "exercises.md").read_text()
     assert "## Exercise 3.10" in text and "| ZXZ |" in text
+
+
+def test_cli_student_data(tmp_path, capsys):
+    assert main(["exercise", "3.4", "--parameters"]) == 0
+    assert "n_1" in capsys.readouterr().out
+    assert main(["exercise", "3.4", "--set", "f_2=1,1,1"]) == 1
+    assert "Ill-posed: The measurements are not compatible" in capsys.readouterr().out
+    data = tmp_path / "readings.json"
+    data.write_text(json.dumps({"n_2": [-1.6667, -3.3333, 3.3333],
+                                "f_2": [-1.3333, 1.3333, 0.6667]}))
+    out = tmp_path / "out.json"
+    assert main(["exercise", "3.4", "--data", str(data), "--json", str(out)]) == 0
+    assert "least squares" in capsys.readouterr().out
+    doc = json.loads(out.read_text())["exercises"][0]
+    assert doc["status"] == "solved" and doc["checked"] and "residual" in doc["answers"]
+    assert main(["exercise", "3.14", "--set", "I_B=[[1,0,0],[0,2,0],[0,0,4]]"]) == 1
+    assert "not acceptable" in capsys.readouterr().out
+    assert main(["exercise", "3.11", "--set", "a=0.05", "--set", "h=1/10"]) == 0
+    assert "a (m) =\n    1/20" in capsys.readouterr().out
+
+
+@pytest.mark.parametrize("argv", [
+    ["exercise", "3.4", "--set", "n_3=1,2,3"],
+    ["exercise", "3.4", "--set", "n_1"],
+    ["exercise", "3.4", "--set", "n_1=1,2"],
+    ["exercise", "3.4", "--data", "/nonexistent/data.json"],
+    ["exercise", "3.1", "--tol", "0.1"],
+    ["exercise", "--all", "--set", "n_1=1,2,3"],
+])
+def test_cli_bad_data_is_one_line_exit_2(argv, capsys):
+    assert main(argv) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and err[0].startswith("rigidsym: error:")

@@ -68,3 +68,20 @@ def test_old_public_import_paths_keep_working():
 
     assert callable(main) and callable(load) and callable(N_matrix)
     assert Kernel.__module__ == Arg.__module__ == "rigidsym.codegen.spec"
+
+
+def test_repair_keywords_and_fields_are_public():
+    """Issue 23: the repair search's keywords and the Result fields it fills."""
+    import dataclasses
+    import inspect
+
+    import rigidsym
+
+    for f in (rigidsym.check, rigidsym.verify):
+        params = inspect.signature(f).parameters
+        assert params["repairs"].default is True, f.__name__
+        assert params["repair_budget"].default is None, f.__name__
+        assert params["repairs"].kind is inspect.Parameter.KEYWORD_ONLY
+    assert inspect.signature(rigidsym.equation).parameters["repair_budget"].default is None
+    fields = {f.name for f in dataclasses.fields(rigidsym.Result)}
+    assert {"repairs", "repair_search", "correction"} <= fields

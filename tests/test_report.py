@@ -39,7 +39,8 @@ def test_default_out_dir(tmp_path):
 def test_report_command_says_where_and_writes_0644(tmp_path, monkeypatch, capsys, few):
     monkeypatch.chdir(tmp_path)  # not a source tree: ./rigidsym-report/
     monkeypatch.setattr(cli_report, "run_checks",
-                        lambda ids, jobs=1, progress=True, cache=False: few)
+                        lambda ids, jobs=1, progress=True, cache=False, reporter=None: few)
+    monkeypatch.setattr(cli_report, "_solve_exercises", lambda rep: None)
     monkeypatch.setattr("rigidsym.cli.exercise.write_report", lambda out: [])
     old = os.umask(0o022)
     try:
@@ -102,8 +103,15 @@ def test_html_independent_of_hash_seed(few, tmp_path):
 def test_committed_reports_are_lean():
     if not (COMMITTED / "chapter3.md").exists():
         pytest.skip("no committed report in this checkout")
-    assert (COMMITTED / "chapter3.md").stat().st_size <= 120_000
-    assert (COMMITTED / "chapter3.json").stat().st_size <= 400_000
+    # Caps with room, measured on the regenerated report of the repairs branch: Markdown
+    # 132 884 B, JSON 363 882 B, of which the repairs (issue 23: an errata table and each
+    # entry's repairs) are about 5.7 kB and 23 kB and the ball enclosures of issue 21 most of
+    # the rest of the growth from 114 336 / 341 618 B. Issue 24 ("first hour") adds the
+    # counterexamples in book symbols to the 11 does-not-hold entries, about 2 kB each in
+    # the JSON and 1-2 kB in the Markdown: the caps leave 30 % (Markdown) and 25 % (JSON).
+    # Expanded dumps, which these caps exist to keep out, are hundreds of kilobytes.
+    assert (COMMITTED / "chapter3.md").stat().st_size <= 175_000
+    assert (COMMITTED / "chapter3.json").stat().st_size <= 460_000
     assert (COMMITTED / "chapter3.html").stat().st_size <= 1_500_000
     md = (COMMITTED / "chapter3.md").read_text(encoding="utf-8")
     assert "Matrix([" not in md  # no expanded dumps, values in book notation

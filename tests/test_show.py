@@ -49,15 +49,36 @@ def test_book_notation(shown):
 
 def test_3_59_names_only_the_wrong_brace(shown):
     t = shown["3.59"]
-    assert "Fails: member 'pdot_perp brace'" in t
+    assert "Fails: member “ṗ⊥ brace”" in t
     assert t.count("[fails]") == 1
-    assert "cause not determined" in t and "what is known" in t
+    words = " ".join(t.split())  # the cause paragraph is wrapped to the width
+    assert "cause not determined" in words and "what is known" in words
 
 
 def test_3_148_counterexample_sides(shown):
     t = shown["3.148"]
     assert "upper-right block" in t.split("Fails:")[1].splitlines()[0]
-    assert "right side there: [0, 0, 0; 0, 0, 0; 0, 0, 0]" in t
+    assert "right side O = [0, 0, 0;" in t
+
+
+def test_3_148_counterexample_in_the_book_symbols(shown):
+    """M_A and M_C, with m, a and c, in the book's symbols; the point masses' own variables
+    (μ, s_i) only under "How the point was chosen", with the sentence on them."""
+    t = shown["3.148"].split("Counterexample, in the book's symbols")[1] \
+        .split("Corrected form")[0]
+    symbols, chosen = t.split("How the point was chosen")
+    for name in ("M_A = [", "M_C = [", "m = ", "a = [", "c = ["):
+        assert f"\n  {name}" in symbols, name
+    assert "μ" not in symbols and "s₁" not in symbols
+    assert "four point masses" in chosen and "μ = (" in chosen and "s₁ = (" in chosen
+    # a matrix one row per line, its decimals beneath
+    block = symbols.split("M_A = [")[1].split("M_C")[0]
+    assert block.count(";\n") == 10 and "≈ [" in block
+
+
+def test_3_96e_angle_exact_cos_sin_and_atan(shown):
+    line = next(x for x in shown["3.96e"].splitlines() if x.startswith("  φ = "))
+    assert "atan(" in line and "≈" in line and "cos φ = " in line and "sin φ = " in line
 
 
 def test_columns_is_honoured(monkeypatch, capsys):

@@ -195,11 +195,12 @@ def test_dotted_name_from_the_current_directory_and_id_selection(tmp_path, capsy
     code, out, _ = _run(["verify", "--module", "mynotes.algebra", "alg:square", "--quiet"],
                         capsys)
     assert code == 0 and "1 checked" in out
-    # the module's own ids: the wrong square has no corrected form, so it is not decided as
-    # does-not-hold, and the run exits 1 (it was declared as verified)
+    # the module's own ids: the wrong square has an exact counterexample, so it does not hold
+    # although it declares no corrected form; the run exits 1 (it was declared as verified)
     code, out, _ = _run(["verify", "--module", "mynotes.algebra", "--quiet", "--jobs", "1"],
                         capsys)
     assert code == 1 and "2 checked" in out and "MISMATCH (alg:wrong)" in out
+    assert "computed does-not-hold, expected verified" in out
     code, out, _ = _run(["show", "alg:square", "--module", "mynotes.algebra"], capsys)
     assert code == 0 and "mynotes.algebra" in out and "algebra.py" in out
 

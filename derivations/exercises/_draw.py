@@ -34,6 +34,7 @@ def new_figure(title: str, size=(6.4, 5.2)):
     ax.set_xlabel("x")
     ax.set_ylabel("y")
     ax.set_zlabel("z")
+    ax.tick_params(labelsize=7)   # metre-scale ticks (0.025, ...) would overlap at 10 pt
     ax.view_init(*VIEW)
     return fig, ax
 

@@ -130,7 +130,8 @@ def solve(sequence: str = BOOK_SEQUENCE) -> Solution:
         ID, TITLE, STATEMENT, CITATION,
         given={"eta": ETA, "sequence": seq, "sequences": ", ".join(SEQUENCES)},
         assumptions=[
-            "Exercise 2.19 is not in the text we have: its Euler angles are taken as the "
+            "Exercise 2.19 is in chapter 2, which our source (chapter 3 only) lacks: its Euler "
+            "angles are taken as the "
             "intrinsic Z-X-Z sequence Q = R_Z(theta) R_X(phi) R_Z(psi), the classical "
             "(Goldstein) convention and the one whose singularity the book's remark about "
             "non-invertible W describes; all twelve sequences are solved as well.",
@@ -167,7 +168,14 @@ def solve(sequence: str = BOOK_SEQUENCE) -> Solution:
              "|---|---|---|---|---|"]
     lines += [f"| {q} | {c} | `{df}` | `{db}` | `{ss}` |" for q, c, df, db, ss in rows]
     s.extra = "\n".join(lines)
-    # Machine checks: differentiate Q(t) directly, omega = vect(Q_dot Q^T), for every sequence.
+    _checks(s, seq, W, Winv, rows)
+    return s
+
+
+def _checks(s: Solution, seq: str, W, Winv, rows) -> None:
+    """Machine checks: differentiate Q(t) directly, omega = vect(Q_dot Q^T), for every
+    sequence; W W^-1 = 1; the singular set zeroes det W and drops the rank."""
+    a, b, c = seq
     at = [angle(f"ex310_{n}", t=TIME) for n in ("theta", "phi", "psi")]
     rate = sp.Matrix([sp.diff(x, TIME) for x in at])
     for q in SEQUENCES:
@@ -192,4 +200,3 @@ def solve(sequence: str = BOOK_SEQUENCE) -> Solution:
         ok &= len(ss) == 2
     s.check(truth_check("every singular point found zeroes det W and drops rank W to 2",
                         ok, "two points per sequence in [-pi, pi)"))
-    return s

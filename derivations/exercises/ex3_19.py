@@ -77,7 +77,8 @@ def solve(n_S=PARAMETERS[0].default, f_S=PARAMETERS[1].default, d=PARAMETERS[2].
         ID, TITLE, STATEMENT, CITATION,
         given={"[n]_S": nS, "[f]_S": fS, "d = p - s": d_val, "Q": Q_val,
                "||p - s||": sp.sqrt(d_val.dot(d_val))},
-        assumptions=["Fig. 2.10 is not in the text we have. Solved parametrically for any "
+        assumptions=["Fig. 2.10 is in chapter 2, which our source (chapter 3 only) lacks. Solved "
+                     "parametrically for any "
                      "offset d = p - s and any orientation [x]_S = Q [x]_2; the book's data "
                      "take P on the sensor's Z axis, d = [0, 0, 0.1] m, and F_2 at P parallel "
                      "to F_S (Q = 1).",

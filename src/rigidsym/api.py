@@ -89,11 +89,30 @@ class Result(_CheckerResult):
                 shown = f"<pre>{e(latex)}</pre>"
             rows.append(f"<div><i>{label}</i>{shown}</div>")
         if self.counterexample:
-            pt = ", ".join(f"{k} = {v}" for k, v in self.counterexample["point"].items())
+            # in the book's symbols when described (rigidsym.checking.bookpoint)
+            syms = self.counterexample.get("symbols") or []
+            pt = "; ".join(f"{x['symbol']} = {x['text']}" for x in syms) or \
+                ", ".join(f"{k} = {v}" for k, v in self.counterexample["point"].items())
             rows.append(f"<p>counterexample (exact): <code>{e(pt[:800])}</code></p>")
+        rows += self._repairs_html()
         if self.detail:
             rows.append(f"<p><small>{e(self.detail)}</small></p>")
         return "<div class=\"rigidsym-result\">" + "".join(rows) + "</div>"
+
+
+    def _repairs_html(self) -> list[str]:
+        """The verified repairs (issue 23), the edited subterm highlighted."""
+        from rigidsym.report.repairs import EDIT_CLASS, marked_mathml
+
+        e = html.escape
+        out = []
+        for x in self.repairs:
+            tag = "; the declared correction" if x["equals_declared"] else ""
+            out.append(f"<div><i>repair: {e('; then '.join(x['edits']))} ({e(x['method'])}"
+                       f"{tag})</i>{marked_mathml(x['latex'], x['text'])}</div>")
+        if out:
+            out.insert(0, f"<style>.{EDIT_CLASS} {{ background: #ffe98a; }}</style>")
+        return out
 
 
 class Results(Sequence[Result]):
@@ -199,13 +218,26 @@ def _load(modules) -> list[str]:
     return names
 
 
-def check(eq_id: str, *, modules: Iterable[ModuleSpec] = ()) -> Result:
+def _repair_args(repairs, repair_budget) -> None:
+    from rigidsym.checking.registry import check_budget
+
+    if not isinstance(repairs, bool):
+        raise ValueError(f"repairs: expected True or False, got {repairs!r}")
+    check_budget(repair_budget, "repair_budget", none_ok=True)
+
+
+def check(eq_id: str, *, modules: Iterable[ModuleSpec] = (), repairs: bool = True,
+          repair_budget: int | None = None) -> Result:
     """Decide one equation and back the verdict numerically.
 
     Args:
         eq_id: a book id (``"3.16"``, ``"3.96e"``, ``"thm3.2.1"``) or a user id
             (``"notes:rodrigues"``) of a loaded module or of ``modules``.
         modules: user modules to load first (paths, dotted names or module objects).
+        repairs: for a member that does not hold, search the smallest edits that make it
+            hold (``Result.repairs``; README, "Repairs").
+        repair_budget: candidates tried per failing member (``None``: the declaration's
+            ``repair_budget``, else 5000).
 
     Returns:
         The :class:`Result`; its ``verdict`` is computed, never read from the declaration.
@@ -214,20 +246,24 @@ def check(eq_id: str, *, modules: Iterable[ModuleSpec] = ()) -> Result:
     Raises:
         BadInput: for a malformed or unknown id, an id with several lettered parts
             (``"3.96"``: use :func:`verify`), or a user module that cannot be loaded.
+        ValueError: if ``repairs`` is not a bool or ``repair_budget`` not a non-negative
+            integer.
     """
     from rigidsym.checking.checker import check as _check
 
+    _repair_args(repairs, repair_budget)
     _load(modules)
     ids = select([eq_id], None)
     if len(ids) != 1:
         raise BadInput(f"eq_id: {eq_id} has {len(ids)} parts ({', '.join(ids)}): check one, "
                        f"or verify([{eq_id!r}])")
-    return Result.of(_check(ids[0]))
+    return Result.of(_check(ids[0], repairs=repairs, repair_budget=repair_budget))
 
 
 def verify(ids: Sequence[str] | str | None = None, sections: Sequence[str] | str | None = None,
            *, modules: Iterable[ModuleSpec] = (), jobs: int = 1,
-           progress: bool = False, cache: bool = True) -> Results:
+           progress: bool = False, cache: bool = True, repairs: bool = True,
+           repair_budget: int | None = None) -> Results:
     """Decide many equations (the Python side of ``rigidsym verify``).
 
     Args:
@@ -239,6 +275,11 @@ def verify(ids: Sequence[str] | str | None = None, sections: Sequence[str] | str
         progress: show a progress bar on stderr.
         cache: read unchanged ids from the verdict cache and store the others (``RIGIDSYM_CACHE``,
             ``verdicts/``; ``Result.cached`` says which); ``False`` checks every id again.
+        repairs: search repairs of every member that does not hold (``Result.repairs``);
+            ``False`` turns the search off.
+        repair_budget: candidates tried per failing member (``None``: each declaration's
+            ``repair_budget``, else 5000). The budget and the vocabulary's version join the
+            verdict cache's key.
 
     Returns:
         :class:`Results` in id order (book order, then user ids in declaration order). With
@@ -247,16 +288,19 @@ def verify(ids: Sequence[str] | str | None = None, sections: Sequence[str] | str
     Raises:
         BadInput: for a malformed or unknown id or section, or a user module that cannot be
             loaded (one line naming the module and the problem).
-        ValueError: if ``jobs`` is not a positive integer.
+        ValueError: if ``jobs`` is not a positive integer, ``repairs`` not a bool or
+            ``repair_budget`` not a non-negative integer.
     """
     from rigidsym.checking.runner import run_checks
 
     if not isinstance(jobs, int) or isinstance(jobs, bool) or jobs < 1:
         raise ValueError(f"jobs: expected a positive integer, got {jobs!r}")
+    _repair_args(repairs, repair_budget)
     ids = [ids] if isinstance(ids, str) else ids
     sections = [sections] if isinstance(sections, str) else sections
     names = _load(modules)
     selected = select(list(ids) if ids else None, list(sections) if sections else None, names)
     t0 = time.perf_counter()
-    rows = run_checks(selected, jobs=jobs, progress=progress, cache=cache)
+    rows = run_checks(selected, jobs=jobs, progress=progress, cache=cache, repairs=repairs,
+                      repair_budget=repair_budget)
     return Results(rows, seconds=time.perf_counter() - t0)

@@ -112,7 +112,7 @@ def write_notebook(exercise: str, path: str | Path, **data) -> Path:
         OSError: the file cannot be written.
     """
     from rigidsym._io import write_atomic
-    from rigidsym.notebooks import notebook_text
+    from rigidsym.report.notebooks import notebook_text
 
     ex_id = normalise_id(exercise)
     return write_atomic(Path(path), notebook_text(ex_id, data or None))

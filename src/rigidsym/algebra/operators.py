@@ -3,14 +3,17 @@
 Book symbols are ``sympy.MatrixSymbol`` objects named as in ``NOTATION.md`` so that a
 printed equation transcribes readably (``(Q - 1)^T (Q a - a')``). The operators are lazy:
 they print as the book writes them and become explicit on ``doit()`` once the checker has
-substituted the model: ``Cross(u, v)``, ``Det(M)`` and the block matrix ``Blocks``.
+substituted the model: ``Cross(u, v)``, ``Det(M)``, the block matrix ``Blocks``, and
+``Cpm(v)``/``Vect(A)`` (what :func:`rigidsym.algebra.primitives.cpm` and ``vect`` return
+for a book symbol, so that a printed form reads ``CPM(ω)``, not its nine entries).
 """
 
 from __future__ import annotations
 
 import sympy as sp
 
-__all__ = ["MS", "I3", "O3", "vec", "mat", "Cross", "Det", "Blocks"]
+__all__ = ["MS", "I3", "O3", "vec", "mat", "Cross", "Det", "Blocks", "Cpm", "Vect",
+           "is_symbolic"]
 
 I3 = sp.Identity(3)
 O3 = sp.ZeroMatrix(3, 3)
@@ -99,3 +102,77 @@ class Det(sp.Function):
 
     def _sympystr(self, printer):
         return f"Det({printer.doprint(self.args[0])})"
+
+
+def is_symbolic(x) -> bool:
+    """Whether ``x`` is a matrix expression of book symbols (not an explicit matrix): the
+    operators then stay lazy and print as the book writes them."""
+    return isinstance(x, sp.MatrixExpr) and not isinstance(x, sp.MatrixBase) and \
+        bool(x.atoms(sp.MatrixSymbol))
+
+
+def _explicit(a, **hints):
+    a = a.doit(**hints) if isinstance(a, sp.Basic) else a
+    if isinstance(a, sp.MatrixExpr) and not a.atoms(sp.MatrixSymbol):
+        a = a.as_explicit()
+    return a
+
+
+class Cpm(sp.MatrixExpr):
+    """The book's ``CPM(v)``, the cross-product matrix of a 3-vector expression ``v``
+    (Eq. (2.38)), kept lazy: prints ``CPM(v)``; ``doit()`` gives the explicit
+    skew-symmetric matrix once ``v`` is explicit."""
+
+    def __new__(cls, v):
+        return sp.Basic.__new__(cls, v)
+
+    @property
+    def shape(self):
+        return (sp.Integer(3), sp.Integer(3))
+
+    def _entry(self, i, j, **kwargs):
+        v = self.args[0]
+        return sp.Matrix([[0, -v[2, 0], v[1, 0]], [v[2, 0], 0, -v[0, 0]],
+                          [-v[1, 0], v[0, 0], 0]])[i, j]
+
+    def doit(self, **hints):
+        v = _explicit(self.args[0], **hints)
+        if isinstance(v, sp.MatrixBase):
+            return sp.ImmutableMatrix(3, 3, lambda i, j: Cpm(v)._entry(i, j))
+        return Cpm(v)
+
+    def _sympystr(self, printer):
+        return f"CPM({printer._print(self.args[0])})"
+
+    def _latex(self, printer):
+        return rf"\mathrm{{CPM}}\left({printer._print(self.args[0])}\right)"
+
+
+class Vect(sp.MatrixExpr):
+    """The book's ``vect(A)``, the axial vector of a 3 x 3 matrix expression (Sect. 2.3.3),
+    kept lazy: prints ``vect(A)``; ``doit()`` gives ``1/2 [a32 - a23, a13 - a31, a21 -
+    a12]`` once ``A`` is explicit."""
+
+    def __new__(cls, A):
+        return sp.Basic.__new__(cls, A)
+
+    @property
+    def shape(self):
+        return (sp.Integer(3), sp.Integer(1))
+
+    def _entry(self, i, j, **kwargs):
+        A = self.args[0]
+        k, m = (int(i) + 1) % 3, (int(i) + 2) % 3
+        return sp.Rational(1, 2) * (A[m, k] - A[k, m])
+
+    def doit(self, **hints):
+        A = _explicit(self.args[0], **hints)
+        if isinstance(A, sp.MatrixBase):
+            return sp.ImmutableMatrix(3, 1, lambda i, j: Vect(A)._entry(i, j))
+        return Vect(A)
+
+    def _sympystr(self, printer):
+        return f"vect({printer._print(self.args[0])})"
+
+    def _latex(self, printer):
+        return rf"\mathrm{{vect}}\left({printer._print(self.args[0])}\right)"

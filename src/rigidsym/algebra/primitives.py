@@ -8,6 +8,8 @@ from __future__ import annotations
 
 import sympy as sp
 
+from rigidsym.algebra.operators import Cpm, Vect, is_symbolic
+
 __all__ = [
     "as_vector",
     "cpm",
@@ -40,7 +42,7 @@ def as_vector(v, name: str = "v") -> sp.Matrix:
     return m.reshape(3, 1)
 
 
-def cpm(v) -> sp.Matrix:
+def cpm(v) -> sp.Matrix | Cpm:
     """Cross-product matrix of a 3-vector: ``cpm(v) @ x == v x x`` for every x.
 
     Book: Sec. 2.3, Eq. (2.38). Skew-symmetric, rank 2 for v != 0.
@@ -49,7 +51,9 @@ def cpm(v) -> sp.Matrix:
         v: 3-vector (any sympy entries).
 
     Returns:
-        3 x 3 skew-symmetric ``sympy.Matrix``.
+        3 x 3 skew-symmetric ``sympy.Matrix``; for a book symbol (a matrix expression of
+        ``MatrixSymbol``), the lazy :class:`~rigidsym.algebra.operators.Cpm`, which prints
+        ``CPM(v)`` and becomes that matrix once the symbol has its value.
 
     Example:
         >>> import sympy as sp
@@ -57,18 +61,30 @@ def cpm(v) -> sp.Matrix:
         >>> cpm(v) * x == v.cross(x)
         True
     """
+    if is_symbolic(v):
+        if tuple(v.shape) != (3, 1):
+            raise ValueError(f"v: expected a 3-vector, got shape {tuple(v.shape)}")
+        return Cpm(v)
     x, y, z = as_vector(v)
     return sp.Matrix([[0, -z, y], [z, 0, -x], [-y, x, 0]])
 
 
-def vect(A) -> sp.Matrix:
+def vect(A) -> sp.Matrix | Vect:
     """Axial vector of a 3 x 3 matrix: ``vect(A) = 1/2 [a32 - a23, a13 - a31, a21 - a12]``.
 
     Book: Sec. 2.3.3. ``vect(cpm(v)) == v``.
 
+    Returns:
+        3 x 1 ``sympy.Matrix``; for a book symbol, the lazy
+        :class:`~rigidsym.algebra.operators.Vect` (prints ``vect(A)``).
+
     Raises:
         ValueError: if ``A`` is not 3 x 3.
     """
+    if is_symbolic(A):
+        if tuple(A.shape) != (3, 3):
+            raise ValueError(f"A: expected a 3 x 3 matrix, got shape {tuple(A.shape)}")
+        return Vect(A)
     A = sp.Matrix(A)
     if A.shape != (3, 3):
         raise ValueError(f"A: expected a 3 x 3 matrix, got shape {A.shape}")
@@ -78,7 +94,19 @@ def vect(A) -> sp.Matrix:
 
 
 def trace(A) -> sp.Expr:
-    """Trace of a square matrix. Book: Sec. 2.3 (tr)."""
+    """Trace of a square matrix. Book: Sec. 2.3 (tr).
+
+    Returns:
+        The sum of the diagonal; for a book symbol, the lazy ``sympy.Trace`` (prints
+        ``tr(A)``, explicit once the symbol has its value).
+
+    Raises:
+        ValueError: if ``A`` is not square.
+    """
+    if is_symbolic(A):
+        if A.shape[0] != A.shape[1]:
+            raise ValueError(f"A: expected a square matrix, got shape {tuple(A.shape)}")
+        return sp.Trace(A)
     A = sp.Matrix(A)
     if A.rows != A.cols:
         raise ValueError(f"A: expected a square matrix, got shape {A.shape}")

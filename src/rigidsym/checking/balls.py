@@ -41,6 +41,8 @@ from rigidsym.zero.program import (
     POW,
     ROOT,
     Program,
+    parametrised,
+    run_exact,
     unparametrised,
 )
 
@@ -86,7 +88,7 @@ def run_balls(prog: Program, leaves: list) -> list:
             for j in op[2:]:
                 acc = acc + vals[j]
         elif code == POW:
-            acc = vals[op[1]] ** op[2]
+            acc = _ipow(vals[op[1]], op[2])
         elif code == CONST:
             acc = arb(fmpq(op[1].numerator, op[1].denominator))
         elif code == LEAF:
@@ -104,6 +106,21 @@ def run_balls(prog: Program, leaves: list) -> list:
             raise Unsupported(f"operation {code}")
         vals[i] = acc
     return [vals[k] for k in prog.outputs]
+
+
+def _ipow(x, n: int):
+    """``x ** n`` by squarings: python-flint's ``arb ** int`` (0.9) returns nan for a ball
+    that contains 0, which made an ordinary point look singular at every precision."""
+    if n < 0:
+        return 1 / _ipow(x, -n)
+    acc, base = arb(1), x
+    while n:
+        if n & 1:
+            acc = acc * base
+        n >>= 1
+        if n:
+            base = base * base
+    return acc
 
 
 # --------------------------------------------------------------------------- exact bounds
@@ -149,25 +166,41 @@ def _draw_order(leaves: list) -> list:
     return sorted(leaves, key=lambda a: (rank(a), sp.default_sort_key(a)))
 
 
-def exact_point(plan, rng: random.Random) -> dict:
-    """Exact values (``Fraction``) of every atom of ``plan`` at a seeded random point that
-    satisfies the constraints: constrained groups at rational points of their
-    parametrisation (``e.e = 1`` and ``Q^T Q = 1`` hold exactly), free atoms, jets and
-    angles at random rationals (the draws of the former mpmath backing)."""
-    pt = {p: Fraction(rng.randint(-40, 40), rng.randint(1, 12)) for p in plan.params}
-    out = {}
+def point_maker(plan):
+    """A function ``rng -> {atom: Fraction}``: exact values of every atom of ``plan`` at a
+    seeded random point that satisfies the constraints. Constrained groups take rational
+    points of their parametrisation (``e.e = 1`` and ``Q^T Q = 1`` hold exactly), free
+    atoms, jets and angles random rationals (the draws of the former mpmath backing, in the
+    same order). The parametrisation is translated once (:func:`parametrised`).
+
+    The function raises ``ZeroDivisionError`` at a point where a parametrisation is
+    singular (all four quaternion parameters 0).
+    """
     # sorted: the draws must not follow set/dict order, which varies with PYTHONHASHSEED
-    for atom, rule in sorted(plan.rules.items(), key=lambda kv: sp.default_sort_key(kv[0])):
-        if atom == sp.pi:
-            continue
-        if isinstance(rule, sp.Symbol):  # a free atom, a jet, or a bare angle
-            out[atom] = Fraction(rng.randint(-10**8, 10**8), 10**8) * 3
-        else:
-            out[atom] = evaluate(rule, plan, pt)
-    for a in sorted(plan.angles, key=sp.default_sort_key):  # one value per angle
-        if a not in out:
+    rules = sorted(((a, r) for a, r in plan.rules.items() if a != sp.pi),
+                   key=lambda kv: sp.default_sort_key(kv[0]))
+    free = [isinstance(r, sp.Symbol) for _, r in rules]  # a free atom, a jet, a bare angle
+    prog = parametrised([r for (_, r), f in zip(rules, free, strict=True) if not f], plan)
+    angles = [a for a in sorted(plan.angles, key=sp.default_sort_key)
+              if a not in plan.rules]
+
+    def draw(rng: random.Random) -> dict:
+        pt = [fmpq(rng.randint(-40, 40), rng.randint(1, 12)) for _ in plan.params]
+        values = iter(run_exact(prog, pt))
+        out = {}
+        for (atom, _), f in zip(rules, free, strict=True):
+            v = Fraction(rng.randint(-10**8, 10**8), 10**8) * 3 if f else next(values)
+            out[atom] = v if f else Fraction(int(v.p), int(v.q))
+        for a in angles:  # one value per angle
             out[a] = Fraction(rng.randint(1, 10**8), 10**8) * 3
-    return out
+        return out
+
+    return draw
+
+
+def exact_point(plan, rng: random.Random) -> dict:
+    """One point of :func:`point_maker` (see there)."""
+    return point_maker(plan)(rng)
 
 
 # --------------------------------------------------------------------------- backing
@@ -246,11 +279,15 @@ def backing(lhs: list, rhs: list, plan, seed: int, points: int = NUMERIC_POINTS)
     order = _draw_order(prog.leaves)
     slot = {a: k for k, a in enumerate(prog.leaves)}
     rng = random.Random(seed)
+    draw = point_maker(plan)
     out = Backing()
     tries = 0
     while out.points < points and tries < 20 * points:
         tries += 1
-        pt = exact_point(plan, rng)
+        try:
+            pt = draw(rng)
+        except ZeroDivisionError:  # a singular parametrisation: another point
+            continue
         values: list = [None] * len(prog.leaves)
         for a in order:
             fill = rng.random()  # drawn for every atom, as before: the points stay put

@@ -3,8 +3,13 @@
 Verdicts: ``verified`` (every printed member equals the first, under the first-principles
 model, decided by :func:`rigidsym.zero.decide.decide_zero`), ``definition`` (a statement that
 introduces a new symbol), ``does-not-hold`` (some member differs: an exact rational
-counterexample is given, and the corrected form must verify), ``undecided`` (no method
+counterexample is given, and a declared corrected form must verify), ``undecided`` (no method
 decided, or the numeric check disagrees: a defect, never counted as verified).
+
+The verdict follows the counterexample: a member with an exact counterexample makes the id
+``does-not-hold`` whether or not a correction is known; a declared correction that does not
+verify makes it ``undecided`` (:mod:`rigidsym.checking.correction`, which also runs the
+repair search of :mod:`rigidsym.checking.repair`).
 
 Every verdict is backed by a ball-arithmetic evaluation (python-flint ``arb``) of the
 *unparametrised* expressions at ``NUMERIC_POINTS`` seeded points that satisfy the
@@ -20,6 +25,8 @@ from dataclasses import asdict, dataclass, field
 from fractions import Fraction
 
 from rigidsym.checking.balls import round_up
+from rigidsym.checking.bookpoint import describe_point
+from rigidsym.checking.correction import RepairSettings, correct
 from rigidsym.checking.evidence import (
     NUMERIC_DIGITS,
     NUMERIC_POINTS,
@@ -79,6 +86,14 @@ class Result:
     model: list[str] = field(default_factory=list)
     #: read from the verdict cache (a run field, like ``seconds``: not in written reports)
     cached: bool = False
+    #: for a does-not-hold, the verified repairs of its failing members (schema-2 records,
+    #: :func:`rigidsym.checking.repair.repair_record`), at most ``repair.KEEP`` per member
+    repairs: list[dict] = field(default_factory=list)
+    #: what the repair search tried per failing member, and in words what it found
+    repair_search: list[dict] = field(default_factory=list)
+    #: where the correction comes from (:data:`rigidsym.checking.correction.CORRECTIONS`),
+    #: ``None`` when nothing fails
+    correction: str | None = None
 
     def as_json(self) -> dict:
         """Every field as a plain dict (the full record; the lean schema-2 row is
@@ -98,10 +113,17 @@ class _RelOutcome:
     ball: tuple | None = None
 
 
-def decide_rel(rel: Rel, model: dict, seed: int) -> _RelOutcome:
-    """Decide one relation exactly (shape check first, then the zero test)."""
+def decide_rel(rel: Rel, model: dict, seed: int, st: Statement | None = None) -> _RelOutcome:
+    """Decide one relation exactly (shape check first, then the zero test); a
+    counterexample is described in the book symbols of ``st`` when it is given."""
     ls, rs = shape_of(rel.lhs), shape_of(rel.rhs)
     lhs, rhs = explicit(rel.lhs, model), explicit(rel.rhs, model)
+    describe = None
+    if st is not None:
+        rels = st.printed + st.claims + (st.corrected or [])
+
+        def describe(plan, pt):
+            return describe_point(rel, model, rels, plan, pt, st.parametrisation)
     if ls != rs:
         plan = make_plan(_entries(lhs) + _entries(rhs))
         rng = random.Random(seed)
@@ -109,7 +131,9 @@ def decide_rel(rel: Rel, model: dict, seed: int) -> _RelOutcome:
         for _ in range(100):
             pt = {p: Fraction(rng.randint(-3, 3), rng.randint(1, 3)) for p in plan.params}
             try:
-                ce = _counterexample(lhs, rhs, pt, seed)[0]
+                ce, cplan, cpt = _counterexample(lhs, rhs, pt, seed)
+                if describe is not None:
+                    ce.update(describe(cplan, cpt))
                 break
             except ZeroDivisionError:
                 continue
@@ -119,6 +143,8 @@ def decide_rel(rel: Rel, model: dict, seed: int) -> _RelOutcome:
     zr = decide_zero(diff, seed=seed)
     if zr.zero is False:
         ce, plan, pt = _counterexample(lhs, rhs, zr.witness, seed)
+        if describe is not None:
+            ce.update(describe(plan, pt))
         try:
             ball = counterexample_ball(lhs, rhs, plan, pt)
         except Unsupported as exc:
@@ -145,11 +171,16 @@ def _derived_str(st: Statement) -> str:
     return "; ".join(_fmt(explicit(r.lhs, st.model)) for r in st.printed)
 
 
-def check(eq: Equation | str) -> Result:
+def check(eq: Equation | str, *, repairs: bool = True,
+          repair_budget: int | None = None) -> Result:
     """Compute the verdict of one declaration, with its numeric backing.
 
     Args:
         eq: an :class:`Equation` or its id.
+        repairs: search the repairs of a member that does not hold
+            (:mod:`rigidsym.checking.repair`).
+        repair_budget: candidates per failing member; ``None``: the declaration's
+            ``repair_budget``, else :data:`rigidsym.checking.repair.REPAIR_BUDGET`.
 
     Returns:
         A :class:`Result`; ``verdict`` is computed here, never read from the declaration.
@@ -160,7 +191,7 @@ def check(eq: Equation | str) -> Result:
         eq = REGISTRY[eq]
     t0 = time.perf_counter()
     try:
-        return _check(eq, t0)
+        return _check(eq, t0, RepairSettings(repairs, repair_budget))
     except Exception as exc:  # a defect to report as undecided, not to hide
         return Result(
             id=eq.id, title=eq.title, kind=eq.kind, verdict="undecided", expected=eq.expected,
@@ -173,7 +204,7 @@ def check(eq: Equation | str) -> Result:
             singular=eq.singular)
 
 
-def _check(eq: Equation, t0: float) -> Result:
+def _check(eq: Equation, t0: float, settings: RepairSettings) -> Result:
     seed = _seed(eq.id)
     st = eq.build()
     _EXPLICIT_CACHE.clear()
@@ -184,6 +215,7 @@ def _check(eq: Equation, t0: float) -> Result:
     backing: list[Rel] = []
     bad = bad_rel = None
     corrected_str = _rel_str(st.corrected)
+    correction, repairs, searches = None, [], []
     if eq.kind == "definition":
         ok = True
         for r in st.printed:
@@ -205,7 +237,8 @@ def _check(eq: Equation, t0: float) -> Result:
             verdict, method, detail = ("undecided", "undecided",
                                        "a claim attached to the definition was not verified")
     else:
-        outs = [decide_rel(r, st.model, seed + i) for i, r in enumerate(st.printed + st.claims)]
+        outs = [decide_rel(r, st.model, seed + i, st)
+                for i, r in enumerate(st.printed + st.claims)]
         members = [member_record(r, "printed" if i < len(st.printed) else "claim", o)
                    for i, (r, o) in enumerate(zip(st.printed + st.claims, outs, strict=True))]
         zero, method, detail = _combine(outs)
@@ -218,20 +251,14 @@ def _check(eq: Equation, t0: float) -> Result:
             ce, failing = bad.counterexample, bad.label or None
             if ce is not None:
                 ce["member"] = bad.label
-            if not st.corrected:
-                verdict, detail = "undecided", "does not hold, but no corrected form is declared"
-            else:
-                couts = [decide_rel(r, st.model, seed + 100 + i)
-                         for i, r in enumerate(st.corrected)]
-                members += [member_record(r, "corrected", o)
-                            for r, o in zip(st.corrected, couts, strict=True)]
-                cz, cm, cd = _combine(couts)
-                if not cz:
-                    verdict = "undecided"
-                    detail = f"the corrected form did not verify ({cm}: {cd})"
-                else:
-                    detail = f"{bad.detail}; corrected form verified by {cm}"
-                backing = list(st.corrected)
+            fix = correct(eq, st, outs, seed, settings, decide_rel, _combine, _rel_str)
+            members += fix.members
+            backing = fix.backing
+            correction, repairs, searches = fix.kind, fix.repairs, fix.searches
+            corrected_str = corrected_str or fix.corrected
+            detail = f"{bad.detail}; {fix.detail}" if fix.holds else fix.detail
+            if not fix.holds:
+                verdict = "undecided"
             bad_rel = (st.printed + st.claims)[outs.index(bad)]
     rels = backing or [r for r in st.printed if shape_of(r.lhs) == shape_of(r.rhs)]
     verdict, detail, numeric = _numeric(verdict, detail, rels, bool(backing), st.model, seed,
@@ -247,7 +274,8 @@ def _check(eq: Equation, t0: float) -> Result:
         evidence=eq.evidence if verdict == "does-not-hold" else None, detail=detail,
         singular=eq.singular, failing_member=failing, members=members,
         model=model_words([explicit(r.lhs, st.model) for r in st.printed]
-                          + [explicit(r.rhs, st.model) for r in st.printed]))
+                          + [explicit(r.rhs, st.model) for r in st.printed]),
+        repairs=repairs, repair_search=searches, correction=correction)
 
 
 def _numeric(verdict: str, detail: str, rels: list[Rel], decisive: bool, model: dict,

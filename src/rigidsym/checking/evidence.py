@@ -81,6 +81,9 @@ def _counterexample(lhs, rhs, witness, seed) -> tuple[dict, object, dict]:
     for a, (tau, M) in plan.angles.items():
         point[sp.sstr(a)] = f"{2 * M}*atan({pt[tau]})"
     lv, rv = _exact_value(lhs, plan, pt), _exact_value(rhs, plan, pt)
+    if isinstance(lv, sp.MatrixBase) != isinstance(rv, sp.MatrixBase):
+        # a 1 x 1 matrix (a^T b) against a scalar: shape_of calls both 1 x 1
+        lv, rv = (x[0, 0] if isinstance(x, sp.MatrixBase) else x for x in (lv, rv))
     ce = {"point": point, "lhs": sp.sstr(lv), "rhs": sp.sstr(rv)}
     if shape_of(lhs) == shape_of(rhs):
         ce["residual"] = sp.sstr(lv - rv)

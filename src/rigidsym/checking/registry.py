@@ -39,6 +39,7 @@ __all__ = [
     "forget_module",
     "DeclarationTypeError",
     "USER_CAUSE_DEFAULT",
+    "check_budget",
 ]
 
 KINDS = ("identity", "definition", "claim")
@@ -96,6 +97,11 @@ class Statement:
         defines: names of the symbols a definition introduces.
         claims: extra relations a definition or claim asserts that must hold (e.g. the unit
             norm of a direction just defined).
+        parametrisation: one sentence on how the model writes its own free variables
+            (those that are not book symbols), shown with a counterexample under "how the
+            point was chosen", e.g. ``"Q(t) is the rotation of the quaternion q + t u, so
+            that QᵀQ = 1 holds exactly"``. Constrained atoms (unit vectors, rotations,
+            angles) are described without it.
     """
 
     printed: list[Rel]
@@ -104,6 +110,7 @@ class Statement:
     corrected: list[Rel] | None = None
     defines: tuple[str, ...] = ()
     claims: list[Rel] = field(default_factory=list)
+    parametrisation: str = ""
 
 
 @dataclass(frozen=True)
@@ -123,6 +130,8 @@ class Equation:
     module: str = ""
     function: str = ""
     where: str = ""
+    #: candidates per failing member for the repair search (``None``: the default)
+    repair_budget: int | None = None
 
     def build(self) -> Statement:
         """The statement, built once per run (derivations can be expensive)."""
@@ -180,7 +189,7 @@ def section_of(eq_id: str) -> str:
 def equation(eq_id: str, title: str, *, section: str | None = None,
              latex: str | None = None, kind: str = "identity", expected: str | None = None,
              cause: str | None = None, evidence: str | None = None,
-             singular: str | None = None):
+             singular: str | None = None, repair_budget: int | None = None):
     """Register a declaration under its id (a decorator).
 
     A book id (``"3.6a"``, ``"thm3.2.1"``) is declared only in ``rigidsym.derivations``, with
@@ -202,10 +211,14 @@ def equation(eq_id: str, title: str, *, section: str | None = None,
             for a book id; any text for a user id (default ``"not determined"``).
         evidence: one line of evidence for the cause (required for a book id).
         singular: the singular set of the formula, in words (``"phi = 0"``).
+        repair_budget: candidates the repair search tries per failing member of this
+            declaration (a non-negative integer; ``None``: the default, 5000). A run's own
+            budget (``verify(..., repair_budget=N)``) takes precedence.
 
     Raises:
         ValueError: for a malformed id, a book id declared outside the book, an id declared
-            in two places (both named), or an unknown kind/verdict/cause.
+            in two places (both named), an unknown kind/verdict/cause, or a repair budget
+            that is not a non-negative integer.
     """
     user = is_user_id(eq_id)
     if not user and not _ID.match(eq_id):
@@ -213,6 +226,7 @@ def equation(eq_id: str, title: str, *, section: str | None = None,
                          f"got {eq_id!r}")
     if kind not in KINDS:
         raise ValueError(f"kind: expected one of {KINDS}, got {kind!r}")
+    check_budget(repair_budget, "repair_budget", none_ok=True)
     if expected is None:
         expected = "definition" if kind == "definition" else "verified"
     if expected not in VERDICTS:
@@ -236,18 +250,28 @@ def equation(eq_id: str, title: str, *, section: str | None = None,
             raise ValueError(f"eq_id: {eq_id!r} is a book id, reserved for the chapter; "
                              f"declare your own as namespace:name (e.g. notes:eq1)")
         new = Equation(eq_id, title, section, kind, latex, expected, fn, cause, evidence,
-                       singular, module, fn.__qualname__, _where(fn))
+                       singular, module, fn.__qualname__, _where(fn), repair_budget)
         old = REGISTRY.get(eq_id)
         if old is not None and (old.module, old.function) != (new.module, new.function):
-            raise ValueError(f"equation {eq_id} is declared twice: in {old.module}."
-                             f"{old.function} ({old.where}) and in {new.module}."
-                             f"{new.function} ({new.where})")
+            raise ValueError(f"equation {eq_id} is declared twice: by {old.function} at "
+                             f"{old.where} and by {new.function} at {new.where}; rename one "
+                             f"of the ids")
         # the same function declared again (a notebook cell run twice): the new one replaces it
         REGISTRY[eq_id] = new
         _BUILT.pop(eq_id, None)
         return fn
 
     return deco
+
+
+def check_budget(value, name: str, none_ok: bool = False) -> None:
+    """Raise a ``ValueError`` naming ``name`` unless ``value`` is a non-negative integer
+    (or ``None`` when ``none_ok``)."""
+    if value is None and none_ok:
+        return
+    if not isinstance(value, int) or isinstance(value, bool) or value < 0:
+        raise ValueError(f"{name}: expected a non-negative integer (candidates per failing "
+                         f"member), got {value!r}")
 
 
 def forget_module(module: str) -> list[str]:
@@ -349,8 +373,9 @@ def select(ids: list[str] | None = None, sections: list[str] | None = None,
             continue
         parts = [k for k in REGISTRY if re.fullmatch(re.escape(i) + "[a-e]", k)]
         if not parts:
-            known = ("a loaded user module's ids" if is_user_id(i) else
-                     "3.1 ... 3.148 and claims such as thm3.2.1")
+            known = ("a loaded user module's ids: give its file with --module" if is_user_id(i)
+                     else "3.1 ... 3.148 and claims such as thm3.2.1; the ids of a section: "
+                          "rigidsym verify --section 3.4")
             raise BadInput(f"id: {i} holds no declared equation (known: {known})")
         out.update(parts)
     for s in sections or []:

@@ -1,52 +1,177 @@
-"""The parallel runner: check ids over worker processes, with a progress display."""
+"""The parallel runner: check ids over worker processes, with progress that says what it
+is doing (``checking 3.77a, 3.94``), what each finished id turned out to be, and a stable
+estimate of the time left from each id's duration in earlier runs."""
 
 from __future__ import annotations
 
-import sys
+import time
+from contextlib import nullcontext
+from functools import partial
 
-__all__ = ["run_checks"]
+from rigidsym._progress import Reporter, load_durations, save_durations
+from rigidsym.checking.correction import RepairSettings
+
+__all__ = ["run_checks", "verdict_words"]
+
+#: where earlier runs' seconds per id are kept (the user cache's ``timings/checks.json``)
+DURATIONS = "checks"
+#: the seconds assumed for an id never timed before, until some id of the run finishes
+_PRIOR = 0.5
+#: how many ids' worth of weight the prior keeps in the mean of a run's first ids
+_SHRINK = 5
+_STARTED = None  # the start queue, in a worker (set by the pool's initializer)
 
 
-def _check_one(eq_id: str):
+def _init_worker(queue) -> None:
+    global _STARTED
+    _STARTED = queue
+
+
+def _check_one(eq_id: str, settings: RepairSettings | None = None):
     from rigidsym.checking.checker import check
-    return check(eq_id)
+    if _STARTED is not None:
+        _STARTED.put((eq_id, time.time()))
+    settings = settings or RepairSettings()
+    return check(eq_id, repairs=settings.enabled, repair_budget=settings.budget)
 
 
-def run_checks(ids: list[str], jobs: int = 1, progress: bool = True, cache: bool = False):
+def verdict_words(r) -> str:
+    """``"3.57 does-not-hold, as expected"``; ``"3.16 undecided, EXPECTED verified"``."""
+    if r.verdict == r.expected:
+        return f"{r.id} {r.verdict}" + (", as expected" if r.verdict == "does-not-hold" else "")
+    return f"{r.id} {r.verdict}, EXPECTED {r.expected}"
+
+
+class _Estimate:
+    """Time left from predicted seconds per id: earlier runs' durations, scaled by how this
+    run compares with them (a loaded machine), else the mean of this run's ids so far."""
+
+    def __init__(self, ids: list[str], jobs: int):
+        self.before = load_durations(DURATIONS)
+        self.jobs = max(1, jobs)
+        self.actual: dict[str, float] = {}
+        self.ids = ids
+
+    def _pred(self, i: str) -> float:
+        if i in self.before:
+            return self.before[i] * self._scale()
+        # never timed: this run's mean so far, shrunk towards the prior while it rests on
+        # few ids (one slow id first must not multiply the estimate by ten)
+        n = len(self.actual)
+        return (sum(self.actual.values()) + _SHRINK * _PRIOR) / (n + _SHRINK)
+
+    def _scale(self) -> float:
+        known = [i for i in self.actual if i in self.before and self.before[i] > 0.05]
+        if len(known) < 3:
+            return 1.0
+        s = sum(self.actual[i] for i in known) / sum(self.before[i] for i in known)
+        return min(max(s, 0.25), 4.0)
+
+    def order(self) -> list[str]:
+        """The ids longest first (known durations), so the workers finish together."""
+        return sorted(self.ids, key=lambda i: -self.before.get(i, _PRIOR))
+
+    def left(self, running: dict[str, float]) -> float:
+        now = time.time()
+        rest = sum(self._pred(i) for i in self.ids if i not in self.actual and i not in running)
+        rest += sum(max(self._pred(i) - (now - t), 0.0) for i, t in running.items())
+        return rest / min(self.jobs, max(1, len(self.ids) - len(self.actual)))
+
+
+def run_checks(ids: list[str], jobs: int = 1, progress: bool = True, cache: bool = False,
+               reporter: Reporter | None = None, repairs: bool = True,
+               repair_budget: int | None = None):
     """Check ``ids`` (in parallel over ``jobs`` processes), results in the order given.
 
-    With ``cache``, results are read from the verdict cache where their key matches
-    (:mod:`rigidsym.checking.verdict_cache`; ``Result.cached`` is then true) and the others
-    are computed and stored.
-    """
-    from rich.progress import Progress
+    Args:
+        ids: the ids to check.
+        jobs: worker processes (1: in this process).
+        progress: show progress on stderr (:mod:`rigidsym._progress`).
+        cache: read results from the verdict cache where their key matches
+            (:mod:`rigidsym.checking.verdict_cache`; ``Result.cached`` is then true);
+            compute and store the others.
+        reporter: the command's :class:`~rigidsym._progress.Reporter` (its phases), else
+            one of its own.
+        repairs, repair_budget: those of :func:`rigidsym.checking.checker.check` (they
+            join the cache key).
 
+    Returns:
+        The :class:`~rigidsym.checking.checker.Result` of each id, in the order of ``ids``.
+    """
+    settings = RepairSettings(repairs, repair_budget)
+    one = partial(_check_one, settings=settings)
     hits, keys = ({}, {})
     if cache:
         from rigidsym.checking import verdict_cache
-        hits, keys = verdict_cache.lookup(ids)
+        hits, keys = verdict_cache.lookup(ids, settings)
     results = dict(hits)
     todo = [i for i in ids if i not in hits]
-    with Progress(disable=not progress, transient=True,
-                  console=_console(stderr=True)) as bar:
-        task = bar.add_task("verifying", total=len(ids), completed=len(hits))
+    rep = reporter or Reporter("rigidsym verify", enabled=progress)
+    est = _Estimate(todo, jobs)
+    what = f"checking {len(ids)} ids" + (f" ({len(hits)} from the cache)" if hits else "")
+    with (nullcontext(rep) if reporter else rep), \
+            rep.phase(what, total=len(ids), doing="starting") as ph:
+        if hits:
+            ph.advance(len(hits), label=f"{len(hits)} from the verdict cache")
         if jobs > 1 and len(todo) > 1:
-            import multiprocessing as mp
-
-            ctx = mp.get_context("fork")
-            with ctx.Pool(min(jobs, len(todo))) as pool:
-                for r in pool.imap_unordered(_check_one, todo):
-                    results[r.id] = r
-                    bar.update(task, advance=1, description=f"verified ({r.id})")
+            _parallel(est, min(jobs, len(todo)), ph, results, one)
         else:
             for i in todo:
-                results[i] = _check_one(i)
-                bar.update(task, advance=1, description=f"verified ({i})")
+                running = {i: time.time()}
+                ph.label(f"checking {i}")
+                ph.estimate(est.left(running))
+                results[i] = one(i)
+                _finished(results[i], est, ph, {})
+        ph.finish(_summary(results.values()))
     if cache and todo:
         verdict_cache.store([results[i] for i in todo], keys)
+    save_durations(DURATIONS, {i: results[i].seconds for i in todo})
     return [results[i] for i in ids]
 
 
-def _console(stderr: bool = False):
-    from rich.console import Console
-    return Console(stderr=stderr, width=120 if not sys.stdout.isatty() else None)
+def _finished(r, est: _Estimate, ph, running: dict) -> None:
+    est.actual[r.id] = r.seconds
+    running.pop(r.id, None)
+    ph.advance(1, label=_doing(running, r))
+    ph.estimate(est.left(running))
+
+
+def _doing(running: dict, last=None) -> str:
+    now = ", ".join(sorted(running)) if running else ""
+    parts = ([f"checking {now}"] if now else []) + ([verdict_words(last)] if last else [])
+    return " · ".join(parts) or "checking"
+
+
+def _parallel(est: _Estimate, jobs: int, ph, results: dict, one) -> None:
+    import multiprocessing as mp
+
+    ctx = mp.get_context("fork")
+    started = ctx.SimpleQueue()
+    running: dict[str, float] = {}
+    with ctx.Pool(jobs, initializer=_init_worker, initargs=(started,)) as pool:
+        it = pool.imap_unordered(one, est.order())
+        last = None
+        while len(est.actual) < len(est.ids):
+            while not started.empty():
+                i, t = started.get()
+                if i not in results:  # its result may have come first
+                    running[i] = t
+            try:
+                r = it.next(timeout=0.25)
+            except mp.TimeoutError:
+                ph.label(_doing(running, last))
+                ph.estimate(est.left(running))
+                continue
+            results[r.id] = last = r
+            _finished(r, est, ph, running)
+
+
+def _summary(results) -> str:
+    from collections import Counter
+
+    from rigidsym.checking.registry import VERDICTS
+
+    c = Counter(r.verdict for r in results)
+    off = sum(r.verdict != r.expected for r in results)
+    words = ", ".join(f"{c[v]} {v}" for v in VERDICTS if c[v])
+    return words + (f"; {off} differ from the recorded expectation" if off else "")

@@ -11,7 +11,10 @@ on has changed (``<cache>/verdicts/``, see :mod:`rigidsym._cache` for where and 
 - the declaration itself: its metadata (title, kind, LaTeX, expected verdict, ...) and the
   compiled code of its function;
 - the versions of Python, sympy, mpmath and python-flint;
-- the engine's settings as they are at run time (point counts, precision, limits).
+- the engine's settings as they are at run time (point counts, precision, limits);
+- the repair search's settings: on or off, the budget in effect for the id (the run's, the
+  declaration's or the default) and the version of the edit vocabulary
+  (:data:`rigidsym.checking.mutate.VOCABULARY_VERSION`).
 
 **Not tracked** (say ``--no-cache`` or ``rigidsym cache clear --verdicts`` after changing
 them): data files a declaration reads at run time; modules imported dynamically
@@ -95,13 +98,14 @@ def _environment() -> str:
 
 def _settings() -> str:
     """The engine's settings as they are now (a test or a user may have changed them)."""
-    from rigidsym.checking import balls, checker
+    from rigidsym.checking import balls, checker, fasteval, repair
     from rigidsym.zero import decide
 
     names = {decide: ("SAMPLE_SET_SIZE", "CANCEL_NODE_LIMIT", "CANCEL_TERMS_LIMIT",
                       "CANCEL_PRODUCT_LIMIT", "CANCEL_SECONDS", "SZ_POINTS"),
              balls: ("NUMERIC_DIGITS", "NUMERIC_POINTS", "MAX_DIGITS", "CERTIFIED_BOUND"),
-             checker: ("AGREE_TOL", "DIFFER_TOL")}
+             checker: ("AGREE_TOL", "DIFFER_TOL"),
+             repair: ("REPAIR_BUDGET", "KEEP", "FULL_TESTS"), fasteval: ("PRIME",)}
     return json.dumps({f"{m.__name__}.{n}": str(getattr(m, n, None))
                        for m, ns in names.items() for n in ns}, sort_keys=True)
 
@@ -177,9 +181,19 @@ def _declared_function(eq: Equation):
     return obj
 
 
-def key_of(eq_id: str, _deps: dict | None = None) -> str | None:
+def _repair_key(eq: Equation, settings) -> str:
+    from rigidsym.checking.correction import RepairSettings, budget_of
+    from rigidsym.checking.mutate import VOCABULARY_VERSION
+
+    settings = settings or RepairSettings()
+    return json.dumps({"repairs": settings.enabled, "vocabulary": VOCABULARY_VERSION,
+                       "budget": budget_of(eq, settings) if settings.enabled else None})
+
+
+def key_of(eq_id: str, _deps: dict | None = None, settings=None) -> str | None:
     """The cache key of ``eq_id`` (hex SHA-256), or ``None`` when it must not be cached (a
     declaration replaced in memory, a module without a file, a helper changed on disk).
+    ``settings`` are the run's :class:`rigidsym.checking.correction.RepairSettings`.
 
     Raises:
         KeyError: for an id that is not registered.
@@ -199,10 +213,12 @@ def key_of(eq_id: str, _deps: dict | None = None) -> str | None:
     if files is None:
         return None
     meta = [eq.id, eq.title, eq.section, eq.kind, eq.latex, eq.expected, eq.cause,
-            eq.evidence, eq.singular, eq.module, eq.function]
+            eq.evidence, eq.singular, eq.module, eq.function,
+            getattr(eq, "repair_budget", None)]
     h = hashlib.sha256()
     for part in (f"format {FORMAT}", package_digest(), _environment(), _settings(),
-                 json.dumps(meta), json.dumps(sorted(files.items()))):
+                 json.dumps(meta), json.dumps(sorted(files.items())),
+                 _repair_key(eq, settings)):
         h.update(part.encode() + b"\0")
     h.update(marshal.dumps(eq.build_fn.__code__))
     return h.hexdigest()
@@ -238,15 +254,15 @@ def _read(eq_id: str, key: str):
         return None
 
 
-def lookup(ids: list[str]) -> tuple[dict, dict]:
-    """Cached results and keys of ``ids``.
+def lookup(ids: list[str], settings=None) -> tuple[dict, dict]:
+    """Cached results and keys of ``ids`` (under the run's repair ``settings``).
 
     Returns:
         ``(hits, keys)``: ``id -> Result`` (with ``cached=True``) for the ids found, and
         ``id -> key`` for every id that may be stored (``None``: never cached).
     """
     deps: dict = {}
-    keys = {i: key_of(i, deps) for i in ids}
+    keys = {i: key_of(i, deps, settings) for i in ids}
     hits = {}
     with _cache.lock("verdicts"):
         for i, k in keys.items():

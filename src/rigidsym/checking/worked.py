@@ -92,11 +92,14 @@ class Solution:
         steps: the solution, in order.
         answers: the final answers by name (exact sympy values; matrices allowed).
         checks: machine checks of the answers (independent of the solution path).
-        assumptions: data not in the text we have (figures, chapter 2), and caveats.
+        assumptions: data not in the project's source (chapter 3 converted to text,
+            without its figures; chapter 2 is not in it), and caveats.
         status: ``"solved"``, ``"partial"`` or ``"ill-posed"`` (the data admit no
             answer; the steps end at the one that fails).
         extra: free-form rendered text (tables) appended after the answers.
         reason: for an ill-posed solution, why, in one sentence.
+        floats: the data given as floats (measurements); rendering then shows long
+            exact numbers to 10 digits.
     """
 
     id: str
@@ -111,6 +114,7 @@ class Solution:
     status: str = "solved"
     extra: str = ""
     reason: str = ""
+    floats: tuple = ()
 
     @property
     def checked(self) -> bool:
@@ -312,6 +316,7 @@ def solve(ex_id: str, tol=None, **data) -> Solution:
     except IllPosed as exc:
         s = exc.solution
     s.assumptions.extend(d.notes)
+    s.floats = d.floats
     _CACHE[key] = s
     while len(_CACHE) > _CACHE_SIZE:
         _CACHE.popitem(last=False)

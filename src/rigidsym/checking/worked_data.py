@@ -127,13 +127,16 @@ class Parameters:
         head = f"<p><b>{html.escape(self.exercise)}</b>: {html.escape(self.note)}</p>"
         if not self.rows:
             return head
+        # inline left alignment: Jupyter's table style right-aligns every cell
+        td = '<td style="text-align: left">'
         rows = "".join(
-            f"<tr><td><code>{html.escape(p.name)}</code></td><td>{html.escape(p.shape_text)}"
-            f"</td><td><code>{html.escape(_flat_text(p.default))}</code></td>"
-            f"<td>{html.escape(p.unit)}</td><td>{html.escape(p.meaning)}</td></tr>"
+            f"<tr>{td}<code>{html.escape(p.name)}</code></td>{td}{html.escape(p.shape_text)}"
+            f"</td>{td}<code>{html.escape(_flat_text(p.default))}</code></td>"
+            f"{td}{html.escape(p.unit)}</td>{td}{html.escape(p.meaning)}</td></tr>"
             for p in self.rows)
-        return (head + "<table><thead><tr><th>name</th><th>shape</th><th>book's value</th>"
-                "<th>unit</th><th>meaning</th></tr></thead><tbody>" + rows + "</tbody></table>")
+        th = "".join(f'<th style="text-align: left">{h}</th>'
+                     for h in ("name", "shape", "book's value", "unit", "meaning"))
+        return (head + f"<table><thead><tr>{th}</tr></thead><tbody>{rows}</tbody></table>")
 
 
 def _flat_text(v) -> str:

@@ -30,6 +30,7 @@ class Solution(Protocol):
     status: str
     extra: str
     reason: str
+    floats: tuple
 
     @property
     def checked(self) -> bool: ...
@@ -49,7 +50,7 @@ def to_json_value(v):
 
 
 def _float_of(v) -> str:
-    if isinstance(v, str):
+    if isinstance(v, str) or isinstance(v, sp.Basic | sp.MatrixBase) and v.has(sp.Float):
         return ""
     try:
         if isinstance(v, sp.MatrixBase):
@@ -65,6 +66,43 @@ def _float_of(v) -> str:
         return ""
 
 
+#: with float data, an exact number printed longer than this is shown to 10 digits
+_LONG = 24
+LONG_NOTE = ("Float data: exact numbers longer than 24 characters are shown to 10 "
+             "significant digits here; the exact values are in solution.answers.")
+
+
+def _short(x):
+    if isinstance(x, sp.Expr) and not x.free_symbols and x.is_number and len(str(x)) > _LONG:
+        return sp.Float(sp.N(x, 10), 10)
+    return x
+
+
+def _shown(v):
+    """``v`` for display: long exact numbers (entries too) as 10-digit floats."""
+    if isinstance(v, sp.MatrixBase):
+        return v.applyfunc(_short)
+    return _short(v) if isinstance(v, sp.Expr) else v
+
+
+def _view(s: Solution) -> Solution:
+    """What the renderers show of ``s``: itself, or with float data a copy whose long
+    exact numbers are shortened (exact rationals of binary fractions run to 30+ digits)."""
+    if not getattr(s, "floats", ()):
+        return s
+    import copy
+    v = copy.copy(s)
+    v.given = {k: _shown(x) for k, x in s.given.items()}
+    v.answers = {k: _shown(x) for k, x in s.answers.items()}
+    v.steps = []
+    for st in s.steps:
+        st2 = copy.copy(st)
+        st2.expr = _shown(st.expr)
+        v.steps.append(st2)
+    v.assumptions = [*s.assumptions, LONG_NOTE]
+    return v
+
+
 def _pretty(v) -> str:
     if isinstance(v, str):
         return v
@@ -73,6 +111,7 @@ def _pretty(v) -> str:
 
 def render_text(s: Solution) -> str:
     """Terminal rendering: statement, given, numbered steps, answers, checks."""
+    s = _view(s)
     out = [f"Exercise {s.id[2:]}: {s.title}", f"  {s.citation}", "", s.statement, ""]
     if s.assumptions:
         out.append("Assumptions:")
@@ -124,6 +163,7 @@ def render_markdown(s: Solution, *, level: int = 2, statement: bool = True,
     (a notebook shows it above), ``checks=False`` the machine checks; ``marks`` prefix
     passed and failed checks.
     """
+    s = _view(s)
     out = [f'{"#" * level} Exercise {s.id[2:]}: {s.title} <a id="ex-{s.id[2:]}"></a>', "",
            f"*{s.citation}*", ""]
     if statement:
@@ -222,6 +262,7 @@ def render_latex(s: Solution) -> str:
 
     Text is escaped; values are sympy's LaTeX in display maths.
     """
+    s = _view(s)
     out = [f"\\subsection*{{Exercise {s.id[2:]}: {_tex(s.title)}}}",
            f"\\textit{{{_tex(s.citation)}}}\\par", f"\\begin{{quote}}{_tex(s.statement)}"
            "\\end{quote}"]

@@ -11,7 +11,7 @@ from rigidsym import _cache
 
 __all__ = ["add_arguments", "run", "HELP"]
 
-HELP = "where the user cache is and what it holds (info), or empty it (clear)"
+HELP = "where the user cache is, what it holds (info); empty it (clear)"
 
 
 def add_arguments(c) -> None:

@@ -26,14 +26,24 @@ from rigidsym.report.exercises import svg_text, write_report
 
 __all__ = ["add_arguments", "run", "to_json", "write_report", "svg_text", "parse_value"]
 
-HELP = "solve chapter-3 exercises with computer algebra (worked solutions, machine-checked)"
+HELP = "solve a chapter-3 exercise, machine-checked (no id: list them)"
+EXAMPLES = """\
+  rigidsym exercise                   the 21 exercises with their titles
+  rigidsym exercise 3.10              a worked solution on the book's data
+  rigidsym exercise 3.4 --set f_2=1,1,1   on your own data (--parameters lists them)
+  rigidsym exercise --all --format json   every exercise's answers as JSON on stdout"""
 
 
 def add_arguments(p) -> None:
     """Arguments of ``rigidsym exercise``."""
-    p.add_argument("id", nargs="?", help="exercise id: 3.10 or ex3.10")
-    p.add_argument("--all", action="store_true", help="solve all 21 exercises")
-    p.add_argument("--json", help="write the results (schema 1) as JSON to this path")
+    p.add_argument("id", nargs="?",
+                   help="exercise id: 3.10 or ex3.10 (default: none, list the exercises)")
+    p.add_argument("--all", action="store_true", help="solve all 21 exercises (default: off)")
+    p.add_argument("--json", metavar="PATH",
+                   help="also write the results (schema 1) as JSON to this file (default: none)")
+    p.add_argument("--format", choices=("plain", "json"),
+                   help="with --all, what goes to stdout: one line per exercise, or the "
+                        "JSON document (default: plain)")
     p.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
                    help="a datum of the exercise (repeatable): n_1=0,0,5 (a vector), "
                         "I_A='1,0,0;0,2,0;0,0,3' (a matrix, rows split by ;), a=0.05; "
@@ -115,7 +125,9 @@ def _notebook(ex_id: str, path: str, data: dict) -> None:
         from rigidsym.exercises import write_notebook
         print(f"wrote {write_notebook(ex_id, path, **data)}")
     except ModuleNotFoundError as exc:
-        if exc.name != "nbformat" or data:
+        if exc.name != "nbformat":
+            raise
+        if data:
             raise ValueError("--notebook with data needs nbformat: pip install "
                              "\"rigidsym[notebooks]\"") from None
         from importlib.resources import files
@@ -127,14 +139,19 @@ def _notebook(ex_id: str, path: str, data: dict) -> None:
 
 def run(args) -> int:
     """Solve chapter-3 exercises with computer algebra (worked solutions, machine-checked)."""
-    if args.all == bool(args.id):
-        print("rigidsym: error: give one exercise id (e.g. 3.10) or --all", file=sys.stderr)
+    if args.all and args.id:
+        print("rigidsym: error: give one exercise id (e.g. 3.10) or --all, not both",
+              file=sys.stderr)
         return 2
+    if not args.all and not args.id:
+        return _list()
     varied = args.set or args.data or args.tol is not None
     try:
         if args.all and (varied or args.notebook or args.parameters):
             raise ValueError("--set, --data, --tol, --parameters and --notebook take one "
                              "exercise id, not --all")
+        if args.format and not args.all:
+            raise ValueError("--format is for --all; one exercise prints its solution")
         ids = EXERCISE_IDS if args.all else [normalise_id(args.id)]
         if args.parameters:
             print(parameters(ids[0]))
@@ -143,24 +160,75 @@ def run(args) -> int:
         if args.notebook:
             _notebook(ids[0], args.notebook, data)
             return 0
+        if args.all:
+            return _run_all(ids, args.format or "plain", args.json)
+        s = _solve_one(ids[0], data)
         if args.json:
             write_atomic(args.json, to_json(ids, data))
-        if args.all:
-            return _run_all(ids)
-        s = solve(ids[0], **data)
     except (ValueError, TypeError) as exc:
-        print(f"rigidsym: error: {exc}", file=sys.stderr)
+        print(f"rigidsym: error: {exc} ({_next_step(args)})", file=sys.stderr)
         return 2
     print(render_text(s))
     return 0 if s.checked else 1
 
 
-def _run_all(ids) -> int:
+def _next_step(args) -> str:
+    """What to run after a bad exercise id or bad data."""
+    try:
+        ex = normalise_id(args.id) if args.id else None
+    except ValueError:
+        return "rigidsym exercise lists the exercises"
+    if ex and (args.set or args.data or args.tol is not None):
+        return f"rigidsym exercise {ex[2:]} --parameters lists its data"
+    return "rigidsym exercise --help shows the options"
+
+
+def _list() -> int:
+    """``rigidsym exercise`` with no id: the exercises and their titles, read from the
+    modules' ``TITLE`` constants (nothing is solved)."""
+    from rigidsym.checking.worked import exercise_module
+
+    print("The chapter's 21 exercises (rigidsym exercise 3.10 solves one; --all solves all):")
+    for i in EXERCISE_IDS:
+        print(f"  {i[2:]:5s} {getattr(exercise_module(i), 'TITLE', '')}")
+    return 0
+
+
+def _solve_one(ex_id: str, data: dict):
+    """Solve one exercise with a spinner on stderr (a solution can take seconds)."""
+    from rigidsym._progress import Reporter
+
+    with Reporter("rigidsym exercise") as rep, \
+            rep.phase(f"solving exercise {ex_id[2:]}") as ph:
+        s = solve(ex_id, **data)
+        ph.finish(f"{s.status}, {'checked' if s.checked else 'NOT checked'}")
+    return s
+
+
+def _run_all(ids, fmt: str, json_path: str | None) -> int:
+    """Solve every exercise with progress on stderr; a line per exercise (or the JSON
+    document) on stdout."""
+    from rigidsym._progress import Reporter
+
     n_ok = 0
-    for i in ids:
-        s = solve(i)
-        ok = s.status == "solved" and s.checked
-        n_ok += ok
-        print(f"{s.id:7s} {s.status:8s} checked={str(s.checked).lower():5s} {s.title}")
-    print(f"{n_ok} / {len(ids)} solved and checked")
+    with Reporter("rigidsym exercise --all") as rep, \
+            rep.phase(f"solving {len(ids)} exercises", total=len(ids)) as ph:
+        for i in ids:
+            ph.label(f"solving exercise {i[2:]}")
+            s = solve(i)
+            ok = s.status == "solved" and s.checked
+            n_ok += ok
+            ph.advance(1, label=f"exercise {i[2:]} {s.status}")
+            if fmt == "plain":
+                print(f"{s.id:7s} {s.status:8s} checked={str(s.checked).lower():5s} {s.title}",
+                      flush=True)
+        ph.finish(f"{n_ok} / {len(ids)} solved and checked")
+    if json_path or fmt == "json":
+        doc = to_json(ids)  # from the solutions just cached
+        if json_path:
+            write_atomic(json_path, doc)
+        if fmt == "json":
+            sys.stdout.write(doc)
+    if fmt == "plain":
+        print(f"{n_ok} / {len(ids)} solved and checked")
     return 0 if n_ok == len(ids) else 1

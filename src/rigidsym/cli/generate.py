@@ -13,10 +13,13 @@ __all__ = ["cmd_generate", "cmd_build_c", "GENERATE", "BUILD_C"]
 def _generate_args(p) -> None:
     p.add_argument("--check", action="store_true",
                    help="regenerate in memory; print a diff and exit 1 on any difference "
-                        "(2 when there is no generated/ folder to compare with)")
-    p.add_argument("--out", default=None, help="output folder (default: generated/)")
+                        "(2 when there is no generated/ folder to compare with; default: "
+                        "off, write the files)")
+    p.add_argument("--out", default=None, metavar="DIR",
+                   help="output folder (default: generated/ of the source tree)")
     p.add_argument("--module", action="append", metavar="PATH_OR_DOTTED",
-                   help="a user module whose KERNELS to generate into --out (repeatable)")
+                   help="a user module whose KERNELS to generate into --out (repeatable; "
+                        "default: none, the package's kernels)")
     p.add_argument("--no-build", action="store_true",
                    help="with --module: write the C only; do not compile it into the cache")
 
@@ -35,7 +38,11 @@ def cmd_generate(args) -> int:
         print(f"error: no generated/ folder here ({out}): run from the repository root",
               file=sys.stderr)
         return 2
-    res = generate()
+    from rigidsym._progress import Reporter
+    with Reporter("rigidsym generate") as rep, \
+            rep.phase("deriving, optimising and printing the kernels") as ph:
+        res = generate()
+        ph.finish(f"{len(res.kernels)} kernels, {len(res.files)} files")
     for note in res.notes:
         print(f"note: {note}", file=sys.stderr)
     books = _notebooks()
@@ -52,7 +59,7 @@ def cmd_generate(args) -> int:
         return 0
     touched = write(res, out)
     if books:
-        from rigidsym.notebooks import NOTEBOOK_DIR, write_files
+        from rigidsym.report.notebooks import NOTEBOOK_DIR, write_files
         touched += [f"{NOTEBOOK_DIR}/{n}" for n in write_files(books, out / NOTEBOOK_DIR)]
     for t in touched:
         print(f"wrote {t}")
@@ -64,7 +71,7 @@ def cmd_generate(args) -> int:
 def _notebooks() -> dict[str, str]:
     """The exercise notebooks (``{}`` with a note when nbformat is not installed)."""
     try:
-        from rigidsym.notebooks import notebook_files
+        from rigidsym.report.notebooks import notebook_files
         return notebook_files()
     except ModuleNotFoundError as exc:
         if exc.name != "nbformat":
@@ -78,7 +85,7 @@ def _check_notebooks(books: dict[str, str], out: Path) -> bool:
     """Print the stale notebook files; True when any differs."""
     if not books:
         return False
-    from rigidsym.notebooks import NOTEBOOK_DIR, check_files
+    from rigidsym.report.notebooks import NOTEBOOK_DIR, check_files
     stale = check_files(books, out / NOTEBOOK_DIR)
     for name in stale:
         print(f"stale notebook file: generated/{NOTEBOOK_DIR}/{name}")
@@ -90,12 +97,15 @@ def _build_args(p) -> None:
                    help="a generated folder (rigidsym generate --out DIR); default the "
                         "package's kernels")
     p.add_argument("--module", action="append", metavar="PATH_OR_DOTTED",
-                   help="generate this user module's kernels into --out, then compile them")
-    p.add_argument("--out", default=None, help="output folder of --module")
+                   help="generate this user module's kernels into --out, then compile them "
+                        "(default: none)")
+    p.add_argument("--out", default=None, metavar="DIR",
+                   help="output folder of --module (default: none)")
     p.add_argument("--native", action="store_true",
                    help="build for this CPU only (-march=native) into the cache; used "
                         "whenever present")
-    p.add_argument("--force", action="store_true", help="rebuild even if cached")
+    p.add_argument("--force", action="store_true",
+                   help="rebuild even if a build is cached (default: off)")
     p.add_argument("--info", action="store_true",
                    help="print the build information of the kernels in use (JSON) and exit")
 
@@ -141,7 +151,10 @@ def cmd_build_c(args) -> int:
     return 0
 
 
-GENERATE = SimpleNamespace(HELP="generate the NumPy and C kernels into generated/",
-                           add_arguments=_generate_args, run=cmd_generate)
+GENERATE = SimpleNamespace(
+    HELP="generate the NumPy and C kernels (into generated/, or --out)",
+    EXAMPLES="  rigidsym generate --check             is generated/ up to date?\n"
+             "  rigidsym generate --module my_eqs.py --out mykernels/   your own kernels",
+    add_arguments=_generate_args, run=cmd_generate)
 BUILD_C = SimpleNamespace(HELP="compile the generated C kernels into the user cache",
                           add_arguments=_build_args, run=cmd_build_c)

@@ -8,20 +8,44 @@ import sys
 
 from rigidsym.checking.registry import REGISTRY
 from rigidsym.checking.usermodules import select_with_modules
-from rigidsym.cli._common import MODULE_HELP
+from rigidsym.cli._common import MODULE_HELP, add_repair_arguments, repair_options
 
 __all__ = ["add_arguments", "run"]
 
-HELP = "explain one equation (verdict, why, counterexample)"
+HELP = "explain one equation: verdict, counterexample, correction"
+EXAMPLES = """\
+  rigidsym show 3.57                  why (3.57) does not hold, in the book's symbols
+  rigidsym show 3.96                  every part of (3.96), one after the other
+  rigidsym show rot:trace --module examples/rotation_identities.py   one of your ids
+  rigidsym show 3.148 --json          the schema-2 record"""
 
 
 def add_arguments(s) -> None:
     """Arguments of ``rigidsym show``."""
-    s.add_argument("id")
-    s.add_argument("--module", action="append", metavar="PATH_OR_DOTTED", help=MODULE_HELP)
+    s.add_argument("id", help="an id: 3.57, 3.96 (all its parts), thm3.2.1, or one of your "
+                              "module's (namespace:name, with --module)")
+    s.add_argument("--module", action="append", metavar="PATH_OR_DOTTED",
+                   help=MODULE_HELP + " (default: none)")
     fmt = s.add_mutually_exclusive_group()
-    fmt.add_argument("--latex", action="store_true", help="print the members as LaTeX")
-    fmt.add_argument("--json", action="store_true", help="print the schema-2 record")
+    fmt.add_argument("--latex", action="store_true",
+                     help="print the members as LaTeX (default: book notation as text)")
+    fmt.add_argument("--json", action="store_true",
+                     help="print the schema-2 record (default: book notation as text)")
+    add_repair_arguments(s)
+
+
+def declared_where(eq) -> str:
+    """Where a declaration lives, function and file first: ``trace_wrong in
+    notes/rot.py``; a book module's dotted name last (a user module's import name is an
+    internal one and is left out)."""
+    mod = sys.modules[eq.module]
+    try:
+        src = os.path.relpath(inspect.getsourcefile(getattr(mod, eq.function.split(".")[0])))
+    except (TypeError, ValueError, AttributeError):  # no source file (a notebook cell)
+        src = eq.where
+    tail = "" if eq.module.startswith("_rigidsym_user_") or eq.module == "__main__" else \
+        f" (module {eq.module})"
+    return f"{eq.function} in {src}{tail}"
 
 
 def run(args) -> int:
@@ -29,15 +53,20 @@ def run(args) -> int:
     corrected form, singular set) in book notation; ``--latex`` or ``--json`` instead."""
     import json
 
+    from rigidsym._progress import Reporter
     from rigidsym.checking.checker import check
+    from rigidsym.checking.runner import verdict_words
     from rigidsym.printing import notation
     from rigidsym.report.record import result_record
     from rigidsym.report.show import explain, output_width
     width = output_width()
     for k, eq_id in enumerate(select_with_modules([args.id], None, args.module)):
         eq = REGISTRY[eq_id]
-        st = eq.build()
-        r = check(eq_id)
+        with Reporter("rigidsym show", keep=False) as rep, \
+                rep.phase(f"checking {eq_id}") as ph:
+            st = eq.build()
+            r = check(eq_id, **repair_options(args))
+            ph.finish(verdict_words(r))
         if args.json:
             print(json.dumps(result_record(r), indent=1, ensure_ascii=False))
             continue
@@ -49,9 +78,7 @@ def run(args) -> int:
                     print(f"% {role}{': ' + rel.label if rel.label else ''}\n"
                           f"{notation.latex(rel.lhs)} = {notation.latex(rel.rhs)}")
             continue
-        mod = sys.modules[eq.module]
-        src = inspect.getsourcefile(getattr(mod, eq.function.split(".")[0]))
-        where = f"{eq.function} of {eq.module} ({os.path.relpath(src)})"
+        where = declared_where(eq)
         if k:
             print("\n" + "-" * min(width, 40) + "\n")
         print(explain(r, {"printed": st.printed, "claim": st.claims,

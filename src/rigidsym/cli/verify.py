@@ -2,29 +2,55 @@
 
 from __future__ import annotations
 
+import sys
 import time
 
 from rigidsym._io import write_atomic
 from rigidsym.checking.runner import run_checks
 from rigidsym.checking.usermodules import select_with_modules
-from rigidsym.cli._common import JOBS, MODULE_HELP, console
+from rigidsym.cli._common import (
+    FORMATS,
+    JOBS,
+    MODULE_HELP,
+    add_repair_arguments,
+    console,
+    output_format,
+    repair_options,
+)
+from rigidsym.printing.labels import label_text
 
 __all__ = ["add_arguments", "run"]
 
-HELP = "decide equations of chapter 3"
+HELP = "decide the chapter's equations (or yours, with --module)"
+EXAMPLES = """\
+  rigidsym verify                         all 181 ids of the chapter (~40 s on 2 cores)
+  rigidsym verify 3.96 --section 3.8      every part of (3.96), and section 3.8
+  rigidsym verify --module my_eqs.py      your own equations
+  rigidsym verify --format json > v.json  the schema-2 document on stdout"""
 
 
 def add_arguments(v) -> None:
     """Arguments of ``rigidsym verify``."""
-    v.add_argument("ids", nargs="*", help="ids like 3.16, 3.96 (all parts), thm3.2.1")
-    v.add_argument("--section", action="append", help="3.2 ... 3.8 (repeatable)")
-    v.add_argument("--json", help="write the results as JSON to this path")
-    v.add_argument("--jobs", type=int, default=JOBS, help=f"worker processes (default {JOBS})")
-    v.add_argument("--quiet", action="store_true", help="no progress bar or table")
+    v.add_argument("ids", nargs="*",
+                   help="ids like 3.16, 3.96 (all its parts), thm3.2.1 (default: the whole "
+                        "chapter, or the --module's ids)")
+    v.add_argument("--section", action="append", metavar="S",
+                   help="a section 3.2 ... 3.8 (repeatable; default: none)")
+    v.add_argument("--json", metavar="PATH",
+                   help="also write the results (JSON schema 2) to this file (default: none)")
+    v.add_argument("--format", choices=FORMATS,
+                   help="what goes to stdout: a table, plain text lines (never cut) or the "
+                        "JSON document (default: table on a terminal, plain in a pipe)")
+    v.add_argument("--jobs", type=int, default=JOBS, metavar="N", help="worker processes")
+    v.add_argument("--quiet", action="store_true",
+                   help="no progress and no table, only the summary line (default: off)")
     v.add_argument("--module", action="append", metavar="PATH_OR_DOTTED",
-                   help=MODULE_HELP + "; only its ids unless ids or sections are given")
+                   help=MODULE_HELP + "; only its ids unless ids or sections are given "
+                                      "(default: none)")
     v.add_argument("--no-cache", action="store_true",
-                   help="check every id again; neither read nor write the verdict cache")
+                   help="check every id again; neither read nor write the verdict cache "
+                        "(default: off, the cache is used)")
+    add_repair_arguments(v)
 
 
 def _table(results) -> None:
@@ -32,13 +58,38 @@ def _table(results) -> None:
 
     t = Table(title="rigidsym verify")
     for col in ("id", "title", "verdict", "method", "seconds"):
-        t.add_column(col)
+        t.add_column(col, overflow="fold")
     for r in results:
         style = "" if r.verdict == r.expected else "bold red"
         v = r.verdict if r.verdict == r.expected else f"{r.verdict} (expected {r.expected})"
         secs = "cached" if getattr(r, "cached", False) else f"{r.seconds:.2f}"
-        t.add_row(r.id, r.title[:48], v, r.method, secs, style=style)
+        t.add_row(r.id, label_text(r.title), v, r.method, secs, style=style)
     console().print(t)
+
+
+def _plain(results) -> None:
+    """One line per id, columns aligned, nothing cut (for pipes, logs and grep)."""
+    rows = [(r.id, r.verdict if r.verdict == r.expected else
+             f"{r.verdict} (EXPECTED {r.expected})", r.method,
+             "cached" if getattr(r, "cached", False) else f"{r.seconds:.2f}",
+             label_text(r.title)) for r in results]
+    head = ("id", "verdict", "method", "seconds", "title")
+    w = [max(len(x[k]) for x in [head, *rows]) for k in range(4)]
+    for row in [head, *rows]:
+        print("  ".join(x.ljust(w[k]) for k, x in enumerate(row[:4])) + "  " + row[4])
+
+
+def _repairs(results) -> None:
+    """One line per failing member: its first repair (``rigidsym show ID`` lists them all)."""
+    for r in results:
+        for s in getattr(r, "repair_search", None) or []:
+            who = f"({r.id})" + (f" {s['member']!r}" if s["member"] else "")
+            first = next((x for x in r.repairs if x["member"] == s["member"]), None)
+            if first is None:
+                print(f"{who}: {s['words']}")
+                continue
+            tag = ", the declared correction" if first["equals_declared"] else ""
+            print(f"{who}: repair ({'; then '.join(first['edits'])}{tag}): {first['text']}")
 
 
 def run(args) -> int:
@@ -48,18 +99,28 @@ def run(args) -> int:
     ids = select_with_modules(args.ids, args.section, args.module)
     t0 = time.perf_counter()
     results = run_checks(ids, jobs=args.jobs, progress=not args.quiet,
-                         cache=not args.no_cache)
+                         cache=not args.no_cache, **repair_options(args))
     wall = time.perf_counter() - t0
-    if not args.quiet:
-        _table(results)
+    fmt = output_format(args)
     if args.json:
         write_atomic(args.json, to_json(results))
     off = [r for r in results if r.verdict != r.expected]
     s = summary(results)
     hits = "" if args.no_cache else \
         f" ({sum(bool(getattr(r, 'cached', False)) for r in results)} from the cache)"
-    print(f"{len(results)} checked in {wall:.1f} s{hits}: "
-          + ", ".join(f"{k} {v}" for k, v in s.items()))
+    line = (f"{len(results)} checked in {wall:.1f} s{hits}: "
+            + ", ".join(f"{k} {v}" for k, v in s.items()))
+    if fmt == "json":  # stdout is the document; the words go to stderr
+        sys.stdout.write(to_json(results))
+        print(line, file=sys.stderr)
+        return 1 if off else 0
+    if not args.quiet:
+        (_table if fmt == "table" else _plain)(results)
+        _repairs(results)
+    print(line)
     for r in off:
-        print(f"MISMATCH ({r.id}): computed {r.verdict}, expected {r.expected}: {r.detail}")
+        print(f"MISMATCH ({r.id}): computed {r.verdict}, expected {r.expected}: {r.detail} "
+              f"(rigidsym show {r.id} explains it)")
+    if any(r.verdict == "does-not-hold" for r in results) and not args.quiet:
+        print("Why an equation does not hold, in the book's symbols: rigidsym show ID")
     return 1 if off else 0

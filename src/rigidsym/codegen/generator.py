@@ -42,7 +42,7 @@ __all__ = ["generate", "write", "check", "GenerationResult", "default_out_dir", 
 TEMPLATES = Path(__file__).parent / "templates"
 #: file names under generated/ owned by the generator (anything else there is an orphan,
 #: except the report folder, which belongs to ``rigidsym report``, and the notebooks, which
-#: ``rigidsym generate`` writes through :mod:`rigidsym.notebooks`).
+#: ``rigidsym generate`` writes through :mod:`rigidsym.report.notebooks`).
 _FOREIGN = ("report/", "notebooks/")
 
 

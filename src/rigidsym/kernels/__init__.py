@@ -176,10 +176,33 @@ def batch_function(name: str, backend_name: str | None = None,
                    threads: int | None = None, dtype=np.float64) -> Callable:
     """Low-level ``f(*inputs, *outputs) -> flags`` of a package kernel (for benchmarks).
 
-    Inputs and outputs are C-contiguous ``(n, ...)`` float64 arrays, without validation or
-    broadcasting. For the C backend the return value is the number of flagged samples
-    (singular or non-finite, written as NaN); for NumPy the ``(n,)`` uint8 flags (1
-    singular, 2 non-finite output).
+    The call takes every input *and then every output*, in the kernel's order (its
+    signature, ``help(kernels.NAME)``), all preallocated by the caller: C-contiguous
+    ``(n, ...)`` arrays of ``dtype`` with the same leading ``n``, no validation, no
+    broadcasting, no allocation. ``kernels.load(DIR).batch_function`` is the same for a
+    generated directory. Passing the inputs only fails (``expected 5 arguments, got 4``
+    for ``N_matrix``: ``n``, the thread count, ``e``, ``phi`` and the missing output).
+
+    Args:
+        name: a kernel's name (``"N_matrix"``).
+        backend_name: ``"c"`` or ``"numpy"`` (default: the current backend).
+        threads: worker threads of the C loop (default: :func:`get_num_threads`).
+        dtype: ``np.float64`` or ``np.float32`` (arrays in and out of that type).
+
+    Returns:
+        ``f(*inputs, *outputs)``: for the C backend the number of flagged samples
+        (singular or non-finite, written as NaN); for NumPy the ``(n,)`` uint8 flags (1
+        singular, 2 non-finite output).
+
+    Example:
+        >>> import numpy as np
+        >>> f = batch_function("N_matrix", "numpy")
+        >>> e, phi = np.tile([0.0, 0.6, 0.8], (4, 1)), np.linspace(0.5, 2.0, 4)
+        >>> N = np.empty((4, 4, 3))           # the output, (n, 4, 3), preallocated
+        >>> int(np.sum(f(e, phi, N)))         # no flagged sample
+        0
+        >>> bool(np.allclose(N, N_matrix(e, phi)))
+        True
     """
     return _state.builtin().batch_function(name, backend_name, threads, dtype)
 

@@ -245,7 +245,9 @@ class KernelSpace:
 
     def batch_function(self, name: str, backend_name: str | None = None,
                        threads: int | None = None, dtype=np.float64) -> Callable:
-        """``f(*inputs, *outputs)`` on C-contiguous ``(n, ...)`` arrays of ``dtype``.
+        """``f(*inputs, *outputs)`` on C-contiguous ``(n, ...)`` arrays of ``dtype``: every
+        input then every output, preallocated by the caller, in the kernel's order
+        (:func:`rigidsym.kernels.batch_function` has an example).
 
         ``threads`` as for the kernels (None: :func:`rigidsym.kernels._scale.get_num_threads`; one
         thread below ``MIN_PARALLEL`` samples); outputs are the same for every count.

@@ -17,12 +17,16 @@ from markupsafe import Markup
 
 from rigidsym.checking.checker import Result
 from rigidsym.printing import notation
-from rigidsym.printing.mathml import latex_to_mathml
+from rigidsym.printing.labels import label_text, latex_spans, latex_text
+from rigidsym.report.counterexample import html_view, sides_of
+from rigidsym.report.glossary import html_entries
 from rigidsym.report.markdown import anchor, sections
+from rigidsym.report.mathtext import math_or_text
 from rigidsym.report.numeric import numeric_sentence
 from rigidsym.report.record import CITATION, result_record, summary
+from rigidsym.report.repairs import errata_rows, repairs_view
 
-__all__ = ["to_html", "markdown_to_html", "math_or_text"]
+__all__ = ["to_html", "markdown_to_html", "math_or_text", "prose_html"]
 
 
 @cache
@@ -30,17 +34,6 @@ def _env() -> Environment:
     return Environment(loader=PackageLoader("rigidsym.report", "templates"), autoescape=True,
                        undefined=StrictUndefined, keep_trailing_newline=True,
                        trim_blocks=False, lstrip_blocks=False)
-
-
-def math_or_text(latex: str | None, fallback: str | None, display: bool = True) -> Markup:
-    """MathML of ``latex``; the text ``fallback`` in ``<code>`` when there is no LaTeX or
-    the converter rejects it (a member too long to print, an unusual construct)."""
-    if latex:
-        try:
-            return Markup(latex_to_mathml(latex, display=display))
-        except ValueError:
-            pass
-    return Markup(f"<code>{html.escape(fallback or '(not shown: too long)')}</code>")
 
 
 def _value_mathml(text: str | None) -> Markup:
@@ -54,11 +47,36 @@ def _value_mathml(text: str | None) -> Markup:
     return math_or_text(notation.latex(v), text, display=False)
 
 
+def prose_html(text: str | None) -> Markup:
+    """Running text of a declaration (evidence, a label) as HTML: its LaTeX pieces
+    (``\\dot{\\boldsymbol{\\nu}}``) as inline MathML, its ASCII mathematics in book
+    notation (:func:`rigidsym.printing.labels.label_text`), the rest escaped."""
+    out = []
+    for is_tex, piece in latex_spans(text or ""):
+        out.append(str(math_or_text(piece, latex_text(piece), display=False)) if is_tex
+                   else html.escape(label_text(piece)))
+    return Markup("".join(out))
+
+
+def _prose_view(rec: dict) -> dict:
+    """The record's words for the page: evidence and labels in book notation."""
+    ce = rec["counterexample"] or {}
+    failing = next((m["text"] for m in rec["members"]
+                    if m["status"] == "fails" and m["role"] != "corrected"), None)
+    return {"evidence_html": prose_html(rec["evidence"]), "ce_sides": sides_of(failing),
+            "failing_member_shown": label_text(rec["failing_member"] or ""),
+            "title_shown": label_text(rec["title"]),
+            "singular_shown": label_text(rec["singular"] or ""),
+            "ce_member_shown": label_text(ce.get("member") or "")}
+
+
 def _view(rec: dict) -> dict:
     v = dict(rec, anchor=anchor(rec["id"]),
              printed_mathml=math_or_text(rec["printed_latex"], rec["printed_latex"]),
              numeric_text=numeric_sentence(rec["numeric"]))
-    v["members"] = [dict(m, mathml=math_or_text(m["latex"], m["text"])) for m in rec["members"]]
+    v["members"] = [dict(m, mathml=math_or_text(m["latex"], m["text"]),
+                         label_shown=label_text(m["label"])) for m in rec["members"]]
+    v.update(_prose_view(rec))
     v["failing_text"] = next((m["text"] for m in rec["members"]
                               if m["status"] == "fails" and m["role"] != "corrected"), None)
     ce = rec["counterexample"]
@@ -67,9 +85,11 @@ def _view(rec: dict) -> dict:
                        rhs_mathml=_value_mathml(ce["rhs"]),
                        residual_mathml=_value_mathml(ce.get("residual")),
                        residual_max_abs=ce.get("residual_max_abs"),
-                       residual_max_abs_decimal=ce.get("residual_max_abs_decimal"))
+                       residual_max_abs_decimal=ce.get("residual_max_abs_decimal"),
+                       view=html_view(ce, math_or_text))
     else:
         v["ce"] = None
+    v["repair_groups"] = repairs_view(rec)
     return v
 
 
@@ -90,7 +110,7 @@ def to_html(results: list[Result]) -> str:
         citation=CITATION.replace("*", ""), counts=list(s.items()), total=len(results),
         bad=[v for v in views if v["verdict"] == "does-not-hold"],
         off=[v for v in views if v["verdict"] != v["expected"]],
-        groups=sections(views))
+        groups=sections(views), errata=errata_rows(views), words=html_entries())
 
 
 def markdown_to_html(text: str, title: str, figures: dict[str, str] | None = None) -> str:

@@ -6,14 +6,15 @@ component dumps; ``full=True`` adds them (``chapter3-full.md``, never committed)
 
 from __future__ import annotations
 
-import sympy as sp
-
 from rigidsym.checking.checker import NUMERIC_DIGITS, NUMERIC_POINTS, Result
-from rigidsym.printing import notation
+from rigidsym.printing.labels import label_text, latex_spans
+from rigidsym.report.counterexample import markdown_lines, sides_of
 from rigidsym.report.numeric import numeric_sentence
 from rigidsym.report.record import CITATION, result_record, summary
+from rigidsym.report.repairs import markdown_errata, markdown_repairs
 
-__all__ = ["to_markdown", "anchor", "sections", "how_checked", "numeric_words"]
+__all__ = ["to_markdown", "anchor", "sections", "how_checked", "numeric_words",
+           "prose_markdown"]
 
 
 def anchor(eq_id: str) -> str:
@@ -33,6 +34,13 @@ def _cell(text: str) -> str:
     return (text or "").replace("|", "\\|").replace("\n", " ")
 
 
+def prose_markdown(text: str | None) -> str:
+    """Running text of a declaration (evidence) for Markdown: LaTeX pieces as ``$...$``
+    maths (rendered by GitHub, GitLab and the HTML page), ASCII mathematics in book
+    notation (:func:`rigidsym.printing.labels.label_text`)."""
+    return "".join(f"${p}$" if is_tex else label_text(p) for is_tex, p in latex_spans(text or ""))
+
+
 def _code(text: str) -> str:
     return "`" + (text or "").replace("`", "'") + "`"
 
@@ -41,7 +49,7 @@ def _members(rec: dict) -> list[str]:
     out = []
     for m in rec["members"]:
         who = [m["role"]] if m["role"] != "printed" else []
-        who += [f"*{_cell(m['label'])}*"] if m["label"] else []
+        who += [f"*{_cell(label_text(m['label']))}*"] if m["label"] else []
         how = f" ({m['method']})" if m["status"] in ("holds", "fails") and \
             m["method"] != rec["method"] else ""  # the verdict line names the common method
         form = f" {_code(m['text'])}" if m["text"] else " (long explicit form: see the full report)"
@@ -61,37 +69,14 @@ def how_checked(rec: dict) -> str:
     if rec["model"]:
         out.append("Model: " + "; ".join(rec["model"]) + ".")
     if rec["singular"]:
-        out.append(f"Singular set: {rec['singular']}.")
+        out.append(f"Singular set: {label_text(rec['singular'])}.")
     out.append(numeric_words(rec["numeric"]))
     return " ".join(x for x in out if x)
 
 
-def _value(text: str) -> str:
-    """An exact value (sympy's string) in book notation on one line: ``[1/2, 0; 0, 1]``."""
-    try:
-        return notation.text(sp.sympify(text))
-    except (sp.SympifyError, SyntaxError, TypeError):
-        return text
-
-
-def _counterexample(ce: dict) -> list[str]:
-    out = ["Counterexample (exact rational point"
-           + (f", member *{_cell(ce['member'])}*" if ce["member"] else "") + "):", "",
-           "| atom | exact | decimal |", "|---|---|---|"]
-    out += [f"| {_cell(p['book'])} | {_code(p['exact'])} | {p['decimal']} |" for p in ce["point"]]
-    out += ["", "Both sides there, and the residual (left minus right):", "", "```",
-            f"left  = {_value(ce['lhs'])}", f"right = {_value(ce['rhs'])}"]
-    if ce.get("residual") is not None:
-        out += [f"left - right = {_value(ce['residual'])}", "```", "",
-                f"Largest residual entry: {ce['residual_max_abs']} "
-                f"(≈ {ce['residual_max_abs_decimal']}).", ""]
-    else:
-        out += ["```", "", "The two sides have different shapes.", ""]
-    return out
-
-
 def _entry(rec: dict, full: bool) -> list[str]:
-    out = [f'### ({rec["id"]}) {rec["title"]} <a id="{anchor(rec["id"])}"></a>', ""]
+    out = [f'### ({rec["id"]}) {label_text(rec["title"])} <a id="{anchor(rec["id"])}"></a>',
+           ""]
     how = rec["method"]
     if rec["failure_bound"] is not None and rec["verdict"] != "does-not-hold":
         how += f", P(false zero) ≤ {rec['failure_bound']:.1e}"
@@ -105,10 +90,14 @@ def _entry(rec: dict, full: bool) -> list[str]:
         out += _members(rec) + [""]  # one unlabelled member that holds: the line above says it
     if rec["verdict"] == "does-not-hold":
         fm = rec["failing_member"]
-        out += [f"Fails: {'member *' + _cell(fm) + '*' if fm else 'the equation (one member)'}."
-                f" Cause: **{rec['cause_class']}**. {rec['evidence']}", ""]
+        fails = f"member *{_cell(label_text(fm))}*" if fm else "the equation (one member)"
+        out += [f"Fails: {fails}. Cause: **{rec['cause_class']}**. "
+                f"{prose_markdown(rec['evidence'])}", ""]
         if rec["counterexample"]:
-            out += _counterexample(rec["counterexample"])
+            failing = next((m["text"] for m in rec["members"] if m["status"] == "fails"
+                            and m["role"] != "corrected"), None)
+            out += markdown_lines(rec["counterexample"], sides_of(failing))
+    out += markdown_repairs(rec)
     out += [how_checked(rec), ""]
     if full:
         out += ["Transcribed:", "", "```", rec["printed"], "```", "",
@@ -144,10 +133,11 @@ def to_markdown(results: list[Result], full: bool = False) -> str:
     if bad:
         out += ["## Equations that do not hold as printed", "",
                 "| id | title | failing member | cause | what is known |", "|---|---|---|---|---|"]
-        out += [f"| [({r['id']})](#{anchor(r['id'])}) | {_cell(r['title'])} | "
-                f"{_cell(r['failing_member'] or 'the equation')} | {r['cause_class']} | "
-                f"{_cell(r['evidence'])} |" for r in bad]
+        out += [f"| [({r['id']})](#{anchor(r['id'])}) | {_cell(label_text(r['title']))} | "
+                f"{_cell(label_text(r['failing_member']) or 'the equation')} | "
+                f"{r['cause_class']} | {_cell(prose_markdown(r['evidence']))} |" for r in bad]
         out.append("")
+    out += markdown_errata(recs, anchor)
     off = [r for r in recs if r["verdict"] != r["expected"]]
     if off:
         out += ["## Verdicts that differ from the recorded expectation", ""]

@@ -132,11 +132,13 @@ def notebook_text(ex_id: str, data: dict | None = None) -> str:
                                 "zero test or exact arithmetic), without reusing the solution "
                                 "path.", id=f"{tag}-checks-title"),
               new_code_cell("if solution.status == \"ill-posed\":\n"
-                            "    print(\"ill-posed:\", solution.reason)\n"
-                            "for check in solution.checks:\n"
-                            "    print(\"passed\" if check.passed else \"FAILED\", \"|\", "
-                            "check.name)\n"
-                            "print(\"every check passed:\", solution.checked)",
+                            "    print(\"no checks: the data admit no answer.\", "
+                            "solution.reason)\n"
+                            "else:\n"
+                            "    for check in solution.checks:\n"
+                            "        print(\"passed\" if check.passed else \"FAILED\", "
+                            "\"|\", check.name)\n"
+                            "    print(\"every check passed:\", solution.checked)",
                             id=f"{tag}-checks")]
     if hasattr(mod, "figure"):
         cells += [new_markdown_cell("## Figure\n\nDrawn from the computed answers: new data "

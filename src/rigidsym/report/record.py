@@ -15,8 +15,9 @@ from collections import Counter
 import sympy as sp
 
 from rigidsym.checking.checker import Result
-from rigidsym.checking.registry import VERDICTS
+from rigidsym.checking.registry import USER_CAUSE_DEFAULT, VERDICTS, is_user_id
 from rigidsym.printing import notation
+from rigidsym.report.repairs import repair_fields
 
 __all__ = ["summary", "result_record", "to_json", "cause_words",
            "failure_bound", "CITATION", "SCHEMA", "RESIDUAL_FLOOR", "document_header"]
@@ -32,7 +33,10 @@ SCHEMA = 2
 #: of a 50-digit evaluation depend on evaluation order, which is not ours to fix.
 RESIDUAL_FLOOR = 1e-40
 
-_CAUSE_CLASS = {"conversion": "conversion garble", "erratum": "erratum"}
+#: the cause classes in words (``cause`` is the declared value, ``cause_class`` these words)
+_CAUSE_CLASS = {"conversion": "a slip in the text's conversion (from the printed book to "
+                              "text and LaTeX)",
+                "erratum": "an erratum (the book's own error)"}
 _BOUND = re.compile(r"P\(false zero\) <= ([0-9.]+E[-+]?\d+)")
 
 
@@ -50,20 +54,21 @@ def cause_words(r: Result) -> tuple[str, str]:
     """The cause class of a does-not-hold and one sentence of what is known.
 
     Returns:
-        ``(class, text)``: class is ``conversion garble``, ``erratum`` or ``cause not
-        determined`` (neither a garble nor a known erratum); text is the evidence, or for an
-        undetermined cause ``"Neither a conversion garble nor a known erratum; what is
-        known: ..."``. ``("", "")`` for
-        any other verdict.
+        ``(class, text)``: class is ``a slip in the text's conversion (...)``, ``an erratum
+        (...)`` or ``cause not determined``; text is the evidence, for an undetermined cause
+        prefixed ``"Not a known slip of the conversion nor a known erratum; what is known:
+        ..."``. ``("", "")`` for any other verdict.
     """
     if r.verdict != "does-not-hold":
         return "", ""
-    cls = _CAUSE_CLASS.get(r.cause or "", "cause not determined")
     known = r.evidence or r.detail
-    if cls == "cause not determined":
-        return cls, (f"Neither a conversion garble nor a known erratum; what is known: "
-                     f"{known}")
-    return cls, known
+    if r.cause in _CAUSE_CLASS:
+        return _CAUSE_CLASS[r.cause], known
+    if is_user_id(r.id):  # a user's own words for the cause, if any
+        own = r.cause not in (None, "", "unknown", USER_CAUSE_DEFAULT)
+        return (r.cause if own else "cause not determined"), known
+    return "cause not determined", (f"Not a known slip of the text's conversion nor a known "
+                                    f"erratum; what is known: {known}")
 
 
 def failure_bound(r: Result) -> float | None:
@@ -97,12 +102,16 @@ def _atom_text(name: str) -> str:
 
 
 def counterexample_record(ce: dict | None) -> dict | None:
-    """The counterexample with book names, decimals, the residual and its largest entry."""
+    """The counterexample with book names, decimals, the residual and its largest entry;
+    ``symbols`` (the book symbols of the failing member there, exact and decimal) and
+    ``chosen`` (how the point was chosen) as :mod:`rigidsym.checking.bookpoint` gave them."""
     if not ce:
         return None
     point = [{"atom": k, "book": _atom_text(k), "exact": v, "decimal": _decimal(v)}
              for k, v in ce["point"].items()]
-    out = {"member": ce.get("member", ""), "point": point, "lhs": ce["lhs"], "rhs": ce["rhs"]}
+    out = {"member": ce.get("member", ""), "point": point, "lhs": ce["lhs"], "rhs": ce["rhs"],
+           # the book's symbols there and how the point was chosen (rigidsym.checking.bookpoint)
+           "symbols": ce.get("symbols", []), "chosen": ce.get("chosen")}
     res = ce.get("residual")
     if res is not None:
         out["residual"] = res
@@ -146,6 +155,7 @@ def result_record(r: Result, timings: bool = True, full: bool = False) -> dict:
         "counterexample": counterexample_record(r.counterexample),
         "singular": r.singular, "model": r.model, "numeric": numeric,
     }
+    rec.update(repair_fields(r))  # issue 23: correction, repairs, repair_search
     if timings:
         rec["seconds"] = r.seconds
         rec["cached"] = getattr(r, "cached", False)

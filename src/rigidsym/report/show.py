@@ -17,12 +17,14 @@ import sys
 import sympy as sp
 
 from rigidsym.checking.checker import Result
-from rigidsym.checking.registry import Rel
+from rigidsym.checking.registry import Rel, is_user_id
 from rigidsym.printing import notation
+from rigidsym.printing.labels import label_text
+from rigidsym.report.counterexample import GLOSSARY_HINT, sides_of, text_lines
 from rigidsym.report.numeric import numeric_sentence
 from rigidsym.report.record import cause_words, counterexample_record, result_record
 
-__all__ = ["explain", "output_width", "expr_lines", "DEFAULT_WIDTH"]
+__all__ = ["explain", "output_width", "expr_lines", "repair_lines", "DEFAULT_WIDTH"]
 
 #: width when stdout is not a terminal and ``COLUMNS`` is not set
 DEFAULT_WIDTH = 100
@@ -119,18 +121,10 @@ def _rel_lines(rel: Rel, width: int, indent: str) -> list[str]:
     return [f"{indent}{lhs} ="] + expr_lines(rel.rhs, width, indent + "    ")
 
 
-def _value_lines(label: str, text: str | None, width: int, indent: str) -> list[str]:
-    if text is None:
-        return [f"{indent}{label}: (the two sides have different shapes)"]
-    try:
-        v = sp.sympify(text)
-    except (sp.SympifyError, SyntaxError, TypeError):
-        return [f"{indent}{label}: {text}"]
-    head = f"{indent}{label}: "
-    one = notation.text(v)
-    if len(head) + len(one) <= width:
-        return [head + one]
-    return [head.rstrip()] + expr_lines(v, width, indent + "    ")
+def _failing_text(r: Result) -> str | None:
+    """The book text of the failing member (``ȧ∥ = (ȧ·ω)/‖ω‖²``), if it has one."""
+    return next((m["text"] for m in r.members
+                 if m["status"] == "fails" and m["role"] != "corrected"), None)
 
 
 def explain(r: Result, rels: dict[str, list[Rel]], where: str, width: int) -> str:
@@ -147,8 +141,9 @@ def explain(r: Result, rels: dict[str, list[Rel]], where: str, width: int) -> st
         Text, no line wider than ``width`` unless a single unbreakable token is.
     """
     rec = result_record(r, timings=False)
-    out = [f"({r.id}) {r.title}",
-           *_hard_wrap(f"Book: Sec. {r.section} · {r.kind} · declared in {where}", width, "")]
+    sec = f"Section {r.section}" if is_user_id(r.id) else f"Book: Sec. {r.section}"
+    out = [f"({r.id}) {label_text(r.title)}",
+           *_hard_wrap(f"{sec} · {r.kind} · declared in {where}", width, "")]
     verdict = f"Verdict: {r.verdict}"
     if r.verdict != r.expected:
         verdict += f" (EXPECTED {r.expected})"
@@ -161,12 +156,14 @@ def explain(r: Result, rels: dict[str, list[Rel]], where: str, width: int) -> st
     blocks = {"printed": [], "claim": [], "corrected": []}
     for m in r.members:
         rel = pools[m["role"]].pop(0) if pools.get(m["role"]) else None
-        head = f"  [{m['status']}] {m['label'] or m['role']}"
+        head = f"  [{m['status']}] {label_text(m['label']) or m['role']}"
         if m["status"] in ("holds", "fails"):
             head += f" ({m['method']})"
         blocks[m["role"]].append(head + ":")
         if rel is not None:
             blocks[m["role"]] += _rel_lines(rel, width, "      ")
+        elif m.get("text"):  # a corrected member found by the repair search
+            blocks[m["role"]] += _hard_wrap(m["text"], width, "      ")
     titles = {"printed": "Members as printed:", "claim": "Claims it makes:",
               "corrected": "Corrected form (verified):"}
     for role in ("printed", "claim"):
@@ -175,28 +172,52 @@ def explain(r: Result, rels: dict[str, list[Rel]], where: str, width: int) -> st
     if r.verdict == "does-not-hold":
         cls, why = cause_words(r)
         fm = r.failing_member
-        out += [f"Fails: {'member ' + repr(fm) if fm else 'the equation (its only member)'}",
-                *_hard_wrap(f"Cause: {cls}. {why}", width, "  "), ""]
+        fails = f"member “{label_text(fm)}”" if fm else "the equation (its only member)"
+        out += [f"Fails: {fails}",
+                *_hard_wrap(f"Cause: {cls}. {label_text(why)}", width, "  "), ""]
         ce = counterexample_record(r.counterexample)
         if ce:
-            out.append("Counterexample (an exact rational point):")
-            for p in ce["point"]:
-                dec = f"   (≈ {p['decimal']})" if p["decimal"] and p["decimal"] != p["exact"] \
-                    else ""
-                out += _hard_wrap(f"{p['book']} = {p['exact']}{dec}", width, "  ")
-            out += _value_lines("left side there", ce["lhs"], width, "  ")
-            out += _value_lines("right side there", ce["rhs"], width, "  ")
-            out += _value_lines("residual (left - right)", ce.get("residual"), width, "  ")
-            out.append("")
+            out += text_lines(ce, sides_of(_failing_text(r)), width) + [""]
     if blocks["corrected"]:
         title = titles["corrected"]
+        if r.correction == "found by search":
+            title = "Corrected form (found by the repair search, verified):"
         if bound is not None:
             title = title[:-1] + f" (failure probability <= {bound:.1e}):"
         out += [title] + blocks["corrected"] + [""]
+    out += repair_lines(r, width)
     if r.singular:
-        out += _hard_wrap(f"Singular set: {r.singular}", width, "")
+        out += _hard_wrap(f"Singular set: {label_text(r.singular)}", width, "")
     if r.model:
         out += _hard_wrap("Model: " + "; ".join(r.model), width, "")
     if numeric_sentence(r.numeric):
         out += _hard_wrap(numeric_sentence(r.numeric), width, "")
+    out += _hard_wrap(GLOSSARY_HINT, width, "")
     return "\n".join(out)
+
+
+def repair_lines(r: Result, width: int) -> list[str]:
+    """The repairs of a does-not-hold (issue 23), in book notation with each edited
+    subterm in ``⟦…⟧``: per failing member, what was searched and each repair kept, with
+    its method, failure bound and whether it is the declared correction."""
+    if not r.repair_search and r.correction is None:
+        return []
+    out = ["Repairs (the smallest edits that make a failing member hold, each verified; "
+           "⟦…⟧ marks the edited subterm):"]
+    out = _hard_wrap(out[0], width, "")
+    if r.correction is not None:
+        out += _hard_wrap(f"Correction: {r.correction}", width, "  ")
+    for s in r.repair_search:
+        who = f"member {s['member']!r}" if s["member"] else "the equation"
+        out += _hard_wrap(f"{who}: {s['words']}", width, "  ")
+        mine = [x for x in r.repairs if x["member"] == s["member"]]
+        for k, x in enumerate(mine, 1):
+            tags = [x["method"]]
+            if x["failure_bound"] is not None:
+                tags.append(f"failure probability <= {x['failure_bound']:.1e}")
+            if x["equals_declared"]:
+                tags.append("the declared correction")
+            out += _hard_wrap(f"{k}. {'; then '.join(x['edits'])} ({', '.join(tags)})",
+                              width, "    ")
+            out += _hard_wrap(x["text"], width, "       ")
+    return out + [""]

@@ -5,6 +5,7 @@ from __future__ import annotations
 from pathlib import Path
 
 from rigidsym._io import write_atomic
+from rigidsym._progress import Reporter
 from rigidsym.checking.registry import select
 from rigidsym.checking.runner import run_checks
 from rigidsym.checking.usermodules import load_many
@@ -30,8 +31,9 @@ def write_user_report(modules, out: Path, jobs: int = 1, cache: bool = False) ->
 
     code = 0
     for um in load_many(modules):
-        results = run_checks(select(None, None, [um.name]), jobs=jobs, progress=True,
-                             cache=cache)
+        with Reporter(f"rigidsym report --module {um.title}") as rep:
+            results = run_checks(select(None, None, [um.name]), jobs=jobs, progress=True,
+                                 cache=cache, reporter=rep)
         # the chapter's renderers title the page by the book: here the module names it
         book_title, title = "Chapter 3 checked: verdicts", f"{um.title} checked: verdicts"
         md = to_markdown(results).split("\n")

@@ -72,9 +72,29 @@ def _replace_jets(expr, funcs: dict[str, sp.Expr]):
     return expr.xreplace({f: _jet_symbol(n, 0) for n, f in funcs.items()})
 
 
+#: the group name the generic rules are derived under, renamed to each group's own
+_GENERIC = "rigidsym_generic_group"
+
+
 @cache
 def _group_rules(kind: str, name: str, names: tuple[str, ...], timed: bool, order: int):
-    """Rational rules ``(atom name, derivative order) -> expr`` for a constrained group."""
+    """Rational rules ``(atom name, derivative order) -> expr`` for a constrained group.
+
+    The derivatives are taken once per kind and order (a rotation's second derivative takes
+    a second), under a generic name whose parameters are then renamed to this group's.
+    """
+    generic = _generic_rules(kind, timed, order)
+    syms = set().union(*(ex.free_symbols for rules in generic for ex in rules.values()))
+    rename = {x: sp.Symbol(name + x.name[len(_GENERIC):], real=True) for x in syms
+              if x.name.startswith(_GENERIC)}
+    return {(n, k): ex.xreplace(rename)
+            for n, rules in zip(names, generic, strict=True) for k, ex in rules.items()}
+
+
+@cache
+def _generic_rules(kind: str, timed: bool, order: int) -> list[dict]:
+    """Per entry of the group, ``{derivative order: expr}`` under the name :data:`_GENERIC`."""
+    name = _GENERIC
     t = TIME
     if kind == "unit":
         pn = [f"{name}__u", f"{name}__v"]
@@ -97,15 +117,15 @@ def _group_rules(kind: str, name: str, names: tuple[str, ...], timed: bool, orde
     else:
         from rigidsym.algebra.primitives import rotation_from_quaternion
         vals = list(rotation_from_quaternion(P))
-    rules = {}
+    out = []
     funcs = dict(zip(pn, P, strict=True)) if timed else {}
-    for n, val in zip(names, vals, strict=True):
-        for k in range(order + 1):
-            ex = sp.diff(val, t, k) if (timed and k) else val
-            rules[(n, k)] = _replace_jets(ex, funcs) if timed else ex
-            if not timed:
-                break
-    return rules
+    for val in vals:
+        rules = {}
+        for k in range(order + 1 if timed else 1):
+            ex = sp.diff(val, t, k) if k else val
+            rules[k] = _replace_jets(ex, funcs) if timed else ex
+        out.append(rules)
+    return out
 
 
 # --------------------------------------------------------------------------- plan

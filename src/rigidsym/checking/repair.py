@@ -1,0 +1,352 @@
+"""The repair search: the smallest edits that make a failing member hold, each verified.
+
+For a printed member that does not hold, the edits of :mod:`rigidsym.checking.mutate` are
+tried, single edits first, then pairs. Each candidate is
+
+1. built raw (no sympy canonicalisation) and its shapes checked: a candidate whose shapes
+   do not fit is no candidate and is not counted;
+2. evaluated at two fixed exact points modulo a prime, reusing the values of unchanged
+   subtrees (:mod:`rigidsym.checking.fasteval`): a candidate whose sides differ there does
+   not hold (exactly), and most die here;
+3. if it survives: rejected when its two sides are the same expression with the book
+   symbols left unsubstituted (``Eᵀ = Eᵀ``, ``(M_A - M_A)[:3, 3:] = O``): such a
+   "repair" holds trivially and says nothing;
+4. decided by the full sound zero test (the checker's ``decide_rel``): only a candidate
+   decided to hold is a repair, with its method and failure bound.
+
+The search is bounded by a count of candidates (:data:`REPAIR_BUDGET` per member), never by
+time, so its results do not depend on the machine. It reports every single-edit repair,
+else every two-edit one, sorted by edit kind and then position in the tree, keeps
+:data:`KEEP` and says how many were found; a repaired equation found twice by the same kind
+of edit (``-Eᵀ = E`` and ``Eᵀ = -E``) counts once (found by two kinds, it is two
+explanations of the slip, and both are reported).
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Callable
+from dataclasses import dataclass, field
+
+import sympy as sp
+
+from rigidsym.checking import candidates, mutate
+from rigidsym.checking import treeops as T
+from rigidsym.checking.explicit import _entries, explicit, shape_of
+from rigidsym.checking.fasteval import (
+    GenericValues,
+    Inconclusive,
+    Undecidable,
+    difference,
+    differs,
+    points_for,
+)
+from rigidsym.checking.registry import Rel
+from rigidsym.printing import notation
+from rigidsym.zero.decide import Unsupported, make_plan
+
+__all__ = ["REPAIR_BUDGET", "KEEP", "FULL_TESTS", "Search", "Found", "Decision", "Shared",
+           "share",
+           "search_member", "book_difference", "same_relation", "trivial", "repair_record",
+           "search_record"]
+
+#: candidates tried per failing member unless the run or the declaration says otherwise
+REPAIR_BUDGET = 5000
+#: repairs kept per member (the count found is reported too)
+KEEP = 5
+#: full zero tests per member at most (survivors of the fast filter are rare; a member the
+#: filter cannot evaluate would otherwise send every candidate to the full test)
+FULL_TESTS = 40
+_BOUND = re.compile(r"P\(false zero\) <= ([0-9.]+E[-+]?\d+)")
+
+
+@dataclass
+class Decision:
+    """A decision in the shape :func:`rigidsym.checking.records.member_record` reads."""
+
+    zero: bool | None
+    method: str
+    detail: str
+
+
+@dataclass
+class Found:
+    """A verified repair: the edits, the repaired member (canonical), its decision."""
+
+    edits: tuple
+    rel: Rel
+    method: str
+    detail: str
+
+    @property
+    def rel_sides(self) -> tuple:
+        """``(lhs, rhs)`` of the repaired member."""
+        return (self.rel.lhs, self.rel.rhs)
+
+
+@dataclass
+class Search:
+    """What the search of one member did and found."""
+
+    member: str
+    candidates: int = 0
+    complete: bool = False
+    depth: int = 0
+    found: list = field(default_factory=list)
+    full_tests: int = 0
+    undecidable: int = 0
+    stopped: str = ""
+
+
+@dataclass
+class Shared:
+    """What the searches of one statement share: the pools, the fixed points (with their
+    memoised values), the generic evaluator and the shapes."""
+
+    rels: list
+    model: dict
+    pools: mutate.Pools
+    points: list
+    decide: Callable
+    seed: int
+    generic: GenericValues = field(default_factory=GenericValues)
+    shapes: dict = field(default_factory=dict)
+
+
+@dataclass
+class _Ctx:
+    rel: Rel
+    sh: Shared
+    budget: int
+    search: Search
+    sides: tuple
+    seen: set = field(default_factory=set)
+    found_diffs: list = field(default_factory=list)
+
+
+# --------------------------------------------------------------------------- book symbols
+def book_difference(lhs, rhs) -> list | None:
+    """``lhs - rhs`` entry by entry, expanded, with the book symbols left unsubstituted
+    (``None`` when the shapes differ)."""
+    if shape_of(lhs) != shape_of(rhs):
+        return None
+    a, b = explicit(lhs, {}), explicit(rhs, {})
+    return [sp.expand(x - y) for x, y in zip(_entries(a), _entries(b), strict=True)]
+
+
+def _generic(g: GenericValues, lhs, rhs):
+    lhs, rhs = T.sides(Rel(lhs, rhs))  # hashable (a declared side may be a mutable Matrix)
+    try:
+        return difference(g, lhs, rhs)
+    except Inconclusive:
+        return None
+
+
+def same_relation(g: GenericValues, r1: tuple, r2: tuple) -> bool:
+    """Whether ``r1 = (lhs, rhs)`` and ``r2`` state the same equation with the book symbols
+    left unsubstituted: their expanded differences are equal or opposite (``a = b`` is
+    ``-a = -b``). A generic evaluation rules most pairs out; the expansion confirms."""
+    d1, d2 = _generic(g, *r1), _generic(g, *r2)
+    if d1 is not None and d2 is not None and d1 != d2 and d1 != -d2:
+        return False
+    e1, e2 = book_difference(*r1), book_difference(*r2)
+    if e1 is None or e2 is None or len(e1) != len(e2):
+        return False
+    return all(sp.expand(x - y) == 0 for x, y in zip(e1, e2, strict=True)) or \
+        all(sp.expand(x + y) == 0 for x, y in zip(e1, e2, strict=True))
+
+
+def trivial(g: GenericValues, lhs, rhs) -> bool:
+    """Whether the two sides are the same expression with the book symbols left
+    unsubstituted (``Eᵀ = Eᵀ``): expanded, their difference is zero."""
+    d = _generic(g, lhs, rhs)
+    if d is not None and any(x != 0 for x in d.entries()):
+        return False
+    e = book_difference(lhs, rhs)
+    return e is not None and all(x == 0 for x in e)
+
+
+# --------------------------------------------------------------------------- search
+def _plan(rels, model, pl: mutate.Pools):
+    exprs = []
+    for k in list(model) + [a for group in pl.symbols.values() for a in group]:
+        exprs += _entries(explicit(k, model))  # a bare angle a factor brings in, too
+    for r in rels:
+        exprs += _entries(explicit(r.lhs, model)) + _entries(explicit(r.rhs, model))
+    return make_plan(exprs)
+
+
+def share(failing: list[Rel], rels: list[Rel], model: dict, decide: Callable,
+          seed: int) -> Shared:
+    """The shared part of the searches of one statement's failing members.
+
+    Args:
+        failing: the members that do not hold.
+        rels: the statement's printed members and claims (the pools of terms, factors and
+            symbols; never the corrected form).
+        model: the statement's model.
+        decide: ``decide(rel, model, seed)`` -> an outcome with ``zero``, ``method`` and
+            ``detail`` (the checker's sound decision of one relation).
+        seed: the seed of the fixed points and of the full tests.
+    """
+    pl = mutate.pools(rels, model)
+    try:
+        plan = _plan(rels, model, pl)
+        pts = points_for(model, plan, [x for r in failing for x in T.sides(r)], seed)
+    except (Unsupported, TypeError, ValueError):
+        pts = []
+    return Shared(rels, model, pl, pts, decide, seed)
+
+
+def search_member(rel: Rel, sh: Shared, budget: int = REPAIR_BUDGET) -> Search:
+    """Search the repairs of one failing member.
+
+    Args:
+        rel: the member that does not hold.
+        sh: from :func:`share`.
+        budget: the most candidates to try.
+
+    Returns:
+        A :class:`Search`; ``found`` holds the verified repairs in report order.
+    """
+    s = Search(member=rel.label)
+    ctx = _Ctx(rel, sh, budget, s, T.sides(rel))
+    singles = candidates.prepare(rel, mutate.single_edits(rel, sh.pools), ctx.sides,
+                                 sh.shapes)
+    done = _run(ctx, (((x.edit,), x.raw) for x in singles))
+    if s.found:
+        s.depth, s.complete = 1, done
+        return s
+    if not done:
+        return s
+    done = _run(ctx, candidates.pairs(rel, singles, ctx.sides))
+    s.depth = 2 if s.found else 0
+    s.complete = done
+    s.found.sort(key=lambda f: (sorted(e.order for e in f.edits)))
+    return s
+
+
+def _run(ctx: _Ctx, cands) -> bool:
+    """Try ``(edits, raw)`` candidates in order; True when they were all tried within the
+    budget."""
+    survivors = []
+    shapes = ctx.sh.shapes
+    for edits, raw in cands:
+        if raw is None or raw in ctx.seen:
+            continue
+        ctx.seen.add(raw)
+        try:
+            a, b = T.shape(raw[0], shapes), T.shape(raw[1], shapes)
+        except T.ShapeError:
+            continue
+        if (a or (1, 1)) != (b or (1, 1)):
+            continue
+        if ctx.search.candidates >= ctx.budget:
+            ctx.search.stopped = "budget"
+            _verify(ctx, survivors)
+            return False
+        ctx.search.candidates += 1
+        if not _dies(ctx, raw):
+            survivors.append(edits)
+    return _verify(ctx, survivors)
+
+
+def _dies(ctx: _Ctx, raw) -> bool:
+    """Whether the candidate is out: it differs at a fixed point (so it does not hold), or
+    the engine cannot decide it at all (counted in ``undecidable``)."""
+    for pv in ctx.sh.points:
+        try:
+            if differs(pv, raw[0], raw[1]):
+                return True
+        except Undecidable:
+            ctx.search.undecidable += 1
+            return True
+        except Inconclusive:
+            continue
+    return False
+
+
+def _verify(ctx: _Ctx, survivors) -> bool:
+    sh = ctx.sh
+    for edits in survivors:
+        if ctx.search.full_tests >= FULL_TESTS:
+            ctx.search.stopped = "full tests"
+            return False
+        try:
+            lhs, rhs = mutate.apply_edits(ctx.rel, edits, "canonical", sh.pools.keep)
+            if shape_of(lhs) != shape_of(rhs) or trivial(sh.generic, lhs, rhs):
+                continue  # holds trivially, with the book symbols left unsubstituted
+        except (T.ShapeError, TypeError, ValueError):
+            continue
+        kinds = [e.kind for e in edits]
+        if any([e.kind for e in f.edits] == kinds
+               and same_relation(sh.generic, (lhs, rhs), f.rel_sides)
+               for f in ctx.search.found):
+            continue  # the same repaired equation by the same kind of edit (-Eᵀ = E, Eᵀ = -E)
+        ctx.search.full_tests += 1
+        try:
+            out = sh.decide(Rel(lhs, rhs, ctx.rel.label), sh.model, sh.seed)
+        except (ValueError, ArithmeticError, TypeError, Unsupported):
+            ctx.search.undecidable += 1  # no meaning: the inverse of a singular matrix
+            continue
+        if out.zero is True:
+            ctx.search.found.append(Found(tuple(edits), Rel(lhs, rhs, ctx.rel.label),
+                                          out.method, out.detail))
+    return True
+
+
+# --------------------------------------------------------------------------- records
+def _bound(detail: str) -> float | None:
+    found = [float(x) for x in _BOUND.findall(detail or "")]
+    return max(found) if found else None
+
+
+def repair_record(f: Found, printed: Rel, keep: set, equals_declared: bool) -> dict:
+    """The schema-2 record of one repair.
+
+    Returns:
+        ``{"member", "edits", "kinds", "text", "latex", "printed_text", "printed_latex",
+        "method", "failure_bound", "equals_declared"}``: ``edits`` in words and ``kinds``
+        (:data:`rigidsym.checking.mutate.KINDS`); ``text``/``latex`` are the repaired member
+        in book notation with each edited subterm marked (``⟦…⟧``, ``\\boxed{…}``), and
+        ``printed_text``/``printed_latex`` the printed member with the subterms the edits
+        change marked.
+    """
+    lm, rm = mutate.apply_edits(printed, f.edits, "marked", keep)
+    lp, rp = mutate.apply_edits(printed, f.edits, "printed", keep)
+    return {"member": printed.label, "edits": [mutate.describe(e) for e in f.edits],
+            "kinds": [e.kind for e in f.edits],
+            "text": f"{notation.text(lm)} = {notation.text(rm)}",
+            "latex": notation.latex_relation(lm, rm),
+            "printed_text": f"{notation.text(lp)} = {notation.text(rp)}",
+            "printed_latex": notation.latex_relation(lp, rp),
+            "method": f.method, "failure_bound": _bound(f.detail),
+            "equals_declared": equals_declared}
+
+
+def search_record(s: Search, budget: int) -> dict:
+    """What was searched for one member, in words that never guess.
+
+    Returns:
+        ``{"member", "candidates", "found", "complete", "undecidable", "budget",
+        "words"}``: ``words`` is "no repair within 2 edits" only when every single edit and
+        pair of the vocabulary was tried (and says how many of them the zero test cannot
+        decide, such as an odd power of ``‖ω‖``), else "none in the first N candidates".
+    """
+    n = len(s.found)
+    if n:
+        kind = "one-edit" if s.depth == 1 else "two-edit"
+        words = (f"{n} {kind} repair{'s' if n > 1 else ''} found in {s.candidates} "
+                 f"candidates" + (f" ({KEEP} kept)" if n > KEEP else ""))
+    elif s.complete:
+        words = (f"no repair within 2 edits ({s.candidates} candidates: every single edit "
+                 f"and pair of the vocabulary"
+                 + (f"; {s.undecidable} of them beyond the zero test" if s.undecidable
+                    else "") + ")")
+    else:
+        words = f"none in the first {s.candidates} candidates"
+        if s.stopped == "full tests":
+            words += f" ({FULL_TESTS} full zero tests spent)"
+    return {"member": s.member, "candidates": s.candidates, "found": n,
+            "complete": s.complete, "undecidable": s.undecidable, "budget": budget,
+            "words": words}

@@ -1,0 +1,115 @@
+"""Book notation for the short ASCII texts declarations write: member labels and evidence.
+
+A declaration labels a member ``"adot . omega/||omega||^2"`` and states evidence as
+``"the trailing factor omega is missing"``: plain ASCII, easy to type. Printed next to the
+member itself (``ȧ∥ = (ȧ·ω)/‖ω‖²``) that mixes two notations on one line, so
+:func:`label_text` rewrites the *mathematical* tokens of such a text in the book's Unicode
+notation (the same names as :func:`rigidsym.printing.notation.book_text`) and leaves every
+English word alone: only Greek letter names, names with an accent or a subscript
+(``adot``, ``e_dot``, ``Ntilde``, ``N~``, ``r0``, ``a_par``, ``I_C``) and the ASCII
+operators ``||x||``, ``^T``, ``^2``, `` . `` and `` x `` (a cross product between two
+operands) are rewritten. LaTeX commands (``\\dot{\\mathbf{v}}``) become Unicode text
+(:func:`latex_text`) where a text output cannot render them.
+"""
+
+from __future__ import annotations
+
+import re
+import unicodedata
+
+from rigidsym.printing.notation import _GREEK, book_text
+
+__all__ = ["label_text", "latex_text", "latex_spans"]
+
+_COMBINING = {"dot": "\u0307", "ddot": "\u0308", "tilde": "\u0303", "hat": "\u0302",
+              "bar": "\u0304"}
+_SUP = str.maketrans("0123456789-", "⁰¹²³⁴⁵⁶⁷⁸⁹⁻")
+_STEM = r"(?:[A-Za-z]|" + "|".join(sorted(_GREEK, key=len, reverse=True)) + ")"
+#: a token that is mathematics however it is read (never an English word)
+_MATH_TOKEN = re.compile(
+    rf"^(?:{_STEM}(?:dot|ddot|tilde)"                    # adot, Ntilde, omegadot
+    rf"|{_STEM}\d{{1,2}}(?:dot)?"                         # r0, p2, u0dot
+    rf"|(?:{_STEM}|{_STEM}(?:dot|ddot|tilde)|{_STEM}\d{{1,2}})"
+    rf"(?:_(?:dot|ddot|tilde|hat|bar|par|perp|\d{{1,2}}|[A-Za-z]{{1,2}}))+"  # a_dot, I_C
+    rf"|{'|'.join(_GREEK)})'*$")
+_TOKEN = re.compile(r"(?<![A-Za-z0-9_])[A-Za-z][A-Za-z0-9_]*'*")  # not inside "3x4"
+
+
+def _mathy(tok: str) -> bool:
+    return len(tok) == 1 or bool(_MATH_TOKEN.match(tok))
+
+
+def _token(tok: str) -> str:
+    if tok.endswith("_prime"):
+        return _token(tok[:-6]) + "'"
+    if not _MATH_TOKEN.match(tok):
+        return tok
+    return book_text(tok)
+
+
+def label_text(text: str) -> str:
+    """An ASCII label or evidence sentence with its mathematics in book notation.
+
+    ``"adot . omega/||omega||^2"`` -> ``"ȧ·ω/‖ω‖²"``; ``"Ntilde vdot"`` -> ``"Ñ v̇"``;
+    ``"normal to omega"`` -> ``"normal to ω"`` (words stay as they are). LaTeX commands in
+    the text are rendered as Unicode (:func:`latex_text`).
+    """
+    if not text:
+        return text
+    if "\\" in text:
+        text = "".join(latex_text(p) if is_tex else p for is_tex, p in latex_spans(text))
+    out = re.sub(r"\|\|([^|]+?)\|\|", lambda m: f"‖{m.group(1)}‖", text)
+    out = re.sub(r"([A-Za-z])~", lambda m: m.group(1) + _COMBINING["tilde"], out)
+    out = re.sub(r"\^T\b", "ᵀ", out)
+    out = re.sub(r"\^(-?\d+)\b", lambda m: m.group(1).translate(_SUP), out)
+    out = out.replace("!=", "≠").replace("<=", "≤").replace(">=", "≥")
+    # a dot product: "a . b", or "w.w" between two mathematical tokens (not "e.g.")
+    out = re.sub(r"(?<=[\w)‖'\u0307\u0308\u0303]) \. (?=[\w(‖])", "·", out)
+    out = re.sub(r"\b([A-Za-z][\w']*)\.([A-Za-z][\w']*)\b(?!\.)",
+                 lambda m: f"{m.group(1)}·{m.group(2)}" if _mathy(m.group(1))
+                 and _mathy(m.group(2)) else m.group(0), out)
+    # a cross product: " x " between two operands (the x of "x = ..." is an operand)
+    out = re.sub(r"(?<=[\w)\]‖'\u0307\u0308\u0303]) x (?=[A-Za-z(\[‖])", " × ", out)
+    return unicodedata.normalize("NFC", _TOKEN.sub(lambda m: _token(m.group(0)), out))
+
+
+# --------------------------------------------------------------------------- LaTeX
+_TEX_GROUP = r"\{(?:[^{}]|\{(?:[^{}]|\{[^{}]*\})*\})*\}"
+#: a LaTeX span in running text: commands with their brace groups, sub/superscripts
+_TEX_SPAN = re.compile(rf"(?:\\[A-Za-z]+(?:{_TEX_GROUP})*(?:[_^](?:{_TEX_GROUP}|\w))*)+")
+
+
+def latex_spans(text: str) -> list[tuple[bool, str]]:
+    """``text`` cut into ``(is_latex, piece)``: the LaTeX pieces are runs of commands with
+    their brace groups (``\\dot{\\boldsymbol{\\nu}}``), the rest is prose."""
+    out, pos = [], 0
+    for m in _TEX_SPAN.finditer(text):
+        if m.start() > pos:
+            out.append((False, text[pos:m.start()]))
+        out.append((True, m.group(0)))
+        pos = m.end()
+    if pos < len(text):
+        out.append((False, text[pos:]))
+    return out
+
+
+_TEX_STYLE = re.compile(r"\\(?:mathbf|boldsymbol|mathrm|mathit|bm|operatorname)\{([^{}]*)\}")
+_TEX_SYMBOLS = {r"\|": "‖", r"\cdot": "·", r"\times": "×", r"\parallel": "∥",
+                r"\perp": "⊥", r"\le": "≤", r"\ge": "≥", r"\neq": "≠", r"\quad": " "}
+
+
+def latex_text(tex: str) -> str:
+    """A short LaTeX piece as Unicode text: ``\\dot{\\boldsymbol{\\nu}}`` -> ``ν̇``,
+    ``\\tilde{\\mathbf{N}}`` -> ``Ñ``; unknown commands lose their backslash."""
+    s = _TEX_STYLE.sub(lambda m: m.group(1), tex)
+    for cmd, ch in _TEX_SYMBOLS.items():
+        s = s.replace(cmd, ch)
+    s = re.sub(r"\\([A-Za-z]+)", lambda m: _GREEK.get(m.group(1), m.group(1)), s)
+    while True:  # \dot{x} -> x + combining dot, innermost first
+        m = re.search(r"(dot|ddot|tilde|hat|bar)\{([^{}]*)\}", s)
+        if not m:
+            break
+        s = s[:m.start()] + m.group(2) + _COMBINING[m.group(1)] + s[m.end():]
+    s = re.sub(r"_\{([^{}]*)\}", r"_\1", s)
+    s = re.sub(r"\^\{([^{}]*)\}", r"^\1", s)
+    return s.replace("{", "").replace("}", "")

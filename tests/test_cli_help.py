@@ -1,0 +1,116 @@
+"""Help that shows the way (issue 24 item 3): every option has help and its default, the
+top-level help lists the commands one line each with examples, ``rigidsym exercise`` lists
+the exercises without solving any, errors name the next step, piped output is never cut."""
+
+from __future__ import annotations
+
+import argparse
+import json
+
+import pytest
+
+from rigidsym.checking.worked import EXERCISE_IDS, exercise_module
+from rigidsym.cli import build_parser, main
+from rigidsym.cli._common import HelpFormatter
+
+
+def _subparsers(p: argparse.ArgumentParser) -> dict[str, argparse.ArgumentParser]:
+    out = {}
+    for action in p._actions:
+        if isinstance(action, argparse._SubParsersAction):
+            for name, sub in action.choices.items():
+                out[name] = sub
+                out.update({f"{name} {k}": v for k, v in _subparsers(sub).items()})
+    return out
+
+
+def _options():
+    parser = build_parser()
+    for name, sub in _subparsers(parser).items():
+        for action in sub._actions:
+            if isinstance(action, argparse._HelpAction | argparse._SubParsersAction):
+                continue
+            yield name, sub, action
+
+
+@pytest.mark.parametrize("name, sub, action", list(_options()),
+                         ids=lambda x: x if isinstance(x, str) else "")
+def test_every_option_has_help_with_its_default(name, sub, action):
+    text = HelpFormatter(name)._get_help_string(action)
+    what = "/".join(action.option_strings) or action.dest
+    assert text and len(text) > 10, f"rigidsym {name} {what}: no help text"
+    flag = action.nargs == 0  # store_true: the default (off) goes without saying
+    required = not action.option_strings and action.nargs not in ("?", "*")
+    if not flag and not required:
+        assert "default" in text, f"rigidsym {name} {what}: the help does not give the default"
+
+
+def test_top_level_help_lists_commands_one_line_each_and_examples(capsys):
+    with pytest.raises(SystemExit) as exc:
+        main(["--help"])
+    assert exc.value.code == 0
+    out = capsys.readouterr().out
+    assert "``" not in out and "as they land" not in out  # no docstring fragments
+    commands = [n for n in _subparsers(build_parser()) if " " not in n]
+    listed = [line.split()[0] for line in out.split("commands:")[1].split("examples")[0]
+              .splitlines()[2:] if line.strip()]
+    assert listed == commands                     # each command on exactly one line
+    examples = out.split("examples, one per job:")[1].splitlines()
+    assert sum(line.lstrip().startswith("rigidsym ") for line in examples) >= 3
+    assert "rigidsym glossary" in out
+
+
+def test_command_helps_read_alike():
+    """One style for the one-line helps: lower case, no final full stop, fits a line."""
+    parser = build_parser()
+    for action in parser._subparsers._group_actions[0]._choices_actions:
+        h = action.help
+        assert h[0].islower() and not h.endswith("."), (action.dest, h)
+        assert len(h) <= 64, (action.dest, h)
+
+
+def test_exercise_without_an_id_lists_all_without_solving(monkeypatch, capsys):
+    import rigidsym.cli.exercise as cli_ex
+
+    def no_solving(*a, **k):
+        raise AssertionError("listing must not solve")
+
+    monkeypatch.setattr(cli_ex, "solve", no_solving)
+    assert main(["exercise"]) == 0
+    out = capsys.readouterr().out.splitlines()
+    rows = [line for line in out if line.startswith("  ")]
+    assert len(rows) == len(EXERCISE_IDS) == 21
+    for i, row in zip(EXERCISE_IDS, rows, strict=True):
+        assert row.split()[0] == i[2:] and exercise_module(i).TITLE in row
+
+
+@pytest.mark.parametrize("argv, hint", [
+    (["exercise", "3.99"], "rigidsym exercise"),
+    (["verify", "3.999"], "rigidsym verify --section"),
+    (["show", "frob"], "rigidsym show --help"),
+    (["verify", "--frobnicate"], "rigidsym verify --help"),
+    (["frobnicate"], "rigidsym --help"),
+    (["glossary", "frobnication"], "rigidsym glossary"),
+])
+def test_errors_name_the_next_step(argv, hint, capsys):
+    with pytest.raises(SystemExit) as exc:
+        raise SystemExit(main(argv))
+    assert exc.value.code == 2
+    err = capsys.readouterr().err.strip()
+    assert err.startswith("rigidsym: error:") and "\n" not in err
+    assert hint in err, err
+
+
+def test_verify_plain_and_json_on_stdout_are_whole(capsys, monkeypatch):
+    """In a pipe nothing is cut: titles in full in the plain format; --format json is the
+    schema-2 document alone on stdout."""
+    monkeypatch.setattr("sys.stdout.isatty", lambda: False, raising=False)
+    assert main(["verify", "3.1", "thm3.2.1", "--jobs", "1", "--format", "plain"]) == 0
+    out = capsys.readouterr().out
+    from rigidsym.checking.registry import REGISTRY
+    for i in ("3.1", "thm3.2.1"):
+        assert REGISTRY[i].title.split()[-1] in out
+    assert "…" not in out
+    assert main(["verify", "3.1", "--jobs", "1", "--format", "json"]) == 0
+    doc = json.loads(capsys.readouterr().out)
+    assert doc["schema"] == 2 and doc["equations"][0]["id"] == "3.1"

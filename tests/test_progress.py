@@ -1,0 +1,235 @@
+"""Commands that never go quiet (issue 24 item 2): ``report`` and ``exercise --all`` speak
+within seconds on a terminal (a live display refreshed several times a second) and in a pipe
+(one line at the start and at the end of each phase); labels say what is being done and the
+verdict once known; the estimate of the time left is stable."""
+
+from __future__ import annotations
+
+import io
+import os
+import re
+import select
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import pytest
+
+from rigidsym import _progress
+from rigidsym._progress import Reporter, format_seconds
+from rigidsym.checking import runner
+
+ROOT = Path(__file__).resolve().parents[1]
+#: the first output must come within this many seconds (about 3 s on the 2-core machine
+#: under a load average of 11; Python and sympy start in about 1 s on a quiet one)
+FIRST_OUTPUT_S = 10.0
+_ANSI = re.compile(rb"\x1b\[[0-9;?]*[A-Za-z]")
+
+
+def _command(*args: str) -> list[str]:
+    return [sys.executable, "-m", "rigidsym", *args]
+
+
+def _env(tmp_path) -> dict:
+    env = dict(os.environ, RIGIDSYM_CACHE=str(tmp_path / "cache"), COLUMNS="120")
+    env.pop("RIGIDSYM_ASCII", None)
+    return env
+
+
+def _first_text_on_a_terminal(argv, env, timeout=60.0) -> tuple[float, bytes, int]:
+    """Run ``argv`` under a pseudo-terminal until it writes words; then count the writes of
+    the next 2.5 s (the live display's refreshes). Returns (seconds to first words, the
+    text, refreshes)."""
+    import pty
+
+    master, slave = pty.openpty()
+    t0 = time.monotonic()
+    p = subprocess.Popen(argv, stdin=slave, stdout=slave, stderr=slave, close_fds=True,
+                         cwd=ROOT, env=env)
+    os.close(slave)
+    buf, first = b"", None
+    try:
+        while time.monotonic() - t0 < timeout:
+            if select.select([master], [], [], 0.05)[0]:
+                buf += os.read(master, 65536)
+                if re.search(rb"[a-z]{5,}", _ANSI.sub(b"", buf)):
+                    first = time.monotonic() - t0
+                    break
+        writes, t1 = 0, time.monotonic()
+        while first is not None and time.monotonic() - t1 < 2.5:
+            if select.select([master], [], [], 0.05)[0]:
+                os.read(master, 65536)
+                writes += 1
+    finally:
+        p.kill()
+        p.wait()
+        os.close(master)
+    assert first is not None, f"no output within {timeout} s: {buf[:200]!r}"
+    return first, _ANSI.sub(b"", buf), writes
+
+
+def _first_line_in_a_pipe(argv, env, timeout=60.0) -> tuple[float, str]:
+    t0 = time.monotonic()
+    p = subprocess.Popen(argv, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, cwd=ROOT,
+                         env=env)
+    try:
+        assert select.select([p.stdout], [], [], timeout)[0], "no output"
+        line = p.stdout.readline().decode()
+        return time.monotonic() - t0, line
+    finally:
+        p.kill()
+        p.wait()
+
+
+@pytest.mark.parametrize("args, words", [
+    (("report", "--out", "{tmp}"), b"loading the chapter"),
+    (("exercise", "--all"), b"solving 21 exercises")])
+def test_first_output_on_a_terminal_within_seconds_and_refreshed(tmp_path, args, words):
+    argv = _command(*(a.format(tmp=tmp_path / "out") for a in args))
+    first, text, writes = _first_text_on_a_terminal(argv, _env(tmp_path))
+    assert first < FIRST_OUTPUT_S, f"first output after {first:.1f} s"
+    assert words in text
+    assert writes >= 2, "the live display must refresh at least once a second"
+
+
+@pytest.mark.parametrize("args, line", [
+    (("report", "--out", "{tmp}"), "rigidsym report: loading the chapter's declarations ..."),
+    (("exercise", "--all"), "rigidsym exercise --all: solving 21 exercises ...")])
+def test_first_output_in_a_pipe_within_seconds(tmp_path, args, line):
+    argv = _command(*(a.format(tmp=tmp_path / "out") for a in args))
+    first, got = _first_line_in_a_pipe(argv, _env(tmp_path))
+    assert first < FIRST_OUTPUT_S, f"first output after {first:.1f} s"
+    assert got.strip() == line
+
+
+@pytest.mark.slow
+def test_report_in_a_pipe_states_every_phase(tmp_path):
+    """The whole report, piped: a start and an end line per phase, nothing else on stderr."""
+    p = subprocess.run(_command("report", "--out", str(tmp_path / "out")), cwd=ROOT,
+                       env=_env(tmp_path), capture_output=True, text=True, check=True)
+    lines = p.stderr.splitlines()
+    phases = ["loading the chapter's declarations", "checking 181 ids",
+              "rendering and writing 3 files of the chapter report", "solving 21 exercises",
+              "rendering and writing the exercises (Markdown, HTML, figures)"]
+    assert len(lines) == 2 * len(phases), lines
+    for k, what in enumerate(phases):
+        assert lines[2 * k] == f"rigidsym report: {what} ..."
+        assert lines[2 * k + 1].startswith(f"rigidsym report: {what}: done in ")
+    assert "11 does-not-hold" in lines[3]
+    assert p.stdout.startswith("wrote ")
+
+
+@pytest.mark.slow
+def test_exercise_all_in_a_pipe(tmp_path):
+    p = subprocess.run(_command("exercise", "--all"), cwd=ROOT, env=_env(tmp_path),
+                       capture_output=True, text=True)
+    assert p.stderr.splitlines()[0] == "rigidsym exercise --all: solving 21 exercises ..."
+    assert "21 / 21 solved and checked" in p.stderr.splitlines()[1]
+    assert len(p.stdout.splitlines()) == 22
+
+
+# --------------------------------------------------------------------------- units
+def test_piped_reporter_writes_one_line_per_phase_start_and_end():
+    out = io.StringIO()
+    with Reporter("rigidsym test", stream=out) as rep:
+        with rep.phase("doing a", total=3) as ph:
+            for k in range(3):
+                ph.label(f"item {k}")
+                ph.advance(1, label=f"item {k} done")
+            ph.finish("3 items")
+        with rep.phase("doing b"):
+            pass
+    lines = out.getvalue().splitlines()
+    assert lines[0] == "rigidsym test: doing a ..."
+    assert re.fullmatch(r"rigidsym test: doing a: done in \d+\.\d s: 3 items", lines[1])
+    assert lines[2] == "rigidsym test: doing b ..."
+    assert len(lines) == 4
+
+
+def test_disabled_reporter_is_silent():
+    out = io.StringIO()
+    with Reporter("x", enabled=False, stream=out) as rep, rep.phase("y", total=1) as ph:
+        ph.advance()
+    assert out.getvalue() == ""
+
+
+def test_seconds_read_as_a_person_would():
+    assert format_seconds(0.42) == "0.4 s"
+    assert format_seconds(12.4) == "12 s"
+    assert format_seconds(125) == "2 min 05 s"
+
+
+class _R:
+    def __init__(self, i, verdict, expected, seconds=1.0):
+        self.id, self.verdict, self.expected, self.seconds = i, verdict, expected, seconds
+
+
+def test_labels_give_the_verdict_and_flag_a_surprise():
+    assert runner.verdict_words(_R("3.57", "does-not-hold", "does-not-hold")) == \
+        "3.57 does-not-hold, as expected"
+    assert runner.verdict_words(_R("3.16", "verified", "verified")) == "3.16 verified"
+    assert runner.verdict_words(_R("3.16", "undecided", "verified")) == \
+        "3.16 undecided, EXPECTED verified"
+    assert runner._doing({"3.77a": 0.0, "3.94": 0.0}, _R("3.57", "verified", "verified")) \
+        == "checking 3.77a, 3.94 · 3.57 verified"
+
+
+def test_estimate_from_earlier_durations_is_stable(monkeypatch, tmp_path):
+    """Ten ids of known durations on a machine twice as slow as last time: after the first
+    three, every estimate is within 10 % of the true time left (a rate over the last ids
+    would swing with each id's own size)."""
+    monkeypatch.setenv("RIGIDSYM_CACHE", str(tmp_path))
+    sizes = {f"id{k}": float(s) for k, s in enumerate([9, 1, 5, 1, 1, 8, 2, 1, 3, 1])}
+    _progress.save_durations(runner.DURATIONS, sizes)
+    clock = [1000.0]
+    monkeypatch.setattr(runner.time, "time", lambda: clock[0])
+    est = runner._Estimate(list(sizes), jobs=1)
+    order = est.order()
+    assert order[0] == "id0" and order[1] == "id5"  # longest first
+    total = 2 * sum(sizes.values())
+    done_time = 0.0
+    for k, i in enumerate(order):
+        left = est.left({i: clock[0]})
+        true_left = total - done_time
+        if k >= 3:
+            assert abs(left - true_left) <= 0.1 * true_left, (k, left, true_left)
+        clock[0] += 2 * sizes[i]
+        done_time += 2 * sizes[i]
+        est.actual[i] = 2 * sizes[i]
+    assert est.left({}) == 0.0
+
+
+def test_durations_survive_a_corrupt_file(monkeypatch, tmp_path):
+    monkeypatch.setenv("RIGIDSYM_CACHE", str(tmp_path))
+    (tmp_path / "timings").mkdir()
+    (tmp_path / "timings" / "checks.json").write_text("{not json")
+    assert _progress.load_durations("checks") == {}
+    _progress.save_durations("checks", {"3.16": 1.25})
+    assert _progress.load_durations("checks") == {"3.16": 1.25}
+
+
+def test_shown_estimate_moves_smoothly(monkeypatch):
+    """One surprising id does not make the shown estimate jump: it moves a third of the way
+    towards a new estimate, and otherwise counts down."""
+    clock = [0.0]
+    monkeypatch.setattr(_progress.time, "perf_counter", lambda: clock[0])
+    ph = _progress.Phase(Reporter("x", enabled=False), "y", 10)
+    ph.estimate(60.0)
+    assert ph._eta == 60.0
+    clock[0] = 10.0
+    ph.estimate(50.0)                     # as counted down: unchanged
+    assert ph._eta == pytest.approx(50.0)
+    clock[0] = 11.0
+    ph.estimate(200.0)                    # a slow id: a third of the way, not 200
+    assert ph._eta == pytest.approx(49.0 + (200.0 - 49.0) / 3)
+
+
+def test_first_run_estimate_does_not_explode(monkeypatch, tmp_path):
+    """No earlier durations: one slow first id does not multiply the estimate by the count."""
+    monkeypatch.setenv("RIGIDSYM_CACHE", str(tmp_path))
+    est = runner._Estimate([f"i{k}" for k in range(50)], jobs=2)
+    est.actual["i0"] = 12.0               # the first id is slow
+    prior_only = runner._Estimate([f"i{k}" for k in range(50)], jobs=2).left({})
+    naive = 49 * 12.0 / 2                 # every id as slow as the first
+    assert prior_only < est.left({}) < naive / 4
