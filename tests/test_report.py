@@ -103,7 +103,9 @@ def test_html_independent_of_hash_seed(few, tmp_path):
 def test_committed_reports_are_lean():
     if not (COMMITTED / "chapter3.md").exists():
         pytest.skip("no committed report in this checkout")
-    assert (COMMITTED / "chapter3.md").stat().st_size <= 120_000
+    # 134 KB: the counterexamples in the book's symbols (issue 24) add about 13 KB to the
+    # 114 KB of before; expanded dumps would add hundreds
+    assert (COMMITTED / "chapter3.md").stat().st_size <= 150_000
     assert (COMMITTED / "chapter3.json").stat().st_size <= 400_000
     assert (COMMITTED / "chapter3.html").stat().st_size <= 1_500_000
     md = (COMMITTED / "chapter3.md").read_text(encoding="utf-8")
