@@ -197,7 +197,6 @@ def _list() -> int:
 def _solve_one(ex_id: str, data: dict):
     """Solve one exercise with a spinner on stderr (a solution can take seconds)."""
     from rigidsym._progress import Reporter
-
     from rigidsym.checking.worked_data import read_data
 
     # bad data is one error line, before any progress line
