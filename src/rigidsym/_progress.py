@@ -151,8 +151,10 @@ class Reporter:
             ph._task = self.bar.add_task(doing or what, total=total, eta="")
         elif self.enabled:
             print(f"{self.command}: {what} ...", file=self._stream(), flush=True)
+        failed = True
         try:
             yield ph
+            failed = False
         finally:
             took = format_seconds(time.perf_counter() - ph.t0)
             if self.bar is not None:
@@ -162,7 +164,8 @@ class Reporter:
                 if self.keep:
                     self.say(f"✓ {what}: {took}{tail}")
             elif self.enabled:
-                print(f"{self.command}: {what}: done in {took}{tail}", file=self._stream(),
+                ended = "stopped after" if failed else "done in"
+                print(f"{self.command}: {what}: {ended} {took}{tail}", file=self._stream(),
                       flush=True)
 
 

@@ -31,7 +31,7 @@ from sympy.core.function import AppliedUndef
 from sympy.matrices.expressions.matexpr import MatrixElement
 from sympy.matrices.expressions.slice import MatrixSlice
 
-from rigidsym.algebra.operators import Cross, Det
+from rigidsym.algebra.operators import Cpm, Cross, Det, Vect
 from rigidsym.checking.explicit import _entries, _sc, explicit
 from rigidsym.checking.treeops import RawBlocks
 from rigidsym.zero.decide import Unsupported, evaluate
@@ -169,6 +169,16 @@ class PointValues:
             k = [u[(i + 1) % 3, 0] * v[(i + 2) % 3, 0] - u[(i + 2) % 3, 0] * v[(i + 1) % 3, 0]
                  for i in range(3)]
             return flint.nmod_mat(3, 1, k, PRIME)
+        if isinstance(x, Cpm):  # the lazy CPM(v) of a book symbol (Eq. (2.38))
+            v = self._matrix(x.args[0])
+            z = flint.nmod(0, PRIME)
+            return flint.nmod_mat(3, 3, [z, -v[2, 0], v[1, 0], v[2, 0], z, -v[0, 0],
+                                         -v[1, 0], v[0, 0], z], PRIME)
+        if isinstance(x, Vect):  # the lazy vect(A): half the skew part's axial vector
+            a = self._matrix(x.args[0])
+            half = flint.nmod(1, PRIME) / 2
+            return flint.nmod_mat(3, 1, [half * (a[2, 1] - a[1, 2]), half * (a[0, 2] - a[2, 0]),
+                                         half * (a[1, 0] - a[0, 1])], PRIME)
         return self._explicit(x)  # trig of angles, roots, custom operators
 
     def _scalar(self, e):

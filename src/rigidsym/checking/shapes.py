@@ -15,7 +15,7 @@ from sympy.core.function import AppliedUndef
 from sympy.matrices.expressions.matexpr import MatrixElement
 from sympy.matrices.expressions.slice import MatrixSlice
 
-from rigidsym.algebra.operators import Cross, Det
+from rigidsym.algebra.operators import Cpm, Cross, Det, Vect
 
 __all__ = ["ShapeError", "RawBlocks", "is_matrix", "children", "node_at", "positions", "shape"]
 
@@ -55,7 +55,7 @@ def is_matrix(x) -> bool:
 _OPAQUE = (sp.MatrixSymbol, sp.MatrixBase, sp.Identity, sp.ZeroMatrix, AppliedUndef,
            sp.Derivative)
 _ALL_ARGS = (sp.Add, sp.Mul, sp.MatAdd, sp.MatMul, sp.Transpose, sp.Inverse, sp.Trace,
-             sp.Determinant, sp.Abs, Cross, Det, sp.sin, sp.cos, sp.tan, sp.cot)
+             sp.Determinant, sp.Abs, Cross, Det, Cpm, Vect, sp.sin, sp.cos, sp.tan, sp.cot)
 
 
 def _children_rule(cls) -> int:
@@ -175,6 +175,14 @@ def _shape(x, memo):
     if isinstance(x, Cross):
         if kids != [(3, 1), (3, 1)]:
             raise ShapeError("a cross product of non-3-vectors")
+        return (3, 1)
+    if isinstance(x, Cpm):  # the lazy CPM(v) and vect(A) of book symbols
+        if kids != [(3, 1)]:
+            raise ShapeError("a cross-product matrix of a non-3-vector")
+        return (3, 3)
+    if isinstance(x, Vect):
+        if kids != [(3, 3)]:
+            raise ShapeError("the axial vector of a non-3x3 matrix")
         return (3, 1)
     if any(k is not None for k in kids):
         raise ShapeError(f"a matrix inside {type(x).__name__}")

@@ -197,7 +197,11 @@ def _list() -> int:
 def _solve_one(ex_id: str, data: dict):
     """Solve one exercise with a spinner on stderr (a solution can take seconds)."""
     from rigidsym._progress import Reporter
+    from rigidsym.checking.worked_data import read_data
 
+    # bad data is one error line, before any progress line
+    rest = {k: v for k, v in data.items() if k != "tol"}
+    read_data(parameters(ex_id), rest, data.get("tol"))
     with Reporter("rigidsym exercise") as rep, \
             rep.phase(f"solving exercise {ex_id[2:]}") as ph:
         s = solve(ex_id, **data)
