@@ -51,7 +51,6 @@ SECTIONS = ("3.2", "3.3", "3.4", "3.5", "3.6", "3.7", "3.8")
 _ID = re.compile(r"^(3\.\d+[a-e]?|(thm|cor|caveat)3\.\d+(\.\d+)?|ex3\.\d+)$")
 #: A user id: ``namespace:name`` (``notes:rodrigues``, ``paper:eq7``).
 _USER_ID = re.compile(r"^[a-z][a-z0-9_-]*:[A-Za-z0-9_.-]+$")
-#: The package whose modules declare the book's ids.
 #: The cause of a user's does-not-hold when the declaration names none.
 USER_CAUSE_DEFAULT = "not determined"
 
