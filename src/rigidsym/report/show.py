@@ -21,6 +21,7 @@ from rigidsym.checking.registry import Rel, is_user_id
 from rigidsym.printing import notation
 from rigidsym.printing.labels import label_text
 from rigidsym.report.counterexample import GLOSSARY_HINT, sides_of, text_lines
+from rigidsym.report.counterexample import wrap_at_spaces as _hard_wrap
 from rigidsym.report.numeric import numeric_sentence
 from rigidsym.report.record import cause_words, counterexample_record, result_record
 
@@ -48,18 +49,6 @@ def _terms(expr) -> list:
     if isinstance(expr, sp.Add | sp.MatAdd):
         return list(expr.args)
     return [expr]
-
-
-def _hard_wrap(text: str, width: int, indent: str) -> list[str]:
-    """Last resort for a single term wider than the line: break at spaces only."""
-    out, line = [], indent
-    for word in text.split(" "):
-        if len(line) + len(word) + 1 > width and line.strip():
-            out.append(line.rstrip())
-            line = indent + "  "
-        line += word + " "
-    out.append(line.rstrip())
-    return out
 
 
 def expr_lines(expr, width: int, indent: str = "") -> list[str]:

@@ -83,6 +83,13 @@ class _Builder:
             self.ops.append(op)
         return slot
 
+    def memo(self, x, make) -> int:
+        """The slot of sympy node ``x``, emitted by ``make(x)`` the first time only."""
+        slot = self.by_node.get(x)
+        if slot is None:
+            slot = self.by_node[x] = make(x)
+        return slot
+
     def const(self, q) -> int:
         return self.emit((CONST, Fraction(q)))
 
@@ -186,10 +193,7 @@ def parametrised(exprs, plan: Plan) -> Program:
         return b.leaf_slot[s]
 
     def node(x) -> int:
-        slot = b.by_node.get(x)
-        if slot is None:
-            slot = b.by_node[x] = _node(x)
-        return slot
+        return b.memo(x, _node)
 
     def _node(x) -> int:
         if x.is_Rational:
@@ -222,10 +226,7 @@ def unparametrised(exprs) -> Program:
     b = _Builder()
 
     def node(x) -> int:
-        slot = b.by_node.get(x)
-        if slot is None:
-            slot = b.by_node[x] = _node(x)
-        return slot
+        return b.memo(x, _node)
 
     def _node(x) -> int:
         if x.is_Rational:
