@@ -161,3 +161,17 @@ def test_every_public_callable_has_args_and_returns(modname):
     bad = [f"{modname}.{n}: {', '.join(p)}" for n in PUBLIC[modname]
            if (p := _problems(modname, n))]
     assert not bad, "\n".join(bad)
+
+
+#: the modules whose docstrings hold examples (``>>>``): the reference shows them, so they run
+DOCTEST_MODULES = ("rigidsym.api", "rigidsym.declare", "rigidsym.exercises", "rigidsym.kernels",
+                   "rigidsym.kernels._jacobian", "rigidsym.algebra.primitives")
+
+
+@pytest.mark.parametrize("modname", DOCTEST_MODULES)
+def test_docstring_examples_run(modname):
+    import doctest
+
+    res = doctest.testmod(importlib.import_module(modname),
+                          optionflags=doctest.NORMALIZE_WHITESPACE)
+    assert res.attempted >= 1 and res.failed == 0, f"{modname}: {res}"
