@@ -94,7 +94,7 @@ def H_matrix(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        ndarray (..., 4, 3): H_matrix: ndarray (..., 4, 3)
+        ndarray (..., 4, 3): H_matrix
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
@@ -133,7 +133,7 @@ def H_matrix_dot(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        ndarray (..., 4, 3): H_matrix_dot: ndarray (..., 4, 3); [1/s]
+        ndarray (..., 4, 3): H_matrix_dot; [1/s]
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
@@ -170,7 +170,7 @@ def H_tilde(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        ndarray (..., 3, 4): H_tilde: ndarray (..., 3, 4)
+        ndarray (..., 3, 4): H_tilde
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
@@ -209,7 +209,7 @@ def H_tilde_dot(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        ndarray (..., 3, 4): H_tilde_dot: ndarray (..., 3, 4); [1/s]
+        ndarray (..., 3, 4): H_tilde_dot; [1/s]
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
@@ -246,7 +246,7 @@ def L_matrix(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        ndarray (..., 4, 3): L_matrix: ndarray (..., 4, 3)
+        ndarray (..., 4, 3): L_matrix
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
@@ -285,7 +285,7 @@ def L_matrix_dot(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        ndarray (..., 4, 3): L_matrix_dot: ndarray (..., 4, 3); [1/s]
+        ndarray (..., 4, 3): L_matrix_dot; [1/s]
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
@@ -322,7 +322,7 @@ def L_tilde(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        ndarray (..., 3, 4): L_tilde: ndarray (..., 3, 4)
+        ndarray (..., 3, 4): L_tilde
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
@@ -364,7 +364,7 @@ def L_tilde_dot(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        ndarray (..., 3, 4): L_tilde_dot: ndarray (..., 3, 4); [1/s]
+        ndarray (..., 3, 4): L_tilde_dot; [1/s]
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
@@ -404,7 +404,7 @@ def N_matrix(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        ndarray (..., 4, 3): N_matrix: ndarray (..., 4, 3)
+        ndarray (..., 4, 3): N_matrix
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
@@ -446,7 +446,7 @@ def N_matrix_dot(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        ndarray (..., 4, 3): N_matrix_dot: ndarray (..., 4, 3); [1/s]
+        ndarray (..., 4, 3): N_matrix_dot; [1/s]
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
@@ -486,7 +486,7 @@ def N_tilde(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        ndarray (..., 3, 4): N_tilde: ndarray (..., 3, 4)
+        ndarray (..., 3, 4): N_tilde
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
@@ -525,7 +525,7 @@ def N_tilde_dot(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        ndarray (..., 3, 4): N_tilde_dot: ndarray (..., 3, 4); [1/s]
+        ndarray (..., 3, 4): N_tilde_dot; [1/s]
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
@@ -569,7 +569,7 @@ def inertia_at_point(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        ndarray (..., 3, 3): I_A: ndarray (..., 3, 3); [kg m^2]
+        ndarray (..., 3, 3): I_A; [kg m^2]
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
@@ -610,7 +610,7 @@ def inertia_dyad_at_point(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        ndarray (..., 6, 6): M_A: ndarray (..., 6, 6)
+        ndarray (..., 6, 6): M_A
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
@@ -697,7 +697,7 @@ def kinetic_energy(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        ndarray (...): T: ndarray (...); [J]
+        ndarray (...): T; [J]
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
@@ -744,7 +744,7 @@ def moving_frame_acceleration(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        ndarray (..., 3): p_ddot: ndarray (..., 3); [m/s^2], F-frame
+        ndarray (..., 3): p_ddot; [m/s^2], F-frame
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
@@ -830,7 +830,7 @@ def newton_euler_wrench(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        ndarray (..., 6): w: ndarray (..., 6); [n_C; f] [N m; N]
+        ndarray (..., 6): w; [n_C; f] [N m; N]
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
@@ -867,7 +867,7 @@ def plucker_from_points(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        ndarray (..., 6): kappa: ndarray (..., 6); [e; n] (n in m)
+        ndarray (..., 6): kappa; [e; n] (n in m)
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
@@ -909,7 +909,7 @@ def plucker_transfer(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        ndarray (..., 6): kappa_B: ndarray (..., 6); [e; n_B]
+        ndarray (..., 6): kappa_B; [e; n_B]
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
@@ -952,7 +952,7 @@ def point_acceleration(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        ndarray (..., 3): p_ddot: ndarray (..., 3); [m/s^2]
+        ndarray (..., 3): p_ddot; [m/s^2]
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
@@ -987,7 +987,7 @@ def rotation_from_euler_rodrigues(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        ndarray (..., 3, 3): Q: ndarray (..., 3, 3); rotation matrix
+        ndarray (..., 3, 3): Q; rotation matrix
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
@@ -1024,7 +1024,7 @@ def rotation_from_natural_invariants(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        ndarray (..., 3, 3): Q: ndarray (..., 3, 3); rotation matrix
+        ndarray (..., 3, 3): Q; rotation matrix
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
@@ -1065,7 +1065,7 @@ def screw_axis_point(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        ndarray (..., 3): p0: ndarray (..., 3); point of the axis closest to the origin [m]
+        ndarray (..., 3): p0; point of the axis closest to the origin [m]
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
@@ -1157,7 +1157,7 @@ def twist_transfer(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        ndarray (..., 6): t_P: ndarray (..., 6); [omega; v_P]
+        ndarray (..., 6): t_P; [omega; v_P]
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
@@ -1194,7 +1194,7 @@ def twist_transfer_matrix(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        ndarray (..., 6, 6): U: ndarray (..., 6, 6)
+        ndarray (..., 6, 6): U
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
@@ -1277,7 +1277,7 @@ def wrench_transfer(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        ndarray (..., 6): w_P: ndarray (..., 6); [n_P; f]
+        ndarray (..., 6): w_P; [n_P; f]
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
@@ -1314,7 +1314,7 @@ def wrench_transfer_matrix(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        ndarray (..., 6, 6): V: ndarray (..., 6, 6)
+        ndarray (..., 6, 6): V
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).

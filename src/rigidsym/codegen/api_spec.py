@@ -70,8 +70,10 @@ def docstring(meta: dict) -> str:
     lines += ["", "Returns:"]
     outs = [f"{o['name']}: ndarray {_shape(o['shape'])}" + (f"; {o['doc']}" if o["doc"] else "")
             for o in meta["outputs"]]
-    if len(outs) == 1:  # Google style: "type: description"
-        lines.append(f"    ndarray {_shape(meta['outputs'][0]['shape'])}: {outs[0]}")
+    if len(outs) == 1:  # Google style: "type: description" (the type says the shape)
+        o = meta["outputs"][0]
+        lines.append(f"    ndarray {_shape(o['shape'])}: {o['name']}"
+                     + (f"; {o['doc']}" if o["doc"] else ""))
     else:
         names = ", ".join(o["name"] for o in meta["outputs"])
         lines += [f"    tuple of ndarray: ({names}), with", ""]
