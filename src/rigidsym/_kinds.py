@@ -63,7 +63,9 @@ class Kind:
         tol_eps: for narrower dtypes the tolerance is ``max(tol, tol_eps * eps)``.
         c_check: the validation routine of the compiled entry points (``c_fast.h.j2``):
             0 none (finiteness only), 1 unit norm (``RIGIDSYM_UNIT``), 2 proper orthogonal
-            (``RIGIDSYM_ROTATION``); a kind with a new check adds its C routine there.
+            (``RIGIDSYM_ROTATION``); a kind with a new check adds its C routine there. A
+            kind with a :attr:`check` and no C routine (0) is never left unchecked: its
+            checked calls take the Python path (``RIGIDSYM_PYTHON``).
         project: ``project(x, d)``: the admissible (tangent) direction nearest to an
             ambient direction ``d`` at a point ``x`` of the constraint set; flat sequences
             in row-major order, plain arithmetic (floats or mpmath numbers).

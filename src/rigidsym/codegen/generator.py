@@ -43,6 +43,9 @@ from rigidsym.codegen.spec import Kernel, flat_symbols, input_symbols
 __all__ = ["generate", "write", "check", "GenerationResult", "default_out_dir", "TEMPLATES"]
 
 TEMPLATES = Path(__file__).parent / "templates"
+#: the ``kind`` of an entry point's argument whose constraint only the Python path checks
+#: (``RIGIDSYM_PYTHON`` in ``c_fast.h.j2``)
+_C_PYTHON_CHECK = 3
 
 
 def default_out_dir() -> Path:
@@ -267,7 +270,10 @@ def _render_extension(env, metas: list[dict], ver: dict) -> dict[str, str]:
         return int(math.prod(shape))
     def c_check(a: dict) -> int:  # the kind table's C validation routine (0 for outputs)
         k = _kinds.for_spec(a["kind"], a["shape"]) if "kind" in a else None
-        return k.c_check if k is not None else 0
+        if k is None:
+            return 0
+        # a checked kind with no C routine of its own: checked calls take the Python path
+        return k.c_check if k.c_check or k.check is None else _C_PYTHON_CHECK
 
     def slot(a: dict) -> dict:
         return {"nd": len(a["shape"]), "dims": list(a["shape"]), "size": size(a["shape"]),
