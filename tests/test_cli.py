@@ -108,3 +108,4 @@ def test_an_exception_in_a_declaration_is_undecided_not_a_crash(monkeypatch, cap
         assert "MISMATCH (3.2)" not in out
     finally:
         registry._build.cache_clear()
+

@@ -6,6 +6,8 @@ from __future__ import annotations
 
 import argparse
 import json
+import subprocess
+import sys
 
 import pytest
 
@@ -70,12 +72,12 @@ def test_command_helps_read_alike():
 
 
 def test_exercise_without_an_id_lists_all_without_solving(monkeypatch, capsys):
-    import rigidsym.cli.exercise as cli_ex
+    import rigidsym.checking.worked as worked
 
     def no_solving(*a, **k):
         raise AssertionError("listing must not solve")
 
-    monkeypatch.setattr(cli_ex, "solve", no_solving)
+    monkeypatch.setattr(worked, "solve", no_solving)  # the command imports it when it runs
     assert main(["exercise"]) == 0
     out = capsys.readouterr().out.splitlines()
     rows = [line for line in out if line.startswith("  ")]
@@ -114,3 +116,18 @@ def test_verify_plain_and_json_on_stdout_are_whole(capsys, monkeypatch):
     assert main(["verify", "3.1", "--jobs", "1", "--format", "json"]) == 0
     doc = json.loads(capsys.readouterr().out)
     assert doc["schema"] == 2 and doc["equations"][0]["id"] == "3.1"
+
+
+@pytest.mark.parametrize("argv", [["--help"], ["verify", "--help"], ["exercise", "--help"],
+                                  ["report", "--help"], ["show", "--help"]])
+def test_help_imports_no_computer_algebra(argv):
+    # help is read at the first contact: it must not wait for sympy (about 2 s to import)
+    code = ("import contextlib, io, sys\nfrom rigidsym.cli import main\n"
+            "with contextlib.redirect_stdout(io.StringIO()) as out:\n"
+            f"    try:\n        main({argv!r})\n    except SystemExit:\n        pass\n"
+            "assert 'usage: rigidsym' in out.getvalue()\n"
+            "print(sorted(m for m in ('sympy', 'numpy', 'flint') if m in sys.modules))")
+    run = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                         timeout=120)
+    assert run.returncode == 0, run.stderr
+    assert run.stdout.strip() == "[]"

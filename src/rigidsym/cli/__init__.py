@@ -12,7 +12,6 @@ import argparse
 import os
 import sys
 
-from rigidsym.checking.registry import BadInput
 from rigidsym.cli import cache, exercise, generate, glossary, report, show, verify
 from rigidsym.cli._common import HelpFormatter, add_ascii, ascii_output
 
@@ -87,6 +86,7 @@ def main(argv: list[str] | None = None) -> int:
     for name, sp_ in parser._subparsers._group_actions[0].choices.items():
         sp_.error = _error(f"rigidsym {name} --help lists its options")
     args = parser.parse_args(argv)
+    from rigidsym.checking.registry import BadInput
     with ascii_output(getattr(args, "ascii", False)):
         try:
             return args.func(args)

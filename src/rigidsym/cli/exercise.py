@@ -14,17 +14,18 @@ import sys
 from pathlib import Path
 
 from rigidsym._io import write_atomic
-from rigidsym.checking.worked import (
-    EXERCISE_IDS,
-    normalise_id,
-    parameters,
-    render_text,
-    solve,
-    to_json_value,
-)
-from rigidsym.report.exercises import svg_text, write_report
 
-__all__ = ["add_arguments", "run", "to_json", "write_report", "svg_text", "parse_value"]
+__all__ = ["add_arguments", "run", "to_json", "parse_value"]  # and, lazily, write_report, svg_text
+
+
+
+def __getattr__(name: str):
+    # the report hook, re-exported; imported when asked for (`rigidsym --help` stays light)
+    if name in ("svg_text", "write_report"):
+        from rigidsym.report import exercises
+        return getattr(exercises, name)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
 
 HELP = "solve a chapter-3 exercise, machine-checked (no id: list them)"
 EXAMPLES = """\
@@ -66,6 +67,8 @@ def to_json(ids, data: dict | None = None) -> str:
     stated in words (conditions, interpretations) go to ``statements``; an ill-posed
     solution has ``"status": "ill-posed"`` and its ``reason``.
     """
+    from rigidsym.checking.worked import solve, to_json_value
+
     items = []
     for i in ids:
         s = solve(i, **(data or {}))
@@ -85,6 +88,8 @@ def parse_value(ex_id: str, name: str, text: str):
     strings for a vector (``0,0,5``), a list of rows for a matrix (``1,0,0;0,2,0;0,0,3``
     or ``[[1,0,0],[0,2,0],[0,0,3]]``), the text itself for a scalar or a choice (an
     unknown name is left to :func:`solve`, which lists the exercise's parameters)."""
+    from rigidsym.checking.worked import parameters
+
     try:
         shape = parameters(ex_id)[name].shape
     except KeyError:
@@ -139,6 +144,8 @@ def _notebook(ex_id: str, path: str, data: dict) -> None:
 
 def run(args) -> int:
     """Solve chapter-3 exercises with computer algebra (worked solutions, machine-checked)."""
+    from rigidsym.checking.worked import EXERCISE_IDS, normalise_id, parameters, render_text
+
     if args.all and args.id:
         print("rigidsym: error: give one exercise id (e.g. 3.10) or --all, not both",
               file=sys.stderr)
@@ -174,6 +181,8 @@ def run(args) -> int:
 
 def _next_step(args) -> str:
     """What to run after a bad exercise id or bad data."""
+    from rigidsym.checking.worked import normalise_id
+
     try:
         ex = normalise_id(args.id) if args.id else None
     except ValueError:
@@ -186,7 +195,7 @@ def _next_step(args) -> str:
 def _list() -> int:
     """``rigidsym exercise`` with no id: the exercises and their titles, read from the
     modules' ``TITLE`` constants (nothing is solved)."""
-    from rigidsym.checking.worked import exercise_module
+    from rigidsym.checking.worked import EXERCISE_IDS, exercise_module
 
     print("The chapter's 21 exercises (rigidsym exercise 3.10 solves one; --all solves all):")
     for i in EXERCISE_IDS:
@@ -197,6 +206,7 @@ def _list() -> int:
 def _solve_one(ex_id: str, data: dict):
     """Solve one exercise with a spinner on stderr (a solution can take seconds)."""
     from rigidsym._progress import Reporter
+    from rigidsym.checking.worked import parameters, solve
     from rigidsym.checking.worked_data import read_data
 
     # bad data is one error line, before any progress line
@@ -213,6 +223,7 @@ def _run_all(ids, fmt: str, json_path: str | None) -> int:
     """Solve every exercise with progress on stderr; a line per exercise (or the JSON
     document) on stdout."""
     from rigidsym._progress import Reporter
+    from rigidsym.checking.worked import solve
 
     n_ok = 0
     with Reporter("rigidsym exercise --all") as rep, \

@@ -7,7 +7,6 @@ from pathlib import Path
 
 from rigidsym._io import write_atomic
 from rigidsym.checking.registry import select
-from rigidsym.checking.runner import run_checks
 from rigidsym.cli._common import JOBS, MODULE_HELP
 
 __all__ = ["add_arguments", "run", "default_report_dir"]
@@ -83,6 +82,8 @@ def _solve_exercises(rep) -> None:
 def run(args) -> int:
     """``rigidsym report``: write ``chapter3.{md,json,html}`` and the exercises to ``--out``,
     with progress on stderr (loading, checking, rendering and writing, exercises)."""
+    from rigidsym.checking.runner import run_checks  # sympy: after the parser
+
     if args.module:  # a user module's report: titled by it, files named after it
         from rigidsym.report.user import write_user_report
         return write_user_report(args.module, Path(args.out) if args.out else Path.cwd(),

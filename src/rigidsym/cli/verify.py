@@ -6,7 +6,6 @@ import sys
 import time
 
 from rigidsym._io import write_atomic
-from rigidsym.checking.runner import run_checks
 from rigidsym.checking.usermodules import select_with_modules
 from rigidsym.cli._common import (
     FORMATS,
@@ -94,6 +93,7 @@ def _repairs(results) -> None:
 
 def run(args) -> int:
     """``rigidsym verify``: decide equations, print a table, optionally write JSON."""
+    from rigidsym.checking.runner import run_checks  # sympy: after the parser
     from rigidsym.report.record import summary, to_json
 
     ids = select_with_modules(args.ids, args.section, args.module)
