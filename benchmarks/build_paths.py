@@ -181,14 +181,9 @@ def write_section(res: dict, path: Path, notes: list[str]) -> None:
              f"ns/sample (thread CPU time), caller-provided outputs, minimum of {res['rounds']} "
              f"alternating rounds; load average {res['load']:.1f} at the start. Native flags: "
              f"`{res['native_flags']}`.", "", table(res), "", *notes, END]
-    old = path.read_text(encoding="utf-8") if path.exists() else ""
-    block = "\n".join(lines)
-    if MARK in old and END in old:
-        head, rest = old.split(MARK, 1)
-        new = head + block + rest.split(END, 1)[1]
-    else:
-        new = old.rstrip("\n") + "\n\n" + block + "\n"
-    path.write_text(new, encoding="utf-8")
+    from _results import write_section as write
+
+    write(path, "\n".join(lines), MARK, END)
 
 
 def main(argv=None) -> int:

@@ -135,16 +135,9 @@ def table(rows: list[dict], Ns: list[int]) -> list[str]:
 
 def write_section(path: Path, lines: list[str]) -> None:
     """Replace (or append) the text between the markers of ``path``, atomically."""
-    from rigidsym._io import write_atomic
+    from _results import write_section as write
 
-    old = path.read_text(encoding="utf-8") if path.exists() else ""
-    block = "\n".join([MARK, *lines, END])
-    if MARK in old and END in old:
-        head, rest = old.split(MARK, 1)
-        new = head + block + rest.split(END, 1)[1]
-    else:
-        new = old.rstrip("\n") + "\n\n" + block + "\n"
-    write_atomic(path, new)
+    write(path, "\n".join([MARK, *lines, END]), MARK, END)
 
 
 def main(argv=None) -> int:

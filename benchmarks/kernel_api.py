@@ -371,17 +371,10 @@ def main(argv=None) -> int:
 
 def _write_section(path: Path, text: str, mark: tuple) -> None:
     """Replace the section between ``mark`` in ``path`` (or append it); print it."""
-    from rigidsym._io import write_atomic
+    from _results import write_section
 
-    body = path.read_text(encoding="utf-8")
-    if mark[0] in body:
-        a, b = body.index(mark[0]), body.index(mark[1]) + len(mark[1]) + 1
-        body = body[:a] + text + body[b:]
-    else:
-        body = body.rstrip("\n") + "\n\n" + text
-    write_atomic(path, body)
+    write_section(path, text.rstrip("\n"), *mark)
     print(text)
-
 
 if __name__ == "__main__":
     raise SystemExit(main())

@@ -31,7 +31,6 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 from run import BENCH, SPECS, inputs  # noqa: E402
 
 from rigidsym import kernels as K  # noqa: E402
-from rigidsym._io import write_atomic  # noqa: E402
 from rigidsym.kernels import _scale, _state  # noqa: E402
 
 RESULTS = ROOT / "benchmarks" / "RESULTS.md"
@@ -294,15 +293,9 @@ def table_latency(rounds: int) -> list[str]:
 
 
 def write_section(body: list[str]) -> None:
-    text = RESULTS.read_text(encoding="utf-8") if RESULTS.exists() else ""
-    section = "\n".join([BEGIN, *body, END])
-    if BEGIN in text and END in text:
-        pre, rest = text.split(BEGIN, 1)
-        post = rest.split(END, 1)[1]
-        text = pre + section + post
-    else:
-        text = text.rstrip("\n") + "\n\n" + section + "\n"
-    write_atomic(RESULTS, text)
+    from _results import write_section as write
+
+    write(RESULTS, "\n".join([BEGIN, *body, END]), BEGIN, END)
 
 
 def main(argv=None) -> int:

@@ -177,3 +177,31 @@ def test_a_toy_kind_is_one_entry_for_kernels(toy, tmp_path):
     assert "x: array-like (..., 2), on the circle" in docstring(meta)
     assert _jacobian._tangent_note(meta["args"][0]) == \
         "x lies on the unit circle: admissible dx are orthogonal to x."
+
+
+@pytest.mark.slow
+def test_a_toy_kind_compiled_is_still_checked(toy, tmp_path):
+    """The compiled entry points have no C routine for the toy kind (``c_check`` 0): a
+    checked call takes the Python path, so a point off the circle is refused on C too."""
+    from rigidsym import kernels as K
+    from rigidsym.codegen.generator import generate, write
+    from rigidsym.codegen.spec import Arg, Kernel, Out
+
+    kernel = Kernel("circle_slope_c", "Slope of the ray to a circle point.", "x2 / x1",
+                    ("toy:slope",), ("toy.slope",), (Arg("x", (2,), "unit"),),
+                    (Out("m", ()),), lambda x: {"m": x[1] / x[0]}, jacobian=False)
+    write(generate([kernel], origin="tests.test_kinds"), tmp_path)
+    before = K._state.STATE["backend"]
+    try:
+        if K.use_backend("c") != "c":
+            pytest.skip("no compiled kernels here (no compiler)")
+        ns = K.load(tmp_path)
+        ns._SPACE.c_lib()  # compiled now (a notice on stderr), not skipped
+        assert ns.circle_slope_c([0.6, 0.8]) == pytest.approx(4 / 3)
+        with pytest.raises(ValueError, match="^x: not on the unit circle"):
+            ns.circle_slope_c([0.6, 0.81])
+        with pytest.raises(ValueError, match="^x: not on the unit circle"):
+            ns.circle_slope_c(np.array([[0.6, 0.8], [0.6, 0.81]]))
+        assert ns.circle_slope_c([0.6, 0.81], check=False) == pytest.approx(0.81 / 0.6)
+    finally:
+        K._state.STATE["backend"] = before
