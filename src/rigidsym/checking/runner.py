@@ -27,19 +27,21 @@ def _init_worker(queue) -> None:
     _STARTED = queue
 
 
-def _check_one(eq_id: str, settings: RepairSettings | None = None):
+def _check_one(eq_id: str, settings: RepairSettings | None = None, expanded: bool = True):
     from rigidsym.checking.checker import check
     if _STARTED is not None:
         _STARTED.put((eq_id, time.time()))
     settings = settings or RepairSettings()
-    return check(eq_id, repairs=settings.enabled, repair_budget=settings.budget)
+    return check(eq_id, repairs=settings.enabled, repair_budget=settings.budget,
+                 expanded=expanded)
 
 
-def _check_group(ids: list[str], settings: RepairSettings | None = None) -> int:
+def _check_group(ids: list[str], settings: RepairSettings | None = None,
+                 expanded: bool = True) -> int:
     """Check a group of ids in one worker, each result sent on the queue as it is known
     (so that progress stays per id); returns how many."""
     for i in ids:
-        _STARTED.put(("done", _check_one(i, settings)))
+        _STARTED.put(("done", _check_one(i, settings, expanded)))
     return len(ids)
 
 
@@ -105,7 +107,7 @@ class _Estimate:
 
 def run_checks(ids: list[str], jobs: int = 1, progress: bool = True, cache: bool = False,
                reporter: Reporter | None = None, repairs: bool = True,
-               repair_budget: int | None = None):
+               repair_budget: int | None = None, expanded: bool = True):
     """Check ``ids`` (in parallel over ``jobs`` processes), results in the order given.
 
     Args:
@@ -119,16 +121,21 @@ def run_checks(ids: list[str], jobs: int = 1, progress: bool = True, cache: bool
             one of its own.
         repairs, repair_budget: those of :func:`rigidsym.checking.checker.check` (they
             join the cache key).
+        expanded: print each result's expanded strings (``printed``, ``derived``,
+            ``corrected``; :func:`rigidsym.checking.checker.check`); a cached result
+            without them is then checked again.
 
     Returns:
         The :class:`~rigidsym.checking.checker.Result` of each id, in the order of ``ids``.
     """
     settings = RepairSettings(repairs, repair_budget)
-    one = partial(_check_one, settings=settings)
+    one = partial(_check_one, settings=settings, expanded=expanded)
     hits, keys = ({}, {})
     if cache:
         from rigidsym.checking import verdict_cache
         hits, keys = verdict_cache.lookup(ids, settings)
+        if expanded:  # stored by a run that did not print them (rigidsym verify)
+            hits = {i: r for i, r in hits.items() if r.derived is not None}
     results = dict(hits)
     todo = [i for i in ids if i not in hits]
     rep = reporter or Reporter("rigidsym verify", enabled=progress)
@@ -139,7 +146,8 @@ def run_checks(ids: list[str], jobs: int = 1, progress: bool = True, cache: bool
         if hits:
             ph.advance(len(hits), label=f"{len(hits)} from the verdict cache")
         if jobs > 1 and len(todo) > 1:
-            _parallel(est, min(jobs, len(todo)), ph, results, settings)
+            _parallel(est, min(jobs, len(todo)), ph, results,
+                      partial(_check_group, settings=settings, expanded=expanded))
         else:
             for i in todo:
                 running = {i: time.time()}
@@ -167,7 +175,7 @@ def _doing(running: dict, last=None) -> str:
     return " · ".join(parts) or "checking"
 
 
-def _parallel(est: _Estimate, jobs: int, ph, results: dict, settings) -> None:
+def _parallel(est: _Estimate, jobs: int, ph, results: dict, group) -> None:
     """Groups of ids (:meth:`_Estimate.groups`) over ``jobs`` fork workers, heaviest group
     first; each worker reports every id it starts and every result on one queue."""
     import multiprocessing as mp
@@ -179,8 +187,7 @@ def _parallel(est: _Estimate, jobs: int, ph, results: dict, settings) -> None:
     queue = ctx.SimpleQueue()
     running: dict[str, float] = {}
     with ctx.Pool(jobs, initializer=_init_worker, initargs=(queue,)) as pool:
-        pending = pool.map_async(partial(_check_group, settings=settings), est.groups(),
-                                 chunksize=1)
+        pending = pool.map_async(group, est.groups(), chunksize=1)
         last = None
         while len(est.actual) < len(est.ids):
             if not queue.empty():
