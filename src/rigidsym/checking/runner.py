@@ -92,10 +92,14 @@ class _Estimate:
 
     def groups(self) -> list[list[str]]:
         """The ids by :func:`_group_of`, the heaviest group first (known durations, else
-        the prior per id), each group in the order given."""
+        the prior per id), each group in the order given; one id per group (longest first)
+        when there are fewer groups than workers (a single user module), so that every
+        worker has work."""
         out: dict[str, list[str]] = {}
         for i in self.ids:
             out.setdefault(_group_of(i), []).append(i)
+        if len(out) < self.jobs:
+            return [[i] for i in self.order()]
         return sorted(out.values(), key=lambda g: -sum(self.before.get(i, _PRIOR) for i in g))
 
     def left(self, running: dict[str, float]) -> float:
