@@ -4,13 +4,29 @@ C backend does not build)."""
 
 from __future__ import annotations
 
+import os
 import shutil
+import tempfile
 from pathlib import Path
 
 import pytest
 
 from rigidsym import kernels as K
 from rigidsym.checking.registry import load_all
+
+
+def pytest_configure(config):
+    # the suite never reads or fills the reader's own cache (verdicts, user kernels, timings):
+    # a verdict cached by an older checkout would hide a regression
+    if "RIGIDSYM_CACHE" not in os.environ:
+        os.environ["RIGIDSYM_CACHE"] = tempfile.mkdtemp(prefix="rigidsym-tests-")
+
+
+def pytest_unconfigure(config):
+    path = os.environ.get("RIGIDSYM_CACHE", "")
+    if Path(path).name.startswith("rigidsym-tests-"):
+        shutil.rmtree(path, ignore_errors=True)
+
 
 CHAPTER = Path(__file__).resolve().parents[2] / "shared" / "book" / "angeles-chapter3.md"
 

@@ -307,3 +307,18 @@ def test_show_prints_the_json_with_the_repair(capsys):
     rec = json.loads(capsys.readouterr().out)
     assert any(x["kinds"] == ["flip-sign"] and x["equals_declared"] and len(x["edits"]) == 1
                for x in rec["repairs"])
+
+
+def test_verify_names_a_member_in_book_notation(capsys):
+    # a chapter member's label is ASCII in the declaration (3.96e's 'adot . omega/||omega||^2');
+    # the verify line shows it as the book writes it
+    from types import SimpleNamespace
+
+    from rigidsym.cli.verify import _repairs
+
+    member = "adot . omega/||omega||^2"
+    r = SimpleNamespace(id="3.96e", repairs=[], repair_search=[
+        {"member": member, "words": "no repair within 2 edits"}])
+    _repairs([r])
+    out = capsys.readouterr().out
+    assert out.startswith("(3.96e) ȧ·ω/‖ω‖²: no repair") and member not in out

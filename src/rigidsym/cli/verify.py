@@ -83,7 +83,7 @@ def _repairs(results) -> None:
     """One line per failing member: its first repair (``rigidsym show ID`` lists them all)."""
     for r in results:
         for s in getattr(r, "repair_search", None) or []:
-            who = f"({r.id})" + (f" {s['member']!r}" if s["member"] else "")
+            who = f"({r.id})" + (f" {label_text(s['member'])}" if s["member"] else "")
             first = next((x for x in r.repairs if x["member"] == s["member"]), None)
             if first is None:
                 print(f"{who}: {s['words']}")

@@ -22,7 +22,7 @@ import sympy as sp
 from rigidsym.zero.plan import Unsupported
 from rigidsym.zero.program import TooLarge, run_rational, unparametrised
 
-__all__ = ["cancel"]
+__all__ = ["cancel", "cancel_matrix"]
 
 
 def _to_expr(poly, leaves: list, scale: int) -> sp.Expr:
@@ -75,6 +75,14 @@ def cancel(exprs) -> list:
 
 
 def cancel_matrix(m) -> sp.Matrix:
-    """:func:`cancel` of every entry of a matrix (``m.applyfunc(sympy.cancel)``)."""
+    """:func:`cancel` of every entry of a matrix.
+
+    Args:
+        m: a sympy matrix (any shape) of rational functions.
+
+    Returns:
+        A new mutable matrix of the same shape, equal entry by entry (as expression trees)
+        to ``m.applyfunc(sympy.cancel)``.
+    """
     m = sp.Matrix(m)
     return sp.Matrix(m.rows, m.cols, cancel(list(m)))
