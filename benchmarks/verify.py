@@ -9,8 +9,9 @@ Measured, each in a fresh process (so imports count, as for a reader):
 - ``example``: ``rigidsym verify --module examples/rotation_identities.py``, cold;
 - ``build``: CPU seconds of building the declarations (``registry._build``) per section,
   one process, no checking;
-- ``where``: CPU seconds per stage of a single-job chapter run (this tree only): building,
-  the zero test, the numeric backing, member records, expanded strings, the rest.
+- ``where``: CPU seconds per stage of a single-job chapter run as ``rigidsym verify`` does
+  it (this tree only, no expanded strings): building, the zero test, the numeric backing,
+  member records, the model in words, the rest.
 
 Usage (from the repository root)::
 
@@ -83,13 +84,11 @@ timed(registry, "_build", "build declarations")
 timed(checker, "decide_rel", "zero test (with explicit values, counterexamples)")
 timed(checker, "_numeric", "numeric backing (balls)")
 timed(checker, "member_record", "member records (book notation)")
-timed(checker, "_derived_str", "expanded strings")
-timed(checker, "_rel_str", "expanded strings")
 timed(checker, "model_words", "model in words")
 registry.load_all()
 t0 = time.process_time()
 for i in registry.select(None, None):
-    checker.check(i)
+    checker.check(i, expanded=False)  # as `rigidsym verify`: no expanded strings
 spent["total"] = time.process_time() - t0
 print("@@", json.dumps(spent))
 """

@@ -38,6 +38,7 @@ from rigidsym.declare import (
     vect,
     vector,
 )
+from rigidsym.zero.cancel import cancel_matrix
 
 from .common import Mt, motion_model, vec
 
@@ -100,10 +101,11 @@ def _instant_motion_model() -> dict:
     t = TIME
     q, u = vector("s34_q", n=4), vector("s34_u", n=4)
     Qt = rotation_from_quaternion(q + t * u)
-    Qm = Qt.subs(t, 0).applyfunc(sp.cancel)
-    Qd = Qt.diff(t).subs(t, 0).applyfunc(sp.cancel)
-    Om = (Qd * Qm.T).applyfunc(sp.cancel)
-    om = vect(Om).applyfunc(sp.cancel)
+    # cancel_matrix: sympy.cancel's result, reduced by FLINT first (3x faster here)
+    Qm = cancel_matrix(Qt.subs(t, 0))
+    Qd = cancel_matrix(Qt.diff(t).subs(t, 0))
+    Om = cancel_matrix(Qd * Qm.T)
+    om = cancel_matrix(vect(Om))
     am, adm, r = vector("s34_a"), vector("s34_adot"), vector("s34_r")
     return {Mt.Q: _im(Qm), Mt.Q_dot: _im(Qd), Mt.Omega: _im(Om), Mt.omega: _im(om),
             Mt.a: _im(am), Mt.a_dot: _im(adm), Mt.p: _im(am + Qm * r),
@@ -150,9 +152,11 @@ def _isa_free():
     x1 = sp.Matrix(sol).subs({s: 0 for s in x})
     alpha = sp.Symbol("alpha", real=True)
     dist2 = ((x1 + alpha * w - X).T * (x1 + alpha * w - X))[0]
-    (alpha_star,) = sp.solve(sp.diff(dist2, alpha), alpha)
-    near = (x1 + alpha_star * w).applyfunc(sp.cancel)
-    vel = (Ad + cpm(w) * (near - A)).applyfunc(sp.cancel)
+    # the stationarity condition is linear in alpha, c1 alpha + c0 = 0 (sympy's solve
+    # simplified its root for most of the time of this model; the cancelled point is the same)
+    c1, c0 = sp.Poly(sp.diff(dist2, alpha), alpha).all_coeffs()
+    near = cancel_matrix(x1 - c0 / c1 * w)
+    vel = cancel_matrix(Ad + cpm(w) * (near - A))
     return w, A, Ad, X, near, vel
 
 

@@ -127,8 +127,11 @@ def _ipow(x, n: int):
 
 # --------------------------------------------------------------------------- exact bounds
 def _exact(x) -> Fraction:
+    """The exact value ``m 2^e`` of an ``arf`` (a ball's midpoint or radius), by shifts:
+    ``Fraction(2) ** e`` took a tenth of the backing's time."""
     m, e = x.man_exp()
-    return Fraction(int(m)) * (Fraction(2) ** int(e))
+    m, e = int(m), int(e)
+    return Fraction(m << e) if e >= 0 else Fraction(m, 1 << -e)
 
 
 def upper(x) -> Fraction:

@@ -71,8 +71,10 @@ class Outcome:
     expected: str
     method: str
     printed_latex: str
-    printed: str
-    derived: str
+    #: the expanded strings (printed, derived from first principles, corrected): ``None``
+    #: when the check was asked not to print them (``check(..., expanded=False)``)
+    printed: str | None
+    derived: str | None
     corrected: str | None
     counterexample: dict | None
     cause: str | None
@@ -176,7 +178,7 @@ def _derived_str(st: Statement) -> str:
 
 
 def check(eq: Equation | str, *, repairs: bool = True,
-          repair_budget: int | None = None) -> Outcome:
+          repair_budget: int | None = None, expanded: bool = True) -> Outcome:
     """Compute the verdict of one declaration, with its numeric backing.
 
     Args:
@@ -185,6 +187,9 @@ def check(eq: Equation | str, *, repairs: bool = True,
             (:mod:`rigidsym.checking.repair`).
         repair_budget: candidates per failing member; ``None``: the declaration's
             ``repair_budget``, else :data:`rigidsym.checking.repair.REPAIR_BUDGET`.
+        expanded: print the expanded strings (``printed``, ``derived``, ``corrected``:
+            the full reports and the API); ``False`` leaves them ``None`` (a tenth of a
+            chapter's checking time, for ``rigidsym verify``, which never shows them).
 
     Returns:
         A :class:`Outcome`; ``verdict`` is computed here, never read from the declaration.
@@ -195,7 +200,7 @@ def check(eq: Equation | str, *, repairs: bool = True,
         eq = REGISTRY[eq]
     t0 = time.perf_counter()
     try:
-        return _check(eq, t0, RepairSettings(repairs, repair_budget))
+        return _check(eq, t0, RepairSettings(repairs, repair_budget), expanded)
     except Exception as exc:  # a defect to report as undecided, not to hide
         return Outcome(
             id=eq.id, title=eq.title, kind=eq.kind, verdict="undecided", expected=eq.expected,
@@ -208,7 +213,8 @@ def check(eq: Equation | str, *, repairs: bool = True,
             singular=eq.singular)
 
 
-def _check(eq: Equation, t0: float, settings: RepairSettings) -> Outcome:
+def _check(eq: Equation, t0: float, settings: RepairSettings,
+           expanded: bool = True) -> Outcome:
     """The verdict of one declaration (:func:`check` without its safety net).
 
     Long: the verdict, method and detail are refined step by step (a definition or an
@@ -225,8 +231,8 @@ def _check(eq: Equation, t0: float, settings: RepairSettings) -> Outcome:
     failing = None
     backing: list[Rel] = []
     bad = bad_rel = None
-    corrected_str = _rel_str(st.corrected)
     correction, repairs, searches = None, [], []
+    fixed_str = None
     if eq.kind == "definition":
         ok = True
         for r in st.printed:
@@ -266,7 +272,7 @@ def _check(eq: Equation, t0: float, settings: RepairSettings) -> Outcome:
             members += fix.members
             backing = fix.backing
             correction, repairs, searches = fix.kind, fix.repairs, fix.searches
-            corrected_str = corrected_str or fix.corrected
+            fixed_str = fix.corrected
             detail = f"{bad.detail}; {fix.detail}" if fix.holds else fix.detail
             if not fix.holds:
                 verdict = "undecided"
@@ -278,8 +284,11 @@ def _check(eq: Equation, t0: float, settings: RepairSettings) -> Outcome:
     return Outcome(
         id=eq.id, title=eq.title, kind=eq.kind, verdict=verdict, expected=eq.expected,
         method=method if verdict != "undecided" else "undecided",
-        printed_latex=eq.latex, printed=_rel_str(st.printed) or "",
-        derived=_derived_str(st), corrected=corrected_str, counterexample=ce,
+        printed_latex=eq.latex,
+        printed=(_rel_str(st.printed) or "") if expanded else None,
+        derived=_derived_str(st) if expanded else None,
+        corrected=(_rel_str(st.corrected) or fixed_str) if expanded else None,
+        counterexample=ce,
         cause=eq.cause if verdict == "does-not-hold" else None, numeric=numeric,
         seconds=round(time.perf_counter() - t0, 3), section=eq.section,
         evidence=eq.evidence if verdict == "does-not-hold" else None, detail=detail,

@@ -88,22 +88,37 @@ def model_words(exprs) -> list[str]:
         return []
 
 
+def _leaf_atoms(exprs) -> set:
+    """The symbols and functions of time in ``exprs`` (``atoms(Symbol, AppliedUndef)``),
+    each shared subtree visited once: the explicit models repeat large subexpressions,
+    which ``atoms`` walks again at every occurrence."""
+    seen, out = set(), set()
+    stack = [sp.sympify(e) for e in exprs]
+    while stack:
+        y = stack.pop()
+        if y in seen:
+            continue
+        seen.add(y)
+        if isinstance(y, sp.Symbol | AppliedUndef):
+            out.add(y)
+        else:
+            stack.extend(y.args)
+    return out
+
+
 def _model_words(exprs) -> list[str]:
     groups, free, timed_any = {}, set(), False
-    for x in exprs:
-        for e in _entries(x):
-            e = sp.sympify(e)
-            for a in e.atoms(sp.Symbol, AppliedUndef):
-                if a == TIME:
-                    continue
-                timed = isinstance(a, AppliedUndef)
-                timed_any |= timed
-                name = a.func.__name__ if timed else a.name
-                c = constraint_of(a)  # carried by the atom (rigidsym.algebra.symbols), not its name
-                if c is not None:
-                    groups[c.name] = c.kind
-                else:
-                    free.add(notation.book_group(name))
+    for a in _leaf_atoms(e for x in exprs for e in _entries(x)):
+        if a == TIME:
+            continue
+        timed = isinstance(a, AppliedUndef)
+        timed_any |= timed
+        name = a.func.__name__ if timed else a.name
+        c = constraint_of(a)  # carried by the atom (rigidsym.algebra.symbols), not its name
+        if c is not None:
+            groups[c.name] = c.kind
+        else:
+            free.add(notation.book_group(name))
     out = sorted(f"{notation.book_text(n)}: {_kinds.get(k).words}" for n, k in groups.items())
     if free:
         out.append("free: " + ", ".join(sorted(free)))

@@ -27,12 +27,31 @@ def _init_worker(queue) -> None:
     _STARTED = queue
 
 
-def _check_one(eq_id: str, settings: RepairSettings | None = None):
+def _check_one(eq_id: str, settings: RepairSettings | None = None, expanded: bool = True):
     from rigidsym.checking.checker import check
     if _STARTED is not None:
         _STARTED.put((eq_id, time.time()))
     settings = settings or RepairSettings()
-    return check(eq_id, repairs=settings.enabled, repair_budget=settings.budget)
+    return check(eq_id, repairs=settings.enabled, repair_budget=settings.budget,
+                 expanded=expanded)
+
+
+def _check_group(ids: list[str], settings: RepairSettings | None = None,
+                 expanded: bool = True) -> int:
+    """Check a group of ids in one worker, each result sent on the queue as it is known
+    (so that progress stays per id); returns how many."""
+    for i in ids:
+        _STARTED.put(("done", _check_one(i, settings, expanded)))
+    return len(ids)
+
+
+def _group_of(eq_id: str) -> str:
+    """The ids that share the declarations' cached models (a book section, or a user
+    module): checked in one worker, so that each model is derived once, not per worker."""
+    from rigidsym.checking.registry import REGISTRY, is_user_id, section_of
+    if is_user_id(eq_id):
+        return REGISTRY[eq_id].module
+    return section_of(eq_id)
 
 
 def verdict_words(r) -> str:
@@ -71,6 +90,18 @@ class _Estimate:
         """The ids longest first (known durations), so the workers finish together."""
         return sorted(self.ids, key=lambda i: -self.before.get(i, _PRIOR))
 
+    def groups(self) -> list[list[str]]:
+        """The ids by :func:`_group_of`, the heaviest group first (known durations, else
+        the prior per id), each group in the order given; one id per group (longest first)
+        when there are fewer groups than workers (a single user module), so that every
+        worker has work."""
+        out: dict[str, list[str]] = {}
+        for i in self.ids:
+            out.setdefault(_group_of(i), []).append(i)
+        if len(out) < self.jobs:
+            return [[i] for i in self.order()]
+        return sorted(out.values(), key=lambda g: -sum(self.before.get(i, _PRIOR) for i in g))
+
     def left(self, running: dict[str, float]) -> float:
         now = time.time()
         rest = sum(self._pred(i) for i in self.ids if i not in self.actual and i not in running)
@@ -80,7 +111,7 @@ class _Estimate:
 
 def run_checks(ids: list[str], jobs: int = 1, progress: bool = True, cache: bool = False,
                reporter: Reporter | None = None, repairs: bool = True,
-               repair_budget: int | None = None):
+               repair_budget: int | None = None, expanded: bool = True):
     """Check ``ids`` (in parallel over ``jobs`` processes), results in the order given.
 
     Args:
@@ -94,16 +125,21 @@ def run_checks(ids: list[str], jobs: int = 1, progress: bool = True, cache: bool
             one of its own.
         repairs, repair_budget: those of :func:`rigidsym.checking.checker.check` (they
             join the cache key).
+        expanded: print each result's expanded strings (``printed``, ``derived``,
+            ``corrected``; :func:`rigidsym.checking.checker.check`); a cached result
+            without them is then checked again.
 
     Returns:
         The :class:`~rigidsym.checking.checker.Outcome` of each id, in the order of ``ids``.
     """
     settings = RepairSettings(repairs, repair_budget)
-    one = partial(_check_one, settings=settings)
+    one = partial(_check_one, settings=settings, expanded=expanded)
     hits, keys = ({}, {})
     if cache:
         from rigidsym.checking import verdict_cache
         hits, keys = verdict_cache.lookup(ids, settings)
+        if expanded:  # stored by a run that did not print them (rigidsym verify)
+            hits = {i: r for i, r in hits.items() if r.derived is not None}
     results = dict(hits)
     todo = [i for i in ids if i not in hits]
     rep = reporter or Reporter("rigidsym verify", enabled=progress)
@@ -114,7 +150,8 @@ def run_checks(ids: list[str], jobs: int = 1, progress: bool = True, cache: bool
         if hits:
             ph.advance(len(hits), label=f"{len(hits)} from the verdict cache")
         if jobs > 1 and len(todo) > 1:
-            _parallel(est, min(jobs, len(todo)), ph, results, one)
+            _parallel(est, min(jobs, len(todo)), ph, results,
+                      partial(_check_group, settings=settings, expanded=expanded))
         else:
             for i in todo:
                 running = {i: time.time()}
@@ -142,28 +179,35 @@ def _doing(running: dict, last=None) -> str:
     return " · ".join(parts) or "checking"
 
 
-def _parallel(est: _Estimate, jobs: int, ph, results: dict, one) -> None:
+def _parallel(est: _Estimate, jobs: int, ph, results: dict, group) -> None:
+    """Groups of ids (:meth:`_Estimate.groups`) over ``jobs`` fork workers, heaviest group
+    first; each worker reports every id it starts and every result on one queue."""
     import multiprocessing as mp
 
+    # the checker and what it imports lazily, once before the fork rather than per worker
+    import rigidsym.checking.checker  # noqa: F401
+
     ctx = mp.get_context("fork")
-    started = ctx.SimpleQueue()
+    queue = ctx.SimpleQueue()
     running: dict[str, float] = {}
-    with ctx.Pool(jobs, initializer=_init_worker, initargs=(started,)) as pool:
-        it = pool.imap_unordered(one, est.order())
+    with ctx.Pool(jobs, initializer=_init_worker, initargs=(queue,)) as pool:
+        pending = pool.map_async(group, est.groups(), chunksize=1)
         last = None
         while len(est.actual) < len(est.ids):
-            while not started.empty():
-                i, t = started.get()
-                if i not in results:  # its result may have come first
-                    running[i] = t
-            try:
-                r = it.next(timeout=0.25)
-            except mp.TimeoutError:
-                ph.label(_doing(running, last))
-                ph.estimate(est.left(running))
+            if not queue.empty():
+                msg = queue.get()
+                if msg[0] == "done":
+                    results[msg[1].id] = last = msg[1]
+                    _finished(msg[1], est, ph, running)
+                else:
+                    running[msg[0]] = msg[1]
                 continue
-            results[r.id] = last = r
-            _finished(r, est, ph, running)
+            if pending.ready() and queue.empty():
+                pending.get()  # a worker's exception, raised here
+                break
+            time.sleep(0.05)
+            ph.label(_doing(running, last))
+            ph.estimate(est.left(running))
 
 
 def _summary(results) -> str:

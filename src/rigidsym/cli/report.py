@@ -97,7 +97,7 @@ def run(args) -> int:
             ids = select(None, None)
             ph.finish(f"{len(ids)} ids")
         results = run_checks(ids, jobs=args.jobs, progress=True, cache=not args.no_cache,
-                             reporter=rep)
+                             reporter=rep, expanded=args.full)
         files = _chapter_files(results, args.full)
         written = []
         with rep.phase(f"rendering and writing {len(files)} files of the chapter report",

@@ -99,7 +99,7 @@ def run(args) -> int:
     ids = select_with_modules(args.ids, args.section, args.module)
     t0 = time.perf_counter()
     results = run_checks(ids, jobs=args.jobs, progress=not args.quiet,
-                         cache=not args.no_cache, **repair_options(args))
+                         cache=not args.no_cache, expanded=False, **repair_options(args))
     wall = time.perf_counter() - t0
     fmt = output_format(args)
     if args.json:
