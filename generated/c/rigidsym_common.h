@@ -84,6 +84,11 @@ double cos(double);
  * faster than 256). */
 #define RIGIDSYM_CHECK_BLOCK 64
 
+/* Samples per call of a kernel's lanes function, which computes every sample of every batch:
+ * a multiple of the vector width of every path (4 doubles, 8 floats on x86-64-v3), and the
+ * least work a one-sample call does. A divisor of both block sizes (64). */
+#define RIGIDSYM_LANES 8
+
 /* Nonzero when one of the len doubles at p is infinite or NaN (exponent bits all ones).
  * Integer arithmetic: adding 1 to an all-ones exponent carries into the sign bit, so an OR
  * reduction over the sums vectorises without reassociating floating-point operations. */
