@@ -1273,6 +1273,12 @@ static const rigidsym_entry rigidsym_entries[RIGIDSYM_NKERNELS] = {
  * validation tolerances (float64, float32) of rigidsym.kernels. */
 static PyObject *rigidsym_general = NULL;
 static PyObject *rigidsym_threads_fn = NULL;
+/* os.environ's own mapping and its key RIGIDSYM_NUM_THREADS (set by _environ): what
+ * rigidsym.kernels.get_num_threads reads, and a dict lookup where getenv() scans the whole
+ * environment (a tenth of a one-sample call, measured) */
+static PyObject *rigidsym_env = NULL, *rigidsym_env_key = NULL;
+/* the dtypes of the outputs: float64, float32 */
+static PyArray_Descr *rigidsym_descr[2];
 static Py_ssize_t rigidsym_min_parallel = 16384;
 static double rigidsym_tol[2][2] = {{1e-8, 1e-8}, {1e-8, 1e-8}};   /* [f32][unit, ortho] */
 static int rigidsym_enabled = 1;   /* 0 while the NumPy backend is selected */
@@ -1585,6 +1591,20 @@ static int rigidsym_keywords(PyObject *const *args, Py_ssize_t nargs, PyObject *
     return 0;
 }
 
+/* Whether RIGIDSYM_NUM_THREADS is set (then get_num_threads runs, and raises for a bad
+ * value, whatever the batch size, as on the Python path). */
+static int rigidsym_env_threads(void)
+{
+    if (rigidsym_env == NULL)
+        return getenv("RIGIDSYM_NUM_THREADS") != NULL;
+    PyObject *v = PyDict_GetItemWithError(rigidsym_env, rigidsym_env_key);
+    if (v == NULL && PyErr_Occurred()) {
+        PyErr_Clear();
+        return 1;                  /* let get_num_threads decide */
+    }
+    return v != NULL;
+}
+
 /* Kernel k on its nin inputs args[0..nin) and the keywords kw[0..3] (out, check,
  * on_singular, threads). */
 static PyObject *rigidsym_run(int k, PyObject *const *args, PyObject *const *kw)
@@ -1657,8 +1677,10 @@ static PyObject *rigidsym_run(int k, PyObject *const *args, PyObject *const *kw)
                 return rigidsym_slow(k, args, nin, kw);
             memcpy(dims, bshape, bnd * sizeof(npy_intp));
             memcpy(dims + bnd, s->dims, s->nd * sizeof(npy_intp));
-            Y[o] = (PyArrayObject *)PyArray_SimpleNew(bnd + s->nd, dims,
-                                                      f32 ? NPY_FLOAT : NPY_DOUBLE);
+            Py_INCREF(rigidsym_descr[f32]);          /* stolen */
+            Y[o] = (PyArrayObject *)PyArray_NewFromDescr(&PyArray_Type, rigidsym_descr[f32],
+                                                         bnd + s->nd, dims, NULL, NULL, 0,
+                                                         NULL);
             if (Y[o] == NULL) {
                 for (int j = 0; j < o; ++j)
                     Py_DECREF(Y[j]);
@@ -1746,7 +1768,7 @@ static PyObject *rigidsym_run(int k, PyObject *const *args, PyObject *const *kw)
         }
     }
     int t = 1;
-    if (n >= rigidsym_min_parallel || (threads == Py_None && getenv("RIGIDSYM_NUM_THREADS"))) {
+    if (n >= rigidsym_min_parallel || (threads == Py_None && rigidsym_env_threads())) {
         if (threads == Py_None) {
             /* the process-wide count (and its errors): rigidsym.kernels.get_num_threads */
             PyObject *r = PyObject_CallNoArgs(rigidsym_threads_fn);
@@ -3835,6 +3857,24 @@ static PyObject *rigidsym_bind(PyObject *self, PyObject *const *args, Py_ssize_t
     Py_RETURN_NONE;
 }
 
+PyDoc_STRVAR(rigidsym_environ_doc,
+"_environ(data, key)\n\nThe dict behind os.environ (os.environ._data) and its key for\n"
+"RIGIDSYM_NUM_THREADS: the entry points look the variable up there, not with getenv().");
+
+static PyObject *rigidsym_environ(PyObject *self, PyObject *const *args, Py_ssize_t nargs)
+{
+    (void)self;
+    if (nargs != 2 || !PyDict_CheckExact(args[0])) {
+        PyErr_SetString(PyExc_TypeError, "_environ: expected (dict, key)");
+        return NULL;
+    }
+    Py_INCREF(args[0]);
+    Py_INCREF(args[1]);
+    Py_XSETREF(rigidsym_env, args[0]);
+    Py_XSETREF(rigidsym_env_key, args[1]);
+    Py_RETURN_NONE;
+}
+
 PyDoc_STRVAR(rigidsym_enable_doc,
 "_enable(flag)\n\nWhether the entry points run the compiled kernels (False: every call takes\n"
 "the Python path, as with the NumPy backend).");
@@ -3852,6 +3892,7 @@ static PyObject *rigidsym_enable(PyObject *self, PyObject *flag)
 #define RIGIDSYM_FAST_METHODS                                                              \
     {"_bind", (PyCFunction)(void (*)(void))rigidsym_bind, METH_FASTCALL, rigidsym_bind_doc}, \
     {"_enable", (PyCFunction)rigidsym_enable, METH_O, rigidsym_enable_doc}, \
+    {"_environ", (PyCFunction)(void (*)(void))rigidsym_environ, METH_FASTCALL, rigidsym_environ_doc}, \
     {"_install", (PyCFunction)(void (*)(void))rigidsym_install, METH_FASTCALL, rigidsym_install_doc},
 
 /* Module exec: NumPy's C API, the interned names, and the attribute `entries` (the entry
@@ -3860,6 +3901,12 @@ static int rigidsym_fast_init(PyObject *m)
 {
     if (PyArray_ImportNumPyAPI() < 0)
         return -1;
+    if (rigidsym_descr[0] == NULL) {
+        rigidsym_descr[0] = PyArray_DescrFromType(NPY_DOUBLE);
+        rigidsym_descr[1] = PyArray_DescrFromType(NPY_FLOAT);
+        if (rigidsym_descr[0] == NULL || rigidsym_descr[1] == NULL)
+            return -1;
+    }
     static const char *kw[4] = {"out", "check", "on_singular", "threads"};
     for (int i = 0; i < 4; ++i)
         if (rigidsym_kw[i] == NULL && (rigidsym_kw[i] = PyUnicode_InternFromString(kw[i])) == NULL)

@@ -20,6 +20,7 @@ path, which runs the NumPy kernels.
 
 from __future__ import annotations
 
+import os
 import types
 from typing import Any
 
@@ -132,6 +133,9 @@ def entries(space: Any, unit_tol: float, ortho_tol: float) -> types.SimpleNamesp
                   float(ortho_tol), tolerance(unit_tol, np.float32),
                   tolerance(ortho_tol, np.float32))
         mod._enable(_state.STATE["backend"] != "numpy")
+        data = getattr(os.environ, "_data", None)     # what get_num_threads reads
+        if hasattr(mod, "_environ") and type(data) is dict:
+            mod._environ(data, os.environ.encodekey("RIGIDSYM_NUM_THREADS"))
         space._entries = types.SimpleNamespace(**dict(zip(mod.kernels, mod.entries,
                                                           strict=True)))
         _state.LISTENERS.append(lambda name, m=mod: m._enable(name == "c"))
