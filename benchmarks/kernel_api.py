@@ -446,17 +446,8 @@ def main(argv=None) -> int:
         old, new = (json.loads(Path(f).read_text()) for f in args.compare)
         abp = Path(args.ab_json)
         ab = json.loads(abp.read_text()) if abp.exists() else None
-        text = section(old, new, args.old_label, args.note, ab)
-        path = Path(args.results)
-        body = path.read_text(encoding="utf-8")
-        if MARK[0] in body:
-            a, b = body.index(MARK[0]), body.index(MARK[1]) + len(MARK[1]) + 1
-            body = body[:a] + text + body[b:]
-        else:
-            body = body.rstrip("\n") + "\n\n" + text
-        from rigidsym._io import write_atomic
-        write_atomic(path, body)
-        print(text)
+        _write_section(Path(args.results), section(old, new, args.old_label, args.note, ab),
+                       MARK)
     return 0
 
 

@@ -6,26 +6,15 @@ from __future__ import annotations
 
 import importlib
 
-from rigidsym.codegen.spec import Arg, Kernel
+from rigidsym.codegen.spec import Arg
 
-__all__ = ["formula", "missing_sources", "E", "PHI", "OMEGA", "Q_ARG"]
+__all__ = ["formula", "E", "PHI", "OMEGA", "Q_ARG"]
 
 
 def formula(dotted: str):
     """The formula function named ``module.function`` (imported lazily)."""
     mod, _, fn = dotted.rpartition(".")
     return getattr(importlib.import_module(mod), fn)
-
-
-def missing_sources(kernel: Kernel) -> list[str]:
-    """The formula functions of ``kernel`` that are not importable yet (sorted)."""
-    missing = []
-    for s in kernel.sources:
-        try:
-            formula(s)
-        except (ImportError, AttributeError):
-            missing.append(s)
-    return sorted(missing)
 
 
 # ----------------------------------------------------------------------------------------

@@ -4,8 +4,7 @@ This module binds mathematics (it says which formula functions a kernel composes
 their arguments are wired), so it lives in ``derivations/``; it declares no equation and is
 not auto-imported as a section. It never restates a formula: every output is the return
 value of a formula function from :mod:`rigidsym.algebra.primitives` or a ``derivations.sec3_*``
-module. A kernel whose formula function is not importable is skipped by the generator with
-a note (see :func:`missing_sources`).
+module.
 
 Conventions (NOTATION.md): vectors (3,), matrices (3, 3) row-major, twists ``[omega; v]``,
 wrenches ``[n; f]``, Plücker arrays ``[e; n]``, SI units.
@@ -38,11 +37,10 @@ from .kernel_wiring import (
     _one,
     _v,
     formula,
-    missing_sources,
 )
 from .kernels_spec_internal import EULER_SEQUENCES, INTERNAL_KERNELS
 
-__all__ = ["KERNELS", "formula", "missing_sources", "EULER_SEQUENCES"]
+__all__ = ["KERNELS", "formula", "EULER_SEQUENCES"]
 
 
 # ----------------------------------------------------------------------------------------

@@ -18,9 +18,9 @@ __all__ = ["EULER_SEQUENCES", "INTERNAL_KERNELS"]
 INTERNAL_KERNELS: list[Kernel] = []
 
 # ----------------------------------------------------------------------------------------
-# Exercise 3.10: Euler-angle rates, one kernel per (sequence, frame); dispatched by name
-EULER_SEQUENCES = ("ZXZ", "XYX", "YZY", "ZYZ", "XZX", "YXY",
-                   "XYZ", "YZX", "ZXY", "XZY", "ZYX", "YXZ")
+# Exercise 3.10: Euler-angle rates, one kernel per (sequence, frame); dispatched by name.
+# The twelve intrinsic sequences are the exercise's (one list, in ex3_10.py).
+EULER_SEQUENCES = tuple(importlib.import_module(_EX10[:-1]).SEQUENCES)
 
 
 def _euler_W(angles, seq, frame):

@@ -66,7 +66,7 @@ class _Unbound:
 #: common cases validated and computed in C), or the Python path's (rigidsym.kernels._entries)
 _F: Any = _Unbound()
 
-Out = NDArray[np.float64] | tuple[NDArray[np.float64], ...] | None
+OutArrays = NDArray[np.float64] | tuple[NDArray[np.float64], ...] | None
 OnSingular = Literal["raise", "nan"]
 
 
@@ -74,7 +74,7 @@ def H_matrix(
     e: ArrayLike,
     phi: ArrayLike,
     *,
-    out: Out = None,
+    out: OutArrays = None,
     check: bool = True,
     on_singular: OnSingular | None = None,
     threads: int | None = None,
@@ -94,13 +94,14 @@ def H_matrix(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        H_matrix: ndarray (..., 4, 3)
+        ndarray (..., 4, 3): H_matrix
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
         ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
         NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
 
+    Notes:
         Generated; 11 operations; math hash d161921036f1484c.
     """
     return _F.H_matrix(e, phi, out, check, on_singular, threads)
@@ -111,7 +112,7 @@ def H_matrix_dot(
     phi: ArrayLike,
     omega: ArrayLike,
     *,
-    out: Out = None,
+    out: OutArrays = None,
     check: bool = True,
     on_singular: OnSingular | None = None,
     threads: int | None = None,
@@ -132,13 +133,14 @@ def H_matrix_dot(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        H_matrix_dot: ndarray (..., 4, 3); [1/s]
+        ndarray (..., 4, 3): H_matrix_dot; [1/s]
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
         ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
         NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
 
+    Notes:
         Generated; 34 operations; math hash 0c036980272247c8.
     """
     return _F.H_matrix_dot(e, phi, omega, out, check, on_singular, threads)
@@ -148,7 +150,7 @@ def H_tilde(
     e: ArrayLike,
     phi: ArrayLike,
     *,
-    out: Out = None,
+    out: OutArrays = None,
     check: bool = True,
     on_singular: OnSingular | None = None,
     threads: int | None = None,
@@ -168,13 +170,14 @@ def H_tilde(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        H_tilde: ndarray (..., 3, 4)
+        ndarray (..., 3, 4): H_tilde
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
         ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
         NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
 
+    Notes:
         Generated; 11 operations; math hash 394d6fafe3d12373.
     """
     return _F.H_tilde(e, phi, out, check, on_singular, threads)
@@ -185,7 +188,7 @@ def H_tilde_dot(
     phi: ArrayLike,
     omega: ArrayLike,
     *,
-    out: Out = None,
+    out: OutArrays = None,
     check: bool = True,
     on_singular: OnSingular | None = None,
     threads: int | None = None,
@@ -206,13 +209,14 @@ def H_tilde_dot(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        H_tilde_dot: ndarray (..., 3, 4); [1/s]
+        ndarray (..., 3, 4): H_tilde_dot; [1/s]
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
         ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
         NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
 
+    Notes:
         Generated; 32 operations; math hash a75606877943bdb2.
     """
     return _F.H_tilde_dot(e, phi, omega, out, check, on_singular, threads)
@@ -222,7 +226,7 @@ def L_matrix(
     e: ArrayLike,
     phi: ArrayLike,
     *,
-    out: Out = None,
+    out: OutArrays = None,
     check: bool = True,
     on_singular: OnSingular | None = None,
     threads: int | None = None,
@@ -242,13 +246,14 @@ def L_matrix(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        L_matrix: ndarray (..., 4, 3)
+        ndarray (..., 4, 3): L_matrix
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
         ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
         NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
 
+    Notes:
         Generated; 48 operations; math hash ad587ca95a235ac2.
     """
     return _F.L_matrix(e, phi, out, check, on_singular, threads)
@@ -259,7 +264,7 @@ def L_matrix_dot(
     phi: ArrayLike,
     omega: ArrayLike,
     *,
-    out: Out = None,
+    out: OutArrays = None,
     check: bool = True,
     on_singular: OnSingular | None = None,
     threads: int | None = None,
@@ -280,13 +285,14 @@ def L_matrix_dot(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        L_matrix_dot: ndarray (..., 4, 3); [1/s]
+        ndarray (..., 4, 3): L_matrix_dot; [1/s]
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
         ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
         NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
 
+    Notes:
         Generated; 98 operations; math hash bc3db842eb2cf774.
     """
     return _F.L_matrix_dot(e, phi, omega, out, check, on_singular, threads)
@@ -296,7 +302,7 @@ def L_tilde(
     e: ArrayLike,
     phi: ArrayLike,
     *,
-    out: Out = None,
+    out: OutArrays = None,
     check: bool = True,
     on_singular: OnSingular | None = None,
     threads: int | None = None,
@@ -316,7 +322,7 @@ def L_tilde(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        L_tilde: ndarray (..., 3, 4)
+        ndarray (..., 3, 4): L_tilde
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
@@ -337,7 +343,7 @@ def L_tilde_dot(
     phi: ArrayLike,
     omega: ArrayLike,
     *,
-    out: Out = None,
+    out: OutArrays = None,
     check: bool = True,
     on_singular: OnSingular | None = None,
     threads: int | None = None,
@@ -358,7 +364,7 @@ def L_tilde_dot(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        L_tilde_dot: ndarray (..., 3, 4); [1/s]
+        ndarray (..., 3, 4): L_tilde_dot; [1/s]
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
@@ -378,7 +384,7 @@ def N_matrix(
     e: ArrayLike,
     phi: ArrayLike,
     *,
-    out: Out = None,
+    out: OutArrays = None,
     check: bool = True,
     on_singular: OnSingular | None = None,
     threads: int | None = None,
@@ -398,7 +404,7 @@ def N_matrix(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        N_matrix: ndarray (..., 4, 3)
+        ndarray (..., 4, 3): N_matrix
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
@@ -419,7 +425,7 @@ def N_matrix_dot(
     phi: ArrayLike,
     omega: ArrayLike,
     *,
-    out: Out = None,
+    out: OutArrays = None,
     check: bool = True,
     on_singular: OnSingular | None = None,
     threads: int | None = None,
@@ -440,7 +446,7 @@ def N_matrix_dot(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        N_matrix_dot: ndarray (..., 4, 3); [1/s]
+        ndarray (..., 4, 3): N_matrix_dot; [1/s]
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
@@ -460,7 +466,7 @@ def N_tilde(
     e: ArrayLike,
     phi: ArrayLike,
     *,
-    out: Out = None,
+    out: OutArrays = None,
     check: bool = True,
     on_singular: OnSingular | None = None,
     threads: int | None = None,
@@ -480,13 +486,14 @@ def N_tilde(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        N_tilde: ndarray (..., 3, 4)
+        ndarray (..., 3, 4): N_tilde
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
         ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
         NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
 
+    Notes:
         Generated; 13 operations; math hash 27fa6424b1903ca5.
     """
     return _F.N_tilde(e, phi, out, check, on_singular, threads)
@@ -497,7 +504,7 @@ def N_tilde_dot(
     phi: ArrayLike,
     omega: ArrayLike,
     *,
-    out: Out = None,
+    out: OutArrays = None,
     check: bool = True,
     on_singular: OnSingular | None = None,
     threads: int | None = None,
@@ -518,7 +525,7 @@ def N_tilde_dot(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        N_tilde_dot: ndarray (..., 3, 4); [1/s]
+        ndarray (..., 3, 4): N_tilde_dot; [1/s]
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
@@ -540,7 +547,7 @@ def inertia_at_point(
     c: ArrayLike,
     a: ArrayLike,
     *,
-    out: Out = None,
+    out: OutArrays = None,
     check: bool = True,
     on_singular: OnSingular | None = None,
     threads: int | None = None,
@@ -562,13 +569,14 @@ def inertia_at_point(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        I_A: ndarray (..., 3, 3); [kg m^2]
+        ndarray (..., 3, 3): I_A; [kg m^2]
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
         ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
         NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
 
+    Notes:
         Generated; 29 operations; math hash 421dca07df5d4b7a.
     """
     return _F.inertia_at_point(I_C, m, c, a, out, check, on_singular, threads)
@@ -580,7 +588,7 @@ def inertia_dyad_at_point(
     c: ArrayLike,
     a: ArrayLike,
     *,
-    out: Out = None,
+    out: OutArrays = None,
     check: bool = True,
     on_singular: OnSingular | None = None,
     threads: int | None = None,
@@ -602,13 +610,14 @@ def inertia_dyad_at_point(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        M_A: ndarray (..., 6, 6)
+        ndarray (..., 6, 6): M_A
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
         ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
         NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
 
+    Notes:
         Generated; 36 operations; math hash 68258707f5bb9e80.
     """
     return _F.inertia_dyad_at_point(I_C, m, c, a, out, check, on_singular, threads)
@@ -619,7 +628,7 @@ def instant_screw_axis(
     a: ArrayLike,
     a_dot: ArrayLike,
     *,
-    out: Out = None,
+    out: OutArrays = None,
     check: bool = True,
     on_singular: OnSingular | None = None,
     threads: int | None = None,
@@ -640,9 +649,11 @@ def instant_screw_axis(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        p0: ndarray (..., 3); ISA point closest to the origin [m]
-        pitch: ndarray (...); pitch [m/rad]
-        plucker: ndarray (..., 6); [e'; n']
+        tuple of ndarray: (p0, pitch, plucker), with
+
+            - p0: ndarray (..., 3); ISA point closest to the origin [m]
+            - pitch: ndarray (...); pitch [m/rad]
+            - plucker: ndarray (..., 6); [e'; n']
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
@@ -664,7 +675,7 @@ def kinetic_energy(
     omega: ArrayLike,
     c_dot: ArrayLike,
     *,
-    out: Out = None,
+    out: OutArrays = None,
     check: bool = True,
     on_singular: OnSingular | None = None,
     threads: int | None = None,
@@ -686,13 +697,14 @@ def kinetic_energy(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        T: ndarray (...); [J]
+        ndarray (...): T; [J]
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
         ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
         NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
 
+    Notes:
         Generated; 33 operations; math hash 59e2107c6b1479ae.
     """
     return _F.kinetic_energy(I_C, m, omega, c_dot, out, check, on_singular, threads)
@@ -707,7 +719,7 @@ def moving_frame_acceleration(
     rho_dot_M: ArrayLike,
     rho_ddot_M: ArrayLike,
     *,
-    out: Out = None,
+    out: OutArrays = None,
     check: bool = True,
     on_singular: OnSingular | None = None,
     threads: int | None = None,
@@ -732,13 +744,14 @@ def moving_frame_acceleration(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        p_ddot: ndarray (..., 3); [m/s^2], F-frame
+        ndarray (..., 3): p_ddot; [m/s^2], F-frame
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
         ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
         NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
 
+    Notes:
         Generated; 153 operations; math hash 9ff5554b1ab9fff0.
     """
     return _F.moving_frame_acceleration(o_ddot, Q, omega, omega_dot, rho_M, rho_dot_M, rho_ddot_M, out, check, on_singular, threads)
@@ -747,7 +760,7 @@ def moving_frame_acceleration(
 def natural_invariants_from_rotation(
     Q: ArrayLike,
     *,
-    out: Out = None,
+    out: OutArrays = None,
     check: bool = True,
     on_singular: OnSingular | None = None,
     threads: int | None = None,
@@ -766,8 +779,10 @@ def natural_invariants_from_rotation(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        e: ndarray (..., 3); unit axis
-        phi: ndarray (...); angle [rad]
+        tuple of ndarray: (e, phi), with
+
+            - e: ndarray (..., 3); unit axis
+            - phi: ndarray (...); angle [rad]
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
@@ -792,7 +807,7 @@ def newton_euler_wrench(
     omega_dot: ArrayLike,
     c_ddot: ArrayLike,
     *,
-    out: Out = None,
+    out: OutArrays = None,
     check: bool = True,
     on_singular: OnSingular | None = None,
     threads: int | None = None,
@@ -815,13 +830,14 @@ def newton_euler_wrench(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        w: ndarray (..., 6); [n_C; f] [N m; N]
+        ndarray (..., 6): w; [n_C; f] [N m; N]
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
         ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
         NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
 
+    Notes:
         Generated; 45 operations; math hash a4f13db2095d7265.
     """
     return _F.newton_euler_wrench(I_C, m, omega, omega_dot, c_ddot, out, check, on_singular, threads)
@@ -831,7 +847,7 @@ def plucker_from_points(
     p1: ArrayLike,
     p2: ArrayLike,
     *,
-    out: Out = None,
+    out: OutArrays = None,
     check: bool = True,
     on_singular: OnSingular | None = None,
     threads: int | None = None,
@@ -851,7 +867,7 @@ def plucker_from_points(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        kappa: ndarray (..., 6); [e; n] (n in m)
+        ndarray (..., 6): kappa; [e; n] (n in m)
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
@@ -872,7 +888,7 @@ def plucker_transfer(
     a: ArrayLike,
     b: ArrayLike,
     *,
-    out: Out = None,
+    out: OutArrays = None,
     check: bool = True,
     on_singular: OnSingular | None = None,
     threads: int | None = None,
@@ -893,13 +909,14 @@ def plucker_transfer(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        kappa_B: ndarray (..., 6); [e; n_B]
+        ndarray (..., 6): kappa_B; [e; n_B]
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
         ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
         NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
 
+    Notes:
         Generated; 15 operations; math hash 69d9b4ff4ea5cbea.
     """
     return _F.plucker_transfer(kappa_A, a, b, out, check, on_singular, threads)
@@ -912,7 +929,7 @@ def point_acceleration(
     p: ArrayLike,
     a: ArrayLike,
     *,
-    out: Out = None,
+    out: OutArrays = None,
     check: bool = True,
     on_singular: OnSingular | None = None,
     threads: int | None = None,
@@ -935,13 +952,14 @@ def point_acceleration(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        p_ddot: ndarray (..., 3); [m/s^2]
+        ndarray (..., 3): p_ddot; [m/s^2]
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
         ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
         NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
 
+    Notes:
         Generated; 36 operations; math hash bba0e838d11c478a.
     """
     return _F.point_acceleration(a_ddot, omega, omega_dot, p, a, out, check, on_singular, threads)
@@ -950,7 +968,7 @@ def point_acceleration(
 def rotation_from_euler_rodrigues(
     eta: ArrayLike,
     *,
-    out: Out = None,
+    out: OutArrays = None,
     check: bool = True,
     on_singular: OnSingular | None = None,
     threads: int | None = None,
@@ -969,13 +987,14 @@ def rotation_from_euler_rodrigues(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        Q: ndarray (..., 3, 3); rotation matrix
+        ndarray (..., 3, 3): Q; rotation matrix
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
         ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
         NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
 
+    Notes:
         Generated; 33 operations; math hash 59342dd978b76a46.
     """
     return _F.rotation_from_euler_rodrigues(eta, out, check, on_singular, threads)
@@ -985,7 +1004,7 @@ def rotation_from_natural_invariants(
     e: ArrayLike,
     phi: ArrayLike,
     *,
-    out: Out = None,
+    out: OutArrays = None,
     check: bool = True,
     on_singular: OnSingular | None = None,
     threads: int | None = None,
@@ -1005,13 +1024,14 @@ def rotation_from_natural_invariants(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        Q: ndarray (..., 3, 3); rotation matrix
+        ndarray (..., 3, 3): Q; rotation matrix
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
         ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
         NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
 
+    Notes:
         Generated; 37 operations; math hash 3a598761ac6bf1a3.
     """
     return _F.rotation_from_natural_invariants(e, phi, out, check, on_singular, threads)
@@ -1023,7 +1043,7 @@ def screw_axis_point(
     a: ArrayLike,
     a_prime: ArrayLike,
     *,
-    out: Out = None,
+    out: OutArrays = None,
     check: bool = True,
     on_singular: OnSingular | None = None,
     threads: int | None = None,
@@ -1045,7 +1065,7 @@ def screw_axis_point(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        p0: ndarray (..., 3); point of the axis closest to the origin [m]
+        ndarray (..., 3): p0; point of the axis closest to the origin [m]
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
@@ -1066,7 +1086,7 @@ def screw_of_displacement(
     a: ArrayLike,
     a_prime: ArrayLike,
     *,
-    out: Out = None,
+    out: OutArrays = None,
     check: bool = True,
     on_singular: OnSingular | None = None,
     threads: int | None = None,
@@ -1087,11 +1107,13 @@ def screw_of_displacement(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        e: ndarray (..., 3); unit axis
-        phi: ndarray (...); angle [rad], in [0, pi]
-        p0: ndarray (..., 3); axis point closest to the origin [m]
-        pitch: ndarray (...); pitch [m/rad]
-        plucker: ndarray (..., 6); [e; p0 x e]
+        tuple of ndarray: (e, phi, p0, pitch, plucker), with
+
+            - e: ndarray (..., 3); unit axis
+            - phi: ndarray (...); angle [rad], in [0, pi]
+            - p0: ndarray (..., 3); axis point closest to the origin [m]
+            - pitch: ndarray (...); pitch [m/rad]
+            - plucker: ndarray (..., 6); [e; p0 x e]
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
@@ -1114,7 +1136,7 @@ def twist_transfer(
     a: ArrayLike,
     p: ArrayLike,
     *,
-    out: Out = None,
+    out: OutArrays = None,
     check: bool = True,
     on_singular: OnSingular | None = None,
     threads: int | None = None,
@@ -1135,13 +1157,14 @@ def twist_transfer(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        t_P: ndarray (..., 6); [omega; v_P]
+        ndarray (..., 6): t_P; [omega; v_P]
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
         ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
         NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
 
+    Notes:
         Generated; 15 operations; math hash 0b921c0c211334f5.
     """
     return _F.twist_transfer(t_A, a, p, out, check, on_singular, threads)
@@ -1151,7 +1174,7 @@ def twist_transfer_matrix(
     a: ArrayLike,
     p: ArrayLike,
     *,
-    out: Out = None,
+    out: OutArrays = None,
     check: bool = True,
     on_singular: OnSingular | None = None,
     threads: int | None = None,
@@ -1171,13 +1194,14 @@ def twist_transfer_matrix(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        U: ndarray (..., 6, 6)
+        ndarray (..., 6, 6): U
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
         ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
         NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
 
+    Notes:
         Generated; 6 operations; math hash b790e8d04828afbd.
     """
     return _F.twist_transfer_matrix(a, p, out, check, on_singular, threads)
@@ -1187,7 +1211,7 @@ def wrench_axis(
     w_A: ArrayLike,
     a: ArrayLike,
     *,
-    out: Out = None,
+    out: OutArrays = None,
     check: bool = True,
     on_singular: OnSingular | None = None,
     threads: int | None = None,
@@ -1207,9 +1231,11 @@ def wrench_axis(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        p0: ndarray (..., 3); wrench-axis point closest to the origin [m]
-        pitch: ndarray (...); pitch [m]
-        plucker: ndarray (..., 6); [e''; n'']
+        tuple of ndarray: (p0, pitch, plucker), with
+
+            - p0: ndarray (..., 3); wrench-axis point closest to the origin [m]
+            - pitch: ndarray (...); pitch [m]
+            - plucker: ndarray (..., 6); [e''; n'']
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
@@ -1230,7 +1256,7 @@ def wrench_transfer(
     a: ArrayLike,
     p: ArrayLike,
     *,
-    out: Out = None,
+    out: OutArrays = None,
     check: bool = True,
     on_singular: OnSingular | None = None,
     threads: int | None = None,
@@ -1251,13 +1277,14 @@ def wrench_transfer(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        w_P: ndarray (..., 6); [n_P; f]
+        ndarray (..., 6): w_P; [n_P; f]
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
         ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
         NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
 
+    Notes:
         Generated; 15 operations; math hash 719fe1e42bb6247d.
     """
     return _F.wrench_transfer(w_A, a, p, out, check, on_singular, threads)
@@ -1267,7 +1294,7 @@ def wrench_transfer_matrix(
     a: ArrayLike,
     p: ArrayLike,
     *,
-    out: Out = None,
+    out: OutArrays = None,
     check: bool = True,
     on_singular: OnSingular | None = None,
     threads: int | None = None,
@@ -1287,13 +1314,14 @@ def wrench_transfer_matrix(
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
     Returns:
-        V: ndarray (..., 6, 6)
+        ndarray (..., 6, 6): V
 
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
         ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
         NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
 
+    Notes:
         Generated; 6 operations; math hash d1200d894b2faa3f.
     """
     return _F.wrench_transfer_matrix(a, p, out, check, on_singular, threads)

@@ -58,13 +58,6 @@ def _fake(sources, build):
                   args=(Arg("v", (3,)),), outputs=(Out("w", (3,)),), build=build)
 
 
-def test_missing_source_is_skipped_with_a_note():
-    k = _fake(("rigidsym.derivations.sec9_9.nothing_here",), lambda v: {"w": v})
-    res = generate([k])
-    assert res.kernels == [] and "fake_kernel" in res.notes[0]
-    assert "rigidsym.derivations.sec9_9.nothing_here" in res.notes[0]
-
-
 def test_header_and_files_of_a_kernel():
     k = _fake(("rigidsym.algebra.primitives.cpm",), lambda v: {"w": v.cross(v + sp.ones(3, 1))})
     res = generate([k])

@@ -188,6 +188,11 @@ def test_load_other_generated_directory(tmp_path, backend):
     ns = K.load(tmp_path)
     assert K.load(tmp_path) is ns and ns is not K.load()
     assert ns.KERNEL_NAMES == ("N_matrix", "plucker_from_points")
+    # only the kernels and the public helpers: nothing the generated module imports
+    public = sorted(n for n in vars(ns) if not n.startswith("_"))
+    assert public == ["KERNEL_NAMES", "N_matrix", "batch_function", "plucker_from_points"]
+    assert sorted(n for n in vars(K.load()) if not n.startswith("_")) == \
+        sorted([*K.KERNEL_NAMES, "KERNEL_NAMES", "batch_function"])
     p1, p2 = [[1.0, 2.0, 3.0], [0.0, 0.0, 0.0]], [-1.0, 0.5, 2.0]
     np.testing.assert_array_equal(ns.plucker_from_points(p2=p2, p1=p1),
                                   K.plucker_from_points(p1, p2))

@@ -215,8 +215,11 @@ def test_thread_count_setting_order(monkeypatch):
     monkeypatch.setenv("RIGIDSYM_NUM_THREADS", "lots")
     with pytest.raises(ValueError, match="RIGIDSYM_NUM_THREADS"):
         K.get_num_threads()
-    with pytest.raises(ValueError, match="n: expected a positive integer"):
+    # one validation for the keyword and the setting: a float is a TypeError in both
+    with pytest.raises(TypeError, match="^n: expected a positive int"):
         K.set_num_threads(1.5)
+    with pytest.raises(ValueError, match="^n: expected a positive int"):
+        K.set_num_threads(0)
 
 
 def test_numpy_backend_warns_once_and_runs_one_thread(monkeypatch):

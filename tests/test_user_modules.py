@@ -226,10 +226,12 @@ def test_report_and_generate_for_a_user_module(tmp_path, capsys):
     code, _, _ = _run(["report", "--module", str(path), "--out", str(out), "--jobs", "1"],
                       capsys)
     assert code == 0
-    assert (out / "kern.md").read_text().startswith("# kern checked: verdicts")
+    md = (out / "kern.md").read_text()
+    assert md.startswith("# kern checked: verdicts\n\nSource: the user module kern.")
     assert json.loads((out / "kern.json").read_text())["equations"][0]["id"] == "kern:double"
     page = (out / "kern.html").read_text()
     assert "<title>kern checked: verdicts</title>" in page and "Angeles" not in page
+    assert "Source: the user module kern." in page and "exercises.html" not in page
     gen = tmp_path / "gen"
     assert main(["generate", "--module", str(path), "--out", str(gen)]) == 0
     c_text = (gen / "c" / "doubled_value.c").read_text()

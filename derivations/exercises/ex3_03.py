@@ -39,7 +39,11 @@ def mutual_moment(l1, l2):
 
 
 def solve() -> Solution:
-    """Worked solution of Exercise 3.3."""
+    """Worked solution of Exercise 3.3.
+
+    Long: a worked solution is read top to bottom as the book's steps (statement, steps,
+    answers, checks); split into functions it would no longer read as one solution.
+    """
     p = sp.Matrix(sp.symbols("x y z", real=True))
     lines = [(vector(f"a{k}"), vector(f"e{k}")) for k in (1, 2, 3)]
     s = Solution(

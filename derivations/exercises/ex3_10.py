@@ -124,7 +124,11 @@ def figure(s: Solution):
 
 
 def solve(sequence: str = BOOK_SEQUENCE) -> Solution:
-    """Worked solution of Exercise 3.10, step by step for ``sequence`` (e.g. ``"ZXZ"``)."""
+    """Worked solution of Exercise 3.10, step by step for ``sequence`` (e.g. ``"ZXZ"``).
+
+    Long: a worked solution is read top to bottom as the book's steps (statement, steps,
+    answers, checks); split into functions it would no longer read as one solution.
+    """
     seq = sequence
     s = Solution(
         ID, TITLE, STATEMENT, CITATION,

@@ -31,13 +31,15 @@
 /* below this many samples the GIL is kept (releasing it costs more than such a call) */
 #define RIGIDSYM_GIL_SAMPLES 256
 
-enum { RIGIDSYM_ANY = 0, RIGIDSYM_UNIT = 1, RIGIDSYM_ROTATION = 2 };
+/* an argument's check (rigidsym._kinds.Kind.c_check); RIGIDSYM_PYTHON: a constraint with no
+ * C routine, checked calls take the Python path */
+enum { RIGIDSYM_ANY = 0, RIGIDSYM_UNIT = 1, RIGIDSYM_ROTATION = 2, RIGIDSYM_PYTHON = 3 };
 
 typedef struct {
     int nd;                        /* core dimensions (0, 1 or 2 for inputs) */
     npy_intp dims[4];
     Py_ssize_t size;               /* values per sample */
-    int kind;                      /* RIGIDSYM_ANY, _UNIT, _ROTATION */
+    int kind;                      /* RIGIDSYM_ANY, _UNIT, _ROTATION, _PYTHON */
 } rigidsym_slot;
 
 typedef struct {
@@ -1513,7 +1515,7 @@ static RIGIDSYM_VECTORISE int NAME(const T *x, npy_intp n, const rigidsym_slot *
                                    const double *tol)                                     \
 {                                                                                         \
     int bad = 0;                                                                          \
-    if (!FINITE(x, (int64_t)n * s->size))                                                 \
+    if (s->kind == RIGIDSYM_PYTHON || !FINITE(x, (int64_t)n * s->size))                   \
         return 0;                                                                         \
     if (s->kind == RIGIDSYM_UNIT) {                                                       \
         for (npy_intp i = 0; i < n; ++i) {                                                \

@@ -1,12 +1,21 @@
-"""Atomic file writes: nothing half-written on disk."""
+"""Files in and out without half states: atomic writes (nothing half-written on disk) and
+loading a module from a file (nothing half-registered in ``sys.modules``).
+"""
 
 from __future__ import annotations
 
+import importlib.util
 import os
+import sys
 import tempfile
+import types
 from pathlib import Path
 
-__all__ = ["write_atomic", "write_atomic_bytes"]
+__all__ = ["write_atomic", "write_atomic_bytes", "load_module", "NotAModule"]
+
+
+class NotAModule(ImportError):
+    """A file that is neither a Python source file nor an extension module."""
 
 
 def write_atomic(path: str | os.PathLike, text: str) -> Path:
@@ -54,3 +63,33 @@ def write_atomic_bytes(path: str | os.PathLike, data: bytes) -> Path:
         Path(tmp).unlink(missing_ok=True)
         raise
     return path
+
+
+def load_module(name: str, path: str | os.PathLike) -> types.ModuleType:
+    """Execute the Python source or extension module at ``path`` as the module ``name``.
+
+    The module is in ``sys.modules`` while it executes (dataclasses and pickling look it
+    up there) and is removed again if executing it fails.
+
+    Args:
+        name: the module's name (dotted names need no parent package).
+        path: a ``.py`` file or a compiled extension module.
+
+    Returns:
+        The executed module.
+
+    Raises:
+        NotAModule: ``path`` is neither a Python source file nor an extension module.
+        Exception: whatever executing the module raises.
+    """
+    spec = importlib.util.spec_from_file_location(name, path)
+    if spec is None or spec.loader is None:
+        raise NotAModule(f"{path}: not a Python source file or extension module")
+    mod = importlib.util.module_from_spec(spec)
+    sys.modules[name] = mod
+    try:
+        spec.loader.exec_module(mod)
+    except BaseException:
+        sys.modules.pop(name, None)
+        raise
+    return mod

@@ -20,7 +20,7 @@ from dataclasses import dataclass, fields
 from types import ModuleType
 from typing import overload
 
-from rigidsym.checking.checker import Result as _CheckerResult
+from rigidsym.checking.checker import Outcome
 from rigidsym.checking.registry import VERDICTS, BadInput, select
 
 __all__ = ["check", "verify", "Result", "Results"]
@@ -29,20 +29,34 @@ ModuleSpec = str | os.PathLike | ModuleType
 
 
 @dataclass(repr=False)
-class Result(_CheckerResult):
+class Result(Outcome):
     """The checker's outcome for one id, with notebook display.
 
-    The fields are those of the ``rigidsym verify --json`` rows (``id``, ``title``,
-    ``kind``, ``verdict``, ``expected``, ``method``, ``printed``, ``corrected``,
-    ``counterexample``, ``numeric``, ``seconds``, ...).
+    The fields are those of the ``rigidsym verify --json`` rows; :meth:`to_json` gives the
+    schema-2 record (documented on the "JSON schema 2" page of the documentation).
+
+    Attributes:
+        id: the equation id (``"3.96e"``, ``"notes:rodrigues"``).
+        title: its title.
+        kind: ``identity``, ``definition`` or ``claim``.
+        verdict: ``verified``, ``definition``, ``does-not-hold`` or ``undecided``, computed.
+        expected: the verdict the declaration expects.
+        method: how it was decided (``exact-cancel``, ``random-exact``,
+            ``counterexample``, ...).
+        printed, derived, corrected: the expanded sympy strings (``corrected`` is None
+            unless the printed form does not hold).
+        counterexample: for a does-not-hold, the exact point and both sides there.
+        numeric: the numeric backing (``points``, ``digits``, ``max_residual``, ``seed``).
+        seconds: the time the check took.
+        members: one record per member (printed, claim, corrected) in book notation.
     """
 
     @classmethod
-    def of(cls, r: _CheckerResult) -> Result:
+    def of(cls, r: Outcome) -> Result:
         """The same result with display methods (no copy of its values)."""
         if isinstance(r, cls):
             return r
-        return cls(**{f.name: getattr(r, f.name) for f in fields(_CheckerResult)})
+        return cls(**{f.name: getattr(r, f.name) for f in fields(Outcome)})
 
     def __repr__(self) -> str:
         flag = "" if self.verdict == self.expected else f", expected {self.expected}"
@@ -76,17 +90,14 @@ class Result(_CheckerResult):
         return f"$\\displaystyle {body}$"
 
     def _repr_html_(self) -> str:
-        from rigidsym.printing.mathml import latex_to_mathml
+        from rigidsym.printing.mathml import mathml_or_text
 
         e = html.escape
         rows = [f"<p><b>({e(self.id)}) {e(self.title)}</b>: <b>{e(self.verdict)}</b> "
                 f"(expected {e(self.expected)}; method {e(self.method)}; "
                 f"{self.seconds:.2f} s)</p>"]
         for label, latex in self.forms_latex():
-            try:
-                shown = latex_to_mathml(latex, display=True)
-            except Exception:  # noqa: BLE001  (a converter gap must not hide the result)
-                shown = f"<pre>{e(latex)}</pre>"
+            shown = mathml_or_text(latex, latex, display=True, tag="pre")
             rows.append(f"<div><i>{label}</i>{shown}</div>")
         if self.counterexample:
             # in the book's symbols when described (rigidsym.checking.bookpoint)
@@ -120,6 +131,10 @@ class Results(Sequence[Result]):
 
     Indexing by position or slice gives a ``Result`` or ``Results``; by id
     (``results["3.16"]``) the result of that id.
+
+    Args:
+        results: the results, in id order (checker outcomes are wrapped as ``Result``).
+        seconds: the wall time the run took, if known.
     """
 
     def __init__(self, results: Iterable[Result], seconds: float | None = None):

@@ -25,7 +25,9 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from rigidsym.algebra.operators import I3, MS, O3, Blocks, Cross, Det, mat, vec
+from rigidsym.algebra import operators as _operators
+from rigidsym.algebra import symbols as _symbols
+from rigidsym.algebra.operators import MS, Blocks, Cross, Det, mat, vec
 from rigidsym.algebra.primitives import (
     as_vector,
     block,
@@ -40,7 +42,6 @@ from rigidsym.algebra.primitives import (
     vect,
 )
 from rigidsym.algebra.symbols import (
-    TIME,
     angle,
     matrix,
     rotation,
@@ -62,6 +63,14 @@ __all__ = [
     "rotation_from_quaternion", "linear_invariants", "euler_rodrigues_parameters",
     "as_vector", "block", "eye3",
 ]
+
+#: The time symbol ``t`` (real) of trajectories: atoms made with ``t=TIME`` are functions
+#: of it, and derivatives along a motion are taken with respect to it.
+TIME = _symbols.TIME
+#: The book's 3 x 3 identity ``1`` as a matrix expression (``sympy.Identity(3)``).
+I3 = _operators.I3
+#: The book's 3 x 3 zero matrix ``O`` as a matrix expression (``sympy.ZeroMatrix(3, 3)``).
+O3 = _operators.O3
 
 
 @dataclass(frozen=True)

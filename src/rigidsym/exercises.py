@@ -16,8 +16,8 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from rigidsym.checking import worked as _worked
 from rigidsym.checking.worked import (
-    EXERCISE_IDS,
     IllPosed,
     Param,
     Parameters,
@@ -30,6 +30,9 @@ from rigidsym.checking.worked import solve as _solve
 
 __all__ = ["solve", "parameters", "figure", "write_notebook", "EXERCISE_IDS", "Solution",
            "Parameters", "Param", "IllPosed"]
+
+#: The ids of the chapter's exercises in order, ``"ex3.1"`` to ``"ex3.21"``.
+EXERCISE_IDS = _worked.EXERCISE_IDS
 
 
 def solve(exercise: str, /, *, tol=None, **data) -> Solution:
@@ -67,6 +70,9 @@ def solve(exercise: str, /, *, tol=None, **data) -> Solution:
 def parameters(exercise: str) -> Parameters:
     """The given data of ``exercise``: name, the book's value, shape, unit and meaning.
 
+    Args:
+        exercise: ``"ex3.4"``, ``"3.4"``.
+
     Returns:
         A :class:`Parameters` table (iterable of :class:`Param`; ``.names``,
         ``.defaults()``; shown as a table in a notebook). The ten exercises with no
@@ -81,6 +87,9 @@ def parameters(exercise: str) -> Parameters:
 
 def figure(solution: Solution):
     """The figure of a solved exercise, drawn from its own data and answers.
+
+    Args:
+        solution: a :class:`Solution` from :func:`solve`.
 
     Returns:
         A :class:`matplotlib.figure.Figure` (3-D axes for the geometric exercises; not
@@ -102,6 +111,11 @@ def figure(solution: Solution):
 def write_notebook(exercise: str, path: str | Path, **data) -> Path:
     """Write the notebook of ``exercise`` to ``path``; with ``data``, its data cell holds
     them instead of the book's values (checked as :func:`solve` checks them).
+
+    Args:
+        exercise: ``"ex3.4"``, ``"3.4"``.
+        path: the ``.ipynb`` file to write.
+        **data: the exercise's parameters by name, as for :func:`solve`.
 
     Returns:
         The path written (atomically).

@@ -15,22 +15,47 @@ import sympy as sp
 __all__ = ["MS", "I3", "O3", "vec", "mat", "Cross", "Det", "Blocks", "Cpm", "Vect",
            "is_symbolic"]
 
+#: The book's 3 x 3 identity ``1`` as a matrix expression (``sympy.Identity(3)``).
 I3 = sp.Identity(3)
+#: The book's 3 x 3 zero matrix ``O`` as a matrix expression (``sympy.ZeroMatrix(3, 3)``).
 O3 = sp.ZeroMatrix(3, 3)
 
 
 def MS(name: str, rows: int = 3, cols: int = 1) -> sp.MatrixSymbol:
-    """A book matrix symbol (vector by default)."""
+    """A book matrix symbol (vector by default).
+
+    Args:
+        name: the book name, as printed.
+        rows: number of rows.
+        cols: number of columns.
+
+    Returns:
+        A ``sympy.MatrixSymbol`` (a symbol until the model gives it a value).
+    """
     return sp.MatrixSymbol(name, rows, cols)
 
 
 def vec(name: str) -> sp.MatrixSymbol:
-    """A book 3-vector symbol."""
+    """A book 3-vector symbol.
+
+    Args:
+        name: the book name, as printed (``"a_prime"`` prints as ``a'``).
+
+    Returns:
+        A 3 x 1 ``sympy.MatrixSymbol``.
+    """
     return sp.MatrixSymbol(name, 3, 1)
 
 
 def mat(name: str) -> sp.MatrixSymbol:
-    """A book 3 x 3 matrix symbol."""
+    """A book 3 x 3 matrix symbol.
+
+    Args:
+        name: the book name, as printed.
+
+    Returns:
+        A 3 x 3 ``sympy.MatrixSymbol``.
+    """
     return sp.MatrixSymbol(name, 3, 3)
 
 
@@ -40,6 +65,10 @@ class Cross(sp.MatrixExpr):
 
     Prints as ``Cross(u, v)``; ``doit()`` gives the explicit cross product once both
     factors are explicit (after the checker substitutes the model).
+
+    Args:
+        u: the first factor, a 3 x 1 matrix expression (or explicit matrix).
+        v: the second factor, likewise.
     """
 
     def __new__(cls, u, v):
@@ -66,7 +95,12 @@ class Cross(sp.MatrixExpr):
 class Blocks(sp.BlockMatrix):
     """A book block matrix (``[[1, O], [A - B, 1]]``) that becomes explicit on ``doit()``
     once its blocks are (sympy's ``BlockMatrix`` stays symbolic inside a product, and the
-    product's ``as_explicit`` then goes through symbolic sums: slow)."""
+    product's ``as_explicit`` then goes through symbolic sums: slow).
+
+    Args:
+        rows: a list of rows of matrix expressions whose shapes fit, as for
+            ``sympy.BlockMatrix``.
+    """
 
     def doit(self, **hints):
         r = super().doit(**hints)
@@ -81,6 +115,9 @@ class Det(sp.Function):
     Prints as ``Det(M)``; ``doit()`` substitutes the entries of an explicit ``M`` into the
     cofactor expansion of a generic 3 x 3 (no expansion, no cancellation: shared subtrees
     stay shared), where sympy's ``Determinant`` expands (slow) or stays unevaluated.
+
+    Args:
+        M: a square matrix expression (or explicit matrix).
     """
 
     @classmethod

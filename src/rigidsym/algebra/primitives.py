@@ -33,6 +33,9 @@ def as_vector(v, name: str = "v") -> sp.Matrix:
         v: a sequence of 3 sympy expressions or a 3 x 1 / 1 x 3 matrix.
         name: the argument's name, used in the error message.
 
+    Returns:
+        3 x 1 ``sympy.Matrix``.
+
     Raises:
         ValueError: if ``v`` does not hold exactly three entries.
     """
@@ -74,6 +77,9 @@ def vect(A) -> sp.Matrix | Vect:
 
     Book: Sec. 2.3.3. ``vect(cpm(v)) == v``.
 
+    Args:
+        A: a 3 x 3 matrix (any sympy entries), or a book matrix symbol.
+
     Returns:
         3 x 1 ``sympy.Matrix``; for a book symbol, the lazy
         :class:`~rigidsym.algebra.operators.Vect` (prints ``vect(A)``).
@@ -96,6 +102,10 @@ def vect(A) -> sp.Matrix | Vect:
 def trace(A) -> sp.Expr:
     """Trace of a square matrix. Book: Sec. 2.3 (tr).
 
+    Args:
+        A: a square matrix (explicit, or anything ``sympy.Matrix`` accepts), or a book
+            matrix symbol.
+
     Returns:
         The sum of the diagonal; for a book symbol, the lazy ``sympy.Trace`` (prints
         ``tr(A)``, explicit once the symbol has its value).
@@ -114,7 +124,11 @@ def trace(A) -> sp.Expr:
 
 
 def eye3() -> sp.Matrix:
-    """The 3 x 3 identity, the book's ``1``."""
+    """The 3 x 3 identity, the book's ``1``.
+
+    Returns:
+        ``sympy.eye(3)``, a new mutable matrix.
+    """
     return sp.eye(3)
 
 
@@ -144,7 +158,18 @@ def rotation_from_natural_invariants(e, phi) -> sp.Matrix:
 
 
 def linear_invariants(e, phi) -> tuple[sp.Matrix, sp.Expr]:
-    """Linear invariants ``u = sin(phi) e``, ``u0 = cos(phi)``. Book: Sec. 2.3; Eq. (3.95b)."""
+    """Linear invariants ``u = sin(phi) e``, ``u0 = cos(phi)``. Book: Sec. 2.3; Eq. (3.95b).
+
+    Args:
+        e: unit 3-vector along the axis.
+        phi: angle [rad].
+
+    Returns:
+        The pair ``(u, u0)``, a 3 x 1 ``sympy.Matrix`` and a scalar expression.
+
+    Raises:
+        ValueError: ``e`` is not a 3-vector.
+    """
     e = as_vector(e, "e")
     return sp.sin(phi) * e, sp.cos(phi)
 
@@ -153,6 +178,16 @@ def euler_rodrigues_parameters(e, phi) -> tuple[sp.Matrix, sp.Expr]:
     """Euler-Rodrigues parameters ``r = sin(phi/2) e``, ``r0 = cos(phi/2)``.
 
     Book: Sec. 2.3; Eq. (3.95b).
+
+    Args:
+        e: unit 3-vector along the axis.
+        phi: angle [rad].
+
+    Returns:
+        The pair ``(r, r0)``, a 3 x 1 ``sympy.Matrix`` and a scalar expression.
+
+    Raises:
+        ValueError: ``e`` is not a 3-vector.
     """
     e = as_vector(e, "e")
     return sp.sin(phi / 2) * e, sp.cos(phi / 2)
@@ -162,6 +197,16 @@ def rotation_from_euler_rodrigues(r, r0) -> sp.Matrix:
     """``Q = (r0^2 - r.r) 1 + 2 r r^T + 2 r0 cpm(r)``, valid when ``r.r + r0^2 = 1``.
 
     Book: Sec. 2.3 (Euler-Rodrigues form of the rotation).
+
+    Args:
+        r: the vector part, 3 x 1.
+        r0: the scalar part.
+
+    Returns:
+        3 x 3 ``sympy.Matrix``, proper orthogonal when ``r.r + r0^2 = 1``.
+
+    Raises:
+        ValueError: ``r`` is not a 3-vector.
     """
     r = as_vector(r, "r")
     return (r0**2 - (r.T * r)[0]) * sp.eye(3) + 2 * r * r.T + 2 * r0 * cpm(r)
@@ -173,6 +218,15 @@ def rotation_from_quaternion(q) -> sp.Matrix:
     ``Q = ((q0^2 - v.v) 1 + 2 v v^T + 2 q0 cpm(v)) / (v.v + q0^2)`` with ``v = [q1, q2, q3]``.
     Rational in ``q`` and exactly orthogonal for every ``q != 0``: this is the rational
     parametrisation of SO(3) that lets the zero test honour ``Q^T Q = 1`` by cancellation.
+
+    Args:
+        q: four entries ``[q1, q2, q3, q0]``, not all zero.
+
+    Returns:
+        3 x 3 ``sympy.Matrix``, rational in ``q``.
+
+    Raises:
+        ValueError: ``q`` does not hold four entries.
     """
     q = list(sp.Matrix(q))
     if len(q) != 4:
@@ -187,6 +241,15 @@ def block(rows) -> sp.Matrix:
     """Explicit block matrix from a nested list of matrices/scalars (scalars become 1 x 1).
 
     Used for the book's stacked arrays (``[e; phi]``, ``[[1, O], [A - B, 1]]``).
+
+    Args:
+        rows: a list of rows, each a list of explicit matrices or scalars whose shapes fit.
+
+    Returns:
+        The explicit ``sympy.Matrix``.
+
+    Raises:
+        ValueError: the blocks' shapes do not fit together (sympy's message).
     """
     def _m(x):
         return x if isinstance(x, sp.MatrixBase) else sp.Matrix([[x]])

@@ -31,12 +31,15 @@ from functools import cache
 import sympy as sp
 from sympy.core.function import AppliedUndef
 
+from rigidsym import _kinds
+
 __all__ = [
     "TIME",
     "Constraint",
     "ConstrainedSymbol",
     "constraint_of",
     "constrained_atom",
+    "constrained_group",
     "unit_vector",
     "unit_vector4",
     "angle",
@@ -56,7 +59,8 @@ class Constraint:
     """A constraint on a group of atoms; every atom of the group carries it.
 
     Attributes:
-        kind: ``"unit"``, ``"unit4"``, ``"angle"`` or ``"rotation"``.
+        kind: the name of a kind of :data:`rigidsym._kinds.KINDS` (``"unit"``,
+            ``"unit4"``, ``"angle"``, ``"rotation"``).
         name: the group's book name (``"e"``, ``"phi"``, ``"Q"``).
         names: the names of the atoms (symbol or function names), row-major for matrices.
         timed: whether the atoms are functions of :data:`TIME`.
@@ -132,11 +136,46 @@ def _components(name: str, n: int) -> list[str]:
     return [f"{name}_{i}" for i in range(1, n + 1)]
 
 
+def constrained_group(kind: str, name: str, t: sp.Symbol | None = None):
+    """The atoms of one group of the constraint ``kind`` (a row of
+    :data:`rigidsym._kinds.KINDS`), shaped as the kind says.
+
+    Args:
+        kind: a kind name (``"unit"``, ``"unit4"``, ``"rotation"``, ``"angle"``, or one
+            registered later).
+        name: the group's book name; the atoms are ``Kind.components(name)``.
+        t: :data:`TIME` for atoms that are functions of time, else ``None``.
+
+    Returns:
+        A scalar atom for a kind of shape ``()``, else a ``sympy.Matrix`` of that shape.
+
+    Raises:
+        ValueError: an unknown kind, or ``t`` neither ``TIME`` nor ``None``.
+    """
+    k = _kinds.get(kind)
+    names = k.components(name)
+    c = Constraint(kind, name, names, t is not None)
+    atoms = [_atom(n, t, c) for n in names]
+    if k.shape == ():
+        return atoms[0]
+    return sp.Matrix(*k.shape, atoms) if len(k.shape) == 2 else sp.Matrix(atoms)
+
+
 def unit_vector(name: str, t: sp.Symbol | None = None) -> sp.Matrix:
-    """A 3 x 1 unit vector (``e . e = 1`` imposed exactly by the zero test)."""
-    names = _components(name, 3)
-    c = Constraint("unit", name, tuple(names), t is not None)
-    return sp.Matrix([_atom(n, t, c) for n in names])
+    """A 3 x 1 unit vector (``e . e = 1`` imposed exactly by the zero test).
+
+    Args:
+        name: the book name; the entries are ``name_1``, ``name_2``, ``name_3``.
+        t: :data:`TIME` for a unit vector that moves (entries are functions of time, and
+            ``e . e_dot = 0`` holds exactly), else ``None``.
+
+    Returns:
+        3 x 1 ``sympy.Matrix`` of constrained atoms (dimensionless).
+
+    Raises:
+        ValueError: ``t`` is neither :data:`TIME` nor ``None``.
+    """
+    return constrained_group("unit", name, t)
 
 
 def unit_vector4(name: str, t: sp.Symbol | None = None) -> sp.Matrix:
@@ -144,42 +183,107 @@ def unit_vector4(name: str, t: sp.Symbol | None = None) -> sp.Matrix:
 
     The Euler-Rodrigues parameters ``eta = [r; r0]`` of a rotation are one (Sec. 2.3:
     ``r . r + r0^2 = 1``).
+
+    Args:
+        name: the book name.
+        t: :data:`TIME` for entries that are functions of time, else ``None``.
+
+    Returns:
+        4 x 1 ``sympy.Matrix`` of constrained atoms.
+
+    Raises:
+        ValueError: ``t`` is neither :data:`TIME` nor ``None``.
     """
-    names = _components(name, 4)
-    c = Constraint("unit4", name, tuple(names), t is not None)
-    return sp.Matrix([_atom(n, t, c) for n in names])
+    return constrained_group("unit4", name, t)
 
 
 def angle(name: str, t: sp.Symbol | None = None):
-    """An angle in radians (``cos^2 + sin^2 = 1`` imposed exactly by the zero test)."""
-    return _atom(name, t, Constraint("angle", name, (name,), t is not None))
+    """An angle in radians (``cos^2 + sin^2 = 1`` imposed exactly by the zero test).
+
+    Args:
+        name: the book name (``"phi"``).
+        t: :data:`TIME` for an angle that is a function of time, else ``None``.
+
+    Returns:
+        A real constrained atom (a symbol, or ``name(t)``) [rad].
+
+    Raises:
+        ValueError: ``t`` is neither :data:`TIME` nor ``None``.
+    """
+    return constrained_group("angle", name, t)
 
 
 def rotation(name: str, t: sp.Symbol | None = None) -> sp.Matrix:
-    """A generic 3 x 3 proper orthogonal matrix (entries ``name_ij``, row-major)."""
-    names = [f"{name}_{i}{j}" for i in range(1, 4) for j in range(1, 4)]
-    c = Constraint("rotation", name, tuple(names), t is not None)
-    return sp.Matrix(3, 3, [_atom(n, t, c) for n in names])
+    """A generic 3 x 3 proper orthogonal matrix (``Q^T Q = 1``, ``det Q = 1`` imposed
+    exactly by the zero test through a rational quaternion).
+
+    Args:
+        name: the book name; the entries are ``name_ij``, row-major, from 1.
+        t: :data:`TIME` for a rotation that moves (``Q^T Q_dot`` is then skew exactly),
+            else ``None``.
+
+    Returns:
+        3 x 3 ``sympy.Matrix`` of constrained atoms.
+
+    Raises:
+        ValueError: ``t`` is neither :data:`TIME` nor ``None``.
+    """
+    return constrained_group("rotation", name, t)
 
 
 def vector(name: str, t: sp.Symbol | None = None, n: int = 3) -> sp.Matrix:
-    """A free n x 1 vector (entries ``name_1 ... name_n``)."""
+    """A free n x 1 vector (no constraint).
+
+    Args:
+        name: the book name; the entries are ``name_1 ... name_n``.
+        t: :data:`TIME` for entries that are functions of time, else ``None``.
+        n: the number of entries.
+
+    Returns:
+        n x 1 ``sympy.Matrix`` of real atoms.
+    """
     return sp.Matrix([_atom(c, t) for c in _components(name, n)])
 
 
 def scalar(name: str, t: sp.Symbol | None = None):
-    """A free real scalar."""
+    """A free real scalar.
+
+    Args:
+        name: the book name.
+        t: :data:`TIME` for a function of time, else ``None``.
+
+    Returns:
+        A real symbol, or the applied function ``name(t)``.
+    """
     return _atom(name, t)
 
 
 def matrix(name: str, rows: int = 3, cols: int = 3, t: sp.Symbol | None = None) -> sp.Matrix:
-    """A free rows x cols matrix (entries ``name_ij``)."""
+    """A free rows x cols matrix.
+
+    Args:
+        name: the book name; the entries are ``name_ij``, row-major, from 1.
+        rows: number of rows.
+        cols: number of columns.
+        t: :data:`TIME` for entries that are functions of time, else ``None``.
+
+    Returns:
+        rows x cols ``sympy.Matrix`` of real atoms.
+    """
     return sp.Matrix(rows, cols, [_atom(f"{name}_{i}{j}", t)
                                   for i in range(1, rows + 1) for j in range(1, cols + 1)])
 
 
 def symmetric_matrix(name: str, t: sp.Symbol | None = None) -> sp.Matrix:
-    """A free symmetric 3 x 3 matrix (entries ``name_ij`` with i <= j)."""
+    """A free symmetric 3 x 3 matrix (an inertia matrix, say).
+
+    Args:
+        name: the book name; the six atoms are ``name_ij`` with ``i <= j``.
+        t: :data:`TIME` for entries that are functions of time, else ``None``.
+
+    Returns:
+        3 x 3 symmetric ``sympy.Matrix``.
+    """
     a = {(i, j): _atom(f"{name}_{min(i, j)}{max(i, j)}", t) for i in range(1, 4)
          for j in range(1, 4)}
     return sp.Matrix(3, 3, lambda i, j: a[(i + 1, j + 1)])

@@ -76,6 +76,8 @@ def run_balls(prog: Program, leaves: list) -> list:
     Returns balls that contain the exact values (a non-finite ball where the value is
     undefined or a denominator's ball contains 0).
     """
+    # the loop of rigidsym.zero.program.run_exact on balls, written out: a shared loop
+    # would cost a Python call per operation in the checker's inner loop
     vals: list = [None] * len(prog.ops)
     for i, op in enumerate(prog.ops):
         code = op[0]

@@ -172,16 +172,7 @@ def _describe(rel, model, rels, plan, pt, sentence) -> dict:
         else:
             params.append(a)
     # 3. other scalars and vectors of the statement that the point fixes (m, c, ȧ⊥)
-    for s in sorted(in_rels, key=lambda x: notation.text(x)):
-        if s in seen or s in sides or s not in model or not isinstance(
-                s, sp.Symbol | sp.MatrixSymbol):
-            continue
-        r, c = shape_of(s)
-        if c != 1 or r > 6:
-            continue
-        v = explicit(s, model)
-        if _atoms_of(v) <= known:
-            add(s, notation.text(s), notation.latex(s), v)
+    _add_fixed(add, in_rels, seen | sides, model, known)
     chosen = _chosen(plan, pt, params, sentence)
     if vals.filled:
         names = sorted({notation.book_group(plain_name(a)) for a in vals.filled})
@@ -189,6 +180,20 @@ def _describe(rel, model, rels, plan, pt, sentence) -> dict:
                            f"does: 1/2 is taken for each entry.")
         chosen["text"] = chosen["text"].strip()
     return {"symbols": shown, "chosen": chosen}
+
+
+def _add_fixed(add, in_rels: set, skip: set, model, known: set) -> None:
+    """Step 3 of :func:`_describe`: the statement's scalars and vectors (up to 6 entries)
+    that the point fixes, those not already shown (``skip``)."""
+    for s in sorted(in_rels, key=lambda x: notation.text(x)):
+        if s in skip or s not in model or not isinstance(s, sp.Symbol | sp.MatrixSymbol):
+            continue
+        r, c = shape_of(s)
+        if c != 1 or r > 6:
+            continue
+        v = explicit(s, model)
+        if _atoms_of(v) <= known:
+            add(s, notation.text(s), notation.latex(s), v)
 
 
 def _has_atoms(v) -> bool:

@@ -47,7 +47,7 @@ from rigidsym.checking.records import member_record, model_words
 from rigidsym.checking.registry import REGISTRY, Equation, Rel, Statement
 from rigidsym.zero.decide import Unsupported, decide_zero, make_plan
 
-__all__ = ["Result", "check", "explicit", "shape_of", "NUMERIC_DIGITS", "NUMERIC_POINTS"]
+__all__ = ["Outcome", "check", "explicit", "shape_of", "NUMERIC_DIGITS", "NUMERIC_POINTS"]
 
 #: certified bound of the relative residual below which the numeric check agrees with
 #: "holds" (a wider ball at the highest precision turns the verdict undecided).
@@ -57,8 +57,12 @@ DIFFER_TOL = 1e-12
 
 
 @dataclass
-class Result:
-    """The checker's outcome for one id (the JSON row of ``rigidsym verify --json``)."""
+class Outcome:
+    """The checker's outcome for one id (the JSON row of ``rigidsym verify --json``).
+
+    The public :class:`rigidsym.Result` is this with notebook display and the schema-2
+    record (:mod:`rigidsym.api`, a layer above the checker).
+    """
 
     id: str
     title: str
@@ -172,7 +176,7 @@ def _derived_str(st: Statement) -> str:
 
 
 def check(eq: Equation | str, *, repairs: bool = True,
-          repair_budget: int | None = None) -> Result:
+          repair_budget: int | None = None) -> Outcome:
     """Compute the verdict of one declaration, with its numeric backing.
 
     Args:
@@ -183,7 +187,7 @@ def check(eq: Equation | str, *, repairs: bool = True,
             ``repair_budget``, else :data:`rigidsym.checking.repair.REPAIR_BUDGET`.
 
     Returns:
-        A :class:`Result`; ``verdict`` is computed here, never read from the declaration.
+        A :class:`Outcome`; ``verdict`` is computed here, never read from the declaration.
         An exception inside the declaration or the checker (a recursion limit in a huge
         expression, say) gives ``undecided`` with the error named, never a crashed run.
     """
@@ -193,7 +197,7 @@ def check(eq: Equation | str, *, repairs: bool = True,
     try:
         return _check(eq, t0, RepairSettings(repairs, repair_budget))
     except Exception as exc:  # a defect to report as undecided, not to hide
-        return Result(
+        return Outcome(
             id=eq.id, title=eq.title, kind=eq.kind, verdict="undecided", expected=eq.expected,
             method="undecided", printed_latex=eq.latex, printed="", derived="",
             corrected=None, counterexample=None, cause=None,
@@ -204,7 +208,14 @@ def check(eq: Equation | str, *, repairs: bool = True,
             singular=eq.singular)
 
 
-def _check(eq: Equation, t0: float, settings: RepairSettings) -> Result:
+def _check(eq: Equation, t0: float, settings: RepairSettings) -> Outcome:
+    """The verdict of one declaration (:func:`check` without its safety net).
+
+    Long: the verdict, method and detail are refined step by step (a definition or an
+    identity; the failing member and the corrected form; then the numeric backing, which may
+    demote any verdict to undecided), each step reading what the previous ones decided; the
+    steps stay in that one reading order.
+    """
     seed = _seed(eq.id)
     st = eq.build()
     _EXPLICIT_CACHE.clear()
@@ -264,7 +275,7 @@ def _check(eq: Equation, t0: float, settings: RepairSettings) -> Result:
     verdict, detail, numeric = _numeric(verdict, detail, rels, bool(backing), st.model, seed,
                                         bad_rel if verdict == "does-not-hold" else None,
                                         bad)
-    return Result(
+    return Outcome(
         id=eq.id, title=eq.title, kind=eq.kind, verdict=verdict, expected=eq.expected,
         method=method if verdict != "undecided" else "undecided",
         printed_latex=eq.latex, printed=_rel_str(st.printed) or "",

@@ -25,10 +25,10 @@ from rigidsym.checking import repair
 from rigidsym.checking.records import member_record
 from rigidsym.checking.registry import Rel
 
-__all__ = ["Outcome", "RepairSettings", "correct", "budget_of", "CORRECTIONS"]
+__all__ = ["Correction", "RepairSettings", "correct", "budget_of", "CORRECTIONS"]
 
-#: the values of ``Result.correction`` for a does-not-hold (or an undecided whose declared
-#: correction fails)
+#: the values of ``checker.Outcome.correction`` for a does-not-hold (or an undecided whose
+#: declared correction fails)
 CORRECTIONS = ("declared", "declared, does not verify", "found by search", "none",
                "none (search off)")
 
@@ -51,7 +51,7 @@ def budget_of(eq, settings: RepairSettings) -> int:
 
 
 @dataclass
-class Outcome:
+class Correction:
     """The correction of a does-not-hold.
 
     Attributes:
@@ -60,7 +60,7 @@ class Outcome:
         detail: the words that follow the failure in the result's detail.
         backing: the relations the numeric check evaluates (the corrected form).
         members: member records of the corrected form.
-        corrected: the corrected form as text (``Result.corrected``), or ``None``.
+        corrected: the corrected form as text (``checker.Outcome.corrected``), or ``None``.
         repairs: the repair records (schema 2), every failing member's, in member order.
         searches: what was searched per failing member.
     """
@@ -103,7 +103,7 @@ def _search(eq, st, rels, outs, seed, settings, decide) -> tuple[list, list, dic
 
 
 def correct(eq, st, outs: list, seed: int, settings: RepairSettings, decide: Callable,
-            combine: Callable, rel_text: Callable) -> Outcome:
+            combine: Callable, rel_text: Callable) -> Correction:
     """The correction and repairs of a statement some printed member or claim of which has
     an exact counterexample.
 
@@ -115,7 +115,7 @@ def correct(eq, st, outs: list, seed: int, settings: RepairSettings, decide: Cal
         settings: the run's :class:`RepairSettings`.
         decide: the checker's ``decide_rel``.
         combine: the checker's combination of decisions, ``-> (zero, method, detail)``.
-        rel_text: relations to text (``Result.corrected``).
+        rel_text: relations to text (``checker.Outcome.corrected``).
     """
     rels = st.printed + st.claims
     searches, records, first = [], [], {}
@@ -127,7 +127,7 @@ def correct(eq, st, outs: list, seed: int, settings: RepairSettings, decide: Cal
                          "undecidable": 0, "budget": budget_of(eq, settings),
                          "words": f"the search failed ({type(exc).__name__}: "
                                   f"{str(exc)[:120]})"}]
-    out = Outcome(kind="none", repairs=records, searches=searches)
+    out = Correction(kind="none", repairs=records, searches=searches)
     if st.corrected:
         return _declared(out, st, seed, decide, combine)
     failing = [r for r, o in zip(rels, outs, strict=True) if o.zero is False]
@@ -143,7 +143,7 @@ def correct(eq, st, outs: list, seed: int, settings: RepairSettings, decide: Cal
     return out
 
 
-def _declared(out: Outcome, st, seed: int, decide: Callable, combine: Callable) -> Outcome:
+def _declared(out: Correction, st, seed: int, decide: Callable, combine: Callable) -> Correction:
     couts = [decide(r, st.model, seed + 100 + i) for i, r in enumerate(st.corrected)]
     out.members = [member_record(r, "corrected", o)
                    for r, o in zip(st.corrected, couts, strict=True)]
@@ -158,7 +158,7 @@ def _declared(out: Outcome, st, seed: int, decide: Callable, combine: Callable) 
     return out
 
 
-def _found(out: Outcome, rels: list, first: dict, rel_text: Callable) -> Outcome:
+def _found(out: Correction, rels: list, first: dict, rel_text: Callable) -> Correction:
     """The corrected form from the search: each failing member replaced by its first
     repair, the members that hold kept."""
     fixed = []

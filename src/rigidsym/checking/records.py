@@ -9,14 +9,12 @@ from __future__ import annotations
 import sympy as sp
 from sympy.core.function import AppliedUndef
 
+from rigidsym import _kinds
 from rigidsym.algebra.symbols import TIME, constraint_of
+from rigidsym.checking.explicit import _entries
 from rigidsym.printing import notation
 
 __all__ = ["member_record", "model_words", "MEMBER_TEXT_LIMIT", "MEMBER_LATEX_LIMIT"]
-
-
-def _entries(x) -> list:
-    return list(x) if isinstance(x, sp.MatrixBase) else [x]
 
 
 #: member texts longer than this are not kept: such a member is an explicit component
@@ -77,11 +75,6 @@ def _atoms(x, cap: int) -> int:
     return n
 
 
-_KIND_WORDS = {"unit": "unit vector, stereographic", "unit4": "unit 4-vector, stereographic",
-               "angle": "angle, half-angle tangent",
-               "rotation": "rotation, rational quaternion"}
-
-
 def model_words(exprs) -> list[str]:
     """The atoms of explicit expressions grouped by constraint, in words.
 
@@ -111,7 +104,7 @@ def _model_words(exprs) -> list[str]:
                     groups[c.name] = c.kind
                 else:
                     free.add(notation.book_group(name))
-    out = sorted(f"{notation.book_text(n)}: {_KIND_WORDS.get(k, k)}" for n, k in groups.items())
+    out = sorted(f"{notation.book_text(n)}: {_kinds.get(k).words}" for n, k in groups.items())
     if free:
         out.append("free: " + ", ".join(sorted(free)))
     if timed_any:

@@ -51,7 +51,6 @@ SECTIONS = ("3.2", "3.3", "3.4", "3.5", "3.6", "3.7", "3.8")
 _ID = re.compile(r"^(3\.\d+[a-e]?|(thm|cor|caveat)3\.\d+(\.\d+)?|ex3\.\d+)$")
 #: A user id: ``namespace:name`` (``notes:rodrigues``, ``paper:eq7``).
 _USER_ID = re.compile(r"^[a-z][a-z0-9_-]*:[A-Za-z0-9_.-]+$")
-#: The package whose modules declare the book's ids.
 #: The cause of a user's does-not-hold when the declaration names none.
 USER_CAUSE_DEFAULT = "not determined"
 
@@ -66,14 +65,22 @@ def is_user_id(eq_id: str) -> bool:
 
 
 class BadInput(ValueError):
-    """Bad user input (CLI exit code 2)."""
+    """Bad user input: an unknown or malformed id or section, a user module that cannot be
+    loaded (the CLI exits with code 2). A ``ValueError``.
+
+    Args:
+        message: one line naming the input and what was expected.
+    """
 
 
 @dataclass(frozen=True)
 class Rel:
     """One equality ``lhs = rhs`` to decide (sympy expressions, matrices or matrix expressions).
 
-    ``label`` names the member (``"d_P"``, ``"second member"``) in reports.
+    Attributes:
+        lhs: the left-hand side.
+        rhs: the right-hand side, of the same shape.
+        label: names the member in reports (``"d_P"``, ``"second member"``); optional.
     """
 
     lhs: Any
@@ -214,6 +221,10 @@ def equation(eq_id: str, title: str, *, section: str | None = None,
         repair_budget: candidates the repair search tries per failing member of this
             declaration (a non-negative integer; ``None``: the default, 5000). A run's own
             budget (``verify(..., repair_budget=N)``) takes precedence.
+
+    Returns:
+        A decorator that registers the function (which takes no argument and returns a
+        :class:`Statement`) and returns it unchanged.
 
     Raises:
         ValueError: for a malformed id, a book id declared outside the book, an id declared

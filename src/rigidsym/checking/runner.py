@@ -88,7 +88,7 @@ def run_checks(ids: list[str], jobs: int = 1, progress: bool = True, cache: bool
         jobs: worker processes (1: in this process).
         progress: show progress on stderr (:mod:`rigidsym._progress`).
         cache: read results from the verdict cache where their key matches
-            (:mod:`rigidsym.checking.verdict_cache`; ``Result.cached`` is then true);
+            (:mod:`rigidsym.checking.verdict_cache`; ``Outcome.cached`` is then true);
             compute and store the others.
         reporter: the command's :class:`~rigidsym._progress.Reporter` (its phases), else
             one of its own.
@@ -96,7 +96,7 @@ def run_checks(ids: list[str], jobs: int = 1, progress: bool = True, cache: bool
             join the cache key).
 
     Returns:
-        The :class:`~rigidsym.checking.checker.Result` of each id, in the order of ``ids``.
+        The :class:`~rigidsym.checking.checker.Outcome` of each id, in the order of ``ids``.
     """
     settings = RepairSettings(repairs, repair_budget)
     one = partial(_check_one, settings=settings)

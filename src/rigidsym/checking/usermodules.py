@@ -18,13 +18,13 @@ from __future__ import annotations
 
 import hashlib
 import importlib
-import importlib.util
 import os
 import re
 import sys
 from dataclasses import dataclass
 from pathlib import Path
 
+from rigidsym._io import NotAModule, load_module
 from rigidsym.checking.registry import (
     REGISTRY,
     BadInput,
@@ -82,15 +82,11 @@ def _import_file(path: Path) -> tuple[str, object]:
     if folder not in sys.path:  # sibling imports of the user module work
         sys.path.insert(0, folder)
     forget_module(name)
-    spec = importlib.util.spec_from_file_location(name, path)
-    if spec is None or spec.loader is None:
-        raise BadInput(f"module {path}: not a Python source file")
-    mod = importlib.util.module_from_spec(spec)
-    sys.modules[name] = mod  # before exec: dataclasses and pickling look it up
     try:
-        spec.loader.exec_module(mod)
+        mod = load_module(name, path)
+    except NotAModule:
+        raise BadInput(f"module {path}: not a Python source file") from None
     except BaseException:
-        sys.modules.pop(name, None)
         forget_module(name)
         raise
     return name, mod

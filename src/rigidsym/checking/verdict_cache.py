@@ -231,7 +231,7 @@ def _path(key: str) -> Path:
 
 def _read(eq_id: str, key: str):
     """The cached result of ``eq_id`` under ``key``, or ``None`` (missing, or ignored)."""
-    from rigidsym.checking.checker import Result
+    from rigidsym.checking.checker import Outcome
 
     path = _path(key)
     if not path.exists():
@@ -245,9 +245,9 @@ def _read(eq_id: str, key: str):
                 entry.get("id") != eq_id:
             raise ValueError("written for another key")
         row = entry["result"]
-        if set(row) != {f.name for f in fields(Result)} or row["id"] != eq_id:
+        if set(row) != {f.name for f in fields(Outcome)} or row["id"] != eq_id:
             raise ValueError("not a result of this version")
-        return Result(**dict(row, cached=True))
+        return Outcome(**dict(row, cached=True))
     except (ValueError, TypeError, KeyError, AttributeError) as exc:
         warnings.warn(f"verdict cache: ignored the entry of {eq_id} ({path}): {exc}; "
                       f"recomputed", VerdictCacheWarning, stacklevel=3)
@@ -258,7 +258,7 @@ def lookup(ids: list[str], settings=None) -> tuple[dict, dict]:
     """Cached results and keys of ``ids`` (under the run's repair ``settings``).
 
     Returns:
-        ``(hits, keys)``: ``id -> Result`` (with ``cached=True``) for the ids found, and
+        ``(hits, keys)``: ``id -> Outcome`` (with ``cached=True``) for the ids found, and
         ``id -> key`` for every id that may be stored (``None``: never cached).
     """
     deps: dict = {}

@@ -35,8 +35,16 @@ DEFAULT_RELATIVE_TOL = sp.Rational(1, 1000)
 
 
 class IllPosed(Exception):
-    """The data make the exercise ill-posed; ``solution`` ends at the failing step and
-    ``reason`` says why in one sentence."""
+    """The data make the exercise ill-posed.
+
+    Args:
+        solution: the solution so far, ending at the failing step.
+        reason: why, in one sentence.
+
+    Attributes:
+        solution: as given.
+        reason: as given (also the exception's message).
+    """
 
     def __init__(self, solution, reason: str):
         super().__init__(reason)
@@ -67,7 +75,8 @@ class Param:
 
     @property
     def shape_text(self) -> str:
-        """The shape as a reader says it: ``(3,)``, ``(3, 3)``, ``scalar``, ``one of ...``."""
+        """The shape in words, as a reader says it (``(3,)``, ``(3, 3)``, ``scalar``,
+        ``one of ...``)."""
         if self.shape is None:
             return "one of " + ", ".join(self.choices)
         return "scalar" if self.shape == () else str(self.shape)
@@ -79,13 +88,21 @@ class Parameters:
 
     Iterating gives the rows; ``params["n_1"]`` one row; ``defaults()`` the book's values.
     Displayed as a table in a notebook (``_repr_html_``) and as text by ``str()``.
+
+    Attributes:
+        exercise: the exercise id (``"ex3.4"``).
+        rows: the :class:`Param` rows, in the exercise's order.
+        note: a sentence on the data (why there are none, how tolerances are chosen).
+        measured: whether the data are measurements (floats, judged within a tolerance).
+        default_tol: ``values -> (tol, how it was chosen)``, or None for 10^-3 times the
+            largest datum.
     """
 
     exercise: str
     rows: tuple = ()
     note: str = ""
     measured: bool = False
-    #: ``values -> (tol, how it was chosen)``; None: 10^-3 x the largest |datum|
+    #: ``values -> (tol, how it was chosen)``; None: 10^-3 x the largest absolute datum
     default_tol: object = None
 
     def __iter__(self):

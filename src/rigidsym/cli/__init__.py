@@ -41,7 +41,12 @@ exit codes: 0 as expected, 1 a verdict differs from its expectation, 2 bad input
 
 
 def build_parser() -> argparse.ArgumentParser:
-    """The argument parser of the ``rigidsym`` command (one sub-parser per command)."""
+    """The argument parser of the ``rigidsym`` command.
+
+    Returns:
+        An ``argparse.ArgumentParser`` with one sub-parser per command (``verify``,
+        ``report``, ``show``, ``exercise``, ``generate``, ``build-c``, ...).
+    """
     p = argparse.ArgumentParser(prog="rigidsym", description=DESCRIPTION, epilog=EPILOG,
                                 formatter_class=HelpFormatter)
     sub = p.add_subparsers(dest="command", required=True, title="commands",
@@ -64,8 +69,8 @@ def main(argv: list[str] | None = None) -> int:
         argv: the arguments after ``rigidsym`` (default ``sys.argv[1:]``).
 
     Returns:
-        The exit code: 0 all as expected, 1 a verdict differs from its expectation (or a
-        check failed), 2 bad input.
+        int: the exit code, 0 when all is as expected, 1 when a verdict differs from its
+        expectation (or a check failed), 2 on bad input.
     """
     parser = build_parser()
 

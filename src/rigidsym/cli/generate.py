@@ -43,8 +43,6 @@ def cmd_generate(args) -> int:
             rep.phase("deriving, optimising and printing the kernels") as ph:
         res = generate()
         ph.finish(f"{len(res.kernels)} kernels, {len(res.files)} files")
-    for note in res.notes:
-        print(f"note: {note}", file=sys.stderr)
     books = _notebooks()
     if args.check:
         diff = check(res, out)

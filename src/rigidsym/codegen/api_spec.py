@@ -12,6 +12,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from rigidsym import _kinds
+
 __all__ = ["Keyword", "COMMON_KEYWORDS", "render_api", "docstring"]
 
 
@@ -34,7 +36,7 @@ class Keyword:
 
 #: the keywords every kernel accepts after its arguments (the one definition)
 COMMON_KEYWORDS = (
-    Keyword("out", "Out", "None",
+    Keyword("out", "OutArrays", "None",
             "preallocated float64 output array (a tuple of them for several outputs), "
             "shape batch + output shape; returned filled"),
     Keyword("check", "bool", "True",
@@ -59,15 +61,23 @@ def docstring(meta: dict) -> str:
              f"Book: Eq. {', '.join('(' + i + ')' for i in meta['ids'])}; composed of "
              f"{', '.join(meta['sources'])}.", "", "Args:"]
     for a in meta["args"]:
-        kind = {"unit": ", unit", "rotation": ", proper orthogonal"}.get(a["kind"], "")
+        k = _kinds.for_spec(a["kind"], a["shape"])
+        kind = k.arg_words if k is not None else ""
         doc = f"; {a['doc']}" if a["doc"] else ""
         lines.append(f"    {a['name']}: array-like {_shape(a['shape'])}{kind}{doc}")
     for k in COMMON_KEYWORDS:
         lines.append(f"    {k.name}: {k.doc}.")
     lines += ["", "Returns:"]
-    for o in meta["outputs"]:
-        doc = f"; {o['doc']}" if o["doc"] else ""
-        lines.append(f"    {o['name']}: ndarray {_shape(o['shape'])}{doc}")
+    outs = [f"{o['name']}: ndarray {_shape(o['shape'])}" + (f"; {o['doc']}" if o["doc"] else "")
+            for o in meta["outputs"]]
+    if len(outs) == 1:  # Google style: "type: description" (the type says the shape)
+        o = meta["outputs"][0]
+        lines.append(f"    ndarray {_shape(o['shape'])}: {o['name']}"
+                     + (f"; {o['doc']}" if o["doc"] else ""))
+    else:
+        names = ", ".join(o["name"] for o in meta["outputs"])
+        lines += [f"    tuple of ndarray: ({names}), with", ""]
+        lines += [f"        - {x}" for x in outs]
     lines += ["", "Raises:",
               "    TypeError: an argument that is not an array of real numbers (str, object, "
               "complex, bool).",
@@ -77,11 +87,13 @@ def docstring(meta: dict) -> str:
               "(with check=True), unless on_singular='nan'."]
     if meta["singular"]:
         lines += ["    SingularConfigurationError: on the singular set "
-                  f"({meta['singular']}), unless on_singular='nan'.",
-                  "", "Notes:", f"    Singular set: {meta['singular']}."]
+                  f"({meta['singular']}), unless on_singular='nan'."]
+    lines += ["", "Notes:"]
+    if meta["singular"]:
+        lines += [f"    Singular set: {meta['singular']}.", ""]
     if meta["notes"]:
-        lines += ["", f"    {meta['notes']}"]
-    lines += ["", f"    Generated; {meta['ops']} operations; math hash {meta['hash']}."]
+        lines += [f"    {meta['notes']}", ""]
+    lines += [f"    Generated; {meta['ops']} operations; math hash {meta['hash']}."]
     return "\n".join(lines)
 
 

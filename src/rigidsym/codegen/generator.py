@@ -4,12 +4,12 @@ Pipeline per kernel: build the explicit sympy outputs from the formula functions
 build and per-sample branches), hash them (before any rewrite or printing), rewrite and CSE
 them (:mod:`.optimise`), print them (:mod:`.printers`) into role-named Jinja2 templates.
 :func:`generate` returns ``{relative path: text}``; :func:`write` writes it atomically and
-removes orphans; :func:`check` compares it with the disk and returns a unified diff.
+removes orphans; :func:`check` compares it with the disk and returns a unified diff (both in
+:mod:`rigidsym.codegen.files`, re-exported here).
 """
 
 from __future__ import annotations
 
-import difflib
 import importlib
 import json
 import math
@@ -21,7 +21,9 @@ import jinja2
 import sympy as sp
 
 import rigidsym
+from rigidsym import _kinds
 from rigidsym._config import KERNEL_SPEC as BOOK_ORIGIN
+from rigidsym._config import generated_dir
 from rigidsym.codegen.api_spec import render_api
 from rigidsym.codegen.cprogram import TRIG_BLOCK as TRIG_BLOCK
 from rigidsym.codegen.cprogram import (
@@ -32,6 +34,7 @@ from rigidsym.codegen.cprogram import (
     _trig_plan,
     _trig_split,
 )
+from rigidsym.codegen.files import check, write
 from rigidsym.codegen.float32 import plan_kernel
 from rigidsym.codegen.optimise import Program, compile_program, math_hash
 from rigidsym.codegen.printers import KernelCPrinter, KernelNumPyPrinter
@@ -40,15 +43,14 @@ from rigidsym.codegen.spec import Kernel, flat_symbols, input_symbols
 __all__ = ["generate", "write", "check", "GenerationResult", "default_out_dir", "TEMPLATES"]
 
 TEMPLATES = Path(__file__).parent / "templates"
-#: file names under generated/ owned by the generator (anything else there is an orphan,
-#: except the report folder, which belongs to ``rigidsym report``, and the notebooks, which
-#: ``rigidsym generate`` writes through :mod:`rigidsym.report.notebooks`).
-_FOREIGN = ("report/", "notebooks/")
+#: the ``kind`` of an entry point's argument whose constraint only the Python path checks
+#: (``RIGIDSYM_PYTHON`` in ``c_fast.h.j2``)
+_C_PYTHON_CHECK = 3
 
 
 def default_out_dir() -> Path:
-    """``generated/`` beside ``src/`` in a checkout."""
-    return Path(__file__).resolve().parents[3] / "generated"
+    """``generated/`` of the checkout (:func:`rigidsym._config.generated_dir`)."""
+    return generated_dir()
 
 
 @dataclass
@@ -73,7 +75,6 @@ class KernelCode:
 @dataclass
 class GenerationResult:
     files: dict[str, str]
-    notes: list[str]
     kernels: list[KernelCode]
 
 
@@ -102,7 +103,8 @@ def _flatten(kernel: Kernel, values: dict) -> list[sp.Expr]:
 def compile_kernel(kernel: Kernel) -> KernelCode:
     """Build, hash and optimise every variant of ``kernel``."""
     syms = input_symbols(kernel)
-    angles = [syms[a.name] for a in kernel.args if a.kind == "angle"]
+    angles = [syms[a.name] for a in kernel.args
+              if (k := _kinds.for_spec(a.kind, a.shape)) is not None and k.half_angle]
     parts: list = []
     variants = []
     for br in kernel.branches:
@@ -232,33 +234,24 @@ def _with_jacobian_kernels(todo: list[Kernel]) -> list[Kernel]:
 
 
 def generate(kernels=None, origin: str = BOOK_ORIGIN) -> GenerationResult:
-    """Render every available kernel; returns the files (relative path -> text) and notes.
+    """Render every kernel; returns the files (relative path -> text) and the compiled kernels.
 
     ``kernels`` defaults to the book's; a user module's kernels come with ``origin`` (the
     module's name, written in the headers) and sources already named, not imported here.
     """
-    spec = importlib.import_module(BOOK_ORIGIN)  # by name: the generator imports no book
-    KERNELS, missing_sources = spec.KERNELS, spec.missing_sources
-
+    if kernels is None:  # by name: the generator imports no book
+        kernels = importlib.import_module(BOOK_ORIGIN).KERNELS
     env = _env()
     files: dict[str, str] = {}
-    notes: list[str] = []
     done: list[KernelCode] = []
-    todo = []
-    for k in sorted(kernels if kernels is not None else KERNELS, key=lambda k: k.name):
-        miss = missing_sources(k) if origin == BOOK_ORIGIN else []
-        if miss:
-            notes.append(f"skipped {k.name}: formula function(s) not importable yet: "
-                         + ", ".join(miss))
-            continue
-        todo.append(k)
+    todo = sorted(kernels, key=lambda k: k.name)
     for kc in _compile_all(_with_jacobian_kernels(todo)):
         done.append(kc)
         files.update(_render_kernel(env, kc, origin))
     metas = [_meta(kc) for kc in done]
     ver = {"sympy": sp.__version__, "rigidsym": rigidsym.__version__}
-    files["kernels.json"] = json.dumps({"generator": ver, "kernels": metas,
-                                        "skipped": notes}, indent=1, sort_keys=True) + "\n"
+    files["kernels.json"] = json.dumps({"generator": ver, "kernels": metas},
+                                       indent=1, sort_keys=True) + "\n"
     files["api.py"] = render_api(env, metas, ver)
     for t, path in (("package_init.py.j2", "__init__.py"),
                     ("numpy_index.py.j2", "numpy/__init__.py"),
@@ -266,7 +259,7 @@ def generate(kernels=None, origin: str = BOOK_ORIGIN) -> GenerationResult:
                     ("c_kernels_index.h.j2", "c/rigidsym_kernels.h")):
         files[path] = env.get_template(t).render(kernels=metas, template=t, **ver)
     files.update(_render_extension(env, metas, ver))
-    return GenerationResult(dict(sorted(files.items())), notes, done)
+    return GenerationResult(dict(sorted(files.items())), done)
 
 
 def _render_extension(env, metas: list[dict], ver: dict) -> dict[str, str]:
@@ -275,11 +268,16 @@ def _render_extension(env, metas: list[dict], ver: dict) -> dict[str, str]:
     per-call entry points (``c_fast.h.j2``)."""
     def size(shape) -> int:
         return int(math.prod(shape))
-    kinds = {"unit": 1, "rotation": 2}
+    def c_check(a: dict) -> int:  # the kind table's C validation routine (0 for outputs)
+        k = _kinds.for_spec(a["kind"], a["shape"]) if "kind" in a else None
+        if k is None:
+            return 0
+        # a checked kind with no C routine of its own: checked calls take the Python path
+        return k.c_check if k.c_check or k.check is None else _C_PYTHON_CHECK
 
     def slot(a: dict) -> dict:
         return {"nd": len(a["shape"]), "dims": list(a["shape"]), "size": size(a["shape"]),
-                "kind": kinds.get(a.get("kind"), 0)}
+                "kind": c_check(a)}
     ck = [{"name": m["name"], "ins": [size(a["shape"]) for a in m["args"]],
            "outs": [size(o["shape"]) for o in m["outputs"]],
            "narrays": len(m["args"]) + len(m["outputs"]),
@@ -293,57 +291,3 @@ def _render_extension(env, metas: list[dict], ver: dict) -> dict[str, str]:
                     ("c_fast.h.j2", "c/rigidsym_fast.h")):
         files[path] = env.get_template(t).render(kernels=ck, template=t, **ver)
     return files
-
-
-def _on_disk(out: Path) -> dict[str, Path]:
-    found = {}
-    if out.exists():
-        for p in sorted(out.rglob("*")):
-            rel = p.relative_to(out).as_posix()
-            if p.is_file() and "__pycache__" not in rel and not rel.startswith(_FOREIGN) \
-                    and not p.name.startswith("."):
-                found[rel] = p
-    return found
-
-
-def write(result: GenerationResult, out: Path | None = None) -> list[str]:
-    """Write changed files atomically, delete orphans; returns the paths touched."""
-    from rigidsym._io import write_atomic
-
-    out = Path(out) if out is not None else default_out_dir()
-    touched = []
-    disk = _on_disk(out)
-    for rel, text in result.files.items():
-        p = out / rel
-        if rel in disk and p.read_text(encoding="utf-8") == text:
-            continue
-        write_atomic(p, text)
-        touched.append(rel)
-    for rel, p in disk.items():
-        if rel not in result.files:
-            os.unlink(p)
-            touched.append(f"{rel} (removed orphan)")
-    return touched
-
-
-def check(result: GenerationResult, out: Path | None = None) -> str:
-    """Unified diff between ``result`` and the disk ("" when byte-identical, no orphans)."""
-    out = Path(out) if out is not None else default_out_dir()
-    disk = _on_disk(out)
-    chunks = []
-    for rel in sorted(set(disk) | set(result.files)):
-        old = disk[rel].read_text(encoding="utf-8") if rel in disk else None
-        new = result.files.get(rel)
-        if old == new:
-            continue
-        a = [] if old is None else old.splitlines(keepends=True)
-        b = [] if new is None else new.splitlines(keepends=True)
-        label_a = f"a/generated/{rel}" if old is not None else "/dev/null"
-        label_b = f"b/generated/{rel}" if new is not None else "/dev/null"
-        diff = "".join(difflib.unified_diff(a, b, label_a, label_b))
-        if old is None:
-            diff = f"missing file: generated/{rel}\n" + diff
-        elif new is None:
-            diff = f"orphan file: generated/{rel}\n" + diff
-        chunks.append(diff if diff.endswith("\n") else diff + "\n")
-    return "".join(chunks)

@@ -16,7 +16,7 @@ import numpy as np
 import sympy as sp
 from sympy.printing.c import C99CodePrinter
 from sympy.printing.numpy import NumPyPrinter
-from sympy.printing.precedence import PRECEDENCE, precedence
+from sympy.printing.precedence import PRECEDENCE
 
 __all__ = ["KernelNumPyPrinter", "KernelCPrinter", "KernelCFloatPrinter", "numpy_code",
            "c_code"]
@@ -193,5 +193,3 @@ def c_code(expr) -> str:
     """Print ``expr`` as a C99 expression on doubles."""
     return KernelCPrinter().doprint(expr)
 
-
-_ = precedence  # re-exported for printers extending this module

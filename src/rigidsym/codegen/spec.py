@@ -15,6 +15,8 @@ from dataclasses import dataclass, field
 
 import sympy as sp
 
+from rigidsym import _kinds
+
 __all__ = ["Arg", "Out", "Branch", "Kernel", "input_symbols"]
 
 
@@ -25,15 +27,31 @@ class Arg:
     Attributes:
         name: the argument name (book letters in ASCII, e.g. ``a_dot``).
         shape: per-sample shape, ``()`` for a scalar, ``(3,)``, ``(3, 3)``, ``(4,)``.
-        kind: validation class: ``"any"``, ``"unit"`` (unit vector), ``"rotation"``
-            (proper orthogonal), ``"positive"`` (scalar > 0), ``"nonneg"``.
+        kind: the constraint the kernels validate at run time (``check=True``), a spec
+            name of the kind table (:mod:`rigidsym._kinds`) that fits ``shape``:
+            ``"any"`` (no constraint, the default), ``"unit"`` (a unit vector, shape
+            ``(3,)`` or ``(4,)``: ``| ||x|| - 1 | <= 1e-8``), ``"rotation"`` (shape
+            ``(3, 3)``, proper orthogonal: ``max |Q^T Q - 1| <= 1e-8``, ``det Q > 0``),
+            ``"angle"`` (a scalar in radians: not validated beyond finiteness; the
+            generated code rewrites its sines and cosines by half angles). float32
+            arguments are checked to 100 float32 epsilons.
         doc: what it is (units, frame), for the docstring.
+
+    Raises:
+        ValueError: ``kind`` is not a spec name of the kind table, or does not fit
+            ``shape``.
     """
 
     name: str
     shape: tuple[int, ...]
     kind: str = "any"
     doc: str = ""
+
+    def __post_init__(self) -> None:
+        try:
+            _kinds.for_spec(self.kind, self.shape)
+        except ValueError as exc:
+            raise ValueError(f"Arg {self.name!r}: {exc}") from None
 
     @property
     def size(self) -> int:
@@ -42,7 +60,13 @@ class Arg:
 
 @dataclass(frozen=True)
 class Out:
-    """One kernel output: ``name``, per-sample ``shape`` and ``doc``."""
+    """One kernel output.
+
+    Attributes:
+        name: the output name (book letters in ASCII).
+        shape: per-sample shape, ``()`` for a scalar.
+        doc: what it is (units, frame), for the docstring.
+    """
 
     name: str
     shape: tuple[int, ...]
@@ -59,6 +83,12 @@ class Branch:
 
     Branches are tried in order before the kernel's main ``build``; the first whose
     condition holds is used for that sample.
+
+    Attributes:
+        name: the branch's name (in the generated code).
+        when: ``when(**inputs)``: a sympy boolean of the explicit inputs.
+        build: ``build(**inputs) -> {output name: value}``, as :attr:`Kernel.build`.
+        doc: why the branch exists (for the generated code's comments).
     """
 
     name: str
@@ -110,6 +140,12 @@ def input_symbols(kernel: Kernel) -> dict:
 
     A vector ``e`` of shape (3,) becomes the column ``Matrix([e_0, e_1, e_2])``; a matrix
     ``Q`` of shape (3, 3) becomes ``Matrix([[Q_00, ...]])``; a scalar is a Symbol.
+
+    Args:
+        kernel: the kernel declaration.
+
+    Returns:
+        ``{argument name: sympy Symbol or Matrix}``, real symbols, in the argument order.
     """
     out = {}
     for a in kernel.args:

@@ -93,8 +93,6 @@ def cmd_generate_user(args) -> int:
         raise BadInput(f"--out: {out} is not empty and holds no generated kernels; give a new "
                        f"or empty folder")
     res = generate_user(args.module)
-    for note in res.notes:
-        print(f"note: {note}", file=sys.stderr)
     if args.check:
         diff = check(res, out)
         if diff:

@@ -29,8 +29,10 @@ Example:
     >>> import numpy as np
     >>> from rigidsym import kernels
     >>> Q = kernels.rotation_from_natural_invariants(e=[0.0, 0.0, 1.0], phi=np.pi / 2)
-    >>> np.round(Q, 12).tolist()
-    [[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]]
+    >>> Q.shape
+    (3, 3)
+    >>> bool(np.allclose(Q, [[0, -1, 0], [1, 0, 0], [0, 0, 1]], atol=1e-15))
+    True
 """
 
 from __future__ import annotations
@@ -42,13 +44,14 @@ from pathlib import Path
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from rigidsym._config import generated_dir
+from rigidsym._io import load_module
 from rigidsym.generated.api import *  # noqa: F403 - the generated kernels (true signatures)
 from rigidsym.generated.api import __all__ as _KERNELS
 from rigidsym.kernels import _state
-from rigidsym.kernels._build import generated_dir
 from rigidsym.kernels._core import ORTHO_TOL as ORTHO_TOL  # the tolerances of check=True
 from rigidsym.kernels._core import UNIT_TOL as UNIT_TOL
-from rigidsym.kernels._core import KernelSpace, _load_module
+from rigidsym.kernels._core import KernelSpace
 from rigidsym.kernels._errors import NonFiniteResultError, SingularConfigurationError
 from rigidsym.kernels._jacobian import jacobian
 from rigidsym.kernels._scale import get_num_threads as get_num_threads
@@ -85,6 +88,20 @@ _LOADED: dict[Path, types.ModuleType] = {}
 _NAMESPACE_HELPERS = ("KERNEL_NAMES", "batch_function")
 
 
+def _namespace(mod: types.ModuleType, space: KernelSpace, gdir: Path) -> types.ModuleType:
+    """The namespace :func:`load` returns: the kernels of ``mod`` and the public helpers,
+    nothing of the generated module's own imports (``np``, ``Any``, ...)."""
+    ns = types.ModuleType(f"rigidsym.kernels.load({str(gdir)!r})",
+                          f"The checked kernels generated into {gdir}.")
+    for name in mod.__all__:
+        setattr(ns, name, getattr(mod, name))
+    ns.KERNEL_NAMES = tuple(mod.__all__)
+    ns.batch_function = space.batch_function
+    ns.__all__ = [*mod.__all__, *_NAMESPACE_HELPERS]
+    ns._SPACE = space  # private: build_info(DIR) and tests reach the directory's space
+    return ns
+
+
 def load(directory: str | Path | None = None) -> types.ModuleType:
     """The checked kernel namespace of a generated directory.
 
@@ -93,11 +110,12 @@ def load(directory: str | Path | None = None) -> types.ModuleType:
             ``api.py``, ``numpy/``, ``c/``); default the package's own kernels.
 
     Returns:
-        A module whose public functions are the directory's kernels, with the same
+        A namespace (a module object) holding only the directory's kernels, with the same
         validation, ``on_singular`` handling and C (compiled into the user cache once, with
         a notice on stderr, when no build matches; NumPy fallback without a compiler) as
-        :mod:`rigidsym.kernels`; also ``KERNEL_NAMES`` and ``batch_function(name, backend)``.
-        Loading the same directory twice returns the same module.
+        :mod:`rigidsym.kernels`, and the helpers ``KERNEL_NAMES`` (their names) and
+        ``batch_function(name, backend)``. Loading the same directory twice returns the
+        same namespace.
 
     Raises:
         FileNotFoundError: ``directory`` has no ``kernels.json`` or ``api.py``.
@@ -117,19 +135,23 @@ def load(directory: str | Path | None = None) -> types.ModuleType:
         import rigidsym.generated.api as mod
     else:
         space = KernelSpace.from_directory(gdir)
-        mod = _load_module(f"{space.prefix}.api", gdir / "api.py")
-    space = _bind_module(mod)
-    mod.KERNEL_NAMES = tuple(mod.__all__)
-    mod.batch_function = space.batch_function
-    _LOADED[gdir] = mod
-    return mod
+        mod = load_module(f"{space.prefix}.api", gdir / "api.py")
+    _LOADED[gdir] = ns = _namespace(mod, _bind_module(mod), gdir)
+    return ns
 
 
 def use_backend(name: str) -> str:
-    """Select ``"c"`` (the compiled extension) or ``"numpy"``; returns the backend in use.
+    """Select the backend of every kernel call: ``"c"`` (the compiled extension) or
+    ``"numpy"``.
 
     ``"c"`` falls back to ``"numpy"`` with a one-time warning when no compiled module
     matches the kernels and none can be built (no compiler): the warning says how to get one.
+
+    Args:
+        name: ``"c"`` or ``"numpy"``.
+
+    Returns:
+        The backend in use after the call (``"numpy"`` when ``"c"`` fell back).
 
     Raises:
         ValueError: ``name`` is neither.
@@ -168,7 +190,11 @@ def build_info(directory: str | Path | None = None) -> dict:
 
 
 def backend() -> str:
-    """The backend in use (selects ``"c"`` with NumPy fallback on first call)."""
+    """The backend in use.
+
+    Returns:
+        ``"c"`` or ``"numpy"``; the first call selects ``"c"``, with the NumPy fallback.
+    """
     return _state.backend()
 
 
@@ -193,6 +219,9 @@ def batch_function(name: str, backend_name: str | None = None,
         ``f(*inputs, *outputs)``: for the C backend the number of flagged samples
         (singular or non-finite, written as NaN); for NumPy the ``(n,)`` uint8 flags (1
         singular, 2 non-finite output).
+
+    Raises:
+        KeyError: no kernel ``name``.
 
     Example:
         >>> import numpy as np

@@ -35,7 +35,7 @@ from dataclasses import dataclass
 from functools import cache
 from pathlib import Path
 
-__all__ = ["MODULE", "generated_dir", "IsaPath", "Config", "BuildError", "CompilerNotFound",
+__all__ = ["MODULE", "IsaPath", "Config", "BuildError", "CompilerNotFound",
            "default_paths",
            "compiler", "configure", "kernel_sources", "sources_hash", "embedded_hash",
            "build", "estimate_seconds", "jobs", "cpu_features", "X86_PATHS", "NATIVE",
@@ -85,19 +85,6 @@ class BuildError(RuntimeError):
 
 class CompilerNotFound(BuildError):
     """No C compiler on ``PATH`` (``CC``, else the compiler Python was built with)."""
-
-
-def generated_dir() -> Path:
-    """The package's generated kernels: inside the installed package, else the checkout's.
-
-    Raises:
-        FileNotFoundError: neither has a ``kernels.json``.
-    """
-    here = Path(__file__).resolve()
-    for cand in (here.parents[1] / "generated", here.parents[3] / "generated"):
-        if (cand / "kernels.json").exists():
-            return cand
-    raise FileNotFoundError("generated kernels not found; run `rigidsym generate`")
 
 
 def _x86() -> bool:

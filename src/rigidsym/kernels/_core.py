@@ -10,10 +10,8 @@ generated ``api.py`` functions end in that call.
 from __future__ import annotations
 
 import hashlib
-import importlib.util
 import json
 import math
-import sys
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -21,20 +19,22 @@ from typing import Any
 
 import numpy as np
 
+from rigidsym import _kinds
+from rigidsym._io import load_module
 from rigidsym.kernels import _dask, _entries, _state
 from rigidsym.kernels._errors import NonFiniteResultError, SingularConfigurationError
 from rigidsym.kernels._scale import (
     MIN_PARALLEL,
+    check_threads,
     numpy_f32,
     resolve_threads,
     result_dtype,
-    tolerance,
 )
 
-#: tolerance on | ||e|| - 1 | for unit-vector arguments (e, eta).
-UNIT_TOL = 1e-8
-#: tolerance on max |Q^T Q - 1| for rotation arguments (and det Q > 0).
-ORTHO_TOL = 1e-8
+#: tolerance on | ||e|| - 1 | for unit-vector arguments (e, eta), from the kind table.
+UNIT_TOL = _kinds.get("unit").tol
+#: tolerance on max |Q^T Q - 1| for rotation arguments (and det Q > 0), from the kind table.
+ORTHO_TOL = _kinds.get("rotation").tol
 
 #: sample flags of the generated batch functions (numpy_kernel.py.j2)
 _SINGULAR, _NONFINITE = 1, 2
@@ -54,10 +54,7 @@ def check_keywords(check: bool, on_singular: str, threads: int | None) -> None:
     if check is not True and check is not False:
         raise TypeError(f"check: expected True or False, got {check!r}")
     if threads is not None:
-        if isinstance(threads, bool) or not isinstance(threads, int | np.integer):
-            raise TypeError(f"threads: expected a positive int or None, got {threads!r}")
-        if threads < 1:
-            raise ValueError(f"threads: expected a positive int or None, got {threads}")
+        check_threads(threads, "threads")
 
 
 def as_array(x: Any, spec: dict, dtype=np.float64) -> np.ndarray:
@@ -96,9 +93,9 @@ def as_array(x: Any, spec: dict, dtype=np.float64) -> np.ndarray:
 
 
 def validate(a: np.ndarray, spec: dict, given=None) -> None:
-    """Finiteness, and the constraint of ``spec["kind"]`` (unit vector, rotation), with the
-    tolerances of the dtype ``given`` (the argument's own: float32 values in a float64 call
-    keep the float32 tolerance).
+    """Finiteness, and the constraint of ``spec["kind"]`` (unit vector, rotation: the check
+    and tolerance of its row in :mod:`rigidsym._kinds`), with the tolerance of the dtype
+    ``given`` (the argument's own: float32 values in a float64 call keep the float32 one).
 
     Raises:
         ValueError: naming the argument and what was expected.
@@ -107,21 +104,11 @@ def validate(a: np.ndarray, spec: dict, given=None) -> None:
     prec = given if given is not None and given.kind == "f" and given.itemsize < 8 else a.dtype
     if not np.isfinite(a).all():
         raise ValueError(f"{name}: non-finite values (NaN or inf); expected finite values")
-    if kind == "unit":
-        unit_tol = tolerance(UNIT_TOL, prec)
-        err = np.abs(np.sqrt(np.einsum("...i,...i->...", a, a)) - 1.0)
-        if (err > unit_tol).any():
-            raise ValueError(f"{name}: not a unit vector (| ||{name}|| - 1 | = "
-                             f"{err.max():.3g} > {unit_tol:.3g})")
-    elif kind == "rotation":
-        ortho_tol = tolerance(ORTHO_TOL, prec)
-        g = np.einsum("...ki,...kj->...ij", a, a) - np.eye(3)
-        err = np.abs(g).max() if g.size else 0.0
-        if not err <= ortho_tol:
-            raise ValueError(f"{name}: not orthogonal (max |{name}^T {name} - 1| = "
-                             f"{err:.3g} > {ortho_tol:.3g})")
-        if (np.linalg.det(a) <= 0).any():
-            raise ValueError(f"{name}: not a proper rotation (det <= 0)")
+    k = _kinds.for_spec(kind, spec["tshape"])
+    if k is not None and k.check is not None:
+        msg = k.check(a, name, k.tolerance(prec))
+        if msg:
+            raise ValueError(msg)
 
 
 def batch_shape(arrs: list[np.ndarray], specs: list[dict]) -> tuple[int, ...]:
@@ -142,14 +129,6 @@ def batch_shape(arrs: list[np.ndarray], specs: list[dict]) -> tuple[int, ...]:
                                              zip(specs[:i + 1], shapes, strict=False) if c)
                                  + ")") from None
         raise
-
-
-def _load_module(modname: str, path: Path):
-    spec = importlib.util.spec_from_file_location(modname, path)
-    mod = importlib.util.module_from_spec(spec)
-    sys.modules[modname] = mod
-    spec.loader.exec_module(mod)
-    return mod
 
 
 @dataclass
@@ -186,6 +165,7 @@ class KernelSpace:
         for k in data["kernels"]:
             for a in k["args"]:
                 a["tshape"] = tuple(a["shape"])
+                _kinds.for_spec(a["kind"], a["tshape"])  # an unknown kind fails here, not later
             for o in k["outputs"]:
                 o["tshape"] = tuple(o["shape"])
             meta[k["name"]] = k
@@ -201,7 +181,7 @@ class KernelSpace:
 
     def entries(self):
         """The per-call entry points by kernel name (:mod:`rigidsym.kernels._entries`)."""
-        return _entries.entries(self, UNIT_TOL, ORTHO_TOL)
+        return _entries.entries(self)
 
     def entry(self, name: str) -> Callable:
         """The entry point of kernel ``name``: ``f(*inputs, out, check, on_singular,
@@ -211,7 +191,7 @@ class KernelSpace:
     def numpy_kernel(self, name: str) -> Callable:
         f = self._numpy.get(name)
         if f is None:
-            mod = _load_module(f"{self.prefix}.{name}", self.directory / "numpy" / f"{name}.py")
+            mod = load_module(f"{self.prefix}.{name}", self.directory / "numpy" / f"{name}.py")
             f = self._numpy[name] = getattr(mod, name)
         return f
 

@@ -26,8 +26,9 @@ from typing import Any
 
 import numpy as np
 
+from rigidsym import _kinds
 from rigidsym.kernels import _state
-from rigidsym.kernels._scale import MIN_PARALLEL, get_num_threads, tolerance
+from rigidsym.kernels._scale import MIN_PARALLEL, get_num_threads
 
 __all__ = ["Lazy", "bind_api", "entries", "unbind"]
 
@@ -119,19 +120,20 @@ def _general(space: Any):
     return general
 
 
-def entries(space: Any, unit_tol: float, ortho_tol: float) -> types.SimpleNamespace:
+def entries(space: Any) -> types.SimpleNamespace:
     """The entries of ``space`` by kernel name: the compiled module's when its C loads (and
-    the C backend is selected), else the Python path's. ``unit_tol``, ``ortho_tol``: the
-    float64 validation tolerances (float32's follow from them, as in Python)."""
+    the C backend is selected), else the Python path's. The C validation gets its
+    tolerances, per dtype, from the kind table (:mod:`rigidsym._kinds`), as Python's does."""
     with _state.LOCK:
         if space._entries is not None:
             return space._entries
         if space.backend() != "c":
             return _python_entries(space)      # the api module stays Lazy: C when selected
         mod = space.c_lib().module
-        mod._bind(_general(space), get_num_threads, MIN_PARALLEL, float(unit_tol),
-                  float(ortho_tol), tolerance(unit_tol, np.float32),
-                  tolerance(ortho_tol, np.float32))
+        unit, rot = _kinds.get("unit"), _kinds.get("rotation")
+        mod._bind(_general(space), get_num_threads, MIN_PARALLEL,
+                  unit.tolerance(np.float64), rot.tolerance(np.float64),
+                  unit.tolerance(np.float32), rot.tolerance(np.float32))
         mod._enable(_state.STATE["backend"] != "numpy")
         data = getattr(os.environ, "_data", None)     # what get_num_threads reads
         if hasattr(mod, "_environ") and type(data) is dict:

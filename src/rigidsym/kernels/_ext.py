@@ -37,8 +37,9 @@ from pathlib import Path
 from types import ModuleType
 
 from rigidsym import _cache
+from rigidsym._config import generated_dir  # re-exported: the one place that finds it
+from rigidsym._io import load_module
 from rigidsym.kernels import _build
-from rigidsym.kernels._build import generated_dir
 
 __all__ = ["Loaded", "load", "generated_dir", "info", "ensure", "entry", "package_module",
            "NoCompiledKernels"]
@@ -190,12 +191,10 @@ def _import(path: Path, origin: str, sources: str, name: str) -> Loaded:
     # user's setting wins): a spinning worker takes the caller's core between two kernel
     # calls, measured 11 ms per 2-thread call on a busy 2-core machine instead of 0.1 ms
     os.environ.setdefault("OMP_WAIT_POLICY", "PASSIVE")
-    spec = importlib.util.spec_from_file_location(name, path)
-    mod = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(mod)
+    mod = load_module(name, path)
     if mod.sources != sources:     # read from the bytes already; a race with a rebuild
+        sys.modules.pop(name, None)
         raise ImportError(f"{path}: built from other sources than it was checked against")
-    sys.modules[name] = mod
     if not mod.openmp and os.environ.get("RIGIDSYM_OPENMP", "1") != "0" \
             and not _WARNED["omp"]:
         _WARNED["omp"] = True

@@ -18,6 +18,7 @@ import inspect
 import textwrap
 from collections.abc import Callable
 
+from rigidsym import _kinds
 from rigidsym.kernels import _state
 
 __all__ = ["jacobian", "euler_rate_matrix_jacobian"]
@@ -27,16 +28,12 @@ _SUFFIX = "_with_jacobians"
 _FN = "_jacobian"
 _EULER = ("euler_rate_matrix",)
 
-_TANGENT = {
-    "unit": "{a} is a unit vector: d/d{a} is the ambient derivative (all components "
-            "independent); along the sphere only directions d{a} with {a}.d{a} = 0 are "
-            "admissible (restrict jac[.][{a!r}] to them). The rates of the rotation "
-            "invariants in terms of omega are the book's N, L, H (3.76), with the left "
-            "inverses N~, L~, H~ (3.77) (kernels N_matrix, L_matrix, H_matrix, ...).",
-    "rotation": "{a} is a rotation: d/d{a} is the ambient derivative over its 9 entries; "
-                "admissible directions are d{a} = CPM(theta) {a} (tangent space of SO(3)); "
-                "their relation to the rates of the invariants is N, L, H (3.76)-(3.77).",
-}
+
+
+def _tangent_note(a: dict) -> str:
+    """The kind table's note on the derivatives along a constrained argument ("" if none)."""
+    k = _kinds.for_spec(a["kind"], a["shape"])
+    return k.tangent.format(a=a["name"]) if k is not None else ""
 
 
 def _names() -> list[str]:
@@ -118,8 +115,7 @@ def _doc(name: str, meta: dict) -> str:
     if meta["singular"]:
         lines.append(f"    SingularConfigurationError: on the singular set ({meta['singular']})"
                      ", which the derivatives share, unless on_singular='nan'.")
-    notes = [_TANGENT[a["kind"]].format(a=a["name"]) for a in meta["args"]
-             if a["kind"] in _TANGENT]
+    notes = [t for t in map(_tangent_note, meta["args"]) if t]
     lines += ["", "Notes:", "    Derivatives are in the ambient coordinates of each input."]
     for t in notes:
         lines += textwrap.wrap(t, 88, initial_indent="    ", subsequent_indent="    ")

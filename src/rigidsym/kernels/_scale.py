@@ -1,5 +1,6 @@
 """Threads and dtypes of the kernels (issue 14): the thread-count setting, the dtype of a
-call (NEP 50), validation tolerances per dtype, and float32 over the float64 NumPy kernels.
+call (NEP 50), and float32 over the float64 NumPy kernels (the validation tolerances per
+dtype are the kind table's, :mod:`rigidsym._kinds`).
 
 Used by :mod:`rigidsym.kernels` (which re-exports :func:`set_num_threads` and
 :func:`get_num_threads`) and :mod:`rigidsym.kernels._dask`.
@@ -10,12 +11,11 @@ from __future__ import annotations
 import os
 import warnings
 from collections.abc import Callable
-from functools import cache
 
 import numpy as np
 
 __all__ = ["MIN_PARALLEL", "set_num_threads", "get_num_threads", "check_threads", "resolve_threads",
-           "result_dtype", "tolerance", "numpy_f32", "NONFINITE"]
+           "result_dtype", "numpy_f32", "NONFINITE"]
 
 #: batch size below which the C kernels run on one thread whatever is asked: waking the
 #: (sleeping, OMP_WAIT_POLICY=PASSIVE) second thread costs tens of microseconds, more than
@@ -36,29 +36,47 @@ def set_num_threads(n: int | None) -> None:
         n: threads (>= 1), or None to go back to ``RIGIDSYM_NUM_THREADS`` (else 1).
 
     Raises:
-        ValueError: ``n`` is not a positive integer.
+        TypeError: ``n`` is not an int (a bool, a float, a str).
+        ValueError: ``n`` < 1.
     """
     _STATE["threads"] = None if n is None else check_threads(n, "n")
 
 
 def get_num_threads() -> int:
-    """Thread count used with ``threads=None``: :func:`set_num_threads`, else the
-    environment variable ``RIGIDSYM_NUM_THREADS``, else 1 (never oversubscribes unasked)."""
+    """Thread count used with ``threads=None``.
+
+    Returns:
+        :func:`set_num_threads`'s count, else the environment variable
+        ``RIGIDSYM_NUM_THREADS``, else 1 (never oversubscribes unasked).
+
+    Raises:
+        ValueError: ``RIGIDSYM_NUM_THREADS`` is not a positive integer.
+    """
     if _STATE["threads"] is not None:
         return _STATE["threads"]
     env = os.environ.get("RIGIDSYM_NUM_THREADS")
-    return check_threads(env, "RIGIDSYM_NUM_THREADS") if env else 1
+    if not env:
+        return 1
+    try:
+        return check_threads(int(env), "RIGIDSYM_NUM_THREADS")
+    except ValueError:  # a text from the environment is a bad value, whatever it says
+        raise ValueError(f"RIGIDSYM_NUM_THREADS: expected a positive integer number of "
+                         f"threads, got {env!r}") from None
 
 
 def check_threads(n, what: str) -> int:
-    """``n`` as a positive int; ValueError naming ``what`` otherwise (bools, 1.5, "x")."""
-    try:
-        t = int(n)
-    except (TypeError, ValueError):
-        t = 0
-    if t < 1 or (not isinstance(n, str) and t != n) or isinstance(n, bool):
-        raise ValueError(f"{what}: expected a positive integer number of threads, got {n!r}")
-    return t
+    """``n`` as a positive int: the one validation of a thread count (the ``threads=``
+    keyword, :func:`set_num_threads`, ``RIGIDSYM_NUM_THREADS``).
+
+    Raises:
+        TypeError: ``n`` is not an int (a bool, 1.5, "4"), naming ``what``.
+        ValueError: ``n`` < 1, naming ``what``.
+    """
+    if isinstance(n, bool) or not isinstance(n, int | np.integer):
+        raise TypeError(f"{what}: expected a positive int or None, got {n!r}")
+    if n < 1:
+        raise ValueError(f"{what}: expected a positive int or None, got {n}")
+    return int(n)
 
 
 def resolve_threads(threads, b: str) -> int:
@@ -84,13 +102,6 @@ def result_dtype(args: tuple) -> np.dtype:
             kinds.append(np.float64)
     dt = np.result_type(*kinds) if kinds else np.dtype(np.float64)
     return np.dtype(np.float32) if dt.itemsize <= 4 else np.dtype(np.float64)
-
-
-@cache
-def tolerance(base: float, dtype) -> float:
-    """Validation tolerance for ``dtype``: ``base`` for float64, 100 eps for float32.
-    (Cached: ``np.finfo`` costs microseconds, and it runs on every checked call.)"""
-    return max(base, 100 * float(np.finfo(dtype).eps))
 
 
 def numpy_f32(kernel: Callable, n_in: int) -> Callable:

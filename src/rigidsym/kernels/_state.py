@@ -18,7 +18,7 @@ import types
 import warnings
 from typing import Any
 
-__all__ = ["STATE", "LISTENERS", "LOCK", "PACKAGE_API", "EULER_SEQUENCES", "warn_once",
+__all__ = ["STATE", "LISTENERS", "LOCK", "PACKAGE_API", "euler_sequences", "warn_once",
            "register_builtin", "builtin", "select", "backend", "meta", "call", "euler_name",
            "bind_module"]
 
@@ -29,9 +29,8 @@ LISTENERS: list = []
 LOCK = threading.RLock()
 #: the module name of the package's generated API
 PACKAGE_API = "rigidsym.generated.api"
-#: the twelve intrinsic Euler-angle sequences of the rate-matrix kernels (Exercise 3.10)
-EULER_SEQUENCES = ("ZXZ", "XYX", "YZY", "ZYZ", "XZX", "YXY",
-                   "XYZ", "YZX", "ZXY", "XZY", "ZYX", "YXZ")
+#: prefix of the generated Euler-angle rate-matrix kernels, ``<prefix><seq>_<frame>``
+_EULER_PREFIX = "euler_rate_matrix_"
 
 
 def warn_once(exc: Exception) -> None:
@@ -97,16 +96,24 @@ def call(name: str, args: tuple, out: Any = None, check: bool = True,
     return builtin().entry(name)(*args, out, check, on_singular, threads)
 
 
+def euler_sequences() -> tuple[str, ...]:
+    """The intrinsic Euler-angle sequences the package's kernels were generated for
+    (Exercise 3.10: the twelve), read from their metadata: the book's kernel list
+    (``derivations/kernels_spec_internal.py``) is the one place that names them."""
+    return tuple(sorted({n[len(_EULER_PREFIX):-len("_fixed")].upper() for n in meta()
+                         if n.startswith(_EULER_PREFIX) and n.endswith("_fixed")}))
+
+
 def euler_name(kind: str, sequence: str, frame: str) -> str:
     """The generated kernel of an Euler-angle ``kind`` for ``sequence`` and ``frame``.
 
     Raises:
-        ValueError: ``sequence`` is not one of :data:`EULER_SEQUENCES`, or ``frame`` is
+        ValueError: ``sequence`` is not one of :func:`euler_sequences`, or ``frame`` is
             neither ``"fixed"`` nor ``"body"``.
     """
     seq = sequence.upper() if isinstance(sequence, str) else sequence
-    if seq not in EULER_SEQUENCES:
-        raise ValueError(f"sequence: expected one of {', '.join(EULER_SEQUENCES)}, "
+    if not isinstance(seq, str) or f"{_EULER_PREFIX}{seq.lower()}_fixed" not in meta():
+        raise ValueError(f"sequence: expected one of {', '.join(euler_sequences())}, "
                          f"got {sequence!r}")
     if frame not in ("fixed", "body"):
         raise ValueError(f"frame: expected 'fixed' or 'body', got {frame!r}")

@@ -12,7 +12,7 @@ from __future__ import annotations
 import re
 import unicodedata
 
-from rigidsym.printing.notation import _GREEK
+from rigidsym.printing.names import _GREEK
 
 __all__ = ["to_ascii", "AsciiStream", "needs_ascii"]
 

@@ -17,7 +17,7 @@ from __future__ import annotations
 import re
 import unicodedata
 
-from rigidsym.printing.notation import _GREEK, book_text
+from rigidsym.printing.names import _GREEK, book_text
 
 __all__ = ["label_text", "latex_text", "latex_spans"]
 

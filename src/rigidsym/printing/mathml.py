@@ -22,7 +22,7 @@ import re
 
 from latex2mathml.converter import convert
 
-__all__ = ["latex_to_mathml", "bold_char", "LEFTOVER_COMMAND"]
+__all__ = ["latex_to_mathml", "mathml_or_text", "bold_char", "LEFTOVER_COMMAND"]
 
 #: commands latex2mathml does not know, rewritten before conversion (sympy's printer and the
 #: book both use some of them).
@@ -149,3 +149,26 @@ def latex_to_mathml(latex: str, display: bool = True) -> str:
     out = _TOKEN.sub(_restyle, out)
     out = LEFTOVER_COMMAND.sub(lambda m: f"<mtext>{m.group(3)}</mtext>", out)
     return out
+
+
+def mathml_or_text(latex: str | None, fallback: str | None, display: bool = True,
+                   tag: str = "code") -> str:
+    """MathML of ``latex``, or the text ``fallback`` escaped in ``<tag>`` when there is no
+    LaTeX or the converter rejects it: the one fallback of every HTML view (reports,
+    notebooks), so a converter gap never hides a result.
+
+    Args:
+        latex: a formula, or ``None``.
+        fallback: the text shown instead (``"(not shown: too long)"`` when ``None``).
+        display: as for :func:`latex_to_mathml`.
+        tag: the HTML element around the fallback text.
+
+    Returns:
+        HTML text: a ``<math>`` element or ``<tag>fallback</tag>``.
+    """
+    if latex:
+        try:
+            return latex_to_mathml(latex, display=display)
+        except ValueError:
+            pass
+    return f"<{tag}>{html.escape(fallback or '(not shown: too long)')}</{tag}>"

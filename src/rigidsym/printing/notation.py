@@ -3,12 +3,11 @@
 Declarations name atoms in ASCII (``omega``, ``e_dot``, ``norm_omega``, ``pdot_perp``,
 ``Trace(e.T*omega)`` for a dot product). These printers subclass sympy's ``StrPrinter``
 and ``LatexPrinter`` (``_print_<Class>`` methods, no string surgery on the output) so that
-``rigidsym show`` and the reports read as the book does.
+``rigidsym show`` and the reports read as the book does. Atom names in book notation come
+from :mod:`rigidsym.printing.names`.
 """
 
 from __future__ import annotations
-
-import re
 
 import sympy as sp
 from sympy.core.function import AppliedUndef
@@ -17,127 +16,17 @@ from sympy.printing.latex import LatexPrinter
 from sympy.printing.precedence import PRECEDENCE, precedence
 from sympy.printing.str import StrPrinter
 
+from rigidsym.printing.names import (
+    _SUBSCRIPT_DIGITS,
+    _SUPERSCRIPT,
+    book_group,
+    book_latex,
+    book_text,
+)
+
 __all__ = ["is_negative_term", "book_group", "book_text", "book_latex", "text", "latex",
            "latex_relation",
            "BookStrPrinter", "BookLatexPrinter"]
-
-_GREEK = {
-    "alpha": "α", "beta": "β", "gamma": "γ", "delta": "δ", "epsilon": "ε", "zeta": "ζ",
-    "eta": "η", "theta": "θ", "iota": "ι", "kappa": "κ", "lambda": "λ", "lam": "λ",
-    "mu": "μ", "nu": "ν", "xi": "ξ", "pi": "π", "rho": "ρ", "sigma": "σ", "tau": "τ",
-    "upsilon": "υ", "phi": "φ", "chi": "χ", "psi": "ψ", "omega": "ω",
-    "Gamma": "Γ", "Delta": "Δ", "Theta": "Θ", "Lambda": "Λ", "Xi": "Ξ", "Pi": "Π",
-    "Sigma": "Σ", "Phi": "Φ", "Psi": "Ψ", "Omega": "Ω",
-}
-_ACCENTS = ("ddot", "dot", "tilde", "hat", "bar")
-_COMBINING = {"dot": "\u0307", "ddot": "\u0308", "tilde": "\u0303", "hat": "\u0302",
-              "bar": "\u0304"}
-_SUB_TEXT = {"par": "∥", "perp": "⊥"}
-_SUB_LATEX = {"par": r"\parallel", "perp": r"\perp"}
-_SUBSCRIPT_DIGITS = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
-_SUPERSCRIPT = str.maketrans("0123456789-", "⁰¹²³⁴⁵⁶⁷⁸⁹⁻")
-#: a declaration module's private prefix on atom names (``s34_adot``, ``sec342_vdot``)
-_PRIVATE = re.compile(r"^(?:s|sec|ex)\d{2,}_")
-
-
-def _parse(name: str) -> tuple[str, list[str], list[str], str]:
-    """Split an ASCII atom name into (base, accents, subscripts, primes)."""
-    name = _PRIVATE.sub("", name)
-    primes = ""
-    while name.endswith("'"):
-        primes, name = primes + "'", name[:-1]
-    tokens = [t for t in name.split("_") if t]
-    while len(tokens) > 1 and tokens[-1] == "prime":
-        primes, tokens = primes + "'", tokens[:-1]
-    if not tokens:
-        return name, [], [], primes
-    base, rest = tokens[0], tokens[1:]
-    accents: list[str] = []
-    if base.startswith("norm") and len(base) > 4 and not rest:
-        base = base[4:]
-    m = re.fullmatch(r"([A-Za-z]+?)(\d{3,})", base)  # an equation tag (Fdot394): dropped
-    if m:
-        base = m.group(1)
-    stripped = True
-    while stripped:  # trailing accents glued to the base: adot, Ntildedot, u0dot
-        stripped = False
-        for acc in _ACCENTS:
-            stem = base[:-len(acc)]
-            if base.endswith(acc) and (stem in _GREEK or len(stem) == 1
-                                       or re.fullmatch(r"[A-Za-z]+\d{1,2}|[A-Za-z]+(tilde|dot)",
-                                                       stem)):
-                base, accents = stem, [acc] + accents
-                stripped = True
-                break
-    m = re.fullmatch(r"([A-Za-z]+?)(\d{1,2})", base)  # mu1, r0, u0: a subscript digit
-    if m:
-        base, rest = m.group(1), [m.group(2)] + rest
-    subs = []
-    for t in rest:
-        if t in _ACCENTS:
-            accents.append(t)
-        else:
-            subs.append(t)
-    return base, accents, subs, primes
-
-
-def book_text(name: str) -> str:
-    """An atom's name in book notation as plain Unicode text.
-
-    ``"omega" -> "ω"``, ``"e_dot" -> "ė"``, ``"pdot_perp" -> "ṗ⊥"``, ``"norm_omega" ->
-    "‖ω‖"``, ``"s34_adot_1" -> "ȧ₁"`` (a module's private prefix dropped).
-    """
-    if name.startswith("norm_"):
-        return f"‖{book_text(name[5:])}‖"
-    base, accents, subs, primes = _parse(name)
-    out = _GREEK.get(base, base)
-    if len(out) == 1:
-        out += "".join(_COMBINING[a] for a in accents)
-    else:
-        out += "".join("_" + a for a in accents)
-    out += primes
-    for s in subs:
-        if s in _SUB_TEXT:
-            out += _SUB_TEXT[s]
-        elif s.isdigit():
-            out += s.translate(_SUBSCRIPT_DIGITS)
-        else:
-            out += "_" + s
-    return out
-
-
-def book_group(name: str) -> str:
-    """The book name of the vector or matrix an entry atom belongs to (``"s38_mu1"`` ->
-    ``"μ"``, ``"e_1"`` -> ``"e"``, ``"Q_12"`` -> ``"Q"``)."""
-    name = _PRIVATE.sub("", name)
-    if re.search(r"_\d+$", name):
-        return book_text(re.sub(r"_\d+$", "", name))
-    return book_text(re.sub(r"(?<=[A-Za-z])\d+$", "", name))
-
-
-def book_latex(name: str, bold: bool = False) -> str:
-    """An atom's name in book notation as LaTeX (bold for vectors and matrices).
-
-    ``book_latex("omega", bold=True) == r"\\boldsymbol{\\omega}"``,
-    ``book_latex("pdot_perp", True) == r"\\dot{\\mathbf{p}}_{\\perp}"``.
-    """
-    if name.startswith("norm_"):
-        return rf"\|{book_latex(name[5:], bold=True)}\|"
-    base, accents, subs, primes = _parse(name)
-    if base in _GREEK:
-        core = "\\" + ("lambda" if base == "lam" else base)
-        core = rf"\boldsymbol{{{core}}}" if bold else core
-    elif len(base) == 1:
-        core = rf"\mathbf{{{base}}}" if bold else base
-    else:
-        core = rf"\mathrm{{{base}}}"
-    for a in accents:
-        core = rf"\{a}{{{core}}}"
-    core += primes
-    if subs:
-        core += "_{" + ",".join(_SUB_LATEX.get(s, s) for s in subs) + "}"
-    return core
-
 
 def _is_vector(x) -> bool:
     return getattr(x, "shape", None) is not None and len(x.shape) == 2 and x.shape[1] == 1
@@ -164,7 +53,37 @@ def _dot_operands(x):
     return None
 
 
-class BookStrPrinter(StrPrinter):
+class _BookNotation:
+    """What the text and LaTeX printers share: a dot product written ``a^T b`` (in a trace
+    or an element ``[0, 0]``) prints as ``a·b``, an entry of a book matrix symbol with its
+    1-based subscript, a sum with its positive terms first. A printer supplies ``_dot``,
+    ``_trace`` and ``_entry``."""
+
+    def _print_Trace(self, expr):
+        d = _dot_operands(expr)
+        return self._dot(*d) if d else self._trace(expr.arg)
+
+    def _print_MatrixElement(self, expr):
+        d = _dot_operands(expr)
+        if d:
+            return self._dot(*d)
+        parent, i, j = expr.parent, expr.i, expr.j
+        if isinstance(parent, sp.MatrixSymbol) and i.is_Integer and j.is_Integer:
+            sub = str(i + 1) if parent.shape[1] == 1 else f"{i + 1}{j + 1}"  # book: 1-based
+            return self._entry(parent.name, sub)
+        return super()._print_MatrixElement(expr)
+
+    def _print_MatAdd(self, expr):
+        out = []
+        # positive terms first: M_A - M_C, p - a (sympy's order gives -M_C + M_A)
+        for i, t in enumerate(sorted(expr.args, key=is_negative_term)):
+            neg = is_negative_term(t)
+            s = self._print(-t if neg else t)
+            out.append(("-" if neg else "") + s if i == 0 else (" - " if neg else " + ") + s)
+        return "".join(out)
+
+
+class BookStrPrinter(_BookNotation, StrPrinter):
     """Plain-text printer in book notation (one line; products by juxtaposition)."""
 
     def _print_Symbol(self, expr):
@@ -191,19 +110,11 @@ class BookStrPrinter(StrPrinter):
     def _dot(self, a, b) -> str:
         return f"({self._print(a)}·{self._print(b)})"
 
-    def _print_Trace(self, expr):
-        d = _dot_operands(expr)
-        return self._dot(*d) if d else f"tr({self._print(expr.arg)})"
+    def _trace(self, arg) -> str:
+        return f"tr({self._print(arg)})"
 
-    def _print_MatrixElement(self, expr):
-        d = _dot_operands(expr)
-        if d:
-            return self._dot(*d)
-        parent, i, j = expr.parent, expr.i, expr.j
-        if isinstance(parent, sp.MatrixSymbol) and i.is_Integer and j.is_Integer:
-            sub = str(i + 1) if parent.shape[1] == 1 else f"{i + 1}{j + 1}"  # book: 1-based
-            return book_text(parent.name) + sub.translate(_SUBSCRIPT_DIGITS)
-        return super()._print_MatrixElement(expr)
+    def _entry(self, name: str, sub: str) -> str:
+        return book_text(name) + sub.translate(_SUBSCRIPT_DIGITS)
 
     def _print_Pi(self, expr):
         return "π"
@@ -250,15 +161,6 @@ class BookStrPrinter(StrPrinter):
             if q != 1:  # the book writes omega omega^T adot/||omega||^2
                 den = "/" + self.parenthesize(q, PRECEDENCE["Mul"])
         return sign + " ".join(head + body) + den
-
-    def _print_MatAdd(self, expr):
-        out = []
-        # positive terms first: M_A - M_C, p - a (sympy's order gives -M_C + M_A)
-        for i, t in enumerate(sorted(expr.args, key=is_negative_term)):
-            neg = is_negative_term(t)
-            s = self._print(-t if neg else t)
-            out.append(("-" if neg else "") + s if i == 0 else (" - " if neg else " + ") + s)
-        return "".join(out)
 
     def _print_Function(self, expr):
         if isinstance(expr, AppliedUndef):
@@ -311,7 +213,7 @@ class BookStrPrinter(StrPrinter):
     _print_MutableDenseMatrix = _print_MatrixBase
 
 
-class BookLatexPrinter(LatexPrinter):
+class BookLatexPrinter(_BookNotation, LatexPrinter):
     """LaTeX printer in book notation: bold vectors and matrices, ``\\cdot`` for a dot
     product, ``\\|ω\\|`` for a norm, ``\\mathbf{1}``/``\\mathbf{O}``."""
 
@@ -346,32 +248,15 @@ class BookLatexPrinter(LatexPrinter):
     def _dot(self, a, b) -> str:
         return rf"\left({self._print(a)} \cdot {self._print(b)}\right)"
 
-    def _print_Trace(self, expr):
-        d = _dot_operands(expr)
-        return self._dot(*d) if d else rf"\mathrm{{tr}}\left({self._print(expr.arg)}\right)"
+    def _trace(self, arg) -> str:
+        return rf"\mathrm{{tr}}\left({self._print(arg)}\right)"
 
-    def _print_MatrixElement(self, expr):
-        d = _dot_operands(expr)
-        if d:
-            return self._dot(*d)
-        parent, i, j = expr.parent, expr.i, expr.j
-        if isinstance(parent, sp.MatrixSymbol) and i.is_Integer and j.is_Integer:
-            sub = str(i + 1) if parent.shape[1] == 1 else f"{i + 1}{j + 1}"  # book: 1-based
-            return f"{book_latex(parent.name)}_{{{sub}}}"
-        return super()._print_MatrixElement(expr)
+    def _entry(self, name: str, sub: str) -> str:
+        return f"{book_latex(name)}_{{{sub}}}"
 
     def _print_MatMul(self, expr):
         d = _dot_operands(expr)
         return self._dot(*d) if d else super()._print_MatMul(expr)
-
-    def _print_MatAdd(self, expr):
-        out = []
-        # positive terms first: M_A - M_C, p - a (sympy's order gives -M_C + M_A)
-        for i, t in enumerate(sorted(expr.args, key=is_negative_term)):
-            neg = is_negative_term(t)
-            s = self._print(-t if neg else t)
-            out.append(("-" if neg else "") + s if i == 0 else (" - " if neg else " + ") + s)
-        return "".join(out)
 
     def _print_Cross(self, expr):  # the derivations' Cross(u, v), not sympy.vector's
         u, v = (self.parenthesize(a, PRECEDENCE["Mul"], strict=True) for a in expr.args)

@@ -101,16 +101,23 @@ def _value_lines(name: str, exact: str, width: int) -> list[str]:
     return _wrap(f"{name} = {text}" + (f"   ≈ {dec}" if dec else ""), width, "  ")
 
 
-def _wrap(text: str, width: int, indent: str) -> list[str]:
-    """Break at spaces only (a value's entries are separated by ``", "`` and ``"; "``)."""
+def wrap_at_spaces(text: str, width: int, indent: str, hang: str = "  ") -> list[str]:
+    """``text`` as lines of at most ``width`` (where a word allows), broken at spaces only
+    (a value's entries are separated by ``", "`` and ``"; "``), each line after the first
+    indented by ``indent + hang``; also ``show``'s last resort for a term wider than the line.
+    """
     out, line = [], indent
     for word in text.split(" "):
         if len(line) + len(word) + 1 > width and line.strip():
             out.append(line.rstrip())
-            line = indent + "    "
+            line = indent + hang
         line += word + " "
     out.append(line.rstrip())
     return out
+
+
+def _wrap(text: str, width: int, indent: str) -> list[str]:
+    return wrap_at_spaces(text, width, indent, "    ")
 
 
 def text_lines(ce: dict, sides: tuple[str, str], width: int) -> list[str]:

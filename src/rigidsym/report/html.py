@@ -15,7 +15,7 @@ import sympy as sp
 from jinja2 import Environment, PackageLoader, StrictUndefined
 from markupsafe import Markup
 
-from rigidsym.checking.checker import Result
+from rigidsym.checking.checker import Outcome
 from rigidsym.printing import notation
 from rigidsym.printing.labels import label_text, latex_spans, latex_text
 from rigidsym.report.counterexample import html_view, sides_of
@@ -23,7 +23,7 @@ from rigidsym.report.glossary import html_entries
 from rigidsym.report.markdown import anchor, sections
 from rigidsym.report.mathtext import math_or_text
 from rigidsym.report.numeric import numeric_sentence
-from rigidsym.report.record import CITATION, result_record, summary
+from rigidsym.report.record import CITATION, TITLE, result_record, summary
 from rigidsym.report.repairs import errata_rows, repairs_view
 
 __all__ = ["to_html", "markdown_to_html", "math_or_text", "prose_html"]
@@ -93,11 +93,14 @@ def _view(rec: dict) -> dict:
     return v
 
 
-def to_html(results: list[Result]) -> str:
-    """The chapter report as one self-contained HTML page.
+def to_html(results: list[Outcome], *, title: str = TITLE, source: str | None = None) -> str:
+    """The report as one self-contained HTML page.
 
     Args:
-        results: checker results in book order.
+        results: checker results in book order (or a user module's declaration order).
+        title: the page's title (default the chapter's).
+        source: where the declarations come from, in words (``"the user module
+            notes"``); ``None`` for the book (its citation and the exercises' page).
 
     Returns:
         HTML text: summary counts, the equations that do not hold (each linking to its
@@ -107,7 +110,8 @@ def to_html(results: list[Result]) -> str:
     views = [_view(result_record(r, timings=False)) for r in results]
     s = summary(results)
     return _env().get_template("chapter3.html.j2").render(
-        citation=CITATION.replace("*", ""), counts=list(s.items()), total=len(results),
+        title=title, source=source, citation=CITATION.replace("*", ""),
+        counts=list(s.items()), total=len(results),
         bad=[v for v in views if v["verdict"] == "does-not-hold"],
         off=[v for v in views if v["verdict"] != v["expected"]],
         groups=sections(views), errata=errata_rows(views), words=html_entries())

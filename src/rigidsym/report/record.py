@@ -14,16 +14,19 @@ from collections import Counter
 
 import sympy as sp
 
-from rigidsym.checking.checker import Result
+from rigidsym.checking.checker import Outcome
 from rigidsym.checking.registry import USER_CAUSE_DEFAULT, VERDICTS, is_user_id
 from rigidsym.printing import notation
 from rigidsym.report.repairs import repair_fields
 
 __all__ = ["summary", "result_record", "to_json", "cause_words",
-           "failure_bound", "CITATION", "SCHEMA", "RESIDUAL_FLOOR", "document_header"]
+           "failure_bound", "CITATION", "TITLE", "SCHEMA", "RESIDUAL_FLOOR",
+           "document_header"]
 
 CITATION = ("J. Angeles, *Fundamentals of Robotic Mechanical Systems*, 4th ed., Springer, "
             "Chap. 3")
+#: the title of the chapter's report (a user report is titled by its module)
+TITLE = "Chapter 3 checked: verdicts"
 #: version of the JSON record; 2 added per-member records, the model in words, the cause
 #: class and the counterexample's residual and decimals, and moved expanded values to
 #: ``full`` documents.
@@ -40,7 +43,7 @@ _CAUSE_CLASS = {"conversion": "a slip in the text's conversion (from the printed
 _BOUND = re.compile(r"P\(false zero\) <= ([0-9.]+E[-+]?\d+)")
 
 
-def summary(results: list[Result]) -> dict[str, int]:
+def summary(results: list[Outcome]) -> dict[str, int]:
     """Counts per verdict (every verdict listed, zeros included)."""
     c = Counter(r.verdict for r in results)
     return {v: c.get(v, 0) for v in VERDICTS}
@@ -50,7 +53,7 @@ def _bounded(x):
     return RESIDUAL_FLOOR if isinstance(x, float) and x < RESIDUAL_FLOOR else x
 
 
-def cause_words(r: Result) -> tuple[str, str]:
+def cause_words(r: Outcome) -> tuple[str, str]:
     """The cause class of a does-not-hold and one sentence of what is known.
 
     Returns:
@@ -71,7 +74,7 @@ def cause_words(r: Result) -> tuple[str, str]:
                                     f"erratum; what is known: {known}")
 
 
-def failure_bound(r: Result) -> float | None:
+def failure_bound(r: Outcome) -> float | None:
     """The largest Schwartz-Zippel failure probability bound behind the verdict, if any."""
     texts = [r.detail] + [m["detail"] for m in r.members if m["status"] == "holds"]
     found = [float(x) for t in texts for x in _BOUND.findall(t or "")]
@@ -125,7 +128,7 @@ def counterexample_record(ce: dict | None) -> dict | None:
     return out
 
 
-def result_record(r: Result, timings: bool = True, full: bool = False) -> dict:
+def result_record(r: Outcome, timings: bool = True, full: bool = False) -> dict:
     """The schema-2 record of one result (plain data, JSON-ready).
 
     Args:
@@ -172,7 +175,7 @@ def document_header() -> dict:
     return {"schema": SCHEMA, "python_flint": flint_version()}
 
 
-def to_json(results: list[Result], timings: bool = True, full: bool = False) -> str:
+def to_json(results: list[Outcome], timings: bool = True, full: bool = False) -> str:
     """The JSON document ``{"schema": 2, "python_flint": ..., "equations": [...],
     "summary": {...}}``.
 

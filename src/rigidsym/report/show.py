@@ -16,11 +16,12 @@ import sys
 
 import sympy as sp
 
-from rigidsym.checking.checker import Result
+from rigidsym.checking.checker import Outcome
 from rigidsym.checking.registry import Rel, is_user_id
 from rigidsym.printing import notation
 from rigidsym.printing.labels import label_text
 from rigidsym.report.counterexample import GLOSSARY_HINT, sides_of, text_lines
+from rigidsym.report.counterexample import wrap_at_spaces as _hard_wrap
 from rigidsym.report.numeric import numeric_sentence
 from rigidsym.report.record import cause_words, counterexample_record, result_record
 
@@ -48,18 +49,6 @@ def _terms(expr) -> list:
     if isinstance(expr, sp.Add | sp.MatAdd):
         return list(expr.args)
     return [expr]
-
-
-def _hard_wrap(text: str, width: int, indent: str) -> list[str]:
-    """Last resort for a single term wider than the line: break at spaces only."""
-    out, line = [], indent
-    for word in text.split(" "):
-        if len(line) + len(word) + 1 > width and line.strip():
-            out.append(line.rstrip())
-            line = indent + "  "
-        line += word + " "
-    out.append(line.rstrip())
-    return out
 
 
 def expr_lines(expr, width: int, indent: str = "") -> list[str]:
@@ -121,13 +110,13 @@ def _rel_lines(rel: Rel, width: int, indent: str) -> list[str]:
     return [f"{indent}{lhs} ="] + expr_lines(rel.rhs, width, indent + "    ")
 
 
-def _failing_text(r: Result) -> str | None:
+def _failing_text(r: Outcome) -> str | None:
     """The book text of the failing member (``ȧ∥ = (ȧ·ω)/‖ω‖²``), if it has one."""
     return next((m["text"] for m in r.members
                  if m["status"] == "fails" and m["role"] != "corrected"), None)
 
 
-def explain(r: Result, rels: dict[str, list[Rel]], where: str, width: int) -> str:
+def explain(r: Outcome, rels: dict[str, list[Rel]], where: str, width: int) -> str:
     """The explanation printed by ``rigidsym show``.
 
     Args:
@@ -196,7 +185,7 @@ def explain(r: Result, rels: dict[str, list[Rel]], where: str, width: int) -> st
     return "\n".join(out)
 
 
-def repair_lines(r: Result, width: int) -> list[str]:
+def repair_lines(r: Outcome, width: int) -> list[str]:
     """The repairs of a does-not-hold (issue 23), in book notation with each edited
     subterm in ``⟦…⟧``: per failing member, what was searched and each repair kept, with
     its method, failure bound and whether it is the declared correction."""

@@ -145,6 +145,32 @@ def _eval_entries(prog: Program, plan: Plan, point: dict) -> list:
                             for p in plan.params])
 
 
+def _probe(prog: Program, plan: Plan, rng: random.Random, n: int):
+    """Evaluate the entries of ``prog`` at ``n`` random points off the singular set;
+    ``(point, entry)`` of the first non-zero value (a proof that an entry is not zero), or
+    ``None``.
+
+    Raises:
+        Unsupported: no ``n`` points off the singular set in ``20 n + 20`` tries.
+    """
+    tries = 0
+    done = 0
+    while done < n:
+        tries += 1
+        if tries > 20 * n + 20:
+            raise Unsupported("could not find sample points off the singular set")
+        pt = random_point(plan, rng)
+        try:
+            vals = _eval_entries(prog, plan, pt)
+        except ZeroDivisionError:
+            continue
+        done += 1
+        for i, v in enumerate(vals):
+            if v != 0:
+                return pt, i
+    return None
+
+
 def decide_zero(entries, seed: int = 0, probes: int = 2) -> ZeroResult:
     """Decide whether every expression in ``entries`` is identically zero on the
     constraint set (see the module docstring for the method and its guarantees)."""
@@ -163,22 +189,7 @@ def decide_zero(entries, seed: int = 0, probes: int = 2) -> ZeroResult:
         return ZeroResult(None, "undecided", str(exc), plan=plan)
 
     def probe(n):
-        tries = 0
-        done = 0
-        while done < n:
-            tries += 1
-            if tries > 20 * n + 20:
-                raise Unsupported("could not find sample points off the singular set")
-            pt = random_point(plan, rng)
-            try:
-                vals = _eval_entries(prog, plan, pt)
-            except ZeroDivisionError:
-                continue
-            done += 1
-            for i, v in enumerate(vals):
-                if v != 0:
-                    return pt, i
-        return None
+        return _probe(prog, plan, rng, n)
 
     try:
         hit = probe(probes)

@@ -24,6 +24,49 @@ def _cis(tau, k: int, one):
     return re, im
 
 
+def _power(x, ev, one, lift):
+    """``b**n`` at the point: integer ``n`` in the number type, a rational ``n`` only with
+    ``Fraction`` (an exact root, or :class:`Unsupported`)."""
+    b, n = x.args
+    if n.is_Integer:
+        bv = ev(b)
+        n = int(n)
+        if n < 0:
+            if bv == 0:
+                raise ZeroDivisionError(str(x))
+            return (one / bv) ** (-n)
+        return bv**n
+    if n.is_Rational and lift is Fraction:
+        return _rational_root(ev(b), int(n.p), int(n.q))
+    raise Unsupported(f"power {x}")
+
+
+def _trig(x, plan: Plan, point: dict, one):
+    """A trigonometric function of a rational combination of angles (plus a multiple of
+    pi/2) at the point: exact, through the half-angle tangents of the plan."""
+    coeffs, cpi = _linear_angles(x.args[0])
+    re, im = one, 0 * one
+    for a, c in coeffs.items():
+        tau, M = plan.angles[a]
+        k = int(c * M)
+        cr, ci = _cis(point[tau], k, one)
+        re, im = re * cr - im * ci, re * ci + im * cr
+    # rotation by cpi * pi, cpi a multiple of 1/2
+    q = int(2 * cpi) % 4
+    for _ in range(q):
+        re, im = -im, re
+    f = x.func
+    if f is sp.cos:
+        return re
+    if f is sp.sin:
+        return im
+    num, den = {sp.tan: (im, re), sp.cot: (re, im), sp.sec: (one, re),
+                sp.csc: (one, im)}[f]
+    if den == 0:
+        raise ZeroDivisionError(str(x))
+    return num / den
+
+
 def evaluate(expr, plan: Plan, point: dict, lift=Fraction, bare_value=None):
     """Evaluate ``expr`` exactly at ``point`` (parameter symbol -> value).
 
@@ -73,43 +116,11 @@ def evaluate(expr, plan: Plan, point: dict, lift=Fraction, bare_value=None):
                 acc = acc * ev(a)
             return acc
         if isinstance(x, sp.Pow):
-            b, n = x.args
-            if n.is_Integer:
-                bv = ev(b)
-                n = int(n)
-                if n < 0:
-                    if bv == 0:
-                        raise ZeroDivisionError(str(x))
-                    return (one / bv) ** (-n)
-                return bv**n
-            if n.is_Rational and lift is Fraction:
-                bv = ev(b)
-                return _rational_root(bv, int(n.p), int(n.q))
-            raise Unsupported(f"power {x}")
+            return _power(x, ev, one, lift)
         if isinstance(x, sp.Abs):
             return abs(ev(x.args[0]))
         if isinstance(x, _TRIG):
-            coeffs, cpi = _linear_angles(x.args[0])
-            re, im = one, 0 * one
-            for a, c in coeffs.items():
-                tau, M = plan.angles[a]
-                k = int(c * M)
-                cr, ci = _cis(point[tau], k, one)
-                re, im = re * cr - im * ci, re * ci + im * cr
-            # rotation by cpi * pi, cpi a multiple of 1/2
-            q = int(2 * cpi) % 4
-            for _ in range(q):
-                re, im = -im, re
-            f = x.func
-            if f is sp.cos:
-                return re
-            if f is sp.sin:
-                return im
-            num, den = {sp.tan: (im, re), sp.cot: (re, im), sp.sec: (one, re),
-                        sp.csc: (one, im)}[f]
-            if den == 0:
-                raise ZeroDivisionError(str(x))
-            return num / den
+            return _trig(x, plan, point, one)
         raise Unsupported(f"node {type(x).__name__}: {x}")
 
     return ev(sp.sympify(expr))

@@ -14,6 +14,7 @@ from math import gcd
 import sympy as sp
 from sympy.core.function import AppliedUndef
 
+from rigidsym import _kinds
 from rigidsym.algebra.symbols import TIME, constrained_atom, constraint_of
 
 _TRIG = (sp.cos, sp.sin, sp.tan, sp.cot, sp.sec, sp.csc)
@@ -38,7 +39,7 @@ def _constraint(a):
 def _is_angle_atom(a) -> bool:
     if isinstance(a, sp.Symbol | AppliedUndef):
         c = _constraint(a)
-        return c is not None and c.kind == "angle"
+        return c is not None and _kinds.get(c.kind).half_angle
     return False
 
 
@@ -93,30 +94,17 @@ def _group_rules(kind: str, name: str, names: tuple[str, ...], timed: bool, orde
 
 @cache
 def _generic_rules(kind: str, timed: bool, order: int) -> list[dict]:
-    """Per entry of the group, ``{derivative order: expr}`` under the name :data:`_GENERIC`."""
+    """Per entry of the group, ``{derivative order: expr}`` under the name :data:`_GENERIC`
+    (the parametrisation of the kind's row in :mod:`rigidsym._kinds`)."""
     name = _GENERIC
     t = TIME
-    if kind == "unit":
-        pn = [f"{name}__u", f"{name}__v"]
-    elif kind == "unit4":
-        pn = [f"{name}__u", f"{name}__v", f"{name}__w"]
-    elif kind == "rotation":
-        pn = [f"{name}__q1", f"{name}__q2", f"{name}__q3", f"{name}__q0"]
-    else:
-        raise ValueError(kind)
+    k = _kinds.get(kind)
+    if k.parametrise is None:
+        raise ValueError(f"kind: {kind!r} has no rational parametrisation")
+    pn = [f"{name}__{p}" for p in k.params]
     P = [sp.Function(p, real=True)(t) for p in pn] if timed else \
         [_jet_symbol(p, 0, timed=False) for p in pn]
-    if kind == "unit":
-        u, v = P
-        den = 1 + u**2 + v**2
-        vals = [2 * u / den, 2 * v / den, (1 - u**2 - v**2) / den]
-    elif kind == "unit4":
-        u, v, w = P
-        den = 1 + u**2 + v**2 + w**2
-        vals = [2 * u / den, 2 * v / den, 2 * w / den, (1 - u**2 - v**2 - w**2) / den]
-    else:
-        from rigidsym.algebra.primitives import rotation_from_quaternion
-        vals = list(rotation_from_quaternion(P))
+    vals = list(k.parametrise(P))  # the kind table's rational parametrisation
     out = []
     funcs = dict(zip(pn, P, strict=True)) if timed else {}
     for val in vals:
@@ -215,7 +203,7 @@ def make_plan(exprs) -> Plan:
 
     def _note(atom, k):
         c = _constraint(atom)
-        if c is None or c.kind == "angle":
+        if c is None or _kinds.get(c.kind).half_angle:
             free.add((atom, k))
             if c is not None and k == 0:
                 denoms.setdefault(atom, 1)
@@ -224,6 +212,13 @@ def make_plan(exprs) -> Plan:
 
     for e in exprs:
         _walk(sp.sympify(e), visit)
+    _assemble(plan, params, denoms, groups, free)
+    return plan
+
+
+def _assemble(plan: Plan, params: set, denoms: dict, groups: dict, free: set) -> None:
+    """Fill ``plan`` from what :func:`make_plan`'s walk collected: the constrained groups
+    (with their highest derivative order), the free atoms, the angles' denominators."""
     # Constrained groups: rational rules for all atoms and derivative orders present.
     for c, order in groups.items():
         rules = _group_rules(c.kind, c.name, c.names, c.timed, order)
@@ -249,4 +244,3 @@ def make_plan(exprs) -> Plan:
         plan.angles[a] = (tau, M)
         params.add(tau)
     plan.params = sorted(params, key=lambda s: s.name)
-    return plan

@@ -83,6 +83,13 @@ class _Builder:
             self.ops.append(op)
         return slot
 
+    def memo(self, x, make) -> int:
+        """The slot of sympy node ``x``, emitted by ``make(x)`` the first time only."""
+        slot = self.by_node.get(x)
+        if slot is None:
+            slot = self.by_node[x] = make(x)
+        return slot
+
     def const(self, q) -> int:
         return self.emit((CONST, Fraction(q)))
 
@@ -143,6 +150,30 @@ def _trig(b: _Builder, x, plan: Plan, param) -> int:
     return b.div(num, den)
 
 
+_ARITH = (sp.Add, sp.Mul, sp.Pow, sp.Abs)
+
+
+def _arith(b, x, node) -> int:
+    """The step of a sum, product, power or absolute value, the nodes both translations
+    share (``node`` translates an argument).
+
+    Raises:
+        Unsupported: a power whose exponent is not rational.
+    """
+    if isinstance(x, sp.Add):
+        return b.add(*[node(a) for a in x.args])
+    if isinstance(x, sp.Mul):
+        return b.mul(*[node(a) for a in x.args])
+    if isinstance(x, sp.Abs):
+        return b.emit((ABS, node(x.args[0])))
+    base, n = x.args
+    if n.is_Integer:
+        return b.emit((POW, node(base), int(n)))
+    if n.is_Rational:
+        return b.emit((ROOT, node(base), int(n.p), int(n.q)))
+    raise Unsupported(f"power {x}")
+
+
 def parametrised(exprs, plan: Plan) -> Program:
     """Translate ``exprs`` under ``plan`` (atoms by their rational parametrisation).
 
@@ -162,10 +193,7 @@ def parametrised(exprs, plan: Plan) -> Program:
         return b.leaf_slot[s]
 
     def node(x) -> int:
-        slot = b.by_node.get(x)
-        if slot is None:
-            slot = b.by_node[x] = _node(x)
-        return slot
+        return b.memo(x, _node)
 
     def _node(x) -> int:
         if x.is_Rational:
@@ -177,19 +205,8 @@ def parametrised(exprs, plan: Plan) -> Program:
             if rule is None or rule == x:
                 raise Unsupported(f"no value for atom {x}")
             return node(rule)
-        if isinstance(x, sp.Add):
-            return b.add(*[node(a) for a in x.args])
-        if isinstance(x, sp.Mul):
-            return b.mul(*[node(a) for a in x.args])
-        if isinstance(x, sp.Pow):
-            base, n = x.args
-            if n.is_Integer:
-                return b.emit((POW, node(base), int(n)))
-            if n.is_Rational:
-                return b.emit((ROOT, node(base), int(n.p), int(n.q)))
-            raise Unsupported(f"power {x}")
-        if isinstance(x, sp.Abs):
-            return b.emit((ABS, node(x.args[0])))
+        if isinstance(x, _ARITH):
+            return _arith(b, x, node)
         if isinstance(x, _TRIG):
             return _trig(b, x, plan, param)
         raise Unsupported(f"node {type(x).__name__}: {x}")
@@ -209,10 +226,7 @@ def unparametrised(exprs) -> Program:
     b = _Builder()
 
     def node(x) -> int:
-        slot = b.by_node.get(x)
-        if slot is None:
-            slot = b.by_node[x] = _node(x)
-        return slot
+        return b.memo(x, _node)
 
     def _node(x) -> int:
         if x.is_Rational:
@@ -221,19 +235,8 @@ def unparametrised(exprs) -> Program:
             return b.emit((PI,))
         if isinstance(x, sp.Symbol | AppliedUndef | sp.Derivative):
             return b.leaf(x)
-        if isinstance(x, sp.Add):
-            return b.add(*[node(a) for a in x.args])
-        if isinstance(x, sp.Mul):
-            return b.mul(*[node(a) for a in x.args])
-        if isinstance(x, sp.Pow):
-            base, n = x.args
-            if n.is_Integer:
-                return b.emit((POW, node(base), int(n)))
-            if n.is_Rational:
-                return b.emit((ROOT, node(base), int(n.p), int(n.q)))
-            raise Unsupported(f"power {x}")
-        if isinstance(x, sp.Abs):
-            return b.emit((ABS, node(x.args[0])))
+        if isinstance(x, _ARITH):
+            return _arith(b, x, node)
         name = _FUNCS.get(x.func)
         if name is not None:
             return b.emit((FUNC, name, *[node(a) for a in x.args]))

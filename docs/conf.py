@@ -1,0 +1,64 @@
+"""Sphinx configuration of the rigidsym documentation (the API reference and the measured
+pages that used to be long sections of the README).
+
+Built by ``tests/test_docs.py`` with warnings as errors (``-W``) and every cross-reference
+checked (``nitpicky``): a reference to a public name, a page or a heading that does not
+exist fails the build. No intersphinx: CI reaches no outside site, so references to NumPy,
+sympy or the standard library stay plain text (``nitpick_ignore_regex`` below).
+"""
+
+from __future__ import annotations
+
+project = "rigidsym"
+author = "the rigidsym maintainers"
+copyright = "the rigidsym maintainers, MIT license"
+
+extensions = ["sphinx.ext.autodoc", "sphinx.ext.napoleon", "myst_parser"]
+source_suffix = {".md": "markdown"}
+root_doc = "index"
+exclude_patterns = ["_build", "README.md"]
+html_theme = "alabaster"
+html_static_path: list[str] = []
+# the pages are built by a test, often in parallel with other work: no search index to keep
+html_copy_source = False
+
+# Markdown pages: headings get anchors (for [text](page.md#heading) links), $...$ maths
+myst_heading_anchors = 3
+myst_enable_extensions = ["dollarmath"]
+
+# API reference: Google-style docstrings (Args, Returns, Raises, Example)
+napoleon_google_docstring = True
+napoleon_numpy_docstring = False
+# attributes as a field list: a dataclass's fields are documented once, in its docstring
+napoleon_use_ivar = True
+autodoc_member_order = "bysource"
+autodoc_typehints = "signature"
+# signatures show the aliases, not NumPy's expansion of ArrayLike into a page of unions
+autodoc_type_aliases = {n: n for n in ("ArrayLike", "NDArray", "OnSingular", "OutArrays")}
+autodoc_default_options = {"members": True, "undoc-members": False}
+
+# every reference is checked, except those to other projects (no intersphinx) and to the
+# private layers, which the reference does not document (README, "Public modules")
+nitpicky = True
+_PUBLIC = r"rigidsym(\.(declare|kernels|cli|codegen\.spec|api))?"
+nitpick_ignore_regex = [
+    (r"py:.*", r"(?!rigidsym\b)[\w.]+"),                    # numpy, sympy, the stdlib, ...
+    (r"py:.*", r"rigidsym\.(algebra|checking|zero|printing|report|generated|derivations"
+               r"|_\w+|codegen\.(?!spec\b)\w+|kernels\._\w+)(\.\w+)*"),
+    (r"py:.*", r"(ArrayLike|NDArray|OnSingular|OutArrays|Outcome|ModuleSpec|Path)"),
+]
+
+
+def _skip(app, what, name, obj, skip, options):
+    """The declaration vocabulary is documented once, under ``rigidsym.declare``; the
+    package re-exports it."""
+    import rigidsym.declare
+
+    module = getattr(app.env, "temp_data", {}).get("autodoc:module")
+    if module == "rigidsym" and name in rigidsym.declare.__all__:
+        return True
+    return skip
+
+
+def setup(app):
+    app.connect("autodoc-skip-member", _skip)

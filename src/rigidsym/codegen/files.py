@@ -1,0 +1,82 @@
+"""The generator's files on disk: write a generation atomically (removing orphans) or
+compare it with the disk (``rigidsym generate --check``).
+
+A generation is anything with a ``files`` mapping ``{relative path: text}``
+(:class:`rigidsym.codegen.generator.GenerationResult`).
+"""
+
+from __future__ import annotations
+
+import difflib
+import os
+from pathlib import Path
+from typing import Protocol
+
+from rigidsym._config import generated_dir
+from rigidsym._io import write_atomic
+
+__all__ = ["write", "check", "Generation"]
+
+
+class Generation(Protocol):
+    """What these functions read of a generation: its files."""
+
+    #: relative path under the output folder -> text
+    files: dict[str, str]
+
+#: file names under generated/ owned by the generator (anything else there is an orphan,
+#: except the report folder, which belongs to ``rigidsym report``, and the notebooks, which
+#: ``rigidsym generate`` writes through :mod:`rigidsym.report.notebooks`).
+_FOREIGN = ("report/", "notebooks/")
+
+
+def _on_disk(out: Path) -> dict[str, Path]:
+    found = {}
+    if out.exists():
+        for p in sorted(out.rglob("*")):
+            rel = p.relative_to(out).as_posix()
+            if p.is_file() and "__pycache__" not in rel and not rel.startswith(_FOREIGN) \
+                    and not p.name.startswith("."):
+                found[rel] = p
+    return found
+
+
+def write(result: Generation, out: Path | None = None) -> list[str]:
+    """Write changed files atomically, delete orphans; returns the paths touched."""
+    out = Path(out) if out is not None else generated_dir()
+    touched = []
+    disk = _on_disk(out)
+    for rel, text in result.files.items():
+        p = out / rel
+        if rel in disk and p.read_text(encoding="utf-8") == text:
+            continue
+        write_atomic(p, text)
+        touched.append(rel)
+    for rel, p in disk.items():
+        if rel not in result.files:
+            os.unlink(p)
+            touched.append(f"{rel} (removed orphan)")
+    return touched
+
+
+def check(result: Generation, out: Path | None = None) -> str:
+    """Unified diff between ``result`` and the disk ("" when byte-identical, no orphans)."""
+    out = Path(out) if out is not None else generated_dir()
+    disk = _on_disk(out)
+    chunks = []
+    for rel in sorted(set(disk) | set(result.files)):
+        old = disk[rel].read_text(encoding="utf-8") if rel in disk else None
+        new = result.files.get(rel)
+        if old == new:
+            continue
+        a = [] if old is None else old.splitlines(keepends=True)
+        b = [] if new is None else new.splitlines(keepends=True)
+        label_a = f"a/generated/{rel}" if old is not None else "/dev/null"
+        label_b = f"b/generated/{rel}" if new is not None else "/dev/null"
+        diff = "".join(difflib.unified_diff(a, b, label_a, label_b))
+        if old is None:
+            diff = f"missing file: generated/{rel}\n" + diff
+        elif new is None:
+            diff = f"orphan file: generated/{rel}\n" + diff
+        chunks.append(diff if diff.endswith("\n") else diff + "\n")
+    return "".join(chunks)

@@ -1,0 +1,128 @@
+"""Book names of atoms: the ASCII names declarations use (``omega``, ``e_dot``,
+``pdot_perp``, ``norm_omega``) in the book's notation, as Unicode text (``ω``, ``ė``, ``ṗ⊥``,
+``‖ω‖``) and as LaTeX. The printers of :mod:`rigidsym.printing.notation` print every atom
+through these.
+"""
+
+from __future__ import annotations
+
+import re
+
+__all__ = ["book_text", "book_group", "book_latex"]
+
+_GREEK = {
+    "alpha": "α", "beta": "β", "gamma": "γ", "delta": "δ", "epsilon": "ε", "zeta": "ζ",
+    "eta": "η", "theta": "θ", "iota": "ι", "kappa": "κ", "lambda": "λ", "lam": "λ",
+    "mu": "μ", "nu": "ν", "xi": "ξ", "pi": "π", "rho": "ρ", "sigma": "σ", "tau": "τ",
+    "upsilon": "υ", "phi": "φ", "chi": "χ", "psi": "ψ", "omega": "ω",
+    "Gamma": "Γ", "Delta": "Δ", "Theta": "Θ", "Lambda": "Λ", "Xi": "Ξ", "Pi": "Π",
+    "Sigma": "Σ", "Phi": "Φ", "Psi": "Ψ", "Omega": "Ω",
+}
+_ACCENTS = ("ddot", "dot", "tilde", "hat", "bar")
+_COMBINING = {"dot": "\u0307", "ddot": "\u0308", "tilde": "\u0303", "hat": "\u0302",
+              "bar": "\u0304"}
+_SUB_TEXT = {"par": "∥", "perp": "⊥"}
+_SUB_LATEX = {"par": r"\parallel", "perp": r"\perp"}
+_SUBSCRIPT_DIGITS = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
+_SUPERSCRIPT = str.maketrans("0123456789-", "⁰¹²³⁴⁵⁶⁷⁸⁹⁻")
+#: a declaration module's private prefix on atom names (``s34_adot``, ``sec342_vdot``)
+_PRIVATE = re.compile(r"^(?:s|sec|ex)\d{2,}_")
+
+
+def _parse(name: str) -> tuple[str, list[str], list[str], str]:
+    """Split an ASCII atom name into (base, accents, subscripts, primes)."""
+    name = _PRIVATE.sub("", name)
+    primes = ""
+    while name.endswith("'"):
+        primes, name = primes + "'", name[:-1]
+    tokens = [t for t in name.split("_") if t]
+    while len(tokens) > 1 and tokens[-1] == "prime":
+        primes, tokens = primes + "'", tokens[:-1]
+    if not tokens:
+        return name, [], [], primes
+    base, rest = tokens[0], tokens[1:]
+    accents: list[str] = []
+    if base.startswith("norm") and len(base) > 4 and not rest:
+        base = base[4:]
+    m = re.fullmatch(r"([A-Za-z]+?)(\d{3,})", base)  # an equation tag (Fdot394): dropped
+    if m:
+        base = m.group(1)
+    stripped = True
+    while stripped:  # trailing accents glued to the base: adot, Ntildedot, u0dot
+        stripped = False
+        for acc in _ACCENTS:
+            stem = base[:-len(acc)]
+            if base.endswith(acc) and (stem in _GREEK or len(stem) == 1
+                                       or re.fullmatch(r"[A-Za-z]+\d{1,2}|[A-Za-z]+(tilde|dot)",
+                                                       stem)):
+                base, accents = stem, [acc] + accents
+                stripped = True
+                break
+    m = re.fullmatch(r"([A-Za-z]+?)(\d{1,2})", base)  # mu1, r0, u0: a subscript digit
+    if m:
+        base, rest = m.group(1), [m.group(2)] + rest
+    subs = []
+    for t in rest:
+        if t in _ACCENTS:
+            accents.append(t)
+        else:
+            subs.append(t)
+    return base, accents, subs, primes
+
+
+def book_text(name: str) -> str:
+    """An atom's name in book notation as plain Unicode text.
+
+    ``"omega" -> "ω"``, ``"e_dot" -> "ė"``, ``"pdot_perp" -> "ṗ⊥"``, ``"norm_omega" ->
+    "‖ω‖"``, ``"s34_adot_1" -> "ȧ₁"`` (a module's private prefix dropped).
+    """
+    if name.startswith("norm_"):
+        return f"‖{book_text(name[5:])}‖"
+    base, accents, subs, primes = _parse(name)
+    out = _GREEK.get(base, base)
+    if len(out) == 1:
+        out += "".join(_COMBINING[a] for a in accents)
+    else:
+        out += "".join("_" + a for a in accents)
+    out += primes
+    for s in subs:
+        if s in _SUB_TEXT:
+            out += _SUB_TEXT[s]
+        elif s.isdigit():
+            out += s.translate(_SUBSCRIPT_DIGITS)
+        else:
+            out += "_" + s
+    return out
+
+
+def book_group(name: str) -> str:
+    """The book name of the vector or matrix an entry atom belongs to (``"s38_mu1"`` ->
+    ``"μ"``, ``"e_1"`` -> ``"e"``, ``"Q_12"`` -> ``"Q"``)."""
+    name = _PRIVATE.sub("", name)
+    if re.search(r"_\d+$", name):
+        return book_text(re.sub(r"_\d+$", "", name))
+    return book_text(re.sub(r"(?<=[A-Za-z])\d+$", "", name))
+
+
+def book_latex(name: str, bold: bool = False) -> str:
+    """An atom's name in book notation as LaTeX (bold for vectors and matrices).
+
+    ``book_latex("omega", bold=True) == r"\\boldsymbol{\\omega}"``,
+    ``book_latex("pdot_perp", True) == r"\\dot{\\mathbf{p}}_{\\perp}"``.
+    """
+    if name.startswith("norm_"):
+        return rf"\|{book_latex(name[5:], bold=True)}\|"
+    base, accents, subs, primes = _parse(name)
+    if base in _GREEK:
+        core = "\\" + ("lambda" if base == "lam" else base)
+        core = rf"\boldsymbol{{{core}}}" if bold else core
+    elif len(base) == 1:
+        core = rf"\mathbf{{{base}}}" if bold else base
+    else:
+        core = rf"\mathrm{{{base}}}"
+    for a in accents:
+        core = rf"\{a}{{{core}}}"
+    core += primes
+    if subs:
+        core += "_{" + ",".join(_SUB_LATEX.get(s, s) for s in subs) + "}"
+    return core
