@@ -10,7 +10,7 @@
  */
 #include "L_tilde_dot_with_jacobians.h"
 
-/* Exactly L = RIGIDSYM_LANES samples, always: every sample of every batch is computed by
+/* Exactly L = RIGIDSYM_LANES samples (RIGIDSYM_LANES_F32 in float32), always: every sample of every batch is computed by
  * this one function, never inlined, so that a sample's bits do not depend on its batch or
  * on where it sits in it (no scalar remainder of a vector loop, one vectorisation and FMA
  * contraction for all, and the sin/cos loop works on local aligned arrays only (no alias or
@@ -88,22 +88,22 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_L_tilde_dot_with_jacobians_lanes_f32(
     float *RIGIDSYM_RESTRICT out_L_tilde_dot_D_omega)
 {
     int64_t count = 0;
-    RIGIDSYM_ALIGNED double trig_0[RIGIDSYM_LANES];
-    RIGIDSYM_ALIGNED double trig_1[RIGIDSYM_LANES];
-    RIGIDSYM_ALIGNED double col_phi[RIGIDSYM_LANES];
-    for (int64_t j = 0; j < RIGIDSYM_LANES; ++j) {
+    RIGIDSYM_ALIGNED double trig_0[RIGIDSYM_LANES_F32];
+    RIGIDSYM_ALIGNED double trig_1[RIGIDSYM_LANES_F32];
+    RIGIDSYM_ALIGNED double col_phi[RIGIDSYM_LANES_F32];
+    for (int64_t j = 0; j < RIGIDSYM_LANES_F32; ++j) {
         col_phi[j] = in_phi[1 * j + 0];
     }
     /* a SIMD loop evaluates the sin/cos values into local arrays, then a per-sample loop
      * reads them */
     RIGIDSYM_SIMD
-    for (int64_t j = 0; j < RIGIDSYM_LANES; ++j) {
+    for (int64_t j = 0; j < RIGIDSYM_LANES_F32; ++j) {
         const double phi = col_phi[j];
         const double x0 = (0.5)*phi;
         trig_0[j] = sin(x0);
         trig_1[j] = cos(x0);
     }
-    for (int64_t j = 0; j < RIGIDSYM_LANES; ++j) {
+    for (int64_t j = 0; j < RIGIDSYM_LANES_F32; ++j) {
         count += (int64_t)(rigidsym_L_tilde_dot_with_jacobians_sample_trig_f32(
             in_e + 3 * j,
             in_phi + 1 * j,
@@ -182,9 +182,9 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_L_tilde_dot_with_jacobians_block_f32(
     float *RIGIDSYM_RESTRICT out_L_tilde_dot_D_phi,
     float *RIGIDSYM_RESTRICT out_L_tilde_dot_D_omega)
 {
-    int64_t mask[64 / RIGIDSYM_LANES], any = 0;
-    for (int64_t g = 0; g * RIGIDSYM_LANES < nl; ++g) {
-        const int64_t j = g * RIGIDSYM_LANES;
+    int64_t mask[64 / RIGIDSYM_LANES_F32], any = 0;
+    for (int64_t g = 0; g * RIGIDSYM_LANES_F32 < nl; ++g) {
+        const int64_t j = g * RIGIDSYM_LANES_F32;
         mask[g] = rigidsym_L_tilde_dot_with_jacobians_lanes_f32(
             in_e + 3 * j,
             in_phi + 1 * j,
@@ -204,7 +204,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_L_tilde_dot_with_jacobians_block_f32(
         return 0;
     int64_t count = 0;
     for (int64_t j = 0; j < m; ++j) {
-        int flagged = (int)((mask[j / RIGIDSYM_LANES] >> (j % RIGIDSYM_LANES)) & 1);
+        int flagged = (int)((mask[j / RIGIDSYM_LANES_F32] >> (j % RIGIDSYM_LANES_F32)) & 1);
         flagged |= rigidsym_any_nonfinite_f32(out_L_tilde_dot + 12 * j, 12);
         flagged |= rigidsym_any_nonfinite_f32(out_L_tilde_dot_D_e + 36 * j, 36);
         flagged |= rigidsym_any_nonfinite_f32(out_L_tilde_dot_D_phi + 12 * j, 12);
@@ -288,7 +288,7 @@ static int64_t rigidsym_L_tilde_dot_with_jacobians_run_f32(
     float *RIGIDSYM_RESTRICT out_L_tilde_dot_D_phi,
     float *RIGIDSYM_RESTRICT out_L_tilde_dot_D_omega)
 {
-    if (m % RIGIDSYM_LANES == 0)
+    if (m % RIGIDSYM_LANES_F32 == 0)
         return rigidsym_L_tilde_dot_with_jacobians_block_f32(m, m,
             in_e + 3 * i0,
             in_phi + 1 * i0,
@@ -298,7 +298,7 @@ static int64_t rigidsym_L_tilde_dot_with_jacobians_run_f32(
             out_L_tilde_dot_D_phi + 12 * i0,
             out_L_tilde_dot_D_omega + 36 * i0);
 
-    const int64_t nl = (m + RIGIDSYM_LANES - 1) / RIGIDSYM_LANES * RIGIDSYM_LANES;
+    const int64_t nl = (m + RIGIDSYM_LANES_F32 - 1) / RIGIDSYM_LANES_F32 * RIGIDSYM_LANES_F32;
     float pad_e[3 * 64];
     float pad_phi[1 * 64];
     float pad_omega[3 * 64];

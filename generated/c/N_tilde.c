@@ -10,7 +10,7 @@
  */
 #include "N_tilde.h"
 
-/* Exactly L = RIGIDSYM_LANES samples, always: every sample of every batch is computed by
+/* Exactly L = RIGIDSYM_LANES samples (RIGIDSYM_LANES_F32 in float32), always: every sample of every batch is computed by
  * this one function, never inlined, so that a sample's bits do not depend on its batch or
  * on where it sits in it (no scalar remainder of a vector loop, one vectorisation and FMA
  * contraction for all, and the sin/cos loop works on local aligned arrays only (no alias or
@@ -76,22 +76,22 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_N_tilde_lanes_f32(
     float *RIGIDSYM_RESTRICT out_N_tilde)
 {
     int64_t count = 0;
-    RIGIDSYM_ALIGNED double trig_0[RIGIDSYM_LANES];
-    RIGIDSYM_ALIGNED double trig_1[RIGIDSYM_LANES];
-    RIGIDSYM_ALIGNED double col_phi[RIGIDSYM_LANES];
-    for (int64_t j = 0; j < RIGIDSYM_LANES; ++j) {
+    RIGIDSYM_ALIGNED double trig_0[RIGIDSYM_LANES_F32];
+    RIGIDSYM_ALIGNED double trig_1[RIGIDSYM_LANES_F32];
+    RIGIDSYM_ALIGNED double col_phi[RIGIDSYM_LANES_F32];
+    for (int64_t j = 0; j < RIGIDSYM_LANES_F32; ++j) {
         col_phi[j] = in_phi[1 * j + 0];
     }
     /* a SIMD loop evaluates the sin/cos values into local arrays, then a per-sample loop
      * reads them */
     RIGIDSYM_SIMD
-    for (int64_t j = 0; j < RIGIDSYM_LANES; ++j) {
+    for (int64_t j = 0; j < RIGIDSYM_LANES_F32; ++j) {
         const double phi = col_phi[j];
         const double x0 = (0.5)*phi;
         trig_0[j] = sin(x0);
         trig_1[j] = cos(x0);
     }
-    for (int64_t j = 0; j < RIGIDSYM_LANES; ++j) {
+    for (int64_t j = 0; j < RIGIDSYM_LANES_F32; ++j) {
         count += (int64_t)(rigidsym_N_tilde_sample_trig_f32(
             in_e + 3 * j,
             in_phi + 1 * j,
@@ -142,9 +142,9 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_N_tilde_block_f32(
     const float *RIGIDSYM_RESTRICT in_phi,
     float *RIGIDSYM_RESTRICT out_N_tilde)
 {
-    int64_t mask[64 / RIGIDSYM_LANES], any = 0;
-    for (int64_t g = 0; g * RIGIDSYM_LANES < nl; ++g) {
-        const int64_t j = g * RIGIDSYM_LANES;
+    int64_t mask[64 / RIGIDSYM_LANES_F32], any = 0;
+    for (int64_t g = 0; g * RIGIDSYM_LANES_F32 < nl; ++g) {
+        const int64_t j = g * RIGIDSYM_LANES_F32;
         mask[g] = rigidsym_N_tilde_lanes_f32(
             in_e + 3 * j,
             in_phi + 1 * j,
@@ -157,7 +157,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_N_tilde_block_f32(
         return 0;
     int64_t count = 0;
     for (int64_t j = 0; j < m; ++j) {
-        int flagged = (int)((mask[j / RIGIDSYM_LANES] >> (j % RIGIDSYM_LANES)) & 1);
+        int flagged = (int)((mask[j / RIGIDSYM_LANES_F32] >> (j % RIGIDSYM_LANES_F32)) & 1);
         flagged |= rigidsym_any_nonfinite_f32(out_N_tilde + 12 * j, 12);
         if (flagged) {
             ++count;
@@ -207,13 +207,13 @@ static int64_t rigidsym_N_tilde_run_f32(
     const float *RIGIDSYM_RESTRICT in_phi,
     float *RIGIDSYM_RESTRICT out_N_tilde)
 {
-    if (m % RIGIDSYM_LANES == 0)
+    if (m % RIGIDSYM_LANES_F32 == 0)
         return rigidsym_N_tilde_block_f32(m, m,
             in_e + 3 * i0,
             in_phi + 1 * i0,
             out_N_tilde + 12 * i0);
 
-    const int64_t nl = (m + RIGIDSYM_LANES - 1) / RIGIDSYM_LANES * RIGIDSYM_LANES;
+    const int64_t nl = (m + RIGIDSYM_LANES_F32 - 1) / RIGIDSYM_LANES_F32 * RIGIDSYM_LANES_F32;
     float pad_e[3 * 64];
     float pad_phi[1 * 64];
     float pad_N_tilde[12 * 64];

@@ -10,7 +10,7 @@
  */
 #include "euler_rate_matrix_yzx_fixed.h"
 
-/* Exactly L = RIGIDSYM_LANES samples, always: every sample of every batch is computed by
+/* Exactly L = RIGIDSYM_LANES samples (RIGIDSYM_LANES_F32 in float32), always: every sample of every batch is computed by
  * this one function, never inlined, so that a sample's bits do not depend on its batch or
  * on where it sits in it (no scalar remainder of a vector loop, one vectorisation and FMA
  * contraction for all, and the sin/cos loop works on local aligned arrays only (no alias or
@@ -81,20 +81,20 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_euler_rate_matrix_yzx_fixed_lanes_f32(
     float *RIGIDSYM_RESTRICT out_W)
 {
     int64_t count = 0;
-    RIGIDSYM_ALIGNED double trig_0[RIGIDSYM_LANES];
-    RIGIDSYM_ALIGNED double trig_1[RIGIDSYM_LANES];
-    RIGIDSYM_ALIGNED double trig_2[RIGIDSYM_LANES];
-    RIGIDSYM_ALIGNED double trig_3[RIGIDSYM_LANES];
-    RIGIDSYM_ALIGNED double col_angles_0[RIGIDSYM_LANES];
-    RIGIDSYM_ALIGNED double col_angles_1[RIGIDSYM_LANES];
-    for (int64_t j = 0; j < RIGIDSYM_LANES; ++j) {
+    RIGIDSYM_ALIGNED double trig_0[RIGIDSYM_LANES_F32];
+    RIGIDSYM_ALIGNED double trig_1[RIGIDSYM_LANES_F32];
+    RIGIDSYM_ALIGNED double trig_2[RIGIDSYM_LANES_F32];
+    RIGIDSYM_ALIGNED double trig_3[RIGIDSYM_LANES_F32];
+    RIGIDSYM_ALIGNED double col_angles_0[RIGIDSYM_LANES_F32];
+    RIGIDSYM_ALIGNED double col_angles_1[RIGIDSYM_LANES_F32];
+    for (int64_t j = 0; j < RIGIDSYM_LANES_F32; ++j) {
         col_angles_0[j] = in_angles[3 * j + 0];
         col_angles_1[j] = in_angles[3 * j + 1];
     }
     /* a SIMD loop evaluates the sin/cos values into local arrays, then a per-sample loop
      * reads them */
     RIGIDSYM_SIMD
-    for (int64_t j = 0; j < RIGIDSYM_LANES; ++j) {
+    for (int64_t j = 0; j < RIGIDSYM_LANES_F32; ++j) {
         const double angles_0 = col_angles_0[j];
         const double angles_1 = col_angles_1[j];
         trig_0[j] = sin(angles_0);
@@ -102,7 +102,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_euler_rate_matrix_yzx_fixed_lanes_f32(
         trig_2[j] = cos(angles_1);
         trig_3[j] = sin(angles_1);
     }
-    for (int64_t j = 0; j < RIGIDSYM_LANES; ++j) {
+    for (int64_t j = 0; j < RIGIDSYM_LANES_F32; ++j) {
         count += (int64_t)(rigidsym_euler_rate_matrix_yzx_fixed_sample_trig_f32(
             in_angles + 3 * j,
             trig_0[j],
@@ -151,9 +151,9 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_euler_rate_matrix_yzx_fixed_block_f32(
     const float *RIGIDSYM_RESTRICT in_angles,
     float *RIGIDSYM_RESTRICT out_W)
 {
-    int64_t mask[64 / RIGIDSYM_LANES], any = 0;
-    for (int64_t g = 0; g * RIGIDSYM_LANES < nl; ++g) {
-        const int64_t j = g * RIGIDSYM_LANES;
+    int64_t mask[64 / RIGIDSYM_LANES_F32], any = 0;
+    for (int64_t g = 0; g * RIGIDSYM_LANES_F32 < nl; ++g) {
+        const int64_t j = g * RIGIDSYM_LANES_F32;
         mask[g] = rigidsym_euler_rate_matrix_yzx_fixed_lanes_f32(
             in_angles + 3 * j,
             out_W + 9 * j);
@@ -165,7 +165,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_euler_rate_matrix_yzx_fixed_block_f32(
         return 0;
     int64_t count = 0;
     for (int64_t j = 0; j < m; ++j) {
-        int flagged = (int)((mask[j / RIGIDSYM_LANES] >> (j % RIGIDSYM_LANES)) & 1);
+        int flagged = (int)((mask[j / RIGIDSYM_LANES_F32] >> (j % RIGIDSYM_LANES_F32)) & 1);
         flagged |= rigidsym_any_nonfinite_f32(out_W + 9 * j, 9);
         if (flagged) {
             ++count;
@@ -208,12 +208,12 @@ static int64_t rigidsym_euler_rate_matrix_yzx_fixed_run_f32(
     const float *RIGIDSYM_RESTRICT in_angles,
     float *RIGIDSYM_RESTRICT out_W)
 {
-    if (m % RIGIDSYM_LANES == 0)
+    if (m % RIGIDSYM_LANES_F32 == 0)
         return rigidsym_euler_rate_matrix_yzx_fixed_block_f32(m, m,
             in_angles + 3 * i0,
             out_W + 9 * i0);
 
-    const int64_t nl = (m + RIGIDSYM_LANES - 1) / RIGIDSYM_LANES * RIGIDSYM_LANES;
+    const int64_t nl = (m + RIGIDSYM_LANES_F32 - 1) / RIGIDSYM_LANES_F32 * RIGIDSYM_LANES_F32;
     float pad_angles[3 * 64];
     float pad_W[9 * 64];
     for (int64_t j = 0; j < nl; ++j) {

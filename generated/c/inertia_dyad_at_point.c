@@ -10,7 +10,7 @@
  */
 #include "inertia_dyad_at_point.h"
 
-/* Exactly L = RIGIDSYM_LANES samples, always: every sample of every batch is computed by
+/* Exactly L = RIGIDSYM_LANES samples (RIGIDSYM_LANES_F32 in float32), always: every sample of every batch is computed by
  * this one function, never inlined, so that a sample's bits do not depend on its batch or
  * on where it sits in it (no scalar remainder of a vector loop, one vectorisation and FMA
  * contraction for all). Returns the mask of the samples it flags (singular):
@@ -71,7 +71,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_inertia_dyad_at_point_lanes_f32(
     /* No division, root or branch: nothing to count per sample. A plain loop; the
      * compiler's cost model decides on vectorisation (forcing it turns the strided
      * row-major loads into gathers, measured slower). */
-    for (int64_t j = 0; j < RIGIDSYM_LANES; ++j) {
+    for (int64_t j = 0; j < RIGIDSYM_LANES_F32; ++j) {
         (void)rigidsym_inertia_dyad_at_point_sample_f32(
             in_I_C + 9 * j,
             in_m + 1 * j,
@@ -129,9 +129,9 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_inertia_dyad_at_point_block_f32(
     const float *RIGIDSYM_RESTRICT in_a,
     float *RIGIDSYM_RESTRICT out_M_A)
 {
-    int64_t mask[RIGIDSYM_CHECK_BLOCK / RIGIDSYM_LANES], any = 0;
-    for (int64_t g = 0; g * RIGIDSYM_LANES < nl; ++g) {
-        const int64_t j = g * RIGIDSYM_LANES;
+    int64_t mask[RIGIDSYM_CHECK_BLOCK / RIGIDSYM_LANES_F32], any = 0;
+    for (int64_t g = 0; g * RIGIDSYM_LANES_F32 < nl; ++g) {
+        const int64_t j = g * RIGIDSYM_LANES_F32;
         mask[g] = rigidsym_inertia_dyad_at_point_lanes_f32(
             in_I_C + 9 * j,
             in_m + 1 * j,
@@ -146,7 +146,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_inertia_dyad_at_point_block_f32(
         return 0;
     int64_t count = 0;
     for (int64_t j = 0; j < m; ++j) {
-        int flagged = (int)((mask[j / RIGIDSYM_LANES] >> (j % RIGIDSYM_LANES)) & 1);
+        int flagged = (int)((mask[j / RIGIDSYM_LANES_F32] >> (j % RIGIDSYM_LANES_F32)) & 1);
         flagged |= rigidsym_any_nonfinite_f32(out_M_A + 36 * j, 36);
         if (flagged) {
             ++count;
@@ -210,7 +210,7 @@ static int64_t rigidsym_inertia_dyad_at_point_run_f32(
     const float *RIGIDSYM_RESTRICT in_a,
     float *RIGIDSYM_RESTRICT out_M_A)
 {
-    if (m % RIGIDSYM_LANES == 0)
+    if (m % RIGIDSYM_LANES_F32 == 0)
         return rigidsym_inertia_dyad_at_point_block_f32(m, m,
             in_I_C + 9 * i0,
             in_m + 1 * i0,
@@ -218,7 +218,7 @@ static int64_t rigidsym_inertia_dyad_at_point_run_f32(
             in_a + 3 * i0,
             out_M_A + 36 * i0);
 
-    const int64_t nl = (m + RIGIDSYM_LANES - 1) / RIGIDSYM_LANES * RIGIDSYM_LANES;
+    const int64_t nl = (m + RIGIDSYM_LANES_F32 - 1) / RIGIDSYM_LANES_F32 * RIGIDSYM_LANES_F32;
     float pad_I_C[9 * RIGIDSYM_CHECK_BLOCK];
     float pad_m[1 * RIGIDSYM_CHECK_BLOCK];
     float pad_c[3 * RIGIDSYM_CHECK_BLOCK];

@@ -10,7 +10,7 @@
  */
 #include "moving_frame_acceleration.h"
 
-/* Exactly L = RIGIDSYM_LANES samples, always: every sample of every batch is computed by
+/* Exactly L = RIGIDSYM_LANES samples (RIGIDSYM_LANES_F32 in float32), always: every sample of every batch is computed by
  * this one function, never inlined, so that a sample's bits do not depend on its batch or
  * on where it sits in it (no scalar remainder of a vector loop, one vectorisation and FMA
  * contraction for all). Returns the mask of the samples it flags (singular):
@@ -80,7 +80,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_moving_frame_acceleration_lanes_f32(
     /* No division, root or branch: nothing to count per sample. A plain loop; the
      * compiler's cost model decides on vectorisation (forcing it turns the strided
      * row-major loads into gathers, measured slower). */
-    for (int64_t j = 0; j < RIGIDSYM_LANES; ++j) {
+    for (int64_t j = 0; j < RIGIDSYM_LANES_F32; ++j) {
         (void)rigidsym_moving_frame_acceleration_sample_f32(
             in_o_ddot + 3 * j,
             in_Q + 9 * j,
@@ -150,9 +150,9 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_moving_frame_acceleration_block_f32(
     const float *RIGIDSYM_RESTRICT in_rho_ddot_M,
     float *RIGIDSYM_RESTRICT out_p_ddot)
 {
-    int64_t mask[RIGIDSYM_CHECK_BLOCK / RIGIDSYM_LANES], any = 0;
-    for (int64_t g = 0; g * RIGIDSYM_LANES < nl; ++g) {
-        const int64_t j = g * RIGIDSYM_LANES;
+    int64_t mask[RIGIDSYM_CHECK_BLOCK / RIGIDSYM_LANES_F32], any = 0;
+    for (int64_t g = 0; g * RIGIDSYM_LANES_F32 < nl; ++g) {
+        const int64_t j = g * RIGIDSYM_LANES_F32;
         mask[g] = rigidsym_moving_frame_acceleration_lanes_f32(
             in_o_ddot + 3 * j,
             in_Q + 9 * j,
@@ -170,7 +170,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_moving_frame_acceleration_block_f32(
         return 0;
     int64_t count = 0;
     for (int64_t j = 0; j < m; ++j) {
-        int flagged = (int)((mask[j / RIGIDSYM_LANES] >> (j % RIGIDSYM_LANES)) & 1);
+        int flagged = (int)((mask[j / RIGIDSYM_LANES_F32] >> (j % RIGIDSYM_LANES_F32)) & 1);
         flagged |= rigidsym_any_nonfinite_f32(out_p_ddot + 3 * j, 3);
         if (flagged) {
             ++count;
@@ -255,7 +255,7 @@ static int64_t rigidsym_moving_frame_acceleration_run_f32(
     const float *RIGIDSYM_RESTRICT in_rho_ddot_M,
     float *RIGIDSYM_RESTRICT out_p_ddot)
 {
-    if (m % RIGIDSYM_LANES == 0)
+    if (m % RIGIDSYM_LANES_F32 == 0)
         return rigidsym_moving_frame_acceleration_block_f32(m, m,
             in_o_ddot + 3 * i0,
             in_Q + 9 * i0,
@@ -266,7 +266,7 @@ static int64_t rigidsym_moving_frame_acceleration_run_f32(
             in_rho_ddot_M + 3 * i0,
             out_p_ddot + 3 * i0);
 
-    const int64_t nl = (m + RIGIDSYM_LANES - 1) / RIGIDSYM_LANES * RIGIDSYM_LANES;
+    const int64_t nl = (m + RIGIDSYM_LANES_F32 - 1) / RIGIDSYM_LANES_F32 * RIGIDSYM_LANES_F32;
     float pad_o_ddot[3 * RIGIDSYM_CHECK_BLOCK];
     float pad_Q[9 * RIGIDSYM_CHECK_BLOCK];
     float pad_omega[3 * RIGIDSYM_CHECK_BLOCK];

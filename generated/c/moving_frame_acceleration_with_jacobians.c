@@ -10,7 +10,7 @@
  */
 #include "moving_frame_acceleration_with_jacobians.h"
 
-/* Exactly L = RIGIDSYM_LANES samples, always: every sample of every batch is computed by
+/* Exactly L = RIGIDSYM_LANES samples (RIGIDSYM_LANES_F32 in float32), always: every sample of every batch is computed by
  * this one function, never inlined, so that a sample's bits do not depend on its batch or
  * on where it sits in it (no scalar remainder of a vector loop, one vectorisation and FMA
  * contraction for all). Returns the mask of the samples it flags (singular):
@@ -101,7 +101,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_moving_frame_acceleration_with_jacobia
     /* No division, root or branch: nothing to count per sample. A plain loop; the
      * compiler's cost model decides on vectorisation (forcing it turns the strided
      * row-major loads into gathers, measured slower). */
-    for (int64_t j = 0; j < RIGIDSYM_LANES; ++j) {
+    for (int64_t j = 0; j < RIGIDSYM_LANES_F32; ++j) {
         (void)rigidsym_moving_frame_acceleration_with_jacobians_sample_f32(
             in_o_ddot + 3 * j,
             in_Q + 9 * j,
@@ -227,9 +227,9 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_moving_frame_acceleration_with_jacobia
     float *RIGIDSYM_RESTRICT out_p_ddot_D_rho_dot_M,
     float *RIGIDSYM_RESTRICT out_p_ddot_D_rho_ddot_M)
 {
-    int64_t mask[RIGIDSYM_CHECK_BLOCK / RIGIDSYM_LANES], any = 0;
-    for (int64_t g = 0; g * RIGIDSYM_LANES < nl; ++g) {
-        const int64_t j = g * RIGIDSYM_LANES;
+    int64_t mask[RIGIDSYM_CHECK_BLOCK / RIGIDSYM_LANES_F32], any = 0;
+    for (int64_t g = 0; g * RIGIDSYM_LANES_F32 < nl; ++g) {
+        const int64_t j = g * RIGIDSYM_LANES_F32;
         mask[g] = rigidsym_moving_frame_acceleration_with_jacobians_lanes_f32(
             in_o_ddot + 3 * j,
             in_Q + 9 * j,
@@ -261,7 +261,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_moving_frame_acceleration_with_jacobia
         return 0;
     int64_t count = 0;
     for (int64_t j = 0; j < m; ++j) {
-        int flagged = (int)((mask[j / RIGIDSYM_LANES] >> (j % RIGIDSYM_LANES)) & 1);
+        int flagged = (int)((mask[j / RIGIDSYM_LANES_F32] >> (j % RIGIDSYM_LANES_F32)) & 1);
         flagged |= rigidsym_any_nonfinite_f32(out_p_ddot + 3 * j, 3);
         flagged |= rigidsym_any_nonfinite_f32(out_p_ddot_D_o_ddot + 9 * j, 9);
         flagged |= rigidsym_any_nonfinite_f32(out_p_ddot_D_Q + 27 * j, 27);
@@ -409,7 +409,7 @@ static int64_t rigidsym_moving_frame_acceleration_with_jacobians_run_f32(
     float *RIGIDSYM_RESTRICT out_p_ddot_D_rho_dot_M,
     float *RIGIDSYM_RESTRICT out_p_ddot_D_rho_ddot_M)
 {
-    if (m % RIGIDSYM_LANES == 0)
+    if (m % RIGIDSYM_LANES_F32 == 0)
         return rigidsym_moving_frame_acceleration_with_jacobians_block_f32(m, m,
             in_o_ddot + 3 * i0,
             in_Q + 9 * i0,
@@ -427,7 +427,7 @@ static int64_t rigidsym_moving_frame_acceleration_with_jacobians_run_f32(
             out_p_ddot_D_rho_dot_M + 9 * i0,
             out_p_ddot_D_rho_ddot_M + 9 * i0);
 
-    const int64_t nl = (m + RIGIDSYM_LANES - 1) / RIGIDSYM_LANES * RIGIDSYM_LANES;
+    const int64_t nl = (m + RIGIDSYM_LANES_F32 - 1) / RIGIDSYM_LANES_F32 * RIGIDSYM_LANES_F32;
     float pad_o_ddot[3 * RIGIDSYM_CHECK_BLOCK];
     float pad_Q[9 * RIGIDSYM_CHECK_BLOCK];
     float pad_omega[3 * RIGIDSYM_CHECK_BLOCK];

@@ -10,7 +10,7 @@
  */
 #include "plucker_from_points.h"
 
-/* Exactly L = RIGIDSYM_LANES samples, always: every sample of every batch is computed by
+/* Exactly L = RIGIDSYM_LANES samples (RIGIDSYM_LANES_F32 in float32), always: every sample of every batch is computed by
  * this one function, never inlined, so that a sample's bits do not depend on its batch or
  * on where it sits in it (no scalar remainder of a vector loop, one vectorisation and FMA
  * contraction for all). Returns the mask of the samples it flags (singular):
@@ -63,7 +63,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_plucker_from_points_lanes_f32(
     int64_t count = 0;
     /* branch-free so that the compiler can vectorise it */
     RIGIDSYM_SIMD_COUNT
-    for (int64_t j = 0; j < RIGIDSYM_LANES; ++j) {
+    for (int64_t j = 0; j < RIGIDSYM_LANES_F32; ++j) {
         count += (int64_t)(rigidsym_plucker_from_points_sample_f32(
             in_p1 + 3 * j,
             in_p2 + 3 * j,
@@ -113,9 +113,9 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_plucker_from_points_block_f32(
     const float *RIGIDSYM_RESTRICT in_p2,
     float *RIGIDSYM_RESTRICT out_kappa)
 {
-    int64_t mask[RIGIDSYM_CHECK_BLOCK / RIGIDSYM_LANES], any = 0;
-    for (int64_t g = 0; g * RIGIDSYM_LANES < nl; ++g) {
-        const int64_t j = g * RIGIDSYM_LANES;
+    int64_t mask[RIGIDSYM_CHECK_BLOCK / RIGIDSYM_LANES_F32], any = 0;
+    for (int64_t g = 0; g * RIGIDSYM_LANES_F32 < nl; ++g) {
+        const int64_t j = g * RIGIDSYM_LANES_F32;
         mask[g] = rigidsym_plucker_from_points_lanes_f32(
             in_p1 + 3 * j,
             in_p2 + 3 * j,
@@ -128,7 +128,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_plucker_from_points_block_f32(
         return 0;
     int64_t count = 0;
     for (int64_t j = 0; j < m; ++j) {
-        int flagged = (int)((mask[j / RIGIDSYM_LANES] >> (j % RIGIDSYM_LANES)) & 1);
+        int flagged = (int)((mask[j / RIGIDSYM_LANES_F32] >> (j % RIGIDSYM_LANES_F32)) & 1);
         flagged |= rigidsym_any_nonfinite_f32(out_kappa + 6 * j, 6);
         if (flagged) {
             ++count;
@@ -178,13 +178,13 @@ static int64_t rigidsym_plucker_from_points_run_f32(
     const float *RIGIDSYM_RESTRICT in_p2,
     float *RIGIDSYM_RESTRICT out_kappa)
 {
-    if (m % RIGIDSYM_LANES == 0)
+    if (m % RIGIDSYM_LANES_F32 == 0)
         return rigidsym_plucker_from_points_block_f32(m, m,
             in_p1 + 3 * i0,
             in_p2 + 3 * i0,
             out_kappa + 6 * i0);
 
-    const int64_t nl = (m + RIGIDSYM_LANES - 1) / RIGIDSYM_LANES * RIGIDSYM_LANES;
+    const int64_t nl = (m + RIGIDSYM_LANES_F32 - 1) / RIGIDSYM_LANES_F32 * RIGIDSYM_LANES_F32;
     float pad_p1[3 * RIGIDSYM_CHECK_BLOCK];
     float pad_p2[3 * RIGIDSYM_CHECK_BLOCK];
     float pad_kappa[6 * RIGIDSYM_CHECK_BLOCK];

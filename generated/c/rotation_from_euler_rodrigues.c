@@ -10,7 +10,7 @@
  */
 #include "rotation_from_euler_rodrigues.h"
 
-/* Exactly L = RIGIDSYM_LANES samples, always: every sample of every batch is computed by
+/* Exactly L = RIGIDSYM_LANES samples (RIGIDSYM_LANES_F32 in float32), always: every sample of every batch is computed by
  * this one function, never inlined, so that a sample's bits do not depend on its batch or
  * on where it sits in it (no scalar remainder of a vector loop, one vectorisation and FMA
  * contraction for all). Returns the mask of the samples it flags (singular):
@@ -62,7 +62,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_rotation_from_euler_rodrigues_lanes_f3
     /* No division, root or branch: nothing to count per sample. A plain loop; the
      * compiler's cost model decides on vectorisation (forcing it turns the strided
      * row-major loads into gathers, measured slower). */
-    for (int64_t j = 0; j < RIGIDSYM_LANES; ++j) {
+    for (int64_t j = 0; j < RIGIDSYM_LANES_F32; ++j) {
         (void)rigidsym_rotation_from_euler_rodrigues_sample_f32(
             in_eta + 4 * j,
             out_Q + 9 * j);
@@ -108,9 +108,9 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_rotation_from_euler_rodrigues_block_f3
     const float *RIGIDSYM_RESTRICT in_eta,
     float *RIGIDSYM_RESTRICT out_Q)
 {
-    int64_t mask[RIGIDSYM_CHECK_BLOCK / RIGIDSYM_LANES], any = 0;
-    for (int64_t g = 0; g * RIGIDSYM_LANES < nl; ++g) {
-        const int64_t j = g * RIGIDSYM_LANES;
+    int64_t mask[RIGIDSYM_CHECK_BLOCK / RIGIDSYM_LANES_F32], any = 0;
+    for (int64_t g = 0; g * RIGIDSYM_LANES_F32 < nl; ++g) {
+        const int64_t j = g * RIGIDSYM_LANES_F32;
         mask[g] = rigidsym_rotation_from_euler_rodrigues_lanes_f32(
             in_eta + 4 * j,
             out_Q + 9 * j);
@@ -122,7 +122,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_rotation_from_euler_rodrigues_block_f3
         return 0;
     int64_t count = 0;
     for (int64_t j = 0; j < m; ++j) {
-        int flagged = (int)((mask[j / RIGIDSYM_LANES] >> (j % RIGIDSYM_LANES)) & 1);
+        int flagged = (int)((mask[j / RIGIDSYM_LANES_F32] >> (j % RIGIDSYM_LANES_F32)) & 1);
         flagged |= rigidsym_any_nonfinite_f32(out_Q + 9 * j, 9);
         if (flagged) {
             ++count;
@@ -165,12 +165,12 @@ static int64_t rigidsym_rotation_from_euler_rodrigues_run_f32(
     const float *RIGIDSYM_RESTRICT in_eta,
     float *RIGIDSYM_RESTRICT out_Q)
 {
-    if (m % RIGIDSYM_LANES == 0)
+    if (m % RIGIDSYM_LANES_F32 == 0)
         return rigidsym_rotation_from_euler_rodrigues_block_f32(m, m,
             in_eta + 4 * i0,
             out_Q + 9 * i0);
 
-    const int64_t nl = (m + RIGIDSYM_LANES - 1) / RIGIDSYM_LANES * RIGIDSYM_LANES;
+    const int64_t nl = (m + RIGIDSYM_LANES_F32 - 1) / RIGIDSYM_LANES_F32 * RIGIDSYM_LANES_F32;
     float pad_eta[4 * RIGIDSYM_CHECK_BLOCK];
     float pad_Q[9 * RIGIDSYM_CHECK_BLOCK];
     for (int64_t j = 0; j < nl; ++j) {

@@ -11,7 +11,7 @@
  */
 #include "screw_of_displacement.h"
 
-/* Exactly L = RIGIDSYM_LANES samples, always: every sample of every batch is computed by
+/* Exactly L = RIGIDSYM_LANES samples (RIGIDSYM_LANES_F32 in float32), always: every sample of every batch is computed by
  * this one function, never inlined, so that a sample's bits do not depend on its batch or
  * on where it sits in it (no scalar remainder of a vector loop, one vectorisation and FMA
  * contraction for all). Returns the mask of the samples it flags (singular):
@@ -79,7 +79,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_screw_of_displacement_lanes_f32(
     int64_t count = 0;
     /* branch-free so that the compiler can vectorise it */
     RIGIDSYM_SIMD_COUNT
-    for (int64_t j = 0; j < RIGIDSYM_LANES; ++j) {
+    for (int64_t j = 0; j < RIGIDSYM_LANES_F32; ++j) {
         count += (int64_t)(rigidsym_screw_of_displacement_sample_f32(
             in_Q + 9 * j,
             in_a + 3 * j,
@@ -165,9 +165,9 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_screw_of_displacement_block_f32(
     float *RIGIDSYM_RESTRICT out_pitch,
     float *RIGIDSYM_RESTRICT out_plucker)
 {
-    int64_t mask[RIGIDSYM_CHECK_BLOCK / RIGIDSYM_LANES], any = 0;
-    for (int64_t g = 0; g * RIGIDSYM_LANES < nl; ++g) {
-        const int64_t j = g * RIGIDSYM_LANES;
+    int64_t mask[RIGIDSYM_CHECK_BLOCK / RIGIDSYM_LANES_F32], any = 0;
+    for (int64_t g = 0; g * RIGIDSYM_LANES_F32 < nl; ++g) {
+        const int64_t j = g * RIGIDSYM_LANES_F32;
         mask[g] = rigidsym_screw_of_displacement_lanes_f32(
             in_Q + 9 * j,
             in_a + 3 * j,
@@ -189,7 +189,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_screw_of_displacement_block_f32(
         return 0;
     int64_t count = 0;
     for (int64_t j = 0; j < m; ++j) {
-        int flagged = (int)((mask[j / RIGIDSYM_LANES] >> (j % RIGIDSYM_LANES)) & 1);
+        int flagged = (int)((mask[j / RIGIDSYM_LANES_F32] >> (j % RIGIDSYM_LANES_F32)) & 1);
         flagged |= rigidsym_any_nonfinite_f32(out_e + 3 * j, 3);
         flagged |= rigidsym_any_nonfinite_f32(out_phi + 1 * j, 1);
         flagged |= rigidsym_any_nonfinite_f32(out_p0 + 3 * j, 3);
@@ -282,7 +282,7 @@ static int64_t rigidsym_screw_of_displacement_run_f32(
     float *RIGIDSYM_RESTRICT out_pitch,
     float *RIGIDSYM_RESTRICT out_plucker)
 {
-    if (m % RIGIDSYM_LANES == 0)
+    if (m % RIGIDSYM_LANES_F32 == 0)
         return rigidsym_screw_of_displacement_block_f32(m, m,
             in_Q + 9 * i0,
             in_a + 3 * i0,
@@ -293,7 +293,7 @@ static int64_t rigidsym_screw_of_displacement_run_f32(
             out_pitch + 1 * i0,
             out_plucker + 6 * i0);
 
-    const int64_t nl = (m + RIGIDSYM_LANES - 1) / RIGIDSYM_LANES * RIGIDSYM_LANES;
+    const int64_t nl = (m + RIGIDSYM_LANES_F32 - 1) / RIGIDSYM_LANES_F32 * RIGIDSYM_LANES_F32;
     float pad_Q[9 * RIGIDSYM_CHECK_BLOCK];
     float pad_a[3 * RIGIDSYM_CHECK_BLOCK];
     float pad_a_prime[3 * RIGIDSYM_CHECK_BLOCK];
