@@ -44,22 +44,22 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_L_matrix_dot_lanes(
     double *RIGIDSYM_RESTRICT out_L_matrix_dot)
 {
     int64_t count = 0;
-    RIGIDSYM_ALIGNED double trig_0[RIGIDSYM_LANES];
-    RIGIDSYM_ALIGNED double trig_1[RIGIDSYM_LANES];
-    RIGIDSYM_ALIGNED double col_phi[RIGIDSYM_LANES];
-    for (int64_t j = 0; j < RIGIDSYM_LANES; ++j) {
+    RIGIDSYM_ALIGNED double trig_0[RIGIDSYM_LANES_TRIG];
+    RIGIDSYM_ALIGNED double trig_1[RIGIDSYM_LANES_TRIG];
+    RIGIDSYM_ALIGNED double col_phi[RIGIDSYM_LANES_TRIG];
+    for (int64_t j = 0; j < RIGIDSYM_LANES_TRIG; ++j) {
         col_phi[j] = in_phi[1 * j + 0];
     }
     /* a SIMD loop evaluates the sin/cos values into local arrays, then a per-sample loop
      * reads them */
     RIGIDSYM_SIMD
-    for (int64_t j = 0; j < RIGIDSYM_LANES; ++j) {
+    for (int64_t j = 0; j < RIGIDSYM_LANES_TRIG; ++j) {
         const double phi = col_phi[j];
         const double x0 = (0.5)*phi;
         trig_0[j] = sin(x0);
         trig_1[j] = cos(x0);
     }
-    for (int64_t j = 0; j < RIGIDSYM_LANES; ++j) {
+    for (int64_t j = 0; j < RIGIDSYM_LANES_TRIG; ++j) {
         count += (int64_t)(rigidsym_L_matrix_dot_sample_trig(
             in_e + 3 * j,
             in_phi + 1 * j,
@@ -114,9 +114,9 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_L_matrix_dot_block(
     const double *RIGIDSYM_RESTRICT in_omega,
     double *RIGIDSYM_RESTRICT out_L_matrix_dot)
 {
-    int64_t mask[64 / RIGIDSYM_LANES], any = 0;
-    for (int64_t g = 0; g * RIGIDSYM_LANES < nl; ++g) {
-        const int64_t j = g * RIGIDSYM_LANES;
+    int64_t mask[64 / RIGIDSYM_LANES_TRIG], any = 0;
+    for (int64_t g = 0; g * RIGIDSYM_LANES_TRIG < nl; ++g) {
+        const int64_t j = g * RIGIDSYM_LANES_TRIG;
         mask[g] = rigidsym_L_matrix_dot_lanes(
             in_e + 3 * j,
             in_phi + 1 * j,
@@ -130,7 +130,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_L_matrix_dot_block(
         return 0;
     int64_t count = 0;
     for (int64_t j = 0; j < m; ++j) {
-        int flagged = (int)((mask[j / RIGIDSYM_LANES] >> (j % RIGIDSYM_LANES)) & 1);
+        int flagged = (int)((mask[j / RIGIDSYM_LANES_TRIG] >> (j % RIGIDSYM_LANES_TRIG)) & 1);
         flagged |= rigidsym_any_nonfinite(out_L_matrix_dot + 12 * j, 12);
         if (flagged) {
             ++count;
@@ -184,14 +184,14 @@ static int64_t rigidsym_L_matrix_dot_run(
     const double *RIGIDSYM_RESTRICT in_omega,
     double *RIGIDSYM_RESTRICT out_L_matrix_dot)
 {
-    if (m % RIGIDSYM_LANES == 0)
+    if (m % RIGIDSYM_LANES_TRIG == 0)
         return rigidsym_L_matrix_dot_block(m, m,
             in_e + 3 * i0,
             in_phi + 1 * i0,
             in_omega + 3 * i0,
             out_L_matrix_dot + 12 * i0);
 
-    const int64_t nl = (m + RIGIDSYM_LANES - 1) / RIGIDSYM_LANES * RIGIDSYM_LANES;
+    const int64_t nl = (m + RIGIDSYM_LANES_TRIG - 1) / RIGIDSYM_LANES_TRIG * RIGIDSYM_LANES_TRIG;
     double pad_e[3 * 64];
     double pad_phi[1 * 64];
     double pad_omega[3 * 64];

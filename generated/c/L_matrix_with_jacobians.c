@@ -45,22 +45,22 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_L_matrix_with_jacobians_lanes(
     double *RIGIDSYM_RESTRICT out_L_matrix_D_phi)
 {
     int64_t count = 0;
-    RIGIDSYM_ALIGNED double trig_0[RIGIDSYM_LANES];
-    RIGIDSYM_ALIGNED double trig_1[RIGIDSYM_LANES];
-    RIGIDSYM_ALIGNED double col_phi[RIGIDSYM_LANES];
-    for (int64_t j = 0; j < RIGIDSYM_LANES; ++j) {
+    RIGIDSYM_ALIGNED double trig_0[RIGIDSYM_LANES_TRIG];
+    RIGIDSYM_ALIGNED double trig_1[RIGIDSYM_LANES_TRIG];
+    RIGIDSYM_ALIGNED double col_phi[RIGIDSYM_LANES_TRIG];
+    for (int64_t j = 0; j < RIGIDSYM_LANES_TRIG; ++j) {
         col_phi[j] = in_phi[1 * j + 0];
     }
     /* a SIMD loop evaluates the sin/cos values into local arrays, then a per-sample loop
      * reads them */
     RIGIDSYM_SIMD
-    for (int64_t j = 0; j < RIGIDSYM_LANES; ++j) {
+    for (int64_t j = 0; j < RIGIDSYM_LANES_TRIG; ++j) {
         const double phi = col_phi[j];
         const double x2 = (0.5)*phi;
         trig_0[j] = sin(x2);
         trig_1[j] = cos(x2);
     }
-    for (int64_t j = 0; j < RIGIDSYM_LANES; ++j) {
+    for (int64_t j = 0; j < RIGIDSYM_LANES_TRIG; ++j) {
         count += (int64_t)(rigidsym_L_matrix_with_jacobians_sample_trig(
             in_e + 3 * j,
             in_phi + 1 * j,
@@ -119,9 +119,9 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_L_matrix_with_jacobians_block(
     double *RIGIDSYM_RESTRICT out_L_matrix_D_e,
     double *RIGIDSYM_RESTRICT out_L_matrix_D_phi)
 {
-    int64_t mask[64 / RIGIDSYM_LANES], any = 0;
-    for (int64_t g = 0; g * RIGIDSYM_LANES < nl; ++g) {
-        const int64_t j = g * RIGIDSYM_LANES;
+    int64_t mask[64 / RIGIDSYM_LANES_TRIG], any = 0;
+    for (int64_t g = 0; g * RIGIDSYM_LANES_TRIG < nl; ++g) {
+        const int64_t j = g * RIGIDSYM_LANES_TRIG;
         mask[g] = rigidsym_L_matrix_with_jacobians_lanes(
             in_e + 3 * j,
             in_phi + 1 * j,
@@ -138,7 +138,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_L_matrix_with_jacobians_block(
         return 0;
     int64_t count = 0;
     for (int64_t j = 0; j < m; ++j) {
-        int flagged = (int)((mask[j / RIGIDSYM_LANES] >> (j % RIGIDSYM_LANES)) & 1);
+        int flagged = (int)((mask[j / RIGIDSYM_LANES_TRIG] >> (j % RIGIDSYM_LANES_TRIG)) & 1);
         flagged |= rigidsym_any_nonfinite(out_L_matrix + 12 * j, 12);
         flagged |= rigidsym_any_nonfinite(out_L_matrix_D_e + 36 * j, 36);
         flagged |= rigidsym_any_nonfinite(out_L_matrix_D_phi + 12 * j, 12);
@@ -209,7 +209,7 @@ static int64_t rigidsym_L_matrix_with_jacobians_run(
     double *RIGIDSYM_RESTRICT out_L_matrix_D_e,
     double *RIGIDSYM_RESTRICT out_L_matrix_D_phi)
 {
-    if (m % RIGIDSYM_LANES == 0)
+    if (m % RIGIDSYM_LANES_TRIG == 0)
         return rigidsym_L_matrix_with_jacobians_block(m, m,
             in_e + 3 * i0,
             in_phi + 1 * i0,
@@ -217,7 +217,7 @@ static int64_t rigidsym_L_matrix_with_jacobians_run(
             out_L_matrix_D_e + 36 * i0,
             out_L_matrix_D_phi + 12 * i0);
 
-    const int64_t nl = (m + RIGIDSYM_LANES - 1) / RIGIDSYM_LANES * RIGIDSYM_LANES;
+    const int64_t nl = (m + RIGIDSYM_LANES_TRIG - 1) / RIGIDSYM_LANES_TRIG * RIGIDSYM_LANES_TRIG;
     double pad_e[3 * 64];
     double pad_phi[1 * 64];
     double pad_L_matrix[12 * 64];

@@ -42,20 +42,20 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_euler_rate_matrix_zxy_body_lanes(
     double *RIGIDSYM_RESTRICT out_W)
 {
     int64_t count = 0;
-    RIGIDSYM_ALIGNED double trig_0[RIGIDSYM_LANES];
-    RIGIDSYM_ALIGNED double trig_1[RIGIDSYM_LANES];
-    RIGIDSYM_ALIGNED double trig_2[RIGIDSYM_LANES];
-    RIGIDSYM_ALIGNED double trig_3[RIGIDSYM_LANES];
-    RIGIDSYM_ALIGNED double col_angles_1[RIGIDSYM_LANES];
-    RIGIDSYM_ALIGNED double col_angles_2[RIGIDSYM_LANES];
-    for (int64_t j = 0; j < RIGIDSYM_LANES; ++j) {
+    RIGIDSYM_ALIGNED double trig_0[RIGIDSYM_LANES_TRIG];
+    RIGIDSYM_ALIGNED double trig_1[RIGIDSYM_LANES_TRIG];
+    RIGIDSYM_ALIGNED double trig_2[RIGIDSYM_LANES_TRIG];
+    RIGIDSYM_ALIGNED double trig_3[RIGIDSYM_LANES_TRIG];
+    RIGIDSYM_ALIGNED double col_angles_1[RIGIDSYM_LANES_TRIG];
+    RIGIDSYM_ALIGNED double col_angles_2[RIGIDSYM_LANES_TRIG];
+    for (int64_t j = 0; j < RIGIDSYM_LANES_TRIG; ++j) {
         col_angles_1[j] = in_angles[3 * j + 1];
         col_angles_2[j] = in_angles[3 * j + 2];
     }
     /* a SIMD loop evaluates the sin/cos values into local arrays, then a per-sample loop
      * reads them */
     RIGIDSYM_SIMD
-    for (int64_t j = 0; j < RIGIDSYM_LANES; ++j) {
+    for (int64_t j = 0; j < RIGIDSYM_LANES_TRIG; ++j) {
         const double angles_1 = col_angles_1[j];
         const double angles_2 = col_angles_2[j];
         trig_0[j] = sin(angles_2);
@@ -63,7 +63,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_euler_rate_matrix_zxy_body_lanes(
         trig_2[j] = cos(angles_2);
         trig_3[j] = sin(angles_1);
     }
-    for (int64_t j = 0; j < RIGIDSYM_LANES; ++j) {
+    for (int64_t j = 0; j < RIGIDSYM_LANES_TRIG; ++j) {
         count += (int64_t)(rigidsym_euler_rate_matrix_zxy_body_sample_trig(
             in_angles + 3 * j,
             trig_0[j],
@@ -120,9 +120,9 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_euler_rate_matrix_zxy_body_block(
     const double *RIGIDSYM_RESTRICT in_angles,
     double *RIGIDSYM_RESTRICT out_W)
 {
-    int64_t mask[64 / RIGIDSYM_LANES], any = 0;
-    for (int64_t g = 0; g * RIGIDSYM_LANES < nl; ++g) {
-        const int64_t j = g * RIGIDSYM_LANES;
+    int64_t mask[64 / RIGIDSYM_LANES_TRIG], any = 0;
+    for (int64_t g = 0; g * RIGIDSYM_LANES_TRIG < nl; ++g) {
+        const int64_t j = g * RIGIDSYM_LANES_TRIG;
         mask[g] = rigidsym_euler_rate_matrix_zxy_body_lanes(
             in_angles + 3 * j,
             out_W + 9 * j);
@@ -134,7 +134,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_euler_rate_matrix_zxy_body_block(
         return 0;
     int64_t count = 0;
     for (int64_t j = 0; j < m; ++j) {
-        int flagged = (int)((mask[j / RIGIDSYM_LANES] >> (j % RIGIDSYM_LANES)) & 1);
+        int flagged = (int)((mask[j / RIGIDSYM_LANES_TRIG] >> (j % RIGIDSYM_LANES_TRIG)) & 1);
         flagged |= rigidsym_any_nonfinite(out_W + 9 * j, 9);
         if (flagged) {
             ++count;
@@ -182,12 +182,12 @@ static int64_t rigidsym_euler_rate_matrix_zxy_body_run(
     const double *RIGIDSYM_RESTRICT in_angles,
     double *RIGIDSYM_RESTRICT out_W)
 {
-    if (m % RIGIDSYM_LANES == 0)
+    if (m % RIGIDSYM_LANES_TRIG == 0)
         return rigidsym_euler_rate_matrix_zxy_body_block(m, m,
             in_angles + 3 * i0,
             out_W + 9 * i0);
 
-    const int64_t nl = (m + RIGIDSYM_LANES - 1) / RIGIDSYM_LANES * RIGIDSYM_LANES;
+    const int64_t nl = (m + RIGIDSYM_LANES_TRIG - 1) / RIGIDSYM_LANES_TRIG * RIGIDSYM_LANES_TRIG;
     double pad_angles[3 * 64];
     double pad_W[9 * 64];
     for (int64_t j = 0; j < nl; ++j) {

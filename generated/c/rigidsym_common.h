@@ -91,6 +91,10 @@ double cos(double);
  * mask is an int64_t). */
 #define RIGIDSYM_LANES 8
 #define RIGIDSYM_LANES_F32 16
+/* float64 kernels with sin/cos: each lanes call has a fixed cost (the vector sin/cos calls,
+ * the local aligned arrays) that 8 lanes paid visibly at N = 1e6 (1.2-1.4x on H_tilde,
+ * N_matrix, screw_axis_point against blocks of 64, measured) */
+#define RIGIDSYM_LANES_TRIG 16
 
 /* Nonzero when one of the len doubles at p is infinite or NaN (exponent bits all ones).
  * Integer arithmetic: adding 1 to an all-ones exponent carries into the sign bit, so an OR
