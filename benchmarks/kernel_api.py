@@ -155,8 +155,32 @@ def _median_us(f, rounds: int, budget: float = 0.05) -> float:
     return statistics.median(_time(f, budget) * 1e6 for _ in range(rounds))
 
 
-def measure_fast(rounds: int, old_dir: Path | None = None) -> dict:
-    """N = 1, N = 1e3 and float32 of :data:`FAST`, one process, interleaved rounds."""
+def _caller(f, args: list, **kw):
+    """``lambda: f(a0, a1, ..., k=v, ...)``: the inputs spelled out, as a user writes the call
+    (``f(*args, check=False)`` would time CPython's dict-building call path instead)."""
+    names = [f"a{i}" for i in range(len(args))]
+    params = ", ".join(["f", *names, *kw])
+    call = ", ".join([*names, *(f"{k}={k}" for k in kw)])
+    ns: dict = {}
+    exec(f"def make({params}):\n    return lambda: f({call})", ns)   # noqa: S102 - fixed text
+    return ns["make"](f, *args, *kw.values())
+
+
+def _n1_calls(calls: dict, tag: str, space, meta: dict) -> None:
+    """The N = 1 calls of :data:`FAST` from the kernel namespace ``space`` under ``tag``."""
+    for name in FAST:
+        f, args = getattr(space, name), _sample_lists(meta[name])
+        out = f(*args)
+        out = tuple(o.copy() for o in out) if isinstance(out, tuple) else out.copy()
+        calls[(tag, name, "checked")] = _caller(f, args)
+        calls[(tag, name, "unchecked")] = _caller(f, args, check=False)
+        calls[(tag, name, "out")] = _caller(f, args, check=False, out=out)
+
+
+def measure_fast(rounds: int, old_dir: Path | None = None, n1_old: Path | None = None) -> dict:
+    """N = 1, N = 1e3 and float32 of :data:`FAST`, one process, interleaved rounds.
+    ``n1_old``: another generated directory (a previous commit's), whose kernels
+    (``kernels.load``, its own compiled module) are timed at N = 1 in the same rounds."""
     from rigidsym import kernels as K
     from rigidsym.kernels import _state
 
@@ -164,13 +188,11 @@ def measure_fast(rounds: int, old_dir: Path | None = None) -> dict:
     meta = _state.meta()
     rng = np.random.default_rng(7)
     calls: dict = {}
+    _n1_calls(calls, "n1", K, meta)
+    if n1_old is not None:
+        _n1_calls(calls, "n1old", K.load(n1_old), meta)
     for name in FAST:
-        f, args = getattr(K, name), _sample_lists(meta[name])
-        out = f(*args)
-        out = tuple(o.copy() for o in out) if isinstance(out, tuple) else out.copy()
-        calls[("n1", name, "checked")] = lambda f=f, a=args: f(*a)
-        calls[("n1", name, "unchecked")] = lambda f=f, a=args: f(*a, check=False)
-        calls[("n1", name, "out")] = lambda f=f, a=args, o=out: f(*a, check=False, out=o)
+        f = getattr(K, name)
         ins = _inputs(meta[name], 1000, rng)
         outs = [np.empty((1000,) + tuple(o["shape"])) for o in meta[name]["outputs"]]
         o = outs[0] if len(outs) == 1 else tuple(outs)
@@ -178,6 +200,13 @@ def measure_fast(rounds: int, old_dir: Path | None = None) -> dict:
         calls[("n1e3", name, "bare")] = lambda b=bare, a=ins + outs: b(*a)
         calls[("n1e3", name, "unchecked")] = lambda f=f, a=ins, o=o: f(*a, check=False, out=o)
         calls[("n1e3", name, "checked")] = lambda f=f, a=ins, o=o: f(*a, out=o)
+    _reference_calls(calls)
+    data = _run_rounds(calls, rounds)
+    data.update(measure_f32(rounds, old_dir=old_dir))
+    return data
+
+
+def _reference_calls(calls: dict) -> None:
     lst = [0.1, 0.2, 0.3]
     calls[("ref", "np.asarray(3-list)", "")] = lambda: np.asarray(lst)
     calls[("ref", "np.vecdot(3-list, 3-list)", "")] = lambda: np.vecdot(lst, lst)
@@ -189,13 +218,15 @@ def measure_fast(rounds: int, old_dir: Path | None = None) -> dict:
         calls[("ref", "pin.SE3.act(Motion)", "")] = lambda: M.act(v)
     except ImportError:
         pass
+
+
+def _run_rounds(calls: dict, rounds: int) -> dict:
+    """Median us per call of each of ``calls``, rounds interleaved over all of them."""
     res: dict = {k: [] for k in calls}
     for _ in range(rounds):
         for k, f in calls.items():
             res[k].append(_time(f, 0.02) * 1e6)
-    data = {"|".join(k): statistics.median(v) for k, v in res.items()}
-    data.update(measure_f32(rounds, old_dir=old_dir))
-    return data
+    return {"|".join(k): statistics.median(v) for k, v in res.items()}
 
 
 def measure_f32(rounds: int, n: int = 1_000_000, old_dir: Path | None = None) -> dict:
@@ -242,23 +273,60 @@ def measure_f32(rounds: int, n: int = 1_000_000, old_dir: Path | None = None) ->
     return out
 
 
-def fast_section(d: dict, note: str, ab: dict | None) -> str:
-    """The RESULTS.md section of issue 20 from :func:`measure_fast` (and ``--ab``)."""
-    lines = [FAST_MARK[0], "## Kernels cheap at every size (issue 20)", "", note, "",
-             "### N = 1 (us per call, median; Python lists and floats in, C backend)", "",
-             "| kernel | checked | check=False | check=False, reused out= |",
-             "|---|---:|---:|---:|"]
+N1_HEAD = "### N = 1 (us per call, median"
+
+
+def n1_lines(d: dict, old_label: str = "") -> list[str]:
+    """The N = 1 table of :func:`fast_section` (with the previous commit's columns when
+    ``d`` has its ``n1old`` rows) and the reference rows of the same run."""
+    has_old = any(k.startswith("n1old|") for k in d)
+    lines = [f"{N1_HEAD}; Python lists and floats in, spelled out as in `f(e, phi, "
+             "check=False)`; C backend)", ""]
+    cols = [("checked", "checked"), ("unchecked", "check=False"),
+            ("out", "check=False, reused out=")]
+    if has_old:
+        lines += [f"`old`: {old_label}, loaded with `kernels.load` (its own compiled module) "
+                  "and timed in the same interleaved rounds as `new`.", "",
+                  "| kernel | " + " | ".join(f"{h}: old | new" for _, h in cols) + " |",
+                  "|---|" + "---:|" * 6]
+    else:
+        lines += ["| kernel | " + " | ".join(h for _, h in cols) + " |", "|---|---:|---:|---:|"]
     for name in FAST:
-        c, u, o = (d[f"n1|{name}|{w}"] for w in ("checked", "unchecked", "out"))
-        lines.append(f"| `{name}` | {c:.2f} | {u:.2f} | {o:.2f} |")
+        row = []
+        for w, _ in cols:
+            if has_old:
+                row.append(f"{d[f'n1old|{name}|{w}']:.2f}")
+            row.append(f"{d[f'n1|{name}|{w}']:.2f}")
+        lines.append(f"| `{name}` | " + " | ".join(row) + " |")
     lines += ["", "| reference, same run | us per call |", "|---|---:|"]
     lines += [f"| `{k.split('|')[1]}` | {v:.2f} |" for k, v in d.items()
               if k.startswith("ref|")]
     if not any("pin." in k for k in d):
         lines.append("| Pinocchio | not installed |")
-    lines += ["", "### N = 1e3 (us per call, caller-provided out=, contiguous inputs)", "",
-              "| kernel | bare batch call | check=False | - bare | checked | / bare |",
-              "|---|---:|---:|---:|---:|---:|"]
+    return lines
+
+
+def measure_n1(rounds: int, n1_old: Path | None) -> dict:
+    """The N = 1 rows of :func:`measure_fast` alone (and the reference rows)."""
+    from rigidsym import kernels as K
+    from rigidsym.kernels import _state
+
+    assert K.use_backend("c") == "c", "C backend unavailable"
+    calls: dict = {}
+    _n1_calls(calls, "n1", K, _state.meta())
+    if n1_old is not None:
+        _n1_calls(calls, "n1old", K.load(n1_old), _state.meta())
+    _reference_calls(calls)
+    return _run_rounds(calls, rounds)
+
+
+def fast_section(d: dict, note: str, ab: dict | None) -> str:
+    """The RESULTS.md section of issue 20 from :func:`measure_fast` (and ``--ab``)."""
+    lines = [FAST_MARK[0], "## Kernels cheap at every size (issue 20)", "", note, "",
+             *n1_lines(d), "",
+             "### N = 1e3 (us per call, caller-provided out=, contiguous inputs)", "",
+             "| kernel | bare batch call | check=False | - bare | checked | / bare |",
+             "|---|---:|---:|---:|---:|---:|"]
     for name in FAST:
         b, u, c = (d[f"n1e3|{name}|{w}"] for w in ("bare", "unchecked", "checked"))
         lines.append(f"| `{name}` | {b:.2f} | {u:.2f} | {u - b:+.2f} | {c:.2f} | "
@@ -335,9 +403,23 @@ def main(argv=None) -> int:
                    help="issue 20: N = 1, N = 1e3, float32 (and --ab with --threads) into "
                         "RESULTS.md")
     p.add_argument("--threads", default="1", help="--ab thread counts, e.g. 1,2")
+    p.add_argument("--n1-old", metavar="OLD_GENERATED_DIR",
+                   help="with --fast or --n1-only: time another commit's kernels at N = 1 in "
+                        "the same rounds (kernels.load of its generated folder)")
+    p.add_argument("--n1-label", default="the previous commit", help="what --n1-old is")
+    p.add_argument("--n1-only", action="store_true",
+                   help="issue 20: only the N = 1 table (and its reference rows), replaced in "
+                        "the issue-20 section of RESULTS.md")
     args = p.parse_args(argv)
+    n1_old = Path(args.n1_old) if args.n1_old else None
+    if args.n1_only:
+        data = measure_n1(args.rounds, n1_old)
+        if args.save:
+            Path(args.save).write_text(json.dumps({"n1": data}, indent=1))
+        _replace_n1(Path(args.results), n1_lines(data, args.n1_label), args.note)
+        return 0
     if args.fast:
-        data = measure_fast(args.rounds, Path(args.ab) if args.ab else None)
+        data = measure_fast(args.rounds, Path(args.ab) if args.ab else None, n1_old)
         ab = None
         if args.ab:
             ab = {int(t): measure_ab(Path(args.ab), args.rounds, int(t))
@@ -367,6 +449,19 @@ def main(argv=None) -> int:
         _write_section(Path(args.results), section(old, new, args.old_label, args.note, ab),
                        MARK)
     return 0
+
+
+def _replace_n1(path: Path, lines: list[str], note: str) -> None:
+    """Replace the N = 1 table of the issue-20 section of ``path`` (up to the next table
+    heading) by ``lines``, headed by ``note``; print it."""
+    from rigidsym._io import write_atomic
+
+    body = path.read_text(encoding="utf-8")
+    a = body.index(N1_HEAD, body.index(FAST_MARK[0]))
+    b = body.index("\n### ", a) + 1
+    text = "\n".join(lines[:2] + [note, ""] + lines[2:]) + "\n\n"
+    write_atomic(path, body[:a] + text + body[b:])
+    print(text)
 
 
 def _write_section(path: Path, text: str, mark: tuple) -> None:

@@ -29,15 +29,15 @@ def test_lazy_build_runs_once_under_a_thread_pool(monkeypatch):
         return real(gdir, package)
 
     space = _state.builtin()
-    monkeypatch.setattr(space, "_clib", None)
-    monkeypatch.setitem(_state.STATE, "backend", None)
-    # the kernels' entry points bind at the first call too (issue 20): unbind them
+    # the kernels' entry points bind at the first call too (issue 20): unbind them (the
+    # functions' direct calls of C as well)
     import rigidsym.generated.api as api
 
     from rigidsym.kernels import _entries
 
-    monkeypatch.setattr(space, "_entries", None)
-    monkeypatch.setattr(api, "_F", _entries.Lazy(space, api))
+    _entries.unbind(space, api)
+    monkeypatch.setattr(space, "_clib", None)
+    monkeypatch.setitem(_state.STATE, "backend", None)
     monkeypatch.setattr(_ext, "load", slow_load)
     phi = np.linspace(0.1, 3.0, 1000)
     with ThreadPoolExecutor(8) as pool:

@@ -10,50 +10,53 @@
  */
 #include "euler_angle_rates_zxy_fixed.h"
 
-/* Exactly NB = 64 samples, always: a full block of the batch, or a partial one padded.
- * One code path for every sample, so that a
- * sample's bits do not depend on where it sits in the batch: no scalar remainder of a vector
- * loop, and the sin/cos loop works on local aligned arrays only (no alias or alignment
- * versions of it); never inlined, so that every use runs the same machine code.
- * Then one finiteness test over the first m samples' outputs (still in cache): finite inputs
- * can overflow into a non-finite output, flagged as a singular sample is. When something is
- * flagged, each sample's flag is recomputed from that sample alone (its own flag and its own
- * output row) and its row written as NaN. Returns the number of flagged samples among the
- * first m. T float: the float32 sample function (float inputs and outputs, the arithmetic of
- * the precision plan in the header; sin/cos in double from the widened inputs). */
+/* Exactly L = RIGIDSYM_LANES samples (RIGIDSYM_LANES_F32 in float32), always: every sample of every batch is computed by
+ * this one function, never inlined, so that a sample's bits do not depend on its batch or
+ * on where it sits in it (no scalar remainder of a vector loop, one vectorisation and FMA
+ * contraction for all, and the sin/cos loop works on local aligned arrays only (no alias or
+ * alignment versions of it)). Returns the mask of the samples it flags (singular):
+ * bit j for sample j.
+ * T float: the float32 sample function (float inputs and outputs, the arithmetic of the
+ * precision plan in the header; sin/cos in double from the widened inputs). */
+
+/* The first nl samples (a multiple of RIGIDSYM_LANES, at most a block), of which the first m
+ * count: RIGIDSYM_LANES at a time through the lanes function, then one finiteness test over
+ * the first m samples' outputs (still in cache): finite inputs can overflow into a non-finite
+ * output, flagged as a singular sample is. When something is flagged, each sample's flag is
+ * recomputed from that sample alone (its own flag and its own output row) and its row
+ * written as NaN. Returns the number of flagged samples among the first m. */
 
 /* Samples [i0, i0 + m) of the batch, m <= 64: a full block, or a partial one (the tail
- * of a batch, a batch of a few samples, one sample) through a padded block (its samples, then
- * copies of its last one: valid inputs). Always the same block function, so a sample's bits
- * do not depend on its batch: smaller blocks for short batches were measured to change the
- * last bit of some samples (the compiler vectorises a loop of 4 samples differently, and FMA
- * contraction with it). Returns the number flagged. */
+ * of a batch, a batch of a few samples, one sample). m a multiple of RIGIDSYM_LANES: in place;
+ * else through a block padded to the next multiple (its samples, then copies of its last one:
+ * valid inputs). Every sample goes through the same lanes function, so its bits do not depend
+ * on its batch, and one sample costs RIGIDSYM_LANES samples, not a whole padded block (which
+ * was most of the time of a one-sample call). Returns the number flagged. */
 
 /* The batch of n samples on `threads` threads: blocks are independent and the count is an
  * integer sum, so the result is the same for every thread count. One thread (or one block):
  * no OpenMP region at all (entering one, even with if(0), costs about a microsecond:
  * measured, more than a one-sample call). */
-static RIGIDSYM_NOINLINE int64_t rigidsym_euler_angle_rates_zxy_fixed_block(
-    int64_t m,
+static RIGIDSYM_NOINLINE int64_t rigidsym_euler_angle_rates_zxy_fixed_lanes(
     const double *RIGIDSYM_RESTRICT in_angles,
     const double *RIGIDSYM_RESTRICT in_omega,
     double *RIGIDSYM_RESTRICT out_eta_dot)
 {
     int64_t count = 0;
-    RIGIDSYM_ALIGNED double trig_0[64];
-    RIGIDSYM_ALIGNED double trig_1[64];
-    RIGIDSYM_ALIGNED double trig_2[64];
-    RIGIDSYM_ALIGNED double trig_3[64];
-    RIGIDSYM_ALIGNED double col_angles_0[64];
-    RIGIDSYM_ALIGNED double col_angles_1[64];
-    for (int64_t j = 0; j < 64; ++j) {
+    RIGIDSYM_ALIGNED double trig_0[RIGIDSYM_LANES_TRIG];
+    RIGIDSYM_ALIGNED double trig_1[RIGIDSYM_LANES_TRIG];
+    RIGIDSYM_ALIGNED double trig_2[RIGIDSYM_LANES_TRIG];
+    RIGIDSYM_ALIGNED double trig_3[RIGIDSYM_LANES_TRIG];
+    RIGIDSYM_ALIGNED double col_angles_0[RIGIDSYM_LANES_TRIG];
+    RIGIDSYM_ALIGNED double col_angles_1[RIGIDSYM_LANES_TRIG];
+    for (int64_t j = 0; j < RIGIDSYM_LANES_TRIG; ++j) {
         col_angles_0[j] = in_angles[3 * j + 0];
         col_angles_1[j] = in_angles[3 * j + 1];
     }
     /* a SIMD loop evaluates the sin/cos values into local arrays, then a per-sample loop
      * reads them */
     RIGIDSYM_SIMD
-    for (int64_t j = 0; j < 64; ++j) {
+    for (int64_t j = 0; j < RIGIDSYM_LANES_TRIG; ++j) {
         const double angles_0 = col_angles_0[j];
         const double angles_1 = col_angles_1[j];
         trig_0[j] = cos(angles_1);
@@ -61,30 +64,83 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_euler_angle_rates_zxy_fixed_block(
         trig_2[j] = sin(angles_0);
         trig_3[j] = cos(angles_0);
     }
-    for (int64_t j = 0; j < 64; ++j) {
-        count += rigidsym_euler_angle_rates_zxy_fixed_sample_trig(
+    for (int64_t j = 0; j < RIGIDSYM_LANES_TRIG; ++j) {
+        count += (int64_t)(rigidsym_euler_angle_rates_zxy_fixed_sample_trig(
             in_angles + 3 * j,
             in_omega + 3 * j,
             trig_0[j],
             trig_1[j],
             trig_2[j],
             trig_3[j],
-            out_eta_dot + 3 * j);
+            out_eta_dot + 3 * j) != 0) << j;
     }
-    count += rigidsym_any_nonfinite(out_eta_dot, 3 * m);
-    if (count == 0)
-        return 0;
-    count = 0;
-    for (int64_t j = 0; j < m; ++j) {
-        double tmp_eta_dot[3];
-        int flagged = rigidsym_euler_angle_rates_zxy_fixed_sample_trig(
+    return count;
+}
+
+
+static RIGIDSYM_NOINLINE int64_t rigidsym_euler_angle_rates_zxy_fixed_lanes_f32(
+    const float *RIGIDSYM_RESTRICT in_angles,
+    const float *RIGIDSYM_RESTRICT in_omega,
+    float *RIGIDSYM_RESTRICT out_eta_dot)
+{
+    int64_t count = 0;
+    RIGIDSYM_ALIGNED double trig_0[RIGIDSYM_LANES_F32];
+    RIGIDSYM_ALIGNED double trig_1[RIGIDSYM_LANES_F32];
+    RIGIDSYM_ALIGNED double trig_2[RIGIDSYM_LANES_F32];
+    RIGIDSYM_ALIGNED double trig_3[RIGIDSYM_LANES_F32];
+    RIGIDSYM_ALIGNED double col_angles_0[RIGIDSYM_LANES_F32];
+    RIGIDSYM_ALIGNED double col_angles_1[RIGIDSYM_LANES_F32];
+    for (int64_t j = 0; j < RIGIDSYM_LANES_F32; ++j) {
+        col_angles_0[j] = in_angles[3 * j + 0];
+        col_angles_1[j] = in_angles[3 * j + 1];
+    }
+    /* a SIMD loop evaluates the sin/cos values into local arrays, then a per-sample loop
+     * reads them */
+    RIGIDSYM_SIMD
+    for (int64_t j = 0; j < RIGIDSYM_LANES_F32; ++j) {
+        const double angles_0 = col_angles_0[j];
+        const double angles_1 = col_angles_1[j];
+        trig_0[j] = cos(angles_1);
+        trig_1[j] = sin(angles_1);
+        trig_2[j] = sin(angles_0);
+        trig_3[j] = cos(angles_0);
+    }
+    for (int64_t j = 0; j < RIGIDSYM_LANES_F32; ++j) {
+        count += (int64_t)(rigidsym_euler_angle_rates_zxy_fixed_sample_trig_f32(
             in_angles + 3 * j,
             in_omega + 3 * j,
             trig_0[j],
             trig_1[j],
             trig_2[j],
             trig_3[j],
-            tmp_eta_dot);
+            out_eta_dot + 3 * j) != 0) << j;
+    }
+    return count;
+}
+
+
+static RIGIDSYM_NOINLINE int64_t rigidsym_euler_angle_rates_zxy_fixed_block(
+    int64_t m, int64_t nl,
+    const double *RIGIDSYM_RESTRICT in_angles,
+    const double *RIGIDSYM_RESTRICT in_omega,
+    double *RIGIDSYM_RESTRICT out_eta_dot)
+{
+    int64_t mask[64 / RIGIDSYM_LANES_TRIG], any = 0;
+    for (int64_t g = 0; g * RIGIDSYM_LANES_TRIG < nl; ++g) {
+        const int64_t j = g * RIGIDSYM_LANES_TRIG;
+        mask[g] = rigidsym_euler_angle_rates_zxy_fixed_lanes(
+            in_angles + 3 * j,
+            in_omega + 3 * j,
+            out_eta_dot + 3 * j);
+
+        any |= mask[g];
+    }
+    any |= rigidsym_any_nonfinite(out_eta_dot, 3 * m);
+    if (any == 0)
+        return 0;
+    int64_t count = 0;
+    for (int64_t j = 0; j < m; ++j) {
+        int flagged = (int)((mask[j / RIGIDSYM_LANES_TRIG] >> (j % RIGIDSYM_LANES_TRIG)) & 1);
         flagged |= rigidsym_any_nonfinite(out_eta_dot + 3 * j, 3);
         if (flagged) {
             ++count;
@@ -97,57 +153,27 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_euler_angle_rates_zxy_fixed_block(
 
 
 static RIGIDSYM_NOINLINE int64_t rigidsym_euler_angle_rates_zxy_fixed_block_f32(
-    int64_t m,
+    int64_t m, int64_t nl,
     const float *RIGIDSYM_RESTRICT in_angles,
     const float *RIGIDSYM_RESTRICT in_omega,
     float *RIGIDSYM_RESTRICT out_eta_dot)
 {
-    int64_t count = 0;
-    RIGIDSYM_ALIGNED double trig_0[64];
-    RIGIDSYM_ALIGNED double trig_1[64];
-    RIGIDSYM_ALIGNED double trig_2[64];
-    RIGIDSYM_ALIGNED double trig_3[64];
-    RIGIDSYM_ALIGNED double col_angles_0[64];
-    RIGIDSYM_ALIGNED double col_angles_1[64];
-    for (int64_t j = 0; j < 64; ++j) {
-        col_angles_0[j] = in_angles[3 * j + 0];
-        col_angles_1[j] = in_angles[3 * j + 1];
-    }
-    /* a SIMD loop evaluates the sin/cos values into local arrays, then a per-sample loop
-     * reads them */
-    RIGIDSYM_SIMD
-    for (int64_t j = 0; j < 64; ++j) {
-        const double angles_0 = col_angles_0[j];
-        const double angles_1 = col_angles_1[j];
-        trig_0[j] = cos(angles_1);
-        trig_1[j] = sin(angles_1);
-        trig_2[j] = sin(angles_0);
-        trig_3[j] = cos(angles_0);
-    }
-    for (int64_t j = 0; j < 64; ++j) {
-        count += rigidsym_euler_angle_rates_zxy_fixed_sample_trig_f32(
+    int64_t mask[64 / RIGIDSYM_LANES_F32], any = 0;
+    for (int64_t g = 0; g * RIGIDSYM_LANES_F32 < nl; ++g) {
+        const int64_t j = g * RIGIDSYM_LANES_F32;
+        mask[g] = rigidsym_euler_angle_rates_zxy_fixed_lanes_f32(
             in_angles + 3 * j,
             in_omega + 3 * j,
-            trig_0[j],
-            trig_1[j],
-            trig_2[j],
-            trig_3[j],
             out_eta_dot + 3 * j);
+
+        any |= mask[g];
     }
-    count += rigidsym_any_nonfinite_f32(out_eta_dot, 3 * m);
-    if (count == 0)
+    any |= rigidsym_any_nonfinite_f32(out_eta_dot, 3 * m);
+    if (any == 0)
         return 0;
-    count = 0;
+    int64_t count = 0;
     for (int64_t j = 0; j < m; ++j) {
-        float tmp_eta_dot[3];
-        int flagged = rigidsym_euler_angle_rates_zxy_fixed_sample_trig_f32(
-            in_angles + 3 * j,
-            in_omega + 3 * j,
-            trig_0[j],
-            trig_1[j],
-            trig_2[j],
-            trig_3[j],
-            tmp_eta_dot);
+        int flagged = (int)((mask[j / RIGIDSYM_LANES_F32] >> (j % RIGIDSYM_LANES_F32)) & 1);
         flagged |= rigidsym_any_nonfinite_f32(out_eta_dot + 3 * j, 3);
         if (flagged) {
             ++count;
@@ -165,23 +191,24 @@ static int64_t rigidsym_euler_angle_rates_zxy_fixed_run(
     const double *RIGIDSYM_RESTRICT in_omega,
     double *RIGIDSYM_RESTRICT out_eta_dot)
 {
-    if (m == 64)
-        return rigidsym_euler_angle_rates_zxy_fixed_block(m,
+    if (m % RIGIDSYM_LANES_TRIG == 0)
+        return rigidsym_euler_angle_rates_zxy_fixed_block(m, m,
             in_angles + 3 * i0,
             in_omega + 3 * i0,
             out_eta_dot + 3 * i0);
 
+    const int64_t nl = (m + RIGIDSYM_LANES_TRIG - 1) / RIGIDSYM_LANES_TRIG * RIGIDSYM_LANES_TRIG;
     double pad_angles[3 * 64];
     double pad_omega[3 * 64];
     double pad_eta_dot[3 * 64];
-    for (int64_t j = 0; j < 64; ++j) {
+    for (int64_t j = 0; j < nl; ++j) {
         const int64_t s = i0 + (j < m ? j : m - 1);
         memcpy(pad_angles + 3 * j, in_angles + 3 * s,
                3 * sizeof(double));
         memcpy(pad_omega + 3 * j, in_omega + 3 * s,
                3 * sizeof(double));
     }
-    const int64_t count = rigidsym_euler_angle_rates_zxy_fixed_block(m,
+    const int64_t count = rigidsym_euler_angle_rates_zxy_fixed_block(m, nl,
         pad_angles,
         pad_omega,
         pad_eta_dot);
@@ -196,23 +223,24 @@ static int64_t rigidsym_euler_angle_rates_zxy_fixed_run_f32(
     const float *RIGIDSYM_RESTRICT in_omega,
     float *RIGIDSYM_RESTRICT out_eta_dot)
 {
-    if (m == 64)
-        return rigidsym_euler_angle_rates_zxy_fixed_block_f32(m,
+    if (m % RIGIDSYM_LANES_F32 == 0)
+        return rigidsym_euler_angle_rates_zxy_fixed_block_f32(m, m,
             in_angles + 3 * i0,
             in_omega + 3 * i0,
             out_eta_dot + 3 * i0);
 
+    const int64_t nl = (m + RIGIDSYM_LANES_F32 - 1) / RIGIDSYM_LANES_F32 * RIGIDSYM_LANES_F32;
     float pad_angles[3 * 64];
     float pad_omega[3 * 64];
     float pad_eta_dot[3 * 64];
-    for (int64_t j = 0; j < 64; ++j) {
+    for (int64_t j = 0; j < nl; ++j) {
         const int64_t s = i0 + (j < m ? j : m - 1);
         memcpy(pad_angles + 3 * j, in_angles + 3 * s,
                3 * sizeof(float));
         memcpy(pad_omega + 3 * j, in_omega + 3 * s,
                3 * sizeof(float));
     }
-    const int64_t count = rigidsym_euler_angle_rates_zxy_fixed_block_f32(m,
+    const int64_t count = rigidsym_euler_angle_rates_zxy_fixed_block_f32(m, nl,
         pad_angles,
         pad_omega,
         pad_eta_dot);

@@ -10,30 +10,33 @@
  */
 #include "inertia_at_point.h"
 
-/* Exactly NB = RIGIDSYM_CHECK_BLOCK samples, always: a full block of the batch, or a partial one padded.
- * One code path for every sample, so that a
- * sample's bits do not depend on where it sits in the batch: no scalar remainder of a vector
- * loop; never inlined, so that every use runs the same machine code.
- * Then one finiteness test over the first m samples' outputs (still in cache): finite inputs
- * can overflow into a non-finite output, flagged as a singular sample is. When something is
- * flagged, each sample's flag is recomputed from that sample alone (its own flag and its own
- * output row) and its row written as NaN. Returns the number of flagged samples among the
- * first m. T float: the float32 sample function (float inputs and outputs, the arithmetic of
- * the precision plan in the header; sin/cos in double from the widened inputs). */
+/* Exactly L = RIGIDSYM_LANES samples (RIGIDSYM_LANES_F32 in float32), always: every sample of every batch is computed by
+ * this one function, never inlined, so that a sample's bits do not depend on its batch or
+ * on where it sits in it (no scalar remainder of a vector loop, one vectorisation and FMA
+ * contraction for all). Returns the mask of the samples it flags (singular):
+ * bit j for sample j.
+ * T float: the float32 sample function (float inputs and outputs, the arithmetic of the
+ * precision plan in the header; sin/cos in double from the widened inputs). */
+
+/* The first nl samples (a multiple of RIGIDSYM_LANES, at most a block), of which the first m
+ * count: RIGIDSYM_LANES at a time through the lanes function, then one finiteness test over
+ * the first m samples' outputs (still in cache): finite inputs can overflow into a non-finite
+ * output, flagged as a singular sample is. When something is flagged, each sample's flag is
+ * recomputed from that sample alone (its own flag and its own output row) and its row
+ * written as NaN. Returns the number of flagged samples among the first m. */
 
 /* Samples [i0, i0 + m) of the batch, m <= RIGIDSYM_CHECK_BLOCK: a full block, or a partial one (the tail
- * of a batch, a batch of a few samples, one sample) through a padded block (its samples, then
- * copies of its last one: valid inputs). Always the same block function, so a sample's bits
- * do not depend on its batch: smaller blocks for short batches were measured to change the
- * last bit of some samples (the compiler vectorises a loop of 4 samples differently, and FMA
- * contraction with it). Returns the number flagged. */
+ * of a batch, a batch of a few samples, one sample). m a multiple of RIGIDSYM_LANES: in place;
+ * else through a block padded to the next multiple (its samples, then copies of its last one:
+ * valid inputs). Every sample goes through the same lanes function, so its bits do not depend
+ * on its batch, and one sample costs RIGIDSYM_LANES samples, not a whole padded block (which
+ * was most of the time of a one-sample call). Returns the number flagged. */
 
 /* The batch of n samples on `threads` threads: blocks are independent and the count is an
  * integer sum, so the result is the same for every thread count. One thread (or one block):
  * no OpenMP region at all (entering one, even with if(0), costs about a microsecond:
  * measured, more than a one-sample call). */
-static RIGIDSYM_NOINLINE int64_t rigidsym_inertia_at_point_block(
-    int64_t m,
+static RIGIDSYM_NOINLINE int64_t rigidsym_inertia_at_point_lanes(
     const double *RIGIDSYM_RESTRICT in_I_C,
     const double *RIGIDSYM_RESTRICT in_m,
     const double *RIGIDSYM_RESTRICT in_c,
@@ -44,7 +47,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_inertia_at_point_block(
     /* No division, root or branch: nothing to count per sample. A plain loop; the
      * compiler's cost model decides on vectorisation (forcing it turns the strided
      * row-major loads into gathers, measured slower). */
-    for (int64_t j = 0; j < RIGIDSYM_CHECK_BLOCK; ++j) {
+    for (int64_t j = 0; j < RIGIDSYM_LANES; ++j) {
         (void)rigidsym_inertia_at_point_sample(
             in_I_C + 9 * j,
             in_m + 1 * j,
@@ -53,12 +56,60 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_inertia_at_point_block(
             out_I_A + 9 * j);
 
     }
-    count += rigidsym_any_nonfinite(out_I_A, 9 * m);
-    if (count == 0)
+    return count;
+}
+
+
+static RIGIDSYM_NOINLINE int64_t rigidsym_inertia_at_point_lanes_f32(
+    const float *RIGIDSYM_RESTRICT in_I_C,
+    const float *RIGIDSYM_RESTRICT in_m,
+    const float *RIGIDSYM_RESTRICT in_c,
+    const float *RIGIDSYM_RESTRICT in_a,
+    float *RIGIDSYM_RESTRICT out_I_A)
+{
+    int64_t count = 0;
+    /* No division, root or branch: nothing to count per sample. A plain loop; the
+     * compiler's cost model decides on vectorisation (forcing it turns the strided
+     * row-major loads into gathers, measured slower). */
+    for (int64_t j = 0; j < RIGIDSYM_LANES_F32; ++j) {
+        (void)rigidsym_inertia_at_point_sample_f32(
+            in_I_C + 9 * j,
+            in_m + 1 * j,
+            in_c + 3 * j,
+            in_a + 3 * j,
+            out_I_A + 9 * j);
+
+    }
+    return count;
+}
+
+
+static RIGIDSYM_NOINLINE int64_t rigidsym_inertia_at_point_block(
+    int64_t m, int64_t nl,
+    const double *RIGIDSYM_RESTRICT in_I_C,
+    const double *RIGIDSYM_RESTRICT in_m,
+    const double *RIGIDSYM_RESTRICT in_c,
+    const double *RIGIDSYM_RESTRICT in_a,
+    double *RIGIDSYM_RESTRICT out_I_A)
+{
+    int64_t mask[RIGIDSYM_CHECK_BLOCK / RIGIDSYM_LANES], any = 0;
+    for (int64_t g = 0; g * RIGIDSYM_LANES < nl; ++g) {
+        const int64_t j = g * RIGIDSYM_LANES;
+        mask[g] = rigidsym_inertia_at_point_lanes(
+            in_I_C + 9 * j,
+            in_m + 1 * j,
+            in_c + 3 * j,
+            in_a + 3 * j,
+            out_I_A + 9 * j);
+
+        any |= mask[g];
+    }
+    any |= rigidsym_any_nonfinite(out_I_A, 9 * m);
+    if (any == 0)
         return 0;
-    count = 0;
+    int64_t count = 0;
     for (int64_t j = 0; j < m; ++j) {
-        int flagged = 0;
+        int flagged = (int)((mask[j / RIGIDSYM_LANES] >> (j % RIGIDSYM_LANES)) & 1);
         flagged |= rigidsym_any_nonfinite(out_I_A + 9 * j, 9);
         if (flagged) {
             ++count;
@@ -71,32 +122,31 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_inertia_at_point_block(
 
 
 static RIGIDSYM_NOINLINE int64_t rigidsym_inertia_at_point_block_f32(
-    int64_t m,
+    int64_t m, int64_t nl,
     const float *RIGIDSYM_RESTRICT in_I_C,
     const float *RIGIDSYM_RESTRICT in_m,
     const float *RIGIDSYM_RESTRICT in_c,
     const float *RIGIDSYM_RESTRICT in_a,
     float *RIGIDSYM_RESTRICT out_I_A)
 {
-    int64_t count = 0;
-    /* No division, root or branch: nothing to count per sample. A plain loop; the
-     * compiler's cost model decides on vectorisation (forcing it turns the strided
-     * row-major loads into gathers, measured slower). */
-    for (int64_t j = 0; j < RIGIDSYM_CHECK_BLOCK; ++j) {
-        (void)rigidsym_inertia_at_point_sample_f32(
+    int64_t mask[RIGIDSYM_CHECK_BLOCK / RIGIDSYM_LANES_F32], any = 0;
+    for (int64_t g = 0; g * RIGIDSYM_LANES_F32 < nl; ++g) {
+        const int64_t j = g * RIGIDSYM_LANES_F32;
+        mask[g] = rigidsym_inertia_at_point_lanes_f32(
             in_I_C + 9 * j,
             in_m + 1 * j,
             in_c + 3 * j,
             in_a + 3 * j,
             out_I_A + 9 * j);
 
+        any |= mask[g];
     }
-    count += rigidsym_any_nonfinite_f32(out_I_A, 9 * m);
-    if (count == 0)
+    any |= rigidsym_any_nonfinite_f32(out_I_A, 9 * m);
+    if (any == 0)
         return 0;
-    count = 0;
+    int64_t count = 0;
     for (int64_t j = 0; j < m; ++j) {
-        int flagged = 0;
+        int flagged = (int)((mask[j / RIGIDSYM_LANES_F32] >> (j % RIGIDSYM_LANES_F32)) & 1);
         flagged |= rigidsym_any_nonfinite_f32(out_I_A + 9 * j, 9);
         if (flagged) {
             ++count;
@@ -116,20 +166,21 @@ static int64_t rigidsym_inertia_at_point_run(
     const double *RIGIDSYM_RESTRICT in_a,
     double *RIGIDSYM_RESTRICT out_I_A)
 {
-    if (m == RIGIDSYM_CHECK_BLOCK)
-        return rigidsym_inertia_at_point_block(m,
+    if (m % RIGIDSYM_LANES == 0)
+        return rigidsym_inertia_at_point_block(m, m,
             in_I_C + 9 * i0,
             in_m + 1 * i0,
             in_c + 3 * i0,
             in_a + 3 * i0,
             out_I_A + 9 * i0);
 
+    const int64_t nl = (m + RIGIDSYM_LANES - 1) / RIGIDSYM_LANES * RIGIDSYM_LANES;
     double pad_I_C[9 * RIGIDSYM_CHECK_BLOCK];
     double pad_m[1 * RIGIDSYM_CHECK_BLOCK];
     double pad_c[3 * RIGIDSYM_CHECK_BLOCK];
     double pad_a[3 * RIGIDSYM_CHECK_BLOCK];
     double pad_I_A[9 * RIGIDSYM_CHECK_BLOCK];
-    for (int64_t j = 0; j < RIGIDSYM_CHECK_BLOCK; ++j) {
+    for (int64_t j = 0; j < nl; ++j) {
         const int64_t s = i0 + (j < m ? j : m - 1);
         memcpy(pad_I_C + 9 * j, in_I_C + 9 * s,
                9 * sizeof(double));
@@ -140,7 +191,7 @@ static int64_t rigidsym_inertia_at_point_run(
         memcpy(pad_a + 3 * j, in_a + 3 * s,
                3 * sizeof(double));
     }
-    const int64_t count = rigidsym_inertia_at_point_block(m,
+    const int64_t count = rigidsym_inertia_at_point_block(m, nl,
         pad_I_C,
         pad_m,
         pad_c,
@@ -159,20 +210,21 @@ static int64_t rigidsym_inertia_at_point_run_f32(
     const float *RIGIDSYM_RESTRICT in_a,
     float *RIGIDSYM_RESTRICT out_I_A)
 {
-    if (m == RIGIDSYM_CHECK_BLOCK)
-        return rigidsym_inertia_at_point_block_f32(m,
+    if (m % RIGIDSYM_LANES_F32 == 0)
+        return rigidsym_inertia_at_point_block_f32(m, m,
             in_I_C + 9 * i0,
             in_m + 1 * i0,
             in_c + 3 * i0,
             in_a + 3 * i0,
             out_I_A + 9 * i0);
 
+    const int64_t nl = (m + RIGIDSYM_LANES_F32 - 1) / RIGIDSYM_LANES_F32 * RIGIDSYM_LANES_F32;
     float pad_I_C[9 * RIGIDSYM_CHECK_BLOCK];
     float pad_m[1 * RIGIDSYM_CHECK_BLOCK];
     float pad_c[3 * RIGIDSYM_CHECK_BLOCK];
     float pad_a[3 * RIGIDSYM_CHECK_BLOCK];
     float pad_I_A[9 * RIGIDSYM_CHECK_BLOCK];
-    for (int64_t j = 0; j < RIGIDSYM_CHECK_BLOCK; ++j) {
+    for (int64_t j = 0; j < nl; ++j) {
         const int64_t s = i0 + (j < m ? j : m - 1);
         memcpy(pad_I_C + 9 * j, in_I_C + 9 * s,
                9 * sizeof(float));
@@ -183,7 +235,7 @@ static int64_t rigidsym_inertia_at_point_run_f32(
         memcpy(pad_a + 3 * j, in_a + 3 * s,
                3 * sizeof(float));
     }
-    const int64_t count = rigidsym_inertia_at_point_block_f32(m,
+    const int64_t count = rigidsym_inertia_at_point_block_f32(m, nl,
         pad_I_C,
         pad_m,
         pad_c,

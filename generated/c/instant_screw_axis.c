@@ -10,30 +10,33 @@
  */
 #include "instant_screw_axis.h"
 
-/* Exactly NB = RIGIDSYM_CHECK_BLOCK samples, always: a full block of the batch, or a partial one padded.
- * One code path for every sample, so that a
- * sample's bits do not depend on where it sits in the batch: no scalar remainder of a vector
- * loop; never inlined, so that every use runs the same machine code.
- * Then one finiteness test over the first m samples' outputs (still in cache): finite inputs
- * can overflow into a non-finite output, flagged as a singular sample is. When something is
- * flagged, each sample's flag is recomputed from that sample alone (its own flag and its own
- * output row) and its row written as NaN. Returns the number of flagged samples among the
- * first m. T float: the float32 sample function (float inputs and outputs, the arithmetic of
- * the precision plan in the header; sin/cos in double from the widened inputs). */
+/* Exactly L = RIGIDSYM_LANES samples (RIGIDSYM_LANES_F32 in float32), always: every sample of every batch is computed by
+ * this one function, never inlined, so that a sample's bits do not depend on its batch or
+ * on where it sits in it (no scalar remainder of a vector loop, one vectorisation and FMA
+ * contraction for all). Returns the mask of the samples it flags (singular):
+ * bit j for sample j.
+ * T float: the float32 sample function (float inputs and outputs, the arithmetic of the
+ * precision plan in the header; sin/cos in double from the widened inputs). */
+
+/* The first nl samples (a multiple of RIGIDSYM_LANES, at most a block), of which the first m
+ * count: RIGIDSYM_LANES at a time through the lanes function, then one finiteness test over
+ * the first m samples' outputs (still in cache): finite inputs can overflow into a non-finite
+ * output, flagged as a singular sample is. When something is flagged, each sample's flag is
+ * recomputed from that sample alone (its own flag and its own output row) and its row
+ * written as NaN. Returns the number of flagged samples among the first m. */
 
 /* Samples [i0, i0 + m) of the batch, m <= RIGIDSYM_CHECK_BLOCK: a full block, or a partial one (the tail
- * of a batch, a batch of a few samples, one sample) through a padded block (its samples, then
- * copies of its last one: valid inputs). Always the same block function, so a sample's bits
- * do not depend on its batch: smaller blocks for short batches were measured to change the
- * last bit of some samples (the compiler vectorises a loop of 4 samples differently, and FMA
- * contraction with it). Returns the number flagged. */
+ * of a batch, a batch of a few samples, one sample). m a multiple of RIGIDSYM_LANES: in place;
+ * else through a block padded to the next multiple (its samples, then copies of its last one:
+ * valid inputs). Every sample goes through the same lanes function, so its bits do not depend
+ * on its batch, and one sample costs RIGIDSYM_LANES samples, not a whole padded block (which
+ * was most of the time of a one-sample call). Returns the number flagged. */
 
 /* The batch of n samples on `threads` threads: blocks are independent and the count is an
  * integer sum, so the result is the same for every thread count. One thread (or one block):
  * no OpenMP region at all (entering one, even with if(0), costs about a microsecond:
  * measured, more than a one-sample call). */
-static RIGIDSYM_NOINLINE int64_t rigidsym_instant_screw_axis_block(
-    int64_t m,
+static RIGIDSYM_NOINLINE int64_t rigidsym_instant_screw_axis_lanes(
     const double *RIGIDSYM_RESTRICT in_omega,
     const double *RIGIDSYM_RESTRICT in_a,
     const double *RIGIDSYM_RESTRICT in_a_dot,
@@ -44,8 +47,58 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_instant_screw_axis_block(
     int64_t count = 0;
     /* branch-free so that the compiler can vectorise it */
     RIGIDSYM_SIMD_COUNT
-    for (int64_t j = 0; j < RIGIDSYM_CHECK_BLOCK; ++j) {
-        count += rigidsym_instant_screw_axis_sample(
+    for (int64_t j = 0; j < RIGIDSYM_LANES; ++j) {
+        count += (int64_t)(rigidsym_instant_screw_axis_sample(
+            in_omega + 3 * j,
+            in_a + 3 * j,
+            in_a_dot + 3 * j,
+            out_p0 + 3 * j,
+            out_pitch + 1 * j,
+            out_plucker + 6 * j) != 0) << j;
+
+    }
+    return count;
+}
+
+
+static RIGIDSYM_NOINLINE int64_t rigidsym_instant_screw_axis_lanes_f32(
+    const float *RIGIDSYM_RESTRICT in_omega,
+    const float *RIGIDSYM_RESTRICT in_a,
+    const float *RIGIDSYM_RESTRICT in_a_dot,
+    float *RIGIDSYM_RESTRICT out_p0,
+    float *RIGIDSYM_RESTRICT out_pitch,
+    float *RIGIDSYM_RESTRICT out_plucker)
+{
+    int64_t count = 0;
+    /* branch-free so that the compiler can vectorise it */
+    RIGIDSYM_SIMD_COUNT
+    for (int64_t j = 0; j < RIGIDSYM_LANES_F32; ++j) {
+        count += (int64_t)(rigidsym_instant_screw_axis_sample_f32(
+            in_omega + 3 * j,
+            in_a + 3 * j,
+            in_a_dot + 3 * j,
+            out_p0 + 3 * j,
+            out_pitch + 1 * j,
+            out_plucker + 6 * j) != 0) << j;
+
+    }
+    return count;
+}
+
+
+static RIGIDSYM_NOINLINE int64_t rigidsym_instant_screw_axis_block(
+    int64_t m, int64_t nl,
+    const double *RIGIDSYM_RESTRICT in_omega,
+    const double *RIGIDSYM_RESTRICT in_a,
+    const double *RIGIDSYM_RESTRICT in_a_dot,
+    double *RIGIDSYM_RESTRICT out_p0,
+    double *RIGIDSYM_RESTRICT out_pitch,
+    double *RIGIDSYM_RESTRICT out_plucker)
+{
+    int64_t mask[RIGIDSYM_CHECK_BLOCK / RIGIDSYM_LANES], any = 0;
+    for (int64_t g = 0; g * RIGIDSYM_LANES < nl; ++g) {
+        const int64_t j = g * RIGIDSYM_LANES;
+        mask[g] = rigidsym_instant_screw_axis_lanes(
             in_omega + 3 * j,
             in_a + 3 * j,
             in_a_dot + 3 * j,
@@ -53,24 +106,16 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_instant_screw_axis_block(
             out_pitch + 1 * j,
             out_plucker + 6 * j);
 
+        any |= mask[g];
     }
-    count += rigidsym_any_nonfinite(out_p0, 3 * m);
-    count += rigidsym_any_nonfinite(out_pitch, 1 * m);
-    count += rigidsym_any_nonfinite(out_plucker, 6 * m);
-    if (count == 0)
+    any |= rigidsym_any_nonfinite(out_p0, 3 * m);
+    any |= rigidsym_any_nonfinite(out_pitch, 1 * m);
+    any |= rigidsym_any_nonfinite(out_plucker, 6 * m);
+    if (any == 0)
         return 0;
-    count = 0;
+    int64_t count = 0;
     for (int64_t j = 0; j < m; ++j) {
-        double tmp_p0[3];
-        double tmp_pitch[1];
-        double tmp_plucker[6];
-        int flagged = rigidsym_instant_screw_axis_sample(
-            in_omega + 3 * j,
-            in_a + 3 * j,
-            in_a_dot + 3 * j,
-            tmp_p0,
-            tmp_pitch,
-            tmp_plucker);
+        int flagged = (int)((mask[j / RIGIDSYM_LANES] >> (j % RIGIDSYM_LANES)) & 1);
         flagged |= rigidsym_any_nonfinite(out_p0 + 3 * j, 3);
         flagged |= rigidsym_any_nonfinite(out_pitch + 1 * j, 1);
         flagged |= rigidsym_any_nonfinite(out_plucker + 6 * j, 6);
@@ -89,7 +134,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_instant_screw_axis_block(
 
 
 static RIGIDSYM_NOINLINE int64_t rigidsym_instant_screw_axis_block_f32(
-    int64_t m,
+    int64_t m, int64_t nl,
     const float *RIGIDSYM_RESTRICT in_omega,
     const float *RIGIDSYM_RESTRICT in_a,
     const float *RIGIDSYM_RESTRICT in_a_dot,
@@ -97,11 +142,10 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_instant_screw_axis_block_f32(
     float *RIGIDSYM_RESTRICT out_pitch,
     float *RIGIDSYM_RESTRICT out_plucker)
 {
-    int64_t count = 0;
-    /* branch-free so that the compiler can vectorise it */
-    RIGIDSYM_SIMD_COUNT
-    for (int64_t j = 0; j < RIGIDSYM_CHECK_BLOCK; ++j) {
-        count += rigidsym_instant_screw_axis_sample_f32(
+    int64_t mask[RIGIDSYM_CHECK_BLOCK / RIGIDSYM_LANES_F32], any = 0;
+    for (int64_t g = 0; g * RIGIDSYM_LANES_F32 < nl; ++g) {
+        const int64_t j = g * RIGIDSYM_LANES_F32;
+        mask[g] = rigidsym_instant_screw_axis_lanes_f32(
             in_omega + 3 * j,
             in_a + 3 * j,
             in_a_dot + 3 * j,
@@ -109,24 +153,16 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_instant_screw_axis_block_f32(
             out_pitch + 1 * j,
             out_plucker + 6 * j);
 
+        any |= mask[g];
     }
-    count += rigidsym_any_nonfinite_f32(out_p0, 3 * m);
-    count += rigidsym_any_nonfinite_f32(out_pitch, 1 * m);
-    count += rigidsym_any_nonfinite_f32(out_plucker, 6 * m);
-    if (count == 0)
+    any |= rigidsym_any_nonfinite_f32(out_p0, 3 * m);
+    any |= rigidsym_any_nonfinite_f32(out_pitch, 1 * m);
+    any |= rigidsym_any_nonfinite_f32(out_plucker, 6 * m);
+    if (any == 0)
         return 0;
-    count = 0;
+    int64_t count = 0;
     for (int64_t j = 0; j < m; ++j) {
-        float tmp_p0[3];
-        float tmp_pitch[1];
-        float tmp_plucker[6];
-        int flagged = rigidsym_instant_screw_axis_sample_f32(
-            in_omega + 3 * j,
-            in_a + 3 * j,
-            in_a_dot + 3 * j,
-            tmp_p0,
-            tmp_pitch,
-            tmp_plucker);
+        int flagged = (int)((mask[j / RIGIDSYM_LANES_F32] >> (j % RIGIDSYM_LANES_F32)) & 1);
         flagged |= rigidsym_any_nonfinite_f32(out_p0 + 3 * j, 3);
         flagged |= rigidsym_any_nonfinite_f32(out_pitch + 1 * j, 1);
         flagged |= rigidsym_any_nonfinite_f32(out_plucker + 6 * j, 6);
@@ -153,8 +189,8 @@ static int64_t rigidsym_instant_screw_axis_run(
     double *RIGIDSYM_RESTRICT out_pitch,
     double *RIGIDSYM_RESTRICT out_plucker)
 {
-    if (m == RIGIDSYM_CHECK_BLOCK)
-        return rigidsym_instant_screw_axis_block(m,
+    if (m % RIGIDSYM_LANES == 0)
+        return rigidsym_instant_screw_axis_block(m, m,
             in_omega + 3 * i0,
             in_a + 3 * i0,
             in_a_dot + 3 * i0,
@@ -162,13 +198,14 @@ static int64_t rigidsym_instant_screw_axis_run(
             out_pitch + 1 * i0,
             out_plucker + 6 * i0);
 
+    const int64_t nl = (m + RIGIDSYM_LANES - 1) / RIGIDSYM_LANES * RIGIDSYM_LANES;
     double pad_omega[3 * RIGIDSYM_CHECK_BLOCK];
     double pad_a[3 * RIGIDSYM_CHECK_BLOCK];
     double pad_a_dot[3 * RIGIDSYM_CHECK_BLOCK];
     double pad_p0[3 * RIGIDSYM_CHECK_BLOCK];
     double pad_pitch[1 * RIGIDSYM_CHECK_BLOCK];
     double pad_plucker[6 * RIGIDSYM_CHECK_BLOCK];
-    for (int64_t j = 0; j < RIGIDSYM_CHECK_BLOCK; ++j) {
+    for (int64_t j = 0; j < nl; ++j) {
         const int64_t s = i0 + (j < m ? j : m - 1);
         memcpy(pad_omega + 3 * j, in_omega + 3 * s,
                3 * sizeof(double));
@@ -177,7 +214,7 @@ static int64_t rigidsym_instant_screw_axis_run(
         memcpy(pad_a_dot + 3 * j, in_a_dot + 3 * s,
                3 * sizeof(double));
     }
-    const int64_t count = rigidsym_instant_screw_axis_block(m,
+    const int64_t count = rigidsym_instant_screw_axis_block(m, nl,
         pad_omega,
         pad_a,
         pad_a_dot,
@@ -200,8 +237,8 @@ static int64_t rigidsym_instant_screw_axis_run_f32(
     float *RIGIDSYM_RESTRICT out_pitch,
     float *RIGIDSYM_RESTRICT out_plucker)
 {
-    if (m == RIGIDSYM_CHECK_BLOCK)
-        return rigidsym_instant_screw_axis_block_f32(m,
+    if (m % RIGIDSYM_LANES_F32 == 0)
+        return rigidsym_instant_screw_axis_block_f32(m, m,
             in_omega + 3 * i0,
             in_a + 3 * i0,
             in_a_dot + 3 * i0,
@@ -209,13 +246,14 @@ static int64_t rigidsym_instant_screw_axis_run_f32(
             out_pitch + 1 * i0,
             out_plucker + 6 * i0);
 
+    const int64_t nl = (m + RIGIDSYM_LANES_F32 - 1) / RIGIDSYM_LANES_F32 * RIGIDSYM_LANES_F32;
     float pad_omega[3 * RIGIDSYM_CHECK_BLOCK];
     float pad_a[3 * RIGIDSYM_CHECK_BLOCK];
     float pad_a_dot[3 * RIGIDSYM_CHECK_BLOCK];
     float pad_p0[3 * RIGIDSYM_CHECK_BLOCK];
     float pad_pitch[1 * RIGIDSYM_CHECK_BLOCK];
     float pad_plucker[6 * RIGIDSYM_CHECK_BLOCK];
-    for (int64_t j = 0; j < RIGIDSYM_CHECK_BLOCK; ++j) {
+    for (int64_t j = 0; j < nl; ++j) {
         const int64_t s = i0 + (j < m ? j : m - 1);
         memcpy(pad_omega + 3 * j, in_omega + 3 * s,
                3 * sizeof(float));
@@ -224,7 +262,7 @@ static int64_t rigidsym_instant_screw_axis_run_f32(
         memcpy(pad_a_dot + 3 * j, in_a_dot + 3 * s,
                3 * sizeof(float));
     }
-    const int64_t count = rigidsym_instant_screw_axis_block_f32(m,
+    const int64_t count = rigidsym_instant_screw_axis_block_f32(m, nl,
         pad_omega,
         pad_a,
         pad_a_dot,

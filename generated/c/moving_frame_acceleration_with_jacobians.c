@@ -10,30 +10,33 @@
  */
 #include "moving_frame_acceleration_with_jacobians.h"
 
-/* Exactly NB = RIGIDSYM_CHECK_BLOCK samples, always: a full block of the batch, or a partial one padded.
- * One code path for every sample, so that a
- * sample's bits do not depend on where it sits in the batch: no scalar remainder of a vector
- * loop; never inlined, so that every use runs the same machine code.
- * Then one finiteness test over the first m samples' outputs (still in cache): finite inputs
- * can overflow into a non-finite output, flagged as a singular sample is. When something is
- * flagged, each sample's flag is recomputed from that sample alone (its own flag and its own
- * output row) and its row written as NaN. Returns the number of flagged samples among the
- * first m. T float: the float32 sample function (float inputs and outputs, the arithmetic of
- * the precision plan in the header; sin/cos in double from the widened inputs). */
+/* Exactly L = RIGIDSYM_LANES samples (RIGIDSYM_LANES_F32 in float32), always: every sample of every batch is computed by
+ * this one function, never inlined, so that a sample's bits do not depend on its batch or
+ * on where it sits in it (no scalar remainder of a vector loop, one vectorisation and FMA
+ * contraction for all). Returns the mask of the samples it flags (singular):
+ * bit j for sample j.
+ * T float: the float32 sample function (float inputs and outputs, the arithmetic of the
+ * precision plan in the header; sin/cos in double from the widened inputs). */
+
+/* The first nl samples (a multiple of RIGIDSYM_LANES, at most a block), of which the first m
+ * count: RIGIDSYM_LANES at a time through the lanes function, then one finiteness test over
+ * the first m samples' outputs (still in cache): finite inputs can overflow into a non-finite
+ * output, flagged as a singular sample is. When something is flagged, each sample's flag is
+ * recomputed from that sample alone (its own flag and its own output row) and its row
+ * written as NaN. Returns the number of flagged samples among the first m. */
 
 /* Samples [i0, i0 + m) of the batch, m <= RIGIDSYM_CHECK_BLOCK: a full block, or a partial one (the tail
- * of a batch, a batch of a few samples, one sample) through a padded block (its samples, then
- * copies of its last one: valid inputs). Always the same block function, so a sample's bits
- * do not depend on its batch: smaller blocks for short batches were measured to change the
- * last bit of some samples (the compiler vectorises a loop of 4 samples differently, and FMA
- * contraction with it). Returns the number flagged. */
+ * of a batch, a batch of a few samples, one sample). m a multiple of RIGIDSYM_LANES: in place;
+ * else through a block padded to the next multiple (its samples, then copies of its last one:
+ * valid inputs). Every sample goes through the same lanes function, so its bits do not depend
+ * on its batch, and one sample costs RIGIDSYM_LANES samples, not a whole padded block (which
+ * was most of the time of a one-sample call). Returns the number flagged. */
 
 /* The batch of n samples on `threads` threads: blocks are independent and the count is an
  * integer sum, so the result is the same for every thread count. One thread (or one block):
  * no OpenMP region at all (entering one, even with if(0), costs about a microsecond:
  * measured, more than a one-sample call). */
-static RIGIDSYM_NOINLINE int64_t rigidsym_moving_frame_acceleration_with_jacobians_block(
-    int64_t m,
+static RIGIDSYM_NOINLINE int64_t rigidsym_moving_frame_acceleration_with_jacobians_lanes(
     const double *RIGIDSYM_RESTRICT in_o_ddot,
     const double *RIGIDSYM_RESTRICT in_Q,
     const double *RIGIDSYM_RESTRICT in_omega,
@@ -54,7 +57,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_moving_frame_acceleration_with_jacobia
     /* No division, root or branch: nothing to count per sample. A plain loop; the
      * compiler's cost model decides on vectorisation (forcing it turns the strided
      * row-major loads into gathers, measured slower). */
-    for (int64_t j = 0; j < RIGIDSYM_CHECK_BLOCK; ++j) {
+    for (int64_t j = 0; j < RIGIDSYM_LANES; ++j) {
         (void)rigidsym_moving_frame_acceleration_with_jacobians_sample(
             in_o_ddot + 3 * j,
             in_Q + 9 * j,
@@ -73,19 +76,107 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_moving_frame_acceleration_with_jacobia
             out_p_ddot_D_rho_ddot_M + 9 * j);
 
     }
-    count += rigidsym_any_nonfinite(out_p_ddot, 3 * m);
-    count += rigidsym_any_nonfinite(out_p_ddot_D_o_ddot, 9 * m);
-    count += rigidsym_any_nonfinite(out_p_ddot_D_Q, 27 * m);
-    count += rigidsym_any_nonfinite(out_p_ddot_D_omega, 9 * m);
-    count += rigidsym_any_nonfinite(out_p_ddot_D_omega_dot, 9 * m);
-    count += rigidsym_any_nonfinite(out_p_ddot_D_rho_M, 9 * m);
-    count += rigidsym_any_nonfinite(out_p_ddot_D_rho_dot_M, 9 * m);
-    count += rigidsym_any_nonfinite(out_p_ddot_D_rho_ddot_M, 9 * m);
-    if (count == 0)
+    return count;
+}
+
+
+static RIGIDSYM_NOINLINE int64_t rigidsym_moving_frame_acceleration_with_jacobians_lanes_f32(
+    const float *RIGIDSYM_RESTRICT in_o_ddot,
+    const float *RIGIDSYM_RESTRICT in_Q,
+    const float *RIGIDSYM_RESTRICT in_omega,
+    const float *RIGIDSYM_RESTRICT in_omega_dot,
+    const float *RIGIDSYM_RESTRICT in_rho_M,
+    const float *RIGIDSYM_RESTRICT in_rho_dot_M,
+    const float *RIGIDSYM_RESTRICT in_rho_ddot_M,
+    float *RIGIDSYM_RESTRICT out_p_ddot,
+    float *RIGIDSYM_RESTRICT out_p_ddot_D_o_ddot,
+    float *RIGIDSYM_RESTRICT out_p_ddot_D_Q,
+    float *RIGIDSYM_RESTRICT out_p_ddot_D_omega,
+    float *RIGIDSYM_RESTRICT out_p_ddot_D_omega_dot,
+    float *RIGIDSYM_RESTRICT out_p_ddot_D_rho_M,
+    float *RIGIDSYM_RESTRICT out_p_ddot_D_rho_dot_M,
+    float *RIGIDSYM_RESTRICT out_p_ddot_D_rho_ddot_M)
+{
+    int64_t count = 0;
+    /* No division, root or branch: nothing to count per sample. A plain loop; the
+     * compiler's cost model decides on vectorisation (forcing it turns the strided
+     * row-major loads into gathers, measured slower). */
+    for (int64_t j = 0; j < RIGIDSYM_LANES_F32; ++j) {
+        (void)rigidsym_moving_frame_acceleration_with_jacobians_sample_f32(
+            in_o_ddot + 3 * j,
+            in_Q + 9 * j,
+            in_omega + 3 * j,
+            in_omega_dot + 3 * j,
+            in_rho_M + 3 * j,
+            in_rho_dot_M + 3 * j,
+            in_rho_ddot_M + 3 * j,
+            out_p_ddot + 3 * j,
+            out_p_ddot_D_o_ddot + 9 * j,
+            out_p_ddot_D_Q + 27 * j,
+            out_p_ddot_D_omega + 9 * j,
+            out_p_ddot_D_omega_dot + 9 * j,
+            out_p_ddot_D_rho_M + 9 * j,
+            out_p_ddot_D_rho_dot_M + 9 * j,
+            out_p_ddot_D_rho_ddot_M + 9 * j);
+
+    }
+    return count;
+}
+
+
+static RIGIDSYM_NOINLINE int64_t rigidsym_moving_frame_acceleration_with_jacobians_block(
+    int64_t m, int64_t nl,
+    const double *RIGIDSYM_RESTRICT in_o_ddot,
+    const double *RIGIDSYM_RESTRICT in_Q,
+    const double *RIGIDSYM_RESTRICT in_omega,
+    const double *RIGIDSYM_RESTRICT in_omega_dot,
+    const double *RIGIDSYM_RESTRICT in_rho_M,
+    const double *RIGIDSYM_RESTRICT in_rho_dot_M,
+    const double *RIGIDSYM_RESTRICT in_rho_ddot_M,
+    double *RIGIDSYM_RESTRICT out_p_ddot,
+    double *RIGIDSYM_RESTRICT out_p_ddot_D_o_ddot,
+    double *RIGIDSYM_RESTRICT out_p_ddot_D_Q,
+    double *RIGIDSYM_RESTRICT out_p_ddot_D_omega,
+    double *RIGIDSYM_RESTRICT out_p_ddot_D_omega_dot,
+    double *RIGIDSYM_RESTRICT out_p_ddot_D_rho_M,
+    double *RIGIDSYM_RESTRICT out_p_ddot_D_rho_dot_M,
+    double *RIGIDSYM_RESTRICT out_p_ddot_D_rho_ddot_M)
+{
+    int64_t mask[RIGIDSYM_CHECK_BLOCK / RIGIDSYM_LANES], any = 0;
+    for (int64_t g = 0; g * RIGIDSYM_LANES < nl; ++g) {
+        const int64_t j = g * RIGIDSYM_LANES;
+        mask[g] = rigidsym_moving_frame_acceleration_with_jacobians_lanes(
+            in_o_ddot + 3 * j,
+            in_Q + 9 * j,
+            in_omega + 3 * j,
+            in_omega_dot + 3 * j,
+            in_rho_M + 3 * j,
+            in_rho_dot_M + 3 * j,
+            in_rho_ddot_M + 3 * j,
+            out_p_ddot + 3 * j,
+            out_p_ddot_D_o_ddot + 9 * j,
+            out_p_ddot_D_Q + 27 * j,
+            out_p_ddot_D_omega + 9 * j,
+            out_p_ddot_D_omega_dot + 9 * j,
+            out_p_ddot_D_rho_M + 9 * j,
+            out_p_ddot_D_rho_dot_M + 9 * j,
+            out_p_ddot_D_rho_ddot_M + 9 * j);
+
+        any |= mask[g];
+    }
+    any |= rigidsym_any_nonfinite(out_p_ddot, 3 * m);
+    any |= rigidsym_any_nonfinite(out_p_ddot_D_o_ddot, 9 * m);
+    any |= rigidsym_any_nonfinite(out_p_ddot_D_Q, 27 * m);
+    any |= rigidsym_any_nonfinite(out_p_ddot_D_omega, 9 * m);
+    any |= rigidsym_any_nonfinite(out_p_ddot_D_omega_dot, 9 * m);
+    any |= rigidsym_any_nonfinite(out_p_ddot_D_rho_M, 9 * m);
+    any |= rigidsym_any_nonfinite(out_p_ddot_D_rho_dot_M, 9 * m);
+    any |= rigidsym_any_nonfinite(out_p_ddot_D_rho_ddot_M, 9 * m);
+    if (any == 0)
         return 0;
-    count = 0;
+    int64_t count = 0;
     for (int64_t j = 0; j < m; ++j) {
-        int flagged = 0;
+        int flagged = (int)((mask[j / RIGIDSYM_LANES] >> (j % RIGIDSYM_LANES)) & 1);
         flagged |= rigidsym_any_nonfinite(out_p_ddot + 3 * j, 3);
         flagged |= rigidsym_any_nonfinite(out_p_ddot_D_o_ddot + 9 * j, 9);
         flagged |= rigidsym_any_nonfinite(out_p_ddot_D_Q + 27 * j, 27);
@@ -119,7 +210,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_moving_frame_acceleration_with_jacobia
 
 
 static RIGIDSYM_NOINLINE int64_t rigidsym_moving_frame_acceleration_with_jacobians_block_f32(
-    int64_t m,
+    int64_t m, int64_t nl,
     const float *RIGIDSYM_RESTRICT in_o_ddot,
     const float *RIGIDSYM_RESTRICT in_Q,
     const float *RIGIDSYM_RESTRICT in_omega,
@@ -136,12 +227,10 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_moving_frame_acceleration_with_jacobia
     float *RIGIDSYM_RESTRICT out_p_ddot_D_rho_dot_M,
     float *RIGIDSYM_RESTRICT out_p_ddot_D_rho_ddot_M)
 {
-    int64_t count = 0;
-    /* No division, root or branch: nothing to count per sample. A plain loop; the
-     * compiler's cost model decides on vectorisation (forcing it turns the strided
-     * row-major loads into gathers, measured slower). */
-    for (int64_t j = 0; j < RIGIDSYM_CHECK_BLOCK; ++j) {
-        (void)rigidsym_moving_frame_acceleration_with_jacobians_sample_f32(
+    int64_t mask[RIGIDSYM_CHECK_BLOCK / RIGIDSYM_LANES_F32], any = 0;
+    for (int64_t g = 0; g * RIGIDSYM_LANES_F32 < nl; ++g) {
+        const int64_t j = g * RIGIDSYM_LANES_F32;
+        mask[g] = rigidsym_moving_frame_acceleration_with_jacobians_lanes_f32(
             in_o_ddot + 3 * j,
             in_Q + 9 * j,
             in_omega + 3 * j,
@@ -158,20 +247,21 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_moving_frame_acceleration_with_jacobia
             out_p_ddot_D_rho_dot_M + 9 * j,
             out_p_ddot_D_rho_ddot_M + 9 * j);
 
+        any |= mask[g];
     }
-    count += rigidsym_any_nonfinite_f32(out_p_ddot, 3 * m);
-    count += rigidsym_any_nonfinite_f32(out_p_ddot_D_o_ddot, 9 * m);
-    count += rigidsym_any_nonfinite_f32(out_p_ddot_D_Q, 27 * m);
-    count += rigidsym_any_nonfinite_f32(out_p_ddot_D_omega, 9 * m);
-    count += rigidsym_any_nonfinite_f32(out_p_ddot_D_omega_dot, 9 * m);
-    count += rigidsym_any_nonfinite_f32(out_p_ddot_D_rho_M, 9 * m);
-    count += rigidsym_any_nonfinite_f32(out_p_ddot_D_rho_dot_M, 9 * m);
-    count += rigidsym_any_nonfinite_f32(out_p_ddot_D_rho_ddot_M, 9 * m);
-    if (count == 0)
+    any |= rigidsym_any_nonfinite_f32(out_p_ddot, 3 * m);
+    any |= rigidsym_any_nonfinite_f32(out_p_ddot_D_o_ddot, 9 * m);
+    any |= rigidsym_any_nonfinite_f32(out_p_ddot_D_Q, 27 * m);
+    any |= rigidsym_any_nonfinite_f32(out_p_ddot_D_omega, 9 * m);
+    any |= rigidsym_any_nonfinite_f32(out_p_ddot_D_omega_dot, 9 * m);
+    any |= rigidsym_any_nonfinite_f32(out_p_ddot_D_rho_M, 9 * m);
+    any |= rigidsym_any_nonfinite_f32(out_p_ddot_D_rho_dot_M, 9 * m);
+    any |= rigidsym_any_nonfinite_f32(out_p_ddot_D_rho_ddot_M, 9 * m);
+    if (any == 0)
         return 0;
-    count = 0;
+    int64_t count = 0;
     for (int64_t j = 0; j < m; ++j) {
-        int flagged = 0;
+        int flagged = (int)((mask[j / RIGIDSYM_LANES_F32] >> (j % RIGIDSYM_LANES_F32)) & 1);
         flagged |= rigidsym_any_nonfinite_f32(out_p_ddot + 3 * j, 3);
         flagged |= rigidsym_any_nonfinite_f32(out_p_ddot_D_o_ddot + 9 * j, 9);
         flagged |= rigidsym_any_nonfinite_f32(out_p_ddot_D_Q + 27 * j, 27);
@@ -222,8 +312,8 @@ static int64_t rigidsym_moving_frame_acceleration_with_jacobians_run(
     double *RIGIDSYM_RESTRICT out_p_ddot_D_rho_dot_M,
     double *RIGIDSYM_RESTRICT out_p_ddot_D_rho_ddot_M)
 {
-    if (m == RIGIDSYM_CHECK_BLOCK)
-        return rigidsym_moving_frame_acceleration_with_jacobians_block(m,
+    if (m % RIGIDSYM_LANES == 0)
+        return rigidsym_moving_frame_acceleration_with_jacobians_block(m, m,
             in_o_ddot + 3 * i0,
             in_Q + 9 * i0,
             in_omega + 3 * i0,
@@ -240,6 +330,7 @@ static int64_t rigidsym_moving_frame_acceleration_with_jacobians_run(
             out_p_ddot_D_rho_dot_M + 9 * i0,
             out_p_ddot_D_rho_ddot_M + 9 * i0);
 
+    const int64_t nl = (m + RIGIDSYM_LANES - 1) / RIGIDSYM_LANES * RIGIDSYM_LANES;
     double pad_o_ddot[3 * RIGIDSYM_CHECK_BLOCK];
     double pad_Q[9 * RIGIDSYM_CHECK_BLOCK];
     double pad_omega[3 * RIGIDSYM_CHECK_BLOCK];
@@ -255,7 +346,7 @@ static int64_t rigidsym_moving_frame_acceleration_with_jacobians_run(
     double pad_p_ddot_D_rho_M[9 * RIGIDSYM_CHECK_BLOCK];
     double pad_p_ddot_D_rho_dot_M[9 * RIGIDSYM_CHECK_BLOCK];
     double pad_p_ddot_D_rho_ddot_M[9 * RIGIDSYM_CHECK_BLOCK];
-    for (int64_t j = 0; j < RIGIDSYM_CHECK_BLOCK; ++j) {
+    for (int64_t j = 0; j < nl; ++j) {
         const int64_t s = i0 + (j < m ? j : m - 1);
         memcpy(pad_o_ddot + 3 * j, in_o_ddot + 3 * s,
                3 * sizeof(double));
@@ -272,7 +363,7 @@ static int64_t rigidsym_moving_frame_acceleration_with_jacobians_run(
         memcpy(pad_rho_ddot_M + 3 * j, in_rho_ddot_M + 3 * s,
                3 * sizeof(double));
     }
-    const int64_t count = rigidsym_moving_frame_acceleration_with_jacobians_block(m,
+    const int64_t count = rigidsym_moving_frame_acceleration_with_jacobians_block(m, nl,
         pad_o_ddot,
         pad_Q,
         pad_omega,
@@ -318,8 +409,8 @@ static int64_t rigidsym_moving_frame_acceleration_with_jacobians_run_f32(
     float *RIGIDSYM_RESTRICT out_p_ddot_D_rho_dot_M,
     float *RIGIDSYM_RESTRICT out_p_ddot_D_rho_ddot_M)
 {
-    if (m == RIGIDSYM_CHECK_BLOCK)
-        return rigidsym_moving_frame_acceleration_with_jacobians_block_f32(m,
+    if (m % RIGIDSYM_LANES_F32 == 0)
+        return rigidsym_moving_frame_acceleration_with_jacobians_block_f32(m, m,
             in_o_ddot + 3 * i0,
             in_Q + 9 * i0,
             in_omega + 3 * i0,
@@ -336,6 +427,7 @@ static int64_t rigidsym_moving_frame_acceleration_with_jacobians_run_f32(
             out_p_ddot_D_rho_dot_M + 9 * i0,
             out_p_ddot_D_rho_ddot_M + 9 * i0);
 
+    const int64_t nl = (m + RIGIDSYM_LANES_F32 - 1) / RIGIDSYM_LANES_F32 * RIGIDSYM_LANES_F32;
     float pad_o_ddot[3 * RIGIDSYM_CHECK_BLOCK];
     float pad_Q[9 * RIGIDSYM_CHECK_BLOCK];
     float pad_omega[3 * RIGIDSYM_CHECK_BLOCK];
@@ -351,7 +443,7 @@ static int64_t rigidsym_moving_frame_acceleration_with_jacobians_run_f32(
     float pad_p_ddot_D_rho_M[9 * RIGIDSYM_CHECK_BLOCK];
     float pad_p_ddot_D_rho_dot_M[9 * RIGIDSYM_CHECK_BLOCK];
     float pad_p_ddot_D_rho_ddot_M[9 * RIGIDSYM_CHECK_BLOCK];
-    for (int64_t j = 0; j < RIGIDSYM_CHECK_BLOCK; ++j) {
+    for (int64_t j = 0; j < nl; ++j) {
         const int64_t s = i0 + (j < m ? j : m - 1);
         memcpy(pad_o_ddot + 3 * j, in_o_ddot + 3 * s,
                3 * sizeof(float));
@@ -368,7 +460,7 @@ static int64_t rigidsym_moving_frame_acceleration_with_jacobians_run_f32(
         memcpy(pad_rho_ddot_M + 3 * j, in_rho_ddot_M + 3 * s,
                3 * sizeof(float));
     }
-    const int64_t count = rigidsym_moving_frame_acceleration_with_jacobians_block_f32(m,
+    const int64_t count = rigidsym_moving_frame_acceleration_with_jacobians_block_f32(m, nl,
         pad_o_ddot,
         pad_Q,
         pad_omega,

@@ -84,6 +84,18 @@ double cos(double);
  * faster than 256). */
 #define RIGIDSYM_CHECK_BLOCK 64
 
+/* Samples per call of a kernel's lanes function, which computes every sample of every batch,
+ * in float64 and in float32: a multiple of the vector width of every path (2, 4, 8 doubles and
+ * 4, 8, 16 floats on x86-64-v2, -v3, -v4), so that no lane runs a remainder loop, and the
+ * least work a one-sample call does. Divisors of the block size (64), at most 64 (a lane
+ * mask is an int64_t). */
+#define RIGIDSYM_LANES 8
+#define RIGIDSYM_LANES_F32 16
+/* float64 kernels with sin/cos: each lanes call has a fixed cost (the vector sin/cos calls,
+ * the local aligned arrays) that 8 lanes paid visibly at N = 1e6 (1.2-1.4x on H_tilde,
+ * N_matrix, screw_axis_point against blocks of 64, measured) */
+#define RIGIDSYM_LANES_TRIG 16
+
 /* Nonzero when one of the len doubles at p is infinite or NaN (exponent bits all ones).
  * Integer arithmetic: adding 1 to an all-ones exponent carries into the sign bit, so an OR
  * reduction over the sums vectorises without reassociating floating-point operations. */

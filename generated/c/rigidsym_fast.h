@@ -1275,6 +1275,12 @@ static const rigidsym_entry rigidsym_entries[RIGIDSYM_NKERNELS] = {
  * validation tolerances (float64, float32) of rigidsym.kernels. */
 static PyObject *rigidsym_general = NULL;
 static PyObject *rigidsym_threads_fn = NULL;
+/* os.environ's own mapping and its key RIGIDSYM_NUM_THREADS (set by _environ): what
+ * rigidsym.kernels.get_num_threads reads, and a dict lookup where getenv() scans the whole
+ * environment (a tenth of a one-sample call, measured) */
+static PyObject *rigidsym_env = NULL, *rigidsym_env_key = NULL;
+/* the dtypes of the outputs: float64, float32 */
+static PyArray_Descr *rigidsym_descr[2];
 static Py_ssize_t rigidsym_min_parallel = 16384;
 static double rigidsym_tol[2][2] = {{1e-8, 1e-8}, {1e-8, 1e-8}};   /* [f32][unit, ortho] */
 static int rigidsym_enabled = 1;   /* 0 while the NumPy backend is selected */
@@ -1587,21 +1593,26 @@ static int rigidsym_keywords(PyObject *const *args, Py_ssize_t nargs, PyObject *
     return 0;
 }
 
-/* The entry point of kernel k. */
-static PyObject *rigidsym_fast(int k, PyObject *const *args, Py_ssize_t nargs,
-                               PyObject *kwnames)
+/* Whether RIGIDSYM_NUM_THREADS is set (then get_num_threads runs, and raises for a bad
+ * value, whatever the batch size, as on the Python path). */
+static int rigidsym_env_threads(void)
+{
+    if (rigidsym_env == NULL)
+        return getenv("RIGIDSYM_NUM_THREADS") != NULL;
+    PyObject *v = PyDict_GetItemWithError(rigidsym_env, rigidsym_env_key);
+    if (v == NULL && PyErr_Occurred()) {
+        PyErr_Clear();
+        return 1;                  /* let get_num_threads decide */
+    }
+    return v != NULL;
+}
+
+/* Kernel k on its nin inputs args[0..nin) and the keywords kw[0..3] (out, check,
+ * on_singular, threads). */
+static PyObject *rigidsym_run(int k, PyObject *const *args, PyObject *const *kw)
 {
     const rigidsym_entry *E = &rigidsym_entries[k];
     const int nin = E->nin, nout = E->nout;
-    PyObject *kw[4];
-    if (nargs < nin || nargs > nin + 4) {
-        PyErr_Format(PyExc_TypeError, "%U() takes %d positional arguments (the inputs) and "
-                     "4 optional ones (out, check, on_singular, threads); got %zd",
-                     rigidsym_names[k], nin, nargs);
-        return NULL;
-    }
-    if (rigidsym_keywords(args, nargs, kwnames, nin, kw) < 0)
-        return NULL;
     PyObject *out = kw[0], *check = kw[1], *on_singular = kw[2], *threads = kw[3];
     if (!rigidsym_enabled || (check != Py_True && check != Py_False))
         return rigidsym_slow(k, args, nin, kw);
@@ -1668,8 +1679,10 @@ static PyObject *rigidsym_fast(int k, PyObject *const *args, Py_ssize_t nargs,
                 return rigidsym_slow(k, args, nin, kw);
             memcpy(dims, bshape, bnd * sizeof(npy_intp));
             memcpy(dims + bnd, s->dims, s->nd * sizeof(npy_intp));
-            Y[o] = (PyArrayObject *)PyArray_SimpleNew(bnd + s->nd, dims,
-                                                      f32 ? NPY_FLOAT : NPY_DOUBLE);
+            Py_INCREF(rigidsym_descr[f32]);          /* stolen */
+            Y[o] = (PyArrayObject *)PyArray_NewFromDescr(&PyArray_Type, rigidsym_descr[f32],
+                                                         bnd + s->nd, dims, NULL, NULL, 0,
+                                                         NULL);
             if (Y[o] == NULL) {
                 for (int j = 0; j < o; ++j)
                     Py_DECREF(Y[j]);
@@ -1757,7 +1770,7 @@ static PyObject *rigidsym_fast(int k, PyObject *const *args, Py_ssize_t nargs,
         }
     }
     int t = 1;
-    if (n >= rigidsym_min_parallel || (threads == Py_None && getenv("RIGIDSYM_NUM_THREADS"))) {
+    if (n >= rigidsym_min_parallel || (threads == Py_None && rigidsym_env_threads())) {
         if (threads == Py_None) {
             /* the process-wide count (and its errors): rigidsym.kernels.get_num_threads */
             PyObject *r = PyObject_CallNoArgs(rigidsym_threads_fn);
@@ -1811,6 +1824,63 @@ done:
     if (fallback)
         return rigidsym_slow(k, args, nin, kw);
     return result;
+}
+
+/* The entry point of kernel k: the inputs positionally, then out, check, on_singular,
+ * threads, positionally or by name. */
+static PyObject *rigidsym_fast(int k, PyObject *const *args, Py_ssize_t nargs,
+                               PyObject *kwnames)
+{
+    const int nin = rigidsym_entries[k].nin;
+    PyObject *kw[4];
+    if (nargs < nin || nargs > nin + 4) {
+        PyErr_Format(PyExc_TypeError, "%U() takes %d positional arguments (the inputs) and "
+                     "4 optional ones (out, check, on_singular, threads); got %zd",
+                     rigidsym_names[k], nin, nargs);
+        return NULL;
+    }
+    if (rigidsym_keywords(args, nargs, kwnames, nin, kw) < 0)
+        return NULL;
+    return rigidsym_run(k, args, kw);
+}
+
+/* The public kernels themselves (the functions of the generated api.py) call C directly:
+ * _install sets each function's vectorcall (PyFunction_SetVectorcall, CPython's API for
+ * this; on 3.11 the same two fields by hand) to rigidsym_vc_k below, which takes a call
+ * with exactly the inputs positionally and keywords among out, check, on_singular, threads,
+ * and hands every other call (inputs by name, a wrong count, an unknown keyword) to the
+ * function's own vectorcall, that is, to its Python body, unchanged: the signature, the
+ * errors, help() and pickling stay the function's. This saves the Python frame of the
+ * function (about 1100 instructions, a third of a one-sample call). The function's
+ * keyword-only defaults are read at _install (the same four for every kernel). */
+static vectorcallfunc rigidsym_pyvc[RIGIDSYM_NKERNELS];
+static PyObject *rigidsym_funcs[RIGIDSYM_NKERNELS];
+static PyObject *rigidsym_kwdef[4];
+
+static PyObject *rigidsym_vcall(int k, PyObject *f, PyObject *const *args, size_t nargsf,
+                               PyObject *kwnames)
+{
+    const int nin = rigidsym_entries[k].nin;
+    const Py_ssize_t nkw = kwnames == NULL ? 0 : PyTuple_GET_SIZE(kwnames);
+    if (PyVectorcall_NARGS(nargsf) != nin || !rigidsym_enabled)
+        return rigidsym_pyvc[k](f, args, nargsf, kwnames);
+    PyObject *kw[4] = {rigidsym_kwdef[0], rigidsym_kwdef[1], rigidsym_kwdef[2],
+                       rigidsym_kwdef[3]};
+    for (Py_ssize_t i = 0; i < nkw; ++i) {
+        PyObject *key = PyTuple_GET_ITEM(kwnames, i);
+        int j = 0;
+        while (j < 4 && key != rigidsym_kw[j])
+            ++j;
+        if (j == 4) {    /* a name not interned (**kwargs)? */
+            j = 0;
+            while (j < 4 && PyUnicode_Compare(key, rigidsym_kw[j]) != 0)
+                ++j;
+        }
+        if (j == 4)      /* an input by name, an unknown keyword: the function decides */
+            return rigidsym_pyvc[k](f, args, nargsf, kwnames);
+        kw[j] = args[nin + i];
+    }
+    return rigidsym_run(k, args, kw);
 }
 
 static PyObject *rigidsym_entry_0(PyObject *self, PyObject *const *args,
@@ -2618,6 +2688,874 @@ static PyObject *rigidsym_entry_133(PyObject *self, PyObject *const *args,
     return rigidsym_fast(133, args, nargs, kwnames);
 }
 
+static PyObject *rigidsym_vc_0(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(0, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_1(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(1, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_2(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(2, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_3(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(3, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_4(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(4, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_5(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(5, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_6(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(6, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_7(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(7, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_8(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(8, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_9(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(9, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_10(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(10, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_11(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(11, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_12(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(12, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_13(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(13, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_14(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(14, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_15(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(15, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_16(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(16, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_17(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(17, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_18(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(18, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_19(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(19, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_20(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(20, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_21(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(21, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_22(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(22, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_23(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(23, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_24(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(24, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_25(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(25, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_26(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(26, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_27(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(27, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_28(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(28, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_29(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(29, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_30(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(30, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_31(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(31, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_32(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(32, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_33(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(33, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_34(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(34, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_35(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(35, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_36(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(36, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_37(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(37, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_38(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(38, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_39(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(39, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_40(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(40, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_41(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(41, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_42(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(42, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_43(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(43, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_44(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(44, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_45(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(45, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_46(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(46, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_47(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(47, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_48(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(48, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_49(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(49, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_50(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(50, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_51(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(51, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_52(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(52, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_53(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(53, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_54(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(54, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_55(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(55, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_56(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(56, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_57(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(57, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_58(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(58, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_59(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(59, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_60(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(60, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_61(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(61, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_62(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(62, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_63(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(63, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_64(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(64, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_65(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(65, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_66(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(66, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_67(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(67, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_68(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(68, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_69(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(69, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_70(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(70, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_71(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(71, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_72(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(72, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_73(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(73, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_74(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(74, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_75(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(75, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_76(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(76, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_77(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(77, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_78(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(78, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_79(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(79, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_80(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(80, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_81(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(81, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_82(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(82, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_83(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(83, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_84(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(84, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_85(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(85, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_86(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(86, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_87(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(87, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_88(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(88, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_89(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(89, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_90(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(90, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_91(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(91, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_92(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(92, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_93(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(93, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_94(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(94, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_95(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(95, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_96(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(96, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_97(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(97, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_98(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(98, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_99(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(99, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_100(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(100, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_101(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(101, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_102(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(102, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_103(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(103, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_104(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(104, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_105(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(105, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_106(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(106, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_107(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(107, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_108(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(108, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_109(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(109, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_110(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(110, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_111(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(111, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_112(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(112, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_113(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(113, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_114(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(114, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_115(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(115, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_116(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(116, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_117(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(117, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_118(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(118, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_119(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(119, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_120(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(120, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_121(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(121, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_122(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(122, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_123(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(123, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_124(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(124, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_125(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(125, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_126(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(126, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_127(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(127, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_128(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(128, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_129(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(129, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_130(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(130, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_131(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(131, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_132(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(132, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_133(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(133, f, args, nargsf, kwnames);
+}
+
+static const vectorcallfunc rigidsym_vcs[RIGIDSYM_NKERNELS] = {
+    rigidsym_vc_0,
+    rigidsym_vc_1,
+    rigidsym_vc_2,
+    rigidsym_vc_3,
+    rigidsym_vc_4,
+    rigidsym_vc_5,
+    rigidsym_vc_6,
+    rigidsym_vc_7,
+    rigidsym_vc_8,
+    rigidsym_vc_9,
+    rigidsym_vc_10,
+    rigidsym_vc_11,
+    rigidsym_vc_12,
+    rigidsym_vc_13,
+    rigidsym_vc_14,
+    rigidsym_vc_15,
+    rigidsym_vc_16,
+    rigidsym_vc_17,
+    rigidsym_vc_18,
+    rigidsym_vc_19,
+    rigidsym_vc_20,
+    rigidsym_vc_21,
+    rigidsym_vc_22,
+    rigidsym_vc_23,
+    rigidsym_vc_24,
+    rigidsym_vc_25,
+    rigidsym_vc_26,
+    rigidsym_vc_27,
+    rigidsym_vc_28,
+    rigidsym_vc_29,
+    rigidsym_vc_30,
+    rigidsym_vc_31,
+    rigidsym_vc_32,
+    rigidsym_vc_33,
+    rigidsym_vc_34,
+    rigidsym_vc_35,
+    rigidsym_vc_36,
+    rigidsym_vc_37,
+    rigidsym_vc_38,
+    rigidsym_vc_39,
+    rigidsym_vc_40,
+    rigidsym_vc_41,
+    rigidsym_vc_42,
+    rigidsym_vc_43,
+    rigidsym_vc_44,
+    rigidsym_vc_45,
+    rigidsym_vc_46,
+    rigidsym_vc_47,
+    rigidsym_vc_48,
+    rigidsym_vc_49,
+    rigidsym_vc_50,
+    rigidsym_vc_51,
+    rigidsym_vc_52,
+    rigidsym_vc_53,
+    rigidsym_vc_54,
+    rigidsym_vc_55,
+    rigidsym_vc_56,
+    rigidsym_vc_57,
+    rigidsym_vc_58,
+    rigidsym_vc_59,
+    rigidsym_vc_60,
+    rigidsym_vc_61,
+    rigidsym_vc_62,
+    rigidsym_vc_63,
+    rigidsym_vc_64,
+    rigidsym_vc_65,
+    rigidsym_vc_66,
+    rigidsym_vc_67,
+    rigidsym_vc_68,
+    rigidsym_vc_69,
+    rigidsym_vc_70,
+    rigidsym_vc_71,
+    rigidsym_vc_72,
+    rigidsym_vc_73,
+    rigidsym_vc_74,
+    rigidsym_vc_75,
+    rigidsym_vc_76,
+    rigidsym_vc_77,
+    rigidsym_vc_78,
+    rigidsym_vc_79,
+    rigidsym_vc_80,
+    rigidsym_vc_81,
+    rigidsym_vc_82,
+    rigidsym_vc_83,
+    rigidsym_vc_84,
+    rigidsym_vc_85,
+    rigidsym_vc_86,
+    rigidsym_vc_87,
+    rigidsym_vc_88,
+    rigidsym_vc_89,
+    rigidsym_vc_90,
+    rigidsym_vc_91,
+    rigidsym_vc_92,
+    rigidsym_vc_93,
+    rigidsym_vc_94,
+    rigidsym_vc_95,
+    rigidsym_vc_96,
+    rigidsym_vc_97,
+    rigidsym_vc_98,
+    rigidsym_vc_99,
+    rigidsym_vc_100,
+    rigidsym_vc_101,
+    rigidsym_vc_102,
+    rigidsym_vc_103,
+    rigidsym_vc_104,
+    rigidsym_vc_105,
+    rigidsym_vc_106,
+    rigidsym_vc_107,
+    rigidsym_vc_108,
+    rigidsym_vc_109,
+    rigidsym_vc_110,
+    rigidsym_vc_111,
+    rigidsym_vc_112,
+    rigidsym_vc_113,
+    rigidsym_vc_114,
+    rigidsym_vc_115,
+    rigidsym_vc_116,
+    rigidsym_vc_117,
+    rigidsym_vc_118,
+    rigidsym_vc_119,
+    rigidsym_vc_120,
+    rigidsym_vc_121,
+    rigidsym_vc_122,
+    rigidsym_vc_123,
+    rigidsym_vc_124,
+    rigidsym_vc_125,
+    rigidsym_vc_126,
+    rigidsym_vc_127,
+    rigidsym_vc_128,
+    rigidsym_vc_129,
+    rigidsym_vc_130,
+    rigidsym_vc_131,
+    rigidsym_vc_132,
+    rigidsym_vc_133,
+};
+
+static void rigidsym_set_vectorcall(PyObject *f, vectorcallfunc vc)
+{
+#if PY_VERSION_HEX >= 0x030C0000
+    PyFunction_SetVectorcall((PyFunctionObject *)f, vc);
+#else
+    /* what 3.12's PyFunction_SetVectorcall does: version 0 keeps the interpreter from
+     * specialising calls of f into frame pushes that skip its vectorcall */
+    ((PyFunctionObject *)f)->func_version = 0;
+    ((PyFunctionObject *)f)->vectorcall = vc;
+#endif
+}
+
+PyDoc_STRVAR(rigidsym_install_doc,
+"_install(funcs, kwdefaults)\n\n"
+"Make the Python functions funcs (a tuple in `kernels` order, None where a kernel has none)\n"
+"call their entry points directly for calls of their inputs positionally and the keywords\n"
+"out, check, on_singular, threads (whose defaults are kwdefaults, in that order); every other\n"
+"call runs the function as before. _install(None, None) undoes it.");
+
+static PyObject *rigidsym_install(PyObject *self, PyObject *const *args, Py_ssize_t nargs)
+{
+    (void)self;
+    if (nargs != 2) {
+        PyErr_SetString(PyExc_TypeError, "_install: expected (funcs, kwdefaults)");
+        return NULL;
+    }
+    for (int k = 0; k < RIGIDSYM_NKERNELS; ++k)
+        if (rigidsym_funcs[k] != NULL) {
+            rigidsym_set_vectorcall(rigidsym_funcs[k], rigidsym_pyvc[k]);
+            Py_CLEAR(rigidsym_funcs[k]);
+        }
+    if (args[0] == Py_None)
+        Py_RETURN_NONE;
+    if (!PyTuple_CheckExact(args[0]) || PyTuple_GET_SIZE(args[0]) != RIGIDSYM_NKERNELS
+            || !PyTuple_CheckExact(args[1]) || PyTuple_GET_SIZE(args[1]) != 4) {
+        PyErr_SetString(PyExc_TypeError, "_install: expected a tuple of one function (or None) "
+                        "per kernel and a tuple of 4 defaults");
+        return NULL;
+    }
+    for (int j = 0; j < 4; ++j) {
+        Py_INCREF(PyTuple_GET_ITEM(args[1], j));
+        Py_XSETREF(rigidsym_kwdef[j], PyTuple_GET_ITEM(args[1], j));
+    }
+    for (int k = 0; k < RIGIDSYM_NKERNELS; ++k) {
+        PyObject *f = PyTuple_GET_ITEM(args[0], k);
+        if (f == Py_None)
+            continue;
+        if (!PyFunction_Check(f)) {
+            PyErr_Format(PyExc_TypeError, "_install: %U: expected a Python function",
+                         rigidsym_names[k]);
+            return NULL;
+        }
+        Py_INCREF(f);
+        rigidsym_funcs[k] = f;
+        rigidsym_pyvc[k] = ((PyFunctionObject *)f)->vectorcall;
+        rigidsym_set_vectorcall(f, rigidsym_vcs[k]);
+    }
+    Py_RETURN_NONE;
+}
+
 static PyMethodDef rigidsym_entry_defs[RIGIDSYM_NKERNELS] = {
     {"H_matrix", (PyCFunction)(void (*)(void))rigidsym_entry_0,
      METH_FASTCALL | METH_KEYWORDS, "H_matrix(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel H_matrix (rigidsym.kernels)"},
@@ -2921,6 +3859,24 @@ static PyObject *rigidsym_bind(PyObject *self, PyObject *const *args, Py_ssize_t
     Py_RETURN_NONE;
 }
 
+PyDoc_STRVAR(rigidsym_environ_doc,
+"_environ(data, key)\n\nThe dict behind os.environ (os.environ._data) and its key for\n"
+"RIGIDSYM_NUM_THREADS: the entry points look the variable up there, not with getenv().");
+
+static PyObject *rigidsym_environ(PyObject *self, PyObject *const *args, Py_ssize_t nargs)
+{
+    (void)self;
+    if (nargs != 2 || !PyDict_CheckExact(args[0])) {
+        PyErr_SetString(PyExc_TypeError, "_environ: expected (dict, key)");
+        return NULL;
+    }
+    Py_INCREF(args[0]);
+    Py_INCREF(args[1]);
+    Py_XSETREF(rigidsym_env, args[0]);
+    Py_XSETREF(rigidsym_env_key, args[1]);
+    Py_RETURN_NONE;
+}
+
 PyDoc_STRVAR(rigidsym_enable_doc,
 "_enable(flag)\n\nWhether the entry points run the compiled kernels (False: every call takes\n"
 "the Python path, as with the NumPy backend).");
@@ -2937,7 +3893,9 @@ static PyObject *rigidsym_enable(PyObject *self, PyObject *flag)
 
 #define RIGIDSYM_FAST_METHODS                                                              \
     {"_bind", (PyCFunction)(void (*)(void))rigidsym_bind, METH_FASTCALL, rigidsym_bind_doc}, \
-    {"_enable", (PyCFunction)rigidsym_enable, METH_O, rigidsym_enable_doc},
+    {"_enable", (PyCFunction)rigidsym_enable, METH_O, rigidsym_enable_doc}, \
+    {"_environ", (PyCFunction)(void (*)(void))rigidsym_environ, METH_FASTCALL, rigidsym_environ_doc}, \
+    {"_install", (PyCFunction)(void (*)(void))rigidsym_install, METH_FASTCALL, rigidsym_install_doc},
 
 /* Module exec: NumPy's C API, the interned names, and the attribute `entries` (the entry
  * points in kernels.json order). */
@@ -2945,6 +3903,12 @@ static int rigidsym_fast_init(PyObject *m)
 {
     if (PyArray_ImportNumPyAPI() < 0)
         return -1;
+    if (rigidsym_descr[0] == NULL) {
+        rigidsym_descr[0] = PyArray_DescrFromType(NPY_DOUBLE);
+        rigidsym_descr[1] = PyArray_DescrFromType(NPY_FLOAT);
+        if (rigidsym_descr[0] == NULL || rigidsym_descr[1] == NULL)
+            return -1;
+    }
     static const char *kw[4] = {"out", "check", "on_singular", "threads"};
     for (int i = 0; i < 4; ++i)
         if (rigidsym_kw[i] == NULL && (rigidsym_kw[i] = PyUnicode_InternFromString(kw[i])) == NULL)

@@ -10,30 +10,33 @@
  */
 #include "wrench_transfer_with_jacobians.h"
 
-/* Exactly NB = RIGIDSYM_CHECK_BLOCK samples, always: a full block of the batch, or a partial one padded.
- * One code path for every sample, so that a
- * sample's bits do not depend on where it sits in the batch: no scalar remainder of a vector
- * loop; never inlined, so that every use runs the same machine code.
- * Then one finiteness test over the first m samples' outputs (still in cache): finite inputs
- * can overflow into a non-finite output, flagged as a singular sample is. When something is
- * flagged, each sample's flag is recomputed from that sample alone (its own flag and its own
- * output row) and its row written as NaN. Returns the number of flagged samples among the
- * first m. T float: the float32 sample function (float inputs and outputs, the arithmetic of
- * the precision plan in the header; sin/cos in double from the widened inputs). */
+/* Exactly L = RIGIDSYM_LANES samples (RIGIDSYM_LANES_F32 in float32), always: every sample of every batch is computed by
+ * this one function, never inlined, so that a sample's bits do not depend on its batch or
+ * on where it sits in it (no scalar remainder of a vector loop, one vectorisation and FMA
+ * contraction for all). Returns the mask of the samples it flags (singular):
+ * bit j for sample j.
+ * T float: the float32 sample function (float inputs and outputs, the arithmetic of the
+ * precision plan in the header; sin/cos in double from the widened inputs). */
+
+/* The first nl samples (a multiple of RIGIDSYM_LANES, at most a block), of which the first m
+ * count: RIGIDSYM_LANES at a time through the lanes function, then one finiteness test over
+ * the first m samples' outputs (still in cache): finite inputs can overflow into a non-finite
+ * output, flagged as a singular sample is. When something is flagged, each sample's flag is
+ * recomputed from that sample alone (its own flag and its own output row) and its row
+ * written as NaN. Returns the number of flagged samples among the first m. */
 
 /* Samples [i0, i0 + m) of the batch, m <= RIGIDSYM_CHECK_BLOCK: a full block, or a partial one (the tail
- * of a batch, a batch of a few samples, one sample) through a padded block (its samples, then
- * copies of its last one: valid inputs). Always the same block function, so a sample's bits
- * do not depend on its batch: smaller blocks for short batches were measured to change the
- * last bit of some samples (the compiler vectorises a loop of 4 samples differently, and FMA
- * contraction with it). Returns the number flagged. */
+ * of a batch, a batch of a few samples, one sample). m a multiple of RIGIDSYM_LANES: in place;
+ * else through a block padded to the next multiple (its samples, then copies of its last one:
+ * valid inputs). Every sample goes through the same lanes function, so its bits do not depend
+ * on its batch, and one sample costs RIGIDSYM_LANES samples, not a whole padded block (which
+ * was most of the time of a one-sample call). Returns the number flagged. */
 
 /* The batch of n samples on `threads` threads: blocks are independent and the count is an
  * integer sum, so the result is the same for every thread count. One thread (or one block):
  * no OpenMP region at all (entering one, even with if(0), costs about a microsecond:
  * measured, more than a one-sample call). */
-static RIGIDSYM_NOINLINE int64_t rigidsym_wrench_transfer_with_jacobians_block(
-    int64_t m,
+static RIGIDSYM_NOINLINE int64_t rigidsym_wrench_transfer_with_jacobians_lanes(
     const double *RIGIDSYM_RESTRICT in_w_A,
     const double *RIGIDSYM_RESTRICT in_a,
     const double *RIGIDSYM_RESTRICT in_p,
@@ -46,7 +49,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_wrench_transfer_with_jacobians_block(
     /* No division, root or branch: nothing to count per sample. A plain loop; the
      * compiler's cost model decides on vectorisation (forcing it turns the strided
      * row-major loads into gathers, measured slower). */
-    for (int64_t j = 0; j < RIGIDSYM_CHECK_BLOCK; ++j) {
+    for (int64_t j = 0; j < RIGIDSYM_LANES; ++j) {
         (void)rigidsym_wrench_transfer_with_jacobians_sample(
             in_w_A + 6 * j,
             in_a + 3 * j,
@@ -57,15 +60,71 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_wrench_transfer_with_jacobians_block(
             out_w_P_D_p + 18 * j);
 
     }
-    count += rigidsym_any_nonfinite(out_w_P, 6 * m);
-    count += rigidsym_any_nonfinite(out_w_P_D_w_A, 36 * m);
-    count += rigidsym_any_nonfinite(out_w_P_D_a, 18 * m);
-    count += rigidsym_any_nonfinite(out_w_P_D_p, 18 * m);
-    if (count == 0)
+    return count;
+}
+
+
+static RIGIDSYM_NOINLINE int64_t rigidsym_wrench_transfer_with_jacobians_lanes_f32(
+    const float *RIGIDSYM_RESTRICT in_w_A,
+    const float *RIGIDSYM_RESTRICT in_a,
+    const float *RIGIDSYM_RESTRICT in_p,
+    float *RIGIDSYM_RESTRICT out_w_P,
+    float *RIGIDSYM_RESTRICT out_w_P_D_w_A,
+    float *RIGIDSYM_RESTRICT out_w_P_D_a,
+    float *RIGIDSYM_RESTRICT out_w_P_D_p)
+{
+    int64_t count = 0;
+    /* No division, root or branch: nothing to count per sample. A plain loop; the
+     * compiler's cost model decides on vectorisation (forcing it turns the strided
+     * row-major loads into gathers, measured slower). */
+    for (int64_t j = 0; j < RIGIDSYM_LANES_F32; ++j) {
+        (void)rigidsym_wrench_transfer_with_jacobians_sample_f32(
+            in_w_A + 6 * j,
+            in_a + 3 * j,
+            in_p + 3 * j,
+            out_w_P + 6 * j,
+            out_w_P_D_w_A + 36 * j,
+            out_w_P_D_a + 18 * j,
+            out_w_P_D_p + 18 * j);
+
+    }
+    return count;
+}
+
+
+static RIGIDSYM_NOINLINE int64_t rigidsym_wrench_transfer_with_jacobians_block(
+    int64_t m, int64_t nl,
+    const double *RIGIDSYM_RESTRICT in_w_A,
+    const double *RIGIDSYM_RESTRICT in_a,
+    const double *RIGIDSYM_RESTRICT in_p,
+    double *RIGIDSYM_RESTRICT out_w_P,
+    double *RIGIDSYM_RESTRICT out_w_P_D_w_A,
+    double *RIGIDSYM_RESTRICT out_w_P_D_a,
+    double *RIGIDSYM_RESTRICT out_w_P_D_p)
+{
+    int64_t mask[RIGIDSYM_CHECK_BLOCK / RIGIDSYM_LANES], any = 0;
+    for (int64_t g = 0; g * RIGIDSYM_LANES < nl; ++g) {
+        const int64_t j = g * RIGIDSYM_LANES;
+        mask[g] = rigidsym_wrench_transfer_with_jacobians_lanes(
+            in_w_A + 6 * j,
+            in_a + 3 * j,
+            in_p + 3 * j,
+            out_w_P + 6 * j,
+            out_w_P_D_w_A + 36 * j,
+            out_w_P_D_a + 18 * j,
+            out_w_P_D_p + 18 * j);
+
+        any |= mask[g];
+    }
+    any |= rigidsym_any_nonfinite(out_w_P, 6 * m);
+    any |= rigidsym_any_nonfinite(out_w_P_D_w_A, 36 * m);
+    any |= rigidsym_any_nonfinite(out_w_P_D_a, 18 * m);
+    any |= rigidsym_any_nonfinite(out_w_P_D_p, 18 * m);
+    if (any == 0)
         return 0;
-    count = 0;
+    int64_t count = 0;
     for (int64_t j = 0; j < m; ++j) {
-        int flagged = 0;
+        int flagged = (int)((mask[j / RIGIDSYM_LANES] >> (j % RIGIDSYM_LANES)) & 1);
         flagged |= rigidsym_any_nonfinite(out_w_P + 6 * j, 6);
         flagged |= rigidsym_any_nonfinite(out_w_P_D_w_A + 36 * j, 36);
         flagged |= rigidsym_any_nonfinite(out_w_P_D_a + 18 * j, 18);
@@ -87,7 +146,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_wrench_transfer_with_jacobians_block(
 
 
 static RIGIDSYM_NOINLINE int64_t rigidsym_wrench_transfer_with_jacobians_block_f32(
-    int64_t m,
+    int64_t m, int64_t nl,
     const float *RIGIDSYM_RESTRICT in_w_A,
     const float *RIGIDSYM_RESTRICT in_a,
     const float *RIGIDSYM_RESTRICT in_p,
@@ -96,12 +155,10 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_wrench_transfer_with_jacobians_block_f
     float *RIGIDSYM_RESTRICT out_w_P_D_a,
     float *RIGIDSYM_RESTRICT out_w_P_D_p)
 {
-    int64_t count = 0;
-    /* No division, root or branch: nothing to count per sample. A plain loop; the
-     * compiler's cost model decides on vectorisation (forcing it turns the strided
-     * row-major loads into gathers, measured slower). */
-    for (int64_t j = 0; j < RIGIDSYM_CHECK_BLOCK; ++j) {
-        (void)rigidsym_wrench_transfer_with_jacobians_sample_f32(
+    int64_t mask[RIGIDSYM_CHECK_BLOCK / RIGIDSYM_LANES_F32], any = 0;
+    for (int64_t g = 0; g * RIGIDSYM_LANES_F32 < nl; ++g) {
+        const int64_t j = g * RIGIDSYM_LANES_F32;
+        mask[g] = rigidsym_wrench_transfer_with_jacobians_lanes_f32(
             in_w_A + 6 * j,
             in_a + 3 * j,
             in_p + 3 * j,
@@ -110,16 +167,17 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_wrench_transfer_with_jacobians_block_f
             out_w_P_D_a + 18 * j,
             out_w_P_D_p + 18 * j);
 
+        any |= mask[g];
     }
-    count += rigidsym_any_nonfinite_f32(out_w_P, 6 * m);
-    count += rigidsym_any_nonfinite_f32(out_w_P_D_w_A, 36 * m);
-    count += rigidsym_any_nonfinite_f32(out_w_P_D_a, 18 * m);
-    count += rigidsym_any_nonfinite_f32(out_w_P_D_p, 18 * m);
-    if (count == 0)
+    any |= rigidsym_any_nonfinite_f32(out_w_P, 6 * m);
+    any |= rigidsym_any_nonfinite_f32(out_w_P_D_w_A, 36 * m);
+    any |= rigidsym_any_nonfinite_f32(out_w_P_D_a, 18 * m);
+    any |= rigidsym_any_nonfinite_f32(out_w_P_D_p, 18 * m);
+    if (any == 0)
         return 0;
-    count = 0;
+    int64_t count = 0;
     for (int64_t j = 0; j < m; ++j) {
-        int flagged = 0;
+        int flagged = (int)((mask[j / RIGIDSYM_LANES_F32] >> (j % RIGIDSYM_LANES_F32)) & 1);
         flagged |= rigidsym_any_nonfinite_f32(out_w_P + 6 * j, 6);
         flagged |= rigidsym_any_nonfinite_f32(out_w_P_D_w_A + 36 * j, 36);
         flagged |= rigidsym_any_nonfinite_f32(out_w_P_D_a + 18 * j, 18);
@@ -150,8 +208,8 @@ static int64_t rigidsym_wrench_transfer_with_jacobians_run(
     double *RIGIDSYM_RESTRICT out_w_P_D_a,
     double *RIGIDSYM_RESTRICT out_w_P_D_p)
 {
-    if (m == RIGIDSYM_CHECK_BLOCK)
-        return rigidsym_wrench_transfer_with_jacobians_block(m,
+    if (m % RIGIDSYM_LANES == 0)
+        return rigidsym_wrench_transfer_with_jacobians_block(m, m,
             in_w_A + 6 * i0,
             in_a + 3 * i0,
             in_p + 3 * i0,
@@ -160,6 +218,7 @@ static int64_t rigidsym_wrench_transfer_with_jacobians_run(
             out_w_P_D_a + 18 * i0,
             out_w_P_D_p + 18 * i0);
 
+    const int64_t nl = (m + RIGIDSYM_LANES - 1) / RIGIDSYM_LANES * RIGIDSYM_LANES;
     double pad_w_A[6 * RIGIDSYM_CHECK_BLOCK];
     double pad_a[3 * RIGIDSYM_CHECK_BLOCK];
     double pad_p[3 * RIGIDSYM_CHECK_BLOCK];
@@ -167,7 +226,7 @@ static int64_t rigidsym_wrench_transfer_with_jacobians_run(
     double pad_w_P_D_w_A[36 * RIGIDSYM_CHECK_BLOCK];
     double pad_w_P_D_a[18 * RIGIDSYM_CHECK_BLOCK];
     double pad_w_P_D_p[18 * RIGIDSYM_CHECK_BLOCK];
-    for (int64_t j = 0; j < RIGIDSYM_CHECK_BLOCK; ++j) {
+    for (int64_t j = 0; j < nl; ++j) {
         const int64_t s = i0 + (j < m ? j : m - 1);
         memcpy(pad_w_A + 6 * j, in_w_A + 6 * s,
                6 * sizeof(double));
@@ -176,7 +235,7 @@ static int64_t rigidsym_wrench_transfer_with_jacobians_run(
         memcpy(pad_p + 3 * j, in_p + 3 * s,
                3 * sizeof(double));
     }
-    const int64_t count = rigidsym_wrench_transfer_with_jacobians_block(m,
+    const int64_t count = rigidsym_wrench_transfer_with_jacobians_block(m, nl,
         pad_w_A,
         pad_a,
         pad_p,
@@ -202,8 +261,8 @@ static int64_t rigidsym_wrench_transfer_with_jacobians_run_f32(
     float *RIGIDSYM_RESTRICT out_w_P_D_a,
     float *RIGIDSYM_RESTRICT out_w_P_D_p)
 {
-    if (m == RIGIDSYM_CHECK_BLOCK)
-        return rigidsym_wrench_transfer_with_jacobians_block_f32(m,
+    if (m % RIGIDSYM_LANES_F32 == 0)
+        return rigidsym_wrench_transfer_with_jacobians_block_f32(m, m,
             in_w_A + 6 * i0,
             in_a + 3 * i0,
             in_p + 3 * i0,
@@ -212,6 +271,7 @@ static int64_t rigidsym_wrench_transfer_with_jacobians_run_f32(
             out_w_P_D_a + 18 * i0,
             out_w_P_D_p + 18 * i0);
 
+    const int64_t nl = (m + RIGIDSYM_LANES_F32 - 1) / RIGIDSYM_LANES_F32 * RIGIDSYM_LANES_F32;
     float pad_w_A[6 * RIGIDSYM_CHECK_BLOCK];
     float pad_a[3 * RIGIDSYM_CHECK_BLOCK];
     float pad_p[3 * RIGIDSYM_CHECK_BLOCK];
@@ -219,7 +279,7 @@ static int64_t rigidsym_wrench_transfer_with_jacobians_run_f32(
     float pad_w_P_D_w_A[36 * RIGIDSYM_CHECK_BLOCK];
     float pad_w_P_D_a[18 * RIGIDSYM_CHECK_BLOCK];
     float pad_w_P_D_p[18 * RIGIDSYM_CHECK_BLOCK];
-    for (int64_t j = 0; j < RIGIDSYM_CHECK_BLOCK; ++j) {
+    for (int64_t j = 0; j < nl; ++j) {
         const int64_t s = i0 + (j < m ? j : m - 1);
         memcpy(pad_w_A + 6 * j, in_w_A + 6 * s,
                6 * sizeof(float));
@@ -228,7 +288,7 @@ static int64_t rigidsym_wrench_transfer_with_jacobians_run_f32(
         memcpy(pad_p + 3 * j, in_p + 3 * s,
                3 * sizeof(float));
     }
-    const int64_t count = rigidsym_wrench_transfer_with_jacobians_block_f32(m,
+    const int64_t count = rigidsym_wrench_transfer_with_jacobians_block_f32(m, nl,
         pad_w_A,
         pad_a,
         pad_p,

@@ -20,6 +20,7 @@ path, which runs the NumPy kernels.
 
 from __future__ import annotations
 
+import os
 import types
 from typing import Any
 
@@ -29,7 +30,7 @@ from rigidsym import _kinds
 from rigidsym.kernels import _state
 from rigidsym.kernels._scale import MIN_PARALLEL, get_num_threads
 
-__all__ = ["Lazy", "bind_api", "entries"]
+__all__ = ["Lazy", "bind_api", "entries", "unbind"]
 
 
 class Lazy:
@@ -44,7 +45,52 @@ class Lazy:
         ns = self._space.entries()
         if ns is self._space._entries and self._mod is not None:
             self._mod._F = ns                  # the C entries: bound for good
+            _install(self._space, self._mod)
         return getattr(ns, name)
+
+
+#: the keyword-only parameters of every generated kernel function, in the entries' order
+_KEYWORDS = ("out", "check", "on_singular", "threads")
+
+
+def _install(space: Any, mod: types.ModuleType) -> None:
+    """Let the functions of ``mod`` call their C entries without running their Python body
+    (the compiled module's ``_install``: their vectorcall), for the calls the entries take
+    (inputs positionally, keywords among :data:`_KEYWORDS`). Only functions with exactly the
+    generated signature (the kernel's inputs, then the four keywords with the same defaults);
+    a module built before this existed has no ``_install``: nothing changes."""
+    cmod = space.c_lib().module
+    install = getattr(cmod, "_install", None)
+    if install is None:
+        return
+    funcs, defaults = [], None
+    for name in cmod.kernels:
+        f = getattr(mod, name, None)
+        code = getattr(f, "__code__", None)
+        meta = space.meta.get(name)
+        kwd = getattr(f, "__kwdefaults__", None) or {}
+        ok = (type(f) is types.FunctionType and meta is not None and code is not None
+              and code.co_argcount == len(meta["args"]) and code.co_posonlyargcount == 0
+              and code.co_varnames[code.co_argcount:code.co_argcount + code.co_kwonlyargcount]
+              == _KEYWORDS and not code.co_flags & 0x0C      # no *args, **kwargs
+              and tuple(kwd) == _KEYWORDS)
+        if ok and defaults not in (None, tuple(kwd.values())):
+            ok = False                          # one set of defaults for every kernel
+        if ok:
+            defaults = tuple(kwd.values())
+        funcs.append(f if ok else None)
+    if defaults is not None:
+        install(tuple(funcs), defaults)
+
+
+def unbind(space: Any, mod: types.ModuleType) -> None:
+    """Undo the binding of ``mod``'s entries (the state before its first call): its
+    functions run their Python body again, which binds them at the next call."""
+    with _state.LOCK:
+        if space._clib is not None and hasattr(space._clib.module, "_install"):
+            space._clib.module._install(None, None)
+        space._entries = None
+        mod._F = Lazy(space, mod)
 
 
 def bind_api(space: Any, mod: types.ModuleType) -> None:
@@ -89,6 +135,9 @@ def entries(space: Any) -> types.SimpleNamespace:
                   unit.tolerance(np.float64), rot.tolerance(np.float64),
                   unit.tolerance(np.float32), rot.tolerance(np.float32))
         mod._enable(_state.STATE["backend"] != "numpy")
+        data = getattr(os.environ, "_data", None)     # what get_num_threads reads
+        if hasattr(mod, "_environ") and type(data) is dict:
+            mod._environ(data, os.environ.encodekey("RIGIDSYM_NUM_THREADS"))
         space._entries = types.SimpleNamespace(**dict(zip(mod.kernels, mod.entries,
                                                           strict=True)))
         _state.LISTENERS.append(lambda name, m=mod: m._enable(name == "c"))
