@@ -131,3 +131,20 @@ def test_help_imports_no_computer_algebra(argv):
                          timeout=120)
     assert run.returncode == 0, run.stderr
     assert run.stdout.strip() == "[]"
+
+
+
+def test_a_reader_who_closes_the_pipe_sees_no_traceback():
+    # `rigidsym glossary | head -0`: the reader has left before the command writes; exit 0
+    # and nothing on stderr (no "Exception ignored ... BrokenPipeError" at exit)
+    import os
+
+    r, w = os.pipe()
+    os.close(r)
+    try:
+        env = {k: v for k, v in os.environ.items() if k != "PYTHONUNBUFFERED"}  # buffered
+        run = subprocess.run([sys.executable, "-m", "rigidsym", "glossary"], stdout=w,
+                             stderr=subprocess.PIPE, text=True, timeout=120, env=env)
+    finally:
+        os.close(w)
+    assert run.returncode == 0 and run.stderr == "", run.stderr

@@ -89,7 +89,9 @@ def main(argv: list[str] | None = None) -> int:
     from rigidsym.checking.registry import BadInput
     with ascii_output(getattr(args, "ascii", False)):
         try:
-            return args.func(args)
+            code = args.func(args)
+            sys.stdout.flush()  # a closed pipe shows here, not at the interpreter's exit
+            return code
         except BadInput as exc:
             hint = "" if "rigidsym " in str(exc) else \
                 f" (rigidsym {args.command} --help shows what it takes)"
