@@ -31,6 +31,7 @@ from rigidsym.declare import (
     TIME,
     Rel,
     Statement,
+    cancel_matrix,
     cpm,
     equation,
     rotation_from_quaternion,
@@ -38,7 +39,6 @@ from rigidsym.declare import (
     vect,
     vector,
 )
-from rigidsym.zero.cancel import cancel_matrix
 
 from .common import Mt, motion_model, vec
 

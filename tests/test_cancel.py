@@ -43,3 +43,15 @@ def test_not_a_rational_function_goes_to_sympy():
     exprs = [sp.sqrt(x) * (x**2 - 1) / (x - 1), sp.cos(x) / sp.cos(x) + y, sp.Integer(3)]
     for e, c in zip(exprs, cancel(exprs), strict=True):
         assert _same(c, sp.cancel(e)), e
+
+
+def test_the_declaration_vocabulary_cancels_as_sympy_does():
+    # rigidsym.declare.cancel_matrix: what the book's models and a reader's module use
+    import sympy as sp
+
+    from rigidsym.declare import cancel_matrix as public
+
+    x, y = sp.symbols("x y", real=True)
+    m = sp.Matrix([[(x**2 - y**2) / (x - y), 1 / x + 1 / y], [sp.sin(x) / sp.sin(x), 3]])
+    assert public(m) == m.applyfunc(sp.cancel) == sp.Matrix([[x + y, (x + y) / (x * y)],
+                                                             [1, 3]])

@@ -13,7 +13,8 @@ import pytest
 
 DECLARE = [
     "Blocks", "Cross", "Det", "I3", "MS", "O3", "Rel", "RigidMotion", "Statement", "TIME",
-    "angle", "as_vector", "block", "cpm", "equation", "euler_rodrigues_parameters", "eye3",
+    "angle", "as_vector", "block", "cancel_matrix", "cpm", "equation",
+    "euler_rodrigues_parameters", "eye3",
     "linear_invariants", "mat", "matrix", "rigid_motion", "rotation",
     "rotation_from_euler_rodrigues", "rotation_from_natural_invariants",
     "rotation_from_quaternion", "scalar", "symmetric_matrix", "trace", "unit_vector",

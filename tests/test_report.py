@@ -38,7 +38,7 @@ def test_default_out_dir(tmp_path):
 
 def test_report_command_says_where_and_writes_0644(tmp_path, monkeypatch, capsys, few):
     monkeypatch.chdir(tmp_path)  # not a source tree: ./rigidsym-report/
-    monkeypatch.setattr(cli_report, "run_checks",
+    monkeypatch.setattr("rigidsym.checking.runner.run_checks",  # the command imports it late
                         lambda ids, jobs=1, progress=True, cache=False, reporter=None, **kw: few)
     monkeypatch.setattr(cli_report, "_solve_exercises", lambda rep: None)
     monkeypatch.setattr("rigidsym.cli.exercise.write_report", lambda out: [])

@@ -28,7 +28,7 @@ _DECLARE = (
     "cpm", "vect", "trace", "Cross", "Det", "Blocks",
     "rotation_from_natural_invariants", "rotation_from_euler_rodrigues",
     "rotation_from_quaternion", "linear_invariants", "euler_rodrigues_parameters",
-    "as_vector", "block", "eye3",
+    "as_vector", "block", "eye3", "cancel_matrix",
 )
 _WHERE = {**{n: "rigidsym.api" for n in _API}, **{n: "rigidsym.declare" for n in _DECLARE},
           "load_module": "rigidsym.checking.usermodules", "BadInput": "rigidsym.checking.registry"}

@@ -61,7 +61,7 @@ __all__ = [
     "cpm", "vect", "trace", "Cross", "Det", "Blocks",
     "rotation_from_natural_invariants", "rotation_from_euler_rodrigues",
     "rotation_from_quaternion", "linear_invariants", "euler_rodrigues_parameters",
-    "as_vector", "block", "eye3",
+    "as_vector", "block", "eye3", "cancel_matrix",
 ]
 
 #: The time symbol ``t`` (real) of trajectories: atoms made with ``t=TIME`` are functions
@@ -133,3 +133,24 @@ def rigid_motion(name: str = "Q", translation: str = "c", *,
     c = vector(translation, t)
     return RigidMotion(Q, Q_dot, Q_dot.diff(t), Omega, omega, omega.diff(t), c, c.diff(t),
                        c.diff(t, 2), e, phi)
+
+
+def cancel_matrix(m) -> sp.Matrix:
+    """Every entry of a matrix of rational functions brought to lowest terms, exactly.
+
+    The result is what ``m.applyfunc(sympy.cancel)`` returns, the same expression trees,
+    computed faster: the fractions are first reduced with python-flint's multivariate
+    polynomials (FLINT's gcd), and ``sympy.cancel``'s own last step makes them canonical.
+    An entry that is not a rational function of its atoms (a root, a sine) goes to
+    ``sympy.cancel`` as it is. Used by the book's Sec. 3.4 models; a user module may use
+    it for its own large models.
+
+    Args:
+        m: a sympy matrix (any shape) of rational functions of its atoms.
+
+    Returns:
+        A new mutable ``sympy.Matrix`` of the same shape.
+    """
+    from rigidsym.zero.cancel import cancel_matrix as _cancel_matrix  # python-flint: lazily
+
+    return _cancel_matrix(m)
