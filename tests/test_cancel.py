@@ -1,5 +1,6 @@
 """rigidsym.zero.cancel: the expressions sympy.cancel returns, reduced by FLINT first."""
 
+import pytest
 import sympy as sp
 
 from rigidsym.algebra.primitives import rotation_from_quaternion
@@ -55,3 +56,11 @@ def test_the_declaration_vocabulary_cancels_as_sympy_does():
     m = sp.Matrix([[(x**2 - y**2) / (x - y), 1 / x + 1 / y], [sp.sin(x) / sp.sin(x), 3]])
     assert public(m) == m.applyfunc(sp.cancel) == sp.Matrix([[x + y, (x + y) / (x * y)],
                                                              [1, 3]])
+
+
+@pytest.mark.parametrize("bad", ["x", None, 3])
+def test_cancel_matrix_names_its_argument(bad):
+    from rigidsym.declare import cancel_matrix
+
+    with pytest.raises(TypeError, match="^m: expected a sympy matrix"):
+        cancel_matrix(bad)

@@ -150,7 +150,17 @@ def cancel_matrix(m) -> sp.Matrix:
 
     Returns:
         A new mutable ``sympy.Matrix`` of the same shape.
+
+    Raises:
+        TypeError: ``m`` is not a matrix (nor a list of rows of expressions).
     """
     from rigidsym.zero.cancel import cancel_matrix as _cancel_matrix  # python-flint: lazily
 
+    if isinstance(m, str | bytes) or m is None:
+        raise TypeError(f"m: expected a sympy matrix, got {type(m).__name__}")
+    try:
+        m = sp.Matrix(m)
+    except (TypeError, ValueError) as exc:
+        raise TypeError(f"m: expected a sympy matrix or a list of rows of expressions, "
+                        f"got {type(m).__name__}") from exc
     return _cancel_matrix(m)
