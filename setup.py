@@ -7,6 +7,7 @@ x86-64-v2 baseline and x86-64-v3 on x86-64, chosen at import by the module's dis
 """
 
 import importlib.util
+import json
 import sys
 import tempfile
 import time
@@ -17,6 +18,8 @@ from setuptools.command.build_ext import build_ext
 
 HERE = Path(__file__).resolve().parent
 GENERATED = HERE / "generated"
+#: the build's record beside the module (kernels.build_info()["build"])
+STATS = "_ckernels.build.json"
 
 
 def _driver():
@@ -32,6 +35,29 @@ class BuildKernels(build_ext):
     """build_ext for the kernels: the driver compiles and links; setuptools only places the
     module (in the wheel, or beside the sources for an editable install)."""
 
+    def _stats_pairs(self):
+        """(built, in-place) paths of the build record (``_ckernels.build.json``)."""
+        build_py = self.get_finalized_command("build_py")
+        for ext in self.extensions:
+            inplace, regular = self._get_inplace_equivalent(build_py, ext)
+            yield (str(Path(regular).with_name(STATS)), str(Path(inplace).with_name(STATS)))
+
+    def get_outputs(self):
+        outs = super().get_outputs()
+        return outs + [str(Path(o).with_name(STATS)) for o in outs if "_ckernels" in o]
+
+    def copy_extensions_to_source(self):
+        # an editable install: the record goes beside the module in the source tree too
+        super().copy_extensions_to_source()
+        for regular, inplace in self._stats_pairs():
+            if Path(regular).exists():
+                self.copy_file(regular, inplace, level=self.verbose)
+
+    def _get_output_mapping(self):
+        yield from super()._get_output_mapping()
+        if self.inplace:
+            yield from self._stats_pairs()
+
     def build_extension(self, ext):
         drv = _driver()
         cfg = drv.configure()
@@ -42,9 +68,16 @@ class BuildKernels(build_ext):
               f"{drv.estimate_seconds(GENERATED / 'c', cfg):.0f} s", flush=True)
         t0 = time.perf_counter()
         Path(self.build_temp).mkdir(parents=True, exist_ok=True)
+        stats: dict = {}
         with tempfile.TemporaryDirectory(dir=self.build_temp) as tmp:
-            drv.build(GENERATED, out, cfg, Path(tmp))
-        print(f"rigidsym: built {out.name} in {time.perf_counter() - t0:.1f} s", flush=True)
+            drv.build(GENERATED, out, cfg, Path(tmp), stats=stats)
+        # what was built, in what time: kernels.build_info()["build"] reads it back
+        stats.update(paths=[p.name for p in cfg.paths],
+                     built=time.strftime("%Y-%m-%dT%H:%M:%SZ", time.gmtime()))
+        out.with_name(STATS).write_text(json.dumps(stats, indent=1) + "\n")
+        print(f"rigidsym: built {out.name} in {time.perf_counter() - t0:.1f} s "
+              f"({stats['compiled']} objects compiled, {stats['reused']} from the object cache "
+              f"{stats['object_cache']})", flush=True)
 
 
 setup(

@@ -327,3 +327,78 @@ def test_loading_a_user_directory_never_loads_the_package_kernels(user_dir, tmp_
     np.testing.assert_array_equal(w, [2.0, 4.0, 6.0])
     assert True not in calls
     assert calls == [False]
+
+
+# ------------------------------------------------------------------ the object cache (issue 27)
+def _build_with_objects(user_dir: Path, tmp: Path, objects: Path) -> tuple[dict, bytes]:
+    cfg = _build.configure()
+    stats: dict = {}
+    out = tmp / f"m{len(list(tmp.glob('m*')))}.so"
+    work = tmp / f"objs{len(list(tmp.glob('objs*')))}"
+    old = os.environ.get("RIGIDSYM_OBJECT_CACHE")
+    os.environ["RIGIDSYM_OBJECT_CACHE"] = str(objects)
+    try:
+        _build.build(user_dir, out, cfg, work, stats=stats)
+    finally:
+        if old is None:
+            os.environ.pop("RIGIDSYM_OBJECT_CACHE")
+        else:
+            os.environ["RIGIDSYM_OBJECT_CACHE"] = old
+    return stats, out.read_bytes()
+
+
+@needs_cc
+def test_a_second_build_reuses_every_object_and_links_the_same_module(user_dir, tmp_path):
+    objects = tmp_path / "objects"
+    first, so1 = _build_with_objects(user_dir, tmp_path, objects)
+    n = len(_build.kernel_sources(user_dir / "c")) * len(_build.configure().paths) + 1
+    assert first["objects"] == first["compiled"] == n and first["reused"] == 0
+    second, so2 = _build_with_objects(user_dir, tmp_path, objects)
+    assert second["compiled"] == 0 and second["reused"] == n
+    assert so1 == so2
+    assert not list(objects.rglob("*.tmp")) and not list(objects.rglob(".*.tmp"))
+
+
+@needs_cc
+def test_a_corrupt_object_is_compiled_again_never_linked(user_dir, tmp_path):
+    objects = tmp_path / "objects"
+    _, so1 = _build_with_objects(user_dir, tmp_path, objects)
+    victim = sorted(objects.rglob("*.o"))[0]
+    victim.write_bytes(b"\x7fELF not an object")          # its checksum no longer matches
+    stats, so2 = _build_with_objects(user_dir, tmp_path, objects)
+    assert stats["compiled"] == 1 and so2 == so1
+    assert victim.read_bytes() != b"\x7fELF not an object"   # replaced by the fresh compile
+
+
+@needs_cc
+def test_other_flags_or_sources_miss_the_object_cache(user_dir, tmp_path, monkeypatch):
+    objects = tmp_path / "objects"
+    _build_with_objects(user_dir, tmp_path, objects)
+    monkeypatch.setenv("RIGIDSYM_CFLAGS", "-O2 -std=c99 -ffp-contract=fast")
+    stats, _ = _build_with_objects(user_dir, tmp_path, objects)
+    assert stats["reused"] == 0
+    monkeypatch.delenv("RIGIDSYM_CFLAGS")
+    copy = tmp_path / "edited"
+    import shutil
+
+    shutil.copytree(user_dir, copy)
+    src = _build.kernel_sources(copy / "c")[0]
+    src.write_text(src.read_text() + "\n/* an edit */\n")
+    stats, _ = _build_with_objects(copy, tmp_path, objects)
+    # that source once per path, and the module's C, which embeds the sources' hash
+    assert stats["compiled"] == len(_build.configure().paths) + 1
+
+
+def test_object_cache_off_and_its_folder():
+    from rigidsym.kernels import _objects
+
+    old = dict(os.environ)
+    try:
+        os.environ["RIGIDSYM_OBJECT_CACHE"] = "0"
+        assert _objects.root() is None
+        os.environ.pop("RIGIDSYM_OBJECT_CACHE")
+        os.environ["RIGIDSYM_CACHE"] = "/somewhere/cache"
+        assert _objects.root() == Path("/somewhere/cache/objects")
+    finally:
+        os.environ.clear()
+        os.environ.update(old)

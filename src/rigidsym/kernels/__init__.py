@@ -172,8 +172,11 @@ def build_info(directory: str | Path | None = None) -> dict:
         first), ``forced`` (``RIGIDSYM_DISPATCH``, or None), ``openmp``, ``libmvec`` (the
         vector sin/cos variant the path calls, or None), ``file`` (the extension),
         ``origin`` (``"wheel"``, ``"editable build"``, ``"cache"`` or ``"cache (native)"``),
-        ``sources`` (SHA-256 of the C it was built from), ``compiler``, ``flags`` and
-        ``cpu`` (this machine's model).
+        ``sources`` (SHA-256 of the C it was built from), ``compiler``, ``flags``, ``cpu``
+        (this machine's model) and ``build``: what the build did, or None where it left no
+        record (``objects``, ``compiled``, ``reused`` from the object cache, ``seconds`` of
+        wall time, ``cpu_seconds`` of the compilers, ``paths``, ``built`` (UTC),
+        ``object_cache`` (its folder, or None)).
 
     Raises:
         rigidsym.kernels._ext.NoCompiledKernels: nothing compiled matches and no compiler

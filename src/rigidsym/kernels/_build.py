@@ -35,6 +35,17 @@ from dataclasses import dataclass
 from functools import cache
 from pathlib import Path
 
+if __package__:
+    from . import _objects
+else:   # loaded by path from setup.py: the sibling by path too (rigidsym is not importable)
+    import importlib.util as _ilu
+
+    _spec = _ilu.spec_from_file_location("_rigidsym_objects",
+                                         Path(__file__).with_name("_objects.py"))
+    _objects = _ilu.module_from_spec(_spec)
+    sys.modules[_spec.name] = _objects
+    _spec.loader.exec_module(_objects)
+
 __all__ = ["MODULE", "IsaPath", "Config", "BuildError", "CompilerNotFound",
            "default_paths",
            "compiler", "configure", "kernel_sources", "sources_hash", "embedded_hash",
@@ -297,7 +308,8 @@ Progress = Callable[[int, int], None]
 
 
 def _tasks(cdir: Path, cfg: Config, tmp: Path) -> list[tuple[list[str], Path]]:
-    """``(argv, object)`` of every compile, largest sources first (balances the workers)."""
+    """``(argv, object)`` of every compile, largest sources first (balances the workers); the
+    source is the word after ``-c``."""
     import sysconfig
 
     inc = ["-I", str(cdir)]
@@ -321,6 +333,12 @@ def _tasks(cdir: Path, cfg: Config, tmp: Path) -> list[tuple[list[str], Path]]:
     return [(argv, Path(argv[argv.index("-o") + 1])) for argv, _ in tasks]
 
 
+def _numpy_version() -> str:
+    import numpy
+
+    return numpy.__version__
+
+
 def _numpy_include() -> str:
     """NumPy's C headers: the module's entry points (rigidsym_fast.h) allocate and read
     ndarrays through NumPy's C API (NumPy is a build requirement, pyproject.toml)."""
@@ -338,26 +356,57 @@ def _run(argv: list[str]) -> None:
         raise BuildError(f"{shlex.join(argv)}\nfailed with exit code {r.returncode}:\n{tail}")
 
 
+def _headers_digest(cdir: Path) -> str:
+    h = hashlib.sha256()
+    for p in sorted(Path(cdir).glob("*.h")):
+        h.update(p.name.encode() + b"\0" + p.read_bytes() + b"\0")
+    return h.hexdigest()
+
+
+def _compile_cached(argv: list[str], cdir: Path, where: Path | None, headers: str,
+                    neutral: dict[str, str]) -> bool:
+    """Compile one object, or copy it from the object cache; True when it was compiled."""
+    obj = Path(argv[argv.index("-o") + 1])
+    if where is None:
+        _run(argv)
+        return True
+    k = _objects.key(argv, Path(argv[argv.index("-c") + 1]), headers, neutral)
+    if _objects.fetch(where, k, obj):
+        return False
+    _run(argv)
+    _objects.store(where, k, obj)
+    return True
+
+
 def build(gdir: Path, out: Path, cfg: Config, tmp: Path,
-          progress: Progress | None = None) -> Path:
-    """Compile ``gdir/c`` into the module file ``out`` (objects in ``tmp``); returns ``out``.
+          progress: Progress | None = None, stats: dict | None = None) -> Path:
+    """Compile ``gdir/c`` into the module file ``out`` (objects in ``tmp``, each reused from
+    the object cache :mod:`rigidsym.kernels._objects` when it holds it); returns ``out``.
+    ``stats``, when given, receives ``objects``, ``compiled``, ``reused``, ``seconds``
+    (wall) and ``cpu_seconds`` (the compiler processes' user + system time).
 
     Raises:
         BuildError: a compile or the link failed (the compiler's last lines in the message).
     """
+    import resource
+    import time
     from concurrent.futures import ThreadPoolExecutor, as_completed
 
     cdir = Path(gdir) / "c"
     if not (cdir / MODULE_SOURCE).is_file():
         raise BuildError(f"{cdir}: no {MODULE_SOURCE}; regenerate this folder with this "
                          f"version of rigidsym (`rigidsym generate`)")
+    t0, r0 = time.perf_counter(), resource.getrusage(resource.RUSAGE_CHILDREN)
     tasks = _tasks(cdir, cfg, Path(tmp))
-    total = len(tasks) + 1
+    where, headers = _objects.root(), _headers_digest(cdir)
+    neutral = {str(cdir): "<generated>", _numpy_include(): f"<numpy {_numpy_version()}>"}
+    total, compiled = len(tasks) + 1, 0
     with ThreadPoolExecutor(max_workers=min(jobs(), len(tasks))) as pool:
-        futures = [pool.submit(_run, argv) for argv, _ in tasks]
+        futures = [pool.submit(_compile_cached, argv, cdir, where, headers, neutral)
+                   for argv, _ in tasks]
         try:
             for done, f in enumerate(as_completed(futures), 1):
-                f.result()
+                compiled += f.result()
                 if progress is not None:
                     progress(done, total)
         except BaseException:
@@ -372,4 +421,11 @@ def build(gdir: Path, out: Path, cfg: Config, tmp: Path,
     _run(link)
     if progress is not None:
         progress(total, total)
+    if stats is not None:
+        r1 = resource.getrusage(resource.RUSAGE_CHILDREN)
+        stats.update(objects=len(tasks), compiled=compiled, reused=len(tasks) - compiled,
+                     seconds=round(time.perf_counter() - t0, 2),
+                     cpu_seconds=round(r1.ru_utime + r1.ru_stime - r0.ru_utime - r0.ru_stime,
+                                       2),
+                     object_cache=str(where) if where else None)
     return Path(out)

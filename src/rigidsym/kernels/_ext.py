@@ -119,8 +119,12 @@ def _compile(gdir: Path, cfg: _build.Config, path: Path) -> None:
     """Build into a temporary folder beside ``path``, then :func:`_cache.put` (atomic,
     checksummed). A progress bar on a terminal."""
     import tempfile
+    import time
+
+    from rigidsym._io import write_atomic_bytes
 
     path.parent.mkdir(parents=True, exist_ok=True)
+    stats: dict = {}
     with tempfile.TemporaryDirectory(dir=path.parent, prefix=".build-") as tmp:
         out = Path(tmp) / path.name
         if sys.stderr.isatty():
@@ -134,10 +138,14 @@ def _compile(gdir: Path, cfg: _build.Config, path: Path) -> None:
                 total = len(_build.kernel_sources(Path(gdir) / "c")) * len(cfg.paths) + 2
                 task = bar.add_task("compile", total=total)
                 _build.build(gdir, out, cfg, Path(tmp),
-                             lambda done, total: bar.update(task, completed=done, total=total))
+                             lambda done, total: bar.update(task, completed=done, total=total),
+                             stats=stats)
         else:
-            _build.build(gdir, out, cfg, Path(tmp))
+            _build.build(gdir, out, cfg, Path(tmp), stats=stats)
+        stats.update(paths=[p.name for p in cfg.paths],
+                     built=time.strftime("%Y-%m-%dT%H:%M:%SZ", time.gmtime()))
         _cache.put(path, out.read_bytes())
+        write_atomic_bytes(_stats_file(path), (json.dumps(stats, indent=1) + "\n").encode())
 
 
 @contextmanager
@@ -284,6 +292,18 @@ def _mvec_variant(loaded: Loaded) -> str | None:
     return ", ".join(n.decode() for n in names) or "none called"
 
 
+def _stats_file(module: Path) -> Path:
+    """The record of a module's build (objects compiled and reused, seconds), beside it."""
+    return module.with_name(f"{_build.MODULE}.build.json")
+
+
+def _stats(module: Path) -> dict | None:
+    try:
+        return json.loads(_stats_file(module).read_text())
+    except (OSError, ValueError):
+        return None
+
+
 def info(loaded: Loaded) -> dict:
     """The build information of a loaded extension (:func:`rigidsym.kernels.build_info`)."""
     m = loaded.module
@@ -293,4 +313,5 @@ def info(loaded: Loaded) -> dict:
             "openmp": bool(m.openmp), "libmvec": _mvec_variant(loaded),
             "file": str(loaded.file), "origin": loaded.origin, "sources": m.sources,
             "compiler": getattr(m, "compiler", None), "flags": m.build,
-            "cpu": cpu.get("model name") or platform.processor() or platform.machine()}
+            "cpu": cpu.get("model name") or platform.processor() or platform.machine(),
+            "build": _stats(loaded.file)}

@@ -1,0 +1,133 @@
+"""The compiled-object cache of the C driver: a second build of the same sources (an editable
+install after a regular one, a CI re-run, the wheel test, a user's kernels rebuilt) reuses
+each object instead of compiling it again.
+
+An object's key is the SHA-256 of everything that decides its bytes: the compile command
+with the folders it names made neutral (the generated folder by the bytes of its sources
+and headers, NumPy's headers by NumPy's version, the object's own path dropped), the
+source's bytes, the bytes of every header of its folder, and the compiler's identity
+(``cc --version`` and ``cc -dumpmachine``). Entries live in ``<root>/<key[:2]>/<key>.o``
+with a ``.sha256`` beside them, written as the kernel cache writes its entries (a temporary
+file and a rename, the checksum last, under a ``filelock`` lock): an entry that fails its
+checksum is compiled again, never linked.
+
+The root is ``RIGIDSYM_OBJECT_CACHE``, else ``<RIGIDSYM_CACHE>/objects``, else
+``$XDG_CACHE_HOME/rigidsym/objects`` (``~/.cache/rigidsym/objects``);
+``RIGIDSYM_OBJECT_CACHE=0`` turns the cache off. Standard library and ``filelock`` only:
+``setup.py`` loads the driver by path before rigidsym is importable (``filelock`` is in
+``build-system.requires``); without ``filelock`` every object is compiled.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import os
+import subprocess
+from functools import cache
+from pathlib import Path
+
+__all__ = ["root", "key", "fetch", "store", "compiler_id"]
+
+#: bumped when the key's recipe changes (old entries are then never hit)
+FORMAT = "1"
+
+
+def root() -> Path | None:
+    """The object cache folder, or ``None`` when ``RIGIDSYM_OBJECT_CACHE=0`` or ``filelock``
+    is missing."""
+    env = os.environ.get("RIGIDSYM_OBJECT_CACHE")
+    if env == "0":
+        return None
+    try:
+        import filelock  # noqa: F401
+    except ImportError:
+        return None
+    if env:
+        return Path(env).expanduser()
+    base = os.environ.get("RIGIDSYM_CACHE")
+    if base:
+        return Path(base).expanduser() / "objects"
+    xdg = os.environ.get("XDG_CACHE_HOME") or (Path.home() / ".cache")
+    return Path(xdg) / "rigidsym" / "objects"
+
+
+@cache
+def compiler_id(cc: tuple[str, ...]) -> str:
+    """What the compiler says of itself (version and target); part of every key."""
+    out = []
+    for flag in ("--version", "-dumpmachine"):
+        r = subprocess.run([*cc, flag], capture_output=True, text=True)
+        out.append(r.stdout.strip() or r.stderr.strip())
+    return "\n".join(out)
+
+
+def key(argv: list[str], src: Path, headers: str, neutral: dict[str, str]) -> str:
+    """The key of one compile: ``argv`` (its ``-o`` target dropped, the folders in
+    ``neutral`` replaced by their labels, the source by its name), the source's bytes, the
+    digest ``headers`` of its folder's headers, and the compiler's identity."""
+    words, skip = [], False
+    for a in argv:
+        if skip:
+            skip = False
+            continue
+        if a == "-o":
+            skip = True
+            continue
+        if a == str(src):
+            a = src.name
+        for path, label in neutral.items():
+            a = a.replace(path, label)
+        words.append(a)
+    h = hashlib.sha256()
+    for part in (FORMAT, "\0".join(words), headers, compiler_id(_cc(argv))):
+        h.update(part.encode() + b"\0")
+    h.update(src.read_bytes())
+    return h.hexdigest()
+
+
+def _cc(argv: list[str]) -> tuple[str, ...]:
+    """The compiler command of ``argv``: the words before its first flag."""
+    n = next((i for i, a in enumerate(argv) if a.startswith("-")), len(argv))
+    return tuple(argv[:n])
+
+
+def _entry(where: Path, k: str) -> Path:
+    return where / k[:2] / f"{k}.o"
+
+
+def fetch(where: Path, k: str, dest: Path) -> bool:
+    """Copy the cached object ``k`` to ``dest`` when it is present and whole."""
+    path = _entry(where, k)
+    try:
+        data = path.read_bytes()
+        want = path.with_name(path.name + ".sha256").read_text().strip()
+    except OSError:
+        return False
+    if hashlib.sha256(data).hexdigest() != want:
+        return False
+    dest.write_bytes(data)
+    return True
+
+
+def store(where: Path, k: str, obj: Path) -> None:
+    """Publish the compiled ``obj`` as entry ``k``: the object, then its checksum, each by a
+    temporary file and a rename, under the cache's lock. A cache that cannot be written
+    (read-only, full) is skipped: the build itself has succeeded."""
+    from filelock import FileLock
+
+    path = _entry(where, k)
+    tmps: list[Path] = []
+    try:
+        path.parent.mkdir(parents=True, exist_ok=True)
+        data = obj.read_bytes()
+        with FileLock(str(where / "objects.lock"), timeout=600):
+            for target, payload in ((path, data),
+                                    (path.with_name(path.name + ".sha256"),
+                                     hashlib.sha256(data).hexdigest().encode())):
+                tmp = target.with_name(f".{target.name}.{os.getpid()}.tmp")
+                tmps.append(tmp)
+                tmp.write_bytes(payload)
+                os.replace(tmp, target)
+    except OSError:
+        for tmp in tmps:                # nothing half-written is left behind
+            tmp.unlink(missing_ok=True)
