@@ -18,8 +18,11 @@ REPORT = ROOT / "generated" / "report"
 CHROMIUM = Path(os.environ.get("RIGIDSYM_CHROMIUM", "/usr/bin/chromium"))
 SHOTS = ROOT / "build" / "screenshots"
 
+#: skipped without its extra in the README's test command; .ci/run installs it
+pytestmark = pytest.mark.extra
+
 sync_api = pytest.importorskip("playwright.sync_api",
-                               reason="playwright is not installed (pip install -e '.[test]')")
+                               reason="playwright is not installed (the [browser] extra)")
 
 
 @pytest.fixture(scope="module")

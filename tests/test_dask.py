@@ -11,8 +11,11 @@ import pytest
 
 from rigidsym import kernels as K
 
-da = pytest.importorskip("dask.array")
-dask = pytest.importorskip("dask")
+#: skipped without its extra in the README's test command; .ci/run installs it
+pytestmark = pytest.mark.extra
+
+da = pytest.importorskip("dask.array", reason="Dask is not installed (the [dask] extra)")
+dask = pytest.importorskip("dask", reason="Dask is not installed (the [dask] extra)")
 
 
 
@@ -130,7 +133,8 @@ def test_singular_errors_survive_pickling(cls):
 
 
 def test_distributed_local_cluster_bit_identical_and_singular_row():
-    distributed = pytest.importorskip("distributed")
+    distributed = pytest.importorskip("distributed",
+                                      reason="distributed is not installed (the [dask] extra)")
     if K.use_backend("c") != "c":          # build before the workers start: they load it
         pytest.skip("no C compiler")
     n, k = 1_000_000, 612_345

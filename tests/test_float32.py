@@ -150,10 +150,11 @@ def test_float32_overflow_flagged(backend):
         K.kinetic_energy(*args)
 
 
+@pytest.mark.extra
 def test_float32_threads_and_dask_keep_the_bits(backend):
     if backend != "c":
         pytest.skip("threads: C")
-    da = pytest.importorskip("dask.array")
+    da = pytest.importorskip("dask.array", reason="Dask is not installed (the [dask] extra)")
     rng = np.random.default_rng(4)
     n = 2 * _scale.MIN_PARALLEL + 123
     e = rng.standard_normal((n, 3))

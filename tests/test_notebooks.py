@@ -74,6 +74,8 @@ def test_cli_writes_a_notebook(tmp_path, capsys):
 
 
 def _run(ex_id: str):
+    pytest.importorskip("nbclient", reason="nbclient is not installed (the [notebooks] extra)")
+    pytest.importorskip("ipykernel", reason="ipykernel is not installed (the [notebooks] extra)")
     from nbclient import NotebookClient
 
     nb = nbformat.read(FOLDER / file_name(ex_id), as_version=4)
@@ -96,6 +98,7 @@ def _assert_ran(ex_id: str) -> None:
         assert "text/html" in cells["parameters"].outputs[0]["data"]
 
 
+@pytest.mark.extra
 @pytest.mark.parametrize("ex_id", SAMPLE)
 def test_sample_notebooks_execute(ex_id):
     _assert_ran(ex_id)
