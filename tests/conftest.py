@@ -1,6 +1,6 @@
 """Shared fixtures: the registry, loaded once; the chapter text when it is present; the
 kernels' backend, switched for a test (NumPy, then C; fails if a compiler is present but the
-C backend does not build)."""
+C backend does not build); and a guard that fails a test whose child processes outlive it."""
 
 from __future__ import annotations
 
@@ -10,21 +10,33 @@ import tempfile
 from pathlib import Path
 
 import pytest
+from _procguard import _no_process_outlives_its_test, become_subreaper  # noqa: F401
 
 from rigidsym import kernels as K
 from rigidsym.checking.registry import load_all
 
+_CREATED: list[str] = []
+
 
 def pytest_configure(config):
     # the suite never reads or fills the reader's own cache (verdicts, user kernels, timings):
-    # a verdict cached by an older checkout would hide a regression
+    # a verdict cached by an older checkout would hide a regression. The one exception is
+    # read through RIGIDSYM_TESTS_OBJECTS: the reader's compiled-object cache, which the
+    # wheel test's build reuses (objects keyed by their sources' bytes, flags and compiler,
+    # and checksummed: a reused object is the object a compile would give)
+    if "RIGIDSYM_TESTS_OBJECTS" not in os.environ:
+        from rigidsym.kernels import _objects
+
+        os.environ["RIGIDSYM_TESTS_OBJECTS"] = str(_objects.root() or "0")
     if "RIGIDSYM_CACHE" not in os.environ:
         os.environ["RIGIDSYM_CACHE"] = tempfile.mkdtemp(prefix="rigidsym-tests-")
+        _CREATED.append(os.environ["RIGIDSYM_CACHE"])   # xdist workers inherit it
+    os.environ.pop("RIGIDSYM_OBJECT_CACHE", None)       # the tests' objects: in their cache
+    become_subreaper()
 
 
 def pytest_unconfigure(config):
-    path = os.environ.get("RIGIDSYM_CACHE", "")
-    if Path(path).name.startswith("rigidsym-tests-"):
+    for path in _CREATED:
         shutil.rmtree(path, ignore_errors=True)
 
 

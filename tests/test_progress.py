@@ -9,6 +9,7 @@ import io
 import os
 import re
 import select
+import signal
 import subprocess
 import sys
 import time
@@ -37,6 +38,17 @@ def _env(tmp_path) -> dict:
     return env
 
 
+def _kill_group(p: subprocess.Popen) -> None:
+    """Kill the command and every process it started (its checker's pool workers): they
+    share its process group (``start_new_session=True``); killing the command alone
+    would orphan them."""
+    try:
+        os.killpg(p.pid, signal.SIGKILL)
+    except ProcessLookupError:
+        pass
+    p.wait()
+
+
 def _first_text_on_a_terminal(argv, env, timeout=60.0) -> tuple[float, bytes, int]:
     """Run ``argv`` under a pseudo-terminal until it writes words; then count the writes of
     the next 2.5 s (the live display's refreshes). Returns (seconds to first words, the
@@ -46,7 +58,7 @@ def _first_text_on_a_terminal(argv, env, timeout=60.0) -> tuple[float, bytes, in
     master, slave = pty.openpty()
     t0 = time.monotonic()
     p = subprocess.Popen(argv, stdin=slave, stdout=slave, stderr=slave, close_fds=True,
-                         cwd=ROOT, env=env)
+                         cwd=ROOT, env=env, start_new_session=True)
     os.close(slave)
     buf, first = b"", None
     try:
@@ -62,8 +74,7 @@ def _first_text_on_a_terminal(argv, env, timeout=60.0) -> tuple[float, bytes, in
                 os.read(master, 65536)
                 writes += 1
     finally:
-        p.kill()
-        p.wait()
+        _kill_group(p)
         os.close(master)
     assert first is not None, f"no output within {timeout} s: {buf[:200]!r}"
     return first, _ANSI.sub(b"", buf), writes
@@ -72,14 +83,14 @@ def _first_text_on_a_terminal(argv, env, timeout=60.0) -> tuple[float, bytes, in
 def _first_line_in_a_pipe(argv, env, timeout=60.0) -> tuple[float, str]:
     t0 = time.monotonic()
     p = subprocess.Popen(argv, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, cwd=ROOT,
-                         env=env)
+                         env=env, start_new_session=True)
     try:
         assert select.select([p.stdout], [], [], timeout)[0], "no output"
         line = p.stdout.readline().decode()
         return time.monotonic() - t0, line
     finally:
-        p.kill()
-        p.wait()
+        _kill_group(p)
+        p.stdout.close()
 
 
 @pytest.mark.parametrize("args, words", [
