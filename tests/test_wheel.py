@@ -16,6 +16,8 @@ import pytest
 import sympy as sp
 
 REPO = Path(__file__).resolve().parents[1]
+#: one xdist worker builds the wheel and runs every test of it (``--dist loadgroup``)
+pytestmark = pytest.mark.xdist_group("wheel")
 EXAMPLE = REPO / "examples" / "rotation_identities.py"
 
 
@@ -30,12 +32,15 @@ def _copy_sources(dest: Path) -> Path:
 @pytest.fixture(scope="session")
 def wheel(tmp_path_factory) -> Path:
     """The wheel, built once per session from a copy of the checkout (no network: setuptools
-    and wheel come from the test extra)."""
+    and wheel come from the test extra). Its objects come from the reader's object cache,
+    which the README's ``pip install -e`` filled (conftest.py): seconds, not a minute."""
     root = tmp_path_factory.mktemp("wheel")
     src = _copy_sources(root / "src")
     out = root / "dist"
+    env = dict(os.environ, RIGIDSYM_OBJECT_CACHE=os.environ["RIGIDSYM_TESTS_OBJECTS"])
     subprocess.run([sys.executable, "-m", "pip", "wheel", "--no-deps", "--no-build-isolation",
-                    "--quiet", "-w", str(out), str(src)], check=True, capture_output=True)
+                    "--quiet", "-w", str(out), str(src)], check=True, capture_output=True,
+                   env=env)
     (whl,) = out.glob("rigidsym-*.whl")
     return whl
 
