@@ -12,7 +12,7 @@ from pathlib import Path
 import pytest
 
 from rigidsym import kernels as K
-from rigidsym.checking.registry import load_all
+from rigidsym.checking.deciding.registry import load_all
 
 
 def pytest_configure(config):
