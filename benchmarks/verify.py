@@ -55,7 +55,7 @@ print("@@", wall, sum(r.ru_utime + r.ru_stime for r in ru), code)
 _BUILD = """
 import collections, json, sys, time
 sys.path.insert(0, {tree!r})
-from rigidsym.checking.registry import REGISTRY, load_all, select, section_of
+from rigidsym.checking.deciding.registry import REGISTRY, load_all, select, section_of
 load_all()
 per = collections.Counter()
 for i in select(None, None):
@@ -69,7 +69,8 @@ print("@@", json.dumps(per))
 _WHERE = """
 import collections, json, sys, time
 sys.path.insert(0, {tree!r})
-from rigidsym.checking import checker, evidence, registry
+from rigidsym.checking import checker
+from rigidsym.checking.deciding import evidence, registry
 spent = collections.Counter()
 def timed(mod, name, label):
     f = getattr(mod, name)

@@ -13,7 +13,7 @@ import pytest
 from _procguard import _no_process_outlives_its_test, become_subreaper  # noqa: F401
 
 from rigidsym import kernels as K
-from rigidsym.checking.registry import load_all
+from rigidsym.checking.deciding.registry import load_all
 
 _CREATED: list[str] = []
 

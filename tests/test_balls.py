@@ -16,7 +16,7 @@ from hypothesis import strategies as st
 
 from rigidsym.algebra.primitives import rotation_from_natural_invariants
 from rigidsym.algebra.symbols import angle, rotation, unit_vector, vector
-from rigidsym.checking import balls
+from rigidsym.checking.deciding import balls
 from rigidsym.zero import make_plan
 from rigidsym.zero.program import unparametrised
 
@@ -97,7 +97,7 @@ def _ball(text: str) -> tuple[Fraction, Fraction]:
 @pytest.fixture(scope="module")
 def r396e():
     from rigidsym.checking.checker import check
-    from rigidsym.checking.registry import load_all
+    from rigidsym.checking.deciding.registry import load_all
 
     load_all()
     return check("3.96e")

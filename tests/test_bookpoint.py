@@ -17,9 +17,9 @@ import sympy as sp
 
 from rigidsym.algebra.primitives import cpm
 from rigidsym.checking.checker import check
-from rigidsym.checking.explicit import explicit
-from rigidsym.checking.registry import REGISTRY, load_all
-from rigidsym.checking.usermodules import load as load_module
+from rigidsym.checking.deciding.explicit import explicit
+from rigidsym.checking.deciding.registry import REGISTRY, load_all
+from rigidsym.checking.deciding.usermodules import load as load_module
 from rigidsym.printing import notation
 from rigidsym.report.record import counterexample_record, result_record
 

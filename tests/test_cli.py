@@ -8,8 +8,8 @@ import json
 import pytest
 import sympy as sp
 
-from rigidsym.checking import registry
-from rigidsym.checking.registry import REGISTRY, Rel, load_all
+from rigidsym.checking.deciding import registry
+from rigidsym.checking.deciding.registry import REGISTRY, Rel, load_all
 from rigidsym.cli import main
 
 load_all()

@@ -109,7 +109,7 @@ def test_verify_plain_and_json_on_stdout_are_whole(capsys, monkeypatch):
     monkeypatch.setattr("sys.stdout.isatty", lambda: False, raising=False)
     assert main(["verify", "3.1", "thm3.2.1", "--jobs", "1", "--format", "plain"]) == 0
     out = capsys.readouterr().out
-    from rigidsym.checking.registry import REGISTRY
+    from rigidsym.checking.deciding.registry import REGISTRY
     for i in ("3.1", "thm3.2.1"):
         assert REGISTRY[i].title.split()[-1] in out
     assert "…" not in out

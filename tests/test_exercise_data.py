@@ -17,7 +17,7 @@ import sympy as sp
 
 import rigidsym.exercises as ex
 from rigidsym.checking.worked import render_text
-from rigidsym.checking.worked_data import read_value
+from rigidsym.checking.worked.worked_data import read_value
 
 R = sp.Rational
 

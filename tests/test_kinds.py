@@ -129,7 +129,7 @@ def test_the_book_kinds_keep_their_parametrisation():
 
 # ---------------------------------------------------------------------------- the toy kind
 def test_a_toy_kind_is_one_entry_for_the_zero_test_and_the_reports(toy):
-    from rigidsym.checking.records import model_words
+    from rigidsym.checking.deciding.records import model_words
 
     x = constrained_group("circle", "kx")
     assert x.shape == (2, 1)

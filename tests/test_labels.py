@@ -10,8 +10,8 @@ import pytest
 import sympy as sp
 
 from rigidsym.algebra.operators import Cpm, Vect
-from rigidsym.checking.explicit import explicit
-from rigidsym.checking.registry import REGISTRY, load_all
+from rigidsym.checking.deciding.explicit import explicit
+from rigidsym.checking.deciding.registry import REGISTRY, load_all
 from rigidsym.declare import cpm, mat, trace, vec, vect
 from rigidsym.printing import notation
 from rigidsym.printing.ascii import to_ascii

@@ -1,9 +1,9 @@
 """Soundness of the zero test under mutation (issue 21, "Soundness stays first").
 
 For every member the engine verifies, mutants are built by the one edit generator that the
-repair search also uses (:mod:`rigidsym.checking.mutate`): a term's sign flipped, a
+repair search also uses (:mod:`rigidsym.checking.repairing.mutate`): a term's sign flipped, a
 constant changed, a transpose dropped, ``sin ↔ cos`` swapped, a term dropped. A mutant whose
-residual ball (python-flint ``arb``, :mod:`rigidsym.checking.balls`) excludes 0 at a point
+residual ball (python-flint ``arb``, :mod:`rigidsym.checking.deciding.balls`) excludes 0 at a point
 is certainly not an identity, and the zero test must decide it does-not-hold; a mutant that
 stays zero at the balls (a sign flipped on a term that vanishes) is left alone, and so is
 one with no numeric meaning (a symbol the model no longer fixes, a singular inverse). A
@@ -24,11 +24,12 @@ from pathlib import Path
 
 import pytest
 
-from rigidsym.checking import mutate, usermodules
 from rigidsym.checking.checker import decide_rel
-from rigidsym.checking.evidence import numeric_backing
-from rigidsym.checking.explicit import _seed, shape_of
-from rigidsym.checking.registry import REGISTRY, Rel, load_all
+from rigidsym.checking.deciding import usermodules
+from rigidsym.checking.deciding.evidence import numeric_backing
+from rigidsym.checking.deciding.explicit import _seed, shape_of
+from rigidsym.checking.deciding.registry import REGISTRY, Rel, load_all
+from rigidsym.checking.repairing import mutate
 from rigidsym.zero.decide import Unsupported
 
 ROOT = Path(__file__).resolve().parents[1]

@@ -6,7 +6,7 @@ import os
 
 import pytest
 
-from rigidsym.checking.registry import REGISTRY, load_all
+from rigidsym.checking.deciding.registry import REGISTRY, load_all
 from rigidsym.checking.runner import run_checks
 
 load_all()
@@ -52,7 +52,7 @@ def test_committed_chapter_report_is_fresh(results):
     (the report is deterministic: no timings, tiny residuals bounded)."""
     from pathlib import Path
 
-    from rigidsym.checking.registry import select
+    from rigidsym.checking.deciding.registry import select
     from rigidsym.report.markdown import to_markdown
     from rigidsym.report.record import to_json
 

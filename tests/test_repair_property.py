@@ -11,9 +11,10 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from rigidsym.checking import mutate, repair, usermodules
 from rigidsym.checking.checker import decide_rel
-from rigidsym.checking.registry import REGISTRY, Rel
+from rigidsym.checking.deciding import usermodules
+from rigidsym.checking.deciding.registry import REGISTRY, Rel
+from rigidsym.checking.repairing import mutate, repair
 
 ROOT = Path(__file__).resolve().parents[1]
 SLIPS = ROOT / "tests" / "data" / "repair_slips.py"

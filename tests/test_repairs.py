@@ -17,9 +17,9 @@ from pathlib import Path
 
 import pytest
 
-from rigidsym.checking import registry, usermodules
 from rigidsym.checking.checker import check
-from rigidsym.checking.registry import REGISTRY
+from rigidsym.checking.deciding import registry, usermodules
+from rigidsym.checking.deciding.registry import REGISTRY
 
 ROOT = Path(__file__).resolve().parents[1]
 SLIPS = ROOT / "tests" / "data" / "repair_slips.py"
@@ -53,7 +53,7 @@ QUICK = {"slip:flip-2", "slip:drop-2", "slip:insert-2", "slip:scale-1", "slip:co
 
 def test_three_slips_of_every_kind_of_edit():
     kinds = _kinds()
-    from rigidsym.checking.mutate import KINDS
+    from rigidsym.checking.repairing.mutate import KINDS
 
     assert sorted(set(kinds.values())) == sorted(KINDS)
     assert all(list(kinds.values()).count(k) >= 3 for k in KINDS)
@@ -184,7 +184,7 @@ def test_cli_flags(user, capsys):
 
 def test_the_budget_and_the_vocabulary_join_the_cache_key(user):
     from rigidsym.checking import verdict_cache
-    from rigidsym.checking.correction import RepairSettings
+    from rigidsym.checking.repairing.correction import RepairSettings
 
     usermodules.load(user)
     keys = {verdict_cache.key_of("mine:skew", settings=s)
@@ -246,7 +246,7 @@ def test_show_html_markdown_and_json_carry_the_repairs(example):
 
 
 def test_repairs_are_the_same_across_hash_seeds(example):
-    code = ("import json, sys; from rigidsym.checking.usermodules import load; "
+    code = ("import json, sys; from rigidsym.checking.deciding.usermodules import load; "
             "from rigidsym.checking.checker import check; "
             f"load({str(EXAMPLE)!r}); "
             "r = [check(i) for i in ('rot:rodrigues-sign', 'rot:euler-rodrigues-norm')]; "
@@ -262,8 +262,8 @@ def test_repairs_are_the_same_across_hash_seeds(example):
 def test_a_trivial_candidate_is_no_repair():
     import sympy as sp
 
-    from rigidsym.checking.fasteval import GenericValues
-    from rigidsym.checking.repair import trivial
+    from rigidsym.checking.repairing.fasteval import GenericValues
+    from rigidsym.checking.repairing.repair import trivial
     from rigidsym.declare import mat
 
     E, MA, MC = mat("E"), sp.MatrixSymbol("M_A", 6, 6), sp.MatrixSymbol("M_C", 6, 6)

@@ -13,7 +13,7 @@ import pytest
 
 from rigidsym import cli
 from rigidsym.checking.checker import check
-from rigidsym.checking.registry import load_all
+from rigidsym.checking.deciding.registry import load_all
 from rigidsym.cli import report as cli_report
 
 load_all()
@@ -91,7 +91,7 @@ def test_html_is_self_contained(few):
 def test_html_independent_of_hash_seed(few, tmp_path):
     from rigidsym.report.html import to_html
     code = ("import sys; from rigidsym.checking.checker import check; "
-            "from rigidsym.checking.registry import load_all; "
+            "from rigidsym.checking.deciding.registry import load_all; "
             "from rigidsym.report.html import to_html; load_all(); "
             f"sys.stdout.write(to_html([check(i) for i in {IDS!r}]))")
     env = dict(os.environ, PYTHONHASHSEED="4242")

@@ -7,7 +7,7 @@ import unicodedata
 
 import pytest
 
-from rigidsym.checking.registry import REGISTRY, load_all
+from rigidsym.checking.deciding.registry import REGISTRY, load_all
 from rigidsym.printing.mathml import bold_char, latex_to_mathml
 
 load_all()

@@ -7,8 +7,8 @@ import textwrap
 
 import pytest
 
-from rigidsym.checking import registry, usermodules
-from rigidsym.checking.registry import REGISTRY, BadInput, load_all
+from rigidsym.checking.deciding import registry, usermodules
+from rigidsym.checking.deciding.registry import REGISTRY, BadInput, load_all
 from rigidsym.cli import main
 
 load_all()  # the book first: its unit vector e and angle phi exist in this process

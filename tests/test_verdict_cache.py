@@ -11,7 +11,7 @@ import pytest
 
 import rigidsym
 from rigidsym.checking import verdict_cache
-from rigidsym.checking.registry import REGISTRY
+from rigidsym.checking.deciding.registry import REGISTRY
 from rigidsym.cli import main
 
 HELPER = '''
@@ -220,7 +220,7 @@ def test_cache_info_and_clear(project, capsys):
 def test_the_key_changes_with_the_engine_settings(project, monkeypatch):
     src, helper = project
     _run(src, helper)
-    from rigidsym.checking import balls
+    from rigidsym.checking.deciding import balls
 
     before = verdict_cache.key_of("cacheb:double")
     monkeypatch.setattr(balls, "NUMERIC_POINTS", 11)

@@ -31,7 +31,8 @@ _DECLARE = (
     "as_vector", "block", "eye3", "cancel_matrix",
 )
 _WHERE = {**{n: "rigidsym.api" for n in _API}, **{n: "rigidsym.declare" for n in _DECLARE},
-          "load_module": "rigidsym.checking.usermodules", "BadInput": "rigidsym.checking.registry"}
+          "load_module": "rigidsym.checking.deciding.usermodules",
+          "BadInput": "rigidsym.checking.deciding.registry"}
 _RENAMED = {"load_module": "load"}
 
 __all__ = [*_API, "load_module", "BadInput", *_DECLARE]

@@ -21,7 +21,7 @@ from types import ModuleType
 from typing import overload
 
 from rigidsym.checking.checker import Outcome
-from rigidsym.checking.registry import VERDICTS, BadInput, select
+from rigidsym.checking.deciding.registry import VERDICTS, BadInput, select
 
 __all__ = ["check", "verify", "Result", "Results"]
 
@@ -100,7 +100,7 @@ class Result(Outcome):
             shown = mathml_or_text(latex, latex, display=True, tag="pre")
             rows.append(f"<div><i>{label}</i>{shown}</div>")
         if self.counterexample:
-            # in the book's symbols when described (rigidsym.checking.bookpoint)
+            # in the book's symbols when described (rigidsym.checking.deciding.bookpoint)
             syms = self.counterexample.get("symbols") or []
             pt = "; ".join(f"{x['symbol']} = {x['text']}" for x in syms) or \
                 ", ".join(f"{k} = {v}" for k, v in self.counterexample["point"].items())
@@ -222,7 +222,7 @@ class Results(Sequence[Result]):
 
 def _load(modules) -> list[str]:
     """Load user modules (paths, dotted names or module objects); their import names."""
-    from rigidsym.checking import usermodules
+    from rigidsym.checking.deciding import usermodules
 
     if isinstance(modules, str | os.PathLike | ModuleType):
         modules = [modules]
@@ -234,7 +234,7 @@ def _load(modules) -> list[str]:
 
 
 def _repair_args(repairs, repair_budget) -> None:
-    from rigidsym.checking.registry import check_budget
+    from rigidsym.checking.deciding.registry import check_budget
 
     if not isinstance(repairs, bool):
         raise ValueError(f"repairs: expected True or False, got {repairs!r}")

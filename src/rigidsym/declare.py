@@ -51,7 +51,7 @@ from rigidsym.algebra.symbols import (
     unit_vector4,
     vector,
 )
-from rigidsym.checking.registry import Rel, Statement, equation
+from rigidsym.checking.deciding.registry import Rel, Statement, equation
 
 __all__ = [
     "equation", "Statement", "Rel",

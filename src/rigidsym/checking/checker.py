@@ -8,13 +8,14 @@ decided, or the numeric check disagrees: a defect, never counted as verified).
 
 The verdict follows the counterexample: a member with an exact counterexample makes the id
 ``does-not-hold`` whether or not a correction is known; a declared correction that does not
-verify makes it ``undecided`` (:mod:`rigidsym.checking.correction`, which also runs the
-repair search of :mod:`rigidsym.checking.repair`).
+verify makes it ``undecided`` (:mod:`rigidsym.checking.repairing.correction`, which also runs the
+repair search of :mod:`rigidsym.checking.repairing.repair`).
 
 Every verdict is backed by a ball-arithmetic evaluation (python-flint ``arb``) of the
 *unparametrised* expressions at ``NUMERIC_POINTS`` seeded points that satisfy the
-constraints exactly, from ``NUMERIC_DIGITS`` digits up (:mod:`rigidsym.checking.balls`). The balls
-back a verdict and never make one: a disagreement turns it ``undecided``.
+constraints exactly, from ``NUMERIC_DIGITS`` digits up
+(:mod:`rigidsym.checking.deciding.balls`). The balls back a verdict and never make one: a
+disagreement turns it ``undecided``.
 """
 
 from __future__ import annotations
@@ -24,17 +25,16 @@ import time
 from dataclasses import asdict, dataclass, field
 from fractions import Fraction
 
-from rigidsym.checking.balls import round_up
-from rigidsym.checking.bookpoint import describe_point
-from rigidsym.checking.correction import RepairSettings, correct
-from rigidsym.checking.evidence import (
+from rigidsym.checking.deciding.balls import round_up
+from rigidsym.checking.deciding.bookpoint import describe_point
+from rigidsym.checking.deciding.evidence import (
     NUMERIC_DIGITS,
     NUMERIC_POINTS,
     _counterexample,
     counterexample_ball,
     numeric_backing,
 )
-from rigidsym.checking.explicit import (
+from rigidsym.checking.deciding.explicit import (
     _EXPLICIT_CACHE,
     _entries,
     _fmt,
@@ -43,8 +43,9 @@ from rigidsym.checking.explicit import (
     explicit,
     shape_of,
 )
-from rigidsym.checking.records import member_record, model_words
-from rigidsym.checking.registry import REGISTRY, Equation, Rel, Statement
+from rigidsym.checking.deciding.records import member_record, model_words
+from rigidsym.checking.deciding.registry import REGISTRY, Equation, Rel, Statement
+from rigidsym.checking.repairing.correction import RepairSettings, correct
 from rigidsym.zero.decide import Unsupported, decide_zero, make_plan
 
 __all__ = ["Outcome", "check", "explicit", "shape_of", "NUMERIC_DIGITS", "NUMERIC_POINTS"]
@@ -86,18 +87,18 @@ class Outcome:
     singular: str | None = None
     failing_member: str | None = None
     #: one record per member (printed, claim, corrected), see
-    #: :func:`rigidsym.checking.records.member_record`
+    #: :func:`rigidsym.checking.deciding.records.member_record`
     members: list[dict] = field(default_factory=list)
     #: the model's atoms and their constraints, in words ("e: unit vector, ...")
     model: list[str] = field(default_factory=list)
     #: read from the verdict cache (a run field, like ``seconds``: not in written reports)
     cached: bool = False
     #: for a does-not-hold, the verified repairs of its failing members (schema-2 records,
-    #: :func:`rigidsym.checking.repair.repair_record`), at most ``repair.KEEP`` per member
+    #: :func:`rigidsym.checking.repairing.repair.repair_record`), at most ``repair.KEEP`` per member
     repairs: list[dict] = field(default_factory=list)
     #: what the repair search tried per failing member, and in words what it found
     repair_search: list[dict] = field(default_factory=list)
-    #: where the correction comes from (:data:`rigidsym.checking.correction.CORRECTIONS`),
+    #: where the correction comes from (:data:`rigidsym.checking.repairing.correction.CORRECTIONS`),
     #: ``None`` when nothing fails
     correction: str | None = None
 
@@ -184,9 +185,9 @@ def check(eq: Equation | str, *, repairs: bool = True,
     Args:
         eq: an :class:`Equation` or its id.
         repairs: search the repairs of a member that does not hold
-            (:mod:`rigidsym.checking.repair`).
+            (:mod:`rigidsym.checking.repairing.repair`).
         repair_budget: candidates per failing member; ``None``: the declaration's
-            ``repair_budget``, else :data:`rigidsym.checking.repair.REPAIR_BUDGET`.
+            ``repair_budget``, else :data:`rigidsym.checking.repairing.repair.REPAIR_BUDGET`.
         expanded: print the expanded strings (``printed``, ``derived``, ``corrected``:
             the full reports and the API); ``False`` leaves them ``None`` (a tenth of a
             chapter's checking time, for ``rigidsym verify``, which never shows them).

@@ -9,7 +9,7 @@ from contextlib import nullcontext
 from functools import partial
 
 from rigidsym._progress import Reporter, load_durations, save_durations
-from rigidsym.checking.correction import RepairSettings
+from rigidsym.checking.repairing.correction import RepairSettings
 
 __all__ = ["run_checks", "verdict_words"]
 
@@ -48,7 +48,7 @@ def _check_group(ids: list[str], settings: RepairSettings | None = None,
 def _group_of(eq_id: str) -> str:
     """The ids that share the declarations' cached models (a book section, or a user
     module): checked in one worker, so that each model is derived once, not per worker."""
-    from rigidsym.checking.registry import REGISTRY, is_user_id, section_of
+    from rigidsym.checking.deciding.registry import REGISTRY, is_user_id, section_of
     if is_user_id(eq_id):
         return REGISTRY[eq_id].module
     return section_of(eq_id)
@@ -213,7 +213,7 @@ def _parallel(est: _Estimate, jobs: int, ph, results: dict, group) -> None:
 def _summary(results) -> str:
     from collections import Counter
 
-    from rigidsym.checking.registry import VERDICTS
+    from rigidsym.checking.deciding.registry import VERDICTS
 
     c = Counter(r.verdict for r in results)
     off = sum(r.verdict != r.expected for r in results)

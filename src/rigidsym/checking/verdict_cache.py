@@ -14,7 +14,7 @@ on has changed (``<cache>/verdicts/``, see :mod:`rigidsym._cache` for where and 
 - the engine's settings as they are at run time (point counts, precision, limits);
 - the repair search's settings: on or off, the budget in effect for the id (the run's, the
   declaration's or the default) and the version of the edit vocabulary
-  (:data:`rigidsym.checking.mutate.VOCABULARY_VERSION`).
+  (:data:`rigidsym.checking.repairing.mutate.VOCABULARY_VERSION`).
 
 **Not tracked** (say ``--no-cache`` or ``rigidsym cache clear --verdicts`` after changing
 them): data files a declaration reads at run time; modules imported dynamically
@@ -45,7 +45,7 @@ from functools import cache
 from pathlib import Path
 
 from rigidsym import _cache, _config
-from rigidsym.checking.registry import REGISTRY, Equation
+from rigidsym.checking.deciding.registry import REGISTRY, Equation
 
 __all__ = ["lookup", "store", "key_of", "VerdictCacheWarning", "FORMAT"]
 
@@ -98,7 +98,9 @@ def _environment() -> str:
 
 def _settings() -> str:
     """The engine's settings as they are now (a test or a user may have changed them)."""
-    from rigidsym.checking import balls, checker, fasteval, repair
+    from rigidsym.checking import checker
+    from rigidsym.checking.deciding import balls
+    from rigidsym.checking.repairing import fasteval, repair
     from rigidsym.zero import decide
 
     names = {decide: ("SAMPLE_SET_SIZE", "CANCEL_NODE_LIMIT", "CANCEL_TERMS_LIMIT",
@@ -182,8 +184,8 @@ def _declared_function(eq: Equation):
 
 
 def _repair_key(eq: Equation, settings) -> str:
-    from rigidsym.checking.correction import RepairSettings, budget_of
-    from rigidsym.checking.mutate import VOCABULARY_VERSION
+    from rigidsym.checking.repairing.correction import RepairSettings, budget_of
+    from rigidsym.checking.repairing.mutate import VOCABULARY_VERSION
 
     settings = settings or RepairSettings()
     return json.dumps({"repairs": settings.enabled, "vocabulary": VOCABULARY_VERSION,
@@ -193,7 +195,7 @@ def _repair_key(eq: Equation, settings) -> str:
 def key_of(eq_id: str, _deps: dict | None = None, settings=None) -> str | None:
     """The cache key of ``eq_id`` (hex SHA-256), or ``None`` when it must not be cached (a
     declaration replaced in memory, a module without a file, a helper changed on disk).
-    ``settings`` are the run's :class:`rigidsym.checking.correction.RepairSettings`.
+    ``settings`` are the run's :class:`rigidsym.checking.repairing.correction.RepairSettings`.
 
     Raises:
         KeyError: for an id that is not registered.

@@ -86,7 +86,7 @@ def main(argv: list[str] | None = None) -> int:
     for name, sp_ in parser._subparsers._group_actions[0].choices.items():
         sp_.error = _error(f"rigidsym {name} --help lists its options")
     args = parser.parse_args(argv)
-    from rigidsym.checking.registry import BadInput
+    from rigidsym.checking.deciding.registry import BadInput
     with ascii_output(getattr(args, "ascii", False)):
         try:
             code = args.func(args)

@@ -8,7 +8,7 @@ import os
 import sys
 from contextlib import contextmanager
 
-from rigidsym.checking.usermodules import MODULE_HELP
+from rigidsym.checking.deciding.usermodules import MODULE_HELP
 
 __all__ = ["console", "MODULE_HELP", "JOBS", "HelpFormatter", "ascii_output",
            "add_ascii", "FORMATS", "output_format", "add_repair_arguments", "repair_options"]

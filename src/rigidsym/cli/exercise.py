@@ -207,7 +207,7 @@ def _solve_one(ex_id: str, data: dict):
     """Solve one exercise with a spinner on stderr (a solution can take seconds)."""
     from rigidsym._progress import Reporter
     from rigidsym.checking.worked import parameters, solve
-    from rigidsym.checking.worked_data import read_data
+    from rigidsym.checking.worked.worked_data import read_data
 
     # bad data is one error line, before any progress line
     rest = {k: v for k, v in data.items() if k != "tol"}

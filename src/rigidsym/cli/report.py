@@ -6,7 +6,7 @@ import os
 from pathlib import Path
 
 from rigidsym._io import write_atomic
-from rigidsym.checking.registry import select
+from rigidsym.checking.deciding.registry import select
 from rigidsym.cli._common import JOBS, MODULE_HELP
 
 __all__ = ["add_arguments", "run", "default_report_dir"]

@@ -6,8 +6,8 @@ import inspect
 import os
 import sys
 
-from rigidsym.checking.registry import REGISTRY
-from rigidsym.checking.usermodules import select_with_modules
+from rigidsym.checking.deciding.registry import REGISTRY
+from rigidsym.checking.deciding.usermodules import select_with_modules
 from rigidsym.cli._common import MODULE_HELP, add_repair_arguments, repair_options
 
 __all__ = ["add_arguments", "run"]

@@ -6,7 +6,7 @@ import sys
 import time
 
 from rigidsym._io import write_atomic
-from rigidsym.checking.usermodules import select_with_modules
+from rigidsym.checking.deciding.usermodules import select_with_modules
 from rigidsym.cli._common import (
     FORMATS,
     JOBS,

@@ -13,7 +13,7 @@ import sys
 import time
 from pathlib import Path
 
-from rigidsym.checking.registry import BadInput
+from rigidsym.checking.deciding.registry import BadInput
 from rigidsym.codegen.spec import Kernel
 
 __all__ = ["user_kernels", "generate_user", "cmd_generate_user"]
@@ -58,7 +58,7 @@ def generate_user(modules):
         BadInput: for a module that cannot be loaded, one without ``KERNELS``, or two
             kernels of one name.
     """
-    from rigidsym.checking.usermodules import load_many
+    from rigidsym.checking.deciding.usermodules import load_many
     from rigidsym.codegen.generator import generate
 
     ums = load_many(modules)

@@ -15,7 +15,7 @@ import html
 import sympy as sp
 from markupsafe import Markup
 
-from rigidsym.checking.pointvalues import decimal_text
+from rigidsym.checking.deciding.pointvalues import decimal_text
 from rigidsym.printing import notation
 from rigidsym.printing.labels import label_text
 

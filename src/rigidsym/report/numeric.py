@@ -4,7 +4,7 @@ show``, the Markdown and the HTML reports print (from the record's ``numeric`` f
 
 from __future__ import annotations
 
-from rigidsym.checking.balls import NUMERIC_DIGITS, NUMERIC_POINTS
+from rigidsym.checking.deciding.balls import NUMERIC_DIGITS, NUMERIC_POINTS
 from rigidsym.report.record import RESIDUAL_FLOOR
 
 __all__ = ["numeric_sentence"]

@@ -15,7 +15,7 @@ from collections import Counter
 import sympy as sp
 
 from rigidsym.checking.checker import Outcome
-from rigidsym.checking.registry import USER_CAUSE_DEFAULT, VERDICTS, is_user_id
+from rigidsym.checking.deciding.registry import USER_CAUSE_DEFAULT, VERDICTS, is_user_id
 from rigidsym.printing import notation
 from rigidsym.report.repairs import repair_fields
 
@@ -107,13 +107,15 @@ def _atom_text(name: str) -> str:
 def counterexample_record(ce: dict | None) -> dict | None:
     """The counterexample with book names, decimals, the residual and its largest entry;
     ``symbols`` (the book symbols of the failing member there, exact and decimal) and
-    ``chosen`` (how the point was chosen) as :mod:`rigidsym.checking.bookpoint` gave them."""
+    ``chosen`` (how the point was chosen) as :mod:`rigidsym.checking.deciding.bookpoint` gave
+    them."""
     if not ce:
         return None
     point = [{"atom": k, "book": _atom_text(k), "exact": v, "decimal": _decimal(v)}
              for k, v in ce["point"].items()]
     out = {"member": ce.get("member", ""), "point": point, "lhs": ce["lhs"], "rhs": ce["rhs"],
-           # the book's symbols there and how the point was chosen (rigidsym.checking.bookpoint)
+           # the book's symbols there and how the point was chosen
+           # (rigidsym.checking.deciding.bookpoint)
            "symbols": ce.get("symbols", []), "chosen": ce.get("chosen")}
     res = ce.get("residual")
     if res is not None:
@@ -170,7 +172,7 @@ def result_record(r: Outcome, timings: bool = True, full: bool = False) -> dict:
 def document_header() -> dict:
     """The head of a schema-2 document: ``{"schema": 2, "python_flint": version}`` (the
     library of the exact engine and of the ball-arithmetic backing)."""
-    from rigidsym.checking.balls import flint_version
+    from rigidsym.checking.deciding.balls import flint_version
 
     return {"schema": SCHEMA, "python_flint": flint_version()}
 

@@ -17,7 +17,7 @@ import sys
 import sympy as sp
 
 from rigidsym.checking.checker import Outcome
-from rigidsym.checking.registry import Rel, is_user_id
+from rigidsym.checking.deciding.registry import Rel, is_user_id
 from rigidsym.printing import notation
 from rigidsym.printing.labels import label_text
 from rigidsym.report.counterexample import GLOSSARY_HINT, sides_of, text_lines

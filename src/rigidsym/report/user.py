@@ -6,9 +6,9 @@ from pathlib import Path
 
 from rigidsym._io import write_atomic
 from rigidsym._progress import Reporter
-from rigidsym.checking.registry import select
+from rigidsym.checking.deciding.registry import select
+from rigidsym.checking.deciding.usermodules import load_many
 from rigidsym.checking.runner import run_checks
-from rigidsym.checking.usermodules import load_many
 from rigidsym.report.html import to_html
 from rigidsym.report.markdown import to_markdown
 from rigidsym.report.record import to_json

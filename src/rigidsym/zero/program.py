@@ -14,7 +14,7 @@ Two translations:
   ``plan.params``. Runs over ``fmpq`` (:func:`run_exact`, a rational point) or over
   ``fmpq_mpoly`` fractions (:func:`run_rational`, the rational function itself, python-flint).
 - :func:`unparametrised` (numeric): atoms stay leaves, functions are applied as such; runs
-  over ``arb`` balls (:mod:`rigidsym.checking.balls`).
+  over ``arb`` balls (:mod:`rigidsym.checking.deciding.balls`).
 
 Operations (tuples, the first item the code): ``(CONST, q)``, ``(LEAF, k)``,
 ``(ADD, i, j, ...)``, ``(MUL, i, j, ...)``, ``(POW, i, n)`` (integer n), ``(ROOT, i, p, q)``

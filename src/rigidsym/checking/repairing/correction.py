@@ -6,14 +6,14 @@ hold, whether or not a correction is known. A correction is additional evidence:
 - a declared ``corrected=`` must verify; one that does not leaves the verdict
   ``undecided`` (the declaration itself is faulty, and the detail says so);
 - with no ``corrected=``, the first repair the search finds for each failing member
-  (:mod:`rigidsym.checking.repair`) serves as the corrected form, marked "found by
+  (:mod:`rigidsym.checking.repairing.repair`) serves as the corrected form, marked "found by
   search";
 - with neither, the record says "no correction", with what was searched in the words of
-  :func:`rigidsym.checking.repair.search_record` (never a guess).
+  :func:`rigidsym.checking.repairing.repair.search_record` (never a guess).
 
 The repair search runs for every does-not-hold (``repairs=False`` turns it off); its
 budget is the run's when given, else the declaration's, else
-:data:`rigidsym.checking.repair.REPAIR_BUDGET`.
+:data:`rigidsym.checking.repairing.repair.REPAIR_BUDGET`.
 """
 
 from __future__ import annotations
@@ -21,9 +21,9 @@ from __future__ import annotations
 from collections.abc import Callable
 from dataclasses import dataclass, field
 
-from rigidsym.checking import repair
-from rigidsym.checking.records import member_record
-from rigidsym.checking.registry import Rel
+from rigidsym.checking.deciding.records import member_record
+from rigidsym.checking.deciding.registry import Rel
+from rigidsym.checking.repairing import repair
 
 __all__ = ["Correction", "RepairSettings", "correct", "budget_of", "CORRECTIONS"]
 

@@ -18,8 +18,8 @@ import sympy as sp
 from sympy.core.function import AppliedUndef
 
 from rigidsym.algebra.symbols import TIME, constrained_atom, constraint_of
-from rigidsym.checking.explicit import _entries, explicit, shape_of
-from rigidsym.checking.pointvalues import (
+from rigidsym.checking.deciding.explicit import _entries, explicit, shape_of
+from rigidsym.checking.deciding.pointvalues import (
     PointValues,
     atom_base,
     decimal,
@@ -52,14 +52,14 @@ def describe_point(rel, model: dict, rels: list, plan, pt: dict, sentence: str =
     """The book symbols of ``rel`` at the counterexample, and how the point was chosen.
 
     Args:
-        rel: the failing relation (:class:`rigidsym.checking.registry.Rel`), book symbols.
+        rel: the failing relation (:class:`rigidsym.checking.deciding.registry.Rel`), book symbols.
         model: the statement's model (book symbol -> first-principles value).
         rels: every relation of the statement (printed, claims, corrected): the other
             scalar and vector symbols it uses are shown too when the point fixes them.
         plan: the zero test's plan of ``rel`` (:func:`rigidsym.zero.decide.make_plan`).
         pt: the exact counterexample, plan parameter -> ``Fraction``.
         sentence: the statement's own words on its model's parameters
-            (:attr:`rigidsym.checking.registry.Statement.parametrisation`), or "".
+            (:attr:`rigidsym.checking.deciding.registry.Statement.parametrisation`), or "".
 
     Returns:
         ``{"symbols": [...], "chosen": {"text": ..., "params": [...]}}`` (see

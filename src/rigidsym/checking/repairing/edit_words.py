@@ -1,6 +1,6 @@
-"""An edit of :mod:`rigidsym.checking.mutate` in words, in book notation (``flip the sign of
-the term -sin φ E``, ``replace v̇ by ν̇ (one occurrence)``): what the reports say a repair
-did."""
+"""An edit of :mod:`rigidsym.checking.repairing.mutate` in words, in book notation
+(``flip the sign of the term -sin φ E``, ``replace v̇ by ν̇ (one occurrence)``): what the
+reports say a repair did."""
 
 from __future__ import annotations
 

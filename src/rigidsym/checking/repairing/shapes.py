@@ -3,7 +3,7 @@ editable, positions (paths of child indices), and shapes (``None`` for a scalar,
 ``(rows, cols)`` for a matrix) of trees rebuilt raw, where sympy checked nothing.
 
 A node's shape depends only on its children's shapes: the repair search's pruning of pairs
-(:mod:`rigidsym.checking.candidates`) rests on it.
+(:mod:`rigidsym.checking.repairing.candidates`) rests on it.
 """
 
 from __future__ import annotations

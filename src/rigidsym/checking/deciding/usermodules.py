@@ -11,7 +11,8 @@ module-level ``KERNELS`` list of :class:`rigidsym.codegen.spec.Kernel`.
   declarations, so they are replaced, never "declared twice".
 - Bad input (a missing file, a module that raises on import, a malformed or reserved id, an
   id declared in two places, a declaration returning the wrong type) raises
-  :class:`rigidsym.checking.registry.BadInput` with one line naming the module and the problem.
+  :class:`rigidsym.checking.deciding.registry.BadInput` with one line naming the module and
+  the problem.
 """
 
 from __future__ import annotations
@@ -25,7 +26,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from rigidsym._io import NotAModule, load_module
-from rigidsym.checking.registry import (
+from rigidsym.checking.deciding.registry import (
     REGISTRY,
     BadInput,
     DeclarationTypeError,
@@ -213,12 +214,13 @@ MODULE_HELP = ("a user module: a .py file or a dotted name importable from the c
 
 def select_with_modules(ids, sections, modules) -> list[str]:
     """Load ``modules`` (paths or dotted names), then resolve ids and sections as
-    :func:`rigidsym.checking.registry.select` does: with no ids and no sections, the modules' ids.
+    :func:`rigidsym.checking.deciding.registry.select` does: with no ids and no sections, the
+    modules' ids.
 
     Raises:
         BadInput: for a module that cannot be loaded, or an unknown id or section.
     """
-    from rigidsym.checking.registry import select
+    from rigidsym.checking.deciding.registry import select
 
     names = [m.name for m in load_many(modules)]
     return select(ids, sections, names)

@@ -5,7 +5,7 @@ kept. A pair of such edits on different sides then needs no rebuilding at all (t
 side of one, the right side of the other); a pair on disjoint branches of one side
 rebuilds only the ancestors of the second change; a nested pair applies the outer edit to
 the node the inner one left. A drop next to another change of one side, and edits of
-several nodes, go through the general :func:`rigidsym.checking.mutate.apply_edits`.
+several nodes, go through the general :func:`rigidsym.checking.repairing.mutate.apply_edits`.
 
 Pairs whose shapes cannot fit are skipped without being counted, by rules that are exact
 because a node's shape depends only on its children's shapes:
@@ -24,8 +24,8 @@ from bisect import bisect_left
 from collections.abc import Iterator
 from dataclasses import dataclass, field
 
-from rigidsym.checking import mutate
-from rigidsym.checking import treeops as T
+from rigidsym.checking.repairing import mutate
+from rigidsym.checking.repairing import treeops as T
 
 __all__ = ["Single", "prepare", "pairs"]
 
@@ -182,7 +182,7 @@ def _mute(a: Single, b: Single) -> bool:
 
 
 def _conflict(a: Single, b: Single) -> bool:
-    """:func:`rigidsym.checking.mutate.compatible` negated, for two edits of one node each
+    """:func:`rigidsym.checking.repairing.mutate.compatible` negated, for two edits of one node each
     on one side."""
     if a.path == b.path:
         return True

@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import sympy as sp
 
-from rigidsym.checking.shapes import is_matrix
+from rigidsym.checking.repairing.shapes import is_matrix
 
 __all__ = ["Marked", "MarkedScalar", "mark"]
 

@@ -1,12 +1,12 @@
 """The repair search: the smallest edits that make a failing member hold, each verified.
 
-For a printed member that does not hold, the edits of :mod:`rigidsym.checking.mutate` are
+For a printed member that does not hold, the edits of :mod:`rigidsym.checking.repairing.mutate` are
 tried, single edits first, then pairs. Each candidate is
 
 1. built raw (no sympy canonicalisation) and its shapes checked: a candidate whose shapes
    do not fit is no candidate and is not counted;
 2. evaluated at two fixed exact points modulo a prime, reusing the values of unchanged
-   subtrees (:mod:`rigidsym.checking.fasteval`): a candidate whose sides differ there does
+   subtrees (:mod:`rigidsym.checking.repairing.fasteval`): a candidate whose sides differ there does
    not hold (exactly), and most die here;
 3. if it survives: rejected when its two sides are the same expression with the book
    symbols left unsubstituted (``Eᵀ = Eᵀ``, ``(M_A - M_A)[:3, 3:] = O``): such a
@@ -30,10 +30,11 @@ from dataclasses import dataclass, field
 
 import sympy as sp
 
-from rigidsym.checking import candidates, mutate
-from rigidsym.checking import treeops as T
-from rigidsym.checking.explicit import _entries, explicit, shape_of
-from rigidsym.checking.fasteval import (
+from rigidsym.checking.deciding.explicit import _entries, explicit, shape_of
+from rigidsym.checking.deciding.registry import Rel
+from rigidsym.checking.repairing import candidates, mutate
+from rigidsym.checking.repairing import treeops as T
+from rigidsym.checking.repairing.fasteval import (
     GenericValues,
     Inconclusive,
     Undecidable,
@@ -41,7 +42,6 @@ from rigidsym.checking.fasteval import (
     differs,
     points_for,
 )
-from rigidsym.checking.registry import Rel
 from rigidsym.printing import notation
 from rigidsym.zero.decide import Unsupported, make_plan
 
@@ -62,7 +62,7 @@ _BOUND = re.compile(r"P\(false zero\) <= ([0-9.]+E[-+]?\d+)")
 
 @dataclass
 class Decision:
-    """A decision in the shape :func:`rigidsym.checking.records.member_record` reads."""
+    """A decision in the shape :func:`rigidsym.checking.deciding.records.member_record` reads."""
 
     zero: bool | None
     method: str
@@ -307,8 +307,9 @@ def repair_record(f: Found, printed: Rel, keep: set, equals_declared: bool) -> d
     Returns:
         ``{"member", "edits", "kinds", "text", "latex", "printed_text", "printed_latex",
         "method", "failure_bound", "equals_declared"}``: ``edits`` in words and ``kinds``
-        (:data:`rigidsym.checking.mutate.KINDS`); ``text``/``latex`` are the repaired member
-        in book notation with each edited subterm marked (``⟦…⟧``, ``\\boxed{…}``), and
+        (:data:`rigidsym.checking.repairing.mutate.KINDS`); ``text``/``latex`` are the
+        repaired member in book notation with each edited subterm marked (``⟦…⟧``,
+        ``\\boxed{…}``), and
         ``printed_text``/``printed_latex`` the printed member with the subterms the edits
         change marked.
     """

@@ -1,7 +1,7 @@
 """The equation registry: one declaration per numbered equation of the book (or user id).
 
 A declaration is a function in ``derivations/`` (or a user module, see
-:mod:`rigidsym.checking.usermodules`) decorated with :func:`equation`. It returns a
+:mod:`rigidsym.checking.deciding.usermodules`) decorated with :func:`equation`. It returns a
 :class:`Statement`: the printed equation transcribed member by member in the book's symbols
 (garbles included), the *model* (first-principles values of those symbols, derived
 independently of the printed form), and, when the printed form does not hold, the
@@ -365,8 +365,9 @@ def select(ids: list[str] | None = None, sections: list[str] | None = None,
         ids: book ids (``"3.16"``, ``"3.96"`` for all its parts) or user ids.
         sections: book sections ``"3.2"`` … ``"3.8"`` or sections of loaded user
             declarations.
-        modules: names of loaded user modules (:func:`rigidsym.checking.usermodules.load`): with no
-            ids and no sections, their ids are selected.
+        modules: names of loaded user modules
+            (:func:`rigidsym.checking.deciding.usermodules.load`): with no ids and no
+            sections, their ids are selected.
 
     Returns:
         The ids in order: book order first, then user ids in declaration order. With no

@@ -3,8 +3,8 @@
 - the **mutation test** of the zero test (issue 21, "Soundness stays first"): a verified
   member with a term's sign flipped, a constant changed, a transpose dropped, ``sin ↔ cos``
   swapped or a term dropped must be decided does-not-hold whenever it is non-zero;
-- the **repair search** (issue 23, :mod:`rigidsym.checking.repair`): the smallest edit that
-  makes a failing member hold.
+- the **repair search** (issue 23, :mod:`rigidsym.checking.repairing.repair`): the smallest
+  edit that makes a failing member hold.
 
 The vocabulary, in the order repairs are reported (:data:`KINDS`):
 
@@ -28,7 +28,7 @@ multiply-factor multiply one term by a factor that occurs elsewhere in the state
 ============== ==============================================================================
 
 The tree is the book-symbol tree of a member, before the model is substituted (see
-:mod:`rigidsym.checking.treeops`). The search never looks at the declared corrected form:
+:mod:`rigidsym.checking.repairing.treeops`). The search never looks at the declared corrected form:
 its pools of terms, factors and symbols come from the printed members, the claims and the
 model's keys.
 """
@@ -41,8 +41,8 @@ import sympy as sp
 from sympy.core.function import AppliedUndef
 
 from rigidsym.algebra.symbols import TIME, constraint_of
-from rigidsym.checking import treeops as T
-from rigidsym.checking.edit_words import describe
+from rigidsym.checking.repairing import treeops as T
+from rigidsym.checking.repairing.edit_words import describe
 
 __all__ = ["KINDS", "MUTATION_KINDS", "VOCABULARY_VERSION", "Edit", "Pools", "pools",
            "single_edits", "compatible", "apply_edits", "describe", "mutants"]
@@ -306,7 +306,7 @@ def _global_edits(rel, pl: Pools, kinds) -> list[Edit]:
 
 
 def single_edits(rel, pl: Pools, kinds=KINDS) -> list[Edit]:
-    """Every single edit of ``rel`` (a :class:`~rigidsym.checking.registry.Rel`) of the
+    """Every single edit of ``rel`` (a :class:`~rigidsym.checking.deciding.registry.Rel`) of the
     given kinds, sorted by kind (:data:`KINDS` order) and then position in the tree."""
     kinds = set(kinds)
     out = []

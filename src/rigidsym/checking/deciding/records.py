@@ -11,7 +11,7 @@ from sympy.core.function import AppliedUndef
 
 from rigidsym import _kinds
 from rigidsym.algebra.symbols import TIME, constraint_of
-from rigidsym.checking.explicit import _entries
+from rigidsym.checking.deciding.explicit import _entries
 from rigidsym.printing import notation
 
 __all__ = ["member_record", "model_words", "MEMBER_TEXT_LIMIT", "MEMBER_LATEX_LIMIT"]
@@ -28,7 +28,7 @@ def member_record(rel, role: str, out) -> dict:
     """A member of a statement as plain data.
 
     Args:
-        rel: the relation (:class:`rigidsym.checking.registry.Rel`).
+        rel: the relation (:class:`rigidsym.checking.deciding.registry.Rel`).
         role: ``printed``, ``claim`` or ``corrected``.
         out: its decision (``zero``, ``method``, ``detail`` attributes), or ``None`` for a
             member that a definition introduces.

@@ -32,8 +32,8 @@ from sympy.matrices.expressions.matexpr import MatrixElement
 from sympy.matrices.expressions.slice import MatrixSlice
 
 from rigidsym.algebra.operators import Cpm, Cross, Det, Vect
-from rigidsym.checking.explicit import _entries, _sc, explicit
-from rigidsym.checking.treeops import RawBlocks
+from rigidsym.checking.deciding.explicit import _entries, _sc, explicit
+from rigidsym.checking.repairing.treeops import RawBlocks
 from rigidsym.zero.decide import Unsupported, evaluate
 
 __all__ = ["PRIME", "Inconclusive", "Undecidable", "PointValues", "GenericValues", "points_for",
@@ -308,7 +308,7 @@ class GenericValues(PointValues):
 
     Two book-symbol expressions with different values here differ after expansion (the
     reduction is a ring homomorphism again), so the expansion is needed only to confirm an
-    equality: :mod:`rigidsym.checking.repair` uses it to recognise a trivial candidate
+    equality: :mod:`rigidsym.checking.repairing.repair` uses it to recognise a trivial candidate
     (``Eᵀ = Eᵀ``), the same repair found twice, and a repair equal to the declared one.
     """
 

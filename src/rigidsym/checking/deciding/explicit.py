@@ -9,7 +9,7 @@ import zlib
 import sympy as sp
 from sympy.matrices.expressions.matexpr import MatrixElement
 
-from rigidsym.checking.registry import Rel
+from rigidsym.checking.deciding.registry import Rel
 
 
 # --------------------------------------------------------------------------- helpers

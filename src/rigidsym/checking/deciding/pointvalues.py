@@ -1,4 +1,5 @@
-"""Exact values at a counterexample, for describing it (:mod:`rigidsym.checking.bookpoint`):
+"""Exact values at a counterexample, for describing it
+(:mod:`rigidsym.checking.deciding.bookpoint`):
 the plan's atoms at the point (angles as ``2M atan(t)``, consistent with their cosines),
 closed forms where a value is irrational (``√21/4``), decimals for reading.
 """
@@ -11,7 +12,7 @@ import sympy as sp
 from sympy.core.function import AppliedUndef
 
 from rigidsym.algebra.symbols import TIME, constraint_of
-from rigidsym.checking.explicit import _entries
+from rigidsym.checking.deciding.explicit import _entries
 from rigidsym.printing import notation
 from rigidsym.zero.decide import Unsupported, evaluate
 from rigidsym.zero.plan import _TRIG

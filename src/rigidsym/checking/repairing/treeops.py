@@ -1,6 +1,6 @@
 """The three ways to rebuild a printed form's tree after an edit (raw, canonical, marked),
-on the structure of :mod:`rigidsym.checking.shapes` and the marks of
-:mod:`rigidsym.checking.marks`.
+on the structure of :mod:`rigidsym.checking.repairing.shapes` and the marks of
+:mod:`rigidsym.checking.repairing.marks`.
 
 A printed member is a sympy tree over book symbols (``mat("Q")``, ``vec("e")``,
 ``MatAdd``/``MatMul``/``Add``/``Mul``, ``Transpose``, ``sin``…), before the model is
@@ -10,7 +10,7 @@ left side, 1 the right; ``path`` the child indices from the side's root, as
 
 - **raw** rebuilds (:func:`apply`) skip sympy's canonicalisation (``Basic.__new__``): about
   1 µs a node instead of 100 µs, and the tree keeps the shape the edit gave it, which the
-  fast evaluator of :mod:`rigidsym.checking.repair` memoises on. They are never shown.
+  fast evaluator of :mod:`rigidsym.checking.repairing.repair` memoises on. They are never shown.
 - **canonical** rebuilds (:func:`canonical`) run sympy's constructors on the new nodes only
   (unchanged subtrees are reused as they are): the form that is decided and compared.
 - **marked** rebuilds wrap the edited subterm in :class:`Marked` (a matrix) or
@@ -25,8 +25,8 @@ import sympy as sp
 from sympy.matrices.expressions.matexpr import MatrixElement
 from sympy.matrices.expressions.slice import MatrixSlice
 
-from rigidsym.checking.marks import Marked, MarkedScalar, mark
-from rigidsym.checking.shapes import (
+from rigidsym.checking.repairing.marks import Marked, MarkedScalar, mark
+from rigidsym.checking.repairing.shapes import (
     RawBlocks,
     ShapeError,
     children,

@@ -1,5 +1,5 @@
 """The evidence behind a verdict (:mod:`rigidsym.checking.checker`): the ball-arithmetic
-backing of the unparametrised relations at seeded points (:mod:`rigidsym.checking.balls`),
+backing of the unparametrised relations at seeded points (:mod:`rigidsym.checking.deciding.balls`),
 and a readable exact counterexample with its ball.
 """
 
@@ -10,9 +10,15 @@ from fractions import Fraction
 
 import sympy as sp
 
-from rigidsym.checking.balls import NUMERIC_DIGITS, NUMERIC_POINTS, Backing, backing, ball_at
-from rigidsym.checking.explicit import _entries, explicit, shape_of
-from rigidsym.checking.registry import Rel
+from rigidsym.checking.deciding.balls import (
+    NUMERIC_DIGITS,
+    NUMERIC_POINTS,
+    Backing,
+    backing,
+    ball_at,
+)
+from rigidsym.checking.deciding.explicit import _entries, explicit, shape_of
+from rigidsym.checking.deciding.registry import Rel
 from rigidsym.zero.decide import Unsupported, evaluate, make_plan
 
 __all__ = ["NUMERIC_DIGITS", "NUMERIC_POINTS", "numeric_backing", "counterexample_ball"]
@@ -22,7 +28,8 @@ __all__ = ["NUMERIC_DIGITS", "NUMERIC_POINTS", "numeric_backing", "counterexampl
 def numeric_backing(rels: list[Rel], model: dict, seed: int,
                     points: int = NUMERIC_POINTS) -> Backing:
     """Ball-arithmetic backing of ``lhs - rhs`` for every relation (same shapes), at
-    ``points`` seeded constraint-satisfying points (:func:`rigidsym.checking.balls.backing`).
+    ``points`` seeded constraint-satisfying points
+    (:func:`rigidsym.checking.deciding.balls.backing`).
 
     Raises:
         Unsupported: for a node with no numeric meaning.
@@ -92,5 +99,5 @@ def _counterexample(lhs, rhs, witness, seed) -> tuple[dict, object, dict]:
 
 def counterexample_ball(lhs, rhs, plan, pt) -> tuple[bool, str, int]:
     """``lhs - rhs`` in ball arithmetic at the counterexample
-    (:func:`rigidsym.checking.balls.ball_at`): ``(excludes_zero, ball text, digits)``."""
+    (:func:`rigidsym.checking.deciding.balls.ball_at`): ``(excludes_zero, ball text, digits)``."""
     return ball_at(_entries(lhs), _entries(rhs), plan, pt)
