@@ -18,9 +18,10 @@ import numpy as np
 from flint import fmpq
 
 #: log-spaced approaches: 1e-1 ... 1e-15, then toward the smallest useful step: the size
-#: whose cube is still a normal number (1e-100 in float64; float32 goes to 1e-18, its square); below
-#: it a norm cubed or sin^2 underflows: the float format itself, not a formula, gives up
-STEPS = [10.0**-k for k in range(1, 16)] + [1e-20, 1e-40, 1e-100]
+#: whose fourth power (the highest power of a norm in the Jacobian kernels) is still a
+#: normal number, 1e-75 in float64; float32 goes to 1e-18 (its square). Below it a power of
+#: a norm underflows: the float format itself, not a formula, gives up.
+STEPS = [10.0**-k for k in range(1, 16)] + [1e-20, 1e-40, 1e-75]
 STEPS32 = [10.0**-k for k in range(1, 16)] + [1e-18]
 
 

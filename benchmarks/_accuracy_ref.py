@@ -71,10 +71,11 @@ class ArbPrinter(LambdaPrinter):
 
 
 def _atan2(y, x):
-    """atan2 on its documented branch: an exact 0 over a negative x is pi (arb's ball there
-    holds both -pi and pi)."""
-    if y.is_exact() and y.is_zero() and x < 0:
-        return arb.pi()
+    """atan2 on the kernels' branch phi in [0, pi] where y is a ball around 0 and x < 0
+    (arb's ball there holds both -pi and pi): y is a norm (>= 0) in every declaration that
+    uses atan2, so the limit from y >= 0, pi - atan(y/|x|), continuous there."""
+    if x < 0 and y.contains(0):
+        return arb.pi() - (y / (-x)).atan()
     return arb.atan2(y, x)
 
 

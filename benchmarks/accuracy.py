@@ -16,7 +16,9 @@ output by at most ``u kappa``). Verdict **accurate** when
 ``||computed - ref|| <= 8 u (sum_i ||J_oi|| ||x_i|| + ||ref||)``, i.e. ``err <= 8 u kappa +
 8 u`` (the absolute floor judges outputs that are exactly zero). A flagged sample (NaN,
 ``SingularConfigurationError`` in the API) is **expected** where the exact result is
-undefined or kappa >= 1e12 (or the result overflows the type), else **spurious**.
+undefined, kappa >= 1e12, kappa u >= 1/8 (the rounding of the input can reach the singular
+set) or the result overflows the type, else **spurious**. A finite sample with kappa u >= 1/8
+is not judged (``beyond``: no digit of the result is determined by the rounded input).
 
 Usage (from the repository root)::
 
@@ -61,6 +63,7 @@ class Row:
     kappa: float = 0.0             # condition number there
     ulps: float = 0.0              # worst componentwise error in ulps of the reference
     flagged_expected: int = 0      # singular/NaN where the mathematics is
+    beyond: int = 0                # kappa u >= 1/8: the rounding of the input decides all
     spurious: list = field(default_factory=list)   # singular where the result is fine
     worst_point: str = ""
 
@@ -87,15 +90,18 @@ def run_kernel(name: str, arrays, dtype, backend: str) -> np.ndarray:
     return np.concatenate([o.reshape(n, -1).astype(np.float64) for o in outs], axis=1)
 
 
-def judge(name: str, regime: str, points, dtype, backends, refs=None) -> list[Row]:
-    """Rows (one per backend) of one regime; ``refs`` caches the references per point."""
+def judge(name: str, regime: str, points, dtype, backends, refs=None,
+          runner=None) -> list[Row]:
+    """Rows (one per backend) of one regime; ``refs`` caches the references per point;
+    ``runner(name, arrays, dtype, backend) -> (n, outputs)`` replaces the package's kernels
+    (a test hands it a program that loses, to see the harness fail)."""
     k = R.kernel_of(name)
     u = float(np.finfo(dtype).eps) / 2
     sizes = [o.size for o in k.outputs]
     offs = np.cumsum([0] + sizes)
     arrays = _round(points, dtype, k)
     rows = {b: Row(name, np.dtype(dtype).name, b, regime, len(points)) for b in backends}
-    got = {b: run_kernel(name, arrays, dtype, b) for b in backends}
+    got = {b: (runner or run_kernel)(name, arrays, dtype, b) for b in backends}
     big = float(np.finfo(dtype).max)
     for s, p in enumerate(points):
         flat_rounded = [float(x) for a in arrays for x in a[s].ravel()]
@@ -124,6 +130,9 @@ def judge(name: str, regime: str, points, dtype, backends, refs=None) -> list[Ro
                 continue
             if flagged:
                 row.spurious.append(_point(arrays, s))
+                continue
+            if kappa * u >= 0.125:      # no digit is determined by the input at this type
+                row.beyond += 1
                 continue
             for o in range(len(sizes)):
                 sl = slice(offs[o], offs[o + 1])
@@ -167,16 +176,49 @@ def kernel_names(include_jacobians: bool = True) -> list[str]:
     return [n for n in names if include_jacobians or not n.endswith("_with_jacobians")]
 
 
-def sweep(names, dtypes, backends, n_random=8, small=None, progress=None, refs=None):
+def sweep(names, dtypes, backends, n_random=8, small=None, progress=None, refs=None,
+          runner=None) -> list[Row]:
+    """Every row of ``names`` x ``dtypes`` x regimes (``small``: the approach steps)."""
     rows = []
     for name in names:
         k = R.kernel_of(name)
         for dt in dtypes:
             for regime, pts in P.regimes(k, dt, n_random=n_random, small=small).items():
-                rows += judge(name, regime, pts, dt, backends, refs)
+                rows += judge(name, regime, pts, dt, backends, refs, runner)
         if progress:
             progress(name, rows)
     return rows
+
+
+def summary(rows: list[Row], thresholds: dict | None = None) -> dict:
+    """Per kernel, the row ``kernels.accuracy(name)`` returns: per float type the worst
+    ``err / (u (kappa + 1))`` (``bound``: the error is at most ``bound`` u (kappa + 1)), its
+    regime, kappa and error there, the worst componentwise ulps, the flagged and unjudged
+    counts; the regimes swept; whether every row is accurate."""
+    out: dict = {}
+    for r in rows:
+        k = out.setdefault(r.kernel, {"regimes": [], "accurate": True})
+        if r.regime not in k["regimes"]:
+            k["regimes"].append(r.regime)
+        k["accurate"] = bool(k["accurate"] and r.accurate)
+        d = k.setdefault(r.dtype, {"bound": 0.0, "regime": "", "kappa": 0.0, "err": 0.0,
+                                   "ulps": 0.0, "flagged": 0, "beyond": 0, "spurious": 0})
+        d["ulps"] = max(d["ulps"], _sig(r.ulps))
+        d["flagged"] += r.flagged_expected
+        d["beyond"] += r.beyond
+        d["spurious"] += len(r.spurious)
+        if 8 * r.worst_ratio > d["bound"]:
+            d.update(bound=_sig(8 * r.worst_ratio), regime=r.regime, kappa=_sig(r.kappa),
+                     err=_sig(r.err))
+    for name, k in out.items():
+        k["regimes"].sort()
+        k["singular"] = K._state.meta()[name]["singular"]
+        k["threshold"] = (thresholds or {}).get(name, "")
+    return dict(sorted(out.items()))
+
+
+def _sig(x: float) -> float:
+    return float(f"{x:.3g}")
 
 
 def markdown(rows: list[Row]) -> str:
@@ -200,6 +242,8 @@ def main(argv=None) -> int:
     ap.add_argument("--json", default="", help="write every row here")
     ap.add_argument("--md", default="", help="write the markdown table here")
     ap.add_argument("--losses", action="store_true", help="print only the failing rows")
+    ap.add_argument("--data", default="", help="write the per-kernel rows (the data "
+                    "`rigidsym generate` ships for kernels.accuracy) here")
     a = ap.parse_args(argv)
     names = a.kernels.split(",") if a.kernels else kernel_names(not a.no_jacobians)
     dtypes = [np.dtype(d).type for d in a.dtypes.split(",")]
@@ -218,6 +262,13 @@ def main(argv=None) -> int:
     rows = sweep(names, dtypes, backends, a.random, progress=progress)
     if a.json:
         Path(a.json).write_text(json.dumps([asdict(r) for r in rows], indent=1))
+    if a.data:
+        from _accuracy_thresholds import thresholds
+
+        from rigidsym._io import write_atomic
+
+        write_atomic(Path(a.data), json.dumps(summary(rows, thresholds()), indent=1,
+                                              sort_keys=True) + "\n")
     if a.md:
         Path(a.md).write_text(markdown([r for r in rows if not a.losses or not r.accurate]))
     return 0 if all(r.accurate for r in rows) else 1

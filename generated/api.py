@@ -878,7 +878,7 @@ def plucker_from_points(
     Notes:
         Singular set: p1 = p2.
 
-        Generated; 24 operations; math hash 37ca360961ff48ba.
+        Generated; 26 operations; math hash 37ca360961ff48ba.
     """
     return _F.plucker_from_points(p1, p2, out, check, on_singular, threads)
 
@@ -1126,7 +1126,7 @@ def screw_of_displacement(
 
         For an exactly symmetric Q (phi = pi) the sign of e follows natural_invariants_from_rotation's rule (largest-magnitude component positive).
 
-        Generated; 520 operations; math hash 24c2ead304ca194c.
+        Generated; 525 operations; math hash 24c2ead304ca194c.
     """
     return _F.screw_of_displacement(Q, a, a_prime, out, check, on_singular, threads)
 
