@@ -221,6 +221,27 @@ def _sig(x: float) -> float:
     return float(f"{x:.3g}")
 
 
+def kernel_table(data: dict, public_only: bool = False) -> str:
+    """The per-kernel table of ``docs/accuracy.md`` from :func:`summary`'s data."""
+    lines = ["| kernel | float64: bound, ulps | worst regime, kappa there | float32: bound, "
+             "ulps | worst regime, kappa there | singular set (flagged where) |",
+             "|---|---|---|---|---|---|"]
+    meta = K._state.meta()
+    for name, r in data.items():
+        if public_only and not meta[name]["public"]:
+            continue
+        a, b = r.get("float64", {}), r.get("float32", {})
+        sing = r["singular"] or "none"
+        if r.get("threshold"):
+            sing += f" ({r['threshold']})"
+        ok = "" if r["accurate"] else " **LOSES**"
+        lines.append(f"| `{name}`{ok} | {a.get('bound', 0):.2g}, {a.get('ulps', 0):.3g} | "
+                     f"{a.get('regime', '')}, {a.get('kappa', 0):.2g} | "
+                     f"{b.get('bound', 0):.2g}, {b.get('ulps', 0):.3g} | "
+                     f"{b.get('regime', '')}, {b.get('kappa', 0):.2g} | {sing} |")
+    return "\n".join(lines) + "\n"
+
+
 def markdown(rows: list[Row]) -> str:
     lines = ["| kernel | dtype | backend | regime | worst err/(8u kappa+8u) | err | kappa | "
              "ulps | flagged (expected) | spurious singular |",
@@ -242,9 +263,14 @@ def main(argv=None) -> int:
     ap.add_argument("--json", default="", help="write every row here")
     ap.add_argument("--md", default="", help="write the markdown table here")
     ap.add_argument("--losses", action="store_true", help="print only the failing rows")
+    ap.add_argument("--table", default="", help="print the per-kernel table of this "
+                    "data file (docs/accuracy.md) and exit")
     ap.add_argument("--data", default="", help="write the per-kernel rows (the data "
                     "`rigidsym generate` ships for kernels.accuracy) here")
     a = ap.parse_args(argv)
+    if a.table:
+        print(kernel_table(json.loads(Path(a.table).read_text(encoding="utf-8"))), end="")
+        return 0
     names = a.kernels.split(",") if a.kernels else kernel_names(not a.no_jacobians)
     dtypes = [np.dtype(d).type for d in a.dtypes.split(",")]
     backends = a.backends.split(",")

@@ -56,9 +56,9 @@ def test_accurate_over_the_regimes_float64(name):
 def _declared_numpy(name):
     """The declared outputs of ``name`` lambdified for NumPy, no rewrite: what the generated
     kernel computed before issue 30."""
+    import _accuracy_ref as R
     import sympy as sp
 
-    import _accuracy_ref as R
     from rigidsym.codegen.generator import _flatten
     from rigidsym.codegen.spec import flat_symbols, input_symbols
 
