@@ -238,6 +238,7 @@ def kernel_table(data: dict, public_only: bool = False) -> str:
         sing = r["singular"] or "none"
         if r.get("threshold"):
             sing += f" ({r['threshold']})"
+        sing = sing.replace("|", "\\|")
         ok = "" if r["accurate"] else " **LOSES**"
         a, b = ({**x, "regime": x.get("regime", "").replace("|", "\\|")} for x in (a, b))
         lines.append(f"| `{name}`{ok} | {a.get('bound', 0):.2g}, {a.get('ulps', 0):.3g} | "

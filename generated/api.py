@@ -223,7 +223,7 @@ def H_tilde_dot(
         NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 689 ulp in float64) over 9 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 82 ulp in float64) over 9 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 32 operations; math hash a75606877943bdb2.
     """
@@ -262,7 +262,7 @@ def L_matrix(
         NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1.85 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 2.21e+259 ulp in float64) over 8 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1.85 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 431 ulp in float64) over 8 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 48 operations; math hash ad587ca95a235ac2.
     """
@@ -303,7 +303,7 @@ def L_matrix_dot(
         NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1.31 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 1.77e+16 ulp in float64) over 9 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1.31 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 381 ulp in float64) over 9 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 98 operations; math hash bc3db842eb2cf774.
     """
@@ -431,7 +431,7 @@ def N_matrix(
     Notes:
         Singular set: phi = 0 (mod 2 pi): the axis is undefined.
 
-        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 147 ulp in float64) over 8 regimes (docs/accuracy.md, kernels.accuracy); singular when phi = 0 (mod 2 pi): the axis is undefined, flagged where sin(phi/2) == 0 in floating point: phi == 0 exactly (and |phi| < 1e-323); an output overflows (non-finite) where the result exceeds the type, about |phi| < 1e-300 x |input| in float64.
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 114 ulp in float64) over 8 regimes (docs/accuracy.md, kernels.accuracy); singular when phi = 0 (mod 2 pi): the axis is undefined, flagged where sin(phi/2) == 0 in floating point: phi == 0 exactly (and |phi| < 1e-323); an output overflows (non-finite) where the result exceeds the type, about |phi| < 1e-300 x |input| in float64.
 
         Generated; 31 operations; math hash 717c2182df7e8788.
     """
@@ -475,7 +475,7 @@ def N_matrix_dot(
     Notes:
         Singular set: phi = 0 (mod 2 pi): the axis is undefined.
 
-        Accuracy: error <= 1.16 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 434 ulp in float64) over 9 regimes (docs/accuracy.md, kernels.accuracy); singular when phi = 0 (mod 2 pi): the axis is undefined, flagged where sin(phi/2) == 0 in floating point: phi == 0 exactly (and |phi| < 1e-323); an output overflows (non-finite) where the result exceeds the type, about |phi| < 1e-300 x |input| in float64.
+        Accuracy: error <= 1.16 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 190 ulp in float64) over 9 regimes (docs/accuracy.md, kernels.accuracy); singular when phi = 0 (mod 2 pi): the axis is undefined, flagged where sin(phi/2) == 0 in floating point: phi == 0 exactly (and |phi| < 1e-323); an output overflows (non-finite) where the result exceeds the type, about |phi| < 1e-300 x |input| in float64.
 
         Generated; 199 operations; math hash a50ef6111f8ca170.
     """
@@ -514,7 +514,7 @@ def N_tilde(
         NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1.23 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 4.79e+219 ulp in float64) over 8 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1.23 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 4 ulp in float64) over 8 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 13 operations; math hash 27fa6424b1903ca5.
     """
@@ -558,7 +558,7 @@ def N_tilde_dot(
     Notes:
         Singular set: phi = 0 (mod 2 pi): the axis, and so its rate, is undefined.
 
-        Accuracy: error <= 1.52 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 434 ulp in float64) over 9 regimes (docs/accuracy.md, kernels.accuracy); singular when phi = 0 (mod 2 pi): the axis, and so its rate, is undefined, flagged where sin(phi/2) == 0 in floating point: phi == 0 exactly (and |phi| < 1e-323); an output overflows (non-finite) where the result exceeds the type, about |phi| < 1e-300 x |input| in float64.
+        Accuracy: error <= 1.52 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 146 ulp in float64) over 9 regimes (docs/accuracy.md, kernels.accuracy); singular when phi = 0 (mod 2 pi): the axis, and so its rate, is undefined, flagged where sin(phi/2) == 0 in floating point: phi == 0 exactly (and |phi| < 1e-323); an output overflows (non-finite) where the result exceeds the type, about |phi| < 1e-300 x |input| in float64.
 
         Generated; 79 operations; math hash b1c3eb794fbb8245.
     """
@@ -1078,7 +1078,7 @@ def rotation_from_natural_invariants(
         NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1.36 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 9.59e+259 ulp in float64) over 8 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1.36 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 451 ulp in float64) over 8 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 37 operations; math hash 3a598761ac6bf1a3.
     """
