@@ -49,7 +49,7 @@ def _losses(rows) -> str:
 @pytest.mark.parametrize("name", sorted(K.KERNEL_NAMES) + EXTRA)
 def test_accurate_over_the_regimes_float64(name):
     rows = A.sweep([name], [np.float64], _backends(), n_random=3, small=SMALL)
-    assert rows and sum(r.samples for r in rows) > 10
+    assert rows and sum(r.samples for r in rows) >= 5
     assert all(r.accurate for r in rows), _losses(rows)
 
 

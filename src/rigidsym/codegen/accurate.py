@@ -64,9 +64,13 @@ class Chosen:
     decided: str         # the zero test's method
 
     def line(self) -> str:
+        def err(x: float) -> str:
+            return "a singular flag" if x == float("inf") else f"{x:.1e}"
         return (f"accuracy rewrite ({self.variant}): {self.name}: {self.reason}; worst "
-                f"error {self.before:.1e} -> {self.after:.1e} at {self.points} measurement "
-                f"points; equal to the declared formula by the zero test ({self.decided})")
+                f"relative error at {self.points} measurement points (exact, rounded to "
+                f"float64; some past a condition number of 1/u) {err(self.before)} -> "
+                f"{err(self.after)}; equal to the declared formula by the zero test "
+                f"({self.decided})")
 
 
 # --------------------------------------------------------------------------- rules
