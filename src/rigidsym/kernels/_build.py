@@ -3,23 +3,21 @@
 Used with the same flags in two places: by ``setup.py`` when the package is built (``pip
 install``, ``pip wheel``: the package's kernels go into the wheel), and at run time by
 :mod:`rigidsym.kernels._ext` for what no wheel holds (a user's kernels, a stale editable
-build, ``rigidsym build-c --native``), into the user cache. Standard library only, so that
-``setup.py`` can load this file by path before rigidsym is importable.
+build, ``rigidsym build-c --native``), into the user cache. Standard library (and
+:mod:`rigidsym.kernels._objects`, the object cache) only: ``setup.py`` loads it by path.
 
 CPU dispatch as in NumPy: every kernel source (and the table ``rigidsym_table.c``) is
 compiled once per build path, with that path's ``-march`` and ``-DRIGIDSYM_ISA_SUFFIX``;
 ``rigidsym_module.c`` once, with the baseline path's flags; all objects link into one module
 whose dispatcher (``rigidsym_dispatch.h``) picks a path at import. Paths: ``x86-64-v2``
 (baseline), ``x86-64-v3`` (AVX2 + FMA) and ``x86-64-v4`` (AVX-512) on x86-64, no ``-march``
-elsewhere, ``native`` (``-march=native``, one path) on request. Nothing built by default
-uses ``-march=native``.
+elsewhere, ``native`` (``-march=native``, one path) on request, never by default.
 
 Flags of the kernels: ``-O3 -std=c99 -ffp-contract=fast`` (FMA contraction, never
 ``-ffast-math``; ``RIGIDSYM_CFLAGS`` replaces them). OpenMP (threads of the batch loops) and
 glibc's libmvec (vectorised ``sin``/``cos``) are used when a probe compiles and links with
-them (``RIGIDSYM_OPENMP=0``, ``RIGIDSYM_LIBMVEC=0`` skip them). The objects are compiled in
-parallel (``RIGIDSYM_BUILD_JOBS``, default the usable cores): setuptools would compile one
-extension's sources one after the other.
+them (``RIGIDSYM_OPENMP=0``, ``RIGIDSYM_LIBMVEC=0`` skip them). Objects compile in parallel
+(``RIGIDSYM_BUILD_JOBS``, default the usable cores), or come from the object cache.
 """
 
 from __future__ import annotations
@@ -39,9 +37,7 @@ if __package__:
     from . import _objects
 else:   # loaded by path from setup.py: the sibling by path too (rigidsym is not importable)
     import importlib.util as _ilu
-
-    _spec = _ilu.spec_from_file_location("_rigidsym_objects",
-                                         Path(__file__).with_name("_objects.py"))
+    _spec = _ilu.spec_from_file_location("_rigidsym_objects", Path(__file__).parent / "_objects.py")
     _objects = _ilu.module_from_spec(_spec)
     sys.modules[_spec.name] = _objects
     _spec.loader.exec_module(_objects)
@@ -333,12 +329,6 @@ def _tasks(cdir: Path, cfg: Config, tmp: Path) -> list[tuple[list[str], Path]]:
     return [(argv, Path(argv[argv.index("-o") + 1])) for argv, _ in tasks]
 
 
-def _numpy_version() -> str:
-    import numpy
-
-    return numpy.__version__
-
-
 def _numpy_include() -> str:
     """NumPy's C headers: the module's entry points (rigidsym_fast.h) allocate and read
     ndarrays through NumPy's C API (NumPy is a build requirement, pyproject.toml)."""
@@ -356,28 +346,6 @@ def _run(argv: list[str]) -> None:
         raise BuildError(f"{shlex.join(argv)}\nfailed with exit code {r.returncode}:\n{tail}")
 
 
-def _headers_digest(cdir: Path) -> str:
-    h = hashlib.sha256()
-    for p in sorted(Path(cdir).glob("*.h")):
-        h.update(p.name.encode() + b"\0" + p.read_bytes() + b"\0")
-    return h.hexdigest()
-
-
-def _compile_cached(argv: list[str], cdir: Path, where: Path | None, headers: str,
-                    neutral: dict[str, str]) -> bool:
-    """Compile one object, or copy it from the object cache; True when it was compiled."""
-    obj = Path(argv[argv.index("-o") + 1])
-    if where is None:
-        _run(argv)
-        return True
-    k = _objects.key(argv, Path(argv[argv.index("-c") + 1]), headers, neutral)
-    if _objects.fetch(where, k, obj):
-        return False
-    _run(argv)
-    _objects.store(where, k, obj)
-    return True
-
-
 def build(gdir: Path, out: Path, cfg: Config, tmp: Path,
           progress: Progress | None = None, stats: dict | None = None) -> Path:
     """Compile ``gdir/c`` into the module file ``out`` (objects in ``tmp``, each reused from
@@ -392,17 +360,19 @@ def build(gdir: Path, out: Path, cfg: Config, tmp: Path,
     import time
     from concurrent.futures import ThreadPoolExecutor, as_completed
 
+    import numpy
+
     cdir = Path(gdir) / "c"
     if not (cdir / MODULE_SOURCE).is_file():
         raise BuildError(f"{cdir}: no {MODULE_SOURCE}; regenerate this folder with this "
                          f"version of rigidsym (`rigidsym generate`)")
     t0, r0 = time.perf_counter(), resource.getrusage(resource.RUSAGE_CHILDREN)
     tasks = _tasks(cdir, cfg, Path(tmp))
-    where, headers = _objects.root(), _headers_digest(cdir)
-    neutral = {str(cdir): "<generated>", _numpy_include(): f"<numpy {_numpy_version()}>"}
+    where, headers = _objects.root(), _objects.headers_digest(cdir)
+    neutral = {str(cdir): "<generated>", _numpy_include(): f"<numpy {numpy.__version__}>"}
     total, compiled = len(tasks) + 1, 0
     with ThreadPoolExecutor(max_workers=min(jobs(), len(tasks))) as pool:
-        futures = [pool.submit(_compile_cached, argv, cdir, where, headers, neutral)
+        futures = [pool.submit(_objects.compile_cached, _run, argv, where, headers, neutral)
                    for argv, _ in tasks]
         try:
             for done, f in enumerate(as_completed(futures), 1):
@@ -423,9 +393,8 @@ def build(gdir: Path, out: Path, cfg: Config, tmp: Path,
         progress(total, total)
     if stats is not None:
         r1 = resource.getrusage(resource.RUSAGE_CHILDREN)
+        cpu = r1.ru_utime + r1.ru_stime - r0.ru_utime - r0.ru_stime
         stats.update(objects=len(tasks), compiled=compiled, reused=len(tasks) - compiled,
-                     seconds=round(time.perf_counter() - t0, 2),
-                     cpu_seconds=round(r1.ru_utime + r1.ru_stime - r0.ru_utime - r0.ru_stime,
-                                       2),
+                     seconds=round(time.perf_counter() - t0, 2), cpu_seconds=round(cpu, 2),
                      object_cache=str(where) if where else None)
     return Path(out)
