@@ -9,9 +9,9 @@ The denominators were read from the generated programs (``generated/numpy/<name>
 
 from __future__ import annotations
 
-_SIN_HALF = ("sin(phi/2) == 0 in floating point: phi == 0 exactly (and |phi| < 1e-323); "
+_SIN_HALF = ("sin(phi/2) == 0 in floating point: phi == 0 exactly (and abs(phi) < 1e-323); "
              "an output overflows (non-finite) where the result exceeds the type, about "
-             "|phi| < 1e-300 x |input| in float64")
+             "abs(phi) < 1e-300 x norm(input) in float64")
 _SQ = ("{q} == 0 in floating point: {what}; a square underflows to 0 only for "
        "{x} < 1.5e-162 (float64), < 1e-19 (float32 arithmetic), which "
        "benchmarks/accuracy.py calls below the smallest useful step")
@@ -28,7 +28,7 @@ BASE = {
     "instant_screw_axis": _SQ.format(q="||omega||^2", what="omega == 0", x="||omega||"),
     "natural_invariants_from_rotation": (
         "||vect(Q)||^2 == 0 with tr Q >= 0 (the main build): Q exactly symmetric in "
-        "floating point, i.e. phi = 0 (Q = 1), or |phi| below the rounding of Q (about 1e-16)"),
+        "floating point, i.e. phi = 0 (Q = 1), or abs(phi) below the rounding of Q (about 1e-16)"),
     "screw_of_displacement": (
         "||Q - Q^T||^2 == 0 with tr Q >= 0 (the main build, after the rewrite of 1 - cos phi "
         "from the skew part of Q): Q exactly symmetric in floating point, phi below the "

@@ -4,7 +4,7 @@ Loads the generated kernels of a git revision (default: the commit before the re
 with ``kernels.load`` beside the package's, and times the C batch function of each kernel
 at N = 1e6, one thread, float64, in interleaved rounds (old, new, old, new, ...): the median
 ratio new/old per kernel. Then float32 against float64 of the package's kernels (K1,
-``instant_screw_axis``, K6). Clock: ``time.perf_counter`` around one call; the machine is
+``instant_screw_axis``, K6). Clock: thread CPU time around one call; the machine is
 shared, so the medians of interleaved rounds are what to read, not single figures.
 
 Usage (from the repository root)::
@@ -63,9 +63,9 @@ def inputs(name: str, n: int, dtype) -> list[np.ndarray]:
 
 def timer(f, arrays, outs):
     def once() -> float:
-        t = time.perf_counter()
+        t = time.thread_time()
         f(*arrays, *outs)
-        return time.perf_counter() - t
+        return time.thread_time() - t
     return once
 
 

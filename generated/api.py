@@ -431,7 +431,7 @@ def N_matrix(
     Notes:
         Singular set: phi = 0 (mod 2 pi): the axis is undefined.
 
-        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 114 ulp in float64) over 8 regimes (docs/accuracy.md, kernels.accuracy); singular when phi = 0 (mod 2 pi): the axis is undefined, flagged where sin(phi/2) == 0 in floating point: phi == 0 exactly (and |phi| < 1e-323); an output overflows (non-finite) where the result exceeds the type, about |phi| < 1e-300 x |input| in float64.
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 114 ulp in float64) over 8 regimes (docs/accuracy.md, kernels.accuracy); singular when phi = 0 (mod 2 pi): the axis is undefined, flagged where sin(phi/2) == 0 in floating point: phi == 0 exactly (and abs(phi) < 1e-323); an output overflows (non-finite) where the result exceeds the type, about abs(phi) < 1e-300 x norm(input) in float64.
 
         Generated; 31 operations; math hash 717c2182df7e8788.
     """
@@ -475,7 +475,7 @@ def N_matrix_dot(
     Notes:
         Singular set: phi = 0 (mod 2 pi): the axis is undefined.
 
-        Accuracy: error <= 1.16 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 190 ulp in float64) over 9 regimes (docs/accuracy.md, kernels.accuracy); singular when phi = 0 (mod 2 pi): the axis is undefined, flagged where sin(phi/2) == 0 in floating point: phi == 0 exactly (and |phi| < 1e-323); an output overflows (non-finite) where the result exceeds the type, about |phi| < 1e-300 x |input| in float64.
+        Accuracy: error <= 1.16 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 190 ulp in float64) over 9 regimes (docs/accuracy.md, kernels.accuracy); singular when phi = 0 (mod 2 pi): the axis is undefined, flagged where sin(phi/2) == 0 in floating point: phi == 0 exactly (and abs(phi) < 1e-323); an output overflows (non-finite) where the result exceeds the type, about abs(phi) < 1e-300 x norm(input) in float64.
 
         Generated; 199 operations; math hash a50ef6111f8ca170.
     """
@@ -558,7 +558,7 @@ def N_tilde_dot(
     Notes:
         Singular set: phi = 0 (mod 2 pi): the axis, and so its rate, is undefined.
 
-        Accuracy: error <= 1.52 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 146 ulp in float64) over 9 regimes (docs/accuracy.md, kernels.accuracy); singular when phi = 0 (mod 2 pi): the axis, and so its rate, is undefined, flagged where sin(phi/2) == 0 in floating point: phi == 0 exactly (and |phi| < 1e-323); an output overflows (non-finite) where the result exceeds the type, about |phi| < 1e-300 x |input| in float64.
+        Accuracy: error <= 1.52 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 146 ulp in float64) over 9 regimes (docs/accuracy.md, kernels.accuracy); singular when phi = 0 (mod 2 pi): the axis, and so its rate, is undefined, flagged where sin(phi/2) == 0 in floating point: phi == 0 exactly (and abs(phi) < 1e-323); an output overflows (non-finite) where the result exceeds the type, about abs(phi) < 1e-300 x norm(input) in float64.
 
         Generated; 79 operations; math hash b1c3eb794fbb8245.
     """
@@ -829,7 +829,7 @@ def natural_invariants_from_rotation(
 
         For an exactly symmetric Q (phi = pi) the sign of e is fixed by the rule: the component of e of largest magnitude is positive (e is taken from the column of the largest diagonal entry of Q); near pi, the skew part of Q fixes the sign, as in Pinocchio's log3.
 
-        Accuracy: error <= 1.22 u (kappa + 1) in float64, <= 1.28 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 1.76e+16 ulp in float64) over 6 regimes (docs/accuracy.md, kernels.accuracy); singular when phi = 0 (Q = 1): the axis e is undefined, flagged where ||vect(Q)||^2 == 0 with tr Q >= 0 (the main build): Q exactly symmetric in floating point, i.e. phi = 0 (Q = 1), or |phi| below the rounding of Q (about 1e-16).
+        Accuracy: error <= 1.22 u (kappa + 1) in float64, <= 1.28 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 1.76e+16 ulp in float64) over 6 regimes (docs/accuracy.md, kernels.accuracy); singular when phi = 0 (Q = 1): the axis e is undefined, flagged where ||vect(Q)||^2 == 0 with tr Q >= 0 (the main build): Q exactly symmetric in floating point, i.e. phi = 0 (Q = 1), or abs(phi) below the rounding of Q (about 1e-16).
 
         Generated; 172 operations; math hash 445339cc0a3a5a8f.
     """
@@ -1124,7 +1124,7 @@ def screw_axis_point(
     Notes:
         Singular set: phi = 0 (pure translation).
 
-        Accuracy: error <= 1.53 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 588 ulp in float64) over 9 regimes (docs/accuracy.md, kernels.accuracy); singular when phi = 0 (pure translation), flagged where sin(phi/2) == 0 in floating point: phi == 0 exactly (and |phi| < 1e-323); an output overflows (non-finite) where the result exceeds the type, about |phi| < 1e-300 x |input| in float64.
+        Accuracy: error <= 1.53 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 588 ulp in float64) over 9 regimes (docs/accuracy.md, kernels.accuracy); singular when phi = 0 (pure translation), flagged where sin(phi/2) == 0 in floating point: phi == 0 exactly (and abs(phi) < 1e-323); an output overflows (non-finite) where the result exceeds the type, about abs(phi) < 1e-300 x norm(input) in float64.
 
         Generated; 84 operations; math hash e89a638961851614.
     """

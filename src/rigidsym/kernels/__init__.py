@@ -253,7 +253,7 @@ def accuracy(name: str) -> dict:
             (``euler_angle_rates_zyz_body``).
 
     Returns:
-        A new dict: ``"float64"`` and ``"float32"``, each ``{"bound", "regime", "kappa",
+        dict: a new one each call, with ``"float64"`` and ``"float32"``, each ``{"bound", "regime", "kappa",
         "err", "ulps", "flagged", "beyond", "spurious"}``, where the normwise relative error
         of every output is at most ``bound * u * (kappa + 1)`` (``u`` the unit roundoff,
         ``kappa`` the condition number on the inputs' tangent space), attained in ``regime``
