@@ -253,13 +253,14 @@ def accuracy(name: str) -> dict:
             (``euler_angle_rates_zyz_body``).
 
     Returns:
-        dict: a new one each call, with ``"float64"`` and ``"float32"``, each ``{"bound", "regime", "kappa",
-        "err", "ulps", "flagged", "beyond", "spurious"}``, where the normwise relative error
-        of every output is at most ``bound * u * (kappa + 1)`` (``u`` the unit roundoff,
-        ``kappa`` the condition number on the inputs' tangent space), attained in ``regime``
-        (``kappa`` and ``err`` there), ``ulps`` the worst componentwise error; ``regimes``
-        swept; ``accurate`` (every regime within ``8 u (kappa + 1)``); ``singular`` (the set)
-        and ``threshold`` (where a sample is flagged, in units of the input).
+        dict: a new one each call, with ``"float64"`` and ``"float32"``, each ``{"bound",
+        "regime", "kappa", "err", "ulps", "flagged", "beyond", "spurious"}``, where the
+        normwise relative error of every output is at most ``bound * u * (kappa + 1)``
+        (``u`` the unit roundoff, ``kappa`` the condition number on the inputs' tangent
+        space), attained in ``regime`` (``kappa`` and ``err`` there), ``ulps`` the worst
+        componentwise error; ``regimes`` swept; ``accurate`` (every regime within
+        ``8 u (kappa + 1)``); ``singular`` (the set) and ``threshold`` (where a sample is
+        flagged, in units of the input).
 
     Raises:
         KeyError: no kernel ``name``, or one without measured accuracy.
