@@ -1,0 +1,297 @@
+"""The transcription check: is a declaration's hand-written ``printed`` form what its LaTeX says?
+
+For one declaration, :func:`check_transcription` parses its ``latex`` (the glyph table of its
+section, and its per-id note in ``notes.json``) and decides, member by member, that each
+printed relation (``Statement.printed``, then ``Statement.claims``) is a relation the LaTeX
+states: ``l - r`` equals ``±(E_i - E_j)`` for two expressions ``E_i``, ``E_j`` of one of the
+text's ``=`` chains (``x = y = z`` states ``x = y``, ``x = z`` and ``y = z``), or of the
+equivalent product form of an inverse (``X^{-1} = Y`` states ``X Y = 1`` and ``Y X = 1``).
+The difference is decided by the zero test (:func:`rigidsym.zero.decide_zero`) with the book
+symbols left as free atoms: every book matrix is a matrix of free entries, so nothing the
+model knows (orthogonality, skew symmetry) can make a moved sign or a dropped factor agree.
+Only notational atoms (a row of the glyph table with a definition: ``E = CPM(e)``, the norm
+``‖ω‖``) are replaced by their definitions.
+
+The record (:data:`STATUSES`): ``machine-checked``, ``differs`` (the member and an exact
+counterexample) or ``not parsed`` (the construct and why).
+"""
+
+from __future__ import annotations
+
+import json
+from functools import cache
+from importlib import resources
+
+import sympy as sp
+
+from rigidsym.algebra.symbols import angle
+from rigidsym.latex.parser import LatexError, parse_latex
+from rigidsym.latex.table import Glyph, glyph_table
+from rigidsym.zero import decide_zero
+
+__all__ = ["STATUSES", "check_transcription", "notes", "transcription_words",
+           "transcription_for"]
+
+STATUSES = ("machine-checked", "differs", "not parsed")
+_ANGLES = ("phi", "theta")
+
+
+@cache
+def notes() -> dict:
+    """The per-id notes (``notes.json``): how to read one id's LaTeX (instances of a letter
+    that stands for several quantities, aliases of the printed names, a lost column
+    separator, a construct the reader does not take)."""
+    text = resources.files("rigidsym.latex").joinpath("notes.json").read_text("utf-8")
+    return {k: v for k, v in json.loads(text).items() if not k.startswith("_")}
+
+
+def _override(spec: dict, section: str) -> dict:
+    out = {}
+    for key, value in spec.items():
+        name, _, shape = value.partition(":")
+        from rigidsym.latex.table import _shape
+
+        out[key] = Glyph(key, section, name, _shape(shape or "scalar"), "instance",
+                         "per-id note")
+    return out
+
+
+# --------------------------------------------------------------------------- canonical form
+def _definitions(section: str) -> dict:
+    """Notational atoms of a section: name -> parsed definition."""
+    out = {}
+    rows = [g for g in glyph_table() if g.definition]
+    best: dict = {}
+    for g in rows:
+        if g.section == "*" or section == g.section or section.startswith(g.section + "."):
+            prev = best.get(g.name)
+            if prev is None or len(g.section) > len(prev.section):
+                best[g.name] = g
+    for name, g in best.items():
+        p = parse_latex(f"{g.latex} = {g.definition}", section)
+        out[name] = p.chains[0][1]
+    return out
+
+
+@cache
+def _definitions_cached(section: str) -> dict:
+    return _definitions(section)
+
+
+def _norm_atoms(section: str) -> dict:
+    """``norm_x`` atoms of printed forms -> ``sqrt(x . x)``."""
+    return {}
+
+
+def _free(x, defs: dict, aliases: dict):
+    """The explicit value of ``x`` with book symbols as free atoms (see the module doc)."""
+    if not isinstance(x, sp.Basic):
+        x = sp.sympify(x)
+    for _ in range(3):  # notational atoms may refer to one another
+        swap = {}
+        for s in x.atoms(sp.MatrixSymbol, sp.Symbol):
+            name = aliases.get(s.name, s.name)
+            if name in defs and defs[name] is not s:
+                swap[s] = defs[name]
+            elif name.startswith("norm_"):
+                swap[s] = _norm(name[5:], defs)
+            elif name != s.name:
+                swap[s] = (sp.MatrixSymbol(name, *s.shape) if isinstance(s, sp.MatrixSymbol)
+                           else sp.Symbol(name, real=True))
+        if not swap:
+            break
+        x = x.xreplace(swap)
+    atoms = {}
+    for s in x.atoms(sp.MatrixSymbol):
+        atoms[s] = sp.ImmutableMatrix(*s.shape, lambda i, j, n=s.name:
+                                      sp.Symbol(f"{n}[{i},{j}]", real=True))
+    for s in x.atoms(sp.Symbol):
+        if isinstance(s, sp.Dummy) or s in atoms:
+            continue
+        atoms[s] = angle(s.name) if s.name in _ANGLES else sp.Symbol(s.name, real=True)
+    x = x.xreplace(atoms)
+    x = x.doit() if hasattr(x, "doit") else x
+    if isinstance(x, sp.MatrixExpr | sp.MatrixBase):
+        x = sp.Matrix(x.as_explicit() if isinstance(x, sp.MatrixExpr) else x)
+        x = x.applyfunc(lambda e: e.doit())
+    return x
+
+
+def _norm(name: str, defs: dict):
+    v = sp.MatrixSymbol({"p21": "p_2"}.get(name, name), 3, 1)
+    if name == "p21":
+        v = sp.MatrixSymbol("p_2", 3, 1) - sp.MatrixSymbol("p_1", 3, 1)
+    return sp.sqrt((v.T * v)[0, 0])
+
+
+def _roots(entries: list) -> list:
+    """Odd powers of square roots -> powers of a free positive atom per radicand (exact for
+    deciding zero: an identity in a free atom holds at its value)."""
+    atoms: dict = {}
+
+    def rep(e):
+        for p in sorted(e.atoms(sp.Pow), key=sp.count_ops, reverse=True):
+            if p.exp.is_Rational and p.exp.q == 2 and p in e.atoms(sp.Pow):
+                r = atoms.setdefault(p.base, sp.Symbol(f"root{len(atoms)}", positive=True))
+                e = e.xreplace({p: r ** int(p.exp * 2)})
+        return e
+
+    return [rep(e) for e in entries]
+
+
+def _difference(l, r):
+    """``l - r`` as a list of entries, or ``None`` when the shapes differ."""
+    def shape(v):
+        return (v.rows, v.cols) if isinstance(v, sp.MatrixBase) else (1, 1)
+
+    if not isinstance(l, sp.MatrixBase) and l == 0 and isinstance(r, sp.MatrixBase):
+        l = sp.zeros(*r.shape)
+    if not isinstance(r, sp.MatrixBase) and r == 0 and isinstance(l, sp.MatrixBase):
+        r = sp.zeros(*l.shape)
+    if shape(l) != shape(r):
+        return None
+    lv = list(l) if isinstance(l, sp.MatrixBase) else [l]
+    rv = list(r) if isinstance(r, sp.MatrixBase) else [r]
+    return [a - b for a, b in zip(lv, rv, strict=True)]
+
+
+def _same(dm: list, dp: list) -> tuple[bool | None, object]:
+    """Whether ``dm = dp`` or ``dm = -dp`` identically (zero test), with the result."""
+    if len(dm) != len(dp):
+        return False, None
+    best = None
+    for sign in (1, -1):
+        res = decide_zero(_roots([a - sign * b for a, b in zip(dm, dp, strict=True)]))
+        if res.zero:
+            return True, res
+        best = best or res
+    return False, best
+
+
+# --------------------------------------------------------------------------- the check
+def _parsed_relations(eq, note: dict):
+    """Every relation the text states: ``(label, E_i, E_j)``."""
+    instances = note.get("instances") or [{}]
+    out = []
+    readings: list[str] = []
+    for k, inst in enumerate(instances):
+        p = parse_latex(eq.latex, eq.section, overrides=_override(inst, eq.section),
+                        block_rows=bool(note.get("block_rows")))
+        readings += [r for r in p.readings if r not in readings]
+        names = ", ".join(a + "=" + b.split(":")[0] for a, b in inst.items())
+        tag = f" ({names})" if inst else ""
+        for c, i, j, a, b in p.pairs():
+            out.append((f"chain {c + 1}: {i + 1} = {j + 1}{tag}", a, b))
+            for x, y in ((a, b), (b, a)):  # X^{-1} = Y states X Y = 1 and Y X = 1
+                if isinstance(x, sp.Inverse):
+                    m = x.arg
+                    out.append((f"chain {c + 1}: {i + 1} = {j + 1}{tag} as a product",
+                                m * y, sp.Identity(m.shape[0])))
+                    out.append((f"chain {c + 1}: {i + 1} = {j + 1}{tag} as a product",
+                                y * m, sp.Identity(m.shape[0])))
+        for via in note.get("via", []):
+            q = parse_latex(via, eq.section, overrides=_override(inst, eq.section))
+            defs = {}
+            for c, exprs in enumerate(p.chains):  # X := its definiens, in the via relation
+                head = exprs[0]
+                if isinstance(head, sp.MatrixSymbol | sp.Symbol):
+                    defs[head] = exprs[-1]
+            for c, i, j, a, b in q.pairs():
+                out.append((f"via {via}", a.xreplace(defs) if isinstance(a, sp.Basic) else a,
+                            b.xreplace(defs) if isinstance(b, sp.Basic) else b))
+    return out, readings
+
+
+def check_transcription(eq, statement) -> dict:
+    """Check one declaration's printed form against its LaTeX.
+
+    Args:
+        eq: a registered declaration (:class:`rigidsym.checking.deciding.registry.Equation`).
+        statement: its built :class:`~rigidsym.checking.deciding.registry.Statement`.
+
+    Returns:
+        The ``transcription`` record: ``{"status": "machine-checked" | "differs" | "not
+        parsed", "members": [{"member", "matches"}...], "readings": [...], "note": ...}``
+        with, for ``differs``, ``member`` and ``counterexample``; for ``not parsed``,
+        ``construct`` and ``why``.
+    """
+    note = notes().get(eq.id, {})
+    if not eq.latex:
+        return {"status": "not parsed", "construct": "no LaTeX",
+                "why": "the declaration gives no latex="}
+    if note.get("not_parsed"):
+        return {"status": "not parsed", "construct": note["not_parsed"],
+                "why": note.get("why", "")}
+    try:
+        rels, readings = _parsed_relations(eq, note)
+    except LatexError as exc:
+        construct = exc.construct
+        if eq.kind == "claim" and construct == "syntax":
+            construct = "prose (a theorem or claim stated in words)"
+        elif "\\int" in construct:
+            construct = "an integral over the body (\\int_B; declared as a point-mass sum)"
+        return {"status": "not parsed", "construct": construct,
+                "why": str(exc).splitlines()[0]}
+    aliases = note.get("aliases", {})
+    defs = _definitions_cached(eq.section)
+    free_rels = []
+    for label, a, b in rels:
+        d = _difference(_free(a, defs, {}), _free(b, defs, {}))
+        if d is not None:
+            free_rels.append((label, d))
+    members = [(r.label or f"member {k + 1}", r) for k, r in enumerate(statement.printed)]
+    out_members = []
+    for k, (label, rel) in enumerate(members):
+        dm = _difference(_free(rel.lhs, defs, aliases), _free(rel.rhs, defs, aliases))
+        found, last = None, None
+        order = free_rels[k:] + free_rels[:k]  # members pair in order: try that one first
+        for plabel, dp in order:
+            if dm is None:
+                break
+            ok, res = _same(dm, dp)
+            if ok:
+                found = plabel
+                break
+            last = last or res
+        if found is None:
+            rec = {"status": "differs", "member": label, "members": out_members,
+                   "readings": readings,
+                   "why": ("shapes differ from every relation of the LaTeX" if dm is None
+                           else "no relation of the LaTeX equals this member")}
+            if last is not None and last.witness:
+                rec["counterexample"] = {str(k2): str(v) for k2, v in last.witness.items()}
+            return rec
+        out_members.append({"member": label, "matches": found})
+    rec = {"status": "machine-checked", "members": out_members, "readings": readings}
+    if note.get("why"):
+        rec["note"] = note["why"]
+    return rec
+
+
+def transcription_words(t: dict | None) -> str:
+    """One line for reports: ``transcription machine-checked`` (or what differs / was not
+    parsed)."""
+    if not t:
+        return ""
+    if t["status"] == "machine-checked":
+        return "transcription machine-checked"
+    if t["status"] == "differs":
+        return f"transcription differs: {t.get('member', '')} ({t.get('why', '')})"
+    return f"transcription not parsed: {t.get('construct', '')}"
+
+
+_DONE: dict[str, dict] = {}
+
+
+def transcription_for(eq_id: str) -> dict | None:
+    """The transcription record of a registered id (computed once per process), or ``None``
+    for an id that is not registered."""
+    from rigidsym.checking.deciding.registry import REGISTRY
+
+    eq = REGISTRY.get(eq_id)
+    if eq is None:
+        return None
+    hit = _DONE.get(eq_id)
+    if hit is None:
+        hit = _DONE[eq_id] = check_transcription(eq, eq.build())
+    return hit
