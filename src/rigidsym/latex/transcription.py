@@ -101,6 +101,14 @@ def _free(x, defs: dict, aliases: dict):
         if not swap:
             break
         x = x.xreplace(swap)
+    # an inverse stays an atom of its own, keyed by what it inverts (never expanded)
+    for inv in sorted(x.atoms(sp.Inverse), key=lambda v: len(str(v))):
+        key = "inv(" + sp.srepr(inv.arg) + ")"
+        x = x.xreplace({inv: sp.MatrixSymbol(f"inv{abs(hash(key)) % 10**8}", *inv.shape)})
+    for p in sorted(x.atoms(sp.MatPow), key=lambda v: len(str(v))):
+        if p.exp == -1:
+            key = "inv(" + sp.srepr(p.base) + ")"
+            x = x.xreplace({p: sp.MatrixSymbol(f"inv{abs(hash(key)) % 10**8}", *p.shape)})
     atoms = {}
     for s in x.atoms(sp.MatrixSymbol):
         atoms[s] = sp.ImmutableMatrix(*s.shape, lambda i, j, n=s.name:
@@ -174,7 +182,7 @@ def _parsed_relations(eq, note: dict):
     instances = note.get("instances") or [{}]
     out = []
     readings: list[str] = []
-    for k, inst in enumerate(instances):
+    for _k, inst in enumerate(instances):
         p = parse_latex(eq.latex, eq.section, overrides=_override(inst, eq.section),
                         block_rows=bool(note.get("block_rows")))
         readings += [r for r in p.readings if r not in readings]
@@ -192,11 +200,11 @@ def _parsed_relations(eq, note: dict):
         for via in note.get("via", []):
             q = parse_latex(via, eq.section, overrides=_override(inst, eq.section))
             defs = {}
-            for c, exprs in enumerate(p.chains):  # X := its definiens, in the via relation
+            for exprs in p.chains:  # X := its definiens, in the via relation
                 head = exprs[0]
                 if isinstance(head, sp.MatrixSymbol | sp.Symbol):
                     defs[head] = exprs[-1]
-            for c, i, j, a, b in q.pairs():
+            for _c, _i, _j, a, b in q.pairs():
                 out.append((f"via {via}", a.xreplace(defs) if isinstance(a, sp.Basic) else a,
                             b.xreplace(defs) if isinstance(b, sp.Basic) else b))
     return out, readings
@@ -233,7 +241,9 @@ def check_transcription(eq, statement) -> dict:
         return {"status": "not parsed", "construct": construct,
                 "why": str(exc).splitlines()[0]}
     aliases = note.get("aliases", {})
-    defs = _definitions_cached(eq.section)
+    defs = dict(_definitions_cached(eq.section))
+    for name, tex in note.get("defs", {}).items():  # a declaration's own notational atom
+        defs[name] = parse_latex(tex, eq.section).chains[0][0]  # "X = ..." gives X
     free_rels = []
     for label, a, b in rels:
         d = _difference(_free(a, defs, {}), _free(b, defs, {}))
