@@ -250,6 +250,9 @@ class _Build(lark.Transformer):
         self.glyphs[key] = g
         if g.shape == ():
             return sp.Symbol(g.name, real=True)
+        if g.kind == "row":  # a per-id note: the text's vector stands for its row
+            self.readings.append(f"{key} read as the row {g.name}^T (per-id note)")
+            return sp.MatrixSymbol(g.name, *g.shape).T
         return sp.MatrixSymbol(g.name, *g.shape)
 
     # ---- numbers and groups
@@ -296,8 +299,12 @@ class _Build(lark.Transformer):
         return self._sum(a, b, "add")
 
     def sub(self, items):
-        a, b = (_value(i) for i in items)
-        return self._sum(a, b, "sub")
+        a, b = _value(items[0]), items[1]
+        if isinstance(b, _Brace):  # a - \underbrace{p + q}: a brace groups nothing
+            how = self.made.get(b.body)
+            if how and how[0] in ("add", "sub"):
+                return self._sum(self._sum(a, how[1][0], "sub"), how[1][1], how[0])
+        return self._sum(a, _value(b), "sub")
 
     def _sum(self, a, b, op):
         sa, sb = _shape(a), _shape(b)
@@ -309,7 +316,12 @@ class _Build(lark.Transformer):
         return r
 
     def neg(self, items):
-        return -_value(items[0])
+        b = items[0]
+        if isinstance(b, _Brace):  # -\underbrace{p + q} is -p + q
+            how = self.made.get(b.body)
+            if how and how[0] in ("add", "sub"):
+                return self._sum(-how[1][0], how[1][1], how[0])
+        return -_value(b)
 
     def mul(self, items):
         a, b = (_value(i) for i in items)
@@ -419,7 +431,7 @@ class _Build(lark.Transformer):
     def underbrace(self, items):
         body, label = _value(items[0]), _value(items[1])
         self.braces.append((label, body))
-        return body
+        return _Brace(body)
 
     def matrix(self, items):
         rows = [r for r in items if isinstance(r, list)]
@@ -457,6 +469,11 @@ class _GlyphKey:
 
 
 @dataclass(frozen=True)
+class _Brace:
+    body: object
+
+
+@dataclass(frozen=True)
 class _Pending:
     a: object
     b: object
@@ -466,6 +483,8 @@ class _Pending:
 def _value(x):
     if isinstance(x, _GlyphKey):
         return x.value
+    if isinstance(x, _Brace):
+        return x.body
     if isinstance(x, _Pending):
         raise LatexError(f"a sum of {_words(x.a)} and {_words(x.b)}: shapes do not fit",
                          "shapes")
@@ -612,7 +631,12 @@ def parse_latex(latex: str, section: str = "*", overrides: dict | None = None,
     out = Parsed(readings=build.readings, glyphs=build.glyphs)
     for st in stmts:
         _, exprs, ops = st
-        out.chains.append([_as_scalar(_value(e)) for e in exprs])
+        exprs = [_as_scalar(_value(e)) for e in exprs]
+        sized = next((_shape(e) for e in exprs if _shape(e)
+                      and not isinstance(e, sp.ZeroMatrix)), None)
+        exprs = [sp.ZeroMatrix(*sized) if isinstance(e, sp.ZeroMatrix) and sized else e
+                 for e in exprs]  # "= \mathbf{0}": the zero of the other side's shape
+        out.chains.append(exprs)
         out.ops.append(ops)
     for label, body in build.braces:  # an underbrace whose label is a symbol: a member
         if isinstance(label, sp.Symbol | sp.MatrixSymbol):

@@ -51,7 +51,9 @@ def _override(spec: dict, section: str) -> dict:
         name, _, shape = value.partition(":")
         from rigidsym.latex.table import _shape
 
-        out[key] = Glyph(key, section, name, _shape(shape or "scalar"), "instance",
+        kind = "row" if shape.endswith("row") else "instance"
+        shape = shape.removesuffix("row").strip()
+        out[key] = Glyph(key, section, name, _shape(shape or "scalar"), kind,
                          "per-id note")
     return out
 
@@ -109,6 +111,14 @@ def _free(x, defs: dict, aliases: dict):
         if p.exp == -1:
             key = "inv(" + sp.srepr(p.base) + ")"
             x = x.xreplace({p: sp.MatrixSymbol(f"inv{abs(hash(key)) % 10**8}", *p.shape)})
+    # the determinant of a larger matrix stays an atom too (a 6 x 6 of free entries expands
+    # to 720 terms); keyed by its argument, so det(U) in both forms is one atom
+    from rigidsym.algebra.operators import Det
+
+    for d in sorted(x.atoms(Det, sp.Determinant), key=lambda v: len(str(v))):
+        if d.args[0].shape[0] > 3:
+            key = "det(" + sp.srepr(d.args[0]) + ")"
+            x = x.xreplace({d: sp.Symbol(f"det{abs(hash(key)) % 10**8}", real=True)})
     atoms = {}
     for s in x.atoms(sp.MatrixSymbol):
         atoms[s] = sp.ImmutableMatrix(*s.shape, lambda i, j, n=s.name:
@@ -244,16 +254,38 @@ def check_transcription(eq, statement) -> dict:
     defs = dict(_definitions_cached(eq.section))
     for name, tex in note.get("defs", {}).items():  # a declaration's own notational atom
         defs[name] = parse_latex(tex, eq.section).chains[0][0]  # "X = ..." gives X
-    free_rels = []
+    free_rels, sides = [], []
     for label, a, b in rels:
-        d = _difference(_free(a, defs, {}), _free(b, defs, {}))
+        fa, fb = _free(a, defs, {}), _free(b, defs, {})
+        d = _difference(fa, fb)
         if d is not None:
             free_rels.append((label, d))
+        sides.append((label, fa, fb))
     members = [(r.label or f"member {k + 1}", r) for k, r in enumerate(statement.printed)]
     out_members = []
     for k, (label, rel) in enumerate(members):
-        dm = _difference(_free(rel.lhs, defs, aliases), _free(rel.rhs, defs, aliases))
+        fl, fr = _free(rel.lhs, defs, aliases), _free(rel.rhs, defs, aliases)
+        dm = _difference(fl, fr)
         found, last = None, None
+        if dm is not None and all(x == 0 for x in dm):
+            # a restatement of a notational atom's definition (R = CPM(r)): it says
+            # nothing beyond the glyph table
+            out_members.append({"member": label, "matches": "a definition of the glyph "
+                                                            "table"})
+            continue
+        if dm is None:  # a relation whose sides' shapes differ, as printed: side by side
+            for plabel, fa, fb in sides:
+                for x, y in ((fa, fb), (fb, fa)):
+                    dl, dr = _difference(fl, x), _difference(fr, y)
+                    if dl is not None and dr is not None and \
+                            decide_zero(_roots(dl)).zero and decide_zero(_roots(dr)).zero:
+                        found = plabel + " (side by side: the shapes differ as printed)"
+                        break
+                if found:
+                    break
+            if found:
+                out_members.append({"member": label, "matches": found})
+                continue
         order = free_rels[k:] + free_rels[:k]  # members pair in order: try that one first
         for plabel, dp in order:
             if dm is None:
@@ -299,7 +331,7 @@ def transcription_for(eq_id: str) -> dict | None:
     from rigidsym.checking.deciding.registry import REGISTRY
 
     eq = REGISTRY.get(eq_id)
-    if eq is None:
+    if eq is None or not eq.latex:
         return None
     hit = _DONE.get(eq_id)
     if hit is None:

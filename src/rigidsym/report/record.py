@@ -71,11 +71,15 @@ def cause_line(results: list[Outcome]) -> str:
 
 
 def _transcription(r: Outcome) -> dict | None:
-    """The transcription record if this process has computed it (issue 29; the committed
-    report does not carry it yet: the chapter-wide check is not yet fast enough)."""
-    from rigidsym.latex.transcription import _DONE
+    """The printed form checked against the LaTeX (issue 29), or ``None`` for an id that
+    gives no LaTeX or is not registered."""
+    from rigidsym.latex import LatexError
+    from rigidsym.latex.transcription import transcription_for
 
-    return _DONE.get(r.id)
+    try:
+        return transcription_for(r.id)
+    except (LatexError, ValueError, TypeError, KeyError) as exc:  # reported, never fatal
+        return {"status": "not parsed", "construct": type(exc).__name__, "why": str(exc)}
 
 
 def _bounded(x):
@@ -188,10 +192,9 @@ def result_record(r: Outcome, timings: bool = True, full: bool = False) -> dict:
         "cause_class": cls or None, "evidence": why or None,
         "counterexample": counterexample_record(r.counterexample),
         "singular": r.singular, "model": r.model, "numeric": numeric,
+        # issue 29: the printed form checked against the LaTeX (additive to schema 2)
+        "transcription": _transcription(r),
     }
-    t = _transcription(r)  # issue 29: the printed form checked against the LaTeX (additive)
-    if t is not None:
-        rec["transcription"] = t
     rec.update(repair_fields(r))  # issue 23: correction, repairs, repair_search
     if timings:
         rec["seconds"] = r.seconds
@@ -217,7 +220,8 @@ def to_json(results: list[Outcome], timings: bool = True, full: bool = False) ->
     ``full=True`` adds the expanded values (``chapter3-full.json``).
     """
     rows = [result_record(r, timings=timings, full=full) for r in results]
-    return json.dumps({**document_header(), "equations": rows, "summary": summary(results)},
+    return json.dumps({**document_header(), "equations": rows, "summary": summary(results),
+                       "does_not_hold_by_cause": cause_counts(results)},
                       indent=1, sort_keys=False, ensure_ascii=False) + "\n"
 
 
