@@ -139,8 +139,8 @@ def _shape(x) -> tuple[int, int] | None:
 def _as_scalar(x):
     """A 1 x 1 matrix as its entry (the book's ``e^T d`` is a scalar)."""
     s = _shape(x)
-    if s == (1, 1):
-        return x[0, 0]
+    if s == (1, 1):  # lazily: indexing a symbolic product builds a sum (slow)
+        return x[0, 0] if isinstance(x, sp.MatrixBase) else sp.Trace(x)
     return x
 
 
@@ -357,7 +357,7 @@ class _Build(lark.Transformer):
         if _shape(a) != _shape(b) or _shape(a)[1] != 1:
             raise LatexError(f"\\cdot between {_words(a)} and {_words(b)}: expected two "
                              f"vectors of one size", "shapes")
-        return (a.T * b)[0, 0]
+        return _as_scalar(a.T * b)
 
     def power(self, items):
         x, sup = _value(items[0]), items[1]
@@ -371,7 +371,7 @@ class _Build(lark.Transformer):
         if n == -1:
             return x.inverse() if not isinstance(x, sp.MatrixBase) else x.inv()
         if _shape(x) == (1, 1):
-            return x[0, 0] ** n
+            return _as_scalar(x) ** n
         return x ** n
 
     def sup(self, items):
@@ -381,7 +381,7 @@ class _Build(lark.Transformer):
         x = _value(items[0])
         if _shape(x) is None or _shape(x)[1] != 1:
             raise LatexError(f"\\|...\\| of {_words(x)}: expected a vector", "shapes")
-        return sp.sqrt((x.T * x)[0, 0])
+        return sp.sqrt(_as_scalar(x.T * x))
 
     def func(self, items):
         name, x = str(items[0]), _value(items[1])
@@ -531,9 +531,9 @@ def _product(a, b):
         r = a * b
         return r
     if sa == (1, 1):
-        return a[0, 0] * b
+        return _as_scalar(a) * b
     if sb == (1, 1):
-        return a * b[0, 0]
+        return a * _as_scalar(b)
     raise LatexError(f"juxtaposition of {_words(a)} and {_words(b)}: no product fits "
                      f"(declare the shapes, e.g. with the glyph table)", "shapes")
 

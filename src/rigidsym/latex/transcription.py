@@ -129,6 +129,9 @@ def _free(x, defs: dict, aliases: dict):
         atoms[s] = angle(s.name) if s.name in _ANGLES else sp.Symbol(s.name, real=True)
     x = x.xreplace(atoms)
     x = x.doit() if hasattr(x, "doit") else x
+    while x.atoms(sp.Trace):  # a trace over a mixed product stays lazy after doit
+        tr = min(x.atoms(sp.Trace), key=lambda v: len(str(v)))
+        x = x.xreplace({tr: sp.Matrix(tr.arg.doit().as_explicit()).trace()})
     if isinstance(x, sp.MatrixExpr | sp.MatrixBase):
         x = sp.Matrix(x.as_explicit() if isinstance(x, sp.MatrixExpr) else x)
         x = x.applyfunc(lambda e: e.doit())
@@ -335,5 +338,32 @@ def transcription_for(eq_id: str) -> dict | None:
         return None
     hit = _DONE.get(eq_id)
     if hit is None:
-        hit = _DONE[eq_id] = check_transcription(eq, eq.build())
+        hit = _DONE[eq_id] = _cached(eq, eq.build())
     return hit
+
+
+@cache
+def _sources() -> str:
+    """What a transcription record depends on besides the declaration: the reader's data
+    and code, and sympy's version."""
+    pkg = resources.files("rigidsym.latex")
+    names = ("grammar.lark", "glyphs.csv", "notes.json", "parser.py", "table.py",
+             "transcription.py")
+    return sp.__version__ + "".join(pkg.joinpath(n).read_text("utf-8") for n in names)
+
+
+def _cached(eq, statement) -> dict:
+    """:func:`check_transcription` through the user cache (``verdicts/``), keyed by the
+    declaration's LaTeX, section and printed members (``srepr``) and :func:`_sources`: a
+    changed declaration, table, note or reader is checked again."""
+    from rigidsym import _cache
+
+    key = json.dumps([eq.id, eq.latex, eq.section, _sources(),
+                      [[sp.srepr(r.lhs), sp.srepr(r.rhs), r.label] for r in statement.printed]])
+    path = _cache.folder("verdicts") / f"transcription-{_cache.digest(key.encode())}.json"
+    data = _cache.get(path)
+    if data is not None:
+        return json.loads(data)
+    rec = check_transcription(eq, statement)
+    _cache.put(path, json.dumps(rec).encode())
+    return rec
