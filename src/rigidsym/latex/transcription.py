@@ -80,11 +80,6 @@ def _definitions_cached(section: str) -> dict:
     return _definitions(section)
 
 
-def _norm_atoms(section: str) -> dict:
-    """``norm_x`` atoms of printed forms -> ``sqrt(x . x)``."""
-    return {}
-
-
 def _free(x, defs: dict, aliases: dict):
     """The explicit value of ``x`` with book symbols as free atoms (see the module doc)."""
     if not isinstance(x, sp.Basic):
@@ -347,8 +342,8 @@ def _sources() -> str:
     """What a transcription record depends on besides the declaration: the reader's data
     and code, and sympy's version."""
     pkg = resources.files("rigidsym.latex")
-    names = ("grammar.lark", "glyphs.csv", "notes.json", "parser.py", "table.py",
-             "transcription.py")
+    names = ("grammar.lark", "glyphs.csv", "notes.json", "lexing.py", "parser.py",
+             "shapes.py", "table.py", "transcription.py")
     return sp.__version__ + "".join(pkg.joinpath(n).read_text("utf-8") for n in names)
 
 
