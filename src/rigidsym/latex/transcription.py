@@ -25,7 +25,8 @@ from importlib import resources
 import sympy as sp
 
 from rigidsym.algebra.symbols import angle
-from rigidsym.latex.parser import LatexError, parse_latex
+from rigidsym.latex.reader import parse_latex
+from rigidsym.latex.shapes import LatexError
 from rigidsym.latex.table import Glyph, glyph_table
 from rigidsym.zero import decide_zero
 
@@ -218,6 +219,31 @@ def _parsed_relations(eq, note: dict):
     return out, readings
 
 
+def _match(fl, fr, dm, order, sides):
+    """The parsed relation a printed member (free sides ``fl``, ``fr``, difference ``dm``)
+    equals, and the last zero-test result tried; ``order`` tries the member's own position
+    first (members pair in order)."""
+    if dm is not None and all(x == 0 for x in dm):
+        # a restatement of a notational atom's definition (R = CPM(r)): it says nothing
+        # beyond the glyph table
+        return "a definition of the glyph table", None
+    if dm is None:  # a relation whose sides' shapes differ, as printed: side by side
+        for plabel, fa, fb in sides:
+            for x, y in ((fa, fb), (fb, fa)):
+                dl, dr = _difference(fl, x), _difference(fr, y)
+                if dl is not None and dr is not None and \
+                        decide_zero(_roots(dl)).zero and decide_zero(_roots(dr)).zero:
+                    return plabel + " (side by side: the shapes differ as printed)", None
+        return None, None
+    last = None
+    for plabel, dp in order:
+        ok, res = _same(dm, dp)
+        if ok:
+            return plabel, None
+        last = last or res
+    return None, last
+
+
 def check_transcription(eq, statement) -> dict:
     """Check one declaration's printed form against its LaTeX.
 
@@ -264,35 +290,7 @@ def check_transcription(eq, statement) -> dict:
     for k, (label, rel) in enumerate(members):
         fl, fr = _free(rel.lhs, defs, aliases), _free(rel.rhs, defs, aliases)
         dm = _difference(fl, fr)
-        found, last = None, None
-        if dm is not None and all(x == 0 for x in dm):
-            # a restatement of a notational atom's definition (R = CPM(r)): it says
-            # nothing beyond the glyph table
-            out_members.append({"member": label, "matches": "a definition of the glyph "
-                                                            "table"})
-            continue
-        if dm is None:  # a relation whose sides' shapes differ, as printed: side by side
-            for plabel, fa, fb in sides:
-                for x, y in ((fa, fb), (fb, fa)):
-                    dl, dr = _difference(fl, x), _difference(fr, y)
-                    if dl is not None and dr is not None and \
-                            decide_zero(_roots(dl)).zero and decide_zero(_roots(dr)).zero:
-                        found = plabel + " (side by side: the shapes differ as printed)"
-                        break
-                if found:
-                    break
-            if found:
-                out_members.append({"member": label, "matches": found})
-                continue
-        order = free_rels[k:] + free_rels[:k]  # members pair in order: try that one first
-        for plabel, dp in order:
-            if dm is None:
-                break
-            ok, res = _same(dm, dp)
-            if ok:
-                found = plabel
-                break
-            last = last or res
+        found, last = _match(fl, fr, dm, free_rels[k:] + free_rels[:k], sides)
         if found is None:
             rec = {"status": "differs", "member": label, "members": out_members,
                    "readings": readings,
@@ -342,7 +340,7 @@ def _sources() -> str:
     """What a transcription record depends on besides the declaration: the reader's data
     and code, and sympy's version."""
     pkg = resources.files("rigidsym.latex")
-    names = ("grammar.lark", "glyphs.csv", "notes.json", "lexing.py", "parser.py",
+    names = ("grammar.lark", "glyphs.csv", "notes.json", "lexing.py", "parser.py", "reader.py",
              "shapes.py", "table.py", "transcription.py")
     return sp.__version__ + "".join(pkg.joinpath(n).read_text("utf-8") for n in names)
 
