@@ -271,7 +271,7 @@ def check_transcription(eq, statement) -> dict:
         if eq.kind == "claim" and construct == "syntax":
             construct = "prose (a theorem or claim stated in words)"
         elif "\\int" in construct:
-            construct = "an integral over the body (\\int_B; declared as a point-mass sum)"
+            construct = "an integral over the body (∫ over B; declared as a point-mass sum)"
         return {"status": "not parsed", "construct": construct,
                 "why": str(exc).splitlines()[0]}
     aliases = note.get("aliases", {})
