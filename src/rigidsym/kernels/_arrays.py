@@ -11,8 +11,10 @@ the generated Jacobians with a cotangent or tangent.
 
 from __future__ import annotations
 
+import inspect
 import json
 import math
+import types
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -26,7 +28,7 @@ from rigidsym._io import load_module
 from rigidsym.kernels._errors import NonFiniteResultError, SingularConfigurationError
 
 __all__ = ["ArraySpace", "modes", "validate", "evaluate", "contract", "raise_flagged",
-           "SUFFIX"]
+           "SUFFIX", "make_kernel", "namespace", "euler_name", "docstring"]
 
 #: suffix of the generated kernels with Jacobians (rigidsym.codegen.jacobians.SUFFIX)
 SUFFIX = "_with_jacobians"
@@ -301,3 +303,58 @@ def docstring(meta: dict, backend: str, derivative: str) -> str:
     lines += ["", "Notes:", f"    Derivative: {derivative}",
               f"    Generated; {meta['ops']} operations; math hash {meta['hash']}."]
     return "\n".join(lines)
+
+
+def make_kernel(progs: ArraySpace, call: Callable, name: str, module: str) -> Callable:
+    """The public function of kernel ``name``: the kernel's arguments (positional or
+    keyword), then ``check`` and ``on_singular`` (keyword-only); ``call(name, values,
+    check, on_singular)`` evaluates it."""
+    meta = progs.meta[name]
+    P = inspect.Parameter
+    sig = inspect.Signature(
+        [P(a["name"], P.POSITIONAL_OR_KEYWORD) for a in meta["args"]]
+        + [P("check", P.KEYWORD_ONLY, default=None),
+           P("on_singular", P.KEYWORD_ONLY, default=None)])
+    names = [a["name"] for a in meta["args"]]
+
+    def fn(*args, check=None, on_singular=None, **kwargs):
+        ba = sig.bind(*args, **kwargs)
+        return call(name, tuple(ba.arguments[n] for n in names), check, on_singular)
+
+    fn.__name__ = fn.__qualname__ = name
+    fn.__module__ = module
+    fn.__signature__ = sig  # type: ignore[attr-defined]
+    lib = {"torch": "torch.autograd.Function", "jax": "jax.custom_jvp"}[progs.backend]
+    deriv = (f"the generated Jacobian kernel {name}{SUFFIX} ({lib})"
+             if progs.has_jacobian(name) else
+             "autograd through the generated expression (safe where at branches)")
+    fn.__doc__ = docstring(meta, progs.backend, deriv)
+    return fn
+
+
+def namespace(progs: ArraySpace, call: Callable, title: str) -> types.ModuleType:
+    """A namespace (module object) with the public kernels of ``progs`` and
+    ``KERNEL_NAMES``."""
+    ns = types.ModuleType(title)
+    names = progs.kernel_names()
+    for n in names:
+        setattr(ns, n, make_kernel(progs, call, n, title))
+    ns.KERNEL_NAMES = tuple(names)  # type: ignore[attr-defined]
+    ns.__all__ = [*names, "KERNEL_NAMES"]  # type: ignore[attr-defined]
+    return ns
+
+
+def euler_name(progs: ArraySpace, kind: str, sequence: str, frame: str) -> str:
+    """The generated kernel of an Euler-angle ``kind`` for ``sequence`` and ``frame``.
+
+    Raises:
+        ValueError: an unknown sequence, or a frame neither "fixed" nor "body".
+    """
+    seq = sequence.lower() if isinstance(sequence, str) else None
+    if seq is None or f"{kind}_{seq}_fixed" not in progs.meta:
+        known = sorted(n[len(kind) + 1:-6].upper() for n in progs.meta
+                       if n.startswith(kind + "_") and n.endswith("_fixed"))
+        raise ValueError(f"sequence: expected one of {', '.join(known)}, got {sequence!r}")
+    if frame not in ("fixed", "body"):
+        raise ValueError(f"frame: expected 'fixed' or 'body', got {frame!r}")
+    return f"{kind}_{seq}_{frame}"

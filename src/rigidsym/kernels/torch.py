@@ -36,7 +36,6 @@ Example:
 
 from __future__ import annotations
 
-import inspect
 import types
 from pathlib import Path
 
@@ -216,29 +215,6 @@ def _space(directory=None) -> _Space:
     return _SPACES[key]
 
 
-def _kernel(space: _Space, name: str, public_name: str, module: str):
-    meta = space.progs.meta[name]
-    P = inspect.Parameter
-    sig = inspect.Signature(
-        [P(a["name"], P.POSITIONAL_OR_KEYWORD) for a in meta["args"]]
-        + [P("check", P.KEYWORD_ONLY, default=None),
-           P("on_singular", P.KEYWORD_ONLY, default=None)])
-
-    def fn(*args, check=None, on_singular=None, **kwargs):
-        ba = sig.bind(*args, **kwargs)
-        return space.call(name, tuple(ba.arguments[a["name"]] for a in meta["args"]),
-                          check, on_singular)
-
-    fn.__name__ = fn.__qualname__ = public_name
-    fn.__module__ = module
-    fn.__signature__ = sig
-    deriv = ("the generated Jacobian kernel (torch.autograd.Function)"
-             if space.progs.has_jacobian(name) else
-             "autograd through the generated expression (safe where at branches)")
-    fn.__doc__ = _arrays.docstring(meta, "torch", deriv)
-    return fn
-
-
 def load(directory: str | Path | None = None) -> types.ModuleType:
     """The PyTorch kernels of a generated directory (``rigidsym generate --out DIR``).
 
@@ -252,24 +228,8 @@ def load(directory: str | Path | None = None) -> types.ModuleType:
         FileNotFoundError: no ``kernels.json`` or ``torch/`` there.
     """
     space = _space(directory)
-    ns = types.ModuleType(f"rigidsym.kernels.torch.load({str(directory)!r})")
-    names = space.progs.kernel_names()
-    for n in names:
-        setattr(ns, n, _kernel(space, n, n, ns.__name__))
-    ns.KERNEL_NAMES = tuple(names)
-    ns.__all__ = [*names, "KERNEL_NAMES"]
-    return ns
-
-
-def _euler(kind: str, sequence: str, frame: str) -> str:
-    seq = sequence.lower() if isinstance(sequence, str) else sequence
-    name = f"{kind}_{seq}_{frame}" if isinstance(seq, str) else ""
-    if not isinstance(seq, str) or f"{kind}_{seq}_fixed" not in _space().progs.meta:
-        raise ValueError(f"sequence: expected one of the twelve intrinsic sequences "
-                         f"('ZYX', ...), got {sequence!r}")
-    if frame not in ("fixed", "body"):
-        raise ValueError(f"frame: expected 'fixed' or 'body', got {frame!r}")
-    return name
+    return _arrays.namespace(space.progs, space.call, f"rigidsym.kernels.torch.load("
+                             f"{str(directory)!r})")
 
 
 def euler_rate_matrix(angles, sequence: str, frame: str = "fixed", *, check=None,
@@ -288,8 +248,8 @@ def euler_rate_matrix(angles, sequence: str, frame: str = "fixed", *, check=None
     Raises:
         TypeError, ValueError: bad input, naming the argument.
     """
-    return _space().call(_euler("euler_rate_matrix", sequence, frame), (angles,), check,
-                         on_singular)
+    name = _arrays.euler_name(_space().progs, "euler_rate_matrix", sequence, frame)
+    return _space().call(name, (angles,), check, on_singular)
 
 
 def euler_angle_rates(angles, omega, sequence: str, frame: str = "fixed", *, check=None,
@@ -310,8 +270,8 @@ def euler_angle_rates(angles, omega, sequence: str, frame: str = "fixed", *, che
         TypeError, ValueError: bad input, naming the argument.
         SingularConfigurationError: at gimbal lock, eager with on_singular="raise".
     """
-    return _space().call(_euler("euler_angle_rates", sequence, frame), (angles, omega), check,
-                         on_singular)
+    name = _arrays.euler_name(_space().progs, "euler_angle_rates", sequence, frame)
+    return _space().call(name, (angles, omega), check, on_singular)
 
 
 __all__ += _space().progs.kernel_names()
@@ -321,7 +281,7 @@ def __getattr__(attr: str):
     # the package's kernels, made on first access (importing this module stays cheap)
     space = _space()
     if attr in space.progs.kernel_names():
-        fn = _kernel(space, attr, attr, __name__)
+        fn = _arrays.make_kernel(space.progs, space.call, attr, __name__)
         globals()[attr] = fn
         return fn
     raise AttributeError(f"module {__name__!r} has no attribute {attr!r}")
