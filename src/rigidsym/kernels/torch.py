@@ -36,6 +36,7 @@ Example:
 
 from __future__ import annotations
 
+import math
 import types
 from pathlib import Path
 
@@ -112,12 +113,29 @@ def _batch(xs, args) -> tuple:
         raise ValueError(f"batch shapes do not broadcast: {shapes}") from None
 
 
+def _fixed_arity(values, n: int):
+    """``forward(x0, ..., x{n-1})``: Dynamo reads a ``forward(*xs)`` as taking ``ctx``
+    first, so the arity is spelled out (the kernels' argument counts differ)."""
+    params = ", ".join(f"x{i}" for i in range(n))
+    scope: dict = {"values": values}
+    exec(f"def forward({params}):\n    return values(({params},))\n", scope)  # noqa: S102
+    return scope["forward"]
+
+
 class _Space:
     """The PyTorch kernels of one generated directory."""
 
     def __init__(self, directory):
         self.progs = _arrays.ArraySpace.from_directory(directory, "torch")
+        # every program loaded and every function made now (0.15 s for the package's 134
+        # kernels), never inside a traced call: torch.compile(fullgraph=True) / jit
+        # then see only tensor code
         self._fns: dict = {}
+        for name in self.progs.meta:
+            self.progs.variants(name)
+        for name in self.progs.meta:
+            if not name.endswith(_arrays.SUFFIX):
+                self.function(name)
 
     def function(self, name: str):
         """The ``torch.autograd.Function`` of ``name`` (None: no Jacobian kernel)."""
@@ -128,7 +146,7 @@ class _Space:
     def _make(self, name: str):
         meta, progs = self.progs.meta[name], self.progs
         args, outs = meta["args"], meta["outputs"]
-        nval = sum(int(np.prod(o["shape"])) for o in outs)
+        nval = sum(math.prod(o["shape"]) for o in outs)
 
         def values(xs):
             cols = _arrays.columns(xs, args)
@@ -144,9 +162,7 @@ class _Space:
         class KernelFunction(torch.autograd.Function):
             generate_vmap_rule = True
 
-            @staticmethod
-            def forward(*xs):
-                return values(xs)
+            forward = staticmethod(_fixed_arity(values, len(args)))
 
             @staticmethod
             def setup_context(ctx, inputs, output):
