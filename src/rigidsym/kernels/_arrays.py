@@ -208,7 +208,7 @@ def _singular(xp, dens, like):
 
 
 def contract(xp, grads: list, jac: list, outs: list[dict], args: list[dict],
-             forward: bool) -> list:
+             forward: bool, singular=None) -> list:
     """Chain rule through the generated Jacobian entries ``jac`` (flat, output-major then
     input, each entry row-major ``output shape + input shape``).
 
@@ -216,6 +216,9 @@ def contract(xp, grads: list, jac: list, outs: list[dict], args: list[dict],
     inputs, ``sum_i g_i J_ij``. ``forward=True``: ``grads`` are the tangents of the inputs;
     returns those of the outputs, ``sum_j J_ij t_j``. A zero cotangent contributes zero
     even where ``J`` is not finite (a masked singular sample), a non-zero one NaN.
+    Forward mode cannot test the tangent (its transpose must stay linear): there the
+    ``singular`` samples (a boolean mask of the batch shape) get a zero derivative, their
+    values being NaN or an error already.
     """
     sizes_o = [int(math.prod(o["shape"])) for o in outs]
     sizes_a = [int(math.prod(a["shape"])) for a in args]
@@ -234,6 +237,8 @@ def contract(xp, grads: list, jac: list, outs: list[dict], args: list[dict],
                     args[ia]["shape"])]) + (na, 1))
                 J = xp.stack([_full(xp, v, t[..., 0, 0]) for v in blocks[io, ia]], -1)
                 J = J.reshape(tuple(t.shape[:-2]) + (no, na))
+                if singular is not None:
+                    J = xp.where(singular[..., None, None], 0.0, J)
                 acc = acc + (J @ t)[..., 0]
             res.append(acc.reshape(tuple(acc.shape[:-1]) + tuple(outs[io]["shape"])))
         return res

@@ -154,7 +154,7 @@ class _Space:
             flat, _ = _arrays.evaluate(jnp, progs.variants(name + _arrays.SUFFIX), cols,
                                        jax.lax.stop_gradient)
             touts = _arrays.contract(jnp, list(tangents), flat[nval:], outs, args,
-                                     forward=True)
+                                     forward=True, singular=res[-1])
             zero = np.zeros(res[-1].shape, dtype=jax.dtypes.float0)
             return res, (*touts, zero)
 

@@ -19,7 +19,7 @@ Keywords (no ``out=``, no ``threads=``: meaningless or harmful under autograd an
 Derivatives: a kernel with a generated Jacobian kernel (``<name>_with_jacobians``) is a
 ``torch.autograd.Function`` (``setup_context``, a generated vmap rule, ``backward`` and
 ``jvp``) whose derivative *is* that verified Jacobian; double backward is not supported
-(``once_differentiable`` says so). The others (the branch kernels, the Euler-angle rates)
+(``create_graph=True`` raises, saying so). The others (the branch kernels, the Euler-angle rates)
 are differentiated by autograd through the generated expression, with the safe-``where``
 idiom at their branches.
 
@@ -46,7 +46,6 @@ except ImportError as _exc:  # pragma: no cover - exercised where PyTorch is abs
     raise ImportError("rigidsym.kernels.torch needs PyTorch: pip install "
                       "'rigidsym[torch]'") from _exc
 import numpy as np
-from torch.autograd.function import once_differentiable
 
 from rigidsym.kernels import _arrays
 from rigidsym.kernels._errors import NonFiniteResultError, SingularConfigurationError
@@ -171,8 +170,12 @@ class _Space:
                 ctx.mark_non_differentiable(output[-1])
 
             @staticmethod
-            @once_differentiable
             def backward(ctx, *grads):
+                if torch.is_grad_enabled():  # create_graph=True: a second derivative asked
+                    raise RuntimeError(
+                        f"rigidsym.kernels.torch.{name}: double backward (create_graph=True) "
+                        "is not supported: the derivative is the generated first-order "
+                        "Jacobian kernel")
                 xs = ctx.saved_tensors
                 return tuple(_arrays.contract(torch, list(grads[:-1]), jac(xs), outs, args,
                                               forward=False))
