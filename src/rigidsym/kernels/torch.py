@@ -171,7 +171,9 @@ class _Space:
 
             @staticmethod
             def backward(ctx, *grads):
-                if torch.is_grad_enabled():  # create_graph=True: a second derivative asked
+                # create_graph=True: a second derivative asked (torch.func's transforms
+                # run backward with grad mode on, on their wrapped tensors: not that)
+                if torch.is_grad_enabled() and not _traced(grads):
                     raise RuntimeError(
                         f"rigidsym.kernels.torch.{name}: double backward (create_graph=True) "
                         "is not supported: the derivative is the generated first-order "
