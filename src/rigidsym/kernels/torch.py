@@ -26,9 +26,10 @@ idiom at their branches.
 Example:
     >>> import torch
     >>> from rigidsym.kernels import torch as rk
-    >>> omega = torch.tensor([[0.0, 0.0, 2.0]], dtype=torch.float64, requires_grad=True)
-    >>> p0, pitch, plucker = rk.instant_screw_axis(omega, torch.zeros(1, 3, dtype=torch.float64),
-    ...                                            torch.tensor([[1.0, 0.0, 1.0]], dtype=torch.float64))
+    >>> f64 = torch.float64
+    >>> omega = torch.tensor([[0.0, 0.0, 2.0]], dtype=f64, requires_grad=True)
+    >>> a, a_dot = torch.zeros(1, 3, dtype=f64), torch.tensor([[1.0, 0.0, 1.0]], dtype=f64)
+    >>> p0, pitch, plucker = rk.instant_screw_axis(omega, a, a_dot)
     >>> pitch.sum().backward()
     >>> omega.grad.tolist()
     [[0.0, 0.0, -0.25]]
