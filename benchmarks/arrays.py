@@ -4,7 +4,7 @@
 checked kernels (``check=False``), float64 and float32, value and value + gradient (of the
 sum of the outputs), for two kernels (one trig kernel, one rational), and writes the table
 between the ``arrays`` markers of benchmarks/RESULTS.md. JAX runs under ``jax.jit``; PyTorch
-eagerly. No GPU in the session that wrote the figures: CPU only.
+eagerly on one thread (as the C kernels' default). No GPU in the session that wrote the figures: CPU only.
 """
 
 # ruff: noqa: B023 - each closure is timed at once, inside its own loop iteration
@@ -45,6 +45,9 @@ def run(sizes) -> list[dict]:
     import torch
 
     jax.config.update("jax_enable_x64", True)
+    # one thread, as the C kernels' default: on a loaded machine torch's OpenMP pool spins
+    # (torch.sin of 1e4 doubles: 15 ms with 2 threads under load, 0.01 ms with 1)
+    torch.set_num_threads(1)
     from rigidsym.kernels import jax as rj
     from rigidsym.kernels import torch as rk
 
