@@ -2,9 +2,10 @@
 
 ``python benchmarks/arrays.py [--sizes 1e4 1e6]``: median wall time of one call of the
 checked kernels (``check=False``), float64 and float32, value and value + gradient (of the
-sum of the outputs), for two kernels (one trig kernel, one rational), and writes the table
-between the ``arrays`` markers of benchmarks/RESULTS.md. JAX runs under ``jax.jit``; PyTorch
-eagerly on one thread (as the C kernels' default). No GPU in the session that wrote the figures: CPU only.
+sum of the outputs), for two kernels (one trig kernel, one rational), and prints the
+Markdown table of the ``arrays`` section of benchmarks/RESULTS.md. JAX runs under
+``jax.jit``; PyTorch eagerly on one thread (as the C kernels' default). No GPU in the
+session that wrote the figures: CPU only.
 """
 
 # ruff: noqa: B023 - each closure is timed at once, inside its own loop iteration

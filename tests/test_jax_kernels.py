@@ -24,7 +24,7 @@ from rigidsym.kernels import jax as rj  # noqa: E402
 ALL = list(K.KERNEL_NAMES)
 #: the default suite runs a few kernels (one per family); every kernel runs as `slow`
 #: (JAX dispatches each operation of an eager call on its own: seconds per kernel on 2 cores)
-FEW = {"N_matrix", "instant_screw_axis", "natural_invariants_from_rotation"}
+FEW = {"instant_screw_axis", "natural_invariants_from_rotation"}
 NAMES = [n if n in FEW else pytest.param(n, marks=pytest.mark.slow) for n in ALL]
 JAC = [n for n in NAMES if (n if isinstance(n, str) else n.values[0]) + "_with_jacobians"
        in K._state.meta()]

@@ -11,7 +11,6 @@ the generated Jacobians with a cotangent or tangent.
 
 from __future__ import annotations
 
-import inspect
 import json
 import math
 import types
@@ -315,20 +314,17 @@ def make_kernel(progs: ArraySpace, call: Callable, name: str, module: str) -> Ca
     keyword), then ``check`` and ``on_singular`` (keyword-only); ``call(name, values,
     check, on_singular)`` evaluates it."""
     meta = progs.meta[name]
-    P = inspect.Parameter
-    sig = inspect.Signature(
-        [P(a["name"], P.POSITIONAL_OR_KEYWORD) for a in meta["args"]]
-        + [P("check", P.KEYWORD_ONLY, default=None),
-           P("on_singular", P.KEYWORD_ONLY, default=None)])
     names = [a["name"] for a in meta["args"]]
-
-    def fn(*args, check=None, on_singular=None, **kwargs):
-        ba = sig.bind(*args, **kwargs)
-        return call(name, tuple(ba.arguments[n] for n in names), check, on_singular)
-
+    params = ", ".join(names)
+    # a def of its own per kernel (not one closure for all): its real signature, and a code
+    # object of its own, so torch.compile's per-code-object recompile limit (8) is not
+    # shared by every kernel a program compiles
+    scope: dict = {"_call": call}
+    exec(f"def {name}({params}, *, check=None, on_singular=None):\n"  # noqa: S102
+         f"    return _call({name!r}, ({params},), check, on_singular)\n", scope)
+    fn = scope[name]
     fn.__name__ = fn.__qualname__ = name
     fn.__module__ = module
-    fn.__signature__ = sig  # type: ignore[attr-defined]
     lib = {"torch": "torch.autograd.Function", "jax": "jax.custom_jvp"}[progs.backend]
     deriv = (f"the generated Jacobian kernel {name}{SUFFIX} ({lib})"
              if progs.has_jacobian(name) else
