@@ -30,7 +30,7 @@ Example:
     >>> g = jax.grad(lambda w: rj.instant_screw_axis(w, jnp.zeros(3),
     ...                                              jnp.array([1.0, 0.0, 1.0]))[1])
     >>> [round(float(x), 6) for x in g(jnp.array([0.0, 0.0, 2.0]))]
-    [0.0, 0.0, -0.25]
+    [0.25, 0.0, -0.25]
 """
 
 from __future__ import annotations

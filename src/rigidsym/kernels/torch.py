@@ -32,7 +32,7 @@ Example:
     >>> p0, pitch, plucker = rk.instant_screw_axis(omega, a, a_dot)
     >>> pitch.sum().backward()
     >>> omega.grad.tolist()
-    [[0.0, 0.0, -0.25]]
+    [[0.25, 0.0, -0.25]]
 """
 
 from __future__ import annotations
