@@ -1,8 +1,9 @@
 """PyTorch and JAX kernels against the NumPy and C kernels (issue 31), on the CPU.
 
 ``python benchmarks/arrays.py [--sizes 1e4 1e6]``: median wall time of one call of the
-checked kernels (``check=False``), float64 and float32, value and value + gradient (of the
-sum of the outputs), for two kernels (one trig kernel, one rational), and prints the
+checked kernels (``check=False``) and of a hand-written formula of the same mathematics
+(what a user would write instead; "hand"), float64 and float32, value and value + gradient
+(of the sum of the outputs), for two kernels (one trig kernel, one rational), and prints the
 Markdown table of the ``arrays`` section of benchmarks/RESULTS.md. JAX runs under
 ``jax.jit``; PyTorch eagerly on one thread (as the C kernels' default). No GPU in the
 session that wrote the figures: CPU only.
@@ -29,6 +30,33 @@ def _inputs(name: str, n: int, dtype) -> list[np.ndarray]:
         e /= np.linalg.norm(e, axis=1, keepdims=True)
         return [e.astype(dtype), rng.uniform(0.3, 2.8, n).astype(dtype)]
     return [rng.standard_normal((n, 3)).astype(dtype) for _ in range(3)]
+
+
+def _hand(xp, name: str):
+    """What a user would write instead, in ``xp`` (torch or jax.numpy): the textbook
+    formula, unrewritten (Rodrigues' formula; the instant screw axis (3.53)-(3.55), (3.70))."""
+    def cross(u, v):
+        return xp.stack([u[..., 1] * v[..., 2] - u[..., 2] * v[..., 1],
+                         u[..., 2] * v[..., 0] - u[..., 0] * v[..., 2],
+                         u[..., 0] * v[..., 1] - u[..., 1] * v[..., 0]], -1)
+
+    if name == "rotation_from_natural_invariants":
+        def rodrigues(e, phi):
+            z = xp.zeros_like(phi)
+            E = xp.stack([xp.stack([z, -e[..., 2], e[..., 1]], -1),
+                          xp.stack([e[..., 2], z, -e[..., 0]], -1),
+                          xp.stack([-e[..., 1], e[..., 0], z], -1)], -2)
+            s, c = xp.sin(phi)[..., None, None], xp.cos(phi)[..., None, None]
+            return xp.eye(3, dtype=e.dtype) + s * E + (1 - c) * (E @ E)
+        return rodrigues
+
+    def screw(omega, a, a_dot):
+        w2 = (omega * omega).sum(-1, keepdims=True)
+        p0 = cross(omega, a_dot - cross(omega, a)) / w2
+        pitch = (a_dot * omega).sum(-1) / w2[..., 0]
+        e = omega / xp.sqrt(w2)
+        return p0, pitch, xp.concatenate([e, cross(p0, e)], -1)
+    return screw
 
 
 def _time(fn, reps: int = 5) -> float:
@@ -71,6 +99,15 @@ def run(sizes) -> list[dict]:
                     out = f(*g, check=False)
                     sum(o.sum() for o in (out if isinstance(out, tuple) else (out,))).backward()
                 row["torch+grad"] = _time(tgrad)
+                h = _hand(torch, name)
+                for got, want in zip(_tup(h(*ts)), _tup(f(*ts, check=False)), strict=True):
+                    torch.testing.assert_close(got, want, rtol=1e-4, atol=1e-4)
+                row["torch hand"] = _time(lambda: h(*ts))
+
+                def hgrad():
+                    g = [t.clone().requires_grad_(True) for t in ts]
+                    sum(o.sum() for o in _tup(h(*g))).backward()
+                row["torch hand+grad"] = _time(hgrad)
                 js = [jax.device_put(x) for x in xs]
                 fj = getattr(rj, name)
                 jv = jax.jit(fj)
@@ -81,13 +118,24 @@ def run(sizes) -> list[dict]:
                     return sum(o.sum() for o in (out if isinstance(out, tuple) else (out,)))
                 jg = jax.jit(jax.value_and_grad(loss, argnums=tuple(range(len(js)))))
                 row["jax+grad"] = _time(lambda: jax.block_until_ready(jg(*js)))
+                hj = jax.jit(_hand(jax.numpy, name))
+                row["jax hand"] = _time(lambda: jax.block_until_ready(hj(*js)))
+                hg = jax.jit(jax.value_and_grad(
+                    lambda *a: sum(o.sum() for o in _tup(_hand(jax.numpy, name)(*a))),
+                    argnums=tuple(range(len(js)))))
+                row["jax hand+grad"] = _time(lambda: jax.block_until_ready(hg(*js)))
                 rows.append(row)
                 print(row, flush=True)
     return rows
 
 
+def _tup(v):
+    return v if isinstance(v, tuple) else (v,)
+
+
 def table(rows) -> str:
-    cols = ["c", "numpy", "torch", "torch+grad", "jax", "jax+grad"]
+    cols = ["c", "numpy", "torch", "torch hand", "torch+grad", "torch hand+grad", "jax",
+            "jax hand", "jax+grad", "jax hand+grad"]
     lines = ["| kernel | dtype | N | " + " | ".join(cols) + " |",
              "|---|---|---:|" + "---:|" * len(cols)]
     for r in rows:
