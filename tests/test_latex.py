@@ -109,3 +109,25 @@ def test_every_book_transcription(eq_id):
         assert t["status"] == "not parsed" and NOT_PARSED[eq_id] in t["construct"], t
     else:
         assert t["status"] == "machine-checked", t
+
+
+def test_a_readers_declaration_gets_the_same_check():
+    from rigidsym.declare import Statement, equation, mat, vec
+    from rigidsym.latex.transcription import transcription_for
+
+    Q, a, b = mat("Q"), vec("a"), vec("b")
+
+    @equation("t29:mine", "a reader's relation", latex=r"\mathbf{b} = \mathbf{Q}\mathbf{a}")
+    def mine():
+        return Statement([Rel(b, Q * a)])
+
+    @equation("t29:slip", "a reader's slip", latex=r"\mathbf{b} = \mathbf{Q}\mathbf{a}")
+    def slip():
+        return Statement([Rel(b, Q.T * a)])  # a transpose the LaTeX does not have
+
+    try:
+        assert transcription_for("t29:mine")["status"] == "machine-checked"
+        assert transcription_for("t29:slip")["status"] == "differs"
+    finally:
+        REGISTRY.pop("t29:mine", None)
+        REGISTRY.pop("t29:slip", None)

@@ -78,8 +78,12 @@ def _transcription(r: Outcome) -> dict | None:
 
     try:
         return transcription_for(r.id)
-    except (LatexError, ValueError, TypeError, KeyError) as exc:  # reported, never fatal
-        return {"status": "not parsed", "construct": type(exc).__name__, "why": str(exc)}
+    except LatexError as exc:
+        return {"status": "not parsed", "construct": exc.construct, "why": str(exc)}
+    except Exception as exc:  # noqa: BLE001 -- a reader's declaration the reader cannot
+        # take (an unknown sympy object in its printed form) is reported, never fatal
+        return {"status": "not parsed", "construct": f"{type(exc).__name__} while reading",
+                "why": str(exc)}
 
 
 def _bounded(x):
