@@ -9,8 +9,6 @@ from importlib import resources
 
 import lark
 
-from rigidsym.latex.table import Glyph
-
 __all__ = ["Relation", "Parsed", "parser"]
 
 
@@ -45,11 +43,11 @@ class Parsed:
         glyphs: the glyph-table rows used, by LaTeX key.
     """
 
-    chains: list[list] = field(default_factory=list)
-    ops: list[list[str]] = field(default_factory=list)
-    relations: list[Relation] = field(default_factory=list)
-    readings: list[str] = field(default_factory=list)
-    glyphs: dict[str, Glyph] = field(default_factory=dict)
+    chains: list = field(default_factory=list)
+    ops: list = field(default_factory=list)
+    relations: list = field(default_factory=list)
+    readings: list = field(default_factory=list)
+    glyphs: dict = field(default_factory=dict)
 
     def pairs(self):
         """Every pair ``(chain, i, j, E_i, E_j)`` with ``i < j`` of a chain: each is a

@@ -56,7 +56,12 @@ def _shape(text: str) -> tuple:
 
 @cache
 def glyph_table() -> tuple[Glyph, ...]:
-    """Every row of ``glyphs.csv`` (read once per process)."""
+    """Every row of the glyph table.
+
+    Returns:
+        The rows of ``glyphs.csv`` as :class:`Glyph` objects, in file order (read once per
+        process).
+    """
     text = resources.files("rigidsym.latex").joinpath("glyphs.csv").read_text("utf-8")
     rows = csv.DictReader(line for line in text.splitlines() if not line.startswith("#"))
     return tuple(Glyph(r["latex"], r["section"], r["name"], _shape(r["shape"]), r["kind"],
@@ -72,8 +77,16 @@ def _index() -> dict:
 
 
 def lookup(latex: str, section: str = "*") -> Glyph | None:
-    """The row for a glyph in a section: the most specific section that lists it
-    (``3.4.2``, then ``3.4``, then ``*``), or ``None``."""
+    """The row for a glyph in a section.
+
+    Args:
+        latex: the glyph's LaTeX key as the parser normalises it (``\\mathbf{d}_{P}``).
+        section: a book (sub)section (``"3.4.2"``) or ``"*"``.
+
+    Returns:
+        The row of the most specific section that lists the glyph (``3.4.2``, then
+        ``3.4``, then ``*``), or ``None``.
+    """
     idx = _index()
     parts = section.split(".") if section != "*" else []
     while parts:

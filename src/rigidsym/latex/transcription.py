@@ -33,15 +33,21 @@ from rigidsym.zero import decide_zero
 __all__ = ["STATUSES", "check_transcription", "notes", "transcription_words",
            "transcription_for"]
 
+#: the values of a transcription record's ``status``
 STATUSES = ("machine-checked", "differs", "not parsed")
 _ANGLES = ("phi", "theta")
 
 
 @cache
 def notes() -> dict:
-    """The per-id notes (``notes.json``): how to read one id's LaTeX (instances of a letter
-    that stands for several quantities, aliases of the printed names, a lost column
-    separator, a construct the reader does not take)."""
+    """The per-id notes of the transcription check.
+
+    Returns:
+        ``notes.json`` as ``{id: note}``: how to read one id's LaTeX (instances of a letter
+        that stands for several quantities, aliases of the printed names, a lost column
+        separator, relations a definition is stated through, a construct the reader does
+        not take).
+    """
     text = resources.files("rigidsym.latex").joinpath("notes.json").read_text("utf-8")
     return {k: v for k, v in json.loads(text).items() if not k.startswith("_")}
 
@@ -307,8 +313,15 @@ def check_transcription(eq, statement) -> dict:
 
 
 def transcription_words(t: dict | None) -> str:
-    """One line for reports: ``transcription machine-checked`` (or what differs / was not
-    parsed)."""
+    """The transcription record in words, for the reports.
+
+    Args:
+        t: a transcription record, or ``None``.
+
+    Returns:
+        ``"transcription machine-checked"``, ``"transcription differs: MEMBER (why)"``,
+        ``"transcription not parsed: CONSTRUCT"``, or ``""`` for ``None``.
+    """
     if not t:
         return ""
     if t["status"] == "machine-checked":
@@ -322,8 +335,17 @@ _DONE: dict[str, dict] = {}
 
 
 def transcription_for(eq_id: str) -> dict | None:
-    """The transcription record of a registered id (computed once per process), or ``None``
-    for an id that is not registered."""
+    """The transcription record of a registered id, through the user cache.
+
+    Args:
+        eq_id: a registered id (book or ``namespace:name``).
+
+    Returns:
+        The record of :func:`check_transcription` (computed once per process and stored in
+        the user cache, keyed by the declaration), or ``None`` for an id that is not
+        registered or gives no LaTeX. LaTeX that cannot be read gives a ``not parsed``
+        record, not an exception.
+    """
     from rigidsym.checking.deciding.registry import REGISTRY
 
     eq = REGISTRY.get(eq_id)
