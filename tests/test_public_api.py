@@ -43,6 +43,11 @@ PUBLIC = {
     # issue 22: the exercises to run, see and vary
     "rigidsym.exercises": ["EXERCISE_IDS", "IllPosed", "Param", "Parameters", "Solution",
                            "figure", "parameters", "solve", "write_notebook"],
+    # issue 29: the reader of the chapter's LaTeX and the transcription check
+    "rigidsym.latex": ["Glyph", "LatexError", "Parsed", "Relation", "glyph_table", "lookup",
+                       "parse_latex"],
+    "rigidsym.latex.transcription": ["STATUSES", "check_transcription", "notes",
+                                     "transcription_for", "transcription_words"],
 }
 
 

@@ -267,3 +267,11 @@ def test_wheel_ships_the_torch_and_jax_programs(wheel):
         got = {n.split("/")[-1] for n in names if n.startswith(f"rigidsym/generated/{backend}/")}
         assert got == numpy_files, backend
     assert "rigidsym/kernels/torch.py" in names and "rigidsym/kernels/jax.py" in names
+
+
+def test_wheel_ships_the_latex_reader(wheel):
+    """Issue 29: the grammar, the glyph table and the per-id notes are package data."""
+    with zipfile.ZipFile(wheel) as z:
+        names = set(z.namelist())
+    for f in ("grammar.lark", "glyphs.csv", "notes.json", "parser.py", "transcription.py"):
+        assert f"rigidsym/latex/{f}" in names, f
