@@ -36,6 +36,7 @@ from rigidsym.checking.deciding.evidence import (
 )
 from rigidsym.checking.deciding.explicit import (
     _EXPLICIT_CACHE,
+    UnknownShape,
     _entries,
     _fmt,
     _rel_str,
@@ -123,8 +124,15 @@ class _RelOutcome:
 def decide_rel(rel: Rel, model: dict, seed: int, st: Statement | None = None) -> _RelOutcome:
     """Decide one relation exactly (shape check first, then the zero test); a
     counterexample is described in the book symbols of ``st`` when it is given."""
-    ls, rs = shape_of(rel.lhs), shape_of(rel.rhs)
+    try:
+        ls, rs = shape_of(rel.lhs), shape_of(rel.rhs)
+    except UnknownShape as exc:  # a guessed shape is never evidence (issue 28)
+        return _RelOutcome(None, "undecided", str(exc), None, rel.label)
     lhs, rhs = explicit(rel.lhs, model), explicit(rel.rhs, model)
+    if ls != rs and shape_of(lhs) == shape_of(rhs):
+        # the printed shapes differ but the values' agree: a shape rule misread a node
+        return _RelOutcome(None, "undecided", f"shape rules disagree with the values: "
+                           f"{ls[0]}x{ls[1]} vs {rs[0]}x{rs[1]} as printed", None, rel.label)
     describe = None
     if st is not None:
         rels = st.printed + st.claims + (st.corrected or [])

@@ -18,6 +18,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from rigidsym._config import BOOK as BOOK_PACKAGE
+from rigidsym.checking.deciding.nodes import UnknownNode, check_side
 
 __all__ = [
     "Rel",
@@ -81,11 +82,22 @@ class Rel:
         lhs: the left-hand side.
         rhs: the right-hand side, of the same shape.
         label: names the member in reports (``"d_P"``, ``"second member"``); optional.
+
+    Raises:
+        BadInput: a side holds a node the engine does not know (the message names it and
+            the word of :mod:`rigidsym.declare` to use; :mod:`.nodes`).
     """
 
     lhs: Any
     rhs: Any
     label: str = ""
+
+    def __post_init__(self):
+        try:
+            object.__setattr__(self, "lhs", check_side(self.lhs, "lhs"))
+            object.__setattr__(self, "rhs", check_side(self.rhs, "rhs"))
+        except UnknownNode as exc:
+            raise BadInput(str(exc)) from None
 
 
 @dataclass
