@@ -11,6 +11,7 @@ from sympy.core.function import AppliedUndef
 from sympy.matrices.expressions.matexpr import MatrixElement
 from sympy.matrices.kind import MatrixKind
 
+from rigidsym.algebra.lie import LieOp
 from rigidsym.algebra.operators import Diff, DiffEntry
 from rigidsym.checking.deciding.registry import Rel
 
@@ -111,6 +112,8 @@ def _mx(x, model) -> sp.ImmutableMatrix:
         return im(_mx(x.arg, model).inv())
     if isinstance(x, Diff):
         return im(sp.Matrix(_mx(x.args[0], model)).diff(_sc(x.args[1], model)))
+    if isinstance(x, LieOp):  # hat, vee, transform, Ad, ad, expm (rigidsym.algebra.lie)
+        return im(x.value(*[_mx(a, model) for a in x.args[:x.operands]]))
     if isinstance(x, sp.BlockMatrix):
         blocks = x.blocks
         rows = [[_mx(blocks[i, j], model) for j in range(blocks.cols)]

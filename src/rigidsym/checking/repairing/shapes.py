@@ -15,7 +15,8 @@ from sympy.core.function import AppliedUndef
 from sympy.matrices.expressions.matexpr import MatrixElement
 from sympy.matrices.expressions.slice import MatrixSlice
 
-from rigidsym.algebra.operators import Cpm, Cross, Det, Vect
+from rigidsym.algebra.lie import LieOp
+from rigidsym.algebra.operators import Cpm, Cross, Det, Diff, Vect
 
 __all__ = ["ShapeError", "RawBlocks", "is_matrix", "children", "node_at", "positions", "shape"]
 
@@ -66,8 +67,10 @@ def _children_rule(cls) -> int:
         return 3
     if issubclass(cls, RawBlocks):
         return 4
-    if issubclass(cls, sp.Pow | sp.MatPow | MatrixElement | MatrixSlice):
+    if issubclass(cls, sp.Pow | sp.MatPow | MatrixElement | MatrixSlice | Diff):
         return 1
+    if issubclass(cls, LieOp):  # the operands; the order flag is no editable child
+        return 5
     if issubclass(cls, _ALL_ARGS):
         return 2
     return 0
@@ -91,6 +94,8 @@ def children(x) -> tuple:
         return tuple(x.blocks)
     if rule == 4:
         return x.args[2:]
+    if rule == 5:
+        return x.args[:x.operands]
     return ()
 
 
@@ -184,6 +189,17 @@ def _shape(x, memo):
         if kids != [(3, 3)]:
             raise ShapeError("the axial vector of a non-3x3 matrix")
         return (3, 1)
+    if isinstance(x, Diff):
+        if kids[0] is None:
+            raise ShapeError("a matrix derivative of a scalar")
+        return kids[0]
+    if isinstance(x, LieOp):
+        if any(k is None for k in kids):
+            raise ShapeError(f"a scalar inside {x.label}")
+        try:
+            return x.shape_of(kids)
+        except ValueError as exc:
+            raise ShapeError(str(exc)) from None
     if any(k is not None for k in kids):
         raise ShapeError(f"a matrix inside {type(x).__name__}")
     return None
