@@ -27,6 +27,7 @@ from fractions import Fraction
 
 from rigidsym.checking.deciding.balls import round_up
 from rigidsym.checking.deciding.bookpoint import describe_point
+from rigidsym.checking.deciding.branches import cases
 from rigidsym.checking.deciding.evidence import (
     NUMERIC_DIGITS,
     NUMERIC_POINTS,
@@ -119,6 +120,8 @@ class _RelOutcome:
     label: str = ""
     #: the residual's ball at the counterexample: (excludes 0, ball text, digits)
     ball: tuple | None = None
+    #: the relation the balls re-check when it is not the printed one (a branch case)
+    evidence: Rel | None = None
 
 
 def decide_rel(rel: Rel, model: dict, seed: int, st: Statement | None = None) -> _RelOutcome:
@@ -154,14 +157,35 @@ def decide_rel(rel: Rel, model: dict, seed: int, st: Statement | None = None) ->
                 continue
         return _RelOutcome(False, "counterexample",
                            f"shape mismatch: {ls[0]}x{ls[1]} vs {rs[0]}x{rs[1]}", ce, rel.label)
+    alts = cases(lhs, rhs)  # acos/atan2 on their principal branches (branches.py)
+    if alts == [(lhs, rhs, lhs, rhs)]:
+        return _decide_case(rel, lhs, rhs, lhs, rhs, seed, describe)
+    outs = [_decide_case(rel, *alt, seed, describe if alt[0] is lhs else None)
+            for alt in alts]
+    for o, alt in zip(outs, alts, strict=True):
+        if o.zero is False:  # the case's relation is the evidence the balls re-check
+            o.evidence = Rel(alt[0], alt[1], rel.label)
+            return o
+    undecided = [o for o in outs if o.zero is None]
+    if undecided:
+        return undecided[0]
+    o = outs[0]
+    o.detail = f"{o.detail} (acos/atan2 on their principal branches, {len(outs)} case(s))"
+    return o
+
+
+def _decide_case(rel, blhs, brhs, lhs, rhs, seed, describe) -> _RelOutcome:
+    """Decide ``lhs = rhs`` (branches resolved); the ball at a counterexample evaluates
+    ``blhs - brhs`` (the same relation, ``acos``/``atan2`` as such)."""
     diff = [a - b for a, b in zip(_entries(lhs), _entries(rhs), strict=True)]
     zr = decide_zero(diff, seed=seed)
     if zr.zero is False:
-        ce, plan, pt = _counterexample(lhs, rhs, zr.witness, seed)
+        extra = [] if blhs is lhs and brhs is rhs else _entries(blhs) + _entries(brhs)
+        ce, plan, pt = _counterexample(lhs, rhs, zr.witness, seed, extra)
         if describe is not None:
             ce.update(describe(plan, pt))
         try:
-            ball = counterexample_ball(lhs, rhs, plan, pt)
+            ball = counterexample_ball(blhs, brhs, plan, pt)
         except Unsupported as exc:
             ball = (False, f"no ball: {exc}", NUMERIC_DIGITS)
         return _RelOutcome(False, "counterexample", zr.detail, ce, rel.label, ball)
@@ -285,7 +309,7 @@ def _check(eq: Equation, t0: float, settings: RepairSettings,
             detail = f"{bad.detail}; {fix.detail}" if fix.holds else fix.detail
             if not fix.holds:
                 verdict = "undecided"
-            bad_rel = (st.printed + st.claims)[outs.index(bad)]
+            bad_rel = bad.evidence or (st.printed + st.claims)[outs.index(bad)]
     rels = backing or [r for r in st.printed if shape_of(r.lhs) == shape_of(r.rhs)]
     verdict, detail, numeric = _numeric(verdict, detail, rels, bool(backing), st.model, seed,
                                         bad_rel if verdict == "does-not-hold" else None,
