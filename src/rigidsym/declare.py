@@ -17,6 +17,11 @@ All of it is re-exported from :mod:`rigidsym` (``from rigidsym import equation, 
   :func:`rotation_from_natural_invariants` (2.49), :func:`rotation_from_euler_rodrigues`,
   :func:`rotation_from_quaternion`, :func:`linear_invariants`,
   :func:`euler_rodrigues_parameters`.
+- Rigid motions (Modern Robotics ch. 3, Murray-Li-Sastry ch. 2; issue 28): :func:`twist`,
+  :func:`wrench`, :func:`hat`, :func:`vee`, :func:`transform`, :func:`transform_inverse`,
+  :func:`Ad`, :func:`ad`, :func:`ad_dual` (6-vector orders named per word, :data:`ORDERS`),
+  :func:`expm`, :func:`diff`, :data:`acos`, :data:`atan2` and ``angle(..., range="[0, pi]")``
+  (see ``docs/rigid-motions.md``).
 """
 
 from __future__ import annotations
@@ -27,6 +32,18 @@ import sympy as sp
 
 from rigidsym.algebra import operators as _operators
 from rigidsym.algebra import symbols as _symbols
+from rigidsym.algebra.lie import (
+    ORDERS,
+    Ad,
+    ad,
+    ad_dual,
+    diff,
+    expm,
+    hat,
+    transform,
+    transform_inverse,
+    vee,
+)
 from rigidsym.algebra.operators import MS, Blocks, Cross, Det, mat, vec
 from rigidsym.algebra.primitives import (
     as_vector,
@@ -47,9 +64,11 @@ from rigidsym.algebra.symbols import (
     rotation,
     scalar,
     symmetric_matrix,
+    twist,
     unit_vector,
     unit_vector4,
     vector,
+    wrench,
 )
 from rigidsym.checking.deciding.registry import Rel, Statement, equation
 
@@ -62,6 +81,9 @@ __all__ = [
     "rotation_from_natural_invariants", "rotation_from_euler_rodrigues",
     "rotation_from_quaternion", "linear_invariants", "euler_rodrigues_parameters",
     "as_vector", "block", "eye3", "cancel_matrix",
+    # the vocabulary of rigid motions (issue 28; rigidsym.algebra.lie)
+    "twist", "wrench", "hat", "vee", "transform", "transform_inverse", "Ad", "ad", "ad_dual",
+    "expm", "diff", "acos", "atan2", "ORDERS",
 ]
 
 #: The time symbol ``t`` (real) of trajectories: atoms made with ``t=TIME`` are functions
@@ -71,6 +93,13 @@ TIME = _symbols.TIME
 I3 = _operators.I3
 #: The book's 3 x 3 zero matrix ``O`` as a matrix expression (``sympy.ZeroMatrix(3, 3)``).
 O3 = _operators.O3
+#: ``acos`` on its principal branch ``[0, pi]`` (sympy's): the zero test rewrites
+#: ``acos(cos b)`` as ``b`` for an angle on ``[0, pi]`` and splits a default angle
+#: (:mod:`rigidsym.checking.deciding.branches`); elsewhere it is undecided, never guessed.
+acos = sp.acos
+#: ``atan2(y, x)`` on its principal branch ``(-pi, pi]`` (sympy's): the zero test rewrites
+#: ``atan2(k sin a, k cos a)`` as ``a`` for a positive constant ``k`` proven exactly.
+atan2 = sp.atan2
 
 
 @dataclass(frozen=True)
