@@ -20,6 +20,7 @@ from rigidsym import (  # noqa: E402  (after the skip)
     BadInput,
     Rel,
     Statement,
+    _kinds,  # noqa: E402
     acos,
     ad,
     ad_dual,
@@ -37,11 +38,10 @@ from rigidsym import (  # noqa: E402  (after the skip)
     transform_inverse,
     twist,
     unit_vector,
-    vee,
     vector,
+    vee,
     wrench,
 )
-from rigidsym import _kinds  # noqa: E402
 from rigidsym.checking.checker import check  # noqa: E402
 from rigidsym.checking.deciding.registry import REGISTRY  # noqa: E402
 
