@@ -77,8 +77,9 @@ def screw(omega, q, h) -> sp.Matrix:
 
 
 def exp_twist(omega, v, theta) -> sp.Matrix:
-    """``exp([S] theta)`` of the screw axis ``S = [omega; v]``, ``|omega| = 1`` (MR (3.88))."""
-    return expm(theta * hat(sp.Matrix.vstack(omega, v)))
+    """``exp([S] theta)`` of the screw axis ``S = [omega; v]``, ``|omega| = 1`` (MR (3.88));
+    the kernel's ``omega`` is validated unit at run time."""
+    return expm(theta * hat(sp.Matrix.vstack(omega, v)), unit_axis=True)
 
 
 def adjoint(Rm, p) -> sp.Matrix:

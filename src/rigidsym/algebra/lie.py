@@ -307,7 +307,8 @@ def split_angle(X) -> tuple:
     """``(theta, K)`` with ``X = theta K``, ``theta`` an angle atom and ``K`` free of it,
     or ``(1, X)`` when no angle factors out."""
     X = sp.Matrix(X)
-    for a in _angle_atoms(X):
+    plain = sorted(X.free_symbols - set(_angle_atoms(X)), key=sp.default_sort_key)
+    for a in _angle_atoms(X) + plain:  # an angle atom first; a kernel's plain symbol next
         K = (X / a).applyfunc(sp.cancel)
         if not K.has(a):
             return a, K
@@ -332,7 +333,7 @@ def is_unit(w) -> bool:
     return False
 
 
-def exp_explicit(X, lin: int = 0, theta=None) -> sp.Matrix:
+def exp_explicit(X, lin: int = 0, theta=None, unit: bool = False) -> sp.Matrix:
     """The exponential of ``theta K`` with a unit axis, exactly.
 
     so(3): ``exp(theta [w]) = 1 + sin(theta) [w] + (1 - cos(theta)) [w]^2`` for
@@ -346,6 +347,8 @@ def exp_explicit(X, lin: int = 0, theta=None) -> sp.Matrix:
             factored out when ``theta`` is ``None``).
         lin: the order flag (unused: se(3) matrices have one layout).
         theta: the angle, when ``X`` is the unit generator ``K`` itself.
+        unit: the caller asserts ``|w| = 1`` (a kernel whose argument is validated unit
+            at run time, ``Arg(..., "unit")``); never in a declaration's model.
 
     Raises:
         ValueError: the axis is not a unit vector by construction (:func:`is_unit`; nor
@@ -356,7 +359,7 @@ def exp_explicit(X, lin: int = 0, theta=None) -> sp.Matrix:
     else:
         K = sp.Matrix(X)
     w = _axial(K[:3, :3])
-    if not is_unit(w):
+    if not (unit or is_unit(w)):
         if K.shape == (4, 4) and all(e == 0 for e in w) and is_unit(K[:3, 3]):
             return _transform(sp.eye(3), K[:3, 3] * theta)
         raise ValueError("expm: the exponent must be theta [w] (or theta [S]) with w a "
@@ -474,7 +477,7 @@ def ad_dual(V, order: str = "angeles"):
     return _lazy_or(AdDual, [V], lin)
 
 
-def expm(X, order: str = "angeles"):
+def expm(X, order: str = "angeles", *, unit_axis: bool = False):
     """The matrix exponential of ``theta [w]`` (so(3), a rotation) or ``theta [S]`` (se(3),
     a transform), in closed form (:func:`exp_explicit`: MR (3.51), (3.88); Angeles (2.49)).
 
@@ -485,6 +488,9 @@ def expm(X, order: str = "angeles"):
     Args:
         X: 3 x 3 or 4 x 4: ``theta * hat(w)`` of book symbols (lazy), or explicit.
         order: unused by the matrix form; accepted for a uniform vocabulary.
+        unit_axis: explicit ``X`` only: the caller asserts ``|w| = 1`` (a kernel's
+            argument of kind ``"unit"``, validated at run time); a declaration's model
+            never needs it (its unit vectors are known by construction).
 
     Raises:
         ValueError: not 3 x 3 or 4 x 4, an unknown ``order``, or (explicit) an axis not
@@ -492,6 +498,8 @@ def expm(X, order: str = "angeles"):
     """
     lin = _order(order)
     Expm.shape_of([_shape(X, "X")])
+    if unit_axis and not is_symbolic(X):
+        return exp_explicit(X, lin, unit=True)
     return _lazy_or(Expm, [X], lin)
 
 
