@@ -201,3 +201,18 @@ def test_atan2_of_a_scaled_sine_and_cosine():
 def test_matrix_functions_are_refused_with_the_word():
     with pytest.raises(BadInput, match="rigidsym.expm"):
         Rel(sp.exp(th * mat("Om")), mat("R"))
+
+
+def test_every_word_prints_in_book_notation_and_mathml():
+    from rigidsym.printing.mathml import latex_to_mathml
+    from rigidsym.printing.notation import latex, text
+
+    R, p, T, V, Om = mat("R"), sp.MatrixSymbol("p", 3, 1), sp.MatrixSymbol("T", 4, 4), \
+        sp.MatrixSymbol("V", 6, 1), mat("Om")
+    want = {hat(V): "[V]", vee(T): "vee(T)", transform(R, p): "T(R, p)",
+            transform_inverse(T): "T⁻¹", Ad(T): "Ad(T)", ad(V): "ad(V)",
+            ad_dual(V): "ad*(V)", expm(th * Om): "exp(rm_th Om)", diff(R, th): "dR/drm_th"}
+    for expr, shown in want.items():
+        assert text(expr) == shown
+        m = latex_to_mathml(latex(expr))
+        assert m.startswith("<math") and "merror" not in m, shown

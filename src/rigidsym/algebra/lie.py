@@ -20,6 +20,7 @@ matrices they return explicit matrices.
 from __future__ import annotations
 
 import sympy as sp
+from sympy.printing.precedence import PRECEDENCE
 
 from rigidsym.algebra.operators import Diff, _explicit, is_symbolic
 from rigidsym.algebra.primitives import cpm, vect
@@ -227,10 +228,10 @@ class TransformInverse(LieOp):
         return _transform_inverse(T)
 
     def _sympystr(self, printer):
-        return f"{printer.parenthesize(self.args[0], 1000)}⁻¹"
+        return f"{printer.parenthesize(self.args[0], PRECEDENCE['Pow'], strict=True)}⁻¹"
 
     def _latex(self, printer):
-        return rf"\left({printer._print(self.args[0])}\right)^{{-1}}"
+        return f"{printer.parenthesize(self.args[0], PRECEDENCE['Pow'], strict=True)}^{{-1}}"
 
 
 class AdT(LieOp):
