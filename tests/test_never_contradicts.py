@@ -128,3 +128,19 @@ def test_true_identities_through_every_node_never_do_not_hold(ops, leaves):
     for k in [k for k in REGISTRY if k.startswith("nc:")]:
         del REGISTRY[k]
     assert _verdict("nc:prop", rels) != "does-not-hold"
+
+
+def test_repairs_are_ranked_as_a_reader_fixes():
+    # Ω = (R − Rᵀ)/sin θ drops a ½ (MR (3.53)): "insert −Ω" (the same equation, moved) and
+    # "a 2 on Ω" are true edits, but the ½ on the formula's side comes first (docs/repairs.md)
+    tp = angle("nc_tp", range="[0, pi]")
+    model = {R: rotation_from_natural_invariants(w, tp), Omega: cpm(w)}
+    equation("nc:half", "nc:half", expected="does-not-hold")(
+        lambda: Statement([Rel(Omega, (R - R.T) / sp.sin(tp))], model))
+    out = check("nc:half")
+    assert out.verdict == "does-not-hold" and out.correction == "found by search"
+    kinds = [r["kinds"] for r in out.repairs]
+    assert kinds[0] == ["scale-term"] and "1/2" in out.repairs[0]["edits"][0], out.repairs[0]
+    # the 2 on Ω (the defined symbol's side) and the moved equation come after
+    assert out.repairs[1]["text"].startswith("⟦2⟧ Ω")
+    assert kinds.index(["insert-term"]) > 1

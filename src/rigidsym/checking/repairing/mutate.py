@@ -49,7 +49,7 @@ __all__ = ["KINDS", "MUTATION_KINDS", "VOCABULARY_VERSION", "Edit", "Pools", "po
            "single_edits", "compatible", "apply_edits", "describe", "mutants"]
 
 #: bumped whenever the vocabulary or its order changes (it joins the verdict cache's key)
-VOCABULARY_VERSION = 1
+VOCABULARY_VERSION = 2  # 2: the found repairs in a reader's order (issue 28 item 4)
 KINDS = ("flip-sign", "drop-term", "insert-term", "scale-term", "coefficient", "transpose",
          "drop-transpose", "transpose-every", "swap-factors", "reverse-product", "sin-cos",
          "replace-symbol", "replace-every", "multiply-factor")
