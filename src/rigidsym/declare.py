@@ -32,8 +32,8 @@ import sympy as sp
 
 from rigidsym.algebra import operators as _operators
 from rigidsym.algebra import symbols as _symbols
-from rigidsym.algebra.lie import (
-    ORDERS,
+from rigidsym.algebra.lie import ORDERS
+from rigidsym.algebra.motions import (
     Ad,
     ad,
     ad_dual,

@@ -1,15 +1,18 @@
-"""What a printed form may be written in: the nodes the engine knows, checked when a
-:class:`~rigidsym.checking.deciding.registry.Rel` is made.
+"""A relation :class:`Rel` and what its sides may be written in: the nodes the engine knows,
+checked when a ``Rel`` is made (:class:`BadInput`, the error of bad user input, lives here
+too; both are re-exported by :mod:`rigidsym.checking.deciding.registry`).
 
 A node the engine does not know would be decided through a guess (sympy calls a
 ``Derivative`` of a 3 x 3 symbol a scalar; an undefined ``f(theta)`` and ``f(phi)`` would
-be one variable): such a node is refused at declaration time with
-``BadInput`` (from ``Rel``) naming it and the vocabulary word
-to use. A ``Derivative`` of a matrix at the top of a side becomes the lazy
+be one variable): such a node is refused at declaration time with ``BadInput`` naming it
+and the vocabulary word to use. A ``Derivative`` of a matrix at the top of a side becomes the lazy
 :class:`~rigidsym.algebra.operators.Diff`, which the engine knows (issue 28).
 """
 
 from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
 
 import sympy as sp
 from sympy.core.function import AppliedUndef
@@ -18,7 +21,7 @@ from sympy.matrices.kind import MatrixKind
 from rigidsym.algebra.operators import Det, Diff, DiffEntry
 from rigidsym.algebra.symbols import TIME, constraint_of
 
-__all__ = ["check_side", "UnknownNode", "WORDS"]
+__all__ = ["BadInput", "Rel", "check_side", "UnknownNode", "WORDS"]
 
 #: sympy functions a printed form may not hold, and the word of ``rigidsym`` to use
 WORDS = {
@@ -101,3 +104,38 @@ def _walk(x, what: str) -> None:
             if not isinstance(y, Det | DiffEntry) and any(_is_matrix_valued(a) for a in y.args):
                 _refuse(what, y, "an operator of rigidsym.declare (trace, Det, expm, ...)")
         stack.extend(y.args)
+
+
+class BadInput(ValueError):
+    """Bad user input: an unknown or malformed id or section, a user module that cannot be
+    loaded (the CLI exits with code 2). A ``ValueError``.
+
+    Args:
+        message: one line naming the input and what was expected.
+    """
+
+
+@dataclass(frozen=True)
+class Rel:
+    """One equality ``lhs = rhs`` to decide (sympy expressions, matrices or matrix expressions).
+
+    Attributes:
+        lhs: the left-hand side.
+        rhs: the right-hand side, of the same shape.
+        label: names the member in reports (``"d_P"``, ``"second member"``); optional.
+
+    Raises:
+        BadInput: a side holds a node the engine does not know (the message names it and
+            the word of :mod:`rigidsym.declare` to use).
+    """
+
+    lhs: Any
+    rhs: Any
+    label: str = ""
+
+    def __post_init__(self):
+        try:
+            object.__setattr__(self, "lhs", check_side(self.lhs, "lhs"))
+            object.__setattr__(self, "rhs", check_side(self.rhs, "rhs"))
+        except UnknownNode as exc:
+            raise BadInput(str(exc)) from None

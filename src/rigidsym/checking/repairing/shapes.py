@@ -177,6 +177,16 @@ def _shape(x, memo):
                 any(len({g[i][j][1] for i in range(r)}) != 1 for j in range(c)):
             raise ShapeError("blocks that do not fit")
         return (sum(row[0][0] for row in g), sum(k[1] for k in g[0]))
+    if isinstance(x, Cross | Cpm | Vect | Diff | LieOp):
+        return _operator_shape(x, kids)
+    if any(k is not None for k in kids):
+        raise ShapeError(f"a matrix inside {type(x).__name__}")
+    return None
+
+
+def _operator_shape(x, kids: list):
+    """The shape of a book operator (cross product, CPM, vect, a derivative, a word of
+    the rigid-motion vocabulary) from its operands'."""
     if isinstance(x, Cross):
         if kids != [(3, 1), (3, 1)]:
             raise ShapeError("a cross product of non-3-vectors")
@@ -193,13 +203,10 @@ def _shape(x, memo):
         if kids[0] is None:
             raise ShapeError("a matrix derivative of a scalar")
         return kids[0]
-    if isinstance(x, LieOp):
-        if any(k is None for k in kids):
-            raise ShapeError(f"a scalar inside {x.label}")
-        try:
-            return x.shape_of(kids)
-        except ValueError as exc:
-            raise ShapeError(str(exc)) from None
-    if any(k is not None for k in kids):
-        raise ShapeError(f"a matrix inside {type(x).__name__}")
-    return None
+    # a word of rigidsym.algebra.lie (hat, vee, transform, Ad, ad, expm)
+    if any(k is None for k in kids):
+        raise ShapeError(f"a scalar inside {x.label}")
+    try:
+        return x.shape_of(kids)
+    except ValueError as exc:
+        raise ShapeError(str(exc)) from None
