@@ -88,7 +88,7 @@ def adjoint(Rm, p) -> sp.Matrix:
 
 
 # ------------------------------------------------------------------ rotations (MR 3.2)
-@equation("mr:rodrigues", "Rodrigues' formula: exp([w] theta) (MR (3.51))", section="so3")
+@equation("mr:rodrigues", "Rodrigues' formula: exp([ω] θ) (MR (3.51))", section="so3")
 def rodrigues() -> Statement:
     return Statement([Rel(R, I3 + sp.sin(theta) * Om + (1 - sp.cos(theta)) * Om**2)], ROT)
 
@@ -99,70 +99,70 @@ def rodrigues_sign() -> Statement:
     return Statement([Rel(R, I3 - sp.sin(theta) * Om + (1 - sp.cos(theta)) * Om**2)], ROT)
 
 
-@equation("mr:exp-inverse", "exp(-[w] theta) = exp([w] theta)^T", section="so3")
+@equation("mr:exp-inverse", "exp(−[ω] θ) = exp([ω] θ)ᵀ", section="so3")
 def exp_inverse() -> Statement:
     return Statement([Rel(expm(-theta * Om), expm(theta * Om).T)], ROT)
 
 
-@equation("mr:axis-fixed", "The axis is fixed: R w = w", section="so3")
+@equation("mr:axis-fixed", "The axis is fixed: R ω = ω", section="so3")
 def axis_fixed() -> Statement:
     return Statement([Rel(R * om, om)], ROT)
 
 
-@equation("mr:det", "det exp([w] theta) = 1 (MLS (2.14))", section="so3")
+@equation("mr:det", "det exp([ω] θ) = 1 (MLS (2.14))", section="so3")
 def det_one() -> Statement:
     return Statement([Rel(Det(R), 1)], ROT)
 
 
-@equation("mr:log-trace", "The log's angle: theta = acos((tr R - 1)/2) (MR (3.54))",
-          section="so3", singular="theta = pi (the axis is not unique)")
+@equation("mr:log-trace", "The log's angle: θ = acos((tr R − 1)/2) (MR (3.54))",
+          section="so3", singular="θ = π (the axis is not unique)")
 def log_trace() -> Statement:
     return Statement([Rel(theta_p, acos((trace(R) - 1) / 2))], ROT_P)
 
 
-@equation("mr:log-axis", "The log's axis: [w] = (R - R^T)/(2 sin theta) (MR (3.53))",
-          section="so3", singular="theta = 0 or pi")
+@equation("mr:log-axis", "The log's axis: [ω] = (R − Rᵀ)/(2 sin θ) (MR (3.53))",
+          section="so3", singular="θ = 0 or π")
 def log_axis() -> Statement:
     return Statement([Rel(Om, (R - R.T) / (2 * sp.sin(theta_p)))], ROT_P)
 
 
-@equation("mr:log-axis-half", "The log's axis with the 1/2 dropped", section="so3",
-          expected="does-not-hold", singular="theta = 0 or pi")
+@equation("mr:log-axis-half", "The log's axis with the ½ dropped", section="so3",
+          expected="does-not-hold", singular="θ = 0 or π")
 def log_axis_half() -> Statement:
     return Statement([Rel(Om, (R - R.T) / sp.sin(theta_p))], ROT_P)
 
 
-@equation("mr:conjugate", "R [a] R^T = [R a] (MR (3.30) property)", section="so3")
+@equation("mr:conjugate", "R [a] Rᵀ = [R a] (MR (3.30) property)", section="so3")
 def conjugate() -> Statement:
     return Statement([Rel(Qs * cpm(a) * Qs.T, cpm(Qs * a))], {Qs: Q1, a: v})
 
 
-@equation("mr:rate", "dR/dtheta = [w] R (MR (3.49))", section="so3")
+@equation("mr:rate", "dR/dθ = [ω] R (MR (3.49))", section="so3")
 def rate() -> Statement:
     return Statement([Rel(diff(R, theta), Om * R), Rel(R.T * diff(R, theta), Om, "body")],
                      ROT)
 
 
 # ------------------------------------------------------------------ transforms (MR 3.3)
-@equation("mr:transform-inverse", "T T^-1 = 1 (MR (3.64))", section="se3")
+@equation("mr:transform-inverse", "T T⁻¹ = 1 (MR (3.64))", section="se3")
 def transform_inv() -> Statement:
     return Statement([Rel(T * transform_inverse(T), I4)], MOTION)
 
 
-@equation("mr:transform-inverse-sign", "T^-1 with +R^T p", section="se3",
+@equation("mr:transform-inverse-sign", "T⁻¹ with +Rᵀ p", section="se3",
           expected="does-not-hold")
 def transform_inv_sign() -> Statement:
     return Statement([Rel(transform(Qs.T, Qs.T * pv), transform_inverse(T))], MOTION)
 
 
-@equation("mr:compose", "T1 T2 = (R1 R2, R1 p2 + p1) (MR (3.63))", section="se3")
+@equation("mr:compose", "T₁ T₂ = (R₁ R₂, R₁ p₂ + p₁) (MR (3.63))", section="se3")
 def compose() -> Statement:
     Qa, Qb, pa, pb = mat("R1"), mat("R2"), vec("p1"), vec("p2")
     return Statement([Rel(T1 * T2, transform(Qa * Qb, Qa * pb + pa))],
                      {**MOTION, Qa: Q1, Qb: Q2, pa: p1, pb: p2})
 
 
-@equation("mr:Ad-conjugation", "[Ad_T V] = T [V] T^-1 (MR (3.83))", section="se3")
+@equation("mr:Ad-conjugation", "[Ad_T V] = T [V] T⁻¹ (MR (3.83))", section="se3")
 def ad_conjugation() -> Statement:
     return Statement([Rel(hat(Ad(T) * V), T * hat(V) * transform_inverse(T))], MOTION)
 
@@ -173,21 +173,21 @@ def ad_product() -> Statement:
     return Statement([Rel(Ad(T1 * T2), Ad(T1) * Ad(T2))], MOTION)
 
 
-@equation("mr:Ad-inverse", "Ad of an inverse: Ad(T^-1) Ad(T) = 1 (MR (3.84))",
+@equation("mr:Ad-inverse", "Ad of an inverse: Ad(T⁻¹) Ad(T) = 1 (MR (3.84))",
           section="se3")
 def ad_inverse() -> Statement:
     return Statement([Rel(Ad(transform_inverse(T)) * Ad(T), I6)], MOTION)
 
 
 # ------------------------------------------------------------------ screws (MR 3.3.2)
-@equation("mr:screw-pitch", "The pitch of a screw axis: h = w . v_S (MR (3.71))",
+@equation("mr:screw-pitch", "The pitch of a screw axis: h = ω·v_S (MR (3.71))",
           section="screws")
 def screw_pitch() -> Statement:
     S = MS("S", 6, 1)
     return Statement([Rel((S[:3, :].T * S[3:, :])[0, 0], h)], {S: screw(w, q, h)})
 
 
-@equation("mr:exp-G", "exp([S] theta) = (exp([w] theta), G(theta) v) (MR (3.88))",
+@equation("mr:exp-G", "exp([S] θ) = (exp([ω] θ), G(θ) v) (MR (3.88))",
           section="screws")
 def exp_g() -> Statement:
     S, vs = MS("S", 6, 1), vec("v")
@@ -205,7 +205,7 @@ def exp_pure_rotation() -> Statement:
 
 
 # ------------------------------------------------------------------ wrenches and brackets
-@equation("mr:wrench-transfer", "Ad_T^T F = [R^T (m - p x f); R^T f] (MR (3.98))",
+@equation("mr:wrench-transfer", "Ad_Tᵀ F = [Rᵀ (m − p × f); Rᵀ f] (MR (3.98))",
           section="wrenches")
 def wrench_transfer() -> Statement:
     m, f = vec("m"), vec("f")
@@ -214,30 +214,30 @@ def wrench_transfer() -> Statement:
                      {**MOTION, m: F1[:3, :], f: F1[3:, :]})
 
 
-@equation("mr:power", "Power is frame-invariant: V^T F = (Ad_T V)^T (Ad_T^-1^T F)",
+@equation("mr:power", "Power is frame-invariant: Vᵀ F = (Ad_T V)ᵀ (Ad_T⁻¹ᵀ F)",
           section="wrenches")
 def power() -> Statement:
     return Statement([Rel(V.T * F, (Ad(T) * V).T * (Ad(transform_inverse(T)).T * F))],
                      MOTION)
 
 
-@equation("mr:bracket", "The Lie bracket: [ad_V] W = vee([V][W] - [W][V]) (MR (8.38))",
+@equation("mr:bracket", "The Lie bracket: [ad_V] W = vee([V][W] − [W][V]) (MR (8.38))",
           section="brackets")
 def bracket() -> Statement:
     return Statement([Rel(ad(V) * W, vee(hat(V) * hat(W) - hat(W) * hat(V)))], MOTION)
 
 
-@equation("mr:bracket-antisymmetric", "[ad_V] W = -[ad_W] V", section="brackets")
+@equation("mr:bracket-antisymmetric", "[ad_V] W = −[ad_W] V", section="brackets")
 def bracket_antisymmetric() -> Statement:
     return Statement([Rel(ad(V) * W, -ad(W) * V)], MOTION)
 
 
-@equation("mr:Ad-ad", "Ad_T [ad_V] Ad_T^-1 = [ad_(Ad_T V)]", section="brackets")
+@equation("mr:Ad-ad", "Ad_T [ad_V] Ad_T⁻¹ = [ad_(Ad_T V)]", section="brackets")
 def ad_of_ad() -> Statement:
     return Statement([Rel(Ad(T) * ad(V) * Ad(transform_inverse(T)), ad(Ad(T) * V))], MOTION)
 
 
-@equation("mr:ad-dual", "The dual bracket: (ad_V W)^T F = -W^T (ad*_V F)",
+@equation("mr:ad-dual", "The dual bracket: (ad_V W)ᵀ F = −Wᵀ (ad*_V F)",
           section="brackets")
 def ad_dual_pairing() -> Statement:
     return Statement([Rel((ad(V) * W).T * F, -(W.T * (ad_dual(V) * F)))], MOTION)

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import importlib.util
 import json
+import re
 from pathlib import Path
 
 import numpy as np
@@ -37,6 +38,22 @@ def test_verify_module_gives_the_declared_verdicts_and_repairs_every_slip(tmp_pa
     assert len(slips) == 3
     for r in slips:  # no corrected= in the module: the repair search supplies one
         assert r["correction"] == "found by search" and r["repairs"], r["id"]
+
+
+def test_the_report_shows_every_form_in_book_notation(tmp_path, capsys):
+    # issue 28's acceptance: no "not shown", no internal name, no ASCII member label
+    assert main(["report", "--module", str(EXAMPLE), "--out", str(tmp_path), "--jobs", "1",
+                 "--no-cache"]) == 0
+    capsys.readouterr()
+    page = (tmp_path / "modern_robotics.html").read_text(encoding="utf-8")
+    text = re.sub(r"<[^>]+>", " ", page)
+    assert "not shown" not in text
+    for internal in ("_neg", "[:3", "3:]", "_alt", "Pluecker", "dtheta", "omega"):
+        assert internal not in text, internal
+    labels = re.findall(r'<span class="label">([^<]*)</span>', page)
+    assert all(label.isalpha() for label in labels), labels  # words, never ASCII formulas
+    # every equation's printed form is shown as MathML (a user id declares no latex=)
+    assert page.count('<p class="meta">As printed:</p>\n<math') == 25
 
 
 @pytest.mark.slow  # generates both kernels (about 5 s on one core) and imports the NumPy

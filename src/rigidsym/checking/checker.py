@@ -45,7 +45,7 @@ from rigidsym.checking.deciding.explicit import (
     explicit,
     shape_of,
 )
-from rigidsym.checking.deciding.records import member_record, model_words
+from rigidsym.checking.deciding.records import member_record, model_words, printed_latex
 from rigidsym.checking.deciding.registry import REGISTRY, Equation, Rel, Statement
 from rigidsym.checking.repairing.correction import RepairSettings, correct
 from rigidsym.zero.decide import Unsupported, decide_zero, make_plan
@@ -317,7 +317,7 @@ def _check(eq: Equation, t0: float, settings: RepairSettings,
     return Outcome(
         id=eq.id, title=eq.title, kind=eq.kind, verdict=verdict, expected=eq.expected,
         method=method if verdict != "undecided" else "undecided",
-        printed_latex=eq.latex,
+        printed_latex=eq.latex or printed_latex(members),
         printed=(_rel_str(st.printed) or "") if expanded else None,
         derived=_derived_str(st) if expanded else None,
         corrected=(_rel_str(st.corrected) or fixed_str) if expanded else None,
