@@ -365,6 +365,11 @@ def _numeric(verdict: str, detail: str, rels: list[Rel], decisive: bool, model: 
                 verdict, detail, ok = _printed_numeric(verdict, detail, numeric, bad_rel, bad,
                                                        model, seed)
                 certified = certified and ok
+        if verdict == "does-not-hold" and not decisive:
+            # no corrected form: the printed form's points say nothing of one (issue 28);
+            # the ball at the counterexample is the certificate
+            numeric["enclosure"] = None
+            certified = bool(bad and bad.ball and bad.ball[0])
         numeric["certified"] = certified and verdict != "undecided"
     except Unsupported as exc:
         verdict, detail = "undecided", f"numeric check impossible: {exc}"
