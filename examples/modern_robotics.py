@@ -35,6 +35,7 @@ from rigidsym import (
     equation,
     expm,
     hat,
+    logm,
     mat,
     rotation,
     trace,
@@ -124,6 +125,13 @@ def log_trace() -> Statement:
           section="so3", singular="θ = 0 or π")
 def log_axis() -> Statement:
     return Statement([Rel(Om, (R - R.T) / (2 * sp.sin(theta_p)))], ROT_P)
+
+
+@equation("mr:logm", "The principal log: log R = [ω] θ (MR (3.53)-(3.54))", section="so3",
+          singular="θ = 0 (0/0) or π (the axis up to sign)")
+def log_principal() -> Statement:
+    # on (-π, π) too: R(θ, ω) = R(-θ, -ω), so the log by |θ| about ±ω is [ω] θ
+    return Statement([Rel(logm(R), theta * Om)], ROT)
 
 
 @equation("mr:log-axis-half", "The log's axis with the ½ dropped", section="so3",

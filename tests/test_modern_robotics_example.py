@@ -53,7 +53,7 @@ def test_the_report_shows_every_form_in_book_notation(tmp_path, capsys):
     labels = re.findall(r'<span class="label">([^<]*)</span>', page)
     assert all(label.isalpha() for label in labels), labels  # words, never ASCII formulas
     # every equation's printed form is shown as MathML (a user id declares no latex=)
-    assert page.count('<p class="meta">As printed:</p>\n<math') == 25
+    assert page.count('<p class="meta">As printed:</p>\n<math') == 26
 
 
 @pytest.mark.slow  # generates both kernels (about 5 s on one core) and imports the NumPy

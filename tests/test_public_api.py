@@ -21,7 +21,7 @@ DECLARE = [
     "unit_vector4", "vec", "vect", "vector",
     # issue 28: the vocabulary of rigid motions
     "twist", "wrench", "hat", "vee", "transform", "transform_inverse", "Ad", "ad", "ad_dual",
-    "expm", "diff", "acos", "atan2", "ORDERS",
+    "expm", "logm", "diff", "acos", "atan2", "ORDERS",
 ]
 KERNELS = [
     "H_matrix", "H_matrix_dot", "H_tilde", "H_tilde_dot", "L_matrix", "L_matrix_dot",

@@ -31,6 +31,7 @@ from rigidsym import (  # noqa: E402  (after the skip)
     equation,
     expm,
     hat,
+    logm,
     mat,
     rotation_from_natural_invariants,
     trace,
@@ -86,6 +87,25 @@ def test_expm_of_se3_is_scipys(k):
     S = sp.Matrix.vstack(w, v)
     T = _num(expm(th * hat(S)), _values(wn, thn, vn))
     np.testing.assert_allclose(T, scipy_linalg.expm(thn * _hat6(np.r_[wn, vn])), atol=1e-12)
+
+
+@pytest.mark.parametrize("k", range(3))
+def test_logm_is_scipys_on_the_principal_branch(k):
+    wn, thn = _unit(), rng.uniform(0.1, 3.0)
+    Rn = scipy_linalg.expm(thn * _hat6(np.r_[wn, 0, 0, 0])[:3, :3])
+    np.testing.assert_allclose(_num(logm(sp.Matrix(Rn)), {}), scipy_linalg.logm(Rn).real,
+                               atol=1e-10)
+
+
+@pytest.mark.usefixtures("_forget")
+def test_logm_of_rodrigues_is_theta_omega_on_either_range():
+    # the log of the rotation by theta about w is theta [w] for theta in (-pi, pi) too:
+    # R(theta, w) = R(-theta, -w), and acos's split covers both cases
+    R, Om = mat("R"), mat("Om")
+    for a in (angle("rm_tl", range="[0, pi]"), th):
+        out = _verdict(f"rm:logm-{a}", [Rel(logm(R), a * Om)],
+                       {R: rotation_from_natural_invariants(w, a), Om: cpm(w)})
+        assert out.verdict == "verified", out.detail
 
 
 def test_expm_of_a_pure_translation_and_a_refused_axis():
@@ -211,7 +231,8 @@ def test_every_word_prints_in_book_notation_and_mathml():
         sp.MatrixSymbol("V", 6, 1), mat("Om")
     want = {hat(V): "[V]", vee(T): "vee(T)", transform(R, p): "T(R, p)",
             transform_inverse(T): "T⁻¹", Ad(T): "Ad(T)", ad(V): "ad(V)",
-            ad_dual(V): "ad*(V)", expm(th * Om): "exp(rm_th Om)", diff(R, th): "dR/drm_th"}
+            ad_dual(V): "ad*(V)", expm(th * Om): "exp(rm_th Om)", diff(R, th): "dR/drm_th",
+            logm(R): "log(R)"}
     for expr, shown in want.items():
         assert text(expr) == shown
         m = latex_to_mathml(latex(expr))

@@ -20,8 +20,8 @@ All of it is re-exported from :mod:`rigidsym` (``from rigidsym import equation, 
 - Rigid motions (Modern Robotics ch. 3, Murray-Li-Sastry ch. 2; issue 28): :func:`twist`,
   :func:`wrench`, :func:`hat`, :func:`vee`, :func:`transform`, :func:`transform_inverse`,
   :func:`Ad`, :func:`ad`, :func:`ad_dual` (6-vector orders named per word, :data:`ORDERS`),
-  :func:`expm`, :func:`diff`, :data:`acos`, :data:`atan2` and ``angle(..., range="[0, pi]")``
-  (see ``docs/rigid-motions.md``).
+  :func:`expm`, :func:`logm`, :func:`diff`, :data:`acos`, :data:`atan2` and
+  ``angle(..., range="[0, pi]")`` (see ``docs/rigid-motions.md``).
 """
 
 from __future__ import annotations
@@ -40,6 +40,7 @@ from rigidsym.algebra.motions import (
     diff,
     expm,
     hat,
+    logm,
     transform,
     transform_inverse,
     vee,
@@ -83,7 +84,7 @@ __all__ = [
     "as_vector", "block", "eye3", "cancel_matrix",
     # the vocabulary of rigid motions (issue 28; rigidsym.algebra.lie)
     "twist", "wrench", "hat", "vee", "transform", "transform_inverse", "Ad", "ad", "ad_dual",
-    "expm", "diff", "acos", "atan2", "ORDERS",
+    "expm", "logm", "diff", "acos", "atan2", "ORDERS",
 ]
 
 #: The time symbol ``t`` (real) of trajectories: atoms made with ``t=TIME`` are functions

@@ -25,7 +25,7 @@ from sympy.printing.precedence import PRECEDENCE
 from rigidsym.algebra.operators import _explicit
 
 __all__ = ["ORDERS", "LieOp", "Hat", "Vee", "Transform", "TransformInverse", "AdT", "AdV",
-           "AdDual", "Expm", "exp_explicit", "is_unit", "split_angle"]
+           "AdDual", "Expm", "Logm", "exp_explicit", "log_explicit", "is_unit", "split_angle"]
 
 #: the twist and wrench orders by name: 0 the angular part first, 1 the linear part first
 ORDERS = {"angeles": 0, "modern-robotics": 0, "featherstone": 0, "pinocchio": 1, "ros": 1}
@@ -277,6 +277,40 @@ class Expm(LieOp):
 
     def _latex(self, printer):
         return rf"e^{{{printer._print(self.args[0])}}}"
+
+
+class Logm(LieOp):
+    """``log(R)`` of a rotation on the principal branch (MR (3.53)-(3.54)):
+    ``theta / (2 sin theta) (R - R^T)`` with ``theta = acos((tr R - 1) / 2)`` in
+    ``[0, pi]``; singular at ``theta = 0`` (``0/0``: the log is ``O``) and at ``theta = pi``
+    (the axis is not unique). See :func:`log_explicit`."""
+    label, tex = "log", r"\log"
+
+    @classmethod
+    def shape_of(cls, shapes):
+        _need(shapes, [((3, 3),)], "logm")
+        return (3, 3)
+
+    def value(self, R):
+        return log_explicit(R)
+
+    def _entry(self, i, j, **kwargs):
+        raise NotImplementedError("logm: its entries exist once the model is substituted")
+
+
+def log_explicit(R) -> sp.Matrix:
+    """``theta / (2 sin theta) (R - R^T)``, ``theta = acos((tr R - 1) / 2)`` (MR (3.53)-(3.54)).
+
+    ``sin theta`` is kept unevaluated (sympy would write ``sqrt(1 - c^2)`` for
+    ``sin(acos(c))``), so that the zero test's principal branch
+    (:mod:`rigidsym.checking.deciding.branches`) makes it ``sin b`` for an angle ``b`` on
+    ``[0, pi]`` with ``cos b = (tr R - 1) / 2``.
+    """
+    R = sp.Matrix(R)
+    theta = sp.acos((R.trace() - 1) / 2)
+    s = sp.sin(theta, evaluate=False)
+    return (R - R.T).applyfunc(lambda e: sp.Mul(theta, e, sp.Pow(2 * s, -1, evaluate=False),
+                                                 evaluate=False))
 
 
 # --------------------------------------------------------------------- the exponential

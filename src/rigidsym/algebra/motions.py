@@ -17,6 +17,7 @@ from rigidsym.algebra.lie import (
     AdV,
     Expm,
     Hat,
+    Logm,
     Transform,
     TransformInverse,
     Vee,
@@ -26,7 +27,7 @@ from rigidsym.algebra.operators import Diff, is_symbolic
 from rigidsym.algebra.primitives import cpm, vect
 
 __all__ = ["hat", "vee", "transform", "transform_inverse", "Ad", "ad", "ad_dual", "expm",
-           "diff"]
+           "logm", "diff"]
 
 
 def _order(order: str) -> int:
@@ -171,6 +172,30 @@ def expm(X, order: str = "angeles", *, unit_axis: bool = False):
     if unit_axis and not is_symbolic(X):
         return exp_explicit(X, lin, unit=True)
     return _lazy_or(Expm, [X], lin)
+
+
+def logm(R):
+    """The principal logarithm of a rotation (MR (3.53)-(3.54), Algorithm of Sec. 3.2.3.3):
+    ``[omega] theta = theta / (2 sin theta) (R - R^T)`` with ``theta = acos((tr R - 1) /
+    2)`` in ``[0, pi]``.
+
+    Singular set: ``theta = 0`` (the formula is ``0/0``; the log is ``O``) and ``theta =
+    pi`` (``sin theta = 0``, the axis is determined only up to sign: MR's other branch).
+    The zero test decides it where ``R``'s model is a rotation by an angle on ``[0, pi]``
+    (``angle(..., range="[0, pi]")``); on the default range it is the log of the rotation
+    by ``|theta|`` about ``sign(theta) omega``, which the split of ``acos`` handles.
+
+    Args:
+        R: 3 x 3 rotation (explicit, or a book symbol: lazy).
+
+    Returns:
+        3 x 3 skew matrix ``[omega] theta``.
+
+    Raises:
+        ValueError: ``R`` is not 3 x 3.
+    """
+    Logm.shape_of([_shape(R, "R")])
+    return _lazy_or(Logm, [R])
 
 
 def diff(X, v):

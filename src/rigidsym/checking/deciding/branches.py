@@ -95,10 +95,25 @@ def cases(lhs, rhs) -> list[tuple]:
                     split.append(a)
     out = []
     for signs in product((1, -1), repeat=len(split)):
-        sub = {}
-        for a, s in zip(split, signs, strict=True):
+        sub, sign = {}, dict(zip(split, signs, strict=True))
+        for a, s in sign.items():
             b = constrained_group("angle_pi", a.name if s > 0 else f"{a.name}_neg")
             sub[a] = s * b
+
+        def exact(e, sub=sub, sign=sign):
+            # acos(cos a) = s a in the case a = s b, replaced before a is (a rebuilt
+            # sin(acos(c)) would turn into sqrt(1 - c^2), which the zero test cannot read)
+            e = e.replace(lambda z: isinstance(z, sp.acos),
+                          lambda z: _split_acos(z, sign))
+            return _resolve(e.xreplace(sub))
+
         subbed = [_apply(x, lambda e, sub=sub: e.xreplace(sub)) for x in (lhs, rhs)]
-        out.append((*subbed, *(_apply(x, _resolve) for x in subbed)))
+        out.append((*subbed, *(_apply(x, exact) for x in (lhs, rhs))))
     return out
+
+
+def _split_acos(z, sign: dict):
+    for a, s in sign.items():
+        if _zero(z.args[0] - sp.cos(a)):
+            return s * a
+    return z
