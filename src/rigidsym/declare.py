@@ -30,9 +30,9 @@ from dataclasses import dataclass
 
 import sympy as sp
 
+from rigidsym.algebra import lie as _lie
 from rigidsym.algebra import operators as _operators
 from rigidsym.algebra import symbols as _symbols
-from rigidsym.algebra.lie import ORDERS
 from rigidsym.algebra.motions import (
     Ad,
     ad,
@@ -94,13 +94,43 @@ TIME = _symbols.TIME
 I3 = _operators.I3
 #: The book's 3 x 3 zero matrix ``O`` as a matrix expression (``sympy.ZeroMatrix(3, 3)``).
 O3 = _operators.O3
-#: ``acos`` on its principal branch ``[0, pi]`` (sympy's): the zero test rewrites
-#: ``acos(cos b)`` as ``b`` for an angle on ``[0, pi]`` and splits a default angle
-#: (:mod:`rigidsym.checking.deciding.branches`); elsewhere it is undecided, never guessed.
-acos = sp.acos
-#: ``atan2(y, x)`` on its principal branch ``(-pi, pi]`` (sympy's): the zero test rewrites
-#: ``atan2(k sin a, k cos a)`` as ``a`` for a positive constant ``k`` proven exactly.
-atan2 = sp.atan2
+#: The orders of twists and wrenches by name (``"angeles"``, ``"modern-robotics"``,
+#: ``"featherstone"``: the angular part first, 0; ``"pinocchio"``, ``"ros"``: the linear
+#: part first, 1), as the words of rigid motions take them (``order=``).
+ORDERS = _lie.ORDERS
+
+
+def acos(x):
+    """``acos(x)`` on its principal branch ``[0, pi]`` (sympy's ``acos``).
+
+    The zero test rewrites ``acos(cos b)`` as ``b`` for an angle on ``[0, pi]``
+    (``angle(..., range="[0, pi]")``) and splits a default angle into ``theta`` and
+    ``-theta`` (``acos(cos theta) = |theta|``); elsewhere it is undecided, never guessed
+    (``docs/rigid-motions.md``). Source: MR (3.54).
+
+    Args:
+        x: a scalar expression.
+
+    Returns:
+        ``sympy.acos(x)`` [rad].
+    """
+    return sp.acos(x)
+
+
+def atan2(y, x):
+    """``atan2(y, x)`` on its principal branch ``(-pi, pi]`` (sympy's ``atan2``).
+
+    The zero test rewrites ``atan2(k sin a, k cos a)`` as ``a`` for an angle ``a`` and a
+    positive constant ``k`` proven exactly (``docs/rigid-motions.md``).
+
+    Args:
+        y: the sine side (a scalar expression).
+        x: the cosine side.
+
+    Returns:
+        ``sympy.atan2(y, x)`` [rad].
+    """
+    return sp.atan2(y, x)
 
 
 @dataclass(frozen=True)

@@ -79,6 +79,13 @@ def vee(X, order: str = "angeles"):
     """``X^vee``, the inverse of :func:`hat`: the axial vector of the skew part of a 3 x 3
     (= ``vect``, Angeles Sec. 2.3.3), the twist ``[w; v]`` of a 4 x 4 (MR (3.85)).
 
+    Args:
+        X: 3 x 3 or 4 x 4 (explicit, or a book symbol).
+        order: the twist's order (:data:`rigidsym.algebra.lie.ORDERS`).
+
+    Returns:
+        3 x 1 or 6 x 1; lazy for a book symbol.
+
     Raises:
         ValueError: ``X`` is neither 3 x 3 nor 4 x 4, or an unknown ``order``.
     """
@@ -92,7 +99,11 @@ def transform(R, p):
     """The homogeneous transform ``[[R, p], [0, 1]]`` (4 x 4; MR (3.62), Angeles (2.80)).
 
     Args:
-        R: 3 x 3 rotation; p: 3 x 1 translation [m].
+        R: 3 x 3 rotation.
+        p: 3 x 1 translation [m].
+
+    Returns:
+        4 x 4; lazy for book symbols.
 
     Raises:
         ValueError: shapes other than 3 x 3 and 3 x 1.
@@ -105,6 +116,12 @@ def transform_inverse(T):
     """``T^-1 = [[R^T, -R^T p], [0, 1]]`` of a homogeneous transform (MR (3.64)); exact for
     a rotation block only (no general matrix inverse).
 
+    Args:
+        T: 4 x 4 homogeneous transform.
+
+    Returns:
+        4 x 4; lazy for a book symbol.
+
     Raises:
         ValueError: ``T`` is not 4 x 4.
     """
@@ -115,6 +132,13 @@ def transform_inverse(T):
 def Ad(T, order: str = "angeles"):
     """``[Ad_T]`` (6 x 6) of ``T = (R, p)``: ``[[R, 0], [[p] R, R]]`` on angular-first
     twists (MR (3.83), MLS (2.58)); wrenches transform by its transpose (MR (3.98)).
+
+    Args:
+        T: 4 x 4 homogeneous transform.
+        order: the twists' order (:data:`rigidsym.algebra.lie.ORDERS`).
+
+    Returns:
+        6 x 6; lazy for a book symbol.
 
     Raises:
         ValueError: ``T`` is not 4 x 4, or an unknown ``order``.
@@ -128,6 +152,13 @@ def ad(V, order: str = "angeles"):
     """``[ad_V]`` (6 x 6) of a twist ``V = [w; v]``: ``[[[w], 0], [[v], [w]]]`` (MR (8.38)):
     ``ad(V1) V2`` is the Lie bracket ``vee([V1] [V2] - [V2] [V1])``.
 
+    Args:
+        V: 6 x 1 twist.
+        order: its order (:data:`rigidsym.algebra.lie.ORDERS`).
+
+    Returns:
+        6 x 6; lazy for a book symbol.
+
     Raises:
         ValueError: ``V`` is not 6 x 1, or an unknown ``order``.
     """
@@ -139,6 +170,13 @@ def ad(V, order: str = "angeles"):
 def ad_dual(V, order: str = "angeles"):
     """``ad*_V = -[ad_V]^T`` (6 x 6), the dual acting on wrenches (Featherstone (2.20),
     ``v x*``); MR's ``[ad_V]^T`` is ``-ad_dual(V)``.
+
+    Args:
+        V: 6 x 1 twist.
+        order: its order (:data:`rigidsym.algebra.lie.ORDERS`).
+
+    Returns:
+        6 x 6; lazy for a book symbol.
 
     Raises:
         ValueError: ``V`` is not 6 x 1, or an unknown ``order``.
@@ -162,6 +200,9 @@ def expm(X, order: str = "angeles", *, unit_axis: bool = False):
         unit_axis: explicit ``X`` only: the caller asserts ``|w| = 1`` (a kernel's
             argument of kind ``"unit"``, validated at run time); a declaration's model
             never needs it (its unit vectors are known by construction).
+
+    Returns:
+        3 x 3 rotation or 4 x 4 transform; lazy for book symbols.
 
     Raises:
         ValueError: not 3 x 3 or 4 x 4, an unknown ``order``, or (explicit) an axis not
@@ -206,6 +247,10 @@ def diff(X, v):
     Args:
         X: a scalar, an explicit matrix or a matrix expression of book symbols.
         v: the variable (a real symbol: an angle, time, a scalar).
+
+    Returns:
+        The derivative, of the shape of ``X``: lazy (``Diff`` or an unevaluated
+        ``Derivative``) where ``X`` holds book symbols.
 
     Raises:
         ValueError: ``v`` is not a symbol.

@@ -233,7 +233,8 @@ def twist(name: str, t: sp.Symbol | None = None) -> sp.Matrix:
     with ``order="pinocchio"`` (the order is the word's, never the vector's).
 
     Args:
-        name: the book name (``"V"``); t: :data:`TIME` or ``None``.
+        name: the book name (``"V"``).
+        t: :data:`TIME` or ``None``.
 
     Returns:
         6 x 1 ``sympy.Matrix`` of real atoms [rad/s; m/s].
@@ -244,6 +245,10 @@ def twist(name: str, t: sp.Symbol | None = None) -> sp.Matrix:
 def wrench(name: str, t: sp.Symbol | None = None) -> sp.Matrix:
     """A free wrench, a 6 x 1 vector ``[n; f]`` (moment first, Angeles' order; see
     :func:`twist` for the order of the words that read it).
+
+    Args:
+        name: the book name (``"F"``).
+        t: :data:`TIME` or ``None``.
 
     Returns:
         6 x 1 ``sympy.Matrix`` of real atoms [N m; N].
