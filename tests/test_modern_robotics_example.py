@@ -88,3 +88,57 @@ def test_the_kernels_compute_what_scipy_computes(tmp_path, capsys):
         P = np.array([[0, -p[k, 2], p[k, 1]], [p[k, 2], 0, -p[k, 0]], [-p[k, 1], p[k, 0], 0]])
         want = np.block([[R[k], np.zeros((3, 3))], [P @ R[k], R[k]]])  # MR (3.83)
         np.testing.assert_allclose(Ad[k], want, atol=1e-12)
+
+
+def _mutants_of_the_example():
+    """One mutant of each kind of every member of the example's verified identities (the
+    mutation test of issue 21, over the rigid-motion words)."""
+    import random
+
+    from rigidsym.checking.deciding.explicit import _seed, shape_of
+    from rigidsym.checking.deciding.registry import Rel
+    from rigidsym.checking.repairing import mutate
+
+    usermodules.load(EXAMPLE)
+    out = []
+    for eq_id in sorted(k for k in REGISTRY if k.startswith("mr:")):
+        if REGISTRY[eq_id].expected != "verified":
+            continue
+        st = REGISTRY[eq_id].build()
+        rels = st.printed + st.claims
+        pl = mutate.pools(rels, st.model)
+        for k, rel in enumerate(rels):
+            rng = random.Random(f"2026:{eq_id}:{k}")
+            for kind in mutate.MUTATION_KINDS:
+                edits = mutate.single_edits(rel, pl, (kind,))
+                rng.shuffle(edits)
+                for e in edits:
+                    try:
+                        lhs, rhs = mutate.apply_edits(rel, (e,), "canonical", pl.keep)
+                    except ValueError:
+                        continue
+                    if shape_of(lhs) == shape_of(rhs):
+                        out.append((f"{eq_id}: {mutate.describe(e)}",
+                                    Rel(lhs, rhs, rel.label), st.model, _seed(eq_id) + k))
+                        break
+    return out
+
+
+@pytest.mark.slow  # every mutant of the example's identities (about 5 s)
+def test_mutants_of_the_example_never_hold_where_a_ball_excludes_zero():
+    from rigidsym.checking.checker import decide_rel
+    from rigidsym.checking.deciding.evidence import numeric_backing
+    from rigidsym.zero.decide import Unsupported
+
+    decided = 0
+    for words, mutant, model, seed in _mutants_of_the_example():
+        try:
+            balls = numeric_backing([mutant], model, seed, points=2)
+        except (Unsupported, ValueError, ArithmeticError):
+            continue
+        if balls.excluded is None:
+            continue
+        out = decide_rel(mutant, model, seed)
+        assert out.zero is not True, f"{words}: holds, yet the ball {balls.excluded} excludes 0"
+        decided += out.zero is False
+    assert decided >= 20
