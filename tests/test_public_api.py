@@ -49,6 +49,26 @@ PUBLIC = {
 }
 
 
+#: issue 31: the differentiable back-ends, importable where their extra is installed
+ARRAY_BACKENDS = ["NonFiniteResultError", "SingularConfigurationError", "euler_angle_rates",
+                  "euler_rate_matrix", "load", *KERNELS]
+EXTRA_PUBLIC = {"rigidsym.kernels.torch": ("torch", ARRAY_BACKENDS),
+                "rigidsym.kernels.jax": ("jax", ARRAY_BACKENDS)}
+
+
+@pytest.mark.extra
+@pytest.mark.parametrize("name", sorted(EXTRA_PUBLIC))
+def test_extra_public_names_are_pinned(name):
+    lib, names = EXTRA_PUBLIC[name]
+    pytest.importorskip(lib, reason=f"{lib} is not installed (the [{lib}] extra)")
+    mod = importlib.import_module(name)
+    assert sorted(mod.__all__) == sorted(names), (
+        f"{name}.__all__ changed: added {sorted(set(mod.__all__) - set(names))}, "
+        f"removed {sorted(set(names) - set(mod.__all__))}; update EXTRA_PUBLIC on purpose")
+    for attr in names:
+        assert callable(getattr(mod, attr)), f"{name}.{attr}"
+
+
 @pytest.mark.parametrize("name", sorted(PUBLIC))
 def test_public_names_are_pinned(name):
     mod = importlib.import_module(name)
