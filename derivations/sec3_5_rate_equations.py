@@ -103,7 +103,7 @@ def trace_of_rotation_rate() -> Statement:
 @equation("3.96e", "Auxiliary matrix B of the rate of N", section="3.5",
           expected="does-not-hold", cause="erratum",
           evidence="4(1 - cos phi) times the upper block of N_dot has coefficients 2(2 + cos "
-                   "phi), -2 cos phi, -2 and a term sin phi [(E w) e^T + e (E w)^T]",
+                   "phi), -2 cos phi, -2 and a term sin phi [(E omega) e^T + e (E omega)^T]",
           latex=r"\begin{aligned} \mathbf{B} &\equiv -2(\mathbf{e} \cdot "
                 r"\boldsymbol{\omega})\mathbf{1} + 2(3 - \cos \phi)(\mathbf{e} \cdot "
                 r"\boldsymbol{\omega})\mathbf{e}\mathbf{e}^T - 2(1 + \sin \phi)"

@@ -19,6 +19,9 @@ DECLARE = [
     "rotation_from_euler_rodrigues", "rotation_from_natural_invariants",
     "rotation_from_quaternion", "scalar", "symmetric_matrix", "trace", "unit_vector",
     "unit_vector4", "vec", "vect", "vector",
+    # issue 28: the vocabulary of rigid motions
+    "twist", "wrench", "hat", "vee", "transform", "transform_inverse", "Ad", "ad", "ad_dual",
+    "expm", "logm", "diff", "acos", "atan2", "ORDERS",
 ]
 KERNELS = [
     "H_matrix", "H_matrix_dot", "H_tilde", "H_tilde_dot", "L_matrix", "L_matrix_dot",

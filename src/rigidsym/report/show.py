@@ -183,8 +183,9 @@ def explain(r: Outcome, rels: dict[str, list[Rel]], where: str, width: int) -> s
         out += _hard_wrap(f"Singular set: {label_text(r.singular)}", width, "")
     if r.model:
         out += _hard_wrap("Model: " + "; ".join(r.model), width, "")
-    if numeric_sentence(r.numeric):
-        out += _hard_wrap(numeric_sentence(r.numeric), width, "")
+    # the record's numeric field: the one bound of every view (floored as in the report)
+    if numeric_sentence(rec["numeric"]):
+        out += _hard_wrap(numeric_sentence(rec["numeric"]), width, "")
     out += _hard_wrap(GLOSSARY_HINT, width, "")
     return "\n".join(out)
 
