@@ -102,6 +102,8 @@ def H_matrix(
         NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
 
     Notes:
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 2 ulp in float64) over 8 regimes (docs/accuracy.md, kernels.accuracy).
+
         Generated; 11 operations; math hash d161921036f1484c.
     """
     return _F.H_matrix(e, phi, out, check, on_singular, threads)
@@ -141,6 +143,8 @@ def H_matrix_dot(
         NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
 
     Notes:
+        Accuracy: error <= 1.12 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 106 ulp in float64) over 9 regimes (docs/accuracy.md, kernels.accuracy).
+
         Generated; 34 operations; math hash 0c036980272247c8.
     """
     return _F.H_matrix_dot(e, phi, omega, out, check, on_singular, threads)
@@ -178,6 +182,8 @@ def H_tilde(
         NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
 
     Notes:
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 2 ulp in float64) over 8 regimes (docs/accuracy.md, kernels.accuracy).
+
         Generated; 11 operations; math hash 394d6fafe3d12373.
     """
     return _F.H_tilde(e, phi, out, check, on_singular, threads)
@@ -217,6 +223,8 @@ def H_tilde_dot(
         NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
 
     Notes:
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 82 ulp in float64) over 9 regimes (docs/accuracy.md, kernels.accuracy).
+
         Generated; 32 operations; math hash a75606877943bdb2.
     """
     return _F.H_tilde_dot(e, phi, omega, out, check, on_singular, threads)
@@ -254,6 +262,8 @@ def L_matrix(
         NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
 
     Notes:
+        Accuracy: error <= 1.85 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 431 ulp in float64) over 8 regimes (docs/accuracy.md, kernels.accuracy).
+
         Generated; 48 operations; math hash ad587ca95a235ac2.
     """
     return _F.L_matrix(e, phi, out, check, on_singular, threads)
@@ -293,6 +303,8 @@ def L_matrix_dot(
         NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
 
     Notes:
+        Accuracy: error <= 1.31 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 381 ulp in float64) over 9 regimes (docs/accuracy.md, kernels.accuracy).
+
         Generated; 98 operations; math hash bc3db842eb2cf774.
     """
     return _F.L_matrix_dot(e, phi, omega, out, check, on_singular, threads)
@@ -332,6 +344,8 @@ def L_tilde(
 
     Notes:
         Singular set: 1 + cos(phi) = 0 (phi = pi).
+
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 3 ulp in float64) over 8 regimes (docs/accuracy.md, kernels.accuracy); singular when 1 + cos(phi) = 0 (phi = pi), flagged where cos(phi/2) == 0 in floating point, never for a float phi (cos(fl(pi)/2) = 6e-17): at phi = fl(pi) the outputs are finite, about 1e16, as exact.
 
         Generated; 10 operations; math hash 224ea51c5b2204c1.
     """
@@ -375,6 +389,8 @@ def L_tilde_dot(
     Notes:
         Singular set: 1 + cos(phi) = 0 (phi = pi).
 
+        Accuracy: error <= 1.52 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 1.5e+03 ulp in float64) over 9 regimes (docs/accuracy.md, kernels.accuracy); singular when 1 + cos(phi) = 0 (phi = pi), flagged where cos(phi/2) == 0 in floating point, never for a float phi: finite at phi = fl(pi).
+
         Generated; 91 operations; math hash 4a1f179ad0d8d060.
     """
     return _F.L_tilde_dot(e, phi, omega, out, check, on_singular, threads)
@@ -414,6 +430,8 @@ def N_matrix(
 
     Notes:
         Singular set: phi = 0 (mod 2 pi): the axis is undefined.
+
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 114 ulp in float64) over 8 regimes (docs/accuracy.md, kernels.accuracy); singular when phi = 0 (mod 2 pi): the axis is undefined, flagged where sin(phi/2) == 0 in floating point: phi == 0 exactly (and abs(phi) < 1e-323); an output overflows (non-finite) where the result exceeds the type, about abs(phi) < 1e-300 x norm(input) in float64.
 
         Generated; 31 operations; math hash 717c2182df7e8788.
     """
@@ -457,6 +475,8 @@ def N_matrix_dot(
     Notes:
         Singular set: phi = 0 (mod 2 pi): the axis is undefined.
 
+        Accuracy: error <= 1.16 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 190 ulp in float64) over 9 regimes (docs/accuracy.md, kernels.accuracy); singular when phi = 0 (mod 2 pi): the axis is undefined, flagged where sin(phi/2) == 0 in floating point: phi == 0 exactly (and abs(phi) < 1e-323); an output overflows (non-finite) where the result exceeds the type, about abs(phi) < 1e-300 x norm(input) in float64.
+
         Generated; 199 operations; math hash a50ef6111f8ca170.
     """
     return _F.N_matrix_dot(e, phi, omega, out, check, on_singular, threads)
@@ -494,6 +514,8 @@ def N_tilde(
         NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
 
     Notes:
+        Accuracy: error <= 1.23 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 4 ulp in float64) over 8 regimes (docs/accuracy.md, kernels.accuracy).
+
         Generated; 13 operations; math hash 27fa6424b1903ca5.
     """
     return _F.N_tilde(e, phi, out, check, on_singular, threads)
@@ -536,6 +558,8 @@ def N_tilde_dot(
     Notes:
         Singular set: phi = 0 (mod 2 pi): the axis, and so its rate, is undefined.
 
+        Accuracy: error <= 1.52 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 146 ulp in float64) over 9 regimes (docs/accuracy.md, kernels.accuracy); singular when phi = 0 (mod 2 pi): the axis, and so its rate, is undefined, flagged where sin(phi/2) == 0 in floating point: phi == 0 exactly (and abs(phi) < 1e-323); an output overflows (non-finite) where the result exceeds the type, about abs(phi) < 1e-300 x norm(input) in float64.
+
         Generated; 79 operations; math hash b1c3eb794fbb8245.
     """
     return _F.N_tilde_dot(e, phi, omega, out, check, on_singular, threads)
@@ -577,6 +601,8 @@ def inertia_at_point(
         NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
 
     Notes:
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 4 ulp in float64) over 2 regimes (docs/accuracy.md, kernels.accuracy).
+
         Generated; 29 operations; math hash 421dca07df5d4b7a.
     """
     return _F.inertia_at_point(I_C, m, c, a, out, check, on_singular, threads)
@@ -618,6 +644,8 @@ def inertia_dyad_at_point(
         NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
 
     Notes:
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 3 ulp in float64) over 2 regimes (docs/accuracy.md, kernels.accuracy).
+
         Generated; 36 operations; math hash 68258707f5bb9e80.
     """
     return _F.inertia_dyad_at_point(I_C, m, c, a, out, check, on_singular, threads)
@@ -664,6 +692,8 @@ def instant_screw_axis(
     Notes:
         Singular set: omega = 0 (pure translation).
 
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 68 ulp in float64) over 3 regimes (docs/accuracy.md, kernels.accuracy); singular when omega = 0 (pure translation), flagged where ||omega||^2 == 0 in floating point: omega == 0; a square underflows to 0 only for ||omega|| < 1.5e-162 (float64), < 1e-19 (float32 arithmetic), which benchmarks/accuracy.py calls below the smallest useful step.
+
         Generated; 56 operations; math hash bbbb3fe59daee446.
     """
     return _F.instant_screw_axis(omega, a, a_dot, out, check, on_singular, threads)
@@ -705,6 +735,8 @@ def kinetic_energy(
         NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
 
     Notes:
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 1 ulp in float64) over 3 regimes (docs/accuracy.md, kernels.accuracy).
+
         Generated; 33 operations; math hash 59e2107c6b1479ae.
     """
     return _F.kinetic_energy(I_C, m, omega, c_dot, out, check, on_singular, threads)
@@ -752,6 +784,8 @@ def moving_frame_acceleration(
         NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
 
     Notes:
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 66 ulp in float64) over 8 regimes (docs/accuracy.md, kernels.accuracy).
+
         Generated; 153 operations; math hash 9ff5554b1ab9fff0.
     """
     return _F.moving_frame_acceleration(o_ddot, Q, omega, omega_dot, rho_M, rho_dot_M, rho_ddot_M, out, check, on_singular, threads)
@@ -794,6 +828,8 @@ def natural_invariants_from_rotation(
         Singular set: phi = 0 (Q = 1): the axis e is undefined.
 
         For an exactly symmetric Q (phi = pi) the sign of e is fixed by the rule: the component of e of largest magnitude is positive (e is taken from the column of the largest diagonal entry of Q); near pi, the skew part of Q fixes the sign, as in Pinocchio's log3.
+
+        Accuracy: error <= 1.22 u (kappa + 1) in float64, <= 1.28 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 1.76e+16 ulp in float64) over 6 regimes (docs/accuracy.md, kernels.accuracy); singular when phi = 0 (Q = 1): the axis e is undefined, flagged where ||vect(Q)||^2 == 0 with tr Q >= 0 (the main build): Q exactly symmetric in floating point, i.e. phi = 0 (Q = 1), or abs(phi) below the rounding of Q (about 1e-16).
 
         Generated; 172 operations; math hash 445339cc0a3a5a8f.
     """
@@ -838,6 +874,8 @@ def newton_euler_wrench(
         NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
 
     Notes:
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 23 ulp in float64) over 3 regimes (docs/accuracy.md, kernels.accuracy).
+
         Generated; 45 operations; math hash a4f13db2095d7265.
     """
     return _F.newton_euler_wrench(I_C, m, omega, omega_dot, c_ddot, out, check, on_singular, threads)
@@ -878,7 +916,9 @@ def plucker_from_points(
     Notes:
         Singular set: p1 = p2.
 
-        Generated; 24 operations; math hash 37ca360961ff48ba.
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 2.79e+14 ulp in float64) over 3 regimes (docs/accuracy.md, kernels.accuracy); singular when p1 = p2, flagged where ||p2 - p1||^2 == 0 in floating point: p1 == p2; a square underflows to 0 only for ||p2 - p1|| < 1.5e-162 (float64), < 1e-19 (float32 arithmetic), which benchmarks/accuracy.py calls below the smallest useful step.
+
+        Generated; 26 operations; math hash 37ca360961ff48ba.
     """
     return _F.plucker_from_points(p1, p2, out, check, on_singular, threads)
 
@@ -917,6 +957,8 @@ def plucker_transfer(
         NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
 
     Notes:
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 10 ulp in float64) over 2 regimes (docs/accuracy.md, kernels.accuracy).
+
         Generated; 15 operations; math hash 69d9b4ff4ea5cbea.
     """
     return _F.plucker_transfer(kappa_A, a, b, out, check, on_singular, threads)
@@ -960,6 +1002,8 @@ def point_acceleration(
         NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
 
     Notes:
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 62 ulp in float64) over 3 regimes (docs/accuracy.md, kernels.accuracy).
+
         Generated; 36 operations; math hash bba0e838d11c478a.
     """
     return _F.point_acceleration(a_ddot, omega, omega_dot, p, a, out, check, on_singular, threads)
@@ -995,6 +1039,8 @@ def rotation_from_euler_rodrigues(
         NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
 
     Notes:
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 140 ulp in float64) over 2 regimes (docs/accuracy.md, kernels.accuracy).
+
         Generated; 33 operations; math hash 59342dd978b76a46.
     """
     return _F.rotation_from_euler_rodrigues(eta, out, check, on_singular, threads)
@@ -1032,6 +1078,8 @@ def rotation_from_natural_invariants(
         NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
 
     Notes:
+        Accuracy: error <= 1.36 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 451 ulp in float64) over 8 regimes (docs/accuracy.md, kernels.accuracy).
+
         Generated; 37 operations; math hash 3a598761ac6bf1a3.
     """
     return _F.rotation_from_natural_invariants(e, phi, out, check, on_singular, threads)
@@ -1075,6 +1123,8 @@ def screw_axis_point(
 
     Notes:
         Singular set: phi = 0 (pure translation).
+
+        Accuracy: error <= 1.53 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 588 ulp in float64) over 9 regimes (docs/accuracy.md, kernels.accuracy); singular when phi = 0 (pure translation), flagged where sin(phi/2) == 0 in floating point: phi == 0 exactly (and abs(phi) < 1e-323); an output overflows (non-finite) where the result exceeds the type, about abs(phi) < 1e-300 x norm(input) in float64.
 
         Generated; 84 operations; math hash e89a638961851614.
     """
@@ -1126,7 +1176,9 @@ def screw_of_displacement(
 
         For an exactly symmetric Q (phi = pi) the sign of e follows natural_invariants_from_rotation's rule (largest-magnitude component positive).
 
-        Generated; 520 operations; math hash 24c2ead304ca194c.
+        Accuracy: error <= 1.53 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 2.01e+08 ulp in float64) over 7 regimes (docs/accuracy.md, kernels.accuracy); singular when phi = 0 (pure translation: no axis, infinite pitch), flagged where ||Q - Q^T||^2 == 0 with tr Q >= 0 (the main build, after the rewrite of 1 - cos phi from the skew part of Q): Q exactly symmetric in floating point, phi below the rounding of Q (about 1e-16 in float64, 6e-8 in float32); before the rewrite 3 - tr Q == 0 flagged up to phi ~ 1.5e-8.
+
+        Generated; 525 operations; math hash 24c2ead304ca194c.
     """
     return _F.screw_of_displacement(Q, a, a_prime, out, check, on_singular, threads)
 
@@ -1165,6 +1217,8 @@ def twist_transfer(
         NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
 
     Notes:
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 6 ulp in float64) over 3 regimes (docs/accuracy.md, kernels.accuracy).
+
         Generated; 15 operations; math hash 0b921c0c211334f5.
     """
     return _F.twist_transfer(t_A, a, p, out, check, on_singular, threads)
@@ -1202,6 +1256,8 @@ def twist_transfer_matrix(
         NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
 
     Notes:
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 1 ulp in float64) over 2 regimes (docs/accuracy.md, kernels.accuracy).
+
         Generated; 6 operations; math hash b790e8d04828afbd.
     """
     return _F.twist_transfer_matrix(a, p, out, check, on_singular, threads)
@@ -1246,6 +1302,8 @@ def wrench_axis(
     Notes:
         Singular set: f = 0 (pure moment).
 
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 8 ulp in float64) over 3 regimes (docs/accuracy.md, kernels.accuracy); singular when f = 0 (pure moment), flagged where ||f||^2 == 0 in floating point: f == 0; a square underflows to 0 only for ||f|| < 1.5e-162 (float64), < 1e-19 (float32 arithmetic), which benchmarks/accuracy.py calls below the smallest useful step.
+
         Generated; 59 operations; math hash 6e28211949601ec4.
     """
     return _F.wrench_axis(w_A, a, out, check, on_singular, threads)
@@ -1285,6 +1343,8 @@ def wrench_transfer(
         NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
 
     Notes:
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 5 ulp in float64) over 3 regimes (docs/accuracy.md, kernels.accuracy).
+
         Generated; 15 operations; math hash 719fe1e42bb6247d.
     """
     return _F.wrench_transfer(w_A, a, p, out, check, on_singular, threads)
@@ -1322,6 +1382,8 @@ def wrench_transfer_matrix(
         NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
 
     Notes:
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 1 ulp in float64) over 2 regimes (docs/accuracy.md, kernels.accuracy).
+
         Generated; 6 operations; math hash d1200d894b2faa3f.
     """
     return _F.wrench_transfer_matrix(a, p, out, check, on_singular, threads)

@@ -9,7 +9,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 from test_float32 import _case
-from test_kernels import PUBLIC, rel_err
+from test_kernels import PUBLIC, rel_err, row_tol
 
 #: skipped without its extra in the README's test command; .ci/run installs it
 pytestmark = pytest.mark.extra
@@ -52,7 +52,8 @@ def test_error_against_50_digits(name, dtype, backend):
     arrays32, ref = _case(name, 50)          # float32 inputs; the reference at those values
     arrays = [a.astype(dtype) for a in arrays32]
     got = _flat(backend(name, arrays), arrays[0].shape[0])
-    err = rel_err(got, ref)
     u = float(np.finfo(dtype).eps)
+    # ON_SO3 kernels (issue 30): the reference at a rounded Q is off by its rounding / sin^2
+    err = rel_err(got, ref) / row_tol(name, ref, 2.0**-24, 16 * u) * (16 * u)
     assert np.isfinite(err).all(), f"{name}: non-finite output"
     assert err.max() <= 16 * u, f"{name} {np.dtype(dtype).name}: {err.max() / u:.2f} u"

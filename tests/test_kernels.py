@@ -31,6 +31,21 @@ AVAILABLE = {k.name: k for k in KERNELS
 PUBLIC = sorted(n for n, k in AVAILABLE.items() if k.public)
 EULER = sorted(n for n, k in AVAILABLE.items() if not k.public)
 ADV_PHI = [1e-12, 1e-8, 1e-4, np.pi - 1e-8]
+#: kernels whose generated formula rests on an identity that holds on SO(3) only (issue 30,
+#: rigidsym.codegen.accurate: 1 - cos phi from the skew part of Q), name -> column of phi in
+#: the flat output. The reference here is the declared formula at the *rounded* Q, off SO(3):
+#: that differs from the problem's answer by the rounding of Q over sin^2(phi) (the loss the
+#: rewrite removed), so its rows get that bound here; tests/test_accuracy.py judges the kernel
+#: at the exact rotation against its condition number (about 1/sin(phi)).
+ON_SO3 = {"screw_of_displacement": 3}
+
+
+def row_tol(name: str, ref: np.ndarray, u: float, tol: float):
+    """``tol``, or per row ``tol + 8 u (1 + 1/sin^2 phi)`` for the kernels of ON_SO3."""
+    if name not in ON_SO3:
+        return tol
+    s2 = np.sin(ref[:, ON_SO3[name]]) ** 2
+    return tol + 8 * u * (1 + 1 / np.maximum(s2, 1e-300))
 
 
 def _unit(rng, n, k=3):
@@ -143,7 +158,7 @@ def test_kernel_matches_declaration_mpmath(name, backend):
     arrays, ref = cached_case(name, 1000, 0)
     got, singular = run(name, arrays, backend)
     assert not singular.any(), f"{name}: singular rows {np.flatnonzero(singular)}"
-    err = rel_err(got, ref)
+    err = rel_err(got, ref) / row_tol(name, ref, 2.0**-53, TOL) * TOL
     worst = int(np.argmax(err))
     assert err.max() <= TOL, f"{name} [{backend}]: max rel. error {err.max():.3g} at row " \
                              f"{worst} ({[a[worst].tolist() for a in arrays]})"

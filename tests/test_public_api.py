@@ -37,8 +37,8 @@ PUBLIC = {
     "rigidsym": ["BadInput", "Result", "Results", "check", "load_module", "verify", *DECLARE],
     "rigidsym.declare": DECLARE,
     "rigidsym.kernels": [
-        "NonFiniteResultError", "SingularConfigurationError", "backend", "batch_function",
-        "build_info",
+        "NonFiniteResultError", "SingularConfigurationError", "accuracy", "backend",
+        "batch_function", "build_info",
         "euler_angle_rates", "euler_rate_matrix", "get_num_threads", "jacobian", "load",
         "set_num_threads", "swap_blocks", "use_backend", *KERNELS],
     "rigidsym.codegen.spec": ["Arg", "Branch", "Kernel", "Out", "input_symbols"],

@@ -13,9 +13,9 @@
  * Singular set: omega = 0 (pure translation)
  *
  * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
- * measured at generation, rigidsym.codegen.float32; error within 0.952 ulp of float32,
+ * measured at generation, rigidsym.codegen.float32; error within 0.998 ulp of float32,
  * normwise, at its points). In double:
- *   x0, x1, x2, x3, x4, x5, x7, x8, x10, x11, x12, x13, x16, x17, x18, x20, x21, x22, x23, x24, x25, x30, x31, x32, x34, x36, x37, x38, x44, x45, x47, x49, x59, x68, x72, x73, x75
+ *   x0, x1, x2, x3, x4, x5, x7, x8, x10, x11, x12, x13, x16, x17, x18, x20, x22, x23, x25, x30, x31, x32, x34, x36, x37, x38, x44, x45, x47, x49, x59, x61, x67, x68, x72, x73, x75
  */
 #ifndef RIGIDSYM_INSTANT_SCREW_AXIS_WITH_JACOBIANS_H
 #define RIGIDSYM_INSTANT_SCREW_AXIS_WITH_JACOBIANS_H
@@ -292,11 +292,11 @@ static inline int rigidsym_instant_screw_axis_with_jacobians_sample_f32(
         const double x18 = -((double)omega_0)*x8 + ((double)omega_2)*x17;
         const float x19 = x18*x5;
         const double x20 = ((double)omega_0)*x12 - ((double)omega_1)*x17;
-        const double x21 = x20*x5;
+        const float x21 = x20*x5;
         const double x22 = ((double)a_dot_0)*((double)omega_0) + ((double)a_dot_1)*((double)omega_1) + ((double)a_dot_2)*((double)omega_2);
         const double x23 = 1.0/sqrt(x4);
-        const double x24 = -((double)omega_1)*x21 + ((double)omega_2)*x18*x5;
-        const double x25 = ((double)omega_0)*x21 - ((double)omega_2)*((double)x14);
+        const float x24 = -omega_1*x21 + omega_2*x18*x5;
+        const double x25 = ((double)omega_0)*((double)x21) - ((double)omega_2)*((double)x14);
         const float x26 = -omega_0*x19 + omega_1*x13*x5;
         const float x27 = a_1*omega_1;
         const float x28 = a_2*omega_2;
@@ -332,13 +332,13 @@ static inline int rigidsym_instant_screw_axis_with_jacobians_sample_f32(
         const float x58 = omega_0*x5;
         const double x59 = x22*x31;
         const float x60 = -x23;
-        const float x61 = 1.0f/(x4*sqrt(x4));
+        const double x61 = 1.0/(x4*sqrt(x4));
         const float x62 = omega_0*x61;
         const float x63 = -omega_1*x62;
         const float x64 = -omega_2*x62;
         const float x65 = omega_1*x61;
         const float x66 = -omega_2*x65;
-        const float x67 = x44*x5;
+        const double x67 = x44*x5;
         const double x68 = x37*x5;
         const float x69 = omega_1*x46;
         const float x70 = omega_2*x39;

@@ -6,7 +6,12 @@
  * template: c_kernel.c.j2
  * math hash: sha256:37b30deacd782c27
  * sympy 1.14.0, rigidsym 0.2.0
- * operations: 137
+ * operations: 102
+ * accuracy rewrite (main): derivatives of the rewritten values: the Jacobian of the declared
+ *     grouping inherits its cancellation; the derivatives of the rewritten values do not;
+ *     worst relative error at 18 measurement points (exact, rounded to float64; some past a
+ *     condition number of 1/u) 6.8e-12 -> 3.0e-16; equal to the declared formula by the zero
+ *     test (exact-cancel)
  */
 #include "plucker_from_points_with_jacobians.h"
 

@@ -6,8 +6,14 @@
  * template: c_kernel.h.j2
  * math hash: sha256:24c2ead304ca194c
  * sympy 1.14.0, rigidsym 0.2.0
- * operations: 520
+ * operations: 525
  * branches: near_pi_0, near_pi_1, near_pi_2, main
+ * accuracy rewrite (main): 1 - cos(phi) from the skew part of Q: 3 - tr Q cancels as phi -> 0
+ *     and the rounding of the diagonal of Q is relative 1/phi^2 there; the skew part keeps
+ *     relative accuracy 1/phi, the condition of the problem (valid where 1 + tr Q does not
+ *     cancel: cos phi > -1/2); worst relative error at 26 measurement points (exact, rounded
+ *     to float64; some past a condition number of 1/u) a singular flag -> 8.2e-02; equal to
+ *     the declared formula by the zero test (exact-cancel)
  *
  * Screw of a finite displacement: axis, angle, axis point, pitch, Plücker array.
  * (e, phi) from Q as natural_invariants_from_rotation; p0 = (Q - 1)^T (Q a - a') / ((1 - Q_00) + (1 - Q_11) + (1 - Q_22)); pitch = e^T (a' - a) / phi; kappa = [e; p0 x e]
@@ -19,7 +25,7 @@
  *   branch 1: x16, x37
  *   branch 2: x31, x33, x34, x36
  *   branch 3: x38
- *   branch 4: x6, x7, x8, x12, x14, x16, x19, x23, x24, x27, pitch[0]
+ *   branch 4: x6, x7, x8, x12, x14, x16, x18, x19, x20, x21, x22, x23, x27, pitch[0]
  */
 #ifndef RIGIDSYM_SCREW_OF_DISPLACEMENT_H
 #define RIGIDSYM_SCREW_OF_DISPLACEMENT_H
@@ -260,16 +266,16 @@ static inline int rigidsym_screw_of_displacement_sample(
         const double x14 = Q_10*a_0 + Q_11*a_1 + Q_12*a_2 + x13;
         const double x15 = -a_prime_2;
         const double x16 = Q_20*a_0 + Q_21*a_1 + Q_22*a_2 + x15;
-        const double x17 = Q_00 - 1.0;
-        const double x18 = -a_prime_0;
-        const double x19 = Q_00*a_0 + Q_01*a_1 + Q_02*a_2 + x18;
-        const double x20 = Q_10*x14 + Q_20*x16 + x17*x19;
-        const double x21 = Q_11 - 1.0;
-        const double x22 = Q_22 - 1.0;
-        const double x23 = -(x17) - (x21) - (x22);
-        const double x24 = 1.0/x23;
-        const double x25 = Q_01*x19 + Q_21*x16 + x14*x21;
-        const double x26 = Q_02*x19 + Q_12*x14 + x16*x22;
+        const double x17 = -a_prime_0;
+        const double x18 = Q_00*a_0 + Q_01*a_1 + Q_02*a_2 + x17;
+        const double x19 = ((-Q_01 + Q_10)*(-Q_01 + Q_10)) + ((Q_02 - Q_20)*(Q_02 - Q_20)) + ((-Q_12 + Q_21)*(-Q_12 + Q_21));
+        const double x20 = 1.0/x19;
+        const double x21 = Q_00 + Q_11 + Q_22 + 1.0;
+        const double x22 = x20*x21;
+        const double x23 = x22*(Q_10*x14 + Q_20*x16 + x18*(Q_00 - 1.0));
+        const double x24 = x22*(Q_01*x18 + Q_21*x16 + x14*(Q_11 - 1.0));
+        const double x25 = Q_02*x18 + Q_12*x14 + x16*(Q_22 - 1.0);
+        const double x26 = x22*x25;
         const double x27 = 1.0/x6;
         const double x28 = x2*x27 + x27*x4 + x27*x5;
         const double x29 = 1.0/sqrt(x28);
@@ -280,23 +286,23 @@ static inline int rigidsym_screw_of_displacement_sample(
         out_e[1] = x10;
         out_e[2] = x11;
         out_phi[0] = x12;
-        out_p0[0] = x20*x24;
-        out_p0[1] = x24*x25;
-        out_p0[2] = x24*x26;
-        out_pitch[0] = (x10*(-a_1 - x13) + x11*(-a_2 - x15) + x9*(-a_0 - x18))/x12;
+        out_p0[0] = x23;
+        out_p0[1] = x24;
+        out_p0[2] = x26;
+        out_pitch[0] = (x10*(-a_1 - x13) + x11*(-a_2 - x15) + x9*(-a_0 - x17))/x12;
         out_plucker[0] = x30;
         out_plucker[1] = x31;
         out_plucker[2] = x32;
-        out_plucker[3] = x24*x25*x32 - x24*x26*x31;
-        out_plucker[4] = -x20*x24*x32 + x24*x26*x30;
-        out_plucker[5] = x20*x24*x31 - x24*x25*x30;
+        out_plucker[3] = x24*x32 - x26*x31;
+        out_plucker[4] = x0*x20*x21*x25*x29*x8 - x23*x32;
+        out_plucker[5] = x23*x31 - x24*x30;
         singular |= (x28) == 0.0;
+        singular |= (x19) == 0.0;
         singular |= (x6) == 0.0;
-        singular |= (x23) == 0.0;
         singular |= (x12) == 0.0;
         /* quantities that can be non-finite for finite inputs (divisions, roots):
          * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
-        const double finite = ((((x7 - x7) + (x8 - x8)) + ((x24 - x24) + ((x27 - x27) + (x29 - x29)))) + (((out_pitch[0] - out_pitch[0]) + (x6 - x6)) + ((x23 - x23) + ((x28 - x28) + (x12 - x12)))));
+        const double finite = ((((x7 - x7) + (x8 - x8)) + ((x20 - x20) + ((x27 - x27) + (x29 - x29)))) + (((out_pitch[0] - out_pitch[0]) + (x6 - x6)) + ((x19 - x19) + ((x28 - x28) + (x12 - x12)))));
         singular |= finite != finite;
     }
     return singular;
@@ -529,16 +535,16 @@ static inline int rigidsym_screw_of_displacement_sample_f32(
         const double x14 = ((double)Q_10)*((double)a_0) + ((double)Q_11)*((double)a_1) + ((double)Q_12)*((double)a_2) + ((double)x13);
         const float x15 = -a_prime_2;
         const double x16 = ((double)Q_20)*((double)a_0) + ((double)Q_21)*((double)a_1) + ((double)Q_22)*((double)a_2) + ((double)x15);
-        const float x17 = Q_00 - 1.0f;
-        const float x18 = -a_prime_0;
-        const double x19 = ((double)Q_00)*((double)a_0) + ((double)Q_01)*((double)a_1) + ((double)Q_02)*((double)a_2) + ((double)x18);
-        const float x20 = Q_10*x14 + Q_20*x16 + x17*x19;
-        const float x21 = Q_11 - 1.0f;
-        const float x22 = Q_22 - 1.0f;
-        const double x23 = -(((double)x17)) - (((double)x21)) - (((double)x22));
-        const double x24 = 1.0/x23;
-        const float x25 = Q_01*x19 + Q_21*x16 + x14*x21;
-        const float x26 = Q_02*x19 + Q_12*x14 + x16*x22;
+        const float x17 = -a_prime_0;
+        const double x18 = ((double)Q_00)*((double)a_0) + ((double)Q_01)*((double)a_1) + ((double)Q_02)*((double)a_2) + ((double)x17);
+        const double x19 = ((-((double)Q_01) + ((double)Q_10))*(-((double)Q_01) + ((double)Q_10))) + ((((double)Q_02) - ((double)Q_20))*(((double)Q_02) - ((double)Q_20))) + ((-((double)Q_12) + ((double)Q_21))*(-((double)Q_12) + ((double)Q_21)));
+        const double x20 = 1.0/x19;
+        const double x21 = ((double)Q_00) + ((double)Q_11) + ((double)Q_22) + 1.0;
+        const double x22 = x20*x21;
+        const double x23 = x22*(((double)Q_10)*x14 + ((double)Q_20)*x16 + x18*(((double)Q_00) - 1.0));
+        const float x24 = x22*(Q_01*x18 + Q_21*x16 + x14*(Q_11 - 1.0f));
+        const float x25 = Q_02*x18 + Q_12*x14 + x16*(Q_22 - 1.0f);
+        const float x26 = x22*x25;
         const double x27 = 1.0/x6;
         const float x28 = x2*x27 + x27*x4 + x27*x5;
         const float x29 = 1.0f/sqrtf(x28);
@@ -549,21 +555,21 @@ static inline int rigidsym_screw_of_displacement_sample_f32(
         out_e[1] = x10;
         out_e[2] = x11;
         out_phi[0] = x12;
-        out_p0[0] = x20*x24;
-        out_p0[1] = x24*x25;
-        out_p0[2] = x24*x26;
-        out_pitch[0] = (((double)x10)*(-((double)a_1) - ((double)x13)) + ((double)x11)*(-((double)a_2) - ((double)x15)) + ((double)x9)*(-((double)a_0) - ((double)x18)))/x12;
+        out_p0[0] = x23;
+        out_p0[1] = x24;
+        out_p0[2] = x26;
+        out_pitch[0] = (((double)x10)*(-((double)a_1) - ((double)x13)) + ((double)x11)*(-((double)a_2) - ((double)x15)) + ((double)x9)*(-((double)a_0) - ((double)x17)))/x12;
         out_plucker[0] = x30;
         out_plucker[1] = x31;
         out_plucker[2] = x32;
-        out_plucker[3] = x24*x25*x32 - x24*x26*x31;
-        out_plucker[4] = -x20*x24*x32 + x24*x26*x30;
-        out_plucker[5] = x20*x24*x31 - x24*x25*x30;
+        out_plucker[3] = x24*x32 - x26*x31;
+        out_plucker[4] = x0*x20*x21*x25*x29*x8 - x23*x32;
+        out_plucker[5] = x23*x31 - x24*x30;
         singular |= (((double)x28)) == 0.0;
+        singular |= (x19) == 0.0;
         singular |= (x6) == 0.0;
-        singular |= (x23) == 0.0;
         singular |= (x12) == 0.0;
-        const double finite = ((((x7 - x7) + (x8 - x8)) + ((x24 - x24) + ((x27 - x27) + (x29 - x29)))) + (((out_pitch[0] - out_pitch[0]) + (x6 - x6)) + ((x23 - x23) + ((x28 - x28) + (x12 - x12)))));
+        const double finite = ((((x7 - x7) + (x8 - x8)) + ((x20 - x20) + ((x27 - x27) + (x29 - x29)))) + (((out_pitch[0] - out_pitch[0]) + (x6 - x6)) + ((x19 - x19) + ((x28 - x28) + (x12 - x12)))));
         singular |= finite != finite;
     }
     return singular;

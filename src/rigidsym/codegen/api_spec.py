@@ -14,7 +14,7 @@ from dataclasses import dataclass
 
 from rigidsym import _kinds
 
-__all__ = ["Keyword", "COMMON_KEYWORDS", "render_api", "docstring"]
+__all__ = ["Keyword", "COMMON_KEYWORDS", "render_api", "docstring", "accuracy_line"]
 
 
 @dataclass(frozen=True)
@@ -93,8 +93,26 @@ def docstring(meta: dict) -> str:
         lines += [f"    Singular set: {meta['singular']}.", ""]
     if meta["notes"]:
         lines += [f"    {meta['notes']}", ""]
+    if meta.get("accuracy"):
+        lines += [f"    {accuracy_line(meta)}", ""]
     lines += [f"    Generated; {meta['ops']} operations; math hash {meta['hash']}."]
     return "\n".join(lines)
+
+
+def accuracy_line(meta: dict) -> str:
+    """The docstring's accuracy line from the measured row (``kernels.accuracy``)."""
+    a = meta["accuracy"]
+    f64, f32 = a.get("float64", {}), a.get("float32", {})
+    line = (f"Accuracy: error <= {max(f64.get('bound', 0), 1):.3g} u (kappa + 1) in float64, "
+            f"<= {max(f32.get('bound', 0), 1):.3g} u (kappa + 1) in float32 (u the unit "
+            f"roundoff, kappa the condition number; worst {f64.get('ulps', 0):.3g} ulp in "
+            f"float64) over {len(a.get('regimes', []))} regimes (docs/accuracy.md, "
+            "kernels.accuracy)")
+    if meta["singular"]:
+        line += f"; singular when {meta['singular']}"
+        if a.get("threshold"):
+            line += f", flagged where {a['threshold']}"
+    return line + "."
 
 
 def render_api(env, metas: list[dict], versions: dict) -> str:

@@ -80,8 +80,10 @@ def sample_inputs(args, n: int = N_RANDOM, seed: int = 20) -> dict[str, np.ndarr
         else:
             v = rng.standard_normal((m,) + tuple(a.shape))
             if a.name == "omega" and "omega_dot" not in names and "phi" not in names:
-                v[n:n + 3] *= np.array([1e-12, 1e-6, 1e-3])[:, None] / np.linalg.norm(
-                    v[n:n + 3], axis=1, keepdims=True)
+                # down to 1e-18 (issue 30): a Jacobian's ||omega||^-3 overflows float32
+                # below 7e-13, so the plan must see such omegas to keep that node in double
+                v[n:n + 5] *= np.array([1e-12, 1e-6, 1e-3, 1e-15, 1e-18])[:, None] / \
+                    np.linalg.norm(v[n:n + 5], axis=1, keepdims=True)
             if a.name == "angles":   # gimbal lock of either family, as close as float32 gets
                 v[n:n + 8, 1] = [1e-9, np.pi / 2 - 1e-9, -1e-9, np.pi / 2 + 1e-9, 1e-6,
                                  np.pi / 2 - 1e-3, 1e-2, 1.5]

@@ -14,6 +14,7 @@ import importlib
 import json
 import math
 import os
+import textwrap
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -24,6 +25,7 @@ import rigidsym
 from rigidsym import _kinds
 from rigidsym._config import KERNEL_SPEC as BOOK_ORIGIN
 from rigidsym._config import generated_dir
+from rigidsym.codegen.accurate import Chosen, improve
 from rigidsym.codegen.api_spec import render_api
 from rigidsym.codegen.arrays import render_array_kernels
 from rigidsym.codegen.cprogram import TRIG_BLOCK as TRIG_BLOCK
@@ -70,6 +72,7 @@ class KernelCode:
     hash: str
     ops: int
     inputs: list = field(default_factory=list)   # [(arg, [symbols])]
+    rewrites: list = field(default_factory=list)  # accuracy rewrites kept (codegen.accurate)
     plan32: dict = field(default_factory=dict)   # float32 precision plans (codegen.float32)
 
 
@@ -108,16 +111,25 @@ def compile_kernel(kernel: Kernel) -> KernelCode:
               if (k := _kinds.for_spec(a.kind, a.shape)) is not None and k.half_angle]
     parts: list = []
     variants = []
+    chosen: list[Chosen] = []
+    sflat = [s for _, ss in flat_symbols(kernel) for s in ss]
+    before: list = []     # float predicates of the branches tried before (accuracy points)
     for br in kernel.branches:
         cond = br.when(**syms)
         flat = _flatten(kernel, br.build(**syms))
         parts += [cond, *flat]
+        fcond = sp.lambdify(sflat, cond, modules="math")
+        flat, got = improve(kernel, br.name, flat, syms, sflat, list(before), fcond)
+        before.append(fcond)
+        chosen += got
         variants.append(Variant(br.name, compile_program(flat, angles), cond))
     flat = _flatten(kernel, kernel.build(**syms))
     parts += flat
+    flat, got = improve(kernel, "main", flat, syms, sflat, before)
+    chosen += got
     variants.append(Variant("main", compile_program(flat, angles), None))
     ops = sum(v.program.ops for v in variants)
-    kc = KernelCode(kernel, variants, math_hash(parts), ops, flat_symbols(kernel))
+    kc = KernelCode(kernel, variants, math_hash(parts), ops, flat_symbols(kernel), chosen)
     kc.plan32 = plan_kernel(kernel, variants, _trig_split(kc))
     return kc
 
@@ -127,7 +139,7 @@ _TODO: list = []
 
 def _compile_index(i: int):
     kc = compile_kernel(_TODO[i])
-    return kc.variants, kc.hash, kc.ops, kc.inputs, kc.plan32
+    return kc.variants, kc.hash, kc.ops, kc.inputs, kc.rewrites, kc.plan32
 
 
 def _compile_all(todo: list) -> list[KernelCode]:
@@ -170,6 +182,8 @@ def _header(kc: KernelCode, template: str, origin: str = BOOK_ORIGIN) -> list[st
     ]
     if k.branches:
         lines.append("branches: " + ", ".join(b.name for b in k.branches) + ", main")
+    lines += [w for c in kc.rewrites
+              for w in textwrap.wrap(c.line(), 92, subsequent_indent="    ")]
     return lines
 
 
@@ -242,6 +256,7 @@ def generate(kernels=None, origin: str = BOOK_ORIGIN) -> GenerationResult:
     ``kernels`` defaults to the book's; a user module's kernels come with ``origin`` (the
     module's name, written in the headers) and sources already named, not imported here.
     """
+    kernels_are_book = kernels is None
     if kernels is None:  # by name: the generator imports no book
         kernels = importlib.import_module(BOOK_ORIGIN).KERNELS
     env = _env()
@@ -252,6 +267,10 @@ def generate(kernels=None, origin: str = BOOK_ORIGIN) -> GenerationResult:
         done.append(kc)
         files.update(_render_kernel(env, kc, origin))
     metas = [_meta(kc) for kc in done]
+    if kernels_are_book:
+        acc = _accuracy_data()
+        for m in metas:
+            m["accuracy"] = acc.get(m["name"])
     ver = {"sympy": sp.__version__, "rigidsym": rigidsym.__version__}
     files["kernels.json"] = json.dumps({"generator": ver, "kernels": metas},
                                        indent=1, sort_keys=True) + "\n"
@@ -263,6 +282,18 @@ def generate(kernels=None, origin: str = BOOK_ORIGIN) -> GenerationResult:
         files[path] = env.get_template(t).render(kernels=metas, template=t, **ver)
     files.update(_render_extension(env, metas, ver))
     return GenerationResult(dict(sorted(files.items())), done)
+
+
+#: the measured accuracy of the book's kernels (benchmarks/accuracy.py --data), shipped in
+#: kernels.json for ``kernels.accuracy``; beside the kernel declarations, loaded by name
+ACCURACY_DATA = "kernels_accuracy.json"
+
+
+def _accuracy_data() -> dict:
+    from importlib.resources import files
+
+    path = files(BOOK_ORIGIN.rsplit(".", 1)[0]).joinpath(ACCURACY_DATA)
+    return json.loads(path.read_text(encoding="utf-8")) if path.is_file() else {}
 
 
 def _render_extension(env, metas: list[dict], ver: dict) -> dict[str, str]:

@@ -59,7 +59,7 @@ from rigidsym.kernels._scale import set_num_threads as set_num_threads
 
 __all__ = ["SingularConfigurationError", "NonFiniteResultError", "use_backend", "backend",
            "swap_blocks", "load", "batch_function", "euler_rate_matrix", "euler_angle_rates",
-           "jacobian", "set_num_threads", "get_num_threads", "build_info"]
+           "jacobian", "set_num_threads", "get_num_threads", "build_info", "accuracy"]
 __all__ += _KERNELS
 
 #: names of the public generated kernels
@@ -237,6 +237,41 @@ def batch_function(name: str, backend_name: str | None = None,
         True
     """
     return _state.builtin().batch_function(name, backend_name, threads, dtype)
+
+
+def accuracy(name: str) -> dict:
+    """The measured accuracy of a package kernel (issue 30; ``docs/accuracy.md``).
+
+    Read from the data shipped with the generated kernels (``kernels.json``, written by
+    ``rigidsym generate`` from ``benchmarks/accuracy.py --data``): exact points over the
+    kernel's regimes (random; angles to 0 and pi; rotations to 1 and a half turn; norms to
+    0; gimbal lock; scales 1e-6..1e6; unit inputs a few ulps off), rounded to the type, against
+    the declared formula in ``arb`` ball arithmetic, C and NumPy.
+
+    Args:
+        name: a kernel's name: public, ``<name>_with_jacobians`` or an Euler-angle variant
+            (``euler_angle_rates_zyz_body``).
+
+    Returns:
+        dict: a new one each call, with ``"float64"`` and ``"float32"``, each ``{"bound",
+        "regime", "kappa", "err", "ulps", "flagged", "beyond", "spurious"}``, where the
+        normwise relative error of every output is at most ``bound * u * (kappa + 1)``
+        (``u`` the unit roundoff, ``kappa`` the condition number on the inputs' tangent
+        space), attained in ``regime`` (``kappa`` and ``err`` there), ``ulps`` the worst
+        componentwise error; ``regimes`` swept; ``accurate`` (every regime within
+        ``8 u (kappa + 1)``); ``singular`` (the set) and ``threshold`` (where a sample is
+        flagged, in units of the input).
+
+    Raises:
+        KeyError: no kernel ``name``, or one without measured accuracy.
+    """
+    meta = _state.meta()
+    if name not in meta:
+        raise KeyError(f"name: no kernel {name!r} (kernels.KERNEL_NAMES lists the public ones)")
+    row = meta[name].get("accuracy")
+    if not row:
+        raise KeyError(f"name: kernel {name!r} has no measured accuracy")
+    return {k: dict(v) if isinstance(v, dict) else v for k, v in row.items()}
 
 
 def euler_rate_matrix(angles: ArrayLike, sequence: str, frame: str = "fixed", *,

@@ -1,0 +1,310 @@
+"""Accuracy of every generated kernel against the condition of the problem (issue 30).
+
+For each kernel (the public ones, their ``<name>_with_jacobians``, the Euler-angle
+variants), each float type (float64, float32) and backend (C, NumPy), and each regime of
+``_accuracy_points`` (random points; angles to 0 and pi from both sides, exactly 0 and pi;
+rotations to the identity and to a half turn; ||omega|| and ||f|| to 0; gimbal lock of each
+Euler sequence; points scaled 1e-6 .. 1e6; nearly coincident points; unit vectors a few ulps
+off their constraint): exact points, rounded to the float type, handed to the kernel; the
+reference is the declared formula in ``arb`` ball arithmetic at the exact point
+(``_accuracy_ref``).
+
+Per output ``o`` of a sample: ``err = ||computed - ref|| / ||ref||`` and the condition
+number ``kappa = sum_i ||J_oi|| ||x_i|| / ||ref||`` (``J_oi``: the derivative along the
+tangent space of argument ``i``; a relative perturbation ``u`` of every argument moves the
+output by at most ``u kappa``). Verdict **accurate** when
+``||computed - ref|| <= 8 u (sum_i ||J_oi|| ||x_i|| + ||ref||)``, i.e. ``err <= 8 u kappa +
+8 u`` (the absolute floor judges outputs that are exactly zero). A flagged sample (NaN,
+``SingularConfigurationError`` in the API) is **expected** where the exact result is
+undefined, kappa >= 1e12, kappa u >= 1/8 (the rounding of the input can reach the singular
+set) or the result overflows the type, else **spurious**. A finite sample with kappa u >= 1/8
+is not judged (``beyond``: no digit of the result is determined by the rounded input).
+
+Usage (from the repository root)::
+
+    python benchmarks/accuracy.py [--kernels A,B] [--dtypes float64,float32]
+        [--backends c,numpy] [--random N] [--json PATH] [--md PATH]
+
+The full sweep of the 134 kernels takes tens of minutes on one core; ``tests/test_accuracy.py``
+runs a float64 subsample.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+from dataclasses import asdict, dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+
+import _accuracy_points as P  # noqa: E402
+import _accuracy_ref as R  # noqa: E402
+
+from rigidsym import kernels as K  # noqa: E402
+
+KAPPA_SINGULAR = 1e12
+
+
+@dataclass
+class Row:
+    """The worst of one (kernel, dtype, backend, regime)."""
+
+    kernel: str
+    dtype: str
+    backend: str
+    regime: str
+    samples: int = 0
+    worst_ratio: float = 0.0       # err / (8 u kappa + 8 u): <= 1 is accurate
+    err: float = 0.0               # normwise relative error at the worst ratio
+    kappa: float = 0.0             # condition number there
+    ulps: float = 0.0              # worst componentwise ulps (components >= 1e-3 ||ref||)
+    flagged_expected: int = 0      # singular/NaN where the mathematics is
+    beyond: int = 0                # kappa u >= 1/8: the rounding of the input decides all
+    spurious: list = field(default_factory=list)   # singular where the result is fine
+    worst_point: str = ""
+
+    @property
+    def accurate(self) -> bool:
+        return self.worst_ratio <= 1.0 and not self.spurious
+
+
+def _round(points, dtype, kernel):
+    n = len(points)
+    arrays = []
+    for j, a in enumerate(kernel.args):
+        v = np.array([[float(x) for x in p[j]] for p in points], dtype=np.float64)
+        arrays.append(np.ascontiguousarray(v.astype(dtype).reshape((n,) + a.shape)))
+    return arrays
+
+
+def run_kernel(name: str, arrays, dtype, backend: str) -> np.ndarray:
+    k = R.kernel_of(name)
+    n = arrays[0].shape[0]
+    outs = [np.empty((n,) + o.shape, dtype=dtype) for o in k.outputs]
+    with np.errstate(all="ignore"):
+        K.batch_function(name, backend, dtype=dtype)(*arrays, *outs)
+    return np.concatenate([o.reshape(n, -1).astype(np.float64) for o in outs], axis=1)
+
+
+def judge(name: str, regime: str, points, dtype, backends, refs=None,
+          runner=None) -> list[Row]:
+    """Rows (one per backend) of one regime; ``refs`` caches the references per point;
+    ``runner(name, arrays, dtype, backend) -> (n, outputs)`` replaces the package's kernels
+    (a test hands it a program that loses, to see the harness fail)."""
+    k = R.kernel_of(name)
+    u = float(np.finfo(dtype).eps) / 2
+    sizes = [o.size for o in k.outputs]
+    offs = np.cumsum([0] + sizes)
+    arrays = _round(points, dtype, k)
+    rows = {b: Row(name, np.dtype(dtype).name, b, regime, len(points)) for b in backends}
+    got = {b: (runner or run_kernel)(name, arrays, dtype, b) for b in backends}
+    big = float(np.finfo(dtype).max)
+    for s, p in enumerate(points):
+        flat_rounded = [float(x) for a in arrays for x in a[s].ravel()]
+        f = R.pick(name, flat_rounded)
+        exact = [x for a in p for x in a]
+        key = (name, regime, s, np.dtype(dtype).name)
+        if refs is not None and key in refs:
+            ref, scale, norms = refs[key]
+        else:
+            ref, prec = R.reference(f, exact)
+            scale, norms = (None, None) if ref is None else R.condition(name, f, p, sizes,
+                                                                        ref, prec)
+            if refs is not None:
+                refs[key] = (ref, scale, norms)
+        for b in backends:
+            row, c = rows[b], got[b][s]
+            flagged = not np.isfinite(c).all()
+            kappa = (scale / np.where(norms > 0, norms, np.inf)).max() if ref is not None \
+                else np.inf
+            # the mathematics is singular, or the rounding of the input can reach its
+            # singular set (kappa u >= 1/8), or the result overflows the type
+            if ref is None or not np.isfinite(scale).all() or (
+                    flagged and (np.abs(ref).max() > big or kappa >= KAPPA_SINGULAR
+                                 or kappa * u >= 0.125)):
+                row.flagged_expected += flagged or ref is None
+                continue
+            if flagged:
+                row.spurious.append(_point(arrays, s))
+                continue
+            if kappa * u >= 0.125:      # no digit is determined by the input at this type
+                row.beyond += 1
+                continue
+            for o in range(len(sizes)):
+                sl = slice(offs[o], offs[o + 1])
+                diff = float(np.linalg.norm(c[sl] - ref[sl]))
+                bound = 8 * u * (scale[o] + norms[o])
+                ratio = diff / bound if bound > 0 else (0.0 if diff == 0 else np.inf)
+                if ratio > 1 and k.branches:
+                    ratio = min(ratio, _sign_rule(name, f, arrays, s, c, ref, sl, bound))
+                # componentwise, over the components not tiny beside their output (below
+                # 1e-3 of its norm a component's ulps say nothing of the result)
+                big_ = np.abs(ref[sl]) >= 1e-3 * norms[o]
+                ulp = np.spacing(np.abs(ref[sl][big_]).astype(dtype)).astype(np.float64)
+                ulps = float(np.max(np.abs(c[sl][big_] - ref[sl][big_]) /
+                                    np.maximum(ulp, 1e-300), initial=0.0))
+                row.ulps = max(row.ulps, ulps)
+                if ratio > row.worst_ratio:
+                    row.worst_ratio = ratio
+                    row.err = diff / norms[o] if norms[o] > 0 else diff
+                    row.kappa = scale[o] / norms[o] if norms[o] > 0 else np.inf
+                    row.worst_point = _point(arrays, s)
+    return list(rows.values())
+
+
+def _sign_rule(name, f, arrays, s, c, ref, sl, bound) -> float:
+    """Near pi the sign of e is fixed by the skew part of Q, which the rounding of Q can
+    flip (or zero): where the output is the negation of the exact point's, judge it against
+    the declared formula at the input the kernel got (the documented sign rule there)."""
+    if np.linalg.norm(c[sl] + ref[sl]) > bound:
+        return np.inf
+    exact = [P.q(float(x)) for a in arrays for x in a[s].ravel()]
+    at_input, _ = R.reference(f, exact)
+    if at_input is None:
+        return np.inf
+    return float(np.linalg.norm(c[sl] - at_input[sl])) / bound
+
+
+def _point(arrays, s) -> str:
+    return "; ".join(np.array2string(a[s].ravel().astype(np.float64), precision=17,
+                                     separator=",") for a in arrays)
+
+
+def kernel_names(include_jacobians: bool = True) -> list[str]:
+    meta = K._state.meta()
+    names = sorted(meta)
+    return [n for n in names if include_jacobians or not n.endswith("_with_jacobians")]
+
+
+def sweep(names, dtypes, backends, n_random=8, small=None, progress=None, refs=None,
+          runner=None) -> list[Row]:
+    """Every row of ``names`` x ``dtypes`` x regimes (``small``: the approach steps)."""
+    rows = []
+    for name in names:
+        k = R.kernel_of(name)
+        for dt in dtypes:
+            for regime, pts in P.regimes(k, dt, n_random=n_random, small=small).items():
+                rows += judge(name, regime, pts, dt, backends, refs, runner)
+        if progress:
+            progress(name, rows)
+    return rows
+
+
+def summary(rows: list[Row], thresholds: dict | None = None) -> dict:
+    """Per kernel, the row ``kernels.accuracy(name)`` returns: per float type the worst
+    ``err / (u (kappa + 1))`` (``bound``: the error is at most ``bound`` u (kappa + 1)), its
+    regime, kappa and error there, the worst componentwise ulps, the flagged and unjudged
+    counts; the regimes swept; whether every row is accurate."""
+    out: dict = {}
+    for r in rows:
+        k = out.setdefault(r.kernel, {"regimes": [], "accurate": True})
+        if r.regime not in k["regimes"]:
+            k["regimes"].append(r.regime)
+        k["accurate"] = bool(k["accurate"] and r.accurate)
+        d = k.setdefault(r.dtype, {"bound": 0.0, "regime": "", "kappa": 0.0, "err": 0.0,
+                                   "ulps": 0.0, "flagged": 0, "beyond": 0, "spurious": 0})
+        d["ulps"] = max(d["ulps"], _sig(r.ulps))
+        d["flagged"] += r.flagged_expected
+        d["beyond"] += r.beyond
+        d["spurious"] += len(r.spurious)
+        if 8 * r.worst_ratio > d["bound"]:
+            d.update(bound=_sig(8 * r.worst_ratio), regime=r.regime, kappa=_sig(r.kappa),
+                     err=_sig(r.err))
+    for name, k in out.items():
+        k["regimes"].sort()
+        k["singular"] = K._state.meta()[name]["singular"]
+        k["threshold"] = (thresholds or {}).get(name, "")
+    return dict(sorted(out.items()))
+
+
+def _sig(x: float) -> float:
+    return float(f"{x:.3g}")
+
+
+def kernel_table(data: dict, public_only: bool = False) -> str:
+    """The per-kernel table of ``docs/accuracy.md`` from :func:`summary`'s data."""
+    lines = ["| kernel | float64: bound, ulps | worst regime, kappa there | float32: bound, "
+             "ulps | worst regime, kappa there | singular set (flagged where) |",
+             "|---|---|---|---|---|---|"]
+    meta = K._state.meta()
+    for name, r in data.items():
+        if public_only and not meta[name]["public"]:
+            continue
+        a, b = r.get("float64", {}), r.get("float32", {})
+        sing = r["singular"] or "none"
+        if r.get("threshold"):
+            sing += f" ({r['threshold']})"
+        sing = sing.replace("|", "\\|")
+        ok = "" if r["accurate"] else " **LOSES**"
+        a, b = ({**x, "regime": x.get("regime", "").replace("|", "\\|")} for x in (a, b))
+        lines.append(f"| `{name}`{ok} | {a.get('bound', 0):.2g}, {a.get('ulps', 0):.3g} | "
+                     f"{a.get('regime', '')}, {a.get('kappa', 0):.2g} | "
+                     f"{b.get('bound', 0):.2g}, {b.get('ulps', 0):.3g} | "
+                     f"{b.get('regime', '')}, {b.get('kappa', 0):.2g} | {sing} |")
+    return "\n".join(lines) + "\n"
+
+
+def markdown(rows: list[Row]) -> str:
+    lines = ["| kernel | dtype | backend | regime | worst err/(8u kappa+8u) | err | kappa | "
+             "ulps | flagged (expected) | spurious singular |",
+             "|---|---|---|---|---|---|---|---|---|---|"]
+    for r in rows:
+        lines.append(f"| {r.kernel} | {r.dtype} | {r.backend} | {r.regime} | "
+                     f"{r.worst_ratio:.3g} | {r.err:.2g} | {r.kappa:.2g} | {r.ulps:.3g} | "
+                     f"{r.flagged_expected} | {len(r.spurious)} |")
+    return "\n".join(lines) + "\n"
+
+
+def main(argv=None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--kernels", default="", help="comma-separated names (default: all)")
+    ap.add_argument("--dtypes", default="float64,float32")
+    ap.add_argument("--backends", default="c,numpy")
+    ap.add_argument("--random", type=int, default=8, help="random points per kernel")
+    ap.add_argument("--no-jacobians", action="store_true")
+    ap.add_argument("--json", default="", help="write every row here")
+    ap.add_argument("--md", default="", help="write the markdown table here")
+    ap.add_argument("--losses", action="store_true", help="print only the failing rows")
+    ap.add_argument("--table", default="", help="print the per-kernel table of this "
+                    "data file (docs/accuracy.md) and exit")
+    ap.add_argument("--data", default="", help="write the per-kernel rows (the data "
+                    "`rigidsym generate` ships for kernels.accuracy) here")
+    a = ap.parse_args(argv)
+    if a.table:
+        print(kernel_table(json.loads(Path(a.table).read_text(encoding="utf-8"))), end="")
+        return 0
+    names = a.kernels.split(",") if a.kernels else kernel_names(not a.no_jacobians)
+    dtypes = [np.dtype(d).type for d in a.dtypes.split(",")]
+    backends = a.backends.split(",")
+    if "c" in backends and K.use_backend("c") != "c":
+        backends.remove("c")
+
+    def progress(name, rows):
+        bad = [r for r in rows if r.kernel == name and not r.accurate]
+        print(f"{name}: {'accurate' if not bad else f'{len(bad)} losing rows'}", flush=True)
+        for r in bad:
+            print(f"   {r.dtype} {r.backend} {r.regime}: ratio {r.worst_ratio:.3g} err "
+                  f"{r.err:.2g} kappa {r.kappa:.2g} spurious {len(r.spurious)} at "
+                  f"{(r.spurious or [r.worst_point])[0]}", flush=True)
+
+    rows = sweep(names, dtypes, backends, a.random, progress=progress)
+    if a.json:
+        Path(a.json).write_text(json.dumps([asdict(r) for r in rows], indent=1))
+    if a.data:
+        from _accuracy_thresholds import thresholds
+
+        from rigidsym._io import write_atomic
+
+        write_atomic(Path(a.data), json.dumps(summary(rows, thresholds()), indent=1,
+                                              sort_keys=True) + "\n")
+    if a.md:
+        Path(a.md).write_text(markdown([r for r in rows if not a.losses or not r.accurate]))
+    return 0 if all(r.accurate for r in rows) else 1
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())

@@ -1,0 +1,119 @@
+"""Speed of the accuracy rewrites (issue 30 item 6): the kernels before and after, interleaved.
+
+Loads the generated kernels of a git revision (default: the commit before the rewrites)
+with ``kernels.load`` beside the package's, and times the C batch function of each kernel
+at N = 1e6, one thread, float64, in interleaved rounds (old, new, old, new, ...): the median
+ratio new/old per kernel. Then float32 against float64 of the package's kernels (K1,
+``instant_screw_axis``, K6). Clock: thread CPU time around one call; the machine is
+shared, so the medians of interleaved rounds are what to read, not single figures.
+
+Usage (from the repository root)::
+
+    python benchmarks/accuracy_speed.py [--rev afc7196] [--rounds 7] [--n 1000000]
+"""
+
+from __future__ import annotations
+
+import argparse
+import io
+import os
+import statistics
+import subprocess
+import sys
+import tarfile
+import tempfile
+import time
+from pathlib import Path
+
+import numpy as np
+
+os.environ.setdefault("OMP_NUM_THREADS", "1")
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+
+import _accuracy_points as P  # noqa: E402
+import _accuracy_ref as R  # noqa: E402
+import accuracy as A  # noqa: E402
+
+from rigidsym import kernels as K  # noqa: E402
+
+ROOT = Path(__file__).resolve().parents[1]
+KS = {"K1": "rotation_from_euler_rodrigues", "K2": "rotation_from_natural_invariants",
+      "K3": "screw_axis_point", "K4": "instant_screw_point_pitch", "K5": "N_matrix",
+      "K6": "newton_euler_wrench"}
+CHANGED = ["screw_of_displacement", "plucker_from_points"]
+
+
+def old_generated(rev: str, into: Path) -> Path:
+    """``generated/`` of ``rev`` extracted under ``into`` (git archive)."""
+    tar = subprocess.run(["git", "archive", rev, "generated"], cwd=ROOT, check=True,
+                         capture_output=True).stdout
+    with tarfile.open(fileobj=io.BytesIO(tar)) as t:
+        t.extractall(into, filter="data")
+    return into / "generated"
+
+
+def inputs(name: str, n: int, dtype) -> list[np.ndarray]:
+    k = R.kernel_of(name)
+    pts = P.regimes(k, np.float64, n_random=64)["random"]
+    arrays = A._round(pts, dtype, k)
+    reps = -(-n // len(pts))
+    return [np.ascontiguousarray(np.tile(a, (reps,) + (1,) * (a.ndim - 1))[:n])
+            for a in arrays]
+
+
+def timer(f, arrays, outs):
+    def once() -> float:
+        t = time.thread_time()
+        f(*arrays, *outs)
+        return time.thread_time() - t
+    return once
+
+
+def main(argv=None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--rev", default="afc7196")
+    ap.add_argument("--rounds", type=int, default=7)
+    ap.add_argument("--n", type=int, default=10**6)
+    a = ap.parse_args(argv)
+    K.use_backend("c")
+    with tempfile.TemporaryDirectory() as tmp:
+        old = K.load(old_generated(a.rev, Path(tmp)))
+        print(f"N = {a.n:.0e}, one thread, {a.rounds} interleaved rounds, median; "
+              f"before = {a.rev}", flush=True)
+        print("| kernel | before ms | after ms | after/before |\n|---|---|---|---|")
+        for label, name in [*KS.items(), *((n, n) for n in CHANGED)]:
+            k = R.kernel_of(name)
+            arrays = inputs(name, a.n, np.float64)
+            outs = [np.empty((a.n,) + o.shape) for o in k.outputs]
+            fo = timer(old.batch_function(name, "c", threads=1), arrays, outs)
+            fn = timer(K.batch_function(name, "c", threads=1), arrays, outs)
+            fo(), fn()                    # warm
+            to, tn = [], []
+            for _ in range(a.rounds):
+                to.append(fo())
+                tn.append(fn())
+            ratio = statistics.median(n_ / o_ for n_, o_ in zip(tn, to, strict=True))
+            print(f"| {label} `{name}` | {1e3 * statistics.median(to):.2f} | "
+                  f"{1e3 * statistics.median(tn):.2f} | {ratio:.3f} |", flush=True)
+    print("\n| kernel | float64 ms | float32 ms | float64/float32 |\n|---|---|---|---|")
+    for label, name in (("K1", KS["K1"]), ("", "instant_screw_axis"), ("K6", KS["K6"])):
+        k = R.kernel_of(name)
+        t = {}
+        fs = {}
+        for dt in (np.float64, np.float32):
+            arrays = inputs(name, a.n, dt)
+            outs = [np.empty((a.n,) + o.shape, dtype=dt) for o in k.outputs]
+            fs[dt] = timer(K.batch_function(name, "c", threads=1, dtype=dt), arrays, outs)
+            fs[dt]()
+            t[dt] = []
+        for _ in range(a.rounds):
+            for dt in fs:
+                t[dt].append(fs[dt]())
+        r = statistics.median(x / y for x, y in zip(t[np.float64], t[np.float32], strict=True))
+        print(f"| {label} `{name}` | {1e3 * statistics.median(t[np.float64]):.2f} | "
+              f"{1e3 * statistics.median(t[np.float32]):.2f} | {r:.2f} |", flush=True)
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())

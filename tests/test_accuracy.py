@@ -1,0 +1,119 @@
+"""Accuracy against the condition of the problem (issue 30): the regimes of
+``benchmarks/accuracy.py`` as a test, in float64 on a subsample of the approach steps, so
+that a rewrite that loses digits fails here.
+
+Every public kernel (and a few Jacobian and Euler-angle kernels) at exact points rounded to
+float64, over random points and the approaches to every cancellation its inputs' kinds have
+(angles to 0 and pi from both sides, rotations to 1 and a half turn, norms to 0, gimbal
+lock, scales 1e-6..1e6, unit vectors a few ulps off): the error of every output within
+``8 u (kappa + 1)`` of the declared formula in ``arb`` balls, and no flagged sample where the
+exact result is finite and kappa < 1e12. The full sweep (both types, all 134 kernels) is the
+``slow`` test at the end.
+"""
+
+from __future__ import annotations
+
+import shutil
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from rigidsym import kernels as K
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "benchmarks"))
+pytest.importorskip("flint")
+import accuracy as A  # noqa: E402
+
+#: the approach steps of the subsample: far, midway, the spacing of 1, the smallest used
+SMALL = [1e-1, 1e-8, 1e-15, 1e-75]
+EXTRA = ["plucker_from_points_with_jacobians", "instant_screw_axis_with_jacobians",
+         "euler_angle_rates_zyz_body", "euler_angle_rates_xyz_fixed"]
+
+
+def _backends() -> list[str]:
+    if K.use_backend("c") != "c":
+        if shutil.which("gcc") or shutil.which("cc"):
+            pytest.fail("a C compiler is present but the C backend did not build")
+        return ["numpy"]
+    return ["c", "numpy"]
+
+
+def _losses(rows) -> str:
+    return "\n".join(f"{r.kernel} {r.backend} {r.regime}: err {r.err:.2g} = "
+                     f"{r.worst_ratio:.3g} x 8u(kappa+1), kappa {r.kappa:.2g}, spurious "
+                     f"{r.spurious[:1]} at {r.worst_point}" for r in rows if not r.accurate)
+
+
+@pytest.mark.parametrize("name", sorted(K.KERNEL_NAMES) + EXTRA)
+def test_accurate_over_the_regimes_float64(name):
+    rows = A.sweep([name], [np.float64], _backends(), n_random=3, small=SMALL)
+    assert rows and sum(r.samples for r in rows) >= 5
+    assert all(r.accurate for r in rows), _losses(rows)
+
+
+def _declared_numpy(name):
+    """The declared outputs of ``name`` lambdified for NumPy, no rewrite: what the generated
+    kernel computed before issue 30."""
+    import _accuracy_ref as R
+    import sympy as sp
+
+    from rigidsym.codegen.generator import _flatten
+    from rigidsym.codegen.spec import flat_symbols, input_symbols
+
+    k = R.kernel_of(name)
+    f = sp.lambdify([s for _, ss in flat_symbols(k) for s in ss],
+                    _flatten(k, k.build(**input_symbols(k))), modules="numpy")
+
+    def run(name_, arrays, dtype, backend):
+        cols = [c for a in arrays for c in a.reshape(len(a), -1).T]
+        with np.errstate(all="ignore"):
+            return np.array([np.broadcast_to(v, (len(arrays[0]),)) for v in f(*cols)]).T
+    return run
+
+
+def test_the_harness_sees_the_loss_it_was_built_for():
+    """The declared p0 of screw_of_displacement, 3 - tr Q in the denominator: relative error
+    eps/phi^2 against a condition number 1/phi, and a singular flag at phi ~ 1e-9. The
+    harness must call it losing (the regime the kernel's rewrite fixed)."""
+    rows = A.sweep(["screw_of_displacement"], [np.float64], ["numpy"], n_random=1,
+                   small=[1e-5, 1e-9], runner=_declared_numpy("screw_of_displacement"))
+    bad = {r.regime for r in rows if not r.accurate}
+    assert "Q: phi->0" in bad
+
+
+def test_no_singular_error_at_a_small_representable_angle():
+    """The headline of issue 30: a rotation by 1e-9 rad has a finite screw (p0 ~ |t|/phi),
+    condition ~ 1/phi; the kernel neither raises nor loses the digits."""
+    e = np.array([0.48, 0.6, 0.64])
+    Q = K.rotation_from_natural_invariants(e, 1e-9)
+    a, d = np.array([0.3, -0.2, 1.0]), np.array([1e-3, 2e-3, -1e-3])
+    _, phi, p0, pitch, _ = K.screw_of_displacement(Q, a, Q @ a + d)
+    # (3.18) with Q - 1 = sin(phi) E + (1 - cos phi) E^2, E = CPM(e):
+    # p0 = cot(phi/2)/2 e x d + (d - e (e . d))/2, and cot(phi/2)/2 = 1/phi - phi/12 - ...
+    ref = np.cross(e, d) / 1e-9 + (d - e * (e @ d)) / 2
+    assert abs(phi - 1e-9) <= 1e-9 * 1e-6
+    assert np.linalg.norm(p0 - ref) <= 1e-5 * np.linalg.norm(ref)
+
+
+def test_accuracy_rows_are_shipped():
+    row = K.accuracy("screw_of_displacement")
+    assert set(row) >= {"float64", "float32", "regimes", "accurate", "singular", "threshold"}
+    assert row["accurate"] and row["float64"]["bound"] <= 8 and row["float32"]["bound"] <= 8
+    assert "Q: phi->0" in row["regimes"] and row["threshold"]
+    row["float64"]["bound"] = -1              # a copy: the shipped data stays
+    assert K.accuracy("screw_of_displacement")["float64"]["bound"] > 0
+    for name in K.KERNEL_NAMES:
+        r = K.accuracy(name)
+        assert r["accurate"], name
+        assert "Accuracy: error <=" in getattr(K, name).__doc__, name
+    with pytest.raises(KeyError, match="name: no kernel 'nope'"):
+        K.accuracy("nope")
+
+
+@pytest.mark.slow
+def test_full_sweep_both_types():
+    """The whole harness: every kernel, float64 and float32, C and NumPy (minutes)."""
+    rows = A.sweep(A.kernel_names(), [np.float64, np.float32], _backends(), n_random=4)
+    assert all(r.accurate for r in rows), _losses(rows)

@@ -1,0 +1,54 @@
+"""The accuracy rewrites of the code generator (issue 30, rigidsym.codegen.accurate): kept
+only when measured more accurate, and only when the zero test decides them equal to the
+declared formula."""
+
+from __future__ import annotations
+
+import pytest
+import sympy as sp
+from rigidsym.derivations.kernels_spec import KERNELS
+
+from rigidsym.codegen import accurate
+from rigidsym.codegen.generator import _flatten
+from rigidsym.codegen.spec import flat_symbols, input_symbols
+
+BY = {k.name: k for k in KERNELS}
+
+
+def _improve(name: str):
+    k = BY[name]
+    syms = input_symbols(k)
+    sflat = [s for _, ss in flat_symbols(k) for s in ss]
+    conds = [sp.lambdify(sflat, b.when(**syms), modules="math") for b in k.branches]
+    flat = _flatten(k, k.build(**syms))
+    return flat, *accurate.improve(k, "main", flat, syms, sflat, conds)
+
+
+def test_skew_part_rewrite_is_kept_measured_and_decided():
+    before, after, chosen = _improve("screw_of_displacement")
+    assert [c.name for c in chosen] == ["1 - cos(phi) from the skew part of Q"]
+    c = chosen[0]
+    assert c.decided in ("exact-cancel", "random-exact")
+    assert c.after * accurate.GAIN <= c.before and c.points >= 10
+    # the declared 3 - tr Q is gone from the program; the skew part divides instead
+    assert any(e.has(sp.UnevaluatedExpr) for e in before)
+    assert not any(e.has(sp.UnevaluatedExpr) for e in after)
+    assert "zero test" in c.line() and "skew part" in c.line()
+
+
+def test_nothing_to_gain_keeps_the_declared_outputs():
+    before, after, chosen = _improve("rotation_from_natural_invariants")
+    assert chosen == [] and after == before
+
+
+def test_an_unequal_rewrite_is_refused_by_the_zero_test():
+    Q = input_symbols(BY["screw_of_displacement"])["Q"]
+    k = BY["screw_of_displacement"]
+    sub = accurate._constrained(k, input_symbols(k))
+    d = [Q[i, i] for i in range(3)]
+    skew = sum((Q[i, j] - Q[j, i]) ** 2 for i, j in ((2, 1), (0, 2), (1, 0)))
+    # skew = 4 sin^2 phi, 1 + tr Q = 2 (1 + cos phi): 3 - tr Q = skew / (1 + tr Q)
+    assert accurate._decide([(3 - sum(d), skew / (1 + sum(d)))], sub) in (
+        "exact-cancel", "random-exact")
+    with pytest.raises(AssertionError, match="not equal to the declaration"):
+        accurate._decide([(3 - sum(d), skew / (2 * (1 + sum(d))))], sub)  # off by 2
