@@ -26,6 +26,7 @@ from .worked_render import (
     render_latex,
     render_markdown,
     render_text,
+    solution_record,
     to_json_value,
 )
 
@@ -50,6 +51,7 @@ __all__ = [
     "truth_check",
     "exact_check",
     "to_json_value",
+    "solution_record",
     "render_text",
     "render_markdown",
     "render_html",
@@ -100,6 +102,9 @@ class Solution:
         reason: for an ill-posed solution, why, in one sentence.
         floats: the data given as floats (measurements); rendering then shows long
             exact numbers to 10 digits.
+        data: the data solved on, by parameter name (exact sympy values; the book's
+            values where none was given), as :func:`solve` read them.
+        tol: the tolerance of measured data, or None (exact data).
     """
 
     id: str
@@ -115,6 +120,8 @@ class Solution:
     extra: str = ""
     reason: str = ""
     floats: tuple = ()
+    data: dict = field(default_factory=dict)
+    tol: object = None
 
     @property
     def checked(self) -> bool:
@@ -316,7 +323,7 @@ def solve(ex_id: str, tol=None, **data) -> Solution:
     except IllPosed as exc:
         s = exc.solution
     s.assumptions.extend(d.notes)
-    s.floats = d.floats
+    s.floats, s.data, s.tol = d.floats, dict(d.values), d.tol
     _CACHE[key] = s
     while len(_CACHE) > _CACHE_SIZE:
         _CACHE.popitem(last=False)
