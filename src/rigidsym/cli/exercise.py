@@ -41,8 +41,8 @@ def add_arguments(p) -> None:
                    help="exercise id: 3.10 or ex3.10 (default: none, list the exercises)")
     p.add_argument("--all", action="store_true", help="solve all 21 exercises (default: off)")
     p.add_argument("--json", metavar="PATH", nargs="?", const="-",
-                   help="(no PATH: to stdout) also write the results (schema 2: data, answers, checks) as JSON to "
-                        "this file (default: none)")
+                   help="also write the results (schema 2: data, answers, checks) as JSON "
+                        "to PATH (no PATH: to stdout; default: none)")
     p.add_argument("--format", choices=("plain", "json"),
                    help="what goes to stdout: the solution (one line per exercise with "
                         "--all), or the JSON document (default: plain)")

@@ -35,7 +35,8 @@ class Solution(Protocol):
     @property
     def checked(self) -> bool: ...
 
-__all__ = ["to_json_value", "solution_record", "render_text", "render_markdown", "render_html", "render_latex"]
+__all__ = ["to_json_value", "solution_record", "render_text", "render_markdown",
+           "render_html", "render_latex"]
 
 
 def to_json_value(v):
@@ -55,8 +56,9 @@ def solution_record(s) -> dict:
     ``statements`` (answers in words), ``checks`` (name, passed, detail), ``checked``,
     ``assumptions`` and, when ill-posed, ``reason``."""
     rec = {"id": s.id, "status": s.status,
-           "data": {k: to_json_value(list(v) if isinstance(v, sp.MatrixBase) and v.cols == 1
-                                     else v) for k, v in getattr(s, "data", {}).items()},
+           "data": {k: to_json_value(list(v) if isinstance(v, sp.MatrixBase)
+                                     and v.cols == 1 else v)
+                    for k, v in getattr(s, "data", {}).items()},
            "tol": None if getattr(s, "tol", None) is None else str(s.tol),
            "answers": {k: to_json_value(v) for k, v in s.answers.items()
                        if not isinstance(v, str)},
