@@ -58,6 +58,23 @@ def solve(a=A_SIDE, h=HEIGHT) -> Solution:
     return s
 
 
+def slips(s: Solution) -> dict:
+    """The exercise's own slip, for the grader: the inertia about the centre O of the base
+    (the axis through the base) instead of the centroid C, by Steiner (Eq. 3.133a)."""
+    V, c = s.answers["volume_m3"], s.answers["centroid_m"]
+    shift = c.dot(c) * sp.eye(3) - c * c.T
+    I_O = s.answers["I_C_per_rho_m5"] + V * shift
+    per_kg = s.answers["I_C_per_kg_m2"] + shift
+    return {"I_C_per_rho_m5": [("reference point", "the inertia about the base's centre O, "
+                                "not the centroid C", I_O)],
+            "I_C_per_kg_m2": [("reference point", "the inertia about the base's centre O, "
+                               "not the centroid C", per_kg)],
+            "principal_moments_per_kg_m2": [("reference point", "moments about the base's "
+                                             "centre O, not the centroid C",
+                                             sp.Matrix([per_kg[0, 0], per_kg[1, 1],
+                                                        per_kg[2, 2]]))]}
+
+
 def figure(s: Solution):
     """The prism, its centroid and its centroidal principal axes (labelled with the
     principal moments per kg)."""

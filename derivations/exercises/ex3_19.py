@@ -108,6 +108,22 @@ def solve(n_S=PARAMETERS[0].default, f_S=PARAMETERS[1].default, d=PARAMETERS[2].
     return s
 
 
+def slips(s: Solution) -> dict:
+    """The exercise's own slips, for the grader: the moment left about S (the sensor's
+    origin, not transferred to P) and the moment transfer with the wrong sign."""
+    n_S, f_S, d, Q = (s.data[k] for k in ("n_S", "f_S", "d", "Q"))
+    Qr = next((st.expr for st in s.steps if st.name == "nearest rotation"), Q)
+    about_S = Qr.T * n_S
+    wrong_sign = Qr.T * (n_S + d.cross(f_S))
+    f2 = Qr.T * f_S
+    return {"n_2": [("reference point", "the moment about S (not transferred to P)", about_S),
+                    ("sign", "n_S + d x f (the transfer's sign)", wrong_sign)],
+            "w_2": [("reference point", "the wrench about S (not transferred to P)",
+                     sp.Matrix.vstack(about_S, f2)),
+                    ("sign", "n_S + d x f (the transfer's sign)",
+                     sp.Matrix.vstack(wrong_sign, f2))]}
+
+
 def figure(s: Solution):
     """The sensor frame F_S at S, the gripper frame F_2 at P, and the wrench: the force at
     P, the moment read at S and the moment about P (each scaled to the drawing; the legend
