@@ -95,3 +95,21 @@ def figure(s: Solution):
     point(ax, c, "k", "centroid C", "C")
     axes3d(ax, pts)
     return fig
+
+
+def given_figure(s: Solution):
+    """The prism of the given data only (side a, height h): no centroid, no axes, no
+    moments (the students' handout)."""
+    from ._draw import axes3d, new_figure
+    from ._prism import draw_prism
+
+    a, h = s.data["a"], s.data["h"]
+    fig, ax = new_figure(f"Hexagonal prism: side a = {a} m, height h = {h} m")
+    axes3d(ax, draw_prism(ax, a, h), legend=False)
+    return fig
+
+
+def random_data(rng) -> dict:
+    """A variant with readable sizes in metres (an exam's draw)."""
+    return {"a": rng.choice(["0.02", "0.025", "0.03", "0.04", "0.05"]),
+            "h": rng.choice(["0.05", "0.1", "0.12", "0.15", "0.2"])}

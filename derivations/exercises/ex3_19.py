@@ -152,3 +152,40 @@ def figure(s: Solution):
     pts = [sp.zeros(3, 1), d, d + f * k, nS * k, d + nP * k, sp.ones(3, 1) * L / 2]
     axes3d(ax, pts)
     return fig
+
+
+def given_figure(s: Solution):
+    """The given data only (the students' handout): the sensor frame F_S at S, the
+    gripper point P at d with the frame F_2 of the given Q, and the readouts n_S, f_S at
+    S; no moment about P."""
+    from ._draw import arrow, axes3d, frame, new_figure, point
+
+    d, f, nS, Q = (s.data[k] for k in ("d", "f_S", "n_S", "Q"))
+    L = max(float(sp.N(sp.sqrt(d.dot(d)))), 0.1)
+    big = max(float(sp.N(sp.sqrt(v.dot(v)))) for v in (f, nS)) or 1.0
+    fig, ax = new_figure("Sensor frame F_S, gripper point P and frame F_2, readouts at S")
+    frame(ax, sp.zeros(3, 1), sp.eye(3) * L / 2, "S", "0.35")
+    frame(ax, d, sp.Matrix(Q) * L / 2, "2", "tab:purple")
+    point(ax, sp.zeros(3, 1), "0.35", text="S")
+    point(ax, d, "tab:purple", text="P")
+    arrow(ax, sp.zeros(3, 1), f, "tab:red", "f_S (read at S)", scale=L / big)
+    arrow(ax, sp.zeros(3, 1), nS, "tab:blue", "n_S (read at S)", scale=L / big)
+    axes3d(ax, [sp.zeros(3, 1), d, f * L / big, nS * L / big, sp.ones(3, 1) * L / 2])
+    return fig
+
+
+def _cayley(rng):
+    """A rotation with small rational entries: Cayley's formula of a small rational
+    vector, ``Q = (1 - C)^-1 (1 + C)``."""
+    c = sp.Matrix([sp.Rational(rng.randint(-2, 2), rng.randint(1, 2)) for _ in range(3)])
+    C = sp.Matrix([[0, -c[2], c[1]], [c[2], 0, -c[0]], [-c[1], c[0], 0]])
+    return (sp.eye(3) - C).inv() * (sp.eye(3) + C)
+
+
+def random_data(rng) -> dict:
+    """A variant with readable exact numbers (an exam's draw): small integer readouts, an
+    offset of a few centimetres, F_2 turned by a Cayley rotation of small rationals."""
+    d = [rng.choice(["0", "0.05", "0.1", "-0.05", "0.2"]) for _ in range(3)]
+    return {"n_S": [rng.randint(-3, 3) for _ in range(3)],
+            "f_S": [rng.randint(-5, 5) for _ in range(3)], "d": d,
+            "Q": _cayley(rng).tolist()}

@@ -25,9 +25,9 @@ from rigidsym.checking.worked import (
     exercise_module,
     normalise_id,
 )
-from rigidsym.checking.worked.grading import Graded
 from rigidsym.checking.worked import parameters as _parameters
 from rigidsym.checking.worked import solve as _solve
+from rigidsym.checking.worked.grading import Graded
 
 __all__ = ["solve", "parameters", "figure", "write_notebook", "grade", "exam",
            "EXERCISE_IDS", "Solution", "Parameters", "Param", "IllPosed", "Graded"]
@@ -168,3 +168,34 @@ def grade(solution: Solution, answers: dict) -> list[Graded]:
     own = getattr(exercise_module(solution.id), "slips", None)
     return _grade(solution, answers, own(solution) if own and solution.status == "solved"
                   else None)
+
+
+def exam(spec, out_dir: str | Path, seed: int | None = None) -> dict[str, Path]:
+    """Write an exam set from ``spec``: a student handout and an answer key.
+
+    The spec (a TOML file, or the same as a dict) lists ``[[problem]]`` tables: an
+    ``exercise`` with its ``data``, or ``variants = n`` random well-posed variants drawn
+    from the seed with readable exact numbers (Exercises 3.4, 3.11, 3.19: Cayley
+    rotations of small rationals, small integers, short decimals). See ``docs/exams.md``.
+
+    Args:
+        spec: a ``.toml`` path or a dict (``title``, ``seed``, ``problem``).
+        out_dir: the folder to write (made if missing).
+        seed: the seed of the draws (default: the spec's ``seed``, else 0).
+
+    Returns:
+        ``{"handout": path, "key_html": path, "key_json": path}``: ``handout.html``
+        (statement, data, a figure of the given data only, space for each answer; a
+        print stylesheet; no answer), ``key.html`` (worked, checked solutions and their
+        figures), ``key.json`` (schema 2: each problem's data, answers and checks).
+        The same spec and seed write the same bytes.
+
+    Raises:
+        ValueError: a bad spec (the message names the problem), bad data, or a problem
+            ill-posed on its data.
+        TypeError: bad data (as :func:`solve`).
+        OSError: the folder cannot be written.
+    """
+    from rigidsym.report.exam import exam as _exam
+
+    return _exam(spec, out_dir, seed)
