@@ -126,6 +126,16 @@ def _svg(fig) -> str:
     return text[text.index("<svg"):]
 
 
+def _no_ticks(fig):
+    """No coordinate tick labels on a handout's figure: a tick could read as an answer
+    (the centroid at h/2 is a tick of the prism's z axis)."""
+    for ax in fig.axes:
+        for axis in ("xaxis", "yaxis", "zaxis"):
+            if hasattr(ax, axis):
+                getattr(ax, axis).set_ticklabels([])
+    return fig
+
+
 def _data_table(s) -> str:
     rows = []
     for p in parameters(s.id):
@@ -150,7 +160,7 @@ def _handout(title: str, sols: list) -> str:
     for k, s in enumerate(sols, 1):
         mod = exercise_module(s.id)
         draw = getattr(mod, "given_figure", None)
-        fig = f"<figure>{_svg(draw(s))}</figure>" if draw else ""
+        fig = f"<figure>{_svg(_no_ticks(draw(s)))}</figure>" if draw else ""
         asked = [n for n, v in s.answers.items() if not isinstance(v, str)]
         space = "".join(f"<p><b>{html.escape(n)}</b> =</p><div class=\"answer\"></div>"
                         for n in asked)
