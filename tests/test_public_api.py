@@ -41,8 +41,9 @@ PUBLIC = {
     "rigidsym.codegen.spec": ["Arg", "Branch", "Kernel", "Out", "input_symbols"],
     "rigidsym.cli": ["build_parser", "main"],
     # issue 22: the exercises to run, see and vary
-    "rigidsym.exercises": ["EXERCISE_IDS", "IllPosed", "Param", "Parameters", "Solution",
-                           "figure", "parameters", "solve", "write_notebook"],
+    "rigidsym.exercises": ["EXERCISE_IDS", "Graded", "IllPosed", "Param", "Parameters",
+                           "Solution", "exam", "figure", "grade", "parameters", "solve",
+                           "write_notebook"],   # issue 32: exam, grade, Graded
 }
 
 

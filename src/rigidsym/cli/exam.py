@@ -6,7 +6,7 @@ import sys
 
 __all__ = ["add_arguments", "run", "HELP", "EXAMPLES"]
 
-HELP = "write an exam set: a student handout and an answer key (HTML, JSON)"
+HELP = "write an exam: a student handout and an answer key"
 EXAMPLES = """\
   rigidsym exam quiz.toml --out quiz/         handout.html, key.html, key.json
   rigidsym exam quiz.toml --out quiz/ --seed 8   other random variants"""
