@@ -57,7 +57,8 @@ class Param:
     """One given datum of an exercise.
 
     Attributes:
-        name: a valid identifier, after NOTATION.md (``n_1``, ``I_A``, ``C_prime``).
+        name: a valid identifier, as the book writes it with subscripts after ``_`` and
+            primes spelled out (``n_1``, ``I_A``, ``C_prime``).
         default: the book's value (exact sympy: a number or a Matrix; a str for a choice).
         shape: ``()`` a number, ``(3,)`` a vector, ``(6,)``, ``(3, 3)`` a matrix; ``None``
             for a choice among ``choices``.
