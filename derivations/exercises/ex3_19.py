@@ -86,13 +86,18 @@ def solve(n_S=PARAMETERS[0].default, f_S=PARAMETERS[1].default, d=PARAMETERS[2].
     dg, Qg = vector("d"), rotation("ex319_Q")
     n, f = vector("n"), vector("f")
     Rg = block([[Qg.T, sp.zeros(3)], [sp.zeros(3), Qg.T]])
-    gen = s.step("parametric", Rg * wrench_at(n, f, dg),
-                 "n_P = n_S + (s - p) x f, then both parts rotate into F_2 by Q^T.")
+    gen = Rg * wrench_at(n, f, dg)
+    # shown in the reader's names (Q_11 ...); the check below keeps the constrained atoms
+    s.step("parametric", gen.subs({Qg[i, j]: sp.Symbol(f"Q_{i + 1}{j + 1}", real=True)
+                                   for i in range(3) for j in range(3)}),
+           "n_P = n_S + (s - p) x f, then both parts rotate into F_2 by Q^T.")
     Qr = _rotation(s, Q_val, tol)
     w_S = wrench_at(nS, fS, d_val)
+    turned = not is_zero(Qr - sp.eye(3))
     w = s.step("specialised", block([[Qr.T, sp.zeros(3)], [sp.zeros(3), Qr.T]]) * w_S
-               if not is_zero(Qr - sp.eye(3)) else w_S,
-               "The data in the parametric form (Q = 1: no rotation).")
+               if turned else w_S, "The data in the parametric form (" +
+               (_turn_text(Qr) if turned else "Q = 1: F_2 parallel to F_S, no rotation") +
+               f"; P at d = {list(d_val)} m from S).")
     s.answers = {"w_2": w, "n_2": w[:3, :], "f_2": w[3:, :]}
     om, vS = vector("omega"), vector("v")
     tS = sp.Matrix.vstack(om, vS)
@@ -106,6 +111,20 @@ def solve(n_S=PARAMETERS[0].default, f_S=PARAMETERS[1].default, d=PARAMETERS[2].
     s.check(exact_check("specialised: Q f_2 = f_S and Q n_2 + d x (Q f_2) = n_S reproduce the "
                         "readout", [Qr * f2 - fS, Qr * n2 + d_val.cross(Qr * f2) - nS]))
     return s
+
+
+def _turn_text(Q) -> str:
+    """``F_2 turned by 90 deg about [0, 0, 1]`` from a rotation (angle and axis to 4
+    digits: words for the reader, computed from the data)."""
+    Qf = np.array(sp.N(Q, 17).tolist(), dtype=float)
+    angle = float(np.degrees(np.arccos(np.clip((np.trace(Qf) - 1) / 2, -1, 1))))
+    axis = np.array([Qf[2, 1] - Qf[1, 2], Qf[0, 2] - Qf[2, 0], Qf[1, 0] - Qf[0, 1]])
+    if np.linalg.norm(axis) < 1e-9:          # a half turn: the axis is Q + 1's column
+        M = Qf + np.eye(3)
+        axis = M[:, int(np.argmax(np.linalg.norm(M, axis=0)))]
+    axis = axis / np.linalg.norm(axis)
+    shown = ", ".join(f"{x:.4g}" for x in axis + 0.0)
+    return f"Q: F_2 turned from F_S by {angle:.4g} deg about [{shown}]"
 
 
 def slips(s: Solution) -> dict:
