@@ -62,7 +62,7 @@ class BuildKernels(build_ext):
         drv = _driver()
         cfg = drv.configure()
         out = Path(self.get_ext_fullpath(ext.name))
-        n = len(drv.kernel_sources(GENERATED / "c")) * len(cfg.paths) + 1
+        n = drv.object_count(GENERATED / "c", cfg)
         print(f"rigidsym: compiling {n} objects ({', '.join(p.name for p in cfg.paths)}; "
               f"OpenMP {cfg.openmp}, libmvec {cfg.libmvec}) on {drv.jobs()} cores, about "
               f"{drv.estimate_seconds(GENERATED / 'c', cfg):.0f} s", flush=True)

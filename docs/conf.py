@@ -14,9 +14,16 @@ author = "the rigidsym maintainers"
 copyright = "the rigidsym maintainers, MIT license"
 
 extensions = ["sphinx.ext.autodoc", "sphinx.ext.napoleon", "myst_parser"]
+try:    # the Markdown builder of docs/api.md (docs/make_api_md.py); the [docs] extra has it
+    import sphinx_markdown_builder  # noqa: F401
+
+    extensions.append("sphinx_markdown_builder")
+except ImportError:
+    pass
 source_suffix = {".md": "markdown"}
 root_doc = "index"
-exclude_patterns = ["_build", "README.md"]
+# _api_source.md: the directives of the API reference, read in place of api.md (below)
+exclude_patterns = ["_build", "README.md", "_*.md"]
 html_theme = "alabaster"
 html_static_path: list[str] = []
 # the pages are built by a test, often in parallel with other work: no search index to keep
@@ -60,5 +67,32 @@ def _skip(app, what, name, obj, skip, options):
     return skip
 
 
+#: the API reference's source: autodoc directives; docs/api.md is what the Markdown builder
+#: made of it (committed, readable unbuilt: docs/make_api_md.py writes it, tests/test_docs.py
+#: checks it fresh)
+API_SOURCE = "_api_source.md"
+
+
+def _api_source(app, docname, source):
+    """Every build reads the directives for the page ``api``, not the Markdown on disk."""
+    if docname == "api":
+        from pathlib import Path
+
+        source[0] = (Path(app.srcdir) / API_SOURCE).read_text(encoding="utf-8")
+
+
+def _abbreviation(self, node):
+    """A signature's keyword-only marker ``*`` (an abbreviation node), as text."""
+    from docutils import nodes
+
+    self.add(node.astext())
+    raise nodes.SkipNode
+
+
 def setup(app):
     app.connect("autodoc-skip-member", _skip)
+    app.connect("source-read", _api_source)
+    if "sphinx_markdown_builder" in extensions:
+        from docutils import nodes
+
+        app.add_node(nodes.abbreviation, override=True, markdown=(_abbreviation, None))

@@ -351,7 +351,7 @@ def _build_with_objects(user_dir: Path, tmp: Path, objects: Path) -> tuple[dict,
 def test_a_second_build_reuses_every_object_and_links_the_same_module(user_dir, tmp_path):
     objects = tmp_path / "objects"
     first, so1 = _build_with_objects(user_dir, tmp_path, objects)
-    n = len(_build.kernel_sources(user_dir / "c")) * len(_build.configure().paths) + 1
+    n = _build.object_count(user_dir / "c", _build.configure())
     assert first["objects"] == first["compiled"] == n and first["reused"] == 0
     second, so2 = _build_with_objects(user_dir, tmp_path, objects)
     assert second["compiled"] == 0 and second["reused"] == n
@@ -385,8 +385,10 @@ def test_other_flags_or_sources_miss_the_object_cache(user_dir, tmp_path, monkey
     src = _build.kernel_sources(copy / "c")[0]
     src.write_text(src.read_text() + "\n/* an edit */\n")
     stats, _ = _build_with_objects(copy, tmp_path, objects)
-    # that source once per path, and the module's C, which embeds the sources' hash
-    assert stats["compiled"] == len(_build.configure().paths) + 1
+    # that source once per path that compiles it, and the module's C (it embeds the hash)
+    plan, _ = _build._paths.partial_plan(_build.configure().paths,
+                                         _build.kernel_sources(copy / "c"), "rigidsym_table.c")
+    assert stats["compiled"] == sum(src in v for v in plan.values()) + 1
 
 
 def test_object_cache_off_and_its_folder():
@@ -402,3 +404,27 @@ def test_object_cache_off_and_its_folder():
     finally:
         os.environ.clear()
         os.environ.update(old)
+
+
+def test_the_avx512_path_compiles_only_the_kernels_calling_sin_or_cos(tmp_path):
+    """x86-64-v4 buys libmvec's 8-wide sin/cos and nothing else (benchmarks/RESULTS.md):
+    the other kernels' v4 entries alias their x86-64-v3 functions at link time."""
+    from rigidsym.kernels import _paths
+
+    (tmp_path / "trig.c").write_text("double f(double x) { return sin(x) + 1.0; }\n")
+    (tmp_path / "plain.c").write_text("/* sin( in a comment: not a call? it is text */\n"
+                                      "double g(double x) { return x * x; }\n")
+    (tmp_path / "plain2.c").write_text("double cosh_like(double x) { return x; }\n")
+    (tmp_path / "rigidsym_table.c").write_text("/* table */\n")
+    srcs = sorted(tmp_path.glob("*.c"))
+    plan, aliases = _paths.partial_plan(_paths.X86_PATHS, srcs, "rigidsym_table.c")
+    names = {k: sorted(p.name for p in v) for k, v in plan.items()}
+    assert names["v3"] == names["v2"] == sorted(p.name for p in srcs)
+    if sys.platform.startswith("linux"):
+        # a text match: a comment naming sin( counts, which only costs a compile
+        assert names["v4"] == ["plain.c", "rigidsym_table.c", "trig.c"]
+        assert "-Wl,--defsym,rigidsym_plain2_threads_v4=rigidsym_plain2_threads_v3" in aliases
+        assert not any("trig" in a or "table" in a for a in aliases)
+    # without a path after it, a trig_only path compiles everything
+    plan, aliases = _paths.partial_plan((_paths.X86_V4,), srcs, "rigidsym_table.c")
+    assert len(plan["v4"]) == len(srcs) and aliases == []

@@ -3,23 +3,21 @@
 Used with the same flags in two places: by ``setup.py`` when the package is built (``pip
 install``, ``pip wheel``: the package's kernels go into the wheel), and at run time by
 :mod:`rigidsym.kernels._ext` for what no wheel holds (a user's kernels, a stale editable
-build, ``rigidsym build-c --native``), into the user cache. Standard library only, so that
-``setup.py`` can load this file by path before rigidsym is importable.
+build, ``rigidsym build-c --native``), into the user cache. Standard library (and
+:mod:`rigidsym.kernels._objects`, the object cache) only: ``setup.py`` loads it by path.
 
 CPU dispatch as in NumPy: every kernel source (and the table ``rigidsym_table.c``) is
 compiled once per build path, with that path's ``-march`` and ``-DRIGIDSYM_ISA_SUFFIX``;
 ``rigidsym_module.c`` once, with the baseline path's flags; all objects link into one module
 whose dispatcher (``rigidsym_dispatch.h``) picks a path at import. Paths: ``x86-64-v2``
 (baseline), ``x86-64-v3`` (AVX2 + FMA) and ``x86-64-v4`` (AVX-512) on x86-64, no ``-march``
-elsewhere, ``native`` (``-march=native``, one path) on request. Nothing built by default
-uses ``-march=native``.
+elsewhere, ``native`` (``-march=native``, one path) on request, never by default.
 
 Flags of the kernels: ``-O3 -std=c99 -ffp-contract=fast`` (FMA contraction, never
 ``-ffast-math``; ``RIGIDSYM_CFLAGS`` replaces them). OpenMP (threads of the batch loops) and
 glibc's libmvec (vectorised ``sin``/``cos``) are used when a probe compiles and links with
-them (``RIGIDSYM_OPENMP=0``, ``RIGIDSYM_LIBMVEC=0`` skip them). The objects are compiled in
-parallel (``RIGIDSYM_BUILD_JOBS``, default the usable cores): setuptools would compile one
-extension's sources one after the other.
+them (``RIGIDSYM_OPENMP=0``, ``RIGIDSYM_LIBMVEC=0`` skip them). Objects compile in parallel
+(``RIGIDSYM_BUILD_JOBS``, default the usable cores), or come from the object cache.
 """
 
 from __future__ import annotations
@@ -36,26 +34,35 @@ from functools import cache
 from pathlib import Path
 
 if __package__:
-    from . import _objects
-else:   # loaded by path from setup.py: the sibling by path too (rigidsym is not importable)
+    from . import _objects, _paths
+else:   # loaded by path from setup.py: the siblings by path too (rigidsym is not importable)
     import importlib.util as _ilu
 
-    _spec = _ilu.spec_from_file_location("_rigidsym_objects",
-                                         Path(__file__).with_name("_objects.py"))
-    _objects = _ilu.module_from_spec(_spec)
-    sys.modules[_spec.name] = _objects
-    _spec.loader.exec_module(_objects)
+    def _sibling(name: str):
+        spec = _ilu.spec_from_file_location(f"_rigidsym{name}",
+                                            Path(__file__).parent / f"{name}.py")
+        mod = sys.modules[spec.name] = _ilu.module_from_spec(spec)
+        spec.loader.exec_module(mod)
+        return mod
+
+    _objects, _paths = _sibling("_objects"), _sibling("_paths")
+
+# the build paths, from rigidsym.kernels._paths (read here by the runtime and the benchmarks)
+IsaPath, X86_V4, X86_PATHS, NATIVE, BASELINE = (_paths.IsaPath, _paths.X86_V4, _paths.X86_PATHS,
+                                                _paths.NATIVE, _paths.BASELINE)
+default_paths, cpu_features, _x86 = _paths.default_paths, _paths.cpu_features, _paths._x86
 
 __all__ = ["MODULE", "IsaPath", "Config", "BuildError", "CompilerNotFound",
-           "default_paths",
-           "compiler", "configure", "kernel_sources", "sources_hash", "embedded_hash",
-           "build", "estimate_seconds", "jobs", "cpu_features", "X86_PATHS", "NATIVE",
-           "BASELINE", "KERNEL_FLAGS", "MVEC_FLAGS", "OMP_FLAGS"]
+           "default_paths", "compiler", "configure", "kernel_sources", "sources_hash",
+           "embedded_hash", "build", "object_count", "estimate_seconds", "jobs", "cpu_features",
+           "X86_PATHS", "NATIVE", "BASELINE", "KERNEL_FLAGS", "MVEC_FLAGS", "OMP_FLAGS"]
 
 #: the extension module's name (every generated directory builds one of this name)
 MODULE = "_ckernels"
 #: the module's own C (compiled once); every other ``c/*.c`` is compiled once per path
 MODULE_SOURCE = "rigidsym_module.c"
+#: the table of one path's functions (compiled by every path, partial ones included)
+TABLE_SOURCE = "rigidsym_table.c"
 #: optimisation flags of the kernels (``RIGIDSYM_CFLAGS`` replaces them)
 KERNEL_FLAGS = ("-O3", "-std=c99", "-ffp-contract=fast")
 #: every object: position-independent, only PyInit__ckernels exported
@@ -70,62 +77,12 @@ SECONDS_PER_OBJECT = 0.4
 _TAG = b"rigidsym-sources:"
 
 
-@dataclass(frozen=True)
-class IsaPath:
-    """One build path: a suffix for the exported names, the name build_info() reports,
-    and its flags."""
-
-    suffix: str
-    name: str
-    flags: tuple[str, ...]
-
-
-#: the AVX-512 path: measured 0.83-0.92x the x86-64-v3 time on the trigonometric K2, K3,
-#: K5 (libmvec's 8-wide _ZGVeN8v_sin/cos), level on K1, K4, K6 (benchmarks/RESULTS.md), and
-#: what keeps the default build within 1.10x of -march=native on K3 on an AVX-512 CPU
-X86_V4 = IsaPath("v4", "x86-64-v4", ("-march=x86-64-v4",))
-X86_PATHS = (X86_V4, IsaPath("v3", "x86-64-v3", ("-march=x86-64-v3",)),
-             IsaPath("v2", "x86-64-v2", ("-march=x86-64-v2",)))
-NATIVE = IsaPath("native", "native", ("-march=native",))
-BASELINE = IsaPath("base", "baseline", ())
-
-
 class BuildError(RuntimeError):
     """Compiling or linking the kernels failed (the message ends with the compiler's)."""
 
 
 class CompilerNotFound(BuildError):
     """No C compiler on ``PATH`` (``CC``, else the compiler Python was built with)."""
-
-
-def _x86() -> bool:
-    return platform.machine().lower() in ("x86_64", "amd64")
-
-
-def default_paths(native: bool = False) -> tuple[IsaPath, ...]:
-    """The build paths, best first (the last is the baseline).
-
-    ``native``: ``-march=native`` only. Else ``RIGIDSYM_PATHS`` (suffixes, e.g. ``v3,v2`` for
-    a quicker build) if set, else x86-64-v4, x86-64-v3 and x86-64-v2 on x86-64 and one path
-    without ``-march`` elsewhere.
-
-    Raises:
-        ValueError: ``RIGIDSYM_PATHS`` names an unknown path.
-    """
-    if native:
-        return (NATIVE,)
-    if not _x86():
-        return (BASELINE,)
-    env = os.environ.get("RIGIDSYM_PATHS")
-    if not env:
-        return X86_PATHS
-    known = {p.suffix: p for p in X86_PATHS}
-    wanted = [s.strip() for s in env.split(",") if s.strip()]
-    bad = [s for s in wanted if s not in known]
-    if bad or not wanted:
-        raise ValueError(f"RIGIDSYM_PATHS: expected suffixes among {', '.join(known)}, got "
-                         f"{env!r}")
-    return tuple(sorted((known[s] for s in set(wanted)), key=lambda p: -int(p.suffix[1])))
 
 
 def kernel_flags() -> tuple[str, ...]:
@@ -162,24 +119,6 @@ def jobs() -> int:
         return os.cpu_count() or 1
 
 
-def cpu_features() -> str:
-    """The CPU's model and feature flags (``/proc/cpuinfo``), for the key of a native build:
-    identical machines share it, whatever their host names."""
-    try:
-        text = Path("/proc/cpuinfo").read_text(errors="replace")
-    except OSError:
-        return f"{platform.machine()} {platform.processor()}"
-    fields = {}
-    for line in text.splitlines():
-        key, _, value = line.partition(":")
-        key = key.strip()
-        if key in ("flags", "Features", "model name", "vendor_id", "CPU part") \
-                and key not in fields:
-            fields[key] = " ".join(sorted(value.split())) if key in ("flags", "Features") \
-                else value.strip()
-    return json.dumps(fields, sort_keys=True)
-
-
 @dataclass(frozen=True)
 class Config:
     """What to build with: the compiler, the paths (best first), the kernels' flags, and
@@ -200,8 +139,10 @@ class Config:
         return (["-lmvec"] if self.libmvec else []) + ["-lm"]
 
     def describe(self) -> str:
-        """One line per path: its name and flags (the module's ``build`` attribute)."""
-        return "; ".join(f"{p.name}: {' '.join(self.object_flags(p)[len(COMMON_FLAGS):-1])}"
+        """One line per path: its name and flags (the module's ``build`` attribute); a
+        ``trig_only`` path says so."""
+        return "; ".join(f"{p.name}{' (kernels calling sin/cos)' if p.trig_only else ''}: "
+                         f"{' '.join(self.object_flags(p)[len(COMMON_FLAGS):-1])}"
                          for p in self.paths)
 
 
@@ -289,11 +230,17 @@ def embedded_hash(data: bytes | Path) -> str | None:
     return value.decode("ascii", "replace") if len(value) == 64 else None
 
 
+def object_count(cdir: Path, cfg: Config) -> int:
+    """How many objects :func:`build` compiles (or takes from the object cache)."""
+    plan, _ = _paths.partial_plan(cfg.paths, kernel_sources(cdir), TABLE_SOURCE)
+    return sum(len(v) for v in plan.values()) + 1
+
+
 def estimate_seconds(cdir: Path, cfg: Config) -> float:
     """A rough wall time of :func:`build` (for the notice before it starts): the measured
     CPU time per object over the parallel compiles, slowed by the machine's other work
     (the 1-minute load average)."""
-    n = len(kernel_sources(cdir)) * len(cfg.paths) + 1
+    n = object_count(cdir, cfg)
     par = min(jobs(), n)
     cores = os.cpu_count() or 1
     try:
@@ -314,9 +261,10 @@ def _tasks(cdir: Path, cfg: Config, tmp: Path) -> list[tuple[list[str], Path]]:
 
     inc = ["-I", str(cdir)]
     tasks = []
+    plan, _ = _paths.partial_plan(cfg.paths, kernel_sources(cdir), TABLE_SOURCE)
     for path in cfg.paths:
         (tmp / path.suffix).mkdir(parents=True, exist_ok=True)
-        for src in kernel_sources(cdir):
+        for src in plan[path.suffix]:
             obj = tmp / path.suffix / (src.stem + ".o")
             tasks.append(([*cfg.cc, *cfg.object_flags(path), *inc, "-c", str(src), "-o",
                            str(obj)], src.stat().st_size))
@@ -331,12 +279,6 @@ def _tasks(cdir: Path, cfg: Config, tmp: Path) -> list[tuple[list[str], Path]]:
     tasks.append((mod, 1 << 30))      # first: its errors (Python headers) show early
     tasks.sort(key=lambda t: -t[1])
     return [(argv, Path(argv[argv.index("-o") + 1])) for argv, _ in tasks]
-
-
-def _numpy_version() -> str:
-    import numpy
-
-    return numpy.__version__
 
 
 def _numpy_include() -> str:
@@ -356,28 +298,6 @@ def _run(argv: list[str]) -> None:
         raise BuildError(f"{shlex.join(argv)}\nfailed with exit code {r.returncode}:\n{tail}")
 
 
-def _headers_digest(cdir: Path) -> str:
-    h = hashlib.sha256()
-    for p in sorted(Path(cdir).glob("*.h")):
-        h.update(p.name.encode() + b"\0" + p.read_bytes() + b"\0")
-    return h.hexdigest()
-
-
-def _compile_cached(argv: list[str], cdir: Path, where: Path | None, headers: str,
-                    neutral: dict[str, str]) -> bool:
-    """Compile one object, or copy it from the object cache; True when it was compiled."""
-    obj = Path(argv[argv.index("-o") + 1])
-    if where is None:
-        _run(argv)
-        return True
-    k = _objects.key(argv, Path(argv[argv.index("-c") + 1]), headers, neutral)
-    if _objects.fetch(where, k, obj):
-        return False
-    _run(argv)
-    _objects.store(where, k, obj)
-    return True
-
-
 def build(gdir: Path, out: Path, cfg: Config, tmp: Path,
           progress: Progress | None = None, stats: dict | None = None) -> Path:
     """Compile ``gdir/c`` into the module file ``out`` (objects in ``tmp``, each reused from
@@ -392,17 +312,19 @@ def build(gdir: Path, out: Path, cfg: Config, tmp: Path,
     import time
     from concurrent.futures import ThreadPoolExecutor, as_completed
 
+    import numpy
+
     cdir = Path(gdir) / "c"
     if not (cdir / MODULE_SOURCE).is_file():
         raise BuildError(f"{cdir}: no {MODULE_SOURCE}; regenerate this folder with this "
                          f"version of rigidsym (`rigidsym generate`)")
     t0, r0 = time.perf_counter(), resource.getrusage(resource.RUSAGE_CHILDREN)
     tasks = _tasks(cdir, cfg, Path(tmp))
-    where, headers = _objects.root(), _headers_digest(cdir)
-    neutral = {str(cdir): "<generated>", _numpy_include(): f"<numpy {_numpy_version()}>"}
+    where, headers = _objects.root(), _objects.headers_digest(cdir)
+    neutral = {str(cdir): "<generated>", _numpy_include(): f"<numpy {numpy.__version__}>"}
     total, compiled = len(tasks) + 1, 0
     with ThreadPoolExecutor(max_workers=min(jobs(), len(tasks))) as pool:
-        futures = [pool.submit(_compile_cached, argv, cdir, where, headers, neutral)
+        futures = [pool.submit(_objects.compile_cached, _run, argv, where, headers, neutral)
                    for argv, _ in tasks]
         try:
             for done, f in enumerate(as_completed(futures), 1):
@@ -416,6 +338,7 @@ def build(gdir: Path, out: Path, cfg: Config, tmp: Path,
     link = [*cfg.cc, "-shared", *(("-bundle", "-undefined", "dynamic_lookup")
                                   if sys.platform == "darwin" else ()),
             *(str(o) for _, o in tasks), *cfg.libraries(),
+            *_paths.partial_plan(cfg.paths, kernel_sources(cdir), TABLE_SOURCE)[1],
             *(OMP_FLAGS if cfg.openmp else ()), "-o", str(out)]
     Path(out).parent.mkdir(parents=True, exist_ok=True)
     _run(link)
@@ -423,9 +346,8 @@ def build(gdir: Path, out: Path, cfg: Config, tmp: Path,
         progress(total, total)
     if stats is not None:
         r1 = resource.getrusage(resource.RUSAGE_CHILDREN)
+        cpu = r1.ru_utime + r1.ru_stime - r0.ru_utime - r0.ru_stime
         stats.update(objects=len(tasks), compiled=compiled, reused=len(tasks) - compiled,
-                     seconds=round(time.perf_counter() - t0, 2),
-                     cpu_seconds=round(r1.ru_utime + r1.ru_stime - r0.ru_utime - r0.ru_stime,
-                                       2),
+                     seconds=round(time.perf_counter() - t0, 2), cpu_seconds=round(cpu, 2),
                      object_cache=str(where) if where else None)
     return Path(out)

@@ -135,7 +135,7 @@ def _compile(gdir: Path, cfg: _build.Config, path: Path) -> None:
                           TextColumn("{task.completed}/{task.total} objects"),
                           TimeElapsedColumn(), console=Console(stderr=True),
                           transient=True) as bar:
-                total = len(_build.kernel_sources(Path(gdir) / "c")) * len(cfg.paths) + 2
+                total = _build.object_count(Path(gdir) / "c", cfg) + 1
                 task = bar.add_task("compile", total=total)
                 _build.build(gdir, out, cfg, Path(tmp),
                              lambda done, total: bar.update(task, completed=done, total=total),

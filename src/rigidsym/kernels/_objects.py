@@ -23,10 +23,11 @@ from __future__ import annotations
 import hashlib
 import os
 import subprocess
+from collections.abc import Callable
 from functools import cache
 from pathlib import Path
 
-__all__ = ["root", "key", "fetch", "store", "compiler_id"]
+__all__ = ["root", "key", "fetch", "store", "compiler_id", "headers_digest", "compile_cached"]
 
 #: bumped when the key's recipe changes (old entries are then never hit)
 FORMAT = "1"
@@ -131,3 +132,27 @@ def store(where: Path, k: str, obj: Path) -> None:
     except OSError:
         for tmp in tmps:                # nothing half-written is left behind
             tmp.unlink(missing_ok=True)
+
+
+def headers_digest(cdir: Path) -> str:
+    """SHA-256 over the names and bytes of every header of ``cdir`` (part of every key)."""
+    h = hashlib.sha256()
+    for p in sorted(Path(cdir).glob("*.h")):
+        h.update(p.name.encode() + b"\0" + p.read_bytes() + b"\0")
+    return h.hexdigest()
+
+
+def compile_cached(run: Callable[[list[str]], None], argv: list[str], where: Path | None,
+                   headers: str, neutral: dict[str, str]) -> bool:
+    """Run the compile ``argv`` (through ``run``), or copy its object from the cache at
+    ``where`` (None: no cache); True when it was compiled."""
+    obj = Path(argv[argv.index("-o") + 1])
+    if where is None:
+        run(argv)
+        return True
+    k = key(argv, Path(argv[argv.index("-c") + 1]), headers, neutral)
+    if fetch(where, k, obj):
+        return False
+    run(argv)
+    store(where, k, obj)
+    return True

@@ -1,12 +1,11 @@
 """The equation registry: one declaration per numbered equation of the book (or user id).
 
-A declaration is a function in ``derivations/`` (or a user module, see
-:mod:`rigidsym.checking.deciding.usermodules`) decorated with :func:`equation`. It returns a
-:class:`Statement`: the printed equation transcribed member by member in the book's symbols
-(garbles included), the *model* (first-principles values of those symbols, derived
-independently of the printed form), and, when the printed form does not hold, the
-corrected form. The verdict is never typed in: the checker computes it; the *expected*
-verdict sits next to the declaration as data so that a regression flips loudly.
+A declaration is a function in ``derivations/`` (or a user module: :mod:`.usermodules`)
+decorated with :func:`equation`. It returns a :class:`Statement`: the printed equation
+transcribed member by member in the book's symbols (garbles included), the *model*
+(first-principles values of those symbols, derived independently of the printed form), and,
+when the printed form does not hold, the corrected form. The verdict is never typed in: the
+checker computes it; the *expected* verdict sits beside it as data: a regression flips loudly.
 """
 
 from __future__ import annotations

@@ -1,0 +1,125 @@
+"""The build paths of the C driver (:mod:`rigidsym.kernels._build`): which CPU levels the
+kernels are compiled for, and which kernels each level compiles.
+
+As in NumPy's dispatcher, every kernel is compiled once per path; the module picks the best
+path the CPU runs at import. The x86-64-v4 path compiles only the kernels that call ``sin``
+or ``cos``: what it buys is libmvec's 8-wide AVX-512 variants (measured 0.83-0.92x the
+x86-64-v3 time on the trigonometric K3 and K5, level on K1, K4 and K6, which call neither:
+``benchmarks/RESULTS.md``), and those 34 of 134 kernels cost 29 % of its compile time for
+nothing (issue 27). The others' x86-64-v4 entries are the x86-64-v3 functions, aliased at
+link time (``--defsym``, GNU ld). Standard library only (``setup.py`` loads it by path).
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import platform
+import re
+import sys
+from dataclasses import dataclass
+from pathlib import Path
+
+__all__ = ["IsaPath", "X86_V4", "X86_PATHS", "NATIVE", "BASELINE", "default_paths",
+           "cpu_features", "calls_trig", "partial_plan"]
+
+@dataclass(frozen=True)
+class IsaPath:
+    """One build path: a suffix for the exported names, the name build_info() reports,
+    and its flags."""
+
+    suffix: str
+    name: str
+    flags: tuple[str, ...]
+    #: compiles only the kernels that call sin or cos; the next path serves the others
+    trig_only: bool = False
+
+
+#: the AVX-512 path: measured 0.83-0.92x the x86-64-v3 time on the trigonometric K2, K3,
+#: K5 (libmvec's 8-wide _ZGVeN8v_sin/cos), level on K1, K4, K6 (benchmarks/RESULTS.md), and
+#: what keeps the default build within 1.10x of -march=native on K3 on an AVX-512 CPU
+X86_V4 = IsaPath("v4", "x86-64-v4", ("-march=x86-64-v4",), trig_only=True)
+X86_PATHS = (X86_V4, IsaPath("v3", "x86-64-v3", ("-march=x86-64-v3",)),
+             IsaPath("v2", "x86-64-v2", ("-march=x86-64-v2",)))
+NATIVE = IsaPath("native", "native", ("-march=native",))
+BASELINE = IsaPath("base", "baseline", ())
+
+
+
+def _x86() -> bool:
+    return platform.machine().lower() in ("x86_64", "amd64")
+
+
+def default_paths(native: bool = False) -> tuple[IsaPath, ...]:
+    """The build paths, best first (the last is the baseline).
+
+    ``native``: ``-march=native`` only. Else ``RIGIDSYM_PATHS`` (suffixes, e.g. ``v3,v2`` for
+    a quicker build) if set, else x86-64-v4, x86-64-v3 and x86-64-v2 on x86-64 and one path
+    without ``-march`` elsewhere.
+
+    Raises:
+        ValueError: ``RIGIDSYM_PATHS`` names an unknown path.
+    """
+    if native:
+        return (NATIVE,)
+    if not _x86():
+        return (BASELINE,)
+    env = os.environ.get("RIGIDSYM_PATHS")
+    if not env:
+        return X86_PATHS
+    known = {p.suffix: p for p in X86_PATHS}
+    wanted = [s.strip() for s in env.split(",") if s.strip()]
+    bad = [s for s in wanted if s not in known]
+    if bad or not wanted:
+        raise ValueError(f"RIGIDSYM_PATHS: expected suffixes among {', '.join(known)}, got "
+                         f"{env!r}")
+    return tuple(sorted((known[s] for s in set(wanted)), key=lambda p: -int(p.suffix[1])))
+
+
+def cpu_features() -> str:
+    """The CPU's model and feature flags (``/proc/cpuinfo``), for the key of a native build:
+    identical machines share it, whatever their host names."""
+    try:
+        text = Path("/proc/cpuinfo").read_text(errors="replace")
+    except OSError:
+        return f"{platform.machine()} {platform.processor()}"
+    fields = {}
+    for line in text.splitlines():
+        key, _, value = line.partition(":")
+        key = key.strip()
+        if key in ("flags", "Features", "model name", "vendor_id", "CPU part") \
+                and key not in fields:
+            fields[key] = " ".join(sorted(value.split())) if key in ("flags", "Features") \
+                else value.strip()
+    return json.dumps(fields, sort_keys=True)
+
+
+#: a call of sin or cos (double or float) in generated C
+_TRIG = re.compile(rb"\b(?:sin|cos)f?\s*\(")
+#: what a kernel source exports, per path suffix (rigidsym_<stem>..._<suffix>)
+_EXPORTS = ("", "_threads", "_f32_threads")
+
+
+def calls_trig(src: Path) -> bool:
+    """Whether the generated C source ``src`` calls ``sin`` or ``cos``."""
+    return bool(_TRIG.search(Path(src).read_bytes()))
+
+
+def partial_plan(paths: tuple[IsaPath, ...], sources: list[Path],
+                 table: str) -> tuple[dict[str, list[Path]], list[str]]:
+    """The sources each path compiles, by suffix, and the linker's aliases (``--defsym``
+    flags) that give a ``trig_only`` path the next path's functions for the others. A
+    ``trig_only`` path compiles everything when no path follows it or the linker is not GNU
+    ld's kind (not Linux)."""
+    plan, aliases = {}, []
+    for i, path in enumerate(paths):
+        plan[path.suffix] = list(sources)
+        if not (path.trig_only and i + 1 < len(paths) and sys.platform.startswith("linux")):
+            continue
+        nxt = paths[i + 1].suffix
+        plan[path.suffix] = [s for s in sources if s.name == table or calls_trig(s)]
+        for s in sources:
+            if s not in plan[path.suffix]:
+                aliases += [f"-Wl,--defsym,rigidsym_{s.stem}{e}_{path.suffix}="
+                            f"rigidsym_{s.stem}{e}_{nxt}" for e in _EXPORTS]
+    return plan, aliases
