@@ -174,9 +174,10 @@ def _grade_one(name, given, right, shown, extra) -> Graded:
     scale = max(float(np.max(np.abs(e))) if e.size else 0.0, 1e-300)
     tol = f"within {RTOL:g} x {scale:.3g} (0.1 % of the largest entry)"
     if _close(g, e, scale):
-        return Graded(name, True, None, shown, f"right, {tol}")
+        return Graded(name, True, None, shown, tol)
     extra_f = [(w, d, _expected(v)) for w, d, v in extra]
     for word, detail, value in _candidates(e, name, extra_f):
         if _close(g, value, max(scale, float(np.max(np.abs(value))))):
-            return Graded(name, False, word, shown, f"wrong: matches {detail}")
-    return Graded(name, False, None, shown, f"wrong ({tol}): not a known slip")
+            return Graded(name, False, word, shown, f"matches {detail}")
+    return Graded(name, False, None, shown, f"not within the tolerance ({tol}), and not a "
+                  f"known slip")
