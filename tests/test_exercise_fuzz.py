@@ -105,7 +105,8 @@ def _property(max_examples: int):
 
 @pytest.fixture
 def short_budget(monkeypatch):
-    """The default run: an exact solve is refused after 3 CPU s (the slow run keeps 20)."""
+    """An exact solve is refused after 3 CPU s (the default is 20), so that a drawn
+    datum's answer, or refusal, comes within SECONDS of wall time on a loaded machine."""
     import rigidsym.checking.worked as worked
     monkeypatch.setattr(worked, "SOLVE_BUDGET", 3.0)
 
@@ -124,7 +125,8 @@ def test_data_strings_never_crash(ex_id, short_budget):
 
 @pytest.mark.slow
 @pytest.mark.parametrize("ex_id", WITH_DATA)
-def test_data_strings_never_crash_exhaustive(ex_id):
+def test_data_strings_never_crash_exhaustive(ex_id, short_budget):
+    # the short budget here too: 20 CPU s on a loaded machine is more than SECONDS of wall
     @settings(max_examples=150, deadline=None, database=None,
               suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large])
     @given(exercise_data(ex_id))
