@@ -218,7 +218,7 @@ def instant_screw_pitch_definition() -> Statement:
                 Rel(pitch_turn, 2 * sp.pi * v0 / norm_omega, "m/turn variant")])
 
 
-@equation("3.54", "Pluecker array of the ISA", section="3.4.1", kind="definition",
+@equation("3.54", "Plücker array of the ISA", section="3.4.1", kind="definition",
           singular=_W,
           latex=r"\mathbf{p}_{\mathcal{L}'} \equiv \begin{bmatrix} \mathbf{e}' \\ \mathbf{n}' "
                 r"\end{bmatrix}")

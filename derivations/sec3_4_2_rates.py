@@ -162,7 +162,8 @@ def euler_rodrigues_rate_matrix() -> Statement:
                 r"\tilde{\mathbf{H}}\dot{\boldsymbol{\eta}}",
           expected="does-not-hold", cause="conversion",
           evidence=r"\dot{\mathbf{v}} (v is the velocity) printed where \dot{\boldsymbol{\nu}} "
-                   r"is meant: Ntilde acts on the 4-array nu_dot; with nu_dot the chain holds",
+                   r"is meant: Ntilde acts on the 4-array nu_dot; with nu_dot the chain holds. "
+                   r"With a printed copy, look at the first product: nu-dot or v-dot",
           singular="phi = pi for Ltilde")
 def angular_velocity_from_invariant_rates() -> Statement:
     """``omega = Ntilde nu_dot = Ltilde lambda_dot = Htilde eta_dot`` (3-vectors, rad/s).

@@ -250,7 +250,8 @@ def twist_rate_from_pose() -> Statement:
 @equation("3.94", "Rate of S", section="3.5", expected="does-not-hold", cause="conversion",
           singular="F~ = L~: phi = pi",
           evidence="the upper-left block of S_dot is the 3x4 rate of F~ (N~, L~, H~); the "
-                   "printed F_dot (= N_dot, L_dot, H_dot, 4x3) lost its tilde",
+                   "printed F_dot (= N_dot, L_dot, H_dot, 4x3) lost its tilde. With a printed "
+                   "copy, look at the upper-left block: a tilde under the dot of F",
           latex=r"\dot{\mathbf{S}} = \begin{bmatrix} \dot{\mathbf{F}} & \mathbf{O} \\ "
                 r"\mathbf{O}_{34} & \mathbf{O} \end{bmatrix}")
 def rate_of_S() -> Statement:

@@ -103,7 +103,7 @@ def trace_of_rotation_rate() -> Statement:
 @equation("3.96e", "Auxiliary matrix B of the rate of N", section="3.5",
           expected="does-not-hold", cause="erratum",
           evidence="4(1 - cos phi) times the upper block of N_dot has coefficients 2(2 + cos "
-                   "phi), -2 cos phi, -2 and a term sin phi [(E w) e^T + e (E w)^T]",
+                   "phi), -2 cos phi, -2 and a term sin phi [(E omega) e^T + e (E omega)^T]",
           latex=r"\begin{aligned} \mathbf{B} &\equiv -2(\mathbf{e} \cdot "
                 r"\boldsymbol{\omega})\mathbf{1} + 2(3 - \cos \phi)(\mathbf{e} \cdot "
                 r"\boldsymbol{\omega})\mathbf{e}\mathbf{e}^T - 2(1 + \sin \phi)"
@@ -131,7 +131,8 @@ THETA = angle("theta")  # the printed "sin theta" of (3.97a): a fresh symbol, ne
 @equation("3.97a", "Rate of the left inverse N~", section="3.5", expected="does-not-hold",
           cause="conversion",
           evidence="tilde lost (rate of the 3x4 N~, not of N), theta for phi, and even so "
-                   "the term (1 - cos phi) E_dot of d/dt[(1 - cos phi) E] is missing",
+                   "the term (1 - cos phi) E_dot of d/dt[(1 - cos phi) E] is missing. With a "
+                   "printed copy, look at the left side: a tilde under the dot of N",
           singular="none in (e_dot, phi_dot); phi = 0 (mod 2 pi) once they come from N omega",
           latex=r"\dot{\mathbf{N}} = [\dot{\phi}(\cos \phi)\mathbf{1} + \dot{\phi}(\sin "
                 r"\theta)\mathbf{E} \dot{\mathbf{e}}]")
@@ -179,7 +180,8 @@ def rate_of_L_tilde() -> Statement:
 @equation("3.97c", "Rate of the left inverse H~", section="3.5", expected="does-not-hold",
           cause="conversion",
           evidence="tilde lost (rate of the 3x4 H~, not of H), and the factor 2 of H~ "
-                   "(3.77d) is missing: d/dt H~ = 2 [r0_dot 1 + R_dot, -r_dot]",
+                   "(3.77d) is missing: d/dt H~ = 2 [r0_dot 1 + R_dot, -r_dot]. With a printed "
+                   "copy, look at the left side: a tilde under the dot of H",
           latex=r"\dot{\mathbf{H}} = [\dot{r}_0\mathbf{1} + \dot{\mathbf{R}} - "
                 r"\dot{\mathbf{r}}]")
 def rate_of_H_tilde() -> Statement:

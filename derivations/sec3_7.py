@@ -270,7 +270,7 @@ def wrench_pitch_definition() -> Statement:
                 Rel(n0_vec, pitch_w * f, "moment on the axis = pitch x force")])
 
 
-@equation("3.110", "Pluecker array of the wrench axis", section="3.7", kind="definition",
+@equation("3.110", "Plücker array of the wrench axis", section="3.7", kind="definition",
           latex=r"\mathbf{p}_{\mathcal{L}''} \equiv \begin{bmatrix} \mathbf{e}'' \\ "
                 r"\mathbf{n}'' \end{bmatrix}, \quad \mathbf{e}'' = \frac{\mathbf{f}}"
                 r"{\|\mathbf{f}\|}, \quad \mathbf{n}'' = \mathbf{p} \times \mathbf{e}''")
@@ -290,7 +290,7 @@ def wrench_axis_pluecker() -> Statement:
         [Rel(p_L, sp.BlockMatrix([[e_w], [n_w]])), Rel(e_w, f / norm_f), Rel(n_w, _x(p, e_w))],
         model, defines=("p_L2", "e_2prime", "n_2prime"),
         claims=[Rel(e_w.T * e_w, sp.Identity(1), "unit direction"),
-                Rel(e_w.T * n_w, sp.ZeroMatrix(1, 1), "Pluecker condition"),
+                Rel(e_w.T * n_w, sp.ZeroMatrix(1, 1), "Plücker condition"),
                 Rel(n_w, _x(p0_w, e_w), "same moment for every point of the axis")])
 
 

@@ -19,6 +19,9 @@ DECLARE = [
     "rotation_from_euler_rodrigues", "rotation_from_natural_invariants",
     "rotation_from_quaternion", "scalar", "symmetric_matrix", "trace", "unit_vector",
     "unit_vector4", "vec", "vect", "vector",
+    # issue 28: the vocabulary of rigid motions
+    "twist", "wrench", "hat", "vee", "transform", "transform_inverse", "Ad", "ad", "ad_dual",
+    "expm", "logm", "diff", "acos", "atan2", "ORDERS",
 ]
 KERNELS = [
     "H_matrix", "H_matrix_dot", "H_tilde", "H_tilde_dot", "L_matrix", "L_matrix_dot",
@@ -44,7 +47,32 @@ PUBLIC = {
     "rigidsym.exercises": ["EXERCISE_IDS", "Graded", "IllPosed", "Param", "Parameters",
                            "Solution", "exam", "figure", "grade", "parameters", "solve",
                            "write_notebook"],   # issue 32: exam, grade, Graded
+    # issue 29: the reader of the chapter's LaTeX and the transcription check
+    "rigidsym.latex": ["Glyph", "LatexError", "Parsed", "Relation", "glyph_table", "lookup",
+                       "parse_latex"],
+    "rigidsym.latex.transcription": ["STATUSES", "check_transcription", "notes",
+                                     "transcription_for", "transcription_words"],
 }
+
+
+#: issue 31: the differentiable back-ends, importable where their extra is installed
+ARRAY_BACKENDS = ["NonFiniteResultError", "SingularConfigurationError", "euler_angle_rates",
+                  "euler_rate_matrix", "load", *KERNELS]
+EXTRA_PUBLIC = {"rigidsym.kernels.torch": ("torch", ARRAY_BACKENDS),
+                "rigidsym.kernels.jax": ("jax", ARRAY_BACKENDS)}
+
+
+@pytest.mark.extra
+@pytest.mark.parametrize("name", sorted(EXTRA_PUBLIC))
+def test_extra_public_names_are_pinned(name):
+    lib, names = EXTRA_PUBLIC[name]
+    pytest.importorskip(lib, reason=f"{lib} is not installed (the [{lib}] extra)")
+    mod = importlib.import_module(name)
+    assert sorted(mod.__all__) == sorted(names), (
+        f"{name}.__all__ changed: added {sorted(set(mod.__all__) - set(names))}, "
+        f"removed {sorted(set(names) - set(mod.__all__))}; update EXTRA_PUBLIC on purpose")
+    for attr in names:
+        assert callable(getattr(mod, attr)), f"{name}.{attr}"
 
 
 @pytest.mark.parametrize("name", sorted(PUBLIC))

@@ -254,3 +254,24 @@ def test_wheel_ships_the_exercise_notebooks(wheel, installed, tmp_path):
     p = _run(installed, tmp_path, "-m", "rigidsym", "exercise", "3.4", "--notebook", "ex.ipynb")
     assert p.returncode == 0, p.stderr
     assert json.loads((tmp_path / "ex.ipynb").read_text())["cells"][0]["cell_type"] == "markdown"
+
+
+def test_wheel_ships_the_torch_and_jax_programs(wheel):
+    """Issue 31: generated/torch and generated/jax are package data, one program per kernel
+    (and per Jacobian kernel), as generated/numpy."""
+    with zipfile.ZipFile(wheel) as z:
+        names = set(z.namelist())
+    numpy_files = {n.split("/")[-1] for n in names if n.startswith("rigidsym/generated/numpy/")
+                   and n != "rigidsym/generated/numpy/__init__.py"}
+    for backend in ("torch", "jax"):
+        got = {n.split("/")[-1] for n in names if n.startswith(f"rigidsym/generated/{backend}/")}
+        assert got == numpy_files, backend
+    assert "rigidsym/kernels/torch.py" in names and "rigidsym/kernels/jax.py" in names
+
+
+def test_wheel_ships_the_latex_reader(wheel):
+    """Issue 29: the grammar, the glyph table and the per-id notes are package data."""
+    with zipfile.ZipFile(wheel) as z:
+        names = set(z.namelist())
+    for f in ("grammar.lark", "glyphs.csv", "notes.json", "parser.py", "transcription.py"):
+        assert f"rigidsym/latex/{f}" in names, f

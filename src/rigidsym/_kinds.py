@@ -312,3 +312,19 @@ register(Kind(
             "admissible directions are d{a} = CPM(theta) {a} (tangent space of SO(3)); their "
             "relation to the rates of the invariants is N, L, H (3.76)-(3.77)."))
 register(Kind("angle", (), "angle", "angle, half-angle tangent", half_angle=True))
+
+
+def _check_half_turn(a: np.ndarray, name: str, tol: float) -> str | None:
+    bad = (a < -tol) | (a > np.pi + tol)
+    if bad.any():
+        return f"{name}: outside [0, pi] (an angle of the range [0, pi]; got {a[bad].flat[0]:.6g})"
+    return None
+
+
+# an angle on [0, pi] (MR's theta = acos((tr R - 1) / 2)): acos(cos theta) = theta holds
+register(Kind("angle_pi", (), "angle_0_pi", "angle in [0, pi], half-angle tangent",
+              ", angle in [0, pi]", half_angle=True, check=_check_half_turn, tol=1e-12))
+# twists and wrenches: free 6-vectors, angular part first unless a word says otherwise
+# (rigidsym.algebra.lie.ORDERS); rows for the kernels' specs and docstrings
+register(Kind("twist", (6,), "twist", "twist [omega; v] (6-vector), free", ", twist"))
+register(Kind("wrench", (6,), "wrench", "wrench [n; f] (6-vector), free", ", wrench"))

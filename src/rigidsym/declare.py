@@ -17,6 +17,11 @@ All of it is re-exported from :mod:`rigidsym` (``from rigidsym import equation, 
   :func:`rotation_from_natural_invariants` (2.49), :func:`rotation_from_euler_rodrigues`,
   :func:`rotation_from_quaternion`, :func:`linear_invariants`,
   :func:`euler_rodrigues_parameters`.
+- Rigid motions (Modern Robotics ch. 3, Murray-Li-Sastry ch. 2; issue 28): :func:`twist`,
+  :func:`wrench`, :func:`hat`, :func:`vee`, :func:`transform`, :func:`transform_inverse`,
+  :func:`Ad`, :func:`ad`, :func:`ad_dual` (6-vector orders named per word, :data:`ORDERS`),
+  :func:`expm`, :func:`logm`, :func:`diff`, :data:`acos`, :data:`atan2` and
+  ``angle(..., range="[0, pi]")`` (see ``docs/rigid-motions.md``).
 """
 
 from __future__ import annotations
@@ -25,8 +30,21 @@ from dataclasses import dataclass
 
 import sympy as sp
 
+from rigidsym.algebra import lie as _lie
 from rigidsym.algebra import operators as _operators
 from rigidsym.algebra import symbols as _symbols
+from rigidsym.algebra.motions import (
+    Ad,
+    ad,
+    ad_dual,
+    diff,
+    expm,
+    hat,
+    logm,
+    transform,
+    transform_inverse,
+    vee,
+)
 from rigidsym.algebra.operators import MS, Blocks, Cross, Det, mat, vec
 from rigidsym.algebra.primitives import (
     as_vector,
@@ -47,9 +65,11 @@ from rigidsym.algebra.symbols import (
     rotation,
     scalar,
     symmetric_matrix,
+    twist,
     unit_vector,
     unit_vector4,
     vector,
+    wrench,
 )
 from rigidsym.checking.deciding.registry import Rel, Statement, equation
 
@@ -62,6 +82,9 @@ __all__ = [
     "rotation_from_natural_invariants", "rotation_from_euler_rodrigues",
     "rotation_from_quaternion", "linear_invariants", "euler_rodrigues_parameters",
     "as_vector", "block", "eye3", "cancel_matrix",
+    # the vocabulary of rigid motions (issue 28; rigidsym.algebra.lie)
+    "twist", "wrench", "hat", "vee", "transform", "transform_inverse", "Ad", "ad", "ad_dual",
+    "expm", "logm", "diff", "acos", "atan2", "ORDERS",
 ]
 
 #: The time symbol ``t`` (real) of trajectories: atoms made with ``t=TIME`` are functions
@@ -71,6 +94,43 @@ TIME = _symbols.TIME
 I3 = _operators.I3
 #: The book's 3 x 3 zero matrix ``O`` as a matrix expression (``sympy.ZeroMatrix(3, 3)``).
 O3 = _operators.O3
+#: The orders of twists and wrenches by name (``"angeles"``, ``"modern-robotics"``,
+#: ``"featherstone"``: the angular part first, 0; ``"pinocchio"``, ``"ros"``: the linear
+#: part first, 1), as the words of rigid motions take them (``order=``).
+ORDERS = _lie.ORDERS
+
+
+def acos(x):
+    """``acos(x)`` on its principal branch ``[0, pi]`` (sympy's ``acos``).
+
+    The zero test rewrites ``acos(cos b)`` as ``b`` for an angle on ``[0, pi]``
+    (``angle(..., range="[0, pi]")``) and splits a default angle into ``theta`` and
+    ``-theta`` (``acos(cos theta) = |theta|``); elsewhere it is undecided, never guessed
+    (``docs/rigid-motions.md``). Source: MR (3.54).
+
+    Args:
+        x: a scalar expression.
+
+    Returns:
+        ``sympy.acos(x)`` [rad].
+    """
+    return sp.acos(x)
+
+
+def atan2(y, x):
+    """``atan2(y, x)`` on its principal branch ``(-pi, pi]`` (sympy's ``atan2``).
+
+    The zero test rewrites ``atan2(k sin a, k cos a)`` as ``a`` for an angle ``a`` and a
+    positive constant ``k`` proven exactly (``docs/rigid-motions.md``).
+
+    Args:
+        y: the sine side (a scalar expression).
+        x: the cosine side.
+
+    Returns:
+        ``sympy.atan2(y, x)`` [rad].
+    """
+    return sp.atan2(y, x)
 
 
 @dataclass(frozen=True)

@@ -12,8 +12,8 @@ from __future__ import annotations
 
 import sympy as sp
 
-__all__ = ["MS", "I3", "O3", "vec", "mat", "Cross", "Det", "Blocks", "Cpm", "Vect",
-           "is_symbolic"]
+__all__ = ["MS", "I3", "O3", "vec", "mat", "Cross", "Det", "Blocks", "Cpm", "Vect", "Diff",
+           "DiffEntry", "is_symbolic"]
 
 #: The book's 3 x 3 identity ``1`` as a matrix expression (``sympy.Identity(3)``).
 I3 = sp.Identity(3)
@@ -213,3 +213,62 @@ class Vect(sp.MatrixExpr):
 
     def _latex(self, printer):
         return rf"\mathrm{{vect}}\left({printer._print(self.args[0])}\right)"
+
+
+class Diff(sp.MatrixExpr):
+    """The derivative ``dX/dv`` of a matrix expression ``X`` (a book symbol with a model, an
+    operator of them) with respect to a scalar ``v``, kept lazy: prints ``dX/dv``;
+    ``doit()`` differentiates entry by entry once ``X`` is explicit. The book's dot accents
+    (``Q_dot``) are its special case ``v = t``. sympy's own ``Derivative`` of a matrix
+    symbol is a scalar to sympy (it has no shape, and a product with it fails).
+
+    Args:
+        X: a matrix expression (or explicit matrix).
+        v: the variable, a real symbol (an angle, :data:`TIME`, a scalar).
+    """
+
+    def __new__(cls, X, v):
+        return sp.Basic.__new__(cls, X, sp.sympify(v))
+
+    @property
+    def shape(self):
+        return self.args[0].shape
+
+    def _entry(self, i, j, **kwargs):
+        # lazy: the entry of a book symbol does not depend on v until the model is
+        # substituted (sympy's diff, and even its unevaluated Derivative, call it 0)
+        return DiffEntry(self.args[0], self.args[1], i, j)
+
+    def doit(self, **hints):
+        X = _explicit(self.args[0], **hints)
+        if isinstance(X, sp.MatrixBase):
+            return sp.ImmutableMatrix(X).diff(self.args[1])
+        return Diff(X, self.args[1])
+
+    def _sympystr(self, printer):
+        return f"d{printer._print(self.args[0])}/d{printer._print(self.args[1])}"
+
+    def _latex(self, printer):
+        return (rf"\frac{{\mathrm{{d}} {printer._print(self.args[0])}}}"
+                rf"{{\mathrm{{d}} {printer._print(self.args[1])}}}")
+
+
+class DiffEntry(sp.Function):
+    """The entry ``(i, j)`` of :class:`Diff` ``(X, v)``, lazy until ``X`` is explicit."""
+
+    nargs = 4
+    is_real = True
+
+    @classmethod
+    def eval(cls, X, v, i, j):
+        if isinstance(X, sp.MatrixBase):
+            return sp.diff(X[int(i), int(j)], v)
+        return None
+
+    def doit(self, **hints):
+        X = _explicit(self.args[0], **hints)
+        return DiffEntry(X, *self.args[1:]) if isinstance(X, sp.MatrixBase) else self
+
+    def _sympystr(self, printer):
+        X, v, i, j = self.args
+        return f"(d{printer._print(X)}/d{printer._print(v)})[{i}, {j}]"

@@ -43,6 +43,9 @@ __all__ = [
     "unit_vector",
     "unit_vector4",
     "angle",
+    "ANGLE_RANGES",
+    "twist",
+    "wrench",
     "rotation",
     "vector",
     "scalar",
@@ -197,20 +200,60 @@ def unit_vector4(name: str, t: sp.Symbol | None = None) -> sp.Matrix:
     return constrained_group("unit4", name, t)
 
 
-def angle(name: str, t: sp.Symbol | None = None):
+#: the ranges an angle may be declared on, and their kinds
+ANGLE_RANGES = {"(-pi, pi)": "angle", "[0, pi]": "angle_pi"}
+
+
+def angle(name: str, t: sp.Symbol | None = None, range: str = "(-pi, pi)"):  # noqa: A002
     """An angle in radians (``cos^2 + sin^2 = 1`` imposed exactly by the zero test).
 
     Args:
         name: the book name (``"phi"``).
         t: :data:`TIME` for an angle that is a function of time, else ``None``.
+        range: ``"(-pi, pi)"`` (the default: ``theta = 2 atan(tau)``) or ``"[0, pi]"``
+            (MR's ``theta = acos((tr R - 1) / 2)`` holds there, and only there: the zero
+            test rewrites ``acos(cos theta)`` as ``theta`` for such an angle, and splits a
+            default one into ``theta`` and ``-theta``).
 
     Returns:
         A real constrained atom (a symbol, or ``name(t)``) [rad].
 
     Raises:
-        ValueError: ``t`` is neither :data:`TIME` nor ``None``.
+        ValueError: ``t`` is neither :data:`TIME` nor ``None``, or an unknown ``range``.
     """
-    return constrained_group("angle", name, t)
+    if range not in ANGLE_RANGES:
+        raise ValueError(f"range: expected one of {', '.join(map(repr, ANGLE_RANGES))}, "
+                         f"got {range!r}")
+    return constrained_group(ANGLE_RANGES[range], name, t)
+
+
+def twist(name: str, t: sp.Symbol | None = None) -> sp.Matrix:
+    """A free twist, a 6 x 1 vector ``name_1 ... name_6``: ``[omega; v]`` for the words of
+    :mod:`rigidsym.algebra.lie` with an angular-first order (the default), ``[v; omega]``
+    with ``order="pinocchio"`` (the order is the word's, never the vector's).
+
+    Args:
+        name: the book name (``"V"``).
+        t: :data:`TIME` or ``None``.
+
+    Returns:
+        6 x 1 ``sympy.Matrix`` of real atoms [rad/s; m/s].
+    """
+    return vector(name, t, 6)
+
+
+def wrench(name: str, t: sp.Symbol | None = None) -> sp.Matrix:
+    """A free wrench, a 6 x 1 vector ``[n; f]`` (moment first, Angeles' order; see
+    :func:`twist` for the order of the words that read it).
+
+    Args:
+        name: the book name (``"F"``).
+        t: :data:`TIME` or ``None``.
+
+    Returns:
+        6 x 1 ``sympy.Matrix`` of real atoms [N m; N].
+    """
+    return vector(name, t, 6)
 
 
 def rotation(name: str, t: sp.Symbol | None = None) -> sp.Matrix:

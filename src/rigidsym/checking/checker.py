@@ -27,6 +27,7 @@ from fractions import Fraction
 
 from rigidsym.checking.deciding.balls import round_up
 from rigidsym.checking.deciding.bookpoint import describe_point
+from rigidsym.checking.deciding.branches import cases
 from rigidsym.checking.deciding.evidence import (
     NUMERIC_DIGITS,
     NUMERIC_POINTS,
@@ -36,6 +37,7 @@ from rigidsym.checking.deciding.evidence import (
 )
 from rigidsym.checking.deciding.explicit import (
     _EXPLICIT_CACHE,
+    UnknownShape,
     _entries,
     _fmt,
     _rel_str,
@@ -43,7 +45,7 @@ from rigidsym.checking.deciding.explicit import (
     explicit,
     shape_of,
 )
-from rigidsym.checking.deciding.records import member_record, model_words
+from rigidsym.checking.deciding.records import member_record, model_words, printed_latex
 from rigidsym.checking.deciding.registry import REGISTRY, Equation, Rel, Statement
 from rigidsym.checking.repairing.correction import RepairSettings, correct
 from rigidsym.zero.decide import Unsupported, decide_zero, make_plan
@@ -118,13 +120,22 @@ class _RelOutcome:
     label: str = ""
     #: the residual's ball at the counterexample: (excludes 0, ball text, digits)
     ball: tuple | None = None
+    #: the relation the balls re-check when it is not the printed one (a branch case)
+    evidence: Rel | None = None
 
 
 def decide_rel(rel: Rel, model: dict, seed: int, st: Statement | None = None) -> _RelOutcome:
     """Decide one relation exactly (shape check first, then the zero test); a
     counterexample is described in the book symbols of ``st`` when it is given."""
-    ls, rs = shape_of(rel.lhs), shape_of(rel.rhs)
+    try:
+        ls, rs = shape_of(rel.lhs), shape_of(rel.rhs)
+    except UnknownShape as exc:  # a guessed shape is never evidence (issue 28)
+        return _RelOutcome(None, "undecided", str(exc), None, rel.label)
     lhs, rhs = explicit(rel.lhs, model), explicit(rel.rhs, model)
+    if ls != rs and shape_of(lhs) == shape_of(rhs):
+        # the printed shapes differ but the values' agree: a shape rule misread a node
+        return _RelOutcome(None, "undecided", f"shape rules disagree with the values: "
+                           f"{ls[0]}x{ls[1]} vs {rs[0]}x{rs[1]} as printed", None, rel.label)
     describe = None
     if st is not None:
         rels = st.printed + st.claims + (st.corrected or [])
@@ -146,14 +157,35 @@ def decide_rel(rel: Rel, model: dict, seed: int, st: Statement | None = None) ->
                 continue
         return _RelOutcome(False, "counterexample",
                            f"shape mismatch: {ls[0]}x{ls[1]} vs {rs[0]}x{rs[1]}", ce, rel.label)
+    alts = cases(lhs, rhs)  # acos/atan2 on their principal branches (branches.py)
+    if alts == [(lhs, rhs, lhs, rhs)]:
+        return _decide_case(rel, lhs, rhs, lhs, rhs, seed, describe)
+    outs = [_decide_case(rel, *alt, seed, describe if alt[0] is lhs else None)
+            for alt in alts]
+    for o, alt in zip(outs, alts, strict=True):
+        if o.zero is False:  # the case's relation is the evidence the balls re-check
+            o.evidence = Rel(alt[0], alt[1], rel.label)
+            return o
+    undecided = [o for o in outs if o.zero is None]
+    if undecided:
+        return undecided[0]
+    o = outs[0]
+    o.detail = f"{o.detail} (acos/atan2 on their principal branches, {len(outs)} case(s))"
+    return o
+
+
+def _decide_case(rel, blhs, brhs, lhs, rhs, seed, describe) -> _RelOutcome:
+    """Decide ``lhs = rhs`` (branches resolved); the ball at a counterexample evaluates
+    ``blhs - brhs`` (the same relation, ``acos``/``atan2`` as such)."""
     diff = [a - b for a, b in zip(_entries(lhs), _entries(rhs), strict=True)]
     zr = decide_zero(diff, seed=seed)
     if zr.zero is False:
-        ce, plan, pt = _counterexample(lhs, rhs, zr.witness, seed)
+        extra = [] if blhs is lhs and brhs is rhs else _entries(blhs) + _entries(brhs)
+        ce, plan, pt = _counterexample(lhs, rhs, zr.witness, seed, extra)
         if describe is not None:
             ce.update(describe(plan, pt))
         try:
-            ball = counterexample_ball(lhs, rhs, plan, pt)
+            ball = counterexample_ball(blhs, brhs, plan, pt)
         except Unsupported as exc:
             ball = (False, f"no ball: {exc}", NUMERIC_DIGITS)
         return _RelOutcome(False, "counterexample", zr.detail, ce, rel.label, ball)
@@ -277,7 +309,7 @@ def _check(eq: Equation, t0: float, settings: RepairSettings,
             detail = f"{bad.detail}; {fix.detail}" if fix.holds else fix.detail
             if not fix.holds:
                 verdict = "undecided"
-            bad_rel = (st.printed + st.claims)[outs.index(bad)]
+            bad_rel = bad.evidence or (st.printed + st.claims)[outs.index(bad)]
     rels = backing or [r for r in st.printed if shape_of(r.lhs) == shape_of(r.rhs)]
     verdict, detail, numeric = _numeric(verdict, detail, rels, bool(backing), st.model, seed,
                                         bad_rel if verdict == "does-not-hold" else None,
@@ -285,7 +317,7 @@ def _check(eq: Equation, t0: float, settings: RepairSettings,
     return Outcome(
         id=eq.id, title=eq.title, kind=eq.kind, verdict=verdict, expected=eq.expected,
         method=method if verdict != "undecided" else "undecided",
-        printed_latex=eq.latex,
+        printed_latex=eq.latex or printed_latex(members),
         printed=(_rel_str(st.printed) or "") if expanded else None,
         derived=_derived_str(st) if expanded else None,
         corrected=(_rel_str(st.corrected) or fixed_str) if expanded else None,
@@ -333,6 +365,11 @@ def _numeric(verdict: str, detail: str, rels: list[Rel], decisive: bool, model: 
                 verdict, detail, ok = _printed_numeric(verdict, detail, numeric, bad_rel, bad,
                                                        model, seed)
                 certified = certified and ok
+        if verdict == "does-not-hold" and not decisive:
+            # no corrected form: the printed form's points say nothing of one (issue 28);
+            # the ball at the counterexample is the certificate
+            numeric["enclosure"] = None
+            certified = bool(bad and bad.ball and bad.ball[0])
         numeric["certified"] = certified and verdict != "undecided"
     except Unsupported as exc:
         verdict, detail = "undecided", f"numeric check impossible: {exc}"

@@ -94,7 +94,7 @@ def _repairs(results) -> None:
 def run(args) -> int:
     """``rigidsym verify``: decide equations, print a table, optionally write JSON."""
     from rigidsym.checking.runner import run_checks  # sympy: after the parser
-    from rigidsym.report.record import summary, to_json
+    from rigidsym.report.record import cause_line, summary, to_json
 
     ids = select_with_modules(args.ids, args.section, args.module)
     t0 = time.perf_counter()
@@ -110,6 +110,8 @@ def run(args) -> int:
         f" ({sum(bool(getattr(r, 'cached', False)) for r in results)} from the cache)"
     line = (f"{len(results)} checked in {wall:.1f} s{hits}: "
             + ", ".join(f"{k} {v}" for k, v in s.items()))
+    if s["does-not-hold"]:
+        line += f" (does-not-hold by cause: {cause_line(results)})"
     if fmt == "json":  # stdout is the document; the words go to stderr
         sys.stdout.write(to_json(results))
         print(line, file=sys.stderr)

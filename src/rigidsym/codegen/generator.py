@@ -25,6 +25,7 @@ from rigidsym import _kinds
 from rigidsym._config import KERNEL_SPEC as BOOK_ORIGIN
 from rigidsym._config import generated_dir
 from rigidsym.codegen.api_spec import render_api
+from rigidsym.codegen.arrays import render_array_kernels
 from rigidsym.codegen.cprogram import TRIG_BLOCK as TRIG_BLOCK
 from rigidsym.codegen.cprogram import (
     _f32_code,
@@ -219,6 +220,8 @@ def _render_kernel(env, kc: KernelCode, origin: str = BOOK_ORIGIN) -> dict[str, 
                                                  used=used, trig=_trig_plan(kc, cp),
                                                  never_singular=never_singular,
                                                  f32=_f32_code(kc), **common)
+    # PyTorch and JAX: the same programs (issue 31)
+    files.update(render_array_kernels(env, kc, lambda t: _header(kc, t, origin)))
     return files
 
 

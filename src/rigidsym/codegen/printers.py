@@ -4,6 +4,9 @@ Extensions (``_print_<Class>`` methods, no string surgery):
 
 * small integer powers print as products (``x*x``, ``1.0/(x*x)``), half powers as ``sqrt``;
 * ``Piecewise`` prints as a one-line conditional expression (C ternary, ``numpy.where``);
+* :class:`KernelTorchPrinter` and :class:`KernelJaxPrinter` print the same programs for
+  PyTorch (from sympy's ``TorchPrinter``) and JAX (sympy's ``JaxPrinter``): floats only
+  (``2.0``, so a float32 tensor stays float32), ``where`` for ``Piecewise``;
 * :class:`KernelCFloatPrinter` prints the float32 kernels: each symbol has a C type (a
   precision plan, :mod:`rigidsym.codegen.float32`) and each expression a context, float or
   double: float literals (``2.0f``) and ``sqrtf`` in float context, float symbols cast to
@@ -15,11 +18,11 @@ from __future__ import annotations
 import numpy as np
 import sympy as sp
 from sympy.printing.c import C99CodePrinter
-from sympy.printing.numpy import NumPyPrinter
+from sympy.printing.numpy import JaxPrinter, NumPyPrinter
 from sympy.printing.precedence import PRECEDENCE
 
-__all__ = ["KernelNumPyPrinter", "KernelCPrinter", "KernelCFloatPrinter", "numpy_code",
-           "c_code"]
+__all__ = ["KernelNumPyPrinter", "KernelCPrinter", "KernelCFloatPrinter", "KernelJaxPrinter",
+           "torch_printer", "numpy_code", "c_code"]
 
 _MAX_EXPAND = 4
 
@@ -182,6 +185,98 @@ class KernelCFloatPrinter(KernelCPrinter):
             root = f"sqrtf({self._print(base)})"
             return root if exp == sp.S.Half else f"1.0f/{root}"
         return super()._print_Pow(expr, rational)
+
+
+class KernelJaxPrinter(KernelNumPyPrinter, JaxPrinter):
+    """JAX printer (``jax.numpy.``): the NumPy kernel printer's visitors on sympy's
+    ``JaxPrinter`` module names; integers print as floats (weakly typed: float32 stays)."""
+
+    _module = "jax.numpy"
+
+    def _sqrt(self, arg: str) -> str:
+        return f"{self._module_format('jax.numpy.sqrt')}({arg})"
+
+    def _print_Piecewise(self, expr):
+        *head, (last, cond) = expr.args
+        if cond is not sp.true:
+            raise ValueError("Piecewise without a default branch")
+        text = self._print(last)
+        for e, c in reversed(head):
+            text = f"{self._module_format('jax.numpy.where')}({self._print(c)}, " \
+                   f"{self._print(e)}, {text})"
+        return text
+
+    def _print_Integer(self, expr):
+        return f"{int(expr)}.0"
+
+    def _print_And(self, expr):  # sympy's stacks the operands into one array first
+        return self._fold("jax.numpy.logical_and", expr.args)
+
+    def _print_Or(self, expr):
+        return self._fold("jax.numpy.logical_or", expr.args)
+
+    def _fold(self, fn: str, args) -> str:
+        text = self._print(args[0])
+        for a in args[1:]:
+            text = f"{self._module_format(fn)}({text}, {self._print(a)})"
+        return text
+
+
+def _torch_base():
+    """sympy's ``TorchPrinter``; its module imports torch when installed only to read
+    ``torch.__version__`` (which printing never uses), seconds on a small machine: the
+    generator blocks that import while it loads the printer, so generation stays cheap."""
+    import sys
+
+    if "sympy.printing.pytorch" in sys.modules or "torch" in sys.modules:
+        from sympy.printing.pytorch import TorchPrinter
+        return TorchPrinter
+    sys.modules["torch"] = None  # type: ignore[assignment]  # import torch -> ImportError
+    try:
+        from sympy.printing.pytorch import TorchPrinter
+    finally:
+        del sys.modules["torch"]
+    return TorchPrinter
+
+
+_TORCH_PRINTER: list = []
+
+
+def torch_printer():
+    """A PyTorch printer for kernel programs: sympy's ``TorchPrinter`` extended with the
+    kernel printers' visitors (products for small powers, ``torch.sqrt``, float literals,
+    ``torch.where`` for ``Piecewise``); built on first use (see :func:`_torch_base`)."""
+    if not _TORCH_PRINTER:
+        base = _torch_base()
+
+        class KernelTorchPrinter(_PowMixin, base):
+            _one = "1.0"
+
+            def __init__(self, settings=None):
+                super().__init__({"torch_version": "2", **(settings or {})})
+
+            def _sqrt(self, arg: str) -> str:
+                return f"{self._module_format('torch.sqrt')}({arg})"
+
+            def _print_Rational(self, expr):
+                d = _dyadic(expr)
+                return d if d is not None else f"({int(expr.p)}.0/{int(expr.q)}.0)"
+
+            def _print_Integer(self, expr):
+                return f"{int(expr)}.0"
+
+            def _print_Piecewise(self, expr):
+                *head, (last, cond) = expr.args
+                if cond is not sp.true:
+                    raise ValueError("Piecewise without a default branch")
+                text = self._print(last)
+                for e, c in reversed(head):
+                    text = f"{self._module_format('torch.where')}({self._print(c)}, " \
+                           f"{self._print(e)}, {text})"
+                return text
+
+        _TORCH_PRINTER.append(KernelTorchPrinter)
+    return _TORCH_PRINTER[0]()
 
 
 def numpy_code(expr) -> str:

@@ -73,6 +73,14 @@ class _BookNotation:
             return self._entry(parent.name, sub)
         return super()._print_MatrixElement(expr)
 
+    def _print_MatrixSlice(self, expr):
+        # an aligned block of a partitioned matrix in block notation, [M_A - M_C]₁₂ for
+        # (M_A - M_C)[:3, 3:]: no Python slice reaches a reader (issue 28)
+        sub = _block_index(expr)
+        if sub is None:
+            return super()._print_MatrixSlice(expr)
+        return self._block(self._print(expr.parent), sub)
+
     def _print_MatAdd(self, expr):
         out = []
         # positive terms first: M_A - M_C, p - a (sympy's order gives -M_C + M_A)
@@ -81,6 +89,20 @@ class _BookNotation:
             s = self._print(-t if neg else t)
             out.append(("-" if neg else "") + s if i == 0 else (" - " if neg else " + ") + s)
         return "".join(out)
+
+
+def _block_index(x) -> str | None:
+    """``"12"`` for the block (1, 2) of equal square-or-column blocks that a slice
+    ``x`` is (``"1"`` for a block of a column), ``None`` for any other slice."""
+    (r0, r1, rs), (c0, c1, cs) = x.rowslice, x.colslice
+    rows, cols = (int(n) for n in x.parent.shape)
+    h, w = int(r1 - r0), int(c1 - c0)
+    if rs != 1 or cs != 1 or h <= 0 or w <= 0 or r0 % h or c0 % w or rows % h or cols % w:
+        return None
+    if (rows, cols) == (h, w):
+        return None
+    i, j = int(r0) // h + 1, int(c0) // w + 1
+    return str(i) if cols == w == 1 else f"{i}{j}"
 
 
 class BookStrPrinter(_BookNotation, StrPrinter):
@@ -115,6 +137,9 @@ class BookStrPrinter(_BookNotation, StrPrinter):
 
     def _entry(self, name: str, sub: str) -> str:
         return book_text(name) + sub.translate(_SUBSCRIPT_DIGITS)
+
+    def _block(self, parent: str, sub: str) -> str:
+        return f"[{parent}]{sub.translate(_SUBSCRIPT_DIGITS)}"
 
     def _print_Pi(self, expr):
         return "π"
@@ -253,6 +278,9 @@ class BookLatexPrinter(_BookNotation, LatexPrinter):
 
     def _entry(self, name: str, sub: str) -> str:
         return f"{book_latex(name)}_{{{sub}}}"
+
+    def _block(self, parent: str, sub: str) -> str:
+        return rf"\left[{parent}\right]_{{{sub}}}"
 
     def _print_MatMul(self, expr):
         d = _dot_operands(expr)

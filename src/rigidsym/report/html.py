@@ -16,6 +16,7 @@ from jinja2 import Environment, PackageLoader, StrictUndefined
 from markupsafe import Markup
 
 from rigidsym.checking.checker import Outcome
+from rigidsym.latex.transcription import transcription_words
 from rigidsym.printing import notation
 from rigidsym.printing.labels import label_text, latex_spans, latex_text
 from rigidsym.report.counterexample import html_view, sides_of
@@ -23,7 +24,7 @@ from rigidsym.report.glossary import html_entries
 from rigidsym.report.markdown import anchor, sections
 from rigidsym.report.mathtext import math_or_text
 from rigidsym.report.numeric import numeric_sentence
-from rigidsym.report.record import CITATION, TITLE, result_record, summary
+from rigidsym.report.record import CITATION, TITLE, cause_line, result_record, summary
 from rigidsym.report.repairs import errata_rows, repairs_view
 
 __all__ = ["to_html", "markdown_to_html", "math_or_text", "prose_html"]
@@ -73,7 +74,8 @@ def _prose_view(rec: dict) -> dict:
 def _view(rec: dict) -> dict:
     v = dict(rec, anchor=anchor(rec["id"]),
              printed_mathml=math_or_text(rec["printed_latex"], rec["printed_latex"]),
-             numeric_text=numeric_sentence(rec["numeric"]))
+             numeric_text=numeric_sentence(rec["numeric"]),
+             transcription_text=transcription_words(rec.get("transcription")))
     v["members"] = [dict(m, mathml=math_or_text(m["latex"], m["text"]),
                          label_shown=label_text(m["label"])) for m in rec["members"]]
     v.update(_prose_view(rec))
@@ -110,6 +112,7 @@ def to_html(results: list[Outcome], *, title: str = TITLE, source: str | None = 
     views = [_view(result_record(r, timings=False)) for r in results]
     s = summary(results)
     return _env().get_template("chapter3.html.j2").render(
+        causes=cause_line(results) if s["does-not-hold"] else "",
         title=title, source=source, citation=CITATION.replace("*", ""),
         counts=list(s.items()), total=len(results),
         bad=[v for v in views if v["verdict"] == "does-not-hold"],

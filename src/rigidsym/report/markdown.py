@@ -7,10 +7,11 @@ component dumps; ``full=True`` adds them (``chapter3-full.md``, never committed)
 from __future__ import annotations
 
 from rigidsym.checking.checker import NUMERIC_DIGITS, NUMERIC_POINTS, Outcome
+from rigidsym.latex.transcription import transcription_words
 from rigidsym.printing.labels import label_text, latex_spans
 from rigidsym.report.counterexample import markdown_lines, sides_of
 from rigidsym.report.numeric import numeric_sentence
-from rigidsym.report.record import CITATION, TITLE, result_record, summary
+from rigidsym.report.record import CITATION, TITLE, cause_line, result_record, summary
 from rigidsym.report.repairs import markdown_errata, markdown_repairs
 
 __all__ = ["to_markdown", "anchor", "sections", "how_checked", "numeric_words",
@@ -85,6 +86,8 @@ def _entry(rec: dict, full: bool) -> list[str]:
         line = f"Sec. {rec['section']} · **definition**"
     out += [line, "",
             f"$${rec['printed_latex']}$$", ""]
+    if rec.get("transcription"):  # issue 29: what the text reads, machine-checked
+        out += [f"*{transcription_words(rec['transcription'])}*", ""]
     ms = rec["members"]
     if not (len(ms) == 1 and ms[0]["status"] == "holds" and not ms[0]["label"]):
         out += _members(rec) + [""]  # one unlabelled member that holds: the line above says it
@@ -138,6 +141,8 @@ def to_markdown(results: list[Outcome], full: bool = False, *, title: str = TITL
            "| verdict | count |", "|---|---|"]
     out += [f"| {v} | {n} |" for v, n in s.items()]
     out += [f"| **total** | {len(results)} |", ""]
+    if s["does-not-hold"]:
+        out += [f"The {s['does-not-hold']} does-not-hold by cause: {cause_line(results)}.", ""]
     bad = [r for r in recs if r["verdict"] == "does-not-hold"]
     if bad:
         out += ["## Equations that do not hold as printed", "",

@@ -19,7 +19,7 @@ from rigidsym.checking.deciding.registry import USER_CAUSE_DEFAULT, VERDICTS, is
 from rigidsym.printing import notation
 from rigidsym.report.repairs import repair_fields
 
-__all__ = ["summary", "result_record", "to_json", "cause_words",
+__all__ = ["summary", "cause_counts", "result_record", "to_json", "cause_words",
            "failure_bound", "CITATION", "TITLE", "SCHEMA", "RESIDUAL_FLOOR",
            "document_header"]
 
@@ -47,6 +47,43 @@ def summary(results: list[Outcome]) -> dict[str, int]:
     """Counts per verdict (every verdict listed, zeros included)."""
     c = Counter(r.verdict for r in results)
     return {v: c.get(v, 0) for v in VERDICTS}
+
+
+#: the does-not-hold counted by cause (issue 29): the book's errata, the conversion's slips,
+#: and those whose cause is not determined
+CAUSE_KEYS = (("erratum", "errata of the book"),
+              ("conversion", "slips of the text's conversion"),
+              ("not determined", "cause not determined"))
+
+
+def cause_counts(results: list[Outcome]) -> dict[str, int]:
+    """The does-not-hold counted by cause: ``{"erratum": n, "conversion": n, "not
+    determined": n}`` (a user id's own cause counts as not determined)."""
+    c = Counter((r.cause if r.cause in ("erratum", "conversion") else "not determined")
+                for r in results if r.verdict == "does-not-hold")
+    return {k: c.get(k, 0) for k, _ in CAUSE_KEYS}
+
+
+def cause_line(results: list[Outcome]) -> str:
+    """``4 errata of the book, 4 slips of the text's conversion, 3 cause not determined``."""
+    c = cause_counts(results)
+    return ", ".join(f"{c[k]} {words}" for k, words in CAUSE_KEYS)
+
+
+def _transcription(r: Outcome) -> dict | None:
+    """The printed form checked against the LaTeX (issue 29), or ``None`` for an id that
+    gives no LaTeX or is not registered."""
+    from rigidsym.latex import LatexError
+    from rigidsym.latex.transcription import transcription_for
+
+    try:
+        return transcription_for(r.id)
+    except LatexError as exc:
+        return {"status": "not parsed", "construct": exc.construct, "why": str(exc)}
+    except Exception as exc:  # noqa: BLE001 -- a reader's declaration the reader cannot
+        # take (an unknown sympy object in its printed form) is reported, never fatal
+        return {"status": "not parsed", "construct": f"{type(exc).__name__} while reading",
+                "why": str(exc)}
 
 
 def _bounded(x):
@@ -159,6 +196,8 @@ def result_record(r: Outcome, timings: bool = True, full: bool = False) -> dict:
         "cause_class": cls or None, "evidence": why or None,
         "counterexample": counterexample_record(r.counterexample),
         "singular": r.singular, "model": r.model, "numeric": numeric,
+        # issue 29: the printed form checked against the LaTeX (additive to schema 2)
+        "transcription": _transcription(r),
     }
     rec.update(repair_fields(r))  # issue 23: correction, repairs, repair_search
     if timings:
@@ -185,7 +224,8 @@ def to_json(results: list[Outcome], timings: bool = True, full: bool = False) ->
     ``full=True`` adds the expanded values (``chapter3-full.json``).
     """
     rows = [result_record(r, timings=timings, full=full) for r in results]
-    return json.dumps({**document_header(), "equations": rows, "summary": summary(results)},
+    return json.dumps({**document_header(), "equations": rows, "summary": summary(results),
+                       "does_not_hold_by_cause": cause_counts(results)},
                       indent=1, sort_keys=False, ensure_ascii=False) + "\n"
 
 

@@ -18,6 +18,7 @@ import sympy as sp
 
 from rigidsym.checking.checker import Outcome
 from rigidsym.checking.deciding.registry import Rel, is_user_id
+from rigidsym.latex.transcription import transcription_words
 from rigidsym.printing import notation
 from rigidsym.printing.labels import label_text
 from rigidsym.report.counterexample import GLOSSARY_HINT, sides_of, text_lines
@@ -140,7 +141,10 @@ def explain(r: Outcome, rels: dict[str, list[Rel]], where: str, width: int) -> s
     bound = rec["failure_bound"]
     if bound is not None and r.verdict != "does-not-hold":
         verdict += f" · failure probability <= {bound:.1e}"
-    out += [verdict, ""]
+    out += [verdict]
+    if rec.get("transcription"):  # issue 29: the printed form checked against the LaTeX
+        out += _hard_wrap(transcription_words(rec["transcription"]), width, "")
+    out += [""]
     pools = {k: list(v) for k, v in rels.items()}
     blocks = {"printed": [], "claim": [], "corrected": []}
     for m in r.members:
@@ -179,8 +183,9 @@ def explain(r: Outcome, rels: dict[str, list[Rel]], where: str, width: int) -> s
         out += _hard_wrap(f"Singular set: {label_text(r.singular)}", width, "")
     if r.model:
         out += _hard_wrap("Model: " + "; ".join(r.model), width, "")
-    if numeric_sentence(r.numeric):
-        out += _hard_wrap(numeric_sentence(r.numeric), width, "")
+    # the record's numeric field: the one bound of every view (floored as in the report)
+    if numeric_sentence(rec["numeric"]):
+        out += _hard_wrap(numeric_sentence(rec["numeric"]), width, "")
     out += _hard_wrap(GLOSSARY_HINT, width, "")
     return "\n".join(out)
 

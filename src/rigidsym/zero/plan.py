@@ -194,7 +194,10 @@ def make_plan(exprs) -> Plan:
             params.add(plan.rules[sp.pi])
             return False
         if isinstance(x, _TRIG):
-            coeffs, _ = _linear_angles(x.args[0])
+            try:
+                coeffs, _ = _linear_angles(x.args[0])
+            except Unsupported:  # sin(acos(c)): the balls evaluate it; the exact
+                return True      # translation refuses it (rigidsym.zero.program)
             for a, c in coeffs.items():
                 denoms[a] = denoms.get(a, 1) * c.denominator // gcd(denoms.get(a, 1),
                                                                     c.denominator)

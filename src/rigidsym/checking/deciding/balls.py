@@ -29,6 +29,7 @@ import sympy as sp
 from flint import arb, fmpq
 from sympy.core.function import AppliedUndef
 
+from rigidsym.algebra.symbols import constraint_of
 from rigidsym.zero.decide import Unsupported, evaluate
 from rigidsym.zero.program import (
     ABS,
@@ -185,6 +186,8 @@ def point_maker(plan):
     rules = sorted(((a, r) for a, r in plan.rules.items() if a != sp.pi),
                    key=lambda kv: sp.default_sort_key(kv[0]))
     free = [isinstance(r, sp.Symbol) for _, r in rules]  # a free atom, a jet, a bare angle
+    # an angle on [0, pi] takes its value there (the draw's magnitude: the same draws)
+    half = [getattr(constraint_of(a), "kind", None) == "angle_pi" for a, _ in rules]
     prog = parametrised([r for (_, r), f in zip(rules, free, strict=True) if not f], plan)
     angles = [a for a in sorted(plan.angles, key=sp.default_sort_key)
               if a not in plan.rules]
@@ -193,9 +196,9 @@ def point_maker(plan):
         pt = [fmpq(rng.randint(-40, 40), rng.randint(1, 12)) for _ in plan.params]
         values = iter(run_exact(prog, pt))
         out = {}
-        for (atom, _), f in zip(rules, free, strict=True):
+        for (atom, _), f, h in zip(rules, free, half, strict=True):
             v = Fraction(rng.randint(-10**8, 10**8), 10**8) * 3 if f else next(values)
-            out[atom] = v if f else Fraction(int(v.p), int(v.q))
+            out[atom] = (abs(v) if h else v) if f else Fraction(int(v.p), int(v.q))
         for a in angles:  # one value per angle
             out[a] = Fraction(rng.randint(1, 10**8), 10**8) * 3
         return out

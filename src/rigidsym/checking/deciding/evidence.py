@@ -10,6 +10,7 @@ from fractions import Fraction
 
 import sympy as sp
 
+from rigidsym.algebra.symbols import constraint_of
 from rigidsym.checking.deciding.balls import (
     NUMERIC_DIGITS,
     NUMERIC_POINTS,
@@ -47,13 +48,26 @@ def _small_witness(entries, plan, seed):
     # a fixed number of tries, never a clock: under load a deadline picked another point and
     # made the committed report depend on the machine (each try takes about a millisecond)
     for _ in range(300):
-        pt = {p: rng.choice(small) for p in plan.params}
+        pt = in_range(plan, {p: rng.choice(small) for p in plan.params})
         try:
             if any(evaluate(e, plan, pt) != 0 for e in entries):
                 return pt
         except (ZeroDivisionError, Unsupported):
             continue
     return None
+
+
+def in_range(plan, pt: dict) -> dict:
+    """``pt`` with the half-angle tangent ``tau = tan(a / 2M)`` of every angle ``a`` on
+    ``[0, pi]`` brought into range: ``|tau|`` for ``M = 1``, ``|tau| / (M (1 + |tau|)) <
+    1 / M < tan(pi / 2M)`` above (a counterexample is a point of the declared domain)."""
+    out = dict(pt)
+    for a, (tau, m) in plan.angles.items():
+        c = constraint_of(a)
+        if c is not None and c.kind == "angle_pi" and tau in out:
+            t = abs(out[tau])
+            out[tau] = t if m == 1 else t / (m * (1 + t))
+    return out
 
 
 def _exact_value(x, plan, pt):
@@ -71,14 +85,15 @@ def _exact_value(x, plan, pt):
     return one(x)
 
 
-def _counterexample(lhs, rhs, witness, seed) -> tuple[dict, object, dict]:
-    """The readable counterexample record, with the plan and the exact parameter point."""
-    plan = make_plan(_entries(lhs) + _entries(rhs))
+def _counterexample(lhs, rhs, witness, seed, extra=()) -> tuple[dict, object, dict]:
+    """The readable counterexample record, with the plan and the exact parameter point
+    (``extra``: expressions whose atoms the plan must also give values, the ball's)."""
+    plan = make_plan(_entries(lhs) + _entries(rhs) + list(extra))
     diff = [a - b for a, b in zip(_entries(lhs), _entries(rhs), strict=True)] \
         if shape_of(lhs) == shape_of(rhs) else []
     pt = _small_witness(diff, plan, seed) if diff else None
     if pt is None:  # keep the proven witness; parameters it does not mention get 1/2
-        pt = {p: witness.get(p, Fraction(1, 2)) for p in plan.params}
+        pt = in_range(plan, {p: witness.get(p, Fraction(1, 2)) for p in plan.params})
     point = {}
     for atom, rule in sorted(plan.rules.items(), key=lambda kv: sp.default_sort_key(kv[0])):
         if atom in plan.bare:

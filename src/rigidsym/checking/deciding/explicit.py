@@ -7,8 +7,12 @@ from __future__ import annotations
 import zlib
 
 import sympy as sp
+from sympy.core.function import AppliedUndef
 from sympy.matrices.expressions.matexpr import MatrixElement
+from sympy.matrices.kind import MatrixKind
 
+from rigidsym.algebra.lie import LieOp
+from rigidsym.algebra.operators import Diff, DiffEntry
 from rigidsym.checking.deciding.registry import Rel
 
 
@@ -41,7 +45,8 @@ _EXPLICIT_CACHE: dict = {}
 def _sc(s, model):
     """Explicit scalar: model substituted, matrix-valued sub-terms evaluated."""
     y = s.xreplace(model) if model else s
-    if not y.has(sp.Trace, sp.Determinant, MatrixElement, sp.MatrixExpr):
+    if not y.has(sp.Trace, sp.Determinant, MatrixElement, sp.MatrixExpr, sp.Derivative,
+                 DiffEntry):
         return y
 
     def ev(z):
@@ -51,10 +56,17 @@ def _sc(s, model):
             return _mx(z.arg, {}).det(method="berkowitz")
         if isinstance(z, MatrixElement):
             return _mx(z.parent, {})[int(z.i), int(z.j)]
+        if isinstance(z, DiffEntry):  # an entry of a lazy derivative
+            return sp.diff(_mx(z.args[0], {})[int(z.args[2]), int(z.args[3])], z.args[1])
         return None
 
-    out = y.replace(lambda z: isinstance(z, sp.Trace | sp.Determinant | MatrixElement), ev)
-    return out.doit() if out.has(sp.MatrixExpr) else out
+    out = y.replace(lambda z: isinstance(z, sp.Trace | sp.Determinant | MatrixElement
+                                         | DiffEntry), ev)
+    out = out.doit() if out.has(sp.MatrixExpr) else out
+    if out.has(sp.Derivative):  # a derivative of a model's expression: taken now
+        out = out.replace(lambda z: isinstance(z, sp.Derivative)
+                          and not isinstance(z.expr, AppliedUndef), lambda z: z.doit())
+    return out
 
 
 def _mx(x, model) -> sp.ImmutableMatrix:
@@ -98,6 +110,10 @@ def _mx(x, model) -> sp.ImmutableMatrix:
         return im(_mx(x.arg, model).T)
     if isinstance(x, sp.Inverse):
         return im(_mx(x.arg, model).inv())
+    if isinstance(x, Diff):
+        return im(sp.Matrix(_mx(x.args[0], model)).diff(_sc(x.args[1], model)))
+    if isinstance(x, LieOp):  # hat, vee, transform, Ad, ad, expm (rigidsym.algebra.lie)
+        return im(x.value(*[_mx(a, model) for a in x.args[:x.operands]]))
     if isinstance(x, sp.BlockMatrix):
         blocks = x.blocks
         rows = [[_mx(blocks[i, j], model) for j in range(blocks.cols)]
@@ -109,10 +125,22 @@ def _mx(x, model) -> sp.ImmutableMatrix:
     return im(y.as_explicit() if isinstance(y, sp.MatrixExpr) else y)
 
 
+class UnknownShape(ValueError):
+    """A node whose shape the rules do not know (matrix-valued to sympy, yet not a matrix
+    expression): its shape is never evidence of a mismatch."""
+
+
 def shape_of(x) -> tuple[int, int]:
-    """Shape of a matrix, matrix expression or scalar (a scalar is 1 x 1)."""
+    """Shape of a matrix, matrix expression or scalar (a scalar is 1 x 1).
+
+    Raises:
+        UnknownShape: ``x`` is matrix-valued to sympy but has no known shape (a sympy
+            ``Derivative`` of a matrix symbol, say): never read as 1 x 1.
+    """
     if isinstance(x, sp.MatrixBase | sp.MatrixExpr):
         return tuple(int(n) for n in x.shape)
+    if isinstance(getattr(x, "kind", None), MatrixKind):
+        raise UnknownShape(f"no shape rule for the node {type(x).__name__}: {x}")
     return (1, 1)
 
 

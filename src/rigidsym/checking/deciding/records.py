@@ -14,7 +14,8 @@ from rigidsym.algebra.symbols import TIME, constraint_of
 from rigidsym.checking.deciding.explicit import _entries
 from rigidsym.printing import notation
 
-__all__ = ["member_record", "model_words", "MEMBER_TEXT_LIMIT", "MEMBER_LATEX_LIMIT"]
+__all__ = ["member_record", "model_words", "printed_latex", "MEMBER_TEXT_LIMIT",
+           "MEMBER_LATEX_LIMIT"]
 
 
 #: member texts longer than this are not kept: such a member is an explicit component
@@ -58,6 +59,15 @@ def member_record(rel, role: str, out) -> dict:
             "detail": detail,
             "text": text if 0 < len(text) <= MEMBER_TEXT_LIMIT else None,
             "latex": tex if 0 < len(tex) <= MEMBER_LATEX_LIMIT else None}
+
+
+def printed_latex(members: list[dict]) -> str:
+    """The LaTeX of a user's equation as printed, from its printed members (a user id
+    declares no ``latex=``): every member whose book notation was kept (at most
+    :data:`MEMBER_TEXT_LIMIT` characters, so a form of 160 is always shown), ``""`` when a
+    member's was not (issue 28)."""
+    tex = [m["latex"] for m in members if m["role"] == "printed"]
+    return r",\quad ".join(tex) if tex and all(tex) else ""
 
 
 def _atoms(x, cap: int) -> int:

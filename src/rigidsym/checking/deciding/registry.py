@@ -17,6 +17,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from rigidsym._config import BOOK as BOOK_PACKAGE
+from rigidsym.checking.deciding.nodes import BadInput, Rel  # re-exported: their home
 
 __all__ = [
     "Rel",
@@ -61,30 +62,6 @@ def _in_book(module: str) -> bool:
 def is_user_id(eq_id: str) -> bool:
     """Whether ``eq_id`` is a user id (``namespace:name``) rather than a book id."""
     return bool(_USER_ID.match(eq_id))
-
-
-class BadInput(ValueError):
-    """Bad user input: an unknown or malformed id or section, a user module that cannot be
-    loaded (the CLI exits with code 2). A ``ValueError``.
-
-    Args:
-        message: one line naming the input and what was expected.
-    """
-
-
-@dataclass(frozen=True)
-class Rel:
-    """One equality ``lhs = rhs`` to decide (sympy expressions, matrices or matrix expressions).
-
-    Attributes:
-        lhs: the left-hand side.
-        rhs: the right-hand side, of the same shape.
-        label: names the member in reports (``"d_P"``, ``"second member"``); optional.
-    """
-
-    lhs: Any
-    rhs: Any
-    label: str = ""
 
 
 @dataclass

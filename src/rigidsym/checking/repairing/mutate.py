@@ -40,6 +40,7 @@ from dataclasses import dataclass, field
 import sympy as sp
 from sympy.core.function import AppliedUndef
 
+from rigidsym.algebra.lie import LieOp
 from rigidsym.algebra.symbols import TIME, constraint_of
 from rigidsym.checking.repairing import treeops as T
 from rigidsym.checking.repairing.edit_words import describe
@@ -48,7 +49,7 @@ __all__ = ["KINDS", "MUTATION_KINDS", "VOCABULARY_VERSION", "Edit", "Pools", "po
            "single_edits", "compatible", "apply_edits", "describe", "mutants"]
 
 #: bumped whenever the vocabulary or its order changes (it joins the verdict cache's key)
-VOCABULARY_VERSION = 1
+VOCABULARY_VERSION = 2  # 2: the found repairs in a reader's order (issue 28 item 4)
 KINDS = ("flip-sign", "drop-term", "insert-term", "scale-term", "coefficient", "transpose",
          "drop-transpose", "transpose-every", "swap-factors", "reverse-product", "sin-cos",
          "replace-symbol", "replace-every", "multiply-factor")
@@ -123,11 +124,12 @@ def _is_scalar_atom(x) -> bool:
 
 
 def _term_paths(root) -> list[tuple]:
-    """Paths of the terms of ``root``: children of sums, blocks of block matrices, and
-    the root itself when it is not a sum."""
+    """Paths of the terms of ``root``: children of sums, blocks of block matrices, the
+    operands of a rigid-motion word (``transform(R, p)``'s ``p``), and the root itself when
+    it is not a sum."""
     out = [] if isinstance(root, sp.Add | sp.MatAdd) else [()]
     for path, x in T.positions(root):
-        if isinstance(x, sp.Add | sp.MatAdd | sp.BlockMatrix):
+        if isinstance(x, sp.Add | sp.MatAdd | sp.BlockMatrix | LieOp):
             out += [path + (i,) for i in range(len(T.children(x)))]
     return sorted(set(out))
 

@@ -216,14 +216,27 @@ def search_member(rel: Rel, sh: Shared, budget: int = REPAIR_BUDGET) -> Search:
     done = _run(ctx, (((x.edit,), x.raw) for x in singles))
     if s.found:
         s.depth, s.complete = 1, done
+        s.found.sort(key=lambda f: reader_key(f.edits, ctx.sides))
         return s
     if not done:
         return s
     done = _run(ctx, candidates.pairs(rel, singles, ctx.sides))
     s.depth = 2 if s.found else 0
     s.complete = done
-    s.found.sort(key=lambda f: (sorted(e.order for e in f.edits)))
+    s.found.sort(key=lambda f: reader_key(f.edits, ctx.sides))
     return s
+
+
+def reader_key(edits, sides: tuple) -> tuple:
+    """The order of found repairs, as a reader fixes an equation (``docs/repairs.md``):
+    an edit that inserts a copy of a side (the same equation, moved: ``Ω = (R - Rᵀ)/sin θ
+    - Ω``) after every other; then, for ``X = ...`` with ``X`` a bare symbol, an edit of
+    the formula's side before one of ``X`` (the ½ goes on the right, not a 2 on ``Ω``);
+    then the edit kinds' order (:data:`mutate.KINDS`) and the positions in the tree."""
+    moved = any(e.kind == "insert-term" and e.what[1] in sides for e in edits)
+    defined = isinstance(sides[0], sp.Symbol | sp.MatrixSymbol)
+    on_defined = defined and any(c.side == 0 for e in edits for c in e.changes)
+    return (moved, on_defined, sorted(e.order for e in edits))
 
 
 def _run(ctx: _Ctx, cands) -> bool:

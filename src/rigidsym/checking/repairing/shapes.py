@@ -15,7 +15,8 @@ from sympy.core.function import AppliedUndef
 from sympy.matrices.expressions.matexpr import MatrixElement
 from sympy.matrices.expressions.slice import MatrixSlice
 
-from rigidsym.algebra.operators import Cpm, Cross, Det, Vect
+from rigidsym.algebra.lie import LieOp
+from rigidsym.algebra.operators import Cpm, Cross, Det, Diff, Vect
 
 __all__ = ["ShapeError", "RawBlocks", "is_matrix", "children", "node_at", "positions", "shape"]
 
@@ -66,8 +67,10 @@ def _children_rule(cls) -> int:
         return 3
     if issubclass(cls, RawBlocks):
         return 4
-    if issubclass(cls, sp.Pow | sp.MatPow | MatrixElement | MatrixSlice):
+    if issubclass(cls, sp.Pow | sp.MatPow | MatrixElement | MatrixSlice | Diff):
         return 1
+    if issubclass(cls, LieOp):  # the operands; the order flag is no editable child
+        return 5
     if issubclass(cls, _ALL_ARGS):
         return 2
     return 0
@@ -91,6 +94,8 @@ def children(x) -> tuple:
         return tuple(x.blocks)
     if rule == 4:
         return x.args[2:]
+    if rule == 5:
+        return x.args[:x.operands]
     return ()
 
 
@@ -172,6 +177,16 @@ def _shape(x, memo):
                 any(len({g[i][j][1] for i in range(r)}) != 1 for j in range(c)):
             raise ShapeError("blocks that do not fit")
         return (sum(row[0][0] for row in g), sum(k[1] for k in g[0]))
+    if isinstance(x, Cross | Cpm | Vect | Diff | LieOp):
+        return _operator_shape(x, kids)
+    if any(k is not None for k in kids):
+        raise ShapeError(f"a matrix inside {type(x).__name__}")
+    return None
+
+
+def _operator_shape(x, kids: list):
+    """The shape of a book operator (cross product, CPM, vect, a derivative, a word of
+    the rigid-motion vocabulary) from its operands'."""
     if isinstance(x, Cross):
         if kids != [(3, 1), (3, 1)]:
             raise ShapeError("a cross product of non-3-vectors")
@@ -184,6 +199,14 @@ def _shape(x, memo):
         if kids != [(3, 3)]:
             raise ShapeError("the axial vector of a non-3x3 matrix")
         return (3, 1)
-    if any(k is not None for k in kids):
-        raise ShapeError(f"a matrix inside {type(x).__name__}")
-    return None
+    if isinstance(x, Diff):
+        if kids[0] is None:
+            raise ShapeError("a matrix derivative of a scalar")
+        return kids[0]
+    # a word of rigidsym.algebra.lie (hat, vee, transform, Ad, ad, expm)
+    if any(k is None for k in kids):
+        raise ShapeError(f"a scalar inside {x.label}")
+    try:
+        return x.shape_of(kids)
+    except ValueError as exc:
+        raise ShapeError(str(exc)) from None

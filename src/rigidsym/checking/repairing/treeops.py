@@ -25,6 +25,8 @@ import sympy as sp
 from sympy.matrices.expressions.matexpr import MatrixElement
 from sympy.matrices.expressions.slice import MatrixSlice
 
+from rigidsym.algebra.lie import LieOp
+from rigidsym.algebra.operators import Diff
 from rigidsym.checking.repairing.marks import Marked, MarkedScalar, mark
 from rigidsym.checking.repairing.shapes import (
     RawBlocks,
@@ -99,6 +101,8 @@ def _rebuild_with(x, kids: list, raw: bool):
         return sp.Basic.__new__(MatrixSlice, kids[0], *x.args[1:])
     if isinstance(x, sp.Transpose):
         return kids[0].arg if isinstance(kids[0], sp.Transpose) else sp.Transpose(kids[0])
+    if isinstance(x, LieOp | Diff):  # operands edited; the order flag or variable kept
+        return x.func(*kids, *x.args[len(kids):])
     return x.func(*kids)
 
 

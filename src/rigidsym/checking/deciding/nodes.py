@@ -1,0 +1,141 @@
+"""A relation :class:`Rel` and what its sides may be written in: the nodes the engine knows,
+checked when a ``Rel`` is made (:class:`BadInput`, the error of bad user input, lives here
+too; both are re-exported by :mod:`rigidsym.checking.deciding.registry`).
+
+A node the engine does not know would be decided through a guess (sympy calls a
+``Derivative`` of a 3 x 3 symbol a scalar; an undefined ``f(theta)`` and ``f(phi)`` would
+be one variable): such a node is refused at declaration time with ``BadInput`` naming it
+and the vocabulary word to use. A ``Derivative`` of a matrix at the top of a side becomes the lazy
+:class:`~rigidsym.algebra.operators.Diff`, which the engine knows (issue 28).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+import sympy as sp
+from sympy.core.function import AppliedUndef
+from sympy.matrices.kind import MatrixKind
+
+from rigidsym.algebra.operators import Det, Diff, DiffEntry
+from rigidsym.algebra.symbols import TIME, constraint_of
+
+__all__ = ["BadInput", "Rel", "check_side", "UnknownNode", "WORDS"]
+
+#: sympy functions a printed form may not hold, and the word of ``rigidsym`` to use
+WORDS = {
+    "exp": "rigidsym.expm (the exponential of so(3) or se(3))",
+    "log": "rigidsym.logm (the principal logarithm of a rotation or a transform)",
+    "asin": "rigidsym.acos or rigidsym.atan2 (principal branches the zero test honours)",
+    "atan": "rigidsym.atan2 (principal branch the zero test honours)",
+    "acot": "rigidsym.atan2", "asec": "rigidsym.acos", "acsc": "rigidsym.acos",
+}
+
+
+def _is_matrix_valued(x) -> bool:
+    return isinstance(x, sp.MatrixBase | sp.MatrixExpr) or \
+        isinstance(getattr(x, "kind", None), MatrixKind)
+
+
+class UnknownNode(ValueError):
+    """A node the engine does not know (``Rel`` raises it as ``BadInput``)."""
+
+
+def _refuse(what: str, node, word: str):
+    text = sp.sstr(node)
+    text = text if len(text) <= 80 else text[:77] + "..."
+    raise UnknownNode(f"{what}: the node {type(node).__name__} `{text}` is not in the "
+                   f"vocabulary the engine decides; use {word}")
+
+
+def check_side(x, what: str):
+    """The side ``x`` of a relation, checked (and a top-level matrix ``Derivative`` made a
+    :class:`Diff`).
+
+    Args:
+        x: a sympy expression, matrix or matrix expression.
+        what: the side's name in messages (``"lhs"``, ``"rhs"``).
+
+    Returns:
+        ``x``, or ``Diff(X, v)`` for ``x = Derivative(X, v)`` with ``X`` a matrix.
+
+    Raises:
+        UnknownNode: a node the engine does not know (a matrix ``Derivative`` inside an
+            expression, a function of a matrix, an undefined function of anything but
+            time, an inverse trigonometric function other than ``acos``/``atan2``); the
+            message names the node and the word to use.
+    """
+    if isinstance(x, sp.Derivative) and _is_matrix_valued(x.expr):
+        out = x.expr
+        for v, n in x.variable_count:
+            for _ in range(int(n)):
+                out = Diff(out, v)
+        x = out
+    _walk(x, what)
+    return x
+
+
+def _walk(x, what: str) -> None:
+    seen: set = set()
+    stack = [x]
+    while stack:
+        y = stack.pop()
+        if isinstance(y, sp.MatrixBase):
+            stack.extend(y)
+            continue
+        if not isinstance(y, sp.Basic) or y in seen:
+            continue
+        seen.add(y)
+        if y.is_Atom:
+            continue
+        if isinstance(y, sp.Derivative):
+            if _is_matrix_valued(y.expr):
+                _refuse(what, y, "rigidsym.diff(X, v) (a matrix derivative, lazily)")
+        elif isinstance(y, AppliedUndef):
+            if y.args != (TIME,) and constraint_of(y) is None:
+                _refuse(what, y, "rigidsym.scalar(name, t=TIME) for a function of time, or "
+                                 "a book symbol with a model")
+            continue
+        elif isinstance(y, sp.Function) and not isinstance(y, sp.MatrixExpr):
+            name = type(y).__name__
+            if name in WORDS:
+                _refuse(what, y, WORDS[name])
+            if not isinstance(y, Det | DiffEntry) and any(_is_matrix_valued(a) for a in y.args):
+                _refuse(what, y, "an operator of rigidsym.declare (trace, Det, expm, ...)")
+        stack.extend(y.args)
+
+
+class BadInput(ValueError):
+    """Bad user input: an unknown or malformed id or section, a user module that cannot be
+    loaded (the CLI exits with code 2). A ``ValueError``.
+
+    Args:
+        message: one line naming the input and what was expected.
+    """
+
+
+@dataclass(frozen=True)
+class Rel:
+    """One equality ``lhs = rhs`` to decide (sympy expressions, matrices or matrix expressions).
+
+    Attributes:
+        lhs: the left-hand side.
+        rhs: the right-hand side, of the same shape.
+        label: names the member in reports (``"d_P"``, ``"second member"``); optional.
+
+    Raises:
+        BadInput: a side holds a node the engine does not know (the message names it and
+            the word of :mod:`rigidsym.declare` to use).
+    """
+
+    lhs: Any
+    rhs: Any
+    label: str = ""
+
+    def __post_init__(self):
+        try:
+            object.__setattr__(self, "lhs", check_side(self.lhs, "lhs"))
+            object.__setattr__(self, "rhs", check_side(self.rhs, "rhs"))
+        except UnknownNode as exc:
+            raise BadInput(str(exc)) from None

@@ -1,0 +1,56 @@
+"""The PyTorch and JAX programs of a kernel (issue 31): the optimised program, printed.
+
+Each back-end file holds the kernel's straight-line program(s) exactly as the NumPy and C
+kernels print them (the same :class:`~rigidsym.codegen.optimise.Program` objects of the
+compiled kernel, rewrites included), printed by the visitor printers of
+:mod:`rigidsym.codegen.printers`: one function per variant taking one array per scalar
+input component and returning ``(outputs, denominators)``, and one condition function per
+branch. Validation, broadcasting, branch selection (with the safe-``where`` idiom) and the
+derivatives live in the runtime (:mod:`rigidsym.kernels.torch`, :mod:`rigidsym.kernels.jax`),
+so that the generated files stay small and cheap to print.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from rigidsym.codegen.printers import KernelJaxPrinter, torch_printer
+
+__all__ = ["BACKENDS", "render_array_kernels"]
+
+#: back-end -> (folder, module the printed code names)
+BACKENDS = {"torch": "torch", "jax": "jax.numpy"}
+
+
+def _printer(backend: str):
+    return torch_printer() if backend == "torch" else KernelJaxPrinter()
+
+
+def _variant(v: Any, printer) -> dict:
+    p = v.program
+    return {"name": v.name,
+            "cond": None if v.cond is None else printer.doprint(v.cond),
+            "temps": [(str(s), printer.doprint(e)) for s, e in p.temps],
+            "outputs": [printer.doprint(e) for e in p.outputs],
+            "dens": [printer.doprint(e) for e in p.dens]}
+
+
+def render_array_kernels(env, kc: Any, header) -> dict[str, str]:
+    """``{"torch/<name>.py": text, "jax/<name>.py": text}`` for the compiled kernel ``kc``.
+
+    Args:
+        env: the generator's Jinja2 environment.
+        kc: a :class:`rigidsym.codegen.generator.KernelCode`.
+        header: ``header(template) -> [lines]``, the generator's file header.
+    """
+    t = "array_kernel.py.j2"
+    columns = [str(s) for _, syms in kc.inputs for s in syms]
+    files = {}
+    for backend, module in BACKENDS.items():
+        pr = _printer(backend)
+        # branches first, in order, then main (the order of the NumPy kernel's selection)
+        variants = [_variant(v, pr) for v in kc.variants]
+        files[f"{backend}/{kc.kernel.name}.py"] = env.get_template(t).render(
+            header=header(t), backend=backend, module=module, k=kc.kernel, ops=kc.ops,
+            hash=kc.hash, columns=columns, variants=variants)
+    return files

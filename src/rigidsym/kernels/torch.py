@@ -1,0 +1,313 @@
+"""PyTorch kernels generated from the verified chapter-3 declarations (issue 31).
+
+``pip install "rigidsym[torch]"``. The same kernels, names and positional arguments as
+:mod:`rigidsym.kernels`, on tensors: leading batch axes broadcast, float32 and float64
+(the promoted dtype of the tensor and NumPy inputs; Python numbers and lists alone take
+``torch.get_default_dtype()``), every result on the device of the inputs (no host copy).
+The programs are those the NumPy and C kernels print (``generated/torch``).
+
+Keywords (no ``out=``, no ``threads=``: meaningless or harmful under autograd and
+``torch.compile``):
+
+* ``check``: validate finiteness, unit vectors and rotations, and report an overflow;
+  default ``True`` in eager mode; refused (``ValueError``) under ``torch.compile`` and
+  ``torch.func`` transforms, where the default is ``False`` (no host synchronisation).
+* ``on_singular``: ``"nan"`` (NaN in exactly the singular samples) everywhere; ``"raise"``
+  (:class:`~rigidsym.kernels.SingularConfigurationError` with the batch indices) in eager
+  mode only, its default there; ``"nan"`` is the default while traced.
+
+Derivatives: a kernel with a generated Jacobian kernel (``<name>_with_jacobians``) is a
+``torch.autograd.Function`` (``setup_context``, a generated vmap rule, ``backward`` and
+``jvp``) whose derivative *is* that verified Jacobian; double backward is not supported
+(``create_graph=True`` raises, saying so). The others (the branch kernels, the Euler-angle rates)
+are differentiated by autograd through the generated expression, with the safe-``where``
+idiom at their branches.
+
+Example:
+    >>> import torch
+    >>> from rigidsym.kernels import torch as rk
+    >>> f64 = torch.float64
+    >>> omega = torch.tensor([[0.0, 0.0, 2.0]], dtype=f64, requires_grad=True)
+    >>> a, a_dot = torch.zeros(1, 3, dtype=f64), torch.tensor([[1.0, 0.0, 1.0]], dtype=f64)
+    >>> p0, pitch, plucker = rk.instant_screw_axis(omega, a, a_dot)
+    >>> pitch.sum().backward()
+    >>> omega.grad.tolist()
+    [[0.25, 0.0, -0.25]]
+"""
+
+from __future__ import annotations
+
+import math
+import types
+from pathlib import Path
+
+try:
+    import torch
+except ImportError as _exc:  # pragma: no cover - exercised where PyTorch is absent
+    raise ImportError("rigidsym.kernels.torch needs PyTorch: pip install "
+                      "'rigidsym[torch]'") from _exc
+import numpy as np
+
+from rigidsym.kernels import _arrays
+from rigidsym.kernels._errors import NonFiniteResultError, SingularConfigurationError
+
+__all__ = ["load", "euler_rate_matrix", "euler_angle_rates", "SingularConfigurationError",
+           "NonFiniteResultError"]
+
+_TRACER = "torch.compile / torch.func"
+_BAD_KINDS = "bcOUSMmV"
+
+
+def _traced(xs) -> bool:
+    return torch.compiler.is_compiling() or any(
+        torch._C._functorch.is_functorch_wrapped_tensor(x) for x in xs)
+
+
+def _dtype(values) -> torch.dtype:
+    found = [v.dtype for v in values if isinstance(v, torch.Tensor) and v.dtype.is_floating_point]
+    found += [torch.from_numpy(np.empty(0, v.dtype)).dtype for v in values
+              if isinstance(v, np.ndarray) and v.dtype.kind == "f"]
+    if not found:
+        return torch.get_default_dtype()
+    dt = found[0]
+    for d in found[1:]:
+        dt = torch.promote_types(dt, d)
+    return dt
+
+
+def _convert(name: str, values: tuple, args: list[dict]) -> list:
+    """Tensors of one dtype on the inputs' device; errors name the argument."""
+    device = next((v.device for v in values if isinstance(v, torch.Tensor)), None)
+    dtype = _dtype(values)
+    res = []
+    for v, a in zip(values, args, strict=True):
+        if isinstance(v, torch.Tensor):
+            if v.dtype == torch.bool or v.dtype.is_complex:
+                raise TypeError(f"{a['name']}: expected real numbers, got a {v.dtype} tensor")
+            if v.device != device:
+                raise ValueError(f"{a['name']}: on {v.device}, the other inputs on {device}")
+            t = v if v.dtype == dtype else v.to(dtype)
+        else:
+            try:
+                arr = np.asarray(v)
+            except ValueError as exc:
+                raise ValueError(f"{a['name']}: not a rectangular array ({exc})") from None
+            if arr.dtype.kind in _BAD_KINDS:
+                raise TypeError(f"{a['name']}: expected real numbers, got {arr.dtype}")
+            t = torch.as_tensor(arr, dtype=dtype, device=device)
+        shape = tuple(a["shape"])
+        if tuple(t.shape[t.ndim - len(shape):]) != shape or t.ndim < len(shape):
+            raise ValueError(f"{a['name']}: expected shape {_arrays._shp(shape)}, got "
+                             f"{tuple(t.shape)}")
+        res.append(t)
+    return res
+
+
+def _batch(xs, args) -> tuple:
+    try:
+        return tuple(torch.broadcast_shapes(*[x.shape[:x.ndim - len(a["shape"])]
+                                              for x, a in zip(xs, args, strict=True)]))
+    except RuntimeError:
+        shapes = ", ".join(f"{a['name']} {tuple(x.shape)}" for x, a in zip(xs, args,
+                                                                             strict=True))
+        raise ValueError(f"batch shapes do not broadcast: {shapes}") from None
+
+
+def _fixed_arity(values, n: int):
+    """``forward(x0, ..., x{n-1})``: Dynamo reads a ``forward(*xs)`` as taking ``ctx``
+    first, so the arity is spelled out (the kernels' argument counts differ)."""
+    params = ", ".join(f"x{i}" for i in range(n))
+    scope: dict = {"values": values}
+    exec(f"def forward({params}):\n    return values(({params},))\n", scope)  # noqa: S102
+    return scope["forward"]
+
+
+class _Space:
+    """The PyTorch kernels of one generated directory."""
+
+    def __init__(self, directory):
+        self.progs = _arrays.ArraySpace.from_directory(directory, "torch")
+        # every program loaded and every function made now (0.15 s for the package's 134
+        # kernels), never inside a traced call: torch.compile(fullgraph=True) / jit
+        # then see only tensor code
+        self._fns: dict = {}
+        for name in self.progs.meta:
+            self.progs.variants(name)
+        for name in self.progs.meta:
+            if not name.endswith(_arrays.SUFFIX):
+                self.function(name)
+
+    def function(self, name: str):
+        """The ``torch.autograd.Function`` of ``name`` (None: no Jacobian kernel)."""
+        if name not in self._fns:
+            self._fns[name] = self._make(name) if self.progs.has_jacobian(name) else None
+        return self._fns[name]
+
+    def _make(self, name: str):
+        meta, progs = self.progs.meta[name], self.progs
+        args, outs = meta["args"], meta["outputs"]
+        nval = sum(math.prod(o["shape"]) for o in outs)
+
+        def values(xs):
+            cols = _arrays.columns(xs, args)
+            flat, sing = _arrays.evaluate(torch, progs.variants(name), cols, torch.detach)
+            return (*_arrays.shape_outputs(torch, flat, outs, cols[0]), sing)
+
+        def jac(xs):  # the generated Jacobian kernel's entries, flat
+            cols = _arrays.columns(xs, args)
+            flat, _ = _arrays.evaluate(torch, progs.variants(name + _arrays.SUFFIX), cols,
+                                       torch.detach)
+            return flat[nval:]
+
+        class KernelFunction(torch.autograd.Function):
+            generate_vmap_rule = True
+
+            forward = staticmethod(_fixed_arity(values, len(args)))
+
+            @staticmethod
+            def setup_context(ctx, inputs, output):
+                ctx.save_for_backward(*inputs)
+                ctx.save_for_forward(*inputs)
+                ctx.mark_non_differentiable(output[-1])
+
+            @staticmethod
+            def backward(ctx, *grads):
+                # create_graph=True: a second derivative asked (torch.func's transforms
+                # run backward with grad mode on, on their wrapped tensors: not that)
+                if torch.is_grad_enabled() and not _traced(grads):
+                    raise RuntimeError(
+                        f"rigidsym.kernels.torch.{name}: double backward (create_graph=True) "
+                        "is not supported: the derivative is the generated first-order "
+                        "Jacobian kernel")
+                xs = ctx.saved_tensors
+                return tuple(_arrays.contract(torch, list(grads[:-1]), jac(xs), outs, args,
+                                              forward=False))
+
+            @staticmethod
+            def jvp(ctx, *tangents):
+                xs = ctx.saved_tensors
+                t = [torch.zeros_like(x) if d is None else d for x, d in zip(xs, tangents,
+                                                                             strict=True)]
+                return (*_arrays.contract(torch, t, jac(xs), outs, args, forward=True), None)
+
+        KernelFunction.__name__ = KernelFunction.__qualname__ = f"{name}_function"
+        return KernelFunction
+
+    def call(self, name: str, values: tuple, check, on_singular):
+        meta = self.progs.meta[name]
+        args, outs = meta["args"], meta["outputs"]
+        xs = _convert(name, values, args)
+        check, on_singular = _arrays.modes(check, on_singular, _traced(xs), _TRACER)
+        batch = _batch(xs, args)
+        if check:
+            _arrays.validate(torch, [x.detach() for x in xs], args)
+        full = [x.broadcast_to(batch + tuple(a["shape"])) for x, a in zip(xs, args, strict=True)]
+        fn = self.function(name)
+        if fn is not None:
+            *res, sing = fn.apply(*full)
+        else:
+            cols = _arrays.columns(full, args)
+            flat, sing = _arrays.evaluate(torch, self.progs.variants(name), cols, torch.detach)
+            res = _arrays.shape_outputs(torch, flat, outs, cols[0])
+        bad = sing
+        if check:
+            over = torch.zeros_like(sing)
+            for r in res:
+                over = over | ~torch.isfinite(r.reshape(batch + (-1,))).all(-1)
+            over = over & ~sing
+            bad = sing | over
+        if on_singular == "raise":
+            if bool(bad.any()):  # the error path copies the masks to the host
+                _arrays.raise_flagged(name, meta, sing.cpu().numpy(),
+                                      (bad & ~sing).cpu().numpy(),
+                                      [x.detach().cpu().numpy() for x in xs])
+        else:
+            res = [torch.where(bad.reshape(batch + (1,) * (r.ndim - len(batch))),
+                               torch.nan, r) for r in res]
+        return res[0] if len(res) == 1 else tuple(res)
+
+
+_SPACES: dict = {}
+
+
+def _space(directory=None) -> _Space:
+    key = None if directory is None else Path(directory).resolve()
+    if key not in _SPACES:
+        _SPACES[key] = _Space(directory)
+    return _SPACES[key]
+
+
+def load(directory: str | Path | None = None) -> types.ModuleType:
+    """The PyTorch kernels of a generated directory (``rigidsym generate --out DIR``).
+
+    Args:
+        directory: a folder with ``kernels.json`` and ``torch/``; default the package's.
+
+    Returns:
+        A namespace with one function per public kernel and ``KERNEL_NAMES``.
+
+    Raises:
+        FileNotFoundError: no ``kernels.json`` or ``torch/`` there.
+    """
+    space = _space(directory)
+    return _arrays.namespace(space.progs, space.call, f"rigidsym.kernels.torch.load("
+                             f"{str(directory)!r})")
+
+
+def euler_rate_matrix(angles, sequence: str, frame: str = "fixed", *, check=None,
+                      on_singular=None):
+    """Euler-angle rate matrix ``W`` with ``omega = W eta_dot`` (Exercise 3.10).
+
+    Args:
+        angles: tensor (..., 3), the intrinsic Euler angles [rad] of ``sequence``.
+        sequence: one of the twelve intrinsic sequences ("ZXZ", "ZYX", ...).
+        frame: "fixed" (omega in the fixed frame) or "body".
+        check, on_singular: see the module.
+
+    Returns:
+        tensor (..., 3, 3); derivative: the generated Jacobian kernel.
+
+    Raises:
+        TypeError, ValueError: bad input, naming the argument.
+    """
+    name = _arrays.euler_name(_space().progs, "euler_rate_matrix", sequence, frame)
+    return _space().call(name, (angles,), check, on_singular)
+
+
+def euler_angle_rates(angles, omega, sequence: str, frame: str = "fixed", *, check=None,
+                      on_singular=None):
+    """Euler-angle rates ``eta_dot = W^-1 omega`` (Exercise 3.10).
+
+    Args:
+        angles: tensor (..., 3) [rad].
+        omega: tensor (..., 3) [rad/s], in the frame given by ``frame``.
+        sequence: one of the twelve intrinsic sequences.
+        frame: "fixed" or "body".
+        check, on_singular: see the module.
+
+    Returns:
+        tensor (..., 3); derivative: autograd through the generated expression.
+
+    Raises:
+        TypeError, ValueError: bad input, naming the argument.
+        SingularConfigurationError: at gimbal lock, eager with on_singular="raise".
+    """
+    name = _arrays.euler_name(_space().progs, "euler_angle_rates", sequence, frame)
+    return _space().call(name, (angles, omega), check, on_singular)
+
+
+__all__ += _space().progs.kernel_names()
+
+
+def __getattr__(attr: str):
+    # the package's kernels, made on first access (importing this module stays cheap)
+    space = _space()
+    if attr in space.progs.kernel_names():
+        fn = _arrays.make_kernel(space.progs, space.call, attr, __name__)
+        globals()[attr] = fn
+        return fn
+    raise AttributeError(f"module {__name__!r} has no attribute {attr!r}")
+
+
+def __dir__():
+    return sorted([*globals(), *_space().progs.kernel_names()])

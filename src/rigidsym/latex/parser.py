@@ -1,0 +1,386 @@
+"""Read the chapter's LaTeX into the declaration vocabulary's atoms and operators.
+
+:func:`parse_latex` parses a LaTeX string with the lark grammar ``grammar.lark`` (LALR(1))
+and builds, relation by relation, sympy objects of :mod:`rigidsym.declare`'s vocabulary:
+book matrices (``MatrixSymbol``) and scalars (real ``Symbol``) named by the glyph table
+(:mod:`rigidsym.latex.table`), ``Cross``, ``Det``, ``Cpm``, ``Vect``, ``Trace``, block
+matrices, transposes, inverses and powers. Juxtaposition is a matrix product or a scalar
+product according to the shapes; a shape that does not fit is an error, never a guess.
+
+Book: J. Angeles, *Fundamentals of Robotic Mechanical Systems*, Chap. 3 (its notation,
+``../shared/NOTATION.md``).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import lark
+import sympy as sp
+
+from rigidsym.algebra.operators import Cross, Det, Vect
+from rigidsym.latex.lexing import Parsed, Relation, parser
+from rigidsym.latex.shapes import (
+    LatexError,
+    _as_block,
+    _as_scalar,
+    _default_glyph,
+    _fit,
+    _fit_blocks,
+    _product,
+    _shape,
+    _words,
+)
+from rigidsym.latex.table import Glyph, lookup
+
+__all__ = ["LatexError", "Relation", "Parsed", "parser"]
+
+
+# --------------------------------------------------------------------------- lexing
+
+
+# --------------------------------------------------------------------------- shapes
+
+
+_TIME = sp.Symbol("t", real=True)  # the plain letter t: time, the argument of p(t)
+
+
+class _Build(lark.Transformer):
+    """Tree -> sympy, in the declaration vocabulary (see the module docstring)."""
+
+    def __init__(self, section: str, overrides: dict, block_rows: bool):
+        super().__init__()
+        self.section, self.overrides, self.block_rows = section, overrides, block_rows
+        self.readings: list[str] = []
+        self.glyphs: dict[str, Glyph] = {}
+        self.made: dict = {}  # result -> (how, parts): to re-read a bracket as a block row
+
+    # ---- glyphs
+    def base(self, items):
+        if len(items) == 2:
+            bold, letter = items
+            return ("bold", str(letter))
+        return ("plain", str(items[0]))
+
+    def zero(self, _):
+        return ("zero", "0")
+
+    def one(self, _):
+        return ("one", "1")
+
+    def subscript(self, items):
+        return ("sub", "".join(str(i) for i in items))
+
+    def times(self, _):
+        return "\\times "
+
+    def slash(self, _):
+        return "/"
+
+    def calsub(self, items):
+        return "\\mathcal{" + str(items[0]) + "}" + (str(items[1]) if len(items) > 1 else "")
+
+    def _key(self, base, rest, accent=None) -> str:
+        kind, letter = base
+        core = {"bold": f"\\mathbf{{{letter}}}" if not letter.startswith("\\")
+                else f"\\boldsymbol{{{letter}}}",
+                "plain": letter, "zero": "\\mathbf{0}", "one": "\\mathbf{1}"}[kind]
+        if accent:
+            core = f"{accent}{{{core}}}"
+        for r in rest:
+            if isinstance(r, tuple):
+                core += "_{" + r[1] + "}"
+            else:
+                core += str(r)
+        return core
+
+    def glyph(self, items):
+        return self._resolve(items[0], items[1:], None)
+
+    def accented(self, items):
+        accent, inner = str(items[0]), items[1]
+        if not isinstance(inner, _GlyphKey):
+            raise LatexError(f"{accent} over an expression: expected a glyph", "accent")
+        base, rest = inner.base, list(inner.rest) + list(items[2:])
+        self.glyphs.pop(inner.key, None)  # only the accented glyph is a symbol here
+        return self._resolve(base, rest, (inner.accent or "") + accent if inner.accent
+                             else accent, inner)
+
+    def arrow(self, items):
+        key = f"\\overrightarrow{{{items[0]}}}"
+        return self._symbol(key, None)
+
+    def _resolve(self, base, rest, accent, inner=None):
+        if inner is not None:  # an accent over a glyph that has its own sub/primes
+            key = f"{accent}{{{inner.key}}}" + "".join(
+                "_{" + r[1] + "}" if isinstance(r, tuple) else str(r)
+                for r in rest[len(inner.rest):])
+        else:
+            key = self._key(base, rest, accent)
+        kind = base[0]
+        if kind == "zero":
+            return _GlyphKey(key, base, rest, accent, sp.ZeroMatrix(3, 1))
+        if kind == "one":
+            n = 3
+            for r in rest:
+                if isinstance(r, tuple) and "times" in r[1]:
+                    n = int(r[1].split("\\times")[0])
+            return _GlyphKey(key, base, rest, accent, sp.Identity(n))
+        if kind == "bold" and base[1] == "O" and not accent:
+            rows = cols = 3
+            for r in rest:
+                if isinstance(r, tuple) and r[1].isdigit() and len(r[1]) == 2:
+                    rows, cols = int(r[1][0]), int(r[1][1])
+            return _GlyphKey(key, base, rest, accent, sp.ZeroMatrix(rows, cols))
+        if kind == "plain" and base[1] == "t" and not rest and not accent:
+            return _GlyphKey(key, base, rest, accent, _TIME)
+        return _GlyphKey(key, base, rest, accent, self._symbol(key, base))
+
+    def _symbol(self, key, base):
+        g = self.overrides.get(key) or lookup(key, self.section)
+        if g is None:
+            g = _default_glyph(key, base)
+        self.glyphs[key] = g
+        if g.shape == ():
+            return sp.Symbol(g.name, real=True)
+        if g.kind == "row":  # a per-id note: the text's vector stands for its row
+            self.readings.append(f"{key} read as the row {g.name}^T (per-id note)")
+            return sp.MatrixSymbol(g.name, *g.shape).T
+        return sp.MatrixSymbol(g.name, *g.shape)
+
+    # ---- numbers and groups
+    def number(self, items):
+        return sp.Rational(str(items[0]))
+
+    def pi(self, _):
+        return sp.pi
+
+    def bracket(self, items):
+        x = items[0]
+        if self.block_rows:
+            return self._block_row(x)
+        return _value(x)
+
+    def sized(self, items):
+        x = items[1]
+        if self.block_rows and "[" in str(items[0]):
+            return self._block_row(x)
+        return _value(x)
+
+    def _block_row(self, x):
+        """``[A  v]`` whose column separator was lost in the conversion: a block row."""
+        note = "read [...] as a block row: its column separator was lost in the conversion"
+        if isinstance(x, _Pending):  # A + (c M) v or A - c v: shapes 3x3 and 3x1
+            b = self.made.get(x.b)
+            if b and b[0] == "mul" and _shape(b[1][0]) == _shape(x.a):
+                left = x.a + b[1][0] if x.op == "add" else x.a - b[1][0]
+                self.readings.append(note)
+                return sp.BlockMatrix([[left, b[1][1]]])
+            self.readings.append(note)
+            return sp.BlockMatrix([[x.a, x.b if x.op == "add" else -x.b]])
+        how = self.made.get(x)
+        if how and how[0] == "mul":
+            a, b = how[1]
+            if _shape(a) and _shape(b) and _shape(b)[1] == 1 and _shape(a)[1] != 1:
+                self.readings.append(note)
+                return sp.BlockMatrix([[a, b]])
+        return x
+
+    # ---- arithmetic
+    def add(self, items):
+        a, b = (_value(i) for i in items)
+        return self._sum(a, b, "add")
+
+    def sub(self, items):
+        a, b = _value(items[0]), items[1]
+        if isinstance(b, _Brace):  # a - \underbrace{p + q}: a brace groups nothing
+            how = self.made.get(b.body)
+            if how and how[0] in ("add", "sub"):
+                return self._sum(self._sum(a, how[1][0], "sub"), how[1][1], how[0])
+        return self._sum(a, _value(b), "sub")
+
+    def _sum(self, a, b, op):
+        sa, sb = _shape(a), _shape(b)
+        if sa != sb and self.block_rows and sa and sb:
+            return _Pending(a, b, op)
+        a, b = _fit(a, b, op)
+        r = a + b if op == "add" else a - b
+        self.made[r] = (op, (a, b))
+        return r
+
+    def neg(self, items):
+        b = items[0]
+        if isinstance(b, _Brace):  # -\underbrace{p + q} is -p + q
+            how = self.made.get(b.body)
+            if how and how[0] in ("add", "sub"):
+                return self._sum(-how[1][0], how[1][1], how[0])
+        return -_value(b)
+
+    def mul(self, items):
+        a, b = (_value(i) for i in items)
+        if b is _TIME and _shape(a) is not None or (b is _TIME and isinstance(a, sp.Symbol)):
+            self.readings.append("(t): a function of time")
+            return a
+        r = _product(a, b)
+        self.made[r] = ("mul", (a, b))
+        return r
+
+    def div(self, items):
+        a, b = (_value(i) for i in items)
+        b = _as_scalar(b)
+        if _shape(b) is not None:
+            raise LatexError(f"division by {_words(b)}: expected a scalar denominator",
+                             "shapes")
+        return a / b
+
+    def frac(self, items):
+        return self.div(items)
+
+    def cross(self, items):
+        a, b = (_value(i) for i in items)
+        if _shape(a) != (3, 1) or _shape(b) != (3, 1):
+            raise LatexError(f"\\times between {_words(a)} and {_words(b)}: expected two "
+                             f"3-vectors", "shapes")
+        return Cross(a, b)
+
+    def dot(self, items):
+        a, b = (_value(i) for i in items)
+        if _shape(a) is None or _shape(b) is None:
+            return _product(a, b)
+        if _shape(a) != _shape(b) or _shape(a)[1] != 1:
+            raise LatexError(f"\\cdot between {_words(a)} and {_words(b)}: expected two "
+                             f"vectors of one size", "shapes")
+        return _as_scalar(a.T * b)
+
+    def power(self, items):
+        x, sup = _value(items[0]), items[1]
+        if sup == "T":
+            if _shape(x) is None:
+                raise LatexError("^T of a scalar: expected a matrix or vector", "shapes")
+            return x.T
+        n = int(sup)
+        if _shape(x) is None:
+            return x ** n
+        if n == -1:
+            return x.inverse() if not isinstance(x, sp.MatrixBase) else x.inv()
+        if _shape(x) == (1, 1):
+            return _as_scalar(x) ** n
+        return x ** n
+
+    def sup(self, items):
+        return str(items[0])
+
+    def norm(self, items):
+        x = _value(items[0])
+        if _shape(x) is None or _shape(x)[1] != 1:
+            raise LatexError(f"\\|...\\| of {_words(x)}: expected a vector", "shapes")
+        return sp.sqrt(_as_scalar(x.T * x))
+
+    def func(self, items):
+        name, x = str(items[0]), _value(items[1])
+        x = _as_scalar(x) if "det" not in name else x
+        fn = name.split("{")[-1].rstrip("}").lstrip("\\")
+        if fn in ("sin", "cos", "tan"):
+            return getattr(sp, fn)(x)
+        if fn == "arctan":
+            return sp.atan(x)
+        if fn == "det":
+            return Det(x)
+        if fn == "tr":
+            if _shape(x) is None or _shape(x)[0] != _shape(x)[1]:
+                raise LatexError(f"tr of {_words(x)}: expected a square matrix", "shapes")
+            return sp.Trace(x)
+        if fn == "vect":
+            if _shape(x) != (3, 3):
+                raise LatexError(f"vect of {_words(x)}: expected a 3x3 matrix", "shapes")
+            return Vect(x)
+        raise LatexError(f"unknown operator {name}", f"unknown macro {name}")
+
+    def one_trace(self, items):
+        x = _value(items[-1])
+        self.readings.append("\\mathbf{1tr}(X): 1 tr(X), the identity times the trace")
+        return sp.Trace(x) * sp.Identity(_shape(x)[0])
+
+    def cpm(self, items):
+        from rigidsym.algebra.operators import Cpm
+
+        x = _value(items[-1] if not isinstance(items[0], lark.Token) else items[1])
+        if _shape(x) != (3, 1):
+            raise LatexError(f"CPM of {_words(x)}: expected a 3-vector", "shapes")
+        return Cpm(x)
+
+    def frame(self, items):
+        x, frame = _value(items[0]), str(items[1])
+        swap = {}
+        for s in x.atoms(sp.MatrixSymbol):
+            key = next((k for k, g in self.glyphs.items() if g.name == s.name), None)
+            if key is None:
+                continue
+            g = lookup(f"[{key}]_{{\\mathcal{{{frame}}}}}", self.section)
+            name = g.name if g else f"{s.name}_{frame}"
+            swap[s] = sp.MatrixSymbol(name, *s.shape)
+        return x.xreplace(swap)
+
+    def underbrace(self, items):
+        body, label = _value(items[0]), _value(items[1])
+        self.braces.append((label, body))
+        return _Brace(body)
+
+    def matrix(self, items):
+        rows = [r for r in items if isinstance(r, list)]
+        cells = _fit_blocks([[_as_block(c) for c in row] for row in rows])
+        try:
+            return sp.BlockMatrix(cells) if any(len(r) > 1 for r in cells) or len(cells) > 1 \
+                else cells[0][0]
+        except ValueError as exc:
+            raise LatexError(f"a matrix whose blocks do not fit: {exc}", "shapes") from exc
+
+    def row(self, items):
+        return [_value(i) for i in items if not isinstance(i, lark.Token)]
+
+    # ---- relations
+    def chain(self, items):
+        exprs = [_value(i) for i in items if not isinstance(i, lark.Token)]
+        ops = ["equiv" if "equiv" in str(t) else "=" for t in items
+               if isinstance(t, lark.Token) and t.type == "RELOP"]
+        return ("chain", exprs, ops)
+
+    def start(self, items):
+        for t in items:
+            if isinstance(t, lark.Token):  # "\\text{for } phi \\neq 0": a side condition
+                self.readings.append(f"side condition not checked: {t}")
+        return [i for i in items if not isinstance(i, lark.Token)]
+
+
+@dataclass(frozen=True)
+class _GlyphKey:
+    key: str
+    base: tuple
+    rest: list
+    accent: str | None
+    value: object
+
+
+@dataclass(frozen=True)
+class _Brace:
+    body: object
+
+
+@dataclass(frozen=True)
+class _Pending:
+    a: object
+    b: object
+    op: str
+
+
+def _value(x):
+    if isinstance(x, _GlyphKey):
+        return x.value
+    if isinstance(x, _Brace):
+        return x.body
+    if isinstance(x, _Pending):
+        raise LatexError(f"a sum of {_words(x.a)} and {_words(x.b)}: shapes do not fit",
+                         "shapes")
+    return x
+
+

@@ -1,0 +1,85 @@
+"""Read a LaTeX statement: :func:`parse_latex` (lark's parse, then the transformer of
+:mod:`rigidsym.latex.parser`), with errors that say where and what was expected."""
+
+from __future__ import annotations
+
+import lark
+import sympy as sp
+
+from rigidsym.latex.lexing import Parsed, Relation, parser
+from rigidsym.latex.parser import _Build, _value
+from rigidsym.latex.shapes import LatexError, _as_scalar, _caret, _shape
+
+__all__ = ["parse_latex"]
+
+
+def parse_latex(latex: str, section: str = "*", overrides: dict | None = None,
+                block_rows: bool = False) -> Parsed:
+    """Parse a LaTeX statement into relations of book symbols.
+
+    Args:
+        latex: the LaTeX (one or more relations separated by ``,``, ``\\quad`` or
+            ``\\text{or}``; ``=``/``\\equiv`` chains; ``aligned`` blocks).
+        section: the book section whose glyph-table rows name the glyphs (``"3.4.2"``);
+            ``"*"``: only the section-free rows.
+        overrides: glyph rows by LaTeX key that take precedence (a per-id note's).
+        block_rows: read a bracket ``[A v]`` whose column separator was lost (the
+            conversion's slip in (3.77b-d), (3.97a-c)) as a block row.
+
+    Returns:
+        A :class:`Parsed`.
+
+    Raises:
+        LatexError: unparseable LaTeX (position, caret, expected constructs), an unknown
+            macro (named) or shapes that do not fit.
+    """
+    if not isinstance(latex, str) or not latex.strip():
+        raise LatexError(f"latex: expected a non-empty LaTeX string, got {latex!r}")
+    try:
+        tree = parser().parse(latex)
+    except lark.UnexpectedCharacters as exc:
+        pos = exc.pos_in_stream
+        rest = latex[pos:]
+        if rest.startswith("\\"):
+            macro = "\\" + "".join(ch for ch in rest[1:].split("{")[0].split(" ")[0]
+                                   if ch.isalpha())
+            raise LatexError(f"unknown macro {macro} at position {pos}:\n"
+                             f"{_caret(latex, pos)}", f"unknown macro {macro}") from None
+        raise LatexError(f"unexpected {rest[:1]!r} at position {pos}:\n{_caret(latex, pos)}",
+                         "syntax") from None
+    except lark.UnexpectedToken as exc:
+        pos = exc.token.start_pos if exc.token.start_pos is not None else len(latex)
+        expected = ", ".join(sorted(exc.expected)[:8])
+        what = "the end" if exc.token.type == "$END" else repr(str(exc.token))
+        raise LatexError(f"unexpected {what} at position {pos}:\n{_caret(latex, pos)}\n"
+                         f"  expected one of: {expected}", "syntax") from None
+    except lark.UnexpectedEOF as exc:
+        raise LatexError(f"unexpected end of input; expected one of: "
+                         f"{', '.join(sorted(exc.expected)[:8])}", "syntax") from None
+    build = _Build(section, overrides or {}, block_rows)
+    build.braces = []
+    try:
+        stmts = build.transform(tree)
+    except lark.exceptions.VisitError as exc:
+        if isinstance(exc.orig_exc, LatexError):
+            raise exc.orig_exc from None
+        raise LatexError(f"cannot read {latex!r}: {exc.orig_exc}", "shapes") from None
+    out = Parsed(readings=build.readings, glyphs=build.glyphs)
+    for st in stmts:
+        _, exprs, ops = st
+        exprs = [_as_scalar(_value(e)) for e in exprs]
+        sized = next((_shape(e) for e in exprs if _shape(e)
+                      and not isinstance(e, sp.ZeroMatrix)), None)
+        exprs = [sp.ZeroMatrix(*sized) if isinstance(e, sp.ZeroMatrix) and sized else e
+                 for e in exprs]  # "= \mathbf{0}": the zero of the other side's shape
+        out.chains.append(exprs)
+        out.ops.append(ops)
+    for label, body in build.braces:  # an underbrace whose label is a symbol: a member
+        if isinstance(label, sp.Symbol | sp.MatrixSymbol):
+            out.chains.append([label, _as_scalar(body)])
+            out.ops.append(["="])
+            out.readings.append(f"underbrace: {label} is a member of its own")
+    for c, exprs in enumerate(out.chains):
+        for k in range(len(exprs) - 1):
+            out.relations.append(Relation(exprs[k], exprs[k + 1], out.ops[c][k], c, k))
+    return out

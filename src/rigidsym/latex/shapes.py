@@ -1,0 +1,131 @@
+"""Shapes and errors of the LaTeX reader: the shape rules of juxtaposition and sums, block
+sizing, default glyphs and :class:`LatexError` (used by :mod:`rigidsym.latex.parser`)."""
+
+from __future__ import annotations
+
+import re
+
+import sympy as sp
+
+from rigidsym.latex.table import Glyph
+
+__all__ = ["LatexError"]
+
+
+class LatexError(ValueError):
+    """LaTeX that cannot be read: a syntax error (with the position, a caret under the
+    offending token and the constructs expected), an unknown macro (named), or a
+    juxtaposition or sum whose shapes do not fit (a ``ValueError``).
+
+    Attributes:
+        construct: a short name of what could not be read (``"syntax"``, ``"unknown macro
+            \\int"``, ``"shapes"``).
+    """
+
+    def __init__(self, message: str, construct: str = "syntax"):
+        super().__init__(message)
+        self.construct = construct
+
+
+def _shape(x) -> tuple[int, int] | None:
+    """``(rows, cols)`` of a matrix expression, ``None`` for a scalar."""
+    if isinstance(x, sp.MatrixBase | sp.MatrixExpr):
+        return int(x.shape[0]), int(x.shape[1])
+    return None
+
+
+def _as_scalar(x):
+    """A 1 x 1 matrix as its entry (the book's ``e^T d`` is a scalar)."""
+    s = _shape(x)
+    if s == (1, 1):  # lazily: indexing a symbolic product builds a sum (slow)
+        return x[0, 0] if isinstance(x, sp.MatrixBase) else sp.Trace(x)
+    return x
+
+
+def _words(x) -> str:
+    s = _shape(x)
+    return "a scalar" if s is None else f"a {s[0]}x{s[1]} matrix"
+
+
+def _default_glyph(key: str, base) -> Glyph:
+    """A glyph the table does not list: bold lower-case a 3-vector, bold capital a 3x3
+    matrix, anything else a scalar; named after its LaTeX."""
+    shape: tuple = ()
+    if base and base[0] == "bold":
+        letter = base[1].lstrip("\\")
+        shape = (3, 3) if letter[0].isupper() else (3, 1)
+    return Glyph(key, "*", _name_from_key(key), shape, "free", "(not in the glyph table)", "")
+
+
+def _name_from_key(key: str) -> str:
+    s = re.sub(r"\\(mathbf|boldsymbol|mathcal)\{([^}]*)\}", r"\2", key)
+    s = re.sub(r"\\(dot|ddot|tilde|hat|bar)\{([^}]*)\}", lambda m: m.group(2) + m.group(1), s)
+    s = s.replace("\\", "").replace("{", "").replace("}", "")
+    return s
+
+
+def _fit(a, b, op):
+    a, b = _as_scalar(a), _as_scalar(b)
+    if _shape(a) != _shape(b):
+        if _shape(a) is None and a == 0:
+            return sp.ZeroMatrix(*_shape(b)), b
+        if _shape(b) is None and b == 0:
+            return a, sp.ZeroMatrix(*_shape(a))
+        word = "sum" if op == "add" else "difference"
+        raise LatexError(f"a {word} of {_words(a)} and {_words(b)}: shapes do not fit",
+                         "shapes")
+    return a, b
+
+
+def _product(a, b):
+    sa, sb = _shape(a), _shape(b)
+    if sa is None or sb is None:
+        return a * b
+    if sa[1] == sb[0]:
+        r = a * b
+        return r
+    if sa == (1, 1):
+        return _as_scalar(a) * b
+    if sb == (1, 1):
+        return a * _as_scalar(b)
+    raise LatexError(f"juxtaposition of {_words(a)} and {_words(b)}: no product fits "
+                     f"(declare the shapes, e.g. with the glyph table)", "shapes")
+
+
+def _as_block(c):
+    if _shape(c) is None:
+        return sp.ImmutableMatrix([[c]])
+    return c
+
+
+def _fit_blocks(cells: list[list]) -> list[list]:
+    """Size the zero and identity blocks (``\\mathbf{O}``, ``\\mathbf{0}``, ``\\mathbf{1}``)
+    from the other blocks of their row and column: the book writes them unsized."""
+    def loose(c):
+        return isinstance(c, sp.ZeroMatrix | sp.Identity)
+
+    def first(sizes):  # a sized block, else an identity's (square) size
+        sizes = list(sizes)
+        return next((n for n, c in sizes if not loose(c)),
+                    next((n for n, c in sizes if isinstance(c, sp.Identity)), None))
+
+    heights = [first((_shape(c)[0], c) for c in row) for row in cells]
+    ncol = max(len(r) for r in cells)
+    widths = [first((_shape(r[j])[1], r[j]) for r in cells if j < len(r))
+              for j in range(ncol)]
+    out = []
+    for i, row in enumerate(cells):
+        new = []
+        for j, c in enumerate(row):
+            if loose(c) and heights[i] and widths[j] and _shape(c) != (heights[i], widths[j]):
+                if isinstance(c, sp.Identity) and heights[i] != widths[j]:
+                    raise LatexError("an identity block that is not square", "shapes")
+                c = (sp.ZeroMatrix(heights[i], widths[j]) if isinstance(c, sp.ZeroMatrix)
+                     else sp.Identity(heights[i]))
+            new.append(c)
+        out.append(new)
+    return out
+
+
+def _caret(text: str, pos: int) -> str:
+    return f"  {text}\n  {' ' * pos}^"

@@ -1,0 +1,74 @@
+"""Shared inputs of the PyTorch and JAX kernel tests (issue 31): random valid samples for
+every public kernel and for the Euler-angle kernels, and probes within 1e-6 of the singular
+sets, all as float64 NumPy arrays; the reference values and Jacobians come from the NumPy
+kernels (:mod:`rigidsym.kernels`, :func:`rigidsym.kernels.jacobian`)."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from rigidsym import kernels as K
+from rigidsym.kernels import _state
+
+
+def sample(name: str, n: int, seed: int = 0) -> list[np.ndarray]:
+    """``n`` random valid samples of every argument of kernel ``name`` (unit vectors,
+    rotations, angles in (0.3, 2.8), others standard normal)."""
+    rng = np.random.default_rng(seed)
+    out = []
+    for a in _state.meta()[name]["args"]:
+        shape = (n, *a["shape"])
+        if a["kind"] == "unit":
+            x = rng.standard_normal(shape)
+            x /= np.linalg.norm(x, axis=-1, keepdims=True)
+        elif a["kind"] == "rotation":
+            e = rng.standard_normal((n, 3))
+            e /= np.linalg.norm(e, axis=-1, keepdims=True)
+            x = K.rotation_from_natural_invariants(e, rng.uniform(0.3, 2.8, n))
+        elif a["kind"] == "angle":
+            x = rng.uniform(0.3, 2.8, shape)
+        else:
+            x = rng.standard_normal(shape)
+        out.append(x)
+    return out
+
+
+#: Euler kernels sampled in the default suite (all 24 of each kind are generated)
+EULER = [("ZYX", "fixed"), ("ZXZ", "body"), ("XYZ", "fixed")]
+
+
+def singular_probes(name: str, n: int = 3) -> list[np.ndarray] | None:
+    """Samples within 1e-6 of kernel ``name``'s singular set, or None (no singular set)."""
+    meta = _state.meta()[name]
+    arg = meta["singular_arg"]
+    if not arg:
+        return None
+    xs = sample(name, n, seed=7)
+    names = [a["name"] for a in meta["args"]]
+    k = names.index(arg)
+    if arg == "phi":
+        xs[k] = np.full(n, 1e-6)
+    elif arg in ("omega", "p2"):
+        if arg == "p2":
+            xs[k] = xs[names.index("p1")] + 1e-6 * xs[k] / np.linalg.norm(xs[k], axis=-1,
+                                                                          keepdims=True)
+        else:
+            xs[k] = 1e-6 * xs[k] / np.linalg.norm(xs[k], axis=-1, keepdims=True)
+    elif arg == "w_A":
+        xs[k][:, :3] *= 1e-6 / np.linalg.norm(xs[k][:, :3], axis=-1, keepdims=True)
+    elif arg == "Q":  # rotations by pi - 1e-6 and by 1e-6
+        e = np.array([[0.0, 0.6, 0.8], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]])[:n]
+        xs[k] = K.rotation_from_natural_invariants(e, np.array([np.pi - 1e-6, 1e-6,
+                                                                np.pi - 1e-6])[:n])
+    else:
+        return None
+    return xs
+
+
+def euler_probe(sequence: str, n: int = 2, seed: int = 3) -> np.ndarray:
+    """Euler angles within 1e-6 of gimbal lock (middle angle pi/2 for Tait-Bryan
+    sequences, 0 for proper Euler sequences)."""
+    rng = np.random.default_rng(seed)
+    angles = rng.uniform(-1.0, 1.0, (n, 3))
+    angles[:, 1] = (1e-6 if sequence[0] == sequence[2] else np.pi / 2 - 1e-6)
+    return angles

@@ -1,0 +1,267 @@
+"""The PyTorch kernels (issue 31): the NumPy kernels' values, the generated Jacobians as
+their derivatives (backward, forward mode, vmap), gradcheck at random points, no NaN
+gradient within 1e-6 of the singular sets, the keyword rules of eager and compiled calls,
+dtypes, broadcasting, devices, and a user directory."""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+from rigidsym import kernels as K
+from rigidsym.cli import main
+from tests._arrays_cases import EULER, euler_probe, sample, singular_probes
+
+#: skipped without its extra in the README's test command; .ci/run installs it
+pytestmark = pytest.mark.extra
+
+torch = pytest.importorskip("torch", reason="PyTorch is not installed (the [torch] extra)")
+from rigidsym.kernels import torch as rk  # noqa: E402
+
+ALL = list(K.KERNEL_NAMES)
+#: the default suite runs a few kernels (one per family); every kernel runs as `slow`
+FEW = {"N_matrix", "instant_screw_axis", "natural_invariants_from_rotation"}
+NAMES = [n if n in FEW else pytest.param(n, marks=pytest.mark.slow) for n in ALL]
+JAC = [n for n in NAMES if (n if isinstance(n, str) else n.values[0]) + "_with_jacobians"
+       in K._state.meta()]
+PROBED = [n for n in NAMES if singular_probes(n if isinstance(n, str) else n.values[0])
+          is not None]
+
+
+def _t(xs, grad=False):
+    return [torch.tensor(x, dtype=torch.float64, requires_grad=grad) for x in xs]
+
+
+def _tuple(v):
+    return v if isinstance(v, tuple) else (v,)
+
+
+def _close(got, ref, rtol):
+    ref = np.asarray(ref)
+    scale = max(1.0, float(np.abs(ref).max())) if ref.size else 1.0
+    np.testing.assert_allclose(np.asarray(got), ref, rtol=rtol, atol=rtol * scale)
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_values_match_the_numpy_kernel(name):
+    xs = sample(name, 16)
+    ref = _tuple(getattr(K, name)(*xs))
+    got = _tuple(getattr(rk, name)(*_t(xs)))
+    assert len(got) == len(ref)
+    for g, r in zip(got, ref, strict=True):
+        assert g.dtype == torch.float64 and tuple(g.shape) == r.shape
+        _close(g.detach(), r, 1e-13)
+
+
+@pytest.mark.parametrize("seq,frame", EULER)
+def test_euler_kernels_match_numpy(seq, frame):
+    rng = np.random.default_rng(1)
+    ang, w = rng.uniform(-1, 1, (8, 3)), rng.standard_normal((8, 3))
+    _close(rk.euler_rate_matrix(torch.tensor(ang), seq, frame), K.euler_rate_matrix(
+        ang, seq, frame), 1e-13)
+    _close(rk.euler_angle_rates(torch.tensor(ang), torch.tensor(w), seq, frame),
+           K.euler_angle_rates(ang, w, seq, frame), 1e-13)
+
+
+def _autograd_jacobian(fn, xs, outs_count):
+    """d out[k][s, i...] / d xs[j][s, ...] per sample s, by one backward per output entry."""
+    ts = _t(xs, grad=True)
+    outs = _tuple(fn(*ts))
+    jac = []
+    for o in outs[:outs_count]:
+        flat = o.reshape(o.shape[0], -1)
+        rows = []
+        for i in range(flat.shape[1]):
+            gs = torch.autograd.grad(flat[:, i].sum(), ts, allow_unused=True, retain_graph=True)
+            rows.append([torch.zeros_like(t) if g is None else g for g, t in zip(gs, ts,
+                                                                                  strict=True)])
+        jac.append(rows)
+    return jac
+
+
+@pytest.mark.parametrize("name", JAC)
+def test_gradients_are_the_generated_jacobians(name):
+    xs = sample(name, 4, seed=2)
+    _, ref = K.jacobian(name)(*xs)
+    meta = K._state.meta()[name]
+    jac = _autograd_jacobian(getattr(rk, name), xs, len(meta["outputs"]))
+    for k, o in enumerate(meta["outputs"]):
+        for j, a in enumerate(meta["args"]):
+            want = ref[o["name"]][a["name"]].reshape(4, -1, *(a["shape"] or [1]))
+            got = np.stack([np.asarray(row[j]).reshape(4, *(a["shape"] or [1]))
+                            for row in jac[k]], axis=1)
+            _close(got, want, 1e-12)
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_gradcheck_at_random_points(name):
+    xs = _t(sample(name, 2, seed=5), grad=True)
+    fn = getattr(rk, name)
+    assert torch.autograd.gradcheck(lambda *a: fn(*a, check=False), xs)
+
+
+@pytest.mark.parametrize("name", ["instant_screw_axis", "N_matrix", "inertia_dyad_at_point"])
+def test_forward_mode_and_vmap_use_the_same_jacobian(name):
+    xs = sample(name, 1, seed=4)
+    fn = getattr(rk, name)
+    one = [torch.tensor(x[0]) for x in xs]
+
+    def first(*a):
+        return _tuple(fn(*a))[0]
+    fwd = torch.func.jacfwd(first)(*one)
+    rev = torch.func.jacrev(first)(*one)
+    torch.testing.assert_close(fwd, rev, rtol=1e-12, atol=1e-12)
+    batched = torch.func.vmap(first)(*[torch.tensor(x) for x in xs])
+    torch.testing.assert_close(batched[0], first(*one), rtol=1e-15, atol=0)
+
+
+@pytest.mark.parametrize("name", PROBED)
+def test_no_nan_gradient_near_the_singular_sets(name):
+    xs = _t(singular_probes(name), grad=True)
+    outs = _tuple(getattr(rk, name)(*xs))
+    sum(o.sum() for o in outs).backward()
+    for x in xs:
+        assert torch.isfinite(x.grad).all(), name
+
+
+@pytest.mark.parametrize("seq", ["ZYX", "ZXZ"])
+def test_euler_rates_gradients_finite_near_gimbal_lock(seq):
+    ang = torch.tensor(euler_probe(seq), requires_grad=True)
+    w = torch.tensor([[0.1, 0.2, 0.3]] * 2, requires_grad=True)
+    rk.euler_angle_rates(ang, w, seq).sum().backward()
+    assert torch.isfinite(ang.grad).all() and torch.isfinite(w.grad).all()
+    ang2 = torch.tensor(np.random.default_rng(0).uniform(-1, 1, (2, 3)), requires_grad=True)
+    assert torch.autograd.gradcheck(lambda a: rk.euler_angle_rates(a, w.detach(), seq,
+                                                                   check=False), (ang2,))
+
+
+def test_branch_kernel_masked_branches_leak_no_nan():
+    # near pi the main branch divides by |vect Q| ~ 0: its gradient must not leak
+    Q = torch.tensor(singular_probes("natural_invariants_from_rotation")[0], requires_grad=True)
+    e, phi = rk.natural_invariants_from_rotation(Q)
+    (e.sum() + phi.sum()).backward()
+    assert torch.isfinite(Q.grad).all()
+    _close(e.detach(), K.natural_invariants_from_rotation(Q.detach().numpy())[0], 1e-12)
+
+
+def test_singular_samples_raise_in_eager_and_are_nan_on_request():
+    omega = torch.tensor([[0.0, 0.0, 1.0], [0.0, 0.0, 0.0]], dtype=torch.float64,
+                         requires_grad=True)
+    a = torch.zeros(2, 3, dtype=torch.float64)
+    with pytest.raises(K.SingularConfigurationError, match=r"\(1,\)") as info:
+        rk.instant_screw_axis(omega, a, a)
+    assert info.value.argument == "omega"
+    p0, pitch, _ = rk.instant_screw_axis(omega, a, a, on_singular="nan")
+    assert torch.isnan(pitch[1]) and torch.isfinite(pitch[0])
+    pitch[0].backward()   # the NaN row contributes a zero gradient, not NaN
+    assert torch.isfinite(omega.grad).all()
+
+
+def test_keyword_rules_under_compile():
+    xs = [torch.tensor(x) for x in sample("twist_transfer", 4)]
+    f = torch.compile(lambda *a: rk.twist_transfer(*a), backend="aot_eager", fullgraph=True)
+    _close(f(*xs), K.twist_transfer(*[x.numpy() for x in xs]), 1e-13)
+    bad = torch.compile(lambda *a: rk.twist_transfer(*a, check=True), backend="aot_eager")
+    with pytest.raises(Exception, match="check=True needs eager mode"):
+        bad(*xs)
+    with pytest.raises(ValueError, match="on_singular='raise' needs eager mode"):
+        torch.func.vmap(lambda w: rk.N_matrix(w, xs[0][0, 0], on_singular="raise"))(xs[1])
+    for kw in ("out", "threads"):
+        with pytest.raises(TypeError):
+            rk.twist_transfer(*xs, **{kw: None})
+
+
+def test_validation_names_the_argument():
+    e = torch.tensor([1.0, 1.0, 0.0], dtype=torch.float64)
+    with pytest.raises(ValueError, match="e: not a unit vector"):
+        rk.N_matrix(e, 0.5)
+    with pytest.raises(ValueError, match=r"omega: expected shape \(\.\.\., 3\)"):
+        rk.instant_screw_axis(torch.zeros(2), torch.zeros(3), torch.zeros(3))
+    with pytest.raises(TypeError, match="a: expected real numbers"):
+        rk.twist_transfer(torch.zeros(6), torch.zeros(3, dtype=torch.bool), torch.zeros(3))
+    with pytest.raises(ValueError, match="non-finite"):
+        rk.twist_transfer(torch.full((6,), float("nan")), torch.zeros(3), torch.zeros(3))
+    with pytest.raises(ValueError, match="do not broadcast"):
+        rk.twist_transfer(torch.zeros(2, 6), torch.zeros(3, 3), torch.zeros(3))
+
+
+def test_float32_broadcasting_and_double_backward():
+    rng = np.random.default_rng(0)
+    t = torch.tensor(rng.standard_normal((2, 1, 6)), dtype=torch.float32)
+    a = torch.tensor(rng.standard_normal((5, 3)), dtype=torch.float32)
+    p = torch.zeros(3, dtype=torch.float32)
+    out = rk.twist_transfer(t, a, p)
+    assert out.dtype == torch.float32 and tuple(out.shape) == (2, 5, 6)
+    ref = K.twist_transfer(t.double().numpy(), a.double().numpy(), p.double().numpy())
+    np.testing.assert_allclose(out.numpy(), ref, rtol=1e-5, atol=1e-5)
+    x = torch.tensor(rng.standard_normal(3), requires_grad=True)
+    T = rk.kinetic_energy(torch.eye(3, dtype=torch.float64), 2.0, x, x)
+    with pytest.raises(RuntimeError, match="double backward"):
+        torch.autograd.grad(T, x, create_graph=True)
+
+
+def test_rigidsym_kernels_does_not_import_torch_and_missing_torch_names_the_extra():
+    code = ("import sys, rigidsym.kernels; assert 'torch' not in sys.modules\n"
+            "sys.modules['torch'] = None\n"
+            "try:\n    import rigidsym.kernels.torch\nexcept ImportError as e:\n"
+            "    print(e)\n")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                         check=True, timeout=60).stdout
+    assert "pip install 'rigidsym[torch]'" in out
+
+
+def test_user_directory(tmp_path):
+    mod = tmp_path / "kern.py"
+    mod.write_text(
+        "from rigidsym.codegen.spec import Arg, Kernel, Out\n"
+        "def scaled(x, v):\n    return x * v\n"
+        "KERNELS = [Kernel('scaled_vector', 'x v.', 'x v', ('kern:s',), (scaled,),\n"
+        "    (Arg('x', ()), Arg('v', (3,))), (Out('y', (3,)),),\n"
+        "    lambda x, v: {'y': scaled(x, v)})]\n")
+    gen = tmp_path / "gen"
+    assert main(["generate", "--module", str(mod), "--out", str(gen)]) == 0
+    ns = rk.load(gen)
+    assert ns.KERNEL_NAMES == ("scaled_vector",)
+    x = torch.tensor(2.0, dtype=torch.float64, requires_grad=True)
+    y = ns.scaled_vector(x, torch.tensor([1.0, 2.0, 3.0], dtype=torch.float64))
+    y.sum().backward()
+    assert y.tolist() == [2.0, 4.0, 6.0] and x.grad.item() == 6.0
+
+
+def _compiled_matches(name, backend):
+    xs = [torch.tensor(x) for x in sample(name, 4, seed=9)]
+    f = torch.compile(getattr(rk, name), backend=backend, fullgraph=True)
+    for g, r in zip(_tuple(f(*xs)), _tuple(getattr(K, name)(*[x.numpy() for x in xs])),
+                    strict=True):
+        _close(g.detach(), r, 1e-12)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("name", ALL)
+def test_every_kernel_under_aot_eager(name):
+    _compiled_matches(name, "aot_eager")
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("name", ["twist_transfer", "N_matrix", "instant_screw_axis"])
+def test_inductor(name):
+    _compiled_matches(name, "inductor")
+
+
+def test_inside_a_module_with_its_own_parameters():
+    class Screw(torch.nn.Module):
+        def __init__(self):
+            super().__init__()
+            self.omega = torch.nn.Parameter(torch.tensor([0.3, -0.2, 1.0],
+                                                         dtype=torch.float64))
+
+        def forward(self, a, a_dot):
+            return rk.instant_screw_axis(self.omega, a, a_dot)[1]
+
+    m = Screw()
+    a = torch.tensor(sample("instant_screw_axis", 5)[1])
+    m(a, a).pow(2).sum().backward()
+    assert m.omega.grad.shape == (3,) and torch.isfinite(m.omega.grad).all()
