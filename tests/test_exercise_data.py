@@ -212,7 +212,7 @@ def test_ill_posed_data_give_one_sentence(ex_id, data, words):
 @pytest.mark.parametrize(("ex_id", "data", "error", "words"), [
     ("ex3.4", dict(n_3=[1, 2, 3]), TypeError, "no parameter 'n_3'"),
     ("ex3.4", dict(n_1=[1, 2]), ValueError, "n_1: expected a 3-vector"),
-    ("ex3.4", dict(n_1="1,2,3"), TypeError, "n_1: expected a 3-vector"),
+    ("ex3.4", dict(n_1="1,2"), ValueError, "n_1: expected a 3-vector"),  # the CLI reader
     ("ex3.4", dict(n_1=[1, 2, "y"]), ValueError, "n_1[2]"),
     ("ex3.4", dict(n_1=[1, 2, float("nan")]), ValueError, "n_1[2]: expected a finite"),
     ("ex3.4", dict(n_1=[1, 2, True]), TypeError, "n_1[2]: expected a real number, got a bool"),

@@ -12,7 +12,7 @@ import pytest
 import sympy as sp
 from rigidsym.derivations.exercises import EXERCISE_IDS, normalise_id, solve
 
-from rigidsym.checking.worked import render_markdown, render_text
+from rigidsym.checking.worked import parameters, render_markdown, render_text, to_json_value
 from rigidsym.cli import main
 
 
@@ -40,10 +40,12 @@ def test_cli_json_schema(tmp_path, capsys):
     path = tmp_path / "ex.json"
     assert main(["exercise", "--all", "--json", str(path)]) == 0
     doc = json.loads(path.read_text())
-    assert doc["schema"] == 1
+    assert doc["schema"] == 2 and "python_flint" in doc
     assert [e["id"] for e in doc["exercises"]] == EXERCISE_IDS
     for e in doc["exercises"]:
         assert e["status"] == "solved" and e["checked"] is True
+        assert list(e["data"]) == [p.name for p in parameters(e["id"])]     # schema 2
+        assert e["checks"] and all(c["passed"] for c in e["checks"])
         for v in e["answers"].values():
             for x in (sum(v, []) if isinstance(v, list) and v and isinstance(v[0], list)
                       else v if isinstance(v, list) else [v]):
@@ -81,6 +83,14 @@ def test_cli_student_data(tmp_path, capsys):
     assert "least squares" in capsys.readouterr().out
     doc = json.loads(out.read_text())["exercises"][0]
     assert doc["status"] == "solved" and doc["checked"] and "residual" in doc["answers"]
+    # the key's data, read back, give the key's answers (exact strings: no float drift)
+    again = solve("ex3.4", tol=doc["tol"], **doc["data"])
+    for k, v in doc["answers"].items():
+        if isinstance(v, list):
+            assert sp.Matrix(v) == again.answers[k]
+        else:
+            assert to_json_value(again.answers[k]) == v if k == "residual" else \
+                sp.sympify(v) == again.answers[k]
     assert main(["exercise", "3.14", "--set", "I_B=[[1,0,0],[0,2,0],[0,0,4]]"]) == 1
     assert "not acceptable" in capsys.readouterr().out
     assert main(["exercise", "3.11", "--set", "a=0.05", "--set", "h=1/10"]) == 0

@@ -108,3 +108,22 @@ def test_sample_notebooks_execute(ex_id):
 @pytest.mark.parametrize("ex_id", [i for i in EXERCISE_IDS if i not in SAMPLE])
 def test_every_notebook_executes(ex_id):
     _assert_ran(ex_id)
+
+
+def test_a_variants_try_other_data_cell_is_a_second_valid_variant():
+    # issue 32: the book's changes merged into a variant's readings were incompatible
+    import json
+    import re
+
+    import rigidsym.exercises as ex
+    from rigidsym.report.notebooks import notebook_text
+
+    for ex_id in ("ex3.4", "ex3.19"):
+        variant = {"n_1": ["0", "0", "5"]} if ex_id == "ex3.4" else {"d": ["0.1", "0", "0"]}
+        nb = json.loads(notebook_text(ex_id, variant))
+        cell = "".join(nb["cells"][-1]["source"])
+        calls = re.findall(r"`(ex\.solve\(.*?\))`", cell)
+        assert "second variant" in cell and "**dict(data" not in cell
+        second = eval(calls[0], {"ex": ex})          # the cell's own call, as a reader runs it
+        assert second.status == "solved" and second.checked
+        assert second.data != ex.solve(ex_id, **variant).data

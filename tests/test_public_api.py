@@ -44,8 +44,9 @@ PUBLIC = {
     "rigidsym.codegen.spec": ["Arg", "Branch", "Kernel", "Out", "input_symbols"],
     "rigidsym.cli": ["build_parser", "main"],
     # issue 22: the exercises to run, see and vary
-    "rigidsym.exercises": ["EXERCISE_IDS", "IllPosed", "Param", "Parameters", "Solution",
-                           "figure", "parameters", "solve", "write_notebook"],
+    "rigidsym.exercises": ["EXERCISE_IDS", "Graded", "IllPosed", "Param", "Parameters",
+                           "Solution", "exam", "figure", "grade", "parameters", "solve",
+                           "write_notebook"],   # issue 32: exam, grade, Graded
     # issue 29: the reader of the chapter's LaTeX and the transcription check
     "rigidsym.latex": ["Glyph", "LatexError", "Parsed", "Relation", "glyph_table", "lookup",
                        "parse_latex"],

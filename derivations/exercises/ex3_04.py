@@ -142,3 +142,40 @@ def figure(s: Solution):
     arrow(ax, sp.zeros(3, 1), Q * g["n_2"], "tab:blue", "Q n_2", dashed=True)
     axes3d(ax, [g["f_1"], g["n_1"], sp.ones(3, 1) * size, -sp.ones(3, 1) * size])
     return fig
+
+
+def given_figure(s: Solution):
+    """The given data only (the students' handout): each sensor's readings in its own
+    frame, side by side; the relative orientation is the question."""
+    from ._draw import arrow, axes3d, frame, new_figure
+
+    g = s.data
+    size = max(float(sp.N(sp.sqrt(v.dot(v)))) for v in g.values()) * 0.6
+    fig, ax = new_figure("The readings of sensor 1 (in F_1) and sensor 2 (in F_2)")
+    shift = sp.Matrix([0, 2.5 * size, 0])
+    frame(ax, sp.zeros(3, 1), sp.eye(3), "1", "0.2", scale=size)
+    frame(ax, shift, sp.eye(3), "2", "tab:purple", scale=size)
+    arrow(ax, sp.zeros(3, 1), g["f_1"], "tab:red", "f_1 (in F_1)")
+    arrow(ax, sp.zeros(3, 1), g["n_1"], "tab:blue", "n_1 (in F_1)")
+    arrow(ax, shift, g["f_2"], "tab:red", "f_2 (in F_2)", dashed=True)
+    arrow(ax, shift, g["n_2"], "tab:blue", "n_2 (in F_2)", dashed=True)
+    axes3d(ax, [g["f_1"], g["n_1"], shift + g["f_2"], shift + g["n_2"],
+                sp.ones(3, 1) * size, -sp.ones(3, 1) * size])
+    return fig
+
+
+def _cayley(rng):
+    """A rotation with small rational entries: Cayley's formula of a small rational
+    vector, ``Q = (1 - C)^-1 (1 + C)``."""
+    c = sp.Matrix([sp.Rational(rng.randint(-2, 2), rng.randint(1, 2)) for _ in range(3)])
+    C = sp.Matrix([[0, -c[2], c[1]], [c[2], 0, -c[0]], [-c[1], c[0], 0]])
+    return (sp.eye(3) - C).inv() * (sp.eye(3) + C)
+
+
+def random_data(rng) -> dict:
+    """A well-posed variant with readable exact numbers (an exam's draw): readings in F_1
+    of small integers, F_2 turned by a Cayley rotation of small rationals."""
+    Q = _cayley(rng)
+    n1 = sp.Matrix([rng.randint(-4, 4) for _ in range(3)])
+    f1 = sp.Matrix([rng.randint(-3, 3) for _ in range(3)])
+    return {"n_1": list(n1), "f_1": list(f1), "n_2": list(Q.T * n1), "f_2": list(Q.T * f1)}

@@ -58,6 +58,23 @@ def solve(a=A_SIDE, h=HEIGHT) -> Solution:
     return s
 
 
+def slips(s: Solution) -> dict:
+    """The exercise's own slip, for the grader: the inertia about the centre O of the base
+    (the axis through the base) instead of the centroid C, by Steiner (Eq. 3.133a)."""
+    V, c = s.answers["volume_m3"], s.answers["centroid_m"]
+    shift = c.dot(c) * sp.eye(3) - c * c.T
+    I_O = s.answers["I_C_per_rho_m5"] + V * shift
+    per_kg = s.answers["I_C_per_kg_m2"] + shift
+    return {"I_C_per_rho_m5": [("reference point", "the inertia about the base's centre O, "
+                                "not the centroid C", I_O)],
+            "I_C_per_kg_m2": [("reference point", "the inertia about the base's centre O, "
+                               "not the centroid C", per_kg)],
+            "principal_moments_per_kg_m2": [("reference point", "moments about the base's "
+                                             "centre O, not the centroid C",
+                                             sp.Matrix([per_kg[0, 0], per_kg[1, 1],
+                                                        per_kg[2, 2]]))]}
+
+
 def figure(s: Solution):
     """The prism, its centroid and its centroidal principal axes (labelled with the
     principal moments per kg)."""
@@ -78,3 +95,21 @@ def figure(s: Solution):
     point(ax, c, "k", "centroid C", "C")
     axes3d(ax, pts)
     return fig
+
+
+def given_figure(s: Solution):
+    """The prism of the given data only (side a, height h): no centroid, no axes, no
+    moments (the students' handout)."""
+    from ._draw import axes3d, new_figure
+    from ._prism import draw_prism
+
+    a, h = s.data["a"], s.data["h"]
+    fig, ax = new_figure(f"Hexagonal prism: side a = {a} m, height h = {h} m")
+    axes3d(ax, draw_prism(ax, a, h), legend=False)
+    return fig
+
+
+def random_data(rng) -> dict:
+    """A variant with readable sizes in metres (an exam's draw)."""
+    return {"a": rng.choice(["0.02", "0.025", "0.03", "0.04", "0.05"]),
+            "h": rng.choice(["0.05", "0.1", "0.12", "0.15", "0.2"])}

@@ -86,13 +86,18 @@ def solve(n_S=PARAMETERS[0].default, f_S=PARAMETERS[1].default, d=PARAMETERS[2].
     dg, Qg = vector("d"), rotation("ex319_Q")
     n, f = vector("n"), vector("f")
     Rg = block([[Qg.T, sp.zeros(3)], [sp.zeros(3), Qg.T]])
-    gen = s.step("parametric", Rg * wrench_at(n, f, dg),
-                 "n_P = n_S + (s - p) x f, then both parts rotate into F_2 by Q^T.")
+    gen = Rg * wrench_at(n, f, dg)
+    # shown in the reader's names (Q_11 ...); the check below keeps the constrained atoms
+    s.step("parametric", gen.subs({Qg[i, j]: sp.Symbol(f"Q_{i + 1}{j + 1}", real=True)
+                                   for i in range(3) for j in range(3)}),
+           "n_P = n_S + (s - p) x f, then both parts rotate into F_2 by Q^T.")
     Qr = _rotation(s, Q_val, tol)
     w_S = wrench_at(nS, fS, d_val)
+    turned = not is_zero(Qr - sp.eye(3))
     w = s.step("specialised", block([[Qr.T, sp.zeros(3)], [sp.zeros(3), Qr.T]]) * w_S
-               if not is_zero(Qr - sp.eye(3)) else w_S,
-               "The data in the parametric form (Q = 1: no rotation).")
+               if turned else w_S, "The data in the parametric form (" +
+               (_turn_text(Qr) if turned else "Q = 1: F_2 parallel to F_S, no rotation") +
+               f"; P at d = {list(d_val)} m from S).")
     s.answers = {"w_2": w, "n_2": w[:3, :], "f_2": w[3:, :]}
     om, vS = vector("omega"), vector("v")
     tS = sp.Matrix.vstack(om, vS)
@@ -106,6 +111,36 @@ def solve(n_S=PARAMETERS[0].default, f_S=PARAMETERS[1].default, d=PARAMETERS[2].
     s.check(exact_check("specialised: Q f_2 = f_S and Q n_2 + d x (Q f_2) = n_S reproduce the "
                         "readout", [Qr * f2 - fS, Qr * n2 + d_val.cross(Qr * f2) - nS]))
     return s
+
+
+def _turn_text(Q) -> str:
+    """``F_2 turned by 90 deg about [0, 0, 1]`` from a rotation (angle and axis to 4
+    digits: words for the reader, computed from the data)."""
+    Qf = np.array(sp.N(Q, 17).tolist(), dtype=float)
+    angle = float(np.degrees(np.arccos(np.clip((np.trace(Qf) - 1) / 2, -1, 1))))
+    axis = np.array([Qf[2, 1] - Qf[1, 2], Qf[0, 2] - Qf[2, 0], Qf[1, 0] - Qf[0, 1]])
+    if np.linalg.norm(axis) < 1e-9:          # a half turn: the axis is Q + 1's column
+        M = Qf + np.eye(3)
+        axis = M[:, int(np.argmax(np.linalg.norm(M, axis=0)))]
+    axis = axis / np.linalg.norm(axis)
+    shown = ", ".join(f"{x:.4g}" for x in axis + 0.0)
+    return f"Q: F_2 turned from F_S by {angle:.4g} deg about [{shown}]"
+
+
+def slips(s: Solution) -> dict:
+    """The exercise's own slips, for the grader: the moment left about S (the sensor's
+    origin, not transferred to P) and the moment transfer with the wrong sign."""
+    n_S, f_S, d, Q = (s.data[k] for k in ("n_S", "f_S", "d", "Q"))
+    Qr = next((st.expr for st in s.steps if st.name == "nearest rotation"), Q)
+    about_S = Qr.T * n_S
+    wrong_sign = Qr.T * (n_S + d.cross(f_S))
+    f2 = Qr.T * f_S
+    return {"n_2": [("reference point", "the moment about S (not transferred to P)", about_S),
+                    ("sign", "n_S + d x f (the transfer's sign)", wrong_sign)],
+            "w_2": [("reference point", "the wrench about S (not transferred to P)",
+                     sp.Matrix.vstack(about_S, f2)),
+                    ("sign", "n_S + d x f (the transfer's sign)",
+                     sp.Matrix.vstack(wrong_sign, f2))]}
 
 
 def figure(s: Solution):
@@ -136,3 +171,40 @@ def figure(s: Solution):
     pts = [sp.zeros(3, 1), d, d + f * k, nS * k, d + nP * k, sp.ones(3, 1) * L / 2]
     axes3d(ax, pts)
     return fig
+
+
+def given_figure(s: Solution):
+    """The given data only (the students' handout): the sensor frame F_S at S, the
+    gripper point P at d with the frame F_2 of the given Q, and the readouts n_S, f_S at
+    S; no moment about P."""
+    from ._draw import arrow, axes3d, frame, new_figure, point
+
+    d, f, nS, Q = (s.data[k] for k in ("d", "f_S", "n_S", "Q"))
+    L = max(float(sp.N(sp.sqrt(d.dot(d)))), 0.1)
+    big = max(float(sp.N(sp.sqrt(v.dot(v)))) for v in (f, nS)) or 1.0
+    fig, ax = new_figure("Sensor frame F_S, gripper point P and frame F_2, readouts at S")
+    frame(ax, sp.zeros(3, 1), sp.eye(3) * L / 2, "S", "0.35")
+    frame(ax, d, sp.Matrix(Q) * L / 2, "2", "tab:purple")
+    point(ax, sp.zeros(3, 1), "0.35", text="S")
+    point(ax, d, "tab:purple", text="P")
+    arrow(ax, sp.zeros(3, 1), f, "tab:red", "f_S (read at S)", scale=L / big)
+    arrow(ax, sp.zeros(3, 1), nS, "tab:blue", "n_S (read at S)", scale=L / big)
+    axes3d(ax, [sp.zeros(3, 1), d, f * L / big, nS * L / big, sp.ones(3, 1) * L / 2])
+    return fig
+
+
+def _cayley(rng):
+    """A rotation with small rational entries: Cayley's formula of a small rational
+    vector, ``Q = (1 - C)^-1 (1 + C)``."""
+    c = sp.Matrix([sp.Rational(rng.randint(-2, 2), rng.randint(1, 2)) for _ in range(3)])
+    C = sp.Matrix([[0, -c[2], c[1]], [c[2], 0, -c[0]], [-c[1], c[0], 0]])
+    return (sp.eye(3) - C).inv() * (sp.eye(3) + C)
+
+
+def random_data(rng) -> dict:
+    """A variant with readable exact numbers (an exam's draw): small integer readouts, an
+    offset of a few centimetres, F_2 turned by a Cayley rotation of small rationals."""
+    d = [rng.choice(["0", "0.05", "0.1", "-0.05", "0.2"]) for _ in range(3)]
+    return {"n_S": [rng.randint(-3, 3) for _ in range(3)],
+            "f_S": [rng.randint(-5, 5) for _ in range(3)], "d": d,
+            "Q": _cayley(rng).tolist()}

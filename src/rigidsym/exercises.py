@@ -27,9 +27,10 @@ from rigidsym.checking.worked import (
 )
 from rigidsym.checking.worked import parameters as _parameters
 from rigidsym.checking.worked import solve as _solve
+from rigidsym.checking.worked.grading import Graded
 
-__all__ = ["solve", "parameters", "figure", "write_notebook", "EXERCISE_IDS", "Solution",
-           "Parameters", "Param", "IllPosed"]
+__all__ = ["solve", "parameters", "figure", "write_notebook", "grade", "exam",
+           "EXERCISE_IDS", "Solution", "Parameters", "Param", "IllPosed", "Graded"]
 
 #: The ids of the chapter's exercises in order, ``"ex3.1"`` to ``"ex3.21"``.
 EXERCISE_IDS = _worked.EXERCISE_IDS
@@ -130,3 +131,71 @@ def write_notebook(exercise: str, path: str | Path, **data) -> Path:
 
     ex_id = normalise_id(exercise)
     return write_atomic(Path(path), notebook_text(ex_id, data or None))
+
+
+def grade(solution: Solution, answers: dict) -> list[Graded]:
+    """Grade a student's ``answers`` against ``solution``, naming the slip of a wrong one.
+
+    Each answer is right or wrong within 0.1 % of its largest entry; a wrong one is
+    compared with small edits of the right one (as the repair search edits a printed
+    equation) and the first that matches names the slip: ``"transpose"``, ``"sign"``
+    (whole, one component, or one term of the exercise), ``"degrees"``, ``"unit"`` (a
+    power of ten: mm, cm, g, mm^2), ``"swap"`` (two entries, rows or columns) or
+    ``"reference point"`` (the same quantity about another point of the body, where the
+    exercise declares it: 3.11, 3.19); else the detail says "not a known slip".
+
+    Args:
+        solution: a solved :class:`Solution` from :func:`solve` (the student's data).
+        answers: answer name (as ``rigidsym exercise ID --json`` prints them) -> a number,
+            an exact string such as ``"sqrt(3)/2"``, or nested lists of them.
+
+    Returns:
+        A list of :class:`Graded` (``name``, ``correct``, ``slip``, ``expected``,
+        ``detail``; ``.as_dict()``), in the order of ``answers``.
+
+    Raises:
+        TypeError: ``solution`` is not a :class:`Solution`, or ``answers`` not a dict.
+        ValueError: the solution is ill-posed, or an answer name it does not have.
+    """
+    from rigidsym.checking.worked.grading import grade as _grade
+
+    if not isinstance(solution, Solution):
+        raise TypeError(f"solution: expected a Solution from rigidsym.exercises.solve, got "
+                        f"{type(solution).__name__}")
+    if not isinstance(answers, dict):
+        raise TypeError(f"answers: expected a dict {{name: value}}, got "
+                        f"{type(answers).__name__}")
+    own = getattr(exercise_module(solution.id), "slips", None)
+    return _grade(solution, answers, own(solution) if own and solution.status == "solved"
+                  else None)
+
+
+def exam(spec, out_dir: str | Path, seed: int | None = None) -> dict[str, Path]:
+    """Write an exam set from ``spec``: a student handout and an answer key.
+
+    The spec (a TOML file, or the same as a dict) lists ``[[problem]]`` tables: an
+    ``exercise`` with its ``data``, or ``variants = n`` random well-posed variants drawn
+    from the seed with readable exact numbers (Exercises 3.4, 3.11, 3.19: Cayley
+    rotations of small rationals, small integers, short decimals). See ``docs/exams.md``.
+
+    Args:
+        spec: a ``.toml`` path or a dict (``title``, ``seed``, ``problem``).
+        out_dir: the folder to write (made if missing).
+        seed: the seed of the draws (default: the spec's ``seed``, else 0).
+
+    Returns:
+        ``{"handout": path, "key_html": path, "key_json": path}``: ``handout.html``
+        (statement, data, a figure of the given data only, space for each answer; a
+        print stylesheet; no answer), ``key.html`` (worked, checked solutions and their
+        figures), ``key.json`` (schema 2: each problem's data, answers and checks).
+        The same spec and seed write the same bytes.
+
+    Raises:
+        ValueError: a bad spec (the message names the problem), bad data, or a problem
+            ill-posed on its data.
+        TypeError: bad data (as :func:`solve`).
+        OSError: the folder cannot be written.
+    """
+    from rigidsym.report.exam import exam as _exam
+
+    return _exam(spec, out_dir, seed)

@@ -12,7 +12,7 @@ import argparse
 import os
 import sys
 
-from rigidsym.cli import cache, exercise, generate, glossary, report, show, verify
+from rigidsym.cli import cache, exam, exercise, generate, glossary, report, show, verify
 from rigidsym.cli._common import HelpFormatter, add_ascii, ascii_output
 
 __all__ = ["main", "build_parser"]
@@ -20,6 +20,7 @@ __all__ = ["main", "build_parser"]
 #: the sub-commands: name -> module with ``HELP``, ``add_arguments(parser)``, ``run(args)``
 #: (and optionally ``EXAMPLES``, shown under the command's own ``--help``)
 _COMMANDS = {"verify": verify, "report": report, "show": show, "exercise": exercise,
+             "exam": exam,
              "generate": generate.GENERATE, "build-c": generate.BUILD_C, "cache": cache,
              "glossary": glossary}
 

@@ -40,11 +40,12 @@ def add_arguments(p) -> None:
     p.add_argument("id", nargs="?",
                    help="exercise id: 3.10 or ex3.10 (default: none, list the exercises)")
     p.add_argument("--all", action="store_true", help="solve all 21 exercises (default: off)")
-    p.add_argument("--json", metavar="PATH",
-                   help="also write the results (schema 1) as JSON to this file (default: none)")
+    p.add_argument("--json", metavar="PATH", nargs="?", const="-",
+                   help="also write the results (schema 2: data, answers, checks) as JSON "
+                        "to PATH (no PATH: to stdout; default: none)")
     p.add_argument("--format", choices=("plain", "json"),
-                   help="with --all, what goes to stdout: one line per exercise, or the "
-                        "JSON document (default: plain)")
+                   help="what goes to stdout: the solution (one line per exercise with "
+                        "--all), or the JSON document (default: plain)")
     p.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
                    help="a datum of the exercise (repeatable): n_1=0,0,5 (a vector), "
                         "I_A='1,0,0;0,2,0;0,0,3' (a matrix, rows split by ;), a=0.05; "
@@ -54,6 +55,10 @@ def add_arguments(p) -> None:
                         "decimal point are floats, read as measurements; strings are exact")
     p.add_argument("--tol", help="tolerance of measured data (Exercises 3.4, 3.14, 3.19); "
                                  "given, it selects the least-squares path")
+    p.add_argument("--grade", metavar="ANSWERS",
+                   help="grade a student's answers (a JSON file {name: value}, or a folder "
+                        "or CSV of them for a class) against the solution on the data; "
+                        "names the slip of a wrong answer (with --json: JSON)")
     p.add_argument("--parameters", action="store_true",
                    help="list the exercise's data (names, the book's values, shapes, units)")
     p.add_argument("--notebook", metavar="PATH",
@@ -61,46 +66,33 @@ def add_arguments(p) -> None:
 
 
 def to_json(ids, data: dict | None = None) -> str:
-    """The schema-1 JSON document for the exercises ``ids`` (``data`` for a single id).
+    """The schema-2 JSON key for the exercises ``ids`` (``data`` for a single id):
+    ``{"schema": 2, "python_flint": ..., "exercises": [record, ...]}``, a record per
+    :func:`rigidsym.checking.worked.solution_record` (the data solved on, the answers,
+    the statements in words, the checks; ``reason`` when ill-posed)."""
+    from rigidsym.checking.worked import solution_record, solve
+    from rigidsym.report.record import document_header
 
-    ``answers`` holds sympy values only (``str()`` that ``sympify`` reads back); answers
-    stated in words (conditions, interpretations) go to ``statements``; an ill-posed
-    solution has ``"status": "ill-posed"`` and its ``reason``.
-    """
-    from rigidsym.checking.worked import solve, to_json_value
-
-    items = []
-    for i in ids:
-        s = solve(i, **(data or {}))
-        item = {"id": s.id, "status": s.status,
-                "answers": {k: to_json_value(v) for k, v in s.answers.items()
-                            if not isinstance(v, str)},
-                "checked": s.checked, "assumptions": list(s.assumptions),
-                "statements": {k: v for k, v in s.answers.items() if isinstance(v, str)}}
-        if s.reason:
-            item["reason"] = s.reason
-        items.append(item)
-    return json.dumps({"schema": 1, "exercises": items}, indent=2) + "\n"
+    items = [solution_record(solve(i, **(data or {}))) for i in ids]
+    return json.dumps({**document_header(), "exercises": items}, indent=2,
+                      ensure_ascii=False) + "\n"
 
 
 def parse_value(ex_id: str, name: str, text: str):
-    """The text of ``--set NAME=VALUE`` as the value :func:`solve` takes: a list of entry
-    strings for a vector (``0,0,5``), a list of rows for a matrix (``1,0,0;0,2,0;0,0,3``
-    or ``[[1,0,0],[0,2,0],[0,0,3]]``), the text itself for a scalar or a choice (an
-    unknown name is left to :func:`solve`, which lists the exercise's parameters)."""
+    """The text of ``--set NAME=VALUE`` as the value :func:`solve` takes (the one reader,
+    :func:`rigidsym.checking.worked.worked_numbers.split_text`, which :func:`solve` also
+    applies to a string): a list of entry strings for a vector (``0,0,5``), a list of rows
+    for a matrix (``1,0,0;0,2,0;0,0,3`` or ``[[1,0,0],[0,2,0],[0,0,3]]``), the text itself
+    for a scalar or a choice (an unknown name is left to :func:`solve`, which lists the
+    exercise's parameters)."""
     from rigidsym.checking.worked import parameters
+    from rigidsym.checking.worked.worked_numbers import split_text
 
     try:
         shape = parameters(ex_id)[name].shape
     except KeyError:
         return text
-    t = text.strip()
-    if not shape:
-        return t
-    if len(shape) == 1:
-        return [x.strip() for x in t.strip("[]").split(",")]
-    rows = t.replace("],[", ";").replace("], [", ";").strip("[] ")
-    return [[x.strip() for x in r.strip("[] ").split(",")] for r in rows.split(";")]
+    return split_text(shape or (), text)
 
 
 def _data(args, ex_id: str) -> dict:
@@ -142,41 +134,81 @@ def _notebook(ex_id: str, path: str, data: dict) -> None:
         print(f"wrote {write_atomic(path, packaged.read_text(encoding='utf-8'))}")
 
 
+#: exit codes of ``rigidsym exercise`` (docs/exercise-data.md)
+EXIT_SOLVED, EXIT_ILL_POSED, EXIT_BAD_INPUT, EXIT_INTERNAL = 0, 1, 2, 3
+
+
 def run(args) -> int:
-    """Solve chapter-3 exercises with computer algebra (worked solutions, machine-checked)."""
+    """Solve chapter-3 exercises with computer algebra (worked solutions, machine-checked).
+
+    Exit codes: 0 solved and checked, 1 ill-posed (one sentence says why), 2 bad input
+    (one line names the argument), 3 an internal error (a defect: please report it)."""
+    try:
+        return _run(args)
+    except Exception as exc:  # noqa: BLE001 - a defect must never read as an answer
+        import traceback
+        where = traceback.extract_tb(exc.__traceback__)[-1]
+        print(f"rigidsym: internal error, please report: {type(exc).__name__}: {exc} (at "
+              f"{Path(where.filename).name}:{where.lineno}; rigidsym exercise "
+              f"{' '.join(sys.argv[2:]) or ''})".rstrip(), file=sys.stderr)
+        return EXIT_INTERNAL
+
+
+def _run(args) -> int:
     from rigidsym.checking.worked import EXERCISE_IDS, normalise_id, parameters, render_text
 
     if args.all and args.id:
         print("rigidsym: error: give one exercise id (e.g. 3.10) or --all, not both",
               file=sys.stderr)
-        return 2
+        return EXIT_BAD_INPUT
     if not args.all and not args.id:
         return _list()
     varied = args.set or args.data or args.tol is not None
+    grade = getattr(args, "grade", None)
     try:
-        if args.all and (varied or args.notebook or args.parameters):
-            raise ValueError("--set, --data, --tol, --parameters and --notebook take one "
-                             "exercise id, not --all")
-        if args.format and not args.all:
-            raise ValueError("--format is for --all; one exercise prints its solution")
+        if args.all and (varied or args.notebook or args.parameters or grade):
+            raise ValueError("--set, --data, --tol, --parameters, --grade and --notebook "
+                             "take one exercise id, not --all")
         ids = EXERCISE_IDS if args.all else [normalise_id(args.id)]
         if args.parameters:
             print(parameters(ids[0]))
-            return 0
+            return EXIT_SOLVED
         data = {} if args.all else _data(args, ids[0])
         if args.notebook:
             _notebook(ids[0], args.notebook, data)
-            return 0
+            return EXIT_SOLVED
         if args.all:
-            return _run_all(ids, args.format or "plain", args.json)
+            fmt = "json" if args.json == "-" else args.format or "plain"
+            return _run_all(ids, fmt, None if args.json == "-" else args.json)
         s = _solve_one(ids[0], data)
-        if args.json:
-            write_atomic(args.json, to_json(ids, data))
+        if grade:
+            from rigidsym.cli.grade import grade_command
+            return grade_command(s, grade, args.json)
+        to_stdout = args.format == "json" or args.json == "-"
+        if args.json or to_stdout:
+            doc = to_json(ids, data)
+            if args.json and args.json != "-":
+                write_atomic(args.json, doc)
     except (ValueError, TypeError) as exc:
         print(f"rigidsym: error: {exc} ({_next_step(args)})", file=sys.stderr)
-        return 2
-    print(render_text(s))
-    return 0 if s.checked else 1
+        return EXIT_BAD_INPUT
+    if to_stdout:
+        sys.stdout.write(doc)
+    else:
+        print(render_text(s))
+    return _exit_code(s)
+
+
+def _exit_code(s) -> int:
+    """0 solved and checked, 1 ill-posed; a solution whose own checks fail is a defect."""
+    if s.status == "ill-posed":
+        return EXIT_ILL_POSED
+    if s.checked:
+        return EXIT_SOLVED
+    failed = [c.name for c in s.checks if not c.passed] or ["no check ran"]
+    print(f"rigidsym: internal error, please report: exercise {s.id[2:]} was solved but "
+          f"its machine check failed ({'; '.join(failed)})", file=sys.stderr)
+    return EXIT_INTERNAL
 
 
 def _next_step(args) -> str:

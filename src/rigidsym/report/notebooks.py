@@ -85,15 +85,54 @@ def _intro(mod, params) -> str:
                       f"> {mod.STATEMENT}", "", about])
 
 
-def _variants(mod) -> str | None:
+def _variants(mod, given: dict | None = None) -> str | None:
+    """The "Try other data" cell. The book's notebook varies its own data cell; a
+    variant's notebook (``given``) offers whole data sets instead, since the book's
+    changes merged into other readings are incompatible with them: a second drawn
+    variant, checked well-posed (exercises with ``random_data``), then the book's
+    variants on the book's data."""
     rows = getattr(mod, "VARIANTS", ())
     if not rows:
         return None
     out = ["## Try other data", ""]
+    if given:
+        second = _second_variant(mod, given)
+        if second:
+            args = ", ".join(f"{k}={_literal(v)}" for k, v in second.items())
+            out.append(f"- a second variant of the same kind: `ex.solve(\"{mod.ID}\", "
+                       f"{args})`")
+        for desc, data in rows:
+            args = ", ".join(f"{k}={_literal(v)}" for k, v in data.items())
+            out.append(f"- {desc}, on the book's data: `ex.solve(\"{mod.ID}\", {args})`")
+        return "\n".join(out)
     for desc, data in rows:
         args = ", ".join(f"{k}={_literal(v)}" for k, v in data.items())
         out.append(f"- {desc}: `ex.solve(\"{mod.ID}\", **dict(data, {args}))`")
     return "\n".join(out)
+
+
+def _second_variant(mod, given: dict) -> dict | None:
+    """A well-posed variant drawn from a seed made of the given data (deterministic)."""
+    import random
+
+    draw = getattr(mod, "random_data", None)
+    if draw is None:
+        return None
+    rng = random.Random(repr(sorted((k, str(v)) for k, v in given.items())))
+    w = _worked()
+    for _ in range(50):
+        data = draw(rng)
+        s = w.solve(mod.ID, **data)
+        if s.status == "solved" and s.checked:
+            return {k: _plain(v) for k, v in data.items()}
+    return None
+
+
+def _plain(v):
+    """Drawn data as literals the reader can edit: exact numbers as strings."""
+    if isinstance(v, list | tuple):
+        return [_plain(x) for x in v]
+    return v if isinstance(v, int | str) else str(v)
 
 
 def notebook_text(ex_id: str, data: dict | None = None) -> str:
@@ -144,7 +183,7 @@ def notebook_text(ex_id: str, data: dict | None = None) -> str:
         cells += [new_markdown_cell("## Figure\n\nDrawn from the computed answers: new data "
                                     "redraw it.", id=f"{tag}-figure-title"),
                   new_code_cell("ex.figure(solution)", id=f"{tag}-figure")]
-    more = _variants(mod)
+    more = _variants(mod, data)
     if more:
         cells.append(new_markdown_cell(more, id=f"{tag}-variants"))
     nb = new_notebook(cells=cells, metadata={"kernelspec": dict(_KERNEL)})

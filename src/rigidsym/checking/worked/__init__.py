@@ -14,6 +14,7 @@ from __future__ import annotations
 import importlib
 from collections import OrderedDict
 from collections.abc import Callable
+from contextlib import contextmanager
 from dataclasses import dataclass, field
 
 import sympy as sp
@@ -26,6 +27,7 @@ from .worked_render import (
     render_latex,
     render_markdown,
     render_text,
+    solution_record,
     to_json_value,
 )
 
@@ -36,6 +38,7 @@ __all__ = [
     "Param",
     "Parameters",
     "IllPosed",
+    "TooLong",
     "EXERCISE_IDS",
     "normalise_id",
     "exercise_module",
@@ -50,6 +53,7 @@ __all__ = [
     "truth_check",
     "exact_check",
     "to_json_value",
+    "solution_record",
     "render_text",
     "render_markdown",
     "render_html",
@@ -100,6 +104,9 @@ class Solution:
         reason: for an ill-posed solution, why, in one sentence.
         floats: the data given as floats (measurements); rendering then shows long
             exact numbers to 10 digits.
+        data: the data solved on, by parameter name (exact sympy values; the book's
+            values where none was given), as :func:`solve` read them.
+        tol: the tolerance of measured data, or None (exact data).
     """
 
     id: str
@@ -115,6 +122,8 @@ class Solution:
     extra: str = ""
     reason: str = ""
     floats: tuple = ()
+    data: dict = field(default_factory=dict)
+    tol: object = None
 
     @property
     def checked(self) -> bool:
@@ -277,6 +286,50 @@ def parameters(ex_id: str) -> Parameters:
                       getattr(mod, "default_tol", None))
 
 
+#: CPU seconds one exact solve may take before its data are refused (a student's exact data
+#: can multiply radicals past any useful size; the book's data take 4 s at most)
+SOLVE_BUDGET = 20.0
+
+
+class TooLong(ValueError):
+    """The exact solution on the data did not finish within :data:`SOLVE_BUDGET`."""
+
+
+@contextmanager
+def _time_budget(seconds: float, ex_id: str):
+    """Interrupt the solve after ``seconds`` of CPU time (a SIGPROF timer, so a loaded
+    machine does not refuse good data: the main thread on POSIX; elsewhere no budget).
+    sympy is pure Python, so the interrupt lands between steps."""
+    import signal
+    import threading
+
+    if (seconds <= 0 or not hasattr(signal, "setitimer")
+            or threading.current_thread() is not threading.main_thread()):
+        yield
+        return
+
+    def stop(signum, frame):
+        raise _Stop
+    old = signal.signal(signal.SIGPROF, stop)
+    # repeated each second: a BaseException is not swallowed by sympy's `except
+    # Exception`, and should one be caught anyway the next tick stops the solve
+    signal.setitimer(signal.ITIMER_PROF, seconds, 1.0)
+    try:
+        yield
+    except _Stop:
+        raise TooLong(f"{ex_id}: the exact solution on these data did not finish in "
+                      f"{seconds:g} s (their radicals and digits multiply); give shorter "
+                      f"numbers or fewer distinct square roots, or floats where the "
+                      f"exercise takes measurements (Exercises 3.4, 3.14, 3.19)") from None
+    finally:
+        signal.setitimer(signal.ITIMER_PROF, 0)
+        signal.signal(signal.SIGPROF, old)
+
+
+class _Stop(BaseException):
+    """The budget's interrupt (a BaseException, so no `except Exception` swallows it)."""
+
+
 #: solutions by exercise and data, most recent last (bounded: a student varies the data)
 _CACHE: OrderedDict[tuple, Solution] = OrderedDict()
 _CACHE_SIZE = 64
@@ -299,7 +352,8 @@ def solve(ex_id: str, tol=None, **data) -> Solution:
         the failing step, ``reason`` saying why in one sentence.
 
     Raises:
-        ValueError: an unknown exercise, a bad shape or value.
+        ValueError: an unknown exercise, a bad shape or value; :class:`TooLong` when the
+            exact solve exceeds :data:`SOLVE_BUDGET` seconds.
         TypeError: an unknown parameter name or a bad type (the message names it).
     """
     ex_id = normalise_id(ex_id)
@@ -312,11 +366,12 @@ def solve(ex_id: str, tol=None, **data) -> Solution:
     solver: Callable[..., Solution] = exercise_module(ex_id).solve
     kwargs = dict(d.values, **({"tol": d.tol} if params.measured else {}))
     try:
-        s = solver(**kwargs)
+        with _time_budget(SOLVE_BUDGET, ex_id):
+            s = solver(**kwargs)
     except IllPosed as exc:
         s = exc.solution
     s.assumptions.extend(d.notes)
-    s.floats = d.floats
+    s.floats, s.data, s.tol = d.floats, dict(d.values), d.tol
     _CACHE[key] = s
     while len(_CACHE) > _CACHE_SIZE:
         _CACHE.popitem(last=False)

@@ -19,15 +19,15 @@ from __future__ import annotations
 
 import decimal
 import numbers
-import re
 from dataclasses import dataclass, field
 from fractions import Fraction
 
 import sympy as sp
 
+from .worked_numbers import close, read_text, split_text
+
 __all__ = ["Param", "Parameters", "Data", "read_value", "read_data", "IllPosed"]
 
-_DECIMAL = re.compile(r"^[+-]?(\d+(\.\d*)?|\.\d+)([eE][+-]?\d+)?$|^[+-]?\d+/\d+$")
 _SHAPE_WORDS = {(): "a real number", (3,): "a 3-vector (3 numbers)",
                 (6,): "a 6-array (6 numbers)", (3, 3): "a 3 x 3 matrix (3 rows of 3 numbers)"}
 #: default tolerance of measured data, relative to the largest magnitude among the data
@@ -57,7 +57,8 @@ class Param:
     """One given datum of an exercise.
 
     Attributes:
-        name: a valid identifier, after NOTATION.md (``n_1``, ``I_A``, ``C_prime``).
+        name: a valid identifier, as the book writes it with subscripts after ``_`` and
+            primes spelled out (``n_1``, ``I_A``, ``C_prime``).
         default: the book's value (exact sympy: a number or a Matrix; a str for a choice).
         shape: ``()`` a number, ``(3,)`` a vector, ``(6,)``, ``(3, 3)`` a matrix; ``None``
             for a choice among ``choices``.
@@ -182,54 +183,45 @@ class Data:
 
 
 # --------------------------------------------------------------------------- reading
-def _scalar(v, where: str) -> tuple[sp.Expr, bool]:
-    """One real number: ``(exact value, was it a float)``."""
+def _scalar(v, where: str, measured: bool = True, notes: list | None = None
+            ) -> tuple[sp.Expr, bool]:
+    """One real number: ``(exact value, is it a measurement)``; see :mod:`.worked_numbers`
+    for text, transcendental values and the bounds. ``measured``: whether the exercise's
+    data are measurements (a float is then its binary fraction, else its shortest
+    decimal)."""
+    notes = [] if notes is None else notes
     if isinstance(v, bool):
         raise TypeError(f"{where}: expected a real number, got a bool ({v})")
     if isinstance(v, sp.Float):
         v = float(v)
     elif isinstance(v, sp.Basic):    # before numbers.Real: sympy registers its numbers there
-        return _closed_real(v, where, repr(v)), False
+        return _kept(close(v, where, repr(v)), notes)
     if isinstance(v, numbers.Integral):
-        return sp.Integer(int(v)), False
+        return _kept(close(sp.Integer(int(v)), where, repr(int(v))), notes)
     if isinstance(v, Fraction):
-        return sp.Rational(v.numerator, v.denominator), False
+        return _kept(close(sp.Rational(v.numerator, v.denominator), where, str(v)), notes)
     if isinstance(v, decimal.Decimal):
         if not v.is_finite():
             raise ValueError(f"{where}: expected a finite real number, got {v}")
-        return sp.Rational(str(v)), False
+        return _kept(close(sp.Rational(str(v)), where, str(v)), notes)
     if isinstance(v, numbers.Real):
         x = float(v)
         if x != x or x in (float("inf"), float("-inf")):
             raise ValueError(f"{where}: expected a finite real number, got {x}")
-        return sp.Rational(x), True
+        # the magnitude bounds of every datum; a float's digits are few (17 at most)
+        close(sp.Rational(repr(x)), where, repr(x))
+        return (sp.Rational(x), True) if measured else (sp.Rational(repr(x)), False)
     if isinstance(v, str):
-        return _from_text(v, where), False
+        return _kept(read_text(v, where), notes)
     raise TypeError(f"{where}: expected a real number (int, Fraction, decimal string such "
                     f"as '0.1', 'sqrt(3)/2', a sympy number or a float), got "
                     f"{type(v).__name__}")
 
 
-def _from_text(text: str, where: str) -> sp.Expr:
-    t = text.strip()
-    if _DECIMAL.match(t):
-        return sp.Rational(t)
-    try:
-        e = sp.sympify(t, rational=True)
-    except (sp.SympifyError, SyntaxError, TypeError, ValueError, AttributeError):
-        raise ValueError(f"{where}: {text!r} is not a number (expected e.g. 2, -5/3, 0.1 "
-                         f"or sqrt(3)/2)") from None
-    return _closed_real(e, where, repr(text))
-
-
-def _closed_real(e, where: str, shown: str) -> sp.Expr:
-    if not isinstance(e, sp.Expr) or e.free_symbols or not e.is_number:
-        raise ValueError(f"{where}: {shown} is not a closed number (no symbols allowed)")
-    if e.has(sp.Float):
-        e = sp.nsimplify(e, rational=True)
-    if e.is_finite is not True or e.is_extended_real is not True:
-        raise ValueError(f"{where}: {shown} is not a finite real number")
-    return e
+def _kept(read: tuple, notes: list) -> tuple[sp.Expr, bool]:
+    value, kind, more = read
+    notes.extend(more)
+    return value, kind == "rounded"
 
 
 def _entries(p: Param, v) -> list:
@@ -274,32 +266,55 @@ def _shape_of(v) -> str:
     return type(v).__name__
 
 
-def read_value(p: Param, v) -> tuple[object, bool]:
-    """Read a student's value of parameter ``p``: ``(exact sympy value, was a float)``.
+def read_value(p: Param, v, measured: bool = True, notes: list | None = None
+               ) -> tuple[object, bool]:
+    """Read a student's value of parameter ``p``: ``(exact sympy value, is a measurement)``.
 
     Args:
         p: the declared parameter.
         v: a number (see the module docstring) for a scalar; for a vector or matrix a
-            list/tuple (nested for a matrix), a NumPy array or a sympy Matrix of numbers;
+            list/tuple (nested for a matrix), a NumPy array, a sympy Matrix of numbers or
+            a string (``"0,0,5"``, ``"1,0,0;0,1,0;0,0,1"``: the command line's reader);
             for a choice one of ``p.choices`` (case-insensitive).
+        measured: whether the exercise's data are measurements: a float is then the
+            binary fraction it stores (a measurement), else its shortest decimal (exact).
+        notes: a list that receives the sentences on values read (rounded values, hints).
 
     Returns:
-        A sympy number, a ``sympy.ImmutableMatrix`` (vectors as columns) or a str.
+        A sympy number, a ``sympy.ImmutableMatrix`` (vectors as columns) or a str; and
+        whether the value is a measurement (a float of a measured exercise, or a value
+        rounded to 30 certified digits: see :mod:`.worked_numbers`).
 
     Raises:
         TypeError: wrong type (the message names the parameter).
-        ValueError: wrong shape, a string that is not a number, NaN/inf, complex.
+        ValueError: wrong shape, a string that is not a number, NaN/inf, complex, a
+            magnitude outside 1e-15 to 1e15.
     """
     if p.shape is None:
         if not isinstance(v, str) or v.strip().upper() not in p.choices:
             raise ValueError(f"{p.name}: expected one of {', '.join(p.choices)}, got {v!r}")
         return v.strip().upper(), False
     if p.shape == ():
-        return _scalar(v, p.name)
+        return _scalar(v, p.name, measured, notes)
+    if isinstance(v, str):
+        v = split_text(p.shape, v)
     flat = _entries(p, v)
-    read = [_scalar(x, f"{p.name}[{i}]") for i, x in enumerate(flat)]
+    read = [_scalar(x, f"{p.name}[{i}]", measured, notes) for i, x in enumerate(flat)]
     rows, cols = (p.shape[0], 1) if len(p.shape) == 1 else p.shape
     return sp.ImmutableMatrix(rows, cols, [x for x, _ in read]), any(f for _, f in read)
+
+
+def _has_float(v) -> bool:
+    """Whether a raw value holds a Python, NumPy or sympy float anywhere."""
+    if isinstance(v, str | bytes | bool):
+        return False
+    if isinstance(v, sp.MatrixBase):
+        return any(isinstance(x, sp.Float) for x in v)
+    if hasattr(v, "tolist"):
+        v = v.tolist()
+    if isinstance(v, list | tuple):
+        return any(_has_float(x) for x in v)
+    return isinstance(v, float | sp.Float)
 
 
 def _magnitude(values: dict) -> sp.Rational:
@@ -331,20 +346,27 @@ def read_data(params: Parameters, data: dict, tol=None) -> Data:
         have = ", ".join(params.names) if params.names else "none (no numeric data)"
         raise TypeError(f"{params.exercise} has no parameter {unknown[0]!r}; its parameters "
                         f"are: {have}")
-    values, floats = {}, []
+    values, measures, given_floats, notes = {}, [], [], []
     for p in params:
         if p.name in data:
-            values[p.name], was_float = read_value(p, data[p.name])
-            if was_float:
-                floats.append(p.name)
+            values[p.name], measure = read_value(p, data[p.name], params.measured, notes)
+            if measure:
+                measures.append(p.name)
+            if _has_float(data[p.name]):
+                given_floats.append(p.name)
         else:
             values[p.name] = p.default
-    out = Data(values, tuple(floats))
-    if floats:
-        out.notes.append(f"Floats are measurements: {', '.join(floats)} were given as "
+    out = Data(values, tuple(measures))
+    if given_floats and params.measured:
+        out.notes.append(f"Floats are measurements: {', '.join(given_floats)} were given as "
                          f"floats, each converted exactly to the binary fraction it stores "
                          f"(0.1 is 3602879701896397/36028797018963968); give strings such "
                          f"as '0.1' or '1/3' for exact data.")
+    elif given_floats:
+        out.notes.append(f"Floats in exact data: {', '.join(given_floats)} given as floats; "
+                         f"the data of {params.exercise} are exact, so each float is "
+                         f"read as the shortest decimal that prints it (0.1 is 1/10).")
+    out.notes.extend(dict.fromkeys(notes))   # a hint once, however many entries share it
     if tol is not None:
         if not params.measured:
             raise TypeError(f"tol: the data of {params.exercise} are not measurements; tol "
@@ -356,7 +378,7 @@ def read_data(params: Parameters, data: dict, tol=None) -> Data:
             raise ValueError(f"tol: expected a positive number, got {tol!r}")
         if not out.tol.is_Rational:
             out.tol = sp.Rational(str(sp.N(out.tol, 30)))
-    elif floats and params.measured:
+    elif measures and params.measured:
         out.tol, how = (params.default_tol or _default_tol)(values)
         out.tol_default = True
     if out.tol is not None:

@@ -35,7 +35,8 @@ class Solution(Protocol):
     @property
     def checked(self) -> bool: ...
 
-__all__ = ["to_json_value", "render_text", "render_markdown", "render_html", "render_latex"]
+__all__ = ["to_json_value", "solution_record", "render_text", "render_markdown",
+           "render_html", "render_latex"]
 
 
 def to_json_value(v):
@@ -47,6 +48,27 @@ def to_json_value(v):
     if isinstance(v, str):
         return v
     return str(sp.sympify(v))
+
+
+def solution_record(s) -> dict:
+    """A solution as the JSON record of a schema-2 key: ``id``, ``status``, ``data`` (by
+    parameter name, exact strings), ``tol``, ``answers`` (sympy values as strings),
+    ``statements`` (answers in words), ``checks`` (name, passed, detail), ``checked``,
+    ``assumptions`` and, when ill-posed, ``reason``."""
+    rec = {"id": s.id, "status": s.status,
+           "data": {k: to_json_value(list(v) if isinstance(v, sp.MatrixBase)
+                                     and v.cols == 1 else v)
+                    for k, v in getattr(s, "data", {}).items()},
+           "tol": None if getattr(s, "tol", None) is None else str(s.tol),
+           "answers": {k: to_json_value(v) for k, v in s.answers.items()
+                       if not isinstance(v, str)},
+           "statements": {k: v for k, v in s.answers.items() if isinstance(v, str)},
+           "checks": [{"name": c.name, "passed": c.passed, "detail": c.detail}
+                      for c in s.checks],
+           "checked": s.checked, "assumptions": list(s.assumptions)}
+    if s.reason:
+        rec["reason"] = s.reason
+    return rec
 
 
 def _float_of(v) -> str:

@@ -1,0 +1,183 @@
+"""Grading a student's answers against a worked solution, naming the slip of a wrong one.
+
+In the spirit of the repair search (:mod:`rigidsym.checking.repairing`): a wrong answer
+is compared with small edits of the right one, and the first edit that explains it names
+the slip: ``"transpose"`` (a matrix transposed), ``"sign"`` (the sign of the whole answer,
+of one component, or of one term where the exercise lists its terms), ``"degrees"`` (an
+angle in degrees for radians), ``"unit"`` (a factor that is a power of ten: mm, cm, g,
+mm^2 for m, m, kg, m^2), ``"swap"`` (two components, rows or columns exchanged) and
+``"reference point"`` (the same quantity about another point of the body, where the
+exercise declares one: its module's ``slips(solution)``). Else ``"not a known slip"``.
+
+Numbers are compared in floating point within a stated tolerance: a grade is a judgement
+on a student's decimals, not a proof; the expected values themselves are exact.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+import sympy as sp
+
+from .worked_numbers import read_text
+
+__all__ = ["grade", "Graded", "RTOL", "SLIPS"]
+
+#: relative tolerance: an answer is right within 0.1 % of its largest entry
+RTOL = 1e-3
+#: the slip words, in the order they are tried
+SLIPS = ("transpose", "sign", "degrees", "unit", "swap", "reference point")
+_UNIT_POWERS = (-15, -9, -6, -4, -3, -2, 2, 3, 4, 6, 9, 15)
+
+
+@dataclass
+class Graded:
+    """One graded answer.
+
+    Attributes:
+        name: the answer's name, as ``rigidsym exercise ID --json`` prints it.
+        correct: within the tolerance (None when it could not be graded).
+        slip: the slip word (one of :data:`SLIPS`), or None (right, or not a known slip).
+        expected: the right answer, as the JSON key writes it.
+        detail: one sentence (the tolerance, the slip's edit, or why not graded).
+    """
+
+    name: str
+    correct: bool | None
+    slip: str | None
+    expected: object
+    detail: str
+
+    def as_dict(self) -> dict:
+        """``{"name", "correct", "slip", "expected", "detail"}``."""
+        return {"name": self.name, "correct": self.correct, "slip": self.slip,
+                "expected": self.expected, "detail": self.detail}
+
+
+def _as_array(v, where: str) -> np.ndarray:
+    """A student's value (number, exact string, nested lists) as a float array."""
+    if isinstance(v, bool):
+        return np.array(float(v))
+    if isinstance(v, str):
+        try:
+            return np.array(float(v))      # a decimal: no bounds on a student's slip
+        except ValueError:
+            return np.array(float(read_text(v, where)[0]))
+    if isinstance(v, int | float):
+        return np.array(float(v))
+    if isinstance(v, list | tuple):
+        return np.array([_as_array(x, where) for x in v], dtype=float)
+    raise TypeError(f"{where}: expected a number, an exact string such as 'sqrt(3)/2' or "
+                    f"nested lists of them, got {type(v).__name__}")
+
+
+def _expected(v) -> np.ndarray:
+    if isinstance(v, sp.MatrixBase):
+        return np.array(sp.N(v, 17).tolist(), dtype=float)
+    if v in (sp.true, sp.false):
+        return np.array(float(bool(v)))
+    return np.array(float(sp.N(v, 17)))
+
+
+def _close(a: np.ndarray, b: np.ndarray, scale: float) -> bool:
+    return a.shape == b.shape and bool(np.all(np.abs(a - b) <= RTOL * scale + 1e-12))
+
+
+def _candidates(e: np.ndarray, name: str, extra: list):
+    """(slip, what the edit is, edited answer), in the order of :data:`SLIPS`."""
+    if e.ndim == 2 and e.shape[0] == e.shape[1] > 1 and not np.allclose(e, e.T):
+        yield "transpose", f"{name} transposed", e.T
+    yield "sign", f"-{name}", -e
+    flat = e.reshape(-1)
+    for i in range(flat.size):
+        if flat[i] != 0 and flat.size > 1:
+            f = flat.copy()
+            f[i] = -f[i]
+            yield "sign", f"the sign of entry {i} of {name}", f.reshape(e.shape)
+    for word, detail, value in extra:
+        if word == "sign":
+            yield word, detail, value
+    yield "degrees", f"{name} in degrees for radians", e * 180 / math.pi
+    yield "degrees", f"{name} in radians for degrees", e * math.pi / 180
+    for k in _UNIT_POWERS:
+        yield "unit", f"{name} x 10^{k} (a unit prefix: mm, cm, g, mm^2 for m, m, kg, m^2)", \
+            e * 10.0**k
+    if e.ndim == 2 and min(e.shape) > 1:
+        for i in range(e.shape[0]):
+            for j in range(i + 1, e.shape[0]):
+                f = e.copy()
+                f[[i, j]] = f[[j, i]]
+                yield "swap", f"rows {i} and {j} of {name} exchanged", f
+                g = e.copy()
+                g[:, [i, j]] = g[:, [j, i]]
+                yield "swap", f"columns {i} and {j} of {name} exchanged", g
+    for i in range(flat.size):
+        for j in range(i + 1, flat.size):
+            if flat[i] != flat[j]:
+                f = flat.copy()
+                f[[i, j]] = f[[j, i]]
+                yield "swap", f"entries {i} and {j} of {name} exchanged", f.reshape(e.shape)
+    for word, detail, value in extra:
+        if word != "sign":
+            yield word, detail, value
+
+
+def grade(solution, answers: dict, slips: dict | None = None) -> list[Graded]:
+    """Grade ``answers`` (name -> value) against ``solution``'s answers.
+
+    Args:
+        solution: a solved :class:`~rigidsym.checking.worked.Solution`.
+        answers: answer name -> a number, an exact string (``"sqrt(3)/2"``) or nested
+            lists of them (a vector as 3 numbers or as a column).
+        slips: answer name -> ``[(slip word, detail, sympy value), ...]``: the
+            exercise's own slips (a term's sign, another reference point).
+
+    Returns:
+        One :class:`Graded` per answer given, in the order given.
+
+    Raises:
+        ValueError: the solution is not solved (an ill-posed exercise has no answers), or
+            an answer name the solution does not have (the message lists them).
+    """
+    if solution.status != "solved":
+        raise ValueError(f"{solution.id} on these data is {solution.status}: there are no "
+                         f"answers to grade against ({solution.reason})")
+    known = [k for k, v in solution.answers.items() if not isinstance(v, str)]
+    unknown = [k for k in answers if k not in solution.answers]
+    if unknown:
+        raise ValueError(f"answers: {solution.id} has no answer {unknown[0]!r}; its answers "
+                         f"are: {', '.join(known)}")
+    from .worked_render import to_json_value
+
+    out = []
+    for name, given in answers.items():
+        right = solution.answers[name]
+        if isinstance(right, str):
+            out.append(Graded(name, None, None, right, "an answer in words: not graded "
+                                                      "by machine"))
+            continue
+        out.append(_grade_one(name, given, right, to_json_value(right),
+                              (slips or {}).get(name, [])))
+    return out
+
+
+def _grade_one(name, given, right, shown, extra) -> Graded:
+    e = _expected(right)
+    try:
+        g = _as_array(given, name)
+    except (ValueError, TypeError) as exc:
+        return Graded(name, False, None, shown, f"not read: {exc}")
+    if g.size == e.size and g.shape != e.shape:
+        g = g.reshape(e.shape)        # a vector as 3 numbers, or as a column
+    scale = max(float(np.max(np.abs(e))) if e.size else 0.0, 1e-300)
+    tol = f"within {RTOL:g} x {scale:.3g} (0.1 % of the largest entry)"
+    if _close(g, e, scale):
+        return Graded(name, True, None, shown, tol)
+    extra_f = [(w, d, _expected(v)) for w, d, v in extra]
+    for word, detail, value in _candidates(e, name, extra_f):
+        if _close(g, value, max(scale, float(np.max(np.abs(value))))):
+            return Graded(name, False, word, shown, f"matches {detail}")
+    return Graded(name, False, None, shown, f"not within the tolerance ({tol}), and not a "
+                  f"known slip")

@@ -1,0 +1,39 @@
+"""``rigidsym exam SPEC.toml --out DIR``: a student handout and an answer key."""
+
+from __future__ import annotations
+
+import sys
+
+__all__ = ["add_arguments", "run", "HELP", "EXAMPLES"]
+
+HELP = "write an exam: a student handout and an answer key"
+EXAMPLES = """\
+  rigidsym exam quiz.toml --out quiz/         handout.html, key.html, key.json
+  rigidsym exam quiz.toml --out quiz/ --seed 8   other random variants"""
+
+
+def add_arguments(p) -> None:
+    """Arguments of ``rigidsym exam``."""
+    p.add_argument("spec", help="the exam's TOML spec: [[problem]] tables with exercise = "
+                                "\"3.4\" and data = {...} or variants = N (docs/exams.md)")
+    p.add_argument("--out", required=True, metavar="DIR", help="the folder to write")
+    p.add_argument("--seed", type=int, help="the seed of the random variants (default: the "
+                                            "spec's seed, else 0)")
+
+
+def run(args) -> int:
+    """Write the handout and the key; 0 written, 2 a bad spec or data, 3 a defect."""
+    from rigidsym.exercises import exam
+
+    try:
+        paths = exam(args.spec, args.out, seed=args.seed)
+    except (ValueError, TypeError) as exc:
+        print(f"rigidsym: error: {exc} (docs/exams.md describes the spec)", file=sys.stderr)
+        return 2
+    except Exception as exc:  # noqa: BLE001 - a defect, never the code of a bad spec
+        print(f"rigidsym: internal error, please report: {type(exc).__name__}: {exc}",
+              file=sys.stderr)
+        return 3
+    for p in paths.values():
+        print(f"wrote {p}")
+    return 0

@@ -1,0 +1,131 @@
+"""The grader names a student's slip (issue 32 item 2): each slip is planted in the right
+answer of a variant of its exercise (the expected slip is built here from the exercise's
+physics, not read from the grader), the right answers pass, random ones are "not a known
+slip"; the CLI grades one student (text, JSON) and a class (folder, CSV)."""
+
+from __future__ import annotations
+
+import csv
+import json
+
+import numpy as np
+import pytest
+import sympy as sp
+
+import rigidsym.exercises as ex
+from rigidsym.cli import main
+
+
+def _floats(m) -> list:
+    return np.array(sp.N(m, 17).tolist(), dtype=float).tolist()
+
+
+def _slip(solution, name, value):
+    (g,) = ex.grade(solution, {name: value})
+    return g
+
+
+# a variant of each exercise: 3.4 with a Cayley rotation, 3.19 turned 90 deg, a flat plate
+@pytest.fixture(scope="module")
+def ex34():
+    # F_2 turned by the Cayley rotation of (1, 2, 2)/3 ... readings rotated exactly
+    c = sp.Matrix([1, 2, 2]) / 3
+    C = sp.Matrix([[0, -c[2], c[1]], [c[2], 0, -c[0]], [-c[1], c[0], 0]])
+    Q = (sp.eye(3) - C).inv() * (sp.eye(3) + C)       # [x]_1 = Q [x]_2
+    n1, f1 = sp.Matrix([1, 0, 5]), sp.Matrix([0, 2, 1])
+    s = ex.solve("3.4", n_1=list(n1), f_1=list(f1), n_2=list(Q.T * n1), f_2=list(Q.T * f1))
+    assert s.status == "solved" and s.answers["Q_1_2"] == Q
+    return s
+
+
+@pytest.fixture(scope="module")
+def ex319():
+    return ex.solve("3.19", d=["0.1", 0, 0], Q=[[0, -1, 0], [1, 0, 0], [0, 0, 1]],
+                    n_S=[1, 2, 3], f_S=[0, 1, 4])
+
+
+@pytest.fixture(scope="module")
+def ex311():
+    return ex.solve("3.11", a="0.05", h="0.01")
+
+
+def test_transpose(ex34):
+    Q = ex34.answers["Q_1_2"]
+    g = _slip(ex34, "Q_1_2", _floats(Q.T))
+    assert g.correct is False and g.slip == "transpose"
+
+
+def test_sign_of_the_moment_transfer_and_reference_point(ex319):
+    d, f, n, Q = (sp.Matrix(ex319.data[k]) for k in ("d", "f_S", "n_S", "Q"))
+    right = Q.T * (n - d.cross(f))               # n_P = n_S - d x f (Sec. 3.7), into F_2
+    assert ex319.answers["n_2"] == right
+    assert _slip(ex319, "n_2", _floats(Q.T * (n + d.cross(f)))).slip == "sign"
+    assert _slip(ex319, "n_2", _floats(Q.T * n)).slip == "reference point"   # about S
+    f2 = _floats(Q.T * f)
+    assert _slip(ex319, "f_2", [f2[1], f2[0], f2[2]]).slip == "swap"
+
+
+def test_degrees_for_radians():
+    s = ex.solve("3.1", A_prime=[0, 0, 0], B_prime=[-1, 0, 0], D_prime=[0, -1, 0],
+                 E_prime=[0, 0, 1])                    # a half turn about z
+    assert s.answers["phi"] == sp.pi
+    g = _slip(s, "phi", 180)
+    assert g.correct is False and g.slip == "degrees"
+    assert _slip(s, "phi", "pi").correct is True
+
+
+def test_unit_and_the_axis_through_the_base(ex311):
+    a, h = sp.Rational(1, 20), sp.Rational(1, 100)
+    I_kg = sp.diag(5 * a**2 / 24 + h**2 / 12, 5 * a**2 / 24 + h**2 / 12, 5 * a**2 / 12)
+    assert ex311.answers["I_C_per_kg_m2"] == I_kg           # the closed forms, m^2
+    mm2 = _floats(I_kg * 10**6)
+    assert _slip(ex311, "I_C_per_kg_m2", mm2).slip == "unit"
+    # the axes through the base's centre: Steiner with the centroid at h/2 above it
+    base = I_kg + sp.diag((h / 2)**2, (h / 2)**2, 0)
+    assert _slip(ex311, "I_C_per_kg_m2", _floats(base)).slip == "reference point"
+
+
+def test_right_answers_pass_and_random_ones_are_not_a_known_slip(ex34, ex319, ex311):
+    rng = np.random.default_rng(32)
+    for s in (ex34, ex319, ex311):
+        numeric = {k: v for k, v in s.answers.items() if isinstance(v, sp.MatrixBase)}
+        right = {k: [[str(x) for x in r] for r in v.tolist()] for k, v in numeric.items()}
+        assert all(g.correct and g.slip is None for g in ex.grade(s, right))
+        for k, v in numeric.items():
+            g = _slip(s, k, (rng.uniform(-7, 7, size=v.shape) + 0.123).tolist())
+            assert g.correct is False and g.slip is None and "not a known slip" in g.detail
+
+
+def test_bad_answers():
+    s = ex.solve("3.7")
+    with pytest.raises(ValueError, match="has no answer 'x'"):
+        ex.grade(s, {"x": 1})
+    with pytest.raises(TypeError, match="answers: expected a dict"):
+        ex.grade(s, [1])
+    (g,) = ex.grade(s, {"e": ["a", 0, 0]})
+    assert g.correct is False and g.detail.startswith("not read")
+
+
+def test_cli_one_student_and_a_class(tmp_path, capsys):
+    s = ex.solve("3.19")
+    right = {k: [[str(x) for x in r] for r in v.tolist()] for k, v in s.answers.items()}
+    wrong = dict(right, n_2=_floats(-s.answers["n_2"]))
+    (tmp_path / "amy.json").write_text(json.dumps(right))
+    (tmp_path / "bob.json").write_text(json.dumps(wrong))
+    assert main(["exercise", "3.19", "--grade", str(tmp_path / "bob.json"), "--json"]) == 0
+    doc = json.loads(capsys.readouterr().out)
+    by = {a["name"]: a for a in doc["answers"]}
+    assert set(by["n_2"]) == {"name", "correct", "slip", "expected", "detail"}
+    assert by["n_2"]["slip"] == "sign" and by["f_2"]["correct"] is True
+    assert main(["exercise", "3.19", "--grade", str(tmp_path)]) == 0
+    out = capsys.readouterr().out
+    assert "2 students" in out and "n_2: sign" in out
+    table = tmp_path / "class.csv"
+    with table.open("w", newline="") as fh:
+        w = csv.writer(fh)
+        w.writerow(["student", "n_2"])
+        w.writerow(["cy", json.dumps(_floats(s.answers["n_2"] * 1000))])
+    assert main(["exercise", "3.19", "--grade", str(table), "--json"]) == 0
+    doc = json.loads(capsys.readouterr().out)
+    assert doc["students"][0]["answers"][0]["slip"] == "unit"
+    assert main(["exercise", "3.19", "--grade", str(tmp_path / "none.json")]) == 2
