@@ -1,6 +1,7 @@
 """A relation :class:`Rel` and what its sides may be written in: the nodes the engine knows,
-checked when a ``Rel`` is made (:class:`BadInput`, the error of bad user input, lives here
-too; both are re-exported by :mod:`rigidsym.checking.deciding.registry`).
+checked when a ``Rel`` is made (it raises :class:`BadInput`, the error of bad user input, of
+:mod:`rigidsym.checking.deciding.errors`; both are re-exported by
+:mod:`rigidsym.checking.deciding.registry`).
 
 A node the engine does not know would be decided through a guess (sympy calls a
 ``Derivative`` of a 3 x 3 symbol a scalar; an undefined ``f(theta)`` and ``f(phi)`` would
@@ -14,12 +15,10 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any
 
-import sympy as sp
-from sympy.core.function import AppliedUndef
-from sympy.matrices.kind import MatrixKind
+from rigidsym.checking.deciding.errors import BadInput
 
-from rigidsym.algebra.operators import Det, Diff, DiffEntry
-from rigidsym.algebra.symbols import TIME, constraint_of
+# sympy and the algebra layer are imported where a side is checked, not here: the registry
+# (and with it the command line's --help) imports this module and stays free of sympy
 
 __all__ = ["BadInput", "Rel", "check_side", "UnknownNode", "WORDS"]
 
@@ -34,6 +33,9 @@ WORDS = {
 
 
 def _is_matrix_valued(x) -> bool:
+    import sympy as sp
+    from sympy.matrices.kind import MatrixKind
+
     return isinstance(x, sp.MatrixBase | sp.MatrixExpr) or \
         isinstance(getattr(x, "kind", None), MatrixKind)
 
@@ -43,6 +45,8 @@ class UnknownNode(ValueError):
 
 
 def _refuse(what: str, node, word: str):
+    import sympy as sp
+
     text = sp.sstr(node)
     text = text if len(text) <= 80 else text[:77] + "..."
     raise UnknownNode(f"{what}: the node {type(node).__name__} `{text}` is not in the "
@@ -66,6 +70,10 @@ def check_side(x, what: str):
             time, an inverse trigonometric function other than ``acos``/``atan2``); the
             message names the node and the word to use.
     """
+    import sympy as sp
+
+    from rigidsym.algebra.operators import Diff
+
     if isinstance(x, sp.Derivative) and _is_matrix_valued(x.expr):
         out = x.expr
         for v, n in x.variable_count:
@@ -77,6 +85,12 @@ def check_side(x, what: str):
 
 
 def _walk(x, what: str) -> None:
+    import sympy as sp
+    from sympy.core.function import AppliedUndef
+
+    from rigidsym.algebra.operators import Det, DiffEntry
+    from rigidsym.algebra.symbols import TIME, constraint_of
+
     seen: set = set()
     stack = [x]
     while stack:
@@ -104,15 +118,6 @@ def _walk(x, what: str) -> None:
             if not isinstance(y, Det | DiffEntry) and any(_is_matrix_valued(a) for a in y.args):
                 _refuse(what, y, "an operator of rigidsym.declare (trace, Det, expm, ...)")
         stack.extend(y.args)
-
-
-class BadInput(ValueError):
-    """Bad user input: an unknown or malformed id or section, a user module that cannot be
-    loaded (the CLI exits with code 2). A ``ValueError``.
-
-    Args:
-        message: one line naming the input and what was expected.
-    """
 
 
 @dataclass(frozen=True)

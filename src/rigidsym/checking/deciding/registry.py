@@ -17,7 +17,8 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from rigidsym._config import BOOK as BOOK_PACKAGE
-from rigidsym.checking.deciding.nodes import BadInput, Rel  # re-exported: their home
+from rigidsym.checking.deciding.errors import BadInput  # re-exported: their homes
+from rigidsym.checking.deciding.nodes import Rel
 
 __all__ = [
     "Rel",
