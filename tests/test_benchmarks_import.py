@@ -18,6 +18,7 @@ def test_benchmark_module_imports(path, monkeypatch):
     name = f"_bench_{path.stem}"
     spec = importlib.util.spec_from_file_location(name, path)
     mod = importlib.util.module_from_spec(spec)
+    sys.modules[name] = mod      # a dataclass looks its module up there, as when run
     try:
         spec.loader.exec_module(mod)  # module level only: each guards its main()
     finally:
