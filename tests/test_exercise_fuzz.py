@@ -152,6 +152,13 @@ def test_the_issue_cases(ex_id, sets, rc, words):
     assert ("certified" in out) == ("cos(30)" in sets[0] or "pi," in sets[0])
 
 
+def test_integers_past_sympys_reach_are_refused_not_a_defect():
+    """Found by the exhaustive property: transcendental entries of 3.6's face normal made
+    sympy factor integers past a float's range (OverflowError): refused (2), not exit 3."""
+    got, out, err, seconds = _run("ex3.6", ["face_normal=pi,pi,cos(30°)"])
+    assert got == 2 and "integers too large" in err and seconds < SECONDS, (got, err)
+
+
 def test_a_defect_exits_3_not_an_answer_code(monkeypatch):
     import rigidsym.checking.worked as worked
 

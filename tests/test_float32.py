@@ -106,6 +106,9 @@ def test_float32_error_bound_1000_points(name):
         pytest.skip("no C backend")
     arrays, ref = _case(name, 1000)
     err = rel_err(_run32(name, arrays, "c").astype(np.float64), ref)
+    # ON_SO3 kernels: the rounding of a float32 Q over sin^2(phi), as in the default test
+    # (the reference is the declared formula at the rounded, off-rotation Q: issue 30)
+    err = err / row_tol(name, ref, ULP32 / 2, TOL_RANDOM) * TOL_RANDOM
     assert np.isfinite(err).all(), f"{name}: non-finite output"
     assert err.max() <= TOL_RANDOM, f"{name}: {err.max() / ULP32:.2f} ulp"
 

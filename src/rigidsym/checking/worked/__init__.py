@@ -370,6 +370,12 @@ def solve(ex_id: str, tol=None, **data) -> Solution:
             s = solver(**kwargs)
     except IllPosed as exc:
         s = exc.solution
+    except OverflowError:
+        # sympy's exact arithmetic gave up on integers past a float's range (factoring a
+        # minimal polynomial's coefficients): too large for the exact path, as a timeout
+        raise TooLong(f"{ex_id}: the exact solution on these data needs integers too large "
+                      f"for sympy's exact arithmetic; give shorter numbers, or floats where "
+                      f"the exercise takes measurements (Exercises 3.4, 3.14, 3.19)") from None
     s.assumptions.extend(d.notes)
     s.floats, s.data, s.tol = d.floats, dict(d.values), d.tol
     _CACHE[key] = s
