@@ -40,6 +40,15 @@ def test_verify_module_gives_the_declared_verdicts_and_repairs_every_slip(tmp_pa
         assert r["correction"] == "found by search" and r["repairs"], r["id"]
 
 
+def test_the_summary_counts_no_book_causes_for_a_readers_module(capsys):
+    """A reader's slips are neither errata of the book nor slips of its conversion: the
+    summary line counts causes only for the book's ids."""
+    assert main(["verify", "--module", str(EXAMPLE), "--jobs", "1"]) == 0
+    out = capsys.readouterr()
+    text = out.out + out.err
+    assert "does-not-hold 3" in text and "errata of the book" not in text, text[-600:]
+
+
 def test_the_report_shows_every_form_in_book_notation(tmp_path, capsys):
     # issue 28's acceptance: no "not shown", no internal name, no ASCII member label
     assert main(["report", "--module", str(EXAMPLE), "--out", str(tmp_path), "--jobs", "1",
