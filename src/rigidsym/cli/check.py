@@ -9,10 +9,13 @@ from rigidsym.cli._common import MODULE_HELP, add_repair_arguments, repair_optio
 __all__ = ["add_arguments", "run", "HELP", "EXAMPLES", "EXIT"]
 
 HELP = "decide a relation written in LaTeX (declare its symbols with --let)"
-EXAMPLES = r"""  rigidsym check --latex '\mathbf{Q}^T\mathbf{Q} = \mathbf{1}' --let '\mathbf{Q}: rotation'
-  rigidsym check --latex '\mathbf{Q} = \mathbf{1} + \sin\phi\,\mathbf{E} + (1 - \cos\phi)\mathbf{E}^2' \
+EXAMPLES = r"""  rigidsym check --latex '\mathbf{Q}^T\mathbf{Q} = \mathbf{1}' \
+      --let '\mathbf{Q}: rotation'
+  rigidsym check --latex \
+      '\mathbf{Q} = \mathbf{1} + \sin\phi\,\mathbf{E} + (1 - \cos\phi)\mathbf{E}^2' \
       --let '\mathbf{e}: unit vector; \phi: angle; \mathbf{E} = \mathrm{CPM}(\mathbf{e})' \
-      --let '\mathbf{Q} = \mathbf{e}\mathbf{e}^T + \cos\phi(\mathbf{1} - \mathbf{e}\mathbf{e}^T) + \sin\phi\,\mathbf{E}'
+      --let '\mathbf{Q} = \mathbf{e}\mathbf{e}^T
+             + \cos\phi(\mathbf{1} - \mathbf{e}\mathbf{e}^T) + \sin\phi\,\mathbf{E}'
   rigidsym check --latex '\mathbf{W}^T = -\mathbf{W}' --book 3.5   the glyph table's W of 3.5
 
 --let NAME: KIND   KIND one of: unit vector, unit 4-vector, rotation, angle, angle in [0, pi],

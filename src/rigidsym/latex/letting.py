@@ -71,7 +71,7 @@ def _kind(text: str, decl: str):
     if m and int(m.group(1)) >= 1 and int(m.group(2)) >= 1:
         r, c = int(m.group(1)), int(m.group(2))
         return (r, c), (lambda name: _sym.matrix(name, r, c)), f"{r}×{c} matrix"
-    raise BadInput(f"--let {decl!r}: unknown kind {text.strip()!r}; expected one of: "
+    raise BadInput(f"--let '{decl}': unknown kind {text.strip()!r}; expected one of: "
                    f"{', '.join(KIND_WORDS)}")
 
 
@@ -127,16 +127,16 @@ def _top_level(text: str, ch: str) -> int:
 def _key(name: str, decl: str) -> str:
     """The glyph key of a NAME (``\\mathbf Q`` -> ``\\mathbf{Q}``)."""
     if not name:
-        raise BadInput(f"--let {decl!r}: expected a NAME before ':' or '='")
+        raise BadInput(f"--let '{decl}': expected a NAME before ':' or '='")
     try:
         p = parse_latex(f"{name} = 0", None)
     except LatexError as exc:
-        raise BadInput(f"--let {decl!r}: the name {name!r} cannot be read: "
+        raise BadInput(f"--let '{decl}': the name '{name}' cannot be read: "
                        f"{str(exc).splitlines()[0]}") from None
     lhs = p.chains[0][0] if p.chains else None
     if len(p.glyphs) != 1 or not isinstance(lhs, sp.Symbol | sp.MatrixSymbol):
-        raise BadInput(f"--let {decl!r}: expected one symbol as NAME (a glyph such as "
-                       f"\\mathbf{{Q}} or \\phi), got {name!r}")
+        raise BadInput(f"--let '{decl}': expected one symbol as NAME (a glyph such as "
+                       f"\\mathbf{{Q}} or \\phi), got '{name}'")
     return next(iter(p.glyphs))
 
 
@@ -188,17 +188,17 @@ def read_lets(let) -> list[Let]:
         elif eq >= 0:
             name, tex = d[:eq].strip(), d[eq + 1:].strip()
             if not tex:
-                raise BadInput(f"--let {d!r}: expected LaTeX after '='")
+                raise BadInput(f"--let '{d}': expected LaTeX after '='")
             out.append(Let(d, name, _key(name, d), latex=tex))
         else:
-            raise BadInput(f"--let {d!r}: expected 'NAME: KIND' (e.g. '\\mathbf{{Q}}: "
+            raise BadInput(f"--let '{d}': expected 'NAME: KIND' (e.g. '\\mathbf{{Q}}: "
                            f"rotation') or 'NAME = LATEX' (e.g. '\\mathbf{{E}} = "
                            f"\\mathrm{{CPM}}(\\mathbf{{e}})')")
     seen: dict[str, Let] = {}
     for x in out:
         if x.key in seen:
-            raise BadInput(f"--let: {x.key} is declared twice ({seen[x.key].text!r} and "
-                           f"{x.text!r})")
+            raise BadInput(f"--let: {x.key} is declared twice ('{seen[x.key].text}' and "
+                           f"'{x.text}')")
         seen[x.key] = x
     return out
 
@@ -364,9 +364,9 @@ def read_statement(latex: str, lets: list[Let], book: str | None = None,
     occurs: set[str] = set()
     for x in lets:
         if x.latex:
-            p = rd.parse(f"{x.name} = {x.latex}", f"--let {x.text!r}")
+            p = rd.parse(f"{x.name} = {x.latex}", f"--let '{x.text}'")
             if len(p.chains) != 1 or len(p.chains[0]) != 2:
-                raise BadInput(f"--let {x.text!r}: expected NAME = one expression")
+                raise BadInput(f"--let '{x.text}': expected NAME = one expression")
             occurs |= set(p.glyphs) - {x.key}  # its own NAME is no occurrence
             rhs = p.chains[0][1]
             g = Glyph(x.key, "*", rd._name(x.key), _shape(rhs) or (), "model", "--let model")
@@ -376,11 +376,13 @@ def read_statement(latex: str, lets: list[Let], book: str | None = None,
     occurs |= set(parsed.glyphs)
     for x in lets:
         if x.key not in occurs:
-            raise BadInput(f"--let {x.text!r}: {x.key} does not occur in the LaTeX nor in a "
+            raise BadInput(f"--let '{x.text}': {x.key} does not occur in the LaTeX nor in a "
                            f"model (the LaTeX's glyphs: "
                            f"{', '.join(sorted(parsed.glyphs)) or 'none'})")
-    notes, free = [], []
-    for key in sorted(rd.used):
+    notes, free, seen = [], [], set()
+    while rd.used - seen:  # a book definition read below may bring glyphs of its own
+        key = min(rd.used - seen)
+        seen.add(key)
         g = rd.over.get(key) or rd.glyphs.get(key)
         sym = _symbol(g)
         if key in rd.declared:
@@ -398,9 +400,6 @@ def read_statement(latex: str, lets: list[Let], book: str | None = None,
             free.append(key)
             notes.append(f"{key}: free {_words(g.shape)} (no --let declares it; the shape by "
                          f"the book's convention)")
-            if g.shape:  # named entries read better in a counterexample than Q[0, 0]
-                values[sym] = (_sym.vector(g.name, n=g.shape[0]) if g.shape[1] == 1
-                               else _sym.matrix(g.name, *g.shape))
         else:  # a glyph-table row of --book
             notes.append(f"{key}: {g.meaning} ({g.name}, {_words(g.shape)}; glyph table, "
                          f"{g.section})")
@@ -409,6 +408,10 @@ def read_statement(latex: str, lets: list[Let], book: str | None = None,
             elif g.definition:
                 d = rd.parse(f"{key} = {g.definition}", f"the definition of {key}")
                 values[sym] = d.chains[0][1]
+        if g.shape and sym not in values:  # a free matrix of named entries (the zero test
+            # takes atoms, not Q[0, 0]; and they read better in a counterexample)
+            values[sym] = (_sym.vector(g.name, n=g.shape[0]) if g.shape[1] == 1
+                           else _sym.matrix(g.name, *g.shape))
     model = _resolve(values, explicit)
     _EXPLICIT_CACHE.clear()
     printed, kinds = [], []
@@ -421,12 +424,10 @@ def read_statement(latex: str, lets: list[Let], book: str | None = None,
     kind = "definition" if all(o == "equiv" for o in kinds) and all(
         isinstance(r.lhs, sp.Symbol | sp.MatrixSymbol) for r in printed) else "identity"
     defines = tuple(r.lhs.name for r in printed) if kind == "definition" else ()
-    if kind == "definition":  # the defined symbols are the definition's, not the model's
-        model = {s: v for s, v in model.items() if s not in {r.lhs for r in printed}}
     text = "; ".join(f"{notation.text(r.lhs)} {'≡' if kind == 'definition' else '='} "
                      f"{notation.text(r.rhs)}" for r in printed)
     notes += parsed.readings
-    st = Statement(printed, model, defines=defines)
+    st = Statement(printed, model, defines=defines, from_latex=True)
     return Reading(st, kind, text, notes, free)
 
 
@@ -479,26 +480,33 @@ def lent(modules) -> dict:
     import sys
     from types import ModuleType
 
-    from rigidsym.algebra.symbols import constraint_of
     from rigidsym.checking.deciding import usermodules
 
     out: dict = {}
     for m in modules or ():
         um = usermodules.adopt(m) if isinstance(m, ModuleType) else usermodules.load(m)
-        names = vars(sys.modules[um.name])
-        dicts = [v for v in names.values() if isinstance(v, dict) and v and all(
-            isinstance(k, sp.Symbol | sp.MatrixSymbol) for k in v)]
-        if isinstance(names.get("MODEL"), dict) and names["MODEL"] in dicts:
-            dicts.remove(names["MODEL"])
-            dicts.insert(0, names["MODEL"])
-        for d in dicts:
-            for sym, value in d.items():
-                out.setdefault(sym.name, (sym, value))
-        for v in names.values():
-            if isinstance(v, sp.MatrixSymbol) or (isinstance(v, sp.Symbol)
-                                                  and not isinstance(v, sp.Dummy)):
-                own = v if constraint_of(v) is not None else None
-                out.setdefault(v.name, (v, own))
+        for name, v in module_symbols(vars(sys.modules[um.name])).items():
+            out.setdefault(name, v)
+    return out
+
+
+def module_symbols(names: dict) -> dict:
+    """What one module's namespace lends (see :func:`lent`): ``{name: (symbol, value)}``."""
+    from rigidsym.algebra.symbols import constraint_of
+
+    out: dict = {}
+    dicts = [v for v in names.values() if isinstance(v, dict) and v and all(
+        isinstance(k, sp.Symbol | sp.MatrixSymbol) for k in v)]
+    if isinstance(names.get("MODEL"), dict) and names["MODEL"] in dicts:
+        dicts.remove(names["MODEL"])
+        dicts.insert(0, names["MODEL"])
+    for d in dicts:
+        for sym, value in d.items():
+            out.setdefault(sym.name, (sym, value))
+    for v in names.values():
+        if isinstance(v, sp.MatrixSymbol) or (isinstance(v, sp.Symbol)
+                                              and not isinstance(v, sp.Dummy)):
+            out.setdefault(v.name, (v, v if constraint_of(v) is not None else None))
     return out
 
 

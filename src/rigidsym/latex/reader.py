@@ -51,7 +51,7 @@ def parse_latex(latex: str, section: str | None = "*", overrides: dict | None = 
     except lark.UnexpectedToken as exc:
         pos = exc.token.start_pos if exc.token.start_pos is not None else len(latex)
         expected = ", ".join(sorted(exc.expected)[:8])
-        what = "the end" if exc.token.type == "$END" else repr(str(exc.token))
+        what = "end of input" if exc.token.type == "$END" else repr(str(exc.token))
         raise LatexError(f"unexpected {what} at position {pos}:\n{_caret(latex, pos)}\n"
                          f"  expected one of: {expected}", "syntax") from None
     except lark.UnexpectedEOF as exc:

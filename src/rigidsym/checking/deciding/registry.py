@@ -73,6 +73,8 @@ class Statement:
         printed: the book's statement as printed, one :class:`Rel` per member, in book
             symbols (``MatrixSymbol``/``Symbol``). A chain ``x = y = z`` gives ``(x, y)`` and
             ``(x, z)``; a garbled symbol is a fresh symbol, never silently repaired.
+            ``None`` (a user declaration with ``latex=``): read from the LaTeX by
+            :mod:`rigidsym.latex`, its glyphs named as the model's symbols.
         model: first-principles values of the book symbols (``symbol -> explicit value``),
             derived without the printed form; substituted before deciding.
         derived: the first-principles value of the quantity (for display and codegen).
@@ -88,13 +90,20 @@ class Statement:
             angles) are described without it.
     """
 
-    printed: list[Rel]
+    printed: list[Rel] | None = None
     model: dict = field(default_factory=dict)
     derived: Any = None
     corrected: list[Rel] | None = None
     defines: tuple[str, ...] = ()
     claims: list[Rel] = field(default_factory=list)
     parametrisation: str = ""
+    #: set when ``printed`` was read from the declaration's LaTeX (not written by hand)
+    from_latex: bool = False
+
+
+#: reads a statement's printed form from its declaration's LaTeX (``printed=None``); set by
+#: :mod:`rigidsym.declare`, since the reader is a layer above the registry
+PRINTED_FROM_LATEX: Callable[[Any, Statement], list[Rel]] | None = None
 
 
 @dataclass(frozen=True)
@@ -145,6 +154,13 @@ def _build(eq_id: str) -> Statement:
     if not isinstance(st, Statement):
         raise DeclarationTypeError(f"declaration {eq_id} returned {type(st).__name__}, "
                                    f"not Statement")
+    if st.printed is None:
+        eq = REGISTRY[eq_id]
+        if not eq.latex or PRINTED_FROM_LATEX is None:
+            raise DeclarationTypeError(f"declaration {eq_id}: no printed form; give "
+                                       f"Statement(printed=[Rel(...)]) or latex= to read it "
+                                       f"from")
+        st.printed, st.from_latex = list(PRINTED_FROM_LATEX(eq, st)), True
     bad = [type(r).__name__ for r in list(st.printed) + list(st.corrected or []) + st.claims
            if not isinstance(r, Rel)]
     if bad:
