@@ -289,7 +289,7 @@ def check_latex(latex: str, let: Sequence[str] | dict[str, str] | str | None = N
         latex: one or more relations (``=`` or ``\\equiv`` chains), e.g.
             ``r"\\mathbf{Q}^T\\mathbf{Q} = \\mathbf{1}"``.
         let: what the symbols are: a list of ``"NAME: KIND"`` (KIND one of
-            :data:`rigidsym.latex.letting.KIND_WORDS`: ``unit vector``, ``rotation``,
+            :data:`rigidsym.latex.lets.KIND_WORDS`: ``unit vector``, ``rotation``,
             ``angle``, ``6-vector``, ``4x4 matrix``, ``twist`` ...) or ``"NAME = LATEX"`` (a
             first-principles model in the same notation); one string may hold several,
             separated by ``"; "``; or a dict ``{NAME: KIND or LATEX}``. A symbol nothing
