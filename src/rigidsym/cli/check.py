@@ -8,7 +8,7 @@ from rigidsym.cli._common import MODULE_HELP, add_repair_arguments, repair_optio
 
 __all__ = ["add_arguments", "run", "HELP", "EXAMPLES", "EXIT"]
 
-HELP = "decide a relation written in LaTeX (declare its symbols with --let)"
+HELP = "decide an equation written in LaTeX (its symbols: --let)"
 EXAMPLES = r"""  rigidsym check --latex '\mathbf{Q}^T\mathbf{Q} = \mathbf{1}' \
       --let '\mathbf{Q}: rotation'
   rigidsym check --latex \
