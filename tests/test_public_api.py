@@ -55,9 +55,6 @@ PUBLIC = {
                                      "transcription_for", "transcription_words"],
     # issue 29 item 4: LaTeX in, verdict out (rigidsym.check_latex, rigidsym check --latex)
     "rigidsym.latex.lets": ["KIND_WORDS", "Let", "kind_of", "read_lets", "split_lets"],
-    "rigidsym.latex.letting": ["KIND_WORDS", "Let", "Reading", "check_book", "declare_latex",
-                               "latex_id", "lent", "module_symbols", "read_lets",
-                               "read_statement"],
 }
 
 

@@ -207,7 +207,7 @@ def read_statement(latex: str, lets: list[Let], book: str | None = None,
             raise BadInput(f"--let '{x.text}': {x.key} does not occur in the LaTeX nor in a "
                            f"model (the LaTeX's glyphs: "
                            f"{', '.join(sorted(parsed.glyphs)) or 'none'})")
-    notes, free, seen = [], [], set()
+    notes, free, seen, free_, lent_ = [], [], set(), [], []
     while rd.used - seen:  # a book definition read below may bring glyphs of its own
         key = min(rd.used - seen)
         seen.add(key)
@@ -223,12 +223,11 @@ def read_statement(latex: str, lets: list[Let], book: str | None = None,
             value = lend[g.name][1]
             if value is not None:
                 values[sym] = value
-            notes.append(f"{key}: lent by --module ({_words(g.shape)}"
-                         f"{', with its model' if value is not None else ', free'})")
+            lent_.append(f"{key} ({_words(g.shape)}"
+                         f"{', its model' if value is not None else ', free'})")
         elif g.kind == "free":
             free.append(key)
-            notes.append(f"{key}: free {_words(g.shape)} (no --let declares it; the shape by "
-                         f"the book's convention)")
+            free_.append(f"{key} ({_words(g.shape)})")
         else:  # a glyph-table row of --book
             notes.append(f"{key}: {g.meaning} ({g.name}, {_words(g.shape)}; glyph table, "
                          f"{g.section})")
@@ -241,6 +240,12 @@ def read_statement(latex: str, lets: list[Let], book: str | None = None,
             # takes atoms, not Q[0, 0]; and they read better in a counterexample)
             values[sym] = (_sym.vector(g.name, n=g.shape[0]) if g.shape[1] == 1
                            else _sym.matrix(g.name, *g.shape))
+    if free_:
+        notes.append("free, no --let declares them (shapes by the book's convention: bold "
+                     "lower-case a 3-vector, bold capital 3×3, else a scalar): "
+                     + ", ".join(free_))
+    if lent_:
+        notes.append("lent by --module: " + ", ".join(lent_))
     model = _resolve(values, explicit)
     _EXPLICIT_CACHE.clear()
     printed, kinds = [], []

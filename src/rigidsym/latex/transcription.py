@@ -349,8 +349,8 @@ def transcription_for(eq_id: str) -> dict | None:
     from rigidsym.checking.deciding.registry import REGISTRY
 
     eq = REGISTRY.get(eq_id)
-    if eq is None or not eq.latex:
-        return None
+    if eq is None or not eq.latex or eq_id.startswith("latex:"):  # check --latex: the
+        return None  # LaTeX is the printed form itself, nothing was transcribed by hand
     hit = _DONE.get(eq_id)
     if hit is None:
         st = eq.build()
