@@ -160,13 +160,13 @@ ROT = {R: expm(theta * cpm(w)), Om: cpm(w), om: w}
           latex=r"\\mathbf{R} = \\mathbf{1} + \\sin\\theta\\,\\boldsymbol{\\Omega}"
                 r" + (1 - \\cos\\theta)\\boldsymbol{\\Omega}^2")
 def rodrigues():
-    return Statement(model=ROT)
+    return ROT  # the model alone
 
 
 @equation("mine:axis-sign", "The axis, sign slipped", expected="does-not-hold",
           latex=r"\\mathbf{R}\\boldsymbol{\\omega} = -\\boldsymbol{\\omega}")
 def axis_sign():
-    return Statement(model=ROT)
+    return Statement([], ROT)
 '''
 
 
