@@ -67,8 +67,10 @@ def run(args) -> int:
         return 2
     except BadInput:
         raise  # the command's one-line error, exit 2
-    except (ValueError, TypeError) as exc:  # a shape sympy refuses in a model, say
-        print(f"rigidsym: error: cannot read the input: {exc}", file=sys.stderr)
+    except Exception as exc:  # noqa: BLE001 -- a model sympy refuses (a shape, a power):
+        # the check itself turns its own errors into undecided, so this is the reading's
+        print(f"rigidsym: error: cannot read the input: {type(exc).__name__}: {exc}",
+              file=sys.stderr)
         return 2
     if args.json:
         from rigidsym.report.record import result_record
