@@ -143,6 +143,8 @@ def test_a_definition_and_an_undecided_exit_codes(capsys):
 def test_book_section_names_glyphs_and_an_ambiguous_glyph_asks_for_let(capsys):
     code, out, _ = _cli(capsys, "--latex", r"\mathbf{E}^T = -\mathbf{E}", "--book", "3.2")
     assert code == 0 and "cross-product matrix of e" in out   # E = CPM(e), the table's row
+    code, out, _ = _cli(capsys, "--latex", r"\mathbf{W}^T = -\mathbf{W}", "--book", "3.5")
+    assert code == 1 and "angular-acceleration matrix" in " ".join(out.split())  # not skew
     code, _, err = _cli(capsys, "--latex", r"\mathbf{W}^T = -\mathbf{W}", "--book", "3")
     assert code == 2 and "ambiguous" in err and "--let" in err and "3.5" in err
 
