@@ -243,3 +243,13 @@ def test_json_is_the_schema_2_record_with_the_reading(capsys):
     r = rigidsym.check_latex(r"\mathbf{Q}^T\mathbf{Q} = \mathbf{1}", [Q_ROT])
     assert set(r.to_json()) <= set(rec)      # the record of rigidsym.check, and more
     assert rec["id"] == r.id                 # the id hashes the input: the same twice
+
+
+def test_a_scalar_glyph_is_never_an_entry_of_a_free_matrix():
+    # Q_{11} beside a free matrix Q: two independent quantities (the entries are renamed
+    # Q__11, ...), so the relation does not hold; were they one atom it would "verify"
+    r = rigidsym.check_latex(r"Q_{11} = \mathbf{e}_1^T\mathbf{Q}\mathbf{e}_1",
+                             [r"\mathbf{Q}: matrix",
+                              r"\mathbf{e}_1 = \begin{bmatrix}1 \\ 0 \\ 0\end{bmatrix}"])
+    assert r.verdict == "does-not-hold"
+    assert {"Q_11", "Q__11"} <= set(r.counterexample["point"])

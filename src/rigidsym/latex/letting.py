@@ -208,6 +208,8 @@ def read_statement(latex: str, lets: list[Let], book: str | None = None,
                            f"model (the LaTeX's glyphs: "
                            f"{', '.join(sorted(parsed.glyphs)) or 'none'})")
     notes, free, seen, free_, lent_ = [], [], set(), [], []
+    scalars = {(rd.over.get(k) or rd.glyphs[k]).name for k in rd.used
+               if not (rd.over.get(k) or rd.glyphs[k]).shape}
     while rd.used - seen:  # a book definition read below may bring glyphs of its own
         key = min(rd.used - seen)
         seen.add(key)
@@ -215,7 +217,7 @@ def read_statement(latex: str, lets: list[Let], book: str | None = None,
         sym = _symbol(g)
         if key in rd.declared:
             x = rd.declared[key]
-            value = kind_of(x.kind, x.text)[1](g.name) if x.kind else None
+            value = _fresh(kind_of(x.kind, x.text)[1], g.name, scalars) if x.kind else None
             if value is not None and value != sym:  # a free scalar stands for itself
                 values[sym] = value
             continue
@@ -238,8 +240,9 @@ def read_statement(latex: str, lets: list[Let], book: str | None = None,
                 values[sym] = d.chains[0][1]
         if g.shape and sym not in values:  # a free matrix of named entries (the zero test
             # takes atoms, not Q[0, 0]; and they read better in a counterexample)
-            values[sym] = (_sym.vector(g.name, n=g.shape[0]) if g.shape[1] == 1
-                           else _sym.matrix(g.name, *g.shape))
+            values[sym] = _fresh((lambda n, s=g.shape: _sym.vector(n, n=s[0])) if
+                                 g.shape[1] == 1 else
+                                 (lambda n, s=g.shape: _sym.matrix(n, *s)), g.name, scalars)
     if free_:
         notes.append("free, no --let declares them (shapes by the book's convention: bold "
                      "lower-case a 3-vector, bold capital 3×3, else a scalar): "
@@ -263,6 +266,18 @@ def read_statement(latex: str, lets: list[Let], book: str | None = None,
     notes += parsed.readings
     st = Statement(printed, model, defines=defines, from_latex=True)
     return Reading(st, kind, text, notes, free)
+
+
+def _fresh(factory, name: str, scalars: set[str]):
+    """``factory(name)``, its free entries renamed (``a_1`` -> ``a__1``) where one would be
+    the same atom as a scalar of the LaTeX (``a_1`` beside ``\\mathbf{a}``): a free entry
+    and a scalar glyph are independent quantities, never silently one."""
+    value = factory(name)
+    while hasattr(value, "free_symbols") and {
+            s.name for s in value.free_symbols if type(s) is sp.Symbol} & (scalars - {name}):
+        name += "_"
+        value = factory(name)
+    return value
 
 
 def _resolve(values: dict, explicit) -> dict:
