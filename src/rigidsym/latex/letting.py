@@ -274,7 +274,7 @@ def _fresh(factory, name: str, scalars: set[str]):
     and a scalar glyph are independent quantities, never silently one."""
     value = factory(name)
     while hasattr(value, "free_symbols") and {
-            s.name for s in value.free_symbols if type(s) is sp.Symbol} & (scalars - {name}):
+            s.name for s in value.free_symbols} & (scalars - {name}):
         name += "_"
         value = factory(name)
     return value
