@@ -22,14 +22,15 @@ import sympy as sp
 from rigidsym.algebra import symbols as _sym
 from rigidsym.checking.deciding.errors import BadInput
 from rigidsym.checking.deciding.registry import Rel, Statement
+from rigidsym.latex.lending import lent
 from rigidsym.latex.lets import KIND_WORDS, Let, kind_of, read_lets
 from rigidsym.latex.reader import parse_latex
 from rigidsym.latex.shapes import LatexError, _name_from_key, _shape
 from rigidsym.latex.table import Glyph, glyph_table, lookup
 from rigidsym.printing import notation
 
-__all__ = ["Reading", "read_statement", "latex_id", "check_book", "lent", "module_symbols",
-           "declare_latex", "KIND_WORDS", "Let", "read_lets"]
+__all__ = ["Reading", "read_statement", "latex_id", "check_book", "declare_latex",
+           "KIND_WORDS", "Let", "read_lets"]
 
 @dataclass
 class Reading:
@@ -189,6 +190,28 @@ def read_statement(latex: str, lets: list[Let], book: str | None = None,
     lend = lend or {}
     rd = _Reader(lets, book, lend)
     values: dict = {}  # book symbol -> value in book symbols (resolved below)
+    occurs = _read_models(rd, lets, values)
+    parsed = rd.parse(latex, "the LaTeX")
+    occurs |= set(parsed.glyphs)
+    for x in lets:
+        if x.key not in occurs:
+            raise BadInput(f"--let '{x.text}': {x.key} does not occur in the LaTeX nor in a "
+                           f"model (the LaTeX's glyphs: "
+                           f"{', '.join(sorted(parsed.glyphs)) or 'none'})")
+    notes, free = _glyph_values(rd, lend, values)
+    model = _resolve(values, explicit)
+    _EXPLICIT_CACHE.clear()
+    printed, kind = _relations(parsed)
+    defines = tuple(r.lhs.name for r in printed) if kind == "definition" else ()
+    text = "; ".join(f"{notation.text(r.lhs)} {'≡' if kind == 'definition' else '='} "
+                     f"{notation.text(r.rhs)}" for r in printed)
+    notes += parsed.readings
+    st = Statement(printed, model, defines=defines, from_latex=True)
+    return Reading(st, kind, text, notes, free)
+
+
+def _read_models(rd: _Reader, lets: list[Let], values: dict) -> set[str]:
+    """The ``NAME = LATEX`` models into ``values``; the glyphs they use."""
     occurs: set[str] = set()
     for x in lets:
         if x.latex:
@@ -200,13 +223,12 @@ def read_statement(latex: str, lets: list[Let], book: str | None = None,
             g = Glyph(x.key, "*", rd._name(x.key), _shape(rhs) or (), "model", "--let model")
             rd.over[x.key] = g
             values[_symbol(g)] = rhs
-    parsed = rd.parse(latex, "the LaTeX")
-    occurs |= set(parsed.glyphs)
-    for x in lets:
-        if x.key not in occurs:
-            raise BadInput(f"--let '{x.text}': {x.key} does not occur in the LaTeX nor in a "
-                           f"model (the LaTeX's glyphs: "
-                           f"{', '.join(sorted(parsed.glyphs)) or 'none'})")
+    return occurs
+
+
+def _glyph_values(rd: _Reader, lend: dict, values: dict) -> tuple[list[str], list[str]]:
+    """Each used glyph's value into ``values`` (a declared kind, a lent model, a glyph-table
+    row or definition, a free matrix of named entries); the notes and the free glyphs."""
     notes, free, seen, free_, lent_ = [], [], set(), [], []
     scalars = {(rd.over.get(k) or rd.glyphs[k]).name for k in rd.used
                if not (rd.over.get(k) or rd.glyphs[k]).shape}
@@ -249,8 +271,12 @@ def read_statement(latex: str, lets: list[Let], book: str | None = None,
                      + ", ".join(free_))
     if lent_:
         notes.append("lent by --module: " + ", ".join(lent_))
-    model = _resolve(values, explicit)
-    _EXPLICIT_CACHE.clear()
+    return notes, free
+
+
+def _relations(parsed) -> tuple[list[Rel], str]:
+    """One relation per ``=`` or ``\\equiv`` of each chain; ``"definition"`` when every one
+    is an ``\\equiv`` with a bare symbol on the left, else ``"identity"``."""
     printed, kinds = [], []
     for c, exprs in enumerate(parsed.chains):
         for k in range(1, len(exprs)):
@@ -260,12 +286,7 @@ def read_statement(latex: str, lets: list[Let], book: str | None = None,
             kinds.append(parsed.ops[c][k - 1])
     kind = "definition" if all(o == "equiv" for o in kinds) and all(
         isinstance(r.lhs, sp.Symbol | sp.MatrixSymbol) for r in printed) else "identity"
-    defines = tuple(r.lhs.name for r in printed) if kind == "definition" else ()
-    text = "; ".join(f"{notation.text(r.lhs)} {'≡' if kind == 'definition' else '='} "
-                     f"{notation.text(r.rhs)}" for r in printed)
-    notes += parsed.readings
-    st = Statement(printed, model, defines=defines, from_latex=True)
-    return Reading(st, kind, text, notes, free)
+    return printed, kind
 
 
 def _fresh(factory, name: str, scalars: set[str]):
@@ -306,57 +327,6 @@ def _atoms(v) -> set:
         return set()
     return set(v.atoms(sp.MatrixSymbol)) | {s for s in v.atoms(sp.Symbol)
                                            if type(s) is sp.Symbol}
-
-
-def lent(modules) -> dict:
-    """The symbols and models user modules lend, by name.
-
-    A module's models are its module-level dicts whose keys are all book symbols (``MODEL``
-    first, then in module order; the first value of a name wins); its symbols are those
-    keys and its module-level symbols (a constrained atom such as ``angle("theta")`` lends
-    itself as its model).
-
-    Args:
-        modules: paths, dotted names or module objects
-            (:func:`rigidsym.checking.deciding.usermodules.load`).
-
-    Returns:
-        ``{name: (symbol, model value or None)}``.
-
-    Raises:
-        BadInput: a module that cannot be loaded.
-    """
-    import sys
-    from types import ModuleType
-
-    from rigidsym.checking.deciding import usermodules
-
-    out: dict = {}
-    for m in modules or ():
-        um = usermodules.adopt(m) if isinstance(m, ModuleType) else usermodules.load(m)
-        for name, v in module_symbols(vars(sys.modules[um.name])).items():
-            out.setdefault(name, v)
-    return out
-
-
-def module_symbols(names: dict) -> dict:
-    """What one module's namespace lends (see :func:`lent`): ``{name: (symbol, value)}``."""
-    from rigidsym.algebra.symbols import constraint_of
-
-    out: dict = {}
-    dicts = [v for v in names.values() if isinstance(v, dict) and v and all(
-        isinstance(k, sp.Symbol | sp.MatrixSymbol) for k in v)]
-    if isinstance(names.get("MODEL"), dict) and names["MODEL"] in dicts:
-        dicts.remove(names["MODEL"])
-        dicts.insert(0, names["MODEL"])
-    for d in dicts:
-        for sym, value in d.items():
-            out.setdefault(sym.name, (sym, value))
-    for v in names.values():
-        if isinstance(v, sp.MatrixSymbol) or (isinstance(v, sp.Symbol)
-                                              and not isinstance(v, sp.Dummy)):
-            out.setdefault(v.name, (v, v if constraint_of(v) is not None else None))
-    return out
 
 
 def declare_latex(latex: str, let=None, *, book: str | None = None, modules=()):
