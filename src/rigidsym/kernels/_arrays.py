@@ -90,25 +90,31 @@ def make_all(progs: ArraySpace, make: Callable) -> dict:
     return {name: make(name) for name in progs.meta if not name.endswith(SUFFIX)}
 
 
-def modes(check: bool | None, on_singular: str | None, traced: bool, where: str):
+def _raise(exc_type: type, message: str):
+    raise exc_type(message)
+
+
+def modes(check: bool | None, on_singular: str | None, traced: bool, where: str,
+          refuse: Callable = _raise):
     """The effective ``(check, on_singular)`` of a call: defaults ``True`` / ``"raise"`` in
     eager mode, ``False`` / ``"nan"`` while traced (no host synchronisation there).
+    ``refuse(exc_type, message)`` raises the errors (PyTorch: outside Dynamo's trace).
 
     Raises:
         ValueError: ``check=True`` or ``on_singular="raise"`` while traced (``where`` names
             the tracer), or a bad value.
     """
     if check is not None and not isinstance(check, bool):
-        raise TypeError(f"check: expected True, False or None, got {check!r}")
+        refuse(TypeError, f"check: expected True, False or None, got {check!r}")
     if on_singular is not None and on_singular not in _MODES:
-        raise ValueError(f"on_singular: expected 'raise' or 'nan', got {on_singular!r}")
+        refuse(ValueError, f"on_singular: expected 'raise' or 'nan', got {on_singular!r}")
     if traced:
         if check:
-            raise ValueError(f"check=True needs eager mode (it reads values on the host); "
-                             f"under {where} pass check=False or leave it unset")
+            refuse(ValueError, f"check=True needs eager mode (it reads values on the host); "
+                               f"under {where} pass check=False or leave it unset")
         if on_singular == "raise":
-            raise ValueError(f"on_singular='raise' needs eager mode; under {where} use "
-                             "'nan' (the default there)")
+            refuse(ValueError, f"on_singular='raise' needs eager mode; under {where} use "
+                               "'nan' (the default there)")
         return False, "nan"
     return (True if check is None else check), (on_singular or "raise")
 

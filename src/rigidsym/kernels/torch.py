@@ -61,6 +61,16 @@ def _traced(xs) -> bool:
         torch._C._functorch.is_functorch_wrapped_tensor(x) for x in xs)
 
 
+@torch.compiler.disable(reason="rigidsym.kernels.torch: check=True and on_singular='raise' "
+                        "need eager mode; under torch.compile leave them unset (check=False, "
+                        "on_singular='nan')")
+def _refuse(exc_type: type, message: str):
+    """Raise a refusal outside Dynamo's trace: raised while traced, it made Dynamo mark the
+    kernel's code objects to skip, so that a later fullgraph compile of the same kernel ran
+    them eagerly and failed on a nested frame (torch 2.13)."""
+    raise exc_type(message)
+
+
 def _dtype(values) -> torch.dtype:
     found = [v.dtype for v in values if isinstance(v, torch.Tensor) and v.dtype.is_floating_point]
     found += [torch.from_numpy(np.empty(0, v.dtype)).dtype for v in values
@@ -177,7 +187,8 @@ class _Space:
         meta = self.progs.meta[name]
         args, outs = meta["args"], meta["outputs"]
         xs = _convert(name, values, args)
-        check, on_singular = _arrays.modes(check, on_singular, _traced(xs), _TRACER)
+        check, on_singular = _arrays.modes(check, on_singular, _traced(xs), _TRACER,
+                                           _refuse)
         batch = _arrays.broadcast_batch(torch.broadcast_shapes, xs, args)
         if check:
             _arrays.validate(torch, [x.detach() for x in xs], args)
