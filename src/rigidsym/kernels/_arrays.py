@@ -134,7 +134,10 @@ def validate(xp, arrays: list, args: list[dict]) -> None:
             continue
         tol = kind.tolerance(np.dtype(str(x.dtype).replace("torch.", "")))
         if kind.shape == (3, 3):
-            g = xp.einsum("...ki,...kj->...ij", x, x) - xp.eye(3, dtype=x.dtype)
+            ident = xp.eye(3, dtype=x.dtype)
+            if hasattr(ident, "to"):  # torch: on the input's device (found on a GPU)
+                ident = ident.to(x.device)
+            g = xp.einsum("...ki,...kj->...ij", x, x) - ident
             err = float(xp.abs(g).max())
             if not err <= tol:
                 raise ValueError(f"{a['name']}: not orthogonal (max |{a['name']}^T "
