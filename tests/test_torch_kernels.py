@@ -185,7 +185,7 @@ def test_a_refused_compile_leaves_no_trace():
         loose(*xs)
     strict = torch.compile(lambda *a: rk.wrench_transfer(*a, on_singular="raise"),
                            backend="aot_eager", fullgraph=True)
-    with pytest.raises(Exception, match="on_singular='raise' need eager mode"):
+    with pytest.raises(Exception, match="need.{0,3}eager.mode"):  # the reason, or its name
         strict(*xs)
     f = torch.compile(rk.wrench_transfer, backend="aot_eager", fullgraph=True)
     _close(f(*xs), K.wrench_transfer(*[x.numpy() for x in xs]), 1e-13)

@@ -61,14 +61,21 @@ def _traced(xs) -> bool:
         torch._C._functorch.is_functorch_wrapped_tensor(x) for x in xs)
 
 
-@torch.compiler.disable(reason="rigidsym.kernels.torch: check=True and on_singular='raise' "
-                        "need eager mode; under torch.compile leave them unset (check=False, "
-                        "on_singular='nan')")
-def _refuse(exc_type: type, message: str):
+_EAGER_ONLY = ("rigidsym.kernels.torch: check=True and on_singular='raise' need eager mode; "
+               "under torch.compile leave them unset (check=False, on_singular='nan')")
+
+
+def _needs_eager_mode(exc_type: type, message: str):
     """Raise a refusal outside Dynamo's trace: raised while traced, it made Dynamo mark the
     kernel's code objects to skip, so that a later fullgraph compile of the same kernel ran
     them eagerly and failed on a nested frame (torch 2.13)."""
     raise exc_type(message)
+
+
+try:
+    _refuse = torch.compiler.disable(_needs_eager_mode, reason=_EAGER_ONLY)
+except TypeError:  # torch < 2.7: no reason; Dynamo's message names the function
+    _refuse = torch.compiler.disable(_needs_eager_mode)
 
 
 def _dtype(values) -> torch.dtype:
