@@ -35,7 +35,8 @@ KERNELS = [
     "wrench_transfer", "wrench_transfer_matrix",
 ]
 PUBLIC = {
-    "rigidsym": ["BadInput", "Result", "Results", "check", "load_module", "verify", *DECLARE],
+    "rigidsym": ["BadInput", "Result", "Results", "check", "check_latex", "load_module", "verify",
+                 *DECLARE],
     "rigidsym.declare": DECLARE,
     "rigidsym.kernels": [
         "NonFiniteResultError", "SingularConfigurationError", "accuracy", "backend",
@@ -53,6 +54,8 @@ PUBLIC = {
                        "parse_latex"],
     "rigidsym.latex.transcription": ["STATUSES", "check_transcription", "notes",
                                      "transcription_for", "transcription_words"],
+    # issue 29 item 4: LaTeX in, verdict out (rigidsym.check_latex, rigidsym check --latex)
+    "rigidsym.latex.lets": ["KIND_WORDS", "Let", "kind_of", "read_lets", "split_lets"],
 }
 
 
