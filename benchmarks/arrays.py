@@ -134,14 +134,17 @@ def _tup(v):
     return v if isinstance(v, tuple) else (v,)
 
 
-def table(rows) -> str:
-    cols = ["c", "numpy", "torch", "torch hand", "torch+grad", "torch hand+grad", "jax",
-            "jax hand", "jax+grad", "jax hand+grad"]
+COLS = ["c", "numpy", "torch", "torch hand", "torch+grad", "torch hand+grad", "jax",
+        "jax hand", "jax+grad", "jax hand+grad"]
+
+
+def table(rows, cols=COLS, digits: int = 2) -> str:
+    """The Markdown table of ``rows`` (median seconds, shown in ms)."""
     lines = ["| kernel | dtype | N | " + " | ".join(cols) + " |",
              "|---|---|---:|" + "---:|" * len(cols)]
     for r in rows:
         lines.append(f"| {r['kernel']} | {r['dtype']} | {r['n']:.0e} | "
-                     + " | ".join(f"{r[c] * 1e3:.2f}" for c in cols) + " |")
+                     + " | ".join(f"{r[c] * 1e3:.{digits}f}" for c in cols) + " |")
     return "\n".join(lines)
 
 

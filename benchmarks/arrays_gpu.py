@@ -22,7 +22,7 @@ from pathlib import Path
 import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from arrays import KERNELS, _hand, _inputs, _tup  # noqa: E402 - after the path
+from arrays import KERNELS, _hand, _inputs, _tup, table  # noqa: E402 - after the path
 
 COLS = ["torch", "torch check", "torch compiled", "torch hand", "torch+grad",
         "torch hand+grad", "jax", "jax hand", "jax+grad", "jax hand+grad"]
@@ -99,15 +99,6 @@ def run(sizes) -> list[dict]:
     return rows
 
 
-def table(rows) -> str:
-    lines = ["| kernel | dtype | N | " + " | ".join(COLS) + " |",
-             "|---|---|---:|" + "---:|" * len(COLS)]
-    for r in rows:
-        lines.append(f"| {r['kernel']} | {r['dtype']} | {r['n']:.0e} | "
-                     + " | ".join(f"{r[c] * 1e3:.3f}" for c in COLS) + " |")
-    return "\n".join(lines)
-
-
 if __name__ == "__main__":
     ap = argparse.ArgumentParser()
     ap.add_argument("--sizes", nargs="+", type=float, default=[1e4, 1e6, 1e7])
@@ -115,6 +106,6 @@ if __name__ == "__main__":
     import jax
     import torch
     rows = run([int(s) for s in args.sizes])
-    print(table(rows))
+    print(table(rows, COLS, digits=3))
     print(f"\nGPU: {torch.cuda.get_device_name()}; host {platform.machine()}; "
           f"torch {torch.__version__}, jax {jax.__version__}")

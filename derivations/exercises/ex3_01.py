@@ -118,19 +118,12 @@ def _finish(s: Solution, Q, P, Pp, phi, e, p0, pl) -> Solution:
 def figure(s: Solution):
     """The cube before (grey) and after (blue) the displacement, with the line L of
     minimum displacement (red) and its intersections with the coordinate planes."""
-    from ._draw import axes3d, edges, line_in_box, new_figure, point
+    from ._draw import axes3d, line_in_box, new_figure, point
 
     before = [s.given["A, B, D, E"][:, k] for k in range(4)]
     after = [s.given["A', B', D', E'"][:, k] for k in range(4)]
-    V0, V1 = cube_vertices(*before), cube_vertices(*after)
-    pairs = ["AB", "BC", "CD", "DA", "EF", "FG", "GH", "HE", "AE", "BF", "CG", "DH"]
     fig, ax = new_figure("Exercise 3.1: the cube displaced, and the line L")
-    edges(ax, V0, pairs, "0.55", "before")
-    edges(ax, V1, pairs, "tab:blue", "after")
-    for k in "ABDE":
-        point(ax, V0[k], "0.35", text=k)
-        point(ax, V1[k], "tab:blue", text=k + "'")
-    pts = list(V0.values()) + list(V1.values())
+    pts = _draw_cubes(ax, before, after)
     e, p0 = s.answers["e"], s.answers["plucker"][:3, :].cross(s.answers["plucker"][3:, :])
     for k, v in s.answers.items():
         if k.startswith("intersection_"):
@@ -144,20 +137,28 @@ def figure(s: Solution):
 def given_figure(s: Solution):
     """The given data only (the students' handout): the cube before (grey) and after
     (blue) the displacement; the rotation and the line L are the questions."""
-    from ._draw import axes3d, edges, new_figure, point
+    from ._draw import axes3d, new_figure
 
     before = [sp.Matrix(s.data[k]) for k in ("A", "B", "D", "E")]
     after = [sp.Matrix(s.data[k]) for k in ("A_prime", "B_prime", "D_prime", "E_prime")]
+    fig, ax = new_figure("The cube before and after the displacement")
+    axes3d(ax, _draw_cubes(ax, before, after))
+    return fig
+
+
+def _draw_cubes(ax, before, after) -> list:
+    """The cube on the edges A, B, D, E before (grey) and after (blue), its given vertices
+    named; returns the vertices drawn."""
+    from ._draw import edges, point
+
     V0, V1 = cube_vertices(*before), cube_vertices(*after)
     pairs = ["AB", "BC", "CD", "DA", "EF", "FG", "GH", "HE", "AE", "BF", "CG", "DH"]
-    fig, ax = new_figure("The cube before and after the displacement")
     edges(ax, V0, pairs, "0.55", "before")
     edges(ax, V1, pairs, "tab:blue", "after")
     for k in "ABDE":
         point(ax, V0[k], "0.35", text=k)
         point(ax, V1[k], "tab:blue", text=k + "'")
-    axes3d(ax, list(V0.values()) + list(V1.values()))
-    return fig
+    return list(V0.values()) + list(V1.values())
 
 
 def random_data(rng) -> dict:

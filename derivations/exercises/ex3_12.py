@@ -82,18 +82,14 @@ def solve(a=A_SIDE, h=HEIGHT) -> Solution:
 def figure(s: Solution):
     """The prism, the 45-degree cut plane, and each part's centroid with its principal
     axes (drawn from the answers)."""
-    from ._draw import arrow, axes3d, new_figure, point, segment
-    from ._prism import draw_prism, hexagon
+    from ._draw import arrow, axes3d, new_figure, point
+    from ._prism import draw_prism
 
     a, h = s.given["a (m)"], s.given["h (m)"]
     S = a * sp.sqrt(3) / 2
     fig, ax = new_figure("Exercise 3.12: the prism cut at 45 degrees, two parts")
     pts = draw_prism(ax, a, h)
-    hx = hexagon(a)
-    for k, (px, py) in enumerate(hx):     # the cut: z = y + S on the side faces
-        qx, qy = hx[(k + 1) % 6]
-        segment(ax, (px, py, py + S), (qx, qy, qy + S), color="tab:orange",
-                label="cut plane" if k == 0 else None)
+    _draw_cut(ax, a, S)
     size = max(a, h) / 4
     for tag, colour in (("wedge", "tab:red"), ("upper", "tab:blue")):
         c, axes = s.answers[f"{tag}_centroid_m"], s.answers[f"{tag}_principal_axes"]
@@ -108,20 +104,28 @@ def figure(s: Solution):
 def given_figure(s: Solution):
     """The given data only (the students' handout): the prism of side a and height h and
     the 45-degree cut through a base edge; no centroid, no axes, no moments."""
-    from ._draw import axes3d, new_figure, segment
-    from ._prism import draw_prism, hexagon
+    from ._draw import axes3d, new_figure
+    from ._prism import draw_prism
 
     a, h = sp.sympify(s.data["a"]), sp.sympify(s.data["h"])
     S = a * sp.sqrt(3) / 2
     fig, ax = new_figure(f"Hexagonal prism (side a = {a} m, height h = {h} m) and the cut")
     pts = draw_prism(ax, a, h)
+    _draw_cut(ax, a, S)
+    axes3d(ax, pts, legend=False)
+    return fig
+
+
+def _draw_cut(ax, a, S) -> None:
+    """The 45-degree cut, z = y + S, on the side faces of the prism of side a."""
+    from ._draw import segment
+    from ._prism import hexagon
+
     hx = hexagon(a)
-    for k, (px, py) in enumerate(hx):     # the cut: z = y + S on the side faces
+    for k, (px, py) in enumerate(hx):
         qx, qy = hx[(k + 1) % 6]
         segment(ax, (px, py, py + S), (qx, qy, qy + S), color="tab:orange",
                 label="cut plane" if k == 0 else None)
-    axes3d(ax, pts, legend=False)
-    return fig
 
 
 def random_data(rng) -> dict:
