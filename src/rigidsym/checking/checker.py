@@ -140,8 +140,8 @@ def decide_rel(rel: Rel, model: dict, seed: int, st: Statement | None = None) ->
     if st is not None:
         rels = st.printed + st.claims + (st.corrected or [])
 
-        def describe(plan, pt):
-            return describe_point(rel, model, rels, plan, pt, st.parametrisation)
+        def describe(plan, pt, split=None):
+            return describe_point(rel, model, rels, plan, pt, st.parametrisation, split)
     if ls != rs:
         plan = make_plan(_entries(lhs) + _entries(rhs))
         rng = random.Random(seed)
@@ -158,9 +158,11 @@ def decide_rel(rel: Rel, model: dict, seed: int, st: Statement | None = None) ->
         return _RelOutcome(False, "counterexample",
                            f"shape mismatch: {ls[0]}x{ls[1]} vs {rs[0]}x{rs[1]}", ce, rel.label)
     alts = cases(lhs, rhs)  # acos/atan2 on their principal branches (branches.py)
-    if alts == [(lhs, rhs, lhs, rhs)]:
+    if alts == [(lhs, rhs, lhs, rhs, {})]:
         return _decide_case(rel, lhs, rhs, lhs, rhs, seed, describe)
-    outs = [_decide_case(rel, *alt, seed, describe if alt[0] is lhs else None)
+    # a split case is described in the reader's angle (a = s b), never in b (issue 28)
+    outs = [_decide_case(rel, *alt[:4], seed, None if describe is None else
+                         (lambda plan, pt, sub=alt[4]: describe(plan, pt, sub)))
             for alt in alts]
     for o, alt in zip(outs, alts, strict=True):
         if o.zero is False:  # the case's relation is the evidence the balls re-check

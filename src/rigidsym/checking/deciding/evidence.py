@@ -75,7 +75,10 @@ def _exact_value(x, plan, pt):
     bare = {a: 2 * plan.angles[a][1] * sp.atan(sp.Rational(pt[plan.angles[a][0]]))
             for a in plan.bare if a in plan.angles}
     bare.update({a: sp.Rational(pt[s]) for a, s in plan.bare.items() if a not in bare})
-    spt = {k: sp.Rational(v.numerator, v.denominator) for k, v in pt.items()}
+    # a bare angle is its own variable in the zero test (independent of its tangent);
+    # the values shown are the consistent ones, 2M atan(tau), as the balls use (issue 28)
+    own = {plan.bare[a] for a in bare if a in plan.angles}
+    spt = {k: sp.Rational(v.numerator, v.denominator) for k, v in pt.items() if k not in own}
 
     def one(e):
         return evaluate(e, plan, spt, lift=lambda v: v, bare_value=bare)
