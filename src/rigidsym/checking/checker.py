@@ -48,6 +48,7 @@ from rigidsym.checking.deciding.explicit import (
 from rigidsym.checking.deciding.records import member_record, model_words, printed_latex
 from rigidsym.checking.deciding.registry import REGISTRY, Equation, Rel, Statement
 from rigidsym.checking.repairing.correction import RepairSettings, correct
+from rigidsym.printing.names import book_text
 from rigidsym.zero.decide import Unsupported, decide_zero, make_plan
 
 __all__ = ["Outcome", "check", "explicit", "shape_of", "NUMERIC_DIGITS", "NUMERIC_POINTS"]
@@ -283,7 +284,7 @@ def _check(eq: Equation, t0: float, settings: RepairSettings,
         members += [member_record(r, "claim", o) for r, o in zip(st.claims, outs, strict=True)]
         if ok and all(o.zero for o in outs):
             verdict, method = "definition", "definition"
-            detail = "introduces " + ", ".join(st.defines)
+            detail = "introduces " + ", ".join(book_text(d) for d in st.defines)
             backing = list(st.claims)
         elif ok:
             verdict, method, detail = ("undecided", "undecided",

@@ -50,7 +50,7 @@ def marked_mathml(latex: str | None, fallback: str | None) -> Markup:
 
 
 def _member_words(member: str) -> str:
-    return f"member {member!r}" if member else "the equation"
+    return f"member “{label_text(member)}”" if member else "the equation"
 
 
 def repairs_view(rec: dict) -> list[dict]:

@@ -203,7 +203,7 @@ def repair_lines(r: Outcome, width: int) -> list[str]:
     if r.correction is not None:
         out += _hard_wrap(f"Correction: {r.correction}", width, "  ")
     for s in r.repair_search:
-        who = f"member {s['member']!r}" if s["member"] else "the equation"
+        who = f"member “{label_text(s['member'])}”" if s["member"] else "the equation"
         out += _hard_wrap(f"{who}: {s['words']}", width, "  ")
         mine = [x for x in r.repairs if x["member"] == s["member"]]
         for k, x in enumerate(mine, 1):
