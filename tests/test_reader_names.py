@@ -80,9 +80,35 @@ def html_text(page: str) -> str:
     return re.sub(r"\s+", " ", html.unescape(re.sub(r"<[^>]+>", " ", page)))
 
 
+def _nested_lists(text: str) -> list[int]:
+    """Where a matrix is written as Python's nested lists, ``[[X, Y], [Z, W]]``: a bracket
+    group whose top-level items (split at ``,``, no ``;``) are all bracket groups (block
+    notation is ``[X, Y; Z, W]``; ``[[ω], O; [v], [ω]]`` is block notation)."""
+    out, stack = [], []
+    for i, ch in enumerate(text):
+        if ch == "[":
+            stack.append(i)
+        elif ch == "]" and stack:
+            start = stack.pop()
+            inner, depth, items, cur = text[start + 1:i], 0, [], ""
+            for c in inner:
+                depth += (c == "[") - (c == "]")
+                if c in ",;" and depth == 0:
+                    items.append((c, cur.strip()))
+                    cur = ""
+                else:
+                    cur += c
+            items.append(("", cur.strip()))
+            if len(items) > 1 and all(sep != ";" for sep, _ in items) and \
+                    all(x.startswith("[") and x.endswith("]") for _, x in items):
+                out.append(start)
+    return out
+
+
 def offences(text: str, code: set[str]) -> list[str]:
     """Each internal name in ``text`` with its reason and context."""
-    out = []
+    out = [f"a matrix as nested lists (blocks are [X, Y; Z, W]): …{text[i:i + 60]}…"
+           for i in _nested_lists(text)]
     for pat, why in FORBIDDEN:
         out += [f"{why}: …{text[max(0, m.start() - 50):m.end() + 30]}…"
                 for m in pat.finditer(text)]
@@ -101,10 +127,11 @@ def test_the_scan_finds_what_it_looks_for(code):
     # the scan itself: each kind of slip found, book notation and code names left alone
     for slip in ["(-M_C)[:3, 3:] = O", "replace V by V_alt", "θ_neg = 1", "e_2prime",
                  "pdot_perp brace", "adot . omega/||omega||^2", "Pluecker array",
-                 "n_wrench_turn = 1"]:
+                 "n_wrench_turn = 1", "m[[A, B], [C, O]]", "[[[ω], 0], [[v], [ω]]]"]:
         assert offences(slip, code), slip
     assert offences("M_A = [I_C, O; O, m 𝟏]; ‖ω‖² = ω·ω; [M_A - M_C]₁₂ = O; "
-                    "kernel plucker_transfer; e'' = f/‖f‖", code) == []
+                    "kernel plucker_transfer; e'' = f/‖f‖; [[ω], O; [v], [ω]]; "
+                    "[[ω], v; 0ᵀ, 0]; [ω; v]", code) == []
 
 
 @pytest.mark.parametrize("name", ["chapter3.html", "chapter3.md"])

@@ -35,6 +35,9 @@ _MATH_TOKEN = re.compile(
 _TOKEN = re.compile(r"(?<![A-Za-z0-9_])[A-Za-z][A-Za-z0-9_]*'*")  # not inside "3x4"
 
 
+_NESTED = re.compile(r"\[(\[[^\[\]]*\](?:, \[[^\[\]]*\])+)\]")
+
+
 def _mathy(tok: str) -> bool:
     return len(tok) == 1 or bool(_MATH_TOKEN.match(tok))
 
@@ -128,6 +131,9 @@ def label_text(text: str) -> str:
     out = re.sub(r"\^(-?\d+)\b", lambda m: m.group(1).translate(_SUP), out)
     out = out.replace("!=", "≠").replace("<=", "≤").replace(">=", "≥")
     out = re.sub(r"\bbrace\b", "underbrace", out)  # (3.59)'s braced term, as the book's LaTeX
+    # a block matrix written as Python's nested lists, m[[X, Y], [Z, W]]: block notation
+    out = _NESTED.sub(lambda m: "[" + "; ".join(re.findall(r"\[([^\[\]]*)\]", m.group(1)))
+                      + "]", out)
     # a dot product: "a . b", or "w.w" between two mathematical tokens (not "e.g.")
     out = re.sub(r"(?<=[\w)‖'\u0307\u0308\u0303]) \. (?=[\w(‖])", "·", out)
     out = re.sub(r"\b([A-Za-z][\w']*)\.([A-Za-z][\w']*)\b(?!\.)",
