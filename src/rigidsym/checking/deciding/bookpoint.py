@@ -206,7 +206,8 @@ def _describe(rel, model, rels, plan, pt, sentence, split) -> dict:
             params.append(a)
     # 3. other scalars and vectors of the statement that the point fixes (m, c, ȧ⊥)
     _add_fixed(add, in_rels, seen | sides, model, known)
-    chosen = _chosen(plan, pt, params, sentence, inverse, _group_alias(model))
+    chosen = _chosen(plan, pt, params, sentence, inverse,
+                     _group_alias(model, _atoms_of(rel.lhs) | _atoms_of(rel.rhs), in_rels))
     if vals.filled:
         names = sorted({notation.book_group(plain_name(a)) for a in vals.filled})
         chosen["text"] += (f" {', '.join(names)} cancel from the failing member, so any value "
@@ -229,12 +230,15 @@ def _add_fixed(add, in_rels: set, skip: set, model, known: set) -> None:
             add(s, notation.text(s), notation.latex(s), v)
 
 
-def _group_alias(model: dict) -> dict:
+def _group_alias(model: dict, failing: set = frozenset(), used: set = frozenset()) -> dict:
     """Constrained group name -> the reader's symbol whose model value is exactly that
     group (``R: rigid_motion().Q`` -> ``{"Q": "R"}``): "how the point was chosen" names
-    the reader's symbol, not the group's internal name (issue 28)."""
+    the reader's symbol, not the group's internal name (issue 28). A symbol of the failing
+    member is preferred, then one of the statement's relations, then any."""
     out: dict = {}
-    for key, val in model.items():
+    keys = sorted(model, key=lambda k: (k not in failing, k not in used))
+    for key in keys:
+        val = model[key]
         if not isinstance(key, sp.Symbol | sp.MatrixSymbol):
             continue
         ents = _entries(val) if isinstance(val, sp.MatrixBase) else [val]
