@@ -146,7 +146,7 @@ def text_lines(ce: dict, sides: tuple[str, str], width: int,
     else:  # no description: the parametrisation variables themselves
         for p in ce["point"]:
             dec = f"   ≈ {p['decimal']}" if p["decimal"] and p["decimal"] != p["exact"] else ""
-            out += _wrap(f"{p['book']} = {p['exact']}{dec}", width, "  ")
+            out += _wrap(f"{p['book']} = {_value_text(p['exact'])}{dec}", width, "  ")
     left, right = sides
     out += _value_lines(f"left side{' ' + left if left else ''}", ce["lhs"], width)
     out += _value_lines(f"right side{' ' + right if right else ''}", ce["rhs"], width)
