@@ -47,7 +47,8 @@ def _hand(xp, name: str):
                           xp.stack([e[..., 2], z, -e[..., 0]], -1),
                           xp.stack([-e[..., 1], e[..., 0], z], -1)], -2)
             s, c = xp.sin(phi)[..., None, None], xp.cos(phi)[..., None, None]
-            return xp.eye(3, dtype=e.dtype) + s * E + (1 - c) * (E @ E)
+            on = {"device": e.device} if xp.__name__ == "torch" else {}  # the GPU table
+            return xp.eye(3, dtype=e.dtype, **on) + s * E + (1 - c) * (E @ E)
         return rodrigues
 
     def screw(omega, a, a_dot):

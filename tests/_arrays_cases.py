@@ -46,16 +46,16 @@ def singular_probes(name: str, n: int = 3) -> list[np.ndarray] | None:
     xs = sample(name, n, seed=7)
     names = [a["name"] for a in meta["args"]]
     k = names.index(arg)
-    if arg == "phi":
-        xs[k] = np.full(n, 1e-6)
+    if arg == "phi":    # phi -> 0, or phi -> pi where the set is 1 + cos(phi) = 0
+        xs[k] = np.full(n, np.pi - 1e-6 if "phi = pi" in meta["singular"] else 1e-6)
     elif arg in ("omega", "p2"):
         if arg == "p2":
             xs[k] = xs[names.index("p1")] + 1e-6 * xs[k] / np.linalg.norm(xs[k], axis=-1,
                                                                           keepdims=True)
         else:
             xs[k] = 1e-6 * xs[k] / np.linalg.norm(xs[k], axis=-1, keepdims=True)
-    elif arg == "w_A":
-        xs[k][:, :3] *= 1e-6 / np.linalg.norm(xs[k][:, :3], axis=-1, keepdims=True)
+    elif arg == "w_A":  # w_A = [n_A; f], singular at f = 0
+        xs[k][:, 3:] *= 1e-6 / np.linalg.norm(xs[k][:, 3:], axis=-1, keepdims=True)
     elif arg == "Q":  # rotations by pi - 1e-6 and by 1e-6
         e = np.array([[0.0, 0.6, 0.8], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]])[:n]
         xs[k] = K.rotation_from_natural_invariants(e, np.array([np.pi - 1e-6, 1e-6,

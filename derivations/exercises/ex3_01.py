@@ -139,3 +139,37 @@ def figure(s: Solution):
     line_in_box(ax, p0, e, pts, "tab:red", "L (minimum displacement)")
     axes3d(ax, pts)
     return fig
+
+
+def given_figure(s: Solution):
+    """The given data only (the students' handout): the cube before (grey) and after
+    (blue) the displacement; the rotation and the line L are the questions."""
+    from ._draw import axes3d, edges, new_figure, point
+
+    before = [sp.Matrix(s.data[k]) for k in ("A", "B", "D", "E")]
+    after = [sp.Matrix(s.data[k]) for k in ("A_prime", "B_prime", "D_prime", "E_prime")]
+    V0, V1 = cube_vertices(*before), cube_vertices(*after)
+    pairs = ["AB", "BC", "CD", "DA", "EF", "FG", "GH", "HE", "AE", "BF", "CG", "DH"]
+    fig, ax = new_figure("The cube before and after the displacement")
+    edges(ax, V0, pairs, "0.55", "before")
+    edges(ax, V1, pairs, "tab:blue", "after")
+    for k in "ABDE":
+        point(ax, V0[k], "0.35", text=k)
+        point(ax, V1[k], "tab:blue", text=k + "'")
+    axes3d(ax, list(V0.values()) + list(V1.values()))
+    return fig
+
+
+def random_data(rng) -> dict:
+    """A variant with readable exact numbers (an exam's draw): a cube of side 1 or 2 with
+    its edges along the axes and A at small integers, turned by a Cayley rotation of
+    entries of denominator 3 or 9 (about no coordinate axis) and shifted by small integers."""
+    from ._random import cayley_small, small_vector
+
+    side, A = rng.choice((1, 2)), small_vector(rng, -1, 1)
+    P = {"A": A, "B": A + side * sp.Matrix([1, 0, 0]), "D": A + side * sp.Matrix([0, 1, 0]),
+         "E": A + side * sp.Matrix([0, 0, 1])}
+    Q, t = cayley_small(rng), small_vector(rng, -2, 2)
+    out = {k: list(v) for k, v in P.items()}
+    out.update({f"{k}_prime": list(Q * v + t) for k, v in P.items()})
+    return out

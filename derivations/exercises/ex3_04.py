@@ -14,6 +14,7 @@ import sympy as sp
 from rigidsym.checking.worked import Param, Solution, exact_check, is_zero, truth_check
 
 from ._fit import exact_rotation, is_local_minimum, nearest_rotation, squared_residual
+from ._random import cayley
 
 ID = "ex3.4"
 R = sp.Rational
@@ -164,18 +165,10 @@ def given_figure(s: Solution):
     return fig
 
 
-def _cayley(rng):
-    """A rotation with small rational entries: Cayley's formula of a small rational
-    vector, ``Q = (1 - C)^-1 (1 + C)``."""
-    c = sp.Matrix([sp.Rational(rng.randint(-2, 2), rng.randint(1, 2)) for _ in range(3)])
-    C = sp.Matrix([[0, -c[2], c[1]], [c[2], 0, -c[0]], [-c[1], c[0], 0]])
-    return (sp.eye(3) - C).inv() * (sp.eye(3) + C)
-
-
 def random_data(rng) -> dict:
     """A well-posed variant with readable exact numbers (an exam's draw): readings in F_1
     of small integers, F_2 turned by a Cayley rotation of small rationals."""
-    Q = _cayley(rng)
+    Q = cayley(rng)
     n1 = sp.Matrix([rng.randint(-4, 4) for _ in range(3)])
     f1 = sp.Matrix([rng.randint(-3, 3) for _ in range(3)])
     return {"n_1": list(n1), "f_1": list(f1), "n_2": list(Q.T * n1), "f_2": list(Q.T * f1)}

@@ -92,3 +92,34 @@ def figure(s: Solution):
             label=f"d = ||n|| = {float(sp.N(d)):.4g} m")
     axes3d(ax, pts)
     return fig
+
+
+def given_figure(s: Solution):
+    """The given data only (the students' handout): the direction part e and the moment
+    part n of the Plücker coordinates, as arrows at the origin of G; the axis, its point
+    closest to O and the distance are the questions."""
+    from ._draw import arrow, axes3d, frame, new_figure
+
+    data = sp.Matrix(s.data["plucker"])
+    e, n = data[:3, :], data[3:, :]
+    size = max(float(sp.N(sp.sqrt(v.dot(v)))) for v in (e, n)) * 0.6
+    fig, ax = new_figure("The Plücker coordinates [e; n] of the joint axis, in G")
+    frame(ax, sp.zeros(3, 1), sp.eye(3), "G", "0.4", scale=size)
+    arrow(ax, sp.zeros(3, 1), e, "tab:blue", "e (direction part)")
+    arrow(ax, sp.zeros(3, 1), n, "tab:red", "n (moment part)", dashed=True)
+    axes3d(ax, [e, n, sp.ones(3, 1) * size, -sp.ones(3, 1) * size])
+    return fig
+
+
+def random_data(rng) -> dict:
+    """A variant with readable exact numbers (an exam's draw): homogeneous Plücker
+    coordinates of integers, the direction a Pythagorean quadruple (so that its norm is an
+    integer) and the moment that of a point of small integers not on the origin's line."""
+    from ._random import small_vector, unit_vector
+
+    while True:
+        e = unit_vector(rng)
+        e = e * sp.ilcm(*[x.q for x in e])          # the quadruple's integers
+        n = small_vector(rng).cross(e)
+        if not is_zero(n):
+            return {"plucker": [*e, *n]}

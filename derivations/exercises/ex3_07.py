@@ -81,3 +81,34 @@ def figure(s: Solution):
     point(ax, ps, "tab:red", "P* (closest to O)", "P*")
     axes3d(ax, pts)
     return fig
+
+
+def given_figure(s: Solution):
+    """The given data only (the students' handout): the points A and B with the moments
+    measured there; the axis is the question."""
+    from ._draw import arrow, axes3d, new_figure, point
+
+    g = s.data
+    a, b, nA, nB = (sp.Matrix(g[k]) for k in ("a", "b", "n_A", "n_B"))
+    fig, ax = new_figure("The moments of the axis measured at A and at B")
+    point(ax, sp.zeros(3, 1), "0.3", text="O")
+    point(ax, a, "tab:green", text="A")
+    point(ax, b, "tab:purple", text="B")
+    arrow(ax, a, nA, "tab:green", "n_A at A")
+    arrow(ax, b, nB, "tab:purple", "n_B at B")
+    axes3d(ax, [sp.zeros(3, 1), a, b, a + nA, b + nB])
+    return fig
+
+
+def random_data(rng) -> dict:
+    """A well-posed variant with readable exact numbers (an exam's draw): A, B and a point
+    of the axis of small integers, the axis's direction a Pythagorean quadruple, and the
+    moments n_X = (p - x) x e it has about A and B (redrawn until they are not parallel)."""
+    from ._random import small_vector, unit_vector
+
+    while True:
+        a, b, p = small_vector(rng, -2, 2), small_vector(rng, -2, 2), small_vector(rng)
+        e = unit_vector(rng)
+        nA, nB = (p - a).cross(e), (p - b).cross(e)
+        if not is_zero(nA.cross(nB)):
+            return {"a": list(a), "b": list(b), "n_A": list(nA), "n_B": list(nB)}

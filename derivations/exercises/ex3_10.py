@@ -204,3 +204,8 @@ def _checks(s: Solution, seq: str, W, Winv, rows) -> None:
         ok &= len(ss) == 2
     s.check(truth_check("every singular point found zeroes det W and drops rank W to 2",
                         ok, "two points per sequence in [-pi, pi)"))
+
+
+def random_data(rng) -> dict:
+    """A variant (an exam's draw): one of the twelve intrinsic Euler-angle sequences."""
+    return {"sequence": rng.choice(sorted(SEQUENCES))}

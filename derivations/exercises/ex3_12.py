@@ -103,3 +103,32 @@ def figure(s: Solution):
             arrow(ax, c, v / sp.sqrt(v.dot(v)), colour, scale=float(sp.N(size)))
     axes3d(ax, pts)
     return fig
+
+
+def given_figure(s: Solution):
+    """The given data only (the students' handout): the prism of side a and height h and
+    the 45-degree cut through a base edge; no centroid, no axes, no moments."""
+    from ._draw import axes3d, new_figure, segment
+    from ._prism import draw_prism, hexagon
+
+    a, h = sp.sympify(s.data["a"]), sp.sympify(s.data["h"])
+    S = a * sp.sqrt(3) / 2
+    fig, ax = new_figure(f"Hexagonal prism (side a = {a} m, height h = {h} m) and the cut")
+    pts = draw_prism(ax, a, h)
+    hx = hexagon(a)
+    for k, (px, py) in enumerate(hx):     # the cut: z = y + S on the side faces
+        qx, qy = hx[(k + 1) % 6]
+        segment(ax, (px, py, py + S), (qx, qy, qy + S), color="tab:orange",
+                label="cut plane" if k == 0 else None)
+    axes3d(ax, pts, legend=False)
+    return fig
+
+
+def random_data(rng) -> dict:
+    """A variant with readable sizes in metres (an exam's draw): the side a and a height h
+    of 2, 2.5, 3 or 4 sides, so that h >= a sqrt(3) and the cut leaves through a side face."""
+    from decimal import Decimal
+
+    a = rng.choice(["0.02", "0.03", "0.04", "0.05", "0.1"])
+    k = rng.choice(["2", "2.5", "3", "4"])
+    return {"a": a, "h": format((Decimal(a) * Decimal(k)).normalize(), "f")}

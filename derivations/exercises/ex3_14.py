@@ -165,3 +165,19 @@ def _admissible_check(s: Solution, lam, slack=0) -> None:
                         "equality (1 + 2 = 3 for the book's data) is the limiting case, a body "
                         "with all its mass in one plane" if bool(lam[0] + lam[1] == lam[2])
                         else "exact comparison of the principal moments"))
+
+
+def random_data(rng) -> dict:
+    """A well-posed variant with readable exact numbers (an exam's draw): distinct integer
+    principal moments obeying the strict triangle inequality, seen by A and by B in two
+    frames turned by Cayley rotations with entries of denominator 3 (so the matrices have
+    entries of denominator 9)."""
+    from ._random import cayley_small
+
+    while True:
+        lam = sorted(rng.sample(range(2, 10), 3))
+        if lam[2] < lam[0] + lam[1]:
+            break
+    D = sp.diag(*lam)
+    QA, QB = cayley_small(rng, halves=False), cayley_small(rng, halves=False)
+    return {"I_A": (QA * D * QA.T).tolist(), "I_B": (QB * D * QB.T).tolist()}

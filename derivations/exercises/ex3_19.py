@@ -15,6 +15,7 @@ from rigidsym.declare import block, rotation, vector
 
 from ..sec3_4_2 import twist_transfer_matrix
 from ._fit import exact_rotation, nearest_rotation
+from ._random import cayley
 from ._screw import rotation_defect
 
 ID = "ex3.19"
@@ -193,18 +194,10 @@ def given_figure(s: Solution):
     return fig
 
 
-def _cayley(rng):
-    """A rotation with small rational entries: Cayley's formula of a small rational
-    vector, ``Q = (1 - C)^-1 (1 + C)``."""
-    c = sp.Matrix([sp.Rational(rng.randint(-2, 2), rng.randint(1, 2)) for _ in range(3)])
-    C = sp.Matrix([[0, -c[2], c[1]], [c[2], 0, -c[0]], [-c[1], c[0], 0]])
-    return (sp.eye(3) - C).inv() * (sp.eye(3) + C)
-
-
 def random_data(rng) -> dict:
     """A variant with readable exact numbers (an exam's draw): small integer readouts, an
     offset of a few centimetres, F_2 turned by a Cayley rotation of small rationals."""
     d = [rng.choice(["0", "0.05", "0.1", "-0.05", "0.2"]) for _ in range(3)]
     return {"n_S": [rng.randint(-3, 3) for _ in range(3)],
             "f_S": [rng.randint(-5, 5) for _ in range(3)], "d": d,
-            "Q": _cayley(rng).tolist()}
+            "Q": cayley(rng).tolist()}

@@ -5,8 +5,8 @@ equation declared once (``rigidsym.derivations``), decided by a sound constraint
 reported, and compiled to kernels; the same engine checks and compiles a reader's own
 equations (user modules).
 
-The public API (README, "Python API"): :func:`check`, :func:`verify`, :class:`Result`,
-:class:`Results`, :func:`load_module` and the declaration vocabulary of
+The public API (README, "Python API"): :func:`check`, :func:`check_latex`, :func:`verify`,
+:class:`Result`, :class:`Results`, :func:`load_module` and the declaration vocabulary of
 :mod:`rigidsym.declare` (``equation``, ``Statement``, ``Rel``, constrained atoms, operators).
 Public modules: ``rigidsym``, ``rigidsym.declare``, ``rigidsym.kernels``,
 ``rigidsym.codegen.spec`` (kernel declarations) and ``rigidsym.cli``; everything else is
@@ -19,7 +19,7 @@ import importlib
 
 __version__ = "0.2.0"
 
-_API = ("check", "verify", "Result", "Results")
+_API = ("check", "check_latex", "verify", "Result", "Results")
 _DECLARE = (
     "equation", "Statement", "Rel",
     "TIME", "unit_vector", "unit_vector4", "rotation", "angle", "rigid_motion", "RigidMotion",

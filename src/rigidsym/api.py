@@ -23,7 +23,7 @@ from typing import overload
 from rigidsym.checking.checker import Outcome
 from rigidsym.checking.deciding.registry import VERDICTS, BadInput, select
 
-__all__ = ["check", "verify", "Result", "Results"]
+__all__ = ["check", "check_latex", "verify", "Result", "Results"]
 
 ModuleSpec = str | os.PathLike | ModuleType
 
@@ -273,6 +273,71 @@ def check(eq_id: str, *, modules: Iterable[ModuleSpec] = (), repairs: bool = Tru
         raise BadInput(f"eq_id: {eq_id} has {len(ids)} parts ({', '.join(ids)}): check one, "
                        f"or verify([{eq_id!r}])")
     return Result.of(_check(ids[0], repairs=repairs, repair_budget=repair_budget))
+
+
+def check_latex(latex: str, let: Sequence[str] | dict[str, str] | str | None = None, *,
+                book: str | None = None, modules: Iterable[ModuleSpec] = (),
+                repairs: bool = True, repair_budget: int | None = None) -> Result:
+    """Decide a relation written in LaTeX (the Python side of ``rigidsym check --latex``).
+
+    The LaTeX is read by the chapter's reader (:func:`rigidsym.latex.parse_latex`); each
+    relation it states is a printed member, the declarations ``let`` give the model, and
+    the checker decides it as it decides a declaration (exactly, backed numerically; the
+    constraints of the kinds imposed exactly, never by floating point).
+
+    Args:
+        latex: one or more relations (``=`` or ``\\equiv`` chains), e.g.
+            ``r"\\mathbf{Q}^T\\mathbf{Q} = \\mathbf{1}"``.
+        let: what the symbols are: a list of ``"NAME: KIND"`` (KIND one of
+            :data:`rigidsym.latex.lets.KIND_WORDS`: ``unit vector``, ``rotation``,
+            ``angle``, ``6-vector``, ``4x4 matrix``, ``twist`` ...) or ``"NAME = LATEX"`` (a
+            first-principles model in the same notation); one string may hold several,
+            separated by ``"; "``; or a dict ``{NAME: KIND or LATEX}``. A symbol nothing
+            declares is free, its shape by the book's convention (bold lower-case a
+            3-vector, bold capital 3 x 3, else a scalar), and ``Result.model`` says so.
+        book: a section of the chapter (``"3.2"``, ``"3.4.2"``): the glyph table's rows of
+            that section give the glyphs their meaning (names, shapes, angles, notational
+            atoms such as ``E = CPM(e)``).
+        modules: user modules that lend their symbols and models (module-level dicts of
+            book symbols, ``MODEL`` first), matched by name.
+        repairs: search the smallest edits that make a failing relation hold.
+        repair_budget: candidates tried per failing relation (``None``: 5000).
+
+    Returns:
+        The :class:`Result` of the id ``latex:`` plus a short hash of the input; its
+        ``expected`` repeats the verdict (a question has no expectation); ``model`` lists
+        the declarations and the free symbols in words.
+
+    Raises:
+        rigidsym.latex.LatexError: LaTeX that cannot be read (the position with a caret and
+            the constructs expected; an unknown macro named; a juxtaposition whose meaning
+            depends on an undeclared shape asks for a ``let``). A ``ValueError``.
+        BadInput: a declaration that is neither form, an unknown KIND (the kinds listed), a
+            ``let`` naming a symbol that occurs nowhere, an ambiguous glyph of ``book``, a
+            module that cannot be loaded.
+        ValueError: if ``repairs`` is not a bool or ``repair_budget`` not a non-negative
+            integer.
+
+    Example:
+        >>> r = check_latex(r"\\mathbf{Q}^T\\mathbf{Q} = \\mathbf{1}",
+        ...                 let=[r"\\mathbf{Q}: rotation"])      # doctest: +SKIP
+        >>> r.verdict                                              # doctest: +SKIP
+        'verified'
+    """
+    return _check_latex(latex, let, book, modules, repairs, repair_budget)[0]
+
+
+def _check_latex(latex, let, book, modules, repairs=True, repair_budget=None):
+    """:func:`check_latex` and the :class:`rigidsym.latex.letting.Reading` (for the CLI)."""
+    from rigidsym.checking.checker import check as _check
+    from rigidsym.latex.letting import declare_latex
+
+    _repair_args(repairs, repair_budget)
+    eq, reading = declare_latex(latex, let, book=book, modules=modules)
+    r = Result.of(_check(eq, repairs=repairs, repair_budget=repair_budget))
+    r.expected = r.verdict
+    r.model = list(r.model) + reading.notes
+    return r, reading
 
 
 def verify(ids: Sequence[str] | str | None = None, sections: Sequence[str] | str | None = None,

@@ -71,6 +71,7 @@ from rigidsym.algebra.symbols import (
     vector,
     wrench,
 )
+from rigidsym.checking.deciding import registry as _registry
 from rigidsym.checking.deciding.registry import Rel, Statement, equation
 
 __all__ = [
@@ -86,6 +87,29 @@ __all__ = [
     "twist", "wrench", "hat", "vee", "transform", "transform_inverse", "Ad", "ad", "ad_dual",
     "expm", "logm", "diff", "acos", "atan2", "ORDERS",
 ]
+
+def _printed_from_latex(eq, st):
+    """The printed relations of a declaration with ``latex=`` and no printed form: its LaTeX
+    read by :mod:`rigidsym.latex`, each glyph named and shaped as the model's symbol of that
+    name (``\\mathbf{R}`` is the model's ``R``), else as a symbol of its module of that name
+    (a constrained atom such as ``theta = angle("theta")`` stands for itself)."""
+    import sys
+
+    from rigidsym.latex.lending import module_symbols
+    from rigidsym.latex.letting import read_statement
+
+    mod = sys.modules.get(eq.module)
+    lend = module_symbols(vars(mod)) if mod is not None else {}
+    lend.update({s.name: (s, None) for s in st.model
+                 if isinstance(s, sp.Symbol | sp.MatrixSymbol)})
+    printed = read_statement(eq.latex, [], None, lend).statement.printed
+    own = {sp.Symbol(n, real=True): v for n, (s, v) in lend.items()
+           if v is s and isinstance(s, sp.Symbol)}  # the module's constrained scalars
+    return [type(r)(r.lhs.xreplace(own), r.rhs.xreplace(own), r.label) if own else r
+            for r in printed]
+
+
+_registry.PRINTED_FROM_LATEX = _printed_from_latex
 
 #: The time symbol ``t`` (real) of trajectories: atoms made with ``t=TIME`` are functions
 #: of it, and derivatives along a motion are taken with respect to it.

@@ -1,4 +1,4 @@
-"""The ``rigidsym`` command: verify, report, show, exercise, generate, build-c, cache,
+"""The ``rigidsym`` command: verify, report, show, check, exercise, generate, build-c, cache,
 glossary.
 
 Exit codes: 0 = all as expected, 1 = some computed verdict differs from its expectation,
@@ -12,14 +12,25 @@ import argparse
 import os
 import sys
 
-from rigidsym.cli import cache, exam, exercise, generate, glossary, report, show, verify
+from rigidsym.cli import (
+    cache,
+    check,
+    exam,
+    exercise,
+    generate,
+    glossary,
+    report,
+    show,
+    verify,
+)
 from rigidsym.cli._common import HelpFormatter, add_ascii, ascii_output
 
 __all__ = ["main", "build_parser"]
 
 #: the sub-commands: name -> module with ``HELP``, ``add_arguments(parser)``, ``run(args)``
 #: (and optionally ``EXAMPLES``, shown under the command's own ``--help``)
-_COMMANDS = {"verify": verify, "report": report, "show": show, "exercise": exercise,
+_COMMANDS = {"verify": verify, "report": report, "show": show, "check": check,
+             "exercise": exercise,
              "exam": exam,
              "generate": generate.GENERATE, "build-c": generate.BUILD_C, "cache": cache,
              "glossary": glossary}
@@ -34,6 +45,8 @@ examples, one per job:
   rigidsym show 3.57                  the chapter: why (3.57) does not hold as printed
                                       (rigidsym verify checks all 181 ids, ~40 s)
   rigidsym verify --module my_eqs.py  your own equations (see examples/ in the source)
+  rigidsym check --latex '\\mathbf{Q}^T\\mathbf{Q} = \\mathbf{1}' --let '\\mathbf{Q}: rotation'
+                                      an equation in LaTeX, its symbols declared
   rigidsym exercise 3.10              a worked exercise (no id: the list of all 21)
 
 words (verdict, member, claim, model, parametrisation, ...): rigidsym glossary

@@ -5,8 +5,8 @@ Both back-ends evaluate the same generated programs (``generated/torch``, ``gene
 here (``where``, ``stack``, ``isfinite``, ``broadcast_to``, ``einsum``, ``linalg.det``):
 ``xp`` below is ``torch`` or ``jax.numpy``. This module holds the directory of programs,
 the keyword rules of traced and eager calls, validation of constrained inputs, the
-selection of a branch kernel's variant with the safe-``where`` idiom, and the contraction of
-the generated Jacobians with a cotangent or tangent.
+selection of a branch kernel's variant with the safe-``where`` idiom, and a back-end module's
+functions (:func:`module_api`); it re-exports ``contract`` (``_jacobian``) and ``raise_flagged``.
 """
 
 from __future__ import annotations
@@ -24,10 +24,14 @@ import numpy as np
 from rigidsym import _kinds
 from rigidsym._config import generated_dir
 from rigidsym._io import load_module
-from rigidsym.kernels._errors import NonFiniteResultError, SingularConfigurationError
+from rigidsym.kernels import _state
+from rigidsym.kernels._errors import raise_flagged
+from rigidsym.kernels._jacobian import contract
+from rigidsym.kernels._jacobian import full_batch as _full
 
 __all__ = ["ArraySpace", "modes", "validate", "evaluate", "contract", "raise_flagged",
-           "SUFFIX", "make_kernel", "namespace", "euler_name", "docstring"]
+           "SUFFIX", "make_kernel", "namespace", "docstring", "module_api",
+           "make_all", "broadcast_batch"]
 
 #: suffix of the generated kernels with Jacobians (rigidsym.codegen.jacobians.SUFFIX)
 SUFFIX = "_with_jacobians"
@@ -77,25 +81,40 @@ class ArraySpace:
         return v
 
 
-def modes(check: bool | None, on_singular: str | None, traced: bool, where: str):
+def make_all(progs: ArraySpace, make: Callable) -> dict:
+    """``{name: make(name)}`` for every kernel of ``progs`` but the Jacobian kernels, every
+    program loaded first (0.15 s for the package's 134 kernels): never inside a traced call,
+    so torch.compile(fullgraph=True) and jit see only tensor code."""
+    for name in progs.meta:
+        progs.variants(name)
+    return {name: make(name) for name in progs.meta if not name.endswith(SUFFIX)}
+
+
+def _raise(exc_type: type, message: str):
+    raise exc_type(message)
+
+
+def modes(check: bool | None, on_singular: str | None, traced: bool, where: str,
+          refuse: Callable = _raise):
     """The effective ``(check, on_singular)`` of a call: defaults ``True`` / ``"raise"`` in
     eager mode, ``False`` / ``"nan"`` while traced (no host synchronisation there).
+    ``refuse(exc_type, message)`` raises the errors (PyTorch: outside Dynamo's trace).
 
     Raises:
         ValueError: ``check=True`` or ``on_singular="raise"`` while traced (``where`` names
             the tracer), or a bad value.
     """
     if check is not None and not isinstance(check, bool):
-        raise TypeError(f"check: expected True, False or None, got {check!r}")
+        refuse(TypeError, f"check: expected True, False or None, got {check!r}")
     if on_singular is not None and on_singular not in _MODES:
-        raise ValueError(f"on_singular: expected 'raise' or 'nan', got {on_singular!r}")
+        refuse(ValueError, f"on_singular: expected 'raise' or 'nan', got {on_singular!r}")
     if traced:
         if check:
-            raise ValueError(f"check=True needs eager mode (it reads values on the host); "
-                             f"under {where} pass check=False or leave it unset")
+            refuse(ValueError, f"check=True needs eager mode (it reads values on the host); "
+                               f"under {where} pass check=False or leave it unset")
         if on_singular == "raise":
-            raise ValueError(f"on_singular='raise' needs eager mode; under {where} use "
-                             "'nan' (the default there)")
+            refuse(ValueError, f"on_singular='raise' needs eager mode; under {where} use "
+                               "'nan' (the default there)")
         return False, "nan"
     return (True if check is None else check), (on_singular or "raise")
 
@@ -115,7 +134,10 @@ def validate(xp, arrays: list, args: list[dict]) -> None:
             continue
         tol = kind.tolerance(np.dtype(str(x.dtype).replace("torch.", "")))
         if kind.shape == (3, 3):
-            g = xp.einsum("...ki,...kj->...ij", x, x) - xp.eye(3, dtype=x.dtype)
+            ident = xp.eye(3, dtype=x.dtype)
+            if hasattr(ident, "to"):  # torch: on the input's device (found on a GPU)
+                ident = ident.to(x.device)
+            g = xp.einsum("...ki,...kj->...ij", x, x) - ident
             err = float(xp.abs(g).max())
             if not err <= tol:
                 raise ValueError(f"{a['name']}: not orthogonal (max |{a['name']}^T "
@@ -127,6 +149,21 @@ def validate(xp, arrays: list, args: list[dict]) -> None:
             if err > tol:
                 raise ValueError(f"{a['name']}: not a unit vector (| ||{a['name']}|| - 1 | = "
                                  f"{err:.3g} > {tol:.3g})")
+
+
+def broadcast_batch(broadcast_shapes: Callable, xs: list, args: list[dict]) -> tuple:
+    """The broadcast batch shape of ``xs`` (each less its argument's own trailing shape).
+
+    Raises:
+        ValueError: the batch shapes do not broadcast (each argument's shape named).
+    """
+    try:
+        return tuple(broadcast_shapes(*[x.shape[:x.ndim - len(a["shape"])]
+                                        for x, a in zip(xs, args, strict=True)]))
+    except (RuntimeError, ValueError):  # torch raises RuntimeError, JAX ValueError
+        shapes = ", ".join(f"{a['name']} {tuple(x.shape)}" for x, a in zip(xs, args,
+                                                                             strict=True))
+        raise ValueError(f"batch shapes do not broadcast: {shapes}") from None
 
 
 def _numel(x) -> int:
@@ -144,12 +181,6 @@ def columns(arrays: list, args: list[dict]) -> list:
         flat = x.reshape(tuple(x.shape[:len(x.shape) - len(a["shape"])]) + (n,))
         cols.extend(flat[..., i] for i in range(n))
     return cols
-
-
-def _full(xp, v, like):
-    """An output entry as an array of the batch shape (a constant entry prints as a float)."""
-    return v if hasattr(v, "shape") and tuple(v.shape) == tuple(like.shape) else \
-        xp.zeros_like(like) + v
 
 
 def shape_outputs(xp, flat: list, outs: list[dict], like) -> list:
@@ -204,85 +235,6 @@ def _singular(xp, dens, like):
     for d in dens:
         sing = xp.logical_or(sing, d == 0)
     return sing
-
-
-def contract(xp, grads: list, jac: list, outs: list[dict], args: list[dict],
-             forward: bool, singular=None) -> list:
-    """Chain rule through the generated Jacobian entries ``jac`` (flat, output-major then
-    input, each entry row-major ``output shape + input shape``).
-
-    ``forward=False``: ``grads`` are the cotangents of the outputs; returns those of the
-    inputs, ``sum_i g_i J_ij``. ``forward=True``: ``grads`` are the tangents of the inputs;
-    returns those of the outputs, ``sum_j J_ij t_j``. A zero cotangent contributes zero
-    even where ``J`` is not finite (a masked singular sample), a non-zero one NaN.
-    Forward mode cannot test the tangent (its transpose must stay linear): there the
-    ``singular`` samples (a boolean mask of the batch shape) get a zero derivative, their
-    values being NaN or an error already.
-    """
-    sizes_o = [int(math.prod(o["shape"])) for o in outs]
-    sizes_a = [int(math.prod(a["shape"])) for a in args]
-    k = 0
-    blocks = {}
-    for io, no in enumerate(sizes_o):
-        for ia, na in enumerate(sizes_a):
-            blocks[io, ia] = jac[k:k + no * na]
-            k += no * na
-    if forward:
-        res = []
-        for io, no in enumerate(sizes_o):
-            acc = 0
-            for ia, na in enumerate(sizes_a):
-                t = grads[ia].reshape(tuple(grads[ia].shape[:grads[ia].ndim - len(
-                    args[ia]["shape"])]) + (na, 1))
-                J = xp.stack([_full(xp, v, t[..., 0, 0]) for v in blocks[io, ia]], -1)
-                J = J.reshape(tuple(t.shape[:-2]) + (no, na))
-                if singular is not None:
-                    J = xp.where(singular[..., None, None], 0.0, J)
-                acc = acc + (J @ t)[..., 0]
-            res.append(acc.reshape(tuple(acc.shape[:-1]) + tuple(outs[io]["shape"])))
-        return res
-    res = []
-    for ia, na in enumerate(sizes_a):
-        acc = 0
-        for io, no in enumerate(sizes_o):
-            g = grads[io]
-            if g is None:
-                continue
-            batch = tuple(g.shape[:g.ndim - len(outs[io]["shape"])])
-            g = g.reshape(batch + (no, 1))
-            J = xp.stack([_full(xp, v, g[..., 0, 0]) for v in blocks[io, ia]], -1)
-            J = J.reshape(batch + (no, na))
-            acc = acc + xp.where(g == 0, 0.0, g * J).sum(-2)
-        res.append(acc if not isinstance(acc, int) else None)
-    return [None if r is None else r.reshape(tuple(r.shape[:-1]) + tuple(a["shape"]))
-            for r, a in zip(res, args, strict=True)]
-
-
-def raise_flagged(name: str, meta: dict, sing, nonfinite, arrays: list) -> None:
-    """Eager ``on_singular="raise"``: the kernels' errors, with the batch indices.
-
-    ``sing`` and ``nonfinite`` are boolean NumPy arrays of the batch shape; the caller
-    copies them to the host only once a reduction on the device found a flagged sample
-    (the error path), as it does ``arrays`` (the inputs, for the largest magnitude).
-    """
-    s = np.asarray(sing)
-    if s.any():
-        w = [tuple(int(i) for i in t) for t in np.argwhere(s)[:20]]
-        arg = meta["singular_arg"] or meta["args"][0]["name"]
-        raise SingularConfigurationError(
-            f"{name}: singular configuration ({meta['singular'] or 'division by zero'}) "
-            f"in argument {arg!r} at batch indices {w}{' ...' if s.sum() > 20 else ''}",
-            arg, w)
-    f = np.asarray(nonfinite)
-    if f.any():
-        w = [tuple(int(i) for i in t) for t in np.argwhere(f)[:20]]
-        mags = [float(np.abs(np.asarray(x)).max()) if x.size else 0.0 for x in arrays]
-        k = int(np.argmax(mags))
-        arg = meta["args"][k]["name"]
-        raise NonFiniteResultError(
-            f"{name}: non-finite output (overflow) from finite inputs at batch indices {w}"
-            f"{' ...' if f.sum() > 20 else ''}; largest input there: {arg!r} "
-            f"(max |{arg}| = {mags[k]:.3g})", arg, w)
 
 
 def _shp(s) -> str:
@@ -345,17 +297,103 @@ def namespace(progs: ArraySpace, call: Callable, title: str) -> types.ModuleType
     return ns
 
 
-def euler_name(progs: ArraySpace, kind: str, sequence: str, frame: str) -> str:
-    """The generated kernel of an Euler-angle ``kind`` for ``sequence`` and ``frame``.
+# --------------------------------------------------------------- a back-end module's API
+_LOAD_DOC = """The {lib} kernels of a generated directory (``rigidsym generate --out DIR``).
+
+    Args:
+        directory: a folder with ``kernels.json`` and ``{backend}/``; default the package's.
+
+    Returns:
+        A namespace with one function per public kernel and ``KERNEL_NAMES``.
 
     Raises:
-        ValueError: an unknown sequence, or a frame neither "fixed" nor "body".
+        FileNotFoundError: no ``kernels.json`` or ``{backend}/`` there.
     """
-    seq = sequence.lower() if isinstance(sequence, str) else None
-    if seq is None or f"{kind}_{seq}_fixed" not in progs.meta:
-        known = sorted(n[len(kind) + 1:-6].upper() for n in progs.meta
-                       if n.startswith(kind + "_") and n.endswith("_fixed"))
-        raise ValueError(f"sequence: expected one of {', '.join(known)}, got {sequence!r}")
-    if frame not in ("fixed", "body"):
-        raise ValueError(f"frame: expected 'fixed' or 'body', got {frame!r}")
-    return f"{kind}_{seq}_{frame}"
+_RATE_MATRIX_DOC = """Euler-angle rate matrix ``W`` with ``omega = W eta_dot`` (Exercise 3.10).
+
+    Args:
+        angles: {noun} (..., 3), the intrinsic Euler angles [rad] of ``sequence``.
+        sequence: one of the twelve intrinsic sequences ("ZXZ", "ZYX", ...).
+        frame: "fixed" (omega in the fixed frame) or "body".
+        check, on_singular: see the module.
+
+    Returns:
+        {noun} (..., 3, 3); derivative: the generated Jacobian kernel.
+
+    Raises:
+        TypeError, ValueError: bad input, naming the argument.
+    """
+_ANGLE_RATES_DOC = """Euler-angle rates ``eta_dot = W^-1 omega`` (Exercise 3.10).
+
+    Args:
+        angles: {noun} (..., 3) [rad].
+        omega: {noun} (..., 3) [rad/s], in the frame given by ``frame``.
+        sequence: one of the twelve intrinsic sequences.
+        frame: "fixed" or "body".
+        check, on_singular: see the module.
+
+    Returns:
+        {noun} (..., 3); derivative: {autodiff} through the generated expression.
+
+    Raises:
+        TypeError, ValueError: bad input, naming the argument.
+        SingularConfigurationError: at gimbal lock, eager with on_singular="raise".
+    """
+
+
+def module_api(scope: dict, make_space: Callable, lib: str, noun: str,
+               autodiff: str) -> tuple:
+    """The module-level functions of a back-end module (``rigidsym.kernels.torch``, ``.jax``).
+
+    Args:
+        scope: the back-end module's ``globals()`` (its name; where ``__getattr__`` caches a
+            kernel made on first access).
+        make_space: ``make_space(directory)``, the back-end's space: ``.progs`` (an
+            :class:`ArraySpace`) and ``.call(name, values, check, on_singular)``.
+        lib, noun, autodiff: the words of its docstrings ("PyTorch", "tensor", "autograd").
+
+    Returns:
+        ``(load, euler_rate_matrix, euler_angle_rates, __getattr__, __dir__, space)``: the
+        first five made as the module's own (``__module__``, ``__qualname__``, ``__doc__``:
+        Sphinx documents them there); ``space(directory=None)`` caches one space a folder.
+    """
+    module, spaces = scope["__name__"], {}
+
+    def space(directory=None):
+        key = None if directory is None else Path(directory).resolve()
+        if key not in spaces:
+            spaces[key] = make_space(directory)
+        return spaces[key]
+
+    def load(directory: str | Path | None = None) -> types.ModuleType:
+        s = space(directory)
+        return namespace(s.progs, s.call, f"{module}.load({str(directory)!r})")
+
+    def euler_rate_matrix(angles, sequence: str, frame: str = "fixed", *, check=None,
+                          on_singular=None):
+        name = _state.euler_name("euler_rate_matrix", sequence, frame)
+        return space().call(name, (angles,), check, on_singular)
+
+    def euler_angle_rates(angles, omega, sequence: str, frame: str = "fixed", *, check=None,
+                          on_singular=None):
+        name = _state.euler_name("euler_angle_rates", sequence, frame)
+        return space().call(name, (angles, omega), check, on_singular)
+
+    def __getattr__(attr: str):
+        # the package's kernels, made on first access (importing the module stays cheap)
+        s = space()
+        if attr in s.progs.kernel_names():
+            fn = scope[attr] = make_kernel(s.progs, s.call, attr, module)
+            return fn
+        raise AttributeError(f"module {module!r} has no attribute {attr!r}")
+
+    def __dir__():
+        return sorted([*scope, *space().progs.kernel_names()])
+
+    words = {"lib": lib, "noun": noun, "autodiff": autodiff, "backend": space().progs.backend}
+    docs = {load: _LOAD_DOC, euler_rate_matrix: _RATE_MATRIX_DOC,
+            euler_angle_rates: _ANGLE_RATES_DOC, __getattr__: None, __dir__: None}
+    for fn, doc in docs.items():
+        fn.__module__, fn.__qualname__ = module, fn.__name__
+        fn.__doc__ = None if doc is None else doc.format(**words)
+    return load, euler_rate_matrix, euler_angle_rates, __getattr__, __dir__, space

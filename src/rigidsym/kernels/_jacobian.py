@@ -15,6 +15,7 @@ pickle by reference like any module-level function.
 from __future__ import annotations
 
 import inspect
+import math
 import textwrap
 from collections.abc import Callable
 
@@ -183,3 +184,61 @@ def euler_rate_matrix_jacobian(angles, sequence: str, frame: str = "fixed", *,
     """
     base = _state.euler_name("euler_rate_matrix", sequence, frame)
     return _evaluate(base + _SUFFIX, (angles,), check, on_singular, threads)
+
+
+def full_batch(xp, v, like):
+    """An output entry as an array of the batch shape (a constant entry prints as a float)."""
+    return v if hasattr(v, "shape") and tuple(v.shape) == tuple(like.shape) else \
+        xp.zeros_like(like) + v
+
+
+def contract(xp, grads: list, jac: list, outs: list[dict], args: list[dict],
+             forward: bool, singular=None) -> list:
+    """Chain rule through the generated Jacobian entries ``jac`` (flat, output-major then
+    input, each entry row-major ``output shape + input shape``).
+
+    ``forward=False``: ``grads`` are the cotangents of the outputs; returns those of the
+    inputs, ``sum_i g_i J_ij``. ``forward=True``: ``grads`` are the tangents of the inputs;
+    returns those of the outputs, ``sum_j J_ij t_j``. A zero cotangent contributes zero
+    even where ``J`` is not finite (a masked singular sample), a non-zero one NaN.
+    Forward mode cannot test the tangent (its transpose must stay linear): there the
+    ``singular`` samples (a boolean mask of the batch shape) get a zero derivative, their
+    values being NaN or an error already.
+    """
+    sizes_o = [int(math.prod(o["shape"])) for o in outs]
+    sizes_a = [int(math.prod(a["shape"])) for a in args]
+    k = 0
+    blocks = {}
+    for io, no in enumerate(sizes_o):
+        for ia, na in enumerate(sizes_a):
+            blocks[io, ia] = jac[k:k + no * na]
+            k += no * na
+    if forward:
+        res = []
+        for io, no in enumerate(sizes_o):
+            acc = 0
+            for ia, na in enumerate(sizes_a):
+                t = grads[ia].reshape(tuple(grads[ia].shape[:grads[ia].ndim - len(
+                    args[ia]["shape"])]) + (na, 1))
+                J = xp.stack([full_batch(xp, v, t[..., 0, 0]) for v in blocks[io, ia]], -1)
+                J = J.reshape(tuple(t.shape[:-2]) + (no, na))
+                if singular is not None:
+                    J = xp.where(singular[..., None, None], 0.0, J)
+                acc = acc + (J @ t)[..., 0]
+            res.append(acc.reshape(tuple(acc.shape[:-1]) + tuple(outs[io]["shape"])))
+        return res
+    res = []
+    for ia, na in enumerate(sizes_a):
+        acc = 0
+        for io, no in enumerate(sizes_o):
+            g = grads[io]
+            if g is None:
+                continue
+            batch = tuple(g.shape[:g.ndim - len(outs[io]["shape"])])
+            g = g.reshape(batch + (no, 1))
+            J = xp.stack([full_batch(xp, v, g[..., 0, 0]) for v in blocks[io, ia]], -1)
+            J = J.reshape(batch + (no, na))
+            acc = acc + xp.where(g == 0, 0.0, g * J).sum(-2)
+        res.append(acc if not isinstance(acc, int) else None)
+    return [None if r is None else r.reshape(tuple(r.shape[:-1]) + tuple(a["shape"]))
+            for r, a in zip(res, args, strict=True)]

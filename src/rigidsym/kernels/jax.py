@@ -36,9 +36,7 @@ Example:
 from __future__ import annotations
 
 import math
-import types
 import warnings
-from pathlib import Path
 
 try:
     import jax
@@ -100,36 +98,16 @@ def _convert(values: tuple, args: list[dict]) -> list:
     return out
 
 
-def _batch(xs, args) -> tuple:
-    try:
-        return tuple(jnp.broadcast_shapes(*[x.shape[:x.ndim - len(a["shape"])]
-                                            for x, a in zip(xs, args, strict=True)]))
-    except ValueError:
-        shapes = ", ".join(f"{a['name']} {tuple(x.shape)}" for x, a in zip(xs, args,
-                                                                             strict=True))
-        raise ValueError(f"batch shapes do not broadcast: {shapes}") from None
-
-
 class _Space:
     """The JAX kernels of one generated directory."""
 
     def __init__(self, directory):
         self.progs = _arrays.ArraySpace.from_directory(directory, "jax")
-        # every program loaded and every function made now (0.15 s for the package's 134
-        # kernels), never inside a traced call: torch.compile(fullgraph=True) / jit
-        # then see only tensor code
-        self._fns: dict = {}
-        for name in self.progs.meta:
-            self.progs.variants(name)
-        for name in self.progs.meta:
-            if not name.endswith(_arrays.SUFFIX):
-                self.function(name)
+        self._fns = _arrays.make_all(self.progs, self._make)
 
     def function(self, name: str):
         """``f(*broadcast inputs) -> (*outputs, singular)``: a ``jax.custom_jvp`` whose JVP
         is the generated Jacobian kernel, or the plain expression (no Jacobian kernel)."""
-        if name not in self._fns:
-            self._fns[name] = self._make(name)
         return self._fns[name]
 
     def _make(self, name: str):
@@ -165,7 +143,7 @@ class _Space:
         args = meta["args"]
         xs = _convert(values, args)
         check, on_singular = _arrays.modes(check, on_singular, _traced(xs), _TRACER)
-        batch = _batch(xs, args)
+        batch = _arrays.broadcast_batch(jnp.broadcast_shapes, xs, args)
         if check:
             _arrays.validate(jnp, xs, args)
         full = [jnp.broadcast_to(x, batch + tuple(a["shape"])) for x, a in zip(xs, args,
@@ -187,87 +165,7 @@ class _Space:
         return res[0] if len(res) == 1 else tuple(res)
 
 
-_SPACES: dict = {}
-
-
-def _space(directory=None) -> _Space:
-    key = None if directory is None else Path(directory).resolve()
-    if key not in _SPACES:
-        _SPACES[key] = _Space(directory)
-    return _SPACES[key]
-
-
-def load(directory: str | Path | None = None) -> types.ModuleType:
-    """The JAX kernels of a generated directory (``rigidsym generate --out DIR``).
-
-    Args:
-        directory: a folder with ``kernels.json`` and ``jax/``; default the package's.
-
-    Returns:
-        A namespace with one function per public kernel and ``KERNEL_NAMES``.
-
-    Raises:
-        FileNotFoundError: no ``kernels.json`` or ``jax/`` there.
-    """
-    space = _space(directory)
-    return _arrays.namespace(space.progs, space.call, f"rigidsym.kernels.jax.load("
-                             f"{str(directory)!r})")
-
-
-def euler_rate_matrix(angles, sequence: str, frame: str = "fixed", *, check=None,
-                      on_singular=None):
-    """Euler-angle rate matrix ``W`` with ``omega = W eta_dot`` (Exercise 3.10).
-
-    Args:
-        angles: array (..., 3), the intrinsic Euler angles [rad] of ``sequence``.
-        sequence: one of the twelve intrinsic sequences ("ZXZ", "ZYX", ...).
-        frame: "fixed" (omega in the fixed frame) or "body".
-        check, on_singular: see the module.
-
-    Returns:
-        array (..., 3, 3); derivative: the generated Jacobian kernel.
-
-    Raises:
-        TypeError, ValueError: bad input, naming the argument.
-    """
-    name = _arrays.euler_name(_space().progs, "euler_rate_matrix", sequence, frame)
-    return _space().call(name, (angles,), check, on_singular)
-
-
-def euler_angle_rates(angles, omega, sequence: str, frame: str = "fixed", *, check=None,
-                      on_singular=None):
-    """Euler-angle rates ``eta_dot = W^-1 omega`` (Exercise 3.10).
-
-    Args:
-        angles: array (..., 3) [rad].
-        omega: array (..., 3) [rad/s], in the frame given by ``frame``.
-        sequence: one of the twelve intrinsic sequences.
-        frame: "fixed" or "body".
-        check, on_singular: see the module.
-
-    Returns:
-        array (..., 3); derivative: JAX through the generated expression.
-
-    Raises:
-        TypeError, ValueError: bad input, naming the argument.
-        SingularConfigurationError: at gimbal lock, eager with on_singular="raise".
-    """
-    name = _arrays.euler_name(_space().progs, "euler_angle_rates", sequence, frame)
-    return _space().call(name, (angles, omega), check, on_singular)
-
-
+# load, the Euler-angle kernels, the lazy kernels: the same for both back-ends (_arrays)
+load, euler_rate_matrix, euler_angle_rates, __getattr__, __dir__, _space = \
+    _arrays.module_api(globals(), _Space, "JAX", "array", "JAX")
 __all__ += _space().progs.kernel_names()
-
-
-def __getattr__(attr: str):
-    # the package's kernels, made on first access (importing this module stays cheap)
-    space = _space()
-    if attr in space.progs.kernel_names():
-        fn = _arrays.make_kernel(space.progs, space.call, attr, __name__)
-        globals()[attr] = fn
-        return fn
-    raise AttributeError(f"module {__name__!r} has no attribute {attr!r}")
-
-
-def __dir__():
-    return sorted([*globals(), *_space().progs.kernel_names()])

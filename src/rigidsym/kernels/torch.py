@@ -38,8 +38,6 @@ Example:
 from __future__ import annotations
 
 import math
-import types
-from pathlib import Path
 
 try:
     import torch
@@ -61,6 +59,23 @@ _BAD_KINDS = "bcOUSMmV"
 def _traced(xs) -> bool:
     return torch.compiler.is_compiling() or any(
         torch._C._functorch.is_functorch_wrapped_tensor(x) for x in xs)
+
+
+_EAGER_ONLY = ("rigidsym.kernels.torch: check=True and on_singular='raise' need eager mode; "
+               "under torch.compile leave them unset (check=False, on_singular='nan')")
+
+
+def _needs_eager_mode(exc_type: type, message: str):
+    """Raise a refusal outside Dynamo's trace: raised while traced, it made Dynamo mark the
+    kernel's code objects to skip, so that a later fullgraph compile of the same kernel ran
+    them eagerly and failed on a nested frame (torch 2.13)."""
+    raise exc_type(message)
+
+
+try:
+    _refuse = torch.compiler.disable(_needs_eager_mode, reason=_EAGER_ONLY)
+except TypeError:  # torch < 2.7: no reason; Dynamo's message names the function
+    _refuse = torch.compiler.disable(_needs_eager_mode)
 
 
 def _dtype(values) -> torch.dtype:
@@ -103,16 +118,6 @@ def _convert(name: str, values: tuple, args: list[dict]) -> list:
     return res
 
 
-def _batch(xs, args) -> tuple:
-    try:
-        return tuple(torch.broadcast_shapes(*[x.shape[:x.ndim - len(a["shape"])]
-                                              for x, a in zip(xs, args, strict=True)]))
-    except RuntimeError:
-        shapes = ", ".join(f"{a['name']} {tuple(x.shape)}" for x, a in zip(xs, args,
-                                                                             strict=True))
-        raise ValueError(f"batch shapes do not broadcast: {shapes}") from None
-
-
 def _fixed_arity(values, n: int):
     """``forward(x0, ..., x{n-1})``: Dynamo reads a ``forward(*xs)`` as taking ``ctx``
     first, so the arity is spelled out (the kernels' argument counts differ)."""
@@ -127,23 +132,15 @@ class _Space:
 
     def __init__(self, directory):
         self.progs = _arrays.ArraySpace.from_directory(directory, "torch")
-        # every program loaded and every function made now (0.15 s for the package's 134
-        # kernels), never inside a traced call: torch.compile(fullgraph=True) / jit
-        # then see only tensor code
-        self._fns: dict = {}
-        for name in self.progs.meta:
-            self.progs.variants(name)
-        for name in self.progs.meta:
-            if not name.endswith(_arrays.SUFFIX):
-                self.function(name)
+        self._fns = _arrays.make_all(self.progs, self._make)
 
     def function(self, name: str):
         """The ``torch.autograd.Function`` of ``name`` (None: no Jacobian kernel)."""
-        if name not in self._fns:
-            self._fns[name] = self._make(name) if self.progs.has_jacobian(name) else None
         return self._fns[name]
 
     def _make(self, name: str):
+        if not self.progs.has_jacobian(name):
+            return None
         meta, progs = self.progs.meta[name], self.progs
         args, outs = meta["args"], meta["outputs"]
         nval = sum(math.prod(o["shape"]) for o in outs)
@@ -197,8 +194,9 @@ class _Space:
         meta = self.progs.meta[name]
         args, outs = meta["args"], meta["outputs"]
         xs = _convert(name, values, args)
-        check, on_singular = _arrays.modes(check, on_singular, _traced(xs), _TRACER)
-        batch = _batch(xs, args)
+        check, on_singular = _arrays.modes(check, on_singular, _traced(xs), _TRACER,
+                                           _refuse)
+        batch = _arrays.broadcast_batch(torch.broadcast_shapes, xs, args)
         if check:
             _arrays.validate(torch, [x.detach() for x in xs], args)
         full = [x.broadcast_to(batch + tuple(a["shape"])) for x, a in zip(xs, args, strict=True)]
@@ -227,87 +225,7 @@ class _Space:
         return res[0] if len(res) == 1 else tuple(res)
 
 
-_SPACES: dict = {}
-
-
-def _space(directory=None) -> _Space:
-    key = None if directory is None else Path(directory).resolve()
-    if key not in _SPACES:
-        _SPACES[key] = _Space(directory)
-    return _SPACES[key]
-
-
-def load(directory: str | Path | None = None) -> types.ModuleType:
-    """The PyTorch kernels of a generated directory (``rigidsym generate --out DIR``).
-
-    Args:
-        directory: a folder with ``kernels.json`` and ``torch/``; default the package's.
-
-    Returns:
-        A namespace with one function per public kernel and ``KERNEL_NAMES``.
-
-    Raises:
-        FileNotFoundError: no ``kernels.json`` or ``torch/`` there.
-    """
-    space = _space(directory)
-    return _arrays.namespace(space.progs, space.call, f"rigidsym.kernels.torch.load("
-                             f"{str(directory)!r})")
-
-
-def euler_rate_matrix(angles, sequence: str, frame: str = "fixed", *, check=None,
-                      on_singular=None):
-    """Euler-angle rate matrix ``W`` with ``omega = W eta_dot`` (Exercise 3.10).
-
-    Args:
-        angles: tensor (..., 3), the intrinsic Euler angles [rad] of ``sequence``.
-        sequence: one of the twelve intrinsic sequences ("ZXZ", "ZYX", ...).
-        frame: "fixed" (omega in the fixed frame) or "body".
-        check, on_singular: see the module.
-
-    Returns:
-        tensor (..., 3, 3); derivative: the generated Jacobian kernel.
-
-    Raises:
-        TypeError, ValueError: bad input, naming the argument.
-    """
-    name = _arrays.euler_name(_space().progs, "euler_rate_matrix", sequence, frame)
-    return _space().call(name, (angles,), check, on_singular)
-
-
-def euler_angle_rates(angles, omega, sequence: str, frame: str = "fixed", *, check=None,
-                      on_singular=None):
-    """Euler-angle rates ``eta_dot = W^-1 omega`` (Exercise 3.10).
-
-    Args:
-        angles: tensor (..., 3) [rad].
-        omega: tensor (..., 3) [rad/s], in the frame given by ``frame``.
-        sequence: one of the twelve intrinsic sequences.
-        frame: "fixed" or "body".
-        check, on_singular: see the module.
-
-    Returns:
-        tensor (..., 3); derivative: autograd through the generated expression.
-
-    Raises:
-        TypeError, ValueError: bad input, naming the argument.
-        SingularConfigurationError: at gimbal lock, eager with on_singular="raise".
-    """
-    name = _arrays.euler_name(_space().progs, "euler_angle_rates", sequence, frame)
-    return _space().call(name, (angles, omega), check, on_singular)
-
-
+# load, the Euler-angle kernels, the lazy kernels: the same for both back-ends (_arrays)
+load, euler_rate_matrix, euler_angle_rates, __getattr__, __dir__, _space = \
+    _arrays.module_api(globals(), _Space, "PyTorch", "tensor", "autograd")
 __all__ += _space().progs.kernel_names()
-
-
-def __getattr__(attr: str):
-    # the package's kernels, made on first access (importing this module stays cheap)
-    space = _space()
-    if attr in space.progs.kernel_names():
-        fn = _arrays.make_kernel(space.progs, space.call, attr, __name__)
-        globals()[attr] = fn
-        return fn
-    raise AttributeError(f"module {__name__!r} has no attribute {attr!r}")
-
-
-def __dir__():
-    return sorted([*globals(), *_space().progs.kernel_names()])

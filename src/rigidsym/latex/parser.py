@@ -137,7 +137,9 @@ class _Build(lark.Transformer):
         return _GlyphKey(key, base, rest, accent, self._symbol(key, base))
 
     def _symbol(self, key, base):
-        g = self.overrides.get(key) or lookup(key, self.section)
+        g = self.overrides.get(key)
+        if g is None and self.section is not None:  # None: no glyph table (a reader's LaTeX)
+            g = lookup(key, self.section)
         if g is None:
             g = _default_glyph(key, base)
         self.glyphs[key] = g
@@ -316,7 +318,8 @@ class _Build(lark.Transformer):
             key = next((k for k, g in self.glyphs.items() if g.name == s.name), None)
             if key is None:
                 continue
-            g = lookup(f"[{key}]_{{\\mathcal{{{frame}}}}}", self.section)
+            g = (lookup(f"[{key}]_{{\\mathcal{{{frame}}}}}", self.section)
+                 if self.section is not None else None)
             name = g.name if g else f"{s.name}_{frame}"
             swap[s] = sp.MatrixSymbol(name, *s.shape)
         return x.xreplace(swap)

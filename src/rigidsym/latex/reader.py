@@ -13,7 +13,7 @@ from rigidsym.latex.shapes import LatexError, _as_scalar, _caret, _shape
 __all__ = ["parse_latex"]
 
 
-def parse_latex(latex: str, section: str = "*", overrides: dict | None = None,
+def parse_latex(latex: str, section: str | None = "*", overrides: dict | None = None,
                 block_rows: bool = False) -> Parsed:
     """Parse a LaTeX statement into relations of book symbols.
 
@@ -21,7 +21,8 @@ def parse_latex(latex: str, section: str = "*", overrides: dict | None = None,
         latex: the LaTeX (one or more relations separated by ``,``, ``\\quad`` or
             ``\\text{or}``; ``=``/``\\equiv`` chains; ``aligned`` blocks).
         section: the book section whose glyph-table rows name the glyphs (``"3.4.2"``);
-            ``"*"``: only the section-free rows.
+            ``"*"``: only the section-free rows; ``None``: no row of the table (every glyph
+            by the default rules, or by ``overrides``).
         overrides: glyph rows by LaTeX key that take precedence (a per-id note's).
         block_rows: read a bracket ``[A v]`` whose column separator was lost (the
             conversion's slip in (3.77b-d), (3.97a-c)) as a block row.
@@ -50,7 +51,7 @@ def parse_latex(latex: str, section: str = "*", overrides: dict | None = None,
     except lark.UnexpectedToken as exc:
         pos = exc.token.start_pos if exc.token.start_pos is not None else len(latex)
         expected = ", ".join(sorted(exc.expected)[:8])
-        what = "the end" if exc.token.type == "$END" else repr(str(exc.token))
+        what = "end of input" if exc.token.type == "$END" else repr(str(exc.token))
         raise LatexError(f"unexpected {what} at position {pos}:\n{_caret(latex, pos)}\n"
                          f"  expected one of: {expected}", "syntax") from None
     except lark.UnexpectedEOF as exc:
@@ -62,6 +63,7 @@ def parse_latex(latex: str, section: str = "*", overrides: dict | None = None,
         stmts = build.transform(tree)
     except lark.exceptions.VisitError as exc:
         if isinstance(exc.orig_exc, LatexError):
+            exc.orig_exc.glyphs = dict(build.glyphs)  # those read before it: for hints
             raise exc.orig_exc from None
         raise LatexError(f"cannot read {latex!r}: {exc.orig_exc}", "shapes") from None
     out = Parsed(readings=build.readings, glyphs=build.glyphs)

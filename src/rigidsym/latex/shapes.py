@@ -20,11 +20,14 @@ class LatexError(ValueError):
     Attributes:
         construct: a short name of what could not be read (``"syntax"``, ``"unknown macro
             \\int"``, ``"shapes"``).
+        glyphs: for an error past the syntax, the glyph-table rows of the glyphs read
+            before it, by LaTeX key (to name those a ``--let`` should declare).
     """
 
     def __init__(self, message: str, construct: str = "syntax"):
         super().__init__(message)
         self.construct = construct
+        self.glyphs: dict = {}
 
 
 def _shape(x) -> tuple[int, int] | None:

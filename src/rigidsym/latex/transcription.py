@@ -349,10 +349,17 @@ def transcription_for(eq_id: str) -> dict | None:
     from rigidsym.checking.deciding.registry import REGISTRY
 
     eq = REGISTRY.get(eq_id)
-    if eq is None or not eq.latex:
-        return None
+    if eq is None or not eq.latex or eq_id.startswith("latex:"):  # check --latex: the
+        return None  # LaTeX is the printed form itself, nothing was transcribed by hand
     hit = _DONE.get(eq_id)
     if hit is None:
+        st = eq.build()
+        if st.from_latex:  # the printed form is the reader's: nothing hand-written to check
+            return {"status": "machine-checked", "readings": [],
+                    "members": [{"member": r.label or f"member {k + 1}",
+                                 "matches": "read from the LaTeX"}
+                                for k, r in enumerate(st.printed)],
+                    "note": "the printed form is read from the LaTeX by the reader"}
         hit = _DONE[eq_id] = _cached(eq, eq.build())
     return hit
 

@@ -73,6 +73,9 @@ class Statement:
         printed: the book's statement as printed, one :class:`Rel` per member, in book
             symbols (``MatrixSymbol``/``Symbol``). A chain ``x = y = z`` gives ``(x, y)`` and
             ``(x, z)``; a garbled symbol is a fresh symbol, never silently repaired.
+            Empty in a user declaration with ``latex=`` (or the function returns the
+            model dict alone): read from the LaTeX by :mod:`rigidsym.latex`, its glyphs
+            named as the model's symbols.
         model: first-principles values of the book symbols (``symbol -> explicit value``),
             derived without the printed form; substituted before deciding.
         derived: the first-principles value of the quantity (for display and codegen).
@@ -95,6 +98,13 @@ class Statement:
     defines: tuple[str, ...] = ()
     claims: list[Rel] = field(default_factory=list)
     parametrisation: str = ""
+    #: set when ``printed`` was read from the declaration's LaTeX (not written by hand)
+    from_latex: bool = False
+
+
+#: reads a statement's printed form from its declaration's LaTeX (``printed=None``); set by
+#: :mod:`rigidsym.declare`, since the reader is a layer above the registry
+PRINTED_FROM_LATEX: Callable[[Any, Statement], list[Rel]] | None = None
 
 
 @dataclass(frozen=True)
@@ -142,9 +152,14 @@ def _build(eq_id: str) -> Statement:
     # this took a third of the time of building the chapter's declarations
     with dotprodsimp(False):
         st = REGISTRY[eq_id].build_fn()
+    eq = REGISTRY[eq_id]
+    if isinstance(st, dict) and eq.latex:  # the model alone: the printed form is the LaTeX
+        st = Statement([], st)
     if not isinstance(st, Statement):
         raise DeclarationTypeError(f"declaration {eq_id} returned {type(st).__name__}, "
                                    f"not Statement")
+    if not st.printed and eq.latex and PRINTED_FROM_LATEX is not None and is_user_id(eq_id):
+        st.printed, st.from_latex = list(PRINTED_FROM_LATEX(eq, st)), True
     bad = [type(r).__name__ for r in list(st.printed) + list(st.corrected or []) + st.claims
            if not isinstance(r, Rel)]
     if bad:
@@ -187,7 +202,9 @@ def equation(eq_id: str, title: str, *, section: str | None = None,
         section: the book (sub)section, e.g. ``"3.2.1"`` (required for a book id); any label
             for a user id (``rigidsym verify --section`` selects by it).
         latex: the printed LaTeX (for a book id verbatim from the chapter, which a test
-            checks; optional for a user id).
+            checks; optional for a user id). A user declaration with ``latex=`` whose
+            function returns its model alone (a dict) or a :class:`Statement` with no
+            printed member takes its printed form from the LaTeX (``rigidsym.latex``).
         kind: ``identity``, ``definition`` or ``claim``.
         expected: the verdict the checker is expected to compute (data, not the verdict);
             defaults to ``definition`` for a definition and ``verified`` otherwise.

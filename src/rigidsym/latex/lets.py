@@ -1,0 +1,207 @@
+"""The declarations of ``rigidsym check --latex`` (issue 29, item 4): ``--let NAME: KIND``
+and ``--let NAME = LATEX``, read and checked (:func:`read_lets`).
+
+A KIND is a constrained kind of :mod:`rigidsym._kinds` (unit vector, unit 4-vector,
+rotation, angle; imposed exactly by the zero test), a free shape, or a word of the
+vocabulary of rigid motions (twist, wrench, transform): :data:`KIND_WORDS`. A NAME is
+compared after parsing (``\\mathbf Q`` is ``\\mathbf{Q}``).
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+
+import sympy as sp
+
+from rigidsym.algebra import symbols as _sym
+from rigidsym.algebra.motions import transform
+from rigidsym.checking.deciding.errors import BadInput
+from rigidsym.latex.reader import parse_latex
+from rigidsym.latex.shapes import LatexError
+
+__all__ = ["KIND_WORDS", "Let", "kind_of", "split_lets", "read_lets"]
+
+#: the kinds a ``--let NAME: KIND`` takes, in words (``n``, ``m``: sizes, e.g. ``6-vector``,
+#: ``4x4 matrix``)
+KIND_WORDS = ("unit vector", "unit 4-vector", "rotation", "angle", "angle in [0, pi]",
+              "scalar", "vector", "n-vector", "matrix", "m×n matrix", "symmetric matrix",
+              "twist", "wrench", "transform")
+
+_FIXED = {  # words -> (shape, model of the named symbol, words in the reading)
+    "unit vector": ((3, 1), _sym.unit_vector, "unit vector"),
+    "unit 3-vector": ((3, 1), _sym.unit_vector, "unit vector"),
+    "unit 4-vector": ((4, 1), _sym.unit_vector4, "unit 4-vector"),
+    "rotation": ((3, 3), _sym.rotation, "rotation"),
+    "rotation matrix": ((3, 3), _sym.rotation, "rotation"),
+    "angle": ((), _sym.angle, "angle"),
+    "angle in [0, pi]": ((), lambda n: _sym.angle(n, range="[0, pi]"), "angle in [0, π]"),
+    "scalar": ((), _sym.scalar, "scalar"),
+    "vector": ((3, 1), _sym.vector, "3-vector"),
+    "matrix": ((3, 3), _sym.matrix, "3×3 matrix"),
+    "symmetric matrix": ((3, 3), _sym.symmetric_matrix, "symmetric 3×3 matrix"),
+    "twist": ((6, 1), _sym.twist, "twist [ω; v]"),
+    "wrench": ((6, 1), _sym.wrench, "wrench [n; f]"),
+    "transform": ((4, 4), lambda n: transform(_sym.rotation(f"{n}_R"), _sym.vector(f"{n}_p")),
+                  "homogeneous transform (rotation and translation)"),
+}
+
+
+def kind_of(text: str, decl: str):
+    """What a KIND says.
+
+    Args:
+        text: the KIND as written (``"unit vector"``, ``"6-vector"``, ``"4×4 matrix"``).
+        decl: the declaration it comes from (for the message).
+
+    Returns:
+        ``(shape, factory, words)``: the shape (``()`` or ``(rows, cols)``), the model of
+        a symbol of that kind by name (``factory("Q")``) and the kind in words.
+
+    Raises:
+        BadInput: an unknown KIND (the message lists the kinds).
+    """
+    t = text.lower().replace("×", "x").replace("π", "pi").replace("\\pi", "pi")
+    t = " ".join(t.split())
+    t = re.sub(r"\[\s*0\s*,\s*pi\s*\]", "[0, pi]", t)
+    t = t.replace("angle on [0, pi]", "angle in [0, pi]")
+    if t in _FIXED:
+        return _FIXED[t]
+    m = re.fullmatch(r"(\d+)-vector", t)
+    if m and int(m.group(1)) >= 1:
+        n = int(m.group(1))
+        return (n, 1), (lambda name: _sym.vector(name, n=n)), f"{n}-vector"
+    m = re.fullmatch(r"(\d+) ?x ?(\d+) matrix", t)
+    if m and int(m.group(1)) >= 1 and int(m.group(2)) >= 1:
+        r, c = int(m.group(1)), int(m.group(2))
+        return (r, c), (lambda name: _sym.matrix(name, r, c)), f"{r}×{c} matrix"
+    raise BadInput(f"--let '{decl}': unknown kind {text.strip()!r}; expected one of: "
+                   f"{', '.join(KIND_WORDS)}")
+
+
+@dataclass(frozen=True)
+class Let:
+    """One declaration of a ``--let``.
+
+    Attributes:
+        text: as written (``"\\mathbf{Q}: rotation"``).
+        name: the NAME as written.
+        key: the glyph's key after parsing (``\\mathbf{Q}``).
+        kind: the KIND as written, or ``""`` for a model.
+        latex: the model's LaTeX, or ``""`` for a kind.
+    """
+
+    text: str
+    name: str
+    key: str
+    kind: str = ""
+    latex: str = ""
+
+
+def split_lets(items) -> list[str]:
+    """The declarations of ``--let`` values: each value split at ``"; "`` outside braces.
+
+    Args:
+        items: the ``--let`` values (strings).
+
+    Returns:
+        The declarations, stripped, empty ones dropped.
+    """
+    out = []
+    for item in items or ():
+        depth, start = 0, 0
+        for i, ch in enumerate(item):
+            depth += {"{": 1, "}": -1}.get(ch, 0)
+            if ch == ";" and depth == 0 and item[i + 1:i + 2] in (" ", ""):
+                out.append(item[start:i])
+                start = i + 1
+        out.append(item[start:])
+    return [d.strip() for d in out if d.strip()]
+
+
+def _top_level(text: str, ch: str) -> int:
+    depth = 0
+    for i, c in enumerate(text):
+        depth += {"{": 1, "}": -1}.get(c, 0)
+        if c == ch and depth == 0:
+            return i
+    return -1
+
+
+def _key(name: str, decl: str) -> str:
+    """The glyph key of a NAME (``\\mathbf Q`` -> ``\\mathbf{Q}``)."""
+    if not name:
+        raise BadInput(f"--let '{decl}': expected a NAME before ':' or '='")
+    try:
+        p = parse_latex(f"{name} = 0", None)
+    except LatexError as exc:
+        raise BadInput(f"--let '{decl}': the name '{name}' cannot be read: "
+                       f"{str(exc).splitlines()[0]}") from None
+    lhs = p.chains[0][0] if p.chains else None
+    if len(p.glyphs) != 1 or not isinstance(lhs, sp.Symbol | sp.MatrixSymbol):
+        raise BadInput(f"--let '{decl}': expected one symbol as NAME (a glyph such as "
+                       f"\\mathbf{{Q}} or \\phi), got '{name}'")
+    return next(iter(p.glyphs))
+
+
+def read_lets(let) -> list[Let]:
+    """The declarations of ``let``.
+
+    Args:
+        let: ``None``, one string, a list of strings (``"NAME: KIND"`` or ``"NAME =
+            LATEX"``, each possibly several separated by ``"; "``), or a dict ``{NAME:
+            KIND or LATEX}`` (a value that is a KIND is a kind, anything else a model).
+
+    Returns:
+        One :class:`Let` per declaration, in order.
+
+    Raises:
+        BadInput: a declaration that is neither form, a NAME that is not one glyph, an
+            unknown KIND (the kinds listed), a name declared twice.
+    """
+    if let is None:
+        items: list[str] = []
+    elif isinstance(let, str):
+        items = split_lets([let])
+    elif isinstance(let, dict):
+        items = []
+        for name, value in let.items():
+            if not isinstance(name, str) or not isinstance(value, str):
+                raise BadInput(f"let: expected a dict of strings NAME -> KIND or LaTeX, got "
+                               f"{name!r}: {value!r}")
+            v = value.strip()
+            try:
+                kind_of(v, v)
+                items.append(f"{name}: {v}")
+            except BadInput:
+                items.append(f"{name} = {v.removeprefix('=').strip()}")
+    elif isinstance(let, list | tuple):
+        if not all(isinstance(x, str) for x in let):
+            raise BadInput(f"let: expected strings 'NAME: KIND' or 'NAME = LATEX', got "
+                           f"{let!r}")
+        items = split_lets(let)
+    else:
+        raise BadInput(f"let: expected a list of strings or a dict, got {type(let).__name__}")
+    out: list[Let] = []
+    for d in items:
+        colon, eq = _top_level(d, ":"), _top_level(d, "=")
+        if colon >= 0 and (eq < 0 or colon < eq):
+            name, kind = d[:colon].strip(), d[colon + 1:].strip()
+            kind_of(kind, d)
+            out.append(Let(d, name, _key(name, d), kind=kind))
+        elif eq >= 0:
+            name, tex = d[:eq].strip(), d[eq + 1:].strip()
+            if not tex:
+                raise BadInput(f"--let '{d}': expected LaTeX after '='")
+            out.append(Let(d, name, _key(name, d), latex=tex))
+        else:
+            raise BadInput(f"--let '{d}': expected 'NAME: KIND' (e.g. '\\mathbf{{Q}}: "
+                           f"rotation') or 'NAME = LATEX' (e.g. '\\mathbf{{E}} = "
+                           f"\\mathrm{{CPM}}(\\mathbf{{e}})')")
+    seen: dict[str, Let] = {}
+    for x in out:
+        if x.key in seen:
+            raise BadInput(f"--let: {x.key} is declared twice ('{seen[x.key].text}' and "
+                           f"'{x.text}')")
+        seen[x.key] = x
+    return out

@@ -1,0 +1,366 @@
+"""LaTeX in, verdict out (issue 29, item 4): a reader's LaTeX and its ``--let`` declarations
+made into a declaration the checker decides like any other.
+
+A ``--let`` (``let=`` in Python) says what a symbol is: ``NAME: KIND`` (a constrained kind of
+:mod:`rigidsym._kinds`, imposed exactly by the zero test, or a free shape; :data:`KIND_WORDS`)
+or ``NAME = LATEX``, a first-principles model in the same notation. A name is compared after
+parsing (``\\mathbf Q`` is ``\\mathbf{Q}``). With a book section the glyph table names the
+glyphs; otherwise a symbol no ``--let`` declares is free, its shape by the book's convention
+(bold lower-case a 3-vector, bold capital a 3 x 3 matrix, anything else a scalar), and the
+reading says so.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import re
+from dataclasses import dataclass, field
+
+import sympy as sp
+
+from rigidsym.algebra import symbols as _sym
+from rigidsym.checking.deciding.errors import BadInput
+from rigidsym.checking.deciding.registry import Rel, Statement
+from rigidsym.latex.lending import lent
+from rigidsym.latex.lets import KIND_WORDS, Let, kind_of, read_lets
+from rigidsym.latex.reader import parse_latex
+from rigidsym.latex.shapes import LatexError, _name_from_key, _shape
+from rigidsym.latex.table import Glyph, glyph_table, lookup
+from rigidsym.printing import notation
+
+__all__ = ["Reading", "read_statement", "latex_id", "check_book", "declare_latex",
+           "KIND_WORDS", "Let", "read_lets"]
+
+@dataclass
+class Reading:
+    """A reader's LaTeX read into a statement.
+
+    Attributes:
+        statement: the :class:`Statement` (printed relations in book symbols, the model).
+        kind: ``identity`` or ``definition`` (every relation an ``\\equiv``).
+        text: how it was read, in book notation (``"Qᵀ Q = 𝟏"``).
+        notes: what the reading assumed: free symbols and their conventional shapes, glyph
+            rows of the book, a module's models, the parser's own readings.
+        free: the keys of the symbols nothing declares.
+    """
+
+    statement: Statement
+    kind: str
+    text: str
+    notes: list[str] = field(default_factory=list)
+    free: list[str] = field(default_factory=list)
+
+
+def latex_id(latex: str, lets: list[Let], book: str | None, modules) -> str:
+    """The id of a LaTeX check: ``latex:`` and a short hash of the input."""
+    key = json.dumps([latex, [x.text for x in lets], book, [str(m) for m in modules or ()]])
+    return "latex:" + hashlib.sha256(key.encode()).hexdigest()[:10]
+
+
+def _in(section: str, book: str) -> bool:
+    return book == "3" or section == book or section.startswith(book + ".")
+
+
+def _book_rows(key: str, book: str) -> list[Glyph]:
+    """The rows of a glyph within a section's sub-sections (when none is on its chain)."""
+    rows = [g for g in glyph_table() if g.latex == key and g.section != "*"
+            and _in(g.section, book)]
+    distinct = {(g.name, g.shape, g.kind, g.definition): g for g in rows}
+    return list(distinct.values())
+
+
+def check_book(book: str) -> str:
+    """Validate a ``--book`` section (``3``, ``3.2``, ``3.4.2`` ...)."""
+    if not isinstance(book, str) or not re.fullmatch(r"3(\.\d+){0,2}", book.strip()):
+        raise BadInput(f"--book: expected a section of the chapter such as 3.2 or 3.4.2, got "
+                       f"{book!r}")
+    return book.strip()
+
+
+class _Reader:
+    """Parses the LaTeX and the models with one set of glyph overrides."""
+
+    def __init__(self, lets: list[Let], book: str | None, lend: dict):
+        self.book, self.lend = book, lend
+        self.over: dict[str, Glyph] = {}
+        self.declared: dict[str, Let] = {x.key: x for x in lets}
+        self.notes: list[str] = []
+        self.used: set[str] = set()
+        self.glyphs: dict[str, Glyph] = {}
+        for x in lets:
+            if x.kind:
+                shape, _, words = kind_of(x.kind, x.text)
+                self.over[x.key] = Glyph(x.key, "*", self._name(x.key), shape, "let", words)
+
+    def _name(self, key: str) -> str:
+        if self.book:
+            g = lookup(key, self.book)
+            if g is not None:
+                return g.name
+        return _name_from_key(key)
+
+    def _extra(self, glyphs: dict) -> dict[str, Glyph]:
+        """Rows the first reading could not know: a book row of a sub-section, a module's
+        symbol of that name."""
+        new = {}
+        for key, g in glyphs.items():
+            if key in self.over:
+                continue
+            if self.book and g.kind == "free":  # no row on the section's chain
+                rows = _book_rows(key, self.book)
+                if len(rows) > 1:
+                    where = "; ".join(f"{r.name}, {r.meaning} ({r.section})" for r in rows)
+                    raise BadInput(f"--book {self.book}: {key} is ambiguous there ({where}): "
+                                   f"say which with --let '{key}: KIND' or a --book of one "
+                                   f"sub-section")
+                if rows:
+                    new[key] = rows[0]
+                    continue
+            name = g.name
+            if name in self.lend and g.kind == "free":
+                sym, _ = self.lend[name]
+                shape = tuple(sym.shape) if isinstance(sym, sp.MatrixSymbol) else ()
+                new[key] = Glyph(key, "*", name, shape, "module", "lent by --module")
+        return new
+
+    def parse(self, text: str, what: str):
+        for _ in range(3):
+            try:
+                p = parse_latex(text, self.book, self.over)
+            except LatexError as exc:
+                extra = self._extra(exc.glyphs) if exc.construct == "shapes" else {}
+                if extra:
+                    self.over.update(extra)
+                    continue
+                raise self._hint(exc, what) from None
+            extra = self._extra(p.glyphs)
+            if not extra:
+                self.used.update(p.glyphs)
+                self.glyphs.update(p.glyphs)
+                return p
+            self.over.update(extra)
+        raise LatexError(f"{what}: the glyphs' shapes do not settle", "shapes")
+
+    def _hint(self, exc: LatexError, what: str) -> LatexError:
+        msg = str(exc)
+        if what != "the LaTeX":
+            msg = f"{what}: {msg}"
+        free = [k for k, g in exc.glyphs.items() if g.kind == "free" and k not in self.over]
+        if exc.construct == "shapes" and free:
+            msg = (f"{msg.split(' (declare the shapes')[0]}; its meaning depends on the shape "
+                   f"of {', '.join(free)}, which no --let declares: add e.g. --let "
+                   f"'{free[0]}: KIND' (KIND one of {', '.join(KIND_WORDS)})")
+        out = LatexError(msg, exc.construct)
+        out.glyphs = exc.glyphs
+        return out
+
+
+def _symbol(g: Glyph):
+    return sp.MatrixSymbol(g.name, *g.shape) if g.shape else sp.Symbol(g.name, real=True)
+
+
+def _words(shape) -> str:
+    if not shape:
+        return "scalar"
+    return f"{shape[0]}-vector" if shape[1] == 1 else f"{shape[0]}×{shape[1]} matrix"
+
+
+def read_statement(latex: str, lets: list[Let], book: str | None = None,
+                   lend: dict | None = None) -> Reading:
+    """Read a reader's LaTeX and its declarations into a :class:`Statement`.
+
+    Args:
+        latex: the LaTeX (one or more relations, ``=``/``\\equiv`` chains).
+        lets: its declarations (:func:`read_lets`).
+        book: a book section whose glyph-table rows name the glyphs, or ``None``.
+        lend: symbols a module lends, by name: ``name -> (symbol, model value or None)``.
+
+    Returns:
+        The :class:`Reading`.
+
+    Raises:
+        LatexError: LaTeX that cannot be read (position and caret; an unknown macro
+            named; a juxtaposition that depends on an undeclared shape asks for a --let).
+        BadInput: a --let naming a symbol that occurs nowhere, an ambiguous book glyph,
+            models that refer to each other in a cycle or whose shape differs from a use.
+    """
+    from rigidsym.checking.deciding.explicit import _EXPLICIT_CACHE, explicit
+
+    lend = lend or {}
+    rd = _Reader(lets, book, lend)
+    values: dict = {}  # book symbol -> value in book symbols (resolved below)
+    occurs = _read_models(rd, lets, values)
+    parsed = rd.parse(latex, "the LaTeX")
+    occurs |= set(parsed.glyphs)
+    for x in lets:
+        if x.key not in occurs:
+            raise BadInput(f"--let '{x.text}': {x.key} does not occur in the LaTeX nor in a "
+                           f"model (the LaTeX's glyphs: "
+                           f"{', '.join(sorted(parsed.glyphs)) or 'none'})")
+    notes, free = _glyph_values(rd, lend, values)
+    model = _resolve(values, explicit)
+    _EXPLICIT_CACHE.clear()
+    printed, kind = _relations(parsed)
+    defines = tuple(r.lhs.name for r in printed) if kind == "definition" else ()
+    text = "; ".join(f"{notation.text(r.lhs)} {'≡' if kind == 'definition' else '='} "
+                     f"{notation.text(r.rhs)}" for r in printed)
+    notes += parsed.readings
+    st = Statement(printed, model, defines=defines, from_latex=True)
+    return Reading(st, kind, text, notes, free)
+
+
+def _read_models(rd: _Reader, lets: list[Let], values: dict) -> set[str]:
+    """The ``NAME = LATEX`` models into ``values``; the glyphs they use."""
+    occurs: set[str] = set()
+    for x in lets:
+        if x.latex:
+            p = rd.parse(f"{x.name} = {x.latex}", f"--let '{x.text}'")
+            if len(p.chains) != 1 or len(p.chains[0]) != 2:
+                raise BadInput(f"--let '{x.text}': expected NAME = one expression")
+            occurs |= set(p.glyphs) - {x.key}  # its own NAME is no occurrence
+            rhs = p.chains[0][1]
+            g = Glyph(x.key, "*", rd._name(x.key), _shape(rhs) or (), "model", "--let model")
+            rd.over[x.key] = g
+            values[_symbol(g)] = rhs
+    return occurs
+
+
+def _glyph_values(rd: _Reader, lend: dict, values: dict) -> tuple[list[str], list[str]]:
+    """Each used glyph's value into ``values`` (a declared kind, a lent model, a glyph-table
+    row or definition, a free matrix of named entries); the notes and the free glyphs."""
+    notes, free, seen, free_, lent_ = [], [], set(), [], []
+    scalars = {(rd.over.get(k) or rd.glyphs[k]).name for k in rd.used
+               if not (rd.over.get(k) or rd.glyphs[k]).shape}
+    while rd.used - seen:  # a book definition read below may bring glyphs of its own
+        key = min(rd.used - seen)
+        seen.add(key)
+        g = rd.over.get(key) or rd.glyphs.get(key)
+        sym = _symbol(g)
+        if key in rd.declared:
+            x = rd.declared[key]
+            value = _fresh(kind_of(x.kind, x.text)[1], g.name, scalars) if x.kind else None
+            if value is not None and value != sym:  # a free scalar stands for itself
+                values[sym] = value
+            continue
+        if g.kind == "module":
+            value = lend[g.name][1]
+            if value is not None:
+                values[sym] = value
+            lent_.append(f"{key} ({_words(g.shape)}"
+                         f"{', its model' if value is not None else ', free'})")
+        elif g.kind == "free":
+            free.append(key)
+            free_.append(f"{key} ({_words(g.shape)})")
+        else:  # a glyph-table row of --book
+            notes.append(f"{key}: {g.meaning} ({g.name}, {_words(g.shape)}; glyph table, "
+                         f"{g.section})")
+            if g.kind == "angle":
+                values[sym] = _sym.angle(g.name)
+            elif g.definition:
+                d = rd.parse(f"{key} = {g.definition}", f"the definition of {key}")
+                values[sym] = d.chains[0][1]
+        if g.shape and sym not in values:  # a free matrix of named entries (the zero test
+            # takes atoms, not Q[0, 0]; and they read better in a counterexample)
+            values[sym] = _fresh((lambda n, s=g.shape: _sym.vector(n, n=s[0])) if
+                                 g.shape[1] == 1 else
+                                 (lambda n, s=g.shape: _sym.matrix(n, *s)), g.name, scalars)
+    if free_:
+        notes.append("free, no --let declares them (shapes by the book's convention: bold "
+                     "lower-case a 3-vector, bold capital 3×3, else a scalar): "
+                     + ", ".join(free_))
+    if lent_:
+        notes.append("lent by --module: " + ", ".join(lent_))
+    return notes, free
+
+
+def _relations(parsed) -> tuple[list[Rel], str]:
+    """One relation per ``=`` or ``\\equiv`` of each chain; ``"definition"`` when every one
+    is an ``\\equiv`` with a bare symbol on the left, else ``"identity"``."""
+    printed, kinds = [], []
+    for c, exprs in enumerate(parsed.chains):
+        for k in range(1, len(exprs)):
+            label = "" if len(parsed.chains) == 1 and len(exprs) == 2 else \
+                f"relation {len(printed) + 1}"
+            printed.append(Rel(exprs[0], exprs[k], label))
+            kinds.append(parsed.ops[c][k - 1])
+    kind = "definition" if all(o == "equiv" for o in kinds) and all(
+        isinstance(r.lhs, sp.Symbol | sp.MatrixSymbol) for r in printed) else "identity"
+    return printed, kind
+
+
+def _fresh(factory, name: str, scalars: set[str]):
+    """``factory(name)``, its free entries renamed (``a_1`` -> ``a__1``) where one would be
+    the same atom as a scalar of the LaTeX (``a_1`` beside ``\\mathbf{a}``): a free entry
+    and a scalar glyph are independent quantities, never silently one."""
+    value = factory(name)
+    while hasattr(value, "free_symbols") and {
+            s.name for s in value.free_symbols} & (scalars - {name}):
+        name += "_"
+        value = factory(name)
+    return value
+
+
+def _resolve(values: dict, explicit) -> dict:
+    """Models in book symbols made explicit, each after those it refers to."""
+    done: dict = {}
+    todo = dict(values)
+    while todo:
+        progress = False
+        for sym, v in list(todo.items()):
+            refs = {a for a in _atoms(v) if a in todo and a != sym}
+            if refs:
+                continue
+            if sym in _atoms(v):
+                raise BadInput(f"--let: the model of {sym} refers to {sym} itself")
+            done[sym] = explicit(v, done) if isinstance(v, sp.Basic) else v
+            del todo[sym]
+            progress = True
+        if not progress:
+            names = ", ".join(str(s) for s in todo)
+            raise BadInput(f"--let: the models of {names} refer to each other in a cycle")
+    return done
+
+
+def _atoms(v) -> set:
+    if not isinstance(v, sp.Basic):
+        return set()
+    return set(v.atoms(sp.MatrixSymbol)) | {s for s in v.atoms(sp.Symbol)
+                                           if type(s) is sp.Symbol}
+
+
+def declare_latex(latex: str, let=None, *, book: str | None = None, modules=()):
+    """Read a reader's LaTeX and register it as the user id ``latex:<hash>``.
+
+    Args:
+        latex: the LaTeX.
+        let: its declarations (:func:`read_lets`).
+        book: a section of the chapter whose glyph table names the glyphs, or ``None``.
+        modules: user modules that lend their symbols and models (:func:`lent`).
+
+    Returns:
+        ``(equation, reading)``: the registered
+        :class:`~rigidsym.checking.deciding.registry.Equation` and the :class:`Reading`.
+
+    Raises:
+        LatexError: LaTeX that cannot be read.
+        BadInput: a bad declaration, section or module (see :func:`read_lets`,
+            :func:`read_statement`).
+    """
+    from rigidsym.checking.deciding.registry import REGISTRY, equation
+
+    if not isinstance(latex, str) or not latex.strip():
+        raise BadInput(f"latex: expected a non-empty LaTeX string, got {latex!r}")
+    lets = read_lets(let)
+    book = check_book(book) if book is not None else None
+    reading = read_statement(latex, lets, book, lent(modules))
+    eq_id = latex_id(latex, lets, book, modules)
+    n = len(reading.statement.printed)
+    title = "a relation read from LaTeX" if n == 1 else f"{n} relations read from LaTeX"
+
+    def statement() -> Statement:
+        return reading.statement
+
+    equation(eq_id, title, section=f"book {book}" if book else "latex", latex=latex,
+             kind=reading.kind)(statement)
+    return REGISTRY[eq_id], reading
