@@ -146,19 +146,20 @@ def _split_inverse(split: dict) -> dict:
     return out
 
 
+def _in_case(x, split: dict):
+    """A value in the reader's atoms, in the split case's atoms (``θ -> -b``)."""
+    if not split or x is None:
+        return x
+    return x.xreplace(split) if not isinstance(x, sp.MatrixBase) else \
+        x.applyfunc(lambda e: sp.sympify(e).xreplace(split))
+
+
 def _describe(rel, model, rels, plan, pt, sentence, split) -> dict:
     vals = PointValues(plan, pt)
     inverse = _split_inverse(split)
-
-    def case(x):  # a value in the reader's atoms, in this case's atoms
-        if not split or x is None:
-            return x
-        return x.xreplace(split) if not isinstance(x, sp.MatrixBase) else \
-            x.applyfunc(lambda e: sp.sympify(e).xreplace(split))
     known = set(point_atoms(plan)) | {TIME}
     shown: list[dict] = []
     seen: set = set()
-
     sides = {rel.lhs, rel.rhs}
 
     def add(key, name_text, name_latex, value, angle=None):
@@ -168,12 +169,12 @@ def _describe(rel, model, rels, plan, pt, sentence, split) -> dict:
         if len(_entries(value)) > MAX_ENTRIES:
             return
         try:
-            v = vals.value(case(value))
+            v = vals.value(_in_case(value, split))
         except (Unsupported, ZeroDivisionError, KeyError, TypeError, ValueError):
             return
         if not _entries(v) or (angle is None and not _has_atoms(value)):
             return  # a constant (𝟏, O): nothing the point chose
-        shown.append(_symbol_entry(name_text, name_latex, v, case(angle), vals))
+        shown.append(_symbol_entry(name_text, name_latex, v, _in_case(angle, split), vals))
 
     # 1. the failing member's own symbols (a whole side is printed as that side)
     for s in _book_symbols(rel.lhs) + _book_symbols(rel.rhs):
@@ -208,12 +209,17 @@ def _describe(rel, model, rels, plan, pt, sentence, split) -> dict:
     _add_fixed(add, in_rels, seen | sides, model, known)
     chosen = _chosen(plan, pt, params, sentence, inverse,
                      _group_alias(model, _atoms_of(rel.lhs) | _atoms_of(rel.rhs), in_rels))
+    return {"symbols": shown, "chosen": _filled_words(chosen, vals)}
+
+
+def _filled_words(chosen: dict, vals) -> dict:
+    """``chosen`` with a sentence on the atoms the failing member does not depend on."""
     if vals.filled:
         names = sorted({notation.book_group(plain_name(a)) for a in vals.filled})
         chosen["text"] += (f" {', '.join(names)} cancel from the failing member, so any value "
                            f"does: 1/2 is taken for each entry.")
         chosen["text"] = chosen["text"].strip()
-    return {"symbols": shown, "chosen": chosen}
+    return chosen
 
 
 def _add_fixed(add, in_rels: set, skip: set, model, known: set) -> None:
