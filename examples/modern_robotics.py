@@ -160,7 +160,7 @@ def transform_inv() -> Statement:
 @equation("mr:transform-inverse-sign", "T⁻¹ with +Rᵀ p", section="se3",
           expected="does-not-hold")
 def transform_inv_sign() -> Statement:
-    return Statement([Rel(transform(Qs.T, Qs.T * pv), transform_inverse(T))], MOTION)
+    return Statement([Rel(transform(R.T, R.T * pv), transform_inverse(T))], {**MOTION, R: Q1})
 
 
 @equation("mr:compose", "T₁ T₂ = (R₁ R₂, R₁ p₂ + p₁) (MR (3.63))", section="se3")

@@ -48,6 +48,7 @@ from rigidsym.checking.deciding.explicit import (
 from rigidsym.checking.deciding.records import member_record, model_words, printed_latex
 from rigidsym.checking.deciding.registry import REGISTRY, Equation, Rel, Statement
 from rigidsym.checking.repairing.correction import RepairSettings, correct
+from rigidsym.printing.names import book_text
 from rigidsym.zero.decide import Unsupported, decide_zero, make_plan
 
 __all__ = ["Outcome", "check", "explicit", "shape_of", "NUMERIC_DIGITS", "NUMERIC_POINTS"]
@@ -140,8 +141,8 @@ def decide_rel(rel: Rel, model: dict, seed: int, st: Statement | None = None) ->
     if st is not None:
         rels = st.printed + st.claims + (st.corrected or [])
 
-        def describe(plan, pt):
-            return describe_point(rel, model, rels, plan, pt, st.parametrisation)
+        def describe(plan, pt, split=None):
+            return describe_point(rel, model, rels, plan, pt, st.parametrisation, split)
     if ls != rs:
         plan = make_plan(_entries(lhs) + _entries(rhs))
         rng = random.Random(seed)
@@ -158,9 +159,11 @@ def decide_rel(rel: Rel, model: dict, seed: int, st: Statement | None = None) ->
         return _RelOutcome(False, "counterexample",
                            f"shape mismatch: {ls[0]}x{ls[1]} vs {rs[0]}x{rs[1]}", ce, rel.label)
     alts = cases(lhs, rhs)  # acos/atan2 on their principal branches (branches.py)
-    if alts == [(lhs, rhs, lhs, rhs)]:
+    if alts == [(lhs, rhs, lhs, rhs, {})]:
         return _decide_case(rel, lhs, rhs, lhs, rhs, seed, describe)
-    outs = [_decide_case(rel, *alt, seed, describe if alt[0] is lhs else None)
+    # a split case is described in the reader's angle (a = s b), never in b (issue 28)
+    outs = [_decide_case(rel, *alt[:4], seed, None if describe is None else
+                         (lambda plan, pt, sub=alt[4]: describe(plan, pt, sub)))
             for alt in alts]
     for o, alt in zip(outs, alts, strict=True):
         if o.zero is False:  # the case's relation is the evidence the balls re-check
@@ -281,7 +284,7 @@ def _check(eq: Equation, t0: float, settings: RepairSettings,
         members += [member_record(r, "claim", o) for r, o in zip(st.claims, outs, strict=True)]
         if ok and all(o.zero for o in outs):
             verdict, method = "definition", "definition"
-            detail = "introduces " + ", ".join(st.defines)
+            detail = "introduces " + ", ".join(book_text(d) for d in st.defines)
             backing = list(st.claims)
         elif ok:
             verdict, method, detail = ("undecided", "undecided",

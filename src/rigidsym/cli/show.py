@@ -34,13 +34,29 @@ def add_arguments(s) -> None:
     add_repair_arguments(s)
 
 
+def reader_path(path: str, cwd: str | None = None) -> str:
+    """A path a reader can use (issue 28): relative to ``cwd`` when the file lies under
+    it (``examples/rot.py``); a file of the installed package as ``rigidsym/...``
+    (``rigidsym/derivations/sec3_2.py``); else the absolute path, never a relative one
+    that climbs out (``../../work/...``)."""
+    path = os.path.abspath(path)
+    cwd = os.path.abspath(cwd or os.getcwd())
+    if os.path.commonpath([path, cwd]) == cwd:
+        return os.path.relpath(path, cwd)
+    import rigidsym
+    pkg = os.path.dirname(os.path.abspath(rigidsym.__file__))
+    if os.path.commonpath([path, pkg]) == pkg:
+        return os.path.join("rigidsym", os.path.relpath(path, pkg))
+    return path
+
+
 def declared_where(eq) -> str:
     """Where a declaration lives, function and file first: ``trace_wrong in
     notes/rot.py``; a book module's dotted name last (a user module's import name is an
     internal one and is left out)."""
     mod = sys.modules[eq.module]
     try:
-        src = os.path.relpath(inspect.getsourcefile(getattr(mod, eq.function.split(".")[0])))
+        src = reader_path(inspect.getsourcefile(getattr(mod, eq.function.split(".")[0])))
     except (TypeError, ValueError, AttributeError):  # no source file (a notebook cell)
         src = eq.where
     tail = "" if eq.module.startswith("_rigidsym_user_") or eq.module == "__main__" else \

@@ -126,5 +126,7 @@ def run(args) -> int:
         print(f"MISMATCH ({r.id}): computed {r.verdict}, expected {r.expected}: {r.detail} "
               f"(rigidsym show {r.id} explains it)")
     if any(r.verdict == "does-not-hold" for r in results) and not args.quiet:
-        print("Why an equation does not hold, in the book's symbols: rigidsym show ID")
+        whose = "the book's" if any(not is_user_id(r.id) for r in results
+                                    if r.verdict == "does-not-hold") else "its own"
+        print(f"Why an equation does not hold, in {whose} symbols: rigidsym show ID")
     return 1 if off else 0

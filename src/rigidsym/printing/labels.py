@@ -17,9 +17,9 @@ from __future__ import annotations
 import re
 import unicodedata
 
-from rigidsym.printing.names import _GREEK, book_text
+from rigidsym.printing.names import _GREEK, book_latex, book_text
 
-__all__ = ["label_text", "latex_text", "latex_spans"]
+__all__ = ["label_text", "label_latex", "latex_text", "latex_spans"]
 
 _COMBINING = {"dot": "\u0307", "ddot": "\u0308", "tilde": "\u0303", "hat": "\u0302",
               "bar": "\u0304"}
@@ -35,6 +35,9 @@ _MATH_TOKEN = re.compile(
 _TOKEN = re.compile(r"(?<![A-Za-z0-9_])[A-Za-z][A-Za-z0-9_]*'*")  # not inside "3x4"
 
 
+_NESTED = re.compile(r"\[(\[[^\[\]]*\](?:, \[[^\[\]]*\])+)\]")
+
+
 def _mathy(tok: str) -> bool:
     return len(tok) == 1 or bool(_MATH_TOKEN.match(tok))
 
@@ -42,9 +45,73 @@ def _mathy(tok: str) -> bool:
 def _token(tok: str) -> str:
     if tok.endswith("_prime"):
         return _token(tok[:-6]) + "'"
+    if tok.startswith("norm_") and _mathy(tok[5:]):
+        return book_text(tok)
     if not _MATH_TOKEN.match(tok):
         return tok
     return book_text(tok)
+
+
+#: a label's tokens for :func:`label_latex`
+_LATEX_TOKEN = re.compile(r"\|\||\^T\b|\^-?\d+|[A-Za-z][A-Za-z0-9_]*'*~?|\d+|\s+|.")
+_WORD = {"brace": "underbrace"}  # the book's word for the braced term of (3.59)
+
+
+def label_latex(text: str) -> str:
+    """A member's ASCII label as LaTeX for the MathML printer (issue 28: the errata table
+    labels members in MathML, never in ASCII): its mathematics in book notation
+    (``"adot . omega/||omega||^2"`` -> ``\\dot{a} \\cdot \\omega/\\|\\omega\\|^{2}``), its English
+    words as ``\\text{...}`` (``"pdot_perp brace"`` -> ``\\dot{p}_{\\perp}\\text{ underbrace}``).
+    """
+    toks = _LATEX_TOKEN.findall(text or "")
+    out: list[tuple[bool, str]] = []  # (is_math, piece)
+
+    def mathy(t: str) -> bool:
+        t = t.rstrip("~")
+        return bool(t) and (t[0].isalpha() and (_mathy(t) or (t.startswith("norm_")
+                                                              and _mathy(t[5:]))))
+
+    for i, t in enumerate(toks):
+        near = [x for x in toks[i + 1:] if not x.isspace()][:1] + \
+            [x for x in reversed(toks[:i]) if not x.isspace()][:1]
+        if t == "||":
+            out.append((True, r"\|"))
+        elif t == "^T":
+            out.append((True, "^{T}"))
+        elif t.startswith("^"):
+            out.append((True, "^{" + t[1:] + "}"))
+        elif t[0].isalpha() and t not in ("x",) and mathy(t):
+            core = book_latex(t.rstrip("~"))
+            out.append((True, rf"\tilde{{{core}}}" if t.endswith("~") else core))
+        elif t == "x" and len(near) == 2 and all(mathy(n) or n in "()|" for n in near):
+            out.append((True, r"\times"))
+        elif t == "x":
+            out.append((True, "x"))
+        elif t == "." and len(near) == 2 and all(mathy(n) or n in "()|" for n in near):
+            out.append((True, r"\cdot"))
+        elif t[0].isalpha():
+            out.append((False, _WORD.get(t, t)))
+        elif t.isdigit() or t in "+/=()[],":
+            out.append((True, t))
+        elif t == "-" and not (out and not out[-1][0]):
+            out.append((True, "-"))
+        else:  # spaces and punctuation: prose between words, a space between symbols
+            out.append((False, t) if t.strip() or (out and not out[-1][0]) else (True, " "))
+    pieces, k = [], 0
+    while k < len(out):
+        if out[k][0]:
+            pieces.append(out[k][1])
+            k += 1
+            continue
+        run = ""
+        while k < len(out) and (not out[k][0] or (out[k][1] == " " and k + 1 < len(out)
+                                                  and not out[k + 1][0])):
+            run += out[k][1]
+            k += 1
+        lead = " " if pieces else ""
+        tail = " " if k < len(out) else ""
+        pieces.append(r"\text{" + lead + run.strip() + tail + "}")
+    return " ".join(p for p in pieces if p != " ").strip()
 
 
 def label_text(text: str) -> str:
@@ -63,6 +130,10 @@ def label_text(text: str) -> str:
     out = re.sub(r"\^T\b", "ᵀ", out)
     out = re.sub(r"\^(-?\d+)\b", lambda m: m.group(1).translate(_SUP), out)
     out = out.replace("!=", "≠").replace("<=", "≤").replace(">=", "≥")
+    out = re.sub(r"\bbrace\b", "underbrace", out)  # (3.59)'s braced term, as the book's LaTeX
+    # a block matrix written as Python's nested lists, m[[X, Y], [Z, W]]: block notation
+    out = _NESTED.sub(lambda m: "[" + "; ".join(re.findall(r"\[([^\[\]]*)\]", m.group(1)))
+                      + "]", out)
     # a dot product: "a . b", or "w.w" between two mathematical tokens (not "e.g.")
     out = re.sub(r"(?<=[\w)‖'\u0307\u0308\u0303]) \. (?=[\w(‖])", "·", out)
     out = re.sub(r"\b([A-Za-z][\w']*)\.([A-Za-z][\w']*)\b(?!\.)",

@@ -21,8 +21,11 @@ _GREEK = {
 _ACCENTS = ("ddot", "dot", "tilde", "hat", "bar")
 _COMBINING = {"dot": "\u0307", "ddot": "\u0308", "tilde": "\u0303", "hat": "\u0302",
               "bar": "\u0304"}
-_SUB_TEXT = {"par": "∥", "perp": "⊥"}
-_SUB_LATEX = {"par": r"\parallel", "perp": r"\perp"}
+_SUB_TEXT = {"par": "∥", "perp": "⊥", "inf": "∞"}
+_SUB_LATEX = {"par": r"\parallel", "perp": r"\perp", "inf": r"\infty"}
+#: name parts that are primes in the book (issue 28: ``e_2prime`` is e'', ``V_alt`` is the
+#: other V, V'): the count of primes each adds
+_PRIME_TAGS = {"prime": 1, "alt": 1, **{f"{k}prime": k for k in range(2, 4)}}
 _SUBSCRIPT_DIGITS = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
 _SUPERSCRIPT = str.maketrans("0123456789-", "⁰¹²³⁴⁵⁶⁷⁸⁹⁻")
 #: a declaration module's private prefix on atom names (``s34_adot``, ``sec342_vdot``)
@@ -36,8 +39,9 @@ def _parse(name: str) -> tuple[str, list[str], list[str], str]:
     while name.endswith("'"):
         primes, name = primes + "'", name[:-1]
     tokens = [t for t in name.split("_") if t]
-    while len(tokens) > 1 and tokens[-1] == "prime":
-        primes, tokens = primes + "'", tokens[:-1]
+    if len(tokens) > 1:  # primes anywhere after the base: e_2prime, p_0_2prime, L_alt_dot
+        primes += "'" * sum(_PRIME_TAGS.get(t, 0) for t in tokens[1:])
+        tokens = tokens[:1] + [t for t in tokens[1:] if t not in _PRIME_TAGS]
     if not tokens:
         return name, [], [], primes
     base, rest = tokens[0], tokens[1:]
@@ -123,6 +127,8 @@ def book_latex(name: str, bold: bool = False) -> str:
     for a in accents:
         core = rf"\{a}{{{core}}}"
     core += primes
-    if subs:
-        core += "_{" + ",".join(_SUB_LATEX.get(s, s) for s in subs) + "}"
+    if subs:  # a word (isa, wrench) upright, as one symbol, not a product of letters
+        core += "_{" + ",".join(_SUB_LATEX.get(s) or (rf"\mathrm{{{s}}}" if len(s) > 1
+                                                      and s.isalpha() else s)
+                                for s in subs) + "}"
     return core

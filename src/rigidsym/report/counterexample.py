@@ -16,14 +16,22 @@ import sympy as sp
 from markupsafe import Markup
 
 from rigidsym.checking.deciding.pointvalues import decimal_text
+from rigidsym.checking.deciding.registry import is_user_id
 from rigidsym.printing import notation
 from rigidsym.printing.labels import label_text
 
-__all__ = ["sides_of", "text_lines", "markdown_lines", "html_view", "GLOSSARY_HINT"]
+__all__ = ["sides_of", "text_lines", "markdown_lines", "html_view", "GLOSSARY_HINT",
+           "whose_symbols"]
 
 #: where the words of a verdict are explained (docs/glossary.md in the source tree)
 GLOSSARY_HINT = ("Words (verdict, member, model, parametrisation, counterexample, ...): "
                  "rigidsym glossary WORD")
+
+
+def whose_symbols(eq_id: str) -> str:
+    """Whose symbols a counterexample is in: ``"the book's"`` for the book's ids, ``"the
+    equation's own"`` for a reader's (namespace:name), whose symbols are the reader's."""
+    return "the equation's own" if is_user_id(eq_id) else "the book's"
 
 
 def sides_of(member_text: str | None) -> tuple[str, str]:
@@ -120,7 +128,8 @@ def _wrap(text: str, width: int, indent: str) -> list[str]:
     return wrap_at_spaces(text, width, indent, "    ")
 
 
-def text_lines(ce: dict, sides: tuple[str, str], width: int) -> list[str]:
+def text_lines(ce: dict, sides: tuple[str, str], width: int,
+               whose: str = "the book's") -> list[str]:
     """The counterexample for the terminal: book symbols, both sides, the residual, then
     how the point was chosen (folded under its own heading).
 
@@ -128,15 +137,16 @@ def text_lines(ce: dict, sides: tuple[str, str], width: int) -> list[str]:
         ce: the record's ``counterexample``.
         sides: the failing member's two sides in book notation (:func:`sides_of`).
         width: the line width to fit (breaks at spaces).
+        whose: whose symbols these are (:func:`whose_symbols`).
     """
-    out = _wrap("Counterexample, in the book's symbols (exact; decimals after ≈):", width, "")
+    out = _wrap(f"Counterexample, in {whose} symbols (exact; decimals after ≈):", width, "")
     if ce.get("symbols"):
         for s in ce["symbols"]:
             out += _symbol_lines(s, width, "  ")
     else:  # no description: the parametrisation variables themselves
         for p in ce["point"]:
             dec = f"   ≈ {p['decimal']}" if p["decimal"] and p["decimal"] != p["exact"] else ""
-            out += _wrap(f"{p['book']} = {p['exact']}{dec}", width, "  ")
+            out += _wrap(f"{p['book']} = {_value_text(p['exact'])}{dec}", width, "  ")
     left, right = sides
     out += _value_lines(f"left side{' ' + left if left else ''}", ce["lhs"], width)
     out += _value_lines(f"right side{' ' + right if right else ''}", ce["rhs"], width)
@@ -161,10 +171,10 @@ def _cell(text: str) -> str:
     return (text or "").replace("|", "\\|").replace("\n", " ")
 
 
-def markdown_lines(ce: dict, sides: tuple[str, str]) -> list[str]:
+def markdown_lines(ce: dict, sides: tuple[str, str], whose: str = "the book's") -> list[str]:
     """The counterexample in Markdown: a table of the book symbols (exact, decimal), both
     sides and the residual, and a folded ``<details>`` "How the point was chosen"."""
-    head = ("Counterexample (an exact point, in the book's symbols"
+    head = (f"Counterexample (an exact point, in {whose} symbols"
             + (f"; member *{_cell(label_text(ce['member']))}*" if ce.get("member") else "")
             + "):")
     out = [head, ""]

@@ -19,7 +19,7 @@ from rigidsym.checking.checker import Outcome
 from rigidsym.latex.transcription import transcription_words
 from rigidsym.printing import notation
 from rigidsym.printing.labels import label_text, latex_spans, latex_text
-from rigidsym.report.counterexample import html_view, sides_of
+from rigidsym.report.counterexample import html_view, sides_of, whose_symbols
 from rigidsym.report.glossary import html_entries
 from rigidsym.report.markdown import anchor, sections
 from rigidsym.report.mathtext import math_or_text
@@ -68,7 +68,8 @@ def _prose_view(rec: dict) -> dict:
             "failing_member_shown": label_text(rec["failing_member"] or ""),
             "title_shown": label_text(rec["title"]),
             "singular_shown": label_text(rec["singular"] or ""),
-            "ce_member_shown": label_text(ce.get("member") or "")}
+            "ce_member_shown": label_text(ce.get("member") or ""),
+            "ce_whose": whose_symbols(rec["id"])}
 
 
 def _view(rec: dict) -> dict:

@@ -9,7 +9,7 @@ from __future__ import annotations
 from rigidsym.checking.checker import NUMERIC_DIGITS, NUMERIC_POINTS, Outcome
 from rigidsym.latex.transcription import transcription_words
 from rigidsym.printing.labels import label_text, latex_spans
-from rigidsym.report.counterexample import markdown_lines, sides_of
+from rigidsym.report.counterexample import markdown_lines, sides_of, whose_symbols
 from rigidsym.report.numeric import numeric_sentence
 from rigidsym.report.record import CITATION, TITLE, cause_line, result_record, summary
 from rigidsym.report.repairs import markdown_errata, markdown_repairs
@@ -99,7 +99,8 @@ def _entry(rec: dict, full: bool) -> list[str]:
         if rec["counterexample"]:
             failing = next((m["text"] for m in rec["members"] if m["status"] == "fails"
                             and m["role"] != "corrected"), None)
-            out += markdown_lines(rec["counterexample"], sides_of(failing))
+            out += markdown_lines(rec["counterexample"], sides_of(failing),
+                                  whose_symbols(rec["id"]))
     out += markdown_repairs(rec)
     out += [how_checked(rec), ""]
     if full:

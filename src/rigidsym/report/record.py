@@ -159,7 +159,8 @@ def counterexample_record(ce: dict | None) -> dict | None:
         out["residual"] = res
         entries = sp.sympify(res)
         entries = list(entries) if isinstance(entries, sp.MatrixBase) else [entries]
-        worst = max(abs(sp.Rational(x)) for x in entries)
+        # exact rationals, or closed forms where a bare angle enters (4 atan(2/3))
+        worst = max((abs(sp.sympify(x)) for x in entries), key=lambda x: float(sp.N(x, 30)))
         out["residual_max_abs"] = str(worst)
         out["residual_max_abs_decimal"] = _decimal(str(worst))
     else:

@@ -19,6 +19,7 @@ import re
 
 from markupsafe import Markup
 
+from rigidsym.printing.labels import label_latex, label_text
 from rigidsym.printing.mathml import latex_to_mathml
 
 __all__ = ["repair_fields", "marked_mathml", "repairs_view", "errata_rows",
@@ -49,7 +50,7 @@ def marked_mathml(latex: str | None, fallback: str | None) -> Markup:
 
 
 def _member_words(member: str) -> str:
-    return f"member {member!r}" if member else "the equation"
+    return f"member “{label_text(member)}”" if member else "the equation"
 
 
 def repairs_view(rec: dict) -> list[dict]:
@@ -79,9 +80,21 @@ def errata_rows(recs: list[dict]) -> list[dict]:
             declared = "—" if not reps or rec.get("correction") != "declared" else \
                 ("yes" if any(x["equals_declared"] for x in reps) else "no")
             rows.append({"id": rec["id"], "member": s["member"] or "the equation",
+                         "member_shown": label_text(s["member"]) or "the equation",
+                         "member_mathml": _label_mathml(s["member"]),
                          "first": first, "more": more, "declared": declared,
                          "words": s["words"], "text": reps[0]["text"] if reps else ""})
     return rows
+
+
+def _label_mathml(label: str) -> Markup | None:
+    """A member's label as inline MathML (issue 28: never ASCII in the HTML table)."""
+    if not label:
+        return None
+    try:
+        return Markup(latex_to_mathml(label_latex(label), display=False))
+    except ValueError:  # a label the converter rejects: its book-notation text
+        return Markup(html.escape(label_text(label)))
 
 
 def _cell(text: str) -> str:
@@ -132,7 +145,7 @@ def markdown_errata(recs: list[dict], anchor) -> list[str]:
            "was tried.", "",
            "| id | member | first repair | more | equals the declared | searched |",
            "|---|---|---|---|---|---|"]
-    out += [f"| [({r['id']})](#{anchor(r['id'])}) | {_cell(r['member'])} | "
+    out += [f"| [({r['id']})](#{anchor(r['id'])}) | {_cell(r['member_shown'])} | "
             f"{_cell(r['first']) or '—'} | {r['more'] or ''} | {r['declared']} | "
             f"{_cell(r['words'])} |" for r in rows]
     return out + [""]

@@ -21,7 +21,7 @@ from rigidsym.checking.deciding.registry import Rel, is_user_id
 from rigidsym.latex.transcription import transcription_words
 from rigidsym.printing import notation
 from rigidsym.printing.labels import label_text
-from rigidsym.report.counterexample import GLOSSARY_HINT, sides_of, text_lines
+from rigidsym.report.counterexample import GLOSSARY_HINT, sides_of, text_lines, whose_symbols
 from rigidsym.report.counterexample import wrap_at_spaces as _hard_wrap
 from rigidsym.report.numeric import numeric_sentence
 from rigidsym.report.record import cause_words, counterexample_record, result_record
@@ -170,7 +170,8 @@ def explain(r: Outcome, rels: dict[str, list[Rel]], where: str, width: int) -> s
                 *_hard_wrap(f"Cause: {cls}. {label_text(why)}", width, "  "), ""]
         ce = counterexample_record(r.counterexample)
         if ce:
-            out += text_lines(ce, sides_of(_failing_text(r)), width) + [""]
+            out += text_lines(ce, sides_of(_failing_text(r)), width,
+                              whose_symbols(r.id)) + [""]
     if blocks["corrected"]:
         title = titles["corrected"]
         if r.correction == "found by search":
@@ -202,7 +203,7 @@ def repair_lines(r: Outcome, width: int) -> list[str]:
     if r.correction is not None:
         out += _hard_wrap(f"Correction: {r.correction}", width, "  ")
     for s in r.repair_search:
-        who = f"member {s['member']!r}" if s["member"] else "the equation"
+        who = f"member “{label_text(s['member'])}”" if s["member"] else "the equation"
         out += _hard_wrap(f"{who}: {s['words']}", width, "  ")
         mine = [x for x in r.repairs if x["member"] == s["member"]]
         for k, x in enumerate(mine, 1):

@@ -45,10 +45,21 @@ _KIND_SENTENCE = {
                 "{n}ᵀ{n} = 𝟏 and det {n} = 1 hold exactly",
     "angle": "{n} is chosen through its half-angle tangent t = tan({n}/{d}), so that "
              "cos {n} and sin {n} are exact rationals and {n} = {m}·atan(t)",
+    "angle_pi": "{n} is an angle on [0, π], chosen through its half-angle tangent "
+                "t = tan({n}/{d}) ≥ 0, so that cos {n} and sin {n} are exact rationals and "
+                "{n} = {m}·atan(t)",
+    # an angle of the default range split by acos(cos θ) = |θ| (branches.py)
+    "split+": "{n} is taken in [0, π] (the case acos(cos {n}) = {n}), chosen through its "
+              "half-angle tangent t = tan({n}/{d}) ≥ 0, so that cos {n} and sin {n} are "
+              "exact rationals and {n} = {m}·atan(t)",
+    "split-": "{n} is taken in [−π, 0] (the case acos(cos {n}) = −{n}), chosen through "
+              "t = tan(−{n}/{d}) ≥ 0, so that cos {n} and sin {n} are exact rationals and "
+              "{n} = −{m}·atan(t)",
 }
 
 
-def describe_point(rel, model: dict, rels: list, plan, pt: dict, sentence: str = "") -> dict:
+def describe_point(rel, model: dict, rels: list, plan, pt: dict, sentence: str = "",
+                   split: dict | None = None) -> dict:
     """The book symbols of ``rel`` at the counterexample, and how the point was chosen.
 
     Args:
@@ -60,6 +71,9 @@ def describe_point(rel, model: dict, rels: list, plan, pt: dict, sentence: str =
         pt: the exact counterexample, plan parameter -> ``Fraction``.
         sentence: the statement's own words on its model's parameters
             (:attr:`rigidsym.checking.deciding.registry.Statement.parametrisation`), or "".
+        split: the case's substitution of a split angle (``θ -> ±b``,
+            :func:`rigidsym.checking.deciding.branches.cases`): the point is described in
+            ``θ``, the reader's angle, never in ``b``.
 
     Returns:
         ``{"symbols": [...], "chosen": {"text": ..., "params": [...]}}`` (see
@@ -67,7 +81,7 @@ def describe_point(rel, model: dict, rels: list, plan, pt: dict, sentence: str =
         described (describing never changes a verdict).
     """
     try:
-        return _describe(rel, model, rels, plan, pt, sentence)
+        return _describe(rel, model, rels, plan, pt, sentence, split or {})
     except Exception:  # noqa: BLE001  a description must never change a verdict
         return {}
 
@@ -123,27 +137,45 @@ def _name(base_name: str, k: int, bold: bool) -> tuple[str, str]:
     return notation.book_text(base_name + acc), notation.book_latex(base_name + acc, bold=bold)
 
 
-def _describe(rel, model, rels, plan, pt, sentence) -> dict:
+def _split_inverse(split: dict) -> dict:
+    """``b -> (θ, sign)`` of a split substitution ``θ -> sign·b``."""
+    out = {}
+    for a, v in split.items():
+        (b,) = v.free_symbols
+        out[b] = (a, int(v / b))
+    return out
+
+
+def _in_case(x, split: dict):
+    """A value in the reader's atoms, in the split case's atoms (``θ -> -b``)."""
+    if not split or x is None:
+        return x
+    return x.xreplace(split) if not isinstance(x, sp.MatrixBase) else \
+        x.applyfunc(lambda e: sp.sympify(e).xreplace(split))
+
+
+def _describe(rel, model, rels, plan, pt, sentence, split) -> dict:
     vals = PointValues(plan, pt)
+    inverse = _split_inverse(split)
     known = set(point_atoms(plan)) | {TIME}
     shown: list[dict] = []
     seen: set = set()
+    sides = {rel.lhs, rel.rhs}
 
     def add(key, name_text, name_latex, value, angle=None):
-        if key in seen:
+        if key in seen or key in sides:  # a whole side is printed as that side
             return
         seen.add(key)
         if len(_entries(value)) > MAX_ENTRIES:
             return
         try:
-            v = vals.value(value)
+            v = vals.value(_in_case(value, split))
         except (Unsupported, ZeroDivisionError, KeyError, TypeError, ValueError):
             return
         if not _entries(v) or (angle is None and not _has_atoms(value)):
             return  # a constant (𝟏, O): nothing the point chose
-        shown.append(_symbol_entry(name_text, name_latex, v, angle, vals))
+        shown.append(_symbol_entry(name_text, name_latex, v, _in_case(angle, split), vals))
 
-    sides = {rel.lhs, rel.rhs}
     # 1. the failing member's own symbols (a whole side is printed as that side)
     for s in _book_symbols(rel.lhs) + _book_symbols(rel.rhs):
         if s in sides:
@@ -161,7 +193,9 @@ def _describe(rel, model, rels, plan, pt, sentence) -> dict:
     params: list = []
     for a in point_atoms(plan):
         base, k = atom_base(a)
-        if a in owners:
+        if base in inverse:  # the case's b: shown as the reader's angle
+            _add_group(add, constraint_of(inverse[base][0]), k)
+        elif a in owners:
             key = owners[a]
             add(key, notation.text(key), notation.latex(key), explicit(key, model),
                 angle=_angle_of(model[key], plan))
@@ -173,13 +207,19 @@ def _describe(rel, model, rels, plan, pt, sentence) -> dict:
             params.append(a)
     # 3. other scalars and vectors of the statement that the point fixes (m, c, ȧ⊥)
     _add_fixed(add, in_rels, seen | sides, model, known)
-    chosen = _chosen(plan, pt, params, sentence)
+    chosen = _chosen(plan, pt, params, sentence, inverse,
+                     _group_alias(model, _atoms_of(rel.lhs) | _atoms_of(rel.rhs), in_rels))
+    return {"symbols": shown, "chosen": _filled_words(chosen, vals)}
+
+
+def _filled_words(chosen: dict, vals) -> dict:
+    """``chosen`` with a sentence on the atoms the failing member does not depend on."""
     if vals.filled:
         names = sorted({notation.book_group(plain_name(a)) for a in vals.filled})
         chosen["text"] += (f" {', '.join(names)} cancel from the failing member, so any value "
                            f"does: 1/2 is taken for each entry.")
         chosen["text"] = chosen["text"].strip()
-    return {"symbols": shown, "chosen": chosen}
+    return chosen
 
 
 def _add_fixed(add, in_rels: set, skip: set, model, known: set) -> None:
@@ -194,6 +234,34 @@ def _add_fixed(add, in_rels: set, skip: set, model, known: set) -> None:
         v = explicit(s, model)
         if _atoms_of(v) <= known:
             add(s, notation.text(s), notation.latex(s), v)
+
+
+def _group_alias(model: dict, failing: set = frozenset(), used: set = frozenset()) -> dict:
+    """Constrained group name -> the reader's symbol whose model value is exactly that
+    group (``R: rigid_motion().Q`` -> ``{"Q": "R"}``): "how the point was chosen" names
+    the reader's symbol, not the group's internal name (issue 28). A symbol of the failing
+    member is preferred, then one of the statement's relations, then any."""
+    out: dict = {}
+    keys = sorted(model, key=lambda k: (k not in failing, k not in used))
+    for key in keys:
+        val = model[key]
+        if not isinstance(key, sp.Symbol | sp.MatrixSymbol):
+            continue
+        ents = _entries(val) if isinstance(val, sp.MatrixBase) else [val]
+        cs = {constraint_of(e) for e in ents}
+        if len(cs) != 1 or None in cs:
+            continue
+        (c,) = cs
+        if c.name in out:
+            continue
+        try:
+            same = sp.ImmutableMatrix(val) == sp.ImmutableMatrix(_group_value(c, 0)) \
+                if isinstance(val, sp.MatrixBase) else val == _group_value(c, 0)
+        except (TypeError, ValueError):
+            continue
+        if same:
+            out[c.name] = notation.text(key)
+    return out
 
 
 def _has_atoms(v) -> bool:
@@ -240,14 +308,18 @@ def _add_group(add, c, k: int) -> None:
 
 
 # --------------------------------------------------------------------------- chosen
-def _param_label(p) -> str:
+def _param_label(p, inverse: dict | None = None, alias: dict | None = None) -> str:
     """``e__u(t)`` -> ``u of e``, ``e__u__d1`` -> ``u̇ of e``, ``tan(phi/2)`` -> ``t =
     tan(φ/2)``, a model atom by its book name (``s34_q_1`` -> ``q₁``)."""
     name = p.name
     if name.startswith("tan("):
         inner, _, den = name[4:-1].rpartition("/")
         timed = inner.endswith("(t)")
-        inner = notation.book_text(inner[:-3] if timed else inner)
+        inner = inner[:-3] if timed else inner
+        hit = next(((a, sg) for b, (a, sg) in (inverse or {}).items() if b.name == inner),
+                   None)
+        inner = notation.book_text(inner) if hit is None else \
+            ("−" if hit[1] < 0 else "") + notation.book_text(hit[0].name)
         return f"t = tan({inner}/{den})"
     if "__" in name:
         group, rest = name.split("__", 1)
@@ -256,12 +328,15 @@ def _param_label(p) -> str:
         if "__d" in rest:
             rest, _, order = rest.partition("__d")
             k = int(order)
-        mark = {0: "", 1: "\u0307", 2: "\u0308"}.get(k, f"^({k})")
-        return f"{rest}{mark} of {notation.book_text(group)}"
+        who = (alias or {}).get(group) or notation.book_text(group)
+        if k <= 2:  # the accent on the letter: q̇₀, not q₀̇
+            return f"{notation.book_text(rest + ('', 'dot', 'ddot')[k])} of {who}"
+        return f"{notation.book_text(rest)}^({k}) of {who}"
     return notation.book_text(name)
 
 
-def _chosen(plan, pt, params: list, sentence: str) -> dict:
+def _chosen(plan, pt, params: list, sentence: str, inverse: dict | None = None,
+            alias: dict | None = None) -> dict:
     """The parametrisation: one sentence, and the values of its variables.
 
     Returns:
@@ -288,12 +363,17 @@ def _chosen(plan, pt, params: list, sentence: str) -> dict:
         if c is None or (c.kind, c.name) in seen_kinds:
             continue
         seen_kinds.add((c.kind, c.name))
-        n = notation.book_text(c.name)
-        if c.kind == "angle":
-            if atom_base(a)[0] not in plan.angles:
+        n = (alias or {}).get(c.name) or notation.book_text(c.name)
+        if c.kind in ("angle", "angle_pi"):
+            base = atom_base(a)[0]
+            if base not in plan.angles:
                 continue
-            M = plan.angles[atom_base(a)[0]][1]
-            words.append(_KIND_SENTENCE["angle"].format(n=n, d=2 * M, m=2 * M))
+            M = plan.angles[base][1]
+            kind = c.kind
+            if base in (inverse or {}):
+                reader, sign = inverse[base]
+                n, kind = notation.book_text(reader.name), "split+" if sign > 0 else "split-"
+            words.append(_KIND_SENTENCE[kind].format(n=n, d=2 * M, m=2 * M))
         else:
             words.append(_KIND_SENTENCE[c.kind].format(n=n) + (
                 "; along the motion their rates at the instant are free rationals too"
@@ -303,7 +383,7 @@ def _chosen(plan, pt, params: list, sentence: str) -> dict:
         mine = group in {n for _, n in seen_kinds} and \
             rest.split("(")[0].split("__")[0] in ("u", "v", "w", "q0", "q1", "q2", "q3")
         if p in pt and (mine or p.name.startswith("tan(")):
-            rows.append(_row(_param_label(p), [sp.Rational(pt[p].numerator,
+            rows.append(_row(_param_label(p, inverse, alias), [sp.Rational(pt[p].numerator,
                                                            pt[p].denominator)]))
     text = ". ".join(words) + "." if words else ""
     return {"text": text, "params": rows}

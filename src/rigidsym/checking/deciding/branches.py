@@ -79,14 +79,15 @@ def _apply(x, f):
 
 
 def cases(lhs, rhs) -> list[tuple]:
-    """The cases to decide: ``(lhs, rhs, lhs', rhs')`` with the split angles substituted,
-    then also ``acos``/``atan2`` rewritten (one case, ``(lhs, rhs, lhs, rhs)``, when the
-    relation holds neither)."""
+    """The cases to decide: ``(lhs, rhs, lhs', rhs', sub)`` with the split angles
+    substituted, then also ``acos``/``atan2`` rewritten, and ``sub`` the substitution of
+    the case (split angle ``a`` -> ``s b``, so that a counterexample is described in ``a``);
+    one case, ``(lhs, rhs, lhs, rhs, {})``, when the relation holds neither."""
     ents = list(lhs) if isinstance(lhs, sp.MatrixBase) else [lhs]
     ents += list(rhs) if isinstance(rhs, sp.MatrixBase) else [rhs]
     fns = set().union(*(sp.sympify(e).atoms(sp.acos, sp.atan2) for e in ents))
     if not fns:
-        return [(lhs, rhs, lhs, rhs)]
+        return [(lhs, rhs, lhs, rhs, {})]
     split = []
     for f in sorted(fns, key=sp.default_sort_key):
         if isinstance(f, sp.acos):
@@ -108,7 +109,7 @@ def cases(lhs, rhs) -> list[tuple]:
             return _resolve(e.xreplace(sub))
 
         subbed = [_apply(x, lambda e, sub=sub: e.xreplace(sub)) for x in (lhs, rhs)]
-        out.append((*subbed, *(_apply(x, exact) for x in (lhs, rhs))))
+        out.append((*subbed, *(_apply(x, exact) for x in (lhs, rhs)), sub))
     return out
 
 

@@ -50,11 +50,23 @@ def _small_witness(entries, plan, seed):
     for _ in range(300):
         pt = in_range(plan, {p: rng.choice(small) for p in plan.params})
         try:
-            if any(evaluate(e, plan, pt) != 0 for e in entries):
+            if any(evaluate(e, plan, pt) != 0 for e in entries) and _consistent(entries,
+                                                                                plan, pt):
                 return pt
         except (ZeroDivisionError, Unsupported):
             continue
     return None
+
+
+def _consistent(entries, plan, pt) -> bool:
+    """Whether the point is still a counterexample once each bare angle takes its own
+    value ``2M atan(tau)`` (the zero test treats a bare angle as a variable of its own, so
+    ``theta = acos(cos theta)`` is non-zero at ``theta = 1/2, tau = 0``, where the angle is
+    0 and both sides vanish): the point shown must be one where the sides differ."""
+    if not any(a in plan.angles for a in plan.bare):
+        return True
+    vals = [_exact_value(e, plan, pt) for e in entries]
+    return any(abs(float(sp.N(v, 30))) > 1e-12 for v in vals)
 
 
 def in_range(plan, pt: dict) -> dict:
@@ -75,7 +87,10 @@ def _exact_value(x, plan, pt):
     bare = {a: 2 * plan.angles[a][1] * sp.atan(sp.Rational(pt[plan.angles[a][0]]))
             for a in plan.bare if a in plan.angles}
     bare.update({a: sp.Rational(pt[s]) for a, s in plan.bare.items() if a not in bare})
-    spt = {k: sp.Rational(v.numerator, v.denominator) for k, v in pt.items()}
+    # a bare angle is its own variable in the zero test (independent of its tangent);
+    # the values shown are the consistent ones, 2M atan(tau), as the balls use (issue 28)
+    own = {plan.bare[a] for a in bare if a in plan.angles}
+    spt = {k: sp.Rational(v.numerator, v.denominator) for k, v in pt.items() if k not in own}
 
     def one(e):
         return evaluate(e, plan, spt, lift=lambda v: v, bare_value=bare)
