@@ -24,8 +24,9 @@ _COMMAND = re.compile(r"\\[a-zA-Z]+")
 
 def raw_latex(page: str) -> list[str]:
     """Backslash commands in the page's text (outside tags, styles and scripts): LaTeX a
-    reader would see as source."""
-    body = re.sub(r"<(style|script)\b.*?</\1>", " ", page, flags=re.S)
+    reader would see as source. Code spans are left out: there LaTeX is what a reader types
+    (the glossary's ``--let '\\mathbf{Q}: rotation'``)."""
+    body = re.sub(r"<(style|script|code)\b.*?</\1>", " ", page, flags=re.S)
     text = html.unescape(re.sub(r"<[^>]+>", " ", body))
     return _COMMAND.findall(text)
 
