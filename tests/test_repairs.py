@@ -47,7 +47,8 @@ def _kinds() -> dict:
 #: the quickest slip of each kind runs by default, the other two in the slow suite
 QUICK = {"slip:flip-2", "slip:drop-2", "slip:insert-2", "slip:scale-1", "slip:coef-1",
          "slip:transpose-2", "slip:untranspose-1", "slip:every-2", "slip:swap-3",
-         "slip:reverse-2", "slip:sincos-1", "slip:replace-3", "slip:every-symbol-2",
+         "slip:reverse-2", "slip:sincos-1", "slip:one-minus-1", "slip:replace-3",
+         "slip:every-symbol-2",
          "slip:factor-3"}
 
 

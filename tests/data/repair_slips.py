@@ -115,6 +115,12 @@ _slip("reverse-3", "reverse-product", [(Qd.T * Qm, Qm * W.T * Qm.T)],
 _slip("sincos-1", "sin-cos", [(trace(Q), 1 + 2 * s)], [(trace(Q), 1 + 2 * c)], ROT)
 _slip("sincos-2", "sin-cos", [(vect(Q), c * e_)], [(vect(Q), s * e_)], ROT)
 _slip("sincos-3", "sin-cos", [(Q, I3 + c * E + (1 - c) * E**2)], [(Q, ROD)], ROT)
+# one-minus: cos where 1 - cos belongs, and back (sympy distributes a number over a sum,
+# so the 1 - x stands beside a symbol: (1 - sin φ) e, not 2 (1 - cos φ))
+_slip("one-minus-1", "one-minus", [(Q, I3 + s * E + c * E**2)], [(Q, ROD)], ROT)
+_slip("one-minus-2", "one-minus", [(vect(Q), (1 - s) * e_)], [(vect(Q), s * e_)], ROT)
+_slip("one-minus-3", "one-minus", [((Q + Q.T) / 2, I3 + c * E**2)],
+      [((Q + Q.T) / 2, I3 + (1 - c) * E**2)], ROT)
 # replace-symbol: one occurrence
 _slip("replace-1", "replace-symbol", [(Q * e_, a_)], [(Q * e_, e_)], ROT_A)
 _slip("replace-2", "replace-symbol",

@@ -37,7 +37,7 @@ def describe(e) -> str:
         return f"swap {_t(w[2])} and {_t(w[3])} in {_t(w[1])}"
     if kind == "reverse":
         return f"reverse the product {_t(w[1])}"
-    if kind == "sincos":
+    if kind in ("sincos", "oneminus"):
         return f"{_t(w[1])} → {_t(w[2])}"
     if kind == "replace":
         return f"replace {_t(w[1])} by {_t(w[2])} (one occurrence)"

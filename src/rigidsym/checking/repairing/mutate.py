@@ -20,6 +20,7 @@ transpose-every transpose every occurrence of one matrix symbol
 swap-factors   swap two adjacent factors of a matrix product
 reverse-product reverse a matrix product of three or more factors
 sin-cos        ``sin ↔ cos`` of one occurrence
+one-minus      ``cos θ ↔ 1 - cos θ`` (or ``sin``) of one occurrence (Rodrigues' versine)
 replace-symbol replace one occurrence of a symbol by another of the same shape that occurs
                in the statement or is a key of its model (``N`` for ``Ñ``, ``θ`` for ``φ``)
 replace-every  the same for every occurrence of the symbol
@@ -49,10 +50,10 @@ __all__ = ["KINDS", "MUTATION_KINDS", "VOCABULARY_VERSION", "Edit", "Pools", "po
            "single_edits", "compatible", "apply_edits", "describe", "mutants"]
 
 #: bumped whenever the vocabulary or its order changes (it joins the verdict cache's key)
-VOCABULARY_VERSION = 2  # 2: the found repairs in a reader's order (issue 28 item 4)
+VOCABULARY_VERSION = 3  # 2: a reader's order (issue 28 item 4); 3: one-minus (issue 29)
 KINDS = ("flip-sign", "drop-term", "insert-term", "scale-term", "coefficient", "transpose",
          "drop-transpose", "transpose-every", "swap-factors", "reverse-product", "sin-cos",
-         "replace-symbol", "replace-every", "multiply-factor")
+         "one-minus", "replace-symbol", "replace-every", "multiply-factor")
 #: the kinds of the mutation test (issue 21)
 MUTATION_KINDS = ("flip-sign", "coefficient", "drop-transpose", "sin-cos", "drop-term")
 _RANK = {k: i for i, k in enumerate(KINDS)}
@@ -75,8 +76,7 @@ class Change:
 
 @dataclass(frozen=True)
 class Edit:
-    """One edit: its kind, the nodes it changes, and a description (``what``: the
-    subterms in it, printed lazily by :func:`describe`)."""
+    """One edit: kind, changed nodes, description (``what``, printed by :func:`describe`)."""
 
     kind: str
     changes: tuple
@@ -246,6 +246,8 @@ def _leaf_edits(side, root, pl: Pools, kinds) -> list[Edit]:
             other = sp.cos if isinstance(x, sp.sin) else sp.sin
             out.append(_edit("sin-cos", side, p, lambda x, m, o=other: m(o(x.args[0])),
                              ("sincos", x, other(x.args[0]))))
+        if "one-minus" in kinds:
+            out += _one_minus(side, p, x)
         if "replace-symbol" in kinds and (isinstance(x, sp.MatrixSymbol) or
                                           _is_scalar_atom(x)):
             trig = _in_trig(root, p)
@@ -255,6 +257,20 @@ def _leaf_edits(side, root, pl: Pools, kinds) -> list[Edit]:
         if isinstance(x, sp.MatMul) and kinds & {"swap-factors", "reverse-product"}:
             out += _product_edits(side, p, x, kinds)
     return out
+
+
+def _one_minus(side, p, x) -> list[Edit]:
+    """``cos θ → 1 - cos θ`` and back (or ``sin``): what a reader slips as one edit."""
+    if isinstance(x, sp.sin | sp.cos):
+        new = 1 - x
+    elif isinstance(x, sp.Add) and len(x.args) == 2 and sp.S.One in x.args:
+        rest = x.args[0] if x.args[1] == 1 else x.args[1]
+        if not (rest.could_extract_minus_sign() and isinstance(-rest, sp.sin | sp.cos)):
+            return []
+        new = -rest
+    else:
+        return []
+    return [_edit("one-minus", side, p, lambda x, m, n=new: m(n), ("oneminus", x, new))]
 
 
 def _product_edits(side, p, x, kinds) -> list[Edit]:
