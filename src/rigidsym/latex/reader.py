@@ -30,7 +30,7 @@ def parse_latex(latex: str, section: str | None = "*", overrides: dict | None = 
             conversion's slip in (3.77b-d), (3.97a-c)) as a block row.
         reader: a reader's LaTeX (``rigidsym check --latex``): ``[x]`` of one 3- or
             6-vector symbol or product is its hat, a plain ``I`` no override declares is the
-            identity, an identity is sized by its neighbours (:mod:`rigidsym.latex.vocab`).
+            identity, an identity is sized by its neighbours (``rigidsym.latex.vocab``).
 
     Returns:
         A :class:`Parsed`.
