@@ -137,6 +137,7 @@ def test_I_is_the_identity_only_when_no_let_declares_it():
     assert _verdict(r"I^T = I", None) == "verified"
     assert _verdict(r"I^T = I", ["I: matrix"]) == "does-not-hold"
     assert _verdict(r"\mathrm{Ad}_T \mathrm{Ad}_{T^{-1}} = I", ["T: transform"]) == "verified"
+    assert _verdict(r"I = \mathrm{Ad}_{T^{-1}} \mathrm{Ad}_T", ["T: transform"]) == "verified"
 
 
 # ------------------------------------------------------------------ bad input
@@ -154,6 +155,7 @@ def test_an_exponent_of_an_undeclared_vector_names_it():
     (r"y = \sin^{-1} x", r"\arccos"),
     (r"\mathbf{R} = \log \mathbf{x}", "3x3 rotation"),
     (r"\mathbf{y} = \mathrm{Ad}_{\mathbf{x}} \mathbf{x}", "4x4 transform"),
+    (r"\frac{d\mathbf{R}}{dt} = \mathbf{O}", r"\dot{X}"),  # kinds are not functions of time
 ])
 def test_bad_vocabulary_is_named(latex, words):
     with pytest.raises(LatexError) as exc:

@@ -42,9 +42,8 @@ _TIME = sp.Symbol("t", real=True)  # the plain letter t: time, the argument of p
 
 
 class _Build(VocabRules, lark.Transformer):
-    """Tree -> sympy, in the declaration vocabulary (see the module docstring); a reader's
-    LaTeX (``reader``) also reads ``[x]`` of a vector as its hat and ``I`` as the identity
-    (:mod:`rigidsym.latex.vocab`)."""
+    """Tree -> sympy, in the declaration vocabulary (module docstring); ``reader``: a
+    reader's LaTeX, ``[x]`` of a vector its hat, ``I`` the identity (``latex/vocab.py``)."""
 
     def __init__(self, section: str, overrides: dict, block_rows: bool, reader: bool = False):
         super().__init__()
@@ -134,7 +133,8 @@ class _Build(VocabRules, lark.Transformer):
             return _GlyphKey(key, base, rest, accent, sp.ZeroMatrix(rows, cols))
         if kind == "plain" and base[1] == "t" and not rest and not accent:
             return _GlyphKey(key, base, rest, accent, _TIME)
-        if key == "I" and self.reader and key not in self.overrides:
+        if key == "I" and self.reader and key not in self.overrides and (
+                self.section is None or lookup(key, self.section) is None):
             self._note("I: the identity (no --let declares I), sized by its neighbours")
             return _GlyphKey(key, base, rest, accent, sp.Identity(3))
         return _GlyphKey(key, base, rest, accent, self._symbol(key, base))

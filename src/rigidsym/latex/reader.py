@@ -59,6 +59,8 @@ def parse_latex(latex: str, section: str | None = "*", overrides: dict | None = 
                       and not isinstance(e, sp.ZeroMatrix)), None)
         exprs = [sp.ZeroMatrix(*sized) if isinstance(e, sp.ZeroMatrix) and sized else e
                  for e in exprs]  # "= \mathbf{0}": the zero of the other side's shape
+        sized = next((_shape(e) for e in exprs if _shape(e) and not isinstance(
+            e, sp.ZeroMatrix | sp.Identity)), sized) if reader else sized
         if reader and sized and sized[0] == sized[1]:  # "= I": the identity of that size
             exprs = [sp.Identity(sized[0]) if isinstance(e, sp.Identity) else e
                      for e in exprs]
