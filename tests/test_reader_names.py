@@ -34,15 +34,14 @@ FORBIDDEN = [
     (re.compile(r"\b[A-Za-z]+_(?:dot|ddot|tilde|hat|bar|par|perp|inf)\b"),
      "an accent or tag spelled out"),
     (re.compile(r"\b[A-Za-z]+(?:dot|ddot|tilde) \. "), "an ASCII dot product"),
+    (re.compile(r"[₀-₉α-ωΑ-Ω]_[a-z]{3,}\b"), "a word subscript on a book glyph (d₀_axial)"),
 ]
 #: an underscore name whose subscript is a word: not book notation unless it is code
 _WORD_SUBSCRIPT = re.compile(r"\b[A-Za-z][A-Za-z0-9]*(?:_[A-Za-z0-9]+)*_[a-z][a-z0-9]{2,}\b")
-#: names the chapter's declarations give to tell apart two uses of one book letter (the
-#: book prints both as A, b, p, ...): a renaming in the derivations, not a printer's slip;
-#: listed so that no new one appears unnoticed (issue 28's report, "left")
-DISAMBIGUATED = {"A_isa", "b_isa", "r_isa", "A_screw", "b_screw", "d0_vec", "p_wrench",
-                 "p_wrench_turn", "pitch_turn", "w_axis", "A_amp", "AtA_inv", "p_star",
-                 "alpha_AtA", "beta_AtA"}
+#: none left: the names the chapter's declarations give to tell apart two uses of one
+#: book letter (A_isa, p_wrench, ...) print as the book prints them
+#: (rigidsym.printing.names._BOOK_NAMES); a new one fails here
+DISAMBIGUATED: set[str] = set()
 
 
 def _code_names() -> set[str]:

@@ -28,6 +28,20 @@ _SUB_LATEX = {"par": r"\parallel", "perp": r"\perp", "inf": r"\infty"}
 _PRIME_TAGS = {"prime": 1, "alt": 1, **{f"{k}prime": k for k in range(2, 4)}}
 _SUBSCRIPT_DIGITS = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
 _SUPERSCRIPT = str.maketrans("0123456789-", "⁰¹²³⁴⁵⁶⁷⁸⁹⁻")
+#: names the chapter's declarations give to tell apart two uses of one book letter, or
+#: a model's free atoms, printed as the book prints them (issue 28 item 3): the wrench's
+#: pitch is p'' (3.109) in both its forms, the A and b of (3.11) and of (3.66) are both A
+#: and b; the name is code, what a reader sees is the book's glyph. The pitch of (3.7)
+#: stays "pitch" in both forms: its p would read as the point p beside it in (3.71)'s
+#: screw array s = [e; p e + P e]
+_BOOK_NAMES = {"pitch_turn": "pitch", "p_wrench": "p''", "p_wrench_turn": "p''",
+               "A_isa": "A", "b_isa": "b", "r_isa": "r", "A_screw": "A", "b_screw": "b",
+               "A_amp": "A", "alpha_AtA": "alpha", "beta_AtA": "beta",
+               "lambda_mc": "lambda", "w_axis": "w", "d0_axial": "d_0", "d0_vec": "d_0"}
+#: names printed as a compound of the book's glyphs: (Unicode text, LaTeX, LaTeX in bold)
+_BOOK_COMPOUNDS = {"p_star": ("p*", "p^{*}", r"\mathbf{p}^{*}"),
+                   "AtA_inv": ("(AᵀA)⁻¹", r"(\mathbf{A}^T\mathbf{A})^{-1}",
+                               r"(\mathbf{A}^T\mathbf{A})^{-1}")}
 #: a declaration module's private prefix on atom names (``s34_adot``, ``sec342_vdot``)
 _PRIVATE = re.compile(r"^(?:s|sec|ex)\d{2,}_")
 
@@ -82,7 +96,9 @@ def book_text(name: str) -> str:
     """
     if name.startswith("norm_"):
         return f"‖{book_text(name[5:])}‖"
-    base, accents, subs, primes = _parse(name)
+    if name in _BOOK_COMPOUNDS:
+        return _BOOK_COMPOUNDS[name][0]
+    base, accents, subs, primes = _parse(_BOOK_NAMES.get(name, name))
     out = _GREEK.get(base, base)
     if len(out) == 1:
         out += "".join(_COMBINING[a] for a in accents)
@@ -116,7 +132,9 @@ def book_latex(name: str, bold: bool = False) -> str:
     """
     if name.startswith("norm_"):
         return rf"\|{book_latex(name[5:], bold=True)}\|"
-    base, accents, subs, primes = _parse(name)
+    if name in _BOOK_COMPOUNDS:
+        return _BOOK_COMPOUNDS[name][2 if bold else 1]
+    base, accents, subs, primes = _parse(_BOOK_NAMES.get(name, name))
     if base in _GREEK:
         core = "\\" + ("lambda" if base == "lam" else base)
         core = rf"\boldsymbol{{{core}}}" if bold else core
