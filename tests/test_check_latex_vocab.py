@@ -161,3 +161,13 @@ def test_bad_vocabulary_is_named(latex, words):
     with pytest.raises(LatexError) as exc:
         rigidsym.check_latex(latex)
     assert words in str(exc.value)
+
+
+def test_the_command_line_reads_modern_robotics_and_exits_by_verdict(capsys):
+    from rigidsym.cli import main
+
+    code = main(["check", "--latex", RODRIGUES, "--let", W])
+    out = capsys.readouterr().out
+    assert code == 0 and "Verdict: verified" in out and "read as: exp(" in out
+    code = main(["check", "--latex", r"y = \operatorname{foo}(x)"])
+    assert code == 2 and "'foo'" in capsys.readouterr().err
