@@ -20,7 +20,7 @@ EXAMPLES = r"""  rigidsym check --latex '\mathbf{Q}^T\mathbf{Q} = \mathbf{1}' \
 
 --let NAME: KIND   KIND one of: unit vector, unit 4-vector, rotation, angle, angle in [0, pi],
                    scalar, vector, n-vector (6-vector), matrix, mxn matrix (4x4 matrix),
-                   symmetric matrix, twist, wrench, transform
+                   symmetric matrix, twist, wrench, transform, so(3), se(3)
 --let NAME = LATEX a first-principles model in the same notation
 exit codes: 0 holds (verified or definition), 1 does not hold, 3 undecided, 2 bad input"""
 

@@ -127,7 +127,7 @@ class _Reader:
     def parse(self, text: str, what: str):
         for _ in range(3):
             try:
-                p = parse_latex(text, self.book, self.over)
+                p = parse_latex(text, self.book, self.over, reader=True)
             except LatexError as exc:
                 extra = self._extra(exc.glyphs) if exc.construct == "shapes" else {}
                 if extra:

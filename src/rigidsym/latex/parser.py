@@ -29,28 +29,26 @@ from rigidsym.latex.shapes import (
     _fit_blocks,
     _product,
     _shape,
+    _size_identity,
     _words,
 )
 from rigidsym.latex.table import Glyph, lookup
+from rigidsym.latex.vocab import VocabRules
 
 __all__ = ["LatexError", "Relation", "Parsed", "parser"]
-
-
-# --------------------------------------------------------------------------- lexing
-
-
-# --------------------------------------------------------------------------- shapes
 
 
 _TIME = sp.Symbol("t", real=True)  # the plain letter t: time, the argument of p(t)
 
 
-class _Build(lark.Transformer):
-    """Tree -> sympy, in the declaration vocabulary (see the module docstring)."""
+class _Build(VocabRules, lark.Transformer):
+    """Tree -> sympy, in the declaration vocabulary (module docstring); ``reader``: a
+    reader's LaTeX, ``[x]`` of a vector its hat, ``I`` the identity (``latex/vocab.py``)."""
 
-    def __init__(self, section: str, overrides: dict, block_rows: bool):
+    def __init__(self, section: str, overrides: dict, block_rows: bool, reader: bool = False):
         super().__init__()
         self.section, self.overrides, self.block_rows = section, overrides, block_rows
+        self.reader = reader
         self.readings: list[str] = []
         self.glyphs: dict[str, Glyph] = {}
         self.made: dict = {}  # result -> (how, parts): to re-read a bracket as a block row
@@ -84,7 +82,8 @@ class _Build(lark.Transformer):
         kind, letter = base
         core = {"bold": f"\\mathbf{{{letter}}}" if not letter.startswith("\\")
                 else f"\\boldsymbol{{{letter}}}",
-                "plain": letter, "zero": "\\mathbf{0}", "one": "\\mathbf{1}"}[kind]
+                "plain": letter, "zero": "\\mathbf{0}", "one": "\\mathbf{1}",
+                "cal": f"\\mathcal{{{letter}}}"}[kind]
         if accent:
             core = f"{accent}{{{core}}}"
         for r in rest:
@@ -134,6 +133,10 @@ class _Build(lark.Transformer):
             return _GlyphKey(key, base, rest, accent, sp.ZeroMatrix(rows, cols))
         if kind == "plain" and base[1] == "t" and not rest and not accent:
             return _GlyphKey(key, base, rest, accent, _TIME)
+        if key == "I" and self.reader and key not in self.overrides and (
+                self.section is None or lookup(key, self.section) is None):
+            self._note("I: the identity (no --let declares I), sized by its neighbours")
+            return _GlyphKey(key, base, rest, accent, sp.Identity(3))
         return _GlyphKey(key, base, rest, accent, self._symbol(key, base))
 
     def _symbol(self, key, base):
@@ -161,12 +164,15 @@ class _Build(lark.Transformer):
         x = items[0]
         if self.block_rows:
             return self._block_row(x)
-        return _value(x)
+        return self.hat_bracket(x) if self.reader else _value(x)
 
     def sized(self, items):
         x = items[1]
         if self.block_rows and "[" in str(items[0]):
             return self._block_row(x)
+        return self.hat_bracket(x) if self.reader and "[" in str(items[0]) else _value(x)
+
+    def _val(self, x):
         return _value(x)
 
     def _block_row(self, x):
@@ -205,6 +211,8 @@ class _Build(lark.Transformer):
         sa, sb = _shape(a), _shape(b)
         if sa != sb and self.block_rows and sa and sb:
             return _Pending(a, b, op)
+        if self.reader:
+            a, b = _size_identity(a, b, 0)
         a, b = _fit(a, b, op)
         r = a + b if op == "add" else a - b
         self.made[r] = (op, (a, b))
@@ -223,6 +231,8 @@ class _Build(lark.Transformer):
         if b is _TIME and _shape(a) is not None or (b is _TIME and isinstance(a, sp.Symbol)):
             self.readings.append("(t): a function of time")
             return a
+        if self.reader:
+            a, b = _size_identity(a, b, 1)
         r = _product(a, b)
         self.made[r] = ("mul", (a, b))
         return r
@@ -286,6 +296,8 @@ class _Build(lark.Transformer):
             return getattr(sp, fn)(x)
         if fn == "arctan":
             return sp.atan(x)
+        if fn == "arccos":
+            return sp.acos(x)
         if fn == "det":
             return Det(x)
         if fn == "tr":
@@ -385,5 +397,4 @@ def _value(x):
         raise LatexError(f"a sum of {_words(x.a)} and {_words(x.b)}: shapes do not fit",
                          "shapes")
     return x
-
 

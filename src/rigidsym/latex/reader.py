@@ -3,6 +3,8 @@
 
 from __future__ import annotations
 
+import re
+
 import lark
 import sympy as sp
 
@@ -14,7 +16,7 @@ __all__ = ["parse_latex"]
 
 
 def parse_latex(latex: str, section: str | None = "*", overrides: dict | None = None,
-                block_rows: bool = False) -> Parsed:
+                block_rows: bool = False, reader: bool = False) -> Parsed:
     """Parse a LaTeX statement into relations of book symbols.
 
     Args:
@@ -26,6 +28,9 @@ def parse_latex(latex: str, section: str | None = "*", overrides: dict | None = 
         overrides: glyph rows by LaTeX key that take precedence (a per-id note's).
         block_rows: read a bracket ``[A v]`` whose column separator was lost (the
             conversion's slip in (3.77b-d), (3.97a-c)) as a block row.
+        reader: a reader's LaTeX (``rigidsym check --latex``): ``[x]`` of one 3- or
+            6-vector symbol or product is its hat, a plain ``I`` no override declares is the
+            identity, an identity is sized by its neighbours (``rigidsym.latex.vocab``).
 
     Returns:
         A :class:`Parsed`.
@@ -36,28 +41,8 @@ def parse_latex(latex: str, section: str | None = "*", overrides: dict | None = 
     """
     if not isinstance(latex, str) or not latex.strip():
         raise LatexError(f"latex: expected a non-empty LaTeX string, got {latex!r}")
-    try:
-        tree = parser().parse(latex)
-    except lark.UnexpectedCharacters as exc:
-        pos = exc.pos_in_stream
-        rest = latex[pos:]
-        if rest.startswith("\\"):
-            macro = "\\" + "".join(ch for ch in rest[1:].split("{")[0].split(" ")[0]
-                                   if ch.isalpha())
-            raise LatexError(f"unknown macro {macro} at position {pos}:\n"
-                             f"{_caret(latex, pos)}", f"unknown macro {macro}") from None
-        raise LatexError(f"unexpected {rest[:1]!r} at position {pos}:\n{_caret(latex, pos)}",
-                         "syntax") from None
-    except lark.UnexpectedToken as exc:
-        pos = exc.token.start_pos if exc.token.start_pos is not None else len(latex)
-        expected = ", ".join(sorted(exc.expected)[:8])
-        what = "end of input" if exc.token.type == "$END" else repr(str(exc.token))
-        raise LatexError(f"unexpected {what} at position {pos}:\n{_caret(latex, pos)}\n"
-                         f"  expected one of: {expected}", "syntax") from None
-    except lark.UnexpectedEOF as exc:
-        raise LatexError(f"unexpected end of input; expected one of: "
-                         f"{', '.join(sorted(exc.expected)[:8])}", "syntax") from None
-    build = _Build(section, overrides or {}, block_rows)
+    tree = _tree(latex)
+    build = _Build(section, overrides or {}, block_rows, reader)
     build.braces = []
     try:
         stmts = build.transform(tree)
@@ -74,6 +59,11 @@ def parse_latex(latex: str, section: str | None = "*", overrides: dict | None = 
                       and not isinstance(e, sp.ZeroMatrix)), None)
         exprs = [sp.ZeroMatrix(*sized) if isinstance(e, sp.ZeroMatrix) and sized else e
                  for e in exprs]  # "= \mathbf{0}": the zero of the other side's shape
+        sized = next((_shape(e) for e in exprs if _shape(e) and not isinstance(
+            e, sp.ZeroMatrix | sp.Identity)), sized) if reader else sized
+        if reader and sized and sized[0] == sized[1]:  # "= I": the identity of that size
+            exprs = [sp.Identity(sized[0]) if isinstance(e, sp.Identity) else e
+                     for e in exprs]
         out.chains.append(exprs)
         out.ops.append(ops)
     for label, body in build.braces:  # an underbrace whose label is a symbol: a member
@@ -85,3 +75,33 @@ def parse_latex(latex: str, section: str | None = "*", overrides: dict | None = 
         for k in range(len(exprs) - 1):
             out.relations.append(Relation(exprs[k], exprs[k + 1], out.ops[c][k], c, k))
     return out
+
+
+def _tree(latex: str):
+    """lark's parse tree, or a :class:`LatexError` that says where and what was expected."""
+    try:
+        return parser().parse(latex)
+    except lark.UnexpectedCharacters as exc:
+        pos = exc.pos_in_stream
+        rest = latex[pos:]
+        named = re.match(r"\\(operatorname|mathrm|text)\s*\{\s*([^}]*?)\s*\}", rest)
+        if named:
+            raise LatexError(f"unknown operator {named.group(2)!r} "
+                             f"(\\{named.group(1)}{{{named.group(2)}}}) at position {pos}:\n"
+                             f"{_caret(latex, pos)}", f"unknown macro {named.group(0)}") from None
+        if rest.startswith("\\"):
+            macro = "\\" + "".join(ch for ch in rest[1:].split("{")[0].split(" ")[0]
+                                   if ch.isalpha())
+            raise LatexError(f"unknown macro {macro} at position {pos}:\n"
+                             f"{_caret(latex, pos)}", f"unknown macro {macro}") from None
+        raise LatexError(f"unexpected {rest[:1]!r} at position {pos}:\n{_caret(latex, pos)}",
+                         "syntax") from None
+    except lark.UnexpectedToken as exc:
+        pos = exc.token.start_pos if exc.token.start_pos is not None else len(latex)
+        expected = ", ".join(sorted(exc.expected)[:8])
+        what = "end of input" if exc.token.type == "$END" else repr(str(exc.token))
+        raise LatexError(f"unexpected {what} at position {pos}:\n{_caret(latex, pos)}\n"
+                         f"  expected one of: {expected}", "syntax") from None
+    except lark.UnexpectedEOF as exc:
+        raise LatexError(f"unexpected end of input; expected one of: "
+                         f"{', '.join(sorted(exc.expected)[:8])}", "syntax") from None

@@ -132,3 +132,16 @@ def _fit_blocks(cells: list[list]) -> list[list]:
 
 def _caret(text: str, pos: int) -> str:
     return f"  {text}\n  {' ' * pos}^"
+
+
+def _size_identity(a, b, product: int):
+    """A reader's unsized identity (``I``, ``\\mathbf{1}``) sized by its neighbour: in a
+    sum as the other term, in a product as the other factor's inner dimension."""
+    sa, sb = _shape(a), _shape(b)
+    if sa is None or sb is None or sa == sb:
+        return a, b
+    if isinstance(a, sp.Identity) and (product or sb[0] == sb[1]):
+        a = sp.Identity(sb[0])
+    elif isinstance(b, sp.Identity) and (product or sa[0] == sa[1]):
+        b = sp.Identity(sa[1])
+    return a, b

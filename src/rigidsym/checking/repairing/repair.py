@@ -127,10 +127,14 @@ class _Ctx:
 # --------------------------------------------------------------------------- book symbols
 def book_difference(lhs, rhs) -> list | None:
     """``lhs - rhs`` entry by entry, expanded, with the book symbols left unsubstituted
-    (``None`` when the shapes differ)."""
+    (``None`` when the shapes differ, or when a word has no value on free book symbols:
+    ``expm`` of an axis not known to be unit)."""
     if shape_of(lhs) != shape_of(rhs):
         return None
-    a, b = explicit(lhs, {}), explicit(rhs, {})
+    try:
+        a, b = explicit(lhs, {}), explicit(rhs, {})
+    except (ValueError, NotImplementedError):
+        return None
     return [sp.expand(x - y) for x, y in zip(_entries(a), _entries(b), strict=True)]
 
 

@@ -1,0 +1,173 @@
+"""The vocabulary of rigid motions in a reader's LaTeX (issue 29 on issue 28's words):
+Modern Robotics' and Murray-Li-Sastry's spellings, read onto ``rigidsym.declare``'s words
+and decided by the exact engine through ``rigidsym.check_latex``."""
+
+from __future__ import annotations
+
+import pytest
+import sympy as sp
+
+import rigidsym
+from rigidsym.algebra.lie import AdT, AdV, Expm, Hat, Logm
+from rigidsym.algebra.operators import Cpm, Diff
+from rigidsym.checking.deciding import registry
+from rigidsym.latex import LatexError, parse_latex
+from rigidsym.latex.table import Glyph
+
+W = r"\hat\omega: unit vector; \theta: angle"
+W_PI = r"\hat\omega: unit vector; \theta: angle in [0, pi]"
+R_EXP = r"R = e^{[\hat\omega]\theta}"
+RODRIGUES = r"e^{[\hat\omega]\theta} = I + \sin\theta[\hat\omega] + (1-\cos\theta)[\hat\omega]^2"
+LOG_TRACE = r"\theta = \arccos\left(\frac{\operatorname{tr} R - 1}{2}\right)"
+
+
+@pytest.fixture(autouse=True)
+def _forget_latex_ids():
+    yield
+    registry.forget_module("rigidsym.latex.letting")
+
+
+def _verdict(latex, let):
+    return rigidsym.check_latex(latex, let=let).verdict
+
+
+# ------------------------------------------------------------------ the acceptance identities
+def test_rodrigues_as_modern_robotics_writes_it_is_verified():
+    r = rigidsym.check_latex(RODRIGUES, let=[W])
+    assert r.verdict == "verified"
+    assert any("I: the identity" in n for n in r.model)  # the reading says how I was read
+
+
+def test_a_sign_slip_of_rodrigues_does_not_hold_with_an_exact_point_and_a_repair():
+    r = rigidsym.check_latex(RODRIGUES.replace(r"+ \sin", r"- \sin"), let=[W])
+    assert r.verdict == "does-not-hold"
+    point = r.counterexample["point"]
+    assert point and all(not sp.sympify(v).atoms(sp.Float) for v in point.values())
+    assert any("flip the sign" in "; ".join(x["edits"]) for x in r.repairs), r.repairs
+
+
+@pytest.mark.parametrize("angle, verdict", [
+    ("angle in [0, pi]", "verified"),      # MR's theta of the logarithm
+    ("angle", "does-not-hold"),            # on (-pi, pi) acos gives |theta| (issue 28's probe)
+])
+def test_the_log_trace_formula_holds_on_zero_to_pi_only(angle, verdict):
+    let = [rf"\hat\omega: unit vector; \theta: {angle}", R_EXP]
+    assert _verdict(LOG_TRACE, let) == verdict
+    assert _verdict(LOG_TRACE.replace(r"\arccos", r"\cos^{-1}"), let) == verdict
+
+
+@pytest.mark.parametrize("latex, let, verdict", [
+    (r"R[\omega]R^T = [R\omega]", r"R: rotation; \omega: vector", "verified"),
+    (r"R[\omega]R^T = [R^T\omega]", r"R: rotation; \omega: vector", "does-not-hold"),
+    (r"\mathrm{Ad}_{T_1 T_2} = \mathrm{Ad}_{T_1}\mathrm{Ad}_{T_2}",
+     "T_1: transform; T_2: transform", "verified"),
+    pytest.param(r"\mathrm{Ad}_{T_1 T_2} = \mathrm{Ad}_{T_2}\mathrm{Ad}_{T_1}",
+                 "T_1: transform; T_2: transform", "does-not-hold", marks=pytest.mark.slow),
+    (r"T [\mathcal{V}] T^{-1} = [\mathrm{Ad}_T \mathcal{V}]", r"T: transform; \mathcal{V}: twist",
+     "verified"),
+    (r"[\mathrm{ad}_{\mathcal{V}}] \mathcal{W} = -[\mathrm{ad}_{\mathcal{W}}] \mathcal{V}",
+     r"\mathcal{V}: twist; \mathcal{W}: twist", "verified"),
+    (r"\mathrm{ad}_{\mathcal{V}} \mathcal{W} = \mathrm{ad}_{\mathcal{W}} \mathcal{V}",
+     r"\mathcal{V}: twist; \mathcal{W}: twist", "does-not-hold"),
+    (r"\theta = \operatorname{atan2}(\sin\theta, \cos\theta)", r"\theta: angle", "verified"),
+    (r"X^T = -X", "X: so(3)", "verified"),
+    (r"X^T = X", "X: so(3)", "does-not-hold"),
+    (r"\mathrm{tr}(X) = 0", "X: se(3)", "verified"),
+    (r"e^{-[\hat\omega]\theta} = \left(e^{[\hat\omega]\theta}\right)^T", W, "verified"),
+])
+def test_modern_robotics_identities_and_their_slips(latex, let, verdict):
+    assert _verdict(latex, [let]) == verdict
+
+
+@pytest.mark.parametrize("latex", [
+    r"\frac{dR}{d\theta} = [\hat\omega] R",
+    r"\frac{d}{d\theta} R = [\hat\omega] R",
+    r"\frac{\partial R}{\partial\theta} = [\hat\omega] R",
+])
+def test_a_derivative_in_the_angle_is_the_vocabularys_diff(latex):
+    assert _verdict(latex, [W, R_EXP]) == "verified"
+    assert _verdict(latex.replace(r"= [\hat", r"= -[\hat"), [W, R_EXP]) == "does-not-hold"
+
+
+@pytest.mark.parametrize("sign, verdict", [
+    ("", "verified"), pytest.param("-", "does-not-hold", marks=pytest.mark.slow)])
+def test_the_principal_log_of_rodrigues(sign, verdict):
+    let = [W_PI, r"R = \exp\left([\hat\omega]\theta\right)"]
+    assert _verdict(rf"\log R = {sign}[\hat\omega]\theta", let) == verdict
+
+
+# ------------------------------------------------------------------ how each spelling reads
+def _read(latex, **shapes):
+    over = {k: Glyph(k, "*", n, s, "let", "") for k, (n, s) in shapes.items()}
+    p = parse_latex(latex, None, over, reader=True)
+    return p.chains[0][1]
+
+
+def test_each_spelling_reads_as_its_word():
+    w = {r"\hat{\omega}": ("w", (3, 1))}
+    assert isinstance(_read(r"X = e^{[\hat\omega]\theta}", **w), Expm)
+    assert isinstance(_read(r"X = \exp([\hat\omega]\theta)", **w), Expm)
+    assert isinstance(_read(r"X = \log R", R=("R", (3, 3))), Logm)
+    assert isinstance(_read(r"X = [\hat\omega]", **w), Cpm)
+    assert isinstance(_read(r"X = [\mathcal{V}]", **{r"\mathcal{V}": ("V", (6, 1))}), Hat)
+    assert isinstance(_read(r"X = \mathrm{Ad}_T", T=("T", (4, 4))), AdT)
+    dual = _read(r"X = \mathrm{ad}_{\mathcal{V}}^T", **{r"\mathcal{V}": ("V", (6, 1))})
+    assert isinstance(dual, sp.Transpose) and isinstance(dual.arg, AdV)
+    assert isinstance(_read(r"X = \frac{dR}{d\theta}", R=("R", (3, 3))), Diff)
+    assert _read(r"x = \sqrt{y}") == sp.sqrt(sp.Symbol("y", real=True))
+    assert _read(r"x = \arccos y") == sp.acos(sp.Symbol("y", real=True))
+
+
+def test_a_bracket_is_a_hat_only_around_one_vector_symbol_or_product():
+    v = {r"\mathbf{a}": ("a", (3, 1)), r"\mathbf{b}": ("b", (3, 1))}
+    assert _read(r"\mathbf{x} = [\mathbf{a} + \mathbf{b}]", **v).shape == (3, 1)  # a sum groups
+    assert _read(r"x = 2[y + z]") == 2 * sp.Symbol("y", real=True) + 2 * sp.Symbol("z", real=True)
+    # the chapter's LaTeX (reader=False) never reads a bracket as a hat
+    p = parse_latex(r"\mathbf{x} = [\mathbf{a}]", None)
+    assert p.chains[0][1] == sp.MatrixSymbol("a", 3, 1)
+
+
+def test_plain_e_before_a_power_is_the_exponential_and_other_es_are_symbols():
+    assert _verdict(r"\mathbf{e}^T\mathbf{e} = 1", [r"\mathbf{e}: unit vector"]) == "verified"
+    assert _read(r"x = e_1^2") == sp.Symbol("e_1", real=True) ** 2
+    assert _read(r"x = \frac{d}{2}") == sp.Symbol("d", real=True) / 2  # a ratio, not d/d
+
+
+def test_I_is_the_identity_only_when_no_let_declares_it():
+    assert _verdict(r"I^T = I", None) == "verified"
+    assert _verdict(r"I^T = I", ["I: matrix"]) == "does-not-hold"
+    assert _verdict(r"\mathrm{Ad}_T \mathrm{Ad}_{T^{-1}} = I", ["T: transform"]) == "verified"
+    assert _verdict(r"I = \mathrm{Ad}_{T^{-1}} \mathrm{Ad}_T", ["T: transform"]) == "verified"
+
+
+# ------------------------------------------------------------------ bad input
+def test_an_exponent_of_an_undeclared_vector_names_it():
+    with pytest.raises(LatexError) as exc:
+        rigidsym.check_latex(r"\mathbf{R} = e^{\mathbf{x}}")
+    assert r"\mathbf{x}" in str(exc.value) and "3x3" in str(exc.value)
+    with pytest.raises(LatexError, match=r"of a scalar \(x\).*scalar exponential"):
+        rigidsym.check_latex(r"y = e^{x}")
+
+
+@pytest.mark.parametrize("latex, words", [
+    (r"y = \operatorname{foo}(x)", "'foo'"),
+    (r"y = \mathrm{foo}\, x", "'foo'"),
+    (r"y = \sin^{-1} x", r"\arccos"),
+    (r"\mathbf{R} = \log \mathbf{x}", "3x3 rotation"),
+    (r"\mathbf{y} = \mathrm{Ad}_{\mathbf{x}} \mathbf{x}", "4x4 transform"),
+    (r"\frac{d\mathbf{R}}{dt} = \mathbf{O}", r"\dot{X}"),  # kinds are not functions of time
+])
+def test_bad_vocabulary_is_named(latex, words):
+    with pytest.raises(LatexError) as exc:
+        rigidsym.check_latex(latex)
+    assert words in str(exc.value)
+
+
+def test_the_command_line_reads_modern_robotics_and_exits_by_verdict(capsys):
+    from rigidsym.cli import main
+
+    code = main(["check", "--latex", RODRIGUES, "--let", W])
+    out = capsys.readouterr().out
+    assert code == 0 and "Verdict: verified" in out and "read as: exp(" in out
+    code = main(["check", "--latex", r"y = \operatorname{foo}(x)"])
+    assert code == 2 and "'foo'" in capsys.readouterr().err
