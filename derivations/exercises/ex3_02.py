@@ -98,3 +98,32 @@ def figure(s: Solution):
     segment(ax, V["4"], P, color="tab:green", linestyle=":")
     axes3d(ax, list(V.values()) + [P])
     return fig
+
+
+def given_figure(s: Solution):
+    """The given data only (the students' handout): the tetrahedron and the two unit
+    forces on their edges; the central axis and the point P are the questions."""
+    from ._draw import arrow, axes3d, edges, new_figure, point
+
+    V = {k: sp.Matrix(s.data[f"P_{k}"]) for k in "1234"}
+    fig, ax = new_figure("The tetrahedron and the two unit forces on its edges")
+    edges(ax, V, ["12", "13", "14", "23", "24", "34"], "0.55", "tetrahedron")
+    for k, v in V.items():
+        point(ax, v, "0.3", text=f"P{k}")
+    arrow(ax, V["2"], unit(V["3"] - V["2"]), "tab:red", "f_1")
+    arrow(ax, V["4"], unit(V["1"] - V["4"]), "tab:orange", "f_2")
+    axes3d(ax, list(V.values()))
+    return fig
+
+
+def random_data(rng) -> dict:
+    """A variant with readable exact numbers (an exam's draw): the regular tetrahedron on
+    alternate corners of a cube of side 2 or 4 (edge 2 sqrt(2) or 4 sqrt(2)), its vertices
+    in a random order, turned by a Cayley rotation with entries of denominator 3 and
+    shifted by small integers: rational vertices, a regular tetrahedron exactly."""
+    from ._random import cayley_small, small_vector
+
+    corners = [sp.Matrix(v) for v in ((1, 1, 1), (1, -1, -1), (-1, 1, -1), (-1, -1, 1))]
+    rng.shuffle(corners)
+    side, Q, t = rng.choice((1, 2)), cayley_small(rng, halves=False), small_vector(rng, -2, 2)
+    return {f"P_{k}": list(side * Q * v + t) for k, v in enumerate(corners, 1)}
