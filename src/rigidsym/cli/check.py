@@ -78,14 +78,18 @@ def run(args) -> int:
         rec = {**result_record(r), "read_as": reading.text, "readings": reading.notes}
         print(json.dumps(rec, indent=1, ensure_ascii=False))
         return EXIT.get(r.verdict, 3)
+    import dataclasses
+    import textwrap
+
     from rigidsym.report.show import explain, output_width
 
     width = output_width()
     st = reading.statement
     print(f"read as: {reading.text}")
-    if reading.free:
-        print(f"free (no --let declares them): {', '.join(reading.free)}")
+    for note in reading.notes:  # how it was read (free symbols too), apart from the atoms
+        print(textwrap.fill(note, width, initial_indent="  ", subsequent_indent="    "))
     print()
-    print(explain(r, {"printed": st.printed, "claim": st.claims,
-                      "corrected": st.corrected or []}, "--latex (rigidsym check)", width))
+    atoms = dataclasses.replace(r, model=[m for m in r.model if m not in reading.notes])
+    print(explain(atoms, {"printed": st.printed, "claim": st.claims,
+                          "corrected": st.corrected or []}, "--latex (rigidsym check)", width))
     return EXIT.get(r.verdict, 3)
