@@ -230,6 +230,10 @@ def test_bad_input_from_python_raises_value_errors():
         rigidsym.check_latex(r"\mathbf{a} = (", None)
     with pytest.raises(ValueError, match="let"):
         rigidsym.check_latex(r"\mathbf{a} = \mathbf{a}", 3)
+    # a misspelt kind in a dict is an error, never read as a product of letters (a model)
+    with pytest.raises(ValueError, match=r"unknown kind 'rotaton'.*'= rotaton'"):
+        rigidsym.check_latex(r"\mathbf{Q}^T\mathbf{Q} = \mathbf{1}", {r"\mathbf{Q}": "rotaton"})
+    assert rigidsym.check_latex("x = y z", {"x": "= y z"}).verdict == "verified"
 
 
 # ------------------------------------------------------------------ --json

@@ -153,7 +153,9 @@ def read_lets(let) -> list[Let]:
     Args:
         let: ``None``, one string, a list of strings (``"NAME: KIND"`` or ``"NAME =
             LATEX"``, each possibly several separated by ``"; "``), or a dict ``{NAME:
-            KIND or LATEX}`` (a value that is a KIND is a kind, anything else a model).
+            KIND or LATEX}`` (a value that is a KIND is a kind, anything else a model; a
+            word or words that are no KIND, ``"rotaton"``, are an error: write ``"= abcd"``
+            for a model that is a product of letters).
 
     Returns:
         One :class:`Let` per declaration, in order.
@@ -174,9 +176,12 @@ def read_lets(let) -> list[Let]:
                                f"{name!r}: {value!r}")
             v = value.strip()
             try:
-                kind_of(v, v)
+                kind_of(v, f"{name}: {v}")
                 items.append(f"{name}: {v}")
-            except BadInput:
+            except BadInput as exc:
+                if re.fullmatch(r"[A-Za-z]+(?:[ -][A-Za-z]+)*", v) and (" " in v or len(v) > 3):
+                    # a word that is no kind ('rotaton'), not a product of letters
+                    raise BadInput(f"{exc} (a model written in letters: '= {v}')") from None
                 items.append(f"{name} = {v.removeprefix('=').strip()}")
     elif isinstance(let, list | tuple):
         if not all(isinstance(x, str) for x in let):
