@@ -282,7 +282,7 @@ def _adot_parallel_corrected():
 
 @equation("3.57", "Axial and normal components of adot", section="3.4.1", singular=_W,
           expected="does-not-hold", cause="unknown",
-          evidence="first member a_dot . omega/||omega||^2 is a scalar for the vector a_par: "
+          evidence="first member a_dot . omega/||omega||^2 is a scalar for the vector adot_par: "
                    "the trailing factor omega is missing",
           latex=r"\dot{\mathbf{a}}_{\parallel} \equiv \dot{\mathbf{a}} \cdot \frac{\boldsymbol"
                 r"{\omega}}{\|\boldsymbol{\omega}\|^2} \equiv \frac{\boldsymbol{\omega} "
