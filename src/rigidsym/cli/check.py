@@ -57,11 +57,16 @@ def run(args) -> int:
     from rigidsym.latex import LatexError
 
     try:
+        from rigidsym._progress import Reporter
         from rigidsym.api import _check_latex
+        from rigidsym.checking.runner import verdict_words
 
         opts = repair_options(args)
-        r, reading = _check_latex(args.latex, args.let, args.book, args.module or (),
-                                  opts["repairs"], opts["repair_budget"])
+        with Reporter("rigidsym check", keep=False) as rep, \
+                rep.phase("reading and checking the LaTeX") as ph:  # no silent second
+            r, reading = _check_latex(args.latex, args.let, args.book, args.module or (),
+                                      opts["repairs"], opts["repair_budget"])
+            ph.finish(verdict_words(r))
     except LatexError as exc:
         print(f"rigidsym: error: --latex: {exc}", file=sys.stderr)
         return 2
