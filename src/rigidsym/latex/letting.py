@@ -22,6 +22,7 @@ import sympy as sp
 from rigidsym.algebra import symbols as _sym
 from rigidsym.checking.deciding.errors import BadInput
 from rigidsym.checking.deciding.registry import Rel, Statement
+from rigidsym.latex import guards
 from rigidsym.latex.lending import lent
 from rigidsym.latex.lets import KIND_WORDS, Let, kind_of, read_lets
 from rigidsym.latex.reader import parse_latex
@@ -191,6 +192,7 @@ def read_statement(latex: str, lets: list[Let], book: str | None = None,
     rd = _Reader(lets, book, lend)
     values: dict = {}  # book symbol -> value in book symbols (resolved below)
     occurs = _read_models(rd, lets, values)
+    models = {sym.name: v for sym, v in values.items()}  # the --let models, for R(\theta)
     parsed = rd.parse(latex, "the LaTeX")
     occurs |= set(parsed.glyphs)
     for x in lets:
@@ -199,9 +201,13 @@ def read_statement(latex: str, lets: list[Let], book: str | None = None,
                            f"model (the LaTeX's glyphs: "
                            f"{', '.join(sorted(parsed.glyphs)) or 'none'})")
     notes, free = _glyph_values(rd, lend, values)
+    glyphs = {**rd.glyphs, **rd.over}
+    guards.applications(parsed.applied, models, glyphs)
+    guards.time_derivatives(free, rd.used, rd.declared)
     model = _resolve(values, explicit)
     _EXPLICIT_CACHE.clear()
     printed, kind = _relations(parsed)
+    guards.conventional_shapes(printed, free, glyphs)
     defines = tuple(r.lhs.name for r in printed) if kind == "definition" else ()
     text = "; ".join(f"{notation.text(r.lhs)} {'≡' if kind == 'definition' else '='} "
                      f"{notation.text(r.rhs)}" for r in printed)
