@@ -110,11 +110,12 @@ def test_other_parentheses_stay_products(latex, let):
 @pytest.mark.parametrize("latex, words", [
     (r"R(\theta) = e^{[\hat\omega]\theta}", "R has the shape of the convention (R a scalar)"),
     (r"R(\phi) = e^{[\hat\omega]\theta}", "the model of R does not depend on φ"),
+    (r"R(\theta) = e^{[\hat\omega]\theta}", "R has no model"),      # R: rotation alone
     (r"R(\theta) R(\phi) = e^{[\hat\omega]\theta}", "R applied to 2 different arguments"),
 ])
 def test_an_application_the_reading_cannot_settle_is_bad_input(capsys, latex, words):
     let = [OMEGA] + ([r"\phi: angle"] if r"\phi" in latex else []) + \
-        ([] if "shape" in words else [R_MODEL])
+        ([] if "shape" in words else ["R: rotation"] if "no model" in words else [R_MODEL])
     code, _, err = _cli(capsys, "--latex", latex, *sum((["--let", x] for x in let), []))
     assert code == 2 and words in err, err
     assert "--let 'R" in err
@@ -152,3 +153,38 @@ def test_a_guess_the_verdict_would_rest_on_is_bad_input(capsys, latex, let, word
 def test_a_shape_mismatch_of_declared_symbols_is_still_a_slip():
     r = rigidsym.check_latex(r"\omega = R", let=[r"R: rotation; \omega: vector"])
     assert r.verdict == "does-not-hold"
+
+
+# ------------------------------------------------------- item 1: per-book notations
+@pytest.mark.parametrize("latex, name, let, verdict", [
+    # the hat ambiguity: a unit vector in Lynch-Park, the skew matrix of omega in MLS
+    (r"e^{[\hat\omega]\theta} = I + \sin\theta\,[\hat\omega] + (1 - \cos\theta)[\hat\omega]^2",
+     "lynch-park", [], "verified"),
+    (r"e^{\hat\omega\theta} = I + \hat\omega\sin\theta + \hat\omega^2(1 - \cos\theta)",
+     "murray-li-sastry", [r"\omega: unit vector"], "verified"),   # a --let wins over it
+    (r"\hat\omega v = \omega \times v", "murray-li-sastry", [], "verified"),
+    # c_{12} = cos(theta_1 + theta_2) as Siciliano, Spong and Craig abbreviate
+    (r"c_{12} = c_1 c_2 - s_1 s_2", "siciliano", [], "verified"),
+    (r"s_{12} = s_1 c_2 + c_1 s_2", "spong", [], "verified"),
+    (r"c_{12} = c_1 c_2 + s_1 s_2", "craig", [], "does-not-hold"),
+    (r"P^T R^T R P = P^T P", "craig", [], "verified"),      # capital P a vector in Craig
+    (r"\mathbf{C}^T\mathbf{C} = \mathbf{1}", "barfoot", [], "verified"),
+    (r"\mathbf{u}^T\mathbf{u} = 1", "sola", [], "verified"),
+])
+def test_a_books_notation_fixes_what_its_symbols_are(latex, name, let, verdict):
+    r = rigidsym.check_latex(latex, let=let, notation=name)
+    assert r.verdict == verdict, r.detail
+    assert any(n.startswith(f"--notation {name}") for n in r.model)  # the lines it rests on
+
+
+def test_every_notation_table_loads_and_names_its_book():
+    from rigidsym.latex.notations import NOTATIONS, notation
+
+    for name in NOTATIONS:
+        t = notation(name)
+        assert t.lets and "(" in t.title, name  # a book with its publisher and year
+
+
+def test_an_unknown_notation_is_bad_input(capsys):
+    code, _, err = _cli(capsys, "--latex", "x = x", "--notation", "lynch")
+    assert code == 2 and "lynch-park" in err

@@ -7,8 +7,8 @@ symbol and the ``--let`` that settles it, never a does-not-hold resting on a con
   ``--let``;
 - ``\\dot X`` that nothing declares beside an ``X`` of the statement: nothing says how ``X``
   depends on time, so ``\\dot X`` would be a free symbol unrelated to ``X``;
-- ``R(\\theta)`` with ``R`` applied to two different arguments, or to a symbol its model
-  does not depend on.
+- ``R(\\theta)`` with ``R`` applied to two different arguments, or with no model of ``R``, or
+  to a symbol its model does not depend on.
 """
 
 from __future__ import annotations
@@ -94,7 +94,12 @@ def applications(applied: dict, models: dict, glyphs: dict) -> None:
                            f"a symbol of its own with its model (--let 'R_1 = ...')")
         model = models.get(glyphs[key].name) if key in glyphs else None
         arg = distinct[0]
-        if model is not None and not (_names(arg) <= _names(model)):
+        if model is None:
+            raise BadInput(f"--latex: {key}({notation.text(arg)}): {key} has no model, so how "
+                           f"it depends on {notation.text(arg)} is unknown (read as {key} "
+                           f"itself it would be a guess): give its model, e.g. --let "
+                           f"'{key} = LATEX' in {notation.text(arg)}")
+        if not (_names(arg) <= _names(model)):
             raise BadInput(f"--latex: {key}({notation.text(arg)}): the model of {key} does not "
                            f"depend on {notation.text(arg)}; write the model in "
                            f"{notation.text(arg)} (--let '{key} = ...')")

@@ -42,7 +42,7 @@ class Parsed:
             column separator was lost, an ignored condition).
         glyphs: the glyph-table rows used, by LaTeX key.
         applied: the non-scalar symbols read as applied to a parenthesised scalar
-            (``R(\\theta)``), by LaTeX key: the arguments (:mod:`rigidsym.latex.meaning`).
+            (``R(\\theta)``), by LaTeX key: the arguments (``rigidsym.latex.meaning``).
     """
 
     chains: list = field(default_factory=list)
