@@ -52,11 +52,8 @@ ENTRIES = [
       r"\left\|{}^A\mathbf{R}_B\,{}^B\boldsymbol{p}\right\| = \left\|{}^B\boldsymbol{p}\right\|",
       True, lambda v: (np.linalg.norm(v.A_R_B @ v.B_p), np.linalg.norm(v.B_p))),
     E("2.2.1.1", "cf. (2.16)",
-      r"\left\|{}^A\mathbf{R}_B\,{}^B\boldsymbol{p}\right\| = \left\|{}^A\mathbf{R}_B\right\|"
-      r"\left\|{}^B\boldsymbol{p}\right\|", False,
-      lambda v: (np.linalg.norm(v.A_R_B @ v.B_p),
-                 np.linalg.norm(v.A_R_B) * np.linalg.norm(v.B_p)),
-      note="\\|R\\| of a matrix is its Frobenius norm, sqrt(3) for a rotation"),
+      r"\left\|{}^A\mathbf{R}_B\,{}^B\boldsymbol{p}\right\| = \left\|{}^B\boldsymbol{p}\right\|^2",
+      False, lambda v: (np.linalg.norm(v.A_R_B @ v.B_p), np.linalg.norm(v.B_p) ** 2)),
     E("2.2.1.1", "(2.17)", r"(\mathbf{R}\boldsymbol{v})^\top = \boldsymbol{v}^\top\mathbf{R}^\top",
       True, lambda v: ((v.R @ v.v).T, v.v.T @ v.R.T)),
     E("2.2.1.1", "(2.17)", r"(\mathbf{R}\boldsymbol{v})^\top = \mathbf{R}^\top\boldsymbol{v}^\top",
