@@ -91,6 +91,17 @@ def _repairs(results) -> None:
             print(f"{who}: repair ({'; then '.join(first['edits'])}{tag}): {first['text']}")
 
 
+def _undecided(results, off) -> None:
+    """Why each undecided result is undecided (a mismatch says it in its own line)."""
+    from rigidsym.report.markdown import undecided_reasons
+
+    for r in results:
+        if r.verdict == "undecided" and r.id not in {o.id for o in off}:
+            for why in undecided_reasons({"members": r.members, "verdict": r.verdict,
+                                          "decision": r.detail}):
+                print(f"({r.id}) undecided: {label_text(why)}")
+
+
 def run(args) -> int:
     """``rigidsym verify``: decide equations, print a table, optionally write JSON."""
     from rigidsym.checking.deciding.registry import is_user_id
@@ -121,6 +132,7 @@ def run(args) -> int:
     if not args.quiet:
         (_table if fmt == "table" else _plain)(results)
         _repairs(results)
+        _undecided(results, off)
     print(line)
     for r in off:
         print(f"MISMATCH ({r.id}): computed {r.verdict}, expected {r.expected}: {r.detail} "
