@@ -35,11 +35,8 @@ QUICK = {"lynch-park-06", "lynch-park-07", "murray-li-sastry-16", "siciliano-12"
          "barfoot-03", "sola-03", "sola-04"}
 
 XFAIL = {  # id -> what is wrong with its reading today (issue 40; remove a line once fixed)
-    "lynch-park-10": "undecided",
-    "lynch-park-11": "undecided",
     "lynch-park-14": "undecided",
     "lynch-park-15": "undecided",
-    "lynch-park-21": "undecided",
     "murray-li-sastry-01": "unread",
     "murray-li-sastry-02": "unread",
     "murray-li-sastry-03": "unread",
@@ -51,31 +48,22 @@ XFAIL = {  # id -> what is wrong with its reading today (issue 40; remove a line
     "siciliano-06": "unread",
     "siciliano-09": "unread",
     "siciliano-10": "wrong",
-    "siciliano-14": "undecided",
     "spong-09": "wrong",
     "spong-12": "wrong",
     "spong-15": "unread",
     "spong-16": "unread",
     "corke-05": "undecided",
     "corke-06": "undecided",
-    "corke-13": "undecided",
-    "corke-17": "undecided",
-    "featherstone-14": "undecided",
-    "featherstone-15": "undecided",
-    "featherstone-16": "undecided",
     "craig-01": "wrong",
     "craig-05": "undecided",
     "craig-06": "undecided",
     "craig-07": "wrong",
     "craig-09": "wrong",
-    "barfoot-18": "undecided",
-    "barfoot-19": "undecided",
     "barfoot-23": "unread",
     "barfoot-24": "unread",
     "sola-01": "wrong",
     "sola-02": "wrong",
     "sola-09": "wrong",
-    "sola-12": "undecided",
 }
 
 
