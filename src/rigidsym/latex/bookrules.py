@@ -40,9 +40,12 @@ from rigidsym.latex.shapes import (
     _shape,
     _words,
 )
+from rigidsym.latex.table import Glyph
 
 __all__: list[str] = []
 
+#: how a --let NAME(t): KIND marks its glyph a function of time (read by d/dt and \\dot)
+TIMED = ", a function of time t"
 _TRANSPOSE = {"T", "\\top", "\\intercal", "\\mathsf{T}", "\\mathrm{T}"}
 _SETS = {"SO(3)": ((3, 3), "rotation"), "SE(3)": ((4, 4), "transform"),
          "so(3)": ((3, 3), "so(3)"), "se(3)": ((4, 4), "se(3)")}
@@ -195,6 +198,79 @@ class BookRules:
 
     def row(self, items):
         return [self._val(i) for i in items if not isinstance(i, lark.Token)]
+
+    # ---- d/dt of the symbols declared functions of time (--let 'X(t): KIND')
+    def timed(self, key: str) -> bool:
+        g = self.overrides.get(key)
+        return g is not None and (g.meaning or "").endswith(TIMED)
+
+    def velocity(self, key: str, value):
+        """``\\dot X`` of a symbol declared a function of time: a rotation's ``X [w_X]``, a
+        transform's ``X [V_X]`` (w_X, V_X free: the body velocity), else a free symbol of
+        X's shape (``\\dot\\theta``)."""
+        g = self.overrides[key]
+        self.glyphs[key] = g
+        dkey = f"\\dot{{{key}}}"
+        if g.shape in ((3, 3), (4, 4)) and g.meaning.startswith(("rotation", "homogeneous")):
+            n = 3 if g.shape == (3, 3) else 6
+            w = sp.MatrixSymbol(f"{g.name}_w", n, 1)
+            self.glyphs[f"{key}_{{w}}"] = Glyph(f"{key}_{{w}}", "*", w.name, (n, 1), "free",
+                                                 "body velocity", "")
+            self._note(f"{dkey} = {g.name} [{w.name}]: the time derivative of a "
+                       f"{g.meaning.split(',')[0]} ({w.name} its body velocity, free)")
+            return value * motions.hat(w)
+        if dkey not in self.glyphs:
+            self._note(f"{dkey}: the time derivative of {key} (a function of time, free)")
+        d = sp.Symbol(f"{g.name}dot", real=True) if not g.shape else \
+            sp.MatrixSymbol(f"{g.name}dot", *g.shape)
+        self.glyphs[dkey] = Glyph(dkey, "*", d.name, g.shape, "free",
+                                  f"the time derivative of {key}", "")
+        return d
+
+    def time_derivative(self, x):
+        """d/dt of an expression: the product rule over its matrix operations, the chain
+        rule for scalars, each timed symbol's :meth:`velocity`; a symbol not declared a
+        function of time is constant."""
+        timed = {g.name: k for k, g in self.overrides.items() if self.timed(k)}
+        if not timed:
+            raise LatexError("d/dt: no symbol is declared a function of time; declare one "
+                             "with --let 'X(t): KIND' (\\dot{X} is then its derivative)",
+                             "unknown macro d/dt")
+        self._note("d/dt: the product and chain rules over the symbols declared functions "
+                   "of time")
+        return self._ddt(x, timed)
+
+    def _ddt(self, x, timed):
+        s = _shape(x)
+        if isinstance(x, sp.MatrixSymbol):
+            return self.velocity(timed[x.name], x) if x.name in timed else sp.ZeroMatrix(*s)
+        if s is None:
+            syms = [a for a in sp.sympify(x).free_symbols if a.name in timed]
+            if any(isinstance(a, sp.MatrixSymbol) for a in sp.sympify(x).free_symbols
+                   if a.name in timed) or sp.sympify(x).atoms(sp.MatrixExpr):
+                raise LatexError("d/dt of a scalar made of matrices: write the product out",
+                                 "shapes")
+            return sum((sp.diff(x, a) * self.velocity(timed[a.name], a) for a in syms),
+                       sp.Integer(0))
+        if isinstance(x, sp.MatAdd):
+            return sp.MatAdd(*[self._ddt(a, timed) for a in x.args])
+        if isinstance(x, sp.MatMul):
+            terms = []
+            for i, a in enumerate(x.args):
+                da = self._ddt(a, timed)
+                if da != 0 and not isinstance(da, sp.ZeroMatrix):
+                    terms.append(sp.MatMul(*x.args[:i], da, *x.args[i + 1:]))
+            return sp.MatAdd(*terms) if terms else sp.ZeroMatrix(*s)
+        if isinstance(x, sp.Transpose):
+            return self._ddt(x.arg, timed).T
+        if isinstance(x, sp.Inverse):
+            return -x * self._ddt(x.arg, timed) * x
+        if isinstance(x, sp.MatrixBase):
+            return x.applyfunc(lambda e: self._ddt(e, timed))
+        if isinstance(x, sp.ZeroMatrix | sp.Identity):
+            return sp.ZeroMatrix(*s)
+        raise LatexError(f"d/dt of {_words(x)} built by {type(x).__name__}: write it as "
+                         f"products and sums of the symbols", "shapes")
 
     # ---- a trailing declaration
     def declared(self, token: str):

@@ -22,6 +22,7 @@ import sympy as sp
 from rigidsym.algebra import symbols as _sym
 from rigidsym.checking.deciding.errors import BadInput
 from rigidsym.checking.deciding.registry import Rel, Statement
+from rigidsym.latex.bookrules import TIMED
 from rigidsym.latex.lending import lent
 from rigidsym.latex.lets import KIND_WORDS, Let, kind_of, read_lets
 from rigidsym.latex.reader import parse_latex
@@ -91,6 +92,8 @@ class _Reader:
         for x in lets:
             if x.kind:
                 shape, _, words = kind_of(x.kind, x.text)
+                if re.search(r"\(\s*t\s*\)\s*$", x.name):  # NAME(t): a function of time
+                    words += TIMED
                 self.over[x.key] = Glyph(x.key, "*", self._name(x.key), shape, "let", words)
 
     def _name(self, key: str) -> str:

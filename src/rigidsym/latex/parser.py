@@ -106,6 +106,8 @@ class _Build(VocabRules, BookRules, lark.Transformer):
         if not isinstance(inner, _GlyphKey):
             raise LatexError(f"{accent} over an expression: expected a glyph", "accent")
         base, rest = inner.base, list(inner.rest) + list(items[2:])
+        if accent == "\\dot" and not items[2:] and self.timed(inner.key):  # d/dt of X(t)
+            return self.velocity(inner.key, inner.value)
         self.glyphs.pop(inner.key, None)  # only the accented glyph is a symbol here
         return self._resolve(base, rest, (inner.accent or "") + accent if inner.accent
                              else accent, inner)

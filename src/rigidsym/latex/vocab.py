@@ -160,10 +160,8 @@ class VocabRules:
         if not isinstance(v, sp.Symbol):
             raise LatexError(f"a derivative with respect to {_words(v)}{self._named(v)}: "
                              f"expected a scalar variable (d\\theta)", "shapes")
-        if v.name == "t":  # the declared kinds are constants, not functions of time
-            raise LatexError("d/dt: write the book's time derivative \\dot{X} (a symbol of "
-                             "its own); the declared kinds are not functions of time",
-                             "unknown macro d/dt")
+        if v.name == "t":  # of the symbols declared functions of time, X(t) (bookrules)
+            return self.time_derivative(self._val(x))
         self._note("d/dv: the vocabulary's derivative diff(X, v) (\\dot{X} stays the time "
                    "derivative)")
         return motions.diff(_as_scalar(x), v)
