@@ -97,4 +97,6 @@ ENTRIES = [
     E("5.9", "(5.66)", r"\det\begin{bmatrix}l_1\sin\theta_2 & 0\\ l_1\cos\theta_2 + l_2 & l_2"
       r"\end{bmatrix} = l_1 l_2\cos\theta_2", False,
       lambda v: (_jd(v), v.l_1 * v.l_2 * np.cos(v.theta_2))),
+    E("2.3", "(2.13)", r"\left|{}^A_B R^T\,{}^B P\right| = \left|{}^B P\right|", True,
+      lambda v: (np.linalg.norm(v.A_B_R.T @ v.B_P), np.linalg.norm(v.B_P))),
 ]

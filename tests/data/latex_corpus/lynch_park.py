@@ -121,6 +121,9 @@ ENTRIES = [
       lambda v: ((v.R @ _D(v) @ v.R.T).T, v.R @ _D(v) @ v.R.T)),
     E("3.2.1", "(3.19)", r"R^T R = I, \quad R \in SO(3)", True,
       lambda v: (v.R.T @ v.R, I3), note="a trailing declaration"),
+    E("3.3.2", "Prop. 3.20",
+      r"\left[\mathrm{Ad}_T\right]^{-1} = \left[\mathrm{Ad}_{T^{-1}}\right]", True,
+      lambda v: (np.linalg.inv(Ad(v.T)), Ad(np.linalg.inv(v.T)))),
 ]
 
 _ = (ad, col, ddt, rot, rotz)

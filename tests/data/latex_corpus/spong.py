@@ -122,6 +122,11 @@ ENTRIES = [
       lambda v: (1 / np.cos(v.theta) ** 2, 1 - np.tan(v.theta) ** 2)),
     E("3.3", "cf. (3.22)", r"\csc^2\theta = 1 + \cot^2\theta", True,
       lambda v: (1 / np.sin(v.theta) ** 2, 1 + 1 / np.tan(v.theta) ** 2)),
+    E("3.3", "cf. (3.22)", r"\cos^2\theta + \sin^2\theta = 1 \quad \forall \theta", True,
+      lambda v: (np.cos(v.theta) ** 2 + np.sin(v.theta) ** 2, 1),
+      note="a trailing declaration"),
+    E("3.3", "cf. (3.22)", r"\csc\theta\,\sin\theta = \cos\theta\,\sec\theta", True,
+      lambda v: (np.sin(v.theta) / np.sin(v.theta), np.cos(v.theta) / np.cos(v.theta))),
 ]
 
 _ = (hat,)
