@@ -51,6 +51,23 @@ _SETS = {"SO(3)": ((3, 3), "rotation"), "SE(3)": ((4, 4), "transform"),
          "so(3)": ((3, 3), "so(3)"), "se(3)": ((4, 4), "se(3)")}
 
 
+_DECL = re.compile(r"(?:(?:,|\\q?quad)\s*)+(?:\\forall\s*)?([^=,]*?)\s*\\in\s*"
+                   r"(SO\(3\)|SE\(3\)|so\(3\)|se\(3\))\s*[.,]?\s*$")
+
+
+def declared_lets(latex: str, lets: list) -> list:
+    """The ``--let`` a trailing ``, R \\in SO(3)`` (``SE(3)``, ``so(3)``, ``se(3)``) states,
+    when no ``--let`` declares that symbol already (one that does is checked against it by
+    the parse)."""
+    from rigidsym.latex.lets import read_lets
+
+    m = _DECL.search(latex)
+    if not m or not m.group(1).strip():
+        return []
+    new = read_lets([f"{m.group(1).strip()}: {_SETS[m.group(2)][1]}"])
+    return [x for x in new if x.key not in {y.key for y in lets}]
+
+
 def sup_word(sup: str) -> str:
     """A superscript in one spelling: ``T`` (every transpose), ``-T``, ``wedge``, ``vee``,
     ``curlywedge``, ``*``, or the integer as written."""
@@ -276,6 +293,7 @@ class BookRules:
     def declared(self, token: str):
         """``R \\in SO(3)``, ``\\forall \\theta``: a note; a set whose shape contradicts the
         symbol's is an error."""
+        token = re.sub(r"\\q?quad\b", " ", token)
         text = " ".join(token.split())
         self._note(f"declaration: {text}")
         m = re.search(r"\\in\s*(SO\(3\)|SE\(3\)|so\(3\)|se\(3\))", token)
@@ -283,6 +301,7 @@ class BookRules:
             return
         shape, kind = _SETS[m.group(1)]
         names = re.sub(r"\\forall\b|\\in\b.*$", "", token).strip(" ,")
+        names = re.sub(r"\\(boldsymbol|bm)\s*\{([A-Za-z])\}", r"\\mathbf{\2}", names)
         for k, g in self.glyphs.items():
             if k == names and g.shape != shape:
                 has = f"{g.shape[0]}x{g.shape[1]}" if g.shape else "a scalar"

@@ -22,7 +22,7 @@ import sympy as sp
 from rigidsym.algebra import symbols as _sym
 from rigidsym.checking.deciding.errors import BadInput
 from rigidsym.checking.deciding.registry import Rel, Statement
-from rigidsym.latex.bookrules import TIMED
+from rigidsym.latex.bookrules import TIMED, declared_lets
 from rigidsym.latex.lending import lent
 from rigidsym.latex.lets import KIND_WORDS, Let, kind_of, read_lets
 from rigidsym.latex.reader import parse_latex
@@ -191,6 +191,7 @@ def read_statement(latex: str, lets: list[Let], book: str | None = None,
     from rigidsym.checking.deciding.explicit import _EXPLICIT_CACHE, explicit
 
     lend = lend or {}
+    lets = list(lets) + declared_lets(latex, lets)  # ", R \\in SO(3)": a --let (issue 40)
     rd = _Reader(lets, book, lend)
     values: dict = {}  # book symbol -> value in book symbols (resolved below)
     occurs = _read_models(rd, lets, values)
