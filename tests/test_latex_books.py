@@ -130,3 +130,20 @@ def test_errors_quote_the_macro_with_a_caret_under_all_of_it():
     msg = str(exc.value)
     assert r"\int (an integral or sum)" in msg and r"\cotint" not in msg
     assert "\n" + " " * 2 + " " * msg.splitlines()[1][2:].index(r"\int") + "^^^^" in msg
+
+
+def test_a_corrupt_grammar_cache_is_rebuilt_not_trusted(tmp_path, monkeypatch):
+    from rigidsym.latex import lexing
+
+    monkeypatch.setenv("RIGIDSYM_CACHE", str(tmp_path))
+    lexing.parser.cache_clear()
+    try:
+        lexing.parser()  # builds and writes the cache
+        kept = tmp_path / "latex" / "grammar.lark.cache"
+        assert kept.stat().st_size > 1000
+        kept.write_bytes(kept.read_bytes()[:500])  # half a file, as a crash would leave it
+        lexing.parser.cache_clear()
+        assert str(_read(r"\mathbf{R}^\top = \mathbf{R}").chains[0][0]) == "R.T"
+        assert kept.stat().st_size > 1000  # rewritten whole
+    finally:
+        lexing.parser.cache_clear()

@@ -93,10 +93,20 @@ class _AlignedLayout:
 
 @cache
 def parser() -> lark.Lark:
-    """The lark LALR(1) parser of ``grammar.lark`` (built once per process)."""
+    """The lark LALR(1) parser of ``grammar.lark`` (built once per process; its LALR
+    analysis kept in the user cache, ``<cache root>/latex/``, by lark's own ``cache=``: keyed
+    by the grammar's and lark's hash, a stale or unreadable file is rebuilt and rewritten)."""
+    from rigidsym import _cache
+
     text = resources.files("rigidsym.latex").joinpath("grammar.lark").read_text("utf-8")
+    where = _cache.root() / "latex"
+    try:
+        where.mkdir(parents=True, exist_ok=True)
+        kept = {"cache": str(where / "grammar.lark.cache")}
+    except OSError:  # a read-only home: build it every time
+        kept = {}
     return lark.Lark(text, parser="lalr", lexer="contextual", postlex=_AlignedLayout(),
-                     propagate_positions=False, maybe_placeholders=False)
+                     propagate_positions=False, maybe_placeholders=False, **kept)
 
 
 # ---- the input as TeX reads it, and errors that quote it (issue 40, items 3 and 5)
