@@ -21,6 +21,7 @@ import sympy as sp
 from rigidsym.algebra.operators import Det, Vect
 from rigidsym.latex.bookrules import BookRules, index_key, sup_word
 from rigidsym.latex.lexing import Parsed, Relation, parser
+from rigidsym.latex.meaning import MeaningRules
 from rigidsym.latex.shapes import (
     LatexError,
     _as_scalar,
@@ -40,7 +41,7 @@ __all__ = ["LatexError", "Relation", "Parsed", "parser"]
 _TIME = sp.Symbol("t", real=True)  # the plain letter t: time, the argument of p(t)
 
 
-class _Build(VocabRules, BookRules, lark.Transformer):
+class _Build(MeaningRules, VocabRules, BookRules, lark.Transformer):
     """Tree -> sympy, in the declaration vocabulary (module docstring); ``reader``: a
     reader's LaTeX, ``[x]`` of a vector its hat, ``I`` the identity (``latex/vocab.py``)."""
 
@@ -124,6 +125,9 @@ class _Build(VocabRules, BookRules, lark.Transformer):
         else:
             key = self._key(base, rest, accent, pre)
         kind = base[0]
+        sized = self._sized(key, base, rest, accent)  # I, I_3, \mathbf{1}_3 (latex.meaning)
+        if sized is not None:
+            return _GlyphKey(key, base, rest, accent, sized)
         if kind == "zero":
             return _GlyphKey(key, base, rest, accent, sp.ZeroMatrix(3, 1))
         if kind == "one":
@@ -142,10 +146,6 @@ class _Build(VocabRules, BookRules, lark.Transformer):
             return _GlyphKey(key, base, rest, accent, _TIME)
         if accent in ("\\vec", "\\underline") and kind == "plain":  # vector fonts
             base = ("bold", base[1])
-        if key == "I" and self.reader and key not in self.overrides and (
-                self.section is None or lookup(key, self.section) is None):
-            self._note("I: the identity (no --let declares I), sized by its neighbours")
-            return _GlyphKey(key, base, rest, accent, sp.Identity(3))
         return _GlyphKey(key, base, rest, accent, self._symbol(key, base))
 
     def _symbol(self, key, base):
