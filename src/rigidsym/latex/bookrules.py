@@ -31,6 +31,7 @@ import lark
 import sympy as sp
 
 from rigidsym.algebra import motions
+from rigidsym.algebra.lie import LieOp
 from rigidsym.algebra.operators import Cpm
 from rigidsym.latex.shapes import (
     LatexError,
@@ -126,7 +127,7 @@ class BookRules:
                                  f"--let 'X: spatial transform')", "shapes")
             self._note(f"X{spelt}: the dual (inverse transpose) of a spatial transform "
                        f"(Featherstone (2.25))")
-            return x.inverse().T
+            return PluckerDual(x)
         return None
 
     def _spatial(self, x) -> bool:
@@ -307,6 +308,28 @@ class BookRules:
                 has = f"{g.shape[0]}x{g.shape[1]}" if g.shape else "a scalar"
                 raise LatexError(f"{text}: {k} is {has}; a {kind} is {shape[0]}x{shape[1]} "
                                  f"(--let '{k}: {kind}')", "shapes")
+
+
+class PluckerDual(LieOp):
+    """``X^*`` of a spatial transform ``X = [E 0; B E]`` (E a rotation; Featherstone
+    (2.25)): ``X^{-T} = [E, -E Bᵀ E; 0, E]``, the inverse by the blocks, exact for the kind
+    and no 6x6 inversion for the engine; printed as the reader wrote it, ``X*``."""
+    label, tex = "dual", r"\mathrm{dual}"
+
+    @classmethod
+    def shape_of(cls, shapes):
+        if tuple(shapes) != ((6, 6),):
+            raise ValueError(f"X^*: an operand of shape {shapes} is no spatial transform")
+        return (6, 6)
+
+    def value(self, X):
+        E, B = sp.Matrix(X)[:3, :3], sp.Matrix(X)[3:, :3]
+        inv = sp.zeros(6, 6)
+        inv[:3, :3], inv[3:, 3:], inv[3:, :3] = E.T, E.T, -E.T * B * E.T
+        return inv.T
+
+    def _sympystr(self, printer):
+        return f"{printer._print(self.args[0])}*"
 
 
 def _content(items):
