@@ -102,7 +102,7 @@ def parser() -> lark.Lark:
     from rigidsym import _cache
 
     text = resources.files("rigidsym.latex").joinpath("grammar.lark").read_text("utf-8")
-    where = _cache.root() / "latex"
+    where = _cache.folder("latex")
     try:
         where.mkdir(parents=True, exist_ok=True)
         kept = {"cache": str(where / "grammar.lark.cache")}
