@@ -80,7 +80,7 @@ def test_spatial_cross_products_and_the_operator_binding_to_the_factor_before_it
 def test_norms_of_any_expression_and_bars():
     lets = [r"R: rotation; p: vector"]
     for latex in (r"\|R p\|^2 = p^T p", r"\left\| R p \right\|^2 = p^T p",
-                  r"\lVert R p \rVert^2 = p^T p"):
+                  r"\lVert R p \rVert^2 = p^T p", r"\bigl\| R p \bigr\|^2 = p^T p"):
         assert _v(latex, lets) == "verified", latex
     assert str(_read(r"\left| x \right| = y").chains[0][0]) == "Abs(x)"
     with pytest.raises(LatexError, match="determinant"):
