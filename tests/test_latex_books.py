@@ -147,3 +147,13 @@ def test_a_corrupt_grammar_cache_is_rebuilt_not_trusted(tmp_path, monkeypatch):
         assert kept.stat().st_size > 1000  # rewritten whole
     finally:
         lexing.parser.cache_clear()
+
+
+def test_what_was_expected_is_said_in_latex_not_in_the_grammars_terminal_names():
+    with pytest.raises(LatexError) as exc:
+        _read(r"\mathbf{Q}^T\mathbf{Q} = ")
+    msg = str(exc.value)
+    assert "a letter" in msg and r"\left(" in msg
+    assert "LETTER" not in msg and "LEFT_OPEN" not in msg
+    with pytest.raises(LatexError, match=r"expected one of: \\right\\\|"):
+        _read(r"\left\| \mathbf{x} = 1")

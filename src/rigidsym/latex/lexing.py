@@ -230,7 +230,7 @@ def tree(latex: str):
                          "syntax") from None
     except lark.UnexpectedToken as exc:
         pos = exc.token.start_pos if exc.token.start_pos is not None else len(text)
-        expected = ", ".join(sorted(exc.expected)[:8])
+        expected = _expected(exc.expected)
         if exc.token.type == "$END":
             what, width = "end of input", 1
         else:
@@ -242,4 +242,29 @@ def tree(latex: str):
                          f"  expected one of: {expected}", "syntax") from None
     except lark.UnexpectedEOF as exc:
         raise LatexError(f"unexpected end of input; expected one of: "
-                         f"{', '.join(sorted(exc.expected)[:8])}", "syntax") from None
+                         f"{_expected(exc.expected)}", "syntax") from None
+
+
+_TERMINALS = {"LETTER": "a letter", "GREEK": "a Greek letter", "NUMBER": "a number",
+              "RELOP": "= or \\equiv", "BOLD": "\\mathbf", "ACCENT": "an accent",
+              "FUNC": "a function (\\sin ...)", "BEGIN_MATRIX": "\\begin{bmatrix}",
+              "LEFT_OPEN": "\\left(", "RIGHT_CLOSE": "\\right)", "LEFT_NORM": "\\left\\|",
+              "RIGHT_NORM": "\\right\\|", "LEFT_ABS": "\\left|", "RIGHT_ABS": "\\right|",
+              "SUBATOM": "a subscript", "SUPTOKEN": "a superscript", "_SEP": ", or \\quad"}
+
+
+def _expected(names) -> str:
+    """What the parser expected, in the LaTeX a reader writes (a literal as written, a
+    class of tokens in words), not the grammar's terminal names."""
+    out = []
+    names = [n for n in names if n not in _AlignedLayout.always_accept] or list(names)
+    for n in sorted(names):
+        try:
+            pattern = parser().get_terminal(n).pattern
+        except KeyError:
+            pattern = None
+        word = _TERMINALS.get(n) or (pattern.value if isinstance(
+            pattern, lark.lexer.PatternStr) else None)
+        if word and word not in out:
+            out.append(word)
+    return ", ".join(out[:10]) + (" ..." if len(out) > 10 else "")
