@@ -99,6 +99,11 @@ def transform(R, p):
     return T
 
 
+def cross(a, b):
+    """a x b of two 3 x 1 columns, a 3 x 1 column."""
+    return np.cross(np.ravel(a), np.ravel(b)).reshape(3, 1)
+
+
 def col(*xs):
     return np.array(xs, float).reshape(-1, 1)
 

@@ -5,7 +5,7 @@ superscript names the reference frame and a trailing subscript the frame describ
 early chapters."""
 
 import numpy as np
-from _num import I3, E, expm, hat, transform
+from _num import I3, E, cross, expm, hat, transform
 
 BOOK = {"key": "corke", "title": "Corke, Robotics, Vision and Control",
         "edition": "2nd ed., Springer, 2017"}
@@ -28,9 +28,6 @@ def _rod(v, s=1):
     k = hat(v.hat_v)
     return I3 + s * np.sin(v.theta) * k + (1 - np.cos(v.theta)) * k @ k
 
-
-def _x(a, b):
-    return np.cross(a.ravel(), b.ravel()).reshape(3, 1)
 
 
 _TINV = (r"\begin{pmatrix}\mathbf{R} & \boldsymbol{t}\\ \mathbf{0}_{1\times 3} & 1\end{pmatrix}"
@@ -59,7 +56,7 @@ ENTRIES = [
     E("2.2.1.1", "(2.17)", r"(\mathbf{R}\boldsymbol{v})^\top = \mathbf{R}^\top\boldsymbol{v}^\top",
       False, lambda v: ((v.R @ v.v).T, v.R.T @ v.v.T), note="a shape slip: 3x3 times 1x3"),
     E("2.2.1.7", "(2.22)", r"[\boldsymbol{\omega}]_\times\boldsymbol{v} = \boldsymbol{\omega}"
-      r"\times\boldsymbol{v}", True, lambda v: (hat(v.omega) @ v.v, _x(v.omega, v.v))),
+      r"\times\boldsymbol{v}", True, lambda v: (hat(v.omega) @ v.v, cross(v.omega, v.v))),
     E("2.2.1.7", "(2.22)", r"[\boldsymbol{\omega}]_\times^\top = -[\boldsymbol{\omega}]_\times",
       True, lambda v: (hat(v.omega).T, -hat(v.omega))),
     E("2.2.1.7", "(2.23)", _ROD, True, lambda v: (expm(v.theta * hat(v.hat_v)), _rod(v))),
@@ -74,9 +71,9 @@ ENTRIES = [
                                        r"\boldsymbol{t}"), False,
       lambda v: (np.linalg.inv(transform(v.R, v.t)), transform(v.R.T, -v.R @ v.t))),
     E("2.1.1", "(2.1)", r"\vec{a}\times\vec{b} = -\vec{b}\times\vec{a}", True,
-      lambda v: (_x(v.a, v.b), -_x(v.b, v.a))),
+      lambda v: (cross(v.a, v.b), -cross(v.b, v.a))),
     E("2.1.1", "(2.1)", r"\vec{a}\cdot(\vec{a}\times\vec{b}) = 0", True,
-      lambda v: (v.a.T @ _x(v.a, v.b), 0)),
+      lambda v: (v.a.T @ cross(v.a, v.b), 0)),
     E("2.2.1.1", "(2.13)", r"\mathbf{R}^\top\mathbf{R} = \mathbf{1}, \quad \mathbf{R} \in SO(3)",
       True, lambda v: (v.R.T @ v.R, I3), note="a trailing declaration"),
 ]

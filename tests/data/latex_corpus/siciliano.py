@@ -5,7 +5,7 @@ c_\\vartheta, s_\\vartheta for cos and sin; \\boldsymbol{S}(\\cdot) the skew-sym
 \\mathrm{Tr} the trace."""
 
 import numpy as np
-from _num import I3, E, hat, rot, rotx, roty, rotz
+from _num import I3, E, cross, hat, rot, rotx, roty, rotz
 
 BOOK = {"key": "siciliano", "title": "Siciliano, Sciavicco, Villani & Oriolo, Robotics: "
         "Modelling, Planning and Control", "edition": "Springer, 2009"}
@@ -31,7 +31,7 @@ def _rr(v, s=1):
 
 
 def _X(v):
-    return np.cross(v.a.ravel(), v.b.ravel()).reshape(3, 1)
+    return cross(v.a, v.b)
 
 
 ENTRIES = [
@@ -91,12 +91,12 @@ ENTRIES = [
     E("3.1.1", "(3.9)",
       r"\boldsymbol{R}(\boldsymbol{a}\times\boldsymbol{b}) = \boldsymbol{R}\boldsymbol{a}"
       r"\times\boldsymbol{R}\boldsymbol{b}", True,
-      lambda v: (v.R @ _X(v), np.cross((v.R @ v.a).ravel(), (v.R @ v.b).ravel()).reshape(3, 1))),
+      lambda v: (v.R @ _X(v), cross(v.R @ v.a, v.R @ v.b))),
     E("3.1.1", "(3.9)",
       r"\boldsymbol{R}(\boldsymbol{a}\times\boldsymbol{b}) = \boldsymbol{R}^{T}\boldsymbol{a}"
       r"\times\boldsymbol{R}\boldsymbol{b}", False,
       lambda v: (v.R @ _X(v),
-                 np.cross((v.R.T @ v.a).ravel(), (v.R @ v.b).ravel()).reshape(3, 1))),
+                 cross(v.R.T @ v.a, v.R @ v.b))),
     E("3.1.1", "cf. (3.7)", r"\boldsymbol{\omega}^{T}(\boldsymbol{\omega}\times\boldsymbol{p}) = 0",
       True, lambda v: (v.omega.T @ np.cross(v.omega.ravel(), v.p.ravel()), 0)),
     E("2.4", "cf. (2.18)",

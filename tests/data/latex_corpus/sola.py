@@ -5,7 +5,7 @@ and vee; \\exp the matrix exponential; \\mathbf{Ad}_{\\mathcal{X}} the adjoint m
 \\mathbf{I} the identity; \\theta an angle about the unit axis \\mathbf{u}."""
 
 import numpy as np
-from _num import I3, Ad, E, expm, hat, vee
+from _num import I3, Ad, E, cross, expm, hat, vee
 
 BOOK = {"key": "sola", "title": "Solà, Deray & Atchuthan, A micro Lie theory",
         "edition": "arXiv:1812.01537v9, 2021"}
@@ -29,9 +29,6 @@ def _rod(v, sq=2):
     return I3 + np.sin(v.theta) * k + (1 - np.cos(v.theta)) * np.linalg.matrix_power(k, sq)
 
 
-def _x(a, b):
-    return np.cross(a.ravel(), b.ravel()).reshape(3, 1)
-
 
 _ROD = (r"\exp(\theta[\mathbf{u}]_\times) = \mathbf{I} + \sin\theta[\mathbf{u}]_\times + "
         r"(1 - \cos\theta)[\mathbf{u}]_\times^2")
@@ -42,9 +39,9 @@ ENTRIES = [
     E("A.1", "(105)", r"\mathbf{R}^\top\mathbf{R} = \mathbf{I} = \mathbf{R}\mathbf{R}^\top", True,
       lambda v: (v.R.T @ v.R, v.R @ v.R.T)),
     E("A.1", "(109)", r"[\mathbf{a}]_\times\mathbf{b} = \mathbf{a}\times\mathbf{b}", True,
-      lambda v: (hat(v.a) @ v.b, _x(v.a, v.b))),
+      lambda v: (hat(v.a) @ v.b, cross(v.a, v.b))),
     E("A.1", "(109)", r"[\mathbf{a}]_\times\mathbf{b} = \mathbf{b}\times\mathbf{a}", False,
-      lambda v: (hat(v.a) @ v.b, _x(v.b, v.a))),
+      lambda v: (hat(v.a) @ v.b, cross(v.b, v.a))),
     E("A.1", "(108)", r"[\mathbf{a}]_\times^\top = -[\mathbf{a}]_\times", True,
       lambda v: (hat(v.a).T, -hat(v.a))),
     E("A.1", "(108)", r"\mathbf{a}^\wedge = [\mathbf{a}]_\times", True,

@@ -4,7 +4,7 @@ angle in the subscript, part of the name); c_i, s_i, c_{12} for cos and sin of j
 angles; H a homogeneous transform; I the identity (I_4 sized); \\dot\\theta a joint rate."""
 
 import numpy as np
-from _num import I3, E, ddt, hat, rotz, transform
+from _num import I3, E, cross, ddt, hat, rotz, transform
 
 BOOK = {"key": "spong", "title": "Spong, Hutchinson & Vidyasagar, Robot Modeling and "
         "Control", "edition": "1st ed., Wiley, 2006"}
@@ -50,9 +50,6 @@ def _H(v, s=-1, tr=True):
 def _dg(v):
     return np.diag([v.I_xx, v.I_yy, v.I_zz])
 
-
-def _x(a, b):
-    return np.cross(a.ravel(), b.ravel()).reshape(3, 1)
 
 
 _ROTZ = (r"\begin{bmatrix}\cos\theta & -\sin\theta & 0\\ \sin\theta & \cos\theta & 0\\ "
@@ -106,9 +103,9 @@ ENTRIES = [
     E("4.2", "cf. (4.18)", r"\frac{d}{dt}\sin\theta = -\dot\theta\cos\theta", False,
       lambda v: (ddt(v, lambda p: np.sin(p.theta)), -v.dot_theta * np.cos(v.theta))),
     E("4.1", "(4.4)", r"R(a \times b) = Ra \times Rb", True,
-      lambda v: (v.R @ _x(v.a, v.b), _x(v.R @ v.a, v.R @ v.b))),
+      lambda v: (v.R @ cross(v.a, v.b), cross(v.R @ v.a, v.R @ v.b))),
     E("4.1", "(4.4)", r"R(a \times b) = Rb \times Ra", False,
-      lambda v: (v.R @ _x(v.a, v.b), _x(v.R @ v.b, v.R @ v.a))),
+      lambda v: (v.R @ cross(v.a, v.b), cross(v.R @ v.b, v.R @ v.a))),
     E("7.2", "(7.44)",
       r"\operatorname{tr}\left(R\operatorname{diag}(I_{xx}, I_{yy}, I_{zz})R^T\right) = "
       r"I_{xx} + I_{yy} + I_{zz}", True,
