@@ -157,3 +157,12 @@ def test_what_was_expected_is_said_in_latex_not_in_the_grammars_terminal_names()
     assert "LETTER" not in msg and "LEFT_OPEN" not in msg
     with pytest.raises(LatexError, match=r"expected one of: \\right\\\|"):
         _read(r"\left\| \mathbf{x} = 1")
+
+
+@pytest.mark.parametrize("latex, macro", [(r"x = \sinh y", r"\sinh"),
+                                          (r"x = a \cdots b", r"\cdots"),
+                                          (r"x = \tanh y", r"\tanh")])
+def test_a_macro_that_only_starts_like_a_known_one_is_unknown_not_split(latex, macro):
+    # before issue 40 the lexer read \sinh y as \sin(h y) and \cdots as \cdot s
+    with pytest.raises(LatexError, match=rf"unknown macro \{macro} at position"):
+        _read(latex)

@@ -62,17 +62,23 @@ class Parsed:
                     yield c, i, j, exprs[i], exprs[j]
 
 
+_MACRO = re.compile(r"\\[A-Za-z]+")
+
+
 class _AlignedLayout:
     """Post-lexer: inside ``aligned`` (outside a matrix) ``&``, ``\\\\`` and a ``\\quad``
     right after ``&`` are layout; drop them (and the environment's delimiters)."""
 
     always_accept = ("AMP", "ROWSEP", "BEGIN_ALIGNED", "END_ALIGNED")
+    text = ""  #: the input being parsed (set by :func:`tree`): where each macro ends
 
     def process(self, stream):
         aligned = matrix = 0
         after_amp = False
         for tok in stream:
             t = tok.type
+            if _MACRO.fullmatch(tok.value) and self.text[tok.end_pos:tok.end_pos + 1].isalpha():
+                raise _Glued(tok.start_pos)  # \sinh is no \sin h, \cdots no \cdot s
             if t == "BEGIN_ALIGNED":
                 aligned += 1
                 continue
@@ -92,6 +98,14 @@ class _AlignedLayout:
                     continue
             after_amp = False
             yield tok
+
+
+class _Glued(Exception):
+    """A grammar literal that is only the start of a longer macro of the input."""
+
+    def __init__(self, pos: int):
+        super().__init__(pos)
+        self.pos = pos
 
 
 @cache
@@ -209,8 +223,13 @@ def tree(latex: str):
     from rigidsym.latex.shapes import LatexError
 
     text = braced(latex)
+    _AlignedLayout.text = text
     try:
         return parser().parse(text)
+    except _Glued as exc:
+        token, construct = quoted(text, exc.pos)
+        raise LatexError(f"unknown macro {token} at position {exc.pos}:\n"
+                         f"{caret(text, exc.pos, len(token))}", f"unknown macro {token}") from None
     except lark.UnexpectedCharacters as exc:
         pos = exc.pos_in_stream
         rest = text[pos:]
