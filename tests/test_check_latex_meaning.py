@@ -188,3 +188,26 @@ def test_every_notation_table_loads_and_names_its_book():
 def test_an_unknown_notation_is_bad_input(capsys):
     code, _, err = _cli(capsys, "--latex", "x = x", "--notation", "lynch")
     assert code == 2 and "lynch-park" in err
+
+
+# ------------------------------------------------------- item 5: printed back as written
+def test_greek_variants_print_as_glyphs(capsys):
+    code, out, _ = _cli(capsys, "--latex", r"\varphi + \vartheta = \vartheta + \varphi")
+    assert code == 0 and "read as: ϕ + ϑ = ϕ + ϑ" in out  # on main: varphi + vartheta
+
+
+def test_a_readers_bracket_stays_a_bracket_in_every_view():
+    slip = r"e^{[\hat\omega]\theta} = I + \sin\theta\,[\hat\omega] - (1 - \cos\theta)[\hat\omega]^2"
+    r = rigidsym.check_latex(slip, notation="lynch-park")
+    assert r.verdict == "does-not-hold"
+    texts = [m["text"] for m in r.members] + [x["text"] for x in r.repairs]
+    assert texts and all("[ω̂]" in t and "CPM" not in t for t in texts), texts  # on main: CPM(ω̂)
+
+
+@pytest.mark.parametrize("latex, shown", [
+    (r"a^T \mathrm{CPM}(b) a = 0", "aᵀ CPM(b) a = 0"),      # on main: tr(aᵀ CPM(b) a)
+    (r"(a \times b) \cdot a = 0", "((a × b)·a) = 0"),       # on main: (a × b·a)
+])
+def test_a_scalar_product_prints_as_written(capsys, latex, shown):
+    code, out, _ = _cli(capsys, "--latex", latex, "--let", AB)
+    assert code == 0 and f"read as: {shown}" in out
