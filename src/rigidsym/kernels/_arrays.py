@@ -26,6 +26,7 @@ import numpy as np
 from rigidsym import _kinds
 from rigidsym._config import generated_dir
 from rigidsym._io import load_module
+from rigidsym.kernels._arrays_checks import _raise, broadcast_batch, modes, validate
 from rigidsym.kernels._errors import raise_flagged
 from rigidsym.kernels._jacobian import contract
 from rigidsym.kernels._jacobian import full_batch as _full
@@ -35,7 +36,6 @@ __all__ = ["ArraySpace", "Library", "Space", "modes", "validate", "evaluate", "c
 
 #: suffix of the generated kernels with Jacobians (rigidsym.codegen.jacobians.SUFFIX)
 SUFFIX = "_with_jacobians"
-_MODES = ("raise", "nan")
 
 
 @dataclass
@@ -80,6 +80,13 @@ class ArraySpace:
             v = self._programs[name] = mod.VARIANTS
         return v
 
+    def safe(self, name: str) -> list[float]:
+        """The :func:`safe_point` of kernel ``name``'s arguments (cached)."""
+        key = ("safe", name)
+        if key not in self._programs:
+            self._programs[key] = safe_point(self.meta[name]["args"])
+        return self._programs[key]
+
 
 def make_all(progs: ArraySpace, make: Callable) -> dict:
     """``{name: make(name)}`` for every kernel of ``progs`` but the Jacobian kernels, every
@@ -87,87 +94,8 @@ def make_all(progs: ArraySpace, make: Callable) -> dict:
     so torch.compile(fullgraph=True) and jit see only tensor code."""
     for name in progs.meta:
         progs.variants(name)
+        progs.safe(name)
     return {name: make(name) for name in progs.meta if not name.endswith(SUFFIX)}
-
-
-def _raise(exc_type: type, message: str):
-    raise exc_type(message)
-
-
-def modes(check: bool | None, on_singular: str | None, traced: bool, where: str,
-          refuse: Callable = _raise):
-    """The effective ``(check, on_singular)`` of a call: defaults ``True`` / ``"raise"`` in
-    eager mode, ``False`` / ``"nan"`` while traced (no host synchronisation there).
-    ``refuse(exc_type, message)`` raises the errors (PyTorch: outside Dynamo's trace).
-
-    Raises:
-        ValueError: ``check=True`` or ``on_singular="raise"`` while traced (``where`` names
-            the tracer), or a bad value.
-    """
-    if check is not None and not isinstance(check, bool):
-        refuse(TypeError, f"check: expected True, False or None, got {check!r}")
-    if on_singular is not None and on_singular not in _MODES:
-        refuse(ValueError, f"on_singular: expected 'raise' or 'nan', got {on_singular!r}")
-    if traced:
-        if check:
-            refuse(ValueError, f"check=True needs eager mode (it reads values on the host); "
-                               f"under {where} pass check=False or leave it unset")
-        if on_singular == "raise":
-            refuse(ValueError, f"on_singular='raise' needs eager mode; under {where} use "
-                               "'nan' (the default there)")
-        return False, "nan"
-    return (True if check is None else check), (on_singular or "raise")
-
-
-def validate(xp, arrays: list, args: list[dict]) -> None:
-    """Eager validation: finite values, unit vectors, proper rotations (the kind table's
-    tolerances for the dtype); one reduction per argument read on the host.
-
-    Raises:
-        ValueError: naming the argument.
-    """
-    for x, a in zip(arrays, args, strict=True):
-        if not bool(xp.isfinite(x).all()):
-            raise ValueError(f"{a['name']}: non-finite value (NaN or inf)")
-        kind = _kinds.for_spec(a["kind"], tuple(a["shape"]))
-        if kind is None or kind.check is None or not _numel(x):
-            continue
-        tol = kind.tolerance(np.dtype(str(x.dtype).replace("torch.", "")))
-        if kind.shape == (3, 3):
-            ident = xp.eye(3, dtype=x.dtype)
-            if hasattr(ident, "to"):  # torch: on the input's device (found on a GPU)
-                ident = ident.to(x.device)
-            g = xp.einsum("...ki,...kj->...ij", x, x) - ident
-            err = float(xp.abs(g).max())
-            if not err <= tol:
-                raise ValueError(f"{a['name']}: not orthogonal (max |{a['name']}^T "
-                                 f"{a['name']} - 1| = {err:.3g} > {tol:.3g})")
-            if bool((xp.linalg.det(x) <= 0).any()):
-                raise ValueError(f"{a['name']}: not a proper rotation (det <= 0)")
-        elif len(kind.shape) == 1:
-            err = float(xp.abs(xp.sqrt((x * x).sum(-1)) - 1.0).max())
-            if err > tol:
-                raise ValueError(f"{a['name']}: not a unit vector (| ||{a['name']}|| - 1 | = "
-                                 f"{err:.3g} > {tol:.3g})")
-
-
-def broadcast_batch(broadcast_shapes: Callable, xs: list, args: list[dict]) -> tuple:
-    """The broadcast batch shape of ``xs`` (each less its argument's own trailing shape).
-
-    Raises:
-        ValueError: the batch shapes do not broadcast (each argument's shape named).
-    """
-    try:
-        return tuple(broadcast_shapes(*[x.shape[:x.ndim - len(a["shape"])]
-                                        for x, a in zip(xs, args, strict=True)]))
-    except (RuntimeError, ValueError):  # torch raises RuntimeError, JAX ValueError
-        shapes = ", ".join(f"{a['name']} {tuple(x.shape)}" for x, a in zip(xs, args,
-                                                                             strict=True))
-        raise ValueError(f"batch shapes do not broadcast: {shapes}") from None
-
-
-def _numel(x) -> int:
-    return int(math.prod(x.shape))
 
 
 def columns(arrays: list, args: list[dict]) -> list:
@@ -196,14 +124,51 @@ def shape_outputs(xp, flat: list, outs: list[dict], like) -> list:
     return res
 
 
-def evaluate(xp, variants: tuple, cols: list, stop_gradient: Callable) -> tuple[list, Any]:
+def evaluate(xp, variants: tuple, cols: list, stop_gradient: Callable, safe=None,
+             singular=None) -> tuple[list, Any]:
     """Run a kernel's variants on ``cols``: ``(flat outputs, singular mask)``.
 
     A kernel with branches takes, per sample, the first branch whose condition holds, else
     main (the NumPy kernel's rule). Safe ``where``: each variant sees the real inputs only
     in its own samples and ``stop_gradient`` of them elsewhere, so a NaN or inf derivative
     of a branch not taken never reaches the gradient.
+
+    ``safe`` (one float per column, a regular point: :func:`safe_point`) is substituted for
+    the inputs of the singular samples before the differentiable evaluation, so that their
+    derivatives are finite and a zero cotangent gives exactly zero, never NaN (0 * inf),
+    in a parameter the batch shares (issue 38); their outputs are then the safe point's,
+    which the caller replaces by NaN or an error. ``singular``: the mask when known (the
+    forward's), else found by a first evaluation on ``stop_gradient`` of the inputs.
     """
+    if safe is None:
+        return _evaluate(xp, variants, cols, stop_gradient)
+    if singular is None:
+        _, singular = _evaluate(xp, variants, [stop_gradient(c) for c in cols], stop_gradient)
+    cols = [xp.where(singular, v, c) for v, c in zip(safe, cols, strict=True)]
+    return _evaluate(xp, variants, cols, stop_gradient)[0], singular
+
+
+def safe_point(args: list[dict]) -> list[float]:
+    """A fixed generic point of the inputs' sets, one float per column: constrained kinds
+    through their rational parametrisation (an exact unit vector or rotation), angles in
+    (0.4, 1.2), free entries in (-1.5, 1.5); regular for every kernel of the package (tested:
+    tests/test_arrays_masked.py), as a random point is with probability one."""
+    rng = np.random.default_rng(38)
+    out: list[float] = []
+    for a in args:
+        kind = _kinds.for_spec(a["kind"], tuple(a["shape"]))
+        n = int(math.prod(a["shape"]))
+        if kind is not None and kind.parametrise is not None:
+            vals = kind.parametrise(list(rng.uniform(-0.9, 0.9, len(kind.params))))
+        elif kind is not None and kind.half_angle:
+            vals = rng.uniform(0.4, 1.2, n)
+        else:
+            vals = rng.uniform(-1.5, 1.5, n)
+        out.extend(float(v) for v in vals)
+    return out
+
+
+def _evaluate(xp, variants: tuple, cols: list, stop_gradient: Callable) -> tuple[list, Any]:
     like = cols[0]
     if len(variants) == 1:
         outs, dens = variants[0][1](*cols)
@@ -324,19 +289,24 @@ class Space:
         back-end's derivative rule."""
         return self._fns[name]
 
-    def values(self, name: str, xs) -> tuple:
-        """``(*outputs, singular)`` of kernel ``name`` on broadcast inputs ``xs``."""
+    def values(self, name: str, xs, differentiated: bool = False) -> tuple:
+        """``(*outputs, singular)`` of kernel ``name`` on broadcast inputs ``xs``;
+        ``differentiated``: autograd will run through it (safe inputs where singular)."""
         xp, outs = self.lib.xp, self.progs.meta[name]["outputs"]
         cols = columns(xs, self.progs.meta[name]["args"])
-        flat, sing = evaluate(xp, self.progs.variants(name), cols, self.lib.stop_gradient)
+        flat, sing = evaluate(xp, self.progs.variants(name), cols, self.lib.stop_gradient,
+                              self.progs.safe(name) if differentiated else None)
         return (*shape_outputs(xp, flat, outs, cols[0]), sing)
 
-    def jacobian(self, name: str, xs) -> list:
-        """The entries of the generated Jacobian kernel of ``name`` at ``xs``, flat."""
+    def jacobian(self, name: str, xs, singular) -> list:
+        """The entries of the generated Jacobian kernel of ``name`` at ``xs``, flat; the
+        safe point's in the ``singular`` samples (finite, so that a zero cotangent gives
+        zero and a second derivative through them is finite)."""
         meta = self.progs.meta[name]
         nval = sum(math.prod(o["shape"]) for o in meta["outputs"])
         flat, _ = evaluate(self.lib.xp, self.progs.variants(name + SUFFIX),
-                           columns(xs, meta["args"]), self.lib.stop_gradient)
+                           columns(xs, meta["args"]), self.lib.stop_gradient,
+                           self.progs.safe(name), singular)
         return flat[nval:]
 
     def call(self, name: str, values: tuple, check, on_singular):

@@ -22,7 +22,9 @@ Derivatives: a kernel with a generated Jacobian kernel (``<name>_with_jacobians`
 ``jax.custom_jvp`` whose JVP *is* that verified Jacobian (so ``jax.grad``, ``jax.jacfwd``
 and ``jax.jacrev`` all use it); the others (the branch kernels, the Euler-angle rates) are
 differentiated by JAX through the generated expression, with the safe-``where`` idiom at
-their branches.
+their branches. The JVP rule is plain differentiable arithmetic (``jax.hessian`` works). A
+sample masked by ``on_singular="nan"`` has a zero gradient: its inputs are replaced by a
+regular point before a traced evaluation.
 
 Example:
     >>> import jax.numpy as jnp
@@ -80,18 +82,20 @@ def _make(space: _arrays.Space, name: str):
     meta = space.progs.meta[name]
     args, outs = meta["args"], meta["outputs"]
 
+    if not space.progs.has_jacobian(name):
+        # traced (maybe differentiated): safe inputs in the singular samples
+        return lambda *xs: space.values(name, xs, _traced(xs))
+
     def values(*xs):
         return space.values(name, xs)
 
-    if not space.progs.has_jacobian(name):
-        return values
     f = jax.custom_jvp(values)
 
     @f.defjvp
     def _jvp(primals, tangents):
         res = values(*primals)
-        touts = _arrays.contract(jnp, list(tangents), space.jacobian(name, primals), outs,
-                                 args, forward=True, singular=res[-1])
+        touts = _arrays.contract(jnp, list(tangents), space.jacobian(name, primals, res[-1]),
+                                 outs, args, forward=True, singular=res[-1])
         zero = np.zeros(res[-1].shape, dtype=jax.dtypes.float0)
         return res, (*touts, zero)
 

@@ -18,10 +18,12 @@ Keywords (no ``out=``, no ``threads=``: meaningless or harmful under autograd an
 
 Derivatives: a kernel with a generated Jacobian kernel (``<name>_with_jacobians``) is a
 ``torch.autograd.Function`` (``setup_context``, a generated vmap rule, ``backward`` and
-``jvp``) whose derivative *is* that verified Jacobian; double backward is not supported
-(``create_graph=True`` raises, saying so). The others (the branch kernels, the Euler-angle rates)
-are differentiated by autograd through the generated expression, with the safe-``where``
-idiom at their branches.
+``jvp``; no ``jvp`` under ``torch.compile``, whose Dynamo cannot trace one) whose
+derivative *is* that verified Jacobian, by plain tensor arithmetic that autograd
+differentiates again (``create_graph=True``). The others (the branch kernels, the
+Euler-angle rates) are differentiated by autograd through the generated expression, with the
+safe-``where`` idiom at their branches. A sample masked by ``on_singular="nan"`` has a zero
+gradient: its inputs are replaced by a regular point before a differentiated evaluation.
 
 Example:
     >>> import torch
@@ -104,48 +106,63 @@ def _fixed_arity(values, n: int):
     return scope["forward"]
 
 
-def _make(space: _arrays.Space, name: str):
-    """The kernel's function: a ``torch.autograd.Function`` whose derivative is the
-    generated Jacobian kernel, or autograd through the expression (no Jacobian kernel)."""
-    if not space.progs.has_jacobian(name):
-        return lambda *xs: space.values(name, xs)
+def _differentiable(xs) -> bool:
+    """Autograd may run through ``xs``: grad mode with an input requiring grad, or a
+    torch.func transform (its wrapped tensors)."""
+    return (torch.is_grad_enabled() and any(x.requires_grad for x in xs)) or any(
+        torch._C._functorch.is_functorch_wrapped_tensor(x) for x in xs)
+
+
+def _function(space: _arrays.Space, name: str, forward_mode: bool):
+    """The ``torch.autograd.Function`` of kernel ``name``: backward (and, ``forward_mode``,
+    jvp) through the generated Jacobian kernel. Dynamo cannot trace a custom ``jvp``
+    ("Unsupported custom jvp"), so compiled code gets the class without it (no forward
+    mode under torch.compile)."""
     meta = space.progs.meta[name]
     args, outs = meta["args"], meta["outputs"]
 
-    class KernelFunction(torch.autograd.Function):
-        generate_vmap_rule = True
+    def setup_context(ctx, inputs, output):
+        # the singular mask too: the Jacobian takes safe inputs there (_arrays.evaluate)
+        ctx.save_for_backward(*inputs, output[-1])
+        if forward_mode:
+            ctx.save_for_forward(*inputs, output[-1])
+        ctx.mark_non_differentiable(output[-1])
 
-        forward = staticmethod(_fixed_arity(lambda xs: space.values(name, xs), len(args)))
+    def backward(ctx, *grads):
+        # plain tensor arithmetic on the saved inputs: differentiable again
+        # (create_graph=True, gradgradcheck)
+        *xs, sing = ctx.saved_tensors
+        return tuple(_arrays.contract(torch, list(grads[:-1]), space.jacobian(name, xs, sing),
+                                      outs, args, forward=False))
 
-        @staticmethod
-        def setup_context(ctx, inputs, output):
-            ctx.save_for_backward(*inputs)
-            ctx.save_for_forward(*inputs)
-            ctx.mark_non_differentiable(output[-1])
+    def jvp(ctx, *tangents):
+        *xs, sing = ctx.saved_tensors
+        t = [torch.zeros_like(x) if d is None else d for x, d in zip(xs, tangents, strict=True)]
+        return (*_arrays.contract(torch, t, space.jacobian(name, xs, sing), outs, args,
+                                  forward=True), None)
 
-        @staticmethod
-        def backward(ctx, *grads):
-            # create_graph=True: a second derivative asked (torch.func's transforms
-            # run backward with grad mode on, on their wrapped tensors: not that)
-            if torch.is_grad_enabled() and not _traced(grads):
-                raise RuntimeError(
-                    f"rigidsym.kernels.torch.{name}: double backward (create_graph=True) "
-                    "is not supported: the derivative is the generated first-order "
-                    "Jacobian kernel")
-            xs = ctx.saved_tensors
-            return tuple(_arrays.contract(torch, list(grads[:-1]), space.jacobian(name, xs),
-                                          outs, args, forward=False))
+    body = {"generate_vmap_rule": True,
+            "forward": staticmethod(_fixed_arity(lambda xs: space.values(name, xs),
+                                                 len(args))),
+            "setup_context": staticmethod(setup_context), "backward": staticmethod(backward)}
+    if forward_mode:
+        body["jvp"] = staticmethod(jvp)
+    title = f"{name}_function" if forward_mode else f"{name}_compiled_function"
+    return type(title, (torch.autograd.Function,), body)
 
-        @staticmethod
-        def jvp(ctx, *tangents):
-            xs = ctx.saved_tensors
-            t = [torch.zeros_like(x) if d is None else d for x, d in zip(xs, tangents,
-                                                                         strict=True)]
-            return (*_arrays.contract(torch, t, space.jacobian(name, xs), outs, args,
-                                      forward=True), None)
 
-    KernelFunction.__name__ = KernelFunction.__qualname__ = f"{name}_function"
-    return KernelFunction.apply
+def _make(space: _arrays.Space, name: str):
+    """The kernel's function: a ``torch.autograd.Function`` whose derivative is the
+    generated Jacobian kernel, or autograd through the expression (no Jacobian kernel;
+    safe inputs in the singular samples when differentiated)."""
+    if not space.progs.has_jacobian(name):
+        return lambda *xs: space.values(name, xs, _differentiable(xs))
+    eager, compiled = _function(space, name, True), _function(space, name, False)
+
+    def apply(*xs):
+        return (compiled if torch.compiler.is_compiling() else eager).apply(*xs)
+
+    return apply
 
 
 _LIBRARY = _arrays.Library(
