@@ -185,6 +185,15 @@ def test_every_notation_table_loads_and_names_its_book():
         assert t.lets and "(" in t.title, name  # a book with its publisher and year
 
 
+def test_the_trig_abbreviations_of_a_notation():
+    from rigidsym.latex.notations import notation
+
+    t = notation("siciliano")
+    assert t.let_for("c_{123}").latex == r"\cos(\vartheta_{1} + \vartheta_{2} + \vartheta_{3})"
+    assert t.let_for(r"s_{\vartheta}").latex == r"\sin(\vartheta)"  # c_\vartheta, a Greek index
+    assert t.let_for("c_{x}") is None and t.let_for("c") is None     # a letter is a name
+
+
 def test_an_unknown_notation_is_bad_input(capsys):
     code, _, err = _cli(capsys, "--latex", "x = x", "--notation", "lynch")
     assert code == 2 and "lynch-park" in err
