@@ -150,6 +150,17 @@ def test_a_guess_the_verdict_would_rest_on_is_bad_input(capsys, latex, let, word
     assert "--let '" in err
 
 
+@pytest.mark.parametrize("latex, words", [
+    # Spong's law of cosines with c_1 ... free: does-not-hold on main (c_1 a free scalar)
+    (r"(a_1c_1 + a_2c_{12})^2 + (a_1s_1 + a_2s_{12})^2 = a_1^2 + a_2^2 + 2a_1a_2c_2",
+     "c_{12}, c_{1}, c_{2}, s_{12}, s_{1}: in Siciliano, Spong and Craig the cos and sin"),
+    (r"\hat\omega^3 = -\hat\omega", "--notation lynch-park or --notation murray-li-sastry"),
+])
+def test_a_symbol_whose_meaning_differs_between_books_is_named(capsys, latex, words):
+    code, _, err = _cli(capsys, "--latex", latex)
+    assert code == 2 and words in err, err
+
+
 def test_a_shape_mismatch_of_declared_symbols_is_still_a_slip():
     r = rigidsym.check_latex(r"\omega = R", let=[r"R: rotation; \omega: vector"])
     assert r.verdict == "does-not-hold"
@@ -167,6 +178,10 @@ def test_a_shape_mismatch_of_declared_symbols_is_still_a_slip():
     (r"c_{12} = c_1 c_2 - s_1 s_2", "siciliano", [], "verified"),
     (r"s_{12} = s_1 c_2 + c_1 s_2", "spong", [], "verified"),
     (r"c_{12} = c_1 c_2 + s_1 s_2", "craig", [], "does-not-hold"),
+    (r"(a_1c_1 + a_2c_{12})^2 + (a_1s_1 + a_2s_{12})^2 = a_1^2 + a_2^2 + 2a_1a_2c_2",
+     "spong", [], "verified"),
+    (r"\hat\omega^3 = -\hat\omega", "murray-li-sastry", [r"\omega: unit vector"],
+     "verified"),
     (r"P^T R^T R P = P^T P", "craig", [], "verified"),      # capital P a vector in Craig
     (r"\mathbf{C}^T\mathbf{C} = \mathbf{1}", "barfoot", [], "verified"),
     (r"\mathbf{u}^T\mathbf{u} = 1", "sola", [], "verified"),
