@@ -97,6 +97,12 @@ def test_a_symbol_before_a_parenthesised_scalar_is_applied_to_it(latex):
     assert any("R(θ): R applied to θ" in n for n in r.model)
 
 
+def test_a_model_may_be_written_as_the_books_do_with_its_argument():
+    r = rigidsym.check_latex(r"R(\theta)^T R(\theta) = I",
+                             let=[OMEGA, r"R(\theta) = e^{[\hat\omega]\theta}"])
+    assert r.verdict == "verified"
+
+
 @pytest.mark.parametrize("latex, let", [
     (r"c(a + b)^2 = c a^2 + 2 c a b + c b^2", "a: scalar"),            # a scalar: a product
     (r"A(x + y) = A x + A y", "A: matrix; x: vector; y: vector"),      # a vector argument
