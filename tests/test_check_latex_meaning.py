@@ -70,6 +70,15 @@ def test_an_undecided_verdict_prints_its_reason(capsys):
     assert code == 3 and "Undecided: printed: trig" in out
 
 
+def test_the_reason_of_a_trig_of_a_norm_is_printed_in_book_notation(capsys):
+    # issue 40: its reason ("trig of non-angle argument") was only in --json
+    code, out, _ = _cli(capsys, "--latex", "J w = w", "--let", r"w: vector; \theta = \sqrt{w^T w}",
+                        "--let", r"J = I + \frac{1 - \cos\theta}{\theta^2}[w] + "
+                                 r"\frac{\theta - \sin\theta}{\theta^3}[w]^2")
+    assert code == 3 and "Undecided: printed: trig of non-angle argument √(w₁² + w₂² + w₃²)" \
+        in out, out
+
+
 def test_the_reports_print_the_reason_of_an_undecided_member():
     from rigidsym.report.html import to_html
     from rigidsym.report.markdown import to_markdown
