@@ -204,6 +204,9 @@ def read_lets(let) -> list[Let]:
             out.append(Let(d, name, _key(name, d), kind=kind))
         elif eq >= 0:
             name, tex = d[:eq].strip(), d[eq + 1:].strip()
+            applied = re.fullmatch(r"(.+?)\s*\(([^()]+)\)", name)
+            if applied:  # R(\theta) = ...: the model of R, in theta (latex.meaning)
+                name = applied.group(1)
             if not tex:
                 raise BadInput(f"--let '{d}': expected LaTeX after '='")
             out.append(Let(d, name, _key(name, d), latex=tex))

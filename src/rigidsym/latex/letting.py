@@ -122,6 +122,7 @@ def read_statement(latex: str, lets: list[Let], book: str | None = None,
     models.update({name: v for name, (_, v) in lend.items() if v is not None})
     guards.applications(parsed.applied, models, glyphs)
     guards.time_derivatives(free, rd.used, rd.declared)
+    guards.book_meanings(free)
     model = _resolve(values, explicit)
     _EXPLICIT_CACHE.clear()
     printed, kind = _relations(parsed)

@@ -27,6 +27,7 @@ import lark
 import sympy as sp
 
 from rigidsym.algebra import motions
+from rigidsym.latex.meaning import as_written
 from rigidsym.latex.shapes import LatexError, _as_scalar, _shape, _words
 
 __all__: list[str] = []
@@ -144,7 +145,7 @@ class VocabRules:
         self._note("[x] of a 3-vector (6-vector) read as its so(3) (se(3)) matrix hat(x) "
                    "(MR (3.30), (3.85)); a bracket holding a sum, a scalar or a matrix "
                    "groups; write ( ) to group a vector")
-        return motions.hat(v)
+        return as_written(motions.hat(v))  # printed [x] as written (latex.meaning)
 
     # ---- derivatives
     def deriv_op(self, items):
