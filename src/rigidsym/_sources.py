@@ -5,7 +5,8 @@ versions of the libraries behind the results.
 The book's ``.py`` files are digested per module, with the book modules each imports
 (transitively), so that a change to one module invalidates the results of what uses it
 only (issue 39); every other file of the package (the machinery, the book's data files)
-is in :func:`machinery_digest`. Imports nothing of rigidsym but :mod:`rigidsym._config`.
+is in :func:`machinery_digest`. Imports nothing of rigidsym but :mod:`rigidsym._config` and
+:mod:`rigidsym._cache`.
 """
 
 from __future__ import annotations
@@ -84,9 +85,26 @@ def _digest(files) -> str:
 
 
 def imported_names(path: Path, package: str) -> set[str]:
-    """Module names an ``import`` of the file may bind (submodules of ``from`` imports too)."""
+    """Module names an ``import`` of the file may bind (submodules of ``from`` imports too).
+
+    Kept in the user cache by the file's content (``<key>.imports``): parsing the book's
+    modules was most of a warm command's cache keys (issue 39)."""
+    from rigidsym import _cache
+
+    data = path.read_bytes()
+    key = hashlib.sha256(data + b"\0" + package.encode()).hexdigest()
+    where = _cache.folder("verdicts") / key[:2] / f"{key}.imports"
+    hit = _cache.get(where)
+    if hit is not None:
+        return set(json.loads(hit))
+    out = _parsed_imports(data, path, package)
+    _cache.put(where, json.dumps(sorted(out)).encode())
+    return out
+
+
+def _parsed_imports(data: bytes, path: Path, package: str) -> set[str]:
     out: set[str] = set()
-    for node in ast.walk(ast.parse(path.read_bytes(), str(path))):
+    for node in ast.walk(ast.parse(data, str(path))):
         if isinstance(node, ast.Import):
             for a in node.names:
                 parts = a.name.split(".")
