@@ -220,7 +220,9 @@ class Library:
     raise naming ``name``), ``device(arrays)``, ``host(x)`` (a NumPy copy), ``make(space,
     name)`` (``f(*broadcast inputs) -> (*outputs, singular)``, with the derivative rule),
     ``refuse(exc_type, message)`` (raises the refusals of :func:`modes`) and ``note(values)``
-    (a warning before conversion, or nothing).
+    (a warning before conversion, or nothing); for the dtypes, ``floats`` (those accepted),
+    ``float32``, ``finfo``, ``float_dtype(v)`` (the library dtype of a floating library or
+    NumPy array, else None) and ``cast(x, dtype)``.
     """
 
     backend: str
@@ -236,6 +238,11 @@ class Library:
     device: Callable
     host: Callable
     make: Callable
+    floats: tuple
+    float32: Any
+    finfo: Callable
+    float_dtype: Callable
+    cast: Callable
     refuse: Callable = _raise
     note: Callable = lambda values: None
 
@@ -243,16 +250,26 @@ class Library:
 _BAD_KINDS = "bcOUSMmV"  # NumPy kinds that are no real numbers
 
 
-def convert(lib: Library, values: tuple, args: list[dict]) -> list:
-    """The library arrays of ``values``, of one floating dtype on one device.
+def convert(lib: Library, values: tuple, args: list[dict]) -> tuple[list, Any, float]:
+    """The library arrays of ``values`` on one device, in the dtype the kernel computes in.
+
+    Returns:
+        ``(arrays, dtype, eps)``: ``dtype`` is the inputs' promoted dtype (the library's
+        rule, :attr:`Library.dtype`), that of the results; the arrays are in it, or in
+        float32 for float16 and bfloat16 (computed in float32, rounded once at the end);
+        ``eps`` is the machine epsilon of the lowest precision among the inputs and the
+        result, for the validation tolerance (a float32 unit vector with a float64 angle
+        is checked at float32's).
 
     Raises:
-        TypeError: an argument holds no real numbers (named).
+        TypeError: an argument holds no real numbers, or a float type other than float16,
+            bfloat16, float32 and float64 (named).
         ValueError: ragged, on another device, or the wrong trailing shape (named).
     """
     lib.note(values)
-    arrays = []
+    arrays, eps = [], []
     for v, a in zip(values, args, strict=True):
+        given = lib.is_array(v) or isinstance(v, (np.ndarray, np.generic))
         if lib.is_array(v):
             if not lib.real(v):
                 raise TypeError(f"{a['name']}: expected real numbers, got {v.dtype}")
@@ -263,17 +280,25 @@ def convert(lib: Library, values: tuple, args: list[dict]) -> list:
                 raise ValueError(f"{a['name']}: not a rectangular array ({exc})") from None
             if v.dtype.kind in _BAD_KINDS:
                 raise TypeError(f"{a['name']}: expected real numbers, got {v.dtype}")
+        fd = lib.float_dtype(v)
+        if fd is not None and fd not in lib.floats:
+            raise TypeError(f"{a['name']}: {v.dtype} is not supported; expected float16, "
+                            "bfloat16, float32 or float64 (or integers)")
+        if fd is not None and given:  # an array input, not a list or a Python number
+            eps.append(float(lib.finfo(fd).eps))
         arrays.append(v)
     dtype, device = lib.dtype(values, arrays), lib.device(arrays)
+    eps.append(float(lib.finfo(dtype).eps))
+    work = lib.float32 if lib.finfo(dtype).bits < 32 else dtype
     out = []
     for v, a in zip(arrays, args, strict=True):
-        t = lib.as_array(v, dtype, device, a["name"])
+        t = lib.as_array(v, work, device, a["name"])
         shape = tuple(a["shape"])
         if t.ndim < len(shape) or tuple(t.shape[t.ndim - len(shape):]) != shape:
             raise ValueError(f"{a['name']}: expected shape {_shp(shape)}, got "
                              f"{tuple(t.shape)}")
         out.append(t)
-    return out
+    return out, dtype, max(eps)
 
 
 class Space:
@@ -316,14 +341,16 @@ class Space:
         lib, xp = self.lib, self.lib.xp
         meta = self.progs.meta[name]
         args = meta["args"]
-        xs = convert(lib, values, args)
+        xs, dtype, eps = convert(lib, values, args)
         check, on_singular = modes(check, on_singular, lib.traced(xs), lib.tracer, lib.refuse)
         batch = broadcast_batch(xp.broadcast_shapes, xs, args)
         if check:
-            validate(xp, [lib.detach(x) for x in xs], args)
+            validate(xp, [lib.detach(x) for x in xs], args, eps)
         full = [xp.broadcast_to(x, batch + tuple(a["shape"])) for x, a in zip(xs, args,
                                                                              strict=True)]
         *res, sing = self.function(name)(*full)
+        if res[0].dtype != dtype:  # float16, bfloat16: computed in float32, rounded once
+            res = [lib.cast(r, dtype) for r in res]
         bad = sing
         if check:
             over = xp.zeros_like(sing)

@@ -70,9 +70,14 @@ def _x64_note(values) -> None:
                       UserWarning, stacklevel=5)
 
 
+def _float_dtype(v):
+    """The dtype of a floating array (bfloat16's NumPy kind is "V": asked of JAX), else None."""
+    return np.dtype(v.dtype) if jnp.issubdtype(v.dtype, jnp.floating) else None
+
+
 def _dtype(values, arrays):
     """The floating dtypes of the arrays promoted as JAX does, else JAX's default float."""
-    found = [x.dtype for x in arrays if np.dtype(x.dtype).kind == "f"]
+    found = [x.dtype for x in arrays if _float_dtype(x) is not None]
     return jnp.result_type(*found) if found else jnp.result_type(float)
 
 
@@ -106,9 +111,12 @@ _LIBRARY = _arrays.Library(
     backend="jax", xp=jnp, tracer="jax.jit / jax.vmap / jax.grad", traced=_traced,
     stop_gradient=jax.lax.stop_gradient, detach=lambda x: x,
     is_array=lambda v: isinstance(v, jax.Array),
-    real=lambda v: np.dtype(v.dtype).kind not in _arrays._BAD_KINDS,
+    real=lambda v: _float_dtype(v) is not None or np.dtype(v.dtype).kind in "iu",
     dtype=_dtype, as_array=lambda v, dtype, device, name: jnp.asarray(v, dtype=dtype),
-    device=lambda xs: None, host=np.asarray, make=_make, note=_x64_note)
+    device=lambda xs: None, host=np.asarray, make=_make, note=_x64_note,
+    floats=tuple(np.dtype(t) for t in (jnp.float16, jnp.bfloat16, jnp.float32, jnp.float64)),
+    float32=np.dtype(jnp.float32), finfo=jnp.finfo, cast=lambda x, dtype: x.astype(dtype),
+    float_dtype=_float_dtype)
 
 # load, the Euler-angle kernels, the lazy kernels: the same for both back-ends (_arrays_api)
 load, euler_rate_matrix, euler_angle_rates, __getattr__, __dir__, _space = \

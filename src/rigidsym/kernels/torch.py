@@ -75,12 +75,27 @@ except TypeError:  # torch < 2.7: no reason; Dynamo's message names the function
     _refuse = torch.compiler.disable(_needs_eager_mode)
 
 
+_FLOATS = (torch.float16, torch.bfloat16, torch.float32, torch.float64)
+_NUMPY = {np.dtype(np.float16): torch.float16, np.dtype(np.float32): torch.float32,
+          np.dtype(np.float64): torch.float64}
+
+
+def _float_dtype(v):
+    """The torch dtype of a floating tensor or NumPy array (a NumPy float torch lacks: its
+    NumPy dtype, refused by the caller), else None."""
+    if isinstance(v, torch.Tensor):
+        return v.dtype if v.dtype.is_floating_point else None
+    return _NUMPY.get(v.dtype, v.dtype) if v.dtype.kind == "f" else None
+
+
 def _dtype(values, arrays) -> torch.dtype:
-    """The promoted dtype of the floating tensors and NumPy arrays among the raw ``values``
-    (Python numbers and lists are weak, as in torch), else the default dtype."""
-    found = [v.dtype for v in values if isinstance(v, torch.Tensor) and v.dtype.is_floating_point]
-    found += [torch.from_numpy(np.empty(0, v.dtype)).dtype for v in values
-              if isinstance(v, np.ndarray) and v.dtype.kind == "f"]
+    """torch's promotion of the floating tensors and NumPy arrays among the raw ``values``:
+    the dimensioned ones decide, else the zero-dimensional ones (``torch.ones(3,
+    dtype=float32) * torch.tensor(2.0, dtype=float64)`` is float32); Python numbers and
+    lists are weak, as in torch; none at all: the default dtype."""
+    found = [(v.ndim > 0, _float_dtype(v)) for v, x in zip(values, arrays, strict=True)
+             if isinstance(v, torch.Tensor | np.ndarray) and _float_dtype(x) is not None]
+    found = [d for dim, d in found if dim] or [d for _, d in found]
     if not found:
         return torch.get_default_dtype()
     dt = found[0]
@@ -172,7 +187,9 @@ _LIBRARY = _arrays.Library(
     real=lambda v: v.dtype != torch.bool and not v.dtype.is_complex,
     dtype=_dtype, as_array=_as_tensor,
     device=lambda xs: next((x.device for x in xs if isinstance(x, torch.Tensor)), None),
-    host=lambda x: x.cpu().numpy(), make=_make, refuse=_refuse)
+    host=lambda x: x.cpu().numpy(), make=_make, refuse=_refuse, floats=_FLOATS,
+    float32=torch.float32, finfo=torch.finfo, float_dtype=_float_dtype,
+    cast=lambda x, dtype: x.to(dtype))
 
 # load, the Euler-angle kernels, the lazy kernels: the same for both back-ends (_arrays_api)
 load, euler_rate_matrix, euler_angle_rates, __getattr__, __dir__, _space = \
