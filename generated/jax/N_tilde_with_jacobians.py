@@ -106,3 +106,7 @@ def _main(e_0, e_1, e_2, phi):
 VARIANTS = (
     ("main", _main, None),
 )
+
+
+#: the vector-Jacobian product (rigidsym.codegen.vjp), None without a generated Jacobian
+VJP = None

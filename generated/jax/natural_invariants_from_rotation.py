@@ -131,3 +131,7 @@ VARIANTS = (
     ("near_pi_2", _near_pi_2, _when_near_pi_2),
     ("main", _main, None),
 )
+
+
+#: the vector-Jacobian product (rigidsym.codegen.vjp), None without a generated Jacobian
+VJP = None

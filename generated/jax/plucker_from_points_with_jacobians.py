@@ -113,3 +113,7 @@ def _main(p1_0, p1_1, p1_2, p2_0, p2_1, p2_2):
 VARIANTS = (
     ("main", _main, None),
 )
+
+
+#: the vector-Jacobian product (rigidsym.codegen.vjp), None without a generated Jacobian
+VJP = None

@@ -43,3 +43,32 @@ def _main(kappa_A_0, kappa_A_1, kappa_A_2, kappa_A_3, kappa_A_4, kappa_A_5, a_0,
 VARIANTS = (
     ("main", _main, None),
 )
+
+
+def _vjp(kappa_A_0, kappa_A_1, kappa_A_2, kappa_A_3, kappa_A_4, kappa_A_5, a_0, a_1, a_2, b_0, b_1, b_2, _g0, _g1, _g2, _g3, _g4, _g5):
+    """The cotangents of the inputs (``COLUMNS``) from those of the outputs: reverse mode
+    over ``_main``, 27 operations."""
+    x0 = a_2 - b_2
+    x1 = a_1 - b_1
+    x2 = a_0 - b_0
+    _b0 = -_g4*kappa_A_2 + _g5*kappa_A_1
+    _b1 = _g3*kappa_A_2 - _g5*kappa_A_0
+    _b2 = -_g3*kappa_A_1 + _g4*kappa_A_0
+    return (
+        _g0 + _g4*x0 - _g5*x1,
+        _g1 - _g3*x0 + _g5*x2,
+        _g2 + _g3*x1 - _g4*x2,
+        _g3,
+        _g4,
+        _g5,
+        _b0,
+        _b1,
+        _b2,
+        -_b0,
+        -_b1,
+        -_b2,
+    )
+
+
+#: the vector-Jacobian product (rigidsym.codegen.vjp), None without a generated Jacobian
+VJP = _vjp

@@ -43,3 +43,32 @@ def _main(w_A_0, w_A_1, w_A_2, w_A_3, w_A_4, w_A_5, a_0, a_1, a_2, p_0, p_1, p_2
 VARIANTS = (
     ("main", _main, None),
 )
+
+
+def _vjp(w_A_0, w_A_1, w_A_2, w_A_3, w_A_4, w_A_5, a_0, a_1, a_2, p_0, p_1, p_2, _g0, _g1, _g2, _g3, _g4, _g5):
+    """The cotangents of the inputs (``COLUMNS``) from those of the outputs: reverse mode
+    over ``_main``, 27 operations."""
+    x0 = a_2 - p_2
+    x1 = a_1 - p_1
+    x2 = a_0 - p_0
+    _b0 = -_g1*w_A_5 + _g2*w_A_4
+    _b1 = _g0*w_A_5 - _g2*w_A_3
+    _b2 = -_g0*w_A_4 + _g1*w_A_3
+    return (
+        _g0,
+        _g1,
+        _g2,
+        _g1*x0 - _g2*x1 + _g3,
+        -_g0*x0 + _g2*x2 + _g4,
+        _g0*x1 - _g1*x2 + _g5,
+        _b0,
+        _b1,
+        _b2,
+        -_b0,
+        -_b1,
+        -_b2,
+    )
+
+
+#: the vector-Jacobian product (rigidsym.codegen.vjp), None without a generated Jacobian
+VJP = _vjp

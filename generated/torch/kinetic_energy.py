@@ -36,3 +36,32 @@ def _main(I_C_00, I_C_01, I_C_02, I_C_10, I_C_11, I_C_12, I_C_20, I_C_21, I_C_22
 VARIANTS = (
     ("main", _main, None),
 )
+
+
+def _vjp(I_C_00, I_C_01, I_C_02, I_C_10, I_C_11, I_C_12, I_C_20, I_C_21, I_C_22, m, omega_0, omega_1, omega_2, c_dot_0, c_dot_1, c_dot_2, _g0):
+    """The cotangents of the inputs (``COLUMNS``) from those of the outputs: reverse mode
+    over ``_main``, 86 operations."""
+    x0 = (0.5)*m
+    _b0 = _g0*((c_dot_0*c_dot_0) + (c_dot_1*c_dot_1) + (c_dot_2*c_dot_2))
+    return (
+        (0.5)*_g0*(omega_0*omega_0),
+        (0.5)*_g0*omega_0*omega_1,
+        (0.5)*_g0*omega_0*omega_2,
+        (0.5)*_g0*omega_0*omega_1,
+        (0.5)*_g0*(omega_1*omega_1),
+        (0.5)*_g0*omega_1*omega_2,
+        (0.5)*_g0*omega_0*omega_2,
+        (0.5)*_g0*omega_1*omega_2,
+        (0.5)*_g0*(omega_2*omega_2),
+        (0.5)*_b0,
+        _g0*(I_C_00*omega_0 + (0.5)*I_C_01*omega_1 + (0.5)*I_C_02*omega_2 + (0.5)*I_C_10*omega_1 + (0.5)*I_C_20*omega_2),
+        _g0*((0.5)*I_C_01*omega_0 + (0.5)*I_C_10*omega_0 + I_C_11*omega_1 + (0.5)*I_C_12*omega_2 + (0.5)*I_C_21*omega_2),
+        _g0*((0.5)*I_C_02*omega_0 + (0.5)*I_C_12*omega_1 + (0.5)*I_C_20*omega_0 + (0.5)*I_C_21*omega_1 + I_C_22*omega_2),
+        2.0*_g0*c_dot_0*x0,
+        2.0*_g0*c_dot_1*x0,
+        2.0*_g0*c_dot_2*x0,
+    )
+
+
+#: the vector-Jacobian product (rigidsym.codegen.vjp), None without a generated Jacobian
+VJP = _vjp

@@ -51,3 +51,30 @@ def _main(p1_0, p1_1, p1_2, p2_0, p2_1, p2_2):
 VARIANTS = (
     ("main", _main, None),
 )
+
+
+def _vjp(p1_0, p1_1, p1_2, p2_0, p2_1, p2_2, _g0, _g1, _g2, _g3, _g4, _g5):
+    """The cotangents of the inputs (``COLUMNS``) from those of the outputs: reverse mode
+    over ``_main``, 84 operations."""
+    x0 = -p1_0 + p2_0
+    x1 = -p1_1 + p2_1
+    x2 = -p1_2 + p2_2
+    x3 = (x0*x0) + (x1*x1) + (x2*x2)
+    x4 = 1.0/torch.sqrt(x3)
+    _b0 = _g0*x0 + _g1*x1 + _g2*x2 + _g3*(p1_1*p2_2 - p1_2*p2_1) + _g4*(-p1_0*p2_2 + p1_2*p2_0) + _g5*(p1_0*p2_1 - p1_1*p2_0)
+    _b1 = -0.5*_b0/(x3*torch.sqrt(x3))
+    _b2 = 2.0*_b1*x2 + _g2*x4
+    _b3 = 2.0*_b1*x1 + _g1*x4
+    _b4 = 2.0*_b1*x0 + _g0*x4
+    return (
+        -_b4 - _g4*p2_2*x4 + _g5*p2_1*x4,
+        -_b3 + _g3*p2_2*x4 - _g5*p2_0*x4,
+        -_b2 - _g3*p2_1*x4 + _g4*p2_0*x4,
+        _b4 + _g4*p1_2*x4 - _g5*p1_1*x4,
+        _b3 - _g3*p1_2*x4 + _g5*p1_0*x4,
+        _b2 + _g3*p1_1*x4 - _g4*p1_0*x4,
+    )
+
+
+#: the vector-Jacobian product (rigidsym.codegen.vjp), None without a generated Jacobian
+VJP = _vjp

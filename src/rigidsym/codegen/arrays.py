@@ -14,7 +14,9 @@ from __future__ import annotations
 
 from typing import Any
 
+from rigidsym.codegen.jacobians import has_jacobian
 from rigidsym.codegen.printers import KernelJaxPrinter, torch_printer
+from rigidsym.codegen.vjp import cotangent_names, vjp_program
 
 __all__ = ["BACKENDS", "render_array_kernels"]
 
@@ -45,12 +47,21 @@ def render_array_kernels(env, kc: Any, header) -> dict[str, str]:
     """
     t = "array_kernel.py.j2"
     columns = [str(s) for _, syms in kc.inputs for s in syms]
+    # the backward of a kernel with a generated Jacobian (one formula, no branches): reverse
+    # mode over its optimised program (issue 38)
+    vjp = None
+    if has_jacobian(kc.kernel) and len(kc.variants) == 1:
+        vjp = vjp_program(kc.variants[0].program, [s for _, syms in kc.inputs for s in syms])
     files = {}
     for backend, module in BACKENDS.items():
         pr = _printer(backend)
         # branches first, in order, then main (the order of the NumPy kernel's selection)
         variants = [_variant(v, pr) for v in kc.variants]
+        back = None if vjp is None else {
+            "args": columns + cotangent_names(len(kc.variants[0].program.outputs)),
+            "temps": [(str(s), pr.doprint(e)) for s, e in vjp.temps],
+            "outputs": [pr.doprint(e) for e in vjp.outputs], "ops": vjp.ops}
         files[f"{backend}/{kc.kernel.name}.py"] = env.get_template(t).render(
             header=header(t), backend=backend, module=module, k=kc.kernel, ops=kc.ops,
-            hash=kc.hash, columns=columns, variants=variants)
+            hash=kc.hash, columns=columns, variants=variants, vjp=back)
     return files

@@ -78,7 +78,15 @@ class ArraySpace:
             mod = load_module(f"rigidsym._{self.backend}_{key}.{name}",
                               self.directory / self.backend / f"{name}.py")
             v = self._programs[name] = mod.VARIANTS
+            # the generated vector-Jacobian product; None in a folder generated before it
+            self._programs["vjp", name] = getattr(mod, "VJP", None)
         return v
+
+    def vjp(self, name: str):
+        """The generated reverse-mode program of kernel ``name`` (``rigidsym.codegen.vjp``):
+        ``f(*columns, *output cotangents) -> input cotangents``, or None."""
+        self.variants(name)
+        return self._programs["vjp", name]
 
     def safe(self, name: str) -> list[float]:
         """The :func:`safe_point` of kernel ``name``'s arguments (cached)."""
@@ -333,6 +341,25 @@ class Space:
                            columns(xs, meta["args"]), self.lib.stop_gradient,
                            self.progs.safe(name), singular)
         return flat[nval:]
+
+    def vjp(self, name: str, xs, grads: list, singular) -> list:
+        """The cotangents of the inputs ``xs`` from those of the outputs, ``grads`` (None:
+        zero): the generated reverse-mode program, on the safe point's inputs in the
+        ``singular`` samples (their cotangent is zero there), plain arithmetic that autograd
+        differentiates again; the Jacobian kernel then a contraction in a folder generated
+        without it."""
+        meta, xp = self.progs.meta[name], self.lib.xp
+        args, outs = meta["args"], meta["outputs"]
+        fn = self.progs.vjp(name)
+        if fn is None:
+            return contract(xp, grads, self.jacobian(name, xs, singular), outs, args,
+                            forward=False)
+        cols = [xp.where(singular, v, c)
+                for v, c in zip(self.progs.safe(name), columns(xs, args), strict=True)]
+        gcols = []
+        for g, o in zip(grads, outs, strict=True):
+            gcols += ([0.0] * int(math.prod(o["shape"])) if g is None else columns([g], [o]))
+        return shape_outputs(xp, list(fn(*cols, *gcols)), args, cols[0])
 
     def call(self, name: str, values: tuple, check, on_singular):
         """Kernel ``name`` on ``values`` (the public functions' body): convert, validate

@@ -147,8 +147,7 @@ def _function(space: _arrays.Space, name: str, forward_mode: bool):
         # plain tensor arithmetic on the saved inputs: differentiable again
         # (create_graph=True, gradgradcheck)
         *xs, sing = ctx.saved_tensors
-        return tuple(_arrays.contract(torch, list(grads[:-1]), space.jacobian(name, xs, sing),
-                                      outs, args, forward=False))
+        return tuple(space.vjp(name, xs, list(grads[:-1]), sing))
 
     def jvp(ctx, *tangents):
         *xs, sing = ctx.saved_tensors
