@@ -78,5 +78,6 @@ VARIANTS = (
 )
 
 
-#: the vector-Jacobian product (rigidsym.codegen.vjp), None without a generated Jacobian
-VJP = None
+#: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.vjp), None without a
+#: generated Jacobian
+VJP = JVP = None

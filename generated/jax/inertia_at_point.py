@@ -95,5 +95,39 @@ def _vjp(I_C_00, I_C_01, I_C_02, I_C_10, I_C_11, I_C_12, I_C_20, I_C_21, I_C_22,
     )
 
 
-#: the vector-Jacobian product (rigidsym.codegen.vjp), None without a generated Jacobian
-VJP = _vjp
+def _jvp(I_C_00, I_C_01, I_C_02, I_C_10, I_C_11, I_C_12, I_C_20, I_C_21, I_C_22, m, c_0, c_1, c_2, a_0, a_1, a_2, _t0, _t1, _t2, _t3, _t4, _t5, _t6, _t7, _t8, _t9, _t10, _t11, _t12, _t13, _t14, _t15):
+    """The tangents of the outputs from those of the inputs, linear in the tangents:
+    forward mode over ``_main``, 63 operations."""
+    x0 = a_1 - c_1
+    _d0 = -_t11 + _t14
+    x1 = (x0*x0)
+    _d1 = 2.0*_d0*x0
+    x2 = a_2 - c_2
+    _d2 = -_t12 + _t15
+    x3 = (x2*x2)
+    _d3 = 2.0*_d2*x2
+    x4 = a_0 - c_0
+    _d4 = -_t10 + _t13
+    x5 = m*x4
+    _d5 = _d4*m + _t9*x4
+    _d6 = -_d0*x5 - _d5*x0
+    _d7 = -_d2*x5 - _d5*x2
+    x8 = (x4*x4)
+    _d8 = 2.0*_d4*x4
+    _d9 = -_d0*m*x2 - _d2*m*x0 - _t9*x0*x2
+    return (
+        _d1*m + _d3*m + _t0 + _t9*(x1 + x3),
+        _d6 + _t1,
+        _d7 + _t2,
+        _d6 + _t3,
+        _d3*m + _d8*m + _t4 + _t9*(x3 + x8),
+        _d9 + _t5,
+        _d7 + _t6,
+        _d9 + _t7,
+        _d1*m + _d8*m + _t8 + _t9*(x1 + x8),
+    )
+
+
+#: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.vjp), None without a
+#: generated Jacobian
+VJP, JVP = _vjp, _jvp

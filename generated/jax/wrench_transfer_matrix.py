@@ -91,5 +91,52 @@ def _vjp(a_0, a_1, a_2, p_0, p_1, p_2, _g0, _g1, _g2, _g3, _g4, _g5, _g6, _g7, _
     )
 
 
-#: the vector-Jacobian product (rigidsym.codegen.vjp), None without a generated Jacobian
-VJP = _vjp
+def _jvp(a_0, a_1, a_2, p_0, p_1, p_2, _t0, _t1, _t2, _t3, _t4, _t5):
+    """The tangents of the outputs from those of the inputs, linear in the tangents:
+    forward mode over ``_main``, 6 operations."""
+    _d0 = _t2 - _t5
+    _d1 = _t1 - _t4
+    _d2 = _t0 - _t3
+    return (
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        -_d0,
+        _d1,
+        0.0,
+        0.0,
+        0.0,
+        _d0,
+        0.0,
+        -_d2,
+        0.0,
+        0.0,
+        0.0,
+        -_d1,
+        _d2,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+    )
+
+
+#: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.vjp), None without a
+#: generated Jacobian
+VJP, JVP = _vjp, _jvp

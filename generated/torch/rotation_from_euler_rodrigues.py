@@ -86,5 +86,38 @@ def _vjp(eta_0, eta_1, eta_2, eta_3, _g0, _g1, _g2, _g3, _g4, _g5, _g6, _g7, _g8
     )
 
 
-#: the vector-Jacobian product (rigidsym.codegen.vjp), None without a generated Jacobian
-VJP = _vjp
+def _jvp(eta_0, eta_1, eta_2, eta_3, _t0, _t1, _t2, _t3):
+    """The tangents of the outputs from those of the inputs, linear in the tangents:
+    forward mode over ``_main``, 55 operations."""
+    _d0 = 2.0*_t3*eta_3
+    _d1 = 2.0*_t2*eta_2
+    _d2 = -_d1
+    _d3 = 2.0*_t0*eta_0
+    _d4 = 2.0*_t1*eta_1
+    _d5 = _d3 - _d4
+    x6 = 2.0*eta_1
+    _d6 = 2.0*_t1
+    _d7 = _d6*eta_0 + _t0*x6
+    x8 = 2.0*eta_2
+    _d8 = 2.0*_t2
+    _d9 = _d8*eta_3 + _t3*x8
+    _d10 = _d8*eta_0 + _t0*x8
+    _d11 = _d6*eta_3 + _t3*x6
+    _d12 = -_d0
+    _d13 = 2.0*_t0*eta_3 + 2.0*_t3*eta_0
+    return (
+        _d0 + _d2 + _d5,
+        _d7 - _d9,
+        _d10 + _d11,
+        _d7 + _d9,
+        -_d1 - _d12 - _d5,
+        -_d13 + 2.0*_t1*eta_2 + 2.0*_t2*eta_1,
+        _d10 - _d11,
+        _d13 + _d8*eta_1 + _t1*x8,
+        -_d12 - _d2 - _d3 - _d4,
+    )
+
+
+#: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.vjp), None without a
+#: generated Jacobian
+VJP, JVP = _vjp, _jvp

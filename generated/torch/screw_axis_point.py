@@ -132,5 +132,66 @@ def _vjp(e_0, e_1, e_2, phi, a_0, a_1, a_2, a_prime_0, a_prime_1, a_prime_2, _g0
     )
 
 
-#: the vector-Jacobian product (rigidsym.codegen.vjp), None without a generated Jacobian
-VJP = _vjp
+def _jvp(e_0, e_1, e_2, phi, a_0, a_1, a_2, a_prime_0, a_prime_1, a_prime_2, _t0, _t1, _t2, _t3, _t4, _t5, _t6, _t7, _t8, _t9):
+    """The tangents of the outputs from those of the inputs, linear in the tangents:
+    forward mode over ``_main``, 301 operations."""
+    x0 = (0.5)*phi
+    _d0 = (0.5)*_t3
+    x1 = torch.sin(x0)
+    _d1 = _d0*torch.cos(x0)
+    x2 = (x1*x1)
+    _d2 = 2.0*_d1*x1
+    x3 = (e_0*e_0)
+    _d3 = 2.0*_t0*e_0
+    x4 = 2.0*x2
+    _d4 = 2.0*_d2
+    x5 = 1.0 - x4
+    _d5 = -_d4
+    x6 = e_0*e_1*x4
+    _d6 = _d4*e_0*e_1 + _t0*e_1*x4 + _t1*e_0*x4
+    x7 = 2.0*x1*torch.cos(x0)
+    _d7 = -2.0*_d0*(x1*x1) + 2.0*_d1*torch.cos(x0)
+    x8 = e_2*x7
+    _d8 = _d7*e_2 + _t2*x7
+    x9 = x6 - x8
+    _d9 = _d6 - _d8
+    x10 = e_2*x4
+    _d10 = _d4*e_2 + _t2*x4
+    x11 = e_0*x10
+    _d11 = _d10*e_0 + _t0*x10
+    x12 = e_1*x7
+    _d12 = _d7*e_1 + _t1*x7
+    x13 = x11 + x12
+    _d13 = _d11 + _d12
+    x14 = a_0*(x3 + x5*(1.0 - x3)) + a_1*x9 + a_2*x13 - a_prime_0
+    _d14 = _d13*a_2 + _d3*a_0*(1.0 - x5) + _d5*a_0*(1.0 - x3) + _d9*a_1 + _t4*(x3 + x5*(1.0 - x3)) + _t5*x9 + _t6*x13 - _t7
+    x15 = x6 + x8
+    _d15 = _d6 + _d8
+    x16 = (e_1*e_1)
+    _d16 = 2.0*_t1*e_1
+    x17 = e_0*x7
+    _d17 = _d7*e_0 + _t0*x7
+    x18 = 2.0*e_1*e_2*x2 - x17
+    _d18 = -_d17 + 2.0*_d2*e_1*e_2 + 2.0*_t1*e_2*x2 + 2.0*_t2*e_1*x2
+    x19 = a_0*x15 + a_1*(x16 + x5*(1.0 - x16)) + a_2*x18 - a_prime_1
+    _d19 = _d15*a_0 + _d16*a_1*(1.0 - x5) + _d18*a_2 + _d5*a_1*(1.0 - x16) + _t4*x15 + _t5*(x16 + x5*(1.0 - x16)) + _t6*x18 - _t8
+    x20 = x11 - x12
+    _d20 = _d11 - _d12
+    x21 = e_1*x10 + x17
+    _d21 = _d10*e_1 + _d17 + _t1*x10
+    x22 = (e_2*e_2)
+    _d22 = 2.0*_t2*e_2
+    x23 = a_0*x20 + a_1*x21 + a_2*(x22 + x5*(1.0 - x22)) - a_prime_2
+    _d23 = _d20*a_0 + _d21*a_1 + _d22*a_2*(1.0 - x5) + _d5*a_2*(1.0 - x22) + _t4*x20 + _t5*x21 + _t6*(x22 + x5*(1.0 - x22)) - _t9
+    x24 = (0.25)/x2
+    _d24 = -0.25*_d2/(x2*x2)
+    return (
+        _d14*x2*x24*(2.0*x3 - 2.0) + _d15*x19*x24 + _d19*x15*x24 + _d2*x14*x24*(2.0*x3 - 2.0) + _d20*x23*x24 + _d23*x20*x24 + _d24*(x14*x2*(2.0*x3 - 2.0) + x15*x19 + x20*x23) + 2.0*_d3*x14*x2*x24,
+        _d14*x24*x9 + 2.0*_d16*x19*x2*x24 + _d19*x2*x24*(2.0*x16 - 2.0) + _d2*x19*x24*(2.0*x16 - 2.0) + _d21*x23*x24 + _d23*x21*x24 + _d24*(x14*x9 + x19*x2*(2.0*x16 - 2.0) + x21*x23) + _d9*x14*x24,
+        _d13*x14*x24 + _d14*x13*x24 + _d18*x19*x24 + _d19*x18*x24 + _d2*x23*x24*(2.0*x22 - 2.0) + 2.0*_d22*x2*x23*x24 + _d23*x2*x24*(2.0*x22 - 2.0) + _d24*(x13*x14 + x18*x19 + x2*x23*(2.0*x22 - 2.0)),
+    )
+
+
+#: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.vjp), None without a
+#: generated Jacobian
+VJP, JVP = _vjp, _jvp

@@ -22,12 +22,50 @@ import sympy as sp
 
 from rigidsym.codegen.optimise import Program
 
-__all__ = ["vjp_program", "cotangent_names"]
+__all__ = ["vjp_program", "jvp_program", "cotangent_names", "tangent_names"]
 
 
 def cotangent_names(n: int) -> list[str]:
     """The names of the cotangent arguments of a program with ``n`` outputs."""
     return [f"_g{i}" for i in range(n)]
+
+
+def tangent_names(n: int) -> list[str]:
+    """The names of the tangent arguments of a program with ``n`` input components."""
+    return [f"_t{i}" for i in range(n)]
+
+
+def jvp_program(program: Program, inputs: list[sp.Symbol]) -> Program:
+    """The forward-mode program of ``program``: arguments ``inputs`` then the tangents
+    ``tangent_names(len(inputs))``; outputs the tangent of each output, linear in the
+    tangents (JAX transposes it for reverse mode). A temp's tangent is the sum of its local
+    derivatives times its arguments' tangents; temps nothing reads are dropped."""
+    tan = dict(zip(inputs, (sp.Symbol(n) for n in tangent_names(len(inputs))), strict=True))
+    known = _named(program.temps)
+    body = []
+
+    def d(expr) -> sp.Expr:
+        terms = [sp.diff(expr, s).xreplace(known) * tan[s]
+                 for s in sorted(expr.free_symbols, key=sp.default_sort_key) if s in tan]
+        return sp.Add(*terms)
+
+    for k, (x, e) in enumerate(program.temps):
+        body.append((x, e))
+        dx = d(e)
+        if dx != 0:
+            tan[x] = sp.Symbol(f"_d{k}")
+            body.append((tan[x], dx))
+    outputs = [d(sp.sympify(o)) for o in program.outputs]
+    need = set().union(*(sp.sympify(v).free_symbols for v in outputs))
+    kept = []
+    for x, e in reversed(body):
+        if x in need:
+            kept.append((x, e))
+            need |= e.free_symbols
+    kept.reverse()
+    ops = sum(int(sp.count_ops(v)) for _, v in kept) + sum(int(sp.count_ops(v))
+                                                           for v in outputs)
+    return Program(temps=kept, outputs=outputs, dens=[], ops=ops)
 
 
 def _named(temps: list) -> dict:

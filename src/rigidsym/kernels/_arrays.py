@@ -23,10 +23,9 @@ from typing import Any
 
 import numpy as np
 
-from rigidsym import _kinds
 from rigidsym._config import generated_dir
 from rigidsym._io import load_module
-from rigidsym.kernels._arrays_checks import _raise, broadcast_batch, modes, validate
+from rigidsym.kernels._arrays_checks import _raise, broadcast_batch, modes, safe_point, validate
 from rigidsym.kernels._errors import raise_flagged
 from rigidsym.kernels._jacobian import contract
 from rigidsym.kernels._jacobian import full_batch as _full
@@ -80,13 +79,15 @@ class ArraySpace:
             v = self._programs[name] = mod.VARIANTS
             # the generated vector-Jacobian product; None in a folder generated before it
             self._programs["vjp", name] = getattr(mod, "VJP", None)
+            self._programs["jvp", name] = getattr(mod, "JVP", None)
         return v
 
-    def vjp(self, name: str):
-        """The generated reverse-mode program of kernel ``name`` (``rigidsym.codegen.vjp``):
-        ``f(*columns, *output cotangents) -> input cotangents``, or None."""
+    def vjp(self, name: str, mode: str = "vjp"):
+        """The generated reverse-mode (``"vjp"``: ``f(*columns, *output cotangents) -> input
+        cotangents``) or forward-mode (``"jvp"``: ``f(*columns, *input tangents) -> output
+        tangents``) program of kernel ``name`` (``rigidsym.codegen.vjp``), or None."""
         self.variants(name)
-        return self._programs["vjp", name]
+        return self._programs[mode, name]
 
     def safe(self, name: str) -> list[float]:
         """The :func:`safe_point` of kernel ``name``'s arguments (cached)."""
@@ -154,26 +155,6 @@ def evaluate(xp, variants: tuple, cols: list, stop_gradient: Callable, safe=None
         _, singular = _evaluate(xp, variants, [stop_gradient(c) for c in cols], stop_gradient)
     cols = [xp.where(singular, v, c) for v, c in zip(safe, cols, strict=True)]
     return _evaluate(xp, variants, cols, stop_gradient)[0], singular
-
-
-def safe_point(args: list[dict]) -> list[float]:
-    """A fixed generic point of the inputs' sets, one float per column: constrained kinds
-    through their rational parametrisation (an exact unit vector or rotation), angles in
-    (0.4, 1.2), free entries in (-1.5, 1.5); regular for every kernel of the package (tested:
-    tests/test_arrays_masked.py), as a random point is with probability one."""
-    rng = np.random.default_rng(38)
-    out: list[float] = []
-    for a in args:
-        kind = _kinds.for_spec(a["kind"], tuple(a["shape"]))
-        n = int(math.prod(a["shape"]))
-        if kind is not None and kind.parametrise is not None:
-            vals = kind.parametrise(list(rng.uniform(-0.9, 0.9, len(kind.params))))
-        elif kind is not None and kind.half_angle:
-            vals = rng.uniform(0.4, 1.2, n)
-        else:
-            vals = rng.uniform(-1.5, 1.5, n)
-        out.extend(float(v) for v in vals)
-    return out
 
 
 def _evaluate(xp, variants: tuple, cols: list, stop_gradient: Callable) -> tuple[list, Any]:
@@ -360,6 +341,23 @@ class Space:
         for g, o in zip(grads, outs, strict=True):
             gcols += ([0.0] * int(math.prod(o["shape"])) if g is None else columns([g], [o]))
         return shape_outputs(xp, list(fn(*cols, *gcols)), args, cols[0])
+
+    def jvp(self, name: str, xs, tangents: list, singular) -> list:
+        """The tangents of the outputs from those of the inputs (arrays, zeros for none):
+        the generated forward-mode program, linear in the tangents, zero in the
+        ``singular`` samples (whose values are NaN or an error); the Jacobian kernel then
+        a contraction in a folder generated without it."""
+        meta, xp = self.progs.meta[name], self.lib.xp
+        args, outs = meta["args"], meta["outputs"]
+        fn = self.progs.vjp(name, "jvp")
+        if fn is None:
+            return contract(xp, tangents, self.jacobian(name, xs, singular), outs, args,
+                            forward=True, singular=singular)
+        cols = [xp.where(singular, v, c)
+                for v, c in zip(self.progs.safe(name), columns(xs, args), strict=True)]
+        flat = [xp.where(singular, 0.0, _full(xp, v, cols[0]))
+                for v in fn(*cols, *columns(tangents, args))]
+        return shape_outputs(xp, flat, outs, cols[0])
 
     def call(self, name: str, values: tuple, check, on_singular):
         """Kernel ``name`` on ``values`` (the public functions' body): convert, validate

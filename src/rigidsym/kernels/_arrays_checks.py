@@ -1,6 +1,7 @@
 """The input rules of the array back-ends (issue 31; split from ``_arrays``, issue 38): the
-keyword modes of eager and traced calls, the eager validation of constrained inputs, and
-the broadcast batch shape. No import of PyTorch or JAX.
+keyword modes of eager and traced calls, the eager validation of constrained inputs, the
+broadcast batch shape, and the regular point substituted in singular samples. No import of
+PyTorch or JAX.
 """
 
 from __future__ import annotations
@@ -12,7 +13,7 @@ import numpy as np
 
 from rigidsym import _kinds
 
-__all__ = ["modes", "validate", "broadcast_batch", "tolerance"]
+__all__ = ["modes", "validate", "broadcast_batch", "tolerance", "safe_point"]
 
 _MODES = ("raise", "nan")
 
@@ -106,3 +107,23 @@ def broadcast_batch(broadcast_shapes: Callable, xs: list, args: list[dict]) -> t
 
 def _numel(x) -> int:
     return int(math.prod(x.shape))
+
+
+def safe_point(args: list[dict]) -> list[float]:
+    """A fixed generic point of the inputs' sets, one float per column: constrained kinds
+    through their rational parametrisation (an exact unit vector or rotation), angles in
+    (0.4, 1.2), free entries in (-1.5, 1.5); regular for every kernel of the package (tested:
+    tests/test_arrays_masked.py), as a random point is with probability one."""
+    rng = np.random.default_rng(38)
+    out: list[float] = []
+    for a in args:
+        kind = _kinds.for_spec(a["kind"], tuple(a["shape"]))
+        n = int(math.prod(a["shape"]))
+        if kind is not None and kind.parametrise is not None:
+            vals = kind.parametrise(list(rng.uniform(-0.9, 0.9, len(kind.params))))
+        elif kind is not None and kind.half_angle:
+            vals = rng.uniform(0.4, 1.2, n)
+        else:
+            vals = rng.uniform(-1.5, 1.5, n)
+        out.extend(float(v) for v in vals)
+    return out

@@ -84,9 +84,6 @@ def _dtype(values, arrays):
 def _make(space: _arrays.Space, name: str):
     """``f(*xs) -> (*outputs, singular)``: a ``jax.custom_jvp`` whose JVP is the generated
     Jacobian kernel, or the plain expression (no Jacobian kernel)."""
-    meta = space.progs.meta[name]
-    args, outs = meta["args"], meta["outputs"]
-
     if not space.progs.has_jacobian(name):
         # traced (maybe differentiated): safe inputs in the singular samples
         return lambda *xs: space.values(name, xs, _traced(xs))
@@ -99,8 +96,8 @@ def _make(space: _arrays.Space, name: str):
     @f.defjvp
     def _jvp(primals, tangents):
         res = values(*primals)
-        touts = _arrays.contract(jnp, list(tangents), space.jacobian(name, primals, res[-1]),
-                                 outs, args, forward=True, singular=res[-1])
+        # the generated forward-mode program, linear in the tangents (JAX transposes it)
+        touts = space.jvp(name, primals, list(tangents), res[-1])
         zero = np.zeros(res[-1].shape, dtype=jax.dtypes.float0)
         return res, (*touts, zero)
 

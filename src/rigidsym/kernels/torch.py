@@ -133,8 +133,7 @@ def _function(space: _arrays.Space, name: str, forward_mode: bool):
     jvp) through the generated Jacobian kernel. Dynamo cannot trace a custom ``jvp``
     ("Unsupported custom jvp"), so compiled code gets the class without it (no forward
     mode under torch.compile)."""
-    meta = space.progs.meta[name]
-    args, outs = meta["args"], meta["outputs"]
+    args = space.progs.meta[name]["args"]
 
     def setup_context(ctx, inputs, output):
         # the singular mask too: the Jacobian takes safe inputs there (_arrays.evaluate)
@@ -152,8 +151,7 @@ def _function(space: _arrays.Space, name: str, forward_mode: bool):
     def jvp(ctx, *tangents):
         *xs, sing = ctx.saved_tensors
         t = [torch.zeros_like(x) if d is None else d for x, d in zip(xs, tangents, strict=True)]
-        return (*_arrays.contract(torch, t, space.jacobian(name, xs, sing), outs, args,
-                                  forward=True), None)
+        return (*space.jvp(name, xs, t, sing), None)
 
     body = {"generate_vmap_rule": True,
             "forward": staticmethod(_fixed_arity(lambda xs: space.values(name, xs),
