@@ -5,12 +5,14 @@
 # template: array_kernel.py.j2
 # math hash: sha256:37ca360961ff48ba
 # sympy 1.14.0, rigidsym 0.2.0
-# operations: 26
+# operations: 22
 # accuracy rewrite (main): expanded numerator: the declared grouping subtracts nearly equal
 #     products (p1 x (p2 - p1) with |p1| >> |p2 - p1|); expanded, the cancelling terms cancel
-#     symbolically; worst relative error at 18 measurement points (exact, rounded to float64;
-#     some past a condition number of 1/u) 2.0e-12 -> 3.0e-16; equal to the declared formula
-#     by the zero test (exact-cancel)
+#     symbolically, and the difference of two products left is compensated (Kahan's algorithm,
+#     rigidsym.codegen.compensated: p1 x p2 of nearly coincident points cancels too); worst
+#     relative error at 32 measurement points (exact, rounded to float64; some past a
+#     condition number of 1/u) 9.8e-13 -> 3.4e-16; equal to the declared formula by the zero
+#     test (exact-cancel)
 """Plücker array of the line through two points.
 
 kappa = [e; p1 x e], e = (p2 - p1)/||p2 - p1||
@@ -23,8 +25,32 @@ the checked, differentiable API.
 """
 
 import jax.numpy
+def _split(x, k):
+    # Veltkamp: x = hi + lo exactly, hi of at most p - ceil(p/2) bits
+    t = k * x
+    hi = t - (t - x)
+    return hi, x - hi
 
-OPS = 26
+
+def _two_prod(a, b, k):
+    # Dekker: a b = p + e exactly (barring underflow)
+    p = a * b
+    ah, al = _split(a, k)
+    bh, bl = _split(b, k)
+    return p, ((ah * bh - p) + ah * bl + al * bh) + al * bl
+
+
+def _diffprod(a, b, c, d):
+    """a b - c d compensated (Kahan's algorithm, its fma emulated; rigidsym.codegen.compensated)."""
+    k = 4097.0 if a.dtype == jax.numpy.float32 else 134217729.0
+    p, q = _two_prod(a, b, k)
+    w, r = _two_prod(c, d, k)
+    s = p - w
+    bb = s - p
+    t = (p - (s - bb)) + (-w - bb)     # p - w = s + t exactly (Knuth's TwoSum)
+    return (s + (t + q)) - r
+
+OPS = 22
 MATH_HASH = "37ca360961ff48ba"
 COLUMNS = ("p1_0", "p1_1", "p1_2", "p2_0", "p2_1", "p2_2", )
 
@@ -39,9 +65,9 @@ def _main(p1_0, p1_1, p1_2, p2_0, p2_1, p2_2):
         x0*x4,
         x1*x4,
         x2*x4,
-        x4*(p1_1*p2_2 - p1_2*p2_1),
-        x4*(-p1_0*p2_2 + p1_2*p2_0),
-        x4*(p1_0*p2_1 - p1_1*p2_0),
+        x4*_diffprod(p1_1, p2_2, p1_2, p2_1),
+        x4*_diffprod(-p1_0, p2_2, -p1_2, p2_0),
+        x4*_diffprod(p1_0, p2_1, p1_1, p2_0),
     ), (
         x3,
     )
@@ -55,13 +81,13 @@ VARIANTS = (
 
 def _vjp(p1_0, p1_1, p1_2, p2_0, p2_1, p2_2, _g0, _g1, _g2, _g3, _g4, _g5):
     """The cotangents of the inputs (``COLUMNS``) from those of the outputs: reverse mode
-    over ``_main``, 84 operations."""
+    over ``_main``, 80 operations."""
     x0 = -p1_0 + p2_0
     x1 = -p1_1 + p2_1
     x2 = -p1_2 + p2_2
     x3 = (x0*x0) + (x1*x1) + (x2*x2)
     x4 = 1.0/jax.numpy.sqrt(x3)
-    _b0 = _g0*x0 + _g1*x1 + _g2*x2 + _g3*(p1_1*p2_2 - p1_2*p2_1) + _g4*(-p1_0*p2_2 + p1_2*p2_0) + _g5*(p1_0*p2_1 - p1_1*p2_0)
+    _b0 = _g0*x0 + _g1*x1 + _g2*x2 + _g3*_diffprod(p1_1, p2_2, p1_2, p2_1) + _g4*_diffprod(-p1_0, p2_2, -p1_2, p2_0) + _g5*_diffprod(p1_0, p2_1, p1_1, p2_0)
     _b1 = -0.5*_b0/(x3*jax.numpy.sqrt(x3))
     _b2 = 2.0*_b1*x2 + _g2*x4
     _b3 = 2.0*_b1*x1 + _g1*x4
@@ -78,7 +104,7 @@ def _vjp(p1_0, p1_1, p1_2, p2_0, p2_1, p2_2, _g0, _g1, _g2, _g3, _g4, _g5):
 
 def _jvp(p1_0, p1_1, p1_2, p2_0, p2_1, p2_2, _t0, _t1, _t2, _t3, _t4, _t5):
     """The tangents of the outputs from those of the inputs, linear in the tangents:
-    forward mode over ``_main``, 84 operations."""
+    forward mode over ``_main``, 80 operations."""
     x0 = -p1_0 + p2_0
     _d0 = -_t0 + _t3
     x1 = -p1_1 + p2_1
@@ -93,9 +119,9 @@ def _jvp(p1_0, p1_1, p1_2, p2_0, p2_1, p2_2, _t0, _t1, _t2, _t3, _t4, _t5):
         _d0*x4 + _d4*x0,
         _d1*x4 + _d4*x1,
         _d2*x4 + _d4*x2,
-        _d4*(p1_1*p2_2 - p1_2*p2_1) + _t1*p2_2*x4 - _t2*p2_1*x4 - _t4*p1_2*x4 + _t5*p1_1*x4,
-        _d4*(-p1_0*p2_2 + p1_2*p2_0) - _t0*p2_2*x4 + _t2*p2_0*x4 + _t3*p1_2*x4 - _t5*p1_0*x4,
-        _d4*(p1_0*p2_1 - p1_1*p2_0) + _t0*p2_1*x4 - _t1*p2_0*x4 - _t3*p1_1*x4 + _t4*p1_0*x4,
+        _d4*_diffprod(p1_1, p2_2, p1_2, p2_1) + _t1*p2_2*x4 - _t2*p2_1*x4 - _t4*p1_2*x4 + _t5*p1_1*x4,
+        _d4*_diffprod(-p1_0, p2_2, -p1_2, p2_0) - _t0*p2_2*x4 + _t2*p2_0*x4 + _t3*p1_2*x4 - _t5*p1_0*x4,
+        _d4*_diffprod(p1_0, p2_1, p1_1, p2_0) + _t0*p2_1*x4 - _t1*p2_0*x4 - _t3*p1_1*x4 + _t4*p1_0*x4,
     )
 
 

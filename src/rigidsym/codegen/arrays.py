@@ -14,6 +14,7 @@ from __future__ import annotations
 
 from typing import Any
 
+from rigidsym.codegen.compensated import ARRAY_SOURCE
 from rigidsym.codegen.jacobians import has_jacobian
 from rigidsym.codegen.printers import KernelJaxPrinter, torch_printer
 from rigidsym.codegen.vjp import cotangent_names, jvp_program, tangent_names, vjp_program
@@ -45,6 +46,8 @@ def render_array_kernels(env, kc: Any, header) -> dict[str, str]:
         kc: a :class:`rigidsym.codegen.generator.KernelCode`.
         header: ``header(template) -> [lines]``, the generator's file header.
     """
+    from rigidsym.codegen.generator import uses_diffprod
+
     t = "array_kernel.py.j2"
     columns = [str(s) for _, syms in kc.inputs for s in syms]
     # the backward of a kernel with a generated Jacobian (one formula, no branches): reverse
@@ -68,5 +71,7 @@ def render_array_kernels(env, kc: Any, header) -> dict[str, str]:
             "toutputs": [pr.doprint(e) for e in jvp.outputs], "tops": jvp.ops}
         files[f"{backend}/{kc.kernel.name}.py"] = env.get_template(t).render(
             header=header(t), backend=backend, module=module, k=kc.kernel, ops=kc.ops,
-            hash=kc.hash, columns=columns, variants=variants, vjp=back)
+            hash=kc.hash, columns=columns, variants=variants, vjp=back,
+            helpers=ARRAY_SOURCE.strip("\n").replace("{module}", module) if
+            uses_diffprod(kc) else "")
     return files
