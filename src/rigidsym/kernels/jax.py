@@ -19,8 +19,9 @@ Keywords (no ``out=``, no ``threads=``: meaningless under ``jit``):
   default there; ``"nan"`` is the default while traced.
 
 Derivatives: a kernel with a generated Jacobian kernel (``<name>_with_jacobians``) is a
-``jax.custom_jvp`` whose JVP *is* that verified Jacobian (so ``jax.grad``, ``jax.jacfwd``
-and ``jax.jacrev`` all use it); the others (the branch kernels, the Euler-angle rates) are
+``jax.custom_jvp`` whose rule is the generated forward-mode program, linear in the tangents
+and equal to that verified Jacobian contracted (JAX transposes it for ``jax.grad`` and
+``jax.jacrev``); the others (the branch kernels, the Euler-angle rates) are
 differentiated by JAX through the generated expression, with the safe-``where`` idiom at
 their branches. The JVP rule is plain differentiable arithmetic (``jax.hessian`` works). A
 sample masked by ``on_singular="nan"`` has a zero gradient: its inputs are replaced by a

@@ -19,7 +19,9 @@ Keywords (no ``out=``, no ``threads=``: meaningless or harmful under autograd an
 Derivatives: a kernel with a generated Jacobian kernel (``<name>_with_jacobians``) is a
 ``torch.autograd.Function`` (``setup_context``, a generated vmap rule, ``backward`` and
 ``jvp``; no ``jvp`` under ``torch.compile``, whose Dynamo cannot trace one) whose
-derivative *is* that verified Jacobian, by plain tensor arithmetic that autograd
+backward and jvp are the generated vector-Jacobian and Jacobian-vector products (reverse and
+forward mode over the program, equal to that verified Jacobian contracted), plain tensor
+arithmetic that autograd
 differentiates again (``create_graph=True``). The others (the branch kernels, the
 Euler-angle rates) are differentiated by autograd through the generated expression, with the
 safe-``where`` idiom at their branches. A sample masked by ``on_singular="nan"`` has a zero
