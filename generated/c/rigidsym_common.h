@@ -122,6 +122,36 @@ static inline int rigidsym_any_nonfinite_f32(const float *RIGIDSYM_RESTRICT p, i
     return (int)(acc >> 31);
 }
 
+/* Nonzero when one of the len doubles at p is non-finite or nonzero of magnitude outside
+ * [2^-100, 2^101) (issue 37): there a kernel's intermediates (products of up to ten inputs)
+ * could overflow or underflow, so the sample is flagged and re-run in a wider type (the
+ * rescue of rigidsym.kernels._core). Integer arithmetic on the exponent bits, as above. */
+static inline int rigidsym_any_extreme(const double *RIGIDSYM_RESTRICT p, int64_t len)
+{
+    uint64_t acc = 0;
+    for (int64_t j = 0; j < len; ++j) {
+        uint64_t b;
+        memcpy(&b, p + j, sizeof b);
+        const uint64_t e = (b >> 52) & 0x7ffU;
+        acc |= (uint64_t)(e - 923U > 200U) & (uint64_t)((b << 1) != 0);
+    }
+    return (int)acc;
+}
+
+/* The same for float32 values, range [2^-30, 2^31): the float arithmetic of a precision
+ * plan squares and cubes (float overflows at 2^128). */
+static inline int rigidsym_any_extreme_f32(const float *RIGIDSYM_RESTRICT p, int64_t len)
+{
+    uint32_t acc = 0;
+    for (int64_t j = 0; j < len; ++j) {
+        uint32_t b;
+        memcpy(&b, p + j, sizeof b);
+        const uint32_t e = (b >> 23) & 0xffU;
+        acc |= (uint32_t)(e - 97U > 60U) & (uint32_t)((b << 1) != 0);
+    }
+    return (int)acc;
+}
+
 /* a b - c d compensated (Kahan's algorithm, rigidsym.codegen.compensated): within 2 u of the
  * exact value however much the products cancel. w is used by both fma calls, so FMA
  * contraction (-ffp-contract=fast) cannot fuse it away; fma is an instruction on x86-64-v3
