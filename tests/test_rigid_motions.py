@@ -108,13 +108,18 @@ def test_logm_of_rodrigues_is_theta_omega_on_either_range():
         assert out.verdict == "verified", out.detail
 
 
-def test_expm_of_a_pure_translation_and_a_refused_axis():
+def test_expm_of_a_pure_translation_and_a_free_axis():
     e = unit_vector("rm_e")
     S = sp.Matrix.vstack(sp.zeros(3, 1), e)
     T = expm(th * hat(S))
     assert T[:3, :3] == sp.eye(3) and T[:3, 3] == e * th
-    with pytest.raises(ValueError, match="unit"):
-        expm(th * cpm(v))  # a free axis: Rodrigues' closed form would be false
+    # a free axis (issue 38): the closed form in the norm theta = |w|, not Rodrigues'
+    # unit-axis form (which would be false); against scipy's expm at a point
+    R = expm(cpm(v))
+    vn = {x: c for x, c in zip(v, (0.3, -1.1, 0.7), strict=True)}
+    np.testing.assert_allclose(np.array(R.subs(vn), dtype=float),
+                               scipy_linalg.expm(np.array(cpm(v).subs(vn), dtype=float)),
+                               rtol=1e-14, atol=1e-14)
 
 
 def test_hat_vee_transform_and_inverse():

@@ -283,16 +283,19 @@ class Logm(LieOp):
     """``log(R)`` of a rotation on the principal branch (MR (3.53)-(3.54)):
     ``theta / (2 sin theta) (R - R^T)`` with ``theta = acos((tr R - 1) / 2)`` in
     ``[0, pi]``; singular at ``theta = 0`` (``0/0``: the log is ``O``) and at ``theta = pi``
-    (the axis is not unique). See :func:`log_explicit`."""
+    (the axis is not unique). See :func:`log_explicit`; of a transform (4 x 4),
+    :func:`rigidsym.algebra.lie_vectors.log_se3_explicit`."""
     label, tex = "log", r"\log"
 
     @classmethod
     def shape_of(cls, shapes):
-        _need(shapes, [((3, 3),)], "logm")
-        return (3, 3)
+        _need(shapes, [((3, 3),), ((4, 4),)], "logm")
+        return shapes[0]
 
     def value(self, R):
-        return log_explicit(R)
+        from rigidsym.algebra.lie_vectors import log_se3_explicit
+
+        return log_explicit(R) if sp.Matrix(R).shape == (3, 3) else log_se3_explicit(R)
 
     def _entry(self, i, j, **kwargs):
         raise NotImplementedError("logm: its entries exist once the model is substituted")
@@ -370,9 +373,10 @@ def exp_explicit(X, lin: int = 0, theta=None, unit: bool = False) -> sp.Matrix:
         unit: the caller asserts ``|w| = 1`` (a kernel whose argument is validated unit
             at run time, ``Arg(..., "unit")``); never in a declaration's model.
 
-    Raises:
-        ValueError: the axis is not a unit vector by construction (:func:`is_unit`; nor
-            ``w = 0`` with a unit ``v``): the closed forms above would be false.
+    An axis not known to be unit (a free rotation vector ``w``, a kernel's unconstrained
+    input) takes the closed forms in the norm ``theta = sqrt(w^T w)``
+    (:func:`rigidsym.algebra.lie_vectors.exp_of_vector`, issue 38), singular as printed at
+    ``w = 0`` only: a removable singularity (:mod:`rigidsym.codegen.removable`).
     """
     if theta is None:
         theta, K = split_angle(X)
@@ -382,11 +386,13 @@ def exp_explicit(X, lin: int = 0, theta=None, unit: bool = False) -> sp.Matrix:
     if not (unit or is_unit(w)):
         if K.shape == (4, 4) and all(e == 0 for e in w) and is_unit(K[:3, 3]):
             return _transform(sp.eye(3), K[:3, 3] * theta)
-        raise ValueError("expm: the exponent must be theta [w] (or theta [S]) with w a "
-                         "unit_vector (MR (3.51), (3.88)); got an axis not known to be unit")
+        from rigidsym.algebra.lie_vectors import exp_of_vector
+
+        return exp_of_vector(K * theta)
     W = _cpm(w)
     R = sp.eye(3) + sp.sin(theta) * W + (1 - sp.cos(theta)) * W * W
     if K.shape == (3, 3):
         return R
     G = sp.eye(3) * theta + (1 - sp.cos(theta)) * W + (theta - sp.sin(theta)) * W * W
     return _transform(R, G * K[:3, 3])
+

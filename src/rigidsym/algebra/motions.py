@@ -190,9 +190,11 @@ def expm(X, order: str = "angeles", *, unit_axis: bool = False):
     """The matrix exponential of ``theta [w]`` (so(3), a rotation) or ``theta [S]`` (se(3),
     a transform), in closed form (:func:`exp_explicit`: MR (3.51), (3.88); Angeles (2.49)).
 
-    The exponent must be an angle times a generator with a unit axis ``|w| = 1`` (or
-    ``w = 0``, ``|v| = 1``), proven exactly when the value is formed; otherwise the value
-    is refused (``ValueError``), never approximated.
+    An angle times a generator with a unit axis ``|w| = 1`` (or ``w = 0``, ``|v| = 1``),
+    proven exactly when the value is formed, takes MR's closed forms; any other exponent (a
+    free rotation vector ``w``, exponential coordinates ``[w; v]``) those in the norm
+    ``theta = sqrt(w^T w)`` (:func:`rigidsym.algebra.lie_vectors.exp_of_vector`, Solà et
+    al. 2018 App. B and D), whose ``w = 0`` is a removable singularity.
 
     Args:
         X: 3 x 3 or 4 x 4: ``theta * hat(w)`` of book symbols (lazy), or explicit.
@@ -205,8 +207,7 @@ def expm(X, order: str = "angeles", *, unit_axis: bool = False):
         3 x 3 rotation or 4 x 4 transform; lazy for book symbols.
 
     Raises:
-        ValueError: not 3 x 3 or 4 x 4, an unknown ``order``, or (explicit) an axis not
-            proven unit.
+        ValueError: not 3 x 3 or 4 x 4, or an unknown ``order``.
     """
     lin = _order(order)
     Expm.shape_of([_shape(X, "X")])
@@ -226,14 +227,17 @@ def logm(R):
     (``angle(..., range="[0, pi]")``); on the default range it is the log of the rotation
     by ``|theta|`` about ``sign(theta) omega``, which the split of ``acos`` handles.
 
+    Of a transform ``T = [[R, p], [0, 1]]`` (4 x 4): ``[[log R, J_l^-1 p], [0, 0]]``
+    (MR (3.91)-(3.92); :func:`rigidsym.algebra.lie_vectors.log_se3_explicit`).
+
     Args:
-        R: 3 x 3 rotation (explicit, or a book symbol: lazy).
+        R: 3 x 3 rotation or 4 x 4 transform (explicit, or a book symbol: lazy).
 
     Returns:
-        3 x 3 skew matrix ``[omega] theta``.
+        3 x 3 skew matrix ``[omega] theta``, or the 4 x 4 se(3) matrix of a transform.
 
     Raises:
-        ValueError: ``R`` is not 3 x 3.
+        ValueError: ``R`` is neither 3 x 3 nor 4 x 4.
     """
     Logm.shape_of([_shape(R, "R")])
     return _lazy_or(Logm, [R])

@@ -11,7 +11,14 @@ declared domain, and left alone otherwise (the zero test then says ``undecided``
   relation holds when it holds in both, and a counterexample lies in one of them
   (``acos(cos a) = |a|``: MR's ``theta = acos((tr R - 1) / 2)`` is false for ``a < 0``);
 - ``atan2(y, x)`` with ``y cos a - x sin a = 0`` and ``x cos a + y sin a`` a positive
-  number (decided exactly) for an angle ``a`` is ``a`` (both ranges lie in ``(-pi, pi]``).
+  number (decided exactly) for an angle ``a`` is ``a`` (both ranges lie in ``(-pi, pi]``);
+- a half-integer power ``E^(k/2)`` (the norm ``theta = sqrt(w^T w)`` of a rotation vector
+  and its powers, issue 38) with ``E - (c f(b))^2 = 0`` (decided exactly) for an angle ``b``
+  on ``[0, pi]``, ``f`` one of ``b``, ``sin b``, ``cos(b/2)``, ``sin(b/2)`` (each non-
+  negative there) and ``c`` in ``{1, 2, 1/2}``, is ``(c f(b))^k``: the polar parametrisation
+  ``w = theta e`` (``theta >= 0``, ``e`` a unit vector) makes the trigonometric functions of
+  a norm those of an angle; an angle ``a`` of the default range whose square a root reads is
+  split into ``a = b``, ``a = -b`` as for ``acos`` (``sqrt(a^2) = |a|``).
 
 The balls evaluate the unrewritten ``acos``/``atan2`` (python-flint), so a verdict is
 still backed by arithmetic independent of these rules.
@@ -63,15 +70,33 @@ def _atan2_value(y, x):
     return None
 
 
+def _is_root(z) -> bool:
+    """``E^(k/2)`` for an odd ``k``: a norm, or a power of one."""
+    return isinstance(z, sp.Pow) and z.exp.is_Rational and z.exp.q == 2
+
+
+def _root_value(E, k):
+    # sqrt(E) = c f(b) for f(b) >= 0 on [0, pi]: the norm b of w = b e, sin b of
+    # sin(acos(cos b)), 2 cos(b/2) of sqrt(1 + tr Q) (an Euler-Rodrigues parameter)
+    for b in _angles(E, "angle_pi"):
+        for f in (b, sp.sin(b), sp.cos(b / 2), sp.sin(b / 2)):
+            for c in (1, 2, sp.Rational(1, 2)):
+                if _zero(E - (c * f)**2):
+                    return (c * f)**k
+    return None
+
+
 def _resolve(x):
     def rule(z):
         if isinstance(z, sp.acos):
             v = _acos_value(z.args[0])
-        else:
+        elif isinstance(z, sp.atan2):
             v = _atan2_value(*z.args)
+        else:
+            v = _root_value(z.base, z.exp.p)
         return z if v is None else v
 
-    return x.replace(lambda z: isinstance(z, sp.acos | sp.atan2), rule)
+    return x.replace(lambda z: isinstance(z, sp.acos | sp.atan2) or _is_root(z), rule)
 
 
 def _apply(x, f):
@@ -86,13 +111,17 @@ def cases(lhs, rhs) -> list[tuple]:
     ents = list(lhs) if isinstance(lhs, sp.MatrixBase) else [lhs]
     ents += list(rhs) if isinstance(rhs, sp.MatrixBase) else [rhs]
     fns = set().union(*(sp.sympify(e).atoms(sp.acos, sp.atan2) for e in ents))
+    fns |= set().union(*(sp.sympify(e).atoms(sp.Pow) for e in ents))
+    fns = {f for f in fns if not isinstance(f, sp.Pow) or _is_root(f)}
     if not fns:
         return [(lhs, rhs, lhs, rhs, {})]
     split = []
     for f in sorted(fns, key=sp.default_sort_key):
-        if isinstance(f, sp.acos):
-            for a in _angles(f.args[0], "angle"):
-                if isinstance(a, sp.Symbol) and a not in split and _zero(f.args[0] - sp.cos(a)):
+        if isinstance(f, sp.acos | sp.Pow):
+            arg = f.args[0]
+            for a in _angles(arg, "angle"):
+                if isinstance(a, sp.Symbol) and a not in split and \
+                        _zero(arg - (sp.cos(a) if isinstance(f, sp.acos) else a**2)):
                     split.append(a)
     out = []
     for signs in product((1, -1), repeat=len(split)):
