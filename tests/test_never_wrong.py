@@ -208,3 +208,33 @@ def test_one_nan_policy(name):
 
 def _outs(res):
     return [np.asarray(r) for r in (res if isinstance(res, tuple) else (res,))]
+
+
+@pytest.mark.filterwarnings("ignore:rigidsym.kernels. the NumPy backend runs on one thread")
+@pytest.mark.parametrize("name", sorted(_nan_cases()[0]))
+def test_check_false_is_check_true_on_valid_input(name):
+    """check=False only skips validation: on valid input (a batch above MIN_PARALLEL, with
+    rows of extreme magnitude) it returns what check=True returns, bit for bit, with out=
+    and threads=2 too, on C and NumPy. Old main: an overflowing row was NaN with check=True
+    and on_singular="nan" but its IEEE values (e = [-0, 0, -0]) with check=False."""
+    table, valid = _nan_cases()
+    call, specs = table[name]
+    rng = np.random.default_rng(11)
+    n = 20000
+    x = {s["name"]: valid(s, (n,), rng) for s in specs}
+    for s in specs:                     # rows of extreme magnitude in the free arguments
+        if s["kind"] == "any" and s["name"] not in ("angles", "m", "I_C"):
+            x[s["name"]][:8] *= np.ldexp(1.0, 500) if s is specs[0] else np.ldexp(1.0, -500)
+    nan = {} if name == "euler_rate_matrix" else {"on_singular": "nan"}   # never singular
+    for b in _backends():
+        K.use_backend(b)
+        want = _outs(call(**x, **nan))
+        for kw in ({}, {"threads": 2}):
+            got = _outs(call(**x, check=False, **nan, **kw))
+            for g, w in zip(got, want, strict=True):
+                np.testing.assert_array_equal(g, w, err_msg=f"{b} {kw}")
+        outs = tuple(np.empty_like(w) for w in want)
+        got = call(**x, check=False, **nan, threads=2, out=outs if len(outs) > 1 else outs[0])
+        for g, w in zip(_outs(got), want, strict=True):
+            np.testing.assert_array_equal(g, w, err_msg=f"{b} out=")
+    K.use_backend("numpy")

@@ -12,8 +12,9 @@ editable build are compiled into the user cache, with a notice (``rigidsym build
 Common keyword arguments of every kernel (``rigidsym.codegen.api_spec.COMMON_KEYWORDS``):
 
 * ``out``: preallocated output array (a tuple for several outputs), shape batch + output.
-* ``check``: validate finiteness, unit vectors and rotations, and report a non-finite output
-  from finite inputs (overflow) (default True).
+* ``check``: validate finiteness, unit vectors and rotations (default True); ``False``
+  skips only that: on valid input the same result (an overflow of the result is still
+  reported), a NaN or inf input gives NaN in the outputs that depend on it (issue 37).
 * ``on_singular``: ``"raise"`` (default) raises :class:`SingularConfigurationError` naming
   the argument and the batch indices (:class:`NonFiniteResultError` for an overflow);
   ``"nan"`` returns NaN in exactly those rows.

@@ -352,10 +352,15 @@ def _check_out(out, outs_meta: list, batch: tuple, dtype=np.float64) -> tuple:
 
 
 def _report_flags(name, meta, flags, flat, bufs, batch, check, on_singular) -> None:
-    """Raise for flagged samples, or write NaN in their rows (``on_singular="nan"``)."""
+    """Raise for flagged samples, or write NaN in their rows (``on_singular="nan"``).
+    ``check=False`` only skips validation (issue 37): an overflow is reported as with
+    ``check=True``; a sample with a non-finite input (unvalidated) keeps its IEEE values."""
     specs = meta["args"]
     sing = np.flatnonzero(flags == _SINGULAR)
-    over = np.flatnonzero(flags == _NONFINITE) if check else np.empty(0, dtype=np.intp)
+    over = np.flatnonzero(flags == _NONFINITE)
+    if not check and over.size:
+        over = over[np.logical_and.reduce([np.isfinite(a[over].reshape(over.size, -1)).all(1)
+                                           for a in flat])]
 
     def where(idx):
         return [tuple(int(j) for j in np.unravel_index(i, batch)) for i in idx[:20]]
