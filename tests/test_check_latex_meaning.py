@@ -70,6 +70,15 @@ def test_an_undecided_verdict_prints_its_reason(capsys):
     assert code == 3 and "Undecided: printed: trig" in out
 
 
+def test_the_reason_of_a_trig_of_a_norm_is_printed_in_book_notation(capsys):
+    # issue 40: its reason ("trig of non-angle argument") was only in --json
+    code, out, _ = _cli(capsys, "--latex", "J w = w", "--let", r"w: vector; \theta = \sqrt{w^T w}",
+                        "--let", r"J = I + \frac{1 - \cos\theta}{\theta^2}[w] + "
+                                 r"\frac{\theta - \sin\theta}{\theta^3}[w]^2")
+    assert code == 3 and "Undecided: printed: trig of non-angle argument √(w₁² + w₂² + w₃²)" \
+        in out, out
+
+
 def test_the_reports_print_the_reason_of_an_undecided_member():
     from rigidsym.report.html import to_html
     from rigidsym.report.markdown import to_markdown
@@ -95,6 +104,12 @@ def test_a_symbol_before_a_parenthesised_scalar_is_applied_to_it(latex):
     r = rigidsym.check_latex(latex, let=[OMEGA, R_MODEL])
     assert r.verdict == "verified", r.detail
     assert any("R(θ): R applied to θ" in n for n in r.model)
+
+
+def test_a_model_may_be_written_as_the_books_do_with_its_argument():
+    r = rigidsym.check_latex(r"R(\theta)^T R(\theta) = I",
+                             let=[OMEGA, r"R(\theta) = e^{[\hat\omega]\theta}"])
+    assert r.verdict == "verified"
 
 
 @pytest.mark.parametrize("latex, let", [
@@ -150,6 +165,17 @@ def test_a_guess_the_verdict_would_rest_on_is_bad_input(capsys, latex, let, word
     assert "--let '" in err
 
 
+@pytest.mark.parametrize("latex, words", [
+    # Spong's law of cosines with c_1 ... free: does-not-hold on main (c_1 a free scalar)
+    (r"(a_1c_1 + a_2c_{12})^2 + (a_1s_1 + a_2s_{12})^2 = a_1^2 + a_2^2 + 2a_1a_2c_2",
+     "c_{12}, c_{1}, c_{2}, s_{12}, s_{1}: in Siciliano, Spong and Craig the cos and sin"),
+    (r"\hat\omega^3 = -\hat\omega", "--notation lynch-park or --notation murray-li-sastry"),
+])
+def test_a_symbol_whose_meaning_differs_between_books_is_named(capsys, latex, words):
+    code, _, err = _cli(capsys, "--latex", latex)
+    assert code == 2 and words in err, err
+
+
 def test_a_shape_mismatch_of_declared_symbols_is_still_a_slip():
     r = rigidsym.check_latex(r"\omega = R", let=[r"R: rotation; \omega: vector"])
     assert r.verdict == "does-not-hold"
@@ -167,6 +193,10 @@ def test_a_shape_mismatch_of_declared_symbols_is_still_a_slip():
     (r"c_{12} = c_1 c_2 - s_1 s_2", "siciliano", [], "verified"),
     (r"s_{12} = s_1 c_2 + c_1 s_2", "spong", [], "verified"),
     (r"c_{12} = c_1 c_2 + s_1 s_2", "craig", [], "does-not-hold"),
+    (r"(a_1c_1 + a_2c_{12})^2 + (a_1s_1 + a_2s_{12})^2 = a_1^2 + a_2^2 + 2a_1a_2c_2",
+     "spong", [], "verified"),
+    (r"\hat\omega^3 = -\hat\omega", "murray-li-sastry", [r"\omega: unit vector"],
+     "verified"),
     (r"P^T R^T R P = P^T P", "craig", [], "verified"),      # capital P a vector in Craig
     (r"\mathbf{C}^T\mathbf{C} = \mathbf{1}", "barfoot", [], "verified"),
     (r"\mathbf{u}^T\mathbf{u} = 1", "sola", [], "verified"),
@@ -185,6 +215,38 @@ def test_every_notation_table_loads_and_names_its_book():
         assert t.lets and "(" in t.title, name  # a book with its publisher and year
 
 
+def test_the_trig_abbreviations_of_a_notation():
+    from rigidsym.latex.notations import notation
+
+    t = notation("siciliano")
+    assert t.let_for("c_{123}").latex == r"\cos(\vartheta_{1} + \vartheta_{2} + \vartheta_{3})"
+    assert t.let_for(r"s_{\vartheta}").latex == r"\sin(\vartheta)"  # c_\vartheta, a Greek index
+    assert t.let_for("c_{x}") is None and t.let_for("c") is None     # a letter is a name
+
+
 def test_an_unknown_notation_is_bad_input(capsys):
     code, _, err = _cli(capsys, "--latex", "x = x", "--notation", "lynch")
     assert code == 2 and "lynch-park" in err
+
+
+# ------------------------------------------------------- item 5: printed back as written
+def test_greek_variants_print_as_glyphs(capsys):
+    code, out, _ = _cli(capsys, "--latex", r"\varphi + \vartheta = \vartheta + \varphi")
+    assert code == 0 and "read as: ϕ + ϑ = ϕ + ϑ" in out  # on main: varphi + vartheta
+
+
+def test_a_readers_bracket_stays_a_bracket_in_every_view():
+    slip = r"e^{[\hat\omega]\theta} = I + \sin\theta\,[\hat\omega] - (1 - \cos\theta)[\hat\omega]^2"
+    r = rigidsym.check_latex(slip, notation="lynch-park")
+    assert r.verdict == "does-not-hold"
+    texts = [m["text"] for m in r.members] + [x["text"] for x in r.repairs]
+    assert texts and all("[ω̂]" in t and "CPM" not in t for t in texts), texts  # on main: CPM(ω̂)
+
+
+@pytest.mark.parametrize("latex, shown", [
+    (r"a^T \mathrm{CPM}(b) a = 0", "aᵀ CPM(b) a = 0"),      # on main: tr(aᵀ CPM(b) a)
+    (r"(a \times b) \cdot a = 0", "((a × b)·a) = 0"),       # on main: (a × b·a)
+])
+def test_a_scalar_product_prints_as_written(capsys, latex, shown):
+    code, out, _ = _cli(capsys, "--latex", latex, "--let", AB)
+    assert code == 0 and f"read as: {shown}" in out

@@ -23,6 +23,7 @@ from rigidsym.algebra import symbols as _sym
 from rigidsym.checking.deciding.errors import BadInput
 from rigidsym.checking.deciding.registry import Rel, Statement
 from rigidsym.latex import guards
+from rigidsym.latex.bookrules import declared_lets
 from rigidsym.latex.glyphrows import _Reader, _symbol
 from rigidsym.latex.lending import lent
 from rigidsym.latex.lets import KIND_WORDS, Let, kind_of, read_lets
@@ -99,6 +100,7 @@ def read_statement(latex: str, lets: list[Let], book: str | None = None,
     from rigidsym.checking.deciding.explicit import _EXPLICIT_CACHE, explicit
 
     lend = lend or {}
+    lets = list(lets) + declared_lets(latex, lets)  # ", R \\in SO(3)": a --let (issue 40)
     rd = _Reader(lets, book, lend, table)
     values: dict = {}  # book symbol -> value in book symbols (resolved below)
     occurs = _read_models(rd, lets, values)
@@ -120,6 +122,7 @@ def read_statement(latex: str, lets: list[Let], book: str | None = None,
     models.update({name: v for name, (_, v) in lend.items() if v is not None})
     guards.applications(parsed.applied, models, glyphs)
     guards.time_derivatives(free, rd.used, rd.declared)
+    guards.book_meanings(free)
     model = _resolve(values, explicit)
     _EXPLICIT_CACHE.clear()
     printed, kind = _relations(parsed)
