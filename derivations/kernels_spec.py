@@ -370,3 +370,7 @@ KERNELS.append(Kernel(
           "natural_invariants_from_rotation's rule (largest-magnitude component positive)."))
 
 KERNELS += INTERNAL_KERNELS
+
+from .kernels_spec_lie import LIE_KERNELS  # noqa: E402  (it reads the branches above)
+
+KERNELS += LIE_KERNELS

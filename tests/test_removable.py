@@ -1,0 +1,115 @@
+"""Removable singularities (issue 38 item 1): the series and certificates of
+codegen.removable_cert, the rewrite of codegen.removable, and the generated Lie-group kernels
+at |w| in {0, 1e-12, 1e-8, 1e-4, 1e-2, 1} against a 50-digit mpmath reference.
+
+On the main of before issue 38 there was no such pass: a reader's exponential map returned
+NaN (or raised) at w = 0 and its Jacobian was 3.7e-9 off at |w| = 1e-8.
+"""
+
+from __future__ import annotations
+
+from fractions import Fraction
+
+import mpmath as mp
+import numpy as np
+import pytest
+import sympy as sp
+
+from rigidsym.codegen.removable import QuotientBase, rewrite
+from rigidsym.codegen.removable_cert import S, NotRemovable, certify, series_of
+
+U = 2.0**-53
+NORMS = [0.0, 1e-12, 1e-8, 1e-4, 1e-2, 1.0]
+
+
+def test_series_exact_and_even():
+    # sin s / s = 1 - t/6 + t^2/120 - ...; (1 - cos s)/s^2 = 1/2 - t/24 + ...
+    assert series_of(sp.sin(S) / S).coeffs[:3] == (1, Fraction(-1, 6), Fraction(1, 120))
+    assert series_of((1 - sp.cos(S)) / S**2).coeffs[:2] == (Fraction(1, 2), Fraction(-1, 24))
+    c = series_of((S * sp.cos(S) - sp.sin(S)) / S**3).coeffs
+    assert c[:2] == (Fraction(-1, 3), Fraction(1, 30))
+
+
+@pytest.mark.parametrize("h", [sp.sin(S) / S**2, sp.cos(S) / S**2, sp.sin(S)])
+def test_no_limit_or_odd_is_refused(h):
+    with pytest.raises(NotRemovable):
+        series_of(h)
+
+
+@pytest.mark.parametrize("h", [sp.sin(S) / S, (1 - sp.cos(S)) / S**2, (S - sp.sin(S)) / S**3,
+                               (S * sp.cos(S) - sp.sin(S)) / S**3])
+def test_certificate_within_2u_and_checked_by_mpmath(h):
+    cert = certify(h)
+    assert cert.taylor64 <= 2
+    # independent check: the float64 Horner series against 50 digits on [0, t*]
+    cs = [float(c) for c in series_of(h).coeffs[:cert.order + 1]]
+    f = sp.lambdify(S, h, "mpmath")
+    mp.mp.dps = 50
+    for t in np.linspace(0, cert.threshold, 41)[1:]:
+        p = 0.0
+        for c in reversed(cs):
+            p = c + t * p
+        ref = f(mp.sqrt(mp.mpf(float(t))))
+        assert abs(p - ref) <= 2 * U * abs(ref), (t, p, ref)
+
+
+def test_rewrite_finds_the_quotients_of_a_derivative():
+    w = sp.Matrix(sp.symbols("w0:3", real=True))
+    th = sp.sqrt((w.T * w)[0])
+    e = sp.sin(th) / th * w[2]
+    out = rewrite([sp.diff(e, w[0])])[0]
+    assert not out.has(sp.sqrt(th**2)) and out.atoms(QuotientBase)
+    # an output whose quotient has no limit is left as it was
+    bad = sp.cos(th) / th**2
+    assert rewrite([bad])[0] == bad
+
+
+def _ref(fn, x, dps=50):
+    """The formula at 50 digits; at 0 the limit through a point 1e-40 away."""
+    mp.mp.dps = dps
+    x = [mp.mpf(v) for v in x]
+    if all(v == 0 for v in x):
+        x = [mp.mpf("1e-40"), mp.mpf("2e-40"), mp.mpf("-1e-40")] + x[3:]
+    return fn(x)
+
+
+@pytest.fixture(scope="module")
+def maps():
+    from rigidsym.derivations import lie_maps as L
+
+    w = sp.Matrix(sp.symbols("w0:3", real=True))
+    out = {}
+    for name in ("rotation_from_rotation_vector", "rotation_vector_left_jacobian",
+                 "rotation_vector_right_jacobian", "rotation_vector_left_jacobian_inverse"):
+        M = getattr(L, name)(w)
+        val = sp.lambdify(list(w), M, "mpmath")
+        jac = sp.lambdify(list(w), sp.Matrix([[sp.diff(x, v) for v in w] for x in M]),
+                          "mpmath")
+        out[name] = (lambda x, f=val: f(*x), lambda x, f=jac: f(*x))
+    return out
+
+
+@pytest.mark.parametrize("name", ["rotation_from_rotation_vector",
+                                  "rotation_vector_left_jacobian",
+                                  "rotation_vector_right_jacobian",
+                                  "rotation_vector_left_jacobian_inverse"])
+def test_lie_kernels_smooth_at_zero(maps, name):
+    from rigidsym import kernels
+
+    fv, fj = maps[name]
+    rng = np.random.default_rng(7)
+    d = rng.normal(size=3)
+    d /= np.linalg.norm(d)
+    ws = np.array([n * d for n in NORMS])
+    kv = getattr(kernels, name)(w=ws)
+    kj = kernels.jacobian(name)(w=ws)
+    val = kv if isinstance(kv, np.ndarray) else kv[0]
+    for i, w in enumerate(ws):
+        ref = np.array(mp.matrix(_ref(fv, w)).tolist(), dtype=float)
+        assert np.all(np.isfinite(val[i]))
+        np.testing.assert_array_less(np.abs(val[i] - ref), 4 * U * np.abs(ref).max() + 1e-300)
+        jr = np.array(mp.matrix(_ref(fj, w)).tolist(), dtype=float).reshape(3, 3, 3)
+        got = np.asarray(kj[-1][i] if isinstance(kj, tuple) else kj[i]).reshape(3, 3, 3)
+        assert np.all(np.isfinite(got))
+        scale = np.abs(jr).max() + np.abs(ref).max()
+        assert np.abs(got - jr).max() <= 8 * U * scale * 4, (name, w, np.abs(got - jr).max())
