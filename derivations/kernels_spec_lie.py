@@ -151,7 +151,10 @@ LIE_KERNELS = [
              ids=_IDS["se3jac"], sources=(_LM + f"exponential_coordinates_left_jacobian{inv}",),
              args=(XI,), outputs=(Out("J", (6, 6), ""),),
              build=_call("J", f"exponential_coordinates_left_jacobian{inv}"),
-             singular="|w| = 2 pi k, k != 0" if inv else "")
+             singular="|w| = 2 pi k, k != 0" if inv else "",
+             # the derivative of a 6 x 6 Jacobian (216 entries of degree 5) is seldom
+             # wanted and costs minutes of generation: none
+             jacobian=False)
       for inv in ("", "_inverse")],
     Kernel(name="exponential_coordinates_from_transform",
            summary="Log of SE(3): the exponential coordinates xi = [w; v] of T, |w| in "

@@ -113,3 +113,71 @@ def test_lie_kernels_smooth_at_zero(maps, name):
         assert np.all(np.isfinite(got))
         scale = np.abs(jr).max() + np.abs(ref).max()
         assert np.abs(got - jr).max() <= 8 * U * scale * 4, (name, w, np.abs(got - jr).max())
+
+
+_READER = '''
+"""A reader's exponential map, written as Angeles writes Rodrigues' formula in w = phi e:
+Q = cos(t) 1 + (sin t / t) [w] + ((1 - cos t) / t^2) w w^T, t = |w|; and the derivative
+of sin t / t along w, with its own quotient (t cos t - sin t) / t^3."""
+import sympy as sp
+from rigidsym.codegen.spec import Arg, Kernel, Out
+
+
+def exp_reader(w):
+    t = sp.sqrt((w.T * w)[0])
+    W = sp.Matrix([[0, -w[2], w[1]], [w[2], 0, -w[0]], [-w[1], w[0], 0]])
+    return sp.cos(t) * sp.eye(3) + sp.sin(t) / t * W + (1 - sp.cos(t)) / t**2 * w * w.T
+
+
+def dsinc_reader(w):
+    t = sp.sqrt((w.T * w)[0])
+    return (t * sp.cos(t) - sp.sin(t)) / t**3 * w
+
+
+KERNELS = [
+    Kernel(name="exp_reader", summary="A reader's exp.", formula="Rodrigues in w",
+           ids=(), sources=("exp_reader",), args=(Arg("w", (3,), "any", "rotation vector"),),
+           outputs=(Out("Q", (3, 3), "rotation"),), build=lambda w: {"Q": exp_reader(w)}),
+    Kernel(name="dsinc_reader", summary="d sinc.", formula="(t cos t - sin t)/t^3 w",
+           ids=(), sources=("dsinc_reader",), args=(Arg("w", (3,), "any", "vector"),),
+           outputs=(Out("g", (3,), ""),), build=lambda w: {"g": dsinc_reader(w)}),
+]
+'''
+
+
+@pytest.mark.slow
+def test_a_readers_exp_map_is_smooth_at_zero(tmp_path):
+    import subprocess
+    import sys
+
+    from rigidsym import kernels
+
+    (tmp_path / "reader_exp.py").write_text(_READER)
+    out = tmp_path / "gen"
+    r = subprocess.run([sys.executable, "-m", "rigidsym", "generate", "--module",
+                        str(tmp_path / "reader_exp.py"), "--out", str(out), "--no-build"],
+                       capture_output=True, text=True, timeout=600)
+    assert r.returncode == 0, r.stderr
+    ns = kernels.load(out)
+    d = np.array([0.6, -0.48, 0.64])
+    for n in NORMS:
+        w = n * d
+        Q = ns.exp_reader(w=w)
+        ref = np.eye(3) if n == 0 else _np_exp(w)
+        assert np.all(np.isfinite(Q)) and np.abs(Q - ref).max() <= 4 * U
+        J = ns.jacobian("exp_reader")(w=w) if hasattr(ns, "jacobian") else None
+        if J is not None:
+            assert np.all(np.isfinite(np.asarray(J[-1])))
+        g = ns.dsinc_reader(w=w)
+        assert np.all(np.isfinite(g))
+        mp.mp.dps = 50
+        t = mp.sqrt(sum(mp.mpf(float(x)) ** 2 for x in w))
+        c = mp.mpf(-1) / 3 if n == 0 else (t * mp.cos(t) - mp.sin(t)) / t**3
+        np.testing.assert_allclose(g, [float(c * mp.mpf(float(x))) for x in w],
+                                   rtol=4 * U, atol=1e-300)
+
+
+def _np_exp(w):
+    mp.mp.dps = 50
+    W = mp.matrix([[0, -w[2], w[1]], [w[2], 0, -w[0]], [-w[1], w[0], 0]])
+    return np.array(mp.expm(W).tolist(), dtype=float)
