@@ -918,7 +918,7 @@ def plucker_from_points(
 
         Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 2.79e+14 ulp in float64) over 3 regimes (docs/accuracy.md, kernels.accuracy); singular when p1 = p2, flagged where ||p2 - p1||^2 == 0 in floating point: p1 == p2; a square underflows to 0 only for ||p2 - p1|| < 1.5e-162 (float64), < 1e-19 (float32 arithmetic), which benchmarks/accuracy.py calls below the smallest useful step.
 
-        Generated; 26 operations; math hash 37ca360961ff48ba.
+        Generated; 22 operations; math hash 37ca360961ff48ba.
     """
     return _F.plucker_from_points(p1, p2, out, check, on_singular, threads)
 

@@ -214,10 +214,13 @@ def test_float32_broadcasting_and_double_backward():
     assert out.dtype == torch.float32 and tuple(out.shape) == (2, 5, 6)
     ref = K.twist_transfer(t.double().numpy(), a.double().numpy(), p.double().numpy())
     np.testing.assert_allclose(out.numpy(), ref, rtol=1e-5, atol=1e-5)
+    # double backward (issue 38; old main refused create_graph=True): T = x.x/2 + m x.x/2
+    # with I = 1 and m = 2 has the Hessian 3 * 1 at every x
     x = torch.tensor(rng.standard_normal(3), requires_grad=True)
     T = rk.kinetic_energy(torch.eye(3, dtype=torch.float64), 2.0, x, x)
-    with pytest.raises(RuntimeError, match="double backward"):
-        torch.autograd.grad(T, x, create_graph=True)
+    (g,) = torch.autograd.grad(T, x, create_graph=True)
+    H = torch.stack([torch.autograd.grad(g[i], x, retain_graph=True)[0] for i in range(3)])
+    torch.testing.assert_close(H, 3 * torch.eye(3, dtype=torch.float64), rtol=0, atol=1e-15)
 
 
 def test_rigidsym_kernels_does_not_import_torch_and_missing_torch_names_the_extra():
@@ -248,14 +251,31 @@ def test_user_directory(tmp_path):
     assert y.tolist() == [2.0, 4.0, 6.0] and x.grad.item() == 6.0
 
 
-def _compiled_matches(name, backend):
+def _compiled_matches(name, backend, dynamic=None):
+    """Values and gradients of the fullgraph-compiled kernel, inputs requiring grad (old
+    main: "Unsupported custom jvp", the jvp of the autograd.Function), against the NumPy
+    kernel and eager autograd."""
     # no torch._dynamo.reset(): an earlier refused compile of the same kernel must not spoil
     # this one (test_a_refused_compile_leaves_no_trace)
-    xs = [torch.tensor(x) for x in sample(name, 4, seed=9)]
-    f = torch.compile(getattr(rk, name), backend=backend, fullgraph=True)
-    for g, r in zip(_tuple(f(*xs)), _tuple(getattr(K, name)(*[x.numpy() for x in xs])),
+    xs = [torch.tensor(x, requires_grad=True) for x in sample(name, 4, seed=9)]
+    f = torch.compile(getattr(rk, name), backend=backend, fullgraph=True, dynamic=dynamic)
+    got = _tuple(f(*xs))
+    for g, r in zip(got, _tuple(getattr(K, name)(*[x.detach().numpy() for x in xs])),
                     strict=True):
         _close(g.detach(), r, 1e-12)
+    want = torch.autograd.grad(sum(o.sum() for o in _tuple(getattr(rk, name)(*xs))), xs)
+    for g, w in zip(torch.autograd.grad(sum(o.sum() for o in got), xs), want, strict=True):
+        _close(g, w, 1e-12)
+
+
+def test_compiled_with_grad():
+    """One small kernel in the default suite (4 s); every kernel runs as `slow`."""
+    _compiled_matches("twist_transfer", "aot_eager")
+
+
+@pytest.mark.slow
+def test_compiled_dynamic_shapes_with_grad():
+    _compiled_matches("instant_screw_axis", "aot_eager", dynamic=True)
 
 
 @pytest.mark.slow
@@ -272,6 +292,18 @@ K1_K6 = ["rotation_from_euler_rodrigues", "rotation_from_natural_invariants", "s
 
 @pytest.mark.parametrize("name", K1_K6)
 def test_inductor(name):
+    """Inductor's forward only in the default suite (its backward compile costs 10-40 s a
+    kernel on 2 cores: test_inductor_with_grad, `slow`)."""
+    xs = [torch.tensor(x) for x in sample(name, 4, seed=9)]
+    f = torch.compile(getattr(rk, name), backend="inductor", fullgraph=True)
+    for g, r in zip(_tuple(f(*xs)), _tuple(getattr(K, name)(*[x.numpy() for x in xs])),
+                    strict=True):
+        _close(g, r, 1e-12)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("name", K1_K6)
+def test_inductor_with_grad(name):
     _compiled_matches(name, "inductor")
 
 

@@ -6,12 +6,14 @@
  * template: c_kernel.h.j2
  * math hash: sha256:37ca360961ff48ba
  * sympy 1.14.0, rigidsym 0.2.0
- * operations: 26
+ * operations: 22
  * accuracy rewrite (main): expanded numerator: the declared grouping subtracts nearly equal
  *     products (p1 x (p2 - p1) with |p1| >> |p2 - p1|); expanded, the cancelling terms cancel
- *     symbolically; worst relative error at 18 measurement points (exact, rounded to float64;
- *     some past a condition number of 1/u) 2.0e-12 -> 3.0e-16; equal to the declared formula
- *     by the zero test (exact-cancel)
+ *     symbolically, and the difference of two products left is compensated (Kahan's algorithm,
+ *     rigidsym.codegen.compensated: p1 x p2 of nearly coincident points cancels too); worst
+ *     relative error at 32 measurement points (exact, rounded to float64; some past a
+ *     condition number of 1/u) 9.8e-13 -> 3.4e-16; equal to the declared formula by the zero
+ *     test (exact-cancel)
  *
  * Plücker array of the line through two points.
  * kappa = [e; p1 x e], e = (p2 - p1)/||p2 - p1||
@@ -20,7 +22,7 @@
  * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
  * measured at generation, rigidsym.codegen.float32; error within 0.836 ulp of float32,
  * normwise, at its points). In double:
- *   x1, x4, kappa[3], kappa[4], kappa[5]
+ *   x1, x4
  */
 #ifndef RIGIDSYM_PLUCKER_FROM_POINTS_H
 #define RIGIDSYM_PLUCKER_FROM_POINTS_H
@@ -51,9 +53,9 @@ static inline int rigidsym_plucker_from_points_sample(
         out_kappa[0] = x0*x4;
         out_kappa[1] = x1*x4;
         out_kappa[2] = x2*x4;
-        out_kappa[3] = x4*(p1_1*p2_2 - p1_2*p2_1);
-        out_kappa[4] = x4*(-p1_0*p2_2 + p1_2*p2_0);
-        out_kappa[5] = x4*(p1_0*p2_1 - p1_1*p2_0);
+        out_kappa[3] = x4*rigidsym_diffprod(p1_1, p2_2, p1_2, p2_1);
+        out_kappa[4] = x4*rigidsym_diffprod(-p1_0, p2_2, -p1_2, p2_0);
+        out_kappa[5] = x4*rigidsym_diffprod(p1_0, p2_1, p1_1, p2_0);
         singular |= (x3) == 0.0;
         /* quantities that can be non-finite for finite inputs (divisions, roots):
          * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
@@ -86,9 +88,9 @@ static inline int rigidsym_plucker_from_points_sample_f32(
         out_kappa[0] = x0*x4;
         out_kappa[1] = x1*x4;
         out_kappa[2] = x2*x4;
-        out_kappa[3] = x4*(((double)p1_1)*((double)p2_2) - ((double)p1_2)*((double)p2_1));
-        out_kappa[4] = x4*(-((double)p1_0)*((double)p2_2) + ((double)p1_2)*((double)p2_0));
-        out_kappa[5] = x4*(((double)p1_0)*((double)p2_1) - ((double)p1_1)*((double)p2_0));
+        out_kappa[3] = x4*rigidsym_diffprod(p1_1, p2_2, p1_2, p2_1);
+        out_kappa[4] = x4*rigidsym_diffprod(-p1_0, p2_2, -p1_2, p2_0);
+        out_kappa[5] = x4*rigidsym_diffprod(p1_0, p2_1, p1_1, p2_0);
         singular |= (((double)x3)) == 0.0;
         const double finite = ((x4 - x4) + (x3 - x3));
         singular |= finite != finite;

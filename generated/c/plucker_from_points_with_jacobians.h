@@ -6,11 +6,11 @@
  * template: c_kernel.h.j2
  * math hash: sha256:37b30deacd782c27
  * sympy 1.14.0, rigidsym 0.2.0
- * operations: 102
+ * operations: 98
  * accuracy rewrite (main): derivatives of the rewritten values: the Jacobian of the declared
  *     grouping inherits its cancellation; the derivatives of the rewritten values do not;
- *     worst relative error at 18 measurement points (exact, rounded to float64; some past a
- *     condition number of 1/u) 6.8e-12 -> 3.0e-16; equal to the declared formula by the zero
+ *     worst relative error at 32 measurement points (exact, rounded to float64; some past a
+ *     condition number of 1/u) 1.1e-11 -> 3.4e-16; equal to the declared formula by the zero
  *     test (exact-cancel)
  *
  * Plücker array of the line through two points, with the Jacobians of its outputs.
@@ -18,9 +18,9 @@
  * Singular set: p1 = p2
  *
  * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
- * measured at generation, rigidsym.codegen.float32; error within 0.959 ulp of float32,
+ * measured at generation, rigidsym.codegen.float32; error within 0.958 ulp of float32,
  * normwise, at its points). In double:
- *   x9, x10, x11, x12, x13, x22
+ *   x0, x1, x9, x10, x12, x21, x22
  */
 #ifndef RIGIDSYM_PLUCKER_FROM_POINTS_WITH_JACOBIANS_H
 #define RIGIDSYM_PLUCKER_FROM_POINTS_WITH_JACOBIANS_H
@@ -56,9 +56,9 @@ static inline int rigidsym_plucker_from_points_with_jacobians_sample(
         const double x8 = (x7*x7);
         const double x9 = x2 + x5 + x8;
         const double x10 = 1.0/sqrt(x9);
-        const double x11 = p1_1*p2_2 - p1_2*p2_1;
-        const double x12 = -p1_0*p2_2 + p1_2*p2_0;
-        const double x13 = p1_0*p2_1 - p1_1*p2_0;
+        const double x11 = rigidsym_diffprod(p1_1, p2_2, p1_2, p2_1);
+        const double x12 = rigidsym_diffprod(-p1_0, p2_2, -p1_2, p2_0);
+        const double x13 = rigidsym_diffprod(p1_0, p2_1, p1_1, p2_0);
         const double x14 = -x10;
         const double x15 = 1.0/(x9*sqrt(x9));
         const double x16 = x1*x15;
@@ -144,8 +144,8 @@ static inline int rigidsym_plucker_from_points_with_jacobians_sample_f32(
     const float p2_2 = in_p2[2];
     int singular = 0;
     {
-        const float x0 = p1_0 - p2_0;
-        const float x1 = -x0;
+        const double x0 = ((double)p1_0) - ((double)p2_0);
+        const double x1 = -x0;
         const float x2 = (x1*x1);
         const float x3 = p1_1 - p2_1;
         const float x4 = -x3;
@@ -155,9 +155,9 @@ static inline int rigidsym_plucker_from_points_with_jacobians_sample_f32(
         const float x8 = (x7*x7);
         const double x9 = ((double)x2) + ((double)x5) + ((double)x8);
         const double x10 = 1.0/sqrt(x9);
-        const double x11 = ((double)p1_1)*((double)p2_2) - ((double)p1_2)*((double)p2_1);
-        const double x12 = -((double)p1_0)*((double)p2_2) + ((double)p1_2)*((double)p2_0);
-        const double x13 = ((double)p1_0)*((double)p2_1) - ((double)p1_1)*((double)p2_0);
+        const float x11 = rigidsym_diffprod(p1_1, p2_2, p1_2, p2_1);
+        const double x12 = rigidsym_diffprod(-((double)p1_0), ((double)p2_2), -((double)p1_2), ((double)p2_0));
+        const float x13 = rigidsym_diffprod(p1_0, p2_1, p1_1, p2_0);
         const float x14 = -x10;
         const float x15 = 1.0f/(x9*sqrt(x9));
         const float x16 = x1*x15;
@@ -165,7 +165,7 @@ static inline int rigidsym_plucker_from_points_with_jacobians_sample_f32(
         const float x18 = x16*x7;
         const float x19 = x15*x4;
         const float x20 = x19*x7;
-        const float x21 = p2_2*x10;
+        const double x21 = ((double)p2_2)*x10;
         const double x22 = ((double)p2_1)*x10;
         const float x23 = p2_0*x10;
         const float x24 = x15*x7;

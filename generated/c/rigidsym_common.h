@@ -122,4 +122,16 @@ static inline int rigidsym_any_nonfinite_f32(const float *RIGIDSYM_RESTRICT p, i
     return (int)(acc >> 31);
 }
 
+/* a b - c d compensated (Kahan's algorithm, rigidsym.codegen.compensated): within 2 u of the
+ * exact value however much the products cancel. w is used by both fma calls, so FMA
+ * contraction (-ffp-contract=fast) cannot fuse it away; fma is an instruction on x86-64-v3
+ * and -v4 and C99's correctly rounded libm function elsewhere. */
+static inline double rigidsym_diffprod(double a, double b, double c, double d)
+{
+    const double w = c * d;
+    const double e = fma(-c, d, w);
+    const double f = fma(a, b, -w);
+    return f + e;
+}
+
 #endif /* RIGIDSYM_COMMON_H */

@@ -10,7 +10,7 @@
 # accuracy rewrite (main): 1 - cos(phi) from the skew part of Q: 3 - tr Q cancels as phi -> 0
 #     and the rounding of the diagonal of Q is relative 1/phi^2 there; the skew part keeps
 #     relative accuracy 1/phi, the condition of the problem (valid where 1 + tr Q does not
-#     cancel: cos phi > -1/2); worst relative error at 26 measurement points (exact, rounded
+#     cancel: cos phi > -1/2); worst relative error at 35 measurement points (exact, rounded
 #     to float64; some past a condition number of 1/u) a singular flag -> 8.2e-02; equal to
 #     the declared formula by the zero test (exact-cancel)
 """Screw of a finite displacement: axis, angle, axis point, pitch, Plücker array.

@@ -277,7 +277,8 @@ def check(eq_id: str, *, modules: Iterable[ModuleSpec] = (), repairs: bool = Tru
 
 def check_latex(latex: str, let: Sequence[str] | dict[str, str] | str | None = None, *,
                 book: str | None = None, modules: Iterable[ModuleSpec] = (),
-                repairs: bool = True, repair_budget: int | None = None) -> Result:
+                repairs: bool = True, repair_budget: int | None = None,
+                notation: str | None = None) -> Result:
     """Decide a relation written in LaTeX (the Python side of ``rigidsym check --latex``).
 
     The LaTeX is read by the chapter's reader (:func:`rigidsym.latex.parse_latex`); each
@@ -302,6 +303,12 @@ def check_latex(latex: str, let: Sequence[str] | dict[str, str] | str | None = N
             book symbols, ``MODEL`` first), matched by name.
         repairs: search the smallest edits that make a failing relation hold.
         repair_budget: candidates tried per failing relation (``None``: 5000).
+        notation: a book's symbol table (``"lynch-park"``, ``"murray-li-sastry"``,
+            ``"siciliano"``, ``"spong"``, ``"craig"``, ``"featherstone"``, ``"barfoot"``,
+            ``"sola"``, ``"corke"``: ``rigidsym.latex.notations.NOTATIONS``): what its
+            symbols are (``\\hat\\omega`` a unit vector in Lynch-Park, the skew matrix of
+            ``\\omega`` in Murray-Li-Sastry; ``c_{12}`` a cosine in Siciliano), below
+            ``let``.
 
     Returns:
         The :class:`Result` of the id ``latex:`` plus a short hash of the input; its
@@ -324,16 +331,16 @@ def check_latex(latex: str, let: Sequence[str] | dict[str, str] | str | None = N
         >>> r.verdict                                              # doctest: +SKIP
         'verified'
     """
-    return _check_latex(latex, let, book, modules, repairs, repair_budget)[0]
+    return _check_latex(latex, let, book, modules, repairs, repair_budget, notation)[0]
 
 
-def _check_latex(latex, let, book, modules, repairs=True, repair_budget=None):
+def _check_latex(latex, let, book, modules, repairs=True, repair_budget=None, notation=None):
     """:func:`check_latex` and the :class:`rigidsym.latex.letting.Reading` (for the CLI)."""
     from rigidsym.checking.checker import check as _check
     from rigidsym.latex.letting import declare_latex
 
     _repair_args(repairs, repair_budget)
-    eq, reading = declare_latex(latex, let, book=book, modules=modules)
+    eq, reading = declare_latex(latex, let, book=book, modules=modules, notation=notation)
     r = Result.of(_check(eq, repairs=repairs, repair_budget=repair_budget))
     r.expected = r.verdict
     r.model = list(r.model) + reading.notes

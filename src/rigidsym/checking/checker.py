@@ -25,6 +25,7 @@ import time
 from dataclasses import asdict, dataclass, field
 from fractions import Fraction
 
+from rigidsym import _work
 from rigidsym.checking.deciding.balls import round_up
 from rigidsym.checking.deciding.bookpoint import describe_point
 from rigidsym.checking.deciding.branches import cases
@@ -234,6 +235,7 @@ def check(eq: Equation | str, *, repairs: bool = True,
     """
     if isinstance(eq, str):
         eq = REGISTRY[eq]
+    _work.count("decide", eq.id)
     t0 = time.perf_counter()
     try:
         return _check(eq, t0, RepairSettings(repairs, repair_budget), expanded)

@@ -5,13 +5,37 @@ estimate of the time left from each id's duration in earlier runs."""
 from __future__ import annotations
 
 import time
+from collections.abc import Callable
 from contextlib import nullcontext
+from dataclasses import dataclass
 from functools import partial
 
+from rigidsym import _work
 from rigidsym._progress import Reporter, load_durations, save_durations
+from rigidsym.checking import verdict_cache
 from rigidsym.checking.repairing.correction import RepairSettings
 
-__all__ = ["run_checks", "verdict_words"]
+__all__ = ["run_checks", "verdict_words", "Extra"]
+
+
+@dataclass(frozen=True)
+class Extra:
+    """Work per id done beside its verdict, in the worker that built the id (issue 39: the
+    transcription record), so that the parent never builds a declaration again.
+
+    Attributes:
+        missing: reads the stored results of the ids it is given into the parent and
+            returns those it has none for (called in the parent, before the checks).
+        compute: the result of one id (called in a worker, after the id's check, or alone
+            for an id whose verdict is cached); stored by it where it keeps results.
+        keep: gives the parent a result a worker computed.
+        words: what it computes, for the progress line (``"transcriptions"``).
+    """
+
+    missing: Callable[[list[str]], list[str]]
+    compute: Callable[[str], object]
+    keep: Callable[[str, object], None]
+    words: str = "transcriptions"
 
 #: where earlier runs' seconds per id are kept (the user cache's ``timings/checks.json``)
 DURATIONS = "checks"
@@ -37,12 +61,26 @@ def _check_one(eq_id: str, settings: RepairSettings | None = None, expanded: boo
 
 
 def _check_group(ids: list[str], settings: RepairSettings | None = None,
-                 expanded: bool = True) -> int:
+                 expanded: bool = True, extra: Extra | None = None,
+                 extra_ids: frozenset = frozenset()):
     """Check a group of ids in one worker, each result sent on the queue as it is known
-    (so that progress stays per id); returns how many."""
+    (so that progress stays per id), the ``extra`` result of each of ``extra_ids`` after
+    it; returns the work the worker counted (:mod:`rigidsym._work`)."""
+    before = _work.snapshot()
     for i in ids:
-        _STARTED.put(("done", _check_one(i, settings, expanded)))
-    return len(ids)
+        r = _check_one(i, settings, expanded)
+        if i in extra_ids:
+            _STARTED.put(("extra", i, extra.compute(i)))
+        _STARTED.put(("done", r))
+    return _work.since(before)
+
+
+def _extra_group(ids: list[str], extra: Extra):
+    """The ``extra`` results of ids whose verdict is cached, in one worker; returns
+    ``([(id, result)...], the work counted)``."""
+    before = _work.snapshot()
+    out = [(i, extra.compute(i)) for i in ids]
+    return out, _work.since(before)
 
 
 def _group_of(eq_id: str) -> str:
@@ -111,7 +149,8 @@ class _Estimate:
 
 def run_checks(ids: list[str], jobs: int = 1, progress: bool = True, cache: bool = False,
                reporter: Reporter | None = None, repairs: bool = True,
-               repair_budget: int | None = None, expanded: bool = True):
+               repair_budget: int | None = None, expanded: bool = True,
+               extra: Extra | None = None):
     """Check ``ids`` (in parallel over ``jobs`` processes), results in the order given.
 
     Args:
@@ -128,6 +167,9 @@ def run_checks(ids: list[str], jobs: int = 1, progress: bool = True, cache: bool
         expanded: print each result's expanded strings (``printed``, ``derived``,
             ``corrected``; :func:`rigidsym.checking.checker.check`); a cached result
             without them is then checked again.
+        extra: work per id done beside the verdict in the worker that builds it
+            (:class:`Extra`); the ids whose verdict is cached but whose extra result is not
+            get it from the workers too, after the checks.
 
     Returns:
         The :class:`~rigidsym.checking.checker.Outcome` of each id, in the order of ``ids``.
@@ -136,12 +178,12 @@ def run_checks(ids: list[str], jobs: int = 1, progress: bool = True, cache: bool
     one = partial(_check_one, settings=settings, expanded=expanded)
     hits, keys = ({}, {})
     if cache:
-        from rigidsym.checking import verdict_cache
         hits, keys = verdict_cache.lookup(ids, settings)
         if expanded:  # stored by a run that did not print them (rigidsym verify)
             hits = {i: r for i, r in hits.items() if r.derived is not None}
     results = dict(hits)
     todo = [i for i in ids if i not in hits]
+    extra_ids = frozenset(extra.missing(ids)) if extra else frozenset()
     rep = reporter or Reporter("rigidsym verify", enabled=progress)
     est = _Estimate(todo, jobs)
     what = f"checking {len(ids)} ids" + (f" ({len(hits)} from the cache)" if hits else "")
@@ -151,15 +193,21 @@ def run_checks(ids: list[str], jobs: int = 1, progress: bool = True, cache: bool
             ph.advance(len(hits), label=f"{len(hits)} from the verdict cache")
         if jobs > 1 and len(todo) > 1:
             _parallel(est, min(jobs, len(todo)), ph, results,
-                      partial(_check_group, settings=settings, expanded=expanded))
+                      partial(_check_group, settings=settings, expanded=expanded,
+                              extra=extra, extra_ids=extra_ids), extra)
         else:
             for i in todo:
                 running = {i: time.time()}
                 ph.label(f"checking {i}")
                 ph.estimate(est.left(running))
                 results[i] = one(i)
+                if i in extra_ids:
+                    extra.keep(i, extra.compute(i))
                 _finished(results[i], est, ph, {})
         ph.finish(_summary(results.values()))
+    rest = [i for i in ids if i in extra_ids and i not in todo]
+    if rest:
+        _extras(rest, jobs, extra, rep)
     if cache and todo:
         verdict_cache.store([results[i] for i in todo], keys)
     save_durations(DURATIONS, {i: results[i].seconds for i in todo})
@@ -179,7 +227,32 @@ def _doing(running: dict, last=None) -> str:
     return " · ".join(parts) or "checking"
 
 
-def _parallel(est: _Estimate, jobs: int, ph, results: dict, group) -> None:
+def _extras(ids: list[str], jobs: int, extra: Extra, rep: Reporter) -> None:
+    """The ``extra`` results of ids whose verdict was cached, over ``jobs`` fork workers
+    by :func:`_group_of` (so that a section's models are built once)."""
+    groups: dict[str, list[str]] = {}
+    for i in ids:
+        groups.setdefault(_group_of(i), []).append(i)
+    with rep.phase(f"{extra.words} of {len(ids)} ids", total=len(ids)) as ph:
+        if jobs > 1 and len(groups) > 1:
+            import multiprocessing as mp
+
+            with mp.get_context("fork").Pool(min(jobs, len(groups))) as pool:
+                for out, work in pool.imap_unordered(partial(_extra_group, extra=extra),
+                                                     list(groups.values())):
+                    _work.merge(work)
+                    for i, value in out:
+                        extra.keep(i, value)
+                    ph.advance(len(out))
+        else:
+            for i in ids:
+                extra.keep(i, extra.compute(i))
+                ph.advance(1)
+        ph.finish(f"{len(ids)} {extra.words}")
+
+
+def _parallel(est: _Estimate, jobs: int, ph, results: dict, group,
+              extra: Extra | None = None) -> None:
     """Groups of ids (:meth:`_Estimate.groups`) over ``jobs`` fork workers, heaviest group
     first; each worker reports every id it starts and every result on one queue."""
     import multiprocessing as mp
@@ -199,15 +272,18 @@ def _parallel(est: _Estimate, jobs: int, ph, results: dict, group) -> None:
                 if msg[0] == "done":
                     results[msg[1].id] = last = msg[1]
                     _finished(msg[1], est, ph, running)
+                elif msg[0] == "extra":
+                    extra.keep(msg[1], msg[2])
                 else:
                     running[msg[0]] = msg[1]
                 continue
             if pending.ready() and queue.empty():
-                pending.get()  # a worker's exception, raised here
                 break
             time.sleep(0.05)
             ph.label(_doing(running, last))
             ph.estimate(est.left(running))
+        for work in pending.get():  # a worker's exception is raised here
+            _work.merge(work)  # what each worker built and decided
 
 
 def _summary(results) -> str:

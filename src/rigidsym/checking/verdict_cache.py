@@ -45,9 +45,11 @@ from functools import cache
 from pathlib import Path
 
 from rigidsym import _cache, _config
-from rigidsym.checking.deciding.registry import REGISTRY, Equation
+from rigidsym._io import write_atomic_bytes
+from rigidsym.checking.deciding import usermodules
+from rigidsym.checking.deciding.registry import REGISTRY, Equation, is_user_id
 
-__all__ = ["lookup", "store", "key_of", "VerdictCacheWarning", "FORMAT"]
+__all__ = ["lookup", "store", "key_of", "transcription_key", "VerdictCacheWarning", "FORMAT"]
 
 #: version of the entry format (an entry of another format is foreign)
 FORMAT = 1
@@ -192,14 +194,10 @@ def _repair_key(eq: Equation, settings) -> str:
                        "budget": budget_of(eq, settings) if settings.enabled else None})
 
 
-def key_of(eq_id: str, _deps: dict | None = None, settings=None) -> str | None:
-    """The cache key of ``eq_id`` (hex SHA-256), or ``None`` when it must not be cached (a
-    declaration replaced in memory, a module without a file, a helper changed on disk).
-    ``settings`` are the run's :class:`rigidsym.checking.repairing.correction.RepairSettings`.
-
-    Raises:
-        KeyError: for an id that is not registered.
-    """
+def _declaration_parts(eq_id: str, deps: dict | None) -> list[str] | None:
+    """What any result of ``eq_id`` depends on besides the run's settings: the package,
+    the environment, the declaration's metadata and module files (``None``: never
+    cached)."""
     eq = REGISTRY[eq_id]
     mod = sys.modules.get(eq.module)
     if mod is None or not getattr(mod, "__file__", None) or "<locals>" in eq.function \
@@ -208,7 +206,7 @@ def key_of(eq_id: str, _deps: dict | None = None, settings=None) -> str | None:
     if eq.module == _config.BOOK or eq.module.startswith(_config.BOOK + "."):
         files: dict | None = {}  # in the package digest
     else:
-        deps = {} if _deps is None else _deps
+        deps = {} if deps is None else deps
         if eq.module not in deps:
             deps[eq.module] = _module_files(eq.module)
         files = deps[eq.module]
@@ -217,13 +215,65 @@ def key_of(eq_id: str, _deps: dict | None = None, settings=None) -> str | None:
     meta = [eq.id, eq.title, eq.section, eq.kind, eq.latex, eq.expected, eq.cause,
             eq.evidence, eq.singular, eq.module, eq.function,
             getattr(eq, "repair_budget", None)]
+    return [f"format {FORMAT}", package_digest(), _environment(), json.dumps(meta),
+            json.dumps(sorted(files.items()))]
+
+
+def _digest(parts: list[str], eq_id: str) -> str:
     h = hashlib.sha256()
-    for part in (f"format {FORMAT}", package_digest(), _environment(), _settings(),
-                 json.dumps(meta), json.dumps(sorted(files.items())),
-                 _repair_key(eq, settings)):
+    for part in parts:
         h.update(part.encode() + b"\0")
-    h.update(marshal.dumps(eq.build_fn.__code__))
+    # version 2: no back-references, whose use depends on reference counts at the time
+    # (a key computed after a check differed from one computed before it)
+    h.update(marshal.dumps(REGISTRY[eq_id].build_fn.__code__, 2))
     return h.hexdigest()
+
+
+def key_of(eq_id: str, _deps: dict | None = None, settings=None) -> str | None:
+    """The cache key of ``eq_id`` (hex SHA-256), or ``None`` when it must not be cached (a
+    declaration replaced in memory, a module without a file, a helper changed on disk).
+    ``settings`` are the run's :class:`rigidsym.checking.repairing.correction.RepairSettings`.
+
+    Raises:
+        KeyError: for an id that is not registered.
+    """
+    parts = _declaration_parts(eq_id, _deps)
+    if parts is None:
+        return None
+    return _digest(parts + [_settings(), _repair_key(REGISTRY[eq_id], settings)], eq_id)
+
+
+def _built_path(eq_id: str, deps: dict) -> Path | None:
+    parts = _declaration_parts(eq_id, deps)
+    if parts is None:
+        return None
+    key = _digest(parts + ["built"], eq_id)
+    return _cache.folder("verdicts") / key[:2] / f"{key}.built"  # a mark, not an entry
+
+
+def known_to_build(ids: tuple[str, ...]) -> set[str]:
+    """The ids of ``ids`` whose declaration, as it is now, built before: a result of it is
+    stored (a declaration that does not build is ``undecided``, never stored)."""
+    deps: dict = {}
+    out = set()
+    for i in ids:
+        path = _built_path(i, deps)
+        if path is not None and path.exists():
+            out.add(i)
+    return out
+
+
+def transcription_key(eq_id: str, _deps: dict | None = None) -> str | None:
+    """The cache key of ``eq_id``'s transcription record (issue 39): what
+    :func:`key_of` covers but the engine's and the repair search's settings, which a
+    transcription does not depend on; found without building the declaration. ``None``
+    when it must not be cached.
+
+    Raises:
+        KeyError: for an id that is not registered.
+    """
+    parts = _declaration_parts(eq_id, _deps)
+    return None if parts is None else _digest(parts + ["transcription"], eq_id)
 
 
 # --------------------------------------------------------------------------- entries
@@ -281,9 +331,16 @@ def store(results: list, keys: dict) -> int:
     todo = [(r, keys[r.id]) for r in results if keys.get(r.id) and r.verdict != "undecided"]
     if not todo:
         return 0
+    deps: dict = {}
     with _cache.lock("verdicts"):
         for r, k in todo:
             row = dict(r.as_json(), cached=False)
             entry = {"format": FORMAT, "key": k, "id": r.id, "result": row}
             _cache.put(_path(k), json.dumps(entry).encode())  # key order is record order
+            built = _built_path(r.id, deps) if is_user_id(r.id) else None
+            if built is not None:  # a user module's load need not build it again
+                write_atomic_bytes(built, b"")
     return len(todo)
+
+
+usermodules.KNOWN_TO_BUILD = known_to_build

@@ -12,6 +12,7 @@ import argparse
 import os
 import sys
 
+from rigidsym import _work
 from rigidsym.cli import (
     cache,
     check,
@@ -105,6 +106,7 @@ def main(argv: list[str] | None = None) -> int:
         try:
             code = args.func(args)
             sys.stdout.flush()  # a closed pipe shows here, not at the interpreter's exit
+            _work.dump()  # the work done, where a test or a benchmark asked for it
             return code
         except BadInput as exc:
             hint = "" if "rigidsym " in str(exc) else \

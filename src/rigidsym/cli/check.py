@@ -22,6 +22,8 @@ EXAMPLES = r"""  rigidsym check --latex '\mathbf{Q}^T\mathbf{Q} = \mathbf{1}' \
                    scalar, vector, n-vector (6-vector), matrix, mxn matrix (4x4 matrix),
                    symmetric matrix, twist, wrench, transform, so(3), se(3)
 --let NAME = LATEX a first-principles model in the same notation
+--notation NAME    a book's symbols: lynch-park, murray-li-sastry, siciliano, spong, craig,
+                   featherstone, barfoot, sola, corke
 exit codes: 0 holds (verified or definition), 1 does not hold, 3 undecided, 2 bad input"""
 
 #: exit code per verdict
@@ -40,6 +42,10 @@ def add_arguments(c) -> None:
     c.add_argument("--book", metavar="SECTION",
                    help="take the glyphs' meanings from the glyph table's rows of this "
                         "section of the chapter (3.2, 3.4.2, ...)")
+    c.add_argument("--notation", metavar="NAME",
+                   help="a book's symbol table: lynch-park, murray-li-sastry, siciliano, "
+                        "spong, craig, featherstone, barfoot, sola, corke (what its symbols "
+                        "are; a --let wins over it; default: none)")
     c.add_argument("--module", action="append", metavar="PATH_OR_DOTTED",
                    help=MODULE_HELP + "; it lends its symbols and models, matched by name "
                                       "(default: none)")
@@ -65,7 +71,7 @@ def run(args) -> int:
         with Reporter("rigidsym check", keep=False) as rep, \
                 rep.phase("reading and checking the LaTeX") as ph:  # no silent second
             r, reading = _check_latex(args.latex, args.let, args.book, args.module or (),
-                                      opts["repairs"], opts["repair_budget"])
+                                      opts["repairs"], opts["repair_budget"], args.notation)
             ph.finish(verdict_words(r))
     except LatexError as exc:
         print(f"rigidsym: error: --latex: {exc}", file=sys.stderr)

@@ -90,6 +90,7 @@ def run(args) -> int:
                                  args.jobs, cache=not args.no_cache)
     from rigidsym._progress import Reporter
     from rigidsym.cli.exercise import write_report as write_exercises
+    from rigidsym.report.record import transcription_extra
 
     out = Path(args.out) if args.out else default_report_dir()
     with Reporter("rigidsym report") as rep:
@@ -97,7 +98,7 @@ def run(args) -> int:
             ids = select(None, None)
             ph.finish(f"{len(ids)} ids")
         results = run_checks(ids, jobs=args.jobs, progress=True, cache=not args.no_cache,
-                             reporter=rep, expanded=args.full)
+                             reporter=rep, expanded=args.full, extra=transcription_extra())
         files = _chapter_files(results, args.full)
         written = []
         with rep.phase(f"rendering and writing {len(files)} files of the chapter report",

@@ -91,18 +91,33 @@ def _repairs(results) -> None:
             print(f"{who}: repair ({'; then '.join(first['edits'])}{tag}): {first['text']}")
 
 
+def _undecided(results, off) -> None:
+    """Why each undecided result is undecided (a mismatch says it in its own line)."""
+    from rigidsym.report.markdown import undecided_reasons
+
+    for r in results:
+        if r.verdict == "undecided" and r.id not in {o.id for o in off}:
+            for why in undecided_reasons({"members": r.members, "verdict": r.verdict,
+                                          "decision": r.detail}):
+                print(f"({r.id}) undecided: {label_text(why)}")
+
+
 def run(args) -> int:
     """``rigidsym verify``: decide equations, print a table, optionally write JSON."""
     from rigidsym.checking.deciding.registry import is_user_id
     from rigidsym.checking.runner import run_checks  # sympy: after the parser
-    from rigidsym.report.record import cause_line, summary, to_json
+    from rigidsym.report.record import cause_line, summary, to_json, transcription_extra
 
     ids = select_with_modules(args.ids, args.section, args.module)
+    fmt = output_format(args)
+    # a JSON document carries the transcription records: computed beside the verdicts in
+    # the workers that build the declarations, never built again here (issue 39)
+    extra = transcription_extra() if args.json or fmt == "json" else None
     t0 = time.perf_counter()
     results = run_checks(ids, jobs=args.jobs, progress=not args.quiet,
-                         cache=not args.no_cache, expanded=False, **repair_options(args))
+                         cache=not args.no_cache, expanded=False, extra=extra,
+                         **repair_options(args))
     wall = time.perf_counter() - t0
-    fmt = output_format(args)
     if args.json:
         write_atomic(args.json, to_json(results))
     off = [r for r in results if r.verdict != r.expected]
@@ -121,6 +136,7 @@ def run(args) -> int:
     if not args.quiet:
         (_table if fmt == "table" else _plain)(results)
         _repairs(results)
+        _undecided(results, off)
     print(line)
     for r in off:
         print(f"MISMATCH ({r.id}): computed {r.verdict}, expected {r.expected}: {r.detail} "

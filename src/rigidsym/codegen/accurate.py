@@ -32,6 +32,7 @@ import numpy as np
 import sympy as sp
 
 from rigidsym.algebra.symbols import constrained_group
+from rigidsym.codegen.compensated import DiffProd, diffprod, expand_diffprod
 
 __all__ = ["Chosen", "Rewrite", "RULES", "improve"]
 
@@ -92,9 +93,31 @@ def _skew_one_minus_cos(flat, ctx):
     return [e.xreplace(reps) for e in flat], list(reps.items())
 
 
+def _compensated(n):
+    """``n`` (expanded) as a :class:`DiffProd` when it is ``+-a b +- c d`` (every sign: a
+    sum of products of opposite signs cancels as a difference does); else None."""
+    if not n.is_Add or len(n.args) != 2:
+        return None
+    pairs = []
+    for t in n.args:
+        c, fs = t.as_coeff_mul()
+        if c not in (1, -1):
+            return None
+        fs = [f for x in fs for f in ([x.base] * int(x.exp) if x.is_Pow and x.exp.is_Integer
+                                      and 1 <= x.exp <= 2 else [x])]
+        if len(fs) != 2:
+            return None
+        pairs.append((c * fs[0], fs[1]))
+    (a, b), (c, d) = sorted(pairs, key=lambda ab: sp.default_sort_key(ab[0] * ab[1]))
+    return DiffProd(a, b, -c, d)
+
+
 def _expand_numerators(flat, ctx):
     """Each small output ``n / d`` with its numerator expanded: cancelling terms of the
-    declared grouping (``p1 x (p2 - p1)``) cancel symbolically, not in floating point."""
+    declared grouping (``p1 x (p2 - p1)``) cancel symbolically, not in floating point; a
+    numerator then of two products (a cross product ``p1 x p2``) is a compensated
+    difference of products (:mod:`rigidsym.codegen.compensated`): ``p1 x p2`` of nearly
+    parallel points cancels in floating point as ``p1 x (p2 - p1)`` did not."""
     out, parts = [], []
     for e in flat:
         if e.has(sp.Piecewise) or sp.count_ops(e) > EXPAND_LIMIT or ctx["angles"] and \
@@ -106,6 +129,7 @@ def _expand_numerators(flat, ctx):
         if sp.count_ops(ne) >= sp.count_ops(n) + 4 or ne == n:
             out.append(e)
             continue
+        ne = _compensated(ne) or ne
         out.append(ne / d)
         parts.append((n, ne))
     return (out, parts) if parts else None
@@ -151,7 +175,9 @@ RULES = (
             _skew_one_minus_cos),
     Rewrite("expanded numerator",
             "the declared grouping subtracts nearly equal products (p1 x (p2 - p1) with "
-            "|p1| >> |p2 - p1|); expanded, the cancelling terms cancel symbolically",
+            "|p1| >> |p2 - p1|); expanded, the cancelling terms cancel symbolically, and "
+            "the difference of two products left is compensated (Kahan's algorithm, "
+            "rigidsym.codegen.compensated: p1 x p2 of nearly coincident points cancels too)",
             _expand_numerators),
 )
 
@@ -189,6 +215,18 @@ def _points(kernel, rng, n_random: int = 6):
                     p = base()
                     p[i] = [x * scale for x in p[i]]
                     pts.append(p)
+                # nearly coincident points (|p2 - p1| / |p| = s), near the origin and at a
+                # large offset (issue 37: the regimes where p1 x p2 cancels)
+                for j, b in enumerate(kernel.args):
+                    if j <= i or b.kind != "any" or b.shape != (3,) or s < 1e-13:
+                        continue
+                    for offset in (1, 1e6):
+                        p = base()
+                        # floats: the reference judges the formula, not the rounding
+                        p[i] = [mpmath.mpf(float(x * offset)) for x in p[i]]
+                        p[j] = [mpmath.mpf(float(x + s * offset * r)) for x, r in
+                                zip(p[i], rng.standard_normal(3), strict=True)]
+                        pts.append(p)
     return pts
 
 
@@ -248,7 +286,7 @@ class _Meter:
     def worst(self, flat) -> float:
         if not len(self.exact):
             return 0.0
-        f = sp.lambdify(self.syms, flat, modules="numpy", cse=True)
+        f = sp.lambdify(self.syms, flat, modules=[{"DiffProd": diffprod}, "numpy"], cse=True)
         with np.errstate(all="ignore"):
             got = np.array([np.broadcast_to(np.asarray(v, dtype=float), (len(self.exact),))
                             for v in f(*self.rounded.T)]).T
@@ -286,7 +324,7 @@ def _decide(parts, sub) -> str:
     from rigidsym.zero.decide import decide_zero
 
     def bare(x):      # the zero test reads no UnevaluatedExpr (a grouping, not a value)
-        x = sp.sympify(x).xreplace(sub)
+        x = expand_diffprod(x).xreplace(sub)
         return x.replace(lambda y: isinstance(y, sp.UnevaluatedExpr), lambda y: y.args[0])
 
     diff = [bare(o) - bare(n) for o, n in parts]

@@ -14,6 +14,7 @@ from __future__ import annotations
 
 from typing import Any
 
+from rigidsym.codegen.compensated import ARRAY_SOURCE
 from rigidsym.codegen.printers import KernelJaxPrinter, torch_printer
 
 __all__ = ["BACKENDS", "render_array_kernels"]
@@ -43,6 +44,8 @@ def render_array_kernels(env, kc: Any, header) -> dict[str, str]:
         kc: a :class:`rigidsym.codegen.generator.KernelCode`.
         header: ``header(template) -> [lines]``, the generator's file header.
     """
+    from rigidsym.codegen.generator import uses_diffprod
+
     t = "array_kernel.py.j2"
     columns = [str(s) for _, syms in kc.inputs for s in syms]
     files = {}
@@ -52,5 +55,7 @@ def render_array_kernels(env, kc: Any, header) -> dict[str, str]:
         variants = [_variant(v, pr) for v in kc.variants]
         files[f"{backend}/{kc.kernel.name}.py"] = env.get_template(t).render(
             header=header(t), backend=backend, module=module, k=kc.kernel, ops=kc.ops,
-            hash=kc.hash, columns=columns, variants=variants)
+            hash=kc.hash, columns=columns, variants=variants,
+            helpers=ARRAY_SOURCE.strip("\n").replace("{module}", module) if
+            uses_diffprod(kc) else "")
     return files

@@ -26,6 +26,7 @@ import math
 
 import numpy as np
 
+from rigidsym.codegen.compensated import diffprod
 from rigidsym.codegen.printers import KernelNumPyPrinter
 
 __all__ = ["BUDGET", "N_RANDOM", "sample_inputs", "choose", "ProgramSpec", "trig_spec",
@@ -118,7 +119,12 @@ class _Shim:
         return getattr(np, name)
 
 
-_GLOBALS = {"numpy": _Shim()}
+def _diffprod64(*args):
+    # C's rigidsym_diffprod is a double function: float arguments are widened
+    return diffprod(*(np.asarray(a, dtype=_F64) for a in args))
+
+
+_GLOBALS = {"numpy": _Shim(), "_diffprod": _diffprod64}
 
 
 class ProgramSpec:

@@ -36,6 +36,12 @@ class _PowMixin:
         return self._print(expr.expansion())
 
     _one = "1"
+    #: the compensated a b - c d of :mod:`rigidsym.codegen.compensated`, as the printed
+    #: module names it (a helper the templates define)
+    _diffprod = "_diffprod"
+
+    def _print_DiffProd(self, expr):
+        return f"{self._diffprod}({', '.join(self._print(a) for a in expr.args)})"
 
     def _sqrt(self, arg: str) -> str:  # pragma: no cover - overridden
         raise NotImplementedError
@@ -107,6 +113,7 @@ class KernelCPrinter(_PowMixin, C99CodePrinter):
     """C99 printer for per-sample kernels on ``double`` locals."""
 
     _one = "1.0"
+    _diffprod = "rigidsym_diffprod"
 
     def __init__(self, settings=None):
         super().__init__(settings or {})

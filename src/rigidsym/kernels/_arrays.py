@@ -5,15 +5,17 @@ Both back-ends evaluate the same generated programs (``generated/torch``, ``gene
 here (``where``, ``stack``, ``isfinite``, ``broadcast_to``, ``einsum``, ``linalg.det``):
 ``xp`` below is ``torch`` or ``jax.numpy``. This module holds the directory of programs,
 the keyword rules of traced and eager calls, validation of constrained inputs, the
-selection of a branch kernel's variant with the safe-``where`` idiom, and a back-end module's
-functions (:func:`module_api`); it re-exports ``contract`` (``_jacobian``) and ``raise_flagged``.
+selection of a branch kernel's variant with the safe-``where`` idiom, and the call path both
+back-ends share (:class:`Space`: conversion, modes, validation, broadcasting, the singular
+and overflow masks); each back-end supplies only what differs, as a :class:`Library`. It
+re-exports ``contract`` (``_jacobian``) and ``raise_flagged``; a back-end module's public
+face is :mod:`rigidsym.kernels._arrays_api`.
 """
 
 from __future__ import annotations
 
 import json
 import math
-import types
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -24,18 +26,16 @@ import numpy as np
 from rigidsym import _kinds
 from rigidsym._config import generated_dir
 from rigidsym._io import load_module
-from rigidsym.kernels import _state
+from rigidsym.kernels._arrays_checks import _raise, broadcast_batch, modes, validate
 from rigidsym.kernels._errors import raise_flagged
 from rigidsym.kernels._jacobian import contract
 from rigidsym.kernels._jacobian import full_batch as _full
 
-__all__ = ["ArraySpace", "modes", "validate", "evaluate", "contract", "raise_flagged",
-           "SUFFIX", "make_kernel", "namespace", "docstring", "module_api",
-           "make_all", "broadcast_batch"]
+__all__ = ["ArraySpace", "Library", "Space", "modes", "validate", "evaluate", "contract",
+           "raise_flagged", "SUFFIX", "make_all", "broadcast_batch", "convert"]
 
 #: suffix of the generated kernels with Jacobians (rigidsym.codegen.jacobians.SUFFIX)
 SUFFIX = "_with_jacobians"
-_MODES = ("raise", "nan")
 
 
 @dataclass
@@ -80,6 +80,13 @@ class ArraySpace:
             v = self._programs[name] = mod.VARIANTS
         return v
 
+    def safe(self, name: str) -> list[float]:
+        """The :func:`safe_point` of kernel ``name``'s arguments (cached)."""
+        key = ("safe", name)
+        if key not in self._programs:
+            self._programs[key] = safe_point(self.meta[name]["args"])
+        return self._programs[key]
+
 
 def make_all(progs: ArraySpace, make: Callable) -> dict:
     """``{name: make(name)}`` for every kernel of ``progs`` but the Jacobian kernels, every
@@ -87,87 +94,8 @@ def make_all(progs: ArraySpace, make: Callable) -> dict:
     so torch.compile(fullgraph=True) and jit see only tensor code."""
     for name in progs.meta:
         progs.variants(name)
+        progs.safe(name)
     return {name: make(name) for name in progs.meta if not name.endswith(SUFFIX)}
-
-
-def _raise(exc_type: type, message: str):
-    raise exc_type(message)
-
-
-def modes(check: bool | None, on_singular: str | None, traced: bool, where: str,
-          refuse: Callable = _raise):
-    """The effective ``(check, on_singular)`` of a call: defaults ``True`` / ``"raise"`` in
-    eager mode, ``False`` / ``"nan"`` while traced (no host synchronisation there).
-    ``refuse(exc_type, message)`` raises the errors (PyTorch: outside Dynamo's trace).
-
-    Raises:
-        ValueError: ``check=True`` or ``on_singular="raise"`` while traced (``where`` names
-            the tracer), or a bad value.
-    """
-    if check is not None and not isinstance(check, bool):
-        refuse(TypeError, f"check: expected True, False or None, got {check!r}")
-    if on_singular is not None and on_singular not in _MODES:
-        refuse(ValueError, f"on_singular: expected 'raise' or 'nan', got {on_singular!r}")
-    if traced:
-        if check:
-            refuse(ValueError, f"check=True needs eager mode (it reads values on the host); "
-                               f"under {where} pass check=False or leave it unset")
-        if on_singular == "raise":
-            refuse(ValueError, f"on_singular='raise' needs eager mode; under {where} use "
-                               "'nan' (the default there)")
-        return False, "nan"
-    return (True if check is None else check), (on_singular or "raise")
-
-
-def validate(xp, arrays: list, args: list[dict]) -> None:
-    """Eager validation: finite values, unit vectors, proper rotations (the kind table's
-    tolerances for the dtype); one reduction per argument read on the host.
-
-    Raises:
-        ValueError: naming the argument.
-    """
-    for x, a in zip(arrays, args, strict=True):
-        if not bool(xp.isfinite(x).all()):
-            raise ValueError(f"{a['name']}: non-finite value (NaN or inf)")
-        kind = _kinds.for_spec(a["kind"], tuple(a["shape"]))
-        if kind is None or kind.check is None or not _numel(x):
-            continue
-        tol = kind.tolerance(np.dtype(str(x.dtype).replace("torch.", "")))
-        if kind.shape == (3, 3):
-            ident = xp.eye(3, dtype=x.dtype)
-            if hasattr(ident, "to"):  # torch: on the input's device (found on a GPU)
-                ident = ident.to(x.device)
-            g = xp.einsum("...ki,...kj->...ij", x, x) - ident
-            err = float(xp.abs(g).max())
-            if not err <= tol:
-                raise ValueError(f"{a['name']}: not orthogonal (max |{a['name']}^T "
-                                 f"{a['name']} - 1| = {err:.3g} > {tol:.3g})")
-            if bool((xp.linalg.det(x) <= 0).any()):
-                raise ValueError(f"{a['name']}: not a proper rotation (det <= 0)")
-        elif len(kind.shape) == 1:
-            err = float(xp.abs(xp.sqrt((x * x).sum(-1)) - 1.0).max())
-            if err > tol:
-                raise ValueError(f"{a['name']}: not a unit vector (| ||{a['name']}|| - 1 | = "
-                                 f"{err:.3g} > {tol:.3g})")
-
-
-def broadcast_batch(broadcast_shapes: Callable, xs: list, args: list[dict]) -> tuple:
-    """The broadcast batch shape of ``xs`` (each less its argument's own trailing shape).
-
-    Raises:
-        ValueError: the batch shapes do not broadcast (each argument's shape named).
-    """
-    try:
-        return tuple(broadcast_shapes(*[x.shape[:x.ndim - len(a["shape"])]
-                                        for x, a in zip(xs, args, strict=True)]))
-    except (RuntimeError, ValueError):  # torch raises RuntimeError, JAX ValueError
-        shapes = ", ".join(f"{a['name']} {tuple(x.shape)}" for x, a in zip(xs, args,
-                                                                             strict=True))
-        raise ValueError(f"batch shapes do not broadcast: {shapes}") from None
-
-
-def _numel(x) -> int:
-    return int(math.prod(x.shape))
 
 
 def columns(arrays: list, args: list[dict]) -> list:
@@ -196,14 +124,51 @@ def shape_outputs(xp, flat: list, outs: list[dict], like) -> list:
     return res
 
 
-def evaluate(xp, variants: tuple, cols: list, stop_gradient: Callable) -> tuple[list, Any]:
+def evaluate(xp, variants: tuple, cols: list, stop_gradient: Callable, safe=None,
+             singular=None) -> tuple[list, Any]:
     """Run a kernel's variants on ``cols``: ``(flat outputs, singular mask)``.
 
     A kernel with branches takes, per sample, the first branch whose condition holds, else
     main (the NumPy kernel's rule). Safe ``where``: each variant sees the real inputs only
     in its own samples and ``stop_gradient`` of them elsewhere, so a NaN or inf derivative
     of a branch not taken never reaches the gradient.
+
+    ``safe`` (one float per column, a regular point: :func:`safe_point`) is substituted for
+    the inputs of the singular samples before the differentiable evaluation, so that their
+    derivatives are finite and a zero cotangent gives exactly zero, never NaN (0 * inf),
+    in a parameter the batch shares (issue 38); their outputs are then the safe point's,
+    which the caller replaces by NaN or an error. ``singular``: the mask when known (the
+    forward's), else found by a first evaluation on ``stop_gradient`` of the inputs.
     """
+    if safe is None:
+        return _evaluate(xp, variants, cols, stop_gradient)
+    if singular is None:
+        _, singular = _evaluate(xp, variants, [stop_gradient(c) for c in cols], stop_gradient)
+    cols = [xp.where(singular, v, c) for v, c in zip(safe, cols, strict=True)]
+    return _evaluate(xp, variants, cols, stop_gradient)[0], singular
+
+
+def safe_point(args: list[dict]) -> list[float]:
+    """A fixed generic point of the inputs' sets, one float per column: constrained kinds
+    through their rational parametrisation (an exact unit vector or rotation), angles in
+    (0.4, 1.2), free entries in (-1.5, 1.5); regular for every kernel of the package (tested:
+    tests/test_arrays_masked.py), as a random point is with probability one."""
+    rng = np.random.default_rng(38)
+    out: list[float] = []
+    for a in args:
+        kind = _kinds.for_spec(a["kind"], tuple(a["shape"]))
+        n = int(math.prod(a["shape"]))
+        if kind is not None and kind.parametrise is not None:
+            vals = kind.parametrise(list(rng.uniform(-0.9, 0.9, len(kind.params))))
+        elif kind is not None and kind.half_angle:
+            vals = rng.uniform(0.4, 1.2, n)
+        else:
+            vals = rng.uniform(-1.5, 1.5, n)
+        out.extend(float(v) for v in vals)
+    return out
+
+
+def _evaluate(xp, variants: tuple, cols: list, stop_gradient: Callable) -> tuple[list, Any]:
     like = cols[0]
     if len(variants) == 1:
         outs, dens = variants[0][1](*cols)
@@ -241,159 +206,135 @@ def _shp(s) -> str:
     return "(...)" if not s else f"(..., {', '.join(map(str, s))})"
 
 
-def docstring(meta: dict, backend: str, derivative: str) -> str:
-    """The docstring of a back-end kernel, from its ``kernels.json`` entry."""
-    lib = {"torch": "torch.Tensor", "jax": "jax.Array"}[backend]
-    lines = [meta["summary"], "", f"    {meta['formula']}", "",
-             f"Book: Eq. {', '.join('(' + i + ')' for i in meta['ids'])}.", "", "Args:"]
-    for a in meta["args"]:
-        lines.append(f"    {a['name']}: {lib} or array-like {_shp(a['shape'])}; {a['doc']}")
-    lines += [f"    check, on_singular: see :mod:`rigidsym.kernels.{backend}`.", "",
-              "Returns:"]
-    lines += [f"    {lib} {_shp(o['shape'])}: {o['name']}" for o in meta["outputs"]]
-    lines += ["", "Raises:", "    TypeError, ValueError: bad argument (naming it), or check=True"
-              " / on_singular='raise' while traced."]
-    if meta["singular"]:
-        lines.append(f"    SingularConfigurationError: on the singular set "
-                     f"({meta['singular']}), eager and on_singular='raise'.")
-    lines += ["", "Notes:", f"    Derivative: {derivative}",
-              f"    Generated; {meta['ops']} operations; math hash {meta['hash']}."]
-    return "\n".join(lines)
+# ------------------------------------------------ the call path both back-ends share
+@dataclass(frozen=True)
+class Library:
+    """What differs between the array back-ends; :class:`Space` does the rest.
+
+    Fields: ``backend`` (``"torch"``, ``"jax"``), ``xp`` (``torch``, ``jax.numpy``),
+    ``tracer`` (the tracers' names in errors), ``traced(xs)`` (an input is traced: no host
+    reads), ``stop_gradient``, ``detach`` (a view for host reads), ``is_array(v)`` (the
+    library's own array), ``real(v)`` (a library array holds real numbers), ``dtype(values,
+    arrays)`` (the working dtype of the raw ``values``, once ``arrays`` are the library
+    arrays and NumPy arrays they became), ``as_array(v, dtype, device, name)`` (convert, or
+    raise naming ``name``), ``device(arrays)``, ``host(x)`` (a NumPy copy), ``make(space,
+    name)`` (``f(*broadcast inputs) -> (*outputs, singular)``, with the derivative rule),
+    ``refuse(exc_type, message)`` (raises the refusals of :func:`modes`) and ``note(values)``
+    (a warning before conversion, or nothing).
+    """
+
+    backend: str
+    xp: Any
+    tracer: str
+    traced: Callable
+    stop_gradient: Callable
+    detach: Callable
+    is_array: Callable
+    real: Callable
+    dtype: Callable
+    as_array: Callable
+    device: Callable
+    host: Callable
+    make: Callable
+    refuse: Callable = _raise
+    note: Callable = lambda values: None
 
 
-def make_kernel(progs: ArraySpace, call: Callable, name: str, module: str) -> Callable:
-    """The public function of kernel ``name``: the kernel's arguments (positional or
-    keyword), then ``check`` and ``on_singular`` (keyword-only); ``call(name, values,
-    check, on_singular)`` evaluates it."""
-    meta = progs.meta[name]
-    names = [a["name"] for a in meta["args"]]
-    params = ", ".join(names)
-    # a def of its own per kernel (not one closure for all): its real signature, and a code
-    # object of its own, so torch.compile's per-code-object recompile limit (8) is not
-    # shared by every kernel a program compiles
-    scope: dict = {"_call": call}
-    exec(f"def {name}({params}, *, check=None, on_singular=None):\n"  # noqa: S102
-         f"    return _call({name!r}, ({params},), check, on_singular)\n", scope)
-    fn = scope[name]
-    fn.__name__ = fn.__qualname__ = name
-    fn.__module__ = module
-    lib = {"torch": "torch.autograd.Function", "jax": "jax.custom_jvp"}[progs.backend]
-    deriv = (f"the generated Jacobian kernel {name}{SUFFIX} ({lib})"
-             if progs.has_jacobian(name) else
-             "autograd through the generated expression (safe where at branches)")
-    fn.__doc__ = docstring(meta, progs.backend, deriv)
-    return fn
+_BAD_KINDS = "bcOUSMmV"  # NumPy kinds that are no real numbers
 
 
-def namespace(progs: ArraySpace, call: Callable, title: str) -> types.ModuleType:
-    """A namespace (module object) with the public kernels of ``progs`` and
-    ``KERNEL_NAMES``."""
-    ns = types.ModuleType(title)
-    names = progs.kernel_names()
-    for n in names:
-        setattr(ns, n, make_kernel(progs, call, n, title))
-    ns.KERNEL_NAMES = tuple(names)  # type: ignore[attr-defined]
-    ns.__all__ = [*names, "KERNEL_NAMES"]  # type: ignore[attr-defined]
-    return ns
-
-
-# --------------------------------------------------------------- a back-end module's API
-_LOAD_DOC = """The {lib} kernels of a generated directory (``rigidsym generate --out DIR``).
-
-    Args:
-        directory: a folder with ``kernels.json`` and ``{backend}/``; default the package's.
-
-    Returns:
-        A namespace with one function per public kernel and ``KERNEL_NAMES``.
+def convert(lib: Library, values: tuple, args: list[dict]) -> list:
+    """The library arrays of ``values``, of one floating dtype on one device.
 
     Raises:
-        FileNotFoundError: no ``kernels.json`` or ``{backend}/`` there.
+        TypeError: an argument holds no real numbers (named).
+        ValueError: ragged, on another device, or the wrong trailing shape (named).
     """
-_RATE_MATRIX_DOC = """Euler-angle rate matrix ``W`` with ``omega = W eta_dot`` (Exercise 3.10).
-
-    Args:
-        angles: {noun} (..., 3), the intrinsic Euler angles [rad] of ``sequence``.
-        sequence: one of the twelve intrinsic sequences ("ZXZ", "ZYX", ...).
-        frame: "fixed" (omega in the fixed frame) or "body".
-        check, on_singular: see the module.
-
-    Returns:
-        {noun} (..., 3, 3); derivative: the generated Jacobian kernel.
-
-    Raises:
-        TypeError, ValueError: bad input, naming the argument.
-    """
-_ANGLE_RATES_DOC = """Euler-angle rates ``eta_dot = W^-1 omega`` (Exercise 3.10).
-
-    Args:
-        angles: {noun} (..., 3) [rad].
-        omega: {noun} (..., 3) [rad/s], in the frame given by ``frame``.
-        sequence: one of the twelve intrinsic sequences.
-        frame: "fixed" or "body".
-        check, on_singular: see the module.
-
-    Returns:
-        {noun} (..., 3); derivative: {autodiff} through the generated expression.
-
-    Raises:
-        TypeError, ValueError: bad input, naming the argument.
-        SingularConfigurationError: at gimbal lock, eager with on_singular="raise".
-    """
+    lib.note(values)
+    arrays = []
+    for v, a in zip(values, args, strict=True):
+        if lib.is_array(v):
+            if not lib.real(v):
+                raise TypeError(f"{a['name']}: expected real numbers, got {v.dtype}")
+        else:
+            try:
+                v = np.asarray(v)
+            except ValueError as exc:
+                raise ValueError(f"{a['name']}: not a rectangular array ({exc})") from None
+            if v.dtype.kind in _BAD_KINDS:
+                raise TypeError(f"{a['name']}: expected real numbers, got {v.dtype}")
+        arrays.append(v)
+    dtype, device = lib.dtype(values, arrays), lib.device(arrays)
+    out = []
+    for v, a in zip(arrays, args, strict=True):
+        t = lib.as_array(v, dtype, device, a["name"])
+        shape = tuple(a["shape"])
+        if t.ndim < len(shape) or tuple(t.shape[t.ndim - len(shape):]) != shape:
+            raise ValueError(f"{a['name']}: expected shape {_shp(shape)}, got "
+                             f"{tuple(t.shape)}")
+        out.append(t)
+    return out
 
 
-def module_api(scope: dict, make_space: Callable, lib: str, noun: str,
-               autodiff: str) -> tuple:
-    """The module-level functions of a back-end module (``rigidsym.kernels.torch``, ``.jax``).
+class Space:
+    """The kernels of one generated directory in one back-end: ``call`` is the public path."""
 
-    Args:
-        scope: the back-end module's ``globals()`` (its name; where ``__getattr__`` caches a
-            kernel made on first access).
-        make_space: ``make_space(directory)``, the back-end's space: ``.progs`` (an
-            :class:`ArraySpace`) and ``.call(name, values, check, on_singular)``.
-        lib, noun, autodiff: the words of its docstrings ("PyTorch", "tensor", "autograd").
+    def __init__(self, lib: Library, directory):
+        self.lib = lib
+        self.progs = ArraySpace.from_directory(directory, lib.backend)
+        self._fns = make_all(self.progs, lambda name: lib.make(self, name))
 
-    Returns:
-        ``(load, euler_rate_matrix, euler_angle_rates, __getattr__, __dir__, space)``: the
-        first five made as the module's own (``__module__``, ``__qualname__``, ``__doc__``:
-        Sphinx documents them there); ``space(directory=None)`` caches one space a folder.
-    """
-    module, spaces = scope["__name__"], {}
+    def function(self, name: str) -> Callable:
+        """``f(*broadcast inputs) -> (*outputs, singular)`` of kernel ``name``, with its
+        back-end's derivative rule."""
+        return self._fns[name]
 
-    def space(directory=None):
-        key = None if directory is None else Path(directory).resolve()
-        if key not in spaces:
-            spaces[key] = make_space(directory)
-        return spaces[key]
+    def values(self, name: str, xs, differentiated: bool = False) -> tuple:
+        """``(*outputs, singular)`` of kernel ``name`` on broadcast inputs ``xs``;
+        ``differentiated``: autograd will run through it (safe inputs where singular)."""
+        xp, outs = self.lib.xp, self.progs.meta[name]["outputs"]
+        cols = columns(xs, self.progs.meta[name]["args"])
+        flat, sing = evaluate(xp, self.progs.variants(name), cols, self.lib.stop_gradient,
+                              self.progs.safe(name) if differentiated else None)
+        return (*shape_outputs(xp, flat, outs, cols[0]), sing)
 
-    def load(directory: str | Path | None = None) -> types.ModuleType:
-        s = space(directory)
-        return namespace(s.progs, s.call, f"{module}.load({str(directory)!r})")
+    def jacobian(self, name: str, xs, singular) -> list:
+        """The entries of the generated Jacobian kernel of ``name`` at ``xs``, flat; the
+        safe point's in the ``singular`` samples (finite, so that a zero cotangent gives
+        zero and a second derivative through them is finite)."""
+        meta = self.progs.meta[name]
+        nval = sum(math.prod(o["shape"]) for o in meta["outputs"])
+        flat, _ = evaluate(self.lib.xp, self.progs.variants(name + SUFFIX),
+                           columns(xs, meta["args"]), self.lib.stop_gradient,
+                           self.progs.safe(name), singular)
+        return flat[nval:]
 
-    def euler_rate_matrix(angles, sequence: str, frame: str = "fixed", *, check=None,
-                          on_singular=None):
-        name = _state.euler_name("euler_rate_matrix", sequence, frame)
-        return space().call(name, (angles,), check, on_singular)
-
-    def euler_angle_rates(angles, omega, sequence: str, frame: str = "fixed", *, check=None,
-                          on_singular=None):
-        name = _state.euler_name("euler_angle_rates", sequence, frame)
-        return space().call(name, (angles, omega), check, on_singular)
-
-    def __getattr__(attr: str):
-        # the package's kernels, made on first access (importing the module stays cheap)
-        s = space()
-        if attr in s.progs.kernel_names():
-            fn = scope[attr] = make_kernel(s.progs, s.call, attr, module)
-            return fn
-        raise AttributeError(f"module {module!r} has no attribute {attr!r}")
-
-    def __dir__():
-        return sorted([*scope, *space().progs.kernel_names()])
-
-    words = {"lib": lib, "noun": noun, "autodiff": autodiff, "backend": space().progs.backend}
-    docs = {load: _LOAD_DOC, euler_rate_matrix: _RATE_MATRIX_DOC,
-            euler_angle_rates: _ANGLE_RATES_DOC, __getattr__: None, __dir__: None}
-    for fn, doc in docs.items():
-        fn.__module__, fn.__qualname__ = module, fn.__name__
-        fn.__doc__ = None if doc is None else doc.format(**words)
-    return load, euler_rate_matrix, euler_angle_rates, __getattr__, __dir__, space
+    def call(self, name: str, values: tuple, check, on_singular):
+        """Kernel ``name`` on ``values`` (the public functions' body): convert, validate
+        (``check``), broadcast, evaluate, then flag the singular (and, checked, overflowed)
+        samples: an error (``on_singular="raise"``) or NaN there."""
+        lib, xp = self.lib, self.lib.xp
+        meta = self.progs.meta[name]
+        args = meta["args"]
+        xs = convert(lib, values, args)
+        check, on_singular = modes(check, on_singular, lib.traced(xs), lib.tracer, lib.refuse)
+        batch = broadcast_batch(xp.broadcast_shapes, xs, args)
+        if check:
+            validate(xp, [lib.detach(x) for x in xs], args)
+        full = [xp.broadcast_to(x, batch + tuple(a["shape"])) for x, a in zip(xs, args,
+                                                                             strict=True)]
+        *res, sing = self.function(name)(*full)
+        bad = sing
+        if check:
+            over = xp.zeros_like(sing)
+            for r in res:
+                over = over | ~xp.isfinite(r.reshape(batch + (-1,))).all(-1)
+            bad = sing | (over & ~sing)
+        if on_singular == "raise":
+            if bool(bad.any()):  # the error path copies the masks to the host
+                raise_flagged(name, meta, lib.host(sing), lib.host(bad & ~sing),
+                              [lib.host(lib.detach(x)) for x in xs])
+        else:
+            res = [xp.where(bad.reshape(batch + (1,) * (r.ndim - len(batch))), xp.nan, r)
+                   for r in res]
+        return res[0] if len(res) == 1 else tuple(res)

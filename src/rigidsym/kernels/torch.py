@@ -18,10 +18,12 @@ Keywords (no ``out=``, no ``threads=``: meaningless or harmful under autograd an
 
 Derivatives: a kernel with a generated Jacobian kernel (``<name>_with_jacobians``) is a
 ``torch.autograd.Function`` (``setup_context``, a generated vmap rule, ``backward`` and
-``jvp``) whose derivative *is* that verified Jacobian; double backward is not supported
-(``create_graph=True`` raises, saying so). The others (the branch kernels, the Euler-angle rates)
-are differentiated by autograd through the generated expression, with the safe-``where``
-idiom at their branches.
+``jvp``; no ``jvp`` under ``torch.compile``, whose Dynamo cannot trace one) whose
+derivative *is* that verified Jacobian, by plain tensor arithmetic that autograd
+differentiates again (``create_graph=True``). The others (the branch kernels, the
+Euler-angle rates) are differentiated by autograd through the generated expression, with the
+safe-``where`` idiom at their branches. A sample masked by ``on_singular="nan"`` has a zero
+gradient: its inputs are replaced by a regular point before a differentiated evaluation.
 
 Example:
     >>> import torch
@@ -37,8 +39,6 @@ Example:
 
 from __future__ import annotations
 
-import math
-
 try:
     import torch
 except ImportError as _exc:  # pragma: no cover - exercised where PyTorch is absent
@@ -46,14 +46,11 @@ except ImportError as _exc:  # pragma: no cover - exercised where PyTorch is abs
                       "'rigidsym[torch]'") from _exc
 import numpy as np
 
-from rigidsym.kernels import _arrays
+from rigidsym.kernels import _arrays, _arrays_api
 from rigidsym.kernels._errors import NonFiniteResultError, SingularConfigurationError
 
 __all__ = ["load", "euler_rate_matrix", "euler_angle_rates", "SingularConfigurationError",
            "NonFiniteResultError"]
-
-_TRACER = "torch.compile / torch.func"
-_BAD_KINDS = "bcOUSMmV"
 
 
 def _traced(xs) -> bool:
@@ -78,7 +75,9 @@ except TypeError:  # torch < 2.7: no reason; Dynamo's message names the function
     _refuse = torch.compiler.disable(_needs_eager_mode)
 
 
-def _dtype(values) -> torch.dtype:
+def _dtype(values, arrays) -> torch.dtype:
+    """The promoted dtype of the floating tensors and NumPy arrays among the raw ``values``
+    (Python numbers and lists are weak, as in torch), else the default dtype."""
     found = [v.dtype for v in values if isinstance(v, torch.Tensor) and v.dtype.is_floating_point]
     found += [torch.from_numpy(np.empty(0, v.dtype)).dtype for v in values
               if isinstance(v, np.ndarray) and v.dtype.kind == "f"]
@@ -90,32 +89,12 @@ def _dtype(values) -> torch.dtype:
     return dt
 
 
-def _convert(name: str, values: tuple, args: list[dict]) -> list:
-    """Tensors of one dtype on the inputs' device; errors name the argument."""
-    device = next((v.device for v in values if isinstance(v, torch.Tensor)), None)
-    dtype = _dtype(values)
-    res = []
-    for v, a in zip(values, args, strict=True):
-        if isinstance(v, torch.Tensor):
-            if v.dtype == torch.bool or v.dtype.is_complex:
-                raise TypeError(f"{a['name']}: expected real numbers, got a {v.dtype} tensor")
-            if v.device != device:
-                raise ValueError(f"{a['name']}: on {v.device}, the other inputs on {device}")
-            t = v if v.dtype == dtype else v.to(dtype)
-        else:
-            try:
-                arr = np.asarray(v)
-            except ValueError as exc:
-                raise ValueError(f"{a['name']}: not a rectangular array ({exc})") from None
-            if arr.dtype.kind in _BAD_KINDS:
-                raise TypeError(f"{a['name']}: expected real numbers, got {arr.dtype}")
-            t = torch.as_tensor(arr, dtype=dtype, device=device)
-        shape = tuple(a["shape"])
-        if tuple(t.shape[t.ndim - len(shape):]) != shape or t.ndim < len(shape):
-            raise ValueError(f"{a['name']}: expected shape {_arrays._shp(shape)}, got "
-                             f"{tuple(t.shape)}")
-        res.append(t)
-    return res
+def _as_tensor(v, dtype, device, name: str) -> torch.Tensor:
+    if isinstance(v, torch.Tensor):
+        if v.device != device:
+            raise ValueError(f"{name}: on {v.device}, the other inputs on {device}")
+        return v if v.dtype == dtype else v.to(dtype)
+    return torch.as_tensor(v, dtype=dtype, device=device)
 
 
 def _fixed_arity(values, n: int):
@@ -127,105 +106,76 @@ def _fixed_arity(values, n: int):
     return scope["forward"]
 
 
-class _Space:
-    """The PyTorch kernels of one generated directory."""
-
-    def __init__(self, directory):
-        self.progs = _arrays.ArraySpace.from_directory(directory, "torch")
-        self._fns = _arrays.make_all(self.progs, self._make)
-
-    def function(self, name: str):
-        """The ``torch.autograd.Function`` of ``name`` (None: no Jacobian kernel)."""
-        return self._fns[name]
-
-    def _make(self, name: str):
-        if not self.progs.has_jacobian(name):
-            return None
-        meta, progs = self.progs.meta[name], self.progs
-        args, outs = meta["args"], meta["outputs"]
-        nval = sum(math.prod(o["shape"]) for o in outs)
-
-        def values(xs):
-            cols = _arrays.columns(xs, args)
-            flat, sing = _arrays.evaluate(torch, progs.variants(name), cols, torch.detach)
-            return (*_arrays.shape_outputs(torch, flat, outs, cols[0]), sing)
-
-        def jac(xs):  # the generated Jacobian kernel's entries, flat
-            cols = _arrays.columns(xs, args)
-            flat, _ = _arrays.evaluate(torch, progs.variants(name + _arrays.SUFFIX), cols,
-                                       torch.detach)
-            return flat[nval:]
-
-        class KernelFunction(torch.autograd.Function):
-            generate_vmap_rule = True
-
-            forward = staticmethod(_fixed_arity(values, len(args)))
-
-            @staticmethod
-            def setup_context(ctx, inputs, output):
-                ctx.save_for_backward(*inputs)
-                ctx.save_for_forward(*inputs)
-                ctx.mark_non_differentiable(output[-1])
-
-            @staticmethod
-            def backward(ctx, *grads):
-                # create_graph=True: a second derivative asked (torch.func's transforms
-                # run backward with grad mode on, on their wrapped tensors: not that)
-                if torch.is_grad_enabled() and not _traced(grads):
-                    raise RuntimeError(
-                        f"rigidsym.kernels.torch.{name}: double backward (create_graph=True) "
-                        "is not supported: the derivative is the generated first-order "
-                        "Jacobian kernel")
-                xs = ctx.saved_tensors
-                return tuple(_arrays.contract(torch, list(grads[:-1]), jac(xs), outs, args,
-                                              forward=False))
-
-            @staticmethod
-            def jvp(ctx, *tangents):
-                xs = ctx.saved_tensors
-                t = [torch.zeros_like(x) if d is None else d for x, d in zip(xs, tangents,
-                                                                             strict=True)]
-                return (*_arrays.contract(torch, t, jac(xs), outs, args, forward=True), None)
-
-        KernelFunction.__name__ = KernelFunction.__qualname__ = f"{name}_function"
-        return KernelFunction
-
-    def call(self, name: str, values: tuple, check, on_singular):
-        meta = self.progs.meta[name]
-        args, outs = meta["args"], meta["outputs"]
-        xs = _convert(name, values, args)
-        check, on_singular = _arrays.modes(check, on_singular, _traced(xs), _TRACER,
-                                           _refuse)
-        batch = _arrays.broadcast_batch(torch.broadcast_shapes, xs, args)
-        if check:
-            _arrays.validate(torch, [x.detach() for x in xs], args)
-        full = [x.broadcast_to(batch + tuple(a["shape"])) for x, a in zip(xs, args, strict=True)]
-        fn = self.function(name)
-        if fn is not None:
-            *res, sing = fn.apply(*full)
-        else:
-            cols = _arrays.columns(full, args)
-            flat, sing = _arrays.evaluate(torch, self.progs.variants(name), cols, torch.detach)
-            res = _arrays.shape_outputs(torch, flat, outs, cols[0])
-        bad = sing
-        if check:
-            over = torch.zeros_like(sing)
-            for r in res:
-                over = over | ~torch.isfinite(r.reshape(batch + (-1,))).all(-1)
-            over = over & ~sing
-            bad = sing | over
-        if on_singular == "raise":
-            if bool(bad.any()):  # the error path copies the masks to the host
-                _arrays.raise_flagged(name, meta, sing.cpu().numpy(),
-                                      (bad & ~sing).cpu().numpy(),
-                                      [x.detach().cpu().numpy() for x in xs])
-        else:
-            res = [torch.where(bad.reshape(batch + (1,) * (r.ndim - len(batch))),
-                               torch.nan, r) for r in res]
-        return res[0] if len(res) == 1 else tuple(res)
+def _differentiable(xs) -> bool:
+    """Autograd may run through ``xs``: grad mode with an input requiring grad, or a
+    torch.func transform (its wrapped tensors)."""
+    return (torch.is_grad_enabled() and any(x.requires_grad for x in xs)) or any(
+        torch._C._functorch.is_functorch_wrapped_tensor(x) for x in xs)
 
 
-# load, the Euler-angle kernels, the lazy kernels: the same for both back-ends (_arrays)
+def _function(space: _arrays.Space, name: str, forward_mode: bool):
+    """The ``torch.autograd.Function`` of kernel ``name``: backward (and, ``forward_mode``,
+    jvp) through the generated Jacobian kernel. Dynamo cannot trace a custom ``jvp``
+    ("Unsupported custom jvp"), so compiled code gets the class without it (no forward
+    mode under torch.compile)."""
+    meta = space.progs.meta[name]
+    args, outs = meta["args"], meta["outputs"]
+
+    def setup_context(ctx, inputs, output):
+        # the singular mask too: the Jacobian takes safe inputs there (_arrays.evaluate)
+        ctx.save_for_backward(*inputs, output[-1])
+        if forward_mode:
+            ctx.save_for_forward(*inputs, output[-1])
+        ctx.mark_non_differentiable(output[-1])
+
+    def backward(ctx, *grads):
+        # plain tensor arithmetic on the saved inputs: differentiable again
+        # (create_graph=True, gradgradcheck)
+        *xs, sing = ctx.saved_tensors
+        return tuple(_arrays.contract(torch, list(grads[:-1]), space.jacobian(name, xs, sing),
+                                      outs, args, forward=False))
+
+    def jvp(ctx, *tangents):
+        *xs, sing = ctx.saved_tensors
+        t = [torch.zeros_like(x) if d is None else d for x, d in zip(xs, tangents, strict=True)]
+        return (*_arrays.contract(torch, t, space.jacobian(name, xs, sing), outs, args,
+                                  forward=True), None)
+
+    body = {"generate_vmap_rule": True,
+            "forward": staticmethod(_fixed_arity(lambda xs: space.values(name, xs),
+                                                 len(args))),
+            "setup_context": staticmethod(setup_context), "backward": staticmethod(backward)}
+    if forward_mode:
+        body["jvp"] = staticmethod(jvp)
+    title = f"{name}_function" if forward_mode else f"{name}_compiled_function"
+    return type(title, (torch.autograd.Function,), body)
+
+
+def _make(space: _arrays.Space, name: str):
+    """The kernel's function: a ``torch.autograd.Function`` whose derivative is the
+    generated Jacobian kernel, or autograd through the expression (no Jacobian kernel;
+    safe inputs in the singular samples when differentiated)."""
+    if not space.progs.has_jacobian(name):
+        return lambda *xs: space.values(name, xs, _differentiable(xs))
+    eager, compiled = _function(space, name, True), _function(space, name, False)
+
+    def apply(*xs):
+        return (compiled if torch.compiler.is_compiling() else eager).apply(*xs)
+
+    return apply
+
+
+_LIBRARY = _arrays.Library(
+    backend="torch", xp=torch, tracer="torch.compile / torch.func", traced=_traced,
+    stop_gradient=torch.detach, detach=torch.detach,
+    is_array=lambda v: isinstance(v, torch.Tensor),
+    real=lambda v: v.dtype != torch.bool and not v.dtype.is_complex,
+    dtype=_dtype, as_array=_as_tensor,
+    device=lambda xs: next((x.device for x in xs if isinstance(x, torch.Tensor)), None),
+    host=lambda x: x.cpu().numpy(), make=_make, refuse=_refuse)
+
+# load, the Euler-angle kernels, the lazy kernels: the same for both back-ends (_arrays_api)
 load, euler_rate_matrix, euler_angle_rates, __getattr__, __dir__, _space = \
-    _arrays.module_api(globals(), _Space, "PyTorch", "tensor", "autograd")
+    _arrays_api.module_api(globals(), lambda d: _arrays.Space(_LIBRARY, d), "PyTorch",
+                           "tensor", "autograd")
 __all__ += _space().progs.kernel_names()

@@ -22,11 +22,12 @@ import sympy as sp
 from rigidsym.algebra import symbols as _sym
 from rigidsym.checking.deciding.errors import BadInput
 from rigidsym.checking.deciding.registry import Rel, Statement
+from rigidsym.latex import guards
+from rigidsym.latex.glyphrows import _Reader, _symbol
 from rigidsym.latex.lending import lent
 from rigidsym.latex.lets import KIND_WORDS, Let, kind_of, read_lets
-from rigidsym.latex.reader import parse_latex
-from rigidsym.latex.shapes import LatexError, _name_from_key, _shape
-from rigidsym.latex.table import Glyph, glyph_table, lookup
+from rigidsym.latex.shapes import _shape
+from rigidsym.latex.table import Glyph
 from rigidsym.printing import notation
 
 __all__ = ["Reading", "read_statement", "latex_id", "check_book", "declare_latex",
@@ -52,22 +53,12 @@ class Reading:
     free: list[str] = field(default_factory=list)
 
 
-def latex_id(latex: str, lets: list[Let], book: str | None, modules) -> str:
+def latex_id(latex: str, lets: list[Let], book: str | None, modules,
+             notation: str | None = None) -> str:
     """The id of a LaTeX check: ``latex:`` and a short hash of the input."""
-    key = json.dumps([latex, [x.text for x in lets], book, [str(m) for m in modules or ()]])
+    key = json.dumps([latex, [x.text for x in lets], book, [str(m) for m in modules or ()]]
+                     + ([notation] if notation else []))
     return "latex:" + hashlib.sha256(key.encode()).hexdigest()[:10]
-
-
-def _in(section: str, book: str) -> bool:
-    return book == "3" or section == book or section.startswith(book + ".")
-
-
-def _book_rows(key: str, book: str) -> list[Glyph]:
-    """The rows of a glyph within a section's sub-sections (when none is on its chain)."""
-    rows = [g for g in glyph_table() if g.latex == key and g.section != "*"
-            and _in(g.section, book)]
-    distinct = {(g.name, g.shape, g.kind, g.definition): g for g in rows}
-    return list(distinct.values())
 
 
 def check_book(book: str) -> str:
@@ -78,88 +69,6 @@ def check_book(book: str) -> str:
     return book.strip()
 
 
-class _Reader:
-    """Parses the LaTeX and the models with one set of glyph overrides."""
-
-    def __init__(self, lets: list[Let], book: str | None, lend: dict):
-        self.book, self.lend = book, lend
-        self.over: dict[str, Glyph] = {}
-        self.declared: dict[str, Let] = {x.key: x for x in lets}
-        self.notes: list[str] = []
-        self.used: set[str] = set()
-        self.glyphs: dict[str, Glyph] = {}
-        for x in lets:
-            if x.kind:
-                shape, _, words = kind_of(x.kind, x.text)
-                self.over[x.key] = Glyph(x.key, "*", self._name(x.key), shape, "let", words)
-
-    def _name(self, key: str) -> str:
-        if self.book:
-            g = lookup(key, self.book)
-            if g is not None:
-                return g.name
-        return _name_from_key(key)
-
-    def _extra(self, glyphs: dict) -> dict[str, Glyph]:
-        """Rows the first reading could not know: a book row of a sub-section, a module's
-        symbol of that name."""
-        new = {}
-        for key, g in glyphs.items():
-            if key in self.over:
-                continue
-            if self.book and g.kind == "free":  # no row on the section's chain
-                rows = _book_rows(key, self.book)
-                if len(rows) > 1:
-                    where = "; ".join(f"{r.name}, {r.meaning} ({r.section})" for r in rows)
-                    raise BadInput(f"--book {self.book}: {key} is ambiguous there ({where}): "
-                                   f"say which with --let '{key}: KIND' or a --book of one "
-                                   f"sub-section")
-                if rows:
-                    new[key] = rows[0]
-                    continue
-            name = g.name
-            if name in self.lend and g.kind == "free":
-                sym, _ = self.lend[name]
-                shape = tuple(sym.shape) if isinstance(sym, sp.MatrixSymbol) else ()
-                new[key] = Glyph(key, "*", name, shape, "module", "lent by --module")
-        return new
-
-    def parse(self, text: str, what: str):
-        for _ in range(3):
-            try:
-                p = parse_latex(text, self.book, self.over, reader=True)
-            except LatexError as exc:
-                extra = self._extra(exc.glyphs) if exc.construct == "shapes" else {}
-                if extra:
-                    self.over.update(extra)
-                    continue
-                raise self._hint(exc, what) from None
-            extra = self._extra(p.glyphs)
-            if not extra:
-                self.used.update(p.glyphs)
-                self.glyphs.update(p.glyphs)
-                return p
-            self.over.update(extra)
-        raise LatexError(f"{what}: the glyphs' shapes do not settle", "shapes")
-
-    def _hint(self, exc: LatexError, what: str) -> LatexError:
-        msg = str(exc)
-        if what != "the LaTeX":
-            msg = f"{what}: {msg}"
-        free = [k for k, g in exc.glyphs.items() if g.kind == "free" and k not in self.over]
-        if exc.construct == "shapes" and free:
-            msg = (f"{msg.split(' (declare the shapes')[0]}; its meaning depends on the shape "
-                   f"of {', '.join(free)}, which no --let declares: add e.g. --let "
-                   f"'{free[0]}: KIND' (KIND one of {', '.join(KIND_WORDS)})")
-        out = LatexError(msg, exc.construct)
-        out.glyphs = exc.glyphs
-        return out
-
-
-def _symbol(g: Glyph):
-    return sp.MatrixSymbol(g.name, *g.shape) if g.shape else sp.Symbol(g.name, real=True)
-
-
 def _words(shape) -> str:
     if not shape:
         return "scalar"
@@ -167,7 +76,7 @@ def _words(shape) -> str:
 
 
 def read_statement(latex: str, lets: list[Let], book: str | None = None,
-                   lend: dict | None = None) -> Reading:
+                   lend: dict | None = None, table=None) -> Reading:
     """Read a reader's LaTeX and its declarations into a :class:`Statement`.
 
     Args:
@@ -175,6 +84,8 @@ def read_statement(latex: str, lets: list[Let], book: str | None = None,
         lets: its declarations (:func:`read_lets`).
         book: a book section whose glyph-table rows name the glyphs, or ``None``.
         lend: symbols a module lends, by name: ``name -> (symbol, model value or None)``.
+        table: a book's :class:`~rigidsym.latex.notations.Notation` (``--notation``),
+            below the ``--let`` declarations.
 
     Returns:
         The :class:`Reading`.
@@ -188,20 +99,31 @@ def read_statement(latex: str, lets: list[Let], book: str | None = None,
     from rigidsym.checking.deciding.explicit import _EXPLICIT_CACHE, explicit
 
     lend = lend or {}
-    rd = _Reader(lets, book, lend)
+    rd = _Reader(lets, book, lend, table)
     values: dict = {}  # book symbol -> value in book symbols (resolved below)
     occurs = _read_models(rd, lets, values)
+    models = {sym.name: v for sym, v in values.items()}  # the --let models, for R(\theta)
     parsed = rd.parse(latex, "the LaTeX")
-    occurs |= set(parsed.glyphs)
+    values.update(rd.models)
+    models.update({sym.name: v for sym, v in rd.models.items()})
+    occurs |= set(parsed.glyphs) | rd.in_models
     for x in lets:
         if x.key not in occurs:
             raise BadInput(f"--let '{x.text}': {x.key} does not occur in the LaTeX nor in a "
                            f"model (the LaTeX's glyphs: "
                            f"{', '.join(sorted(parsed.glyphs)) or 'none'})")
     notes, free = _glyph_values(rd, lend, values)
+    if table is not None and rd.by_notation & rd.used:
+        notes.insert(0, f"--notation {table.name} ({table.title}): " + "; ".join(
+            rd.declared[k].text for k in sorted(rd.by_notation & rd.used)))
+    glyphs = {**rd.glyphs, **rd.over}
+    models.update({name: v for name, (_, v) in lend.items() if v is not None})
+    guards.applications(parsed.applied, models, glyphs)
+    guards.time_derivatives(free, rd.used, rd.declared)
     model = _resolve(values, explicit)
     _EXPLICIT_CACHE.clear()
     printed, kind = _relations(parsed)
+    guards.conventional_shapes(printed, free, glyphs)
     defines = tuple(r.lhs.name for r in printed) if kind == "definition" else ()
     text = "; ".join(f"{notation.text(r.lhs)} {'≡' if kind == 'definition' else '='} "
                      f"{notation.text(r.rhs)}" for r in printed)
@@ -329,7 +251,8 @@ def _atoms(v) -> set:
                                            if type(s) is sp.Symbol}
 
 
-def declare_latex(latex: str, let=None, *, book: str | None = None, modules=()):
+def declare_latex(latex: str, let=None, *, book: str | None = None, modules=(),
+                  notation: str | None = None):
     """Read a reader's LaTeX and register it as the user id ``latex:<hash>``.
 
     Args:
@@ -337,6 +260,8 @@ def declare_latex(latex: str, let=None, *, book: str | None = None, modules=()):
         let: its declarations (:func:`read_lets`).
         book: a section of the chapter whose glyph table names the glyphs, or ``None``.
         modules: user modules that lend their symbols and models (:func:`lent`).
+        notation: a book's notation (``"lynch-park"``; :data:`rigidsym.latex.notations.
+            NOTATIONS`): what its symbols are, below the ``let`` declarations.
 
     Returns:
         ``(equation, reading)``: the registered
@@ -351,10 +276,13 @@ def declare_latex(latex: str, let=None, *, book: str | None = None, modules=()):
 
     if not isinstance(latex, str) or not latex.strip():
         raise BadInput(f"latex: expected a non-empty LaTeX string, got {latex!r}")
+    from rigidsym.latex.notations import notation as _notation
+
     lets = read_lets(let)
     book = check_book(book) if book is not None else None
-    reading = read_statement(latex, lets, book, lent(modules))
-    eq_id = latex_id(latex, lets, book, modules)
+    table = _notation(notation) if notation is not None else None
+    reading = read_statement(latex, lets, book, lent(modules), table)
+    eq_id = latex_id(latex, lets, book, modules, table.name if table else None)
     n = len(reading.statement.printed)
     title = "a relation read from LaTeX" if n == 1 else f"{n} relations read from LaTeX"
 

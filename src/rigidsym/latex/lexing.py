@@ -41,6 +41,8 @@ class Parsed:
         readings: notes on how the text was read (a dropped time argument, a block row whose
             column separator was lost, an ignored condition).
         glyphs: the glyph-table rows used, by LaTeX key.
+        applied: the non-scalar symbols read as applied to a parenthesised scalar
+            (``R(\\theta)``), by LaTeX key: the arguments (``rigidsym.latex.meaning``).
     """
 
     chains: list = field(default_factory=list)
@@ -48,6 +50,7 @@ class Parsed:
     relations: list = field(default_factory=list)
     readings: list = field(default_factory=list)
     glyphs: dict = field(default_factory=dict)
+    applied: dict = field(default_factory=dict)  # R(\theta): key -> arguments (latex.meaning)
 
     def pairs(self):
         """Every pair ``(chain, i, j, E_i, E_j)`` with ``i < j`` of a chain: each is a

@@ -20,6 +20,7 @@ import sympy as sp
 
 from rigidsym.algebra.operators import Cross, Det, Vect
 from rigidsym.latex.lexing import Parsed, Relation, parser
+from rigidsym.latex.meaning import MeaningRules
 from rigidsym.latex.shapes import (
     LatexError,
     _as_block,
@@ -41,7 +42,7 @@ __all__ = ["LatexError", "Relation", "Parsed", "parser"]
 _TIME = sp.Symbol("t", real=True)  # the plain letter t: time, the argument of p(t)
 
 
-class _Build(VocabRules, lark.Transformer):
+class _Build(MeaningRules, VocabRules, lark.Transformer):
     """Tree -> sympy, in the declaration vocabulary (module docstring); ``reader``: a
     reader's LaTeX, ``[x]`` of a vector its hat, ``I`` the identity (``latex/vocab.py``)."""
 
@@ -117,6 +118,9 @@ class _Build(VocabRules, lark.Transformer):
         else:
             key = self._key(base, rest, accent)
         kind = base[0]
+        sized = self._sized(key, base, rest, accent)  # I, I_3, \mathbf{1}_3 (latex.meaning)
+        if sized is not None:
+            return _GlyphKey(key, base, rest, accent, sized)
         if kind == "zero":
             return _GlyphKey(key, base, rest, accent, sp.ZeroMatrix(3, 1))
         if kind == "one":
@@ -133,10 +137,6 @@ class _Build(VocabRules, lark.Transformer):
             return _GlyphKey(key, base, rest, accent, sp.ZeroMatrix(rows, cols))
         if kind == "plain" and base[1] == "t" and not rest and not accent:
             return _GlyphKey(key, base, rest, accent, _TIME)
-        if key == "I" and self.reader and key not in self.overrides and (
-                self.section is None or lookup(key, self.section) is None):
-            self._note("I: the identity (no --let declares I), sized by its neighbours")
-            return _GlyphKey(key, base, rest, accent, sp.Identity(3))
         return _GlyphKey(key, base, rest, accent, self._symbol(key, base))
 
     def _symbol(self, key, base):

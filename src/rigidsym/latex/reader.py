@@ -10,7 +10,7 @@ import sympy as sp
 
 from rigidsym.latex.lexing import Parsed, Relation, parser
 from rigidsym.latex.parser import _Build, _value
-from rigidsym.latex.shapes import LatexError, _as_scalar, _caret, _shape
+from rigidsym.latex.shapes import LatexError, _as_scalar, _caret, _shape, loose
 
 __all__ = ["parse_latex"]
 
@@ -51,19 +51,20 @@ def parse_latex(latex: str, section: str | None = "*", overrides: dict | None = 
             exc.orig_exc.glyphs = dict(build.glyphs)  # those read before it: for hints
             raise exc.orig_exc from None
         raise LatexError(f"cannot read {latex!r}: {exc.orig_exc}", "shapes") from None
-    out = Parsed(readings=build.readings, glyphs=build.glyphs)
+    out = Parsed(readings=build.readings, glyphs=build.glyphs,
+                 applied=build.applied)
     for st in stmts:
         _, exprs, ops = st
         exprs = [_as_scalar(_value(e)) for e in exprs]
         sized = next((_shape(e) for e in exprs if _shape(e)
-                      and not isinstance(e, sp.ZeroMatrix)), None)
-        exprs = [sp.ZeroMatrix(*sized) if isinstance(e, sp.ZeroMatrix) and sized else e
+                      and type(e) is not sp.ZeroMatrix), None)
+        exprs = [sp.ZeroMatrix(*sized) if type(e) is sp.ZeroMatrix and sized else e
                  for e in exprs]  # "= \mathbf{0}": the zero of the other side's shape
-        sized = next((_shape(e) for e in exprs if _shape(e) and not isinstance(
-            e, sp.ZeroMatrix | sp.Identity)), sized) if reader else sized
+        sized = next((_shape(e) for e in exprs if _shape(e) and not loose(e)),
+                     sized) if reader else sized
         if reader and sized and sized[0] == sized[1]:  # "= I": the identity of that size
-            exprs = [sp.Identity(sized[0]) if isinstance(e, sp.Identity) else e
-                     for e in exprs]
+            exprs = [sp.Identity(sized[0]) if type(e) is sp.Identity else e
+                     for e in exprs]  # (not an I_3: rigidsym.latex.meaning)
         out.chains.append(exprs)
         out.ops.append(ops)
     for label, body in build.braces:  # an underbrace whose label is a symbol: a member

@@ -30,6 +30,20 @@ class LatexError(ValueError):
         self.glyphs: dict = {}
 
 
+class SizedIdentity(sp.Identity):
+    """An identity whose size the LaTeX wrote (``I_3``): never resized by its neighbours."""
+
+
+class SizedZero(sp.ZeroMatrix):
+    """A zero whose size the LaTeX wrote (``0_{3\\times 3}``): never resized."""
+
+
+def loose(x) -> bool:
+    """An identity or zero the LaTeX left unsized (``I``, ``\\mathbf{1}``, ``\\mathbf{0}``):
+    its neighbours size it."""
+    return type(x) in (sp.Identity, sp.ZeroMatrix)
+
+
 def _shape(x) -> tuple[int, int] | None:
     """``(rows, cols)`` of a matrix expression, ``None`` for a scalar."""
     if isinstance(x, sp.MatrixBase | sp.MatrixExpr):
@@ -104,8 +118,6 @@ def _as_block(c):
 def _fit_blocks(cells: list[list]) -> list[list]:
     """Size the zero and identity blocks (``\\mathbf{O}``, ``\\mathbf{0}``, ``\\mathbf{1}``)
     from the other blocks of their row and column: the book writes them unsized."""
-    def loose(c):
-        return isinstance(c, sp.ZeroMatrix | sp.Identity)
 
     def first(sizes):  # a sized block, else an identity's (square) size
         sizes = list(sizes)
@@ -140,8 +152,8 @@ def _size_identity(a, b, product: int):
     sa, sb = _shape(a), _shape(b)
     if sa is None or sb is None or sa == sb:
         return a, b
-    if isinstance(a, sp.Identity) and (product or sb[0] == sb[1]):
+    if type(a) is sp.Identity and (product or sb[0] == sb[1]):  # not an I_3 (latex.meaning)
         a = sp.Identity(sb[0])
-    elif isinstance(b, sp.Identity) and (product or sa[0] == sa[1]):
+    elif type(b) is sp.Identity and (product or sa[0] == sa[1]):
         b = sp.Identity(sa[1])
     return a, b

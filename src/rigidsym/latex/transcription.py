@@ -24,10 +24,10 @@ from importlib import resources
 
 import sympy as sp
 
-from rigidsym.algebra.symbols import angle
+from rigidsym.latex.canonical import definitions, difference, free, roots, same
 from rigidsym.latex.reader import parse_latex
 from rigidsym.latex.shapes import LatexError
-from rigidsym.latex.table import Glyph, glyph_table
+from rigidsym.latex.table import Glyph
 from rigidsym.zero import decide_zero
 
 __all__ = ["STATUSES", "check_transcription", "notes", "transcription_words",
@@ -35,7 +35,6 @@ __all__ = ["STATUSES", "check_transcription", "notes", "transcription_words",
 
 #: the values of a transcription record's ``status``
 STATUSES = ("machine-checked", "differs", "not parsed")
-_ANGLES = ("phi", "theta")
 
 
 @cache
@@ -63,132 +62,6 @@ def _override(spec: dict, section: str) -> dict:
         out[key] = Glyph(key, section, name, _shape(shape or "scalar"), kind,
                          "per-id note")
     return out
-
-
-# --------------------------------------------------------------------------- canonical form
-def _definitions(section: str) -> dict:
-    """Notational atoms of a section: name -> parsed definition."""
-    out = {}
-    rows = [g for g in glyph_table() if g.definition]
-    best: dict = {}
-    for g in rows:
-        if g.section == "*" or section == g.section or section.startswith(g.section + "."):
-            prev = best.get(g.name)
-            if prev is None or len(g.section) > len(prev.section):
-                best[g.name] = g
-    for name, g in best.items():
-        p = parse_latex(f"{g.latex} = {g.definition}", section)
-        out[name] = p.chains[0][1]
-    return out
-
-
-@cache
-def _definitions_cached(section: str) -> dict:
-    return _definitions(section)
-
-
-def _free(x, defs: dict, aliases: dict):
-    """The explicit value of ``x`` with book symbols as free atoms (see the module doc)."""
-    if not isinstance(x, sp.Basic):
-        x = sp.sympify(x)
-    for _ in range(3):  # notational atoms may refer to one another
-        swap = {}
-        for s in x.atoms(sp.MatrixSymbol, sp.Symbol):
-            name = aliases.get(s.name, s.name)
-            if name in defs and defs[name] is not s:
-                swap[s] = defs[name]
-            elif name.startswith("norm_"):
-                swap[s] = _norm(name[5:], defs)
-            elif name != s.name:
-                swap[s] = (sp.MatrixSymbol(name, *s.shape) if isinstance(s, sp.MatrixSymbol)
-                           else sp.Symbol(name, real=True))
-        if not swap:
-            break
-        x = x.xreplace(swap)
-    # an inverse stays an atom of its own, keyed by what it inverts (never expanded)
-    for inv in sorted(x.atoms(sp.Inverse), key=lambda v: len(str(v))):
-        key = "inv(" + sp.srepr(inv.arg) + ")"
-        x = x.xreplace({inv: sp.MatrixSymbol(f"inv{abs(hash(key)) % 10**8}", *inv.shape)})
-    for p in sorted(x.atoms(sp.MatPow), key=lambda v: len(str(v))):
-        if p.exp == -1:
-            key = "inv(" + sp.srepr(p.base) + ")"
-            x = x.xreplace({p: sp.MatrixSymbol(f"inv{abs(hash(key)) % 10**8}", *p.shape)})
-    # the determinant of a larger matrix stays an atom too (a 6 x 6 of free entries expands
-    # to 720 terms); keyed by its argument, so det(U) in both forms is one atom
-    from rigidsym.algebra.operators import Det
-
-    for d in sorted(x.atoms(Det, sp.Determinant), key=lambda v: len(str(v))):
-        if d.args[0].shape[0] > 3:
-            key = "det(" + sp.srepr(d.args[0]) + ")"
-            x = x.xreplace({d: sp.Symbol(f"det{abs(hash(key)) % 10**8}", real=True)})
-    atoms = {}
-    for s in x.atoms(sp.MatrixSymbol):
-        atoms[s] = sp.ImmutableMatrix(*s.shape, lambda i, j, n=s.name:
-                                      sp.Symbol(f"{n}[{i},{j}]", real=True))
-    for s in x.atoms(sp.Symbol):
-        if isinstance(s, sp.Dummy) or s in atoms:
-            continue
-        atoms[s] = angle(s.name) if s.name in _ANGLES else sp.Symbol(s.name, real=True)
-    x = x.xreplace(atoms)
-    x = x.doit() if hasattr(x, "doit") else x
-    while x.atoms(sp.Trace):  # a trace over a mixed product stays lazy after doit
-        tr = min(x.atoms(sp.Trace), key=lambda v: len(str(v)))
-        x = x.xreplace({tr: sp.Matrix(tr.arg.doit().as_explicit()).trace()})
-    if isinstance(x, sp.MatrixExpr | sp.MatrixBase):
-        x = sp.Matrix(x.as_explicit() if isinstance(x, sp.MatrixExpr) else x)
-        x = x.applyfunc(lambda e: e.doit())
-    return x
-
-
-def _norm(name: str, defs: dict):
-    v = sp.MatrixSymbol({"p21": "p_2"}.get(name, name), 3, 1)
-    if name == "p21":
-        v = sp.MatrixSymbol("p_2", 3, 1) - sp.MatrixSymbol("p_1", 3, 1)
-    return sp.sqrt((v.T * v)[0, 0])
-
-
-def _roots(entries: list) -> list:
-    """Odd powers of square roots -> powers of a free positive atom per radicand (exact for
-    deciding zero: an identity in a free atom holds at its value)."""
-    atoms: dict = {}
-
-    def rep(e):
-        for p in sorted(e.atoms(sp.Pow), key=sp.count_ops, reverse=True):
-            if p.exp.is_Rational and p.exp.q == 2 and p in e.atoms(sp.Pow):
-                r = atoms.setdefault(p.base, sp.Symbol(f"root{len(atoms)}", positive=True))
-                e = e.xreplace({p: r ** int(p.exp * 2)})
-        return e
-
-    return [rep(e) for e in entries]
-
-
-def _difference(l, r):
-    """``l - r`` as a list of entries, or ``None`` when the shapes differ."""
-    def shape(v):
-        return (v.rows, v.cols) if isinstance(v, sp.MatrixBase) else (1, 1)
-
-    if not isinstance(l, sp.MatrixBase) and l == 0 and isinstance(r, sp.MatrixBase):
-        l = sp.zeros(*r.shape)
-    if not isinstance(r, sp.MatrixBase) and r == 0 and isinstance(l, sp.MatrixBase):
-        r = sp.zeros(*l.shape)
-    if shape(l) != shape(r):
-        return None
-    lv = list(l) if isinstance(l, sp.MatrixBase) else [l]
-    rv = list(r) if isinstance(r, sp.MatrixBase) else [r]
-    return [a - b for a, b in zip(lv, rv, strict=True)]
-
-
-def _same(dm: list, dp: list) -> tuple[bool | None, object]:
-    """Whether ``dm = dp`` or ``dm = -dp`` identically (zero test), with the result."""
-    if len(dm) != len(dp):
-        return False, None
-    best = None
-    for sign in (1, -1):
-        res = decide_zero(_roots([a - sign * b for a, b in zip(dm, dp, strict=True)]))
-        if res.zero:
-            return True, res
-        best = best or res
-    return False, best
 
 
 # --------------------------------------------------------------------------- the check
@@ -236,14 +109,14 @@ def _match(fl, fr, dm, order, sides):
     if dm is None:  # a relation whose sides' shapes differ, as printed: side by side
         for plabel, fa, fb in sides:
             for x, y in ((fa, fb), (fb, fa)):
-                dl, dr = _difference(fl, x), _difference(fr, y)
+                dl, dr = difference(fl, x), difference(fr, y)
                 if dl is not None and dr is not None and \
-                        decide_zero(_roots(dl)).zero and decide_zero(_roots(dr)).zero:
+                        decide_zero(roots(dl)).zero and decide_zero(roots(dr)).zero:
                     return plabel + " (side by side: the shapes differ as printed)", None
         return None, None
     last = None
     for plabel, dp in order:
-        ok, res = _same(dm, dp)
+        ok, res = same(dm, dp)
         if ok:
             return plabel, None
         last = last or res
@@ -263,6 +136,9 @@ def check_transcription(eq, statement) -> dict:
         with, for ``differs``, ``member`` and ``counterexample``; for ``not parsed``,
         ``construct`` and ``why``.
     """
+    from rigidsym import _work
+
+    _work.count("transcribe", eq.id)
     note = notes().get(eq.id, {})
     if not eq.latex:
         return {"status": "not parsed", "construct": "no LaTeX",
@@ -281,21 +157,21 @@ def check_transcription(eq, statement) -> dict:
         return {"status": "not parsed", "construct": construct,
                 "why": str(exc).splitlines()[0]}
     aliases = note.get("aliases", {})
-    defs = dict(_definitions_cached(eq.section))
+    defs = dict(definitions(eq.section))
     for name, tex in note.get("defs", {}).items():  # a declaration's own notational atom
         defs[name] = parse_latex(tex, eq.section).chains[0][0]  # "X = ..." gives X
     free_rels, sides = [], []
     for label, a, b in rels:
-        fa, fb = _free(a, defs, {}), _free(b, defs, {})
-        d = _difference(fa, fb)
+        fa, fb = free(a, defs, {}), free(b, defs, {})
+        d = difference(fa, fb)
         if d is not None:
             free_rels.append((label, d))
         sides.append((label, fa, fb))
     members = [(r.label or f"member {k + 1}", r) for k, r in enumerate(statement.printed)]
     out_members = []
     for k, (label, rel) in enumerate(members):
-        fl, fr = _free(rel.lhs, defs, aliases), _free(rel.rhs, defs, aliases)
-        dm = _difference(fl, fr)
+        fl, fr = free(rel.lhs, defs, aliases), free(rel.rhs, defs, aliases)
+        dm = difference(fl, fr)
         found, last = _match(fl, fr, dm, free_rels[k:] + free_rels[:k], sides)
         if found is None:
             rec = {"status": "differs", "member": label, "members": out_members,
@@ -331,7 +207,59 @@ def transcription_words(t: dict | None) -> str:
     return f"transcription not parsed: {t.get('construct', '')}"
 
 
-_DONE: dict[str, dict] = {}
+#: records of this process, by (id, key): a report's three files read each once
+_DONE: dict[tuple, dict] = {}
+
+
+def _key(eq_id: str, deps: dict | None = None):
+    """``(id, disk key)`` of ``eq_id``'s record, found without building the declaration
+    (:func:`rigidsym.checking.verdict_cache.transcription_key`); a declaration that is
+    never cached is keyed by its object, so that a replaced one is checked again."""
+    from rigidsym.checking.deciding.registry import REGISTRY
+    from rigidsym.checking.verdict_cache import transcription_key
+
+    key = transcription_key(eq_id, deps)
+    return (eq_id, key) if key else (eq_id, REGISTRY[eq_id])  # held: no id reused
+
+
+def _path(key: str):
+    from rigidsym import _cache
+
+    return _cache.folder("verdicts") / key[:2] / f"transcription-{key}.json"
+
+
+def _wanted(eq_id: str) -> bool:
+    from rigidsym.checking.deciding.registry import REGISTRY
+
+    eq = REGISTRY.get(eq_id)  # check --latex: the LaTeX is the printed form itself,
+    return eq is not None and bool(eq.latex) and not eq_id.startswith("latex:")  # nothing
+    # was transcribed by hand
+
+
+def cached_transcriptions(ids: list[str], deps: dict | None = None) -> list[str]:
+    """Read the stored records of ``ids`` into this process (no declaration is built);
+    return the ids that have a record to compute (none stored)."""
+    from rigidsym import _cache
+
+    todo, deps = [], {} if deps is None else deps
+    for i in ids:
+        if not _wanted(i):
+            continue
+        k = _key(i, deps)
+        if k in _DONE:
+            continue
+        data = _cache.get(_path(k[1])) if isinstance(k[1], str) else None
+        if data is None:
+            todo.append(i)
+        else:
+            _DONE[k] = json.loads(data)
+    return todo
+
+
+def remember(eq_id: str, record: dict | None) -> None:
+    """Keep a record computed elsewhere (a worker of the runner) for this process."""
+    if record is not None:
+        _DONE[_key(eq_id)] = record
 
 
 def transcription_for(eq_id: str) -> dict | None:
@@ -341,51 +269,48 @@ def transcription_for(eq_id: str) -> dict | None:
         eq_id: a registered id (book or ``namespace:name``).
 
     Returns:
-        The record of :func:`check_transcription` (computed once per process and stored in
-        the user cache, keyed by the declaration), or ``None`` for an id that is not
+        The record of :func:`check_transcription`, computed once: kept for the process and
+        stored in the user cache under a key found without building the declaration (the
+        declaration's source and metadata, the package, sympy's version: a change to the
+        repair settings does not recompute it), or ``None`` for an id that is not
         registered or gives no LaTeX. LaTeX that cannot be read gives a ``not parsed``
         record, not an exception.
     """
+    from rigidsym import _cache
     from rigidsym.checking.deciding.registry import REGISTRY
 
-    eq = REGISTRY.get(eq_id)
-    if eq is None or not eq.latex or eq_id.startswith("latex:"):  # check --latex: the
-        return None  # LaTeX is the printed form itself, nothing was transcribed by hand
-    hit = _DONE.get(eq_id)
+    if not _wanted(eq_id):
+        return None
+    k = _key(eq_id)
+    hit = _DONE.get(k)
+    if hit is None and isinstance(k[1], str):
+        data = _cache.get(_path(k[1]))
+        hit = None if data is None else json.loads(data)
     if hit is None:
+        hit, keep = _computed(REGISTRY[eq_id])
+        hit = json.loads(json.dumps(hit))  # as read back: a warm run's record is the same
+        if keep and isinstance(k[1], str):
+            _cache.put(_path(k[1]), json.dumps(hit).encode())
+    _DONE[k] = hit
+    return hit
+
+
+def _computed(eq) -> tuple[dict, bool]:
+    """The record of ``eq`` (built here) and whether it may be stored: a declaration or
+    reader that fails with anything but :class:`LatexError` gives a ``not parsed`` record
+    for this process only (it may be a defect of the run, worth a new look)."""
+    try:
         st = eq.build()
         if st.from_latex:  # the printed form is the reader's: nothing hand-written to check
             return {"status": "machine-checked", "readings": [],
                     "members": [{"member": r.label or f"member {k + 1}",
                                  "matches": "read from the LaTeX"}
                                 for k, r in enumerate(st.printed)],
-                    "note": "the printed form is read from the LaTeX by the reader"}
-        hit = _DONE[eq_id] = _cached(eq, eq.build())
-    return hit
-
-
-@cache
-def _sources() -> str:
-    """What a transcription record depends on besides the declaration: the reader's data
-    and code, and sympy's version."""
-    pkg = resources.files("rigidsym.latex")
-    names = ("grammar.lark", "glyphs.csv", "notes.json", "lexing.py", "parser.py", "reader.py",
-             "shapes.py", "table.py", "transcription.py")
-    return sp.__version__ + "".join(pkg.joinpath(n).read_text("utf-8") for n in names)
-
-
-def _cached(eq, statement) -> dict:
-    """:func:`check_transcription` through the user cache (``verdicts/``), keyed by the
-    declaration's LaTeX, section and printed members (``srepr``) and :func:`_sources`: a
-    changed declaration, table, note or reader is checked again."""
-    from rigidsym import _cache
-
-    key = json.dumps([eq.id, eq.latex, eq.section, _sources(),
-                      [[sp.srepr(r.lhs), sp.srepr(r.rhs), r.label] for r in statement.printed]])
-    path = _cache.folder("verdicts") / f"transcription-{_cache.digest(key.encode())}.json"
-    data = _cache.get(path)
-    if data is not None:
-        return json.loads(data)
-    rec = check_transcription(eq, statement)
-    _cache.put(path, json.dumps(rec).encode())
-    return rec
+                    "note": "the printed form is read from the LaTeX by the reader"}, True
+        return check_transcription(eq, st), True
+    except LatexError as exc:
+        return {"status": "not parsed", "construct": exc.construct, "why": str(exc)}, True
+    except Exception as exc:  # noqa: BLE001 -- a reader's declaration the reader cannot
+        # take (an unknown sympy object in its printed form) is reported, never fatal
+        return {"status": "not parsed", "construct": f"{type(exc).__name__} while reading",
+                "why": str(exc)}, False

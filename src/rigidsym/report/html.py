@@ -21,7 +21,7 @@ from rigidsym.printing import notation
 from rigidsym.printing.labels import label_text, latex_spans, latex_text
 from rigidsym.report.counterexample import html_view, sides_of, whose_symbols
 from rigidsym.report.glossary import html_entries
-from rigidsym.report.markdown import anchor, sections
+from rigidsym.report.markdown import anchor, sections, undecided_reasons
 from rigidsym.report.mathtext import math_or_text
 from rigidsym.report.numeric import numeric_sentence
 from rigidsym.report.record import CITATION, TITLE, cause_line, result_record, summary
@@ -77,6 +77,7 @@ def _view(rec: dict) -> dict:
              printed_mathml=math_or_text(rec["printed_latex"], rec["printed_latex"]),
              numeric_text=numeric_sentence(rec["numeric"]),
              transcription_text=transcription_words(rec.get("transcription")))
+    v["undecided"] = undecided_reasons(rec) if rec["verdict"] == "undecided" else []
     v["members"] = [dict(m, mathml=math_or_text(m["latex"], m["text"]),
                          label_shown=label_text(m["label"])) for m in rec["members"]]
     v.update(_prose_view(rec))

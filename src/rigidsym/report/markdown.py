@@ -46,6 +46,18 @@ def _code(text: str) -> str:
     return "`" + (text or "").replace("`", "'") + "`"
 
 
+def undecided_reasons(rec: dict) -> list[str]:
+    """Why a result is undecided, one line per undecided member (``relation 1: irrational
+    root at the sample point``), or the check's own reason when no member got a status (a
+    check that raised): printed by ``show``, ``check`` and the reports, never only in the
+    JSON (issue 40)."""
+    out = [f"{label_text(m['label']) or m['role']}: {m['detail'] or 'no reason recorded'}"
+           for m in rec["members"] if m["status"] == "undecided"]
+    if rec["verdict"] == "undecided" and not out:
+        out = [rec["decision"] or "no reason recorded"]
+    return out
+
+
 def _members(rec: dict) -> list[str]:
     out = []
     for m in rec["members"]:
@@ -54,7 +66,11 @@ def _members(rec: dict) -> list[str]:
         how = f" ({m['method']})" if m["status"] in ("holds", "fails") and \
             m["method"] != rec["method"] else ""  # the verdict line names the common method
         form = f" {_code(m['text'])}" if m["text"] else " (long explicit form: see the full report)"
-        out.append(f"- {' '.join(who) + ': ' if who else ''}**{m['status']}**{how}{form}")
+        why = f" (why: {m['detail'] or 'no reason recorded'})" \
+            if m["status"] == "undecided" else ""
+        out.append(f"- {' '.join(who) + ': ' if who else ''}**{m['status']}**{how}{form}{why}")
+    if rec["verdict"] == "undecided" and not rec["members"]:
+        out.append(f"- undecided: {undecided_reasons(rec)[0]}")
     return out
 
 

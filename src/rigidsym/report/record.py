@@ -72,18 +72,25 @@ def cause_line(results: list[Outcome]) -> str:
 
 def _transcription(r: Outcome) -> dict | None:
     """The printed form checked against the LaTeX (issue 29), or ``None`` for an id that
-    gives no LaTeX or is not registered."""
-    from rigidsym.latex import LatexError
+    gives no LaTeX or is not registered: read from the user cache, computed only when no
+    record is stored (:func:`rigidsym.latex.transcription.transcription_for`)."""
     from rigidsym.latex.transcription import transcription_for
 
-    try:
-        return transcription_for(r.id)
-    except LatexError as exc:
-        return {"status": "not parsed", "construct": exc.construct, "why": str(exc)}
-    except Exception as exc:  # noqa: BLE001 -- a reader's declaration the reader cannot
-        # take (an unknown sympy object in its printed form) is reported, never fatal
-        return {"status": "not parsed", "construct": f"{type(exc).__name__} while reading",
-                "why": str(exc)}
+    return transcription_for(r.id)
+
+
+def transcription_extra():
+    """The transcription records as the runner's work beside each verdict
+    (:class:`rigidsym.checking.runner.Extra`): computed in the worker that builds the
+    declaration, read from the user cache otherwise; never built again in the parent."""
+    from rigidsym.checking.runner import Extra
+    from rigidsym.latex.transcription import (
+        cached_transcriptions,
+        remember,
+        transcription_for,
+    )
+
+    return Extra(missing=cached_transcriptions, compute=transcription_for, keep=remember)
 
 
 def _bounded(x):

@@ -23,6 +23,7 @@ from rigidsym.printing import notation
 from rigidsym.printing.labels import label_text
 from rigidsym.report.counterexample import GLOSSARY_HINT, sides_of, text_lines, whose_symbols
 from rigidsym.report.counterexample import wrap_at_spaces as _hard_wrap
+from rigidsym.report.markdown import undecided_reasons
 from rigidsym.report.numeric import numeric_sentence
 from rigidsym.report.record import cause_words, counterexample_record, result_record
 
@@ -117,6 +118,23 @@ def _failing_text(r: Outcome) -> str | None:
                  if m["status"] == "fails" and m["role"] != "corrected"), None)
 
 
+def _verdict_lines(r: Outcome, rec: dict, width: int) -> list[str]:
+    """The verdict, its method and bound; an undecided one's reasons (issue 40: in words,
+    not only in the JSON)."""
+    verdict = f"Verdict: {r.verdict}"
+    if r.verdict != r.expected:
+        verdict += f" (EXPECTED {r.expected})"
+    verdict += f" · method: {r.method}"
+    bound = rec["failure_bound"]
+    if bound is not None and r.verdict != "does-not-hold":
+        verdict += f" · failure probability <= {bound:.1e}"
+    out = [verdict]
+    if r.verdict == "undecided":
+        for why in undecided_reasons(rec):
+            out += _hard_wrap(f"Undecided: {label_text(why)}", width, "  ")
+    return out
+
+
 def explain(r: Outcome, rels: dict[str, list[Rel]], where: str, width: int) -> str:
     """The explanation printed by ``rigidsym show``.
 
@@ -134,14 +152,8 @@ def explain(r: Outcome, rels: dict[str, list[Rel]], where: str, width: int) -> s
     sec = f"Section {r.section}" if is_user_id(r.id) else f"Book: Sec. {r.section}"
     out = [f"({r.id}) {label_text(r.title)}",
            *_hard_wrap(f"{sec} · {r.kind} · declared in {where}", width, "")]
-    verdict = f"Verdict: {r.verdict}"
-    if r.verdict != r.expected:
-        verdict += f" (EXPECTED {r.expected})"
-    verdict += f" · method: {r.method}"
+    out += _verdict_lines(r, rec, width)
     bound = rec["failure_bound"]
-    if bound is not None and r.verdict != "does-not-hold":
-        verdict += f" · failure probability <= {bound:.1e}"
-    out += [verdict]
     if rec.get("transcription"):  # issue 29: the printed form checked against the LaTeX
         out += _hard_wrap(transcription_words(rec["transcription"]), width, "")
     out += [""]

@@ -11,7 +11,7 @@ from rigidsym.checking.deciding.usermodules import load_many
 from rigidsym.checking.runner import run_checks
 from rigidsym.report.html import to_html
 from rigidsym.report.markdown import to_markdown
-from rigidsym.report.record import to_json
+from rigidsym.report.record import to_json, transcription_extra
 
 __all__ = ["write_user_report"]
 
@@ -31,7 +31,7 @@ def write_user_report(modules, out: Path, jobs: int = 1, cache: bool = False) ->
     for um in load_many(modules):
         with Reporter(f"rigidsym report --module {um.title}") as rep:
             results = run_checks(select(None, None, [um.name]), jobs=jobs, progress=True,
-                                 cache=cache, reporter=rep)
+                                 cache=cache, reporter=rep, extra=transcription_extra())
         title, source = f"{um.title} checked: verdicts", f"the user module {um.title}"
         files = {f"{um.title}.md": to_markdown(results, title=title, source=source),
                  f"{um.title}.json": to_json(results, timings=False),

@@ -38,6 +38,10 @@ def _power(x, ev, one, lift):
         return bv**n
     if n.is_Rational and lift is Fraction:
         return _rational_root(ev(b), int(n.p), int(n.q))
+    bv = ev(b) if n.is_Rational else None
+    if isinstance(bv, sp.Rational):  # a counterexample's values (sympy numbers): ‖ω̂‖ = 2
+        r = _rational_root(Fraction(int(bv.p), int(bv.q)), int(n.p), int(n.q))
+        return sp.Rational(r.numerator, r.denominator)
     raise Unsupported(f"power {x}")
 
 

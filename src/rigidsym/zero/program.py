@@ -32,6 +32,7 @@ import sympy as sp
 from sympy.core.function import AppliedUndef
 
 from rigidsym.zero.plan import _TRIG, Plan, Unsupported, _linear_angles
+from rigidsym.zero.signs import definite_abs, definite_sqrt
 
 __all__ = ["Program", "TooLarge", "parametrised", "unparametrised", "run_exact", "run_rational",
            "CONST", "LEAF", "ADD", "MUL", "POW", "ROOT", "ABS", "FUNC", "PI"]
@@ -305,8 +306,8 @@ def run_rational(prog: Program, ctx, terms_limit: int = 10**9,
         product_limit: the most pairs of terms a product may multiply.
 
     Raises:
-        Unsupported: for ``ABS``/``ROOT`` (not rational functions) or the inverse of an
-            identically zero subexpression.
+        Unsupported: ``ABS``/``ROOT`` of what is no rational function of constant sign
+            (:mod:`rigidsym.zero.signs`) or the inverse of an identically zero subexpression.
         TooLarge: past ``terms_limit`` or ``product_limit``.
     """
     gens = ctx.gens()
@@ -329,8 +330,12 @@ def run_rational(prog: Program, ctx, terms_limit: int = 10**9,
             acc = (one * flint.fmpq(op[1].numerator, op[1].denominator), one)
         elif code == LEAF:
             acc = (gens[op[1]], one)
-        else:
-            raise Unsupported("the rational function of an expression with |x| or a root")
+        elif code == ABS:  # where the signs are known everywhere (rigidsym.zero.signs)
+            acc = definite_abs(vals[op[1]])
+        elif code == ROOT:
+            acc = _pow(definite_sqrt(vals[op[1]], op[3]), op[2], budget)
+        else:  # pragma: no cover  (FUNC, PI: unparametrised programs only)
+            raise Unsupported(f"operation {op[0]} in a rational run")
         vals[i] = acc
     return [vals[k] for k in prog.outputs]
 

@@ -42,31 +42,38 @@ def explicit(x, model: dict | None = None):
 _EXPLICIT_CACHE: dict = {}
 
 
+_MATRIX_TERMS = (sp.Trace, sp.Determinant, MatrixElement, DiffEntry)
+
+
 def _sc(s, model):
-    """Explicit scalar: model substituted, matrix-valued sub-terms evaluated."""
+    """Explicit scalar: matrix-valued sub-terms evaluated, model substituted."""
+    if model and s.has(*_MATRIX_TERMS):
+        # evaluated on the model before substituting it: a model's value is often a mutable
+        # sp.Matrix, and xreplace would put it inside an operator's arguments (CPM, Ad, ad,
+        # hat ...), where hashing it raises TypeError (issue 40: aᵀ CPM(b) a = 0)
+        s = s.replace(lambda z: isinstance(z, _MATRIX_TERMS), lambda z: _ev(z, model))
     y = s.xreplace(model) if model else s
-    if not y.has(sp.Trace, sp.Determinant, MatrixElement, sp.MatrixExpr, sp.Derivative,
-                 DiffEntry):
+    if not y.has(*_MATRIX_TERMS, sp.MatrixExpr, sp.Derivative):
         return y
-
-    def ev(z):
-        if isinstance(z, sp.Trace):
-            return _mx(z.arg, {}).trace()
-        if isinstance(z, sp.Determinant):
-            return _mx(z.arg, {}).det(method="berkowitz")
-        if isinstance(z, MatrixElement):
-            return _mx(z.parent, {})[int(z.i), int(z.j)]
-        if isinstance(z, DiffEntry):  # an entry of a lazy derivative
-            return sp.diff(_mx(z.args[0], {})[int(z.args[2]), int(z.args[3])], z.args[1])
-        return None
-
-    out = y.replace(lambda z: isinstance(z, sp.Trace | sp.Determinant | MatrixElement
-                                         | DiffEntry), ev)
+    out = y.replace(lambda z: isinstance(z, _MATRIX_TERMS), lambda z: _ev(z, {}))
     out = out.doit() if out.has(sp.MatrixExpr) else out
     if out.has(sp.Derivative):  # a derivative of a model's expression: taken now
         out = out.replace(lambda z: isinstance(z, sp.Derivative)
                           and not isinstance(z.expr, AppliedUndef), lambda z: z.doit())
     return out
+
+
+def _ev(z, model):
+    """The explicit scalar value of a trace, determinant or entry of a matrix expression."""
+    if isinstance(z, sp.Trace):
+        return _mx(z.arg, model).trace()
+    if isinstance(z, sp.Determinant):
+        return _mx(z.arg, model).det(method="berkowitz")
+    if isinstance(z, MatrixElement):
+        return _mx(z.parent, model)[int(z.i), int(z.j)]
+    # an entry of a lazy derivative
+    var = z.args[1].xreplace(model) if model else z.args[1]
+    return sp.diff(_mx(z.args[0], model)[int(z.args[2]), int(z.args[3])], var)
 
 
 def _mx(x, model) -> sp.ImmutableMatrix:

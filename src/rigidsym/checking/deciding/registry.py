@@ -16,6 +16,7 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Any
 
+from rigidsym import _work
 from rigidsym._config import BOOK as BOOK_PACKAGE
 from rigidsym.checking.deciding.errors import BadInput  # re-exported: their homes
 from rigidsym.checking.deciding.nodes import Rel
@@ -147,6 +148,7 @@ def _build(eq_id: str) -> Statement:
         return hit
     from sympy.matrices.utilities import dotprodsimp
 
+    _work.count("build", eq_id)  # a real build (issue 39: counted, so a test sees a rebuild)
     # no simplification of intermediate matrix products (sympy applies `cancel` to each
     # entry of a Matrix power, for instance): a model is decided exactly, not read, and
     # this took a third of the time of building the chapter's declarations

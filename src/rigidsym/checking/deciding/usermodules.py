@@ -22,6 +22,7 @@ import importlib
 import os
 import re
 import sys
+from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -158,14 +159,23 @@ def load(spec: str | os.PathLike) -> UserModule:
     return um
 
 
+#: the ids of those given whose declaration, as it is now, is known to build (a verdict of
+#: it is stored); set by :mod:`rigidsym.checking.verdict_cache`, a layer above
+KNOWN_TO_BUILD: Callable[[tuple[str, ...]], set[str]] | None = None
+
+
 def _prebuild(um: UserModule, label: str) -> None:
     """Build every declaration once, here, so a wrong return type is bad input (exit 2).
 
     Any other exception inside a declaration is left for the checker, which reports that id
     ``undecided`` with the error; built statements are cached (and inherited by forked
-    workers).
+    workers). A declaration known to build (:data:`KNOWN_TO_BUILD`) is not built: a warm
+    command builds nothing (issue 39).
     """
+    known = KNOWN_TO_BUILD(um.ids) if KNOWN_TO_BUILD else set()
     for eq_id in um.ids:
+        if eq_id in known:
+            continue
         try:
             REGISTRY[eq_id].build()
         except DeclarationTypeError as exc:

@@ -1,0 +1,97 @@
+"""The input rules of the array back-ends (issue 31; split from ``_arrays``, issue 38): the
+keyword modes of eager and traced calls, the eager validation of constrained inputs, and
+the broadcast batch shape. No import of PyTorch or JAX.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+
+import numpy as np
+
+from rigidsym import _kinds
+
+__all__ = ["modes", "validate", "broadcast_batch"]
+
+_MODES = ("raise", "nan")
+
+
+def _raise(exc_type: type, message: str):
+    raise exc_type(message)
+
+
+def modes(check: bool | None, on_singular: str | None, traced: bool, where: str,
+          refuse: Callable = _raise):
+    """The effective ``(check, on_singular)`` of a call: defaults ``True`` / ``"raise"`` in
+    eager mode, ``False`` / ``"nan"`` while traced (no host synchronisation there).
+    ``refuse(exc_type, message)`` raises the errors (PyTorch: outside Dynamo's trace).
+
+    Raises:
+        ValueError: ``check=True`` or ``on_singular="raise"`` while traced (``where`` names
+            the tracer), or a bad value.
+    """
+    if check is not None and not isinstance(check, bool):
+        refuse(TypeError, f"check: expected True, False or None, got {check!r}")
+    if on_singular is not None and on_singular not in _MODES:
+        refuse(ValueError, f"on_singular: expected 'raise' or 'nan', got {on_singular!r}")
+    if traced:
+        if check:
+            refuse(ValueError, f"check=True needs eager mode (it reads values on the host); "
+                               f"under {where} pass check=False or leave it unset")
+        if on_singular == "raise":
+            refuse(ValueError, f"on_singular='raise' needs eager mode; under {where} use "
+                               "'nan' (the default there)")
+        return False, "nan"
+    return (True if check is None else check), (on_singular or "raise")
+
+
+def validate(xp, arrays: list, args: list[dict]) -> None:
+    """Eager validation: finite values, unit vectors, proper rotations (the kind table's
+    tolerances for the dtype); one reduction per argument read on the host.
+
+    Raises:
+        ValueError: naming the argument.
+    """
+    for x, a in zip(arrays, args, strict=True):
+        if not bool(xp.isfinite(x).all()):
+            raise ValueError(f"{a['name']}: non-finite value (NaN or inf)")
+        kind = _kinds.for_spec(a["kind"], tuple(a["shape"]))
+        if kind is None or kind.check is None or not _numel(x):
+            continue
+        tol = kind.tolerance(np.dtype(str(x.dtype).replace("torch.", "")))
+        if kind.shape == (3, 3):
+            ident = xp.eye(3, dtype=x.dtype)
+            if hasattr(ident, "to"):  # torch: on the input's device (found on a GPU)
+                ident = ident.to(x.device)
+            g = xp.einsum("...ki,...kj->...ij", x, x) - ident
+            err = float(xp.abs(g).max())
+            if not err <= tol:
+                raise ValueError(f"{a['name']}: not orthogonal (max |{a['name']}^T "
+                                 f"{a['name']} - 1| = {err:.3g} > {tol:.3g})")
+            if bool((xp.linalg.det(x) <= 0).any()):
+                raise ValueError(f"{a['name']}: not a proper rotation (det <= 0)")
+        elif len(kind.shape) == 1:
+            err = float(xp.abs(xp.sqrt((x * x).sum(-1)) - 1.0).max())
+            if err > tol:
+                raise ValueError(f"{a['name']}: not a unit vector (| ||{a['name']}|| - 1 | = "
+                                 f"{err:.3g} > {tol:.3g})")
+
+
+def broadcast_batch(broadcast_shapes: Callable, xs: list, args: list[dict]) -> tuple:
+    """The broadcast batch shape of ``xs`` (each less its argument's own trailing shape).
+
+    Raises:
+        ValueError: the batch shapes do not broadcast (each argument's shape named).
+    """
+    try:
+        return tuple(broadcast_shapes(*[x.shape[:x.ndim - len(a["shape"])]
+                                        for x, a in zip(xs, args, strict=True)]))
+    except (RuntimeError, ValueError):  # torch raises RuntimeError, JAX ValueError
+        shapes = ", ".join(f"{a['name']} {tuple(x.shape)}" for x, a in zip(xs, args,
+                                                                             strict=True))
+        raise ValueError(f"batch shapes do not broadcast: {shapes}") from None
+
+
+def _numel(x) -> int:
+    return int(math.prod(x.shape))

@@ -1,0 +1,136 @@
+"""The glyph rows of a reader's LaTeX (issue 29 item 4, issue 40): :class:`_Reader` parses
+the LaTeX and the models of ``--let`` with one set of glyph overrides: the declarations'
+kinds, the models' shapes, the rows of ``--book``, a module's symbols, the lines of
+``--notation`` (used by :mod:`rigidsym.latex.letting`)."""
+
+from __future__ import annotations
+
+import sympy as sp
+
+from rigidsym.checking.deciding.errors import BadInput
+from rigidsym.latex.lets import KIND_WORDS, Let, kind_of
+from rigidsym.latex.reader import parse_latex
+from rigidsym.latex.shapes import LatexError, _name_from_key, _shape
+from rigidsym.latex.table import Glyph, glyph_table, lookup
+
+__all__: list[str] = []
+
+def _in(section: str, book: str) -> bool:
+    return book == "3" or section == book or section.startswith(book + ".")
+
+
+def _book_rows(key: str, book: str) -> list[Glyph]:
+    """The rows of a glyph within a section's sub-sections (when none is on its chain)."""
+    rows = [g for g in glyph_table() if g.latex == key and g.section != "*"
+            and _in(g.section, book)]
+    distinct = {(g.name, g.shape, g.kind, g.definition): g for g in rows}
+    return list(distinct.values())
+
+
+class _Reader:
+    """Parses the LaTeX and the models with one set of glyph overrides."""
+
+    def __init__(self, lets: list[Let], book: str | None, lend: dict, notation=None):
+        self.book, self.lend, self.notation = book, lend, notation
+        self.over: dict[str, Glyph] = {}
+        self.declared: dict[str, Let] = {x.key: x for x in lets}
+        self.notes: list[str] = []
+        self.used: set[str] = set()
+        self.glyphs: dict[str, Glyph] = {}
+        self.models: dict = {}  # the notation's models of the glyphs used
+        self.by_notation: set[str] = set()  # the glyphs the notation declares
+        self.in_models: set[str] = set()  # the glyphs of the notation's models used
+        for x in lets + [x for x in (notation.lets if notation else ())
+                         if x.kind and x.key not in self.declared]:
+            if x.kind:
+                self.declared.setdefault(x.key, x)
+                if self.declared[x.key] is not x:
+                    continue
+                shape, _, words = kind_of(x.kind, x.text)
+                self.over[x.key] = Glyph(x.key, "*", self._name(x.key), shape, "let", words)
+                if x not in lets:
+                    self.by_notation.add(x.key)
+
+    def _name(self, key: str) -> str:
+        if self.book:
+            g = lookup(key, self.book)
+            if g is not None:
+                return g.name
+        return _name_from_key(key)
+
+    def _extra(self, glyphs: dict) -> dict[str, Glyph]:
+        """Rows the first reading could not know: a book row of a sub-section, a module's
+        symbol of that name."""
+        new = {}
+        for key, g in glyphs.items():
+            if key in self.over:
+                continue
+            x = self.notation.let_for(key) if self.notation and g.kind == "free" \
+                and key not in self.declared else None
+            if x is not None:  # a line of --notation: a kind, or a model in the book's notation
+                new[key] = self._notation_glyph(x)
+                continue
+            if self.book and g.kind == "free":  # no row on the section's chain
+                rows = _book_rows(key, self.book)
+                if len(rows) > 1:
+                    where = "; ".join(f"{r.name}, {r.meaning} ({r.section})" for r in rows)
+                    raise BadInput(f"--book {self.book}: {key} is ambiguous there ({where}): "
+                                   f"say which with --let '{key}: KIND' or a --book of one "
+                                   f"sub-section")
+                if rows:
+                    new[key] = rows[0]
+                    continue
+            name = g.name
+            if name in self.lend and g.kind == "free":
+                sym, _ = self.lend[name]
+                shape = tuple(sym.shape) if isinstance(sym, sp.MatrixSymbol) else ()
+                new[key] = Glyph(key, "*", name, shape, "module", "lent by --module")
+        return new
+
+    def _notation_glyph(self, x: Let) -> Glyph:
+        self.declared[x.key] = x
+        self.by_notation.add(x.key)
+        if x.kind:
+            shape, _, words = kind_of(x.kind, x.text)
+            return Glyph(x.key, "*", self._name(x.key), shape, "let", words)
+        p = self.parse(f"{x.name} = {x.latex}", f"--notation {self.notation.name}: '{x.text}'")
+        rhs = p.chains[0][1]
+        self.in_models |= set(p.glyphs) - {x.key}
+        g = Glyph(x.key, "*", self._name(x.key), _shape(rhs) or (), "model", "--notation")
+        self.models[_symbol(g)] = rhs
+        return g
+
+    def parse(self, text: str, what: str):
+        for _ in range(4):
+            try:
+                p = parse_latex(text, self.book, self.over, reader=True)
+            except LatexError as exc:
+                extra = self._extra(exc.glyphs) if exc.construct == "shapes" else {}
+                if extra:
+                    self.over.update(extra)
+                    continue
+                raise self._hint(exc, what) from None
+            extra = self._extra(p.glyphs)
+            if not extra:
+                self.used.update(p.glyphs)
+                self.glyphs.update(p.glyphs)
+                return p
+            self.over.update(extra)
+        raise LatexError(f"{what}: the glyphs' shapes do not settle", "shapes")
+
+    def _hint(self, exc: LatexError, what: str) -> LatexError:
+        msg = str(exc)
+        if what != "the LaTeX":
+            msg = f"{what}: {msg}"
+        free = [k for k, g in exc.glyphs.items() if g.kind == "free" and k not in self.over]
+        if exc.construct == "shapes" and free:
+            msg = (f"{msg.split(' (declare the shapes')[0]}; its meaning depends on the shape "
+                   f"of {', '.join(free)}, which no --let declares: add e.g. --let "
+                   f"'{free[0]}: KIND' (KIND one of {', '.join(KIND_WORDS)})")
+        out = LatexError(msg, exc.construct)
+        out.glyphs = exc.glyphs
+        return out
+
+
+def _symbol(g: Glyph):
+    return sp.MatrixSymbol(g.name, *g.shape) if g.shape else sp.Symbol(g.name, real=True)

@@ -1,0 +1,105 @@
+"""What a reading may not guess (issue 40, item 1): checks of a reader's LaTeX after it is
+read, each a :class:`~rigidsym.checking.deciding.errors.BadInput` (exit 2) that names the
+symbol and the ``--let`` that settles it, never a does-not-hold resting on a convention.
+
+- a relation whose two sides differ in shape while a symbol in it has the shape of the
+  convention (no ``--let``, model, module or ``--book`` gave it): the symbol, its shape, a
+  ``--let``;
+- ``\\dot X`` that nothing declares beside an ``X`` of the statement: nothing says how ``X``
+  depends on time, so ``\\dot X`` would be a free symbol unrelated to ``X``;
+- ``R(\\theta)`` with ``R`` applied to two different arguments, or with no model of ``R``, or
+  to a symbol its model does not depend on.
+"""
+
+from __future__ import annotations
+
+import re
+
+import sympy as sp
+
+from rigidsym.checking.deciding.errors import BadInput
+
+__all__: list[str] = []
+
+_DOT = re.compile(r"\\(dot|ddot)\{(.*)\}$")
+
+
+def _words(shape) -> str:
+    if not shape or tuple(shape) == (1, 1):
+        return "a scalar"
+    return f"a {shape[0]}-vector" if shape[1] == 1 else f"a {shape[0]}×{shape[1]} matrix"
+
+
+def _kinds_for(shape) -> str:
+    """The --let kinds of a shape, for a hint."""
+    return {(3, 1): "vector, unit vector", (3, 3): "rotation, matrix, so(3)",
+            (6, 1): "twist, wrench, 6-vector", (4, 4): "transform, se(3), 4x4 matrix",
+            (1, 1): "scalar, angle"}.get(tuple(shape), f"{shape[0]}x{shape[1]} matrix")
+
+
+def _names(x) -> set[str]:
+    return {s.name for s in x.atoms(sp.Symbol, sp.MatrixSymbol)} \
+        if isinstance(x, sp.Basic) else set()
+
+
+def conventional_shapes(printed, free: list[str], glyphs: dict) -> None:
+    """A relation whose sides differ in shape, with a free glyph in it: bad input."""
+    from rigidsym.checking.deciding.explicit import UnknownShape, shape_of
+
+    for rel in printed:
+        try:
+            sl, sr = shape_of(rel.lhs), shape_of(rel.rhs)
+        except UnknownShape:
+            continue
+        if sl == sr:
+            continue
+        names = _names(rel.lhs) | _names(rel.rhs)
+        keys = [k for k in free if glyphs[k].name in names]
+        if not keys:
+            continue  # every shape declared: a slip, decided (does-not-hold, shape reason)
+        k = keys[0]
+        other = sr if glyphs[k].name in _names(rel.lhs) else sl
+        raise BadInput(
+            f"--latex: the two sides differ in shape ({_words(sl)} = {_words(sr)}), and "
+            f"{', '.join(keys)} {'has' if len(keys) == 1 else 'have'} the shape of the "
+            f"convention ({k} {_words(glyphs[k].shape)}), which no --let declares: say what "
+            f"{k} is, e.g. --let '{k}: KIND' (for {_words(other)}: {_kinds_for(other)}) or "
+            f"--let '{k} = LATEX' (its model)")
+
+
+def time_derivatives(free: list[str], used: set[str], declared: dict) -> None:
+    """``\\dot X`` free beside an ``X`` of the statement: bad input naming it."""
+    for key in free:
+        m = _DOT.match(key)
+        if m and m.group(2) in used:
+            x = m.group(2)
+            how = "declared" if x in declared else "free"
+            raise BadInput(
+                f"--latex: {key} is the time derivative of {x} ({how}), but nothing says how "
+                f"{x} depends on time, so {key} would be a free symbol unrelated to {x}: "
+                f"give {key} a model (--let '{key} = LATEX') or declare it as a symbol of its "
+                f"own (--let '{key}: KIND')")
+
+
+def applications(applied: dict, models: dict, glyphs: dict) -> None:
+    """``R(\\theta)``: one argument per symbol, one its model depends on."""
+    from rigidsym.printing import notation
+
+    for key, args in applied.items():
+        distinct = list(dict.fromkeys(args))
+        if len(distinct) > 1:
+            said = " and ".join(f"{key}({notation.text(a)})" for a in distinct)
+            raise BadInput(f"--latex: {said}: {key} applied to {len(distinct)} different "
+                           f"arguments; the reading has one {key} only: write each value as "
+                           f"a symbol of its own with its model (--let 'R_1 = ...')")
+        model = models.get(glyphs[key].name) if key in glyphs else None
+        arg = distinct[0]
+        if model is None:
+            raise BadInput(f"--latex: {key}({notation.text(arg)}): {key} has no model, so how "
+                           f"it depends on {notation.text(arg)} is unknown (read as {key} "
+                           f"itself it would be a guess): give its model, e.g. --let "
+                           f"'{key} = LATEX' in {notation.text(arg)}")
+        if not (_names(arg) <= _names(model)):
+            raise BadInput(f"--latex: {key}({notation.text(arg)}): the model of {key} does not "
+                           f"depend on {notation.text(arg)}; write the model in "
+                           f"{notation.text(arg)} (--let '{key} = ...')")

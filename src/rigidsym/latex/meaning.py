@@ -1,0 +1,92 @@
+"""Reading rules that choose between meanings in a reader's LaTeX (issue 40, item 1): a
+symbol before a parenthesised argument, a sized identity or zero. Each choice is written
+under ``read as:``; docs/check-latex.md lists every rule.
+
+- ``R(\\theta)``, ``T(t)``, ``J(\\theta)``: a symbol that is not a scalar (declared by a
+  ``--let``, a model or a module) before a parenthesised scalar is that symbol applied to
+  it: the symbol itself, which depends on the argument as its model says. Any other
+  ``x(...)`` is a product (``a(b + c)``, ``A(\\mathbf{x} + \\mathbf{y})``). A symbol applied
+  to two different arguments is refused (:mod:`rigidsym.latex.letting`).
+- ``I_3``, ``\\mathbf{I}_{3}``, ``\\mathbf{I}_{3\\times 3}``, ``\\mathbf{1}_3``: the identity of
+  that size; ``I_n``, ``I``: the identity sized by its neighbours. ``0_{3\\times 3}``,
+  ``0_{3}``: the zero matrix (vector) of that size. Any other subscript of ``I`` (the
+  chapter's ``I_C``) is part of a name.
+"""
+
+from __future__ import annotations
+
+import re
+
+import sympy as sp
+
+from rigidsym.latex.shapes import LatexError, SizedIdentity, SizedZero, _as_scalar, _shape
+from rigidsym.latex.table import lookup
+
+__all__: list[str] = []
+
+
+
+_TIME = sp.Symbol("t", real=True)  # the plain letter t (rigidsym.latex.parser)
+_SIZE = re.compile(r"(\d)(?:\\times\s*(\d))?")
+
+
+class MeaningRules:
+    """Transformer rules of a reader's choices (a mixin of the parser's ``_Build``, which
+    provides ``mul``, ``power``, ``_val``, ``reader``, ``overrides``, ``section``, ``glyphs``,
+    ``_note``)."""
+
+    def __init__(self, *args, **kwargs):
+        super().__init__(*args, **kwargs)
+        self.applied: dict[str, list] = {}
+
+    def apply(self, items):
+        """``glyph ( expr )`` with an optional power after the parenthesis."""
+        f, arg, sup = items[0], items[1], (items[2] if len(items) > 2 else None)
+        fv, x = self._val(f), _as_scalar(self._val(arg))
+        if self.reader and _shape(fv) is not None and _shape(x) is None and x is not _TIME:
+            from rigidsym.printing import notation
+
+            self.applied.setdefault(f.key, []).append(x)
+            a = notation.text(x)
+            self._note(f"{f.key}({a}): {f.key} applied to {a}, not a product ({f.key} is no "
+                       f"scalar): {f.key} itself, depending on {a} as its model says")
+            return self.power([fv, sup]) if sup is not None else fv
+        if sup is not None:  # a(b + c)^2: the power binds to the parenthesis
+            arg = self.power([arg, sup])
+        return self.mul([f, arg])
+
+    def _sized(self, key, base, rest, accent):
+        """An identity or zero the subscript sizes (module docstring), else ``None``."""
+        kind, letter = base
+        if not self.reader or accent or key in self.overrides:
+            return None
+        if self.section is not None and lookup(key, self.section) is not None:
+            return None
+        subs = [r[1] for r in rest if isinstance(r, tuple)]
+        if letter.lstrip("\\") != "I" and kind != "one" or len(rest) > 1:
+            return None
+        if not subs or subs == ["n"]:  # sized by its neighbours
+            if kind == "one":
+                return None
+            self._note(f"{key}: the identity (no --let declares {key}), sized by its "
+                       f"neighbours")
+            return sp.Identity(3)
+        m = _SIZE.fullmatch(subs[0].replace(" ", ""))
+        if m is None:
+            return None  # I_C: a name
+        n, k = int(m.group(1)), int(m.group(2) or m.group(1))
+        if n != k:
+            raise LatexError(f"{key}: an identity that is not square", "shapes")
+        self._note(f"{key}: the {n}×{n} identity")
+        return SizedIdentity(n)
+
+    def sized_number(self, items):
+        """``0_{3\\times 3}``, ``0_3``: a zero of that size."""
+        num, sub = str(items[0]), items[1][1].replace(" ", "")
+        m = _SIZE.fullmatch(sub)
+        if num != "0" or m is None:
+            raise LatexError(f"{num}_{{{sub}}}: a subscript of a number is read only as the "
+                             f"size of a zero (0_{{3\\times 3}}, 0_3)", "subscript")
+        rows, cols = int(m.group(1)), int(m.group(2) or 1)
+        self._note(f"0_{{{sub}}}: the {rows}×{cols} zero")
+        return SizedZero(rows, cols)

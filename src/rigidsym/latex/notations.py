@@ -1,0 +1,108 @@
+"""Per-book notations (``--notation NAME``, issue 40 item 1): what a book's symbols are,
+as a table shipped with the package (``rigidsym/latex/notations/NAME.txt``).
+
+A table is ``--let`` lines, one per symbol: ``NAME: KIND`` (a kind of
+:data:`rigidsym.latex.lets.KIND_WORDS`) or ``NAME = LATEX`` (a model in the book's own
+notation, e.g. Murray-Li-Sastry's ``\\hat\\omega = [\\omega]_\\times``); ``#`` starts a
+comment. In a NAME and its LaTeX, ``{i}`` stands for a joint index (digits: ``c_{12}`` with
+``c_{i} = \\cos(\\theta_{i})`` is ``\\cos(\\theta_{1} + \\theta_{2})``, the sum of the indexed
+angles as Siciliano, Spong and Craig abbreviate) and ``{x}`` for a Greek letter
+(``c_{\\theta}``). A ``--let`` of the same symbol wins over the table; a line whose symbol
+the LaTeX does not use is ignored (unlike a ``--let``). Every line used is printed under
+``read as:``.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+from functools import cache
+from importlib import resources
+
+from rigidsym.checking.deciding.errors import BadInput
+from rigidsym.latex.lets import Let, read_lets
+
+__all__ = ["NOTATIONS", "Notation", "notation"]
+
+#: the notations shipped (``rigidsym/latex/notations/NAME.txt``)
+NOTATIONS = ("lynch-park", "murray-li-sastry", "siciliano", "spong", "craig", "featherstone",
+             "barfoot", "sola", "corke")
+
+_INDEX, _GREEK = r"(\d+)", r"(\\[A-Za-z]+)"
+
+
+@dataclass(frozen=True)
+class Notation:
+    """A book's symbol table.
+
+    Attributes:
+        name: its name (``"lynch-park"``).
+        title: the book, edition and sections it follows (the file's first comment line).
+        lets: the table's literal lines (no ``{i}`` or ``{x}``), as :class:`Let`.
+        patterns: ``(regex of a glyph key, placeholder, Let)`` of the lines with one.
+    """
+
+    name: str
+    title: str
+    lets: tuple[Let, ...]
+    patterns: tuple[tuple[re.Pattern, str, Let], ...]
+
+    def let_for(self, key: str) -> Let | None:
+        """The declaration of the glyph ``key`` under this notation, or ``None``."""
+        for x in self.lets:
+            if x.key == key:
+                return x
+        for rx, hole, x in self.patterns:
+            m = rx.fullmatch(key)
+            if m:
+                return _instance(x, hole, m.group(1), key)
+        return None
+
+
+def _instance(x: Let, hole: str, value: str, key: str) -> Let:
+    """A pattern line for one glyph: ``c_{12} = \\cos(\\theta_{1} + \\theta_{2})``."""
+    latex = x.latex
+    if latex and hole == "{i}":  # each digit an index: the sum of the indexed glyphs
+        m = re.search(r"(\\[A-Za-z]+|[A-Za-z])_\{i\}", latex)
+        if m:
+            latex = latex.replace(m.group(0), " + ".join(
+                f"{m.group(1)}_{{{d}}}" for d in value))
+    elif latex:
+        latex = latex.replace("{x}", value)
+    text = f"{key} = {latex}" if latex else f"{key}: {x.kind}"
+    return Let(text, key, key, x.kind, latex)
+
+
+@cache
+def notation(name: str) -> Notation:
+    """The notation ``name`` (one of :data:`NOTATIONS`), read from its table once.
+
+    Raises:
+        BadInput: an unknown name (the notations listed), or a table line that is no
+            declaration (a defect of the table, named with its line number).
+    """
+    key = (name or "").strip().lower()
+    if key not in NOTATIONS:
+        raise BadInput(f"--notation: unknown notation {name!r}; expected one of: "
+                       f"{', '.join(NOTATIONS)}")
+    text = resources.files("rigidsym.latex").joinpath("notations", f"{key}.txt") \
+        .read_text("utf-8")
+    lines = text.splitlines()
+    title = lines[0].lstrip("# ").strip() if lines else key
+    lets, patterns = [], []
+    for n, line in enumerate(lines, 1):
+        line = line.split(" #")[0].strip() if not line.startswith("#") else ""
+        if not line:
+            continue
+        try:
+            (x,) = read_lets([line])
+        except (BadInput, ValueError) as exc:
+            raise BadInput(f"notation {key}, line {n}: {exc}") from None
+        hole = "{i}" if "_{i}" in x.key else "{x}" if "_{x}" in x.key else ""
+        if hole:
+            rx = re.escape(x.key).replace(re.escape(hole), "{" + (
+                _INDEX if hole == "{i}" else _GREEK) + "}")
+            patterns.append((re.compile(rx), hole, x))
+        else:
+            lets.append(x)
+    return Notation(key, title, tuple(lets), tuple(patterns))

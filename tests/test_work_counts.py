@@ -1,0 +1,112 @@
+"""Counted, not timed (issue 39): the work a command does, from the counts it writes
+(:mod:`rigidsym._work`): a warm ``verify --json`` builds no declaration, a cold one builds
+each once, a change to one module rebuilds that module's ids only.
+
+Each command runs in a fresh process (as a user runs it twice), on a cache of its own. On
+main before issue 39 the parent built every declaration with LaTeX again for its
+transcription record: 1 build per such id on a warm ``--json`` run, 2 on a cold one.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parents[1]
+EXAMPLE = ROOT / "examples" / "rotation_identities.py"
+#: the example with one equation written in LaTeX (docs/own-equations.md's): its printed
+#: form is read from the LaTeX
+TEX = r'''
+
+@equation("rot:trace-tex", "Trace of a rotation", latex=r"\mathrm{tr}(\mathbf{Q}) = 1 + 2\cos\phi")
+def trace_of_rotation_tex():
+    return MODEL
+'''
+#: a second module whose printed form is written by hand beside its LaTeX: its
+#: transcription is checked
+OTHER = r'''
+"""Counting tests: a hand-written printed form beside its LaTeX."""
+import sympy as sp
+from rigidsym import Rel, Statement, angle, equation
+
+phi = angle("phi")
+
+
+@equation("oth:pyth", "cos^2 + sin^2 = 1", section="counting tests",
+          latex=r"\cos^2\phi + \sin^2\phi = 1")
+def pyth() -> Statement:
+    return Statement([Rel(sp.cos(phi) ** 2 + sp.sin(phi) ** 2, sp.Integer(1))], {})
+
+
+@equation("oth:double", "cos 2 phi", section="counting tests",
+          latex=r"\cos 2\phi = 2\cos^2\phi - 1")
+def double() -> Statement:
+    return Statement([Rel(sp.cos(2 * phi), 2 * sp.cos(phi) ** 2 - 1)], {})
+'''
+ROT_IDS = 12  # the example's 11 and rot:trace-tex
+OTH_IDS = {"oth:pyth", "oth:double"}
+
+
+@pytest.fixture
+def modules(tmp_path):
+    (tmp_path / "rot_tex.py").write_text(EXAMPLE.read_text(encoding="utf-8") + TEX,
+                                         encoding="utf-8")
+    (tmp_path / "oth_tex.py").write_text(OTHER, encoding="utf-8")
+    return tmp_path
+
+
+def run(where: Path, *args: str) -> dict:
+    """``rigidsym ARGS`` in a fresh process on ``where``'s cache; its work counts."""
+    counts = where / "work.json"
+    counts.unlink(missing_ok=True)
+    env = dict(os.environ, RIGIDSYM_CACHE=str(where / "cache"),
+               RIGIDSYM_WORK_FILE=str(counts))
+    p = subprocess.run([sys.executable, "-m", "rigidsym", *args], cwd=where, env=env,
+                       capture_output=True, text=True, timeout=600)
+    assert p.returncode == 0, p.stdout + p.stderr
+    return json.loads(counts.read_text(encoding="utf-8"))
+
+
+def verify(where: Path, *more: str) -> dict:
+    return run(where, "verify", "--module", "rot_tex.py", "--module", "oth_tex.py",
+               "--jobs", "2", "--no-repairs", "--quiet", *more)
+
+
+def lean(path: Path) -> list:
+    """The JSON document's records without the run fields (seconds, cached)."""
+    rows = json.loads(path.read_text(encoding="utf-8"))["equations"]
+    return [{k: v for k, v in r.items() if k not in ("seconds", "cached")} for r in rows]
+
+
+def test_verify_json_builds_each_declaration_once_cold_none_warm_and_a_module_s_own(modules):
+    cold = verify(modules, "--json", "cold.json")
+    assert len(cold["build"]) == ROT_IDS + len(OTH_IDS)
+    assert max(cold["build"].values()) == 1, cold["build"]  # main: 2 for the LaTeX ids
+    assert set(cold["transcribe"]) == OTH_IDS  # checked once, in the worker
+    warm = verify(modules, "--json", "warm.json")
+    assert warm["build"] == {}, warm["build"]  # main: the LaTeX ids, built for the record
+    assert warm["decide"] == {} and warm["transcribe"] == {}
+    assert lean(modules / "warm.json") == lean(modules / "cold.json")
+    assert all(r["transcription"] for r in lean(modules / "warm.json")
+               if r["id"] in OTH_IDS | {"rot:trace-tex"})
+    # a change to one module: its ids only are built, decided and transcribed again
+    path = modules / "oth_tex.py"
+    path.write_text(path.read_text(encoding="utf-8") + "\n# edited\n", encoding="utf-8")
+    again = verify(modules, "--json", "again.json")
+    assert again["build"] == {i: 1 for i in OTH_IDS}, again["build"]  # main: the rot ids too
+    assert set(again["decide"]) == OTH_IDS and set(again["transcribe"]) == OTH_IDS
+    assert lean(modules / "again.json") == lean(modules / "cold.json")
+
+
+def test_json_after_text_builds_only_for_the_transcriptions(modules):
+    text = verify(modules)  # no JSON: no transcription asked for
+    assert text["transcribe"] == {} and max(text["build"].values()) == 1
+    first = verify(modules, "--json", "a.json")  # verdicts cached, records not yet
+    assert first["decide"] == {}
+    assert first["build"] == {i: 1 for i in OTH_IDS | {"rot:trace-tex"}}
+    assert verify(modules, "--format", "json")["build"] == {}
