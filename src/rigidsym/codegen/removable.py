@@ -217,6 +217,9 @@ def rewrite(exprs: list) -> list:
             if e1 == e:
                 new.append(e)
                 continue
-            new.append(_walk(_normal(e1, T), T))
+            e2 = _walk(_normal(e1, T), T)
+            # only where a quotient was removed: elsewhere the output as it was (its form,
+            # and so the kernel's program, unchanged)
+            new.append(e2 if e2.atoms(QuotientBase) else e)
         out = new
     return out
