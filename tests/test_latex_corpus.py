@@ -37,15 +37,9 @@ QUICK = {"lynch-park-06", "lynch-park-07", "murray-li-sastry-16", "siciliano-12"
 XFAIL = {  # id -> what is wrong with its reading today (issue 40; remove a line once fixed)
     "lynch-park-14": "undecided",
     "lynch-park-15": "undecided",
-    "murray-li-sastry-01": "unread",
-    "murray-li-sastry-02": "unread",
-    "murray-li-sastry-03": "unread",
     "murray-li-sastry-13": "undecided",
     "murray-li-sastry-14": "undecided",
-    "siciliano-05": "unread",
-    "siciliano-06": "unread",
-    "siciliano-09": "unread",
-    "spong-09": "wrong",
+    "siciliano-09": "unread",  # \boldsymbol{S}(\cdot) an operator: no notation line gives it
     "corke-05": "undecided",
     "corke-06": "undecided",
     "craig-05": "undecided",
