@@ -44,3 +44,8 @@ def _main(omega_0, omega_1, omega_2, a_0, a_1, a_2, a_dot_0, a_dot_1, a_dot_2):
 VARIANTS = (
     ("main", _main, None),
 )
+
+
+#: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.vjp), None without a
+#: generated Jacobian
+VJP = JVP = None

@@ -208,3 +208,8 @@ def _main(o_ddot_0, o_ddot_1, o_ddot_2, Q_00, Q_01, Q_02, Q_10, Q_11, Q_12, Q_20
 VARIANTS = (
     ("main", _main, None),
 )
+
+
+#: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.vjp), None without a
+#: generated Jacobian
+VJP = JVP = None

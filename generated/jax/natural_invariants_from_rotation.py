@@ -131,3 +131,8 @@ VARIANTS = (
     ("near_pi_2", _near_pi_2, _when_near_pi_2),
     ("main", _main, None),
 )
+
+
+#: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.vjp), None without a
+#: generated Jacobian
+VJP = JVP = None

@@ -43,3 +43,59 @@ def _main(I_C_00, I_C_01, I_C_02, I_C_10, I_C_11, I_C_12, I_C_20, I_C_21, I_C_22
 VARIANTS = (
     ("main", _main, None),
 )
+
+
+def _vjp(I_C_00, I_C_01, I_C_02, I_C_10, I_C_11, I_C_12, I_C_20, I_C_21, I_C_22, m, omega_0, omega_1, omega_2, omega_dot_0, omega_dot_1, omega_dot_2, c_ddot_0, c_ddot_1, c_ddot_2, _g0, _g1, _g2, _g3, _g4, _g5):
+    """The cotangents of the inputs (``COLUMNS``) from those of the outputs: reverse mode
+    over ``_main``, 101 operations."""
+    x0 = I_C_20*omega_0 + I_C_21*omega_1 + I_C_22*omega_2
+    x1 = I_C_10*omega_0 + I_C_11*omega_1 + I_C_12*omega_2
+    x2 = I_C_00*omega_0 + I_C_01*omega_1 + I_C_02*omega_2
+    _b0 = _g1*omega_2 - _g2*omega_1
+    _b1 = -_g0*omega_2 + _g2*omega_0
+    _b2 = _g0*omega_1 - _g1*omega_0
+    return (
+        _b0*omega_0 + _g0*omega_dot_0,
+        _b0*omega_1 + _g0*omega_dot_1,
+        _b0*omega_2 + _g0*omega_dot_2,
+        _b1*omega_0 + _g1*omega_dot_0,
+        _b1*omega_1 + _g1*omega_dot_1,
+        _b1*omega_2 + _g1*omega_dot_2,
+        _b2*omega_0 + _g2*omega_dot_0,
+        _b2*omega_1 + _g2*omega_dot_1,
+        _b2*omega_2 + _g2*omega_dot_2,
+        _g3*c_ddot_0 + _g4*c_ddot_1 + _g5*c_ddot_2,
+        I_C_00*_b0 + I_C_10*_b1 + I_C_20*_b2 - _g1*x0 + _g2*x1,
+        I_C_01*_b0 + I_C_11*_b1 + I_C_21*_b2 + _g0*x0 - _g2*x2,
+        I_C_02*_b0 + I_C_12*_b1 + I_C_22*_b2 - _g0*x1 + _g1*x2,
+        I_C_00*_g0 + I_C_10*_g1 + I_C_20*_g2,
+        I_C_01*_g0 + I_C_11*_g1 + I_C_21*_g2,
+        I_C_02*_g0 + I_C_12*_g1 + I_C_22*_g2,
+        _g3*m,
+        _g4*m,
+        _g5*m,
+    )
+
+
+def _jvp(I_C_00, I_C_01, I_C_02, I_C_10, I_C_11, I_C_12, I_C_20, I_C_21, I_C_22, m, omega_0, omega_1, omega_2, omega_dot_0, omega_dot_1, omega_dot_2, c_ddot_0, c_ddot_1, c_ddot_2, _t0, _t1, _t2, _t3, _t4, _t5, _t6, _t7, _t8, _t9, _t10, _t11, _t12, _t13, _t14, _t15, _t16, _t17, _t18):
+    """The tangents of the outputs from those of the inputs, linear in the tangents:
+    forward mode over ``_main``, 114 operations."""
+    x0 = I_C_20*omega_0 + I_C_21*omega_1 + I_C_22*omega_2
+    _d0 = I_C_20*_t10 + I_C_21*_t11 + I_C_22*_t12 + _t6*omega_0 + _t7*omega_1 + _t8*omega_2
+    x1 = I_C_10*omega_0 + I_C_11*omega_1 + I_C_12*omega_2
+    _d1 = I_C_10*_t10 + I_C_11*_t11 + I_C_12*_t12 + _t3*omega_0 + _t4*omega_1 + _t5*omega_2
+    x2 = I_C_00*omega_0 + I_C_01*omega_1 + I_C_02*omega_2
+    _d2 = I_C_00*_t10 + I_C_01*_t11 + I_C_02*_t12 + _t0*omega_0 + _t1*omega_1 + _t2*omega_2
+    return (
+        I_C_00*_t13 + I_C_01*_t14 + I_C_02*_t15 + _d0*omega_1 - _d1*omega_2 + _t0*omega_dot_0 + _t1*omega_dot_1 + _t11*x0 - _t12*x1 + _t2*omega_dot_2,
+        I_C_10*_t13 + I_C_11*_t14 + I_C_12*_t15 - _d0*omega_0 + _d2*omega_2 - _t10*x0 + _t12*x2 + _t3*omega_dot_0 + _t4*omega_dot_1 + _t5*omega_dot_2,
+        I_C_20*_t13 + I_C_21*_t14 + I_C_22*_t15 + _d1*omega_0 - _d2*omega_1 + _t10*x1 - _t11*x2 + _t6*omega_dot_0 + _t7*omega_dot_1 + _t8*omega_dot_2,
+        _t16*m + _t9*c_ddot_0,
+        _t17*m + _t9*c_ddot_1,
+        _t18*m + _t9*c_ddot_2,
+    )
+
+
+#: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.vjp), None without a
+#: generated Jacobian
+VJP, JVP = _vjp, _jvp

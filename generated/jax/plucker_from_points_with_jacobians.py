@@ -23,6 +23,8 @@ the checked, differentiable API.
 """
 
 import jax.numpy
+
+
 def _split(x, k):
     # Veltkamp: x = hi + lo exactly, hi of at most p - ceil(p/2) bits
     t = k * x
@@ -137,3 +139,8 @@ def _main(p1_0, p1_1, p1_2, p2_0, p2_1, p2_2):
 VARIANTS = (
     ("main", _main, None),
 )
+
+
+#: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.vjp), None without a
+#: generated Jacobian
+VJP = JVP = None

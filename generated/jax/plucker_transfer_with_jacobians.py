@@ -121,3 +121,8 @@ def _main(kappa_A_0, kappa_A_1, kappa_A_2, kappa_A_3, kappa_A_4, kappa_A_5, a_0,
 VARIANTS = (
     ("main", _main, None),
 )
+
+
+#: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.vjp), None without a
+#: generated Jacobian
+VJP = JVP = None

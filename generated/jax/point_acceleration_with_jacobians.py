@@ -112,3 +112,8 @@ def _main(a_ddot_0, a_ddot_1, a_ddot_2, omega_0, omega_1, omega_2, omega_dot_0, 
 VARIANTS = (
     ("main", _main, None),
 )
+
+
+#: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.vjp), None without a
+#: generated Jacobian
+VJP = JVP = None

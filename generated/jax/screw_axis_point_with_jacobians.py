@@ -155,3 +155,8 @@ def _main(e_0, e_1, e_2, phi, a_0, a_1, a_2, a_prime_0, a_prime_1, a_prime_2):
 VARIANTS = (
     ("main", _main, None),
 )
+
+
+#: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.vjp), None without a
+#: generated Jacobian
+VJP = JVP = None

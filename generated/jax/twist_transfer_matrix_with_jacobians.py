@@ -289,3 +289,8 @@ def _main(a_0, a_1, a_2, p_0, p_1, p_2):
 VARIANTS = (
     ("main", _main, None),
 )
+
+
+#: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.vjp), None without a
+#: generated Jacobian
+VJP = JVP = None

@@ -245,3 +245,8 @@ def _main(e_0, e_1, e_2, phi, omega_0, omega_1, omega_2):
 VARIANTS = (
     ("main", _main, None),
 )
+
+
+#: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.vjp), None without a
+#: generated Jacobian
+VJP = JVP = None

@@ -70,3 +70,125 @@ def _main(e_0, e_1, e_2, phi, omega_0, omega_1, omega_2):
 VARIANTS = (
     ("main", _main, None),
 )
+
+
+def _vjp(e_0, e_1, e_2, phi, omega_0, omega_1, omega_2, _g0, _g1, _g2, _g3, _g4, _g5, _g6, _g7, _g8, _g9, _g10, _g11):
+    """The cotangents of the inputs (``COLUMNS``) from those of the outputs: reverse mode
+    over ``_main``, 248 operations."""
+    x0 = (0.5)*phi
+    x1 = torch.sin(x0)
+    x2 = (x1*x1)
+    x3 = 2.0*x2
+    x4 = e_0*omega_0 + e_1*omega_1 + e_2*omega_2
+    x6 = torch.cos(x0)
+    x7 = 2.0*x1*x4*x6
+    x9 = (0.5)*e_1
+    x10 = (0.5)*e_0
+    x11 = x6/x1
+    x12 = e_2*x11
+    x13 = x10*x12
+    x14 = x12*x9
+    x15 = (0.5)*x11
+    x16 = omega_0*(-x13 + x9) + omega_1*(-x10 - x14) + omega_2*x15*(1.0 - (e_2*e_2))
+    x18 = (0.5)*e_2
+    x19 = e_0*x11*x9
+    x20 = omega_0*(-x18 - x19) + omega_1*x15*(1.0 - (e_1*e_1)) + omega_2*(x10 - x14)
+    x21 = omega_0*x15*(1.0 - (e_0*e_0)) + omega_1*(x18 - x19) + omega_2*(-x13 - x9)
+    _b0 = -_g6 + _g9
+    _b1 = _g3 - 2.0*_g6*x2 + _g9*x3
+    _b2 = _g2*x3 + _g7 - 2.0*_g8*x2
+    _b3 = -_b1*omega_1 - _b2*omega_0
+    _b4 = _b1*omega_1 - _b2*omega_0
+    _b5 = _g2 - _g8
+    _b6 = -2.0*_g1*x2 + _g11 + _g4*x3
+    _b7 = _b1*omega_0*(1.0 - (e_0*e_0)) + _b2*omega_1*(1.0 - (e_1*e_1)) + _b6*omega_2*(1.0 - (e_2*e_2))
+    _b8 = -_b2*omega_2 - _b6*omega_1
+    _b9 = -_b1*omega_2 - _b6*omega_0
+    _b10 = _b8*x9 + _b9*x10
+    _b11 = _b10*e_2 + _b3*e_0*x9 + (0.5)*_b7
+    _b12 = _b2*omega_2 - _b6*omega_1 + _b9*x12
+    _b13 = -_b1*omega_2 + _b3*e_0*x11 + _b6*omega_0 + _b8*x12
+    _b14 = -_g1 + _g4
+    _b15 = _b0*e_0 + _b14*e_2 + _b5*e_1
+    _b16 = _b11/x1 + 2.0*_b15*x1*x4
+    _b17 = _g0 + _g10 + _g5
+    _b18 = 2.0*_b15*x1*x6 + _b17*(1.0 - x3)
+    _b19 = -_b17*x4 + _g2*x20 + _g4*x16 + _g9*x21
+    _b20 = 2.0*_b19 - 2.0*_g1*x16 - 2.0*_g6*x21 - 2.0*_g8*x20
+    _b21 = -_b11*x6/(x1*x1) + 2.0*_b15*x4*x6 + 2.0*_b20*x1
+    _b22 = -_b16*x1 + _b21*x6
+    return (
+        _b0*x7 - 2.0*_b1*e_0*omega_0*x15 + (0.5)*_b12 + _b18*omega_0 + _b3*x11*x9,
+        (0.5)*_b13 + _b18*omega_1 - 2.0*_b2*e_1*omega_1*x15 + _b5*x7,
+        _b10*x11 + _b14*x7 + _b18*omega_2 + (0.5)*_b4 - 2.0*_b6*e_2*omega_2*x15,
+        (0.5)*_b22,
+        _b1*x15*(1.0 - (e_0*e_0)) + _b18*e_0 + _b2*(-x18 - x19) + _b6*(-x13 + x9),
+        _b1*(x18 - x19) + _b18*e_1 + _b2*x15*(1.0 - (e_1*e_1)) + _b6*(-x10 - x14),
+        _b1*(-x13 - x9) + _b18*e_2 + _b2*(x10 - x14) + _b6*x15*(1.0 - (e_2*e_2)),
+    )
+
+
+def _jvp(e_0, e_1, e_2, phi, omega_0, omega_1, omega_2, _t0, _t1, _t2, _t3, _t4, _t5, _t6):
+    """The tangents of the outputs from those of the inputs, linear in the tangents:
+    forward mode over ``_main``, 244 operations."""
+    x0 = (0.5)*phi
+    _d0 = (0.5)*_t3
+    x1 = torch.sin(x0)
+    _d1 = _d0*x6
+    x2 = (x1*x1)
+    _d2 = 2.0*_d1*x1
+    x3 = 2.0*x2
+    _d3 = 2.0*_d2
+    x4 = e_0*omega_0 + e_1*omega_1 + e_2*omega_2
+    _d4 = _t0*omega_0 + _t1*omega_1 + _t2*omega_2 + _t4*e_0 + _t5*e_1 + _t6*e_2
+    _d5 = -_d3*x4 + _d4*(1.0 - x3)
+    x6 = torch.cos(x0)
+    _d6 = -_d0*x1
+    x7 = 2.0*x1*x4*x6
+    _d7 = 2.0*_d1*x4*x6 + 2.0*_d4*x1*x6 + 2.0*_d6*x1*x4
+    _d8 = _d7*e_2 + _t2*x7
+    x9 = (0.5)*e_1
+    _d9 = (0.5)*_t1
+    x10 = (0.5)*e_0
+    _d10 = (0.5)*_t0
+    x11 = x6/x1
+    _d11 = -_d1*x6/(x1*x1) + _d6/x1
+    x12 = e_2*x11
+    _d12 = _d11*e_2 + _t2*x11
+    x13 = x10*x12
+    _d13 = _d10*x12 + _d12*x10
+    x14 = x12*x9
+    _d14 = _d12*x9 + _d9*x12
+    x15 = (0.5)*x11
+    _d15 = (0.5)*_d11
+    x16 = omega_0*(-x13 + x9) + omega_1*(-x10 - x14) + omega_2*x15*(1.0 - (e_2*e_2))
+    _d16 = -_d10*omega_1 - _d13*omega_0 - _d14*omega_1 + _d15*omega_2*(1.0 - (e_2*e_2)) + _d9*omega_0 - 2.0*_t2*e_2*omega_2*x15 + _t4*(-x13 + x9) + _t5*(-x10 - x14) + _t6*x15*(1.0 - (e_2*e_2))
+    _d17 = _d7*e_1 + _t1*x7
+    x18 = (0.5)*e_2
+    _d18 = (0.5)*_t2
+    x19 = e_0*x11*x9
+    _d19 = _d11*e_0*x9 + _d9*e_0*x11 + _t0*x11*x9
+    x20 = omega_0*(-x18 - x19) + omega_1*x15*(1.0 - (e_1*e_1)) + omega_2*(x10 - x14)
+    _d20 = _d10*omega_2 - _d14*omega_2 + _d15*omega_1*(1.0 - (e_1*e_1)) - _d18*omega_0 - _d19*omega_0 - 2.0*_t1*e_1*omega_1*x15 + _t4*(-x18 - x19) + _t5*x15*(1.0 - (e_1*e_1)) + _t6*(x10 - x14)
+    x21 = omega_0*x15*(1.0 - (e_0*e_0)) + omega_1*(x18 - x19) + omega_2*(-x13 - x9)
+    _d21 = -_d13*omega_2 + _d15*omega_0*(1.0 - (e_0*e_0)) + _d18*omega_1 - _d19*omega_1 - _d9*omega_2 - 2.0*_t0*e_0*omega_0*x15 + _t4*x15*(1.0 - (e_0*e_0)) + _t5*(x18 - x19) + _t6*(-x13 - x9)
+    _d22 = _d7*e_0 + _t0*x7
+    return (
+        _d5,
+        -2.0*_d16*x2 - 2.0*_d2*x16 - _d8,
+        _d17 + _d20*x3 + _d3*x20,
+        _d21,
+        _d16*x3 + _d3*x16 + _d8,
+        _d5,
+        -2.0*_d2*x21 - 2.0*_d21*x2 - _d22,
+        _d20,
+        -_d17 - 2.0*_d2*x20 - 2.0*_d20*x2,
+        _d21*x3 + _d22 + _d3*x21,
+        _d5,
+        _d16,
+    )
+
+
+#: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.vjp), None without a
+#: generated Jacobian
+VJP, JVP = _vjp, _jvp

@@ -44,3 +44,8 @@ def _main(angles_0, angles_1, angles_2, omega_0, omega_1, omega_2):
 VARIANTS = (
     ("main", _main, None),
 )
+
+
+#: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.vjp), None without a
+#: generated Jacobian
+VJP = JVP = None

@@ -99,3 +99,8 @@ def _main(eta_0, eta_1, eta_2, eta_3):
 VARIANTS = (
     ("main", _main, None),
 )
+
+
+#: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.vjp), None without a
+#: generated Jacobian
+VJP = JVP = None

@@ -73,3 +73,70 @@ def _main(a_0, a_1, a_2, p_0, p_1, p_2):
 VARIANTS = (
     ("main", _main, None),
 )
+
+
+def _vjp(a_0, a_1, a_2, p_0, p_1, p_2, _g0, _g1, _g2, _g3, _g4, _g5, _g6, _g7, _g8, _g9, _g10, _g11, _g12, _g13, _g14, _g15, _g16, _g17, _g18, _g19, _g20, _g21, _g22, _g23, _g24, _g25, _g26, _g27, _g28, _g29, _g30, _g31, _g32, _g33, _g34, _g35):
+    """The cotangents of the inputs (``COLUMNS``) from those of the outputs: reverse mode
+    over ``_main``, 6 operations."""
+    _b0 = -_g26 + _g31
+    _b1 = _g20 - _g30
+    _b2 = -_g19 + _g24
+    return (
+        _b0,
+        _b1,
+        _b2,
+        -_b0,
+        -_b1,
+        -_b2,
+    )
+
+
+def _jvp(a_0, a_1, a_2, p_0, p_1, p_2, _t0, _t1, _t2, _t3, _t4, _t5):
+    """The tangents of the outputs from those of the inputs, linear in the tangents:
+    forward mode over ``_main``, 6 operations."""
+    _d0 = _t2 - _t5
+    _d1 = _t1 - _t4
+    _d2 = _t0 - _t3
+    return (
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        -_d0,
+        _d1,
+        0.0,
+        0.0,
+        0.0,
+        _d0,
+        0.0,
+        -_d2,
+        0.0,
+        0.0,
+        0.0,
+        -_d1,
+        _d2,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+    )
+
+
+#: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.vjp), None without a
+#: generated Jacobian
+VJP, JVP = _vjp, _jvp

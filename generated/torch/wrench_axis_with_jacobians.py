@@ -207,3 +207,8 @@ def _main(w_A_0, w_A_1, w_A_2, w_A_3, w_A_4, w_A_5, a_0, a_1, a_2):
 VARIANTS = (
     ("main", _main, None),
 )
+
+
+#: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.vjp), None without a
+#: generated Jacobian
+VJP = JVP = None

@@ -98,8 +98,10 @@ def info() -> dict:
     for kind in KINDS:
         where = folder(kind)
         files = [p for p in where.rglob("*") if p.is_file()] if where.is_dir() else []
-        # a .built file marks a user declaration known to build (verdict_cache): no entry
-        entries = [p for p in files if not p.name.endswith((".sha256", ".lock", ".built"))]
+        # a .built file marks a user declaration known to build (verdict_cache), an .imports
+        # file what a module imports (rigidsym._sources): no entries
+        entries = [p for p in files
+                   if not p.name.endswith((".sha256", ".lock", ".built", ".imports"))]
         out[kind] = {"path": str(where), "entries": len(entries),
                      "bytes": sum(p.stat().st_size for p in files)}
     return out

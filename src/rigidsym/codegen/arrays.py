@@ -15,7 +15,9 @@ from __future__ import annotations
 from typing import Any
 
 from rigidsym.codegen.compensated import ARRAY_SOURCE
+from rigidsym.codegen.jacobians import has_jacobian
 from rigidsym.codegen.printers import KernelJaxPrinter, torch_printer
+from rigidsym.codegen.vjp import cotangent_names, jvp_program, tangent_names, vjp_program
 
 __all__ = ["BACKENDS", "render_array_kernels"]
 
@@ -48,14 +50,28 @@ def render_array_kernels(env, kc: Any, header) -> dict[str, str]:
 
     t = "array_kernel.py.j2"
     columns = [str(s) for _, syms in kc.inputs for s in syms]
+    # the backward of a kernel with a generated Jacobian (one formula, no branches): reverse
+    # mode over its optimised program (issue 38)
+    vjp = jvp = None
+    if has_jacobian(kc.kernel) and len(kc.variants) == 1:
+        ins = [s for _, syms in kc.inputs for s in syms]
+        vjp = vjp_program(kc.variants[0].program, ins)
+        jvp = jvp_program(kc.variants[0].program, ins)
     files = {}
     for backend, module in BACKENDS.items():
         pr = _printer(backend)
         # branches first, in order, then main (the order of the NumPy kernel's selection)
         variants = [_variant(v, pr) for v in kc.variants]
+        back = None if vjp is None else {
+            "args": columns + cotangent_names(len(kc.variants[0].program.outputs)),
+            "temps": [(str(s), pr.doprint(e)) for s, e in vjp.temps],
+            "outputs": [pr.doprint(e) for e in vjp.outputs], "ops": vjp.ops,
+            "targs": columns + tangent_names(len(columns)),
+            "ttemps": [(str(s), pr.doprint(e)) for s, e in jvp.temps],
+            "toutputs": [pr.doprint(e) for e in jvp.outputs], "tops": jvp.ops}
         files[f"{backend}/{kc.kernel.name}.py"] = env.get_template(t).render(
             header=header(t), backend=backend, module=module, k=kc.kernel, ops=kc.ops,
-            hash=kc.hash, columns=columns, variants=variants,
+            hash=kc.hash, columns=columns, variants=variants, vjp=back,
             helpers=ARRAY_SOURCE.strip("\n").replace("{module}", module) if
             uses_diffprod(kc) else "")
     return files

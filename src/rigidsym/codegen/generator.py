@@ -42,6 +42,7 @@ from rigidsym.codegen.files import check, write
 from rigidsym.codegen.float32 import plan_kernel
 from rigidsym.codegen.optimise import Program, compile_program, math_hash
 from rigidsym.codegen.printers import KernelCPrinter, KernelNumPyPrinter
+from rigidsym.codegen.removable import rewrite as removable
 from rigidsym.codegen.spec import Kernel, flat_symbols, input_symbols
 
 __all__ = ["generate", "write", "check", "GenerationResult", "default_out_dir", "TEMPLATES"]
@@ -121,12 +122,14 @@ def compile_kernel(kernel: Kernel) -> KernelCode:
         parts += [cond, *flat]
         fcond = sp.lambdify(sflat, cond, modules="math")
         flat, got = improve(kernel, br.name, flat, syms, sflat, list(before), fcond)
+        flat = removable(flat)
         before.append(fcond)
         chosen += got
         variants.append(Variant(br.name, compile_program(flat, angles), cond))
     flat = _flatten(kernel, kernel.build(**syms))
     parts += flat
     flat, got = improve(kernel, "main", flat, syms, sflat, before)
+    flat = removable(flat)
     chosen += got
     variants.append(Variant("main", compile_program(flat, angles), None))
     ops = sum(v.program.ops for v in variants)

@@ -23,10 +23,9 @@ from typing import Any
 
 import numpy as np
 
-from rigidsym import _kinds
 from rigidsym._config import generated_dir
 from rigidsym._io import load_module
-from rigidsym.kernels._arrays_checks import _raise, broadcast_batch, modes, validate
+from rigidsym.kernels._arrays_checks import _raise, broadcast_batch, modes, safe_point, validate
 from rigidsym.kernels._errors import raise_flagged
 from rigidsym.kernels._jacobian import contract
 from rigidsym.kernels._jacobian import full_batch as _full
@@ -78,7 +77,17 @@ class ArraySpace:
             mod = load_module(f"rigidsym._{self.backend}_{key}.{name}",
                               self.directory / self.backend / f"{name}.py")
             v = self._programs[name] = mod.VARIANTS
+            # the generated vector-Jacobian product; None in a folder generated before it
+            self._programs["vjp", name] = getattr(mod, "VJP", None)
+            self._programs["jvp", name] = getattr(mod, "JVP", None)
         return v
+
+    def vjp(self, name: str, mode: str = "vjp"):
+        """The generated reverse-mode (``"vjp"``: ``f(*columns, *output cotangents) -> input
+        cotangents``) or forward-mode (``"jvp"``: ``f(*columns, *input tangents) -> output
+        tangents``) program of kernel ``name`` (``rigidsym.codegen.vjp``), or None."""
+        self.variants(name)
+        return self._programs[mode, name]
 
     def safe(self, name: str) -> list[float]:
         """The :func:`safe_point` of kernel ``name``'s arguments (cached)."""
@@ -148,26 +157,6 @@ def evaluate(xp, variants: tuple, cols: list, stop_gradient: Callable, safe=None
     return _evaluate(xp, variants, cols, stop_gradient)[0], singular
 
 
-def safe_point(args: list[dict]) -> list[float]:
-    """A fixed generic point of the inputs' sets, one float per column: constrained kinds
-    through their rational parametrisation (an exact unit vector or rotation), angles in
-    (0.4, 1.2), free entries in (-1.5, 1.5); regular for every kernel of the package (tested:
-    tests/test_arrays_masked.py), as a random point is with probability one."""
-    rng = np.random.default_rng(38)
-    out: list[float] = []
-    for a in args:
-        kind = _kinds.for_spec(a["kind"], tuple(a["shape"]))
-        n = int(math.prod(a["shape"]))
-        if kind is not None and kind.parametrise is not None:
-            vals = kind.parametrise(list(rng.uniform(-0.9, 0.9, len(kind.params))))
-        elif kind is not None and kind.half_angle:
-            vals = rng.uniform(0.4, 1.2, n)
-        else:
-            vals = rng.uniform(-1.5, 1.5, n)
-        out.extend(float(v) for v in vals)
-    return out
-
-
 def _evaluate(xp, variants: tuple, cols: list, stop_gradient: Callable) -> tuple[list, Any]:
     like = cols[0]
     if len(variants) == 1:
@@ -220,7 +209,9 @@ class Library:
     raise naming ``name``), ``device(arrays)``, ``host(x)`` (a NumPy copy), ``make(space,
     name)`` (``f(*broadcast inputs) -> (*outputs, singular)``, with the derivative rule),
     ``refuse(exc_type, message)`` (raises the refusals of :func:`modes`) and ``note(values)``
-    (a warning before conversion, or nothing).
+    (a warning before conversion, or nothing); for the dtypes, ``floats`` (those accepted),
+    ``float32``, ``finfo``, ``float_dtype(v)`` (the library dtype of a floating library or
+    NumPy array, else None) and ``cast(x, dtype)``.
     """
 
     backend: str
@@ -236,6 +227,11 @@ class Library:
     device: Callable
     host: Callable
     make: Callable
+    floats: tuple
+    float32: Any
+    finfo: Callable
+    float_dtype: Callable
+    cast: Callable
     refuse: Callable = _raise
     note: Callable = lambda values: None
 
@@ -243,16 +239,26 @@ class Library:
 _BAD_KINDS = "bcOUSMmV"  # NumPy kinds that are no real numbers
 
 
-def convert(lib: Library, values: tuple, args: list[dict]) -> list:
-    """The library arrays of ``values``, of one floating dtype on one device.
+def convert(lib: Library, values: tuple, args: list[dict]) -> tuple[list, Any, float]:
+    """The library arrays of ``values`` on one device, in the dtype the kernel computes in.
+
+    Returns:
+        ``(arrays, dtype, eps)``: ``dtype`` is the inputs' promoted dtype (the library's
+        rule, :attr:`Library.dtype`), that of the results; the arrays are in it, or in
+        float32 for float16 and bfloat16 (computed in float32, rounded once at the end);
+        ``eps`` is the machine epsilon of the lowest precision among the inputs and the
+        result, for the validation tolerance (a float32 unit vector with a float64 angle
+        is checked at float32's).
 
     Raises:
-        TypeError: an argument holds no real numbers (named).
+        TypeError: an argument holds no real numbers, or a float type other than float16,
+            bfloat16, float32 and float64 (named).
         ValueError: ragged, on another device, or the wrong trailing shape (named).
     """
     lib.note(values)
-    arrays = []
+    arrays, eps = [], []
     for v, a in zip(values, args, strict=True):
+        given = lib.is_array(v) or isinstance(v, (np.ndarray, np.generic))
         if lib.is_array(v):
             if not lib.real(v):
                 raise TypeError(f"{a['name']}: expected real numbers, got {v.dtype}")
@@ -263,17 +269,25 @@ def convert(lib: Library, values: tuple, args: list[dict]) -> list:
                 raise ValueError(f"{a['name']}: not a rectangular array ({exc})") from None
             if v.dtype.kind in _BAD_KINDS:
                 raise TypeError(f"{a['name']}: expected real numbers, got {v.dtype}")
+        fd = lib.float_dtype(v)
+        if fd is not None and fd not in lib.floats:
+            raise TypeError(f"{a['name']}: {v.dtype} is not supported; expected float16, "
+                            "bfloat16, float32 or float64 (or integers)")
+        if fd is not None and given:  # an array input, not a list or a Python number
+            eps.append(float(lib.finfo(fd).eps))
         arrays.append(v)
     dtype, device = lib.dtype(values, arrays), lib.device(arrays)
+    eps.append(float(lib.finfo(dtype).eps))
+    work = lib.float32 if lib.finfo(dtype).bits < 32 else dtype
     out = []
     for v, a in zip(arrays, args, strict=True):
-        t = lib.as_array(v, dtype, device, a["name"])
+        t = lib.as_array(v, work, device, a["name"])
         shape = tuple(a["shape"])
         if t.ndim < len(shape) or tuple(t.shape[t.ndim - len(shape):]) != shape:
             raise ValueError(f"{a['name']}: expected shape {_shp(shape)}, got "
                              f"{tuple(t.shape)}")
         out.append(t)
-    return out
+    return out, dtype, max(eps)
 
 
 class Space:
@@ -309,6 +323,42 @@ class Space:
                            self.progs.safe(name), singular)
         return flat[nval:]
 
+    def vjp(self, name: str, xs, grads: list, singular) -> list:
+        """The cotangents of the inputs ``xs`` from those of the outputs, ``grads`` (None:
+        zero): the generated reverse-mode program, on the safe point's inputs in the
+        ``singular`` samples (their cotangent is zero there), plain arithmetic that autograd
+        differentiates again; the Jacobian kernel then a contraction in a folder generated
+        without it."""
+        meta, xp = self.progs.meta[name], self.lib.xp
+        args, outs = meta["args"], meta["outputs"]
+        fn = self.progs.vjp(name)
+        if fn is None:
+            return contract(xp, grads, self.jacobian(name, xs, singular), outs, args,
+                            forward=False)
+        cols = [xp.where(singular, v, c)
+                for v, c in zip(self.progs.safe(name), columns(xs, args), strict=True)]
+        gcols = []
+        for g, o in zip(grads, outs, strict=True):
+            gcols += ([0.0] * int(math.prod(o["shape"])) if g is None else columns([g], [o]))
+        return shape_outputs(xp, list(fn(*cols, *gcols)), args, cols[0])
+
+    def jvp(self, name: str, xs, tangents: list, singular) -> list:
+        """The tangents of the outputs from those of the inputs (arrays, zeros for none):
+        the generated forward-mode program, linear in the tangents, zero in the
+        ``singular`` samples (whose values are NaN or an error); the Jacobian kernel then
+        a contraction in a folder generated without it."""
+        meta, xp = self.progs.meta[name], self.lib.xp
+        args, outs = meta["args"], meta["outputs"]
+        fn = self.progs.vjp(name, "jvp")
+        if fn is None:
+            return contract(xp, tangents, self.jacobian(name, xs, singular), outs, args,
+                            forward=True, singular=singular)
+        cols = [xp.where(singular, v, c)
+                for v, c in zip(self.progs.safe(name), columns(xs, args), strict=True)]
+        flat = [xp.where(singular, 0.0, _full(xp, v, cols[0]))
+                for v in fn(*cols, *columns(tangents, args))]
+        return shape_outputs(xp, flat, outs, cols[0])
+
     def call(self, name: str, values: tuple, check, on_singular):
         """Kernel ``name`` on ``values`` (the public functions' body): convert, validate
         (``check``), broadcast, evaluate, then flag the singular (and, checked, overflowed)
@@ -316,14 +366,16 @@ class Space:
         lib, xp = self.lib, self.lib.xp
         meta = self.progs.meta[name]
         args = meta["args"]
-        xs = convert(lib, values, args)
+        xs, dtype, eps = convert(lib, values, args)
         check, on_singular = modes(check, on_singular, lib.traced(xs), lib.tracer, lib.refuse)
         batch = broadcast_batch(xp.broadcast_shapes, xs, args)
         if check:
-            validate(xp, [lib.detach(x) for x in xs], args)
+            validate(xp, [lib.detach(x) for x in xs], args, eps)
         full = [xp.broadcast_to(x, batch + tuple(a["shape"])) for x, a in zip(xs, args,
                                                                              strict=True)]
         *res, sing = self.function(name)(*full)
+        if res[0].dtype != dtype:  # float16, bfloat16: computed in float32, rounded once
+            res = [lib.cast(r, dtype) for r in res]
         bad = sing
         if check:
             over = xp.zeros_like(sing)

@@ -53,7 +53,8 @@ def make_kernel(progs: ArraySpace, call: Callable, name: str, module: str) -> Ca
     fn.__name__ = fn.__qualname__ = name
     fn.__module__ = module
     lib = {"torch": "torch.autograd.Function", "jax": "jax.custom_jvp"}[progs.backend]
-    deriv = (f"the generated Jacobian kernel {name}{SUFFIX} ({lib})"
+    deriv = (f"the generated vector-Jacobian and Jacobian-vector products, equal to the "
+             f"generated Jacobian kernel {name}{SUFFIX} contracted ({lib})"
              if progs.has_jacobian(name) else
              "autograd through the generated expression (safe where at branches)")
     fn.__doc__ = docstring(meta, progs.backend, deriv)

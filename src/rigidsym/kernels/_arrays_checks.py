@@ -1,6 +1,7 @@
 """The input rules of the array back-ends (issue 31; split from ``_arrays``, issue 38): the
-keyword modes of eager and traced calls, the eager validation of constrained inputs, and
-the broadcast batch shape. No import of PyTorch or JAX.
+keyword modes of eager and traced calls, the eager validation of constrained inputs, the
+broadcast batch shape, and the regular point substituted in singular samples. No import of
+PyTorch or JAX.
 """
 
 from __future__ import annotations
@@ -12,7 +13,7 @@ import numpy as np
 
 from rigidsym import _kinds
 
-__all__ = ["modes", "validate", "broadcast_batch"]
+__all__ = ["modes", "validate", "broadcast_batch", "tolerance", "safe_point"]
 
 _MODES = ("raise", "nan")
 
@@ -46,9 +47,20 @@ def modes(check: bool | None, on_singular: str | None, traced: bool, where: str,
     return (True if check is None else check), (on_singular or "raise")
 
 
-def validate(xp, arrays: list, args: list[dict]) -> None:
+def tolerance(kind: _kinds.Kind, eps: float) -> float:
+    """The validation tolerance of ``kind`` for inputs of machine epsilon ``eps`` (that of the
+    lowest precision among a call's inputs): the kind table's (``kind.tol``, at least
+    ``kind.tol_eps`` eps: float32 1.19e-5) up to float32; 8 eps for float16 and bfloat16
+    (7.8e-3, 6.3e-2: a unit vector rounded to the type, its norm formed there, errs by up to
+    ~3 u = 1.5 eps, and 100 eps would pass vectors off by 10-80 %)."""
+    narrow = eps > float(np.finfo(np.float32).eps)
+    return max(kind.tol, (8.0 if narrow else kind.tol_eps) * eps)
+
+
+def validate(xp, arrays: list, args: list[dict], eps: float | None = None) -> None:
     """Eager validation: finite values, unit vectors, proper rotations (the kind table's
-    tolerances for the dtype); one reduction per argument read on the host.
+    tolerances, :func:`tolerance`, for ``eps``: default the arrays' own dtype's); one
+    reduction per argument read on the host.
 
     Raises:
         ValueError: naming the argument.
@@ -59,7 +71,7 @@ def validate(xp, arrays: list, args: list[dict]) -> None:
         kind = _kinds.for_spec(a["kind"], tuple(a["shape"]))
         if kind is None or kind.check is None or not _numel(x):
             continue
-        tol = kind.tolerance(np.dtype(str(x.dtype).replace("torch.", "")))
+        tol = tolerance(kind, float(xp.finfo(x.dtype).eps) if eps is None else eps)
         if kind.shape == (3, 3):
             ident = xp.eye(3, dtype=x.dtype)
             if hasattr(ident, "to"):  # torch: on the input's device (found on a GPU)
@@ -95,3 +107,23 @@ def broadcast_batch(broadcast_shapes: Callable, xs: list, args: list[dict]) -> t
 
 def _numel(x) -> int:
     return int(math.prod(x.shape))
+
+
+def safe_point(args: list[dict]) -> list[float]:
+    """A fixed generic point of the inputs' sets, one float per column: constrained kinds
+    through their rational parametrisation (an exact unit vector or rotation), angles in
+    (0.4, 1.2), free entries in (-1.5, 1.5); regular for every kernel of the package (tested:
+    tests/test_arrays_masked.py), as a random point is with probability one."""
+    rng = np.random.default_rng(38)
+    out: list[float] = []
+    for a in args:
+        kind = _kinds.for_spec(a["kind"], tuple(a["shape"]))
+        n = int(math.prod(a["shape"]))
+        if kind is not None and kind.parametrise is not None:
+            vals = kind.parametrise(list(rng.uniform(-0.9, 0.9, len(kind.params))))
+        elif kind is not None and kind.half_angle:
+            vals = rng.uniform(0.4, 1.2, n)
+        else:
+            vals = rng.uniform(-1.5, 1.5, n)
+        out.extend(float(v) for v in vals)
+    return out

@@ -19,8 +19,9 @@ Keywords (no ``out=``, no ``threads=``: meaningless under ``jit``):
   default there; ``"nan"`` is the default while traced.
 
 Derivatives: a kernel with a generated Jacobian kernel (``<name>_with_jacobians``) is a
-``jax.custom_jvp`` whose JVP *is* that verified Jacobian (so ``jax.grad``, ``jax.jacfwd``
-and ``jax.jacrev`` all use it); the others (the branch kernels, the Euler-angle rates) are
+``jax.custom_jvp`` whose rule is the generated forward-mode program, linear in the tangents
+and equal to that verified Jacobian contracted (JAX transposes it for ``jax.grad`` and
+``jax.jacrev``); the others (the branch kernels, the Euler-angle rates) are
 differentiated by JAX through the generated expression, with the safe-``where`` idiom at
 their branches. The JVP rule is plain differentiable arithmetic (``jax.hessian`` works). A
 sample masked by ``on_singular="nan"`` has a zero gradient: its inputs are replaced by a
@@ -70,18 +71,20 @@ def _x64_note(values) -> None:
                       UserWarning, stacklevel=5)
 
 
+def _float_dtype(v):
+    """The dtype of a floating array (bfloat16's NumPy kind is "V": asked of JAX), else None."""
+    return np.dtype(v.dtype) if jnp.issubdtype(v.dtype, jnp.floating) else None
+
+
 def _dtype(values, arrays):
     """The floating dtypes of the arrays promoted as JAX does, else JAX's default float."""
-    found = [x.dtype for x in arrays if np.dtype(x.dtype).kind == "f"]
+    found = [x.dtype for x in arrays if _float_dtype(x) is not None]
     return jnp.result_type(*found) if found else jnp.result_type(float)
 
 
 def _make(space: _arrays.Space, name: str):
     """``f(*xs) -> (*outputs, singular)``: a ``jax.custom_jvp`` whose JVP is the generated
     Jacobian kernel, or the plain expression (no Jacobian kernel)."""
-    meta = space.progs.meta[name]
-    args, outs = meta["args"], meta["outputs"]
-
     if not space.progs.has_jacobian(name):
         # traced (maybe differentiated): safe inputs in the singular samples
         return lambda *xs: space.values(name, xs, _traced(xs))
@@ -94,8 +97,8 @@ def _make(space: _arrays.Space, name: str):
     @f.defjvp
     def _jvp(primals, tangents):
         res = values(*primals)
-        touts = _arrays.contract(jnp, list(tangents), space.jacobian(name, primals, res[-1]),
-                                 outs, args, forward=True, singular=res[-1])
+        # the generated forward-mode program, linear in the tangents (JAX transposes it)
+        touts = space.jvp(name, primals, list(tangents), res[-1])
         zero = np.zeros(res[-1].shape, dtype=jax.dtypes.float0)
         return res, (*touts, zero)
 
@@ -106,9 +109,12 @@ _LIBRARY = _arrays.Library(
     backend="jax", xp=jnp, tracer="jax.jit / jax.vmap / jax.grad", traced=_traced,
     stop_gradient=jax.lax.stop_gradient, detach=lambda x: x,
     is_array=lambda v: isinstance(v, jax.Array),
-    real=lambda v: np.dtype(v.dtype).kind not in _arrays._BAD_KINDS,
+    real=lambda v: _float_dtype(v) is not None or np.dtype(v.dtype).kind in "iu",
     dtype=_dtype, as_array=lambda v, dtype, device, name: jnp.asarray(v, dtype=dtype),
-    device=lambda xs: None, host=np.asarray, make=_make, note=_x64_note)
+    device=lambda xs: None, host=np.asarray, make=_make, note=_x64_note,
+    floats=tuple(np.dtype(t) for t in (jnp.float16, jnp.bfloat16, jnp.float32, jnp.float64)),
+    float32=np.dtype(jnp.float32), finfo=jnp.finfo, cast=lambda x, dtype: x.astype(dtype),
+    float_dtype=_float_dtype)
 
 # load, the Euler-angle kernels, the lazy kernels: the same for both back-ends (_arrays_api)
 load, euler_rate_matrix, euler_angle_rates, __getattr__, __dir__, _space = \

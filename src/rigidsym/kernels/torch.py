@@ -19,7 +19,9 @@ Keywords (no ``out=``, no ``threads=``: meaningless or harmful under autograd an
 Derivatives: a kernel with a generated Jacobian kernel (``<name>_with_jacobians``) is a
 ``torch.autograd.Function`` (``setup_context``, a generated vmap rule, ``backward`` and
 ``jvp``; no ``jvp`` under ``torch.compile``, whose Dynamo cannot trace one) whose
-derivative *is* that verified Jacobian, by plain tensor arithmetic that autograd
+backward and jvp are the generated vector-Jacobian and Jacobian-vector products (reverse and
+forward mode over the program, equal to that verified Jacobian contracted), plain tensor
+arithmetic that autograd
 differentiates again (``create_graph=True``). The others (the branch kernels, the
 Euler-angle rates) are differentiated by autograd through the generated expression, with the
 safe-``where`` idiom at their branches. A sample masked by ``on_singular="nan"`` has a zero
@@ -75,12 +77,27 @@ except TypeError:  # torch < 2.7: no reason; Dynamo's message names the function
     _refuse = torch.compiler.disable(_needs_eager_mode)
 
 
+_FLOATS = (torch.float16, torch.bfloat16, torch.float32, torch.float64)
+_NUMPY = {np.dtype(np.float16): torch.float16, np.dtype(np.float32): torch.float32,
+          np.dtype(np.float64): torch.float64}
+
+
+def _float_dtype(v):
+    """The torch dtype of a floating tensor or NumPy array (a NumPy float torch lacks: its
+    NumPy dtype, refused by the caller), else None."""
+    if isinstance(v, torch.Tensor):
+        return v.dtype if v.dtype.is_floating_point else None
+    return _NUMPY.get(v.dtype, v.dtype) if v.dtype.kind == "f" else None
+
+
 def _dtype(values, arrays) -> torch.dtype:
-    """The promoted dtype of the floating tensors and NumPy arrays among the raw ``values``
-    (Python numbers and lists are weak, as in torch), else the default dtype."""
-    found = [v.dtype for v in values if isinstance(v, torch.Tensor) and v.dtype.is_floating_point]
-    found += [torch.from_numpy(np.empty(0, v.dtype)).dtype for v in values
-              if isinstance(v, np.ndarray) and v.dtype.kind == "f"]
+    """torch's promotion of the floating tensors and NumPy arrays among the raw ``values``:
+    the dimensioned ones decide, else the zero-dimensional ones (``torch.ones(3,
+    dtype=float32) * torch.tensor(2.0, dtype=float64)`` is float32); Python numbers and
+    lists are weak, as in torch; none at all: the default dtype."""
+    found = [(v.ndim > 0, _float_dtype(v)) for v, x in zip(values, arrays, strict=True)
+             if isinstance(v, torch.Tensor | np.ndarray) and _float_dtype(x) is not None]
+    found = [d for dim, d in found if dim] or [d for _, d in found]
     if not found:
         return torch.get_default_dtype()
     dt = found[0]
@@ -118,8 +135,7 @@ def _function(space: _arrays.Space, name: str, forward_mode: bool):
     jvp) through the generated Jacobian kernel. Dynamo cannot trace a custom ``jvp``
     ("Unsupported custom jvp"), so compiled code gets the class without it (no forward
     mode under torch.compile)."""
-    meta = space.progs.meta[name]
-    args, outs = meta["args"], meta["outputs"]
+    args = space.progs.meta[name]["args"]
 
     def setup_context(ctx, inputs, output):
         # the singular mask too: the Jacobian takes safe inputs there (_arrays.evaluate)
@@ -132,14 +148,12 @@ def _function(space: _arrays.Space, name: str, forward_mode: bool):
         # plain tensor arithmetic on the saved inputs: differentiable again
         # (create_graph=True, gradgradcheck)
         *xs, sing = ctx.saved_tensors
-        return tuple(_arrays.contract(torch, list(grads[:-1]), space.jacobian(name, xs, sing),
-                                      outs, args, forward=False))
+        return tuple(space.vjp(name, xs, list(grads[:-1]), sing))
 
     def jvp(ctx, *tangents):
         *xs, sing = ctx.saved_tensors
         t = [torch.zeros_like(x) if d is None else d for x, d in zip(xs, tangents, strict=True)]
-        return (*_arrays.contract(torch, t, space.jacobian(name, xs, sing), outs, args,
-                                  forward=True), None)
+        return (*space.jvp(name, xs, t, sing), None)
 
     body = {"generate_vmap_rule": True,
             "forward": staticmethod(_fixed_arity(lambda xs: space.values(name, xs),
@@ -172,7 +186,9 @@ _LIBRARY = _arrays.Library(
     real=lambda v: v.dtype != torch.bool and not v.dtype.is_complex,
     dtype=_dtype, as_array=_as_tensor,
     device=lambda xs: next((x.device for x in xs if isinstance(x, torch.Tensor)), None),
-    host=lambda x: x.cpu().numpy(), make=_make, refuse=_refuse)
+    host=lambda x: x.cpu().numpy(), make=_make, refuse=_refuse, floats=_FLOATS,
+    float32=torch.float32, finfo=torch.finfo, float_dtype=_float_dtype,
+    cast=lambda x, dtype: x.to(dtype))
 
 # load, the Euler-angle kernels, the lazy kernels: the same for both back-ends (_arrays_api)
 load, euler_rate_matrix, euler_angle_rates, __getattr__, __dir__, _space = \

@@ -48,25 +48,8 @@ __all__: list[str] = []
 #: how a --let NAME(t): KIND marks its glyph a function of time (read by d/dt and \\dot)
 TIMED = ", a function of time t"
 _TRANSPOSE = {"T", "\\top", "\\intercal", "\\mathsf{T}", "\\mathrm{T}"}
-_SETS = {"SO(3)": ((3, 3), "rotation"), "SE(3)": ((4, 4), "transform"),
-         "so(3)": ((3, 3), "so(3)"), "se(3)": ((4, 4), "se(3)")}
-
-
-_DECL = re.compile(r"(?:(?:,|\\q?quad)\s*)+(?:\\forall\s*)?([^=,]*?)\s*\\in\s*"
-                   r"(SO\(3\)|SE\(3\)|so\(3\)|se\(3\))\s*[.,]?\s*$")
-
-
-def declared_lets(latex: str, lets: list) -> list:
-    """The ``--let`` a trailing ``, R \\in SO(3)`` (``SE(3)``, ``so(3)``, ``se(3)``) states,
-    when no ``--let`` declares that symbol already (one that does is checked against it by
-    the parse)."""
-    from rigidsym.latex.lets import read_lets
-
-    m = _DECL.search(latex)
-    if not m or not m.group(1).strip():
-        return []
-    new = read_lets([f"{m.group(1).strip()}: {_SETS[m.group(2)][1]}"])
-    return [x for x in new if x.key not in {y.key for y in lets}]
+SETS = {"SO(3)": ((3, 3), "rotation"), "SE(3)": ((4, 4), "transform"),
+        "so(3)": ((3, 3), "so(3)"), "se(3)": ((4, 4), "se(3)")}
 
 
 def sup_word(sup: str) -> str:
@@ -300,7 +283,7 @@ class BookRules:
         m = re.search(r"\\in\s*(SO\(3\)|SE\(3\)|so\(3\)|se\(3\))", token)
         if not m:
             return
-        shape, kind = _SETS[m.group(1)]
+        shape, kind = SETS[m.group(1)]
         names = re.sub(r"\\forall\b|\\in\b.*$", "", token).strip(" ,")
         names = re.sub(r"\\(boldsymbol|bm)\s*\{([A-Za-z])\}", r"\\mathbf{\2}", names)
         for k, g in self.glyphs.items():

@@ -23,7 +23,7 @@ from rigidsym.algebra import symbols as _sym
 from rigidsym.checking.deciding.errors import BadInput
 from rigidsym.checking.deciding.registry import Rel, Statement
 from rigidsym.latex import guards
-from rigidsym.latex.bookrules import declared_lets
+from rigidsym.latex.bookrules import SETS
 from rigidsym.latex.glyphrows import _Reader, _symbol
 from rigidsym.latex.lending import lent
 from rigidsym.latex.lets import KIND_WORDS, Let, kind_of, read_lets
@@ -52,6 +52,22 @@ class Reading:
     text: str
     notes: list[str] = field(default_factory=list)
     free: list[str] = field(default_factory=list)
+
+
+
+_DECL = re.compile(r"(?:(?:,|\\q?quad)\s*)+(?:\\forall\s*)?([^=,]*?)\s*\\in\s*"
+                   r"(SO\(3\)|SE\(3\)|so\(3\)|se\(3\))\s*[.,]?\s*$")
+
+
+def declared_lets(latex: str, lets: list) -> list:
+    """The ``--let`` a trailing ``, R \\in SO(3)`` (``SE(3)``, ``so(3)``, ``se(3)``) states,
+    when no ``--let`` declares that symbol already (one that does is checked against it by
+    the parse)."""
+    m = _DECL.search(latex)
+    if not m or not m.group(1).strip():
+        return []
+    new = read_lets([f"{m.group(1).strip()}: {SETS[m.group(2)][1]}"])
+    return [x for x in new if x.key not in {y.key for y in lets}]
 
 
 def latex_id(latex: str, lets: list[Let], book: str | None, modules,

@@ -1,0 +1,116 @@
+"""The vector-Jacobian product of a kernel's program, by reverse mode (issue 38, item 4).
+
+For a straight-line :class:`~rigidsym.codegen.optimise.Program` (``x_k = e_k(inputs,
+x_<k)``, then ``y_i = o_i(...)``) and one cotangent symbol ``_g{i}`` per output, the adjoint
+of every temp is accumulated in reverse order from the local derivatives of its uses (sympy
+differentiates each small ``e_k`` and ``o_i`` alone, never the whole formula), and the
+program returns the cotangent of every input component: ``sum_i g_i d y_i / d u``. The
+forward's temps are reused (a local derivative that recomputes a temp's own expression,
+``1/(2 sqrt x3)`` where ``x4 = sqrt(x3)``, names the temp instead), and temps no adjoint
+needs are dropped, so the backward costs a small multiple of the forward, whatever the
+number of outputs and inputs: not the whole Jacobian then a product.
+
+The result is plain arithmetic in the inputs and cotangents (a second derivative is autograd
+through it), and it equals the contraction of the kernel's generated Jacobian (derived from
+the declared formula; the programs differ by the half-angle rewrite, an identity): tested
+against ``rigidsym.kernels.jacobian`` (tests/test_torch_kernels.py).
+"""
+
+from __future__ import annotations
+
+import sympy as sp
+
+from rigidsym.codegen.optimise import Program
+
+__all__ = ["vjp_program", "jvp_program", "cotangent_names", "tangent_names"]
+
+
+def cotangent_names(n: int) -> list[str]:
+    """The names of the cotangent arguments of a program with ``n`` outputs."""
+    return [f"_g{i}" for i in range(n)]
+
+
+def tangent_names(n: int) -> list[str]:
+    """The names of the tangent arguments of a program with ``n`` input components."""
+    return [f"_t{i}" for i in range(n)]
+
+
+def jvp_program(program: Program, inputs: list[sp.Symbol]) -> Program:
+    """The forward-mode program of ``program``: arguments ``inputs`` then the tangents
+    ``tangent_names(len(inputs))``; outputs the tangent of each output, linear in the
+    tangents (JAX transposes it for reverse mode). A temp's tangent is the sum of its local
+    derivatives times its arguments' tangents; temps nothing reads are dropped."""
+    tan = dict(zip(inputs, (sp.Symbol(n) for n in tangent_names(len(inputs))), strict=True))
+    known = _named(program.temps)
+    body = []
+
+    def d(expr) -> sp.Expr:
+        terms = [sp.diff(expr, s).xreplace(known) * tan[s]
+                 for s in sorted(expr.free_symbols, key=sp.default_sort_key) if s in tan]
+        return sp.Add(*terms)
+
+    for k, (x, e) in enumerate(program.temps):
+        body.append((x, e))
+        dx = d(e)
+        if dx != 0:
+            tan[x] = sp.Symbol(f"_d{k}")
+            body.append((tan[x], dx))
+    outputs = [d(sp.sympify(o)) for o in program.outputs]
+    need = set().union(*(sp.sympify(v).free_symbols for v in outputs))
+    kept = []
+    for x, e in reversed(body):
+        if x in need:
+            kept.append((x, e))
+            need |= e.free_symbols
+    kept.reverse()
+    ops = sum(int(sp.count_ops(v)) for _, v in kept) + sum(int(sp.count_ops(v))
+                                                           for v in outputs)
+    return Program(temps=kept, outputs=outputs, dens=[], ops=ops)
+
+
+def _named(temps: list) -> dict:
+    """``{expression: temp}`` for the temps whose expression a derivative may recompute (a
+    function call or a non-integer power)."""
+    return {e: s for s, e in temps
+            if isinstance(e, sp.Function) or (isinstance(e, sp.Pow) and not e.exp.is_Integer)}
+
+
+def vjp_program(program: Program, inputs: list[sp.Symbol]) -> Program:
+    """The reverse-mode program of ``program``: arguments ``inputs`` then the cotangents
+    ``cotangent_names(len(program.outputs))``; outputs the cotangent of each input (0 where
+    an input is unused); no denominators (the runtime masks the singular samples first).
+    """
+    gs = [sp.Symbol(n) for n in cotangent_names(len(program.outputs))]
+    temps = list(program.temps)
+    known = _named(temps)
+    adj: dict = {}
+
+    def use(expr, weight) -> None:
+        for s in sorted(expr.free_symbols, key=sp.default_sort_key):
+            d = sp.diff(expr, s).xreplace(known)
+            if d != 0:
+                adj.setdefault(s, []).append(weight * d)
+
+    for g, o in zip(gs, program.outputs, strict=True):
+        use(sp.sympify(o), g)
+    back = []
+    for k, (x, e) in enumerate(reversed(temps)):
+        terms = adj.pop(x, None)
+        if not terms:
+            continue
+        b = sp.Symbol(f"_b{k}")
+        back.append((b, sp.Add(*terms)))
+        use(e, b)
+    outputs = [sp.Add(*adj.get(s, [])) for s in inputs]
+    # only the forward temps an adjoint or an output reads, in their order
+    need = set().union(*(sp.sympify(v).free_symbols for _, v in back),
+                       *(sp.sympify(v).free_symbols for v in outputs))
+    fwd = []
+    for x, e in reversed(temps):
+        if x in need:
+            fwd.append((x, e))
+            need |= e.free_symbols
+    body = fwd[::-1] + back
+    ops = sum(int(sp.count_ops(v)) for _, v in body) + sum(int(sp.count_ops(v))
+                                                           for v in outputs)
+    return Program(temps=body, outputs=outputs, dens=[], ops=ops)
