@@ -6,6 +6,7 @@ settles a conventional shape, the per-book notations."""
 from __future__ import annotations
 
 import pytest
+import sympy as sp
 
 import rigidsym
 from rigidsym.checking.deciding import registry
@@ -53,17 +54,60 @@ def test_the_norm_of_a_unit_vector_is_one(rhs, verdict):
     assert r.verdict == verdict, r.detail
 
 
+NESTED = r"\sqrt{1 + \|x\|} = \|x\|"  # a root of a root: undecided, with its reason
+
+
 def test_the_norm_of_a_rotated_unit_vector_and_of_a_free_vector():
     let = [r"\hat\omega: unit vector; R: rotation"]
     assert rigidsym.check_latex(r"\sqrt{(R\hat\omega)^T R\hat\omega} = 1", let=let).verdict \
         == "verified"
-    # a free vector's norm is no rational function: undecided, never guessed
-    assert rigidsym.check_latex(r"\|x\| = 1", let=["x: vector"]).verdict == "undecided"
+    # a free vector's norm is no rational function: decided through its square, never by
+    # a float (on main: undecided, "irrational root at the sample point"); a nested root is
+    # still beyond that, undecided and saying so
+    r = rigidsym.check_latex(r"\|x\| = 1", let=["x: vector"])
+    assert r.verdict == "does-not-hold" and r.counterexample, r.detail
+    r = rigidsym.check_latex(NESTED, let=["x: vector"])
+    assert r.verdict == "undecided" and "a nested square root" in r.detail, r.detail
+
+
+@pytest.mark.parametrize("latex, let, verdict", [
+    # on main every one of these was undecided ("irrational root at the sample point")
+    (r"\|R x\| = \|x\|", "R: rotation; x: vector", "verified"),
+    (r"\frac{1}{\|R x\|^3} = \frac{1}{\|x\|^3}", "R: rotation; x: vector", "verified"),
+    (r"\|\omega \times p\| = \|p \times \omega\|", r"\omega: vector; p: vector", "verified"),
+    (r"\|R a\| \|b\| = \|a\| \|R b\|", "R: rotation; a: vector; b: vector", "verified"),
+    (r"\|R x\| = \|x\|^2", "R: rotation; x: vector", "does-not-hold"),  # MLS (2.3) slip
+    (r"\|R x\| = \|x\| + 1", "R: rotation; x: vector", "does-not-hold"),
+    (r"\|\omega \times p\| = \|p\|", r"\omega: vector; p: vector", "does-not-hold"),
+    (r"\|a\| + \|b\| = \|a + b\|", "a: vector; b: vector", "does-not-hold"),  # two roots
+    (r"\|a\| \|b\| = a^T b", "a: vector; b: vector", "does-not-hold"),  # three
+    (r"\|x\| = -\|x\|", "x: vector", "does-not-hold"),
+])
+def test_a_norm_is_decided_through_its_square_never_by_a_float(latex, let, verdict):
+    r = rigidsym.check_latex(latex, let=[let], repairs=False)
+    assert r.verdict == verdict, r.detail
+    if verdict == "does-not-hold":  # an exact point, its sides exact (closed forms)
+        ce = r.counterexample
+        assert ce and ce["point"] and sp.sympify(ce["residual"]) != 0, ce
+
+
+def test_a_norm_whose_square_agrees_but_whose_sign_may_not_is_undecided():
+    # sqrt(A) = B with B^2 = A identically: only B's sign is left, never guessed
+    from rigidsym.zero.decide import decide_zero
+
+    x, y = sp.symbols("x y", real=True)
+    r = decide_zero([sp.sqrt(x**2 + y**2) - sp.sqrt((x + y) ** 2 - 2 * x * y)])
+    assert r.zero is True
+    z = sp.Symbol("z")  # sqrt((x^2 + 1) z^2) = z sqrt(x^2 + 1) only for z >= 0 (kept whole)
+    r = decide_zero([sp.sqrt((x**2 + 1) * z**2) - z * sp.sqrt(x**2 + 1)])
+    assert r.zero is None and "the sign is not decided" in r.detail, r
+    r = decide_zero([sp.sqrt(x**2 + y**2) + 1])  # never zero: its norm x^2 + y^2 - 1 is not
+    assert r.zero is False and r.witness
 
 
 def test_an_undecided_verdict_prints_its_reason(capsys):
     # on main the text said "Verdict: undecided" and nothing else about why
-    code, out, _ = _cli(capsys, "--latex", r"\|x\| = 1", "--let", "x: vector")
+    code, out, _ = _cli(capsys, "--latex", NESTED, "--let", "x: vector")
     assert code == 3
     assert "Undecided: printed: irrational root at the sample point" in out
     code, out, _ = _cli(capsys, "--latex", r"\sin x = 2\sin(x/2)\cos(x/2)")
@@ -83,9 +127,9 @@ def test_the_reports_print_the_reason_of_an_undecided_member():
     from rigidsym.report.html import to_html
     from rigidsym.report.markdown import to_markdown
 
-    r = rigidsym.check_latex(r"\|x\| = 1", let=["x: vector"])
+    r = rigidsym.check_latex(NESTED, let=["x: vector"])
     md = to_markdown([r], title="t", source="a test")
-    assert "**undecided**" in md and "(why: irrational root at the sample point)" in md
+    assert "**undecided**" in md and "(why: irrational root at the sample point" in md
     assert "<b>Undecided:</b> printed: irrational root at the sample point" in to_html(
         [r], title="t", source="a test")
 

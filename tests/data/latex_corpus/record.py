@@ -18,14 +18,22 @@ EXIT = {"verified": 0, "definition": 0, "does-not-hold": 1, "undecided": 3, "bad
 
 
 def run(entry: dict) -> dict:
-    """What ``rigidsym check --latex`` answers for one entry: verdict, exit code, message."""
+    """What ``rigidsym check --latex`` answers for one entry: verdict, exit code, message.
+
+    The entry is read with its book's table (``--let`` lines) and, where the package ships
+    one, the book's ``--notation`` (what no ``NAME: KIND`` line can say: Murray-Li-Sastry's
+    ``\\hat\\omega`` a skew matrix, Siciliano's and Spong's ``c_\\vartheta``, ``s_{12}``);
+    the table's lines win over the notation's, as a ``--let`` does."""
     import rigidsym
     from rigidsym.checking.deciding import registry
+    from rigidsym.latex.notations import NOTATIONS
 
     lets = corpus.lets_for(entry["latex"], entry["table"])
+    book = entry["book"]["key"]
     t0 = time.perf_counter()
     try:
-        r = rigidsym.check_latex(entry["latex"], let=lets, repairs=False)
+        r = rigidsym.check_latex(entry["latex"], let=lets, repairs=False,
+                                 notation=book if book in NOTATIONS else None)
         out = {"verdict": r.verdict, "message": (r.detail or r.cause or "")[:300],
                "counterexample": bool(r.counterexample)}
     except ValueError as exc:  # LatexError and BadInput
