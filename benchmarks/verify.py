@@ -1,11 +1,18 @@
-"""Benchmark ``rigidsym verify``: this tree side by side with a baseline commit, in one run.
+"""Benchmark ``rigidsym verify`` and ``rigidsym report``: this tree side by side with a
+baseline commit, in one run.
 
-Measured, each in a fresh process (so imports count, as for a reader):
+Measured, each in a fresh process (so imports count, as for a reader), ``--jobs 2
+--no-repairs`` for verify (issue 39):
 
-- ``cold``: the chapter with an empty verdict cache, ``--jobs 2`` (wall and CPU seconds,
-  the CPU of both workers included);
-- ``warm``: the same again with nothing changed (the verdict cache; "n/a" for a baseline
-  without one);
+- ``text`` cold and warm: the chapter with an empty verdict cache, then the same again with
+  nothing changed ("n/a" warm for a baseline without a cache);
+- ``--json`` cold and warm: the same writing the schema-2 document (the transcription
+  records in it), on a cache of its own;
+- ``report`` cold and warm: ``rigidsym report --out DIR`` (the chapter's three files and the
+  exercises), on a cache of its own;
+  each with its ratio to the text path (cold to cold, warm to warm), and for this tree the
+  work counted (:mod:`rigidsym._work`: declarations built, ids decided, transcriptions
+  checked, exercises solved);
 - ``example``: ``rigidsym verify --module examples/rotation_identities.py``, cold;
 - ``build``: CPU seconds of building the declarations (``registry._build``) per section,
   one process, no checking;
@@ -15,13 +22,13 @@ Measured, each in a fresh process (so imports count, as for a reader):
 
 Usage (from the repository root)::
 
-    python benchmarks/verify.py [--baseline REV] [--repeat N] [--skip cold,warm,...]
+    python benchmarks/verify.py [--baseline REV] [--skip text,json,report,example,...]
 
 ``REV`` defaults to ``HEAD~1`` (a commit after the layout of issue 18). Both trees are laid
 out as one byte-compiled ``rigidsym`` package in a temporary folder (``src/rigidsym`` with
 ``derivations/`` and ``generated/`` inside, as in a wheel) and imported from there; each
 run gets its own empty ``RIGIDSYM_CACHE``. The machine's load average is printed: on a
-shared machine, compare the two columns of one run, not runs.
+shared machine, compare the columns of one run, not runs.
 """
 
 from __future__ import annotations
@@ -127,49 +134,85 @@ def child(code: str, cache: Path, cwd: Path) -> list[str]:
     return line.split(maxsplit=1)[1].split() if not line[3:].startswith("{") else [line[3:]]
 
 
-def verify_run(tree: Path, argv: list[str], cache: Path, cwd: Path) -> tuple[float, float]:
-    wall, cpu, code = child(_VERIFY.format(tree=str(tree), argv=argv), cache, cwd)
+def verify_run(tree: Path, argv: list[str], cache: Path, cwd: Path) -> tuple:
+    """``(wall s, CPU s, work counted or None)`` of ``rigidsym ARGV`` in a fresh process."""
+    counts = cwd / f"work-{time.monotonic_ns()}.json"
+    env_code = _VERIFY.format(tree=str(tree), argv=argv)
+    os.environ["RIGIDSYM_WORK_FILE"] = str(counts)  # read by a tree that counts (issue 39)
+    try:
+        wall, cpu, code = child(env_code, cache, cwd)
+    finally:
+        del os.environ["RIGIDSYM_WORK_FILE"]
     if int(code) != 0:
         raise RuntimeError(f"rigidsym {' '.join(argv)} exited {code}")
-    return float(wall), float(cpu)
+    work = json.loads(counts.read_text()) if counts.exists() else None
+    return float(wall), float(cpu), work
+
+
+#: the side-by-side runs: name -> (cache of its own, arguments); cold then warm on one cache
+_VERIFY_ARGS = ["verify", "--quiet", "--jobs", "2", "--no-repairs"]
+RUNS = {"text": _VERIFY_ARGS, "json": [*_VERIFY_ARGS, "--json", "out.json"],
+        "report": ["report", "--jobs", "2", "--out", "report-out"]}
 
 
 def measure(name: str, tree: Path, has_cache: bool, skip: set, work: Path) -> dict:
     out: dict = {}
-    cache = work / f"cache-{name}-{time.monotonic_ns()}"
-    quiet = ["verify", "--quiet", "--jobs", "2"]
-    if "cold" not in skip:
-        out["cold"] = verify_run(tree, quiet, cache, work)
-        if "warm" not in skip and has_cache:
-            out["warm"] = verify_run(tree, quiet, cache, work)
+    for run, argv in RUNS.items():
+        if run in skip:
+            continue
+        cache = work / f"cache-{name}-{run}-{time.monotonic_ns()}"
+        out[f"{run} cold"] = verify_run(tree, argv, cache, work)
+        if has_cache:
+            out[f"{run} warm"] = verify_run(tree, argv, cache, work)
     if "example" not in skip:
         out["example"] = verify_run(tree, ["verify", "--quiet", "--module", str(EXAMPLE)],
                                     work / f"cache-{name}-ex-{time.monotonic_ns()}", work)
     if "build" not in skip:
+        cache = work / f"cache-{name}-build"
         out["build"] = json.loads(child(_BUILD.format(tree=str(tree)), cache, work)[0])
     return out
 
 
-def _cell(x) -> str:
-    return "n/a" if x is None else f"{x[0]:.1f} s wall, {x[1]:.1f} s CPU"
+def _cell(x, text=None) -> str:
+    if x is None:
+        return "n/a"
+    ratio = f" ({x[0] / text[0]:.2f} ×)" if text else ""
+    return f"{x[0]:.1f} s wall{ratio}, {x[1]:.1f} s CPU"
+
+
+def _work(x) -> str:
+    if not x or not x[2]:
+        return ""
+    return ", ".join(f"{sum(x[2].get(k, {}).values())} {w}" for k, w in
+                     (("build", "built"), ("decide", "decided"),
+                      ("transcribe", "transcribed"), ("solve", "solved")))
 
 
 def report(rows: dict, where: dict | None) -> str:
     names = list(rows)
-    lines = ["| measure | " + " | ".join(names) + " |", "|---|" + "---|" * len(names)]
-    for key, label in (("cold", "chapter, cold, 2 jobs"), ("warm", "chapter, warm"),
-                       ("example", "example module, cold")):
-        lines.append(f"| {label} | " + " | ".join(_cell(rows[n].get(key)) for n in names)
-                     + " |")
+    lines = ["| measure | " + " | ".join(names) + " | work (this tree) |",
+             "|---|" + "---|" * (len(names) + 1)]
+    for run in RUNS:
+        for state in ("cold", "warm"):
+            key = f"{run} {state}"
+            if not any(key in rows[n] for n in names):
+                continue
+            cells = [_cell(rows[n].get(key), None if run == "text" else
+                           rows[n].get(f"text {state}")) for n in names]
+            lines.append(f"| {run}, {state} | " + " | ".join(cells) + " | "
+                         + _work(rows[names[-1]].get(key)) + " |")
+    if any("example" in rows[n] for n in names):
+        lines.append("| example module, cold | " + " | ".join(
+            _cell(rows[n].get("example")) for n in names) + " | |")
     sections = sorted({s for n in names for s in rows[n].get("build", {})})
     for s in sections:
         lines.append(f"| build {s} (CPU s) | " + " | ".join(
             f"{rows[n]['build'][s]:.2f}" if s in rows[n].get("build", {}) else "n/a"
-            for n in names) + " |")
+            for n in names) + " | |")
     if sections:
         lines.append("| build, all (CPU s) | " + " | ".join(
             f"{sum(rows[n]['build'].values()):.2f}" if rows[n].get("build") else "n/a"
-            for n in names) + " |")
+            for n in names) + " | |")
     if where:
         total = where.pop("total")
         lines += ["", "| stage (single job, this tree) | CPU s | share |", "|---|---|---|"]
@@ -185,14 +228,17 @@ def report(rows: dict, where: dict | None) -> str:
 def main(argv: list[str] | None = None) -> int:
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     p.add_argument("--baseline", default="HEAD~1", help="git revision to compare with")
-    p.add_argument("--skip", default="", help="comma-separated: cold,warm,example,build,where")
+    p.add_argument("--skip", default="",
+                   help="comma-separated: text,json,report,example,build,where")
     args = p.parse_args(argv)
     skip = set(filter(None, args.skip.split(",")))
     with tempfile.TemporaryDirectory(prefix="rigidsym-bench-") as tmp:
         work = Path(tmp)
         base = layout(args.baseline, work / "base")
         this = layout(None, work / "this")
-        rows = {f"baseline ({args.baseline})": measure("base", base, False, skip, work),
+        # a baseline before issue 21 has no verdict cache: no warm runs
+        cached = (base / "rigidsym" / "checking" / "verdict_cache.py").exists()
+        rows = {f"baseline ({args.baseline})": measure("base", base, cached, skip, work),
                 "this tree": measure("this", this, True, skip, work)}
         where = None
         if "where" not in skip:

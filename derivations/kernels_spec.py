@@ -370,3 +370,6 @@ KERNELS.append(Kernel(
           "natural_invariants_from_rotation's rule (largest-magnitude component positive)."))
 
 KERNELS += INTERNAL_KERNELS
+
+# issue 38: the Lie-group kernels (derivations/kernels_spec_lie.py) join with
+# `KERNELS += LIE_KERNELS` once generated/ is regenerated with them (see its docstring)

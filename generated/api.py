@@ -89,7 +89,7 @@ def H_matrix(
         e: array-like (..., 3), unit; unit vector along the rotation axis
         phi: array-like (...); rotation angle [rad]
         out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
-        check: validate the inputs (finite, unit e/eta, orthogonal Q) and report a non-finite output (overflow).
+        check: validate the inputs (finite, unit e/eta, orthogonal Q); False skips only that: on valid input the same result, and a NaN or inf input gives NaN in the outputs that depend on it.
         on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
@@ -99,7 +99,7 @@ def H_matrix(
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
         ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
-        NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
+        NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
         Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 2 ulp in float64) over 8 regimes (docs/accuracy.md, kernels.accuracy).
@@ -130,7 +130,7 @@ def H_matrix_dot(
         phi: array-like (...); rotation angle [rad]
         omega: array-like (..., 3); angular velocity [rad/s]
         out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
-        check: validate the inputs (finite, unit e/eta, orthogonal Q) and report a non-finite output (overflow).
+        check: validate the inputs (finite, unit e/eta, orthogonal Q); False skips only that: on valid input the same result, and a NaN or inf input gives NaN in the outputs that depend on it.
         on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
@@ -140,7 +140,7 @@ def H_matrix_dot(
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
         ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
-        NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
+        NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
         Accuracy: error <= 1.12 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 106 ulp in float64) over 9 regimes (docs/accuracy.md, kernels.accuracy).
@@ -169,7 +169,7 @@ def H_tilde(
         e: array-like (..., 3), unit; unit vector along the rotation axis
         phi: array-like (...); rotation angle [rad]
         out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
-        check: validate the inputs (finite, unit e/eta, orthogonal Q) and report a non-finite output (overflow).
+        check: validate the inputs (finite, unit e/eta, orthogonal Q); False skips only that: on valid input the same result, and a NaN or inf input gives NaN in the outputs that depend on it.
         on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
@@ -179,7 +179,7 @@ def H_tilde(
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
         ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
-        NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
+        NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
         Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 2 ulp in float64) over 8 regimes (docs/accuracy.md, kernels.accuracy).
@@ -210,7 +210,7 @@ def H_tilde_dot(
         phi: array-like (...); rotation angle [rad]
         omega: array-like (..., 3); angular velocity [rad/s]
         out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
-        check: validate the inputs (finite, unit e/eta, orthogonal Q) and report a non-finite output (overflow).
+        check: validate the inputs (finite, unit e/eta, orthogonal Q); False skips only that: on valid input the same result, and a NaN or inf input gives NaN in the outputs that depend on it.
         on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
@@ -220,7 +220,7 @@ def H_tilde_dot(
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
         ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
-        NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
+        NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
         Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 82 ulp in float64) over 9 regimes (docs/accuracy.md, kernels.accuracy).
@@ -249,7 +249,7 @@ def L_matrix(
         e: array-like (..., 3), unit; unit vector along the rotation axis
         phi: array-like (...); rotation angle [rad]
         out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
-        check: validate the inputs (finite, unit e/eta, orthogonal Q) and report a non-finite output (overflow).
+        check: validate the inputs (finite, unit e/eta, orthogonal Q); False skips only that: on valid input the same result, and a NaN or inf input gives NaN in the outputs that depend on it.
         on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
@@ -259,7 +259,7 @@ def L_matrix(
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
         ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
-        NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
+        NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
         Accuracy: error <= 1.85 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 431 ulp in float64) over 8 regimes (docs/accuracy.md, kernels.accuracy).
@@ -290,7 +290,7 @@ def L_matrix_dot(
         phi: array-like (...); rotation angle [rad]
         omega: array-like (..., 3); angular velocity [rad/s]
         out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
-        check: validate the inputs (finite, unit e/eta, orthogonal Q) and report a non-finite output (overflow).
+        check: validate the inputs (finite, unit e/eta, orthogonal Q); False skips only that: on valid input the same result, and a NaN or inf input gives NaN in the outputs that depend on it.
         on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
@@ -300,7 +300,7 @@ def L_matrix_dot(
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
         ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
-        NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
+        NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
         Accuracy: error <= 1.31 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 381 ulp in float64) over 9 regimes (docs/accuracy.md, kernels.accuracy).
@@ -329,7 +329,7 @@ def L_tilde(
         e: array-like (..., 3), unit; unit vector along the rotation axis
         phi: array-like (...); rotation angle [rad]
         out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
-        check: validate the inputs (finite, unit e/eta, orthogonal Q) and report a non-finite output (overflow).
+        check: validate the inputs (finite, unit e/eta, orthogonal Q); False skips only that: on valid input the same result, and a NaN or inf input gives NaN in the outputs that depend on it.
         on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
@@ -339,7 +339,7 @@ def L_tilde(
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
         ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
-        NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
+        NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
         SingularConfigurationError: on the singular set (1 + cos(phi) = 0 (phi = pi)), unless on_singular='nan'.
 
     Notes:
@@ -373,7 +373,7 @@ def L_tilde_dot(
         phi: array-like (...); rotation angle [rad]
         omega: array-like (..., 3); angular velocity [rad/s]
         out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
-        check: validate the inputs (finite, unit e/eta, orthogonal Q) and report a non-finite output (overflow).
+        check: validate the inputs (finite, unit e/eta, orthogonal Q); False skips only that: on valid input the same result, and a NaN or inf input gives NaN in the outputs that depend on it.
         on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
@@ -383,7 +383,7 @@ def L_tilde_dot(
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
         ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
-        NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
+        NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
         SingularConfigurationError: on the singular set (1 + cos(phi) = 0 (phi = pi)), unless on_singular='nan'.
 
     Notes:
@@ -415,7 +415,7 @@ def N_matrix(
         e: array-like (..., 3), unit; unit vector along the rotation axis
         phi: array-like (...); rotation angle [rad]
         out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
-        check: validate the inputs (finite, unit e/eta, orthogonal Q) and report a non-finite output (overflow).
+        check: validate the inputs (finite, unit e/eta, orthogonal Q); False skips only that: on valid input the same result, and a NaN or inf input gives NaN in the outputs that depend on it.
         on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
@@ -425,7 +425,7 @@ def N_matrix(
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
         ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
-        NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
+        NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
         SingularConfigurationError: on the singular set (phi = 0 (mod 2 pi): the axis is undefined), unless on_singular='nan'.
 
     Notes:
@@ -459,7 +459,7 @@ def N_matrix_dot(
         phi: array-like (...); rotation angle [rad]
         omega: array-like (..., 3); angular velocity [rad/s]
         out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
-        check: validate the inputs (finite, unit e/eta, orthogonal Q) and report a non-finite output (overflow).
+        check: validate the inputs (finite, unit e/eta, orthogonal Q); False skips only that: on valid input the same result, and a NaN or inf input gives NaN in the outputs that depend on it.
         on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
@@ -469,7 +469,7 @@ def N_matrix_dot(
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
         ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
-        NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
+        NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
         SingularConfigurationError: on the singular set (phi = 0 (mod 2 pi): the axis is undefined), unless on_singular='nan'.
 
     Notes:
@@ -501,7 +501,7 @@ def N_tilde(
         e: array-like (..., 3), unit; unit vector along the rotation axis
         phi: array-like (...); rotation angle [rad]
         out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
-        check: validate the inputs (finite, unit e/eta, orthogonal Q) and report a non-finite output (overflow).
+        check: validate the inputs (finite, unit e/eta, orthogonal Q); False skips only that: on valid input the same result, and a NaN or inf input gives NaN in the outputs that depend on it.
         on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
@@ -511,7 +511,7 @@ def N_tilde(
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
         ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
-        NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
+        NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
         Accuracy: error <= 1.23 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 4 ulp in float64) over 8 regimes (docs/accuracy.md, kernels.accuracy).
@@ -542,7 +542,7 @@ def N_tilde_dot(
         phi: array-like (...); rotation angle [rad]
         omega: array-like (..., 3); angular velocity [rad/s]
         out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
-        check: validate the inputs (finite, unit e/eta, orthogonal Q) and report a non-finite output (overflow).
+        check: validate the inputs (finite, unit e/eta, orthogonal Q); False skips only that: on valid input the same result, and a NaN or inf input gives NaN in the outputs that depend on it.
         on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
@@ -552,7 +552,7 @@ def N_tilde_dot(
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
         ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
-        NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
+        NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
         SingularConfigurationError: on the singular set (phi = 0 (mod 2 pi): the axis, and so its rate, is undefined), unless on_singular='nan'.
 
     Notes:
@@ -588,7 +588,7 @@ def inertia_at_point(
         c: array-like (..., 3); mass centre [m]
         a: array-like (..., 3); point A [m]
         out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
-        check: validate the inputs (finite, unit e/eta, orthogonal Q) and report a non-finite output (overflow).
+        check: validate the inputs (finite, unit e/eta, orthogonal Q); False skips only that: on valid input the same result, and a NaN or inf input gives NaN in the outputs that depend on it.
         on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
@@ -598,7 +598,7 @@ def inertia_at_point(
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
         ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
-        NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
+        NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
         Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 4 ulp in float64) over 2 regimes (docs/accuracy.md, kernels.accuracy).
@@ -631,7 +631,7 @@ def inertia_dyad_at_point(
         c: array-like (..., 3); mass centre [m]
         a: array-like (..., 3); point A [m]
         out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
-        check: validate the inputs (finite, unit e/eta, orthogonal Q) and report a non-finite output (overflow).
+        check: validate the inputs (finite, unit e/eta, orthogonal Q); False skips only that: on valid input the same result, and a NaN or inf input gives NaN in the outputs that depend on it.
         on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
@@ -641,7 +641,7 @@ def inertia_dyad_at_point(
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
         ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
-        NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
+        NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
         Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 3 ulp in float64) over 2 regimes (docs/accuracy.md, kernels.accuracy).
@@ -672,7 +672,7 @@ def instant_screw_axis(
         a: array-like (..., 3); body point A [m]
         a_dot: array-like (..., 3); velocity of A [m/s]
         out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
-        check: validate the inputs (finite, unit e/eta, orthogonal Q) and report a non-finite output (overflow).
+        check: validate the inputs (finite, unit e/eta, orthogonal Q); False skips only that: on valid input the same result, and a NaN or inf input gives NaN in the outputs that depend on it.
         on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
@@ -686,7 +686,7 @@ def instant_screw_axis(
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
         ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
-        NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
+        NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
         SingularConfigurationError: on the singular set (omega = 0 (pure translation)), unless on_singular='nan'.
 
     Notes:
@@ -722,7 +722,7 @@ def kinetic_energy(
         omega: array-like (..., 3); angular velocity [rad/s]
         c_dot: array-like (..., 3); velocity of the mass centre [m/s]
         out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
-        check: validate the inputs (finite, unit e/eta, orthogonal Q) and report a non-finite output (overflow).
+        check: validate the inputs (finite, unit e/eta, orthogonal Q); False skips only that: on valid input the same result, and a NaN or inf input gives NaN in the outputs that depend on it.
         on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
@@ -732,7 +732,7 @@ def kinetic_energy(
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
         ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
-        NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
+        NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
         Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 1 ulp in float64) over 3 regimes (docs/accuracy.md, kernels.accuracy).
@@ -771,7 +771,7 @@ def moving_frame_acceleration(
         rho_dot_M: array-like (..., 3); velocity in M [m/s]
         rho_ddot_M: array-like (..., 3); acceleration in M [m/s^2]
         out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
-        check: validate the inputs (finite, unit e/eta, orthogonal Q) and report a non-finite output (overflow).
+        check: validate the inputs (finite, unit e/eta, orthogonal Q); False skips only that: on valid input the same result, and a NaN or inf input gives NaN in the outputs that depend on it.
         on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
@@ -781,7 +781,7 @@ def moving_frame_acceleration(
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
         ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
-        NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
+        NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
         Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 66 ulp in float64) over 8 regimes (docs/accuracy.md, kernels.accuracy).
@@ -808,7 +808,7 @@ def natural_invariants_from_rotation(
     Args:
         Q: array-like (..., 3, 3), proper orthogonal; rotation matrix (proper orthogonal)
         out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
-        check: validate the inputs (finite, unit e/eta, orthogonal Q) and report a non-finite output (overflow).
+        check: validate the inputs (finite, unit e/eta, orthogonal Q); False skips only that: on valid input the same result, and a NaN or inf input gives NaN in the outputs that depend on it.
         on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
@@ -821,7 +821,7 @@ def natural_invariants_from_rotation(
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
         ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
-        NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
+        NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
         SingularConfigurationError: on the singular set (phi = 0 (Q = 1): the axis e is undefined), unless on_singular='nan'.
 
     Notes:
@@ -861,7 +861,7 @@ def newton_euler_wrench(
         omega_dot: array-like (..., 3); angular acceleration [rad/s^2]
         c_ddot: array-like (..., 3); acceleration of the mass centre [m/s^2]
         out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
-        check: validate the inputs (finite, unit e/eta, orthogonal Q) and report a non-finite output (overflow).
+        check: validate the inputs (finite, unit e/eta, orthogonal Q); False skips only that: on valid input the same result, and a NaN or inf input gives NaN in the outputs that depend on it.
         on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
@@ -871,7 +871,7 @@ def newton_euler_wrench(
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
         ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
-        NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
+        NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
         Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 23 ulp in float64) over 3 regimes (docs/accuracy.md, kernels.accuracy).
@@ -900,7 +900,7 @@ def plucker_from_points(
         p1: array-like (..., 3); first point [m]
         p2: array-like (..., 3); second point [m]
         out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
-        check: validate the inputs (finite, unit e/eta, orthogonal Q) and report a non-finite output (overflow).
+        check: validate the inputs (finite, unit e/eta, orthogonal Q); False skips only that: on valid input the same result, and a NaN or inf input gives NaN in the outputs that depend on it.
         on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
@@ -910,13 +910,13 @@ def plucker_from_points(
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
         ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
-        NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
+        NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
         SingularConfigurationError: on the singular set (p1 = p2), unless on_singular='nan'.
 
     Notes:
         Singular set: p1 = p2.
 
-        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 2.79e+14 ulp in float64) over 3 regimes (docs/accuracy.md, kernels.accuracy); singular when p1 = p2, flagged where ||p2 - p1||^2 == 0 in floating point: p1 == p2; a square underflows to 0 only for ||p2 - p1|| < 1.5e-162 (float64), < 1e-19 (float32 arithmetic), which benchmarks/accuracy.py calls below the smallest useful step.
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 2.8e+13 ulp in float64) over 3 regimes (docs/accuracy.md, kernels.accuracy); singular when p1 = p2, flagged where ||p2 - p1||^2 == 0 in floating point: p1 == p2; a square underflows to 0 only for ||p2 - p1|| < 1.5e-162 (float64), < 1e-19 (float32 arithmetic), which benchmarks/accuracy.py calls below the smallest useful step.
 
         Generated; 22 operations; math hash 37ca360961ff48ba.
     """
@@ -944,7 +944,7 @@ def plucker_transfer(
         a: array-like (..., 3); point A [m]
         b: array-like (..., 3); point B [m]
         out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
-        check: validate the inputs (finite, unit e/eta, orthogonal Q) and report a non-finite output (overflow).
+        check: validate the inputs (finite, unit e/eta, orthogonal Q); False skips only that: on valid input the same result, and a NaN or inf input gives NaN in the outputs that depend on it.
         on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
@@ -954,7 +954,7 @@ def plucker_transfer(
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
         ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
-        NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
+        NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
         Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 10 ulp in float64) over 2 regimes (docs/accuracy.md, kernels.accuracy).
@@ -989,7 +989,7 @@ def point_acceleration(
         p: array-like (..., 3); point P [m]
         a: array-like (..., 3); point A [m]
         out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
-        check: validate the inputs (finite, unit e/eta, orthogonal Q) and report a non-finite output (overflow).
+        check: validate the inputs (finite, unit e/eta, orthogonal Q); False skips only that: on valid input the same result, and a NaN or inf input gives NaN in the outputs that depend on it.
         on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
@@ -999,7 +999,7 @@ def point_acceleration(
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
         ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
-        NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
+        NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
         Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 62 ulp in float64) over 3 regimes (docs/accuracy.md, kernels.accuracy).
@@ -1026,7 +1026,7 @@ def rotation_from_euler_rodrigues(
     Args:
         eta: array-like (..., 4), unit; Euler-Rodrigues parameters [r1, r2, r3, r0]
         out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
-        check: validate the inputs (finite, unit e/eta, orthogonal Q) and report a non-finite output (overflow).
+        check: validate the inputs (finite, unit e/eta, orthogonal Q); False skips only that: on valid input the same result, and a NaN or inf input gives NaN in the outputs that depend on it.
         on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
@@ -1036,7 +1036,7 @@ def rotation_from_euler_rodrigues(
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
         ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
-        NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
+        NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
         Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 140 ulp in float64) over 2 regimes (docs/accuracy.md, kernels.accuracy).
@@ -1065,7 +1065,7 @@ def rotation_from_natural_invariants(
         e: array-like (..., 3), unit; unit vector along the rotation axis
         phi: array-like (...); rotation angle [rad]
         out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
-        check: validate the inputs (finite, unit e/eta, orthogonal Q) and report a non-finite output (overflow).
+        check: validate the inputs (finite, unit e/eta, orthogonal Q); False skips only that: on valid input the same result, and a NaN or inf input gives NaN in the outputs that depend on it.
         on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
@@ -1075,7 +1075,7 @@ def rotation_from_natural_invariants(
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
         ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
-        NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
+        NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
         Accuracy: error <= 1.36 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 451 ulp in float64) over 8 regimes (docs/accuracy.md, kernels.accuracy).
@@ -1108,7 +1108,7 @@ def screw_axis_point(
         a: array-like (..., 3); body point before the displacement [m]
         a_prime: array-like (..., 3); the same point after the displacement [m]
         out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
-        check: validate the inputs (finite, unit e/eta, orthogonal Q) and report a non-finite output (overflow).
+        check: validate the inputs (finite, unit e/eta, orthogonal Q); False skips only that: on valid input the same result, and a NaN or inf input gives NaN in the outputs that depend on it.
         on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
@@ -1118,7 +1118,7 @@ def screw_axis_point(
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
         ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
-        NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
+        NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
         SingularConfigurationError: on the singular set (phi = 0 (pure translation)), unless on_singular='nan'.
 
     Notes:
@@ -1152,7 +1152,7 @@ def screw_of_displacement(
         a: array-like (..., 3); body point before the displacement [m]
         a_prime: array-like (..., 3); the same point after the displacement [m]
         out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
-        check: validate the inputs (finite, unit e/eta, orthogonal Q) and report a non-finite output (overflow).
+        check: validate the inputs (finite, unit e/eta, orthogonal Q); False skips only that: on valid input the same result, and a NaN or inf input gives NaN in the outputs that depend on it.
         on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
@@ -1168,7 +1168,7 @@ def screw_of_displacement(
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
         ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
-        NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
+        NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
         SingularConfigurationError: on the singular set (phi = 0 (pure translation: no axis, infinite pitch)), unless on_singular='nan'.
 
     Notes:
@@ -1204,7 +1204,7 @@ def twist_transfer(
         a: array-like (..., 3); point A [m]
         p: array-like (..., 3); point P [m]
         out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
-        check: validate the inputs (finite, unit e/eta, orthogonal Q) and report a non-finite output (overflow).
+        check: validate the inputs (finite, unit e/eta, orthogonal Q); False skips only that: on valid input the same result, and a NaN or inf input gives NaN in the outputs that depend on it.
         on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
@@ -1214,7 +1214,7 @@ def twist_transfer(
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
         ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
-        NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
+        NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
         Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 6 ulp in float64) over 3 regimes (docs/accuracy.md, kernels.accuracy).
@@ -1243,7 +1243,7 @@ def twist_transfer_matrix(
         a: array-like (..., 3); point A [m]
         p: array-like (..., 3); point P [m]
         out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
-        check: validate the inputs (finite, unit e/eta, orthogonal Q) and report a non-finite output (overflow).
+        check: validate the inputs (finite, unit e/eta, orthogonal Q); False skips only that: on valid input the same result, and a NaN or inf input gives NaN in the outputs that depend on it.
         on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
@@ -1253,7 +1253,7 @@ def twist_transfer_matrix(
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
         ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
-        NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
+        NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
         Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 1 ulp in float64) over 2 regimes (docs/accuracy.md, kernels.accuracy).
@@ -1282,7 +1282,7 @@ def wrench_axis(
         w_A: array-like (..., 6); wrench [n_A; f] at A [N m; N]
         a: array-like (..., 3); point A [m]
         out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
-        check: validate the inputs (finite, unit e/eta, orthogonal Q) and report a non-finite output (overflow).
+        check: validate the inputs (finite, unit e/eta, orthogonal Q); False skips only that: on valid input the same result, and a NaN or inf input gives NaN in the outputs that depend on it.
         on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
@@ -1296,7 +1296,7 @@ def wrench_axis(
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
         ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
-        NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
+        NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
         SingularConfigurationError: on the singular set (f = 0 (pure moment)), unless on_singular='nan'.
 
     Notes:
@@ -1330,7 +1330,7 @@ def wrench_transfer(
         a: array-like (..., 3); point A [m]
         p: array-like (..., 3); point P [m]
         out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
-        check: validate the inputs (finite, unit e/eta, orthogonal Q) and report a non-finite output (overflow).
+        check: validate the inputs (finite, unit e/eta, orthogonal Q); False skips only that: on valid input the same result, and a NaN or inf input gives NaN in the outputs that depend on it.
         on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
@@ -1340,7 +1340,7 @@ def wrench_transfer(
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
         ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
-        NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
+        NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
         Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 5 ulp in float64) over 3 regimes (docs/accuracy.md, kernels.accuracy).
@@ -1369,7 +1369,7 @@ def wrench_transfer_matrix(
         a: array-like (..., 3); point A [m]
         p: array-like (..., 3); point P [m]
         out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
-        check: validate the inputs (finite, unit e/eta, orthogonal Q) and report a non-finite output (overflow).
+        check: validate the inputs (finite, unit e/eta, orthogonal Q); False skips only that: on valid input the same result, and a NaN or inf input gives NaN in the outputs that depend on it.
         on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
         threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
 
@@ -1379,7 +1379,7 @@ def wrench_transfer_matrix(
     Raises:
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
         ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
-        NonFiniteResultError: finite inputs overflowed into a non-finite output (with check=True), unless on_singular='nan'.
+        NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
         Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 1 ulp in float64) over 2 regimes (docs/accuracy.md, kernels.accuracy).

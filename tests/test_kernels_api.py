@@ -121,13 +121,15 @@ def test_fallback_warns_once(monkeypatch):
 
 # (name, argument scaled, scale): finite inputs whose output overflows, one per batch-loop
 # shape of the C template: plain loop (no singular set), counting loop, blocked sin/cos loop
-OVERFLOW = [("kinetic_energy", "omega", 1e200), ("plucker_from_points", "p1", 1e308),
+# (issue 37: plucker_from_points at p1 = 1e308 [1, 0, 0] was here, but its moment is
+# |p1| sin(angle) / ... = 1 there: the overflow was spurious, and the rescue now returns it;
+# a Plücker array never overflows. instant_screw_axis's pitch and p0 do: 2.5e309)
+OVERFLOW = [("kinetic_energy", "omega", 1e200), ("instant_screw_axis", "a_dot", 1e308),
             ("N_matrix_dot", "omega", 1e307)]
 _ARGS = {"kinetic_energy": dict(I_C=np.diag([1.0, 2.0, 3.0]), m=2.0, omega=[1.0, 2.0, 3.0],
                                 c_dot=[0.5, 0.0, 1.0]),
-         # (p2 = [-0.9e308, 1, 0] gave e = 0 in every row: |p2 - p1|^2 overflowed and
-         # 1/sqrt(inf) is 0; since issue 19 that raises, so the unscaled rows are moderate)
-         "plucker_from_points": dict(p1=[1.0, 0.0, 0.0], p2=[-0.9, 1.0, 0.0]),
+         "instant_screw_axis": dict(omega=[0.01, 0.02, 0.03], a=[1.0, 0.0, 0.0],
+                                    a_dot=[0.5, 0.0, 1.0]),
          "N_matrix_dot": dict(e=E, phi=0.3, omega=[1.0, 2.0, -1.0])}
 
 
@@ -145,11 +147,17 @@ def test_overflow_is_reported(name, arg, scale):
     assert isinstance(info.value, K.SingularConfigurationError)
     assert info.value.indices == [(1,), (3,)] and info.value.argument == arg
     assert f"'{arg}'" in str(info.value)
-    res = getattr(K, name)(**kw_big, on_singular="nan")
-    res = np.asarray(res).reshape(4, -1)
+    res = _rows(getattr(K, name)(**kw_big, on_singular="nan"), 4)
+    # NaN in the rows whose result overflows, every output of them
     assert np.isnan(res[[1, 3]]).all() and np.isfinite(res[[0, 2]]).all()
-    one = getattr(K, name)(**kw)
-    np.testing.assert_array_equal(res[0], np.asarray(one).ravel())
+    one = _rows(getattr(K, name)(**kw), 1)
+    np.testing.assert_array_equal(res[0], one[0])
+
+
+def _rows(res, n):
+    """The outputs of a call, one row per sample."""
+    return np.concatenate([np.asarray(r).reshape(n, -1)
+                           for r in (res if isinstance(res, tuple) else (res,))], axis=1)
 
 
 @pytest.mark.parametrize("name,arg,scale", OVERFLOW)

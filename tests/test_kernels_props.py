@@ -278,3 +278,54 @@ def test_common_keywords_validated(threads, exc):
         K.twist_transfer(np.zeros(6), [0, 0, 0], [1, 2, 3], check="yes")
     with pytest.raises(ValueError, match="^on_singular:"):
         K.twist_transfer(np.zeros(6), [0, 0, 0], [1, 2, 3], on_singular="ignore")
+
+
+#: the public callables of rigidsym.kernels other than the kernels (issue 37 item 7): a
+#: wrong type, shape or dtype is a TypeError/ValueError whose message starts with the
+#: argument's name. Old main: accuracy(True) was a KeyError, accuracy([..]) and
+#: accuracy(np.array(..)) "TypeError: unhashable type", use_backend(1) and jacobian(3) a
+#: ValueError, batch_function(True) a KeyError, batch_function(.., dtype=int) ran,
+#: swap_blocks(x, matrix="yes") ran, load(3) an AttributeError
+HELPER_CASES = [
+    (lambda: K.accuracy(True), TypeError, "name"),
+    (lambda: K.accuracy(["N_matrix"]), TypeError, "name"),
+    (lambda: K.accuracy(np.array(["N_matrix"])), TypeError, "name"),
+    (lambda: K.accuracy(None), TypeError, "name"),
+    (lambda: K.use_backend(1), TypeError, "name"),
+    (lambda: K.use_backend("fortran"), ValueError, "backend"),
+    (lambda: K.jacobian(3), TypeError, "name"),
+    (lambda: K.jacobian("no_such"), ValueError, "name"),
+    (lambda: K.batch_function(True), TypeError, "name"),
+    (lambda: K.batch_function("N_matrix", "gpu"), ValueError, "backend_name"),
+    (lambda: K.batch_function("N_matrix", "numpy", threads=0), ValueError, "threads"),
+    (lambda: K.batch_function("N_matrix", "numpy", threads=1.5), TypeError, "threads"),
+    (lambda: K.batch_function("N_matrix", "numpy", dtype=np.int64), ValueError, "dtype"),
+    (lambda: K.batch_function("N_matrix", "numpy", dtype="nonsense"), TypeError, "dtype"),
+    (lambda: K.swap_blocks(np.zeros(6), matrix="yes"), TypeError, "matrix"),
+    (lambda: K.swap_blocks(np.zeros(5)), ValueError, "x"),
+    (lambda: K.swap_blocks("abcdef"), TypeError, "x"),
+    (lambda: K.load(3), TypeError, "directory"),
+    (lambda: K.build_info(3.5), TypeError, "directory"),
+    (lambda: K.set_num_threads("2"), TypeError, "n"),
+    (lambda: K.set_num_threads(0), ValueError, "n"),
+    (lambda: K.euler_rate_matrix([0.1, 0.2], "ZYX"), ValueError, "angles"),
+    (lambda: K.euler_rate_matrix([0.1, 0.2, 0.3], "ZYX", frame=3), ValueError, "frame"),
+    (lambda: K.euler_angle_rates([0.1, 0.2, 0.3], "abc", "ZYX"), TypeError, "omega"),
+]
+
+
+@pytest.mark.parametrize("case", range(len(HELPER_CASES)))
+def test_bad_input_helpers(case):
+    call, exc, arg = HELPER_CASES[case]
+    with pytest.raises(exc) as info:
+        call()
+    assert type(info.value) is exc
+    assert str(info.value).strip("'\"").split(":")[0] == arg, str(info.value)
+
+
+def test_unknown_kernel_name_lists_close_names():
+    """An unknown name keeps its documented KeyError, now naming the close names."""
+    with pytest.raises(KeyError, match="N_matrix"):
+        K.accuracy("N_matrx")
+    with pytest.raises(KeyError, match="plucker_from_points"):
+        K.batch_function("plucker_from_point")

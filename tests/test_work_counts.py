@@ -110,3 +110,46 @@ def test_json_after_text_builds_only_for_the_transcriptions(modules):
     assert first["decide"] == {}
     assert first["build"] == {i: 1 for i in OTH_IDS | {"rot:trace-tex"}}
     assert verify(modules, "--format", "json")["build"] == {}
+
+
+def test_an_exercise_on_the_book_s_data_is_solved_once_then_read_back(tmp_path, monkeypatch):
+    """The report's exercises are read back, not solved again (main: solved every time a
+    process asks)."""
+    from rigidsym import _work
+    from rigidsym.checking import worked
+
+    monkeypatch.setenv("RIGIDSYM_CACHE", str(tmp_path))
+    monkeypatch.setattr(worked, "_CACHE", type(worked._CACHE)())  # as a fresh process
+    before = _work.snapshot()
+    first = worked.solve("ex3.4")
+    assert _work.since(before, "solve") == {"ex3.4": 1}
+    monkeypatch.setattr(worked, "_CACHE", type(worked._CACHE)())
+    again = worked.solve("ex3.4")
+    assert _work.since(before, "solve") == {"ex3.4": 1}
+    assert worked.render_markdown(again) == worked.render_markdown(first)
+    assert again.checked and again.answers.keys() == first.answers.keys()
+    # a student's data: solved, never kept on disk (an exam's variants would pile up)
+    worked.solve("ex3.4", f_1=[1, 2, 0])
+    monkeypatch.setattr(worked, "_CACHE", type(worked._CACHE)())
+    worked.solve("ex3.4", f_1=[1, 2, 0])
+    assert _work.since(before, "solve") == {"ex3.4": 3}
+
+
+@pytest.mark.slow
+def test_the_chapter_counts_verify_json_and_report_warm_do_no_work(tmp_path):
+    """The whole chapter: verify --json builds each declaration at most once cold and none
+    warm; a warm report builds, decides and solves nothing, and writes the same files."""
+    common = ("verify", "--jobs", "2", "--no-repairs", "--quiet")
+    cold = run(tmp_path, *common, "--json", "cold.json")
+    assert max(cold["build"].values()) == 1, cold["build"]
+    warm = run(tmp_path, *common, "--json", "warm.json")
+    assert warm["build"] == {} and warm["decide"] == {} and warm["transcribe"] == {}
+    assert lean(tmp_path / "warm.json") == lean(tmp_path / "cold.json")
+    first = run(tmp_path, "report", "--jobs", "2", "--out", "r1")
+    assert max(first["build"].values()) == 1 and first["transcribe"] == {}
+    second = run(tmp_path, "report", "--jobs", "2", "--out", "r2")
+    assert all(second[k] == {} for k in ("build", "decide", "transcribe", "solve")), second
+    names = sorted(p.name for p in (tmp_path / "r1").iterdir())
+    assert names == sorted(p.name for p in (tmp_path / "r2").iterdir())
+    for name in names:
+        assert (tmp_path / "r1" / name).read_bytes() == (tmp_path / "r2" / name).read_bytes()

@@ -22,7 +22,10 @@
 /* The first nl samples (a multiple of RIGIDSYM_LANES, at most a block), of which the first m
  * count: RIGIDSYM_LANES at a time through the lanes function, then one finiteness test over
  * the first m samples' outputs (still in cache): finite inputs can overflow into a non-finite
- * output, flagged as a singular sample is. When something is flagged, each sample's flag is
+ * output, flagged as a singular sample is, and one range test over its inputs (a sample
+ * with an input of extreme magnitude, whose intermediates could overflow or underflow, or a
+ * non-finite input, is flagged: the Python path re-runs it in a wider type, issue 37).
+ * When something is flagged, each sample's flag is
  * recomputed from that sample alone (its own flag and its own output row) and its row
  * written as NaN. Returns the number of flagged samples among the first m. */
 
@@ -137,6 +140,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_euler_rate_matrix_zxy_fixed_with_jacob
     }
     any |= rigidsym_any_nonfinite(out_W, 9 * m);
     any |= rigidsym_any_nonfinite(out_W_D_angles, 27 * m);
+    any |= rigidsym_any_extreme(in_angles, 3 * m);
     if (any == 0)
         return 0;
     int64_t count = 0;
@@ -144,6 +148,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_euler_rate_matrix_zxy_fixed_with_jacob
         int flagged = (int)((mask[j / RIGIDSYM_LANES_TRIG] >> (j % RIGIDSYM_LANES_TRIG)) & 1);
         flagged |= rigidsym_any_nonfinite(out_W + 9 * j, 9);
         flagged |= rigidsym_any_nonfinite(out_W_D_angles + 27 * j, 27);
+        flagged |= rigidsym_any_extreme(in_angles + 3 * j, 3);
         if (flagged) {
             ++count;
             for (int c = 0; c < 9; ++c)
@@ -174,6 +179,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_euler_rate_matrix_zxy_fixed_with_jacob
     }
     any |= rigidsym_any_nonfinite_f32(out_W, 9 * m);
     any |= rigidsym_any_nonfinite_f32(out_W_D_angles, 27 * m);
+    any |= rigidsym_any_extreme_f32(in_angles, 3 * m);
     if (any == 0)
         return 0;
     int64_t count = 0;
@@ -181,6 +187,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_euler_rate_matrix_zxy_fixed_with_jacob
         int flagged = (int)((mask[j / RIGIDSYM_LANES_F32] >> (j % RIGIDSYM_LANES_F32)) & 1);
         flagged |= rigidsym_any_nonfinite_f32(out_W + 9 * j, 9);
         flagged |= rigidsym_any_nonfinite_f32(out_W_D_angles + 27 * j, 27);
+        flagged |= rigidsym_any_extreme_f32(in_angles + 3 * j, 3);
         if (flagged) {
             ++count;
             for (int c = 0; c < 9; ++c)

@@ -21,7 +21,10 @@
 /* The first nl samples (a multiple of RIGIDSYM_LANES, at most a block), of which the first m
  * count: RIGIDSYM_LANES at a time through the lanes function, then one finiteness test over
  * the first m samples' outputs (still in cache): finite inputs can overflow into a non-finite
- * output, flagged as a singular sample is. When something is flagged, each sample's flag is
+ * output, flagged as a singular sample is, and one range test over its inputs (a sample
+ * with an input of extreme magnitude, whose intermediates could overflow or underflow, or a
+ * non-finite input, is flagged: the Python path re-runs it in a wider type, issue 37).
+ * When something is flagged, each sample's flag is
  * recomputed from that sample alone (its own flag and its own output row) and its row
  * written as NaN. Returns the number of flagged samples among the first m. */
 
@@ -146,6 +149,11 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_newton_euler_wrench_with_jacobians_blo
     any |= rigidsym_any_nonfinite(out_w_D_omega, 18 * m);
     any |= rigidsym_any_nonfinite(out_w_D_omega_dot, 18 * m);
     any |= rigidsym_any_nonfinite(out_w_D_c_ddot, 18 * m);
+    any |= rigidsym_any_extreme(in_I_C, 9 * m);
+    any |= rigidsym_any_extreme(in_m, 1 * m);
+    any |= rigidsym_any_extreme(in_omega, 3 * m);
+    any |= rigidsym_any_extreme(in_omega_dot, 3 * m);
+    any |= rigidsym_any_extreme(in_c_ddot, 3 * m);
     if (any == 0)
         return 0;
     int64_t count = 0;
@@ -157,6 +165,11 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_newton_euler_wrench_with_jacobians_blo
         flagged |= rigidsym_any_nonfinite(out_w_D_omega + 18 * j, 18);
         flagged |= rigidsym_any_nonfinite(out_w_D_omega_dot + 18 * j, 18);
         flagged |= rigidsym_any_nonfinite(out_w_D_c_ddot + 18 * j, 18);
+        flagged |= rigidsym_any_extreme(in_I_C + 9 * j, 9);
+        flagged |= rigidsym_any_extreme(in_m + 1 * j, 1);
+        flagged |= rigidsym_any_extreme(in_omega + 3 * j, 3);
+        flagged |= rigidsym_any_extreme(in_omega_dot + 3 * j, 3);
+        flagged |= rigidsym_any_extreme(in_c_ddot + 3 * j, 3);
         if (flagged) {
             ++count;
             for (int c = 0; c < 6; ++c)
@@ -215,6 +228,11 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_newton_euler_wrench_with_jacobians_blo
     any |= rigidsym_any_nonfinite_f32(out_w_D_omega, 18 * m);
     any |= rigidsym_any_nonfinite_f32(out_w_D_omega_dot, 18 * m);
     any |= rigidsym_any_nonfinite_f32(out_w_D_c_ddot, 18 * m);
+    any |= rigidsym_any_extreme_f32(in_I_C, 9 * m);
+    any |= rigidsym_any_extreme_f32(in_m, 1 * m);
+    any |= rigidsym_any_extreme_f32(in_omega, 3 * m);
+    any |= rigidsym_any_extreme_f32(in_omega_dot, 3 * m);
+    any |= rigidsym_any_extreme_f32(in_c_ddot, 3 * m);
     if (any == 0)
         return 0;
     int64_t count = 0;
@@ -226,6 +244,11 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_newton_euler_wrench_with_jacobians_blo
         flagged |= rigidsym_any_nonfinite_f32(out_w_D_omega + 18 * j, 18);
         flagged |= rigidsym_any_nonfinite_f32(out_w_D_omega_dot + 18 * j, 18);
         flagged |= rigidsym_any_nonfinite_f32(out_w_D_c_ddot + 18 * j, 18);
+        flagged |= rigidsym_any_extreme_f32(in_I_C + 9 * j, 9);
+        flagged |= rigidsym_any_extreme_f32(in_m + 1 * j, 1);
+        flagged |= rigidsym_any_extreme_f32(in_omega + 3 * j, 3);
+        flagged |= rigidsym_any_extreme_f32(in_omega_dot + 3 * j, 3);
+        flagged |= rigidsym_any_extreme_f32(in_c_ddot + 3 * j, 3);
         if (flagged) {
             ++count;
             for (int c = 0; c < 6; ++c)

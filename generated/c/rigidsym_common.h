@@ -122,6 +122,41 @@ static inline int rigidsym_any_nonfinite_f32(const float *RIGIDSYM_RESTRICT p, i
     return (int)(acc >> 31);
 }
 
+/* Nonzero when one of the len doubles at p is non-finite or nonzero of magnitude outside
+ * [2^-100, 2^101) (issue 37): there a kernel's intermediates (products of up to ten inputs)
+ * could overflow or underflow, so the sample is flagged and re-run in a wider type (the
+ * rescue of rigidsym.kernels._core). Branch- and compare-free integer arithmetic on the bits
+ * (a = |x|'s bits, d = a - 2^-100's bits): d and d - range have different signs exactly
+ * inside the range; a + (2^63 - 1) has its sign bit set exactly when x != 0. Every step is
+ * a 64-bit add, sub, xor or and, so the OR reduction vectorises as the test above does. */
+static inline int rigidsym_any_extreme(const double *RIGIDSYM_RESTRICT p, int64_t len)
+{
+    uint64_t acc = 0;
+    for (int64_t j = 0; j < len; ++j) {
+        uint64_t b;
+        memcpy(&b, p + j, sizeof b);
+        const uint64_t a = b & 0x7fffffffffffffffULL;
+        const uint64_t d = a - (923ULL << 52);
+        acc |= ~(d ^ (d - (201ULL << 52))) & (a + 0x7fffffffffffffffULL);
+    }
+    return (int)(acc >> 63);
+}
+
+/* The same for float32 values, range [2^-30, 2^31): the float arithmetic of a precision
+ * plan squares and cubes (float overflows at 2^128). */
+static inline int rigidsym_any_extreme_f32(const float *RIGIDSYM_RESTRICT p, int64_t len)
+{
+    uint32_t acc = 0;
+    for (int64_t j = 0; j < len; ++j) {
+        uint32_t b;
+        memcpy(&b, p + j, sizeof b);
+        const uint32_t a = b & 0x7fffffffU;
+        const uint32_t d = a - (97U << 23);
+        acc |= ~(d ^ (d - (61U << 23))) & (a + 0x7fffffffU);
+    }
+    return (int)(acc >> 31);
+}
+
 /* a b - c d compensated (Kahan's algorithm, rigidsym.codegen.compensated): within 2 u of the
  * exact value however much the products cancel. w is used by both fma calls, so FMA
  * contraction (-ffp-contract=fast) cannot fuse it away; fma is an instruction on x86-64-v3

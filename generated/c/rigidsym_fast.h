@@ -1616,10 +1616,8 @@ static PyObject *rigidsym_run(int k, PyObject *const *args, PyObject *const *kw)
     PyObject *out = kw[0], *check = kw[1], *on_singular = kw[2], *threads = kw[3];
     if (!rigidsym_enabled || (check != Py_True && check != Py_False))
         return rigidsym_slow(k, args, nin, kw);
-    int nan_rows = 0;
-    if (on_singular == rigidsym_s_nan)
-        nan_rows = 1;
-    else if (on_singular != Py_None && on_singular != rigidsym_s_raise)
+    const int nan_rows = on_singular == rigidsym_s_nan;
+    if (!nan_rows && on_singular != Py_None && on_singular != rigidsym_s_raise)
         return rigidsym_slow(k, args, nin, kw);
     long nthreads = 0;
     if (threads != Py_None) {
@@ -1796,8 +1794,16 @@ static PyObject *rigidsym_run(int k, PyObject *const *args, PyObject *const *kw)
             flagged = K->call(fn, f32, (int64_t)n, t, ptrs);
         }
     }
-    if (flagged && !nan_rows) {
-        /* singular or overflowed samples to report: the Python path classifies them */
+    /* with on_singular="nan" the NaN rows stand when every input is of ordinary magnitude
+     * (then a flag is a singular sample or an overflow of the exact result); samples with
+     * an extreme or non-finite input are re-run in a wider type by the Python path */
+    int rerun = flagged && !nan_rows;
+    for (int i = 0; flagged && !rerun && i < nin; ++i)
+        rerun = f32 ? rigidsym_any_extreme_f32((const float *)ptrs[i], (int64_t)n * E->in[i].size)
+                    : rigidsym_any_extreme((const double *)ptrs[i], (int64_t)n * E->in[i].size);
+    if (rerun) {
+        /* singular or overflowed samples to report, or samples to re-run in a wider type
+         * (an input of extreme magnitude, issue 37): the Python path classifies them */
         fallback = 1;
         goto done;
     }

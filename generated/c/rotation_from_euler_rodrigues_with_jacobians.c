@@ -21,7 +21,10 @@
 /* The first nl samples (a multiple of RIGIDSYM_LANES, at most a block), of which the first m
  * count: RIGIDSYM_LANES at a time through the lanes function, then one finiteness test over
  * the first m samples' outputs (still in cache): finite inputs can overflow into a non-finite
- * output, flagged as a singular sample is. When something is flagged, each sample's flag is
+ * output, flagged as a singular sample is, and one range test over its inputs (a sample
+ * with an input of extreme magnitude, whose intermediates could overflow or underflow, or a
+ * non-finite input, is flagged: the Python path re-runs it in a wider type, issue 37).
+ * When something is flagged, each sample's flag is
  * recomputed from that sample alone (its own flag and its own output row) and its row
  * written as NaN. Returns the number of flagged samples among the first m. */
 
@@ -94,6 +97,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_rotation_from_euler_rodrigues_with_jac
     }
     any |= rigidsym_any_nonfinite(out_Q, 9 * m);
     any |= rigidsym_any_nonfinite(out_Q_D_eta, 36 * m);
+    any |= rigidsym_any_extreme(in_eta, 4 * m);
     if (any == 0)
         return 0;
     int64_t count = 0;
@@ -101,6 +105,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_rotation_from_euler_rodrigues_with_jac
         int flagged = (int)((mask[j / RIGIDSYM_LANES] >> (j % RIGIDSYM_LANES)) & 1);
         flagged |= rigidsym_any_nonfinite(out_Q + 9 * j, 9);
         flagged |= rigidsym_any_nonfinite(out_Q_D_eta + 36 * j, 36);
+        flagged |= rigidsym_any_extreme(in_eta + 4 * j, 4);
         if (flagged) {
             ++count;
             for (int c = 0; c < 9; ++c)
@@ -131,6 +136,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_rotation_from_euler_rodrigues_with_jac
     }
     any |= rigidsym_any_nonfinite_f32(out_Q, 9 * m);
     any |= rigidsym_any_nonfinite_f32(out_Q_D_eta, 36 * m);
+    any |= rigidsym_any_extreme_f32(in_eta, 4 * m);
     if (any == 0)
         return 0;
     int64_t count = 0;
@@ -138,6 +144,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_rotation_from_euler_rodrigues_with_jac
         int flagged = (int)((mask[j / RIGIDSYM_LANES_F32] >> (j % RIGIDSYM_LANES_F32)) & 1);
         flagged |= rigidsym_any_nonfinite_f32(out_Q + 9 * j, 9);
         flagged |= rigidsym_any_nonfinite_f32(out_Q_D_eta + 36 * j, 36);
+        flagged |= rigidsym_any_extreme_f32(in_eta + 4 * j, 4);
         if (flagged) {
             ++count;
             for (int c = 0; c < 9; ++c)

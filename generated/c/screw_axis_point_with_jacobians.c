@@ -22,7 +22,10 @@
 /* The first nl samples (a multiple of RIGIDSYM_LANES, at most a block), of which the first m
  * count: RIGIDSYM_LANES at a time through the lanes function, then one finiteness test over
  * the first m samples' outputs (still in cache): finite inputs can overflow into a non-finite
- * output, flagged as a singular sample is. When something is flagged, each sample's flag is
+ * output, flagged as a singular sample is, and one range test over its inputs (a sample
+ * with an input of extreme magnitude, whose intermediates could overflow or underflow, or a
+ * non-finite input, is flagged: the Python path re-runs it in a wider type, issue 37).
+ * When something is flagged, each sample's flag is
  * recomputed from that sample alone (its own flag and its own output row) and its row
  * written as NaN. Returns the number of flagged samples among the first m. */
 
@@ -160,6 +163,10 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_screw_axis_point_with_jacobians_block(
     any |= rigidsym_any_nonfinite(out_p0_D_phi, 3 * m);
     any |= rigidsym_any_nonfinite(out_p0_D_a, 9 * m);
     any |= rigidsym_any_nonfinite(out_p0_D_a_prime, 9 * m);
+    any |= rigidsym_any_extreme(in_e, 3 * m);
+    any |= rigidsym_any_extreme(in_phi, 1 * m);
+    any |= rigidsym_any_extreme(in_a, 3 * m);
+    any |= rigidsym_any_extreme(in_a_prime, 3 * m);
     if (any == 0)
         return 0;
     int64_t count = 0;
@@ -170,6 +177,10 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_screw_axis_point_with_jacobians_block(
         flagged |= rigidsym_any_nonfinite(out_p0_D_phi + 3 * j, 3);
         flagged |= rigidsym_any_nonfinite(out_p0_D_a + 9 * j, 9);
         flagged |= rigidsym_any_nonfinite(out_p0_D_a_prime + 9 * j, 9);
+        flagged |= rigidsym_any_extreme(in_e + 3 * j, 3);
+        flagged |= rigidsym_any_extreme(in_phi + 1 * j, 1);
+        flagged |= rigidsym_any_extreme(in_a + 3 * j, 3);
+        flagged |= rigidsym_any_extreme(in_a_prime + 3 * j, 3);
         if (flagged) {
             ++count;
             for (int c = 0; c < 3; ++c)
@@ -221,6 +232,10 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_screw_axis_point_with_jacobians_block_
     any |= rigidsym_any_nonfinite_f32(out_p0_D_phi, 3 * m);
     any |= rigidsym_any_nonfinite_f32(out_p0_D_a, 9 * m);
     any |= rigidsym_any_nonfinite_f32(out_p0_D_a_prime, 9 * m);
+    any |= rigidsym_any_extreme_f32(in_e, 3 * m);
+    any |= rigidsym_any_extreme_f32(in_phi, 1 * m);
+    any |= rigidsym_any_extreme_f32(in_a, 3 * m);
+    any |= rigidsym_any_extreme_f32(in_a_prime, 3 * m);
     if (any == 0)
         return 0;
     int64_t count = 0;
@@ -231,6 +246,10 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_screw_axis_point_with_jacobians_block_
         flagged |= rigidsym_any_nonfinite_f32(out_p0_D_phi + 3 * j, 3);
         flagged |= rigidsym_any_nonfinite_f32(out_p0_D_a + 9 * j, 9);
         flagged |= rigidsym_any_nonfinite_f32(out_p0_D_a_prime + 9 * j, 9);
+        flagged |= rigidsym_any_extreme_f32(in_e + 3 * j, 3);
+        flagged |= rigidsym_any_extreme_f32(in_phi + 1 * j, 1);
+        flagged |= rigidsym_any_extreme_f32(in_a + 3 * j, 3);
+        flagged |= rigidsym_any_extreme_f32(in_a_prime + 3 * j, 3);
         if (flagged) {
             ++count;
             for (int c = 0; c < 3; ++c)

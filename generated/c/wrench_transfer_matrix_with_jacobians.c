@@ -21,7 +21,10 @@
 /* The first nl samples (a multiple of RIGIDSYM_LANES, at most a block), of which the first m
  * count: RIGIDSYM_LANES at a time through the lanes function, then one finiteness test over
  * the first m samples' outputs (still in cache): finite inputs can overflow into a non-finite
- * output, flagged as a singular sample is. When something is flagged, each sample's flag is
+ * output, flagged as a singular sample is, and one range test over its inputs (a sample
+ * with an input of extreme magnitude, whose intermediates could overflow or underflow, or a
+ * non-finite input, is flagged: the Python path re-runs it in a wider type, issue 37).
+ * When something is flagged, each sample's flag is
  * recomputed from that sample alone (its own flag and its own output row) and its row
  * written as NaN. Returns the number of flagged samples among the first m. */
 
@@ -107,6 +110,8 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_wrench_transfer_matrix_with_jacobians_
     any |= rigidsym_any_nonfinite(out_V, 36 * m);
     any |= rigidsym_any_nonfinite(out_V_D_a, 108 * m);
     any |= rigidsym_any_nonfinite(out_V_D_p, 108 * m);
+    any |= rigidsym_any_extreme(in_a, 3 * m);
+    any |= rigidsym_any_extreme(in_p, 3 * m);
     if (any == 0)
         return 0;
     int64_t count = 0;
@@ -115,6 +120,8 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_wrench_transfer_matrix_with_jacobians_
         flagged |= rigidsym_any_nonfinite(out_V + 36 * j, 36);
         flagged |= rigidsym_any_nonfinite(out_V_D_a + 108 * j, 108);
         flagged |= rigidsym_any_nonfinite(out_V_D_p + 108 * j, 108);
+        flagged |= rigidsym_any_extreme(in_a + 3 * j, 3);
+        flagged |= rigidsym_any_extreme(in_p + 3 * j, 3);
         if (flagged) {
             ++count;
             for (int c = 0; c < 36; ++c)
@@ -152,6 +159,8 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_wrench_transfer_matrix_with_jacobians_
     any |= rigidsym_any_nonfinite_f32(out_V, 36 * m);
     any |= rigidsym_any_nonfinite_f32(out_V_D_a, 108 * m);
     any |= rigidsym_any_nonfinite_f32(out_V_D_p, 108 * m);
+    any |= rigidsym_any_extreme_f32(in_a, 3 * m);
+    any |= rigidsym_any_extreme_f32(in_p, 3 * m);
     if (any == 0)
         return 0;
     int64_t count = 0;
@@ -160,6 +169,8 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_wrench_transfer_matrix_with_jacobians_
         flagged |= rigidsym_any_nonfinite_f32(out_V + 36 * j, 36);
         flagged |= rigidsym_any_nonfinite_f32(out_V_D_a + 108 * j, 108);
         flagged |= rigidsym_any_nonfinite_f32(out_V_D_p + 108 * j, 108);
+        flagged |= rigidsym_any_extreme_f32(in_a + 3 * j, 3);
+        flagged |= rigidsym_any_extreme_f32(in_p + 3 * j, 3);
         if (flagged) {
             ++count;
             for (int c = 0; c < 36; ++c)

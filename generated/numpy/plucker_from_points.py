@@ -25,6 +25,8 @@ the ``(n,)`` uint8 array of flags: 0 fine, ``SINGULAR`` (a denominator is exactl
 """
 
 import numpy
+
+
 def _split(x, k):
     # Veltkamp: x = hi + lo exactly, hi of at most p - ceil(p/2) bits
     t = k * x

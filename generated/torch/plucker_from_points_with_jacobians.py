@@ -23,6 +23,8 @@ the checked, differentiable API.
 """
 
 import torch
+
+
 def _split(x, k):
     # Veltkamp: x = hi + lo exactly, hi of at most p - ceil(p/2) bits
     t = k * x

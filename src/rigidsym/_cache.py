@@ -4,6 +4,7 @@ Layout (``RIGIDSYM_CACHE``, else ``$XDG_CACHE_HOME/rigidsym``, else ``~/.cache/r
 
     <root>/kernels/    compiled C kernels (rigidsym.kernels._build)
     <root>/verdicts/   checked results (the verdict cache)
+    <root>/latex/      the LaTeX grammar's LALR analysis (lark's own cache=, issue 40)
 
 Both writers take :func:`lock` (a cross-process file lock from the well-kept ``filelock``
 package, not a lock of our own: parallel first-use writers into one cache otherwise race)
@@ -27,7 +28,7 @@ from rigidsym._io import write_atomic_bytes
 __all__ = ["root", "folder", "lock", "put", "get", "digest", "info", "clear", "KINDS"]
 
 #: the cache's sub-folders
-KINDS = ("kernels", "verdicts")
+KINDS = ("kernels", "verdicts", "latex")
 #: seconds a writer waits for another process's lock before giving up with an error
 LOCK_TIMEOUT = 600.0
 
@@ -97,8 +98,10 @@ def info() -> dict:
     for kind in KINDS:
         where = folder(kind)
         files = [p for p in where.rglob("*") if p.is_file()] if where.is_dir() else []
-        # a .built file marks a user declaration known to build (verdict_cache): no entry
-        entries = [p for p in files if not p.name.endswith((".sha256", ".lock", ".built"))]
+        # a .built file marks a user declaration known to build (verdict_cache), an .imports
+        # file what a module imports (rigidsym._sources): no entries
+        entries = [p for p in files
+                   if not p.name.endswith((".sha256", ".lock", ".built", ".imports"))]
         out[kind] = {"path": str(where), "entries": len(entries),
                      "bytes": sum(p.stat().st_size for p in files)}
     return out

@@ -3,8 +3,9 @@ on has changed (``<cache>/verdicts/``, see :mod:`rigidsym._cache` for where and 
 
 **The key** of an id is a SHA-256 over everything its verdict depends on:
 
-- the source of the ``rigidsym`` package and of the book's declarations (every file of
-  both folders, by content);
+- the source of the ``rigidsym`` package (every file, by content) but the book's ``.py``
+  modules, which count per id: for a book id its declaring module and the book modules it
+  imports, transitively (:mod:`rigidsym._sources`);
 - for a user id, the declaring module's file and every *local* module it imports,
   transitively (an ``import`` in its source, resolved through ``sys.modules``; local means
   outside the standard library and site-packages), by content;
@@ -31,9 +32,7 @@ match) is ignored with a :class:`VerdictCacheWarning` and recomputed, never trus
 
 from __future__ import annotations
 
-import ast
 import hashlib
-import importlib.util
 import json
 import marshal
 import site
@@ -44,7 +43,7 @@ from dataclasses import fields
 from functools import cache
 from pathlib import Path
 
-from rigidsym import _cache, _config
+from rigidsym import _cache, _config, _sources
 from rigidsym._io import write_atomic_bytes
 from rigidsym.checking.deciding import usermodules
 from rigidsym.checking.deciding.registry import REGISTRY, Equation, is_user_id
@@ -60,42 +59,10 @@ class VerdictCacheWarning(UserWarning):
 
 
 # --------------------------------------------------------------------------- digests
-def _file_digest(path: Path) -> str:
-    return hashlib.sha256(path.read_bytes()).hexdigest()
-
-
-def _package_roots() -> list[Path]:
-    import rigidsym
-
-    roots = [Path(rigidsym.__file__).resolve().parent]
-    spec = importlib.util.find_spec(_config.BOOK)
-    for loc in (spec.submodule_search_locations or []) if spec else []:
-        p = Path(loc).resolve()
-        if not any(p == r or r in p.parents for r in roots):
-            roots.append(p)
-    return roots
-
-
-@cache
-def package_digest() -> str:
-    """SHA-256 of every file of the ``rigidsym`` package and of the book's folder (relative
-    path and content; compiled ``__pycache__`` left out). Computed once per process."""
-    h = hashlib.sha256()
-    for k, root in enumerate(_package_roots()):
-        for p in sorted(root.rglob("*")):
-            if p.is_file() and "__pycache__" not in p.parts and p.suffix != ".pyc":
-                h.update(f"{k}:{p.relative_to(root).as_posix()}\0{_file_digest(p)}\n".encode())
-    return h.hexdigest()
-
-
-@cache
-def _environment() -> str:
-    import flint
-    import mpmath
-    import sympy
-
-    return json.dumps({"python": sys.version, "sympy": sympy.__version__,
-                       "mpmath": mpmath.__version__, "python-flint": flint.__version__})
+_file_digest = _sources.file_digest
+_package_roots = _sources.package_roots
+package_digest = _sources.package_digest  # the package's files (here since issue 22)
+_environment = _sources.environment
 
 
 def _settings() -> str:
@@ -127,24 +94,7 @@ def _is_local(path: Path) -> bool:
                                             for d in _nonlocal_dirs())
 
 
-def _imported_names(path: Path, package: str) -> set[str]:
-    """Module names an ``import`` of the file may bind (submodules of ``from`` imports too)."""
-    out: set[str] = set()
-    for node in ast.walk(ast.parse(path.read_bytes(), str(path))):
-        if isinstance(node, ast.Import):
-            for a in node.names:
-                parts = a.name.split(".")
-                out.update(".".join(parts[:k]) for k in range(1, len(parts) + 1))
-        elif isinstance(node, ast.ImportFrom):
-            try:
-                base = importlib.util.resolve_name("." * node.level + (node.module or ""),
-                                                   package) if node.level else node.module
-            except (ImportError, ValueError):
-                continue
-            if base:
-                out.add(base)
-                out.update(f"{base}.{a.name}" for a in node.names)
-    return out
+_imported_names = _sources.imported_names
 
 
 #: path -> (id of the module object, digest of the file when first seen with it)
@@ -204,7 +154,9 @@ def _declaration_parts(eq_id: str, deps: dict | None) -> list[str] | None:
             or _declared_function(eq) is not eq.build_fn:
         return None
     if eq.module == _config.BOOK or eq.module.startswith(_config.BOOK + "."):
-        files: dict | None = {}  # in the package digest
+        # the declaring module and the book modules it imports: an edit elsewhere in the
+        # book leaves its verdicts cached (issue 39)
+        files: dict | None = dict(_sources.book_module_files(eq.module))
     else:
         deps = {} if deps is None else deps
         if eq.module not in deps:
@@ -215,7 +167,7 @@ def _declaration_parts(eq_id: str, deps: dict | None) -> list[str] | None:
     meta = [eq.id, eq.title, eq.section, eq.kind, eq.latex, eq.expected, eq.cause,
             eq.evidence, eq.singular, eq.module, eq.function,
             getattr(eq, "repair_budget", None)]
-    return [f"format {FORMAT}", package_digest(), _environment(), json.dumps(meta),
+    return [f"format {FORMAT}", _sources.machinery_digest(), _environment(), json.dumps(meta),
             json.dumps(sorted(files.items()))]
 
 

@@ -1,7 +1,8 @@
 """``rigidsym cache info | clear``: where the user cache is, what it holds, and emptying it.
 
-The cache (:mod:`rigidsym._cache`) holds compiled kernels (``kernels/``) and checked results
-(``verdicts/``, :mod:`rigidsym.checking.verdict_cache`). Clearing never changes a verdict:
+The cache (:mod:`rigidsym._cache`) holds compiled kernels (``kernels/``), checked results
+(``verdicts/``, :mod:`rigidsym.checking.verdict_cache`) and the LaTeX grammar's analysis
+(``latex/``). Clearing never changes a verdict:
 what is gone is computed again on the next run.
 """
 

@@ -107,7 +107,10 @@ def run(args) -> int:
                 ph.label(f"rendering {name}")
                 written.append(write_atomic(out / name, make()))
                 ph.advance(1, label=f"wrote {name}")
-        _solve_exercises(rep)
+        from rigidsym.report.exercises import rendered
+
+        if rendered() is None:  # else nothing they depend on changed (issue 39)
+            _solve_exercises(rep)
         with rep.phase("rendering and writing the exercises (Markdown, HTML, figures)") as ph:
             more = write_exercises(out)
             ph.finish(f"{len(more)} files")

@@ -40,8 +40,9 @@ COMMON_KEYWORDS = (
             "preallocated float64 output array (a tuple of them for several outputs), "
             "shape batch + output shape; returned filled"),
     Keyword("check", "bool", "True",
-            "validate the inputs (finite, unit e/eta, orthogonal Q) and report a non-finite "
-            "output (overflow)"),
+            "validate the inputs (finite, unit e/eta, orthogonal Q); False skips only that: "
+            "on valid input the same result, and a NaN or inf input gives NaN in the "
+            "outputs that depend on it"),
     Keyword("on_singular", "OnSingular | None", "None",
             '"raise" (SingularConfigurationError naming the argument and the batch indices) '
             'or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs'),
@@ -83,8 +84,9 @@ def docstring(meta: dict) -> str:
               "complex, bool).",
               "    ValueError: bad shape, batch shapes that do not broadcast, ragged or "
               "non-finite input, non-unit or non-orthogonal argument (naming it).",
-              "    NonFiniteResultError: finite inputs overflowed into a non-finite output "
-              "(with check=True), unless on_singular='nan'."]
+              "    NonFiniteResultError: the result of finite inputs overflows the dtype "
+              "(inputs of extreme magnitude are computed in a wider type first), unless "
+              "on_singular='nan'."]
     if meta["singular"]:
         lines += ["    SingularConfigurationError: on the singular set "
                   f"({meta['singular']}), unless on_singular='nan'."]

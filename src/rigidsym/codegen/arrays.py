@@ -46,7 +46,7 @@ def render_array_kernels(env, kc: Any, header) -> dict[str, str]:
         kc: a :class:`rigidsym.codegen.generator.KernelCode`.
         header: ``header(template) -> [lines]``, the generator's file header.
     """
-    from rigidsym.codegen.generator import uses_diffprod
+    from rigidsym.codegen.compensated import uses_diffprod
 
     t = "array_kernel.py.j2"
     columns = [str(s) for _, syms in kc.inputs for s in syms]

@@ -95,3 +95,11 @@ def _load():
 
 #: :func:`_diffprod` of the generated NumPy modules, for the generator's own measurements
 diffprod = _load()
+
+
+def uses_diffprod(kc) -> bool:
+    """Whether a program of ``kc`` has a compensated difference of products (its printed
+    module then carries the helper of this module); ``kc`` a
+    :class:`rigidsym.codegen.generator.KernelCode`."""
+    return any(sp.sympify(e).has(DiffProd) for v in kc.variants
+               for e in [*(x for _, x in v.program.temps), *v.program.outputs])

@@ -28,7 +28,7 @@ from rigidsym._config import generated_dir
 from rigidsym.codegen.accurate import Chosen, improve
 from rigidsym.codegen.api_spec import render_api
 from rigidsym.codegen.arrays import render_array_kernels
-from rigidsym.codegen.compensated import NUMPY_SOURCE, DiffProd
+from rigidsym.codegen.compensated import NUMPY_SOURCE, uses_diffprod
 from rigidsym.codegen.cprogram import TRIG_BLOCK as TRIG_BLOCK
 from rigidsym.codegen.cprogram import (
     _f32_code,
@@ -42,6 +42,7 @@ from rigidsym.codegen.files import check, write
 from rigidsym.codegen.float32 import plan_kernel
 from rigidsym.codegen.optimise import Program, compile_program, math_hash
 from rigidsym.codegen.printers import KernelCPrinter, KernelNumPyPrinter
+from rigidsym.codegen.removable import rewrite as removable
 from rigidsym.codegen.spec import Kernel, flat_symbols, input_symbols
 
 __all__ = ["generate", "write", "check", "GenerationResult", "default_out_dir", "TEMPLATES"]
@@ -121,12 +122,14 @@ def compile_kernel(kernel: Kernel) -> KernelCode:
         parts += [cond, *flat]
         fcond = sp.lambdify(sflat, cond, modules="math")
         flat, got = improve(kernel, br.name, flat, syms, sflat, list(before), fcond)
+        flat = removable(flat)
         before.append(fcond)
         chosen += got
         variants.append(Variant(br.name, compile_program(flat, angles), cond))
     flat = _flatten(kernel, kernel.build(**syms))
     parts += flat
     flat, got = improve(kernel, "main", flat, syms, sflat, before)
+    flat = removable(flat)
     chosen += got
     variants.append(Variant("main", compile_program(flat, angles), None))
     ops = sum(v.program.ops for v in variants)
@@ -205,13 +208,6 @@ def _meta(kc: KernelCode) -> dict:
 #: arrays of 8 bytes a sample) stay in L2, so large batches are not memory-bound; measured in
 #: benchmarks/RESULTS.md
 NUMPY_CHUNK = 16384
-
-
-def uses_diffprod(kc: KernelCode) -> bool:
-    """Whether a program of ``kc`` has a compensated difference of products (its printed
-    module then carries the helper, :mod:`rigidsym.codegen.compensated`)."""
-    return any(sp.sympify(e).has(DiffProd) for v in kc.variants
-               for e in [*(x for _, x in v.program.temps), *v.program.outputs])
 
 
 def _render_kernel(env, kc: KernelCode, origin: str = BOOK_ORIGIN) -> dict[str, str]:

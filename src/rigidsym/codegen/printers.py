@@ -30,6 +30,11 @@ _MAX_EXPAND = 4
 class _PowMixin:
     """Shared ``_print_Pow``: products for small integer exponents, sqrt for halves."""
 
+    def _print_QuotientBase(self, expr):
+        # a removable quotient (codegen.removable): its branch, series below t*, closed
+        # form above at a safe argument, printed as this printer prints a Piecewise
+        return self._print(expr.expansion())
+
     _one = "1"
     #: the compensated a b - c d of :mod:`rigidsym.codegen.compensated`, as the printed
     #: module names it (a helper the templates define)

@@ -12,8 +12,9 @@ editable build are compiled into the user cache, with a notice (``rigidsym build
 Common keyword arguments of every kernel (``rigidsym.codegen.api_spec.COMMON_KEYWORDS``):
 
 * ``out``: preallocated output array (a tuple for several outputs), shape batch + output.
-* ``check``: validate finiteness, unit vectors and rotations, and report a non-finite output
-  from finite inputs (overflow) (default True).
+* ``check``: validate finiteness, unit vectors and rotations (default True); ``False``
+  skips only that: on valid input the same result (an overflow of the result is still
+  reported), a NaN or inf input gives NaN in the outputs that depend on it (issue 37).
 * ``on_singular``: ``"raise"`` (default) raises :class:`SingularConfigurationError` naming
   the argument and the batch indices (:class:`NonFiniteResultError` for an overflow);
   ``"nan"`` returns NaN in exactly those rows.
@@ -48,12 +49,13 @@ from rigidsym._config import generated_dir
 from rigidsym._io import load_module
 from rigidsym.generated.api import *  # noqa: F403 - the generated kernels (true signatures)
 from rigidsym.generated.api import __all__ as _KERNELS
-from rigidsym.kernels import _state
+from rigidsym.kernels import _names, _state
 from rigidsym.kernels._core import ORTHO_TOL as ORTHO_TOL  # the tolerances of check=True
 from rigidsym.kernels._core import UNIT_TOL as UNIT_TOL
 from rigidsym.kernels._core import KernelSpace
 from rigidsym.kernels._errors import NonFiniteResultError, SingularConfigurationError
 from rigidsym.kernels._jacobian import jacobian
+from rigidsym.kernels._scale import check_threads
 from rigidsym.kernels._scale import get_num_threads as get_num_threads
 from rigidsym.kernels._scale import set_num_threads as set_num_threads
 
@@ -118,13 +120,15 @@ def load(directory: str | Path | None = None) -> types.ModuleType:
         same namespace.
 
     Raises:
+        TypeError: ``directory`` is not a str, a path-like or None.
         FileNotFoundError: ``directory`` has no ``kernels.json`` or ``api.py``.
 
     Example:
         >>> load().twist_transfer is twist_transfer
         True
     """
-    gdir = generated_dir() if directory is None else Path(directory).resolve()
+    directory = _names.directory(directory)
+    gdir = generated_dir() if directory is None else directory.resolve()
     for f in ("kernels.json", "api.py"):
         if not (gdir / f).is_file():
             raise FileNotFoundError(f"directory: no {f} in {gdir} (run `rigidsym generate "
@@ -154,6 +158,7 @@ def use_backend(name: str) -> str:
         The backend in use after the call (``"numpy"`` when ``"c"`` fell back).
 
     Raises:
+        TypeError: ``name`` is not a ``str``.
         ValueError: ``name`` is neither.
     """
     return _state.select(name)
@@ -179,6 +184,7 @@ def build_info(directory: str | Path | None = None) -> dict:
         ``object_cache`` (its folder, or None)).
 
     Raises:
+        TypeError: ``directory`` is not a str, a path-like or None.
         rigidsym.kernels._ext.NoCompiledKernels: nothing compiled matches and no compiler
             can build it (the NumPy backend runs then).
 
@@ -188,7 +194,8 @@ def build_info(directory: str | Path | None = None) -> dict:
     """
     from rigidsym.kernels import _ext
 
-    space = _state.builtin() if directory is None else load(directory)._SPACE
+    space = _state.builtin() if _names.directory(directory) is None else \
+        load(directory)._SPACE
     return _ext.info(space.c_lib())
 
 
@@ -224,7 +231,10 @@ def batch_function(name: str, backend_name: str | None = None,
         singular, 2 non-finite output).
 
     Raises:
-        KeyError: no kernel ``name``.
+        TypeError: ``name`` not a ``str``, ``dtype`` not a dtype, ``threads`` not an int.
+        KeyError: no kernel ``name`` (the message lists the close names).
+        ValueError: ``backend_name`` neither ``"c"`` nor ``"numpy"``, ``dtype`` neither
+            float64 nor float32, ``threads`` < 1.
 
     Example:
         >>> import numpy as np
@@ -236,7 +246,13 @@ def batch_function(name: str, backend_name: str | None = None,
         >>> bool(np.allclose(N, N_matrix(e, phi)))
         True
     """
-    return _state.builtin().batch_function(name, backend_name, threads, dtype)
+    space = _state.builtin()
+    _names.kernel_name(name, space.meta)
+    if backend_name is not None and backend_name not in ("c", "numpy"):
+        raise ValueError(f"backend_name: expected 'c', 'numpy' or None, got {backend_name!r}")
+    if threads is not None:
+        check_threads(threads, "threads")
+    return space.batch_function(name, backend_name, threads, _names.dtype(dtype))
 
 
 def accuracy(name: str) -> dict:
@@ -263,11 +279,12 @@ def accuracy(name: str) -> dict:
         flagged, in units of the input).
 
     Raises:
-        KeyError: no kernel ``name``, or one without measured accuracy.
+        TypeError: ``name`` is not a ``str``.
+        KeyError: no kernel ``name`` (the message lists the close names), or one without
+            measured accuracy.
     """
     meta = _state.meta()
-    if name not in meta:
-        raise KeyError(f"name: no kernel {name!r} (kernels.KERNEL_NAMES lists the public ones)")
+    _names.kernel_name(name, meta)
     row = meta[name].get("accuracy")
     if not row:
         raise KeyError(f"name: kernel {name!r} has no measured accuracy")
@@ -342,7 +359,8 @@ def swap_blocks(x: ArrayLike, matrix: bool = False) -> NDArray[np.floating]:
         ndarray of the shape of ``x``.
 
     Raises:
-        TypeError, ValueError: ``x`` not real numbers, or of the wrong trailing shape.
+        TypeError, ValueError: ``x`` not real numbers, or of the wrong trailing shape;
+            ``matrix`` not a bool.
 
     Example:
         >>> swap_blocks([1, 2, 3, 4, 5, 6]).tolist()
@@ -350,7 +368,7 @@ def swap_blocks(x: ArrayLike, matrix: bool = False) -> NDArray[np.floating]:
     """
     from rigidsym.kernels._core import as_array
 
-    shape = (6, 6) if matrix else (6,)
+    shape = (6, 6) if _names.flag(matrix, "matrix") else (6,)
     a = as_array(x, {"name": "x", "tshape": shape})
     perm = [3, 4, 5, 0, 1, 2]
     return a[..., perm, :][..., perm] if matrix else a[..., perm]

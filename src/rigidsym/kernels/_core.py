@@ -23,6 +23,7 @@ from rigidsym import _kinds
 from rigidsym._io import load_module
 from rigidsym.kernels import _dask, _entries, _state
 from rigidsym.kernels._errors import NonFiniteResultError, SingularConfigurationError
+from rigidsym.kernels._rescue import extreme_rows, rescue
 from rigidsym.kernels._scale import (
     MIN_PARALLEL,
     check_threads,
@@ -38,6 +39,7 @@ ORTHO_TOL = _kinds.get("rotation").tol
 
 #: sample flags of the generated batch functions (numpy_kernel.py.j2)
 _SINGULAR, _NONFINITE = 1, 2
+
 _DTYPE_WORDS = {"b": "bool", "c": "complex", "O": "Python objects", "U": "str", "S": "bytes",
                 "M": "datetime", "m": "timedelta", "V": "structured"}
 
@@ -231,20 +233,42 @@ class KernelSpace:
 
         ``threads`` as for the kernels (None: :func:`rigidsym.kernels._scale.get_num_threads`; one
         thread below ``MIN_PARALLEL`` samples); outputs are the same for every count.
-        float32: float32 arrays in and out, float64 arithmetic inside.
+        float32: float32 arrays in and out, float64 arithmetic inside. Samples the kernel
+        cannot compute in its type (an input of extreme magnitude, an intermediate that
+        overflows or underflows) are re-run in a wider one (:mod:`._rescue`, issue 37).
         """
         b = backend_name or self.backend()
         t = resolve_threads(threads, b)
         f32 = np.dtype(dtype) == np.float32
+        nin = len(self.meta[name]["args"])
+        wide = self.numpy_kernel(name)
         if b == "numpy":
-            k = self.numpy_kernel(name)
-            return numpy_f32(k, len(self.meta[name]["args"])) if f32 else k
+            k = numpy_f32(wide, nin) if f32 else wide
+
+            def g(*arrays):
+                flags = k(*arrays)
+                n = len(flags)
+                rows = flags != 0
+                if not f32:            # float32 samples ran in float64 arithmetic
+                    rows |= extreme_rows(arrays[:nin], n)
+                if rows.any():
+                    idx = np.flatnonzero(rows)
+                    flags[idx] = rescue(wide, arrays[:nin], arrays[nin:], idx)
+                return flags
+            return g
         batch = self.c_lib().module.batch
         k = self._cindex[name]
 
         def f(*arrays):
             n = arrays[0].shape[0]
-            return batch(k, f32, n, t if n >= MIN_PARALLEL else 1, *arrays)
+            count = batch(k, f32, n, t if n >= MIN_PARALLEL else 1, *arrays)
+            if count:      # flagged rows are NaN: re-run them; those still flagged stay NaN
+                idx = np.flatnonzero(np.isnan(arrays[nin].reshape(n, -1)[:, 0]))
+                bad = idx[rescue(wide, arrays[:nin], arrays[nin:], idx) != 0]
+                for o in arrays[nin:]:
+                    o.reshape(n, -1)[bad] = np.nan
+                count = bad.size
+            return count
         return f
 
     def call(self, name: str, args: tuple, out=None, check: bool = True,
@@ -300,18 +324,16 @@ class KernelSpace:
         return results[0] if len(results) == 1 else tuple(results)
 
     def _classify_c_rows(self, name: str, flat: list, bufs: list, n: int) -> np.ndarray:
-        """Flags of the C batch: it writes NaN rows without saying why; the NumPy kernel,
-        re-run on just those rows, tells a singular sample from an overflow."""
+        """Flags of the C batch: it writes NaN rows without saying why (a singular sample,
+        an overflow, an input of extreme magnitude or a non-finite one): those rows are
+        re-run by :func:`~rigidsym.kernels._rescue.rescue`, which computes them and tells
+        which is which."""
         idx = np.flatnonzero(np.isnan(bufs[0].reshape(n, -1)[:, 0]))
         flags = np.zeros(n, dtype=np.uint8)
         if idx.size:
-            tmp = [np.empty((idx.size,) + b.shape[1:]) for b in bufs]
-            with np.errstate(all="ignore"):
-                sub = self.numpy_kernel(name)(*[np.ascontiguousarray(a[idx], dtype=np.float64)
-                                                for a in flat], *tmp)
-            # a row C flagged and NumPy did not (rounding at the edge of the range): overflow
-            flags[idx] = np.where(sub == 0, _NONFINITE, sub)
+            flags[idx] = rescue(self.numpy_kernel(name), flat, bufs, idx)
         return flags
+
 
 
 def _check_out(out, outs_meta: list, batch: tuple, dtype=np.float64) -> tuple:
@@ -330,10 +352,15 @@ def _check_out(out, outs_meta: list, batch: tuple, dtype=np.float64) -> tuple:
 
 
 def _report_flags(name, meta, flags, flat, bufs, batch, check, on_singular) -> None:
-    """Raise for flagged samples, or write NaN in their rows (``on_singular="nan"``)."""
+    """Raise for flagged samples, or write NaN in their rows (``on_singular="nan"``).
+    ``check=False`` only skips validation (issue 37): an overflow is reported as with
+    ``check=True``; a sample with a non-finite input (unvalidated) keeps its IEEE values."""
     specs = meta["args"]
     sing = np.flatnonzero(flags == _SINGULAR)
-    over = np.flatnonzero(flags == _NONFINITE) if check else np.empty(0, dtype=np.intp)
+    over = np.flatnonzero(flags == _NONFINITE)
+    if not check and over.size:
+        over = over[np.logical_and.reduce([np.isfinite(a[over].reshape(over.size, -1)).all(1)
+                                           for a in flat])]
 
     def where(idx):
         return [tuple(int(j) for j in np.unravel_index(i, batch)) for i in idx[:20]]

@@ -60,6 +60,7 @@ def jacobian(name: str) -> Callable:
         ``[..., i, j]``), per sample.
 
     Raises:
+        TypeError: ``name`` is not a ``str``.
         ValueError: ``name`` has no generated Jacobian (the message lists those that do).
 
     Example:
@@ -70,7 +71,10 @@ def jacobian(name: str) -> Callable:
         >>> float(T), jac["T"]["c_dot"].tolist()
         (1.5, [0.0, 2.0, 0.0])
     """
-    if not isinstance(name, str) or name not in _names():
+    if not isinstance(name, str):
+        raise TypeError(f"name: expected a kernel name (str), got {type(name).__name__} "
+                        f"{name!r:.60}")
+    if name not in _names():
         raise ValueError(f"name: expected a kernel with a generated Jacobian, one of "
                          f"{', '.join(_names())}; got {name!r}")
     return globals()[name + _FN] if name in _EULER else __getattr__(name + _FN)

@@ -59,8 +59,12 @@ def select(name: str) -> str:
     loaded); returns it.
 
     Raises:
+        TypeError: ``name`` is not a ``str``.
         ValueError: ``name`` is neither ``"c"`` nor ``"numpy"``.
     """
+    if not isinstance(name, str):
+        raise TypeError(f"name: expected 'c' or 'numpy' (a str), got {type(name).__name__} "
+                        f"{name!r:.60}")
     if name not in ("c", "numpy"):
         raise ValueError(f"backend: expected 'c' or 'numpy', got {name!r}")
     with LOCK:

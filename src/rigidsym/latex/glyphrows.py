@@ -5,9 +5,12 @@ kinds, the models' shapes, the rows of ``--book``, a module's symbols, the lines
 
 from __future__ import annotations
 
+import re
+
 import sympy as sp
 
 from rigidsym.checking.deciding.errors import BadInput
+from rigidsym.latex.bookrules import TIMED
 from rigidsym.latex.lets import KIND_WORDS, Let, kind_of
 from rigidsym.latex.reader import parse_latex
 from rigidsym.latex.shapes import LatexError, _name_from_key, _shape
@@ -47,6 +50,8 @@ class _Reader:
                 if self.declared[x.key] is not x:
                     continue
                 shape, _, words = kind_of(x.kind, x.text)
+                if re.search(r"\(\s*t\s*\)\s*$", x.name):  # NAME(t): a function of time
+                    words += TIMED
                 self.over[x.key] = Glyph(x.key, "*", self._name(x.key), shape, "let", words)
                 if x not in lets:
                     self.by_notation.add(x.key)

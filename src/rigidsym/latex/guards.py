@@ -7,6 +7,9 @@ symbol and the ``--let`` that settles it, never a does-not-hold resting on a con
   ``--let``;
 - ``\\dot X`` that nothing declares beside an ``X`` of the statement: nothing says how ``X``
   depends on time, so ``\\dot X`` would be a free symbol unrelated to ``X``;
+- ``c_1``, ``s_{12}``, ``\\hat\\omega`` that nothing declares: their meaning differs between the
+  books (a cosine in Siciliano, a unit vector in Lynch-Park, a skew matrix in
+  Murray-Li-Sastry);
 - ``R(\\theta)`` with ``R`` applied to two different arguments, or with no model of ``R``, or
   to a symbol its model does not depend on.
 """
@@ -73,12 +76,39 @@ def time_derivatives(free: list[str], used: set[str], declared: dict) -> None:
         m = _DOT.match(key)
         if m and m.group(2) in used:
             x = m.group(2)
+            if x in declared and declared[x].name.replace(" ", "").endswith("(t)"):
+                continue  # X(t): \dot X is its derivative (rigidsym.latex.bookrules)
             how = "declared" if x in declared else "free"
             raise BadInput(
                 f"--latex: {key} is the time derivative of {x} ({how}), but nothing says how "
                 f"{x} depends on time, so {key} would be a free symbol unrelated to {x}: "
-                f"give {key} a model (--let '{key} = LATEX') or declare it as a symbol of its "
-                f"own (--let '{key}: KIND')")
+                f"declare {x} a function of time (--let '{x}(t): KIND'), give {key} a model "
+                f"(--let '{key} = LATEX') or declare it as a symbol of its own "
+                f"(--let '{key}: KIND')")
+
+
+_TRIG_ABBREV = re.compile(r"([cs])_\{(\d+|\\[A-Za-z]+)\}$")
+_HAT = re.compile(r"\\hat\{(.*)\}$")
+
+
+def book_meanings(free: list[str]) -> None:
+    """A free glyph whose meaning differs between the books (``c_1``, ``s_{12}``,
+    ``\\hat\\omega``): bad input naming it and what settles it, never a free scalar."""
+    trig = sorted(k for k in free if _TRIG_ABBREV.match(k))
+    if trig:
+        raise BadInput(
+            f"--latex: {', '.join(trig)}: in Siciliano, Spong and Craig the cos and sin of "
+            f"the joint angles the index names (c_{{12}} = cos(θ₁ + θ₂)), symbols of their "
+            f"own elsewhere: say which, with --notation siciliano (spong, craig) or --let "
+            f"'{trig[0]}: scalar' for each")
+    for key in free:
+        m = _HAT.match(key)
+        if m:
+            raise BadInput(
+                f"--latex: {key} is a unit vector in Lynch-Park and Corke, the skew matrix of "
+                f"{m.group(1)} in Murray-Li-Sastry: say which, with --let '{key}: unit "
+                f"vector' (or another KIND), --notation lynch-park or --notation "
+                f"murray-li-sastry")
 
 
 def applications(applied: dict, models: dict, glyphs: dict) -> None:

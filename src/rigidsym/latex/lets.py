@@ -15,7 +15,7 @@ from dataclasses import dataclass
 import sympy as sp
 
 from rigidsym.algebra import symbols as _sym
-from rigidsym.algebra.motions import hat, transform
+from rigidsym.algebra.motions import Ad, hat, transform
 from rigidsym.checking.deciding.errors import BadInput
 from rigidsym.latex.reader import parse_latex
 from rigidsym.latex.shapes import LatexError
@@ -26,7 +26,7 @@ __all__ = ["KIND_WORDS", "Let", "kind_of", "split_lets", "read_lets"]
 #: ``4x4 matrix``)
 KIND_WORDS = ("unit vector", "unit 4-vector", "rotation", "angle", "angle in [0, pi]",
               "scalar", "vector", "n-vector", "matrix", "m×n matrix", "symmetric matrix",
-              "twist", "wrench", "transform", "so(3)", "se(3)")
+              "twist", "wrench", "transform", "spatial transform", "so(3)", "se(3)")
 
 _FIXED = {  # words -> (shape, model of the named symbol, words in the reading)
     "unit vector": ((3, 1), _sym.unit_vector, "unit vector"),
@@ -44,6 +44,11 @@ _FIXED = {  # words -> (shape, model of the named symbol, words in the reading)
     "wrench": ((6, 1), _sym.wrench, "wrench [n; f]"),
     "transform": ((4, 4), lambda n: transform(_sym.rotation(f"{n}_R"), _sym.vector(f"{n}_p")),
                   "homogeneous transform (rotation and translation)"),
+    # Featherstone's Plücker transform of motion vectors [E 0; -E r×, E] (RBDA (2.24)): the
+    # adjoint of the 4x4 transform (E, -E r), so every one is Ad of a rotation and a vector
+    "spatial transform": ((6, 6), lambda n: Ad(transform(_sym.rotation(f"{n}_E"),
+                                                         _sym.vector(f"{n}_r"))),
+                          "spatial transform (Plücker, 6×6: [E 0; −E r×, E])"),
     "so(3)": ((3, 3), lambda n: hat(_sym.vector(n)), "so(3) matrix: the hat of a free 3-vector"),
     "se(3)": ((4, 4), lambda n: hat(_sym.vector(n, n=6)),
               "se(3) matrix: the hat of a free twist [ω; v]"),
@@ -199,6 +204,9 @@ def read_lets(let) -> list[Let]:
             out.append(Let(d, name, _key(name, d), kind=kind))
         elif eq >= 0:
             name, tex = d[:eq].strip(), d[eq + 1:].strip()
+            applied = re.fullmatch(r"(.+?)\s*\(([^()]+)\)", name)
+            if applied:  # R(\theta) = ...: the model of R, in theta (latex.meaning)
+                name = applied.group(1)
             if not tex:
                 raise BadInput(f"--let '{d}': expected LaTeX after '='")
             out.append(Let(d, name, _key(name, d), latex=tex))

@@ -23,6 +23,7 @@ from rigidsym.algebra import symbols as _sym
 from rigidsym.checking.deciding.errors import BadInput
 from rigidsym.checking.deciding.registry import Rel, Statement
 from rigidsym.latex import guards
+from rigidsym.latex.bookrules import SETS
 from rigidsym.latex.glyphrows import _Reader, _symbol
 from rigidsym.latex.lending import lent
 from rigidsym.latex.lets import KIND_WORDS, Let, kind_of, read_lets
@@ -51,6 +52,22 @@ class Reading:
     text: str
     notes: list[str] = field(default_factory=list)
     free: list[str] = field(default_factory=list)
+
+
+
+_DECL = re.compile(r"(?:(?:,|\\q?quad)\s*)+(?:\\forall\s*)?([^=,]*?)\s*\\in\s*"
+                   r"(SO\(3\)|SE\(3\)|so\(3\)|se\(3\))\s*[.,]?\s*$")
+
+
+def declared_lets(latex: str, lets: list) -> list:
+    """The ``--let`` a trailing ``, R \\in SO(3)`` (``SE(3)``, ``so(3)``, ``se(3)``) states,
+    when no ``--let`` declares that symbol already (one that does is checked against it by
+    the parse)."""
+    m = _DECL.search(latex)
+    if not m or not m.group(1).strip():
+        return []
+    new = read_lets([f"{m.group(1).strip()}: {SETS[m.group(2)][1]}"])
+    return [x for x in new if x.key not in {y.key for y in lets}]
 
 
 def latex_id(latex: str, lets: list[Let], book: str | None, modules,
@@ -99,6 +116,7 @@ def read_statement(latex: str, lets: list[Let], book: str | None = None,
     from rigidsym.checking.deciding.explicit import _EXPLICIT_CACHE, explicit
 
     lend = lend or {}
+    lets = list(lets) + declared_lets(latex, lets)  # ", R \\in SO(3)": a --let (issue 40)
     rd = _Reader(lets, book, lend, table)
     values: dict = {}  # book symbol -> value in book symbols (resolved below)
     occurs = _read_models(rd, lets, values)
@@ -120,6 +138,7 @@ def read_statement(latex: str, lets: list[Let], book: str | None = None,
     models.update({name: v for name, (_, v) in lend.items() if v is not None})
     guards.applications(parsed.applied, models, glyphs)
     guards.time_derivatives(free, rd.used, rd.declared)
+    guards.book_meanings(free)
     model = _resolve(values, explicit)
     _EXPLICIT_CACHE.clear()
     printed, kind = _relations(parsed)

@@ -3,13 +3,14 @@ post-lexer (layout inside ``aligned``), and what a parse returns (:class:`Parsed
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass, field
 from functools import cache
 from importlib import resources
 
 import lark
 
-__all__ = ["Relation", "Parsed", "parser"]
+__all__ = ["Relation", "Parsed", "parser", "tree", "braced", "quoted"]
 
 
 @dataclass(frozen=True)
@@ -61,17 +62,23 @@ class Parsed:
                     yield c, i, j, exprs[i], exprs[j]
 
 
+_MACRO = re.compile(r"\\[A-Za-z]+")
+
+
 class _AlignedLayout:
     """Post-lexer: inside ``aligned`` (outside a matrix) ``&``, ``\\\\`` and a ``\\quad``
     right after ``&`` are layout; drop them (and the environment's delimiters)."""
 
     always_accept = ("AMP", "ROWSEP", "BEGIN_ALIGNED", "END_ALIGNED")
+    text = ""  #: the input being parsed (set by :func:`tree`): where each macro ends
 
     def process(self, stream):
         aligned = matrix = 0
         after_amp = False
         for tok in stream:
             t = tok.type
+            if _MACRO.fullmatch(tok.value) and self.text[tok.end_pos:tok.end_pos + 1].isalpha():
+                raise _Glued(tok.start_pos)  # \sinh is no \sin h, \cdots no \cdot s
             if t == "BEGIN_ALIGNED":
                 aligned += 1
                 continue
@@ -93,9 +100,190 @@ class _AlignedLayout:
             yield tok
 
 
+class _Glued(Exception):
+    """A grammar literal that is only the start of a longer macro of the input."""
+
+    def __init__(self, pos: int):
+        super().__init__(pos)
+        self.pos = pos
+
+
 @cache
 def parser() -> lark.Lark:
-    """The lark LALR(1) parser of ``grammar.lark`` (built once per process)."""
+    """The lark LALR(1) parser of ``grammar.lark`` (built once per process; its LALR
+    analysis kept in the user cache, ``<cache root>/latex/``, by lark's own ``cache=``: keyed
+    by the grammar's and lark's hash, a stale or unreadable file is rebuilt and rewritten)."""
+    from rigidsym import _cache
+
     text = resources.files("rigidsym.latex").joinpath("grammar.lark").read_text("utf-8")
+    where = _cache.folder("latex")
+    try:
+        where.mkdir(parents=True, exist_ok=True)
+        kept = {"cache": str(where / "grammar.lark.cache")}
+    except OSError:  # a read-only home: build it every time
+        kept = {}
     return lark.Lark(text, parser="lalr", lexer="contextual", postlex=_AlignedLayout(),
-                     propagate_positions=False, maybe_placeholders=False)
+                     propagate_positions=False, maybe_placeholders=False, **kept)
+
+
+# ---- the input as TeX reads it, and errors that quote it (issue 40, items 3 and 5)
+# pylatexenc's latexwalker is the tokenizer here: it knows where a macro ends (\cot\frac is
+# two macros) and what TeX takes as a macro's argument (\frac\theta2). It runs only where it
+# is needed (an unbraced argument, an error): over all 181 strings of the chapter it costs
+# 0.19 s, +24 % of the benchmark's parse time, beyond issue 40's 1.2x budget.
+_ARGS = {"frac": 2, "dfrac": 2, "tfrac": 2, "sqrt": 1}
+_UNBRACED = re.compile(r"\\[dt]frac(?![A-Za-z])|\\frac(?![A-Za-z])\s*([^\s{]|\{[^{}]*\}\s*[^\s{])"
+                       r"|\\sqrt(?![A-Za-z])\s*[^\s{\[]")
+_CONSTRUCTS = [
+    (re.compile(r"\\(left|right|[bB]igg?[lr]?)$"), "a delimiter"),
+    (re.compile(r"\\(alpha|beta|gamma|delta|epsilon|varepsilon|zeta|eta|theta|vartheta|"
+                r"iota|kappa|lambda|mu|nu|xi|pi|rho|varrho|sigma|tau|upsilon|phi|varphi|"
+                r"chi|psi|omega|Gamma|Delta|Theta|Lambda|Xi|Pi|Sigma|Upsilon|Phi|Psi|"
+                r"Omega)$"), "a Greek letter"),
+    (re.compile(r"\\(mathbf|boldsymbol|bm|mathcal|mathsf|mathrm|operatorname|text)$"),
+     "a font"),
+    (re.compile(r"\\(hat|dot|ddot|tilde|bar|vec|underline|check|breve)$"), "an accent"),
+    (re.compile(r"\\(sin|cos|tan|cot|sec|csc|arccos|arcsin|arctan|exp|log|ln|det)$"),
+     "a function"),
+    (re.compile(r"\\[dt]?frac$"), "a fraction"),
+    (re.compile(r"\\(begin|end)$"), "an environment"),
+    (re.compile(r"\\(wedge|vee|times|cdot|otimes|circ)$"), "a product"),
+    (re.compile(r"\\(int|iint|oint|sum|prod)$"), "an integral or sum"),
+]
+
+
+def braced(latex: str) -> str:
+    """The LaTeX with TeX's unbraced macro arguments braced (``\\frac\\theta2`` ->
+    ``\\frac{\\theta}{2}``, ``\\sqrt2`` -> ``\\sqrt{2}``; ``\\dfrac``, ``\\tfrac`` ->
+    ``\\frac``), as pylatexenc's latexwalker reads each argument; anything else as written."""
+    if not _UNBRACED.search(latex):
+        return latex
+    from pylatexenc.latexwalker import LatexWalker, LatexWalkerError
+
+    w = LatexWalker(latex, tolerant_parsing=False)
+    out, pos = [], 0
+    try:
+        while pos < len(latex):
+            tok = w.get_token(pos, environments=False)
+            out.append(latex[pos:tok.pos])
+            end = tok.pos + tok.len
+            if tok.tok == "macro" and tok.arg in _ARGS and not latex[end:].lstrip().startswith(
+                    "["):
+                args = []
+                for _ in range(_ARGS[tok.arg]):
+                    _, p, n = w.get_latex_expression(end)
+                    text = latex[p:p + n]
+                    if text in ("=", "&", "\\\\", "}", ",", "^", "_"):  # no argument there
+                        return latex
+                    args.append(braced(text[1:-1] if text.startswith("{") else text))
+                    end = p + n
+                out.append(("\\sqrt" if tok.arg == "sqrt" else "\\frac")
+                           + "".join("{" + a + "}" for a in args))
+            else:
+                out.append(latex[tok.pos:end])
+            pos = end
+    except LatexWalkerError:  # the end of the input, or LaTeX it cannot read: as written
+        out.append(latex[pos:])
+    return "".join(out)
+
+
+def quoted(latex: str, pos: int) -> tuple[str, str]:
+    """The token of ``latex`` at ``pos`` as written, with its boundaries (``\\cot``, not
+    ``\\cotfrac``; ``\\left\\|``), and the construct it is (``"a delimiter"``, ``""``)."""
+    from pylatexenc.latexwalker import LatexWalker, LatexWalkerError
+
+    w = LatexWalker(latex, tolerant_parsing=True)
+    try:
+        tok = w.get_token(pos, environments=False)
+    except LatexWalkerError:
+        return latex[pos:pos + 1], ""
+    if tok.tok != "macro":
+        return latex[tok.pos:tok.pos + max(tok.len, 1)].strip() or latex[pos:pos + 1], ""
+    text = "\\" + tok.arg
+    if tok.arg in ("left", "right") or re.fullmatch(r"[bB]igg?[lr]?", tok.arg):
+        m = re.match(r"\s*(\\[A-Za-z]+|\\.|.)", latex[tok.pos + len(text):])
+        text += m.group(1) if m else ""
+    if tok.arg in ("operatorname", "mathrm", "text", "mathbf", "boldsymbol", "mathsf"):
+        m = re.match(r"\s*\{[^{}]*\}", latex[tok.pos + len(text):])
+        text += m.group(0).strip() if m else ""
+    construct = next((c for r, c in _CONSTRUCTS if r.match("\\" + tok.arg)), "a macro")
+    return text, construct
+
+
+def caret(text: str, pos: int, width: int = 1) -> str:
+    """The input with carets under ``width`` characters from ``pos``."""
+    return f"  {text}\n  {' ' * pos}{'^' * max(width, 1)}"
+
+
+def tree(latex: str):
+    """lark's parse tree of the LaTeX (its unbraced arguments braced, :func:`braced`), or a
+    ``LatexError`` that quotes the offending token with its boundaries, puts carets under it
+    and names the construct: ``unknown macro \\foo at position 13``, ``unexpected \\theta
+    (a Greek letter) at position 9``."""
+    from rigidsym.latex.shapes import LatexError
+
+    text = braced(latex)
+    _AlignedLayout.text = text
+    try:
+        return parser().parse(text)
+    except _Glued as exc:
+        token, construct = quoted(text, exc.pos)
+        raise LatexError(f"unknown macro {token} at position {exc.pos}:\n"
+                         f"{caret(text, exc.pos, len(token))}", f"unknown macro {token}") from None
+    except lark.UnexpectedCharacters as exc:
+        pos = exc.pos_in_stream
+        rest = text[pos:]
+        named = re.match(r"\\(operatorname|mathrm|text)\s*\{\s*([^}]*?)\s*\}", rest)
+        if named:
+            raise LatexError(f"unknown operator {named.group(2)!r} "
+                             f"(\\{named.group(1)}{{{named.group(2)}}}) at position {pos}:\n"
+                             f"{caret(text, pos, len(named.group(0)))}",
+                             f"unknown macro {named.group(0)}") from None
+        token, construct = quoted(text, pos)
+        if token.startswith("\\"):
+            what = f"unknown macro {token}" if construct == "a macro" else \
+                f"{token} ({construct}) cannot be read here"
+            raise LatexError(f"{what} at position {pos}:\n{caret(text, pos, len(token))}",
+                             f"unknown macro {token}") from None
+        raise LatexError(f"unexpected {rest[:1]!r} at position {pos}:\n{caret(text, pos)}",
+                         "syntax") from None
+    except lark.UnexpectedToken as exc:
+        pos = exc.token.start_pos if exc.token.start_pos is not None else len(text)
+        expected = _expected(exc.expected)
+        if exc.token.type == "$END":
+            what, width = "end of input", 1
+        else:
+            token, construct = quoted(text, pos)
+            token = token if token.startswith("\\") else str(exc.token)
+            what = f"{token} ({construct})" if construct else repr(str(exc.token))
+            width = len(token)
+        raise LatexError(f"unexpected {what} at position {pos}:\n{caret(text, pos, width)}\n"
+                         f"  expected one of: {expected}", "syntax") from None
+    except lark.UnexpectedEOF as exc:
+        raise LatexError(f"unexpected end of input; expected one of: "
+                         f"{_expected(exc.expected)}", "syntax") from None
+
+
+_TERMINALS = {"LETTER": "a letter", "GREEK": "a Greek letter", "NUMBER": "a number",
+              "RELOP": "= or \\equiv", "BOLD": "\\mathbf", "ACCENT": "an accent",
+              "FUNC": "a function (\\sin ...)", "BEGIN_MATRIX": "\\begin{bmatrix}",
+              "LEFT_OPEN": "\\left(", "RIGHT_CLOSE": "\\right)", "LEFT_NORM": "\\left\\|",
+              "RIGHT_NORM": "\\right\\|", "LEFT_ABS": "\\left|", "RIGHT_ABS": "\\right|",
+              "SUBATOM": "a subscript", "SUPTOKEN": "a superscript", "_SEP": ", or \\quad"}
+
+
+def _expected(names) -> str:
+    """What the parser expected, in the LaTeX a reader writes (a literal as written, a
+    class of tokens in words), not the grammar's terminal names."""
+    out = []
+    names = [n for n in names if n not in _AlignedLayout.always_accept] or list(names)
+    for n in sorted(names):
+        try:
+            pattern = parser().get_terminal(n).pattern
+        except KeyError:
+            pattern = None
+        word = _TERMINALS.get(n) or (pattern.value if isinstance(
+            pattern, lark.lexer.PatternStr) else None)
+        if word and word not in out:
+            out.append(word)
+    return ", ".join(out[:10]) + (" ..." if len(out) > 10 else "")

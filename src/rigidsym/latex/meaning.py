@@ -7,6 +7,8 @@ under ``read as:``; docs/check-latex.md lists every rule.
   it: the symbol itself, which depends on the argument as its model says. Any other
   ``x(...)`` is a product (``a(b + c)``, ``A(\\mathbf{x} + \\mathbf{y})``). A symbol applied
   to two different arguments is refused (:mod:`rigidsym.latex.letting`).
+- ``[x]`` of a 3-vector (Lynch-Park's bracket): the cross-product matrix, printed ``[x]`` as
+  written, never as the chapter's ``CPM(x)`` (:class:`BracketCpm`).
 - ``I_3``, ``\\mathbf{I}_{3}``, ``\\mathbf{I}_{3\\times 3}``, ``\\mathbf{1}_3``: the identity of
   that size; ``I_n``, ``I``: the identity sized by its neighbours. ``0_{3\\times 3}``,
   ``0_{3}``: the zero matrix (vector) of that size. Any other subscript of ``I`` (the
@@ -19,11 +21,31 @@ import re
 
 import sympy as sp
 
+from rigidsym.algebra.operators import Cpm
 from rigidsym.latex.shapes import LatexError, SizedIdentity, SizedZero, _as_scalar, _shape
 from rigidsym.latex.table import lookup
 
 __all__: list[str] = []
 
+
+
+class BracketCpm(Cpm):
+    """A reader's ``[x]`` of a 3-vector: the cross-product matrix (the chapter's ``CPM(x)``,
+    MR's ``[x]``), printed back as the reader wrote it."""
+
+    def doit(self, **hints):
+        return as_written(super().doit(**hints))
+
+    def _sympystr(self, printer):
+        return f"[{printer._print(self.args[0])}]"
+
+    def _latex(self, printer):
+        return rf"\left[{printer._print(self.args[0])}\right]"
+
+
+def as_written(h):
+    """The hat ``h`` of a reader's bracket, printed back as a bracket."""
+    return BracketCpm(*h.args) if type(h) is Cpm else h
 
 
 _TIME = sp.Symbol("t", real=True)  # the plain letter t (rigidsym.latex.parser)

@@ -18,16 +18,15 @@ from dataclasses import dataclass
 import lark
 import sympy as sp
 
-from rigidsym.algebra.operators import Cross, Det, Vect
+from rigidsym.algebra.operators import Det, Vect
+from rigidsym.latex.bookrules import BookRules, index_key, sup_word
 from rigidsym.latex.lexing import Parsed, Relation, parser
 from rigidsym.latex.meaning import MeaningRules
 from rigidsym.latex.shapes import (
     LatexError,
-    _as_block,
     _as_scalar,
     _default_glyph,
     _fit,
-    _fit_blocks,
     _product,
     _shape,
     _size_identity,
@@ -42,7 +41,7 @@ __all__ = ["LatexError", "Relation", "Parsed", "parser"]
 _TIME = sp.Symbol("t", real=True)  # the plain letter t: time, the argument of p(t)
 
 
-class _Build(MeaningRules, VocabRules, lark.Transformer):
+class _Build(MeaningRules, VocabRules, BookRules, lark.Transformer):
     """Tree -> sympy, in the declaration vocabulary (module docstring); ``reader``: a
     reader's LaTeX, ``[x]`` of a vector its hat, ``I`` the identity (``latex/vocab.py``)."""
 
@@ -68,7 +67,10 @@ class _Build(MeaningRules, VocabRules, lark.Transformer):
         return ("one", "1")
 
     def subscript(self, items):
-        return ("sub", "".join(str(i) for i in items))
+        parts = [str(i) for i in items]  # a space after a Greek letter before a letter
+        return ("sub", "".join(p + " " if p.startswith("\\") and p[-1].isalpha() and
+                               k + 1 < len(parts) and parts[k + 1][:1].isalpha() else p
+                               for k, p in enumerate(parts)))
 
     def times(self, _):
         return "\\times "
@@ -79,7 +81,7 @@ class _Build(MeaningRules, VocabRules, lark.Transformer):
     def calsub(self, items):
         return "\\mathcal{" + str(items[0]) + "}" + (str(items[1]) if len(items) > 1 else "")
 
-    def _key(self, base, rest, accent=None) -> str:
+    def _key(self, base, rest, accent=None, pre="") -> str:
         kind, letter = base
         core = {"bold": f"\\mathbf{{{letter}}}" if not letter.startswith("\\")
                 else f"\\boldsymbol{{{letter}}}",
@@ -87,6 +89,7 @@ class _Build(MeaningRules, VocabRules, lark.Transformer):
                 "cal": f"\\mathcal{{{letter}}}"}[kind]
         if accent:
             core = f"{accent}{{{core}}}"
+        core = pre + core
         for r in rest:
             if isinstance(r, tuple):
                 core += "_{" + r[1] + "}"
@@ -95,6 +98,8 @@ class _Build(MeaningRules, VocabRules, lark.Transformer):
         return core
 
     def glyph(self, items):
+        if isinstance(items[0], lark.Token) and items[0].type == "LEFT_INDEX":
+            return self._resolve(items[1], items[2:], None, pre=index_key(str(items[0])))
         return self._resolve(items[0], items[1:], None)
 
     def accented(self, items):
@@ -102,6 +107,8 @@ class _Build(MeaningRules, VocabRules, lark.Transformer):
         if not isinstance(inner, _GlyphKey):
             raise LatexError(f"{accent} over an expression: expected a glyph", "accent")
         base, rest = inner.base, list(inner.rest) + list(items[2:])
+        if accent == "\\dot" and not items[2:] and self.timed(inner.key):  # d/dt of X(t)
+            return self.velocity(inner.key, inner.value)
         self.glyphs.pop(inner.key, None)  # only the accented glyph is a symbol here
         return self._resolve(base, rest, (inner.accent or "") + accent if inner.accent
                              else accent, inner)
@@ -110,13 +117,13 @@ class _Build(MeaningRules, VocabRules, lark.Transformer):
         key = f"\\overrightarrow{{{items[0]}}}"
         return self._symbol(key, None)
 
-    def _resolve(self, base, rest, accent, inner=None):
+    def _resolve(self, base, rest, accent, inner=None, pre=""):
         if inner is not None:  # an accent over a glyph that has its own sub/primes
             key = f"{accent}{{{inner.key}}}" + "".join(
                 "_{" + r[1] + "}" if isinstance(r, tuple) else str(r)
                 for r in rest[len(inner.rest):])
         else:
-            key = self._key(base, rest, accent)
+            key = self._key(base, rest, accent, pre)
         kind = base[0]
         sized = self._sized(key, base, rest, accent)  # I, I_3, \mathbf{1}_3 (latex.meaning)
         if sized is not None:
@@ -137,6 +144,8 @@ class _Build(MeaningRules, VocabRules, lark.Transformer):
             return _GlyphKey(key, base, rest, accent, sp.ZeroMatrix(rows, cols))
         if kind == "plain" and base[1] == "t" and not rest and not accent:
             return _GlyphKey(key, base, rest, accent, _TIME)
+        if accent in ("\\vec", "\\underline") and kind == "plain":  # vector fonts
+            base = ("bold", base[1])
         return _GlyphKey(key, base, rest, accent, self._symbol(key, base))
 
     def _symbol(self, key, base):
@@ -248,13 +257,6 @@ class _Build(MeaningRules, VocabRules, lark.Transformer):
     def frac(self, items):
         return self.div(items)
 
-    def cross(self, items):
-        a, b = (_value(i) for i in items)
-        if _shape(a) != (3, 1) or _shape(b) != (3, 1):
-            raise LatexError(f"\\times between {_words(a)} and {_words(b)}: expected two "
-                             f"3-vectors", "shapes")
-        return Cross(a, b)
-
     def dot(self, items):
         a, b = (_value(i) for i in items)
         if _shape(a) is None or _shape(b) is None:
@@ -266,6 +268,8 @@ class _Build(MeaningRules, VocabRules, lark.Transformer):
 
     def power(self, items):
         x, sup = _value(items[0]), items[1]
+        if sup != "T" and not sup.lstrip("-").isdigit():
+            return self.book_power(x, sup)
         if sup == "T":
             if _shape(x) is None:
                 raise LatexError("^T of a scalar: expected a matrix or vector", "shapes")
@@ -280,20 +284,17 @@ class _Build(MeaningRules, VocabRules, lark.Transformer):
         return x ** n
 
     def sup(self, items):
-        return str(items[0])
-
-    def norm(self, items):
-        x = _value(items[0])
-        if _shape(x) is None or _shape(x)[1] != 1:
-            raise LatexError(f"\\|...\\| of {_words(x)}: expected a vector", "shapes")
-        return sp.sqrt(_as_scalar(x.T * x))
+        return sup_word(str(items[0]))
 
     def func(self, items):
         name, x = str(items[0]), _value(items[1])
         x = _as_scalar(x) if "det" not in name else x
         fn = name.split("{")[-1].rstrip("}").lstrip("\\")
+        fn = "tr" if fn in ("Tr", "trace") else fn
         if fn in ("sin", "cos", "tan"):
             return getattr(sp, fn)(x)
+        if fn in ("cot", "sec", "csc"):  # in the sines and cosines the engine decides
+            return {"cot": sp.cos(x) / sp.sin(x), "sec": 1 / sp.cos(x), "csc": 1 / sp.sin(x)}[fn]
         if fn == "arctan":
             return sp.atan(x)
         if fn == "arccos":
@@ -341,18 +342,6 @@ class _Build(MeaningRules, VocabRules, lark.Transformer):
         self.braces.append((label, body))
         return _Brace(body)
 
-    def matrix(self, items):
-        rows = [r for r in items if isinstance(r, list)]
-        cells = _fit_blocks([[_as_block(c) for c in row] for row in rows])
-        try:
-            return sp.BlockMatrix(cells) if any(len(r) > 1 for r in cells) or len(cells) > 1 \
-                else cells[0][0]
-        except ValueError as exc:
-            raise LatexError(f"a matrix whose blocks do not fit: {exc}", "shapes") from exc
-
-    def row(self, items):
-        return [_value(i) for i in items if not isinstance(i, lark.Token)]
-
     # ---- relations
     def chain(self, items):
         exprs = [_value(i) for i in items if not isinstance(i, lark.Token)]
@@ -362,7 +351,9 @@ class _Build(MeaningRules, VocabRules, lark.Transformer):
 
     def start(self, items):
         for t in items:
-            if isinstance(t, lark.Token):  # "\\text{for } phi \\neq 0": a side condition
+            if isinstance(t, lark.Token) and t.type == "DECLARE":
+                self.declared(str(t))
+            elif isinstance(t, lark.Token):  # "\\text{for } phi \\neq 0": a side condition
                 self.readings.append(f"side condition not checked: {t}")
         return [i for i in items if not isinstance(i, lark.Token)]
 

@@ -3,14 +3,12 @@
 
 from __future__ import annotations
 
-import re
-
 import lark
 import sympy as sp
 
-from rigidsym.latex.lexing import Parsed, Relation, parser
+from rigidsym.latex.lexing import Parsed, Relation, tree
 from rigidsym.latex.parser import _Build, _value
-from rigidsym.latex.shapes import LatexError, _as_scalar, _caret, _shape, loose
+from rigidsym.latex.shapes import LatexError, _as_scalar, _shape, loose
 
 __all__ = ["parse_latex"]
 
@@ -79,30 +77,6 @@ def parse_latex(latex: str, section: str | None = "*", overrides: dict | None = 
 
 
 def _tree(latex: str):
-    """lark's parse tree, or a :class:`LatexError` that says where and what was expected."""
-    try:
-        return parser().parse(latex)
-    except lark.UnexpectedCharacters as exc:
-        pos = exc.pos_in_stream
-        rest = latex[pos:]
-        named = re.match(r"\\(operatorname|mathrm|text)\s*\{\s*([^}]*?)\s*\}", rest)
-        if named:
-            raise LatexError(f"unknown operator {named.group(2)!r} "
-                             f"(\\{named.group(1)}{{{named.group(2)}}}) at position {pos}:\n"
-                             f"{_caret(latex, pos)}", f"unknown macro {named.group(0)}") from None
-        if rest.startswith("\\"):
-            macro = "\\" + "".join(ch for ch in rest[1:].split("{")[0].split(" ")[0]
-                                   if ch.isalpha())
-            raise LatexError(f"unknown macro {macro} at position {pos}:\n"
-                             f"{_caret(latex, pos)}", f"unknown macro {macro}") from None
-        raise LatexError(f"unexpected {rest[:1]!r} at position {pos}:\n{_caret(latex, pos)}",
-                         "syntax") from None
-    except lark.UnexpectedToken as exc:
-        pos = exc.token.start_pos if exc.token.start_pos is not None else len(latex)
-        expected = ", ".join(sorted(exc.expected)[:8])
-        what = "end of input" if exc.token.type == "$END" else repr(str(exc.token))
-        raise LatexError(f"unexpected {what} at position {pos}:\n{_caret(latex, pos)}\n"
-                         f"  expected one of: {expected}", "syntax") from None
-    except lark.UnexpectedEOF as exc:
-        raise LatexError(f"unexpected end of input; expected one of: "
-                         f"{', '.join(sorted(exc.expected)[:8])}", "syntax") from None
+    """lark's parse tree, or a :class:`LatexError` that says where and what was expected
+    (:func:`rigidsym.latex.lexing.tree`: pylatexenc's boundaries of the macros)."""
+    return tree(latex)

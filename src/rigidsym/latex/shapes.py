@@ -75,6 +75,9 @@ def _default_glyph(key: str, base) -> Glyph:
 
 
 def _name_from_key(key: str) -> str:
+    m = re.match(r"\{\}((?:[\^_]\{[^{}]*\})+)(.+)$", key)  # {}^{A}_{B}R: ^A_B R (issue 40)
+    if m:
+        return re.sub(r"[{}]", "", m.group(1)) + " " + _name_from_key(m.group(2))
     s = re.sub(r"\\(mathbf|boldsymbol|mathcal)\{([^}]*)\}", r"\2", key)
     s = re.sub(r"\\(dot|ddot|tilde|hat|bar)\{([^}]*)\}", lambda m: m.group(2) + m.group(1), s)
     s = s.replace("\\", "").replace("{", "").replace("}", "")

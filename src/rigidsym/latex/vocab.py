@@ -27,6 +27,7 @@ import lark
 import sympy as sp
 
 from rigidsym.algebra import motions
+from rigidsym.latex.meaning import as_written
 from rigidsym.latex.shapes import LatexError, _as_scalar, _shape, _words
 
 __all__: list[str] = []
@@ -144,7 +145,7 @@ class VocabRules:
         self._note("[x] of a 3-vector (6-vector) read as its so(3) (se(3)) matrix hat(x) "
                    "(MR (3.30), (3.85)); a bracket holding a sum, a scalar or a matrix "
                    "groups; write ( ) to group a vector")
-        return motions.hat(v)
+        return as_written(motions.hat(v))  # printed [x] as written (latex.meaning)
 
     # ---- derivatives
     def deriv_op(self, items):
@@ -160,10 +161,8 @@ class VocabRules:
         if not isinstance(v, sp.Symbol):
             raise LatexError(f"a derivative with respect to {_words(v)}{self._named(v)}: "
                              f"expected a scalar variable (d\\theta)", "shapes")
-        if v.name == "t":  # the declared kinds are constants, not functions of time
-            raise LatexError("d/dt: write the book's time derivative \\dot{X} (a symbol of "
-                             "its own); the declared kinds are not functions of time",
-                             "unknown macro d/dt")
+        if v.name == "t":  # of the symbols declared functions of time, X(t) (bookrules)
+            return self.time_derivative(self._val(x))
         self._note("d/dv: the vocabulary's derivative diff(X, v) (\\dot{X} stays the time "
                    "derivative)")
         return motions.diff(_as_scalar(x), v)

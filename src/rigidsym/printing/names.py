@@ -17,6 +17,10 @@ _GREEK = {
     "upsilon": "υ", "phi": "φ", "chi": "χ", "psi": "ψ", "omega": "ω",
     "Gamma": "Γ", "Delta": "Δ", "Theta": "Θ", "Lambda": "Λ", "Xi": "Ξ", "Pi": "Π",
     "Sigma": "Σ", "Phi": "Φ", "Psi": "Ψ", "Omega": "Ω",
+    # TeX's variants, each a glyph of its own (issue 40: "read as" printed varphi): \phi is
+    # printed φ throughout, so \varphi takes the other form, ϕ; likewise ϵ for \varepsilon
+    "varphi": "ϕ", "vartheta": "ϑ", "varepsilon": "ϵ", "varrho": "ϱ", "varpi": "ϖ",
+    "varsigma": "ς", "varkappa": "ϰ", "Upsilon": "Υ",
 }
 _ACCENTS = ("ddot", "dot", "tilde", "hat", "bar")
 _COMBINING = {"dot": "\u0307", "ddot": "\u0308", "tilde": "\u0303", "hat": "\u0302",

@@ -61,7 +61,11 @@ class _BookNotation:
 
     def _print_Trace(self, expr):
         d = _dot_operands(expr)
-        return self._dot(*d) if d else self._trace(expr.arg)
+        if d:
+            return self._dot(*d)
+        if tuple(expr.arg.shape) == (1, 1):  # a reader's 1×1 product: the scalar as written
+            return self._print(expr.arg)     # (aᵀ CPM(b) a, not tr(aᵀ CPM(b) a); issue 40)
+        return self._trace(expr.arg)
 
     def _print_MatrixElement(self, expr):
         d = _dot_operands(expr)
@@ -130,7 +134,9 @@ class BookStrPrinter(_BookNotation, StrPrinter):
         return self.parenthesize(expr.arg, PRECEDENCE["Pow"], strict=True) + "ᵀ"
 
     def _dot(self, a, b) -> str:
-        return f"({self._print(a)}·{self._print(b)})"
+        a, b = (f"({self._print(x)})" if type(x).__name__ == "Cross" else self._print(x)
+                for x in (a, b))  # (a × b)·a, not a × b·a
+        return f"({a}·{b})"
 
     def _trace(self, arg) -> str:
         return f"tr({self._print(arg)})"
@@ -271,7 +277,9 @@ class BookLatexPrinter(_BookNotation, LatexPrinter):
         return r"\mathbf{O}"
 
     def _dot(self, a, b) -> str:
-        return rf"\left({self._print(a)} \cdot {self._print(b)}\right)"
+        a, b = (rf"\left({self._print(x)}\right)" if type(x).__name__ == "Cross" else self._print(x)
+                for x in (a, b))
+        return rf"\left({a} \cdot {b}\right)"
 
     def _trace(self, arg) -> str:
         return rf"\mathrm{{tr}}\left({self._print(arg)}\right)"

@@ -7,12 +7,14 @@ HTML (deterministic: fixed id salt, no date, text as paths).
 
 from __future__ import annotations
 
+import hashlib
+import json
 from pathlib import Path
 
 from rigidsym._io import write_atomic
 from rigidsym.checking.worked import EXERCISE_IDS, exercise_module, render_markdown, solve
 
-__all__ = ["write_report", "svg_text", "figure_file"]
+__all__ = ["write_report", "svg_text", "figure_file", "rendered"]
 
 TITLE = "Chapter 3 exercises, solved with computer algebra"
 
@@ -49,10 +51,45 @@ def _figure(s, figures: dict[str, str]) -> str:
 
 def write_report(out_dir: Path) -> list[Path]:
     """Report hook: write ``exercises.md``, ``exercises.html`` (maths as MathML, figures
-    inline) and one SVG per figure into ``out_dir``; return the paths written."""
+    inline) and one SVG per figure into ``out_dir``; return the paths written.
+
+    The files are kept in the user cache under the keys of the solutions they render
+    (:mod:`rigidsym.checking.worked.solution_store`) and the package: while nothing changed
+    they are written from there, nothing solved or drawn (issue 39)."""
+    files = rendered()
+    if files is None:
+        files = _render()
+        from rigidsym import _cache
+
+        _cache.put(_bundle_path(), json.dumps(files).encode())
+    return [write_atomic(Path(out_dir) / name, text) for name, text in files.items()]
+
+
+def _bundle_path() -> Path:
+    from rigidsym import _cache
+    from rigidsym.checking.worked import parameters, read_data, solution_store
+
+    h = hashlib.sha256(b"exercise report 1\0")  # the keys name the package's digest
+    for i in EXERCISE_IDS:
+        d = read_data(parameters(i), {}, None)
+        h.update(solution_store.path(i, exercise_module(i).__name__, d).name.encode())
+    key = h.hexdigest()
+    return _cache.folder("verdicts") / key[:2] / f"exercises-{key}.json"
+
+
+def rendered() -> dict[str, str] | None:
+    """The exercise report's files (``{name: text}``) as kept in the user cache, or
+    ``None`` when something they depend on changed."""
+    from rigidsym import _cache
+
+    data = _cache.get(_bundle_path())
+    return None if data is None else json.loads(data)
+
+
+def _render() -> dict[str, str]:
+    """The exercise report's files, ``{name: text}`` in writing order (figures first)."""
     from rigidsym.report.html import markdown_to_html
 
-    out_dir = Path(out_dir)
     sols = [solve(i) for i in EXERCISE_IDS]
     parts = [f"# {TITLE}", "", "| exercise | status | checked |", "|---|---|---|"]
     parts += [f"| [{s.id}](#ex-{s.id[2:]}) | {s.status} | {str(s.checked).lower()} |"
@@ -65,8 +102,5 @@ def write_report(out_dir: Path) -> list[Path]:
         if image:
             parts += [image, ""]
     text = "\n".join(parts)
-    written = [write_atomic(out_dir / name, svg) for name, svg in figures.items()]
-    written.append(write_atomic(out_dir / "exercises.md", text))
-    written.append(write_atomic(out_dir / "exercises.html",
-                                markdown_to_html(text, TITLE, figures)))
-    return written
+    return {**figures, "exercises.md": text,
+            "exercises.html": markdown_to_html(text, TITLE, figures)}

@@ -6,6 +6,8 @@ component dumps; ``full=True`` adds them (``chapter3-full.md``, never committed)
 
 from __future__ import annotations
 
+import re
+
 from rigidsym.checking.checker import NUMERIC_DIGITS, NUMERIC_POINTS, Outcome
 from rigidsym.latex.transcription import transcription_words
 from rigidsym.printing.labels import label_text, latex_spans
@@ -55,7 +57,10 @@ def undecided_reasons(rec: dict) -> list[str]:
            for m in rec["members"] if m["status"] == "undecided"]
     if rec["verdict"] == "undecided" and not out:
         out = [rec["decision"] or "no reason recorded"]
-    return out
+    # the deciders' reasons quote sympy's strings: powers and roots as a reader writes them
+    sup = str.maketrans("0123456789", "⁰¹²³⁴⁵⁶⁷⁸⁹")
+    return [re.sub(r"\*\*(\d+)", lambda m: m.group(1).translate(sup),
+                   why.replace("sqrt(", "√(")) for why in out]
 
 
 def _members(rec: dict) -> list[str]:

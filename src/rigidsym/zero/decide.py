@@ -41,6 +41,7 @@ import sympy as sp
 from rigidsym.zero.exact import _size, degree_bound, evaluate, to_rational
 from rigidsym.zero.plan import Plan, Unsupported, make_plan
 from rigidsym.zero.program import Program, TooLarge, parametrised, run_exact, run_rational
+from rigidsym.zero.roots import decide_roots, has_roots
 
 __all__ = [
     "Unsupported",
@@ -171,21 +172,31 @@ def _probe(prog: Program, plan: Plan, rng: random.Random, n: int):
     return None
 
 
-def decide_zero(entries, seed: int = 0, probes: int = 2) -> ZeroResult:
+def decide_zero(entries, seed: int = 0, probes: int = 2, plan: Plan | None = None) -> ZeroResult:
     """Decide whether every expression in ``entries`` is identically zero on the
-    constraint set (see the module docstring for the method and its guarantees)."""
+    constraint set (see the module docstring for the method and its guarantees).
+
+    ``plan``: the parametrisation to use (that of larger expressions whose parts these are,
+    so a witness values every parameter of theirs); by default made from ``entries``. An
+    entry with a square root (a norm) irrational at the sample points is decided through
+    its square (:mod:`rigidsym.zero.roots`).
+    """
     entries = [sp.sympify(e) for e in entries]
     entries = [e for e in entries if e != 0]
     if not entries:
-        return ZeroResult(True, "exact-cancel", "all entries cancel structurally")
+        return ZeroResult(True, "exact-cancel", "all entries cancel structurally", plan=plan)
+    top = plan is None
     try:
-        plan = make_plan(entries)
+        plan = make_plan(entries) if top else plan
     except Unsupported as exc:
         return ZeroResult(None, "undecided", str(exc))
     rng = random.Random(seed)
     try:
         prog = parametrised(entries, plan)  # once: shared by the probes and cancellation
     except Unsupported as exc:
+        if top and "irrational root" in str(exc) and any(has_roots(e) for e in entries):
+            return decide_roots(entries, lambda xs: decide_zero(xs, seed, probes, plan),
+                                ZeroResult)
         return ZeroResult(None, "undecided", str(exc), plan=plan)
 
     def probe(n):
@@ -222,4 +233,7 @@ def decide_zero(entries, seed: int = 0, probes: int = 2) -> ZeroResult:
                           f"Schwartz-Zippel: degree <= {d}, |S| = 2^32+1, {n} points, "
                           f"P(false zero) <= {sp.N(prob, 3)}", plan=plan)
     except Unsupported as exc:
+        if top and "irrational root" in str(exc) and any(has_roots(e) for e in entries):
+            return decide_roots(entries, lambda xs: decide_zero(xs, seed, probes, plan),
+                                ZeroResult)
         return ZeroResult(None, "undecided", str(exc), plan=plan)

@@ -40,9 +40,16 @@ def _power(x, ev, one, lift):
         return _rational_root(ev(b), int(n.p), int(n.q))
     bv = ev(b) if n.is_Rational else None
     if isinstance(bv, sp.Rational):  # a counterexample's values (sympy numbers): ‖ω̂‖ = 2
-        r = _rational_root(Fraction(int(bv.p), int(bv.q)), int(n.p), int(n.q))
+        try:
+            r = _rational_root(Fraction(int(bv.p), int(bv.q)), int(n.p), int(n.q))
+        except Unsupported:  # an irrational norm shown in closed form (√21/4), exact
+            return bv**n if bv >= 0 or n.q % 2 else _unsupported(x)
         return sp.Rational(r.numerator, r.denominator)
     raise Unsupported(f"power {x}")
+
+
+def _unsupported(x):
+    raise Unsupported(f"even root of a negative number: {x}")
 
 
 def _trig(x, plan: Plan, point: dict, one):

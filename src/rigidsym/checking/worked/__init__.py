@@ -21,6 +21,7 @@ import sympy as sp
 
 from rigidsym.zero.decide import decide_zero
 
+from . import solution_store
 from .worked_data import IllPosed, Param, Parameters, read_data, read_value  # noqa: F401
 from .worked_render import (
     render_html,
@@ -363,6 +364,24 @@ def solve(ex_id: str, tol=None, **data) -> Solution:
     if key in _CACHE:
         _CACHE.move_to_end(key)
         return _CACHE[key]
+    book = not data and tol is None  # the book's data: kept on disk too (the report's)
+    where = solution_store.path(ex_id, exercise_module(ex_id).__name__, d) if book else None
+    s = solution_store.stored(where, ex_id, Solution) if where else None
+    if s is None:
+        s = _solved(ex_id, params, d)
+        if where:
+            solution_store.store(where, s)
+    _CACHE[key] = s
+    while len(_CACHE) > _CACHE_SIZE:
+        _CACHE.popitem(last=False)
+    return s
+
+
+def _solved(ex_id: str, params: Parameters, d) -> Solution:
+    """Solve ``ex_id`` on the read data ``d`` (see :func:`solve`)."""
+    from rigidsym import _work
+
+    _work.count("solve", ex_id)
     solver: Callable[..., Solution] = exercise_module(ex_id).solve
     kwargs = dict(d.values, **({"tol": d.tol} if params.measured else {}))
     try:
@@ -378,7 +397,4 @@ def solve(ex_id: str, tol=None, **data) -> Solution:
                       f"the exercise takes measurements (Exercises 3.4, 3.14, 3.19)") from None
     s.assumptions.extend(d.notes)
     s.floats, s.data, s.tol = d.floats, dict(d.values), d.tol
-    _CACHE[key] = s
-    while len(_CACHE) > _CACHE_SIZE:
-        _CACHE.popitem(last=False)
     return s

@@ -1,0 +1,194 @@
+"""The kernels of the Lie-group maps (issue 38): each composes the formula functions of
+:mod:`rigidsym.derivations.lie_maps` (verified by ``derivations/lie_groups.py``); their
+removable singularities at ``w = 0`` become certified series branches in the generator
+(:mod:`rigidsym.codegen.removable`). The logarithms reuse the natural invariants' branches
+near ``phi = pi`` (the axis from the symmetric part of ``Q``).
+
+Not yet in the book's ``KERNELS`` (``derivations/kernels_spec.py``): joining them needs a full
+``rigidsym generate`` (slow on a loaded 2-core machine: the 6 x 6 inverse Jacobian of SE(3)
+takes the removable pass minutes) and the names pinned in ``tests/test_public_api.py``.
+Generate them alone: ``rigidsym generate --module M --out DIR`` with ``M`` holding
+``KERNELS = LIE_KERNELS``, then ``rigidsym.kernels.load(DIR)``.
+"""
+
+from __future__ import annotations
+
+from functools import partial
+
+import sympy as sp
+
+from rigidsym.codegen.spec import Arg, Branch, Kernel, Out
+from rigidsym.declare import vect
+
+from .kernel_wiring import Q_ARG, formula
+
+__all__ = ["LIE_KERNELS"]
+
+_LM = "rigidsym.derivations.lie_maps."
+_IDS = {"so3": ("sola:exp-so3", "sola:log-exp-so3", "sola:exp-log-so3"),
+        "jac": ("sola:jl-definition", "sola:jr-definition", "sola:jl-jr", "sola:jl-R-jr",
+                "sola:jl-w", "sola:jl-inverse"),
+        "se3": ("sola:exp-se3", "sola:log-exp-se3"),
+        "se3jac": ("barfoot:se3-jl-definition", "barfoot:se3-jl-xi",
+                   "barfoot:se3-jl-inverse"),
+        "quat": ("sola:quat-of-rotation", "sola:quat-product")}
+W = Arg("w", (3,), "any", "rotation vector w = phi e [rad]")
+XI = Arg("xi", (6,), "any", "exponential coordinates [w; v] ([rad]; [m])")
+T_ARG = Arg("T", (4, 4), "any", "homogeneous transform [[R, p], [0, 1]] (R a rotation)")
+
+
+def _call(out, fn):
+    def build(**kw):
+        return {out: formula(_LM + fn)(*kw.values())}
+    return build
+
+
+def _log_small(Q):
+    # theta < pi/2 (tr Q > 1): theta = asin(|vect Q|), w = (asin s / s) vect(Q): the
+    # quotient is removable at s = 0 (codegen.removable)
+    v = vect(Q)
+    s = sp.sqrt((v.T * v)[0])
+    return {"w": sp.asin(s) / s * v}
+
+
+def _log_main(Q):
+    return {"w": formula(_LM + "rotation_vector_from_rotation")(Q)}
+
+
+def _log_near_pi(Q, k):
+    from .kernels_spec import _ni_near_pi
+
+    ni = _ni_near_pi(Q, k)
+    return {"w": ni["phi"] * ni["e"]}
+
+
+def _log_when(Q, k):
+    from .kernels_spec import _ni_when
+
+    return _ni_when(Q, k)
+
+
+def _log_small_when(Q):
+    return Q.trace() > 1
+
+
+def _log_branches(wrap):
+    near = tuple(Branch(f"near_pi_{k}", partial(_log_when, k=k),
+                        lambda k=k, **kw: wrap(_log_near_pi(kw["Q"], k), kw),
+                        doc=f"cos(phi) < -1/2, Q[{k},{k}] the largest diagonal entry: the axis "
+                            f"from column {k} of the symmetric part (never acos)")
+                 for k in range(3))
+    small = Branch("small", lambda Q: _log_small_when(Q),
+                   lambda **kw: wrap(_log_small(kw["Q"]), kw),
+                   doc="phi < pi/2: w = (asin s / s) vect(Q), s = |vect(Q)|, no acos")
+    return (*near, small)
+
+
+def _se3_near_pi(T, k):
+    w = _log_near_pi(T[:3, :3], k)["w"]
+    Ji = formula(_LM + "rotation_vector_left_jacobian_inverse")(w)
+    return {"xi": sp.Matrix.vstack(w, Ji * T[:3, 3])}
+
+
+_SE3_BRANCHES = tuple(
+    Branch(f"near_pi_{k}", lambda T, k=k: _log_when(T[:3, :3], k),
+           lambda T, k=k: _se3_near_pi(T, k),
+           doc=f"cos(phi) < -1/2, R[{k},{k}] the largest diagonal entry: w from column {k} "
+               "of the symmetric part of R")
+    for k in range(3))
+
+
+def _er_main(Q):
+    return {"eta": formula(_LM + "euler_rodrigues_from_rotation")(Q)}
+
+
+def _er_branch(Q, k):
+    # Shepperd: tr Q <= 0 and Q[k,k] the largest diagonal entry: r_k = sqrt(1 + 2 Q_kk -
+    # tr Q) / 2 (at least 1/2), the rest from the off-diagonal sums; signed so r0 >= 0
+    i, j = (k + 1) % 3, (k + 2) % 3
+    rk = sp.sqrt(1 + 2 * Q[k, k] - Q.trace()) / 2
+    r = [0, 0, 0]
+    r[k] = rk
+    r[i] = (Q[i, k] + Q[k, i]) / (4 * rk)
+    r[j] = (Q[j, k] + Q[k, j]) / (4 * rk)
+    r0 = (Q[j, i] - Q[i, j]) / (4 * rk)
+    sign = sp.Piecewise((-1, r0 < 0), (1, True))
+    return {"eta": sign * sp.Matrix([*r, r0])}
+
+
+def _er_when(Q, k):
+    d = [Q[n, n] for n in range(3)]
+    return sp.And(Q.trace() <= 0, *[d[k] >= d[n] for n in range(3) if n != k])
+
+
+LIE_KERNELS = [
+    Kernel(name="rotation_from_rotation_vector", summary="Exp of so(3): the rotation of w.",
+           formula="Q = 1 + (sin t / t) [w] + ((1 - cos t) / t^2) [w]^2, t = |w|",
+           ids=_IDS["so3"], sources=(_LM + "rotation_from_rotation_vector",), args=(W,),
+           outputs=(Out("Q", (3, 3), "rotation matrix"),),
+           build=_call("Q", "rotation_from_rotation_vector")),
+    Kernel(name="rotation_vector_from_rotation", summary="Log of SO(3): the rotation vector "
+           "w = phi e of Q, |w| in [0, pi].",
+           formula="w = (phi / sin phi) vect(Q); asin near 0, the symmetric part near pi",
+           ids=_IDS["so3"], sources=(_LM + "rotation_vector_from_rotation",), args=(Q_ARG,),
+           outputs=(Out("w", (3,), "rotation vector [rad]"),), build=_log_main,
+           branches=_log_branches(lambda r, kw: r),
+           notes="At phi = pi exactly, w and -w are both logarithms; the sign follows "
+                 "natural_invariants_from_rotation's rule."),
+    *[Kernel(name=f"rotation_vector_{side}_jacobian{inv}",
+             summary=f"The {side} Jacobian{' inverse' if inv else ''} of SO(3) at w.",
+             formula=f"J_{side[0]}{'^-1' if inv else ''}(w), Solà et al. 2018 App. B",
+             ids=_IDS["jac"], sources=(_LM + f"rotation_vector_{side}_jacobian{inv}",),
+             args=(W,), outputs=(Out("J", (3, 3), ""),),
+             build=_call("J", f"rotation_vector_{side}_jacobian{inv}"),
+             singular="|w| = 2 pi k, k != 0" if inv else "")
+      for side in ("left", "right") for inv in ("", "_inverse")],
+    Kernel(name="transform_from_exponential_coordinates",
+           summary="Exp of se(3): the transform of xi = [w; v].",
+           formula="T = [[Exp(w), J_l(w) v], [0, 1]]", ids=_IDS["se3"],
+           sources=(_LM + "transform_from_exponential_coordinates",), args=(XI,),
+           outputs=(Out("T", (4, 4), "homogeneous transform"),),
+           build=_call("T", "transform_from_exponential_coordinates")),
+    *[Kernel(name=f"exponential_coordinates_left_jacobian{inv}",
+             summary=f"The left Jacobian{' inverse' if inv else ''} of SE(3) at xi = [w; v] "
+                     "(6 x 6, angular first).",
+             formula="[[J_l(w), 0], [Q(v, w), J_l(w)]] (Barfoot Sec. 7.1.5, reordered)"
+             if not inv else "the block inverse of [[J_l, 0], [Q, J_l]]",
+             ids=_IDS["se3jac"], sources=(_LM + f"exponential_coordinates_left_jacobian{inv}",),
+             args=(XI,), outputs=(Out("J", (6, 6), ""),),
+             build=_call("J", f"exponential_coordinates_left_jacobian{inv}"),
+             singular="|w| = 2 pi k, k != 0" if inv else "",
+             # the derivative of a 6 x 6 Jacobian (216 entries of degree 5) is seldom
+             # wanted and costs minutes of generation: none
+             jacobian=False)
+      for inv in ("", "_inverse")],
+    Kernel(name="exponential_coordinates_from_transform",
+           summary="Log of SE(3): the exponential coordinates xi = [w; v] of T, |w| in "
+                   "[0, pi].",
+           formula="w = Log(R), v = J_l(w)^-1 p", ids=_IDS["se3"],
+           sources=(_LM + "exponential_coordinates_from_transform",), args=(T_ARG,),
+           outputs=(Out("xi", (6,), "[w; v]"),),
+           build=lambda T: {"xi": formula(_LM + "exponential_coordinates_from_transform")(T)},
+           branches=_SE3_BRANCHES, singular="phi = 0 (the main formula's 0/0)",
+           singular_arg="T",
+           notes="T is not validated (its rotation block is read as a rotation)."),
+    Kernel(name="euler_rodrigues_from_rotation",
+           summary="The Euler-Rodrigues parameters eta = [r; r0] of Q, r0 >= 0.",
+           formula="r0 = sqrt(1 + tr Q) / 2, r = vect(Q) / (2 r0); Shepperd's branches for "
+                   "tr Q <= 0", ids=_IDS["quat"],
+           sources=(_LM + "euler_rodrigues_from_rotation",), args=(Q_ARG,),
+           outputs=(Out("eta", (4,), "[r; r0], unit, r0 >= 0"),), build=_er_main,
+           branches=tuple(Branch(f"shepperd_{k}", partial(_er_when, k=k),
+                                 partial(_er_branch, k=k),
+                                 doc=f"tr Q <= 0, Q[{k},{k}] the largest diagonal entry")
+                          for k in range(3)),
+           notes="At phi = pi exactly (r0 = 0) eta and -eta are both parameters of Q."),
+    Kernel(name="euler_rodrigues_product",
+           summary="The product of Euler-Rodrigues parameters (Hamilton, scalar last).",
+           formula="[a0 b + b0 a + a x b; a0 b0 - a . b]", ids=_IDS["quat"],
+           sources=(_LM + "euler_rodrigues_product",),
+           args=(Arg("eta1", (4,), "any", "[r; r0] of the first rotation"),
+                 Arg("eta2", (4,), "any", "[r; r0] of the second rotation")),
+           outputs=(Out("eta", (4,), "[r; r0] of Q(eta1) Q(eta2)"),),
+           build=_call("eta", "euler_rodrigues_product")),
+]
