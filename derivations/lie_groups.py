@@ -24,7 +24,6 @@ from __future__ import annotations
 
 import sympy as sp
 
-from rigidsym.algebra.primitives import rotation_from_euler_rodrigues
 from rigidsym.declare import (
     TIME,
     Rel,
@@ -32,6 +31,7 @@ from rigidsym.declare import (
     angle,
     cpm,
     equation,
+    rotation_from_euler_rodrigues,
     rotation_from_natural_invariants,
     unit_vector,
     unit_vector4,

@@ -21,8 +21,7 @@ from __future__ import annotations
 
 import sympy as sp
 
-from rigidsym.algebra.lie_vectors import norm3
-from rigidsym.algebra.primitives import as_vector, cpm, vect
+from rigidsym.declare import as_vector, cpm, norm3, vect
 
 __all__ = ["rotation_from_rotation_vector", "rotation_vector_from_rotation",
            "transform_from_exponential_coordinates", "exponential_coordinates_from_transform",

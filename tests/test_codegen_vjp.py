@@ -17,8 +17,10 @@ from rigidsym.codegen import generator as G
 from rigidsym.codegen.vjp import cotangent_names, jvp_program, tangent_names, vjp_program
 from tests._arrays_cases import sample
 
-#: a rational kernel with a singular set, a trig one with an angle (half-angle rewrite)
-NAMES = ["instant_screw_axis", "rotation_from_natural_invariants"]
+#: a rational kernel with a singular set, a trig one with an angle (half-angle rewrite), and
+#: one whose forward-mode program once read a temp before defining it (a local derivative,
+#: cos(x2), named by a temp defined later: UnboundLocalError under jax.jacfwd)
+NAMES = ["instant_screw_axis", "rotation_from_natural_invariants", "N_matrix_dot"]
 
 
 def _program(name):
@@ -57,3 +59,22 @@ def test_vjp_and_jvp_are_the_generated_jacobian_contracted(name):
     np.testing.assert_allclose(got, J @ t, rtol=1e-12, atol=1e-12 * np.abs(J).max())
     # reverse mode costs a small multiple of the forward program, however many entries J has
     assert back.ops <= 5 * prog.ops and fwd.ops <= 5 * prog.ops, (back.ops, fwd.ops, prog.ops)
+
+
+@pytest.mark.slow
+def test_every_product_program_defines_a_temp_before_reading_it():
+    from rigidsym.codegen.jacobians import has_jacobian
+    for kernel in importlib.import_module(G.BOOK_ORIGIN).KERNELS:
+        if not has_jacobian(kernel):
+            continue
+        kc = G.compile_kernel(kernel)
+        prog = kc.variants[0].program
+        ins = [s for _, syms in kc.inputs for s in syms]
+        for p, extra in ((vjp_program(prog, ins), cotangent_names(len(prog.outputs))),
+                         (jvp_program(prog, ins), tangent_names(len(ins)))):
+            seen = set(ins) | {sp.Symbol(n) for n in extra}
+            for x, e in p.temps:
+                assert sp.sympify(e).free_symbols <= seen, (kernel.name, x)
+                seen.add(x)
+            for o in p.outputs:
+                assert sp.sympify(o).free_symbols <= seen, kernel.name

@@ -23,6 +23,7 @@ DECLARE = [
     # issue 28: the vocabulary of rigid motions
     "twist", "wrench", "hat", "vee", "transform", "transform_inverse", "Ad", "ad", "ad_dual",
     "expm", "logm", "diff", "acos", "atan2", "ORDERS",
+    "norm3",  # issue 38
 ]
 KERNELS = [
     "H_matrix", "H_matrix_dot", "H_tilde", "H_tilde_dot", "L_matrix", "L_matrix_dot",

@@ -192,3 +192,15 @@ def _np_exp(w):
     mp.mp.dps = 50
     W = mp.matrix([[0, -w[2], w[1]], [w[2], 0, -w[0]], [-w[1], w[0], 0]])
     return np.array(mp.expm(W).tolist(), dtype=float)
+
+
+def test_a_quotient_call_pickles():
+    # the generator's worker pool sends programs back pickled; the classes are made at run
+    # time (found by `rigidsym generate --module` of the Lie kernels: PicklingError)
+    import pickle
+
+    from rigidsym.codegen.removable import quotient
+
+    t = sp.Symbol("t")
+    e = 2 * quotient(sp.sin(S) / S)(t) + quotient((1 - sp.cos(S)) / S**2)(t + 1)
+    assert pickle.loads(pickle.dumps(e)) == e

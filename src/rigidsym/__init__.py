@@ -30,7 +30,7 @@ _DECLARE = (
     "rotation_from_quaternion", "linear_invariants", "euler_rodrigues_parameters",
     "as_vector", "block", "eye3", "cancel_matrix",
     "twist", "wrench", "hat", "vee", "transform", "transform_inverse", "Ad", "ad", "ad_dual",
-    "expm", "logm", "diff", "acos", "atan2", "ORDERS",
+    "expm", "logm", "diff", "acos", "atan2", "ORDERS", "norm3",
 )
 _WHERE = {**{n: "rigidsym.api" for n in _API}, **{n: "rigidsym.declare" for n in _DECLARE},
           "load_module": "rigidsym.checking.deciding.usermodules",

@@ -33,6 +33,7 @@ import sympy as sp
 from rigidsym.algebra import lie as _lie
 from rigidsym.algebra import operators as _operators
 from rigidsym.algebra import symbols as _symbols
+from rigidsym.algebra.lie_vectors import norm3
 from rigidsym.algebra.motions import (
     Ad,
     ad,
@@ -86,6 +87,8 @@ __all__ = [
     # the vocabulary of rigid motions (issue 28; rigidsym.algebra.lie)
     "twist", "wrench", "hat", "vee", "transform", "transform_inverse", "Ad", "ad", "ad_dual",
     "expm", "logm", "diff", "acos", "atan2", "ORDERS",
+    # issue 38: the angle of a rotation vector, read through w = theta e by the zero test
+    "norm3",
 ]
 
 def _printed_from_latex(eq, st):

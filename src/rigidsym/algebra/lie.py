@@ -22,6 +22,14 @@ from __future__ import annotations
 import sympy as sp
 from sympy.printing.precedence import PRECEDENCE
 
+from rigidsym.algebra.lie_vectors import (
+    _axial,
+    _cpm,
+    _transform,
+    exp_of_vector,
+    log_explicit,
+    log_se3_explicit,
+)
 from rigidsym.algebra.operators import _explicit
 
 __all__ = ["ORDERS", "LieOp", "Hat", "Vee", "Transform", "TransformInverse", "AdT", "AdV",
@@ -32,15 +40,6 @@ ORDERS = {"angeles": 0, "modern-robotics": 0, "featherstone": 0, "pinocchio": 1,
 
 
 # --------------------------------------------------------------------- explicit formulas
-def _cpm(w) -> sp.Matrix:
-    return sp.Matrix([[0, -w[2], w[1]], [w[2], 0, -w[0]], [-w[1], w[0], 0]])
-
-
-def _axial(A) -> sp.Matrix:
-    h = sp.Rational(1, 2)
-    return sp.Matrix([h * (A[2, 1] - A[1, 2]), h * (A[0, 2] - A[2, 0]), h * (A[1, 0] - A[0, 1])])
-
-
 def _split(V, lin: int) -> tuple[sp.Matrix, sp.Matrix]:
     V = sp.Matrix(V)
     a, b = V[:3, :], V[3:, :]
@@ -64,11 +63,6 @@ def _vee(X, lin: int) -> sp.Matrix:
     if X.shape == (3, 3):
         return _axial(X)
     return _join(_axial(X[:3, :3]), X[:3, 3], lin)
-
-
-def _transform(R, p) -> sp.Matrix:
-    return sp.Matrix.vstack(sp.Matrix.hstack(sp.Matrix(R), sp.Matrix(p)),
-                            sp.Matrix([[0, 0, 0, 1]]))
 
 
 def _transform_inverse(T) -> sp.Matrix:
@@ -293,27 +287,10 @@ class Logm(LieOp):
         return shapes[0]
 
     def value(self, R):
-        from rigidsym.algebra.lie_vectors import log_se3_explicit
-
         return log_explicit(R) if sp.Matrix(R).shape == (3, 3) else log_se3_explicit(R)
 
     def _entry(self, i, j, **kwargs):
         raise NotImplementedError("logm: its entries exist once the model is substituted")
-
-
-def log_explicit(R) -> sp.Matrix:
-    """``theta / (2 sin theta) (R - R^T)``, ``theta = acos((tr R - 1) / 2)`` (MR (3.53)-(3.54)).
-
-    ``sin theta`` is kept unevaluated (sympy would write ``sqrt(1 - c^2)`` for
-    ``sin(acos(c))``), so that the zero test's principal branch
-    (:mod:`rigidsym.checking.deciding.branches`) makes it ``sin b`` for an angle ``b`` on
-    ``[0, pi]`` with ``cos b = (tr R - 1) / 2``.
-    """
-    R = sp.Matrix(R)
-    theta = sp.acos((R.trace() - 1) / 2)
-    s = sp.sin(theta, evaluate=False)
-    return (R - R.T).applyfunc(lambda e: sp.Mul(theta, e, sp.Pow(2 * s, -1, evaluate=False),
-                                                 evaluate=False))
 
 
 # --------------------------------------------------------------------- the exponential
@@ -386,8 +363,6 @@ def exp_explicit(X, lin: int = 0, theta=None, unit: bool = False) -> sp.Matrix:
     if not (unit or is_unit(w)):
         if K.shape == (4, 4) and all(e == 0 for e in w) and is_unit(K[:3, 3]):
             return _transform(sp.eye(3), K[:3, 3] * theta)
-        from rigidsym.algebra.lie_vectors import exp_of_vector
-
         return exp_of_vector(K * theta)
     W = _cpm(w)
     R = sp.eye(3) + sp.sin(theta) * W + (1 - sp.cos(theta)) * W * W

@@ -15,9 +15,38 @@ from __future__ import annotations
 
 import sympy as sp
 
-from rigidsym.algebra.lie import _axial, _cpm, _transform, log_explicit
+__all__ = ["norm3", "exp_of_vector", "log_explicit", "log_se3_explicit"]
 
-__all__ = ["norm3", "exp_of_vector", "log_se3_explicit"]
+
+# the explicit formulas rigidsym.algebra.lie builds on: kept here, below it, so that the
+# import goes one way
+def _cpm(w) -> sp.Matrix:
+    return sp.Matrix([[0, -w[2], w[1]], [w[2], 0, -w[0]], [-w[1], w[0], 0]])
+
+
+def _axial(A) -> sp.Matrix:
+    h = sp.Rational(1, 2)
+    return sp.Matrix([h * (A[2, 1] - A[1, 2]), h * (A[0, 2] - A[2, 0]), h * (A[1, 0] - A[0, 1])])
+
+
+def _transform(R, p) -> sp.Matrix:
+    return sp.Matrix.vstack(sp.Matrix.hstack(sp.Matrix(R), sp.Matrix(p)),
+                            sp.Matrix([[0, 0, 0, 1]]))
+
+
+def log_explicit(R) -> sp.Matrix:
+    """``theta / (2 sin theta) (R - R^T)``, ``theta = acos((tr R - 1) / 2)`` (MR (3.53)-(3.54)).
+
+    ``sin theta`` is kept unevaluated (sympy would write ``sqrt(1 - c^2)`` for
+    ``sin(acos(c))``), so that the zero test's principal branch
+    (:mod:`rigidsym.checking.deciding.branches`) makes it ``sin b`` for an angle ``b`` on
+    ``[0, pi]`` with ``cos b = (tr R - 1) / 2``.
+    """
+    R = sp.Matrix(R)
+    theta = sp.acos((R.trace() - 1) / 2)
+    s = sp.sin(theta, evaluate=False)
+    return (R - R.T).applyfunc(lambda e: sp.Mul(theta, e, sp.Pow(2 * s, -1, evaluate=False),
+                                                 evaluate=False))
 
 
 def norm3(w) -> sp.Expr:

@@ -83,6 +83,15 @@ class QuotientBase(sp.Function):
     def _sympystr(self, printer):
         return f"{self.label}({printer._print(self.args[0])})"
 
+    def __reduce_ex__(self, protocol):
+        # the class is made at run time (quotient()): a worker of the generator's pool
+        # sends the call back as (h, T), rebuilt by quotient() in the parent
+        return (_rebuild, (self.h, self.args[0]))
+
+
+def _rebuild(h, t):
+    return quotient(h)(t)
+
 
 def _frac(f):
     return int(f.numerator), int(f.denominator)

@@ -41,7 +41,7 @@ def jvp_program(program: Program, inputs: list[sp.Symbol]) -> Program:
     tangents (JAX transposes it for reverse mode). A temp's tangent is the sum of its local
     derivatives times its arguments' tangents; temps nothing reads are dropped."""
     tan = dict(zip(inputs, (sp.Symbol(n) for n in tangent_names(len(inputs))), strict=True))
-    known = _named(program.temps)
+    known: dict = {}  # only the temps defined so far: a tangent is computed in between
     body = []
 
     def d(expr) -> sp.Expr:
@@ -51,6 +51,7 @@ def jvp_program(program: Program, inputs: list[sp.Symbol]) -> Program:
 
     for k, (x, e) in enumerate(program.temps):
         body.append((x, e))
+        known.update(_named([(x, e)]))
         dx = d(e)
         if dx != 0:
             tan[x] = sp.Symbol(f"_d{k}")
