@@ -16,7 +16,6 @@ README's command; the ``slow`` share sweeps every kernel of the JSON.
 from __future__ import annotations
 
 import json
-import shutil
 import sys
 from pathlib import Path
 
@@ -30,6 +29,7 @@ sys.path.insert(0, str(ROOT / "benchmarks"))
 pytest.importorskip("flint")
 import _accuracy_points as P  # noqa: E402
 import accuracy as A  # noqa: E402
+from test_accuracy import _backends  # noqa: E402  (C and NumPy, or NumPy without a compiler)
 
 DATA = json.loads((ROOT / "derivations" / "kernels_accuracy.json").read_text("utf-8"))
 MARGIN = 1.5
@@ -42,14 +42,6 @@ FRESH32 = [3e-2, 3e-5, 3e-8, 3e-17]
 QUICK = ["screw_of_displacement", "rotation_from_natural_invariants",
          "plucker_from_points", "instant_screw_axis_with_jacobians",
          "euler_angle_rates_zyz_body"]
-
-
-def _backends() -> list[str]:
-    if K.use_backend("c") != "c":
-        if shutil.which("gcc") or shutil.which("cc"):
-            pytest.fail("a C compiler is present but the C backend did not build")
-        return ["numpy"]
-    return ["c", "numpy"]
 
 
 def _stated(name: str, dtype) -> float:
