@@ -23,7 +23,7 @@ is not judged (``beyond``: no digit of the result is determined by the rounded i
 Usage (from the repository root)::
 
     python benchmarks/accuracy.py [--kernels A,B] [--dtypes float64,float32]
-        [--backends c,numpy] [--random N] [--json PATH] [--md PATH]
+        [--backends c,numpy] [--random N] [--seeds 0,1] [--json PATH] [--md PATH]
 
 The full sweep of the 134 kernels takes tens of minutes on one core; ``tests/test_accuracy.py``
 runs a float64 subsample.
@@ -181,14 +181,19 @@ def kernel_names(include_jacobians: bool = True) -> list[str]:
 
 
 def sweep(names, dtypes, backends, n_random=8, small=None, progress=None, refs=None,
-          runner=None) -> list[Row]:
-    """Every row of ``names`` x ``dtypes`` x regimes (``small``: the approach steps)."""
+          runner=None, seeds=(0,)) -> list[Row]:
+    """Every row of ``names`` x ``dtypes`` x regimes (``small``: the approach steps), the
+    regimes drawn with each of ``seeds`` (more seeds: more points behind each bound)."""
     rows = []
     for name in names:
         k = R.kernel_of(name)
         for dt in dtypes:
-            for regime, pts in P.regimes(k, dt, n_random=n_random, small=small).items():
-                rows += judge(name, regime, pts, dt, backends, refs, runner)
+            for seed in seeds:
+                for regime, pts in P.regimes(k, dt, n_random=n_random, small=small,
+                                             seed=seed).items():
+                    # the refs cache is keyed by regime and index: one seed only
+                    rows += judge(name, regime, pts, dt, backends,
+                                  refs if len(seeds) == 1 else None, runner)
         if progress:
             progress(name, rows)
     return rows
@@ -265,6 +270,8 @@ def main(argv=None) -> int:
     ap.add_argument("--dtypes", default="float64,float32")
     ap.add_argument("--backends", default="c,numpy")
     ap.add_argument("--random", type=int, default=8, help="random points per kernel")
+    ap.add_argument("--seeds", default="0", help="comma-separated seeds of the regimes' "
+                    "points (tests/test_bounds_fresh.py re-measures at another)")
     ap.add_argument("--no-jacobians", action="store_true")
     ap.add_argument("--json", default="", help="write every row here")
     ap.add_argument("--md", default="", help="write the markdown table here")
@@ -291,7 +298,8 @@ def main(argv=None) -> int:
                   f"{r.err:.2g} kappa {r.kappa:.2g} spurious {len(r.spurious)} at "
                   f"{(r.spurious or [r.worst_point])[0]}", flush=True)
 
-    rows = sweep(names, dtypes, backends, a.random, progress=progress)
+    rows = sweep(names, dtypes, backends, a.random, progress=progress,
+                 seeds=[int(x) for x in a.seeds.split(",")])
     if a.json:
         Path(a.json).write_text(json.dumps([asdict(r) for r in rows], indent=1))
     if a.data:
