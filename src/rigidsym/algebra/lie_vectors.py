@@ -53,7 +53,14 @@ def norm3(w) -> sp.Expr:
     """``theta = sqrt(w^T w)``, the angle of the rotation vector ``w`` (3 x 1).
 
     The zero test reads it through the polar parametrisation ``w = theta e`` (``theta`` an
-    angle on ``[0, pi]``, ``e`` a unit vector: :mod:`rigidsym.checking.deciding.branches`).
+    angle on ``[0, pi]``, ``e`` a unit vector: :mod:`rigidsym.checking.deciding.branches`);
+    Solà, Deray & Atchuthan (2018), App. B, ``theta = ||theta u||``.
+
+    Args:
+        w: the rotation vector, 3 entries (a sympy Matrix or a sequence) [rad].
+
+    Returns:
+        The scalar ``sqrt(w1**2 + w2**2 + w3**2)`` [rad], a sympy expression.
     """
     w = sp.Matrix(w)
     return sp.sqrt(sum(x**2 for x in w))
