@@ -7,24 +7,11 @@ from __future__ import annotations
 
 import pytest
 import sympy as sp
+from test_check_latex import _cli, _forget_latex_ids  # noqa: F401  (autouse fixture, CLI helper)
 
 import rigidsym
-from rigidsym.checking.deciding import registry
-from rigidsym.cli import main
 
 AB = "a: vector; b: vector"
-
-
-@pytest.fixture(autouse=True)
-def _forget_latex_ids():
-    yield
-    registry.forget_module("rigidsym.latex.letting")
-
-
-def _cli(capsys, *args) -> tuple[int, str, str]:
-    code = main(["check", *args])
-    out = capsys.readouterr()
-    return code, out.out, out.err
 
 
 # ------------------------------------------------------- item 2: a matrix word in a product

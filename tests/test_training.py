@@ -12,23 +12,13 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from test_lie_oracles import _kernels  # noqa: F401  (autouse: skip without the Lie kernels)
 
 pytestmark = pytest.mark.extra
 
 _EX = Path(__file__).resolve().parents[1] / "examples" / "train_rigid_motion.py"
 
 
-def _need_lie_kernels():
-    from rigidsym import kernels
-
-    if not hasattr(kernels, "transform_from_exponential_coordinates"):
-        pytest.skip("the Lie-group kernels are not in generated/ yet "
-                    "(derivations/kernels_spec_lie.py: KERNELS += LIE_KERNELS, regenerate)")
-
-
-@pytest.fixture(autouse=True)
-def _kernels():
-    _need_lie_kernels()
 
 
 @pytest.fixture(scope="module")
