@@ -12,9 +12,16 @@ import sys
 from functools import cache
 from pathlib import Path
 
+import pytest
+
 from rigidsym.codegen.generator import check, default_out_dir, generate, write
 
 ROOT = Path(__file__).resolve().parents[1]
+
+# one worker generates once for the whole module (--dist loadgroup): a generation is 70 to
+# 100 s of CPU since the VJP/JVP programs and the removable-singularity pass joined it, and
+# each worker that ran one of these tests paid for its own
+pytestmark = pytest.mark.xdist_group("generated_fresh")
 
 
 @cache
@@ -54,6 +61,7 @@ def test_no_timestamps_or_absolute_paths():
         assert "/home/" not in text and "/root/" not in text, rel
 
 
+@pytest.mark.slow  # a second, independent generation in a subprocess
 def test_independent_of_hash_seed(tmp_path):
     env = dict(os.environ, PYTHONHASHSEED="4242")
     code = ("import sys; from rigidsym.codegen.generator import generate, write; "
@@ -64,6 +72,7 @@ def test_independent_of_hash_seed(tmp_path):
     assert default_out_dir() == ROOT / "generated"
 
 
+@pytest.mark.slow  # the CLI generates again; test_generated_is_fresh checks the same tree
 def test_cli_check_exit_code(capsys):
     from rigidsym.cli import main
     assert main(["generate", "--check"]) == 0
