@@ -80,7 +80,15 @@ class ArraySpace:
             # the generated vector-Jacobian product; None in a folder generated before it
             self._programs["vjp", name] = getattr(mod, "VJP", None)
             self._programs["jvp", name] = getattr(mod, "JVP", None)
+            # whether its program divides (a folder generated before the flag: assume so)
+            self._programs["divides", name] = getattr(mod, "DIVIDES", True)
         return v
+
+    def divides(self, name: str) -> bool:
+        """Kernel ``name``'s program has a denominator (else its singular mask is all
+        False)."""
+        self.variants(name)
+        return self._programs["divides", name]
 
     def vjp(self, name: str, mode: str = "vjp"):
         """The generated reverse-mode (``"vjp"``: ``f(*columns, *output cotangents) -> input
@@ -116,7 +124,10 @@ def columns(arrays: list, args: list[dict]) -> list:
             continue
         n = int(math.prod(a["shape"]))
         flat = x.reshape(tuple(x.shape[:len(x.shape) - len(a["shape"])]) + (n,))
-        cols.extend(flat[..., i] for i in range(n))
+        # torch's unbind: one dispatch for the n views (and one stack in its backward)
+        # instead of n indexings, a fixed cost of a call at small N (issue 38)
+        cols.extend(flat.unbind(-1) if hasattr(flat, "unbind") else
+                    (flat[..., i] for i in range(n)))
     return cols
 
 
@@ -185,10 +196,26 @@ def _evaluate(xp, variants: tuple, cols: list, stop_gradient: Callable) -> tuple
 
 
 def _singular(xp, dens, like):
-    sing = xp.zeros_like(like, dtype=bool) if hasattr(like, "dtype") else None
+    sing = None
     for d in dens:
-        sing = xp.logical_or(sing, d == 0)
+        sing = d == 0 if sing is None else xp.logical_or(sing, d == 0)
+    if getattr(sing, "shape", None) != like.shape:  # no denominator, or a constant one
+        zero = xp.zeros_like(like, dtype=bool)
+        sing = zero if sing is None else xp.logical_or(zero, sing)
     return sing
+
+
+def _same_batch(xs, args) -> tuple | None:
+    """The common batch shape of ``xs`` when they all have one (the usual call: no
+    broadcasting to work out), else None."""
+    first = None
+    for x, a in zip(xs, args, strict=True):
+        b = tuple(x.shape[:x.ndim - len(a["shape"])])
+        if first is None:
+            first = b
+        elif b != first:
+            return None
+    return first
 
 
 def _shp(s) -> str:
@@ -208,8 +235,10 @@ class Library:
     arrays and NumPy arrays they became), ``as_array(v, dtype, device, name)`` (convert, or
     raise naming ``name``), ``device(arrays)``, ``host(x)`` (a NumPy copy), ``make(space,
     name)`` (``f(*broadcast inputs) -> (*outputs, singular)``, with the derivative rule),
-    ``refuse(exc_type, message)`` (raises the refusals of :func:`modes`) and ``note(values)``
-    (a warning before conversion, or nothing); for the dtypes, ``floats`` (those accepted),
+    ``refuse(exc_type, message)`` (raises the refusals of :func:`modes`), ``note(values)``
+    (a warning before conversion, or nothing) and ``clear(mask)`` (True: the boolean array
+    ``mask`` is known to be all False without a device synchronisation or a trace: a
+    concrete array in host memory; False: unknown); for the dtypes, ``floats`` (those accepted),
     ``float32``, ``finfo``, ``float_dtype(v)`` (the library dtype of a floating library or
     NumPy array, else None) and ``cast(x, dtype)``.
     """
@@ -234,9 +263,22 @@ class Library:
     cast: Callable
     refuse: Callable = _raise
     note: Callable = lambda values: None
+    clear: Callable = lambda mask: False
 
 
 _BAD_KINDS = "bcOUSMmV"  # NumPy kinds that are no real numbers
+
+
+_FINFO: dict = {}
+
+
+def _finfo(lib: Library, dtype) -> tuple[float, int]:
+    """``(eps, bits)`` of a float dtype, cached (torch.finfo is built anew at every call)."""
+    key = (lib.backend, dtype)
+    if key not in _FINFO:
+        fi = lib.finfo(dtype)
+        _FINFO[key] = (float(fi.eps), int(fi.bits))
+    return _FINFO[key]
 
 
 def convert(lib: Library, values: tuple, args: list[dict]) -> tuple[list, Any, float]:
@@ -274,11 +316,11 @@ def convert(lib: Library, values: tuple, args: list[dict]) -> tuple[list, Any, f
             raise TypeError(f"{a['name']}: {v.dtype} is not supported; expected float16, "
                             "bfloat16, float32 or float64 (or integers)")
         if fd is not None and given:  # an array input, not a list or a Python number
-            eps.append(float(lib.finfo(fd).eps))
+            eps.append(_finfo(lib, fd)[0])
         arrays.append(v)
     dtype, device = lib.dtype(values, arrays), lib.device(arrays)
-    eps.append(float(lib.finfo(dtype).eps))
-    work = lib.float32 if lib.finfo(dtype).bits < 32 else dtype
+    eps.append(_finfo(lib, dtype)[0])
+    work = lib.float32 if _finfo(lib, dtype)[1] < 32 else dtype
     out = []
     for v, a in zip(arrays, args, strict=True):
         t = lib.as_array(v, work, device, a["name"])
@@ -335,8 +377,7 @@ class Space:
         if fn is None:
             return contract(xp, grads, self.jacobian(name, xs, singular), outs, args,
                             forward=False)
-        cols = [xp.where(singular, v, c)
-                for v, c in zip(self.progs.safe(name), columns(xs, args), strict=True)]
+        cols = self._safe_columns(name, xs, singular)
         gcols = []
         for g, o in zip(grads, outs, strict=True):
             gcols += ([0.0] * int(math.prod(o["shape"])) if g is None else columns([g], [o]))
@@ -353,11 +394,22 @@ class Space:
         if fn is None:
             return contract(xp, tangents, self.jacobian(name, xs, singular), outs, args,
                             forward=True, singular=singular)
-        cols = [xp.where(singular, v, c)
-                for v, c in zip(self.progs.safe(name), columns(xs, args), strict=True)]
-        flat = [xp.where(singular, 0.0, _full(xp, v, cols[0]))
-                for v in fn(*cols, *columns(tangents, args))]
+        cols = self._safe_columns(name, xs, singular)
+        flat = list(fn(*cols, *columns(tangents, args)))
+        if self.progs.divides(name):
+            flat = [xp.where(singular, 0.0, _full(xp, v, cols[0])) for v in flat]
         return shape_outputs(xp, flat, outs, cols[0])
+
+    def _safe_columns(self, name: str, xs, singular) -> list:
+        """The columns of the broadcast inputs ``xs`` with the safe point's in the
+        ``singular`` samples; none replaced for a kernel that never divides or (eager, on
+        the host: :attr:`Library.clear`) a mask with no sample set, a fixed cost of a call
+        at small N spared (issue 38)."""
+        cols = columns(xs, self.progs.meta[name]["args"])
+        if not self.progs.divides(name) or self.lib.clear(singular):
+            return cols
+        return [self.lib.xp.where(singular, v, c)
+                for v, c in zip(self.progs.safe(name), cols, strict=True)]
 
     def call(self, name: str, values: tuple, check, on_singular):
         """Kernel ``name`` on ``values`` (the public functions' body): convert, validate
@@ -367,15 +419,21 @@ class Space:
         meta = self.progs.meta[name]
         args = meta["args"]
         xs, dtype, eps = convert(lib, values, args)
-        check, on_singular = modes(check, on_singular, lib.traced(xs), lib.tracer, lib.refuse)
-        batch = broadcast_batch(xp.broadcast_shapes, xs, args)
+        traced = lib.traced(xs)
+        check, on_singular = modes(check, on_singular, traced, lib.tracer, lib.refuse)
+        batch = _same_batch(xs, args) if not traced else None
+        if batch is None:
+            batch = broadcast_batch(xp.broadcast_shapes, xs, args)
         if check:
             validate(xp, [lib.detach(x) for x in xs], args, eps)
-        full = [xp.broadcast_to(x, batch + tuple(a["shape"])) for x, a in zip(xs, args,
+        full = [x if not traced and tuple(x.shape) == batch + tuple(a["shape"]) else
+                xp.broadcast_to(x, batch + tuple(a["shape"])) for x, a in zip(xs, args,
                                                                              strict=True)]
         *res, sing = self.function(name)(*full)
         if res[0].dtype != dtype:  # float16, bfloat16: computed in float32, rounded once
             res = [lib.cast(r, dtype) for r in res]
+        if not check and not self.progs.divides(name):  # nothing to flag: no mask to read
+            return res[0] if len(res) == 1 else tuple(res)
         bad = sing
         if check:
             over = xp.zeros_like(sing)
