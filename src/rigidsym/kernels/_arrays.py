@@ -238,7 +238,10 @@ class Library:
     ``refuse(exc_type, message)`` (raises the refusals of :func:`modes`), ``note(values)``
     (a warning before conversion, or nothing) and ``clear(mask)`` (True: the boolean array
     ``mask`` is known to be all False without a device synchronisation or a trace: a
-    concrete array in host memory; False: unknown); for the dtypes, ``floats`` (those accepted),
+    concrete array in host memory; False: unknown), ``constant(fn)`` (``fn`` whose result
+    a tracer may take as a constant: torch.compile with ``dynamic=True`` made every float
+    read from an object symbolic, then restarted its analysis once per float, issue 38);
+    for the dtypes, ``floats`` (those accepted),
     ``float32``, ``finfo``, ``float_dtype(v)`` (the library dtype of a floating library or
     NumPy array, else None) and ``cast(x, dtype)``.
     """
@@ -264,6 +267,7 @@ class Library:
     refuse: Callable = _raise
     note: Callable = lambda values: None
     clear: Callable = lambda mask: False
+    constant: Callable = lambda fn: fn
 
 
 _BAD_KINDS = "bcOUSMmV"  # NumPy kinds that are no real numbers
@@ -338,6 +342,7 @@ class Space:
     def __init__(self, lib: Library, directory):
         self.lib = lib
         self.progs = ArraySpace.from_directory(directory, lib.backend)
+        self._safe = lib.constant(lambda name: self.progs.safe(name))
         self._fns = make_all(self.progs, lambda name: lib.make(self, name))
 
     def function(self, name: str) -> Callable:
@@ -351,7 +356,7 @@ class Space:
         xp, outs = self.lib.xp, self.progs.meta[name]["outputs"]
         cols = columns(xs, self.progs.meta[name]["args"])
         flat, sing = evaluate(xp, self.progs.variants(name), cols, self.lib.stop_gradient,
-                              self.progs.safe(name) if differentiated else None)
+                              self._safe(name) if differentiated else None)
         return (*shape_outputs(xp, flat, outs, cols[0]), sing)
 
     def jacobian(self, name: str, xs, singular) -> list:
@@ -362,7 +367,7 @@ class Space:
         nval = sum(math.prod(o["shape"]) for o in meta["outputs"])
         flat, _ = evaluate(self.lib.xp, self.progs.variants(name + SUFFIX),
                            columns(xs, meta["args"]), self.lib.stop_gradient,
-                           self.progs.safe(name), singular)
+                           self._safe(name), singular)
         return flat[nval:]
 
     def vjp(self, name: str, xs, grads: list, singular) -> list:
@@ -409,7 +414,7 @@ class Space:
         if not self.progs.divides(name) or self.lib.clear(singular):
             return cols
         return [self.lib.xp.where(singular, v, c)
-                for v, c in zip(self.progs.safe(name), cols, strict=True)]
+                for v, c in zip(self._safe(name), cols, strict=True)]
 
     def call(self, name: str, values: tuple, check, on_singular):
         """Kernel ``name`` on ``values`` (the public functions' body): convert, validate

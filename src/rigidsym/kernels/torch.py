@@ -227,7 +227,8 @@ _LIBRARY = _arrays.Library(
     device=lambda xs: next((x.device for x in xs if isinstance(x, torch.Tensor)), None),
     host=lambda x: x.cpu().numpy(), make=_make, refuse=_refuse, floats=_FLOATS,
     float32=torch.float32, finfo=torch.finfo, float_dtype=_float_dtype,
-    cast=lambda x, dtype: x.to(dtype), clear=_clear)
+    cast=lambda x, dtype: x.to(dtype), clear=_clear,
+    constant=getattr(torch.compiler, "assume_constant_result", lambda fn: fn))
 
 # load, the Euler-angle kernels, the lazy kernels: the same for both back-ends (_arrays_api)
 load, euler_rate_matrix, euler_angle_rates, __getattr__, __dir__, _space = \
