@@ -77,6 +77,15 @@ def _first(fn) -> float:
     return time.perf_counter() - t
 
 
+def _warm_inductor(torch) -> None:
+    """One small compile with gradient first, so that neither first-call time below pays
+    inductor's once-per-process start (imports, compile workers, headers)."""
+    with torch._inductor.config.patch(force_disable_caches=True):
+        x = torch.ones(8, dtype=torch.float64, requires_grad=True)
+        torch.compile(lambda v: (v.sin() * v).sum(), dynamic=True)(x).backward()
+    torch._dynamo.reset()
+
+
 def run_grad(sizes, reps: int = 9) -> tuple[list[dict], dict]:
     """Rows (one per kernel, dtype, N: seconds per mode and candidate) and the compile
     facts (first-call seconds, graph breaks)."""
@@ -89,6 +98,9 @@ def run_grad(sizes, reps: int = 9) -> tuple[list[dict], dict]:
     from rigidsym.kernels import torch as rk
 
     rows, facts = [], {}
+    _warm_inductor(torch)
+    jax.block_until_ready(jax.jit(jax.grad(lambda v: (jax.numpy.sin(v) * v).sum()))(
+        jax.numpy.ones(8)))  # and JAX's start
     for name in KERNELS:
         f = getattr(rk, name)
         tpeer, jpeer = _peers(name)
@@ -101,7 +113,7 @@ def run_grad(sizes, reps: int = 9) -> tuple[list[dict], dict]:
         first = [torch.from_numpy(x) for x in _inputs(name, sizes[0], np.float64)]
         firstj = [jax.device_put(x) for x in _inputs(name, sizes[0], np.float64)]
         comp, fact = {}, {}
-        for k in ("k", "h"):
+        for k in ("h", "k"):
             g = [t.clone().requires_grad_(True) for t in first]
             fact[f"breaks {k}"] = torch._dynamo.explain(eager[k])(*g).graph_break_count
             torch._dynamo.reset()
@@ -171,11 +183,11 @@ def facts_table(facts) -> str:
     return "\n".join(lines)
 
 
-def main(sizes=None) -> None:
+def main(sizes=None, reps: int = 9) -> None:
     import jax
     import torch
     before = os.getloadavg()
-    rows, facts = run_grad([int(s) for s in sizes or [1e3, 1e4, 1e5, 1e6]])
+    rows, facts = run_grad([int(s) for s in sizes or [1e3, 1e4, 1e5, 1e6]], reps)
     print(grad_table(rows))
     print()
     print(facts_table(facts))
@@ -188,4 +200,6 @@ def main(sizes=None) -> None:
 if __name__ == "__main__":
     ap = argparse.ArgumentParser()
     ap.add_argument("--sizes", nargs="+", type=float, default=None)
-    main(ap.parse_args().sizes)
+    ap.add_argument("--reps", type=int, default=9, help="timing samples (3 at N >= 1e6)")
+    a = ap.parse_args()
+    main(a.sizes, a.reps)
