@@ -25,6 +25,7 @@ import numpy as np
 
 from rigidsym._config import generated_dir
 from rigidsym._io import load_module
+from rigidsym.kernels import _arrays_rescue as _ar
 from rigidsym.kernels._arrays_checks import _raise, broadcast_batch, modes, safe_point, validate
 from rigidsym.kernels._errors import raise_flagged
 from rigidsym.kernels._jacobian import contract
@@ -185,9 +186,11 @@ def _evaluate(xp, variants: tuple, cols: list, stop_gradient: Callable) -> tuple
 
 
 def _singular(xp, dens, like):
+    # a denominator that overflowed to inf flags its sample too (issue 37): x / inf = 0 is
+    # a finite wrong value; eager calls re-run such samples in long double (_arrays_rescue)
     sing = xp.zeros_like(like, dtype=bool) if hasattr(like, "dtype") else None
     for d in dens:
-        sing = xp.logical_or(sing, d == 0)
+        sing = xp.logical_or(sing, (d == 0) | xp.isinf(d))
     return sing
 
 
@@ -361,27 +364,36 @@ class Space:
 
     def call(self, name: str, values: tuple, check, on_singular):
         """Kernel ``name`` on ``values`` (the public functions' body): convert, validate
-        (``check``), broadcast, evaluate, then flag the singular (and, checked, overflowed)
-        samples: an error (``on_singular="raise"``) or NaN there."""
+        (``check``), broadcast, evaluate, rescue the samples the program cannot compute in
+        its type (eager: :mod:`._arrays_rescue`, issue 37), then flag the singular samples
+        and those whose result does not fit the dtype: an error (``on_singular="raise"``)
+        or NaN there. ``check=False`` only skips validation."""
         lib, xp = self.lib, self.lib.xp
         meta = self.progs.meta[name]
         args = meta["args"]
         xs, dtype, eps = convert(lib, values, args)
-        check, on_singular = modes(check, on_singular, lib.traced(xs), lib.tracer, lib.refuse)
+        traced = lib.traced(xs)
+        check, on_singular = modes(check, on_singular, traced, lib.tracer, lib.refuse)
         batch = broadcast_batch(xp.broadcast_shapes, xs, args)
         if check:
             validate(xp, [lib.detach(x) for x in xs], args, eps)
         full = [xp.broadcast_to(x, batch + tuple(a["shape"])) for x, a in zip(xs, args,
                                                                              strict=True)]
-        *res, sing = self.function(name)(*full)
+        if traced:
+            full = _ar.traced_inputs(xp, full)
+        *res, bad = self.function(name)(*full)
+        if not traced:
+            res, bad = self._rescue(name, full, res, bad, batch)
         if res[0].dtype != dtype:  # float16, bfloat16: computed in float32, rounded once
             res = [lib.cast(r, dtype) for r in res]
-        bad = sing
-        if check:
-            over = xp.zeros_like(sing)
-            for r in res:
-                over = over | ~xp.isfinite(r.reshape(batch + (-1,))).all(-1)
-            bad = sing | (over & ~sing)
+        # a result that does not fit the dtype, from finite inputs (a NaN input's NaN is
+        # its IEEE value, issue 37)
+        over = xp.zeros_like(bad)
+        for r in res:
+            over = over | ~xp.isfinite(r.reshape(batch + (-1,))).all(-1)
+        for x in full:
+            over = over & xp.isfinite(x.reshape(batch + (-1,))).all(-1)
+        sing, bad = bad, bad | over
         if on_singular == "raise":
             if bool(bad.any()):  # the error path copies the masks to the host
                 raise_flagged(name, meta, lib.host(sing), lib.host(bad & ~sing),
@@ -390,3 +402,15 @@ class Space:
             res = [xp.where(bad.reshape(batch + (1,) * (r.ndim - len(batch))), xp.nan, r)
                    for r in res]
         return res[0] if len(res) == 1 else tuple(res)
+
+    def _rescue(self, name: str, full: list, res: list, sing, batch: tuple):
+        """Eager: the outputs with the flagged samples re-run in long double, and the
+        singular mask the wide run finds (:mod:`._arrays_rescue`)."""
+        lib, xp = self.lib, self.lib.xp
+        bits = int(lib.finfo(full[0].dtype).bits)
+        rows = _ar.flag_rows(xp, full, res, sing, batch, bits)
+        if not bool(rows.any()):
+            return res, sing
+        res, s, f = _ar.rescue(lib, self.progs, name, full, res, rows, batch, bits)
+        mask = lib.as_array(s.reshape(batch), None, lib.device(full), "singular")
+        return res, mask
