@@ -197,3 +197,29 @@ def test_issue_case_arrays(b):
     for check in (True, False):
         got = back(mod.plucker_from_points(to(p1), to(2 * p1 + 1e154), check=check))
         np.testing.assert_allclose(got, want, rtol=1e-15)
+
+
+@pytest.mark.parametrize("name", [pytest.param(n, marks=[] if n in QUICK_JAX else
+                                               [pytest.mark.slow]) for n in sorted(KERNELS)])
+def test_traced_jax_nan_policy_and_overflow(name):
+    """Under jax.jit (no host reads, so no rescue): the same NaN positions as C and NumPy for
+    a NaN/inf input, and a sample whose denominator overflows is NaN, never a finite wrong
+    value. Old main: plucker_from_points at |p| = 1e155 gave e = [0, -0, 0] under jit, and
+    an inf input its IEEE limits."""
+    mod, to, back = backend("jax")
+    import jax
+
+    call, specs = KERNELS[name]
+    names = [s["name"] for s in specs]
+    x, _ = nan_rows(specs, np.random.default_rng(4))
+    kw = {"check": False} if name == "euler_rate_matrix" else {"check": False,
+                                                                "on_singular": "nan"}
+    f = array_call(mod, name)
+    jitted = jax.jit(lambda *a: f(**dict(zip(names, a, strict=True))))
+    got = outs(jitted(*[to(x[n]) for n in names]), back)
+    for other, want in numpy_and_c(name, x, **kw).items():
+        assert_agree(got, want, 2.0**-40, ("jit", other, name))
+    if name == "plucker_from_points":
+        p1 = np.array([0.3, -0.7, 1.1]) * 1e155
+        kappa = back(jax.jit(mod.plucker_from_points)(to(p1), to(2 * p1 + 1e154)))
+        assert np.isnan(kappa).all(), kappa
