@@ -72,9 +72,10 @@ def numpy_and_c(name: str, x: dict, **kw) -> dict:
     return res
 
 
-def assert_agree(got: list, want: list, tol: float, label) -> None:
+def assert_agree(got: list, want: list, tol: float, label, atol: float = 0.0) -> None:
     """The same NaN positions; elsewhere within ``tol`` of ``want``, normwise per output
-    and sample (relative to the sample's largest finite entry of that output)."""
+    and sample (relative to the sample's largest finite entry of that output), plus
+    ``atol``."""
     for g, w in zip(got, want, strict=True):
         assert g.shape == w.shape, label
         np.testing.assert_array_equal(np.isnan(g), np.isnan(w), err_msg=str(label))
@@ -85,7 +86,8 @@ def assert_agree(got: list, want: list, tol: float, label) -> None:
         fin = ok & np.isfinite(w2)
         scale = np.where(fin, np.abs(w2), 0).max(1, keepdims=True)
         err = np.where(fin, np.abs(g2 - w2), 0).max(1, keepdims=True)
-        assert (err <= tol * scale).all(), (label, (err / np.where(scale > 0, scale, 1)).max())
+        assert (err <= tol * scale + atol).all(), (label,
+                                                   (err / np.where(scale > 0, scale, 1)).max())
 
 
 def nan_rows(specs: list, rng) -> tuple[dict, list]:
@@ -223,3 +225,27 @@ def test_traced_jax_nan_policy_and_overflow(name):
         p1 = np.array([0.3, -0.7, 1.1]) * 1e155
         kappa = back(jax.jit(mod.plucker_from_points)(to(p1), to(2 * p1 + 1e154)))
         assert np.isnan(kappa).all(), kappa
+
+
+def test_torch_rescued_row_derivative():
+    """A sample written by the long-double rescue (points at 1e155) has no derivative to
+    autograd: NaN in its inputs' gradient where its cotangent is nonzero, zero where it is
+    zero (no NaN leaks into a loss that ignores it), and the ordinary sample beside it keeps
+    the generated gradient (that of the same sample alone)."""
+    torch = pytest.importorskip("torch", reason="PyTorch is not installed (the [torch] extra)")
+    from rigidsym.kernels import torch as rt
+
+    f64 = torch.float64
+    p1 = torch.tensor([[0.3, -0.7, 1.1], [0.3, -0.7, 1.1]], dtype=f64)
+    p1 = (p1 * torch.tensor([[1e155], [1.0]], dtype=f64)).requires_grad_(True)
+    p2 = torch.tensor([[1.0, 2.0, 3.0], [1.0, 2.0, 3.5]], dtype=f64, requires_grad=True)
+    q1, q2 = p1[1:].detach().clone().requires_grad_(True), p2[1:].detach().clone()
+    rt.plucker_from_points(q1, q2.requires_grad_(True)).sum().backward()
+    rt.plucker_from_points(p1, p2)[1].sum().backward()
+    assert (p1.grad[0] == 0).all() and (p2.grad[0] == 0).all()
+    torch.testing.assert_close(p1.grad[1], q1.grad[0], rtol=0, atol=1e-15)
+    torch.testing.assert_close(p2.grad[1], q2.grad[0], rtol=0, atol=1e-15)
+    p1.grad = p2.grad = None
+    rt.plucker_from_points(p1, p2).sum().backward()
+    assert p1.grad[0].isnan().all() and p2.grad[0].isnan().all()
+    assert p1.grad[1].isfinite().all()

@@ -239,6 +239,10 @@ class Library:
     cast: Callable
     refuse: Callable = _raise
     note: Callable = lambda values: None
+    #: ``rescued(outputs, rows, inputs)``: the outputs, whose ``rows`` (a batch mask) hold
+    #: values of the long-double rescue, with no derivative there (NaN for a nonzero
+    #: cotangent, as autograd cannot follow the host); None: nothing differentiates eagerly
+    rescued: Callable | None = None
 
 
 class Space:
@@ -359,6 +363,8 @@ class Space:
         rows = _ar.flag_rows(xp, full, res, sing, batch, bits)
         if not bool(rows.any()):
             return res, sing
-        res, s, f = _ar.rescue(lib, self.progs, name, full, res, rows, batch, bits)
-        mask = lib.as_array(s.reshape(batch), None, lib.device(full), "singular")
-        return res, mask
+        res, s, put = _ar.rescue(lib, self.progs, name, full, res, rows, batch, bits)
+        dev = lib.device(full)
+        if lib.rescued is not None and put.any():
+            res = lib.rescued(res, lib.as_array(put.reshape(batch), None, dev, "rows"), full)
+        return res, lib.as_array(s.reshape(batch), None, dev, "singular")

@@ -31,7 +31,7 @@ __all__ = ["input_range", "flag_rows", "rescue", "traced_inputs", "AGREE"]
 #: inside which the package's programs stay within their bounds (measured: the first
 #: departures at 2^-44 .. 2^-48 for kinetic_energy, 2^64 for the transfers, 2^-96 for the
 #: normalised axes)
-_RANGES = {64: (2.0**-100, 2.0**101), 32: (2.0**-30, 2.0**31)}
+_RANGES = {64: (_rescue._TINY, _rescue._BIG), 32: _rescue.RANGE32}
 #: a rescued sample keeps its own result (and its derivative) when within this many units
 #: of its dtype of the wide one, normwise per output
 AGREE = 64
@@ -87,9 +87,9 @@ def rescue(lib, progs, name: str, xs: list, res: list, rows, batch: tuple, bits:
         res: the outputs (``batch + shape``), in the working dtype.
 
     Returns:
-        ``(res, singular, nonfinite)``: the outputs with the rescued samples written, and
-        the host masks (flat, ``batch`` size) of the samples the wide run found singular or
-        whose result does not fit the dtype (among those with finite inputs).
+        ``(res, singular, written)``: the outputs with the rescued samples written, and
+        the host masks (flat, ``batch`` size) of the samples the wide run found singular
+        and of those whose values it wrote.
     """
     n = int(np.prod(batch, dtype=np.int64))
     mask = np.asarray(lib.host(rows)).reshape(n)
@@ -126,10 +126,10 @@ def rescue(lib, progs, name: str, xs: list, res: list, rows, batch: tuple, bits:
             out.append(_put(_rows(lib.xp, r, batch), at_dev, vals).reshape(r.shape))
         res = out
     singular = np.zeros(n, dtype=bool)
-    nonfinite = np.zeros(n, dtype=bool)
+    written = np.zeros(n, dtype=bool)
     singular[idx[sub == _SINGULAR]] = True
-    nonfinite[idx[(sub == _NONFINITE) & finite_in]] = True
-    return res, singular, nonfinite
+    written[idx[put]] = True
+    return res, singular, written
 
 
 def _put(x2, idx, vals):
