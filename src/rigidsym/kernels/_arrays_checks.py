@@ -101,9 +101,13 @@ def broadcast_batch(broadcast_shapes: Callable, xs: list, args: list[dict]) -> t
         return tuple(broadcast_shapes(*[x.shape[:x.ndim - len(a["shape"])]
                                         for x, a in zip(xs, args, strict=True)]))
     except (RuntimeError, ValueError):  # torch raises RuntimeError, JAX ValueError
-        shapes = ", ".join(f"{a['name']} {tuple(x.shape)}" for x, a in zip(xs, args,
-                                                                             strict=True))
-        raise ValueError(f"batch shapes do not broadcast: {shapes}") from None
+        # the message starts with the arguments' names, as rigidsym.kernels' does (issue 37
+        # item 7): which one is wrong is the caller's
+        pairs = [(a["name"], tuple(x.shape)) for x, a in zip(xs, args, strict=True)
+                 if x.ndim > len(a["shape"])] or [(a["name"], tuple(x.shape))
+                                                  for x, a in zip(xs, args, strict=True)]
+        raise ValueError(", ".join(n for n, _ in pairs) + ": batch shapes do not broadcast ("
+                         + ", ".join(f"{n} {s}" for n, s in pairs) + ")") from None
 
 
 def _numel(x) -> int:
