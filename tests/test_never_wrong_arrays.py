@@ -289,3 +289,22 @@ def test_bad_input_module_functions(b):
             call()
         assert type(info.value) is exc
         assert str(info.value).split(":")[0] == arg, str(info.value)
+
+
+@pytest.mark.parametrize("b", BACKENDS)
+@pytest.mark.parametrize("dtype", [np.float64, np.float32])
+def test_subnormal_inputs_arrays(b, dtype):
+    """A subnormal input (omega of N_tilde_dot) whose result is normal: NumPy's value (its
+    long-double rescue) to 2^-14. Found by the regimes' long profile: XLA on CPU flushes
+    subnormals to zero in comparisons too, so a float range test missed them and JAX
+    returned 0 for a result of 9.2e-38 (float32)."""
+    mod, to, back = backend(b)
+    e = np.array([0.18881711, -0.19839032, 0.9617637])
+    e = (e / np.linalg.norm(e)).astype(dtype)
+    omega = np.array([-7.6857185, -1.5236010, 9.2155875]) * (1e-39 if dtype == np.float32
+                                                             else 1e-309)
+    omega, phi = omega.astype(dtype), dtype(-0.1)
+    want = K.N_tilde_dot(e, phi, omega)
+    got = back(mod.N_tilde_dot(to(e), to(phi), to(omega)))
+    assert np.abs(want).max() > np.finfo(dtype).tiny
+    assert np.abs(got - want).max() <= 2.0**-14 * np.abs(want).max(), (got, want)

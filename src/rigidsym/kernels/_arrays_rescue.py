@@ -49,14 +49,19 @@ def _rows(xp, x, batch: tuple):
 
 def flag_rows(xp, xs: list, res: list, sing, batch: tuple, bits: int):
     """``batch`` bool on the device: samples with a singular flag, a non-finite output, or an
-    input that is non-finite or of extreme magnitude (:func:`input_range`)."""
-    tiny, big = input_range(bits)
+    input that is non-finite or of extreme magnitude (:func:`input_range`). The inputs are
+    tested on their bits, as the C kernels do: XLA on CPU flushes subnormals to zero in
+    every floating operation, comparisons included, so a float test would miss them."""
     rows = sing.reshape(batch) if batch else sing.reshape((1,))
     for r in res:
         rows = rows | ~xp.isfinite(_rows(xp, r, batch)).all(-1)
+    fdt, idt = (np.float64, xp.int64) if bits > 32 else (np.float32, xp.int32)
+    tiny, big = (int(np.asarray(v, dtype=fdt).view(fdt.__name__.replace("float", "int")))
+                 for v in input_range(bits))
+    magnitude = (1 << (bits - 1)) - 1 if bits > 32 else 0x7FFFFFFF
     for x in xs:
-        a = xp.abs(_rows(xp, x, batch))
-        rows = rows | ((a >= big) | ((a < tiny) & (a != 0)) | xp.isnan(a)).any(-1)
+        a = _rows(xp, x, batch).view(idt) & magnitude   # |x|'s bits; NaN above inf's
+        rows = rows | ((a >= big) | ((a < tiny) & (a != 0))).any(-1)
     return rows
 
 
