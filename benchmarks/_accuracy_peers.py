@@ -167,64 +167,13 @@ def evaluate(name: str, arrays: list[np.ndarray], n_out: int) -> dict[str, np.nd
     return out
 
 
-_TEXTBOOK: dict = {}
-_DTYPE = {"now": np.float64}
-
-
-def _select(conds, choices, default=np.nan):
-    # lambdify's Piecewise: integer choices (a sign) in the type under test, not int64
-    # (int64 / float32 is float64: the float32 textbook would be computed in float64)
-    return np.select(conds, [np.asarray(c, dtype=_DTYPE["now"])
-                             if np.asarray(c).dtype.kind in "iub" else c for c in choices],
-                     default)
-
-
-def _variants(name: str):
-    """``[(cond or None, numpy function)]`` per variant (branches first) of the declaration:
-    its build as declared, lambdified plainly for NumPy (no rewrite of the generator; CSE
-    only shares subexpressions, it changes no rounding)."""
-    if name not in _TEXTBOOK:
-        import _accuracy_ref as R
-        import sympy as sp
-
-        from rigidsym.codegen.generator import _flatten
-        from rigidsym.codegen.spec import flat_symbols, input_symbols
-
-        k = R.kernel_of(name)
-        syms = input_symbols(k)
-        flat = [s for _, ss in flat_symbols(k) for s in ss]
-        mods = [{"select": _select}, "numpy"]
-        out = [(cond, sp.lambdify(flat, _flatten(k, br.build(**syms)), modules=mods, cse=True))
-               for (cond, _), br in zip(R.functions(name), k.branches, strict=False)]
-        out.append((None, sp.lambdify(flat, _flatten(k, k.build(**syms)), modules=mods,
-                                      cse=True)))
-        _TEXTBOOK[name] = out
-    return _TEXTBOOK[name]
-
-
 def textbook(name: str, arrays: list[np.ndarray], dtype) -> np.ndarray:
-    """The textbook formula (the declaration, naively) at the rows of ``arrays`` in ``dtype``
-    arithmetic: ``(n, outputs)`` float64; each row takes the variant the kernel takes."""
+    """The textbook formula (the declaration, naively; :func:`rigidsym.codegen.rule.textbook`)
+    at the rows of ``arrays`` in ``dtype`` arithmetic: ``(n, outputs)`` float64."""
+    import _accuracy_ref as R
+
+    from rigidsym.codegen import rule
+
     n = arrays[0].shape[0]
-    cols = [np.asarray(c, dtype=dtype) for a in arrays for c in a.reshape(n, -1).T]
-    wide = [c.astype(np.float64) for c in cols]
-    res = np.full((n, 0), np.nan)
-    done = np.zeros(n, dtype=bool)
-    for cond, f in _variants(name):
-        if cond is None:
-            take = ~done
-        else:
-            take = ~done & np.array([bool(cond(*[float(c[s]) for c in wide]))
-                                     for s in range(n)], dtype=bool)
-        if not take.any():
-            continue
-        _DTYPE["now"] = dtype
-        with np.errstate(all="ignore"):
-            vals = [np.broadcast_to(np.asarray(v), (n,)).astype(np.float64)
-                    for v in f(*cols)]
-        v = np.stack(vals, axis=1)
-        if res.shape[1] == 0:
-            res = np.full(v.shape, np.nan)
-        res[take] = v[take]
-        done |= take
-    return res
+    return rule.textbook(R.kernel_of(name), [c for a in arrays for c in a.reshape(n, -1).T],
+                         dtype)

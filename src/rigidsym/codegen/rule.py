@@ -63,3 +63,71 @@ def ratio(err: float, u: float, kappa: float | None = None,
     if a == 0:
         return 0.0 if err == 0 else math.inf
     return err / a
+
+
+# --------------------------------------------------------------------------- the textbook
+_TEXTBOOK: dict = {}
+
+
+def _textbook_variants(kernel):
+    """``[(cond or None, f)]`` per variant (branches first): the declaration's builds as
+    declared, lambdified plainly for NumPy (no rewrite of the generator; CSE only shares
+    subexpressions, it changes no rounding)."""
+    import numpy as np
+    import sympy as sp
+
+    from rigidsym.codegen.generator import _flatten
+    from rigidsym.codegen.spec import flat_symbols, input_symbols
+
+    key = (kernel.name, id(kernel))
+    if key not in _TEXTBOOK:
+        syms = input_symbols(kernel)
+        flat = [s for _, ss in flat_symbols(kernel) for s in ss]
+        dt = {"now": np.float64}
+
+        def select(conds, choices, default=np.nan):
+            # lambdify's Piecewise: integer choices (a sign) in the type under test (int64
+            # with float32 is float64: the float32 textbook would be computed in float64)
+            return np.select(conds, [np.asarray(c, dtype=dt["now"])
+                                     if np.asarray(c).dtype.kind in "iub" else c
+                                     for c in choices], default)
+        mods = [{"select": select}, "numpy"]
+        out = [(sp.lambdify(flat, br.when(**syms), modules="math"),
+                sp.lambdify(flat, _flatten(kernel, br.build(**syms)), modules=mods, cse=True))
+               for br in kernel.branches]
+        out.append((None, sp.lambdify(flat, _flatten(kernel, kernel.build(**syms)),
+                                      modules=mods, cse=True)))
+        _TEXTBOOK[key] = (out, dt)
+    return _TEXTBOOK[key]
+
+
+def textbook(kernel, cols: list, dtype):
+    """The textbook formula of ``kernel`` (its declaration, evaluated naively) in ``dtype``
+    arithmetic: ``cols`` the flat inputs (one array per input symbol, in the order of
+    :func:`rigidsym.codegen.spec.flat_symbols`); returns ``(n, outputs)`` float64, each row
+    by the variant the kernel takes there (the branches' conditions in float64)."""
+    import numpy as np
+
+    variants, dt = _textbook_variants(kernel)
+    cols = [np.asarray(c, dtype=dtype) for c in cols]
+    n = len(cols[0])
+    wide = [c.astype(np.float64) for c in cols]
+    res = None
+    done = np.zeros(n, dtype=bool)
+    for cond, f in variants:
+        if cond is None:
+            take = ~done
+        else:
+            take = ~done & np.array([bool(cond(*[float(c[s]) for c in wide]))
+                                     for s in range(n)], dtype=bool)
+        if not take.any():
+            continue
+        dt["now"] = dtype
+        with np.errstate(all="ignore"):
+            v = np.stack([np.broadcast_to(np.asarray(x), (n,)).astype(np.float64)
+                          for x in f(*cols)], axis=1)
+        if res is None:
+            res = np.full(v.shape, np.nan)
+        res[take] = v[take]
+        done |= take
+    return res
