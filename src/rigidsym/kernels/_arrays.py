@@ -21,11 +21,18 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-import numpy as np
-
 from rigidsym._config import generated_dir
 from rigidsym._io import load_module
-from rigidsym.kernels._arrays_checks import _raise, broadcast_batch, modes, safe_point, validate
+from rigidsym.kernels import _arrays_rescue as _ar
+from rigidsym.kernels._arrays_checks import (
+    _raise,
+    _shp,  # noqa: F401 - _arrays_api's
+    broadcast_batch,
+    convert,
+    modes,
+    safe_point,
+    validate,
+)
 from rigidsym.kernels._errors import raise_flagged
 from rigidsym.kernels._jacobian import contract
 from rigidsym.kernels._jacobian import full_batch as _full
@@ -85,10 +92,8 @@ class ArraySpace:
         return v
 
     def divides(self, name: str) -> bool:
-        """Kernel ``name``'s program has a denominator (else its singular mask is all
-        False)."""
-        self.variants(name)
-        return self._programs["divides", name]
+        """Kernel ``name``'s program divides (else no sample is ever singular)."""
+        return self.variants(name) is not None and self._programs["divides", name]
 
     def vjp(self, name: str, mode: str = "vjp"):
         """The generated reverse-mode (``"vjp"``: ``f(*columns, *output cotangents) -> input
@@ -196,30 +201,16 @@ def _evaluate(xp, variants: tuple, cols: list, stop_gradient: Callable) -> tuple
 
 
 def _singular(xp, dens, like):
+    # a denominator that overflowed to inf flags its sample too (issue 37): x / inf = 0 is
+    # a finite wrong value; eager calls re-run such samples in long double (_arrays_rescue)
     sing = None
     for d in dens:
-        sing = d == 0 if sing is None else xp.logical_or(sing, d == 0)
+        z = (d == 0) | xp.isinf(d)
+        sing = z if sing is None else xp.logical_or(sing, z)
     if getattr(sing, "shape", None) != like.shape:  # no denominator, or a constant one
         zero = xp.zeros_like(like, dtype=bool)
         sing = zero if sing is None else xp.logical_or(zero, sing)
     return sing
-
-
-def _same_batch(xs, args) -> tuple | None:
-    """The common batch shape of ``xs`` when they all have one (the usual call: no
-    broadcasting to work out), else None."""
-    first = None
-    for x, a in zip(xs, args, strict=True):
-        b = tuple(x.shape[:x.ndim - len(a["shape"])])
-        if first is None:
-            first = b
-        elif b != first:
-            return None
-    return first
-
-
-def _shp(s) -> str:
-    return "(...)" if not s else f"(..., {', '.join(map(str, s))})"
 
 
 # ------------------------------------------------ the call path both back-ends share
@@ -236,14 +227,11 @@ class Library:
     raise naming ``name``), ``device(arrays)``, ``host(x)`` (a NumPy copy), ``make(space,
     name)`` (``f(*broadcast inputs) -> (*outputs, singular)``, with the derivative rule),
     ``refuse(exc_type, message)`` (raises the refusals of :func:`modes`), ``note(values)``
-    (a warning before conversion, or nothing) and ``clear(mask)`` (True: the boolean array
-    ``mask`` is known to be all False without a device synchronisation or a trace: a
-    concrete array in host memory; False: unknown), ``constant(fn)`` (``fn`` whose result
-    a tracer may take as a constant: torch.compile with ``dynamic=True`` made every float
-    read from an object symbolic, then restarted its analysis once per float, issue 38);
-    for the dtypes, ``floats`` (those accepted),
-    ``float32``, ``finfo``, ``float_dtype(v)`` (the library dtype of a floating library or
-    NumPy array, else None) and ``cast(x, dtype)``.
+    (a warning before conversion, or nothing), ``clear(mask)`` (the mask is known all False
+    without a sync or a trace) and ``constant(fn)`` (``fn``'s result a trace-time constant:
+    Dynamo restarted once per float read from an object, issue 38); for the dtypes,
+    ``floats`` (those accepted), ``float32``, ``finfo``, ``float_dtype(v)`` (the library
+    dtype of a floating library or NumPy array, else None) and ``cast(x, dtype)``.
     """
 
     backend: str
@@ -268,72 +256,10 @@ class Library:
     note: Callable = lambda values: None
     clear: Callable = lambda mask: False
     constant: Callable = lambda fn: fn
-
-
-_BAD_KINDS = "bcOUSMmV"  # NumPy kinds that are no real numbers
-
-
-_FINFO: dict = {}
-
-
-def _finfo(lib: Library, dtype) -> tuple[float, int]:
-    """``(eps, bits)`` of a float dtype, cached (torch.finfo is built anew at every call)."""
-    key = (lib.backend, dtype)
-    if key not in _FINFO:
-        fi = lib.finfo(dtype)
-        _FINFO[key] = (float(fi.eps), int(fi.bits))
-    return _FINFO[key]
-
-
-def convert(lib: Library, values: tuple, args: list[dict]) -> tuple[list, Any, float]:
-    """The library arrays of ``values`` on one device, in the dtype the kernel computes in.
-
-    Returns:
-        ``(arrays, dtype, eps)``: ``dtype`` is the inputs' promoted dtype (the library's
-        rule, :attr:`Library.dtype`), that of the results; the arrays are in it, or in
-        float32 for float16 and bfloat16 (computed in float32, rounded once at the end);
-        ``eps`` is the machine epsilon of the lowest precision among the inputs and the
-        result, for the validation tolerance (a float32 unit vector with a float64 angle
-        is checked at float32's).
-
-    Raises:
-        TypeError: an argument holds no real numbers, or a float type other than float16,
-            bfloat16, float32 and float64 (named).
-        ValueError: ragged, on another device, or the wrong trailing shape (named).
-    """
-    lib.note(values)
-    arrays, eps = [], []
-    for v, a in zip(values, args, strict=True):
-        given = lib.is_array(v) or isinstance(v, (np.ndarray, np.generic))
-        if lib.is_array(v):
-            if not lib.real(v):
-                raise TypeError(f"{a['name']}: expected real numbers, got {v.dtype}")
-        else:
-            try:
-                v = np.asarray(v)
-            except ValueError as exc:
-                raise ValueError(f"{a['name']}: not a rectangular array ({exc})") from None
-            if v.dtype.kind in _BAD_KINDS:
-                raise TypeError(f"{a['name']}: expected real numbers, got {v.dtype}")
-        fd = lib.float_dtype(v)
-        if fd is not None and fd not in lib.floats:
-            raise TypeError(f"{a['name']}: {v.dtype} is not supported; expected float16, "
-                            "bfloat16, float32 or float64 (or integers)")
-        if fd is not None and given:  # an array input, not a list or a Python number
-            eps.append(_finfo(lib, fd)[0])
-        arrays.append(v)
-    dtype, device = lib.dtype(values, arrays), lib.device(arrays)
-    eps.append(_finfo(lib, dtype)[0])
-    work = lib.float32 if _finfo(lib, dtype)[1] < 32 else dtype
-    out = []
-    for v, a in zip(arrays, args, strict=True):
-        t = lib.as_array(v, work, device, a["name"])
-        shape = tuple(a["shape"])
-        if t.ndim < len(shape) or tuple(t.shape[t.ndim - len(shape):]) != shape:
-            raise ValueError(f"{a['name']}: expected shape {_shp(shape)}, got "
-                             f"{tuple(t.shape)}")
-        out.append(t)
-    return out, dtype, max(eps)
+    #: ``rescued(outputs, rows, inputs)``: the outputs, whose ``rows`` (a batch mask) hold
+    #: values of the long-double rescue, with no derivative there (NaN for a nonzero
+    #: cotangent, as autograd cannot follow the host); None: nothing differentiates eagerly
+    rescued: Callable | None = None
 
 
 class Space:
@@ -406,45 +332,49 @@ class Space:
         return shape_outputs(xp, flat, outs, cols[0])
 
     def _safe_columns(self, name: str, xs, singular) -> list:
-        """The columns of the broadcast inputs ``xs`` with the safe point's in the
-        ``singular`` samples; none replaced for a kernel that never divides or (eager, on
-        the host: :attr:`Library.clear`) a mask with no sample set, a fixed cost of a call
-        at small N spared (issue 38)."""
-        cols = columns(xs, self.progs.meta[name]["args"])
+        """The columns of ``xs``, the safe point's in the ``singular`` samples (no
+        ``where`` without a denominator or with a clear eager mask, issue 38)."""
+        cols, where = columns(xs, self.progs.meta[name]["args"]), self.lib.xp.where
         if not self.progs.divides(name) or self.lib.clear(singular):
             return cols
-        return [self.lib.xp.where(singular, v, c)
-                for v, c in zip(self._safe(name), cols, strict=True)]
+        return [where(singular, v, c) for v, c in zip(self._safe(name), cols, strict=True)]
 
     def call(self, name: str, values: tuple, check, on_singular):
         """Kernel ``name`` on ``values`` (the public functions' body): convert, validate
-        (``check``), broadcast, evaluate, then flag the singular (and, checked, overflowed)
-        samples: an error (``on_singular="raise"``) or NaN there."""
+        (``check``), broadcast, evaluate, rescue the samples the program cannot compute in
+        its type (eager: :mod:`._arrays_rescue`, issue 37), then flag the singular samples
+        and those whose result does not fit the dtype: an error (``on_singular="raise"``)
+        or NaN there. ``check=False`` only skips validation."""
         lib, xp = self.lib, self.lib.xp
         meta = self.progs.meta[name]
         args = meta["args"]
         xs, dtype, eps = convert(lib, values, args)
         traced = lib.traced(xs)
         check, on_singular = modes(check, on_singular, traced, lib.tracer, lib.refuse)
-        batch = _same_batch(xs, args) if not traced else None
-        if batch is None:
-            batch = broadcast_batch(xp.broadcast_shapes, xs, args)
+        batch = broadcast_batch(xp.broadcast_shapes, xs, args, traced)
         if check:
             validate(xp, [lib.detach(x) for x in xs], args, eps)
         full = [x if not traced and tuple(x.shape) == batch + tuple(a["shape"]) else
                 xp.broadcast_to(x, batch + tuple(a["shape"])) for x, a in zip(xs, args,
                                                                              strict=True)]
-        *res, sing = self.function(name)(*full)
+        if traced:
+            full = _ar.traced_inputs(xp, full)
+        *res, bad = self.function(name)(*full)
+        clear = False
+        if not traced:
+            res, bad, clear = self._rescue(name, full, res, bad, batch)
         if res[0].dtype != dtype:  # float16, bfloat16: computed in float32, rounded once
             res = [lib.cast(r, dtype) for r in res]
-        if not check and not self.progs.divides(name):  # nothing to flag: no mask to read
+        elif clear:  # no sample singular, of non-finite output or input: nothing to flag
             return res[0] if len(res) == 1 else tuple(res)
-        bad = sing
-        if check:
-            over = xp.zeros_like(sing)
-            for r in res:
-                over = over | ~xp.isfinite(r.reshape(batch + (-1,))).all(-1)
-            bad = sing | (over & ~sing)
+        # a result that does not fit the dtype, from finite inputs (a NaN input's NaN is
+        # its IEEE value, issue 37)
+        over = xp.zeros_like(bad)
+        for r in res:
+            over = over | ~xp.isfinite(r.reshape(batch + (-1,))).all(-1)
+        for x in full:
+            over = over & xp.isfinite(x.reshape(batch + (-1,))).all(-1)
+        sing, bad = bad, bad | over
         if on_singular == "raise":
             if bool(bad.any()):  # the error path copies the masks to the host
                 raise_flagged(name, meta, lib.host(sing), lib.host(bad & ~sing),
@@ -453,3 +383,18 @@ class Space:
             res = [xp.where(bad.reshape(batch + (1,) * (r.ndim - len(batch))), xp.nan, r)
                    for r in res]
         return res[0] if len(res) == 1 else tuple(res)
+
+    def _rescue(self, name: str, full: list, res: list, sing, batch: tuple):
+        """Eager: the outputs with the flagged samples re-run in long double, the
+        singular mask the wide run finds (:mod:`._arrays_rescue`), and whether no sample
+        was flagged at all."""
+        lib, xp = self.lib, self.lib.xp
+        bits = int(lib.finfo(full[0].dtype).bits)
+        rows = _ar.flag_rows(xp, full, res, sing, batch, bits)
+        if not bool(rows.any()):
+            return res, sing, True
+        res, s, put = _ar.rescue(lib, self.progs, name, full, res, rows, batch, bits)
+        dev = lib.device(full)
+        if lib.rescued is not None and put.any():
+            res = lib.rescued(res, lib.as_array(put.reshape(batch), None, dev, "rows"), full)
+        return res, lib.as_array(s.reshape(batch), None, dev, "singular"), False
