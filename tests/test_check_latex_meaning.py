@@ -207,6 +207,29 @@ def test_a_symbol_whose_meaning_differs_between_books_is_named(capsys, latex, wo
     assert code == 2 and words in err, err
 
 
+@pytest.mark.parametrize("latex, verdict", [
+    # on main: verified, the 3x3 zero resized to the 3-vector its neighbours have
+    (r"\mathbf{R}\omega - \mathbf{R}\omega = \mathbf{0}_{3\times 3}", "does-not-hold"),
+    (r"\mathbf{R}\omega - \mathbf{R}\omega = 0_{3\times 3}", "does-not-hold"),
+    (r"\omega - \omega = \mathbf{0}_{3}", "verified"),
+    (r"\mathbf{R} - \mathbf{R} = \mathbf{0}_{3\times 3}", "verified"),
+    # a plain 0 for the zero vector, as the books write it (on main: a shape mismatch)
+    (r"\mathbf{R}\omega - \mathbf{R}\omega = 0", "verified"),
+    (r"\omega - 2\omega = 0", "does-not-hold"),
+])
+def test_a_zero_whose_size_is_written_or_fixed_by_its_operands_is_never_resized(
+        latex, verdict):
+    let = [x for x in (r"\mathbf{R}: rotation", r"\omega: vector") if x.split(":")[0] in latex]
+    assert rigidsym.check_latex(latex, let=let).verdict == verdict
+
+
+def test_a_written_zero_size_that_cannot_be_added_is_bad_input(capsys):
+    # on main: verified (\mathbf{0}_{3\times 3} read as the unsized zero vector)
+    code, _, err = _cli(capsys, "--latex", r"\omega = \mathbf{0}_{3\times 3} + \omega",
+                        "--let", r"\omega: vector")
+    assert code == 2 and "a sum of a 3x3 matrix and a 3x1 matrix" in err, err
+
+
 def test_a_shape_mismatch_of_declared_symbols_is_still_a_slip():
     r = rigidsym.check_latex(r"\omega = R", let=[r"R: rotation; \omega: vector"])
     assert r.verdict == "does-not-hold"

@@ -102,6 +102,21 @@ class MeaningRules:
         self._note(f"{key}: the {n}×{n} identity")
         return SizedIdentity(n)
 
+    def sized_zero(self, key, rest):
+        """``\\mathbf{0}_{3\\times 3}``, ``\\mathbf{0}_3``: the zero of the size written
+        (its subscript read as ``0_{3\\times 3}``'s), else ``None`` (a loose zero that
+        its neighbours size). A written size is never resized: ``\\omega =
+        \\mathbf{0}_{3\\times 3} + \\omega`` is a shape error, not a verified identity."""
+        subs = [r[1] for r in rest if isinstance(r, tuple)]
+        if len(subs) != 1 or len(rest) != 1:
+            return None
+        m = _SIZE.fullmatch(subs[0].replace(" ", ""))
+        if m is None:
+            return None
+        rows, cols = int(m.group(1)), int(m.group(2) or 1)
+        self._note(f"{key}: the {rows}×{cols} zero")
+        return SizedZero(rows, cols)
+
     def sized_number(self, items):
         """``0_{3\\times 3}``, ``0_3``: a zero of that size."""
         num, sub = str(items[0]), items[1][1].replace(" ", "")

@@ -24,6 +24,7 @@ from rigidsym.latex.lexing import Parsed, Relation, parser
 from rigidsym.latex.meaning import MeaningRules
 from rigidsym.latex.shapes import (
     LatexError,
+    SizedZero,
     _as_scalar,
     _default_glyph,
     _fit,
@@ -31,6 +32,7 @@ from rigidsym.latex.shapes import (
     _shape,
     _size_identity,
     _words,
+    loose,
 )
 from rigidsym.latex.table import Glyph, lookup
 from rigidsym.latex.vocab import VocabRules
@@ -129,7 +131,9 @@ class _Build(MeaningRules, VocabRules, BookRules, lark.Transformer):
         if sized is not None:
             return _GlyphKey(key, base, rest, accent, sized)
         if kind == "zero":
-            return _GlyphKey(key, base, rest, accent, sp.ZeroMatrix(3, 1))
+            z = None if accent else self.sized_zero(key, rest)
+            return _GlyphKey(key, base, rest, accent, z if z is not None
+                             else sp.ZeroMatrix(3, 1))
         if kind == "one":
             n = 3
             for r in rest:
@@ -224,6 +228,10 @@ class _Build(MeaningRules, VocabRules, BookRules, lark.Transformer):
             a, b = _size_identity(a, b, 0)
         a, b = _fit(a, b, op)
         r = a + b if op == "add" else a - b
+        if type(r) is sp.ZeroMatrix and not (loose(a) and loose(b)):
+            # R w - R w cancels to sympy's ZeroMatrix, which the chain would resize like a
+            # written \mathbf{0}: its operands fixed its shape (= 0_{3x3} is a shape slip)
+            r = SizedZero(*r.shape)
         self.made[r] = (op, (a, b))
         return r
 

@@ -58,6 +58,12 @@ def parse_latex(latex: str, section: str | None = "*", overrides: dict | None = 
                       and type(e) is not sp.ZeroMatrix), None)
         exprs = [sp.ZeroMatrix(*sized) if type(e) is sp.ZeroMatrix and sized else e
                  for e in exprs]  # "= \mathbf{0}": the zero of the other side's shape
+        if reader and sized and sized != (1, 1) and any(e is sp.S.Zero for e in exprs):
+            # "Q e - e = 0": the books write a plain 0 for the zero vector or matrix, and a
+            # scalar equal to a 3-vector means nothing else (said in the reading)
+            exprs = [sp.ZeroMatrix(*sized) if e is sp.S.Zero else e for e in exprs]
+            out.readings.append(f"0: the {sized[0]}×{sized[1]} zero (the shape of the "
+                                f"other side)")
         sized = next((_shape(e) for e in exprs if _shape(e) and not loose(e)),
                      sized) if reader else sized
         if reader and sized and sized[0] == sized[1]:  # "= I": the identity of that size

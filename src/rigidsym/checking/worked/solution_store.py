@@ -12,7 +12,7 @@ from pathlib import Path
 __all__ = ["path", "stored", "store", "FORMAT"]
 
 #: version of a stored solution; an entry of another is never read
-FORMAT = 1
+FORMAT = 2
 
 
 def path(ex_id: str, module: str, d) -> Path:
@@ -38,11 +38,17 @@ def stored(where: Path, ex_id: str, kind: type):
     not readable: solved again)."""
     import pickle
 
+    import sympy as sp
+
     from rigidsym import _cache
 
     data = _cache.get(where)  # checksummed: a torn or foreign entry is None
     try:
-        s = pickle.loads(data) if data is not None else None
+        # rebuilt unevaluated: sympy's pickles re-run each constructor, and an evaluated
+        # Mul(1/12, a + b) distributes into a + b terms, so a read-back solution printed
+        # differently from the one solved (the exercise page differed cold and warm)
+        with sp.evaluate(False):
+            s = pickle.loads(data) if data is not None else None
     except Exception:  # noqa: BLE001 -- an entry of another version of a class: solved again
         return None
     return s if isinstance(s, kind) and s.id == ex_id else None
