@@ -39,6 +39,7 @@ from .kernel_wiring import (
     formula,
 )
 from .kernels_spec_internal import EULER_SEQUENCES, INTERNAL_KERNELS
+from .kernels_spec_lie import LIE_KERNELS
 
 __all__ = ["KERNELS", "formula", "EULER_SEQUENCES"]
 
@@ -370,6 +371,5 @@ KERNELS.append(Kernel(
           "natural_invariants_from_rotation's rule (largest-magnitude component positive)."))
 
 KERNELS += INTERNAL_KERNELS
-
-# issue 38: the Lie-group kernels (derivations/kernels_spec_lie.py) join with
-# `KERNELS += LIE_KERNELS` once generated/ is regenerated with them (see its docstring)
+# issue 38: the Lie-group maps (derivations/kernels_spec_lie.py)
+KERNELS += LIE_KERNELS
