@@ -17,7 +17,7 @@ import sympy as sp
 from rigidsym.codegen.spec import Arg, Branch, Kernel, Out
 from rigidsym.declare import vect
 
-from .kernel_wiring import Q_ARG, formula
+from .kernel_wiring import Q_ARG, _ni_near_pi, _ni_when, formula
 
 __all__ = ["LIE_KERNELS"]
 
@@ -53,15 +53,11 @@ def _log_main(Q):
 
 
 def _log_near_pi(Q, k):
-    from .kernels_spec import _ni_near_pi
-
     ni = _ni_near_pi(Q, k)
     return {"w": ni["phi"] * ni["e"]}
 
 
 def _log_when(Q, k):
-    from .kernels_spec import _ni_when
-
     return _ni_when(Q, k)
 
 
