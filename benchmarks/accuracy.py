@@ -41,10 +41,12 @@ import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
+import _accuracy_peers as O  # noqa: E402
 import _accuracy_points as P  # noqa: E402
 import _accuracy_ref as R  # noqa: E402
 
 from rigidsym import kernels as K  # noqa: E402
+from rigidsym.codegen import rule  # noqa: E402
 
 KAPPA_SINGULAR = 1e12
 
@@ -58,7 +60,11 @@ class Row:
     backend: str
     regime: str
     samples: int = 0
-    worst_ratio: float = 0.0       # err / (8 u kappa + 8 u): <= 1 is accurate
+    worst_ratio: float = 0.0       # err / (8 u kappa + 8 u): the condition half
+    rule_ratio: float = 0.0        # err / rule.allowed (both halves): <= 1 is accurate
+    ref_ratio: float = 0.0         # worst err / e_ref where e_ref > 2 u
+    err_u: float = 0.0             # worst normwise relative error, in u
+    ref_source: str = ""           # the yardstick (textbook or peer) at the worst ref_ratio
     err: float = 0.0               # normwise relative error at the worst ratio
     kappa: float = 0.0             # condition number there
     ulps: float = 0.0              # worst componentwise ulps (components >= 1e-3 ||ref||)
@@ -69,7 +75,7 @@ class Row:
 
     @property
     def accurate(self) -> bool:
-        return self.worst_ratio <= 1.0 and not self.spurious
+        return self.rule_ratio <= 1.0 and not self.spurious
 
 
 def _round(points, dtype, kernel):
@@ -103,6 +109,12 @@ def judge(name: str, regime: str, points, dtype, backends, refs=None,
     rows = {b: Row(name, np.dtype(dtype).name, b, regime, len(points)) for b in backends}
     got = {b: (runner or run_kernel)(name, arrays, dtype, b) for b in backends}
     big = float(np.finfo(dtype).max)
+    tiny = float(np.finfo(dtype).tiny) / u     # below it an output is (nearly) subnormal
+    # the yardsticks (issue 37): the textbook formula in the same type, and each peer
+    # (float64 only)
+    yard = {"textbook": O.textbook(name, arrays, dtype)}
+    if np.dtype(dtype) == np.float64:
+        yard.update(O.evaluate(name, arrays, int(offs[-1])))
     for s, p in enumerate(points):
         flat_rounded = [float(x) for a in arrays for x in a[s].ravel()]
         f = R.pick(name, flat_rounded)
@@ -116,6 +128,8 @@ def judge(name: str, regime: str, points, dtype, backends, refs=None,
                                                                         ref, prec)
             if refs is not None:
                 refs[key] = (ref, scale, norms)
+        at_input = _AtInput(f, arrays, s) if k.branches else None
+        rounded = _Rounded(k, f, p, arrays, s, ref)
         for b in backends:
             row, c = rows[b], got[b][s]
             flagged = not np.isfinite(c).all()
@@ -136,11 +150,30 @@ def judge(name: str, regime: str, points, dtype, backends, refs=None,
                 continue
             for o in range(len(sizes)):
                 sl = slice(offs[o], offs[o + 1])
-                diff = float(np.linalg.norm(c[sl] - ref[sl]))
+                # the type holds no relative accuracy there (or the truth overflows float64,
+                # the reference's type: the float type cannot say how far off the kernel is)
+                if 0 < norms[o] < tiny or not np.isfinite(norms[o]):
+                    row.beyond += 1
+                    continue
+                norm = norms[o] if norms[o] > 0 else 1.0    # absolute where the truth is 0
                 bound = 8 * u * (scale[o] + norms[o])
-                ratio = diff / bound if bound > 0 else (0.0 if diff == 0 else np.inf)
-                if ratio > 1 and k.branches:
-                    ratio = min(ratio, _sign_rule(name, f, arrays, s, c, ref, sl, bound))
+                err = _diff(c[sl], ref[sl], at_input, sl, bound) / norm
+                kap = scale[o] / norms[o] if norms[o] > 0 else np.inf
+                ratio = err * norm / bound if bound > 0 else (0.0 if err == 0 else np.inf)
+                # the reference half compares computations on the same input: against the
+                # truth at the input the kernel and the yardsticks all got (unconstrained
+                # arguments as rounded; constrained ones stay on their manifold), where the
+                # rounding of the input, which the condition half judges, weighs on none
+                r2 = rounded.get()[sl]
+                n2 = float(np.linalg.norm(r2)) or 1.0
+                err2 = _diff(c[sl], r2, at_input, sl, bound) / n2
+                refs_o = {lab: _diff(v[s, sl], r2, at_input, sl, bound) / n2
+                          for lab, v in yard.items()}
+                src = min(refs_o, key=refs_o.get)
+                e_ref = refs_o[src]
+                # the condition half as an absolute bound where the truth is 0
+                kap_rule = bound / (8 * u * norm) - 1
+                rr = max(rule.ratio(err, u, kap_rule), rule.ratio(err2, u, None, e_ref))
                 # componentwise, over the components not tiny beside their output (below
                 # 1e-3 of its norm a component's ulps say nothing of the result)
                 big_ = np.abs(ref[sl]) >= 1e-3 * norms[o]
@@ -148,25 +181,62 @@ def judge(name: str, regime: str, points, dtype, backends, refs=None,
                 ulps = float(np.max(np.abs(c[sl][big_] - ref[sl][big_]) /
                                     np.maximum(ulp, 1e-300), initial=0.0))
                 row.ulps = max(row.ulps, ulps)
+                row.err_u = max(row.err_u, err / u)
+                if e_ref > 2 * u and err2 / e_ref > row.ref_ratio:
+                    row.ref_ratio, row.ref_source = err2 / e_ref, src
+                row.rule_ratio = max(row.rule_ratio, rr)
                 if ratio > row.worst_ratio:
                     row.worst_ratio = ratio
-                    row.err = diff / norms[o] if norms[o] > 0 else diff
-                    row.kappa = scale[o] / norms[o] if norms[o] > 0 else np.inf
+                    row.err = err
+                    row.kappa = kap
                     row.worst_point = _point(arrays, s)
     return list(rows.values())
 
 
-def _sign_rule(name, f, arrays, s, c, ref, sl, bound) -> float:
-    """Near pi the sign of e is fixed by the skew part of Q, which the rounding of Q can
-    flip (or zero): where the output is the negation of the exact point's, judge it against
-    the declared formula at the input the kernel got (the documented sign rule there)."""
-    if np.linalg.norm(c[sl] + ref[sl]) > bound:
+class _Rounded:
+    """The declared formula at the point with the unconstrained arguments as rounded to the
+    type (constrained ones exact, on their manifold), on first use; the exact point's
+    reference where nothing was rounded."""
+
+    def __init__(self, k, f, p, arrays, s, ref):
+        self.pt = [[P.q(float(x)) for x in arrays[j][s].ravel()] if a.kind == "any"
+                   else list(p[j]) for j, a in enumerate(k.args)]
+        self.f, self.ref = f, ref
+        self.v = ref if self.pt == [list(x) for x in p] else None
+
+    def get(self):
+        if self.v is None:
+            self.v = R.reference(self.f, [x for a in self.pt for x in a])[0]
+            if self.v is None:          # undefined there: the exact point's
+                self.v = self.ref
+        return self.v
+
+
+class _AtInput:
+    """The declared formula at the input the kernel got (not the exact point), computed on
+    first use: the reference of the sign rule near pi."""
+
+    def __init__(self, f, arrays, s):
+        self.f, self.arrays, self.s, self.v = f, arrays, s, False
+
+    def get(self):
+        if self.v is False:
+            exact = [P.q(float(x)) for a in self.arrays for x in a[self.s].ravel()]
+            self.v = R.reference(self.f, exact)[0]
+        return self.v
+
+
+def _diff(c, ref, at_input, sl, bound) -> float:
+    """``||c - ref||``; near pi, where ``c`` is the negation of the exact point's output
+    (the rounding of Q flipped the sign of its skew part, which fixes e), the distance to
+    the declared formula at the input the kernel got (its documented sign rule there)."""
+    if not np.isfinite(c).all():
         return np.inf
-    exact = [P.q(float(x)) for a in arrays for x in a[s].ravel()]
-    at_input, _ = R.reference(f, exact)
-    if at_input is None:
-        return np.inf
-    return float(np.linalg.norm(c[sl] - at_input[sl])) / bound
+    d = float(np.linalg.norm(c - ref))
+    if d <= bound or at_input is None or np.linalg.norm(c + ref) > bound:
+        return d
+    v = at_input.get()
+    return d if v is None else min(d, float(np.linalg.norm(c - v[sl])))
 
 
 def _point(arrays, s) -> str:
@@ -211,8 +281,17 @@ def summary(rows: list[Row], thresholds: dict | None = None) -> dict:
             k["regimes"].append(r.regime)
         k["accurate"] = bool(k["accurate"] and r.accurate)
         d = k.setdefault(r.dtype, {"bound": 0.0, "regime": "", "kappa": 0.0, "err": 0.0,
-                                   "ulps": 0.0, "flagged": 0, "beyond": 0, "spurious": 0})
+                                   "ulps": 0.0, "flagged": 0, "beyond": 0, "spurious": 0,
+                                   "rule": 0.0, "backends": {}})
         d["ulps"] = max(d["ulps"], _sig(r.ulps))
+        d["rule"] = max(d["rule"], _sig(r.rule_ratio))
+        be = d["backends"].setdefault(r.backend, {"err_u": 0.0, "vs_ref": 0.0,
+                                                  "vs_ref_where": "", "rule": 0.0})
+        be["err_u"] = max(be["err_u"], _sig(r.err_u))
+        be["rule"] = max(be["rule"], _sig(r.rule_ratio))
+        if _sig(r.ref_ratio) > be["vs_ref"]:
+            be["vs_ref"] = _sig(r.ref_ratio)
+            be["vs_ref_where"] = f"{r.regime}, against {r.ref_source}"
         d["flagged"] += r.flagged_expected
         d["beyond"] += r.beyond
         d["spurious"] += len(r.spurious)
@@ -253,6 +332,27 @@ def kernel_table(data: dict, public_only: bool = False) -> str:
     return "\n".join(lines) + "\n"
 
 
+def rule_table(data: dict, public_only: bool = False) -> str:
+    """The table of issue 37 (docs/accuracy.md, benchmarks/RESULTS.md): per kernel,
+    precision and back-end, the worst normwise error in u over every regime, the worst
+    ratio to e_ref (where e_ref > 2 u) and the yardstick there, and the rule's verdict."""
+    lines = ["| kernel | type | back-end | worst error (u) | worst err / e_ref | where, "
+             "against | rule (<= 1) |", "|---|---|---|---|---|---|---|"]
+    meta = K._state.meta()
+    for name, r in data.items():
+        if public_only and not meta[name]["public"]:
+            continue
+        for dt in ("float64", "float32"):
+            d = r.get(dt)
+            if not d:
+                continue
+            for b, x in sorted(d.get("backends", {}).items()):
+                where = x["vs_ref_where"].replace("|", "\\|") or "e_ref <= 2 u everywhere"
+                lines.append(f"| `{name}` | {dt} | {b} | {x['err_u']:.3g} | "
+                             f"{x['vs_ref']:.3g} | {where} | {x['rule']:.2g} |")
+    return "\n".join(lines) + "\n"
+
+
 def markdown(rows: list[Row]) -> str:
     lines = ["| kernel | dtype | backend | regime | worst err/(8u kappa+8u) | err | kappa | "
              "ulps | flagged (expected) | spurious singular |",
@@ -278,9 +378,14 @@ def main(argv=None) -> int:
     ap.add_argument("--losses", action="store_true", help="print only the failing rows")
     ap.add_argument("--table", default="", help="print the per-kernel table of this "
                     "data file (docs/accuracy.md) and exit")
+    ap.add_argument("--rule-table", default="", help="print the table of the rule (per "
+                    "kernel, type, back-end) of this data file and exit")
     ap.add_argument("--data", default="", help="write the per-kernel rows (the data "
                     "`rigidsym generate` ships for kernels.accuracy) here")
     a = ap.parse_args(argv)
+    if a.rule_table:
+        print(rule_table(json.loads(Path(a.rule_table).read_text(encoding="utf-8"))), end="")
+        return 0
     if a.table:
         print(kernel_table(json.loads(Path(a.table).read_text(encoding="utf-8"))), end="")
         return 0
@@ -294,7 +399,8 @@ def main(argv=None) -> int:
         bad = [r for r in rows if r.kernel == name and not r.accurate]
         print(f"{name}: {'accurate' if not bad else f'{len(bad)} losing rows'}", flush=True)
         for r in bad:
-            print(f"   {r.dtype} {r.backend} {r.regime}: ratio {r.worst_ratio:.3g} err "
+            print(f"   {r.dtype} {r.backend} {r.regime}: rule {r.rule_ratio:.3g} vs e_ref "
+                  f"{r.ref_ratio:.3g} ({r.ref_source}) ratio {r.worst_ratio:.3g} err "
                   f"{r.err:.2g} kappa {r.kappa:.2g} spurious {len(r.spurious)} at "
                   f"{(r.spurious or [r.worst_point])[0]}", flush=True)
 

@@ -74,8 +74,18 @@ def main(argv=None) -> int:
     ap.add_argument("--rev", default="afc7196")
     ap.add_argument("--rounds", type=int, default=7)
     ap.add_argument("--n", type=int, default=10**6)
+    ap.add_argument("--float32-only", action="store_true",
+                    help="only the float64/float32 table (no build of --rev)")
     a = ap.parse_args(argv)
     K.use_backend("c")
+    if not a.float32_only:
+        before_after(a)
+    float32_table(a)
+    return 0
+
+
+def before_after(a) -> None:
+    """The kernels before and after the rewrites of --rev, interleaved (issue 30 item 6)."""
     with tempfile.TemporaryDirectory() as tmp:
         old = K.load(old_generated(a.rev, Path(tmp)))
         print(f"N = {a.n:.0e}, one thread, {a.rounds} interleaved rounds, median; "
@@ -95,7 +105,14 @@ def main(argv=None) -> int:
             ratio = statistics.median(n_ / o_ for n_, o_ in zip(tn, to, strict=True))
             print(f"| {label} `{name}` | {1e3 * statistics.median(to):.2f} | "
                   f"{1e3 * statistics.median(tn):.2f} | {ratio:.3f} |", flush=True)
+
+
+def float32_table(a) -> None:
+    """float64 time / float32 time of the package's kernels, side by side in one run (issue
+    37 item 6: >= 1.5 for instant_screw_axis), and the nodes each float32 plan keeps in
+    double with the measured reason (the rule's ratio with that node alone in float)."""
     print("\n| kernel | float64 ms | float32 ms | float64/float32 |\n|---|---|---|---|")
+    reasons = {}
     for label, name in (("K1", KS["K1"]), ("", "instant_screw_axis"), ("K6", KS["K6"])):
         k = R.kernel_of(name)
         t = {}
@@ -112,7 +129,52 @@ def main(argv=None) -> int:
         r = statistics.median(x / y for x, y in zip(t[np.float64], t[np.float32], strict=True))
         print(f"| {label} `{name}` | {1e3 * statistics.median(t[np.float64]):.2f} | "
               f"{1e3 * statistics.median(t[np.float32]):.2f} | {r:.2f} |", flush=True)
-    return 0
+        reasons[name] = r
+    for name in reasons:
+        print(f"\n`{name}` float32 plan, the nodes kept in double and why:")
+        for line in double_nodes(name):
+            print(f"- {line}")
+
+
+def double_nodes(name: str) -> list[str]:
+    """Per node the plan keeps in double: the rule's worst ratio (rigidsym.codegen.float32)
+    of the plan with that node made float too (> 1: float there breaks the rule)."""
+    from rigidsym.codegen import float32 as F
+    from rigidsym.codegen.generator import _trig_split, compile_kernel
+    from rigidsym.codegen.spec import flat_symbols
+
+    k = R.kernel_of(name)
+    kc = compile_kernel(k)
+    cols = F.sample_inputs(k.args)
+    offs = np.cumsum([0] + [o.size for o in k.outputs])
+    groups = [slice(int(x), int(y)) for x, y in zip(offs[:-1], offs[1:], strict=True)]
+    names = [str(s) for _, ss in flat_symbols(k) for s in ss]
+    tb = F.rule.textbook(k, [cols[n] for n in names], np.float32)
+    split = _trig_split(kc)
+    if split is not None:
+        progs = [(F.ProgramSpec(split["program"].temps, split["program"].outputs,
+                                F.trig_spec(split["calls"], split["pre"])),
+                  kc.plan32["trig"]["plan"], np.ones(len(tb), dtype=bool))]
+    else:
+        masks = F._variant_points(kc.variants, cols)
+        progs = [(F.ProgramSpec(v.program.temps, v.program.outputs), p["plan"], m)
+                 for v, p, m in zip(kc.variants, kc.plan32["variants"], masks, strict=True)]
+    out = []
+    for spec, plan, m in progs:
+        sub = {c: v[m] for c, v in cols.items()}
+        ref = spec.run(sub, None)
+        ok = np.isfinite(ref).all(axis=1)
+        sub, ref = {c: v[ok] for c, v in sub.items()}, ref[ok]
+        allowed = F.BUDGET(F._errors(tb[m][ok], ref, groups))
+        for node in [n for n, t in plan.items() if t == "d"]:
+            err = F._errors(spec.run(sub, plan | {node: "f"}), ref, groups)
+            with np.errstate(all="ignore"):
+                r = np.where(err == 0, 0.0, err / allowed)
+            i = int(np.argmax(np.where(np.isfinite(r), r, np.inf).max(axis=1)))
+            where = ", ".join(f"{c}={sub[c][i]:.3g}" for c in list(sub)[:9])
+            out.append(f"{node}: in float the error reaches {r[i].max():.3g} of the rule "
+                       f"(at {where})")
+    return out or ["none"]
 
 
 if __name__ == "__main__":

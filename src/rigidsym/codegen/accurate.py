@@ -32,12 +32,16 @@ import numpy as np
 import sympy as sp
 
 from rigidsym.algebra.symbols import constrained_group
+from rigidsym.codegen import rule as _rule
 from rigidsym.codegen.compensated import DiffProd, diffprod, expand_diffprod
+from rigidsym.codegen.regimes import regimes
 
 __all__ = ["Chosen", "Rewrite", "RULES", "improve"]
 
-#: the candidate must be this many times more accurate (worst case) to be kept
-GAIN = 4.0
+#: the candidate's worst ratio to the rule (against the best form at each point) must be
+#: this many times smaller than the current form's to be kept
+GAIN = 2.0
+U64 = 2.0**-53
 #: expressions larger than this (operations) are not expanded
 EXPAND_LIMIT = 60
 
@@ -59,19 +63,21 @@ class Chosen:
     variant: str
     name: str
     reason: str
-    before: float        # worst relative error of the outputs before, at the points
+    before: float        # worst ratio to the rule (err / max(2 e_best, 4 u)) before
     after: float         # and after
     points: int
     decided: str         # the zero test's method
 
     def line(self) -> str:
         def err(x: float) -> str:
-            return "a singular flag" if x == float("inf") else f"{x:.1e}"
+            return "a singular flag" if x == float("inf") else f"{x:.2g}"
         return (f"accuracy rewrite ({self.variant}): {self.name}: {self.reason}; worst "
-                f"relative error at {self.points} measurement points (exact, rounded to "
-                f"float64; some past a condition number of 1/u) {err(self.before)} -> "
-                f"{err(self.after)}; equal to the declared formula by the zero test "
-                f"({self.decided})")
+                f"ratio to the rule max(2 e_best, 4 u) (e_best: the most accurate of the "
+                f"textbook formula and the forms tried, per point; rigidsym.codegen.rule) "
+                f"at {self.points} points of the regimes (rigidsym.codegen.regimes, exact, "
+                f"rounded to float64) {err(self.before)} -> {err(self.after)}, never worse "
+                f"than the textbook formula by that rule; equal to the declared formula by "
+                f"the zero test ({self.decided})")
 
 
 # --------------------------------------------------------------------------- rules
@@ -88,6 +94,36 @@ def _skew_one_minus_cos(flat, ctx):
             for sub in sp.preorder_traversal(e):
                 if sub in old_forms:
                     reps[sub] = new
+    if not reps:
+        return None
+    return [e.xreplace(reps) for e in flat], list(reps.items())
+
+
+def _axis_point_from_skew(flat, ctx):
+    """(3.18)'s ``p0 = (Q - 1)^T (Q a - a') / (2 (1 - cos phi))`` -> ``(1 + tr Q) / (4 v.v)
+    v x c + (c - v (v.c) / v.v) / 2``, ``v = vect(Q)``, ``c = a' - Q a`` (= ``cot(phi/2)/2 e
+    x c + (c - e (e.c))/2``, with ``Q - 1 = sin phi E + (1 - cos phi) E^2``). The declared
+    form reads the diagonal of Q, whose rounding (absolute u) is relative ``u / phi`` of
+    ``(Q - 1)^T c`` as phi -> 0; this one reads the axis from the skew part only, as
+    pytransform3d's screw parameters do (issue 37: 3e7 u where they are 4 u at phi = 1e-8)."""
+    k = ctx["kernel"]
+    vecs = [a.name for a in k.args if a.kind == "any" and a.shape == (3,)]
+    reps = {}
+    for Q in ctx["rotations"]:
+        om = sp.Add(*[sp.UnevaluatedExpr(1 - Q[i, i]) for i in range(3)])
+        h = sp.Dummy("half")
+        for x, y in zip(vecs, vecs[1:], strict=False):
+            a, ap = sp.Matrix(ctx["flat"][x]), sp.Matrix(ctx["flat"][y])
+            # the declaration's grouping, rebuilt as kernels_spec builds it
+            old = ((Q - sp.eye(3)).T * (Q * a - ap) / (2 * (1 - (1 - h)))).xreplace(
+                {h: om / 2})
+            v = sp.Matrix([Q[2, 1] - Q[1, 2], Q[0, 2] - Q[2, 0], Q[1, 0] - Q[0, 1]]) / 2
+            c = ap - Q * a
+            vv = v.dot(v)
+            new = (1 + Q.trace()) / (4 * vv) * v.cross(c) + (c - v * (v.dot(c) / vv)) / 2
+            for i in range(3):
+                if any(e.has(old[i]) for e in flat):
+                    reps[old[i]] = new[i]
     if not reps:
         return None
     return [e.xreplace(reps) for e in flat], list(reps.items())
@@ -112,7 +148,14 @@ def _compensated(n):
     return DiffProd(a, b, -c, d)
 
 
-def _expand_numerators(flat, ctx):
+def _expand_plain(flat, ctx):
+    """The expanded numerator without compensation (issue 30's form ``p1 x p2``): offered
+    so that the rule of issue 37 chooses between it and the compensated one; it loses the
+    exactness of ``p2 - p1`` at nearly coincident points and fails the rule there."""
+    return _expand_numerators(flat, ctx, compensate=False)
+
+
+def _expand_numerators(flat, ctx, compensate: bool = True):
     """Each small output ``n / d`` with its numerator expanded: cancelling terms of the
     declared grouping (``p1 x (p2 - p1)``) cancel symbolically, not in floating point; a
     numerator then of two products (a cross product ``p1 x p2``) is a compensated
@@ -129,7 +172,7 @@ def _expand_numerators(flat, ctx):
         if sp.count_ops(ne) >= sp.count_ops(n) + 4 or ne == n:
             out.append(e)
             continue
-        ne = _compensated(ne) or ne
+        ne = (_compensated(ne) if compensate else None) or ne
         out.append(ne / d)
         parts.append((n, ne))
     return (out, parts) if parts else None
@@ -146,7 +189,8 @@ def _rewritten_then_differentiated(flat, ctx):
     sizes = [o.size for o in k.outputs[:m]]
     nv = sum(sizes)
     values, parts = flat[:nv], []
-    for rule in (r for r in RULES if r.propose is not _rewritten_then_differentiated):
+    for rule in (r for r in RULES if r.propose not in (_rewritten_then_differentiated,
+                                                       _expand_plain)):
         got = rule.propose(values, ctx)
         if got is not None:
             values, p = got
@@ -168,11 +212,20 @@ RULES = (
             "the Jacobian of the declared grouping inherits its cancellation; the "
             "derivatives of the rewritten values do not",
             _rewritten_then_differentiated),
+    Rewrite("the axis point from the skew part of Q",
+            "(Q - 1)^T (Q a - a') reads the diagonal of Q, whose rounding is relative u/phi "
+            "of it as phi -> 0; cot(phi/2)/2 e x c + (c - e (e.c))/2 from vect(Q) and tr Q "
+            "reads the axis from the skew part (valid where 1 + tr Q does not cancel)",
+            _axis_point_from_skew),
     Rewrite("1 - cos(phi) from the skew part of Q",
             "3 - tr Q cancels as phi -> 0 and the rounding of the diagonal of Q is "
             "relative 1/phi^2 there; the skew part keeps relative accuracy 1/phi, the "
             "condition of the problem (valid where 1 + tr Q does not cancel: cos phi > -1/2)",
             _skew_one_minus_cos),
+    Rewrite("expanded numerator, plain",
+            "the declared grouping subtracts nearly equal products (p1 x (p2 - p1) with "
+            "|p1| >> |p2 - p1|); expanded, the cancelling terms cancel symbolically",
+            _expand_plain),
     Rewrite("expanded numerator",
             "the declared grouping subtracts nearly equal products (p1 x (p2 - p1) with "
             "|p1| >> |p2 - p1|); expanded, the cancelling terms cancel symbolically, and "
@@ -183,84 +236,36 @@ RULES = (
 
 
 # --------------------------------------------------------------------------- measurement
-def _kind(arg):
-    from rigidsym import _kinds
-
-    return _kinds.for_spec(arg.kind, arg.shape)
+#: the approach steps of the generator's regimes (a subsample of the harness's, for time)
+SMALL = [10.0**-k for k in (1, 3, 5, 7, 9, 11, 13, 15, 20, 100)]
 
 
-def _points(kernel, rng, n_random: int = 6):
-    """Exact points (mpmath, 40 digits) per argument, flat, over the regimes of the kinds."""
-    def base():
-        return [_random(a, rng) for a in kernel.args]
-
-    pts = [base() for _ in range(n_random)]
-    small = [10.0**-k for k in (1, 3, 5, 7, 9, 11, 13, 15, 20, 100)]
-    for i, a in enumerate(kernel.args):
-        for s in small:
-            if a.kind == "angle":
-                for phi in (s, -s, math.pi * (1 - s)):
-                    p = base()
-                    p[i] = [mpmath.mpf(phi)]
-                    pts.append(p)
-                continue
-            if a.kind == "rotation":
-                for t, t0 in ((s, 1), (1, s)):
-                    p = base()
-                    p[i] = _rotation(_unit(rng, 3), t, t0)
-                    pts.append(p)
-                continue
-            if a.kind == "any" and a.shape == (3,):
-                for scale in (s, 1 / s) if s >= 1e-6 else ():
-                    p = base()
-                    p[i] = [x * scale for x in p[i]]
-                    pts.append(p)
-                # nearly coincident points (|p2 - p1| / |p| = s), near the origin and at a
-                # large offset (issue 37: the regimes where p1 x p2 cancels)
-                for j, b in enumerate(kernel.args):
-                    if j <= i or b.kind != "any" or b.shape != (3,) or s < 1e-13:
-                        continue
-                    for offset in (1, 1e6):
-                        p = base()
-                        # floats: the reference judges the formula, not the rounding
-                        p[i] = [mpmath.mpf(float(x * offset)) for x in p[i]]
-                        p[j] = [mpmath.mpf(float(x + s * offset * r)) for x, r in
-                                zip(p[i], rng.standard_normal(3), strict=True)]
-                        pts.append(p)
-    return pts
-
-
-def _unit(rng, n):
-    v = [mpmath.mpf(float(x)) for x in rng.standard_normal(n)]
-    nn = mpmath.sqrt(sum(x * x for x in v))
-    return [x / nn for x in v]
-
-
-def _rotation(e, r, r0):
-    x, y, z = (mpmath.mpf(r) * v for v in e)
-    r0 = mpmath.mpf(r0)
-    n = x * x + y * y + z * z + r0 * r0
-    Q = [[r0 * r0 + x * x - y * y - z * z, 2 * (x * y - r0 * z), 2 * (x * z + r0 * y)],
-         [2 * (x * y + r0 * z), r0 * r0 - x * x + y * y - z * z, 2 * (y * z - r0 * x)],
-         [2 * (x * z - r0 * y), 2 * (y * z + r0 * x), r0 * r0 - x * x - y * y + z * z]]
-    return [v / n for row in Q for v in row]
-
-
-def _random(arg, rng):
-    if arg.kind == "unit":
-        return _unit(rng, arg.size)
-    if arg.kind == "rotation":
-        return _rotation(_unit(rng, 3), rng.uniform(0.1, 2), 1)
-    return [mpmath.mpf(float(x)) for x in rng.standard_normal(arg.size)]
+def _points(kernel, seed: int = 30, n_random: int = 6):
+    """Exact points (mpmath, 40 digits) per argument over the regimes of
+    :mod:`rigidsym.codegen.regimes` in float64 (the harness's, on fewer steps). The
+    unconstrained arguments are taken as float64 holds them (the reference then judges the
+    formula, not the rounding of the input, which every form suffers alike); constrained
+    ones stay exact (on their manifold, where the rewrites are equal to the declaration).
+    Not the ends of the floating range: an intermediate that overflows there is the
+    runtime's rescue (``rigidsym.kernels._rescue``, by scaling), not a form's to avoid."""
+    out = []
+    for pts in regimes(kernel, np.float64, n_random=n_random, seed=seed, small=SMALL,
+                       extremes=False).values():
+        for p in pts:
+            out.append([[mpmath.mpf(float(x)) if arg.kind == "any" else
+                         mpmath.mpf(int(x.p)) / int(x.q) for x in a]
+                        for arg, a in zip(kernel.args, p, strict=True)])
+    return out
 
 
 class _Meter:
-    """The declared outputs at the measurement points (mpmath) and a candidate's error."""
+    """The declared outputs at the measurement points (mpmath) and a form's error there:
+    per point and output, normwise relative (absolute where the output is exactly 0), in
+    float64, as :mod:`rigidsym.codegen.rule` reads it."""
 
     def __init__(self, kernel, flat, syms_flat, conds, cond):
-        rng = np.random.default_rng(30)
         with mpmath.workdps(40):
-            pts = _points(kernel, rng)
+            pts = _points(kernel)
         self.syms = syms_flat
         offs = np.cumsum([0] + [o.size for o in kernel.outputs])
         self.groups = [slice(a, b) for a, b in zip(offs[:-1], offs[1:], strict=True)]
@@ -279,28 +284,42 @@ class _Meter:
             for p in keep:
                 try:
                     refs.append([float(v) for v in f(*[x for a in p for x in a])])
-                except (ZeroDivisionError, ValueError):
+                except (ZeroDivisionError, ValueError, OverflowError):
                     refs.append([math.nan] * len(flat))
         self.ref = np.array(refs, dtype=float).reshape(len(keep), len(flat))
+        self.ok = np.isfinite(self.ref).all(axis=1)
 
-    def worst(self, flat) -> float:
-        if not len(self.exact):
-            return 0.0
+    def errors(self, flat) -> np.ndarray:
+        """``(points, outputs)``: the error of ``flat`` at the points with a finite
+        reference (inf where it is not finite or not below 1)."""
+        n = int(self.ok.sum())
+        if not n:
+            return np.zeros((0, len(self.groups)))
         f = sp.lambdify(self.syms, flat, modules=[{"DiffProd": diffprod}, "numpy"], cse=True)
         with np.errstate(all="ignore"):
             got = np.array([np.broadcast_to(np.asarray(v, dtype=float), (len(self.exact),))
-                            for v in f(*self.rounded.T)]).T
-        ok = np.isfinite(self.ref).all(axis=1)
-        if not ok.any():
-            return 0.0
-        r, g = self.ref[ok], got[ok]
-        floor = 1e-12 * np.abs(r).max(axis=1)     # an output group that is exactly zero
-        err = np.zeros(len(r))
-        for sl in self.groups:                     # per output, normwise (as the harness)
-            scale = np.maximum(np.maximum(np.abs(r[:, sl]).max(axis=1), floor), 1e-300)
-            err = np.maximum(err, np.abs(g[:, sl] - r[:, sl]).max(axis=1) / scale)
-        err = np.where(np.isfinite(err), err, np.inf)
-        return float(err.max())
+                            for v in f(*self.rounded.T)]).T[self.ok]
+        r = self.ref[self.ok]
+        out = np.zeros((n, len(self.groups)))
+        for j, sl in enumerate(self.groups):
+            norm = np.linalg.norm(r[:, sl], axis=1)
+            with np.errstate(all="ignore"):
+                d = np.linalg.norm(got[:, sl] - r[:, sl], axis=1)
+                e = np.where(norm > 0, d / np.where(norm > 0, norm, 1.0), d)
+            # a relative error of 1 or more is no answer (a zero, a wrong sign): as a flag
+            out[:, j] = np.where(np.isfinite(e) & (e < 1), e, np.inf)
+        return out
+
+
+def _worst(err: np.ndarray, e_ref: np.ndarray) -> float:
+    """The worst :func:`rigidsym.codegen.rule.ratio` of ``err`` against ``e_ref`` (no
+    condition number in the generator: the reference half of the rule), over the points
+    where some form is finite."""
+    some = np.isfinite(e_ref)
+    if not some.any():
+        return 0.0
+    return max(_rule.ratio(float(x), U64, None, float(y)) for x, y in
+               zip(err[some], e_ref[some], strict=True))
 
 
 def _constrained(kernel, syms_by_arg) -> dict:
@@ -354,7 +373,8 @@ def improve(kernel, variant: str, flat, syms_by_arg, syms_flat, conds, cond=None
     if not proposals:
         return flat, []
     meter = _Meter(kernel, flat, syms_flat, conds, cond)
-    best = meter.worst(flat)
+    textbook = meter.errors(flat)          # the declared formula, evaluated plainly
+    current = textbook
     chosen = []
     sub = _constrained(kernel, syms_by_arg)
     for rule, _ in proposals:
@@ -362,10 +382,16 @@ def improve(kernel, variant: str, flat, syms_by_arg, syms_flat, conds, cond=None
         if got is None:
             continue
         cand, parts = got
-        w = meter.worst(cand)
-        if w * GAIN <= best:
+        err = meter.errors(cand)
+        # the rule of issue 37 against the textbook formula, at every point; then the
+        # worst ratio to the best form at each point (textbook, current, candidate)
+        if _worst(err, textbook) > 1:
+            continue
+        best = np.minimum(np.minimum(textbook, current), err)
+        before, after = _worst(current, best), _worst(err, best)
+        if after * GAIN <= before:
             method = _decide(parts, sub)
-            chosen.append(Chosen(variant, rule.name, rule.reason, best, w,
-                                 len(meter.exact), method))
-            flat, best = cand, w
+            chosen.append(Chosen(variant, rule.name, rule.reason, before, after,
+                                 int(meter.ok.sum()), method))
+            flat, current = cand, err
     return flat, chosen

@@ -16,8 +16,15 @@ adversarial ones of the argument kinds (phi near 0 and pi, omega near 0, gimbal 
 
 The search: all float if that meets :data:`BUDGET`; else, from all double, each node is made
 float in the order of its own error (the node alone in float), kept float when the whole
-plan still meets the budget. The double nodes are named in the generated header. The
-tests bound the compiled kernels at 2 ulp against the 50-digit reference.
+plan still meets the budget. The double nodes are named in the generated header.
+
+The budget is the rule of issue 37 (:mod:`rigidsym.codegen.rule`), per output and point: the
+error (normwise relative) within ``max(2 e_ref, 4 u)``, ``e_ref`` the error of the textbook
+formula (the declaration evaluated naively, in float32 arithmetic, at the same inputs),
+``u = 2**-24``; its condition half (``8 u (kappa + 1)``) is the harness's, which has the
+condition number. So a node stays in double only where float would make the kernel worse
+than the formula a user would write, or than 4 u where that formula is better;
+tests/test_float32.py asserts the same against the 50-digit reference.
 """
 
 from __future__ import annotations
@@ -26,17 +33,24 @@ import math
 
 import numpy as np
 
+from rigidsym.codegen import rule
 from rigidsym.codegen.compensated import diffprod
 from rigidsym.codegen.printers import KernelNumPyPrinter
 
-__all__ = ["BUDGET", "N_RANDOM", "sample_inputs", "choose", "ProgramSpec", "trig_spec",
+__all__ = ["BUDGET", "U32", "N_RANDOM", "sample_inputs", "choose", "ProgramSpec", "trig_spec",
            "plan_kernel"]
 
-#: the plan's error budget, ulp of float32 (normwise) against the float64 program; the
-#: tests assert 2 against the 50-digit declared formula, which also sees the model error of
-#: float32 inputs that are not exactly unit or orthogonal (measured up to about 1 ulp: 1.5
-#: here left screw_axis_point at 2.5 there)
-BUDGET = 1.0
+#: the unit roundoff of float32
+U32 = 2.0**-24
+
+
+def BUDGET(e_ref):
+    """The largest error the plan allows at a point and output (normwise relative against
+    the float64 program): issue 37's rule, :func:`rigidsym.codegen.rule.allowed`, with
+    ``e_ref`` the textbook formula's error in float32 there: ``max(2 e_ref, 4 u)``. The
+    planner has no condition number: the rule's condition half, ``8 u (kappa + 1)``, is
+    judged by the harness (``benchmarks/accuracy.py``, float32 on C and NumPy)."""
+    return np.maximum(rule.REF_FACTOR * np.asarray(e_ref), rule.FLOOR * U32)
 #: random points per kernel (then the adversarial ones)
 N_RANDOM = 1000
 _ADV_PHI = [1e-12, 1e-8, 1e-4, 1e-2, np.pi - 1e-4, np.pi - 1e-2, -1e-6, 3.0]
@@ -172,19 +186,35 @@ class ProgramSpec:
         env64[name] = v.astype(_F64)
 
 
-def _error(got: np.ndarray, ref: np.ndarray) -> float:
-    """Max over samples of the normwise error in ulp of float32, rounded up to 1e-3 (so that
-    float64 noise never flips a decision between machines)."""
-    scale = np.abs(ref).max(axis=1)
-    scale = np.where(scale == 0, 1.0, scale)
-    err = np.abs(got - ref).max(axis=1) / scale / float(np.finfo(_F32).eps)
-    worst = float(np.max(np.where(np.isfinite(err), err, np.inf))) if len(err) else 0.0
+def _errors(got: np.ndarray, ref: np.ndarray, groups) -> np.ndarray:
+    """``(samples, outputs)``: the normwise relative error of each output (absolute where it
+    is exactly 0; inf where not finite)."""
+    out = np.zeros((len(ref), len(groups)))
+    for j, sl in enumerate(groups):
+        norm = np.linalg.norm(ref[:, sl], axis=1)
+        with np.errstate(all="ignore"):
+            d = np.linalg.norm(got[:, sl] - ref[:, sl], axis=1)
+            e = np.where(norm > 0, d / np.where(norm > 0, norm, 1.0), d)
+        out[:, j] = np.where(np.isfinite(e), e, np.inf)
+    return out
+
+
+def _worst(err: np.ndarray, allowed: np.ndarray) -> float:
+    """The worst ratio to the budget, rounded up to 1e-3 (so that float64 noise never flips
+    a decision between machines)."""
+    if not err.size:
+        return 0.0
+    with np.errstate(all="ignore"):
+        r = np.where(err == 0, 0.0, err / allowed)
+    worst = float(np.max(np.where(np.isfinite(r), r, np.inf)))
     return math.ceil(worst * 1000) / 1000 if math.isfinite(worst) else math.inf
 
 
-def choose(prog: ProgramSpec, cols: dict) -> tuple[dict, float]:
+def choose(prog: ProgramSpec, cols: dict, groups=None, textbook=None) -> tuple[dict, float]:
     """The plan of ``prog`` at the points ``cols`` (rows where the reference is finite),
-    and its measured error in ulp."""
+    and its worst ratio to :data:`BUDGET` (<= 1). ``groups``: the slices of the outputs
+    (default: one); ``textbook``: ``(n, outputs)`` the textbook formula in float32 at the
+    points (default: none, the 4 u floor)."""
     ref = prog.run(cols, None)
     keep = np.isfinite(ref).all(axis=1)
     cols = {k: v[keep] for k, v in cols.items()}
@@ -192,12 +222,16 @@ def choose(prog: ProgramSpec, cols: dict) -> tuple[dict, float]:
     nodes = prog.nodes
     if not len(ref):
         return dict.fromkeys(nodes, "d"), 0.0
+    groups = groups or [slice(0, ref.shape[1])]
+    e_ref = (_errors(textbook[keep], ref, groups) if textbook is not None
+             else np.zeros((len(ref), len(groups))))
+    allowed = BUDGET(e_ref)
 
     def err(plan):
-        return _error(prog.run(cols, plan), ref)
+        return _worst(_errors(prog.run(cols, plan), ref, groups), allowed)
     plan = dict.fromkeys(nodes, "f")
     e = err(plan)
-    if e <= BUDGET:
+    if e <= 1:
         return plan, e
     base = dict.fromkeys(nodes, "d")
     alone = {n: err(base | {n: "f"}) for n in nodes}
@@ -205,7 +239,7 @@ def choose(prog: ProgramSpec, cols: dict) -> tuple[dict, float]:
     for n in sorted(nodes, key=lambda n: (alone[n], nodes.index(n))):
         trial = plan | {n: "f"}
         et = err(trial)
-        if et <= BUDGET:
+        if et <= 1:
             plan, e = trial, et
     return plan, e
 
@@ -249,16 +283,23 @@ def _variant_points(variants, cols: dict) -> list[np.ndarray]:
 
 def plan_kernel(kernel, variants, split: dict | None) -> dict:
     """The precision plans of a kernel: of its trig split's per-sample program when it has
-    one (``"trig"``), else of each variant (``"variants"``), with their measured errors."""
+    one (``"trig"``), else of each variant (``"variants"``), with their worst ratios to
+    :data:`BUDGET` (issue 37's rule against the textbook formula in float32)."""
+    from rigidsym.codegen.spec import flat_symbols
+
     cols = sample_inputs(kernel.args)
+    offs = np.cumsum([0] + [o.size for o in kernel.outputs])
+    groups = [slice(int(a), int(b)) for a, b in zip(offs[:-1], offs[1:], strict=True)]
+    names = [str(s) for _, ss in flat_symbols(kernel) for s in ss]
+    tb = rule.textbook(kernel, [cols[n] for n in names], _F32)
     if split is not None:
         prog = split["program"]
         spec = ProgramSpec(prog.temps, prog.outputs, trig_spec(split["calls"], split["pre"]))
-        plan, err = choose(spec, cols)
+        plan, err = choose(spec, cols, groups, tb)
         return {"trig": {"plan": plan, "error": err}, "variants": None}
     plans = []
     for v, mask in zip(variants, _variant_points(variants, cols), strict=True):
         spec = ProgramSpec(v.program.temps, v.program.outputs)
-        plan, err = choose(spec, {k: c[mask] for k, c in cols.items()})
+        plan, err = choose(spec, {k: c[mask] for k, c in cols.items()}, groups, tb[mask])
         plans.append({"plan": plan, "error": err})
     return {"trig": None, "variants": plans}
