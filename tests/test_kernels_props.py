@@ -202,8 +202,9 @@ def _case(call, specs, arg: int, corruption: str, rng):
     return inputs
 
 
-def _bad_input_table(name: str, n_cases: int, seed: int) -> dict:
-    call, specs = KERNELS[name]
+def _bad_input_table(name: str, n_cases: int, seed: int, call=None) -> dict:
+    """The corruptions on kernel ``name`` (``call``: another back-end's function of it)."""
+    call, specs = call or KERNELS[name][0], KERNELS[name][1]
     names = [s["name"] for s in specs]
     kinds = [*CORRUPTIONS, "batch mismatch"]
     rng = np.random.default_rng(seed)

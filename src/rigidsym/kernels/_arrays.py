@@ -21,11 +21,18 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-import numpy as np
-
 from rigidsym._config import generated_dir
 from rigidsym._io import load_module
-from rigidsym.kernels._arrays_checks import _raise, broadcast_batch, modes, safe_point, validate
+from rigidsym.kernels import _arrays_rescue as _ar
+from rigidsym.kernels._arrays_checks import (
+    _raise,
+    _shp,  # noqa: F401 - _arrays_api's
+    broadcast_batch,
+    convert,
+    modes,
+    safe_point,
+    validate,
+)
 from rigidsym.kernels._errors import raise_flagged
 from rigidsym.kernels._jacobian import contract
 from rigidsym.kernels._jacobian import full_batch as _full
@@ -185,14 +192,12 @@ def _evaluate(xp, variants: tuple, cols: list, stop_gradient: Callable) -> tuple
 
 
 def _singular(xp, dens, like):
+    # a denominator that overflowed to inf flags its sample too (issue 37): x / inf = 0 is
+    # a finite wrong value; eager calls re-run such samples in long double (_arrays_rescue)
     sing = xp.zeros_like(like, dtype=bool) if hasattr(like, "dtype") else None
     for d in dens:
-        sing = xp.logical_or(sing, d == 0)
+        sing = xp.logical_or(sing, (d == 0) | xp.isinf(d))
     return sing
-
-
-def _shp(s) -> str:
-    return "(...)" if not s else f"(..., {', '.join(map(str, s))})"
 
 
 # ------------------------------------------------ the call path both back-ends share
@@ -234,60 +239,10 @@ class Library:
     cast: Callable
     refuse: Callable = _raise
     note: Callable = lambda values: None
-
-
-_BAD_KINDS = "bcOUSMmV"  # NumPy kinds that are no real numbers
-
-
-def convert(lib: Library, values: tuple, args: list[dict]) -> tuple[list, Any, float]:
-    """The library arrays of ``values`` on one device, in the dtype the kernel computes in.
-
-    Returns:
-        ``(arrays, dtype, eps)``: ``dtype`` is the inputs' promoted dtype (the library's
-        rule, :attr:`Library.dtype`), that of the results; the arrays are in it, or in
-        float32 for float16 and bfloat16 (computed in float32, rounded once at the end);
-        ``eps`` is the machine epsilon of the lowest precision among the inputs and the
-        result, for the validation tolerance (a float32 unit vector with a float64 angle
-        is checked at float32's).
-
-    Raises:
-        TypeError: an argument holds no real numbers, or a float type other than float16,
-            bfloat16, float32 and float64 (named).
-        ValueError: ragged, on another device, or the wrong trailing shape (named).
-    """
-    lib.note(values)
-    arrays, eps = [], []
-    for v, a in zip(values, args, strict=True):
-        given = lib.is_array(v) or isinstance(v, (np.ndarray, np.generic))
-        if lib.is_array(v):
-            if not lib.real(v):
-                raise TypeError(f"{a['name']}: expected real numbers, got {v.dtype}")
-        else:
-            try:
-                v = np.asarray(v)
-            except ValueError as exc:
-                raise ValueError(f"{a['name']}: not a rectangular array ({exc})") from None
-            if v.dtype.kind in _BAD_KINDS:
-                raise TypeError(f"{a['name']}: expected real numbers, got {v.dtype}")
-        fd = lib.float_dtype(v)
-        if fd is not None and fd not in lib.floats:
-            raise TypeError(f"{a['name']}: {v.dtype} is not supported; expected float16, "
-                            "bfloat16, float32 or float64 (or integers)")
-        if fd is not None and given:  # an array input, not a list or a Python number
-            eps.append(float(lib.finfo(fd).eps))
-        arrays.append(v)
-    dtype, device = lib.dtype(values, arrays), lib.device(arrays)
-    eps.append(float(lib.finfo(dtype).eps))
-    work = lib.float32 if lib.finfo(dtype).bits < 32 else dtype
-    out = []
-    for v, a in zip(arrays, args, strict=True):
-        t = lib.as_array(v, work, device, a["name"])
-        shape = tuple(a["shape"])
-        if t.ndim < len(shape) or tuple(t.shape[t.ndim - len(shape):]) != shape:
-            raise ValueError(f"{a['name']}: expected shape {_shp(shape)}, got "
-                             f"{tuple(t.shape)}")
-        out.append(t)
-    return out, dtype, max(eps)
+    #: ``rescued(outputs, rows, inputs)``: the outputs, whose ``rows`` (a batch mask) hold
+    #: values of the long-double rescue, with no derivative there (NaN for a nonzero
+    #: cotangent, as autograd cannot follow the host); None: nothing differentiates eagerly
+    rescued: Callable | None = None
 
 
 class Space:
@@ -361,27 +316,36 @@ class Space:
 
     def call(self, name: str, values: tuple, check, on_singular):
         """Kernel ``name`` on ``values`` (the public functions' body): convert, validate
-        (``check``), broadcast, evaluate, then flag the singular (and, checked, overflowed)
-        samples: an error (``on_singular="raise"``) or NaN there."""
+        (``check``), broadcast, evaluate, rescue the samples the program cannot compute in
+        its type (eager: :mod:`._arrays_rescue`, issue 37), then flag the singular samples
+        and those whose result does not fit the dtype: an error (``on_singular="raise"``)
+        or NaN there. ``check=False`` only skips validation."""
         lib, xp = self.lib, self.lib.xp
         meta = self.progs.meta[name]
         args = meta["args"]
         xs, dtype, eps = convert(lib, values, args)
-        check, on_singular = modes(check, on_singular, lib.traced(xs), lib.tracer, lib.refuse)
+        traced = lib.traced(xs)
+        check, on_singular = modes(check, on_singular, traced, lib.tracer, lib.refuse)
         batch = broadcast_batch(xp.broadcast_shapes, xs, args)
         if check:
             validate(xp, [lib.detach(x) for x in xs], args, eps)
         full = [xp.broadcast_to(x, batch + tuple(a["shape"])) for x, a in zip(xs, args,
                                                                              strict=True)]
-        *res, sing = self.function(name)(*full)
+        if traced:
+            full = _ar.traced_inputs(xp, full)
+        *res, bad = self.function(name)(*full)
+        if not traced:
+            res, bad = self._rescue(name, full, res, bad, batch)
         if res[0].dtype != dtype:  # float16, bfloat16: computed in float32, rounded once
             res = [lib.cast(r, dtype) for r in res]
-        bad = sing
-        if check:
-            over = xp.zeros_like(sing)
-            for r in res:
-                over = over | ~xp.isfinite(r.reshape(batch + (-1,))).all(-1)
-            bad = sing | (over & ~sing)
+        # a result that does not fit the dtype, from finite inputs (a NaN input's NaN is
+        # its IEEE value, issue 37)
+        over = xp.zeros_like(bad)
+        for r in res:
+            over = over | ~xp.isfinite(r.reshape(batch + (-1,))).all(-1)
+        for x in full:
+            over = over & xp.isfinite(x.reshape(batch + (-1,))).all(-1)
+        sing, bad = bad, bad | over
         if on_singular == "raise":
             if bool(bad.any()):  # the error path copies the masks to the host
                 raise_flagged(name, meta, lib.host(sing), lib.host(bad & ~sing),
@@ -390,3 +354,17 @@ class Space:
             res = [xp.where(bad.reshape(batch + (1,) * (r.ndim - len(batch))), xp.nan, r)
                    for r in res]
         return res[0] if len(res) == 1 else tuple(res)
+
+    def _rescue(self, name: str, full: list, res: list, sing, batch: tuple):
+        """Eager: the outputs with the flagged samples re-run in long double, and the
+        singular mask the wide run finds (:mod:`._arrays_rescue`)."""
+        lib, xp = self.lib, self.lib.xp
+        bits = int(lib.finfo(full[0].dtype).bits)
+        rows = _ar.flag_rows(xp, full, res, sing, batch, bits)
+        if not bool(rows.any()):
+            return res, sing
+        res, s, put = _ar.rescue(lib, self.progs, name, full, res, rows, batch, bits)
+        dev = lib.device(full)
+        if lib.rescued is not None and put.any():
+            res = lib.rescued(res, lib.as_array(put.reshape(batch), None, dev, "rows"), full)
+        return res, lib.as_array(s.reshape(batch), None, dev, "singular")

@@ -10,7 +10,7 @@ import types
 from collections.abc import Callable
 from pathlib import Path
 
-from rigidsym.kernels import _state
+from rigidsym.kernels import _names, _state
 from rigidsym.kernels._arrays import SUFFIX, ArraySpace, _shp
 
 __all__ = ["docstring", "make_kernel", "namespace", "module_api"]
@@ -83,6 +83,7 @@ _LOAD_DOC = """The {lib} kernels of a generated directory (``rigidsym generate -
         A namespace with one function per public kernel and ``KERNEL_NAMES``.
 
     Raises:
+        TypeError: ``directory`` is not a str, a path-like or None.
         FileNotFoundError: no ``kernels.json`` or ``{backend}/`` there.
     """
 _RATE_MATRIX_DOC = """Euler-angle rate matrix ``W`` with ``omega = W eta_dot`` (Exercise 3.10).
@@ -142,7 +143,7 @@ def module_api(scope: dict, make_space: Callable, lib: str, noun: str,
         return spaces[key]
 
     def load(directory: str | Path | None = None) -> types.ModuleType:
-        s = space(directory)
+        s = space(_names.directory(directory))  # a wrong type: TypeError naming it
         return namespace(s.progs, s.call, f"{module}.load({str(directory)!r})")
 
     def euler_rate_matrix(angles, sequence: str, frame: str = "fixed", *, check=None,

@@ -8,12 +8,13 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable
+from typing import Any
 
 import numpy as np
 
 from rigidsym import _kinds
 
-__all__ = ["modes", "validate", "broadcast_batch", "tolerance", "safe_point"]
+__all__ = ["modes", "validate", "broadcast_batch", "tolerance", "safe_point", "convert"]
 
 _MODES = ("raise", "nan")
 
@@ -100,9 +101,13 @@ def broadcast_batch(broadcast_shapes: Callable, xs: list, args: list[dict]) -> t
         return tuple(broadcast_shapes(*[x.shape[:x.ndim - len(a["shape"])]
                                         for x, a in zip(xs, args, strict=True)]))
     except (RuntimeError, ValueError):  # torch raises RuntimeError, JAX ValueError
-        shapes = ", ".join(f"{a['name']} {tuple(x.shape)}" for x, a in zip(xs, args,
-                                                                             strict=True))
-        raise ValueError(f"batch shapes do not broadcast: {shapes}") from None
+        # the message starts with the arguments' names, as rigidsym.kernels' does (issue 37
+        # item 7): which one is wrong is the caller's
+        pairs = [(a["name"], tuple(x.shape)) for x, a in zip(xs, args, strict=True)
+                 if x.ndim > len(a["shape"])] or [(a["name"], tuple(x.shape))
+                                                  for x, a in zip(xs, args, strict=True)]
+        raise ValueError(", ".join(n for n, _ in pairs) + ": batch shapes do not broadcast ("
+                         + ", ".join(f"{n} {s}" for n, s in pairs) + ")") from None
 
 
 def _numel(x) -> int:
@@ -127,3 +132,62 @@ def safe_point(args: list[dict]) -> list[float]:
             vals = rng.uniform(-1.5, 1.5, n)
         out.extend(float(v) for v in vals)
     return out
+
+
+def _shp(s) -> str:
+    return "(...)" if not s else f"(..., {', '.join(map(str, s))})"
+
+
+_BAD_KINDS = "bcOUSMmV"  # NumPy kinds that are no real numbers
+
+
+def convert(lib, values: tuple, args: list[dict]) -> tuple[list, Any, float]:
+    """The library arrays of ``values`` on one device, in the dtype the kernel computes in
+    (``lib``: the back-end's :class:`rigidsym.kernels._arrays.Library`).
+
+    Returns:
+        ``(arrays, dtype, eps)``: ``dtype`` is the inputs' promoted dtype (the library's
+        rule, ``lib.dtype``), that of the results; the arrays are in it, or in float32
+        for float16 and bfloat16 (computed in float32, rounded once at the end);
+        ``eps`` is the machine epsilon of the lowest precision among the inputs and the
+        result, for the validation tolerance (a float32 unit vector with a float64 angle
+        is checked at float32's).
+
+    Raises:
+        TypeError: an argument holds no real numbers, or a float type other than float16,
+            bfloat16, float32 and float64 (named).
+        ValueError: ragged, on another device, or the wrong trailing shape (named).
+    """
+    lib.note(values)
+    arrays, eps = [], []
+    for v, a in zip(values, args, strict=True):
+        given = lib.is_array(v) or isinstance(v, (np.ndarray, np.generic))
+        if lib.is_array(v):
+            if not lib.real(v):
+                raise TypeError(f"{a['name']}: expected real numbers, got {v.dtype}")
+        else:
+            try:
+                v = np.asarray(v)
+            except ValueError as exc:
+                raise ValueError(f"{a['name']}: not a rectangular array ({exc})") from None
+            if v.dtype.kind in _BAD_KINDS:
+                raise TypeError(f"{a['name']}: expected real numbers, got {v.dtype}")
+        fd = lib.float_dtype(v)
+        if fd is not None and fd not in lib.floats:
+            raise TypeError(f"{a['name']}: {v.dtype} is not supported; expected float16, "
+                            "bfloat16, float32 or float64 (or integers)")
+        if fd is not None and given:  # an array input, not a list or a Python number
+            eps.append(float(lib.finfo(fd).eps))
+        arrays.append(v)
+    dtype, device = lib.dtype(values, arrays), lib.device(arrays)
+    eps.append(float(lib.finfo(dtype).eps))
+    work = lib.float32 if lib.finfo(dtype).bits < 32 else dtype
+    out = []
+    for v, a in zip(arrays, args, strict=True):
+        t = lib.as_array(v, work, device, a["name"])
+        shape = tuple(a["shape"])
+        if t.ndim < len(shape) or tuple(t.shape[t.ndim - len(shape):]) != shape:
+            raise ValueError(f"{a['name']}: expected shape {_shp(shape)}, got "
+                             f"{tuple(t.shape)}")
+        out.append(t)
+    return out, dtype, max(eps)

@@ -23,7 +23,7 @@ from rigidsym import _kinds
 from rigidsym._io import load_module
 from rigidsym.kernels import _dask, _entries, _state
 from rigidsym.kernels._errors import NonFiniteResultError, SingularConfigurationError
-from rigidsym.kernels._rescue import extreme_rows, rescue
+from rigidsym.kernels._rescue import RANGE32, extreme_rows, rescue
 from rigidsym.kernels._scale import (
     MIN_PARALLEL,
     check_threads,
@@ -249,8 +249,9 @@ class KernelSpace:
                 flags = k(*arrays)
                 n = len(flags)
                 rows = flags != 0
-                if not f32:            # float32 samples ran in float64 arithmetic
-                    rows |= extreme_rows(arrays[:nin], n)
+                # float32 samples ran in float64 arithmetic: the C kernels' float32 range
+                # (a non-finite float32 input too: its IEEE limits are no value, issue 37)
+                rows |= extreme_rows(arrays[:nin], n, RANGE32 if f32 else None)
                 if rows.any():
                     idx = np.flatnonzero(rows)
                     flags[idx] = rescue(wide, arrays[:nin], arrays[nin:], idx)

@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["WIDE", "extreme_rows", "rescue"]
+__all__ = ["WIDE", "extreme_rows", "rescue", "RANGE32"]
 
 #: the type of the rescue: NumPy's long double, the x87 extended double on x86-64 (exponent
 #: to 16383, 64-bit significand) and quad precision on aarch64 Linux; where long double is
@@ -23,6 +23,9 @@ WIDE = np.longdouble if np.finfo(np.longdouble).maxexp > 1024 else np.float64
 #: the range of float64 input magnitudes the kernels evaluate without the rescue (the C
 #: kernels' own test: c_common.h, rigidsym_any_extreme)
 _TINY, _BIG = 2.0**-100, 2.0**101
+#: float32 inputs, computed in float64 (NumPy as C): the float32 C kernels' range
+#: (c_common.h), inside which products of up to ten inputs stay normal in float64
+RANGE32 = (2.0**-30, 2.0**31)
 _RANGE_BLOCK = 16384
 #: sample flags of the generated batch functions (numpy_kernel.py.j2)
 _NONFINITE = 2
@@ -51,13 +54,15 @@ def rescue(kernel, flat: list, bufs: list, idx: np.ndarray) -> np.ndarray:
     return sub
 
 
-def extreme_rows(flat: list, n: int) -> np.ndarray:
+def extreme_rows(flat: list, n: int, limits: tuple[float, float] | None = None) -> np.ndarray:
     """``(n,)`` bool: rows with an input that is non-finite or nonzero of magnitude outside
     ``[2**-100, 2**101)``, where a float64 kernel's intermediates (products of up to ten
     inputs) could overflow or underflow: the NumPy backend re-runs them in :data:`WIDE` (the
     C kernels flag them themselves, ``rigidsym_any_extreme``). A block at a time through one
     buffer (in cache: 5 % of a cheap kernel's time at N = 1e6), rows only where a block has
-    an extreme value or a zero."""
+    an extreme value or a zero. ``limits``: another range than float64's (float32
+    inputs: :data:`RANGE32`)."""
+    tiny, big = (_TINY, _BIG) if limits is None else limits
     bad = np.zeros(n, dtype=bool)
     step = _RANGE_BLOCK
     for a in flat:
@@ -65,7 +70,7 @@ def extreme_rows(flat: list, n: int) -> np.ndarray:
         buf = np.empty((min(n, step), a2.shape[1]))
         for s in range(0, n, step):
             m = np.abs(a2[s:s + step], out=buf[:min(step, n - s)])
-            if m.max() < _BIG and m.min() >= _TINY:
+            if m.max() < big and m.min() >= tiny:
                 continue
-            bad[s:s + step] |= ((m >= _BIG) | ((m < _TINY) & (m != 0)) | np.isnan(m)).any(1)
+            bad[s:s + step] |= ((m >= big) | ((m < tiny) & (m != 0)) | np.isnan(m)).any(1)
     return bad

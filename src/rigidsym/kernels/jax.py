@@ -11,7 +11,9 @@ first such call warns, naming the flag.
 
 Keywords (no ``out=``, no ``threads=``: meaningless under ``jit``):
 
-* ``check``: validate finiteness, unit vectors and rotations, and report an overflow;
+* ``check``: validate finiteness, unit vectors and rotations (a result that does not
+  fit the dtype is reported either way; eager calls re-run the samples whose
+  intermediates overflow or underflow in long double, as C and NumPy: docs/kernels.md);
   default ``True`` on concrete arrays; refused (``ValueError``) under ``jax.jit``,
   ``jax.vmap``, ``jax.grad`` and other tracing, where the default is ``False``.
 * ``on_singular``: ``"nan"`` (NaN in exactly the singular samples) everywhere; ``"raise"``

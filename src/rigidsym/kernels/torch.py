@@ -9,7 +9,9 @@ The programs are those the NumPy and C kernels print (``generated/torch``).
 Keywords (no ``out=``, no ``threads=``: meaningless or harmful under autograd and
 ``torch.compile``):
 
-* ``check``: validate finiteness, unit vectors and rotations, and report an overflow;
+* ``check``: validate finiteness, unit vectors and rotations (a result that does not
+  fit the dtype is reported either way; eager calls re-run the samples whose
+  intermediates overflow or underflow in long double, as C and NumPy: docs/kernels.md);
   default ``True`` in eager mode; refused (``ValueError``) under ``torch.compile`` and
   ``torch.func`` transforms, where the default is ``False`` (no host synchronisation).
 * ``on_singular``: ``"nan"`` (NaN in exactly the singular samples) everywhere; ``"raise"``
@@ -179,6 +181,42 @@ def _make(space: _arrays.Space, name: str):
     return apply
 
 
+class _Rescued(torch.autograd.Function):
+    """Outputs whose masked rows came from the long-double rescue (issue 37): the
+    identity on the outputs, and a NaN derivative for the inputs of those rows wherever
+    their cotangent is nonzero (autograd cannot follow the host; a zero derivative would be
+    silently wrong), zero where it is zero (a loss that ignores them stays finite)."""
+
+    @staticmethod
+    def forward(rows, nout, *tensors):
+        return tuple(t.clone() for t in tensors[:nout])
+
+    @staticmethod
+    def setup_context(ctx, inputs, output):
+        rows, nout, *tensors = inputs
+        ctx.save_for_backward(rows)
+        ctx.inputs = [(t.shape, t.dtype) for t in tensors[nout:]]
+
+    @staticmethod
+    def backward(ctx, *grads):
+        (rows,) = ctx.saved_tensors
+        hit = torch.zeros_like(rows)
+        for g in grads:
+            hit = hit | (g.reshape(rows.shape + (-1,)) != 0).any(-1)
+        hit = hit & rows
+        bad = [torch.where(hit.reshape(rows.shape + (1,) * (len(s) - rows.ndim)),
+                           torch.tensor(torch.nan, dtype=d, device=rows.device),
+                           torch.tensor(0.0, dtype=d, device=rows.device)).expand(s)
+               for s, d in ctx.inputs]
+        return (None, None, *grads, *bad)
+
+
+def _rescued(res: list, rows, xs: list) -> list:
+    if not (torch.is_grad_enabled() and any(x.requires_grad for x in xs)):
+        return res
+    return list(_Rescued.apply(rows, len(res), *res, *xs))
+
+
 _LIBRARY = _arrays.Library(
     backend="torch", xp=torch, tracer="torch.compile / torch.func", traced=_traced,
     stop_gradient=torch.detach, detach=torch.detach,
@@ -188,7 +226,7 @@ _LIBRARY = _arrays.Library(
     device=lambda xs: next((x.device for x in xs if isinstance(x, torch.Tensor)), None),
     host=lambda x: x.cpu().numpy(), make=_make, refuse=_refuse, floats=_FLOATS,
     float32=torch.float32, finfo=torch.finfo, float_dtype=_float_dtype,
-    cast=lambda x, dtype: x.to(dtype))
+    cast=lambda x, dtype: x.to(dtype), rescued=_rescued)
 
 # load, the Euler-angle kernels, the lazy kernels: the same for both back-ends (_arrays_api)
 load, euler_rate_matrix, euler_angle_rates, __getattr__, __dir__, _space = \
