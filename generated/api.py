@@ -32,6 +32,11 @@ __all__ = [
     "N_matrix_dot",
     "N_tilde",
     "N_tilde_dot",
+    "euler_rodrigues_from_rotation",
+    "euler_rodrigues_product",
+    "exponential_coordinates_from_transform",
+    "exponential_coordinates_left_jacobian",
+    "exponential_coordinates_left_jacobian_inverse",
     "inertia_at_point",
     "inertia_dyad_at_point",
     "instant_screw_axis",
@@ -44,8 +49,15 @@ __all__ = [
     "point_acceleration",
     "rotation_from_euler_rodrigues",
     "rotation_from_natural_invariants",
+    "rotation_from_rotation_vector",
+    "rotation_vector_from_rotation",
+    "rotation_vector_left_jacobian",
+    "rotation_vector_left_jacobian_inverse",
+    "rotation_vector_right_jacobian",
+    "rotation_vector_right_jacobian_inverse",
     "screw_axis_point",
     "screw_of_displacement",
+    "transform_from_exponential_coordinates",
     "twist_transfer",
     "twist_transfer_matrix",
     "wrench_axis",
@@ -102,7 +114,7 @@ def H_matrix(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1.62 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 3 ulp in float64) over 8 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 2 ulp in float64) over 8 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 11 operations; math hash d161921036f1484c.
     """
@@ -143,7 +155,7 @@ def H_matrix_dot(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1.12 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 106 ulp in float64) over 9 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1.42 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 29 ulp in float64) over 11 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 34 operations; math hash 0c036980272247c8.
     """
@@ -182,7 +194,7 @@ def H_tilde(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1.62 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 3 ulp in float64) over 8 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 2 ulp in float64) over 8 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 11 operations; math hash 394d6fafe3d12373.
     """
@@ -223,7 +235,7 @@ def H_tilde_dot(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 82 ulp in float64) over 9 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1.42 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 34 ulp in float64) over 11 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 32 operations; math hash a75606877943bdb2.
     """
@@ -262,7 +274,7 @@ def L_matrix(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1.85 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 431 ulp in float64) over 8 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1.71 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 1.79e+03 ulp in float64) over 8 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 48 operations; math hash ad587ca95a235ac2.
     """
@@ -303,7 +315,7 @@ def L_matrix_dot(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1.31 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 381 ulp in float64) over 9 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1.31 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 186 ulp in float64) over 11 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 98 operations; math hash bc3db842eb2cf774.
     """
@@ -389,7 +401,7 @@ def L_tilde_dot(
     Notes:
         Singular set: 1 + cos(phi) = 0 (phi = pi).
 
-        Accuracy: error <= 2.39 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 1.5e+03 ulp in float64) over 9 regimes (docs/accuracy.md, kernels.accuracy); singular when 1 + cos(phi) = 0 (phi = pi), flagged where cos(phi/2) == 0 in floating point, never for a float phi: finite at phi = fl(pi).
+        Accuracy: error <= 1.82 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 228 ulp in float64) over 11 regimes (docs/accuracy.md, kernels.accuracy); singular when 1 + cos(phi) = 0 (phi = pi), flagged where cos(phi/2) == 0 in floating point, never for a float phi: finite at phi = fl(pi).
 
         Generated; 91 operations; math hash 4a1f179ad0d8d060.
     """
@@ -431,7 +443,7 @@ def N_matrix(
     Notes:
         Singular set: phi = 0 (mod 2 pi): the axis is undefined.
 
-        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 114 ulp in float64) over 8 regimes (docs/accuracy.md, kernels.accuracy); singular when phi = 0 (mod 2 pi): the axis is undefined, flagged where sin(phi/2) == 0 in floating point: phi == 0 exactly (and abs(phi) < 1e-323); an output overflows (non-finite) where the result exceeds the type, about abs(phi) < 1e-300 x norm(input) in float64.
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 56 ulp in float64) over 8 regimes (docs/accuracy.md, kernels.accuracy); singular when phi = 0 (mod 2 pi): the axis is undefined, flagged where sin(phi/2) == 0 in floating point: phi == 0 exactly (and abs(phi) < 1e-323); an output overflows (non-finite) where the result exceeds the type, about abs(phi) < 1e-300 x norm(input) in float64.
 
         Generated; 31 operations; math hash 717c2182df7e8788.
     """
@@ -475,7 +487,7 @@ def N_matrix_dot(
     Notes:
         Singular set: phi = 0 (mod 2 pi): the axis is undefined.
 
-        Accuracy: error <= 1.16 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 190 ulp in float64) over 9 regimes (docs/accuracy.md, kernels.accuracy); singular when phi = 0 (mod 2 pi): the axis is undefined, flagged where sin(phi/2) == 0 in floating point: phi == 0 exactly (and abs(phi) < 1e-323); an output overflows (non-finite) where the result exceeds the type, about abs(phi) < 1e-300 x norm(input) in float64.
+        Accuracy: error <= 1.16 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 191 ulp in float64) over 11 regimes (docs/accuracy.md, kernels.accuracy); singular when phi = 0 (mod 2 pi): the axis is undefined, flagged where sin(phi/2) == 0 in floating point: phi == 0 exactly (and abs(phi) < 1e-323); an output overflows (non-finite) where the result exceeds the type, about abs(phi) < 1e-300 x norm(input) in float64.
 
         Generated; 199 operations; math hash a50ef6111f8ca170.
     """
@@ -514,7 +526,7 @@ def N_tilde(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1.23 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 4 ulp in float64) over 8 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1.02 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 4 ulp in float64) over 8 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 13 operations; math hash 27fa6424b1903ca5.
     """
@@ -558,11 +570,198 @@ def N_tilde_dot(
     Notes:
         Singular set: phi = 0 (mod 2 pi): the axis, and so its rate, is undefined.
 
-        Accuracy: error <= 1.52 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 146 ulp in float64) over 9 regimes (docs/accuracy.md, kernels.accuracy); singular when phi = 0 (mod 2 pi): the axis, and so its rate, is undefined, flagged where sin(phi/2) == 0 in floating point: phi == 0 exactly (and abs(phi) < 1e-323); an output overflows (non-finite) where the result exceeds the type, about abs(phi) < 1e-300 x norm(input) in float64.
+        Accuracy: error <= 1.62 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 112 ulp in float64) over 11 regimes (docs/accuracy.md, kernels.accuracy); singular when phi = 0 (mod 2 pi): the axis, and so its rate, is undefined, flagged where sin(phi/2) == 0 in floating point: phi == 0 exactly (and abs(phi) < 1e-323); an output overflows (non-finite) where the result exceeds the type, about abs(phi) < 1e-300 x norm(input) in float64.
 
         Generated; 79 operations; math hash b1c3eb794fbb8245.
     """
     return _F.N_tilde_dot(e, phi, omega, out, check, on_singular, threads)
+
+
+def euler_rodrigues_from_rotation(
+    Q: ArrayLike,
+    *,
+    out: OutArrays = None,
+    check: bool = True,
+    on_singular: OnSingular | None = None,
+    threads: int | None = None,
+) -> NDArray[np.floating]:
+    r"""The Euler-Rodrigues parameters eta = [r; r0] of Q, r0 >= 0.
+
+        r0 = sqrt(1 + tr Q) / 2, r = vect(Q) / (2 r0); Shepperd's branches for tr Q <= 0
+
+    Book: Eq. (sola:quat-of-rotation), (sola:quat-product); composed of rigidsym.derivations.lie_maps.euler_rodrigues_from_rotation.
+
+    Args:
+        Q: array-like (..., 3, 3), proper orthogonal; rotation matrix (proper orthogonal)
+        out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
+        check: validate the inputs (finite, unit e/eta, orthogonal Q); False skips only that: on valid input the same result, and a NaN or inf input gives NaN in the outputs that depend on it.
+        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
+        threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
+
+    Returns:
+        ndarray (..., 4): eta; [r; r0], unit, r0 >= 0
+
+    Raises:
+        TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
+        ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
+        NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
+
+    Notes:
+        At phi = pi exactly (r0 = 0) eta and -eta are both parameters of Q.
+
+        Generated; 73 operations; math hash 019b8ba8b4ba61cb.
+    """
+    return _F.euler_rodrigues_from_rotation(Q, out, check, on_singular, threads)
+
+
+def euler_rodrigues_product(
+    eta1: ArrayLike,
+    eta2: ArrayLike,
+    *,
+    out: OutArrays = None,
+    check: bool = True,
+    on_singular: OnSingular | None = None,
+    threads: int | None = None,
+) -> NDArray[np.floating]:
+    r"""The product of Euler-Rodrigues parameters (Hamilton, scalar last).
+
+        [a0 b + b0 a + a x b; a0 b0 - a . b]
+
+    Book: Eq. (sola:quat-of-rotation), (sola:quat-product); composed of rigidsym.derivations.lie_maps.euler_rodrigues_product.
+
+    Args:
+        eta1: array-like (..., 4); [r; r0] of the first rotation
+        eta2: array-like (..., 4); [r; r0] of the second rotation
+        out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
+        check: validate the inputs (finite, unit e/eta, orthogonal Q); False skips only that: on valid input the same result, and a NaN or inf input gives NaN in the outputs that depend on it.
+        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
+        threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
+
+    Returns:
+        ndarray (..., 4): eta; [r; r0] of Q(eta1) Q(eta2)
+
+    Raises:
+        TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
+        ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
+        NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
+
+    Notes:
+        Generated; 28 operations; math hash 05e96cfeb0908f4b.
+    """
+    return _F.euler_rodrigues_product(eta1, eta2, out, check, on_singular, threads)
+
+
+def exponential_coordinates_from_transform(
+    T: ArrayLike,
+    *,
+    out: OutArrays = None,
+    check: bool = True,
+    on_singular: OnSingular | None = None,
+    threads: int | None = None,
+) -> NDArray[np.floating]:
+    r"""Log of SE(3): the exponential coordinates xi = [w; v] of T, |w| in [0, pi].
+
+        w = Log(R), v = J_l(w)^-1 p
+
+    Book: Eq. (sola:exp-se3), (sola:log-exp-se3); composed of rigidsym.derivations.lie_maps.exponential_coordinates_from_transform.
+
+    Args:
+        T: array-like (..., 4, 4); homogeneous transform [[R, p], [0, 1]] (R a rotation)
+        out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
+        check: validate the inputs (finite, unit e/eta, orthogonal Q); False skips only that: on valid input the same result, and a NaN or inf input gives NaN in the outputs that depend on it.
+        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
+        threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
+
+    Returns:
+        ndarray (..., 6): xi; [w; v]
+
+    Raises:
+        TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
+        ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
+        NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
+        SingularConfigurationError: on the singular set (phi = 0 (the main formula's 0/0)), unless on_singular='nan'.
+
+    Notes:
+        Singular set: phi = 0 (the main formula's 0/0).
+
+        T is not validated (its rotation block is read as a rotation).
+
+        Generated; 425 operations; math hash 0ea5162c1b71e714.
+    """
+    return _F.exponential_coordinates_from_transform(T, out, check, on_singular, threads)
+
+
+def exponential_coordinates_left_jacobian(
+    xi: ArrayLike,
+    *,
+    out: OutArrays = None,
+    check: bool = True,
+    on_singular: OnSingular | None = None,
+    threads: int | None = None,
+) -> NDArray[np.floating]:
+    r"""The left Jacobian of SE(3) at xi = [w; v] (6 x 6, angular first).
+
+        [[J_l(w), 0], [Q(v, w), J_l(w)]] (Barfoot Sec. 7.1.5, reordered)
+
+    Book: Eq. (barfoot:se3-jl-definition), (barfoot:se3-jl-xi), (barfoot:se3-jl-inverse); composed of rigidsym.derivations.lie_maps.exponential_coordinates_left_jacobian.
+
+    Args:
+        xi: array-like (..., 6); exponential coordinates [w; v] ([rad]; [m])
+        out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
+        check: validate the inputs (finite, unit e/eta, orthogonal Q); False skips only that: on valid input the same result, and a NaN or inf input gives NaN in the outputs that depend on it.
+        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
+        threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
+
+    Returns:
+        ndarray (..., 6, 6): J
+
+    Raises:
+        TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
+        ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
+        NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
+
+    Notes:
+        Generated; 226 operations; math hash a4133e465ca458b7.
+    """
+    return _F.exponential_coordinates_left_jacobian(xi, out, check, on_singular, threads)
+
+
+def exponential_coordinates_left_jacobian_inverse(
+    xi: ArrayLike,
+    *,
+    out: OutArrays = None,
+    check: bool = True,
+    on_singular: OnSingular | None = None,
+    threads: int | None = None,
+) -> NDArray[np.floating]:
+    r"""The left Jacobian inverse of SE(3) at xi = [w; v] (6 x 6, angular first).
+
+        the block inverse of [[J_l, 0], [Q, J_l]]
+
+    Book: Eq. (barfoot:se3-jl-definition), (barfoot:se3-jl-xi), (barfoot:se3-jl-inverse); composed of rigidsym.derivations.lie_maps.exponential_coordinates_left_jacobian_inverse.
+
+    Args:
+        xi: array-like (..., 6); exponential coordinates [w; v] ([rad]; [m])
+        out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
+        check: validate the inputs (finite, unit e/eta, orthogonal Q); False skips only that: on valid input the same result, and a NaN or inf input gives NaN in the outputs that depend on it.
+        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
+        threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
+
+    Returns:
+        ndarray (..., 6, 6): J
+
+    Raises:
+        TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
+        ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
+        NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
+        SingularConfigurationError: on the singular set (|w| = 2 pi k, k != 0), unless on_singular='nan'.
+
+    Notes:
+        Singular set: |w| = 2 pi k, k != 0.
+
+        Generated; 1102 operations; math hash 403a221bb493ca86.
+    """
+    return _F.exponential_coordinates_left_jacobian_inverse(xi, out, check, on_singular, threads)
 
 
 def inertia_at_point(
@@ -601,7 +800,7 @@ def inertia_at_point(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 4 ulp in float64) over 2 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 6 ulp in float64) over 4 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 29 operations; math hash 421dca07df5d4b7a.
     """
@@ -644,7 +843,7 @@ def inertia_dyad_at_point(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 3 ulp in float64) over 2 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 6 ulp in float64) over 4 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 36 operations; math hash 68258707f5bb9e80.
     """
@@ -692,7 +891,7 @@ def instant_screw_axis(
     Notes:
         Singular set: omega = 0 (pure translation).
 
-        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 68 ulp in float64) over 3 regimes (docs/accuracy.md, kernels.accuracy); singular when omega = 0 (pure translation), flagged where ||omega||^2 == 0 in floating point: omega == 0; a square underflows to 0 only for ||omega|| < 1.5e-162 (float64), < 1e-19 (float32 arithmetic), which benchmarks/accuracy.py calls below the smallest useful step.
+        Accuracy: error <= 1.15 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 79 ulp in float64) over 5 regimes (docs/accuracy.md, kernels.accuracy); singular when omega = 0 (pure translation), flagged where ||omega||^2 == 0 in floating point: omega == 0; a square underflows to 0 only for ||omega|| < 1.5e-162 (float64), < 1e-19 (float32 arithmetic), which benchmarks/accuracy.py calls below the smallest useful step.
 
         Generated; 56 operations; math hash bbbb3fe59daee446.
     """
@@ -735,7 +934,7 @@ def kinetic_energy(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 1 ulp in float64) over 3 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 2 ulp in float64) over 5 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 33 operations; math hash 59e2107c6b1479ae.
     """
@@ -784,7 +983,7 @@ def moving_frame_acceleration(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 66 ulp in float64) over 8 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 51 ulp in float64) over 10 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 153 operations; math hash 9ff5554b1ab9fff0.
     """
@@ -829,7 +1028,7 @@ def natural_invariants_from_rotation(
 
         For an exactly symmetric Q (phi = pi) the sign of e is fixed by the rule: the component of e of largest magnitude is positive (e is taken from the column of the largest diagonal entry of Q); near pi, the skew part of Q fixes the sign, as in Pinocchio's log3.
 
-        Accuracy: error <= 1.22 u (kappa + 1) in float64, <= 1.28 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 1.76e+16 ulp in float64) over 6 regimes (docs/accuracy.md, kernels.accuracy); singular when phi = 0 (Q = 1): the axis e is undefined, flagged where ||vect(Q)||^2 == 0 with tr Q >= 0 (the main build): Q exactly symmetric in floating point, i.e. phi = 0 (Q = 1), or abs(phi) below the rounding of Q (about 1e-16).
+        Accuracy: error <= 1.22 u (kappa + 1) in float64, <= 1.28 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 2 ulp in float64) over 6 regimes (docs/accuracy.md, kernels.accuracy); singular when phi = 0 (Q = 1): the axis e is undefined, flagged where ||vect(Q)||^2 == 0 with tr Q >= 0 (the main build): Q exactly symmetric in floating point, i.e. phi = 0 (Q = 1), or abs(phi) below the rounding of Q (about 1e-16).
 
         Generated; 172 operations; math hash 445339cc0a3a5a8f.
     """
@@ -874,7 +1073,7 @@ def newton_euler_wrench(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 23 ulp in float64) over 3 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 23 ulp in float64) over 5 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 45 operations; math hash a4f13db2095d7265.
     """
@@ -916,7 +1115,7 @@ def plucker_from_points(
     Notes:
         Singular set: p1 = p2.
 
-        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 2.8e+13 ulp in float64) over 3 regimes (docs/accuracy.md, kernels.accuracy); singular when p1 = p2, flagged where ||p2 - p1||^2 == 0 in floating point: p1 == p2; a square underflows to 0 only for ||p2 - p1|| < 1.5e-162 (float64), < 1e-19 (float32 arithmetic), which benchmarks/accuracy.py calls below the smallest useful step.
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 4.27e+13 ulp in float64) over 6 regimes (docs/accuracy.md, kernels.accuracy); singular when p1 = p2, flagged where ||p2 - p1||^2 == 0 in floating point: p1 == p2; a square underflows to 0 only for ||p2 - p1|| < 1.5e-162 (float64), < 1e-19 (float32 arithmetic), which benchmarks/accuracy.py calls below the smallest useful step.
 
         Generated; 22 operations; math hash 37ca360961ff48ba.
     """
@@ -957,7 +1156,7 @@ def plucker_transfer(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 10 ulp in float64) over 2 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 2 ulp in float64) over 4 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 15 operations; math hash 69d9b4ff4ea5cbea.
     """
@@ -1002,7 +1201,7 @@ def point_acceleration(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 62 ulp in float64) over 3 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 62 ulp in float64) over 5 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 36 operations; math hash bba0e838d11c478a.
     """
@@ -1078,11 +1277,229 @@ def rotation_from_natural_invariants(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1.36 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 451 ulp in float64) over 8 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1.37 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 77 ulp in float64) over 8 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 37 operations; math hash 3a598761ac6bf1a3.
     """
     return _F.rotation_from_natural_invariants(e, phi, out, check, on_singular, threads)
+
+
+def rotation_from_rotation_vector(
+    w: ArrayLike,
+    *,
+    out: OutArrays = None,
+    check: bool = True,
+    on_singular: OnSingular | None = None,
+    threads: int | None = None,
+) -> NDArray[np.floating]:
+    r"""Exp of so(3): the rotation of w.
+
+        Q = 1 + (sin t / t) [w] + ((1 - cos t) / t^2) [w]^2, t = |w|
+
+    Book: Eq. (sola:exp-so3), (sola:log-exp-so3), (sola:exp-log-so3); composed of rigidsym.derivations.lie_maps.rotation_from_rotation_vector.
+
+    Args:
+        w: array-like (..., 3); rotation vector w = phi e [rad]
+        out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
+        check: validate the inputs (finite, unit e/eta, orthogonal Q); False skips only that: on valid input the same result, and a NaN or inf input gives NaN in the outputs that depend on it.
+        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
+        threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
+
+    Returns:
+        ndarray (..., 3, 3): Q; rotation matrix
+
+    Raises:
+        TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
+        ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
+        NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
+
+    Notes:
+        Generated; 31 operations; math hash 26ba18056a63eeb8.
+    """
+    return _F.rotation_from_rotation_vector(w, out, check, on_singular, threads)
+
+
+def rotation_vector_from_rotation(
+    Q: ArrayLike,
+    *,
+    out: OutArrays = None,
+    check: bool = True,
+    on_singular: OnSingular | None = None,
+    threads: int | None = None,
+) -> NDArray[np.floating]:
+    r"""Log of SO(3): the rotation vector w = phi e of Q, |w| in [0, pi].
+
+        w = (phi / sin phi) vect(Q); asin near 0, the symmetric part near pi
+
+    Book: Eq. (sola:exp-so3), (sola:log-exp-so3), (sola:exp-log-so3); composed of rigidsym.derivations.lie_maps.rotation_vector_from_rotation.
+
+    Args:
+        Q: array-like (..., 3, 3), proper orthogonal; rotation matrix (proper orthogonal)
+        out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
+        check: validate the inputs (finite, unit e/eta, orthogonal Q); False skips only that: on valid input the same result, and a NaN or inf input gives NaN in the outputs that depend on it.
+        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
+        threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
+
+    Returns:
+        ndarray (..., 3): w; rotation vector [rad]
+
+    Raises:
+        TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
+        ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
+        NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
+
+    Notes:
+        At phi = pi exactly, w and -w are both logarithms; the sign follows natural_invariants_from_rotation's rule.
+
+        Generated; 195 operations; math hash de9c93174b0c8c92.
+    """
+    return _F.rotation_vector_from_rotation(Q, out, check, on_singular, threads)
+
+
+def rotation_vector_left_jacobian(
+    w: ArrayLike,
+    *,
+    out: OutArrays = None,
+    check: bool = True,
+    on_singular: OnSingular | None = None,
+    threads: int | None = None,
+) -> NDArray[np.floating]:
+    r"""The left Jacobian of SO(3) at w.
+
+        J_l(w), Solà et al. 2018 App. B
+
+    Book: Eq. (sola:jl-definition), (sola:jr-definition), (sola:jl-jr), (sola:jl-R-jr), (sola:jl-w), (sola:jl-inverse); composed of rigidsym.derivations.lie_maps.rotation_vector_left_jacobian.
+
+    Args:
+        w: array-like (..., 3); rotation vector w = phi e [rad]
+        out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
+        check: validate the inputs (finite, unit e/eta, orthogonal Q); False skips only that: on valid input the same result, and a NaN or inf input gives NaN in the outputs that depend on it.
+        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
+        threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
+
+    Returns:
+        ndarray (..., 3, 3): J
+
+    Raises:
+        TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
+        ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
+        NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
+
+    Notes:
+        Generated; 31 operations; math hash d4a19d08f115cd7e.
+    """
+    return _F.rotation_vector_left_jacobian(w, out, check, on_singular, threads)
+
+
+def rotation_vector_left_jacobian_inverse(
+    w: ArrayLike,
+    *,
+    out: OutArrays = None,
+    check: bool = True,
+    on_singular: OnSingular | None = None,
+    threads: int | None = None,
+) -> NDArray[np.floating]:
+    r"""The left Jacobian inverse of SO(3) at w.
+
+        J_l^-1(w), Solà et al. 2018 App. B
+
+    Book: Eq. (sola:jl-definition), (sola:jr-definition), (sola:jl-jr), (sola:jl-R-jr), (sola:jl-w), (sola:jl-inverse); composed of rigidsym.derivations.lie_maps.rotation_vector_left_jacobian_inverse.
+
+    Args:
+        w: array-like (..., 3); rotation vector w = phi e [rad]
+        out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
+        check: validate the inputs (finite, unit e/eta, orthogonal Q); False skips only that: on valid input the same result, and a NaN or inf input gives NaN in the outputs that depend on it.
+        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
+        threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
+
+    Returns:
+        ndarray (..., 3, 3): J
+
+    Raises:
+        TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
+        ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
+        NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
+        SingularConfigurationError: on the singular set (|w| = 2 pi k, k != 0), unless on_singular='nan'.
+
+    Notes:
+        Singular set: |w| = 2 pi k, k != 0.
+
+        Generated; 32 operations; math hash 2f680f5aa3fbff2f.
+    """
+    return _F.rotation_vector_left_jacobian_inverse(w, out, check, on_singular, threads)
+
+
+def rotation_vector_right_jacobian(
+    w: ArrayLike,
+    *,
+    out: OutArrays = None,
+    check: bool = True,
+    on_singular: OnSingular | None = None,
+    threads: int | None = None,
+) -> NDArray[np.floating]:
+    r"""The right Jacobian of SO(3) at w.
+
+        J_r(w), Solà et al. 2018 App. B
+
+    Book: Eq. (sola:jl-definition), (sola:jr-definition), (sola:jl-jr), (sola:jl-R-jr), (sola:jl-w), (sola:jl-inverse); composed of rigidsym.derivations.lie_maps.rotation_vector_right_jacobian.
+
+    Args:
+        w: array-like (..., 3); rotation vector w = phi e [rad]
+        out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
+        check: validate the inputs (finite, unit e/eta, orthogonal Q); False skips only that: on valid input the same result, and a NaN or inf input gives NaN in the outputs that depend on it.
+        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
+        threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
+
+    Returns:
+        ndarray (..., 3, 3): J
+
+    Raises:
+        TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
+        ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
+        NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
+
+    Notes:
+        Generated; 31 operations; math hash 35131894d7e1775b.
+    """
+    return _F.rotation_vector_right_jacobian(w, out, check, on_singular, threads)
+
+
+def rotation_vector_right_jacobian_inverse(
+    w: ArrayLike,
+    *,
+    out: OutArrays = None,
+    check: bool = True,
+    on_singular: OnSingular | None = None,
+    threads: int | None = None,
+) -> NDArray[np.floating]:
+    r"""The right Jacobian inverse of SO(3) at w.
+
+        J_r^-1(w), Solà et al. 2018 App. B
+
+    Book: Eq. (sola:jl-definition), (sola:jr-definition), (sola:jl-jr), (sola:jl-R-jr), (sola:jl-w), (sola:jl-inverse); composed of rigidsym.derivations.lie_maps.rotation_vector_right_jacobian_inverse.
+
+    Args:
+        w: array-like (..., 3); rotation vector w = phi e [rad]
+        out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
+        check: validate the inputs (finite, unit e/eta, orthogonal Q); False skips only that: on valid input the same result, and a NaN or inf input gives NaN in the outputs that depend on it.
+        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
+        threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
+
+    Returns:
+        ndarray (..., 3, 3): J
+
+    Raises:
+        TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
+        ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
+        NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
+        SingularConfigurationError: on the singular set (|w| = 2 pi k, k != 0), unless on_singular='nan'.
+
+    Notes:
+        Singular set: |w| = 2 pi k, k != 0.
+
+        Generated; 32 operations; math hash db168e620321154f.
+    """
+    return _F.rotation_vector_right_jacobian_inverse(w, out, check, on_singular, threads)
 
 
 def screw_axis_point(
@@ -1124,7 +1541,7 @@ def screw_axis_point(
     Notes:
         Singular set: phi = 0 (pure translation).
 
-        Accuracy: error <= 1.53 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 588 ulp in float64) over 9 regimes (docs/accuracy.md, kernels.accuracy); singular when phi = 0 (pure translation), flagged where sin(phi/2) == 0 in floating point: phi == 0 exactly (and abs(phi) < 1e-323); an output overflows (non-finite) where the result exceeds the type, about abs(phi) < 1e-300 x norm(input) in float64.
+        Accuracy: error <= 1.78 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 102 ulp in float64) over 11 regimes (docs/accuracy.md, kernels.accuracy); singular when phi = 0 (pure translation), flagged where sin(phi/2) == 0 in floating point: phi == 0 exactly (and abs(phi) < 1e-323); an output overflows (non-finite) where the result exceeds the type, about abs(phi) < 1e-300 x norm(input) in float64.
 
         Generated; 84 operations; math hash e89a638961851614.
     """
@@ -1176,11 +1593,46 @@ def screw_of_displacement(
 
         For an exactly symmetric Q (phi = pi) the sign of e follows natural_invariants_from_rotation's rule (largest-magnitude component positive).
 
-        Accuracy: error <= 1.53 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 2.01e+08 ulp in float64) over 7 regimes (docs/accuracy.md, kernels.accuracy); singular when phi = 0 (pure translation: no axis, infinite pitch), flagged where ||Q - Q^T||^2 == 0 with tr Q >= 0 (the main build, after the rewrite of 1 - cos phi from the skew part of Q): Q exactly symmetric in floating point, phi below the rounding of Q (about 1e-16 in float64, 6e-8 in float32); before the rewrite 3 - tr Q == 0 flagged up to phi ~ 1.5e-8.
+        Accuracy: error <= 1.3 u (kappa + 1) in float64, <= 1.44 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 1.17e+03 ulp in float64) over 9 regimes (docs/accuracy.md, kernels.accuracy); singular when phi = 0 (pure translation: no axis, infinite pitch), flagged where ||Q - Q^T||^2 == 0 with tr Q >= 0 (the main build, after the rewrite of 1 - cos phi from the skew part of Q): Q exactly symmetric in floating point, phi below the rounding of Q (about 1e-16 in float64, 6e-8 in float32); before the rewrite 3 - tr Q == 0 flagged up to phi ~ 1.5e-8.
 
-        Generated; 525 operations; math hash 24c2ead304ca194c.
+        Generated; 565 operations; math hash 24c2ead304ca194c.
     """
     return _F.screw_of_displacement(Q, a, a_prime, out, check, on_singular, threads)
+
+
+def transform_from_exponential_coordinates(
+    xi: ArrayLike,
+    *,
+    out: OutArrays = None,
+    check: bool = True,
+    on_singular: OnSingular | None = None,
+    threads: int | None = None,
+) -> NDArray[np.floating]:
+    r"""Exp of se(3): the transform of xi = [w; v].
+
+        T = [[Exp(w), J_l(w) v], [0, 1]]
+
+    Book: Eq. (sola:exp-se3), (sola:log-exp-se3); composed of rigidsym.derivations.lie_maps.transform_from_exponential_coordinates.
+
+    Args:
+        xi: array-like (..., 6); exponential coordinates [w; v] ([rad]; [m])
+        out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
+        check: validate the inputs (finite, unit e/eta, orthogonal Q); False skips only that: on valid input the same result, and a NaN or inf input gives NaN in the outputs that depend on it.
+        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
+        threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
+
+    Returns:
+        ndarray (..., 4, 4): T; homogeneous transform
+
+    Raises:
+        TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
+        ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
+        NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
+
+    Notes:
+        Generated; 77 operations; math hash 6422323903f35e70.
+    """
+    return _F.transform_from_exponential_coordinates(xi, out, check, on_singular, threads)
 
 
 def twist_transfer(
@@ -1217,7 +1669,7 @@ def twist_transfer(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 6 ulp in float64) over 3 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 6 ulp in float64) over 5 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 15 operations; math hash 0b921c0c211334f5.
     """
@@ -1256,7 +1708,7 @@ def twist_transfer_matrix(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 1 ulp in float64) over 2 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 1 ulp in float64) over 4 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 6 operations; math hash b790e8d04828afbd.
     """
@@ -1302,7 +1754,7 @@ def wrench_axis(
     Notes:
         Singular set: f = 0 (pure moment).
 
-        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 8 ulp in float64) over 3 regimes (docs/accuracy.md, kernels.accuracy); singular when f = 0 (pure moment), flagged where ||f||^2 == 0 in floating point: f == 0; a square underflows to 0 only for ||f|| < 1.5e-162 (float64), < 1e-19 (float32 arithmetic), which benchmarks/accuracy.py calls below the smallest useful step.
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 27 ulp in float64) over 5 regimes (docs/accuracy.md, kernels.accuracy); singular when f = 0 (pure moment), flagged where ||f||^2 == 0 in floating point: f == 0; a square underflows to 0 only for ||f|| < 1.5e-162 (float64), < 1e-19 (float32 arithmetic), which benchmarks/accuracy.py calls below the smallest useful step.
 
         Generated; 59 operations; math hash 6e28211949601ec4.
     """
@@ -1343,7 +1795,7 @@ def wrench_transfer(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 5 ulp in float64) over 3 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 24 ulp in float64) over 5 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 15 operations; math hash 719fe1e42bb6247d.
     """
@@ -1382,7 +1834,7 @@ def wrench_transfer_matrix(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 1 ulp in float64) over 2 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 1 ulp in float64) over 4 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 6 operations; math hash d1200d894b2faa3f.
     """

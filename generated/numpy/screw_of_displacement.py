@@ -5,14 +5,16 @@
 # template: numpy_kernel.py.j2
 # math hash: sha256:24c2ead304ca194c
 # sympy 1.14.0, rigidsym 0.2.0
-# operations: 525
+# operations: 565
 # branches: near_pi_0, near_pi_1, near_pi_2, main
-# accuracy rewrite (main): 1 - cos(phi) from the skew part of Q: 3 - tr Q cancels as phi -> 0
-#     and the rounding of the diagonal of Q is relative 1/phi^2 there; the skew part keeps
-#     relative accuracy 1/phi, the condition of the problem (valid where 1 + tr Q does not
-#     cancel: cos phi > -1/2); worst relative error at 35 measurement points (exact, rounded
-#     to float64; some past a condition number of 1/u) a singular flag -> 8.2e-02; equal to
-#     the declared formula by the zero test (exact-cancel)
+# accuracy rewrite (main): the axis point from the skew part of Q: (Q - 1)^T (Q a - a') reads
+#     the diagonal of Q, whose rounding is relative u/phi of it as phi -> 0; cot(phi/2)/2 e x
+#     c + (c - e (e.c))/2 from vect(Q) and tr Q reads the axis from the skew part (valid where
+#     1 + tr Q does not cancel); worst ratio to the rule max(2 e_best, 4 u) (e_best: the most
+#     accurate of the textbook formula and the forms tried, per point; rigidsym.codegen.rule)
+#     at 17 points of the regimes (rigidsym.codegen.regimes, exact, rounded to float64) a
+#     singular flag -> 0.82, never worse than the textbook formula by that rule; equal to the
+#     declared formula by the zero test (exact-cancel)
 """Screw of a finite displacement: axis, angle, axis point, pitch, Plücker array.
 
 (e, phi) from Q as natural_invariants_from_rotation; p0 = (Q - 1)^T (Q a - a') / ((1 - Q_00) + (1 - Q_11) + (1 - Q_22)); pitch = e^T (a' - a) / phi; kappa = [e; p0 x e]
@@ -26,7 +28,7 @@ the ``(n,)`` uint8 array of flags: 0 fine, ``SINGULAR`` (a denominator is exactl
 
 import numpy
 
-OPS = 525
+OPS = 565
 MATH_HASH = "24c2ead304ca194c"
 #: sample flags returned by the batch function
 SINGULAR, NONFINITE = 1, 2
@@ -256,70 +258,84 @@ def _near_pi_2(Q_00, Q_01, Q_02, Q_10, Q_11, Q_12, Q_20, Q_21, Q_22, a_0, a_1, a
 
 
 def _main(Q_00, Q_01, Q_02, Q_10, Q_11, Q_12, Q_20, Q_21, Q_22, a_0, a_1, a_2, a_prime_0, a_prime_1, a_prime_2):
-    x0 = -0.5*Q_12 + (0.5)*Q_21
-    x1 = -0.5*Q_01 + (0.5)*Q_10
-    x2 = (x1*x1)
-    x3 = (0.5)*Q_02 - 0.5*Q_20
-    x4 = (x3*x3)
-    x5 = (x0*x0)
-    x6 = x2 + x4 + x5
-    x7 = numpy.sqrt(x6)
-    x8 = 1.0/x7
-    x9 = x0*x8
-    x10 = x3*x8
-    x11 = x1*x8
-    x12 = numpy.arctan2(x7, (0.5)*Q_00 + (0.5)*Q_11 + (0.5)*Q_22 - 0.5)
-    x13 = -a_prime_1
-    x14 = Q_10*a_0 + Q_11*a_1 + Q_12*a_2 + x13
-    x15 = -a_prime_2
-    x16 = Q_20*a_0 + Q_21*a_1 + Q_22*a_2 + x15
-    x17 = -a_prime_0
-    x18 = Q_00*a_0 + Q_01*a_1 + Q_02*a_2 + x17
-    x19 = ((-Q_01 + Q_10)*(-Q_01 + Q_10)) + ((Q_02 - Q_20)*(Q_02 - Q_20)) + ((-Q_12 + Q_21)*(-Q_12 + Q_21))
-    x20 = 1.0/x19
-    x21 = Q_00 + Q_11 + Q_22 + 1
-    x22 = x20*x21
-    x23 = x22*(Q_10*x14 + Q_20*x16 + x18*(Q_00 - 1))
-    x24 = x22*(Q_01*x18 + Q_21*x16 + x14*(Q_11 - 1))
-    x25 = Q_02*x18 + Q_12*x14 + x16*(Q_22 - 1)
-    x26 = x22*x25
-    x27 = 1.0/x6
-    x28 = x2*x27 + x27*x4 + x27*x5
-    x29 = 1.0/numpy.sqrt(x28)
-    x30 = x29*x9
-    x31 = x10*x29
-    x32 = x11*x29
+    x0 = (0.5)*Q_12
+    x1 = -0.5*Q_21 + x0
+    x2 = -x1
+    x3 = (0.5)*Q_01
+    x4 = -0.5*Q_10 + x3
+    x5 = -x4
+    x6 = (x5*x5)
+    x7 = (0.5)*Q_02
+    x8 = (0.5)*Q_20
+    x9 = x7 - x8
+    x10 = (x9*x9)
+    x11 = (x2*x2)
+    x12 = x10 + x11 + x6
+    x13 = numpy.sqrt(x12)
+    x14 = 1.0/x13
+    x15 = x14*x2
+    x16 = x14*x9
+    x17 = x14*x5
+    x18 = (0.5)*Q_00
+    x19 = (0.5)*Q_11
+    x20 = (0.5)*Q_22
+    x21 = numpy.arctan2(x13, x18 + x19 + x20 - 0.5)
+    x22 = Q_00 + Q_11 + Q_22 + 1
+    x23 = 4*x10 + 4*x11 + 4*x6
+    x24 = 1.0/x23
+    x25 = -a_prime_1
+    x26 = -Q_10*a_0 - Q_11*a_1 - Q_12*a_2 - x25
+    x27 = -a_prime_2
+    x28 = -Q_20*a_0 - Q_21*a_1 - Q_22*a_2 - x27
+    x29 = 1.0/x12
+    x30 = -a_prime_0
+    x31 = -Q_00*a_0 - Q_01*a_1 - Q_02*a_2 - x30
+    x32 = x2*x31 + x26*x9 + x28*x5
+    x33 = -a_0*x18 - a_1*x3 - a_2*x7 + (0.5)*a_prime_0 - 0.5*x2*x29*x32 + x22*x24*(-x26*x5 + x28*x9)
+    x34 = 2*x10 + 2*x11 + 2*x6
+    x35 = x32/x34
+    x36 = -0.5*Q_10*a_0 - a_1*x19 - a_2*x0 + (0.5)*a_prime_1 + x22*x24*(-x2*x28 + x31*x5) - x35*x9
+    x37 = -0.5*Q_21*a_1 - a_0*x8 - a_2*x20 + (0.5)*a_prime_2 + x22*x24*(x2*x26 - x31*x9) - x35*x5
+    x38 = x10*x29 + x11*x29 + x29*x6
+    x39 = 1.0/numpy.sqrt(x38)
+    x40 = x15*x39
+    x41 = x16*x39
+    x42 = x17*x39
+    x43 = x14*x39
     return (
-        x9,
-        x10,
-        x11,
+        x15,
+        x16,
+        x17,
+        x21,
+        x33,
+        x36,
+        x37,
+        (x15*(-a_0 - x30) + x16*(-a_1 - x25) + x17*(-a_2 - x27))/x21,
+        x40,
+        x41,
+        x42,
+        x36*x42 - x37*x43*x9,
+        x33*x4*x43 + x37*x40,
+        x1*x36*x43 + x33*x41,
+    ), (
+        x38,
+        x12,
+        x34,
+        x23,
+        x21,
+    ), (
+        x13,
+        x14,
+        x24,
+        x29,
+        x35,
+        x39,
+        (x15*(-a_0 - x30) + x16*(-a_1 - x25) + x17*(-a_2 - x27))/x21,
         x12,
         x23,
-        x24,
-        x26,
-        (x10*(-a_1 - x13) + x11*(-a_2 - x15) + x9*(-a_0 - x17))/x12,
-        x30,
-        x31,
-        x32,
-        x24*x32 - x26*x31,
-        x0*x20*x21*x25*x29*x8 - x23*x32,
-        x23*x31 - x24*x30,
-    ), (
-        x28,
-        x19,
-        x6,
-        x12,
-    ), (
-        x7,
-        x8,
-        x20,
-        x27,
-        x29,
-        (x10*(-a_1 - x13) + x11*(-a_2 - x15) + x9*(-a_0 - x17))/x12,
-        x6,
-        x19,
-        x28,
-        x12,
+        x34,
+        x38,
+        x21,
     )
 
 
