@@ -53,16 +53,17 @@ def flag_rows(xp, xs: list, res: list, sing, batch: tuple, bits: int):
     tested on their bits, as the C kernels do: XLA on CPU flushes subnormals to zero in
     every floating operation, comparisons included, so a float test would miss them."""
     rows = sing.reshape(batch) if batch else sing.reshape((1,))
-    for r in res:
-        rows = rows | ~xp.isfinite(_rows(xp, r, batch)).all(-1)
+    # the outputs, then the inputs, each tested as one array: every operation is a dispatch
+    # of a few us in eager PyTorch, the fixed cost of a call at small N (issue 38)
+    out = xp.concatenate([_rows(xp, r, batch) for r in res], -1)
+    rows = rows | ~xp.isfinite(out).all(-1)
     fdt, idt = (np.float64, xp.int64) if bits > 32 else (np.float32, xp.int32)
     tiny, big = (int(np.asarray(v, dtype=fdt).view(fdt.__name__.replace("float", "int")))
                  for v in input_range(bits))
     magnitude = (1 << (bits - 1)) - 1 if bits > 32 else 0x7FFFFFFF
-    for x in xs:
-        a = _rows(xp, x, batch).view(idt) & magnitude   # |x|'s bits; NaN above inf's
-        rows = rows | ((a >= big) | ((a < tiny) & (a != 0))).any(-1)
-    return rows
+    a = xp.concatenate([_rows(xp, x, batch) for x in xs], -1).view(idt) & magnitude
+    # |x|'s bits; NaN above inf's
+    return rows | ((a >= big) | ((a < tiny) & (a != 0))).any(-1)
 
 
 def traced_inputs(xp, xs: list) -> list:
