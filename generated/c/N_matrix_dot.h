@@ -13,9 +13,10 @@
  * Singular set: phi = 0 (mod 2 pi): the axis is undefined
  *
  * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
- * measured at generation, rigidsym.codegen.float32; error within 0.986 ulp of float32,
- * normwise, at its points). In double:
- *   trig_0, trig_1, x6, x7, x8, x10, x15, x16, x17, x32, x37, x46, N_matrix_dot[9]
+ * measured at generation, rigidsym.codegen.float32; worst error 0.75 of what
+ * the rule of issue 37 allows, max(2 e_textbook, 4 u), per output, normwise, at its
+ * points). In double:
+ *   trig_0, x6
  */
 #ifndef RIGIDSYM_N_MATRIX_DOT_H
 #define RIGIDSYM_N_MATRIX_DOT_H
@@ -202,7 +203,7 @@ static inline int rigidsym_N_matrix_dot_sample_trig_f32(
     const float *RIGIDSYM_RESTRICT in_phi,
     const float *RIGIDSYM_RESTRICT in_omega,
     const double trig_0,
-    const double trig_1,
+    const float trig_1,
     float *RIGIDSYM_RESTRICT out_N_matrix_dot)
 {
     const float e_0 = in_e[0];
@@ -220,17 +221,17 @@ static inline int rigidsym_N_matrix_dot_sample_trig_f32(
         const float x3 = e_2*omega_2;
         const float x4 = 2.0f*x3;
         const double x6 = trig_0;
-        const double x7 = (x6*x6);
-        const double x8 = 1.0 - 2.0*x7;
+        const float x7 = (x6*x6);
+        const float x8 = 1.0f - 2.0f*x7;
         const float x9 = 2.0f*x0;
-        const double x10 = trig_1;
+        const float x10 = trig_1;
         const float x11 = e_1*omega_2;
         const float x12 = e_2*omega_1;
         const float x13 = x11 - x12;
         const float x14 = (e_0*e_0);
-        const double x15 = 6.0 - 4.0*x7;
-        const double x16 = ((double)x0) + ((double)x1) + ((double)x3);
-        const double x17 = (0.125)/x7;
+        const float x15 = 6.0f - 4.0f*x7;
+        const float x16 = x0 + x1 + x3;
+        const float x17 = (0.125f)/x7;
         const float x18 = e_0*omega_1;
         const float x19 = 2.0f*x18;
         const float x20 = e_1*omega_0;
@@ -245,12 +246,12 @@ static inline int rigidsym_N_matrix_dot_sample_trig_f32(
         const float x29 = e_1*x16 - omega_1;
         const float x30 = x18 - x20;
         const float x31 = -e_0*e_2*x15*x16 - 2.0f*x10*x6*(e_0*x30 + e_2*x13);
-        const double x32 = (((double)e_1)*((double)e_1));
+        const float x32 = (e_1*e_1);
         const float x33 = 2.0f*x11;
         const float x34 = 2.0f*x12;
         const float x35 = e_0*x16 - omega_0;
         const float x36 = -e_1*e_2*x15*x16 - 2.0f*x10*x6*(e_1*x30 + e_2*x25);
-        const double x37 = (((double)e_2)*((double)e_2));
+        const float x37 = (e_2*e_2);
         const float x38 = (0.5f)*e_2;
         const float x39 = (0.5f)*e_1;
         const float x40 = x10/x6;
@@ -259,7 +260,7 @@ static inline int rigidsym_N_matrix_dot_sample_trig_f32(
         const float x43 = x38*x41;
         const float x44 = (0.5f)*x40;
         const float x45 = (0.5f)*e_0;
-        const double x46 = ((double)e_1)*((double)x38)*((double)x40);
+        const float x46 = e_1*x38*x40;
         out_N_matrix_dot[0] = x17*(4.0f*e_0*x10*x13*x6 - 4.0f*x0 + x14*x15*x16 - x2 - x4 - x8*x9);
         out_N_matrix_dot[1] = x17*(-x19 - x21*x8 - x22*x23 - x26);
         out_N_matrix_dot[2] = x17*(x23*x29 - x27 - x28*x8 - x31);
@@ -269,7 +270,7 @@ static inline int rigidsym_N_matrix_dot_sample_trig_f32(
         out_N_matrix_dot[6] = x17*(-x23*x29 - x27*x8 - x28 - x31);
         out_N_matrix_dot[7] = x17*(x23*x35 - x33*x8 - x34 - x36);
         out_N_matrix_dot[8] = x17*(4.0f*e_2*x10*x30*x6 + x15*x16*x37 - x2 - 4.0f*x3 - x4*x8 - x9);
-        out_N_matrix_dot[9] = ((double)omega_0)*((double)x44)*(1.0 - ((double)x14)) + ((double)omega_1)*(((double)x38) - ((double)x42)) + ((double)omega_2)*(-((double)x39) - ((double)x43));
+        out_N_matrix_dot[9] = omega_0*x44*(1.0f - x14) + omega_1*(x38 - x42) + omega_2*(-x39 - x43);
         out_N_matrix_dot[10] = omega_0*(-x38 - x42) + omega_1*x44*(1.0f - x32) + omega_2*(x45 - x46);
         out_N_matrix_dot[11] = omega_0*(x39 - x43) + omega_1*(-x45 - x46) + omega_2*x44*(1.0f - x37);
         singular |= (x6) == 0.0;

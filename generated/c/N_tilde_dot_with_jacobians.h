@@ -13,9 +13,10 @@
  * Singular set: phi = 0 (mod 2 pi): the axis, and so its rate, is undefined
  *
  * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
- * measured at generation, rigidsym.codegen.float32; error within 0.993 ulp of float32,
- * normwise, at its points). In double:
- *   trig_0, trig_1, x1, x2, x3, x4, x6, x7, x8, x10, x11, x12, x13, x17, x26, x28, x37, x40, x49, x50, x55, x56, x62, x64, x75, x76, x79, x80, x81, x82, x97, x98, x99, x101, x107, x108
+ * measured at generation, rigidsym.codegen.float32; worst error 0.897 of what
+ * the rule of issue 37 allows, max(2 e_textbook, 4 u), per output, normwise, at its
+ * points). In double:
+ *   trig_0, trig_1, x1, x10, x107
  */
 #ifndef RIGIDSYM_N_TILDE_DOT_WITH_JACOBIANS_H
 #define RIGIDSYM_N_TILDE_DOT_WITH_JACOBIANS_H
@@ -538,22 +539,22 @@ static inline int rigidsym_N_tilde_dot_with_jacobians_sample_trig_f32(
     int singular = 0;
     {
         const double x1 = trig_0;
-        const double x2 = (x1*x1);
-        const double x3 = 2.0*x2;
-        const double x4 = 1.0 - x3;
+        const float x2 = (x1*x1);
+        const float x3 = 2.0f*x2;
+        const float x4 = 1.0f - x3;
         const float x5 = e_0*omega_0;
-        const double x6 = ((double)e_1)*((double)omega_1);
-        const double x7 = ((double)e_2)*((double)omega_2);
-        const double x8 = ((double)x5) + x6 + x7;
+        const float x6 = e_1*omega_1;
+        const float x7 = e_2*omega_2;
+        const float x8 = x5 + x6 + x7;
         const float x9 = x4*x8;
         const double x10 = trig_1;
-        const double x11 = x1*x10;
-        const double x12 = 2.0*x11;
-        const double x13 = x12*x8;
+        const float x11 = x1*x10;
+        const float x12 = 2.0f*x11;
+        const float x13 = x12*x8;
         const float x14 = e_2*x13;
         const float x15 = (0.5f)*e_1;
         const float x16 = (0.5f)*e_0;
-        const double x17 = x10/x1;
+        const float x17 = x10/x1;
         const float x18 = e_2*x17;
         const float x19 = x16*x18;
         const float x20 = -x15 + x19;
@@ -562,9 +563,9 @@ static inline int rigidsym_N_tilde_dot_with_jacobians_sample_trig_f32(
         const float x23 = x16 + x22;
         const float x24 = -x23;
         const float x25 = (e_2*e_2);
-        const double x26 = 1.0 - ((double)x25);
+        const float x26 = 1.0f - x25;
         const float x27 = (0.5f)*omega_2;
-        const double x28 = ((double)omega_0)*((double)x21) + ((double)omega_1)*((double)x24) + x17*x26*((double)x27);
+        const float x28 = omega_0*x21 + omega_1*x24 + x17*x26*x27;
         const float x29 = -x28;
         const float x30 = e_1*x13;
         const float x31 = (0.5f)*e_2;
@@ -573,10 +574,10 @@ static inline int rigidsym_N_tilde_dot_with_jacobians_sample_trig_f32(
         const float x34 = x31 + x33;
         const float x35 = -x34;
         const float x36 = x16 - x22;
-        const double x37 = (((double)e_1)*((double)e_1));
+        const float x37 = (e_1*e_1);
         const float x38 = 1.0f - x37;
         const float x39 = (0.5f)*omega_1;
-        const double x40 = ((double)x38)*((double)x39);
+        const float x40 = x38*x39;
         const float x41 = omega_0*x35 + omega_2*x36 + x17*x40;
         const float x42 = -x31 + x33;
         const float x43 = -x42;
@@ -585,22 +586,22 @@ static inline int rigidsym_N_tilde_dot_with_jacobians_sample_trig_f32(
         const float x46 = (e_0*e_0);
         const float x47 = 1.0f - x46;
         const float x48 = (0.5f)*omega_0;
-        const double x49 = ((double)x47)*((double)x48);
-        const double x50 = ((double)omega_1)*((double)x43) + ((double)omega_2)*((double)x45) + x17*x49;
+        const float x49 = x47*x48;
+        const float x50 = omega_1*x43 + omega_2*x45 + x17*x49;
         const float x51 = e_0*x13;
         const float x52 = -x50;
         const float x53 = -x41;
         const float x54 = omega_0*x4;
-        const double x55 = ((double)omega_1)*x4;
-        const double x56 = ((double)omega_2)*x4;
+        const float x55 = omega_1*x4;
+        const float x56 = omega_2*x4;
         const float x57 = e_2*x12;
         const float x58 = omega_0*x57;
         const float x59 = x17*x31;
         const float x60 = omega_0*x59 + x39;
         const float x61 = omega_1*x57;
-        const double x62 = ((double)omega_1)*((double)x59) - ((double)x48);
+        const float x62 = omega_1*x59 - x48;
         const float x63 = x17*x7;
-        const double x64 = x17*((double)x5);
+        const float x64 = x17*x5;
         const float x65 = (0.5f)*x64;
         const float x66 = x17*x6;
         const float x67 = (0.5f)*x66;
@@ -611,14 +612,14 @@ static inline int rigidsym_N_tilde_dot_with_jacobians_sample_trig_f32(
         const float x72 = omega_0*x32 - x27;
         const float x73 = -x72;
         const float x74 = (0.5f)*x63;
-        const double x75 = ((double)x65) + ((double)x66) + ((double)x74);
-        const double x76 = -x75;
+        const float x75 = x65 + x66 + x74;
+        const float x76 = -x75;
         const float x77 = x12*x6 + x13;
         const float x78 = omega_2*x70;
-        const double x79 = ((double)omega_2)*((double)x32) + ((double)x48);
-        const double x80 = -x79;
-        const double x81 = x64 + ((double)x67) + ((double)x74);
-        const double x82 = -x81;
+        const float x79 = omega_2*x32 + x48;
+        const float x80 = -x79;
+        const float x81 = x64 + x67 + x74;
+        const float x82 = -x81;
         const float x83 = x16*x17;
         const float x84 = omega_1*x83 + x27;
         const float x85 = -x84;
@@ -633,18 +634,18 @@ static inline int rigidsym_N_tilde_dot_with_jacobians_sample_trig_f32(
         const float x94 = omega_2*x92;
         const float x95 = -x13;
         const float x96 = e_2*x9;
-        const double x97 = 1.0/x2;
-        const double x98 = (x10*x10);
-        const double x99 = (0.25)*x97;
+        const float x97 = 1.0f/x2;
+        const float x98 = (x10*x10);
+        const float x99 = (0.25f)*x97;
         const float x100 = e_0*x4;
-        const double x101 = (0.25)*((double)e_2)*x97;
+        const float x101 = (0.25f)*e_2*x97;
         const float x102 = (0.5f)*e_0*e_2*x97*x98 - x100*x101;
         const float x103 = e_1*x4;
         const float x104 = (0.5f)*e_1*e_2*x97*x98 - x101*x103;
         const float x105 = omega_0*x102 + omega_1*x104 - 0.5f*omega_2*x26*x97*x98 + x26*x56*x99;
         const float x106 = e_1*x9;
-        const double x107 = x97*x98;
-        const double x108 = (0.5)*((double)e_0)*((double)e_1)*x97*x98 - ((double)e_1)*((double)x100)*x99;
+        const double x107 = ((double)x97)*((double)x98);
+        const float x108 = (0.5f)*e_0*e_1*x97*x98 - e_1*x100*x99;
         const float x109 = omega_0*x108 + omega_2*x104 - x107*x40 + x38*x55*x99;
         const float x110 = omega_1*x108 + omega_2*x102 - x107*x49 + x47*x54*x99;
         const float x111 = e_0*x9;

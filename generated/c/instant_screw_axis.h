@@ -13,9 +13,10 @@
  * Singular set: omega = 0 (pure translation)
  *
  * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
- * measured at generation, rigidsym.codegen.float32; error within 0.92 ulp of float32,
- * normwise, at its points). In double:
- *   x0, x1, x2, x3, x4, x6, x9, x10, pitch[0]
+ * measured at generation, rigidsym.codegen.float32; worst error 0.5 of what
+ * the rule of issue 37 allows, max(2 e_textbook, 4 u), per output, normwise, at its
+ * points). In double:
+ *   none
  */
 #ifndef RIGIDSYM_INSTANT_SCREW_AXIS_H
 #define RIGIDSYM_INSTANT_SCREW_AXIS_H
@@ -95,28 +96,28 @@ static inline int rigidsym_instant_screw_axis_sample_f32(
     const float a_dot_2 = in_a_dot[2];
     int singular = 0;
     {
-        const double x0 = (((double)omega_0)*((double)omega_0)) + (((double)omega_1)*((double)omega_1)) + (((double)omega_2)*((double)omega_2));
-        const double x1 = 1.0/x0;
-        const double x2 = ((double)a_0)*((double)omega_1) - ((double)a_1)*((double)omega_0) + ((double)a_dot_2);
-        const double x3 = -((double)a_0)*((double)omega_2) + ((double)a_2)*((double)omega_0) + ((double)a_dot_1);
-        const double x4 = ((double)omega_1)*x2 - ((double)omega_2)*x3;
+        const float x0 = (omega_0*omega_0) + (omega_1*omega_1) + (omega_2*omega_2);
+        const float x1 = 1.0f/x0;
+        const float x2 = a_0*omega_1 - a_1*omega_0 + a_dot_2;
+        const float x3 = -a_0*omega_2 + a_2*omega_0 + a_dot_1;
+        const float x4 = omega_1*x2 - omega_2*x3;
         const float x5 = x1*x4;
-        const double x6 = ((double)a_1)*((double)omega_2) - ((double)a_2)*((double)omega_1) + ((double)a_dot_0);
+        const float x6 = a_1*omega_2 - a_2*omega_1 + a_dot_0;
         const float x7 = -omega_0*x2 + omega_2*x6;
         const float x8 = x1*x7;
-        const double x9 = x1*(((double)omega_0)*x3 - ((double)omega_1)*x6);
-        const double x10 = 1.0/sqrt(x0);
+        const float x9 = x1*(omega_0*x3 - omega_1*x6);
+        const float x10 = 1.0f/sqrtf(x0);
         out_p0[0] = x5;
         out_p0[1] = x8;
         out_p0[2] = x9;
-        out_pitch[0] = x1*(((double)a_dot_0)*((double)omega_0) + ((double)a_dot_1)*((double)omega_1) + ((double)a_dot_2)*((double)omega_2));
+        out_pitch[0] = x1*(a_dot_0*omega_0 + a_dot_1*omega_1 + a_dot_2*omega_2);
         out_plucker[0] = omega_0*x10;
         out_plucker[1] = omega_1*x10;
         out_plucker[2] = omega_2*x10;
         out_plucker[3] = x10*(-omega_1*x9 + omega_2*x1*x7);
         out_plucker[4] = x10*(omega_0*x9 - omega_2*x5);
         out_plucker[5] = x10*(-omega_0*x8 + omega_1*x1*x4);
-        singular |= (x0) == 0.0;
+        singular |= (((double)x0)) == 0.0;
         const double finite = ((x1 - x1) + ((x10 - x10) + (x0 - x0)));
         singular |= finite != finite;
     }

@@ -11,18 +11,21 @@
  *     products (p1 x (p2 - p1) with |p1| >> |p2 - p1|); expanded, the cancelling terms cancel
  *     symbolically, and the difference of two products left is compensated (Kahan's algorithm,
  *     rigidsym.codegen.compensated: p1 x p2 of nearly coincident points cancels too); worst
- *     relative error at 32 measurement points (exact, rounded to float64; some past a
- *     condition number of 1/u) 9.8e-13 -> 3.4e-16; equal to the declared formula by the zero
- *     test (exact-cancel)
+ *     ratio to the rule max(2 e_best, 4 u) (e_best: the most accurate of the textbook formula
+ *     and the forms tried, per point; rigidsym.codegen.rule) at 28 points of the regimes
+ *     (rigidsym.codegen.regimes, exact, rounded to float64) 8.4e+04 -> 0.48, never worse than
+ *     the textbook formula by that rule; equal to the declared formula by the zero test
+ *     (exact-cancel)
  *
  * Plücker array of the line through two points.
  * kappa = [e; p1 x e], e = (p2 - p1)/||p2 - p1||
  * Singular set: p1 = p2
  *
  * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
- * measured at generation, rigidsym.codegen.float32; error within 0.836 ulp of float32,
- * normwise, at its points). In double:
- *   x1, x4
+ * measured at generation, rigidsym.codegen.float32; worst error 0.51 of what
+ * the rule of issue 37 allows, max(2 e_textbook, 4 u), per output, normwise, at its
+ * points). In double:
+ *   none
  */
 #ifndef RIGIDSYM_PLUCKER_FROM_POINTS_H
 #define RIGIDSYM_PLUCKER_FROM_POINTS_H
@@ -81,10 +84,10 @@ static inline int rigidsym_plucker_from_points_sample_f32(
     int singular = 0;
     {
         const float x0 = -p1_0 + p2_0;
-        const double x1 = -((double)p1_1) + ((double)p2_1);
+        const float x1 = -p1_1 + p2_1;
         const float x2 = -p1_2 + p2_2;
         const float x3 = (x0*x0) + (x1*x1) + (x2*x2);
-        const double x4 = 1.0/sqrt(((double)x3));
+        const float x4 = 1.0f/sqrtf(x3);
         out_kappa[0] = x0*x4;
         out_kappa[1] = x1*x4;
         out_kappa[2] = x2*x4;

@@ -9,8 +9,10 @@
  * operations: 98
  * accuracy rewrite (main): derivatives of the rewritten values: the Jacobian of the declared
  *     grouping inherits its cancellation; the derivatives of the rewritten values do not;
- *     worst relative error at 32 measurement points (exact, rounded to float64; some past a
- *     condition number of 1/u) 1.1e-11 -> 3.4e-16; equal to the declared formula by the zero
+ *     worst ratio to the rule max(2 e_best, 4 u) (e_best: the most accurate of the textbook
+ *     formula and the forms tried, per point; rigidsym.codegen.rule) at 28 points of the
+ *     regimes (rigidsym.codegen.regimes, exact, rounded to float64) 2.3e+05 -> 0.52, never
+ *     worse than the textbook formula by that rule; equal to the declared formula by the zero
  *     test (exact-cancel)
  *
  * Plücker array of the line through two points, with the Jacobians of its outputs.
@@ -18,9 +20,10 @@
  * Singular set: p1 = p2
  *
  * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
- * measured at generation, rigidsym.codegen.float32; error within 0.958 ulp of float32,
- * normwise, at its points). In double:
- *   x0, x1, x9, x10, x12, x21, x22
+ * measured at generation, rigidsym.codegen.float32; worst error 0.646 of what
+ * the rule of issue 37 allows, max(2 e_textbook, 4 u), per output, normwise, at its
+ * points). In double:
+ *   none
  */
 #ifndef RIGIDSYM_PLUCKER_FROM_POINTS_WITH_JACOBIANS_H
 #define RIGIDSYM_PLUCKER_FROM_POINTS_WITH_JACOBIANS_H
@@ -144,8 +147,8 @@ static inline int rigidsym_plucker_from_points_with_jacobians_sample_f32(
     const float p2_2 = in_p2[2];
     int singular = 0;
     {
-        const double x0 = ((double)p1_0) - ((double)p2_0);
-        const double x1 = -x0;
+        const float x0 = p1_0 - p2_0;
+        const float x1 = -x0;
         const float x2 = (x1*x1);
         const float x3 = p1_1 - p2_1;
         const float x4 = -x3;
@@ -153,10 +156,10 @@ static inline int rigidsym_plucker_from_points_with_jacobians_sample_f32(
         const float x6 = p1_2 - p2_2;
         const float x7 = -x6;
         const float x8 = (x7*x7);
-        const double x9 = ((double)x2) + ((double)x5) + ((double)x8);
-        const double x10 = 1.0/sqrt(x9);
+        const float x9 = x2 + x5 + x8;
+        const float x10 = 1.0f/sqrtf(x9);
         const float x11 = rigidsym_diffprod(p1_1, p2_2, p1_2, p2_1);
-        const double x12 = rigidsym_diffprod(-((double)p1_0), ((double)p2_2), -((double)p1_2), ((double)p2_0));
+        const float x12 = rigidsym_diffprod(-p1_0, p2_2, -p1_2, p2_0);
         const float x13 = rigidsym_diffprod(p1_0, p2_1, p1_1, p2_0);
         const float x14 = -x10;
         const float x15 = 1.0f/(x9*sqrt(x9));
@@ -165,8 +168,8 @@ static inline int rigidsym_plucker_from_points_with_jacobians_sample_f32(
         const float x18 = x16*x7;
         const float x19 = x15*x4;
         const float x20 = x19*x7;
-        const double x21 = ((double)p2_2)*x10;
-        const double x22 = ((double)p2_1)*x10;
+        const float x21 = p2_2*x10;
+        const float x22 = p2_1*x10;
         const float x23 = p2_0*x10;
         const float x24 = x15*x7;
         const float x25 = x11*x15;
@@ -217,7 +220,7 @@ static inline int rigidsym_plucker_from_points_with_jacobians_sample_f32(
         out_kappa_D_p2[15] = x0*x13*x15 - x27;
         out_kappa_D_p2[16] = x29 + x3*x30;
         out_kappa_D_p2[17] = x30*x6;
-        singular |= (x9) == 0.0;
+        singular |= (((double)x9)) == 0.0;
         const double finite = ((x10 - x10) + ((x15 - x15) + (x9 - x9)));
         singular |= finite != finite;
     }

@@ -12,9 +12,10 @@
  * p_ddot = a_ddot + (Omega_dot + Omega^2)(p - a); and d(output)/d(input) by sympy on the declared formula
  *
  * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
- * measured at generation, rigidsym.codegen.float32; error within 0.957 ulp of float32,
- * normwise, at its points). In double:
- *   x0, x1, x2, x3, x5, x6, x8, x10
+ * measured at generation, rigidsym.codegen.float32; worst error 0.5 of what
+ * the rule of issue 37 allows, max(2 e_textbook, 4 u), per output, normwise, at its
+ * points). In double:
+ *   none
  */
 #ifndef RIGIDSYM_POINT_ACCELERATION_WITH_JACOBIANS_H
 #define RIGIDSYM_POINT_ACCELERATION_WITH_JACOBIANS_H
@@ -168,17 +169,17 @@ static inline int rigidsym_point_acceleration_with_jacobians_sample_f32(
     const float a_2 = in_a[2];
     int singular = 0;
     {
-        const double x0 = ((double)a_2) - ((double)p_2);
-        const double x1 = -x0;
-        const double x2 = ((double)a_1) - ((double)p_1);
-        const double x3 = -x2;
+        const float x0 = a_2 - p_2;
+        const float x1 = -x0;
+        const float x2 = a_1 - p_1;
+        const float x3 = -x2;
         const float x4 = omega_0*x3;
-        const double x5 = ((double)a_0) - ((double)p_0);
-        const double x6 = -x5;
+        const float x5 = a_0 - p_0;
+        const float x6 = -x5;
         const float x7 = -omega_1*x6;
-        const double x8 = ((double)x4) + ((double)x7);
+        const float x8 = x4 + x7;
         const float x9 = omega_0*x1;
-        const double x10 = ((double)omega_2)*x6 - ((double)x9);
+        const float x10 = omega_2*x6 - x9;
         const float x11 = omega_1*x1;
         const float x12 = -omega_2*x3;
         const float x13 = x11 + x12;

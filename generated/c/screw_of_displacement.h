@@ -6,26 +6,37 @@
  * template: c_kernel.h.j2
  * math hash: sha256:24c2ead304ca194c
  * sympy 1.14.0, rigidsym 0.2.0
- * operations: 525
+ * operations: 589
  * branches: near_pi_0, near_pi_1, near_pi_2, main
+ * accuracy rewrite (main): the axis point from the skew part of Q: (Q - 1)^T (Q a - a') reads
+ *     the diagonal of Q, whose rounding is relative u/phi of it as phi -> 0; cot(phi/2)/2 e x
+ *     c + (c - e (e.c))/2 from vect(Q) and tr Q reads the axis from the skew part (valid where
+ *     1 + tr Q does not cancel); worst ratio to the rule max(2 e_best, 4 u) (e_best: the most
+ *     accurate of the textbook formula and the forms tried, per point; rigidsym.codegen.rule)
+ *     at 17 points of the regimes (rigidsym.codegen.regimes, exact, rounded to float64) a
+ *     singular flag -> 0.9, never worse than the textbook formula by that rule; equal to the
+ *     declared formula by the zero test (exact-cancel)
  * accuracy rewrite (main): 1 - cos(phi) from the skew part of Q: 3 - tr Q cancels as phi -> 0
  *     and the rounding of the diagonal of Q is relative 1/phi^2 there; the skew part keeps
  *     relative accuracy 1/phi, the condition of the problem (valid where 1 + tr Q does not
- *     cancel: cos phi > -1/2); worst relative error at 35 measurement points (exact, rounded
- *     to float64; some past a condition number of 1/u) a singular flag -> 8.2e-02; equal to
- *     the declared formula by the zero test (exact-cancel)
+ *     cancel: cos phi > -1/2); worst ratio to the rule max(2 e_best, 4 u) (e_best: the most
+ *     accurate of the textbook formula and the forms tried, per point; rigidsym.codegen.rule)
+ *     at 17 points of the regimes (rigidsym.codegen.regimes, exact, rounded to float64) a
+ *     singular flag -> 0.9, never worse than the textbook formula by that rule; equal to the
+ *     declared formula by the zero test (exact-cancel)
  *
  * Screw of a finite displacement: axis, angle, axis point, pitch, Plücker array.
  * (e, phi) from Q as natural_invariants_from_rotation; p0 = (Q - 1)^T (Q a - a') / ((1 - Q_00) + (1 - Q_11) + (1 - Q_22)); pitch = e^T (a' - a) / phi; kappa = [e; p0 x e]
  * Singular set: phi = 0 (pure translation: no axis, infinite pitch)
  *
  * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
- * measured at generation, rigidsym.codegen.float32; error within 0.964 ulp of float32,
- * normwise, at its points). In double:
- *   branch 1: x16, x37
- *   branch 2: x31, x33, x34, x36
- *   branch 3: x38
- *   branch 4: x6, x7, x8, x12, x14, x16, x18, x19, x20, x21, x22, x23, x27, pitch[0]
+ * measured at generation, rigidsym.codegen.float32; worst error 0.963 of what
+ * the rule of issue 37 allows, max(2 e_textbook, 4 u), per output, normwise, at its
+ * points). In double:
+ *   branch 1: none
+ *   branch 2: none
+ *   branch 3: none
+ *   branch 4: x1, x3, x7, x10, x13, x14, x15, x24, x27, x28, x33, x40, pitch[0]
  */
 #ifndef RIGIDSYM_SCREW_OF_DISPLACEMENT_H
 #define RIGIDSYM_SCREW_OF_DISPLACEMENT_H
@@ -249,60 +260,74 @@ static inline int rigidsym_screw_of_displacement_sample(
         const double finite = ((((x14 - x14) + (x18 - x18)) + ((x30 - x30) + ((x33 - x33) + (x35 - x35)))) + (((out_pitch[0] - out_pitch[0]) + (x10 - x10)) + ((((x11*x11) + (x12*x12) + (x13*x13)) - ((x11*x11) + (x12*x12) + (x13*x13))) + ((x29 - x29) + (x34 - x34)))));
         singular |= finite != finite;
     } else {
-        const double x0 = -0.5*Q_12 + (0.5)*Q_21;
-        const double x1 = -0.5*Q_01 + (0.5)*Q_10;
-        const double x2 = (x1*x1);
-        const double x3 = (0.5)*Q_02 - 0.5*Q_20;
+        const double x0 = (0.5)*Q_12;
+        const double x1 = (0.5)*Q_21 - x0;
+        const double x2 = (0.5)*Q_01;
+        const double x3 = (0.5)*Q_10 - x2;
         const double x4 = (x3*x3);
-        const double x5 = (x0*x0);
-        const double x6 = x2 + x4 + x5;
-        const double x7 = sqrt(x6);
-        const double x8 = 1.0/x7;
-        const double x9 = x0*x8;
-        const double x10 = x3*x8;
-        const double x11 = x1*x8;
-        const double x12 = atan2(x7, (0.5)*Q_00 + (0.5)*Q_11 + (0.5)*Q_22 - 0.5);
-        const double x13 = -a_prime_1;
-        const double x14 = Q_10*a_0 + Q_11*a_1 + Q_12*a_2 + x13;
-        const double x15 = -a_prime_2;
-        const double x16 = Q_20*a_0 + Q_21*a_1 + Q_22*a_2 + x15;
-        const double x17 = -a_prime_0;
-        const double x18 = Q_00*a_0 + Q_01*a_1 + Q_02*a_2 + x17;
-        const double x19 = ((-Q_01 + Q_10)*(-Q_01 + Q_10)) + ((Q_02 - Q_20)*(Q_02 - Q_20)) + ((-Q_12 + Q_21)*(-Q_12 + Q_21));
-        const double x20 = 1.0/x19;
-        const double x21 = Q_00 + Q_11 + Q_22 + 1.0;
-        const double x22 = x20*x21;
-        const double x23 = x22*(Q_10*x14 + Q_20*x16 + x18*(Q_00 - 1.0));
-        const double x24 = x22*(Q_01*x18 + Q_21*x16 + x14*(Q_11 - 1.0));
-        const double x25 = Q_02*x18 + Q_12*x14 + x16*(Q_22 - 1.0);
-        const double x26 = x22*x25;
-        const double x27 = 1.0/x6;
-        const double x28 = x2*x27 + x27*x4 + x27*x5;
-        const double x29 = 1.0/sqrt(x28);
-        const double x30 = x29*x9;
-        const double x31 = x10*x29;
-        const double x32 = x11*x29;
-        out_e[0] = x9;
-        out_e[1] = x10;
-        out_e[2] = x11;
-        out_phi[0] = x12;
-        out_p0[0] = x23;
-        out_p0[1] = x24;
-        out_p0[2] = x26;
-        out_pitch[0] = (x10*(-a_1 - x13) + x11*(-a_2 - x15) + x9*(-a_0 - x17))/x12;
-        out_plucker[0] = x30;
-        out_plucker[1] = x31;
-        out_plucker[2] = x32;
-        out_plucker[3] = x24*x32 - x26*x31;
-        out_plucker[4] = x0*x20*x21*x25*x29*x8 - x23*x32;
-        out_plucker[5] = x23*x31 - x24*x30;
-        singular |= (x28) == 0.0;
+        const double x5 = (0.5)*Q_02;
+        const double x6 = (0.5)*Q_20;
+        const double x7 = x5 - x6;
+        const double x8 = (x7*x7);
+        const double x9 = (x1*x1);
+        const double x10 = x4 + x8 + x9;
+        const double x11 = sqrt(x10);
+        const double x12 = 1.0/x11;
+        const double x13 = x1*x12;
+        const double x14 = x12*x7;
+        const double x15 = x12*x3;
+        const double x16 = (0.5)*Q_00;
+        const double x17 = (0.5)*Q_11;
+        const double x18 = (0.5)*Q_22;
+        const double x19 = atan2(x11, x16 + x17 + x18 - 0.5);
+        const double x20 = Q_00 + Q_11 + Q_22 + 1.0;
+        const double x21 = 4.0*x4 + 4.0*x8 + 4.0*x9;
+        const double x22 = 1.0/x21;
+        const double x23 = -a_prime_1;
+        const double x24 = Q_10*a_0 + Q_11*a_1 + Q_12*a_2 + x23;
+        const double x25 = -x24;
+        const double x26 = -a_prime_2;
+        const double x27 = Q_20*a_0 + Q_21*a_1 + Q_22*a_2 + x26;
+        const double x28 = -x27;
+        const double x29 = 1.0/x10;
+        const double x30 = -a_prime_0;
+        const double x31 = Q_00*a_0 + Q_01*a_1 + Q_02*a_2 + x30;
+        const double x32 = -x31;
+        const double x33 = (0.5)*x29*(x1*x32 + x25*x7 + x28*x3);
+        const double x34 = x29*x4 + x29*x8 + x29*x9;
+        const double x35 = 1.0/sqrt(x34);
+        const double x36 = x13*x35;
+        const double x37 = x14*x35;
+        const double x38 = x15*x35;
+        const double x39 = Q_01*x31 + Q_21*x27 + x24*(Q_11 - 1.0);
+        const double x40 = ((-Q_01 + Q_10)*(-Q_01 + Q_10)) + ((Q_02 - Q_20)*(Q_02 - Q_20)) + ((-Q_12 + Q_21)*(-Q_12 + Q_21));
+        const double x41 = 1.0/x40;
+        const double x42 = x20*x41;
+        const double x43 = x38*x42;
+        const double x44 = Q_02*x31 + Q_12*x24 + x27*(Q_22 - 1.0);
+        const double x45 = Q_10*x24 + Q_20*x27 + x31*(Q_00 - 1.0);
+        out_e[0] = x13;
+        out_e[1] = x14;
+        out_e[2] = x15;
+        out_phi[0] = x19;
+        out_p0[0] = -a_0*x16 - a_1*x2 - a_2*x5 + (0.5)*a_prime_0 - x1*x33 + x20*x22*(-x25*x3 + x28*x7);
+        out_p0[1] = -0.5*Q_10*a_0 - a_1*x17 - a_2*x0 + (0.5)*a_prime_1 + x20*x22*(-x1*x28 + x3*x32) - x33*x7;
+        out_p0[2] = -0.5*Q_21*a_1 - a_0*x6 - a_2*x18 + (0.5)*a_prime_2 + x20*x22*(x1*x25 - x32*x7) - x3*x33;
+        out_pitch[0] = (x13*(-a_0 - x30) + x14*(-a_1 - x23) + x15*(-a_2 - x26))/x19;
+        out_plucker[0] = x36;
+        out_plucker[1] = x37;
+        out_plucker[2] = x38;
+        out_plucker[3] = -x37*x42*x44 + x39*x43;
+        out_plucker[4] = x1*x12*x20*x35*x41*x44 - x43*x45;
+        out_plucker[5] = -x36*x39*x42 + x37*x42*x45;
+        singular |= (x34) == 0.0;
+        singular |= (x40) == 0.0;
+        singular |= (x10) == 0.0;
+        singular |= (x21) == 0.0;
         singular |= (x19) == 0.0;
-        singular |= (x6) == 0.0;
-        singular |= (x12) == 0.0;
         /* quantities that can be non-finite for finite inputs (divisions, roots):
          * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
-        const double finite = ((((x7 - x7) + (x8 - x8)) + ((x20 - x20) + ((x27 - x27) + (x29 - x29)))) + (((out_pitch[0] - out_pitch[0]) + (x6 - x6)) + ((x19 - x19) + ((x28 - x28) + (x12 - x12)))));
+        const double finite = ((((x11 - x11) + ((x12 - x12) + (x22 - x22))) + ((x29 - x29) + ((x35 - x35) + (x41 - x41)))) + (((out_pitch[0] - out_pitch[0]) + ((x10 - x10) + (x21 - x21))) + ((x34 - x34) + ((x40 - x40) + (x19 - x19)))));
         singular |= finite != finite;
     }
     return singular;
@@ -353,7 +378,7 @@ static inline int rigidsym_screw_of_displacement_sample_f32(
         const float x13 = (0.5f)*Q_10 - x4;
         const float x14 = x7 - x8;
         const float x15 = -0.5f*Q_12 + (0.5f)*Q_21;
-        const double x16 = ((((double)x13)*((double)x9) + ((double)x14)*((double)x5) + ((double)x15)*((double)x3) < 0.0) ? (-1.0) : (1.0))/sqrt(((double)x12));
+        const float x16 = ((x13*x9 + x14*x5 + x15*x3 < 0.0f) ? (-1.0f) : (1.0f))/sqrtf(x12);
         const float x17 = x16*x3;
         const float x18 = x16*x5;
         const float x19 = x16*x9;
@@ -374,7 +399,7 @@ static inline int rigidsym_screw_of_displacement_sample_f32(
         const float x34 = Q_02*x27 + Q_12*x22 + x24*x30;
         const float x35 = 1.0f/x12;
         const float x36 = x10*x35 + x11*x35 + x35*x6;
-        const double x37 = 1.0/sqrt(((double)x36));
+        const float x37 = 1.0f/sqrtf(x36);
         const float x38 = x17*x37;
         const float x39 = x18*x37;
         const float x40 = x19*x37;
@@ -430,12 +455,12 @@ static inline int rigidsym_screw_of_displacement_sample_f32(
         const float x28 = -(x22) - (x26) - (x27);
         const float x29 = 1.0f/x28;
         const float x30 = Q_01*x24 + Q_21*x21 + x19*x26;
-        const double x31 = ((double)Q_02)*((double)x24) + ((double)Q_12)*((double)x19) + ((double)x21)*((double)x27);
+        const float x31 = Q_02*x24 + Q_12*x19 + x21*x27;
         const float x32 = 1.0f/x9;
-        const double x33 = ((double)x2)*((double)x32) + ((double)x32)*((double)x5) + ((double)x32)*((double)x8);
-        const double x34 = 1.0/sqrt(x33);
+        const float x33 = x2*x32 + x32*x5 + x32*x8;
+        const float x34 = 1.0f/sqrtf(x33);
         const float x35 = x14*x34;
-        const double x36 = ((double)x15)*x34;
+        const float x36 = x15*x34;
         const float x37 = x16*x34;
         out_e[0] = x14;
         out_e[1] = x15;
@@ -451,7 +476,7 @@ static inline int rigidsym_screw_of_displacement_sample_f32(
         out_plucker[3] = x29*x30*x37 - x29*x31*x36;
         out_plucker[4] = -x25*x29*x37 + x29*x31*x35;
         out_plucker[5] = x25*x29*x36 - x29*x30*x35;
-        singular |= (x33) == 0.0;
+        singular |= (((double)x33)) == 0.0;
         singular |= (((double)x9)) == 0.0;
         singular |= (((double)x28)) == 0.0;
         singular |= (((double)x17)) == 0.0;
@@ -496,7 +521,7 @@ static inline int rigidsym_screw_of_displacement_sample_f32(
         const float x35 = 1.0f/sqrtf(x34);
         const float x36 = x15*x35;
         const float x37 = x16*x35;
-        const double x38 = ((double)x17)*((double)x35);
+        const float x38 = x17*x35;
         out_e[0] = x15;
         out_e[1] = x16;
         out_e[2] = x17;
@@ -518,58 +543,72 @@ static inline int rigidsym_screw_of_displacement_sample_f32(
         const double finite = ((((x14 - x14) + (x18 - x18)) + ((x30 - x30) + ((x33 - x33) + (x35 - x35)))) + (((out_pitch[0] - out_pitch[0]) + (x10 - x10)) + ((((x11*x11) + (x12*x12) + (x13*x13)) - ((x11*x11) + (x12*x12) + (x13*x13))) + ((x29 - x29) + (x34 - x34)))));
         singular |= finite != finite;
     } else {
-        const float x0 = -0.5f*Q_12 + (0.5f)*Q_21;
-        const float x1 = -0.5f*Q_01 + (0.5f)*Q_10;
-        const float x2 = (x1*x1);
-        const float x3 = (0.5f)*Q_02 - 0.5f*Q_20;
+        const float x0 = (0.5f)*Q_12;
+        const double x1 = (0.5)*((double)Q_21) - ((double)x0);
+        const float x2 = (0.5f)*Q_01;
+        const double x3 = (0.5)*((double)Q_10) - ((double)x2);
         const float x4 = (x3*x3);
-        const float x5 = (x0*x0);
-        const double x6 = ((double)x2) + ((double)x4) + ((double)x5);
-        const double x7 = sqrt(x6);
-        const double x8 = 1.0/x7;
-        const float x9 = x0*x8;
-        const float x10 = x3*x8;
-        const float x11 = x1*x8;
-        const double x12 = atan2(x7, (0.5)*((double)Q_00) + (0.5)*((double)Q_11) + (0.5)*((double)Q_22) - 0.5);
-        const float x13 = -a_prime_1;
-        const double x14 = ((double)Q_10)*((double)a_0) + ((double)Q_11)*((double)a_1) + ((double)Q_12)*((double)a_2) + ((double)x13);
-        const float x15 = -a_prime_2;
-        const double x16 = ((double)Q_20)*((double)a_0) + ((double)Q_21)*((double)a_1) + ((double)Q_22)*((double)a_2) + ((double)x15);
-        const float x17 = -a_prime_0;
-        const double x18 = ((double)Q_00)*((double)a_0) + ((double)Q_01)*((double)a_1) + ((double)Q_02)*((double)a_2) + ((double)x17);
-        const double x19 = ((-((double)Q_01) + ((double)Q_10))*(-((double)Q_01) + ((double)Q_10))) + ((((double)Q_02) - ((double)Q_20))*(((double)Q_02) - ((double)Q_20))) + ((-((double)Q_12) + ((double)Q_21))*(-((double)Q_12) + ((double)Q_21)));
-        const double x20 = 1.0/x19;
-        const double x21 = ((double)Q_00) + ((double)Q_11) + ((double)Q_22) + 1.0;
-        const double x22 = x20*x21;
-        const double x23 = x22*(((double)Q_10)*x14 + ((double)Q_20)*x16 + x18*(((double)Q_00) - 1.0));
-        const float x24 = x22*(Q_01*x18 + Q_21*x16 + x14*(Q_11 - 1.0f));
-        const float x25 = Q_02*x18 + Q_12*x14 + x16*(Q_22 - 1.0f);
-        const float x26 = x22*x25;
-        const double x27 = 1.0/x6;
-        const float x28 = x2*x27 + x27*x4 + x27*x5;
-        const float x29 = 1.0f/sqrtf(x28);
-        const float x30 = x29*x9;
-        const float x31 = x10*x29;
-        const float x32 = x11*x29;
-        out_e[0] = x9;
-        out_e[1] = x10;
-        out_e[2] = x11;
-        out_phi[0] = x12;
-        out_p0[0] = x23;
-        out_p0[1] = x24;
-        out_p0[2] = x26;
-        out_pitch[0] = (((double)x10)*(-((double)a_1) - ((double)x13)) + ((double)x11)*(-((double)a_2) - ((double)x15)) + ((double)x9)*(-((double)a_0) - ((double)x17)))/x12;
-        out_plucker[0] = x30;
-        out_plucker[1] = x31;
-        out_plucker[2] = x32;
-        out_plucker[3] = x24*x32 - x26*x31;
-        out_plucker[4] = x0*x20*x21*x25*x29*x8 - x23*x32;
-        out_plucker[5] = x23*x31 - x24*x30;
-        singular |= (((double)x28)) == 0.0;
-        singular |= (x19) == 0.0;
-        singular |= (x6) == 0.0;
-        singular |= (x12) == 0.0;
-        const double finite = ((((x7 - x7) + (x8 - x8)) + ((x20 - x20) + ((x27 - x27) + (x29 - x29)))) + (((out_pitch[0] - out_pitch[0]) + (x6 - x6)) + ((x19 - x19) + ((x28 - x28) + (x12 - x12)))));
+        const float x5 = (0.5f)*Q_02;
+        const float x6 = (0.5f)*Q_20;
+        const double x7 = ((double)x5) - ((double)x6);
+        const float x8 = (x7*x7);
+        const float x9 = (x1*x1);
+        const double x10 = ((double)x4) + ((double)x8) + ((double)x9);
+        const float x11 = sqrt(x10);
+        const float x12 = 1.0f/x11;
+        const double x13 = x1*((double)x12);
+        const double x14 = ((double)x12)*x7;
+        const double x15 = ((double)x12)*x3;
+        const float x16 = (0.5f)*Q_00;
+        const float x17 = (0.5f)*Q_11;
+        const float x18 = (0.5f)*Q_22;
+        const float x19 = atan2(x11, x16 + x17 + x18 - 0.5f);
+        const float x20 = Q_00 + Q_11 + Q_22 + 1.0f;
+        const float x21 = 4.0f*x4 + 4.0f*x8 + 4.0f*x9;
+        const float x22 = 1.0f/x21;
+        const float x23 = -a_prime_1;
+        const double x24 = ((double)Q_10)*((double)a_0) + ((double)Q_11)*((double)a_1) + ((double)Q_12)*((double)a_2) + ((double)x23);
+        const float x25 = -x24;
+        const float x26 = -a_prime_2;
+        const double x27 = ((double)Q_20)*((double)a_0) + ((double)Q_21)*((double)a_1) + ((double)Q_22)*((double)a_2) + ((double)x26);
+        const double x28 = -x27;
+        const float x29 = 1.0f/x10;
+        const float x30 = -a_prime_0;
+        const float x31 = Q_00*a_0 + Q_01*a_1 + Q_02*a_2 + x30;
+        const float x32 = -x31;
+        const double x33 = (0.5)*((double)x29)*(x1*((double)x32) + ((double)x25)*x7 + x28*x3);
+        const float x34 = x29*x4 + x29*x8 + x29*x9;
+        const float x35 = 1.0f/sqrtf(x34);
+        const float x36 = x13*x35;
+        const float x37 = x14*x35;
+        const float x38 = x15*x35;
+        const float x39 = Q_01*x31 + Q_21*x27 + x24*(Q_11 - 1.0f);
+        const double x40 = ((-((double)Q_01) + ((double)Q_10))*(-((double)Q_01) + ((double)Q_10))) + ((((double)Q_02) - ((double)Q_20))*(((double)Q_02) - ((double)Q_20))) + ((-((double)Q_12) + ((double)Q_21))*(-((double)Q_12) + ((double)Q_21)));
+        const float x41 = 1.0f/x40;
+        const float x42 = x20*x41;
+        const float x43 = x38*x42;
+        const float x44 = Q_02*x31 + Q_12*x24 + x27*(Q_22 - 1.0f);
+        const float x45 = Q_10*x24 + Q_20*x27 + x31*(Q_00 - 1.0f);
+        out_e[0] = x13;
+        out_e[1] = x14;
+        out_e[2] = x15;
+        out_phi[0] = x19;
+        out_p0[0] = -a_0*x16 - a_1*x2 - a_2*x5 + (0.5f)*a_prime_0 - x1*x33 + x20*x22*(-x25*x3 + x28*x7);
+        out_p0[1] = -0.5f*Q_10*a_0 - a_1*x17 - a_2*x0 + (0.5f)*a_prime_1 + x20*x22*(-x1*x28 + x3*x32) - x33*x7;
+        out_p0[2] = -0.5f*Q_21*a_1 - a_0*x6 - a_2*x18 + (0.5f)*a_prime_2 + x20*x22*(x1*x25 - x32*x7) - x3*x33;
+        out_pitch[0] = (x13*(-((double)a_0) - ((double)x30)) + x14*(-((double)a_1) - ((double)x23)) + x15*(-((double)a_2) - ((double)x26)))/((double)x19);
+        out_plucker[0] = x36;
+        out_plucker[1] = x37;
+        out_plucker[2] = x38;
+        out_plucker[3] = -x37*x42*x44 + x39*x43;
+        out_plucker[4] = x1*x12*x20*x35*x41*x44 - x43*x45;
+        out_plucker[5] = -x36*x39*x42 + x37*x42*x45;
+        singular |= (((double)x34)) == 0.0;
+        singular |= (x40) == 0.0;
+        singular |= (x10) == 0.0;
+        singular |= (((double)x21)) == 0.0;
+        singular |= (((double)x19)) == 0.0;
+        const double finite = ((((x11 - x11) + ((x12 - x12) + (x22 - x22))) + ((x29 - x29) + ((x35 - x35) + (x41 - x41)))) + (((out_pitch[0] - out_pitch[0]) + ((x10 - x10) + (x21 - x21))) + ((x34 - x34) + ((x40 - x40) + (x19 - x19)))));
         singular |= finite != finite;
     }
     return singular;

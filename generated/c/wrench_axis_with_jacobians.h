@@ -13,9 +13,10 @@
  * Singular set: f = 0 (pure moment)
  *
  * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
- * measured at generation, rigidsym.codegen.float32; error within 0.961 ulp of float32,
- * normwise, at its points). In double:
- *   x0, x1, x2, x3, x4, x5, x7, x8, x10, x12, x13, x15, x16, x17, x19, x21, x29, x30, x31, x32, x33, x34, x36, x37, x40, x41, x42, x43, x50, x53, x60, x61, x62, x63, x68, x70, x71, plucker_D_w_A[33]
+ * measured at generation, rigidsym.codegen.float32; worst error 0.996 of what
+ * the rule of issue 37 allows, max(2 e_textbook, 4 u), per output, normwise, at its
+ * points). In double:
+ *   x1, x3, x4, x8, x12, x16, x19, x21, x30, x61
  */
 #ifndef RIGIDSYM_WRENCH_AXIS_WITH_JACOBIANS_H
 #define RIGIDSYM_WRENCH_AXIS_WITH_JACOBIANS_H
@@ -256,24 +257,24 @@ static inline int rigidsym_wrench_axis_with_jacobians_sample_f32(
     const float a_2 = in_a[2];
     int singular = 0;
     {
-        const double x0 = (((double)w_A_3)*((double)w_A_3));
+        const float x0 = (w_A_3*w_A_3);
         const double x1 = (((double)w_A_4)*((double)w_A_4));
-        const double x2 = (((double)w_A_5)*((double)w_A_5));
-        const double x3 = x1 + x2;
-        const double x4 = x0 + x3;
-        const double x5 = 1.0/x4;
+        const float x2 = (w_A_5*w_A_5);
+        const double x3 = x1 + ((double)x2);
+        const double x4 = ((double)x0) + x3;
+        const float x5 = 1.0f/x4;
         const float x6 = a_0*w_A_4;
-        const double x7 = -((double)a_1)*((double)w_A_3) + ((double)w_A_2);
-        const double x8 = ((double)x6) + x7;
+        const float x7 = -a_1*w_A_3 + w_A_2;
+        const double x8 = ((double)x6) + ((double)x7);
         const float x9 = -a_0*w_A_5;
-        const double x10 = ((double)a_2)*((double)w_A_3);
+        const float x10 = a_2*w_A_3;
         const float x11 = w_A_1 + x10;
         const double x12 = ((double)x11) + ((double)x9);
-        const double x13 = ((double)w_A_4)*x8 - ((double)w_A_5)*x12;
+        const float x13 = w_A_4*x8 - w_A_5*x12;
         const float x14 = a_1*w_A_5;
-        const double x15 = -((double)a_2)*((double)w_A_4) + ((double)w_A_0);
-        const double x16 = ((double)x14) + x15;
-        const double x17 = -((double)w_A_3)*x8 + ((double)w_A_5)*x16;
+        const float x15 = -a_2*w_A_4 + w_A_0;
+        const double x16 = ((double)x14) + ((double)x15);
+        const float x17 = -w_A_3*x8 + w_A_5*x16;
         const float x18 = w_A_3*x12 - w_A_4*x16;
         const double x19 = ((double)w_A_0)*((double)w_A_3) + ((double)w_A_1)*((double)w_A_4) + ((double)w_A_2)*((double)w_A_5);
         const float x20 = 1.0f/sqrt(x4);
@@ -285,49 +286,49 @@ static inline int rigidsym_wrench_axis_with_jacobians_sample_f32(
         const float x26 = w_A_4*x5;
         const float x27 = a_1*w_A_4;
         const float x28 = a_2*w_A_5;
-        const double x29 = -((double)x27) - ((double)x28);
+        const float x29 = -x27 - x28;
         const double x30 = 2.0/(x4*x4);
-        const double x31 = ((double)w_A_3)*x13;
-        const double x32 = 2.0*((double)x6) + x7;
-        const double x33 = x13*x30;
-        const double x34 = 2.0*((double)a_0)*((double)w_A_5) - ((double)x11);
+        const float x31 = w_A_3*x13;
+        const float x32 = 2.0f*x6 + x7;
+        const float x33 = x13*x30;
+        const float x34 = 2.0f*a_0*w_A_5 - x11;
         const float x35 = w_A_3*x5;
-        const double x36 = 2.0*((double)a_1)*((double)w_A_3) - ((double)w_A_2) - ((double)x6);
-        const double x37 = x17*x30;
+        const float x36 = 2.0f*a_1*w_A_3 - w_A_2 - x6;
+        const float x37 = x17*x30;
         const float x38 = a_0*w_A_3;
         const float x39 = -x28 - x38;
-        const double x40 = 2.0*((double)x14) + x15;
-        const double x41 = ((double)w_A_1) + 2.0*x10 + ((double)x9);
-        const double x42 = ((double)x18)*x30;
-        const double x43 = 2.0*((double)a_2)*((double)w_A_4) - ((double)w_A_0) - ((double)x14);
+        const float x40 = 2.0f*x14 + x15;
+        const float x41 = w_A_1 + 2.0f*x10 + x9;
+        const float x42 = x18*x30;
+        const float x43 = 2.0f*a_2*w_A_4 - w_A_0 - x14;
         const float x44 = -x27 - x38;
         const float x45 = -w_A_3*x26;
         const float x46 = -w_A_3*x25;
         const float x47 = x0 + x2;
         const float x48 = -w_A_4*x25;
         const float x49 = x0 + x1;
-        const double x50 = x19*x30;
+        const float x50 = x19*x30;
         const float x51 = -x20;
         const float x52 = x0*x21;
-        const double x53 = ((double)w_A_3)*x21;
+        const float x53 = w_A_3*x21;
         const float x54 = -w_A_4*x53;
         const float x55 = -w_A_5*x53;
         const float x56 = x1*x21;
         const float x57 = w_A_5*x21;
         const float x58 = -w_A_4*x57;
         const float x59 = x2*x21;
-        const double x60 = ((double)w_A_4)*x21;
+        const float x60 = w_A_4*x21;
         const double x61 = 1.0/((x4*x4)*sqrt(x4));
-        const double x62 = 3.0*x61;
-        const double x63 = ((double)x18)*x62;
+        const float x62 = 3.0f*x61;
+        const float x63 = x18*x62;
         const float x64 = w_A_4*x63;
         const float x65 = w_A_3*x64;
         const float x66 = x17*x62;
         const float x67 = w_A_5*x66;
-        const double x68 = ((double)w_A_3)*((double)x67);
+        const float x68 = w_A_3*x67;
         const float x69 = x31*x62;
-        const double x70 = x13*x62;
-        const double x71 = -((double)w_A_4)*((double)w_A_5)*x70;
+        const float x70 = x13*x62;
+        const float x71 = -w_A_4*w_A_5*x70;
         out_p0[0] = x13*x5;
         out_p0[1] = x17*x5;
         out_p0[2] = x18*x5;
@@ -407,7 +408,7 @@ static inline int rigidsym_wrench_axis_with_jacobians_sample_f32(
         out_plucker_D_w_A[30] = x55;
         out_plucker_D_w_A[31] = x58;
         out_plucker_D_w_A[32] = x52 + x56;
-        out_plucker_D_w_A[33] = ((double)w_A_4)*x21*x29 - ((double)w_A_4)*((double)x69) + 3.0*x0*x17*x61 - ((double)x24) - x36*x53;
+        out_plucker_D_w_A[33] = w_A_4*x21*x29 - w_A_4*x69 + 3.0f*x0*x17*x61 - x24 - x36*x53;
         out_plucker_D_w_A[34] = w_A_3*w_A_4*x66 - x1*x70 + x23 + x32*x60 - x39*x53;
         out_plucker_D_w_A[35] = x34*x60 - x40*x53 + x68 + x71;
         out_plucker_D_a[0] = 0.0f;
