@@ -12,13 +12,17 @@ reference is the declared formula in ``arb`` ball arithmetic at the exact point
 Per output ``o`` of a sample: ``err = ||computed - ref|| / ||ref||`` and the condition
 number ``kappa = sum_i ||J_oi|| ||x_i|| / ||ref||`` (``J_oi``: the derivative along the
 tangent space of argument ``i``; a relative perturbation ``u`` of every argument moves the
-output by at most ``u kappa``). Verdict **accurate** when
-``||computed - ref|| <= 8 u (sum_i ||J_oi|| ||x_i|| + ||ref||)``, i.e. ``err <= 8 u kappa +
-8 u`` (the absolute floor judges outputs that are exactly zero). A flagged sample (NaN,
-``SingularConfigurationError`` in the API) is **expected** where the exact result is
-undefined, kappa >= 1e12, kappa u >= 1/8 (the rounding of the input can reach the singular
-set) or the result overflows the type, else **spurious**. A finite sample with kappa u >= 1/8
-is not judged (``beyond``: no digit of the result is determined by the rounded input).
+output by at most ``u kappa``). Verdict **accurate** by issue 37's rule
+(:mod:`rigidsym.codegen.rule`): ``err <= 8 u (kappa + 1)`` (the absolute floor judges outputs
+that are exactly zero) **and** ``err <= max(2 e_ref, 4 u)``, ``e_ref`` the smallest error of
+the textbook formula (the declaration, naively, in the same type) and of each peer that has
+the operation (``_accuracy_peers``; float64), the second half measured against the truth at
+the input the kernel got (the unconstrained arguments as rounded). A flagged sample (NaN,
+``SingularConfigurationError`` in the API) is
+**expected** where the exact result is undefined, kappa >= 1e12, kappa u >= 1/8 (the
+rounding of the input can reach the singular set) or the result overflows the type, else
+**spurious**. A finite sample with kappa u >= 1/8, or an output below ``tiny / u`` or past
+float64, is not judged (``beyond``).
 
 Usage (from the repository root)::
 
@@ -44,6 +48,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 import _accuracy_peers as O  # noqa: E402
 import _accuracy_points as P  # noqa: E402
 import _accuracy_ref as R  # noqa: E402
+from _accuracy_tables import kernel_table, markdown, rule_table  # noqa: E402,F401
 
 from rigidsym import kernels as K  # noqa: E402
 from rigidsym.codegen import rule  # noqa: E402
@@ -307,61 +312,6 @@ def summary(rows: list[Row], thresholds: dict | None = None) -> dict:
 
 def _sig(x: float) -> float:
     return float(f"{x:.3g}")
-
-
-def kernel_table(data: dict, public_only: bool = False) -> str:
-    """The per-kernel table of ``docs/accuracy.md`` from :func:`summary`'s data."""
-    lines = ["| kernel | float64: bound, ulps | worst regime, kappa there | float32: bound, "
-             "ulps | worst regime, kappa there | singular set (flagged where) |",
-             "|---|---|---|---|---|---|"]
-    meta = K._state.meta()
-    for name, r in data.items():
-        if public_only and not meta[name]["public"]:
-            continue
-        a, b = r.get("float64", {}), r.get("float32", {})
-        sing = r["singular"] or "none"
-        if r.get("threshold"):
-            sing += f" ({r['threshold']})"
-        sing = sing.replace("|", "\\|")
-        ok = "" if r["accurate"] else " **LOSES**"
-        a, b = ({**x, "regime": x.get("regime", "").replace("|", "\\|")} for x in (a, b))
-        lines.append(f"| `{name}`{ok} | {a.get('bound', 0):.2g}, {a.get('ulps', 0):.3g} | "
-                     f"{a.get('regime', '')}, {a.get('kappa', 0):.2g} | "
-                     f"{b.get('bound', 0):.2g}, {b.get('ulps', 0):.3g} | "
-                     f"{b.get('regime', '')}, {b.get('kappa', 0):.2g} | {sing} |")
-    return "\n".join(lines) + "\n"
-
-
-def rule_table(data: dict, public_only: bool = False) -> str:
-    """The table of issue 37 (docs/accuracy.md, benchmarks/RESULTS.md): per kernel,
-    precision and back-end, the worst normwise error in u over every regime, the worst
-    ratio to e_ref (where e_ref > 2 u) and the yardstick there, and the rule's verdict."""
-    lines = ["| kernel | type | back-end | worst error (u) | worst err / e_ref | where, "
-             "against | rule (<= 1) |", "|---|---|---|---|---|---|---|"]
-    meta = K._state.meta()
-    for name, r in data.items():
-        if public_only and not meta[name]["public"]:
-            continue
-        for dt in ("float64", "float32"):
-            d = r.get(dt)
-            if not d:
-                continue
-            for b, x in sorted(d.get("backends", {}).items()):
-                where = x["vs_ref_where"].replace("|", "\\|") or "e_ref <= 2 u everywhere"
-                lines.append(f"| `{name}` | {dt} | {b} | {x['err_u']:.3g} | "
-                             f"{x['vs_ref']:.3g} | {where} | {x['rule']:.2g} |")
-    return "\n".join(lines) + "\n"
-
-
-def markdown(rows: list[Row]) -> str:
-    lines = ["| kernel | dtype | backend | regime | worst err/(8u kappa+8u) | err | kappa | "
-             "ulps | flagged (expected) | spurious singular |",
-             "|---|---|---|---|---|---|---|---|---|---|"]
-    for r in rows:
-        lines.append(f"| {r.kernel} | {r.dtype} | {r.backend} | {r.regime} | "
-                     f"{r.worst_ratio:.3g} | {r.err:.2g} | {r.kappa:.2g} | {r.ulps:.3g} | "
-                     f"{r.flagged_expected} | {len(r.spurious)} |")
-    return "\n".join(lines) + "\n"
 
 
 def main(argv=None) -> int:

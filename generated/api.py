@@ -114,7 +114,7 @@ def H_matrix(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1.62 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 3 ulp in float64) over 8 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 2 ulp in float64) over 8 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 11 operations; math hash d161921036f1484c.
     """
@@ -155,7 +155,7 @@ def H_matrix_dot(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1.12 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 106 ulp in float64) over 9 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1.42 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 29 ulp in float64) over 11 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 34 operations; math hash 0c036980272247c8.
     """
@@ -194,7 +194,7 @@ def H_tilde(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1.62 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 3 ulp in float64) over 8 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 2 ulp in float64) over 8 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 11 operations; math hash 394d6fafe3d12373.
     """
@@ -235,7 +235,7 @@ def H_tilde_dot(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 82 ulp in float64) over 9 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1.42 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 34 ulp in float64) over 11 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 32 operations; math hash a75606877943bdb2.
     """
@@ -274,7 +274,7 @@ def L_matrix(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1.85 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 431 ulp in float64) over 8 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1.71 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 1.79e+03 ulp in float64) over 8 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 48 operations; math hash ad587ca95a235ac2.
     """
@@ -315,7 +315,7 @@ def L_matrix_dot(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1.31 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 381 ulp in float64) over 9 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1.31 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 186 ulp in float64) over 11 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 98 operations; math hash bc3db842eb2cf774.
     """
@@ -401,7 +401,7 @@ def L_tilde_dot(
     Notes:
         Singular set: 1 + cos(phi) = 0 (phi = pi).
 
-        Accuracy: error <= 2.39 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 1.5e+03 ulp in float64) over 9 regimes (docs/accuracy.md, kernels.accuracy); singular when 1 + cos(phi) = 0 (phi = pi), flagged where cos(phi/2) == 0 in floating point, never for a float phi: finite at phi = fl(pi).
+        Accuracy: error <= 1.82 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 228 ulp in float64) over 11 regimes (docs/accuracy.md, kernels.accuracy); singular when 1 + cos(phi) = 0 (phi = pi), flagged where cos(phi/2) == 0 in floating point, never for a float phi: finite at phi = fl(pi).
 
         Generated; 91 operations; math hash 4a1f179ad0d8d060.
     """
@@ -443,7 +443,7 @@ def N_matrix(
     Notes:
         Singular set: phi = 0 (mod 2 pi): the axis is undefined.
 
-        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 114 ulp in float64) over 8 regimes (docs/accuracy.md, kernels.accuracy); singular when phi = 0 (mod 2 pi): the axis is undefined, flagged where sin(phi/2) == 0 in floating point: phi == 0 exactly (and abs(phi) < 1e-323); an output overflows (non-finite) where the result exceeds the type, about abs(phi) < 1e-300 x norm(input) in float64.
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 56 ulp in float64) over 8 regimes (docs/accuracy.md, kernels.accuracy); singular when phi = 0 (mod 2 pi): the axis is undefined, flagged where sin(phi/2) == 0 in floating point: phi == 0 exactly (and abs(phi) < 1e-323); an output overflows (non-finite) where the result exceeds the type, about abs(phi) < 1e-300 x norm(input) in float64.
 
         Generated; 31 operations; math hash 717c2182df7e8788.
     """
@@ -487,7 +487,7 @@ def N_matrix_dot(
     Notes:
         Singular set: phi = 0 (mod 2 pi): the axis is undefined.
 
-        Accuracy: error <= 1.16 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 190 ulp in float64) over 9 regimes (docs/accuracy.md, kernels.accuracy); singular when phi = 0 (mod 2 pi): the axis is undefined, flagged where sin(phi/2) == 0 in floating point: phi == 0 exactly (and abs(phi) < 1e-323); an output overflows (non-finite) where the result exceeds the type, about abs(phi) < 1e-300 x norm(input) in float64.
+        Accuracy: error <= 1.16 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 191 ulp in float64) over 11 regimes (docs/accuracy.md, kernels.accuracy); singular when phi = 0 (mod 2 pi): the axis is undefined, flagged where sin(phi/2) == 0 in floating point: phi == 0 exactly (and abs(phi) < 1e-323); an output overflows (non-finite) where the result exceeds the type, about abs(phi) < 1e-300 x norm(input) in float64.
 
         Generated; 199 operations; math hash a50ef6111f8ca170.
     """
@@ -526,7 +526,7 @@ def N_tilde(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1.23 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 4 ulp in float64) over 8 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1.02 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 4 ulp in float64) over 8 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 13 operations; math hash 27fa6424b1903ca5.
     """
@@ -570,7 +570,7 @@ def N_tilde_dot(
     Notes:
         Singular set: phi = 0 (mod 2 pi): the axis, and so its rate, is undefined.
 
-        Accuracy: error <= 1.52 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 146 ulp in float64) over 9 regimes (docs/accuracy.md, kernels.accuracy); singular when phi = 0 (mod 2 pi): the axis, and so its rate, is undefined, flagged where sin(phi/2) == 0 in floating point: phi == 0 exactly (and abs(phi) < 1e-323); an output overflows (non-finite) where the result exceeds the type, about abs(phi) < 1e-300 x norm(input) in float64.
+        Accuracy: error <= 1.62 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 112 ulp in float64) over 11 regimes (docs/accuracy.md, kernels.accuracy); singular when phi = 0 (mod 2 pi): the axis, and so its rate, is undefined, flagged where sin(phi/2) == 0 in floating point: phi == 0 exactly (and abs(phi) < 1e-323); an output overflows (non-finite) where the result exceeds the type, about abs(phi) < 1e-300 x norm(input) in float64.
 
         Generated; 79 operations; math hash b1c3eb794fbb8245.
     """
@@ -797,7 +797,7 @@ def inertia_at_point(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 4 ulp in float64) over 2 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 6 ulp in float64) over 4 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 29 operations; math hash 421dca07df5d4b7a.
     """
@@ -840,7 +840,7 @@ def inertia_dyad_at_point(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 3 ulp in float64) over 2 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 6 ulp in float64) over 4 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 36 operations; math hash 68258707f5bb9e80.
     """
@@ -888,7 +888,7 @@ def instant_screw_axis(
     Notes:
         Singular set: omega = 0 (pure translation).
 
-        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 68 ulp in float64) over 3 regimes (docs/accuracy.md, kernels.accuracy); singular when omega = 0 (pure translation), flagged where ||omega||^2 == 0 in floating point: omega == 0; a square underflows to 0 only for ||omega|| < 1.5e-162 (float64), < 1e-19 (float32 arithmetic), which benchmarks/accuracy.py calls below the smallest useful step.
+        Accuracy: error <= 1.15 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 79 ulp in float64) over 5 regimes (docs/accuracy.md, kernels.accuracy); singular when omega = 0 (pure translation), flagged where ||omega||^2 == 0 in floating point: omega == 0; a square underflows to 0 only for ||omega|| < 1.5e-162 (float64), < 1e-19 (float32 arithmetic), which benchmarks/accuracy.py calls below the smallest useful step.
 
         Generated; 56 operations; math hash bbbb3fe59daee446.
     """
@@ -931,7 +931,7 @@ def kinetic_energy(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 1 ulp in float64) over 3 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 2 ulp in float64) over 5 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 33 operations; math hash 59e2107c6b1479ae.
     """
@@ -980,7 +980,7 @@ def moving_frame_acceleration(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 66 ulp in float64) over 8 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 51 ulp in float64) over 10 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 153 operations; math hash 9ff5554b1ab9fff0.
     """
@@ -1025,7 +1025,7 @@ def natural_invariants_from_rotation(
 
         For an exactly symmetric Q (phi = pi) the sign of e is fixed by the rule: the component of e of largest magnitude is positive (e is taken from the column of the largest diagonal entry of Q); near pi, the skew part of Q fixes the sign, as in Pinocchio's log3.
 
-        Accuracy: error <= 1.22 u (kappa + 1) in float64, <= 1.28 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 1.76e+16 ulp in float64) over 6 regimes (docs/accuracy.md, kernels.accuracy); singular when phi = 0 (Q = 1): the axis e is undefined, flagged where ||vect(Q)||^2 == 0 with tr Q >= 0 (the main build): Q exactly symmetric in floating point, i.e. phi = 0 (Q = 1), or abs(phi) below the rounding of Q (about 1e-16).
+        Accuracy: error <= 1.22 u (kappa + 1) in float64, <= 1.28 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 2 ulp in float64) over 6 regimes (docs/accuracy.md, kernels.accuracy); singular when phi = 0 (Q = 1): the axis e is undefined, flagged where ||vect(Q)||^2 == 0 with tr Q >= 0 (the main build): Q exactly symmetric in floating point, i.e. phi = 0 (Q = 1), or abs(phi) below the rounding of Q (about 1e-16).
 
         Generated; 172 operations; math hash 445339cc0a3a5a8f.
     """
@@ -1070,7 +1070,7 @@ def newton_euler_wrench(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 23 ulp in float64) over 3 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 23 ulp in float64) over 5 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 45 operations; math hash a4f13db2095d7265.
     """
@@ -1112,7 +1112,7 @@ def plucker_from_points(
     Notes:
         Singular set: p1 = p2.
 
-        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 2.8e+13 ulp in float64) over 3 regimes (docs/accuracy.md, kernels.accuracy); singular when p1 = p2, flagged where ||p2 - p1||^2 == 0 in floating point: p1 == p2; a square underflows to 0 only for ||p2 - p1|| < 1.5e-162 (float64), < 1e-19 (float32 arithmetic), which benchmarks/accuracy.py calls below the smallest useful step.
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 4.27e+13 ulp in float64) over 6 regimes (docs/accuracy.md, kernels.accuracy); singular when p1 = p2, flagged where ||p2 - p1||^2 == 0 in floating point: p1 == p2; a square underflows to 0 only for ||p2 - p1|| < 1.5e-162 (float64), < 1e-19 (float32 arithmetic), which benchmarks/accuracy.py calls below the smallest useful step.
 
         Generated; 22 operations; math hash 37ca360961ff48ba.
     """
@@ -1153,7 +1153,7 @@ def plucker_transfer(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 10 ulp in float64) over 2 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 2 ulp in float64) over 4 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 15 operations; math hash 69d9b4ff4ea5cbea.
     """
@@ -1198,7 +1198,7 @@ def point_acceleration(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 62 ulp in float64) over 3 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 62 ulp in float64) over 5 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 36 operations; math hash bba0e838d11c478a.
     """
@@ -1274,7 +1274,7 @@ def rotation_from_natural_invariants(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1.36 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 451 ulp in float64) over 8 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1.37 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 77 ulp in float64) over 8 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 37 operations; math hash 3a598761ac6bf1a3.
     """
@@ -1538,7 +1538,7 @@ def screw_axis_point(
     Notes:
         Singular set: phi = 0 (pure translation).
 
-        Accuracy: error <= 1.53 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 588 ulp in float64) over 9 regimes (docs/accuracy.md, kernels.accuracy); singular when phi = 0 (pure translation), flagged where sin(phi/2) == 0 in floating point: phi == 0 exactly (and abs(phi) < 1e-323); an output overflows (non-finite) where the result exceeds the type, about abs(phi) < 1e-300 x norm(input) in float64.
+        Accuracy: error <= 1.78 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 102 ulp in float64) over 11 regimes (docs/accuracy.md, kernels.accuracy); singular when phi = 0 (pure translation), flagged where sin(phi/2) == 0 in floating point: phi == 0 exactly (and abs(phi) < 1e-323); an output overflows (non-finite) where the result exceeds the type, about abs(phi) < 1e-300 x norm(input) in float64.
 
         Generated; 84 operations; math hash e89a638961851614.
     """
@@ -1590,9 +1590,9 @@ def screw_of_displacement(
 
         For an exactly symmetric Q (phi = pi) the sign of e follows natural_invariants_from_rotation's rule (largest-magnitude component positive).
 
-        Accuracy: error <= 1.53 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 2.01e+08 ulp in float64) over 7 regimes (docs/accuracy.md, kernels.accuracy); singular when phi = 0 (pure translation: no axis, infinite pitch), flagged where ||Q - Q^T||^2 == 0 with tr Q >= 0 (the main build, after the rewrite of 1 - cos phi from the skew part of Q): Q exactly symmetric in floating point, phi below the rounding of Q (about 1e-16 in float64, 6e-8 in float32); before the rewrite 3 - tr Q == 0 flagged up to phi ~ 1.5e-8.
+        Accuracy: error <= 1.3 u (kappa + 1) in float64, <= 1.44 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 1.17e+03 ulp in float64) over 9 regimes (docs/accuracy.md, kernels.accuracy); singular when phi = 0 (pure translation: no axis, infinite pitch), flagged where ||Q - Q^T||^2 == 0 with tr Q >= 0 (the main build, after the rewrite of 1 - cos phi from the skew part of Q): Q exactly symmetric in floating point, phi below the rounding of Q (about 1e-16 in float64, 6e-8 in float32); before the rewrite 3 - tr Q == 0 flagged up to phi ~ 1.5e-8.
 
-        Generated; 589 operations; math hash 24c2ead304ca194c.
+        Generated; 565 operations; math hash 24c2ead304ca194c.
     """
     return _F.screw_of_displacement(Q, a, a_prime, out, check, on_singular, threads)
 
@@ -1666,7 +1666,7 @@ def twist_transfer(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 6 ulp in float64) over 3 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 6 ulp in float64) over 5 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 15 operations; math hash 0b921c0c211334f5.
     """
@@ -1705,7 +1705,7 @@ def twist_transfer_matrix(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 1 ulp in float64) over 2 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 1 ulp in float64) over 4 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 6 operations; math hash b790e8d04828afbd.
     """
@@ -1751,7 +1751,7 @@ def wrench_axis(
     Notes:
         Singular set: f = 0 (pure moment).
 
-        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 8 ulp in float64) over 3 regimes (docs/accuracy.md, kernels.accuracy); singular when f = 0 (pure moment), flagged where ||f||^2 == 0 in floating point: f == 0; a square underflows to 0 only for ||f|| < 1.5e-162 (float64), < 1e-19 (float32 arithmetic), which benchmarks/accuracy.py calls below the smallest useful step.
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 27 ulp in float64) over 5 regimes (docs/accuracy.md, kernels.accuracy); singular when f = 0 (pure moment), flagged where ||f||^2 == 0 in floating point: f == 0; a square underflows to 0 only for ||f|| < 1.5e-162 (float64), < 1e-19 (float32 arithmetic), which benchmarks/accuracy.py calls below the smallest useful step.
 
         Generated; 59 operations; math hash 6e28211949601ec4.
     """
@@ -1792,7 +1792,7 @@ def wrench_transfer(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 5 ulp in float64) over 3 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 24 ulp in float64) over 5 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 15 operations; math hash 719fe1e42bb6247d.
     """
@@ -1831,7 +1831,7 @@ def wrench_transfer_matrix(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 1 ulp in float64) over 2 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 1 ulp in float64) over 4 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 6 operations; math hash d1200d894b2faa3f.
     """

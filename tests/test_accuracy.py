@@ -1,6 +1,6 @@
-"""Accuracy against the condition of the problem (issue 30): the regimes of
-``benchmarks/accuracy.py`` as a test, in float64 on a subsample of the approach steps, so
-that a rewrite that loses digits fails here.
+"""Accuracy against the condition of the problem (issue 30) and never worse than the textbook
+formula or a peer (issue 37): the regimes of ``benchmarks/accuracy.py`` as a test, in float64
+on a subsample of the approach steps, so that a rewrite that loses digits fails here.
 
 Every public kernel (and a few Jacobian and Euler-angle kernels) at exact points rounded to
 float64, over random points and the approaches to every cancellation its inputs' kinds have
@@ -42,15 +42,74 @@ def _backends() -> list[str]:
 
 def _losses(rows) -> str:
     return "\n".join(f"{r.kernel} {r.backend} {r.regime}: err {r.err:.2g} = "
-                     f"{r.worst_ratio:.3g} x 8u(kappa+1), kappa {r.kappa:.2g}, spurious "
-                     f"{r.spurious[:1]} at {r.worst_point}" for r in rows if not r.accurate)
+                     f"{r.worst_ratio:.3g} x 8u(kappa+1), kappa {r.kappa:.2g}, rule "
+                     f"{r.rule_ratio:.3g} (vs e_ref {r.ref_ratio:.3g}, {r.ref_source}), "
+                     f"spurious {r.spurious[:1]} at {r.worst_point}"
+                     for r in rows if not r.accurate)
+
+
+#: Open losses to issue 37's rule (float64; the worst rule ratio over the full sweep,
+#: benchmarks/RESULTS.md): the test holds them to it, so they cannot grow unseen.
+#: On C, glibc's libmvec sin/cos (within 4 ulp; scalar sin/cos are within 1 ulp but cost
+#: 16x on this machine: 17.6 against 1.1 ns a sin/cos pair) take the trig kernels past the
+#: 4 u floor; RIGIDSYM_LIBMVEC=0 brings them within it (rotation_from_natural_invariants 1.9
+#: -> 0.67, euler_angle_rates_xzx_fixed 3.2 -> 0.79).
+LIBMVEC_RULE = 6.0
+OPEN = {("L_matrix", "numpy", "float64"): 1.2, ("L_matrix_dot", "numpy", "float64"): 1.2,
+        ("L_matrix_with_jacobians", "numpy", "float64"): 1.2,
+        ("L_matrix_dot_with_jacobians", "numpy", "float64"): 1.2,
+        ("L_tilde_dot_with_jacobians", "numpy", "float64"): 1.6,
+        ("N_tilde_dot_with_jacobians", "numpy", "float64"): 1.2,
+        ("wrench_axis_with_jacobians", "numpy", "float64"): 1.3,
+        ("instant_screw_axis_with_jacobians", "numpy", "float64"): 1.2,
+        # 5.9 u where pytransform3d is 3.9 u (Q: phi -> 0; 3.4e7 u before issue 37)
+        ("screw_of_displacement", "numpy", "float64"): 1.6,
+        ("screw_of_displacement", "c", "float64"): 1.6,
+        # float32 C: the precision plan meets the rule at its own points, not quite at all
+        ("screw_axis_point_with_jacobians", "c", "float32"): 1.5,
+        ("screw_of_displacement", "c", "float32"): 1.4,
+        ("kinetic_energy_with_jacobians", "c", "float32"): 1.2,
+        **{(f"euler_angle_rates_{s}_{f}", "c", "float32"): 1.5
+           for s in ("xzx", "yxz") for f in ("body", "fixed")}}
+
+
+def _within(rows) -> list:
+    """The rows past the rule (OPEN and LIBMVEC_RULE allowed for)."""
+    mvec = _libmvec()
+    bad = []
+    for r in rows:
+        limit = OPEN.get((r.kernel, r.backend, r.dtype), 1.0)
+        if r.backend == "c" and r.dtype == "float64" and mvec and _calls_trig(r.kernel):
+            limit = max(limit, LIBMVEC_RULE)
+        if r.rule_ratio > limit or r.spurious:
+            bad.append(r)
+    return bad
+
+
+def _calls_trig(name: str) -> bool:
+    from rigidsym._config import generated_dir
+
+    src = (generated_dir() / "c" / f"{name}.h").read_text(encoding="utf-8")
+    return "sin(" in src or "cos(" in src
+
+
+def _libmvec() -> bool:
+    try:
+        return bool(K.use_backend("c") == "c" and K.build_info().get("libmvec"))
+    finally:
+        K.use_backend("numpy")
 
 
 @pytest.mark.parametrize("name", sorted(K.KERNEL_NAMES) + EXTRA)
 def test_accurate_over_the_regimes_float64(name):
+    """The condition half on every row; the whole rule of issue 37 on every row but the
+    open ones (OPEN; on C with libmvec, the trig kernels within LIBMVEC_RULE). Old main: no
+    second yardstick (tests/test_accuracy_rule.py shows the loss it let through)."""
     rows = A.sweep([name], [np.float64], _backends(), n_random=3, small=SMALL)
+    K.use_backend("numpy")
     assert rows and sum(r.samples for r in rows) >= 5
-    assert all(r.accurate for r in rows), _losses(rows)
+    assert all(r.worst_ratio <= 1 and not r.spurious for r in rows), _losses(rows)
+    assert not _within(rows), _losses(_within(rows))
 
 
 def _declared_numpy(name):
@@ -116,4 +175,6 @@ def test_accuracy_rows_are_shipped():
 def test_full_sweep_both_types():
     """The whole harness: every kernel, float64 and float32, C and NumPy (minutes)."""
     rows = A.sweep(A.kernel_names(), [np.float64, np.float32], _backends(), n_random=4)
-    assert all(r.accurate for r in rows), _losses(rows)
+    K.use_backend("numpy")
+    assert all(r.worst_ratio <= 1 for r in rows), _losses(rows)
+    assert not _within(rows), _losses(_within(rows))

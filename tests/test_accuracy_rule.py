@@ -92,6 +92,7 @@ def test_generator_chooses_plucker_form_by_the_rule():
     assert chosen[0].after * accurate.GAIN <= chosen[0].before
 
 
+@pytest.mark.slow
 def test_screw_axis_point_from_the_skew_part():
     """screw_of_displacement's p0 near phi = 0: old main read the diagonal of Q ((Q - 1)^T
     (Q a - a')), 3.4e7 u off at phi = 1e-8 where pytransform3d's screw parameters are 4 u

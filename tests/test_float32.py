@@ -7,7 +7,8 @@ header). Since issue 37 (item 6) plan and test read the same rule, rigidsym.code
 per output, the normwise relative error within ``max(2 e_ref, 4 u)``, ``e_ref`` the textbook
 formula's error (the declaration, naively, in float32 arithmetic) at the same inputs,
 ``u = 2**-24``, at random and adversarial points alike (the rule's condition half is
-benchmarks/accuracy.py's, tests/test_accuracy.py). The NumPy backend computes in float64 and rounds once (about half an ulp).
+benchmarks/accuracy.py's, tests/test_accuracy.py). The NumPy backend computes in float64
+and rounds once (about half an ulp).
 """
 
 from __future__ import annotations

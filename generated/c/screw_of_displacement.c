@@ -6,7 +6,7 @@
  * template: c_kernel.c.j2
  * math hash: sha256:24c2ead304ca194c
  * sympy 1.14.0, rigidsym 0.2.0
- * operations: 589
+ * operations: 565
  * branches: near_pi_0, near_pi_1, near_pi_2, main
  * accuracy rewrite (main): the axis point from the skew part of Q: (Q - 1)^T (Q a - a') reads
  *     the diagonal of Q, whose rounding is relative u/phi of it as phi -> 0; cot(phi/2)/2 e x
@@ -14,15 +14,7 @@
  *     1 + tr Q does not cancel); worst ratio to the rule max(2 e_best, 4 u) (e_best: the most
  *     accurate of the textbook formula and the forms tried, per point; rigidsym.codegen.rule)
  *     at 17 points of the regimes (rigidsym.codegen.regimes, exact, rounded to float64) a
- *     singular flag -> 0.9, never worse than the textbook formula by that rule; equal to the
- *     declared formula by the zero test (exact-cancel)
- * accuracy rewrite (main): 1 - cos(phi) from the skew part of Q: 3 - tr Q cancels as phi -> 0
- *     and the rounding of the diagonal of Q is relative 1/phi^2 there; the skew part keeps
- *     relative accuracy 1/phi, the condition of the problem (valid where 1 + tr Q does not
- *     cancel: cos phi > -1/2); worst ratio to the rule max(2 e_best, 4 u) (e_best: the most
- *     accurate of the textbook formula and the forms tried, per point; rigidsym.codegen.rule)
- *     at 17 points of the regimes (rigidsym.codegen.regimes, exact, rounded to float64) a
- *     singular flag -> 0.9, never worse than the textbook formula by that rule; equal to the
+ *     singular flag -> 0.82, never worse than the textbook formula by that rule; equal to the
  *     declared formula by the zero test (exact-cancel)
  */
 #include "screw_of_displacement.h"

@@ -6,7 +6,7 @@
  * template: c_kernel.h.j2
  * math hash: sha256:24c2ead304ca194c
  * sympy 1.14.0, rigidsym 0.2.0
- * operations: 589
+ * operations: 565
  * branches: near_pi_0, near_pi_1, near_pi_2, main
  * accuracy rewrite (main): the axis point from the skew part of Q: (Q - 1)^T (Q a - a') reads
  *     the diagonal of Q, whose rounding is relative u/phi of it as phi -> 0; cot(phi/2)/2 e x
@@ -14,15 +14,7 @@
  *     1 + tr Q does not cancel); worst ratio to the rule max(2 e_best, 4 u) (e_best: the most
  *     accurate of the textbook formula and the forms tried, per point; rigidsym.codegen.rule)
  *     at 17 points of the regimes (rigidsym.codegen.regimes, exact, rounded to float64) a
- *     singular flag -> 0.9, never worse than the textbook formula by that rule; equal to the
- *     declared formula by the zero test (exact-cancel)
- * accuracy rewrite (main): 1 - cos(phi) from the skew part of Q: 3 - tr Q cancels as phi -> 0
- *     and the rounding of the diagonal of Q is relative 1/phi^2 there; the skew part keeps
- *     relative accuracy 1/phi, the condition of the problem (valid where 1 + tr Q does not
- *     cancel: cos phi > -1/2); worst ratio to the rule max(2 e_best, 4 u) (e_best: the most
- *     accurate of the textbook formula and the forms tried, per point; rigidsym.codegen.rule)
- *     at 17 points of the regimes (rigidsym.codegen.regimes, exact, rounded to float64) a
- *     singular flag -> 0.9, never worse than the textbook formula by that rule; equal to the
+ *     singular flag -> 0.82, never worse than the textbook formula by that rule; equal to the
  *     declared formula by the zero test (exact-cancel)
  *
  * Screw of a finite displacement: axis, angle, axis point, pitch, Plücker array.
@@ -36,7 +28,7 @@
  *   branch 1: none
  *   branch 2: none
  *   branch 3: none
- *   branch 4: x1, x3, x7, x10, x13, x14, x15, x24, x27, x28, x33, x40, pitch[0]
+ *   branch 4: x1, x2, x4, x5, x13, x15, x16, x17, x28, x32, x34, pitch[0]
  */
 #ifndef RIGIDSYM_SCREW_OF_DISPLACEMENT_H
 #define RIGIDSYM_SCREW_OF_DISPLACEMENT_H
@@ -261,73 +253,71 @@ static inline int rigidsym_screw_of_displacement_sample(
         singular |= finite != finite;
     } else {
         const double x0 = (0.5)*Q_12;
-        const double x1 = (0.5)*Q_21 - x0;
-        const double x2 = (0.5)*Q_01;
-        const double x3 = (0.5)*Q_10 - x2;
-        const double x4 = (x3*x3);
-        const double x5 = (0.5)*Q_02;
-        const double x6 = (0.5)*Q_20;
-        const double x7 = x5 - x6;
-        const double x8 = (x7*x7);
-        const double x9 = (x1*x1);
-        const double x10 = x4 + x8 + x9;
-        const double x11 = sqrt(x10);
-        const double x12 = 1.0/x11;
-        const double x13 = x1*x12;
-        const double x14 = x12*x7;
-        const double x15 = x12*x3;
-        const double x16 = (0.5)*Q_00;
-        const double x17 = (0.5)*Q_11;
-        const double x18 = (0.5)*Q_22;
-        const double x19 = atan2(x11, x16 + x17 + x18 - 0.5);
-        const double x20 = Q_00 + Q_11 + Q_22 + 1.0;
-        const double x21 = 4.0*x4 + 4.0*x8 + 4.0*x9;
-        const double x22 = 1.0/x21;
-        const double x23 = -a_prime_1;
-        const double x24 = Q_10*a_0 + Q_11*a_1 + Q_12*a_2 + x23;
-        const double x25 = -x24;
-        const double x26 = -a_prime_2;
-        const double x27 = Q_20*a_0 + Q_21*a_1 + Q_22*a_2 + x26;
-        const double x28 = -x27;
-        const double x29 = 1.0/x10;
+        const double x1 = -0.5*Q_21 + x0;
+        const double x2 = -x1;
+        const double x3 = (0.5)*Q_01;
+        const double x4 = -0.5*Q_10 + x3;
+        const double x5 = -x4;
+        const double x6 = (x5*x5);
+        const double x7 = (0.5)*Q_02;
+        const double x8 = (0.5)*Q_20;
+        const double x9 = x7 - x8;
+        const double x10 = (x9*x9);
+        const double x11 = (x2*x2);
+        const double x12 = x10 + x11 + x6;
+        const double x13 = sqrt(x12);
+        const double x14 = 1.0/x13;
+        const double x15 = x14*x2;
+        const double x16 = x14*x9;
+        const double x17 = x14*x5;
+        const double x18 = (0.5)*Q_00;
+        const double x19 = (0.5)*Q_11;
+        const double x20 = (0.5)*Q_22;
+        const double x21 = atan2(x13, x18 + x19 + x20 - 0.5);
+        const double x22 = Q_00 + Q_11 + Q_22 + 1.0;
+        const double x23 = 4.0*x10 + 4.0*x11 + 4.0*x6;
+        const double x24 = 1.0/x23;
+        const double x25 = -a_prime_1;
+        const double x26 = -Q_10*a_0 - Q_11*a_1 - Q_12*a_2 - x25;
+        const double x27 = -a_prime_2;
+        const double x28 = -Q_20*a_0 - Q_21*a_1 - Q_22*a_2 - x27;
+        const double x29 = 1.0/x12;
         const double x30 = -a_prime_0;
-        const double x31 = Q_00*a_0 + Q_01*a_1 + Q_02*a_2 + x30;
-        const double x32 = -x31;
-        const double x33 = (0.5)*x29*(x1*x32 + x25*x7 + x28*x3);
-        const double x34 = x29*x4 + x29*x8 + x29*x9;
-        const double x35 = 1.0/sqrt(x34);
-        const double x36 = x13*x35;
-        const double x37 = x14*x35;
-        const double x38 = x15*x35;
-        const double x39 = Q_01*x31 + Q_21*x27 + x24*(Q_11 - 1.0);
-        const double x40 = ((-Q_01 + Q_10)*(-Q_01 + Q_10)) + ((Q_02 - Q_20)*(Q_02 - Q_20)) + ((-Q_12 + Q_21)*(-Q_12 + Q_21));
-        const double x41 = 1.0/x40;
-        const double x42 = x20*x41;
-        const double x43 = x38*x42;
-        const double x44 = Q_02*x31 + Q_12*x24 + x27*(Q_22 - 1.0);
-        const double x45 = Q_10*x24 + Q_20*x27 + x31*(Q_00 - 1.0);
-        out_e[0] = x13;
-        out_e[1] = x14;
-        out_e[2] = x15;
-        out_phi[0] = x19;
-        out_p0[0] = -a_0*x16 - a_1*x2 - a_2*x5 + (0.5)*a_prime_0 - x1*x33 + x20*x22*(-x25*x3 + x28*x7);
-        out_p0[1] = -0.5*Q_10*a_0 - a_1*x17 - a_2*x0 + (0.5)*a_prime_1 + x20*x22*(-x1*x28 + x3*x32) - x33*x7;
-        out_p0[2] = -0.5*Q_21*a_1 - a_0*x6 - a_2*x18 + (0.5)*a_prime_2 + x20*x22*(x1*x25 - x32*x7) - x3*x33;
-        out_pitch[0] = (x13*(-a_0 - x30) + x14*(-a_1 - x23) + x15*(-a_2 - x26))/x19;
-        out_plucker[0] = x36;
-        out_plucker[1] = x37;
-        out_plucker[2] = x38;
-        out_plucker[3] = -x37*x42*x44 + x39*x43;
-        out_plucker[4] = x1*x12*x20*x35*x41*x44 - x43*x45;
-        out_plucker[5] = -x36*x39*x42 + x37*x42*x45;
+        const double x31 = -Q_00*a_0 - Q_01*a_1 - Q_02*a_2 - x30;
+        const double x32 = x2*x31 + x26*x9 + x28*x5;
+        const double x33 = -a_0*x18 - a_1*x3 - a_2*x7 + (0.5)*a_prime_0 - 0.5*x2*x29*x32 + x22*x24*(-x26*x5 + x28*x9);
+        const double x34 = 2.0*x10 + 2.0*x11 + 2.0*x6;
+        const double x35 = x32/x34;
+        const double x36 = -0.5*Q_10*a_0 - a_1*x19 - a_2*x0 + (0.5)*a_prime_1 + x22*x24*(-x2*x28 + x31*x5) - x35*x9;
+        const double x37 = -0.5*Q_21*a_1 - a_0*x8 - a_2*x20 + (0.5)*a_prime_2 + x22*x24*(x2*x26 - x31*x9) - x35*x5;
+        const double x38 = x10*x29 + x11*x29 + x29*x6;
+        const double x39 = 1.0/sqrt(x38);
+        const double x40 = x15*x39;
+        const double x41 = x16*x39;
+        const double x42 = x17*x39;
+        const double x43 = x14*x39;
+        out_e[0] = x15;
+        out_e[1] = x16;
+        out_e[2] = x17;
+        out_phi[0] = x21;
+        out_p0[0] = x33;
+        out_p0[1] = x36;
+        out_p0[2] = x37;
+        out_pitch[0] = (x15*(-a_0 - x30) + x16*(-a_1 - x25) + x17*(-a_2 - x27))/x21;
+        out_plucker[0] = x40;
+        out_plucker[1] = x41;
+        out_plucker[2] = x42;
+        out_plucker[3] = x36*x42 - x37*x43*x9;
+        out_plucker[4] = x33*x4*x43 + x37*x40;
+        out_plucker[5] = x1*x36*x43 + x33*x41;
+        singular |= (x38) == 0.0;
+        singular |= (x12) == 0.0;
         singular |= (x34) == 0.0;
-        singular |= (x40) == 0.0;
-        singular |= (x10) == 0.0;
+        singular |= (x23) == 0.0;
         singular |= (x21) == 0.0;
-        singular |= (x19) == 0.0;
         /* quantities that can be non-finite for finite inputs (divisions, roots):
          * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
-        const double finite = ((((x11 - x11) + ((x12 - x12) + (x22 - x22))) + ((x29 - x29) + ((x35 - x35) + (x41 - x41)))) + (((out_pitch[0] - out_pitch[0]) + ((x10 - x10) + (x21 - x21))) + ((x34 - x34) + ((x40 - x40) + (x19 - x19)))));
+        const double finite = ((((x13 - x13) + ((x14 - x14) + (x24 - x24))) + ((x29 - x29) + ((x35 - x35) + (x39 - x39)))) + (((out_pitch[0] - out_pitch[0]) + ((x12 - x12) + (x23 - x23))) + ((x34 - x34) + ((x38 - x38) + (x21 - x21)))));
         singular |= finite != finite;
     }
     return singular;
@@ -544,71 +534,69 @@ static inline int rigidsym_screw_of_displacement_sample_f32(
         singular |= finite != finite;
     } else {
         const float x0 = (0.5f)*Q_12;
-        const double x1 = (0.5)*((double)Q_21) - ((double)x0);
-        const float x2 = (0.5f)*Q_01;
-        const double x3 = (0.5)*((double)Q_10) - ((double)x2);
-        const float x4 = (x3*x3);
-        const float x5 = (0.5f)*Q_02;
-        const float x6 = (0.5f)*Q_20;
-        const double x7 = ((double)x5) - ((double)x6);
-        const float x8 = (x7*x7);
-        const float x9 = (x1*x1);
-        const double x10 = ((double)x4) + ((double)x8) + ((double)x9);
-        const float x11 = sqrt(x10);
-        const float x12 = 1.0f/x11;
-        const double x13 = x1*((double)x12);
-        const double x14 = ((double)x12)*x7;
-        const double x15 = ((double)x12)*x3;
-        const float x16 = (0.5f)*Q_00;
-        const float x17 = (0.5f)*Q_11;
-        const float x18 = (0.5f)*Q_22;
-        const float x19 = atan2(x11, x16 + x17 + x18 - 0.5f);
-        const float x20 = Q_00 + Q_11 + Q_22 + 1.0f;
-        const float x21 = 4.0f*x4 + 4.0f*x8 + 4.0f*x9;
-        const float x22 = 1.0f/x21;
-        const float x23 = -a_prime_1;
-        const double x24 = ((double)Q_10)*((double)a_0) + ((double)Q_11)*((double)a_1) + ((double)Q_12)*((double)a_2) + ((double)x23);
-        const float x25 = -x24;
-        const float x26 = -a_prime_2;
-        const double x27 = ((double)Q_20)*((double)a_0) + ((double)Q_21)*((double)a_1) + ((double)Q_22)*((double)a_2) + ((double)x26);
-        const double x28 = -x27;
-        const float x29 = 1.0f/x10;
+        const double x1 = -0.5*((double)Q_21) + ((double)x0);
+        const double x2 = -x1;
+        const float x3 = (0.5f)*Q_01;
+        const double x4 = -0.5*((double)Q_10) + ((double)x3);
+        const double x5 = -x4;
+        const float x6 = (x5*x5);
+        const float x7 = (0.5f)*Q_02;
+        const float x8 = (0.5f)*Q_20;
+        const float x9 = x7 - x8;
+        const float x10 = (x9*x9);
+        const float x11 = (x2*x2);
+        const float x12 = x10 + x11 + x6;
+        const double x13 = sqrt(((double)x12));
+        const float x14 = 1.0f/x13;
+        const double x15 = ((double)x14)*x2;
+        const double x16 = ((double)x14)*((double)x9);
+        const double x17 = ((double)x14)*x5;
+        const float x18 = (0.5f)*Q_00;
+        const float x19 = (0.5f)*Q_11;
+        const float x20 = (0.5f)*Q_22;
+        const float x21 = atan2(x13, x18 + x19 + x20 - 0.5f);
+        const float x22 = Q_00 + Q_11 + Q_22 + 1.0f;
+        const float x23 = 4.0f*x10 + 4.0f*x11 + 4.0f*x6;
+        const float x24 = 1.0f/x23;
+        const float x25 = -a_prime_1;
+        const float x26 = -Q_10*a_0 - Q_11*a_1 - Q_12*a_2 - x25;
+        const float x27 = -a_prime_2;
+        const double x28 = -((double)Q_20)*((double)a_0) - ((double)Q_21)*((double)a_1) - ((double)Q_22)*((double)a_2) - ((double)x27);
+        const float x29 = 1.0f/x12;
         const float x30 = -a_prime_0;
-        const float x31 = Q_00*a_0 + Q_01*a_1 + Q_02*a_2 + x30;
-        const float x32 = -x31;
-        const double x33 = (0.5)*((double)x29)*(x1*((double)x32) + ((double)x25)*x7 + x28*x3);
-        const float x34 = x29*x4 + x29*x8 + x29*x9;
-        const float x35 = 1.0f/sqrtf(x34);
-        const float x36 = x13*x35;
-        const float x37 = x14*x35;
-        const float x38 = x15*x35;
-        const float x39 = Q_01*x31 + Q_21*x27 + x24*(Q_11 - 1.0f);
-        const double x40 = ((-((double)Q_01) + ((double)Q_10))*(-((double)Q_01) + ((double)Q_10))) + ((((double)Q_02) - ((double)Q_20))*(((double)Q_02) - ((double)Q_20))) + ((-((double)Q_12) + ((double)Q_21))*(-((double)Q_12) + ((double)Q_21)));
-        const float x41 = 1.0f/x40;
-        const float x42 = x20*x41;
-        const float x43 = x38*x42;
-        const float x44 = Q_02*x31 + Q_12*x24 + x27*(Q_22 - 1.0f);
-        const float x45 = Q_10*x24 + Q_20*x27 + x31*(Q_00 - 1.0f);
-        out_e[0] = x13;
-        out_e[1] = x14;
-        out_e[2] = x15;
-        out_phi[0] = x19;
-        out_p0[0] = -a_0*x16 - a_1*x2 - a_2*x5 + (0.5f)*a_prime_0 - x1*x33 + x20*x22*(-x25*x3 + x28*x7);
-        out_p0[1] = -0.5f*Q_10*a_0 - a_1*x17 - a_2*x0 + (0.5f)*a_prime_1 + x20*x22*(-x1*x28 + x3*x32) - x33*x7;
-        out_p0[2] = -0.5f*Q_21*a_1 - a_0*x6 - a_2*x18 + (0.5f)*a_prime_2 + x20*x22*(x1*x25 - x32*x7) - x3*x33;
-        out_pitch[0] = (x13*(-((double)a_0) - ((double)x30)) + x14*(-((double)a_1) - ((double)x23)) + x15*(-((double)a_2) - ((double)x26)))/((double)x19);
-        out_plucker[0] = x36;
-        out_plucker[1] = x37;
-        out_plucker[2] = x38;
-        out_plucker[3] = -x37*x42*x44 + x39*x43;
-        out_plucker[4] = x1*x12*x20*x35*x41*x44 - x43*x45;
-        out_plucker[5] = -x36*x39*x42 + x37*x42*x45;
-        singular |= (((double)x34)) == 0.0;
-        singular |= (x40) == 0.0;
-        singular |= (x10) == 0.0;
+        const float x31 = -Q_00*a_0 - Q_01*a_1 - Q_02*a_2 - x30;
+        const double x32 = x2*((double)x31) + ((double)x26)*((double)x9) + x28*x5;
+        const float x33 = -a_0*x18 - a_1*x3 - a_2*x7 + (0.5f)*a_prime_0 - 0.5f*x2*x29*x32 + x22*x24*(-x26*x5 + x28*x9);
+        const double x34 = 2.0*((double)x10) + 2.0*((double)x11) + 2.0*((double)x6);
+        const float x35 = x32/x34;
+        const float x36 = -0.5f*Q_10*a_0 - a_1*x19 - a_2*x0 + (0.5f)*a_prime_1 + x22*x24*(-x2*x28 + x31*x5) - x35*x9;
+        const float x37 = -0.5f*Q_21*a_1 - a_0*x8 - a_2*x20 + (0.5f)*a_prime_2 + x22*x24*(x2*x26 - x31*x9) - x35*x5;
+        const float x38 = x10*x29 + x11*x29 + x29*x6;
+        const float x39 = 1.0f/sqrtf(x38);
+        const float x40 = x15*x39;
+        const float x41 = x16*x39;
+        const float x42 = x17*x39;
+        const float x43 = x14*x39;
+        out_e[0] = x15;
+        out_e[1] = x16;
+        out_e[2] = x17;
+        out_phi[0] = x21;
+        out_p0[0] = x33;
+        out_p0[1] = x36;
+        out_p0[2] = x37;
+        out_pitch[0] = (x15*(-((double)a_0) - ((double)x30)) + x16*(-((double)a_1) - ((double)x25)) + x17*(-((double)a_2) - ((double)x27)))/((double)x21);
+        out_plucker[0] = x40;
+        out_plucker[1] = x41;
+        out_plucker[2] = x42;
+        out_plucker[3] = x36*x42 - x37*x43*x9;
+        out_plucker[4] = x33*x4*x43 + x37*x40;
+        out_plucker[5] = x1*x36*x43 + x33*x41;
+        singular |= (((double)x38)) == 0.0;
+        singular |= (((double)x12)) == 0.0;
+        singular |= (x34) == 0.0;
+        singular |= (((double)x23)) == 0.0;
         singular |= (((double)x21)) == 0.0;
-        singular |= (((double)x19)) == 0.0;
-        const double finite = ((((x11 - x11) + ((x12 - x12) + (x22 - x22))) + ((x29 - x29) + ((x35 - x35) + (x41 - x41)))) + (((out_pitch[0] - out_pitch[0]) + ((x10 - x10) + (x21 - x21))) + ((x34 - x34) + ((x40 - x40) + (x19 - x19)))));
+        const double finite = ((((x13 - x13) + ((x14 - x14) + (x24 - x24))) + ((x29 - x29) + ((x35 - x35) + (x39 - x39)))) + (((out_pitch[0] - out_pitch[0]) + ((x12 - x12) + (x23 - x23))) + ((x34 - x34) + ((x38 - x38) + (x21 - x21)))));
         singular |= finite != finite;
     }
     return singular;

@@ -5,7 +5,7 @@
 # template: array_kernel.py.j2
 # math hash: sha256:24c2ead304ca194c
 # sympy 1.14.0, rigidsym 0.2.0
-# operations: 589
+# operations: 565
 # branches: near_pi_0, near_pi_1, near_pi_2, main
 # accuracy rewrite (main): the axis point from the skew part of Q: (Q - 1)^T (Q a - a') reads
 #     the diagonal of Q, whose rounding is relative u/phi of it as phi -> 0; cot(phi/2)/2 e x
@@ -13,15 +13,7 @@
 #     1 + tr Q does not cancel); worst ratio to the rule max(2 e_best, 4 u) (e_best: the most
 #     accurate of the textbook formula and the forms tried, per point; rigidsym.codegen.rule)
 #     at 17 points of the regimes (rigidsym.codegen.regimes, exact, rounded to float64) a
-#     singular flag -> 0.9, never worse than the textbook formula by that rule; equal to the
-#     declared formula by the zero test (exact-cancel)
-# accuracy rewrite (main): 1 - cos(phi) from the skew part of Q: 3 - tr Q cancels as phi -> 0
-#     and the rounding of the diagonal of Q is relative 1/phi^2 there; the skew part keeps
-#     relative accuracy 1/phi, the condition of the problem (valid where 1 + tr Q does not
-#     cancel: cos phi > -1/2); worst ratio to the rule max(2 e_best, 4 u) (e_best: the most
-#     accurate of the textbook formula and the forms tried, per point; rigidsym.codegen.rule)
-#     at 17 points of the regimes (rigidsym.codegen.regimes, exact, rounded to float64) a
-#     singular flag -> 0.9, never worse than the textbook formula by that rule; equal to the
+#     singular flag -> 0.82, never worse than the textbook formula by that rule; equal to the
 #     declared formula by the zero test (exact-cancel)
 """Screw of a finite displacement: axis, angle, axis point, pitch, Plücker array.
 
@@ -36,7 +28,7 @@ the checked, differentiable API.
 
 import jax.numpy
 
-OPS = 589
+OPS = 565
 MATH_HASH = "24c2ead304ca194c"
 COLUMNS = ("Q_00", "Q_01", "Q_02", "Q_10", "Q_11", "Q_12", "Q_20", "Q_21", "Q_22", "a_0", "a_1", "a_2", "a_prime_0", "a_prime_1", "a_prime_2", )
 
@@ -245,72 +237,70 @@ def _when_near_pi_2(Q_00, Q_01, Q_02, Q_10, Q_11, Q_12, Q_20, Q_21, Q_22, a_0, a
 
 def _main(Q_00, Q_01, Q_02, Q_10, Q_11, Q_12, Q_20, Q_21, Q_22, a_0, a_1, a_2, a_prime_0, a_prime_1, a_prime_2):
     x0 = (0.5)*Q_12
-    x1 = (0.5)*Q_21 - x0
-    x2 = (0.5)*Q_01
-    x3 = (0.5)*Q_10 - x2
-    x4 = (x3*x3)
-    x5 = (0.5)*Q_02
-    x6 = (0.5)*Q_20
-    x7 = x5 - x6
-    x8 = (x7*x7)
-    x9 = (x1*x1)
-    x10 = x4 + x8 + x9
-    x11 = jax.numpy.sqrt(x10)
-    x12 = 1.0/x11
-    x13 = x1*x12
-    x14 = x12*x7
-    x15 = x12*x3
-    x16 = (0.5)*Q_00
-    x17 = (0.5)*Q_11
-    x18 = (0.5)*Q_22
-    x19 = jax.numpy.arctan2(x11, x16 + x17 + x18 - 0.5)
-    x20 = Q_00 + Q_11 + Q_22 + 1.0
-    x21 = 4.0*x4 + 4.0*x8 + 4.0*x9
-    x22 = 1.0/x21
-    x23 = -a_prime_1
-    x24 = Q_10*a_0 + Q_11*a_1 + Q_12*a_2 + x23
-    x25 = -x24
-    x26 = -a_prime_2
-    x27 = Q_20*a_0 + Q_21*a_1 + Q_22*a_2 + x26
-    x28 = -x27
-    x29 = 1.0/x10
+    x1 = -0.5*Q_21 + x0
+    x2 = -x1
+    x3 = (0.5)*Q_01
+    x4 = -0.5*Q_10 + x3
+    x5 = -x4
+    x6 = (x5*x5)
+    x7 = (0.5)*Q_02
+    x8 = (0.5)*Q_20
+    x9 = x7 - x8
+    x10 = (x9*x9)
+    x11 = (x2*x2)
+    x12 = x10 + x11 + x6
+    x13 = jax.numpy.sqrt(x12)
+    x14 = 1.0/x13
+    x15 = x14*x2
+    x16 = x14*x9
+    x17 = x14*x5
+    x18 = (0.5)*Q_00
+    x19 = (0.5)*Q_11
+    x20 = (0.5)*Q_22
+    x21 = jax.numpy.arctan2(x13, x18 + x19 + x20 - 0.5)
+    x22 = Q_00 + Q_11 + Q_22 + 1.0
+    x23 = 4.0*x10 + 4.0*x11 + 4.0*x6
+    x24 = 1.0/x23
+    x25 = -a_prime_1
+    x26 = -Q_10*a_0 - Q_11*a_1 - Q_12*a_2 - x25
+    x27 = -a_prime_2
+    x28 = -Q_20*a_0 - Q_21*a_1 - Q_22*a_2 - x27
+    x29 = 1.0/x12
     x30 = -a_prime_0
-    x31 = Q_00*a_0 + Q_01*a_1 + Q_02*a_2 + x30
-    x32 = -x31
-    x33 = (0.5)*x29*(x1*x32 + x25*x7 + x28*x3)
-    x34 = x29*x4 + x29*x8 + x29*x9
-    x35 = 1.0/jax.numpy.sqrt(x34)
-    x36 = x13*x35
-    x37 = x14*x35
-    x38 = x15*x35
-    x39 = Q_01*x31 + Q_21*x27 + x24*(Q_11 - 1.0)
-    x40 = ((-Q_01 + Q_10)*(-Q_01 + Q_10)) + ((Q_02 - Q_20)*(Q_02 - Q_20)) + ((-Q_12 + Q_21)*(-Q_12 + Q_21))
-    x41 = 1.0/x40
-    x42 = x20*x41
-    x43 = x38*x42
-    x44 = Q_02*x31 + Q_12*x24 + x27*(Q_22 - 1.0)
-    x45 = Q_10*x24 + Q_20*x27 + x31*(Q_00 - 1.0)
+    x31 = -Q_00*a_0 - Q_01*a_1 - Q_02*a_2 - x30
+    x32 = x2*x31 + x26*x9 + x28*x5
+    x33 = -a_0*x18 - a_1*x3 - a_2*x7 + (0.5)*a_prime_0 - 0.5*x2*x29*x32 + x22*x24*(-x26*x5 + x28*x9)
+    x34 = 2.0*x10 + 2.0*x11 + 2.0*x6
+    x35 = x32/x34
+    x36 = -0.5*Q_10*a_0 - a_1*x19 - a_2*x0 + (0.5)*a_prime_1 + x22*x24*(-x2*x28 + x31*x5) - x35*x9
+    x37 = -0.5*Q_21*a_1 - a_0*x8 - a_2*x20 + (0.5)*a_prime_2 + x22*x24*(x2*x26 - x31*x9) - x35*x5
+    x38 = x10*x29 + x11*x29 + x29*x6
+    x39 = 1.0/jax.numpy.sqrt(x38)
+    x40 = x15*x39
+    x41 = x16*x39
+    x42 = x17*x39
+    x43 = x14*x39
     return (
-        x13,
-        x14,
         x15,
-        x19,
-        -a_0*x16 - a_1*x2 - a_2*x5 + (0.5)*a_prime_0 - x1*x33 + x20*x22*(-x25*x3 + x28*x7),
-        -0.5*Q_10*a_0 - a_1*x17 - a_2*x0 + (0.5)*a_prime_1 + x20*x22*(-x1*x28 + x3*x32) - x33*x7,
-        -0.5*Q_21*a_1 - a_0*x6 - a_2*x18 + (0.5)*a_prime_2 + x20*x22*(x1*x25 - x32*x7) - x3*x33,
-        (x13*(-a_0 - x30) + x14*(-a_1 - x23) + x15*(-a_2 - x26))/x19,
+        x16,
+        x17,
+        x21,
+        x33,
         x36,
         x37,
-        x38,
-        -x37*x42*x44 + x39*x43,
-        x1*x12*x20*x35*x41*x44 - x43*x45,
-        -x36*x39*x42 + x37*x42*x45,
-    ), (
-        x34,
+        (x15*(-a_0 - x30) + x16*(-a_1 - x25) + x17*(-a_2 - x27))/x21,
         x40,
-        x10,
+        x41,
+        x42,
+        x36*x42 - x37*x43*x9,
+        x33*x4*x43 + x37*x40,
+        x1*x36*x43 + x33*x41,
+    ), (
+        x38,
+        x12,
+        x34,
+        x23,
         x21,
-        x19,
     )
 
 

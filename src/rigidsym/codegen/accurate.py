@@ -121,12 +121,13 @@ def _axis_point_from_skew(flat, ctx):
             c = ap - Q * a
             vv = v.dot(v)
             new = (1 + Q.trace()) / (4 * vv) * v.cross(c) + (c - v * (v.dot(c) / vv)) / 2
-            for i in range(3):
-                if any(e.has(old[i]) for e in flat):
-                    reps[old[i]] = new[i]
+            if any(e.has(old[i]) for e in flat for i in range(3)):
+                reps.update(zip(old, new, strict=True))
     if not reps:
         return None
-    return [e.xreplace(reps) for e in flat], list(reps.items())
+    # subs, not xreplace: in the Plücker moment p0 x e a component of p0 is a factor of a
+    # larger product (sympy flattens Mul), which only subs finds
+    return [e.subs(reps) if e.has(om) else e for e in flat], list(reps.items())
 
 
 def _compensated(n):

@@ -270,13 +270,17 @@ def accuracy(name: str) -> dict:
 
     Returns:
         dict: a new one each call, with ``"float64"`` and ``"float32"``, each ``{"bound",
-        "regime", "kappa", "err", "ulps", "flagged", "beyond", "spurious"}``, where the
-        normwise relative error of every output is at most ``bound * u * (kappa + 1)``
-        (``u`` the unit roundoff, ``kappa`` the condition number on the inputs' tangent
-        space), attained in ``regime`` (``kappa`` and ``err`` there), ``ulps`` the worst
-        componentwise error; ``regimes`` swept; ``accurate`` (every regime within
-        ``8 u (kappa + 1)``); ``singular`` (the set) and ``threshold`` (where a sample is
-        flagged, in units of the input).
+        "regime", "kappa", "err", "ulps", "flagged", "beyond", "spurious", "rule",
+        "backends"}``, where the normwise relative error of every output is at most
+        ``bound * u * (kappa + 1)`` (``u`` the unit roundoff, ``kappa`` the condition number
+        on the inputs' tangent space), attained in ``regime`` (``kappa`` and ``err`` there),
+        ``ulps`` the worst componentwise error, ``rule`` the worst ratio to issue 37's rule
+        (``err <= 8 u (kappa + 1)`` and ``err <= max(2 e_ref, 4 u)``, ``e_ref`` the smallest
+        error of the textbook formula and of the peers: ``docs/accuracy.md``), ``backends``
+        per back-end ``{"err_u", "vs_ref", "vs_ref_where", "rule"}`` (the worst error in u,
+        the worst ratio to ``e_ref`` where ``e_ref > 2 u`` and where); ``regimes`` swept;
+        ``accurate`` (every regime within the rule); ``singular`` (the set) and
+        ``threshold`` (where a sample is flagged, in units of the input).
 
     Raises:
         TypeError: ``name`` is not a ``str``.
