@@ -83,12 +83,30 @@ def _se3_near_pi(T, k):
     return {"xi": sp.Matrix.vstack(w, Ji * T[:3, 3])}
 
 
-_SE3_BRANCHES = tuple(
+def _se3_small(T):
+    # theta < pi/2: u = vect(R), s = |u| = sin theta, theta = asin s, w = (theta / s) u and
+    # v = J_l(w)^-1 p = p - (theta/s)/2 u x p + c(theta) (theta/s)^2 u x (u x p), where
+    # c(theta) = 1/theta^2 - sin theta / (2 theta (1 - cos theta)) = 1/theta^2 - (1 + cos
+    # theta) / (2 theta sin theta) and cos theta = sqrt(1 - s^2): c (theta/s)^2 = (2 s -
+    # asin(s) (1 + sqrt(1 - s^2))) / (2 s^3), removable at s = 0 (codegen.removable)
+    R, p = T[:3, :3], T[:3, 3]
+    u = vect(R)
+    s = sp.sqrt((u.T * u)[0])
+    a = sp.asin(s) / s
+    g = (2 * s - sp.asin(s) * (1 + sp.sqrt(1 - s**2))) / (2 * s**3)
+    up = u.cross(p)
+    return {"xi": sp.Matrix.vstack(a * u, p - a / 2 * up + g * u.cross(up))}
+
+
+_SE3_BRANCHES = (*(
     Branch(f"near_pi_{k}", lambda T, k=k: _log_when(T[:3, :3], k),
            lambda T, k=k: _se3_near_pi(T, k),
            doc=f"cos(phi) < -1/2, R[{k},{k}] the largest diagonal entry: w from column {k} "
                "of the symmetric part of R")
-    for k in range(3))
+    for k in range(3)),
+    Branch("small", lambda T: _log_small_when(T[:3, :3]), _se3_small,
+           doc="phi < pi/2: w = (asin s / s) vect(R), s = |vect(R)|, and v in s alone "
+               "(no acos): smooth at T = 1"))
 
 
 def _er_main(Q):
@@ -116,12 +134,12 @@ def _er_when(Q, k):
 
 LIE_KERNELS = [
     Kernel(name="rotation_from_rotation_vector", summary="Exp of so(3): the rotation of w.",
-           formula="Q = 1 + (sin t / t) [w] + ((1 - cos t) / t^2) [w]^2, t = |w|",
+           formula="Q = 1 + (sin t / t) [w] + ((1 - cos t) / t^2) [w]^2, t = norm of w",
            ids=_IDS["so3"], sources=(_LM + "rotation_from_rotation_vector",), args=(W,),
            outputs=(Out("Q", (3, 3), "rotation matrix"),),
            build=_call("Q", "rotation_from_rotation_vector")),
     Kernel(name="rotation_vector_from_rotation", summary="Log of SO(3): the rotation vector "
-           "w = phi e of Q, |w| in [0, pi].",
+           "w = phi e of Q, phi in [0, pi].",
            formula="w = (phi / sin phi) vect(Q); asin near 0, the symmetric part near pi",
            ids=_IDS["so3"], sources=(_LM + "rotation_vector_from_rotation",), args=(Q_ARG,),
            outputs=(Out("w", (3,), "rotation vector [rad]"),), build=_log_main,
@@ -134,7 +152,7 @@ LIE_KERNELS = [
              ids=_IDS["jac"], sources=(_LM + f"rotation_vector_{side}_jacobian{inv}",),
              args=(W,), outputs=(Out("J", (3, 3), ""),),
              build=_call("J", f"rotation_vector_{side}_jacobian{inv}"),
-             singular="|w| = 2 pi k, k != 0" if inv else "")
+             singular="theta = 2 pi k, k != 0 (theta = norm of w)" if inv else "")
       for side in ("left", "right") for inv in ("", "_inverse")],
     Kernel(name="transform_from_exponential_coordinates",
            summary="Exp of se(3): the transform of xi = [w; v].",
@@ -150,20 +168,20 @@ LIE_KERNELS = [
              ids=_IDS["se3jac"], sources=(_LM + f"exponential_coordinates_left_jacobian{inv}",),
              args=(XI,), outputs=(Out("J", (6, 6), ""),),
              build=_call("J", f"exponential_coordinates_left_jacobian{inv}"),
-             singular="|w| = 2 pi k, k != 0" if inv else "",
+             singular="theta = 2 pi k, k != 0 (theta = norm of w)" if inv else "",
              # the derivative of a 6 x 6 Jacobian (216 entries of degree 5) is seldom
              # wanted and costs minutes of generation: none
              jacobian=False)
       for inv in ("", "_inverse")],
     Kernel(name="exponential_coordinates_from_transform",
-           summary="Log of SE(3): the exponential coordinates xi = [w; v] of T, |w| in "
+           summary="Log of SE(3): the exponential coordinates xi = [w; v] of T, norm of w in "
                    "[0, pi].",
-           formula="w = Log(R), v = J_l(w)^-1 p", ids=_IDS["se3"],
+           formula="w = Log(R), v = J_l(w)^-1 p; below pi/2 in s = norm of vect(R) alone "
+                   "(asin, sqrt(1 - s^2)), near pi the symmetric part of R", ids=_IDS["se3"],
            sources=(_LM + "exponential_coordinates_from_transform",), args=(T_ARG,),
            outputs=(Out("xi", (6,), "[w; v]"),),
            build=lambda T: {"xi": formula(_LM + "exponential_coordinates_from_transform")(T)},
-           branches=_SE3_BRANCHES, singular="phi = 0 (the main formula's 0/0)",
-           singular_arg="T",
+           branches=_SE3_BRANCHES,
            notes="T is not validated (its rotation block is read as a rotation)."),
     Kernel(name="euler_rodrigues_from_rotation",
            summary="The Euler-Rodrigues parameters eta = [r; r0] of Q, r0 >= 0.",

@@ -30,6 +30,14 @@ def test_series_exact_and_even():
     assert c[:2] == (Fraction(-1, 3), Fraction(1, 30))
 
 
+def test_series_of_a_root():
+    # the SE(3) log's g(s) = c(t) (t/s)^2 with s = sin t (c the inverse Jacobian's
+    # coefficient 1/12 + t^2/720 + ..., t^2/s^2 = 1 + s^2/3 + ...): 1/12 + 7 s^2/240 + ...
+    g = (2 * S - sp.asin(S) * (1 + sp.sqrt(1 - S**2))) / (2 * S**3)
+    ser = series_of(g)
+    assert ser.coeffs[:2] == (Fraction(1, 12), Fraction(7, 240)) and ser.rho == 0.5
+
+
 @pytest.mark.parametrize("h", [sp.sin(S) / S**2, sp.cos(S) / S**2, sp.sin(S)])
 def test_no_limit_or_odd_is_refused(h):
     with pytest.raises(NotRemovable):

@@ -4,10 +4,10 @@
  * source: rigidsym.derivations.lie_maps.exponential_coordinates_from_transform (composed in rigidsym.derivations.kernels_spec)
  * equations: (sola:exp-se3), (sola:log-exp-se3)
  * template: c_kernel.c.j2
- * math hash: sha256:0ea5162c1b71e714
+ * math hash: sha256:fd5941b387755b57
  * sympy 1.14.0, rigidsym 0.2.0
- * operations: 425
- * branches: near_pi_0, near_pi_1, near_pi_2, main
+ * operations: 651
+ * branches: near_pi_0, near_pi_1, near_pi_2, small, main
  */
 #include "exponential_coordinates_from_transform.h"
 

@@ -4,23 +4,23 @@
  * source: rigidsym.derivations.lie_maps.exponential_coordinates_from_transform (composed in rigidsym.derivations.kernels_spec)
  * equations: (sola:exp-se3), (sola:log-exp-se3)
  * template: c_kernel.h.j2
- * math hash: sha256:0ea5162c1b71e714
+ * math hash: sha256:fd5941b387755b57
  * sympy 1.14.0, rigidsym 0.2.0
- * operations: 425
- * branches: near_pi_0, near_pi_1, near_pi_2, main
+ * operations: 651
+ * branches: near_pi_0, near_pi_1, near_pi_2, small, main
  *
- * Log of SE(3): the exponential coordinates xi = [w; v] of T, |w| in [0, pi].
- * w = Log(R), v = J_l(w)^-1 p
- * Singular set: phi = 0 (the main formula's 0/0)
+ * Log of SE(3): the exponential coordinates xi = [w; v] of T, norm of w in [0, pi].
+ * w = Log(R), v = J_l(w)^-1 p; below pi/2 in s = norm of vect(R) alone (asin, sqrt(1 - s^2)), near pi the symmetric part of R
  *
  * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
- * measured at generation, rigidsym.codegen.float32; worst error 0.803 of what
+ * measured at generation, rigidsym.codegen.float32; worst error 0.931 of what
  * the rule of issue 37 allows, max(2 e_textbook, 4 u), per output, normwise, at its
  * points). In double:
  *   branch 1: none
  *   branch 2: none
  *   branch 3: none
  *   branch 4: none
+ *   branch 5: none
  */
 #ifndef RIGIDSYM_EXPONENTIAL_COORDINATES_FROM_TRANSFORM_H
 #define RIGIDSYM_EXPONENTIAL_COORDINATES_FROM_TRANSFORM_H
@@ -204,6 +204,36 @@ static inline int rigidsym_exponential_coordinates_from_transform_sample(
          * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
         const double finite = ((((x14 - x14) + (x15 - x15)) + ((x20 - x20) + (x27 - x27))) + (((x29 - x29) + (((x11*x11) + (x12*x12) + (x13*x13)) - ((x11*x11) + (x12*x12) + (x13*x13)))) + ((x10 - x10) + ((x26 - x26) + (x28 - x28)))));
         singular |= finite != finite;
+    } else if (T_00 + T_11 + T_22 > 1.0) {
+        const double x0 = (0.5)*T_01;
+        const double x1 = (0.5)*T_02;
+        const double x2 = (0.5)*T_20;
+        const double x3 = (0.5)*T_12;
+        const double x4 = (((0.5)*T_10 - x0)*((0.5)*T_10 - x0)) + (((0.5)*T_21 - x3)*((0.5)*T_21 - x3)) + ((x1 - x2)*(x1 - x2));
+        const double x5 = ((x4 < 9.0949470177292824e-13) ? (0.16666666666666666*x4 + 1.0) : (((x4 < 9.0949470177292824e-13) ? (1048576.0) : (1.0/sqrt(x4)))*asin(((x4 < 9.0949470177292824e-13) ? (9.5367431640625e-7) : (sqrt(x4))))));
+        const double x6 = (0.25)*x5;
+        const double x7 = T_01*T_13;
+        const double x8 = T_23*x6;
+        const double x9 = ((x4 < 0.0625) ? (x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(0.0034514197801390166*x4 + 0.003893179320463909) + 0.0044379168904392884) + 0.0051226733690270384) + 0.0060035678458904172) + 0.0071693472367731327) + 0.0087679789828227321) + 0.011063263992951492) + 0.014568677849927851) + 0.02041170634920635) + 0.031547619047619047) + 0.058333333333333334) + 0.16666666666666666) : ((-(sqrt(1.0 - ((x4 < 0.0625) ? (0.0625) : (x4))) + 1.0)*asin(((x4 < 0.0625) ? (0.25) : (sqrt(x4)))) + 2.0*((x4 < 0.0625) ? (0.25) : (sqrt(x4))))*((x4 < 0.0625) ? (64.0) : (1.0/(x4*sqrt(x4))))));
+        const double x10 = (0.125)*x9;
+        const double x11 = T_23*x10;
+        const double x12 = T_01*x11;
+        const double x13 = T_13*x10;
+        const double x14 = T_10*x11;
+        const double x15 = T_20*x13;
+        const double x16 = (T_01*T_01);
+        const double x17 = T_03*x10;
+        const double x18 = (T_02*T_02);
+        const double x19 = (T_10*T_10);
+        const double x20 = (T_20*T_20);
+        const double x21 = (T_12*T_12);
+        const double x22 = (T_21*T_21);
+        out_xi[0] = (0.5)*T_21*x5 - x3*x5;
+        out_xi[1] = x1*x5 - x2*x5;
+        out_xi[2] = (0.5)*T_10*x5 - x0*x5;
+        out_xi[3] = (0.25)*T_01*T_03*T_10*x9 + (0.125)*T_01*T_12*T_23*x9 + (0.25)*T_02*T_03*T_20*x9 - T_02*T_12*x13 + (0.125)*T_02*T_13*T_21*x9 - T_02*x8 + T_03 + (0.25)*T_10*T_13*x5 + (0.125)*T_10*T_21*T_23*x9 + (0.125)*T_12*T_13*T_20*x9 - T_12*x14 + (0.25)*T_20*T_23*x5 - T_21*x12 - T_21*x15 - x16*x17 - x17*x18 - x17*x19 - x17*x20 - x6*x7;
+        out_xi[4] = (0.25)*T_01*T_03*x5 + (0.25)*T_01*T_10*T_13*x9 + (0.125)*T_01*T_20*T_23*x9 + (0.125)*T_02*T_03*T_21*x9 + (0.125)*T_02*T_10*T_23*x9 - T_02*T_12*x17 - T_02*x12 - T_03*T_10*x6 + (0.125)*T_03*T_12*T_20*x9 + (0.25)*T_12*T_13*T_21*x9 - T_12*x8 + T_13 - T_20*T_21*x17 - T_20*x14 + (0.25)*T_21*T_23*x5 - x13*x16 - x13*x19 - x13*x21 - x13*x22;
+        out_xi[5] = (0.125)*T_01*T_03*T_12*x9 + (0.125)*T_01*T_13*T_20*x9 - T_01*T_21*x17 + (0.25)*T_02*T_03*x5 + (0.125)*T_02*T_10*T_13*x9 + (0.25)*T_02*T_20*T_23*x9 - T_02*x10*x7 + (0.125)*T_03*T_10*T_21*x9 - T_03*T_20*x6 - T_10*T_12*x17 - T_10*x15 + (0.25)*T_12*T_13*x5 + (0.25)*T_12*T_21*T_23*x9 - T_13*T_21*x6 + T_23 - x11*x18 - x11*x20 - x11*x21 - x11*x22;
     } else {
         const double x0 = -0.5*T_12 + (0.5)*T_21;
         const double x1 = acos((0.5)*T_00 + (0.5)*T_11 + (0.5)*T_22 - 0.5);
@@ -420,6 +450,36 @@ static inline int rigidsym_exponential_coordinates_from_transform_sample_f32(
         singular |= (((double)x10)) == 0.0;
         const double finite = ((((x14 - x14) + (x15 - x15)) + ((x20 - x20) + (x27 - x27))) + (((x29 - x29) + (((x11*x11) + (x12*x12) + (x13*x13)) - ((x11*x11) + (x12*x12) + (x13*x13)))) + ((x10 - x10) + ((x26 - x26) + (x28 - x28)))));
         singular |= finite != finite;
+    } else if (((double)T_00) + ((double)T_11) + ((double)T_22) > 1.0) {
+        const float x0 = (0.5f)*T_01;
+        const float x1 = (0.5f)*T_02;
+        const float x2 = (0.5f)*T_20;
+        const float x3 = (0.5f)*T_12;
+        const float x4 = (((0.5f)*T_10 - x0)*((0.5f)*T_10 - x0)) + (((0.5f)*T_21 - x3)*((0.5f)*T_21 - x3)) + ((x1 - x2)*(x1 - x2));
+        const float x5 = ((x4 < 9.094947017729282e-13f) ? (0.1666666716337204f*x4 + 1.0f) : (((x4 < 9.094947017729282e-13f) ? (1048576.0f) : (1.0f/sqrtf(x4)))*asin(((x4 < 9.094947017729282e-13f) ? (9.5367431640625e-07f) : (sqrtf(x4))))));
+        const float x6 = (0.25f)*x5;
+        const float x7 = T_01*T_13;
+        const float x8 = T_23*x6;
+        const float x9 = ((x4 < 0.0625f) ? (x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(0.003451419761404395f*x4 + 0.003893179353326559f) + 0.004437916912138462f) + 0.005122673232108355f) + 0.006003567948937416f) + 0.007169347256422043f) + 0.008767979219555855f) + 0.01106326375156641f) + 0.014568678103387356f) + 0.02041170559823513f) + 0.03154762089252472f) + 0.05833333358168602f) + 0.1666666716337204f) : ((-(sqrt(1.0f - ((x4 < 0.0625f) ? (0.0625f) : (x4))) + 1.0f)*asin(((x4 < 0.0625f) ? (0.25f) : (sqrtf(x4)))) + 2.0f*((x4 < 0.0625f) ? (0.25f) : (sqrtf(x4))))*((x4 < 0.0625f) ? (64.0f) : (1.0f/(x4*sqrt(x4))))));
+        const float x10 = (0.125f)*x9;
+        const float x11 = T_23*x10;
+        const float x12 = T_01*x11;
+        const float x13 = T_13*x10;
+        const float x14 = T_10*x11;
+        const float x15 = T_20*x13;
+        const float x16 = (T_01*T_01);
+        const float x17 = T_03*x10;
+        const float x18 = (T_02*T_02);
+        const float x19 = (T_10*T_10);
+        const float x20 = (T_20*T_20);
+        const float x21 = (T_12*T_12);
+        const float x22 = (T_21*T_21);
+        out_xi[0] = (0.5f)*T_21*x5 - x3*x5;
+        out_xi[1] = x1*x5 - x2*x5;
+        out_xi[2] = (0.5f)*T_10*x5 - x0*x5;
+        out_xi[3] = (0.25f)*T_01*T_03*T_10*x9 + (0.125f)*T_01*T_12*T_23*x9 + (0.25f)*T_02*T_03*T_20*x9 - T_02*T_12*x13 + (0.125f)*T_02*T_13*T_21*x9 - T_02*x8 + T_03 + (0.25f)*T_10*T_13*x5 + (0.125f)*T_10*T_21*T_23*x9 + (0.125f)*T_12*T_13*T_20*x9 - T_12*x14 + (0.25f)*T_20*T_23*x5 - T_21*x12 - T_21*x15 - x16*x17 - x17*x18 - x17*x19 - x17*x20 - x6*x7;
+        out_xi[4] = (0.25f)*T_01*T_03*x5 + (0.25f)*T_01*T_10*T_13*x9 + (0.125f)*T_01*T_20*T_23*x9 + (0.125f)*T_02*T_03*T_21*x9 + (0.125f)*T_02*T_10*T_23*x9 - T_02*T_12*x17 - T_02*x12 - T_03*T_10*x6 + (0.125f)*T_03*T_12*T_20*x9 + (0.25f)*T_12*T_13*T_21*x9 - T_12*x8 + T_13 - T_20*T_21*x17 - T_20*x14 + (0.25f)*T_21*T_23*x5 - x13*x16 - x13*x19 - x13*x21 - x13*x22;
+        out_xi[5] = (0.125f)*T_01*T_03*T_12*x9 + (0.125f)*T_01*T_13*T_20*x9 - T_01*T_21*x17 + (0.25f)*T_02*T_03*x5 + (0.125f)*T_02*T_10*T_13*x9 + (0.25f)*T_02*T_20*T_23*x9 - T_02*x10*x7 + (0.125f)*T_03*T_10*T_21*x9 - T_03*T_20*x6 - T_10*T_12*x17 - T_10*x15 + (0.25f)*T_12*T_13*x5 + (0.25f)*T_12*T_21*T_23*x9 - T_13*T_21*x6 + T_23 - x11*x18 - x11*x20 - x11*x21 - x11*x22;
     } else {
         const float x0 = -0.5f*T_12 + (0.5f)*T_21;
         const float x1 = acos((0.5f)*T_00 + (0.5f)*T_11 + (0.5f)*T_22 - 0.5f);

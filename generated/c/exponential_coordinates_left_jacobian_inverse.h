@@ -10,7 +10,7 @@
  *
  * The left Jacobian inverse of SE(3) at xi = [w; v] (6 x 6, angular first).
  * the block inverse of [[J_l, 0], [Q, J_l]]
- * Singular set: |w| = 2 pi k, k != 0
+ * Singular set: theta = 2 pi k, k != 0 (theta = norm of w)
  *
  * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
  * measured at generation, rigidsym.codegen.float32; worst error 0.999 of what

@@ -9,7 +9,7 @@
  * operations: 31
  *
  * Exp of so(3): the rotation of w.
- * Q = 1 + (sin t / t) [w] + ((1 - cos t) / t^2) [w]^2, t = |w|
+ * Q = 1 + (sin t / t) [w] + ((1 - cos t) / t^2) [w]^2, t = norm of w
  *
  * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
  * measured at generation, rigidsym.codegen.float32; worst error 0.82 of what

@@ -9,7 +9,7 @@
  * operations: 131
  *
  * Exp of so(3): the rotation of w, with the Jacobians of its outputs.
- * Q = 1 + (sin t / t) [w] + ((1 - cos t) / t^2) [w]^2, t = |w|; and d(output)/d(input) by sympy on the declared formula
+ * Q = 1 + (sin t / t) [w] + ((1 - cos t) / t^2) [w]^2, t = norm of w; and d(output)/d(input) by sympy on the declared formula
  *
  * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
  * measured at generation, rigidsym.codegen.float32; worst error 0.918 of what

@@ -10,7 +10,7 @@
  *
  * The right Jacobian inverse of SO(3) at w, with the Jacobians of its outputs.
  * J_r^-1(w), Solà et al. 2018 App. B; and d(output)/d(input) by sympy on the declared formula
- * Singular set: |w| = 2 pi k, k != 0
+ * Singular set: theta = 2 pi k, k != 0 (theta = norm of w)
  *
  * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
  * measured at generation, rigidsym.codegen.float32; worst error 0.575 of what

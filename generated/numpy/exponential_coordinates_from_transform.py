@@ -3,13 +3,13 @@
 # source: rigidsym.derivations.lie_maps.exponential_coordinates_from_transform (composed in rigidsym.derivations.kernels_spec)
 # equations: (sola:exp-se3), (sola:log-exp-se3)
 # template: numpy_kernel.py.j2
-# math hash: sha256:0ea5162c1b71e714
+# math hash: sha256:fd5941b387755b57
 # sympy 1.14.0, rigidsym 0.2.0
-# operations: 425
-# branches: near_pi_0, near_pi_1, near_pi_2, main
-"""Log of SE(3): the exponential coordinates xi = [w; v] of T, |w| in [0, pi].
+# operations: 651
+# branches: near_pi_0, near_pi_1, near_pi_2, small, main
+"""Log of SE(3): the exponential coordinates xi = [w; v] of T, norm of w in [0, pi].
 
-w = Log(R), v = J_l(w)^-1 p
+w = Log(R), v = J_l(w)^-1 p; below pi/2 in s = norm of vect(R) alone (asin, sqrt(1 - s^2)), near pi the symmetric part of R
 
 Low-level generated NumPy kernel: inputs are C-contiguous float64 ``(n, ...)`` arrays,
 outputs are written into preallocated C-contiguous ``(n, ...)`` arrays; the return value is
@@ -20,8 +20,8 @@ the ``(n,)`` uint8 array of flags: 0 fine, ``SINGULAR`` (a denominator is exactl
 
 import numpy
 
-OPS = 425
-MATH_HASH = "0ea5162c1b71e714"
+OPS = 651
+MATH_HASH = "fd5941b387755b57"
 #: sample flags returned by the batch function
 SINGULAR, NONFINITE = 1, 2
 
@@ -216,6 +216,42 @@ def _near_pi_2(T_00, T_01, T_02, T_03, T_10, T_11, T_12, T_13, T_20, T_21, T_22,
     )
 
 
+def _small(T_00, T_01, T_02, T_03, T_10, T_11, T_12, T_13, T_20, T_21, T_22, T_23, T_30, T_31, T_32, T_33):
+    x0 = (0.5)*T_01
+    x1 = (0.5)*T_02
+    x2 = (0.5)*T_20
+    x3 = (0.5)*T_12
+    x4 = (((0.5)*T_10 - x0)*((0.5)*T_10 - x0)) + (((0.5)*T_21 - x3)*((0.5)*T_21 - x3)) + ((x1 - x2)*(x1 - x2))
+    x5 = numpy.where(numpy.less(x4, 9.0949470177292824e-13), 0.16666666666666666*x4 + 1.0, numpy.where(numpy.less(x4, 9.0949470177292824e-13), 1048576.0, 1.0/numpy.sqrt(x4))*numpy.arcsin(numpy.where(numpy.less(x4, 9.0949470177292824e-13), 9.5367431640625e-7, numpy.sqrt(x4))))
+    x6 = (0.25)*x5
+    x7 = T_01*T_13
+    x8 = T_23*x6
+    x9 = numpy.where(numpy.less(x4, 0.0625), x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(0.0034514197801390166*x4 + 0.003893179320463909) + 0.0044379168904392884) + 0.0051226733690270384) + 0.0060035678458904172) + 0.0071693472367731327) + 0.0087679789828227321) + 0.011063263992951492) + 0.014568677849927851) + 0.02041170634920635) + 0.031547619047619047) + 0.058333333333333334) + 0.16666666666666666, (-(numpy.sqrt(1 - numpy.where(numpy.less(x4, 0.0625), 0.0625, x4)) + 1)*numpy.arcsin(numpy.where(numpy.less(x4, 0.0625), 0.25, numpy.sqrt(x4))) + 2*numpy.where(numpy.less(x4, 0.0625), 0.25, numpy.sqrt(x4)))*numpy.where(numpy.less(x4, 0.0625), 64.0, 1.0/(x4*numpy.sqrt(x4))))
+    x10 = (0.125)*x9
+    x11 = T_23*x10
+    x12 = T_01*x11
+    x13 = T_13*x10
+    x14 = T_10*x11
+    x15 = T_20*x13
+    x16 = (T_01*T_01)
+    x17 = T_03*x10
+    x18 = (T_02*T_02)
+    x19 = (T_10*T_10)
+    x20 = (T_20*T_20)
+    x21 = (T_12*T_12)
+    x22 = (T_21*T_21)
+    return (
+        (0.5)*T_21*x5 - x3*x5,
+        x1*x5 - x2*x5,
+        (0.5)*T_10*x5 - x0*x5,
+        (0.25)*T_01*T_03*T_10*x9 + (0.125)*T_01*T_12*T_23*x9 + (0.25)*T_02*T_03*T_20*x9 - T_02*T_12*x13 + (0.125)*T_02*T_13*T_21*x9 - T_02*x8 + T_03 + (0.25)*T_10*T_13*x5 + (0.125)*T_10*T_21*T_23*x9 + (0.125)*T_12*T_13*T_20*x9 - T_12*x14 + (0.25)*T_20*T_23*x5 - T_21*x12 - T_21*x15 - x16*x17 - x17*x18 - x17*x19 - x17*x20 - x6*x7,
+        (0.25)*T_01*T_03*x5 + (0.25)*T_01*T_10*T_13*x9 + (0.125)*T_01*T_20*T_23*x9 + (0.125)*T_02*T_03*T_21*x9 + (0.125)*T_02*T_10*T_23*x9 - T_02*T_12*x17 - T_02*x12 - T_03*T_10*x6 + (0.125)*T_03*T_12*T_20*x9 + (0.25)*T_12*T_13*T_21*x9 - T_12*x8 + T_13 - T_20*T_21*x17 - T_20*x14 + (0.25)*T_21*T_23*x5 - x13*x16 - x13*x19 - x13*x21 - x13*x22,
+        (0.125)*T_01*T_03*T_12*x9 + (0.125)*T_01*T_13*T_20*x9 - T_01*T_21*x17 + (0.25)*T_02*T_03*x5 + (0.125)*T_02*T_10*T_13*x9 + (0.25)*T_02*T_20*T_23*x9 - T_02*x10*x7 + (0.125)*T_03*T_10*T_21*x9 - T_03*T_20*x6 - T_10*T_12*x17 - T_10*x15 + (0.25)*T_12*T_13*x5 + (0.25)*T_12*T_21*T_23*x9 - T_13*T_21*x6 + T_23 - x11*x18 - x11*x20 - x11*x21 - x11*x22,
+    ), (
+    ), (
+    )
+
+
 def _main(T_00, T_01, T_02, T_03, T_10, T_11, T_12, T_13, T_20, T_21, T_22, T_23, T_30, T_31, T_32, T_33):
     x0 = -0.5*T_12 + (0.5)*T_21
     x1 = numpy.arccos((0.5)*T_00 + (0.5)*T_11 + (0.5)*T_22 - 0.5)
@@ -331,6 +367,19 @@ def _block(T, out_xi):
         if _idx.size:
             _rest &= ~_hit
             _vals, _dens, _risky = _near_pi_2(*(_c[_idx] for _c in _cols))
+            _store(_outs, _vals, _idx)
+            _bad[_idx] = False
+            _nf[_idx] = False
+            for _d in _dens:
+                _bad[_idx] |= numpy.equal(_d, 0.0)
+            for _r in _risky:
+                _nf[_idx] |= ~numpy.isfinite(_r)
+        T_00, T_01, T_02, T_03, T_10, T_11, T_12, T_13, T_20, T_21, T_22, T_23, T_30, T_31, T_32, T_33, = _cols
+        _hit = numpy.logical_and(_rest, numpy.greater(T_00 + T_11 + T_22, 1))
+        _idx = numpy.flatnonzero(_hit)
+        if _idx.size:
+            _rest &= ~_hit
+            _vals, _dens, _risky = _small(*(_c[_idx] for _c in _cols))
             _store(_outs, _vals, _idx)
             _bad[_idx] = False
             _nf[_idx] = False

@@ -8,7 +8,7 @@
 # operations: 131
 """Exp of so(3): the rotation of w, with the Jacobians of its outputs.
 
-Q = 1 + (sin t / t) [w] + ((1 - cos t) / t^2) [w]^2, t = |w|; and d(output)/d(input) by sympy on the declared formula
+Q = 1 + (sin t / t) [w] + ((1 - cos t) / t^2) [w]^2, t = norm of w; and d(output)/d(input) by sympy on the declared formula
 
 Low-level generated NumPy kernel: inputs are C-contiguous float64 ``(n, ...)`` arrays,
 outputs are written into preallocated C-contiguous ``(n, ...)`` arrays; the return value is

@@ -8,7 +8,7 @@
 # operations: 31
 """Exp of so(3): the rotation of w.
 
-Q = 1 + (sin t / t) [w] + ((1 - cos t) / t^2) [w]^2, t = |w|
+Q = 1 + (sin t / t) [w] + ((1 - cos t) / t^2) [w]^2, t = norm of w
 
 Low-level generated PyTorch program: each function
 takes one array per scalar input component (``COLUMNS``, broadcast to one batch shape) and

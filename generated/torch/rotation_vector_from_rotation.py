@@ -7,7 +7,7 @@
 # sympy 1.14.0, rigidsym 0.2.0
 # operations: 195
 # branches: near_pi_0, near_pi_1, near_pi_2, small, main
-"""Log of SO(3): the rotation vector w = phi e of Q, |w| in [0, pi].
+"""Log of SO(3): the rotation vector w = phi e of Q, phi in [0, pi].
 
 w = (phi / sin phi) vect(Q); asin near 0, the symmetric part near pi
 

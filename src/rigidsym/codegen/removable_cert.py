@@ -5,11 +5,12 @@ threshold ``t*`` of the branch ``t < t* -> sum_k c_k t^k`` with its error bounde
 and rounding included, over the whole interval ``[0, t*]``.
 
 - Coefficients: the series of numerator and denominator from the Taylor series of ``sin``,
-  ``cos``, ``asin``, summed and multiplied truncated in :class:`fractions.Fraction`, divided
-  as power series, and checked against ``sympy.series`` of numerator and denominator
-  (``N = c D`` to twelve orders past the leading one); the odd ones must vanish (``h`` even)
-  and so must the numerator's below the denominator's order (a finite limit). Nothing in
-  floating point.
+  ``cos``, ``asin`` and of a root of a polynomial ``1 + ...`` (``sqrt(1 - s^2)``, by Miller's
+  recurrence; its radius half its base's nearest zero), summed and multiplied truncated in
+  :class:`fractions.Fraction`, divided as power series, and checked against
+  ``sympy.series`` of numerator and denominator (``N = c D`` to twelve orders past the
+  leading one); the odd ones must vanish (``h`` even) and so must the numerator's below the
+  denominator's order (a finite limit). Nothing in floating point.
 - Remainder: the exact ``|c_k|`` for ten more terms, then Cauchy's estimate ``|c_k| <= M /
   rho^k`` with ``M`` an upper bound of ``|h|`` on ``|s|^2 = rho`` by complex balls
   (python-flint's ``acb``, the ball arithmetic of :mod:`rigidsym.checking.deciding.balls`)
@@ -109,6 +110,14 @@ def _poly_series(e, n):
         for _ in range(int(e.exp)):
             out = _mul_series(out, b, n)
         return out
+    if isinstance(e, sp.Pow) and e.exp.is_Rational:   # a root (1 - s^2)^(1/2): b(0) = 1
+        b, a = _poly_series(e.base, n), Fraction(int(e.exp.p), int(e.exp.q))
+        if b[0] != 1:
+            raise NotRemovable(f"{e}: a root of a series not 1 at s = 0")
+        y = [Fraction(1)] + [Fraction(0)] * (n - 1)
+        for m in range(1, n):      # J. C. P. Miller's recurrence for b^a (y' b = a b' y)
+            y[m] = sum((a * k - (m - k)) * b[k] * y[m - k] for k in range(1, m + 1)) / m
+        return y
     if type(e) in (sp.sin, sp.cos, sp.asin) and e.args[0].free_symbols == {S}:
         k = e.args[0] / S
         if k.is_Rational and (type(e) is not sp.asin or k == 1):
@@ -148,12 +157,19 @@ def _singular_radius(D) -> float:
 
 
 def _numerator_radius(N) -> float:
+    best = float("inf")
     for fn in N.atoms(sp.Function):
         if isinstance(fn, sp.asin) and fn.args[0] == S:
-            return 0.5          # asin's branch points at s = +-1 (t = 1)
-        if not isinstance(fn, sp.sin | sp.cos) or not (fn.args[0] / S).is_Rational:
+            best = min(best, 0.5)   # asin's branch points at s = +-1 (t = 1)
+        elif not isinstance(fn, sp.sin | sp.cos) or not (fn.args[0] / S).is_Rational:
             raise NotRemovable(f"a function {fn} not known to be entire in s")
-    return float("inf")
+    for p in N.atoms(sp.Pow):
+        if not p.exp.is_Integer and p.has(S):   # a root: half its base's nearest zero
+            if not p.base.is_polynomial(S) or p.base.subs(S, 0) == 0:
+                raise NotRemovable(f"a root {p} not analytic at s = 0")
+            zs = [abs(complex(r)) ** 2 for r in sp.Poly(p.base, S).nroots()]
+            best = min([best, *(z / 2 for z in zs)])
+    return best
 
 
 def _acb(e, s):
@@ -174,6 +190,8 @@ def _acb(e, s):
     if isinstance(e, sp.Pow) and e.exp.is_Integer:
         b = _acb(e.base, s)
         return b ** int(e.exp) if e.exp > 0 else 1 / b ** int(-e.exp)
+    if isinstance(e, sp.Pow) and e.exp.is_Rational:  # principal branch: Re base > 0 here
+        return _acb(e.base, s) ** flint.acb(flint.arb(int(e.exp.p)) / int(e.exp.q))
     f = {sp.sin: "sin", sp.cos: "cos", sp.asin: "asin"}.get(type(e))
     if f is None:
         raise NotRemovable(f"cannot bound {e}")
