@@ -66,14 +66,6 @@ def test_rewrite_finds_the_quotients_of_a_derivative():
     assert rewrite([bad])[0] == bad
 
 
-def _need_lie_kernels():
-    from rigidsym import kernels
-
-    if not hasattr(kernels, "transform_from_exponential_coordinates"):
-        pytest.skip("the Lie-group kernels are not in generated/ yet "
-                    "(derivations/kernels_spec_lie.py: KERNELS += LIE_KERNELS, regenerate)")
-
-
 def _ref(fn, x):
     """The formula to 50 digits; at 0 the limit through a point 1e-30 away (the working
     precision grows with the cancellation in its quotients, 6 digits per decade of |w|)."""
@@ -105,7 +97,6 @@ def maps():
                                   "rotation_vector_right_jacobian",
                                   "rotation_vector_left_jacobian_inverse"])
 def test_lie_kernels_smooth_at_zero(maps, name):
-    _need_lie_kernels()
     from rigidsym import kernels
 
     fv, fj = maps[name]

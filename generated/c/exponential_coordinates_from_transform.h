@@ -14,12 +14,13 @@
  * Singular set: phi = 0 (the main formula's 0/0)
  *
  * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
- * measured at generation, rigidsym.codegen.float32; error within 0.978 ulp of float32,
- * normwise, at its points). In double:
- *   branch 1: x12, x17, x29, x37
- *   branch 2: x1, x9, x13, x14, x16, x26, x31
- *   branch 3: x7, x8, x12, x14, x15, x27, xi[4]
- *   branch 4: x1, x2, x3, x5, x7, x10, x16, x17, x18, x25
+ * measured at generation, rigidsym.codegen.float32; worst error 0.803 of what
+ * the rule of issue 37 allows, max(2 e_textbook, 4 u), per output, normwise, at its
+ * points). In double:
+ *   branch 1: none
+ *   branch 2: none
+ *   branch 3: none
+ *   branch 4: none
  */
 #ifndef RIGIDSYM_EXPONENTIAL_COORDINATES_FROM_TRANSFORM_H
 #define RIGIDSYM_EXPONENTIAL_COORDINATES_FROM_TRANSFORM_H
@@ -281,12 +282,12 @@ static inline int rigidsym_exponential_coordinates_from_transform_sample_f32(
         const float x9 = x7 + x8;
         const float x10 = (x9*x9);
         const float x11 = (x3*x3);
-        const double x12 = ((double)x10) + ((double)x11) + ((double)x6);
+        const float x12 = x10 + x11 + x6;
         const float x13 = (0.5f)*T_10 - x4;
         const float x14 = x7 - x8;
         const float x15 = -0.5f*T_12 + (0.5f)*T_21;
         const float x16 = atan2(sqrtf((x13*x13) + (x14*x14) + (x15*x15)), x0 + x1 + x2 - 0.5f);
-        const double x17 = ((double)x16)*((((double)x13)*((double)x9) + ((double)x14)*((double)x5) + ((double)x15)*((double)x3) < 0.0) ? (-1.0) : (1.0))/sqrt(x12);
+        const float x17 = x16*((x13*x9 + x14*x5 + x15*x3 < 0.0f) ? (-1.0f) : (1.0f))/sqrtf(x12);
         const float x18 = x17*x3;
         const float x19 = x17*x5;
         const float x20 = x17*x9;
@@ -298,7 +299,7 @@ static inline int rigidsym_exponential_coordinates_from_transform_sample_f32(
         const float x26 = x10*x24;
         const float x27 = x11*x24;
         const float x28 = x25 + x26 + x27;
-        const double x29 = sqrt(((double)x28));
+        const float x29 = sqrtf(x28);
         const float x30 = 1.0f - cos(x29);
         const float x31 = -0.5f*sin(x29)/(x29*x30) + 1.0f/x28;
         const float x32 = x24*x3*x31;
@@ -306,7 +307,7 @@ static inline int rigidsym_exponential_coordinates_from_transform_sample_f32(
         const float x34 = (0.5f)*x19;
         const float x35 = x25*x31;
         const float x36 = x26*x31 - 1.0f;
-        const double x37 = (0.5)*((double)x18);
+        const float x37 = (0.5f)*x18;
         const float x38 = x24*x31*x5*x9;
         const float x39 = x27*x31;
         out_xi[0] = x18;
@@ -317,12 +318,12 @@ static inline int rigidsym_exponential_coordinates_from_transform_sample_f32(
         out_xi[5] = T_03*(x32*x9 + x34) + T_13*(-x37 + x38) + T_23*(-x35 - x39 + 1.0f);
         singular |= (((double)x30)) == 0.0;
         singular |= (((double)x28)) == 0.0;
-        singular |= (x12) == 0.0;
+        singular |= (((double)x12)) == 0.0;
         const double finite = ((((x16 - x16) + (x17 - x17)) + ((x22 - x22) + (x29 - x29))) + (((x31 - x31) + (((x13*x13) + (x14*x14) + (x15*x15)) - ((x13*x13) + (x14*x14) + (x15*x15)))) + ((x12 - x12) + ((x28 - x28) + (x30 - x30)))));
         singular |= finite != finite;
     } else if (((double)T_11) >= ((double)T_00) && ((double)T_11) >= ((double)T_22) && ((double)T_00) + ((double)T_11) + ((double)T_22) < 0.0) {
         const float x0 = (0.5f)*T_01;
-        const double x1 = (0.5)*((double)T_10) + ((double)x0);
+        const float x1 = (0.5f)*T_10 + x0;
         const float x2 = (x1*x1);
         const float x3 = (0.5f)*T_12;
         const float x4 = (0.5f)*T_21 + x3;
@@ -330,14 +331,14 @@ static inline int rigidsym_exponential_coordinates_from_transform_sample_f32(
         const float x6 = (0.5f)*T_00 + (0.5f)*T_22 - 0.5f;
         const float x7 = (0.5f)*T_11 - x6;
         const float x8 = (x7*x7);
-        const double x9 = ((double)x2) + ((double)x5) + ((double)x8);
+        const float x9 = x2 + x5 + x8;
         const float x10 = (0.5f)*T_10 - x0;
         const float x11 = (0.5f)*T_21 - x3;
         const float x12 = (0.5f)*T_02 - 0.5f*T_20;
-        const double x13 = atan2(sqrt((((double)x10)*((double)x10)) + (((double)x11)*((double)x11)) + (((double)x12)*((double)x12))), (0.5)*((double)T_11) + ((double)x6));
-        const double x14 = x13*((x1*((double)x11) + ((double)x10)*((double)x4) + ((double)x12)*((double)x7) < 0.0) ? (-1.0) : (1.0))/sqrt(x9);
+        const float x13 = atan2(sqrtf((x10*x10) + (x11*x11) + (x12*x12)), (0.5f)*T_11 + x6);
+        const float x14 = x13*((x1*x11 + x10*x4 + x12*x7 < 0.0f) ? (-1.0f) : (1.0f))/sqrtf(x9);
         const float x15 = x1*x14;
-        const double x16 = x14*((double)x7);
+        const float x16 = x14*x7;
         const float x17 = x14*x4;
         const float x18 = (0.5f)*x17;
         const float x19 = 1.0f/x9;
@@ -347,12 +348,12 @@ static inline int rigidsym_exponential_coordinates_from_transform_sample_f32(
         const float x23 = x21*x5;
         const float x24 = x21*x8;
         const float x25 = x22 + x23 + x24;
-        const double x26 = sqrt(((double)x25));
+        const float x26 = sqrtf(x25);
         const float x27 = 1.0f - cos(x26);
         const float x28 = -0.5f*sin(x26)/(x26*x27) + 1.0f/x25;
         const float x29 = x1*x21*x28;
         const float x30 = x29*x7;
-        const double x31 = (0.5)*x16;
+        const float x31 = (0.5f)*x16;
         const float x32 = x29*x4;
         const float x33 = x24*x28;
         const float x34 = x23*x28 - 1.0f;
@@ -366,7 +367,7 @@ static inline int rigidsym_exponential_coordinates_from_transform_sample_f32(
         out_xi[5] = T_03*(x31 + x32) + T_13*(x19*x20*x28*x4*x7 - x35) + T_23*(-x33 - x36 + 1.0f);
         singular |= (((double)x27)) == 0.0;
         singular |= (((double)x25)) == 0.0;
-        singular |= (x9) == 0.0;
+        singular |= (((double)x9)) == 0.0;
         const double finite = ((((x13 - x13) + (x14 - x14)) + ((x19 - x19) + (x26 - x26))) + (((x28 - x28) + (((x10*x10) + (x11*x11) + (x12*x12)) - ((x10*x10) + (x11*x11) + (x12*x12)))) + ((x9 - x9) + ((x25 - x25) + (x27 - x27)))));
         singular |= finite != finite;
     } else if (((double)T_22) >= ((double)T_00) && ((double)T_22) >= ((double)T_11) && ((double)T_00) + ((double)T_11) + ((double)T_22) < 0.0) {
@@ -377,15 +378,15 @@ static inline int rigidsym_exponential_coordinates_from_transform_sample_f32(
         const float x4 = (0.5f)*T_12;
         const float x5 = (0.5f)*T_21 + x4;
         const float x6 = (x5*x5);
-        const double x7 = (0.5)*((double)T_00) + (0.5)*((double)T_11) - 0.5;
-        const double x8 = (0.5)*((double)T_22) - x7;
+        const float x7 = (0.5f)*T_00 + (0.5f)*T_11 - 0.5f;
+        const float x8 = (0.5f)*T_22 - x7;
         const float x9 = (x8*x8);
         const float x10 = x3 + x6 + x9;
         const float x11 = x0 - x1;
-        const double x12 = (0.5)*((double)T_21) - ((double)x4);
+        const float x12 = (0.5f)*T_21 - x4;
         const float x13 = -0.5f*T_01 + (0.5f)*T_10;
-        const double x14 = atan2(sqrt((((double)x11)*((double)x11)) + (x12*x12) + (((double)x13)*((double)x13))), (0.5)*((double)T_22) + x7);
-        const double x15 = x14*((((double)x11)*((double)x5) + x12*((double)x2) + ((double)x13)*x8 < 0.0) ? (-1.0) : (1.0))/sqrt(((double)x10));
+        const float x14 = atan2(sqrtf((x11*x11) + (x12*x12) + (x13*x13)), (0.5f)*T_22 + x7);
+        const float x15 = x14*((x11*x5 + x12*x2 + x13*x8 < 0.0f) ? (-1.0f) : (1.0f))/sqrtf(x10);
         const float x16 = x15*x2;
         const float x17 = x15*x5;
         const float x18 = x15*x8;
@@ -397,7 +398,7 @@ static inline int rigidsym_exponential_coordinates_from_transform_sample_f32(
         const float x24 = x22*x6;
         const float x25 = x22*x9;
         const float x26 = x23 + x24 + x25;
-        const double x27 = sqrt(((double)x26));
+        const float x27 = sqrtf(x26);
         const float x28 = 1.0f - cos(x27);
         const float x29 = -0.5f*sin(x27)/(x27*x28) + 1.0f/x26;
         const float x30 = x2*x22*x29;
@@ -412,7 +413,7 @@ static inline int rigidsym_exponential_coordinates_from_transform_sample_f32(
         out_xi[1] = x17;
         out_xi[2] = x18;
         out_xi[3] = T_03*(-x34 - x35) + T_13*(x19 + x31) + T_23*(-x32 + x33);
-        out_xi[4] = ((double)T_03)*(-((double)x19) + ((double)x31)) + ((double)T_13)*(-((double)x35) - ((double)x37)) + ((double)T_23)*(((double)x22)*((double)x29)*((double)x5)*x8 + ((double)x36));
+        out_xi[4] = T_03*(-x19 + x31) + T_13*(-x35 - x37) + T_23*(x22*x29*x5*x8 + x36);
         out_xi[5] = T_03*(x32 + x33) + T_13*(x20*x21*x29*x5*x8 - x36) + T_23*(-x34 - x37 + 1.0f);
         singular |= (((double)x28)) == 0.0;
         singular |= (((double)x26)) == 0.0;
@@ -421,31 +422,31 @@ static inline int rigidsym_exponential_coordinates_from_transform_sample_f32(
         singular |= finite != finite;
     } else {
         const float x0 = -0.5f*T_12 + (0.5f)*T_21;
-        const double x1 = acos((0.5)*((double)T_00) + (0.5)*((double)T_11) + (0.5)*((double)T_22) - 0.5);
-        const double x2 = sin(x1);
-        const double x3 = x1/x2;
+        const float x1 = acos((0.5f)*T_00 + (0.5f)*T_11 + (0.5f)*T_22 - 0.5f);
+        const float x2 = sin(x1);
+        const float x3 = x1/x2;
         const float x4 = x0*x3;
-        const double x5 = (0.5)*((double)T_02) - 0.5*((double)T_20);
+        const float x5 = (0.5f)*T_02 - 0.5f*T_20;
         const float x6 = x3*x5;
-        const double x7 = -0.5*((double)T_01) + (0.5)*((double)T_10);
+        const float x7 = -0.5f*T_01 + (0.5f)*T_10;
         const float x8 = x3*x7;
         const float x9 = (0.5f)*x8;
-        const double x10 = (x1*x1);
+        const float x10 = (x1*x1);
         const float x11 = 1.0f/(x2*x2);
         const float x12 = x10*x11;
         const float x13 = x12*(x7*x7);
         const float x14 = x12*(x5*x5);
         const float x15 = (x0*x0)*x12;
-        const double x16 = ((double)x13) + ((double)x14) + ((double)x15);
-        const double x17 = sqrt(x16);
-        const double x18 = 1.0 - cos(x17);
+        const float x16 = x13 + x14 + x15;
+        const float x17 = sqrtf(x16);
+        const float x18 = 1.0f - cos(x17);
         const float x19 = -0.5f*sin(x17)/(x17*x18) + 1.0f/x16;
         const float x20 = x0*x12*x19;
         const float x21 = (0.5f)*x6;
         const float x22 = x20*x7;
         const float x23 = x14*x19;
         const float x24 = x13*x19 - 1.0f;
-        const double x25 = (0.5)*((double)x4);
+        const float x25 = (0.5f)*x4;
         const float x26 = x12*x19*x5*x7;
         const float x27 = x15*x19;
         out_xi[0] = x4;
@@ -454,9 +455,9 @@ static inline int rigidsym_exponential_coordinates_from_transform_sample_f32(
         out_xi[3] = T_03*(-x23 - x24) + T_13*(x20*x5 + x9) + T_23*(-x21 + x22);
         out_xi[4] = T_03*(x0*x10*x11*x19*x5 - x9) + T_13*(-x24 - x27) + T_23*(x25 + x26);
         out_xi[5] = T_03*(x21 + x22) + T_13*(-x25 + x26) + T_23*(-x23 - x27 + 1.0f);
-        singular |= (x18) == 0.0;
-        singular |= (x16) == 0.0;
-        singular |= (x2) == 0.0;
+        singular |= (((double)x18)) == 0.0;
+        singular |= (((double)x16)) == 0.0;
+        singular |= (((double)x2)) == 0.0;
         const double finite = (((x3 - x3) + ((x11 - x11) + (x17 - x17))) + (((x19 - x19) + (x2 - x2)) + ((x16 - x16) + (x18 - x18))));
         singular |= finite != finite;
     }

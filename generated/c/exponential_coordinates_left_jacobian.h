@@ -12,9 +12,10 @@
  * [[J_l(w), 0], [Q(v, w), J_l(w)]] (Barfoot Sec. 7.1.5, reordered)
  *
  * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
- * measured at generation, rigidsym.codegen.float32; error within 0.959 ulp of float32,
- * normwise, at its points). In double:
- *   x2, x3, x4, x7, x9, x16, x17, x23, x24, x29, x30, x41, x44, x47, x48, x54, x55, x63, x64
+ * measured at generation, rigidsym.codegen.float32; worst error 0.967 of what
+ * the rule of issue 37 allows, max(2 e_textbook, 4 u), per output, normwise, at its
+ * points). In double:
+ *   none
  */
 #ifndef RIGIDSYM_EXPONENTIAL_COORDINATES_LEFT_JACOBIAN_H
 #define RIGIDSYM_EXPONENTIAL_COORDINATES_LEFT_JACOBIAN_H
@@ -164,35 +165,35 @@ static inline int rigidsym_exponential_coordinates_left_jacobian_sample_f32(
     {
         const float x0 = (xi_1*xi_1);
         const float x1 = (xi_2*xi_2);
-        const double x2 = ((double)x0) + ((double)x1) + (((double)xi_0)*((double)xi_0));
-        const double x3 = ((x2 < 1.0) ? (x2*(x2*(x2*(x2*(x2*(x2*(x2*(8.2206352466243295e-18*x2 - 2.8114572543455206e-15) + 7.6471637318198164e-13) - 1.6059043836821613e-10) + 2.505210838544172e-8) - 2.7557319223985893e-6) + 0.00019841269841269841) - 0.0083333333333333332) + 0.16666666666666666) : ((((x2 < 1.0) ? (1.0) : (sqrt(x2))) - sin(((x2 < 1.0) ? (1.0) : (sqrt(x2)))))*((x2 < 1.0) ? (1.0) : (1.0/(x2*sqrt(x2))))));
-        const double x4 = ((double)x0)*x3;
+        const float x2 = x0 + x1 + (xi_0*xi_0);
+        const float x3 = ((x2 < 1.0f) ? (x2*(x2*(x2*(x2*(x2*(x2*(x2*(8.220635078476521e-18f*x2 - 2.8114573589663704e-15f) + 7.647163609812713e-13f) - 1.6059044372074283e-10f) + 2.5052107943679403e-08f) - 2.7557318844628753e-06f) + 0.00019841270113829523f) - 0.008333333767950535f) + 0.1666666716337204f) : ((((x2 < 1.0f) ? (1.0f) : (sqrtf(x2))) - sin(((x2 < 1.0f) ? (1.0f) : (sqrtf(x2)))))*((x2 < 1.0f) ? (1.0f) : (1.0f/(x2*sqrt(x2))))));
+        const float x4 = x0*x3;
         const float x5 = x1*x3;
         const float x6 = -x4 - x5 + 1.0f;
-        const double x7 = ((x2 < 1.0) ? (x2*(x2*(x2*(x2*(x2*(x2*(x2*(1.5619206968586225e-16*x2 - 4.7794773323873853e-14) + 1.1470745597729725e-11) - 2.08767569878681e-9) + 2.7557319223985888e-7) - 2.4801587301587302e-5) + 0.0013888888888888889) - 0.041666666666666664) + 0.5) : ((1.0 - cos(((x2 < 1.0) ? (1.0) : (sqrt(x2)))))*((x2 < 1.0) ? (1.0) : (1.0/x2))));
+        const float x7 = ((x2 < 1.0f) ? (x2*(x2*(x2*(x2*(x2*(x2*(x2*(1.5619206814541513e-16f*x2 - 4.7794772561329454e-14f) + 1.147074536050896e-11f) - 2.0876755879584152e-09f) + 2.755731998149713e-07f) - 2.4801587642286904e-05f) + 0.0013888889225199819f) - 0.0416666679084301f) + 0.5f) : ((1.0f - cos(((x2 < 1.0f) ? (1.0f) : (sqrtf(x2)))))*((x2 < 1.0f) ? (1.0f) : (1.0f/x2))));
         const float x8 = x7*xi_2;
-        const double x9 = x3*((double)xi_0);
+        const float x9 = x3*xi_0;
         const float x10 = x9*xi_1;
         const float x11 = x10 - x8;
         const float x12 = x7*xi_1;
         const float x13 = x9*xi_2;
         const float x14 = x12 + x13;
         const float x15 = x10 + x8;
-        const double x16 = -x2;
-        const double x17 = x16*x3;
+        const float x16 = -x2;
+        const float x17 = x16*x3;
         const float x18 = x17 + 1.0f;
         const float x19 = x18 + x4;
         const float x20 = x7*xi_0;
         const float x21 = -x20 + x3*xi_1*xi_2;
         const float x22 = -x12 + x13;
-        const double x23 = x3*((double)xi_1);
-        const double x24 = x23*((double)xi_2);
+        const float x23 = x3*xi_1;
+        const float x24 = x23*xi_2;
         const float x25 = x20 + x24;
         const float x26 = x18 + x5;
         const float x27 = 2.0f*x23*xi_4;
         const float x28 = x3*xi_2;
-        const double x29 = 2.0*((double)x28)*((double)xi_5);
-        const double x30 = ((x2 < 2.0) ? (x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(3.5231293914104271e-19 - 7.7363403412613678e-22*x2) - 1.3153016394598927e-16) + 3.936040156083729e-14) - 9.1765964781837793e-12) + 1.6059043836821615e-9) - 2.0041686708353376e-7) + 1.6534391534391536e-5) - 0.00079365079365079365) + 0.016666666666666666) : ((((x2 < 2.0) ? (1.414213562373095) : (sqrt(x2)))*cos(((x2 < 2.0) ? (1.414213562373095) : (sqrt(x2)))) + 2.0*((x2 < 2.0) ? (1.414213562373095) : (sqrt(x2))) - 3.0*sin(((x2 < 2.0) ? (1.414213562373095) : (sqrt(x2)))))*((x2 < 2.0) ? (0.17677669529663688) : (1.0/((x2*x2)*sqrt(x2))))));
+        const float x29 = 2.0f*x28*xi_5;
+        const float x30 = ((x2 < 2.0f) ? (x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(3.5231294744434454e-19f - 7.736340469711717e-22f*x2) - 1.3153016125562434e-16f) + 3.936040133146329e-14f) - 9.17659611493482e-12f) + 1.6059044094518526e-09f) - 2.0041686354943522e-07f) + 1.6534391761524603e-05f) - 0.0007936508045531809f) + 0.01666666753590107f) : ((((x2 < 2.0f) ? (1.4142135381698608f) : (sqrtf(x2)))*cos(((x2 < 2.0f) ? (1.4142135381698608f) : (sqrtf(x2)))) + 2.0f*((x2 < 2.0f) ? (1.4142135381698608f) : (sqrtf(x2))) - 3.0f*sin(((x2 < 2.0f) ? (1.4142135381698608f) : (sqrtf(x2)))))*((x2 < 2.0f) ? (0.1767766922712326f) : (1.0f/((x2*x2)*sqrt(x2))))));
         const float x31 = x30*(xi_1*xi_1*xi_1);
         const float x32 = x30*xi_0;
         const float x33 = x0*x32;
@@ -203,21 +204,21 @@ static inline int rigidsym_exponential_coordinates_left_jacobian_sample_f32(
         const float x38 = x1*xi_3;
         const float x39 = xi_1*xi_4;
         const float x40 = x1*x30*x39 + x32*x38 + x37*xi_5;
-        const double x41 = ((x2 < 1.0) ? (x2*(x2*(x2*(x2*(x2*(x2*(x2*(4.7794773323873853e-14 - 1.5619206968586225e-16*x2) - 1.1470745597729725e-11) + 2.08767569878681e-9) - 2.7557319223985888e-7) + 2.4801587301587302e-5) - 0.0013888888888888889) + 0.041666666666666664) - 0.5) : ((cos(((x2 < 1.0) ? (1.0) : (sqrt(x2)))) - 1.0)*((x2 < 1.0) ? (1.0) : (1.0/x2))));
-        const float x42 = ((x2 < 2.0f) ? (x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(1.7793581919133696e-21f*x2 - 8.220635181874098e-19f) + 3.1238413629083026e-16f) - 9.558954512265891e-14f) + 2.294149072101792e-11f) - 4.1753511759168305e-09f) + 5.511463996299426e-07f) - 4.960317528457381e-05f) + 0.0027777778450399637f) - 0.0833333358168602f) : ((-((x2 < 2.0f) ? (2.0f) : (x2)) - 2.0f*cos(((x2 < 2.0f) ? (1.4142135381698608f) : (sqrt(x2)))) + 2.0f)*((x2 < 2.0f) ? (0.25f) : (1.0f/(x2*x2)))));
+        const float x41 = ((x2 < 1.0f) ? (x2*(x2*(x2*(x2*(x2*(x2*(x2*(4.7794772561329454e-14f - 1.5619206814541513e-16f*x2) - 1.147074536050896e-11f) + 2.0876755879584152e-09f) - 2.755731998149713e-07f) + 2.4801587642286904e-05f) - 0.0013888889225199819f) + 0.0416666679084301f) - 0.5f) : ((cos(((x2 < 1.0f) ? (1.0f) : (sqrtf(x2)))) - 1.0f)*((x2 < 1.0f) ? (1.0f) : (1.0f/x2))));
+        const float x42 = ((x2 < 2.0f) ? (x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(1.7793581919133696e-21f*x2 - 8.220635181874098e-19f) + 3.1238413629083026e-16f) - 9.558954512265891e-14f) + 2.294149072101792e-11f) - 4.1753511759168305e-09f) + 5.511463996299426e-07f) - 4.960317528457381e-05f) + 0.0027777778450399637f) - 0.0833333358168602f) : ((-((x2 < 2.0f) ? (2.0f) : (x2)) - 2.0f*cos(((x2 < 2.0f) ? (1.4142135381698608f) : (sqrtf(x2)))) + 2.0f)*((x2 < 2.0f) ? (0.25f) : (1.0f/(x2*x2)))));
         const float x43 = x1*xi_5;
-        const double x44 = ((double)x5)*((double)xi_5);
+        const float x44 = x5*xi_5;
         const float x45 = x42*xi_2;
         const float x46 = xi_0*xi_3;
-        const double x47 = ((double)x13)*((double)xi_3);
-        const double x48 = x24*((double)xi_4);
+        const float x47 = x13*xi_3;
+        const float x48 = x24*xi_4;
         const float x49 = x30*xi_1;
         const float x50 = x16*xi_3;
         const float x51 = x32*xi_1;
         const float x52 = x23*xi_3 + x31*xi_3 - x33*xi_4 - x34*x51 + x38*x49 + x49*x50 + x9*xi_4;
-        const float x53 = ((x2 < 2.0f) ? (x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(8.220635181874098e-19f - 1.7793581919133696e-21f*x2) - 3.1238413629083026e-16f) + 9.558954512265891e-14f) - 2.294149072101792e-11f) + 4.1753511759168305e-09f) - 5.511463996299426e-07f) + 4.960317528457381e-05f) - 0.0027777778450399637f) + 0.0833333358168602f) : ((((x2 < 2.0f) ? (2.0f) : (x2)) + 2.0f*cos(((x2 < 2.0f) ? (1.4142135381698608f) : (sqrt(x2)))) - 2.0f)*((x2 < 2.0f) ? (0.25f) : (1.0f/(x2*x2)))));
-        const double x54 = ((double)x0)*((double)x53);
-        const double x55 = x4*((double)xi_4);
+        const float x53 = ((x2 < 2.0f) ? (x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(8.220635181874098e-19f - 1.7793581919133696e-21f*x2) - 3.1238413629083026e-16f) + 9.558954512265891e-14f) - 2.294149072101792e-11f) + 4.1753511759168305e-09f) - 5.511463996299426e-07f) + 4.960317528457381e-05f) - 0.0027777778450399637f) + 0.0833333358168602f) : ((((x2 < 2.0f) ? (2.0f) : (x2)) + 2.0f*cos(((x2 < 2.0f) ? (1.4142135381698608f) : (sqrtf(x2)))) - 2.0f)*((x2 < 2.0f) ? (0.25f) : (1.0f/(x2*x2)))));
+        const float x54 = x0*x53;
+        const float x55 = x4*xi_4;
         const float x56 = x53*xi_1;
         const float x57 = x10*xi_3;
         const float x58 = x24*xi_5;
@@ -225,8 +226,8 @@ static inline int rigidsym_exponential_coordinates_left_jacobian_sample_f32(
         const float x60 = x28*xi_3 + x30*x50*xi_2 - x32*x39*xi_2 - x32*x43 + x37*xi_3 + x59*xi_3 + x9*xi_5;
         const float x61 = x53*xi_2;
         const float x62 = -x2*x30*xi_0*xi_3 - x2*x30*xi_1*xi_4 - x2*x30*xi_2*xi_5 + 2.0f*x9*xi_3;
-        const double x63 = x4*((double)xi_3);
-        const double x64 = ((double)x5)*((double)xi_3);
+        const float x63 = x4*xi_3;
+        const float x64 = x5*xi_3;
         const float x65 = x42*xi_0;
         const float x66 = x10*xi_4;
         const float x67 = x13*xi_5;
@@ -260,12 +261,12 @@ static inline int rigidsym_exponential_coordinates_left_jacobian_sample_f32(
         out_J[23] = x14;
         out_J[24] = x39*x61 + x43*x53 - x44 + x46*x61 - x47 - x48 + x52 + x7*xi_5;
         out_J[25] = -x29 - x36 - x62;
-        out_J[26] = x2*x3*xi_3 + x34*x65 + x38*x53 + x39*x65 + x54*xi_3 - x63 - x64 + x66 + x67 + x68 + xi_3*((x2 < 1.0f) ? (x2*(x2*(x2*(x2*(x2*(x2*(x2*(1.5619206814541513e-16f*x2 - 4.7794772561329454e-14f) + 1.147074536050896e-11f) - 2.0876755879584152e-09f) + 2.755731998149713e-07f) - 2.4801587642286904e-05f) + 0.0013888889225199819f) - 0.0416666679084301f) - 0.5f) : ((-((x2 < 1.0f) ? (1.0f) : (x2)) - cos(((x2 < 1.0f) ? (1.0f) : (sqrt(x2)))) + 1.0f)*((x2 < 1.0f) ? (1.0f) : (1.0f/x2))));
+        out_J[26] = x2*x3*xi_3 + x34*x65 + x38*x53 + x39*x65 + x54*xi_3 - x63 - x64 + x66 + x67 + x68 + xi_3*((x2 < 1.0f) ? (x2*(x2*(x2*(x2*(x2*(x2*(x2*(1.5619206814541513e-16f*x2 - 4.7794772561329454e-14f) + 1.147074536050896e-11f) - 2.0876755879584152e-09f) + 2.755731998149713e-07f) - 2.4801587642286904e-05f) + 0.0013888889225199819f) - 0.0416666679084301f) - 0.5f) : ((-((x2 < 1.0f) ? (1.0f) : (x2)) - cos(((x2 < 1.0f) ? (1.0f) : (sqrtf(x2)))) + 1.0f)*((x2 < 1.0f) ? (1.0f) : (1.0f/x2))));
         out_J[27] = x15;
         out_J[28] = x19;
         out_J[29] = x21;
         out_J[30] = x34*x70 + x41*xi_4 + x46*x70 + x55 + x57 + x58 + x60 + x69*xi_4;
-        out_J[31] = x17*xi_3 + x34*x71 + x38*x42 + x39*x71 + x63 + x64 - x66 - x67 + x68 + x69*xi_3 + xi_3*((x2 < 1.0f) ? (x2*(x2*(x2*(x2*(x2*(x2*(x2*(4.7794772561329454e-14f - 1.5619206814541513e-16f*x2) - 1.147074536050896e-11f) + 2.0876755879584152e-09f) - 2.755731998149713e-07f) + 2.4801587642286904e-05f) - 0.0013888889225199819f) + 0.0416666679084301f) + 0.5f) : ((((x2 < 1.0f) ? (1.0f) : (x2)) + cos(((x2 < 1.0f) ? (1.0f) : (sqrt(x2)))) - 1.0f)*((x2 < 1.0f) ? (1.0f) : (1.0f/x2))));
+        out_J[31] = x17*xi_3 + x34*x71 + x38*x42 + x39*x71 + x63 + x64 - x66 - x67 + x68 + x69*xi_3 + xi_3*((x2 < 1.0f) ? (x2*(x2*(x2*(x2*(x2*(x2*(x2*(4.7794772561329454e-14f - 1.5619206814541513e-16f*x2) - 1.147074536050896e-11f) + 2.0876755879584152e-09f) - 2.755731998149713e-07f) + 2.4801587642286904e-05f) - 0.0013888889225199819f) + 0.0416666679084301f) + 0.5f) : ((((x2 < 1.0f) ? (1.0f) : (x2)) + cos(((x2 < 1.0f) ? (1.0f) : (sqrtf(x2)))) - 1.0f)*((x2 < 1.0f) ? (1.0f) : (1.0f/x2))));
         out_J[32] = -x27 - x40 - x62;
         out_J[33] = x22;
         out_J[34] = x25;

@@ -12,9 +12,10 @@
  * T = [[Exp(w), J_l(w) v], [0, 1]]; and d(output)/d(input) by sympy on the declared formula
  *
  * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
- * measured at generation, rigidsym.codegen.float32; error within 0.998 ulp of float32,
- * normwise, at its points). In double:
- *   x1, x2, x3, x8, x13, x21, x26, x28, x30, x35, x41, T_D_xi[67]
+ * measured at generation, rigidsym.codegen.float32; worst error 0.927 of what
+ * the rule of issue 37 allows, max(2 e_textbook, 4 u), per output, normwise, at its
+ * points). In double:
+ *   none
  */
 #ifndef RIGIDSYM_TRANSFORM_FROM_EXPONENTIAL_COORDINATES_WITH_JACOBIANS_H
 #define RIGIDSYM_TRANSFORM_FROM_EXPONENTIAL_COORDINATES_WITH_JACOBIANS_H
@@ -283,47 +284,47 @@ static inline int rigidsym_transform_from_exponential_coordinates_with_jacobians
     int singular = 0;
     {
         const float x0 = (xi_1*xi_1);
-        const double x1 = (((double)xi_2)*((double)xi_2));
-        const double x2 = ((double)x0) + x1 + (((double)xi_0)*((double)xi_0));
-        const double x3 = ((x2 < 1.0) ? (x2*(x2*(x2*(x2*(x2*(x2*(x2*(1.5619206968586225e-16*x2 - 4.7794773323873853e-14) + 1.1470745597729725e-11) - 2.08767569878681e-9) + 2.7557319223985888e-7) - 2.4801587301587302e-5) + 0.0013888888888888889) - 0.041666666666666664) + 0.5) : ((1.0 - cos(((x2 < 1.0) ? (1.0) : (sqrt(x2)))))*((x2 < 1.0) ? (1.0) : (1.0/x2))));
+        const float x1 = (xi_2*xi_2);
+        const float x2 = x0 + x1 + (xi_0*xi_0);
+        const float x3 = ((x2 < 1.0f) ? (x2*(x2*(x2*(x2*(x2*(x2*(x2*(1.5619206814541513e-16f*x2 - 4.7794772561329454e-14f) + 1.147074536050896e-11f) - 2.0876755879584152e-09f) + 2.755731998149713e-07f) - 2.4801587642286904e-05f) + 0.0013888889225199819f) - 0.0416666679084301f) + 0.5f) : ((1.0f - cos(((x2 < 1.0f) ? (1.0f) : (sqrtf(x2)))))*((x2 < 1.0f) ? (1.0f) : (1.0f/x2))));
         const float x4 = x0*x3;
         const float x5 = x1*x3;
-        const float x6 = ((x2 < 9.094947017729282e-13f) ? (1.0f - 0.1666666716337204f*x2) : (((x2 < 9.094947017729282e-13f) ? (1048576.0f) : (1.0f/sqrt(x2)))*sin(((x2 < 9.094947017729282e-13f) ? (9.5367431640625e-07f) : (sqrt(x2))))));
+        const float x6 = ((x2 < 9.094947017729282e-13f) ? (1.0f - 0.1666666716337204f*x2) : (((x2 < 9.094947017729282e-13f) ? (1048576.0f) : (1.0f/sqrtf(x2)))*sin(((x2 < 9.094947017729282e-13f) ? (9.5367431640625e-07f) : (sqrtf(x2))))));
         const float x7 = x6*xi_2;
-        const double x8 = x3*((double)xi_1);
+        const float x8 = x3*xi_1;
         const float x9 = x8*xi_0;
         const float x10 = x6*xi_1;
         const float x11 = x3*xi_0;
         const float x12 = x11*xi_2;
-        const double x13 = x3*((double)xi_2);
-        const float x14 = ((x2 < 1.0f) ? (x2*(x2*(x2*(x2*(x2*(x2*(x2*(8.220635078476521e-18f*x2 - 2.8114573589663704e-15f) + 7.647163609812713e-13f) - 1.6059044372074283e-10f) + 2.5052107943679403e-08f) - 2.7557318844628753e-06f) + 0.00019841270113829523f) - 0.008333333767950535f) + 0.1666666716337204f) : ((((x2 < 1.0f) ? (1.0f) : (sqrt(x2))) - sin(((x2 < 1.0f) ? (1.0f) : (sqrt(x2)))))*((x2 < 1.0f) ? (1.0f) : (1.0f/(x2*sqrt(x2))))));
+        const float x13 = x3*xi_2;
+        const float x14 = ((x2 < 1.0f) ? (x2*(x2*(x2*(x2*(x2*(x2*(x2*(8.220635078476521e-18f*x2 - 2.8114573589663704e-15f) + 7.647163609812713e-13f) - 1.6059044372074283e-10f) + 2.5052107943679403e-08f) - 2.7557318844628753e-06f) + 0.00019841270113829523f) - 0.008333333767950535f) + 0.1666666716337204f) : ((((x2 < 1.0f) ? (1.0f) : (sqrtf(x2))) - sin(((x2 < 1.0f) ? (1.0f) : (sqrtf(x2)))))*((x2 < 1.0f) ? (1.0f) : (1.0f/(x2*sqrt(x2))))));
         const float x15 = x14*xi_4;
         const float x16 = x15*xi_1;
         const float x17 = x14*xi_5;
         const float x18 = x17*xi_2;
         const float x19 = x0*x14;
         const float x20 = x1*x14;
-        const double x21 = -x2;
+        const float x21 = -x2;
         const float x22 = x21*x3 + 1.0f;
         const float x23 = x6*xi_0;
         const float x24 = x14*xi_0;
         const float x25 = x24*xi_1;
-        const double x26 = ((double)x14)*x21;
+        const float x26 = x14*x21;
         const float x27 = x24*xi_2;
-        const double x28 = ((x2 < 1.0) ? (x2*(x2*(x2*(x2*(x2*(x2*(x2*(7.398571721961897e-18*x2 - 2.499073114973796e-15) + 6.6912682653423392e-13) - 1.376489471727567e-10) + 2.08767569878681e-8) - 2.2045855379188711e-6) + 0.00014880952380952382) - 0.0055555555555555558) + 0.083333333333333329) : ((-((x2 < 1.0) ? (1.0) : (sqrt(x2)))*sin(((x2 < 1.0) ? (1.0) : (sqrt(x2)))) - 2.0*cos(((x2 < 1.0) ? (1.0) : (sqrt(x2)))) + 2.0)*((x2 < 1.0) ? (1.0) : (1.0/(x2*x2)))));
+        const float x28 = ((x2 < 1.0f) ? (x2*(x2*(x2*(x2*(x2*(x2*(x2*(7.398571405192747e-18f*x2 - 2.499073090326642e-15f) + 6.691268090823488e-13f) - 1.3764894779555448e-10f) + 2.0876756323673362e-08f) - 2.2045855985197704e-06f) + 0.00014880952949170023f) - 0.0055555556900799274f) + 0.0833333358168602f) : ((-((x2 < 1.0f) ? (1.0f) : (sqrtf(x2)))*sin(((x2 < 1.0f) ? (1.0f) : (sqrtf(x2)))) - 2.0f*cos(((x2 < 1.0f) ? (1.0f) : (sqrtf(x2)))) + 2.0f)*((x2 < 1.0f) ? (1.0f) : (1.0f/(x2*x2)))));
         const float x29 = x28*xi_0;
-        const double x30 = -2.0*x8;
+        const float x30 = -2.0f*x8;
         const float x31 = (xi_1*xi_1*xi_1);
         const float x32 = x1*x28;
         const float x33 = x28*x31 + x32*xi_1;
         const float x34 = -2.0f*x13;
-        const double x35 = (((double)xi_2)*((double)xi_2)*((double)xi_2));
+        const float x35 = (xi_2*xi_2*xi_2);
         const float x36 = x0*xi_2;
         const float x37 = x28*x35 + x28*x36;
-        const float x38 = ((x2 < 0.5f) ? (x2*(x2*(x2*(x2*(x2*(x2*(1.070602894531758e-11f - 4.4983317743461926e-14f*x2) - 1.9270851581154602e-09f) + 2.505210829895077e-07f) - 2.2045855075703003e-05f) + 0.0011904762359336019f) - 0.03333333507180214f) + 0.3333333432674408f) : ((-((x2 < 0.5f) ? (0.7071067690849304f) : (sqrt(x2)))*cos(((x2 < 0.5f) ? (0.7071067690849304f) : (sqrt(x2)))) + sin(((x2 < 0.5f) ? (0.7071067690849304f) : (sqrt(x2)))))*((x2 < 0.5f) ? (2.8284270763397217f) : (1.0f/(x2*sqrt(x2))))));
+        const float x38 = ((x2 < 0.5f) ? (x2*(x2*(x2*(x2*(x2*(x2*(1.070602894531758e-11f - 4.4983317743461926e-14f*x2) - 1.9270851581154602e-09f) + 2.505210829895077e-07f) - 2.2045855075703003e-05f) + 0.0011904762359336019f) - 0.03333333507180214f) + 0.3333333432674408f) : ((-((x2 < 0.5f) ? (0.7071067690849304f) : (sqrtf(x2)))*cos(((x2 < 0.5f) ? (0.7071067690849304f) : (sqrtf(x2)))) + sin(((x2 < 0.5f) ? (0.7071067690849304f) : (sqrtf(x2)))))*((x2 < 0.5f) ? (2.8284270763397217f) : (1.0f/(x2*sqrt(x2))))));
         const float x39 = x38*xi_2;
         const float x40 = x39*xi_0;
-        const double x41 = ((x2 < 1.0) ? (x2*(x2*(x2*(x2*(x2*(x2*(x2*(2.499073114973796e-15 - 7.398571721961897e-18*x2) - 6.6912682653423392e-13) + 1.376489471727567e-10) - 2.08767569878681e-8) + 2.2045855379188711e-6) - 0.00014880952380952382) + 0.0055555555555555558) - 0.083333333333333329) : ((((x2 < 1.0) ? (1.0) : (sqrt(x2)))*sin(((x2 < 1.0) ? (1.0) : (sqrt(x2)))) + 2.0*cos(((x2 < 1.0) ? (1.0) : (sqrt(x2)))) - 2.0)*((x2 < 1.0) ? (1.0) : (1.0/(x2*x2)))));
+        const float x41 = ((x2 < 1.0f) ? (x2*(x2*(x2*(x2*(x2*(x2*(x2*(2.499073090326642e-15f - 7.398571405192747e-18f*x2) - 6.691268090823488e-13f) + 1.3764894779555448e-10f) - 2.0876756323673362e-08f) + 2.2045855985197704e-06f) - 0.00014880952949170023f) + 0.0055555556900799274f) - 0.0833333358168602f) : ((((x2 < 1.0f) ? (1.0f) : (sqrtf(x2)))*sin(((x2 < 1.0f) ? (1.0f) : (sqrtf(x2)))) + 2.0f*cos(((x2 < 1.0f) ? (1.0f) : (sqrtf(x2)))) - 2.0f)*((x2 < 1.0f) ? (1.0f) : (1.0f/(x2*x2)))));
         const float x42 = x2*x41;
         const float x43 = x33 + x42*xi_1 + x8;
         const float x44 = x39*xi_1;
@@ -334,7 +335,7 @@ static inline int rigidsym_transform_from_exponential_coordinates_with_jacobians
         const float x49 = x45*xi_1;
         const float x50 = x49*xi_2;
         const float x51 = x50 - x6;
-        const float x52 = ((x2 < 0.5f) ? (x2*(x2*(x2*(x2*(x2*(x2*(4.4983317743461926e-14f*x2 - 1.070602894531758e-11f) + 1.9270851581154602e-09f) - 2.505210829895077e-07f) + 2.2045855075703003e-05f) - 0.0011904762359336019f) + 0.03333333507180214f) - 0.3333333432674408f) : ((((x2 < 0.5f) ? (0.7071067690849304f) : (sqrt(x2)))*cos(((x2 < 0.5f) ? (0.7071067690849304f) : (sqrt(x2)))) - sin(((x2 < 0.5f) ? (0.7071067690849304f) : (sqrt(x2)))))*((x2 < 0.5f) ? (2.8284270763397217f) : (1.0f/(x2*sqrt(x2))))));
+        const float x52 = ((x2 < 0.5f) ? (x2*(x2*(x2*(x2*(x2*(x2*(4.4983317743461926e-14f*x2 - 1.070602894531758e-11f) + 1.9270851581154602e-09f) - 2.505210829895077e-07f) + 2.2045855075703003e-05f) - 0.0011904762359336019f) + 0.03333333507180214f) - 0.3333333432674408f) : ((((x2 < 0.5f) ? (0.7071067690849304f) : (sqrtf(x2)))*cos(((x2 < 0.5f) ? (0.7071067690849304f) : (sqrtf(x2)))) - sin(((x2 < 0.5f) ? (0.7071067690849304f) : (sqrtf(x2)))))*((x2 < 0.5f) ? (2.8284270763397217f) : (1.0f/(x2*sqrt(x2))))));
         const float x53 = x52*xi_1;
         const float x54 = x53*xi_0;
         const float x55 = x13 + x37 + x42*xi_2;
@@ -344,7 +345,7 @@ static inline int rigidsym_transform_from_exponential_coordinates_with_jacobians
         const float x59 = x1*x45;
         const float x60 = x11 + x59;
         const float x61 = xi_2*xi_4;
-        const float x62 = ((x2 < 2.0f) ? (x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(3.5231294744434454e-19f - 7.736340469711717e-22f*x2) - 1.3153016125562434e-16f) + 3.936040133146329e-14f) - 9.17659611493482e-12f) + 1.6059044094518526e-09f) - 2.0041686354943522e-07f) + 1.6534391761524603e-05f) - 0.0007936508045531809f) + 0.01666666753590107f) : ((((x2 < 2.0f) ? (1.4142135381698608f) : (sqrt(x2)))*cos(((x2 < 2.0f) ? (1.4142135381698608f) : (sqrt(x2)))) + 2.0f*((x2 < 2.0f) ? (1.4142135381698608f) : (sqrt(x2))) - 3.0f*sin(((x2 < 2.0f) ? (1.4142135381698608f) : (sqrt(x2)))))*((x2 < 2.0f) ? (0.1767766922712326f) : (1.0f/((x2*x2)*sqrt(x2))))));
+        const float x62 = ((x2 < 2.0f) ? (x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(3.5231294744434454e-19f - 7.736340469711717e-22f*x2) - 1.3153016125562434e-16f) + 3.936040133146329e-14f) - 9.17659611493482e-12f) + 1.6059044094518526e-09f) - 2.0041686354943522e-07f) + 1.6534391761524603e-05f) - 0.0007936508045531809f) + 0.01666666753590107f) : ((((x2 < 2.0f) ? (1.4142135381698608f) : (sqrtf(x2)))*cos(((x2 < 2.0f) ? (1.4142135381698608f) : (sqrtf(x2)))) + 2.0f*((x2 < 2.0f) ? (1.4142135381698608f) : (sqrtf(x2))) - 3.0f*sin(((x2 < 2.0f) ? (1.4142135381698608f) : (sqrtf(x2)))))*((x2 < 2.0f) ? (0.1767766922712326f) : (1.0f/((x2*x2)*sqrt(x2))))));
         const float x63 = x31*x62;
         const float x64 = x35*x62;
         const float x65 = x0*xi_0;
@@ -353,7 +354,7 @@ static inline int rigidsym_transform_from_exponential_coordinates_with_jacobians
         const float x68 = x62*xi_4;
         const float x69 = x1*xi_1;
         const float x70 = x62*xi_5;
-        const float x71 = ((x2 < 2.0f) ? (x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(7.736340469711717e-22f*x2 - 3.5231294744434454e-19f) + 1.3153016125562434e-16f) - 3.936040133146329e-14f) + 9.17659611493482e-12f) - 1.6059044094518526e-09f) + 2.0041686354943522e-07f) - 1.6534391761524603e-05f) + 0.0007936508045531809f) - 0.01666666753590107f) : ((-((x2 < 2.0f) ? (1.4142135381698608f) : (sqrt(x2)))*cos(((x2 < 2.0f) ? (1.4142135381698608f) : (sqrt(x2)))) - 2.0f*((x2 < 2.0f) ? (1.4142135381698608f) : (sqrt(x2))) + 3.0f*sin(((x2 < 2.0f) ? (1.4142135381698608f) : (sqrt(x2)))))*((x2 < 2.0f) ? (0.1767766922712326f) : (1.0f/((x2*x2)*sqrt(x2))))));
+        const float x71 = ((x2 < 2.0f) ? (x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(7.736340469711717e-22f*x2 - 3.5231294744434454e-19f) + 1.3153016125562434e-16f) - 3.936040133146329e-14f) + 9.17659611493482e-12f) - 1.6059044094518526e-09f) + 2.0041686354943522e-07f) - 1.6534391761524603e-05f) + 0.0007936508045531809f) - 0.01666666753590107f) : ((-((x2 < 2.0f) ? (1.4142135381698608f) : (sqrtf(x2)))*cos(((x2 < 2.0f) ? (1.4142135381698608f) : (sqrtf(x2)))) - 2.0f*((x2 < 2.0f) ? (1.4142135381698608f) : (sqrtf(x2))) + 3.0f*sin(((x2 < 2.0f) ? (1.4142135381698608f) : (sqrtf(x2)))))*((x2 < 2.0f) ? (0.1767766922712326f) : (1.0f/((x2*x2)*sqrt(x2))))));
         const float x72 = x71*xi_4;
         const float x73 = x2*xi_1;
         const float x74 = x71*xi_5;
@@ -479,7 +480,7 @@ static inline int rigidsym_transform_from_exponential_coordinates_with_jacobians
         out_T_D_xi[64] = 0.0f;
         out_T_D_xi[65] = 0.0f;
         out_T_D_xi[66] = x103*x70 + x113*xi_4 + x2*x71*x87 + x29*xi_1*xi_3 + x42*xi_4 + x85 - 2.0f*x86 + x88 + x90;
-        out_T_D_xi[67] = -((double)x107) - 2.0*((double)x108) + ((double)x109) + ((double)x110) + ((double)x113)*((double)xi_3) + ((double)x49)*((double)xi_4) + ((double)x70)*((double)x73);
+        out_T_D_xi[67] = -x107 - 2.0f*x108 + x109 + x110 + x113*xi_3 + x49*xi_4 + x70*x73;
         out_T_D_xi[68] = x104*x89 + x105 + x16 + x35*x74 + x45*x61 + x69*x72 + x70*x75 + x80*x87;
         out_T_D_xi[69] = x27 - x8;
         out_T_D_xi[70] = x11 + x78*xi_2;

@@ -20,6 +20,21 @@ the checked, differentiable API.
 
 import jax.numpy
 
+
+def _sincos(x):
+    sc = jax.numpy.stack([jax.numpy.sin(x), jax.numpy.cos(x)], -1)
+    if jax.default_backend() == "cpu":
+        sc = sc @ jax.numpy.eye(2, dtype=sc.dtype)
+    return sc
+
+
+def _sin(x):
+    return _sincos(x)[..., 0]
+
+
+def _cos(x):
+    return _sincos(x)[..., 1]
+
 OPS = 425
 MATH_HASH = "0ea5162c1b71e714"
 COLUMNS = ("T_00", "T_01", "T_02", "T_03", "T_10", "T_11", "T_12", "T_13", "T_20", "T_21", "T_22", "T_23", "T_30", "T_31", "T_32", "T_33", )
@@ -56,8 +71,8 @@ def _near_pi_0(T_00, T_01, T_02, T_03, T_10, T_11, T_12, T_13, T_20, T_21, T_22,
     x27 = x11*x24
     x28 = x25 + x26 + x27
     x29 = jax.numpy.sqrt(x28)
-    x30 = 1.0 - jax.numpy.cos(x29)
-    x31 = -0.5*jax.numpy.sin(x29)/(x29*x30) + 1.0/x28
+    x30 = 1.0 - _cos(x29)
+    x31 = -0.5*_sin(x29)/(x29*x30) + 1.0/x28
     x32 = x24*x3*x31
     x33 = x32*x5
     x34 = (0.5)*x19
@@ -112,8 +127,8 @@ def _near_pi_1(T_00, T_01, T_02, T_03, T_10, T_11, T_12, T_13, T_20, T_21, T_22,
     x24 = x21*x8
     x25 = x22 + x23 + x24
     x26 = jax.numpy.sqrt(x25)
-    x27 = 1.0 - jax.numpy.cos(x26)
-    x28 = -0.5*jax.numpy.sin(x26)/(x26*x27) + 1.0/x25
+    x27 = 1.0 - _cos(x26)
+    x28 = -0.5*_sin(x26)/(x26*x27) + 1.0/x25
     x29 = x1*x21*x28
     x30 = x29*x7
     x31 = (0.5)*x16
@@ -169,8 +184,8 @@ def _near_pi_2(T_00, T_01, T_02, T_03, T_10, T_11, T_12, T_13, T_20, T_21, T_22,
     x25 = x22*x9
     x26 = x23 + x24 + x25
     x27 = jax.numpy.sqrt(x26)
-    x28 = 1.0 - jax.numpy.cos(x27)
-    x29 = -0.5*jax.numpy.sin(x27)/(x27*x28) + 1.0/x26
+    x28 = 1.0 - _cos(x27)
+    x29 = -0.5*_sin(x27)/(x27*x28) + 1.0/x26
     x30 = x2*x22*x29
     x31 = x30*x5
     x32 = (0.5)*x17
@@ -200,7 +215,7 @@ def _when_near_pi_2(T_00, T_01, T_02, T_03, T_10, T_11, T_12, T_13, T_20, T_21, 
 def _main(T_00, T_01, T_02, T_03, T_10, T_11, T_12, T_13, T_20, T_21, T_22, T_23, T_30, T_31, T_32, T_33):
     x0 = -0.5*T_12 + (0.5)*T_21
     x1 = jax.numpy.arccos((0.5)*T_00 + (0.5)*T_11 + (0.5)*T_22 - 0.5)
-    x2 = jax.numpy.sin(x1)
+    x2 = _sin(x1)
     x3 = x1/x2
     x4 = x0*x3
     x5 = (0.5)*T_02 - 0.5*T_20
@@ -216,8 +231,8 @@ def _main(T_00, T_01, T_02, T_03, T_10, T_11, T_12, T_13, T_20, T_21, T_22, T_23
     x15 = (x0*x0)*x12
     x16 = x13 + x14 + x15
     x17 = jax.numpy.sqrt(x16)
-    x18 = 1.0 - jax.numpy.cos(x17)
-    x19 = -0.5*jax.numpy.sin(x17)/(x17*x18) + 1.0/x16
+    x18 = 1.0 - _cos(x17)
+    x19 = -0.5*_sin(x17)/(x17*x18) + 1.0/x16
     x20 = x0*x12*x19
     x21 = (0.5)*x6
     x22 = x20*x7

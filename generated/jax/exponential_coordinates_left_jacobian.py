@@ -19,6 +19,21 @@ the checked, differentiable API.
 
 import jax.numpy
 
+
+def _sincos(x):
+    sc = jax.numpy.stack([jax.numpy.sin(x), jax.numpy.cos(x)], -1)
+    if jax.default_backend() == "cpu":
+        sc = sc @ jax.numpy.eye(2, dtype=sc.dtype)
+    return sc
+
+
+def _sin(x):
+    return _sincos(x)[..., 0]
+
+
+def _cos(x):
+    return _sincos(x)[..., 1]
+
 OPS = 226
 MATH_HASH = "a4133e465ca458b7"
 COLUMNS = ("xi_0", "xi_1", "xi_2", "xi_3", "xi_4", "xi_5", )
@@ -28,11 +43,11 @@ def _main(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5):
     x0 = (xi_1*xi_1)
     x1 = (xi_2*xi_2)
     x2 = x0 + x1 + (xi_0*xi_0)
-    x3 = jax.numpy.where(jax.numpy.less(x2, 1.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(8.2206352466243295e-18*x2 - 2.8114572543455206e-15) + 7.6471637318198164e-13) - 1.6059043836821613e-10) + 2.505210838544172e-8) - 2.7557319223985893e-6) + 0.00019841269841269841) - 0.0083333333333333332) + 0.16666666666666666, (jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2)) - jax.numpy.sin(jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2))))*jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, 1.0/(x2*jax.numpy.sqrt(x2))))
+    x3 = jax.numpy.where(jax.numpy.less(x2, 1.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(8.2206352466243295e-18*x2 - 2.8114572543455206e-15) + 7.6471637318198164e-13) - 1.6059043836821613e-10) + 2.505210838544172e-8) - 2.7557319223985893e-6) + 0.00019841269841269841) - 0.0083333333333333332) + 0.16666666666666666, (jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2)) - _sin(jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2))))*jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, 1.0/(x2*jax.numpy.sqrt(x2))))
     x4 = x0*x3
     x5 = x1*x3
     x6 = -x4 - x5 + 1.0
-    x7 = jax.numpy.where(jax.numpy.less(x2, 1.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(1.5619206968586225e-16*x2 - 4.7794773323873853e-14) + 1.1470745597729725e-11) - 2.08767569878681e-9) + 2.7557319223985888e-7) - 2.4801587301587302e-5) + 0.0013888888888888889) - 0.041666666666666664) + 0.5, (1.0 - jax.numpy.cos(jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2))))*jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, 1.0/x2))
+    x7 = jax.numpy.where(jax.numpy.less(x2, 1.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(1.5619206968586225e-16*x2 - 4.7794773323873853e-14) + 1.1470745597729725e-11) - 2.08767569878681e-9) + 2.7557319223985888e-7) - 2.4801587301587302e-5) + 0.0013888888888888889) - 0.041666666666666664) + 0.5, (1.0 - _cos(jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2))))*jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, 1.0/x2))
     x8 = x7*xi_2
     x9 = x3*xi_0
     x10 = x9*xi_1
@@ -55,7 +70,7 @@ def _main(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5):
     x27 = 2.0*x23*xi_4
     x28 = x3*xi_2
     x29 = 2.0*x28*xi_5
-    x30 = jax.numpy.where(jax.numpy.less(x2, 2.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(3.5231293914104271e-19 - 7.7363403412613678e-22*x2) - 1.3153016394598927e-16) + 3.936040156083729e-14) - 9.1765964781837793e-12) + 1.6059043836821615e-9) - 2.0041686708353376e-7) + 1.6534391534391536e-5) - 0.00079365079365079365) + 0.016666666666666666, (jax.numpy.where(jax.numpy.less(x2, 2.0), 1.414213562373095, jax.numpy.sqrt(x2))*jax.numpy.cos(jax.numpy.where(jax.numpy.less(x2, 2.0), 1.414213562373095, jax.numpy.sqrt(x2))) + 2.0*jax.numpy.where(jax.numpy.less(x2, 2.0), 1.414213562373095, jax.numpy.sqrt(x2)) - 3.0*jax.numpy.sin(jax.numpy.where(jax.numpy.less(x2, 2.0), 1.414213562373095, jax.numpy.sqrt(x2))))*jax.numpy.where(jax.numpy.less(x2, 2.0), 0.17677669529663688, 1.0/((x2*x2)*jax.numpy.sqrt(x2))))
+    x30 = jax.numpy.where(jax.numpy.less(x2, 2.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(3.5231293914104271e-19 - 7.7363403412613678e-22*x2) - 1.3153016394598927e-16) + 3.936040156083729e-14) - 9.1765964781837793e-12) + 1.6059043836821615e-9) - 2.0041686708353376e-7) + 1.6534391534391536e-5) - 0.00079365079365079365) + 0.016666666666666666, (jax.numpy.where(jax.numpy.less(x2, 2.0), 1.414213562373095, jax.numpy.sqrt(x2))*_cos(jax.numpy.where(jax.numpy.less(x2, 2.0), 1.414213562373095, jax.numpy.sqrt(x2))) + 2.0*jax.numpy.where(jax.numpy.less(x2, 2.0), 1.414213562373095, jax.numpy.sqrt(x2)) - 3.0*_sin(jax.numpy.where(jax.numpy.less(x2, 2.0), 1.414213562373095, jax.numpy.sqrt(x2))))*jax.numpy.where(jax.numpy.less(x2, 2.0), 0.17677669529663688, 1.0/((x2*x2)*jax.numpy.sqrt(x2))))
     x31 = x30*(xi_1*xi_1*xi_1)
     x32 = x30*xi_0
     x33 = x0*x32
@@ -66,8 +81,8 @@ def _main(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5):
     x38 = x1*xi_3
     x39 = xi_1*xi_4
     x40 = x1*x30*x39 + x32*x38 + x37*xi_5
-    x41 = jax.numpy.where(jax.numpy.less(x2, 1.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(4.7794773323873853e-14 - 1.5619206968586225e-16*x2) - 1.1470745597729725e-11) + 2.08767569878681e-9) - 2.7557319223985888e-7) + 2.4801587301587302e-5) - 0.0013888888888888889) + 0.041666666666666664) - 0.5, (jax.numpy.cos(jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2))) - 1.0)*jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, 1.0/x2))
-    x42 = jax.numpy.where(jax.numpy.less(x2, 2.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(1.7793582784901148e-21*x2 - 8.2206352466243297e-19) + 3.1238413937172451e-16) - 9.5589546647747705e-14) + 2.2941491195459449e-11) - 4.17535139757362e-9) + 5.5114638447971777e-7) - 4.9603174603174603e-5) + 0.0027777777777777779) - 0.083333333333333329, (-jax.numpy.where(jax.numpy.less(x2, 2.0), 2.0, x2) - 2.0*jax.numpy.cos(jax.numpy.where(jax.numpy.less(x2, 2.0), 1.414213562373095, jax.numpy.sqrt(x2))) + 2.0)*jax.numpy.where(jax.numpy.less(x2, 2.0), 0.25, 1.0/(x2*x2)))
+    x41 = jax.numpy.where(jax.numpy.less(x2, 1.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(4.7794773323873853e-14 - 1.5619206968586225e-16*x2) - 1.1470745597729725e-11) + 2.08767569878681e-9) - 2.7557319223985888e-7) + 2.4801587301587302e-5) - 0.0013888888888888889) + 0.041666666666666664) - 0.5, (_cos(jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2))) - 1.0)*jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, 1.0/x2))
+    x42 = jax.numpy.where(jax.numpy.less(x2, 2.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(1.7793582784901148e-21*x2 - 8.2206352466243297e-19) + 3.1238413937172451e-16) - 9.5589546647747705e-14) + 2.2941491195459449e-11) - 4.17535139757362e-9) + 5.5114638447971777e-7) - 4.9603174603174603e-5) + 0.0027777777777777779) - 0.083333333333333329, (-jax.numpy.where(jax.numpy.less(x2, 2.0), 2.0, x2) - 2.0*_cos(jax.numpy.where(jax.numpy.less(x2, 2.0), 1.414213562373095, jax.numpy.sqrt(x2))) + 2.0)*jax.numpy.where(jax.numpy.less(x2, 2.0), 0.25, 1.0/(x2*x2)))
     x43 = x1*xi_5
     x44 = x5*xi_5
     x45 = x42*xi_2
@@ -78,7 +93,7 @@ def _main(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5):
     x50 = x16*xi_3
     x51 = x32*xi_1
     x52 = x23*xi_3 + x31*xi_3 - x33*xi_4 - x34*x51 + x38*x49 + x49*x50 + x9*xi_4
-    x53 = jax.numpy.where(jax.numpy.less(x2, 2.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(8.2206352466243297e-19 - 1.7793582784901148e-21*x2) - 3.1238413937172451e-16) + 9.5589546647747705e-14) - 2.2941491195459449e-11) + 4.17535139757362e-9) - 5.5114638447971777e-7) + 4.9603174603174603e-5) - 0.0027777777777777779) + 0.083333333333333329, (jax.numpy.where(jax.numpy.less(x2, 2.0), 2.0, x2) + 2.0*jax.numpy.cos(jax.numpy.where(jax.numpy.less(x2, 2.0), 1.414213562373095, jax.numpy.sqrt(x2))) - 2.0)*jax.numpy.where(jax.numpy.less(x2, 2.0), 0.25, 1.0/(x2*x2)))
+    x53 = jax.numpy.where(jax.numpy.less(x2, 2.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(8.2206352466243297e-19 - 1.7793582784901148e-21*x2) - 3.1238413937172451e-16) + 9.5589546647747705e-14) - 2.2941491195459449e-11) + 4.17535139757362e-9) - 5.5114638447971777e-7) + 4.9603174603174603e-5) - 0.0027777777777777779) + 0.083333333333333329, (jax.numpy.where(jax.numpy.less(x2, 2.0), 2.0, x2) + 2.0*_cos(jax.numpy.where(jax.numpy.less(x2, 2.0), 1.414213562373095, jax.numpy.sqrt(x2))) - 2.0)*jax.numpy.where(jax.numpy.less(x2, 2.0), 0.25, 1.0/(x2*x2)))
     x54 = x0*x53
     x55 = x4*xi_4
     x56 = x53*xi_1
@@ -124,12 +139,12 @@ def _main(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5):
         x14,
         x39*x61 + x43*x53 - x44 + x46*x61 - x47 - x48 + x52 + x7*xi_5,
         -x29 - x36 - x62,
-        x2*x3*xi_3 + x34*x65 + x38*x53 + x39*x65 + x54*xi_3 - x63 - x64 + x66 + x67 + x68 + xi_3*jax.numpy.where(jax.numpy.less(x2, 1.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(1.5619206968586225e-16*x2 - 4.7794773323873853e-14) + 1.1470745597729725e-11) - 2.08767569878681e-9) + 2.7557319223985888e-7) - 2.4801587301587302e-5) + 0.0013888888888888889) - 0.041666666666666664) - 0.5, (-jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, x2) - jax.numpy.cos(jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2))) + 1.0)*jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, 1.0/x2)),
+        x2*x3*xi_3 + x34*x65 + x38*x53 + x39*x65 + x54*xi_3 - x63 - x64 + x66 + x67 + x68 + xi_3*jax.numpy.where(jax.numpy.less(x2, 1.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(1.5619206968586225e-16*x2 - 4.7794773323873853e-14) + 1.1470745597729725e-11) - 2.08767569878681e-9) + 2.7557319223985888e-7) - 2.4801587301587302e-5) + 0.0013888888888888889) - 0.041666666666666664) - 0.5, (-jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, x2) - _cos(jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2))) + 1.0)*jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, 1.0/x2)),
         x15,
         x19,
         x21,
         x34*x70 + x41*xi_4 + x46*x70 + x55 + x57 + x58 + x60 + x69*xi_4,
-        x17*xi_3 + x34*x71 + x38*x42 + x39*x71 + x63 + x64 - x66 - x67 + x68 + x69*xi_3 + xi_3*jax.numpy.where(jax.numpy.less(x2, 1.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(4.7794773323873853e-14 - 1.5619206968586225e-16*x2) - 1.1470745597729725e-11) + 2.08767569878681e-9) - 2.7557319223985888e-7) + 2.4801587301587302e-5) - 0.0013888888888888889) + 0.041666666666666664) + 0.5, (jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, x2) + jax.numpy.cos(jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2))) - 1.0)*jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, 1.0/x2)),
+        x17*xi_3 + x34*x71 + x38*x42 + x39*x71 + x63 + x64 - x66 - x67 + x68 + x69*xi_3 + xi_3*jax.numpy.where(jax.numpy.less(x2, 1.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(4.7794773323873853e-14 - 1.5619206968586225e-16*x2) - 1.1470745597729725e-11) + 2.08767569878681e-9) - 2.7557319223985888e-7) + 2.4801587301587302e-5) - 0.0013888888888888889) + 0.041666666666666664) + 0.5, (jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, x2) + _cos(jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2))) - 1.0)*jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, 1.0/x2)),
         -x27 - x40 - x62,
         x22,
         x25,

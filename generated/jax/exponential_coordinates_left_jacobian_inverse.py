@@ -19,6 +19,21 @@ the checked, differentiable API.
 
 import jax.numpy
 
+
+def _sincos(x):
+    sc = jax.numpy.stack([jax.numpy.sin(x), jax.numpy.cos(x)], -1)
+    if jax.default_backend() == "cpu":
+        sc = sc @ jax.numpy.eye(2, dtype=sc.dtype)
+    return sc
+
+
+def _sin(x):
+    return _sincos(x)[..., 0]
+
+
+def _cos(x):
+    return _sincos(x)[..., 1]
+
 OPS = 1102
 MATH_HASH = "403a221bb493ca86"
 COLUMNS = ("xi_0", "xi_1", "xi_2", "xi_3", "xi_4", "xi_5", )
@@ -29,7 +44,7 @@ def _main(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5):
     x1 = (xi_1*xi_1)
     x2 = (xi_2*xi_2)
     x3 = x0 + x1 + x2
-    x4 = jax.numpy.where(jax.numpy.less(x3, 4.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(1.867346851419009e-30*x3 + 7.3719898813306206e-29) + 2.9103449512297299e-27) + 1.1489581337744405e-25) + 4.5359049046753659e-24) + 1.7907034854075093e-22) + 7.0694140792589346e-21) + 2.7908929371625045e-19) + 1.1018005656720459e-17) + 4.3497373971161238e-16) + 1.717212411255569e-14) + 6.7793605926451654e-13) + 2.6765073061369358e-11) + 1.0568380277374986e-9) + 4.17535139757362e-8) + 1.6534391534391535e-6) + 6.6137566137566142e-5) + 0.0027777777777777779) + 0.16666666666666666, (-jax.numpy.where(jax.numpy.less(x3, 4.0), 2.0, jax.numpy.sqrt(x3))*jax.numpy.sin(jax.numpy.where(jax.numpy.less(x3, 4.0), 2.0, jax.numpy.sqrt(x3))) - 2.0*jax.numpy.cos(jax.numpy.where(jax.numpy.less(x3, 4.0), 2.0, jax.numpy.sqrt(x3))) + 2.0)*jax.numpy.where(jax.numpy.less(x3, 4.0), 0.25, 1.0/x3)/(1.0 - jax.numpy.cos(jax.numpy.where(jax.numpy.less(x3, 4.0), 2.0, jax.numpy.sqrt(x3)))))
+    x4 = jax.numpy.where(jax.numpy.less(x3, 4.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(1.867346851419009e-30*x3 + 7.3719898813306206e-29) + 2.9103449512297299e-27) + 1.1489581337744405e-25) + 4.5359049046753659e-24) + 1.7907034854075093e-22) + 7.0694140792589346e-21) + 2.7908929371625045e-19) + 1.1018005656720459e-17) + 4.3497373971161238e-16) + 1.717212411255569e-14) + 6.7793605926451654e-13) + 2.6765073061369358e-11) + 1.0568380277374986e-9) + 4.17535139757362e-8) + 1.6534391534391535e-6) + 6.6137566137566142e-5) + 0.0027777777777777779) + 0.16666666666666666, (-jax.numpy.where(jax.numpy.less(x3, 4.0), 2.0, jax.numpy.sqrt(x3))*_sin(jax.numpy.where(jax.numpy.less(x3, 4.0), 2.0, jax.numpy.sqrt(x3))) - 2.0*_cos(jax.numpy.where(jax.numpy.less(x3, 4.0), 2.0, jax.numpy.sqrt(x3))) + 2.0)*jax.numpy.where(jax.numpy.less(x3, 4.0), 0.25, 1.0/x3)/(1.0 - _cos(jax.numpy.where(jax.numpy.less(x3, 4.0), 2.0, jax.numpy.sqrt(x3)))))
     x5 = (0.5)*x1
     x6 = x4*x5
     x7 = (0.5)*x2
@@ -54,16 +69,16 @@ def _main(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5):
     x26 = x11 + x15
     x27 = -x22 + (0.5)*x4*xi_1*xi_2
     x28 = x20 + x8
-    x29 = jax.numpy.where(jax.numpy.less(x3, 1.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(4.7794773323873853e-14 - 1.5619206968586225e-16*x3) - 1.1470745597729725e-11) + 2.08767569878681e-9) - 2.7557319223985888e-7) + 2.4801587301587302e-5) - 0.0013888888888888889) + 0.041666666666666664) - 0.5, (jax.numpy.cos(jax.numpy.where(jax.numpy.less(x3, 1.0), 1.0, jax.numpy.sqrt(x3))) - 1.0)*jax.numpy.where(jax.numpy.less(x3, 1.0), 1.0, 1.0/x3))
+    x29 = jax.numpy.where(jax.numpy.less(x3, 1.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(4.7794773323873853e-14 - 1.5619206968586225e-16*x3) - 1.1470745597729725e-11) + 2.08767569878681e-9) - 2.7557319223985888e-7) + 2.4801587301587302e-5) - 0.0013888888888888889) + 0.041666666666666664) - 0.5, (_cos(jax.numpy.where(jax.numpy.less(x3, 1.0), 1.0, jax.numpy.sqrt(x3))) - 1.0)*jax.numpy.where(jax.numpy.less(x3, 1.0), 1.0, 1.0/x3))
     x30 = x29*xi_4
     x31 = x29*xi_5
-    x32 = jax.numpy.where(jax.numpy.less(x3, 1.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(8.2206352466243295e-18*x3 - 2.8114572543455206e-15) + 7.6471637318198164e-13) - 1.6059043836821613e-10) + 2.505210838544172e-8) - 2.7557319223985893e-6) + 0.00019841269841269841) - 0.0083333333333333332) + 0.16666666666666666, (jax.numpy.where(jax.numpy.less(x3, 1.0), 1.0, jax.numpy.sqrt(x3)) - jax.numpy.sin(jax.numpy.where(jax.numpy.less(x3, 1.0), 1.0, jax.numpy.sqrt(x3))))*jax.numpy.where(jax.numpy.less(x3, 1.0), 1.0, 1.0/(x3*jax.numpy.sqrt(x3))))
+    x32 = jax.numpy.where(jax.numpy.less(x3, 1.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(8.2206352466243295e-18*x3 - 2.8114572543455206e-15) + 7.6471637318198164e-13) - 1.6059043836821613e-10) + 2.505210838544172e-8) - 2.7557319223985893e-6) + 0.00019841269841269841) - 0.0083333333333333332) + 0.16666666666666666, (jax.numpy.where(jax.numpy.less(x3, 1.0), 1.0, jax.numpy.sqrt(x3)) - _sin(jax.numpy.where(jax.numpy.less(x3, 1.0), 1.0, jax.numpy.sqrt(x3))))*jax.numpy.where(jax.numpy.less(x3, 1.0), 1.0, 1.0/(x3*jax.numpy.sqrt(x3))))
     x33 = x32*xi_4
     x34 = x33*xi_1
     x35 = x32*xi_5
     x36 = x35*xi_2
     x37 = (xi_1*xi_1*xi_1)
-    x38 = jax.numpy.where(jax.numpy.less(x3, 2.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(1.7793582784901148e-21*x3 - 8.2206352466243297e-19) + 3.1238413937172451e-16) - 9.5589546647747705e-14) + 2.2941491195459449e-11) - 4.17535139757362e-9) + 5.5114638447971777e-7) - 4.9603174603174603e-5) + 0.0027777777777777779) - 0.083333333333333329, (-jax.numpy.where(jax.numpy.less(x3, 2.0), 2.0, x3) - 2.0*jax.numpy.cos(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))) + 2.0)*jax.numpy.where(jax.numpy.less(x3, 2.0), 0.25, 1.0/(x3*x3)))
+    x38 = jax.numpy.where(jax.numpy.less(x3, 2.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(1.7793582784901148e-21*x3 - 8.2206352466243297e-19) + 3.1238413937172451e-16) - 9.5589546647747705e-14) + 2.2941491195459449e-11) - 4.17535139757362e-9) + 5.5114638447971777e-7) - 4.9603174603174603e-5) + 0.0027777777777777779) - 0.083333333333333329, (-jax.numpy.where(jax.numpy.less(x3, 2.0), 2.0, x3) - 2.0*_cos(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))) + 2.0)*jax.numpy.where(jax.numpy.less(x3, 2.0), 0.25, 1.0/(x3*x3)))
     x39 = x37*x38
     x40 = (xi_2*xi_2*xi_2)
     x41 = x38*x40
@@ -87,7 +102,7 @@ def _main(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5):
     x59 = x1*x10
     x60 = x35*x59
     x61 = x37*xi_4
-    x62 = jax.numpy.where(jax.numpy.less(x3, 1.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(4.7794773323873853e-14 - 1.5619206968586225e-16*x3) - 1.1470745597729725e-11) + 2.08767569878681e-9) - 2.7557319223985888e-7) + 2.4801587301587302e-5) - 0.0013888888888888889) + 0.041666666666666664) + 0.5, (jax.numpy.where(jax.numpy.less(x3, 1.0), 1.0, x3) + jax.numpy.cos(jax.numpy.where(jax.numpy.less(x3, 1.0), 1.0, jax.numpy.sqrt(x3))) - 1.0)*jax.numpy.where(jax.numpy.less(x3, 1.0), 1.0, 1.0/x3))
+    x62 = jax.numpy.where(jax.numpy.less(x3, 1.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(4.7794773323873853e-14 - 1.5619206968586225e-16*x3) - 1.1470745597729725e-11) + 2.08767569878681e-9) - 2.7557319223985888e-7) + 2.4801587301587302e-5) - 0.0013888888888888889) + 0.041666666666666664) + 0.5, (jax.numpy.where(jax.numpy.less(x3, 1.0), 1.0, x3) + _cos(jax.numpy.where(jax.numpy.less(x3, 1.0), 1.0, jax.numpy.sqrt(x3))) - 1.0)*jax.numpy.where(jax.numpy.less(x3, 1.0), 1.0, 1.0/x3))
     x63 = x19*x62
     x64 = x40*xi_5
     x65 = x4*xi_3
@@ -97,7 +112,7 @@ def _main(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5):
     x69 = x4*x62
     x70 = x57*xi_4
     x71 = x59*xi_5
-    x72 = jax.numpy.where(jax.numpy.less(x3, 2.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(3.5231293914104271e-19 - 7.7363403412613678e-22*x3) - 1.3153016394598927e-16) + 3.936040156083729e-14) - 9.1765964781837793e-12) + 1.6059043836821615e-9) - 2.0041686708353376e-7) + 1.6534391534391536e-5) - 0.00079365079365079365) + 0.016666666666666666, (jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))*jax.numpy.cos(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))) + 2.0*jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3)) - 3.0*jax.numpy.sin(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))))*jax.numpy.where(jax.numpy.less(x3, 2.0), 0.17677669529663688, 1.0/((x3*x3)*jax.numpy.sqrt(x3))))
+    x72 = jax.numpy.where(jax.numpy.less(x3, 2.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(3.5231293914104271e-19 - 7.7363403412613678e-22*x3) - 1.3153016394598927e-16) + 3.936040156083729e-14) - 9.1765964781837793e-12) + 1.6059043836821615e-9) - 2.0041686708353376e-7) + 1.6534391534391536e-5) - 0.00079365079365079365) + 0.016666666666666666, (jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))*_cos(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))) + 2.0*jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3)) - 3.0*_sin(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))))*jax.numpy.where(jax.numpy.less(x3, 2.0), 0.17677669529663688, 1.0/((x3*x3)*jax.numpy.sqrt(x3))))
     x73 = (0.25)*x1
     x74 = (0.25)*x2
     x75 = (0.25)*x0 + x73 + x74
@@ -148,20 +163,20 @@ def _main(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5):
     x120 = x118*x119
     x121 = x119*x74
     x122 = x119*x73
-    x123 = jax.numpy.where(jax.numpy.less(x3, 1.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(1.5619206968586225e-16*x3 - 4.7794773323873853e-14) + 1.1470745597729725e-11) - 2.08767569878681e-9) + 2.7557319223985888e-7) - 2.4801587301587302e-5) + 0.0013888888888888889) - 0.041666666666666664) + 0.5, (1.0 - jax.numpy.cos(jax.numpy.where(jax.numpy.less(x3, 1.0), 1.0, jax.numpy.sqrt(x3))))*jax.numpy.where(jax.numpy.less(x3, 1.0), 1.0, 1.0/x3))
+    x123 = jax.numpy.where(jax.numpy.less(x3, 1.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(1.5619206968586225e-16*x3 - 4.7794773323873853e-14) + 1.1470745597729725e-11) - 2.08767569878681e-9) + 2.7557319223985888e-7) - 2.4801587301587302e-5) + 0.0013888888888888889) - 0.041666666666666664) + 0.5, (1.0 - _cos(jax.numpy.where(jax.numpy.less(x3, 1.0), 1.0, jax.numpy.sqrt(x3))))*jax.numpy.where(jax.numpy.less(x3, 1.0), 1.0, 1.0/x3))
     x124 = x123*xi_5
     x125 = (0.5)*x0 + x5 + x7
     x126 = x125*x35
-    x127 = jax.numpy.cos(jax.numpy.sqrt(x3))
+    x127 = _cos(jax.numpy.sqrt(x3))
     x128 = x127 - 1.0
     x129 = x19*xi_5
-    x130 = jax.numpy.where(jax.numpy.less(x3, 0.25), x3*(x3*(x3*(x3*(x3*(x3*(1.1853103784320715e-11 - 4.9044309881360752e-14*x3) - 2.1794416635686479e-9) + 2.9227459783015339e-7) - 2.7006172839506174e-5) + 0.0015873015873015873) - 0.052777777777777778) - 0.16666666666666666, (-jax.numpy.where(jax.numpy.less(x3, 0.25), 0.0625, (x3*x3)) - jax.numpy.where(jax.numpy.less(x3, 0.25), 0.25, x3)*jax.numpy.cos(jax.numpy.where(jax.numpy.less(x3, 0.25), 0.5, jax.numpy.sqrt(x3))) + 5.0*jax.numpy.where(jax.numpy.less(x3, 0.25), 0.25, x3) + 8.0*jax.numpy.cos(jax.numpy.where(jax.numpy.less(x3, 0.25), 0.5, jax.numpy.sqrt(x3))) - 8.0)*jax.numpy.where(jax.numpy.less(x3, 0.25), 16.0, 1.0/(x3*x3)))
+    x130 = jax.numpy.where(jax.numpy.less(x3, 0.25), x3*(x3*(x3*(x3*(x3*(x3*(1.1853103784320715e-11 - 4.9044309881360752e-14*x3) - 2.1794416635686479e-9) + 2.9227459783015339e-7) - 2.7006172839506174e-5) + 0.0015873015873015873) - 0.052777777777777778) - 0.16666666666666666, (-jax.numpy.where(jax.numpy.less(x3, 0.25), 0.0625, (x3*x3)) - jax.numpy.where(jax.numpy.less(x3, 0.25), 0.25, x3)*_cos(jax.numpy.where(jax.numpy.less(x3, 0.25), 0.5, jax.numpy.sqrt(x3))) + 5.0*jax.numpy.where(jax.numpy.less(x3, 0.25), 0.25, x3) + 8.0*_cos(jax.numpy.where(jax.numpy.less(x3, 0.25), 0.5, jax.numpy.sqrt(x3))) - 8.0)*jax.numpy.where(jax.numpy.less(x3, 0.25), 16.0, 1.0/(x3*x3)))
     x131 = x74*xi_5
     x132 = x2*xi_5
     x133 = x18*x72
     x134 = x75 + 0.5
     x135 = x2*x35
-    x136 = jax.numpy.where(jax.numpy.less(x3, 0.5), x3*(x3*(x3*(x3*(x3*(x3*(3.4412236793189175e-11 - 1.4338431997162155e-13*x3) - 6.2630270963604301e-9) + 8.2671957671957675e-7) - 7.4404761904761911e-5) + 0.0041666666666666666) - 0.125) - 0.5, (-2.0*jax.numpy.where(jax.numpy.less(x3, 0.5), 0.5, x3) - 3.0*jax.numpy.cos(jax.numpy.where(jax.numpy.less(x3, 0.5), 0.70710678118654752, jax.numpy.sqrt(x3))) + 3.0)*jax.numpy.where(jax.numpy.less(x3, 0.5), 2.0, 1.0/x3))
+    x136 = jax.numpy.where(jax.numpy.less(x3, 0.5), x3*(x3*(x3*(x3*(x3*(x3*(3.4412236793189175e-11 - 1.4338431997162155e-13*x3) - 6.2630270963604301e-9) + 8.2671957671957675e-7) - 7.4404761904761911e-5) + 0.0041666666666666666) - 0.125) - 0.5, (-2.0*jax.numpy.where(jax.numpy.less(x3, 0.5), 0.5, x3) - 3.0*_cos(jax.numpy.where(jax.numpy.less(x3, 0.5), 0.70710678118654752, jax.numpy.sqrt(x3))) + 3.0)*jax.numpy.where(jax.numpy.less(x3, 0.5), 2.0, 1.0/x3))
     x137 = x8*xi_5
     x138 = x46*xi_2
     x139 = (0.25)*x130
@@ -188,10 +203,10 @@ def _main(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5):
     x160 = x143*x89
     x161 = x145*x89
     x162 = x123*xi_4
-    x163 = jax.numpy.where(jax.numpy.less(x3, 0.5), x3*(x3*(x3*(x3*(x3*(x3*(1.4338431997162155e-13*x3 - 3.4412236793189175e-11) + 6.2630270963604301e-9) - 8.2671957671957675e-7) + 7.4404761904761911e-5) - 0.0041666666666666666) + 0.125) + 0.5, (2.0*jax.numpy.where(jax.numpy.less(x3, 0.5), 0.5, x3) + 3.0*jax.numpy.cos(jax.numpy.where(jax.numpy.less(x3, 0.5), 0.70710678118654752, jax.numpy.sqrt(x3))) - 3.0)*jax.numpy.where(jax.numpy.less(x3, 0.5), 2.0, 1.0/x3))
+    x163 = jax.numpy.where(jax.numpy.less(x3, 0.5), x3*(x3*(x3*(x3*(x3*(x3*(1.4338431997162155e-13*x3 - 3.4412236793189175e-11) + 6.2630270963604301e-9) - 8.2671957671957675e-7) + 7.4404761904761911e-5) - 0.0041666666666666666) + 0.125) + 0.5, (2.0*jax.numpy.where(jax.numpy.less(x3, 0.5), 0.5, x3) + 3.0*_cos(jax.numpy.where(jax.numpy.less(x3, 0.5), 0.70710678118654752, jax.numpy.sqrt(x3))) - 3.0)*jax.numpy.where(jax.numpy.less(x3, 0.5), 2.0, 1.0/x3))
     x164 = x163*xi_3
     x165 = x33*xi_0
-    x166 = jax.numpy.where(jax.numpy.less(x3, 2.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(8.2206352466243297e-19 - 1.7793582784901148e-21*x3) - 3.1238413937172451e-16) + 9.5589546647747705e-14) - 2.2941491195459449e-11) + 4.17535139757362e-9) - 5.5114638447971777e-7) + 4.9603174603174603e-5) - 0.0027777777777777779) + 0.083333333333333329, (jax.numpy.where(jax.numpy.less(x3, 2.0), 2.0, x3) + 2.0*jax.numpy.cos(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))) - 2.0)*jax.numpy.where(jax.numpy.less(x3, 2.0), 0.25, 1.0/(x3*x3)))
+    x166 = jax.numpy.where(jax.numpy.less(x3, 2.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(8.2206352466243297e-19 - 1.7793582784901148e-21*x3) - 3.1238413937172451e-16) + 9.5589546647747705e-14) - 2.2941491195459449e-11) + 4.17535139757362e-9) - 5.5114638447971777e-7) + 4.9603174603174603e-5) - 0.0027777777777777779) + 0.083333333333333329, (jax.numpy.where(jax.numpy.less(x3, 2.0), 2.0, x3) + 2.0*_cos(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))) - 2.0)*jax.numpy.where(jax.numpy.less(x3, 2.0), 0.25, 1.0/(x3*x3)))
     x167 = x166*xi_0
     x168 = x1*xi_4
     x169 = x52*(-x125 - 1.0)
@@ -207,7 +222,7 @@ def _main(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5):
     x179 = x50*xi_1
     x180 = -x72*x76
     x181 = x180*xi_0
-    x182 = jax.numpy.where(jax.numpy.less(x3, 1.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(1.5619206968586225e-16*x3 - 4.7794773323873853e-14) + 1.1470745597729725e-11) - 2.08767569878681e-9) + 2.7557319223985888e-7) - 2.4801587301587302e-5) + 0.0013888888888888889) - 0.041666666666666664) - 0.5, (-jax.numpy.where(jax.numpy.less(x3, 1.0), 1.0, x3) - jax.numpy.cos(jax.numpy.where(jax.numpy.less(x3, 1.0), 1.0, jax.numpy.sqrt(x3))) + 1.0)*jax.numpy.where(jax.numpy.less(x3, 1.0), 1.0, 1.0/x3))
+    x182 = jax.numpy.where(jax.numpy.less(x3, 1.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(1.5619206968586225e-16*x3 - 4.7794773323873853e-14) + 1.1470745597729725e-11) - 2.08767569878681e-9) + 2.7557319223985888e-7) - 2.4801587301587302e-5) + 0.0013888888888888889) - 0.041666666666666664) - 0.5, (-jax.numpy.where(jax.numpy.less(x3, 1.0), 1.0, x3) - _cos(jax.numpy.where(jax.numpy.less(x3, 1.0), 1.0, jax.numpy.sqrt(x3))) + 1.0)*jax.numpy.where(jax.numpy.less(x3, 1.0), 1.0, 1.0/x3))
     x183 = x111*x182
     x184 = x111*x3
     x185 = x11*x52
@@ -244,7 +259,7 @@ def _main(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5):
     x216 = -x125
     x217 = -x128
     x218 = x19*xi_4
-    x219 = jax.numpy.where(jax.numpy.less(x3, 0.25), x3*(x3*(x3*(x3*(x3*(x3*(4.9044309881360752e-14*x3 - 1.1853103784320715e-11) + 2.1794416635686479e-9) - 2.9227459783015339e-7) + 2.7006172839506174e-5) - 0.0015873015873015873) + 0.052777777777777778) + 0.16666666666666666, (jax.numpy.where(jax.numpy.less(x3, 0.25), 0.0625, (x3*x3)) + jax.numpy.where(jax.numpy.less(x3, 0.25), 0.25, x3)*jax.numpy.cos(jax.numpy.where(jax.numpy.less(x3, 0.25), 0.5, jax.numpy.sqrt(x3))) - 5.0*jax.numpy.where(jax.numpy.less(x3, 0.25), 0.25, x3) - 8.0*jax.numpy.cos(jax.numpy.where(jax.numpy.less(x3, 0.25), 0.5, jax.numpy.sqrt(x3))) + 8.0)*jax.numpy.where(jax.numpy.less(x3, 0.25), 16.0, 1.0/(x3*x3)))
+    x219 = jax.numpy.where(jax.numpy.less(x3, 0.25), x3*(x3*(x3*(x3*(x3*(x3*(4.9044309881360752e-14*x3 - 1.1853103784320715e-11) + 2.1794416635686479e-9) - 2.9227459783015339e-7) + 2.7006172839506174e-5) - 0.0015873015873015873) + 0.052777777777777778) + 0.16666666666666666, (jax.numpy.where(jax.numpy.less(x3, 0.25), 0.0625, (x3*x3)) + jax.numpy.where(jax.numpy.less(x3, 0.25), 0.25, x3)*_cos(jax.numpy.where(jax.numpy.less(x3, 0.25), 0.5, jax.numpy.sqrt(x3))) - 5.0*jax.numpy.where(jax.numpy.less(x3, 0.25), 0.25, x3) - 8.0*_cos(jax.numpy.where(jax.numpy.less(x3, 0.25), 0.5, jax.numpy.sqrt(x3))) + 8.0)*jax.numpy.where(jax.numpy.less(x3, 0.25), 16.0, 1.0/(x3*x3)))
     x220 = x219*x73
     x221 = x3*x72
     x222 = -x134
@@ -361,12 +376,12 @@ def _main(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5):
         x16,
         x10*x148*x163 + x10*x232 + x129*x217 + x131*x219 + x132*x221 + x135*x222 + x137*x163 + x138*x221 + x138*x225 + x138*x235 + x140*x221 + x140*x225 + x140*x235 + x142*x174 + x143*x222 + x145*x222 - x149 + x152 - x156 - x159 + x160 + x161 + x215 + x216*x35 + x31,
         x1*x257 + x101 + x106*x213 + x106*x264 + x114*x83 + x118*x207 + x166*x61 + x180*x61 + x180*x80 + x182*x50 + x182*x53*x65 + x203*x54 + x203*x60 + x207*x36 + x252*x46 + x252*x50 + x253*x48 + x254*xi_1 + x255*x36 + x256*x61 + x258*x259 + x260*x71 + x261*x262 + x263*x85 + x265*x53 + x272 - x43 - x54 - x60 + x90 + x97,
-        x1*x276 + x134*x212 + x134*x247 + x136*x199 + x136*x281 + x141*x195*x3 + x164*x6 + x164*x8 - x176*x274 - x190 + x194*jax.numpy.where(jax.numpy.less(x3, 0.5), x3*(x3*(x3*(x3*(x3*(x3*(x3*(1.1661924691025221e-11 - 4.8419541602617299e-14*x3) - 2.1335586811777287e-9) + 2.8392389503500614e-7) - 2.5903880070546738e-5) + 0.001488095238095238) - 0.047222222222222221) - 0.33333333333333331) + 2.0, (-jax.numpy.where(jax.numpy.less(x3, 0.5), 0.25, (x3*x3)) - jax.numpy.where(jax.numpy.less(x3, 0.5), 0.5, x3)*jax.numpy.cos(jax.numpy.where(jax.numpy.less(x3, 0.5), 0.70710678118654752, jax.numpy.sqrt(x3))) + 5.0*jax.numpy.where(jax.numpy.less(x3, 0.5), 0.5, x3) + 4.0*jax.numpy.cos(jax.numpy.where(jax.numpy.less(x3, 0.5), 0.70710678118654752, jax.numpy.sqrt(x3))) - 4.0)*jax.numpy.where(jax.numpy.less(x3, 0.5), 2.0, 1.0/x3)) + x2*x276 + x219*x275 + x220*xi_3 + x222*x55 + x223*x52 + x227*x275 + x228*xi_3 + x273*x52 + x277 - x278 + x279*x48 + x279*x50 + x280*x48 + x280*x50 - x282 - x283 + x284*x48 + x284*x50 + x285 + x286 + x287 + x288 - x289 - x290 + x299,
+        x1*x276 + x134*x212 + x134*x247 + x136*x199 + x136*x281 + x141*x195*x3 + x164*x6 + x164*x8 - x176*x274 - x190 + x194*jax.numpy.where(jax.numpy.less(x3, 0.5), x3*(x3*(x3*(x3*(x3*(x3*(x3*(1.1661924691025221e-11 - 4.8419541602617299e-14*x3) - 2.1335586811777287e-9) + 2.8392389503500614e-7) - 2.5903880070546738e-5) + 0.001488095238095238) - 0.047222222222222221) - 0.33333333333333331) + 2.0, (-jax.numpy.where(jax.numpy.less(x3, 0.5), 0.25, (x3*x3)) - jax.numpy.where(jax.numpy.less(x3, 0.5), 0.5, x3)*_cos(jax.numpy.where(jax.numpy.less(x3, 0.5), 0.70710678118654752, jax.numpy.sqrt(x3))) + 5.0*jax.numpy.where(jax.numpy.less(x3, 0.5), 0.5, x3) + 4.0*_cos(jax.numpy.where(jax.numpy.less(x3, 0.5), 0.70710678118654752, jax.numpy.sqrt(x3))) - 4.0)*jax.numpy.where(jax.numpy.less(x3, 0.5), 2.0, 1.0/x3)) + x2*x276 + x219*x275 + x220*xi_3 + x222*x55 + x223*x52 + x227*x275 + x228*xi_3 + x273*x52 + x277 - x278 + x279*x48 + x279*x50 + x280*x48 + x280*x50 - x282 - x283 + x284*x48 + x284*x50 + x285 + x286 + x287 + x288 - x289 - x290 + x299,
         x17,
         x21,
         x25,
         x11*x136*x146 + x128*x218 + x133*x168 + x133*x179 + x133*x226 + x134*x229 + x134*x231 + x136*x224 + x136*x233 + x139*x179 + x139*x226 + x154*x179 + x154*x226 + x162 + x234 - x237 + x238 + x239 - x240 - x241 + x251 + x254 + x300*xi_4 + x301*x33 + x302*xi_4,
-        x1*x303 + x130*x275 + x134*x55 + x153*x275 + x163*x199 + x163*x281 + x176*x274 + x190 + x194*x227*x3 + x194*jax.numpy.where(jax.numpy.less(x3, 0.5), x3*(x3*(x3*(x3*(x3*(x3*(x3*(4.8419541602617299e-14*x3 - 1.1661924691025221e-11) + 2.1335586811777287e-9) - 2.8392389503500614e-7) + 2.5903880070546738e-5) - 0.001488095238095238) + 0.047222222222222221) + 0.33333333333333331) - 2.0, (jax.numpy.where(jax.numpy.less(x3, 0.5), 0.25, (x3*x3)) + jax.numpy.where(jax.numpy.less(x3, 0.5), 0.5, x3)*jax.numpy.cos(jax.numpy.where(jax.numpy.less(x3, 0.5), 0.70710678118654752, jax.numpy.sqrt(x3))) - 5.0*jax.numpy.where(jax.numpy.less(x3, 0.5), 0.5, x3) - 4.0*jax.numpy.cos(jax.numpy.where(jax.numpy.less(x3, 0.5), 0.70710678118654752, jax.numpy.sqrt(x3))) + 4.0)*jax.numpy.where(jax.numpy.less(x3, 0.5), 2.0, 1.0/x3)) + x2*x303 + x212*x222 + x222*x247 - x273*x52 - x277 + x278 + x282 + x283 - x285 - x286 - x287 - x288 + x289 + x290 + x299 + x300*xi_3 + x301*x52 + x302*xi_3 + x304*x6 + x304*x8 + x305*x48 + x305*x50 + x306*x48 + x306*x50 + x307*x48 + x307*x50,
+        x1*x303 + x130*x275 + x134*x55 + x153*x275 + x163*x199 + x163*x281 + x176*x274 + x190 + x194*x227*x3 + x194*jax.numpy.where(jax.numpy.less(x3, 0.5), x3*(x3*(x3*(x3*(x3*(x3*(x3*(4.8419541602617299e-14*x3 - 1.1661924691025221e-11) + 2.1335586811777287e-9) - 2.8392389503500614e-7) + 2.5903880070546738e-5) - 0.001488095238095238) + 0.047222222222222221) + 0.33333333333333331) - 2.0, (jax.numpy.where(jax.numpy.less(x3, 0.5), 0.25, (x3*x3)) + jax.numpy.where(jax.numpy.less(x3, 0.5), 0.5, x3)*_cos(jax.numpy.where(jax.numpy.less(x3, 0.5), 0.70710678118654752, jax.numpy.sqrt(x3))) - 5.0*jax.numpy.where(jax.numpy.less(x3, 0.5), 0.5, x3) - 4.0*_cos(jax.numpy.where(jax.numpy.less(x3, 0.5), 0.70710678118654752, jax.numpy.sqrt(x3))) + 4.0)*jax.numpy.where(jax.numpy.less(x3, 0.5), 2.0, 1.0/x3)) + x2*x303 + x212*x222 + x222*x247 - x273*x52 - x277 + x278 + x282 + x283 - x285 - x286 - x287 - x288 + x289 + x290 + x299 + x300*xi_3 + x301*x52 + x302*xi_3 + x304*x6 + x304*x8 + x305*x48 + x305*x50 + x306*x48 + x306*x50 + x307*x48 + x307*x50,
         x107*x213 + x107*x264 + x112*x83 + x118*x250 + x126*xi_2 + x166*x64 + x180*x64 + x180*x79 + x182*x68 + x2*x22*x265 + x2*x257 + x203*x56 + x203*x58 + x248 + x250*x34 + x253*x50 + x255*x34 + x256*x64 + x258*x262 + x259*x261 + x260*x70 + x263*x92 + x272 + x308*x46 + x308*x48 - x45 - x56 - x58 + x93 + x98 + x99,
         x26,
         x27,

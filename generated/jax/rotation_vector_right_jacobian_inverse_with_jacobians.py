@@ -19,6 +19,21 @@ the checked, differentiable API.
 
 import jax.numpy
 
+
+def _sincos(x):
+    sc = jax.numpy.stack([jax.numpy.sin(x), jax.numpy.cos(x)], -1)
+    if jax.default_backend() == "cpu":
+        sc = sc @ jax.numpy.eye(2, dtype=sc.dtype)
+    return sc
+
+
+def _sin(x):
+    return _sincos(x)[..., 0]
+
+
+def _cos(x):
+    return _sincos(x)[..., 1]
+
 OPS = 101
 MATH_HASH = "5d3f68d13ec90558"
 COLUMNS = ("w_0", "w_1", "w_2", )
@@ -29,7 +44,7 @@ def _main(w_0, w_1, w_2):
     x1 = (w_1*w_1)
     x2 = (w_2*w_2)
     x3 = x0 + x1 + x2
-    x4 = jax.numpy.where(jax.numpy.less(x3, 4.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(1.867346851419009e-30*x3 + 7.3719898813306206e-29) + 2.9103449512297299e-27) + 1.1489581337744405e-25) + 4.5359049046753659e-24) + 1.7907034854075093e-22) + 7.0694140792589346e-21) + 2.7908929371625045e-19) + 1.1018005656720459e-17) + 4.3497373971161238e-16) + 1.717212411255569e-14) + 6.7793605926451654e-13) + 2.6765073061369358e-11) + 1.0568380277374986e-9) + 4.17535139757362e-8) + 1.6534391534391535e-6) + 6.6137566137566142e-5) + 0.0027777777777777779) + 0.16666666666666666, (-jax.numpy.where(jax.numpy.less(x3, 4.0), 2.0, jax.numpy.sqrt(x3))*jax.numpy.sin(jax.numpy.where(jax.numpy.less(x3, 4.0), 2.0, jax.numpy.sqrt(x3))) - 2.0*jax.numpy.cos(jax.numpy.where(jax.numpy.less(x3, 4.0), 2.0, jax.numpy.sqrt(x3))) + 2.0)*jax.numpy.where(jax.numpy.less(x3, 4.0), 0.25, 1.0/x3)/(1.0 - jax.numpy.cos(jax.numpy.where(jax.numpy.less(x3, 4.0), 2.0, jax.numpy.sqrt(x3)))))
+    x4 = jax.numpy.where(jax.numpy.less(x3, 4.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(1.867346851419009e-30*x3 + 7.3719898813306206e-29) + 2.9103449512297299e-27) + 1.1489581337744405e-25) + 4.5359049046753659e-24) + 1.7907034854075093e-22) + 7.0694140792589346e-21) + 2.7908929371625045e-19) + 1.1018005656720459e-17) + 4.3497373971161238e-16) + 1.717212411255569e-14) + 6.7793605926451654e-13) + 2.6765073061369358e-11) + 1.0568380277374986e-9) + 4.17535139757362e-8) + 1.6534391534391535e-6) + 6.6137566137566142e-5) + 0.0027777777777777779) + 0.16666666666666666, (-jax.numpy.where(jax.numpy.less(x3, 4.0), 2.0, jax.numpy.sqrt(x3))*_sin(jax.numpy.where(jax.numpy.less(x3, 4.0), 2.0, jax.numpy.sqrt(x3))) - 2.0*_cos(jax.numpy.where(jax.numpy.less(x3, 4.0), 2.0, jax.numpy.sqrt(x3))) + 2.0)*jax.numpy.where(jax.numpy.less(x3, 4.0), 0.25, 1.0/x3)/(1.0 - _cos(jax.numpy.where(jax.numpy.less(x3, 4.0), 2.0, jax.numpy.sqrt(x3)))))
     x5 = (0.5)*x1
     x6 = x4*x5
     x7 = (0.5)*x2
@@ -42,7 +57,7 @@ def _main(w_0, w_1, w_2):
     x14 = -0.5*x3*x4 + 1.0
     x15 = (0.5)*w_0
     x16 = w_1*x4
-    x17 = jax.numpy.where(jax.numpy.less(x3, 2.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(-3.4468744013233212e-24*x3 - 1.2700533733091026e-22) - 4.6558290620595242e-21) - 1.6966593790221443e-19) - 6.1399644617575102e-18) - 2.2036011313440919e-16) - 7.829527314809022e-15) - 2.7475398580089105e-13) - 9.4911048297032324e-12) - 3.2118087673643227e-10) - 1.0568380277374987e-8) - 3.340281118058896e-7) - 9.9206349206349206e-6) - 0.00026455026455026457) - 0.0055555555555555558, (4.0*((1.0 - jax.numpy.cos(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))))*(1.0 - jax.numpy.cos(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))))) - (1.0 - jax.numpy.cos(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))))*jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))*jax.numpy.sin(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))) + (1.0 - jax.numpy.cos(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))))*jax.numpy.where(jax.numpy.less(x3, 2.0), 2.0, x3)*jax.numpy.cos(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))) - jax.numpy.where(jax.numpy.less(x3, 2.0), 2.0, x3)*(jax.numpy.sin(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3)))*jax.numpy.sin(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3)))))*jax.numpy.where(jax.numpy.less(x3, 2.0), 0.25, 1.0/(x3*x3))/((1.0 - jax.numpy.cos(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))))*(1.0 - jax.numpy.cos(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))))))
+    x17 = jax.numpy.where(jax.numpy.less(x3, 2.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(-3.4468744013233212e-24*x3 - 1.2700533733091026e-22) - 4.6558290620595242e-21) - 1.6966593790221443e-19) - 6.1399644617575102e-18) - 2.2036011313440919e-16) - 7.829527314809022e-15) - 2.7475398580089105e-13) - 9.4911048297032324e-12) - 3.2118087673643227e-10) - 1.0568380277374987e-8) - 3.340281118058896e-7) - 9.9206349206349206e-6) - 0.00026455026455026457) - 0.0055555555555555558, (4.0*((1.0 - _cos(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))))*(1.0 - _cos(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))))) - (1.0 - _cos(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))))*jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))*_sin(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))) + (1.0 - _cos(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))))*jax.numpy.where(jax.numpy.less(x3, 2.0), 2.0, x3)*_cos(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))) - jax.numpy.where(jax.numpy.less(x3, 2.0), 2.0, x3)*(_sin(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3)))*_sin(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3)))))*jax.numpy.where(jax.numpy.less(x3, 2.0), 0.25, 1.0/(x3*x3))/((1.0 - _cos(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))))*(1.0 - _cos(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))))))
     x18 = x15*x17
     x19 = -x16
     x20 = (w_1*w_1*w_1)
@@ -55,7 +70,7 @@ def _main(w_0, w_1, w_2):
     x27 = x17*x26 + x21*x25
     x28 = x10*x4
     x29 = (0.5)*x0 + x5 + x7
-    x30 = jax.numpy.where(jax.numpy.less(x3, 2.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(3.4468744013233212e-24*x3 + 1.2700533733091026e-22) + 4.6558290620595242e-21) + 1.6966593790221443e-19) + 6.1399644617575102e-18) + 2.2036011313440919e-16) + 7.829527314809022e-15) + 2.7475398580089105e-13) + 9.4911048297032324e-12) + 3.2118087673643227e-10) + 1.0568380277374987e-8) + 3.340281118058896e-7) + 9.9206349206349206e-6) + 0.00026455026455026457) + 0.0055555555555555558, (-4.0*((1.0 - jax.numpy.cos(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))))*(1.0 - jax.numpy.cos(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))))) + (1.0 - jax.numpy.cos(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))))*jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))*jax.numpy.sin(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))) - (1.0 - jax.numpy.cos(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))))*jax.numpy.where(jax.numpy.less(x3, 2.0), 2.0, x3)*jax.numpy.cos(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))) + jax.numpy.where(jax.numpy.less(x3, 2.0), 2.0, x3)*(jax.numpy.sin(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3)))*jax.numpy.sin(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3)))))*jax.numpy.where(jax.numpy.less(x3, 2.0), 0.25, 1.0/(x3*x3))/((1.0 - jax.numpy.cos(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))))*(1.0 - jax.numpy.cos(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))))))
+    x30 = jax.numpy.where(jax.numpy.less(x3, 2.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(3.4468744013233212e-24*x3 + 1.2700533733091026e-22) + 4.6558290620595242e-21) + 1.6966593790221443e-19) + 6.1399644617575102e-18) + 2.2036011313440919e-16) + 7.829527314809022e-15) + 2.7475398580089105e-13) + 9.4911048297032324e-12) + 3.2118087673643227e-10) + 1.0568380277374987e-8) + 3.340281118058896e-7) + 9.9206349206349206e-6) + 0.00026455026455026457) + 0.0055555555555555558, (-4.0*((1.0 - _cos(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))))*(1.0 - _cos(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))))) + (1.0 - _cos(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))))*jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))*_sin(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))) - (1.0 - _cos(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))))*jax.numpy.where(jax.numpy.less(x3, 2.0), 2.0, x3)*_cos(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))) + jax.numpy.where(jax.numpy.less(x3, 2.0), 2.0, x3)*(_sin(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3)))*_sin(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3)))))*jax.numpy.where(jax.numpy.less(x3, 2.0), 0.25, 1.0/(x3*x3))/((1.0 - _cos(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))))*(1.0 - _cos(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))))))
     x31 = x29*x30
     x32 = w_1*x31 + x23 + x28
     x33 = x15*x4

@@ -19,6 +19,21 @@ the checked, differentiable API.
 
 import jax.numpy
 
+
+def _sincos(x):
+    sc = jax.numpy.stack([jax.numpy.sin(x), jax.numpy.cos(x)], -1)
+    if jax.default_backend() == "cpu":
+        sc = sc @ jax.numpy.eye(2, dtype=sc.dtype)
+    return sc
+
+
+def _sin(x):
+    return _sincos(x)[..., 0]
+
+
+def _cos(x):
+    return _sincos(x)[..., 1]
+
 OPS = 363
 MATH_HASH = "17f8e140ccf4351c"
 COLUMNS = ("xi_0", "xi_1", "xi_2", "xi_3", "xi_4", "xi_5", )
@@ -28,10 +43,10 @@ def _main(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5):
     x0 = (xi_1*xi_1)
     x1 = (xi_2*xi_2)
     x2 = x0 + x1 + (xi_0*xi_0)
-    x3 = jax.numpy.where(jax.numpy.less(x2, 1.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(1.5619206968586225e-16*x2 - 4.7794773323873853e-14) + 1.1470745597729725e-11) - 2.08767569878681e-9) + 2.7557319223985888e-7) - 2.4801587301587302e-5) + 0.0013888888888888889) - 0.041666666666666664) + 0.5, (1.0 - jax.numpy.cos(jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2))))*jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, 1.0/x2))
+    x3 = jax.numpy.where(jax.numpy.less(x2, 1.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(1.5619206968586225e-16*x2 - 4.7794773323873853e-14) + 1.1470745597729725e-11) - 2.08767569878681e-9) + 2.7557319223985888e-7) - 2.4801587301587302e-5) + 0.0013888888888888889) - 0.041666666666666664) + 0.5, (1.0 - _cos(jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2))))*jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, 1.0/x2))
     x4 = x0*x3
     x5 = x1*x3
-    x6 = jax.numpy.where(jax.numpy.less(x2, 9.0949470177292824e-13), 1.0 - 0.16666666666666666*x2, jax.numpy.where(jax.numpy.less(x2, 9.0949470177292824e-13), 1048576.0, 1.0/jax.numpy.sqrt(x2))*jax.numpy.sin(jax.numpy.where(jax.numpy.less(x2, 9.0949470177292824e-13), 9.5367431640625e-7, jax.numpy.sqrt(x2))))
+    x6 = jax.numpy.where(jax.numpy.less(x2, 9.0949470177292824e-13), 1.0 - 0.16666666666666666*x2, jax.numpy.where(jax.numpy.less(x2, 9.0949470177292824e-13), 1048576.0, 1.0/jax.numpy.sqrt(x2))*_sin(jax.numpy.where(jax.numpy.less(x2, 9.0949470177292824e-13), 9.5367431640625e-7, jax.numpy.sqrt(x2))))
     x7 = x6*xi_2
     x8 = x3*xi_1
     x9 = x8*xi_0
@@ -39,7 +54,7 @@ def _main(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5):
     x11 = x3*xi_0
     x12 = x11*xi_2
     x13 = x3*xi_2
-    x14 = jax.numpy.where(jax.numpy.less(x2, 1.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(8.2206352466243295e-18*x2 - 2.8114572543455206e-15) + 7.6471637318198164e-13) - 1.6059043836821613e-10) + 2.505210838544172e-8) - 2.7557319223985893e-6) + 0.00019841269841269841) - 0.0083333333333333332) + 0.16666666666666666, (jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2)) - jax.numpy.sin(jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2))))*jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, 1.0/(x2*jax.numpy.sqrt(x2))))
+    x14 = jax.numpy.where(jax.numpy.less(x2, 1.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(8.2206352466243295e-18*x2 - 2.8114572543455206e-15) + 7.6471637318198164e-13) - 1.6059043836821613e-10) + 2.505210838544172e-8) - 2.7557319223985893e-6) + 0.00019841269841269841) - 0.0083333333333333332) + 0.16666666666666666, (jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2)) - _sin(jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2))))*jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, 1.0/(x2*jax.numpy.sqrt(x2))))
     x15 = x14*xi_4
     x16 = x15*xi_1
     x17 = x14*xi_5
@@ -53,7 +68,7 @@ def _main(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5):
     x25 = x24*xi_1
     x26 = x14*x21
     x27 = x24*xi_2
-    x28 = jax.numpy.where(jax.numpy.less(x2, 1.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(7.398571721961897e-18*x2 - 2.499073114973796e-15) + 6.6912682653423392e-13) - 1.376489471727567e-10) + 2.08767569878681e-8) - 2.2045855379188711e-6) + 0.00014880952380952382) - 0.0055555555555555558) + 0.083333333333333329, (-jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2))*jax.numpy.sin(jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2))) - 2.0*jax.numpy.cos(jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2))) + 2.0)*jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, 1.0/(x2*x2)))
+    x28 = jax.numpy.where(jax.numpy.less(x2, 1.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(7.398571721961897e-18*x2 - 2.499073114973796e-15) + 6.6912682653423392e-13) - 1.376489471727567e-10) + 2.08767569878681e-8) - 2.2045855379188711e-6) + 0.00014880952380952382) - 0.0055555555555555558) + 0.083333333333333329, (-jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2))*_sin(jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2))) - 2.0*_cos(jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2))) + 2.0)*jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, 1.0/(x2*x2)))
     x29 = x28*xi_0
     x30 = -2.0*x8
     x31 = (xi_1*xi_1*xi_1)
@@ -63,10 +78,10 @@ def _main(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5):
     x35 = (xi_2*xi_2*xi_2)
     x36 = x0*xi_2
     x37 = x28*x35 + x28*x36
-    x38 = jax.numpy.where(jax.numpy.less(x2, 0.5), x2*(x2*(x2*(x2*(x2*(x2*(1.0706029224547743e-11 - 4.498331606952833e-14*x2) - 1.9270852604185937e-9) + 2.5052108385441718e-7) - 2.2045855379188714e-5) + 0.0011904761904761906) - 0.033333333333333333) + 0.33333333333333331, (-jax.numpy.where(jax.numpy.less(x2, 0.5), 0.70710678118654752, jax.numpy.sqrt(x2))*jax.numpy.cos(jax.numpy.where(jax.numpy.less(x2, 0.5), 0.70710678118654752, jax.numpy.sqrt(x2))) + jax.numpy.sin(jax.numpy.where(jax.numpy.less(x2, 0.5), 0.70710678118654752, jax.numpy.sqrt(x2))))*jax.numpy.where(jax.numpy.less(x2, 0.5), 2.8284271247461901, 1.0/(x2*jax.numpy.sqrt(x2))))
+    x38 = jax.numpy.where(jax.numpy.less(x2, 0.5), x2*(x2*(x2*(x2*(x2*(x2*(1.0706029224547743e-11 - 4.498331606952833e-14*x2) - 1.9270852604185937e-9) + 2.5052108385441718e-7) - 2.2045855379188714e-5) + 0.0011904761904761906) - 0.033333333333333333) + 0.33333333333333331, (-jax.numpy.where(jax.numpy.less(x2, 0.5), 0.70710678118654752, jax.numpy.sqrt(x2))*_cos(jax.numpy.where(jax.numpy.less(x2, 0.5), 0.70710678118654752, jax.numpy.sqrt(x2))) + _sin(jax.numpy.where(jax.numpy.less(x2, 0.5), 0.70710678118654752, jax.numpy.sqrt(x2))))*jax.numpy.where(jax.numpy.less(x2, 0.5), 2.8284271247461901, 1.0/(x2*jax.numpy.sqrt(x2))))
     x39 = x38*xi_2
     x40 = x39*xi_0
-    x41 = jax.numpy.where(jax.numpy.less(x2, 1.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(2.499073114973796e-15 - 7.398571721961897e-18*x2) - 6.6912682653423392e-13) + 1.376489471727567e-10) - 2.08767569878681e-8) + 2.2045855379188711e-6) - 0.00014880952380952382) + 0.0055555555555555558) - 0.083333333333333329, (jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2))*jax.numpy.sin(jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2))) + 2.0*jax.numpy.cos(jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2))) - 2.0)*jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, 1.0/(x2*x2)))
+    x41 = jax.numpy.where(jax.numpy.less(x2, 1.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(2.499073114973796e-15 - 7.398571721961897e-18*x2) - 6.6912682653423392e-13) + 1.376489471727567e-10) - 2.08767569878681e-8) + 2.2045855379188711e-6) - 0.00014880952380952382) + 0.0055555555555555558) - 0.083333333333333329, (jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2))*_sin(jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2))) + 2.0*_cos(jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2))) - 2.0)*jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, 1.0/(x2*x2)))
     x42 = x2*x41
     x43 = x33 + x42*xi_1 + x8
     x44 = x39*xi_1
@@ -77,7 +92,7 @@ def _main(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5):
     x49 = x45*xi_1
     x50 = x49*xi_2
     x51 = x50 - x6
-    x52 = jax.numpy.where(jax.numpy.less(x2, 0.5), x2*(x2*(x2*(x2*(x2*(x2*(4.498331606952833e-14*x2 - 1.0706029224547743e-11) + 1.9270852604185937e-9) - 2.5052108385441718e-7) + 2.2045855379188714e-5) - 0.0011904761904761906) + 0.033333333333333333) - 0.33333333333333331, (jax.numpy.where(jax.numpy.less(x2, 0.5), 0.70710678118654752, jax.numpy.sqrt(x2))*jax.numpy.cos(jax.numpy.where(jax.numpy.less(x2, 0.5), 0.70710678118654752, jax.numpy.sqrt(x2))) - jax.numpy.sin(jax.numpy.where(jax.numpy.less(x2, 0.5), 0.70710678118654752, jax.numpy.sqrt(x2))))*jax.numpy.where(jax.numpy.less(x2, 0.5), 2.8284271247461901, 1.0/(x2*jax.numpy.sqrt(x2))))
+    x52 = jax.numpy.where(jax.numpy.less(x2, 0.5), x2*(x2*(x2*(x2*(x2*(x2*(4.498331606952833e-14*x2 - 1.0706029224547743e-11) + 1.9270852604185937e-9) - 2.5052108385441718e-7) + 2.2045855379188714e-5) - 0.0011904761904761906) + 0.033333333333333333) - 0.33333333333333331, (jax.numpy.where(jax.numpy.less(x2, 0.5), 0.70710678118654752, jax.numpy.sqrt(x2))*_cos(jax.numpy.where(jax.numpy.less(x2, 0.5), 0.70710678118654752, jax.numpy.sqrt(x2))) - _sin(jax.numpy.where(jax.numpy.less(x2, 0.5), 0.70710678118654752, jax.numpy.sqrt(x2))))*jax.numpy.where(jax.numpy.less(x2, 0.5), 2.8284271247461901, 1.0/(x2*jax.numpy.sqrt(x2))))
     x53 = x52*xi_1
     x54 = x53*xi_0
     x55 = x13 + x37 + x42*xi_2
@@ -87,7 +102,7 @@ def _main(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5):
     x59 = x1*x45
     x60 = x11 + x59
     x61 = xi_2*xi_4
-    x62 = jax.numpy.where(jax.numpy.less(x2, 2.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(3.5231293914104271e-19 - 7.7363403412613678e-22*x2) - 1.3153016394598927e-16) + 3.936040156083729e-14) - 9.1765964781837793e-12) + 1.6059043836821615e-9) - 2.0041686708353376e-7) + 1.6534391534391536e-5) - 0.00079365079365079365) + 0.016666666666666666, (jax.numpy.where(jax.numpy.less(x2, 2.0), 1.414213562373095, jax.numpy.sqrt(x2))*jax.numpy.cos(jax.numpy.where(jax.numpy.less(x2, 2.0), 1.414213562373095, jax.numpy.sqrt(x2))) + 2.0*jax.numpy.where(jax.numpy.less(x2, 2.0), 1.414213562373095, jax.numpy.sqrt(x2)) - 3.0*jax.numpy.sin(jax.numpy.where(jax.numpy.less(x2, 2.0), 1.414213562373095, jax.numpy.sqrt(x2))))*jax.numpy.where(jax.numpy.less(x2, 2.0), 0.17677669529663688, 1.0/((x2*x2)*jax.numpy.sqrt(x2))))
+    x62 = jax.numpy.where(jax.numpy.less(x2, 2.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(3.5231293914104271e-19 - 7.7363403412613678e-22*x2) - 1.3153016394598927e-16) + 3.936040156083729e-14) - 9.1765964781837793e-12) + 1.6059043836821615e-9) - 2.0041686708353376e-7) + 1.6534391534391536e-5) - 0.00079365079365079365) + 0.016666666666666666, (jax.numpy.where(jax.numpy.less(x2, 2.0), 1.414213562373095, jax.numpy.sqrt(x2))*_cos(jax.numpy.where(jax.numpy.less(x2, 2.0), 1.414213562373095, jax.numpy.sqrt(x2))) + 2.0*jax.numpy.where(jax.numpy.less(x2, 2.0), 1.414213562373095, jax.numpy.sqrt(x2)) - 3.0*_sin(jax.numpy.where(jax.numpy.less(x2, 2.0), 1.414213562373095, jax.numpy.sqrt(x2))))*jax.numpy.where(jax.numpy.less(x2, 2.0), 0.17677669529663688, 1.0/((x2*x2)*jax.numpy.sqrt(x2))))
     x63 = x31*x62
     x64 = x35*x62
     x65 = x0*xi_0
@@ -96,7 +111,7 @@ def _main(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5):
     x68 = x62*xi_4
     x69 = x1*xi_1
     x70 = x62*xi_5
-    x71 = jax.numpy.where(jax.numpy.less(x2, 2.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(7.7363403412613678e-22*x2 - 3.5231293914104271e-19) + 1.3153016394598927e-16) - 3.936040156083729e-14) + 9.1765964781837793e-12) - 1.6059043836821615e-9) + 2.0041686708353376e-7) - 1.6534391534391536e-5) + 0.00079365079365079365) - 0.016666666666666666, (-jax.numpy.where(jax.numpy.less(x2, 2.0), 1.414213562373095, jax.numpy.sqrt(x2))*jax.numpy.cos(jax.numpy.where(jax.numpy.less(x2, 2.0), 1.414213562373095, jax.numpy.sqrt(x2))) - 2.0*jax.numpy.where(jax.numpy.less(x2, 2.0), 1.414213562373095, jax.numpy.sqrt(x2)) + 3.0*jax.numpy.sin(jax.numpy.where(jax.numpy.less(x2, 2.0), 1.414213562373095, jax.numpy.sqrt(x2))))*jax.numpy.where(jax.numpy.less(x2, 2.0), 0.17677669529663688, 1.0/((x2*x2)*jax.numpy.sqrt(x2))))
+    x71 = jax.numpy.where(jax.numpy.less(x2, 2.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(7.7363403412613678e-22*x2 - 3.5231293914104271e-19) + 1.3153016394598927e-16) - 3.936040156083729e-14) + 9.1765964781837793e-12) - 1.6059043836821615e-9) + 2.0041686708353376e-7) - 1.6534391534391536e-5) + 0.00079365079365079365) - 0.016666666666666666, (-jax.numpy.where(jax.numpy.less(x2, 2.0), 1.414213562373095, jax.numpy.sqrt(x2))*_cos(jax.numpy.where(jax.numpy.less(x2, 2.0), 1.414213562373095, jax.numpy.sqrt(x2))) - 2.0*jax.numpy.where(jax.numpy.less(x2, 2.0), 1.414213562373095, jax.numpy.sqrt(x2)) + 3.0*_sin(jax.numpy.where(jax.numpy.less(x2, 2.0), 1.414213562373095, jax.numpy.sqrt(x2))))*jax.numpy.where(jax.numpy.less(x2, 2.0), 0.17677669529663688, 1.0/((x2*x2)*jax.numpy.sqrt(x2))))
     x72 = x71*xi_4
     x73 = x2*xi_1
     x74 = x71*xi_5
