@@ -9,7 +9,7 @@ shared, so the medians of interleaved rounds are what to read, not single figure
 
 Usage (from the repository root)::
 
-    python benchmarks/accuracy_speed.py [--rev afc7196] [--rounds 7] [--n 1000000]
+    python benchmarks/accuracy_speed.py [--rev afc7196] [--mid REV] [--rounds 7] [--n 1000000]
 """
 
 from __future__ import annotations
@@ -72,6 +72,8 @@ def timer(f, arrays, outs):
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--rev", default="afc7196")
+    ap.add_argument("--mid", default=None, help="a second revision timed in the same rounds "
+                    "(a column of its own, and after/mid)")
     ap.add_argument("--rounds", type=int, default=7)
     ap.add_argument("--n", type=int, default=10**6)
     ap.add_argument("--float32-only", action="store_true",
@@ -86,24 +88,33 @@ def main(argv=None) -> int:
 
 def before_after(a) -> None:
     """The kernels before and after the rewrites of --rev, interleaved (issue 30 item 6)."""
-    with tempfile.TemporaryDirectory() as tmp:
+    with tempfile.TemporaryDirectory() as tmp, tempfile.TemporaryDirectory() as tmp2:
         old = K.load(old_generated(a.rev, Path(tmp)))
+        mid = None if a.mid is None else K.load(old_generated(a.mid, Path(tmp2)))
         print(f"N = {a.n:.0e}, one thread, {a.rounds} interleaved rounds, median; "
-              f"before = {a.rev}", flush=True)
-        print("| kernel | before ms | after ms | after/before |\n|---|---|---|---|")
+              f"before = {a.rev}" + ("" if mid is None else f", mid = {a.mid}"), flush=True)
+        cols = " mid ms | after/mid |" if mid else ""
+        print(f"| kernel | before ms |{cols} after ms | after/before |\n"
+              f"|---|---|{'---|---|' if mid else ''}---|---|")
         for label, name in [*KS.items(), *((n, n) for n in CHANGED)]:
             k = R.kernel_of(name)
             arrays = inputs(name, a.n, np.float64)
             outs = [np.empty((a.n,) + o.shape) for o in k.outputs]
-            fo = timer(old.batch_function(name, "c", threads=1), arrays, outs)
-            fn = timer(K.batch_function(name, "c", threads=1), arrays, outs)
-            fo(), fn()                    # warm
-            to, tn = [], []
-            for _ in range(a.rounds):
-                to.append(fo())
-                tn.append(fn())
+            spaces = [old, K] if mid is None else [old, mid, K]
+            fs = [timer(s.batch_function(name, "c", threads=1), arrays, outs) for s in spaces]
+            for f in fs:                  # warm
+                f()
+            ts: list[list[float]] = [[] for _ in fs]
+            for _ in range(a.rounds):     # interleaved: before, (mid,) after, before, ...
+                for f, t in zip(fs, ts, strict=True):
+                    t.append(f())
+            to, tn = ts[0], ts[-1]
             ratio = statistics.median(n_ / o_ for n_, o_ in zip(tn, to, strict=True))
-            print(f"| {label} `{name}` | {1e3 * statistics.median(to):.2f} | "
+            extra = ""
+            if mid is not None:
+                rm = statistics.median(n_ / m_ for n_, m_ in zip(tn, ts[1], strict=True))
+                extra = f" {1e3 * statistics.median(ts[1]):.2f} | {rm:.3f} |"
+            print(f"| {label} `{name}` | {1e3 * statistics.median(to):.2f} |{extra} "
                   f"{1e3 * statistics.median(tn):.2f} | {ratio:.3f} |", flush=True)
 
 

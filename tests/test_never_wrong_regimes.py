@@ -40,6 +40,11 @@ EMAX, SUB = {np.float64: 995, np.float32: 116}, {np.float64: 60, np.float32: 20}
 #: compared at that type's rounding times a condition number of up to ~1e3 (angles drawn
 #: within 1e-6 of pi are ill-conditioned for the axis: its error grows as 1/(pi - phi))
 TOL = {np.float64: 2.0**-26, np.float32: 2.0**-6}
+#: exponential coordinates (a rotation vector w, a twist xi): scaled from the subnormals up
+#: to 2^4 only, since their sines and cosines of angles of 1e300 are no regime a user meets
+#: and are ill-conditioned (condition number ~ the angle); a homogeneous transform T is not
+#: scaled (it would be no transform)
+EXPONENTIAL, FIXED = ("w", "xi"), ("T",)
 _SETTINGS = {"deadline": None, "suppress_health_check": [HealthCheck.function_scoped_fixture,
                                                          HealthCheck.too_slow]}
 
@@ -72,7 +77,10 @@ def regime_batch(draw, name: str, dtype) -> dict:
                     v[...] = np.ldexp(v, -k)
                     v.flat[draw(st.integers(0, v.size - 1))] = 1.0
                     v /= np.linalg.norm(v)
-            elif s["kind"] == "any" and draw(st.booleans()):
+            elif s["name"] in EXPONENTIAL:
+                if draw(st.booleans()):
+                    v *= np.ldexp(1.0, draw(st.integers(-emax - sub, 4)))
+            elif s["kind"] == "any" and s["name"] not in FIXED and draw(st.booleans()):
                 v *= np.ldexp(1.0, draw(st.integers(-emax - sub, emax)))
         if draw(st.integers(0, 5)) == 0:     # a NaN or inf in one component
             s = specs[draw(st.integers(0, len(specs) - 1))]
