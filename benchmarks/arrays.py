@@ -1,11 +1,7 @@
 """PyTorch and JAX kernels against the NumPy and C kernels (issue 31), on the CPU.
 
 ``python benchmarks/arrays.py --grad [--sizes 1e3 1e4 1e5 1e6]`` (issue 38): value + gradient
-of the kernel against the hand-written formula, side by side in one run, as a ratio per
-kernel, dtype and N: torch eager (one thread), ``torch.compile`` (inductor, ``dynamic=True``,
-so one compile serves every N; graph breaks counted by ``torch._dynamo.explain``) and
-``jax.jit``; the table of benchmarks/RESULTS.md, section ``arrays-grad``. No jaxlie or PyPose
-here: neither has these two operations (they have the exponential map, issue 38 item 2).
+against the hand-written formula and the peers, side by side: ``benchmarks/arrays_grad.py``.
 
 ``python benchmarks/arrays.py [--sizes 1e4 1e6]``: median wall time of one call of the
 checked kernels (``check=False``) and of a hand-written formula of the same mathematics
@@ -159,63 +155,6 @@ def _loss(out):
     return sum(o.sum() for o in _tup(out))
 
 
-def run_grad(sizes, reps: int = 7) -> list[dict]:
-    """Value + gradient (of the sum of the outputs) of the kernel ("k") and of the
-    hand-written formula ("h"), median seconds, per back-end; ratios k / h."""
-    import jax
-    import torch
-
-    jax.config.update("jax_enable_x64", True)
-    torch.set_num_threads(1)
-    from rigidsym.kernels import jax as rj
-    from rigidsym.kernels import torch as rk
-
-    rows = []
-    for name in KERNELS:
-        f, h = getattr(rk, name), _hand(torch, name)
-        fk = {"k": lambda *a: f(*a, check=False), "h": h}
-        comp = {k: torch.compile(v, dynamic=True) for k, v in fk.items()}
-        jits = {k: jax.jit(jax.value_and_grad(
-            lambda *a, fn=fn: _loss(fn(*a)), argnums=tuple(range(len(_inputs(name, 1,
-                                                                               float))))))
-            for k, fn in {"k": getattr(rj, name), "h": _hand(jax.numpy, name)}.items()}
-        for dtype in (np.float64, np.float32):
-            for n in sizes:
-                xs = _inputs(name, n, dtype)
-                ts = [torch.from_numpy(x) for x in xs]
-                js = [jax.device_put(x) for x in xs]
-                row = {"kernel": name, "dtype": np.dtype(dtype).name, "n": n}
-                for mode, fns in (("eager", fk), ("compiled", comp)):
-                    for k, fn in fns.items():
-                        def step(fn=fn):
-                            g = [t.clone().requires_grad_(True) for t in ts]
-                            _loss(fn(*g)).backward()
-                        row[f"{mode} {k}"] = _time(step, reps)
-                for k, jg in jits.items():
-                    row[f"jit {k}"] = _time(lambda jg=jg: jax.block_until_ready(jg(*js)), reps)
-                if n == sizes[0]:
-                    g = [t.clone().requires_grad_(True) for t in ts]
-                    row["breaks"] = torch._dynamo.explain(fk["k"])(*g).graph_break_count
-                rows.append(row)
-                print({k: (f"{v:.3g}" if isinstance(v, float) else v) for k, v in row.items()},
-                      flush=True)
-    return rows
-
-
-def grad_table(rows) -> str:
-    """The Markdown table of :func:`run_grad`: ms of kernel / hand, and their ratio."""
-    lines = ["| kernel | dtype | N | eager ms (k / h) | ratio | compiled ms (k / h) | ratio "
-             "| jit ms (k / h) | ratio |", "|---|---|---:|---:|---:|---:|---:|---:|---:|"]
-    for r in rows:
-        cells = []
-        for m in ("eager", "compiled", "jit"):
-            k, h = r[f"{m} k"], r[f"{m} h"]
-            cells += [f"{k * 1e3:.3g} / {h * 1e3:.3g}", f"{k / h:.2f}"]
-        lines.append(f"| {r['kernel']} | {r['dtype']} | {r['n']:.0e} | " + " | ".join(cells)
-                     + " |")
-    return "\n".join(lines)
-
-
 if __name__ == "__main__":
     ap = argparse.ArgumentParser()
     ap.add_argument("--sizes", nargs="+", type=float, default=None)
@@ -223,10 +162,10 @@ if __name__ == "__main__":
     args = ap.parse_args()
     import jax
     import torch
-    if args.grad:
-        rows = run_grad([int(s) for s in args.sizes or [1e3, 1e4, 1e5, 1e6]])
-        print(grad_table(rows))
-        print("graph breaks:", {r["kernel"]: r["breaks"] for r in rows if "breaks" in r})
+    if args.grad:  # the table of issue 38 (benchmarks/arrays_grad.py)
+        from arrays_grad import main
+        main(args.sizes)
+        raise SystemExit(0)
     else:
         rows = run([int(s) for s in args.sizes or [1e4, 1e6]])
         print(table(rows))

@@ -6,7 +6,10 @@ from __future__ import annotations
 
 import importlib
 
+import sympy as sp
+
 from rigidsym.codegen.spec import Arg
+from rigidsym.declare import trace, vect
 
 __all__ = ["formula", "E", "PHI", "OMEGA", "Q_ARG"]
 
@@ -45,3 +48,28 @@ def _one(out, fn, wire=None):
         args = list(kw.values()) if wire is None else wire(**kw)
         return {out: formula(fn)(*args)}
     return build
+
+
+# ----------------------------------------------------------------------------------------
+# the natural invariants' formulas near phi = pi, shared by the book's kernels and the
+# logarithms of derivations/kernels_spec_lie.py
+def _ni_common(Q):
+    v = vect(Q)
+    s = sp.sqrt((v.T * v)[0])
+    c = (trace(Q) - 1) / 2
+    return v, s, c
+
+
+def _ni_near_pi(Q, k):
+    v, s, c = _ni_common(Q)
+    sym = (Q + Q.T) / 2 - c * sp.eye(3)      # = (1 - cos phi) e e^T
+    col = sym[:, k]
+    sign = sp.Piecewise((-1, (col.T * v)[0] < 0), (1, True))
+    return {"e": sign * col / sp.sqrt((col.T * col)[0]), "phi": sp.atan2(s, c)}
+
+
+def _ni_when(Q, k):
+    d = [Q[i, i] for i in range(3)]
+    near_pi = trace(Q) < 0                   # cos phi < -1/2
+    others = [d[k] >= d[j] for j in range(3) if j != k]
+    return sp.And(near_pi, *others)

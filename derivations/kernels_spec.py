@@ -17,7 +17,7 @@ from functools import partial
 import sympy as sp
 
 from rigidsym.codegen.spec import Arg, Branch, Kernel, Out
-from rigidsym.declare import rotation_from_natural_invariants, trace, vect
+from rigidsym.declare import rotation_from_natural_invariants
 
 from .kernel_wiring import (
     _PR,
@@ -34,11 +34,15 @@ from .kernel_wiring import (
     PHI,
     Q_ARG,
     E,
+    _ni_common,
+    _ni_near_pi,
+    _ni_when,
     _one,
     _v,
     formula,
 )
 from .kernels_spec_internal import EULER_SEQUENCES, INTERNAL_KERNELS
+from .kernels_spec_lie import LIE_KERNELS
 
 __all__ = ["KERNELS", "formula", "EULER_SEQUENCES"]
 
@@ -55,31 +59,9 @@ def _rot_er(eta):
     return {"Q": formula(_PR + "rotation_from_euler_rodrigues")(eta[:3, :], eta[3])}
 
 
-def _ni_common(Q):
-    v = vect(Q)
-    s = sp.sqrt((v.T * v)[0])
-    c = (trace(Q) - 1) / 2
-    return v, s, c
-
-
 def _ni_main(Q):
     v, s, c = _ni_common(Q)
     return {"e": v / s, "phi": sp.atan2(s, c)}
-
-
-def _ni_near_pi(Q, k):
-    v, s, c = _ni_common(Q)
-    sym = (Q + Q.T) / 2 - c * sp.eye(3)      # = (1 - cos phi) e e^T
-    col = sym[:, k]
-    sign = sp.Piecewise((-1, (col.T * v)[0] < 0), (1, True))
-    return {"e": sign * col / sp.sqrt((col.T * col)[0]), "phi": sp.atan2(s, c)}
-
-
-def _ni_when(Q, k):
-    d = [Q[i, i] for i in range(3)]
-    near_pi = trace(Q) < 0                   # cos phi < -1/2
-    others = [d[k] >= d[j] for j in range(3) if j != k]
-    return sp.And(near_pi, *others)
 
 
 _NI_BRANCHES = tuple(
@@ -370,6 +352,5 @@ KERNELS.append(Kernel(
           "natural_invariants_from_rotation's rule (largest-magnitude component positive)."))
 
 KERNELS += INTERNAL_KERNELS
-
-# issue 38: the Lie-group kernels (derivations/kernels_spec_lie.py) join with
-# `KERNELS += LIE_KERNELS` once generated/ is regenerated with them (see its docstring)
+# issue 38: the Lie-group maps (derivations/kernels_spec_lie.py)
+KERNELS += LIE_KERNELS

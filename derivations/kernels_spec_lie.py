@@ -4,11 +4,8 @@ removable singularities at ``w = 0`` become certified series branches in the gen
 (:mod:`rigidsym.codegen.removable`). The logarithms reuse the natural invariants' branches
 near ``phi = pi`` (the axis from the symmetric part of ``Q``).
 
-Not yet in the book's ``KERNELS`` (``derivations/kernels_spec.py``): joining them needs a full
-``rigidsym generate`` (slow on a loaded 2-core machine: the 6 x 6 inverse Jacobian of SE(3)
-takes the removable pass minutes) and the names pinned in ``tests/test_public_api.py``.
-Generate them alone: ``rigidsym generate --module M --out DIR`` with ``M`` holding
-``KERNELS = LIE_KERNELS``, then ``rigidsym.kernels.load(DIR)``.
+They join the book's ``KERNELS`` (``derivations/kernels_spec.py``); their names are pinned in
+``tests/test_public_api.py``.
 """
 
 from __future__ import annotations
@@ -20,7 +17,7 @@ import sympy as sp
 from rigidsym.codegen.spec import Arg, Branch, Kernel, Out
 from rigidsym.declare import vect
 
-from .kernel_wiring import Q_ARG, formula
+from .kernel_wiring import Q_ARG, _ni_near_pi, _ni_when, formula
 
 __all__ = ["LIE_KERNELS"]
 
@@ -56,15 +53,11 @@ def _log_main(Q):
 
 
 def _log_near_pi(Q, k):
-    from .kernels_spec import _ni_near_pi
-
     ni = _ni_near_pi(Q, k)
     return {"w": ni["phi"] * ni["e"]}
 
 
 def _log_when(Q, k):
-    from .kernels_spec import _ni_when
-
     return _ni_when(Q, k)
 
 

@@ -32,6 +32,11 @@ __all__ = [
     "N_matrix_dot",
     "N_tilde",
     "N_tilde_dot",
+    "euler_rodrigues_from_rotation",
+    "euler_rodrigues_product",
+    "exponential_coordinates_from_transform",
+    "exponential_coordinates_left_jacobian",
+    "exponential_coordinates_left_jacobian_inverse",
     "inertia_at_point",
     "inertia_dyad_at_point",
     "instant_screw_axis",
@@ -44,8 +49,15 @@ __all__ = [
     "point_acceleration",
     "rotation_from_euler_rodrigues",
     "rotation_from_natural_invariants",
+    "rotation_from_rotation_vector",
+    "rotation_vector_from_rotation",
+    "rotation_vector_left_jacobian",
+    "rotation_vector_left_jacobian_inverse",
+    "rotation_vector_right_jacobian",
+    "rotation_vector_right_jacobian_inverse",
     "screw_axis_point",
     "screw_of_displacement",
+    "transform_from_exponential_coordinates",
     "twist_transfer",
     "twist_transfer_matrix",
     "wrench_axis",
@@ -563,6 +575,193 @@ def N_tilde_dot(
         Generated; 79 operations; math hash b1c3eb794fbb8245.
     """
     return _F.N_tilde_dot(e, phi, omega, out, check, on_singular, threads)
+
+
+def euler_rodrigues_from_rotation(
+    Q: ArrayLike,
+    *,
+    out: OutArrays = None,
+    check: bool = True,
+    on_singular: OnSingular | None = None,
+    threads: int | None = None,
+) -> NDArray[np.floating]:
+    r"""The Euler-Rodrigues parameters eta = [r; r0] of Q, r0 >= 0.
+
+        r0 = sqrt(1 + tr Q) / 2, r = vect(Q) / (2 r0); Shepperd's branches for tr Q <= 0
+
+    Book: Eq. (sola:quat-of-rotation), (sola:quat-product); composed of rigidsym.derivations.lie_maps.euler_rodrigues_from_rotation.
+
+    Args:
+        Q: array-like (..., 3, 3), proper orthogonal; rotation matrix (proper orthogonal)
+        out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
+        check: validate the inputs (finite, unit e/eta, orthogonal Q); False skips only that: on valid input the same result, and a NaN or inf input gives NaN in the outputs that depend on it.
+        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
+        threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
+
+    Returns:
+        ndarray (..., 4): eta; [r; r0], unit, r0 >= 0
+
+    Raises:
+        TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
+        ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
+        NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
+
+    Notes:
+        At phi = pi exactly (r0 = 0) eta and -eta are both parameters of Q.
+
+        Generated; 73 operations; math hash 019b8ba8b4ba61cb.
+    """
+    return _F.euler_rodrigues_from_rotation(Q, out, check, on_singular, threads)
+
+
+def euler_rodrigues_product(
+    eta1: ArrayLike,
+    eta2: ArrayLike,
+    *,
+    out: OutArrays = None,
+    check: bool = True,
+    on_singular: OnSingular | None = None,
+    threads: int | None = None,
+) -> NDArray[np.floating]:
+    r"""The product of Euler-Rodrigues parameters (Hamilton, scalar last).
+
+        [a0 b + b0 a + a x b; a0 b0 - a . b]
+
+    Book: Eq. (sola:quat-of-rotation), (sola:quat-product); composed of rigidsym.derivations.lie_maps.euler_rodrigues_product.
+
+    Args:
+        eta1: array-like (..., 4); [r; r0] of the first rotation
+        eta2: array-like (..., 4); [r; r0] of the second rotation
+        out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
+        check: validate the inputs (finite, unit e/eta, orthogonal Q); False skips only that: on valid input the same result, and a NaN or inf input gives NaN in the outputs that depend on it.
+        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
+        threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
+
+    Returns:
+        ndarray (..., 4): eta; [r; r0] of Q(eta1) Q(eta2)
+
+    Raises:
+        TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
+        ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
+        NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
+
+    Notes:
+        Generated; 28 operations; math hash 05e96cfeb0908f4b.
+    """
+    return _F.euler_rodrigues_product(eta1, eta2, out, check, on_singular, threads)
+
+
+def exponential_coordinates_from_transform(
+    T: ArrayLike,
+    *,
+    out: OutArrays = None,
+    check: bool = True,
+    on_singular: OnSingular | None = None,
+    threads: int | None = None,
+) -> NDArray[np.floating]:
+    r"""Log of SE(3): the exponential coordinates xi = [w; v] of T, |w| in [0, pi].
+
+        w = Log(R), v = J_l(w)^-1 p
+
+    Book: Eq. (sola:exp-se3), (sola:log-exp-se3); composed of rigidsym.derivations.lie_maps.exponential_coordinates_from_transform.
+
+    Args:
+        T: array-like (..., 4, 4); homogeneous transform [[R, p], [0, 1]] (R a rotation)
+        out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
+        check: validate the inputs (finite, unit e/eta, orthogonal Q); False skips only that: on valid input the same result, and a NaN or inf input gives NaN in the outputs that depend on it.
+        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
+        threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
+
+    Returns:
+        ndarray (..., 6): xi; [w; v]
+
+    Raises:
+        TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
+        ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
+        NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
+        SingularConfigurationError: on the singular set (phi = 0 (the main formula's 0/0)), unless on_singular='nan'.
+
+    Notes:
+        Singular set: phi = 0 (the main formula's 0/0).
+
+        T is not validated (its rotation block is read as a rotation).
+
+        Generated; 425 operations; math hash 0ea5162c1b71e714.
+    """
+    return _F.exponential_coordinates_from_transform(T, out, check, on_singular, threads)
+
+
+def exponential_coordinates_left_jacobian(
+    xi: ArrayLike,
+    *,
+    out: OutArrays = None,
+    check: bool = True,
+    on_singular: OnSingular | None = None,
+    threads: int | None = None,
+) -> NDArray[np.floating]:
+    r"""The left Jacobian of SE(3) at xi = [w; v] (6 x 6, angular first).
+
+        [[J_l(w), 0], [Q(v, w), J_l(w)]] (Barfoot Sec. 7.1.5, reordered)
+
+    Book: Eq. (barfoot:se3-jl-definition), (barfoot:se3-jl-xi), (barfoot:se3-jl-inverse); composed of rigidsym.derivations.lie_maps.exponential_coordinates_left_jacobian.
+
+    Args:
+        xi: array-like (..., 6); exponential coordinates [w; v] ([rad]; [m])
+        out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
+        check: validate the inputs (finite, unit e/eta, orthogonal Q); False skips only that: on valid input the same result, and a NaN or inf input gives NaN in the outputs that depend on it.
+        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
+        threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
+
+    Returns:
+        ndarray (..., 6, 6): J
+
+    Raises:
+        TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
+        ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
+        NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
+
+    Notes:
+        Generated; 226 operations; math hash a4133e465ca458b7.
+    """
+    return _F.exponential_coordinates_left_jacobian(xi, out, check, on_singular, threads)
+
+
+def exponential_coordinates_left_jacobian_inverse(
+    xi: ArrayLike,
+    *,
+    out: OutArrays = None,
+    check: bool = True,
+    on_singular: OnSingular | None = None,
+    threads: int | None = None,
+) -> NDArray[np.floating]:
+    r"""The left Jacobian inverse of SE(3) at xi = [w; v] (6 x 6, angular first).
+
+        the block inverse of [[J_l, 0], [Q, J_l]]
+
+    Book: Eq. (barfoot:se3-jl-definition), (barfoot:se3-jl-xi), (barfoot:se3-jl-inverse); composed of rigidsym.derivations.lie_maps.exponential_coordinates_left_jacobian_inverse.
+
+    Args:
+        xi: array-like (..., 6); exponential coordinates [w; v] ([rad]; [m])
+        out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
+        check: validate the inputs (finite, unit e/eta, orthogonal Q); False skips only that: on valid input the same result, and a NaN or inf input gives NaN in the outputs that depend on it.
+        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
+        threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
+
+    Returns:
+        ndarray (..., 6, 6): J
+
+    Raises:
+        TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
+        ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
+        NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
+        SingularConfigurationError: on the singular set (|w| = 2 pi k, k != 0), unless on_singular='nan'.
+
+    Notes:
+        Singular set: |w| = 2 pi k, k != 0.
+
+        Generated; 1102 operations; math hash 403a221bb493ca86.
+    """
+    return _F.exponential_coordinates_left_jacobian_inverse(xi, out, check, on_singular, threads)
 
 
 def inertia_at_point(
@@ -1085,6 +1284,224 @@ def rotation_from_natural_invariants(
     return _F.rotation_from_natural_invariants(e, phi, out, check, on_singular, threads)
 
 
+def rotation_from_rotation_vector(
+    w: ArrayLike,
+    *,
+    out: OutArrays = None,
+    check: bool = True,
+    on_singular: OnSingular | None = None,
+    threads: int | None = None,
+) -> NDArray[np.floating]:
+    r"""Exp of so(3): the rotation of w.
+
+        Q = 1 + (sin t / t) [w] + ((1 - cos t) / t^2) [w]^2, t = |w|
+
+    Book: Eq. (sola:exp-so3), (sola:log-exp-so3), (sola:exp-log-so3); composed of rigidsym.derivations.lie_maps.rotation_from_rotation_vector.
+
+    Args:
+        w: array-like (..., 3); rotation vector w = phi e [rad]
+        out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
+        check: validate the inputs (finite, unit e/eta, orthogonal Q); False skips only that: on valid input the same result, and a NaN or inf input gives NaN in the outputs that depend on it.
+        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
+        threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
+
+    Returns:
+        ndarray (..., 3, 3): Q; rotation matrix
+
+    Raises:
+        TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
+        ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
+        NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
+
+    Notes:
+        Generated; 31 operations; math hash 26ba18056a63eeb8.
+    """
+    return _F.rotation_from_rotation_vector(w, out, check, on_singular, threads)
+
+
+def rotation_vector_from_rotation(
+    Q: ArrayLike,
+    *,
+    out: OutArrays = None,
+    check: bool = True,
+    on_singular: OnSingular | None = None,
+    threads: int | None = None,
+) -> NDArray[np.floating]:
+    r"""Log of SO(3): the rotation vector w = phi e of Q, |w| in [0, pi].
+
+        w = (phi / sin phi) vect(Q); asin near 0, the symmetric part near pi
+
+    Book: Eq. (sola:exp-so3), (sola:log-exp-so3), (sola:exp-log-so3); composed of rigidsym.derivations.lie_maps.rotation_vector_from_rotation.
+
+    Args:
+        Q: array-like (..., 3, 3), proper orthogonal; rotation matrix (proper orthogonal)
+        out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
+        check: validate the inputs (finite, unit e/eta, orthogonal Q); False skips only that: on valid input the same result, and a NaN or inf input gives NaN in the outputs that depend on it.
+        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
+        threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
+
+    Returns:
+        ndarray (..., 3): w; rotation vector [rad]
+
+    Raises:
+        TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
+        ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
+        NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
+
+    Notes:
+        At phi = pi exactly, w and -w are both logarithms; the sign follows natural_invariants_from_rotation's rule.
+
+        Generated; 195 operations; math hash de9c93174b0c8c92.
+    """
+    return _F.rotation_vector_from_rotation(Q, out, check, on_singular, threads)
+
+
+def rotation_vector_left_jacobian(
+    w: ArrayLike,
+    *,
+    out: OutArrays = None,
+    check: bool = True,
+    on_singular: OnSingular | None = None,
+    threads: int | None = None,
+) -> NDArray[np.floating]:
+    r"""The left Jacobian of SO(3) at w.
+
+        J_l(w), Solà et al. 2018 App. B
+
+    Book: Eq. (sola:jl-definition), (sola:jr-definition), (sola:jl-jr), (sola:jl-R-jr), (sola:jl-w), (sola:jl-inverse); composed of rigidsym.derivations.lie_maps.rotation_vector_left_jacobian.
+
+    Args:
+        w: array-like (..., 3); rotation vector w = phi e [rad]
+        out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
+        check: validate the inputs (finite, unit e/eta, orthogonal Q); False skips only that: on valid input the same result, and a NaN or inf input gives NaN in the outputs that depend on it.
+        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
+        threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
+
+    Returns:
+        ndarray (..., 3, 3): J
+
+    Raises:
+        TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
+        ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
+        NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
+
+    Notes:
+        Generated; 31 operations; math hash d4a19d08f115cd7e.
+    """
+    return _F.rotation_vector_left_jacobian(w, out, check, on_singular, threads)
+
+
+def rotation_vector_left_jacobian_inverse(
+    w: ArrayLike,
+    *,
+    out: OutArrays = None,
+    check: bool = True,
+    on_singular: OnSingular | None = None,
+    threads: int | None = None,
+) -> NDArray[np.floating]:
+    r"""The left Jacobian inverse of SO(3) at w.
+
+        J_l^-1(w), Solà et al. 2018 App. B
+
+    Book: Eq. (sola:jl-definition), (sola:jr-definition), (sola:jl-jr), (sola:jl-R-jr), (sola:jl-w), (sola:jl-inverse); composed of rigidsym.derivations.lie_maps.rotation_vector_left_jacobian_inverse.
+
+    Args:
+        w: array-like (..., 3); rotation vector w = phi e [rad]
+        out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
+        check: validate the inputs (finite, unit e/eta, orthogonal Q); False skips only that: on valid input the same result, and a NaN or inf input gives NaN in the outputs that depend on it.
+        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
+        threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
+
+    Returns:
+        ndarray (..., 3, 3): J
+
+    Raises:
+        TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
+        ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
+        NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
+        SingularConfigurationError: on the singular set (|w| = 2 pi k, k != 0), unless on_singular='nan'.
+
+    Notes:
+        Singular set: |w| = 2 pi k, k != 0.
+
+        Generated; 32 operations; math hash 2f680f5aa3fbff2f.
+    """
+    return _F.rotation_vector_left_jacobian_inverse(w, out, check, on_singular, threads)
+
+
+def rotation_vector_right_jacobian(
+    w: ArrayLike,
+    *,
+    out: OutArrays = None,
+    check: bool = True,
+    on_singular: OnSingular | None = None,
+    threads: int | None = None,
+) -> NDArray[np.floating]:
+    r"""The right Jacobian of SO(3) at w.
+
+        J_r(w), Solà et al. 2018 App. B
+
+    Book: Eq. (sola:jl-definition), (sola:jr-definition), (sola:jl-jr), (sola:jl-R-jr), (sola:jl-w), (sola:jl-inverse); composed of rigidsym.derivations.lie_maps.rotation_vector_right_jacobian.
+
+    Args:
+        w: array-like (..., 3); rotation vector w = phi e [rad]
+        out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
+        check: validate the inputs (finite, unit e/eta, orthogonal Q); False skips only that: on valid input the same result, and a NaN or inf input gives NaN in the outputs that depend on it.
+        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
+        threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
+
+    Returns:
+        ndarray (..., 3, 3): J
+
+    Raises:
+        TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
+        ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
+        NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
+
+    Notes:
+        Generated; 31 operations; math hash 35131894d7e1775b.
+    """
+    return _F.rotation_vector_right_jacobian(w, out, check, on_singular, threads)
+
+
+def rotation_vector_right_jacobian_inverse(
+    w: ArrayLike,
+    *,
+    out: OutArrays = None,
+    check: bool = True,
+    on_singular: OnSingular | None = None,
+    threads: int | None = None,
+) -> NDArray[np.floating]:
+    r"""The right Jacobian inverse of SO(3) at w.
+
+        J_r^-1(w), Solà et al. 2018 App. B
+
+    Book: Eq. (sola:jl-definition), (sola:jr-definition), (sola:jl-jr), (sola:jl-R-jr), (sola:jl-w), (sola:jl-inverse); composed of rigidsym.derivations.lie_maps.rotation_vector_right_jacobian_inverse.
+
+    Args:
+        w: array-like (..., 3); rotation vector w = phi e [rad]
+        out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
+        check: validate the inputs (finite, unit e/eta, orthogonal Q); False skips only that: on valid input the same result, and a NaN or inf input gives NaN in the outputs that depend on it.
+        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
+        threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
+
+    Returns:
+        ndarray (..., 3, 3): J
+
+    Raises:
+        TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
+        ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
+        NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
+        SingularConfigurationError: on the singular set (|w| = 2 pi k, k != 0), unless on_singular='nan'.
+
+    Notes:
+        Singular set: |w| = 2 pi k, k != 0.
+
+        Generated; 32 operations; math hash db168e620321154f.
+    """
+    return _F.rotation_vector_right_jacobian_inverse(w, out, check, on_singular, threads)
+
+
 def screw_axis_point(
     e: ArrayLike,
     phi: ArrayLike,
@@ -1181,6 +1598,41 @@ def screw_of_displacement(
         Generated; 565 operations; math hash 24c2ead304ca194c.
     """
     return _F.screw_of_displacement(Q, a, a_prime, out, check, on_singular, threads)
+
+
+def transform_from_exponential_coordinates(
+    xi: ArrayLike,
+    *,
+    out: OutArrays = None,
+    check: bool = True,
+    on_singular: OnSingular | None = None,
+    threads: int | None = None,
+) -> NDArray[np.floating]:
+    r"""Exp of se(3): the transform of xi = [w; v].
+
+        T = [[Exp(w), J_l(w) v], [0, 1]]
+
+    Book: Eq. (sola:exp-se3), (sola:log-exp-se3); composed of rigidsym.derivations.lie_maps.transform_from_exponential_coordinates.
+
+    Args:
+        xi: array-like (..., 6); exponential coordinates [w; v] ([rad]; [m])
+        out: preallocated float64 output array (a tuple of them for several outputs), shape batch + output shape; returned filled.
+        check: validate the inputs (finite, unit e/eta, orthogonal Q); False skips only that: on valid input the same result, and a NaN or inf input gives NaN in the outputs that depend on it.
+        on_singular: "raise" (SingularConfigurationError naming the argument and the batch indices) or "nan" (NaN in exactly those rows); None: "raise", or "nan" for Dask inputs.
+        threads: threads of the C batch loop; None: kernels.set_num_threads, else RIGIDSYM_NUM_THREADS, else 1 (outputs identical for every count).
+
+    Returns:
+        ndarray (..., 4, 4): T; homogeneous transform
+
+    Raises:
+        TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
+        ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
+        NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
+
+    Notes:
+        Generated; 77 operations; math hash 6422323903f35e70.
+    """
+    return _F.transform_from_exponential_coordinates(xi, out, check, on_singular, threads)
 
 
 def twist_transfer(

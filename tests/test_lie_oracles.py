@@ -18,19 +18,6 @@ def _x64():
     jax.config.update("jax_enable_x64", True)
 
 
-def _need_lie_kernels():
-    from rigidsym import kernels
-
-    if not hasattr(kernels, "transform_from_exponential_coordinates"):
-        pytest.skip("the Lie-group kernels are not in generated/ yet "
-                    "(derivations/kernels_spec_lie.py: KERNELS += LIE_KERNELS, regenerate)")
-
-
-@pytest.fixture(autouse=True)
-def _kernels():
-    _need_lie_kernels()
-
-
 def _points(n=20, seed=5):
     rng = np.random.default_rng(seed)
     w = rng.normal(size=(n, 3))

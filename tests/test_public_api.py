@@ -34,6 +34,13 @@ KERNELS = [
     "rotation_from_euler_rodrigues", "rotation_from_natural_invariants", "screw_axis_point",
     "screw_of_displacement", "twist_transfer", "twist_transfer_matrix", "wrench_axis",
     "wrench_transfer", "wrench_transfer_matrix",
+    # issue 38: the Lie-group maps (their Jacobians through kernels.jacobian(name))
+    "euler_rodrigues_from_rotation", "euler_rodrigues_product",
+    "exponential_coordinates_from_transform", "exponential_coordinates_left_jacobian",
+    "exponential_coordinates_left_jacobian_inverse", "rotation_from_rotation_vector",
+    "rotation_vector_from_rotation", "rotation_vector_left_jacobian",
+    "rotation_vector_left_jacobian_inverse", "rotation_vector_right_jacobian",
+    "rotation_vector_right_jacobian_inverse", "transform_from_exponential_coordinates",
 ]
 PUBLIC = {
     "rigidsym": ["BadInput", "Result", "Results", "check", "check_latex", "load_module", "verify",

@@ -8,17 +8,15 @@ coordinates to train through (and a reader's one was NaN at w = 0).
 from __future__ import annotations
 
 import importlib.util
+import re
 from pathlib import Path
 
 import numpy as np
 import pytest
-from test_lie_oracles import _kernels  # noqa: F401  (autouse: skip without the Lie kernels)
 
 pytestmark = pytest.mark.extra
 
 _EX = Path(__file__).resolve().parents[1] / "examples" / "train_rigid_motion.py"
-
-
 
 
 @pytest.fixture(scope="module")
@@ -69,3 +67,20 @@ def test_quaternion_network_trains(ex):
     target = kernels.rotation_from_rotation_vector(np.array([0.3, -1.2, 0.5]))
     Q = ex.fit_quaternion_network(target)
     assert np.abs(Q - target).max() < 1e-6
+
+
+def test_the_readmes_pytorch_example_runs_and_fits_the_motion():
+    # the README's PyTorch example is this training loop (issue 38 item 6): run as printed
+    torch = pytest.importorskip("torch", reason="needs the [torch] extra")
+    text = (_EX.parents[1] / "README.md").read_text()
+    block = re.search(r"\n((?:    .*\n|\n)*?    import torch\n(?:    .*\n|\n)*?)\S", text)
+    code = "\n".join(line[4:] for line in block.group(1).splitlines())
+    scope: dict = {}
+    torch.manual_seed(0)
+    exec(compile(code, "README.md", "exec"), scope)  # noqa: S102 -- the README's own text
+    rk, xi = scope["rk"], scope["xi"].detach()
+    T = rk.transform_from_exponential_coordinates(xi)
+    R = rk.rotation_from_rotation_vector(scope["w"])
+    assert float(scope["loss"].detach()) < 1e-6
+    assert torch.allclose(T[:3, :3], R, atol=1e-3)
+    assert torch.allclose(T[:3, 3], torch.tensor([1.0, 0.0, -0.5], dtype=T.dtype), atol=1e-3)

@@ -27,7 +27,7 @@ __attribute__((used))
 #endif
 static const char rigidsym_sources_tag[] = "rigidsym-sources:" RIGIDSYM_SOURCES;
 
-#define RIGIDSYM_NKERNELS 134
+#define RIGIDSYM_NKERNELS 153
 #define RIGIDSYM_MAXARRAYS 15
 
 /* the path chosen when the module was first executed (the same for every import) */
@@ -1002,158 +1002,18 @@ static int64_t rigidsym_call_95(const rigidsym_fns *f, int f32, int64_t n, int t
     return ((int64_t (*)(int64_t, int, const double *, double *, double *))f->f64)(
         n, t, p[0], p[1], p[2]);
 }
-static const Py_ssize_t rigidsym_sizes_96[] = {9, 1, 3, 3, 9};
+static const Py_ssize_t rigidsym_sizes_96[] = {9, 4};
 static int64_t rigidsym_call_96(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, const float *, float *))f->f32)(
-            n, t, p[0], p[1], p[2], p[3], p[4]);
-    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, const double *, double *))f->f64)(
-        n, t, p[0], p[1], p[2], p[3], p[4]);
+        return ((int64_t (*)(int64_t, int, const float *, float *))f->f32)(
+            n, t, p[0], p[1]);
+    return ((int64_t (*)(int64_t, int, const double *, double *))f->f64)(
+        n, t, p[0], p[1]);
 }
-static const Py_ssize_t rigidsym_sizes_97[] = {9, 1, 3, 3, 9, 81, 9, 27, 27};
+static const Py_ssize_t rigidsym_sizes_97[] = {4, 4, 4};
 static int64_t rigidsym_call_97(const rigidsym_fns *f, int f32, int64_t n, int t,
-                                   void **p)
-{
-    if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, const float *, float *, float *, float *, float *, float *))f->f32)(
-            n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8]);
-    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, const double *, double *, double *, double *, double *, double *))f->f64)(
-        n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8]);
-}
-static const Py_ssize_t rigidsym_sizes_98[] = {9, 1, 3, 3, 36};
-static int64_t rigidsym_call_98(const rigidsym_fns *f, int f32, int64_t n, int t,
-                                   void **p)
-{
-    if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, const float *, float *))f->f32)(
-            n, t, p[0], p[1], p[2], p[3], p[4]);
-    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, const double *, double *))f->f64)(
-        n, t, p[0], p[1], p[2], p[3], p[4]);
-}
-static const Py_ssize_t rigidsym_sizes_99[] = {9, 1, 3, 3, 36, 324, 36, 108, 108};
-static int64_t rigidsym_call_99(const rigidsym_fns *f, int f32, int64_t n, int t,
-                                   void **p)
-{
-    if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, const float *, float *, float *, float *, float *, float *))f->f32)(
-            n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8]);
-    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, const double *, double *, double *, double *, double *, double *))f->f64)(
-        n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8]);
-}
-static const Py_ssize_t rigidsym_sizes_100[] = {3, 3, 3, 3, 1, 6};
-static int64_t rigidsym_call_100(const rigidsym_fns *f, int f32, int64_t n, int t,
-                                   void **p)
-{
-    if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, float *, float *, float *))f->f32)(
-            n, t, p[0], p[1], p[2], p[3], p[4], p[5]);
-    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, double *, double *, double *))f->f64)(
-        n, t, p[0], p[1], p[2], p[3], p[4], p[5]);
-}
-static const Py_ssize_t rigidsym_sizes_101[] = {3, 3, 3, 3, 1, 6, 9, 9, 9, 3, 3, 3, 18, 18, 18};
-static int64_t rigidsym_call_101(const rigidsym_fns *f, int f32, int64_t n, int t,
-                                   void **p)
-{
-    if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, float *, float *, float *, float *, float *, float *, float *, float *, float *, float *, float *, float *))f->f32)(
-            n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], p[9], p[10], p[11], p[12], p[13], p[14]);
-    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, double *, double *, double *, double *, double *, double *, double *, double *, double *, double *, double *, double *))f->f64)(
-        n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], p[9], p[10], p[11], p[12], p[13], p[14]);
-}
-static const Py_ssize_t rigidsym_sizes_102[] = {3, 3, 3, 3, 1};
-static int64_t rigidsym_call_102(const rigidsym_fns *f, int f32, int64_t n, int t,
-                                   void **p)
-{
-    if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, float *, float *))f->f32)(
-            n, t, p[0], p[1], p[2], p[3], p[4]);
-    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, double *, double *))f->f64)(
-        n, t, p[0], p[1], p[2], p[3], p[4]);
-}
-static const Py_ssize_t rigidsym_sizes_103[] = {9, 1, 3, 3, 1};
-static int64_t rigidsym_call_103(const rigidsym_fns *f, int f32, int64_t n, int t,
-                                   void **p)
-{
-    if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, const float *, float *))f->f32)(
-            n, t, p[0], p[1], p[2], p[3], p[4]);
-    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, const double *, double *))f->f64)(
-        n, t, p[0], p[1], p[2], p[3], p[4]);
-}
-static const Py_ssize_t rigidsym_sizes_104[] = {9, 1, 3, 3, 1, 9, 1, 3, 3};
-static int64_t rigidsym_call_104(const rigidsym_fns *f, int f32, int64_t n, int t,
-                                   void **p)
-{
-    if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, const float *, float *, float *, float *, float *, float *))f->f32)(
-            n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8]);
-    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, const double *, double *, double *, double *, double *, double *))f->f64)(
-        n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8]);
-}
-static const Py_ssize_t rigidsym_sizes_105[] = {3, 9, 3, 3, 3, 3, 3, 3};
-static int64_t rigidsym_call_105(const rigidsym_fns *f, int f32, int64_t n, int t,
-                                   void **p)
-{
-    if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, const float *, const float *, const float *, const float *, float *))f->f32)(
-            n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7]);
-    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, const double *, const double *, const double *, const double *, double *))f->f64)(
-        n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7]);
-}
-static const Py_ssize_t rigidsym_sizes_106[] = {3, 9, 3, 3, 3, 3, 3, 3, 9, 27, 9, 9, 9, 9, 9};
-static int64_t rigidsym_call_106(const rigidsym_fns *f, int f32, int64_t n, int t,
-                                   void **p)
-{
-    if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, const float *, const float *, const float *, const float *, float *, float *, float *, float *, float *, float *, float *, float *))f->f32)(
-            n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], p[9], p[10], p[11], p[12], p[13], p[14]);
-    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, const double *, const double *, const double *, const double *, double *, double *, double *, double *, double *, double *, double *, double *))f->f64)(
-        n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], p[9], p[10], p[11], p[12], p[13], p[14]);
-}
-static const Py_ssize_t rigidsym_sizes_107[] = {9, 3, 1};
-static int64_t rigidsym_call_107(const rigidsym_fns *f, int f32, int64_t n, int t,
-                                   void **p)
-{
-    if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, float *, float *))f->f32)(
-            n, t, p[0], p[1], p[2]);
-    return ((int64_t (*)(int64_t, int, const double *, double *, double *))f->f64)(
-        n, t, p[0], p[1], p[2]);
-}
-static const Py_ssize_t rigidsym_sizes_108[] = {9, 1, 3, 3, 3, 3, 3, 6};
-static int64_t rigidsym_call_108(const rigidsym_fns *f, int f32, int64_t n, int t,
-                                   void **p)
-{
-    if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, const float *, const float *, const float *, const float *, float *))f->f32)(
-            n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7]);
-    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, const double *, const double *, const double *, const double *, double *))f->f64)(
-        n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7]);
-}
-static const Py_ssize_t rigidsym_sizes_109[] = {9, 1, 3, 3, 3, 6};
-static int64_t rigidsym_call_109(const rigidsym_fns *f, int f32, int64_t n, int t,
-                                   void **p)
-{
-    if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, const float *, const float *, float *))f->f32)(
-            n, t, p[0], p[1], p[2], p[3], p[4], p[5]);
-    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, const double *, const double *, double *))f->f64)(
-        n, t, p[0], p[1], p[2], p[3], p[4], p[5]);
-}
-static const Py_ssize_t rigidsym_sizes_110[] = {9, 1, 3, 3, 3, 6, 54, 6, 18, 18, 18};
-static int64_t rigidsym_call_110(const rigidsym_fns *f, int f32, int64_t n, int t,
-                                   void **p)
-{
-    if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, const float *, const float *, float *, float *, float *, float *, float *, float *))f->f32)(
-            n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], p[9], p[10]);
-    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, const double *, const double *, double *, double *, double *, double *, double *, double *))f->f64)(
-        n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], p[9], p[10]);
-}
-static const Py_ssize_t rigidsym_sizes_111[] = {3, 3, 6};
-static int64_t rigidsym_call_111(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
@@ -1162,8 +1022,8 @@ static int64_t rigidsym_call_111(const rigidsym_fns *f, int f32, int64_t n, int 
     return ((int64_t (*)(int64_t, int, const double *, const double *, double *))f->f64)(
         n, t, p[0], p[1], p[2]);
 }
-static const Py_ssize_t rigidsym_sizes_112[] = {3, 3, 6, 18, 18};
-static int64_t rigidsym_call_112(const rigidsym_fns *f, int f32, int64_t n, int t,
+static const Py_ssize_t rigidsym_sizes_98[] = {4, 4, 4, 16, 16};
+static int64_t rigidsym_call_98(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
@@ -1172,27 +1032,167 @@ static int64_t rigidsym_call_112(const rigidsym_fns *f, int f32, int64_t n, int 
     return ((int64_t (*)(int64_t, int, const double *, const double *, double *, double *, double *))f->f64)(
         n, t, p[0], p[1], p[2], p[3], p[4]);
 }
-static const Py_ssize_t rigidsym_sizes_113[] = {6, 3, 3, 6};
+static const Py_ssize_t rigidsym_sizes_99[] = {16, 6};
+static int64_t rigidsym_call_99(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, float *))f->f32)(
+            n, t, p[0], p[1]);
+    return ((int64_t (*)(int64_t, int, const double *, double *))f->f64)(
+        n, t, p[0], p[1]);
+}
+static const Py_ssize_t rigidsym_sizes_100[] = {6, 36};
+static int64_t rigidsym_call_100(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, float *))f->f32)(
+            n, t, p[0], p[1]);
+    return ((int64_t (*)(int64_t, int, const double *, double *))f->f64)(
+        n, t, p[0], p[1]);
+}
+static const Py_ssize_t rigidsym_sizes_101[] = {6, 36};
+static int64_t rigidsym_call_101(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, float *))f->f32)(
+            n, t, p[0], p[1]);
+    return ((int64_t (*)(int64_t, int, const double *, double *))f->f64)(
+        n, t, p[0], p[1]);
+}
+static const Py_ssize_t rigidsym_sizes_102[] = {9, 1, 3, 3, 9};
+static int64_t rigidsym_call_102(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, const float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2], p[3], p[4]);
+    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, const double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2], p[3], p[4]);
+}
+static const Py_ssize_t rigidsym_sizes_103[] = {9, 1, 3, 3, 9, 81, 9, 27, 27};
+static int64_t rigidsym_call_103(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, const float *, float *, float *, float *, float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8]);
+    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, const double *, double *, double *, double *, double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8]);
+}
+static const Py_ssize_t rigidsym_sizes_104[] = {9, 1, 3, 3, 36};
+static int64_t rigidsym_call_104(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, const float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2], p[3], p[4]);
+    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, const double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2], p[3], p[4]);
+}
+static const Py_ssize_t rigidsym_sizes_105[] = {9, 1, 3, 3, 36, 324, 36, 108, 108};
+static int64_t rigidsym_call_105(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, const float *, float *, float *, float *, float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8]);
+    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, const double *, double *, double *, double *, double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8]);
+}
+static const Py_ssize_t rigidsym_sizes_106[] = {3, 3, 3, 3, 1, 6};
+static int64_t rigidsym_call_106(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, float *, float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2], p[3], p[4], p[5]);
+    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, double *, double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2], p[3], p[4], p[5]);
+}
+static const Py_ssize_t rigidsym_sizes_107[] = {3, 3, 3, 3, 1, 6, 9, 9, 9, 3, 3, 3, 18, 18, 18};
+static int64_t rigidsym_call_107(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, float *, float *, float *, float *, float *, float *, float *, float *, float *, float *, float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], p[9], p[10], p[11], p[12], p[13], p[14]);
+    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, double *, double *, double *, double *, double *, double *, double *, double *, double *, double *, double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], p[9], p[10], p[11], p[12], p[13], p[14]);
+}
+static const Py_ssize_t rigidsym_sizes_108[] = {3, 3, 3, 3, 1};
+static int64_t rigidsym_call_108(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2], p[3], p[4]);
+    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2], p[3], p[4]);
+}
+static const Py_ssize_t rigidsym_sizes_109[] = {9, 1, 3, 3, 1};
+static int64_t rigidsym_call_109(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, const float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2], p[3], p[4]);
+    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, const double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2], p[3], p[4]);
+}
+static const Py_ssize_t rigidsym_sizes_110[] = {9, 1, 3, 3, 1, 9, 1, 3, 3};
+static int64_t rigidsym_call_110(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, const float *, float *, float *, float *, float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8]);
+    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, const double *, double *, double *, double *, double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8]);
+}
+static const Py_ssize_t rigidsym_sizes_111[] = {3, 9, 3, 3, 3, 3, 3, 3};
+static int64_t rigidsym_call_111(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, const float *, const float *, const float *, const float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7]);
+    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, const double *, const double *, const double *, const double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7]);
+}
+static const Py_ssize_t rigidsym_sizes_112[] = {3, 9, 3, 3, 3, 3, 3, 3, 9, 27, 9, 9, 9, 9, 9};
+static int64_t rigidsym_call_112(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, const float *, const float *, const float *, const float *, float *, float *, float *, float *, float *, float *, float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], p[9], p[10], p[11], p[12], p[13], p[14]);
+    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, const double *, const double *, const double *, const double *, double *, double *, double *, double *, double *, double *, double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], p[9], p[10], p[11], p[12], p[13], p[14]);
+}
+static const Py_ssize_t rigidsym_sizes_113[] = {9, 3, 1};
 static int64_t rigidsym_call_113(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, float *))f->f32)(
-            n, t, p[0], p[1], p[2], p[3]);
-    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, double *))f->f64)(
-        n, t, p[0], p[1], p[2], p[3]);
+        return ((int64_t (*)(int64_t, int, const float *, float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2]);
+    return ((int64_t (*)(int64_t, int, const double *, double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2]);
 }
-static const Py_ssize_t rigidsym_sizes_114[] = {6, 3, 3, 6, 36, 18, 18};
+static const Py_ssize_t rigidsym_sizes_114[] = {9, 1, 3, 3, 3, 3, 3, 6};
 static int64_t rigidsym_call_114(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, float *, float *, float *, float *))f->f32)(
-            n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6]);
-    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, double *, double *, double *, double *))f->f64)(
-        n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6]);
+        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, const float *, const float *, const float *, const float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7]);
+    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, const double *, const double *, const double *, const double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7]);
 }
-static const Py_ssize_t rigidsym_sizes_115[] = {3, 3, 3, 3, 3, 3};
+static const Py_ssize_t rigidsym_sizes_115[] = {9, 1, 3, 3, 3, 6};
 static int64_t rigidsym_call_115(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
@@ -1202,7 +1202,7 @@ static int64_t rigidsym_call_115(const rigidsym_fns *f, int f32, int64_t n, int 
     return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, const double *, const double *, double *))f->f64)(
         n, t, p[0], p[1], p[2], p[3], p[4], p[5]);
 }
-static const Py_ssize_t rigidsym_sizes_116[] = {3, 3, 3, 3, 3, 3, 9, 9, 9, 9, 9};
+static const Py_ssize_t rigidsym_sizes_116[] = {9, 1, 3, 3, 3, 6, 54, 6, 18, 18, 18};
 static int64_t rigidsym_call_116(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
@@ -1212,28 +1212,8 @@ static int64_t rigidsym_call_116(const rigidsym_fns *f, int f32, int64_t n, int 
     return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, const double *, const double *, double *, double *, double *, double *, double *, double *))f->f64)(
         n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], p[9], p[10]);
 }
-static const Py_ssize_t rigidsym_sizes_117[] = {4, 9};
+static const Py_ssize_t rigidsym_sizes_117[] = {3, 3, 6};
 static int64_t rigidsym_call_117(const rigidsym_fns *f, int f32, int64_t n, int t,
-                                   void **p)
-{
-    if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, float *))f->f32)(
-            n, t, p[0], p[1]);
-    return ((int64_t (*)(int64_t, int, const double *, double *))f->f64)(
-        n, t, p[0], p[1]);
-}
-static const Py_ssize_t rigidsym_sizes_118[] = {4, 9, 36};
-static int64_t rigidsym_call_118(const rigidsym_fns *f, int f32, int64_t n, int t,
-                                   void **p)
-{
-    if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, float *, float *))f->f32)(
-            n, t, p[0], p[1], p[2]);
-    return ((int64_t (*)(int64_t, int, const double *, double *, double *))f->f64)(
-        n, t, p[0], p[1], p[2]);
-}
-static const Py_ssize_t rigidsym_sizes_119[] = {3, 1, 9};
-static int64_t rigidsym_call_119(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
@@ -1242,8 +1222,8 @@ static int64_t rigidsym_call_119(const rigidsym_fns *f, int f32, int64_t n, int 
     return ((int64_t (*)(int64_t, int, const double *, const double *, double *))f->f64)(
         n, t, p[0], p[1], p[2]);
 }
-static const Py_ssize_t rigidsym_sizes_120[] = {3, 1, 9, 27, 9};
-static int64_t rigidsym_call_120(const rigidsym_fns *f, int f32, int64_t n, int t,
+static const Py_ssize_t rigidsym_sizes_118[] = {3, 3, 6, 18, 18};
+static int64_t rigidsym_call_118(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
@@ -1252,38 +1232,8 @@ static int64_t rigidsym_call_120(const rigidsym_fns *f, int f32, int64_t n, int 
     return ((int64_t (*)(int64_t, int, const double *, const double *, double *, double *, double *))f->f64)(
         n, t, p[0], p[1], p[2], p[3], p[4]);
 }
-static const Py_ssize_t rigidsym_sizes_121[] = {3, 1, 3, 3, 3};
-static int64_t rigidsym_call_121(const rigidsym_fns *f, int f32, int64_t n, int t,
-                                   void **p)
-{
-    if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, const float *, float *))f->f32)(
-            n, t, p[0], p[1], p[2], p[3], p[4]);
-    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, const double *, double *))f->f64)(
-        n, t, p[0], p[1], p[2], p[3], p[4]);
-}
-static const Py_ssize_t rigidsym_sizes_122[] = {3, 1, 3, 3, 3, 9, 3, 9, 9};
-static int64_t rigidsym_call_122(const rigidsym_fns *f, int f32, int64_t n, int t,
-                                   void **p)
-{
-    if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, const float *, float *, float *, float *, float *, float *))f->f32)(
-            n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8]);
-    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, const double *, double *, double *, double *, double *, double *))f->f64)(
-        n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8]);
-}
-static const Py_ssize_t rigidsym_sizes_123[] = {9, 3, 3, 3, 1, 3, 1, 6};
-static int64_t rigidsym_call_123(const rigidsym_fns *f, int f32, int64_t n, int t,
-                                   void **p)
-{
-    if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, float *, float *, float *, float *, float *))f->f32)(
-            n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7]);
-    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, double *, double *, double *, double *, double *))f->f64)(
-        n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7]);
-}
-static const Py_ssize_t rigidsym_sizes_124[] = {6, 3, 3, 6};
-static int64_t rigidsym_call_124(const rigidsym_fns *f, int f32, int64_t n, int t,
+static const Py_ssize_t rigidsym_sizes_119[] = {6, 3, 3, 6};
+static int64_t rigidsym_call_119(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
@@ -1292,7 +1242,57 @@ static int64_t rigidsym_call_124(const rigidsym_fns *f, int f32, int64_t n, int 
     return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, double *))f->f64)(
         n, t, p[0], p[1], p[2], p[3]);
 }
-static const Py_ssize_t rigidsym_sizes_125[] = {3, 3, 36};
+static const Py_ssize_t rigidsym_sizes_120[] = {6, 3, 3, 6, 36, 18, 18};
+static int64_t rigidsym_call_120(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, float *, float *, float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6]);
+    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, double *, double *, double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6]);
+}
+static const Py_ssize_t rigidsym_sizes_121[] = {3, 3, 3, 3, 3, 3};
+static int64_t rigidsym_call_121(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, const float *, const float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2], p[3], p[4], p[5]);
+    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, const double *, const double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2], p[3], p[4], p[5]);
+}
+static const Py_ssize_t rigidsym_sizes_122[] = {3, 3, 3, 3, 3, 3, 9, 9, 9, 9, 9};
+static int64_t rigidsym_call_122(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, const float *, const float *, float *, float *, float *, float *, float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], p[9], p[10]);
+    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, const double *, const double *, double *, double *, double *, double *, double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], p[9], p[10]);
+}
+static const Py_ssize_t rigidsym_sizes_123[] = {4, 9};
+static int64_t rigidsym_call_123(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, float *))f->f32)(
+            n, t, p[0], p[1]);
+    return ((int64_t (*)(int64_t, int, const double *, double *))f->f64)(
+        n, t, p[0], p[1]);
+}
+static const Py_ssize_t rigidsym_sizes_124[] = {4, 9, 36};
+static int64_t rigidsym_call_124(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2]);
+    return ((int64_t (*)(int64_t, int, const double *, double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2]);
+}
+static const Py_ssize_t rigidsym_sizes_125[] = {3, 1, 9};
 static int64_t rigidsym_call_125(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
@@ -1302,7 +1302,7 @@ static int64_t rigidsym_call_125(const rigidsym_fns *f, int f32, int64_t n, int 
     return ((int64_t (*)(int64_t, int, const double *, const double *, double *))f->f64)(
         n, t, p[0], p[1], p[2]);
 }
-static const Py_ssize_t rigidsym_sizes_126[] = {3, 3, 36, 108, 108};
+static const Py_ssize_t rigidsym_sizes_126[] = {3, 1, 9, 27, 9};
 static int64_t rigidsym_call_126(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
@@ -1312,38 +1312,168 @@ static int64_t rigidsym_call_126(const rigidsym_fns *f, int f32, int64_t n, int 
     return ((int64_t (*)(int64_t, int, const double *, const double *, double *, double *, double *))f->f64)(
         n, t, p[0], p[1], p[2], p[3], p[4]);
 }
-static const Py_ssize_t rigidsym_sizes_127[] = {6, 3, 3, 6, 36, 18, 18};
+static const Py_ssize_t rigidsym_sizes_127[] = {3, 9};
 static int64_t rigidsym_call_127(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, float *, float *, float *, float *))f->f32)(
-            n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6]);
-    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, double *, double *, double *, double *))f->f64)(
-        n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6]);
+        return ((int64_t (*)(int64_t, int, const float *, float *))f->f32)(
+            n, t, p[0], p[1]);
+    return ((int64_t (*)(int64_t, int, const double *, double *))f->f64)(
+        n, t, p[0], p[1]);
 }
-static const Py_ssize_t rigidsym_sizes_128[] = {6, 3, 3, 1, 6};
+static const Py_ssize_t rigidsym_sizes_128[] = {3, 9, 27};
 static int64_t rigidsym_call_128(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, const float *, float *, float *, float *))f->f32)(
-            n, t, p[0], p[1], p[2], p[3], p[4]);
-    return ((int64_t (*)(int64_t, int, const double *, const double *, double *, double *, double *))f->f64)(
-        n, t, p[0], p[1], p[2], p[3], p[4]);
+        return ((int64_t (*)(int64_t, int, const float *, float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2]);
+    return ((int64_t (*)(int64_t, int, const double *, double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2]);
 }
-static const Py_ssize_t rigidsym_sizes_129[] = {6, 3, 3, 1, 6, 18, 9, 6, 3, 36, 18};
+static const Py_ssize_t rigidsym_sizes_129[] = {9, 3};
 static int64_t rigidsym_call_129(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, const float *, float *, float *, float *, float *, float *, float *, float *, float *, float *))f->f32)(
-            n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], p[9], p[10]);
-    return ((int64_t (*)(int64_t, int, const double *, const double *, double *, double *, double *, double *, double *, double *, double *, double *, double *))f->f64)(
-        n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], p[9], p[10]);
+        return ((int64_t (*)(int64_t, int, const float *, float *))f->f32)(
+            n, t, p[0], p[1]);
+    return ((int64_t (*)(int64_t, int, const double *, double *))f->f64)(
+        n, t, p[0], p[1]);
 }
-static const Py_ssize_t rigidsym_sizes_130[] = {6, 3, 3, 6};
+static const Py_ssize_t rigidsym_sizes_130[] = {3, 9};
 static int64_t rigidsym_call_130(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, float *))f->f32)(
+            n, t, p[0], p[1]);
+    return ((int64_t (*)(int64_t, int, const double *, double *))f->f64)(
+        n, t, p[0], p[1]);
+}
+static const Py_ssize_t rigidsym_sizes_131[] = {3, 9};
+static int64_t rigidsym_call_131(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, float *))f->f32)(
+            n, t, p[0], p[1]);
+    return ((int64_t (*)(int64_t, int, const double *, double *))f->f64)(
+        n, t, p[0], p[1]);
+}
+static const Py_ssize_t rigidsym_sizes_132[] = {3, 9, 27};
+static int64_t rigidsym_call_132(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2]);
+    return ((int64_t (*)(int64_t, int, const double *, double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2]);
+}
+static const Py_ssize_t rigidsym_sizes_133[] = {3, 9, 27};
+static int64_t rigidsym_call_133(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2]);
+    return ((int64_t (*)(int64_t, int, const double *, double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2]);
+}
+static const Py_ssize_t rigidsym_sizes_134[] = {3, 9};
+static int64_t rigidsym_call_134(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, float *))f->f32)(
+            n, t, p[0], p[1]);
+    return ((int64_t (*)(int64_t, int, const double *, double *))f->f64)(
+        n, t, p[0], p[1]);
+}
+static const Py_ssize_t rigidsym_sizes_135[] = {3, 9};
+static int64_t rigidsym_call_135(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, float *))f->f32)(
+            n, t, p[0], p[1]);
+    return ((int64_t (*)(int64_t, int, const double *, double *))f->f64)(
+        n, t, p[0], p[1]);
+}
+static const Py_ssize_t rigidsym_sizes_136[] = {3, 9, 27};
+static int64_t rigidsym_call_136(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2]);
+    return ((int64_t (*)(int64_t, int, const double *, double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2]);
+}
+static const Py_ssize_t rigidsym_sizes_137[] = {3, 9, 27};
+static int64_t rigidsym_call_137(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2]);
+    return ((int64_t (*)(int64_t, int, const double *, double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2]);
+}
+static const Py_ssize_t rigidsym_sizes_138[] = {3, 1, 3, 3, 3};
+static int64_t rigidsym_call_138(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, const float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2], p[3], p[4]);
+    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, const double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2], p[3], p[4]);
+}
+static const Py_ssize_t rigidsym_sizes_139[] = {3, 1, 3, 3, 3, 9, 3, 9, 9};
+static int64_t rigidsym_call_139(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, const float *, float *, float *, float *, float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8]);
+    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, const double *, double *, double *, double *, double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8]);
+}
+static const Py_ssize_t rigidsym_sizes_140[] = {9, 3, 3, 3, 1, 3, 1, 6};
+static int64_t rigidsym_call_140(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, float *, float *, float *, float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7]);
+    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, double *, double *, double *, double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7]);
+}
+static const Py_ssize_t rigidsym_sizes_141[] = {6, 16};
+static int64_t rigidsym_call_141(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, float *))f->f32)(
+            n, t, p[0], p[1]);
+    return ((int64_t (*)(int64_t, int, const double *, double *))f->f64)(
+        n, t, p[0], p[1]);
+}
+static const Py_ssize_t rigidsym_sizes_142[] = {6, 16, 96};
+static int64_t rigidsym_call_142(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2]);
+    return ((int64_t (*)(int64_t, int, const double *, double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2]);
+}
+static const Py_ssize_t rigidsym_sizes_143[] = {6, 3, 3, 6};
+static int64_t rigidsym_call_143(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
@@ -1352,8 +1482,8 @@ static int64_t rigidsym_call_130(const rigidsym_fns *f, int f32, int64_t n, int 
     return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, double *))f->f64)(
         n, t, p[0], p[1], p[2], p[3]);
 }
-static const Py_ssize_t rigidsym_sizes_131[] = {3, 3, 36};
-static int64_t rigidsym_call_131(const rigidsym_fns *f, int f32, int64_t n, int t,
+static const Py_ssize_t rigidsym_sizes_144[] = {3, 3, 36};
+static int64_t rigidsym_call_144(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
@@ -1362,8 +1492,8 @@ static int64_t rigidsym_call_131(const rigidsym_fns *f, int f32, int64_t n, int 
     return ((int64_t (*)(int64_t, int, const double *, const double *, double *))f->f64)(
         n, t, p[0], p[1], p[2]);
 }
-static const Py_ssize_t rigidsym_sizes_132[] = {3, 3, 36, 108, 108};
-static int64_t rigidsym_call_132(const rigidsym_fns *f, int f32, int64_t n, int t,
+static const Py_ssize_t rigidsym_sizes_145[] = {3, 3, 36, 108, 108};
+static int64_t rigidsym_call_145(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
@@ -1372,8 +1502,68 @@ static int64_t rigidsym_call_132(const rigidsym_fns *f, int f32, int64_t n, int 
     return ((int64_t (*)(int64_t, int, const double *, const double *, double *, double *, double *))f->f64)(
         n, t, p[0], p[1], p[2], p[3], p[4]);
 }
-static const Py_ssize_t rigidsym_sizes_133[] = {6, 3, 3, 6, 36, 18, 18};
-static int64_t rigidsym_call_133(const rigidsym_fns *f, int f32, int64_t n, int t,
+static const Py_ssize_t rigidsym_sizes_146[] = {6, 3, 3, 6, 36, 18, 18};
+static int64_t rigidsym_call_146(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, float *, float *, float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6]);
+    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, double *, double *, double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6]);
+}
+static const Py_ssize_t rigidsym_sizes_147[] = {6, 3, 3, 1, 6};
+static int64_t rigidsym_call_147(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, const float *, float *, float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2], p[3], p[4]);
+    return ((int64_t (*)(int64_t, int, const double *, const double *, double *, double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2], p[3], p[4]);
+}
+static const Py_ssize_t rigidsym_sizes_148[] = {6, 3, 3, 1, 6, 18, 9, 6, 3, 36, 18};
+static int64_t rigidsym_call_148(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, const float *, float *, float *, float *, float *, float *, float *, float *, float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], p[9], p[10]);
+    return ((int64_t (*)(int64_t, int, const double *, const double *, double *, double *, double *, double *, double *, double *, double *, double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], p[9], p[10]);
+}
+static const Py_ssize_t rigidsym_sizes_149[] = {6, 3, 3, 6};
+static int64_t rigidsym_call_149(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2], p[3]);
+    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2], p[3]);
+}
+static const Py_ssize_t rigidsym_sizes_150[] = {3, 3, 36};
+static int64_t rigidsym_call_150(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, const float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2]);
+    return ((int64_t (*)(int64_t, int, const double *, const double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2]);
+}
+static const Py_ssize_t rigidsym_sizes_151[] = {3, 3, 36, 108, 108};
+static int64_t rigidsym_call_151(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, const float *, float *, float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2], p[3], p[4]);
+    return ((int64_t (*)(int64_t, int, const double *, const double *, double *, double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2], p[3], p[4]);
+}
+static const Py_ssize_t rigidsym_sizes_152[] = {6, 3, 3, 6, 36, 18, 18};
+static int64_t rigidsym_call_152(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
@@ -1480,44 +1670,63 @@ static const rigidsym_kernel rigidsym_kernels[RIGIDSYM_NKERNELS] = {
     {"euler_rate_matrix_zyz_body_with_jacobians", 1, 2, rigidsym_sizes_93, rigidsym_call_93},
     {"euler_rate_matrix_zyz_fixed", 1, 1, rigidsym_sizes_94, rigidsym_call_94},
     {"euler_rate_matrix_zyz_fixed_with_jacobians", 1, 2, rigidsym_sizes_95, rigidsym_call_95},
-    {"inertia_at_point", 4, 1, rigidsym_sizes_96, rigidsym_call_96},
-    {"inertia_at_point_with_jacobians", 4, 5, rigidsym_sizes_97, rigidsym_call_97},
-    {"inertia_dyad_at_point", 4, 1, rigidsym_sizes_98, rigidsym_call_98},
-    {"inertia_dyad_at_point_with_jacobians", 4, 5, rigidsym_sizes_99, rigidsym_call_99},
-    {"instant_screw_axis", 3, 3, rigidsym_sizes_100, rigidsym_call_100},
-    {"instant_screw_axis_with_jacobians", 3, 12, rigidsym_sizes_101, rigidsym_call_101},
-    {"instant_screw_point_pitch", 3, 2, rigidsym_sizes_102, rigidsym_call_102},
-    {"kinetic_energy", 4, 1, rigidsym_sizes_103, rigidsym_call_103},
-    {"kinetic_energy_with_jacobians", 4, 5, rigidsym_sizes_104, rigidsym_call_104},
-    {"moving_frame_acceleration", 7, 1, rigidsym_sizes_105, rigidsym_call_105},
-    {"moving_frame_acceleration_with_jacobians", 7, 8, rigidsym_sizes_106, rigidsym_call_106},
-    {"natural_invariants_from_rotation", 1, 2, rigidsym_sizes_107, rigidsym_call_107},
-    {"newton_euler_residual", 7, 1, rigidsym_sizes_108, rigidsym_call_108},
-    {"newton_euler_wrench", 5, 1, rigidsym_sizes_109, rigidsym_call_109},
-    {"newton_euler_wrench_with_jacobians", 5, 6, rigidsym_sizes_110, rigidsym_call_110},
-    {"plucker_from_points", 2, 1, rigidsym_sizes_111, rigidsym_call_111},
-    {"plucker_from_points_with_jacobians", 2, 3, rigidsym_sizes_112, rigidsym_call_112},
-    {"plucker_transfer", 3, 1, rigidsym_sizes_113, rigidsym_call_113},
-    {"plucker_transfer_with_jacobians", 3, 4, rigidsym_sizes_114, rigidsym_call_114},
-    {"point_acceleration", 5, 1, rigidsym_sizes_115, rigidsym_call_115},
-    {"point_acceleration_with_jacobians", 5, 6, rigidsym_sizes_116, rigidsym_call_116},
-    {"rotation_from_euler_rodrigues", 1, 1, rigidsym_sizes_117, rigidsym_call_117},
-    {"rotation_from_euler_rodrigues_with_jacobians", 1, 2, rigidsym_sizes_118, rigidsym_call_118},
-    {"rotation_from_natural_invariants", 2, 1, rigidsym_sizes_119, rigidsym_call_119},
-    {"rotation_from_natural_invariants_with_jacobians", 2, 3, rigidsym_sizes_120, rigidsym_call_120},
-    {"screw_axis_point", 4, 1, rigidsym_sizes_121, rigidsym_call_121},
-    {"screw_axis_point_with_jacobians", 4, 5, rigidsym_sizes_122, rigidsym_call_122},
-    {"screw_of_displacement", 3, 5, rigidsym_sizes_123, rigidsym_call_123},
-    {"twist_transfer", 3, 1, rigidsym_sizes_124, rigidsym_call_124},
-    {"twist_transfer_matrix", 2, 1, rigidsym_sizes_125, rigidsym_call_125},
-    {"twist_transfer_matrix_with_jacobians", 2, 3, rigidsym_sizes_126, rigidsym_call_126},
-    {"twist_transfer_with_jacobians", 3, 4, rigidsym_sizes_127, rigidsym_call_127},
-    {"wrench_axis", 2, 3, rigidsym_sizes_128, rigidsym_call_128},
-    {"wrench_axis_with_jacobians", 2, 9, rigidsym_sizes_129, rigidsym_call_129},
-    {"wrench_transfer", 3, 1, rigidsym_sizes_130, rigidsym_call_130},
-    {"wrench_transfer_matrix", 2, 1, rigidsym_sizes_131, rigidsym_call_131},
-    {"wrench_transfer_matrix_with_jacobians", 2, 3, rigidsym_sizes_132, rigidsym_call_132},
-    {"wrench_transfer_with_jacobians", 3, 4, rigidsym_sizes_133, rigidsym_call_133},
+    {"euler_rodrigues_from_rotation", 1, 1, rigidsym_sizes_96, rigidsym_call_96},
+    {"euler_rodrigues_product", 2, 1, rigidsym_sizes_97, rigidsym_call_97},
+    {"euler_rodrigues_product_with_jacobians", 2, 3, rigidsym_sizes_98, rigidsym_call_98},
+    {"exponential_coordinates_from_transform", 1, 1, rigidsym_sizes_99, rigidsym_call_99},
+    {"exponential_coordinates_left_jacobian", 1, 1, rigidsym_sizes_100, rigidsym_call_100},
+    {"exponential_coordinates_left_jacobian_inverse", 1, 1, rigidsym_sizes_101, rigidsym_call_101},
+    {"inertia_at_point", 4, 1, rigidsym_sizes_102, rigidsym_call_102},
+    {"inertia_at_point_with_jacobians", 4, 5, rigidsym_sizes_103, rigidsym_call_103},
+    {"inertia_dyad_at_point", 4, 1, rigidsym_sizes_104, rigidsym_call_104},
+    {"inertia_dyad_at_point_with_jacobians", 4, 5, rigidsym_sizes_105, rigidsym_call_105},
+    {"instant_screw_axis", 3, 3, rigidsym_sizes_106, rigidsym_call_106},
+    {"instant_screw_axis_with_jacobians", 3, 12, rigidsym_sizes_107, rigidsym_call_107},
+    {"instant_screw_point_pitch", 3, 2, rigidsym_sizes_108, rigidsym_call_108},
+    {"kinetic_energy", 4, 1, rigidsym_sizes_109, rigidsym_call_109},
+    {"kinetic_energy_with_jacobians", 4, 5, rigidsym_sizes_110, rigidsym_call_110},
+    {"moving_frame_acceleration", 7, 1, rigidsym_sizes_111, rigidsym_call_111},
+    {"moving_frame_acceleration_with_jacobians", 7, 8, rigidsym_sizes_112, rigidsym_call_112},
+    {"natural_invariants_from_rotation", 1, 2, rigidsym_sizes_113, rigidsym_call_113},
+    {"newton_euler_residual", 7, 1, rigidsym_sizes_114, rigidsym_call_114},
+    {"newton_euler_wrench", 5, 1, rigidsym_sizes_115, rigidsym_call_115},
+    {"newton_euler_wrench_with_jacobians", 5, 6, rigidsym_sizes_116, rigidsym_call_116},
+    {"plucker_from_points", 2, 1, rigidsym_sizes_117, rigidsym_call_117},
+    {"plucker_from_points_with_jacobians", 2, 3, rigidsym_sizes_118, rigidsym_call_118},
+    {"plucker_transfer", 3, 1, rigidsym_sizes_119, rigidsym_call_119},
+    {"plucker_transfer_with_jacobians", 3, 4, rigidsym_sizes_120, rigidsym_call_120},
+    {"point_acceleration", 5, 1, rigidsym_sizes_121, rigidsym_call_121},
+    {"point_acceleration_with_jacobians", 5, 6, rigidsym_sizes_122, rigidsym_call_122},
+    {"rotation_from_euler_rodrigues", 1, 1, rigidsym_sizes_123, rigidsym_call_123},
+    {"rotation_from_euler_rodrigues_with_jacobians", 1, 2, rigidsym_sizes_124, rigidsym_call_124},
+    {"rotation_from_natural_invariants", 2, 1, rigidsym_sizes_125, rigidsym_call_125},
+    {"rotation_from_natural_invariants_with_jacobians", 2, 3, rigidsym_sizes_126, rigidsym_call_126},
+    {"rotation_from_rotation_vector", 1, 1, rigidsym_sizes_127, rigidsym_call_127},
+    {"rotation_from_rotation_vector_with_jacobians", 1, 2, rigidsym_sizes_128, rigidsym_call_128},
+    {"rotation_vector_from_rotation", 1, 1, rigidsym_sizes_129, rigidsym_call_129},
+    {"rotation_vector_left_jacobian", 1, 1, rigidsym_sizes_130, rigidsym_call_130},
+    {"rotation_vector_left_jacobian_inverse", 1, 1, rigidsym_sizes_131, rigidsym_call_131},
+    {"rotation_vector_left_jacobian_inverse_with_jacobians", 1, 2, rigidsym_sizes_132, rigidsym_call_132},
+    {"rotation_vector_left_jacobian_with_jacobians", 1, 2, rigidsym_sizes_133, rigidsym_call_133},
+    {"rotation_vector_right_jacobian", 1, 1, rigidsym_sizes_134, rigidsym_call_134},
+    {"rotation_vector_right_jacobian_inverse", 1, 1, rigidsym_sizes_135, rigidsym_call_135},
+    {"rotation_vector_right_jacobian_inverse_with_jacobians", 1, 2, rigidsym_sizes_136, rigidsym_call_136},
+    {"rotation_vector_right_jacobian_with_jacobians", 1, 2, rigidsym_sizes_137, rigidsym_call_137},
+    {"screw_axis_point", 4, 1, rigidsym_sizes_138, rigidsym_call_138},
+    {"screw_axis_point_with_jacobians", 4, 5, rigidsym_sizes_139, rigidsym_call_139},
+    {"screw_of_displacement", 3, 5, rigidsym_sizes_140, rigidsym_call_140},
+    {"transform_from_exponential_coordinates", 1, 1, rigidsym_sizes_141, rigidsym_call_141},
+    {"transform_from_exponential_coordinates_with_jacobians", 1, 2, rigidsym_sizes_142, rigidsym_call_142},
+    {"twist_transfer", 3, 1, rigidsym_sizes_143, rigidsym_call_143},
+    {"twist_transfer_matrix", 2, 1, rigidsym_sizes_144, rigidsym_call_144},
+    {"twist_transfer_matrix_with_jacobians", 2, 3, rigidsym_sizes_145, rigidsym_call_145},
+    {"twist_transfer_with_jacobians", 3, 4, rigidsym_sizes_146, rigidsym_call_146},
+    {"wrench_axis", 2, 3, rigidsym_sizes_147, rigidsym_call_147},
+    {"wrench_axis_with_jacobians", 2, 9, rigidsym_sizes_148, rigidsym_call_148},
+    {"wrench_transfer", 3, 1, rigidsym_sizes_149, rigidsym_call_149},
+    {"wrench_transfer_matrix", 2, 1, rigidsym_sizes_150, rigidsym_call_150},
+    {"wrench_transfer_matrix_with_jacobians", 2, 3, rigidsym_sizes_151, rigidsym_call_151},
+    {"wrench_transfer_with_jacobians", 3, 4, rigidsym_sizes_152, rigidsym_call_152},
 };
 
 /* A buffer of C-contiguous float64 ('d') or float32 ('f') values holding at least `need`

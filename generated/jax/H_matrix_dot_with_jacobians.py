@@ -19,6 +19,21 @@ the checked, differentiable API.
 
 import jax.numpy
 
+
+def _sincos(x):
+    sc = jax.numpy.stack([jax.numpy.sin(x), jax.numpy.cos(x)], -1)
+    if jax.default_backend() == "cpu":
+        sc = sc @ jax.numpy.eye(2, dtype=sc.dtype)
+    return sc
+
+
+def _sin(x):
+    return _sincos(x)[..., 0]
+
+
+def _cos(x):
+    return _sincos(x)[..., 1]
+
 OPS = 77
 MATH_HASH = "4c473032c8734761"
 COLUMNS = ("e_0", "e_1", "e_2", "phi", "omega_0", "omega_1", "omega_2", )
@@ -26,13 +41,13 @@ COLUMNS = ("e_0", "e_1", "e_2", "phi", "omega_0", "omega_1", "omega_2", )
 
 def _main(e_0, e_1, e_2, phi, omega_0, omega_1, omega_2):
     x0 = (0.5)*phi
-    x1 = jax.numpy.sin(x0)
+    x1 = _sin(x0)
     x2 = (0.25)*x1
     x3 = omega_0*x2
     x4 = omega_1*x2
     x5 = omega_2*x2
     x6 = -e_0*x3 - e_1*x4 - e_2*x5
-    x7 = jax.numpy.cos(x0)
+    x7 = _cos(x0)
     x8 = (0.25)*x7
     x9 = -e_0*x4 + e_1*x3 + omega_2*x8
     x10 = e_0*x5 - 0.25*e_2*omega_0*x1 + omega_1*x8

@@ -19,6 +19,21 @@ the checked, differentiable API.
 
 import jax.numpy
 
+
+def _sincos(x):
+    sc = jax.numpy.stack([jax.numpy.sin(x), jax.numpy.cos(x)], -1)
+    if jax.default_backend() == "cpu":
+        sc = sc @ jax.numpy.eye(2, dtype=sc.dtype)
+    return sc
+
+
+def _sin(x):
+    return _sincos(x)[..., 0]
+
+
+def _cos(x):
+    return _sincos(x)[..., 1]
+
 OPS = 10
 MATH_HASH = "224ea51c5b2204c1"
 COLUMNS = ("e_0", "e_1", "e_2", "phi", )
@@ -26,8 +41,8 @@ COLUMNS = ("e_0", "e_1", "e_2", "phi", )
 
 def _main(e_0, e_1, e_2, phi):
     x0 = (0.5)*phi
-    x1 = jax.numpy.cos(x0)
-    x2 = jax.numpy.sin(x0)/x1
+    x1 = _cos(x0)
+    x2 = _sin(x0)/x1
     x3 = e_2*x2
     x4 = -x3
     x5 = e_1*x2
@@ -60,10 +75,10 @@ VARIANTS = (
 
 def _vjp(e_0, e_1, e_2, phi, _g0, _g1, _g2, _g3, _g4, _g5, _g6, _g7, _g8, _g9, _g10, _g11):
     """The cotangents of the inputs (``COLUMNS``) from those of the outputs: reverse mode
-    over ``_main``, 27 operations."""
+    over ``_main``, 26 operations."""
     x0 = (0.5)*phi
-    x1 = jax.numpy.cos(x0)
-    x2 = jax.numpy.sin(x0)/x1
+    x1 = _cos(x0)
+    x2 = _sin(x0)/x1
     _b0 = _g7 + _g8
     _b1 = _g3 + _g6
     _b2 = -_b1 + _g9
@@ -71,8 +86,9 @@ def _vjp(e_0, e_1, e_2, phi, _g0, _g1, _g2, _g3, _g4, _g5, _g6, _g7, _g8, _g9, _
     _b4 = _g1 + _g11
     _b5 = -_b4 + _g4
     _b6 = _b2*e_0 + _b3*e_1 + _b5*e_2
-    _b7 = -_b6*jax.numpy.sin(x0)/(x1*x1)
-    _b8 = _b6 - _b7*jax.numpy.sin(x0)
+    _c0 = _sin(x0)
+    _b7 = -_b6*_c0/(x1*x1)
+    _b8 = _b6 - _b7*_c0
     return (
         _b2*x2,
         _b3*x2,
@@ -83,13 +99,14 @@ def _vjp(e_0, e_1, e_2, phi, _g0, _g1, _g2, _g3, _g4, _g5, _g6, _g7, _g8, _g9, _
 
 def _jvp(e_0, e_1, e_2, phi, _t0, _t1, _t2, _t3):
     """The tangents of the outputs from those of the inputs, linear in the tangents:
-    forward mode over ``_main``, 25 operations."""
+    forward mode over ``_main``, 24 operations."""
     x0 = (0.5)*phi
     _d0 = (0.5)*_t3
-    x1 = jax.numpy.cos(x0)
-    _d1 = -_d0*jax.numpy.sin(x0)
-    x2 = jax.numpy.sin(x0)/x1
-    _d2 = _d0 - _d1*jax.numpy.sin(x0)/(x1*x1)
+    x1 = _cos(x0)
+    _e0 = _sin(x0)
+    _d1 = -_d0*_e0
+    x2 = _sin(x0)/x1
+    _d2 = _d0 - _d1*_e0/(x1*x1)
     _d3 = _d2*e_2 + _t2*x2
     _d4 = -_d3
     _d5 = _d2*e_1 + _t1*x2
@@ -115,3 +132,6 @@ def _jvp(e_0, e_1, e_2, phi, _t0, _t1, _t2, _t3):
 #: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.vjp), None without a
 #: generated Jacobian
 VJP, JVP = _vjp, _jvp
+#: whether ``_main`` divides (without a denominator no sample is singular: the runtime
+#: skips the mask)
+DIVIDES = True

@@ -19,6 +19,21 @@ the checked, differentiable API.
 
 import jax.numpy
 
+
+def _sincos(x):
+    sc = jax.numpy.stack([jax.numpy.sin(x), jax.numpy.cos(x)], -1)
+    if jax.default_backend() == "cpu":
+        sc = sc @ jax.numpy.eye(2, dtype=sc.dtype)
+    return sc
+
+
+def _sin(x):
+    return _sincos(x)[..., 0]
+
+
+def _cos(x):
+    return _sincos(x)[..., 1]
+
 OPS = 285
 MATH_HASH = "9f1a588f5ad147c3"
 COLUMNS = ("e_0", "e_1", "e_2", "phi", "omega_0", "omega_1", "omega_2", )
@@ -26,11 +41,11 @@ COLUMNS = ("e_0", "e_1", "e_2", "phi", "omega_0", "omega_1", "omega_2", )
 
 def _main(e_0, e_1, e_2, phi, omega_0, omega_1, omega_2):
     x0 = (0.5)*phi
-    x1 = jax.numpy.sin(x0)
+    x1 = _sin(x0)
     x2 = (x1*x1)
     x3 = e_2*x2
     x4 = e_0*x3
-    x5 = jax.numpy.cos(x0)
+    x5 = _cos(x0)
     x6 = x1*x5
     x7 = e_1*x6
     x8 = x4 - x7

@@ -19,6 +19,21 @@ the checked, differentiable API.
 
 import jax.numpy
 
+
+def _sincos(x):
+    sc = jax.numpy.stack([jax.numpy.sin(x), jax.numpy.cos(x)], -1)
+    if jax.default_backend() == "cpu":
+        sc = sc @ jax.numpy.eye(2, dtype=sc.dtype)
+    return sc
+
+
+def _sin(x):
+    return _sincos(x)[..., 0]
+
+
+def _cos(x):
+    return _sincos(x)[..., 1]
+
 OPS = 31
 MATH_HASH = "6f7cbc14b1897619"
 COLUMNS = ("e_0", "e_1", "e_2", "phi", )
@@ -26,8 +41,8 @@ COLUMNS = ("e_0", "e_1", "e_2", "phi", )
 
 def _main(e_0, e_1, e_2, phi):
     x0 = (0.5)*phi
-    x1 = jax.numpy.sin(x0)
-    x2 = jax.numpy.cos(x0)
+    x1 = _sin(x0)
+    x2 = _cos(x0)
     x3 = x1/x2
     x4 = e_2*x3
     x5 = -x4

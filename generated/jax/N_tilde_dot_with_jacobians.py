@@ -19,6 +19,21 @@ the checked, differentiable API.
 
 import jax.numpy
 
+
+def _sincos(x):
+    sc = jax.numpy.stack([jax.numpy.sin(x), jax.numpy.cos(x)], -1)
+    if jax.default_backend() == "cpu":
+        sc = sc @ jax.numpy.eye(2, dtype=sc.dtype)
+    return sc
+
+
+def _sin(x):
+    return _sincos(x)[..., 0]
+
+
+def _cos(x):
+    return _sincos(x)[..., 1]
+
 OPS = 314
 MATH_HASH = "a24e938b75871a8c"
 COLUMNS = ("e_0", "e_1", "e_2", "phi", "omega_0", "omega_1", "omega_2", )
@@ -26,7 +41,7 @@ COLUMNS = ("e_0", "e_1", "e_2", "phi", "omega_0", "omega_1", "omega_2", )
 
 def _main(e_0, e_1, e_2, phi, omega_0, omega_1, omega_2):
     x0 = (0.5)*phi
-    x1 = jax.numpy.sin(x0)
+    x1 = _sin(x0)
     x2 = (x1*x1)
     x3 = 2.0*x2
     x4 = 1.0 - x3
@@ -35,7 +50,7 @@ def _main(e_0, e_1, e_2, phi, omega_0, omega_1, omega_2):
     x7 = e_2*omega_2
     x8 = x5 + x6 + x7
     x9 = x4*x8
-    x10 = jax.numpy.cos(x0)
+    x10 = _cos(x0)
     x11 = x1*x10
     x12 = 2.0*x11
     x13 = x12*x8

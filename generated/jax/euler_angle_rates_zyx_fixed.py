@@ -19,18 +19,33 @@ the checked, differentiable API.
 
 import jax.numpy
 
+
+def _sincos(x):
+    sc = jax.numpy.stack([jax.numpy.sin(x), jax.numpy.cos(x)], -1)
+    if jax.default_backend() == "cpu":
+        sc = sc @ jax.numpy.eye(2, dtype=sc.dtype)
+    return sc
+
+
+def _sin(x):
+    return _sincos(x)[..., 0]
+
+
+def _cos(x):
+    return _sincos(x)[..., 1]
+
 OPS = 26
 MATH_HASH = "6a96510a0002ee91"
 COLUMNS = ("angles_0", "angles_1", "angles_2", "omega_0", "omega_1", "omega_2", )
 
 
 def _main(angles_0, angles_1, angles_2, omega_0, omega_1, omega_2):
-    x0 = jax.numpy.cos(angles_1)
+    x0 = _cos(angles_1)
     x1 = 1.0/x0
-    x2 = jax.numpy.sin(angles_1)
-    x3 = jax.numpy.cos(angles_0)
+    x2 = _sin(angles_1)
+    x3 = _cos(angles_0)
     x4 = omega_0*x3
-    x5 = jax.numpy.sin(angles_0)
+    x5 = _sin(angles_0)
     x6 = omega_1*x5
     return (
         -x1*(-omega_2*x0 - x2*x4 - x2*x6),

@@ -19,17 +19,32 @@ the checked, differentiable API.
 
 import jax.numpy
 
+
+def _sincos(x):
+    sc = jax.numpy.stack([jax.numpy.sin(x), jax.numpy.cos(x)], -1)
+    if jax.default_backend() == "cpu":
+        sc = sc @ jax.numpy.eye(2, dtype=sc.dtype)
+    return sc
+
+
+def _sin(x):
+    return _sincos(x)[..., 0]
+
+
+def _cos(x):
+    return _sincos(x)[..., 1]
+
 OPS = 7
 MATH_HASH = "80ffe60de0789a65"
 COLUMNS = ("angles_0", "angles_1", "angles_2", )
 
 
 def _main(angles_0, angles_1, angles_2):
-    x0 = jax.numpy.cos(angles_1)
-    x1 = jax.numpy.cos(angles_2)
-    x2 = jax.numpy.sin(angles_2)
+    x0 = _cos(angles_1)
+    x1 = _cos(angles_2)
+    x2 = _sin(angles_2)
     return (
-        jax.numpy.sin(angles_1),
+        _sin(angles_1),
         0.0,
         1.0,
         x0*x1,
@@ -51,15 +66,15 @@ VARIANTS = (
 def _vjp(angles_0, angles_1, angles_2, _g0, _g1, _g2, _g3, _g4, _g5, _g6, _g7, _g8):
     """The cotangents of the inputs (``COLUMNS``) from those of the outputs: reverse mode
     over ``_main``, 17 operations."""
-    x0 = jax.numpy.cos(angles_1)
-    x1 = jax.numpy.cos(angles_2)
-    x2 = jax.numpy.sin(angles_2)
+    x0 = _cos(angles_1)
+    x1 = _cos(angles_2)
+    x2 = _sin(angles_2)
     _b0 = _g4 - _g6*x0
     _b1 = _g3*x0 + _g7
     _b2 = _g3*x1 - _g6*x2
     return (
         0.0,
-        -_b2*jax.numpy.sin(angles_1) + _g0*x0,
+        -_b2*_sin(angles_1) + _g0*x0,
         _b0*x1 - _b1*x2,
     )
 
@@ -67,11 +82,11 @@ def _vjp(angles_0, angles_1, angles_2, _g0, _g1, _g2, _g3, _g4, _g5, _g6, _g7, _
 def _jvp(angles_0, angles_1, angles_2, _t0, _t1, _t2):
     """The tangents of the outputs from those of the inputs, linear in the tangents:
     forward mode over ``_main``, 18 operations."""
-    x0 = jax.numpy.cos(angles_1)
-    _d0 = -_t1*jax.numpy.sin(angles_1)
-    x1 = jax.numpy.cos(angles_2)
-    _d1 = -_t2*jax.numpy.sin(angles_2)
-    x2 = jax.numpy.sin(angles_2)
+    x0 = _cos(angles_1)
+    _d0 = -_t1*_sin(angles_1)
+    x1 = _cos(angles_2)
+    _d1 = -_t2*_sin(angles_2)
+    x2 = _sin(angles_2)
     _d2 = _t2*x1
     return (
         _t1*x0,
@@ -89,3 +104,6 @@ def _jvp(angles_0, angles_1, angles_2, _t0, _t1, _t2):
 #: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.vjp), None without a
 #: generated Jacobian
 VJP, JVP = _vjp, _jvp
+#: whether ``_main`` divides (without a denominator no sample is singular: the runtime
+#: skips the mask)
+DIVIDES = False

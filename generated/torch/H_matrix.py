@@ -81,12 +81,13 @@ def _vjp(e_0, e_1, e_2, phi, _g0, _g1, _g2, _g3, _g4, _g5, _g6, _g7, _g8, _g9, _
 
 def _jvp(e_0, e_1, e_2, phi, _t0, _t1, _t2, _t3):
     """The tangents of the outputs from those of the inputs, linear in the tangents:
-    forward mode over ``_main``, 23 operations."""
+    forward mode over ``_main``, 22 operations."""
     x0 = (0.5)*phi
     _d0 = (0.5)*_t3
-    _d1 = -0.5*_d0*torch.sin(x0)
+    _e0 = (0.5)*_d0
+    _d1 = -_e0*torch.sin(x0)
     x2 = (0.5)*torch.sin(x0)
-    _d2 = (0.5)*_d0*torch.cos(x0)
+    _d2 = _e0*torch.cos(x0)
     _d3 = _d2*e_2 + _t2*x2
     _d4 = _d2*e_1 + _t1*x2
     _d5 = -_d4
@@ -112,3 +113,6 @@ def _jvp(e_0, e_1, e_2, phi, _t0, _t1, _t2, _t3):
 #: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.vjp), None without a
 #: generated Jacobian
 VJP, JVP = _vjp, _jvp
+#: whether ``_main`` divides (without a denominator no sample is singular: the runtime
+#: skips the mask)
+DIVIDES = False

@@ -79,7 +79,7 @@ VARIANTS = (
 
 def _vjp(e_0, e_1, e_2, phi, omega_0, omega_1, omega_2, _g0, _g1, _g2, _g3, _g4, _g5, _g6, _g7, _g8, _g9, _g10, _g11):
     """The cotangents of the inputs (``COLUMNS``) from those of the outputs: reverse mode
-    over ``_main``, 297 operations."""
+    over ``_main``, 261 operations."""
     x0 = (0.5)*phi
     x1 = torch.sin(x0)
     x2 = (x1*x1)
@@ -109,44 +109,63 @@ def _vjp(e_0, e_1, e_2, phi, omega_0, omega_1, omega_2, _g0, _g1, _g2, _g3, _g4,
     _b1 = _g3 + _g6
     _b2 = -_b1*x19 + _g9*x19
     _b3 = -_b0*x19 + _g2*x19
-    _b4 = _b2*omega_0 + _b3*omega_1
-    _b5 = _b4*(0.5 - x14)
-    _b6 = -_b2*omega_1 - _b3*omega_0
+    _c0 = _b2*omega_0
+    _c1 = _b3*omega_1
+    _b4 = _c0 + _c1
+    _c2 = 0.5 - x14
+    _b5 = _b4*_c2
+    _c3 = _b2*omega_1
+    _c4 = _b3*omega_0
+    _b6 = -_c3 - _c4
     _b7 = _g1 + _g11
     _b8 = -_b0*x24 - _b1*x25 - _b7*x18 + _g2*x24 + _g4*x18 + _g9*x25
     _b9 = -_b7*x19 + _g4*x19
-    _b10 = _b2*omega_0 + _b9*omega_2
-    _b11 = _b10*(0.5 - x14)
-    _b12 = _b3*omega_1 + _b9*omega_2
+    _c5 = _b9*omega_2
+    _b10 = _c0 + _c5
+    _b11 = _b10*_c2
+    _b12 = _c1 + _c5
     _b13 = _b10*(1.0 - x16) + _b12*(1.0 - x13) + _b4*(1.0 - x22)
-    _b14 = _b12*(0.5 - x14)
-    _b15 = -_b2*e_0*x1*x10 - _b3*e_1*x1*x10 - _b9*e_2*x1*x10
-    _b16 = -2.0*_b15*omega_2 + _b2*omega_1 - _b3*omega_0
-    _b17 = -_b2*e_0*x1*x12 - _b3*e_1*x1*x12 - _b9*e_2*x1*x12
-    _b18 = -2.0*_b15*omega_0 + _b3*omega_2 - _b9*omega_1
-    _b19 = -_b3*omega_2 - _b9*omega_1
-    _b20 = -2.0*_b15*omega_1 - _b2*omega_2 + _b9*omega_0
+    _b14 = _b12*_c2
+    _c6 = x1*x10
+    _c7 = _b2*e_0
+    _c8 = _b3*e_1
+    _c9 = _b9*e_2
+    _b15 = -_c6*_c7 - _c6*_c8 - _c6*_c9
+    _c10 = 2.0*_b15
+    _b16 = -_c10*omega_2 + _c3 - _c4
+    _c11 = x1*x12
+    _b17 = -_c11*_c7 - _c11*_c8 - _c11*_c9
+    _c12 = _b9*omega_1
+    _c13 = _b3*omega_2
+    _b18 = -_c10*omega_0 - _c12 + _c13
+    _b19 = -_c12 - _c13
+    _c14 = _b2*omega_2
+    _c15 = _b9*omega_0
+    _b20 = -_c10*omega_1 - _c14 + _c15
     _b21 = _b16*e_2 + _b18*e_0 + _b20*e_1
     _b22 = -_b17/(x5*x5) + _b21*x1 - _b8/(x5*x5*x5)
-    _b23 = -_b2*omega_2 - _b9*omega_0
+    _b23 = -_c14 - _c15
     _b24 = _b19*e_1 + _b23*e_0
-    _b25 = -_b13 + _b24*e_2 + _b6*e_0*e_1
-    _b26 = -_b2*e_0*x10*x12 + _b21*x5 + 2.0*_b25*x1 - _b3*e_1*x10*x12 - _b9*e_2*x10*x12
+    _c16 = _b6*e_1
+    _b25 = -_b13 + _b24*e_2 + _c16*e_0
+    _c17 = x10*x12
+    _b26 = _b21*x5 + 2.0*_b25*x1 - _c17*_c7 - _c17*_c8 - _c17*_c9
     _b27 = -_b22*x1 + _b26*x5
+    _c18 = _c6*x12
     return (
-        2.0*_b14*e_0 + _b18*x6 - _b2*x1*x10*x12 + _b23*x3 + _b6*e_1*x2,
-        2.0*_b11*e_1 + _b19*x3 + _b20*x6 - _b3*x1*x10*x12 + _b6*e_0*x2,
-        _b16*x6 + _b24*x2 + 2.0*_b5*e_2 - _b9*x1*x10*x12,
+        2.0*_b14*e_0 + _b18*x6 - _b2*_c18 + _b23*x3 + _c16*x2,
+        2.0*_b11*e_1 + _b19*x3 + _b20*x6 - _b3*_c18 + _b6*e_0*x2,
+        _b16*x6 + _b24*x2 + 2.0*_b5*e_2 - _b9*_c18,
         (0.5)*_b27,
-        -2.0*_b15*x9 + _b2*(x17 + x23) + _b3*(-x11 - x21) + _b9*(-x4 + x7),
-        -2.0*_b15*x7 + _b2*(x11 - x21) + _b3*(x15 + x23) + _b9*(-x8 - x9),
-        -2.0*_b15*x11 + _b2*(-x4 - x7) + _b3*(-x8 + x9) + _b9*(x15 + x17),
+        _b2*(x17 + x23) + _b3*(-x11 - x21) + _b9*(-x4 + x7) - _c10*x9,
+        _b2*(x11 - x21) + _b3*(x15 + x23) + _b9*(-x8 - x9) - _c10*x7,
+        _b2*(-x4 - x7) + _b3*(-x8 + x9) + _b9*(x15 + x17) - _c10*x11,
     )
 
 
 def _jvp(e_0, e_1, e_2, phi, omega_0, omega_1, omega_2, _t0, _t1, _t2, _t3, _t4, _t5, _t6):
     """The tangents of the outputs from those of the inputs, linear in the tangents:
-    forward mode over ``_main``, 299 operations."""
+    forward mode over ``_main``, 270 operations."""
     x0 = (0.5)*phi
     _d0 = (0.5)*_t3
     x1 = torch.sin(x0)
@@ -178,39 +197,51 @@ def _jvp(e_0, e_1, e_2, phi, omega_0, omega_1, omega_2, _t0, _t1, _t2, _t3, _t4,
     x14 = 0.5 - x2
     _d14 = -_d2
     x15 = (0.5)*x13 + x14*(1.0 - x13)
-    _d15 = _d13*(0.5 - x14) + _d14*(1.0 - x13)
+    _e0 = 0.5 - x14
+    _d15 = _d13*_e0 + _d14*(1.0 - x13)
     x16 = (e_1*e_1)
     _d16 = 2.0*_t1*e_1
     x17 = x14*(1.0 - x16) + (0.5)*x16
-    _d17 = _d14*(1.0 - x16) + _d16*(0.5 - x14)
+    _d17 = _d14*(1.0 - x16) + _d16*_e0
     x18 = -e_2*x1*x10*x12 + omega_0*(-x4 + x7) + omega_1*(-x8 - x9) + omega_2*(x15 + x17)
-    _d18 = -_d1*e_2*x10*x12 - _d10*e_2*x1*x12 - _d12*e_2*x1*x10 + _d15*omega_2 + _d17*omega_2 - _d4*omega_0 + _d7*omega_0 - _d8*omega_1 - _d9*omega_1 - _t2*x1*x10*x12 + _t4*(-x4 + x7) + _t5*(-x8 - x9) + _t6*(x15 + x17)
+    _e1 = e_2*x12
+    _e2 = _d1*x10
+    _e3 = _d10*x1
+    _e4 = x1*x10
+    _e5 = _d12*_e4
+    _e6 = _e4*x12
+    _d18 = _d15*omega_2 + _d17*omega_2 - _d4*omega_0 + _d7*omega_0 - _d8*omega_1 - _d9*omega_1 - _e1*_e2 - _e1*_e3 - _e5*e_2 - _e6*_t2 + _t4*(-x4 + x7) + _t5*(-x8 - x9) + _t6*(x15 + x17)
     x19 = (0.5)/(x5*x5)
     _d19 = -_d5/(x5*x5*x5)
-    _d20 = -_d18*x19 - _d19*x18
+    _e7 = _d18*x19 + _d19*x18
+    _d20 = -_e7
     x21 = e_0*e_1*x2
     _d21 = _d2*e_0*e_1 + _t0*e_1*x2 + _t1*e_0*x2
     x22 = (e_2*e_2)
     _d22 = 2.0*_t2*e_2
     x23 = x14*(1.0 - x22) + (0.5)*x22
-    _d23 = _d14*(1.0 - x22) + _d22*(0.5 - x14)
+    _d23 = _d14*(1.0 - x22) + _d22*_e0
     x24 = -e_1*x1*x10*x12 + omega_0*(-x11 - x21) + omega_1*(x15 + x23) + omega_2*(-x8 + x9)
-    _d24 = -_d1*e_1*x10*x12 - _d10*e_1*x1*x12 - _d11*omega_0 - _d12*e_1*x1*x10 + _d15*omega_1 - _d21*omega_0 + _d23*omega_1 - _d8*omega_2 + _d9*omega_2 - _t1*x1*x10*x12 + _t4*(-x11 - x21) + _t5*(x15 + x23) + _t6*(-x8 + x9)
+    _e8 = e_1*x12
+    _d24 = -_d11*omega_0 + _d15*omega_1 - _d21*omega_0 + _d23*omega_1 - _d8*omega_2 + _d9*omega_2 - _e2*_e8 - _e3*_e8 - _e5*e_1 - _e6*_t1 + _t4*(-x11 - x21) + _t5*(x15 + x23) + _t6*(-x8 + x9)
     x25 = -e_0*x1*x10*x12 + omega_0*(x17 + x23) + omega_1*(x11 - x21) + omega_2*(-x4 - x7)
-    _d25 = -_d1*e_0*x10*x12 - _d10*e_0*x1*x12 + _d11*omega_1 - _d12*e_0*x1*x10 + _d17*omega_0 - _d21*omega_1 + _d23*omega_0 - _d4*omega_2 - _d7*omega_2 - _t0*x1*x10*x12 + _t4*(x17 + x23) + _t5*(x11 - x21) + _t6*(-x4 - x7)
-    _d26 = -_d19*x25 - _d25*x19
-    _d27 = -_d19*x24 - _d24*x19
+    _e9 = e_0*x12
+    _d25 = _d11*omega_1 + _d17*omega_0 - _d21*omega_1 + _d23*omega_0 - _d4*omega_2 - _d7*omega_2 - _e2*_e9 - _e3*_e9 - _e5*e_0 - _e6*_t0 + _t4*(x17 + x23) + _t5*(x11 - x21) + _t6*(-x4 - x7)
+    _e10 = _d19*x25 + _d25*x19
+    _d26 = -_e10
+    _e11 = _d19*x24 + _d24*x19
+    _d27 = -_e11
     return (
         0.0,
         _d20,
-        _d19*x24 + _d24*x19,
+        _e11,
         _d26,
-        _d18*x19 + _d19*x18,
+        _e7,
         0.0,
         _d26,
         _d27,
         _d27,
-        _d19*x25 + _d25*x19,
+        _e10,
         0.0,
         _d20,
     )
@@ -219,3 +250,6 @@ def _jvp(e_0, e_1, e_2, phi, omega_0, omega_1, omega_2, _t0, _t1, _t2, _t3, _t4,
 #: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.vjp), None without a
 #: generated Jacobian
 VJP, JVP = _vjp, _jvp
+#: whether ``_main`` divides (without a denominator no sample is singular: the runtime
+#: skips the mask)
+DIVIDES = True

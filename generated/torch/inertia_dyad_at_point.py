@@ -89,7 +89,7 @@ VARIANTS = (
 
 def _vjp(I_C_00, I_C_01, I_C_02, I_C_10, I_C_11, I_C_12, I_C_20, I_C_21, I_C_22, m, c_0, c_1, c_2, a_0, a_1, a_2, _g0, _g1, _g2, _g3, _g4, _g5, _g6, _g7, _g8, _g9, _g10, _g11, _g12, _g13, _g14, _g15, _g16, _g17, _g18, _g19, _g20, _g21, _g22, _g23, _g24, _g25, _g26, _g27, _g28, _g29, _g30, _g31, _g32, _g33, _g34, _g35):
     """The cotangents of the inputs (``COLUMNS``) from those of the outputs: reverse mode
-    over ``_main``, 82 operations."""
+    over ``_main``, 79 operations."""
     x0 = a_1 - c_1
     x1 = (x0*x0)
     x2 = a_2 - c_2
@@ -102,16 +102,19 @@ def _vjp(I_C_00, I_C_01, I_C_02, I_C_10, I_C_11, I_C_12, I_C_20, I_C_21, I_C_22,
     _b1 = _g15 + _g20
     _b2 = _g19 + _g9
     _b3 = _g13 + _g8
-    _b4 = _g14*m + _g7*m
+    _c0 = _g14*m
+    _c1 = _g7*m
+    _b4 = _c0 + _c1
     _b5 = _g30 + _g5
     _b6 = _g12 + _g2
     _b7 = -_b3*x0 - _b6*x4 + _g24 + _g4
     _b8 = _g1 + _g6
     _b9 = -_b8*x0 + _g11 + _g31
     _b10 = -_b0*m + 2.0*_b4*x4 - _b6*x7 + _b9*m
-    _b11 = _g0*m + _g7*m
+    _c2 = _g0*m
+    _b11 = _c1 + _c2
     _b12 = 2.0*_b11*x2 - _b2*m + _b7*m
-    _b13 = _g0*m + _g14*m
+    _b13 = _c0 + _c2
     _b14 = _b1*m + 2.0*_b13*x0 - _b3*x7 - _b5*m - _b8*x5
     return (
         _g0,
@@ -135,7 +138,7 @@ def _vjp(I_C_00, I_C_01, I_C_02, I_C_10, I_C_11, I_C_12, I_C_20, I_C_21, I_C_22,
 
 def _jvp(I_C_00, I_C_01, I_C_02, I_C_10, I_C_11, I_C_12, I_C_20, I_C_21, I_C_22, m, c_0, c_1, c_2, a_0, a_1, a_2, _t0, _t1, _t2, _t3, _t4, _t5, _t6, _t7, _t8, _t9, _t10, _t11, _t12, _t13, _t14, _t15):
     """The tangents of the outputs from those of the inputs, linear in the tangents:
-    forward mode over ``_main``, 77 operations."""
+    forward mode over ``_main``, 65 operations."""
     x0 = a_1 - c_1
     _d0 = -_t11 + _t14
     x1 = (x0*x0)
@@ -147,34 +150,40 @@ def _jvp(I_C_00, I_C_01, I_C_02, I_C_10, I_C_11, I_C_12, I_C_20, I_C_21, I_C_22,
     x4 = a_0 - c_0
     _d4 = -_t10 + _t13
     x5 = m*x4
-    _d5 = _d4*m + _t9*x4
+    _e0 = _d4*m + _t9*x4
+    _d5 = _e0
     _d6 = -_d0*x5 - _d5*x0
     x7 = m*x2
-    _d7 = _d2*m + _t9*x2
+    _e1 = _d2*m + _t9*x2
+    _d7 = _e1
     _d8 = -_d4*x7 - _d7*x4
-    _d9 = -_d0*m - _t9*x0
+    _e2 = _d0*m + _t9*x0
+    _d9 = -_e2
     x10 = (x4*x4)
     _d10 = 2.0*_d4*x4
     _d11 = -_d0*x7 - _d7*x0
-    _d12 = -_d2*m - _t9*x2
-    _d13 = _d0*m + _t9*x0
-    _d14 = -_d4*m - _t9*x4
+    _d12 = -_e1
+    _d13 = _e2
+    _d14 = -_e0
+    _e3 = _d1*m
+    _e4 = _d3*m
+    _e5 = _d10*m
     return (
-        _d1*m + _d3*m + _t0 + _t9*(x1 + x3),
+        _e3 + _e4 + _t0 + _t9*(x1 + x3),
         _d6 + _t1,
         _d8 + _t2,
         0.0,
         _d7,
         _d9,
         _d6 + _t3,
-        _d10*m + _d3*m + _t4 + _t9*(x10 + x3),
+        _e4 + _e5 + _t4 + _t9*(x10 + x3),
         _d11 + _t5,
         _d12,
         0.0,
         _d5,
         _d8 + _t6,
         _d11 + _t7,
-        _d1*m + _d10*m + _t8 + _t9*(x1 + x10),
+        _e3 + _e5 + _t8 + _t9*(x1 + x10),
         _d13,
         _d14,
         0.0,
@@ -202,3 +211,6 @@ def _jvp(I_C_00, I_C_01, I_C_02, I_C_10, I_C_11, I_C_12, I_C_20, I_C_21, I_C_22,
 #: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.vjp), None without a
 #: generated Jacobian
 VJP, JVP = _vjp, _jvp
+#: whether ``_main`` divides (without a denominator no sample is singular: the runtime
+#: skips the mask)
+DIVIDES = False

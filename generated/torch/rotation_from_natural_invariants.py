@@ -62,7 +62,7 @@ VARIANTS = (
 
 def _vjp(e_0, e_1, e_2, phi, _g0, _g1, _g2, _g3, _g4, _g5, _g6, _g7, _g8):
     """The cotangents of the inputs (``COLUMNS``) from those of the outputs: reverse mode
-    over ``_main``, 94 operations."""
+    over ``_main``, 85 operations."""
     x0 = (e_0*e_0)
     x1 = (0.5)*phi
     x2 = torch.sin(x1)
@@ -73,9 +73,10 @@ def _vjp(e_0, e_1, e_2, phi, _g0, _g1, _g2, _g3, _g4, _g5, _g6, _g7, _g8):
     x8 = 2.0*x2*torch.cos(x1)
     x12 = (e_1*e_1)
     x14 = (e_2*e_2)
-    _b0 = _g8*(1.0 - x5)
+    _c0 = 1.0 - x5
+    _b0 = _c0*_g8
     _b1 = -_g5 + _g7
-    _b2 = _g4*(1.0 - x5)
+    _b2 = _c0*_g4
     _b3 = _g2 - _g6
     _b4 = _g2 + _g6
     _b5 = -_g1 + _g3
@@ -83,60 +84,75 @@ def _vjp(e_0, e_1, e_2, phi, _g0, _g1, _g2, _g3, _g4, _g5, _g6, _g7, _g8):
     _b7 = _g1 + _g3
     _b8 = _b4*e_2 + _b7*e_1
     _b9 = _g0*(1.0 - x0) + _g4*(1.0 - x12) + _g8*(1.0 - x14)
-    _b10 = _b8*e_0 - _b9 + _g7*e_1*e_2
-    _b11 = 2.0*_b10 + 2.0*_g5*e_1*e_2
-    _b12 = 2.0*_b11*x2 + 2.0*_b6*torch.cos(x1)
-    _b13 = _b12*torch.cos(x1) - 2.0*_b6*(x2*x2)
-    _b14 = _g0*(1.0 - x5)
+    _c1 = _g7*e_2
+    _b10 = _b8*e_0 - _b9 + _c1*e_1
+    _c2 = 2.0*e_1
+    _c3 = _c2*_g5
+    _b11 = 2.0*_b10 + _c3*e_2
+    _c4 = torch.cos(x1)
+    _c5 = 2.0*_b6
+    _b12 = 2.0*_b11*x2 + _c4*_c5
+    _b13 = _b12*_c4 - _c5*(x2*x2)
+    _b14 = _c0*_g0
+    _c6 = 2.0*e_2
     return (
         _b1*x8 + 2.0*_b14*e_0 + _b8*x4,
-        2.0*_b2*e_1 + _b3*x8 + _b7*x6 + 2.0*_g5*e_2*x3 + _g7*e_2*x4,
-        2.0*_b0*e_2 + _b4*x6 + _b5*x8 + 2.0*_g5*e_1*x3 + _g7*e_1*x4,
+        _b2*_c2 + _b3*x8 + _b7*x6 + _c1*x4 + _c6*_g5*x3,
+        _b0*_c6 + _b4*x6 + _b5*x8 + _c3*x3 + _g7*e_1*x4,
         (0.5)*_b13,
     )
 
 
 def _jvp(e_0, e_1, e_2, phi, _t0, _t1, _t2, _t3):
     """The tangents of the outputs from those of the inputs, linear in the tangents:
-    forward mode over ``_main``, 90 operations."""
+    forward mode over ``_main``, 83 operations."""
     x0 = (e_0*e_0)
     _d0 = 2.0*_t0*e_0
     x1 = (0.5)*phi
     _d1 = (0.5)*_t3
     x2 = torch.sin(x1)
-    _d2 = _d1*torch.cos(x1)
+    _e0 = torch.cos(x1)
+    _d2 = _d1*_e0
     x3 = (x2*x2)
     _d3 = 2.0*_d2*x2
     x4 = 2.0*x3
-    _d4 = 2.0*_d3
+    _e1 = 2.0*_d3
+    _d4 = _e1
     x5 = 1.0 - x4
     _d5 = -_d4
     x6 = e_0*x4
     _d6 = _d4*e_0 + _t0*x4
     _d7 = _d6*e_1 + _t1*x6
     x8 = 2.0*x2*torch.cos(x1)
-    _d8 = -2.0*_d1*(x2*x2) + 2.0*_d2*torch.cos(x1)
+    _d8 = -2.0*_d1*(x2*x2) + 2.0*_d2*_e0
     _d9 = _d8*e_2 + _t2*x8
     _d10 = _d6*e_2 + _t2*x6
     _d11 = _d8*e_1 + _t1*x8
     x12 = (e_1*e_1)
-    _d12 = 2.0*_t1*e_1
+    _e2 = 2.0*_t1
+    _d12 = _e2*e_1
     _d13 = _d8*e_0 + _t0*x8
     x14 = (e_2*e_2)
-    _d14 = 2.0*_t2*e_2
+    _e3 = 2.0*_t2
+    _d14 = _e3*e_2
+    _e4 = 1.0 - x5
+    _e5 = e_1*e_2
     return (
-        _d0*(1.0 - x5) + _d5*(1.0 - x0),
+        _d0*_e4 + _d5*(1.0 - x0),
         _d7 - _d9,
         _d10 + _d11,
         _d7 + _d9,
-        _d12*(1.0 - x5) + _d5*(1.0 - x12),
-        -_d13 + 2.0*_d3*e_1*e_2 + 2.0*_t1*e_2*x3 + 2.0*_t2*e_1*x3,
+        _d12*_e4 + _d5*(1.0 - x12),
+        -_d13 + _e1*_e5 + _e2*e_2*x3 + _e3*e_1*x3,
         _d10 - _d11,
-        _d13 + _d4*e_1*e_2 + _t1*e_2*x4 + _t2*e_1*x4,
-        _d14*(1.0 - x5) + _d5*(1.0 - x14),
+        _d13 + _d4*_e5 + _t1*e_2*x4 + _t2*e_1*x4,
+        _d14*_e4 + _d5*(1.0 - x14),
     )
 
 
 #: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.vjp), None without a
 #: generated Jacobian
 VJP, JVP = _vjp, _jvp
+#: whether ``_main`` divides (without a denominator no sample is singular: the runtime
+#: skips the mask)
+DIVIDES = False

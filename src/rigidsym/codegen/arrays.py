@@ -24,6 +24,29 @@ __all__ = ["BACKENDS", "render_array_kernels"]
 #: back-end -> (folder, module the printed code names)
 BACKENDS = {"torch": "torch", "jax": "jax.numpy"}
 
+#: the JAX programs' sine and cosine (KernelJaxPrinter prints ``_sin``, ``_cos``): XLA on the
+#: CPU fuses an elementwise sine into every consumer, so each output of a program and each
+#: gradient computed it again (jit value + gradient of rotation_from_natural_invariants 2x
+#: a hand-written Rodrigues formula at N = 1e3, a pattern 3x slower at 1e5), but no
+#: producer into a dot: the pair is multiplied by the identity there (exact: x 1 + y 0),
+#: and the consumers read it once computed (issue 38)
+JAX_TRIG_SOURCE = '''
+
+def _sincos(x):
+    sc = jax.numpy.stack([jax.numpy.sin(x), jax.numpy.cos(x)], -1)
+    if jax.default_backend() == "cpu":
+        sc = sc @ jax.numpy.eye(2, dtype=sc.dtype)
+    return sc
+
+
+def _sin(x):
+    return _sincos(x)[..., 0]
+
+
+def _cos(x):
+    return _sincos(x)[..., 1]
+'''
+
 
 def _printer(backend: str):
     return torch_printer() if backend == "torch" else KernelJaxPrinter()
@@ -36,6 +59,15 @@ def _variant(v: Any, printer) -> dict:
             "temps": [(str(s), printer.doprint(e)) for s, e in p.temps],
             "outputs": [printer.doprint(e) for e in p.outputs],
             "dens": [printer.doprint(e) for e in p.dens]}
+
+
+def _calls_trig(variants: list, back: dict | None) -> bool:
+    texts = [e for v in variants for e in [*(e for _, e in v["temps"]), *v["outputs"],
+                                             *v["dens"], v["cond"] or ""]]
+    if back is not None:
+        texts += [e for _, e in back["temps"] + back["ttemps"]]
+        texts += back["outputs"] + back["toutputs"]
+    return any("_sin(" in t or "_cos(" in t for t in texts)
 
 
 def render_array_kernels(env, kc: Any, header) -> dict[str, str]:
@@ -69,9 +101,12 @@ def render_array_kernels(env, kc: Any, header) -> dict[str, str]:
             "targs": columns + tangent_names(len(columns)),
             "ttemps": [(str(s), pr.doprint(e)) for s, e in jvp.temps],
             "toutputs": [pr.doprint(e) for e in jvp.outputs], "tops": jvp.ops}
+        helpers = [ARRAY_SOURCE.strip("\n").replace("{module}", module)] if \
+            uses_diffprod(kc) else []
+        if backend == "jax" and _calls_trig(variants, back):
+            helpers.append(JAX_TRIG_SOURCE.strip("\n"))
         files[f"{backend}/{kc.kernel.name}.py"] = env.get_template(t).render(
             header=header(t), backend=backend, module=module, k=kc.kernel, ops=kc.ops,
             hash=kc.hash, columns=columns, variants=variants, vjp=back,
-            helpers=ARRAY_SOURCE.strip("\n").replace("{module}", module) if
-            uses_diffprod(kc) else "")
+            divides=bool(kc.variants[0].program.dens), helpers="\n\n\n".join(helpers))
     return files

@@ -221,6 +221,13 @@ class KernelJaxPrinter(KernelNumPyPrinter, JaxPrinter):
     def _print_Integer(self, expr):
         return f"{int(expr)}.0"
 
+    # the sine and cosine of one argument share one evaluation (JAX_TRIG_SOURCE, issue 38)
+    def _print_sin(self, expr):
+        return f"_sin({self._print(expr.args[0])})"
+
+    def _print_cos(self, expr):
+        return f"_cos({self._print(expr.args[0])})"
+
     def _print_And(self, expr):  # sympy's stacks the operands into one array first
         return self._fold("jax.numpy.logical_and", expr.args)
 

@@ -13,14 +13,15 @@ a NaN gradient). Coefficients, order and threshold and their error bounds come f
 limit is left as printed (the kernel stays singular there, as before).
 
 How the quotients are found, in any declaration's program (the book's, the Lie-group maps,
-a reader's through ``rigidsym generate --module``): each root ``sqrt(T)`` (and its powers
-``T^(k/2)``) becomes a symbol ``s``, ``T`` itself ``s^2`` (and, for a norm of symbols,
-``x0^2`` becomes ``s^2 - x1^2 - ...``: :func:`_normal`), products are distributed over
-sums; in every sum the terms are
-grouped by their factor free of ``s`` and the ``s``-parts summed (so ``w cos s / s^2 - w
-sin s / s^3`` of a derivative is one quotient ``(s cos s - sin s) / s^3``); each group's
-``s``-part is then a quotient when it is one, a polynomial in ``s^2`` when it is one, and
-otherwise ``s`` goes back to ``sqrt(T)`` unchanged.
+a reader's through ``rigidsym generate --module``): each root ``sqrt(T)`` of a polynomial
+``T`` in the inputs (and its powers ``T^(k/2)``) becomes a symbol ``s``, ``T`` itself
+``s^2``; the output is distributed into monomials and, for a norm of symbols ``T = x0^2 +
+x1^2 + ...``, ``x0^2`` becomes ``s^2 - x1^2 - ...`` (:mod:`.removable_terms`, in a sparse
+polynomial form, not by ``sympy.expand``); the terms are grouped by their factor free of
+``s`` and the ``s``-parts summed (so ``w cos s / s^2 - w sin s / s^3`` of a derivative is one
+quotient ``(s cos s - sin s) / s^3``); each group's ``s``-part is then a quotient when it is
+one, a polynomial in ``s^2`` when it is one, and otherwise ``s`` goes back to ``sqrt(T)``
+unchanged. An output whose distributed form would be too large is left as it was.
 """
 
 from __future__ import annotations
@@ -32,6 +33,7 @@ import mpmath
 import sympy as sp
 
 from rigidsym.codegen.removable_cert import NotRemovable, S, certify, series_of
+from rigidsym.codegen.removable_terms import Terms, TooLarge
 
 __all__ = ["QuotientBase", "quotient", "rewrite", "NAMES"]
 
@@ -122,84 +124,72 @@ def quotient(h: sp.Expr) -> type[QuotientBase]:
     return type(name, (QuotientBase,), {"h": h, "label": name, "_imp_": staticmethod(_imp(h))})
 
 
-def _split(term):
-    """``(factor free of s, s-part)`` of a product."""
-    free, dep = [], []
-    for f in sp.Mul.make_args(term):  # a number goes with the s-part: terms group by symbols
-        (dep if f.has(S) or f.is_Number else free).append(f)
-    return sp.Mul(*free), sp.Mul(*dep)
-
-
-def _as_t(part, T, depth: int = 0):
+def _as_t(part, T, depth: int = 0, strict: bool = False):
     """An ``s``-only expression as a function of ``T``: a quotient, a polynomial in ``s^2``,
-    or unchanged (``s = sqrt(T)``)."""
+    or unchanged (``s = sqrt(T)``; ``None`` if ``strict``)."""
     if part.is_polynomial(S):
         p = sp.Poly(part, S)
         if all(k % 2 == 0 for (k,) in p.monoms()):
             return sum(c * T ** (k // 2) for (k,), c in p.terms())
-        return part.subs(S, sp.sqrt(T))
+        return None if strict else part.subs(S, sp.sqrt(T))
     k, rest = sp.together(part).as_coeff_Mul()  # -h and h/2 share the function of h
     try:
+        if not sp.fraction(rest)[1].has(S):   # no division by s: nothing to remove
+            raise NotRemovable("no division")
         if series_of(rest).coeffs[0] == 0 and depth < 8:  # h = T h1: T keeps h1's error
-            return k * T * _as_t(sp.together(rest / S**2), T, depth + 1)
+            inner = _as_t(sp.together(rest / S**2), T, depth + 1, strict)
+            return None if inner is None else k * T * inner
         return k * quotient(rest)(T)
     except NotRemovable:
-        return part.subs(S, sp.sqrt(T))
+        return None if strict else part.subs(S, sp.sqrt(T))
 
 
-def _walk(e, T):
+@cache
+def _part(part, T):
+    # many groups share an s-part (every w_i w_j of one coefficient): once each
+    return _as_t(sp.together(part), T)
+
+
+@cache
+def _fold(part, T):
+    """A removable s-only factor as written (``(1 - cos s)/s^2`` of a formula) as its
+    quotient of ``T``, before any distributing; ``None`` where it is not one."""
+    if part == S or not sp.fraction(sp.together(part))[1].has(S):
+        return None
+    return _as_t(part, T, strict=True)
+
+
+def _grouped(e, terms: Terms):
+    """``e`` (holding ``s``) with each group's s-part a function of ``T`` (see above)."""
+    out = []
+    for f, part in terms.groups(e):
+        q = _part(part, terms.T)
+        terms.found = terms.found or q.has(QuotientBase)   # small: never the whole output
+        out.append(f * q)
+    return sp.Add(*out)
+
+
+def _inner(e, terms: Terms):
+    """A sub-expression of ``s`` and other symbols that is not a product of atoms (an
+    argument of a function, a base of a root or of a negative power): rewritten whole."""
     if not e.has(S):
         return e
-    if e.free_symbols == {S}:
-        return _as_t(e, T)
-    if isinstance(e, sp.Add):
-        groups: dict = {}
-        rest = []
-        for term in e.args:
-            free, dep = _split(term)
-            if dep.free_symbols - {S}:  # an s-part with other symbols: walk it whole
-                rest.append(_walk(term, T))
-            else:
-                groups[free] = groups.get(free, sp.S.Zero) + dep
-        return sp.Add(*rest, *(_walk(k, T) * _as_t(sp.together(v), T)
-                               for k, v in groups.items()))
-    if isinstance(e, sp.Mul):
-        free, dep = _split(e)
-        if not dep.free_symbols - {S}:
-            return _walk(free, T) * _as_t(dep, T)
-    return e.func(*(_walk(a, T) for a in e.args))
-
-
-def _normal(e, T):
-    """``e`` with ``T = s^2`` imposed: ``T`` as a sub-sum becomes ``s^2``; for ``T = x0^2 +
-    x1^2 + ...`` (a norm of symbols) ``x0^2`` becomes ``s^2 - x1^2 - ...`` (so the terms
-    are in a canonical form, ``x0`` of degree at most 1, whose groups are independent);
-    products and powers of sums expanded, so that every term's s-part is s alone."""
-    e = e.subs(T, S**2)
-    sq = sp.Add.make_args(T)
-    if len(sq) > 1 and all(t.is_Pow and t.exp == 2 and t.base.is_Symbol for t in sq):
-        xs = sorted((t.base for t in sq), key=sp.default_sort_key)
-        x0, rep = xs[0], S**2 - sum(x**2 for x in xs[1:])
-        high = lambda z: z.is_Pow and z.base == x0 and z.exp.is_Integer and z.exp >= 2  # noqa: E731
-        for _ in range(8):  # a product of two x0 terms makes an x0^2 again: until none
-            e = _expand(e.replace(high, lambda z: x0 ** (int(z.exp) % 2) *
-                                  rep ** (int(z.exp) // 2)))
-            if not e.has(x0**2) and not any(high(z) for z in e.atoms(sp.Pow)):
-                break
-        return e
-    return _expand(e)
-
-
-def _expand(e):
-    return sp.expand(e, deep=True, mul=True, multinomial=True, power_base=False,
-                     power_exp=False, log=False)
+    if e.free_symbols <= {S}:
+        return _part(e, terms.T)
+    if isinstance(e, sp.Add | sp.Mul):
+        return _grouped(e, terms)
+    return e.func(*(_inner(a, terms) for a in e.args))
 
 
 def _roots(exprs) -> list:
     found = set()
     for e in exprs:
         for p in sp.sympify(e).atoms(sp.Pow):
-            if p.exp.is_Rational and p.exp.q == 2 and p.base.free_symbols:
+            # a norm of a polynomial in the inputs (w^T w, |vect Q|^2): a radicand holding
+            # a function (acos, atan2 of a branch near pi) is never 0 where its branch
+            # runs and would only be expanded at great cost
+            if p.exp.is_Rational and p.exp.q == 2 and p.base.free_symbols and \
+                    p.base.is_polynomial(*p.base.free_symbols):
                 found.add(p.base)
     return sorted(found, key=sp.default_sort_key)
 
@@ -217,18 +207,28 @@ def rewrite(exprs: list) -> list:
     out = [sp.sympify(e) for e in exprs]
     for T in _roots(out):
         def sub(x, T=T):
-            if isinstance(x, sp.Pow) and x.base == T and x.exp.is_Rational and x.exp.q == 2:
+            # T^(k/2) and T^k (a 1/T of a derivative) in s
+            if isinstance(x, sp.Pow) and x.base == T and x.exp.is_Rational and x.exp.q <= 2:
                 return S ** int(2 * x.exp)
             return None
+        terms = Terms(T, lambda x: _inner(x, terms),  # noqa: B023 (called in this pass)
+                      lambda x, T=T: _fold(x, T), QuotientBase)
         new = []
         for e in out:
             e1 = e.replace(lambda x, T=T: sub(x) is not None, lambda x, T=T: sub(x))
             if e1 == e:
                 new.append(e)
                 continue
-            e2 = _walk(_normal(e1, T), T)
+            if terms.x0 is None:
+                e1 = e1.subs(T, S**2)     # T as a sub-sum (a norm of expressions)
+            terms.found = False
+            try:
+                e2 = _inner(e1, terms) if e1.has(S) else e1
+            except TooLarge:
+                new.append(e)
+                continue
             # only where a quotient was removed: elsewhere the output as it was (its form,
             # and so the kernel's program, unchanged)
-            new.append(e2 if e2.atoms(QuotientBase) else e)
+            new.append(e2 if terms.found else e)
         out = new
     return out

@@ -4,11 +4,12 @@ Taylor coefficients of ``g(t) = h(sqrt t)`` in exact rationals, and the order ``
 threshold ``t*`` of the branch ``t < t* -> sum_k c_k t^k`` with its error bounded, remainder
 and rounding included, over the whole interval ``[0, t*]``.
 
-- Coefficients: the series of numerator and denominator from the Taylor polynomials of
-  ``sin``, ``cos``, ``asin`` (exact rationals, ``sympy.Poly`` over QQ), divided as power
-  series in :class:`fractions.Fraction`, and checked equal to ``sympy.series`` of the
-  quotient itself to order 12; the odd ones must vanish (``h`` even) and so must
-  the numerator's below the denominator's order (a finite limit). Nothing in floating point.
+- Coefficients: the series of numerator and denominator from the Taylor series of ``sin``,
+  ``cos``, ``asin``, summed and multiplied truncated in :class:`fractions.Fraction`, divided
+  as power series, and checked against ``sympy.series`` of numerator and denominator
+  (``N = c D`` to twelve orders past the leading one); the odd ones must vanish (``h`` even)
+  and so must the numerator's below the denominator's order (a finite limit). Nothing in
+  floating point.
 - Remainder: the exact ``|c_k|`` for ten more terms, then Cauchy's estimate ``|c_k| <= M /
   rho^k`` with ``M`` an upper bound of ``|h|`` on ``|s|^2 = rho`` by complex balls
   (python-flint's ``acb``, the ball arithmetic of :mod:`rigidsym.checking.deciding.balls`)
@@ -36,6 +37,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from fractions import Fraction
 from functools import cache
+from math import factorial
 
 import flint
 import numpy as np
@@ -60,38 +62,62 @@ class Series:
     M: float             # upper bound of |h| on that circle
 
 
-def _taylor(f, n):
-    """The Taylor polynomial of degree < n of sin, cos or asin (exact rationals)."""
-    if f is sp.sin:
-        return sum((-1) ** j * S ** (2 * j + 1) / sp.factorial(2 * j + 1)
-                   for j in range((n + 1) // 2))
-    if f is sp.cos:
-        return sum((-1) ** j * S ** (2 * j) / sp.factorial(2 * j) for j in range((n + 1) // 2))
-    return sum(sp.factorial(2 * j) / (4**j * sp.factorial(j) ** 2 * (2 * j + 1))
-               * S ** (2 * j + 1) for j in range((n + 1) // 2))
+def _fn_series(f, k, n):
+    """The coefficients of s^0 ... s^(n-1) of sin(k s), cos(k s) or asin(s) (exact)."""
+    out = [Fraction(0)] * n
+    for j in range(n):
+        if f is sp.sin and j % 2 == 1:
+            out[j] = (-1) ** (j // 2) * k**j / factorial(j)
+        elif f is sp.cos and j % 2 == 0:
+            out[j] = (-1) ** (j // 2) * k**j / factorial(j)
+        elif f is sp.asin and j % 2 == 1:
+            m = j // 2
+            out[j] = Fraction(factorial(2 * m), 4**m * factorial(m) ** 2 * (2 * m + 1))
+    return out
+
+
+def _mul_series(a, b, n):
+    out = [Fraction(0)] * n
+    for i, x in enumerate(a):
+        if x:
+            for j in range(n - i):
+                if b[j]:
+                    out[i + j] += x * b[j]
+    return out
 
 
 def _poly_series(e, n):
     """The coefficients of s^0 ... s^(n-1) of ``e``, a polynomial in s and sin, cos of
-    rational multiples of s (or asin s): each function by its Taylor polynomial, the
-    product truncated, in exact rationals (sympy's ``Poly`` over QQ)."""
-    reps = {}
-    for fn in e.atoms(sp.Function):
-        k = fn.args[0] / S
-        if type(fn) not in (sp.sin, sp.cos, sp.asin) or not k.is_Rational or \
-                (type(fn) is sp.asin and k != 1):
-            raise NotRemovable(f"a function {fn} with no series here")
-        reps[fn] = _taylor(type(fn), n).subs(S, k * S)
-    p = sp.Poly(sp.expand(e.xreplace(reps)), S, domain="QQ")
-    out = [Fraction(0)] * n
-    for (k,), c in p.terms():
-        if k < n:
-            out[k] = Fraction(int(c.p), int(c.q))
-    return out
+    rational multiples of s (or asin s): each function by its Taylor series, sums and
+    products truncated, in exact rationals (:class:`fractions.Fraction`)."""
+    if e == S:
+        return [Fraction(int(j == 1)) for j in range(n)]
+    if e.is_Rational:
+        return [Fraction(int(e.p), int(e.q))] + [Fraction(0)] * (n - 1)
+    if isinstance(e, sp.Add):
+        out = [Fraction(0)] * n
+        for a in e.args:
+            out = [x + y for x, y in zip(out, _poly_series(a, n), strict=True)]
+        return out
+    if isinstance(e, sp.Mul):
+        out = _poly_series(e.args[0], n)
+        for a in e.args[1:]:
+            out = _mul_series(out, _poly_series(a, n), n)
+        return out
+    if isinstance(e, sp.Pow) and e.exp.is_Integer and e.exp >= 0:
+        out, b = _poly_series(sp.S.One, n), _poly_series(e.base, n)
+        for _ in range(int(e.exp)):
+            out = _mul_series(out, b, n)
+        return out
+    if type(e) in (sp.sin, sp.cos, sp.asin) and e.args[0].free_symbols == {S}:
+        k = e.args[0] / S
+        if k.is_Rational and (type(e) is not sp.asin or k == 1):
+            return _fn_series(type(e), Fraction(int(k.p), int(k.q)), n)
+    raise NotRemovable(f"{e}: no series here")
 
 
 def _sympy_series(e, n):
-    ser = sp.series(e, S, 0, n).removeO()
+    ser = sp.expand(sp.series(e, S, 0, n).removeO()) if e.has(S) else e
     out = [Fraction(0)] * n
     for (k,), c in sp.Poly(ser, S).terms():
         out[k] = Fraction(int(c.p), int(c.q))
@@ -192,9 +218,13 @@ def series_of(h: sp.Expr, K: int = 2 * (_KMAX + _EXTRA + 12)) -> Series:
         c.append((a[k] - sum(c[j] * b[k - j] for j in range(k))) / b[0])
     if any(x != 0 for x in c[1::2]):
         raise NotRemovable("odd coefficients")
-    check = _sympy_series(h, 12)   # sympy's own series of the quotient agrees
-    if check != c[:12]:
-        raise NotRemovable("sympy's series of the quotient disagrees")  # pragma: no cover
+    # sympy's own series of numerator and denominator (an independent expansion; of the
+    # quotient itself it took seconds per derivative quotient) agree with c: N = c D
+    sn, sd = _sympy_series(N, d0 + 12), _sympy_series(D, d0 + 12)
+    if sn[:d0] != n_[:d0] or sd[:d0] != d_[:d0] or any(
+            sn[k] != sum(c[j] * sd[k - j] for j in range(k - d0 + 1))
+            for k in range(d0, d0 + 12)):
+        raise NotRemovable("sympy's series disagrees")  # pragma: no cover
     M = _cauchy_bound(h, rho)
     return Series(tuple(c[0::2]), rho, M)
 

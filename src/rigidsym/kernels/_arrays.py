@@ -87,7 +87,13 @@ class ArraySpace:
             # the generated vector-Jacobian product; None in a folder generated before it
             self._programs["vjp", name] = getattr(mod, "VJP", None)
             self._programs["jvp", name] = getattr(mod, "JVP", None)
+            # whether its program divides (a folder generated before the flag: assume so)
+            self._programs["divides", name] = getattr(mod, "DIVIDES", True)
         return v
+
+    def divides(self, name: str) -> bool:
+        """Kernel ``name``'s program divides (else no sample is ever singular)."""
+        return self.variants(name) is not None and self._programs["divides", name]
 
     def vjp(self, name: str, mode: str = "vjp"):
         """The generated reverse-mode (``"vjp"``: ``f(*columns, *output cotangents) -> input
@@ -123,7 +129,10 @@ def columns(arrays: list, args: list[dict]) -> list:
             continue
         n = int(math.prod(a["shape"]))
         flat = x.reshape(tuple(x.shape[:len(x.shape) - len(a["shape"])]) + (n,))
-        cols.extend(flat[..., i] for i in range(n))
+        # torch's unbind: one dispatch for the n views (and one stack in its backward)
+        # instead of n indexings, a fixed cost of a call at small N (issue 38)
+        cols.extend(flat.unbind(-1) if hasattr(flat, "unbind") else
+                    (flat[..., i] for i in range(n)))
     return cols
 
 
@@ -194,9 +203,13 @@ def _evaluate(xp, variants: tuple, cols: list, stop_gradient: Callable) -> tuple
 def _singular(xp, dens, like):
     # a denominator that overflowed to inf flags its sample too (issue 37): x / inf = 0 is
     # a finite wrong value; eager calls re-run such samples in long double (_arrays_rescue)
-    sing = xp.zeros_like(like, dtype=bool) if hasattr(like, "dtype") else None
+    sing = None
     for d in dens:
-        sing = xp.logical_or(sing, (d == 0) | xp.isinf(d))
+        z = (d == 0) | xp.isinf(d)
+        sing = z if sing is None else xp.logical_or(sing, z)
+    if getattr(sing, "shape", None) != like.shape:  # no denominator, or a constant one
+        zero = xp.zeros_like(like, dtype=bool)
+        sing = zero if sing is None else xp.logical_or(zero, sing)
     return sing
 
 
@@ -213,10 +226,12 @@ class Library:
     arrays and NumPy arrays they became), ``as_array(v, dtype, device, name)`` (convert, or
     raise naming ``name``), ``device(arrays)``, ``host(x)`` (a NumPy copy), ``make(space,
     name)`` (``f(*broadcast inputs) -> (*outputs, singular)``, with the derivative rule),
-    ``refuse(exc_type, message)`` (raises the refusals of :func:`modes`) and ``note(values)``
-    (a warning before conversion, or nothing); for the dtypes, ``floats`` (those accepted),
-    ``float32``, ``finfo``, ``float_dtype(v)`` (the library dtype of a floating library or
-    NumPy array, else None) and ``cast(x, dtype)``.
+    ``refuse(exc_type, message)`` (raises the refusals of :func:`modes`), ``note(values)``
+    (a warning before conversion, or nothing), ``clear(mask)`` (the mask is known all False
+    without a sync or a trace) and ``constant(fn)`` (``fn``'s result a trace-time constant:
+    Dynamo restarted once per float read from an object, issue 38); for the dtypes,
+    ``floats`` (those accepted), ``float32``, ``finfo``, ``float_dtype(v)`` (the library
+    dtype of a floating library or NumPy array, else None) and ``cast(x, dtype)``.
     """
 
     backend: str
@@ -239,6 +254,8 @@ class Library:
     cast: Callable
     refuse: Callable = _raise
     note: Callable = lambda values: None
+    clear: Callable = lambda mask: False
+    constant: Callable = lambda fn: fn
     #: ``rescued(outputs, rows, inputs)``: the outputs, whose ``rows`` (a batch mask) hold
     #: values of the long-double rescue, with no derivative there (NaN for a nonzero
     #: cotangent, as autograd cannot follow the host); None: nothing differentiates eagerly
@@ -251,6 +268,7 @@ class Space:
     def __init__(self, lib: Library, directory):
         self.lib = lib
         self.progs = ArraySpace.from_directory(directory, lib.backend)
+        self._safe = lib.constant(lambda name: self.progs.safe(name))
         self._fns = make_all(self.progs, lambda name: lib.make(self, name))
 
     def function(self, name: str) -> Callable:
@@ -264,7 +282,7 @@ class Space:
         xp, outs = self.lib.xp, self.progs.meta[name]["outputs"]
         cols = columns(xs, self.progs.meta[name]["args"])
         flat, sing = evaluate(xp, self.progs.variants(name), cols, self.lib.stop_gradient,
-                              self.progs.safe(name) if differentiated else None)
+                              self._safe(name) if differentiated else None)
         return (*shape_outputs(xp, flat, outs, cols[0]), sing)
 
     def jacobian(self, name: str, xs, singular) -> list:
@@ -275,7 +293,7 @@ class Space:
         nval = sum(math.prod(o["shape"]) for o in meta["outputs"])
         flat, _ = evaluate(self.lib.xp, self.progs.variants(name + SUFFIX),
                            columns(xs, meta["args"]), self.lib.stop_gradient,
-                           self.progs.safe(name), singular)
+                           self._safe(name), singular)
         return flat[nval:]
 
     def vjp(self, name: str, xs, grads: list, singular) -> list:
@@ -290,8 +308,7 @@ class Space:
         if fn is None:
             return contract(xp, grads, self.jacobian(name, xs, singular), outs, args,
                             forward=False)
-        cols = [xp.where(singular, v, c)
-                for v, c in zip(self.progs.safe(name), columns(xs, args), strict=True)]
+        cols = self._safe_columns(name, xs, singular)
         gcols = []
         for g, o in zip(grads, outs, strict=True):
             gcols += ([0.0] * int(math.prod(o["shape"])) if g is None else columns([g], [o]))
@@ -308,11 +325,19 @@ class Space:
         if fn is None:
             return contract(xp, tangents, self.jacobian(name, xs, singular), outs, args,
                             forward=True, singular=singular)
-        cols = [xp.where(singular, v, c)
-                for v, c in zip(self.progs.safe(name), columns(xs, args), strict=True)]
-        flat = [xp.where(singular, 0.0, _full(xp, v, cols[0]))
-                for v in fn(*cols, *columns(tangents, args))]
+        cols = self._safe_columns(name, xs, singular)
+        flat = list(fn(*cols, *columns(tangents, args)))
+        if self.progs.divides(name):
+            flat = [xp.where(singular, 0.0, _full(xp, v, cols[0])) for v in flat]
         return shape_outputs(xp, flat, outs, cols[0])
+
+    def _safe_columns(self, name: str, xs, singular) -> list:
+        """The columns of ``xs``, the safe point's in the ``singular`` samples (no
+        ``where`` without a denominator or with a clear eager mask, issue 38)."""
+        cols, where = columns(xs, self.progs.meta[name]["args"]), self.lib.xp.where
+        if not self.progs.divides(name) or self.lib.clear(singular):
+            return cols
+        return [where(singular, v, c) for v, c in zip(self._safe(name), cols, strict=True)]
 
     def call(self, name: str, values: tuple, check, on_singular):
         """Kernel ``name`` on ``values`` (the public functions' body): convert, validate
@@ -326,18 +351,22 @@ class Space:
         xs, dtype, eps = convert(lib, values, args)
         traced = lib.traced(xs)
         check, on_singular = modes(check, on_singular, traced, lib.tracer, lib.refuse)
-        batch = broadcast_batch(xp.broadcast_shapes, xs, args)
+        batch = broadcast_batch(xp.broadcast_shapes, xs, args, traced)
         if check:
             validate(xp, [lib.detach(x) for x in xs], args, eps)
-        full = [xp.broadcast_to(x, batch + tuple(a["shape"])) for x, a in zip(xs, args,
+        full = [x if not traced and tuple(x.shape) == batch + tuple(a["shape"]) else
+                xp.broadcast_to(x, batch + tuple(a["shape"])) for x, a in zip(xs, args,
                                                                              strict=True)]
         if traced:
             full = _ar.traced_inputs(xp, full)
         *res, bad = self.function(name)(*full)
+        clear = False
         if not traced:
-            res, bad = self._rescue(name, full, res, bad, batch)
+            res, bad, clear = self._rescue(name, full, res, bad, batch)
         if res[0].dtype != dtype:  # float16, bfloat16: computed in float32, rounded once
             res = [lib.cast(r, dtype) for r in res]
+        elif clear:  # no sample singular, of non-finite output or input: nothing to flag
+            return res[0] if len(res) == 1 else tuple(res)
         # a result that does not fit the dtype, from finite inputs (a NaN input's NaN is
         # its IEEE value, issue 37)
         over = xp.zeros_like(bad)
@@ -356,15 +385,16 @@ class Space:
         return res[0] if len(res) == 1 else tuple(res)
 
     def _rescue(self, name: str, full: list, res: list, sing, batch: tuple):
-        """Eager: the outputs with the flagged samples re-run in long double, and the
-        singular mask the wide run finds (:mod:`._arrays_rescue`)."""
+        """Eager: the outputs with the flagged samples re-run in long double, the
+        singular mask the wide run finds (:mod:`._arrays_rescue`), and whether no sample
+        was flagged at all."""
         lib, xp = self.lib, self.lib.xp
         bits = int(lib.finfo(full[0].dtype).bits)
         rows = _ar.flag_rows(xp, full, res, sing, batch, bits)
         if not bool(rows.any()):
-            return res, sing
+            return res, sing, True
         res, s, put = _ar.rescue(lib, self.progs, name, full, res, rows, batch, bits)
         dev = lib.device(full)
         if lib.rescued is not None and put.any():
             res = lib.rescued(res, lib.as_array(put.reshape(batch), None, dev, "rows"), full)
-        return res, lib.as_array(s.reshape(batch), None, dev, "singular")
+        return res, lib.as_array(s.reshape(batch), None, dev, "singular"), False

@@ -91,15 +91,20 @@ def validate(xp, arrays: list, args: list[dict], eps: float | None = None) -> No
                                  f"{err:.3g} > {tol:.3g})")
 
 
-def broadcast_batch(broadcast_shapes: Callable, xs: list, args: list[dict]) -> tuple:
-    """The broadcast batch shape of ``xs`` (each less its argument's own trailing shape).
+def broadcast_batch(broadcast_shapes: Callable, xs: list, args: list[dict],
+                    traced: bool = True) -> tuple:
+    """The broadcast batch shape of ``xs`` (each less its argument's own trailing shape);
+    not ``traced`` (no symbolic shapes), equal batch shapes are taken as they are, without
+    ``broadcast_shapes`` (torch's goes through ``torch._refs``: a fixed cost, issue 38).
 
     Raises:
         ValueError: the batch shapes do not broadcast (each argument's shape named).
     """
+    shapes = [tuple(x.shape[:x.ndim - len(a["shape"])]) for x, a in zip(xs, args, strict=True)]
+    if not traced and all(s == shapes[0] for s in shapes):
+        return shapes[0]
     try:
-        return tuple(broadcast_shapes(*[x.shape[:x.ndim - len(a["shape"])]
-                                        for x, a in zip(xs, args, strict=True)]))
+        return tuple(broadcast_shapes(*shapes))
     except (RuntimeError, ValueError):  # torch raises RuntimeError, JAX ValueError
         # the message starts with the arguments' names, as rigidsym.kernels' does (issue 37
         # item 7): which one is wrong is the caller's

@@ -174,11 +174,50 @@ def _make(space: _arrays.Space, name: str):
     if not space.progs.has_jacobian(name):
         return lambda *xs: space.values(name, xs, _differentiable(xs))
     eager, compiled = _function(space, name, True), _function(space, name, False)
+    fast = _plain_apply(eager)
 
     def apply(*xs):
-        return (compiled if torch.compiler.is_compiling() else eager).apply(*xs)
+        if torch.compiler.is_compiling():
+            return compiled.apply(*xs)
+        if fast is None or torch._C._are_functorch_transforms_active():
+            return eager.apply(*xs)
+        if not _recorded(xs):  # nothing to differentiate: the program alone
+            return space.values(name, xs)
+        return fast(*xs)
 
     return apply
+
+
+def _plain_apply(cls):
+    """``cls.apply`` less what eager autograd outside torch.func does not need (issue 38:
+    a fixed cost of a call at small N): ``Function.apply`` binds the arguments to
+    ``forward``'s signature through ``inspect`` at every call (for default values, which
+    these ``forward``s have none of), then calls the C ``apply`` on the arguments with
+    dead torch.func wrappers unwrapped; this calls the latter directly. None where a torch
+    version lacks the internals (then ``cls.apply``)."""
+    try:
+        from torch._functorch.utils import unwrap_dead_wrappers
+        c_apply = super(torch.autograd.Function, cls).apply
+        torch._C._are_functorch_transforms_active  # noqa: B018 - present, or None below
+    except (ImportError, AttributeError):  # pragma: no cover - other torch versions
+        return None
+    return lambda *xs: c_apply(*unwrap_dead_wrappers(xs))
+
+
+def _recorded(xs) -> bool:
+    """Autograd records the call: grad mode with an input requiring grad, or a forward-mode
+    AD level open (``torch.autograd.forward_ad``, whose dual tensors need ``jvp``)."""
+    return (torch.is_grad_enabled() and any(x.requires_grad for x in xs)) or \
+        getattr(torch.autograd.forward_ad, "_current_level", 0) >= 0
+
+
+def _clear(mask) -> bool:
+    """An eager CPU mask with no sample set (read at the cost of a reduction; never on a
+    GPU, where it would synchronise, nor on a traced or fake tensor)."""
+    return (type(mask) is torch.Tensor and mask.device.type == "cpu"
+            and not torch.compiler.is_compiling()
+            and not torch._C._functorch.is_functorch_wrapped_tensor(mask)
+            and not bool(mask.any()))
 
 
 class _Rescued(torch.autograd.Function):
@@ -226,7 +265,8 @@ _LIBRARY = _arrays.Library(
     device=lambda xs: next((x.device for x in xs if isinstance(x, torch.Tensor)), None),
     host=lambda x: x.cpu().numpy(), make=_make, refuse=_refuse, floats=_FLOATS,
     float32=torch.float32, finfo=torch.finfo, float_dtype=_float_dtype,
-    cast=lambda x, dtype: x.to(dtype), rescued=_rescued)
+    cast=lambda x, dtype: x.to(dtype), rescued=_rescued, clear=_clear,
+    constant=getattr(torch.compiler, "assume_constant_result", lambda fn: fn))
 
 # load, the Euler-angle kernels, the lazy kernels: the same for both back-ends (_arrays_api)
 load, euler_rate_matrix, euler_angle_rates, __getattr__, __dir__, _space = \
