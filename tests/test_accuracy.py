@@ -101,7 +101,19 @@ def _libmvec() -> bool:
         K.use_backend("numpy")
 
 
-@pytest.mark.parametrize("name", sorted(K.KERNEL_NAMES) + EXTRA)
+#: Found by the ends of the range (issue 37 item 2's regimes) in the Lie kernels of issue 38,
+#: open for the rescue of item 3: strict, so a fix turns them into a failure to remove here
+RANGE_DEFECTS = {
+    "exponential_coordinates_from_transform": "NaN where the result is finite (inputs 1e-160)",
+    "exponential_coordinates_left_jacobian_inverse": "finite wrong values at inputs 1e300",
+    "rotation_vector_left_jacobian_inverse": "finite wrong values at inputs 1e300",
+    "rotation_vector_right_jacobian_inverse": "finite wrong values at inputs 1e300",
+}
+
+
+@pytest.mark.parametrize("name", [
+    pytest.param(n, marks=pytest.mark.xfail(strict=True, reason=RANGE_DEFECTS[n]))
+    if n in RANGE_DEFECTS else n for n in sorted(K.KERNEL_NAMES) + EXTRA])
 def test_accurate_over_the_regimes_float64(name):
     """The condition half on every row; the whole rule of issue 37 on every row but the
     open ones (OPEN; on C with libmvec, the trig kernels within LIBMVEC_RULE). Old main: no
