@@ -53,12 +53,12 @@ def test_the_harness_fails_a_kernel_worse_than_the_textbook():
     """Old main's harness passed issue 30's p1 x p2 (8e12 u off where the textbook is 18 u
     off: inside 8 u kappa, kappa = 5.8e13); the second yardstick fails it."""
     k = A.R.kernel_of("plucker_from_points")
-    pts = A.P.regimes(k, np.float64, n_random=1, small=[1e-2, 1e-6, 1e-10],
+    pts = A.P.regimes(k, np.float64, n_random=1, small=[1e-3, 1e-6],
                       extremes=False)["p2->p1 at 1e6"]
     rows = A.judge("plucker_from_points", "p2->p1 at 1e6", pts, np.float64, ["numpy"],
                    runner=_plain_cross)
     assert rows[0].worst_ratio <= 1          # the old rule alone lets it through
-    assert rows[0].rule_ratio > 1e3 and not rows[0].accurate
+    assert rows[0].rule_ratio > 1e2 and not rows[0].accurate
     good = A.judge("plucker_from_points", "p2->p1 at 1e6", pts, np.float64, _backends())
     assert all(r.accurate for r in good), [(r.backend, r.rule_ratio) for r in good]
 

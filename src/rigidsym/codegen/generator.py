@@ -44,6 +44,7 @@ from rigidsym.codegen.optimise import Program, compile_program, math_hash
 from rigidsym.codegen.printers import KernelCPrinter, KernelNumPyPrinter
 from rigidsym.codegen.removable import rewrite as removable
 from rigidsym.codegen.spec import Kernel, flat_symbols, input_symbols
+from rigidsym.codegen.spec import flatten_outputs as _flatten
 
 __all__ = ["generate", "write", "check", "GenerationResult", "default_out_dir", "TEMPLATES"]
 
@@ -82,28 +83,6 @@ class KernelCode:
 class GenerationResult:
     files: dict[str, str]
     kernels: list[KernelCode]
-
-
-def _flatten(kernel: Kernel, values: dict) -> list[sp.Expr]:
-    flat: list[sp.Expr] = []
-    for o in kernel.outputs:
-        if o.name not in values:
-            raise ValueError(f"{kernel.name}: build did not return output {o.name!r}")
-        v = values[o.name]
-        if o.shape == ():
-            if isinstance(v, sp.MatrixBase):
-                if v.shape != (1, 1):
-                    raise ValueError(f"{kernel.name}.{o.name}: expected a scalar, got {v.shape}")
-                v = v[0, 0]
-            flat.append(sp.sympify(v))
-        else:
-            m = sp.Matrix(v)
-            if len(m) != o.size:
-                raise ValueError(f"{kernel.name}.{o.name}: expected {o.shape}, got {m.shape}")
-            if len(o.shape) == 2 and m.shape != o.shape:
-                raise ValueError(f"{kernel.name}.{o.name}: expected {o.shape}, got {m.shape}")
-            flat.extend(list(m))          # row-major
-    return flat
 
 
 def compile_kernel(kernel: Kernel) -> KernelCode:

@@ -76,8 +76,8 @@ def _textbook_variants(kernel):
     import numpy as np
     import sympy as sp
 
-    from rigidsym.codegen.generator import _flatten
     from rigidsym.codegen.spec import flat_symbols, input_symbols
+    from rigidsym.codegen.spec import flatten_outputs as _flatten
 
     key = (kernel.name, id(kernel))
     if key not in _TEXTBOOK:

@@ -169,3 +169,27 @@ def flat_symbols(kernel: Kernel) -> list[tuple[str, list[sp.Symbol]]]:
         v = syms[a.name]
         res.append((a.name, [v] if a.shape == () else list(v)))
     return res
+
+
+def flatten_outputs(kernel: Kernel, values: dict) -> list[sp.Expr]:
+    """A build's ``{output: value}`` as one flat list, in the order of the outputs, each
+    row-major (the order of the generated programs' outputs)."""
+    flat: list[sp.Expr] = []
+    for o in kernel.outputs:
+        if o.name not in values:
+            raise ValueError(f"{kernel.name}: build did not return output {o.name!r}")
+        v = values[o.name]
+        if o.shape == ():
+            if isinstance(v, sp.MatrixBase):
+                if v.shape != (1, 1):
+                    raise ValueError(f"{kernel.name}.{o.name}: expected a scalar, got {v.shape}")
+                v = v[0, 0]
+            flat.append(sp.sympify(v))
+        else:
+            m = sp.Matrix(v)
+            if len(m) != o.size:
+                raise ValueError(f"{kernel.name}.{o.name}: expected {o.shape}, got {m.shape}")
+            if len(o.shape) == 2 and m.shape != o.shape:
+                raise ValueError(f"{kernel.name}.{o.name}: expected {o.shape}, got {m.shape}")
+            flat.extend(list(m))          # row-major
+    return flat
