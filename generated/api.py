@@ -663,9 +663,9 @@ def exponential_coordinates_from_transform(
     on_singular: OnSingular | None = None,
     threads: int | None = None,
 ) -> NDArray[np.floating]:
-    r"""Log of SE(3): the exponential coordinates xi = [w; v] of T, |w| in [0, pi].
+    r"""Log of SE(3): the exponential coordinates xi = [w; v] of T, norm of w in [0, pi].
 
-        w = Log(R), v = J_l(w)^-1 p
+        w = Log(R), v = J_l(w)^-1 p; below pi/2 in s = norm of vect(R) alone (asin, sqrt(1 - s^2)), near pi the symmetric part of R
 
     Book: Eq. (sola:exp-se3), (sola:log-exp-se3); composed of rigidsym.derivations.lie_maps.exponential_coordinates_from_transform.
 
@@ -683,16 +683,13 @@ def exponential_coordinates_from_transform(
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
         ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
-        SingularConfigurationError: on the singular set (phi = 0 (the main formula's 0/0)), unless on_singular='nan'.
 
     Notes:
-        Singular set: phi = 0 (the main formula's 0/0).
-
         T is not validated (its rotation block is read as a rotation).
 
-        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 7 ulp in float64) over 3 regimes (docs/accuracy.md, kernels.accuracy); singular when phi = 0 (the main formula's 0/0).
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 7 ulp in float64) over 3 regimes (docs/accuracy.md, kernels.accuracy).
 
-        Generated; 425 operations; math hash 0ea5162c1b71e714.
+        Generated; 651 operations; math hash fd5941b387755b57.
     """
     return _F.exponential_coordinates_from_transform(T, out, check, on_singular, threads)
 
@@ -762,12 +759,12 @@ def exponential_coordinates_left_jacobian_inverse(
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
         ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
-        SingularConfigurationError: on the singular set (|w| = 2 pi k, k != 0), unless on_singular='nan'.
+        SingularConfigurationError: on the singular set (theta = 2 pi k, k != 0 (theta = norm of w)), unless on_singular='nan'.
 
     Notes:
-        Singular set: |w| = 2 pi k, k != 0.
+        Singular set: theta = 2 pi k, k != 0 (theta = norm of w).
 
-        Accuracy: error <= 3.12e+13 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 3.72e+13 ulp in float64) over 3 regimes (docs/accuracy.md, kernels.accuracy); singular when |w| = 2 pi k, k != 0.
+        Accuracy: error <= 3.12e+13 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 3.72e+13 ulp in float64) over 3 regimes (docs/accuracy.md, kernels.accuracy); singular when theta = 2 pi k, k != 0 (theta = norm of w).
 
         Generated; 1102 operations; math hash 403a221bb493ca86.
     """
@@ -1304,7 +1301,7 @@ def rotation_from_rotation_vector(
 ) -> NDArray[np.floating]:
     r"""Exp of so(3): the rotation of w.
 
-        Q = 1 + (sin t / t) [w] + ((1 - cos t) / t^2) [w]^2, t = |w|
+        Q = 1 + (sin t / t) [w] + ((1 - cos t) / t^2) [w]^2, t = norm of w
 
     Book: Eq. (sola:exp-so3), (sola:log-exp-so3), (sola:exp-log-so3); composed of rigidsym.derivations.lie_maps.rotation_from_rotation_vector.
 
@@ -1339,7 +1336,7 @@ def rotation_vector_from_rotation(
     on_singular: OnSingular | None = None,
     threads: int | None = None,
 ) -> NDArray[np.floating]:
-    r"""Log of SO(3): the rotation vector w = phi e of Q, |w| in [0, pi].
+    r"""Log of SO(3): the rotation vector w = phi e of Q, phi in [0, pi].
 
         w = (phi / sin phi) vect(Q); asin near 0, the symmetric part near pi
 
@@ -1435,12 +1432,12 @@ def rotation_vector_left_jacobian_inverse(
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
         ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
-        SingularConfigurationError: on the singular set (|w| = 2 pi k, k != 0), unless on_singular='nan'.
+        SingularConfigurationError: on the singular set (theta = 2 pi k, k != 0 (theta = norm of w)), unless on_singular='nan'.
 
     Notes:
-        Singular set: |w| = 2 pi k, k != 0.
+        Singular set: theta = 2 pi k, k != 0 (theta = norm of w).
 
-        Accuracy: error <= 1.85e+13 u (kappa + 1) in float64, <= 1.04 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 2.22e+13 ulp in float64) over 4 regimes (docs/accuracy.md, kernels.accuracy); singular when |w| = 2 pi k, k != 0.
+        Accuracy: error <= 1.85e+13 u (kappa + 1) in float64, <= 1.04 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 2.22e+13 ulp in float64) over 4 regimes (docs/accuracy.md, kernels.accuracy); singular when theta = 2 pi k, k != 0 (theta = norm of w).
 
         Generated; 32 operations; math hash 2f680f5aa3fbff2f.
     """
@@ -1512,12 +1509,12 @@ def rotation_vector_right_jacobian_inverse(
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
         ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
-        SingularConfigurationError: on the singular set (|w| = 2 pi k, k != 0), unless on_singular='nan'.
+        SingularConfigurationError: on the singular set (theta = 2 pi k, k != 0 (theta = norm of w)), unless on_singular='nan'.
 
     Notes:
-        Singular set: |w| = 2 pi k, k != 0.
+        Singular set: theta = 2 pi k, k != 0 (theta = norm of w).
 
-        Accuracy: error <= 1.85e+13 u (kappa + 1) in float64, <= 1.04 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 2.22e+13 ulp in float64) over 4 regimes (docs/accuracy.md, kernels.accuracy); singular when |w| = 2 pi k, k != 0.
+        Accuracy: error <= 1.85e+13 u (kappa + 1) in float64, <= 1.04 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 2.22e+13 ulp in float64) over 4 regimes (docs/accuracy.md, kernels.accuracy); singular when theta = 2 pi k, k != 0 (theta = norm of w).
 
         Generated; 32 operations; math hash db168e620321154f.
     """
