@@ -41,7 +41,7 @@ def _call(out, fn):
 
 
 def _log_small(Q):
-    # theta < pi/2 (tr Q > 1): theta = asin(|vect Q|), w = (asin s / s) vect(Q): the
+    # theta < pi/4 (tr Q > 1 + sqrt 2): theta = asin(|vect Q|), w = (asin s / s) vect(Q): the
     # quotient is removable at s = 0 (codegen.removable)
     v = vect(Q)
     s = sp.sqrt((v.T * v)[0])
@@ -62,7 +62,11 @@ def _log_when(Q, k):
 
 
 def _log_small_when(Q):
-    return Q.trace() > 1
+    # phi < pi/4 (tr Q > 1 + sqrt 2): asin's condition 1/cos(phi) stays under sqrt 2; at the
+    # pi/2 of before it grew without bound (3e-13 relative at phi = pi/2 - 1e-3)
+    # (written without a root: the array printers' sqrt takes tensors only)
+    t = Q.trace() - 1
+    return sp.And(t > 0, t**2 > 2)
 
 
 def _log_branches(wrap):
@@ -73,7 +77,7 @@ def _log_branches(wrap):
                  for k in range(3))
     small = Branch("small", lambda Q: _log_small_when(Q),
                    lambda **kw: wrap(_log_small(kw["Q"]), kw),
-                   doc="phi < pi/2: w = (asin s / s) vect(Q), s = |vect(Q)|, no acos")
+                   doc="phi < pi/4: w = (asin s / s) vect(Q), s = |vect(Q)|, no acos")
     return (*near, small)
 
 
@@ -84,7 +88,7 @@ def _se3_near_pi(T, k):
 
 
 def _se3_small(T):
-    # theta < pi/2: u = vect(R), s = |u| = sin theta, theta = asin s, w = (theta / s) u and
+    # theta < pi/4: u = vect(R), s = |u| = sin theta, theta = asin s, w = (theta / s) u and
     # v = J_l(w)^-1 p = p - (theta/s)/2 u x p + c(theta) (theta/s)^2 u x (u x p), where
     # c(theta) = 1/theta^2 - sin theta / (2 theta (1 - cos theta)) = 1/theta^2 - (1 + cos
     # theta) / (2 theta sin theta) and cos theta = sqrt(1 - s^2): c (theta/s)^2 = (2 s -
@@ -105,7 +109,7 @@ _SE3_BRANCHES = (*(
                "of the symmetric part of R")
     for k in range(3)),
     Branch("small", lambda T: _log_small_when(T[:3, :3]), _se3_small,
-           doc="phi < pi/2: w = (asin s / s) vect(R), s = |vect(R)|, and v in s alone "
+           doc="phi < pi/4: w = (asin s / s) vect(R), s = |vect(R)|, and v in s alone "
                "(no acos): smooth at T = 1"))
 
 
@@ -176,7 +180,7 @@ LIE_KERNELS = [
     Kernel(name="exponential_coordinates_from_transform",
            summary="Log of SE(3): the exponential coordinates xi = [w; v] of T, norm of w in "
                    "[0, pi].",
-           formula="w = Log(R), v = J_l(w)^-1 p; below pi/2 in s = norm of vect(R) alone "
+           formula="w = Log(R), v = J_l(w)^-1 p; below pi/4 in s = norm of vect(R) alone "
                    "(asin, sqrt(1 - s^2)), near pi the symmetric part of R", ids=_IDS["se3"],
            sources=(_LM + "exponential_coordinates_from_transform",), args=(T_ARG,),
            outputs=(Out("xi", (6,), "[w; v]"),),

@@ -665,7 +665,7 @@ def exponential_coordinates_from_transform(
 ) -> NDArray[np.floating]:
     r"""Log of SE(3): the exponential coordinates xi = [w; v] of T, norm of w in [0, pi].
 
-        w = Log(R), v = J_l(w)^-1 p; below pi/2 in s = norm of vect(R) alone (asin, sqrt(1 - s^2)), near pi the symmetric part of R
+        w = Log(R), v = J_l(w)^-1 p; below pi/4 in s = norm of vect(R) alone (asin, sqrt(1 - s^2)), near pi the symmetric part of R
 
     Book: Eq. (sola:exp-se3), (sola:log-exp-se3); composed of rigidsym.derivations.lie_maps.exponential_coordinates_from_transform.
 
@@ -689,7 +689,7 @@ def exponential_coordinates_from_transform(
 
         Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 7 ulp in float64) over 3 regimes (docs/accuracy.md, kernels.accuracy).
 
-        Generated; 651 operations; math hash fd5941b387755b57.
+        Generated; 651 operations; math hash 37a810a917f4ad77.
     """
     return _F.exponential_coordinates_from_transform(T, out, check, on_singular, threads)
 
@@ -1362,7 +1362,7 @@ def rotation_vector_from_rotation(
 
         Accuracy: error <= 1.78 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 2 ulp in float64) over 6 regimes (docs/accuracy.md, kernels.accuracy).
 
-        Generated; 195 operations; math hash de9c93174b0c8c92.
+        Generated; 195 operations; math hash 77cc89802f09a40b.
     """
     return _F.rotation_vector_from_rotation(Q, out, check, on_singular, threads)
 

@@ -72,6 +72,13 @@ def inputs(kernel, n: int, seed: int = 0) -> list[np.ndarray]:
             ph = np.concatenate([rng.uniform(0.0, np.pi, n), [1e-6, np.pi - 1e-8, np.pi,
                                                                np.pi - 1e-4]])
             v = _rotations(_unit(rng, n + adv), ph)
+        elif a.shape == (4, 4):  # a homogeneous transform (the log of SE(3) reads one)
+            ph = np.concatenate([rng.uniform(0.0, np.pi, n), [1e-6, np.pi - 1e-8, np.pi,
+                                                               np.pi - 1e-4]])
+            v = np.zeros((n + adv, 4, 4))
+            v[:, :3, :3] = _rotations(_unit(rng, n + adv), ph)
+            v[:, :3, 3] = rng.standard_normal((n + adv, 3))
+            v[:, 3, 3] = 1.0
         elif a.name == "m":
             v = rng.uniform(0.5, 2.0, n + adv)
         elif a.name == "I_C":    # an inertia matrix: symmetric positive definite

@@ -154,6 +154,15 @@ def test_issue_cases_finite():
     K.use_backend("numpy")
 
 
+def _specs():
+    from rigidsym.derivations.kernels_spec import KERNELS
+
+    return {k.name: k for k in KERNELS}
+
+
+_SPECS = _specs()
+
+
 def _nan_cases():
     from test_kernels_props import KERNELS, valid  # the table of every public kernel
 
@@ -174,6 +183,7 @@ def test_one_nan_policy(name):
     call, specs = table[name]
     rng = np.random.default_rng(4)
     x = {s["name"]: valid(s, (), rng) for s in specs}
+    branched = bool(_SPECS[name].branches) if name in _SPECS else False
     seen = {}
     for b in _backends():
         K.use_backend(b)
@@ -197,7 +207,11 @@ def test_one_nan_policy(name):
                     assert np.isnan(got[moved]).all(), (label, got, moved)
                     same = np.abs(got - clean) <= 8 * U64 * np.abs(clean).max()
                     assert (same | np.isnan(got))[dep].all(), (label, got, clean)
-                    assert same[~dep].all(), (label, got, clean)
+                    # a NaN in an input of a branch condition leaves the branch unknown:
+                    # NaN allowed in every output of a branched kernel (the log of SO(3)
+                    # below pi/4 reads no diagonal entry, but its condition reads tr Q)
+                    assert (same | (np.isnan(got) & branched))[~dep].all(), (
+                        label, got, clean)
                     seen.setdefault((s["name"], i, bad), []).append(np.isnan(got))
                     with pytest.raises(ValueError, match=f"^{s['name']}: non-finite"):
                         call(**{**x, s["name"]: a})

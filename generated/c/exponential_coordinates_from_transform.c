@@ -4,7 +4,7 @@
  * source: rigidsym.derivations.lie_maps.exponential_coordinates_from_transform (composed in rigidsym.derivations.kernels_spec)
  * equations: (sola:exp-se3), (sola:log-exp-se3)
  * template: c_kernel.c.j2
- * math hash: sha256:fd5941b387755b57
+ * math hash: sha256:37a810a917f4ad77
  * sympy 1.14.0, rigidsym 0.2.0
  * operations: 651
  * branches: near_pi_0, near_pi_1, near_pi_2, small, main

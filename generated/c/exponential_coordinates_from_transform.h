@@ -4,13 +4,13 @@
  * source: rigidsym.derivations.lie_maps.exponential_coordinates_from_transform (composed in rigidsym.derivations.kernels_spec)
  * equations: (sola:exp-se3), (sola:log-exp-se3)
  * template: c_kernel.h.j2
- * math hash: sha256:fd5941b387755b57
+ * math hash: sha256:37a810a917f4ad77
  * sympy 1.14.0, rigidsym 0.2.0
  * operations: 651
  * branches: near_pi_0, near_pi_1, near_pi_2, small, main
  *
  * Log of SE(3): the exponential coordinates xi = [w; v] of T, norm of w in [0, pi].
- * w = Log(R), v = J_l(w)^-1 p; below pi/2 in s = norm of vect(R) alone (asin, sqrt(1 - s^2)), near pi the symmetric part of R
+ * w = Log(R), v = J_l(w)^-1 p; below pi/4 in s = norm of vect(R) alone (asin, sqrt(1 - s^2)), near pi the symmetric part of R
  *
  * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
  * measured at generation, rigidsym.codegen.float32; worst error 0.931 of what
@@ -204,7 +204,7 @@ static inline int rigidsym_exponential_coordinates_from_transform_sample(
          * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
         const double finite = ((((x14 - x14) + (x15 - x15)) + ((x20 - x20) + (x27 - x27))) + (((x29 - x29) + (((x11*x11) + (x12*x12) + (x13*x13)) - ((x11*x11) + (x12*x12) + (x13*x13)))) + ((x10 - x10) + ((x26 - x26) + (x28 - x28)))));
         singular |= finite != finite;
-    } else if (T_00 + T_11 + T_22 > 1.0) {
+    } else if (T_00 + T_11 + T_22 - 1.0 > 0.0 && ((T_00 + T_11 + T_22 - 1.0)*(T_00 + T_11 + T_22 - 1.0)) > 2.0) {
         const double x0 = (0.5)*T_01;
         const double x1 = (0.5)*T_02;
         const double x2 = (0.5)*T_20;
@@ -450,7 +450,7 @@ static inline int rigidsym_exponential_coordinates_from_transform_sample_f32(
         singular |= (((double)x10)) == 0.0;
         const double finite = ((((x14 - x14) + (x15 - x15)) + ((x20 - x20) + (x27 - x27))) + (((x29 - x29) + (((x11*x11) + (x12*x12) + (x13*x13)) - ((x11*x11) + (x12*x12) + (x13*x13)))) + ((x10 - x10) + ((x26 - x26) + (x28 - x28)))));
         singular |= finite != finite;
-    } else if (((double)T_00) + ((double)T_11) + ((double)T_22) > 1.0) {
+    } else if (((double)T_00) + ((double)T_11) + ((double)T_22) - 1.0 > 0.0 && ((((double)T_00) + ((double)T_11) + ((double)T_22) - 1.0)*(((double)T_00) + ((double)T_11) + ((double)T_22) - 1.0)) > 2.0) {
         const float x0 = (0.5f)*T_01;
         const float x1 = (0.5f)*T_02;
         const float x2 = (0.5f)*T_20;

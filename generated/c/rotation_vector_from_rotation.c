@@ -4,7 +4,7 @@
  * source: rigidsym.derivations.lie_maps.rotation_vector_from_rotation (composed in rigidsym.derivations.kernels_spec)
  * equations: (sola:exp-so3), (sola:log-exp-so3), (sola:exp-log-so3)
  * template: c_kernel.c.j2
- * math hash: sha256:de9c93174b0c8c92
+ * math hash: sha256:77cc89802f09a40b
  * sympy 1.14.0, rigidsym 0.2.0
  * operations: 195
  * branches: near_pi_0, near_pi_1, near_pi_2, small, main

@@ -3,13 +3,13 @@
 # source: rigidsym.derivations.lie_maps.exponential_coordinates_from_transform (composed in rigidsym.derivations.kernels_spec)
 # equations: (sola:exp-se3), (sola:log-exp-se3)
 # template: array_kernel.py.j2
-# math hash: sha256:fd5941b387755b57
+# math hash: sha256:37a810a917f4ad77
 # sympy 1.14.0, rigidsym 0.2.0
 # operations: 651
 # branches: near_pi_0, near_pi_1, near_pi_2, small, main
 """Log of SE(3): the exponential coordinates xi = [w; v] of T, norm of w in [0, pi].
 
-w = Log(R), v = J_l(w)^-1 p; below pi/2 in s = norm of vect(R) alone (asin, sqrt(1 - s^2)), near pi the symmetric part of R
+w = Log(R), v = J_l(w)^-1 p; below pi/4 in s = norm of vect(R) alone (asin, sqrt(1 - s^2)), near pi the symmetric part of R
 
 Low-level generated JAX program: each function
 takes one array per scalar input component (``COLUMNS``, broadcast to one batch shape) and
@@ -36,7 +36,7 @@ def _cos(x):
     return _sincos(x)[..., 1]
 
 OPS = 651
-MATH_HASH = "fd5941b387755b57"
+MATH_HASH = "37a810a917f4ad77"
 COLUMNS = ("T_00", "T_01", "T_02", "T_03", "T_10", "T_11", "T_12", "T_13", "T_20", "T_21", "T_22", "T_23", "T_30", "T_31", "T_32", "T_33", )
 
 
@@ -248,7 +248,7 @@ def _small(T_00, T_01, T_02, T_03, T_10, T_11, T_12, T_13, T_20, T_21, T_22, T_2
 
 
 def _when_small(T_00, T_01, T_02, T_03, T_10, T_11, T_12, T_13, T_20, T_21, T_22, T_23, T_30, T_31, T_32, T_33):
-    return jax.numpy.greater(T_00 + T_11 + T_22, 1.0)
+    return jax.numpy.logical_and(jax.numpy.greater(T_00 + T_11 + T_22 - 1.0, 0.0), jax.numpy.greater(((T_00 + T_11 + T_22 - 1.0)*(T_00 + T_11 + T_22 - 1.0)), 2.0))
 
 
 def _main(T_00, T_01, T_02, T_03, T_10, T_11, T_12, T_13, T_20, T_21, T_22, T_23, T_30, T_31, T_32, T_33):

@@ -3,7 +3,7 @@
 # source: rigidsym.derivations.lie_maps.rotation_vector_from_rotation (composed in rigidsym.derivations.kernels_spec)
 # equations: (sola:exp-so3), (sola:log-exp-so3), (sola:exp-log-so3)
 # template: array_kernel.py.j2
-# math hash: sha256:de9c93174b0c8c92
+# math hash: sha256:77cc89802f09a40b
 # sympy 1.14.0, rigidsym 0.2.0
 # operations: 195
 # branches: near_pi_0, near_pi_1, near_pi_2, small, main
@@ -36,7 +36,7 @@ def _cos(x):
     return _sincos(x)[..., 1]
 
 OPS = 195
-MATH_HASH = "de9c93174b0c8c92"
+MATH_HASH = "77cc89802f09a40b"
 COLUMNS = ("Q_00", "Q_01", "Q_02", "Q_10", "Q_11", "Q_12", "Q_20", "Q_21", "Q_22", )
 
 
@@ -134,7 +134,7 @@ def _small(Q_00, Q_01, Q_02, Q_10, Q_11, Q_12, Q_20, Q_21, Q_22):
 
 
 def _when_small(Q_00, Q_01, Q_02, Q_10, Q_11, Q_12, Q_20, Q_21, Q_22):
-    return jax.numpy.greater(Q_00 + Q_11 + Q_22, 1.0)
+    return jax.numpy.logical_and(jax.numpy.greater(Q_00 + Q_11 + Q_22 - 1.0, 0.0), jax.numpy.greater(((Q_00 + Q_11 + Q_22 - 1.0)*(Q_00 + Q_11 + Q_22 - 1.0)), 2.0))
 
 
 def _main(Q_00, Q_01, Q_02, Q_10, Q_11, Q_12, Q_20, Q_21, Q_22):

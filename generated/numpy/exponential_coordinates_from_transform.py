@@ -3,13 +3,13 @@
 # source: rigidsym.derivations.lie_maps.exponential_coordinates_from_transform (composed in rigidsym.derivations.kernels_spec)
 # equations: (sola:exp-se3), (sola:log-exp-se3)
 # template: numpy_kernel.py.j2
-# math hash: sha256:fd5941b387755b57
+# math hash: sha256:37a810a917f4ad77
 # sympy 1.14.0, rigidsym 0.2.0
 # operations: 651
 # branches: near_pi_0, near_pi_1, near_pi_2, small, main
 """Log of SE(3): the exponential coordinates xi = [w; v] of T, norm of w in [0, pi].
 
-w = Log(R), v = J_l(w)^-1 p; below pi/2 in s = norm of vect(R) alone (asin, sqrt(1 - s^2)), near pi the symmetric part of R
+w = Log(R), v = J_l(w)^-1 p; below pi/4 in s = norm of vect(R) alone (asin, sqrt(1 - s^2)), near pi the symmetric part of R
 
 Low-level generated NumPy kernel: inputs are C-contiguous float64 ``(n, ...)`` arrays,
 outputs are written into preallocated C-contiguous ``(n, ...)`` arrays; the return value is
@@ -21,7 +21,7 @@ the ``(n,)`` uint8 array of flags: 0 fine, ``SINGULAR`` (a denominator is exactl
 import numpy
 
 OPS = 651
-MATH_HASH = "fd5941b387755b57"
+MATH_HASH = "37a810a917f4ad77"
 #: sample flags returned by the batch function
 SINGULAR, NONFINITE = 1, 2
 
@@ -375,7 +375,7 @@ def _block(T, out_xi):
             for _r in _risky:
                 _nf[_idx] |= ~numpy.isfinite(_r)
         T_00, T_01, T_02, T_03, T_10, T_11, T_12, T_13, T_20, T_21, T_22, T_23, T_30, T_31, T_32, T_33, = _cols
-        _hit = numpy.logical_and(_rest, numpy.greater(T_00 + T_11 + T_22, 1))
+        _hit = numpy.logical_and(_rest, numpy.logical_and.reduce((numpy.greater(T_00 + T_11 + T_22 - 1, 0),numpy.greater(((T_00 + T_11 + T_22 - 1)*(T_00 + T_11 + T_22 - 1)), 2))))
         _idx = numpy.flatnonzero(_hit)
         if _idx.size:
             _rest &= ~_hit

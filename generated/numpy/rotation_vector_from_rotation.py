@@ -3,7 +3,7 @@
 # source: rigidsym.derivations.lie_maps.rotation_vector_from_rotation (composed in rigidsym.derivations.kernels_spec)
 # equations: (sola:exp-so3), (sola:log-exp-so3), (sola:exp-log-so3)
 # template: numpy_kernel.py.j2
-# math hash: sha256:de9c93174b0c8c92
+# math hash: sha256:77cc89802f09a40b
 # sympy 1.14.0, rigidsym 0.2.0
 # operations: 195
 # branches: near_pi_0, near_pi_1, near_pi_2, small, main
@@ -21,7 +21,7 @@ the ``(n,)`` uint8 array of flags: 0 fine, ``SINGULAR`` (a denominator is exactl
 import numpy
 
 OPS = 195
-MATH_HASH = "de9c93174b0c8c92"
+MATH_HASH = "77cc89802f09a40b"
 #: sample flags returned by the batch function
 SINGULAR, NONFINITE = 1, 2
 
@@ -208,7 +208,7 @@ def _block(Q, out_w):
             for _r in _risky:
                 _nf[_idx] |= ~numpy.isfinite(_r)
         Q_00, Q_01, Q_02, Q_10, Q_11, Q_12, Q_20, Q_21, Q_22, = _cols
-        _hit = numpy.logical_and(_rest, numpy.greater(Q_00 + Q_11 + Q_22, 1))
+        _hit = numpy.logical_and(_rest, numpy.logical_and.reduce((numpy.greater(Q_00 + Q_11 + Q_22 - 1, 0),numpy.greater(((Q_00 + Q_11 + Q_22 - 1)*(Q_00 + Q_11 + Q_22 - 1)), 2))))
         _idx = numpy.flatnonzero(_hit)
         if _idx.size:
             _rest &= ~_hit

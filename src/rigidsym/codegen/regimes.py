@@ -128,6 +128,22 @@ def _range(kernel, dtype, base, out) -> None:
                            "range 1e-35..1e35", []).append(p)
 
 
+def _coincident(rng, small, base, out: dict) -> None:
+    """Nearly coincident points p2 -> p1, at the origin's scale and at an offset of 1e6."""
+    for s in small:
+        p = base()
+        d = [q(v) for v in rng.standard_normal(3)]
+        p[1] = [x + q(s) * y for x, y in zip(p[0], d, strict=True)]
+        out.setdefault("p2->p1", []).append(p)
+    # a large offset, a small difference (issue 37: |p2 - p1| / |p| from 1e-1 to 1e-12)
+    for s in [x for x in small if x >= 1e-12]:
+        p = base()
+        d = [q(v) for v in rng.standard_normal(3)]
+        p[0] = [x * 10**6 for x in p[0]]
+        p[1] = [x + q(s) * 10**6 * y for x, y in zip(p[0], d, strict=True)]
+        out.setdefault("p2->p1 at 1e6", []).append(p)
+
+
 def regimes(kernel, dtype, n_random: int = 8, seed: int = 0, small=None,
             extremes: bool = True):
     """``{regime: [point]}`` for ``kernel`` (its ``Arg`` kinds and names decide the sweeps);
@@ -181,19 +197,8 @@ def regimes(kernel, dtype, n_random: int = 8, seed: int = 0, small=None,
                 p = base()
                 p[i] = [x * q(s) for x in p[i]]
                 out.setdefault("scale 1e-6..1e6", []).append(p)
-    if names[:2] == ["p1", "p2"]:          # nearly coincident points
-        for s in small:
-            p = base()
-            d = [q(v) for v in rng.standard_normal(3)]
-            p[1] = [x + q(s) * y for x, y in zip(p[0], d, strict=True)]
-            out.setdefault("p2->p1", []).append(p)
-        # a large offset, a small difference (issue 37: |p2 - p1| / |p| from 1e-1 to 1e-12)
-        for s in [x for x in small if x >= 1e-12]:
-            p = base()
-            d = [q(v) for v in rng.standard_normal(3)]
-            p[0] = [x * 10**6 for x in p[0]]
-            p[1] = [x + q(s) * 10**6 * y for x, y in zip(p[0], d, strict=True)]
-            out.setdefault("p2->p1 at 1e6", []).append(p)
+    if names[:2] == ["p1", "p2"]:
+        _coincident(rng, small, base, out)
     if extremes:
         _range(kernel, dtype, base, out)
     return out
