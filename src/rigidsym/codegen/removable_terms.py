@@ -48,14 +48,19 @@ def _merge(m1, m2):
     return tuple(sorted(d.items()))
 
 
+def _accumulate(out: dict, m, c) -> None:
+    """``out[m] += c``, a zero coefficient dropped (the sparse form keeps no zeros)."""
+    c2 = out.get(m, 0) + c
+    if c2:
+        out[m] = c2
+    else:
+        out.pop(m, None)
+
+
 def _add(p, q, sign=1):
     out = dict(p)
     for m, c in q.items():
-        c2 = out.get(m, 0) + sign * c
-        if c2:
-            out[m] = c2
-        else:
-            out.pop(m, None)
+        _accumulate(out, m, sign * c)
     return out
 
 
@@ -65,12 +70,7 @@ def _mul(p, q):
     out: dict = {}
     for m1, c1 in p.items():
         for m2, c2 in q.items():
-            m = _merge(m1, m2)
-            c = out.get(m, 0) + c1 * c2
-            if c:
-                out[m] = c
-            else:
-                out.pop(m, None)
+            _accumulate(out, _merge(m1, m2), c1 * c2)
     return out
 
 
