@@ -118,8 +118,11 @@ def textbook(kernel, cols: list, dtype):
         if cond is None:
             take = ~done
         else:
-            take = ~done & np.array([bool(cond(*[float(c[s]) for c in wide]))
-                                     for s in range(n)], dtype=bool)
+            # NumPy scalars, not floats: a Python float's ** raises OverflowError where
+            # the condition (tr Q - 1)^2 > 2 of a log near 1e160 is simply true
+            with np.errstate(all="ignore"):
+                take = ~done & np.array([bool(cond(*[c[s] for c in wide]))
+                                         for s in range(n)], dtype=bool)
         if not take.any():
             continue
         dt["now"] = dtype
