@@ -88,8 +88,15 @@ def test_docstrings_state_the_json_bounds():
             assert f"<= {_stated(name, dt):.3g} u (kappa + 1) in {dt}" in doc, name
 
 
+#: open (issue 37, tests/test_accuracy.py's RANGE_DEFECTS): a spurious NaN at inputs 1e-160
+_OPEN = {"exponential_coordinates_from_transform": "NaN where the result is finite "
+                                                   "(inputs 1e-160), open"}
+
+
 @pytest.mark.slow
-@pytest.mark.parametrize("name", sorted(DATA))
+@pytest.mark.parametrize("name", [
+    pytest.param(n, marks=pytest.mark.xfail(strict=True, reason=_OPEN[n])) if n in _OPEN
+    else n for n in sorted(DATA)])
 def test_stated_bound_holds_on_fresh_points_every_kernel(name):
     bad = []
     for dt, small in ((np.float64, FRESH64), (np.float32, FRESH32)):
