@@ -232,13 +232,16 @@ class _AtInput:
 
 
 def _diff(c, ref, at_input, sl, bound) -> float:
-    """``||c - ref||``; near pi, where ``c`` is the negation of the exact point's output
-    (the rounding of Q flipped the sign of its skew part, which fixes e), the distance to
-    the declared formula at the input the kernel got (its documented sign rule there)."""
+    """``||c - ref||``; where that is past ``bound`` in a kernel with branches, at most the
+    distance to the declared formula at the input the kernel got. Near pi the rounding of
+    Q (or of a transform's R) can flip the sign of its skew part, which fixes e: the exact
+    point's output is then -w (the log of SO(3)), or [-w; J_l(-w)^-1 p] (the log of SE(3),
+    not the negation of [w; v]), a jump that no derivative (kappa) sees; the kernel is
+    judged by its documented sign rule at its own input there."""
     if not np.isfinite(c).all():
         return np.inf
     d = float(np.linalg.norm(c - ref))
-    if d <= bound or at_input is None or np.linalg.norm(c + ref) > bound:
+    if d <= bound or at_input is None:
         return d
     v = at_input.get()
     return d if v is None else min(d, float(np.linalg.norm(c - v[sl])))

@@ -104,7 +104,6 @@ def _libmvec() -> bool:
 #: Found by the ends of the range (issue 37 item 2's regimes) in the Lie kernels of issue 38,
 #: open for the rescue of item 3: strict, so a fix turns them into a failure to remove here
 RANGE_DEFECTS = {
-    "exponential_coordinates_from_transform": "NaN where the result is finite (inputs 1e-160)",
     "exponential_coordinates_left_jacobian_inverse": "finite wrong values at inputs 1e300",
     "rotation_vector_left_jacobian_inverse": "finite wrong values at inputs 1e300",
     "rotation_vector_right_jacobian_inverse": "finite wrong values at inputs 1e300",

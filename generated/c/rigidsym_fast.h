@@ -760,7 +760,7 @@ static const rigidsym_slot rigidsym_out_98[] = {
     {2, {4, 4}, 16, 0},
 };
 static const rigidsym_slot rigidsym_in_99[] = {
-    {2, {4, 4}, 16, 0},
+    {2, {4, 4}, 16, 3},
 };
 static const rigidsym_slot rigidsym_out_99[] = {
     {1, {6}, 6, 0},
