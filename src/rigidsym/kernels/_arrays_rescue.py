@@ -12,8 +12,9 @@ give it, and a NaN input the same NaN positions. No import of PyTorch or JAX.
 
 Traced calls (``jit``, ``torch.compile``, ``torch.func``) read nothing on the host: there a
 denominator that overflowed to inf marks its sample as flagged (as one that is exactly 0
-does), so an overflow is NaN there, never a finite wrong value (:func:`traced_inputs` takes
-an inf input as NaN, the rescue's rule).
+does), so an overflow is NaN there, never a finite wrong value (an inf input is taken as
+NaN, the rescue's rule: :func:`finite_columns` inside the kernel's function under ``jit`` and
+``torch.compile``, :func:`traced_inputs` on the inputs under ``torch.func``).
 """
 
 from __future__ import annotations
@@ -23,7 +24,7 @@ import numpy as np
 from rigidsym._io import load_module
 from rigidsym.kernels import _rescue
 
-__all__ = ["input_range", "flag_rows", "rescue", "traced_inputs", "AGREE"]
+__all__ = ["input_range", "flag_rows", "rescue", "traced_inputs", "finite_columns", "AGREE"]
 
 #: the input magnitudes a program evaluates in its own type without the rescue: float64
 #: as the C and NumPy kernels (products of up to ten inputs stay normal); float32 programs
@@ -70,6 +71,17 @@ def traced_inputs(xp, xs: list) -> list:
     """An inf input as NaN (the rescue's rule: IEEE limits such as ``x / inf = 0`` are no
     value of the kernel), for calls that are not rescued."""
     return [xp.where(xp.isinf(x), xp.nan, x) for x in xs]
+
+
+def finite_columns(cols: list) -> list:
+    """:func:`traced_inputs`' rule on the columns inside a kernel's function: ``c + 0 * c``
+    is ``c`` bit for bit when finite (signed zeros and subnormals included: ``0 * c`` has
+    the sign of ``c``) and NaN for ±inf, with derivative 1. Neither XLA nor inductor folds a
+    float ``0 * c`` (it is NaN at inf). Measured (issue 38), ``jax.jit`` value + gradient of
+    ``instant_screw_axis`` at N = 1e4, process CPU ms: none 0.77 / 1.10 (float32 / 64),
+    ``where(isinf)`` on the inputs before the ``custom_jvp`` 1.12 / 1.50, ``where`` on the
+    columns inside it 0.94 / 1.33, this 0.82 / 1.15: XLA fuses it into every reader."""
+    return [c + 0.0 * c for c in cols]
 
 
 def _numpy_kernel(progs, name: str):

@@ -88,11 +88,11 @@ def _make(space: _arrays.Space, name: str):
     """``f(*xs) -> (*outputs, singular)``: a ``jax.custom_jvp`` whose JVP is the generated
     Jacobian kernel, or the plain expression (no Jacobian kernel)."""
     if not space.progs.has_jacobian(name):
-        # traced (maybe differentiated): safe inputs in the singular samples
-        return lambda *xs: space.values(name, xs, _traced(xs))
+        # traced (maybe differentiated): safe inputs in the singular samples, inf as NaN
+        return lambda *xs: space.values(name, xs, _traced(xs), _traced(xs))
 
     def values(*xs):
-        return space.values(name, xs)
+        return space.values(name, xs, finite=_traced(xs))
 
     f = jax.custom_jvp(values)
 
@@ -116,7 +116,7 @@ _LIBRARY = _arrays.Library(
     device=lambda xs: None, host=np.asarray, make=_make, note=_x64_note,
     floats=tuple(np.dtype(t) for t in (jnp.float16, jnp.bfloat16, jnp.float32, jnp.float64)),
     float32=np.dtype(jnp.float32), finfo=jnp.finfo, cast=lambda x, dtype: x.astype(dtype),
-    float_dtype=_float_dtype)
+    float_dtype=_float_dtype, finite_inside=lambda: True)
 
 # load, the Euler-angle kernels, the lazy kernels: the same for both back-ends (_arrays_api)
 load, euler_rate_matrix, euler_angle_rates, __getattr__, __dir__, _space = \

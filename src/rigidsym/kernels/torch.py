@@ -157,9 +157,10 @@ def _function(space: _arrays.Space, name: str, forward_mode: bool):
         t = [torch.zeros_like(x) if d is None else d for x, d in zip(xs, tangents, strict=True)]
         return (*space.jvp(name, xs, t, sing), None)
 
+    # the compiled class runs only while traced: an inf input taken as NaN inside
     body = {"generate_vmap_rule": True,
-            "forward": staticmethod(_fixed_arity(lambda xs: space.values(name, xs),
-                                                 len(args))),
+            "forward": staticmethod(_fixed_arity(
+                lambda xs: space.values(name, xs, finite=not forward_mode), len(args))),
             "setup_context": staticmethod(setup_context), "backward": staticmethod(backward)}
     if forward_mode:
         body["jvp"] = staticmethod(jvp)
@@ -172,7 +173,8 @@ def _make(space: _arrays.Space, name: str):
     generated Jacobian kernel, or autograd through the expression (no Jacobian kernel;
     safe inputs in the singular samples when differentiated)."""
     if not space.progs.has_jacobian(name):
-        return lambda *xs: space.values(name, xs, _differentiable(xs))
+        return lambda *xs: space.values(name, xs, _differentiable(xs),
+                                        torch.compiler.is_compiling())
     eager, compiled = _function(space, name, True), _function(space, name, False)
     fast = _plain_apply(eager)
 
@@ -266,7 +268,8 @@ _LIBRARY = _arrays.Library(
     host=lambda x: x.cpu().numpy(), make=_make, refuse=_refuse, floats=_FLOATS,
     float32=torch.float32, finfo=torch.finfo, float_dtype=_float_dtype,
     cast=lambda x, dtype: x.to(dtype), rescued=_rescued, clear=_clear,
-    constant=getattr(torch.compiler, "assume_constant_result", lambda fn: fn))
+    constant=getattr(torch.compiler, "assume_constant_result", lambda fn: fn),
+    finite_inside=torch.compiler.is_compiling)
 
 # load, the Euler-angle kernels, the lazy kernels: the same for both back-ends (_arrays_api)
 load, euler_rate_matrix, euler_angle_rates, __getattr__, __dir__, _space = \

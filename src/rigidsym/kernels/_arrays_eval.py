@@ -1,0 +1,107 @@
+"""Running a generated array program on arrays (issue 31; split from :mod:`._arrays`):
+one column per scalar input component, the branch kernels' safe-``where`` selection, the
+singular mask from the denominators, the flat outputs shaped back. No import of PyTorch or
+JAX (``xp`` is ``torch`` or ``jax.numpy``)."""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from typing import Any
+
+from rigidsym.kernels._jacobian import full_batch as _full
+
+__all__ = ["columns", "shape_outputs", "evaluate"]
+
+
+def columns(arrays: list, args: list[dict]) -> list:
+    """One array per scalar component (row-major), each of the batch shape."""
+    cols = []
+    for x, a in zip(arrays, args, strict=True):
+        if not a["shape"]:
+            cols.append(x)
+            continue
+        n = int(math.prod(a["shape"]))
+        flat = x.reshape(tuple(x.shape[:len(x.shape) - len(a["shape"])]) + (n,))
+        # torch's unbind: one dispatch for the n views (and one stack in its backward)
+        # instead of n indexings, a fixed cost of a call at small N (issue 38)
+        cols.extend(flat.unbind(-1) if hasattr(flat, "unbind") else
+                    (flat[..., i] for i in range(n)))
+    return cols
+
+
+def shape_outputs(xp, flat: list, outs: list[dict], like) -> list:
+    """The flat outputs of a program as arrays ``batch + output shape``."""
+    res, k = [], 0
+    batch = tuple(like.shape)
+    for o in outs:
+        n = int(math.prod(o["shape"]))
+        parts = [_full(xp, v, like) for v in flat[k:k + n]]
+        k += n
+        res.append(parts[0] if not o["shape"] else
+                   xp.stack(parts, -1).reshape(batch + tuple(o["shape"])))
+    return res
+
+
+def evaluate(xp, variants: tuple, cols: list, stop_gradient: Callable, safe=None,
+             singular=None) -> tuple[list, Any]:
+    """Run a kernel's variants on ``cols``: ``(flat outputs, singular mask)``.
+
+    A kernel with branches takes, per sample, the first branch whose condition holds, else
+    main (the NumPy kernel's rule). Safe ``where``: each variant sees the real inputs only
+    in its own samples and ``stop_gradient`` of them elsewhere, so a NaN or inf derivative
+    of a branch not taken never reaches the gradient.
+
+    ``safe`` (one float per column, a regular point: :func:`safe_point`) is substituted for
+    the inputs of the singular samples before the differentiable evaluation, so that their
+    derivatives are finite and a zero cotangent gives exactly zero, never NaN (0 * inf),
+    in a parameter the batch shares (issue 38); their outputs are then the safe point's,
+    which the caller replaces by NaN or an error. ``singular``: the mask when known (the
+    forward's), else found by a first evaluation on ``stop_gradient`` of the inputs.
+    """
+    if safe is None:
+        return _evaluate(xp, variants, cols, stop_gradient)
+    if singular is None:
+        _, singular = _evaluate(xp, variants, [stop_gradient(c) for c in cols], stop_gradient)
+    cols = [xp.where(singular, v, c) for v, c in zip(safe, cols, strict=True)]
+    return _evaluate(xp, variants, cols, stop_gradient)[0], singular
+
+
+def _evaluate(xp, variants: tuple, cols: list, stop_gradient: Callable) -> tuple[list, Any]:
+    like = cols[0]
+    if len(variants) == 1:
+        outs, dens = variants[0][1](*cols)
+        sing = _singular(xp, dens, like)
+        return list(outs), sing
+    taken, rest = [], None
+    for _, _, when in variants[:-1]:
+        hit = when(*cols)
+        hit = hit if rest is None else xp.logical_and(rest, hit)
+        rest = xp.logical_not(hit) if rest is None else xp.logical_and(rest, xp.logical_not(hit))
+        taken.append(hit)
+    taken.append(rest)
+    result = sing = None
+    for (_, prog, _), hit in zip(reversed(variants), reversed(taken), strict=True):
+        safe = [xp.where(hit, c, stop_gradient(c)) for c in cols]
+        outs, dens = prog(*safe)
+        s = _singular(xp, dens, like)
+        outs = [_full(xp, v, like) for v in outs]
+        if result is None:
+            result, sing = outs, s
+        else:
+            result = [xp.where(hit, v, r) for v, r in zip(outs, result, strict=True)]
+            sing = xp.where(hit, s, sing)
+    return result, sing
+
+
+def _singular(xp, dens, like):
+    # a denominator that overflowed to inf flags its sample too (issue 37): x / inf = 0 is
+    # a finite wrong value; eager calls re-run such samples in long double (_arrays_rescue)
+    sing = None
+    for d in dens:
+        z = (d == 0) | xp.isinf(d)
+        sing = z if sing is None else xp.logical_or(sing, z)
+    if getattr(sing, "shape", None) != like.shape:  # no denominator, or a constant one
+        zero = xp.zeros_like(like, dtype=bool)
+        sing = zero if sing is None else xp.logical_or(zero, sing)
+    return sing
