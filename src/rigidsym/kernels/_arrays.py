@@ -33,7 +33,7 @@ from rigidsym.kernels._arrays_checks import (
     safe_point,
     validate,
 )
-from rigidsym.kernels._arrays_eval import columns, evaluate, shape_outputs
+from rigidsym.kernels._arrays_eval import columns, evaluate, shape_outputs, singular_mask
 from rigidsym.kernels._errors import raise_flagged
 from rigidsym.kernels._jacobian import contract
 from rigidsym.kernels._jacobian import full_batch as _full
@@ -88,6 +88,8 @@ class ArraySpace:
             # the generated vector-Jacobian product; None in a folder generated before it
             self._programs["vjp", name] = getattr(mod, "VJP", None)
             self._programs["jvp", name] = getattr(mod, "JVP", None)
+            # the forward returning the temps its VJP reads, and that VJP (PyTorch)
+            self._programs["saved", name] = getattr(mod, "SAVED", None)
             # whether its program divides (a folder generated before the flag: assume so)
             self._programs["divides", name] = getattr(mod, "DIVIDES", True)
         return v
@@ -99,7 +101,9 @@ class ArraySpace:
     def vjp(self, name: str, mode: str = "vjp"):
         """The generated reverse-mode (``"vjp"``: ``f(*columns, *output cotangents) -> input
         cotangents``) or forward-mode (``"jvp"``: ``f(*columns, *input tangents) -> output
-        tangents``) program of kernel ``name`` (``rigidsym.codegen.vjp``), or None."""
+        tangents``) program of kernel ``name`` (``rigidsym.codegen.vjp``), or None;
+        ``"saved"``: ``(forward, vjp)`` where the forward also returns the temps the VJP
+        reads and the VJP takes them after the columns, or None."""
         self.variants(name)
         return self._programs[mode, name]
 
@@ -119,6 +123,14 @@ def make_all(progs: ArraySpace, make: Callable) -> dict:
         progs.variants(name)
         progs.safe(name)
     return {name: make(name) for name in progs.meta if not name.endswith(SUFFIX)}
+
+
+def _cotangents(grads: list, outs: list[dict]) -> list:
+    """The columns of the outputs' cotangents (None: zeros, as Python floats)."""
+    gcols = []
+    for g, o in zip(grads, outs, strict=True):
+        gcols += ([0.0] * int(math.prod(o["shape"])) if g is None else columns([g], [o]))
+    return gcols
 
 
 # ------------------------------------------------ the call path both back-ends share
@@ -212,6 +224,29 @@ class Space:
                            self._safe(name), singular)
         return flat[nval:]
 
+    def values_saved(self, name: str, xs) -> tuple:
+        """``(outputs, singular, temps)``: :meth:`values` of a kernel with a ``"saved"``
+        program, and the forward temps its VJP reads, for :meth:`vjp_saved` (issue 38)."""
+        xp, meta = self.lib.xp, self.progs.meta[name]
+        cols = columns(xs, meta["args"])
+        outs, dens, temps = self.progs.vjp(name, "saved")[0](*cols)
+        return (shape_outputs(xp, list(outs), meta["outputs"], cols[0]),
+                singular_mask(xp, dens, cols[0]), temps)
+
+    def regular(self, name: str, singular) -> bool:
+        """No sample is singular, known without a trace or a device sync (no denominator,
+        or an eager CPU mask read)."""
+        return not self.progs.divides(name) or self.lib.clear(singular)
+
+    def vjp_saved(self, name: str, xs, temps, grads: list) -> list:
+        """:meth:`vjp` on the forward's ``temps`` (:meth:`values_saved`) where no sample
+        is singular (:meth:`regular`): the same operations less those of the forward."""
+        meta = self.progs.meta[name]
+        cols = columns(xs, meta["args"])
+        flat = self.progs.vjp(name, "saved")[1](*cols, *temps,
+                                                 *_cotangents(grads, meta["outputs"]))
+        return shape_outputs(self.lib.xp, list(flat), meta["args"], cols[0])
+
     def vjp(self, name: str, xs, grads: list, singular) -> list:
         """The cotangents of the inputs ``xs`` from those of the outputs, ``grads`` (None:
         zero): the generated reverse-mode program, on the safe point's inputs in the
@@ -225,10 +260,7 @@ class Space:
             return contract(xp, grads, self.jacobian(name, xs, singular), outs, args,
                             forward=False)
         cols = self._safe_columns(name, xs, singular)
-        gcols = []
-        for g, o in zip(grads, outs, strict=True):
-            gcols += ([0.0] * int(math.prod(o["shape"])) if g is None else columns([g], [o]))
-        return shape_outputs(xp, list(fn(*cols, *gcols)), args, cols[0])
+        return shape_outputs(xp, list(fn(*cols, *_cotangents(grads, outs))), args, cols[0])
 
     def jvp(self, name: str, xs, tangents: list, singular) -> list:
         """The tangents of the outputs from those of the inputs (arrays, zeros for none):
@@ -251,7 +283,7 @@ class Space:
         """The columns of ``xs``, the safe point's in the ``singular`` samples (no
         ``where`` without a denominator or with a clear eager mask, issue 38)."""
         cols, where = columns(xs, self.progs.meta[name]["args"]), self.lib.xp.where
-        if not self.progs.divides(name) or self.lib.clear(singular):
+        if self.regular(name, singular):
             return cols
         return [where(singular, v, c) for v, c in zip(self._safe(name), cols, strict=True)]
 
@@ -306,6 +338,8 @@ class Space:
         was flagged at all."""
         lib, xp = self.lib, self.lib.xp
         bits = int(lib.finfo(full[0].dtype).bits)
+        if not _ar.screen(lib, full, res, sing, bits):
+            return res, sing, True
         rows = _ar.flag_rows(xp, full, res, sing, batch, bits)
         if not bool(rows.any()):
             return res, sing, True

@@ -11,7 +11,7 @@ from typing import Any
 
 from rigidsym.kernels._jacobian import full_batch as _full
 
-__all__ = ["columns", "shape_outputs", "evaluate"]
+__all__ = ["columns", "shape_outputs", "evaluate", "singular_mask"]
 
 
 def columns(arrays: list, args: list[dict]) -> list:
@@ -71,7 +71,7 @@ def _evaluate(xp, variants: tuple, cols: list, stop_gradient: Callable) -> tuple
     like = cols[0]
     if len(variants) == 1:
         outs, dens = variants[0][1](*cols)
-        sing = _singular(xp, dens, like)
+        sing = singular_mask(xp, dens, like)
         return list(outs), sing
     taken, rest = [], None
     for _, _, when in variants[:-1]:
@@ -84,7 +84,7 @@ def _evaluate(xp, variants: tuple, cols: list, stop_gradient: Callable) -> tuple
     for (_, prog, _), hit in zip(reversed(variants), reversed(taken), strict=True):
         safe = [xp.where(hit, c, stop_gradient(c)) for c in cols]
         outs, dens = prog(*safe)
-        s = _singular(xp, dens, like)
+        s = singular_mask(xp, dens, like)
         outs = [_full(xp, v, like) for v in outs]
         if result is None:
             result, sing = outs, s
@@ -94,7 +94,8 @@ def _evaluate(xp, variants: tuple, cols: list, stop_gradient: Callable) -> tuple
     return result, sing
 
 
-def _singular(xp, dens, like):
+def singular_mask(xp, dens, like):
+    """The batch mask of the samples where a denominator is 0 or inf (``like``: a column)."""
     # a denominator that overflowed to inf flags its sample too (issue 37): x / inf = 0 is
     # a finite wrong value; eager calls re-run such samples in long double (_arrays_rescue)
     sing = None

@@ -176,7 +176,7 @@ def _make(space: _arrays.Space, name: str):
         return lambda *xs: space.values(name, xs, _differentiable(xs),
                                         torch.compiler.is_compiling())
     eager, compiled = _function(space, name, True), _function(space, name, False)
-    fast = _plain_apply(eager)
+    fast = _plain_apply(_saving(space, name) if space.progs.vjp(name, "saved") else eager)
 
     def apply(*xs):
         if torch.compiler.is_compiling():
@@ -188,6 +188,33 @@ def _make(space: _arrays.Space, name: str):
         return fast(*xs)
 
     return apply
+
+
+def _saving(space: _arrays.Space, name: str):
+    """The ``torch.autograd.Function`` of eager autograd outside torch.func (issue 38: the
+    backward reuses the forward's common subexpressions): its forward saves the temps the
+    generated VJP would compute again, and its backward takes them, unless a sample is
+    singular (its VJP then runs on the safe point there) or the backward is differentiated
+    (``create_graph=True``: the saved temps carry no graph), when it recomputes as
+    :func:`_function`'s. An old-style ``forward(ctx, ...)``: the temps are saved from
+    inside it; never traced (``apply`` takes it only in eager mode)."""
+    nargs = len(space.progs.meta[name]["args"])
+
+    def forward(ctx, *xs):
+        outs, sing, temps = space.values_saved(name, xs)
+        ctx.save_for_backward(*xs, sing, *temps)
+        ctx.mark_non_differentiable(sing)
+        return (*outs, sing)
+
+    def backward(ctx, *grads):
+        saved = ctx.saved_tensors
+        xs, sing, temps = saved[:nargs], saved[nargs], saved[nargs + 1:]
+        if torch.is_grad_enabled() or not space.regular(name, sing):
+            return tuple(space.vjp(name, xs, list(grads[:-1]), sing))
+        return tuple(space.vjp_saved(name, xs, temps, list(grads[:-1])))
+
+    return type(f"{name}_saving_function", (torch.autograd.Function,),
+                {"forward": staticmethod(forward), "backward": staticmethod(backward)})
 
 
 def _plain_apply(cls):
