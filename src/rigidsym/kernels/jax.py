@@ -96,9 +96,15 @@ def _make(space: _arrays.Space, name: str):
 
     f = jax.custom_jvp(values)
 
+    divides = space.progs.divides(name)
+
     @f.defjvp
     def _jvp(primals, tangents):
-        res = values(*primals)
+        # a kernel that divides: the values on the safe point's inputs in the singular
+        # samples too (NaN there after Space.call's mask), so that the forward temps the JVP
+        # program reads are the values' own, computed once (XLA merges the two), not again
+        # on other inputs (issue 38: the backward reuses the forward's subexpressions)
+        res = space.values(name, primals, divides, _traced(primals))
         # the generated forward-mode program, linear in the tangents (JAX transposes it)
         touts = space.jvp(name, primals, list(tangents), res[-1])
         zero = np.zeros(res[-1].shape, dtype=jax.dtypes.float0)
