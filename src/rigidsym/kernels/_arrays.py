@@ -33,7 +33,13 @@ from rigidsym.kernels._arrays_checks import (
     safe_point,
     validate,
 )
-from rigidsym.kernels._arrays_eval import columns, evaluate, shape_outputs, singular_mask
+from rigidsym.kernels._arrays_eval import (
+    columns,
+    evaluate,
+    nonfinite_rows,
+    shape_outputs,
+    singular_mask,
+)
 from rigidsym.kernels._errors import raise_flagged
 from rigidsym.kernels._jacobian import contract
 from rigidsym.kernels._jacobian import full_batch as _full
@@ -317,11 +323,7 @@ class Space:
             return res[0] if len(res) == 1 else tuple(res)
         # a result that does not fit the dtype, from finite inputs (a NaN input's NaN is
         # its IEEE value, issue 37)
-        over = xp.zeros_like(bad)
-        for r in res:
-            over = over | ~xp.isfinite(r.reshape(batch + (-1,))).all(-1)
-        for x in full:
-            over = over & xp.isfinite(x.reshape(batch + (-1,))).all(-1)
+        over = nonfinite_rows(xp, res, batch) & ~nonfinite_rows(xp, full, batch)
         sing, bad = bad, bad | over
         if on_singular == "raise":
             if bool(bad.any()):  # the error path copies the masks to the host
