@@ -333,3 +333,27 @@ def test_subnormal_inputs_arrays(b, dtype):
     got = back(mod.N_tilde_dot(to(e), to(phi), to(omega)))
     assert np.abs(want).max() > np.finfo(dtype).tiny
     assert np.abs(got - want).max() <= 2.0**-14 * np.abs(want).max(), (got, want)
+
+
+def test_propagates_inf_is_decided_from_the_program():
+    """Issue 38: a traced call leaves inf inputs alone only for a program whose every
+    operation is non-finite wherever an argument is (then its non-finite outputs become
+    NaN); a division (1/inf = 0), a negative power, atan2 or an unknown call refuses it.
+    The generated programs: Rodrigues' formula propagates, the screw axis (which divides)
+    does not; both checked end to end by test_traced_jax_nan_policy_and_overflow and
+    test_compiled_torch_nan_policy."""
+    from rigidsym._config import generated_dir
+    from rigidsym.kernels._arrays_eval import propagates_inf
+
+    def prog(body: str) -> str:
+        return f"import torch\n\n\ndef _main(a, b):\n    x0 = {body}\n    return (x0,), ()\n"
+
+    assert propagates_inf(prog("torch.sin(a)*b + (a*a)**2 - torch.sqrt(b)"))
+    for bad in ("a/b", "1.0/torch.sqrt(a)", "a**(-2)", "a**0.5", "torch.atan2(a, b)",
+                "torch.exp(a)", "torch.where(a > 0, a, b)", "abs(a)"):
+        assert not propagates_inf(prog(bad)), bad
+    gen = generated_dir()
+    for backend in ("torch", "jax"):
+        text = (gen / backend / "rotation_from_natural_invariants.py").read_text()
+        assert propagates_inf(text)
+        assert not propagates_inf((gen / backend / "instant_screw_axis.py").read_text())

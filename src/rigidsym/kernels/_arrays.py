@@ -37,6 +37,7 @@ from rigidsym.kernels._arrays_eval import (
     columns,
     evaluate,
     nonfinite_rows,
+    propagates_inf,
     shape_outputs,
     singular_mask,
 )
@@ -98,7 +99,19 @@ class ArraySpace:
             self._programs["saved", name] = getattr(mod, "SAVED", None)
             # whether its program divides (a folder generated before the flag: assume so)
             self._programs["divides", name] = getattr(mod, "DIVIDES", True)
+            # an inf input can reach a finite output only through a division, a branch or
+            # a function like atan: without them and without a denominator, a traced call
+            # maps its non-finite outputs to NaN instead of its inputs (issue 38)
+            path = self.directory / self.backend / f"{name}.py"
+            self._programs["inf", name] = len(v) == 1 and not getattr(
+                mod, "DIVIDES", True) and propagates_inf(path.read_text(encoding="utf-8"))
         return v
+
+    def propagates_inf(self, name: str) -> bool:
+        """Kernel ``name``'s program is non-finite in every output that reads an inf input
+        (:func:`._arrays_eval.propagates_inf`)."""
+        self.variants(name)
+        return self._programs["inf", name]
 
     def divides(self, name: str) -> bool:
         """Kernel ``name``'s program divides (else no sample is ever singular)."""
@@ -213,7 +226,7 @@ class Space:
         (:func:`._arrays_rescue.finite_columns`)."""
         xp, outs = self.lib.xp, self.progs.meta[name]["outputs"]
         cols = columns(xs, self.progs.meta[name]["args"])
-        if finite:
+        if finite and not self.progs.propagates_inf(name):  # else Space.call's outputs
             cols = _ar.finite_columns(cols)
         flat, sing = evaluate(xp, self.progs.variants(name), cols, self.lib.stop_gradient,
                               self._safe(name) if differentiated else None)
@@ -330,7 +343,11 @@ class Space:
                 raise_flagged(name, meta, lib.host(sing), lib.host(bad & ~sing),
                               [lib.host(lib.detach(x)) for x in xs])
         else:
-            res = [xp.where(bad.reshape(batch + (1,) * (r.ndim - len(batch))), xp.nan, r)
+            # inf inputs kept by a program that propagates them: its non-finite outputs NaN
+            inf = traced and lib.finite_inside() and self.progs.propagates_inf(name)
+            res = [xp.where(bad.reshape(batch + (1,) * (r.ndim - len(batch))) |
+                            xp.isinf(r) if inf else
+                            bad.reshape(batch + (1,) * (r.ndim - len(batch))), xp.nan, r)
                    for r in res]
         return res[0] if len(res) == 1 else tuple(res)
 

@@ -5,13 +5,15 @@ JAX (``xp`` is ``torch`` or ``jax.numpy``)."""
 
 from __future__ import annotations
 
+import ast
 import math
 from collections.abc import Callable
 from typing import Any
 
 from rigidsym.kernels._jacobian import full_batch as _full
 
-__all__ = ["columns", "shape_outputs", "evaluate", "singular_mask", "nonfinite_rows"]
+__all__ = ["columns", "shape_outputs", "evaluate", "singular_mask", "nonfinite_rows",
+           "propagates_inf"]
 
 
 def columns(arrays: list, args: list[dict]) -> list:
@@ -119,3 +121,43 @@ def nonfinite_rows(xp, arrays: list, batch: tuple):
         s = (a.reshape(batch + (-1,)) * 0).sum(-1)
         total = s if total is None else total + s
     return xp.isnan(total)
+
+
+#: the functions of a program that are non-finite wherever their argument is (sin and cos
+#: of inf are NaN, sqrt(inf) = inf, sqrt(-inf) = NaN); JAX's programs call _sin, _cos
+_NONFINITE_IN_OUT = {"sin", "cos", "sqrt", "_sin", "_cos"}
+_NODES = (ast.Module, ast.FunctionDef, ast.arguments, ast.arg, ast.Assign, ast.Return,
+          ast.Tuple, ast.Name, ast.Load, ast.Store, ast.Constant, ast.Add, ast.Sub, ast.Mult,
+          ast.Pow, ast.USub, ast.UAdd, ast.UnaryOp, ast.Attribute)
+
+
+def propagates_inf(source: str) -> bool:
+    """Whether the program ``def _main`` in ``source`` (a generated module's text) is
+    non-finite in every output that reads an inf input, decided from the program (issue 38):
+    it uses only ``+``, ``-``, ``*``, powers with a positive integer exponent and
+    :data:`_NONFINITE_IN_OUT` (each non-finite wherever an argument is: ``inf * 0`` and
+    ``inf - inf`` are NaN), so by induction every value that reads an inf is inf or NaN;
+    nothing maps an inf to a finite value (``1 / inf``, ``atan``, a branch condition). Then
+    mapping the non-finite outputs to NaN is issue 37's rule (an inf input taken as NaN)
+    without touching the inputs."""
+    start = source.find("\ndef _main(")
+    if start < 0:
+        return False
+    end = source.find("\n\n\n", start + 1)
+    tree = ast.parse(source[start:end if end > 0 else None])
+    for node in ast.walk(tree):
+        if isinstance(node, ast.BinOp) and isinstance(node.op, ast.Pow):
+            e = node.right
+            if not (isinstance(e, ast.Constant) and type(e.value) is int and e.value >= 1):
+                return False
+        elif isinstance(node, ast.BinOp):
+            if not isinstance(node.op, ast.Add | ast.Sub | ast.Mult):
+                return False
+        elif isinstance(node, ast.Call):
+            f = node.func
+            name = f.attr if isinstance(f, ast.Attribute) else getattr(f, "id", None)
+            if name not in _NONFINITE_IN_OUT or len(node.args) != 1 or node.keywords:
+                return False
+        elif not isinstance(node, _NODES):
+            return False
+    return True
