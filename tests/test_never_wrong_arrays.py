@@ -202,6 +202,22 @@ def test_issue_case_arrays(b):
         np.testing.assert_allclose(got, want, rtol=1e-15)
 
 
+def traced_nan_policy(b: str, name: str, trace) -> None:
+    """Kernel ``name`` of back-end ``b`` under ``trace`` (``trace(f) -> traced f``, the
+    inputs positional) on :func:`nan_rows`: the NaN positions of the NumPy and C kernels."""
+    mod, to, back = backend(b)
+    call, specs = KERNELS[name]
+    names = [s["name"] for s in specs]
+    x, _ = nan_rows(specs, np.random.default_rng(4))
+    kw = {"check": False} if name == "euler_rate_matrix" else {"check": False,
+                                                                "on_singular": "nan"}
+    f = array_call(mod, name)
+    traced = trace(lambda *a: f(**dict(zip(names, a, strict=True))))
+    got = outs(traced(*[to(x[n]) for n in names]), back)
+    for other, want in numpy_and_c(name, x, **kw).items():
+        assert_agree(got, want, 2.0**-40, (b, other, name))
+
+
 @pytest.mark.parametrize("name", [pytest.param(n, marks=[] if n in QUICK_JAX else
                                                [pytest.mark.slow]) for n in sorted(KERNELS)])
 def test_traced_jax_nan_policy_and_overflow(name):
@@ -212,16 +228,7 @@ def test_traced_jax_nan_policy_and_overflow(name):
     mod, to, back = backend("jax")
     import jax
 
-    call, specs = KERNELS[name]
-    names = [s["name"] for s in specs]
-    x, _ = nan_rows(specs, np.random.default_rng(4))
-    kw = {"check": False} if name == "euler_rate_matrix" else {"check": False,
-                                                                "on_singular": "nan"}
-    f = array_call(mod, name)
-    jitted = jax.jit(lambda *a: f(**dict(zip(names, a, strict=True))))
-    got = outs(jitted(*[to(x[n]) for n in names]), back)
-    for other, want in numpy_and_c(name, x, **kw).items():
-        assert_agree(got, want, 2.0**-40, ("jit", other, name))
+    traced_nan_policy("jax", name, jax.jit)
     if name == "plucker_from_points":
         p1 = np.array([0.3, -0.7, 1.1]) * 1e155
         kappa = back(jax.jit(mod.plucker_from_points)(to(p1), to(2 * p1 + 1e154)))
@@ -236,21 +243,15 @@ def test_compiled_torch_nan_policy(name):
     same NaN positions as C and NumPy for a NaN/inf input. Guards that move: a compiled
     call that skipped both mappings gave IEEE limits (the unit axis [0, 0] of an omega at
     inf)."""
-    mod, to, back = backend("torch")
+    backend("torch")
     import torch
 
-    call, specs = KERNELS[name]
-    names = [s["name"] for s in specs]
-    x, _ = nan_rows(specs, np.random.default_rng(4))
-    kw = {"check": False} if name == "euler_rate_matrix" else {"check": False,
-                                                                "on_singular": "nan"}
-    f = array_call(mod, name)
-    torch._dynamo.reset()  # one code object for every kernel: its recompile limit
-    compiled = torch.compile(lambda *a: f(**dict(zip(names, a, strict=True))),
-                             backend="aot_eager", fullgraph=True)
-    got = outs(compiled(*[to(x[n]).requires_grad_(True) for n in names]), back)
-    for other, want in numpy_and_c(name, x, **kw).items():
-        assert_agree(got, want, 2.0**-40, ("compile", other, name))
+    def compile_with_grad(f):
+        torch._dynamo.reset()  # one code object for every kernel: its recompile limit
+        g = torch.compile(f, backend="aot_eager", fullgraph=True)
+        return lambda *a: g(*[t.requires_grad_(True) for t in a])
+
+    traced_nan_policy("torch", name, compile_with_grad)
 
 
 def test_torch_rescued_row_derivative():
