@@ -14,9 +14,11 @@ whose dispatcher (``rigidsym_dispatch.h``) picks a path at import. Paths: ``x86-
 elsewhere, ``native`` (``-march=native``, one path) on request, never by default.
 
 Flags of the kernels: ``-O3 -std=c99 -ffp-contract=fast`` (FMA contraction, never
-``-ffast-math``; ``RIGIDSYM_CFLAGS`` replaces them). OpenMP (threads of the batch loops) and
-glibc's libmvec (vectorised ``sin``/``cos``) are used when a probe compiles and links with
-them (``RIGIDSYM_OPENMP=0``, ``RIGIDSYM_LIBMVEC=0`` skip them). Objects compile in parallel
+``-ffast-math``; ``RIGIDSYM_CFLAGS`` replaces them). OpenMP (threads of the batch loops) is
+used when a probe compiles and links with it (``RIGIDSYM_OPENMP=0`` skips it). The SIMD
+``sin``/``cos`` are the generated header's own (within 1 ulp, c_common.h.j2); glibc's libmvec
+(within 4 ulp, which takes trig kernels past issue 37's rule) only on request,
+``RIGIDSYM_LIBMVEC=1``, and when its probe links. Objects compile in parallel
 (``RIGIDSYM_BUILD_JOBS``, default the usable cores), or come from the object cache.
 """
 
@@ -178,7 +180,8 @@ def _probe(cc: tuple[str, ...], flags: tuple[str, ...], libs: tuple[str, ...], s
 
 
 def configure(native: bool = False, cc: list[str] | None = None) -> Config:
-    """The build of this machine: compiler, paths, flags, OpenMP and libmvec when they link.
+    """The build of this machine: compiler, paths, flags, OpenMP when it links, libmvec when
+    asked for (``RIGIDSYM_LIBMVEC=1``) and it links.
 
     Raises:
         CompilerNotFound: no C compiler on ``PATH``.
@@ -193,7 +196,7 @@ def configure(native: bool = False, cc: list[str] | None = None) -> Config:
     cmd, flags, paths = tuple(cc), kernel_flags(), default_paths(native)
     base = (*flags, *paths[-1].flags)
     mvec = (sys.platform.startswith("linux") and platform.libc_ver()[0] == "glibc"
-            and os.environ.get("RIGIDSYM_LIBMVEC", "1") != "0"
+            and os.environ.get("RIGIDSYM_LIBMVEC", "0") == "1"
             and _probe(cmd, (*base, *MVEC_FLAGS), ("-lmvec", "-lm"), True))
     omp = (os.environ.get("RIGIDSYM_OPENMP", "1") != "0"
            and _probe(cmd, (*base, *OMP_FLAGS), ("-lm",), False))
