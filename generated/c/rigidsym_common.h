@@ -59,6 +59,13 @@ double cos(double);
 #define RIGIDSYM_VSIN(x) sin(x)
 #define RIGIDSYM_VCOS(x) cos(x)
 #define RIGIDSYM_TRIG_FAR(x) 0
+#elif defined(RIGIDSYM_TRIG_LIBM)
+/* for measurements only (benchmarks/trig_speed.py, through RIGIDSYM_CFLAGS): libm's scalar
+ * sin/cos in the trig loops (within 1 ulp, not vectorised) */
+#define RIGIDSYM_SIMD_COUNT
+#define RIGIDSYM_VSIN(x) sin(x)
+#define RIGIDSYM_VCOS(x) cos(x)
+#define RIGIDSYM_TRIG_FAR(x) 0
 #else
 #define RIGIDSYM_SIMD_COUNT
 #define RIGIDSYM_VSIN(x) rigidsym_sin(x)
