@@ -14,11 +14,11 @@ whose dispatcher (``rigidsym_dispatch.h``) picks a path at import. Paths: ``x86-
 elsewhere, ``native`` (``-march=native``, one path) on request, never by default.
 
 Flags of the kernels: ``-O3 -std=c99 -ffp-contract=fast -fno-math-errno`` (FMA
-contraction, never ``-ffast-math``; ``RIGIDSYM_CFLAGS`` replaces them). OpenMP (threads of the batch loops) is
-used when a probe compiles and links with it (``RIGIDSYM_OPENMP=0`` skips it). The SIMD
-``sin``/``cos`` are the generated header's own (within 1 ulp, c_common.h.j2); glibc's libmvec
-(within 4 ulp, which takes trig kernels past issue 37's rule) only on request,
-``RIGIDSYM_LIBMVEC=1``, and when its probe links. Objects compile in parallel
+contraction, never ``-ffast-math``; ``RIGIDSYM_CFLAGS`` replaces them). OpenMP (threads of
+the batch loops) is used when a probe compiles and links with it (``RIGIDSYM_OPENMP=0``
+skips it). The SIMD ``sin``/``cos`` are the generated header's own (within 1 ulp,
+c_common.h.j2); glibc's libmvec (within 4 ulp, which takes trig kernels past issue 37's
+rule) only on request, ``RIGIDSYM_LIBMVEC=1``, and when its probe links. Objects compile in parallel
 (``RIGIDSYM_BUILD_JOBS``, default the usable cores), or come from the object cache.
 """
 
