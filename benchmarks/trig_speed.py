@@ -1,15 +1,18 @@
-"""Trig kernels with three sin/cos, side by side in one run (issue 37, the C back-end).
+"""C kernels built several ways from the same generated C, side by side in one run (issue 37).
 
-The package's C kernels (the generated header's own vectorised ``rigidsym_sin``/
-``rigidsym_cos``) against the same generated C built twice more into the user cache: with
-glibc's libmvec (``RIGIDSYM_LIBMVEC=1``) and with libm's scalar ``sin``/``cos``
-(``-DRIGIDSYM_TRIG_LIBM`` in ``RIGIDSYM_CFLAGS``), both on the one path the package's module
-runs (``RIGIDSYM_PATHS``: a single path builds in a third of the time). N = 1e6, one thread,
-float64, interleaved rounds, median time and median ratio to libmvec.
+``--trig`` (default): the trig kernels with three sin/cos, the package's (the generated
+header's own vectorised ``rigidsym_sin``/``rigidsym_cos``), glibc's libmvec
+(``RIGIDSYM_LIBMVEC=1``) and libm's scalar ``sin``/``cos`` (``-DRIGIDSYM_TRIG_LIBM``),
+float64, median ms and median ratio to libmvec. ``--f32``: float32 kernels compiled without
+FMA contraction (the package's: ``RIGIDSYM_F32_BEGIN`` in the generated header) against the
+same C contracted (``-DRIGIDSYM_F32_CONTRACT``), and float64 time / float32 time. The other
+builds go into the user cache on the one path the package's module runs
+(``RIGIDSYM_PATHS``: a single path builds in a third of the time). N = 1e6, one thread,
+interleaved rounds.
 
 Usage (from the repository root)::
 
-    python benchmarks/trig_speed.py [--rounds 7] [--n 1000000]
+    python benchmarks/trig_speed.py [--f32] [--rounds 7] [--n 1000000]
 """
 
 from __future__ import annotations
@@ -34,20 +37,23 @@ from rigidsym import kernels as K  # noqa: E402
 from rigidsym._config import generated_dir  # noqa: E402
 from rigidsym.kernels import _build  # noqa: E402
 
-KERNELS = ["rotation_from_natural_invariants", "screw_axis_point", "N_matrix",
-           "euler_angle_rates_zxz_body", "rotation_from_rotation_vector"]
+TRIG = ["rotation_from_natural_invariants", "screw_axis_point", "N_matrix",
+        "euler_angle_rates_zxz_body", "rotation_from_rotation_vector"]
+F32 = ["rotation_from_euler_rodrigues", "instant_screw_axis", "wrench_axis",
+       "newton_euler_wrench", "screw_axis_point"]
 
 
 def variant(tmp: Path, label: str, env: dict[str, str]):
-    """The package's generated directory copied to ``tmp/label`` and loaded (compiled) with
-    ``env`` set."""
+    """The package's generated directory copied to ``tmp/label`` and loaded (compiled on the
+    package's path) with ``env`` set."""
     d = tmp / label
     shutil.copytree(generated_dir(), d, ignore=shutil.ignore_patterns("notebooks", "report"))
+    env = {"RIGIDSYM_PATHS": K.build_info()["path"].removeprefix("x86-64-"), **env}
     old = {k: os.environ.get(k) for k in env}
     os.environ.update(env)
     try:
         ns = K.load(d)
-        ns.batch_function(KERNELS[0], "c", threads=1)     # build now, under env
+        ns.batch_function(TRIG[0], "c", threads=1)     # build now, under env
         return ns
     finally:
         for k, v in old.items():
@@ -57,39 +63,61 @@ def variant(tmp: Path, label: str, env: dict[str, str]):
                 os.environ[k] = v
 
 
+def interleaved(name: str, runs: list, a) -> list[list[float]]:
+    """Seconds of each ``(namespace, dtype)`` of ``runs`` on ``name``'s inputs, ``a.rounds``
+    interleaved rounds after one warm call each."""
+    k = R.kernel_of(name)
+    fs = []
+    for space, dt in runs:
+        arrays = inputs(name, a.n, dt)
+        outs = [np.empty((a.n,) + o.shape, dtype=dt) for o in k.outputs]
+        fs.append(timer(space.batch_function(name, "c", threads=1, dtype=dt), arrays, outs))
+    for f in fs:
+        f()
+    ts: list[list[float]] = [[] for _ in fs]
+    for _ in range(a.rounds):
+        for f, t in zip(fs, ts, strict=True):
+            t.append(f())
+    return ts
+
+
+def ratio(t: list[float], base: list[float]) -> float:
+    return statistics.median(x / y for x, y in zip(t, base, strict=True))
+
+
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--f32", action="store_true", help="float32 with and without contraction")
     ap.add_argument("--rounds", type=int, default=7)
     ap.add_argument("--n", type=int, default=10**6)
     a = ap.parse_args(argv)
     K.use_backend("c")
     path = K.build_info()["path"]
-    suffix = path.removeprefix("x86-64-")
-    flags = " ".join([*_build.KERNEL_FLAGS, "-DRIGIDSYM_TRIG_LIBM"])
     with tempfile.TemporaryDirectory() as tmp:
-        spaces = {"libmvec": variant(Path(tmp), "mvec", {"RIGIDSYM_LIBMVEC": "1",
-                                                          "RIGIDSYM_PATHS": suffix}),
-                  "libm scalar": variant(Path(tmp), "libm", {"RIGIDSYM_CFLAGS": flags,
-                                                              "RIGIDSYM_PATHS": suffix}),
+        if a.f32:
+            fma = variant(Path(tmp), "fma", {"RIGIDSYM_CFLAGS": " ".join(
+                [*_build.KERNEL_FLAGS, "-DRIGIDSYM_F32_CONTRACT"])})
+            print(f"N = {a.n:.0e}, one thread, path {path}, {a.rounds} interleaved rounds, "
+                  "median ms\n\n| kernel | float64 | float32 contracted | float32 "
+                  "fp-contract=off | off / contracted | float64 / float32 off |\n"
+                  "|---|---|---|---|---|---|")
+            for name in F32:
+                ts = interleaved(name, [(K, np.float64), (fma, np.float32),
+                                        (K, np.float32)], a)
+                med = [f"{1e3 * statistics.median(t):.2f}" for t in ts]
+                print(f"| `{name}` | {' | '.join(med)} | {ratio(ts[2], ts[1]):.2f} | "
+                      f"{ratio(ts[0], ts[2]):.2f} |", flush=True)
+            return 0
+        flags = " ".join([*_build.KERNEL_FLAGS, "-DRIGIDSYM_TRIG_LIBM"])
+        spaces = {"libmvec": variant(Path(tmp), "mvec", {"RIGIDSYM_LIBMVEC": "1"}),
+                  "libm scalar": variant(Path(tmp), "libm", {"RIGIDSYM_CFLAGS": flags}),
                   "rigidsym": K}
         print(f"N = {a.n:.0e}, one thread, float64, path {path}, {a.rounds} interleaved "
               "rounds, median ms (ratio to libmvec)\n")
         print("| kernel | " + " | ".join(spaces) + " |\n|---|" + "---|" * len(spaces))
-        for name in KERNELS:
-            k = R.kernel_of(name)
-            arrays = inputs(name, a.n, np.float64)
-            outs = [np.empty((a.n,) + o.shape) for o in k.outputs]
-            fs = [timer(s.batch_function(name, "c", threads=1), arrays, outs)
-                  for s in spaces.values()]
-            for f in fs:
-                f()
-            ts: list[list[float]] = [[] for _ in fs]
-            for _ in range(a.rounds):
-                for f, t in zip(fs, ts, strict=True):
-                    t.append(f())
-            cells = [f"{1e3 * statistics.median(t):.2f} "
-                     f"({statistics.median(x / y for x, y in zip(t, ts[0], strict=True)):.2f})"
-                     for t in ts]
+        for name in TRIG:
+            ts = interleaved(name, [(s, np.float64) for s in spaces.values()], a)
+            cells = [f"{1e3 * statistics.median(t):.2f} ({ratio(t, ts[0]):.2f})" for t in ts]
             print(f"| `{name}` | " + " | ".join(cells) + " |", flush=True)
     return 0
 

@@ -90,6 +90,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_H_matrix_dot_lanes(
 }
 
 
+RIGIDSYM_F32_BEGIN
 static RIGIDSYM_NOINLINE int64_t rigidsym_H_matrix_dot_lanes_f32(
     const float *RIGIDSYM_RESTRICT in_e,
     const float *RIGIDSYM_RESTRICT in_phi,
@@ -139,6 +140,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_H_matrix_dot_lanes_f32(
     return count;
 }
 
+RIGIDSYM_F32_END
 
 static RIGIDSYM_NOINLINE int64_t rigidsym_H_matrix_dot_block(
     int64_t m, int64_t nl,

@@ -96,6 +96,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_H_matrix_dot_with_jacobians_lanes(
 }
 
 
+RIGIDSYM_F32_BEGIN
 static RIGIDSYM_NOINLINE int64_t rigidsym_H_matrix_dot_with_jacobians_lanes_f32(
     const float *RIGIDSYM_RESTRICT in_e,
     const float *RIGIDSYM_RESTRICT in_phi,
@@ -151,6 +152,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_H_matrix_dot_with_jacobians_lanes_f32(
     return count;
 }
 
+RIGIDSYM_F32_END
 
 static RIGIDSYM_NOINLINE int64_t rigidsym_H_matrix_dot_with_jacobians_block(
     int64_t m, int64_t nl,

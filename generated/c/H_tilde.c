@@ -88,6 +88,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_H_tilde_lanes(
 }
 
 
+RIGIDSYM_F32_BEGIN
 static RIGIDSYM_NOINLINE int64_t rigidsym_H_tilde_lanes_f32(
     const float *RIGIDSYM_RESTRICT in_e,
     const float *RIGIDSYM_RESTRICT in_phi,
@@ -135,6 +136,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_H_tilde_lanes_f32(
     return count;
 }
 
+RIGIDSYM_F32_END
 
 static RIGIDSYM_NOINLINE int64_t rigidsym_H_tilde_block(
     int64_t m, int64_t nl,

@@ -100,6 +100,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_euler_angle_rates_yxz_body_lanes(
 }
 
 
+RIGIDSYM_F32_BEGIN
 static RIGIDSYM_NOINLINE int64_t rigidsym_euler_angle_rates_yxz_body_lanes_f32(
     const float *RIGIDSYM_RESTRICT in_angles,
     const float *RIGIDSYM_RESTRICT in_omega,
@@ -159,6 +160,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_euler_angle_rates_yxz_body_lanes_f32(
     return count;
 }
 
+RIGIDSYM_F32_END
 
 static RIGIDSYM_NOINLINE int64_t rigidsym_euler_angle_rates_yxz_body_block(
     int64_t m, int64_t nl,

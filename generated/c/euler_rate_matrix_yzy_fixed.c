@@ -98,6 +98,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_euler_rate_matrix_yzy_fixed_lanes(
 }
 
 
+RIGIDSYM_F32_BEGIN
 static RIGIDSYM_NOINLINE int64_t rigidsym_euler_rate_matrix_yzy_fixed_lanes_f32(
     const float *RIGIDSYM_RESTRICT in_angles,
     float *RIGIDSYM_RESTRICT out_W)
@@ -155,6 +156,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_euler_rate_matrix_yzy_fixed_lanes_f32(
     return count;
 }
 
+RIGIDSYM_F32_END
 
 static RIGIDSYM_NOINLINE int64_t rigidsym_euler_rate_matrix_yzy_fixed_block(
     int64_t m, int64_t nl,

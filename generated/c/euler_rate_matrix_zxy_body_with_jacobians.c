@@ -100,6 +100,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_euler_rate_matrix_zxy_body_with_jacobi
 }
 
 
+RIGIDSYM_F32_BEGIN
 static RIGIDSYM_NOINLINE int64_t rigidsym_euler_rate_matrix_zxy_body_with_jacobians_lanes_f32(
     const float *RIGIDSYM_RESTRICT in_angles,
     float *RIGIDSYM_RESTRICT out_W,
@@ -159,6 +160,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_euler_rate_matrix_zxy_body_with_jacobi
     return count;
 }
 
+RIGIDSYM_F32_END
 
 static RIGIDSYM_NOINLINE int64_t rigidsym_euler_rate_matrix_zxy_body_with_jacobians_block(
     int64_t m, int64_t nl,

@@ -43,7 +43,8 @@ typedef struct {
 
 /* Vectorised sin/cos of the SIMD trig loops (c_kernel.c.j2): RIGIDSYM_VSIN/RIGIDSYM_VCOS.
  * Default: rigidsym_sin/rigidsym_cos below, branch-free C that the compiler vectorises, within
- * 1 ulp (measured 0.78 ulp at most, libm's scalar sin/cos 0.52, libmvec's 3.7:
+ * 1 ulp (measured at most 0.68 ulp with FMA, 0.78 without; libm's scalar sin/cos 0.52,
+ * libmvec's 3.7:
  * benchmarks/RESULTS.md) for |x| <= RIGIDSYM_TRIG_MAX; a lane past it or not finite is flagged
  * by RIGIDSYM_TRIG_FAR and recomputed by libm's scalar sin/cos after the loop, so that no
  * argument gets a worse value than libm's. With RIGIDSYM_LIBMVEC (opt-in: `RIGIDSYM_LIBMVEC=1
@@ -145,7 +146,14 @@ static inline void rigidsym_sincos(double x, double *s_out, double *c_out)
     const double rc = z * (C1 + z * (C2 + z * C3)) + w * w * (C4 + z * (C5 + z * C6));
     const double hz = 0.5 * z;
     const double wc = 1.0 - hz;
+#if defined(__FMA__)
+    /* z's rounding error (exact by fma, an instruction here): it weighed 0.25 ulp in the
+     * cosine near pi/4 (largest error 0.78 -> 0.68 ulp, benchmarks/trig_pair.py) */
+    const double zl = fma(y0, y0, -z);
+    const double kc = wc + (((1.0 - wc) - hz) + (z * rc - (y0 * y1 + 0.5 * zl)));
+#else
     const double kc = wc + (((1.0 - wc) - hz) + (z * rc - y0 * y1));
+#endif
     /* quadrant n mod 4: sin = ks, kc, -ks, -kc and cos = kc, -ks, -kc, ks */
     const uint64_t odd = n & 1;
     const double sv = odd ? kc : ks;
@@ -181,6 +189,20 @@ static inline double rigidsym_cos(double x)
     RIGIDSYM_PRAGMA(omp parallel for schedule(static) num_threads(t) reduction(+:count) if(t > 1))
 #else
 #define RIGIDSYM_PARALLEL_FOR(t)
+#endif
+
+/* The float32 code (sample functions and lanes loops) without FMA contraction: the float32
+ * precision plans (rigidsym.codegen.float32) are measured on a simulation that rounds every
+ * product, and a contracted `a b + c` moved seven plans past issue 37's rule at 1000 points
+ * (tests/test_float32.py). GCC: an optimize pragma around them (the float64 code keeps
+ * -ffp-contract=fast); elsewhere nothing (clang ignores contraction pragmas under
+ * -ffp-contract=fast). */
+#if defined(__GNUC__) && !defined(__clang__) && !defined(RIGIDSYM_F32_CONTRACT)
+#define RIGIDSYM_F32_BEGIN _Pragma("GCC push_options") _Pragma("GCC optimize(\"fp-contract=off\")")
+#define RIGIDSYM_F32_END _Pragma("GCC pop_options")
+#else
+#define RIGIDSYM_F32_BEGIN
+#define RIGIDSYM_F32_END
 #endif
 
 /* The block function of a kernel is compiled once and called for full and padded blocks

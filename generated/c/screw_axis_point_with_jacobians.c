@@ -100,6 +100,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_screw_axis_point_with_jacobians_lanes(
 }
 
 
+RIGIDSYM_F32_BEGIN
 static RIGIDSYM_NOINLINE int64_t rigidsym_screw_axis_point_with_jacobians_lanes_f32(
     const float *RIGIDSYM_RESTRICT in_e,
     const float *RIGIDSYM_RESTRICT in_phi,
@@ -159,6 +160,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_screw_axis_point_with_jacobians_lanes_
     return count;
 }
 
+RIGIDSYM_F32_END
 
 static RIGIDSYM_NOINLINE int64_t rigidsym_screw_axis_point_with_jacobians_block(
     int64_t m, int64_t nl,
