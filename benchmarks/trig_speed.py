@@ -6,9 +6,9 @@ header's own vectorised ``rigidsym_sin``/``rigidsym_cos``), glibc's libmvec
 float64, median ms and median ratio to libmvec. ``--f32``: float32 kernels compiled without
 FMA contraction (the package's: ``RIGIDSYM_F32_BEGIN`` in the generated header) against the
 same C contracted (``-DRIGIDSYM_F32_CONTRACT``), and float64 time / float32 time. The other
-builds go into the user cache on the one path the package's module runs
-(``RIGIDSYM_PATHS``: a single path builds in a third of the time). N = 1e6, one thread,
-interleaved rounds.
+builds go into the user cache: ``--trig`` on the one path the package's module runs its trig
+kernels on (``RIGIDSYM_PATHS``: a single path builds in a third of the time), ``--f32`` on
+all the package's paths. N = 1e6, one thread, interleaved rounds.
 
 Usage (from the repository root)::
 
@@ -95,8 +95,10 @@ def main(argv=None) -> int:
     path = K.build_info()["path"]
     with tempfile.TemporaryDirectory() as tmp:
         if a.f32:
+            # every path of the package's: its kernels without sin/cos run on x86-64-v3
             fma = variant(Path(tmp), "fma", {"RIGIDSYM_CFLAGS": " ".join(
-                [*_build.KERNEL_FLAGS, "-DRIGIDSYM_F32_CONTRACT"])})
+                [*_build.KERNEL_FLAGS, "-DRIGIDSYM_F32_CONTRACT"]), "RIGIDSYM_PATHS": ",".join(
+                    p.removeprefix("x86-64-") for p in K.build_info()["paths"])})
             print(f"N = {a.n:.0e}, one thread, path {path}, {a.rounds} interleaved rounds, "
                   "median ms\n\n| kernel | float64 | float32 contracted | float32 "
                   "fp-contract=off | off / contracted | float64 / float32 off |\n"
