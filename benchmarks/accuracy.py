@@ -140,13 +140,12 @@ def judge(name: str, regime: str, points, dtype, backends, refs=None,
         for b in backends:
             row, c = rows[b], got[b][s]
             flagged = not np.isfinite(c).all()
-            kappa = (scale / np.where(norms > 0, norms, np.inf)).max() if ref is not None \
-                else np.inf
+            kappa = _kappa(scale, norms) if ref is not None else np.inf
             # the mathematics is singular, or the rounding of the input can reach its
-            # singular set (kappa u >= 1/8), or the result overflows the type
-            if ref is None or not np.isfinite(scale).all() or (
-                    flagged and (np.abs(ref).max() > big or kappa >= KAPPA_SINGULAR
-                                 or kappa * u >= 0.125)):
+            # singular set (kappa u >= 1/8), or the result overflows the type; a derivative
+            # past float64 is a condition number past any bound (beyond, never skipped)
+            if ref is None or (flagged and (np.abs(ref).max() > big or kappa >= KAPPA_SINGULAR
+                                            or kappa * u >= 0.125)):
                 row.flagged_expected += flagged or ref is None
                 continue
             if flagged:
@@ -198,6 +197,14 @@ def judge(name: str, regime: str, points, dtype, backends, refs=None,
                     row.kappa = kap
                     row.worst_point = _point(arrays, s)
     return list(rows.values())
+
+
+def _kappa(scale, norms) -> float:
+    """The worst condition number over the outputs (an output that is 0: its absolute
+    scale); inf where a derivative or a norm overflowed float64."""
+    with np.errstate(all="ignore"):
+        k = scale / np.where(norms > 0, norms, np.inf)
+    return float(np.where(np.isnan(k), np.inf, k).max())
 
 
 class _Rounded:
