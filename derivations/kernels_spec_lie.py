@@ -15,8 +15,6 @@ from functools import partial
 import sympy as sp
 
 from rigidsym.codegen.spec import Arg, Branch, Kernel, Out
-from rigidsym.declare import vect
-
 from .kernel_wiring import Q_ARG, _ni_near_pi, _ni_when, formula
 
 __all__ = ["LIE_KERNELS"]
@@ -41,11 +39,9 @@ def _call(out, fn):
 
 
 def _log_small(Q):
-    # theta < pi/4 (tr Q > 1 + sqrt 2): theta = asin(|vect Q|), w = (asin s / s) vect(Q): the
-    # quotient is removable at s = 0 (codegen.removable)
-    v = vect(Q)
-    s = sp.sqrt((v.T * v)[0])
-    return {"w": sp.asin(s) / s * v}
+    # theta < pi/4 (tr Q > 1 + sqrt 2): theta = asin(|vect Q|), no acos; the quotient
+    # asin(s)/s is removable at s = 0 (codegen.removable); verified: sola:log-so3-small
+    return {"w": formula(_LM + "rotation_vector_from_rotation_small")(Q)}
 
 
 def _log_main(Q):
@@ -88,18 +84,9 @@ def _se3_near_pi(T, k):
 
 
 def _se3_small(T):
-    # theta < pi/4: u = vect(R), s = |u| = sin theta, theta = asin s, w = (theta / s) u and
-    # v = J_l(w)^-1 p = p - (theta/s)/2 u x p + c(theta) (theta/s)^2 u x (u x p), where
-    # c(theta) = 1/theta^2 - sin theta / (2 theta (1 - cos theta)) = 1/theta^2 - (1 + cos
-    # theta) / (2 theta sin theta) and cos theta = sqrt(1 - s^2): c (theta/s)^2 = (2 s -
-    # asin(s) (1 + sqrt(1 - s^2))) / (2 s^3), removable at s = 0 (codegen.removable)
-    R, p = T[:3, :3], T[:3, 3]
-    u = vect(R)
-    s = sp.sqrt((u.T * u)[0])
-    a = sp.asin(s) / s
-    g = (2 * s - sp.asin(s) * (1 + sp.sqrt(1 - s**2))) / (2 * s**3)
-    up = u.cross(p)
-    return {"xi": sp.Matrix.vstack(a * u, p - a / 2 * up + g * u.cross(up))}
+    # theta < pi/4: w and v in s = |vect(R)| = sin theta alone (asin, sqrt(1 - s^2), no
+    # acos), removable at s = 0 (codegen.removable); verified: sola:log-se3-small
+    return {"xi": formula(_LM + "exponential_coordinates_from_transform_small")(T)}
 
 
 _SE3_BRANCHES = (*(
@@ -145,7 +132,9 @@ LIE_KERNELS = [
     Kernel(name="rotation_vector_from_rotation", summary="Log of SO(3): the rotation vector "
            "w = phi e of Q, phi in [0, pi].",
            formula="w = (phi / sin phi) vect(Q); asin near 0, the symmetric part near pi",
-           ids=_IDS["so3"], sources=(_LM + "rotation_vector_from_rotation",), args=(Q_ARG,),
+           ids=(*_IDS["so3"], "sola:log-so3-small"),
+           sources=(_LM + "rotation_vector_from_rotation",
+                    _LM + "rotation_vector_from_rotation_small"), args=(Q_ARG,),
            outputs=(Out("w", (3,), "rotation vector [rad]"),), build=_log_main,
            branches=_log_branches(lambda r, kw: r),
            notes="At phi = pi exactly, w and -w are both logarithms; the sign follows "
@@ -181,8 +170,10 @@ LIE_KERNELS = [
            summary="Log of SE(3): the exponential coordinates xi = [w; v] of T, norm of w in "
                    "[0, pi].",
            formula="w = Log(R), v = J_l(w)^-1 p; below pi/4 in s = norm of vect(R) alone "
-                   "(asin, sqrt(1 - s^2)), near pi the symmetric part of R", ids=_IDS["se3"],
-           sources=(_LM + "exponential_coordinates_from_transform",), args=(T_ARG,),
+                   "(asin, sqrt(1 - s^2)), near pi the symmetric part of R",
+           ids=(*_IDS["se3"], "sola:log-se3-small"),
+           sources=(_LM + "exponential_coordinates_from_transform",
+                    _LM + "exponential_coordinates_from_transform_small"), args=(T_ARG,),
            outputs=(Out("xi", (6,), "[w; v]"),),
            build=lambda T: {"xi": formula(_LM + "exponential_coordinates_from_transform")(T)},
            branches=_SE3_BRANCHES,
