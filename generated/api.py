@@ -667,7 +667,7 @@ def exponential_coordinates_from_transform(
 
         w = Log(R), v = J_l(w)^-1 p; below pi/4 in s = norm of vect(R) alone (asin, sqrt(1 - s^2)), near pi the symmetric part of R
 
-    Book: Eq. (sola:exp-se3), (sola:log-exp-se3); composed of rigidsym.derivations.lie_maps.exponential_coordinates_from_transform.
+    Book: Eq. (sola:exp-se3), (sola:log-exp-se3), (sola:log-se3-small); composed of rigidsym.derivations.lie_maps.exponential_coordinates_from_transform, rigidsym.derivations.lie_maps.exponential_coordinates_from_transform_small.
 
     Args:
         T: array-like (..., 4, 4); homogeneous transform [[R, p], [0, 1]] (R a rotation)
@@ -1340,7 +1340,7 @@ def rotation_vector_from_rotation(
 
         w = (phi / sin phi) vect(Q); asin near 0, the symmetric part near pi
 
-    Book: Eq. (sola:exp-so3), (sola:log-exp-so3), (sola:exp-log-so3); composed of rigidsym.derivations.lie_maps.rotation_vector_from_rotation.
+    Book: Eq. (sola:exp-so3), (sola:log-exp-so3), (sola:exp-log-so3), (sola:log-so3-small); composed of rigidsym.derivations.lie_maps.rotation_vector_from_rotation, rigidsym.derivations.lie_maps.rotation_vector_from_rotation_small.
 
     Args:
         Q: array-like (..., 3, 3), proper orthogonal; rotation matrix (proper orthogonal)
