@@ -241,13 +241,16 @@ class _AtInput:
 
 
 def _diff(c, ref, at_input, sl, bound) -> float:
-    """``||c - ref||``; near pi, where ``c`` is the negation of the exact point's output
-    (the rounding of Q flipped the sign of its skew part, which fixes e), the distance to
-    the declared formula at the input the kernel got (its documented sign rule there)."""
+    """``||c - ref||``; for a kernel with branches, where that is past the bound, the
+    distance to the declared formula at the input the kernel got when nearer: near pi the
+    rounding of Q can flip the sign of its skew part, which fixes e (its documented sign
+    rule): the value is the exact point's negated, and a Jacobian kernel's derivative is that
+    of the other logarithm (``d phi e - phi de`` for ``d phi e + phi de``: 1.8 times its
+    norm away, no negation), each exact at the input the kernel got."""
     if not np.isfinite(c).all():
         return np.inf
     d = float(np.linalg.norm(c - ref))
-    if d <= bound or at_input is None or np.linalg.norm(c + ref) > bound:
+    if d <= bound or at_input is None:
         return d
     v = at_input.get()
     return d if v is None else min(d, float(np.linalg.norm(c - v[sl])))

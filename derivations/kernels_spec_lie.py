@@ -16,7 +16,7 @@ import sympy as sp
 
 from rigidsym.codegen.spec import Arg, Branch, Kernel, Out
 
-from .kernel_wiring import Q_ARG, _ni_near_pi, _ni_when, formula
+from .kernel_wiring import Q_ARG, _ni_common, _ni_near_pi, _ni_when, formula
 
 __all__ = ["LIE_KERNELS"]
 
@@ -50,8 +50,14 @@ def _log_main(Q):
 
 
 def _log_near_pi(Q, k):
-    ni = _ni_near_pi(Q, k)
-    return {"w": ni["phi"] * ni["e"]}
+    # the natural invariants' axis e (column k of the symmetric part, signed by vect Q), and
+    # phi = atan2(e . vect Q, cos phi): e . vect Q = sin phi = |vect Q| on SO(3), but its
+    # derivative reads the direction of vect Q from e (well conditioned), where |vect Q|'s
+    # reads it from vect Q / |vect Q|, a vector of size sin phi rounded to u: the Jacobian
+    # kernel was 6.5e10 u off at phi = pi - 3e-15 (the value is the same either way)
+    v, _, c = _ni_common(Q)
+    e = _ni_near_pi(Q, k)["e"]
+    return {"w": sp.atan2((e.T * v)[0], c) * e}
 
 
 def _log_when(Q, k):

@@ -687,9 +687,9 @@ def exponential_coordinates_from_transform(
     Notes:
         T is not validated (its rotation block is read as a rotation).
 
-        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 7 ulp in float64) over 3 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 6 ulp in float64) over 3 regimes (docs/accuracy.md, kernels.accuracy).
 
-        Generated; 651 operations; math hash 37a810a917f4ad77.
+        Generated; 645 operations; math hash 1ba043e69a601155.
     """
     return _F.exponential_coordinates_from_transform(T, out, check, on_singular, threads)
 
@@ -764,7 +764,7 @@ def exponential_coordinates_left_jacobian_inverse(
     Notes:
         Singular set: theta = 2 pi k, k != 0 (theta = norm of w).
 
-        Accuracy: error <= 3.12e+13 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 3.72e+13 ulp in float64) over 3 regimes (docs/accuracy.md, kernels.accuracy); singular when theta = 2 pi k, k != 0 (theta = norm of w).
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 30 ulp in float64) over 3 regimes (docs/accuracy.md, kernels.accuracy); singular when theta = 2 pi k, k != 0 (theta = norm of w).
 
         Generated; 1102 operations; math hash 403a221bb493ca86.
     """
@@ -1360,9 +1360,9 @@ def rotation_vector_from_rotation(
     Notes:
         At phi = pi exactly, w and -w are both logarithms; the sign follows natural_invariants_from_rotation's rule.
 
-        Accuracy: error <= 1.78 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 2 ulp in float64) over 6 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1.63 u (kappa + 1) in float64, <= 1.48 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 3 ulp in float64) over 6 regimes (docs/accuracy.md, kernels.accuracy).
 
-        Generated; 195 operations; math hash 77cc89802f09a40b.
+        Generated; 189 operations; math hash 2e15491416cd7072.
     """
     return _F.rotation_vector_from_rotation(Q, out, check, on_singular, threads)
 
@@ -1437,7 +1437,7 @@ def rotation_vector_left_jacobian_inverse(
     Notes:
         Singular set: theta = 2 pi k, k != 0 (theta = norm of w).
 
-        Accuracy: error <= 1.85e+13 u (kappa + 1) in float64, <= 1.04 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 2.22e+13 ulp in float64) over 4 regimes (docs/accuracy.md, kernels.accuracy); singular when theta = 2 pi k, k != 0 (theta = norm of w).
+        Accuracy: error <= 1.23 u (kappa + 1) in float64, <= 1.04 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 2.21e+06 ulp in float64) over 4 regimes (docs/accuracy.md, kernels.accuracy); singular when theta = 2 pi k, k != 0 (theta = norm of w).
 
         Generated; 32 operations; math hash 2f680f5aa3fbff2f.
     """
@@ -1514,7 +1514,7 @@ def rotation_vector_right_jacobian_inverse(
     Notes:
         Singular set: theta = 2 pi k, k != 0 (theta = norm of w).
 
-        Accuracy: error <= 1.85e+13 u (kappa + 1) in float64, <= 1.04 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 2.22e+13 ulp in float64) over 4 regimes (docs/accuracy.md, kernels.accuracy); singular when theta = 2 pi k, k != 0 (theta = norm of w).
+        Accuracy: error <= 1.23 u (kappa + 1) in float64, <= 1.04 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 2.21e+06 ulp in float64) over 4 regimes (docs/accuracy.md, kernels.accuracy); singular when theta = 2 pi k, k != 0 (theta = norm of w).
 
         Generated; 32 operations; math hash db168e620321154f.
     """

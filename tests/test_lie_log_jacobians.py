@@ -102,6 +102,34 @@ def test_log_jacobians_along_the_manifold(name, backend):
     _check_tangent(name, backend)
 
 
+@pytest.mark.parametrize("backend", ["c", "numpy"])
+def test_log_jacobian_at_a_half_turn(backend):
+    """Closer to pi: Q of the Euler-Rodrigues parameters (e, tau), phi = 2 atan(1/tau), tau
+    down to 0 (a half turn), exact then rounded. Before the near-pi branch read phi from
+    atan2(e . vect Q, cos phi) (not |vect Q|) the derivative was 1.7e4 u off at tau = 1e-12
+    and 6.5e10 u at 1e-15, and NaN at 1e-40."""
+    from flint import fmpq
+
+    from rigidsym.codegen.regimes import q, rotation, unit
+
+    rng = np.random.default_rng(7)
+    fn = _tangent_reference("rotation_vector_from_rotation")
+    for tau in (1e-12, 1e-15, 1e-40, 0.0):
+        e = unit(rng)
+        Q = np.array([float(x) for x in rotation(e, fmpq(1), q(tau))]).reshape(3, 3)
+        with mp.workdps(50):
+            phi = 2 * mp.atan2(1, mp.mpf(tau))
+            w = [phi * mp.mpf(int(x.p)) / int(x.q) for x in e]
+        J = _kernel_jacobian(backend, "rotation_vector_from_rotation", Q)
+        if tau == 0 and np.dot(K.rotation_vector_from_rotation(Q),
+                               [float(x) for x in w]) < 0:
+            w = [-x for x in w]       # at a half turn w and -w are both logarithms
+        with mp.workdps(50):
+            ref = np.array(mp.matrix(fn(*w)).tolist(), dtype=float)
+        got = np.stack([np.tensordot(J, Q @ _cpm(b), axes=2) for b in np.eye(3)], axis=-1)
+        assert np.abs(got - ref).max() <= 8 * U * 2 * np.abs(ref).max(), (backend, tau)
+
+
 @pytest.mark.extra
 @pytest.mark.parametrize("name", NAMES)
 @pytest.mark.parametrize("backend", ["torch", "jax"])

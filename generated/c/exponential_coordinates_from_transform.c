@@ -4,9 +4,9 @@
  * source: rigidsym.derivations.lie_maps.exponential_coordinates_from_transform, rigidsym.derivations.lie_maps.exponential_coordinates_from_transform_small (composed in rigidsym.derivations.kernels_spec)
  * equations: (sola:exp-se3), (sola:log-exp-se3), (sola:log-se3-small)
  * template: c_kernel.c.j2
- * math hash: sha256:37a810a917f4ad77
+ * math hash: sha256:1ba043e69a601155
  * sympy 1.14.0, rigidsym 0.2.0
- * operations: 651
+ * operations: 645
  * branches: near_pi_0, near_pi_1, near_pi_2, small, main
  */
 #include "exponential_coordinates_from_transform.h"

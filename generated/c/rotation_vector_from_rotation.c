@@ -4,9 +4,9 @@
  * source: rigidsym.derivations.lie_maps.rotation_vector_from_rotation, rigidsym.derivations.lie_maps.rotation_vector_from_rotation_small (composed in rigidsym.derivations.kernels_spec)
  * equations: (sola:exp-so3), (sola:log-exp-so3), (sola:exp-log-so3), (sola:log-so3-small)
  * template: c_kernel.c.j2
- * math hash: sha256:77cc89802f09a40b
+ * math hash: sha256:2e15491416cd7072
  * sympy 1.14.0, rigidsym 0.2.0
- * operations: 195
+ * operations: 189
  * branches: near_pi_0, near_pi_1, near_pi_2, small, main
  */
 #include "rotation_vector_from_rotation.h"

@@ -4,9 +4,9 @@
  * source: rigidsym.derivations.lie_maps.rotation_vector_from_rotation, rigidsym.derivations.lie_maps.rotation_vector_from_rotation_small (composed in rigidsym.derivations.kernels_spec)
  * equations: (sola:exp-so3), (sola:log-exp-so3), (sola:exp-log-so3), (sola:log-so3-small)
  * template: c_kernel.h.j2
- * math hash: sha256:77cc89802f09a40b
+ * math hash: sha256:2e15491416cd7072
  * sympy 1.14.0, rigidsym 0.2.0
- * operations: 195
+ * operations: 189
  * branches: near_pi_0, near_pi_1, near_pi_2, small, main
  *
  * Log of SO(3): the rotation vector w = phi e of Q, phi in [0, pi].
@@ -50,42 +50,44 @@ static inline int rigidsym_rotation_vector_from_rotation_sample(
         const double x2 = (0.5)*Q_22;
         const double x3 = x0 - x1 - x2 + 0.5;
         const double x4 = (0.5)*Q_01;
-        const double x5 = (0.5)*Q_10 + x4;
-        const double x6 = (0.5)*Q_02;
-        const double x7 = (0.5)*Q_20;
-        const double x8 = x6 + x7;
-        const double x9 = (x3*x3) + (x5*x5) + (x8*x8);
-        const double x10 = (0.5)*Q_10 - x4;
-        const double x11 = x6 - x7;
-        const double x12 = -0.5*Q_12 + (0.5)*Q_21;
-        const double x13 = ((x10*x8 + x11*x5 + x12*x3 < 0.0) ? (-1.0) : (1.0))*atan2(sqrt((x10*x10) + (x11*x11) + (x12*x12)), x0 + x1 + x2 - 0.5)/sqrt(x9);
-        out_w[0] = x13*x3;
-        out_w[1] = x13*x5;
-        out_w[2] = x13*x8;
-        singular |= (x9) == 0.0;
+        const double x5 = (0.5)*Q_02;
+        const double x6 = (0.5)*Q_20;
+        const double x7 = x5 + x6;
+        const double x8 = x7*((0.5)*Q_10 - x4);
+        const double x9 = (0.5)*Q_10 + x4;
+        const double x10 = (x3*x3) + (x7*x7) + (x9*x9);
+        const double x11 = x9*(x5 - x6);
+        const double x12 = x3*(-0.5*Q_12 + (0.5)*Q_21);
+        const double x13 = ((x11 + x12 + x8 < 0.0) ? (-1.0) : (1.0))/sqrt(x10);
+        const double x14 = x13*atan2(x11*x13 + x12*x13 + x13*x8, x0 + x1 + x2 - 0.5);
+        out_w[0] = x14*x3;
+        out_w[1] = x14*x9;
+        out_w[2] = x14*x7;
+        singular |= (x10) == 0.0;
         /* quantities that can be non-finite for finite inputs (divisions, roots):
          * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
-        const double finite = ((x13 - x13) + ((x9 - x9) + (((x10*x10) + (x11*x11) + (x12*x12)) - ((x10*x10) + (x11*x11) + (x12*x12)))));
+        const double finite = ((x13 - x13) + (x10 - x10));
         singular |= finite != finite;
     } else if (Q_11 >= Q_00 && Q_11 >= Q_22 && Q_00 + Q_11 + Q_22 < 0.0) {
         const double x0 = (0.5)*Q_01;
         const double x1 = (0.5)*Q_10 + x0;
         const double x2 = (0.5)*Q_12;
         const double x3 = (0.5)*Q_21 + x2;
-        const double x4 = (0.5)*Q_00 + (0.5)*Q_22 - 0.5;
-        const double x5 = (0.5)*Q_11 - x4;
-        const double x6 = (x1*x1) + (x3*x3) + (x5*x5);
-        const double x7 = (0.5)*Q_10 - x0;
-        const double x8 = (0.5)*Q_21 - x2;
-        const double x9 = (0.5)*Q_02 - 0.5*Q_20;
-        const double x10 = ((x1*x8 + x3*x7 + x5*x9 < 0.0) ? (-1.0) : (1.0))*atan2(sqrt((x7*x7) + (x8*x8) + (x9*x9)), (0.5)*Q_11 + x4)/sqrt(x6);
-        out_w[0] = x1*x10;
-        out_w[1] = x10*x5;
-        out_w[2] = x10*x3;
-        singular |= (x6) == 0.0;
+        const double x4 = x3*((0.5)*Q_10 - x0);
+        const double x5 = (0.5)*Q_00 + (0.5)*Q_22 - 0.5;
+        const double x6 = (0.5)*Q_11 - x5;
+        const double x7 = (x1*x1) + (x3*x3) + (x6*x6);
+        const double x8 = x1*((0.5)*Q_21 - x2);
+        const double x9 = x6*((0.5)*Q_02 - 0.5*Q_20);
+        const double x10 = ((x4 + x8 + x9 < 0.0) ? (-1.0) : (1.0))/sqrt(x7);
+        const double x11 = x10*atan2(x10*x4 + x10*x8 + x10*x9, (0.5)*Q_11 + x5);
+        out_w[0] = x1*x11;
+        out_w[1] = x11*x6;
+        out_w[2] = x11*x3;
+        singular |= (x7) == 0.0;
         /* quantities that can be non-finite for finite inputs (divisions, roots):
          * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
-        const double finite = ((x10 - x10) + ((x6 - x6) + (((x7*x7) + (x8*x8) + (x9*x9)) - ((x7*x7) + (x8*x8) + (x9*x9)))));
+        const double finite = ((x10 - x10) + (x7 - x7));
         singular |= finite != finite;
     } else if (Q_22 >= Q_00 && Q_22 >= Q_11 && Q_00 + Q_11 + Q_22 < 0.0) {
         const double x0 = (0.5)*Q_02;
@@ -93,20 +95,21 @@ static inline int rigidsym_rotation_vector_from_rotation_sample(
         const double x2 = x0 + x1;
         const double x3 = (0.5)*Q_12;
         const double x4 = (0.5)*Q_21 + x3;
-        const double x5 = (0.5)*Q_00 + (0.5)*Q_11 - 0.5;
-        const double x6 = (0.5)*Q_22 - x5;
-        const double x7 = (x2*x2) + (x4*x4) + (x6*x6);
-        const double x8 = x0 - x1;
-        const double x9 = (0.5)*Q_21 - x3;
-        const double x10 = -0.5*Q_01 + (0.5)*Q_10;
-        const double x11 = ((x10*x6 + x2*x9 + x4*x8 < 0.0) ? (-1.0) : (1.0))*atan2(sqrt((x10*x10) + (x8*x8) + (x9*x9)), (0.5)*Q_22 + x5)/sqrt(x7);
-        out_w[0] = x11*x2;
-        out_w[1] = x11*x4;
-        out_w[2] = x11*x6;
-        singular |= (x7) == 0.0;
+        const double x5 = x4*(x0 - x1);
+        const double x6 = (0.5)*Q_00 + (0.5)*Q_11 - 0.5;
+        const double x7 = (0.5)*Q_22 - x6;
+        const double x8 = (x2*x2) + (x4*x4) + (x7*x7);
+        const double x9 = x2*((0.5)*Q_21 - x3);
+        const double x10 = x7*(-0.5*Q_01 + (0.5)*Q_10);
+        const double x11 = ((x10 + x5 + x9 < 0.0) ? (-1.0) : (1.0))/sqrt(x8);
+        const double x12 = x11*atan2(x10*x11 + x11*x5 + x11*x9, (0.5)*Q_22 + x6);
+        out_w[0] = x12*x2;
+        out_w[1] = x12*x4;
+        out_w[2] = x12*x7;
+        singular |= (x8) == 0.0;
         /* quantities that can be non-finite for finite inputs (divisions, roots):
          * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
-        const double finite = ((x11 - x11) + ((x7 - x7) + (((x10*x10) + (x8*x8) + (x9*x9)) - ((x10*x10) + (x8*x8) + (x9*x9)))));
+        const double finite = ((x11 - x11) + (x8 - x8));
         singular |= finite != finite;
     } else if (Q_00 + Q_11 + Q_22 - 1.0 > 0.0 && ((Q_00 + Q_11 + Q_22 - 1.0)*(Q_00 + Q_11 + Q_22 - 1.0)) > 2.0) {
         const double x0 = (0.5)*Q_01;
@@ -155,38 +158,40 @@ static inline int rigidsym_rotation_vector_from_rotation_sample_f32(
         const float x2 = (0.5f)*Q_22;
         const float x3 = x0 - x1 - x2 + 0.5f;
         const float x4 = (0.5f)*Q_01;
-        const float x5 = (0.5f)*Q_10 + x4;
-        const float x6 = (0.5f)*Q_02;
-        const float x7 = (0.5f)*Q_20;
-        const float x8 = x6 + x7;
-        const float x9 = (x3*x3) + (x5*x5) + (x8*x8);
-        const float x10 = (0.5f)*Q_10 - x4;
-        const float x11 = x6 - x7;
-        const float x12 = -0.5f*Q_12 + (0.5f)*Q_21;
-        const float x13 = ((x10*x8 + x11*x5 + x12*x3 < 0.0f) ? (-1.0f) : (1.0f))*atan2(sqrtf((x10*x10) + (x11*x11) + (x12*x12)), x0 + x1 + x2 - 0.5f)/sqrtf(x9);
-        out_w[0] = x13*x3;
-        out_w[1] = x13*x5;
-        out_w[2] = x13*x8;
-        singular |= (((double)x9)) == 0.0;
-        const double finite = ((x13 - x13) + ((x9 - x9) + (((x10*x10) + (x11*x11) + (x12*x12)) - ((x10*x10) + (x11*x11) + (x12*x12)))));
+        const float x5 = (0.5f)*Q_02;
+        const float x6 = (0.5f)*Q_20;
+        const float x7 = x5 + x6;
+        const float x8 = x7*((0.5f)*Q_10 - x4);
+        const float x9 = (0.5f)*Q_10 + x4;
+        const float x10 = (x3*x3) + (x7*x7) + (x9*x9);
+        const float x11 = x9*(x5 - x6);
+        const float x12 = x3*(-0.5f*Q_12 + (0.5f)*Q_21);
+        const float x13 = ((x11 + x12 + x8 < 0.0f) ? (-1.0f) : (1.0f))/sqrtf(x10);
+        const float x14 = x13*atan2(x11*x13 + x12*x13 + x13*x8, x0 + x1 + x2 - 0.5f);
+        out_w[0] = x14*x3;
+        out_w[1] = x14*x9;
+        out_w[2] = x14*x7;
+        singular |= (((double)x10)) == 0.0;
+        const double finite = ((x13 - x13) + (x10 - x10));
         singular |= finite != finite;
     } else if (((double)Q_11) >= ((double)Q_00) && ((double)Q_11) >= ((double)Q_22) && ((double)Q_00) + ((double)Q_11) + ((double)Q_22) < 0.0) {
         const float x0 = (0.5f)*Q_01;
         const float x1 = (0.5f)*Q_10 + x0;
         const float x2 = (0.5f)*Q_12;
         const float x3 = (0.5f)*Q_21 + x2;
-        const float x4 = (0.5f)*Q_00 + (0.5f)*Q_22 - 0.5f;
-        const float x5 = (0.5f)*Q_11 - x4;
-        const float x6 = (x1*x1) + (x3*x3) + (x5*x5);
-        const float x7 = (0.5f)*Q_10 - x0;
-        const float x8 = (0.5f)*Q_21 - x2;
-        const float x9 = (0.5f)*Q_02 - 0.5f*Q_20;
-        const float x10 = ((x1*x8 + x3*x7 + x5*x9 < 0.0f) ? (-1.0f) : (1.0f))*atan2(sqrtf((x7*x7) + (x8*x8) + (x9*x9)), (0.5f)*Q_11 + x4)/sqrtf(x6);
-        out_w[0] = x1*x10;
-        out_w[1] = x10*x5;
-        out_w[2] = x10*x3;
-        singular |= (((double)x6)) == 0.0;
-        const double finite = ((x10 - x10) + ((x6 - x6) + (((x7*x7) + (x8*x8) + (x9*x9)) - ((x7*x7) + (x8*x8) + (x9*x9)))));
+        const float x4 = x3*((0.5f)*Q_10 - x0);
+        const float x5 = (0.5f)*Q_00 + (0.5f)*Q_22 - 0.5f;
+        const float x6 = (0.5f)*Q_11 - x5;
+        const float x7 = (x1*x1) + (x3*x3) + (x6*x6);
+        const float x8 = x1*((0.5f)*Q_21 - x2);
+        const float x9 = x6*((0.5f)*Q_02 - 0.5f*Q_20);
+        const float x10 = ((x4 + x8 + x9 < 0.0f) ? (-1.0f) : (1.0f))/sqrtf(x7);
+        const float x11 = x10*atan2(x10*x4 + x10*x8 + x10*x9, (0.5f)*Q_11 + x5);
+        out_w[0] = x1*x11;
+        out_w[1] = x11*x6;
+        out_w[2] = x11*x3;
+        singular |= (((double)x7)) == 0.0;
+        const double finite = ((x10 - x10) + (x7 - x7));
         singular |= finite != finite;
     } else if (((double)Q_22) >= ((double)Q_00) && ((double)Q_22) >= ((double)Q_11) && ((double)Q_00) + ((double)Q_11) + ((double)Q_22) < 0.0) {
         const float x0 = (0.5f)*Q_02;
@@ -194,18 +199,19 @@ static inline int rigidsym_rotation_vector_from_rotation_sample_f32(
         const float x2 = x0 + x1;
         const float x3 = (0.5f)*Q_12;
         const float x4 = (0.5f)*Q_21 + x3;
-        const float x5 = (0.5f)*Q_00 + (0.5f)*Q_11 - 0.5f;
-        const float x6 = (0.5f)*Q_22 - x5;
-        const float x7 = (x2*x2) + (x4*x4) + (x6*x6);
-        const float x8 = x0 - x1;
-        const float x9 = (0.5f)*Q_21 - x3;
-        const float x10 = -0.5f*Q_01 + (0.5f)*Q_10;
-        const float x11 = ((x10*x6 + x2*x9 + x4*x8 < 0.0f) ? (-1.0f) : (1.0f))*atan2(sqrtf((x10*x10) + (x8*x8) + (x9*x9)), (0.5f)*Q_22 + x5)/sqrtf(x7);
-        out_w[0] = x11*x2;
-        out_w[1] = x11*x4;
-        out_w[2] = x11*x6;
-        singular |= (((double)x7)) == 0.0;
-        const double finite = ((x11 - x11) + ((x7 - x7) + (((x10*x10) + (x8*x8) + (x9*x9)) - ((x10*x10) + (x8*x8) + (x9*x9)))));
+        const float x5 = x4*(x0 - x1);
+        const float x6 = (0.5f)*Q_00 + (0.5f)*Q_11 - 0.5f;
+        const float x7 = (0.5f)*Q_22 - x6;
+        const float x8 = (x2*x2) + (x4*x4) + (x7*x7);
+        const float x9 = x2*((0.5f)*Q_21 - x3);
+        const float x10 = x7*(-0.5f*Q_01 + (0.5f)*Q_10);
+        const float x11 = ((x10 + x5 + x9 < 0.0f) ? (-1.0f) : (1.0f))/sqrtf(x8);
+        const float x12 = x11*atan2(x10*x11 + x11*x5 + x11*x9, (0.5f)*Q_22 + x6);
+        out_w[0] = x12*x2;
+        out_w[1] = x12*x4;
+        out_w[2] = x12*x7;
+        singular |= (((double)x8)) == 0.0;
+        const double finite = ((x11 - x11) + (x8 - x8));
         singular |= finite != finite;
     } else if (((double)Q_00) + ((double)Q_11) + ((double)Q_22) - 1.0 > 0.0 && ((((double)Q_00) + ((double)Q_11) + ((double)Q_22) - 1.0)*(((double)Q_00) + ((double)Q_11) + ((double)Q_22) - 1.0)) > 2.0) {
         const float x0 = (0.5f)*Q_01;

@@ -3,9 +3,9 @@
 # source: rigidsym.derivations.lie_maps.exponential_coordinates_from_transform, rigidsym.derivations.lie_maps.exponential_coordinates_from_transform_small (composed in rigidsym.derivations.kernels_spec)
 # equations: (sola:exp-se3), (sola:log-exp-se3), (sola:log-se3-small)
 # template: array_kernel.py.j2
-# math hash: sha256:37a810a917f4ad77
+# math hash: sha256:1ba043e69a601155
 # sympy 1.14.0, rigidsym 0.2.0
-# operations: 651
+# operations: 645
 # branches: near_pi_0, near_pi_1, near_pi_2, small, main
 """Log of SE(3): the exponential coordinates xi = [w; v] of T, norm of w in [0, pi].
 
@@ -20,8 +20,8 @@ the checked, differentiable API.
 
 import torch
 
-OPS = 651
-MATH_HASH = "37a810a917f4ad77"
+OPS = 645
+MATH_HASH = "1ba043e69a601155"
 COLUMNS = ("T_00", "T_01", "T_02", "T_03", "T_10", "T_11", "T_12", "T_13", "T_20", "T_21", "T_22", "T_23", "T_30", "T_31", "T_32", "T_33", )
 
 
@@ -31,52 +31,53 @@ def _near_pi_0(T_00, T_01, T_02, T_03, T_10, T_11, T_12, T_13, T_20, T_21, T_22,
     x2 = (0.5)*T_22
     x3 = x0 - x1 - x2 + 0.5
     x4 = (0.5)*T_01
-    x5 = (0.5)*T_10 + x4
-    x6 = (x5*x5)
-    x7 = (0.5)*T_02
-    x8 = (0.5)*T_20
-    x9 = x7 + x8
+    x5 = (0.5)*T_02
+    x6 = (0.5)*T_20
+    x7 = x5 + x6
+    x8 = x7*((0.5)*T_10 - x4)
+    x9 = (0.5)*T_10 + x4
     x10 = (x9*x9)
-    x11 = (x3*x3)
-    x12 = x10 + x11 + x6
-    x13 = (0.5)*T_10 - x4
-    x14 = x7 - x8
-    x15 = -0.5*T_12 + (0.5)*T_21
-    x16 = torch.atan2(torch.sqrt((x13*x13) + (x14*x14) + (x15*x15)), x0 + x1 + x2 - 0.5)
-    x17 = x16*torch.where(torch.lt(x13*x9 + x14*x5 + x15*x3, 0.0), -1.0, 1.0)/torch.sqrt(x12)
-    x18 = x17*x3
-    x19 = x17*x5
-    x20 = x17*x9
-    x21 = (0.5)*x20
-    x22 = 1.0/x12
-    x23 = (x16*x16)
-    x24 = x22*x23
-    x25 = x24*x6
-    x26 = x10*x24
-    x27 = x11*x24
-    x28 = x25 + x26 + x27
-    x29 = torch.sqrt(x28)
-    x30 = 1.0 - torch.cos(x29)
-    x31 = -0.5*torch.sin(x29)/(x29*x30) + 1.0/x28
-    x32 = x24*x3*x31
-    x33 = x32*x5
-    x34 = (0.5)*x19
-    x35 = x25*x31
-    x36 = x26*x31 - 1.0
-    x37 = (0.5)*x18
-    x38 = x24*x31*x5*x9
-    x39 = x27*x31
+    x11 = (x7*x7)
+    x12 = (x3*x3)
+    x13 = x10 + x11 + x12
+    x14 = x9*(x5 - x6)
+    x15 = x3*(-0.5*T_12 + (0.5)*T_21)
+    x16 = torch.where(torch.lt(x14 + x15 + x8, 0.0), -1.0, 1.0)/torch.sqrt(x13)
+    x17 = torch.atan2(x14*x16 + x15*x16 + x16*x8, x0 + x1 + x2 - 0.5)
+    x18 = x16*x17
+    x19 = x18*x3
+    x20 = x18*x9
+    x21 = x18*x7
+    x22 = (0.5)*x21
+    x23 = 1.0/x13
+    x24 = (x17*x17)
+    x25 = x23*x24
+    x26 = x10*x25
+    x27 = x11*x25
+    x28 = x12*x25
+    x29 = x26 + x27 + x28
+    x30 = torch.sqrt(x29)
+    x31 = 1.0 - torch.cos(x30)
+    x32 = -0.5*torch.sin(x30)/(x30*x31) + 1.0/x29
+    x33 = x25*x3*x32
+    x34 = x33*x9
+    x35 = (0.5)*x20
+    x36 = x26*x32
+    x37 = x27*x32 - 1.0
+    x38 = (0.5)*x19
+    x39 = x25*x32*x7*x9
+    x40 = x28*x32
     return (
-        x18,
         x19,
         x20,
-        T_03*(-x35 - x36) + T_13*(x21 + x33) + T_23*(x22*x23*x3*x31*x9 - x34),
-        T_03*(-x21 + x33) + T_13*(-x36 - x39) + T_23*(x37 + x38),
-        T_03*(x32*x9 + x34) + T_13*(-x37 + x38) + T_23*(-x35 - x39 + 1.0),
+        x21,
+        T_03*(-x36 - x37) + T_13*(x22 + x34) + T_23*(x23*x24*x3*x32*x7 - x35),
+        T_03*(-x22 + x34) + T_13*(-x37 - x40) + T_23*(x38 + x39),
+        T_03*(x33*x7 + x35) + T_13*(-x38 + x39) + T_23*(-x36 - x40 + 1.0),
     ), (
-        x30,
-        x28,
-        x12,
+        x31,
+        x29,
+        x13,
     )
 
 
@@ -87,52 +88,53 @@ def _when_near_pi_0(T_00, T_01, T_02, T_03, T_10, T_11, T_12, T_13, T_20, T_21, 
 def _near_pi_1(T_00, T_01, T_02, T_03, T_10, T_11, T_12, T_13, T_20, T_21, T_22, T_23, T_30, T_31, T_32, T_33):
     x0 = (0.5)*T_01
     x1 = (0.5)*T_10 + x0
-    x2 = (x1*x1)
-    x3 = (0.5)*T_12
-    x4 = (0.5)*T_21 + x3
-    x5 = (x4*x4)
-    x6 = (0.5)*T_00 + (0.5)*T_22 - 0.5
-    x7 = (0.5)*T_11 - x6
-    x8 = (x7*x7)
-    x9 = x2 + x5 + x8
-    x10 = (0.5)*T_10 - x0
-    x11 = (0.5)*T_21 - x3
-    x12 = (0.5)*T_02 - 0.5*T_20
-    x13 = torch.atan2(torch.sqrt((x10*x10) + (x11*x11) + (x12*x12)), (0.5)*T_11 + x6)
-    x14 = x13*torch.where(torch.lt(x1*x11 + x10*x4 + x12*x7, 0.0), -1.0, 1.0)/torch.sqrt(x9)
-    x15 = x1*x14
-    x16 = x14*x7
-    x17 = x14*x4
-    x18 = (0.5)*x17
-    x19 = 1.0/x9
-    x20 = (x13*x13)
-    x21 = x19*x20
-    x22 = x2*x21
-    x23 = x21*x5
-    x24 = x21*x8
-    x25 = x22 + x23 + x24
-    x26 = torch.sqrt(x25)
-    x27 = 1.0 - torch.cos(x26)
-    x28 = -0.5*torch.sin(x26)/(x26*x27) + 1.0/x25
-    x29 = x1*x21*x28
-    x30 = x29*x7
-    x31 = (0.5)*x16
-    x32 = x29*x4
-    x33 = x24*x28
-    x34 = x23*x28 - 1.0
-    x35 = (0.5)*x15
-    x36 = x22*x28
+    x2 = (0.5)*T_12
+    x3 = (0.5)*T_21 + x2
+    x4 = x3*((0.5)*T_10 - x0)
+    x5 = (x1*x1)
+    x6 = (x3*x3)
+    x7 = (0.5)*T_00 + (0.5)*T_22 - 0.5
+    x8 = (0.5)*T_11 - x7
+    x9 = (x8*x8)
+    x10 = x5 + x6 + x9
+    x11 = x1*((0.5)*T_21 - x2)
+    x12 = x8*((0.5)*T_02 - 0.5*T_20)
+    x13 = torch.where(torch.lt(x11 + x12 + x4, 0.0), -1.0, 1.0)/torch.sqrt(x10)
+    x14 = torch.atan2(x11*x13 + x12*x13 + x13*x4, (0.5)*T_11 + x7)
+    x15 = x13*x14
+    x16 = x1*x15
+    x17 = x15*x8
+    x18 = x15*x3
+    x19 = (0.5)*x18
+    x20 = 1.0/x10
+    x21 = (x14*x14)
+    x22 = x20*x21
+    x23 = x22*x5
+    x24 = x22*x6
+    x25 = x22*x9
+    x26 = x23 + x24 + x25
+    x27 = torch.sqrt(x26)
+    x28 = 1.0 - torch.cos(x27)
+    x29 = -0.5*torch.sin(x27)/(x27*x28) + 1.0/x26
+    x30 = x1*x22*x29
+    x31 = x30*x8
+    x32 = (0.5)*x17
+    x33 = x3*x30
+    x34 = x25*x29
+    x35 = x24*x29 - 1.0
+    x36 = (0.5)*x16
+    x37 = x23*x29
     return (
-        x15,
         x16,
         x17,
-        T_03*(-x33 - x34) + T_13*(x18 + x30) + T_23*(-x31 + x32),
-        T_03*(-x18 + x30) + T_13*(-x34 - x36) + T_23*(x21*x28*x4*x7 + x35),
-        T_03*(x31 + x32) + T_13*(x19*x20*x28*x4*x7 - x35) + T_23*(-x33 - x36 + 1.0),
+        x18,
+        T_03*(-x34 - x35) + T_13*(x19 + x31) + T_23*(-x32 + x33),
+        T_03*(-x19 + x31) + T_13*(-x35 - x37) + T_23*(x22*x29*x3*x8 + x36),
+        T_03*(x32 + x33) + T_13*(x20*x21*x29*x3*x8 - x36) + T_23*(-x34 - x37 + 1.0),
     ), (
-        x27,
-        x25,
-        x9,
+        x28,
+        x26,
+        x10,
     )
 
 
@@ -144,52 +146,53 @@ def _near_pi_2(T_00, T_01, T_02, T_03, T_10, T_11, T_12, T_13, T_20, T_21, T_22,
     x0 = (0.5)*T_02
     x1 = (0.5)*T_20
     x2 = x0 + x1
-    x3 = (x2*x2)
-    x4 = (0.5)*T_12
-    x5 = (0.5)*T_21 + x4
-    x6 = (x5*x5)
-    x7 = (0.5)*T_00 + (0.5)*T_11 - 0.5
-    x8 = (0.5)*T_22 - x7
-    x9 = (x8*x8)
-    x10 = x3 + x6 + x9
-    x11 = x0 - x1
-    x12 = (0.5)*T_21 - x4
-    x13 = -0.5*T_01 + (0.5)*T_10
-    x14 = torch.atan2(torch.sqrt((x11*x11) + (x12*x12) + (x13*x13)), (0.5)*T_22 + x7)
-    x15 = x14*torch.where(torch.lt(x11*x5 + x12*x2 + x13*x8, 0.0), -1.0, 1.0)/torch.sqrt(x10)
-    x16 = x15*x2
-    x17 = x15*x5
-    x18 = x15*x8
-    x19 = (0.5)*x18
-    x20 = 1.0/x10
-    x21 = (x14*x14)
-    x22 = x20*x21
-    x23 = x22*x3
-    x24 = x22*x6
-    x25 = x22*x9
-    x26 = x23 + x24 + x25
-    x27 = torch.sqrt(x26)
-    x28 = 1.0 - torch.cos(x27)
-    x29 = -0.5*torch.sin(x27)/(x27*x28) + 1.0/x26
-    x30 = x2*x22*x29
-    x31 = x30*x5
-    x32 = (0.5)*x17
-    x33 = x30*x8
-    x34 = x24*x29
-    x35 = x25*x29 - 1.0
-    x36 = (0.5)*x16
-    x37 = x23*x29
+    x3 = (0.5)*T_12
+    x4 = (0.5)*T_21 + x3
+    x5 = x4*(x0 - x1)
+    x6 = (x2*x2)
+    x7 = (x4*x4)
+    x8 = (0.5)*T_00 + (0.5)*T_11 - 0.5
+    x9 = (0.5)*T_22 - x8
+    x10 = (x9*x9)
+    x11 = x10 + x6 + x7
+    x12 = x2*((0.5)*T_21 - x3)
+    x13 = x9*(-0.5*T_01 + (0.5)*T_10)
+    x14 = torch.where(torch.lt(x12 + x13 + x5, 0.0), -1.0, 1.0)/torch.sqrt(x11)
+    x15 = torch.atan2(x12*x14 + x13*x14 + x14*x5, (0.5)*T_22 + x8)
+    x16 = x14*x15
+    x17 = x16*x2
+    x18 = x16*x4
+    x19 = x16*x9
+    x20 = (0.5)*x19
+    x21 = 1.0/x11
+    x22 = (x15*x15)
+    x23 = x21*x22
+    x24 = x23*x6
+    x25 = x23*x7
+    x26 = x10*x23
+    x27 = x24 + x25 + x26
+    x28 = torch.sqrt(x27)
+    x29 = 1.0 - torch.cos(x28)
+    x30 = -0.5*torch.sin(x28)/(x28*x29) + 1.0/x27
+    x31 = x2*x23*x30
+    x32 = x31*x4
+    x33 = (0.5)*x18
+    x34 = x31*x9
+    x35 = x25*x30
+    x36 = x26*x30 - 1.0
+    x37 = (0.5)*x17
+    x38 = x24*x30
     return (
-        x16,
         x17,
         x18,
-        T_03*(-x34 - x35) + T_13*(x19 + x31) + T_23*(-x32 + x33),
-        T_03*(-x19 + x31) + T_13*(-x35 - x37) + T_23*(x22*x29*x5*x8 + x36),
-        T_03*(x32 + x33) + T_13*(x20*x21*x29*x5*x8 - x36) + T_23*(-x34 - x37 + 1.0),
+        x19,
+        T_03*(-x35 - x36) + T_13*(x20 + x32) + T_23*(-x33 + x34),
+        T_03*(-x20 + x32) + T_13*(-x36 - x38) + T_23*(x23*x30*x4*x9 + x37),
+        T_03*(x33 + x34) + T_13*(x21*x22*x30*x4*x9 - x37) + T_23*(-x35 - x38 + 1.0),
     ), (
-        x28,
-        x26,
-        x10,
+        x29,
+        x27,
+        x11,
     )
 
 

@@ -3,9 +3,9 @@
 # source: rigidsym.derivations.lie_maps.rotation_vector_from_rotation, rigidsym.derivations.lie_maps.rotation_vector_from_rotation_small (composed in rigidsym.derivations.kernels_spec)
 # equations: (sola:exp-so3), (sola:log-exp-so3), (sola:exp-log-so3), (sola:log-so3-small)
 # template: array_kernel.py.j2
-# math hash: sha256:77cc89802f09a40b
+# math hash: sha256:2e15491416cd7072
 # sympy 1.14.0, rigidsym 0.2.0
-# operations: 195
+# operations: 189
 # branches: near_pi_0, near_pi_1, near_pi_2, small, main
 """Log of SO(3): the rotation vector w = phi e of Q, phi in [0, pi].
 
@@ -20,8 +20,8 @@ the checked, differentiable API.
 
 import torch
 
-OPS = 195
-MATH_HASH = "77cc89802f09a40b"
+OPS = 189
+MATH_HASH = "2e15491416cd7072"
 COLUMNS = ("Q_00", "Q_01", "Q_02", "Q_10", "Q_11", "Q_12", "Q_20", "Q_21", "Q_22", )
 
 
@@ -31,21 +31,22 @@ def _near_pi_0(Q_00, Q_01, Q_02, Q_10, Q_11, Q_12, Q_20, Q_21, Q_22):
     x2 = (0.5)*Q_22
     x3 = x0 - x1 - x2 + 0.5
     x4 = (0.5)*Q_01
-    x5 = (0.5)*Q_10 + x4
-    x6 = (0.5)*Q_02
-    x7 = (0.5)*Q_20
-    x8 = x6 + x7
-    x9 = (x3*x3) + (x5*x5) + (x8*x8)
-    x10 = (0.5)*Q_10 - x4
-    x11 = x6 - x7
-    x12 = -0.5*Q_12 + (0.5)*Q_21
-    x13 = torch.where(torch.lt(x10*x8 + x11*x5 + x12*x3, 0.0), -1.0, 1.0)*torch.atan2(torch.sqrt((x10*x10) + (x11*x11) + (x12*x12)), x0 + x1 + x2 - 0.5)/torch.sqrt(x9)
+    x5 = (0.5)*Q_02
+    x6 = (0.5)*Q_20
+    x7 = x5 + x6
+    x8 = x7*((0.5)*Q_10 - x4)
+    x9 = (0.5)*Q_10 + x4
+    x10 = (x3*x3) + (x7*x7) + (x9*x9)
+    x11 = x9*(x5 - x6)
+    x12 = x3*(-0.5*Q_12 + (0.5)*Q_21)
+    x13 = torch.where(torch.lt(x11 + x12 + x8, 0.0), -1.0, 1.0)/torch.sqrt(x10)
+    x14 = x13*torch.atan2(x11*x13 + x12*x13 + x13*x8, x0 + x1 + x2 - 0.5)
     return (
-        x13*x3,
-        x13*x5,
-        x13*x8,
+        x14*x3,
+        x14*x9,
+        x14*x7,
     ), (
-        x9,
+        x10,
     )
 
 
@@ -58,19 +59,20 @@ def _near_pi_1(Q_00, Q_01, Q_02, Q_10, Q_11, Q_12, Q_20, Q_21, Q_22):
     x1 = (0.5)*Q_10 + x0
     x2 = (0.5)*Q_12
     x3 = (0.5)*Q_21 + x2
-    x4 = (0.5)*Q_00 + (0.5)*Q_22 - 0.5
-    x5 = (0.5)*Q_11 - x4
-    x6 = (x1*x1) + (x3*x3) + (x5*x5)
-    x7 = (0.5)*Q_10 - x0
-    x8 = (0.5)*Q_21 - x2
-    x9 = (0.5)*Q_02 - 0.5*Q_20
-    x10 = torch.where(torch.lt(x1*x8 + x3*x7 + x5*x9, 0.0), -1.0, 1.0)*torch.atan2(torch.sqrt((x7*x7) + (x8*x8) + (x9*x9)), (0.5)*Q_11 + x4)/torch.sqrt(x6)
+    x4 = x3*((0.5)*Q_10 - x0)
+    x5 = (0.5)*Q_00 + (0.5)*Q_22 - 0.5
+    x6 = (0.5)*Q_11 - x5
+    x7 = (x1*x1) + (x3*x3) + (x6*x6)
+    x8 = x1*((0.5)*Q_21 - x2)
+    x9 = x6*((0.5)*Q_02 - 0.5*Q_20)
+    x10 = torch.where(torch.lt(x4 + x8 + x9, 0.0), -1.0, 1.0)/torch.sqrt(x7)
+    x11 = x10*torch.atan2(x10*x4 + x10*x8 + x10*x9, (0.5)*Q_11 + x5)
     return (
-        x1*x10,
-        x10*x5,
-        x10*x3,
+        x1*x11,
+        x11*x6,
+        x11*x3,
     ), (
-        x6,
+        x7,
     )
 
 
@@ -84,19 +86,20 @@ def _near_pi_2(Q_00, Q_01, Q_02, Q_10, Q_11, Q_12, Q_20, Q_21, Q_22):
     x2 = x0 + x1
     x3 = (0.5)*Q_12
     x4 = (0.5)*Q_21 + x3
-    x5 = (0.5)*Q_00 + (0.5)*Q_11 - 0.5
-    x6 = (0.5)*Q_22 - x5
-    x7 = (x2*x2) + (x4*x4) + (x6*x6)
-    x8 = x0 - x1
-    x9 = (0.5)*Q_21 - x3
-    x10 = -0.5*Q_01 + (0.5)*Q_10
-    x11 = torch.where(torch.lt(x10*x6 + x2*x9 + x4*x8, 0.0), -1.0, 1.0)*torch.atan2(torch.sqrt((x10*x10) + (x8*x8) + (x9*x9)), (0.5)*Q_22 + x5)/torch.sqrt(x7)
+    x5 = x4*(x0 - x1)
+    x6 = (0.5)*Q_00 + (0.5)*Q_11 - 0.5
+    x7 = (0.5)*Q_22 - x6
+    x8 = (x2*x2) + (x4*x4) + (x7*x7)
+    x9 = x2*((0.5)*Q_21 - x3)
+    x10 = x7*(-0.5*Q_01 + (0.5)*Q_10)
+    x11 = torch.where(torch.lt(x10 + x5 + x9, 0.0), -1.0, 1.0)/torch.sqrt(x8)
+    x12 = x11*torch.atan2(x10*x11 + x11*x5 + x11*x9, (0.5)*Q_22 + x6)
     return (
-        x11*x2,
-        x11*x4,
-        x11*x6,
+        x12*x2,
+        x12*x4,
+        x12*x7,
     ), (
-        x7,
+        x8,
     )
 
 
