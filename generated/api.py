@@ -764,7 +764,7 @@ def exponential_coordinates_left_jacobian_inverse(
     Notes:
         Singular set: theta = 2 pi k, k != 0 (theta = norm of w).
 
-        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 30 ulp in float64) over 3 regimes (docs/accuracy.md, kernels.accuracy); singular when theta = 2 pi k, k != 0 (theta = norm of w).
+        Accuracy: error <= 1.4 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 143 ulp in float64) over 3 regimes (docs/accuracy.md, kernels.accuracy); singular when theta = 2 pi k, k != 0 (theta = norm of w).
 
         Generated; 1102 operations; math hash 403a221bb493ca86.
     """
