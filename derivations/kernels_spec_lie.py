@@ -185,9 +185,9 @@ LIE_KERNELS = [
            build=lambda T: {"xi": formula(_LM + "exponential_coordinates_from_transform")(T)},
            branches=_SE3_BRANCHES,
            notes="T is not validated (its rotation block is read as a rotation).",
-           # its Jacobian kernel (6 x 16, five branches) compiled in 516 s to 6255
-           # operations (the small branch 2427) where the whole generation takes 1-3 min:
-           # none yet (open, issue 38 item 2)
+           # its Jacobian kernel (6 x 16, five branches) compiles in 516 s to 5331
+           # operations (each near-pi branch ~1080, the small one 1503) where the whole
+           # generation takes about 2 min: none yet (open, issue 38 item 2)
            branch_jacobian=False),
     Kernel(name="euler_rodrigues_from_rotation",
            summary="The Euler-Rodrigues parameters eta = [r; r0] of Q, r0 >= 0.",
