@@ -241,12 +241,13 @@ class _AtInput:
 
 
 def _diff(c, ref, at_input, sl, bound) -> float:
-    """``||c - ref||``; for a kernel with branches, where that is past the bound, the
-    distance to the declared formula at the input the kernel got when nearer: near pi the
-    rounding of Q can flip the sign of its skew part, which fixes e (its documented sign
-    rule): the value is the exact point's negated, and a Jacobian kernel's derivative is that
-    of the other logarithm (``d phi e - phi de`` for ``d phi e + phi de``: 1.8 times its
-    norm away, no negation), each exact at the input the kernel got."""
+    """``||c - ref||``; where that is past ``bound`` in a kernel with branches, at most the
+    distance to the declared formula at the input the kernel got. Near pi the rounding of
+    Q (or of a transform's R) can flip the sign of its skew part, which fixes e: the exact
+    point's output is then -w (the log of SO(3)), or [-w; J_l(-w)^-1 p] (the log of SE(3),
+    not the negation of [w; v]), a jump that no derivative (kappa) sees; the kernel is
+    judged by its documented sign rule at its own input there (a Jacobian kernel's derivative
+    is then that of the other logarithm, ``d phi e - phi de`` for ``d phi e + phi de``)."""
     if not np.isfinite(c).all():
         return np.inf
     d = float(np.linalg.norm(c - ref))

@@ -30,7 +30,7 @@ _IDS = {"so3": ("sola:exp-so3", "sola:log-exp-so3", "sola:exp-log-so3"),
         "quat": ("sola:quat-of-rotation", "sola:quat-product")}
 W = Arg("w", (3,), "any", "rotation vector w = phi e [rad]")
 XI = Arg("xi", (6,), "any", "exponential coordinates [w; v] ([rad]; [m])")
-T_ARG = Arg("T", (4, 4), "any", "homogeneous transform [[R, p], [0, 1]] (R a rotation)")
+T_ARG = Arg("T", (4, 4), "transform", "homogeneous transform [[R, p], [0, 1]] (R a rotation)")
 
 
 def _call(out, fn):

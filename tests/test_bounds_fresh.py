@@ -88,9 +88,9 @@ def test_docstrings_state_the_json_bounds():
             assert f"<= {_stated(name, dt):.3g} u (kappa + 1) in {dt}" in doc, name
 
 
-#: open (issue 37, tests/test_accuracy.py's RANGE_DEFECTS): a spurious NaN at inputs 1e-160
-_OPEN = {"exponential_coordinates_from_transform": "NaN where the result is finite "
-                                                   "(inputs 1e-160), open"}
+#: open rows (issue 37): none. The log of SE(3)'s NaN "at inputs 1e-160" was the harness
+#: feeding it 4 x 4 matrices that are no transform (now the "transform" argument kind)
+_OPEN: dict[str, str] = {}
 
 
 @pytest.mark.slow

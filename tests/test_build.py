@@ -409,7 +409,7 @@ def test_object_cache_off_and_its_folder():
 
 
 def test_the_avx512_path_compiles_only_the_kernels_calling_sin_or_cos(tmp_path):
-    """x86-64-v4 buys libmvec's 8-wide sin/cos and nothing else (benchmarks/RESULTS.md):
+    """x86-64-v4 buys 8-wide sin/cos and nothing else (benchmarks/RESULTS.md):
     the other kernels' v4 entries alias their x86-64-v3 functions at link time."""
     from rigidsym.kernels import _paths
 

@@ -102,12 +102,12 @@ def _rule_ratio(name, arrays, got, ref):
 
 
 #: Open (issue 37): C float32 rows past the rule at this test's points, each held to its
-#: measured ratio. The plans meet the rule at the planner's points, simulated without FMA;
-#: the C build contracts a b + c into fma (x86-64-v3, -v4), which moves a few outputs past
-#: max(2 e_ref, 4 u) (instant_screw_axis's plan is the textbook's program itself). Before
-#: issue 37 these rows passed a looser measure (2 ulp of the largest output, not per output).
-OPEN_C = {"instant_screw_axis": 1.3, "point_acceleration": 1.3, "wrench_axis": 1.4,
-          "euler_angle_rates_xzx_fixed": 1.4}
+#: measured ratio (+10 %). The plans meet the rule at the planner's points; the C float32 code
+#: is compiled without FMA contraction as the planner simulates it (RIGIDSYM_F32_BEGIN; with
+#: contraction instant_screw_axis 1.3, point_acceleration 1.3, wrench_axis 1.4 were open
+#: here, euler_angle_rates_xzx_fixed 1.25 -> 1.01). Before issue 37 these rows passed a
+#: looser measure (2 ulp of the largest output, not per output).
+OPEN_C = {"euler_angle_rates_xzx_fixed": 1.1}
 
 
 @pytest.mark.parametrize("name", PUBLIC + EULER)
@@ -140,14 +140,14 @@ def test_float32_error_bound_1000_points(name):
     assert r.max() <= limit, f"{name}: {r.max():.3g} of the rule"
 
 
-#: Open (issue 37 item 6), measured at the end of the session that set the rule: at 1000
-#: points the compiled float32 plans (fma-contracted, see OPEN_C) pass max(2 e_ref, 4 u) by
-#: these factors; each is held to its measured ratio (+10 %) until the planner simulates the
-#: contraction. Before issue 37 the measure was 1 ulp of the float64 program, normwise.
-OPEN_C_1000 = {"L_tilde_dot": 1.2, "exponential_coordinates_left_jacobian_inverse": 1.2,
-               "instant_screw_axis": 3.9, "exponential_coordinates_left_jacobian": 1.5,
-               "moving_frame_acceleration": 1.85, "screw_axis_point": 1.65,
-               "wrench_axis": 4.5}
+#: Open (issue 37 item 6): at 1000 points these float32 plans pass max(2 e_ref, 4 u) by
+#: these factors (measured +10 %), the planner's points not covering them; each is held to it.
+#: Compiled with FMA contraction seven were open (instant_screw_axis 3.9, wrench_axis 4.5,
+#: moving_frame_acceleration 1.85, now within 1); without it (RIGIDSYM_F32_BEGIN) four, and
+#: screw_axis_point measured 1.69 against its contracted limit 1.65. Before issue 37 the
+#: measure was 1 ulp of the float64 program, normwise.
+OPEN_C_1000 = {"L_tilde_dot": 1.2, "exponential_coordinates_left_jacobian_inverse": 1.25,
+               "exponential_coordinates_left_jacobian": 1.5, "screw_axis_point": 1.85}
 
 
 def test_dtype_rules_nep50(backend):

@@ -31,6 +31,15 @@ def _generated():
     return generate()
 
 
+def test_loadgroup_keeps_this_module_on_one_worker(request):
+    """--dist loadgroup marks a grouped test's node id with its group; when it does not
+    (pytest 9.2 with pytest-xdist 3.8, pytest-xdist#1386) every worker that runs a test of
+    this module pays for its own generation."""
+    if not getattr(request.config.option, "loadgroup", False):
+        pytest.skip("not under pytest-xdist's --dist loadgroup")
+    assert request.node.nodeid.endswith("@generated_fresh"), request.node.nodeid
+
+
 def test_generated_is_fresh():
     res = _generated()
     diff = check(res)

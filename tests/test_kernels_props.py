@@ -71,6 +71,11 @@ def valid(spec: dict, batch: tuple, rng) -> np.ndarray:
         e = rng.standard_normal(tuple(batch) + (3,))
         e /= np.linalg.norm(e, axis=-1, keepdims=True)
         return K.rotation_from_natural_invariants(e, rng.uniform(0.05, 3.0, tuple(batch)))
+    if spec["kind"] == "transform":   # [[R, p], [0, 1]]: the log of SE(3) reads only these
+        T = np.zeros(tuple(batch) + (4, 4))
+        T[..., :3, :3] = valid(dict(spec, kind="rotation"), batch, rng)
+        T[..., :3, 3], T[..., 3, 3] = rng.standard_normal(tuple(batch) + (3,)), 1.0
+        return T
     if spec["name"] == "angles":       # Euler angles: away from gimbal lock
         return rng.uniform(0.2, 1.3, shape)
     return rng.standard_normal(shape)

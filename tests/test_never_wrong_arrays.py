@@ -202,6 +202,22 @@ def test_issue_case_arrays(b):
         np.testing.assert_allclose(got, want, rtol=1e-15)
 
 
+def traced_nan_policy(b: str, name: str, trace) -> None:
+    """Kernel ``name`` of back-end ``b`` under ``trace`` (``trace(f) -> traced f``, the
+    inputs positional) on :func:`nan_rows`: the NaN positions of the NumPy and C kernels."""
+    mod, to, back = backend(b)
+    call, specs = KERNELS[name]
+    names = [s["name"] for s in specs]
+    x, _ = nan_rows(specs, np.random.default_rng(4))
+    kw = {"check": False} if name == "euler_rate_matrix" else {"check": False,
+                                                                "on_singular": "nan"}
+    f = array_call(mod, name)
+    traced = trace(lambda *a: f(**dict(zip(names, a, strict=True))))
+    got = outs(traced(*[to(x[n]) for n in names]), back)
+    for other, want in numpy_and_c(name, x, **kw).items():
+        assert_agree(got, want, 2.0**-40, (b, other, name))
+
+
 @pytest.mark.parametrize("name", [pytest.param(n, marks=[] if n in QUICK_JAX else
                                                [pytest.mark.slow]) for n in sorted(KERNELS)])
 def test_traced_jax_nan_policy_and_overflow(name):
@@ -212,20 +228,30 @@ def test_traced_jax_nan_policy_and_overflow(name):
     mod, to, back = backend("jax")
     import jax
 
-    call, specs = KERNELS[name]
-    names = [s["name"] for s in specs]
-    x, _ = nan_rows(specs, np.random.default_rng(4))
-    kw = {"check": False} if name == "euler_rate_matrix" else {"check": False,
-                                                                "on_singular": "nan"}
-    f = array_call(mod, name)
-    jitted = jax.jit(lambda *a: f(**dict(zip(names, a, strict=True))))
-    got = outs(jitted(*[to(x[n]) for n in names]), back)
-    for other, want in numpy_and_c(name, x, **kw).items():
-        assert_agree(got, want, 2.0**-40, ("jit", other, name))
+    traced_nan_policy("jax", name, jax.jit)
     if name == "plucker_from_points":
         p1 = np.array([0.3, -0.7, 1.1]) * 1e155
         kappa = back(jax.jit(mod.plucker_from_points)(to(p1), to(2 * p1 + 1e154)))
         assert np.isnan(kappa).all(), kappa
+
+
+@pytest.mark.slow  # a compile a kernel: 9 s for the first, 3-4 s each after
+@pytest.mark.parametrize("name", sorted(KERNELS))
+def test_compiled_torch_nan_policy(name):
+    """Under torch.compile (no host reads, so no rescue; an inf input taken as NaN inside
+    the compiled kernel's function since issue 38, not by a ``where`` on every input): the
+    same NaN positions as C and NumPy for a NaN/inf input. Guards that move: a compiled
+    call that skipped both mappings gave IEEE limits (the unit axis [0, 0] of an omega at
+    inf)."""
+    backend("torch")
+    import torch
+
+    def compile_with_grad(f):
+        torch._dynamo.reset()  # one code object for every kernel: its recompile limit
+        g = torch.compile(f, backend="aot_eager", fullgraph=True)
+        return lambda *a: g(*[t.requires_grad_(True) for t in a])
+
+    traced_nan_policy("torch", name, compile_with_grad)
 
 
 def test_torch_rescued_row_derivative():
@@ -308,3 +334,27 @@ def test_subnormal_inputs_arrays(b, dtype):
     got = back(mod.N_tilde_dot(to(e), to(phi), to(omega)))
     assert np.abs(want).max() > np.finfo(dtype).tiny
     assert np.abs(got - want).max() <= 2.0**-14 * np.abs(want).max(), (got, want)
+
+
+def test_propagates_inf_is_decided_from_the_program():
+    """Issue 38: a traced call leaves inf inputs alone only for a program whose every
+    operation is non-finite wherever an argument is (then its non-finite outputs become
+    NaN); a division (1/inf = 0), a negative power, atan2 or an unknown call refuses it.
+    The generated programs: Rodrigues' formula propagates, the screw axis (which divides)
+    does not; both checked end to end by test_traced_jax_nan_policy_and_overflow and
+    test_compiled_torch_nan_policy."""
+    from rigidsym._config import generated_dir
+    from rigidsym.kernels._arrays_eval import propagates_inf
+
+    def prog(body: str) -> str:
+        return f"import torch\n\n\ndef _main(a, b):\n    x0 = {body}\n    return (x0,), ()\n"
+
+    assert propagates_inf(prog("torch.sin(a)*b + (a*a)**2 - torch.sqrt(b)"))
+    for bad in ("a/b", "1.0/torch.sqrt(a)", "a**(-2)", "a**0.5", "torch.atan2(a, b)",
+                "torch.exp(a)", "torch.where(a > 0, a, b)", "abs(a)"):
+        assert not propagates_inf(prog(bad)), bad
+    gen = generated_dir()
+    for backend in ("torch", "jax"):
+        text = (gen / backend / "rotation_from_natural_invariants.py").read_text()
+        assert propagates_inf(text)
+        assert not propagates_inf((gen / backend / "instant_screw_axis.py").read_text())

@@ -80,6 +80,8 @@ def regime_batch(draw, name: str, dtype) -> dict:
             elif s["name"] in EXPONENTIAL:
                 if draw(st.booleans()):
                     v *= np.ldexp(1.0, draw(st.integers(-emax - sub, 4)))
+            elif s["kind"] == "transform" and draw(st.booleans()):    # its translation
+                v[[3, 7, 11]] *= np.ldexp(1.0, draw(st.integers(-emax - sub, emax)))
             elif s["kind"] == "any" and s["name"] not in FIXED and draw(st.booleans()):
                 v *= np.ldexp(1.0, draw(st.integers(-emax - sub, emax)))
         if draw(st.integers(0, 5)) == 0:     # a NaN or inf in one component

@@ -321,3 +321,33 @@ def test_inside_a_module_with_its_own_parameters():
     a = torch.tensor(sample("instant_screw_axis", 5)[1])
     m(a, a).pow(2).sum().backward()
     assert m.omega.grad.shape == (3,) and torch.isfinite(m.omega.grad).all()
+
+
+def test_backward_reuses_the_forward_temps():
+    """Issue 38 item 4: the eager backward takes the temps of the forward that the
+    generated VJP reads (saved by autograd) instead of computing them again. Old main's
+    backward of Rodrigues' formula computed the sine of phi / 2 again (one aten::sin,
+    two aten::cos); now none (one cosine: a subexpression the forward does not name). The
+    gradient is that of the recomputing path (``create_graph=True``) bit for bit, and a
+    singular sample in the batch still takes the recomputing path (zero gradient there)."""
+    from torch.profiler import ProfilerActivity, profile
+
+    rng = np.random.default_rng(3)
+    e = rng.standard_normal((64, 3))
+    e /= np.linalg.norm(e, axis=1, keepdims=True)
+    e, phi = _t([e, rng.uniform(0.3, 2.8, 64)], grad=True)
+    R = rk.rotation_from_natural_invariants(e, phi, check=False)
+    w = torch.tensor(rng.standard_normal((64, 3, 3)))
+    with profile(activities=[ProfilerActivity.CPU]) as prof:
+        ge, gp = torch.autograd.grad((R * w).sum(), (e, phi))
+    ops = {k.key: k.count for k in prof.key_averages()}
+    assert ops.get("aten::sin", 0) == 0 and ops.get("aten::cos", 0) == 1, ops
+    R = rk.rotation_from_natural_invariants(e, phi, check=False)
+    re, rp = torch.autograd.grad((R * w).sum(), (e, phi), create_graph=True)
+    assert torch.equal(ge, re.detach()) and torch.equal(gp, rp.detach())
+    omega, a, a_dot = _t([rng.standard_normal((4, 3)) for _ in range(3)], grad=True)
+    with torch.no_grad():
+        omega[2] = 0.0  # singular: the pitch is NaN there
+    p0, pitch, kappa = rk.instant_screw_axis(omega, a, a_dot, check=False, on_singular="nan")
+    pitch[[0, 1, 3]].sum().backward()
+    assert (omega.grad[2] == 0).all() and omega.grad.isfinite().all()

@@ -57,13 +57,28 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_H_tilde_dot_with_jacobians_lanes(
         col_phi[j] = in_phi[1 * j + 0];
     }
     /* a SIMD loop evaluates the sin/cos values into local arrays, then a per-sample loop
-     * reads them */
-    RIGIDSYM_SIMD
+     * reads them; a lane whose argument is past RIGIDSYM_TRIG_MAX or not finite gets libm's
+     * scalar sin/cos in between (rare: the arguments are angles) */
+    int64_t far = 0;
+    RIGIDSYM_SIMD_FAR
     for (int64_t j = 0; j < RIGIDSYM_LANES_TRIG; ++j) {
         const double phi = col_phi[j];
         const double x0 = (0.5)*phi;
-        trig_0[j] = sin(x0);
-        trig_1[j] = cos(x0);
+
+        trig_0[j] = RIGIDSYM_VSIN(x0);
+        trig_1[j] = RIGIDSYM_VCOS(x0);
+        far |= RIGIDSYM_TRIG_FAR(x0);
+    }
+    if (far) {
+        for (int64_t j = 0; j < RIGIDSYM_LANES_TRIG; ++j) {
+        const double phi = col_phi[j];
+        const double x0 = (0.5)*phi;
+
+            if (RIGIDSYM_TRIG_FAR(x0))
+                trig_0[j] = sin(x0);
+            if (RIGIDSYM_TRIG_FAR(x0))
+                trig_1[j] = cos(x0);
+        }
     }
     for (int64_t j = 0; j < RIGIDSYM_LANES_TRIG; ++j) {
         count += (int64_t)(rigidsym_H_tilde_dot_with_jacobians_sample_trig(
@@ -81,6 +96,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_H_tilde_dot_with_jacobians_lanes(
 }
 
 
+RIGIDSYM_F32_BEGIN
 static RIGIDSYM_NOINLINE int64_t rigidsym_H_tilde_dot_with_jacobians_lanes_f32(
     const float *RIGIDSYM_RESTRICT in_e,
     const float *RIGIDSYM_RESTRICT in_phi,
@@ -98,13 +114,28 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_H_tilde_dot_with_jacobians_lanes_f32(
         col_phi[j] = in_phi[1 * j + 0];
     }
     /* a SIMD loop evaluates the sin/cos values into local arrays, then a per-sample loop
-     * reads them */
-    RIGIDSYM_SIMD
+     * reads them; a lane whose argument is past RIGIDSYM_TRIG_MAX or not finite gets libm's
+     * scalar sin/cos in between (rare: the arguments are angles) */
+    int64_t far = 0;
+    RIGIDSYM_SIMD_FAR
     for (int64_t j = 0; j < RIGIDSYM_LANES_F32; ++j) {
         const double phi = col_phi[j];
         const double x0 = (0.5)*phi;
-        trig_0[j] = sin(x0);
-        trig_1[j] = cos(x0);
+
+        trig_0[j] = RIGIDSYM_VSIN(x0);
+        trig_1[j] = RIGIDSYM_VCOS(x0);
+        far |= RIGIDSYM_TRIG_FAR(x0);
+    }
+    if (far) {
+        for (int64_t j = 0; j < RIGIDSYM_LANES_F32; ++j) {
+        const double phi = col_phi[j];
+        const double x0 = (0.5)*phi;
+
+            if (RIGIDSYM_TRIG_FAR(x0))
+                trig_0[j] = sin(x0);
+            if (RIGIDSYM_TRIG_FAR(x0))
+                trig_1[j] = cos(x0);
+        }
     }
     for (int64_t j = 0; j < RIGIDSYM_LANES_F32; ++j) {
         count += (int64_t)(rigidsym_H_tilde_dot_with_jacobians_sample_trig_f32(
@@ -121,6 +152,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_H_tilde_dot_with_jacobians_lanes_f32(
     return count;
 }
 
+RIGIDSYM_F32_END
 
 static RIGIDSYM_NOINLINE int64_t rigidsym_H_tilde_dot_with_jacobians_block(
     int64_t m, int64_t nl,

@@ -57,15 +57,34 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_euler_angle_rates_xzx_fixed_lanes(
         col_angles_1[j] = in_angles[3 * j + 1];
     }
     /* a SIMD loop evaluates the sin/cos values into local arrays, then a per-sample loop
-     * reads them */
-    RIGIDSYM_SIMD
+     * reads them; a lane whose argument is past RIGIDSYM_TRIG_MAX or not finite gets libm's
+     * scalar sin/cos in between (rare: the arguments are angles) */
+    int64_t far = 0;
+    RIGIDSYM_SIMD_FAR
     for (int64_t j = 0; j < RIGIDSYM_LANES_TRIG; ++j) {
         const double angles_0 = col_angles_0[j];
         const double angles_1 = col_angles_1[j];
-        trig_0[j] = sin(angles_1);
-        trig_1[j] = cos(angles_1);
-        trig_2[j] = cos(angles_0);
-        trig_3[j] = sin(angles_0);
+
+        trig_0[j] = RIGIDSYM_VSIN(angles_1);
+        trig_1[j] = RIGIDSYM_VCOS(angles_1);
+        trig_2[j] = RIGIDSYM_VCOS(angles_0);
+        trig_3[j] = RIGIDSYM_VSIN(angles_0);
+        far |= RIGIDSYM_TRIG_FAR(angles_1) | RIGIDSYM_TRIG_FAR(angles_0);
+    }
+    if (far) {
+        for (int64_t j = 0; j < RIGIDSYM_LANES_TRIG; ++j) {
+        const double angles_0 = col_angles_0[j];
+        const double angles_1 = col_angles_1[j];
+
+            if (RIGIDSYM_TRIG_FAR(angles_1))
+                trig_0[j] = sin(angles_1);
+            if (RIGIDSYM_TRIG_FAR(angles_1))
+                trig_1[j] = cos(angles_1);
+            if (RIGIDSYM_TRIG_FAR(angles_0))
+                trig_2[j] = cos(angles_0);
+            if (RIGIDSYM_TRIG_FAR(angles_0))
+                trig_3[j] = sin(angles_0);
+        }
     }
     for (int64_t j = 0; j < RIGIDSYM_LANES_TRIG; ++j) {
         count += (int64_t)(rigidsym_euler_angle_rates_xzx_fixed_sample_trig(
@@ -81,6 +100,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_euler_angle_rates_xzx_fixed_lanes(
 }
 
 
+RIGIDSYM_F32_BEGIN
 static RIGIDSYM_NOINLINE int64_t rigidsym_euler_angle_rates_xzx_fixed_lanes_f32(
     const float *RIGIDSYM_RESTRICT in_angles,
     const float *RIGIDSYM_RESTRICT in_omega,
@@ -98,15 +118,34 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_euler_angle_rates_xzx_fixed_lanes_f32(
         col_angles_1[j] = in_angles[3 * j + 1];
     }
     /* a SIMD loop evaluates the sin/cos values into local arrays, then a per-sample loop
-     * reads them */
-    RIGIDSYM_SIMD
+     * reads them; a lane whose argument is past RIGIDSYM_TRIG_MAX or not finite gets libm's
+     * scalar sin/cos in between (rare: the arguments are angles) */
+    int64_t far = 0;
+    RIGIDSYM_SIMD_FAR
     for (int64_t j = 0; j < RIGIDSYM_LANES_F32; ++j) {
         const double angles_0 = col_angles_0[j];
         const double angles_1 = col_angles_1[j];
-        trig_0[j] = sin(angles_1);
-        trig_1[j] = cos(angles_1);
-        trig_2[j] = cos(angles_0);
-        trig_3[j] = sin(angles_0);
+
+        trig_0[j] = RIGIDSYM_VSIN(angles_1);
+        trig_1[j] = RIGIDSYM_VCOS(angles_1);
+        trig_2[j] = RIGIDSYM_VCOS(angles_0);
+        trig_3[j] = RIGIDSYM_VSIN(angles_0);
+        far |= RIGIDSYM_TRIG_FAR(angles_1) | RIGIDSYM_TRIG_FAR(angles_0);
+    }
+    if (far) {
+        for (int64_t j = 0; j < RIGIDSYM_LANES_F32; ++j) {
+        const double angles_0 = col_angles_0[j];
+        const double angles_1 = col_angles_1[j];
+
+            if (RIGIDSYM_TRIG_FAR(angles_1))
+                trig_0[j] = sin(angles_1);
+            if (RIGIDSYM_TRIG_FAR(angles_1))
+                trig_1[j] = cos(angles_1);
+            if (RIGIDSYM_TRIG_FAR(angles_0))
+                trig_2[j] = cos(angles_0);
+            if (RIGIDSYM_TRIG_FAR(angles_0))
+                trig_3[j] = sin(angles_0);
+        }
     }
     for (int64_t j = 0; j < RIGIDSYM_LANES_F32; ++j) {
         count += (int64_t)(rigidsym_euler_angle_rates_xzx_fixed_sample_trig_f32(
@@ -121,6 +160,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_euler_angle_rates_xzx_fixed_lanes_f32(
     return count;
 }
 
+RIGIDSYM_F32_END
 
 static RIGIDSYM_NOINLINE int64_t rigidsym_euler_angle_rates_xzx_fixed_block(
     int64_t m, int64_t nl,

@@ -95,7 +95,9 @@ static inline int rigidsym_euler_angle_rates_yxz_fixed_sample_trig(
 }
 
 
-/* One float32 sample: float inputs and outputs, arithmetic of the precision plan above. */
+/* One float32 sample: float inputs and outputs, arithmetic of the precision plan above
+ * (compiled without FMA contraction, as the plan was measured: RIGIDSYM_F32_BEGIN). */
+RIGIDSYM_F32_BEGIN
 static inline int rigidsym_euler_angle_rates_yxz_fixed_sample_trig_f32(
     const float *RIGIDSYM_RESTRICT in_angles,
     const float *RIGIDSYM_RESTRICT in_omega,
@@ -128,6 +130,7 @@ static inline int rigidsym_euler_angle_rates_yxz_fixed_sample_trig_f32(
     return singular;
 }
 
+RIGIDSYM_F32_END
 
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
  * are written as NaN; returns their number. One thread. */

@@ -57,15 +57,34 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_euler_rate_matrix_yxy_fixed_with_jacob
         col_angles_1[j] = in_angles[3 * j + 1];
     }
     /* a SIMD loop evaluates the sin/cos values into local arrays, then a per-sample loop
-     * reads them */
-    RIGIDSYM_SIMD
+     * reads them; a lane whose argument is past RIGIDSYM_TRIG_MAX or not finite gets libm's
+     * scalar sin/cos in between (rare: the arguments are angles) */
+    int64_t far = 0;
+    RIGIDSYM_SIMD_FAR
     for (int64_t j = 0; j < RIGIDSYM_LANES_TRIG; ++j) {
         const double angles_0 = col_angles_0[j];
         const double angles_1 = col_angles_1[j];
-        trig_0[j] = cos(angles_0);
-        trig_1[j] = sin(angles_0);
-        trig_2[j] = sin(angles_1);
-        trig_3[j] = cos(angles_1);
+
+        trig_0[j] = RIGIDSYM_VCOS(angles_0);
+        trig_1[j] = RIGIDSYM_VSIN(angles_0);
+        trig_2[j] = RIGIDSYM_VSIN(angles_1);
+        trig_3[j] = RIGIDSYM_VCOS(angles_1);
+        far |= RIGIDSYM_TRIG_FAR(angles_0) | RIGIDSYM_TRIG_FAR(angles_1);
+    }
+    if (far) {
+        for (int64_t j = 0; j < RIGIDSYM_LANES_TRIG; ++j) {
+        const double angles_0 = col_angles_0[j];
+        const double angles_1 = col_angles_1[j];
+
+            if (RIGIDSYM_TRIG_FAR(angles_0))
+                trig_0[j] = cos(angles_0);
+            if (RIGIDSYM_TRIG_FAR(angles_0))
+                trig_1[j] = sin(angles_0);
+            if (RIGIDSYM_TRIG_FAR(angles_1))
+                trig_2[j] = sin(angles_1);
+            if (RIGIDSYM_TRIG_FAR(angles_1))
+                trig_3[j] = cos(angles_1);
+        }
     }
     for (int64_t j = 0; j < RIGIDSYM_LANES_TRIG; ++j) {
         count += (int64_t)(rigidsym_euler_rate_matrix_yxy_fixed_with_jacobians_sample_trig(
@@ -81,6 +100,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_euler_rate_matrix_yxy_fixed_with_jacob
 }
 
 
+RIGIDSYM_F32_BEGIN
 static RIGIDSYM_NOINLINE int64_t rigidsym_euler_rate_matrix_yxy_fixed_with_jacobians_lanes_f32(
     const float *RIGIDSYM_RESTRICT in_angles,
     float *RIGIDSYM_RESTRICT out_W,
@@ -98,15 +118,34 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_euler_rate_matrix_yxy_fixed_with_jacob
         col_angles_1[j] = in_angles[3 * j + 1];
     }
     /* a SIMD loop evaluates the sin/cos values into local arrays, then a per-sample loop
-     * reads them */
-    RIGIDSYM_SIMD
+     * reads them; a lane whose argument is past RIGIDSYM_TRIG_MAX or not finite gets libm's
+     * scalar sin/cos in between (rare: the arguments are angles) */
+    int64_t far = 0;
+    RIGIDSYM_SIMD_FAR
     for (int64_t j = 0; j < RIGIDSYM_LANES_F32; ++j) {
         const double angles_0 = col_angles_0[j];
         const double angles_1 = col_angles_1[j];
-        trig_0[j] = cos(angles_0);
-        trig_1[j] = sin(angles_0);
-        trig_2[j] = sin(angles_1);
-        trig_3[j] = cos(angles_1);
+
+        trig_0[j] = RIGIDSYM_VCOS(angles_0);
+        trig_1[j] = RIGIDSYM_VSIN(angles_0);
+        trig_2[j] = RIGIDSYM_VSIN(angles_1);
+        trig_3[j] = RIGIDSYM_VCOS(angles_1);
+        far |= RIGIDSYM_TRIG_FAR(angles_0) | RIGIDSYM_TRIG_FAR(angles_1);
+    }
+    if (far) {
+        for (int64_t j = 0; j < RIGIDSYM_LANES_F32; ++j) {
+        const double angles_0 = col_angles_0[j];
+        const double angles_1 = col_angles_1[j];
+
+            if (RIGIDSYM_TRIG_FAR(angles_0))
+                trig_0[j] = cos(angles_0);
+            if (RIGIDSYM_TRIG_FAR(angles_0))
+                trig_1[j] = sin(angles_0);
+            if (RIGIDSYM_TRIG_FAR(angles_1))
+                trig_2[j] = sin(angles_1);
+            if (RIGIDSYM_TRIG_FAR(angles_1))
+                trig_3[j] = cos(angles_1);
+        }
     }
     for (int64_t j = 0; j < RIGIDSYM_LANES_F32; ++j) {
         count += (int64_t)(rigidsym_euler_rate_matrix_yxy_fixed_with_jacobians_sample_trig_f32(
@@ -121,6 +160,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_euler_rate_matrix_yxy_fixed_with_jacob
     return count;
 }
 
+RIGIDSYM_F32_END
 
 static RIGIDSYM_NOINLINE int64_t rigidsym_euler_rate_matrix_yxy_fixed_with_jacobians_block(
     int64_t m, int64_t nl,

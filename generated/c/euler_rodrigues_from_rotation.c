@@ -57,6 +57,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_euler_rodrigues_from_rotation_lanes(
 }
 
 
+RIGIDSYM_F32_BEGIN
 static RIGIDSYM_NOINLINE int64_t rigidsym_euler_rodrigues_from_rotation_lanes_f32(
     const float *RIGIDSYM_RESTRICT in_Q,
     float *RIGIDSYM_RESTRICT out_eta)
@@ -73,6 +74,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_euler_rodrigues_from_rotation_lanes_f3
     return count;
 }
 
+RIGIDSYM_F32_END
 
 static RIGIDSYM_NOINLINE int64_t rigidsym_euler_rodrigues_from_rotation_block(
     int64_t m, int64_t nl,

@@ -59,6 +59,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_euler_rodrigues_product_lanes(
 }
 
 
+RIGIDSYM_F32_BEGIN
 static RIGIDSYM_NOINLINE int64_t rigidsym_euler_rodrigues_product_lanes_f32(
     const float *RIGIDSYM_RESTRICT in_eta1,
     const float *RIGIDSYM_RESTRICT in_eta2,
@@ -78,6 +79,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_euler_rodrigues_product_lanes_f32(
     return count;
 }
 
+RIGIDSYM_F32_END
 
 static RIGIDSYM_NOINLINE int64_t rigidsym_euler_rodrigues_product_block(
     int64_t m, int64_t nl,

@@ -63,6 +63,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_euler_rodrigues_product_with_jacobians
 }
 
 
+RIGIDSYM_F32_BEGIN
 static RIGIDSYM_NOINLINE int64_t rigidsym_euler_rodrigues_product_with_jacobians_lanes_f32(
     const float *RIGIDSYM_RESTRICT in_eta1,
     const float *RIGIDSYM_RESTRICT in_eta2,
@@ -86,6 +87,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_euler_rodrigues_product_with_jacobians
     return count;
 }
 
+RIGIDSYM_F32_END
 
 static RIGIDSYM_NOINLINE int64_t rigidsym_euler_rodrigues_product_with_jacobians_block(
     int64_t m, int64_t nl,

@@ -57,6 +57,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_exponential_coordinates_from_transform
 }
 
 
+RIGIDSYM_F32_BEGIN
 static RIGIDSYM_NOINLINE int64_t rigidsym_exponential_coordinates_from_transform_lanes_f32(
     const float *RIGIDSYM_RESTRICT in_T,
     float *RIGIDSYM_RESTRICT out_xi)
@@ -73,6 +74,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_exponential_coordinates_from_transform
     return count;
 }
 
+RIGIDSYM_F32_END
 
 static RIGIDSYM_NOINLINE int64_t rigidsym_exponential_coordinates_from_transform_block(
     int64_t m, int64_t nl,

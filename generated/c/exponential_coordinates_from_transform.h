@@ -13,13 +13,13 @@
  * w = Log(R), v = J_l(w)^-1 p; below pi/4 in s = norm of vect(R) alone (asin, sqrt(1 - s^2)), near pi the symmetric part of R
  *
  * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
- * measured at generation, rigidsym.codegen.float32; worst error 0.931 of what
+ * measured at generation, rigidsym.codegen.float32; worst error 0.656 of what
  * the rule of issue 37 allows, max(2 e_textbook, 4 u), per output, normwise, at its
  * points). In double:
  *   branch 1: none
  *   branch 2: none
  *   branch 3: none
- *   branch 4: none
+ *   branch 4: x5
  *   branch 5: none
  */
 #ifndef RIGIDSYM_EXPONENTIAL_COORDINATES_FROM_TRANSFORM_H
@@ -284,7 +284,9 @@ static inline int rigidsym_exponential_coordinates_from_transform_sample(
 }
 
 
-/* One float32 sample: float inputs and outputs, arithmetic of the precision plan above. */
+/* One float32 sample: float inputs and outputs, arithmetic of the precision plan above
+ * (compiled without FMA contraction, as the plan was measured: RIGIDSYM_F32_BEGIN). */
+RIGIDSYM_F32_BEGIN
 static inline int rigidsym_exponential_coordinates_from_transform_sample_f32(
     const float *RIGIDSYM_RESTRICT in_T,
     float *RIGIDSYM_RESTRICT out_xi)
@@ -462,7 +464,7 @@ static inline int rigidsym_exponential_coordinates_from_transform_sample_f32(
         const float x2 = (0.5f)*T_20;
         const float x3 = (0.5f)*T_12;
         const float x4 = (((0.5f)*T_10 - x0)*((0.5f)*T_10 - x0)) + (((0.5f)*T_21 - x3)*((0.5f)*T_21 - x3)) + ((x1 - x2)*(x1 - x2));
-        const float x5 = ((x4 < 9.094947017729282e-13f) ? (0.1666666716337204f*x4 + 1.0f) : (((x4 < 9.094947017729282e-13f) ? (1048576.0f) : (1.0f/sqrtf(x4)))*asin(((x4 < 9.094947017729282e-13f) ? (9.5367431640625e-07f) : (sqrtf(x4))))));
+        const double x5 = ((((double)x4) < 9.0949470177292824e-13) ? (0.16666666666666666*((double)x4) + 1.0) : (((((double)x4) < 9.0949470177292824e-13) ? (1048576.0) : (1.0/sqrt(((double)x4))))*asin(((((double)x4) < 9.0949470177292824e-13) ? (9.5367431640625e-7) : (sqrt(((double)x4)))))));
         const float x6 = (0.25f)*x5;
         const float x7 = T_01*T_13;
         const float x8 = T_23*x6;
@@ -530,6 +532,7 @@ static inline int rigidsym_exponential_coordinates_from_transform_sample_f32(
     return singular;
 }
 
+RIGIDSYM_F32_END
 
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
  * are written as NaN; returns their number. One thread. */

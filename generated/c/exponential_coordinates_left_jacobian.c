@@ -57,6 +57,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_exponential_coordinates_left_jacobian_
 }
 
 
+RIGIDSYM_F32_BEGIN
 static RIGIDSYM_NOINLINE int64_t rigidsym_exponential_coordinates_left_jacobian_lanes_f32(
     const float *RIGIDSYM_RESTRICT in_xi,
     float *RIGIDSYM_RESTRICT out_J)
@@ -74,6 +75,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_exponential_coordinates_left_jacobian_
     return count;
 }
 
+RIGIDSYM_F32_END
 
 static RIGIDSYM_NOINLINE int64_t rigidsym_exponential_coordinates_left_jacobian_block(
     int64_t m, int64_t nl,

@@ -55,8 +55,10 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_exponential_coordinates_left_jacobian_
         col_xi_2[j] = in_xi[6 * j + 2];
     }
     /* a SIMD loop evaluates the sin/cos values into local arrays, then a per-sample loop
-     * reads them */
-    RIGIDSYM_SIMD
+     * reads them; a lane whose argument is past RIGIDSYM_TRIG_MAX or not finite gets libm's
+     * scalar sin/cos in between (rare: the arguments are angles) */
+    int64_t far = 0;
+    RIGIDSYM_SIMD_FAR
     for (int64_t j = 0; j < RIGIDSYM_LANES_TRIG; ++j) {
         const double xi_0 = col_xi_0[j];
         const double xi_1 = col_xi_1[j];
@@ -65,7 +67,23 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_exponential_coordinates_left_jacobian_
         const double x1 = (xi_1*xi_1);
         const double x2 = (xi_2*xi_2);
         const double x3 = x0 + x1 + x2;
-        trig_0[j] = cos(sqrt(x3));
+
+        trig_0[j] = RIGIDSYM_VCOS(sqrt(x3));
+        far |= RIGIDSYM_TRIG_FAR(sqrt(x3));
+    }
+    if (far) {
+        for (int64_t j = 0; j < RIGIDSYM_LANES_TRIG; ++j) {
+        const double xi_0 = col_xi_0[j];
+        const double xi_1 = col_xi_1[j];
+        const double xi_2 = col_xi_2[j];
+        const double x0 = (xi_0*xi_0);
+        const double x1 = (xi_1*xi_1);
+        const double x2 = (xi_2*xi_2);
+        const double x3 = x0 + x1 + x2;
+
+            if (RIGIDSYM_TRIG_FAR(sqrt(x3)))
+                trig_0[j] = cos(sqrt(x3));
+        }
     }
     for (int64_t j = 0; j < RIGIDSYM_LANES_TRIG; ++j) {
         count += (int64_t)(rigidsym_exponential_coordinates_left_jacobian_inverse_sample_trig(
@@ -77,6 +95,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_exponential_coordinates_left_jacobian_
 }
 
 
+RIGIDSYM_F32_BEGIN
 static RIGIDSYM_NOINLINE int64_t rigidsym_exponential_coordinates_left_jacobian_inverse_lanes_f32(
     const float *RIGIDSYM_RESTRICT in_xi,
     float *RIGIDSYM_RESTRICT out_J)
@@ -92,8 +111,10 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_exponential_coordinates_left_jacobian_
         col_xi_2[j] = in_xi[6 * j + 2];
     }
     /* a SIMD loop evaluates the sin/cos values into local arrays, then a per-sample loop
-     * reads them */
-    RIGIDSYM_SIMD
+     * reads them; a lane whose argument is past RIGIDSYM_TRIG_MAX or not finite gets libm's
+     * scalar sin/cos in between (rare: the arguments are angles) */
+    int64_t far = 0;
+    RIGIDSYM_SIMD_FAR
     for (int64_t j = 0; j < RIGIDSYM_LANES_F32; ++j) {
         const double xi_0 = col_xi_0[j];
         const double xi_1 = col_xi_1[j];
@@ -102,7 +123,23 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_exponential_coordinates_left_jacobian_
         const double x1 = (xi_1*xi_1);
         const double x2 = (xi_2*xi_2);
         const double x3 = x0 + x1 + x2;
-        trig_0[j] = cos(sqrt(x3));
+
+        trig_0[j] = RIGIDSYM_VCOS(sqrt(x3));
+        far |= RIGIDSYM_TRIG_FAR(sqrt(x3));
+    }
+    if (far) {
+        for (int64_t j = 0; j < RIGIDSYM_LANES_F32; ++j) {
+        const double xi_0 = col_xi_0[j];
+        const double xi_1 = col_xi_1[j];
+        const double xi_2 = col_xi_2[j];
+        const double x0 = (xi_0*xi_0);
+        const double x1 = (xi_1*xi_1);
+        const double x2 = (xi_2*xi_2);
+        const double x3 = x0 + x1 + x2;
+
+            if (RIGIDSYM_TRIG_FAR(sqrt(x3)))
+                trig_0[j] = cos(sqrt(x3));
+        }
     }
     for (int64_t j = 0; j < RIGIDSYM_LANES_F32; ++j) {
         count += (int64_t)(rigidsym_exponential_coordinates_left_jacobian_inverse_sample_trig_f32(
@@ -113,6 +150,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_exponential_coordinates_left_jacobian_
     return count;
 }
 
+RIGIDSYM_F32_END
 
 static RIGIDSYM_NOINLINE int64_t rigidsym_exponential_coordinates_left_jacobian_inverse_block(
     int64_t m, int64_t nl,

@@ -757,7 +757,9 @@ static inline int rigidsym_exponential_coordinates_left_jacobian_inverse_sample_
 }
 
 
-/* One float32 sample: float inputs and outputs, arithmetic of the precision plan above. */
+/* One float32 sample: float inputs and outputs, arithmetic of the precision plan above
+ * (compiled without FMA contraction, as the plan was measured: RIGIDSYM_F32_BEGIN). */
+RIGIDSYM_F32_BEGIN
 static inline int rigidsym_exponential_coordinates_left_jacobian_inverse_sample_trig_f32(
     const float *RIGIDSYM_RESTRICT in_xi,
     const float trig_0,
@@ -1120,6 +1122,7 @@ static inline int rigidsym_exponential_coordinates_left_jacobian_inverse_sample_
     return singular;
 }
 
+RIGIDSYM_F32_END
 
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
  * are written as NaN; returns their number. One thread. */

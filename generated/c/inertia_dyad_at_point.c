@@ -63,6 +63,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_inertia_dyad_at_point_lanes(
 }
 
 
+RIGIDSYM_F32_BEGIN
 static RIGIDSYM_NOINLINE int64_t rigidsym_inertia_dyad_at_point_lanes_f32(
     const float *RIGIDSYM_RESTRICT in_I_C,
     const float *RIGIDSYM_RESTRICT in_m,
@@ -86,6 +87,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_inertia_dyad_at_point_lanes_f32(
     return count;
 }
 
+RIGIDSYM_F32_END
 
 static RIGIDSYM_NOINLINE int64_t rigidsym_inertia_dyad_at_point_block(
     int64_t m, int64_t nl,

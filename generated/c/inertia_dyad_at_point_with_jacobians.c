@@ -71,6 +71,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_inertia_dyad_at_point_with_jacobians_l
 }
 
 
+RIGIDSYM_F32_BEGIN
 static RIGIDSYM_NOINLINE int64_t rigidsym_inertia_dyad_at_point_with_jacobians_lanes_f32(
     const float *RIGIDSYM_RESTRICT in_I_C,
     const float *RIGIDSYM_RESTRICT in_m,
@@ -102,6 +103,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_inertia_dyad_at_point_with_jacobians_l
     return count;
 }
 
+RIGIDSYM_F32_END
 
 static RIGIDSYM_NOINLINE int64_t rigidsym_inertia_dyad_at_point_with_jacobians_block(
     int64_t m, int64_t nl,

@@ -64,6 +64,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_instant_screw_axis_lanes(
 }
 
 
+RIGIDSYM_F32_BEGIN
 static RIGIDSYM_NOINLINE int64_t rigidsym_instant_screw_axis_lanes_f32(
     const float *RIGIDSYM_RESTRICT in_omega,
     const float *RIGIDSYM_RESTRICT in_a,
@@ -88,6 +89,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_instant_screw_axis_lanes_f32(
     return count;
 }
 
+RIGIDSYM_F32_END
 
 static RIGIDSYM_NOINLINE int64_t rigidsym_instant_screw_axis_block(
     int64_t m, int64_t nl,

@@ -82,6 +82,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_instant_screw_axis_with_jacobians_lane
 }
 
 
+RIGIDSYM_F32_BEGIN
 static RIGIDSYM_NOINLINE int64_t rigidsym_instant_screw_axis_with_jacobians_lanes_f32(
     const float *RIGIDSYM_RESTRICT in_omega,
     const float *RIGIDSYM_RESTRICT in_a,
@@ -124,6 +125,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_instant_screw_axis_with_jacobians_lane
     return count;
 }
 
+RIGIDSYM_F32_END
 
 static RIGIDSYM_NOINLINE int64_t rigidsym_instant_screw_axis_with_jacobians_block(
     int64_t m, int64_t nl,

@@ -62,6 +62,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_instant_screw_point_pitch_lanes(
 }
 
 
+RIGIDSYM_F32_BEGIN
 static RIGIDSYM_NOINLINE int64_t rigidsym_instant_screw_point_pitch_lanes_f32(
     const float *RIGIDSYM_RESTRICT in_omega,
     const float *RIGIDSYM_RESTRICT in_a,
@@ -84,6 +85,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_instant_screw_point_pitch_lanes_f32(
     return count;
 }
 
+RIGIDSYM_F32_END
 
 static RIGIDSYM_NOINLINE int64_t rigidsym_instant_screw_point_pitch_block(
     int64_t m, int64_t nl,

@@ -69,6 +69,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_moving_frame_acceleration_lanes(
 }
 
 
+RIGIDSYM_F32_BEGIN
 static RIGIDSYM_NOINLINE int64_t rigidsym_moving_frame_acceleration_lanes_f32(
     const float *RIGIDSYM_RESTRICT in_o_ddot,
     const float *RIGIDSYM_RESTRICT in_Q,
@@ -98,6 +99,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_moving_frame_acceleration_lanes_f32(
     return count;
 }
 
+RIGIDSYM_F32_END
 
 static RIGIDSYM_NOINLINE int64_t rigidsym_moving_frame_acceleration_block(
     int64_t m, int64_t nl,

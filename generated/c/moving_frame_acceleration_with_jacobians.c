@@ -83,6 +83,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_moving_frame_acceleration_with_jacobia
 }
 
 
+RIGIDSYM_F32_BEGIN
 static RIGIDSYM_NOINLINE int64_t rigidsym_moving_frame_acceleration_with_jacobians_lanes_f32(
     const float *RIGIDSYM_RESTRICT in_o_ddot,
     const float *RIGIDSYM_RESTRICT in_Q,
@@ -126,6 +127,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_moving_frame_acceleration_with_jacobia
     return count;
 }
 
+RIGIDSYM_F32_END
 
 static RIGIDSYM_NOINLINE int64_t rigidsym_moving_frame_acceleration_with_jacobians_block(
     int64_t m, int64_t nl,

@@ -133,7 +133,9 @@ static inline int rigidsym_natural_invariants_from_rotation_sample(
 }
 
 
-/* One float32 sample: float inputs and outputs, arithmetic of the precision plan above. */
+/* One float32 sample: float inputs and outputs, arithmetic of the precision plan above
+ * (compiled without FMA contraction, as the plan was measured: RIGIDSYM_F32_BEGIN). */
+RIGIDSYM_F32_BEGIN
 static inline int rigidsym_natural_invariants_from_rotation_sample_f32(
     const float *RIGIDSYM_RESTRICT in_Q,
     float *RIGIDSYM_RESTRICT out_e,
@@ -228,6 +230,7 @@ static inline int rigidsym_natural_invariants_from_rotation_sample_f32(
     return singular;
 }
 
+RIGIDSYM_F32_END
 
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
  * are written as NaN; returns their number. One thread. */

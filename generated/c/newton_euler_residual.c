@@ -69,6 +69,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_newton_euler_residual_lanes(
 }
 
 
+RIGIDSYM_F32_BEGIN
 static RIGIDSYM_NOINLINE int64_t rigidsym_newton_euler_residual_lanes_f32(
     const float *RIGIDSYM_RESTRICT in_I_C,
     const float *RIGIDSYM_RESTRICT in_m,
@@ -98,6 +99,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_newton_euler_residual_lanes_f32(
     return count;
 }
 
+RIGIDSYM_F32_END
 
 static RIGIDSYM_NOINLINE int64_t rigidsym_newton_euler_residual_block(
     int64_t m, int64_t nl,

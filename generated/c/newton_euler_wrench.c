@@ -65,6 +65,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_newton_euler_wrench_lanes(
 }
 
 
+RIGIDSYM_F32_BEGIN
 static RIGIDSYM_NOINLINE int64_t rigidsym_newton_euler_wrench_lanes_f32(
     const float *RIGIDSYM_RESTRICT in_I_C,
     const float *RIGIDSYM_RESTRICT in_m,
@@ -90,6 +91,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_newton_euler_wrench_lanes_f32(
     return count;
 }
 
+RIGIDSYM_F32_END
 
 static RIGIDSYM_NOINLINE int64_t rigidsym_newton_euler_wrench_block(
     int64_t m, int64_t nl,

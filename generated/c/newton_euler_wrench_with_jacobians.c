@@ -75,6 +75,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_newton_euler_wrench_with_jacobians_lan
 }
 
 
+RIGIDSYM_F32_BEGIN
 static RIGIDSYM_NOINLINE int64_t rigidsym_newton_euler_wrench_with_jacobians_lanes_f32(
     const float *RIGIDSYM_RESTRICT in_I_C,
     const float *RIGIDSYM_RESTRICT in_m,
@@ -110,6 +111,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_newton_euler_wrench_with_jacobians_lan
     return count;
 }
 
+RIGIDSYM_F32_END
 
 static RIGIDSYM_NOINLINE int64_t rigidsym_newton_euler_wrench_with_jacobians_block(
     int64_t m, int64_t nl,

@@ -67,6 +67,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_plucker_from_points_lanes(
 }
 
 
+RIGIDSYM_F32_BEGIN
 static RIGIDSYM_NOINLINE int64_t rigidsym_plucker_from_points_lanes_f32(
     const float *RIGIDSYM_RESTRICT in_p1,
     const float *RIGIDSYM_RESTRICT in_p2,
@@ -85,6 +86,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_plucker_from_points_lanes_f32(
     return count;
 }
 
+RIGIDSYM_F32_END
 
 static RIGIDSYM_NOINLINE int64_t rigidsym_plucker_from_points_block(
     int64_t m, int64_t nl,

@@ -69,6 +69,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_plucker_from_points_with_jacobians_lan
 }
 
 
+RIGIDSYM_F32_BEGIN
 static RIGIDSYM_NOINLINE int64_t rigidsym_plucker_from_points_with_jacobians_lanes_f32(
     const float *RIGIDSYM_RESTRICT in_p1,
     const float *RIGIDSYM_RESTRICT in_p2,
@@ -91,6 +92,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_plucker_from_points_with_jacobians_lan
     return count;
 }
 
+RIGIDSYM_F32_END
 
 static RIGIDSYM_NOINLINE int64_t rigidsym_plucker_from_points_with_jacobians_block(
     int64_t m, int64_t nl,

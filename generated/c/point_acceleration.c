@@ -65,6 +65,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_point_acceleration_lanes(
 }
 
 
+RIGIDSYM_F32_BEGIN
 static RIGIDSYM_NOINLINE int64_t rigidsym_point_acceleration_lanes_f32(
     const float *RIGIDSYM_RESTRICT in_a_ddot,
     const float *RIGIDSYM_RESTRICT in_omega,
@@ -90,6 +91,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_point_acceleration_lanes_f32(
     return count;
 }
 
+RIGIDSYM_F32_END
 
 static RIGIDSYM_NOINLINE int64_t rigidsym_point_acceleration_block(
     int64_t m, int64_t nl,

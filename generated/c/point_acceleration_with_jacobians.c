@@ -75,6 +75,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_point_acceleration_with_jacobians_lane
 }
 
 
+RIGIDSYM_F32_BEGIN
 static RIGIDSYM_NOINLINE int64_t rigidsym_point_acceleration_with_jacobians_lanes_f32(
     const float *RIGIDSYM_RESTRICT in_a_ddot,
     const float *RIGIDSYM_RESTRICT in_omega,
@@ -110,6 +111,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_point_acceleration_with_jacobians_lane
     return count;
 }
 
+RIGIDSYM_F32_END
 
 static RIGIDSYM_NOINLINE int64_t rigidsym_point_acceleration_with_jacobians_block(
     int64_t m, int64_t nl,

@@ -41,21 +41,143 @@ typedef struct {
     rigidsym_fn f32;
 } rigidsym_fns;
 
-/* Vectorised sin/cos (SIMD batch loops): defined by `rigidsym build-c` when glibc's libmvec
- * links (with -fopenmp-simd -fno-builtin-sin -fno-builtin-cos, so that sin and cos are not
- * fused into a scalar sincos call). libmvec's sin and cos are within 4 ulp. Otherwise the
- * batch loops are plain loops, vectorised where the compiler can. */
+/* Vectorised sin/cos of the SIMD trig loops (c_kernel.c.j2): RIGIDSYM_VSIN/RIGIDSYM_VCOS.
+ * Default: rigidsym_sin/rigidsym_cos below, branch-free C that the compiler vectorises, within
+ * 1 ulp (measured at most 0.68 ulp with FMA, 0.78 without; libm's scalar sin/cos 0.52,
+ * libmvec's 3.7:
+ * benchmarks/RESULTS.md) for |x| <= RIGIDSYM_TRIG_MAX; a lane past it or not finite is flagged
+ * by RIGIDSYM_TRIG_FAR and recomputed by libm's scalar sin/cos after the loop, so that no
+ * argument gets a worse value than libm's. With RIGIDSYM_LIBMVEC (opt-in: `RIGIDSYM_LIBMVEC=1
+ * rigidsym build-c`, with -fopenmp-simd -fno-builtin-sin -fno-builtin-cos, so that sin and
+ * cos are not fused into a scalar sincos call): glibc's libmvec, within 4 ulp, which takes
+ * trig kernels past issue 37's rule (docs/accuracy.md). */
 #if defined(RIGIDSYM_LIBMVEC)
 #pragma omp declare simd notinbranch
 double sin(double);
 #pragma omp declare simd notinbranch
 double cos(double);
 #define RIGIDSYM_SIMD_COUNT _Pragma("omp simd reduction(+:count)")
-#define RIGIDSYM_SIMD _Pragma("omp simd")
+#define RIGIDSYM_VSIN(x) sin(x)
+#define RIGIDSYM_VCOS(x) cos(x)
+#define RIGIDSYM_TRIG_FAR(x) 0
+#elif defined(RIGIDSYM_TRIG_LIBM)
+/* for measurements only (benchmarks/trig_speed.py, through RIGIDSYM_CFLAGS): libm's scalar
+ * sin/cos in the trig loops (within 1 ulp, not vectorised) */
+#define RIGIDSYM_SIMD_COUNT
+#define RIGIDSYM_VSIN(x) sin(x)
+#define RIGIDSYM_VCOS(x) cos(x)
+#define RIGIDSYM_TRIG_FAR(x) 0
 #else
 #define RIGIDSYM_SIMD_COUNT
-#define RIGIDSYM_SIMD
+#define RIGIDSYM_VSIN(x) rigidsym_sin(x)
+#define RIGIDSYM_VCOS(x) rigidsym_cos(x)
+#define RIGIDSYM_TRIG_FAR(x) rigidsym_trig_far(x)
 #endif
+#if defined(RIGIDSYM_LIBMVEC) || defined(_OPENMP)
+#define RIGIDSYM_SIMD_FAR _Pragma("omp simd reduction(|:far)")
+#else
+#define RIGIDSYM_SIMD_FAR
+#endif
+
+/* Arguments of rigidsym_sin/rigidsym_cos: |x| <= 2^20 pi/2, so that n = round(x 2/pi) has at
+ * most 20 bits and n times each 33-bit part of pi/2 below is exact (fdlibm's medium case). */
+#define RIGIDSYM_TRIG_MAX 0x1.921fb54442d18p+20
+
+/* 1 where x is past RIGIDSYM_TRIG_MAX or NaN (then libm's sin/cos take over) */
+static inline int64_t rigidsym_trig_far(double x)
+{
+    return !(fabs(x) <= RIGIDSYM_TRIG_MAX);
+}
+
+static inline double rigidsym_xor_bits(double v, uint64_t m)
+{
+    uint64_t b;
+    memcpy(&b, &v, sizeof b);
+    b ^= m;
+    memcpy(&v, &b, sizeof b);
+    return v;
+}
+
+/* sin x and cos x for |x| <= RIGIDSYM_TRIG_MAX, branch-free (the quadrant selected by blends
+ * and a sign-bit xor, so that a loop of calls vectorises). Reduction: x = n pi/2 + y0 + y1,
+ * Cody and Waite with fdlibm's 3-part pi/2 (pio2_1, pio2_2, pio2_3 of 33 bits, pio2_3t; the
+ * constants of fdlibm's e_rem_pio2.c), every stage always taken (fdlibm branches on the
+ * cancellation) and summed by TwoSum, so y0 + y1 holds x - n pi/2 to about 2^-100 absolute
+ * at every x in range, near multiples of pi/2 included. Polynomials: fdlibm's __kernel_sin
+ * and __kernel_cos on [-pi/4, pi/4] (k_sin.c, k_cos.c; musl's branch-free form of the
+ * cosine), minimax to 2^-58. FMA contraction (-ffp-contract=fast) leaves the exact products
+ * and the additions-only TwoSums as they are and only makes the polynomials more accurate.
+ * fdlibm: Copyright (C) 1993 by Sun Microsystems, Inc. All rights reserved. Developed at
+ * SunPro, a Sun Microsystems, Inc. business. Permission to use, copy, modify, and distribute
+ * this software is freely granted, provided that this notice is preserved. */
+static inline void rigidsym_sincos(double x, double *s_out, double *c_out)
+{
+    const double toint = 0x1.8p52, invpio2 = 6.36619772367581382433e-01,
+        pio2_1 = 1.57079632673412561417e+00, pio2_2 = 6.07710050630396597660e-11,
+        pio2_3 = 2.02226624871116645580e-21, pio2_3t = 8.47842766036889956997e-32;
+    const double S1 = -1.66666666666666324348e-01, S2 = 8.33333333332248946124e-03,
+        S3 = -1.98412698298579493134e-04, S4 = 2.75573137070700676789e-06,
+        S5 = -2.50507602534068634195e-08, S6 = 1.58969099521155010221e-10;
+    const double C1 = 4.16666666666666019037e-02, C2 = -1.38888888888741095749e-03,
+        C3 = 2.48015872894767294178e-05, C4 = -2.75573143513906633035e-07,
+        C5 = 2.08757232129817482790e-09, C6 = -1.13596475577881948265e-11;
+    /* n = round(x 2/pi): the low bits of t are n's (two's complement) */
+    const double t = x * invpio2 + toint;
+    const double fn = t - toint;
+    uint64_t n;
+    memcpy(&n, &t, sizeof n);
+    /* exact: fn pio2_k has at most 20 + 33 bits, and x - fn pio2_1 by Sterbenz' lemma */
+    const double a = x - fn * pio2_1;
+    const double b = fn * pio2_2, c = fn * pio2_3;
+    /* TwoSum twice: s2 + e1 + e2 = a - b - c exactly */
+    const double s1 = a - b;
+    const double b1 = s1 - a;
+    const double e1 = (a - (s1 - b1)) - (b + b1);
+    const double s2 = s1 - c;
+    const double c1 = s2 - s1;
+    const double e2 = (s1 - (s2 - c1)) - (c + c1);
+    const double tail = (e1 + e2) - fn * pio2_3t;
+    const double y0 = s2 + tail;
+    const double y1 = (s2 - y0) + tail;
+    /* __kernel_sin(y0, y1, 1) and __kernel_cos(y0, y1) */
+    const double z = y0 * y0, w = z * z, v = z * y0;
+    const double rs = S2 + z * (S3 + z * S4) + z * w * (S5 + z * S6);
+    const double ks = y0 - ((z * (0.5 * y1 - v * rs) - y1) - v * S1);
+    const double rc = z * (C1 + z * (C2 + z * C3)) + w * w * (C4 + z * (C5 + z * C6));
+    const double hz = 0.5 * z;
+    const double wc = 1.0 - hz;
+#if defined(__FMA__)
+    /* z's rounding error (exact by fma, an instruction here): it weighed 0.25 ulp in the
+     * cosine near pi/4 (largest error 0.78 -> 0.68 ulp, benchmarks/trig_pair.py) */
+    const double zl = fma(y0, y0, -z);
+    const double kc = wc + (((1.0 - wc) - hz) + (z * rc - (y0 * y1 + 0.5 * zl)));
+#else
+    const double kc = wc + (((1.0 - wc) - hz) + (z * rc - y0 * y1));
+#endif
+    /* quadrant n mod 4: sin = ks, kc, -ks, -kc and cos = kc, -ks, -kc, ks */
+    const uint64_t odd = n & 1;
+    const double sv = odd ? kc : ks;
+    const double cv = odd ? ks : kc;
+    /* x = -0: y0 = s2 + tail is +0, and sin(-0) is -0 */
+    *s_out = x == 0 ? x : rigidsym_xor_bits(sv, (n & 2) << 62);
+    *c_out = rigidsym_xor_bits(cv, ((n + 1) & 2) << 62);
+}
+
+/* The sine and the cosine of rigidsym_sincos: the reduction of a sin(x), cos(x) pair is
+ * computed once (the compiler merges the inlined copies). */
+static inline double rigidsym_sin(double x)
+{
+    double s, c;
+    rigidsym_sincos(x, &s, &c);
+    return s;
+}
+
+static inline double rigidsym_cos(double x)
+{
+    double s, c;
+    rigidsym_sincos(x, &s, &c);
+    return c;
+}
 
 /* Threads: the batch functions take their thread count as an argument and pass it to OpenMP
  * explicitly (num_threads), so OMP_NUM_THREADS does not change it (rigidsym.kernels asks for
@@ -67,6 +189,20 @@ double cos(double);
     RIGIDSYM_PRAGMA(omp parallel for schedule(static) num_threads(t) reduction(+:count) if(t > 1))
 #else
 #define RIGIDSYM_PARALLEL_FOR(t)
+#endif
+
+/* The float32 code (sample functions and lanes loops) without FMA contraction: the float32
+ * precision plans (rigidsym.codegen.float32) are measured on a simulation that rounds every
+ * product, and a contracted `a b + c` moved seven plans past issue 37's rule at 1000 points
+ * (tests/test_float32.py). GCC: an optimize pragma around them (the float64 code keeps
+ * -ffp-contract=fast); elsewhere nothing (clang ignores contraction pragmas under
+ * -ffp-contract=fast). */
+#if defined(__GNUC__) && !defined(__clang__) && !defined(RIGIDSYM_F32_CONTRACT)
+#define RIGIDSYM_F32_BEGIN _Pragma("GCC push_options") _Pragma("GCC optimize(\"fp-contract=off\")")
+#define RIGIDSYM_F32_END _Pragma("GCC pop_options")
+#else
+#define RIGIDSYM_F32_BEGIN
+#define RIGIDSYM_F32_END
 #endif
 
 /* The block function of a kernel is compiled once and called for full and padded blocks

@@ -57,6 +57,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_rotation_from_euler_rodrigues_lanes(
 }
 
 
+RIGIDSYM_F32_BEGIN
 static RIGIDSYM_NOINLINE int64_t rigidsym_rotation_from_euler_rodrigues_lanes_f32(
     const float *RIGIDSYM_RESTRICT in_eta,
     float *RIGIDSYM_RESTRICT out_Q)
@@ -74,6 +75,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_rotation_from_euler_rodrigues_lanes_f3
     return count;
 }
 
+RIGIDSYM_F32_END
 
 static RIGIDSYM_NOINLINE int64_t rigidsym_rotation_from_euler_rodrigues_block(
     int64_t m, int64_t nl,

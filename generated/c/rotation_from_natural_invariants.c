@@ -53,13 +53,28 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_rotation_from_natural_invariants_lanes
         col_phi[j] = in_phi[1 * j + 0];
     }
     /* a SIMD loop evaluates the sin/cos values into local arrays, then a per-sample loop
-     * reads them */
-    RIGIDSYM_SIMD
+     * reads them; a lane whose argument is past RIGIDSYM_TRIG_MAX or not finite gets libm's
+     * scalar sin/cos in between (rare: the arguments are angles) */
+    int64_t far = 0;
+    RIGIDSYM_SIMD_FAR
     for (int64_t j = 0; j < RIGIDSYM_LANES_TRIG; ++j) {
         const double phi = col_phi[j];
         const double x1 = (0.5)*phi;
-        trig_0[j] = sin(x1);
-        trig_1[j] = cos(x1);
+
+        trig_0[j] = RIGIDSYM_VSIN(x1);
+        trig_1[j] = RIGIDSYM_VCOS(x1);
+        far |= RIGIDSYM_TRIG_FAR(x1);
+    }
+    if (far) {
+        for (int64_t j = 0; j < RIGIDSYM_LANES_TRIG; ++j) {
+        const double phi = col_phi[j];
+        const double x1 = (0.5)*phi;
+
+            if (RIGIDSYM_TRIG_FAR(x1))
+                trig_0[j] = sin(x1);
+            if (RIGIDSYM_TRIG_FAR(x1))
+                trig_1[j] = cos(x1);
+        }
     }
     for (int64_t j = 0; j < RIGIDSYM_LANES_TRIG; ++j) {
         count += (int64_t)(rigidsym_rotation_from_natural_invariants_sample_trig(
@@ -73,6 +88,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_rotation_from_natural_invariants_lanes
 }
 
 
+RIGIDSYM_F32_BEGIN
 static RIGIDSYM_NOINLINE int64_t rigidsym_rotation_from_natural_invariants_lanes_f32(
     const float *RIGIDSYM_RESTRICT in_e,
     const float *RIGIDSYM_RESTRICT in_phi,
@@ -86,13 +102,28 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_rotation_from_natural_invariants_lanes
         col_phi[j] = in_phi[1 * j + 0];
     }
     /* a SIMD loop evaluates the sin/cos values into local arrays, then a per-sample loop
-     * reads them */
-    RIGIDSYM_SIMD
+     * reads them; a lane whose argument is past RIGIDSYM_TRIG_MAX or not finite gets libm's
+     * scalar sin/cos in between (rare: the arguments are angles) */
+    int64_t far = 0;
+    RIGIDSYM_SIMD_FAR
     for (int64_t j = 0; j < RIGIDSYM_LANES_F32; ++j) {
         const double phi = col_phi[j];
         const double x1 = (0.5)*phi;
-        trig_0[j] = sin(x1);
-        trig_1[j] = cos(x1);
+
+        trig_0[j] = RIGIDSYM_VSIN(x1);
+        trig_1[j] = RIGIDSYM_VCOS(x1);
+        far |= RIGIDSYM_TRIG_FAR(x1);
+    }
+    if (far) {
+        for (int64_t j = 0; j < RIGIDSYM_LANES_F32; ++j) {
+        const double phi = col_phi[j];
+        const double x1 = (0.5)*phi;
+
+            if (RIGIDSYM_TRIG_FAR(x1))
+                trig_0[j] = sin(x1);
+            if (RIGIDSYM_TRIG_FAR(x1))
+                trig_1[j] = cos(x1);
+        }
     }
     for (int64_t j = 0; j < RIGIDSYM_LANES_F32; ++j) {
         count += (int64_t)(rigidsym_rotation_from_natural_invariants_sample_trig_f32(
@@ -105,6 +136,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_rotation_from_natural_invariants_lanes
     return count;
 }
 
+RIGIDSYM_F32_END
 
 static RIGIDSYM_NOINLINE int64_t rigidsym_rotation_from_natural_invariants_block(
     int64_t m, int64_t nl,

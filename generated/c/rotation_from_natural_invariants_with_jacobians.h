@@ -210,7 +210,9 @@ static inline int rigidsym_rotation_from_natural_invariants_with_jacobians_sampl
 }
 
 
-/* One float32 sample: float inputs and outputs, arithmetic of the precision plan above. */
+/* One float32 sample: float inputs and outputs, arithmetic of the precision plan above
+ * (compiled without FMA contraction, as the plan was measured: RIGIDSYM_F32_BEGIN). */
+RIGIDSYM_F32_BEGIN
 static inline int rigidsym_rotation_from_natural_invariants_with_jacobians_sample_trig_f32(
     const float *RIGIDSYM_RESTRICT in_e,
     const float *RIGIDSYM_RESTRICT in_phi,
@@ -302,6 +304,7 @@ static inline int rigidsym_rotation_from_natural_invariants_with_jacobians_sampl
     return singular;
 }
 
+RIGIDSYM_F32_END
 
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
  * are written as NaN; returns their number. One thread. */

@@ -57,6 +57,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_rotation_vector_right_jacobian_inverse
 }
 
 
+RIGIDSYM_F32_BEGIN
 static RIGIDSYM_NOINLINE int64_t rigidsym_rotation_vector_right_jacobian_inverse_lanes_f32(
     const float *RIGIDSYM_RESTRICT in_w,
     float *RIGIDSYM_RESTRICT out_J)
@@ -74,6 +75,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_rotation_vector_right_jacobian_inverse
     return count;
 }
 
+RIGIDSYM_F32_END
 
 static RIGIDSYM_NOINLINE int64_t rigidsym_rotation_vector_right_jacobian_inverse_block(
     int64_t m, int64_t nl,

@@ -77,6 +77,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_screw_of_displacement_lanes(
 }
 
 
+RIGIDSYM_F32_BEGIN
 static RIGIDSYM_NOINLINE int64_t rigidsym_screw_of_displacement_lanes_f32(
     const float *RIGIDSYM_RESTRICT in_Q,
     const float *RIGIDSYM_RESTRICT in_a,
@@ -105,6 +106,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_screw_of_displacement_lanes_f32(
     return count;
 }
 
+RIGIDSYM_F32_END
 
 static RIGIDSYM_NOINLINE int64_t rigidsym_screw_of_displacement_block(
     int64_t m, int64_t nl,

@@ -59,6 +59,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_transform_from_exponential_coordinates
 }
 
 
+RIGIDSYM_F32_BEGIN
 static RIGIDSYM_NOINLINE int64_t rigidsym_transform_from_exponential_coordinates_with_jacobians_lanes_f32(
     const float *RIGIDSYM_RESTRICT in_xi,
     float *RIGIDSYM_RESTRICT out_T,
@@ -78,6 +79,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_transform_from_exponential_coordinates
     return count;
 }
 
+RIGIDSYM_F32_END
 
 static RIGIDSYM_NOINLINE int64_t rigidsym_transform_from_exponential_coordinates_with_jacobians_block(
     int64_t m, int64_t nl,

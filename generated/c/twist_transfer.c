@@ -61,6 +61,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_twist_transfer_lanes(
 }
 
 
+RIGIDSYM_F32_BEGIN
 static RIGIDSYM_NOINLINE int64_t rigidsym_twist_transfer_lanes_f32(
     const float *RIGIDSYM_RESTRICT in_t_A,
     const float *RIGIDSYM_RESTRICT in_a,
@@ -82,6 +83,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_twist_transfer_lanes_f32(
     return count;
 }
 
+RIGIDSYM_F32_END
 
 static RIGIDSYM_NOINLINE int64_t rigidsym_twist_transfer_block(
     int64_t m, int64_t nl,

@@ -59,6 +59,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_twist_transfer_matrix_lanes(
 }
 
 
+RIGIDSYM_F32_BEGIN
 static RIGIDSYM_NOINLINE int64_t rigidsym_twist_transfer_matrix_lanes_f32(
     const float *RIGIDSYM_RESTRICT in_a,
     const float *RIGIDSYM_RESTRICT in_p,
@@ -78,6 +79,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_twist_transfer_matrix_lanes_f32(
     return count;
 }
 
+RIGIDSYM_F32_END
 
 static RIGIDSYM_NOINLINE int64_t rigidsym_twist_transfer_matrix_block(
     int64_t m, int64_t nl,

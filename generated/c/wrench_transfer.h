@@ -59,7 +59,9 @@ static inline int rigidsym_wrench_transfer_sample(
 }
 
 
-/* One float32 sample: float inputs and outputs, arithmetic of the precision plan above. */
+/* One float32 sample: float inputs and outputs, arithmetic of the precision plan above
+ * (compiled without FMA contraction, as the plan was measured: RIGIDSYM_F32_BEGIN). */
+RIGIDSYM_F32_BEGIN
 static inline int rigidsym_wrench_transfer_sample_f32(
     const float *RIGIDSYM_RESTRICT in_w_A,
     const float *RIGIDSYM_RESTRICT in_a,
@@ -93,6 +95,7 @@ static inline int rigidsym_wrench_transfer_sample_f32(
     return singular;
 }
 
+RIGIDSYM_F32_END
 
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
  * are written as NaN; returns their number. One thread. */

@@ -63,6 +63,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_wrench_transfer_matrix_with_jacobians_
 }
 
 
+RIGIDSYM_F32_BEGIN
 static RIGIDSYM_NOINLINE int64_t rigidsym_wrench_transfer_matrix_with_jacobians_lanes_f32(
     const float *RIGIDSYM_RESTRICT in_a,
     const float *RIGIDSYM_RESTRICT in_p,
@@ -86,6 +87,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_wrench_transfer_matrix_with_jacobians_
     return count;
 }
 
+RIGIDSYM_F32_END
 
 static RIGIDSYM_NOINLINE int64_t rigidsym_wrench_transfer_matrix_with_jacobians_block(
     int64_t m, int64_t nl,

@@ -67,6 +67,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_wrench_transfer_with_jacobians_lanes(
 }
 
 
+RIGIDSYM_F32_BEGIN
 static RIGIDSYM_NOINLINE int64_t rigidsym_wrench_transfer_with_jacobians_lanes_f32(
     const float *RIGIDSYM_RESTRICT in_w_A,
     const float *RIGIDSYM_RESTRICT in_a,
@@ -94,6 +95,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_wrench_transfer_with_jacobians_lanes_f
     return count;
 }
 
+RIGIDSYM_F32_END
 
 static RIGIDSYM_NOINLINE int64_t rigidsym_wrench_transfer_with_jacobians_block(
     int64_t m, int64_t nl,

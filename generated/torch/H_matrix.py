@@ -110,6 +110,57 @@ def _jvp(e_0, e_1, e_2, phi, _t0, _t1, _t2, _t3):
     )
 
 
+def _main_saved(e_0, e_1, e_2, phi):
+    """``_main``, and the temps ``_vjp`` would compute again: saved by autograd."""
+    x0 = (0.5)*phi
+    x1 = (0.5)*torch.cos(x0)
+    x2 = (0.5)*torch.sin(x0)
+    x3 = e_2*x2
+    x4 = e_1*x2
+    x5 = -x4
+    x6 = -x3
+    x7 = e_0*x2
+    x8 = -x7
+    return (
+        x1,
+        x3,
+        x5,
+        x6,
+        x1,
+        x7,
+        x4,
+        x8,
+        x1,
+        x8,
+        x5,
+        x6,
+    ), (
+    ), (x0, x2, )
+
+
+def _vjp_saved(e_0, e_1, e_2, phi, x0, x2, _g0, _g1, _g2, _g3, _g4, _g5, _g6, _g7, _g8, _g9, _g10, _g11):
+    """``_vjp`` on the forward's saved temps (2 of them)."""
+    _b0 = _g7 + _g9
+    _b1 = -_b0 + _g5
+    _b2 = _g11 + _g3
+    _b3 = _g10 + _g2
+    _b4 = -_b3 + _g6
+    _b5 = -_b2 + _g1
+    _b6 = _b1*e_0 + _b4*e_1 + _b5*e_2
+    _b7 = _g0 + _g4 + _g8
+    _b8 = (0.5)*_b6*torch.cos(x0) - 0.5*_b7*torch.sin(x0)
+    return (
+        _b1*x2,
+        _b4*x2,
+        _b5*x2,
+        (0.5)*_b8,
+    )
+
+
+#: the forward returning the temps the VJP reads, and the VJP taking them (issue 38)
+SAVED = (_main_saved, _vjp_saved)
+
+
 #: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.vjp), None without a
 #: generated Jacobian
 VJP, JVP = _vjp, _jvp

@@ -141,6 +141,72 @@ def _jvp(e_0, e_1, e_2, phi, omega_0, omega_1, omega_2, _t0, _t1, _t2, _t3, _t4,
     )
 
 
+def _main_saved(e_0, e_1, e_2, phi, omega_0, omega_1, omega_2):
+    """``_main``, and the temps ``_vjp`` would compute again: saved by autograd."""
+    x0 = (0.5)*phi
+    x1 = torch.sin(x0)
+    x2 = (0.25)*x1
+    x3 = e_0*x2
+    x4 = e_1*x2
+    x5 = e_2*x2
+    x6 = -omega_0*x3 - omega_1*x4 - omega_2*x5
+    x7 = (0.25)*torch.cos(x0)
+    x8 = omega_0*x4 - omega_1*x3 + omega_2*x7
+    x9 = -0.25*e_2*omega_0*x1 + omega_1*x7 + omega_2*x3
+    x10 = -x9
+    x11 = -x8
+    x12 = omega_0*x7 + omega_1*x5 - omega_2*x4
+    x13 = -x12
+    return (
+        x6,
+        x8,
+        x10,
+        x11,
+        x6,
+        x12,
+        x9,
+        x13,
+        x6,
+        x13,
+        x10,
+        x11,
+    ), (
+    ), (x0, x1, x2, x3, x4, x5, x7, )
+
+
+def _vjp_saved(e_0, e_1, e_2, phi, omega_0, omega_1, omega_2, x0, x1, x2, x3, x4, x5, x7, _g0, _g1, _g2, _g3, _g4, _g5, _g6, _g7, _g8, _g9, _g10, _g11):
+    """``_vjp`` on the forward's saved temps (7 of them)."""
+    _b0 = _g7 + _g9
+    _b1 = -_b0 + _g5
+    _b2 = _g11 + _g3
+    _b3 = _g10 + _g2
+    _b4 = -_b3 + _g6
+    _b5 = -_b2 + _g1
+    _b6 = _b1*omega_0 + _b4*omega_1 + _b5*omega_2
+    _b7 = _g0 + _g4 + _g8
+    _b8 = _b1*omega_1 - _b7*omega_2
+    _b9 = -_b1*omega_2 + _b5*omega_0 - _b7*omega_1
+    _b10 = _b4*omega_2 - _b5*omega_1 - _b7*omega_0
+    _b11 = _b10*e_0 + _b8*e_2 + _b9*e_1
+    _c0 = _b4*omega_0
+    _b12 = (0.25)*_b11 - 0.25*_c0*e_2
+    _c1 = (0.25)*x1
+    _b13 = _b12*torch.cos(x0) - _b6*_c1
+    return (
+        _b10*x2,
+        _b9*x2,
+        _b8*x2 - _c0*_c1,
+        (0.5)*_b13,
+        _b1*x7 - _b4*_c1*e_2 + _b5*x4 - _b7*x3,
+        _b1*x5 + _b4*x7 - _b5*x3 - _b7*x4,
+        -_b1*x4 + _b4*x3 + _b5*x7 - _b7*x5,
+    )
+
+
+#: the forward returning the temps the VJP reads, and the VJP taking them (issue 38)
+SAVED = (_main_saved, _vjp_saved)
+
+
 #: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.vjp), None without a
 #: generated Jacobian
 VJP, JVP = _vjp, _jvp

@@ -110,6 +110,57 @@ def _jvp(e_0, e_1, e_2, phi, _t0, _t1, _t2, _t3):
     )
 
 
+def _main_saved(e_0, e_1, e_2, phi):
+    """``_main``, and the temps ``_vjp`` would compute again: saved by autograd."""
+    x0 = (0.5)*phi
+    x1 = 2.0*torch.cos(x0)
+    x2 = 2.0*torch.sin(x0)
+    x3 = e_2*x2
+    x4 = -x3
+    x5 = e_1*x2
+    x6 = e_0*x2
+    x7 = -x6
+    x8 = -x5
+    return (
+        x1,
+        x4,
+        x5,
+        x7,
+        x3,
+        x1,
+        x7,
+        x8,
+        x8,
+        x6,
+        x1,
+        x4,
+    ), (
+    ), (x0, x2, )
+
+
+def _vjp_saved(e_0, e_1, e_2, phi, x0, x2, _g0, _g1, _g2, _g3, _g4, _g5, _g6, _g7, _g8, _g9, _g10, _g11):
+    """``_vjp`` on the forward's saved temps (2 of them)."""
+    _b0 = _g7 + _g8
+    _b1 = _g3 + _g6
+    _b2 = -_b1 + _g9
+    _b3 = -_b0 + _g2
+    _b4 = _g1 + _g11
+    _b5 = -_b4 + _g4
+    _b6 = _b2*e_0 + _b3*e_1 + _b5*e_2
+    _b7 = _g0 + _g10 + _g5
+    _b8 = 2.0*_b6*torch.cos(x0) - 2.0*_b7*torch.sin(x0)
+    return (
+        _b2*x2,
+        _b3*x2,
+        _b5*x2,
+        (0.5)*_b8,
+    )
+
+
+#: the forward returning the temps the VJP reads, and the VJP taking them (issue 38)
+SAVED = (_main_saved, _vjp_saved)
+
+
 #: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.vjp), None without a
 #: generated Jacobian
 VJP, JVP = _vjp, _jvp

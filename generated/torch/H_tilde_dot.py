@@ -138,6 +138,70 @@ def _jvp(e_0, e_1, e_2, phi, omega_0, omega_1, omega_2, _t0, _t1, _t2, _t3, _t4,
     )
 
 
+def _main_saved(e_0, e_1, e_2, phi, omega_0, omega_1, omega_2):
+    """``_main``, and the temps ``_vjp`` would compute again: saved by autograd."""
+    x0 = (0.5)*phi
+    x1 = torch.sin(x0)
+    x2 = e_0*x1
+    x3 = e_1*x1
+    x4 = e_2*x1
+    x5 = -omega_0*x2 - omega_1*x3 - omega_2*x4
+    x6 = torch.cos(x0)
+    x7 = -e_0*omega_1*x1 + omega_0*x3 + omega_2*x6
+    x8 = -x7
+    x9 = -omega_0*x4 + omega_1*x6 + omega_2*x2
+    x10 = -e_1*omega_2*x1 + omega_0*x6 + omega_1*x4
+    x11 = -x10
+    x12 = -x9
+    return (
+        x5,
+        x8,
+        x9,
+        x11,
+        x7,
+        x5,
+        x11,
+        x12,
+        x12,
+        x10,
+        x5,
+        x8,
+    ), (
+    ), (x0, x1, x2, x3, x4, x6, )
+
+
+def _vjp_saved(e_0, e_1, e_2, phi, omega_0, omega_1, omega_2, x0, x1, x2, x3, x4, x6, _g0, _g1, _g2, _g3, _g4, _g5, _g6, _g7, _g8, _g9, _g10, _g11):
+    """``_vjp`` on the forward's saved temps (6 of them)."""
+    _b0 = _g7 + _g8
+    _b1 = _g3 + _g6
+    _b2 = -_b1 + _g9
+    _b3 = -_b0 + _g2
+    _b4 = _g1 + _g11
+    _b5 = -_b4 + _g4
+    _b6 = _b2*omega_0 + _b3*omega_1 + _b5*omega_2
+    _b7 = _g0 + _g10 + _g5
+    _b8 = _b2*omega_1 - _b3*omega_0 - _b7*omega_2
+    _b9 = _b5*omega_0 - _b7*omega_1
+    _b10 = _b3*omega_2 - _b7*omega_0
+    _c0 = _b2*omega_2
+    _c1 = _b5*omega_1
+    _b11 = _b10*e_0 + _b8*e_2 + _b9*e_1 - _c0*e_1 - _c1*e_0
+    _b12 = _b11*x6 - _b6*x1
+    return (
+        _b10*x1 - _c1*x1,
+        _b9*x1 - _c0*x1,
+        _b8*x1,
+        (0.5)*_b12,
+        _b2*x6 - _b3*x4 + _b5*x3 - _b7*x2,
+        _b2*x4 + _b3*x6 - _b5*e_0*x1 - _b7*x3,
+        -_b2*e_1*x1 + _b3*x2 + _b5*x6 - _b7*x4,
+    )
+
+
+#: the forward returning the temps the VJP reads, and the VJP taking them (issue 38)
+SAVED = (_main_saved, _vjp_saved)
+
+
 #: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.vjp), None without a
 #: generated Jacobian
 VJP, JVP = _vjp, _jvp

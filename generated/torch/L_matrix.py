@@ -155,6 +155,78 @@ def _jvp(e_0, e_1, e_2, phi, _t0, _t1, _t2, _t3):
     )
 
 
+def _main_saved(e_0, e_1, e_2, phi):
+    """``_main``, and the temps ``_vjp`` would compute again: saved by autograd."""
+    x0 = (e_2*e_2)
+    x1 = (0.5)*phi
+    x2 = torch.sin(x1)
+    x3 = (x2*x2)
+    x4 = 0.5 - x3
+    x5 = (0.5)*x0 + x4*(1.0 - x0)
+    x6 = (e_1*e_1)
+    x7 = x4*(1.0 - x6) + (0.5)*x6
+    x8 = e_0*x3
+    x9 = e_1*x8
+    x10 = x2*torch.cos(x1)
+    x11 = e_2*x10
+    x12 = e_2*x8
+    x13 = e_1*x10
+    x14 = (e_0*e_0)
+    x15 = (0.5)*x14 + x4*(1.0 - x14)
+    x16 = e_0*x10
+    x17 = e_1*e_2*x3
+    return (
+        x5 + x7,
+        x11 - x9,
+        -x12 - x13,
+        -x11 - x9,
+        x15 + x5,
+        x16 - x17,
+        -x12 + x13,
+        -x16 - x17,
+        x15 + x7,
+        -2.0*x16,
+        -2.0*x13,
+        -2.0*x11,
+    ), (
+    ), (x0, x1, x2, x3, x4, x6, x8, x10, x14, )
+
+
+def _vjp_saved(e_0, e_1, e_2, phi, x0, x1, x2, x3, x4, x6, x8, x10, x14, _g0, _g1, _g2, _g3, _g4, _g5, _g6, _g7, _g8, _g9, _g10, _g11):
+    """``_vjp`` on the forward's saved temps (9 of them)."""
+    _b0 = -_g5 - _g7
+    _b1 = _g5 - _g7 - 2.0*_g9
+    _b2 = _g4 + _g8
+    _c0 = 0.5 - x4
+    _b3 = _b2*_c0
+    _b4 = -2.0*_g10 - _g2 + _g6
+    _b5 = -_g2 - _g6
+    _b6 = _g1 - 2.0*_g11 - _g3
+    _b7 = _b1*e_0 + _b4*e_1 + _b6*e_2
+    _b8 = -_g1 - _g3
+    _b9 = _b5*e_2 + _b8*e_1
+    _b10 = _g0 + _g8
+    _b11 = _b10*_c0
+    _b12 = _g0 + _g4
+    _b13 = _b10*(1.0 - x6) + _b12*(1.0 - x0) + _b2*(1.0 - x14)
+    _c1 = _b0*e_2
+    _b14 = -_b13 + _b9*e_0 + _c1*e_1
+    _c2 = torch.cos(x1)
+    _b15 = 2.0*_b14*x2 + _b7*_c2
+    _b16 = _b15*_c2 - _b7*(x2*x2)
+    _b17 = _b12*_c0
+    return (
+        _b1*x10 + 2.0*_b3*e_0 + _b9*x3,
+        2.0*_b11*e_1 + _b4*x10 + _b8*x8 + _c1*x3,
+        _b0*e_1*x3 + 2.0*_b17*e_2 + _b5*x8 + _b6*x10,
+        (0.5)*_b16,
+    )
+
+
+#: the forward returning the temps the VJP reads, and the VJP taking them (issue 38)
+SAVED = (_main_saved, _vjp_saved)
+
+
 #: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.vjp), None without a
 #: generated Jacobian
 VJP, JVP = _vjp, _jvp

@@ -245,6 +245,110 @@ def _jvp(e_0, e_1, e_2, phi, omega_0, omega_1, omega_2, _t0, _t1, _t2, _t3, _t4,
     )
 
 
+def _main_saved(e_0, e_1, e_2, phi, omega_0, omega_1, omega_2):
+    """``_main``, and the temps ``_vjp`` would compute again: saved by autograd."""
+    x0 = (0.5)*phi
+    x1 = torch.sin(x0)
+    x2 = 2.0*(x1*x1)
+    x3 = e_0*x2
+    x4 = e_2*x3
+    x5 = 2.0*x1*torch.cos(x0)
+    x6 = e_1*x5
+    x7 = x4 - x6
+    x8 = (0.5)*omega_1
+    x9 = e_1*x3
+    x10 = e_2*x5
+    x11 = x10 + x9
+    x12 = e_0*x5
+    x13 = omega_0*x12 + omega_1*x6 + omega_2*x10
+    x14 = e_1*e_2*x2
+    x15 = x12 + x14
+    x16 = (e_1*e_1)
+    x17 = 1.0 - x2
+    x18 = x16 + x17*(1.0 - x16)
+    x19 = (e_2*e_2)
+    x20 = x17*(1.0 - x19) + x19
+    x21 = x12 - x14
+    x22 = -x21
+    x23 = (0.5)*omega_0
+    x24 = (e_0*e_0)
+    x25 = x17*(1.0 - x24) + x24
+    x26 = (0.5)*omega_2
+    x27 = -x10 + x9
+    x28 = x4 + x6
+    return (
+        (0.5)*omega_2*x11 - x13 - x7*x8,
+        (0.5)*omega_2*x18 - x15*x8,
+        (0.5)*omega_2*x22 - x20*x8,
+        x23*x7 - x25*x26,
+        (0.5)*omega_0*x15 - x13 - x26*x27,
+        x20*x23 - x26*x28,
+        (0.5)*omega_1*x25 - x11*x23,
+        (0.5)*omega_1*x27 - x18*x23,
+        (0.5)*omega_1*x28 - x13 - x22*x23,
+        -x23*(x18 + x20) + x26*x28 + x27*x8,
+        x11*x23 - x21*x26 - x8*(x20 + x25),
+        x15*x8 + x23*x7 - x26*(x18 + x25),
+    ), (
+    ), (x0, x1, x2, x3, x4, x5, x6, x7, x8, x9, x10, x11, x12, x14, x15, x16, x17, x18, x19, x20, x21, x22, x23, x24, x25, x26, x27, x28, )
+
+
+def _vjp_saved(e_0, e_1, e_2, phi, omega_0, omega_1, omega_2, x0, x1, x2, x3, x4, x5, x6, x7, x8, x9, x10, x11, x12, x14, x15, x16, x17, x18, x19, x20, x21, x22, x23, x24, x25, x26, x27, x28, _g0, _g1, _g2, _g3, _g4, _g5, _g6, _g7, _g8, _g9, _g10, _g11):
+    """``_vjp`` on the forward's saved temps (28 of them)."""
+    _c0 = (0.5)*omega_1
+    _b0 = _c0*_g8 - _g5*x26 + _g9*x26
+    _b1 = _c0*_g7 - _g4*x26 + _g9*x8
+    _b2 = -_g10*x21 + _g11*(-x18 - x25) - _g3*x25 - _g4*x27 - _g5*x28 + _g9*x28
+    _c1 = _g10*x8
+    _c2 = _g11*x26
+    _b3 = -_c1 - _c2 - _g3*x26 + (0.5)*_g6*omega_1
+    _c3 = 1.0 - x17
+    _b4 = _b3*_c3
+    _b5 = _g10*x11 + _g11*x7 + _g3*x7 + _g5*x20 - _g6*x11 - _g7*x18 - _g8*x22 + _g9*(-x18 - x20)
+    _c4 = (0.5)*omega_2
+    _b6 = _c4*_g2 - _g8*x23
+    _b7 = -_b6 - _g10*x26
+    _c5 = _g9*x23
+    _b8 = -_c1 - _c5 - _g2*x8 + _g5*x23
+    _b9 = _b8*_c3
+    _b10 = -_c2 - _c5 + (0.5)*_g1*omega_2 - _g7*x23
+    _b11 = _b10*(1.0 - x16) + _b3*(1.0 - x24) + _b8*(1.0 - x19)
+    _b12 = _b10*_c3
+    _c6 = (0.5)*_g4
+    _b13 = _c6*omega_0 - _g1*x8 + _g11*x8
+    _b14 = _b13 - _b7
+    _b15 = -_g0 - _g4 - _g8
+    _b16 = _b13 + _b15*omega_0 + _b7
+    _b17 = _c4*_g0 + _g10*x23 - _g6*x23
+    _b18 = -_b1 + _b15*omega_2 + _b17
+    _b19 = _b1 + _b17
+    _b20 = -_g0*x7 - _g1*x15 + _g10*(-x20 - x25) + _g11*x15 - _g2*x20 + _g9*x27
+    _b21 = -_g0*x8 + _g11*x23 + _g3*x23
+    _b22 = _b0 + _b15*omega_1 - _b21
+    _b23 = _b16*e_0 + _b18*e_2 + _b22*e_1
+    _b24 = _b0 + _b21
+    _b25 = _b19*e_1 + _b24*e_2
+    _c7 = _b14*e_2
+    _b26 = -_b11 + _b25*e_0 + _c7*e_1
+    _c8 = torch.cos(x0)
+    _c9 = 2.0*_b23
+    _b27 = 4.0*_b26*x1 + _c8*_c9
+    _b28 = _b27*_c8 - _c9*(x1*x1)
+    return (
+        _b16*x5 + _b25*x2 + 2.0*_b4*e_0,
+        2.0*_b12*e_1 + _b19*x3 + _b22*x5 + _c7*x2,
+        _b14*e_1*x2 + _b18*x5 + _b24*x3 + 2.0*_b9*e_2,
+        (0.5)*_b28,
+        _b15*x12 + (0.5)*_b5 + _c6*x15,
+        _b15*x6 + (0.5)*_b20 + (0.5)*_g6*x25 + (0.5)*_g7*x27 + (0.5)*_g8*x28,
+        _b15*x10 + (0.5)*_b2 + (0.5)*_g0*x11 + (0.5)*_g1*x18 + (0.5)*_g2*x22,
+    )
+
+
+#: the forward returning the temps the VJP reads, and the VJP taking them (issue 38)
+SAVED = (_main_saved, _vjp_saved)
+
+
 #: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.vjp), None without a
 #: generated Jacobian
 VJP, JVP = _vjp, _jvp

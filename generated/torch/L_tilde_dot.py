@@ -247,6 +247,118 @@ def _jvp(e_0, e_1, e_2, phi, omega_0, omega_1, omega_2, _t0, _t1, _t2, _t3, _t4,
     )
 
 
+def _main_saved(e_0, e_1, e_2, phi, omega_0, omega_1, omega_2):
+    """``_main``, and the temps ``_vjp`` would compute again: saved by autograd."""
+    x0 = (0.5)*phi
+    x1 = torch.sin(x0)
+    x2 = (x1*x1)
+    x3 = e_2*x2
+    x4 = e_0*x3
+    x5 = torch.cos(x0)
+    x6 = x1*x5
+    x7 = e_1*x6
+    x8 = e_1*x3
+    x9 = e_0*x6
+    x10 = 1.0/x5
+    x11 = e_2*x6
+    x12 = -2.0*omega_0*x9 - 2.0*omega_1*x7 - 2.0*omega_2*x11
+    x13 = (e_0*e_0)
+    x14 = 0.5 - x2
+    x15 = (0.5)*x13 + x14*(1.0 - x13)
+    x16 = (e_1*e_1)
+    x17 = x14*(1.0 - x16) + (0.5)*x16
+    x18 = -e_2*x1*x10*x12 + omega_0*(-x4 + x7) + omega_1*(-x8 - x9) + omega_2*(x15 + x17)
+    x19 = (0.5)/(x5*x5)
+    x20 = -x18*x19
+    x21 = e_0*e_1*x2
+    x22 = (e_2*e_2)
+    x23 = x14*(1.0 - x22) + (0.5)*x22
+    x24 = -e_1*x1*x10*x12 + omega_0*(-x11 - x21) + omega_1*(x15 + x23) + omega_2*(-x8 + x9)
+    x25 = -e_0*x1*x10*x12 + omega_0*(x17 + x23) + omega_1*(x11 - x21) + omega_2*(-x4 - x7)
+    x26 = -x19*x25
+    x27 = -x19*x24
+    return (
+        0.0,
+        x20,
+        x19*x24,
+        x26,
+        x18*x19,
+        0.0,
+        x26,
+        x27,
+        x27,
+        x19*x25,
+        0.0,
+        x20,
+    ), (
+        x5,
+    ), (x0, x1, x2, x3, x4, x5, x6, x7, x8, x9, x10, x11, x12, x13, x14, x15, x16, x17, x18, x19, x21, x22, x23, x24, x25, )
+
+
+def _vjp_saved(e_0, e_1, e_2, phi, omega_0, omega_1, omega_2, x0, x1, x2, x3, x4, x5, x6, x7, x8, x9, x10, x11, x12, x13, x14, x15, x16, x17, x18, x19, x21, x22, x23, x24, x25, _g0, _g1, _g2, _g3, _g4, _g5, _g6, _g7, _g8, _g9, _g10, _g11):
+    """``_vjp`` on the forward's saved temps (25 of them)."""
+    _b0 = _g7 + _g8
+    _b1 = _g3 + _g6
+    _b2 = -_b1*x19 + _g9*x19
+    _b3 = -_b0*x19 + _g2*x19
+    _c0 = _b2*omega_0
+    _c1 = _b3*omega_1
+    _b4 = _c0 + _c1
+    _c2 = 0.5 - x14
+    _b5 = _b4*_c2
+    _c3 = _b2*omega_1
+    _c4 = _b3*omega_0
+    _b6 = -_c3 - _c4
+    _b7 = _g1 + _g11
+    _b8 = -_b0*x24 - _b1*x25 - _b7*x18 + _g2*x24 + _g4*x18 + _g9*x25
+    _b9 = -_b7*x19 + _g4*x19
+    _c5 = _b9*omega_2
+    _b10 = _c0 + _c5
+    _b11 = _b10*_c2
+    _b12 = _c1 + _c5
+    _b13 = _b10*(1.0 - x16) + _b12*(1.0 - x13) + _b4*(1.0 - x22)
+    _b14 = _b12*_c2
+    _c6 = x1*x10
+    _c7 = _b2*e_0
+    _c8 = _b3*e_1
+    _c9 = _b9*e_2
+    _b15 = -_c6*_c7 - _c6*_c8 - _c6*_c9
+    _c10 = 2.0*_b15
+    _b16 = -_c10*omega_2 + _c3 - _c4
+    _c11 = x1*x12
+    _b17 = -_c11*_c7 - _c11*_c8 - _c11*_c9
+    _c12 = _b9*omega_1
+    _c13 = _b3*omega_2
+    _b18 = -_c10*omega_0 - _c12 + _c13
+    _b19 = -_c12 - _c13
+    _c14 = _b2*omega_2
+    _c15 = _b9*omega_0
+    _b20 = -_c10*omega_1 - _c14 + _c15
+    _b21 = _b16*e_2 + _b18*e_0 + _b20*e_1
+    _b22 = -_b17/(x5*x5) + _b21*x1 - _b8/(x5*x5*x5)
+    _b23 = -_c14 - _c15
+    _b24 = _b19*e_1 + _b23*e_0
+    _c16 = _b6*e_1
+    _b25 = -_b13 + _b24*e_2 + _c16*e_0
+    _c17 = x10*x12
+    _b26 = _b21*x5 + 2.0*_b25*x1 - _c17*_c7 - _c17*_c8 - _c17*_c9
+    _b27 = -_b22*x1 + _b26*x5
+    _c18 = _c6*x12
+    return (
+        2.0*_b14*e_0 + _b18*x6 - _b2*_c18 + _b23*x3 + _c16*x2,
+        2.0*_b11*e_1 + _b19*x3 + _b20*x6 - _b3*_c18 + _b6*e_0*x2,
+        _b16*x6 + _b24*x2 + 2.0*_b5*e_2 - _b9*_c18,
+        (0.5)*_b27,
+        _b2*(x17 + x23) + _b3*(-x11 - x21) + _b9*(-x4 + x7) - _c10*x9,
+        _b2*(x11 - x21) + _b3*(x15 + x23) + _b9*(-x8 - x9) - _c10*x7,
+        _b2*(-x4 - x7) + _b3*(-x8 + x9) + _b9*(x15 + x17) - _c10*x11,
+    )
+
+
+#: the forward returning the temps the VJP reads, and the VJP taking them (issue 38)
+SAVED = (_main_saved, _vjp_saved)
+
+
 #: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.vjp), None without a
 #: generated Jacobian
 VJP, JVP = _vjp, _jvp

@@ -131,6 +131,65 @@ def _jvp(e_0, e_1, e_2, phi, _t0, _t1, _t2, _t3):
     )
 
 
+def _main_saved(e_0, e_1, e_2, phi):
+    """``_main``, and the temps ``_vjp`` would compute again: saved by autograd."""
+    x0 = (0.5)*phi
+    x1 = torch.sin(x0)
+    x2 = torch.cos(x0)/x1
+    x3 = (0.5)*x2
+    x4 = (0.5)*e_2
+    x5 = (0.5)*e_1
+    x6 = e_0*x2
+    x7 = x5*x6
+    x8 = x4*x6
+    x9 = (0.5)*e_0
+    x10 = e_1*x2*x4
+    return (
+        x3*(1.0 - (e_0*e_0)),
+        x4 - x7,
+        -x5 - x8,
+        -x4 - x7,
+        x3*(1.0 - (e_1*e_1)),
+        -x10 + x9,
+        x5 - x8,
+        -x10 - x9,
+        x3*(1.0 - (e_2*e_2)),
+        e_0,
+        e_1,
+        e_2,
+    ), (
+        x1,
+    ), (x0, x1, x2, x3, x4, x5, x6, )
+
+
+def _vjp_saved(e_0, e_1, e_2, phi, x0, x1, x2, x3, x4, x5, x6, _g0, _g1, _g2, _g3, _g4, _g5, _g6, _g7, _g8, _g9, _g10, _g11):
+    """``_vjp`` on the forward's saved temps (7 of them)."""
+    _b0 = -_g5 - _g7
+    _b1 = _g5 - _g7
+    _b2 = -_g2 - _g6
+    _b3 = -_g1 - _g3
+    _b4 = _b2*x4 + _b3*x5
+    _b5 = _b3*x6 - _g2 + _g6
+    _c0 = _b0*e_1
+    _b6 = _b2*x6 + _c0*x2 + _g1 - _g3
+    _b7 = _g0*(1.0 - (e_0*e_0)) + _g4*(1.0 - (e_1*e_1)) + _g8*(1.0 - (e_2*e_2))
+    _b8 = _b4*e_0 + (0.5)*_b7 + _c0*x4
+    _c1 = torch.cos(x0)
+    _b9 = -_b8*_c1/(x1*x1)
+    _b10 = -_b8 + _b9*_c1
+    _c2 = 2.0*x3
+    return (
+        (0.5)*_b1 + _b4*x2 - _c2*_g0*e_0 + _g9,
+        _b0*x2*x4 + (0.5)*_b5 - _c2*_g4*e_1 + _g10,
+        (0.5)*_b6 - _c2*_g8*e_2 + _g11,
+        (0.5)*_b10,
+    )
+
+
+#: the forward returning the temps the VJP reads, and the VJP taking them (issue 38)
+SAVED = (_main_saved, _vjp_saved)
+
+
 #: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.vjp), None without a
 #: generated Jacobian
 VJP, JVP = _vjp, _jvp

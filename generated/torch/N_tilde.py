@@ -108,6 +108,55 @@ def _jvp(e_0, e_1, e_2, phi, _t0, _t1, _t2, _t3):
     )
 
 
+def _main_saved(e_0, e_1, e_2, phi):
+    """``_main``, and the temps ``_vjp`` would compute again: saved by autograd."""
+    x0 = (0.5)*phi
+    x1 = torch.sin(x0)
+    x2 = 2.0*x1*torch.cos(x0)
+    x3 = 2.0*(x1*x1)
+    x4 = e_2*x3
+    x5 = e_1*x3
+    x6 = e_0*x3
+    return (
+        x2,
+        -x4,
+        x5,
+        e_0,
+        x4,
+        x2,
+        -x6,
+        e_1,
+        -x5,
+        x6,
+        x2,
+        e_2,
+    ), (
+    ), (x0, x1, x3, )
+
+
+def _vjp_saved(e_0, e_1, e_2, phi, x0, x1, x3, _g0, _g1, _g2, _g3, _g4, _g5, _g6, _g7, _g8, _g9, _g10, _g11):
+    """``_vjp`` on the forward's saved temps (3 of them)."""
+    _b0 = -_g6 + _g9
+    _b1 = _g2 - _g8
+    _b2 = -_g1 + _g4
+    _b3 = _b0*e_0 + _b1*e_1 + _b2*e_2
+    _b4 = _g0 + _g10 + _g5
+    _c0 = torch.cos(x0)
+    _c1 = 2.0*_b4
+    _b5 = 4.0*_b3*x1 + _c0*_c1
+    _b6 = _b5*_c0 - _c1*(x1*x1)
+    return (
+        _b0*x3 + _g3,
+        _b1*x3 + _g7,
+        _b2*x3 + _g11,
+        (0.5)*_b6,
+    )
+
+
+#: the forward returning the temps the VJP reads, and the VJP taking them (issue 38)
+SAVED = (_main_saved, _vjp_saved)
+
+
 #: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.vjp), None without a
 #: generated Jacobian
 VJP, JVP = _vjp, _jvp

@@ -214,6 +214,103 @@ def _jvp(e_0, e_1, e_2, phi, omega_0, omega_1, omega_2, _t0, _t1, _t2, _t3, _t4,
     )
 
 
+def _main_saved(e_0, e_1, e_2, phi, omega_0, omega_1, omega_2):
+    """``_main``, and the temps ``_vjp`` would compute again: saved by autograd."""
+    x0 = (0.5)*phi
+    x1 = torch.sin(x0)
+    x2 = (x1*x1)
+    x3 = 2.0*x2
+    x4 = e_0*omega_0 + e_1*omega_1 + e_2*omega_2
+    x5 = x4*(1.0 - x3)
+    x6 = torch.cos(x0)
+    x7 = 2.0*x1*x4*x6
+    x8 = e_2*x7
+    x9 = (0.5)*e_1
+    x10 = (0.5)*e_0
+    x11 = x6/x1
+    x12 = e_2*x11
+    x13 = x10*x12
+    x14 = x12*x9
+    x15 = (0.5)*x11
+    x16 = omega_0*(-x13 + x9) + omega_1*(-x10 - x14) + omega_2*x15*(1.0 - (e_2*e_2))
+    x17 = e_1*x7
+    x18 = (0.5)*e_2
+    x19 = e_0*x11*x9
+    x20 = omega_0*(-x18 - x19) + omega_1*x15*(1.0 - (e_1*e_1)) + omega_2*(x10 - x14)
+    x21 = omega_0*x15*(1.0 - (e_0*e_0)) + omega_1*(x18 - x19) + omega_2*(-x13 - x9)
+    x22 = e_0*x7
+    return (
+        x5,
+        -2.0*x16*x2 - x8,
+        x17 + x20*x3,
+        x21,
+        x16*x3 + x8,
+        x5,
+        -2.0*x2*x21 - x22,
+        x20,
+        -x17 - 2.0*x2*x20,
+        x21*x3 + x22,
+        x5,
+        x16,
+    ), (
+        x1,
+    ), (x0, x1, x2, x3, x4, x6, x7, x9, x10, x11, x12, x13, x14, x15, x16, x18, x19, x20, x21, )
+
+
+def _vjp_saved(e_0, e_1, e_2, phi, omega_0, omega_1, omega_2, x0, x1, x2, x3, x4, x6, x7, x9, x10, x11, x12, x13, x14, x15, x16, x18, x19, x20, x21, _g0, _g1, _g2, _g3, _g4, _g5, _g6, _g7, _g8, _g9, _g10, _g11):
+    """``_vjp`` on the forward's saved temps (19 of them)."""
+    _b0 = -_g6 + _g9
+    _c0 = 2.0*x2
+    _b1 = -_c0*_g6 + _g3 + _g9*x3
+    _b2 = -_c0*_g8 + _g2*x3 + _g7
+    _c1 = _b1*omega_1
+    _c2 = _b2*omega_0
+    _b3 = -_c1 - _c2
+    _b4 = _c1 - _c2
+    _b5 = _g2 - _g8
+    _b6 = -_c0*_g1 + _g11 + _g4*x3
+    _c3 = _b1*(1.0 - (e_0*e_0))
+    _c4 = _b2*(1.0 - (e_1*e_1))
+    _c5 = _b6*(1.0 - (e_2*e_2))
+    _b7 = _c3*omega_0 + _c4*omega_1 + _c5*omega_2
+    _c6 = _b2*omega_2
+    _c7 = _b6*omega_1
+    _b8 = -_c6 - _c7
+    _c8 = _b1*omega_2
+    _c9 = _b6*omega_0
+    _b9 = -_c8 - _c9
+    _b10 = _b8*x9 + _b9*x10
+    _c10 = _b3*e_0
+    _b11 = _b10*e_2 + (0.5)*_b7 + _c10*x9
+    _b12 = _b9*x12 + _c6 - _c7
+    _b13 = _b8*x12 + _c10*x11 - _c8 + _c9
+    _b14 = -_g1 + _g4
+    _b15 = _b0*e_0 + _b14*e_2 + _b5*e_1
+    _c11 = 2.0*x1
+    _c12 = _b15*_c11
+    _b16 = _b11/x1 + _c12*x4
+    _b17 = _g0 + _g10 + _g5
+    _b18 = _b17*(1.0 - x3) + _c12*x6
+    _b19 = -_b17*x4 + _g2*x20 + _g4*x16 + _g9*x21
+    _b20 = 2.0*_b19 - 2.0*_g1*x16 - 2.0*_g6*x21 - 2.0*_g8*x20
+    _b21 = -_b11*x6/(x1*x1) + 2.0*_b15*x4*x6 + _b20*_c11
+    _b22 = -_b16*x1 + _b21*x6
+    _c13 = 2.0*x15
+    return (
+        _b0*x7 - _b1*_c13*e_0*omega_0 + (0.5)*_b12 + _b18*omega_0 + _b3*x11*x9,
+        (0.5)*_b13 + _b18*omega_1 - _b2*_c13*e_1*omega_1 + _b5*x7,
+        _b10*x11 + _b14*x7 + _b18*omega_2 + (0.5)*_b4 - _b6*_c13*e_2*omega_2,
+        (0.5)*_b22,
+        _b18*e_0 + _b2*(-x18 - x19) + _b6*(-x13 + x9) + _c3*x15,
+        _b1*(x18 - x19) + _b18*e_1 + _b6*(-x10 - x14) + _c4*x15,
+        _b1*(-x13 - x9) + _b18*e_2 + _b2*(x10 - x14) + _c5*x15,
+    )
+
+
+#: the forward returning the temps the VJP reads, and the VJP taking them (issue 38)
+SAVED = (_main_saved, _vjp_saved)
+
+
 #: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.vjp), None without a
 #: generated Jacobian
 VJP, JVP = _vjp, _jvp

@@ -86,6 +86,41 @@ def _jvp(angles_0, angles_1, angles_2, _t0, _t1, _t2):
     )
 
 
+def _main_saved(angles_0, angles_1, angles_2):
+    """``_main``, and the temps ``_vjp`` would compute again: saved by autograd."""
+    x0 = torch.sin(angles_2)
+    x1 = torch.cos(angles_1)
+    x2 = torch.cos(angles_2)
+    return (
+        -x0*x1,
+        x2,
+        0.0,
+        torch.sin(angles_1),
+        0.0,
+        1.0,
+        x1*x2,
+        x0,
+        0.0,
+    ), (
+    ), (x0, x1, x2, )
+
+
+def _vjp_saved(angles_0, angles_1, angles_2, x0, x1, x2, _g0, _g1, _g2, _g3, _g4, _g5, _g6, _g7, _g8):
+    """``_vjp`` on the forward's saved temps (3 of them)."""
+    _b0 = _g1 + _g6*x1
+    _b1 = -_g0*x0 + _g6*x2
+    _b2 = -_g0*x1 + _g7
+    return (
+        0.0,
+        -_b1*torch.sin(angles_1) + _g3*x1,
+        -_b0*x0 + _b2*x2,
+    )
+
+
+#: the forward returning the temps the VJP reads, and the VJP taking them (issue 38)
+SAVED = (_main_saved, _vjp_saved)
+
+
 #: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.vjp), None without a
 #: generated Jacobian
 VJP, JVP = _vjp, _jvp

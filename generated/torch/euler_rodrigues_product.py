@@ -66,6 +66,35 @@ def _jvp(eta1_0, eta1_1, eta1_2, eta1_3, eta2_0, eta2_1, eta2_2, eta2_3, _t0, _t
     )
 
 
+def _main_saved(eta1_0, eta1_1, eta1_2, eta1_3, eta2_0, eta2_1, eta2_2, eta2_3):
+    """``_main``, and the temps ``_vjp`` would compute again: saved by autograd."""
+    return (
+        eta1_0*eta2_3 + eta1_1*eta2_2 - eta1_2*eta2_1 + eta1_3*eta2_0,
+        -eta1_0*eta2_2 + eta1_1*eta2_3 + eta1_2*eta2_0 + eta1_3*eta2_1,
+        eta1_0*eta2_1 - eta1_1*eta2_0 + eta1_2*eta2_3 + eta1_3*eta2_2,
+        -eta1_0*eta2_0 - eta1_1*eta2_1 - eta1_2*eta2_2 + eta1_3*eta2_3,
+    ), (
+    ), ()
+
+
+def _vjp_saved(eta1_0, eta1_1, eta1_2, eta1_3, eta2_0, eta2_1, eta2_2, eta2_3, _g0, _g1, _g2, _g3):
+    """``_vjp`` on the forward's saved temps (0 of them)."""
+    return (
+        _g0*eta2_3 - _g1*eta2_2 + _g2*eta2_1 - _g3*eta2_0,
+        _g0*eta2_2 + _g1*eta2_3 - _g2*eta2_0 - _g3*eta2_1,
+        -_g0*eta2_1 + _g1*eta2_0 + _g2*eta2_3 - _g3*eta2_2,
+        _g0*eta2_0 + _g1*eta2_1 + _g2*eta2_2 + _g3*eta2_3,
+        _g0*eta1_3 + _g1*eta1_2 - _g2*eta1_1 - _g3*eta1_0,
+        -_g0*eta1_2 + _g1*eta1_3 + _g2*eta1_0 - _g3*eta1_1,
+        _g0*eta1_1 - _g1*eta1_0 + _g2*eta1_3 - _g3*eta1_2,
+        _g0*eta1_0 + _g1*eta1_1 + _g2*eta1_2 + _g3*eta1_3,
+    )
+
+
+#: the forward returning the temps the VJP reads, and the VJP taking them (issue 38)
+SAVED = (_main_saved, _vjp_saved)
+
+
 #: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.vjp), None without a
 #: generated Jacobian
 VJP, JVP = _vjp, _jvp

@@ -135,6 +135,72 @@ def _jvp(I_C_00, I_C_01, I_C_02, I_C_10, I_C_11, I_C_12, I_C_20, I_C_21, I_C_22,
     )
 
 
+def _main_saved(I_C_00, I_C_01, I_C_02, I_C_10, I_C_11, I_C_12, I_C_20, I_C_21, I_C_22, m, c_0, c_1, c_2, a_0, a_1, a_2):
+    """``_main``, and the temps ``_vjp`` would compute again: saved by autograd."""
+    x0 = a_1 - c_1
+    x1 = (x0*x0)
+    x2 = a_2 - c_2
+    x3 = (x2*x2)
+    x4 = a_0 - c_0
+    x5 = m*x4
+    x6 = -x0*x5
+    x7 = -x2*x5
+    x8 = (x4*x4)
+    x9 = -m*x0*x2
+    return (
+        I_C_00 + m*(x1 + x3),
+        I_C_01 + x6,
+        I_C_02 + x7,
+        I_C_10 + x6,
+        I_C_11 + m*(x3 + x8),
+        I_C_12 + x9,
+        I_C_20 + x7,
+        I_C_21 + x9,
+        I_C_22 + m*(x1 + x8),
+    ), (
+    ), (x0, x1, x2, x3, x4, x5, x8, )
+
+
+def _vjp_saved(I_C_00, I_C_01, I_C_02, I_C_10, I_C_11, I_C_12, I_C_20, I_C_21, I_C_22, m, c_0, c_1, c_2, a_0, a_1, a_2, x0, x1, x2, x3, x4, x5, x8, _g0, _g1, _g2, _g3, _g4, _g5, _g6, _g7, _g8):
+    """``_vjp`` on the forward's saved temps (7 of them)."""
+    _b0 = _g5 + _g7
+    _c0 = _g4*m
+    _c1 = _g8*m
+    _b1 = _c0 + _c1
+    _b2 = _g2 + _g6
+    _b3 = _g1 + _g3
+    _b4 = -_b2*x2 - _b3*x0
+    _b5 = 2.0*_b1*x4 + _b4*m
+    _c2 = _g0*m
+    _b6 = _c0 + _c2
+    _c3 = _b0*m
+    _b7 = -_b2*x5 + 2.0*_b6*x2 - _c3*x0
+    _b8 = _c1 + _c2
+    _b9 = -_b3*x5 + 2.0*_b8*x0 - _c3*x2
+    return (
+        _g0,
+        _g1,
+        _g2,
+        _g3,
+        _g4,
+        _g5,
+        _g6,
+        _g7,
+        _g8,
+        -_b0*x0*x2 + _b4*x4 + _g0*(x1 + x3) + _g4*(x3 + x8) + _g8*(x1 + x8),
+        -_b5,
+        -_b9,
+        -_b7,
+        _b5,
+        _b9,
+        _b7,
+    )
+
+
+#: the forward returning the temps the VJP reads, and the VJP taking them (issue 38)
+SAVED = (_main_saved, _vjp_saved)
+
+
 #: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.vjp), None without a
 #: generated Jacobian
 VJP, JVP = _vjp, _jvp

@@ -208,6 +208,108 @@ def _jvp(I_C_00, I_C_01, I_C_02, I_C_10, I_C_11, I_C_12, I_C_20, I_C_21, I_C_22,
     )
 
 
+def _main_saved(I_C_00, I_C_01, I_C_02, I_C_10, I_C_11, I_C_12, I_C_20, I_C_21, I_C_22, m, c_0, c_1, c_2, a_0, a_1, a_2):
+    """``_main``, and the temps ``_vjp`` would compute again: saved by autograd."""
+    x0 = a_1 - c_1
+    x1 = (x0*x0)
+    x2 = a_2 - c_2
+    x3 = (x2*x2)
+    x4 = a_0 - c_0
+    x5 = m*x4
+    x6 = -x0*x5
+    x7 = m*x2
+    x8 = -x4*x7
+    x9 = -m*x0
+    x10 = (x4*x4)
+    x11 = -x0*x7
+    x12 = -m*x2
+    x13 = m*x0
+    x14 = -m*x4
+    return (
+        I_C_00 + m*(x1 + x3),
+        I_C_01 + x6,
+        I_C_02 + x8,
+        0.0,
+        x7,
+        x9,
+        I_C_10 + x6,
+        I_C_11 + m*(x10 + x3),
+        I_C_12 + x11,
+        x12,
+        0.0,
+        x5,
+        I_C_20 + x8,
+        I_C_21 + x11,
+        I_C_22 + m*(x1 + x10),
+        x13,
+        x14,
+        0.0,
+        0.0,
+        x12,
+        x13,
+        m,
+        0.0,
+        0.0,
+        x7,
+        0.0,
+        x14,
+        0.0,
+        m,
+        0.0,
+        x9,
+        x5,
+        0.0,
+        0.0,
+        0.0,
+        m,
+    ), (
+    ), (x0, x1, x2, x3, x4, x5, x7, x10, )
+
+
+def _vjp_saved(I_C_00, I_C_01, I_C_02, I_C_10, I_C_11, I_C_12, I_C_20, I_C_21, I_C_22, m, c_0, c_1, c_2, a_0, a_1, a_2, x0, x1, x2, x3, x4, x5, x7, x10, _g0, _g1, _g2, _g3, _g4, _g5, _g6, _g7, _g8, _g9, _g10, _g11, _g12, _g13, _g14, _g15, _g16, _g17, _g18, _g19, _g20, _g21, _g22, _g23, _g24, _g25, _g26, _g27, _g28, _g29, _g30, _g31, _g32, _g33, _g34, _g35):
+    """``_vjp`` on the forward's saved temps (8 of them)."""
+    _b0 = _g16 + _g26
+    _b1 = _g15 + _g20
+    _b2 = _g19 + _g9
+    _b3 = _g13 + _g8
+    _c0 = _g14*m
+    _c1 = _g7*m
+    _b4 = _c0 + _c1
+    _b5 = _g30 + _g5
+    _b6 = _g12 + _g2
+    _b7 = -_b3*x0 - _b6*x4 + _g24 + _g4
+    _b8 = _g1 + _g6
+    _b9 = -_b8*x0 + _g11 + _g31
+    _b10 = -_b0*m + 2.0*_b4*x4 - _b6*x7 + _b9*m
+    _c2 = _g0*m
+    _b11 = _c1 + _c2
+    _b12 = 2.0*_b11*x2 - _b2*m + _b7*m
+    _b13 = _c0 + _c2
+    _b14 = _b1*m + 2.0*_b13*x0 - _b3*x7 - _b5*m - _b8*x5
+    return (
+        _g0,
+        _g1,
+        _g2,
+        _g6,
+        _g7,
+        _g8,
+        _g12,
+        _g13,
+        _g14,
+        -_b0*x4 + _b1*x0 - _b2*x2 - _b5*x0 + _b7*x2 + _b9*x4 + _g0*(x1 + x3) + _g14*(x1 + x10) + _g21 + _g28 + _g35 + _g7*(x10 + x3),
+        -_b10,
+        -_b14,
+        -_b12,
+        _b10,
+        _b14,
+        _b12,
+    )
+
+
+#: the forward returning the temps the VJP reads, and the VJP taking them (issue 38)
+SAVED = (_main_saved, _vjp_saved)
+
+
 #: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.vjp), None without a
 #: generated Jacobian
 VJP, JVP = _vjp, _jvp

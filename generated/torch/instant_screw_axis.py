@@ -160,6 +160,76 @@ def _jvp(omega_0, omega_1, omega_2, a_0, a_1, a_2, a_dot_0, a_dot_1, a_dot_2, _t
     )
 
 
+def _main_saved(omega_0, omega_1, omega_2, a_0, a_1, a_2, a_dot_0, a_dot_1, a_dot_2):
+    """``_main``, and the temps ``_vjp`` would compute again: saved by autograd."""
+    x0 = (omega_0*omega_0) + (omega_1*omega_1) + (omega_2*omega_2)
+    x1 = 1.0/x0
+    x2 = a_0*omega_1 - a_1*omega_0 + a_dot_2
+    x3 = -a_0*omega_2 + a_2*omega_0 + a_dot_1
+    x4 = omega_1*x2 - omega_2*x3
+    x5 = x1*x4
+    x6 = a_1*omega_2 - a_2*omega_1 + a_dot_0
+    x7 = -omega_0*x2 + omega_2*x6
+    x8 = x1*x7
+    x9 = x1*(omega_0*x3 - omega_1*x6)
+    x10 = 1.0/torch.sqrt(x0)
+    return (
+        x5,
+        x8,
+        x9,
+        x1*(a_dot_0*omega_0 + a_dot_1*omega_1 + a_dot_2*omega_2),
+        omega_0*x10,
+        omega_1*x10,
+        omega_2*x10,
+        x10*(-omega_1*x9 + omega_2*x1*x7),
+        x10*(omega_0*x9 - omega_2*x5),
+        x10*(-omega_0*x8 + omega_1*x1*x4),
+    ), (
+        x0,
+    ), (x0, x1, x2, x3, x4, x5, x6, x7, x8, x9, x10, )
+
+
+def _vjp_saved(omega_0, omega_1, omega_2, a_0, a_1, a_2, a_dot_0, a_dot_1, a_dot_2, x0, x1, x2, x3, x4, x5, x6, x7, x8, x9, x10, _g0, _g1, _g2, _g3, _g4, _g5, _g6, _g7, _g8, _g9):
+    """``_vjp`` on the forward's saved temps (11 of them)."""
+    _b0 = _g4*omega_0 + _g5*omega_1 + _g6*omega_2 + _g7*(-omega_1*x9 + omega_2*x1*x7) + _g8*(omega_0*x9 - omega_2*x5) + _g9*(-omega_0*x8 + omega_1*x1*x4)
+    _c0 = omega_0*x10
+    _c1 = _g7*x10
+    _b1 = _c0*_g8 - _c1*omega_1 + _g2
+    _b2 = -_c0*_g9 + _g1
+    _c2 = omega_2*x1
+    _b3 = _b2*x1 + _c1*_c2
+    _c3 = omega_1*x1
+    _b4 = -_b1*_c3 + _b3*omega_2
+    _c4 = _g8*x10
+    _b5 = -_c4*omega_2 + _g0
+    _c5 = _g9*x10
+    _b6 = _b5*x1 + _c3*_c5
+    _c6 = _b1*x1
+    _b7 = -_b6*omega_2 + _c6*omega_0
+    _b8 = -_b3*omega_0 + _b6*omega_1
+    _c7 = _c1*x7
+    _c8 = _c5*x4
+    _b9 = _b1*(omega_0*x3 - omega_1*x6) + _b2*x7 + _b5*x4 + _c7*omega_2 + _c8*omega_1 + _g3*(a_dot_0*omega_0 + a_dot_1*omega_1 + a_dot_2*omega_2)
+    _b10 = -0.5*_b0/(x0*torch.sqrt(x0)) - _b9/(x0*x0)
+    _c9 = 2.0*_b10
+    _c10 = _g3*x1
+    return (
+        -_b3*x2 + _b7*a_2 - _b8*a_1 + _c10*a_dot_0 + _c4*x9 - _c5*x8 + _c6*x3 + _c9*omega_0 + _g4*x10,
+        -_b4*a_2 + _b6*x2 + _b8*a_0 - _c1*x9 + _c10*a_dot_1 - _c6*x6 + _c8*x1 + _c9*omega_1 + _g5*x10,
+        _b3*x6 + _b4*a_1 - _b6*x3 - _b7*a_0 + _c10*a_dot_2 - _c4*x5 + _c7*x1 + _c9*omega_2 + _g6*x10,
+        -_b7*omega_2 + _b8*omega_1,
+        _b4*omega_2 - _b8*omega_0,
+        -_b4*omega_1 + _b7*omega_0,
+        _b4 + _c10*omega_0,
+        _b7 + _c3*_g3,
+        _b8 + _c2*_g3,
+    )
+
+
+#: the forward returning the temps the VJP reads, and the VJP taking them (issue 38)
+SAVED = (_main_saved, _vjp_saved)
+
+
 #: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.vjp), None without a
 #: generated Jacobian
 VJP, JVP = _vjp, _jvp

@@ -89,6 +89,51 @@ def _jvp(I_C_00, I_C_01, I_C_02, I_C_10, I_C_11, I_C_12, I_C_20, I_C_21, I_C_22,
     )
 
 
+def _main_saved(I_C_00, I_C_01, I_C_02, I_C_10, I_C_11, I_C_12, I_C_20, I_C_21, I_C_22, m, omega_0, omega_1, omega_2, c_dot_0, c_dot_1, c_dot_2):
+    """``_main``, and the temps ``_vjp`` would compute again: saved by autograd."""
+    x0 = (0.5)*m
+    return (
+        (c_dot_0*c_dot_0)*x0 + (c_dot_1*c_dot_1)*x0 + (c_dot_2*c_dot_2)*x0 + (0.5)*omega_0*(I_C_00*omega_0 + I_C_10*omega_1 + I_C_20*omega_2) + (0.5)*omega_1*(I_C_01*omega_0 + I_C_11*omega_1 + I_C_21*omega_2) + (0.5)*omega_2*(I_C_02*omega_0 + I_C_12*omega_1 + I_C_22*omega_2),
+    ), (
+    ), (x0, )
+
+
+def _vjp_saved(I_C_00, I_C_01, I_C_02, I_C_10, I_C_11, I_C_12, I_C_20, I_C_21, I_C_22, m, omega_0, omega_1, omega_2, c_dot_0, c_dot_1, c_dot_2, x0, _g0):
+    """``_vjp`` on the forward's saved temps (1 of them)."""
+    _b0 = _g0*((c_dot_0*c_dot_0) + (c_dot_1*c_dot_1) + (c_dot_2*c_dot_2))
+    _c0 = (0.5)*_g0
+    _c1 = _c0*omega_0
+    _c2 = _c1*omega_1
+    _c3 = _c1*omega_2
+    _c4 = _c0*omega_1*omega_2
+    _c5 = (0.5)*omega_1
+    _c6 = (0.5)*omega_2
+    _c7 = (0.5)*omega_0
+    _c8 = 2.0*_g0*x0
+    return (
+        _c0*(omega_0*omega_0),
+        _c2,
+        _c3,
+        _c2,
+        _c0*(omega_1*omega_1),
+        _c4,
+        _c3,
+        _c4,
+        _c0*(omega_2*omega_2),
+        (0.5)*_b0,
+        _g0*(I_C_00*omega_0 + I_C_01*_c5 + I_C_02*_c6 + I_C_10*_c5 + I_C_20*_c6),
+        _g0*(I_C_01*_c7 + I_C_10*_c7 + I_C_11*omega_1 + I_C_12*_c6 + I_C_21*_c6),
+        _g0*(I_C_02*_c7 + I_C_12*_c5 + I_C_20*_c7 + I_C_21*_c5 + I_C_22*omega_2),
+        _c8*c_dot_0,
+        _c8*c_dot_1,
+        _c8*c_dot_2,
+    )
+
+
+#: the forward returning the temps the VJP reads, and the VJP taking them (issue 38)
+SAVED = (_main_saved, _vjp_saved)
+
+
 #: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.vjp), None without a
 #: generated Jacobian
 VJP, JVP = _vjp, _jvp

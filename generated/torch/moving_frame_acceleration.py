@@ -206,6 +206,104 @@ def _jvp(o_ddot_0, o_ddot_1, o_ddot_2, Q_00, Q_01, Q_02, Q_10, Q_11, Q_12, Q_20,
     )
 
 
+def _main_saved(o_ddot_0, o_ddot_1, o_ddot_2, Q_00, Q_01, Q_02, Q_10, Q_11, Q_12, Q_20, Q_21, Q_22, omega_0, omega_1, omega_2, omega_dot_0, omega_dot_1, omega_dot_2, rho_M_0, rho_M_1, rho_M_2, rho_dot_M_0, rho_dot_M_1, rho_dot_M_2, rho_ddot_M_0, rho_ddot_M_1, rho_ddot_M_2):
+    """``_main``, and the temps ``_vjp`` would compute again: saved by autograd."""
+    x0 = 2.0*omega_2
+    x1 = omega_0*omega_2
+    x2 = omega_dot_1 + x1
+    x3 = omega_0*omega_1
+    x4 = -omega_dot_2 + x3
+    x5 = (omega_1*omega_1)
+    x6 = (omega_2*omega_2)
+    x7 = -x5 - x6
+    x8 = 2.0*omega_0
+    x9 = omega_dot_2 + x3
+    x10 = omega_1*omega_2
+    x11 = -omega_dot_0 + x10
+    x12 = (omega_0*omega_0)
+    x13 = -x12 - x6
+    x14 = 2.0*omega_1
+    x15 = omega_dot_0 + x10
+    x16 = -omega_dot_1 + x1
+    x17 = -x12 - x5
+    return (
+        Q_00*rho_ddot_M_0 + Q_01*rho_ddot_M_1 + Q_02*rho_ddot_M_2 + o_ddot_0 + rho_M_0*(Q_00*x7 + Q_10*x4 + Q_20*x2) + rho_M_1*(Q_01*x7 + Q_11*x4 + Q_21*x2) + rho_M_2*(Q_02*x7 + Q_12*x4 + Q_22*x2) + rho_dot_M_0*(-Q_10*x0 + 2.0*Q_20*omega_1) + rho_dot_M_1*(-Q_11*x0 + 2.0*Q_21*omega_1) + rho_dot_M_2*(-Q_12*x0 + 2.0*Q_22*omega_1),
+        Q_10*rho_ddot_M_0 + Q_11*rho_ddot_M_1 + Q_12*rho_ddot_M_2 + o_ddot_1 + rho_M_0*(Q_00*x9 + Q_10*x13 + Q_20*x11) + rho_M_1*(Q_01*x9 + Q_11*x13 + Q_21*x11) + rho_M_2*(Q_02*x9 + Q_12*x13 + Q_22*x11) + rho_dot_M_0*(Q_00*x0 - Q_20*x8) + rho_dot_M_1*(Q_01*x0 - Q_21*x8) + rho_dot_M_2*(Q_02*x0 - Q_22*x8),
+        Q_20*rho_ddot_M_0 + Q_21*rho_ddot_M_1 + Q_22*rho_ddot_M_2 + o_ddot_2 + rho_M_0*(Q_00*x16 + Q_10*x15 + Q_20*x17) + rho_M_1*(Q_01*x16 + Q_11*x15 + Q_21*x17) + rho_M_2*(Q_02*x16 + Q_12*x15 + Q_22*x17) + rho_dot_M_0*(-Q_00*x14 + 2.0*Q_10*omega_0) + rho_dot_M_1*(-Q_01*x14 + 2.0*Q_11*omega_0) + rho_dot_M_2*(-Q_02*x14 + 2.0*Q_12*omega_0),
+    ), (
+    ), (x0, x1, x2, x3, x4, x5, x6, x7, x8, x9, x10, x11, x12, x13, x14, x15, x16, x17, )
+
+
+def _vjp_saved(o_ddot_0, o_ddot_1, o_ddot_2, Q_00, Q_01, Q_02, Q_10, Q_11, Q_12, Q_20, Q_21, Q_22, omega_0, omega_1, omega_2, omega_dot_0, omega_dot_1, omega_dot_2, rho_M_0, rho_M_1, rho_M_2, rho_dot_M_0, rho_dot_M_1, rho_dot_M_2, rho_ddot_M_0, rho_ddot_M_1, rho_ddot_M_2, x0, x1, x2, x3, x4, x5, x6, x7, x8, x9, x10, x11, x12, x13, x14, x15, x16, x17, _g0, _g1, _g2):
+    """``_vjp`` on the forward's saved temps (18 of them)."""
+    _c0 = Q_20*rho_M_0 + Q_21*rho_M_1 + Q_22*rho_M_2
+    _b0 = _c0*_g2
+    _c1 = Q_00*rho_M_0 + Q_01*rho_M_1 + Q_02*rho_M_2
+    _b1 = _c1*_g2
+    _c2 = Q_10*rho_M_0 + Q_11*rho_M_1 + Q_12*rho_M_2
+    _b2 = _c2*_g2
+    _c3 = Q_00*rho_dot_M_0 + Q_01*rho_dot_M_1 + Q_02*rho_dot_M_2
+    _b3 = -_c3*_g2
+    _b4 = _c2*_g1
+    _b5 = -_b0 - _b4
+    _b6 = _c0*_g1
+    _b7 = _b2 + _b6
+    _b8 = _c1*_g1
+    _c4 = Q_20*rho_dot_M_0
+    _c5 = Q_21*rho_dot_M_1
+    _c6 = Q_22*rho_dot_M_2
+    _b9 = _g1*(-_c4 - _c5 - _c6)
+    _b10 = _c1*_g0
+    _b11 = -_b10 - _b4
+    _b12 = -_b0 - _b10
+    _b13 = _c2*_g0
+    _b14 = _b13 + _b8
+    _b15 = _c0*_g0
+    _b16 = _b1 + _b15
+    _c7 = Q_10*rho_dot_M_0
+    _c8 = Q_11*rho_dot_M_1
+    _c9 = Q_12*rho_dot_M_2
+    _b17 = _c3*_g1 + _g0*(-_c7 - _c8 - _c9)
+    _c10 = rho_dot_M_0*x0
+    _c11 = rho_dot_M_1*x0
+    _c12 = rho_dot_M_2*x0
+    _c13 = 2.0*omega_0
+    _c14 = 2.0*omega_1
+    return (
+        _g0,
+        _g1,
+        _g2,
+        _g0*(rho_M_0*x7 + rho_ddot_M_0) + _g1*(_c10 + rho_M_0*x9) + _g2*(rho_M_0*x16 - rho_dot_M_0*x14),
+        _g0*(rho_M_1*x7 + rho_ddot_M_1) + _g1*(_c11 + rho_M_1*x9) + _g2*(rho_M_1*x16 - rho_dot_M_1*x14),
+        _g0*(rho_M_2*x7 + rho_ddot_M_2) + _g1*(_c12 + rho_M_2*x9) + _g2*(rho_M_2*x16 - rho_dot_M_2*x14),
+        _g0*(-_c10 + rho_M_0*x4) + _g1*(rho_M_0*x13 + rho_ddot_M_0) + _g2*(_c13*rho_dot_M_0 + rho_M_0*x15),
+        _g0*(-_c11 + rho_M_1*x4) + _g1*(rho_M_1*x13 + rho_ddot_M_1) + _g2*(_c13*rho_dot_M_1 + rho_M_1*x15),
+        _g0*(-_c12 + rho_M_2*x4) + _g1*(rho_M_2*x13 + rho_ddot_M_2) + _g2*(_c13*rho_dot_M_2 + rho_M_2*x15),
+        _g0*(_c14*rho_dot_M_0 + rho_M_0*x2) + _g1*(rho_M_0*x11 - rho_dot_M_0*x8) + _g2*(rho_M_0*x17 + rho_ddot_M_0),
+        _g0*(_c14*rho_dot_M_1 + rho_M_1*x2) + _g1*(rho_M_1*x11 - rho_dot_M_1*x8) + _g2*(rho_M_1*x17 + rho_ddot_M_1),
+        _g0*(_c14*rho_dot_M_2 + rho_M_2*x2) + _g1*(rho_M_2*x11 - rho_dot_M_2*x8) + _g2*(rho_M_2*x17 + rho_ddot_M_2),
+        _b14*omega_1 + _b16*omega_2 + _b5*_c13 + 2.0*_b9 + _g2*(2.0*_c7 + 2.0*_c8 + 2.0*_c9),
+        _b12*_c14 + _b14*omega_0 + 2.0*_b3 + _b7*omega_2 + _g0*(2.0*_c4 + 2.0*_c5 + 2.0*_c6),
+        2.0*_b11*omega_2 + _b16*omega_0 + 2.0*_b17 + _b7*omega_1,
+        _b2 - _b6,
+        -_b1 + _b15,
+        -_b13 + _b8,
+        _g0*(Q_00*x7 + Q_10*x4 + Q_20*x2) + _g1*(Q_00*x9 + Q_10*x13 + Q_20*x11) + _g2*(Q_00*x16 + Q_10*x15 + Q_20*x17),
+        _g0*(Q_01*x7 + Q_11*x4 + Q_21*x2) + _g1*(Q_01*x9 + Q_11*x13 + Q_21*x11) + _g2*(Q_01*x16 + Q_11*x15 + Q_21*x17),
+        _g0*(Q_02*x7 + Q_12*x4 + Q_22*x2) + _g1*(Q_02*x9 + Q_12*x13 + Q_22*x11) + _g2*(Q_02*x16 + Q_12*x15 + Q_22*x17),
+        _g0*(-Q_10*x0 + 2.0*Q_20*omega_1) + _g1*(Q_00*x0 - Q_20*x8) + _g2*(-Q_00*x14 + 2.0*Q_10*omega_0),
+        _g0*(-Q_11*x0 + 2.0*Q_21*omega_1) + _g1*(Q_01*x0 - Q_21*x8) + _g2*(-Q_01*x14 + 2.0*Q_11*omega_0),
+        _g0*(-Q_12*x0 + 2.0*Q_22*omega_1) + _g1*(Q_02*x0 - Q_22*x8) + _g2*(-Q_02*x14 + 2.0*Q_12*omega_0),
+        Q_00*_g0 + Q_10*_g1 + Q_20*_g2,
+        Q_01*_g0 + Q_11*_g1 + Q_21*_g2,
+        Q_02*_g0 + Q_12*_g1 + Q_22*_g2,
+    )
+
+
+#: the forward returning the temps the VJP reads, and the VJP taking them (issue 38)
+SAVED = (_main_saved, _vjp_saved)
+
+
 #: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.vjp), None without a
 #: generated Jacobian
 VJP, JVP = _vjp, _jvp

@@ -96,6 +96,54 @@ def _jvp(I_C_00, I_C_01, I_C_02, I_C_10, I_C_11, I_C_12, I_C_20, I_C_21, I_C_22,
     )
 
 
+def _main_saved(I_C_00, I_C_01, I_C_02, I_C_10, I_C_11, I_C_12, I_C_20, I_C_21, I_C_22, m, omega_0, omega_1, omega_2, omega_dot_0, omega_dot_1, omega_dot_2, c_ddot_0, c_ddot_1, c_ddot_2):
+    """``_main``, and the temps ``_vjp`` would compute again: saved by autograd."""
+    x0 = I_C_20*omega_0 + I_C_21*omega_1 + I_C_22*omega_2
+    x1 = I_C_10*omega_0 + I_C_11*omega_1 + I_C_12*omega_2
+    x2 = I_C_00*omega_0 + I_C_01*omega_1 + I_C_02*omega_2
+    return (
+        I_C_00*omega_dot_0 + I_C_01*omega_dot_1 + I_C_02*omega_dot_2 + omega_1*x0 - omega_2*x1,
+        I_C_10*omega_dot_0 + I_C_11*omega_dot_1 + I_C_12*omega_dot_2 - omega_0*x0 + omega_2*x2,
+        I_C_20*omega_dot_0 + I_C_21*omega_dot_1 + I_C_22*omega_dot_2 + omega_0*x1 - omega_1*x2,
+        c_ddot_0*m,
+        c_ddot_1*m,
+        c_ddot_2*m,
+    ), (
+    ), (x0, x1, x2, )
+
+
+def _vjp_saved(I_C_00, I_C_01, I_C_02, I_C_10, I_C_11, I_C_12, I_C_20, I_C_21, I_C_22, m, omega_0, omega_1, omega_2, omega_dot_0, omega_dot_1, omega_dot_2, c_ddot_0, c_ddot_1, c_ddot_2, x0, x1, x2, _g0, _g1, _g2, _g3, _g4, _g5):
+    """``_vjp`` on the forward's saved temps (3 of them)."""
+    _b0 = _g1*omega_2 - _g2*omega_1
+    _b1 = -_g0*omega_2 + _g2*omega_0
+    _b2 = _g0*omega_1 - _g1*omega_0
+    return (
+        _b0*omega_0 + _g0*omega_dot_0,
+        _b0*omega_1 + _g0*omega_dot_1,
+        _b0*omega_2 + _g0*omega_dot_2,
+        _b1*omega_0 + _g1*omega_dot_0,
+        _b1*omega_1 + _g1*omega_dot_1,
+        _b1*omega_2 + _g1*omega_dot_2,
+        _b2*omega_0 + _g2*omega_dot_0,
+        _b2*omega_1 + _g2*omega_dot_1,
+        _b2*omega_2 + _g2*omega_dot_2,
+        _g3*c_ddot_0 + _g4*c_ddot_1 + _g5*c_ddot_2,
+        I_C_00*_b0 + I_C_10*_b1 + I_C_20*_b2 - _g1*x0 + _g2*x1,
+        I_C_01*_b0 + I_C_11*_b1 + I_C_21*_b2 + _g0*x0 - _g2*x2,
+        I_C_02*_b0 + I_C_12*_b1 + I_C_22*_b2 - _g0*x1 + _g1*x2,
+        I_C_00*_g0 + I_C_10*_g1 + I_C_20*_g2,
+        I_C_01*_g0 + I_C_11*_g1 + I_C_21*_g2,
+        I_C_02*_g0 + I_C_12*_g1 + I_C_22*_g2,
+        _g3*m,
+        _g4*m,
+        _g5*m,
+    )
+
+
+#: the forward returning the temps the VJP reads, and the VJP taking them (issue 38)
+SAVED = (_main_saved, _vjp_saved)
+
+
 #: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.vjp), None without a
 #: generated Jacobian
 VJP, JVP = _vjp, _jvp

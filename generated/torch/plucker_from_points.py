@@ -137,6 +137,50 @@ def _jvp(p1_0, p1_1, p1_2, p2_0, p2_1, p2_2, _t0, _t1, _t2, _t3, _t4, _t5):
     )
 
 
+def _main_saved(p1_0, p1_1, p1_2, p2_0, p2_1, p2_2):
+    """``_main``, and the temps ``_vjp`` would compute again: saved by autograd."""
+    x0 = -p1_0 + p2_0
+    x1 = -p1_1 + p2_1
+    x2 = -p1_2 + p2_2
+    x3 = (x0*x0) + (x1*x1) + (x2*x2)
+    x4 = 1.0/torch.sqrt(x3)
+    return (
+        x0*x4,
+        x1*x4,
+        x2*x4,
+        x4*_diffprod(p1_1, p2_2, p1_2, p2_1),
+        x4*_diffprod(-p1_0, p2_2, -p1_2, p2_0),
+        x4*_diffprod(p1_0, p2_1, p1_1, p2_0),
+    ), (
+        x3,
+    ), (x0, x1, x2, x3, x4, )
+
+
+def _vjp_saved(p1_0, p1_1, p1_2, p2_0, p2_1, p2_2, x0, x1, x2, x3, x4, _g0, _g1, _g2, _g3, _g4, _g5):
+    """``_vjp`` on the forward's saved temps (5 of them)."""
+    _b0 = _g0*x0 + _g1*x1 + _g2*x2 + _g3*_diffprod(p1_1, p2_2, p1_2, p2_1) + _g4*_diffprod(-p1_0, p2_2, -p1_2, p2_0) + _g5*_diffprod(p1_0, p2_1, p1_1, p2_0)
+    _b1 = -0.5*_b0/(x3*torch.sqrt(x3))
+    _c0 = 2.0*_b1
+    _b2 = _c0*x2 + _g2*x4
+    _b3 = _c0*x1 + _g1*x4
+    _b4 = _c0*x0 + _g0*x4
+    _c1 = _g5*x4
+    _c2 = _g3*x4
+    _c3 = _g4*x4
+    return (
+        -_b4 - _g4*p2_2*x4 + _g5*p2_1*x4,
+        -_b3 - _c1*p2_0 + _g3*p2_2*x4,
+        -_b2 - _c2*p2_1 + _g4*p2_0*x4,
+        _b4 - _c1*p1_1 + _c3*p1_2,
+        _b3 + _c1*p1_0 - _c2*p1_2,
+        _b2 + _c2*p1_1 - _c3*p1_0,
+    )
+
+
+#: the forward returning the temps the VJP reads, and the VJP taking them (issue 38)
+SAVED = (_main_saved, _vjp_saved)
+
+
 #: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.vjp), None without a
 #: generated Jacobian
 VJP, JVP = _vjp, _jvp

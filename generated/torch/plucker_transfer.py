@@ -89,6 +89,47 @@ def _jvp(kappa_A_0, kappa_A_1, kappa_A_2, kappa_A_3, kappa_A_4, kappa_A_5, a_0, 
     )
 
 
+def _main_saved(kappa_A_0, kappa_A_1, kappa_A_2, kappa_A_3, kappa_A_4, kappa_A_5, a_0, a_1, a_2, b_0, b_1, b_2):
+    """``_main``, and the temps ``_vjp`` would compute again: saved by autograd."""
+    x0 = a_2 - b_2
+    x1 = a_1 - b_1
+    x2 = a_0 - b_0
+    return (
+        kappa_A_0,
+        kappa_A_1,
+        kappa_A_2,
+        -kappa_A_1*x0 + kappa_A_2*x1 + kappa_A_3,
+        kappa_A_0*x0 - kappa_A_2*x2 + kappa_A_4,
+        -kappa_A_0*x1 + kappa_A_1*x2 + kappa_A_5,
+    ), (
+    ), (x0, x1, x2, )
+
+
+def _vjp_saved(kappa_A_0, kappa_A_1, kappa_A_2, kappa_A_3, kappa_A_4, kappa_A_5, a_0, a_1, a_2, b_0, b_1, b_2, x0, x1, x2, _g0, _g1, _g2, _g3, _g4, _g5):
+    """``_vjp`` on the forward's saved temps (3 of them)."""
+    _b0 = -_g4*kappa_A_2 + _g5*kappa_A_1
+    _b1 = _g3*kappa_A_2 - _g5*kappa_A_0
+    _b2 = -_g3*kappa_A_1 + _g4*kappa_A_0
+    return (
+        _g0 + _g4*x0 - _g5*x1,
+        _g1 - _g3*x0 + _g5*x2,
+        _g2 + _g3*x1 - _g4*x2,
+        _g3,
+        _g4,
+        _g5,
+        _b0,
+        _b1,
+        _b2,
+        -_b0,
+        -_b1,
+        -_b2,
+    )
+
+
+#: the forward returning the temps the VJP reads, and the VJP taking them (issue 38)
+SAVED = (_main_saved, _vjp_saved)
+
+
 #: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.vjp), None without a
 #: generated Jacobian
 VJP, JVP = _vjp, _jvp

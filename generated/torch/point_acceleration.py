@@ -101,6 +101,53 @@ def _jvp(a_ddot_0, a_ddot_1, a_ddot_2, omega_0, omega_1, omega_2, omega_dot_0, o
     )
 
 
+def _main_saved(a_ddot_0, a_ddot_1, a_ddot_2, omega_0, omega_1, omega_2, omega_dot_0, omega_dot_1, omega_dot_2, p_0, p_1, p_2, a_0, a_1, a_2):
+    """``_main``, and the temps ``_vjp`` would compute again: saved by autograd."""
+    x0 = -a_2 + p_2
+    x1 = -a_1 + p_1
+    x2 = -a_0 + p_0
+    x3 = omega_0*x1 - omega_1*x2
+    x4 = -omega_0*x0 + omega_2*x2
+    x5 = omega_1*x0 - omega_2*x1
+    return (
+        a_ddot_0 + omega_1*x3 - omega_2*x4 + omega_dot_1*x0 - omega_dot_2*x1,
+        a_ddot_1 - omega_0*x3 + omega_2*x5 - omega_dot_0*x0 + omega_dot_2*x2,
+        a_ddot_2 + omega_0*x4 - omega_1*x5 + omega_dot_0*x1 - omega_dot_1*x2,
+    ), (
+    ), (x0, x1, x2, x3, x4, x5, )
+
+
+def _vjp_saved(a_ddot_0, a_ddot_1, a_ddot_2, omega_0, omega_1, omega_2, omega_dot_0, omega_dot_1, omega_dot_2, p_0, p_1, p_2, a_0, a_1, a_2, x0, x1, x2, x3, x4, x5, _g0, _g1, _g2):
+    """``_vjp`` on the forward's saved temps (6 of them)."""
+    _b0 = _g1*omega_2 - _g2*omega_1
+    _b1 = -_g0*omega_2 + _g2*omega_0
+    _b2 = _g0*omega_1 - _g1*omega_0
+    _b3 = _b1*omega_2 - _b2*omega_1 + _g1*omega_dot_2 - _g2*omega_dot_1
+    _b4 = -_b0*omega_2 + _b2*omega_0 - _g0*omega_dot_2 + _g2*omega_dot_0
+    _b5 = _b0*omega_1 - _b1*omega_0 + _g0*omega_dot_1 - _g1*omega_dot_0
+    return (
+        _g0,
+        _g1,
+        _g2,
+        -_b1*x0 + _b2*x1 - _g1*x3 + _g2*x4,
+        _b0*x0 - _b2*x2 + _g0*x3 - _g2*x5,
+        -_b0*x1 + _b1*x2 - _g0*x4 + _g1*x5,
+        -_g1*x0 + _g2*x1,
+        _g0*x0 - _g2*x2,
+        -_g0*x1 + _g1*x2,
+        _b3,
+        _b4,
+        _b5,
+        -_b3,
+        -_b4,
+        -_b5,
+    )
+
+
+#: the forward returning the temps the VJP reads, and the VJP taking them (issue 38)
+SAVED = (_main_saved, _vjp_saved)
+
+
 #: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.vjp), None without a
 #: generated Jacobian
 VJP, JVP = _vjp, _jvp

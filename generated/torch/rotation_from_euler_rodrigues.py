@@ -126,6 +126,68 @@ def _jvp(eta_0, eta_1, eta_2, eta_3, _t0, _t1, _t2, _t3):
     )
 
 
+def _main_saved(eta_0, eta_1, eta_2, eta_3):
+    """``_main``, and the temps ``_vjp`` would compute again: saved by autograd."""
+    x0 = (eta_3*eta_3)
+    x1 = (eta_2*eta_2)
+    x2 = -x1
+    x3 = (eta_0*eta_0)
+    x4 = (eta_1*eta_1)
+    x5 = x3 - x4
+    x6 = 2.0*eta_1
+    x7 = eta_0*x6
+    x8 = 2.0*eta_2
+    x9 = eta_3*x8
+    x10 = eta_0*x8
+    x11 = eta_3*x6
+    x12 = -x0
+    x13 = 2.0*eta_0*eta_3
+    return (
+        x0 + x2 + x5,
+        x7 - x9,
+        x10 + x11,
+        x7 + x9,
+        -x1 - x12 - x5,
+        2.0*eta_1*eta_2 - x13,
+        x10 - x11,
+        eta_1*x8 + x13,
+        -x12 - x2 - x3 - x4,
+    ), (
+    ), (x6, x8, )
+
+
+def _vjp_saved(eta_0, eta_1, eta_2, eta_3, x6, x8, _g0, _g1, _g2, _g3, _g4, _g5, _g6, _g7, _g8):
+    """``_vjp`` on the forward's saved temps (2 of them)."""
+    _b0 = -_g5 + _g7
+    _b1 = -_g4 - _g8
+    _b2 = _g2 - _g6
+    _b3 = _g2 + _g6
+    _b4 = -_g1 + _g3
+    _b5 = _b3*eta_0 + _b4*eta_3 + _g7*eta_1
+    _b6 = _g1 + _g3
+    _b7 = _b2*eta_3 + _b6*eta_0
+    _b8 = _g0 - _g4
+    _b9 = -_b8 - _g8
+    _c0 = -_g8
+    _b10 = _b8 + _c0
+    _b11 = _c0 + _g0
+    _b12 = -_b11 - _g4
+    _b13 = -_b1 + _g0
+    _c1 = 2.0*_b0
+    _c2 = 2.0*eta_1
+    _c3 = 2.0*eta_2
+    return (
+        2.0*_b10*eta_0 + _b3*x8 + _b6*x6 + _c1*eta_3,
+        2.0*_b7 + _b9*_c2 + _c3*_g5 + _g7*x8,
+        _b12*_c3 + 2.0*_b5 + _c2*_g5,
+        2.0*_b13*eta_3 + _b2*x6 + _b4*x8 + _c1*eta_0,
+    )
+
+
+#: the forward returning the temps the VJP reads, and the VJP taking them (issue 38)
+SAVED = (_main_saved, _vjp_saved)
+
+
 #: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.vjp), None without a
 #: generated Jacobian
 VJP, JVP = _vjp, _jvp

@@ -150,6 +150,73 @@ def _jvp(e_0, e_1, e_2, phi, _t0, _t1, _t2, _t3):
     )
 
 
+def _main_saved(e_0, e_1, e_2, phi):
+    """``_main``, and the temps ``_vjp`` would compute again: saved by autograd."""
+    x0 = (e_0*e_0)
+    x1 = (0.5)*phi
+    x2 = torch.sin(x1)
+    x3 = (x2*x2)
+    x4 = 2.0*x3
+    x5 = 1.0 - x4
+    x6 = e_0*x4
+    x7 = e_1*x6
+    x8 = 2.0*x2*torch.cos(x1)
+    x9 = e_2*x8
+    x10 = e_2*x6
+    x11 = e_1*x8
+    x12 = (e_1*e_1)
+    x13 = e_0*x8
+    x14 = (e_2*e_2)
+    return (
+        x0 + x5*(1.0 - x0),
+        x7 - x9,
+        x10 + x11,
+        x7 + x9,
+        x12 + x5*(1.0 - x12),
+        2.0*e_1*e_2*x3 - x13,
+        x10 - x11,
+        e_1*e_2*x4 + x13,
+        x14 + x5*(1.0 - x14),
+    ), (
+    ), (x0, x1, x2, x3, x4, x5, x6, x8, x12, x14, )
+
+
+def _vjp_saved(e_0, e_1, e_2, phi, x0, x1, x2, x3, x4, x5, x6, x8, x12, x14, _g0, _g1, _g2, _g3, _g4, _g5, _g6, _g7, _g8):
+    """``_vjp`` on the forward's saved temps (10 of them)."""
+    _c0 = 1.0 - x5
+    _b0 = _c0*_g8
+    _b1 = -_g5 + _g7
+    _b2 = _c0*_g4
+    _b3 = _g2 - _g6
+    _b4 = _g2 + _g6
+    _b5 = -_g1 + _g3
+    _b6 = _b1*e_0 + _b3*e_1 + _b5*e_2
+    _b7 = _g1 + _g3
+    _b8 = _b4*e_2 + _b7*e_1
+    _b9 = _g0*(1.0 - x0) + _g4*(1.0 - x12) + _g8*(1.0 - x14)
+    _c1 = _g7*e_2
+    _b10 = _b8*e_0 - _b9 + _c1*e_1
+    _c2 = 2.0*e_1
+    _c3 = _c2*_g5
+    _b11 = 2.0*_b10 + _c3*e_2
+    _c4 = torch.cos(x1)
+    _c5 = 2.0*_b6
+    _b12 = 2.0*_b11*x2 + _c4*_c5
+    _b13 = _b12*_c4 - _c5*(x2*x2)
+    _b14 = _c0*_g0
+    _c6 = 2.0*e_2
+    return (
+        _b1*x8 + 2.0*_b14*e_0 + _b8*x4,
+        _b2*_c2 + _b3*x8 + _b7*x6 + _c1*x4 + _c6*_g5*x3,
+        _b0*_c6 + _b4*x6 + _b5*x8 + _c3*x3 + _g7*e_1*x4,
+        (0.5)*_b13,
+    )
+
+
+#: the forward returning the temps the VJP reads, and the VJP taking them (issue 38)
+SAVED = (_main_saved, _vjp_saved)
+
+
 #: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.vjp), None without a
 #: generated Jacobian
 VJP, JVP = _vjp, _jvp

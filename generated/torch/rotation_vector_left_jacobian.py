@@ -129,6 +129,66 @@ def _jvp(w_0, w_1, w_2, _t0, _t1, _t2):
     )
 
 
+def _main_saved(w_0, w_1, w_2):
+    """``_main``, and the temps ``_vjp`` would compute again: saved by autograd."""
+    x0 = (w_1*w_1)
+    x1 = (w_2*w_2)
+    x2 = (w_0*w_0) + x0 + x1
+    x3 = torch.where(torch.lt(x2, 1.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(8.2206352466243295e-18*x2 - 2.8114572543455206e-15) + 7.6471637318198164e-13) - 1.6059043836821613e-10) + 2.505210838544172e-8) - 2.7557319223985893e-6) + 0.00019841269841269841) - 0.0083333333333333332) + 0.16666666666666666, (torch.where(torch.lt(x2, 1.0), 1.0, torch.sqrt(x2)) - torch.sin(torch.where(torch.lt(x2, 1.0), 1.0, torch.sqrt(x2))))*torch.where(torch.lt(x2, 1.0), 1.0, 1.0/(x2*torch.sqrt(x2))))
+    x4 = x0*x3
+    x5 = x1*x3
+    x6 = torch.where(torch.lt(x2, 1.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(1.5619206968586225e-16*x2 - 4.7794773323873853e-14) + 1.1470745597729725e-11) - 2.08767569878681e-9) + 2.7557319223985888e-7) - 2.4801587301587302e-5) + 0.0013888888888888889) - 0.041666666666666664) + 0.5, (1.0 - torch.cos(torch.where(torch.lt(x2, 1.0), 1.0, torch.sqrt(x2))))*torch.where(torch.lt(x2, 1.0), 1.0, 1.0/x2))
+    x7 = w_2*x6
+    x8 = w_0*x3
+    x9 = w_1*x8
+    x10 = w_1*x6
+    x11 = w_2*x8
+    x12 = -x2*x3 + 1.0
+    x13 = w_0*x6
+    return (
+        -x4 - x5 + 1.0,
+        -x7 + x9,
+        x10 + x11,
+        x7 + x9,
+        x12 + x4,
+        w_1*w_2*x3 - x13,
+        -x10 + x11,
+        w_1*w_2*x3 + x13,
+        x12 + x5,
+    ), (
+    ), (x0, x1, x2, x3, x6, x8, )
+
+
+def _vjp_saved(w_0, w_1, w_2, x0, x1, x2, x3, x6, x8, _g0, _g1, _g2, _g3, _g4, _g5, _g6, _g7, _g8):
+    """``_vjp`` on the forward's saved temps (6 of them)."""
+    _b0 = -_g5 + _g7
+    _b1 = _g4 + _g8
+    _b2 = _g2 + _g6
+    _b3 = _g2 - _g6
+    _b4 = _g1 + _g3
+    _b5 = _b2*w_2 + _b4*w_1
+    _b6 = -_g1 + _g3
+    _b7 = _b0*w_0 + _b3*w_1 + _b6*w_2
+    _b8 = -_g0 + _g8
+    _b9 = -_g0 + _g4
+    _c0 = w_1*w_2
+    _b10 = -_b1*x2 + _b5*w_0 + _b8*x1 + _b9*x0 + _c0*_g5 + _c0*_g7
+    _b11 = -_b1*x3 + _b10*torch.where(torch.lt(x2, 2.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(3.8681701706306839e-22*x2 - 1.7615646957052136e-19) + 6.5765081972994636e-17) - 1.9680200780418645e-14) + 4.5882982390918896e-12) - 8.0295219184108074e-10) + 1.0020843354176688e-7) - 8.2671957671957678e-6) + 0.00039682539682539683) - 0.0083333333333333332, (0.5)*((1.0 - torch.cos(torch.where(torch.lt(x2, 2.0), 1.414213562373095, torch.sqrt(x2))))*torch.where(torch.lt(x2, 2.0), 1.414213562373095, torch.sqrt(x2)) - 3.0*torch.where(torch.lt(x2, 2.0), 1.414213562373095, torch.sqrt(x2)) + 3.0*torch.sin(torch.where(torch.lt(x2, 2.0), 1.414213562373095, torch.sqrt(x2))))*torch.where(torch.lt(x2, 2.0), 0.17677669529663688, 1.0/((x2*x2)*torch.sqrt(x2)))) + _b7*torch.where(torch.lt(x2, 1.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(1.249536557486898e-15 - 3.6992858609809485e-18*x2) - 3.3456341326711696e-13) + 6.882447358637835e-11) - 1.043837849393405e-8) + 1.1022927689594355e-6) - 7.4404761904761911e-5) + 0.0027777777777777779) - 0.041666666666666664, (0.5)*(torch.where(torch.lt(x2, 1.0), 1.0, torch.sqrt(x2))*torch.sin(torch.where(torch.lt(x2, 1.0), 1.0, torch.sqrt(x2))) + 2.0*torch.cos(torch.where(torch.lt(x2, 1.0), 1.0, torch.sqrt(x2))) - 2.0)*torch.where(torch.lt(x2, 1.0), 1.0, 1.0/(x2*x2)))
+    _b12 = _b11 + _b8*x3
+    _b13 = _b11 + _b9*x3
+    _c1 = w_2*x3
+    _c2 = w_1*x3
+    return (
+        _b0*x6 + 2.0*_b11*w_0 + _b5*x3,
+        2.0*_b13*w_1 + _b3*x6 + _b4*x8 + _c1*_g5 + _c1*_g7,
+        2.0*_b12*w_2 + _b2*x8 + _b6*x6 + _c2*_g5 + _c2*_g7,
+    )
+
+
+#: the forward returning the temps the VJP reads, and the VJP taking them (issue 38)
+SAVED = (_main_saved, _vjp_saved)
+
+
 #: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.vjp), None without a
 #: generated Jacobian
 VJP, JVP = _vjp, _jvp

@@ -135,6 +135,65 @@ def _jvp(w_0, w_1, w_2, _t0, _t1, _t2):
     )
 
 
+def _main_saved(w_0, w_1, w_2):
+    """``_main``, and the temps ``_vjp`` would compute again: saved by autograd."""
+    x0 = (w_1*w_1)
+    x1 = (w_2*w_2)
+    x2 = (w_0*w_0) + x0 + x1
+    x3 = torch.where(torch.lt(x2, 4.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(1.867346851419009e-30*x2 + 7.3719898813306206e-29) + 2.9103449512297299e-27) + 1.1489581337744405e-25) + 4.5359049046753659e-24) + 1.7907034854075093e-22) + 7.0694140792589346e-21) + 2.7908929371625045e-19) + 1.1018005656720459e-17) + 4.3497373971161238e-16) + 1.717212411255569e-14) + 6.7793605926451654e-13) + 2.6765073061369358e-11) + 1.0568380277374986e-9) + 4.17535139757362e-8) + 1.6534391534391535e-6) + 6.6137566137566142e-5) + 0.0027777777777777779) + 0.16666666666666666, (-torch.where(torch.lt(x2, 4.0), 2.0, torch.sqrt(x2))*torch.sin(torch.where(torch.lt(x2, 4.0), 2.0, torch.sqrt(x2))) - 2.0*torch.cos(torch.where(torch.lt(x2, 4.0), 2.0, torch.sqrt(x2))) + 2.0)*torch.where(torch.lt(x2, 4.0), 0.25, 1.0/x2)/(1.0 - torch.cos(torch.where(torch.lt(x2, 4.0), 2.0, torch.sqrt(x2)))))
+    x4 = (0.5)*x3
+    x5 = x0*x4
+    x6 = x1*x4
+    x7 = (0.5)*w_2
+    x8 = (0.5)*w_1
+    x9 = w_0*x3
+    x10 = x8*x9
+    x11 = x7*x9
+    x12 = -x2*x4 + 1.0
+    x13 = (0.5)*w_0
+    return (
+        -x5 - x6 + 1.0,
+        x10 + x7,
+        x11 - x8,
+        x10 - x7,
+        x12 + x5,
+        w_1*x3*x7 + x13,
+        x11 + x8,
+        (0.5)*w_1*w_2*x3 - x13,
+        x12 + x6,
+    ), (
+    ), (x0, x1, x2, x3, x4, x7, x8, x9, )
+
+
+def _vjp_saved(w_0, w_1, w_2, x0, x1, x2, x3, x4, x7, x8, x9, _g0, _g1, _g2, _g3, _g4, _g5, _g6, _g7, _g8):
+    """``_vjp`` on the forward's saved temps (8 of them)."""
+    _b0 = _g5 - _g7
+    _b1 = _g4 + _g8
+    _b2 = _g2 + _g6
+    _b3 = _g1 + _g3
+    _b4 = _b2*x7 + _b3*x8
+    _b5 = _b3*x9 - _g2 + _g6
+    _c0 = _g5*w_1
+    _b6 = _b2*x9 + _c0*x3 + _g1 - _g3
+    _b7 = -_g0 + _g8
+    _b8 = -_g0 + _g4
+    _b9 = -_b1*x2 + _b7*x1 + _b8*x0
+    _c1 = (0.5)*_g7*w_2
+    _b10 = _b4*w_0 + (0.5)*_b9 + _c0*x7 + _c1*w_1
+    _b11 = -_b1*x4 + _b10*torch.where(torch.lt(x2, 2.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(1.7234372006616606e-24*x2 + 6.3502668665455129e-23) + 2.3279145310297621e-21) + 8.4832968951107215e-20) + 3.0699822308787551e-18) + 1.1018005656720459e-16) + 3.914763657404511e-15) + 1.3737699290044552e-13) + 4.7455524148516162e-12) + 1.6059043836821613e-10) + 5.2841901386874934e-9) + 1.670140559029448e-7) + 4.9603174603174603e-6) + 0.00013227513227513228) + 0.0027777777777777779, (0.5)*((1.0 - torch.cos(torch.where(torch.lt(x2, 2.0), 1.414213562373095, torch.sqrt(x2))))*(-torch.where(torch.lt(x2, 2.0), 1.414213562373095, torch.sqrt(x2))*torch.cos(torch.where(torch.lt(x2, 2.0), 1.414213562373095, torch.sqrt(x2))) + torch.sin(torch.where(torch.lt(x2, 2.0), 1.414213562373095, torch.sqrt(x2))))*torch.where(torch.lt(x2, 2.0), 1.414213562373095, torch.sqrt(x2)) - 2.0*(1.0 - torch.cos(torch.where(torch.lt(x2, 2.0), 1.414213562373095, torch.sqrt(x2))))*(-torch.where(torch.lt(x2, 2.0), 1.414213562373095, torch.sqrt(x2))*torch.sin(torch.where(torch.lt(x2, 2.0), 1.414213562373095, torch.sqrt(x2))) - 2.0*torch.cos(torch.where(torch.lt(x2, 2.0), 1.414213562373095, torch.sqrt(x2))) + 2.0) - (-torch.where(torch.lt(x2, 2.0), 1.414213562373095, torch.sqrt(x2))*torch.sin(torch.where(torch.lt(x2, 2.0), 1.414213562373095, torch.sqrt(x2))) - 2.0*torch.cos(torch.where(torch.lt(x2, 2.0), 1.414213562373095, torch.sqrt(x2))) + 2.0)*torch.where(torch.lt(x2, 2.0), 1.414213562373095, torch.sqrt(x2))*torch.sin(torch.where(torch.lt(x2, 2.0), 1.414213562373095, torch.sqrt(x2))))*torch.where(torch.lt(x2, 2.0), 0.25, 1.0/(x2*x2))/((1.0 - torch.cos(torch.where(torch.lt(x2, 2.0), 1.414213562373095, torch.sqrt(x2))))*(1.0 - torch.cos(torch.where(torch.lt(x2, 2.0), 1.414213562373095, torch.sqrt(x2))))))
+    _b12 = _b11 + _b7*x4
+    _b13 = _b11 + _b8*x4
+    return (
+        (0.5)*_b0 + 2.0*_b11*w_0 + _b4*x3,
+        2.0*_b13*w_1 + (0.5)*_b5 + _c1*x3 + _g5*x3*x7,
+        2.0*_b12*w_2 + (0.5)*_b6 + (0.5)*_g7*w_1*x3,
+    )
+
+
+#: the forward returning the temps the VJP reads, and the VJP taking them (issue 38)
+SAVED = (_main_saved, _vjp_saved)
+
+
 #: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.vjp), None without a
 #: generated Jacobian
 VJP, JVP = _vjp, _jvp

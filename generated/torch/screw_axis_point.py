@@ -239,6 +239,113 @@ def _jvp(e_0, e_1, e_2, phi, a_0, a_1, a_2, a_prime_0, a_prime_1, a_prime_2, _t0
     )
 
 
+def _main_saved(e_0, e_1, e_2, phi, a_0, a_1, a_2, a_prime_0, a_prime_1, a_prime_2):
+    """``_main``, and the temps ``_vjp`` would compute again: saved by autograd."""
+    x0 = (0.5)*phi
+    x1 = torch.sin(x0)
+    x2 = (x1*x1)
+    x3 = (e_0*e_0)
+    x4 = 2.0*x2
+    x5 = 1.0 - x4
+    x6 = e_0*e_1*x4
+    x7 = 2.0*x1*torch.cos(x0)
+    x8 = e_2*x7
+    x9 = x6 - x8
+    x10 = e_2*x4
+    x11 = e_0*x10
+    x12 = e_1*x7
+    x13 = x11 + x12
+    x14 = a_0*(x3 + x5*(1.0 - x3)) + a_1*x9 + a_2*x13 - a_prime_0
+    x15 = x6 + x8
+    x16 = (e_1*e_1)
+    x17 = e_0*x7
+    x18 = 2.0*e_1*e_2*x2 - x17
+    x19 = a_0*x15 + a_1*(x16 + x5*(1.0 - x16)) + a_2*x18 - a_prime_1
+    x20 = x11 - x12
+    x21 = e_1*x10 + x17
+    x22 = (e_2*e_2)
+    x23 = a_0*x20 + a_1*x21 + a_2*(x22 + x5*(1.0 - x22)) - a_prime_2
+    x24 = (0.25)/x2
+    return (
+        x24*(x14*x2*(2.0*x3 - 2.0) + x15*x19 + x20*x23),
+        x24*(x14*x9 + x19*x2*(2.0*x16 - 2.0) + x21*x23),
+        x24*(x13*x14 + x18*x19 + x2*x23*(2.0*x22 - 2.0)),
+    ), (
+        x1,
+    ), (x0, x1, x2, x3, x4, x5, x6, x7, x8, x9, x10, x11, x12, x13, x14, x15, x16, x17, x18, x19, x20, x21, x22, x23, x24, )
+
+
+def _vjp_saved(e_0, e_1, e_2, phi, a_0, a_1, a_2, a_prime_0, a_prime_1, a_prime_2, x0, x1, x2, x3, x4, x5, x6, x7, x8, x9, x10, x11, x12, x13, x14, x15, x16, x17, x18, x19, x20, x21, x22, x23, x24, _g0, _g1, _g2):
+    """``_vjp`` on the forward's saved temps (25 of them)."""
+    _c0 = 2.0*x3 - 2.0
+    _c1 = _c0*x2
+    _c2 = 2.0*x16 - 2.0
+    _c3 = _c2*x2
+    _c4 = 2.0*x22 - 2.0
+    _c5 = _c4*x2
+    _b0 = _g0*(_c1*x14 + x15*x19 + x20*x23) + _g1*(_c3*x19 + x14*x9 + x21*x23) + _g2*(_c5*x23 + x13*x14 + x18*x19)
+    _c6 = _g0*x24
+    _c7 = _g1*x24
+    _c8 = _g2*x24
+    _b1 = _c5*_c8 + _c6*x20 + _c7*x21
+    _c9 = _c8*x23
+    _c10 = 2.0*x2
+    _c11 = 1.0 - x5
+    _c12 = _b1*a_2
+    _b2 = _c10*_c9 + _c11*_c12
+    _b3 = _b1*a_1 + _c7*x23
+    _b4 = _b1*a_0 + _c6*x23
+    _b5 = _c3*_c7 + _c6*x15 + _c8*x18
+    _b6 = _b5*a_2 + _c8*x19
+    _b7 = _b3 - _b6
+    _c13 = _c7*x19
+    _c14 = _b5*a_1
+    _b8 = _c10*_c13 + _c11*_c14
+    _b9 = _b5*a_0 + _c6*x19
+    _b10 = _c1*_c6 + _c7*x9 + _c8*x13
+    _b11 = _b10*a_2 + _c8*x14
+    _b12 = _b11 - _b4
+    _b13 = _b11 + _b4
+    _b14 = _b13*e_0 + _b3*e_1
+    _b15 = _b10*a_1 + _c7*x14
+    _b16 = -_b15 + _b9
+    _b17 = _b12*e_1 + _b16*e_2 + _b7*e_0
+    _b18 = _b15 + _b9
+    _c15 = 1.0 - x22
+    _c16 = 1.0 - x3
+    _c17 = _b10*a_0
+    _c18 = 1.0 - x16
+    _b19 = _c12*_c15 + _c14*_c18 + _c16*_c17
+    _c19 = _b18*e_1
+    _b20 = _b14*e_2 - _b19 + _c19*e_0
+    _c20 = _c6*x14
+    _b21 = _c10*_c20 + _c11*_c17
+    _c21 = 2.0*e_1
+    _c22 = _b6*_c21
+    _b22 = -0.25*_b0/(x2*x2) + 2.0*_b20 + _c0*_c20 + _c13*_c2 + _c22*e_2 + _c4*_c9
+    _c23 = torch.cos(x0)
+    _c24 = 2.0*_b17
+    _b23 = 2.0*_b22*x1 + _c23*_c24
+    _b24 = _b23*_c23 - _c24*(x1*x1)
+    _c25 = 2.0*e_2
+    return (
+        _b13*x10 + 2.0*_b21*e_0 + _b7*x7 + _c19*x4,
+        _b12*x7 + _b18*e_0*x4 + _b3*x10 + _b6*_c25*x2 + _b8*_c21,
+        _b14*x4 + _b16*x7 + _b2*_c25 + _c22*x2,
+        (0.5)*_b24,
+        _b1*x20 + _b10*(_c16*x5 + x3) + _b5*x15,
+        _b1*x21 + _b10*x9 + _b5*(_c18*x5 + x16),
+        _b1*(_c15*x5 + x22) + _b10*x13 + _b5*x18,
+        -_b10,
+        -_b5,
+        -_b1,
+    )
+
+
+#: the forward returning the temps the VJP reads, and the VJP taking them (issue 38)
+SAVED = (_main_saved, _vjp_saved)
+
+
 #: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.vjp), None without a
 #: generated Jacobian
 VJP, JVP = _vjp, _jvp

@@ -195,6 +195,96 @@ def _jvp(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5, _t0, _t1, _t2, _t3, _t4, _t5):
     )
 
 
+def _main_saved(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5):
+    """``_main``, and the temps ``_vjp`` would compute again: saved by autograd."""
+    x0 = (xi_1*xi_1)
+    x1 = (xi_2*xi_2)
+    x2 = x0 + x1 + (xi_0*xi_0)
+    x3 = torch.where(torch.lt(x2, 1.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(1.5619206968586225e-16*x2 - 4.7794773323873853e-14) + 1.1470745597729725e-11) - 2.08767569878681e-9) + 2.7557319223985888e-7) - 2.4801587301587302e-5) + 0.0013888888888888889) - 0.041666666666666664) + 0.5, (1.0 - torch.cos(torch.where(torch.lt(x2, 1.0), 1.0, torch.sqrt(x2))))*torch.where(torch.lt(x2, 1.0), 1.0, 1.0/x2))
+    x4 = x0*x3
+    x5 = x1*x3
+    x6 = torch.where(torch.lt(x2, 9.0949470177292824e-13), 1.0 - 0.16666666666666666*x2, torch.where(torch.lt(x2, 9.0949470177292824e-13), 1048576.0, 1.0/torch.sqrt(x2))*torch.sin(torch.where(torch.lt(x2, 9.0949470177292824e-13), 9.5367431640625e-7, torch.sqrt(x2))))
+    x7 = x6*xi_2
+    x8 = x3*xi_0
+    x9 = x8*xi_1
+    x10 = x6*xi_1
+    x11 = x8*xi_2
+    x12 = x3*xi_1
+    x13 = x3*xi_2
+    x14 = torch.where(torch.lt(x2, 1.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(8.2206352466243295e-18*x2 - 2.8114572543455206e-15) + 7.6471637318198164e-13) - 1.6059043836821613e-10) + 2.505210838544172e-8) - 2.7557319223985893e-6) + 0.00019841269841269841) - 0.0083333333333333332) + 0.16666666666666666, (torch.where(torch.lt(x2, 1.0), 1.0, torch.sqrt(x2)) - torch.sin(torch.where(torch.lt(x2, 1.0), 1.0, torch.sqrt(x2))))*torch.where(torch.lt(x2, 1.0), 1.0, 1.0/(x2*torch.sqrt(x2))))
+    x15 = x14*xi_4
+    x16 = xi_0*xi_1
+    x17 = x14*xi_5
+    x18 = x17*xi_2
+    x19 = x14*xi_3
+    x20 = -x2
+    x21 = x20*x3 + 1.0
+    x22 = x6*xi_0
+    return (
+        -x4 - x5 + 1.0,
+        -x7 + x9,
+        x10 + x11,
+        -x0*x19 - x1*x19 + x12*xi_5 - x13*xi_4 + x15*x16 + x18*xi_0 + xi_3,
+        x7 + x9,
+        x21 + x4,
+        -x22 + x3*xi_1*xi_2,
+        x0*x15 + x13*xi_3 + x15*x20 + x16*x19 + x18*xi_1 - x8*xi_5 + xi_4,
+        -x10 + x11,
+        x12*xi_2 + x22,
+        x21 + x5,
+        x1*x17 - x12*xi_3 + x15*xi_1*xi_2 + x17*x20 + x19*xi_0*xi_2 + x8*xi_4 + xi_5,
+        0.0,
+        0.0,
+        0.0,
+        1.0,
+    ), (
+    ), (x0, x1, x2, x3, x6, x8, x12, x13, x14, x15, x16, x17, x18, x19, x20, )
+
+
+def _vjp_saved(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5, x0, x1, x2, x3, x6, x8, x12, x13, x14, x15, x16, x17, x18, x19, x20, _g0, _g1, _g2, _g3, _g4, _g5, _g6, _g7, _g8, _g9, _g10, _g11, _g12, _g13, _g14, _g15):
+    """``_vjp`` on the forward's saved temps (15 of them)."""
+    _b0 = -_g6 + _g9
+    _b1 = _g10 + _g5
+    _c0 = _g11*x17
+    _c1 = _g7*x15
+    _b2 = _b1*x3 + _c0 + _c1
+    _c2 = _g11*xi_2
+    _b3 = _c2*xi_0 + _g3*(-x0 - x1) + _g7*x16
+    _b4 = _g3*xi_0 + _g7*xi_1
+    _b5 = _b4*xi_2 + _g11*(x1 + x20)
+    _b6 = _g3*x15 + _g7*x19
+    _b7 = _c2*xi_1 + _g3*x16 + _g7*(x0 + x20)
+    _b8 = _b3*xi_3 + _b5*xi_5 + _b7*xi_4
+    _b9 = -_g3*xi_4 + _g7*xi_3
+    _b10 = -_g11*xi_3 + _g3*xi_5 + _g9*xi_2
+    _b11 = _g2 + _g8
+    _b12 = _g2 - _g8
+    _b13 = _g1 + _g4
+    _b14 = _b11*xi_2 + _b13*xi_1 + _g11*xi_4 - _g7*xi_5
+    _b15 = -_g1 + _g4
+    _b16 = _b0*xi_0 + _b12*xi_1 + _b15*xi_2
+    _b17 = -_g0 + _g10
+    _b18 = -_g0 + _g5
+    _c3 = _g6*xi_2
+    _b19 = _b1*x20 + _b10*xi_1 + _b14*xi_0 + _b17*x1 + _b18*x0 + _b9*xi_2 + _c3*xi_1
+    _b20 = _b16*torch.where(torch.lt(x2, 0.5), x2*(x2*(x2*(x2*(x2*(x2*(2.2491658034764165e-14*x2 - 5.3530146122738714e-12) + 9.6354263020929685e-10) - 1.2526054192720859e-7) + 1.1022927689594357e-5) - 0.00059523809523809529) + 0.016666666666666666) - 0.16666666666666666, (0.5)*(torch.where(torch.lt(x2, 0.5), 0.70710678118654752, torch.sqrt(x2))*torch.cos(torch.where(torch.lt(x2, 0.5), 0.70710678118654752, torch.sqrt(x2))) - torch.sin(torch.where(torch.lt(x2, 0.5), 0.70710678118654752, torch.sqrt(x2))))*torch.where(torch.lt(x2, 0.5), 2.8284271247461901, 1.0/(x2*torch.sqrt(x2)))) + _b19*torch.where(torch.lt(x2, 1.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(1.249536557486898e-15 - 3.6992858609809485e-18*x2) - 3.3456341326711696e-13) + 6.882447358637835e-11) - 1.043837849393405e-8) + 1.1022927689594355e-6) - 7.4404761904761911e-5) + 0.0027777777777777779) - 0.041666666666666664, (0.5)*(torch.where(torch.lt(x2, 1.0), 1.0, torch.sqrt(x2))*torch.sin(torch.where(torch.lt(x2, 1.0), 1.0, torch.sqrt(x2))) + 2.0*torch.cos(torch.where(torch.lt(x2, 1.0), 1.0, torch.sqrt(x2))) - 2.0)*torch.where(torch.lt(x2, 1.0), 1.0, 1.0/(x2*x2))) - _b2 + _b8*torch.where(torch.lt(x2, 2.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(3.8681701706306839e-22*x2 - 1.7615646957052136e-19) + 6.5765081972994636e-17) - 1.9680200780418645e-14) + 4.5882982390918896e-12) - 8.0295219184108074e-10) + 1.0020843354176688e-7) - 8.2671957671957678e-6) + 0.00039682539682539683) - 0.0083333333333333332, (0.5)*((1.0 - torch.cos(torch.where(torch.lt(x2, 2.0), 1.414213562373095, torch.sqrt(x2))))*torch.where(torch.lt(x2, 2.0), 1.414213562373095, torch.sqrt(x2)) - 3.0*torch.where(torch.lt(x2, 2.0), 1.414213562373095, torch.sqrt(x2)) + 3.0*torch.sin(torch.where(torch.lt(x2, 2.0), 1.414213562373095, torch.sqrt(x2))))*torch.where(torch.lt(x2, 2.0), 0.17677669529663688, 1.0/((x2*x2)*torch.sqrt(x2))))
+    _c4 = _b20 - _g3*x19
+    _b21 = _b17*x3 + _c0 + _c4
+    _b22 = _b18*x3 + _c1 + _c4
+    return (
+        _b0*x6 + _b14*x3 + 2.0*_b20*xi_0 + _b6*xi_1 + _c2*x19 + _g3*x18,
+        _b10*x3 + _b12*x6 + _b13*x8 + 2.0*_b22*xi_1 + _b6*xi_0 + _c2*x15 + _c3*x3 + _g7*x18,
+        _b11*x8 + _b15*x6 + 2.0*_b21*xi_2 + _b4*x17 + _b9*x3 + _g11*(x15*xi_1 + x19*xi_0) + _g6*x3*xi_1 + _g9*x12,
+        _b3*x14 - _g11*x12 + _g3 + _g7*x13,
+        _b7*x14 + _g11*x8 - _g3*x13 + _g7,
+        _b5*x14 + _g11 + _g3*x12 - _g7*x8,
+    )
+
+
+#: the forward returning the temps the VJP reads, and the VJP taking them (issue 38)
+SAVED = (_main_saved, _vjp_saved)
+
+
 #: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.vjp), None without a
 #: generated Jacobian
 VJP, JVP = _vjp, _jvp

@@ -143,6 +143,70 @@ def _jvp(w_A_0, w_A_1, w_A_2, w_A_3, w_A_4, w_A_5, a_0, a_1, a_2, _t0, _t1, _t2,
     )
 
 
+def _main_saved(w_A_0, w_A_1, w_A_2, w_A_3, w_A_4, w_A_5, a_0, a_1, a_2):
+    """``_main``, and the temps ``_vjp`` would compute again: saved by autograd."""
+    x0 = (w_A_3*w_A_3) + (w_A_4*w_A_4) + (w_A_5*w_A_5)
+    x1 = 1.0/x0
+    x2 = a_0*w_A_4 - a_1*w_A_3 + w_A_2
+    x3 = -a_0*w_A_5 + a_2*w_A_3 + w_A_1
+    x4 = w_A_4*x2 - w_A_5*x3
+    x5 = a_1*w_A_5 - a_2*w_A_4 + w_A_0
+    x6 = -w_A_3*x2 + w_A_5*x5
+    x7 = w_A_3*x3 - w_A_4*x5
+    x8 = 1.0/torch.sqrt(x0)
+    x9 = 1.0/(x0*torch.sqrt(x0))
+    x10 = x7*x9
+    return (
+        x1*x4,
+        x1*x6,
+        x1*x7,
+        x1*(w_A_0*w_A_3 + w_A_1*w_A_4 + w_A_2*w_A_5),
+        w_A_3*x8,
+        w_A_4*x8,
+        w_A_5*x8,
+        -w_A_4*x10 + w_A_5*x6*x9,
+        w_A_3*x10 - w_A_5*x4*x9,
+        -w_A_3*x6*x9 + w_A_4*x4*x9,
+    ), (
+        x0,
+    ), (x0, x1, x2, x3, x4, x5, x6, x7, x8, x9, x10, )
+
+
+def _vjp_saved(w_A_0, w_A_1, w_A_2, w_A_3, w_A_4, w_A_5, a_0, a_1, a_2, x0, x1, x2, x3, x4, x5, x6, x7, x8, x9, x10, _g0, _g1, _g2, _g3, _g4, _g5, _g6, _g7, _g8, _g9):
+    """``_vjp`` on the forward's saved temps (11 of them)."""
+    _b0 = -_g7*w_A_4 + _g8*w_A_3
+    _c0 = _g7*w_A_5
+    _c1 = _g8*w_A_5
+    _b1 = _b0*x7 + _c0*x6 - _c1*x4 + _g9*(-w_A_3*x6 + w_A_4*x4)
+    _b2 = _g4*w_A_3 + _g5*w_A_4 + _g6*w_A_5
+    _b3 = _b0*x9 + _g2*x1
+    _c2 = _g9*x9
+    _b4 = _c0*x9 - _c2*w_A_3 + _g1*x1
+    _b5 = -_b3*w_A_4 + _b4*w_A_5
+    _b6 = -_c1*x9 + _c2*w_A_4 + _g0*x1
+    _b7 = _b3*w_A_3 - _b6*w_A_5
+    _b8 = -_b4*w_A_3 + _b6*w_A_4
+    _b9 = _g0*x4 + _g1*x6 + _g2*x7 + _g3*(w_A_0*w_A_3 + w_A_1*w_A_4 + w_A_2*w_A_5)
+    _b10 = -1.5*_b1/((x0*x0)*torch.sqrt(x0)) - 0.5*_b2*x9 - _b9/(x0*x0)
+    _c3 = _g3*x1
+    _c4 = 2.0*_b10
+    return (
+        _b5 + _c3*w_A_3,
+        _b7 + _c3*w_A_4,
+        _b8 + _c3*w_A_5,
+        _b3*x3 - _b4*x2 + _b7*a_2 - _b8*a_1 - _c2*x6 + _c3*w_A_0 + _c4*w_A_3 + _g4*x8 + _g8*x10,
+        -_b3*x5 - _b5*a_2 + _b6*x2 + _b8*a_0 + _c2*x4 + _c3*w_A_1 + _c4*w_A_4 + _g5*x8 - _g7*x10,
+        _b4*x5 + _b5*a_1 - _b6*x3 - _b7*a_0 + _c3*w_A_2 + _c4*w_A_5 + _g6*x8 + _g7*x6*x9 - _g8*x4*x9,
+        -_b7*w_A_5 + _b8*w_A_4,
+        _b5*w_A_5 - _b8*w_A_3,
+        -_b5*w_A_4 + _b7*w_A_3,
+    )
+
+
+#: the forward returning the temps the VJP reads, and the VJP taking them (issue 38)
+SAVED = (_main_saved, _vjp_saved)
+
+
 #: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.vjp), None without a
 #: generated Jacobian
 VJP, JVP = _vjp, _jvp

@@ -89,6 +89,47 @@ def _jvp(w_A_0, w_A_1, w_A_2, w_A_3, w_A_4, w_A_5, a_0, a_1, a_2, p_0, p_1, p_2,
     )
 
 
+def _main_saved(w_A_0, w_A_1, w_A_2, w_A_3, w_A_4, w_A_5, a_0, a_1, a_2, p_0, p_1, p_2):
+    """``_main``, and the temps ``_vjp`` would compute again: saved by autograd."""
+    x0 = a_2 - p_2
+    x1 = a_1 - p_1
+    x2 = a_0 - p_0
+    return (
+        w_A_0 - w_A_4*x0 + w_A_5*x1,
+        w_A_1 + w_A_3*x0 - w_A_5*x2,
+        w_A_2 - w_A_3*x1 + w_A_4*x2,
+        w_A_3,
+        w_A_4,
+        w_A_5,
+    ), (
+    ), (x0, x1, x2, )
+
+
+def _vjp_saved(w_A_0, w_A_1, w_A_2, w_A_3, w_A_4, w_A_5, a_0, a_1, a_2, p_0, p_1, p_2, x0, x1, x2, _g0, _g1, _g2, _g3, _g4, _g5):
+    """``_vjp`` on the forward's saved temps (3 of them)."""
+    _b0 = -_g1*w_A_5 + _g2*w_A_4
+    _b1 = _g0*w_A_5 - _g2*w_A_3
+    _b2 = -_g0*w_A_4 + _g1*w_A_3
+    return (
+        _g0,
+        _g1,
+        _g2,
+        _g1*x0 - _g2*x1 + _g3,
+        -_g0*x0 + _g2*x2 + _g4,
+        _g0*x1 - _g1*x2 + _g5,
+        _b0,
+        _b1,
+        _b2,
+        -_b0,
+        -_b1,
+        -_b2,
+    )
+
+
+#: the forward returning the temps the VJP reads, and the VJP taking them (issue 38)
+SAVED = (_main_saved, _vjp_saved)
+
+
 #: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.vjp), None without a
 #: generated Jacobian
 VJP, JVP = _vjp, _jvp

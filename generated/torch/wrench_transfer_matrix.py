@@ -137,6 +137,71 @@ def _jvp(a_0, a_1, a_2, p_0, p_1, p_2, _t0, _t1, _t2, _t3, _t4, _t5):
     )
 
 
+def _main_saved(a_0, a_1, a_2, p_0, p_1, p_2):
+    """``_main``, and the temps ``_vjp`` would compute again: saved by autograd."""
+    x0 = a_2 - p_2
+    x1 = a_1 - p_1
+    x2 = a_0 - p_0
+    return (
+        1.0,
+        0.0,
+        0.0,
+        0.0,
+        -x0,
+        x1,
+        0.0,
+        1.0,
+        0.0,
+        x0,
+        0.0,
+        -x2,
+        0.0,
+        0.0,
+        1.0,
+        -x1,
+        x2,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        1.0,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        1.0,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        1.0,
+    ), (
+    ), ()
+
+
+def _vjp_saved(a_0, a_1, a_2, p_0, p_1, p_2, _g0, _g1, _g2, _g3, _g4, _g5, _g6, _g7, _g8, _g9, _g10, _g11, _g12, _g13, _g14, _g15, _g16, _g17, _g18, _g19, _g20, _g21, _g22, _g23, _g24, _g25, _g26, _g27, _g28, _g29, _g30, _g31, _g32, _g33, _g34, _g35):
+    """``_vjp`` on the forward's saved temps (0 of them)."""
+    _b0 = -_g11 + _g16
+    _b1 = -_g15 + _g5
+    _b2 = -_g4 + _g9
+    return (
+        _b0,
+        _b1,
+        _b2,
+        -_b0,
+        -_b1,
+        -_b2,
+    )
+
+
+#: the forward returning the temps the VJP reads, and the VJP taking them (issue 38)
+SAVED = (_main_saved, _vjp_saved)
+
+
 #: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.vjp), None without a
 #: generated Jacobian
 VJP, JVP = _vjp, _jvp

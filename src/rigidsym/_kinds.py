@@ -1,7 +1,7 @@
 """The constraint kinds, one table: everything the layers need to know about a kind of atom.
 
-A kind (unit 3-vector, unit 4-vector, rotation, angle) is one :class:`Kind` entry in
-:data:`KINDS`. The entry gives
+A kind (unit 3-vector, unit 4-vector, rotation, angle, homogeneous transform) is one
+:class:`Kind` entry in :data:`KINDS`. The entry gives
 
 - the atoms of a group and their names (:meth:`Kind.components`), and the group's
   rational parametrisation for the zero test (:attr:`Kind.params`,
@@ -212,6 +212,43 @@ def _curve_rotation(Q: Sequence, V: Sequence) -> Callable[[Any], list]:
     return c
 
 
+# ------------------------------------------------------------------------- homogeneous transforms
+# T = [[R, p], [0, 1]] (4 x 4, row-major): R a rotation (the rotation kind's parametrisation,
+# check, tangent and curve), p free, the last row exactly (0, 0, 0, 1). Kernels taking a
+# transform (the log of SE(3)) are defined on SE(3) only: a random 4 x 4 is not an input.
+_R_IDX = (0, 1, 2, 4, 5, 6, 8, 9, 10)
+_P_IDX = (3, 7, 11)
+
+
+def _transform(R: Sequence, p: Sequence) -> list:
+    return [*R[0:3], p[0], *R[3:6], p[1], *R[6:9], p[2], 0, 0, 0, 1]
+
+
+def _quaternion_transform(P: Sequence) -> list:
+    """``[[Q(q), p], [0, 1]]``, ``P = [q1, q2, q3, q0, p1, p2, p3]``."""
+    return _transform(_quaternion_rotation(P[:4]), P[4:7])
+
+
+def _check_transform(a: np.ndarray, name: str, tol: float) -> str | None:
+    last = np.abs(a[..., 3, :] - np.array([0.0, 0.0, 0.0, 1.0]))
+    err = last.max() if last.size else 0.0
+    if not err <= tol:
+        return (f"{name}: not a homogeneous transform (last row not [0, 0, 0, 1]: max "
+                f"deviation {err:.3g} > {tol:.3g})")
+    msg = _check_rotation(a[..., :3, :3], f"{name}[:3, :3]", tol)
+    return msg and f"{name}: not a homogeneous transform: {msg}"
+
+
+def _project_transform(x: Sequence, d: Sequence) -> list:
+    R = _project_rotation([x[i] for i in _R_IDX], [d[i] for i in _R_IDX])
+    return _transform(R, [d[i] for i in _P_IDX])[:12] + [0, 0, 0, 0]
+
+
+def _curve_transform(x: Sequence, v: Sequence) -> Callable[[Any], list]:
+    rot = _curve_rotation([x[i] for i in _R_IDX], [v[i] for i in _R_IDX])
+    return lambda t: _transform(rot(t), [x[i] + t * v[i] for i in _P_IDX])
+
+
 # ------------------------------------------------------------------------- the table
 _UNIT_TANGENT = (
     "{a} is a unit vector: d/d{a} is the ambient derivative (all components independent); "
@@ -328,3 +365,12 @@ register(Kind("angle_pi", (), "angle_0_pi", "angle in [0, pi], half-angle tangen
 # (rigidsym.algebra.lie.ORDERS); rows for the kernels' specs and docstrings
 register(Kind("twist", (6,), "twist", "twist [omega; v] (6-vector), free", ", twist"))
 register(Kind("wrench", (6,), "wrench", "wrench [n; f] (6-vector), free", ", wrench"))
+# the homogeneous transforms of SE(3) (issue 38's log of SE(3)): its argument is a transform
+register(Kind(
+    "transform", (4, 4), "transform", "homogeneous transform, rational quaternion and free p",
+    ", homogeneous transform [[R, p], [0, 1]]", ("q1", "q2", "q3", "q0", "p1", "p2", "p3"),
+    _quaternion_transform, check=_check_transform, tol=1e-8, project=_project_transform,
+    curve=_curve_transform,
+    tangent="{a} is a homogeneous transform: d/d{a} is the ambient derivative over its 16 "
+            "entries; admissible directions are d{a} = [[CPM(theta) R, dp], [0, 0]] (tangent "
+            "space of SE(3))."))

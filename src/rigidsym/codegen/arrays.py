@@ -70,6 +70,15 @@ def _calls_trig(variants: list, back: dict | None) -> bool:
     return any("_sin(" in t or "_cos(" in t for t in texts)
 
 
+def _saved(program, vjp) -> list[str]:
+    """The forward temps the reverse-mode program reads (it recomputes them from the
+    inputs): the PyTorch forward returns them for autograd to save, and ``_vjp_saved``
+    takes them instead of recomputing them (issue 38: the backward reuses the forward's
+    common subexpressions)."""
+    fwd = {str(s) for s, _ in program.temps}
+    return [str(s) for s, _ in vjp.temps if str(s) in fwd]
+
+
 def render_array_kernels(env, kc: Any, header) -> dict[str, str]:
     """``{"torch/<name>.py": text, "jax/<name>.py": text}`` for the compiled kernel ``kc``.
 
@@ -97,6 +106,7 @@ def render_array_kernels(env, kc: Any, header) -> dict[str, str]:
         back = None if vjp is None else {
             "args": columns + cotangent_names(len(kc.variants[0].program.outputs)),
             "temps": [(str(s), pr.doprint(e)) for s, e in vjp.temps],
+            "saved": _saved(kc.variants[0].program, vjp),
             "outputs": [pr.doprint(e) for e in vjp.outputs], "ops": vjp.ops,
             "targs": columns + tangent_names(len(columns)),
             "ttemps": [(str(s), pr.doprint(e)) for s, e in jvp.temps],

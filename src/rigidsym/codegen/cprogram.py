@@ -140,7 +140,12 @@ def _trig_plan(kc: Any, printer) -> dict | None:
         "block": TRIG_BLOCK,
         "names": list(calls),
         "pre_temps": [(str(s), printer.doprint(v)) for s, v in pre],
-        "pre_calls": [(t, printer.doprint(c)) for t, c in calls.items()],
+        # the SIMD loop's calls (RIGIDSYM_VSIN/VCOS, c_common.h.j2), and per call its
+        # argument and libm function, for the scalar rerun of the lanes RIGIDSYM_TRIG_FAR flags
+        "pre_calls": [(t, f"RIGIDSYM_V{type(c).__name__.upper()}({printer.doprint(c.args[0])})")
+                      for t, c in calls.items()],
+        "far": [(t, type(c).__name__, printer.doprint(c.args[0])) for t, c in calls.items()],
+        "far_args": list(dict.fromkeys(printer.doprint(c.args[0]) for c in calls.values())),
         "pre_used": {str(s) for s in used_pre},
         "used": {str(s) for s in used},
         "variant": {"name": "main", "cond": None, "finite": _finite_check(prog, kc.kernel),

@@ -87,6 +87,11 @@ def sample_inputs(args, n: int = N_RANDOM, seed: int = 20) -> dict[str, np.ndarr
         elif a.kind == "rotation":
             v = _rotations(_unit(rng, m), np.concatenate([rng.uniform(0, np.pi, n),
                                                           _ADV_PHI]))
+        elif a.kind == "transform":
+            v = np.zeros((m, 4, 4))
+            v[:, :3, :3] = _rotations(_unit(rng, m), np.concatenate([
+                rng.uniform(0, np.pi, n), _ADV_PHI]))
+            v[:, :3, 3], v[:, 3, 3] = rng.standard_normal((m, 3)), 1.0
         elif a.name == "m":
             v = rng.uniform(0.5, 2.0, m)
         elif a.name == "I_C":

@@ -60,6 +60,15 @@ def rotation(e: list[fmpq], r: fmpq, r0: fmpq) -> list[fmpq]:
     return [v / n for row in Q for v in row]
 
 
+def transform(R: list[fmpq], p: list[fmpq]) -> list[fmpq]:
+    """``[[R, p], [0, 1]]`` row-major (a homogeneous transform, exact)."""
+    return [*R[0:3], p[0], *R[3:6], p[1], *R[6:9], p[2], *map(fmpq, (0, 0, 0, 1))]
+
+
+#: the translation entries of a transform (row-major 4 x 4)
+_T_P = (3, 7, 11)
+
+
 def _near_angles(small: list[float]) -> list[tuple[str, float]]:
     """Angles toward 0 and pi, both sides, 0 and fl(pi) included."""
     out = [("phi=0", 0.0), ("phi=pi", math.pi)]
@@ -87,6 +96,9 @@ def _random_arg(arg, rng, name: str) -> list[fmpq]:
         return [q(rng.uniform(-math.pi, math.pi))]
     if arg.kind == "rotation":
         return rotation(unit(rng), q(rng.uniform(0.05, 3)), fmpq(1))
+    if arg.kind == "transform":
+        return transform(rotation(unit(rng), q(rng.uniform(0.05, 3)), fmpq(1)),
+                         [q(v) for v in rng.standard_normal(3)])
     if arg.name == "m":
         return [q(rng.uniform(0.5, 2.0))]
     if arg.name == "I_C":
@@ -113,7 +125,8 @@ RANGE32 = [-116, -66, 66, 116, -133]
 def _range(kernel, dtype, base, out) -> None:
     """The ends of the floating range: the unconstrained vector and scalar arguments scaled
     together by each power of :data:`RANGE`, then each alone."""
-    free = [i for i, a in enumerate(kernel.args) if a.kind == "any" and a.name != "m"]
+    free = [i for i, a in enumerate(kernel.args) if a.kind in ("any", "transform")
+            and a.name != "m"]
     if not free:
         return
     for k in RANGE32 if dtype == np.float32 else RANGE:
@@ -122,8 +135,10 @@ def _range(kernel, dtype, base, out) -> None:
             p = base()
             for i in group:
                 # the scaled value as the type holds it (a subnormal keeps fewer bits): the
-                # point is exactly what the kernel gets
-                p[i] = [q(float(np.asarray(float(x * s)).astype(dtype))) for x in p[i]]
+                # point is exactly what the kernel gets; a transform's translation only
+                scaled = range(len(p[i])) if kernel.args[i].kind == "any" else _T_P
+                p[i] = [q(float(np.asarray(float(x * s)).astype(dtype))) if j in scaled
+                        else x for j, x in enumerate(p[i])]
             out.setdefault("range 1e-300..1e300" if dtype != np.float32 else
                            "range 1e-35..1e35", []).append(p)
 
@@ -170,6 +185,13 @@ def regimes(kernel, dtype, n_random: int = 8, seed: int = 0, small=None,
         elif a.kind == "rotation":
             for reg, Q in _rotations_near(rng, small):
                 add(reg, i, Q)
+        elif a.kind == "transform":
+            for reg, Q in _rotations_near(rng, small):
+                add(reg.replace("Q:", f"{a.name}:"), i,
+                    transform(Q, [q(v) for v in rng.standard_normal(3)]))
+            for sc in (1e-6, 1e-3, 1e3, 1e6):
+                add("scale 1e-6..1e6", i, transform(rotation(unit(rng), q(rng.uniform(
+                    0.05, 3)), fmpq(1)), [q(v) * q(sc) for v in rng.standard_normal(3)]))
         elif a.kind == "unit":
             for k in (1, 3):         # a few ulps off the constraint (beyond rounding)
                 v = unit(rng, a.size)

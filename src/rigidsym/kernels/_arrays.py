@@ -33,6 +33,14 @@ from rigidsym.kernels._arrays_checks import (
     safe_point,
     validate,
 )
+from rigidsym.kernels._arrays_eval import (
+    columns,
+    evaluate,
+    nonfinite_rows,
+    propagates_inf,
+    shape_outputs,
+    singular_mask,
+)
 from rigidsym.kernels._errors import raise_flagged
 from rigidsym.kernels._jacobian import contract
 from rigidsym.kernels._jacobian import full_batch as _full
@@ -87,9 +95,23 @@ class ArraySpace:
             # the generated vector-Jacobian product; None in a folder generated before it
             self._programs["vjp", name] = getattr(mod, "VJP", None)
             self._programs["jvp", name] = getattr(mod, "JVP", None)
+            # the forward returning the temps its VJP reads, and that VJP (PyTorch)
+            self._programs["saved", name] = getattr(mod, "SAVED", None)
             # whether its program divides (a folder generated before the flag: assume so)
             self._programs["divides", name] = getattr(mod, "DIVIDES", True)
+            # an inf input can reach a finite output only through a division, a branch or
+            # a function like atan: without them and without a denominator, a traced call
+            # maps its non-finite outputs to NaN instead of its inputs (issue 38)
+            path = self.directory / self.backend / f"{name}.py"
+            self._programs["inf", name] = len(v) == 1 and not getattr(
+                mod, "DIVIDES", True) and propagates_inf(path.read_text(encoding="utf-8"))
         return v
+
+    def propagates_inf(self, name: str) -> bool:
+        """Kernel ``name``'s program is non-finite in every output that reads an inf input
+        (:func:`._arrays_eval.propagates_inf`)."""
+        self.variants(name)
+        return self._programs["inf", name]
 
     def divides(self, name: str) -> bool:
         """Kernel ``name``'s program divides (else no sample is ever singular)."""
@@ -98,7 +120,9 @@ class ArraySpace:
     def vjp(self, name: str, mode: str = "vjp"):
         """The generated reverse-mode (``"vjp"``: ``f(*columns, *output cotangents) -> input
         cotangents``) or forward-mode (``"jvp"``: ``f(*columns, *input tangents) -> output
-        tangents``) program of kernel ``name`` (``rigidsym.codegen.vjp``), or None."""
+        tangents``) program of kernel ``name`` (``rigidsym.codegen.vjp``), or None;
+        ``"saved"``: ``(forward, vjp)`` where the forward also returns the temps the VJP
+        reads and the VJP takes them after the columns, or None."""
         self.variants(name)
         return self._programs[mode, name]
 
@@ -120,97 +144,12 @@ def make_all(progs: ArraySpace, make: Callable) -> dict:
     return {name: make(name) for name in progs.meta if not name.endswith(SUFFIX)}
 
 
-def columns(arrays: list, args: list[dict]) -> list:
-    """One array per scalar component (row-major), each of the batch shape."""
-    cols = []
-    for x, a in zip(arrays, args, strict=True):
-        if not a["shape"]:
-            cols.append(x)
-            continue
-        n = int(math.prod(a["shape"]))
-        flat = x.reshape(tuple(x.shape[:len(x.shape) - len(a["shape"])]) + (n,))
-        # torch's unbind: one dispatch for the n views (and one stack in its backward)
-        # instead of n indexings, a fixed cost of a call at small N (issue 38)
-        cols.extend(flat.unbind(-1) if hasattr(flat, "unbind") else
-                    (flat[..., i] for i in range(n)))
-    return cols
-
-
-def shape_outputs(xp, flat: list, outs: list[dict], like) -> list:
-    """The flat outputs of a program as arrays ``batch + output shape``."""
-    res, k = [], 0
-    batch = tuple(like.shape)
-    for o in outs:
-        n = int(math.prod(o["shape"]))
-        parts = [_full(xp, v, like) for v in flat[k:k + n]]
-        k += n
-        res.append(parts[0] if not o["shape"] else
-                   xp.stack(parts, -1).reshape(batch + tuple(o["shape"])))
-    return res
-
-
-def evaluate(xp, variants: tuple, cols: list, stop_gradient: Callable, safe=None,
-             singular=None) -> tuple[list, Any]:
-    """Run a kernel's variants on ``cols``: ``(flat outputs, singular mask)``.
-
-    A kernel with branches takes, per sample, the first branch whose condition holds, else
-    main (the NumPy kernel's rule). Safe ``where``: each variant sees the real inputs only
-    in its own samples and ``stop_gradient`` of them elsewhere, so a NaN or inf derivative
-    of a branch not taken never reaches the gradient.
-
-    ``safe`` (one float per column, a regular point: :func:`safe_point`) is substituted for
-    the inputs of the singular samples before the differentiable evaluation, so that their
-    derivatives are finite and a zero cotangent gives exactly zero, never NaN (0 * inf),
-    in a parameter the batch shares (issue 38); their outputs are then the safe point's,
-    which the caller replaces by NaN or an error. ``singular``: the mask when known (the
-    forward's), else found by a first evaluation on ``stop_gradient`` of the inputs.
-    """
-    if safe is None:
-        return _evaluate(xp, variants, cols, stop_gradient)
-    if singular is None:
-        _, singular = _evaluate(xp, variants, [stop_gradient(c) for c in cols], stop_gradient)
-    cols = [xp.where(singular, v, c) for v, c in zip(safe, cols, strict=True)]
-    return _evaluate(xp, variants, cols, stop_gradient)[0], singular
-
-
-def _evaluate(xp, variants: tuple, cols: list, stop_gradient: Callable) -> tuple[list, Any]:
-    like = cols[0]
-    if len(variants) == 1:
-        outs, dens = variants[0][1](*cols)
-        sing = _singular(xp, dens, like)
-        return list(outs), sing
-    taken, rest = [], None
-    for _, _, when in variants[:-1]:
-        hit = when(*cols)
-        hit = hit if rest is None else xp.logical_and(rest, hit)
-        rest = xp.logical_not(hit) if rest is None else xp.logical_and(rest, xp.logical_not(hit))
-        taken.append(hit)
-    taken.append(rest)
-    result = sing = None
-    for (_, prog, _), hit in zip(reversed(variants), reversed(taken), strict=True):
-        safe = [xp.where(hit, c, stop_gradient(c)) for c in cols]
-        outs, dens = prog(*safe)
-        s = _singular(xp, dens, like)
-        outs = [_full(xp, v, like) for v in outs]
-        if result is None:
-            result, sing = outs, s
-        else:
-            result = [xp.where(hit, v, r) for v, r in zip(outs, result, strict=True)]
-            sing = xp.where(hit, s, sing)
-    return result, sing
-
-
-def _singular(xp, dens, like):
-    # a denominator that overflowed to inf flags its sample too (issue 37): x / inf = 0 is
-    # a finite wrong value; eager calls re-run such samples in long double (_arrays_rescue)
-    sing = None
-    for d in dens:
-        z = (d == 0) | xp.isinf(d)
-        sing = z if sing is None else xp.logical_or(sing, z)
-    if getattr(sing, "shape", None) != like.shape:  # no denominator, or a constant one
-        zero = xp.zeros_like(like, dtype=bool)
-        sing = zero if sing is None else xp.logical_or(zero, sing)
-    return sing
+def _cotangents(grads: list, outs: list[dict]) -> list:
+    """The columns of the outputs' cotangents (None: zeros, as Python floats)."""
+    gcols = []
+    for g, o in zip(grads, outs, strict=True):
+        gcols += ([0.0] * int(math.prod(o["shape"])) if g is None else columns([g], [o]))
+    return gcols
 
 
 # ------------------------------------------------ the call path both back-ends share
@@ -256,6 +195,9 @@ class Library:
     note: Callable = lambda values: None
     clear: Callable = lambda mask: False
     constant: Callable = lambda fn: fn
+    #: ``finite_inside()``: the function of a traced call (``make``) takes an inf input as
+    #: NaN itself (``Space.values(finite=True)``); else ``Space.call`` maps the inputs
+    finite_inside: Callable = lambda: False
     #: ``rescued(outputs, rows, inputs)``: the outputs, whose ``rows`` (a batch mask) hold
     #: values of the long-double rescue, with no derivative there (NaN for a nonzero
     #: cotangent, as autograd cannot follow the host); None: nothing differentiates eagerly
@@ -276,11 +218,16 @@ class Space:
         back-end's derivative rule."""
         return self._fns[name]
 
-    def values(self, name: str, xs, differentiated: bool = False) -> tuple:
+    def values(self, name: str, xs, differentiated: bool = False,
+               finite: bool = False) -> tuple:
         """``(*outputs, singular)`` of kernel ``name`` on broadcast inputs ``xs``;
-        ``differentiated``: autograd will run through it (safe inputs where singular)."""
+        ``differentiated``: autograd will run through it (safe inputs where singular);
+        ``finite``: a traced call, an inf input taken as NaN here
+        (:func:`._arrays_rescue.finite_columns`)."""
         xp, outs = self.lib.xp, self.progs.meta[name]["outputs"]
         cols = columns(xs, self.progs.meta[name]["args"])
+        if finite and not self.progs.propagates_inf(name):  # else Space.call's outputs
+            cols = _ar.finite_columns(cols)
         flat, sing = evaluate(xp, self.progs.variants(name), cols, self.lib.stop_gradient,
                               self._safe(name) if differentiated else None)
         return (*shape_outputs(xp, flat, outs, cols[0]), sing)
@@ -296,6 +243,29 @@ class Space:
                            self._safe(name), singular)
         return flat[nval:]
 
+    def values_saved(self, name: str, xs) -> tuple:
+        """``(outputs, singular, temps)``: :meth:`values` of a kernel with a ``"saved"``
+        program, and the forward temps its VJP reads, for :meth:`vjp_saved` (issue 38)."""
+        xp, meta = self.lib.xp, self.progs.meta[name]
+        cols = columns(xs, meta["args"])
+        outs, dens, temps = self.progs.vjp(name, "saved")[0](*cols)
+        return (shape_outputs(xp, list(outs), meta["outputs"], cols[0]),
+                singular_mask(xp, dens, cols[0]), temps)
+
+    def regular(self, name: str, singular) -> bool:
+        """No sample is singular, known without a trace or a device sync (no denominator,
+        or an eager CPU mask read)."""
+        return not self.progs.divides(name) or self.lib.clear(singular)
+
+    def vjp_saved(self, name: str, xs, temps, grads: list) -> list:
+        """:meth:`vjp` on the forward's ``temps`` (:meth:`values_saved`) where no sample
+        is singular (:meth:`regular`): the same operations less those of the forward."""
+        meta = self.progs.meta[name]
+        cols = columns(xs, meta["args"])
+        flat = self.progs.vjp(name, "saved")[1](*cols, *temps,
+                                                 *_cotangents(grads, meta["outputs"]))
+        return shape_outputs(self.lib.xp, list(flat), meta["args"], cols[0])
+
     def vjp(self, name: str, xs, grads: list, singular) -> list:
         """The cotangents of the inputs ``xs`` from those of the outputs, ``grads`` (None:
         zero): the generated reverse-mode program, on the safe point's inputs in the
@@ -309,10 +279,7 @@ class Space:
             return contract(xp, grads, self.jacobian(name, xs, singular), outs, args,
                             forward=False)
         cols = self._safe_columns(name, xs, singular)
-        gcols = []
-        for g, o in zip(grads, outs, strict=True):
-            gcols += ([0.0] * int(math.prod(o["shape"])) if g is None else columns([g], [o]))
-        return shape_outputs(xp, list(fn(*cols, *gcols)), args, cols[0])
+        return shape_outputs(xp, list(fn(*cols, *_cotangents(grads, outs))), args, cols[0])
 
     def jvp(self, name: str, xs, tangents: list, singular) -> list:
         """The tangents of the outputs from those of the inputs (arrays, zeros for none):
@@ -335,7 +302,7 @@ class Space:
         """The columns of ``xs``, the safe point's in the ``singular`` samples (no
         ``where`` without a denominator or with a clear eager mask, issue 38)."""
         cols, where = columns(xs, self.progs.meta[name]["args"]), self.lib.xp.where
-        if not self.progs.divides(name) or self.lib.clear(singular):
+        if self.regular(name, singular):
             return cols
         return [where(singular, v, c) for v, c in zip(self._safe(name), cols, strict=True)]
 
@@ -357,7 +324,7 @@ class Space:
         full = [x if not traced and tuple(x.shape) == batch + tuple(a["shape"]) else
                 xp.broadcast_to(x, batch + tuple(a["shape"])) for x, a in zip(xs, args,
                                                                              strict=True)]
-        if traced:
+        if traced and not lib.finite_inside():  # else the function maps them, cheaper
             full = _ar.traced_inputs(xp, full)
         *res, bad = self.function(name)(*full)
         clear = False
@@ -369,18 +336,18 @@ class Space:
             return res[0] if len(res) == 1 else tuple(res)
         # a result that does not fit the dtype, from finite inputs (a NaN input's NaN is
         # its IEEE value, issue 37)
-        over = xp.zeros_like(bad)
-        for r in res:
-            over = over | ~xp.isfinite(r.reshape(batch + (-1,))).all(-1)
-        for x in full:
-            over = over & xp.isfinite(x.reshape(batch + (-1,))).all(-1)
+        over = nonfinite_rows(xp, res, batch) & ~nonfinite_rows(xp, full, batch)
         sing, bad = bad, bad | over
         if on_singular == "raise":
             if bool(bad.any()):  # the error path copies the masks to the host
                 raise_flagged(name, meta, lib.host(sing), lib.host(bad & ~sing),
                               [lib.host(lib.detach(x)) for x in xs])
         else:
-            res = [xp.where(bad.reshape(batch + (1,) * (r.ndim - len(batch))), xp.nan, r)
+            # inf inputs kept by a program that propagates them: its non-finite outputs NaN
+            inf = traced and lib.finite_inside() and self.progs.propagates_inf(name)
+            res = [xp.where(bad.reshape(batch + (1,) * (r.ndim - len(batch))) |
+                            xp.isinf(r) if inf else
+                            bad.reshape(batch + (1,) * (r.ndim - len(batch))), xp.nan, r)
                    for r in res]
         return res[0] if len(res) == 1 else tuple(res)
 
@@ -390,6 +357,8 @@ class Space:
         was flagged at all."""
         lib, xp = self.lib, self.lib.xp
         bits = int(lib.finfo(full[0].dtype).bits)
+        if not _ar.screen(lib, full, res, sing, bits):
+            return res, sing, True
         rows = _ar.flag_rows(xp, full, res, sing, batch, bits)
         if not bool(rows.any()):
             return res, sing, True

@@ -73,22 +73,38 @@ def validate(xp, arrays: list, args: list[dict], eps: float | None = None) -> No
         if kind is None or kind.check is None or not _numel(x):
             continue
         tol = tolerance(kind, float(xp.finfo(x.dtype).eps) if eps is None else eps)
-        if kind.shape == (3, 3):
-            ident = xp.eye(3, dtype=x.dtype)
-            if hasattr(ident, "to"):  # torch: on the input's device (found on a GPU)
-                ident = ident.to(x.device)
-            g = xp.einsum("...ki,...kj->...ij", x, x) - ident
-            err = float(xp.abs(g).max())
+        if kind.shape == (4, 4):   # a homogeneous transform: last row, then R = T[:3, :3]
+            last = x[..., 3, :] - _like(xp, x, [0.0, 0.0, 0.0, 1.0])
+            err = float(xp.abs(last).max())
             if not err <= tol:
-                raise ValueError(f"{a['name']}: not orthogonal (max |{a['name']}^T "
-                                 f"{a['name']} - 1| = {err:.3g} > {tol:.3g})")
-            if bool((xp.linalg.det(x) <= 0).any()):
-                raise ValueError(f"{a['name']}: not a proper rotation (det <= 0)")
+                raise ValueError(f"{a['name']}: not a homogeneous transform (last row not "
+                                 f"[0, 0, 0, 1]: max deviation {err:.3g} > {tol:.3g})")
+            try:
+                _rotation(xp, x[..., :3, :3], a["name"] + "[:3, :3]", tol)
+            except ValueError as exc:
+                raise ValueError(f"{a['name']}: not a homogeneous transform: {exc}") from None
+        elif kind.shape == (3, 3):
+            _rotation(xp, x, a["name"], tol)
         elif len(kind.shape) == 1:
             err = float(xp.abs(xp.sqrt((x * x).sum(-1)) - 1.0).max())
             if err > tol:
                 raise ValueError(f"{a['name']}: not a unit vector (| ||{a['name']}|| - 1 | = "
                                  f"{err:.3g} > {tol:.3g})")
+
+
+def _like(xp, x, values):
+    v = xp.asarray(values, dtype=x.dtype)
+    return v.to(x.device) if hasattr(v, "to") else v  # torch: on the input's device (GPU)
+
+
+def _rotation(xp, x, name: str, tol: float) -> None:
+    g = xp.einsum("...ki,...kj->...ij", x, x) - _like(xp, x, np.eye(3))
+    err = float(xp.abs(g).max())
+    if not err <= tol:
+        raise ValueError(f"{name}: not orthogonal (max |{name}^T {name} - 1| = {err:.3g} > "
+                         f"{tol:.3g})")
+    if bool((xp.linalg.det(x) <= 0).any()):
+        raise ValueError(f"{name}: not a proper rotation (det <= 0)")
 
 
 def broadcast_batch(broadcast_shapes: Callable, xs: list, args: list[dict],

@@ -13,10 +13,12 @@ whose dispatcher (``rigidsym_dispatch.h``) picks a path at import. Paths: ``x86-
 (baseline), ``x86-64-v3`` (AVX2 + FMA) and ``x86-64-v4`` (AVX-512) on x86-64, no ``-march``
 elsewhere, ``native`` (``-march=native``, one path) on request, never by default.
 
-Flags of the kernels: ``-O3 -std=c99 -ffp-contract=fast`` (FMA contraction, never
-``-ffast-math``; ``RIGIDSYM_CFLAGS`` replaces them). OpenMP (threads of the batch loops) and
-glibc's libmvec (vectorised ``sin``/``cos``) are used when a probe compiles and links with
-them (``RIGIDSYM_OPENMP=0``, ``RIGIDSYM_LIBMVEC=0`` skip them). Objects compile in parallel
+Flags of the kernels: ``-O3 -std=c99 -ffp-contract=fast -fno-math-errno`` (FMA
+contraction, never ``-ffast-math``; ``RIGIDSYM_CFLAGS`` replaces them). OpenMP (threads of
+the batch loops) is used when a probe compiles and links with it (``RIGIDSYM_OPENMP=0``
+skips it). The SIMD ``sin``/``cos`` are the generated header's own (within 1 ulp,
+c_common.h.j2); glibc's libmvec (within 4 ulp, which takes trig kernels past issue 37's
+rule) only on request, ``RIGIDSYM_LIBMVEC=1``, and when its probe links. Objects compile in parallel
 (``RIGIDSYM_BUILD_JOBS``, default the usable cores), or come from the object cache.
 """
 
@@ -63,8 +65,10 @@ MODULE = "_ckernels"
 MODULE_SOURCE = "rigidsym_module.c"
 #: the table of one path's functions (compiled by every path, partial ones included)
 TABLE_SOURCE = "rigidsym_table.c"
-#: optimisation flags of the kernels (``RIGIDSYM_CFLAGS`` replaces them)
-KERNEL_FLAGS = ("-O3", "-std=c99", "-ffp-contract=fast")
+#: optimisation flags of the kernels (``RIGIDSYM_CFLAGS`` replaces them). -fno-math-errno:
+#: sqrt then never calls libm to set errno, a branch that kept every lanes loop with a root
+#: scalar (gcc -fopt-info-vec-missed: "control flow in loop"); results are the same bits.
+KERNEL_FLAGS = ("-O3", "-std=c99", "-ffp-contract=fast", "-fno-math-errno")
 #: every object: position-independent, only PyInit__ckernels exported
 COMMON_FLAGS = ("-fPIC", "-fvisibility=hidden", "-DNDEBUG")
 #: flags of the libmvec build (sin/cos not fused into a scalar sincos call)
@@ -178,7 +182,8 @@ def _probe(cc: tuple[str, ...], flags: tuple[str, ...], libs: tuple[str, ...], s
 
 
 def configure(native: bool = False, cc: list[str] | None = None) -> Config:
-    """The build of this machine: compiler, paths, flags, OpenMP and libmvec when they link.
+    """The build of this machine: compiler, paths, flags, OpenMP when it links, libmvec when
+    asked for (``RIGIDSYM_LIBMVEC=1``) and it links.
 
     Raises:
         CompilerNotFound: no C compiler on ``PATH``.
@@ -193,7 +198,7 @@ def configure(native: bool = False, cc: list[str] | None = None) -> Config:
     cmd, flags, paths = tuple(cc), kernel_flags(), default_paths(native)
     base = (*flags, *paths[-1].flags)
     mvec = (sys.platform.startswith("linux") and platform.libc_ver()[0] == "glibc"
-            and os.environ.get("RIGIDSYM_LIBMVEC", "1") != "0"
+            and os.environ.get("RIGIDSYM_LIBMVEC", "0") == "1"
             and _probe(cmd, (*base, *MVEC_FLAGS), ("-lmvec", "-lm"), True))
     omp = (os.environ.get("RIGIDSYM_OPENMP", "1") != "0"
            and _probe(cmd, (*base, *OMP_FLAGS), ("-lm",), False))

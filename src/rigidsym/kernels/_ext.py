@@ -82,7 +82,7 @@ def _key(sources: str, native: bool) -> str:
     parts = [sources, " ".join(_build.kernel_flags()),
              ";".join(f"{p.name}={' '.join(p.flags)}" for p in paths),
              sys.implementation.cache_tag, platform.machine(), platform.system(),
-             os.environ.get("RIGIDSYM_OPENMP", "1"), os.environ.get("RIGIDSYM_LIBMVEC", "1")]
+             os.environ.get("RIGIDSYM_OPENMP", "1"), os.environ.get("RIGIDSYM_LIBMVEC", "0")]
     if native:
         parts.append(_build.cpu_features())
     return hashlib.sha256("\n".join(parts).encode()).hexdigest()[:20]

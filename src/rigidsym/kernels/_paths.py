@@ -3,8 +3,9 @@ kernels are compiled for, and which kernels each level compiles.
 
 As in NumPy's dispatcher, every kernel is compiled once per path; the module picks the best
 path the CPU runs at import. The x86-64-v4 path compiles only the kernels that call ``sin``
-or ``cos``: what it buys is libmvec's 8-wide AVX-512 variants (measured 0.83-0.92x the
-x86-64-v3 time on the trigonometric K3 and K5, level on K1, K4 and K6, which call neither:
+or ``cos``: what it buys is 8-wide AVX-512 sin/cos in their SIMD loops (libmvec's then,
+measured 0.83-0.92x the x86-64-v3 time on the trigonometric K3 and K5; the generated
+header's own since issue 37, level on K1, K4 and K6, which call neither:
 ``benchmarks/RESULTS.md``), and those 34 of 134 kernels cost 29 % of its compile time for
 nothing (issue 27). The others' x86-64-v4 entries are the x86-64-v3 functions, aliased at
 link time (``--defsym``, GNU ld). Standard library only (``setup.py`` loads it by path).

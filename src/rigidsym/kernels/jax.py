@@ -88,17 +88,23 @@ def _make(space: _arrays.Space, name: str):
     """``f(*xs) -> (*outputs, singular)``: a ``jax.custom_jvp`` whose JVP is the generated
     Jacobian kernel, or the plain expression (no Jacobian kernel)."""
     if not space.progs.has_jacobian(name):
-        # traced (maybe differentiated): safe inputs in the singular samples
-        return lambda *xs: space.values(name, xs, _traced(xs))
+        # traced (maybe differentiated): safe inputs in the singular samples, inf as NaN
+        return lambda *xs: space.values(name, xs, _traced(xs), _traced(xs))
 
     def values(*xs):
-        return space.values(name, xs)
+        return space.values(name, xs, finite=_traced(xs))
 
     f = jax.custom_jvp(values)
 
+    divides = space.progs.divides(name)
+
     @f.defjvp
     def _jvp(primals, tangents):
-        res = values(*primals)
+        # a kernel that divides: the values on the safe point's inputs in the singular
+        # samples too (NaN there after Space.call's mask), so that the forward temps the JVP
+        # program reads are the values' own, computed once (XLA merges the two), not again
+        # on other inputs (issue 38: the backward reuses the forward's subexpressions)
+        res = space.values(name, primals, divides, _traced(primals))
         # the generated forward-mode program, linear in the tangents (JAX transposes it)
         touts = space.jvp(name, primals, list(tangents), res[-1])
         zero = np.zeros(res[-1].shape, dtype=jax.dtypes.float0)
@@ -116,7 +122,7 @@ _LIBRARY = _arrays.Library(
     device=lambda xs: None, host=np.asarray, make=_make, note=_x64_note,
     floats=tuple(np.dtype(t) for t in (jnp.float16, jnp.bfloat16, jnp.float32, jnp.float64)),
     float32=np.dtype(jnp.float32), finfo=jnp.finfo, cast=lambda x, dtype: x.astype(dtype),
-    float_dtype=_float_dtype)
+    float_dtype=_float_dtype, finite_inside=lambda: True)
 
 # load, the Euler-angle kernels, the lazy kernels: the same for both back-ends (_arrays_api)
 load, euler_rate_matrix, euler_angle_rates, __getattr__, __dir__, _space = \

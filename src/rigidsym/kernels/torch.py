@@ -97,6 +97,9 @@ def _dtype(values, arrays) -> torch.dtype:
     the dimensioned ones decide, else the zero-dimensional ones (``torch.ones(3,
     dtype=float32) * torch.tensor(2.0, dtype=float64)`` is float32); Python numbers and
     lists are weak, as in torch; none at all: the default dtype."""
+    dt = _same_float(values)
+    if dt is not None:
+        return dt
     found = [(v.ndim > 0, _float_dtype(v)) for v, x in zip(values, arrays, strict=True)
              if isinstance(v, torch.Tensor | np.ndarray) and _float_dtype(x) is not None]
     found = [d for dim, d in found if dim] or [d for _, d in found]
@@ -105,6 +108,20 @@ def _dtype(values, arrays) -> torch.dtype:
     dt = found[0]
     for d in found[1:]:
         dt = torch.promote_types(dt, d)
+    return dt
+
+
+def _same_float(values):
+    """The dtype of ``values`` when all are dimensioned floating tensors of one dtype (the
+    common case), else None: a loop Dynamo traces quickly (the general rule of
+    :func:`_dtype` cost 0.6 s of Dynamo's tracing of a call under torch.compile, a third of
+    it, issue 38)."""
+    dt = None
+    for v in values:
+        if not (isinstance(v, torch.Tensor) and v.ndim > 0 and v.dtype.is_floating_point) \
+                or (dt is not None and v.dtype != dt):
+            return None
+        dt = v.dtype
     return dt
 
 
@@ -157,9 +174,10 @@ def _function(space: _arrays.Space, name: str, forward_mode: bool):
         t = [torch.zeros_like(x) if d is None else d for x, d in zip(xs, tangents, strict=True)]
         return (*space.jvp(name, xs, t, sing), None)
 
+    # the compiled class runs only while traced: an inf input taken as NaN inside
     body = {"generate_vmap_rule": True,
-            "forward": staticmethod(_fixed_arity(lambda xs: space.values(name, xs),
-                                                 len(args))),
+            "forward": staticmethod(_fixed_arity(
+                lambda xs: space.values(name, xs, finite=not forward_mode), len(args))),
             "setup_context": staticmethod(setup_context), "backward": staticmethod(backward)}
     if forward_mode:
         body["jvp"] = staticmethod(jvp)
@@ -172,9 +190,10 @@ def _make(space: _arrays.Space, name: str):
     generated Jacobian kernel, or autograd through the expression (no Jacobian kernel;
     safe inputs in the singular samples when differentiated)."""
     if not space.progs.has_jacobian(name):
-        return lambda *xs: space.values(name, xs, _differentiable(xs))
+        return lambda *xs: space.values(name, xs, _differentiable(xs),
+                                        torch.compiler.is_compiling())
     eager, compiled = _function(space, name, True), _function(space, name, False)
-    fast = _plain_apply(eager)
+    fast = _plain_apply(_saving(space, name) if space.progs.vjp(name, "saved") else eager)
 
     def apply(*xs):
         if torch.compiler.is_compiling():
@@ -186,6 +205,33 @@ def _make(space: _arrays.Space, name: str):
         return fast(*xs)
 
     return apply
+
+
+def _saving(space: _arrays.Space, name: str):
+    """The ``torch.autograd.Function`` of eager autograd outside torch.func (issue 38: the
+    backward reuses the forward's common subexpressions): its forward saves the temps the
+    generated VJP would compute again, and its backward takes them, unless a sample is
+    singular (its VJP then runs on the safe point there) or the backward is differentiated
+    (``create_graph=True``: the saved temps carry no graph), when it recomputes as
+    :func:`_function`'s. An old-style ``forward(ctx, ...)``: the temps are saved from
+    inside it; never traced (``apply`` takes it only in eager mode)."""
+    nargs = len(space.progs.meta[name]["args"])
+
+    def forward(ctx, *xs):
+        outs, sing, temps = space.values_saved(name, xs)
+        ctx.save_for_backward(*xs, sing, *temps)
+        ctx.mark_non_differentiable(sing)
+        return (*outs, sing)
+
+    def backward(ctx, *grads):
+        saved = ctx.saved_tensors
+        xs, sing, temps = saved[:nargs], saved[nargs], saved[nargs + 1:]
+        if torch.is_grad_enabled() or not space.regular(name, sing):
+            return tuple(space.vjp(name, xs, list(grads[:-1]), sing))
+        return tuple(space.vjp_saved(name, xs, temps, list(grads[:-1])))
+
+    return type(f"{name}_saving_function", (torch.autograd.Function,),
+                {"forward": staticmethod(forward), "backward": staticmethod(backward)})
 
 
 def _plain_apply(cls):
@@ -266,7 +312,8 @@ _LIBRARY = _arrays.Library(
     host=lambda x: x.cpu().numpy(), make=_make, refuse=_refuse, floats=_FLOATS,
     float32=torch.float32, finfo=torch.finfo, float_dtype=_float_dtype,
     cast=lambda x, dtype: x.to(dtype), rescued=_rescued, clear=_clear,
-    constant=getattr(torch.compiler, "assume_constant_result", lambda fn: fn))
+    constant=getattr(torch.compiler, "assume_constant_result", lambda fn: fn),
+    finite_inside=torch.compiler.is_compiling)
 
 # load, the Euler-angle kernels, the lazy kernels: the same for both back-ends (_arrays_api)
 load, euler_rate_matrix, euler_angle_rates, __getattr__, __dir__, _space = \
