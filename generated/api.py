@@ -667,7 +667,7 @@ def exponential_coordinates_from_transform(
 
         w = Log(R), v = J_l(w)^-1 p; below pi/4 in s = norm of vect(R) alone (asin, sqrt(1 - s^2)), near pi the symmetric part of R
 
-    Book: Eq. (sola:exp-se3), (sola:log-exp-se3); composed of rigidsym.derivations.lie_maps.exponential_coordinates_from_transform.
+    Book: Eq. (sola:exp-se3), (sola:log-exp-se3), (sola:log-se3-small); composed of rigidsym.derivations.lie_maps.exponential_coordinates_from_transform, rigidsym.derivations.lie_maps.exponential_coordinates_from_transform_small.
 
     Args:
         T: array-like (..., 4, 4), homogeneous transform [[R, p], [0, 1]]; homogeneous transform [[R, p], [0, 1]] (R a rotation)
@@ -687,9 +687,9 @@ def exponential_coordinates_from_transform(
     Notes:
         T is not validated (its rotation block is read as a rotation).
 
-        Accuracy: error <= 1.23 u (kappa + 1) in float64, <= 1.06 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 2.51e+16 ulp in float64) over 9 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1.15 u (kappa + 1) in float64, <= 1.19 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 2.51e+16 ulp in float64) over 9 regimes (docs/accuracy.md, kernels.accuracy).
 
-        Generated; 651 operations; math hash 37a810a917f4ad77.
+        Generated; 645 operations; math hash 1ba043e69a601155.
     """
     return _F.exponential_coordinates_from_transform(T, out, check, on_singular, threads)
 
@@ -764,7 +764,7 @@ def exponential_coordinates_left_jacobian_inverse(
     Notes:
         Singular set: theta = 2 pi k, k != 0 (theta = norm of w).
 
-        Accuracy: error <= 3.12e+13 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 3.72e+13 ulp in float64) over 3 regimes (docs/accuracy.md, kernels.accuracy); singular when theta = 2 pi k, k != 0 (theta = norm of w).
+        Accuracy: error <= 1.37 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 143 ulp in float64) over 3 regimes (docs/accuracy.md, kernels.accuracy); singular when theta = 2 pi k, k != 0 (theta = norm of w).
 
         Generated; 1102 operations; math hash 403a221bb493ca86.
     """
@@ -1340,7 +1340,7 @@ def rotation_vector_from_rotation(
 
         w = (phi / sin phi) vect(Q); asin near 0, the symmetric part near pi
 
-    Book: Eq. (sola:exp-so3), (sola:log-exp-so3), (sola:exp-log-so3); composed of rigidsym.derivations.lie_maps.rotation_vector_from_rotation.
+    Book: Eq. (sola:exp-so3), (sola:log-exp-so3), (sola:exp-log-so3), (sola:log-so3-small); composed of rigidsym.derivations.lie_maps.rotation_vector_from_rotation, rigidsym.derivations.lie_maps.rotation_vector_from_rotation_small.
 
     Args:
         Q: array-like (..., 3, 3), proper orthogonal; rotation matrix (proper orthogonal)
@@ -1360,9 +1360,9 @@ def rotation_vector_from_rotation(
     Notes:
         At phi = pi exactly, w and -w are both logarithms; the sign follows natural_invariants_from_rotation's rule.
 
-        Accuracy: error <= 1.78 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 2 ulp in float64) over 6 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1.63 u (kappa + 1) in float64, <= 1.26 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 3 ulp in float64) over 6 regimes (docs/accuracy.md, kernels.accuracy).
 
-        Generated; 195 operations; math hash 77cc89802f09a40b.
+        Generated; 189 operations; math hash 2e15491416cd7072.
     """
     return _F.rotation_vector_from_rotation(Q, out, check, on_singular, threads)
 
@@ -1437,7 +1437,7 @@ def rotation_vector_left_jacobian_inverse(
     Notes:
         Singular set: theta = 2 pi k, k != 0 (theta = norm of w).
 
-        Accuracy: error <= 1.85e+13 u (kappa + 1) in float64, <= 1.04 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 2.22e+13 ulp in float64) over 4 regimes (docs/accuracy.md, kernels.accuracy); singular when theta = 2 pi k, k != 0 (theta = norm of w).
+        Accuracy: error <= 1.23 u (kappa + 1) in float64, <= 1.04 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 2.21e+06 ulp in float64) over 4 regimes (docs/accuracy.md, kernels.accuracy); singular when theta = 2 pi k, k != 0 (theta = norm of w).
 
         Generated; 32 operations; math hash 2f680f5aa3fbff2f.
     """
@@ -1514,7 +1514,7 @@ def rotation_vector_right_jacobian_inverse(
     Notes:
         Singular set: theta = 2 pi k, k != 0 (theta = norm of w).
 
-        Accuracy: error <= 1.85e+13 u (kappa + 1) in float64, <= 1.04 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 2.22e+13 ulp in float64) over 4 regimes (docs/accuracy.md, kernels.accuracy); singular when theta = 2 pi k, k != 0 (theta = norm of w).
+        Accuracy: error <= 1.23 u (kappa + 1) in float64, <= 1.04 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 2.21e+06 ulp in float64) over 4 regimes (docs/accuracy.md, kernels.accuracy); singular when theta = 2 pi k, k != 0 (theta = norm of w).
 
         Generated; 32 operations; math hash db168e620321154f.
     """

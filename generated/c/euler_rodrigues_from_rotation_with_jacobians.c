@@ -59,6 +59,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_euler_rodrigues_from_rotation_with_jac
 }
 
 
+RIGIDSYM_F32_BEGIN
 static RIGIDSYM_NOINLINE int64_t rigidsym_euler_rodrigues_from_rotation_with_jacobians_lanes_f32(
     const float *RIGIDSYM_RESTRICT in_Q,
     float *RIGIDSYM_RESTRICT out_eta,
@@ -77,6 +78,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_euler_rodrigues_from_rotation_with_jac
     return count;
 }
 
+RIGIDSYM_F32_END
 
 static RIGIDSYM_NOINLINE int64_t rigidsym_euler_rodrigues_from_rotation_with_jacobians_block(
     int64_t m, int64_t nl,

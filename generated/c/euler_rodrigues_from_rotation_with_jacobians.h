@@ -297,7 +297,9 @@ static inline int rigidsym_euler_rodrigues_from_rotation_with_jacobians_sample(
 }
 
 
-/* One float32 sample: float inputs and outputs, arithmetic of the precision plan above. */
+/* One float32 sample: float inputs and outputs, arithmetic of the precision plan above
+ * (compiled without FMA contraction, as the plan was measured: RIGIDSYM_F32_BEGIN). */
+RIGIDSYM_F32_BEGIN
 static inline int rigidsym_euler_rodrigues_from_rotation_with_jacobians_sample_f32(
     const float *RIGIDSYM_RESTRICT in_Q,
     float *RIGIDSYM_RESTRICT out_eta,
@@ -557,6 +559,7 @@ static inline int rigidsym_euler_rodrigues_from_rotation_with_jacobians_sample_f
     return singular;
 }
 
+RIGIDSYM_F32_END
 
 /* Batch over n samples; singular samples and samples with a non-finite output (overflow)
  * are written as NaN; returns their number. One thread. */
