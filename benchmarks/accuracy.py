@@ -27,7 +27,7 @@ float64, is not judged (``beyond``).
 Usage (from the repository root)::
 
     python benchmarks/accuracy.py [--kernels A,B] [--dtypes float64,float32]
-        [--backends c,numpy] [--random N] [--seeds 0,1] [--json PATH] [--md PATH]
+        [--backends c,numpy] [--random N] [--seeds auto|0,1] [--json PATH] [--md PATH]
 
 The full sweep of the 134 kernels takes tens of minutes on one core; ``tests/test_accuracy.py``
 runs a float64 subsample.
@@ -48,6 +48,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 import _accuracy_peers as O  # noqa: E402
 import _accuracy_points as P  # noqa: E402
 import _accuracy_ref as R  # noqa: E402
+from _accuracy_seeds import DATA, DEFAULT_SEEDS, merged, seeds_for  # noqa: E402,F401
 from _accuracy_tables import kernel_table, markdown, rule_table  # noqa: E402,F401
 
 from rigidsym import kernels as K  # noqa: E402
@@ -77,6 +78,7 @@ class Row:
     beyond: int = 0                # kappa u >= 1/8: the rounding of the input decides all
     spurious: list = field(default_factory=list)   # singular where the result is fine
     worst_point: str = ""
+    seed: int = 0                  # the seed of the regimes' points
 
     @property
     def accurate(self) -> bool:
@@ -138,13 +140,12 @@ def judge(name: str, regime: str, points, dtype, backends, refs=None,
         for b in backends:
             row, c = rows[b], got[b][s]
             flagged = not np.isfinite(c).all()
-            kappa = (scale / np.where(norms > 0, norms, np.inf)).max() if ref is not None \
-                else np.inf
+            kappa = _kappa(scale, norms) if ref is not None else np.inf
             # the mathematics is singular, or the rounding of the input can reach its
-            # singular set (kappa u >= 1/8), or the result overflows the type
-            if ref is None or not np.isfinite(scale).all() or (
-                    flagged and (np.abs(ref).max() > big or kappa >= KAPPA_SINGULAR
-                                 or kappa * u >= 0.125)):
+            # singular set (kappa u >= 1/8), or the result overflows the type; a derivative
+            # past float64 is a condition number past any bound (beyond, never skipped)
+            if ref is None or (flagged and (np.abs(ref).max() > big or kappa >= KAPPA_SINGULAR
+                                            or kappa * u >= 0.125)):
                 row.flagged_expected += flagged or ref is None
                 continue
             if flagged:
@@ -198,6 +199,14 @@ def judge(name: str, regime: str, points, dtype, backends, refs=None,
     return list(rows.values())
 
 
+def _kappa(scale, norms) -> float:
+    """The worst condition number over the outputs (an output that is 0: its absolute
+    scale); inf where a derivative or a norm overflowed float64."""
+    with np.errstate(all="ignore"):
+        k = scale / np.where(norms > 0, norms, np.inf)
+    return float(np.where(np.isnan(k), np.inf, k).max())
+
+
 class _Rounded:
     """The declared formula at the point with the unconstrained arguments as rounded to the
     type (constrained ones exact, on their manifold), on first use; the exact point's
@@ -237,7 +246,8 @@ def _diff(c, ref, at_input, sl, bound) -> float:
     Q (or of a transform's R) can flip the sign of its skew part, which fixes e: the exact
     point's output is then -w (the log of SO(3)), or [-w; J_l(-w)^-1 p] (the log of SE(3),
     not the negation of [w; v]), a jump that no derivative (kappa) sees; the kernel is
-    judged by its documented sign rule at its own input there."""
+    judged by its documented sign rule at its own input there (a Jacobian kernel's derivative
+    is then that of the other logarithm, ``d phi e - phi de`` for ``d phi e + phi de``)."""
     if not np.isfinite(c).all():
         return np.inf
     d = float(np.linalg.norm(c - ref))
@@ -270,8 +280,10 @@ def sweep(names, dtypes, backends, n_random=8, small=None, progress=None, refs=N
                 for regime, pts in P.regimes(k, dt, n_random=n_random, small=small,
                                              seed=seed).items():
                     # the refs cache is keyed by regime and index: one seed only
-                    rows += judge(name, regime, pts, dt, backends,
-                                  refs if len(seeds) == 1 else None, runner)
+                    for r in judge(name, regime, pts, dt, backends,
+                                   refs if len(seeds) == 1 else None, runner):
+                        r.seed = seed
+                        rows.append(r)
         if progress:
             progress(name, rows)
     return rows
@@ -284,9 +296,11 @@ def summary(rows: list[Row], thresholds: dict | None = None) -> dict:
     counts; the regimes swept; whether every row is accurate."""
     out: dict = {}
     for r in rows:
-        k = out.setdefault(r.kernel, {"regimes": [], "accurate": True})
+        k = out.setdefault(r.kernel, {"regimes": [], "accurate": True, "seeds": []})
         if r.regime not in k["regimes"]:
             k["regimes"].append(r.regime)
+        if r.seed not in k["seeds"]:
+            k["seeds"].append(r.seed)
         k["accurate"] = bool(k["accurate"] and r.accurate)
         d = k.setdefault(r.dtype, {"bound": 0.0, "regime": "", "kappa": 0.0, "err": 0.0,
                                    "ulps": 0.0, "flagged": 0, "beyond": 0, "spurious": 0,
@@ -308,6 +322,7 @@ def summary(rows: list[Row], thresholds: dict | None = None) -> dict:
                      err=_sig(r.err))
     for name, k in out.items():
         k["regimes"].sort()
+        k["seeds"].sort()
         k["singular"] = K._state.meta()[name]["singular"]
         k["threshold"] = (thresholds or {}).get(name, "")
     return dict(sorted(out.items()))
@@ -323,8 +338,9 @@ def main(argv=None) -> int:
     ap.add_argument("--dtypes", default="float64,float32")
     ap.add_argument("--backends", default="c,numpy")
     ap.add_argument("--random", type=int, default=8, help="random points per kernel")
-    ap.add_argument("--seeds", default="0", help="comma-separated seeds of the regimes' "
-                    "points (tests/test_bounds_fresh.py re-measures at another)")
+    ap.add_argument("--seeds", default="auto", help="comma-separated seeds of the regimes' "
+                    "points (tests/test_bounds_fresh.py re-measures at another); 'auto': 0 "
+                    "and each kernel's own seeds in the data file (its 'seeds')")
     ap.add_argument("--no-jacobians", action="store_true")
     ap.add_argument("--json", default="", help="write every row here")
     ap.add_argument("--md", default="", help="write the markdown table here")
@@ -357,8 +373,12 @@ def main(argv=None) -> int:
                   f"{r.err:.2g} kappa {r.kappa:.2g} spurious {len(r.spurious)} at "
                   f"{(r.spurious or [r.worst_point])[0]}", flush=True)
 
-    rows = sweep(names, dtypes, backends, a.random, progress=progress,
-                 seeds=[int(x) for x in a.seeds.split(",")])
+    data_path = Path(a.data) if a.data else DATA
+    old = json.loads(data_path.read_text(encoding="utf-8")) if data_path.is_file() else {}
+    rows = []
+    for name in names:
+        rows += sweep([name], dtypes, backends, a.random, progress=progress,
+                      seeds=seeds_for(name, old, a.seeds))
     if a.json:
         Path(a.json).write_text(json.dumps([asdict(r) for r in rows], indent=1))
     if a.data:
@@ -366,8 +386,8 @@ def main(argv=None) -> int:
 
         from rigidsym._io import write_atomic
 
-        write_atomic(Path(a.data), json.dumps(summary(rows, thresholds()), indent=1,
-                                              sort_keys=True) + "\n")
+        write_atomic(Path(a.data), json.dumps(merged(old, summary(rows, thresholds())),
+                                              indent=1, sort_keys=True) + "\n")
     if a.md:
         Path(a.md).write_text(markdown([r for r in rows if not a.losses or not r.accurate]))
     return 0 if all(r.accurate for r in rows) else 1

@@ -15,9 +15,8 @@ from functools import partial
 import sympy as sp
 
 from rigidsym.codegen.spec import Arg, Branch, Kernel, Out
-from rigidsym.declare import vect
 
-from .kernel_wiring import Q_ARG, _ni_near_pi, _ni_when, formula
+from .kernel_wiring import Q_ARG, _ni_common, _ni_near_pi, _ni_when, formula
 
 __all__ = ["LIE_KERNELS"]
 
@@ -41,11 +40,9 @@ def _call(out, fn):
 
 
 def _log_small(Q):
-    # theta < pi/4 (tr Q > 1 + sqrt 2): theta = asin(|vect Q|), w = (asin s / s) vect(Q): the
-    # quotient is removable at s = 0 (codegen.removable)
-    v = vect(Q)
-    s = sp.sqrt((v.T * v)[0])
-    return {"w": sp.asin(s) / s * v}
+    # theta < pi/4 (tr Q > 1 + sqrt 2): theta = asin(|vect Q|), no acos; the quotient
+    # asin(s)/s is removable at s = 0 (codegen.removable); verified: sola:log-so3-small
+    return {"w": formula(_LM + "rotation_vector_from_rotation_small")(Q)}
 
 
 def _log_main(Q):
@@ -53,8 +50,14 @@ def _log_main(Q):
 
 
 def _log_near_pi(Q, k):
-    ni = _ni_near_pi(Q, k)
-    return {"w": ni["phi"] * ni["e"]}
+    # the natural invariants' axis e (column k of the symmetric part, signed by vect Q), and
+    # phi = atan2(e . vect Q, cos phi): e . vect Q = sin phi = |vect Q| on SO(3), but its
+    # derivative reads the direction of vect Q from e (well conditioned), where |vect Q|'s
+    # reads it from vect Q / |vect Q|, a vector of size sin phi rounded to u: the Jacobian
+    # kernel was 6.5e10 u off at phi = pi - 3e-15 (the value is the same either way)
+    v, _, c = _ni_common(Q)
+    e = _ni_near_pi(Q, k)["e"]
+    return {"w": sp.atan2((e.T * v)[0], c) * e}
 
 
 def _log_when(Q, k):
@@ -88,18 +91,9 @@ def _se3_near_pi(T, k):
 
 
 def _se3_small(T):
-    # theta < pi/4: u = vect(R), s = |u| = sin theta, theta = asin s, w = (theta / s) u and
-    # v = J_l(w)^-1 p = p - (theta/s)/2 u x p + c(theta) (theta/s)^2 u x (u x p), where
-    # c(theta) = 1/theta^2 - sin theta / (2 theta (1 - cos theta)) = 1/theta^2 - (1 + cos
-    # theta) / (2 theta sin theta) and cos theta = sqrt(1 - s^2): c (theta/s)^2 = (2 s -
-    # asin(s) (1 + sqrt(1 - s^2))) / (2 s^3), removable at s = 0 (codegen.removable)
-    R, p = T[:3, :3], T[:3, 3]
-    u = vect(R)
-    s = sp.sqrt((u.T * u)[0])
-    a = sp.asin(s) / s
-    g = (2 * s - sp.asin(s) * (1 + sp.sqrt(1 - s**2))) / (2 * s**3)
-    up = u.cross(p)
-    return {"xi": sp.Matrix.vstack(a * u, p - a / 2 * up + g * u.cross(up))}
+    # theta < pi/4: w and v in s = |vect(R)| = sin theta alone (asin, sqrt(1 - s^2), no
+    # acos), removable at s = 0 (codegen.removable); verified: sola:log-se3-small
+    return {"xi": formula(_LM + "exponential_coordinates_from_transform_small")(T)}
 
 
 _SE3_BRANCHES = (*(
@@ -145,11 +139,13 @@ LIE_KERNELS = [
     Kernel(name="rotation_vector_from_rotation", summary="Log of SO(3): the rotation vector "
            "w = phi e of Q, phi in [0, pi].",
            formula="w = (phi / sin phi) vect(Q); asin near 0, the symmetric part near pi",
-           ids=_IDS["so3"], sources=(_LM + "rotation_vector_from_rotation",), args=(Q_ARG,),
+           ids=(*_IDS["so3"], "sola:log-so3-small"),
+           sources=(_LM + "rotation_vector_from_rotation",
+                    _LM + "rotation_vector_from_rotation_small"), args=(Q_ARG,),
            outputs=(Out("w", (3,), "rotation vector [rad]"),), build=_log_main,
            branches=_log_branches(lambda r, kw: r),
            notes="At phi = pi exactly, w and -w are both logarithms; the sign follows "
-                 "natural_invariants_from_rotation's rule."),
+                 "natural_invariants_from_rotation's rule.", branch_jacobian=True),
     *[Kernel(name=f"rotation_vector_{side}_jacobian{inv}",
              summary=f"The {side} Jacobian{' inverse' if inv else ''} of SO(3) at w.",
              formula=f"J_{side[0]}{'^-1' if inv else ''}(w), Solà et al. 2018 App. B",
@@ -181,12 +177,18 @@ LIE_KERNELS = [
            summary="Log of SE(3): the exponential coordinates xi = [w; v] of T, norm of w in "
                    "[0, pi].",
            formula="w = Log(R), v = J_l(w)^-1 p; below pi/4 in s = norm of vect(R) alone "
-                   "(asin, sqrt(1 - s^2)), near pi the symmetric part of R", ids=_IDS["se3"],
-           sources=(_LM + "exponential_coordinates_from_transform",), args=(T_ARG,),
+                   "(asin, sqrt(1 - s^2)), near pi the symmetric part of R",
+           ids=(*_IDS["se3"], "sola:log-se3-small"),
+           sources=(_LM + "exponential_coordinates_from_transform",
+                    _LM + "exponential_coordinates_from_transform_small"), args=(T_ARG,),
            outputs=(Out("xi", (6,), "[w; v]"),),
            build=lambda T: {"xi": formula(_LM + "exponential_coordinates_from_transform")(T)},
            branches=_SE3_BRANCHES,
-           notes="T is not validated (its rotation block is read as a rotation)."),
+           notes="T is not validated (its rotation block is read as a rotation).",
+           # its Jacobian kernel (6 x 16, five branches) compiles in 516 s to 5331
+           # operations (each near-pi branch ~1080, the small one 1503) where the whole
+           # generation takes about 2 min: none yet (open, issue 38 item 2)
+           branch_jacobian=False),
     Kernel(name="euler_rodrigues_from_rotation",
            summary="The Euler-Rodrigues parameters eta = [r; r0] of Q, r0 >= 0.",
            formula="r0 = sqrt(1 + tr Q) / 2, r = vect(Q) / (2 r0); Shepperd's branches for "
@@ -197,7 +199,8 @@ LIE_KERNELS = [
                                  partial(_er_branch, k=k),
                                  doc=f"tr Q <= 0, Q[{k},{k}] the largest diagonal entry")
                           for k in range(3)),
-           notes="At phi = pi exactly (r0 = 0) eta and -eta are both parameters of Q."),
+           notes="At phi = pi exactly (r0 = 0) eta and -eta are both parameters of Q.",
+           branch_jacobian=True),
     Kernel(name="euler_rodrigues_product",
            summary="The product of Euler-Rodrigues parameters (Hamilton, scalar last).",
            formula="[a0 b + b0 a + a x b; a0 b0 - a . b]", ids=_IDS["quat"],

@@ -98,6 +98,37 @@ def exp_log_so3() -> Statement:
         L.rotation_vector_from_rotation(Qv)))})
 
 
+#: the small-angle branches of the logs read a rotation of at most a quarter turn from
+#: ``s = |vect(Q)| = sin theta``: its angle ``theta = beta/2``, ``beta`` on ``[0, pi]``, so that
+#: ``asin(s) = theta`` and ``sqrt(1 - s^2) = cos theta`` exactly (the checker's principal
+#: branches, :mod:`rigidsym.checking.deciding.branches`); the kernels take them below pi/4
+beta = angle("beta", range="[0, pi]")
+
+
+@equation("sola:log-so3-small", "Log(Q) = (asin s / s) vect(Q), s = |vect(Q)|, for an angle "
+          "≤ π/2 (Solà App. B; Barfoot Sec. 7.1.3)", section="so3",
+          singular="the angle of Q is 0 (removable)")
+def log_so3_small() -> Statement:
+    Lg = vec("Log(R)")
+    Rv = rotation_from_natural_invariants(e, beta / 2)
+    return Statement([Rel(Lg, w)], {w: _im(beta / 2 * e),
+                                    Lg: _im(L.rotation_vector_from_rotation_small(Rv))})
+
+
+@equation("sola:log-se3-small", "Log(T) = [a u; p − (a/2) u × p + g u × (u × p)], u = vect(R), "
+          "s = |u|, a = asin(s)/s, g = (2s − asin(s)(1 + √(1 − s²)))/(2s³), for an angle ≤ π/2 "
+          "(Solà App. D; Barfoot Sec. 7.1.5)", section="se3",
+          singular="the angle of R is 0 (removable)")
+def log_se3_small() -> Statement:
+    wv = beta / 2 * e
+    Tv = sp.Matrix.vstack(sp.Matrix.hstack(rotation_from_natural_invariants(e, beta / 2), v_),
+                          sp.Matrix([[0, 0, 0, 1]]))
+    Lg = MS("Log(T)", 6, 1)
+    xv = sp.Matrix.vstack(wv, L.rotation_vector_left_jacobian_inverse(wv) * v_)
+    return Statement([Rel(Lg, xi)], {xi: _im(xv),
+                                     Lg: _im(L.exponential_coordinates_from_transform_small(Tv))})
+
+
 @equation("sola:jl-definition", "d/dt Exp(w) Exp(w)ᵀ = [J_l(w) ẇ] (Solà App. B)",
           section="so3")
 def jl_definition() -> Statement:

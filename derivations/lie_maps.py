@@ -29,7 +29,8 @@ __all__ = ["rotation_from_rotation_vector", "rotation_vector_from_rotation",
            "rotation_vector_left_jacobian_inverse", "rotation_vector_right_jacobian_inverse",
            "exponential_coordinates_left_jacobian",
            "exponential_coordinates_left_jacobian_inverse", "euler_rodrigues_from_rotation",
-           "euler_rodrigues_product", "se3_q_block"]
+           "euler_rodrigues_product", "se3_q_block", "rotation_vector_from_rotation_small",
+           "exponential_coordinates_from_transform_small"]
 
 
 def _w(w):
@@ -179,6 +180,51 @@ def exponential_coordinates_from_transform(T) -> sp.Matrix:
     T = sp.Matrix(T)
     w = rotation_vector_from_rotation(T[:3, :3])
     return sp.Matrix.vstack(w, rotation_vector_left_jacobian_inverse(w) * T[:3, 3])
+
+
+def rotation_vector_from_rotation_small(Q) -> sp.Matrix:
+    """``Log(Q) = (asin s / s) u`` with ``u = vect(Q) = sin theta e``, ``s = |u| = sin
+    theta``: the log below a quarter turn, in ``u`` alone (no ``acos``; the kernel's branch
+    for ``theta < pi/4``, where ``acos`` of a trace near 1 loses half the digits).
+
+    Source: Solà et al. 2018, App. B (Log of SO(3), ``theta = atan2(|u|, (tr Q - 1)/2)``, here
+    ``asin``, exact for ``theta <= pi/2``); Barfoot Sec. 7.1.3 (``phi`` from ``vect`` of the
+    skew part). Removable at ``s = 0``.
+
+    Args:
+        Q: 3 x 3 rotation matrix, its angle in ``[0, pi/2]``.
+
+    Returns:
+        3 x 1 rotation vector ``w`` [rad].
+    """
+    u = vect(sp.Matrix(Q))
+    s = sp.sqrt((u.T * u)[0])
+    return sp.asin(s) / s * u
+
+
+def exponential_coordinates_from_transform_small(T) -> sp.Matrix:
+    """``Log(T) = [a u; p - (a/2) u x p + g u x (u x p)]`` with ``u = vect(R)``, ``s = |u|``,
+    ``a = asin(s)/s``, ``g = (2 s - asin(s) (1 + sqrt(1 - s^2))) / (2 s^3)``: the SE(3) log
+    below a quarter turn in ``s`` alone (the kernel's branch for ``theta < pi/4``).
+
+    With ``theta = asin s`` and ``cos theta = sqrt(1 - s^2)`` (``theta <= pi/2``), ``w = a
+    u``, ``[w] = a [u]`` and ``J_l(w)^-1 p = p - [w] p / 2 + c(theta) [w]^2 p`` (Solà et al.
+    2018, App. D; Barfoot Sec. 7.1.5), ``c(theta) = 1/theta^2 - (1 + cos theta)/(2 theta sin
+    theta)``, so ``c a^2 = g``. Removable at ``s = 0`` (``a -> 1``, ``g -> 1/12``).
+
+    Args:
+        T: 4 x 4 homogeneous transform, the angle of its rotation in ``[0, pi/2]``.
+
+    Returns:
+        6 x 1 exponential coordinates ``[w; v]``.
+    """
+    T = sp.Matrix(T)
+    u, p = vect(T[:3, :3]), T[:3, 3]
+    s = sp.sqrt((u.T * u)[0])
+    a = sp.asin(s) / s
+    g = (2 * s - sp.asin(s) * (1 + sp.sqrt(1 - s**2))) / (2 * s**3)
+    up = u.cross(p)
+    return sp.Matrix.vstack(a * u, p - a / 2 * up + g * u.cross(up))
 
 
 def se3_q_block(w, v) -> sp.Matrix:

@@ -7,7 +7,7 @@
  */
 #include "rigidsym_kernels.h"
 
-const rigidsym_fns RIGIDSYM_ISA_NAME(rigidsym_table)[153] = {
+const rigidsym_fns RIGIDSYM_ISA_NAME(rigidsym_table)[155] = {
     {(rigidsym_fn)RIGIDSYM_ISA_NAME(rigidsym_H_matrix_threads),
      (rigidsym_fn)RIGIDSYM_ISA_NAME(rigidsym_H_matrix_f32_threads)},
     {(rigidsym_fn)RIGIDSYM_ISA_NAME(rigidsym_H_matrix_dot_threads),
@@ -202,6 +202,8 @@ const rigidsym_fns RIGIDSYM_ISA_NAME(rigidsym_table)[153] = {
      (rigidsym_fn)RIGIDSYM_ISA_NAME(rigidsym_euler_rate_matrix_zyz_fixed_with_jacobians_f32_threads)},
     {(rigidsym_fn)RIGIDSYM_ISA_NAME(rigidsym_euler_rodrigues_from_rotation_threads),
      (rigidsym_fn)RIGIDSYM_ISA_NAME(rigidsym_euler_rodrigues_from_rotation_f32_threads)},
+    {(rigidsym_fn)RIGIDSYM_ISA_NAME(rigidsym_euler_rodrigues_from_rotation_with_jacobians_threads),
+     (rigidsym_fn)RIGIDSYM_ISA_NAME(rigidsym_euler_rodrigues_from_rotation_with_jacobians_f32_threads)},
     {(rigidsym_fn)RIGIDSYM_ISA_NAME(rigidsym_euler_rodrigues_product_threads),
      (rigidsym_fn)RIGIDSYM_ISA_NAME(rigidsym_euler_rodrigues_product_f32_threads)},
     {(rigidsym_fn)RIGIDSYM_ISA_NAME(rigidsym_euler_rodrigues_product_with_jacobians_threads),
@@ -268,6 +270,8 @@ const rigidsym_fns RIGIDSYM_ISA_NAME(rigidsym_table)[153] = {
      (rigidsym_fn)RIGIDSYM_ISA_NAME(rigidsym_rotation_from_rotation_vector_with_jacobians_f32_threads)},
     {(rigidsym_fn)RIGIDSYM_ISA_NAME(rigidsym_rotation_vector_from_rotation_threads),
      (rigidsym_fn)RIGIDSYM_ISA_NAME(rigidsym_rotation_vector_from_rotation_f32_threads)},
+    {(rigidsym_fn)RIGIDSYM_ISA_NAME(rigidsym_rotation_vector_from_rotation_with_jacobians_threads),
+     (rigidsym_fn)RIGIDSYM_ISA_NAME(rigidsym_rotation_vector_from_rotation_with_jacobians_f32_threads)},
     {(rigidsym_fn)RIGIDSYM_ISA_NAME(rigidsym_rotation_vector_left_jacobian_threads),
      (rigidsym_fn)RIGIDSYM_ISA_NAME(rigidsym_rotation_vector_left_jacobian_f32_threads)},
     {(rigidsym_fn)RIGIDSYM_ISA_NAME(rigidsym_rotation_vector_left_jacobian_inverse_threads),

@@ -12,15 +12,22 @@ Derivatives are in the ambient coordinates of each input (every component of a u
 or of a rotation ``Q`` is an independent variable); the tangent-space maps of the rotation
 invariants are the book's N, L, H (3.76)-(3.77).
 
-Kernels with per-sample branches are not transformed: their branches agree on the
-constraint manifold only, so an ambient derivative would depend on the branch taken.
+Kernels with per-sample branches are transformed only where they ask for it
+(``Kernel.branch_jacobian``: the Lie logs and ``euler_rodrigues_from_rotation``, issue 38).
+Their branches agree on the constraint manifold only, so each branch is differentiated with
+its value, under the same condition: the Jacobian kernel takes one branch per sample for
+values and derivatives together, and returns the derivative of the very function the value
+kernel computes there (finite differences of the kernel, ambient, agree with it). Along the
+manifold (a rotation ``Q`` moved by ``Q Omega``, ``Omega`` skew) every branch gives the
+derivative of the declared formula; normal to it (``Q S``, ``S`` symmetric), where no
+rotation goes, each branch keeps its own extension's derivative.
 """
 
 from __future__ import annotations
 
 import sympy as sp
 
-from rigidsym.codegen.spec import Kernel, Out, flat_symbols
+from rigidsym.codegen.spec import Branch, Kernel, Out, flat_symbols
 
 __all__ = ["with_jacobians", "jacobian_kernels", "has_jacobian", "jacobian_name",
            "derivative_name", "SUFFIX"]
@@ -40,8 +47,10 @@ def derivative_name(output: str, arg: str) -> str:
 
 
 def has_jacobian(kernel: Kernel) -> bool:
-    """Whether ``kernel`` asks for a Jacobian and is one smooth formula (no per-sample branch)."""
-    return kernel.jacobian and not kernel.branches and not kernel.name.endswith(SUFFIX)
+    """Whether ``kernel`` asks for a Jacobian and is one smooth formula (no per-sample branch)
+    or asks for its branches to be differentiated too (``branch_jacobian``)."""
+    return kernel.jacobian and (not kernel.branches or kernel.branch_jacobian) and \
+        not kernel.name.endswith(SUFFIX)
 
 
 def _flat(value, out: Out) -> list[sp.Expr]:
@@ -64,7 +73,8 @@ def with_jacobians(kernel: Kernel) -> Kernel:
     """The spec returning ``kernel``'s outputs and their derivatives w.r.t. every input.
 
     Args:
-        kernel: a kernel without branches (see :func:`has_jacobian`).
+        kernel: a kernel without branches, or one with ``branch_jacobian`` (see
+            :func:`has_jacobian`): its branches are differentiated each with its value.
 
     Returns:
         A non-public :class:`~rigidsym.codegen.spec.Kernel` named
@@ -73,19 +83,36 @@ def with_jacobians(kernel: Kernel) -> Kernel:
         input ``a`` (output-major).
 
     Raises:
-        ValueError: ``kernel`` has per-sample branches.
+        ValueError: ``kernel`` has per-sample branches and no ``branch_jacobian`` (or is
+            already a Jacobian kernel).
     """
     if not has_jacobian(kernel):
-        raise ValueError(f"kernel: {kernel.name} has per-sample branches (or is already a "
-                         "Jacobian kernel); its ambient derivative is not one formula")
+        raise ValueError(f"kernel: {kernel.name} has per-sample branches and no "
+                         "branch_jacobian (or is already a Jacobian kernel); its ambient "
+                         "derivative is not one formula")
     outs = list(kernel.outputs)
     for o in kernel.outputs:
         for a in kernel.args:
             outs.append(Out(derivative_name(o.name, a.name), o.shape + a.shape,
                             f"d {o.name} / d {a.name}, shape {o.shape} + {a.shape}"))
 
+    singular = kernel.singular
+    branches = tuple(Branch(br.name, br.when, _differentiated(kernel, br.build), br.doc)
+                     for br in kernel.branches)
+    return Kernel(
+        name=jacobian_name(kernel.name),
+        summary=f"{kernel.summary.rstrip('.')}, with the Jacobians of its outputs.",
+        formula=f"{kernel.formula}; and d(output)/d(input) by sympy on the declared formula",
+        ids=kernel.ids, sources=kernel.sources, args=kernel.args, outputs=tuple(outs),
+        build=_differentiated(kernel, kernel.build), singular=singular,
+        singular_arg=kernel.singular_arg, branches=branches, notes=kernel.notes,
+        public=False, jacobian=False)
+
+
+def _differentiated(kernel: Kernel, value_build):
+    """A build returning ``value_build``'s outputs and their derivatives by every input."""
     def build(**syms):
-        values = kernel.build(**syms)
+        values = value_build(**syms)
         res = dict(values)
         # same names and assumptions as ``syms``: the same sympy symbols
         flat_in = dict(flat_symbols(kernel))
@@ -98,15 +125,7 @@ def with_jacobians(kernel: Kernel) -> Kernel:
                 d = [sp.diff(fi, x) for fi in f for x in xs]
                 res[derivative_name(o.name, a.name)] = _shaped(d, o.shape + a.shape)
         return res
-
-    singular = kernel.singular
-    return Kernel(
-        name=jacobian_name(kernel.name),
-        summary=f"{kernel.summary.rstrip('.')}, with the Jacobians of its outputs.",
-        formula=f"{kernel.formula}; and d(output)/d(input) by sympy on the declared formula",
-        ids=kernel.ids, sources=kernel.sources, args=kernel.args, outputs=tuple(outs),
-        build=build, singular=singular, singular_arg=kernel.singular_arg,
-        notes=kernel.notes, public=False, jacobian=False)
+    return build
 
 
 def jacobian_kernels(kernels) -> list[Kernel]:

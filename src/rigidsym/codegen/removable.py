@@ -154,7 +154,11 @@ def _part(part, T):
 def _fold(part, T):
     """A removable s-only factor as written (``(1 - cos s)/s^2`` of a formula) as its
     quotient of ``T``, before any distributing; ``None`` where it is not one."""
-    if part == S or not sp.fraction(sp.together(part))[1].has(S):
+    den = sp.fraction(sp.together(part))[1]
+    # a denominator that does not vanish at s = 0 (1/sqrt(1 - s^2), asin's derivative in
+    # the Lie logs' Jacobians) removes nothing: folded alone it would hide its s from the
+    # grouping, and 1/(s^2 sqrt(1 - s^2)) - asin(s)/s^3 would stay two singular terms
+    if part == S or not den.has(S) or den.subs(S, 0) != 0:
         return None
     return _as_t(part, T, strict=True)
 

@@ -117,6 +117,9 @@ class Kernel:
             that a hand-written wrapper dispatches to, e.g. the Euler-angle sequences).
         jacobian: also generate ``<name>_with_jacobians`` (values and derivatives w.r.t.
             every input, :mod:`rigidsym.codegen.jacobians`) when the kernel has no branches.
+        branch_jacobian: with branches too, each differentiated with its value (the same
+            selection per sample): for branches that agree on the inputs' manifold, whose
+            derivatives then agree along it (the Lie logs).
     """
 
     name: str
@@ -133,6 +136,7 @@ class Kernel:
     notes: str = ""
     public: bool = True
     jacobian: bool = True
+    branch_jacobian: bool = False
 
 
 def input_symbols(kernel: Kernel) -> dict:

@@ -279,6 +279,7 @@ def accuracy(name: str) -> dict:
         error of the textbook formula and of the peers: ``docs/accuracy.md``), ``backends``
         per back-end ``{"err_u", "vs_ref", "vs_ref_where", "rule"}`` (the worst error in u,
         the worst ratio to ``e_ref`` where ``e_ref > 2 u`` and where); ``regimes`` swept;
+        ``seeds`` (the seeds of the regimes' random points the bound was measured over);
         ``accurate`` (every regime within the rule); ``singular`` (the set) and
         ``threshold`` (where a sample is flagged, in units of the input).
 

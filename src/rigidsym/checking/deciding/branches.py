@@ -1,4 +1,5 @@
-"""Principal branches the zero test honours exactly: ``acos`` and ``atan2`` (issue 28).
+"""Principal branches the zero test honours exactly: ``acos``, ``asin`` and ``atan2`` (issue
+28; ``asin`` issue 38).
 
 The zero test decides rational functions of its parameters; ``acos`` and ``atan2`` are
 not. Before it runs, each is rewritten where its value is known exactly on the whole
@@ -12,6 +13,10 @@ declared domain, and left alone otherwise (the zero test then says ``undecided``
   (``acos(cos a) = |a|``: MR's ``theta = acos((tr R - 1) / 2)`` is false for ``a < 0``);
 - ``atan2(y, x)`` with ``y cos a - x sin a = 0`` and ``x cos a + y sin a`` a positive
   number (decided exactly) for an angle ``a`` is ``a`` (both ranges lie in ``(-pi, pi]``);
+- ``asin(E)`` with ``E - sin(b/2) = 0`` (decided exactly) for an angle ``b`` on ``[0, pi]``
+  is ``b/2`` (``b/2`` lies in ``[0, pi/2]``, asin's principal range): the angle of a rotation
+  of at most a quarter turn read from ``|vect Q| = sin(theta)``, ``theta = b/2`` (the Lie
+  logs' small-angle branches);
 - a half-integer power ``E^(k/2)`` (the norm ``theta = sqrt(w^T w)`` of a rotation vector
   and its powers, issue 38) with ``E - (c f(b))^2 = 0`` (decided exactly) for an angle ``b``
   on ``[0, pi]``, ``f`` one of ``b``, ``sin b``, ``cos(b/2)``, ``sin(b/2)`` (each non-
@@ -60,6 +65,13 @@ def _acos_value(E):
     return None
 
 
+def _asin_value(E):
+    for b in _angles(E, "angle_pi"):
+        if _zero(E - sp.sin(b / 2)):
+            return b / 2
+    return None
+
+
 def _atan2_value(y, x):
     for a in _angles(y + x):
         if _zero(y * sp.cos(a) - x * sp.sin(a)):
@@ -90,13 +102,16 @@ def _resolve(x):
     def rule(z):
         if isinstance(z, sp.acos):
             v = _acos_value(z.args[0])
+        elif isinstance(z, sp.asin):
+            v = _asin_value(z.args[0])
         elif isinstance(z, sp.atan2):
             v = _atan2_value(*z.args)
         else:
             v = _root_value(z.base, z.exp.p)
         return z if v is None else v
 
-    return x.replace(lambda z: isinstance(z, sp.acos | sp.atan2) or _is_root(z), rule)
+    return x.replace(lambda z: isinstance(z, sp.acos | sp.asin | sp.atan2) or _is_root(z),
+                     rule)
 
 
 def _apply(x, f):
@@ -110,7 +125,7 @@ def cases(lhs, rhs) -> list[tuple]:
     one case, ``(lhs, rhs, lhs, rhs, {})``, when the relation holds neither."""
     ents = list(lhs) if isinstance(lhs, sp.MatrixBase) else [lhs]
     ents += list(rhs) if isinstance(rhs, sp.MatrixBase) else [rhs]
-    fns = set().union(*(sp.sympify(e).atoms(sp.acos, sp.atan2) for e in ents))
+    fns = set().union(*(sp.sympify(e).atoms(sp.acos, sp.asin, sp.atan2) for e in ents))
     fns |= set().union(*(sp.sympify(e).atoms(sp.Pow) for e in ents))
     fns = {f for f in fns if not isinstance(f, sp.Pow) or _is_root(f)}
     if not fns:

@@ -22,11 +22,12 @@ from rigidsym.checking.deciding.errors import BadInput
 
 __all__ = ["BadInput", "Rel", "check_side", "UnknownNode", "WORDS"]
 
-#: sympy functions a printed form may not hold, and the word of ``rigidsym`` to use
+#: sympy functions a printed form may not hold, and the word of ``rigidsym`` to use (``asin``
+#: is decided on its principal branch since issue 38: ``asin(sin(b/2)) = b/2`` for ``b`` on
+#: ``[0, pi]``, :mod:`rigidsym.checking.deciding.branches`; elsewhere undecided)
 WORDS = {
     "exp": "rigidsym.expm (the exponential of so(3) or se(3))",
     "log": "rigidsym.logm (the principal logarithm of a rotation or a transform)",
-    "asin": "rigidsym.acos or rigidsym.atan2 (principal branches the zero test honours)",
     "atan": "rigidsym.atan2 (principal branch the zero test honours)",
     "acot": "rigidsym.atan2", "asec": "rigidsym.acos", "acsc": "rigidsym.acos",
 }
@@ -67,7 +68,7 @@ def check_side(x, what: str):
     Raises:
         UnknownNode: a node the engine does not know (a matrix ``Derivative`` inside an
             expression, a function of a matrix, an undefined function of anything but
-            time, an inverse trigonometric function other than ``acos``/``atan2``); the
+            time, an inverse trigonometric function other than ``acos``/``asin``/``atan2``); the
             message names the node and the word to use.
     """
     import sympy as sp
