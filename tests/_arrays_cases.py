@@ -13,7 +13,7 @@ from rigidsym.kernels import _state
 
 def sample(name: str, n: int, seed: int = 0) -> list[np.ndarray]:
     """``n`` random valid samples of every argument of kernel ``name`` (unit vectors,
-    rotations, angles in (0.3, 2.8), others standard normal)."""
+    rotations, transforms, angles in (0.3, 2.8), others standard normal)."""
     rng = np.random.default_rng(seed)
     out = []
     for a in _state.meta()[name]["args"]:
@@ -27,6 +27,12 @@ def sample(name: str, n: int, seed: int = 0) -> list[np.ndarray]:
             x = K.rotation_from_natural_invariants(e, rng.uniform(0.3, 2.8, n))
         elif a["kind"] == "angle":
             x = rng.uniform(0.3, 2.8, shape)
+        elif a["kind"] == "transform":       # [[R, p], [0, 1]]
+            e = rng.standard_normal((n, 3))
+            e /= np.linalg.norm(e, axis=-1, keepdims=True)
+            x = np.zeros(shape)
+            x[:, :3, :3] = K.rotation_from_natural_invariants(e, rng.uniform(0.3, 2.8, n))
+            x[:, :3, 3], x[:, 3, 3] = rng.standard_normal((n, 3)), 1.0
         else:
             x = rng.standard_normal(shape)
         out.append(x)

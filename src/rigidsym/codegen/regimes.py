@@ -159,6 +159,16 @@ def _coincident(rng, small, base, out: dict) -> None:
         out.setdefault("p2->p1 at 1e6", []).append(p)
 
 
+def _transforms_near(rng, small, add, name: str) -> None:
+    """A transform's rotation toward the identity and a half turn (a random translation),
+    then its translation scaled from 1e-6 to 1e6."""
+    for reg, Q in _rotations_near(rng, small):
+        add(reg.replace("Q:", f"{name}:"), transform(Q, [q(v) for v in rng.standard_normal(3)]))
+    for sc in (1e-6, 1e-3, 1e3, 1e6):
+        add("scale 1e-6..1e6", transform(rotation(unit(rng), q(rng.uniform(0.05, 3)), fmpq(1)),
+                                         [q(v) * q(sc) for v in rng.standard_normal(3)]))
+
+
 def regimes(kernel, dtype, n_random: int = 8, seed: int = 0, small=None,
             extremes: bool = True):
     """``{regime: [point]}`` for ``kernel`` (its ``Arg`` kinds and names decide the sweeps);
@@ -186,12 +196,7 @@ def regimes(kernel, dtype, n_random: int = 8, seed: int = 0, small=None,
             for reg, Q in _rotations_near(rng, small):
                 add(reg, i, Q)
         elif a.kind == "transform":
-            for reg, Q in _rotations_near(rng, small):
-                add(reg.replace("Q:", f"{a.name}:"), i,
-                    transform(Q, [q(v) for v in rng.standard_normal(3)]))
-            for sc in (1e-6, 1e-3, 1e3, 1e6):
-                add("scale 1e-6..1e6", i, transform(rotation(unit(rng), q(rng.uniform(
-                    0.05, 3)), fmpq(1)), [q(v) * q(sc) for v in rng.standard_normal(3)]))
+            _transforms_near(rng, small, lambda reg, T, i=i: add(reg, i, T), a.name)
         elif a.kind == "unit":
             for k in (1, 3):         # a few ulps off the constraint (beyond rounding)
                 v = unit(rng, a.size)
