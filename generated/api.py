@@ -114,7 +114,7 @@ def H_matrix(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1.62 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 3 ulp in float64) over 8 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 1 ulp in float64) over 8 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 11 operations; math hash d161921036f1484c.
     """
@@ -155,7 +155,7 @@ def H_matrix_dot(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1.42 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 29 ulp in float64) over 11 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1.01 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 89 ulp in float64) over 11 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 34 operations; math hash 0c036980272247c8.
     """
@@ -194,7 +194,7 @@ def H_tilde(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1.62 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 3 ulp in float64) over 8 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 1 ulp in float64) over 8 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 11 operations; math hash 394d6fafe3d12373.
     """
@@ -235,7 +235,7 @@ def H_tilde_dot(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1.42 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 34 ulp in float64) over 11 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1.01 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 89 ulp in float64) over 11 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 32 operations; math hash a75606877943bdb2.
     """
@@ -274,7 +274,7 @@ def L_matrix(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1.71 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 1.79e+03 ulp in float64) over 8 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 762 ulp in float64) over 8 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 48 operations; math hash ad587ca95a235ac2.
     """
@@ -315,7 +315,7 @@ def L_matrix_dot(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1.31 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 186 ulp in float64) over 11 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 599 ulp in float64) over 11 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 98 operations; math hash bc3db842eb2cf774.
     """
@@ -357,7 +357,7 @@ def L_tilde(
     Notes:
         Singular set: 1 + cos(phi) = 0 (phi = pi).
 
-        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 3 ulp in float64) over 8 regimes (docs/accuracy.md, kernels.accuracy); singular when 1 + cos(phi) = 0 (phi = pi), flagged where cos(phi/2) == 0 in floating point, never for a float phi (cos(fl(pi)/2) = 6e-17): at phi = fl(pi) the outputs are finite, about 1e16, as exact.
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 2 ulp in float64) over 8 regimes (docs/accuracy.md, kernels.accuracy); singular when 1 + cos(phi) = 0 (phi = pi), flagged where cos(phi/2) == 0 in floating point, never for a float phi (cos(fl(pi)/2) = 6e-17): at phi = fl(pi) the outputs are finite, about 1e16, as exact.
 
         Generated; 10 operations; math hash 224ea51c5b2204c1.
     """
@@ -401,7 +401,7 @@ def L_tilde_dot(
     Notes:
         Singular set: 1 + cos(phi) = 0 (phi = pi).
 
-        Accuracy: error <= 2.39 u (kappa + 1) in float64, <= 1.04 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 1.5e+03 ulp in float64) over 11 regimes (docs/accuracy.md, kernels.accuracy); singular when 1 + cos(phi) = 0 (phi = pi), flagged where cos(phi/2) == 0 in floating point, never for a float phi: finite at phi = fl(pi).
+        Accuracy: error <= 1.14 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 510 ulp in float64) over 11 regimes (docs/accuracy.md, kernels.accuracy); singular when 1 + cos(phi) = 0 (phi = pi), flagged where cos(phi/2) == 0 in floating point, never for a float phi: finite at phi = fl(pi).
 
         Generated; 91 operations; math hash 4a1f179ad0d8d060.
     """
@@ -443,7 +443,7 @@ def N_matrix(
     Notes:
         Singular set: phi = 0 (mod 2 pi): the axis is undefined.
 
-        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 56 ulp in float64) over 8 regimes (docs/accuracy.md, kernels.accuracy); singular when phi = 0 (mod 2 pi): the axis is undefined, flagged where sin(phi/2) == 0 in floating point: phi == 0 exactly (and abs(phi) < 1e-323); an output overflows (non-finite) where the result exceeds the type, about abs(phi) < 1e-300 x norm(input) in float64.
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 174 ulp in float64) over 8 regimes (docs/accuracy.md, kernels.accuracy); singular when phi = 0 (mod 2 pi): the axis is undefined, flagged where sin(phi/2) == 0 in floating point: phi == 0 exactly (and abs(phi) < 1e-323); an output overflows (non-finite) where the result exceeds the type, about abs(phi) < 1e-300 x norm(input) in float64.
 
         Generated; 31 operations; math hash 717c2182df7e8788.
     """
@@ -487,7 +487,7 @@ def N_matrix_dot(
     Notes:
         Singular set: phi = 0 (mod 2 pi): the axis is undefined.
 
-        Accuracy: error <= 1.16 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 191 ulp in float64) over 11 regimes (docs/accuracy.md, kernels.accuracy); singular when phi = 0 (mod 2 pi): the axis is undefined, flagged where sin(phi/2) == 0 in floating point: phi == 0 exactly (and abs(phi) < 1e-323); an output overflows (non-finite) where the result exceeds the type, about abs(phi) < 1e-300 x norm(input) in float64.
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 439 ulp in float64) over 11 regimes (docs/accuracy.md, kernels.accuracy); singular when phi = 0 (mod 2 pi): the axis is undefined, flagged where sin(phi/2) == 0 in floating point: phi == 0 exactly (and abs(phi) < 1e-323); an output overflows (non-finite) where the result exceeds the type, about abs(phi) < 1e-300 x norm(input) in float64.
 
         Generated; 199 operations; math hash a50ef6111f8ca170.
     """
@@ -526,7 +526,7 @@ def N_tilde(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1.02 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 4 ulp in float64) over 8 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 2 ulp in float64) over 8 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 13 operations; math hash 27fa6424b1903ca5.
     """
@@ -570,7 +570,7 @@ def N_tilde_dot(
     Notes:
         Singular set: phi = 0 (mod 2 pi): the axis, and so its rate, is undefined.
 
-        Accuracy: error <= 1.62 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 112 ulp in float64) over 11 regimes (docs/accuracy.md, kernels.accuracy); singular when phi = 0 (mod 2 pi): the axis, and so its rate, is undefined, flagged where sin(phi/2) == 0 in floating point: phi == 0 exactly (and abs(phi) < 1e-323); an output overflows (non-finite) where the result exceeds the type, about abs(phi) < 1e-300 x norm(input) in float64.
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 275 ulp in float64) over 11 regimes (docs/accuracy.md, kernels.accuracy); singular when phi = 0 (mod 2 pi): the axis, and so its rate, is undefined, flagged where sin(phi/2) == 0 in floating point: phi == 0 exactly (and abs(phi) < 1e-323); an output overflows (non-finite) where the result exceeds the type, about abs(phi) < 1e-300 x norm(input) in float64.
 
         Generated; 79 operations; math hash b1c3eb794fbb8245.
     """
@@ -609,7 +609,7 @@ def euler_rodrigues_from_rotation(
     Notes:
         At phi = pi exactly (r0 = 0) eta and -eta are both parameters of Q.
 
-        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 6 ulp in float64) over 6 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1.12 u (kappa + 1) in float64, <= 1.02 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 1.76e+16 ulp in float64) over 6 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 73 operations; math hash 019b8ba8b4ba61cb.
     """
@@ -648,7 +648,7 @@ def euler_rodrigues_product(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 6 ulp in float64) over 3 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 10 ulp in float64) over 3 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 28 operations; math hash 05e96cfeb0908f4b.
     """
@@ -724,7 +724,7 @@ def exponential_coordinates_left_jacobian(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 97 ulp in float64) over 3 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1.05 u (kappa + 1) in float64, <= 1.05 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 97 ulp in float64) over 3 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 226 operations; math hash a4133e465ca458b7.
     """
@@ -807,7 +807,7 @@ def inertia_at_point(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 6 ulp in float64) over 4 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 35 ulp in float64) over 4 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 29 operations; math hash 421dca07df5d4b7a.
     """
@@ -850,7 +850,7 @@ def inertia_dyad_at_point(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 6 ulp in float64) over 4 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 13 ulp in float64) over 4 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 36 operations; math hash 68258707f5bb9e80.
     """
@@ -990,7 +990,7 @@ def moving_frame_acceleration(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 51 ulp in float64) over 10 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1.11 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 247 ulp in float64) over 10 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 153 operations; math hash 9ff5554b1ab9fff0.
     """
@@ -1035,7 +1035,7 @@ def natural_invariants_from_rotation(
 
         For an exactly symmetric Q (phi = pi) the sign of e is fixed by the rule: the component of e of largest magnitude is positive (e is taken from the column of the largest diagonal entry of Q); near pi, the skew part of Q fixes the sign, as in Pinocchio's log3.
 
-        Accuracy: error <= 1.22 u (kappa + 1) in float64, <= 1.28 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 2 ulp in float64) over 6 regimes (docs/accuracy.md, kernels.accuracy); singular when phi = 0 (Q = 1): the axis e is undefined, flagged where ||vect(Q)||^2 == 0 with tr Q >= 0 (the main build): Q exactly symmetric in floating point, i.e. phi = 0 (Q = 1), or abs(phi) below the rounding of Q (about 1e-16).
+        Accuracy: error <= 1.26 u (kappa + 1) in float64, <= 1.38 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 1.76e+16 ulp in float64) over 6 regimes (docs/accuracy.md, kernels.accuracy); singular when phi = 0 (Q = 1): the axis e is undefined, flagged where ||vect(Q)||^2 == 0 with tr Q >= 0 (the main build): Q exactly symmetric in floating point, i.e. phi = 0 (Q = 1), or abs(phi) below the rounding of Q (about 1e-16).
 
         Generated; 172 operations; math hash 445339cc0a3a5a8f.
     """
@@ -1080,7 +1080,7 @@ def newton_euler_wrench(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 23 ulp in float64) over 5 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 26 ulp in float64) over 5 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 45 operations; math hash a4f13db2095d7265.
     """
@@ -1122,7 +1122,7 @@ def plucker_from_points(
     Notes:
         Singular set: p1 = p2.
 
-        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 4.27e+13 ulp in float64) over 6 regimes (docs/accuracy.md, kernels.accuracy); singular when p1 = p2, flagged where ||p2 - p1||^2 == 0 in floating point: p1 == p2; a square underflows to 0 only for ||p2 - p1|| < 1.5e-162 (float64), < 1e-19 (float32 arithmetic), which benchmarks/accuracy.py calls below the smallest useful step.
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1.08 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 3.77e+14 ulp in float64) over 6 regimes (docs/accuracy.md, kernels.accuracy); singular when p1 = p2, flagged where ||p2 - p1||^2 == 0 in floating point: p1 == p2; a square underflows to 0 only for ||p2 - p1|| < 1.5e-162 (float64), < 1e-19 (float32 arithmetic), which benchmarks/accuracy.py calls below the smallest useful step.
 
         Generated; 22 operations; math hash 37ca360961ff48ba.
     """
@@ -1163,7 +1163,7 @@ def plucker_transfer(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 2 ulp in float64) over 4 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 14 ulp in float64) over 4 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 15 operations; math hash 69d9b4ff4ea5cbea.
     """
@@ -1284,7 +1284,7 @@ def rotation_from_natural_invariants(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1.37 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 77 ulp in float64) over 8 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1.15 u (kappa + 1) in float64, <= 1.06 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 119 ulp in float64) over 8 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 37 operations; math hash 3a598761ac6bf1a3.
     """
@@ -1321,7 +1321,7 @@ def rotation_from_rotation_vector(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1.22 u (kappa + 1) in float64, <= 1.04 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 3.64e+06 ulp in float64) over 4 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1.61 u (kappa + 1) in float64, <= 1.3 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 3.44e+07 ulp in float64) over 4 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 31 operations; math hash 26ba18056a63eeb8.
     """
@@ -1360,7 +1360,7 @@ def rotation_vector_from_rotation(
     Notes:
         At phi = pi exactly, w and -w are both logarithms; the sign follows natural_invariants_from_rotation's rule.
 
-        Accuracy: error <= 1.63 u (kappa + 1) in float64, <= 1.26 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 3 ulp in float64) over 6 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1.77 u (kappa + 1) in float64, <= 1.8 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 1.76e+16 ulp in float64) over 6 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 189 operations; math hash 2e15491416cd7072.
     """
@@ -1397,7 +1397,7 @@ def rotation_vector_left_jacobian(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1.32 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 64 ulp in float64) over 4 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1.34 u (kappa + 1) in float64, <= 1.76 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 82 ulp in float64) over 4 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 31 operations; math hash d4a19d08f115cd7e.
     """
@@ -1437,7 +1437,7 @@ def rotation_vector_left_jacobian_inverse(
     Notes:
         Singular set: theta = 2 pi k, k != 0 (theta = norm of w).
 
-        Accuracy: error <= 1.23 u (kappa + 1) in float64, <= 1.04 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 2.21e+06 ulp in float64) over 4 regimes (docs/accuracy.md, kernels.accuracy); singular when theta = 2 pi k, k != 0 (theta = norm of w).
+        Accuracy: error <= 1.6 u (kappa + 1) in float64, <= 1.3 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 1.38e+07 ulp in float64) over 4 regimes (docs/accuracy.md, kernels.accuracy); singular when theta = 2 pi k, k != 0 (theta = norm of w).
 
         Generated; 32 operations; math hash 2f680f5aa3fbff2f.
     """
@@ -1474,7 +1474,7 @@ def rotation_vector_right_jacobian(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1.32 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 64 ulp in float64) over 4 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1.34 u (kappa + 1) in float64, <= 1.76 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 82 ulp in float64) over 4 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 31 operations; math hash 35131894d7e1775b.
     """
@@ -1514,7 +1514,7 @@ def rotation_vector_right_jacobian_inverse(
     Notes:
         Singular set: theta = 2 pi k, k != 0 (theta = norm of w).
 
-        Accuracy: error <= 1.23 u (kappa + 1) in float64, <= 1.04 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 2.21e+06 ulp in float64) over 4 regimes (docs/accuracy.md, kernels.accuracy); singular when theta = 2 pi k, k != 0 (theta = norm of w).
+        Accuracy: error <= 1.6 u (kappa + 1) in float64, <= 1.3 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 1.38e+07 ulp in float64) over 4 regimes (docs/accuracy.md, kernels.accuracy); singular when theta = 2 pi k, k != 0 (theta = norm of w).
 
         Generated; 32 operations; math hash db168e620321154f.
     """
@@ -1560,7 +1560,7 @@ def screw_axis_point(
     Notes:
         Singular set: phi = 0 (pure translation).
 
-        Accuracy: error <= 1.78 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 102 ulp in float64) over 11 regimes (docs/accuracy.md, kernels.accuracy); singular when phi = 0 (pure translation), flagged where sin(phi/2) == 0 in floating point: phi == 0 exactly (and abs(phi) < 1e-323); an output overflows (non-finite) where the result exceeds the type, about abs(phi) < 1e-300 x norm(input) in float64.
+        Accuracy: error <= 1.05 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 286 ulp in float64) over 11 regimes (docs/accuracy.md, kernels.accuracy); singular when phi = 0 (pure translation), flagged where sin(phi/2) == 0 in floating point: phi == 0 exactly (and abs(phi) < 1e-323); an output overflows (non-finite) where the result exceeds the type, about abs(phi) < 1e-300 x norm(input) in float64.
 
         Generated; 84 operations; math hash e89a638961851614.
     """
@@ -1612,7 +1612,7 @@ def screw_of_displacement(
 
         For an exactly symmetric Q (phi = pi) the sign of e follows natural_invariants_from_rotation's rule (largest-magnitude component positive).
 
-        Accuracy: error <= 1.3 u (kappa + 1) in float64, <= 1.44 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 1.17e+03 ulp in float64) over 9 regimes (docs/accuracy.md, kernels.accuracy); singular when phi = 0 (pure translation: no axis, infinite pitch), flagged where ||Q - Q^T||^2 == 0 with tr Q >= 0 (the main build, after the rewrite of 1 - cos phi from the skew part of Q): Q exactly symmetric in floating point, phi below the rounding of Q (about 1e-16 in float64, 6e-8 in float32); before the rewrite 3 - tr Q == 0 flagged up to phi ~ 1.5e-8.
+        Accuracy: error <= 1.59 u (kappa + 1) in float64, <= 1.29 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 1.59e+16 ulp in float64) over 9 regimes (docs/accuracy.md, kernels.accuracy); singular when phi = 0 (pure translation: no axis, infinite pitch), flagged where ||Q - Q^T||^2 == 0 with tr Q >= 0 (the main build, after the rewrite of 1 - cos phi from the skew part of Q): Q exactly symmetric in floating point, phi below the rounding of Q (about 1e-16 in float64, 6e-8 in float32); before the rewrite 3 - tr Q == 0 flagged up to phi ~ 1.5e-8.
 
         Generated; 565 operations; math hash 24c2ead304ca194c.
     """
@@ -1649,7 +1649,7 @@ def transform_from_exponential_coordinates(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 266 ulp in float64) over 3 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1.1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 266 ulp in float64) over 3 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 77 operations; math hash 6422323903f35e70.
     """
@@ -1690,7 +1690,7 @@ def twist_transfer(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 6 ulp in float64) over 5 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 21 ulp in float64) over 5 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 15 operations; math hash 0b921c0c211334f5.
     """
@@ -1775,7 +1775,7 @@ def wrench_axis(
     Notes:
         Singular set: f = 0 (pure moment).
 
-        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 27 ulp in float64) over 5 regimes (docs/accuracy.md, kernels.accuracy); singular when f = 0 (pure moment), flagged where ||f||^2 == 0 in floating point: f == 0; a square underflows to 0 only for ||f|| < 1.5e-162 (float64), < 1e-19 (float32 arithmetic), which benchmarks/accuracy.py calls below the smallest useful step.
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 104 ulp in float64) over 5 regimes (docs/accuracy.md, kernels.accuracy); singular when f = 0 (pure moment), flagged where ||f||^2 == 0 in floating point: f == 0; a square underflows to 0 only for ||f|| < 1.5e-162 (float64), < 1e-19 (float32 arithmetic), which benchmarks/accuracy.py calls below the smallest useful step.
 
         Generated; 59 operations; math hash 6e28211949601ec4.
     """
@@ -1816,7 +1816,7 @@ def wrench_transfer(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 24 ulp in float64) over 5 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 47 ulp in float64) over 5 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 15 operations; math hash 719fe1e42bb6247d.
     """
