@@ -116,7 +116,10 @@ def test_a_plain_rerun_measures_each_kernel_over_its_own_seeds():
     for name in ("H_matrix", "H_tilde", "L_tilde_dot"):
         assert set(DATA[name]["seeds"]) >= {0, 1, 2, 3}, name
         assert set(A.seeds_for(name, DATA)) >= {0, 1, 2, 3}, name
-    assert A.seeds_for("plucker_from_points", DATA) == A.DEFAULT_SEEDS
+    # a row that records only the default seeds is measured over those; one without a row
+    # (a new kernel) too
+    assert A.seeds_for("x", {"x": {"seeds": list(A.DEFAULT_SEEDS)}}) == A.DEFAULT_SEEDS
+    assert A.seeds_for("new_kernel", DATA) == A.DEFAULT_SEEDS
     assert A.seeds_for("H_matrix", DATA, "5,6") == (5, 6)
     new = {"H_matrix": {**DATA["H_matrix"], "seeds": [0]}}
     both = A.merged(DATA, new)
