@@ -68,17 +68,13 @@ def inputs(kernel, n: int, seed: int = 0) -> list[np.ndarray]:
             v = _unit(rng, n + adv, a.size)
         elif a.kind == "angle":
             v = np.concatenate([rng.uniform(0.0, np.pi, n), ADV_PHI])
-        elif a.kind == "rotation":
+        elif a.kind in ("rotation", "transform"):
             ph = np.concatenate([rng.uniform(0.0, np.pi, n), [1e-6, np.pi - 1e-8, np.pi,
                                                                np.pi - 1e-4]])
             v = _rotations(_unit(rng, n + adv), ph)
-        elif a.shape == (4, 4):  # a homogeneous transform (the log of SE(3) reads one)
-            ph = np.concatenate([rng.uniform(0.0, np.pi, n), [1e-6, np.pi - 1e-8, np.pi,
-                                                               np.pi - 1e-4]])
-            v = np.zeros((n + adv, 4, 4))
-            v[:, :3, :3] = _rotations(_unit(rng, n + adv), ph)
-            v[:, :3, 3] = rng.standard_normal((n + adv, 3))
-            v[:, 3, 3] = 1.0
+            if a.kind == "transform":   # [[R, p], [0, 1]] (the log of SE(3) reads one)
+                R, v = v, np.zeros((n + adv, 4, 4))
+                v[:, :3, :3], v[:, :3, 3], v[:, 3, 3] = R, rng.standard_normal((n + adv, 3)), 1
         elif a.name == "m":
             v = rng.uniform(0.5, 2.0, n + adv)
         elif a.name == "I_C":    # an inertia matrix: symmetric positive definite
