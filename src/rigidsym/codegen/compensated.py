@@ -26,7 +26,8 @@ from __future__ import annotations
 import numpy as np
 import sympy as sp
 
-__all__ = ["DiffProd", "diffprod", "expand_diffprod", "NUMPY_SOURCE", "ARRAY_SOURCE"]
+__all__ = ["DiffProd", "SumProd", "diffprod", "sumprod", "expand_diffprod", "NUMPY_SOURCE",
+           "ARRAY_SOURCE"]
 
 
 class DiffProd(sp.Function):
@@ -42,10 +43,30 @@ class DiffProd(sp.Function):
         return a * b - c * d
 
 
+class SumProd(sp.Function):
+    """``SumProd(a1, b1, ..., an, bn) = a1 b1 + ... + an bn`` (n = 2, 3 or 4), evaluated
+    compensated by every printer: Ogita, Rump and Oishi's Dot2 (SIAM J. Sci. Comput. 26, 2005,
+    Algorithm 5.3), as if computed in twice the working precision and then rounded: the
+    error is at most ``u |s| + gamma_n^2 sum |a_i b_i|``, so a dot product that cancels (the
+    pitch ``a_dot . omega / ||omega||^2`` of a twist nearly perpendicular to its axis) keeps
+    about 1 u where the plain sum loses ``u sum |a_i b_i| / |s|``."""
+
+    def fdiff(self, argindex=1):
+        i = argindex - 1
+        return self.args[i ^ 1]
+
+    def _eval_rewrite_as_Add(self, *args, **kwargs):
+        return sp.Add(*[args[i] * args[i + 1] for i in range(0, len(args), 2)])
+
+
 def expand_diffprod(expr):
-    """``expr`` with every :class:`DiffProd` written out as ``a b - c d``."""
-    return sp.sympify(expr).replace(lambda x: isinstance(x, DiffProd),
-                                    lambda x: x.args[0] * x.args[1] - x.args[2] * x.args[3])
+    """``expr`` with every :class:`DiffProd` written out as ``a b - c d`` and every
+    :class:`SumProd` as its sum of products."""
+    expr = sp.sympify(expr).replace(lambda x: isinstance(x, SumProd),
+                                    lambda x: sp.Add(*[x.args[i] * x.args[i + 1] for i in
+                                                       range(0, len(x.args), 2)]))
+    return expr.replace(lambda x: isinstance(x, DiffProd),
+                        lambda x: x.args[0] * x.args[1] - x.args[2] * x.args[3])
 
 
 #: the helper of the generated NumPy kernels (``module`` is ``numpy``); the same text for
@@ -76,6 +97,20 @@ def _diffprod(a, b, c, d):
     bb = s - p
     t = (p - (s - bb)) + (-w - bb)     # p - w = s + t exactly (Knuth's TwoSum)
     return (s + (t + q)) - r
+
+
+def _sumprod(*args):
+    """a1 b1 + ... + an bn compensated (Dot2 of Ogita, Rump and Oishi)."""
+    a = args[0]
+    k = {splitter}
+    p, s = _two_prod(args[0], args[1], k)
+    for i in range(2, len(args), 2):
+        h, r = _two_prod(args[i], args[i + 1], k)
+        t = p + h
+        z = t - p
+        s = s + (((p - (t - z)) + (h - z)) + r)     # Knuth's TwoSum error, then the product's
+        p = t
+    return p + s
 '''
 
 #: NumPy: the splitter from the dtype (float32, float64, long double)
@@ -87,19 +122,21 @@ ARRAY_SOURCE = _SOURCE.replace(
     "{splitter}", "4097.0 if a.dtype == {module}.float32 else 134217729.0")
 
 
-def _load():
+def _load(name: str):
     ns: dict = {"numpy": np}
     exec(compile(NUMPY_SOURCE, "<rigidsym.codegen.compensated>", "exec"), ns)  # noqa: S102
-    return ns["_diffprod"]
+    return ns[name]
 
 
 #: :func:`_diffprod` of the generated NumPy modules, for the generator's own measurements
-diffprod = _load()
+diffprod = _load("_diffprod")
+#: and :func:`_sumprod`
+sumprod = _load("_sumprod")
 
 
 def uses_diffprod(kc) -> bool:
     """Whether a program of ``kc`` has a compensated difference of products (its printed
     module then carries the helper of this module); ``kc`` a
     :class:`rigidsym.codegen.generator.KernelCode`."""
-    return any(sp.sympify(e).has(DiffProd) for v in kc.variants
+    return any(sp.sympify(e).has(DiffProd, SumProd) for v in kc.variants
                for e in [*(x for _, x in v.program.temps), *v.program.outputs])

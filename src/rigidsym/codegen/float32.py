@@ -34,7 +34,7 @@ import math
 import numpy as np
 
 from rigidsym.codegen import rule
-from rigidsym.codegen.compensated import diffprod
+from rigidsym.codegen.compensated import diffprod, sumprod
 from rigidsym.codegen.printers import KernelNumPyPrinter
 
 __all__ = ["BUDGET", "U32", "N_RANDOM", "sample_inputs", "choose", "ProgramSpec", "trig_spec",
@@ -143,7 +143,12 @@ def _diffprod64(*args):
     return diffprod(*(np.asarray(a, dtype=_F64) for a in args))
 
 
-_GLOBALS = {"numpy": _Shim(), "_diffprod": _diffprod64}
+def _sumprod64(*args):
+    # and rigidsym_sumprod<n>
+    return sumprod(*(np.asarray(a, dtype=_F64) for a in args))
+
+
+_GLOBALS = {"numpy": _Shim(), "_diffprod": _diffprod64, "_sumprod": _sumprod64}
 
 
 class ProgramSpec:
