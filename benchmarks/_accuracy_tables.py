@@ -60,3 +60,60 @@ def markdown(rows: list) -> str:
                      f"{r.worst_ratio:.3g} | {r.err:.2g} | {r.kappa:.2g} | {r.ulps:.3g} | "
                      f"{r.flagged_expected} | {len(r.spurious)} |")
     return "\n".join(lines) + "\n"
+
+
+_BACKEND = {"c": "C", "numpy": "NumPy"}
+
+
+def summary_table(data: dict) -> str:
+    """Per float type and back-end: how many kernels meet the rule, and the rows whose worst
+    err / e_ref is above 2 where e_ref > 2 u (issue 37's acceptance), worst first."""
+    lines = ["| type | back-end | kernels | within the rule | worst err / e_ref above 2 (where "
+             "e_ref > 2 u) |", "|---|---|---|---|---|"]
+    for dt in ("float64", "float32"):
+        for b in ("c", "numpy"):
+            rows = [(name, r[dt]["backends"][b]) for name, r in data.items()
+                    if b in r.get(dt, {}).get("backends", {})]
+            if not rows:
+                continue
+            within = sum(x["rule"] <= 1 for _, x in rows)
+            above = sorted(((x["vs_ref"], name) for name, x in rows if x["vs_ref"] > 2),
+                           reverse=True)
+            worst = ", ".join(f"`{n}` {v:.3g}" for v, n in above[:6])
+            more = f", {len(above) - 6} more" if len(above) > 6 else ""
+            lines.append(f"| {dt} | {_BACKEND[b]} | {len(rows)} | {within} | {len(above)}"
+                         f"{': ' + worst + more if above else ''} |")
+    return "\n".join(lines) + "\n"
+
+
+# The tables the data file makes, by file and marker (<!-- name --> ... <!-- /name -->).
+DOC_TABLES = {
+    "docs/accuracy.md": {"rule-summary": summary_table,
+                         "rule-public": lambda d: rule_table(d, public_only=True),
+                         "table": lambda d: kernel_table(d, public_only=True)},
+    "benchmarks/RESULTS.md": {"rule-summary-all": summary_table, "rule-all": rule_table},
+}
+
+
+def replace_marked(text: str, marker: str, body: str) -> str:
+    """``text`` with what lies between ``<!-- marker -->`` and ``<!-- /marker -->`` (each on
+    a line of its own) replaced by ``body``. ValueError if either line is missing."""
+    start, end = f"<!-- {marker} -->\n", f"<!-- /{marker} -->\n"
+    i, j = text.find(start), text.find(end)
+    if i < 0 or j < i:
+        raise ValueError(f"no {start.strip()} ... {end.strip()} region")
+    return text[:i + len(start)] + body + text[j:]
+
+
+def synced(root, data: dict) -> dict:
+    """Per file of :data:`DOC_TABLES` (relative to ``root``), its text with every table
+    made anew from ``data``."""
+    from pathlib import Path
+
+    out = {}
+    for rel, tables in DOC_TABLES.items():
+        text = (Path(root) / rel).read_text(encoding="utf-8")
+        for marker, make in tables.items():
+            text = replace_marked(text, marker, make(data))
+        out[rel] = text
+    return out

@@ -49,7 +49,7 @@ import _accuracy_peers as O  # noqa: E402
 import _accuracy_points as P  # noqa: E402
 import _accuracy_ref as R  # noqa: E402
 from _accuracy_seeds import DATA, DEFAULT_SEEDS, merged, seeds_for  # noqa: E402,F401
-from _accuracy_tables import kernel_table, markdown, rule_table  # noqa: E402,F401
+from _accuracy_tables import kernel_table, markdown, rule_table, synced  # noqa: E402,F401
 
 from rigidsym import kernels as K  # noqa: E402
 from rigidsym.codegen import rule  # noqa: E402
@@ -349,11 +349,21 @@ def main(argv=None) -> int:
                     "data file (docs/accuracy.md) and exit")
     ap.add_argument("--rule-table", default="", help="print the table of the rule (per "
                     "kernel, type, back-end) of this data file and exit")
+    ap.add_argument("--docs", default="", help="write the tables of this data file into "
+                    "docs/accuracy.md and benchmarks/RESULTS.md (their marked regions) "
+                    "and exit")
     ap.add_argument("--data", default="", help="write the per-kernel rows (the data "
                     "`rigidsym generate` ships for kernels.accuracy) here")
     a = ap.parse_args(argv)
     if a.rule_table:
         print(rule_table(json.loads(Path(a.rule_table).read_text(encoding="utf-8"))), end="")
+        return 0
+    if a.docs:
+        from rigidsym._io import write_atomic
+
+        tables = synced(DATA.parents[1], json.loads(Path(a.docs).read_text("utf-8")))
+        for rel, text in tables.items():
+            write_atomic(DATA.parents[1] / rel, text)
         return 0
     if a.table:
         print(kernel_table(json.loads(Path(a.table).read_text(encoding="utf-8"))), end="")

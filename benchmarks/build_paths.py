@@ -35,6 +35,7 @@ ROOT = Path(__file__).resolve().parents[1]
 if str(ROOT / "src") not in sys.path:
     sys.path.insert(0, str(ROOT / "src"))
 
+from rigidsym._draw import draw  # noqa: E402
 from rigidsym.kernels import _build, _ext  # noqa: E402
 
 BENCH = {"K1": "rotation_from_euler_rodrigues", "K2": "rotation_from_natural_invariants",
@@ -44,38 +45,16 @@ BENCH = {"K1": "rotation_from_euler_rodrigues", "K2": "rotation_from_natural_inv
 TARGET = 1.10
 
 
-def _unit(rng, n: int, k: int) -> np.ndarray:
-    v = rng.standard_normal((n, k))
-    return v / np.linalg.norm(v, axis=1, keepdims=True)
-
-
-def _rotation(rng, n: int) -> np.ndarray:
-    """Rotation matrices by Rodrigues' formula (row-major)."""
-    e, phi = _unit(rng, n, 3), rng.uniform(0.2, 3.0, n)
-    E = np.zeros((n, 3, 3))
-    E[:, 0, 1], E[:, 0, 2], E[:, 1, 2] = -e[:, 2], e[:, 1], -e[:, 0]
-    E -= E.transpose(0, 2, 1)
-    s, c = np.sin(phi)[:, None, None], np.cos(phi)[:, None, None]
-    return np.eye(3) + s * E + (1 - c) * (E @ E)
-
-
 def inputs(meta: dict, n: int, rng) -> list[np.ndarray]:
     """Valid inputs of every argument kind (unit vectors, angles away from 0 and pi,
     rotations, positive masses)."""
     out = []
     for a in meta["args"]:
         shape = tuple(a["shape"])
-        size = int(np.prod(shape))
-        if a["kind"] == "unit":
-            v = _unit(rng, n, size)
-        elif a["kind"] == "angle":
-            v = rng.uniform(0.2, np.pi - 0.05, n)
-        elif a["kind"] == "rotation":
-            v = _rotation(rng, n)
-        elif a["name"] == "m":
+        if a["name"] == "m":
             v = rng.uniform(0.5, 5.0, n)
         else:
-            v = rng.standard_normal((n,) + shape)
+            v = draw(a["kind"], (n,) + shape, rng, phi=(0.2, 3.0), angle=(0.2, np.pi - 0.05))
         out.append(np.ascontiguousarray(v, dtype=np.float64))
     return out
 

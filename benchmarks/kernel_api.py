@@ -47,22 +47,13 @@ MARK = ("<!-- kernel-api -->", "<!-- /kernel-api -->")
 
 
 def _inputs(meta: dict, n: int, rng) -> list[np.ndarray]:
-    from rigidsym import kernels as K
+    from rigidsym._draw import draw
 
     out = []
     for a in meta["args"]:
         shape = (n,) + tuple(a["shape"])
-        if a["kind"] == "unit":
-            v = rng.standard_normal(shape)
-            v /= np.linalg.norm(v, axis=-1, keepdims=True)
-        elif a["kind"] == "angle":
-            v = rng.uniform(0.2, np.pi - 0.05, shape)
-        elif a["kind"] == "rotation":
-            e = rng.standard_normal((n, 3))
-            e /= np.linalg.norm(e, axis=1, keepdims=True)
-            v = K.rotation_from_natural_invariants(e, rng.uniform(0.2, 3.0, n))
-        else:
-            v = rng.uniform(0.5, 2.0, shape)
+        v = draw(a["kind"], shape, rng, phi=(0.2, 3.0), angle=(0.2, np.pi - 0.05),
+                 free=lambda s: rng.uniform(0.5, 2.0, s))
         out.append(np.ascontiguousarray(v))
     return out
 

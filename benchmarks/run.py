@@ -34,6 +34,7 @@ os.environ.setdefault("OMP_NUM_THREADS", "1")
 from rigidsym.derivations.kernels_spec import KERNELS  # noqa: E402
 
 from rigidsym import kernels as K  # noqa: E402
+from rigidsym._draw import draw  # noqa: E402
 from rigidsym.codegen.generator import _flatten  # noqa: E402
 from rigidsym.codegen.spec import flat_symbols, input_symbols  # noqa: E402
 from rigidsym.kernels import _state  # noqa: E402
@@ -61,19 +62,10 @@ def inputs(name: str, n: int, rng) -> list[np.ndarray]:
     k = SPECS[name]
     out = []
     for a in k.args:
-        if a.kind == "unit":
-            v = rng.standard_normal((n, a.size))
-            v /= np.linalg.norm(v, axis=1, keepdims=True)
-        elif a.kind == "angle":
-            v = rng.uniform(0.2, np.pi - 0.05, n)
-        elif a.kind == "rotation":
-            e = rng.standard_normal((n, 3))
-            e /= np.linalg.norm(e, axis=1, keepdims=True)
-            v = K.rotation_from_natural_invariants(e, rng.uniform(0.2, 3.0, n), check=False)
-        elif a.name == "m":
+        if a.name == "m":
             v = rng.uniform(0.5, 5.0, n)
-        else:
-            v = rng.standard_normal((n,) + a.shape)
+        else:   # on the kind's manifold: unit, rotation, transform; angles off 0 and pi
+            v = draw(a.kind, (n,) + a.shape, rng, phi=(0.2, 3.0), angle=(0.2, np.pi - 0.05))
         out.append(np.ascontiguousarray(v, dtype=np.float64))
     return out
 

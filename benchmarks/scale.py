@@ -31,6 +31,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 from run import BENCH, SPECS, inputs  # noqa: E402
 
 from rigidsym import kernels as K  # noqa: E402
+from rigidsym._draw import draw  # noqa: E402
 from rigidsym.kernels import _scale, _state  # noqa: E402
 
 RESULTS = ROOT / "benchmarks" / "RESULTS.md"
@@ -274,13 +275,8 @@ def table_latency(rounds: int) -> list[str]:
         meta = _state.meta()[name]
         xs = []
         for a in meta["args"]:
-            if a["kind"] == "unit":
-                v = rng.standard_normal(a["shape"])
-                v /= np.linalg.norm(v)
-            elif a["kind"] == "rotation":
-                v = K.rotation_from_natural_invariants([0.0, 0.6, 0.8], 0.7)
-            else:
-                v = rng.uniform(0.5, 1.5, a["shape"])
+            v = draw(a["kind"], a["shape"], rng, phi=(0.7, 0.7),
+                     free=lambda s: rng.uniform(0.5, 1.5, s))
             xs.append(v)
         f = getattr(K, name)
         cells = []

@@ -8,6 +8,7 @@ from __future__ import annotations
 import numpy as np
 
 from rigidsym import kernels as K
+from rigidsym._draw import draw
 from rigidsym.kernels import _state
 
 
@@ -17,25 +18,7 @@ def sample(name: str, n: int, seed: int = 0) -> list[np.ndarray]:
     rng = np.random.default_rng(seed)
     out = []
     for a in _state.meta()[name]["args"]:
-        shape = (n, *a["shape"])
-        if a["kind"] == "unit":
-            x = rng.standard_normal(shape)
-            x /= np.linalg.norm(x, axis=-1, keepdims=True)
-        elif a["kind"] == "rotation":
-            e = rng.standard_normal((n, 3))
-            e /= np.linalg.norm(e, axis=-1, keepdims=True)
-            x = K.rotation_from_natural_invariants(e, rng.uniform(0.3, 2.8, n))
-        elif a["kind"] == "angle":
-            x = rng.uniform(0.3, 2.8, shape)
-        elif a["kind"] == "transform":       # [[R, p], [0, 1]]
-            e = rng.standard_normal((n, 3))
-            e /= np.linalg.norm(e, axis=-1, keepdims=True)
-            x = np.zeros(shape)
-            x[:, :3, :3] = K.rotation_from_natural_invariants(e, rng.uniform(0.3, 2.8, n))
-            x[:, :3, 3], x[:, 3, 3] = rng.standard_normal((n, 3)), 1.0
-        else:
-            x = rng.standard_normal(shape)
-        out.append(x)
+        out.append(draw(a["kind"], (n, *a["shape"]), rng, phi=(0.3, 2.8), angle=(0.3, 2.8)))
     return out
 
 

@@ -28,6 +28,7 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from rigidsym import kernels as K
+from rigidsym._draw import draw
 from rigidsym.kernels import _state
 
 SEQS = ("ZXZ", "XYX", "YZY", "ZYZ", "XZX", "YXY", "XYZ", "YZX", "ZXY", "XZY", "ZYX", "YXZ")
@@ -62,23 +63,11 @@ pytestmark = pytest.mark.usefixtures("backend")  # conftest: NumPy, then C
 def valid(spec: dict, batch: tuple, rng) -> np.ndarray:
     """A valid input of ``spec`` with batch shape ``batch`` (generic, off the singular sets)."""
     shape = tuple(batch) + spec["tshape"]
-    if spec["kind"] == "unit":
-        v = rng.standard_normal(shape)
-        return v / np.linalg.norm(v, axis=-1, keepdims=True)
     if spec["kind"] == "angle":
         return rng.uniform(0.05, np.pi - 0.05, shape) * rng.choice([-1.0, 1.0], shape)
-    if spec["kind"] == "rotation":
-        e = rng.standard_normal(tuple(batch) + (3,))
-        e /= np.linalg.norm(e, axis=-1, keepdims=True)
-        return K.rotation_from_natural_invariants(e, rng.uniform(0.05, 3.0, tuple(batch)))
-    if spec["kind"] == "transform":   # [[R, p], [0, 1]]: the log of SE(3) reads only these
-        T = np.zeros(tuple(batch) + (4, 4))
-        T[..., :3, :3] = valid(dict(spec, kind="rotation"), batch, rng)
-        T[..., :3, 3], T[..., 3, 3] = rng.standard_normal(tuple(batch) + (3,)), 1.0
-        return T
     if spec["name"] == "angles":       # Euler angles: away from gimbal lock
         return rng.uniform(0.2, 1.3, shape)
-    return rng.standard_normal(shape)
+    return draw(spec["kind"], shape, rng)   # on the kind's manifold (a transform: [[R, p], [0, 1]])
 
 
 def _outputs(res) -> list[np.ndarray]:
