@@ -33,7 +33,9 @@ import sympy as sp
 
 from rigidsym.algebra.symbols import constrained_group
 from rigidsym.codegen import rule as _rule
-from rigidsym.codegen.compensated import DiffProd, SumProd, diffprod, expand_diffprod, sumprod
+from rigidsym.codegen.compensated import compensated_sums, diffprod, expand_diffprod, sumprod
+from rigidsym.codegen.compensated import expand_numerators as _expand_numerators
+from rigidsym.codegen.compensated import expand_plain as _expand_plain
 from rigidsym.codegen.regimes import regimes
 
 __all__ = ["Chosen", "Rewrite", "RULES", "improve"]
@@ -42,8 +44,6 @@ __all__ = ["Chosen", "Rewrite", "RULES", "improve"]
 #: this many times smaller than the current form's to be kept
 GAIN = 2.0
 U64 = 2.0**-53
-#: expressions larger than this (operations) are not expanded
-EXPAND_LIMIT = 60
 
 
 @dataclass(frozen=True)
@@ -134,55 +134,6 @@ def _axis_point_from_skew(flat, ctx):
     return [e.subs(reps) if e.has(om) else e for e in flat], list(reps.items())
 
 
-def _compensated(n):
-    """``n`` (expanded) as a :class:`DiffProd` when it is ``+-a b +- c d`` (every sign: a
-    sum of products of opposite signs cancels as a difference does); else None."""
-    if not n.is_Add or len(n.args) != 2:
-        return None
-    pairs = []
-    for t in n.args:
-        c, fs = t.as_coeff_mul()
-        if c not in (1, -1):
-            return None
-        fs = [f for x in fs for f in ([x.base] * int(x.exp) if x.is_Pow and x.exp.is_Integer
-                                      and 1 <= x.exp <= 2 else [x])]
-        if len(fs) != 2:
-            return None
-        pairs.append((c * fs[0], fs[1]))
-    (a, b), (c, d) = sorted(pairs, key=lambda ab: sp.default_sort_key(ab[0] * ab[1]))
-    return DiffProd(a, b, -c, d)
-
-
-def _expand_plain(flat, ctx):
-    """The expanded numerator without compensation (issue 30's form ``p1 x p2``): offered
-    so that the rule of issue 37 chooses between it and the compensated one; it loses the
-    exactness of ``p2 - p1`` at nearly coincident points and fails the rule there."""
-    return _expand_numerators(flat, ctx, compensate=False)
-
-
-def _expand_numerators(flat, ctx, compensate: bool = True):
-    """Each small output ``n / d`` with its numerator expanded: cancelling terms of the
-    declared grouping (``p1 x (p2 - p1)``) cancel symbolically, not in floating point; a
-    numerator then of two products (a cross product ``p1 x p2``) is a compensated
-    difference of products (:mod:`rigidsym.codegen.compensated`): ``p1 x p2`` of nearly
-    parallel points cancels in floating point as ``p1 x (p2 - p1)`` did not."""
-    out, parts = [], []
-    for e in flat:
-        if e.has(sp.Piecewise) or sp.count_ops(e) > EXPAND_LIMIT or ctx["angles"] and \
-                e.has(*ctx["angles"]):
-            out.append(e)
-            continue
-        n, d = sp.fraction(sp.together(e))
-        ne = sp.expand(n)
-        if sp.count_ops(ne) >= sp.count_ops(n) + 4 or ne == n:
-            out.append(e)
-            continue
-        ne = (_compensated(ne) if compensate else None) or ne
-        out.append(ne / d)
-        parts.append((n, ne))
-    return (out, parts) if parts else None
-
-
 def _rewritten_then_differentiated(flat, ctx):
     """A ``<name>_with_jacobians`` kernel: its values through the other rules, and its
     derivatives those of the rewritten values (a rewrite of unconstrained inputs only: two
@@ -195,7 +146,7 @@ def _rewritten_then_differentiated(flat, ctx):
     nv = sum(sizes)
     values, parts = flat[:nv], []
     for rule in (r for r in RULES if r.propose not in (_rewritten_then_differentiated,
-                                                       _expand_plain, _compensated_sums)):
+                                                       _expand_plain, compensated_sums)):
         got = rule.propose(values, ctx)
         if got is not None:
             values, p = got
@@ -210,75 +161,6 @@ def _rewritten_then_differentiated(flat, ctx):
             out += [sp.diff(fi, x) for fi in f for x in ctx["flat"][a.name]]
         start += size
     return out, parts
-
-
-def _pairs(add):
-    """``add`` as ``[(a1, b1), ...]`` with ``add = sum a_i b_i`` (a term of one factor: ``(a,
-    1)``; a coefficient +-2^k folded into the first factor, exactly), or None."""
-    pairs = []
-    for t in add.args:
-        c, fs = t.as_coeff_mul()
-        fs = [f for x in fs for f in ([x.base] * int(x.exp) if x.is_Pow and x.exp.is_Integer
-                                      and 2 <= x.exp <= 2 else [x])]
-        m = abs(c)
-        if not (c.is_Rational and m.p & (m.p - 1) == 0 and m.q & (m.q - 1) == 0) or \
-                not 1 <= len(fs) <= 2:
-            return None
-        pairs.append((c * fs[0], fs[1]) if len(fs) == 2 else (c * fs[0], sp.S.One))
-    return pairs
-
-
-def _common_factor(add):
-    """``(g, rest)`` with ``add = g rest``, ``g`` the product of the factors every term of
-    ``add`` shares (``e . d`` with ``e = v / ||v||``: ``(1/||v||, v . d)``)."""
-    terms = [sp.Mul.make_args(t) for t in add.args]
-    common = [f for f in terms[0] if not f.is_Number and all(f in t for t in terms[1:])]
-    if not common:
-        return sp.S.One, add
-    g = sp.Mul(*common)
-    return g, sp.Add(*[sp.Mul(*[f for f in t if f not in common]) for t in terms])
-
-
-def _sum_of_products(e, plain):
-    """``e`` as a :class:`SumProd` where it is a sum of 2 to 4 products of at most two
-    factors (after a common factor), not all squares; else None."""
-    if not e.is_Add or not 2 <= len(e.args) <= 4 or e.atoms(sp.Function) - plain:
-        return None
-    g, rest = _common_factor(e)
-    if not rest.is_Add or len(rest.args) != len(e.args):
-        return None
-    pairs = _pairs(rest)
-    if pairs is None or all(b == 1 for _, b in pairs) or all(a == b for a, b in pairs):
-        return None
-    pairs.sort(key=lambda ab: ab[1] == 1)       # a symbol first: the helpers read its type
-    return g * SumProd(*[x for ab in pairs for x in ab])
-
-
-def _compensated_sums(flat, ctx):
-    """Each sum of two to four products in an output (a dot product, a component of a cross
-    product plus a term) as a compensated :class:`SumProd`: a sum that cancels (the pitch
-    ``a_dot . omega / ||omega||^2`` of a twist nearly perpendicular to its axis, ``e .
-    (a' - a)``) loses ``u sum |a_i b_i| / |s|`` plainly and about 1 u compensated. Not in
-    the branches' conditions, nor in sums of an angle or a transcendental function (the
-    half-angle rewrite and the removable quotients read those)."""
-    plain = {f for e in flat for f in e.atoms(DiffProd, SumProd)}
-    angles = set(ctx["angles"])
-    parts = []
-
-    def walk(e):
-        if e.is_Relational or e.is_Atom or (angles and e.has(*angles)):
-            return e
-        args = [walk(a) for a in e.args]
-        e2 = e.func(*args) if any(a is not b for a, b in zip(args, e.args, strict=True)) \
-            else e
-        got = _sum_of_products(e2, plain | {f for f in e2.atoms(SumProd)})
-        if got is None:
-            return e2
-        parts.append((e, got))
-        return got
-
-    out = [walk(e) for e in flat]
-    return (out, parts) if parts else None
 
 
 RULES = (
@@ -310,7 +192,7 @@ RULES = (
             "a dot product (or a cross product's component plus a term) that cancels loses "
             "u sum |a_i b_i| / |s| relative when summed plainly; compensated (Dot2 of Ogita, "
             "Rump and Oishi, rigidsym.codegen.compensated.SumProd) it keeps about 1 u",
-            _compensated_sums, costly=True),
+            compensated_sums, costly=True),
 )
 
 
