@@ -42,6 +42,12 @@ class DiffProd(sp.Function):
     def _eval_rewrite_as_Add(self, a, b, c, d, **kwargs):
         return a * b - c * d
 
+    def _eval_evalf(self, prec):
+        # of numbers (a program run by substitution): the exact value's; of symbols: kept
+        if all(a.is_number for a in self.args):
+            return self._eval_rewrite_as_Add(*self.args)._eval_evalf(prec)
+        return None
+
 
 class SumProd(sp.Function):
     """``SumProd(a1, b1, ..., an, bn) = a1 b1 + ... + an bn`` (n = 2, 3 or 4), evaluated
@@ -57,6 +63,11 @@ class SumProd(sp.Function):
 
     def _eval_rewrite_as_Add(self, *args, **kwargs):
         return sp.Add(*[args[i] * args[i + 1] for i in range(0, len(args), 2)])
+
+    def _eval_evalf(self, prec):
+        if all(a.is_number for a in self.args):
+            return self._eval_rewrite_as_Add(*self.args)._eval_evalf(prec)
+        return None
 
 
 def expand_diffprod(expr):
@@ -214,10 +225,20 @@ def _common_factor(add):
     return g, sp.Add(*[sp.Mul(*[f for f in t if f not in common]) for t in terms])
 
 
-def _sum_of_products(e, plain):
+def _trig(f) -> bool:
+    """Whether the factor ``f`` is a trigonometric function (or a power of one)."""
+    b = f.base if f.is_Pow else f
+    return isinstance(b, (sp.functions.elementary.trigonometric.TrigonometricFunction,
+                          sp.functions.elementary.trigonometric.InverseTrigonometricFunction,
+                          sp.atan2))
+
+
+def _sum_of_products(e):
     """``e`` as a :class:`SumProd` where it is a sum of 2 to 4 products of at most two
-    factors (after a common factor), not all squares; else None."""
-    if not e.is_Add or not 2 <= len(e.args) <= 4 or e.atoms(sp.Function) - plain:
+    factors (after a common factor), not all squares, no term a multiple of a trigonometric
+    function (``k cos(phi) - k``: the half-angle rewrite's); else None."""
+    if not e.is_Add or not 2 <= len(e.args) <= 4 or \
+            any(_trig(f) for t in e.args for f in sp.Mul.make_args(t)):
         return None
     g, rest = _common_factor(e)
     if not rest.is_Add or len(rest.args) != len(e.args):
@@ -234,20 +255,18 @@ def compensated_sums(flat, ctx):
     product plus a term) as a compensated :class:`SumProd`: a sum that cancels (the pitch
     ``a_dot . omega / ||omega||^2`` of a twist nearly perpendicular to its axis, ``e .
     (a' - a)``) loses ``u sum |a_i b_i| / |s|`` plainly and about 1 u compensated. Not in
-    the branches' conditions, nor in sums of an angle or a transcendental function (the
-    half-angle rewrite and the removable quotients read those). A rule of
+    the branches' conditions, nor in a sum with a term that is a multiple of a
+    trigonometric function (``k cos(phi) - k``: the half-angle rewrite reads those). A rule of
     :mod:`rigidsym.codegen.accurate`: ``(outputs, [(old, new) parts])`` or None."""
-    plain = {f for e in flat for f in e.atoms(DiffProd, SumProd)}
-    angles = set(ctx["angles"])
     parts = []
 
     def walk(e):
-        if e.is_Relational or e.is_Atom or (angles and e.has(*angles)):
+        if e.is_Relational or e.is_Atom:
             return e
         args = [walk(a) for a in e.args]
         e2 = e.func(*args) if any(a is not b for a, b in zip(args, e.args, strict=True)) \
             else e
-        got = _sum_of_products(e2, plain | {f for f in e2.atoms(SumProd)})
+        got = _sum_of_products(e2)
         if got is None:
             return e2
         parts.append((e, got))
