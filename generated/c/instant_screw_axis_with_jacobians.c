@@ -6,7 +6,7 @@
  * template: c_kernel.c.j2
  * math hash: sha256:958d9a3628e3eaa7
  * sympy 1.14.0, rigidsym 0.2.0
- * operations: 331
+ * operations: 316
  * accuracy rewrite (main): compensated sums of products (p0): a dot product (or a cross
  *     product's component plus a term) that cancels loses u sum |a_i b_i| / |s| relative when
  *     summed plainly; compensated (Dot2 of Ogita, Rump and Oishi,

@@ -5,7 +5,7 @@
 # template: numpy_kernel.py.j2
 # math hash: sha256:958d9a3628e3eaa7
 # sympy 1.14.0, rigidsym 0.2.0
-# operations: 331
+# operations: 316
 # accuracy rewrite (main): compensated sums of products (p0): a dot product (or a cross
 #     product's component plus a term) that cancels loses u sum |a_i b_i| / |s| relative when
 #     summed plainly; compensated (Dot2 of Ogita, Rump and Oishi,
@@ -75,7 +75,7 @@ def _sumprod(*args):
         p = t
     return p + s
 
-OPS = 331
+OPS = 316
 MATH_HASH = "958d9a3628e3eaa7"
 #: sample flags returned by the batch function
 SINGULAR, NONFINITE = 1, 2
@@ -88,118 +88,115 @@ def _main(omega_0, omega_1, omega_2, a_0, a_1, a_2, a_dot_0, a_dot_1, a_dot_2):
     x3 = x1 + x2
     x4 = x0 + x3
     x5 = 1.0/x4
-    x6 = _sumprod(a_0, omega_1, -a_1, omega_0, a_dot_2, 1)
-    x7 = _sumprod(a_2, omega_0, -a_0, omega_2, a_dot_1, 1)
-    x8 = _sumprod(a_1, omega_2, -a_2, omega_1, a_dot_0, 1)
-    x9 = 1.0/numpy.sqrt(x4)
-    x10 = -a_0*omega_2
-    x11 = a_2*omega_0
-    x12 = a_dot_1 + x11
-    x13 = x10 + x12
-    x14 = a_1*omega_2
-    x15 = -a_2*omega_1 + a_dot_0
-    x16 = x14 + x15
-    x17 = omega_0*x13 - omega_1*x16
-    x18 = omega_1*x5
-    x19 = a_0*omega_1
-    x20 = -a_1*omega_0 + a_dot_2
-    x21 = x19 + x20
-    x22 = -omega_0*x21 + omega_2*x16
-    x23 = omega_2*x22*x5 - x17*x18
-    x24 = omega_0*x5
-    x25 = omega_1*x21 - omega_2*x13
-    x26 = omega_2*x5
-    x27 = x17*x24 - x25*x26
-    x28 = omega_1*x25*x5 - x22*x24
-    x29 = a_1*omega_1
-    x30 = a_2*omega_2
-    x31 = -x29 - x30
-    x32 = 1.0/(x4*x4)
-    x33 = 2*x32
-    x34 = x25*x33
-    x35 = omega_0*x34
-    x36 = 2*x19 + x20
-    x37 = omega_1*x34
-    x38 = 2*a_0*omega_2 - x12
-    x39 = 2*a_1*omega_0 - a_dot_2 - x19
-    x40 = x22*x33
-    x41 = omega_0*x40
-    x42 = a_0*omega_0
-    x43 = -x30 - x42
-    x44 = omega_1*x40
-    x45 = 2*x14 + x15
-    x46 = a_dot_1 + x10 + 2*x11
-    x47 = x17*x33
-    x48 = omega_0*x47
-    x49 = 2*a_2*omega_1 - a_dot_0 - x14
-    x50 = omega_1*x47
-    x51 = -x29 - x42
-    x52 = x3*x5
-    x53 = -omega_0*x18
-    x54 = -omega_0*x26
-    x55 = x5*(x0 + x2)
-    x56 = -omega_1*x26
-    x57 = x5*(x0 + x1)
-    x58 = x33*(a_dot_0*omega_0 + a_dot_1*omega_1 + a_dot_2*omega_2)
-    x59 = -x9
+    x6 = a_0*omega_1
+    x7 = -a_1*omega_0 + a_dot_2
+    x8 = x6 + x7
+    x9 = -a_0*omega_2
+    x10 = a_2*omega_0
+    x11 = a_dot_1 + x10
+    x12 = x11 + x9
+    x13 = omega_1*x8 - omega_2*x12
+    x14 = x13*x5
+    x15 = a_1*omega_2
+    x16 = -a_2*omega_1 + a_dot_0
+    x17 = x15 + x16
+    x18 = -omega_0*x8 + omega_2*x17
+    x19 = x18*x5
+    x20 = omega_0*x12 - omega_1*x17
+    x21 = x20*x5
+    x22 = 1.0/numpy.sqrt(x4)
+    x23 = -omega_1*x21 + omega_2*x18*x5
+    x24 = omega_0*x21 - omega_2*x14
+    x25 = -omega_0*x19 + omega_1*x13*x5
+    x26 = a_1*omega_1
+    x27 = a_2*omega_2
+    x28 = -x26 - x27
+    x29 = 1.0/(x4*x4)
+    x30 = 2*x29
+    x31 = x13*x30
+    x32 = omega_0*x31
+    x33 = 2*x6 + x7
+    x34 = omega_1*x31
+    x35 = 2*a_0*omega_2 - x11
+    x36 = 2*a_1*omega_0 - a_dot_2 - x6
+    x37 = x18*x30
+    x38 = omega_0*x37
+    x39 = a_0*omega_0
+    x40 = -x27 - x39
+    x41 = omega_1*x37
+    x42 = 2*x15 + x16
+    x43 = a_dot_1 + 2*x10 + x9
+    x44 = x20*x30
+    x45 = omega_0*x44
+    x46 = 2*a_2*omega_1 - a_dot_0 - x15
+    x47 = omega_1*x44
+    x48 = -x26 - x39
+    x49 = x3*x5
+    x50 = omega_1*x5
+    x51 = -omega_0*x50
+    x52 = omega_2*x5
+    x53 = -omega_0*x52
+    x54 = x5*(x0 + x2)
+    x55 = -omega_1*x52
+    x56 = x5*(x0 + x1)
+    x57 = omega_0*x5
+    x58 = x30*(a_dot_0*omega_0 + a_dot_1*omega_1 + a_dot_2*omega_2)
+    x59 = -x22
     x60 = 1.0/(x4*numpy.sqrt(x4))
     x61 = omega_0*x60
     x62 = -omega_1*x61
     x63 = -omega_2*x61
     x64 = omega_1*x60
     x65 = -omega_2*x64
-    x66 = x46*x5
-    x67 = x39*x5
-    x68 = omega_1*x48
-    x69 = omega_2*x41
-    x70 = x17*x5
-    x71 = omega_2*x60
-    x72 = x45*x5
-    x73 = x22*x5
-    x74 = x36*x5
-    x75 = -omega_2*x37
-    x76 = x38*x5
-    x77 = x25*x5
-    x78 = x1*x5
-    x79 = x2*x5
-    x80 = x0*x5
+    x66 = x43*x5
+    x67 = x36*x5
+    x68 = omega_1*x45
+    x69 = omega_2*x38
+    x70 = omega_2*x60
+    x71 = x42*x5
+    x72 = x33*x5
+    x73 = -omega_2*x34
+    x74 = x35*x5
+    x75 = x1*x5
+    x76 = x2*x5
+    x77 = x0*x5
     return (
-        x5*_sumprod(omega_1, x6, -omega_2, x7),
-        x5*_sumprod(omega_2, x8, -omega_0, x6),
-        x5*_sumprod(omega_0, x7, -omega_1, x8),
+        x14,
+        x19,
+        x21,
         x5*_sumprod(a_dot_0, omega_0, a_dot_1, omega_1, a_dot_2, omega_2),
-        omega_0*x9,
-        omega_1*x9,
-        omega_2*x9,
-        x23*x9,
-        x27*x9,
-        x28*x9,
-        x31*x5 - x35,
-        x36*x5 - x37,
-        -omega_2*x34 + x38*x5,
-        x39*x5 - x41,
-        x43*x5 - x44,
-        -omega_2*x40 + x45*x5,
-        x46*x5 - x48,
-        x49*x5 - x50,
-        -omega_2*x47 + x5*x51,
-        x52,
+        omega_0*x22,
+        omega_1*x22,
+        omega_2*x22,
+        x22*x23,
+        x22*x24,
+        x22*x25,
+        x28*x5 - x32,
+        x33*x5 - x34,
+        -omega_2*x31 + x35*x5,
+        x36*x5 - x38,
+        x40*x5 - x41,
+        -omega_2*x37 + x42*x5,
+        x43*x5 - x45,
+        x46*x5 - x47,
+        -omega_2*x44 + x48*x5,
+        x49,
+        x51,
         x53,
+        x51,
         x54,
+        x55,
         x53,
         x55,
         x56,
-        x54,
-        x56,
+        0,
+        -x52,
+        x50,
+        x52,
+        0,
+        -x57,
+        -x50,
         x57,
-        0,
-        -x26,
-        x18,
-        x26,
-        0,
-        -x24,
-        -x18,
-        x24,
         0,
         a_dot_0*x5 - omega_0*x58,
         a_dot_1*x5 - omega_1*x58,
@@ -207,9 +204,9 @@ def _main(omega_0, omega_1, omega_2, a_0, a_1, a_2, a_dot_0, a_dot_1, a_dot_2):
         0,
         0,
         0,
-        x24,
-        x18,
-        x26,
+        x57,
+        x50,
+        x52,
         -x0*x60 - x59,
         x62,
         x63,
@@ -219,15 +216,15 @@ def _main(omega_0, omega_1, omega_2, a_0, a_1, a_2, a_dot_0, a_dot_1, a_dot_2):
         x63,
         x65,
         -x2*x60 - x59,
-        -x23*x61 + x9*(-omega_1*x66 + omega_2*x67 + x68 - x69),
-        -x23*x64 + x9*(-omega_1*x49*x5 + omega_2*x43*x5 - omega_2*x44 + 2*x1*x17*x32 - x70),
-        -x23*x71 + x9*(-omega_1*x5*x51 + omega_2*x50 + omega_2*x72 - x2*x40 + x73),
-        -x27*x61 + x9*(omega_0*x66 - omega_2*x31*x5 + omega_2*x35 - x0*x47 + x70),
-        -x27*x64 + x9*(omega_0*x49*x5 - omega_2*x74 - x68 - x75),
-        -x27*x71 + x9*(omega_0*x5*x51 - omega_2*x48 - omega_2*x76 + 2*x2*x25*x32 - x77),
-        -x28*x61 + x9*(-omega_0*x67 + omega_1*x31*x5 - omega_1*x35 + 2*x0*x22*x32 - x73),
-        -x28*x64 + x9*(-omega_0*x43*x5 + omega_1*x41 + omega_1*x74 - x1*x34 + x77),
-        -x28*x71 + x9*(-omega_0*x72 + omega_1*x76 + x69 + x75),
+        x22*(-omega_1*x66 + omega_2*x67 + x68 - x69) - x23*x61,
+        x22*(-omega_1*x46*x5 + omega_2*x40*x5 - omega_2*x41 + 2*x1*x20*x29 - x21) - x23*x64,
+        x22*(-omega_1*x48*x5 + omega_2*x47 + omega_2*x71 + x19 - x2*x37) - x23*x70,
+        x22*(omega_0*x66 - omega_2*x28*x5 + omega_2*x32 - x0*x44 + x21) - x24*x61,
+        x22*(omega_0*x46*x5 - omega_2*x72 - x68 - x73) - x24*x64,
+        x22*(omega_0*x48*x5 - omega_2*x45 - omega_2*x74 + 2*x13*x2*x29 - x14) - x24*x70,
+        x22*(-omega_0*x67 + omega_1*x28*x5 - omega_1*x32 + 2*x0*x18*x29 - x19) - x25*x61,
+        x22*(-omega_0*x40*x5 + omega_1*x38 + omega_1*x72 - x1*x31 + x14) - x25*x64,
+        x22*(-omega_0*x71 + omega_1*x74 + x69 + x73) - x25*x70,
         0,
         0,
         0,
@@ -238,15 +235,13 @@ def _main(omega_0, omega_1, omega_2, a_0, a_1, a_2, a_dot_0, a_dot_1, a_dot_2):
         0,
         0,
         0,
-        x9*(omega_2*x55 + x1*x26),
-        x9*(-omega_1*x57 - x18*x2),
-        x9*(-omega_2*x52 - x0*x26),
+        x22*(omega_2*x54 + x1*x52),
+        x22*(-omega_1*x56 - x2*x50),
+        x22*(-omega_2*x49 - x0*x52),
         0,
-        x9*(omega_0*x57 + x2*x24),
-        x9*(omega_1*x52 + x0*x18),
-        x9*(-omega_0*x55 - x1*x24),
-        0,
-        0,
+        x22*(omega_0*x56 + x2*x57),
+        x22*(omega_1*x49 + x0*x50),
+        x22*(-omega_0*x54 - x1*x57),
         0,
         0,
         0,
@@ -255,21 +250,23 @@ def _main(omega_0, omega_1, omega_2, a_0, a_1, a_2, a_dot_0, a_dot_1, a_dot_2):
         0,
         0,
         0,
-        x9*(x78 + x79),
+        0,
+        0,
+        x22*(x75 + x76),
         x62,
         x63,
         x62,
-        x9*(x79 + x80),
+        x22*(x76 + x77),
         x65,
         x63,
         x65,
-        x9*(x78 + x80),
+        x22*(x75 + x77),
     ), (
         x4,
     ), (
         x5,
-        x9,
-        x32,
+        x22,
+        x29,
         x60,
         x4,
     )
