@@ -169,9 +169,9 @@ LIE_KERNELS = [
              args=(XI,), outputs=(Out("J", (6, 6), ""),),
              build=_call("J", f"exponential_coordinates_left_jacobian{inv}"),
              singular="theta = 2 pi k, k != 0 (theta = norm of w)" if inv else "",
-             # the derivative of a 6 x 6 Jacobian (216 entries of degree 5) is seldom
-             # wanted and costs minutes of generation: none
-             jacobian=False)
+             # 216 entries of degree 5: sympy's derivative of the expanded formula took
+             # minutes to generate; forward mode over the optimised program takes seconds
+             jacobian_from="program")
       for inv in ("", "_inverse")],
     Kernel(name="exponential_coordinates_from_transform",
            summary="Log of SE(3): the exponential coordinates xi = [w; v] of T, norm of w in "
@@ -185,10 +185,10 @@ LIE_KERNELS = [
            build=lambda T: {"xi": formula(_LM + "exponential_coordinates_from_transform")(T)},
            branches=_SE3_BRANCHES,
            notes="T is not validated (its rotation block is read as a rotation).",
-           # its Jacobian kernel (6 x 16, five branches) compiles in 516 s to 5331
-           # operations (each near-pi branch ~1080, the small one 1503) where the whole
-           # generation takes about 2 min: none yet (open, issue 38 item 2)
-           branch_jacobian=False),
+           # its Jacobian (6 x 16, five branches) by sympy on the expanded formula compiled
+           # in 516 s to 5331 operations; by forward mode over each branch's optimised
+           # program (codegen.vjp.jacobian_program) in seconds
+           branch_jacobian=True, jacobian_from="program"),
     Kernel(name="euler_rodrigues_from_rotation",
            summary="The Euler-Rodrigues parameters eta = [r; r0] of Q, r0 >= 0.",
            formula="r0 = sqrt(1 + tr Q) / 2, r = vect(Q) / (2 r0); Shepperd's branches for "

@@ -12,8 +12,10 @@ branch keeps its own extension's derivative: the kernel's ambient finite differe
 with it inside every branch.
 
 On the main of before, ``kernels.jacobian`` had no such kernel (``KeyError``): these tests
-fail there. ``exponential_coordinates_from_transform`` has none yet (open: its 6 x 16
-Jacobian compiles in 516 s to 5331 operations).
+fail there. The log of SE(3), ``exponential_coordinates_from_transform``, has its 6 x 16
+Jacobian kernel by forward mode over each branch's optimised program (by sympy on the
+expanded formula it took 516 s to generate; main 0171638 had none): ``d Log(T Exp(t b)) =
+J_r(xi)^-1 b``, checked the same way.
 """
 
 from __future__ import annotations
@@ -164,7 +166,125 @@ def test_each_branch_is_differentiated_with_its_value(name):
 
 def test_the_branched_maps_have_their_jacobian_kernels():
     mp.mp.dps = 50
-    for name in NAMES:
+    for name in [*NAMES, "exponential_coordinates_from_transform"]:
         assert callable(K.jacobian(name)), name
-    with pytest.raises(ValueError, match="name"):
-        K.jacobian("exponential_coordinates_from_transform")   # open: none yet
+
+
+# ------------------------------------------------------------------------------------------
+# the log of SE(3): its Jacobian kernel by forward mode over each branch's optimised program
+# (Kernel.jacobian_from = "program"); old main had none (ValueError from K.jacobian)
+
+_XI = sp.Matrix(sp.symbols("x0:6", real=True))
+SE3 = "exponential_coordinates_from_transform"
+
+
+def _hat(b):
+    """The 4 x 4 of b = [w; v] in se(3): T Exp(t b) moves T by T hat(b) at t = 0."""
+    H = np.zeros((4, 4))
+    H[:3, :3], H[:3, 3] = _cpm(b[:3]), b[3:]
+    return H
+
+
+@cache
+def _se3_cases():
+    """``[(norm of w, T, J_r(xi)^-1, kappa)]`` at the acceptance norms: T of the exact w
+    (rounded) and p; xi = [w; J_l(w)^-1 p] and the reference ``J_r(xi)^-1 = J_l(-xi)^-1``
+    (the derivative of Log(T Exp(t b)) at t = 0, Barfoot Sec. 7.1.5) to 50 digits."""
+    jl_inv3 = sp.lambdify(list(_X), L.rotation_vector_left_jacobian_inverse(_X), "mpmath")
+    q = sp.lambdify(list(_XI), L.se3_q_block(_XI[:3, :], _XI[3:, :]), "mpmath")
+
+    def jr_inv(*x):       # the blocks of L.exponential_coordinates_left_jacobian_inverse(-xi)
+        A, Q = mp.matrix(jl_inv3(*(-c for c in x[:3]))), mp.matrix(q(*(-c for c in x)))
+        M = mp.zeros(6, 6)
+        B = -A * Q * A
+        for i in range(3):
+            for j in range(3):
+                M[i, j] = M[i + 3, j + 3] = A[i, j]
+                M[i + 3, j] = B[i, j]
+        return M
+    out = []
+    for x in _points(6):
+        w, _, T, _ = _log_case(x)
+        A = _mp(jl_inv3, w)
+        with mp.workdps(60):
+            v = [sum(A[i, j] * mp.mpf(float(x[3 + j])) for j in range(3)) for i in range(3)]
+        # kappa's point in floats; at w = 0 the point 1e-30 away where _mp takes the limit
+        xi = [float(c) for c in (w if w.any() else [1e-30, 2e-30, -1e-30])] + \
+            [float(c) for c in v]
+        ref = _mp(jr_inv, [mp.mpf(c) for c in w] + v)
+        out.append((float(np.linalg.norm(w)), T, np.array(ref, dtype=float),
+                    _kappa(jr_inv, xi, _mp(jr_inv, xi))))
+    return out
+
+
+def _se3_jacobian(backend, T):
+    if backend in ("c", "numpy"):
+        old = K.backend()
+        K.use_backend(backend)
+        try:
+            return np.asarray(K.jacobian(SE3)(T)[1]["xi"]["T"])
+        finally:
+            K.use_backend(old)
+    if backend == "torch":
+        torch = pytest.importorskip("torch", reason="needs the [torch] extra")
+        from rigidsym.kernels import torch as rk
+
+        return torch.autograd.functional.jacobian(getattr(rk, SE3), torch.tensor(T)).numpy()
+    jax = pytest.importorskip("jax", reason="needs the [jax] extra")
+    jax.config.update("jax_enable_x64", True)
+    from rigidsym.kernels import jax as rj
+
+    return np.asarray(jax.jacfwd(getattr(rj, SE3))(jax.numpy.asarray(T)))
+
+
+def _check_se3(backend):
+    for norm, T, ref, kappa in _se3_cases():
+        J = _se3_jacobian(backend, T)
+        assert J.shape == (6, 4, 4) and np.isfinite(J).all(), (backend, norm)
+        got = np.stack([np.tensordot(J, T @ _hat(b), axes=2) for b in np.eye(6)], axis=-1)
+        err = float(np.abs(got - ref).max())
+        assert err <= 8 * U * (kappa + 1) * float(np.abs(ref).max()), \
+            (backend, norm, err / U, kappa)
+
+
+@pytest.mark.parametrize("backend", [pytest.param("c", marks=pytest.mark.slow), "numpy"])
+def test_se3_log_jacobian_along_the_manifold(backend):
+    """d Log(T Exp(t b)) / dt = J_r(xi)^-1 b, within 8 u (kappa + 1) of 50 digits at |w| in
+    {0, 1e-12, 1e-8, 1e-4, 1e-2, 1, pi - 1e-6, pi - 1e-9}, every branch (small, main,
+    near pi)."""
+    _check_se3(backend)
+
+
+@pytest.mark.extra
+@pytest.mark.parametrize("backend", ["torch", "jax"])
+def test_se3_log_jacobian_along_the_manifold_arrays(backend):
+    """PyTorch and JAX differentiate the SE(3) log through its Jacobian kernel (a branched
+    kernel's derivative: the Jacobian kernel contracted)."""
+    _check_se3(backend)
+
+
+def test_se3_log_each_branch_is_differentiated_with_its_value():
+    """Ambient central differences of the value kernel (step 1e-6) in all 12 free entries of
+    T (R and p) against the Jacobian kernel, in the small branch (0.3 rad), the main one
+    (1.2) and near pi (2.9): the derivative of the function the kernel computes there; the
+    last row (constant on SE(3)) has a zero derivative."""
+    e, p = np.array([0.48, -0.6, 0.64]), np.array([0.3, -1.1, 0.7])
+    for th in (0.3, 1.2, 2.9):
+        T = np.eye(4)
+        T[:3, :3] = np.array(_mp(sp.lambdify(list(_X), L.rotation_from_rotation_vector(_X),
+                                             "mpmath"), th * e), dtype=float)
+        T[:3, 3] = p
+        val, d = K.jacobian(SE3)(T)
+        J = np.asarray(d["xi"]["T"])
+        np.testing.assert_allclose(np.asarray(val), K.exponential_coordinates_from_transform(T),
+                                   rtol=0, atol=8 * U)
+        assert not J[:, 3, :].any()
+        h, fd = 1e-6, np.zeros((6, 3, 4))
+        for i in range(3):
+            for j in range(4):
+                dT = np.zeros((4, 4))
+                dT[i, j] = h
+                fd[:, i, j] = (K.exponential_coordinates_from_transform(T + dT, check=False) -
+                               K.exponential_coordinates_from_transform(T - dT, check=False)) \
+                    / (2 * h)
+        assert np.abs(fd - J[:, :3, :]).max() <= 1e-7 * np.abs(J).max(), th

@@ -773,10 +773,11 @@ static const rigidsym_slot rigidsym_out_100[] = {
     {1, {6}, 6, 0},
 };
 static const rigidsym_slot rigidsym_in_101[] = {
-    {1, {6}, 6, 0},
+    {2, {4, 4}, 16, 3},
 };
 static const rigidsym_slot rigidsym_out_101[] = {
-    {2, {6, 6}, 36, 0},
+    {1, {6}, 6, 0},
+    {3, {6, 4, 4}, 96, 0},
 };
 static const rigidsym_slot rigidsym_in_102[] = {
     {1, {6}, 6, 0},
@@ -785,35 +786,24 @@ static const rigidsym_slot rigidsym_out_102[] = {
     {2, {6, 6}, 36, 0},
 };
 static const rigidsym_slot rigidsym_in_103[] = {
-    {2, {3, 3}, 9, 0},
-    {0, {0}, 1, 0},
-    {1, {3}, 3, 0},
-    {1, {3}, 3, 0},
+    {1, {6}, 6, 0},
 };
 static const rigidsym_slot rigidsym_out_103[] = {
-    {2, {3, 3}, 9, 0},
+    {2, {6, 6}, 36, 0},
 };
 static const rigidsym_slot rigidsym_in_104[] = {
-    {2, {3, 3}, 9, 0},
-    {0, {0}, 1, 0},
-    {1, {3}, 3, 0},
-    {1, {3}, 3, 0},
+    {1, {6}, 6, 0},
 };
 static const rigidsym_slot rigidsym_out_104[] = {
-    {2, {3, 3}, 9, 0},
-    {4, {3, 3, 3, 3}, 81, 0},
-    {2, {3, 3}, 9, 0},
-    {3, {3, 3, 3}, 27, 0},
-    {3, {3, 3, 3}, 27, 0},
+    {2, {6, 6}, 36, 0},
+    {3, {6, 6, 6}, 216, 0},
 };
 static const rigidsym_slot rigidsym_in_105[] = {
-    {2, {3, 3}, 9, 0},
-    {0, {0}, 1, 0},
-    {1, {3}, 3, 0},
-    {1, {3}, 3, 0},
+    {1, {6}, 6, 0},
 };
 static const rigidsym_slot rigidsym_out_105[] = {
     {2, {6, 6}, 36, 0},
+    {3, {6, 6, 6}, 216, 0},
 };
 static const rigidsym_slot rigidsym_in_106[] = {
     {2, {3, 3}, 9, 0},
@@ -822,113 +812,106 @@ static const rigidsym_slot rigidsym_in_106[] = {
     {1, {3}, 3, 0},
 };
 static const rigidsym_slot rigidsym_out_106[] = {
+    {2, {3, 3}, 9, 0},
+};
+static const rigidsym_slot rigidsym_in_107[] = {
+    {2, {3, 3}, 9, 0},
+    {0, {0}, 1, 0},
+    {1, {3}, 3, 0},
+    {1, {3}, 3, 0},
+};
+static const rigidsym_slot rigidsym_out_107[] = {
+    {2, {3, 3}, 9, 0},
+    {4, {3, 3, 3, 3}, 81, 0},
+    {2, {3, 3}, 9, 0},
+    {3, {3, 3, 3}, 27, 0},
+    {3, {3, 3, 3}, 27, 0},
+};
+static const rigidsym_slot rigidsym_in_108[] = {
+    {2, {3, 3}, 9, 0},
+    {0, {0}, 1, 0},
+    {1, {3}, 3, 0},
+    {1, {3}, 3, 0},
+};
+static const rigidsym_slot rigidsym_out_108[] = {
+    {2, {6, 6}, 36, 0},
+};
+static const rigidsym_slot rigidsym_in_109[] = {
+    {2, {3, 3}, 9, 0},
+    {0, {0}, 1, 0},
+    {1, {3}, 3, 0},
+    {1, {3}, 3, 0},
+};
+static const rigidsym_slot rigidsym_out_109[] = {
     {2, {6, 6}, 36, 0},
     {4, {6, 6, 3, 3}, 324, 0},
     {2, {6, 6}, 36, 0},
     {3, {6, 6, 3}, 108, 0},
     {3, {6, 6, 3}, 108, 0},
 };
-static const rigidsym_slot rigidsym_in_107[] = {
-    {1, {3}, 3, 0},
-    {1, {3}, 3, 0},
-    {1, {3}, 3, 0},
-};
-static const rigidsym_slot rigidsym_out_107[] = {
-    {1, {3}, 3, 0},
-    {0, {0}, 1, 0},
-    {1, {6}, 6, 0},
-};
-static const rigidsym_slot rigidsym_in_108[] = {
-    {1, {3}, 3, 0},
-    {1, {3}, 3, 0},
-    {1, {3}, 3, 0},
-};
-static const rigidsym_slot rigidsym_out_108[] = {
-    {1, {3}, 3, 0},
-    {0, {0}, 1, 0},
-    {1, {6}, 6, 0},
-    {2, {3, 3}, 9, 0},
-    {2, {3, 3}, 9, 0},
-    {2, {3, 3}, 9, 0},
-    {1, {3}, 3, 0},
-    {1, {3}, 3, 0},
-    {1, {3}, 3, 0},
-    {2, {6, 3}, 18, 0},
-    {2, {6, 3}, 18, 0},
-    {2, {6, 3}, 18, 0},
-};
-static const rigidsym_slot rigidsym_in_109[] = {
-    {1, {3}, 3, 0},
-    {1, {3}, 3, 0},
-    {1, {3}, 3, 0},
-};
-static const rigidsym_slot rigidsym_out_109[] = {
-    {1, {3}, 3, 0},
-    {0, {0}, 1, 0},
-};
 static const rigidsym_slot rigidsym_in_110[] = {
-    {2, {3, 3}, 9, 0},
-    {0, {0}, 1, 0},
+    {1, {3}, 3, 0},
     {1, {3}, 3, 0},
     {1, {3}, 3, 0},
 };
 static const rigidsym_slot rigidsym_out_110[] = {
+    {1, {3}, 3, 0},
     {0, {0}, 1, 0},
+    {1, {6}, 6, 0},
 };
 static const rigidsym_slot rigidsym_in_111[] = {
-    {2, {3, 3}, 9, 0},
-    {0, {0}, 1, 0},
+    {1, {3}, 3, 0},
     {1, {3}, 3, 0},
     {1, {3}, 3, 0},
 };
 static const rigidsym_slot rigidsym_out_111[] = {
+    {1, {3}, 3, 0},
     {0, {0}, 1, 0},
+    {1, {6}, 6, 0},
     {2, {3, 3}, 9, 0},
-    {0, {0}, 1, 0},
+    {2, {3, 3}, 9, 0},
+    {2, {3, 3}, 9, 0},
     {1, {3}, 3, 0},
     {1, {3}, 3, 0},
+    {1, {3}, 3, 0},
+    {2, {6, 3}, 18, 0},
+    {2, {6, 3}, 18, 0},
+    {2, {6, 3}, 18, 0},
 };
 static const rigidsym_slot rigidsym_in_112[] = {
-    {1, {3}, 3, 0},
-    {2, {3, 3}, 9, 2},
-    {1, {3}, 3, 0},
-    {1, {3}, 3, 0},
     {1, {3}, 3, 0},
     {1, {3}, 3, 0},
     {1, {3}, 3, 0},
 };
 static const rigidsym_slot rigidsym_out_112[] = {
     {1, {3}, 3, 0},
+    {0, {0}, 1, 0},
 };
 static const rigidsym_slot rigidsym_in_113[] = {
-    {1, {3}, 3, 0},
-    {2, {3, 3}, 9, 2},
-    {1, {3}, 3, 0},
-    {1, {3}, 3, 0},
-    {1, {3}, 3, 0},
+    {2, {3, 3}, 9, 0},
+    {0, {0}, 1, 0},
     {1, {3}, 3, 0},
     {1, {3}, 3, 0},
 };
 static const rigidsym_slot rigidsym_out_113[] = {
-    {1, {3}, 3, 0},
-    {2, {3, 3}, 9, 0},
-    {3, {3, 3, 3}, 27, 0},
-    {2, {3, 3}, 9, 0},
-    {2, {3, 3}, 9, 0},
-    {2, {3, 3}, 9, 0},
-    {2, {3, 3}, 9, 0},
-    {2, {3, 3}, 9, 0},
+    {0, {0}, 1, 0},
 };
 static const rigidsym_slot rigidsym_in_114[] = {
-    {2, {3, 3}, 9, 2},
-};
-static const rigidsym_slot rigidsym_out_114[] = {
-    {1, {3}, 3, 0},
-    {0, {0}, 1, 0},
-};
-static const rigidsym_slot rigidsym_in_115[] = {
     {2, {3, 3}, 9, 0},
     {0, {0}, 1, 0},
+    {1, {3}, 3, 0},
+    {1, {3}, 3, 0},
+};
+static const rigidsym_slot rigidsym_out_114[] = {
+    {0, {0}, 1, 0},
+    {2, {3, 3}, 9, 0},
+    {0, {0}, 1, 0},
+    {1, {3}, 3, 0},
+    {1, {3}, 3, 0},
+};
+static const rigidsym_slot rigidsym_in_115[] = {
+    {1, {3}, 3, 0},
+    {2, {3, 3}, 9, 2},
     {1, {3}, 3, 0},
     {1, {3}, 3, 0},
     {1, {3}, 3, 0},
@@ -936,34 +919,40 @@ static const rigidsym_slot rigidsym_in_115[] = {
     {1, {3}, 3, 0},
 };
 static const rigidsym_slot rigidsym_out_115[] = {
-    {1, {6}, 6, 0},
+    {1, {3}, 3, 0},
 };
 static const rigidsym_slot rigidsym_in_116[] = {
-    {2, {3, 3}, 9, 0},
-    {0, {0}, 1, 0},
+    {1, {3}, 3, 0},
+    {2, {3, 3}, 9, 2},
+    {1, {3}, 3, 0},
+    {1, {3}, 3, 0},
     {1, {3}, 3, 0},
     {1, {3}, 3, 0},
     {1, {3}, 3, 0},
 };
 static const rigidsym_slot rigidsym_out_116[] = {
-    {1, {6}, 6, 0},
+    {1, {3}, 3, 0},
+    {2, {3, 3}, 9, 0},
+    {3, {3, 3, 3}, 27, 0},
+    {2, {3, 3}, 9, 0},
+    {2, {3, 3}, 9, 0},
+    {2, {3, 3}, 9, 0},
+    {2, {3, 3}, 9, 0},
+    {2, {3, 3}, 9, 0},
 };
 static const rigidsym_slot rigidsym_in_117[] = {
+    {2, {3, 3}, 9, 2},
+};
+static const rigidsym_slot rigidsym_out_117[] = {
+    {1, {3}, 3, 0},
+    {0, {0}, 1, 0},
+};
+static const rigidsym_slot rigidsym_in_118[] = {
     {2, {3, 3}, 9, 0},
     {0, {0}, 1, 0},
     {1, {3}, 3, 0},
     {1, {3}, 3, 0},
     {1, {3}, 3, 0},
-};
-static const rigidsym_slot rigidsym_out_117[] = {
-    {1, {6}, 6, 0},
-    {3, {6, 3, 3}, 54, 0},
-    {1, {6}, 6, 0},
-    {2, {6, 3}, 18, 0},
-    {2, {6, 3}, 18, 0},
-    {2, {6, 3}, 18, 0},
-};
-static const rigidsym_slot rigidsym_in_118[] = {
     {1, {3}, 3, 0},
     {1, {3}, 3, 0},
 };
@@ -971,130 +960,143 @@ static const rigidsym_slot rigidsym_out_118[] = {
     {1, {6}, 6, 0},
 };
 static const rigidsym_slot rigidsym_in_119[] = {
+    {2, {3, 3}, 9, 0},
+    {0, {0}, 1, 0},
+    {1, {3}, 3, 0},
     {1, {3}, 3, 0},
     {1, {3}, 3, 0},
 };
 static const rigidsym_slot rigidsym_out_119[] = {
     {1, {6}, 6, 0},
-    {2, {6, 3}, 18, 0},
-    {2, {6, 3}, 18, 0},
 };
 static const rigidsym_slot rigidsym_in_120[] = {
-    {1, {6}, 6, 0},
+    {2, {3, 3}, 9, 0},
+    {0, {0}, 1, 0},
+    {1, {3}, 3, 0},
     {1, {3}, 3, 0},
     {1, {3}, 3, 0},
 };
 static const rigidsym_slot rigidsym_out_120[] = {
     {1, {6}, 6, 0},
+    {3, {6, 3, 3}, 54, 0},
+    {1, {6}, 6, 0},
+    {2, {6, 3}, 18, 0},
+    {2, {6, 3}, 18, 0},
+    {2, {6, 3}, 18, 0},
 };
 static const rigidsym_slot rigidsym_in_121[] = {
-    {1, {6}, 6, 0},
     {1, {3}, 3, 0},
     {1, {3}, 3, 0},
 };
 static const rigidsym_slot rigidsym_out_121[] = {
     {1, {6}, 6, 0},
-    {2, {6, 6}, 36, 0},
-    {2, {6, 3}, 18, 0},
-    {2, {6, 3}, 18, 0},
 };
 static const rigidsym_slot rigidsym_in_122[] = {
     {1, {3}, 3, 0},
     {1, {3}, 3, 0},
-    {1, {3}, 3, 0},
-    {1, {3}, 3, 0},
-    {1, {3}, 3, 0},
 };
 static const rigidsym_slot rigidsym_out_122[] = {
-    {1, {3}, 3, 0},
+    {1, {6}, 6, 0},
+    {2, {6, 3}, 18, 0},
+    {2, {6, 3}, 18, 0},
 };
 static const rigidsym_slot rigidsym_in_123[] = {
-    {1, {3}, 3, 0},
-    {1, {3}, 3, 0},
-    {1, {3}, 3, 0},
+    {1, {6}, 6, 0},
     {1, {3}, 3, 0},
     {1, {3}, 3, 0},
 };
 static const rigidsym_slot rigidsym_out_123[] = {
+    {1, {6}, 6, 0},
+};
+static const rigidsym_slot rigidsym_in_124[] = {
+    {1, {6}, 6, 0},
+    {1, {3}, 3, 0},
+    {1, {3}, 3, 0},
+};
+static const rigidsym_slot rigidsym_out_124[] = {
+    {1, {6}, 6, 0},
+    {2, {6, 6}, 36, 0},
+    {2, {6, 3}, 18, 0},
+    {2, {6, 3}, 18, 0},
+};
+static const rigidsym_slot rigidsym_in_125[] = {
+    {1, {3}, 3, 0},
+    {1, {3}, 3, 0},
+    {1, {3}, 3, 0},
+    {1, {3}, 3, 0},
+    {1, {3}, 3, 0},
+};
+static const rigidsym_slot rigidsym_out_125[] = {
+    {1, {3}, 3, 0},
+};
+static const rigidsym_slot rigidsym_in_126[] = {
+    {1, {3}, 3, 0},
+    {1, {3}, 3, 0},
+    {1, {3}, 3, 0},
+    {1, {3}, 3, 0},
+    {1, {3}, 3, 0},
+};
+static const rigidsym_slot rigidsym_out_126[] = {
     {1, {3}, 3, 0},
     {2, {3, 3}, 9, 0},
     {2, {3, 3}, 9, 0},
     {2, {3, 3}, 9, 0},
     {2, {3, 3}, 9, 0},
-    {2, {3, 3}, 9, 0},
-};
-static const rigidsym_slot rigidsym_in_124[] = {
-    {1, {4}, 4, 1},
-};
-static const rigidsym_slot rigidsym_out_124[] = {
-    {2, {3, 3}, 9, 0},
-};
-static const rigidsym_slot rigidsym_in_125[] = {
-    {1, {4}, 4, 1},
-};
-static const rigidsym_slot rigidsym_out_125[] = {
-    {2, {3, 3}, 9, 0},
-    {3, {3, 3, 4}, 36, 0},
-};
-static const rigidsym_slot rigidsym_in_126[] = {
-    {1, {3}, 3, 1},
-    {0, {0}, 1, 0},
-};
-static const rigidsym_slot rigidsym_out_126[] = {
     {2, {3, 3}, 9, 0},
 };
 static const rigidsym_slot rigidsym_in_127[] = {
-    {1, {3}, 3, 1},
-    {0, {0}, 1, 0},
+    {1, {4}, 4, 1},
 };
 static const rigidsym_slot rigidsym_out_127[] = {
     {2, {3, 3}, 9, 0},
-    {3, {3, 3, 3}, 27, 0},
-    {2, {3, 3}, 9, 0},
 };
 static const rigidsym_slot rigidsym_in_128[] = {
-    {1, {3}, 3, 0},
+    {1, {4}, 4, 1},
 };
 static const rigidsym_slot rigidsym_out_128[] = {
     {2, {3, 3}, 9, 0},
+    {3, {3, 3, 4}, 36, 0},
 };
 static const rigidsym_slot rigidsym_in_129[] = {
-    {1, {3}, 3, 0},
+    {1, {3}, 3, 1},
+    {0, {0}, 1, 0},
 };
 static const rigidsym_slot rigidsym_out_129[] = {
     {2, {3, 3}, 9, 0},
-    {3, {3, 3, 3}, 27, 0},
 };
 static const rigidsym_slot rigidsym_in_130[] = {
-    {2, {3, 3}, 9, 2},
+    {1, {3}, 3, 1},
+    {0, {0}, 1, 0},
 };
 static const rigidsym_slot rigidsym_out_130[] = {
-    {1, {3}, 3, 0},
+    {2, {3, 3}, 9, 0},
+    {3, {3, 3, 3}, 27, 0},
+    {2, {3, 3}, 9, 0},
 };
 static const rigidsym_slot rigidsym_in_131[] = {
-    {2, {3, 3}, 9, 2},
+    {1, {3}, 3, 0},
 };
 static const rigidsym_slot rigidsym_out_131[] = {
-    {1, {3}, 3, 0},
-    {3, {3, 3, 3}, 27, 0},
+    {2, {3, 3}, 9, 0},
 };
 static const rigidsym_slot rigidsym_in_132[] = {
     {1, {3}, 3, 0},
 };
 static const rigidsym_slot rigidsym_out_132[] = {
     {2, {3, 3}, 9, 0},
+    {3, {3, 3, 3}, 27, 0},
 };
 static const rigidsym_slot rigidsym_in_133[] = {
-    {1, {3}, 3, 0},
+    {2, {3, 3}, 9, 2},
 };
 static const rigidsym_slot rigidsym_out_133[] = {
-    {2, {3, 3}, 9, 0},
-};
-static const rigidsym_slot rigidsym_in_134[] = {
     {1, {3}, 3, 0},
 };
+static const rigidsym_slot rigidsym_in_134[] = {
+    {2, {3, 3}, 9, 2},
+};
 static const rigidsym_slot rigidsym_out_134[] = {
-    {2, {3, 3}, 9, 0},
+    {1, {3}, 3, 0},
     {3, {3, 3, 3}, 27, 0},
 };
 static const rigidsym_slot rigidsym_in_135[] = {
@@ -1102,7 +1104,6 @@ static const rigidsym_slot rigidsym_in_135[] = {
 };
 static const rigidsym_slot rigidsym_out_135[] = {
     {2, {3, 3}, 9, 0},
-    {3, {3, 3, 3}, 27, 0},
 };
 static const rigidsym_slot rigidsym_in_136[] = {
     {1, {3}, 3, 0},
@@ -1115,6 +1116,7 @@ static const rigidsym_slot rigidsym_in_137[] = {
 };
 static const rigidsym_slot rigidsym_out_137[] = {
     {2, {3, 3}, 9, 0},
+    {3, {3, 3, 3}, 27, 0},
 };
 static const rigidsym_slot rigidsym_in_138[] = {
     {1, {3}, 3, 0},
@@ -1128,78 +1130,73 @@ static const rigidsym_slot rigidsym_in_139[] = {
 };
 static const rigidsym_slot rigidsym_out_139[] = {
     {2, {3, 3}, 9, 0},
-    {3, {3, 3, 3}, 27, 0},
 };
 static const rigidsym_slot rigidsym_in_140[] = {
-    {1, {3}, 3, 1},
-    {0, {0}, 1, 0},
-    {1, {3}, 3, 0},
     {1, {3}, 3, 0},
 };
 static const rigidsym_slot rigidsym_out_140[] = {
-    {1, {3}, 3, 0},
+    {2, {3, 3}, 9, 0},
 };
 static const rigidsym_slot rigidsym_in_141[] = {
+    {1, {3}, 3, 0},
+};
+static const rigidsym_slot rigidsym_out_141[] = {
+    {2, {3, 3}, 9, 0},
+    {3, {3, 3, 3}, 27, 0},
+};
+static const rigidsym_slot rigidsym_in_142[] = {
+    {1, {3}, 3, 0},
+};
+static const rigidsym_slot rigidsym_out_142[] = {
+    {2, {3, 3}, 9, 0},
+    {3, {3, 3, 3}, 27, 0},
+};
+static const rigidsym_slot rigidsym_in_143[] = {
     {1, {3}, 3, 1},
     {0, {0}, 1, 0},
     {1, {3}, 3, 0},
     {1, {3}, 3, 0},
 };
-static const rigidsym_slot rigidsym_out_141[] = {
+static const rigidsym_slot rigidsym_out_143[] = {
+    {1, {3}, 3, 0},
+};
+static const rigidsym_slot rigidsym_in_144[] = {
+    {1, {3}, 3, 1},
+    {0, {0}, 1, 0},
+    {1, {3}, 3, 0},
+    {1, {3}, 3, 0},
+};
+static const rigidsym_slot rigidsym_out_144[] = {
     {1, {3}, 3, 0},
     {2, {3, 3}, 9, 0},
     {1, {3}, 3, 0},
     {2, {3, 3}, 9, 0},
     {2, {3, 3}, 9, 0},
 };
-static const rigidsym_slot rigidsym_in_142[] = {
+static const rigidsym_slot rigidsym_in_145[] = {
     {2, {3, 3}, 9, 2},
     {1, {3}, 3, 0},
     {1, {3}, 3, 0},
 };
-static const rigidsym_slot rigidsym_out_142[] = {
-    {1, {3}, 3, 0},
-    {0, {0}, 1, 0},
-    {1, {3}, 3, 0},
-    {0, {0}, 1, 0},
-    {1, {6}, 6, 0},
-};
-static const rigidsym_slot rigidsym_in_143[] = {
-    {1, {6}, 6, 0},
-};
-static const rigidsym_slot rigidsym_out_143[] = {
-    {2, {4, 4}, 16, 0},
-};
-static const rigidsym_slot rigidsym_in_144[] = {
-    {1, {6}, 6, 0},
-};
-static const rigidsym_slot rigidsym_out_144[] = {
-    {2, {4, 4}, 16, 0},
-    {3, {4, 4, 6}, 96, 0},
-};
-static const rigidsym_slot rigidsym_in_145[] = {
-    {1, {6}, 6, 0},
-    {1, {3}, 3, 0},
-    {1, {3}, 3, 0},
-};
 static const rigidsym_slot rigidsym_out_145[] = {
+    {1, {3}, 3, 0},
+    {0, {0}, 1, 0},
+    {1, {3}, 3, 0},
+    {0, {0}, 1, 0},
     {1, {6}, 6, 0},
 };
 static const rigidsym_slot rigidsym_in_146[] = {
-    {1, {3}, 3, 0},
-    {1, {3}, 3, 0},
+    {1, {6}, 6, 0},
 };
 static const rigidsym_slot rigidsym_out_146[] = {
-    {2, {6, 6}, 36, 0},
+    {2, {4, 4}, 16, 0},
 };
 static const rigidsym_slot rigidsym_in_147[] = {
-    {1, {3}, 3, 0},
-    {1, {3}, 3, 0},
+    {1, {6}, 6, 0},
 };
 static const rigidsym_slot rigidsym_out_147[] = {
-    {2, {6, 6}, 36, 0},
-    {3, {6, 6, 3}, 108, 0},
-    {3, {6, 6, 3}, 108, 0},
+    {2, {4, 4}, 16, 0},
+    {3, {4, 4, 6}, 96, 0},
 };
 static const rigidsym_slot rigidsym_in_148[] = {
     {1, {6}, 6, 0},
@@ -1208,24 +1205,48 @@ static const rigidsym_slot rigidsym_in_148[] = {
 };
 static const rigidsym_slot rigidsym_out_148[] = {
     {1, {6}, 6, 0},
+};
+static const rigidsym_slot rigidsym_in_149[] = {
+    {1, {3}, 3, 0},
+    {1, {3}, 3, 0},
+};
+static const rigidsym_slot rigidsym_out_149[] = {
+    {2, {6, 6}, 36, 0},
+};
+static const rigidsym_slot rigidsym_in_150[] = {
+    {1, {3}, 3, 0},
+    {1, {3}, 3, 0},
+};
+static const rigidsym_slot rigidsym_out_150[] = {
+    {2, {6, 6}, 36, 0},
+    {3, {6, 6, 3}, 108, 0},
+    {3, {6, 6, 3}, 108, 0},
+};
+static const rigidsym_slot rigidsym_in_151[] = {
+    {1, {6}, 6, 0},
+    {1, {3}, 3, 0},
+    {1, {3}, 3, 0},
+};
+static const rigidsym_slot rigidsym_out_151[] = {
+    {1, {6}, 6, 0},
     {2, {6, 6}, 36, 0},
     {2, {6, 3}, 18, 0},
     {2, {6, 3}, 18, 0},
 };
-static const rigidsym_slot rigidsym_in_149[] = {
+static const rigidsym_slot rigidsym_in_152[] = {
     {1, {6}, 6, 0},
     {1, {3}, 3, 0},
 };
-static const rigidsym_slot rigidsym_out_149[] = {
+static const rigidsym_slot rigidsym_out_152[] = {
     {1, {3}, 3, 0},
     {0, {0}, 1, 0},
     {1, {6}, 6, 0},
 };
-static const rigidsym_slot rigidsym_in_150[] = {
+static const rigidsym_slot rigidsym_in_153[] = {
     {1, {6}, 6, 0},
     {1, {3}, 3, 0},
 };
-static const rigidsym_slot rigidsym_out_150[] = {
+static const rigidsym_slot rigidsym_out_153[] = {
     {1, {3}, 3, 0},
     {0, {0}, 1, 0},
     {1, {6}, 6, 0},
@@ -1236,36 +1257,36 @@ static const rigidsym_slot rigidsym_out_150[] = {
     {2, {6, 6}, 36, 0},
     {2, {6, 3}, 18, 0},
 };
-static const rigidsym_slot rigidsym_in_151[] = {
-    {1, {6}, 6, 0},
-    {1, {3}, 3, 0},
-    {1, {3}, 3, 0},
-};
-static const rigidsym_slot rigidsym_out_151[] = {
-    {1, {6}, 6, 0},
-};
-static const rigidsym_slot rigidsym_in_152[] = {
-    {1, {3}, 3, 0},
-    {1, {3}, 3, 0},
-};
-static const rigidsym_slot rigidsym_out_152[] = {
-    {2, {6, 6}, 36, 0},
-};
-static const rigidsym_slot rigidsym_in_153[] = {
-    {1, {3}, 3, 0},
-    {1, {3}, 3, 0},
-};
-static const rigidsym_slot rigidsym_out_153[] = {
-    {2, {6, 6}, 36, 0},
-    {3, {6, 6, 3}, 108, 0},
-    {3, {6, 6, 3}, 108, 0},
-};
 static const rigidsym_slot rigidsym_in_154[] = {
     {1, {6}, 6, 0},
     {1, {3}, 3, 0},
     {1, {3}, 3, 0},
 };
 static const rigidsym_slot rigidsym_out_154[] = {
+    {1, {6}, 6, 0},
+};
+static const rigidsym_slot rigidsym_in_155[] = {
+    {1, {3}, 3, 0},
+    {1, {3}, 3, 0},
+};
+static const rigidsym_slot rigidsym_out_155[] = {
+    {2, {6, 6}, 36, 0},
+};
+static const rigidsym_slot rigidsym_in_156[] = {
+    {1, {3}, 3, 0},
+    {1, {3}, 3, 0},
+};
+static const rigidsym_slot rigidsym_out_156[] = {
+    {2, {6, 6}, 36, 0},
+    {3, {6, 6, 3}, 108, 0},
+    {3, {6, 6, 3}, 108, 0},
+};
+static const rigidsym_slot rigidsym_in_157[] = {
+    {1, {6}, 6, 0},
+    {1, {3}, 3, 0},
+    {1, {3}, 3, 0},
+};
+static const rigidsym_slot rigidsym_out_157[] = {
     {1, {6}, 6, 0},
     {2, {6, 6}, 36, 0},
     {2, {6, 3}, 18, 0},
@@ -1374,60 +1395,63 @@ static const rigidsym_entry rigidsym_entries[RIGIDSYM_NKERNELS] = {
     {2, 1, rigidsym_in_98, rigidsym_out_98},
     {2, 3, rigidsym_in_99, rigidsym_out_99},
     {1, 1, rigidsym_in_100, rigidsym_out_100},
-    {1, 1, rigidsym_in_101, rigidsym_out_101},
+    {1, 2, rigidsym_in_101, rigidsym_out_101},
     {1, 1, rigidsym_in_102, rigidsym_out_102},
-    {4, 1, rigidsym_in_103, rigidsym_out_103},
-    {4, 5, rigidsym_in_104, rigidsym_out_104},
-    {4, 1, rigidsym_in_105, rigidsym_out_105},
-    {4, 5, rigidsym_in_106, rigidsym_out_106},
-    {3, 3, rigidsym_in_107, rigidsym_out_107},
-    {3, 12, rigidsym_in_108, rigidsym_out_108},
-    {3, 2, rigidsym_in_109, rigidsym_out_109},
-    {4, 1, rigidsym_in_110, rigidsym_out_110},
-    {4, 5, rigidsym_in_111, rigidsym_out_111},
-    {7, 1, rigidsym_in_112, rigidsym_out_112},
-    {7, 8, rigidsym_in_113, rigidsym_out_113},
-    {1, 2, rigidsym_in_114, rigidsym_out_114},
+    {1, 1, rigidsym_in_103, rigidsym_out_103},
+    {1, 2, rigidsym_in_104, rigidsym_out_104},
+    {1, 2, rigidsym_in_105, rigidsym_out_105},
+    {4, 1, rigidsym_in_106, rigidsym_out_106},
+    {4, 5, rigidsym_in_107, rigidsym_out_107},
+    {4, 1, rigidsym_in_108, rigidsym_out_108},
+    {4, 5, rigidsym_in_109, rigidsym_out_109},
+    {3, 3, rigidsym_in_110, rigidsym_out_110},
+    {3, 12, rigidsym_in_111, rigidsym_out_111},
+    {3, 2, rigidsym_in_112, rigidsym_out_112},
+    {4, 1, rigidsym_in_113, rigidsym_out_113},
+    {4, 5, rigidsym_in_114, rigidsym_out_114},
     {7, 1, rigidsym_in_115, rigidsym_out_115},
-    {5, 1, rigidsym_in_116, rigidsym_out_116},
-    {5, 6, rigidsym_in_117, rigidsym_out_117},
-    {2, 1, rigidsym_in_118, rigidsym_out_118},
-    {2, 3, rigidsym_in_119, rigidsym_out_119},
-    {3, 1, rigidsym_in_120, rigidsym_out_120},
-    {3, 4, rigidsym_in_121, rigidsym_out_121},
-    {5, 1, rigidsym_in_122, rigidsym_out_122},
-    {5, 6, rigidsym_in_123, rigidsym_out_123},
-    {1, 1, rigidsym_in_124, rigidsym_out_124},
-    {1, 2, rigidsym_in_125, rigidsym_out_125},
-    {2, 1, rigidsym_in_126, rigidsym_out_126},
-    {2, 3, rigidsym_in_127, rigidsym_out_127},
-    {1, 1, rigidsym_in_128, rigidsym_out_128},
-    {1, 2, rigidsym_in_129, rigidsym_out_129},
-    {1, 1, rigidsym_in_130, rigidsym_out_130},
-    {1, 2, rigidsym_in_131, rigidsym_out_131},
-    {1, 1, rigidsym_in_132, rigidsym_out_132},
+    {7, 8, rigidsym_in_116, rigidsym_out_116},
+    {1, 2, rigidsym_in_117, rigidsym_out_117},
+    {7, 1, rigidsym_in_118, rigidsym_out_118},
+    {5, 1, rigidsym_in_119, rigidsym_out_119},
+    {5, 6, rigidsym_in_120, rigidsym_out_120},
+    {2, 1, rigidsym_in_121, rigidsym_out_121},
+    {2, 3, rigidsym_in_122, rigidsym_out_122},
+    {3, 1, rigidsym_in_123, rigidsym_out_123},
+    {3, 4, rigidsym_in_124, rigidsym_out_124},
+    {5, 1, rigidsym_in_125, rigidsym_out_125},
+    {5, 6, rigidsym_in_126, rigidsym_out_126},
+    {1, 1, rigidsym_in_127, rigidsym_out_127},
+    {1, 2, rigidsym_in_128, rigidsym_out_128},
+    {2, 1, rigidsym_in_129, rigidsym_out_129},
+    {2, 3, rigidsym_in_130, rigidsym_out_130},
+    {1, 1, rigidsym_in_131, rigidsym_out_131},
+    {1, 2, rigidsym_in_132, rigidsym_out_132},
     {1, 1, rigidsym_in_133, rigidsym_out_133},
     {1, 2, rigidsym_in_134, rigidsym_out_134},
-    {1, 2, rigidsym_in_135, rigidsym_out_135},
+    {1, 1, rigidsym_in_135, rigidsym_out_135},
     {1, 1, rigidsym_in_136, rigidsym_out_136},
-    {1, 1, rigidsym_in_137, rigidsym_out_137},
+    {1, 2, rigidsym_in_137, rigidsym_out_137},
     {1, 2, rigidsym_in_138, rigidsym_out_138},
-    {1, 2, rigidsym_in_139, rigidsym_out_139},
-    {4, 1, rigidsym_in_140, rigidsym_out_140},
-    {4, 5, rigidsym_in_141, rigidsym_out_141},
-    {3, 5, rigidsym_in_142, rigidsym_out_142},
-    {1, 1, rigidsym_in_143, rigidsym_out_143},
-    {1, 2, rigidsym_in_144, rigidsym_out_144},
-    {3, 1, rigidsym_in_145, rigidsym_out_145},
-    {2, 1, rigidsym_in_146, rigidsym_out_146},
-    {2, 3, rigidsym_in_147, rigidsym_out_147},
-    {3, 4, rigidsym_in_148, rigidsym_out_148},
-    {2, 3, rigidsym_in_149, rigidsym_out_149},
-    {2, 9, rigidsym_in_150, rigidsym_out_150},
-    {3, 1, rigidsym_in_151, rigidsym_out_151},
-    {2, 1, rigidsym_in_152, rigidsym_out_152},
-    {2, 3, rigidsym_in_153, rigidsym_out_153},
-    {3, 4, rigidsym_in_154, rigidsym_out_154},
+    {1, 1, rigidsym_in_139, rigidsym_out_139},
+    {1, 1, rigidsym_in_140, rigidsym_out_140},
+    {1, 2, rigidsym_in_141, rigidsym_out_141},
+    {1, 2, rigidsym_in_142, rigidsym_out_142},
+    {4, 1, rigidsym_in_143, rigidsym_out_143},
+    {4, 5, rigidsym_in_144, rigidsym_out_144},
+    {3, 5, rigidsym_in_145, rigidsym_out_145},
+    {1, 1, rigidsym_in_146, rigidsym_out_146},
+    {1, 2, rigidsym_in_147, rigidsym_out_147},
+    {3, 1, rigidsym_in_148, rigidsym_out_148},
+    {2, 1, rigidsym_in_149, rigidsym_out_149},
+    {2, 3, rigidsym_in_150, rigidsym_out_150},
+    {3, 4, rigidsym_in_151, rigidsym_out_151},
+    {2, 3, rigidsym_in_152, rigidsym_out_152},
+    {2, 9, rigidsym_in_153, rigidsym_out_153},
+    {3, 1, rigidsym_in_154, rigidsym_out_154},
+    {2, 1, rigidsym_in_155, rigidsym_out_155},
+    {2, 3, rigidsym_in_156, rigidsym_out_156},
+    {3, 4, rigidsym_in_157, rigidsym_out_157},
 };
 
 /* Set by _bind(): the Python path, the thread count for threads=None, MIN_PARALLEL, and the
@@ -2978,6 +3002,24 @@ static PyObject *rigidsym_entry_154(PyObject *self, PyObject *const *args,
     (void)self;
     return rigidsym_fast(154, args, nargs, kwnames);
 }
+static PyObject *rigidsym_entry_155(PyObject *self, PyObject *const *args,
+                                     Py_ssize_t nargs, PyObject *kwnames)
+{
+    (void)self;
+    return rigidsym_fast(155, args, nargs, kwnames);
+}
+static PyObject *rigidsym_entry_156(PyObject *self, PyObject *const *args,
+                                     Py_ssize_t nargs, PyObject *kwnames)
+{
+    (void)self;
+    return rigidsym_fast(156, args, nargs, kwnames);
+}
+static PyObject *rigidsym_entry_157(PyObject *self, PyObject *const *args,
+                                     Py_ssize_t nargs, PyObject *kwnames)
+{
+    (void)self;
+    return rigidsym_fast(157, args, nargs, kwnames);
+}
 
 static PyObject *rigidsym_vc_0(PyObject *f, PyObject *const *args, size_t nargsf,
                                     PyObject *kwnames)
@@ -3754,6 +3796,21 @@ static PyObject *rigidsym_vc_154(PyObject *f, PyObject *const *args, size_t narg
 {
     return rigidsym_vcall(154, f, args, nargsf, kwnames);
 }
+static PyObject *rigidsym_vc_155(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(155, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_156(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(156, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_157(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(157, f, args, nargsf, kwnames);
+}
 
 static const vectorcallfunc rigidsym_vcs[RIGIDSYM_NKERNELS] = {
     rigidsym_vc_0,
@@ -3911,6 +3968,9 @@ static const vectorcallfunc rigidsym_vcs[RIGIDSYM_NKERNELS] = {
     rigidsym_vc_152,
     rigidsym_vc_153,
     rigidsym_vc_154,
+    rigidsym_vc_155,
+    rigidsym_vc_156,
+    rigidsym_vc_157,
 };
 
 static void rigidsym_set_vectorcall(PyObject *f, vectorcallfunc vc)
@@ -4176,113 +4236,119 @@ static PyMethodDef rigidsym_entry_defs[RIGIDSYM_NKERNELS] = {
      METH_FASTCALL | METH_KEYWORDS, "euler_rodrigues_product_with_jacobians(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel euler_rodrigues_product_with_jacobians (rigidsym.kernels)"},
     {"exponential_coordinates_from_transform", (PyCFunction)(void (*)(void))rigidsym_entry_100,
      METH_FASTCALL | METH_KEYWORDS, "exponential_coordinates_from_transform(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel exponential_coordinates_from_transform (rigidsym.kernels)"},
-    {"exponential_coordinates_left_jacobian", (PyCFunction)(void (*)(void))rigidsym_entry_101,
+    {"exponential_coordinates_from_transform_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_101,
+     METH_FASTCALL | METH_KEYWORDS, "exponential_coordinates_from_transform_with_jacobians(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel exponential_coordinates_from_transform_with_jacobians (rigidsym.kernels)"},
+    {"exponential_coordinates_left_jacobian", (PyCFunction)(void (*)(void))rigidsym_entry_102,
      METH_FASTCALL | METH_KEYWORDS, "exponential_coordinates_left_jacobian(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel exponential_coordinates_left_jacobian (rigidsym.kernels)"},
-    {"exponential_coordinates_left_jacobian_inverse", (PyCFunction)(void (*)(void))rigidsym_entry_102,
+    {"exponential_coordinates_left_jacobian_inverse", (PyCFunction)(void (*)(void))rigidsym_entry_103,
      METH_FASTCALL | METH_KEYWORDS, "exponential_coordinates_left_jacobian_inverse(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel exponential_coordinates_left_jacobian_inverse (rigidsym.kernels)"},
-    {"inertia_at_point", (PyCFunction)(void (*)(void))rigidsym_entry_103,
+    {"exponential_coordinates_left_jacobian_inverse_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_104,
+     METH_FASTCALL | METH_KEYWORDS, "exponential_coordinates_left_jacobian_inverse_with_jacobians(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel exponential_coordinates_left_jacobian_inverse_with_jacobians (rigidsym.kernels)"},
+    {"exponential_coordinates_left_jacobian_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_105,
+     METH_FASTCALL | METH_KEYWORDS, "exponential_coordinates_left_jacobian_with_jacobians(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel exponential_coordinates_left_jacobian_with_jacobians (rigidsym.kernels)"},
+    {"inertia_at_point", (PyCFunction)(void (*)(void))rigidsym_entry_106,
      METH_FASTCALL | METH_KEYWORDS, "inertia_at_point(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel inertia_at_point (rigidsym.kernels)"},
-    {"inertia_at_point_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_104,
+    {"inertia_at_point_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_107,
      METH_FASTCALL | METH_KEYWORDS, "inertia_at_point_with_jacobians(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel inertia_at_point_with_jacobians (rigidsym.kernels)"},
-    {"inertia_dyad_at_point", (PyCFunction)(void (*)(void))rigidsym_entry_105,
+    {"inertia_dyad_at_point", (PyCFunction)(void (*)(void))rigidsym_entry_108,
      METH_FASTCALL | METH_KEYWORDS, "inertia_dyad_at_point(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel inertia_dyad_at_point (rigidsym.kernels)"},
-    {"inertia_dyad_at_point_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_106,
+    {"inertia_dyad_at_point_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_109,
      METH_FASTCALL | METH_KEYWORDS, "inertia_dyad_at_point_with_jacobians(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel inertia_dyad_at_point_with_jacobians (rigidsym.kernels)"},
-    {"instant_screw_axis", (PyCFunction)(void (*)(void))rigidsym_entry_107,
+    {"instant_screw_axis", (PyCFunction)(void (*)(void))rigidsym_entry_110,
      METH_FASTCALL | METH_KEYWORDS, "instant_screw_axis(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel instant_screw_axis (rigidsym.kernels)"},
-    {"instant_screw_axis_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_108,
+    {"instant_screw_axis_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_111,
      METH_FASTCALL | METH_KEYWORDS, "instant_screw_axis_with_jacobians(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel instant_screw_axis_with_jacobians (rigidsym.kernels)"},
-    {"instant_screw_point_pitch", (PyCFunction)(void (*)(void))rigidsym_entry_109,
+    {"instant_screw_point_pitch", (PyCFunction)(void (*)(void))rigidsym_entry_112,
      METH_FASTCALL | METH_KEYWORDS, "instant_screw_point_pitch(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel instant_screw_point_pitch (rigidsym.kernels)"},
-    {"kinetic_energy", (PyCFunction)(void (*)(void))rigidsym_entry_110,
+    {"kinetic_energy", (PyCFunction)(void (*)(void))rigidsym_entry_113,
      METH_FASTCALL | METH_KEYWORDS, "kinetic_energy(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel kinetic_energy (rigidsym.kernels)"},
-    {"kinetic_energy_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_111,
+    {"kinetic_energy_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_114,
      METH_FASTCALL | METH_KEYWORDS, "kinetic_energy_with_jacobians(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel kinetic_energy_with_jacobians (rigidsym.kernels)"},
-    {"moving_frame_acceleration", (PyCFunction)(void (*)(void))rigidsym_entry_112,
+    {"moving_frame_acceleration", (PyCFunction)(void (*)(void))rigidsym_entry_115,
      METH_FASTCALL | METH_KEYWORDS, "moving_frame_acceleration(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel moving_frame_acceleration (rigidsym.kernels)"},
-    {"moving_frame_acceleration_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_113,
+    {"moving_frame_acceleration_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_116,
      METH_FASTCALL | METH_KEYWORDS, "moving_frame_acceleration_with_jacobians(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel moving_frame_acceleration_with_jacobians (rigidsym.kernels)"},
-    {"natural_invariants_from_rotation", (PyCFunction)(void (*)(void))rigidsym_entry_114,
+    {"natural_invariants_from_rotation", (PyCFunction)(void (*)(void))rigidsym_entry_117,
      METH_FASTCALL | METH_KEYWORDS, "natural_invariants_from_rotation(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel natural_invariants_from_rotation (rigidsym.kernels)"},
-    {"newton_euler_residual", (PyCFunction)(void (*)(void))rigidsym_entry_115,
+    {"newton_euler_residual", (PyCFunction)(void (*)(void))rigidsym_entry_118,
      METH_FASTCALL | METH_KEYWORDS, "newton_euler_residual(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel newton_euler_residual (rigidsym.kernels)"},
-    {"newton_euler_wrench", (PyCFunction)(void (*)(void))rigidsym_entry_116,
+    {"newton_euler_wrench", (PyCFunction)(void (*)(void))rigidsym_entry_119,
      METH_FASTCALL | METH_KEYWORDS, "newton_euler_wrench(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel newton_euler_wrench (rigidsym.kernels)"},
-    {"newton_euler_wrench_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_117,
+    {"newton_euler_wrench_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_120,
      METH_FASTCALL | METH_KEYWORDS, "newton_euler_wrench_with_jacobians(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel newton_euler_wrench_with_jacobians (rigidsym.kernels)"},
-    {"plucker_from_points", (PyCFunction)(void (*)(void))rigidsym_entry_118,
+    {"plucker_from_points", (PyCFunction)(void (*)(void))rigidsym_entry_121,
      METH_FASTCALL | METH_KEYWORDS, "plucker_from_points(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel plucker_from_points (rigidsym.kernels)"},
-    {"plucker_from_points_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_119,
+    {"plucker_from_points_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_122,
      METH_FASTCALL | METH_KEYWORDS, "plucker_from_points_with_jacobians(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel plucker_from_points_with_jacobians (rigidsym.kernels)"},
-    {"plucker_transfer", (PyCFunction)(void (*)(void))rigidsym_entry_120,
+    {"plucker_transfer", (PyCFunction)(void (*)(void))rigidsym_entry_123,
      METH_FASTCALL | METH_KEYWORDS, "plucker_transfer(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel plucker_transfer (rigidsym.kernels)"},
-    {"plucker_transfer_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_121,
+    {"plucker_transfer_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_124,
      METH_FASTCALL | METH_KEYWORDS, "plucker_transfer_with_jacobians(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel plucker_transfer_with_jacobians (rigidsym.kernels)"},
-    {"point_acceleration", (PyCFunction)(void (*)(void))rigidsym_entry_122,
+    {"point_acceleration", (PyCFunction)(void (*)(void))rigidsym_entry_125,
      METH_FASTCALL | METH_KEYWORDS, "point_acceleration(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel point_acceleration (rigidsym.kernels)"},
-    {"point_acceleration_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_123,
+    {"point_acceleration_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_126,
      METH_FASTCALL | METH_KEYWORDS, "point_acceleration_with_jacobians(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel point_acceleration_with_jacobians (rigidsym.kernels)"},
-    {"rotation_from_euler_rodrigues", (PyCFunction)(void (*)(void))rigidsym_entry_124,
+    {"rotation_from_euler_rodrigues", (PyCFunction)(void (*)(void))rigidsym_entry_127,
      METH_FASTCALL | METH_KEYWORDS, "rotation_from_euler_rodrigues(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel rotation_from_euler_rodrigues (rigidsym.kernels)"},
-    {"rotation_from_euler_rodrigues_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_125,
+    {"rotation_from_euler_rodrigues_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_128,
      METH_FASTCALL | METH_KEYWORDS, "rotation_from_euler_rodrigues_with_jacobians(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel rotation_from_euler_rodrigues_with_jacobians (rigidsym.kernels)"},
-    {"rotation_from_natural_invariants", (PyCFunction)(void (*)(void))rigidsym_entry_126,
+    {"rotation_from_natural_invariants", (PyCFunction)(void (*)(void))rigidsym_entry_129,
      METH_FASTCALL | METH_KEYWORDS, "rotation_from_natural_invariants(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel rotation_from_natural_invariants (rigidsym.kernels)"},
-    {"rotation_from_natural_invariants_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_127,
+    {"rotation_from_natural_invariants_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_130,
      METH_FASTCALL | METH_KEYWORDS, "rotation_from_natural_invariants_with_jacobians(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel rotation_from_natural_invariants_with_jacobians (rigidsym.kernels)"},
-    {"rotation_from_rotation_vector", (PyCFunction)(void (*)(void))rigidsym_entry_128,
+    {"rotation_from_rotation_vector", (PyCFunction)(void (*)(void))rigidsym_entry_131,
      METH_FASTCALL | METH_KEYWORDS, "rotation_from_rotation_vector(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel rotation_from_rotation_vector (rigidsym.kernels)"},
-    {"rotation_from_rotation_vector_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_129,
+    {"rotation_from_rotation_vector_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_132,
      METH_FASTCALL | METH_KEYWORDS, "rotation_from_rotation_vector_with_jacobians(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel rotation_from_rotation_vector_with_jacobians (rigidsym.kernels)"},
-    {"rotation_vector_from_rotation", (PyCFunction)(void (*)(void))rigidsym_entry_130,
+    {"rotation_vector_from_rotation", (PyCFunction)(void (*)(void))rigidsym_entry_133,
      METH_FASTCALL | METH_KEYWORDS, "rotation_vector_from_rotation(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel rotation_vector_from_rotation (rigidsym.kernels)"},
-    {"rotation_vector_from_rotation_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_131,
+    {"rotation_vector_from_rotation_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_134,
      METH_FASTCALL | METH_KEYWORDS, "rotation_vector_from_rotation_with_jacobians(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel rotation_vector_from_rotation_with_jacobians (rigidsym.kernels)"},
-    {"rotation_vector_left_jacobian", (PyCFunction)(void (*)(void))rigidsym_entry_132,
+    {"rotation_vector_left_jacobian", (PyCFunction)(void (*)(void))rigidsym_entry_135,
      METH_FASTCALL | METH_KEYWORDS, "rotation_vector_left_jacobian(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel rotation_vector_left_jacobian (rigidsym.kernels)"},
-    {"rotation_vector_left_jacobian_inverse", (PyCFunction)(void (*)(void))rigidsym_entry_133,
+    {"rotation_vector_left_jacobian_inverse", (PyCFunction)(void (*)(void))rigidsym_entry_136,
      METH_FASTCALL | METH_KEYWORDS, "rotation_vector_left_jacobian_inverse(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel rotation_vector_left_jacobian_inverse (rigidsym.kernels)"},
-    {"rotation_vector_left_jacobian_inverse_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_134,
+    {"rotation_vector_left_jacobian_inverse_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_137,
      METH_FASTCALL | METH_KEYWORDS, "rotation_vector_left_jacobian_inverse_with_jacobians(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel rotation_vector_left_jacobian_inverse_with_jacobians (rigidsym.kernels)"},
-    {"rotation_vector_left_jacobian_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_135,
+    {"rotation_vector_left_jacobian_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_138,
      METH_FASTCALL | METH_KEYWORDS, "rotation_vector_left_jacobian_with_jacobians(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel rotation_vector_left_jacobian_with_jacobians (rigidsym.kernels)"},
-    {"rotation_vector_right_jacobian", (PyCFunction)(void (*)(void))rigidsym_entry_136,
+    {"rotation_vector_right_jacobian", (PyCFunction)(void (*)(void))rigidsym_entry_139,
      METH_FASTCALL | METH_KEYWORDS, "rotation_vector_right_jacobian(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel rotation_vector_right_jacobian (rigidsym.kernels)"},
-    {"rotation_vector_right_jacobian_inverse", (PyCFunction)(void (*)(void))rigidsym_entry_137,
+    {"rotation_vector_right_jacobian_inverse", (PyCFunction)(void (*)(void))rigidsym_entry_140,
      METH_FASTCALL | METH_KEYWORDS, "rotation_vector_right_jacobian_inverse(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel rotation_vector_right_jacobian_inverse (rigidsym.kernels)"},
-    {"rotation_vector_right_jacobian_inverse_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_138,
+    {"rotation_vector_right_jacobian_inverse_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_141,
      METH_FASTCALL | METH_KEYWORDS, "rotation_vector_right_jacobian_inverse_with_jacobians(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel rotation_vector_right_jacobian_inverse_with_jacobians (rigidsym.kernels)"},
-    {"rotation_vector_right_jacobian_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_139,
+    {"rotation_vector_right_jacobian_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_142,
      METH_FASTCALL | METH_KEYWORDS, "rotation_vector_right_jacobian_with_jacobians(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel rotation_vector_right_jacobian_with_jacobians (rigidsym.kernels)"},
-    {"screw_axis_point", (PyCFunction)(void (*)(void))rigidsym_entry_140,
+    {"screw_axis_point", (PyCFunction)(void (*)(void))rigidsym_entry_143,
      METH_FASTCALL | METH_KEYWORDS, "screw_axis_point(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel screw_axis_point (rigidsym.kernels)"},
-    {"screw_axis_point_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_141,
+    {"screw_axis_point_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_144,
      METH_FASTCALL | METH_KEYWORDS, "screw_axis_point_with_jacobians(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel screw_axis_point_with_jacobians (rigidsym.kernels)"},
-    {"screw_of_displacement", (PyCFunction)(void (*)(void))rigidsym_entry_142,
+    {"screw_of_displacement", (PyCFunction)(void (*)(void))rigidsym_entry_145,
      METH_FASTCALL | METH_KEYWORDS, "screw_of_displacement(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel screw_of_displacement (rigidsym.kernels)"},
-    {"transform_from_exponential_coordinates", (PyCFunction)(void (*)(void))rigidsym_entry_143,
+    {"transform_from_exponential_coordinates", (PyCFunction)(void (*)(void))rigidsym_entry_146,
      METH_FASTCALL | METH_KEYWORDS, "transform_from_exponential_coordinates(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel transform_from_exponential_coordinates (rigidsym.kernels)"},
-    {"transform_from_exponential_coordinates_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_144,
+    {"transform_from_exponential_coordinates_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_147,
      METH_FASTCALL | METH_KEYWORDS, "transform_from_exponential_coordinates_with_jacobians(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel transform_from_exponential_coordinates_with_jacobians (rigidsym.kernels)"},
-    {"twist_transfer", (PyCFunction)(void (*)(void))rigidsym_entry_145,
+    {"twist_transfer", (PyCFunction)(void (*)(void))rigidsym_entry_148,
      METH_FASTCALL | METH_KEYWORDS, "twist_transfer(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel twist_transfer (rigidsym.kernels)"},
-    {"twist_transfer_matrix", (PyCFunction)(void (*)(void))rigidsym_entry_146,
+    {"twist_transfer_matrix", (PyCFunction)(void (*)(void))rigidsym_entry_149,
      METH_FASTCALL | METH_KEYWORDS, "twist_transfer_matrix(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel twist_transfer_matrix (rigidsym.kernels)"},
-    {"twist_transfer_matrix_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_147,
+    {"twist_transfer_matrix_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_150,
      METH_FASTCALL | METH_KEYWORDS, "twist_transfer_matrix_with_jacobians(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel twist_transfer_matrix_with_jacobians (rigidsym.kernels)"},
-    {"twist_transfer_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_148,
+    {"twist_transfer_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_151,
      METH_FASTCALL | METH_KEYWORDS, "twist_transfer_with_jacobians(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel twist_transfer_with_jacobians (rigidsym.kernels)"},
-    {"wrench_axis", (PyCFunction)(void (*)(void))rigidsym_entry_149,
+    {"wrench_axis", (PyCFunction)(void (*)(void))rigidsym_entry_152,
      METH_FASTCALL | METH_KEYWORDS, "wrench_axis(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel wrench_axis (rigidsym.kernels)"},
-    {"wrench_axis_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_150,
+    {"wrench_axis_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_153,
      METH_FASTCALL | METH_KEYWORDS, "wrench_axis_with_jacobians(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel wrench_axis_with_jacobians (rigidsym.kernels)"},
-    {"wrench_transfer", (PyCFunction)(void (*)(void))rigidsym_entry_151,
+    {"wrench_transfer", (PyCFunction)(void (*)(void))rigidsym_entry_154,
      METH_FASTCALL | METH_KEYWORDS, "wrench_transfer(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel wrench_transfer (rigidsym.kernels)"},
-    {"wrench_transfer_matrix", (PyCFunction)(void (*)(void))rigidsym_entry_152,
+    {"wrench_transfer_matrix", (PyCFunction)(void (*)(void))rigidsym_entry_155,
      METH_FASTCALL | METH_KEYWORDS, "wrench_transfer_matrix(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel wrench_transfer_matrix (rigidsym.kernels)"},
-    {"wrench_transfer_matrix_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_153,
+    {"wrench_transfer_matrix_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_156,
      METH_FASTCALL | METH_KEYWORDS, "wrench_transfer_matrix_with_jacobians(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel wrench_transfer_matrix_with_jacobians (rigidsym.kernels)"},
-    {"wrench_transfer_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_154,
+    {"wrench_transfer_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_157,
      METH_FASTCALL | METH_KEYWORDS, "wrench_transfer_with_jacobians(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel wrench_transfer_with_jacobians (rigidsym.kernels)"},
 };
 

@@ -27,7 +27,7 @@ __attribute__((used))
 #endif
 static const char rigidsym_sources_tag[] = "rigidsym-sources:" RIGIDSYM_SOURCES;
 
-#define RIGIDSYM_NKERNELS 155
+#define RIGIDSYM_NKERNELS 158
 #define RIGIDSYM_MAXARRAYS 15
 
 /* the path chosen when the module was first executed (the same for every import) */
@@ -1052,15 +1052,15 @@ static int64_t rigidsym_call_100(const rigidsym_fns *f, int f32, int64_t n, int 
     return ((int64_t (*)(int64_t, int, const double *, double *))f->f64)(
         n, t, p[0], p[1]);
 }
-static const Py_ssize_t rigidsym_sizes_101[] = {6, 36};
+static const Py_ssize_t rigidsym_sizes_101[] = {16, 6, 96};
 static int64_t rigidsym_call_101(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, float *))f->f32)(
-            n, t, p[0], p[1]);
-    return ((int64_t (*)(int64_t, int, const double *, double *))f->f64)(
-        n, t, p[0], p[1]);
+        return ((int64_t (*)(int64_t, int, const float *, float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2]);
+    return ((int64_t (*)(int64_t, int, const double *, double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2]);
 }
 static const Py_ssize_t rigidsym_sizes_102[] = {6, 36};
 static int64_t rigidsym_call_102(const rigidsym_fns *f, int f32, int64_t n, int t,
@@ -1072,118 +1072,18 @@ static int64_t rigidsym_call_102(const rigidsym_fns *f, int f32, int64_t n, int 
     return ((int64_t (*)(int64_t, int, const double *, double *))f->f64)(
         n, t, p[0], p[1]);
 }
-static const Py_ssize_t rigidsym_sizes_103[] = {9, 1, 3, 3, 9};
+static const Py_ssize_t rigidsym_sizes_103[] = {6, 36};
 static int64_t rigidsym_call_103(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, const float *, float *))f->f32)(
-            n, t, p[0], p[1], p[2], p[3], p[4]);
-    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, const double *, double *))f->f64)(
-        n, t, p[0], p[1], p[2], p[3], p[4]);
+        return ((int64_t (*)(int64_t, int, const float *, float *))f->f32)(
+            n, t, p[0], p[1]);
+    return ((int64_t (*)(int64_t, int, const double *, double *))f->f64)(
+        n, t, p[0], p[1]);
 }
-static const Py_ssize_t rigidsym_sizes_104[] = {9, 1, 3, 3, 9, 81, 9, 27, 27};
+static const Py_ssize_t rigidsym_sizes_104[] = {6, 36, 216};
 static int64_t rigidsym_call_104(const rigidsym_fns *f, int f32, int64_t n, int t,
-                                   void **p)
-{
-    if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, const float *, float *, float *, float *, float *, float *))f->f32)(
-            n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8]);
-    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, const double *, double *, double *, double *, double *, double *))f->f64)(
-        n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8]);
-}
-static const Py_ssize_t rigidsym_sizes_105[] = {9, 1, 3, 3, 36};
-static int64_t rigidsym_call_105(const rigidsym_fns *f, int f32, int64_t n, int t,
-                                   void **p)
-{
-    if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, const float *, float *))f->f32)(
-            n, t, p[0], p[1], p[2], p[3], p[4]);
-    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, const double *, double *))f->f64)(
-        n, t, p[0], p[1], p[2], p[3], p[4]);
-}
-static const Py_ssize_t rigidsym_sizes_106[] = {9, 1, 3, 3, 36, 324, 36, 108, 108};
-static int64_t rigidsym_call_106(const rigidsym_fns *f, int f32, int64_t n, int t,
-                                   void **p)
-{
-    if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, const float *, float *, float *, float *, float *, float *))f->f32)(
-            n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8]);
-    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, const double *, double *, double *, double *, double *, double *))f->f64)(
-        n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8]);
-}
-static const Py_ssize_t rigidsym_sizes_107[] = {3, 3, 3, 3, 1, 6};
-static int64_t rigidsym_call_107(const rigidsym_fns *f, int f32, int64_t n, int t,
-                                   void **p)
-{
-    if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, float *, float *, float *))f->f32)(
-            n, t, p[0], p[1], p[2], p[3], p[4], p[5]);
-    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, double *, double *, double *))f->f64)(
-        n, t, p[0], p[1], p[2], p[3], p[4], p[5]);
-}
-static const Py_ssize_t rigidsym_sizes_108[] = {3, 3, 3, 3, 1, 6, 9, 9, 9, 3, 3, 3, 18, 18, 18};
-static int64_t rigidsym_call_108(const rigidsym_fns *f, int f32, int64_t n, int t,
-                                   void **p)
-{
-    if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, float *, float *, float *, float *, float *, float *, float *, float *, float *, float *, float *, float *))f->f32)(
-            n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], p[9], p[10], p[11], p[12], p[13], p[14]);
-    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, double *, double *, double *, double *, double *, double *, double *, double *, double *, double *, double *, double *))f->f64)(
-        n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], p[9], p[10], p[11], p[12], p[13], p[14]);
-}
-static const Py_ssize_t rigidsym_sizes_109[] = {3, 3, 3, 3, 1};
-static int64_t rigidsym_call_109(const rigidsym_fns *f, int f32, int64_t n, int t,
-                                   void **p)
-{
-    if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, float *, float *))f->f32)(
-            n, t, p[0], p[1], p[2], p[3], p[4]);
-    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, double *, double *))f->f64)(
-        n, t, p[0], p[1], p[2], p[3], p[4]);
-}
-static const Py_ssize_t rigidsym_sizes_110[] = {9, 1, 3, 3, 1};
-static int64_t rigidsym_call_110(const rigidsym_fns *f, int f32, int64_t n, int t,
-                                   void **p)
-{
-    if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, const float *, float *))f->f32)(
-            n, t, p[0], p[1], p[2], p[3], p[4]);
-    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, const double *, double *))f->f64)(
-        n, t, p[0], p[1], p[2], p[3], p[4]);
-}
-static const Py_ssize_t rigidsym_sizes_111[] = {9, 1, 3, 3, 1, 9, 1, 3, 3};
-static int64_t rigidsym_call_111(const rigidsym_fns *f, int f32, int64_t n, int t,
-                                   void **p)
-{
-    if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, const float *, float *, float *, float *, float *, float *))f->f32)(
-            n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8]);
-    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, const double *, double *, double *, double *, double *, double *))f->f64)(
-        n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8]);
-}
-static const Py_ssize_t rigidsym_sizes_112[] = {3, 9, 3, 3, 3, 3, 3, 3};
-static int64_t rigidsym_call_112(const rigidsym_fns *f, int f32, int64_t n, int t,
-                                   void **p)
-{
-    if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, const float *, const float *, const float *, const float *, float *))f->f32)(
-            n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7]);
-    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, const double *, const double *, const double *, const double *, double *))f->f64)(
-        n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7]);
-}
-static const Py_ssize_t rigidsym_sizes_113[] = {3, 9, 3, 3, 3, 3, 3, 3, 9, 27, 9, 9, 9, 9, 9};
-static int64_t rigidsym_call_113(const rigidsym_fns *f, int f32, int64_t n, int t,
-                                   void **p)
-{
-    if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, const float *, const float *, const float *, const float *, float *, float *, float *, float *, float *, float *, float *, float *))f->f32)(
-            n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], p[9], p[10], p[11], p[12], p[13], p[14]);
-    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, const double *, const double *, const double *, const double *, double *, double *, double *, double *, double *, double *, double *, double *))f->f64)(
-        n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], p[9], p[10], p[11], p[12], p[13], p[14]);
-}
-static const Py_ssize_t rigidsym_sizes_114[] = {9, 3, 1};
-static int64_t rigidsym_call_114(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
@@ -1192,7 +1092,107 @@ static int64_t rigidsym_call_114(const rigidsym_fns *f, int f32, int64_t n, int 
     return ((int64_t (*)(int64_t, int, const double *, double *, double *))f->f64)(
         n, t, p[0], p[1], p[2]);
 }
-static const Py_ssize_t rigidsym_sizes_115[] = {9, 1, 3, 3, 3, 3, 3, 6};
+static const Py_ssize_t rigidsym_sizes_105[] = {6, 36, 216};
+static int64_t rigidsym_call_105(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2]);
+    return ((int64_t (*)(int64_t, int, const double *, double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2]);
+}
+static const Py_ssize_t rigidsym_sizes_106[] = {9, 1, 3, 3, 9};
+static int64_t rigidsym_call_106(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, const float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2], p[3], p[4]);
+    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, const double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2], p[3], p[4]);
+}
+static const Py_ssize_t rigidsym_sizes_107[] = {9, 1, 3, 3, 9, 81, 9, 27, 27};
+static int64_t rigidsym_call_107(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, const float *, float *, float *, float *, float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8]);
+    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, const double *, double *, double *, double *, double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8]);
+}
+static const Py_ssize_t rigidsym_sizes_108[] = {9, 1, 3, 3, 36};
+static int64_t rigidsym_call_108(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, const float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2], p[3], p[4]);
+    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, const double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2], p[3], p[4]);
+}
+static const Py_ssize_t rigidsym_sizes_109[] = {9, 1, 3, 3, 36, 324, 36, 108, 108};
+static int64_t rigidsym_call_109(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, const float *, float *, float *, float *, float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8]);
+    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, const double *, double *, double *, double *, double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8]);
+}
+static const Py_ssize_t rigidsym_sizes_110[] = {3, 3, 3, 3, 1, 6};
+static int64_t rigidsym_call_110(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, float *, float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2], p[3], p[4], p[5]);
+    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, double *, double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2], p[3], p[4], p[5]);
+}
+static const Py_ssize_t rigidsym_sizes_111[] = {3, 3, 3, 3, 1, 6, 9, 9, 9, 3, 3, 3, 18, 18, 18};
+static int64_t rigidsym_call_111(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, float *, float *, float *, float *, float *, float *, float *, float *, float *, float *, float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], p[9], p[10], p[11], p[12], p[13], p[14]);
+    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, double *, double *, double *, double *, double *, double *, double *, double *, double *, double *, double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], p[9], p[10], p[11], p[12], p[13], p[14]);
+}
+static const Py_ssize_t rigidsym_sizes_112[] = {3, 3, 3, 3, 1};
+static int64_t rigidsym_call_112(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2], p[3], p[4]);
+    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2], p[3], p[4]);
+}
+static const Py_ssize_t rigidsym_sizes_113[] = {9, 1, 3, 3, 1};
+static int64_t rigidsym_call_113(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, const float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2], p[3], p[4]);
+    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, const double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2], p[3], p[4]);
+}
+static const Py_ssize_t rigidsym_sizes_114[] = {9, 1, 3, 3, 1, 9, 1, 3, 3};
+static int64_t rigidsym_call_114(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, const float *, float *, float *, float *, float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8]);
+    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, const double *, double *, double *, double *, double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8]);
+}
+static const Py_ssize_t rigidsym_sizes_115[] = {3, 9, 3, 3, 3, 3, 3, 3};
 static int64_t rigidsym_call_115(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
@@ -1202,8 +1202,38 @@ static int64_t rigidsym_call_115(const rigidsym_fns *f, int f32, int64_t n, int 
     return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, const double *, const double *, const double *, const double *, double *))f->f64)(
         n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7]);
 }
-static const Py_ssize_t rigidsym_sizes_116[] = {9, 1, 3, 3, 3, 6};
+static const Py_ssize_t rigidsym_sizes_116[] = {3, 9, 3, 3, 3, 3, 3, 3, 9, 27, 9, 9, 9, 9, 9};
 static int64_t rigidsym_call_116(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, const float *, const float *, const float *, const float *, float *, float *, float *, float *, float *, float *, float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], p[9], p[10], p[11], p[12], p[13], p[14]);
+    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, const double *, const double *, const double *, const double *, double *, double *, double *, double *, double *, double *, double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], p[9], p[10], p[11], p[12], p[13], p[14]);
+}
+static const Py_ssize_t rigidsym_sizes_117[] = {9, 3, 1};
+static int64_t rigidsym_call_117(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2]);
+    return ((int64_t (*)(int64_t, int, const double *, double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2]);
+}
+static const Py_ssize_t rigidsym_sizes_118[] = {9, 1, 3, 3, 3, 3, 3, 6};
+static int64_t rigidsym_call_118(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, const float *, const float *, const float *, const float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7]);
+    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, const double *, const double *, const double *, const double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7]);
+}
+static const Py_ssize_t rigidsym_sizes_119[] = {9, 1, 3, 3, 3, 6};
+static int64_t rigidsym_call_119(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
@@ -1212,8 +1242,8 @@ static int64_t rigidsym_call_116(const rigidsym_fns *f, int f32, int64_t n, int 
     return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, const double *, const double *, double *))f->f64)(
         n, t, p[0], p[1], p[2], p[3], p[4], p[5]);
 }
-static const Py_ssize_t rigidsym_sizes_117[] = {9, 1, 3, 3, 3, 6, 54, 6, 18, 18, 18};
-static int64_t rigidsym_call_117(const rigidsym_fns *f, int f32, int64_t n, int t,
+static const Py_ssize_t rigidsym_sizes_120[] = {9, 1, 3, 3, 3, 6, 54, 6, 18, 18, 18};
+static int64_t rigidsym_call_120(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
@@ -1222,8 +1252,8 @@ static int64_t rigidsym_call_117(const rigidsym_fns *f, int f32, int64_t n, int 
     return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, const double *, const double *, double *, double *, double *, double *, double *, double *))f->f64)(
         n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], p[9], p[10]);
 }
-static const Py_ssize_t rigidsym_sizes_118[] = {3, 3, 6};
-static int64_t rigidsym_call_118(const rigidsym_fns *f, int f32, int64_t n, int t,
+static const Py_ssize_t rigidsym_sizes_121[] = {3, 3, 6};
+static int64_t rigidsym_call_121(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
@@ -1232,8 +1262,8 @@ static int64_t rigidsym_call_118(const rigidsym_fns *f, int f32, int64_t n, int 
     return ((int64_t (*)(int64_t, int, const double *, const double *, double *))f->f64)(
         n, t, p[0], p[1], p[2]);
 }
-static const Py_ssize_t rigidsym_sizes_119[] = {3, 3, 6, 18, 18};
-static int64_t rigidsym_call_119(const rigidsym_fns *f, int f32, int64_t n, int t,
+static const Py_ssize_t rigidsym_sizes_122[] = {3, 3, 6, 18, 18};
+static int64_t rigidsym_call_122(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
@@ -1242,8 +1272,8 @@ static int64_t rigidsym_call_119(const rigidsym_fns *f, int f32, int64_t n, int 
     return ((int64_t (*)(int64_t, int, const double *, const double *, double *, double *, double *))f->f64)(
         n, t, p[0], p[1], p[2], p[3], p[4]);
 }
-static const Py_ssize_t rigidsym_sizes_120[] = {6, 3, 3, 6};
-static int64_t rigidsym_call_120(const rigidsym_fns *f, int f32, int64_t n, int t,
+static const Py_ssize_t rigidsym_sizes_123[] = {6, 3, 3, 6};
+static int64_t rigidsym_call_123(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
@@ -1252,8 +1282,8 @@ static int64_t rigidsym_call_120(const rigidsym_fns *f, int f32, int64_t n, int 
     return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, double *))f->f64)(
         n, t, p[0], p[1], p[2], p[3]);
 }
-static const Py_ssize_t rigidsym_sizes_121[] = {6, 3, 3, 6, 36, 18, 18};
-static int64_t rigidsym_call_121(const rigidsym_fns *f, int f32, int64_t n, int t,
+static const Py_ssize_t rigidsym_sizes_124[] = {6, 3, 3, 6, 36, 18, 18};
+static int64_t rigidsym_call_124(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
@@ -1262,8 +1292,8 @@ static int64_t rigidsym_call_121(const rigidsym_fns *f, int f32, int64_t n, int 
     return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, double *, double *, double *, double *))f->f64)(
         n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6]);
 }
-static const Py_ssize_t rigidsym_sizes_122[] = {3, 3, 3, 3, 3, 3};
-static int64_t rigidsym_call_122(const rigidsym_fns *f, int f32, int64_t n, int t,
+static const Py_ssize_t rigidsym_sizes_125[] = {3, 3, 3, 3, 3, 3};
+static int64_t rigidsym_call_125(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
@@ -1272,8 +1302,8 @@ static int64_t rigidsym_call_122(const rigidsym_fns *f, int f32, int64_t n, int 
     return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, const double *, const double *, double *))f->f64)(
         n, t, p[0], p[1], p[2], p[3], p[4], p[5]);
 }
-static const Py_ssize_t rigidsym_sizes_123[] = {3, 3, 3, 3, 3, 3, 9, 9, 9, 9, 9};
-static int64_t rigidsym_call_123(const rigidsym_fns *f, int f32, int64_t n, int t,
+static const Py_ssize_t rigidsym_sizes_126[] = {3, 3, 3, 3, 3, 3, 9, 9, 9, 9, 9};
+static int64_t rigidsym_call_126(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
@@ -1282,8 +1312,8 @@ static int64_t rigidsym_call_123(const rigidsym_fns *f, int f32, int64_t n, int 
     return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, const double *, const double *, double *, double *, double *, double *, double *, double *))f->f64)(
         n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], p[9], p[10]);
 }
-static const Py_ssize_t rigidsym_sizes_124[] = {4, 9};
-static int64_t rigidsym_call_124(const rigidsym_fns *f, int f32, int64_t n, int t,
+static const Py_ssize_t rigidsym_sizes_127[] = {4, 9};
+static int64_t rigidsym_call_127(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
@@ -1292,8 +1322,8 @@ static int64_t rigidsym_call_124(const rigidsym_fns *f, int f32, int64_t n, int 
     return ((int64_t (*)(int64_t, int, const double *, double *))f->f64)(
         n, t, p[0], p[1]);
 }
-static const Py_ssize_t rigidsym_sizes_125[] = {4, 9, 36};
-static int64_t rigidsym_call_125(const rigidsym_fns *f, int f32, int64_t n, int t,
+static const Py_ssize_t rigidsym_sizes_128[] = {4, 9, 36};
+static int64_t rigidsym_call_128(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
@@ -1302,8 +1332,8 @@ static int64_t rigidsym_call_125(const rigidsym_fns *f, int f32, int64_t n, int 
     return ((int64_t (*)(int64_t, int, const double *, double *, double *))f->f64)(
         n, t, p[0], p[1], p[2]);
 }
-static const Py_ssize_t rigidsym_sizes_126[] = {3, 1, 9};
-static int64_t rigidsym_call_126(const rigidsym_fns *f, int f32, int64_t n, int t,
+static const Py_ssize_t rigidsym_sizes_129[] = {3, 1, 9};
+static int64_t rigidsym_call_129(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
@@ -1312,8 +1342,8 @@ static int64_t rigidsym_call_126(const rigidsym_fns *f, int f32, int64_t n, int 
     return ((int64_t (*)(int64_t, int, const double *, const double *, double *))f->f64)(
         n, t, p[0], p[1], p[2]);
 }
-static const Py_ssize_t rigidsym_sizes_127[] = {3, 1, 9, 27, 9};
-static int64_t rigidsym_call_127(const rigidsym_fns *f, int f32, int64_t n, int t,
+static const Py_ssize_t rigidsym_sizes_130[] = {3, 1, 9, 27, 9};
+static int64_t rigidsym_call_130(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
@@ -1322,57 +1352,27 @@ static int64_t rigidsym_call_127(const rigidsym_fns *f, int f32, int64_t n, int 
     return ((int64_t (*)(int64_t, int, const double *, const double *, double *, double *, double *))f->f64)(
         n, t, p[0], p[1], p[2], p[3], p[4]);
 }
-static const Py_ssize_t rigidsym_sizes_128[] = {3, 9};
-static int64_t rigidsym_call_128(const rigidsym_fns *f, int f32, int64_t n, int t,
-                                   void **p)
-{
-    if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, float *))f->f32)(
-            n, t, p[0], p[1]);
-    return ((int64_t (*)(int64_t, int, const double *, double *))f->f64)(
-        n, t, p[0], p[1]);
-}
-static const Py_ssize_t rigidsym_sizes_129[] = {3, 9, 27};
-static int64_t rigidsym_call_129(const rigidsym_fns *f, int f32, int64_t n, int t,
-                                   void **p)
-{
-    if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, float *, float *))f->f32)(
-            n, t, p[0], p[1], p[2]);
-    return ((int64_t (*)(int64_t, int, const double *, double *, double *))f->f64)(
-        n, t, p[0], p[1], p[2]);
-}
-static const Py_ssize_t rigidsym_sizes_130[] = {9, 3};
-static int64_t rigidsym_call_130(const rigidsym_fns *f, int f32, int64_t n, int t,
-                                   void **p)
-{
-    if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, float *))f->f32)(
-            n, t, p[0], p[1]);
-    return ((int64_t (*)(int64_t, int, const double *, double *))f->f64)(
-        n, t, p[0], p[1]);
-}
-static const Py_ssize_t rigidsym_sizes_131[] = {9, 3, 27};
+static const Py_ssize_t rigidsym_sizes_131[] = {3, 9};
 static int64_t rigidsym_call_131(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, float *, float *))f->f32)(
-            n, t, p[0], p[1], p[2]);
-    return ((int64_t (*)(int64_t, int, const double *, double *, double *))f->f64)(
-        n, t, p[0], p[1], p[2]);
-}
-static const Py_ssize_t rigidsym_sizes_132[] = {3, 9};
-static int64_t rigidsym_call_132(const rigidsym_fns *f, int f32, int64_t n, int t,
-                                   void **p)
-{
-    if (f32)
         return ((int64_t (*)(int64_t, int, const float *, float *))f->f32)(
             n, t, p[0], p[1]);
     return ((int64_t (*)(int64_t, int, const double *, double *))f->f64)(
         n, t, p[0], p[1]);
 }
-static const Py_ssize_t rigidsym_sizes_133[] = {3, 9};
+static const Py_ssize_t rigidsym_sizes_132[] = {3, 9, 27};
+static int64_t rigidsym_call_132(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2]);
+    return ((int64_t (*)(int64_t, int, const double *, double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2]);
+}
+static const Py_ssize_t rigidsym_sizes_133[] = {9, 3};
 static int64_t rigidsym_call_133(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
@@ -1382,7 +1382,7 @@ static int64_t rigidsym_call_133(const rigidsym_fns *f, int f32, int64_t n, int 
     return ((int64_t (*)(int64_t, int, const double *, double *))f->f64)(
         n, t, p[0], p[1]);
 }
-static const Py_ssize_t rigidsym_sizes_134[] = {3, 9, 27};
+static const Py_ssize_t rigidsym_sizes_134[] = {9, 3, 27};
 static int64_t rigidsym_call_134(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
@@ -1392,15 +1392,15 @@ static int64_t rigidsym_call_134(const rigidsym_fns *f, int f32, int64_t n, int 
     return ((int64_t (*)(int64_t, int, const double *, double *, double *))f->f64)(
         n, t, p[0], p[1], p[2]);
 }
-static const Py_ssize_t rigidsym_sizes_135[] = {3, 9, 27};
+static const Py_ssize_t rigidsym_sizes_135[] = {3, 9};
 static int64_t rigidsym_call_135(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, float *, float *))f->f32)(
-            n, t, p[0], p[1], p[2]);
-    return ((int64_t (*)(int64_t, int, const double *, double *, double *))f->f64)(
-        n, t, p[0], p[1], p[2]);
+        return ((int64_t (*)(int64_t, int, const float *, float *))f->f32)(
+            n, t, p[0], p[1]);
+    return ((int64_t (*)(int64_t, int, const double *, double *))f->f64)(
+        n, t, p[0], p[1]);
 }
 static const Py_ssize_t rigidsym_sizes_136[] = {3, 9};
 static int64_t rigidsym_call_136(const rigidsym_fns *f, int f32, int64_t n, int t,
@@ -1412,15 +1412,15 @@ static int64_t rigidsym_call_136(const rigidsym_fns *f, int f32, int64_t n, int 
     return ((int64_t (*)(int64_t, int, const double *, double *))f->f64)(
         n, t, p[0], p[1]);
 }
-static const Py_ssize_t rigidsym_sizes_137[] = {3, 9};
+static const Py_ssize_t rigidsym_sizes_137[] = {3, 9, 27};
 static int64_t rigidsym_call_137(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, float *))f->f32)(
-            n, t, p[0], p[1]);
-    return ((int64_t (*)(int64_t, int, const double *, double *))f->f64)(
-        n, t, p[0], p[1]);
+        return ((int64_t (*)(int64_t, int, const float *, float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2]);
+    return ((int64_t (*)(int64_t, int, const double *, double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2]);
 }
 static const Py_ssize_t rigidsym_sizes_138[] = {3, 9, 27};
 static int64_t rigidsym_call_138(const rigidsym_fns *f, int f32, int64_t n, int t,
@@ -1432,48 +1432,8 @@ static int64_t rigidsym_call_138(const rigidsym_fns *f, int f32, int64_t n, int 
     return ((int64_t (*)(int64_t, int, const double *, double *, double *))f->f64)(
         n, t, p[0], p[1], p[2]);
 }
-static const Py_ssize_t rigidsym_sizes_139[] = {3, 9, 27};
+static const Py_ssize_t rigidsym_sizes_139[] = {3, 9};
 static int64_t rigidsym_call_139(const rigidsym_fns *f, int f32, int64_t n, int t,
-                                   void **p)
-{
-    if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, float *, float *))f->f32)(
-            n, t, p[0], p[1], p[2]);
-    return ((int64_t (*)(int64_t, int, const double *, double *, double *))f->f64)(
-        n, t, p[0], p[1], p[2]);
-}
-static const Py_ssize_t rigidsym_sizes_140[] = {3, 1, 3, 3, 3};
-static int64_t rigidsym_call_140(const rigidsym_fns *f, int f32, int64_t n, int t,
-                                   void **p)
-{
-    if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, const float *, float *))f->f32)(
-            n, t, p[0], p[1], p[2], p[3], p[4]);
-    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, const double *, double *))f->f64)(
-        n, t, p[0], p[1], p[2], p[3], p[4]);
-}
-static const Py_ssize_t rigidsym_sizes_141[] = {3, 1, 3, 3, 3, 9, 3, 9, 9};
-static int64_t rigidsym_call_141(const rigidsym_fns *f, int f32, int64_t n, int t,
-                                   void **p)
-{
-    if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, const float *, float *, float *, float *, float *, float *))f->f32)(
-            n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8]);
-    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, const double *, double *, double *, double *, double *, double *))f->f64)(
-        n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8]);
-}
-static const Py_ssize_t rigidsym_sizes_142[] = {9, 3, 3, 3, 1, 3, 1, 6};
-static int64_t rigidsym_call_142(const rigidsym_fns *f, int f32, int64_t n, int t,
-                                   void **p)
-{
-    if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, float *, float *, float *, float *, float *))f->f32)(
-            n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7]);
-    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, double *, double *, double *, double *, double *))f->f64)(
-        n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7]);
-}
-static const Py_ssize_t rigidsym_sizes_143[] = {6, 16};
-static int64_t rigidsym_call_143(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
@@ -1482,8 +1442,18 @@ static int64_t rigidsym_call_143(const rigidsym_fns *f, int f32, int64_t n, int 
     return ((int64_t (*)(int64_t, int, const double *, double *))f->f64)(
         n, t, p[0], p[1]);
 }
-static const Py_ssize_t rigidsym_sizes_144[] = {6, 16, 96};
-static int64_t rigidsym_call_144(const rigidsym_fns *f, int f32, int64_t n, int t,
+static const Py_ssize_t rigidsym_sizes_140[] = {3, 9};
+static int64_t rigidsym_call_140(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, float *))f->f32)(
+            n, t, p[0], p[1]);
+    return ((int64_t (*)(int64_t, int, const double *, double *))f->f64)(
+        n, t, p[0], p[1]);
+}
+static const Py_ssize_t rigidsym_sizes_141[] = {3, 9, 27};
+static int64_t rigidsym_call_141(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
@@ -1492,8 +1462,68 @@ static int64_t rigidsym_call_144(const rigidsym_fns *f, int f32, int64_t n, int 
     return ((int64_t (*)(int64_t, int, const double *, double *, double *))f->f64)(
         n, t, p[0], p[1], p[2]);
 }
-static const Py_ssize_t rigidsym_sizes_145[] = {6, 3, 3, 6};
+static const Py_ssize_t rigidsym_sizes_142[] = {3, 9, 27};
+static int64_t rigidsym_call_142(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2]);
+    return ((int64_t (*)(int64_t, int, const double *, double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2]);
+}
+static const Py_ssize_t rigidsym_sizes_143[] = {3, 1, 3, 3, 3};
+static int64_t rigidsym_call_143(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, const float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2], p[3], p[4]);
+    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, const double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2], p[3], p[4]);
+}
+static const Py_ssize_t rigidsym_sizes_144[] = {3, 1, 3, 3, 3, 9, 3, 9, 9};
+static int64_t rigidsym_call_144(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, const float *, float *, float *, float *, float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8]);
+    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, const double *, double *, double *, double *, double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8]);
+}
+static const Py_ssize_t rigidsym_sizes_145[] = {9, 3, 3, 3, 1, 3, 1, 6};
 static int64_t rigidsym_call_145(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, float *, float *, float *, float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7]);
+    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, double *, double *, double *, double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7]);
+}
+static const Py_ssize_t rigidsym_sizes_146[] = {6, 16};
+static int64_t rigidsym_call_146(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, float *))f->f32)(
+            n, t, p[0], p[1]);
+    return ((int64_t (*)(int64_t, int, const double *, double *))f->f64)(
+        n, t, p[0], p[1]);
+}
+static const Py_ssize_t rigidsym_sizes_147[] = {6, 16, 96};
+static int64_t rigidsym_call_147(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2]);
+    return ((int64_t (*)(int64_t, int, const double *, double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2]);
+}
+static const Py_ssize_t rigidsym_sizes_148[] = {6, 3, 3, 6};
+static int64_t rigidsym_call_148(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
@@ -1502,8 +1532,8 @@ static int64_t rigidsym_call_145(const rigidsym_fns *f, int f32, int64_t n, int 
     return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, double *))f->f64)(
         n, t, p[0], p[1], p[2], p[3]);
 }
-static const Py_ssize_t rigidsym_sizes_146[] = {3, 3, 36};
-static int64_t rigidsym_call_146(const rigidsym_fns *f, int f32, int64_t n, int t,
+static const Py_ssize_t rigidsym_sizes_149[] = {3, 3, 36};
+static int64_t rigidsym_call_149(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
@@ -1512,8 +1542,8 @@ static int64_t rigidsym_call_146(const rigidsym_fns *f, int f32, int64_t n, int 
     return ((int64_t (*)(int64_t, int, const double *, const double *, double *))f->f64)(
         n, t, p[0], p[1], p[2]);
 }
-static const Py_ssize_t rigidsym_sizes_147[] = {3, 3, 36, 108, 108};
-static int64_t rigidsym_call_147(const rigidsym_fns *f, int f32, int64_t n, int t,
+static const Py_ssize_t rigidsym_sizes_150[] = {3, 3, 36, 108, 108};
+static int64_t rigidsym_call_150(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
@@ -1522,8 +1552,8 @@ static int64_t rigidsym_call_147(const rigidsym_fns *f, int f32, int64_t n, int 
     return ((int64_t (*)(int64_t, int, const double *, const double *, double *, double *, double *))f->f64)(
         n, t, p[0], p[1], p[2], p[3], p[4]);
 }
-static const Py_ssize_t rigidsym_sizes_148[] = {6, 3, 3, 6, 36, 18, 18};
-static int64_t rigidsym_call_148(const rigidsym_fns *f, int f32, int64_t n, int t,
+static const Py_ssize_t rigidsym_sizes_151[] = {6, 3, 3, 6, 36, 18, 18};
+static int64_t rigidsym_call_151(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
@@ -1532,8 +1562,8 @@ static int64_t rigidsym_call_148(const rigidsym_fns *f, int f32, int64_t n, int 
     return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, double *, double *, double *, double *))f->f64)(
         n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6]);
 }
-static const Py_ssize_t rigidsym_sizes_149[] = {6, 3, 3, 1, 6};
-static int64_t rigidsym_call_149(const rigidsym_fns *f, int f32, int64_t n, int t,
+static const Py_ssize_t rigidsym_sizes_152[] = {6, 3, 3, 1, 6};
+static int64_t rigidsym_call_152(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
@@ -1542,8 +1572,8 @@ static int64_t rigidsym_call_149(const rigidsym_fns *f, int f32, int64_t n, int 
     return ((int64_t (*)(int64_t, int, const double *, const double *, double *, double *, double *))f->f64)(
         n, t, p[0], p[1], p[2], p[3], p[4]);
 }
-static const Py_ssize_t rigidsym_sizes_150[] = {6, 3, 3, 1, 6, 18, 9, 6, 3, 36, 18};
-static int64_t rigidsym_call_150(const rigidsym_fns *f, int f32, int64_t n, int t,
+static const Py_ssize_t rigidsym_sizes_153[] = {6, 3, 3, 1, 6, 18, 9, 6, 3, 36, 18};
+static int64_t rigidsym_call_153(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
@@ -1552,8 +1582,8 @@ static int64_t rigidsym_call_150(const rigidsym_fns *f, int f32, int64_t n, int 
     return ((int64_t (*)(int64_t, int, const double *, const double *, double *, double *, double *, double *, double *, double *, double *, double *, double *))f->f64)(
         n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], p[9], p[10]);
 }
-static const Py_ssize_t rigidsym_sizes_151[] = {6, 3, 3, 6};
-static int64_t rigidsym_call_151(const rigidsym_fns *f, int f32, int64_t n, int t,
+static const Py_ssize_t rigidsym_sizes_154[] = {6, 3, 3, 6};
+static int64_t rigidsym_call_154(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
@@ -1562,8 +1592,8 @@ static int64_t rigidsym_call_151(const rigidsym_fns *f, int f32, int64_t n, int 
     return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, double *))f->f64)(
         n, t, p[0], p[1], p[2], p[3]);
 }
-static const Py_ssize_t rigidsym_sizes_152[] = {3, 3, 36};
-static int64_t rigidsym_call_152(const rigidsym_fns *f, int f32, int64_t n, int t,
+static const Py_ssize_t rigidsym_sizes_155[] = {3, 3, 36};
+static int64_t rigidsym_call_155(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
@@ -1572,8 +1602,8 @@ static int64_t rigidsym_call_152(const rigidsym_fns *f, int f32, int64_t n, int 
     return ((int64_t (*)(int64_t, int, const double *, const double *, double *))f->f64)(
         n, t, p[0], p[1], p[2]);
 }
-static const Py_ssize_t rigidsym_sizes_153[] = {3, 3, 36, 108, 108};
-static int64_t rigidsym_call_153(const rigidsym_fns *f, int f32, int64_t n, int t,
+static const Py_ssize_t rigidsym_sizes_156[] = {3, 3, 36, 108, 108};
+static int64_t rigidsym_call_156(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
@@ -1582,8 +1612,8 @@ static int64_t rigidsym_call_153(const rigidsym_fns *f, int f32, int64_t n, int 
     return ((int64_t (*)(int64_t, int, const double *, const double *, double *, double *, double *))f->f64)(
         n, t, p[0], p[1], p[2], p[3], p[4]);
 }
-static const Py_ssize_t rigidsym_sizes_154[] = {6, 3, 3, 6, 36, 18, 18};
-static int64_t rigidsym_call_154(const rigidsym_fns *f, int f32, int64_t n, int t,
+static const Py_ssize_t rigidsym_sizes_157[] = {6, 3, 3, 6, 36, 18, 18};
+static int64_t rigidsym_call_157(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
@@ -1695,60 +1725,63 @@ static const rigidsym_kernel rigidsym_kernels[RIGIDSYM_NKERNELS] = {
     {"euler_rodrigues_product", 2, 1, rigidsym_sizes_98, rigidsym_call_98},
     {"euler_rodrigues_product_with_jacobians", 2, 3, rigidsym_sizes_99, rigidsym_call_99},
     {"exponential_coordinates_from_transform", 1, 1, rigidsym_sizes_100, rigidsym_call_100},
-    {"exponential_coordinates_left_jacobian", 1, 1, rigidsym_sizes_101, rigidsym_call_101},
-    {"exponential_coordinates_left_jacobian_inverse", 1, 1, rigidsym_sizes_102, rigidsym_call_102},
-    {"inertia_at_point", 4, 1, rigidsym_sizes_103, rigidsym_call_103},
-    {"inertia_at_point_with_jacobians", 4, 5, rigidsym_sizes_104, rigidsym_call_104},
-    {"inertia_dyad_at_point", 4, 1, rigidsym_sizes_105, rigidsym_call_105},
-    {"inertia_dyad_at_point_with_jacobians", 4, 5, rigidsym_sizes_106, rigidsym_call_106},
-    {"instant_screw_axis", 3, 3, rigidsym_sizes_107, rigidsym_call_107},
-    {"instant_screw_axis_with_jacobians", 3, 12, rigidsym_sizes_108, rigidsym_call_108},
-    {"instant_screw_point_pitch", 3, 2, rigidsym_sizes_109, rigidsym_call_109},
-    {"kinetic_energy", 4, 1, rigidsym_sizes_110, rigidsym_call_110},
-    {"kinetic_energy_with_jacobians", 4, 5, rigidsym_sizes_111, rigidsym_call_111},
-    {"moving_frame_acceleration", 7, 1, rigidsym_sizes_112, rigidsym_call_112},
-    {"moving_frame_acceleration_with_jacobians", 7, 8, rigidsym_sizes_113, rigidsym_call_113},
-    {"natural_invariants_from_rotation", 1, 2, rigidsym_sizes_114, rigidsym_call_114},
-    {"newton_euler_residual", 7, 1, rigidsym_sizes_115, rigidsym_call_115},
-    {"newton_euler_wrench", 5, 1, rigidsym_sizes_116, rigidsym_call_116},
-    {"newton_euler_wrench_with_jacobians", 5, 6, rigidsym_sizes_117, rigidsym_call_117},
-    {"plucker_from_points", 2, 1, rigidsym_sizes_118, rigidsym_call_118},
-    {"plucker_from_points_with_jacobians", 2, 3, rigidsym_sizes_119, rigidsym_call_119},
-    {"plucker_transfer", 3, 1, rigidsym_sizes_120, rigidsym_call_120},
-    {"plucker_transfer_with_jacobians", 3, 4, rigidsym_sizes_121, rigidsym_call_121},
-    {"point_acceleration", 5, 1, rigidsym_sizes_122, rigidsym_call_122},
-    {"point_acceleration_with_jacobians", 5, 6, rigidsym_sizes_123, rigidsym_call_123},
-    {"rotation_from_euler_rodrigues", 1, 1, rigidsym_sizes_124, rigidsym_call_124},
-    {"rotation_from_euler_rodrigues_with_jacobians", 1, 2, rigidsym_sizes_125, rigidsym_call_125},
-    {"rotation_from_natural_invariants", 2, 1, rigidsym_sizes_126, rigidsym_call_126},
-    {"rotation_from_natural_invariants_with_jacobians", 2, 3, rigidsym_sizes_127, rigidsym_call_127},
-    {"rotation_from_rotation_vector", 1, 1, rigidsym_sizes_128, rigidsym_call_128},
-    {"rotation_from_rotation_vector_with_jacobians", 1, 2, rigidsym_sizes_129, rigidsym_call_129},
-    {"rotation_vector_from_rotation", 1, 1, rigidsym_sizes_130, rigidsym_call_130},
-    {"rotation_vector_from_rotation_with_jacobians", 1, 2, rigidsym_sizes_131, rigidsym_call_131},
-    {"rotation_vector_left_jacobian", 1, 1, rigidsym_sizes_132, rigidsym_call_132},
-    {"rotation_vector_left_jacobian_inverse", 1, 1, rigidsym_sizes_133, rigidsym_call_133},
-    {"rotation_vector_left_jacobian_inverse_with_jacobians", 1, 2, rigidsym_sizes_134, rigidsym_call_134},
-    {"rotation_vector_left_jacobian_with_jacobians", 1, 2, rigidsym_sizes_135, rigidsym_call_135},
-    {"rotation_vector_right_jacobian", 1, 1, rigidsym_sizes_136, rigidsym_call_136},
-    {"rotation_vector_right_jacobian_inverse", 1, 1, rigidsym_sizes_137, rigidsym_call_137},
-    {"rotation_vector_right_jacobian_inverse_with_jacobians", 1, 2, rigidsym_sizes_138, rigidsym_call_138},
-    {"rotation_vector_right_jacobian_with_jacobians", 1, 2, rigidsym_sizes_139, rigidsym_call_139},
-    {"screw_axis_point", 4, 1, rigidsym_sizes_140, rigidsym_call_140},
-    {"screw_axis_point_with_jacobians", 4, 5, rigidsym_sizes_141, rigidsym_call_141},
-    {"screw_of_displacement", 3, 5, rigidsym_sizes_142, rigidsym_call_142},
-    {"transform_from_exponential_coordinates", 1, 1, rigidsym_sizes_143, rigidsym_call_143},
-    {"transform_from_exponential_coordinates_with_jacobians", 1, 2, rigidsym_sizes_144, rigidsym_call_144},
-    {"twist_transfer", 3, 1, rigidsym_sizes_145, rigidsym_call_145},
-    {"twist_transfer_matrix", 2, 1, rigidsym_sizes_146, rigidsym_call_146},
-    {"twist_transfer_matrix_with_jacobians", 2, 3, rigidsym_sizes_147, rigidsym_call_147},
-    {"twist_transfer_with_jacobians", 3, 4, rigidsym_sizes_148, rigidsym_call_148},
-    {"wrench_axis", 2, 3, rigidsym_sizes_149, rigidsym_call_149},
-    {"wrench_axis_with_jacobians", 2, 9, rigidsym_sizes_150, rigidsym_call_150},
-    {"wrench_transfer", 3, 1, rigidsym_sizes_151, rigidsym_call_151},
-    {"wrench_transfer_matrix", 2, 1, rigidsym_sizes_152, rigidsym_call_152},
-    {"wrench_transfer_matrix_with_jacobians", 2, 3, rigidsym_sizes_153, rigidsym_call_153},
-    {"wrench_transfer_with_jacobians", 3, 4, rigidsym_sizes_154, rigidsym_call_154},
+    {"exponential_coordinates_from_transform_with_jacobians", 1, 2, rigidsym_sizes_101, rigidsym_call_101},
+    {"exponential_coordinates_left_jacobian", 1, 1, rigidsym_sizes_102, rigidsym_call_102},
+    {"exponential_coordinates_left_jacobian_inverse", 1, 1, rigidsym_sizes_103, rigidsym_call_103},
+    {"exponential_coordinates_left_jacobian_inverse_with_jacobians", 1, 2, rigidsym_sizes_104, rigidsym_call_104},
+    {"exponential_coordinates_left_jacobian_with_jacobians", 1, 2, rigidsym_sizes_105, rigidsym_call_105},
+    {"inertia_at_point", 4, 1, rigidsym_sizes_106, rigidsym_call_106},
+    {"inertia_at_point_with_jacobians", 4, 5, rigidsym_sizes_107, rigidsym_call_107},
+    {"inertia_dyad_at_point", 4, 1, rigidsym_sizes_108, rigidsym_call_108},
+    {"inertia_dyad_at_point_with_jacobians", 4, 5, rigidsym_sizes_109, rigidsym_call_109},
+    {"instant_screw_axis", 3, 3, rigidsym_sizes_110, rigidsym_call_110},
+    {"instant_screw_axis_with_jacobians", 3, 12, rigidsym_sizes_111, rigidsym_call_111},
+    {"instant_screw_point_pitch", 3, 2, rigidsym_sizes_112, rigidsym_call_112},
+    {"kinetic_energy", 4, 1, rigidsym_sizes_113, rigidsym_call_113},
+    {"kinetic_energy_with_jacobians", 4, 5, rigidsym_sizes_114, rigidsym_call_114},
+    {"moving_frame_acceleration", 7, 1, rigidsym_sizes_115, rigidsym_call_115},
+    {"moving_frame_acceleration_with_jacobians", 7, 8, rigidsym_sizes_116, rigidsym_call_116},
+    {"natural_invariants_from_rotation", 1, 2, rigidsym_sizes_117, rigidsym_call_117},
+    {"newton_euler_residual", 7, 1, rigidsym_sizes_118, rigidsym_call_118},
+    {"newton_euler_wrench", 5, 1, rigidsym_sizes_119, rigidsym_call_119},
+    {"newton_euler_wrench_with_jacobians", 5, 6, rigidsym_sizes_120, rigidsym_call_120},
+    {"plucker_from_points", 2, 1, rigidsym_sizes_121, rigidsym_call_121},
+    {"plucker_from_points_with_jacobians", 2, 3, rigidsym_sizes_122, rigidsym_call_122},
+    {"plucker_transfer", 3, 1, rigidsym_sizes_123, rigidsym_call_123},
+    {"plucker_transfer_with_jacobians", 3, 4, rigidsym_sizes_124, rigidsym_call_124},
+    {"point_acceleration", 5, 1, rigidsym_sizes_125, rigidsym_call_125},
+    {"point_acceleration_with_jacobians", 5, 6, rigidsym_sizes_126, rigidsym_call_126},
+    {"rotation_from_euler_rodrigues", 1, 1, rigidsym_sizes_127, rigidsym_call_127},
+    {"rotation_from_euler_rodrigues_with_jacobians", 1, 2, rigidsym_sizes_128, rigidsym_call_128},
+    {"rotation_from_natural_invariants", 2, 1, rigidsym_sizes_129, rigidsym_call_129},
+    {"rotation_from_natural_invariants_with_jacobians", 2, 3, rigidsym_sizes_130, rigidsym_call_130},
+    {"rotation_from_rotation_vector", 1, 1, rigidsym_sizes_131, rigidsym_call_131},
+    {"rotation_from_rotation_vector_with_jacobians", 1, 2, rigidsym_sizes_132, rigidsym_call_132},
+    {"rotation_vector_from_rotation", 1, 1, rigidsym_sizes_133, rigidsym_call_133},
+    {"rotation_vector_from_rotation_with_jacobians", 1, 2, rigidsym_sizes_134, rigidsym_call_134},
+    {"rotation_vector_left_jacobian", 1, 1, rigidsym_sizes_135, rigidsym_call_135},
+    {"rotation_vector_left_jacobian_inverse", 1, 1, rigidsym_sizes_136, rigidsym_call_136},
+    {"rotation_vector_left_jacobian_inverse_with_jacobians", 1, 2, rigidsym_sizes_137, rigidsym_call_137},
+    {"rotation_vector_left_jacobian_with_jacobians", 1, 2, rigidsym_sizes_138, rigidsym_call_138},
+    {"rotation_vector_right_jacobian", 1, 1, rigidsym_sizes_139, rigidsym_call_139},
+    {"rotation_vector_right_jacobian_inverse", 1, 1, rigidsym_sizes_140, rigidsym_call_140},
+    {"rotation_vector_right_jacobian_inverse_with_jacobians", 1, 2, rigidsym_sizes_141, rigidsym_call_141},
+    {"rotation_vector_right_jacobian_with_jacobians", 1, 2, rigidsym_sizes_142, rigidsym_call_142},
+    {"screw_axis_point", 4, 1, rigidsym_sizes_143, rigidsym_call_143},
+    {"screw_axis_point_with_jacobians", 4, 5, rigidsym_sizes_144, rigidsym_call_144},
+    {"screw_of_displacement", 3, 5, rigidsym_sizes_145, rigidsym_call_145},
+    {"transform_from_exponential_coordinates", 1, 1, rigidsym_sizes_146, rigidsym_call_146},
+    {"transform_from_exponential_coordinates_with_jacobians", 1, 2, rigidsym_sizes_147, rigidsym_call_147},
+    {"twist_transfer", 3, 1, rigidsym_sizes_148, rigidsym_call_148},
+    {"twist_transfer_matrix", 2, 1, rigidsym_sizes_149, rigidsym_call_149},
+    {"twist_transfer_matrix_with_jacobians", 2, 3, rigidsym_sizes_150, rigidsym_call_150},
+    {"twist_transfer_with_jacobians", 3, 4, rigidsym_sizes_151, rigidsym_call_151},
+    {"wrench_axis", 2, 3, rigidsym_sizes_152, rigidsym_call_152},
+    {"wrench_axis_with_jacobians", 2, 9, rigidsym_sizes_153, rigidsym_call_153},
+    {"wrench_transfer", 3, 1, rigidsym_sizes_154, rigidsym_call_154},
+    {"wrench_transfer_matrix", 2, 1, rigidsym_sizes_155, rigidsym_call_155},
+    {"wrench_transfer_matrix_with_jacobians", 2, 3, rigidsym_sizes_156, rigidsym_call_156},
+    {"wrench_transfer_with_jacobians", 3, 4, rigidsym_sizes_157, rigidsym_call_157},
 };
 
 /* A buffer of C-contiguous float64 ('d') or float32 ('f') values holding at least `need`

@@ -7,7 +7,7 @@
  */
 #include "rigidsym_kernels.h"
 
-const rigidsym_fns RIGIDSYM_ISA_NAME(rigidsym_table)[155] = {
+const rigidsym_fns RIGIDSYM_ISA_NAME(rigidsym_table)[158] = {
     {(rigidsym_fn)RIGIDSYM_ISA_NAME(rigidsym_H_matrix_threads),
      (rigidsym_fn)RIGIDSYM_ISA_NAME(rigidsym_H_matrix_f32_threads)},
     {(rigidsym_fn)RIGIDSYM_ISA_NAME(rigidsym_H_matrix_dot_threads),
@@ -210,10 +210,16 @@ const rigidsym_fns RIGIDSYM_ISA_NAME(rigidsym_table)[155] = {
      (rigidsym_fn)RIGIDSYM_ISA_NAME(rigidsym_euler_rodrigues_product_with_jacobians_f32_threads)},
     {(rigidsym_fn)RIGIDSYM_ISA_NAME(rigidsym_exponential_coordinates_from_transform_threads),
      (rigidsym_fn)RIGIDSYM_ISA_NAME(rigidsym_exponential_coordinates_from_transform_f32_threads)},
+    {(rigidsym_fn)RIGIDSYM_ISA_NAME(rigidsym_exponential_coordinates_from_transform_with_jacobians_threads),
+     (rigidsym_fn)RIGIDSYM_ISA_NAME(rigidsym_exponential_coordinates_from_transform_with_jacobians_f32_threads)},
     {(rigidsym_fn)RIGIDSYM_ISA_NAME(rigidsym_exponential_coordinates_left_jacobian_threads),
      (rigidsym_fn)RIGIDSYM_ISA_NAME(rigidsym_exponential_coordinates_left_jacobian_f32_threads)},
     {(rigidsym_fn)RIGIDSYM_ISA_NAME(rigidsym_exponential_coordinates_left_jacobian_inverse_threads),
      (rigidsym_fn)RIGIDSYM_ISA_NAME(rigidsym_exponential_coordinates_left_jacobian_inverse_f32_threads)},
+    {(rigidsym_fn)RIGIDSYM_ISA_NAME(rigidsym_exponential_coordinates_left_jacobian_inverse_with_jacobians_threads),
+     (rigidsym_fn)RIGIDSYM_ISA_NAME(rigidsym_exponential_coordinates_left_jacobian_inverse_with_jacobians_f32_threads)},
+    {(rigidsym_fn)RIGIDSYM_ISA_NAME(rigidsym_exponential_coordinates_left_jacobian_with_jacobians_threads),
+     (rigidsym_fn)RIGIDSYM_ISA_NAME(rigidsym_exponential_coordinates_left_jacobian_with_jacobians_f32_threads)},
     {(rigidsym_fn)RIGIDSYM_ISA_NAME(rigidsym_inertia_at_point_threads),
      (rigidsym_fn)RIGIDSYM_ISA_NAME(rigidsym_inertia_at_point_f32_threads)},
     {(rigidsym_fn)RIGIDSYM_ISA_NAME(rigidsym_inertia_at_point_with_jacobians_threads),

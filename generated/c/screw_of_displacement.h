@@ -6,8 +6,16 @@
  * template: c_kernel.h.j2
  * math hash: sha256:24c2ead304ca194c
  * sympy 1.14.0, rigidsym 0.2.0
- * operations: 565
+ * operations: 571
  * branches: near_pi_0, near_pi_1, near_pi_2, main
+ * accuracy rewrite (near_pi_1): compensated sums of products (p0): a dot product (or a cross
+ *     product's component plus a term) that cancels loses u sum |a_i b_i| / |s| relative when
+ *     summed plainly; compensated (Dot2 of Ogita, Rump and Oishi,
+ *     rigidsym.codegen.compensated.SumProd) it keeps about 1 u; worst ratio to the rule max(2
+ *     e_best, 4 u) (e_best: the most accurate of the textbook formula and the forms tried, per
+ *     point; rigidsym.codegen.rule) at 9 points of the regimes (rigidsym.codegen.regimes,
+ *     exact, rounded to float64) 1.5 -> 0.47, never worse than the textbook formula by that
+ *     rule; equal to the declared formula by the zero test (exact-cancel)
  * accuracy rewrite (main): the axis point from the skew part of Q: (Q - 1)^T (Q a - a') reads
  *     the diagonal of Q, whose rounding is relative u/phi of it as phi -> 0; cot(phi/2)/2 e x
  *     c + (c - e (e.c))/2 from vect(Q) and tr Q reads the axis from the skew part (valid where
@@ -26,7 +34,7 @@
  * the rule of issue 37 allows, max(2 e_textbook, 4 u), per output, normwise, at its
  * points where the kernel computed in double is within it). In double:
  *   branch 1: x3, x9, x16, x17, x19, x20, x22, x24, x27, x37, pitch[0]
- *   branch 2: x4, x6, x7, x8, x9, x14, x15, x16, x17, x19, x21, x24, x34, pitch[0]
+ *   branch 2: x4, x6, x7, x8, x9, x14, x15, x16, x17, x19, x31, pitch[0], plucker[3], plucker[5]
  *   branch 3: x2, x7, x8, x15, x16, x17, x18, x25, x35, pitch[0]
  *   branch 4: x1, x2, x4, x5, x9, x10, x11, x12, x13, x14, x15, x16, x17, x21, x28, x29, x31, x32, x33, x34, x35, x36, x37, pitch[0]
  */
@@ -148,46 +156,49 @@ static inline int rigidsym_screw_of_displacement_sample(
         const double x16 = x13*x4;
         const double x17 = atan2(sqrt((x10*x10) + (x11*x11) + (x12*x12)), (0.5)*Q_11 + x6);
         const double x18 = -a_prime_1;
-        const double x19 = Q_10*a_0 + Q_11*a_1 + Q_12*a_2 + x18;
+        const double x19 = rigidsym_sumprod4(Q_10, a_0, Q_11, a_1, Q_12, a_2, x18, 1.0);
         const double x20 = -a_prime_2;
-        const double x21 = Q_20*a_0 + Q_21*a_1 + Q_22*a_2 + x20;
+        const double x21 = rigidsym_sumprod4(Q_20, a_0, Q_21, a_1, Q_22, a_2, x20, 1.0);
         const double x22 = Q_00 - 1.0;
         const double x23 = -a_prime_0;
-        const double x24 = Q_00*a_0 + Q_01*a_1 + Q_02*a_2 + x23;
-        const double x25 = Q_10*x19 + Q_20*x21 + x22*x24;
-        const double x26 = Q_11 - 1.0;
-        const double x27 = Q_22 - 1.0;
-        const double x28 = -(x22) - (x26) - (x27);
-        const double x29 = 1.0/x28;
-        const double x30 = Q_01*x24 + Q_21*x21 + x19*x26;
-        const double x31 = Q_02*x24 + Q_12*x19 + x21*x27;
-        const double x32 = 1.0/x9;
-        const double x33 = x2*x32 + x32*x5 + x32*x8;
-        const double x34 = 1.0/sqrt(x33);
-        const double x35 = x14*x34;
-        const double x36 = x15*x34;
-        const double x37 = x16*x34;
+        const double x24 = rigidsym_sumprod4(Q_00, a_0, Q_01, a_1, Q_02, a_2, x23, 1.0);
+        const double x25 = Q_11 - 1.0;
+        const double x26 = Q_22 - 1.0;
+        const double x27 = -(x22) - (x25) - (x26);
+        const double x28 = 1.0/x27;
+        const double x29 = 1.0/x9;
+        const double x30 = x2*x29 + x29*x5 + x29*x8;
+        const double x31 = 1.0/sqrt(x30);
+        const double x32 = x14*x31;
+        const double x33 = x15*x31;
+        const double x34 = x16*x31;
+        const double x35 = Q_00*a_0 + Q_01*a_1 + Q_02*a_2 + x23;
+        const double x36 = Q_20*a_0 + Q_21*a_1 + Q_22*a_2 + x20;
+        const double x37 = Q_10*a_0 + Q_11*a_1 + Q_12*a_2 + x18;
+        const double x38 = Q_01*x35 + Q_21*x36 + x25*x37;
+        const double x39 = Q_02*x35 + Q_12*x37 + x26*x36;
+        const double x40 = Q_10*x37 + Q_20*x36 + x22*x35;
         out_e[0] = x14;
         out_e[1] = x15;
         out_e[2] = x16;
         out_phi[0] = x17;
-        out_p0[0] = x25*x29;
-        out_p0[1] = x29*x30;
-        out_p0[2] = x29*x31;
+        out_p0[0] = x28*rigidsym_sumprod3(Q_10, x19, Q_20, x21, x22, x24);
+        out_p0[1] = x28*rigidsym_sumprod3(Q_01, x24, Q_21, x21, x25, x19);
+        out_p0[2] = x28*rigidsym_sumprod3(Q_02, x24, Q_12, x19, x26, x21);
         out_pitch[0] = (x14*(-a_0 - x23) + x15*(-a_1 - x18) + x16*(-a_2 - x20))/x17;
-        out_plucker[0] = x35;
-        out_plucker[1] = x36;
-        out_plucker[2] = x37;
-        out_plucker[3] = x29*x30*x37 - x29*x31*x36;
-        out_plucker[4] = -x25*x29*x37 + x29*x31*x35;
-        out_plucker[5] = x25*x29*x36 - x29*x30*x35;
-        singular |= (x33) == 0.0;
+        out_plucker[0] = x32;
+        out_plucker[1] = x33;
+        out_plucker[2] = x34;
+        out_plucker[3] = -x28*x33*x39 + x28*x34*x38;
+        out_plucker[4] = x28*x32*x39 - x28*x34*x40;
+        out_plucker[5] = -x28*x32*x38 + x28*x33*x40;
+        singular |= (x30) == 0.0;
         singular |= (x9) == 0.0;
-        singular |= (x28) == 0.0;
+        singular |= (x27) == 0.0;
         singular |= (x17) == 0.0;
         /* quantities that can be non-finite for finite inputs (divisions, roots):
          * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
-        const double finite = ((((x13 - x13) + (x17 - x17)) + ((x29 - x29) + ((x32 - x32) + (x34 - x34)))) + (((out_pitch[0] - out_pitch[0]) + (x9 - x9)) + ((((x10*x10) + (x11*x11) + (x12*x12)) - ((x10*x10) + (x11*x11) + (x12*x12))) + ((x28 - x28) + (x33 - x33)))));
+        const double finite = ((((x13 - x13) + (x17 - x17)) + ((x28 - x28) + ((x29 - x29) + (x31 - x31)))) + (((out_pitch[0] - out_pitch[0]) + (x9 - x9)) + ((((x10*x10) + (x11*x11) + (x12*x12)) - ((x10*x10) + (x11*x11) + (x12*x12))) + ((x27 - x27) + (x30 - x30)))));
         singular |= finite != finite;
     } else if (Q_22 >= Q_00 && Q_22 >= Q_11 && Q_00 + Q_11 + Q_22 < 0.0) {
         const double x0 = (0.5)*Q_02;
@@ -435,44 +446,47 @@ static inline int rigidsym_screw_of_displacement_sample_f32(
         const double x16 = ((double)x13)*x4;
         const double x17 = atan2(sqrt((((double)x10)*((double)x10)) + (((double)x11)*((double)x11)) + (((double)x12)*((double)x12))), (0.5)*((double)Q_11) + x6);
         const float x18 = -a_prime_1;
-        const double x19 = ((double)Q_10)*((double)a_0) + ((double)Q_11)*((double)a_1) + ((double)Q_12)*((double)a_2) + ((double)x18);
+        const double x19 = rigidsym_sumprod4(((double)Q_10), ((double)a_0), ((double)Q_11), ((double)a_1), ((double)Q_12), ((double)a_2), ((double)x18), 1.0);
         const float x20 = -a_prime_2;
-        const double x21 = ((double)Q_20)*((double)a_0) + ((double)Q_21)*((double)a_1) + ((double)Q_22)*((double)a_2) + ((double)x20);
+        const float x21 = rigidsym_sumprod4(Q_20, a_0, Q_21, a_1, Q_22, a_2, x20, 1.0f);
         const float x22 = Q_00 - 1.0f;
         const float x23 = -a_prime_0;
-        const double x24 = ((double)Q_00)*((double)a_0) + ((double)Q_01)*((double)a_1) + ((double)Q_02)*((double)a_2) + ((double)x23);
-        const float x25 = Q_10*x19 + Q_20*x21 + x22*x24;
-        const float x26 = Q_11 - 1.0f;
-        const float x27 = Q_22 - 1.0f;
-        const float x28 = -(x22) - (x26) - (x27);
-        const float x29 = 1.0f/x28;
-        const float x30 = Q_01*x24 + Q_21*x21 + x19*x26;
-        const float x31 = Q_02*x24 + Q_12*x19 + x21*x27;
-        const float x32 = 1.0f/x9;
-        const float x33 = x2*x32 + x32*x5 + x32*x8;
-        const double x34 = 1.0/sqrt(((double)x33));
-        const float x35 = x14*x34;
-        const float x36 = x15*x34;
-        const float x37 = x16*x34;
+        const float x24 = rigidsym_sumprod4(Q_00, a_0, Q_01, a_1, Q_02, a_2, x23, 1.0f);
+        const float x25 = Q_11 - 1.0f;
+        const float x26 = Q_22 - 1.0f;
+        const float x27 = -(x22) - (x25) - (x26);
+        const float x28 = 1.0f/x27;
+        const float x29 = 1.0f/x9;
+        const float x30 = x2*x29 + x29*x5 + x29*x8;
+        const double x31 = 1.0/sqrt(((double)x30));
+        const float x32 = x14*x31;
+        const float x33 = x15*x31;
+        const float x34 = x16*x31;
+        const float x35 = Q_00*a_0 + Q_01*a_1 + Q_02*a_2 + x23;
+        const float x36 = Q_20*a_0 + Q_21*a_1 + Q_22*a_2 + x20;
+        const float x37 = Q_10*a_0 + Q_11*a_1 + Q_12*a_2 + x18;
+        const float x38 = Q_01*x35 + Q_21*x36 + x25*x37;
+        const float x39 = Q_02*x35 + Q_12*x37 + x26*x36;
+        const float x40 = Q_10*x37 + Q_20*x36 + x22*x35;
         out_e[0] = x14;
         out_e[1] = x15;
         out_e[2] = x16;
         out_phi[0] = x17;
-        out_p0[0] = x25*x29;
-        out_p0[1] = x29*x30;
-        out_p0[2] = x29*x31;
+        out_p0[0] = x28*rigidsym_sumprod3(Q_10, x19, Q_20, x21, x22, x24);
+        out_p0[1] = x28*rigidsym_sumprod3(Q_01, x24, Q_21, x21, x25, x19);
+        out_p0[2] = x28*rigidsym_sumprod3(Q_02, x24, Q_12, x19, x26, x21);
         out_pitch[0] = (x14*(-((double)a_0) - ((double)x23)) + x15*(-((double)a_1) - ((double)x18)) + x16*(-((double)a_2) - ((double)x20)))/x17;
-        out_plucker[0] = x35;
-        out_plucker[1] = x36;
-        out_plucker[2] = x37;
-        out_plucker[3] = x29*x30*x37 - x29*x31*x36;
-        out_plucker[4] = -x25*x29*x37 + x29*x31*x35;
-        out_plucker[5] = x25*x29*x36 - x29*x30*x35;
-        singular |= (((double)x33)) == 0.0;
+        out_plucker[0] = x32;
+        out_plucker[1] = x33;
+        out_plucker[2] = x34;
+        out_plucker[3] = -((double)x28)*((double)x33)*((double)x39) + ((double)x28)*((double)x34)*((double)x38);
+        out_plucker[4] = x28*x32*x39 - x28*x34*x40;
+        out_plucker[5] = -((double)x28)*((double)x32)*((double)x38) + ((double)x28)*((double)x33)*((double)x40);
+        singular |= (((double)x30)) == 0.0;
         singular |= (x9) == 0.0;
-        singular |= (((double)x28)) == 0.0;
+        singular |= (((double)x27)) == 0.0;
         singular |= (x17) == 0.0;
-        const double finite = ((((x13 - x13) + (x17 - x17)) + ((x29 - x29) + ((x32 - x32) + (x34 - x34)))) + (((out_pitch[0] - out_pitch[0]) + (x9 - x9)) + ((((x10*x10) + (x11*x11) + (x12*x12)) - ((x10*x10) + (x11*x11) + (x12*x12))) + ((x28 - x28) + (x33 - x33)))));
+        const double finite = ((((x13 - x13) + (x17 - x17)) + ((x28 - x28) + ((x29 - x29) + (x31 - x31)))) + (((out_pitch[0] - out_pitch[0]) + (x9 - x9)) + ((((x10*x10) + (x11*x11) + (x12*x12)) - ((x10*x10) + (x11*x11) + (x12*x12))) + ((x27 - x27) + (x30 - x30)))));
         singular |= finite != finite;
     } else if (((double)Q_22) >= ((double)Q_00) && ((double)Q_22) >= ((double)Q_11) && ((double)Q_00) + ((double)Q_11) + ((double)Q_22) < 0.0) {
         const float x0 = (0.5f)*Q_02;

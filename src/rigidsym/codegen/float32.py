@@ -42,7 +42,7 @@ import math
 import numpy as np
 
 from rigidsym.codegen import rule
-from rigidsym.codegen.compensated import diffprod
+from rigidsym.codegen.compensated import diffprod, sumprod
 from rigidsym.codegen.float32_points import (  # noqa: F401  (the planner's points, re-exported)
     N_RANDOM,
     RANGE32,
@@ -97,7 +97,12 @@ def _diffprod64(*args):
     return diffprod(*(np.asarray(a, dtype=_F64) for a in args))
 
 
-_GLOBALS = {"numpy": _Shim(), "_diffprod": _diffprod64}
+def _sumprod64(*args):
+    # and rigidsym_sumprod<n>
+    return sumprod(*(np.asarray(a, dtype=_F64) for a in args))
+
+
+_GLOBALS = {"numpy": _Shim(), "_diffprod": _diffprod64, "_sumprod": _sumprod64}
 
 
 class ProgramSpec:

@@ -45,6 +45,7 @@ from rigidsym.codegen.printers import KernelCPrinter, KernelNumPyPrinter
 from rigidsym.codegen.removable import rewrite as removable
 from rigidsym.codegen.spec import Kernel, flat_symbols, input_symbols
 from rigidsym.codegen.spec import flatten_outputs as _flatten
+from rigidsym.codegen.vjp import jacobian_program
 
 __all__ = ["generate", "write", "check", "GenerationResult", "default_out_dir", "TEMPLATES"]
 
@@ -86,35 +87,61 @@ class GenerationResult:
 
 
 def compile_kernel(kernel: Kernel) -> KernelCode:
-    """Build, hash and optimise every variant of ``kernel``."""
-    syms = input_symbols(kernel)
-    angles = [syms[a.name] for a in kernel.args
+    """Build, hash and optimise every variant of ``kernel`` (of a Jacobian kernel
+    ``jacobian_from="program"``: its values' variants, each then differentiated)."""
+    of = kernel.jacobian_of if kernel.jacobian_from == "program" else None
+    spec = of or kernel
+    syms = input_symbols(spec)
+    angles = [syms[a.name] for a in spec.args
               if (k := _kinds.for_spec(a.kind, a.shape)) is not None and k.half_angle]
     parts: list = []
     variants = []
     chosen: list[Chosen] = []
-    sflat = [s for _, ss in flat_symbols(kernel) for s in ss]
+    sflat = [s for _, ss in flat_symbols(spec) for s in ss]
     before: list = []     # float predicates of the branches tried before (accuracy points)
-    for br in kernel.branches:
+    for br in spec.branches:
         cond = br.when(**syms)
-        flat = _flatten(kernel, br.build(**syms))
+        flat = _flatten(spec, br.build(**syms))
         parts += [cond, *flat]
         fcond = sp.lambdify(sflat, cond, modules="math")
-        flat, got = improve(kernel, br.name, flat, syms, sflat, list(before), fcond)
+        flat, got = improve(spec, br.name, flat, syms, sflat, list(before), fcond)
         flat = removable(flat)
         before.append(fcond)
         chosen += got
         variants.append(Variant(br.name, compile_program(flat, angles), cond))
-    flat = _flatten(kernel, kernel.build(**syms))
+    flat = _flatten(spec, spec.build(**syms))
     parts += flat
-    flat, got = improve(kernel, "main", flat, syms, sflat, before)
+    flat, got = improve(spec, "main", flat, syms, sflat, before)
     flat = removable(flat)
     chosen += got
     variants.append(Variant("main", compile_program(flat, angles), None))
+    if of is not None:
+        args = [ss for _, ss in flat_symbols(of)]
+        sizes = [o.size for o in of.outputs]
+        for v in variants:
+            v.program = jacobian_program(v.program, args, sizes)
+        parts.append(sp.Symbol("forward_mode_over_the_program"))
     ops = sum(v.program.ops for v in variants)
     kc = KernelCode(kernel, variants, math_hash(parts), ops, flat_symbols(kernel), chosen)
-    kc.plan32 = plan_kernel(kernel, variants, _trig_split(kc))
+    kc.plan32 = plan_kernel(kernel, variants, _trig_split(kc)) if of is None else \
+        _double_plan(kc)
     return kc
+
+
+def _double_plan(kc: KernelCode) -> dict:
+    """The float32 plan of a Jacobian kernel differentiated over its program: every node in
+    double, the outputs rounded to float once (error <= u/2 per entry: 1/8 of the rule's 4 u
+    floor). The plan search (:func:`rigidsym.codegen.float32.plan_kernel`) runs the program
+    twice per node, so its time grows as the square of the nodes: 180 s for the 1760 of
+    ``exponential_coordinates_left_jacobian_inverse_with_jacobians``."""
+    def plan(prog, trig=()) -> dict:
+        nodes = [*trig, *(str(s) for s, _ in prog.temps),
+                 *(f"out:{j}" for j in range(len(prog.outputs)))]
+        return {"plan": dict.fromkeys(nodes, "d"), "error": 0.125}
+    split = _trig_split(kc)
+    if split is not None:
+        return {"trig": plan(split["program"], list(split["calls"])), "variants": None}
+    return {"trig": None, "variants": [plan(v.program) for v in kc.variants]}
 
 
 _TODO: list = []

@@ -97,16 +97,17 @@ def with_jacobians(kernel: Kernel) -> Kernel:
                             f"d {o.name} / d {a.name}, shape {o.shape} + {a.shape}"))
 
     singular = kernel.singular
-    branches = tuple(Branch(br.name, br.when, _differentiated(kernel, br.build), br.doc)
+    how = _by_program if kernel.jacobian_from == "program" else _differentiated
+    branches = tuple(Branch(br.name, br.when, how(kernel, br.build), br.doc)
                      for br in kernel.branches)
     return Kernel(
         name=jacobian_name(kernel.name),
         summary=f"{kernel.summary.rstrip('.')}, with the Jacobians of its outputs.",
         formula=f"{kernel.formula}; and d(output)/d(input) by sympy on the declared formula",
         ids=kernel.ids, sources=kernel.sources, args=kernel.args, outputs=tuple(outs),
-        build=_differentiated(kernel, kernel.build), singular=singular,
+        build=how(kernel, kernel.build), singular=singular,
         singular_arg=kernel.singular_arg, branches=branches, notes=kernel.notes,
-        public=False, jacobian=False)
+        public=False, jacobian=False, jacobian_from=kernel.jacobian_from, jacobian_of=kernel)
 
 
 def _differentiated(kernel: Kernel, value_build):
@@ -124,6 +125,37 @@ def _differentiated(kernel: Kernel, value_build):
                 # index first, then input index)
                 d = [sp.diff(fi, x) for fi in f for x in xs]
                 res[derivative_name(o.name, a.name)] = _shaped(d, o.shape + a.shape)
+        return res
+    return build
+
+
+def _by_program(kernel: Kernel, value_build):
+    """As :func:`_differentiated`, the chain rule over the declared formula's common
+    subexpressions (``sympy.cse``, each small temp differentiated by sympy alone:
+    :func:`rigidsym.codegen.vjp.jacobian_program`) instead of ``sympy.diff`` of the expanded
+    tree; the same derivative, a graph of shared subexpressions (for the references: the
+    generator differentiates its own optimised program, ``Kernel.jacobian_from``)."""
+    from rigidsym.codegen.optimise import Program
+    from rigidsym.codegen.spec import flatten_outputs
+    from rigidsym.codegen.vjp import jacobian_program
+
+    def build(**syms):
+        values = value_build(**syms)
+        flat = flatten_outputs(kernel, values)
+        temps, red = sp.cse(flat, symbols=sp.numbered_symbols("_v"), order="canonical")
+        args = [xs for _, xs in flat_symbols(kernel)]
+        p = jacobian_program(Program(list(temps), list(red), [], 0), args,
+                             [o.size for o in kernel.outputs])
+        env: dict = {}
+        for x, e in p.temps:
+            env[x] = e.xreplace(env)
+        d = [sp.sympify(o).xreplace(env) for o in p.outputs[len(flat):]]
+        res = dict(values)
+        for o in kernel.outputs:
+            for a in kernel.args:
+                n = o.size * a.size
+                res[derivative_name(o.name, a.name)] = _shaped(d[:n], o.shape + a.shape)
+                d = d[n:]
         return res
     return build
 

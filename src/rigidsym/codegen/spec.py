@@ -137,6 +137,8 @@ class Kernel:
     public: bool = True
     jacobian: bool = True
     branch_jacobian: bool = False
+    jacobian_from: str = "formula"
+    jacobian_of: Kernel | None = None
 
 
 def input_symbols(kernel: Kernel) -> dict:
