@@ -900,7 +900,7 @@ def instant_screw_axis(
 
         Accuracy: error <= 1.15 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 79 ulp in float64) over 5 regimes (docs/accuracy.md, kernels.accuracy); singular when omega = 0 (pure translation), flagged where ||omega||^2 == 0 in floating point: omega == 0; a square underflows to 0 only for ||omega|| < 1.5e-162 (float64), < 1e-19 (float32 arithmetic), which benchmarks/accuracy.py calls below the smallest useful step.
 
-        Generated; 56 operations; math hash bbbb3fe59daee446.
+        Generated; 52 operations; math hash bbbb3fe59daee446.
     """
     return _F.instant_screw_axis(omega, a, a_dot, out, check, on_singular, threads)
 
@@ -943,7 +943,7 @@ def kinetic_energy(
     Notes:
         Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 2 ulp in float64) over 5 regimes (docs/accuracy.md, kernels.accuracy).
 
-        Generated; 33 operations; math hash 59e2107c6b1479ae.
+        Generated; 21 operations; math hash 59e2107c6b1479ae.
     """
     return _F.kinetic_energy(I_C, m, omega, c_dot, out, check, on_singular, threads)
 
@@ -1614,7 +1614,7 @@ def screw_of_displacement(
 
         Accuracy: error <= 1.59 u (kappa + 1) in float64, <= 1.29 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 1.59e+16 ulp in float64) over 9 regimes (docs/accuracy.md, kernels.accuracy); singular when phi = 0 (pure translation: no axis, infinite pitch), flagged where ||Q - Q^T||^2 == 0 with tr Q >= 0 (the main build, after the rewrite of 1 - cos phi from the skew part of Q): Q exactly symmetric in floating point, phi below the rounding of Q (about 1e-16 in float64, 6e-8 in float32); before the rewrite 3 - tr Q == 0 flagged up to phi ~ 1.5e-8.
 
-        Generated; 565 operations; math hash 24c2ead304ca194c.
+        Generated; 571 operations; math hash 24c2ead304ca194c.
     """
     return _F.screw_of_displacement(Q, a, a_prime, out, check, on_singular, threads)
 
@@ -1777,7 +1777,7 @@ def wrench_axis(
 
         Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 104 ulp in float64) over 5 regimes (docs/accuracy.md, kernels.accuracy); singular when f = 0 (pure moment), flagged where ||f||^2 == 0 in floating point: f == 0; a square underflows to 0 only for ||f|| < 1.5e-162 (float64), < 1e-19 (float32 arithmetic), which benchmarks/accuracy.py calls below the smallest useful step.
 
-        Generated; 59 operations; math hash 6e28211949601ec4.
+        Generated; 55 operations; math hash 6e28211949601ec4.
     """
     return _F.wrench_axis(w_A, a, out, check, on_singular, threads)
 

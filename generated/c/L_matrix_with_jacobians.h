@@ -12,10 +12,10 @@
  * L_matrix(e, phi), 4x3; and d(output)/d(input) by sympy on the declared formula
  *
  * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
- * measured at generation, rigidsym.codegen.float32; worst error 0.597 of what
+ * measured at generation, rigidsym.codegen.float32; worst error 0.739 of what
  * the rule of issue 37 allows, max(2 e_textbook, 4 u), per output, normwise, at its
- * points). In double:
- *   trig_0, x3
+ * points where the kernel computed in double is within it). In double:
+ *   trig_0, x3, x4, x5
  */
 #ifndef RIGIDSYM_L_MATRIX_WITH_JACOBIANS_H
 #define RIGIDSYM_L_MATRIX_WITH_JACOBIANS_H
@@ -293,8 +293,8 @@ static inline int rigidsym_L_matrix_with_jacobians_sample_trig_f32(
         const float x0 = (e_2*e_2);
         const float x1 = 1.0f - x0;
         const double x3 = trig_0;
-        const float x4 = (x3*x3);
-        const float x5 = 2.0f*x4;
+        const double x4 = (x3*x3);
+        const double x5 = 2.0*x4;
         const float x6 = 1.0f - x5;
         const float x7 = (0.5f)*x6;
         const float x8 = (0.5f)*x0 + x1*x7;

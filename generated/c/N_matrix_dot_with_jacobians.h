@@ -13,10 +13,10 @@
  * Singular set: phi = 0 (mod 2 pi): the axis is undefined
  *
  * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
- * measured at generation, rigidsym.codegen.float32; worst error 0.94 of what
+ * measured at generation, rigidsym.codegen.float32; worst error 0.815 of what
  * the rule of issue 37 allows, max(2 e_textbook, 4 u), per output, normwise, at its
- * points). In double:
- *   trig_0, x7, x18
+ * points where the kernel computed in double is within it). In double:
+ *   trig_0, trig_1, x0, x7, x8, x11, x17, x18, x19, x21, x22, x33, x40, x149, x151
  */
 #ifndef RIGIDSYM_N_MATRIX_DOT_WITH_JACOBIANS_H
 #define RIGIDSYM_N_MATRIX_DOT_WITH_JACOBIANS_H
@@ -671,7 +671,7 @@ static inline int rigidsym_N_matrix_dot_with_jacobians_sample_trig_f32(
     const float *RIGIDSYM_RESTRICT in_phi,
     const float *RIGIDSYM_RESTRICT in_omega,
     const double trig_0,
-    const float trig_1,
+    const double trig_1,
     float *RIGIDSYM_RESTRICT out_N_matrix_dot,
     float *RIGIDSYM_RESTRICT out_N_matrix_dot_D_e,
     float *RIGIDSYM_RESTRICT out_N_matrix_dot_D_phi,
@@ -686,28 +686,28 @@ static inline int rigidsym_N_matrix_dot_with_jacobians_sample_trig_f32(
     const float omega_2 = in_omega[2];
     int singular = 0;
     {
-        const float x0 = e_0*omega_0;
+        const double x0 = ((double)e_0)*((double)omega_0);
         const float x1 = 4.0f*x0;
         const float x2 = e_1*omega_1;
         const float x3 = 2.0f*x2;
         const float x4 = e_2*omega_2;
         const float x5 = 2.0f*x4;
         const double x7 = trig_0;
-        const float x8 = (x7*x7);
+        const double x8 = (x7*x7);
         const float x9 = 1.0f - 2.0f*x8;
         const float x10 = 2.0f*x0;
-        const float x11 = trig_1;
+        const double x11 = trig_1;
         const float x12 = e_1*omega_2;
         const float x13 = e_2*omega_1;
         const float x14 = -x13;
         const float x15 = x12 + x14;
         const float x16 = (e_0*e_0);
-        const float x17 = 6.0f - 4.0f*x8;
-        const double x18 = ((double)x0) + ((double)x2);
-        const float x19 = x18 + x4;
+        const double x17 = 6.0 - 4.0*x8;
+        const double x18 = x0 + ((double)x2);
+        const double x19 = x18 + ((double)x4);
         const float x20 = 4.0f*e_0*x11*x15*x7 - x1 - x10*x9 + x16*x17*x19 - x3 - x5;
-        const float x21 = 1.0f/x8;
-        const float x22 = (0.125f)*x21;
+        const double x21 = 1.0/x8;
+        const double x22 = (0.125)*x21;
         const float x23 = e_0*omega_1;
         const float x24 = 2.0f*x23;
         const float x25 = e_1*omega_0;
@@ -718,14 +718,14 @@ static inline int rigidsym_N_matrix_dot_with_jacobians_sample_trig_f32(
         const float x30 = 2.0f*x29;
         const float x31 = e_0*omega_2;
         const float x32 = -e_2*omega_0;
-        const float x33 = -x31 - x32;
+        const double x33 = -((double)x31) - ((double)x32);
         const float x34 = e_0*x33 + e_1*x15;
         const float x35 = -e_0*e_1*x17*x19 - 2.0f*x11*x34*x7;
         const float x36 = -x24 - x26*x9 - x28*x30 - x35;
         const float x37 = 2.0f*x31;
         const float x38 = e_2*omega_0;
         const float x39 = 2.0f*x38;
-        const float x40 = e_1*x19;
+        const double x40 = ((double)e_1)*x19;
         const float x41 = -omega_1 + x40;
         const float x42 = -x41;
         const float x43 = -x25;
@@ -834,9 +834,9 @@ static inline int rigidsym_N_matrix_dot_with_jacobians_sample_trig_f32(
         const float x146 = 2.0f*e_0;
         const float x147 = x146*x9;
         const float x148 = x19*x95;
-        const float x149 = (0.125f)*x11/(x7*x7*x7);
+        const double x149 = (0.125)*x11/(x7*x7*x7);
         const float x150 = 4.0f*e_0;
-        const float x151 = x150*x29;
+        const double x151 = ((double)x150)*((double)x29);
         const float x152 = x151*x40 - x34*x9;
         const float x153 = x151*x27 - x45*x9;
         const float x154 = 2.0f*e_1;

@@ -12,9 +12,9 @@
  * omega = W eta_dot; and d(output)/d(input) by sympy on the declared formula
  *
  * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
- * measured at generation, rigidsym.codegen.float32; worst error 0.248 of what
+ * measured at generation, rigidsym.codegen.float32; worst error 0.249 of what
  * the rule of issue 37 allows, max(2 e_textbook, 4 u), per output, normwise, at its
- * points). In double:
+ * points where the kernel computed in double is within it). In double:
  *   none
  */
 #ifndef RIGIDSYM_EULER_RATE_MATRIX_ZYX_BODY_WITH_JACOBIANS_H

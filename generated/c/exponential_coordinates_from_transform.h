@@ -13,13 +13,13 @@
  * w = Log(R), v = J_l(w)^-1 p; below pi/4 in s = norm of vect(R) alone (asin, sqrt(1 - s^2)), near pi the symmetric part of R
  *
  * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
- * measured at generation, rigidsym.codegen.float32; worst error 0.656 of what
+ * measured at generation, rigidsym.codegen.float32; worst error 0.75 of what
  * the rule of issue 37 allows, max(2 e_textbook, 4 u), per output, normwise, at its
- * points). In double:
- *   branch 1: none
+ * points where the kernel computed in double is within it). In double:
+ *   branch 1: x37, x39, x40
  *   branch 2: none
  *   branch 3: none
- *   branch 4: x5
+ *   branch 4: xi[3], xi[4], xi[5]
  *   branch 5: none
  */
 #ifndef RIGIDSYM_EXPONENTIAL_COORDINATES_FROM_TRANSFORM_H
@@ -342,10 +342,10 @@ static inline int rigidsym_exponential_coordinates_from_transform_sample_f32(
         const float x34 = x33*x9;
         const float x35 = (0.5f)*x20;
         const float x36 = x26*x32;
-        const float x37 = x27*x32 - 1.0f;
+        const double x37 = ((double)x27)*((double)x32) - 1.0;
         const float x38 = (0.5f)*x19;
-        const float x39 = x25*x32*x7*x9;
-        const float x40 = x28*x32;
+        const double x39 = ((double)x25)*((double)x32)*((double)x7)*((double)x9);
+        const double x40 = ((double)x28)*((double)x32);
         out_xi[0] = x19;
         out_xi[1] = x20;
         out_xi[2] = x21;
@@ -464,7 +464,7 @@ static inline int rigidsym_exponential_coordinates_from_transform_sample_f32(
         const float x2 = (0.5f)*T_20;
         const float x3 = (0.5f)*T_12;
         const float x4 = (((0.5f)*T_10 - x0)*((0.5f)*T_10 - x0)) + (((0.5f)*T_21 - x3)*((0.5f)*T_21 - x3)) + ((x1 - x2)*(x1 - x2));
-        const double x5 = ((((double)x4) < 9.0949470177292824e-13) ? (0.16666666666666666*((double)x4) + 1.0) : (((((double)x4) < 9.0949470177292824e-13) ? (1048576.0) : (1.0/sqrt(((double)x4))))*asin(((((double)x4) < 9.0949470177292824e-13) ? (9.5367431640625e-7) : (sqrt(((double)x4)))))));
+        const float x5 = ((x4 < 9.094947017729282e-13f) ? (0.1666666716337204f*x4 + 1.0f) : (((x4 < 9.094947017729282e-13f) ? (1048576.0f) : (1.0f/sqrtf(x4)))*asin(((x4 < 9.094947017729282e-13f) ? (9.5367431640625e-07f) : (sqrtf(x4))))));
         const float x6 = (0.25f)*x5;
         const float x7 = T_01*T_13;
         const float x8 = T_23*x6;
@@ -485,9 +485,9 @@ static inline int rigidsym_exponential_coordinates_from_transform_sample_f32(
         out_xi[0] = (0.5f)*T_21*x5 - x3*x5;
         out_xi[1] = x1*x5 - x2*x5;
         out_xi[2] = (0.5f)*T_10*x5 - x0*x5;
-        out_xi[3] = (0.25f)*T_01*T_03*T_10*x9 + (0.125f)*T_01*T_12*T_23*x9 + (0.25f)*T_02*T_03*T_20*x9 - T_02*T_12*x13 + (0.125f)*T_02*T_13*T_21*x9 - T_02*x8 + T_03 + (0.25f)*T_10*T_13*x5 + (0.125f)*T_10*T_21*T_23*x9 + (0.125f)*T_12*T_13*T_20*x9 - T_12*x14 + (0.25f)*T_20*T_23*x5 - T_21*x12 - T_21*x15 - x16*x17 - x17*x18 - x17*x19 - x17*x20 - x6*x7;
-        out_xi[4] = (0.25f)*T_01*T_03*x5 + (0.25f)*T_01*T_10*T_13*x9 + (0.125f)*T_01*T_20*T_23*x9 + (0.125f)*T_02*T_03*T_21*x9 + (0.125f)*T_02*T_10*T_23*x9 - T_02*T_12*x17 - T_02*x12 - T_03*T_10*x6 + (0.125f)*T_03*T_12*T_20*x9 + (0.25f)*T_12*T_13*T_21*x9 - T_12*x8 + T_13 - T_20*T_21*x17 - T_20*x14 + (0.25f)*T_21*T_23*x5 - x13*x16 - x13*x19 - x13*x21 - x13*x22;
-        out_xi[5] = (0.125f)*T_01*T_03*T_12*x9 + (0.125f)*T_01*T_13*T_20*x9 - T_01*T_21*x17 + (0.25f)*T_02*T_03*x5 + (0.125f)*T_02*T_10*T_13*x9 + (0.25f)*T_02*T_20*T_23*x9 - T_02*x10*x7 + (0.125f)*T_03*T_10*T_21*x9 - T_03*T_20*x6 - T_10*T_12*x17 - T_10*x15 + (0.25f)*T_12*T_13*x5 + (0.25f)*T_12*T_21*T_23*x9 - T_13*T_21*x6 + T_23 - x11*x18 - x11*x20 - x11*x21 - x11*x22;
+        out_xi[3] = (0.25)*((double)T_01)*((double)T_03)*((double)T_10)*((double)x9) + (0.125)*((double)T_01)*((double)T_12)*((double)T_23)*((double)x9) + (0.25)*((double)T_02)*((double)T_03)*((double)T_20)*((double)x9) - ((double)T_02)*((double)T_12)*((double)x13) + (0.125)*((double)T_02)*((double)T_13)*((double)T_21)*((double)x9) - ((double)T_02)*((double)x8) + ((double)T_03) + (0.25)*((double)T_10)*((double)T_13)*((double)x5) + (0.125)*((double)T_10)*((double)T_21)*((double)T_23)*((double)x9) + (0.125)*((double)T_12)*((double)T_13)*((double)T_20)*((double)x9) - ((double)T_12)*((double)x14) + (0.25)*((double)T_20)*((double)T_23)*((double)x5) - ((double)T_21)*((double)x12) - ((double)T_21)*((double)x15) - ((double)x16)*((double)x17) - ((double)x17)*((double)x18) - ((double)x17)*((double)x19) - ((double)x17)*((double)x20) - ((double)x6)*((double)x7);
+        out_xi[4] = (0.25)*((double)T_01)*((double)T_03)*((double)x5) + (0.25)*((double)T_01)*((double)T_10)*((double)T_13)*((double)x9) + (0.125)*((double)T_01)*((double)T_20)*((double)T_23)*((double)x9) + (0.125)*((double)T_02)*((double)T_03)*((double)T_21)*((double)x9) + (0.125)*((double)T_02)*((double)T_10)*((double)T_23)*((double)x9) - ((double)T_02)*((double)T_12)*((double)x17) - ((double)T_02)*((double)x12) - ((double)T_03)*((double)T_10)*((double)x6) + (0.125)*((double)T_03)*((double)T_12)*((double)T_20)*((double)x9) + (0.25)*((double)T_12)*((double)T_13)*((double)T_21)*((double)x9) - ((double)T_12)*((double)x8) + ((double)T_13) - ((double)T_20)*((double)T_21)*((double)x17) - ((double)T_20)*((double)x14) + (0.25)*((double)T_21)*((double)T_23)*((double)x5) - ((double)x13)*((double)x16) - ((double)x13)*((double)x19) - ((double)x13)*((double)x21) - ((double)x13)*((double)x22);
+        out_xi[5] = (0.125)*((double)T_01)*((double)T_03)*((double)T_12)*((double)x9) + (0.125)*((double)T_01)*((double)T_13)*((double)T_20)*((double)x9) - ((double)T_01)*((double)T_21)*((double)x17) + (0.25)*((double)T_02)*((double)T_03)*((double)x5) + (0.125)*((double)T_02)*((double)T_10)*((double)T_13)*((double)x9) + (0.25)*((double)T_02)*((double)T_20)*((double)T_23)*((double)x9) - ((double)T_02)*((double)x10)*((double)x7) + (0.125)*((double)T_03)*((double)T_10)*((double)T_21)*((double)x9) - ((double)T_03)*((double)T_20)*((double)x6) - ((double)T_10)*((double)T_12)*((double)x17) - ((double)T_10)*((double)x15) + (0.25)*((double)T_12)*((double)T_13)*((double)x5) + (0.25)*((double)T_12)*((double)T_21)*((double)T_23)*((double)x9) - ((double)T_13)*((double)T_21)*((double)x6) + ((double)T_23) - ((double)x11)*((double)x18) - ((double)x11)*((double)x20) - ((double)x11)*((double)x21) - ((double)x11)*((double)x22);
     } else {
         const float x0 = -0.5f*T_12 + (0.5f)*T_21;
         const float x1 = acos((0.5f)*T_00 + (0.5f)*T_11 + (0.5f)*T_22 - 0.5f);

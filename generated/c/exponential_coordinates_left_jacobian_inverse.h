@@ -13,10 +13,10 @@
  * Singular set: theta = 2 pi k, k != 0 (theta = norm of w)
  *
  * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
- * measured at generation, rigidsym.codegen.float32; worst error 0.999 of what
+ * measured at generation, rigidsym.codegen.float32; worst error 0.702 of what
  * the rule of issue 37 allows, max(2 e_textbook, 4 u), per output, normwise, at its
- * points). In double:
- *   x3, x32, x33, x52, x65, x103, x105, x107, x111, x134, x141, x163, x164, x175, x176, x186, x189, x190, x196, x203, x255, x259, x261, x272, x273, x274
+ * points where the kernel computed in double is within it). In double:
+ *   x3, x6, x33, x35, x38, x48, x50, x52, x65, x67, x75, x87, x88, x103, x104, x105, x111, x118, x125, x134, x135, x141, x163, x164, x169, x174, x175, x182, x186, x203, x222, x223, x248, x258, x259, x261, x266, x272, x273, x274
  */
 #ifndef RIGIDSYM_EXPONENTIAL_COORDINATES_LEFT_JACOBIAN_INVERSE_H
 #define RIGIDSYM_EXPONENTIAL_COORDINATES_LEFT_JACOBIAN_INVERSE_H
@@ -779,7 +779,7 @@ static inline int rigidsym_exponential_coordinates_left_jacobian_inverse_sample_
         const double x3 = ((double)x0) + ((double)x1) + ((double)x2);
         const float x4 = ((x3 < 4.0f) ? (x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(1.8673468794450795e-30f*x3 + 7.371989779837287e-29f) + 2.9103449613364666e-27f) + 1.1489581590840362e-25f) + 4.535904845518768e-24f) + 1.7907035263433858e-22f) + 7.069414286859922e-21f) + 2.7908929110931957e-19f) + 1.1018006054536926e-17f) + 4.3497373243928745e-16f) + 1.71721242504504e-14f) + 6.779360601540108e-13f) + 2.676507279697482e-11f) + 1.0568380615083584e-09f) + 4.1753512647346724e-08f) + 1.6534391988898278e-06f) + 6.613756704609841e-05f) + 0.0027777778450399637f) + 0.1666666716337204f) : ((-((x3 < 4.0f) ? (2.0f) : (sqrt(x3)))*sin(((x3 < 4.0f) ? (2.0f) : (sqrt(x3)))) - 2.0f*cos(((x3 < 4.0f) ? (2.0f) : (sqrt(x3)))) + 2.0f)*((x3 < 4.0f) ? (0.25f) : (1.0f/x3))/(1.0f - cos(((x3 < 4.0f) ? (2.0f) : (sqrt(x3)))))));
         const float x5 = (0.5f)*x1;
-        const float x6 = x4*x5;
+        const double x6 = ((double)x4)*((double)x5);
         const float x7 = (0.5f)*x2;
         const float x8 = x4*x7;
         const float x9 = -x6 - x8 + 1.0f;
@@ -805,13 +805,13 @@ static inline int rigidsym_exponential_coordinates_left_jacobian_inverse_sample_
         const float x29 = ((x3 < 1.0f) ? (x3*(x3*(x3*(x3*(x3*(x3*(x3*(4.7794772561329454e-14f - 1.5619206814541513e-16f*x3) - 1.147074536050896e-11f) + 2.0876755879584152e-09f) - 2.755731998149713e-07f) + 2.4801587642286904e-05f) - 0.0013888889225199819f) + 0.0416666679084301f) - 0.5f) : ((cos(((x3 < 1.0f) ? (1.0f) : (sqrt(x3)))) - 1.0f)*((x3 < 1.0f) ? (1.0f) : (1.0f/x3))));
         const float x30 = x29*xi_4;
         const float x31 = x29*xi_5;
-        const double x32 = ((x3 < 1.0) ? (x3*(x3*(x3*(x3*(x3*(x3*(x3*(8.2206352466243295e-18*x3 - 2.8114572543455206e-15) + 7.6471637318198164e-13) - 1.6059043836821613e-10) + 2.505210838544172e-8) - 2.7557319223985893e-6) + 0.00019841269841269841) - 0.0083333333333333332) + 0.16666666666666666) : ((((x3 < 1.0) ? (1.0) : (sqrt(x3))) - sin(((x3 < 1.0) ? (1.0) : (sqrt(x3)))))*((x3 < 1.0) ? (1.0) : (1.0/(x3*sqrt(x3))))));
-        const double x33 = x32*((double)xi_4);
+        const float x32 = ((x3 < 1.0f) ? (x3*(x3*(x3*(x3*(x3*(x3*(x3*(8.220635078476521e-18f*x3 - 2.8114573589663704e-15f) + 7.647163609812713e-13f) - 1.6059044372074283e-10f) + 2.5052107943679403e-08f) - 2.7557318844628753e-06f) + 0.00019841270113829523f) - 0.008333333767950535f) + 0.1666666716337204f) : ((((x3 < 1.0f) ? (1.0f) : (sqrt(x3))) - sin(((x3 < 1.0f) ? (1.0f) : (sqrt(x3)))))*((x3 < 1.0f) ? (1.0f) : (1.0f/(x3*sqrt(x3))))));
+        const double x33 = ((double)x32)*((double)xi_4);
         const float x34 = x33*xi_1;
-        const float x35 = x32*xi_5;
+        const double x35 = ((double)x32)*((double)xi_5);
         const float x36 = x35*xi_2;
         const float x37 = (xi_1*xi_1*xi_1);
-        const float x38 = ((x3 < 2.0f) ? (x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(1.7793581919133696e-21f*x3 - 8.220635181874098e-19f) + 3.1238413629083026e-16f) - 9.558954512265891e-14f) + 2.294149072101792e-11f) - 4.1753511759168305e-09f) + 5.511463996299426e-07f) - 4.960317528457381e-05f) + 0.0027777778450399637f) - 0.0833333358168602f) : ((-((x3 < 2.0f) ? (2.0f) : (x3)) - 2.0f*cos(((x3 < 2.0f) ? (1.4142135381698608f) : (sqrt(x3)))) + 2.0f)*((x3 < 2.0f) ? (0.25f) : (1.0f/(x3*x3)))));
+        const double x38 = ((x3 < 2.0) ? (x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(1.7793582784901148e-21*x3 - 8.2206352466243297e-19) + 3.1238413937172451e-16) - 9.5589546647747705e-14) + 2.2941491195459449e-11) - 4.17535139757362e-9) + 5.5114638447971777e-7) - 4.9603174603174603e-5) + 0.0027777777777777779) - 0.083333333333333329) : ((-((x3 < 2.0) ? (2.0) : (x3)) - 2.0*cos(((x3 < 2.0) ? (1.414213562373095) : (sqrt(x3)))) + 2.0)*((x3 < 2.0) ? (0.25) : (1.0/(x3*x3)))));
         const float x39 = x37*x38;
         const float x40 = (xi_2*xi_2*xi_2);
         const float x41 = x38*x40;
@@ -821,11 +821,11 @@ static inline int rigidsym_exponential_coordinates_left_jacobian_inverse_sample_
         const float x45 = x35*x44;
         const float x46 = xi_0*xi_3;
         const float x47 = x38*x46;
-        const float x48 = xi_1*xi_4;
+        const double x48 = ((double)xi_1)*((double)xi_4);
         const float x49 = x2*x38;
-        const float x50 = xi_2*xi_5;
+        const double x50 = ((double)xi_2)*((double)xi_5);
         const float x51 = x1*x38;
-        const double x52 = x32*((double)xi_3);
+        const double x52 = ((double)x32)*((double)xi_3);
         const float x53 = x1*x22;
         const float x54 = x52*x53;
         const float x55 = x2*x52;
@@ -840,7 +840,7 @@ static inline int rigidsym_exponential_coordinates_left_jacobian_inverse_sample_
         const float x64 = x40*xi_5;
         const double x65 = ((double)x4)*((double)xi_3);
         const float x66 = x62*x65;
-        const float x67 = x22*x65;
+        const double x67 = ((double)x22)*x65;
         const float x68 = x2*x67;
         const float x69 = x4*x62;
         const float x70 = x57*xi_4;
@@ -848,7 +848,7 @@ static inline int rigidsym_exponential_coordinates_left_jacobian_inverse_sample_
         const float x72 = ((x3 < 2.0f) ? (x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(3.5231294744434454e-19f - 7.736340469711717e-22f*x3) - 1.3153016125562434e-16f) + 3.936040133146329e-14f) - 9.17659611493482e-12f) + 1.6059044094518526e-09f) - 2.0041686354943522e-07f) + 1.6534391761524603e-05f) - 0.0007936508045531809f) + 0.01666666753590107f) : ((((x3 < 2.0f) ? (1.4142135381698608f) : (sqrt(x3)))*cos(((x3 < 2.0f) ? (1.4142135381698608f) : (sqrt(x3)))) + 2.0f*((x3 < 2.0f) ? (1.4142135381698608f) : (sqrt(x3))) - 3.0f*sin(((x3 < 2.0f) ? (1.4142135381698608f) : (sqrt(x3)))))*((x3 < 2.0f) ? (0.1767766922712326f) : (1.0f/((x3*x3)*sqrt(x3))))));
         const float x73 = (0.25f)*x1;
         const float x74 = (0.25f)*x2;
-        const float x75 = (0.25f)*x0 + x73 + x74;
+        const double x75 = (0.25)*((double)x0) + ((double)x73) + ((double)x74);
         const float x76 = x75 - 1.0f;
         const float x77 = x72*x76;
         const float x78 = x46*x77;
@@ -860,8 +860,8 @@ static inline int rigidsym_exponential_coordinates_left_jacobian_inverse_sample_
         const float x84 = x11*x33;
         const float x85 = x61*x72;
         const float x86 = (x4*x4);
-        const float x87 = (x3*x3);
-        const float x88 = (0.25f)*x87;
+        const double x87 = (x3*x3);
+        const double x88 = (0.25)*x87;
         const float x89 = x86*x88;
         const float x90 = x85*x89;
         const float x91 = x10*x35;
@@ -877,10 +877,10 @@ static inline int rigidsym_exponential_coordinates_left_jacobian_inverse_sample_
         const float x101 = x100*x50;
         const float x102 = x19*x81;
         const double x103 = x3 + 2.0;
-        const float x104 = -x103;
-        const double x105 = ((double)x104)*((double)x19);
+        const double x104 = -x103;
+        const double x105 = x104*((double)x19);
         const float x106 = x33*x37;
-        const double x107 = ((double)x35)*((double)x40);
+        const float x107 = x35*x40;
         const float x108 = x72*xi_3;
         const float x109 = x108*x81;
         const float x110 = x109*x4;
@@ -891,14 +891,14 @@ static inline int rigidsym_exponential_coordinates_left_jacobian_inverse_sample_
         const float x115 = (0.25f)*x86;
         const float x116 = x115*x81;
         const float x117 = x104*x4;
-        const float x118 = x32*x46;
+        const double x118 = ((double)x32)*((double)x46);
         const float x119 = x81*x86;
         const float x120 = x118*x119;
         const float x121 = x119*x74;
         const float x122 = x119*x73;
         const float x123 = ((x3 < 1.0f) ? (x3*(x3*(x3*(x3*(x3*(x3*(x3*(1.5619206814541513e-16f*x3 - 4.7794772561329454e-14f) + 1.147074536050896e-11f) - 2.0876755879584152e-09f) + 2.755731998149713e-07f) - 2.4801587642286904e-05f) + 0.0013888889225199819f) - 0.0416666679084301f) + 0.5f) : ((1.0f - cos(((x3 < 1.0f) ? (1.0f) : (sqrt(x3)))))*((x3 < 1.0f) ? (1.0f) : (1.0f/x3))));
         const float x124 = x123*xi_5;
-        const float x125 = (0.5f)*x0 + x5 + x7;
+        const double x125 = (0.5)*((double)x0) + ((double)x5) + ((double)x7);
         const float x126 = x125*x35;
         const float x127 = trig_0;
         const float x128 = x127 - 1.0f;
@@ -907,8 +907,8 @@ static inline int rigidsym_exponential_coordinates_left_jacobian_inverse_sample_
         const float x131 = x74*xi_5;
         const float x132 = x2*xi_5;
         const float x133 = x18*x72;
-        const double x134 = ((double)x75) + 0.5;
-        const float x135 = x2*x35;
+        const double x134 = x75 + 0.5;
+        const double x135 = ((double)x2)*x35;
         const float x136 = ((x3 < 0.5f) ? (x3*(x3*(x3*(x3*(x3*(x3*(3.441223694888862e-11f - 1.4338431429585657e-13f*x3) - 6.263026985919851e-09f) + 8.267195994449139e-07f) - 7.440476474585012e-05f) + 0.004166666883975267f) - 0.125f) - 0.5f) : ((-2.0f*((x3 < 0.5f) ? (0.5f) : (x3)) - 3.0f*cos(((x3 < 0.5f) ? (0.7071067690849304f) : (sqrt(x3)))) + 3.0f)*((x3 < 0.5f) ? (2.0f) : (1.0f/x3))));
         const float x137 = x8*xi_5;
         const float x138 = x46*xi_2;
@@ -942,34 +942,34 @@ static inline int rigidsym_exponential_coordinates_left_jacobian_inverse_sample_
         const float x166 = ((x3 < 2.0f) ? (x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(8.220635181874098e-19f - 1.7793581919133696e-21f*x3) - 3.1238413629083026e-16f) + 9.558954512265891e-14f) - 2.294149072101792e-11f) + 4.1753511759168305e-09f) - 5.511463996299426e-07f) + 4.960317528457381e-05f) - 0.0027777778450399637f) + 0.0833333358168602f) : ((((x3 < 2.0f) ? (2.0f) : (x3)) + 2.0f*cos(((x3 < 2.0f) ? (1.4142135381698608f) : (sqrt(x3)))) - 2.0f)*((x3 < 2.0f) ? (0.25f) : (1.0f/(x3*x3)))));
         const float x167 = x166*xi_0;
         const float x168 = x1*xi_4;
-        const float x169 = x52*(-x125 - 1.0f);
+        const double x169 = x52*(-x125 - 1.0);
         const float x170 = x3 - x88;
         const float x171 = x108*x170;
         const float x172 = x108*x76;
         const float x173 = x11*x55;
-        const float x174 = -x141;
-        const double x175 = ((double)x174)*x65;
-        const double x176 = ((double)x19)*((double)xi_3);
+        const double x174 = -x141;
+        const double x175 = x174*x65;
+        const float x176 = x19*xi_3;
         const float x177 = x176*x62;
         const float x178 = x33*x53;
         const float x179 = x50*xi_1;
         const float x180 = -x72*x76;
         const float x181 = x180*xi_0;
-        const float x182 = ((x3 < 1.0f) ? (x3*(x3*(x3*(x3*(x3*(x3*(x3*(1.5619206814541513e-16f*x3 - 4.7794772561329454e-14f) + 1.147074536050896e-11f) - 2.0876755879584152e-09f) + 2.755731998149713e-07f) - 2.4801587642286904e-05f) + 0.0013888889225199819f) - 0.0416666679084301f) - 0.5f) : ((-((x3 < 1.0f) ? (1.0f) : (x3)) - cos(((x3 < 1.0f) ? (1.0f) : (sqrt(x3)))) + 1.0f)*((x3 < 1.0f) ? (1.0f) : (1.0f/x3))));
+        const double x182 = ((x3 < 1.0) ? (x3*(x3*(x3*(x3*(x3*(x3*(x3*(1.5619206968586225e-16*x3 - 4.7794773323873853e-14) + 1.1470745597729725e-11) - 2.08767569878681e-9) + 2.7557319223985888e-7) - 2.4801587301587302e-5) + 0.0013888888888888889) - 0.041666666666666664) - 0.5) : ((-((x3 < 1.0) ? (1.0) : (x3)) - cos(((x3 < 1.0) ? (1.0) : (sqrt(x3)))) + 1.0)*((x3 < 1.0) ? (1.0) : (1.0/x3))));
         const float x183 = x111*x182;
         const float x184 = x111*x3;
         const float x185 = x11*x52;
-        const double x186 = ((double)x4)*(3.0*((double)x0) + 3.0*((double)x1) + 3.0*((double)x2) + ((double)x87));
+        const double x186 = ((double)x4)*(3.0*((double)x0) + 3.0*((double)x1) + 3.0*((double)x2) + x87);
         const float x187 = x108*x19;
         const float x188 = x37*x81;
-        const double x189 = x105*x52;
-        const double x190 = ((double)x108)*((double)x87);
+        const float x189 = x105*x52;
+        const float x190 = x108*x87;
         const float x191 = x35*xi_0;
         const float x192 = x108*x89;
         const float x193 = (x3*x3*x3);
         const float x194 = (0.25f)*xi_3;
         const float x195 = x194*x86;
-        const double x196 = ((double)x193)*((double)x195);
+        const float x196 = x193*x195;
         const float x197 = x196*x72;
         const float x198 = x195*x32;
         const float x199 = x15*xi_5;
@@ -995,8 +995,8 @@ static inline int rigidsym_exponential_coordinates_left_jacobian_inverse_sample_
         const float x219 = ((x3 < 0.25f) ? (x3*(x3*(x3*(x3*(x3*(x3*(4.904430878885542e-14f*x3 - 1.185310356810465e-11f) + 2.1794417381926223e-09f) - 2.9227459208414075e-07f) + 2.7006173695554025e-05f) - 0.0015873016091063619f) + 0.05277777835726738f) + 0.1666666716337204f) : ((((x3 < 0.25f) ? (0.0625f) : ((x3*x3))) + ((x3 < 0.25f) ? (0.25f) : (x3))*cos(((x3 < 0.25f) ? (0.5f) : (sqrt(x3)))) - 5.0f*((x3 < 0.25f) ? (0.25f) : (x3)) - 8.0f*cos(((x3 < 0.25f) ? (0.5f) : (sqrt(x3)))) + 8.0f)*((x3 < 0.25f) ? (16.0f) : (1.0f/(x3*x3)))));
         const float x220 = x219*x73;
         const float x221 = x3*x72;
-        const float x222 = -x134;
-        const float x223 = x1*x222;
+        const double x222 = -x134;
+        const double x223 = ((double)x1)*x222;
         const float x224 = x6*xi_4;
         const float x225 = (0.25f)*x219;
         const float x226 = x46*xi_1;
@@ -1021,32 +1021,32 @@ static inline int rigidsym_exponential_coordinates_left_jacobian_inverse_sample_
         const float x245 = x40*x81;
         const float x246 = x190*xi_2;
         const float x247 = x165*xi_1;
-        const float x248 = x182*x48;
+        const double x248 = x182*x48;
         const float x249 = x142*x94;
         const float x250 = x204*x82;
         const float x251 = x1*x172*xi_2 + x10*x164 + x10*x175 - x10*x247 + x110*x59 + x117*x242 + x122*x52*xi_2 + x124*x22 + x132*x167 + x132*x181 + x132*x183 + x132*x202 + x140*x167 + x140*x181 + x140*x211 + x15*x208*x48 + x15*x248 - x150*x244 + x165*x209 + x169*xi_2 + x171*xi_2 + x172*x40 + x177*x40 + x184*x35 + x186*x244 + x187*x245 + x189*x40 + x191*x250 - x191 - x192*x40 + x197*xi_2 + x198*x245 + x203*x243 - x206*x246 + x213*x247*xi_2 + x242 - x243 - x246*x4 + x249*xi_0 + x41*xi_3 + x44*x52 + x51*xi_2*xi_3 + x59*x66;
         const float x252 = x1*x166;
         const float x253 = x3*x38;
         const float x254 = x125*x33;
-        const double x255 = ((double)x125) + 2.0;
+        const float x255 = x125 + 2.0f;
         const float x256 = x182*x19;
         const float x257 = x180*x46;
-        const float x258 = -x81 - x87;
+        const double x258 = -((double)x81) - x87;
         const double x259 = ((double)x4)*((double)x84);
         const float x260 = x182*x4;
-        const double x261 = -4.0*((double)x0) - 4.0*((double)x1) - 4.0*((double)x2) - ((double)x87);
+        const double x261 = -4.0*((double)x0) - 4.0*((double)x1) - 4.0*((double)x2) - x87;
         const float x262 = x4*x91;
         const float x263 = x19*x82;
         const float x264 = x103*x19;
         const float x265 = x108*x83;
-        const float x266 = x182*x46;
+        const double x266 = x182*((double)x46);
         const float x267 = -x170*x72;
         const float x268 = x141*x4;
         const float x269 = x46*x72;
         const float x270 = x115*x193;
         const float x271 = x270*x72;
-        const double x272 = ((double)x10)*((double)x268)*((double)xi_5) + ((double)x11)*((double)x268)*((double)xi_4) + x111*x261*x52 + ((double)x118)*x255 + x141*((double)x67) + ((double)x150)*((double)x22)*x52 + ((double)x150)*((double)x84) + ((double)x150)*((double)x91) + ((double)x155) + ((double)x157)*((double)x50) + ((double)x158) + ((double)x266) + ((double)x267)*((double)x46) + ((double)x267)*((double)x48) + ((double)x267)*((double)x50) - ((double)x269)*((double)x270) - ((double)x271)*((double)x48) - ((double)x271)*((double)x50);
-        const double x273 = x3 + ((double)x88);
+        const double x272 = ((double)x10)*((double)x268)*((double)xi_5) + ((double)x11)*((double)x268)*((double)xi_4) + x111*x261*x52 + x118*((double)x255) + x141*x67 + ((double)x150)*((double)x22)*x52 + ((double)x150)*((double)x84) + ((double)x150)*((double)x91) + ((double)x155) + ((double)x157)*x50 + ((double)x158) + x266 + ((double)x267)*((double)x46) + ((double)x267)*x48 + ((double)x267)*x50 - ((double)x269)*((double)x270) - ((double)x271)*x48 - ((double)x271)*x50;
+        const double x273 = x3 + x88;
         const double x274 = 2.0*((double)x127) + ((double)x81) - 2.0;
         const float x275 = x74*xi_3;
         const float x276 = x108*x3;

@@ -305,4 +305,42 @@ static inline double rigidsym_diffprod(double a, double b, double c, double d)
     return f + e;
 }
 
+/* a1 b1 + ... + an bn compensated (Dot2 of Ogita, Rump and Oishi, 2005; SumProd of
+ * rigidsym.codegen.compensated): as if summed in twice the precision, then rounded. Each
+ * product h is used by an fma call, so FMA contraction cannot fuse it into the TwoSum. */
+#define RIGIDSYM_DOT2_STEP(a, b) do { \
+        const double h_ = (a) * (b); \
+        const double r_ = fma((a), (b), -h_); \
+        const double t_ = p + h_; \
+        const double z_ = t_ - p; \
+        s += ((p - (t_ - z_)) + (h_ - z_)) + r_; \
+        p = t_; \
+    } while (0)
+
+static inline double rigidsym_sumprod2(double a0, double b0, double a1, double b1)
+{
+    double p = a0 * b0, s = fma(a0, b0, -p);
+    RIGIDSYM_DOT2_STEP(a1, b1);
+    return p + s;
+}
+
+static inline double rigidsym_sumprod3(double a0, double b0, double a1, double b1,
+                                       double a2, double b2)
+{
+    double p = a0 * b0, s = fma(a0, b0, -p);
+    RIGIDSYM_DOT2_STEP(a1, b1);
+    RIGIDSYM_DOT2_STEP(a2, b2);
+    return p + s;
+}
+
+static inline double rigidsym_sumprod4(double a0, double b0, double a1, double b1,
+                                       double a2, double b2, double a3, double b3)
+{
+    double p = a0 * b0, s = fma(a0, b0, -p);
+    RIGIDSYM_DOT2_STEP(a1, b1);
+    RIGIDSYM_DOT2_STEP(a2, b2);
+    RIGIDSYM_DOT2_STEP(a3, b3);
+    return p + s;
+}
+
 #endif /* RIGIDSYM_COMMON_H */

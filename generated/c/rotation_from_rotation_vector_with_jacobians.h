@@ -12,10 +12,10 @@
  * Q = 1 + (sin t / t) [w] + ((1 - cos t) / t^2) [w]^2, t = norm of w; and d(output)/d(input) by sympy on the declared formula
  *
  * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
- * measured at generation, rigidsym.codegen.float32; worst error 0.918 of what
+ * measured at generation, rigidsym.codegen.float32; worst error 0.704 of what
  * the rule of issue 37 allows, max(2 e_textbook, 4 u), per output, normwise, at its
- * points). In double:
- *   none
+ * points where the kernel computed in double is within it). In double:
+ *   x0, x1, x2
  */
 #ifndef RIGIDSYM_ROTATION_FROM_ROTATION_VECTOR_WITH_JACOBIANS_H
 #define RIGIDSYM_ROTATION_FROM_ROTATION_VECTOR_WITH_JACOBIANS_H
@@ -148,13 +148,13 @@ static inline int rigidsym_rotation_from_rotation_vector_with_jacobians_sample_f
     const float w_2 = in_w[2];
     int singular = 0;
     {
-        const float x0 = (w_1*w_1);
-        const float x1 = (w_2*w_2);
-        const float x2 = (w_0*w_0) + x0 + x1;
-        const float x3 = ((x2 < 1.0f) ? (x2*(x2*(x2*(x2*(x2*(x2*(x2*(1.5619206814541513e-16f*x2 - 4.7794772561329454e-14f) + 1.147074536050896e-11f) - 2.0876755879584152e-09f) + 2.755731998149713e-07f) - 2.4801587642286904e-05f) + 0.0013888889225199819f) - 0.0416666679084301f) + 0.5f) : ((1.0f - cos(((x2 < 1.0f) ? (1.0f) : (sqrtf(x2)))))*((x2 < 1.0f) ? (1.0f) : (1.0f/x2))));
+        const double x0 = (((double)w_1)*((double)w_1));
+        const double x1 = (((double)w_2)*((double)w_2));
+        const double x2 = (((double)w_0)*((double)w_0)) + x0 + x1;
+        const float x3 = ((x2 < 1.0f) ? (x2*(x2*(x2*(x2*(x2*(x2*(x2*(1.5619206814541513e-16f*x2 - 4.7794772561329454e-14f) + 1.147074536050896e-11f) - 2.0876755879584152e-09f) + 2.755731998149713e-07f) - 2.4801587642286904e-05f) + 0.0013888889225199819f) - 0.0416666679084301f) + 0.5f) : ((1.0f - cos(((x2 < 1.0f) ? (1.0f) : (sqrt(x2)))))*((x2 < 1.0f) ? (1.0f) : (1.0f/x2))));
         const float x4 = x0*x3;
         const float x5 = x1*x3;
-        const float x6 = ((x2 < 9.094947017729282e-13f) ? (1.0f - 0.1666666716337204f*x2) : (((x2 < 9.094947017729282e-13f) ? (1048576.0f) : (1.0f/sqrtf(x2)))*sin(((x2 < 9.094947017729282e-13f) ? (9.5367431640625e-07f) : (sqrtf(x2))))));
+        const float x6 = ((x2 < 9.094947017729282e-13f) ? (1.0f - 0.1666666716337204f*x2) : (((x2 < 9.094947017729282e-13f) ? (1048576.0f) : (1.0f/sqrt(x2)))*sin(((x2 < 9.094947017729282e-13f) ? (9.5367431640625e-07f) : (sqrt(x2))))));
         const float x7 = w_2*x6;
         const float x8 = w_1*x3;
         const float x9 = w_0*x8;
@@ -163,7 +163,7 @@ static inline int rigidsym_rotation_from_rotation_vector_with_jacobians_sample_f
         const float x12 = w_2*x11;
         const float x13 = -x2*x3 + 1.0f;
         const float x14 = w_0*x6;
-        const float x15 = ((x2 < 1.0f) ? (x2*(x2*(x2*(x2*(x2*(x2*(x2*(7.398571405192747e-18f*x2 - 2.499073090326642e-15f) + 6.691268090823488e-13f) - 1.3764894779555448e-10f) + 2.0876756323673362e-08f) - 2.2045855985197704e-06f) + 0.00014880952949170023f) - 0.0055555556900799274f) + 0.0833333358168602f) : ((-((x2 < 1.0f) ? (1.0f) : (sqrtf(x2)))*sin(((x2 < 1.0f) ? (1.0f) : (sqrtf(x2)))) - 2.0f*cos(((x2 < 1.0f) ? (1.0f) : (sqrtf(x2)))) + 2.0f)*((x2 < 1.0f) ? (1.0f) : (1.0f/(x2*x2)))));
+        const float x15 = ((x2 < 1.0f) ? (x2*(x2*(x2*(x2*(x2*(x2*(x2*(7.398571405192747e-18f*x2 - 2.499073090326642e-15f) + 6.691268090823488e-13f) - 1.3764894779555448e-10f) + 2.0876756323673362e-08f) - 2.2045855985197704e-06f) + 0.00014880952949170023f) - 0.0055555556900799274f) + 0.0833333358168602f) : ((-((x2 < 1.0f) ? (1.0f) : (sqrt(x2)))*sin(((x2 < 1.0f) ? (1.0f) : (sqrt(x2)))) - 2.0f*cos(((x2 < 1.0f) ? (1.0f) : (sqrt(x2)))) + 2.0f)*((x2 < 1.0f) ? (1.0f) : (1.0f/(x2*x2)))));
         const float x16 = w_0*x15;
         const float x17 = -2.0f*x8;
         const float x18 = (w_1*w_1*w_1);
@@ -174,10 +174,10 @@ static inline int rigidsym_rotation_from_rotation_vector_with_jacobians_sample_f
         const float x23 = (w_2*w_2*w_2);
         const float x24 = w_2*x0;
         const float x25 = x15*x23 + x15*x24;
-        const float x26 = ((x2 < 0.5f) ? (x2*(x2*(x2*(x2*(x2*(x2*(1.070602894531758e-11f - 4.4983317743461926e-14f*x2) - 1.9270851581154602e-09f) + 2.505210829895077e-07f) - 2.2045855075703003e-05f) + 0.0011904762359336019f) - 0.03333333507180214f) + 0.3333333432674408f) : ((-((x2 < 0.5f) ? (0.7071067690849304f) : (sqrtf(x2)))*cos(((x2 < 0.5f) ? (0.7071067690849304f) : (sqrtf(x2)))) + sin(((x2 < 0.5f) ? (0.7071067690849304f) : (sqrtf(x2)))))*((x2 < 0.5f) ? (2.8284270763397217f) : (1.0f/(x2*sqrt(x2))))));
+        const float x26 = ((x2 < 0.5f) ? (x2*(x2*(x2*(x2*(x2*(x2*(1.070602894531758e-11f - 4.4983317743461926e-14f*x2) - 1.9270851581154602e-09f) + 2.505210829895077e-07f) - 2.2045855075703003e-05f) + 0.0011904762359336019f) - 0.03333333507180214f) + 0.3333333432674408f) : ((-((x2 < 0.5f) ? (0.7071067690849304f) : (sqrt(x2)))*cos(((x2 < 0.5f) ? (0.7071067690849304f) : (sqrt(x2)))) + sin(((x2 < 0.5f) ? (0.7071067690849304f) : (sqrt(x2)))))*((x2 < 0.5f) ? (2.8284270763397217f) : (1.0f/(x2*sqrt(x2))))));
         const float x27 = w_2*x26;
         const float x28 = w_0*x27;
-        const float x29 = ((x2 < 1.0f) ? (x2*(x2*(x2*(x2*(x2*(x2*(x2*(2.499073090326642e-15f - 7.398571405192747e-18f*x2) - 6.691268090823488e-13f) + 1.3764894779555448e-10f) - 2.0876756323673362e-08f) + 2.2045855985197704e-06f) - 0.00014880952949170023f) + 0.0055555556900799274f) - 0.0833333358168602f) : ((((x2 < 1.0f) ? (1.0f) : (sqrtf(x2)))*sin(((x2 < 1.0f) ? (1.0f) : (sqrtf(x2)))) + 2.0f*cos(((x2 < 1.0f) ? (1.0f) : (sqrtf(x2)))) - 2.0f)*((x2 < 1.0f) ? (1.0f) : (1.0f/(x2*x2)))));
+        const float x29 = ((x2 < 1.0f) ? (x2*(x2*(x2*(x2*(x2*(x2*(x2*(2.499073090326642e-15f - 7.398571405192747e-18f*x2) - 6.691268090823488e-13f) + 1.3764894779555448e-10f) - 2.0876756323673362e-08f) + 2.2045855985197704e-06f) - 0.00014880952949170023f) + 0.0055555556900799274f) - 0.0833333358168602f) : ((((x2 < 1.0f) ? (1.0f) : (sqrt(x2)))*sin(((x2 < 1.0f) ? (1.0f) : (sqrt(x2)))) + 2.0f*cos(((x2 < 1.0f) ? (1.0f) : (sqrt(x2)))) - 2.0f)*((x2 < 1.0f) ? (1.0f) : (1.0f/(x2*x2)))));
         const float x30 = x2*x29;
         const float x31 = w_1*x30 + x20 + x8;
         const float x32 = w_1*x27;
@@ -187,7 +187,7 @@ static inline int rigidsym_rotation_from_rotation_vector_with_jacobians_sample_f
         const float x36 = x1*x26;
         const float x37 = w_1*w_2*x33;
         const float x38 = x37 - x6;
-        const float x39 = ((x2 < 0.5f) ? (x2*(x2*(x2*(x2*(x2*(x2*(4.4983317743461926e-14f*x2 - 1.070602894531758e-11f) + 1.9270851581154602e-09f) - 2.505210829895077e-07f) + 2.2045855075703003e-05f) - 0.0011904762359336019f) + 0.03333333507180214f) - 0.3333333432674408f) : ((((x2 < 0.5f) ? (0.7071067690849304f) : (sqrtf(x2)))*cos(((x2 < 0.5f) ? (0.7071067690849304f) : (sqrtf(x2)))) - sin(((x2 < 0.5f) ? (0.7071067690849304f) : (sqrtf(x2)))))*((x2 < 0.5f) ? (2.8284270763397217f) : (1.0f/(x2*sqrt(x2))))));
+        const float x39 = ((x2 < 0.5f) ? (x2*(x2*(x2*(x2*(x2*(x2*(4.4983317743461926e-14f*x2 - 1.070602894531758e-11f) + 1.9270851581154602e-09f) - 2.505210829895077e-07f) + 2.2045855075703003e-05f) - 0.0011904762359336019f) + 0.03333333507180214f) - 0.3333333432674408f) : ((((x2 < 0.5f) ? (0.7071067690849304f) : (sqrt(x2)))*cos(((x2 < 0.5f) ? (0.7071067690849304f) : (sqrt(x2)))) - sin(((x2 < 0.5f) ? (0.7071067690849304f) : (sqrt(x2)))))*((x2 < 0.5f) ? (2.8284270763397217f) : (1.0f/(x2*sqrt(x2))))));
         const float x40 = w_1*x39;
         const float x41 = w_0*x40;
         const float x42 = w_2*x30 + x21 + x25;

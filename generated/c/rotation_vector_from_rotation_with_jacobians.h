@@ -13,14 +13,14 @@
  * w = (phi / sin phi) vect(Q); asin near 0, the symmetric part near pi; and d(output)/d(input) by sympy on the declared formula
  *
  * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
- * measured at generation, rigidsym.codegen.float32; worst error 0.819 of what
+ * measured at generation, rigidsym.codegen.float32; worst error 0.744 of what
  * the rule of issue 37 allows, max(2 e_textbook, 4 u), per output, normwise, at its
- * points). In double:
- *   branch 1: none
+ * points where the kernel computed in double is within it). In double:
+ *   branch 1: x49, x67, w_D_Q[0]
  *   branch 2: none
  *   branch 3: none
- *   branch 4: none
- *   branch 5: none
+ *   branch 4: x5
+ *   branch 5: x2
  */
 #ifndef RIGIDSYM_ROTATION_VECTOR_FROM_ROTATION_WITH_JACOBIANS_H
 #define RIGIDSYM_ROTATION_VECTOR_FROM_ROTATION_WITH_JACOBIANS_H
@@ -556,7 +556,7 @@ static inline int rigidsym_rotation_vector_from_rotation_with_jacobians_sample_f
         const float x46 = x14*x43 + x16*x43 + x32*x5 + x43*x9;
         const float x47 = x45 + x46;
         const float x48 = x39 + x40;
-        const float x49 = x24*x25;
+        const double x49 = ((double)x24)*((double)x25);
         const float x50 = x31 + x34*(x14*x49 + x16*x49 - x33 + x49*x9);
         const float x51 = -x23 + x27*x49 + x36*x50;
         const float x52 = x20*x30/x12;
@@ -574,13 +574,13 @@ static inline int rigidsym_rotation_vector_from_rotation_with_jacobians_sample_f
         const float x64 = x18*x8;
         const float x65 = x37*x63;
         const float x66 = x34*x64;
-        const float x67 = x23 + x43*x63;
+        const double x67 = ((double)x23) + ((double)x43)*((double)x63);
         const float x68 = x49*x63 + x50*x64;
         const float x69 = x61*x8;
         out_w[0] = x22*x3;
         out_w[1] = x10*x22;
         out_w[2] = x22*x8;
-        out_w_D_Q[0] = x23 + x26*x27 + x35*x36;
+        out_w_D_Q[0] = ((double)x23) + ((double)x26)*((double)x27) + ((double)x35)*((double)x36);
         out_w_D_Q[1] = x38 + x41*x42;
         out_w_D_Q[2] = x42*x47 + x44;
         out_w_D_Q[3] = x38 + x42*x48;
@@ -822,7 +822,7 @@ static inline int rigidsym_rotation_vector_from_rotation_with_jacobians_sample_f
         const float x2 = (0.5f)*Q_20;
         const float x3 = (0.5f)*Q_12;
         const float x4 = (((0.5f)*Q_10 - x0)*((0.5f)*Q_10 - x0)) + (((0.5f)*Q_21 - x3)*((0.5f)*Q_21 - x3)) + ((x1 - x2)*(x1 - x2));
-        const float x5 = ((x4 < 9.094947017729282e-13f) ? (0.1666666716337204f*x4 + 1.0f) : (((x4 < 9.094947017729282e-13f) ? (1048576.0f) : (1.0f/sqrtf(x4)))*asin(((x4 < 9.094947017729282e-13f) ? (9.5367431640625e-07f) : (sqrtf(x4))))));
+        const double x5 = ((((double)x4) < 9.0949470177292824e-13) ? (0.16666666666666666*((double)x4) + 1.0) : (((((double)x4) < 9.0949470177292824e-13) ? (1048576.0) : (1.0/sqrt(((double)x4))))*asin(((((double)x4) < 9.0949470177292824e-13) ? (9.5367431640625e-7) : (sqrt(((double)x4)))))));
         const float x6 = ((x4 < 0.0625f) ? (x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(-0.1442926675081253f*x4 - 0.14924098551273346f) - 0.15473304688930511f) - 0.1608755737543106f) - 0.1678067147731781f) - 0.17570896446704865f) - 0.18482881784439087f) - 0.19550780951976776f) - 0.20823317766189575f) - 0.22372159361839294f) - 0.2430555522441864f) - 0.2678571343421936f) - 0.30000001192092896f) - 0.3333333432674408f) : ((sqrt(1.0f - ((x4 < 0.0625f) ? (0.0625f) : (x4)))*asin(((x4 < 0.0625f) ? (0.25f) : (sqrtf(x4)))) - ((x4 < 0.0625f) ? (0.25f) : (sqrtf(x4))))*((x4 < 0.0625f) ? (64.0f) : (1.0f/(x4*sqrt(x4))))/sqrt(1.0f - ((x4 < 0.0625f) ? (0.0625f) : (x4)))));
         const float x7 = (0.125f)*x6;
         const float x8 = Q_12*x7;
@@ -887,7 +887,7 @@ static inline int rigidsym_rotation_vector_from_rotation_with_jacobians_sample_f
     } else {
         const float x0 = -0.5f*Q_12 + (0.5f)*Q_21;
         const float x1 = (0.5f)*Q_00 + (0.5f)*Q_11 + (0.5f)*Q_22 - 0.5f;
-        const float x2 = acos(x1);
+        const double x2 = acos(((double)x1));
         const float x3 = sin(x2);
         const float x4 = 1.0f/x3;
         const float x5 = x2*x4;

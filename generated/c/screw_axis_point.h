@@ -13,10 +13,10 @@
  * Singular set: phi = 0 (pure translation)
  *
  * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
- * measured at generation, rigidsym.codegen.float32; worst error 0.92 of what
+ * measured at generation, rigidsym.codegen.float32; worst error 0.959 of what
  * the rule of issue 37 allows, max(2 e_textbook, 4 u), per output, normwise, at its
- * points). In double:
- *   trig_0, x1, x7, x8, x14, x15, x18, x19, x23
+ * points where the kernel computed in double is within it). In double:
+ *   trig_0, trig_1, x1, x2, x4, x6, x7, x8, x10, x11, x14, x17, x18, x19, x20, x22, x23, x24
  */
 #ifndef RIGIDSYM_SCREW_AXIS_POINT_H
 #define RIGIDSYM_SCREW_AXIS_POINT_H
@@ -152,7 +152,7 @@ static inline int rigidsym_screw_axis_point_sample_trig_f32(
     const float *RIGIDSYM_RESTRICT in_a,
     const float *RIGIDSYM_RESTRICT in_a_prime,
     const double trig_0,
-    const float trig_1,
+    const double trig_1,
     float *RIGIDSYM_RESTRICT out_p0)
 {
     const float e_0 = in_e[0];
@@ -168,29 +168,29 @@ static inline int rigidsym_screw_axis_point_sample_trig_f32(
     int singular = 0;
     {
         const double x1 = trig_0;
-        const float x2 = (x1*x1);
+        const double x2 = (x1*x1);
         const float x3 = (e_0*e_0);
-        const float x4 = 2.0f*x2;
+        const double x4 = 2.0*x2;
         const float x5 = 1.0f - x4;
-        const float x6 = e_0*e_1*x4;
-        const double x7 = 2.0*((double)trig_1)*x1;
+        const double x6 = ((double)e_0)*((double)e_1)*x4;
+        const double x7 = 2.0*trig_1*x1;
         const double x8 = ((double)e_2)*x7;
         const float x9 = x6 - x8;
-        const float x10 = e_2*x4;
-        const float x11 = e_0*x10;
+        const double x10 = ((double)e_2)*x4;
+        const double x11 = ((double)e_0)*x10;
         const float x12 = e_1*x7;
         const float x13 = x11 + x12;
         const double x14 = ((double)a_0)*(((double)x3) + ((double)x5)*(1.0 - ((double)x3))) + ((double)a_1)*((double)x9) + ((double)a_2)*((double)x13) - ((double)a_prime_0);
-        const double x15 = ((double)x6) + x8;
+        const float x15 = x6 + x8;
         const float x16 = (e_1*e_1);
-        const float x17 = e_0*x7;
-        const double x18 = 2.0*((double)e_1)*((double)e_2)*((double)x2) - ((double)x17);
-        const double x19 = ((double)a_0)*x15 + ((double)a_1)*(((double)x16) + ((double)x5)*(1.0 - ((double)x16))) + ((double)a_2)*x18 - ((double)a_prime_1);
-        const float x20 = x11 - x12;
+        const double x17 = ((double)e_0)*x7;
+        const double x18 = 2.0*((double)e_1)*((double)e_2)*x2 - x17;
+        const double x19 = ((double)a_0)*((double)x15) + ((double)a_1)*(((double)x16) + ((double)x5)*(1.0 - ((double)x16))) + ((double)a_2)*x18 - ((double)a_prime_1);
+        const double x20 = x11 - ((double)x12);
         const float x21 = e_1*x10 + x17;
-        const float x22 = (e_2*e_2);
-        const double x23 = ((double)a_0)*((double)x20) + ((double)a_1)*((double)x21) + ((double)a_2)*(((double)x22) + ((double)x5)*(1.0 - ((double)x22))) - ((double)a_prime_2);
-        const float x24 = (0.25f)/x2;
+        const double x22 = (((double)e_2)*((double)e_2));
+        const double x23 = ((double)a_0)*x20 + ((double)a_1)*((double)x21) + ((double)a_2)*(x22 + ((double)x5)*(1.0 - x22)) - ((double)a_prime_2);
+        const double x24 = (0.25)/x2;
         out_p0[0] = x24*(x14*x2*(2.0f*x3 - 2.0f) + x15*x19 + x20*x23);
         out_p0[1] = x24*(x14*x9 + x19*x2*(2.0f*x16 - 2.0f) + x21*x23);
         out_p0[2] = x24*(x13*x14 + x18*x19 + x2*x23*(2.0f*x22 - 2.0f));

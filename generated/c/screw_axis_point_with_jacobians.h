@@ -13,10 +13,10 @@
  * Singular set: phi = 0 (pure translation)
  *
  * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
- * measured at generation, rigidsym.codegen.float32; worst error 0.994 of what
+ * measured at generation, rigidsym.codegen.float32; worst error 0.971 of what
  * the rule of issue 37 allows, max(2 e_textbook, 4 u), per output, normwise, at its
- * points). In double:
- *   trig_0, trig_1, x3, x4, x5, x6, x10, x11, x14, x16, x17, x18, x20, x25, x31, x32, x33, x36, x38, x69, x70, x74, x77
+ * points where the kernel computed in double is within it). In double:
+ *   trig_0, trig_1, x0, x1, x3, x4, x5, x7, x8, x9, x10, x11, x12, x14, x15, x18, x20, x22, x23, x25, x26, x27, x28, x29, x30, x31, x32, x34, x35, x36, x37, x40, x56, x61, x65, x66, x69, x70, x72, x73, x74, x75, x76, x77, x78, x79, x80, x81, x82, x83, p0_D_e[4]
  */
 #ifndef RIGIDSYM_SCREW_AXIS_POINT_WITH_JACOBIANS_H
 #define RIGIDSYM_SCREW_AXIS_POINT_WITH_JACOBIANS_H
@@ -363,46 +363,46 @@ static inline int rigidsym_screw_axis_point_with_jacobians_sample_trig_f32(
     const float a_prime_2 = in_a_prime[2];
     int singular = 0;
     {
-        const float x0 = (e_0*e_0);
-        const float x1 = 1.0f - x0;
+        const double x0 = (((double)e_0)*((double)e_0));
+        const double x1 = 1.0 - x0;
         const double x3 = trig_0;
         const double x4 = (x3*x3);
         const double x5 = 2.0*x4;
-        const double x6 = 1.0 - x5;
-        const float x7 = x0 + x1*x6;
-        const float x8 = e_1*x5;
-        const float x9 = e_0*x8;
+        const float x6 = 1.0f - x5;
+        const double x7 = x0 + x1*((double)x6);
+        const double x8 = ((double)e_1)*x5;
+        const double x9 = ((double)e_0)*x8;
         const double x10 = trig_1;
         const double x11 = 2.0*x10*x3;
-        const float x12 = e_2*x11;
+        const double x12 = ((double)e_2)*x11;
         const float x13 = -x12 + x9;
         const double x14 = ((double)e_2)*x5;
-        const float x15 = e_0*x14;
-        const double x16 = ((double)e_1)*x11;
-        const double x17 = ((double)x15) + x16;
-        const double x18 = ((double)a_0)*((double)x7) + ((double)a_1)*((double)x13) + ((double)a_2)*x17 - ((double)a_prime_0);
+        const double x15 = ((double)e_0)*x14;
+        const float x16 = e_1*x11;
+        const float x17 = x15 + x16;
+        const double x18 = ((double)a_0)*x7 + ((double)a_1)*((double)x13) + ((double)a_2)*((double)x17) - ((double)a_prime_0);
         const float x19 = x4*(2.0f*x0 - 2.0f);
-        const double x20 = ((double)x12) + ((double)x9);
+        const double x20 = x12 + x9;
         const float x21 = (e_1*e_1);
-        const float x22 = 1.0f - x21;
-        const float x23 = x21 + x22*x6;
+        const double x22 = 1.0 - ((double)x21);
+        const double x23 = ((double)x21) + x22*((double)x6);
         const float x24 = e_1*x14;
         const double x25 = ((double)e_0)*x11;
-        const float x26 = -x24 + x25;
-        const float x27 = -x26;
-        const float x28 = a_0*x20 + a_1*x23 + a_2*x27 - a_prime_1;
-        const float x29 = x15 - x16;
-        const float x30 = x24 + x25;
+        const double x26 = -((double)x24) + x25;
+        const double x27 = -x26;
+        const double x28 = ((double)a_0)*x20 + ((double)a_1)*x23 + ((double)a_2)*x27 - ((double)a_prime_1);
+        const double x29 = x15 - ((double)x16);
+        const double x30 = ((double)x24) + x25;
         const double x31 = (((double)e_2)*((double)e_2));
         const double x32 = 1.0 - x31;
-        const double x33 = x31 + x32*x6;
-        const float x34 = a_0*x29 + a_1*x30 + a_2*x33 - a_prime_2;
-        const float x35 = x18*x19 + x20*x28 + x29*x34;
+        const float x33 = x31 + x32*x6;
+        const double x34 = ((double)a_0)*x29 + ((double)a_1)*x30 + ((double)a_2)*((double)x33) - ((double)a_prime_2);
+        const double x35 = x18*((double)x19) + x20*x28 + x29*x34;
         const double x36 = 1.0/x4;
-        const float x37 = (0.25f)*x36;
-        const double x38 = x4*(2.0*((double)x21) - 2.0);
+        const double x37 = (0.25)*x36;
+        const float x38 = x4*(2.0f*x21 - 2.0f);
         const float x39 = x13*x18 + x28*x38 + x30*x34;
-        const float x40 = x4*(2.0f*x31 - 2.0f);
+        const double x40 = x4*(2.0*x31 - 2.0);
         const float x41 = x17*x18 + x27*x28 + x34*x40;
         const float x42 = a_2*x11;
         const float x43 = a_0*x8 - x42;
@@ -418,34 +418,34 @@ static inline int rigidsym_screw_axis_point_with_jacobians_sample_trig_f32(
         const float x53 = x14*x34;
         const float x54 = e_0*x5;
         const float x55 = a_1*x54 + x42;
-        const float x56 = a_0*x11;
+        const double x56 = ((double)a_0)*x11;
         const float x57 = 2.0f*a_1*e_2*x4 - x56;
         const float x58 = x46*x5;
         const float x59 = e_1*x47;
         const float x60 = a_1*x59 + x49 + x58;
-        const float x61 = x11*x34;
+        const double x61 = x11*x34;
         const float x62 = 2.0f*a_2*e_0*x4 - x44;
         const float x63 = a_2*x8 + x56;
         const float x64 = e_2*x47;
-        const float x65 = a_2*x64 + x48 + x58;
-        const float x66 = x11*x28;
+        const double x65 = ((double)a_2)*((double)x64) + ((double)x48) + ((double)x58);
+        const double x66 = x11*x28;
         const float x67 = x5*x51;
         const float x68 = x11*x18;
         const double x69 = (0.25)*x10/(x3*x3*x3);
-        const double x70 = ((double)e_1)*x6;
+        const double x70 = ((double)e_1)*((double)x6);
         const float x71 = e_2*x25;
-        const float x72 = x70 + x71;
-        const float x73 = e_0*x16;
-        const double x74 = ((double)e_2)*x6;
-        const float x75 = x73 - x74;
-        const float x76 = a_1*x75 + a_2*x72 - x1*x56;
-        const double x77 = ((double)x73) + x74;
-        const float x78 = e_0*x6;
-        const float x79 = 2.0f*e_1*e_2*x10*x3 - x78;
-        const float x80 = a_0*x77 + a_2*x79 - x22*x44;
-        const float x81 = e_2*x16 + x78;
-        const float x82 = -x70 + x71;
-        const float x83 = a_0*x82 + a_1*x81 - x32*x42;
+        const double x72 = x70 + ((double)x71);
+        const double x73 = ((double)e_0)*((double)x16);
+        const double x74 = ((double)e_2)*((double)x6);
+        const double x75 = x73 - x74;
+        const double x76 = ((double)a_1)*x75 + ((double)a_2)*x72 - x1*x56;
+        const double x77 = x73 + x74;
+        const double x78 = ((double)e_0)*((double)x6);
+        const double x79 = 2.0*((double)e_1)*((double)e_2)*x10*x3 - x78;
+        const double x80 = ((double)a_0)*x77 + ((double)a_2)*x79 - x22*((double)x44);
+        const double x81 = ((double)e_2)*((double)x16) + x78;
+        const double x82 = -x70 + ((double)x71);
+        const double x83 = ((double)a_0)*x82 + ((double)a_1)*x81 - x32*((double)x42);
         const float x84 = x29*x30;
         const float x85 = x20*x27;
         const float x86 = x13*x17;
@@ -456,7 +456,7 @@ static inline int rigidsym_screw_axis_point_with_jacobians_sample_trig_f32(
         out_p0_D_e[1] = x37*(x19*x55 + x20*x60 + x28*x54 + x29*x57 - x61);
         out_p0_D_e[2] = x37*(x19*x62 + x20*x63 + x29*x65 + x34*x54 + x66);
         out_p0_D_e[3] = x37*(x13*x50 + x18*x8 + x30*x45 + x38*x43 + x61);
-        out_p0_D_e[4] = x37*(x13*x55 + x28*x59 + x30*x57 + x38*x60 + x53 + x67);
+        out_p0_D_e[4] = x37*(((double)x13)*((double)x55) + x28*((double)x59) + x30*((double)x57) + ((double)x38)*((double)x60) + ((double)x53) + ((double)x67));
         out_p0_D_e[5] = x37*(x13*x62 + x30*x65 + x34*x8 + x38*x63 - x68);
         out_p0_D_e[6] = x37*(x14*x18 + x17*x50 + x27*x43 + x40*x45 - x66);
         out_p0_D_e[7] = x37*(x14*x28 + x17*x55 + x27*x60 + x40*x57 + x68);

@@ -6,8 +6,16 @@
  * template: c_kernel.c.j2
  * math hash: sha256:24c2ead304ca194c
  * sympy 1.14.0, rigidsym 0.2.0
- * operations: 565
+ * operations: 571
  * branches: near_pi_0, near_pi_1, near_pi_2, main
+ * accuracy rewrite (near_pi_1): compensated sums of products (p0): a dot product (or a cross
+ *     product's component plus a term) that cancels loses u sum |a_i b_i| / |s| relative when
+ *     summed plainly; compensated (Dot2 of Ogita, Rump and Oishi,
+ *     rigidsym.codegen.compensated.SumProd) it keeps about 1 u; worst ratio to the rule max(2
+ *     e_best, 4 u) (e_best: the most accurate of the textbook formula and the forms tried, per
+ *     point; rigidsym.codegen.rule) at 9 points of the regimes (rigidsym.codegen.regimes,
+ *     exact, rounded to float64) 1.5 -> 0.47, never worse than the textbook formula by that
+ *     rule; equal to the declared formula by the zero test (exact-cancel)
  * accuracy rewrite (main): the axis point from the skew part of Q: (Q - 1)^T (Q a - a') reads
  *     the diagonal of Q, whose rounding is relative u/phi of it as phi -> 0; cot(phi/2)/2 e x
  *     c + (c - e (e.c))/2 from vect(Q) and tr Q reads the axis from the skew part (valid where

@@ -6,8 +6,16 @@
  * template: c_kernel.h.j2
  * math hash: sha256:24c2ead304ca194c
  * sympy 1.14.0, rigidsym 0.2.0
- * operations: 565
+ * operations: 571
  * branches: near_pi_0, near_pi_1, near_pi_2, main
+ * accuracy rewrite (near_pi_1): compensated sums of products (p0): a dot product (or a cross
+ *     product's component plus a term) that cancels loses u sum |a_i b_i| / |s| relative when
+ *     summed plainly; compensated (Dot2 of Ogita, Rump and Oishi,
+ *     rigidsym.codegen.compensated.SumProd) it keeps about 1 u; worst ratio to the rule max(2
+ *     e_best, 4 u) (e_best: the most accurate of the textbook formula and the forms tried, per
+ *     point; rigidsym.codegen.rule) at 9 points of the regimes (rigidsym.codegen.regimes,
+ *     exact, rounded to float64) 1.5 -> 0.47, never worse than the textbook formula by that
+ *     rule; equal to the declared formula by the zero test (exact-cancel)
  * accuracy rewrite (main): the axis point from the skew part of Q: (Q - 1)^T (Q a - a') reads
  *     the diagonal of Q, whose rounding is relative u/phi of it as phi -> 0; cot(phi/2)/2 e x
  *     c + (c - e (e.c))/2 from vect(Q) and tr Q reads the axis from the skew part (valid where
@@ -22,13 +30,13 @@
  * Singular set: phi = 0 (pure translation: no axis, infinite pitch)
  *
  * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
- * measured at generation, rigidsym.codegen.float32; worst error 0.963 of what
+ * measured at generation, rigidsym.codegen.float32; worst error 0.997 of what
  * the rule of issue 37 allows, max(2 e_textbook, 4 u), per output, normwise, at its
- * points). In double:
- *   branch 1: none
- *   branch 2: none
- *   branch 3: none
- *   branch 4: x1, x2, x4, x5, x13, x15, x16, x17, x28, x32, x34, pitch[0]
+ * points where the kernel computed in double is within it). In double:
+ *   branch 1: x3, x9, x16, x17, x19, x20, x22, x24, x27, x37, pitch[0]
+ *   branch 2: x4, x6, x7, x8, x9, x14, x15, x16, x17, x19, x31, pitch[0], plucker[3], plucker[5]
+ *   branch 3: x2, x7, x8, x15, x16, x17, x18, x25, x35, pitch[0]
+ *   branch 4: x1, x2, x4, x5, x9, x10, x11, x12, x13, x14, x15, x16, x17, x21, x28, x29, x31, x32, x33, x34, x35, x36, x37, pitch[0]
  */
 #ifndef RIGIDSYM_SCREW_OF_DISPLACEMENT_H
 #define RIGIDSYM_SCREW_OF_DISPLACEMENT_H
@@ -148,46 +156,49 @@ static inline int rigidsym_screw_of_displacement_sample(
         const double x16 = x13*x4;
         const double x17 = atan2(sqrt((x10*x10) + (x11*x11) + (x12*x12)), (0.5)*Q_11 + x6);
         const double x18 = -a_prime_1;
-        const double x19 = Q_10*a_0 + Q_11*a_1 + Q_12*a_2 + x18;
+        const double x19 = rigidsym_sumprod4(Q_10, a_0, Q_11, a_1, Q_12, a_2, x18, 1.0);
         const double x20 = -a_prime_2;
-        const double x21 = Q_20*a_0 + Q_21*a_1 + Q_22*a_2 + x20;
+        const double x21 = rigidsym_sumprod4(Q_20, a_0, Q_21, a_1, Q_22, a_2, x20, 1.0);
         const double x22 = Q_00 - 1.0;
         const double x23 = -a_prime_0;
-        const double x24 = Q_00*a_0 + Q_01*a_1 + Q_02*a_2 + x23;
-        const double x25 = Q_10*x19 + Q_20*x21 + x22*x24;
-        const double x26 = Q_11 - 1.0;
-        const double x27 = Q_22 - 1.0;
-        const double x28 = -(x22) - (x26) - (x27);
-        const double x29 = 1.0/x28;
-        const double x30 = Q_01*x24 + Q_21*x21 + x19*x26;
-        const double x31 = Q_02*x24 + Q_12*x19 + x21*x27;
-        const double x32 = 1.0/x9;
-        const double x33 = x2*x32 + x32*x5 + x32*x8;
-        const double x34 = 1.0/sqrt(x33);
-        const double x35 = x14*x34;
-        const double x36 = x15*x34;
-        const double x37 = x16*x34;
+        const double x24 = rigidsym_sumprod4(Q_00, a_0, Q_01, a_1, Q_02, a_2, x23, 1.0);
+        const double x25 = Q_11 - 1.0;
+        const double x26 = Q_22 - 1.0;
+        const double x27 = -(x22) - (x25) - (x26);
+        const double x28 = 1.0/x27;
+        const double x29 = 1.0/x9;
+        const double x30 = x2*x29 + x29*x5 + x29*x8;
+        const double x31 = 1.0/sqrt(x30);
+        const double x32 = x14*x31;
+        const double x33 = x15*x31;
+        const double x34 = x16*x31;
+        const double x35 = Q_00*a_0 + Q_01*a_1 + Q_02*a_2 + x23;
+        const double x36 = Q_20*a_0 + Q_21*a_1 + Q_22*a_2 + x20;
+        const double x37 = Q_10*a_0 + Q_11*a_1 + Q_12*a_2 + x18;
+        const double x38 = Q_01*x35 + Q_21*x36 + x25*x37;
+        const double x39 = Q_02*x35 + Q_12*x37 + x26*x36;
+        const double x40 = Q_10*x37 + Q_20*x36 + x22*x35;
         out_e[0] = x14;
         out_e[1] = x15;
         out_e[2] = x16;
         out_phi[0] = x17;
-        out_p0[0] = x25*x29;
-        out_p0[1] = x29*x30;
-        out_p0[2] = x29*x31;
+        out_p0[0] = x28*rigidsym_sumprod3(Q_10, x19, Q_20, x21, x22, x24);
+        out_p0[1] = x28*rigidsym_sumprod3(Q_01, x24, Q_21, x21, x25, x19);
+        out_p0[2] = x28*rigidsym_sumprod3(Q_02, x24, Q_12, x19, x26, x21);
         out_pitch[0] = (x14*(-a_0 - x23) + x15*(-a_1 - x18) + x16*(-a_2 - x20))/x17;
-        out_plucker[0] = x35;
-        out_plucker[1] = x36;
-        out_plucker[2] = x37;
-        out_plucker[3] = x29*x30*x37 - x29*x31*x36;
-        out_plucker[4] = -x25*x29*x37 + x29*x31*x35;
-        out_plucker[5] = x25*x29*x36 - x29*x30*x35;
-        singular |= (x33) == 0.0;
+        out_plucker[0] = x32;
+        out_plucker[1] = x33;
+        out_plucker[2] = x34;
+        out_plucker[3] = -x28*x33*x39 + x28*x34*x38;
+        out_plucker[4] = x28*x32*x39 - x28*x34*x40;
+        out_plucker[5] = -x28*x32*x38 + x28*x33*x40;
+        singular |= (x30) == 0.0;
         singular |= (x9) == 0.0;
-        singular |= (x28) == 0.0;
+        singular |= (x27) == 0.0;
         singular |= (x17) == 0.0;
         /* quantities that can be non-finite for finite inputs (divisions, roots):
          * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
-        const double finite = ((((x13 - x13) + (x17 - x17)) + ((x29 - x29) + ((x32 - x32) + (x34 - x34)))) + (((out_pitch[0] - out_pitch[0]) + (x9 - x9)) + ((((x10*x10) + (x11*x11) + (x12*x12)) - ((x10*x10) + (x11*x11) + (x12*x12))) + ((x28 - x28) + (x33 - x33)))));
+        const double finite = ((((x13 - x13) + (x17 - x17)) + ((x28 - x28) + ((x29 - x29) + (x31 - x31)))) + (((out_pitch[0] - out_pitch[0]) + (x9 - x9)) + ((((x10*x10) + (x11*x11) + (x12*x12)) - ((x10*x10) + (x11*x11) + (x12*x12))) + ((x27 - x27) + (x30 - x30)))));
         singular |= finite != finite;
     } else if (Q_22 >= Q_00 && Q_22 >= Q_11 && Q_00 + Q_11 + Q_22 < 0.0) {
         const double x0 = (0.5)*Q_02;
@@ -357,31 +368,31 @@ static inline int rigidsym_screw_of_displacement_sample_f32(
         const float x0 = (0.5f)*Q_00;
         const float x1 = (0.5f)*Q_11;
         const float x2 = (0.5f)*Q_22;
-        const float x3 = x0 - x1 - x2 + 0.5f;
+        const double x3 = ((double)x0) - ((double)x1) - ((double)x2) + 0.5;
         const float x4 = (0.5f)*Q_01;
         const float x5 = (0.5f)*Q_10 + x4;
         const float x6 = (x5*x5);
         const float x7 = (0.5f)*Q_02;
         const float x8 = (0.5f)*Q_20;
-        const float x9 = x7 + x8;
+        const double x9 = ((double)x7) + ((double)x8);
         const float x10 = (x9*x9);
         const float x11 = (x3*x3);
         const float x12 = x10 + x11 + x6;
         const float x13 = (0.5f)*Q_10 - x4;
         const float x14 = x7 - x8;
         const float x15 = -0.5f*Q_12 + (0.5f)*Q_21;
-        const float x16 = ((x13*x9 + x14*x5 + x15*x3 < 0.0f) ? (-1.0f) : (1.0f))/sqrtf(x12);
-        const float x17 = x16*x3;
+        const double x16 = ((((double)x13)*x9 + ((double)x14)*((double)x5) + ((double)x15)*x3 < 0.0) ? (-1.0) : (1.0))/sqrt(((double)x12));
+        const double x17 = x16*x3;
         const float x18 = x16*x5;
-        const float x19 = x16*x9;
-        const float x20 = atan2(sqrtf((x13*x13) + (x14*x14) + (x15*x15)), x0 + x1 + x2 - 0.5f);
+        const double x19 = x16*x9;
+        const double x20 = atan2(sqrt((((double)x13)*((double)x13)) + (((double)x14)*((double)x14)) + (((double)x15)*((double)x15))), ((double)x0) + ((double)x1) + ((double)x2) - 0.5);
         const float x21 = -a_prime_1;
-        const float x22 = Q_10*a_0 + Q_11*a_1 + Q_12*a_2 + x21;
+        const double x22 = ((double)Q_10)*((double)a_0) + ((double)Q_11)*((double)a_1) + ((double)Q_12)*((double)a_2) + ((double)x21);
         const float x23 = -a_prime_2;
-        const float x24 = Q_20*a_0 + Q_21*a_1 + Q_22*a_2 + x23;
+        const double x24 = ((double)Q_20)*((double)a_0) + ((double)Q_21)*((double)a_1) + ((double)Q_22)*((double)a_2) + ((double)x23);
         const float x25 = Q_00 - 1.0f;
         const float x26 = -a_prime_0;
-        const float x27 = Q_00*a_0 + Q_01*a_1 + Q_02*a_2 + x26;
+        const double x27 = ((double)Q_00)*((double)a_0) + ((double)Q_01)*((double)a_1) + ((double)Q_02)*((double)a_2) + ((double)x26);
         const float x28 = Q_10*x22 + Q_20*x24 + x25*x27;
         const float x29 = Q_11 - 1.0f;
         const float x30 = Q_22 - 1.0f;
@@ -391,7 +402,7 @@ static inline int rigidsym_screw_of_displacement_sample_f32(
         const float x34 = Q_02*x27 + Q_12*x22 + x24*x30;
         const float x35 = 1.0f/x12;
         const float x36 = x10*x35 + x11*x35 + x35*x6;
-        const float x37 = 1.0f/sqrtf(x36);
+        const double x37 = 1.0/sqrt(((double)x36));
         const float x38 = x17*x37;
         const float x39 = x18*x37;
         const float x40 = x19*x37;
@@ -402,7 +413,7 @@ static inline int rigidsym_screw_of_displacement_sample_f32(
         out_p0[0] = x28*x32;
         out_p0[1] = x32*x33;
         out_p0[2] = x32*x34;
-        out_pitch[0] = (x17*(-a_0 - x26) + x18*(-a_1 - x21) + x19*(-a_2 - x23))/x20;
+        out_pitch[0] = (x17*(-((double)a_0) - ((double)x26)) + ((double)x18)*(-((double)a_1) - ((double)x21)) + x19*(-((double)a_2) - ((double)x23)))/x20;
         out_plucker[0] = x38;
         out_plucker[1] = x39;
         out_plucker[2] = x40;
@@ -412,7 +423,7 @@ static inline int rigidsym_screw_of_displacement_sample_f32(
         singular |= (((double)x36)) == 0.0;
         singular |= (((double)x12)) == 0.0;
         singular |= (((double)x31)) == 0.0;
-        singular |= (((double)x20)) == 0.0;
+        singular |= (x20) == 0.0;
         const double finite = ((((x16 - x16) + (x20 - x20)) + ((x32 - x32) + ((x35 - x35) + (x37 - x37)))) + (((out_pitch[0] - out_pitch[0]) + (x12 - x12)) + ((((x13*x13) + (x14*x14) + (x15*x15)) - ((x13*x13) + (x14*x14) + (x15*x15))) + ((x31 - x31) + (x36 - x36)))));
         singular |= finite != finite;
     } else if (((double)Q_11) >= ((double)Q_00) && ((double)Q_11) >= ((double)Q_22) && ((double)Q_00) + ((double)Q_11) + ((double)Q_22) < 0.0) {
@@ -420,87 +431,90 @@ static inline int rigidsym_screw_of_displacement_sample_f32(
         const float x1 = (0.5f)*Q_10 + x0;
         const float x2 = (x1*x1);
         const float x3 = (0.5f)*Q_12;
-        const float x4 = (0.5f)*Q_21 + x3;
+        const double x4 = (0.5)*((double)Q_21) + ((double)x3);
         const float x5 = (x4*x4);
-        const float x6 = (0.5f)*Q_00 + (0.5f)*Q_22 - 0.5f;
-        const float x7 = (0.5f)*Q_11 - x6;
-        const float x8 = (x7*x7);
-        const float x9 = x2 + x5 + x8;
+        const double x6 = (0.5)*((double)Q_00) + (0.5)*((double)Q_22) - 0.5;
+        const double x7 = (0.5)*((double)Q_11) - x6;
+        const double x8 = (x7*x7);
+        const double x9 = ((double)x2) + ((double)x5) + x8;
         const float x10 = (0.5f)*Q_10 - x0;
         const float x11 = (0.5f)*Q_21 - x3;
         const float x12 = (0.5f)*Q_02 - 0.5f*Q_20;
-        const float x13 = ((x1*x11 + x10*x4 + x12*x7 < 0.0f) ? (-1.0f) : (1.0f))/sqrtf(x9);
-        const float x14 = x1*x13;
-        const float x15 = x13*x7;
-        const float x16 = x13*x4;
-        const float x17 = atan2(sqrtf((x10*x10) + (x11*x11) + (x12*x12)), (0.5f)*Q_11 + x6);
+        const float x13 = ((x1*x11 + x10*x4 + x12*x7 < 0.0f) ? (-1.0f) : (1.0f))/sqrt(x9);
+        const double x14 = ((double)x1)*((double)x13);
+        const double x15 = ((double)x13)*x7;
+        const double x16 = ((double)x13)*x4;
+        const double x17 = atan2(sqrt((((double)x10)*((double)x10)) + (((double)x11)*((double)x11)) + (((double)x12)*((double)x12))), (0.5)*((double)Q_11) + x6);
         const float x18 = -a_prime_1;
-        const float x19 = Q_10*a_0 + Q_11*a_1 + Q_12*a_2 + x18;
+        const double x19 = rigidsym_sumprod4(((double)Q_10), ((double)a_0), ((double)Q_11), ((double)a_1), ((double)Q_12), ((double)a_2), ((double)x18), 1.0);
         const float x20 = -a_prime_2;
-        const float x21 = Q_20*a_0 + Q_21*a_1 + Q_22*a_2 + x20;
+        const float x21 = rigidsym_sumprod4(Q_20, a_0, Q_21, a_1, Q_22, a_2, x20, 1.0f);
         const float x22 = Q_00 - 1.0f;
         const float x23 = -a_prime_0;
-        const float x24 = Q_00*a_0 + Q_01*a_1 + Q_02*a_2 + x23;
-        const float x25 = Q_10*x19 + Q_20*x21 + x22*x24;
-        const float x26 = Q_11 - 1.0f;
-        const float x27 = Q_22 - 1.0f;
-        const float x28 = -(x22) - (x26) - (x27);
-        const float x29 = 1.0f/x28;
-        const float x30 = Q_01*x24 + Q_21*x21 + x19*x26;
-        const float x31 = Q_02*x24 + Q_12*x19 + x21*x27;
-        const float x32 = 1.0f/x9;
-        const float x33 = x2*x32 + x32*x5 + x32*x8;
-        const float x34 = 1.0f/sqrtf(x33);
-        const float x35 = x14*x34;
-        const float x36 = x15*x34;
-        const float x37 = x16*x34;
+        const float x24 = rigidsym_sumprod4(Q_00, a_0, Q_01, a_1, Q_02, a_2, x23, 1.0f);
+        const float x25 = Q_11 - 1.0f;
+        const float x26 = Q_22 - 1.0f;
+        const float x27 = -(x22) - (x25) - (x26);
+        const float x28 = 1.0f/x27;
+        const float x29 = 1.0f/x9;
+        const float x30 = x2*x29 + x29*x5 + x29*x8;
+        const double x31 = 1.0/sqrt(((double)x30));
+        const float x32 = x14*x31;
+        const float x33 = x15*x31;
+        const float x34 = x16*x31;
+        const float x35 = Q_00*a_0 + Q_01*a_1 + Q_02*a_2 + x23;
+        const float x36 = Q_20*a_0 + Q_21*a_1 + Q_22*a_2 + x20;
+        const float x37 = Q_10*a_0 + Q_11*a_1 + Q_12*a_2 + x18;
+        const float x38 = Q_01*x35 + Q_21*x36 + x25*x37;
+        const float x39 = Q_02*x35 + Q_12*x37 + x26*x36;
+        const float x40 = Q_10*x37 + Q_20*x36 + x22*x35;
         out_e[0] = x14;
         out_e[1] = x15;
         out_e[2] = x16;
         out_phi[0] = x17;
-        out_p0[0] = x25*x29;
-        out_p0[1] = x29*x30;
-        out_p0[2] = x29*x31;
-        out_pitch[0] = (x14*(-a_0 - x23) + x15*(-a_1 - x18) + x16*(-a_2 - x20))/x17;
-        out_plucker[0] = x35;
-        out_plucker[1] = x36;
-        out_plucker[2] = x37;
-        out_plucker[3] = x29*x30*x37 - x29*x31*x36;
-        out_plucker[4] = -x25*x29*x37 + x29*x31*x35;
-        out_plucker[5] = x25*x29*x36 - x29*x30*x35;
-        singular |= (((double)x33)) == 0.0;
-        singular |= (((double)x9)) == 0.0;
-        singular |= (((double)x28)) == 0.0;
-        singular |= (((double)x17)) == 0.0;
-        const double finite = ((((x13 - x13) + (x17 - x17)) + ((x29 - x29) + ((x32 - x32) + (x34 - x34)))) + (((out_pitch[0] - out_pitch[0]) + (x9 - x9)) + ((((x10*x10) + (x11*x11) + (x12*x12)) - ((x10*x10) + (x11*x11) + (x12*x12))) + ((x28 - x28) + (x33 - x33)))));
+        out_p0[0] = x28*rigidsym_sumprod3(Q_10, x19, Q_20, x21, x22, x24);
+        out_p0[1] = x28*rigidsym_sumprod3(Q_01, x24, Q_21, x21, x25, x19);
+        out_p0[2] = x28*rigidsym_sumprod3(Q_02, x24, Q_12, x19, x26, x21);
+        out_pitch[0] = (x14*(-((double)a_0) - ((double)x23)) + x15*(-((double)a_1) - ((double)x18)) + x16*(-((double)a_2) - ((double)x20)))/x17;
+        out_plucker[0] = x32;
+        out_plucker[1] = x33;
+        out_plucker[2] = x34;
+        out_plucker[3] = -((double)x28)*((double)x33)*((double)x39) + ((double)x28)*((double)x34)*((double)x38);
+        out_plucker[4] = x28*x32*x39 - x28*x34*x40;
+        out_plucker[5] = -((double)x28)*((double)x32)*((double)x38) + ((double)x28)*((double)x33)*((double)x40);
+        singular |= (((double)x30)) == 0.0;
+        singular |= (x9) == 0.0;
+        singular |= (((double)x27)) == 0.0;
+        singular |= (x17) == 0.0;
+        const double finite = ((((x13 - x13) + (x17 - x17)) + ((x28 - x28) + ((x29 - x29) + (x31 - x31)))) + (((out_pitch[0] - out_pitch[0]) + (x9 - x9)) + ((((x10*x10) + (x11*x11) + (x12*x12)) - ((x10*x10) + (x11*x11) + (x12*x12))) + ((x27 - x27) + (x30 - x30)))));
         singular |= finite != finite;
     } else if (((double)Q_22) >= ((double)Q_00) && ((double)Q_22) >= ((double)Q_11) && ((double)Q_00) + ((double)Q_11) + ((double)Q_22) < 0.0) {
         const float x0 = (0.5f)*Q_02;
         const float x1 = (0.5f)*Q_20;
-        const float x2 = x0 + x1;
+        const double x2 = ((double)x0) + ((double)x1);
         const float x3 = (x2*x2);
         const float x4 = (0.5f)*Q_12;
         const float x5 = (0.5f)*Q_21 + x4;
         const float x6 = (x5*x5);
-        const float x7 = (0.5f)*Q_00 + (0.5f)*Q_11 - 0.5f;
-        const float x8 = (0.5f)*Q_22 - x7;
+        const double x7 = (0.5)*((double)Q_00) + (0.5)*((double)Q_11) - 0.5;
+        const double x8 = (0.5)*((double)Q_22) - x7;
         const float x9 = (x8*x8);
         const float x10 = x3 + x6 + x9;
         const float x11 = x0 - x1;
         const float x12 = (0.5f)*Q_21 - x4;
         const float x13 = -0.5f*Q_01 + (0.5f)*Q_10;
         const float x14 = ((x11*x5 + x12*x2 + x13*x8 < 0.0f) ? (-1.0f) : (1.0f))/sqrtf(x10);
-        const float x15 = x14*x2;
-        const float x16 = x14*x5;
-        const float x17 = x14*x8;
-        const float x18 = atan2(sqrtf((x11*x11) + (x12*x12) + (x13*x13)), (0.5f)*Q_22 + x7);
+        const double x15 = ((double)x14)*x2;
+        const double x16 = ((double)x14)*((double)x5);
+        const double x17 = ((double)x14)*x8;
+        const double x18 = atan2(sqrt((((double)x11)*((double)x11)) + (((double)x12)*((double)x12)) + (((double)x13)*((double)x13))), (0.5)*((double)Q_22) + x7);
         const float x19 = -a_prime_1;
         const float x20 = Q_10*a_0 + Q_11*a_1 + Q_12*a_2 + x19;
         const float x21 = -a_prime_2;
         const float x22 = Q_20*a_0 + Q_21*a_1 + Q_22*a_2 + x21;
         const float x23 = Q_00 - 1.0f;
         const float x24 = -a_prime_0;
-        const float x25 = Q_00*a_0 + Q_01*a_1 + Q_02*a_2 + x24;
+        const double x25 = ((double)Q_00)*((double)a_0) + ((double)Q_01)*((double)a_1) + ((double)Q_02)*((double)a_2) + ((double)x24);
         const float x26 = Q_10*x20 + Q_20*x22 + x23*x25;
         const float x27 = Q_11 - 1.0f;
         const float x28 = Q_22 - 1.0f;
@@ -510,7 +524,7 @@ static inline int rigidsym_screw_of_displacement_sample_f32(
         const float x32 = Q_02*x25 + Q_12*x20 + x22*x28;
         const float x33 = 1.0f/x10;
         const float x34 = x3*x33 + x33*x6 + x33*x9;
-        const float x35 = 1.0f/sqrtf(x34);
+        const double x35 = 1.0/sqrt(((double)x34));
         const float x36 = x15*x35;
         const float x37 = x16*x35;
         const float x38 = x17*x35;
@@ -521,7 +535,7 @@ static inline int rigidsym_screw_of_displacement_sample_f32(
         out_p0[0] = x26*x30;
         out_p0[1] = x30*x31;
         out_p0[2] = x30*x32;
-        out_pitch[0] = (x15*(-a_0 - x24) + x16*(-a_1 - x19) + x17*(-a_2 - x21))/x18;
+        out_pitch[0] = (x15*(-((double)a_0) - ((double)x24)) + x16*(-((double)a_1) - ((double)x19)) + x17*(-((double)a_2) - ((double)x21)))/x18;
         out_plucker[0] = x36;
         out_plucker[1] = x37;
         out_plucker[2] = x38;
@@ -531,7 +545,7 @@ static inline int rigidsym_screw_of_displacement_sample_f32(
         singular |= (((double)x34)) == 0.0;
         singular |= (((double)x10)) == 0.0;
         singular |= (((double)x29)) == 0.0;
-        singular |= (((double)x18)) == 0.0;
+        singular |= (x18) == 0.0;
         const double finite = ((((x14 - x14) + (x18 - x18)) + ((x30 - x30) + ((x33 - x33) + (x35 - x35)))) + (((out_pitch[0] - out_pitch[0]) + (x10 - x10)) + ((((x11*x11) + (x12*x12) + (x13*x13)) - ((x11*x11) + (x12*x12) + (x13*x13))) + ((x29 - x29) + (x34 - x34)))));
         singular |= finite != finite;
     } else {
@@ -544,19 +558,19 @@ static inline int rigidsym_screw_of_displacement_sample_f32(
         const float x6 = (x5*x5);
         const float x7 = (0.5f)*Q_02;
         const float x8 = (0.5f)*Q_20;
-        const float x9 = x7 - x8;
-        const float x10 = (x9*x9);
-        const float x11 = (x2*x2);
-        const float x12 = x10 + x11 + x6;
-        const double x13 = sqrt(((double)x12));
-        const float x14 = 1.0f/x13;
-        const double x15 = ((double)x14)*x2;
-        const double x16 = ((double)x14)*((double)x9);
-        const double x17 = ((double)x14)*x5;
+        const double x9 = ((double)x7) - ((double)x8);
+        const double x10 = (x9*x9);
+        const double x11 = (x2*x2);
+        const double x12 = x10 + x11 + ((double)x6);
+        const double x13 = sqrt(x12);
+        const double x14 = 1.0/x13;
+        const double x15 = x14*x2;
+        const double x16 = x14*x9;
+        const double x17 = x14*x5;
         const float x18 = (0.5f)*Q_00;
         const float x19 = (0.5f)*Q_11;
         const float x20 = (0.5f)*Q_22;
-        const float x21 = atan2(x13, x18 + x19 + x20 - 0.5f);
+        const double x21 = atan2(x13, ((double)x18) + ((double)x19) + ((double)x20) - 0.5);
         const float x22 = Q_00 + Q_11 + Q_22 + 1.0f;
         const float x23 = 4.0f*x10 + 4.0f*x11 + 4.0f*x6;
         const float x24 = 1.0f/x23;
@@ -564,15 +578,15 @@ static inline int rigidsym_screw_of_displacement_sample_f32(
         const float x26 = -Q_10*a_0 - Q_11*a_1 - Q_12*a_2 - x25;
         const float x27 = -a_prime_2;
         const double x28 = -((double)Q_20)*((double)a_0) - ((double)Q_21)*((double)a_1) - ((double)Q_22)*((double)a_2) - ((double)x27);
-        const float x29 = 1.0f/x12;
+        const double x29 = 1.0/x12;
         const float x30 = -a_prime_0;
-        const float x31 = -Q_00*a_0 - Q_01*a_1 - Q_02*a_2 - x30;
-        const double x32 = x2*((double)x31) + ((double)x26)*((double)x9) + x28*x5;
-        const float x33 = -a_0*x18 - a_1*x3 - a_2*x7 + (0.5f)*a_prime_0 - 0.5f*x2*x29*x32 + x22*x24*(-x26*x5 + x28*x9);
-        const double x34 = 2.0*((double)x10) + 2.0*((double)x11) + 2.0*((double)x6);
-        const float x35 = x32/x34;
-        const float x36 = -0.5f*Q_10*a_0 - a_1*x19 - a_2*x0 + (0.5f)*a_prime_1 + x22*x24*(-x2*x28 + x31*x5) - x35*x9;
-        const float x37 = -0.5f*Q_21*a_1 - a_0*x8 - a_2*x20 + (0.5f)*a_prime_2 + x22*x24*(x2*x26 - x31*x9) - x35*x5;
+        const double x31 = -((double)Q_00)*((double)a_0) - ((double)Q_01)*((double)a_1) - ((double)Q_02)*((double)a_2) - ((double)x30);
+        const double x32 = x2*x31 + ((double)x26)*x9 + x28*x5;
+        const double x33 = -((double)a_0)*((double)x18) - ((double)a_1)*((double)x3) - ((double)a_2)*((double)x7) + (0.5)*((double)a_prime_0) - 0.5*x2*x29*x32 + ((double)x22)*((double)x24)*(-((double)x26)*x5 + x28*x9);
+        const double x34 = 2.0*x10 + 2.0*x11 + 2.0*((double)x6);
+        const double x35 = x32/x34;
+        const double x36 = -0.5*((double)Q_10)*((double)a_0) - ((double)a_1)*((double)x19) - ((double)a_2)*((double)x0) + (0.5)*((double)a_prime_1) + ((double)x22)*((double)x24)*(-x2*x28 + x31*x5) - x35*x9;
+        const double x37 = -0.5*((double)Q_21)*((double)a_1) - ((double)a_0)*((double)x8) - ((double)a_2)*((double)x20) + (0.5)*((double)a_prime_2) + ((double)x22)*((double)x24)*(x2*((double)x26) - x31*x9) - x35*x5;
         const float x38 = x10*x29 + x11*x29 + x29*x6;
         const float x39 = 1.0f/sqrtf(x38);
         const float x40 = x15*x39;
@@ -586,7 +600,7 @@ static inline int rigidsym_screw_of_displacement_sample_f32(
         out_p0[0] = x33;
         out_p0[1] = x36;
         out_p0[2] = x37;
-        out_pitch[0] = (x15*(-((double)a_0) - ((double)x30)) + x16*(-((double)a_1) - ((double)x25)) + x17*(-((double)a_2) - ((double)x27)))/((double)x21);
+        out_pitch[0] = (x15*(-((double)a_0) - ((double)x30)) + x16*(-((double)a_1) - ((double)x25)) + x17*(-((double)a_2) - ((double)x27)))/x21;
         out_plucker[0] = x40;
         out_plucker[1] = x41;
         out_plucker[2] = x42;
@@ -594,10 +608,10 @@ static inline int rigidsym_screw_of_displacement_sample_f32(
         out_plucker[4] = x33*x4*x43 + x37*x40;
         out_plucker[5] = x1*x36*x43 + x33*x41;
         singular |= (((double)x38)) == 0.0;
-        singular |= (((double)x12)) == 0.0;
+        singular |= (x12) == 0.0;
         singular |= (x34) == 0.0;
         singular |= (((double)x23)) == 0.0;
-        singular |= (((double)x21)) == 0.0;
+        singular |= (x21) == 0.0;
         const double finite = ((((x13 - x13) + ((x14 - x14) + (x24 - x24))) + ((x29 - x29) + ((x35 - x35) + (x39 - x39)))) + (((out_pitch[0] - out_pitch[0]) + ((x12 - x12) + (x23 - x23))) + ((x34 - x34) + ((x38 - x38) + (x21 - x21)))));
         singular |= finite != finite;
     }

@@ -54,6 +54,20 @@ def _diffprod(a, b, c, d):
     t = (p - (s - bb)) + (-w - bb)     # p - w = s + t exactly (Knuth's TwoSum)
     return (s + (t + q)) - r
 
+
+def _sumprod(*args):
+    """a1 b1 + ... + an bn compensated (Dot2 of Ogita, Rump and Oishi)."""
+    a = args[0]
+    k = 2.0 ** ((numpy.finfo(a.dtype).nmant + 2) // 2) + 1.0 if isinstance(a, numpy.ndarray) and a.dtype.kind == 'f' else 134217729.0
+    p, s = _two_prod(args[0], args[1], k)
+    for i in range(2, len(args), 2):
+        h, r = _two_prod(args[i], args[i + 1], k)
+        t = p + h
+        z = t - p
+        s = s + (((p - (t - z)) + (h - z)) + r)     # Knuth's TwoSum error, then the product's
+        p = t
+    return p + s
+
 OPS = 22
 MATH_HASH = "37ca360961ff48ba"
 #: sample flags returned by the batch function

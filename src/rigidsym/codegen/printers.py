@@ -43,6 +43,13 @@ class _PowMixin:
     def _print_DiffProd(self, expr):
         return f"{self._diffprod}({', '.join(self._print(a) for a in expr.args)})"
 
+    #: the compensated sum of products (:class:`rigidsym.codegen.compensated.SumProd`)
+    _sumprod = "_sumprod"
+
+    def _print_SumProd(self, expr):
+        name = self._sumprod.format(n=len(expr.args) // 2)
+        return f"{name}({', '.join(self._print(a) for a in expr.args)})"
+
     def _sqrt(self, arg: str) -> str:  # pragma: no cover - overridden
         raise NotImplementedError
 
@@ -114,6 +121,7 @@ class KernelCPrinter(_PowMixin, C99CodePrinter):
 
     _one = "1.0"
     _diffprod = "rigidsym_diffprod"
+    _sumprod = "rigidsym_sumprod{n}"
 
     def __init__(self, settings=None):
         super().__init__(settings or {})
