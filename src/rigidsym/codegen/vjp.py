@@ -45,7 +45,7 @@ def jvp_program(program: Program, inputs: list[sp.Symbol]) -> Program:
     body = []
 
     def d(expr) -> sp.Expr:
-        terms = [sp.diff(expr, s).xreplace(known) * tan[s]
+        terms = [_local(expr, s).xreplace(known) * tan[s]
                  for s in sorted(expr.free_symbols, key=sp.default_sort_key) if s in tan]
         return sp.Add(*terms)
 
@@ -123,7 +123,7 @@ def vjp_program(program: Program, inputs: list[sp.Symbol]) -> Program:
 
     def use(expr, weight) -> None:
         for s in sorted(expr.free_symbols, key=sp.default_sort_key):
-            d = sp.diff(expr, s).xreplace(known)
+            d = _local(expr, s).xreplace(known)
             if d != 0:
                 adj.setdefault(s, []).append(weight * d)
 
