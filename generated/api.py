@@ -724,7 +724,7 @@ def exponential_coordinates_left_jacobian(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1.05 u (kappa + 1) in float64, <= 1.05 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 97 ulp in float64) over 3 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1.05 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 97 ulp in float64) over 3 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 226 operations; math hash a4133e465ca458b7.
     """
@@ -1321,7 +1321,7 @@ def rotation_from_rotation_vector(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1.61 u (kappa + 1) in float64, <= 1.3 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 3.44e+07 ulp in float64) over 4 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1.61 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 3.44e+07 ulp in float64) over 4 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 31 operations; math hash 26ba18056a63eeb8.
     """
@@ -1612,7 +1612,7 @@ def screw_of_displacement(
 
         For an exactly symmetric Q (phi = pi) the sign of e follows natural_invariants_from_rotation's rule (largest-magnitude component positive).
 
-        Accuracy: error <= 1.59 u (kappa + 1) in float64, <= 1.29 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 1.59e+16 ulp in float64) over 9 regimes (docs/accuracy.md, kernels.accuracy); singular when phi = 0 (pure translation: no axis, infinite pitch), flagged where ||Q - Q^T||^2 == 0 with tr Q >= 0 (the main build, after the rewrite of 1 - cos phi from the skew part of Q): Q exactly symmetric in floating point, phi below the rounding of Q (about 1e-16 in float64, 6e-8 in float32); before the rewrite 3 - tr Q == 0 flagged up to phi ~ 1.5e-8.
+        Accuracy: error <= 1.59 u (kappa + 1) in float64, <= 1.14 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 1.59e+16 ulp in float64) over 9 regimes (docs/accuracy.md, kernels.accuracy); singular when phi = 0 (pure translation: no axis, infinite pitch), flagged where ||Q - Q^T||^2 == 0 with tr Q >= 0 (the main build, after the rewrite of 1 - cos phi from the skew part of Q): Q exactly symmetric in floating point, phi below the rounding of Q (about 1e-16 in float64, 6e-8 in float32); before the rewrite 3 - tr Q == 0 flagged up to phi ~ 1.5e-8.
 
         Generated; 571 operations; math hash 24c2ead304ca194c.
     """
@@ -1649,7 +1649,7 @@ def transform_from_exponential_coordinates(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1.1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 266 ulp in float64) over 3 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 266 ulp in float64) over 3 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 77 operations; math hash 6422323903f35e70.
     """

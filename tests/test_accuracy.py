@@ -69,12 +69,13 @@ OPEN = {("L_matrix", "numpy", "float64"): 1.2, ("L_matrix_dot", "numpy", "float6
         # 5.9 u where pytransform3d is 3.9 u (Q: phi -> 0; 3.4e7 u before issue 37)
         ("screw_of_displacement", "numpy", "float64"): 1.6,
         ("screw_of_displacement", "c", "float64"): 1.6,
-        # float32 C: the precision plan meets the rule at its own points, not quite at all
-        ("screw_axis_point_with_jacobians", "c", "float32"): 1.5,
+        # float32 (test_float32_c_plans_over_the_regimes): the rounding of a constrained
+        # input (Q, e), which the truth does not see, weighs differently on the kernel's
+        # form and the textbook's; NumPy (float64 arithmetic, rounded once) the same
         ("screw_of_displacement", "c", "float32"): 1.4,
-        ("kinetic_energy_with_jacobians", "c", "float32"): 1.2,
-        **{(f"euler_angle_rates_{s}_{f}", "c", "float32"): 1.5
-           for s in ("xzx", "yxz") for f in ("body", "fixed")}}
+        ("screw_of_displacement", "numpy", "float32"): 1.4,
+        ("L_tilde_dot_with_jacobians", "c", "float32"): 1.3,
+        ("L_tilde_dot_with_jacobians", "numpy", "float32"): 1.3}
 
 
 def _within(rows) -> list:
@@ -104,6 +105,38 @@ def test_accurate_over_the_regimes_float64(name):
     K.use_backend("numpy")
     assert rows and sum(r.samples for r in rows) >= 5
     assert all(r.worst_ratio <= 1 and not r.spurious for r in rows), _losses(rows)
+    assert not _within(rows), _losses(_within(rows))
+
+
+#: float32 kernels whose C precision plan was past the rule at the harness's regimes on old
+#: main (rule ratio): the planner (rigidsym.codegen.float32) measured none of them; it
+#: measures them now, drawn with seeds of its own (not these)
+F32_PLANNED = {"euler_angle_rates_yzy_body": 1.73, "euler_angle_rates_xzx_fixed": 2.32,
+               "euler_angle_rates_yxy_fixed": 2.35, "euler_angle_rates_xyz_fixed": 1.84,
+               "screw_axis_point_with_jacobians": 1.35, "L_tilde_with_jacobians": 1.18,
+               "L_tilde_dot_with_jacobians": 1.56, "screw_of_displacement": 1.39}
+
+
+def test_float32_c_plan_at_gimbal_lock():
+    """euler_angle_rates_yzy_body in float32 on C at the gimbal-lock points of seed 2 (the
+    middle angle 1e-1 .. 1e-15 from 0 and pi): old main 1.73 of the rule, 11.9 u where the
+    textbook is 3.4 u (a random omega cancels in the numerator; the plan kept it in
+    float, having measured no point near pi)."""
+    if "c" not in _backends():
+        pytest.skip("no C backend")
+    name = "euler_angle_rates_yzy_body"
+    pts = A.P.regimes(A.R.kernel_of(name), np.float32, seed=2)["gimbal lock"]
+    rows = A.judge(name, "gimbal lock", pts, np.float32, ["c"])
+    assert rows[0].samples == 60 and not _within(rows), _losses(rows)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("name", sorted(F32_PLANNED))
+def test_float32_c_plans_over_the_regimes(name):
+    """The harness's float32 rows of the kernels of F32_PLANNED (seeds 0-3, every regime):
+    within the rule, OPEN aside (old main: F32_PLANNED's ratios)."""
+    rows = A.sweep([name], [np.float32], _backends(), seeds=(0, 1, 2, 3))
+    K.use_backend("numpy")
     assert not _within(rows), _losses(_within(rows))
 
 

@@ -131,7 +131,7 @@ def plan_inputs(kernel) -> tuple[dict, dict]:
     """The points a plan is measured on, ``(float32 inputs, inputs of the truth)``:
     :func:`sample_inputs`, then :func:`regime_inputs`; only the rows whose every input the
     C float32 kernels compute (zero, or of magnitude in :data:`RANGE32`)."""
-    own = sample_inputs(kernel.args, exact=True)
+    own = sample_inputs(kernel.args, n=N_RANDOM, exact=True)
     reg = regime_inputs(kernel, REGIME_SEEDS)
     cols, wide = ({k: np.concatenate([v, r[k]]) for k, v in o.items()}
                   for o, r in zip(own, reg, strict=True))
