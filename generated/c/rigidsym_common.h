@@ -105,8 +105,8 @@ static inline double rigidsym_xor_bits(double v, uint64_t m)
  * cancellation) and summed by TwoSum, so y0 + y1 holds x - n pi/2 to about 2^-100 absolute
  * at every x in range, near multiples of pi/2 included. Polynomials: fdlibm's __kernel_sin
  * and __kernel_cos on [-pi/4, pi/4] (k_sin.c, k_cos.c; musl's branch-free form of the
- * cosine), minimax to 2^-58. FMA contraction (-ffp-contract=fast) leaves the exact products
- * and the additions-only TwoSums as they are and only makes the polynomials more accurate.
+ * cosine), minimax to 2^-58. FMA contraction (-ffp-contract=fast, off by default) would leave
+ * the exact products and the additions-only TwoSums as they are.
  * fdlibm: Copyright (C) 1993 by Sun Microsystems, Inc. All rights reserved. Developed at
  * SunPro, a Sun Microsystems, Inc. business. Permission to use, copy, modify, and distribute
  * this software is freely granted, provided that this notice is preserved. */
@@ -194,8 +194,9 @@ static inline double rigidsym_cos(double x)
 /* The float32 code (sample functions and lanes loops) without FMA contraction: the float32
  * precision plans (rigidsym.codegen.float32) are measured on a simulation that rounds every
  * product, and a contracted `a b + c` moved seven plans past issue 37's rule at 1000 points
- * (tests/test_float32.py). GCC: an optimize pragma around them (the float64 code keeps
- * -ffp-contract=fast); elsewhere nothing (clang ignores contraction pragmas under
+ * (tests/test_float32.py). GCC: an optimize pragma around them, which keeps them so under a
+ * RIGIDSYM_CFLAGS with -ffp-contract=fast (the default flags have -ffp-contract=off for all
+ * the code since issue 37); elsewhere nothing (clang ignores contraction pragmas under
  * -ffp-contract=fast). */
 #if defined(__GNUC__) && !defined(__clang__) && !defined(RIGIDSYM_F32_CONTRACT)
 #define RIGIDSYM_F32_BEGIN _Pragma("GCC push_options") _Pragma("GCC optimize(\"fp-contract=off\")")
