@@ -6,7 +6,7 @@
  * template: c_kernel.c.j2
  * math hash: sha256:26a3a8dc99ccb39f
  * sympy 1.14.0, rigidsym 0.2.0
- * operations: 5976
+ * operations: 5973
  */
 #include "exponential_coordinates_left_jacobian_inverse_with_jacobians.h"
 
@@ -47,7 +47,6 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_exponential_coordinates_left_jacobian_
 {
     int64_t count = 0;
     RIGIDSYM_ALIGNED double trig_0[RIGIDSYM_LANES_TRIG];
-    RIGIDSYM_ALIGNED double trig_1[RIGIDSYM_LANES_TRIG];
     RIGIDSYM_ALIGNED double col_xi_0[RIGIDSYM_LANES_TRIG];
     RIGIDSYM_ALIGNED double col_xi_1[RIGIDSYM_LANES_TRIG];
     RIGIDSYM_ALIGNED double col_xi_2[RIGIDSYM_LANES_TRIG];
@@ -69,11 +68,9 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_exponential_coordinates_left_jacobian_
         const double x1 = (xi_1*xi_1);
         const double x2 = (xi_2*xi_2);
         const double x3 = x0 + x1 + x2;
-        const double dc96 = sqrt(x3);
 
         trig_0[j] = RIGIDSYM_VCOS(sqrt(x3));
-        trig_1[j] = RIGIDSYM_VSIN(dc96);
-        far |= RIGIDSYM_TRIG_FAR(sqrt(x3)) | RIGIDSYM_TRIG_FAR(dc96);
+        far |= RIGIDSYM_TRIG_FAR(sqrt(x3));
     }
     if (far) {
         for (int64_t j = 0; j < RIGIDSYM_LANES_TRIG; ++j) {
@@ -84,19 +81,15 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_exponential_coordinates_left_jacobian_
         const double x1 = (xi_1*xi_1);
         const double x2 = (xi_2*xi_2);
         const double x3 = x0 + x1 + x2;
-        const double dc96 = sqrt(x3);
 
             if (RIGIDSYM_TRIG_FAR(sqrt(x3)))
                 trig_0[j] = cos(sqrt(x3));
-            if (RIGIDSYM_TRIG_FAR(dc96))
-                trig_1[j] = sin(dc96);
         }
     }
     for (int64_t j = 0; j < RIGIDSYM_LANES_TRIG; ++j) {
         count += (int64_t)(rigidsym_exponential_coordinates_left_jacobian_inverse_with_jacobians_sample_trig(
             in_xi + 6 * j,
             trig_0[j],
-            trig_1[j],
             out_J + 36 * j,
             out_J_D_xi + 216 * j) != 0) << j;
     }
@@ -112,7 +105,6 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_exponential_coordinates_left_jacobian_
 {
     int64_t count = 0;
     RIGIDSYM_ALIGNED double trig_0[RIGIDSYM_LANES_F32];
-    RIGIDSYM_ALIGNED double trig_1[RIGIDSYM_LANES_F32];
     RIGIDSYM_ALIGNED double col_xi_0[RIGIDSYM_LANES_F32];
     RIGIDSYM_ALIGNED double col_xi_1[RIGIDSYM_LANES_F32];
     RIGIDSYM_ALIGNED double col_xi_2[RIGIDSYM_LANES_F32];
@@ -134,11 +126,9 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_exponential_coordinates_left_jacobian_
         const double x1 = (xi_1*xi_1);
         const double x2 = (xi_2*xi_2);
         const double x3 = x0 + x1 + x2;
-        const double dc96 = sqrt(x3);
 
         trig_0[j] = RIGIDSYM_VCOS(sqrt(x3));
-        trig_1[j] = RIGIDSYM_VSIN(dc96);
-        far |= RIGIDSYM_TRIG_FAR(sqrt(x3)) | RIGIDSYM_TRIG_FAR(dc96);
+        far |= RIGIDSYM_TRIG_FAR(sqrt(x3));
     }
     if (far) {
         for (int64_t j = 0; j < RIGIDSYM_LANES_F32; ++j) {
@@ -149,19 +139,15 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_exponential_coordinates_left_jacobian_
         const double x1 = (xi_1*xi_1);
         const double x2 = (xi_2*xi_2);
         const double x3 = x0 + x1 + x2;
-        const double dc96 = sqrt(x3);
 
             if (RIGIDSYM_TRIG_FAR(sqrt(x3)))
                 trig_0[j] = cos(sqrt(x3));
-            if (RIGIDSYM_TRIG_FAR(dc96))
-                trig_1[j] = sin(dc96);
         }
     }
     for (int64_t j = 0; j < RIGIDSYM_LANES_F32; ++j) {
         count += (int64_t)(rigidsym_exponential_coordinates_left_jacobian_inverse_with_jacobians_sample_trig_f32(
             in_xi + 6 * j,
             trig_0[j],
-            trig_1[j],
             out_J + 36 * j,
             out_J_D_xi + 216 * j) != 0) << j;
     }

@@ -5,7 +5,7 @@
 # template: array_kernel.py.j2
 # math hash: sha256:26a3a8dc99ccb39f
 # sympy 1.14.0, rigidsym 0.2.0
-# operations: 5976
+# operations: 5973
 """The left Jacobian inverse of SE(3) at xi = [w; v] (6 x 6, angular first), with the Jacobians of its outputs.
 
 the block inverse of [[J_l, 0], [Q, J_l]]; and d(output)/d(input) by sympy on the declared formula
@@ -34,7 +34,7 @@ def _sin(x):
 def _cos(x):
     return _sincos(x)[..., 1]
 
-OPS = 5976
+OPS = 5973
 MATH_HASH = "26a3a8dc99ccb39f"
 COLUMNS = ("xi_0", "xi_1", "xi_2", "xi_3", "xi_4", "xi_5", )
 
@@ -572,33 +572,32 @@ def _main(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5):
     dc95 = x125*x32
     dx126_5 = dc95
     x127 = _cos(jax.numpy.sqrt(x3))
-    dc96 = jax.numpy.sqrt(x3)
-    dc97 = _sin(dc96)/dc96
-    dx127_0 = -dc97*xi_0
-    dx127_1 = -dc97*xi_1
-    dx127_2 = -dc97*xi_2
+    dc96 = jax.numpy.where(jax.numpy.less(x3, 9.0949470177292824e-13), 1.0 - 0.16666666666666666*x3, jax.numpy.where(jax.numpy.less(x3, 9.0949470177292824e-13), 1048576.0, 1.0/jax.numpy.sqrt(x3))*_sin(jax.numpy.where(jax.numpy.less(x3, 9.0949470177292824e-13), 9.5367431640625e-7, jax.numpy.sqrt(x3))))
+    dx127_0 = -dc96*xi_0
+    dx127_1 = -dc96*xi_1
+    dx127_2 = -dc96*xi_2
     x128 = x127 - 1.0
     x129 = x19*xi_5
-    dc98 = (0.5)*xi_5
-    dx129_0 = dc98*dx4_0
-    dx129_1 = dc98*dx4_1
-    dx129_2 = dc98*dx4_2
+    dc97 = (0.5)*xi_5
+    dx129_0 = dc97*dx4_0
+    dx129_1 = dc97*dx4_1
+    dx129_2 = dc97*dx4_2
     x130 = jax.numpy.where(jax.numpy.less(x3, 0.25), x3*(x3*(x3*(x3*(x3*(x3*(1.1853103784320715e-11 - 4.9044309881360752e-14*x3) - 2.1794416635686479e-9) + 2.9227459783015339e-7) - 2.7006172839506174e-5) + 0.0015873015873015873) - 0.052777777777777778) - 0.16666666666666666, (-jax.numpy.where(jax.numpy.less(x3, 0.25), 0.0625, (x3*x3)) - jax.numpy.where(jax.numpy.less(x3, 0.25), 0.25, x3)*_cos(jax.numpy.where(jax.numpy.less(x3, 0.25), 0.5, jax.numpy.sqrt(x3))) + 5.0*jax.numpy.where(jax.numpy.less(x3, 0.25), 0.25, x3) + 8.0*_cos(jax.numpy.where(jax.numpy.less(x3, 0.25), 0.5, jax.numpy.sqrt(x3))) - 8.0)*jax.numpy.where(jax.numpy.less(x3, 0.25), 16.0, 1.0/(x3*x3)))
-    dc99 = jax.numpy.where(jax.numpy.less(x3, 2.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(9.0257303981382629e-21*x3 - 3.7633427590065923e-18) + 1.275842590276096e-15) - 3.4331016916952524e-13) + 7.1118622705924299e-11) - 1.0897208317843239e-8) + 1.1690983913206136e-6) - 8.1018518518518516e-5) + 0.0031746031746031746) - 0.052777777777777778, (0.5)*((-2.0*jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))*_cos(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))) + 10.0*jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3)) + jax.numpy.where(jax.numpy.less(x3, 2.0), 2.0, x3)*_sin(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))) - 4.0*jax.numpy.where(jax.numpy.less(x3, 2.0), 2.8284271247461901, (x3*jax.numpy.sqrt(x3))) - 8.0*_sin(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))))*jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3)) + 4.0*jax.numpy.where(jax.numpy.less(x3, 2.0), 2.0, x3)*_cos(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))) - 20.0*jax.numpy.where(jax.numpy.less(x3, 2.0), 2.0, x3) + 4.0*jax.numpy.where(jax.numpy.less(x3, 2.0), 4.0, (x3*x3)) - 32.0*_cos(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))) + 32.0)*jax.numpy.where(jax.numpy.less(x3, 2.0), 0.125, 1.0/(x3*x3*x3)))
-    dx130_0 = dc1*dc99
-    dx130_1 = dc2*dc99
-    dx130_2 = dc3*dc99
+    dc98 = jax.numpy.where(jax.numpy.less(x3, 2.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(9.0257303981382629e-21*x3 - 3.7633427590065923e-18) + 1.275842590276096e-15) - 3.4331016916952524e-13) + 7.1118622705924299e-11) - 1.0897208317843239e-8) + 1.1690983913206136e-6) - 8.1018518518518516e-5) + 0.0031746031746031746) - 0.052777777777777778, (0.5)*((-2.0*jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))*_cos(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))) + 10.0*jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3)) + jax.numpy.where(jax.numpy.less(x3, 2.0), 2.0, x3)*_sin(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))) - 4.0*jax.numpy.where(jax.numpy.less(x3, 2.0), 2.8284271247461901, (x3*jax.numpy.sqrt(x3))) - 8.0*_sin(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))))*jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3)) + 4.0*jax.numpy.where(jax.numpy.less(x3, 2.0), 2.0, x3)*_cos(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))) - 20.0*jax.numpy.where(jax.numpy.less(x3, 2.0), 2.0, x3) + 4.0*jax.numpy.where(jax.numpy.less(x3, 2.0), 4.0, (x3*x3)) - 32.0*_cos(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))) + 32.0)*jax.numpy.where(jax.numpy.less(x3, 2.0), 0.125, 1.0/(x3*x3*x3)))
+    dx130_0 = dc1*dc98
+    dx130_1 = dc2*dc98
+    dx130_2 = dc3*dc98
     x131 = x74*xi_5
     dx131_2 = dc17*xi_5
     x132 = x2*xi_5
     dx132_2 = dc3*xi_5
     x133 = x18*x72
-    dc100 = dc1*x72
-    dx133_0 = -dc100 + dx72_0*x18
-    dc101 = dc2*x72
-    dx133_1 = -dc101 + dx72_1*x18
-    dc102 = dc3*x72
-    dx133_2 = -dc102 + dx72_2*x18
+    dc99 = dc1*x72
+    dx133_0 = -dc99 + dx72_0*x18
+    dc100 = dc2*x72
+    dx133_1 = -dc100 + dx72_1*x18
+    dc101 = dc3*x72
+    dx133_2 = -dc101 + dx72_2*x18
     x134 = x75 + 0.5
     x135 = x2*x35
     dx135_0 = dx35_0*x2
@@ -606,23 +605,23 @@ def _main(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5):
     dx135_2 = 2.0*dc94 + dx35_2*x2
     dx135_5 = dc31
     x136 = jax.numpy.where(jax.numpy.less(x3, 0.5), x3*(x3*(x3*(x3*(x3*(x3*(3.4412236793189175e-11 - 1.4338431997162155e-13*x3) - 6.2630270963604301e-9) + 8.2671957671957675e-7) - 7.4404761904761911e-5) + 0.0041666666666666666) - 0.125) - 0.5, (-2.0*jax.numpy.where(jax.numpy.less(x3, 0.5), 0.5, x3) - 3.0*_cos(jax.numpy.where(jax.numpy.less(x3, 0.5), 0.70710678118654752, jax.numpy.sqrt(x3))) + 3.0)*jax.numpy.where(jax.numpy.less(x3, 0.5), 2.0, 1.0/x3))
-    dc103 = jax.numpy.where(jax.numpy.less(x3, 2.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(2.669037417735172e-20*x3 - 1.1097857582942845e-17) + 3.7486096724606947e-15) - 1.0036902398013508e-12) + 2.0647342075913505e-10) - 3.1315135481802147e-8) + 3.306878306878307e-6) - 0.00022321428571428571) + 0.0083333333333333332) - 0.125, (0.5)*((-4.0*jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3)) + 3.0*_sin(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))))*jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3)) + 4.0*jax.numpy.where(jax.numpy.less(x3, 2.0), 2.0, x3) + 6.0*_cos(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))) - 6.0)*jax.numpy.where(jax.numpy.less(x3, 2.0), 0.25, 1.0/(x3*x3)))
-    dx136_0 = dc1*dc103
-    dx136_1 = dc103*dc2
-    dx136_2 = dc103*dc3
+    dc102 = jax.numpy.where(jax.numpy.less(x3, 2.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(2.669037417735172e-20*x3 - 1.1097857582942845e-17) + 3.7486096724606947e-15) - 1.0036902398013508e-12) + 2.0647342075913505e-10) - 3.1315135481802147e-8) + 3.306878306878307e-6) - 0.00022321428571428571) + 0.0083333333333333332) - 0.125, (0.5)*((-4.0*jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3)) + 3.0*_sin(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))))*jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3)) + 4.0*jax.numpy.where(jax.numpy.less(x3, 2.0), 2.0, x3) + 6.0*_cos(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))) - 6.0)*jax.numpy.where(jax.numpy.less(x3, 2.0), 0.25, 1.0/(x3*x3)))
+    dx136_0 = dc1*dc102
+    dx136_1 = dc102*dc2
+    dx136_2 = dc102*dc3
     x137 = x8*xi_5
     dx137_0 = dx8_0*xi_5
     dx137_1 = dx8_1*xi_5
     dx137_2 = dx8_2*xi_5
     x138 = x46*xi_2
-    dc104 = xi_2*xi_3
-    dx138_0 = dc104
+    dc103 = xi_2*xi_3
+    dx138_0 = dc103
     dx138_3 = xi_0*xi_2
     x139 = (0.25)*x130
     x140 = x48*xi_2
     dx140_1 = xi_2*xi_4
-    dc105 = xi_1*xi_2
-    dx140_4 = dc105
+    dc104 = xi_1*xi_2
+    dx140_4 = dc104
     x141 = x128 + x3
     dx141_0 = dc1 + dx127_0
     dx141_1 = dc2 + dx127_1
@@ -655,8 +654,8 @@ def _main(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5):
     x147 = x10*x136
     dx147_0 = dx136_0*x10
     dx147_1 = dx136_1*x10
-    dc106 = (0.5)*x136
-    dx147_2 = dc106 + dx136_2*x10
+    dc105 = (0.5)*x136
+    dx147_2 = dc105 + dx136_2*x10
     x148 = x4*x48
     dx148_0 = dx4_0*x48
     dx148_1 = dx4_1*x48 + x4*xi_4
@@ -679,15 +678,15 @@ def _main(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5):
     dx152_0 = dx151_0*x35 + dx35_0*x151
     dx152_1 = dx151_1*x35 + dx35_1*x151
     dx152_2 = dx151_2*x35 + dx35_2*x151
-    dc107 = x151*x32
-    dx152_5 = dc107
+    dc106 = x151*x32
+    dx152_5 = dc106
     x153 = x141*x86
-    dc108 = dx141_0*x86
-    dx153_0 = dc108 + dx86_0*x141
-    dc109 = dx141_1*x86
-    dx153_1 = dc109 + dx86_1*x141
-    dc110 = dx141_2*x86
-    dx153_2 = dc110 + dx86_2*x141
+    dc107 = dx141_0*x86
+    dx153_0 = dc107 + dx86_0*x141
+    dc108 = dx141_1*x86
+    dx153_1 = dc108 + dx86_1*x141
+    dc109 = dx141_2*x86
+    dx153_2 = dc109 + dx86_2*x141
     x154 = (0.25)*x153
     x155 = x146*x94
     dx155_0 = dx146_0*x94 + dx94_0*x146
@@ -697,8 +696,8 @@ def _main(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5):
     x156 = x10*x155
     dx156_0 = dx155_0*x10
     dx156_1 = dx155_1*x10
-    dc111 = (0.5)*x155
-    dx156_2 = dc111 + dx155_2*x10
+    dc110 = (0.5)*x155
+    dx156_2 = dc110 + dx155_2*x10
     dx156_3 = dx155_3*x10
     x157 = x4*x94
     dx157_0 = dx4_0*x94 + dx94_0*x4
@@ -729,10 +728,10 @@ def _main(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5):
     dx162_1 = dx123_1*xi_4
     dx162_2 = dx123_2*xi_4
     x163 = jax.numpy.where(jax.numpy.less(x3, 0.5), x3*(x3*(x3*(x3*(x3*(x3*(1.4338431997162155e-13*x3 - 3.4412236793189175e-11) + 6.2630270963604301e-9) - 8.2671957671957675e-7) + 7.4404761904761911e-5) - 0.0041666666666666666) + 0.125) + 0.5, (2.0*jax.numpy.where(jax.numpy.less(x3, 0.5), 0.5, x3) + 3.0*_cos(jax.numpy.where(jax.numpy.less(x3, 0.5), 0.70710678118654752, jax.numpy.sqrt(x3))) - 3.0)*jax.numpy.where(jax.numpy.less(x3, 0.5), 2.0, 1.0/x3))
-    dc112 = jax.numpy.where(jax.numpy.less(x3, 2.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(1.1097857582942845e-17 - 2.669037417735172e-20*x3) - 3.7486096724606947e-15) + 1.0036902398013508e-12) - 2.0647342075913505e-10) + 3.1315135481802147e-8) - 3.306878306878307e-6) + 0.00022321428571428571) - 0.0083333333333333332) + 0.125, (0.5)*((4.0*jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3)) - 3.0*_sin(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))))*jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3)) - 4.0*jax.numpy.where(jax.numpy.less(x3, 2.0), 2.0, x3) - 6.0*_cos(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))) + 6.0)*jax.numpy.where(jax.numpy.less(x3, 2.0), 0.25, 1.0/(x3*x3)))
-    dx163_0 = dc1*dc112
-    dx163_1 = dc112*dc2
-    dx163_2 = dc112*dc3
+    dc111 = jax.numpy.where(jax.numpy.less(x3, 2.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(1.1097857582942845e-17 - 2.669037417735172e-20*x3) - 3.7486096724606947e-15) + 1.0036902398013508e-12) - 2.0647342075913505e-10) + 3.1315135481802147e-8) - 3.306878306878307e-6) + 0.00022321428571428571) - 0.0083333333333333332) + 0.125, (0.5)*((4.0*jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3)) - 3.0*_sin(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))))*jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3)) - 4.0*jax.numpy.where(jax.numpy.less(x3, 2.0), 2.0, x3) - 6.0*_cos(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))) + 6.0)*jax.numpy.where(jax.numpy.less(x3, 2.0), 0.25, 1.0/(x3*x3)))
+    dx163_0 = dc1*dc111
+    dx163_1 = dc111*dc2
+    dx163_2 = dc111*dc3
     x164 = x163*xi_3
     dx164_0 = dx163_0*xi_3
     dx164_1 = dx163_1*xi_3
@@ -743,10 +742,10 @@ def _main(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5):
     dx165_2 = dx33_2*xi_0
     dx165_4 = dc90
     x166 = jax.numpy.where(jax.numpy.less(x3, 2.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(8.2206352466243297e-19 - 1.7793582784901148e-21*x3) - 3.1238413937172451e-16) + 9.5589546647747705e-14) - 2.2941491195459449e-11) + 4.17535139757362e-9) - 5.5114638447971777e-7) + 4.9603174603174603e-5) - 0.0027777777777777779) + 0.083333333333333329, (jax.numpy.where(jax.numpy.less(x3, 2.0), 2.0, x3) + 2.0*_cos(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))) - 2.0)*jax.numpy.where(jax.numpy.less(x3, 2.0), 0.25, 1.0/(x3*x3)))
-    dc113 = jax.numpy.where(jax.numpy.less(x3, 2.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(6.5765081972994638e-18 - 1.6014224506411032e-20*x3) - 2.1866889756020719e-15) + 5.7353727988648621e-13) - 1.1470745597729724e-10) + 1.670140559029448e-8) - 1.6534391534391535e-6) + 9.9206349206349206e-5) - 0.0027777777777777779, ((jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3)) - _sin(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))))*jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3)) - 2.0*jax.numpy.where(jax.numpy.less(x3, 2.0), 2.0, x3) - 4.0*_cos(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))) + 4.0)*jax.numpy.where(jax.numpy.less(x3, 2.0), 0.125, 1.0/(x3*x3*x3)))
-    dx166_0 = dc1*dc113
-    dx166_1 = dc113*dc2
-    dx166_2 = dc113*dc3
+    dc112 = jax.numpy.where(jax.numpy.less(x3, 2.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(6.5765081972994638e-18 - 1.6014224506411032e-20*x3) - 2.1866889756020719e-15) + 5.7353727988648621e-13) - 1.1470745597729724e-10) + 1.670140559029448e-8) - 1.6534391534391535e-6) + 9.9206349206349206e-5) - 0.0027777777777777779, ((jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3)) - _sin(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))))*jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3)) - 2.0*jax.numpy.where(jax.numpy.less(x3, 2.0), 2.0, x3) - 4.0*_cos(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))) + 4.0)*jax.numpy.where(jax.numpy.less(x3, 2.0), 0.125, 1.0/(x3*x3*x3)))
+    dx166_0 = dc1*dc112
+    dx166_1 = dc112*dc2
+    dx166_2 = dc112*dc3
     x167 = x166*xi_0
     dx167_0 = dx166_0*xi_0 + x166
     dx167_1 = dx166_1*xi_0
@@ -754,28 +753,28 @@ def _main(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5):
     x168 = x1*xi_4
     dx168_1 = dc2*xi_4
     x169 = x52*(-x125 - 1.0)
-    dc114 = -x125 - 1.0
-    dx169_0 = dc114*dx52_0 - x52*xi_0
-    dc115 = x52*xi_1
-    dx169_1 = dc114*dx52_1 - dc115
-    dc116 = x52*xi_2
-    dx169_2 = dc114*dx52_2 - dc116
-    dx169_3 = dc114*x32
+    dc113 = -x125 - 1.0
+    dx169_0 = dc113*dx52_0 - x52*xi_0
+    dc114 = x52*xi_1
+    dx169_1 = dc113*dx52_1 - dc114
+    dc115 = x52*xi_2
+    dx169_2 = dc113*dx52_2 - dc115
+    dx169_3 = dc113*x32
     x170 = x3 - x88
-    dc117 = (0.25)*dx87_0
-    dx170_0 = -dc117 + 2.0*xi_0
-    dc118 = (0.25)*dx87_1
-    dx170_1 = -dc118 + 2.0*xi_1
-    dc119 = (0.25)*dx87_2
-    dx170_2 = -dc119 + 2.0*xi_2
+    dc116 = (0.25)*dx87_0
+    dx170_0 = -dc116 + 2.0*xi_0
+    dc117 = (0.25)*dx87_1
+    dx170_1 = -dc117 + 2.0*xi_1
+    dc118 = (0.25)*dx87_2
+    dx170_2 = -dc118 + 2.0*xi_2
     x171 = x108*x170
     dx171_0 = dx108_0*x170 + dx170_0*x108
     dx171_1 = dx108_1*x170 + dx170_1*x108
     dx171_2 = dx108_2*x170 + dx170_2*x108
     dx171_3 = x170*x72
     x172 = x108*x76
-    dc120 = (0.5)*x108
-    dx172_0 = dc120*xi_0 + dx108_0*x76
+    dc119 = (0.5)*x108
+    dx172_0 = dc119*xi_0 + dx108_0*x76
     dx172_1 = dc70*x108 + dx108_1*x76
     dx172_2 = dc17*x108 + dx108_2*x76
     dx172_3 = x72*x76
@@ -800,14 +799,14 @@ def _main(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5):
     dx177_2 = dx176_2*x62 + dx62_2*x176
     dx177_3 = x19*x62
     x178 = x33*x53
-    dc121 = dc23*x1
-    dx178_0 = dc121 + dx33_0*x53
+    dc120 = dc23*x1
+    dx178_0 = dc120 + dx33_0*x53
     dx178_1 = dx33_1*x53 + dx53_1*x33
     dx178_2 = dx33_2*x53
     dx178_4 = dc30
     x179 = x50*xi_1
     dx179_2 = xi_1*xi_5
-    dx179_5 = dc105
+    dx179_5 = dc104
     x180 = -x72*x76
     dx180_0 = -dc45
     dx180_1 = -dc47
@@ -817,10 +816,10 @@ def _main(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5):
     dx181_1 = dx180_1*xi_0
     dx181_2 = dx180_2*xi_0
     x182 = jax.numpy.where(jax.numpy.less(x3, 1.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(1.5619206968586225e-16*x3 - 4.7794773323873853e-14) + 1.1470745597729725e-11) - 2.08767569878681e-9) + 2.7557319223985888e-7) - 2.4801587301587302e-5) + 0.0013888888888888889) - 0.041666666666666664) - 0.5, (-jax.numpy.where(jax.numpy.less(x3, 1.0), 1.0, x3) - _cos(jax.numpy.where(jax.numpy.less(x3, 1.0), 1.0, jax.numpy.sqrt(x3))) + 1.0)*jax.numpy.where(jax.numpy.less(x3, 1.0), 1.0, 1.0/x3))
-    dc122 = jax.numpy.where(jax.numpy.less(x3, 1.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(1.249536557486898e-15 - 3.6992858609809485e-18*x3) - 3.3456341326711696e-13) + 6.882447358637835e-11) - 1.043837849393405e-8) + 1.1022927689594355e-6) - 7.4404761904761911e-5) + 0.0027777777777777779) - 0.041666666666666664, (0.5)*((-2.0*jax.numpy.where(jax.numpy.less(x3, 1.0), 1.0, jax.numpy.sqrt(x3)) + _sin(jax.numpy.where(jax.numpy.less(x3, 1.0), 1.0, jax.numpy.sqrt(x3))))*jax.numpy.where(jax.numpy.less(x3, 1.0), 1.0, jax.numpy.sqrt(x3)) + 2.0*jax.numpy.where(jax.numpy.less(x3, 1.0), 1.0, x3) + 2.0*_cos(jax.numpy.where(jax.numpy.less(x3, 1.0), 1.0, jax.numpy.sqrt(x3))) - 2.0)*jax.numpy.where(jax.numpy.less(x3, 1.0), 1.0, 1.0/(x3*x3)))
-    dx182_0 = dc1*dc122
-    dx182_1 = dc122*dc2
-    dx182_2 = dc122*dc3
+    dc121 = jax.numpy.where(jax.numpy.less(x3, 1.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(1.249536557486898e-15 - 3.6992858609809485e-18*x3) - 3.3456341326711696e-13) + 6.882447358637835e-11) - 1.043837849393405e-8) + 1.1022927689594355e-6) - 7.4404761904761911e-5) + 0.0027777777777777779) - 0.041666666666666664, (0.5)*((-2.0*jax.numpy.where(jax.numpy.less(x3, 1.0), 1.0, jax.numpy.sqrt(x3)) + _sin(jax.numpy.where(jax.numpy.less(x3, 1.0), 1.0, jax.numpy.sqrt(x3))))*jax.numpy.where(jax.numpy.less(x3, 1.0), 1.0, jax.numpy.sqrt(x3)) + 2.0*jax.numpy.where(jax.numpy.less(x3, 1.0), 1.0, x3) + 2.0*_cos(jax.numpy.where(jax.numpy.less(x3, 1.0), 1.0, jax.numpy.sqrt(x3))) - 2.0)*jax.numpy.where(jax.numpy.less(x3, 1.0), 1.0, 1.0/(x3*x3)))
+    dx182_0 = dc1*dc121
+    dx182_1 = dc121*dc2
+    dx182_2 = dc121*dc3
     x183 = x111*x182
     dx183_0 = dx111_0*x182 + dx182_0*x111
     dx183_1 = dx111_1*x182 + dx182_1*x111
@@ -835,14 +834,14 @@ def _main(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5):
     dx185_2 = dx52_2*x11
     dx185_3 = dc58
     x186 = x4*(3.0*x0 + 3.0*x1 + 3.0*x2 + x87)
-    dc123 = 3.0*x0 + 3.0*x1 + 3.0*x2 + x87
-    dx186_0 = dc123*dx4_0 + 6.0*dc52 + dx87_0*x4
-    dx186_1 = dc123*dx4_1 + 6.0*dc4 + dx87_1*x4
-    dx186_2 = dc123*dx4_2 + 6.0*dc5 + dx87_2*x4
+    dc122 = 3.0*x0 + 3.0*x1 + 3.0*x2 + x87
+    dx186_0 = dc122*dx4_0 + 6.0*dc52 + dx87_0*x4
+    dx186_1 = dc122*dx4_1 + 6.0*dc4 + dx87_1*x4
+    dx186_2 = dc122*dx4_2 + 6.0*dc5 + dx87_2*x4
     x187 = x108*x19
-    dx187_0 = dc120*dx4_0 + dx108_0*x19
-    dx187_1 = dc120*dx4_1 + dx108_1*x19
-    dx187_2 = dc120*dx4_2 + dx108_2*x19
+    dx187_0 = dc119*dx4_0 + dx108_0*x19
+    dx187_1 = dc119*dx4_1 + dx108_1*x19
+    dx187_2 = dc119*dx4_2 + dx108_2*x19
     dx187_3 = x19*x72
     x188 = x37*x81
     dx188_0 = dc60*x37
@@ -869,10 +868,10 @@ def _main(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5):
     dx192_2 = dx108_2*x89 + dx89_2*x108
     dx192_3 = x72*x89
     x193 = (x3*x3*x3)
-    dc124 = 6.0*(x3*x3)
-    dx193_0 = dc124*xi_0
-    dx193_1 = dc124*xi_1
-    dx193_2 = dc124*xi_2
+    dc123 = 6.0*(x3*x3)
+    dx193_0 = dc123*xi_0
+    dx193_1 = dc123*xi_1
+    dx193_2 = dc123*xi_2
     x194 = (0.25)*xi_3
     x195 = x194*x86
     dx195_0 = dx86_0*x194
@@ -882,8 +881,8 @@ def _main(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5):
     dx196_0 = dx193_0*x195 + dx195_0*x193
     dx196_1 = dx193_1*x195 + dx195_1*x193
     dx196_2 = dx193_2*x195 + dx195_2*x193
-    dc125 = (0.25)*x86
-    dx196_3 = dc125*x193
+    dc124 = (0.25)*x86
+    dx196_3 = dc124*x193
     x197 = x196*x72
     dx197_0 = dx196_0*x72 + dx72_0*x196
     dx197_1 = dx196_1*x72 + dx72_1*x196
@@ -893,7 +892,7 @@ def _main(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5):
     dx198_0 = dx195_0*x32 + dx32_0*x195
     dx198_1 = dx195_1*x32 + dx32_1*x195
     dx198_2 = dx195_2*x32 + dx32_2*x195
-    dx198_3 = dc125*x32
+    dx198_3 = dc124*x32
     x199 = x15*xi_5
     dx199_0 = dx15_0*xi_5
     dx199_1 = dx15_1*xi_5
@@ -902,8 +901,8 @@ def _main(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5):
     dx200_0 = dx199_0*xi_1
     dx200_1 = dx199_1*xi_1 + x199
     dx200_2 = dx199_2*xi_1
-    dc126 = x15*xi_1
-    dx200_5 = dc126
+    dc125 = x15*xi_1
+    dx200_5 = dc125
     x201 = x72*x83
     dx201_0 = dx72_0*x83 + dx83_0*x72
     dx201_1 = dx72_1*x83 + dx83_1*x72
@@ -913,12 +912,12 @@ def _main(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5):
     dx202_1 = dx201_1*x22
     dx202_2 = dx201_2*x22
     x203 = x103*x4
-    dc127 = dx4_0*x103
-    dx203_0 = dc127 + dc87
-    dc128 = dx4_1*x103
-    dx203_1 = dc128 + dc88
-    dc129 = dx4_2*x103
-    dx203_2 = dc129 + dc89
+    dc126 = dx4_0*x103
+    dx203_0 = dc126 + dc87
+    dc127 = dx4_1*x103
+    dx203_1 = dc127 + dc88
+    dc128 = dx4_2*x103
+    dx203_2 = dc128 + dc89
     x204 = x74*x86
     dx204_0 = dx86_0*x74
     dx204_1 = dx86_1*x74
@@ -957,87 +956,87 @@ def _main(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5):
     dx212_2 = dx191_2*xi_2 + x191
     dx212_5 = dx191_5*xi_2
     x213 = x115*x82
-    dc130 = (0.25)*x82
-    dx213_0 = dc130*dx86_0 - dc82
-    dx213_1 = dc130*dx86_1 - dc84
-    dx213_2 = dc130*dx86_2 - dc86
+    dc129 = (0.25)*x82
+    dx213_0 = dc129*dx86_0 - dc82
+    dx213_1 = dc129*dx86_1 - dc84
+    dx213_2 = dc129*dx86_2 - dc86
     x214 = x213*xi_1
     dx214_0 = dx213_0*xi_1
     dx214_1 = dx213_1*xi_1 + x213
     dx214_2 = dx213_2*xi_1
     x215 = -x10*x191*xi_1 + x11*x164 + x11*x175 + x110*x57 + x117*x173 + x121*x52*xi_1 - x150*x185 + x162*x22 + x165*x207 - x165 + x167*x168 + x167*x179 + x168*x181 + x168*x183 + x168*x202 + x169*xi_1 + x171*xi_1 + x172*x2*xi_1 + x172*x37 + x173 + x177*x37 + x178*x203 - x178 + x179*x181 + x179*x211 + x182*x200 + x184*x33 + x185*x186 + x187*x188 + x188*x198 + x189*x37 - x190*x204*xi_1 - x190*x23 + x191*x209 - x192*x37 + x197*xi_1 + x200*x208 + x205*xi_0 + x212*x214 + x39*xi_3 + x42*x52 + x49*xi_1*xi_3 + x57*x66
-    dc131 = x207 - 1.0
-    dc132 = x168 + x179
-    dc133 = dc49 + x37
-    dc134 = x117 + 1.0
-    dc135 = x203 - 1.0
-    dc136 = -x150 + x186
-    dc137 = x187 + x198
-    dc138 = x204*xi_1
-    dc139 = -dc138 - x23
-    dc140 = -x10*xi_1 + x209
-    dc141 = x182 + x208
-    dc142 = x121*xi_1 + x42
-    dc143 = xi_1*xi_3
-    dc144 = x190*xi_1
-    dc145 = (0.5)*x162 + x205
-    dx215_0 = dc115*dx121_0 + dc131*dx165_0 + dc132*dx167_0 + dc132*dx181_0 + dc133*dx172_0 + dc134*dx173_0 + dc135*dx178_0 + dc136*dx185_0 + dc137*dx188_0 + dc139*dx190_0 + dc140*dx191_0 + dc141*dx200_0 + dc142*dx52_0 + dc143*dx49_0 - dc144*dx204_0 + dc145 + dx110_0*x57 + dx117_0*x173 - dx150_0*x185 + dx162_0*x22 + dx164_0*x11 + dx169_0*xi_1 + dx171_0*xi_1 + dx175_0*x11 + dx177_0*x37 + dx182_0*x200 + dx183_0*x168 + dx184_0*x33 + dx186_0*x185 + dx187_0*x188 + dx189_0*x37 - dx192_0*x37 + dx197_0*xi_1 + dx198_0*x188 + dx202_0*x168 + dx203_0*x178 + dx205_0*xi_0 + dx207_0*x165 + dx208_0*x200 + dx209_0*x191 + dx211_0*x179 + dx212_0*x214 + dx214_0*x212 - dx23_0*x190 + dx33_0*x184 + dx39_0*xi_3 + dx66_0*x57
-    dc146 = x167 + x181
-    dc147 = dc146 + x183 + x202
-    dc148 = x172 + x177 + x189 - x192
-    dc149 = dc146 + x211
-    dc150 = x110 + x66
-    dc151 = (0.5)*dc150
-    dc152 = (0.5)*x164 + x169 + x171 + (0.5)*x175 + x197
-    dx215_1 = dc115*dx121_1 + dc131*dx165_1 + dc132*dx167_1 + dc132*dx181_1 + dc133*dx172_1 + dc134*dx173_1 + dc135*dx178_1 + dc136*dx185_1 + dc137*dx188_1 + dc139*dx190_1 + dc140*dx191_1 + dc141*dx200_1 + dc142*dx52_1 + dc143*dx49_1 - dc144*dx204_1 + dc147*dx168_1 + dc148*dx37_1 + dc149*x50 + dc151*x2 + dc152 + dc28*dx37_1 + dx110_1*x57 + dx117_1*x173 - dx150_1*x185 + dx162_1*x22 + dx164_1*x11 + dx169_1*xi_1 + dx171_1*xi_1 + dx175_1*x11 + dx177_1*x37 + dx182_1*x200 + dx183_1*x168 + dx184_1*x33 + dx186_1*x185 + dx187_1*x188 + dx189_1*x37 - dx192_1*x37 + dx197_1*xi_1 + dx198_1*x188 + dx202_1*x168 + dx203_1*x178 + dx205_1*xi_0 + dx207_1*x165 + dx208_1*x200 + dx209_1*x191 + dx211_1*x179 + dx212_1*x214 + dx214_1*x212 - dx23_1*x190 + dx33_1*x184 + dx39_1*xi_3 + dx66_1*x57 - x10*x191 + x121*x52 + x172*x2 - x190*x204 + x49*xi_3
-    dc153 = 2.0*dc105*x172
-    dx215_2 = dc115*dx121_2 + dc131*dx165_2 + dc132*dx167_2 + dc132*dx181_2 + dc133*dx172_2 + dc134*dx173_2 + dc135*dx178_2 + dc136*dx185_2 + dc137*dx188_2 + dc139*dx190_2 + dc140*dx191_2 + dc141*dx200_2 + dc142*dx52_2 + dc143*dx49_2 - dc144*dx204_2 + dc149*dx179_2 + dc150*dx57_2 + dc153 - dc70*x191 + dx110_2*x57 + dx117_2*x173 - dx150_2*x185 + dx162_2*x22 + dx164_2*x11 + dx169_2*xi_1 + dx171_2*xi_1 + dx175_2*x11 + dx177_2*x37 + dx182_2*x200 + dx183_2*x168 + dx184_2*x33 + dx186_2*x185 + dx187_2*x188 + dx189_2*x37 - dx192_2*x37 + dx197_2*xi_1 + dx198_2*x188 + dx202_2*x168 + dx203_2*x178 + dx205_2*xi_0 + dx207_2*x165 + dx208_2*x200 + dx209_2*x191 + dx211_2*x179 + dx212_2*x214 + dx214_2*x212 - dx23_2*x190 + dx33_2*x184 + dx39_2*xi_3 + dx66_2*x57
-    dc154 = x39 + x49*xi_1
-    dx215_3 = dc133*dx172_3 + dc134*dx173_3 + dc136*dx185_3 + dc139*dx190_3 + dc142*x32 + dc154 + dx110_3*x57 + dx169_3*xi_1 + dx171_3*xi_1 + dx175_3*x11 + dx177_3*x37 + dx187_3*x188 + dx189_3*x37 - dx192_3*x37 + dx197_3*xi_1 + dx198_3*x188 + dx66_3*x57 + x11*x163
-    dc155 = x123*x22 + x184*x32
-    dx215_4 = dc131*dx165_4 + dc135*dx178_4 + dc147*x1 + dc155 + x100*xi_0
-    dx215_5 = dc140*dx191_5 + dc141*dx200_5 + dc149*dx179_5 + dx212_5*x214
+    dc130 = x207 - 1.0
+    dc131 = x168 + x179
+    dc132 = dc49 + x37
+    dc133 = x117 + 1.0
+    dc134 = x203 - 1.0
+    dc135 = -x150 + x186
+    dc136 = x187 + x198
+    dc137 = x204*xi_1
+    dc138 = -dc137 - x23
+    dc139 = -x10*xi_1 + x209
+    dc140 = x182 + x208
+    dc141 = x121*xi_1 + x42
+    dc142 = xi_1*xi_3
+    dc143 = x190*xi_1
+    dc144 = (0.5)*x162 + x205
+    dx215_0 = dc114*dx121_0 + dc130*dx165_0 + dc131*dx167_0 + dc131*dx181_0 + dc132*dx172_0 + dc133*dx173_0 + dc134*dx178_0 + dc135*dx185_0 + dc136*dx188_0 + dc138*dx190_0 + dc139*dx191_0 + dc140*dx200_0 + dc141*dx52_0 + dc142*dx49_0 - dc143*dx204_0 + dc144 + dx110_0*x57 + dx117_0*x173 - dx150_0*x185 + dx162_0*x22 + dx164_0*x11 + dx169_0*xi_1 + dx171_0*xi_1 + dx175_0*x11 + dx177_0*x37 + dx182_0*x200 + dx183_0*x168 + dx184_0*x33 + dx186_0*x185 + dx187_0*x188 + dx189_0*x37 - dx192_0*x37 + dx197_0*xi_1 + dx198_0*x188 + dx202_0*x168 + dx203_0*x178 + dx205_0*xi_0 + dx207_0*x165 + dx208_0*x200 + dx209_0*x191 + dx211_0*x179 + dx212_0*x214 + dx214_0*x212 - dx23_0*x190 + dx33_0*x184 + dx39_0*xi_3 + dx66_0*x57
+    dc145 = x167 + x181
+    dc146 = dc145 + x183 + x202
+    dc147 = x172 + x177 + x189 - x192
+    dc148 = dc145 + x211
+    dc149 = x110 + x66
+    dc150 = (0.5)*dc149
+    dc151 = (0.5)*x164 + x169 + x171 + (0.5)*x175 + x197
+    dx215_1 = dc114*dx121_1 + dc130*dx165_1 + dc131*dx167_1 + dc131*dx181_1 + dc132*dx172_1 + dc133*dx173_1 + dc134*dx178_1 + dc135*dx185_1 + dc136*dx188_1 + dc138*dx190_1 + dc139*dx191_1 + dc140*dx200_1 + dc141*dx52_1 + dc142*dx49_1 - dc143*dx204_1 + dc146*dx168_1 + dc147*dx37_1 + dc148*x50 + dc150*x2 + dc151 + dc28*dx37_1 + dx110_1*x57 + dx117_1*x173 - dx150_1*x185 + dx162_1*x22 + dx164_1*x11 + dx169_1*xi_1 + dx171_1*xi_1 + dx175_1*x11 + dx177_1*x37 + dx182_1*x200 + dx183_1*x168 + dx184_1*x33 + dx186_1*x185 + dx187_1*x188 + dx189_1*x37 - dx192_1*x37 + dx197_1*xi_1 + dx198_1*x188 + dx202_1*x168 + dx203_1*x178 + dx205_1*xi_0 + dx207_1*x165 + dx208_1*x200 + dx209_1*x191 + dx211_1*x179 + dx212_1*x214 + dx214_1*x212 - dx23_1*x190 + dx33_1*x184 + dx39_1*xi_3 + dx66_1*x57 - x10*x191 + x121*x52 + x172*x2 - x190*x204 + x49*xi_3
+    dc152 = 2.0*dc104*x172
+    dx215_2 = dc114*dx121_2 + dc130*dx165_2 + dc131*dx167_2 + dc131*dx181_2 + dc132*dx172_2 + dc133*dx173_2 + dc134*dx178_2 + dc135*dx185_2 + dc136*dx188_2 + dc138*dx190_2 + dc139*dx191_2 + dc140*dx200_2 + dc141*dx52_2 + dc142*dx49_2 - dc143*dx204_2 + dc148*dx179_2 + dc149*dx57_2 + dc152 - dc70*x191 + dx110_2*x57 + dx117_2*x173 - dx150_2*x185 + dx162_2*x22 + dx164_2*x11 + dx169_2*xi_1 + dx171_2*xi_1 + dx175_2*x11 + dx177_2*x37 + dx182_2*x200 + dx183_2*x168 + dx184_2*x33 + dx186_2*x185 + dx187_2*x188 + dx189_2*x37 - dx192_2*x37 + dx197_2*xi_1 + dx198_2*x188 + dx202_2*x168 + dx203_2*x178 + dx205_2*xi_0 + dx207_2*x165 + dx208_2*x200 + dx209_2*x191 + dx211_2*x179 + dx212_2*x214 + dx214_2*x212 - dx23_2*x190 + dx33_2*x184 + dx39_2*xi_3 + dx66_2*x57
+    dc153 = x39 + x49*xi_1
+    dx215_3 = dc132*dx172_3 + dc133*dx173_3 + dc135*dx185_3 + dc138*dx190_3 + dc141*x32 + dc153 + dx110_3*x57 + dx169_3*xi_1 + dx171_3*xi_1 + dx175_3*x11 + dx177_3*x37 + dx187_3*x188 + dx189_3*x37 - dx192_3*x37 + dx197_3*xi_1 + dx198_3*x188 + dx66_3*x57 + x11*x163
+    dc154 = x123*x22 + x184*x32
+    dx215_4 = dc130*dx165_4 + dc134*dx178_4 + dc146*x1 + dc154 + x100*xi_0
+    dx215_5 = dc139*dx191_5 + dc140*dx200_5 + dc148*dx179_5 + dx212_5*x214
     x216 = -x125
     x217 = -x128
     x218 = x19*xi_4
-    dc156 = (0.5)*xi_4
-    dx218_0 = dc156*dx4_0
-    dx218_1 = dc156*dx4_1
-    dx218_2 = dc156*dx4_2
+    dc155 = (0.5)*xi_4
+    dx218_0 = dc155*dx4_0
+    dx218_1 = dc155*dx4_1
+    dx218_2 = dc155*dx4_2
     x219 = jax.numpy.where(jax.numpy.less(x3, 0.25), x3*(x3*(x3*(x3*(x3*(x3*(4.9044309881360752e-14*x3 - 1.1853103784320715e-11) + 2.1794416635686479e-9) - 2.9227459783015339e-7) + 2.7006172839506174e-5) - 0.0015873015873015873) + 0.052777777777777778) + 0.16666666666666666, (jax.numpy.where(jax.numpy.less(x3, 0.25), 0.0625, (x3*x3)) + jax.numpy.where(jax.numpy.less(x3, 0.25), 0.25, x3)*_cos(jax.numpy.where(jax.numpy.less(x3, 0.25), 0.5, jax.numpy.sqrt(x3))) - 5.0*jax.numpy.where(jax.numpy.less(x3, 0.25), 0.25, x3) - 8.0*_cos(jax.numpy.where(jax.numpy.less(x3, 0.25), 0.5, jax.numpy.sqrt(x3))) + 8.0)*jax.numpy.where(jax.numpy.less(x3, 0.25), 16.0, 1.0/(x3*x3)))
-    dc157 = jax.numpy.where(jax.numpy.less(x3, 2.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(3.7633427590065923e-18 - 9.0257303981382629e-21*x3) - 1.275842590276096e-15) + 3.4331016916952524e-13) - 7.1118622705924299e-11) + 1.0897208317843239e-8) - 1.1690983913206136e-6) + 8.1018518518518516e-5) - 0.0031746031746031746) + 0.052777777777777778, (0.5)*((2.0*jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))*_cos(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))) - 10.0*jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3)) - jax.numpy.where(jax.numpy.less(x3, 2.0), 2.0, x3)*_sin(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))) + 4.0*jax.numpy.where(jax.numpy.less(x3, 2.0), 2.8284271247461901, (x3*jax.numpy.sqrt(x3))) + 8.0*_sin(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))))*jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3)) - 4.0*jax.numpy.where(jax.numpy.less(x3, 2.0), 2.0, x3)*_cos(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))) + 20.0*jax.numpy.where(jax.numpy.less(x3, 2.0), 2.0, x3) - 4.0*jax.numpy.where(jax.numpy.less(x3, 2.0), 4.0, (x3*x3)) + 32.0*_cos(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))) - 32.0)*jax.numpy.where(jax.numpy.less(x3, 2.0), 0.125, 1.0/(x3*x3*x3)))
-    dx219_0 = dc1*dc157
-    dx219_1 = dc157*dc2
-    dx219_2 = dc157*dc3
+    dc156 = jax.numpy.where(jax.numpy.less(x3, 2.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(3.7633427590065923e-18 - 9.0257303981382629e-21*x3) - 1.275842590276096e-15) + 3.4331016916952524e-13) - 7.1118622705924299e-11) + 1.0897208317843239e-8) - 1.1690983913206136e-6) + 8.1018518518518516e-5) - 0.0031746031746031746) + 0.052777777777777778, (0.5)*((2.0*jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))*_cos(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))) - 10.0*jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3)) - jax.numpy.where(jax.numpy.less(x3, 2.0), 2.0, x3)*_sin(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))) + 4.0*jax.numpy.where(jax.numpy.less(x3, 2.0), 2.8284271247461901, (x3*jax.numpy.sqrt(x3))) + 8.0*_sin(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))))*jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3)) - 4.0*jax.numpy.where(jax.numpy.less(x3, 2.0), 2.0, x3)*_cos(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))) + 20.0*jax.numpy.where(jax.numpy.less(x3, 2.0), 2.0, x3) - 4.0*jax.numpy.where(jax.numpy.less(x3, 2.0), 4.0, (x3*x3)) + 32.0*_cos(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))) - 32.0)*jax.numpy.where(jax.numpy.less(x3, 2.0), 0.125, 1.0/(x3*x3*x3)))
+    dx219_0 = dc1*dc156
+    dx219_1 = dc156*dc2
+    dx219_2 = dc156*dc3
     x220 = x219*x73
     dx220_0 = dx219_0*x73
     dx220_1 = dc70*x219 + dx219_1*x73
     dx220_2 = dx219_2*x73
     x221 = x3*x72
-    dx221_0 = dc100 + dx72_0*x3
-    dx221_1 = dc101 + dx72_1*x3
-    dx221_2 = dc102 + dx72_2*x3
+    dx221_0 = dc99 + dx72_0*x3
+    dx221_1 = dc100 + dx72_1*x3
+    dx221_2 = dc101 + dx72_2*x3
     x222 = -x134
     x223 = x1*x222
-    dc158 = (0.5)*xi_0
-    dc159 = dc158*x1
-    dx223_0 = -dc159
-    dc160 = dc70*x1
-    dx223_1 = -dc160 + 2.0*x222*xi_1
-    dc161 = (0.5)*dc50
-    dx223_2 = -dc161
+    dc157 = (0.5)*xi_0
+    dc158 = dc157*x1
+    dx223_0 = -dc158
+    dc159 = dc70*x1
+    dx223_1 = -dc159 + 2.0*x222*xi_1
+    dc160 = (0.5)*dc50
+    dx223_2 = -dc160
     x224 = x6*xi_4
     dx224_0 = dx6_0*xi_4
     dx224_1 = dx6_1*xi_4
     dx224_2 = dx6_2*xi_4
     x225 = (0.25)*x219
     x226 = x46*xi_1
-    dx226_0 = dc143
+    dx226_0 = dc142
     dx226_3 = xi_0*xi_1
     x227 = x174*x86
-    dx227_0 = -dc108 + dx86_0*x174
-    dx227_1 = -dc109 + dx86_1*x174
-    dx227_2 = -dc110 + dx86_2*x174
+    dx227_0 = -dc107 + dx86_0*x174
+    dx227_1 = -dc108 + dx86_1*x174
+    dx227_2 = -dc109 + dx86_2*x174
     x228 = x227*x73
     dx228_0 = dx227_0*x73
     dx228_1 = dc70*x227 + dx227_1*x73
@@ -1080,11 +1079,11 @@ def _main(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5):
     dx237_0 = dx236_0*x33 + dx33_0*x236
     dx237_1 = dx236_1*x33 + dx33_1*x236
     dx237_2 = dx236_2*x33 + dx33_2*x236
-    dc162 = x236*x32
-    dx237_4 = dc162
+    dc161 = x236*x32
+    dx237_4 = dc161
     x238 = x11*x155
     dx238_0 = dx155_0*x11
-    dx238_1 = dc111 + dx155_1*x11
+    dx238_1 = dc110 + dx155_1*x11
     dx238_2 = dx155_2*x11
     dx238_3 = dx155_3*x11
     x239 = x233*x94
@@ -1108,8 +1107,8 @@ def _main(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5):
     dx242_2 = dc29 + dx52_2*x59
     dx242_3 = dc33
     x243 = x135*x22
-    dc163 = (0.5)*x135
-    dx243_0 = dc163 + dx135_0*x22
+    dc162 = (0.5)*x135
+    dx243_0 = dc162 + dx135_0*x22
     dx243_1 = dx135_1*x22
     dx243_2 = dx135_2*x22
     dx243_5 = dx135_5*x22
@@ -1144,28 +1143,28 @@ def _main(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5):
     dx249_5 = dx142_5*x94
     x250 = x204*x82
     dx250_0 = -dc60*x204 + dx204_0*x82
-    dx250_1 = -4.0*dc138 + dx204_1*x82
+    dx250_1 = -4.0*dc137 + dx204_1*x82
     dx250_2 = -dc62*x204 + dx204_2*x82
     x251 = x1*x172*xi_2 + x10*x164 + x10*x175 - x10*x247 + x110*x59 + x117*x242 + x122*x52*xi_2 + x124*x22 + x132*x167 + x132*x181 + x132*x183 + x132*x202 + x140*x167 + x140*x181 + x140*x211 + x15*x208*x48 + x15*x248 - x150*x244 + x165*x209 + x169*xi_2 + x171*xi_2 + x172*x40 + x177*x40 + x184*x35 + x186*x244 + x187*x245 + x189*x40 + x191*x250 - x191 - x192*x40 + x197*xi_2 + x198*x245 + x203*x243 - x206*x246 + x213*x247*xi_2 + x242 - x243 - x246*x4 + x249*xi_0 + x41*xi_3 + x44*x52 + x51*xi_2*xi_3 + x59*x66
-    dc164 = x208*x48 + x248
-    dc165 = x132 + x140
-    dc166 = dc50 + x40
-    dc167 = x250 - 1.0
-    dc168 = -x206 - x4
-    dc169 = -x10 + x213*xi_2
-    dc170 = x122*xi_2 + x44
-    dc171 = x15*x48
-    dc172 = x247*xi_2
-    dc173 = (0.5)*x124 + x249
-    dx251_0 = dc104*dx51_0 + dc116*dx122_0 + dc134*dx242_0 + dc135*dx243_0 + dc136*dx244_0 + dc137*dx245_0 + dc164*dx15_0 + dc165*dx167_0 + dc165*dx181_0 + dc166*dx172_0 + dc167*dx191_0 + dc168*dx246_0 + dc169*dx247_0 + dc170*dx52_0 + dc171*dx208_0 + dc172*dx213_0 + dc173 + dx110_0*x59 + dx117_0*x242 + dx124_0*x22 - dx150_0*x244 + dx164_0*x10 + dx165_0*x209 + dx169_0*xi_2 + dx171_0*xi_2 + dx175_0*x10 + dx177_0*x40 + dx183_0*x132 + dx184_0*x35 + dx186_0*x244 + dx187_0*x245 + dx189_0*x40 - dx192_0*x40 + dx197_0*xi_2 + dx198_0*x245 + dx202_0*x132 + dx203_0*x243 - dx206_0*x246 + dx209_0*x165 + dx211_0*x140 + dx248_0*x15 + dx249_0*xi_0 + dx250_0*x191 + dx35_0*x184 + dx41_0*xi_3 - dx4_0*x246 + dx66_0*x59
-    dx251_1 = dc104*dx51_1 + dc116*dx122_1 + dc134*dx242_1 + dc135*dx243_1 + dc136*dx244_1 + dc137*dx245_1 + dc149*dx140_1 + dc150*dx59_1 + dc153 + dc164*dx15_1 + dc165*dx167_1 + dc165*dx181_1 + dc166*dx172_1 + dc167*dx191_1 + dc168*dx246_1 + dc169*dx247_1 + dc170*dx52_1 + dc171*dx208_1 + dc172*dx213_1 + dx110_1*x59 + dx117_1*x242 + dx124_1*x22 - dx150_1*x244 + dx164_1*x10 + dx165_1*x209 + dx169_1*xi_2 + dx171_1*xi_2 + dx175_1*x10 + dx177_1*x40 + dx183_1*x132 + dx184_1*x35 + dx186_1*x244 + dx187_1*x245 + dx189_1*x40 - dx192_1*x40 + dx197_1*xi_2 + dx198_1*x245 + dx202_1*x132 + dx203_1*x243 - dx206_1*x246 + dx209_1*x165 + dx211_1*x140 + dx248_1*x15 + dx249_1*xi_0 + dx250_1*x191 + dx35_1*x184 + dx41_1*xi_3 - dx4_1*x246 + dx66_1*x59 + x15*x208*xi_4
-    dc174 = dc151*x1
-    dx251_2 = dc104*dx51_2 + dc116*dx122_2 + dc134*dx242_2 + dc135*dx243_2 + dc136*dx244_2 + dc137*dx245_2 + dc147*dx132_2 + dc148*dx40_2 + dc149*x48 + dc152 + dc164*dx15_2 + dc165*dx167_2 + dc165*dx181_2 + dc166*dx172_2 + dc167*dx191_2 + dc168*dx246_2 + dc169*dx247_2 + dc170*dx52_2 + dc171*dx208_2 + dc172*dx213_2 + dc174 + dc28*dx40_2 + dx110_2*x59 + dx117_2*x242 + dx124_2*x22 - dx150_2*x244 + dx164_2*x10 + dx165_2*x209 + dx169_2*xi_2 + dx171_2*xi_2 + dx175_2*x10 + dx177_2*x40 + dx183_2*x132 + dx184_2*x35 + dx186_2*x244 + dx187_2*x245 + dx189_2*x40 - dx192_2*x40 + dx197_2*xi_2 + dx198_2*x245 + dx202_2*x132 + dx203_2*x243 - dx206_2*x246 + dx209_2*x165 + dx211_2*x140 + dx248_2*x15 + dx249_2*xi_0 + dx250_2*x191 + dx35_2*x184 + dx41_2*xi_3 - dx4_2*x246 + dx66_2*x59 + x1*x172 + x122*x52 + x213*x247 - 0.5*x247 + x51*xi_3
-    dc175 = x10*x163
-    dc176 = x41 + x51*xi_2
-    dx251_3 = dc134*dx242_3 + dc136*dx244_3 + dc166*dx172_3 + dc168*dx246_3 + dc170*x32 + dc175 + dc176 + dx110_3*x59 + dx169_3*xi_2 + dx171_3*xi_2 + dx175_3*x10 + dx177_3*x40 + dx187_3*x245 + dx189_3*x40 - dx192_3*x40 + dx197_3*xi_2 + dx198_3*x245 + dx66_3*x59
-    dx251_4 = dc126*x208 + dc149*dx140_4 + dc169*dx247_4 + dx165_4*x209 + dx248_4*x15
-    dx251_5 = dc135*dx243_5 + dc147*x2 + dc155 + dc167*dx191_5 + dx249_5*xi_0
+    dc163 = x208*x48 + x248
+    dc164 = x132 + x140
+    dc165 = dc50 + x40
+    dc166 = x250 - 1.0
+    dc167 = -x206 - x4
+    dc168 = -x10 + x213*xi_2
+    dc169 = x122*xi_2 + x44
+    dc170 = x15*x48
+    dc171 = x247*xi_2
+    dc172 = (0.5)*x124 + x249
+    dx251_0 = dc103*dx51_0 + dc115*dx122_0 + dc133*dx242_0 + dc134*dx243_0 + dc135*dx244_0 + dc136*dx245_0 + dc163*dx15_0 + dc164*dx167_0 + dc164*dx181_0 + dc165*dx172_0 + dc166*dx191_0 + dc167*dx246_0 + dc168*dx247_0 + dc169*dx52_0 + dc170*dx208_0 + dc171*dx213_0 + dc172 + dx110_0*x59 + dx117_0*x242 + dx124_0*x22 - dx150_0*x244 + dx164_0*x10 + dx165_0*x209 + dx169_0*xi_2 + dx171_0*xi_2 + dx175_0*x10 + dx177_0*x40 + dx183_0*x132 + dx184_0*x35 + dx186_0*x244 + dx187_0*x245 + dx189_0*x40 - dx192_0*x40 + dx197_0*xi_2 + dx198_0*x245 + dx202_0*x132 + dx203_0*x243 - dx206_0*x246 + dx209_0*x165 + dx211_0*x140 + dx248_0*x15 + dx249_0*xi_0 + dx250_0*x191 + dx35_0*x184 + dx41_0*xi_3 - dx4_0*x246 + dx66_0*x59
+    dx251_1 = dc103*dx51_1 + dc115*dx122_1 + dc133*dx242_1 + dc134*dx243_1 + dc135*dx244_1 + dc136*dx245_1 + dc148*dx140_1 + dc149*dx59_1 + dc152 + dc163*dx15_1 + dc164*dx167_1 + dc164*dx181_1 + dc165*dx172_1 + dc166*dx191_1 + dc167*dx246_1 + dc168*dx247_1 + dc169*dx52_1 + dc170*dx208_1 + dc171*dx213_1 + dx110_1*x59 + dx117_1*x242 + dx124_1*x22 - dx150_1*x244 + dx164_1*x10 + dx165_1*x209 + dx169_1*xi_2 + dx171_1*xi_2 + dx175_1*x10 + dx177_1*x40 + dx183_1*x132 + dx184_1*x35 + dx186_1*x244 + dx187_1*x245 + dx189_1*x40 - dx192_1*x40 + dx197_1*xi_2 + dx198_1*x245 + dx202_1*x132 + dx203_1*x243 - dx206_1*x246 + dx209_1*x165 + dx211_1*x140 + dx248_1*x15 + dx249_1*xi_0 + dx250_1*x191 + dx35_1*x184 + dx41_1*xi_3 - dx4_1*x246 + dx66_1*x59 + x15*x208*xi_4
+    dc173 = dc150*x1
+    dx251_2 = dc103*dx51_2 + dc115*dx122_2 + dc133*dx242_2 + dc134*dx243_2 + dc135*dx244_2 + dc136*dx245_2 + dc146*dx132_2 + dc147*dx40_2 + dc148*x48 + dc151 + dc163*dx15_2 + dc164*dx167_2 + dc164*dx181_2 + dc165*dx172_2 + dc166*dx191_2 + dc167*dx246_2 + dc168*dx247_2 + dc169*dx52_2 + dc170*dx208_2 + dc171*dx213_2 + dc173 + dc28*dx40_2 + dx110_2*x59 + dx117_2*x242 + dx124_2*x22 - dx150_2*x244 + dx164_2*x10 + dx165_2*x209 + dx169_2*xi_2 + dx171_2*xi_2 + dx175_2*x10 + dx177_2*x40 + dx183_2*x132 + dx184_2*x35 + dx186_2*x244 + dx187_2*x245 + dx189_2*x40 - dx192_2*x40 + dx197_2*xi_2 + dx198_2*x245 + dx202_2*x132 + dx203_2*x243 - dx206_2*x246 + dx209_2*x165 + dx211_2*x140 + dx248_2*x15 + dx249_2*xi_0 + dx250_2*x191 + dx35_2*x184 + dx41_2*xi_3 - dx4_2*x246 + dx66_2*x59 + x1*x172 + x122*x52 + x213*x247 - 0.5*x247 + x51*xi_3
+    dc174 = x10*x163
+    dc175 = x41 + x51*xi_2
+    dx251_3 = dc133*dx242_3 + dc135*dx244_3 + dc165*dx172_3 + dc167*dx246_3 + dc169*x32 + dc174 + dc175 + dx110_3*x59 + dx169_3*xi_2 + dx171_3*xi_2 + dx175_3*x10 + dx177_3*x40 + dx187_3*x245 + dx189_3*x40 - dx192_3*x40 + dx197_3*xi_2 + dx198_3*x245 + dx66_3*x59
+    dx251_4 = dc125*x208 + dc148*dx140_4 + dc168*dx247_4 + dx165_4*x209 + dx248_4*x15
+    dx251_5 = dc134*dx243_5 + dc146*x2 + dc154 + dc166*dx191_5 + dx249_5*xi_0
     x252 = x1*x166
     dx252_0 = dx166_0*x1
     dx252_1 = dc2*x166 + dx166_1*x1
@@ -1175,21 +1174,21 @@ def _main(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5):
     dx253_1 = dc27 + dx38_1*x3
     dx253_2 = dc26 + dx38_2*x3
     x254 = x125*x33
-    dc177 = x33*xi_0
-    dx254_0 = dc177 + dx33_0*x125
-    dc178 = x33*xi_1
-    dx254_1 = dc178 + dx33_1*x125
-    dc179 = x33*xi_2
-    dx254_2 = dc179 + dx33_2*x125
+    dc176 = x33*xi_0
+    dx254_0 = dc176 + dx33_0*x125
+    dc177 = x33*xi_1
+    dx254_1 = dc177 + dx33_1*x125
+    dc178 = x33*xi_2
+    dx254_2 = dc178 + dx33_2*x125
     dx254_4 = dc95
     x255 = x125 + 2.0
     x256 = x182*x19
-    dc180 = dx4_0*x182
-    dx256_0 = (0.5)*dc180 + dx182_0*x19
-    dc181 = dx4_1*x182
-    dx256_1 = (0.5)*dc181 + dx182_1*x19
-    dc182 = dx4_2*x182
-    dx256_2 = (0.5)*dc182 + dx182_2*x19
+    dc179 = dx4_0*x182
+    dx256_0 = (0.5)*dc179 + dx182_0*x19
+    dc180 = dx4_1*x182
+    dx256_1 = (0.5)*dc180 + dx182_1*x19
+    dc181 = dx4_2*x182
+    dx256_2 = (0.5)*dc181 + dx182_2*x19
     x257 = x180*x46
     dx257_0 = dx180_0*x46 + x180*xi_3
     dx257_1 = dx180_1*x46
@@ -1205,9 +1204,9 @@ def _main(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5):
     dx259_2 = dx4_2*x84 + dx84_2*x4
     dx259_4 = dx84_4*x4
     x260 = x182*x4
-    dx260_0 = dc180 + dx182_0*x4
-    dx260_1 = dc181 + dx182_1*x4
-    dx260_2 = dc182 + dx182_2*x4
+    dx260_0 = dc179 + dx182_0*x4
+    dx260_1 = dc180 + dx182_1*x4
+    dx260_2 = dc181 + dx182_2*x4
     x261 = -4.0*x0 - 4.0*x1 - 4.0*x2 - x87
     dx261_0 = -dx87_0 - 8.0*xi_0
     dx261_1 = -dx87_1 - 8.0*xi_1
@@ -1222,9 +1221,9 @@ def _main(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5):
     dx263_1 = (0.5)*dc54 - dc75
     dx263_2 = (0.5)*dc56 - dc77
     x264 = x103*x19
-    dx264_0 = (0.5)*dc127 + dc8
-    dx264_1 = dc10 + (0.5)*dc128
-    dx264_2 = dc12 + (0.5)*dc129
+    dx264_0 = (0.5)*dc126 + dc8
+    dx264_1 = dc10 + (0.5)*dc127
+    dx264_2 = dc12 + (0.5)*dc128
     x265 = x108*x83
     dx265_0 = dx108_0*x83 + dx83_0*x108
     dx265_1 = dx108_1*x83 + dx83_1*x108
@@ -1249,49 +1248,49 @@ def _main(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5):
     dx269_2 = dx72_2*x46
     dx269_3 = dc44
     x270 = x115*x193
-    dc183 = (0.25)*x193
-    dx270_0 = dc183*dx86_0 + dx193_0*x115
-    dx270_1 = dc183*dx86_1 + dx193_1*x115
-    dx270_2 = dc183*dx86_2 + dx193_2*x115
+    dc182 = (0.25)*x193
+    dx270_0 = dc182*dx86_0 + dx193_0*x115
+    dx270_1 = dc182*dx86_1 + dx193_1*x115
+    dx270_2 = dc182*dx86_2 + dx193_2*x115
     x271 = x270*x72
     dx271_0 = dx270_0*x72 + dx72_0*x270
     dx271_1 = dx270_1*x72 + dx72_1*x270
     dx271_2 = dx270_2*x72 + dx72_2*x270
     x272 = x10*x268*xi_5 + x11*x268*xi_4 + x111*x261*x52 + x118*x255 + x141*x67 + x150*x22*x52 + x150*x84 + x150*x91 + x155 + x157*x50 + x158 + x266 + x267*x46 + x267*x48 + x267*x50 - x269*x270 - x271*x48 - x271*x50
-    dc184 = x261*x52
-    dc185 = x111*x52
-    dc186 = x48 + x50
-    dc187 = dc186 + x46
-    dc188 = x84 + x91
-    dc189 = dc188 + x22*x52
-    dc190 = x10*xi_5 + x11*xi_4
-    dc191 = -dc186
-    dc192 = x111*x261 + x150*x22
-    dx272_0 = dc184*dx111_0 + dc185*dx261_0 + dc187*dx267_0 + dc189*dx150_0 + dc190*dx268_0 + dc191*dx271_0 + dc192*dx52_0 + dc28*x150 + dx118_0*x255 + dx141_0*x67 + dx155_0 + dx157_0*x50 + dx158_0 + dx266_0 - dx269_0*x270 - dx270_0*x269 + dx67_0*x141 + dx84_0*x150 + dx91_0*x150 + x118*xi_0 + x267*xi_3
-    dc193 = x267 - x271
-    dx272_1 = dc156*x268 + dc184*dx111_1 + dc185*dx261_1 + dc187*dx267_1 + dc189*dx150_1 + dc190*dx268_1 + dc191*dx271_1 + dc192*dx52_1 + dc193*xi_4 + dx118_1*x255 + dx141_1*x67 + dx155_1 + dx157_1*x50 + dx158_1 + dx266_1 - dx269_1*x270 - dx270_1*x269 + dx67_1*x141 + dx84_1*x150 + dx91_1*x150 + x118*xi_1
-    dc194 = dc193 + x157
-    dx272_2 = dc184*dx111_2 + dc185*dx261_2 + dc187*dx267_2 + dc189*dx150_2 + dc190*dx268_2 + dc191*dx271_2 + dc192*dx52_2 + dc194*xi_5 + dc98*x268 + dx118_2*x255 + dx141_2*x67 + dx155_2 + dx157_2*x50 + dx158_2 + dx266_2 - dx269_2*x270 - dx270_2*x269 + dx67_2*x141 + dx84_2*x150 + dx91_2*x150 + x118*xi_2
-    dx272_3 = dc192*x32 + dx118_3*x255 + dx155_3 + dx266_3 - dx269_3*x270 + dx67_3*x141 + x267*xi_0
-    dx272_4 = dc193*xi_1 + dx158_4 + dx84_4*x150 + x11*x268
-    dx272_5 = dc194*xi_2 + dx91_5*x150 + x10*x268
+    dc183 = x261*x52
+    dc184 = x111*x52
+    dc185 = x48 + x50
+    dc186 = dc185 + x46
+    dc187 = x84 + x91
+    dc188 = dc187 + x22*x52
+    dc189 = x10*xi_5 + x11*xi_4
+    dc190 = -dc185
+    dc191 = x111*x261 + x150*x22
+    dx272_0 = dc183*dx111_0 + dc184*dx261_0 + dc186*dx267_0 + dc188*dx150_0 + dc189*dx268_0 + dc190*dx271_0 + dc191*dx52_0 + dc28*x150 + dx118_0*x255 + dx141_0*x67 + dx155_0 + dx157_0*x50 + dx158_0 + dx266_0 - dx269_0*x270 - dx270_0*x269 + dx67_0*x141 + dx84_0*x150 + dx91_0*x150 + x118*xi_0 + x267*xi_3
+    dc192 = x267 - x271
+    dx272_1 = dc155*x268 + dc183*dx111_1 + dc184*dx261_1 + dc186*dx267_1 + dc188*dx150_1 + dc189*dx268_1 + dc190*dx271_1 + dc191*dx52_1 + dc192*xi_4 + dx118_1*x255 + dx141_1*x67 + dx155_1 + dx157_1*x50 + dx158_1 + dx266_1 - dx269_1*x270 - dx270_1*x269 + dx67_1*x141 + dx84_1*x150 + dx91_1*x150 + x118*xi_1
+    dc193 = dc192 + x157
+    dx272_2 = dc183*dx111_2 + dc184*dx261_2 + dc186*dx267_2 + dc188*dx150_2 + dc189*dx268_2 + dc190*dx271_2 + dc191*dx52_2 + dc193*xi_5 + dc97*x268 + dx118_2*x255 + dx141_2*x67 + dx155_2 + dx157_2*x50 + dx158_2 + dx266_2 - dx269_2*x270 - dx270_2*x269 + dx67_2*x141 + dx84_2*x150 + dx91_2*x150 + x118*xi_2
+    dx272_3 = dc191*x32 + dx118_3*x255 + dx155_3 + dx266_3 - dx269_3*x270 + dx67_3*x141 + x267*xi_0
+    dx272_4 = dc192*xi_1 + dx158_4 + dx84_4*x150 + x11*x268
+    dx272_5 = dc193*xi_2 + dx91_5*x150 + x10*x268
     x273 = x3 + x88
-    dx273_0 = dc1 + dc117
-    dx273_1 = dc118 + dc2
-    dx273_2 = dc119 + dc3
+    dx273_0 = dc1 + dc116
+    dx273_1 = dc117 + dc2
+    dx273_2 = dc118 + dc3
     x274 = 2.0*x127 + x81 - 2.0
     dx274_0 = dc60 + 2.0*dx127_0
     dx274_1 = dc61 + 2.0*dx127_1
     dx274_2 = dc62 + 2.0*dx127_2
     x275 = x74*xi_3
-    dx275_2 = (0.5)*dc104
+    dx275_2 = (0.5)*dc103
     x276 = x108*x3
-    dc195 = dc1*x108
-    dx276_0 = dc195 + dx108_0*x3
-    dc196 = dc2*x108
-    dx276_1 = dc196 + dx108_1*x3
-    dc197 = dc3*x108
-    dx276_2 = dc197 + dx108_2*x3
+    dc194 = dc1*x108
+    dx276_0 = dc194 + dx108_0*x3
+    dc195 = dc2*x108
+    dx276_1 = dc195 + dx108_1*x3
+    dc196 = dc3*x108
+    dx276_2 = dc196 + dx108_2*x3
     dx276_3 = x3*x72
     x277 = x187*x193
     dx277_0 = dx187_0*x193 + dx193_0*x187
@@ -1304,10 +1303,10 @@ def _main(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5):
     dx278_2 = dx196_2*x32 + dx32_2*x196
     dx278_3 = dx196_3*x32
     x279 = x139*xi_0
-    dc198 = (0.25)*xi_0
-    dx279_0 = dc198*dx130_0 + x139
-    dx279_1 = dc198*dx130_1
-    dx279_2 = dc198*dx130_2
+    dc197 = (0.25)*xi_0
+    dx279_0 = dc197*dx130_0 + x139
+    dx279_1 = dc197*dx130_1
+    dx279_2 = dc197*dx130_2
     x280 = x133*xi_0
     dx280_0 = dx133_0*xi_0 + x133
     dx280_1 = dx133_1*xi_0
@@ -1327,19 +1326,19 @@ def _main(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5):
     dx283_2 = dx190_2*x8 + dx8_2*x190
     dx283_3 = dx190_3*x8
     x284 = x154*xi_0
-    dx284_0 = dc198*dx153_0 + x154
-    dx284_1 = dc198*dx153_1
-    dx284_2 = dc198*dx153_2
+    dx284_0 = dc197*dx153_0 + x154
+    dx284_1 = dc197*dx153_1
+    dx284_2 = dc197*dx153_2
     x285 = x236*x52
     dx285_0 = dx236_0*x52 + dx52_0*x236
     dx285_1 = dx236_1*x52 + dx52_1*x236
     dx285_2 = dx236_2*x52 + dx52_2*x236
-    dx285_3 = dc162
+    dx285_3 = dc161
     x286 = x151*x52
     dx286_0 = dx151_0*x52 + dx52_0*x151
     dx286_1 = dx151_1*x52 + dx52_1*x151
     dx286_2 = dx151_2*x52 + dx52_2*x151
-    dx286_3 = dc107
+    dx286_3 = dc106
     x287 = x281*x94
     dx287_0 = dx281_0*x94 + dx94_0*x281
     dx287_1 = dx281_1*x94 + dx94_1*x281
@@ -1369,13 +1368,13 @@ def _main(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5):
     dx292_4 = dc50
     x293 = x11*x135
     dx293_0 = dx135_0*x11
-    dx293_1 = dc163 + dx135_1*x11
+    dx293_1 = dc162 + dx135_1*x11
     dx293_2 = dx135_2*x11
     dx293_5 = dx135_5*x11
     x294 = x33*x59
     dx294_0 = dx33_0*x59
     dx294_1 = dx33_1*x59 + dx59_1*x33
-    dx294_2 = dc121 + dx33_2*x59
+    dx294_2 = dc120 + dx33_2*x59
     dx294_4 = dc33
     x295 = x180*xi_1
     dx295_0 = dx180_0*xi_1
@@ -1392,162 +1391,162 @@ def _main(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5):
     dx298_1 = dx168_1*x10
     dx298_4 = x1*x10
     x299 = x10*x162 - x10*x229 + x10*x297*x33 + x11*x124 + x11*x297*x35 + x118*x209 + x132*x291 + x132*x295 + x138*x210*xi_1 + x138*x291 + x138*x295 + x143*x214 + x144*x207 - x144 + x166*x292 + x180*x292 + x201*x296 + x201*x298 + x203*x293 + x203*x294 + x205*xi_2 + x230*x250 - x230 + x24*x266 + x24*x269*x82 + x249*xi_1 + x260*x296 + x260*x298 - x293 - x294
-    dc199 = x138*xi_1
-    dc200 = x24*x82
-    dc201 = x10*x297
-    dc202 = x11*x297
-    dc203 = x296 + x298
-    dc204 = x293 + x294
-    dc205 = x132 + x138
-    dc206 = x24*x269
-    dc207 = x266 + x269*x82
-    dc208 = x291 + x295
-    dc209 = dc208 + x210*xi_1
-    dc210 = x10*x33 + x11*x35
-    dx299_0 = dc131*dx144_0 + dc135*dx293_0 + dc135*dx294_0 + dc167*dx230_0 + dc199*dx210_0 + dc200*dx269_0 + dc201*dx33_0 + dc202*dx35_0 + dc203*dx201_0 + dc203*dx260_0 + dc204*dx203_0 + dc205*dx291_0 + dc205*dx295_0 - dc206*dc60 + dc207*dx24_0 + dc209*dx138_0 + dc210*dx297_0 + dx118_0*x209 + dx124_0*x11 + dx143_0*x214 + dx162_0*x10 + dx166_0*x292 + dx180_0*x292 + dx205_0*xi_2 + dx207_0*x144 + dx209_0*x118 + dx214_0*x143 - dx229_0*x10 + dx249_0*xi_1 + dx250_0*x230 + dx266_0*x24
-    dc211 = x166 + x180
-    dc212 = x201 + x260
-    dc213 = (0.5)*dc212
-    dx299_1 = dc131*dx144_1 + dc135*dx293_1 + dc135*dx294_1 + dc167*dx230_1 + dc173 + dc199*dx210_1 + dc200*dx269_1 + dc201*dx33_1 + dc202*dx35_1 + dc203*dx201_1 + dc203*dx260_1 + dc204*dx203_1 + dc205*dx291_1 + dc205*dx295_1 - dc206*dc61 + dc207*dx24_1 + dc210*dx297_1 + dc211*dx292_1 + dc212*dx298_1 + dc213*x132 + dc24*x297 + dx118_1*x209 + dx124_1*x11 + dx143_1*x214 + dx162_1*x10 + dx166_1*x292 + dx180_1*x292 + dx205_1*xi_2 + dx207_1*x144 + dx209_1*x118 + dx214_1*x143 - dx229_1*x10 + dx249_1*xi_1 + dx250_1*x230 + dx266_1*x24 + x138*x210
-    dx299_2 = dc131*dx144_2 + dc135*dx293_2 + dc135*dx294_2 + dc145 + dc167*dx230_2 + dc199*dx210_2 + dc200*dx269_2 + dc201*dx33_2 + dc202*dx35_2 + dc203*dx201_2 + dc203*dx260_2 + dc204*dx203_2 + dc205*dx291_2 + dc205*dx295_2 - dc206*dc62 + dc207*dx24_2 + dc208*dx132_2 + dc209*x46 + dc210*dx297_2 + dc211*x168 + dc212*dx296_2 + dc213*x168 + dc23*x297 + dx118_2*x209 + dx124_2*x11 + dx143_2*x214 + dx162_2*x10 + dx166_2*x292 + dx180_2*x292 + dx205_2*xi_2 + dx207_2*x144 + dx209_2*x118 + dx214_2*x143 - dx229_2*x10 + dx249_2*xi_1 + dx250_2*x230 + dx266_2*x24 - 0.5*x229
-    dx299_3 = dc200*dx269_3 + dc209*dx138_3 + dx118_3*x209 + dx143_3*x214 - dx229_3*x10 + dx266_3*x24
-    dx299_4 = dc131*dx144_4 + dc135*dx294_4 + dc211*dx292_4 + dc212*dx298_4 + dc66*x297 + dc71 + x10*x123
-    dx299_5 = dc135*dx293_5 + dc167*dx230_5 + dc208*x2 + dc212*dx296_5 + dc58*x297 + dx249_5*xi_1 + x11*x123
+    dc198 = x138*xi_1
+    dc199 = x24*x82
+    dc200 = x10*x297
+    dc201 = x11*x297
+    dc202 = x296 + x298
+    dc203 = x293 + x294
+    dc204 = x132 + x138
+    dc205 = x24*x269
+    dc206 = x266 + x269*x82
+    dc207 = x291 + x295
+    dc208 = dc207 + x210*xi_1
+    dc209 = x10*x33 + x11*x35
+    dx299_0 = dc130*dx144_0 + dc134*dx293_0 + dc134*dx294_0 + dc166*dx230_0 + dc198*dx210_0 + dc199*dx269_0 + dc200*dx33_0 + dc201*dx35_0 + dc202*dx201_0 + dc202*dx260_0 + dc203*dx203_0 + dc204*dx291_0 + dc204*dx295_0 - dc205*dc60 + dc206*dx24_0 + dc208*dx138_0 + dc209*dx297_0 + dx118_0*x209 + dx124_0*x11 + dx143_0*x214 + dx162_0*x10 + dx166_0*x292 + dx180_0*x292 + dx205_0*xi_2 + dx207_0*x144 + dx209_0*x118 + dx214_0*x143 - dx229_0*x10 + dx249_0*xi_1 + dx250_0*x230 + dx266_0*x24
+    dc210 = x166 + x180
+    dc211 = x201 + x260
+    dc212 = (0.5)*dc211
+    dx299_1 = dc130*dx144_1 + dc134*dx293_1 + dc134*dx294_1 + dc166*dx230_1 + dc172 + dc198*dx210_1 + dc199*dx269_1 + dc200*dx33_1 + dc201*dx35_1 + dc202*dx201_1 + dc202*dx260_1 + dc203*dx203_1 + dc204*dx291_1 + dc204*dx295_1 - dc205*dc61 + dc206*dx24_1 + dc209*dx297_1 + dc210*dx292_1 + dc211*dx298_1 + dc212*x132 + dc24*x297 + dx118_1*x209 + dx124_1*x11 + dx143_1*x214 + dx162_1*x10 + dx166_1*x292 + dx180_1*x292 + dx205_1*xi_2 + dx207_1*x144 + dx209_1*x118 + dx214_1*x143 - dx229_1*x10 + dx249_1*xi_1 + dx250_1*x230 + dx266_1*x24 + x138*x210
+    dx299_2 = dc130*dx144_2 + dc134*dx293_2 + dc134*dx294_2 + dc144 + dc166*dx230_2 + dc198*dx210_2 + dc199*dx269_2 + dc200*dx33_2 + dc201*dx35_2 + dc202*dx201_2 + dc202*dx260_2 + dc203*dx203_2 + dc204*dx291_2 + dc204*dx295_2 - dc205*dc62 + dc206*dx24_2 + dc207*dx132_2 + dc208*x46 + dc209*dx297_2 + dc210*x168 + dc211*dx296_2 + dc212*x168 + dc23*x297 + dx118_2*x209 + dx124_2*x11 + dx143_2*x214 + dx162_2*x10 + dx166_2*x292 + dx180_2*x292 + dx205_2*xi_2 + dx207_2*x144 + dx209_2*x118 + dx214_2*x143 - dx229_2*x10 + dx249_2*xi_1 + dx250_2*x230 + dx266_2*x24 - 0.5*x229
+    dx299_3 = dc199*dx269_3 + dc208*dx138_3 + dx118_3*x209 + dx143_3*x214 - dx229_3*x10 + dx266_3*x24
+    dx299_4 = dc130*dx144_4 + dc134*dx294_4 + dc210*dx292_4 + dc211*dx298_4 + dc66*x297 + dc71 + x10*x123
+    dx299_5 = dc134*dx293_5 + dc166*dx230_5 + dc207*x2 + dc211*dx296_5 + dc58*x297 + dx249_5*xi_1 + x11*x123
     x300 = x130*x73
     dx300_0 = dx130_0*x73
     dx300_1 = dc70*x130 + dx130_1*x73
     dx300_2 = dx130_2*x73
     x301 = x1*x134
-    dx301_0 = dc159
-    dx301_1 = dc160 + dc2*x134
-    dx301_2 = dc161
+    dx301_0 = dc158
+    dx301_1 = dc159 + dc2*x134
+    dx301_2 = dc160
     x302 = x153*x73
     dx302_0 = dx153_0*x73
     dx302_1 = dc70*x153 + dx153_1*x73
     dx302_2 = dx153_2*x73
     x303 = x108*x18
-    dx303_0 = -dc195 + dx108_0*x18
-    dx303_1 = -dc196 + dx108_1*x18
-    dx303_2 = -dc197 + dx108_2*x18
+    dx303_0 = -dc194 + dx108_0*x18
+    dx303_1 = -dc195 + dx108_1*x18
+    dx303_2 = -dc196 + dx108_2*x18
     dx303_3 = x18*x72
     x304 = x136*xi_3
     dx304_0 = dx136_0*xi_3
     dx304_1 = dx136_1*xi_3
     dx304_2 = dx136_2*xi_3
     x305 = x225*xi_0
-    dx305_0 = dc198*dx219_0 + x225
-    dx305_1 = dc198*dx219_1
-    dx305_2 = dc198*dx219_2
+    dx305_0 = dc197*dx219_0 + x225
+    dx305_1 = dc197*dx219_1
+    dx305_2 = dc197*dx219_2
     x306 = x221*xi_0
     dx306_0 = dx221_0*xi_0 + x221
     dx306_1 = dx221_1*xi_0
     dx306_2 = dx221_2*xi_0
     x307 = x235*xi_0
-    dx307_0 = dc198*dx227_0 + x235
-    dx307_1 = dc198*dx227_1
-    dx307_2 = dc198*dx227_2
+    dx307_0 = dc197*dx227_0 + x235
+    dx307_1 = dc197*dx227_1
+    dx307_2 = dc197*dx227_2
     x308 = x166*x2
     dx308_0 = dx166_0*x2
     dx308_1 = dx166_1*x2
     dx308_2 = dc3*x166 + dx166_2*x2
-    dc214 = x111*x2
-    dc215 = x109*x2
-    dc216 = x85 + x92
-    dc217 = x106 + x107
-    dc218 = x105 + x116
-    dc219 = x112 + x114
-    dc220 = x73 + x74
-    dc221 = x121 + 2.0
-    dc222 = x122 + 2.0
-    dc223 = x1 + x2
-    dc224 = x61 + x64
-    dc225 = x70 + x71
-    dc226 = x54 + x60
-    dc227 = x56 + x58
-    dc228 = dc226 + dc227
-    dc229 = dc224 + x79 + x80
-    dc230 = x63 + x77
-    dc231 = x47 + x78
-    dc232 = dx127_0*x129
-    dc233 = dx141_0*x142
-    dc234 = x146 + x148
-    dc235 = (0.25)*x138 + (0.25)*x140
-    dc236 = dc165 + x138
-    dc237 = x133 + x139 + x154
-    dc238 = x135 + x143 + x145
-    dc239 = dc158*dc238
-    dc240 = dx127_1*x129
-    dc241 = dx141_1*x142
-    dc242 = dc238*dc70
-    dc243 = dx127_2*x129
-    dc244 = dx141_2*x142
-    dc245 = dc237*x46
-    dc246 = dc17*dc238
-    dc247 = x123 + x128*x19
-    dc248 = dx127_0*x218
-    dc249 = x224 + x233
-    dc250 = x216 + x223
-    dc251 = (0.25)*x179 + (0.25)*x226
-    dc252 = dc132 + x226
-    dc253 = x221 + x225 + x235
-    dc254 = x229 + x231
-    dc255 = dc158*dc254
-    dc256 = dx127_1*x218
-    dc257 = dc254*dc70
-    dc258 = dc253*x46 + (0.5)*x232
-    dc259 = dx127_2*x218
-    dc260 = dc17*dc254
-    dc261 = x19*x217 + x29
-    dc262 = x220 + x228
-    dc263 = x10*x148 + x137
-    dc264 = x182*x53
-    dc265 = x213 + x264
-    dc266 = x61 + x80
-    dc267 = x118 + x36
-    dc268 = x46 + x50
-    dc269 = x207 + x255
-    dc270 = x50 + x53*x65
-    dc271 = x182*x65 + x265
-    dc272 = dc211 + x256
-    dc273 = x182 + x252
-    dc274 = dx273_0*x52
-    dc275 = dx176_0*x274
-    dc276 = dx274_0*x176
-    dc277 = dc32*xi_0
-    dc278 = x195*x3
-    dc279 = x141*x3
-    dc280 = x199 + x281
-    dc281 = x6 + x8
-    dc282 = x223 + x273
-    dc283 = x212 + x247
-    dc284 = dc158*dc283
-    dc285 = x141*x195 + x194*jax.numpy.where(jax.numpy.less(x3, 0.25), x3*(x3*(x3*(x3*(x3*(x3*(8.1633472837176542e-11 - 3.8735633282093839e-13*x3) - 1.2801352087066372e-8) + 1.4196194751750306e-6) - 0.00010361552028218695) + 0.004464285714285714) - 0.094444444444444442) - 0.33333333333333331, (0.5)*((-4.0*jax.numpy.where(jax.numpy.less(x3, 0.25), 0.125, (x3*jax.numpy.sqrt(x3))) + jax.numpy.where(jax.numpy.less(x3, 0.25), 0.25, x3)*_sin(jax.numpy.where(jax.numpy.less(x3, 0.25), 0.5, jax.numpy.sqrt(x3))) - 2.0*jax.numpy.where(jax.numpy.less(x3, 0.25), 0.5, jax.numpy.sqrt(x3))*_cos(jax.numpy.where(jax.numpy.less(x3, 0.25), 0.5, jax.numpy.sqrt(x3))) + 10.0*jax.numpy.where(jax.numpy.less(x3, 0.25), 0.5, jax.numpy.sqrt(x3)) - 4.0*_sin(jax.numpy.where(jax.numpy.less(x3, 0.25), 0.5, jax.numpy.sqrt(x3))))*jax.numpy.where(jax.numpy.less(x3, 0.25), 0.5, jax.numpy.sqrt(x3)) + 2.0*jax.numpy.where(jax.numpy.less(x3, 0.25), 0.0625, (x3*x3)) + 2.0*jax.numpy.where(jax.numpy.less(x3, 0.25), 0.25, x3)*_cos(jax.numpy.where(jax.numpy.less(x3, 0.25), 0.5, jax.numpy.sqrt(x3))) - 10.0*jax.numpy.where(jax.numpy.less(x3, 0.25), 0.25, x3) - 8.0*_cos(jax.numpy.where(jax.numpy.less(x3, 0.25), 0.5, jax.numpy.sqrt(x3))) + 8.0)*jax.numpy.where(jax.numpy.less(x3, 0.25), 16.0, 1.0/(x3*x3)))
-    dc286 = dx273_1*x52
-    dc287 = dx176_1*x274
-    dc288 = dx274_1*x176
-    dc289 = dc32*xi_1
-    dc290 = dc283*dc70
-    dc291 = x279 + x280 + x284
-    dc292 = dx273_2*x52
-    dc293 = dx176_2*x274
-    dc294 = dx274_2*x176
-    dc295 = dc32*xi_2
-    dc296 = x219 + x227
-    dc297 = dc17*dc283
-    dc298 = x19*x274
-    dc299 = x11*x136
-    dc300 = dc249 + x11*x146
-    dc301 = x300 + x302
-    dc302 = x194*x3
-    dc303 = -x273 + x301
-    dc304 = x194*x227 + x194*jax.numpy.where(jax.numpy.less(x3, 0.25), x3*(x3*(x3*(x3*(x3*(x3*(3.8735633282093839e-13*x3 - 8.1633472837176542e-11) + 1.2801352087066372e-8) - 1.4196194751750306e-6) + 0.00010361552028218695) - 0.004464285714285714) + 0.094444444444444442) + 0.33333333333333331, (0.5)*((4.0*jax.numpy.where(jax.numpy.less(x3, 0.25), 0.125, (x3*jax.numpy.sqrt(x3))) - jax.numpy.where(jax.numpy.less(x3, 0.25), 0.25, x3)*_sin(jax.numpy.where(jax.numpy.less(x3, 0.25), 0.5, jax.numpy.sqrt(x3))) + 2.0*jax.numpy.where(jax.numpy.less(x3, 0.25), 0.5, jax.numpy.sqrt(x3))*_cos(jax.numpy.where(jax.numpy.less(x3, 0.25), 0.5, jax.numpy.sqrt(x3))) - 10.0*jax.numpy.where(jax.numpy.less(x3, 0.25), 0.5, jax.numpy.sqrt(x3)) + 4.0*_sin(jax.numpy.where(jax.numpy.less(x3, 0.25), 0.5, jax.numpy.sqrt(x3))))*jax.numpy.where(jax.numpy.less(x3, 0.25), 0.5, jax.numpy.sqrt(x3)) - 2.0*jax.numpy.where(jax.numpy.less(x3, 0.25), 0.0625, (x3*x3)) - 2.0*jax.numpy.where(jax.numpy.less(x3, 0.25), 0.25, x3)*_cos(jax.numpy.where(jax.numpy.less(x3, 0.25), 0.5, jax.numpy.sqrt(x3))) + 10.0*jax.numpy.where(jax.numpy.less(x3, 0.25), 0.25, x3) + 8.0*_cos(jax.numpy.where(jax.numpy.less(x3, 0.25), 0.5, jax.numpy.sqrt(x3))) - 8.0)*jax.numpy.where(jax.numpy.less(x3, 0.25), 16.0, 1.0/(x3*x3)))
-    dc305 = x305 + x306 + x307
-    dc306 = x130 + x153
-    dc307 = x2*x22
-    dc308 = x64 + x79
-    dc309 = x118 + x34
-    dc310 = x46 + x48
-    dc311 = x250 + x255
+    dc213 = x111*x2
+    dc214 = x109*x2
+    dc215 = x85 + x92
+    dc216 = x106 + x107
+    dc217 = x105 + x116
+    dc218 = x112 + x114
+    dc219 = x73 + x74
+    dc220 = x121 + 2.0
+    dc221 = x122 + 2.0
+    dc222 = x1 + x2
+    dc223 = x61 + x64
+    dc224 = x70 + x71
+    dc225 = x54 + x60
+    dc226 = x56 + x58
+    dc227 = dc225 + dc226
+    dc228 = dc223 + x79 + x80
+    dc229 = x63 + x77
+    dc230 = x47 + x78
+    dc231 = dx127_0*x129
+    dc232 = dx141_0*x142
+    dc233 = x146 + x148
+    dc234 = (0.25)*x138 + (0.25)*x140
+    dc235 = dc164 + x138
+    dc236 = x133 + x139 + x154
+    dc237 = x135 + x143 + x145
+    dc238 = dc157*dc237
+    dc239 = dx127_1*x129
+    dc240 = dx141_1*x142
+    dc241 = dc237*dc70
+    dc242 = dx127_2*x129
+    dc243 = dx141_2*x142
+    dc244 = dc236*x46
+    dc245 = dc17*dc237
+    dc246 = x123 + x128*x19
+    dc247 = dx127_0*x218
+    dc248 = x224 + x233
+    dc249 = x216 + x223
+    dc250 = (0.25)*x179 + (0.25)*x226
+    dc251 = dc131 + x226
+    dc252 = x221 + x225 + x235
+    dc253 = x229 + x231
+    dc254 = dc157*dc253
+    dc255 = dx127_1*x218
+    dc256 = dc253*dc70
+    dc257 = dc252*x46 + (0.5)*x232
+    dc258 = dx127_2*x218
+    dc259 = dc17*dc253
+    dc260 = x19*x217 + x29
+    dc261 = x220 + x228
+    dc262 = x10*x148 + x137
+    dc263 = x182*x53
+    dc264 = x213 + x264
+    dc265 = x61 + x80
+    dc266 = x118 + x36
+    dc267 = x46 + x50
+    dc268 = x207 + x255
+    dc269 = x50 + x53*x65
+    dc270 = x182*x65 + x265
+    dc271 = dc210 + x256
+    dc272 = x182 + x252
+    dc273 = dx273_0*x52
+    dc274 = dx176_0*x274
+    dc275 = dx274_0*x176
+    dc276 = dc32*xi_0
+    dc277 = x195*x3
+    dc278 = x141*x3
+    dc279 = x199 + x281
+    dc280 = x6 + x8
+    dc281 = x223 + x273
+    dc282 = x212 + x247
+    dc283 = dc157*dc282
+    dc284 = x141*x195 + x194*jax.numpy.where(jax.numpy.less(x3, 0.25), x3*(x3*(x3*(x3*(x3*(x3*(8.1633472837176542e-11 - 3.8735633282093839e-13*x3) - 1.2801352087066372e-8) + 1.4196194751750306e-6) - 0.00010361552028218695) + 0.004464285714285714) - 0.094444444444444442) - 0.33333333333333331, (0.5)*((-4.0*jax.numpy.where(jax.numpy.less(x3, 0.25), 0.125, (x3*jax.numpy.sqrt(x3))) + jax.numpy.where(jax.numpy.less(x3, 0.25), 0.25, x3)*_sin(jax.numpy.where(jax.numpy.less(x3, 0.25), 0.5, jax.numpy.sqrt(x3))) - 2.0*jax.numpy.where(jax.numpy.less(x3, 0.25), 0.5, jax.numpy.sqrt(x3))*_cos(jax.numpy.where(jax.numpy.less(x3, 0.25), 0.5, jax.numpy.sqrt(x3))) + 10.0*jax.numpy.where(jax.numpy.less(x3, 0.25), 0.5, jax.numpy.sqrt(x3)) - 4.0*_sin(jax.numpy.where(jax.numpy.less(x3, 0.25), 0.5, jax.numpy.sqrt(x3))))*jax.numpy.where(jax.numpy.less(x3, 0.25), 0.5, jax.numpy.sqrt(x3)) + 2.0*jax.numpy.where(jax.numpy.less(x3, 0.25), 0.0625, (x3*x3)) + 2.0*jax.numpy.where(jax.numpy.less(x3, 0.25), 0.25, x3)*_cos(jax.numpy.where(jax.numpy.less(x3, 0.25), 0.5, jax.numpy.sqrt(x3))) - 10.0*jax.numpy.where(jax.numpy.less(x3, 0.25), 0.25, x3) - 8.0*_cos(jax.numpy.where(jax.numpy.less(x3, 0.25), 0.5, jax.numpy.sqrt(x3))) + 8.0)*jax.numpy.where(jax.numpy.less(x3, 0.25), 16.0, 1.0/(x3*x3)))
+    dc285 = dx273_1*x52
+    dc286 = dx176_1*x274
+    dc287 = dx274_1*x176
+    dc288 = dc32*xi_1
+    dc289 = dc282*dc70
+    dc290 = x279 + x280 + x284
+    dc291 = dx273_2*x52
+    dc292 = dx176_2*x274
+    dc293 = dx274_2*x176
+    dc294 = dc32*xi_2
+    dc295 = x219 + x227
+    dc296 = dc17*dc282
+    dc297 = x19*x274
+    dc298 = x11*x136
+    dc299 = dc248 + x11*x146
+    dc300 = x300 + x302
+    dc301 = x194*x3
+    dc302 = -x273 + x301
+    dc303 = x194*x227 + x194*jax.numpy.where(jax.numpy.less(x3, 0.25), x3*(x3*(x3*(x3*(x3*(x3*(3.8735633282093839e-13*x3 - 8.1633472837176542e-11) + 1.2801352087066372e-8) - 1.4196194751750306e-6) + 0.00010361552028218695) - 0.004464285714285714) + 0.094444444444444442) + 0.33333333333333331, (0.5)*((4.0*jax.numpy.where(jax.numpy.less(x3, 0.25), 0.125, (x3*jax.numpy.sqrt(x3))) - jax.numpy.where(jax.numpy.less(x3, 0.25), 0.25, x3)*_sin(jax.numpy.where(jax.numpy.less(x3, 0.25), 0.5, jax.numpy.sqrt(x3))) + 2.0*jax.numpy.where(jax.numpy.less(x3, 0.25), 0.5, jax.numpy.sqrt(x3))*_cos(jax.numpy.where(jax.numpy.less(x3, 0.25), 0.5, jax.numpy.sqrt(x3))) - 10.0*jax.numpy.where(jax.numpy.less(x3, 0.25), 0.5, jax.numpy.sqrt(x3)) + 4.0*_sin(jax.numpy.where(jax.numpy.less(x3, 0.25), 0.5, jax.numpy.sqrt(x3))))*jax.numpy.where(jax.numpy.less(x3, 0.25), 0.5, jax.numpy.sqrt(x3)) - 2.0*jax.numpy.where(jax.numpy.less(x3, 0.25), 0.0625, (x3*x3)) - 2.0*jax.numpy.where(jax.numpy.less(x3, 0.25), 0.25, x3)*_cos(jax.numpy.where(jax.numpy.less(x3, 0.25), 0.5, jax.numpy.sqrt(x3))) + 10.0*jax.numpy.where(jax.numpy.less(x3, 0.25), 0.25, x3) + 8.0*_cos(jax.numpy.where(jax.numpy.less(x3, 0.25), 0.5, jax.numpy.sqrt(x3))) - 8.0)*jax.numpy.where(jax.numpy.less(x3, 0.25), 16.0, 1.0/(x3*x3)))
+    dc304 = x305 + x306 + x307
+    dc305 = x130 + x153
+    dc306 = x2*x22
+    dc307 = x64 + x79
+    dc308 = x118 + x34
+    dc309 = x46 + x48
+    dc310 = x250 + x255
     return (
         x9,
         x14,
@@ -1693,24 +1692,24 @@ def _main(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5):
         0.0,
         0.0,
         0.0,
-        dc134*dx54_0 + dc134*dx56_0 + dc134*dx58_0 + dc134*dx60_0 + dc174 + dc188*dx83_0 + dc214*dx109_0 + dc215*dx111_0 + dc216*dx102_0 + dc217*dx105_0 + dc217*dx116_0 + dc218*dx106_0 + dc218*dx107_0 + dc219*dx113_0 + dc220*dx120_0 + dc221*dx34_0 + dc222*dx36_0 + dc223*dx47_0 + dc223*dx78_0 + dc224*dx63_0 + dc225*dx69_0 + dc228*dx117_0 + dc229*dx77_0 - dx101_0 + dx110_0*x53 + dx112_0*x113 + dx114_0*x113 + dx121_0*x34 + dx122_0*x36 + dx30_0*xi_1 + dx31_0*xi_2 + dx39_0*xi_4 + dx41_0*xi_5 + dx43_0 + dx45_0 + dx49_0*x48 + dx51_0*x50 + dx62_0*x68 + dx66_0*x53 + dx68_0*x62 + dx84_0*x83 + dx85_0*x102 - dx90_0 + dx91_0*x83 + dx92_0*x102 - dx93_0 - dx97_0 - dx98_0 - dx99_0,
-        dc134*dx54_1 + dc134*dx56_1 + dc134*dx58_1 + dc134*dx60_1 + dc150*dx53_1 + dc188*dx83_1 + dc2*dc231 + dc214*dx109_1 + dc215*dx111_1 + dc216*dx102_1 + dc217*dx105_1 + dc217*dx116_1 + dc218*dx106_1 + dc218*dx107_1 + dc219*dx113_1 + dc220*dx120_1 + dc221*dx34_1 + dc222*dx36_1 + dc223*dx47_1 + dc223*dx78_1 + dc224*dx63_1 + dc225*dx69_1 + dc228*dx117_1 + dc229*dx77_1 + dc230*dx61_1 + dc70*x120 - dx101_1 + dx110_1*x53 + dx112_1*x113 + dx114_1*x113 + dx121_1*x34 + dx122_1*x36 + dx30_1*xi_1 + dx31_1*xi_2 + dx39_1*xi_4 + dx41_1*xi_5 + dx43_1 + dx45_1 + dx49_1*x48 + dx51_1*x50 + dx62_1*x68 + dx66_1*x53 + dx68_1*x62 + dx70_1*x69 + dx71_1*x69 + dx79_1*x77 + dx80_1*x77 + dx84_1*x83 + dx85_1*x102 - dx90_1 + dx91_1*x83 + dx92_1*x102 - dx93_1 - dx97_1 - dx98_1 - dx99_1 + x30 + x49*xi_4,
-        dc134*dx54_2 + dc134*dx56_2 + dc134*dx58_2 + dc134*dx60_2 + dc17*x120 + dc188*dx83_2 + dc214*dx109_2 + dc215*dx111_2 + dc216*dx102_2 + dc217*dx105_2 + dc217*dx116_2 + dc218*dx106_2 + dc218*dx107_2 + dc219*dx113_2 + dc220*dx120_2 + dc221*dx34_2 + dc222*dx36_2 + dc223*dx47_2 + dc223*dx78_2 + dc224*dx63_2 + dc225*dx69_2 + dc228*dx117_2 + dc229*dx77_2 + dc230*dx64_2 + dc3*(dc231 + x109*x111) - dx101_2 + dx110_2*x53 + dx112_2*x113 + dx114_2*x113 + dx121_2*x34 + dx122_2*x36 + dx30_2*xi_1 + dx31_2*xi_2 + dx39_2*xi_4 + dx41_2*xi_5 + dx43_2 + dx45_2 + dx49_2*x48 + dx51_2*x50 + dx62_2*x68 + dx66_2*x53 + dx68_2*x62 + dx70_2*x69 + dx71_2*x69 + dx79_2*x77 + dx80_2*x77 + dx84_2*x83 + dx85_2*x102 - dx90_2 + dx91_2*x83 + dx92_2*x102 - dx93_2 - dx97_2 - dx98_2 - dx99_2 + x31 + x51*xi_5,
-        dc134*dx54_3 + dc134*dx56_3 + dc214*dx109_3 + dc220*dx120_3 + dc223*dx47_3 + dc223*dx78_3 + dx110_3*x53 + dx66_3*x53 + dx68_3*x62 - dx97_3 - dx98_3,
-        dc134*dx58_4 + dc154 + dc218*dx106_4 + dc221*dx34_4 + dc230*x37 + dx112_4*x113 + dx43_4 + dx79_4*x77 + dx84_4*x83 + dx85_4*x102 - dx90_4 - dx99_4 + x29*xi_1 + x57*x69,
-        dc134*dx60_5 + dc176 + dc218*dx107_5 + dc222*dx36_5 + dc230*x40 - dx101_5 + dx114_5*x113 + dx45_5 + dx80_5*x77 + dx91_5*x83 + dx92_5*x102 - dx93_5 + x29*xi_2 + x59*x69,
-        dc232 + dc233 + dc234*dx147_0 + dc235*dx130_0 + dc235*dx153_0 + dc236*dx133_0 + dc237*dx138_0 + dc239 + dx124_0 + dx126_0 + dx129_0*x128 + dx130_0*x131 + dx135_0*x134 + dx136_0*x137 + dx137_0*x136 + dx142_0*x141 + dx143_0*x134 + dx145_0*x134 + dx146_0*x147 + dx148_0*x147 + dx149_0 - dx152_0 + dx156_0 + dx159_0 - dx160_0 - dx161_0 + dx215_0,
-        dc234*dx147_1 + dc235*dx130_1 + dc235*dx153_1 + dc236*dx133_1 + dc237*dx140_1 + dc240 + dc241 + dc242 + dx124_1 + dx126_1 + dx129_1*x128 + dx130_1*x131 + dx135_1*x134 + dx136_1*x137 + dx137_1*x136 + dx142_1*x141 + dx143_1*x134 + dx145_1*x134 + dx146_1*x147 + dx148_1*x147 + dx149_1 - dx152_1 + dx156_1 + dx159_1 - dx160_1 - dx161_1 + dx215_1,
-        dc234*dx147_2 + dc235*dx130_2 + dc235*dx153_2 + dc236*dx133_2 + dc237*x48 + dc243 + dc244 + dc245 + dc246 + dx124_2 + dx126_2 + dx129_2*x128 + dx130_2*x131 + dx131_2*x130 + dx132_2*x133 + dx135_2*x134 + dx136_2*x137 + dx137_2*x136 + dx142_2*x141 + dx143_2*x134 + dx145_2*x134 + dx146_2*x147 + dx148_2*x147 + dx149_2 - dx152_2 + dx156_2 + dx159_2 - dx160_2 - dx161_2 + dx215_2,
-        dc237*dx138_3 + dx143_3*x134 + dx146_3*x147 + dx156_3 - dx160_3 + dx215_3,
-        dc237*dx140_4 + dx145_4*x134 + dx148_4*x147 + dx159_4 - dx161_4 + dx215_4,
-        dc247 + dx126_5 + dx135_5*x134 + dx142_5*x141 + dx149_5 - dx152_5 + dx215_5 + x130*x74 + x133*x2 + x136*x8,
-        -dc177 - dc248 + dc249*dx163_0 + dc250*dx33_0 + dc251*dx219_0 + dc251*dx227_0 + dc252*dx221_0 + dc253*dx226_0 - dc255 + dx218_0*x217 + dx220_0*xi_4 + dx223_0*x33 + dx224_0*x163 + dx228_0*xi_4 + dx229_0*x222 + dx231_0*x222 + dx232_0*x11 + dx233_0*x163 - dx234_0 + dx237_0 - dx238_0 - dx239_0 + dx240_0 + dx241_0 + dx251_0 + dx30_0,
-        -dc178 + dc249*dx163_1 + dc250*dx33_1 + dc251*dx219_1 + dc251*dx227_1 + dc252*dx221_1 + dc253*x50 - dc256 - dc257 + dc258 + dx168_1*x221 + dx218_1*x217 + dx220_1*xi_4 + dx223_1*x33 + dx224_1*x163 + dx228_1*xi_4 + dx229_1*x222 + dx231_1*x222 + dx232_1*x11 + dx233_1*x163 - dx234_1 + dx237_1 - dx238_1 - dx239_1 + dx240_1 + dx241_1 + dx251_1 + dx30_1,
-        -dc179 + dc249*dx163_2 + dc250*dx33_2 + dc251*dx219_2 + dc251*dx227_2 + dc252*dx221_2 + dc253*dx179_2 - dc259 - dc260 + dx218_2*x217 + dx220_2*xi_4 + dx223_2*x33 + dx224_2*x163 + dx228_2*xi_4 + dx229_2*x222 + dx231_2*x222 + dx232_2*x11 + dx233_2*x163 - dx234_2 + dx237_2 - dx238_2 - dx239_2 + dx240_2 + dx241_2 + dx251_2 + dx30_2,
-        dc253*dx226_3 + dx229_3*x222 + dx232_3*x11 - dx238_3 + dx240_3 + dx251_3,
-        dc250*x32 + dc261 + dc262 - dx234_4 + dx237_4 + dx251_4 + x1*x221 + x163*x6,
-        dc253*dx179_5 + dx231_5*x222 - dx239_5 + dx241_5 + dx251_5 + x163*x24,
+        dc133*dx54_0 + dc133*dx56_0 + dc133*dx58_0 + dc133*dx60_0 + dc173 + dc187*dx83_0 + dc213*dx109_0 + dc214*dx111_0 + dc215*dx102_0 + dc216*dx105_0 + dc216*dx116_0 + dc217*dx106_0 + dc217*dx107_0 + dc218*dx113_0 + dc219*dx120_0 + dc220*dx34_0 + dc221*dx36_0 + dc222*dx47_0 + dc222*dx78_0 + dc223*dx63_0 + dc224*dx69_0 + dc227*dx117_0 + dc228*dx77_0 - dx101_0 + dx110_0*x53 + dx112_0*x113 + dx114_0*x113 + dx121_0*x34 + dx122_0*x36 + dx30_0*xi_1 + dx31_0*xi_2 + dx39_0*xi_4 + dx41_0*xi_5 + dx43_0 + dx45_0 + dx49_0*x48 + dx51_0*x50 + dx62_0*x68 + dx66_0*x53 + dx68_0*x62 + dx84_0*x83 + dx85_0*x102 - dx90_0 + dx91_0*x83 + dx92_0*x102 - dx93_0 - dx97_0 - dx98_0 - dx99_0,
+        dc133*dx54_1 + dc133*dx56_1 + dc133*dx58_1 + dc133*dx60_1 + dc149*dx53_1 + dc187*dx83_1 + dc2*dc230 + dc213*dx109_1 + dc214*dx111_1 + dc215*dx102_1 + dc216*dx105_1 + dc216*dx116_1 + dc217*dx106_1 + dc217*dx107_1 + dc218*dx113_1 + dc219*dx120_1 + dc220*dx34_1 + dc221*dx36_1 + dc222*dx47_1 + dc222*dx78_1 + dc223*dx63_1 + dc224*dx69_1 + dc227*dx117_1 + dc228*dx77_1 + dc229*dx61_1 + dc70*x120 - dx101_1 + dx110_1*x53 + dx112_1*x113 + dx114_1*x113 + dx121_1*x34 + dx122_1*x36 + dx30_1*xi_1 + dx31_1*xi_2 + dx39_1*xi_4 + dx41_1*xi_5 + dx43_1 + dx45_1 + dx49_1*x48 + dx51_1*x50 + dx62_1*x68 + dx66_1*x53 + dx68_1*x62 + dx70_1*x69 + dx71_1*x69 + dx79_1*x77 + dx80_1*x77 + dx84_1*x83 + dx85_1*x102 - dx90_1 + dx91_1*x83 + dx92_1*x102 - dx93_1 - dx97_1 - dx98_1 - dx99_1 + x30 + x49*xi_4,
+        dc133*dx54_2 + dc133*dx56_2 + dc133*dx58_2 + dc133*dx60_2 + dc17*x120 + dc187*dx83_2 + dc213*dx109_2 + dc214*dx111_2 + dc215*dx102_2 + dc216*dx105_2 + dc216*dx116_2 + dc217*dx106_2 + dc217*dx107_2 + dc218*dx113_2 + dc219*dx120_2 + dc220*dx34_2 + dc221*dx36_2 + dc222*dx47_2 + dc222*dx78_2 + dc223*dx63_2 + dc224*dx69_2 + dc227*dx117_2 + dc228*dx77_2 + dc229*dx64_2 + dc3*(dc230 + x109*x111) - dx101_2 + dx110_2*x53 + dx112_2*x113 + dx114_2*x113 + dx121_2*x34 + dx122_2*x36 + dx30_2*xi_1 + dx31_2*xi_2 + dx39_2*xi_4 + dx41_2*xi_5 + dx43_2 + dx45_2 + dx49_2*x48 + dx51_2*x50 + dx62_2*x68 + dx66_2*x53 + dx68_2*x62 + dx70_2*x69 + dx71_2*x69 + dx79_2*x77 + dx80_2*x77 + dx84_2*x83 + dx85_2*x102 - dx90_2 + dx91_2*x83 + dx92_2*x102 - dx93_2 - dx97_2 - dx98_2 - dx99_2 + x31 + x51*xi_5,
+        dc133*dx54_3 + dc133*dx56_3 + dc213*dx109_3 + dc219*dx120_3 + dc222*dx47_3 + dc222*dx78_3 + dx110_3*x53 + dx66_3*x53 + dx68_3*x62 - dx97_3 - dx98_3,
+        dc133*dx58_4 + dc153 + dc217*dx106_4 + dc220*dx34_4 + dc229*x37 + dx112_4*x113 + dx43_4 + dx79_4*x77 + dx84_4*x83 + dx85_4*x102 - dx90_4 - dx99_4 + x29*xi_1 + x57*x69,
+        dc133*dx60_5 + dc175 + dc217*dx107_5 + dc221*dx36_5 + dc229*x40 - dx101_5 + dx114_5*x113 + dx45_5 + dx80_5*x77 + dx91_5*x83 + dx92_5*x102 - dx93_5 + x29*xi_2 + x59*x69,
+        dc231 + dc232 + dc233*dx147_0 + dc234*dx130_0 + dc234*dx153_0 + dc235*dx133_0 + dc236*dx138_0 + dc238 + dx124_0 + dx126_0 + dx129_0*x128 + dx130_0*x131 + dx135_0*x134 + dx136_0*x137 + dx137_0*x136 + dx142_0*x141 + dx143_0*x134 + dx145_0*x134 + dx146_0*x147 + dx148_0*x147 + dx149_0 - dx152_0 + dx156_0 + dx159_0 - dx160_0 - dx161_0 + dx215_0,
+        dc233*dx147_1 + dc234*dx130_1 + dc234*dx153_1 + dc235*dx133_1 + dc236*dx140_1 + dc239 + dc240 + dc241 + dx124_1 + dx126_1 + dx129_1*x128 + dx130_1*x131 + dx135_1*x134 + dx136_1*x137 + dx137_1*x136 + dx142_1*x141 + dx143_1*x134 + dx145_1*x134 + dx146_1*x147 + dx148_1*x147 + dx149_1 - dx152_1 + dx156_1 + dx159_1 - dx160_1 - dx161_1 + dx215_1,
+        dc233*dx147_2 + dc234*dx130_2 + dc234*dx153_2 + dc235*dx133_2 + dc236*x48 + dc242 + dc243 + dc244 + dc245 + dx124_2 + dx126_2 + dx129_2*x128 + dx130_2*x131 + dx131_2*x130 + dx132_2*x133 + dx135_2*x134 + dx136_2*x137 + dx137_2*x136 + dx142_2*x141 + dx143_2*x134 + dx145_2*x134 + dx146_2*x147 + dx148_2*x147 + dx149_2 - dx152_2 + dx156_2 + dx159_2 - dx160_2 - dx161_2 + dx215_2,
+        dc236*dx138_3 + dx143_3*x134 + dx146_3*x147 + dx156_3 - dx160_3 + dx215_3,
+        dc236*dx140_4 + dx145_4*x134 + dx148_4*x147 + dx159_4 - dx161_4 + dx215_4,
+        dc246 + dx126_5 + dx135_5*x134 + dx142_5*x141 + dx149_5 - dx152_5 + dx215_5 + x130*x74 + x133*x2 + x136*x8,
+        -dc176 - dc247 + dc248*dx163_0 + dc249*dx33_0 + dc250*dx219_0 + dc250*dx227_0 + dc251*dx221_0 + dc252*dx226_0 - dc254 + dx218_0*x217 + dx220_0*xi_4 + dx223_0*x33 + dx224_0*x163 + dx228_0*xi_4 + dx229_0*x222 + dx231_0*x222 + dx232_0*x11 + dx233_0*x163 - dx234_0 + dx237_0 - dx238_0 - dx239_0 + dx240_0 + dx241_0 + dx251_0 + dx30_0,
+        -dc177 + dc248*dx163_1 + dc249*dx33_1 + dc250*dx219_1 + dc250*dx227_1 + dc251*dx221_1 + dc252*x50 - dc255 - dc256 + dc257 + dx168_1*x221 + dx218_1*x217 + dx220_1*xi_4 + dx223_1*x33 + dx224_1*x163 + dx228_1*xi_4 + dx229_1*x222 + dx231_1*x222 + dx232_1*x11 + dx233_1*x163 - dx234_1 + dx237_1 - dx238_1 - dx239_1 + dx240_1 + dx241_1 + dx251_1 + dx30_1,
+        -dc178 + dc248*dx163_2 + dc249*dx33_2 + dc250*dx219_2 + dc250*dx227_2 + dc251*dx221_2 + dc252*dx179_2 - dc258 - dc259 + dx218_2*x217 + dx220_2*xi_4 + dx223_2*x33 + dx224_2*x163 + dx228_2*xi_4 + dx229_2*x222 + dx231_2*x222 + dx232_2*x11 + dx233_2*x163 - dx234_2 + dx237_2 - dx238_2 - dx239_2 + dx240_2 + dx241_2 + dx251_2 + dx30_2,
+        dc252*dx226_3 + dx229_3*x222 + dx232_3*x11 - dx238_3 + dx240_3 + dx251_3,
+        dc249*x32 + dc260 + dc261 - dx234_4 + dx237_4 + dx251_4 + x1*x221 + x163*x6,
+        dc252*dx179_5 + dx231_5*x222 - dx239_5 + dx241_5 + dx251_5 + x163*x24,
         dx9_0,
         dx9_1,
         dx9_2,
@@ -1729,24 +1728,24 @@ def _main(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5):
         0.0,
         0.0,
         0.0,
-        dc175*dx148_0 - dc232 - dc233 + dc235*dx219_0 + dc235*dx227_0 + dc236*dx221_0 - dc239 + dc253*dx138_0 + dc263*dx163_0 - dc92 + dx129_0*x217 + dx135_0*x222 + dx137_0*x163 + dx142_0*x174 + dx143_0*x222 + dx145_0*x222 - dx149_0 + dx152_0 - dx156_0 - dx159_0 + dx160_0 + dx161_0 + dx215_0 + dx219_0*x131 + dx232_0*x10 + dx31_0 + dx35_0*x216,
-        dc175*dx148_1 + dc235*dx219_1 + dc235*dx227_1 + dc236*dx221_1 - dc240 - dc241 - dc242 + dc253*dx140_1 + dc263*dx163_1 - dc93 + dx129_1*x217 + dx135_1*x222 + dx137_1*x163 + dx142_1*x174 + dx143_1*x222 + dx145_1*x222 - dx149_1 + dx152_1 - dx156_1 - dx159_1 + dx160_1 + dx161_1 + dx215_1 + dx219_1*x131 + dx232_1*x10 + dx31_1 + dx35_1*x216,
-        dc175*dx148_2 + dc235*dx219_2 + dc235*dx227_2 + dc236*dx221_2 - dc243 - dc244 - dc246 + dc253*x48 + dc258 + dc263*dx163_2 - dc94 + dx129_2*x217 + dx131_2*x219 + dx132_2*x221 + dx135_2*x222 + dx137_2*x163 + dx142_2*x174 + dx143_2*x222 + dx145_2*x222 - dx149_2 + dx152_2 - dx156_2 - dx159_2 + dx160_2 + dx161_2 + dx215_2 + dx219_2*x131 + dx232_2*x10 + dx31_2 + dx35_2*x216 + (0.5)*x148*x163,
-        dc253*dx138_3 + dx143_3*x222 - dx156_3 + dx160_3 + dx215_3 + dx232_3*x10,
-        dc175*dx148_4 + dc253*dx140_4 + dx145_4*x222 - dx159_4 + dx161_4 + dx215_4,
-        dc261 + dx135_5*x222 + dx142_5*x174 - dx149_5 + dx152_5 + dx215_5 + x163*x8 + x2*x221 + x216*x32 + x219*x74,
-        dc135*dx54_0 + dc135*dx60_0 + dc226*dx203_0 + dc264*dx65_0 + dc265*dx106_0 + dc266*dx180_0 + dc267*dx207_0 + dc268*dx252_0 + dc269*dx36_0 + dc270*dx182_0 + (0.5)*dc271*x1 + dx101_0 + dx114_0*x83 + dx118_0*x207 + dx166_0*x61 + dx213_0*x106 + dx253_0*x48 + dx254_0*xi_1 + dx256_0*x61 + dx257_0*x1 + dx258_0*x259 + dx259_0*x258 + dx260_0*x71 + dx261_0*x262 + dx262_0*x261 + dx263_0*x85 + dx264_0*x106 + dx265_0*x53 + dx272_0 - dx43_0 + dx83_0*x114 + dx85_0*x263 + dx90_0 + dx97_0 + x252*xi_3 + x36*xi_0,
-        dc135*dx54_1 + dc135*dx60_1 + dc2*x257 + dc226*dx203_1 + dc264*dx65_1 + dc265*dx106_1 + dc266*dx180_1 + dc267*dx207_1 + dc268*dx252_1 + dc269*dx36_1 + dc270*dx182_1 + dc271*dx53_1 + dc272*dx61_1 + dx101_1 + dx114_1*x83 + dx118_1*x207 + dx166_1*x61 + dx213_1*x106 + dx253_1*x48 + dx254_1*xi_1 + dx256_1*x61 + dx257_1*x1 + dx258_1*x259 + dx259_1*x258 + dx260_1*x71 + dx261_1*x262 + dx262_1*x261 + dx263_1*x85 + dx264_1*x106 + dx265_1*x53 + dx272_1 - dx43_1 + dx71_1*x260 + dx80_1*x180 + dx83_1*x114 + dx85_1*x263 + dx90_1 + dx97_1 + x253*xi_4 + x254 + x36*xi_1,
-        dc135*dx54_2 + dc135*dx60_2 + dc226*dx203_2 + dc264*dx65_2 + dc265*dx106_2 + dc266*dx180_2 + dc267*dx207_2 + dc268*dx252_2 + dc269*dx36_2 + dc270*dx182_2 + dc273*xi_5 + dx101_2 + dx114_2*x83 + dx118_2*x207 + dx166_2*x61 + dx213_2*x106 + dx253_2*x48 + dx254_2*xi_1 + dx256_2*x61 + dx257_2*x1 + dx258_2*x259 + dx259_2*x258 + dx260_2*x71 + dx261_2*x262 + dx262_2*x261 + dx263_2*x85 + dx264_2*x106 + dx265_2*x53 + dx272_2 - dx43_2 + dx71_2*x260 + dx80_2*x180 + dx83_2*x114 + dx85_2*x263 + dx90_2 + dx97_2 + x36*xi_2,
-        dc135*dx54_3 + dc264*x4 + dx118_3*x207 + dx257_3*x1 + dx265_3*x53 + dx272_3 + dx97_3 + x252*xi_0,
-        dc265*dx106_4 + dc272*x37 + dx254_4*xi_1 + dx259_4*x258 + dx272_4 - dx43_4 + dx85_4*x263 + dx90_4 + x253*xi_1,
-        dc135*dx60_5 + dc269*dx36_5 + dc273*xi_2 + dx101_5 + dx114_5*x83 + dx262_5*x261 + dx272_5 + dx80_5*x180 + x260*x59,
-        dc1*dc285 + dc186*dx279_0 + dc186*dx280_0 + dc186*dx284_0 + dc223*dx276_0 + dc274 - dc275 - dc276 - dc277 + dc278*dx141_0 + dc279*dx195_0 + dc280*dx136_0 + dc281*dx164_0 + dc282*dx52_0 + dc284 - dx190_0 + dx199_0*x136 + dx212_0*x134 + dx219_0*x275 + dx220_0*xi_3 + dx223_0*x52 + dx227_0*x275 + dx228_0*xi_3 + dx247_0*x134 + dx277_0 - dx278_0 + dx281_0*x136 - dx282_0 - dx283_0 + dx285_0 + dx286_0 + dx287_0 + dx288_0 - dx289_0 - dx290_0 + dx299_0 + dx55_0*x222 + dx6_0*x164 + dx8_0*x164,
-        dc186*dx279_1 + dc186*dx280_1 + dc186*dx284_1 + dc2*dc285 + dc2*x276 + dc223*dx276_1 + dc278*dx141_1 + dc279*dx195_1 + dc280*dx136_1 + dc281*dx164_1 + dc282*dx52_1 + dc286 - dc287 - dc288 - dc289 + dc290 + dc291*xi_4 - dx190_1 + dx199_1*x136 + dx212_1*x134 + dx219_1*x275 + dx220_1*xi_3 + dx223_1*x52 + dx227_1*x275 + dx228_1*xi_3 + dx247_1*x134 + dx277_1 - dx278_1 + dx281_1*x136 - dx282_1 - dx283_1 + dx285_1 + dx286_1 + dx287_1 + dx288_1 - dx289_1 - dx290_1 + dx299_1 + dx55_1*x222 + dx6_1*x164 + dx8_1*x164,
-        dc186*dx279_2 + dc186*dx280_2 + dc186*dx284_2 + dc223*dx276_2 + dc278*dx141_2 + dc279*dx195_2 + dc280*dx136_2 + dc281*dx164_2 + dc282*dx52_2 + dc285*dc3 + dc291*xi_5 + dc292 - dc293 - dc294 - dc295 + dc296*dx275_2 + dc297 + dc3*x276 - dx190_2 + dx199_2*x136 + dx212_2*x134 + dx219_2*x275 + dx220_2*xi_3 + dx223_2*x52 + dx227_2*x275 + dx228_2*xi_3 + dx247_2*x134 + dx277_2 - dx278_2 + dx281_2*x136 - dx282_2 - dx283_2 + dx285_2 + dx286_2 + dx287_2 + dx288_2 - dx289_2 - dx290_2 + dx299_2 + dx55_2*x222 + dx6_2*x164 + dx8_2*x164,
-        dc125*dc279 + dc223*dx276_3 + dc262 + dc281*x163 + dc282*x32 + dc296*x74 - dc298 - dx190_3 + dx277_3 - dx278_3 - dx282_3 - dx283_3 + dx285_3 + dx286_3 + dx299_3 + dx55_3*x222 + (0.25)*jax.numpy.where(jax.numpy.less(x3, 0.5), x3*(x3*(x3*(x3*(x3*(x3*(x3*(1.1661924691025221e-11 - 4.8419541602617299e-14*x3) - 2.1335586811777287e-9) + 2.8392389503500614e-7) - 2.5903880070546738e-5) + 0.001488095238095238) - 0.047222222222222221) - 0.33333333333333331) + 2.0, (-jax.numpy.where(jax.numpy.less(x3, 0.5), 0.25, (x3*x3)) - jax.numpy.where(jax.numpy.less(x3, 0.5), 0.5, x3)*_cos(jax.numpy.where(jax.numpy.less(x3, 0.5), 0.70710678118654752, jax.numpy.sqrt(x3))) + 5.0*jax.numpy.where(jax.numpy.less(x3, 0.5), 0.5, x3) + 4.0*_cos(jax.numpy.where(jax.numpy.less(x3, 0.5), 0.70710678118654752, jax.numpy.sqrt(x3))) - 4.0)*jax.numpy.where(jax.numpy.less(x3, 0.5), 2.0, 1.0/x3)),
-        dc291*xi_1 + dx247_4*x134 + dx287_4 - dx289_4 + dx299_4 + x13*x136,
-        dc291*xi_2 + dx212_5*x134 + dx288_5 - dx290_5 + dx299_5 + x136*x15,
+        dc174*dx148_0 - dc231 - dc232 + dc234*dx219_0 + dc234*dx227_0 + dc235*dx221_0 - dc238 + dc252*dx138_0 + dc262*dx163_0 - dc92 + dx129_0*x217 + dx135_0*x222 + dx137_0*x163 + dx142_0*x174 + dx143_0*x222 + dx145_0*x222 - dx149_0 + dx152_0 - dx156_0 - dx159_0 + dx160_0 + dx161_0 + dx215_0 + dx219_0*x131 + dx232_0*x10 + dx31_0 + dx35_0*x216,
+        dc174*dx148_1 + dc234*dx219_1 + dc234*dx227_1 + dc235*dx221_1 - dc239 - dc240 - dc241 + dc252*dx140_1 + dc262*dx163_1 - dc93 + dx129_1*x217 + dx135_1*x222 + dx137_1*x163 + dx142_1*x174 + dx143_1*x222 + dx145_1*x222 - dx149_1 + dx152_1 - dx156_1 - dx159_1 + dx160_1 + dx161_1 + dx215_1 + dx219_1*x131 + dx232_1*x10 + dx31_1 + dx35_1*x216,
+        dc174*dx148_2 + dc234*dx219_2 + dc234*dx227_2 + dc235*dx221_2 - dc242 - dc243 - dc245 + dc252*x48 + dc257 + dc262*dx163_2 - dc94 + dx129_2*x217 + dx131_2*x219 + dx132_2*x221 + dx135_2*x222 + dx137_2*x163 + dx142_2*x174 + dx143_2*x222 + dx145_2*x222 - dx149_2 + dx152_2 - dx156_2 - dx159_2 + dx160_2 + dx161_2 + dx215_2 + dx219_2*x131 + dx232_2*x10 + dx31_2 + dx35_2*x216 + (0.5)*x148*x163,
+        dc252*dx138_3 + dx143_3*x222 - dx156_3 + dx160_3 + dx215_3 + dx232_3*x10,
+        dc174*dx148_4 + dc252*dx140_4 + dx145_4*x222 - dx159_4 + dx161_4 + dx215_4,
+        dc260 + dx135_5*x222 + dx142_5*x174 - dx149_5 + dx152_5 + dx215_5 + x163*x8 + x2*x221 + x216*x32 + x219*x74,
+        dc134*dx54_0 + dc134*dx60_0 + dc225*dx203_0 + dc263*dx65_0 + dc264*dx106_0 + dc265*dx180_0 + dc266*dx207_0 + dc267*dx252_0 + dc268*dx36_0 + dc269*dx182_0 + (0.5)*dc270*x1 + dx101_0 + dx114_0*x83 + dx118_0*x207 + dx166_0*x61 + dx213_0*x106 + dx253_0*x48 + dx254_0*xi_1 + dx256_0*x61 + dx257_0*x1 + dx258_0*x259 + dx259_0*x258 + dx260_0*x71 + dx261_0*x262 + dx262_0*x261 + dx263_0*x85 + dx264_0*x106 + dx265_0*x53 + dx272_0 - dx43_0 + dx83_0*x114 + dx85_0*x263 + dx90_0 + dx97_0 + x252*xi_3 + x36*xi_0,
+        dc134*dx54_1 + dc134*dx60_1 + dc2*x257 + dc225*dx203_1 + dc263*dx65_1 + dc264*dx106_1 + dc265*dx180_1 + dc266*dx207_1 + dc267*dx252_1 + dc268*dx36_1 + dc269*dx182_1 + dc270*dx53_1 + dc271*dx61_1 + dx101_1 + dx114_1*x83 + dx118_1*x207 + dx166_1*x61 + dx213_1*x106 + dx253_1*x48 + dx254_1*xi_1 + dx256_1*x61 + dx257_1*x1 + dx258_1*x259 + dx259_1*x258 + dx260_1*x71 + dx261_1*x262 + dx262_1*x261 + dx263_1*x85 + dx264_1*x106 + dx265_1*x53 + dx272_1 - dx43_1 + dx71_1*x260 + dx80_1*x180 + dx83_1*x114 + dx85_1*x263 + dx90_1 + dx97_1 + x253*xi_4 + x254 + x36*xi_1,
+        dc134*dx54_2 + dc134*dx60_2 + dc225*dx203_2 + dc263*dx65_2 + dc264*dx106_2 + dc265*dx180_2 + dc266*dx207_2 + dc267*dx252_2 + dc268*dx36_2 + dc269*dx182_2 + dc272*xi_5 + dx101_2 + dx114_2*x83 + dx118_2*x207 + dx166_2*x61 + dx213_2*x106 + dx253_2*x48 + dx254_2*xi_1 + dx256_2*x61 + dx257_2*x1 + dx258_2*x259 + dx259_2*x258 + dx260_2*x71 + dx261_2*x262 + dx262_2*x261 + dx263_2*x85 + dx264_2*x106 + dx265_2*x53 + dx272_2 - dx43_2 + dx71_2*x260 + dx80_2*x180 + dx83_2*x114 + dx85_2*x263 + dx90_2 + dx97_2 + x36*xi_2,
+        dc134*dx54_3 + dc263*x4 + dx118_3*x207 + dx257_3*x1 + dx265_3*x53 + dx272_3 + dx97_3 + x252*xi_0,
+        dc264*dx106_4 + dc271*x37 + dx254_4*xi_1 + dx259_4*x258 + dx272_4 - dx43_4 + dx85_4*x263 + dx90_4 + x253*xi_1,
+        dc134*dx60_5 + dc268*dx36_5 + dc272*xi_2 + dx101_5 + dx114_5*x83 + dx262_5*x261 + dx272_5 + dx80_5*x180 + x260*x59,
+        dc1*dc284 + dc185*dx279_0 + dc185*dx280_0 + dc185*dx284_0 + dc222*dx276_0 + dc273 - dc274 - dc275 - dc276 + dc277*dx141_0 + dc278*dx195_0 + dc279*dx136_0 + dc280*dx164_0 + dc281*dx52_0 + dc283 - dx190_0 + dx199_0*x136 + dx212_0*x134 + dx219_0*x275 + dx220_0*xi_3 + dx223_0*x52 + dx227_0*x275 + dx228_0*xi_3 + dx247_0*x134 + dx277_0 - dx278_0 + dx281_0*x136 - dx282_0 - dx283_0 + dx285_0 + dx286_0 + dx287_0 + dx288_0 - dx289_0 - dx290_0 + dx299_0 + dx55_0*x222 + dx6_0*x164 + dx8_0*x164,
+        dc185*dx279_1 + dc185*dx280_1 + dc185*dx284_1 + dc2*dc284 + dc2*x276 + dc222*dx276_1 + dc277*dx141_1 + dc278*dx195_1 + dc279*dx136_1 + dc280*dx164_1 + dc281*dx52_1 + dc285 - dc286 - dc287 - dc288 + dc289 + dc290*xi_4 - dx190_1 + dx199_1*x136 + dx212_1*x134 + dx219_1*x275 + dx220_1*xi_3 + dx223_1*x52 + dx227_1*x275 + dx228_1*xi_3 + dx247_1*x134 + dx277_1 - dx278_1 + dx281_1*x136 - dx282_1 - dx283_1 + dx285_1 + dx286_1 + dx287_1 + dx288_1 - dx289_1 - dx290_1 + dx299_1 + dx55_1*x222 + dx6_1*x164 + dx8_1*x164,
+        dc185*dx279_2 + dc185*dx280_2 + dc185*dx284_2 + dc222*dx276_2 + dc277*dx141_2 + dc278*dx195_2 + dc279*dx136_2 + dc280*dx164_2 + dc281*dx52_2 + dc284*dc3 + dc290*xi_5 + dc291 - dc292 - dc293 - dc294 + dc295*dx275_2 + dc296 + dc3*x276 - dx190_2 + dx199_2*x136 + dx212_2*x134 + dx219_2*x275 + dx220_2*xi_3 + dx223_2*x52 + dx227_2*x275 + dx228_2*xi_3 + dx247_2*x134 + dx277_2 - dx278_2 + dx281_2*x136 - dx282_2 - dx283_2 + dx285_2 + dx286_2 + dx287_2 + dx288_2 - dx289_2 - dx290_2 + dx299_2 + dx55_2*x222 + dx6_2*x164 + dx8_2*x164,
+        dc124*dc278 + dc222*dx276_3 + dc261 + dc280*x163 + dc281*x32 + dc295*x74 - dc297 - dx190_3 + dx277_3 - dx278_3 - dx282_3 - dx283_3 + dx285_3 + dx286_3 + dx299_3 + dx55_3*x222 + (0.25)*jax.numpy.where(jax.numpy.less(x3, 0.5), x3*(x3*(x3*(x3*(x3*(x3*(x3*(1.1661924691025221e-11 - 4.8419541602617299e-14*x3) - 2.1335586811777287e-9) + 2.8392389503500614e-7) - 2.5903880070546738e-5) + 0.001488095238095238) - 0.047222222222222221) - 0.33333333333333331) + 2.0, (-jax.numpy.where(jax.numpy.less(x3, 0.5), 0.25, (x3*x3)) - jax.numpy.where(jax.numpy.less(x3, 0.5), 0.5, x3)*_cos(jax.numpy.where(jax.numpy.less(x3, 0.5), 0.70710678118654752, jax.numpy.sqrt(x3))) + 5.0*jax.numpy.where(jax.numpy.less(x3, 0.5), 0.5, x3) + 4.0*_cos(jax.numpy.where(jax.numpy.less(x3, 0.5), 0.70710678118654752, jax.numpy.sqrt(x3))) - 4.0)*jax.numpy.where(jax.numpy.less(x3, 0.5), 2.0, 1.0/x3)),
+        dc290*xi_1 + dx247_4*x134 + dx287_4 - dx289_4 + dx299_4 + x13*x136,
+        dc290*xi_2 + dx212_5*x134 + dx288_5 - dx290_5 + dx299_5 + x136*x15,
         dx13_0,
         dx13_1,
         dx17_2,
@@ -1765,24 +1764,24 @@ def _main(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5):
         0.0,
         0.0,
         0.0,
-        dc237*dx226_0 + dc248 + dc251*dx130_0 + dc251*dx153_0 + dc252*dx133_0 + dc255 + dc299*dx146_0 + dc300*dx136_0 + dx162_0 + dx218_0*x128 + dx224_0*x136 + dx229_0*x134 + dx231_0*x134 + dx233_0*x136 + dx234_0 - dx237_0 + dx238_0 + dx239_0 - dx240_0 - dx241_0 + dx251_0 + dx254_0 + dx300_0*xi_4 + dx301_0*x33 + dx302_0*xi_4 + dx33_0*x301,
-        dc106*x146 + dc237*x50 + dc245 + dc251*dx130_1 + dc251*dx153_1 + dc252*dx133_1 + dc256 + dc257 + dc299*dx146_1 + dc300*dx136_1 + dx162_1 + dx168_1*x133 + dx218_1*x128 + dx224_1*x136 + dx229_1*x134 + dx231_1*x134 + dx233_1*x136 + dx234_1 - dx237_1 + dx238_1 + dx239_1 - dx240_1 - dx241_1 + dx251_1 + dx254_1 + dx300_1*xi_4 + dx301_1*x33 + dx302_1*xi_4 + dx33_1*x301,
-        dc237*dx179_2 + dc251*dx130_2 + dc251*dx153_2 + dc252*dx133_2 + dc259 + dc260 + dc299*dx146_2 + dc300*dx136_2 + dx162_2 + dx218_2*x128 + dx224_2*x136 + dx229_2*x134 + dx231_2*x134 + dx233_2*x136 + dx234_2 - dx237_2 + dx238_2 + dx239_2 - dx240_2 - dx241_2 + dx251_2 + dx254_2 + dx300_2*xi_4 + dx301_2*x33 + dx302_2*xi_4 + dx33_2*x301,
-        dc237*dx226_3 + dc299*dx146_3 + dx229_3*x134 + dx238_3 - dx240_3 + dx251_3,
-        dc247 + dc301 + dx234_4 - dx237_4 + dx251_4 + dx254_4 + x1*x133 + x136*x6 + x301*x32,
-        dc237*dx179_5 + dx231_5*x134 + dx239_5 - dx241_5 + dx251_5 + x136*x24,
-        dc1*dc304 + dc186*dx305_0 + dc186*dx306_0 + dc186*dx307_0 + dc223*dx303_0 - dc274 + dc275 + dc276 + dc277 + dc280*dx163_0 + dc281*dx304_0 - dc284 + dc302*dx227_0 + dc303*dx52_0 + dx130_0*x275 + dx153_0*x275 + dx190_0 + dx199_0*x163 + dx212_0*x222 + dx247_0*x222 - dx277_0 + dx278_0 + dx281_0*x163 + dx282_0 + dx283_0 - dx285_0 - dx286_0 - dx287_0 - dx288_0 + dx289_0 + dx290_0 + dx299_0 + dx300_0*xi_3 + dx301_0*x52 + dx302_0*xi_3 + dx55_0*x134 + dx6_0*x304 + dx8_0*x304,
-        dc186*dx305_1 + dc186*dx306_1 + dc186*dx307_1 + dc2*dc304 + dc2*x303 + dc223*dx303_1 + dc280*dx163_1 + dc281*dx304_1 - dc286 + dc287 + dc288 + dc289 - dc290 + dc302*dx227_1 + dc303*dx52_1 + dc305*xi_4 + dx130_1*x275 + dx153_1*x275 + dx190_1 + dx199_1*x163 + dx212_1*x222 + dx247_1*x222 - dx277_1 + dx278_1 + dx281_1*x163 + dx282_1 + dx283_1 - dx285_1 - dx286_1 - dx287_1 - dx288_1 + dx289_1 + dx290_1 + dx299_1 + dx300_1*xi_3 + dx301_1*x52 + dx302_1*xi_3 + dx55_1*x134 + dx6_1*x304 + dx8_1*x304,
-        dc186*dx305_2 + dc186*dx306_2 + dc186*dx307_2 + dc223*dx303_2 + dc280*dx163_2 + dc281*dx304_2 - dc292 + dc293 + dc294 + dc295 - dc297 + dc3*dc304 + dc3*x303 + dc302*dx227_2 + dc303*dx52_2 + dc305*xi_5 + dc306*dx275_2 + dx130_2*x275 + dx153_2*x275 + dx190_2 + dx199_2*x163 + dx212_2*x222 + dx247_2*x222 - dx277_2 + dx278_2 + dx281_2*x163 + dx282_2 + dx283_2 - dx285_2 - dx286_2 - dx287_2 - dx288_2 + dx289_2 + dx290_2 + dx299_2 + dx300_2*xi_3 + dx301_2*x52 + dx302_2*xi_3 + dx55_2*x134 + dx6_2*x304 + dx8_2*x304,
-        dc223*dx303_3 + dc281*x136 + dc298 + dc301 + dc303*x32 + dc306*x74 + dx190_3 - dx277_3 + dx278_3 + dx282_3 + dx283_3 - dx285_3 - dx286_3 + dx299_3 + dx55_3*x134 + (0.25)*x227*x3 + (0.25)*jax.numpy.where(jax.numpy.less(x3, 0.5), x3*(x3*(x3*(x3*(x3*(x3*(x3*(4.8419541602617299e-14*x3 - 1.1661924691025221e-11) + 2.1335586811777287e-9) - 2.8392389503500614e-7) + 2.5903880070546738e-5) - 0.001488095238095238) + 0.047222222222222221) + 0.33333333333333331) - 2.0, (jax.numpy.where(jax.numpy.less(x3, 0.5), 0.25, (x3*x3)) + jax.numpy.where(jax.numpy.less(x3, 0.5), 0.5, x3)*_cos(jax.numpy.where(jax.numpy.less(x3, 0.5), 0.70710678118654752, jax.numpy.sqrt(x3))) - 5.0*jax.numpy.where(jax.numpy.less(x3, 0.5), 0.5, x3) - 4.0*_cos(jax.numpy.where(jax.numpy.less(x3, 0.5), 0.70710678118654752, jax.numpy.sqrt(x3))) + 4.0)*jax.numpy.where(jax.numpy.less(x3, 0.5), 2.0, 1.0/x3)),
-        dc305*xi_1 + dx247_4*x222 - dx287_4 + dx289_4 + dx299_4 + x13*x163,
-        dc305*xi_2 + dx212_5*x222 - dx288_5 + dx290_5 + dx299_5 + x15*x163,
-        dc135*dx56_0 + dc135*dx58_0 + dc227*dx203_0 + dc265*dx107_0 + dc307*dx265_0 + dc308*dx180_0 + dc309*dx250_0 + dc310*dx308_0 + dc311*dx34_0 + dx112_0*x83 + dx118_0*x250 + dx126_0*xi_2 + dx166_0*x64 + dx182_0*x68 + dx213_0*x107 + dx248_0 + dx253_0*x50 + dx256_0*x64 + dx257_0*x2 + dx258_0*x262 + dx259_0*x261 + dx260_0*x70 + dx261_0*x259 + dx262_0*x258 + dx263_0*x92 + dx264_0*x107 + dx272_0 - dx45_0 + dx68_0*x182 + dx83_0*x112 + dx92_0*x263 + dx93_0 + dx98_0 + dx99_0 + (0.5)*x2*x265 + x308*xi_3 + x34*xi_0,
-        dc135*dx56_1 + dc135*dx58_1 + dc227*dx203_1 + dc265*dx107_1 + dc307*dx265_1 + dc308*dx180_1 + dc309*dx250_1 + dc310*dx308_1 + dc311*dx34_1 + dx112_1*x83 + dx118_1*x250 + dx126_1*xi_2 + dx166_1*x64 + dx182_1*x68 + dx213_1*x107 + dx248_1 + dx253_1*x50 + dx256_1*x64 + dx257_1*x2 + dx258_1*x262 + dx259_1*x261 + dx260_1*x70 + dx261_1*x259 + dx262_1*x258 + dx263_1*x92 + dx264_1*x107 + dx272_1 - dx45_1 + dx68_1*x182 + dx70_1*x260 + dx79_1*x180 + dx83_1*x112 + dx92_1*x263 + dx93_1 + dx98_1 + dx99_1 + x308*xi_4 + x34*xi_1,
-        dc135*dx56_2 + dc135*dx58_2 + dc227*dx203_2 + dc265*dx107_2 + dc272*dx64_2 + dc3*(x22*x265 + x257) + dc307*dx265_2 + dc308*dx180_2 + dc309*dx250_2 + dc310*dx308_2 + dc311*dx34_2 + dx112_2*x83 + dx118_2*x250 + dx126_2*xi_2 + dx166_2*x64 + dx182_2*x68 + dx213_2*x107 + dx248_2 + dx253_2*x50 + dx256_2*x64 + dx257_2*x2 + dx258_2*x262 + dx259_2*x261 + dx260_2*x70 + dx261_2*x259 + dx262_2*x258 + dx263_2*x92 + dx264_2*x107 + dx272_2 - dx45_2 + dx68_2*x182 + dx70_2*x260 + dx79_2*x180 + dx83_2*x112 + dx92_2*x263 + dx93_2 + dx98_2 + dx99_2 + x126 + x253*xi_5 + x34*xi_2,
-        dc135*dx56_3 + dc307*dx265_3 + dx118_3*x250 + dx257_3*x2 + dx272_3 + dx68_3*x182 + dx98_3 + x308*xi_0,
-        dc135*dx58_4 + dc311*dx34_4 + dx112_4*x83 + dx248_4 + dx259_4*x261 + dx272_4 + dx79_4*x180 + dx99_4 + x260*x57 + x308*xi_1,
-        dc265*dx107_5 + dc272*x40 + dx126_5*xi_2 + dx262_5*x258 + dx272_5 - dx45_5 + dx92_5*x263 + dx93_5 + x253*xi_2,
+        dc236*dx226_0 + dc247 + dc250*dx130_0 + dc250*dx153_0 + dc251*dx133_0 + dc254 + dc298*dx146_0 + dc299*dx136_0 + dx162_0 + dx218_0*x128 + dx224_0*x136 + dx229_0*x134 + dx231_0*x134 + dx233_0*x136 + dx234_0 - dx237_0 + dx238_0 + dx239_0 - dx240_0 - dx241_0 + dx251_0 + dx254_0 + dx300_0*xi_4 + dx301_0*x33 + dx302_0*xi_4 + dx33_0*x301,
+        dc105*x146 + dc236*x50 + dc244 + dc250*dx130_1 + dc250*dx153_1 + dc251*dx133_1 + dc255 + dc256 + dc298*dx146_1 + dc299*dx136_1 + dx162_1 + dx168_1*x133 + dx218_1*x128 + dx224_1*x136 + dx229_1*x134 + dx231_1*x134 + dx233_1*x136 + dx234_1 - dx237_1 + dx238_1 + dx239_1 - dx240_1 - dx241_1 + dx251_1 + dx254_1 + dx300_1*xi_4 + dx301_1*x33 + dx302_1*xi_4 + dx33_1*x301,
+        dc236*dx179_2 + dc250*dx130_2 + dc250*dx153_2 + dc251*dx133_2 + dc258 + dc259 + dc298*dx146_2 + dc299*dx136_2 + dx162_2 + dx218_2*x128 + dx224_2*x136 + dx229_2*x134 + dx231_2*x134 + dx233_2*x136 + dx234_2 - dx237_2 + dx238_2 + dx239_2 - dx240_2 - dx241_2 + dx251_2 + dx254_2 + dx300_2*xi_4 + dx301_2*x33 + dx302_2*xi_4 + dx33_2*x301,
+        dc236*dx226_3 + dc298*dx146_3 + dx229_3*x134 + dx238_3 - dx240_3 + dx251_3,
+        dc246 + dc300 + dx234_4 - dx237_4 + dx251_4 + dx254_4 + x1*x133 + x136*x6 + x301*x32,
+        dc236*dx179_5 + dx231_5*x134 + dx239_5 - dx241_5 + dx251_5 + x136*x24,
+        dc1*dc303 + dc185*dx305_0 + dc185*dx306_0 + dc185*dx307_0 + dc222*dx303_0 - dc273 + dc274 + dc275 + dc276 + dc279*dx163_0 + dc280*dx304_0 - dc283 + dc301*dx227_0 + dc302*dx52_0 + dx130_0*x275 + dx153_0*x275 + dx190_0 + dx199_0*x163 + dx212_0*x222 + dx247_0*x222 - dx277_0 + dx278_0 + dx281_0*x163 + dx282_0 + dx283_0 - dx285_0 - dx286_0 - dx287_0 - dx288_0 + dx289_0 + dx290_0 + dx299_0 + dx300_0*xi_3 + dx301_0*x52 + dx302_0*xi_3 + dx55_0*x134 + dx6_0*x304 + dx8_0*x304,
+        dc185*dx305_1 + dc185*dx306_1 + dc185*dx307_1 + dc2*dc303 + dc2*x303 + dc222*dx303_1 + dc279*dx163_1 + dc280*dx304_1 - dc285 + dc286 + dc287 + dc288 - dc289 + dc301*dx227_1 + dc302*dx52_1 + dc304*xi_4 + dx130_1*x275 + dx153_1*x275 + dx190_1 + dx199_1*x163 + dx212_1*x222 + dx247_1*x222 - dx277_1 + dx278_1 + dx281_1*x163 + dx282_1 + dx283_1 - dx285_1 - dx286_1 - dx287_1 - dx288_1 + dx289_1 + dx290_1 + dx299_1 + dx300_1*xi_3 + dx301_1*x52 + dx302_1*xi_3 + dx55_1*x134 + dx6_1*x304 + dx8_1*x304,
+        dc185*dx305_2 + dc185*dx306_2 + dc185*dx307_2 + dc222*dx303_2 + dc279*dx163_2 + dc280*dx304_2 - dc291 + dc292 + dc293 + dc294 - dc296 + dc3*dc303 + dc3*x303 + dc301*dx227_2 + dc302*dx52_2 + dc304*xi_5 + dc305*dx275_2 + dx130_2*x275 + dx153_2*x275 + dx190_2 + dx199_2*x163 + dx212_2*x222 + dx247_2*x222 - dx277_2 + dx278_2 + dx281_2*x163 + dx282_2 + dx283_2 - dx285_2 - dx286_2 - dx287_2 - dx288_2 + dx289_2 + dx290_2 + dx299_2 + dx300_2*xi_3 + dx301_2*x52 + dx302_2*xi_3 + dx55_2*x134 + dx6_2*x304 + dx8_2*x304,
+        dc222*dx303_3 + dc280*x136 + dc297 + dc300 + dc302*x32 + dc305*x74 + dx190_3 - dx277_3 + dx278_3 + dx282_3 + dx283_3 - dx285_3 - dx286_3 + dx299_3 + dx55_3*x134 + (0.25)*x227*x3 + (0.25)*jax.numpy.where(jax.numpy.less(x3, 0.5), x3*(x3*(x3*(x3*(x3*(x3*(x3*(4.8419541602617299e-14*x3 - 1.1661924691025221e-11) + 2.1335586811777287e-9) - 2.8392389503500614e-7) + 2.5903880070546738e-5) - 0.001488095238095238) + 0.047222222222222221) + 0.33333333333333331) - 2.0, (jax.numpy.where(jax.numpy.less(x3, 0.5), 0.25, (x3*x3)) + jax.numpy.where(jax.numpy.less(x3, 0.5), 0.5, x3)*_cos(jax.numpy.where(jax.numpy.less(x3, 0.5), 0.70710678118654752, jax.numpy.sqrt(x3))) - 5.0*jax.numpy.where(jax.numpy.less(x3, 0.5), 0.5, x3) - 4.0*_cos(jax.numpy.where(jax.numpy.less(x3, 0.5), 0.70710678118654752, jax.numpy.sqrt(x3))) + 4.0)*jax.numpy.where(jax.numpy.less(x3, 0.5), 2.0, 1.0/x3)),
+        dc304*xi_1 + dx247_4*x222 - dx287_4 + dx289_4 + dx299_4 + x13*x163,
+        dc304*xi_2 + dx212_5*x222 - dx288_5 + dx290_5 + dx299_5 + x15*x163,
+        dc134*dx56_0 + dc134*dx58_0 + dc226*dx203_0 + dc264*dx107_0 + dc306*dx265_0 + dc307*dx180_0 + dc308*dx250_0 + dc309*dx308_0 + dc310*dx34_0 + dx112_0*x83 + dx118_0*x250 + dx126_0*xi_2 + dx166_0*x64 + dx182_0*x68 + dx213_0*x107 + dx248_0 + dx253_0*x50 + dx256_0*x64 + dx257_0*x2 + dx258_0*x262 + dx259_0*x261 + dx260_0*x70 + dx261_0*x259 + dx262_0*x258 + dx263_0*x92 + dx264_0*x107 + dx272_0 - dx45_0 + dx68_0*x182 + dx83_0*x112 + dx92_0*x263 + dx93_0 + dx98_0 + dx99_0 + (0.5)*x2*x265 + x308*xi_3 + x34*xi_0,
+        dc134*dx56_1 + dc134*dx58_1 + dc226*dx203_1 + dc264*dx107_1 + dc306*dx265_1 + dc307*dx180_1 + dc308*dx250_1 + dc309*dx308_1 + dc310*dx34_1 + dx112_1*x83 + dx118_1*x250 + dx126_1*xi_2 + dx166_1*x64 + dx182_1*x68 + dx213_1*x107 + dx248_1 + dx253_1*x50 + dx256_1*x64 + dx257_1*x2 + dx258_1*x262 + dx259_1*x261 + dx260_1*x70 + dx261_1*x259 + dx262_1*x258 + dx263_1*x92 + dx264_1*x107 + dx272_1 - dx45_1 + dx68_1*x182 + dx70_1*x260 + dx79_1*x180 + dx83_1*x112 + dx92_1*x263 + dx93_1 + dx98_1 + dx99_1 + x308*xi_4 + x34*xi_1,
+        dc134*dx56_2 + dc134*dx58_2 + dc226*dx203_2 + dc264*dx107_2 + dc271*dx64_2 + dc3*(x22*x265 + x257) + dc306*dx265_2 + dc307*dx180_2 + dc308*dx250_2 + dc309*dx308_2 + dc310*dx34_2 + dx112_2*x83 + dx118_2*x250 + dx126_2*xi_2 + dx166_2*x64 + dx182_2*x68 + dx213_2*x107 + dx248_2 + dx253_2*x50 + dx256_2*x64 + dx257_2*x2 + dx258_2*x262 + dx259_2*x261 + dx260_2*x70 + dx261_2*x259 + dx262_2*x258 + dx263_2*x92 + dx264_2*x107 + dx272_2 - dx45_2 + dx68_2*x182 + dx70_2*x260 + dx79_2*x180 + dx83_2*x112 + dx92_2*x263 + dx93_2 + dx98_2 + dx99_2 + x126 + x253*xi_5 + x34*xi_2,
+        dc134*dx56_3 + dc306*dx265_3 + dx118_3*x250 + dx257_3*x2 + dx272_3 + dx68_3*x182 + dx98_3 + x308*xi_0,
+        dc134*dx58_4 + dc310*dx34_4 + dx112_4*x83 + dx248_4 + dx259_4*x261 + dx272_4 + dx79_4*x180 + dx99_4 + x260*x57 + x308*xi_1,
+        dc264*dx107_5 + dc271*x40 + dx126_5*xi_2 + dx262_5*x258 + dx272_5 - dx45_5 + dx92_5*x263 + dx93_5 + x253*xi_2,
         dx15_0,
         dx26_1,
         dx15_2,
@@ -1802,7 +1801,6 @@ def _main(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5):
         0.0,
         0.0,
     ), (
-        dc96,
     )
 
 

@@ -179,7 +179,11 @@ def _inner(e, terms: Terms):
     if not e.has(S):
         return e
     if e.free_symbols <= {S}:
-        return _part(e, terms.T)
+        # a quotient in s alone (-sin(s)/(2 s), the derivative of cos(sqrt(x3)) by a temp
+        # x3 = w^T w): found too, or its output was returned unchanged
+        q = _part(e, terms.T)
+        terms.found = terms.found or q.has(QuotientBase)
+        return q
     if isinstance(e, sp.Add | sp.Mul):
         return _grouped(e, terms)
     return e.func(*(_inner(a, terms) for a in e.args))

@@ -45,7 +45,7 @@ def jvp_program(program: Program, inputs: list[sp.Symbol]) -> Program:
     body = []
 
     def d(expr) -> sp.Expr:
-        terms = [sp.diff(expr, s).xreplace(known) * tan[s]
+        terms = [_local(expr, s).xreplace(known) * tan[s]
                  for s in sorted(expr.free_symbols, key=sp.default_sort_key) if s in tan]
         return sp.Add(*terms)
 
@@ -123,7 +123,7 @@ def vjp_program(program: Program, inputs: list[sp.Symbol]) -> Program:
 
     def use(expr, weight) -> None:
         for s in sorted(expr.free_symbols, key=sp.default_sort_key):
-            d = sp.diff(expr, s).xreplace(known)
+            d = _local(expr, s).xreplace(known)
             if d != 0:
                 adj.setdefault(s, []).append(weight * d)
 
@@ -205,7 +205,7 @@ def _forward(program: Program, inputs: list[sp.Symbol]) -> tuple[list, list[dict
     def tangent(expr) -> dict:
         out: dict = {}
         for s in sorted(expr.free_symbols, key=sp.default_sort_key):
-            d = sp.diff(expr, s).xreplace(known) if grad.get(s) else 0
+            d = _local(expr, s).xreplace(known) if grad.get(s) else 0
             for j, gj in (grad[s].items() if d != 0 else ()):
                 out.setdefault(j, []).append(d * gj)
         return {j: sp.Add(*t) for j, t in sorted(out.items())}
@@ -223,3 +223,16 @@ def _forward(program: Program, inputs: list[sp.Symbol]) -> tuple[list, list[dict
                 dj = s
             grad[x][j] = dj
     return body, [tangent(sp.sympify(o)) for o in program.outputs]
+
+
+def _local(expr, s) -> sp.Expr:
+    """``d expr / d s``; a root in it made a removable quotient where it is one (a value's
+    ``cos(sqrt(x3))``, even in ``sqrt(x3)``, has the derivative ``-sin(sqrt(x3)) / (2
+    sqrt(x3))``: singular at ``x3 = 0`` as printed, ``-rq_sinc(x3) / 2`` after
+    :func:`rigidsym.codegen.removable.rewrite`)."""
+    d = sp.diff(expr, s)
+    if any(isinstance(p, sp.Pow) and not p.exp.is_Integer for p in sp.preorder_traversal(d)):
+        from rigidsym.codegen.removable import rewrite
+
+        d = rewrite([d])[0]
+    return d
