@@ -401,7 +401,7 @@ def L_tilde_dot(
     Notes:
         Singular set: 1 + cos(phi) = 0 (phi = pi).
 
-        Accuracy: error <= 1.14 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 510 ulp in float64) over 11 regimes (docs/accuracy.md, kernels.accuracy); singular when 1 + cos(phi) = 0 (phi = pi), flagged where cos(phi/2) == 0 in floating point, never for a float phi: finite at phi = fl(pi).
+        Accuracy: error <= 1.14 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 500 ulp in float64) over 11 regimes (docs/accuracy.md, kernels.accuracy); singular when 1 + cos(phi) = 0 (phi = pi), flagged where cos(phi/2) == 0 in floating point, never for a float phi: finite at phi = fl(pi).
 
         Generated; 91 operations; math hash 4a1f179ad0d8d060.
     """
@@ -487,7 +487,7 @@ def N_matrix_dot(
     Notes:
         Singular set: phi = 0 (mod 2 pi): the axis is undefined.
 
-        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 439 ulp in float64) over 11 regimes (docs/accuracy.md, kernels.accuracy); singular when phi = 0 (mod 2 pi): the axis is undefined, flagged where sin(phi/2) == 0 in floating point: phi == 0 exactly (and abs(phi) < 1e-323); an output overflows (non-finite) where the result exceeds the type, about abs(phi) < 1e-300 x norm(input) in float64.
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 349 ulp in float64) over 11 regimes (docs/accuracy.md, kernels.accuracy); singular when phi = 0 (mod 2 pi): the axis is undefined, flagged where sin(phi/2) == 0 in floating point: phi == 0 exactly (and abs(phi) < 1e-323); an output overflows (non-finite) where the result exceeds the type, about abs(phi) < 1e-300 x norm(input) in float64.
 
         Generated; 199 operations; math hash a50ef6111f8ca170.
     """
@@ -570,7 +570,7 @@ def N_tilde_dot(
     Notes:
         Singular set: phi = 0 (mod 2 pi): the axis, and so its rate, is undefined.
 
-        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 275 ulp in float64) over 11 regimes (docs/accuracy.md, kernels.accuracy); singular when phi = 0 (mod 2 pi): the axis, and so its rate, is undefined, flagged where sin(phi/2) == 0 in floating point: phi == 0 exactly (and abs(phi) < 1e-323); an output overflows (non-finite) where the result exceeds the type, about abs(phi) < 1e-300 x norm(input) in float64.
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 156 ulp in float64) over 11 regimes (docs/accuracy.md, kernels.accuracy); singular when phi = 0 (mod 2 pi): the axis, and so its rate, is undefined, flagged where sin(phi/2) == 0 in floating point: phi == 0 exactly (and abs(phi) < 1e-323); an output overflows (non-finite) where the result exceeds the type, about abs(phi) < 1e-300 x norm(input) in float64.
 
         Generated; 79 operations; math hash b1c3eb794fbb8245.
     """
@@ -724,7 +724,7 @@ def exponential_coordinates_left_jacobian(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1.05 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 97 ulp in float64) over 3 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1.05 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 82 ulp in float64) over 3 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 226 operations; math hash a4133e465ca458b7.
     """
@@ -1208,7 +1208,7 @@ def point_acceleration(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 62 ulp in float64) over 5 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 42 ulp in float64) over 5 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 36 operations; math hash bba0e838d11c478a.
     """
@@ -1284,7 +1284,7 @@ def rotation_from_natural_invariants(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1.15 u (kappa + 1) in float64, <= 1.06 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 119 ulp in float64) over 8 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1.15 u (kappa + 1) in float64, <= 1.06 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 95 ulp in float64) over 8 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 37 operations; math hash 3a598761ac6bf1a3.
     """
@@ -1321,7 +1321,7 @@ def rotation_from_rotation_vector(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1.61 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 3.44e+07 ulp in float64) over 4 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1.6 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 3.44e+07 ulp in float64) over 4 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 31 operations; math hash 26ba18056a63eeb8.
     """
@@ -1612,7 +1612,7 @@ def screw_of_displacement(
 
         For an exactly symmetric Q (phi = pi) the sign of e follows natural_invariants_from_rotation's rule (largest-magnitude component positive).
 
-        Accuracy: error <= 1.59 u (kappa + 1) in float64, <= 1.14 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 1.59e+16 ulp in float64) over 9 regimes (docs/accuracy.md, kernels.accuracy); singular when phi = 0 (pure translation: no axis, infinite pitch), flagged where ||Q - Q^T||^2 == 0 with tr Q >= 0 (the main build, after the rewrite of 1 - cos phi from the skew part of Q): Q exactly symmetric in floating point, phi below the rounding of Q (about 1e-16 in float64, 6e-8 in float32); before the rewrite 3 - tr Q == 0 flagged up to phi ~ 1.5e-8.
+        Accuracy: error <= 1.3 u (kappa + 1) in float64, <= 1.14 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 1.59e+16 ulp in float64) over 9 regimes (docs/accuracy.md, kernels.accuracy); singular when phi = 0 (pure translation: no axis, infinite pitch), flagged where ||Q - Q^T||^2 == 0 with tr Q >= 0 (the main build, after the rewrite of 1 - cos phi from the skew part of Q): Q exactly symmetric in floating point, phi below the rounding of Q (about 1e-16 in float64, 6e-8 in float32); before the rewrite 3 - tr Q == 0 flagged up to phi ~ 1.5e-8.
 
         Generated; 571 operations; math hash 24c2ead304ca194c.
     """
@@ -1649,7 +1649,7 @@ def transform_from_exponential_coordinates(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 266 ulp in float64) over 3 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 53 ulp in float64) over 3 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 77 operations; math hash 6422323903f35e70.
     """
@@ -1816,7 +1816,7 @@ def wrench_transfer(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 47 ulp in float64) over 5 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 32 ulp in float64) over 5 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 15 operations; math hash 719fe1e42bb6247d.
     """
