@@ -58,16 +58,22 @@ def jvp_program(program: Program, inputs: list[sp.Symbol]) -> Program:
             body.append((tan[x], dx))
     outputs = [d(sp.sympify(o)) for o in program.outputs]
     body, outputs = _shared(body, outputs, "_d", "_e")
-    need = set().union(*(sp.sympify(v).free_symbols for v in outputs))
+    kept = _live(body, outputs)
+    ops = sum(int(sp.count_ops(v)) for _, v in kept) + sum(int(sp.count_ops(v))
+                                                           for v in outputs)
+    return Program(temps=kept, outputs=outputs, dens=[], ops=ops)
+
+
+def _live(body: list, roots: list) -> list:
+    """The assignments of ``body`` that ``roots`` read, directly or through others (dead
+    code dropped), in their order."""
+    need = set().union(*(sp.sympify(v).free_symbols for v in roots))
     kept = []
     for x, e in reversed(body):
         if x in need:
             kept.append((x, e))
             need |= e.free_symbols
-    kept.reverse()
-    ops = sum(int(sp.count_ops(v)) for _, v in kept) + sum(int(sp.count_ops(v))
-                                                           for v in outputs)
-    return Program(temps=kept, outputs=outputs, dens=[], ops=ops)
+    return kept[::-1]
 
 
 def _shared(body: list, outputs: list, mine: str, prefix: str) -> tuple[list, list]:
@@ -179,14 +185,7 @@ def jacobian_program(program: Program, args: list[list[sp.Symbol]],
     nv = len(program.outputs)
     body, outs = _shared(body, outputs[nv:], "dx", "dc")
     outputs = outputs[:nv] + outs
-    need = set().union(*(sp.sympify(v).free_symbols for v in outputs),
-                       *(sp.sympify(v).free_symbols for v in program.dens))
-    kept = []
-    for x, e in reversed(body):
-        if x in need:
-            kept.append((x, e))
-            need |= e.free_symbols
-    kept.reverse()
+    kept = _live(body, [*outputs, *program.dens])
     dens = list(program.dens)
     dens += [d for d in denominators([e for x, e in kept if str(x).startswith("d")] + outs)
              if d not in dens]
