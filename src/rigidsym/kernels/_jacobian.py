@@ -52,8 +52,9 @@ def jacobian(name: str) -> Callable:
         name: a public kernel of :mod:`rigidsym.kernels` whose outputs are one smooth
             formula (every kernel without per-sample branches), a branched Lie map whose
             branches are differentiated each with its value (``rotation_vector_from_rotation``,
-            ``euler_rodrigues_from_rotation``: the derivative of the branch the sample takes,
-            the declared map's along SO(3); docs/lie-groups.md), or ``"euler_rate_matrix"``.
+            ``euler_rodrigues_from_rotation``, ``exponential_coordinates_from_transform``:
+            the derivative of the branch the sample takes, the declared map's along SO(3) or
+            SE(3); docs/lie-groups.md), or ``"euler_rate_matrix"``.
 
     Returns:
         A module-level (picklable) function with the kernel's arguments (positional or
