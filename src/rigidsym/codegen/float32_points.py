@@ -7,6 +7,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from rigidsym._draw import rotations, units
+
 __all__ = ["N_RANDOM", "REGIME_SEEDS", "RANGE32", "sample_inputs", "regime_inputs",
            "plan_inputs"]
 
@@ -28,17 +30,7 @@ _F32, _F64 = np.float32, np.float64
 
 
 def _unit(rng, n: int, k: int = 3) -> np.ndarray:
-    x = rng.standard_normal((n, k))
-    return x / np.linalg.norm(x, axis=1, keepdims=True)
-
-
-def _rotations(e: np.ndarray, phi: np.ndarray) -> np.ndarray:
-    c, s = np.cos(phi)[:, None, None], np.sin(phi)[:, None, None]
-    x = np.zeros((len(e), 3, 3))
-    x[:, 0, 1], x[:, 0, 2], x[:, 1, 2] = -e[:, 2], e[:, 1], -e[:, 0]
-    x -= np.transpose(x, (0, 2, 1))
-    ee = np.einsum("ni,nj->nij", e, e)
-    return ee + c * (np.eye(3) - ee) + s * x
+    return units(rng, (n, k))
 
 
 def sample_inputs(args, n: int = N_RANDOM, seed: int = 20, exact: bool = False):
@@ -56,11 +48,11 @@ def sample_inputs(args, n: int = N_RANDOM, seed: int = 20, exact: bool = False):
         elif a.kind == "angle":
             v = np.concatenate([rng.uniform(-np.pi, np.pi, n), _ADV_PHI])
         elif a.kind == "rotation":
-            v = _rotations(_unit(rng, m), np.concatenate([rng.uniform(0, np.pi, n),
+            v = rotations(_unit(rng, m), np.concatenate([rng.uniform(0, np.pi, n),
                                                           _ADV_PHI]))
         elif a.kind == "transform":
             v = np.zeros((m, 4, 4))
-            v[:, :3, :3] = _rotations(_unit(rng, m), np.concatenate([
+            v[:, :3, :3] = rotations(_unit(rng, m), np.concatenate([
                 rng.uniform(0, np.pi, n), _ADV_PHI]))
             v[:, :3, 3], v[:, 3, 3] = rng.standard_normal((m, 3)), 1.0
         elif a.name == "m":
