@@ -189,8 +189,8 @@ def test_greek_subscripts_in_their_letters():
     """Craig's ``c_\\theta`` printed as c_θ, not c_theta (the check of a reader's Rodrigues
     formula wrote the name in ASCII in the Unicode output); Latin and digit subscripts as
     before; ``--ascii`` stays ASCII."""
-    from rigidsym.printing.names import book_text
     from rigidsym.printing.ascii import to_ascii
+    from rigidsym.printing.names import book_text
 
     assert book_text("c_theta") == "c_θ" and book_text("s_phi") == "s_φ"
     assert book_text("k_x") == "k_x" and book_text("x_1") == "x₁"
