@@ -27,8 +27,8 @@ and rounding included, over the whole interval ``[0, t*]``.
 of its best (or ``<= 2u``), or, where no series of order ``<= 18`` is within ``2u`` that
 far, the largest smaller one where one is; ``n`` the smallest order whose Taylor bound is
 ``<= 2u`` on ``[0, t*]`` in float64 (where the closed form there is past 32 u, ``t*`` moves
-up while a series within 2.5 u reaches it: :func:`_wider`); the float32 bound of the same series is recorded
-(``<= 2u`` but where a float32 ``c_0`` rounds by nearly ``u`` itself). The closed form's
+up while a series within 2.5 u reaches it: :func:`_wider`); the float32 bound of the same
+series is recorded (``<= 2u`` but where a float32 ``c_0`` rounds by nearly ``u`` itself). The closed form's
 bound just above ``t*`` is recorded: its rounding (one ulp per ``sin``/``cos``, the
 cancellation in ``s - sin s``) is
 what it is; the series branch keeps the singular neighbourhood within ``2u``.
