@@ -27,7 +27,7 @@ import torch
 
 from rigidsym.kernels._arrays_eval import columns, shape_outputs, singular_mask
 
-__all__ = ["programs", "forward", "vjp", "GRAIN"]
+__all__ = ["programs", "forward", "vjp", "views", "GRAIN"]
 
 #: the largest batch this route takes: PyTorch's grain size (``at::internal::GRAIN_SIZE``),
 #: below which its elementwise operations run on one thread anyway; a larger batch is
@@ -136,3 +136,16 @@ def _tensors(res: list) -> list:
     return [torch.from_numpy(r if r.flags.owndata or (isinstance(r.base, np.ndarray) and
                                                       r.base.flags.owndata) else np.array(r))
             for r in res]
+
+
+def views(tensors: list):
+    """NumPy views of eager CPU tensors (the screen of :mod:`._arrays_rescue`), or None
+    where one is not (a GPU, a tensor subclass, a negative view, a traced tensor)."""
+    out = []
+    for x in tensors:
+        d = x.detach()
+        if type(d) is not torch.Tensor or d.device.type != "cpu" or d.is_neg() or \
+                torch.compiler.is_compiling():
+            return None
+        out.append(d.numpy())
+    return out

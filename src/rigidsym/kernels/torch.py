@@ -201,7 +201,8 @@ def _make(space: _arrays.Space, name: str):
         if fast is None or torch._C._are_functorch_transforms_active():
             return eager.apply(*xs)
         if not _recorded(xs):  # nothing to differentiate: the program alone
-            return space.values(name, xs)
+            host = _torch_host.forward(space.progs, name, xs)
+            return space.values(name, xs) if host is None else (*host[0], host[1])
         return fast(*xs)
 
     return apply
@@ -325,7 +326,7 @@ _LIBRARY = _arrays.Library(
     float32=torch.float32, finfo=torch.finfo, float_dtype=_float_dtype,
     cast=lambda x, dtype: x.to(dtype), rescued=_rescued, clear=_clear,
     constant=getattr(torch.compiler, "assume_constant_result", lambda fn: fn),
-    finite_inside=torch.compiler.is_compiling)
+    finite_inside=torch.compiler.is_compiling, views=_torch_host.views)
 
 # load, the Euler-angle kernels, the lazy kernels: the same for both back-ends (_arrays_api)
 load, euler_rate_matrix, euler_angle_rates, __getattr__, __dir__, _space = \
