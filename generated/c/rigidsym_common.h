@@ -43,7 +43,7 @@ typedef struct {
 
 /* Vectorised sin/cos of the SIMD trig loops (c_kernel.c.j2): RIGIDSYM_VSIN/RIGIDSYM_VCOS.
  * Default: rigidsym_sin/rigidsym_cos below, branch-free C that the compiler vectorises, within
- * 1 ulp (measured at most 0.68 ulp with FMA, 0.78 without; libm's scalar sin/cos 0.52,
+ * 1 ulp (measured at most 0.60 ulp with FMA, 0.78 without; libm's scalar sin/cos 0.52,
  * libmvec's 3.7:
  * benchmarks/RESULTS.md) for |x| <= RIGIDSYM_TRIG_MAX; a lane past it or not finite is flagged
  * by RIGIDSYM_TRIG_FAR and recomputed by libm's scalar sin/cos after the loop, so that no
@@ -142,16 +142,28 @@ static inline void rigidsym_sincos(double x, double *s_out, double *c_out)
     /* __kernel_sin(y0, y1, 1) and __kernel_cos(y0, y1) */
     const double z = y0 * y0, w = z * z, v = z * y0;
     const double rs = S2 + z * (S3 + z * S4) + z * w * (S5 + z * S6);
-    const double ks = y0 - ((z * (0.5 * y1 - v * rs) - y1) - v * S1);
-    const double rc = z * (C1 + z * (C2 + z * C3)) + w * w * (C4 + z * (C5 + z * C6));
     const double hz = 0.5 * z;
     const double wc = 1.0 - hz;
 #if defined(__FMA__)
-    /* z's rounding error (exact by fma, an instruction here): it weighed 0.25 ulp in the
-     * cosine near pi/4 (largest error 0.78 -> 0.68 ulp, benchmarks/trig_pair.py) */
+    /* With fma (an instruction here), rounding errors made exact where they weighed in the
+     * last bit: z's error zl (0.25 ulp in the cosine near pi/4: 0.78 -> 0.68 ulp), and the
+     * sine's leading term S1 y0^3 as a double-double, y0^3 with its errors (vl) and S1 v
+     * with its own (pl), added to y0 by Fast2Sum (|ph| < |y0|): the sine 0.73 -> 0.60 ulp,
+     * largest error of the pair 0.60 (libm's 0.52; benchmarks/trig_pair.py). It weighed at
+     * gimbal lock, where the Euler-angle rates amplify it (docs/accuracy.md: 5 C rows
+     * past issue 37's rule before). The cosine's C1 z^2 as a double-double too (0.60 ->
+     * 0.55) was measured and left: 9 % more time on a kernel of two pairs, no row gained. */
     const double zl = fma(y0, y0, -z);
+    const double vl = fma(z, y0, -v) + zl * y0;
+    const double ph = v * S1;
+    const double pl = fma(v, S1, -ph) + vl * S1;
+    const double sh = y0 + ph;
+    const double ks = sh + ((ph - (sh - y0)) + (pl - (z * (0.5 * y1 - v * rs) - y1)));
+    const double rc = z * (C1 + z * (C2 + z * C3)) + w * w * (C4 + z * (C5 + z * C6));
     const double kc = wc + (((1.0 - wc) - hz) + (z * rc - (y0 * y1 + 0.5 * zl)));
 #else
+    const double ks = y0 - ((z * (0.5 * y1 - v * rs) - y1) - v * S1);
+    const double rc = z * (C1 + z * (C2 + z * C3)) + w * w * (C4 + z * (C5 + z * C6));
     const double kc = wc + (((1.0 - wc) - hz) + (z * rc - y0 * y1));
 #endif
     /* quadrant n mod 4: sin = ks, kc, -ks, -kc and cos = kc, -ks, -kc, ks */
