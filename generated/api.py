@@ -274,7 +274,7 @@ def L_matrix(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 762 ulp in float64) over 8 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 643 ulp in float64) over 8 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 54 operations; math hash ad587ca95a235ac2.
     """
@@ -315,7 +315,7 @@ def L_matrix_dot(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 599 ulp in float64) over 11 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 598 ulp in float64) over 11 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 103 operations; math hash bc3db842eb2cf774.
     """
@@ -1284,7 +1284,7 @@ def rotation_from_natural_invariants(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1.15 u (kappa + 1) in float64, <= 1.06 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 95 ulp in float64) over 8 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1.15 u (kappa + 1) in float64, <= 1.06 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 215 ulp in float64) over 8 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 42 operations; math hash 3a598761ac6bf1a3.
     """
