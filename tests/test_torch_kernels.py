@@ -351,3 +351,40 @@ def test_backward_reuses_the_forward_temps():
     p0, pitch, kappa = rk.instant_screw_axis(omega, a, a_dot, check=False, on_singular="nan")
     pitch[[0, 1, 3]].sum().backward()
     assert (omega.grad[2] == 0).all() and omega.grad.isfinite().all()
+
+
+@pytest.mark.parametrize("dtype", [torch.float64, torch.float32])
+def test_the_cpu_route_is_the_torch_program_bit_for_bit(dtype):
+    """Issue 38 item 4: eager value + gradient on CPU tensors runs the generated forward
+    and VJP on NumPy views (``kernels._torch_host``, a fixed cost per operation ~2.5x
+    lower at N = 1e3). Its values, singular masks, saved temps and input cotangents are
+    those of the PyTorch programs bit for bit, on every kernel that has the programs,
+    a masked sample in the batch included (its NaN where PyTorch has one)."""
+    from rigidsym.kernels import _torch_host
+
+    space = rk._space()
+    rng = np.random.default_rng(11)
+    names = [n for n in ALL if space.progs.vjp(n, "saved") is not None]
+    assert len(names) > 30
+
+    def same(a, b):
+        torch.testing.assert_close(a, b, rtol=0, atol=0, equal_nan=True)
+
+    for name in names:
+        meta = space.progs.meta[name]
+        xs = [torch.tensor(x, dtype=dtype) for x in sample(name, 7)]
+        xs = [x.reshape(7, *a["shape"]) for x, a in zip(xs, meta["args"], strict=True)]
+        xs[0][3] = 0.0  # singular for many: NaN and inf where the programs divide
+        outs, sing, temps, regular = _torch_host.forward(space.progs, name, xs)
+        routs, rsing, rtemps = space.values_saved(name, xs)
+        same(sing, rsing)
+        assert regular == (not bool(rsing.any()))
+        for a, b in zip([*outs, *temps], [*routs, *rtemps], strict=True):
+            same(a if isinstance(a, torch.Tensor) else torch.from_numpy(a), b)
+        grads = [torch.tensor(rng.standard_normal(tuple(o.shape)), dtype=dtype)
+                 for o in outs]
+        got = _torch_host.vjp(space.progs, name, xs, temps, grads)
+        want = space.vjp_saved(name, xs, rtemps, grads)
+        for a, b in zip(got, want, strict=True):
+            assert a.dtype == dtype and a.shape == b.shape, name
+            same(a, b)

@@ -235,7 +235,7 @@ RULES = (
 SMALL = [10.0**-k for k in (1, 3, 5, 7, 9, 11, 13, 15, 20, 100)]
 
 
-def _points(kernel, seed: int = 30, n_random: int = 6):
+def _points(kernel, seed: int = 30, n_random: int = 6, small=SMALL):
     """Exact points (mpmath, 40 digits) per argument over the regimes of
     :mod:`rigidsym.codegen.regimes` in float64 (the harness's, on fewer steps). The
     unconstrained arguments are taken as float64 holds them (the reference then judges the
@@ -244,7 +244,7 @@ def _points(kernel, seed: int = 30, n_random: int = 6):
     Not the ends of the floating range: an intermediate that overflows there is the
     runtime's rescue (``rigidsym.kernels._rescue``, by scaling), not a form's to avoid."""
     out = []
-    for pts in regimes(kernel, np.float64, n_random=n_random, seed=seed, small=SMALL,
+    for pts in regimes(kernel, np.float64, n_random=n_random, seed=seed, small=small,
                        extremes=False).values():
         for p in pts:
             out.append([[mpmath.mpf(float(x)) if arg.kind == "any" else
@@ -258,9 +258,10 @@ class _Meter:
     per point and output, normwise relative (absolute where the output is exactly 0), in
     float64, as :mod:`rigidsym.codegen.rule` reads it."""
 
-    def __init__(self, kernel, flat, syms_flat, conds, cond, n_random: int = 6):
+    def __init__(self, kernel, flat, syms_flat, conds, cond, n_random: int = 6,
+                 seeds=(30,), small=SMALL):
         with mpmath.workdps(40):
-            pts = _points(kernel, n_random=n_random)
+            pts = [p for s in seeds for p in _points(kernel, s, n_random, small)]
         self.syms = syms_flat
         offs = np.cumsum([0] + [o.size for o in kernel.outputs])
         self.groups = [slice(a, b) for a, b in zip(offs[:-1], offs[1:], strict=True)]

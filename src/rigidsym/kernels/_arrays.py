@@ -198,6 +198,9 @@ class Library:
     #: ``finite_inside()``: the function of a traced call (``make``) takes an inf input as
     #: NaN itself (``Space.values(finite=True)``); else ``Space.call`` maps the inputs
     finite_inside: Callable = lambda: False
+    #: ``views(arrays)``: NumPy views of eager host arrays (PyTorch's CPU tensors: issue 38,
+    #: cheaper operations at a small batch), or None
+    views: Callable = lambda arrays: None
     #: ``rescued(outputs, rows, inputs)``: the outputs, whose ``rows`` (a batch mask) hold
     #: values of the long-double rescue, with no derivative there (NaN for a nonzero
     #: cotangent, as autograd cannot follow the host); None: nothing differentiates eagerly

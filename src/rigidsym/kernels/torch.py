@@ -50,7 +50,7 @@ except ImportError as _exc:  # pragma: no cover - exercised where PyTorch is abs
                       "'rigidsym[torch]'") from _exc
 import numpy as np
 
-from rigidsym.kernels import _arrays, _arrays_api
+from rigidsym.kernels import _arrays, _arrays_api, _torch_host
 from rigidsym.kernels._errors import NonFiniteResultError, SingularConfigurationError
 
 __all__ = ["load", "euler_rate_matrix", "euler_angle_rates", "SingularConfigurationError",
@@ -201,7 +201,8 @@ def _make(space: _arrays.Space, name: str):
         if fast is None or torch._C._are_functorch_transforms_active():
             return eager.apply(*xs)
         if not _recorded(xs):  # nothing to differentiate: the program alone
-            return space.values(name, xs)
+            host = _torch_host.forward(space.progs, name, xs)
+            return space.values(name, xs) if host is None else (*host[0], host[1])
         return fast(*xs)
 
     return apply
@@ -218,16 +219,28 @@ def _saving(space: _arrays.Space, name: str):
     nargs = len(space.progs.meta[name]["args"])
 
     def forward(ctx, *xs):
-        outs, sing, temps = space.values_saved(name, xs)
-        ctx.save_for_backward(*xs, sing, *temps)
+        host = _torch_host.forward(space.progs, name, xs)
+        if host is not None:  # CPU tensors: the same programs on NumPy views, bit for bit
+            outs, sing, ctx.host, ctx.regular = host
+            ctx.save_for_backward(*xs, sing)
+        else:
+            outs, sing, temps = space.values_saved(name, xs)
+            ctx.save_for_backward(*xs, sing, *temps)
+            ctx.host = None
         ctx.mark_non_differentiable(sing)
         return (*outs, sing)
 
     def backward(ctx, *grads):
         saved = ctx.saved_tensors
         xs, sing, temps = saved[:nargs], saved[nargs], saved[nargs + 1:]
-        if torch.is_grad_enabled() or not space.regular(name, sing):
+        if torch.is_grad_enabled() or not (
+                ctx.regular if ctx.host is not None else space.regular(name, sing)):
             return tuple(space.vjp(name, xs, list(grads[:-1]), sing))
+        if ctx.host is not None:
+            got = _torch_host.vjp(space.progs, name, xs, ctx.host, grads[:-1])
+            if got is not None:
+                return tuple(got)
+            temps = [torch.from_numpy(t) for t in ctx.host]
         return tuple(space.vjp_saved(name, xs, temps, list(grads[:-1])))
 
     return type(f"{name}_saving_function", (torch.autograd.Function,),
@@ -313,7 +326,7 @@ _LIBRARY = _arrays.Library(
     float32=torch.float32, finfo=torch.finfo, float_dtype=_float_dtype,
     cast=lambda x, dtype: x.to(dtype), rescued=_rescued, clear=_clear,
     constant=getattr(torch.compiler, "assume_constant_result", lambda fn: fn),
-    finite_inside=torch.compiler.is_compiling)
+    finite_inside=torch.compiler.is_compiling, views=_torch_host.views)
 
 # load, the Euler-angle kernels, the lazy kernels: the same for both back-ends (_arrays_api)
 load, euler_rate_matrix, euler_angle_rates, __getattr__, __dir__, _space = \
