@@ -60,7 +60,9 @@ def _losses(rows) -> str:
 SWEEP_RULE = 2.0
 OPEN = {("L_tilde_dot_with_jacobians", "numpy", "float64"): 1.6,
         ("N_tilde_dot_with_jacobians", "numpy", "float64"): 1.2,
-        ("wrench_axis_with_jacobians", "numpy", "float64"): 1.3,
+        # the Jacobian at ||f|| -> 0 by pow now (NumPy 0.84; 1.67 before); C 4.7 u where
+        # the textbook is 1.95 u at one point: the rounding of the same sum, another order
+        ("wrench_axis_with_jacobians", "c", "float64"): 1.2,
         ("instant_screw_axis_with_jacobians", "numpy", "float64"): 1.4,
         ("instant_screw_axis_with_jacobians", "c", "float64"): 1.4,
         # 5.9 u where pytransform3d is 3.9 u (Q: phi -> 0; 3.4e7 u before issue 37)

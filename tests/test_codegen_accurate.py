@@ -55,3 +55,31 @@ def test_an_unequal_rewrite_is_refused_by_the_zero_test():
         "exact-cancel", "random-exact")
     with pytest.raises(AssertionError, match="not equal to the declaration"):
         accurate._decide([(3 - sum(d), skew / (2 * (1 + sum(d))))], sub)  # off by 2
+
+
+def test_powers_by_pow_not_under_a_quotient():
+    """Issue 37: ``1/(x sqrt x)`` rounds three times where ``pow`` rounds once, and the
+    meter evaluated every form with sympy's printer (``pow``), so it saw no loss in the
+    kernels' printing (wrench_axis' Jacobian 6.7 u where the textbook is 2 u). The rule
+    writes the exponent as its float (printed ``pow``); a norm under a function keeps its
+    rational powers, which the removable quotients read."""
+    from rigidsym.codegen.printers import KernelCPrinter, KernelNumPyPrinter
+
+    f = sp.symbols("f0:3", real=True)
+    T = sum(x**2 for x in f)
+    out, parts = accurate._exact_powers([f[0] * T**sp.Rational(-3, 2), f[1] / T**2,
+                                         f[2] / T], {"angles": []})
+    assert out[0] == f[0] * sp.Pow(T, sp.Float(-1.5)) and out[1] == f[1] * sp.Pow(T, -2.0)
+    assert out[2] == f[2] / T
+    # sin(|f|)/|f|^3 of the same norm: a removable quotient, left alone
+    assert accurate._exact_powers([f[0] * T**sp.Rational(-3, 2),
+                                   sp.sin(sp.sqrt(T)) / T**sp.Rational(3, 2)],
+                                  {"angles": []}) is None
+    assert "pow(" in KernelCPrinter().doprint(out[0])
+    assert "**(-1.5)" in KernelNumPyPrinter().doprint(out[0])
+    # the meter evaluates the current form as printed: 1/(x sqrt x) is not pow's result
+    assert "sqrt" in KernelNumPyPrinter().doprint(f[0] * T**sp.Rational(-3, 2))
+    # the zero test reads the float exponent as the rational it is
+    assert accurate._decide(parts, {}) == "exact-cancel"
+    # an angle kernel: the half-angle rewrite comes after the measurement
+    assert accurate._exact_powers(out, {"angles": [sp.Symbol("phi")]}) is None

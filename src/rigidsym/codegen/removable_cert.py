@@ -28,8 +28,8 @@ of its best (or ``<= 2u``), or, where no series of order ``<= 18`` is within ``2
 far, the largest smaller one where one is; ``n`` the smallest order whose Taylor bound is
 ``<= 2u`` on ``[0, t*]`` in float64 (where the closed form there is past 32 u, ``t*`` moves
 up while a series within 2.5 u reaches it: :func:`_wider`); the float32 bound of the same
-series is recorded (``<= 2u`` but where a float32 ``c_0`` rounds by nearly ``u`` itself). The closed form's
-bound just above ``t*`` is recorded: its rounding (one ulp per ``sin``/``cos``, the
+series is recorded (``<= 2u`` but where a float32 ``c_0`` rounds by nearly ``u`` itself). The
+closed form's bound just above ``t*`` is recorded: its rounding (one ulp per ``sin``/``cos``, the
 cancellation in ``s - sin s``) is
 what it is; the series branch keeps the singular neighbourhood within ``2u``.
 """
@@ -389,7 +389,7 @@ def _wider(ser: Series, cert: Certificate, bounds: dict) -> Certificate:
     """Where the closed form just above ``t*`` is past WIDE_CLOSED u (a derivative's
     quotient, ``(s cos s + 2 s - 3 sin s) / s^5``: 181 u at ``t* = 2``, 5979 u for a third
     derivative's), ``t*`` doubles (twice at most) while a series within WIDE_SERIES u
-    reaches it and the closed form's bound falls by a half at least: the worse of the two
+    reaches it and the closed form's bound falls by a third at least: the worse of the two
     branches is what a kernel sees (issue 37: the SE(3) left Jacobian's Jacobian 9 u at
     ``|w|^2`` just above 2, where the textbook is 3 u)."""
     for _ in range(2):
