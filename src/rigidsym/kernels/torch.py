@@ -28,6 +28,9 @@ differentiates again (``create_graph=True``). The others (the branch kernels, th
 Euler-angle rates) are differentiated by autograd through the generated expression, with the
 safe-``where`` idiom at their branches. A sample masked by ``on_singular="nan"`` has a zero
 gradient: its inputs are replaced by a regular point before a differentiated evaluation.
+Eager calls on CPU tensors (batch <= 32768, outside torch.func) run the same programs on
+NumPy views of the tensors, PyTorch's own functions routed, bit for bit the same results at
+~1/3 the fixed cost per operation (:mod:`rigidsym.kernels._torch_host`, issue 38).
 
 Example:
     >>> import torch
