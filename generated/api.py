@@ -274,9 +274,9 @@ def L_matrix(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 762 ulp in float64) over 8 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 643 ulp in float64) over 8 regimes (docs/accuracy.md, kernels.accuracy).
 
-        Generated; 48 operations; math hash ad587ca95a235ac2.
+        Generated; 54 operations; math hash ad587ca95a235ac2.
     """
     return _F.L_matrix(e, phi, out, check, on_singular, threads)
 
@@ -315,9 +315,9 @@ def L_matrix_dot(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 599 ulp in float64) over 11 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 598 ulp in float64) over 11 regimes (docs/accuracy.md, kernels.accuracy).
 
-        Generated; 98 operations; math hash bc3db842eb2cf774.
+        Generated; 103 operations; math hash bc3db842eb2cf774.
     """
     return _F.L_matrix_dot(e, phi, omega, out, check, on_singular, threads)
 
@@ -572,7 +572,7 @@ def N_tilde_dot(
 
         Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 156 ulp in float64) over 11 regimes (docs/accuracy.md, kernels.accuracy); singular when phi = 0 (mod 2 pi): the axis, and so its rate, is undefined, flagged where sin(phi/2) == 0 in floating point: phi == 0 exactly (and abs(phi) < 1e-323); an output overflows (non-finite) where the result exceeds the type, about abs(phi) < 1e-300 x norm(input) in float64.
 
-        Generated; 79 operations; math hash b1c3eb794fbb8245.
+        Generated; 84 operations; math hash b1c3eb794fbb8245.
     """
     return _F.N_tilde_dot(e, phi, omega, out, check, on_singular, threads)
 
@@ -1284,9 +1284,9 @@ def rotation_from_natural_invariants(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1.15 u (kappa + 1) in float64, <= 1.06 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 95 ulp in float64) over 8 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1.15 u (kappa + 1) in float64, <= 1.06 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 215 ulp in float64) over 8 regimes (docs/accuracy.md, kernels.accuracy).
 
-        Generated; 37 operations; math hash 3a598761ac6bf1a3.
+        Generated; 42 operations; math hash 3a598761ac6bf1a3.
     """
     return _F.rotation_from_natural_invariants(e, phi, out, check, on_singular, threads)
 
@@ -1562,7 +1562,7 @@ def screw_axis_point(
 
         Accuracy: error <= 1.05 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 286 ulp in float64) over 11 regimes (docs/accuracy.md, kernels.accuracy); singular when phi = 0 (pure translation), flagged where sin(phi/2) == 0 in floating point: phi == 0 exactly (and abs(phi) < 1e-323); an output overflows (non-finite) where the result exceeds the type, about abs(phi) < 1e-300 x norm(input) in float64.
 
-        Generated; 84 operations; math hash e89a638961851614.
+        Generated; 89 operations; math hash e89a638961851614.
     """
     return _F.screw_axis_point(e, phi, a, a_prime, out, check, on_singular, threads)
 

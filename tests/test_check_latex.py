@@ -256,3 +256,16 @@ def test_a_scalar_glyph_is_never_an_entry_of_a_free_matrix():
                               r"\mathbf{e}_1 = \begin{bmatrix}1 \\ 0 \\ 0\end{bmatrix}"])
     assert r.verdict == "does-not-hold"
     assert {"Q_11", "Q__11"} <= set(r.counterexample["point"])
+
+
+def test_a_readers_matrix_of_scalars_prints_as_one_matrix(capsys):
+    """Craig's rotation written entry by entry: read (and printed) as one 2 x 2 matrix, not
+    four 1 x 1 blocks (``[[c_θ], [-s_θ]; ...]`` before), with the Greek subscripts in their
+    letters."""
+    code, out, _ = _cli(capsys, "--latex", r"\mathbf{A} = \begin{bmatrix} c_\theta & -s_\theta"
+                        r" \\ s_\theta & c_\theta \end{bmatrix}", "--let",
+                        r"c_\theta = \cos\theta", "--let", r"s_\theta = \sin\theta",
+                        "--let", r"\theta: angle", "--let", r"\mathbf{A}: 2×2 matrix",
+                        "--no-repairs")
+    assert "Verdict: does-not-hold" in out   # A is free
+    assert "A = [c_θ, -s_θ; s_θ, c_θ]" in out and "[[" not in out and "block" not in out

@@ -42,6 +42,28 @@ def test_half_angle_rewrite_removes_cancellation():
             < 1e-15
 
 
+def test_cos_forms_near_pi():
+    """The bare cos phi of the half-angle rewrite: ``1 - 2 sin^2(phi/2)`` (the only form of
+    old main) is about 3 u off near pi, where libm's cos is u/2 off; the piecewise form of
+    :data:`~rigidsym.codegen.optimise.COS_FORMS` stays within 2 u on both sides of pi/2,
+    and every form is cos phi (the zero test, in ``codegen.cos_form``)."""
+    import mpmath
+    import numpy as np
+
+    from rigidsym.codegen.cos_form import _decided
+    from rigidsym.codegen.optimise import COS_FORMS
+
+    u = 2.0**-53
+    grid = np.concatenate([np.linspace(0.01, 3.14, 400), np.pi - np.logspace(-1, -8, 50)])
+    truth = np.array([float(mpmath.cos(mpmath.mpf(v))) for v in grid])
+    err = {}
+    for name in COS_FORMS:
+        f = sp.lambdify(phi, rewrite(sp.cos(phi), [phi], name), modules="numpy")
+        err[name] = np.abs(f(grid) - truth).max() / u
+        assert _decided(name)
+    assert err["1 - 2 s^2"] > 2.5 and err["1 - 2 s^2 or 2 c^2 - 1"] < 2, err
+
+
 def test_program_shares_subexpressions_and_lists_denominators():
     p = compile_program([sp.sin(x) / (x + y), sp.sin(x) * (x + y)], [])
     assert len(p.dens) == 1 and p.ops > 0

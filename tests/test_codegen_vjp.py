@@ -33,7 +33,10 @@ def _run(prog, args, values):
     """Evaluate a straight-line program with NumPy on one sample."""
     env = {a: sp.Float(float(v), 17) for a, v in zip(args, values, strict=True)}
     for s, e in prog.temps:
-        env[s] = sp.Float(float(sp.sympify(e).xreplace(env)), 17)
+        v = sp.sympify(e).xreplace(env)
+        # a temp can be a condition (a Piecewise's, shared by CSE: the cos phi form of
+        # codegen.cos_form near pi), which the printers write as a bool array
+        env[s] = v if v.is_Boolean else sp.Float(float(v), 17)
     return np.array([float(sp.sympify(o).xreplace(env)) for o in prog.outputs])
 
 

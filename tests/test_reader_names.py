@@ -183,3 +183,16 @@ def test_show_of_every_book_id_has_no_internal_name(code):
     for eq_id, text in _show_all(ids).items():
         found += [f"show {eq_id}: {x}" for x in offences(text, code)]
     assert not found, "\n".join(found[:30])
+
+
+def test_greek_subscripts_in_their_letters():
+    """Craig's ``c_\\theta`` printed as c_θ, not c_theta (the check of a reader's Rodrigues
+    formula wrote the name in ASCII in the Unicode output); Latin and digit subscripts as
+    before; ``--ascii`` stays ASCII."""
+    from rigidsym.printing.ascii import to_ascii
+    from rigidsym.printing.names import book_text
+
+    assert book_text("c_theta") == "c_θ" and book_text("s_phi") == "s_φ"
+    assert book_text("k_x") == "k_x" and book_text("x_1") == "x₁"
+    assert book_text("pdot_perp") == "p\u0307⊥"
+    assert to_ascii(book_text("c_theta")) == "c_theta"

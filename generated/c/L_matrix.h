@@ -6,16 +6,24 @@
  * template: c_kernel.h.j2
  * math hash: sha256:ad587ca95a235ac2
  * sympy 1.14.0, rigidsym 0.2.0
- * operations: 48
+ * operations: 54
+ * accuracy rewrite (main): cos phi as 1 - 2 s^2 or 2 c^2 - 1: the bare cos phi left by the
+ *     half-angle rewrite, as 1 - 2 s^2 or 2 c^2 - 1 (s, c: sin, cos of phi/2) rather than 1 -
+ *     2 s^2: the form of the measured least error among 1 - 2 s^2, 1 - 2 s^2 or 2 c^2 - 1, (c
+ *     - s) (c + s) (rigidsym.codegen.cos_form); worst ratio to the rule max(2 e_best, 4 u)
+ *     (e_best: the most accurate of the textbook formula and the forms tried, per point;
+ *     rigidsym.codegen.rule) at 336 points of the regimes (rigidsym.codegen.regimes, exact,
+ *     rounded to float64) 1.1 -> 0.55, never worse than the textbook formula by that rule;
+ *     equal to the declared formula by the zero test (exact-cancel)
  *
  * Rate matrix of the linear invariants [u; u0]: rate = L_matrix omega.
  * L_matrix(e, phi), 4x3
  *
  * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
- * measured at generation, rigidsym.codegen.float32; worst error 0.739 of what
+ * measured at generation, rigidsym.codegen.float32; worst error 0.679 of what
  * the rule of issue 37 allows, max(2 e_textbook, 4 u), per output, normwise, at its
  * points where the kernel computed in double is within it). In double:
- *   trig_0, x2, x3
+ *   trig_1, x4
  */
 #ifndef RIGIDSYM_L_MATRIX_H
 #define RIGIDSYM_L_MATRIX_H
@@ -40,32 +48,33 @@ static inline int rigidsym_L_matrix_sample(
         const double x1 = (0.5)*phi;
         const double x2 = sin(x1);
         const double x3 = (x2*x2);
-        const double x4 = 0.5 - x3;
-        const double x5 = (0.5)*x0 + x4*(1.0 - x0);
-        const double x6 = (e_1*e_1);
-        const double x7 = x4*(1.0 - x6) + (0.5)*x6;
-        const double x8 = e_0*x3;
-        const double x9 = e_1*x8;
-        const double x10 = x2*cos(x1);
-        const double x11 = e_2*x10;
-        const double x12 = e_2*x8;
-        const double x13 = e_1*x10;
-        const double x14 = (e_0*e_0);
-        const double x15 = (0.5)*x14 + x4*(1.0 - x14);
-        const double x16 = e_0*x10;
-        const double x17 = e_1*e_2*x3;
-        out_L_matrix[0] = x5 + x7;
-        out_L_matrix[1] = x11 - x9;
-        out_L_matrix[2] = -x12 - x13;
-        out_L_matrix[3] = -x11 - x9;
-        out_L_matrix[4] = x15 + x5;
-        out_L_matrix[5] = x16 - x17;
-        out_L_matrix[6] = -x12 + x13;
-        out_L_matrix[7] = -x16 - x17;
-        out_L_matrix[8] = x15 + x7;
-        out_L_matrix[9] = -2.0*x16;
-        out_L_matrix[10] = -2.0*x13;
-        out_L_matrix[11] = -2.0*x11;
+        const double x4 = cos(x1);
+        const double x5 = (0.5)*((x3 < 0.5) ? (1.0 - 2.0*x3) : (2.0*(x4*x4) - 1.0));
+        const double x6 = (0.5)*x0 + x5*(1.0 - x0);
+        const double x7 = (e_1*e_1);
+        const double x8 = x5*(1.0 - x7) + (0.5)*x7;
+        const double x9 = e_0*x3;
+        const double x10 = e_1*x9;
+        const double x11 = x2*x4;
+        const double x12 = e_2*x11;
+        const double x13 = e_2*x9;
+        const double x14 = e_1*x11;
+        const double x15 = (e_0*e_0);
+        const double x16 = (0.5)*x15 + x5*(1.0 - x15);
+        const double x17 = e_0*x11;
+        const double x18 = e_1*e_2*x3;
+        out_L_matrix[0] = x6 + x8;
+        out_L_matrix[1] = -x10 + x12;
+        out_L_matrix[2] = -x13 - x14;
+        out_L_matrix[3] = -x10 - x12;
+        out_L_matrix[4] = x16 + x6;
+        out_L_matrix[5] = x17 - x18;
+        out_L_matrix[6] = -x13 + x14;
+        out_L_matrix[7] = -x17 - x18;
+        out_L_matrix[8] = x16 + x8;
+        out_L_matrix[9] = -2.0*x17;
+        out_L_matrix[10] = -2.0*x14;
+        out_L_matrix[11] = -2.0*x12;
     }
     return singular;
 }
@@ -89,32 +98,33 @@ static inline int rigidsym_L_matrix_sample_trig(
         const double x0 = (e_2*e_2);
         const double x2 = trig_0;
         const double x3 = (x2*x2);
-        const double x4 = 0.5 - x3;
-        const double x5 = (0.5)*x0 + x4*(1.0 - x0);
-        const double x6 = (e_1*e_1);
-        const double x7 = x4*(1.0 - x6) + (0.5)*x6;
-        const double x8 = e_0*x3;
-        const double x9 = e_1*x8;
-        const double x10 = trig_1*x2;
-        const double x11 = e_2*x10;
-        const double x12 = e_2*x8;
-        const double x13 = e_1*x10;
-        const double x14 = (e_0*e_0);
-        const double x15 = (0.5)*x14 + x4*(1.0 - x14);
-        const double x16 = e_0*x10;
-        const double x17 = e_1*e_2*x3;
-        out_L_matrix[0] = x5 + x7;
-        out_L_matrix[1] = x11 - x9;
-        out_L_matrix[2] = -x12 - x13;
-        out_L_matrix[3] = -x11 - x9;
-        out_L_matrix[4] = x15 + x5;
-        out_L_matrix[5] = x16 - x17;
-        out_L_matrix[6] = -x12 + x13;
-        out_L_matrix[7] = -x16 - x17;
-        out_L_matrix[8] = x15 + x7;
-        out_L_matrix[9] = -2.0*x16;
-        out_L_matrix[10] = -2.0*x13;
-        out_L_matrix[11] = -2.0*x11;
+        const double x4 = trig_1;
+        const double x5 = (0.5)*((x3 < 0.5) ? (1.0 - 2.0*x3) : (2.0*(x4*x4) - 1.0));
+        const double x6 = (0.5)*x0 + x5*(1.0 - x0);
+        const double x7 = (e_1*e_1);
+        const double x8 = x5*(1.0 - x7) + (0.5)*x7;
+        const double x9 = e_0*x3;
+        const double x10 = e_1*x9;
+        const double x11 = x2*x4;
+        const double x12 = e_2*x11;
+        const double x13 = e_2*x9;
+        const double x14 = e_1*x11;
+        const double x15 = (e_0*e_0);
+        const double x16 = (0.5)*x15 + x5*(1.0 - x15);
+        const double x17 = e_0*x11;
+        const double x18 = e_1*e_2*x3;
+        out_L_matrix[0] = x6 + x8;
+        out_L_matrix[1] = -x10 + x12;
+        out_L_matrix[2] = -x13 - x14;
+        out_L_matrix[3] = -x10 - x12;
+        out_L_matrix[4] = x16 + x6;
+        out_L_matrix[5] = x17 - x18;
+        out_L_matrix[6] = -x13 + x14;
+        out_L_matrix[7] = -x17 - x18;
+        out_L_matrix[8] = x16 + x8;
+        out_L_matrix[9] = -2.0*x17;
+        out_L_matrix[10] = -2.0*x14;
+        out_L_matrix[11] = -2.0*x12;
     }
     return singular;
 }
@@ -126,8 +136,8 @@ RIGIDSYM_F32_BEGIN
 static inline int rigidsym_L_matrix_sample_trig_f32(
     const float *RIGIDSYM_RESTRICT in_e,
     const float *RIGIDSYM_RESTRICT in_phi,
-    const double trig_0,
-    const float trig_1,
+    const float trig_0,
+    const double trig_1,
     float *RIGIDSYM_RESTRICT out_L_matrix)
 {
     const float e_0 = in_e[0];
@@ -137,34 +147,35 @@ static inline int rigidsym_L_matrix_sample_trig_f32(
     int singular = 0;
     {
         const float x0 = (e_2*e_2);
-        const double x2 = trig_0;
-        const double x3 = (x2*x2);
-        const float x4 = 0.5f - x3;
-        const float x5 = (0.5f)*x0 + x4*(1.0f - x0);
-        const float x6 = (e_1*e_1);
-        const float x7 = x4*(1.0f - x6) + (0.5f)*x6;
-        const float x8 = e_0*x3;
-        const float x9 = e_1*x8;
-        const float x10 = trig_1*x2;
-        const float x11 = e_2*x10;
-        const float x12 = e_2*x8;
-        const float x13 = e_1*x10;
-        const float x14 = (e_0*e_0);
-        const float x15 = (0.5f)*x14 + x4*(1.0f - x14);
-        const float x16 = e_0*x10;
-        const float x17 = e_1*e_2*x3;
-        out_L_matrix[0] = x5 + x7;
-        out_L_matrix[1] = x11 - x9;
-        out_L_matrix[2] = -x12 - x13;
-        out_L_matrix[3] = -x11 - x9;
-        out_L_matrix[4] = x15 + x5;
-        out_L_matrix[5] = x16 - x17;
-        out_L_matrix[6] = -x12 + x13;
-        out_L_matrix[7] = -x16 - x17;
-        out_L_matrix[8] = x15 + x7;
-        out_L_matrix[9] = -2.0f*x16;
-        out_L_matrix[10] = -2.0f*x13;
-        out_L_matrix[11] = -2.0f*x11;
+        const float x2 = trig_0;
+        const float x3 = (x2*x2);
+        const double x4 = trig_1;
+        const float x5 = (0.5f)*((x3 < 0.5f) ? (1.0f - 2.0f*x3) : (2.0f*(x4*x4) - 1.0f));
+        const float x6 = (0.5f)*x0 + x5*(1.0f - x0);
+        const float x7 = (e_1*e_1);
+        const float x8 = x5*(1.0f - x7) + (0.5f)*x7;
+        const float x9 = e_0*x3;
+        const float x10 = e_1*x9;
+        const float x11 = x2*x4;
+        const float x12 = e_2*x11;
+        const float x13 = e_2*x9;
+        const float x14 = e_1*x11;
+        const float x15 = (e_0*e_0);
+        const float x16 = (0.5f)*x15 + x5*(1.0f - x15);
+        const float x17 = e_0*x11;
+        const float x18 = e_1*e_2*x3;
+        out_L_matrix[0] = x6 + x8;
+        out_L_matrix[1] = -x10 + x12;
+        out_L_matrix[2] = -x13 - x14;
+        out_L_matrix[3] = -x10 - x12;
+        out_L_matrix[4] = x16 + x6;
+        out_L_matrix[5] = x17 - x18;
+        out_L_matrix[6] = -x13 + x14;
+        out_L_matrix[7] = -x17 - x18;
+        out_L_matrix[8] = x16 + x8;
+        out_L_matrix[9] = -2.0f*x17;
+        out_L_matrix[10] = -2.0f*x14;
+        out_L_matrix[11] = -2.0f*x12;
     }
     return singular;
 }

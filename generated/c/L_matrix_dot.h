@@ -6,16 +6,24 @@
  * template: c_kernel.h.j2
  * math hash: sha256:bc3db842eb2cf774
  * sympy 1.14.0, rigidsym 0.2.0
- * operations: 98
+ * operations: 103
+ * accuracy rewrite (main): cos phi as 1 - 2 s^2 or 2 c^2 - 1: the bare cos phi left by the
+ *     half-angle rewrite, as 1 - 2 s^2 or 2 c^2 - 1 (s, c: sin, cos of phi/2) rather than 1 -
+ *     2 s^2: the form of the measured least error among 1 - 2 s^2, 1 - 2 s^2 or 2 c^2 - 1, (c
+ *     - s) (c + s) (rigidsym.codegen.cos_form); worst ratio to the rule max(2 e_best, 4 u)
+ *     (e_best: the most accurate of the textbook formula and the forms tried, per point;
+ *     rigidsym.codegen.rule) at 408 points of the regimes (rigidsym.codegen.regimes, exact,
+ *     rounded to float64) 0.95 -> 0.79, never worse than the textbook formula by that rule;
+ *     equal to the declared formula by the zero test (exact-cancel)
  *
  * Time derivative of L_matrix along omega.
  * d/dt L_matrix(e(t), phi(t)) with e_dot, phi_dot from omega (the corrected form where the printed one does not hold)
  *
  * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
- * measured at generation, rigidsym.codegen.float32; worst error 0.75 of what
+ * measured at generation, rigidsym.codegen.float32; worst error 0.731 of what
  * the rule of issue 37 allows, max(2 e_textbook, 4 u), per output, normwise, at its
  * points where the kernel computed in double is within it). In double:
- *   trig_0, trig_1, x1, x2, x5
+ *   trig_0, trig_1, x1, x6, x11, x15, x19
  */
 #ifndef RIGIDSYM_L_MATRIX_DOT_H
 #define RIGIDSYM_L_MATRIX_DOT_H
@@ -42,45 +50,47 @@ static inline int rigidsym_L_matrix_dot_sample(
     {
         const double x0 = (0.5)*phi;
         const double x1 = sin(x0);
-        const double x2 = 2.0*(x1*x1);
-        const double x3 = e_0*x2;
-        const double x4 = e_2*x3;
-        const double x5 = 2.0*x1*cos(x0);
-        const double x6 = e_1*x5;
-        const double x7 = x4 - x6;
-        const double x8 = (0.5)*omega_1;
-        const double x9 = e_1*x3;
-        const double x10 = e_2*x5;
-        const double x11 = x10 + x9;
-        const double x12 = e_0*x5;
-        const double x13 = omega_0*x12 + omega_1*x6 + omega_2*x10;
-        const double x14 = e_1*e_2*x2;
-        const double x15 = x12 + x14;
-        const double x16 = (e_1*e_1);
-        const double x17 = 1.0 - x2;
-        const double x18 = x16 + x17*(1.0 - x16);
-        const double x19 = (e_2*e_2);
-        const double x20 = x17*(1.0 - x19) + x19;
-        const double x21 = x12 - x14;
+        const double x2 = (x1*x1);
+        const double x3 = 2.0*x2;
+        const double x4 = e_0*x3;
+        const double x5 = e_2*x4;
+        const double x6 = cos(x0);
+        const double x7 = 2.0*x1*x6;
+        const double x8 = e_1*x7;
+        const double x9 = x5 - x8;
+        const double x10 = (0.5)*omega_1;
+        const double x11 = e_1*x4;
+        const double x12 = e_2*x7;
+        const double x13 = x11 + x12;
+        const double x14 = e_0*x7;
+        const double x15 = omega_0*x14 + omega_1*x8 + omega_2*x12;
+        const double x16 = e_1*e_2*x3;
+        const double x17 = x14 + x16;
+        const double x18 = (e_1*e_1);
+        const double x19 = ((x2 < 0.5) ? (1.0 - x3) : (2.0*(x6*x6) - 1.0));
+        const double x20 = x18 + x19*(1.0 - x18);
+        const double x21 = x14 - x16;
         const double x22 = -x21;
-        const double x23 = (0.5)*omega_0;
-        const double x24 = (e_0*e_0);
-        const double x25 = x17*(1.0 - x24) + x24;
-        const double x26 = (0.5)*omega_2;
-        const double x27 = -x10 + x9;
-        const double x28 = x4 + x6;
-        out_L_matrix_dot[0] = (0.5)*omega_2*x11 - x13 - x7*x8;
-        out_L_matrix_dot[1] = (0.5)*omega_2*x18 - x15*x8;
-        out_L_matrix_dot[2] = (0.5)*omega_2*x22 - x20*x8;
-        out_L_matrix_dot[3] = x23*x7 - x25*x26;
-        out_L_matrix_dot[4] = (0.5)*omega_0*x15 - x13 - x26*x27;
-        out_L_matrix_dot[5] = x20*x23 - x26*x28;
-        out_L_matrix_dot[6] = (0.5)*omega_1*x25 - x11*x23;
-        out_L_matrix_dot[7] = (0.5)*omega_1*x27 - x18*x23;
-        out_L_matrix_dot[8] = (0.5)*omega_1*x28 - x13 - x22*x23;
-        out_L_matrix_dot[9] = -x23*(x18 + x20) + x26*x28 + x27*x8;
-        out_L_matrix_dot[10] = x11*x23 - x21*x26 - x8*(x20 + x25);
-        out_L_matrix_dot[11] = x15*x8 + x23*x7 - x26*(x18 + x25);
+        const double x23 = (e_2*e_2);
+        const double x24 = x19*(1.0 - x23) + x23;
+        const double x25 = (0.5)*omega_0;
+        const double x26 = (e_0*e_0);
+        const double x27 = x19*(1.0 - x26) + x26;
+        const double x28 = (0.5)*omega_2;
+        const double x29 = x11 - x12;
+        const double x30 = x5 + x8;
+        out_L_matrix_dot[0] = (0.5)*omega_2*x13 - x10*x9 - x15;
+        out_L_matrix_dot[1] = (0.5)*omega_2*x20 - x10*x17;
+        out_L_matrix_dot[2] = (0.5)*omega_2*x22 - x10*x24;
+        out_L_matrix_dot[3] = x25*x9 - x27*x28;
+        out_L_matrix_dot[4] = (0.5)*omega_0*x17 - x15 - x28*x29;
+        out_L_matrix_dot[5] = x24*x25 - x28*x30;
+        out_L_matrix_dot[6] = (0.5)*omega_1*x27 - x13*x25;
+        out_L_matrix_dot[7] = (0.5)*omega_1*x29 - x20*x25;
+        out_L_matrix_dot[8] = (0.5)*omega_1*x30 - x15 - x22*x25;
+        out_L_matrix_dot[9] = x10*x29 - x25*(x20 + x24) + x28*x30;
+        out_L_matrix_dot[10] = -x10*(x24 + x27) + x13*x25 - x21*x28;
+        out_L_matrix_dot[11] = x10*x17 + x25*x9 - x28*(x20 + x27);
     }
     return singular;
 }
@@ -106,45 +116,47 @@ static inline int rigidsym_L_matrix_dot_sample_trig(
     int singular = 0;
     {
         const double x1 = trig_0;
-        const double x2 = 2.0*(x1*x1);
-        const double x3 = e_0*x2;
-        const double x4 = e_2*x3;
-        const double x5 = 2.0*trig_1*x1;
-        const double x6 = e_1*x5;
-        const double x7 = x4 - x6;
-        const double x8 = (0.5)*omega_1;
-        const double x9 = e_1*x3;
-        const double x10 = e_2*x5;
-        const double x11 = x10 + x9;
-        const double x12 = e_0*x5;
-        const double x13 = omega_0*x12 + omega_1*x6 + omega_2*x10;
-        const double x14 = e_1*e_2*x2;
-        const double x15 = x12 + x14;
-        const double x16 = (e_1*e_1);
-        const double x17 = 1.0 - x2;
-        const double x18 = x16 + x17*(1.0 - x16);
-        const double x19 = (e_2*e_2);
-        const double x20 = x17*(1.0 - x19) + x19;
-        const double x21 = x12 - x14;
+        const double x2 = (x1*x1);
+        const double x3 = 2.0*x2;
+        const double x4 = e_0*x3;
+        const double x5 = e_2*x4;
+        const double x6 = trig_1;
+        const double x7 = 2.0*x1*x6;
+        const double x8 = e_1*x7;
+        const double x9 = x5 - x8;
+        const double x10 = (0.5)*omega_1;
+        const double x11 = e_1*x4;
+        const double x12 = e_2*x7;
+        const double x13 = x11 + x12;
+        const double x14 = e_0*x7;
+        const double x15 = omega_0*x14 + omega_1*x8 + omega_2*x12;
+        const double x16 = e_1*e_2*x3;
+        const double x17 = x14 + x16;
+        const double x18 = (e_1*e_1);
+        const double x19 = ((x2 < 0.5) ? (1.0 - x3) : (2.0*(x6*x6) - 1.0));
+        const double x20 = x18 + x19*(1.0 - x18);
+        const double x21 = x14 - x16;
         const double x22 = -x21;
-        const double x23 = (0.5)*omega_0;
-        const double x24 = (e_0*e_0);
-        const double x25 = x17*(1.0 - x24) + x24;
-        const double x26 = (0.5)*omega_2;
-        const double x27 = -x10 + x9;
-        const double x28 = x4 + x6;
-        out_L_matrix_dot[0] = (0.5)*omega_2*x11 - x13 - x7*x8;
-        out_L_matrix_dot[1] = (0.5)*omega_2*x18 - x15*x8;
-        out_L_matrix_dot[2] = (0.5)*omega_2*x22 - x20*x8;
-        out_L_matrix_dot[3] = x23*x7 - x25*x26;
-        out_L_matrix_dot[4] = (0.5)*omega_0*x15 - x13 - x26*x27;
-        out_L_matrix_dot[5] = x20*x23 - x26*x28;
-        out_L_matrix_dot[6] = (0.5)*omega_1*x25 - x11*x23;
-        out_L_matrix_dot[7] = (0.5)*omega_1*x27 - x18*x23;
-        out_L_matrix_dot[8] = (0.5)*omega_1*x28 - x13 - x22*x23;
-        out_L_matrix_dot[9] = -x23*(x18 + x20) + x26*x28 + x27*x8;
-        out_L_matrix_dot[10] = x11*x23 - x21*x26 - x8*(x20 + x25);
-        out_L_matrix_dot[11] = x15*x8 + x23*x7 - x26*(x18 + x25);
+        const double x23 = (e_2*e_2);
+        const double x24 = x19*(1.0 - x23) + x23;
+        const double x25 = (0.5)*omega_0;
+        const double x26 = (e_0*e_0);
+        const double x27 = x19*(1.0 - x26) + x26;
+        const double x28 = (0.5)*omega_2;
+        const double x29 = x11 - x12;
+        const double x30 = x5 + x8;
+        out_L_matrix_dot[0] = (0.5)*omega_2*x13 - x10*x9 - x15;
+        out_L_matrix_dot[1] = (0.5)*omega_2*x20 - x10*x17;
+        out_L_matrix_dot[2] = (0.5)*omega_2*x22 - x10*x24;
+        out_L_matrix_dot[3] = x25*x9 - x27*x28;
+        out_L_matrix_dot[4] = (0.5)*omega_0*x17 - x15 - x28*x29;
+        out_L_matrix_dot[5] = x24*x25 - x28*x30;
+        out_L_matrix_dot[6] = (0.5)*omega_1*x27 - x13*x25;
+        out_L_matrix_dot[7] = (0.5)*omega_1*x29 - x20*x25;
+        out_L_matrix_dot[8] = (0.5)*omega_1*x30 - x15 - x22*x25;
+        out_L_matrix_dot[9] = x10*x29 - x25*(x20 + x24) + x28*x30;
+        out_L_matrix_dot[10] = -x10*(x24 + x27) + x13*x25 - x21*x28;
+        out_L_matrix_dot[11] = x10*x17 + x25*x9 - x28*(x20 + x27);
     }
     return singular;
 }
@@ -171,45 +183,47 @@ static inline int rigidsym_L_matrix_dot_sample_trig_f32(
     int singular = 0;
     {
         const double x1 = trig_0;
-        const double x2 = 2.0*(x1*x1);
-        const float x3 = e_0*x2;
-        const float x4 = e_2*x3;
-        const double x5 = 2.0*trig_1*x1;
-        const float x6 = e_1*x5;
-        const float x7 = x4 - x6;
-        const float x8 = (0.5f)*omega_1;
-        const float x9 = e_1*x3;
-        const float x10 = e_2*x5;
-        const float x11 = x10 + x9;
-        const float x12 = e_0*x5;
-        const float x13 = omega_0*x12 + omega_1*x6 + omega_2*x10;
-        const float x14 = e_1*e_2*x2;
-        const float x15 = x12 + x14;
-        const float x16 = (e_1*e_1);
-        const float x17 = 1.0f - x2;
-        const float x18 = x16 + x17*(1.0f - x16);
-        const float x19 = (e_2*e_2);
-        const float x20 = x17*(1.0f - x19) + x19;
-        const float x21 = x12 - x14;
+        const float x2 = (x1*x1);
+        const float x3 = 2.0f*x2;
+        const float x4 = e_0*x3;
+        const float x5 = e_2*x4;
+        const double x6 = trig_1;
+        const float x7 = 2.0f*x1*x6;
+        const float x8 = e_1*x7;
+        const float x9 = x5 - x8;
+        const float x10 = (0.5f)*omega_1;
+        const double x11 = ((double)e_1)*((double)x4);
+        const float x12 = e_2*x7;
+        const float x13 = x11 + x12;
+        const float x14 = e_0*x7;
+        const double x15 = ((double)omega_0)*((double)x14) + ((double)omega_1)*((double)x8) + ((double)omega_2)*((double)x12);
+        const float x16 = e_1*e_2*x3;
+        const float x17 = x14 + x16;
+        const float x18 = (e_1*e_1);
+        const double x19 = ((((double)x2) < 0.5) ? (1.0 - ((double)x3)) : (2.0*(x6*x6) - 1.0));
+        const float x20 = x18 + x19*(1.0f - x18);
+        const float x21 = x14 - x16;
         const float x22 = -x21;
-        const float x23 = (0.5f)*omega_0;
-        const float x24 = (e_0*e_0);
-        const float x25 = x17*(1.0f - x24) + x24;
-        const float x26 = (0.5f)*omega_2;
-        const float x27 = -x10 + x9;
-        const float x28 = x4 + x6;
-        out_L_matrix_dot[0] = (0.5f)*omega_2*x11 - x13 - x7*x8;
-        out_L_matrix_dot[1] = (0.5f)*omega_2*x18 - x15*x8;
-        out_L_matrix_dot[2] = (0.5f)*omega_2*x22 - x20*x8;
-        out_L_matrix_dot[3] = x23*x7 - x25*x26;
-        out_L_matrix_dot[4] = (0.5f)*omega_0*x15 - x13 - x26*x27;
-        out_L_matrix_dot[5] = x20*x23 - x26*x28;
-        out_L_matrix_dot[6] = (0.5f)*omega_1*x25 - x11*x23;
-        out_L_matrix_dot[7] = (0.5f)*omega_1*x27 - x18*x23;
-        out_L_matrix_dot[8] = (0.5f)*omega_1*x28 - x13 - x22*x23;
-        out_L_matrix_dot[9] = -x23*(x18 + x20) + x26*x28 + x27*x8;
-        out_L_matrix_dot[10] = x11*x23 - x21*x26 - x8*(x20 + x25);
-        out_L_matrix_dot[11] = x15*x8 + x23*x7 - x26*(x18 + x25);
+        const float x23 = (e_2*e_2);
+        const float x24 = x19*(1.0f - x23) + x23;
+        const float x25 = (0.5f)*omega_0;
+        const float x26 = (e_0*e_0);
+        const float x27 = x19*(1.0f - x26) + x26;
+        const float x28 = (0.5f)*omega_2;
+        const float x29 = x11 - x12;
+        const float x30 = x5 + x8;
+        out_L_matrix_dot[0] = (0.5f)*omega_2*x13 - x10*x9 - x15;
+        out_L_matrix_dot[1] = (0.5f)*omega_2*x20 - x10*x17;
+        out_L_matrix_dot[2] = (0.5f)*omega_2*x22 - x10*x24;
+        out_L_matrix_dot[3] = x25*x9 - x27*x28;
+        out_L_matrix_dot[4] = (0.5f)*omega_0*x17 - x15 - x28*x29;
+        out_L_matrix_dot[5] = x24*x25 - x28*x30;
+        out_L_matrix_dot[6] = (0.5f)*omega_1*x27 - x13*x25;
+        out_L_matrix_dot[7] = (0.5f)*omega_1*x29 - x20*x25;
+        out_L_matrix_dot[8] = (0.5f)*omega_1*x30 - x15 - x22*x25;
+        out_L_matrix_dot[9] = x10*x29 - x25*(x20 + x24) + x28*x30;
+        out_L_matrix_dot[10] = -x10*(x24 + x27) + x13*x25 - x21*x28;
+        out_L_matrix_dot[11] = x10*x17 + x25*x9 - x28*(x20 + x27);
     }
     return singular;
 }

@@ -6,7 +6,15 @@
  * template: c_kernel.h.j2
  * math hash: sha256:6f7cbc14b1897619
  * sympy 1.14.0, rigidsym 0.2.0
- * operations: 31
+ * operations: 35
+ * accuracy rewrite (main): cos phi as 1 - 2 s^2 or 2 c^2 - 1: the bare cos phi left by the
+ *     half-angle rewrite, as 1 - 2 s^2 or 2 c^2 - 1 (s, c: sin, cos of phi/2) rather than 1 -
+ *     2 s^2: the form of the measured least error among 1 - 2 s^2, 1 - 2 s^2 or 2 c^2 - 1, (c
+ *     - s) (c + s) (rigidsym.codegen.cos_form); worst ratio to the rule max(2 e_best, 4 u)
+ *     (e_best: the most accurate of the textbook formula and the forms tried, per point;
+ *     rigidsym.codegen.rule) at 336 points of the regimes (rigidsym.codegen.regimes, exact,
+ *     rounded to float64) 0.86 -> 0.67, never worse than the textbook formula by that rule;
+ *     equal to the declared formula by the zero test (exact-cancel)
  *
  * Left inverse of the rate matrix of the linear invariants [u; u0]: omega = L_tilde rate, with the Jacobians of its outputs.
  * L_tilde(e, phi), 3x4; and d(output)/d(input) by sympy on the declared formula
@@ -16,7 +24,7 @@
  * measured at generation, rigidsym.codegen.float32; worst error 1.0 of what
  * the rule of issue 37 allows, max(2 e_textbook, 4 u), per output, normwise, at its
  * points where the kernel computed in double is within it). In double:
- *   trig_0, trig_1, x1, x2, x3, x12, x13, x14
+ *   trig_0, trig_1, x1, x2, x3, x11, x12, x13, x14, x15
  */
 #ifndef RIGIDSYM_L_TILDE_WITH_JACOBIANS_H
 #define RIGIDSYM_L_TILDE_WITH_JACOBIANS_H
@@ -51,15 +59,16 @@ static inline int rigidsym_L_tilde_with_jacobians_sample(
         const double x9 = -x6;
         const double x10 = -x3;
         const double x11 = (x1*x1);
-        const double x12 = 1.0/(x2*x2);
-        const double x13 = x11*x12;
-        const double x14 = (0.5)*x12*(1.0 - 2.0*x11);
-        const double x15 = e_2*x13 + e_2*x14;
-        const double x16 = -x15;
-        const double x17 = e_1*x13 + e_1*x14;
-        const double x18 = e_0*x13 + e_0*x14;
-        const double x19 = -x18;
-        const double x20 = -x17;
+        const double x12 = (x2*x2);
+        const double x13 = 1.0/x12;
+        const double x14 = x11*x13;
+        const double x15 = (0.5)*x13*((x11 < 0.5) ? (1.0 - 2.0*x11) : (2.0*x12 - 1.0));
+        const double x16 = e_2*x14 + e_2*x15;
+        const double x17 = -x16;
+        const double x18 = e_1*x14 + e_1*x15;
+        const double x19 = e_0*x14 + e_0*x15;
+        const double x20 = -x19;
+        const double x21 = -x18;
         out_L_tilde[0] = 1.0;
         out_L_tilde[1] = x5;
         out_L_tilde[2] = x6;
@@ -109,21 +118,21 @@ static inline int rigidsym_L_tilde_with_jacobians_sample(
         out_L_tilde_D_e[34] = 0.0;
         out_L_tilde_D_e[35] = x10;
         out_L_tilde_D_phi[0] = 0.0;
-        out_L_tilde_D_phi[1] = x16;
-        out_L_tilde_D_phi[2] = x17;
-        out_L_tilde_D_phi[3] = x19;
-        out_L_tilde_D_phi[4] = x15;
+        out_L_tilde_D_phi[1] = x17;
+        out_L_tilde_D_phi[2] = x18;
+        out_L_tilde_D_phi[3] = x20;
+        out_L_tilde_D_phi[4] = x16;
         out_L_tilde_D_phi[5] = 0.0;
-        out_L_tilde_D_phi[6] = x19;
-        out_L_tilde_D_phi[7] = x20;
-        out_L_tilde_D_phi[8] = x20;
-        out_L_tilde_D_phi[9] = x18;
+        out_L_tilde_D_phi[6] = x20;
+        out_L_tilde_D_phi[7] = x21;
+        out_L_tilde_D_phi[8] = x21;
+        out_L_tilde_D_phi[9] = x19;
         out_L_tilde_D_phi[10] = 0.0;
-        out_L_tilde_D_phi[11] = x16;
+        out_L_tilde_D_phi[11] = x17;
         singular |= (x2) == 0.0;
         /* quantities that can be non-finite for finite inputs (divisions, roots):
          * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
-        const double finite = ((x3 - x3) + ((x12 - x12) + (x2 - x2)));
+        const double finite = (((x3 - x3) + (x13 - x13)) + ((x2 - x2) + (x12 - x12)));
         singular |= finite != finite;
     }
     return singular;
@@ -158,15 +167,16 @@ static inline int rigidsym_L_tilde_with_jacobians_sample_trig(
         const double x9 = -x6;
         const double x10 = -x3;
         const double x11 = (x1*x1);
-        const double x12 = 1.0/(x2*x2);
-        const double x13 = x11*x12;
-        const double x14 = (0.5)*x12*(1.0 - 2.0*x11);
-        const double x15 = e_2*x13 + e_2*x14;
-        const double x16 = -x15;
-        const double x17 = e_1*x13 + e_1*x14;
-        const double x18 = e_0*x13 + e_0*x14;
-        const double x19 = -x18;
-        const double x20 = -x17;
+        const double x12 = (x2*x2);
+        const double x13 = 1.0/x12;
+        const double x14 = x11*x13;
+        const double x15 = (0.5)*x13*((x11 < 0.5) ? (1.0 - 2.0*x11) : (2.0*x12 - 1.0));
+        const double x16 = e_2*x14 + e_2*x15;
+        const double x17 = -x16;
+        const double x18 = e_1*x14 + e_1*x15;
+        const double x19 = e_0*x14 + e_0*x15;
+        const double x20 = -x19;
+        const double x21 = -x18;
         out_L_tilde[0] = 1.0;
         out_L_tilde[1] = x5;
         out_L_tilde[2] = x6;
@@ -216,21 +226,21 @@ static inline int rigidsym_L_tilde_with_jacobians_sample_trig(
         out_L_tilde_D_e[34] = 0.0;
         out_L_tilde_D_e[35] = x10;
         out_L_tilde_D_phi[0] = 0.0;
-        out_L_tilde_D_phi[1] = x16;
-        out_L_tilde_D_phi[2] = x17;
-        out_L_tilde_D_phi[3] = x19;
-        out_L_tilde_D_phi[4] = x15;
+        out_L_tilde_D_phi[1] = x17;
+        out_L_tilde_D_phi[2] = x18;
+        out_L_tilde_D_phi[3] = x20;
+        out_L_tilde_D_phi[4] = x16;
         out_L_tilde_D_phi[5] = 0.0;
-        out_L_tilde_D_phi[6] = x19;
-        out_L_tilde_D_phi[7] = x20;
-        out_L_tilde_D_phi[8] = x20;
-        out_L_tilde_D_phi[9] = x18;
+        out_L_tilde_D_phi[6] = x20;
+        out_L_tilde_D_phi[7] = x21;
+        out_L_tilde_D_phi[8] = x21;
+        out_L_tilde_D_phi[9] = x19;
         out_L_tilde_D_phi[10] = 0.0;
-        out_L_tilde_D_phi[11] = x16;
+        out_L_tilde_D_phi[11] = x17;
         singular |= (x2) == 0.0;
         /* quantities that can be non-finite for finite inputs (divisions, roots):
          * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
-        const double finite = ((x3 - x3) + ((x12 - x12) + (x2 - x2)));
+        const double finite = (((x3 - x3) + (x13 - x13)) + ((x2 - x2) + (x12 - x12)));
         singular |= finite != finite;
     }
     return singular;
@@ -265,16 +275,17 @@ static inline int rigidsym_L_tilde_with_jacobians_sample_trig_f32(
         const float x8 = -x7;
         const float x9 = -x6;
         const float x10 = -x3;
-        const float x11 = (x1*x1);
-        const double x12 = 1.0/(x2*x2);
-        const double x13 = ((double)x11)*x12;
-        const double x14 = (0.5)*x12*(1.0 - 2.0*((double)x11));
-        const float x15 = e_2*x13 + e_2*x14;
-        const float x16 = -x15;
-        const float x17 = e_1*x13 + e_1*x14;
-        const float x18 = e_0*x13 + e_0*x14;
-        const float x19 = -x18;
-        const float x20 = -x17;
+        const double x11 = (x1*x1);
+        const double x12 = (x2*x2);
+        const double x13 = 1.0/x12;
+        const double x14 = x11*x13;
+        const double x15 = (0.5)*x13*((x11 < 0.5) ? (1.0 - 2.0*x11) : (2.0*x12 - 1.0));
+        const float x16 = e_2*x14 + e_2*x15;
+        const float x17 = -x16;
+        const float x18 = e_1*x14 + e_1*x15;
+        const float x19 = e_0*x14 + e_0*x15;
+        const float x20 = -x19;
+        const float x21 = -x18;
         out_L_tilde[0] = 1.0f;
         out_L_tilde[1] = x5;
         out_L_tilde[2] = x6;
@@ -324,19 +335,19 @@ static inline int rigidsym_L_tilde_with_jacobians_sample_trig_f32(
         out_L_tilde_D_e[34] = 0.0f;
         out_L_tilde_D_e[35] = x10;
         out_L_tilde_D_phi[0] = 0.0f;
-        out_L_tilde_D_phi[1] = x16;
-        out_L_tilde_D_phi[2] = x17;
-        out_L_tilde_D_phi[3] = x19;
-        out_L_tilde_D_phi[4] = x15;
+        out_L_tilde_D_phi[1] = x17;
+        out_L_tilde_D_phi[2] = x18;
+        out_L_tilde_D_phi[3] = x20;
+        out_L_tilde_D_phi[4] = x16;
         out_L_tilde_D_phi[5] = 0.0f;
-        out_L_tilde_D_phi[6] = x19;
-        out_L_tilde_D_phi[7] = x20;
-        out_L_tilde_D_phi[8] = x20;
-        out_L_tilde_D_phi[9] = x18;
+        out_L_tilde_D_phi[6] = x20;
+        out_L_tilde_D_phi[7] = x21;
+        out_L_tilde_D_phi[8] = x21;
+        out_L_tilde_D_phi[9] = x19;
         out_L_tilde_D_phi[10] = 0.0f;
-        out_L_tilde_D_phi[11] = x16;
+        out_L_tilde_D_phi[11] = x17;
         singular |= (x2) == 0.0;
-        const double finite = ((x3 - x3) + ((x12 - x12) + (x2 - x2)));
+        const double finite = (((x3 - x3) + (x13 - x13)) + ((x2 - x2) + (x12 - x12)));
         singular |= finite != finite;
     }
     return singular;

@@ -6,17 +6,25 @@
  * template: c_kernel.h.j2
  * math hash: sha256:b1c3eb794fbb8245
  * sympy 1.14.0, rigidsym 0.2.0
- * operations: 79
+ * operations: 84
+ * accuracy rewrite (main): cos phi as 1 - 2 s^2 or 2 c^2 - 1: the bare cos phi left by the
+ *     half-angle rewrite, as 1 - 2 s^2 or 2 c^2 - 1 (s, c: sin, cos of phi/2) rather than 1 -
+ *     2 s^2: the form of the measured least error among 1 - 2 s^2, 1 - 2 s^2 or 2 c^2 - 1, (c
+ *     - s) (c + s) (rigidsym.codegen.cos_form); worst ratio to the rule max(2 e_best, 4 u)
+ *     (e_best: the most accurate of the textbook formula and the forms tried, per point;
+ *     rigidsym.codegen.rule) at 388 points of the regimes (rigidsym.codegen.regimes, exact,
+ *     rounded to float64) 1.1 -> 0.65, never worse than the textbook formula by that rule;
+ *     equal to the declared formula by the zero test (exact-cancel)
  *
  * Time derivative of N_tilde along omega.
  * d/dt N_tilde(e(t), phi(t)) with e_dot, phi_dot from omega (the corrected form where the printed one does not hold)
  * Singular set: phi = 0 (mod 2 pi): the axis, and so its rate, is undefined
  *
  * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
- * measured at generation, rigidsym.codegen.float32; worst error 0.701 of what
+ * measured at generation, rigidsym.codegen.float32; worst error 0.742 of what
  * the rule of issue 37 allows, max(2 e_textbook, 4 u), per output, normwise, at its
  * points where the kernel computed in double is within it). In double:
- *   trig_0, trig_1, x1, x2, x3, x6, x15
+ *   trig_1, x2, x5, x15, N_tilde_dot[4]
  */
 #ifndef RIGIDSYM_N_TILDE_DOT_H
 #define RIGIDSYM_N_TILDE_DOT_H
@@ -41,18 +49,18 @@ static inline int rigidsym_N_tilde_dot_sample(
     const double omega_2 = in_omega[2];
     int singular = 0;
     {
-        const double x0 = (0.5)*phi;
-        const double x1 = sin(x0);
-        const double x2 = (x1*x1);
-        const double x3 = 2.0*x2;
-        const double x4 = e_0*omega_0 + e_1*omega_1 + e_2*omega_2;
-        const double x5 = x4*(1.0 - x3);
-        const double x6 = cos(x0);
-        const double x7 = 2.0*x1*x4*x6;
+        const double x0 = e_0*omega_0 + e_1*omega_1 + e_2*omega_2;
+        const double x1 = (0.5)*phi;
+        const double x2 = sin(x1);
+        const double x3 = (x2*x2);
+        const double x4 = 2.0*x3;
+        const double x5 = cos(x1);
+        const double x6 = x0*((x3 < 0.5) ? (1.0 - x4) : (2.0*(x5*x5) - 1.0));
+        const double x7 = 2.0*x0*x2*x5;
         const double x8 = e_2*x7;
         const double x9 = (0.5)*e_1;
         const double x10 = (0.5)*e_0;
-        const double x11 = x6/x1;
+        const double x11 = x5/x2;
         const double x12 = e_2*x11;
         const double x13 = x10*x12;
         const double x14 = x12*x9;
@@ -64,22 +72,22 @@ static inline int rigidsym_N_tilde_dot_sample(
         const double x20 = omega_0*(-x18 - x19) + omega_1*x15*(1.0 - (e_1*e_1)) + omega_2*(x10 - x14);
         const double x21 = omega_0*x15*(1.0 - (e_0*e_0)) + omega_1*(x18 - x19) + omega_2*(-x13 - x9);
         const double x22 = e_0*x7;
-        out_N_tilde_dot[0] = x5;
-        out_N_tilde_dot[1] = -2.0*x16*x2 - x8;
-        out_N_tilde_dot[2] = x17 + x20*x3;
+        out_N_tilde_dot[0] = x6;
+        out_N_tilde_dot[1] = -2.0*x16*x3 - x8;
+        out_N_tilde_dot[2] = x17 + x20*x4;
         out_N_tilde_dot[3] = x21;
-        out_N_tilde_dot[4] = x16*x3 + x8;
-        out_N_tilde_dot[5] = x5;
-        out_N_tilde_dot[6] = -2.0*x2*x21 - x22;
+        out_N_tilde_dot[4] = x16*x4 + x8;
+        out_N_tilde_dot[5] = x6;
+        out_N_tilde_dot[6] = -2.0*x21*x3 - x22;
         out_N_tilde_dot[7] = x20;
-        out_N_tilde_dot[8] = -x17 - 2.0*x2*x20;
-        out_N_tilde_dot[9] = x21*x3 + x22;
-        out_N_tilde_dot[10] = x5;
+        out_N_tilde_dot[8] = -x17 - 2.0*x20*x3;
+        out_N_tilde_dot[9] = x21*x4 + x22;
+        out_N_tilde_dot[10] = x6;
         out_N_tilde_dot[11] = x16;
-        singular |= (x1) == 0.0;
+        singular |= (x2) == 0.0;
         /* quantities that can be non-finite for finite inputs (divisions, roots):
          * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
-        const double finite = ((x11 - x11) + (x1 - x1));
+        const double finite = ((x11 - x11) + (x2 - x2));
         singular |= finite != finite;
     }
     return singular;
@@ -105,17 +113,17 @@ static inline int rigidsym_N_tilde_dot_sample_trig(
     const double omega_2 = in_omega[2];
     int singular = 0;
     {
-        const double x1 = trig_0;
-        const double x2 = (x1*x1);
-        const double x3 = 2.0*x2;
-        const double x4 = e_0*omega_0 + e_1*omega_1 + e_2*omega_2;
-        const double x5 = x4*(1.0 - x3);
-        const double x6 = trig_1;
-        const double x7 = 2.0*x1*x4*x6;
+        const double x0 = e_0*omega_0 + e_1*omega_1 + e_2*omega_2;
+        const double x2 = trig_0;
+        const double x3 = (x2*x2);
+        const double x4 = 2.0*x3;
+        const double x5 = trig_1;
+        const double x6 = x0*((x3 < 0.5) ? (1.0 - x4) : (2.0*(x5*x5) - 1.0));
+        const double x7 = 2.0*x0*x2*x5;
         const double x8 = e_2*x7;
         const double x9 = (0.5)*e_1;
         const double x10 = (0.5)*e_0;
-        const double x11 = x6/x1;
+        const double x11 = x5/x2;
         const double x12 = e_2*x11;
         const double x13 = x10*x12;
         const double x14 = x12*x9;
@@ -127,22 +135,22 @@ static inline int rigidsym_N_tilde_dot_sample_trig(
         const double x20 = omega_0*(-x18 - x19) + omega_1*x15*(1.0 - (e_1*e_1)) + omega_2*(x10 - x14);
         const double x21 = omega_0*x15*(1.0 - (e_0*e_0)) + omega_1*(x18 - x19) + omega_2*(-x13 - x9);
         const double x22 = e_0*x7;
-        out_N_tilde_dot[0] = x5;
-        out_N_tilde_dot[1] = -2.0*x16*x2 - x8;
-        out_N_tilde_dot[2] = x17 + x20*x3;
+        out_N_tilde_dot[0] = x6;
+        out_N_tilde_dot[1] = -2.0*x16*x3 - x8;
+        out_N_tilde_dot[2] = x17 + x20*x4;
         out_N_tilde_dot[3] = x21;
-        out_N_tilde_dot[4] = x16*x3 + x8;
-        out_N_tilde_dot[5] = x5;
-        out_N_tilde_dot[6] = -2.0*x2*x21 - x22;
+        out_N_tilde_dot[4] = x16*x4 + x8;
+        out_N_tilde_dot[5] = x6;
+        out_N_tilde_dot[6] = -2.0*x21*x3 - x22;
         out_N_tilde_dot[7] = x20;
-        out_N_tilde_dot[8] = -x17 - 2.0*x2*x20;
-        out_N_tilde_dot[9] = x21*x3 + x22;
-        out_N_tilde_dot[10] = x5;
+        out_N_tilde_dot[8] = -x17 - 2.0*x20*x3;
+        out_N_tilde_dot[9] = x21*x4 + x22;
+        out_N_tilde_dot[10] = x6;
         out_N_tilde_dot[11] = x16;
-        singular |= (x1) == 0.0;
+        singular |= (x2) == 0.0;
         /* quantities that can be non-finite for finite inputs (divisions, roots):
          * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
-        const double finite = ((x11 - x11) + (x1 - x1));
+        const double finite = ((x11 - x11) + (x2 - x2));
         singular |= finite != finite;
     }
     return singular;
@@ -156,7 +164,7 @@ static inline int rigidsym_N_tilde_dot_sample_trig_f32(
     const float *RIGIDSYM_RESTRICT in_e,
     const float *RIGIDSYM_RESTRICT in_phi,
     const float *RIGIDSYM_RESTRICT in_omega,
-    const double trig_0,
+    const float trig_0,
     const double trig_1,
     float *RIGIDSYM_RESTRICT out_N_tilde_dot)
 {
@@ -169,17 +177,17 @@ static inline int rigidsym_N_tilde_dot_sample_trig_f32(
     const float omega_2 = in_omega[2];
     int singular = 0;
     {
-        const double x1 = trig_0;
-        const double x2 = (x1*x1);
-        const double x3 = 2.0*x2;
-        const float x4 = e_0*omega_0 + e_1*omega_1 + e_2*omega_2;
-        const float x5 = x4*(1.0f - x3);
-        const double x6 = trig_1;
-        const float x7 = 2.0f*x1*x4*x6;
+        const float x0 = e_0*omega_0 + e_1*omega_1 + e_2*omega_2;
+        const double x2 = ((double)trig_0);
+        const float x3 = (x2*x2);
+        const float x4 = 2.0f*x3;
+        const double x5 = trig_1;
+        const float x6 = x0*((x3 < 0.5f) ? (1.0f - x4) : (2.0f*(x5*x5) - 1.0f));
+        const float x7 = 2.0f*x0*x2*x5;
         const float x8 = e_2*x7;
         const float x9 = (0.5f)*e_1;
         const float x10 = (0.5f)*e_0;
-        const float x11 = x6/x1;
+        const float x11 = x5/x2;
         const float x12 = e_2*x11;
         const float x13 = x10*x12;
         const float x14 = x12*x9;
@@ -191,20 +199,20 @@ static inline int rigidsym_N_tilde_dot_sample_trig_f32(
         const float x20 = omega_0*(-x18 - x19) + omega_1*x15*(1.0f - (e_1*e_1)) + omega_2*(x10 - x14);
         const float x21 = omega_0*x15*(1.0f - (e_0*e_0)) + omega_1*(x18 - x19) + omega_2*(-x13 - x9);
         const float x22 = e_0*x7;
-        out_N_tilde_dot[0] = x5;
-        out_N_tilde_dot[1] = -2.0f*x16*x2 - x8;
-        out_N_tilde_dot[2] = x17 + x20*x3;
+        out_N_tilde_dot[0] = x6;
+        out_N_tilde_dot[1] = -2.0f*x16*x3 - x8;
+        out_N_tilde_dot[2] = x17 + x20*x4;
         out_N_tilde_dot[3] = x21;
-        out_N_tilde_dot[4] = x16*x3 + x8;
-        out_N_tilde_dot[5] = x5;
-        out_N_tilde_dot[6] = -2.0f*x2*x21 - x22;
+        out_N_tilde_dot[4] = ((double)x16)*((double)x4) + ((double)x8);
+        out_N_tilde_dot[5] = x6;
+        out_N_tilde_dot[6] = -2.0f*x21*x3 - x22;
         out_N_tilde_dot[7] = x20;
-        out_N_tilde_dot[8] = -x17 - 2.0f*x2*x20;
-        out_N_tilde_dot[9] = x21*x3 + x22;
-        out_N_tilde_dot[10] = x5;
+        out_N_tilde_dot[8] = -x17 - 2.0f*x20*x3;
+        out_N_tilde_dot[9] = x21*x4 + x22;
+        out_N_tilde_dot[10] = x6;
         out_N_tilde_dot[11] = x16;
-        singular |= (x1) == 0.0;
-        const double finite = ((x11 - x11) + (x1 - x1));
+        singular |= (x2) == 0.0;
+        const double finite = ((x11 - x11) + (x2 - x2));
         singular |= finite != finite;
     }
     return singular;

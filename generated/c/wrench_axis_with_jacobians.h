@@ -6,7 +6,7 @@
  * template: c_kernel.h.j2
  * math hash: sha256:9fc091b75f363813
  * sympy 1.14.0, rigidsym 0.2.0
- * operations: 282
+ * operations: 285
  * accuracy rewrite (main): compensated sums of products (pitch): a dot product (or a cross
  *     product's component plus a term) that cancels loses u sum |a_i b_i| / |s| relative when
  *     summed plainly; compensated (Dot2 of Ogita, Rump and Oishi,
@@ -15,16 +15,24 @@
  *     point; rigidsym.codegen.rule) at 38 points of the regimes (rigidsym.codegen.regimes,
  *     exact, rounded to float64) 1.1 -> 0.47, never worse than the textbook formula by that
  *     rule; equal to the declared formula by the zero test (exact-cancel)
+ * accuracy rewrite (main): powers by pow (plucker_D_w_A): a rational power printed as roots
+ *     and a quotient (1/(x sqrt x), 1/(x x)) rounds three or four times, pow once: the
+ *     Jacobian of a norm's quotient (f x n / ||f||^2 differentiated) sums several of them;
+ *     worst ratio to the rule max(2 e_best, 4 u) (e_best: the most accurate of the textbook
+ *     formula and the forms tried, per point; rigidsym.codegen.rule) at 38 points of the
+ *     regimes (rigidsym.codegen.regimes, exact, rounded to float64) 1.2 -> 0.74, never worse
+ *     than the textbook formula by that rule; equal to the declared formula by the zero test
+ *     (exact-cancel)
  *
  * Axis of a wrench: point, pitch and Plücker array, with the Jacobians of its outputs.
  * p0'' = f x (n_A - a x f)... per (3.109)-(3.111), kappa through p0'' along f; and d(output)/d(input) by sympy on the declared formula
  * Singular set: f = 0 (pure moment)
  *
  * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
- * measured at generation, rigidsym.codegen.float32; worst error 0.737 of what
+ * measured at generation, rigidsym.codegen.float32; worst error 0.742 of what
  * the rule of issue 37 allows, max(2 e_textbook, 4 u), per output, normwise, at its
  * points where the kernel computed in double is within it). In double:
- *   x0, x1, x2, x3, x4, x5, x9, x12, x13, x15, x16, x18, x20, x35, x49, x60, x61
+ *   x0, x1, x2, x3, x4, x5, x7, x9, x10, x12, x13, x15, x16, x18, x35, x49, x51, x61, x62
  */
 #ifndef RIGIDSYM_WRENCH_AXIS_WITH_JACOBIANS_H
 #define RIGIDSYM_WRENCH_AXIS_WITH_JACOBIANS_H
@@ -80,8 +88,8 @@ static inline int rigidsym_wrench_axis_with_jacobians_sample(
         const double x19 = 1.0/sqrt(x4);
         const double x20 = 1.0/(x4*sqrt(x4));
         const double x21 = x18*x20;
-        const double x22 = x13*x20;
-        const double x23 = x17*x20;
+        const double x22 = w_A_5*x20;
+        const double x23 = w_A_3*x20;
         const double x24 = w_A_5*x5;
         const double x25 = w_A_4*x5;
         const double x26 = a_1*w_A_4;
@@ -109,26 +117,31 @@ static inline int rigidsym_wrench_axis_with_jacobians_sample(
         const double x48 = x0 + x1;
         const double x49 = x29*(w_A_0*w_A_3 + w_A_1*w_A_4 + w_A_2*w_A_5);
         const double x50 = -x19;
-        const double x51 = x0*x20;
-        const double x52 = w_A_3*x20;
-        const double x53 = -w_A_4*x52;
-        const double x54 = -w_A_5*x52;
-        const double x55 = x1*x20;
-        const double x56 = w_A_5*x20;
-        const double x57 = -w_A_4*x56;
-        const double x58 = x2*x20;
-        const double x59 = w_A_4*x20;
-        const double x60 = 1.0/((x4*x4)*sqrt(x4));
-        const double x61 = 3.0*x60;
-        const double x62 = x18*x61;
-        const double x63 = w_A_4*x62;
-        const double x64 = w_A_3*x63;
-        const double x65 = x17*x61;
-        const double x66 = w_A_5*x65;
-        const double x67 = w_A_3*x66;
-        const double x68 = x30*x61;
-        const double x69 = x13*x61;
-        const double x70 = -w_A_4*w_A_5*x69;
+        const double x51 = pow(x4, -1.5);
+        const double x52 = x0*x51;
+        const double x53 = w_A_3*x51;
+        const double x54 = -w_A_4*x53;
+        const double x55 = -w_A_5*x53;
+        const double x56 = x1*x51;
+        const double x57 = w_A_5*x51;
+        const double x58 = -w_A_4*x57;
+        const double x59 = x2*x51;
+        const double x60 = w_A_4*x51;
+        const double x61 = pow(x4, -2.5);
+        const double x62 = 3.0*x61;
+        const double x63 = x18*x62;
+        const double x64 = w_A_4*x63;
+        const double x65 = w_A_3*x64;
+        const double x66 = x17*x62;
+        const double x67 = w_A_5*x66;
+        const double x68 = w_A_3*x67;
+        const double x69 = x18*x51;
+        const double x70 = x17*x51;
+        const double x71 = x30*x62;
+        const double x72 = x13*x62;
+        const double x73 = -w_A_4*w_A_5*x72;
+        const double x74 = x13*x51;
+        const double x75 = w_A_4*x20;
         out_p0[0] = x13*x5;
         out_p0[1] = x17*x5;
         out_p0[2] = x18*x5;
@@ -137,8 +150,8 @@ static inline int rigidsym_wrench_axis_with_jacobians_sample(
         out_plucker[1] = w_A_4*x19;
         out_plucker[2] = w_A_5*x19;
         out_plucker[3] = -w_A_4*x21 + w_A_5*x17*x20;
-        out_plucker[4] = w_A_3*x21 - w_A_5*x22;
-        out_plucker[5] = -w_A_3*x23 + w_A_4*x13*x20;
+        out_plucker[4] = w_A_3*x21 - x13*x22;
+        out_plucker[5] = w_A_4*x13*x20 - x17*x23;
         out_p0_D_w_A[0] = 0.0;
         out_p0_D_w_A[1] = -x24;
         out_p0_D_w_A[2] = x25;
@@ -178,39 +191,39 @@ static inline int rigidsym_wrench_axis_with_jacobians_sample(
         out_plucker_D_w_A[0] = 0.0;
         out_plucker_D_w_A[1] = 0.0;
         out_plucker_D_w_A[2] = 0.0;
-        out_plucker_D_w_A[3] = -x50 - x51;
-        out_plucker_D_w_A[4] = x53;
-        out_plucker_D_w_A[5] = x54;
+        out_plucker_D_w_A[3] = -x50 - x52;
+        out_plucker_D_w_A[4] = x54;
+        out_plucker_D_w_A[5] = x55;
         out_plucker_D_w_A[6] = 0.0;
         out_plucker_D_w_A[7] = 0.0;
         out_plucker_D_w_A[8] = 0.0;
-        out_plucker_D_w_A[9] = x53;
-        out_plucker_D_w_A[10] = -x50 - x55;
-        out_plucker_D_w_A[11] = x57;
+        out_plucker_D_w_A[9] = x54;
+        out_plucker_D_w_A[10] = -x50 - x56;
+        out_plucker_D_w_A[11] = x58;
         out_plucker_D_w_A[12] = 0.0;
         out_plucker_D_w_A[13] = 0.0;
         out_plucker_D_w_A[14] = 0.0;
-        out_plucker_D_w_A[15] = x54;
-        out_plucker_D_w_A[16] = x57;
-        out_plucker_D_w_A[17] = -x50 - x58;
-        out_plucker_D_w_A[18] = x55 + x58;
-        out_plucker_D_w_A[19] = x53;
-        out_plucker_D_w_A[20] = x54;
-        out_plucker_D_w_A[21] = x35*x56 - x40*x59 + x64 - x67;
-        out_plucker_D_w_A[22] = -w_A_4*x66 + w_A_5*x20*x38 + 3.0*x1*x18*x60 - x21 - x42*x59;
-        out_plucker_D_w_A[23] = w_A_5*x63 - x17*x2*x61 + x23 + x39*x56 - x43*x59;
-        out_plucker_D_w_A[24] = x53;
-        out_plucker_D_w_A[25] = x51 + x58;
-        out_plucker_D_w_A[26] = x57;
-        out_plucker_D_w_A[27] = w_A_5*x68 - x0*x62 + x21 - x28*x56 + x40*x52;
-        out_plucker_D_w_A[28] = w_A_3*x20*x42 - x31*x56 - x64 - x70;
-        out_plucker_D_w_A[29] = -w_A_3*w_A_5*x62 + w_A_3*x20*x43 + 3.0*x13*x2*x60 - x22 - x33*x56;
-        out_plucker_D_w_A[30] = x54;
-        out_plucker_D_w_A[31] = x57;
-        out_plucker_D_w_A[32] = x51 + x55;
-        out_plucker_D_w_A[33] = w_A_4*x20*x28 - w_A_4*x68 + 3.0*x0*x17*x60 - x23 - x35*x52;
-        out_plucker_D_w_A[34] = w_A_3*w_A_4*x65 - x1*x69 + x22 + x31*x59 - x38*x52;
-        out_plucker_D_w_A[35] = x33*x59 - x39*x52 + x67 + x70;
+        out_plucker_D_w_A[15] = x55;
+        out_plucker_D_w_A[16] = x58;
+        out_plucker_D_w_A[17] = -x50 - x59;
+        out_plucker_D_w_A[18] = x56 + x59;
+        out_plucker_D_w_A[19] = x54;
+        out_plucker_D_w_A[20] = x55;
+        out_plucker_D_w_A[21] = x35*x57 - x40*x60 + x65 - x68;
+        out_plucker_D_w_A[22] = -w_A_4*x67 + w_A_5*x38*x51 + 3.0*x1*x18*x61 - x42*x60 - x69;
+        out_plucker_D_w_A[23] = w_A_5*x64 - x17*x2*x62 + x39*x57 - x43*x60 + x70;
+        out_plucker_D_w_A[24] = x54;
+        out_plucker_D_w_A[25] = x52 + x59;
+        out_plucker_D_w_A[26] = x58;
+        out_plucker_D_w_A[27] = w_A_5*x71 - x0*x63 - x28*x57 + x40*x53 + x69;
+        out_plucker_D_w_A[28] = w_A_3*x42*x51 - x31*x57 - x65 - x73;
+        out_plucker_D_w_A[29] = -w_A_3*w_A_5*x63 + w_A_3*x43*x51 + 3.0*x13*x2*x61 - x33*x57 - x74;
+        out_plucker_D_w_A[30] = x55;
+        out_plucker_D_w_A[31] = x58;
+        out_plucker_D_w_A[32] = x52 + x56;
+        out_plucker_D_w_A[33] = w_A_4*x28*x51 - w_A_4*x71 + 3.0*x0*x17*x61 - x35*x53 - x70;
+        out_plucker_D_w_A[34] = w_A_3*w_A_4*x66 - x1*x72 + x31*x60 - x38*x53 + x74;
+        out_plucker_D_w_A[35] = x33*x60 - x39*x53 + x68 + x73;
         out_plucker_D_a[0] = 0.0;
         out_plucker_D_a[1] = 0.0;
         out_plucker_D_a[2] = 0.0;
@@ -221,18 +234,18 @@ static inline int rigidsym_wrench_axis_with_jacobians_sample(
         out_plucker_D_a[7] = 0.0;
         out_plucker_D_a[8] = 0.0;
         out_plucker_D_a[9] = 0.0;
-        out_plucker_D_a[10] = w_A_5*x55 + x46*x56;
-        out_plucker_D_a[11] = -w_A_4*x58 - x48*x59;
-        out_plucker_D_a[12] = -w_A_5*x51 - x3*x56;
+        out_plucker_D_a[10] = x1*x22 + x22*x46;
+        out_plucker_D_a[11] = -x2*x75 - x48*x75;
+        out_plucker_D_a[12] = -x0*x22 - x22*x3;
         out_plucker_D_a[13] = 0.0;
-        out_plucker_D_a[14] = w_A_3*x58 + x48*x52;
-        out_plucker_D_a[15] = w_A_4*x51 + x3*x59;
-        out_plucker_D_a[16] = -w_A_3*x55 - x46*x52;
+        out_plucker_D_a[14] = x2*x23 + x23*x48;
+        out_plucker_D_a[15] = x0*x75 + x3*x75;
+        out_plucker_D_a[16] = -x1*x23 - x23*x46;
         out_plucker_D_a[17] = 0.0;
         singular |= (x4) == 0.0;
         /* quantities that can be non-finite for finite inputs (divisions, roots):
          * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
-        const double finite = (((x5 - x5) + ((x19 - x19) + (x20 - x20))) + ((x29 - x29) + ((x60 - x60) + (x4 - x4))));
+        const double finite = (((x5 - x5) + ((x19 - x19) + (x20 - x20))) + (((x29 - x29) + (x51 - x51)) + ((x61 - x61) + (x4 - x4))));
         singular |= finite != finite;
     }
     return singular;
@@ -273,10 +286,10 @@ static inline int rigidsym_wrench_axis_with_jacobians_sample_f32(
         const double x4 = x0 + x3;
         const double x5 = 1.0/x4;
         const float x6 = a_0*w_A_4;
-        const float x7 = -a_1*w_A_3 + w_A_2;
+        const double x7 = -((double)a_1)*((double)w_A_3) + ((double)w_A_2);
         const float x8 = x6 + x7;
         const double x9 = -((double)a_0)*((double)w_A_5);
-        const float x10 = a_2*w_A_3;
+        const double x10 = ((double)a_2)*((double)w_A_3);
         const float x11 = w_A_1 + x10;
         const double x12 = ((double)x11) + x9;
         const double x13 = ((double)w_A_4)*((double)x8) - ((double)w_A_5)*x12;
@@ -286,10 +299,10 @@ static inline int rigidsym_wrench_axis_with_jacobians_sample_f32(
         const float x17 = -w_A_3*x8 + w_A_5*x16;
         const double x18 = ((double)w_A_3)*x12 - ((double)w_A_4)*x16;
         const float x19 = 1.0f/sqrt(x4);
-        const double x20 = 1.0/(x4*sqrt(x4));
+        const float x20 = 1.0f/(x4*sqrt(x4));
         const float x21 = x18*x20;
-        const float x22 = x13*x20;
-        const float x23 = x17*x20;
+        const float x22 = w_A_5*x20;
+        const float x23 = w_A_3*x20;
         const float x24 = w_A_5*x5;
         const float x25 = w_A_4*x5;
         const float x26 = a_1*w_A_4;
@@ -317,26 +330,31 @@ static inline int rigidsym_wrench_axis_with_jacobians_sample_f32(
         const float x48 = x0 + x1;
         const double x49 = ((double)x29)*(((double)w_A_0)*((double)w_A_3) + ((double)w_A_1)*((double)w_A_4) + ((double)w_A_2)*((double)w_A_5));
         const float x50 = -x19;
-        const float x51 = x0*x20;
-        const float x52 = w_A_3*x20;
-        const float x53 = -w_A_4*x52;
-        const float x54 = -w_A_5*x52;
-        const float x55 = x1*x20;
-        const float x56 = w_A_5*x20;
-        const float x57 = -w_A_4*x56;
-        const float x58 = x2*x20;
-        const float x59 = w_A_4*x20;
-        const double x60 = 1.0/((x4*x4)*sqrt(x4));
-        const double x61 = 3.0*x60;
-        const float x62 = x18*x61;
-        const float x63 = w_A_4*x62;
-        const float x64 = w_A_3*x63;
-        const float x65 = x17*x61;
-        const float x66 = w_A_5*x65;
-        const float x67 = w_A_3*x66;
-        const float x68 = x30*x61;
-        const float x69 = x13*x61;
-        const float x70 = -w_A_4*w_A_5*x69;
+        const double x51 = pow(x4, -1.5);
+        const float x52 = x0*x51;
+        const float x53 = w_A_3*x51;
+        const float x54 = -w_A_4*x53;
+        const float x55 = -w_A_5*x53;
+        const float x56 = x1*x51;
+        const float x57 = w_A_5*x51;
+        const float x58 = -w_A_4*x57;
+        const float x59 = x2*x51;
+        const float x60 = w_A_4*x51;
+        const double x61 = pow(x4, -2.5);
+        const double x62 = 3.0*x61;
+        const float x63 = x18*x62;
+        const float x64 = w_A_4*x63;
+        const float x65 = w_A_3*x64;
+        const float x66 = x17*x62;
+        const float x67 = w_A_5*x66;
+        const float x68 = w_A_3*x67;
+        const float x69 = x18*x51;
+        const float x70 = x17*x51;
+        const float x71 = x30*x62;
+        const float x72 = x13*x62;
+        const float x73 = -w_A_4*w_A_5*x72;
+        const float x74 = x13*x51;
+        const float x75 = w_A_4*x20;
         out_p0[0] = x13*x5;
         out_p0[1] = x17*x5;
         out_p0[2] = x18*x5;
@@ -345,8 +363,8 @@ static inline int rigidsym_wrench_axis_with_jacobians_sample_f32(
         out_plucker[1] = w_A_4*x19;
         out_plucker[2] = w_A_5*x19;
         out_plucker[3] = -w_A_4*x21 + w_A_5*x17*x20;
-        out_plucker[4] = w_A_3*x21 - w_A_5*x22;
-        out_plucker[5] = -w_A_3*x23 + w_A_4*x13*x20;
+        out_plucker[4] = w_A_3*x21 - x13*x22;
+        out_plucker[5] = w_A_4*x13*x20 - x17*x23;
         out_p0_D_w_A[0] = 0.0f;
         out_p0_D_w_A[1] = -x24;
         out_p0_D_w_A[2] = x25;
@@ -386,39 +404,39 @@ static inline int rigidsym_wrench_axis_with_jacobians_sample_f32(
         out_plucker_D_w_A[0] = 0.0f;
         out_plucker_D_w_A[1] = 0.0f;
         out_plucker_D_w_A[2] = 0.0f;
-        out_plucker_D_w_A[3] = -x50 - x51;
-        out_plucker_D_w_A[4] = x53;
-        out_plucker_D_w_A[5] = x54;
+        out_plucker_D_w_A[3] = -x50 - x52;
+        out_plucker_D_w_A[4] = x54;
+        out_plucker_D_w_A[5] = x55;
         out_plucker_D_w_A[6] = 0.0f;
         out_plucker_D_w_A[7] = 0.0f;
         out_plucker_D_w_A[8] = 0.0f;
-        out_plucker_D_w_A[9] = x53;
-        out_plucker_D_w_A[10] = -x50 - x55;
-        out_plucker_D_w_A[11] = x57;
+        out_plucker_D_w_A[9] = x54;
+        out_plucker_D_w_A[10] = -x50 - x56;
+        out_plucker_D_w_A[11] = x58;
         out_plucker_D_w_A[12] = 0.0f;
         out_plucker_D_w_A[13] = 0.0f;
         out_plucker_D_w_A[14] = 0.0f;
-        out_plucker_D_w_A[15] = x54;
-        out_plucker_D_w_A[16] = x57;
-        out_plucker_D_w_A[17] = -x50 - x58;
-        out_plucker_D_w_A[18] = x55 + x58;
-        out_plucker_D_w_A[19] = x53;
-        out_plucker_D_w_A[20] = x54;
-        out_plucker_D_w_A[21] = x35*x56 - x40*x59 + x64 - x67;
-        out_plucker_D_w_A[22] = -w_A_4*x66 + w_A_5*x20*x38 + 3.0f*x1*x18*x60 - x21 - x42*x59;
-        out_plucker_D_w_A[23] = w_A_5*x63 - x17*x2*x61 + x23 + x39*x56 - x43*x59;
-        out_plucker_D_w_A[24] = x53;
-        out_plucker_D_w_A[25] = x51 + x58;
-        out_plucker_D_w_A[26] = x57;
-        out_plucker_D_w_A[27] = w_A_5*x68 - x0*x62 + x21 - x28*x56 + x40*x52;
-        out_plucker_D_w_A[28] = w_A_3*x20*x42 - x31*x56 - x64 - x70;
-        out_plucker_D_w_A[29] = -w_A_3*w_A_5*x62 + w_A_3*x20*x43 + 3.0f*x13*x2*x60 - x22 - x33*x56;
-        out_plucker_D_w_A[30] = x54;
-        out_plucker_D_w_A[31] = x57;
-        out_plucker_D_w_A[32] = x51 + x55;
-        out_plucker_D_w_A[33] = w_A_4*x20*x28 - w_A_4*x68 + 3.0f*x0*x17*x60 - x23 - x35*x52;
-        out_plucker_D_w_A[34] = w_A_3*w_A_4*x65 - x1*x69 + x22 + x31*x59 - x38*x52;
-        out_plucker_D_w_A[35] = x33*x59 - x39*x52 + x67 + x70;
+        out_plucker_D_w_A[15] = x55;
+        out_plucker_D_w_A[16] = x58;
+        out_plucker_D_w_A[17] = -x50 - x59;
+        out_plucker_D_w_A[18] = x56 + x59;
+        out_plucker_D_w_A[19] = x54;
+        out_plucker_D_w_A[20] = x55;
+        out_plucker_D_w_A[21] = x35*x57 - x40*x60 + x65 - x68;
+        out_plucker_D_w_A[22] = -w_A_4*x67 + w_A_5*x38*x51 + 3.0f*x1*x18*x61 - x42*x60 - x69;
+        out_plucker_D_w_A[23] = w_A_5*x64 - x17*x2*x62 + x39*x57 - x43*x60 + x70;
+        out_plucker_D_w_A[24] = x54;
+        out_plucker_D_w_A[25] = x52 + x59;
+        out_plucker_D_w_A[26] = x58;
+        out_plucker_D_w_A[27] = w_A_5*x71 - x0*x63 - x28*x57 + x40*x53 + x69;
+        out_plucker_D_w_A[28] = w_A_3*x42*x51 - x31*x57 - x65 - x73;
+        out_plucker_D_w_A[29] = -w_A_3*w_A_5*x63 + w_A_3*x43*x51 + 3.0f*x13*x2*x61 - x33*x57 - x74;
+        out_plucker_D_w_A[30] = x55;
+        out_plucker_D_w_A[31] = x58;
+        out_plucker_D_w_A[32] = x52 + x56;
+        out_plucker_D_w_A[33] = w_A_4*x28*x51 - w_A_4*x71 + 3.0f*x0*x17*x61 - x35*x53 - x70;
+        out_plucker_D_w_A[34] = w_A_3*w_A_4*x66 - x1*x72 + x31*x60 - x38*x53 + x74;
+        out_plucker_D_w_A[35] = x33*x60 - x39*x53 + x68 + x73;
         out_plucker_D_a[0] = 0.0f;
         out_plucker_D_a[1] = 0.0f;
         out_plucker_D_a[2] = 0.0f;
@@ -429,16 +447,16 @@ static inline int rigidsym_wrench_axis_with_jacobians_sample_f32(
         out_plucker_D_a[7] = 0.0f;
         out_plucker_D_a[8] = 0.0f;
         out_plucker_D_a[9] = 0.0f;
-        out_plucker_D_a[10] = w_A_5*x55 + x46*x56;
-        out_plucker_D_a[11] = -w_A_4*x58 - x48*x59;
-        out_plucker_D_a[12] = -w_A_5*x51 - x3*x56;
+        out_plucker_D_a[10] = x1*x22 + x22*x46;
+        out_plucker_D_a[11] = -x2*x75 - x48*x75;
+        out_plucker_D_a[12] = -x0*x22 - x22*x3;
         out_plucker_D_a[13] = 0.0f;
-        out_plucker_D_a[14] = w_A_3*x58 + x48*x52;
-        out_plucker_D_a[15] = w_A_4*x51 + x3*x59;
-        out_plucker_D_a[16] = -w_A_3*x55 - x46*x52;
+        out_plucker_D_a[14] = x2*x23 + x23*x48;
+        out_plucker_D_a[15] = x0*x75 + x3*x75;
+        out_plucker_D_a[16] = -x1*x23 - x23*x46;
         out_plucker_D_a[17] = 0.0f;
         singular |= (x4) == 0.0;
-        const double finite = (((x5 - x5) + ((x19 - x19) + (x20 - x20))) + ((x29 - x29) + ((x60 - x60) + (x4 - x4))));
+        const double finite = (((x5 - x5) + ((x19 - x19) + (x20 - x20))) + (((x29 - x29) + (x51 - x51)) + ((x61 - x61) + (x4 - x4))));
         singular |= finite != finite;
     }
     return singular;

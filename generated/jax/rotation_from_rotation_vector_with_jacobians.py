@@ -55,7 +55,7 @@ def _main(w_0, w_1, w_2):
     x12 = w_2*x11
     x13 = -x2*x3 + 1.0
     x14 = w_0*x6
-    x15 = jax.numpy.where(jax.numpy.less(x2, 1.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(7.398571721961897e-18*x2 - 2.499073114973796e-15) + 6.6912682653423392e-13) - 1.376489471727567e-10) + 2.08767569878681e-8) - 2.2045855379188711e-6) + 0.00014880952380952382) - 0.0055555555555555558) + 0.083333333333333329, (-jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2))*_sin(jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2))) - 2.0*_cos(jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2))) + 2.0)*jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, 1.0/(x2*x2)))
+    x15 = jax.numpy.where(jax.numpy.less(x2, 2.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(7.398571721961897e-18 - 1.7793582784901146e-20*x2) - 2.499073114973796e-15) + 6.6912682653423392e-13) - 1.376489471727567e-10) + 2.08767569878681e-8) - 2.2045855379188711e-6) + 0.00014880952380952382) - 0.0055555555555555558) + 0.083333333333333329, (-jax.numpy.where(jax.numpy.less(x2, 2.0), 1.414213562373095, jax.numpy.sqrt(x2))*_sin(jax.numpy.where(jax.numpy.less(x2, 2.0), 1.414213562373095, jax.numpy.sqrt(x2))) - 2.0*_cos(jax.numpy.where(jax.numpy.less(x2, 2.0), 1.414213562373095, jax.numpy.sqrt(x2))) + 2.0)*jax.numpy.where(jax.numpy.less(x2, 2.0), 0.25, 1.0/(x2*x2)))
     x16 = w_0*x15
     x17 = -2.0*x8
     x18 = (w_1*w_1*w_1)
@@ -66,10 +66,10 @@ def _main(w_0, w_1, w_2):
     x23 = (w_2*w_2*w_2)
     x24 = w_2*x0
     x25 = x15*x23 + x15*x24
-    x26 = jax.numpy.where(jax.numpy.less(x2, 0.5), x2*(x2*(x2*(x2*(x2*(x2*(1.0706029224547743e-11 - 4.498331606952833e-14*x2) - 1.9270852604185937e-9) + 2.5052108385441718e-7) - 2.2045855379188714e-5) + 0.0011904761904761906) - 0.033333333333333333) + 0.33333333333333331, (-jax.numpy.where(jax.numpy.less(x2, 0.5), 0.70710678118654752, jax.numpy.sqrt(x2))*_cos(jax.numpy.where(jax.numpy.less(x2, 0.5), 0.70710678118654752, jax.numpy.sqrt(x2))) + _sin(jax.numpy.where(jax.numpy.less(x2, 0.5), 0.70710678118654752, jax.numpy.sqrt(x2))))*jax.numpy.where(jax.numpy.less(x2, 0.5), 2.8284271247461901, 1.0/(x2*jax.numpy.sqrt(x2))))
+    x26 = jax.numpy.where(jax.numpy.less(x2, 1.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(1.4797143443923793e-16*x2 - 4.498331606952833e-14) + 1.0706029224547743e-11) - 1.9270852604185937e-9) + 2.5052108385441718e-7) - 2.2045855379188714e-5) + 0.0011904761904761906) - 0.033333333333333333) + 0.33333333333333331, (-jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2))*_cos(jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2))) + _sin(jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2))))*jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, 1.0/(x2*jax.numpy.sqrt(x2))))
     x27 = w_2*x26
     x28 = w_0*x27
-    x29 = jax.numpy.where(jax.numpy.less(x2, 1.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(2.499073114973796e-15 - 7.398571721961897e-18*x2) - 6.6912682653423392e-13) + 1.376489471727567e-10) - 2.08767569878681e-8) + 2.2045855379188711e-6) - 0.00014880952380952382) + 0.0055555555555555558) - 0.083333333333333329, (jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2))*_sin(jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2))) + 2.0*_cos(jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2))) - 2.0)*jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, 1.0/(x2*x2)))
+    x29 = jax.numpy.where(jax.numpy.less(x2, 2.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(1.7793582784901146e-20*x2 - 7.398571721961897e-18) + 2.499073114973796e-15) - 6.6912682653423392e-13) + 1.376489471727567e-10) - 2.08767569878681e-8) + 2.2045855379188711e-6) - 0.00014880952380952382) + 0.0055555555555555558) - 0.083333333333333329, (jax.numpy.where(jax.numpy.less(x2, 2.0), 1.414213562373095, jax.numpy.sqrt(x2))*_sin(jax.numpy.where(jax.numpy.less(x2, 2.0), 1.414213562373095, jax.numpy.sqrt(x2))) + 2.0*_cos(jax.numpy.where(jax.numpy.less(x2, 2.0), 1.414213562373095, jax.numpy.sqrt(x2))) - 2.0)*jax.numpy.where(jax.numpy.less(x2, 2.0), 0.25, 1.0/(x2*x2)))
     x30 = x2*x29
     x31 = w_1*x30 + x20 + x8
     x32 = w_1*x27
@@ -79,7 +79,7 @@ def _main(w_0, w_1, w_2):
     x36 = x1*x26
     x37 = w_1*w_2*x33
     x38 = x37 - x6
-    x39 = jax.numpy.where(jax.numpy.less(x2, 0.5), x2*(x2*(x2*(x2*(x2*(x2*(4.498331606952833e-14*x2 - 1.0706029224547743e-11) + 1.9270852604185937e-9) - 2.5052108385441718e-7) + 2.2045855379188714e-5) - 0.0011904761904761906) + 0.033333333333333333) - 0.33333333333333331, (jax.numpy.where(jax.numpy.less(x2, 0.5), 0.70710678118654752, jax.numpy.sqrt(x2))*_cos(jax.numpy.where(jax.numpy.less(x2, 0.5), 0.70710678118654752, jax.numpy.sqrt(x2))) - _sin(jax.numpy.where(jax.numpy.less(x2, 0.5), 0.70710678118654752, jax.numpy.sqrt(x2))))*jax.numpy.where(jax.numpy.less(x2, 0.5), 2.8284271247461901, 1.0/(x2*jax.numpy.sqrt(x2))))
+    x39 = jax.numpy.where(jax.numpy.less(x2, 1.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(4.498331606952833e-14 - 1.4797143443923793e-16*x2) - 1.0706029224547743e-11) + 1.9270852604185937e-9) - 2.5052108385441718e-7) + 2.2045855379188714e-5) - 0.0011904761904761906) + 0.033333333333333333) - 0.33333333333333331, (jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2))*_cos(jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2))) - _sin(jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2))))*jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, 1.0/(x2*jax.numpy.sqrt(x2))))
     x40 = w_1*x39
     x41 = w_0*x40
     x42 = w_2*x30 + x21 + x25

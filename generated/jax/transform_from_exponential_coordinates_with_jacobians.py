@@ -68,7 +68,7 @@ def _main(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5):
     x25 = x24*xi_1
     x26 = x14*x21
     x27 = x24*xi_2
-    x28 = jax.numpy.where(jax.numpy.less(x2, 1.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(7.398571721961897e-18*x2 - 2.499073114973796e-15) + 6.6912682653423392e-13) - 1.376489471727567e-10) + 2.08767569878681e-8) - 2.2045855379188711e-6) + 0.00014880952380952382) - 0.0055555555555555558) + 0.083333333333333329, (-jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2))*_sin(jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2))) - 2.0*_cos(jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2))) + 2.0)*jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, 1.0/(x2*x2)))
+    x28 = jax.numpy.where(jax.numpy.less(x2, 2.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(7.398571721961897e-18 - 1.7793582784901146e-20*x2) - 2.499073114973796e-15) + 6.6912682653423392e-13) - 1.376489471727567e-10) + 2.08767569878681e-8) - 2.2045855379188711e-6) + 0.00014880952380952382) - 0.0055555555555555558) + 0.083333333333333329, (-jax.numpy.where(jax.numpy.less(x2, 2.0), 1.414213562373095, jax.numpy.sqrt(x2))*_sin(jax.numpy.where(jax.numpy.less(x2, 2.0), 1.414213562373095, jax.numpy.sqrt(x2))) - 2.0*_cos(jax.numpy.where(jax.numpy.less(x2, 2.0), 1.414213562373095, jax.numpy.sqrt(x2))) + 2.0)*jax.numpy.where(jax.numpy.less(x2, 2.0), 0.25, 1.0/(x2*x2)))
     x29 = x28*xi_0
     x30 = -2.0*x8
     x31 = (xi_1*xi_1*xi_1)
@@ -78,10 +78,10 @@ def _main(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5):
     x35 = (xi_2*xi_2*xi_2)
     x36 = x0*xi_2
     x37 = x28*x35 + x28*x36
-    x38 = jax.numpy.where(jax.numpy.less(x2, 0.5), x2*(x2*(x2*(x2*(x2*(x2*(1.0706029224547743e-11 - 4.498331606952833e-14*x2) - 1.9270852604185937e-9) + 2.5052108385441718e-7) - 2.2045855379188714e-5) + 0.0011904761904761906) - 0.033333333333333333) + 0.33333333333333331, (-jax.numpy.where(jax.numpy.less(x2, 0.5), 0.70710678118654752, jax.numpy.sqrt(x2))*_cos(jax.numpy.where(jax.numpy.less(x2, 0.5), 0.70710678118654752, jax.numpy.sqrt(x2))) + _sin(jax.numpy.where(jax.numpy.less(x2, 0.5), 0.70710678118654752, jax.numpy.sqrt(x2))))*jax.numpy.where(jax.numpy.less(x2, 0.5), 2.8284271247461901, 1.0/(x2*jax.numpy.sqrt(x2))))
+    x38 = jax.numpy.where(jax.numpy.less(x2, 1.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(1.4797143443923793e-16*x2 - 4.498331606952833e-14) + 1.0706029224547743e-11) - 1.9270852604185937e-9) + 2.5052108385441718e-7) - 2.2045855379188714e-5) + 0.0011904761904761906) - 0.033333333333333333) + 0.33333333333333331, (-jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2))*_cos(jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2))) + _sin(jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2))))*jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, 1.0/(x2*jax.numpy.sqrt(x2))))
     x39 = x38*xi_2
     x40 = x39*xi_0
-    x41 = jax.numpy.where(jax.numpy.less(x2, 1.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(2.499073114973796e-15 - 7.398571721961897e-18*x2) - 6.6912682653423392e-13) + 1.376489471727567e-10) - 2.08767569878681e-8) + 2.2045855379188711e-6) - 0.00014880952380952382) + 0.0055555555555555558) - 0.083333333333333329, (jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2))*_sin(jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2))) + 2.0*_cos(jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2))) - 2.0)*jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, 1.0/(x2*x2)))
+    x41 = jax.numpy.where(jax.numpy.less(x2, 2.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(1.7793582784901146e-20*x2 - 7.398571721961897e-18) + 2.499073114973796e-15) - 6.6912682653423392e-13) + 1.376489471727567e-10) - 2.08767569878681e-8) + 2.2045855379188711e-6) - 0.00014880952380952382) + 0.0055555555555555558) - 0.083333333333333329, (jax.numpy.where(jax.numpy.less(x2, 2.0), 1.414213562373095, jax.numpy.sqrt(x2))*_sin(jax.numpy.where(jax.numpy.less(x2, 2.0), 1.414213562373095, jax.numpy.sqrt(x2))) + 2.0*_cos(jax.numpy.where(jax.numpy.less(x2, 2.0), 1.414213562373095, jax.numpy.sqrt(x2))) - 2.0)*jax.numpy.where(jax.numpy.less(x2, 2.0), 0.25, 1.0/(x2*x2)))
     x42 = x2*x41
     x43 = x33 + x42*xi_1 + x8
     x44 = x39*xi_1
@@ -92,7 +92,7 @@ def _main(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5):
     x49 = x45*xi_1
     x50 = x49*xi_2
     x51 = x50 - x6
-    x52 = jax.numpy.where(jax.numpy.less(x2, 0.5), x2*(x2*(x2*(x2*(x2*(x2*(4.498331606952833e-14*x2 - 1.0706029224547743e-11) + 1.9270852604185937e-9) - 2.5052108385441718e-7) + 2.2045855379188714e-5) - 0.0011904761904761906) + 0.033333333333333333) - 0.33333333333333331, (jax.numpy.where(jax.numpy.less(x2, 0.5), 0.70710678118654752, jax.numpy.sqrt(x2))*_cos(jax.numpy.where(jax.numpy.less(x2, 0.5), 0.70710678118654752, jax.numpy.sqrt(x2))) - _sin(jax.numpy.where(jax.numpy.less(x2, 0.5), 0.70710678118654752, jax.numpy.sqrt(x2))))*jax.numpy.where(jax.numpy.less(x2, 0.5), 2.8284271247461901, 1.0/(x2*jax.numpy.sqrt(x2))))
+    x52 = jax.numpy.where(jax.numpy.less(x2, 1.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(4.498331606952833e-14 - 1.4797143443923793e-16*x2) - 1.0706029224547743e-11) + 1.9270852604185937e-9) - 2.5052108385441718e-7) + 2.2045855379188714e-5) - 0.0011904761904761906) + 0.033333333333333333) - 0.33333333333333331, (jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2))*_cos(jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2))) - _sin(jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2))))*jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, 1.0/(x2*jax.numpy.sqrt(x2))))
     x53 = x52*xi_1
     x54 = x53*xi_0
     x55 = x13 + x37 + x42*xi_2
@@ -102,7 +102,7 @@ def _main(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5):
     x59 = x1*x45
     x60 = x11 + x59
     x61 = xi_2*xi_4
-    x62 = jax.numpy.where(jax.numpy.less(x2, 2.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(3.5231293914104271e-19 - 7.7363403412613678e-22*x2) - 1.3153016394598927e-16) + 3.936040156083729e-14) - 9.1765964781837793e-12) + 1.6059043836821615e-9) - 2.0041686708353376e-7) + 1.6534391534391536e-5) - 0.00079365079365079365) + 0.016666666666666666, (jax.numpy.where(jax.numpy.less(x2, 2.0), 1.414213562373095, jax.numpy.sqrt(x2))*_cos(jax.numpy.where(jax.numpy.less(x2, 2.0), 1.414213562373095, jax.numpy.sqrt(x2))) + 2.0*jax.numpy.where(jax.numpy.less(x2, 2.0), 1.414213562373095, jax.numpy.sqrt(x2)) - 3.0*_sin(jax.numpy.where(jax.numpy.less(x2, 2.0), 1.414213562373095, jax.numpy.sqrt(x2))))*jax.numpy.where(jax.numpy.less(x2, 2.0), 0.17677669529663688, 1.0/((x2*x2)*jax.numpy.sqrt(x2))))
+    x62 = jax.numpy.where(jax.numpy.less(x2, 4.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(1.1359381143141137e-48*x2 - 1.7648891123448757e-45) + 2.4702564609120444e-42) - 3.096829746762205e-39) + 3.4549006862315854e-36) - 3.4051501163498504e-33) + 2.9405903504764064e-30) - 2.204085567310931e-27) + 1.4183290625645841e-24) - 7.7363403412613678e-22) + 3.5231293914104271e-19) - 1.3153016394598927e-16) + 3.936040156083729e-14) - 9.1765964781837793e-12) + 1.6059043836821615e-9) - 2.0041686708353376e-7) + 1.6534391534391536e-5) - 0.00079365079365079365) + 0.016666666666666666, (jax.numpy.where(jax.numpy.less(x2, 4.0), 2.0, jax.numpy.sqrt(x2))*_cos(jax.numpy.where(jax.numpy.less(x2, 4.0), 2.0, jax.numpy.sqrt(x2))) + 2.0*jax.numpy.where(jax.numpy.less(x2, 4.0), 2.0, jax.numpy.sqrt(x2)) - 3.0*_sin(jax.numpy.where(jax.numpy.less(x2, 4.0), 2.0, jax.numpy.sqrt(x2))))*jax.numpy.where(jax.numpy.less(x2, 4.0), 0.03125, 1.0/((x2*x2)*jax.numpy.sqrt(x2))))
     x63 = x31*x62
     x64 = x35*x62
     x65 = x0*xi_0
@@ -111,7 +111,7 @@ def _main(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5):
     x68 = x62*xi_4
     x69 = x1*xi_1
     x70 = x62*xi_5
-    x71 = jax.numpy.where(jax.numpy.less(x2, 2.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(7.7363403412613678e-22*x2 - 3.5231293914104271e-19) + 1.3153016394598927e-16) - 3.936040156083729e-14) + 9.1765964781837793e-12) - 1.6059043836821615e-9) + 2.0041686708353376e-7) - 1.6534391534391536e-5) + 0.00079365079365079365) - 0.016666666666666666, (-jax.numpy.where(jax.numpy.less(x2, 2.0), 1.414213562373095, jax.numpy.sqrt(x2))*_cos(jax.numpy.where(jax.numpy.less(x2, 2.0), 1.414213562373095, jax.numpy.sqrt(x2))) - 2.0*jax.numpy.where(jax.numpy.less(x2, 2.0), 1.414213562373095, jax.numpy.sqrt(x2)) + 3.0*_sin(jax.numpy.where(jax.numpy.less(x2, 2.0), 1.414213562373095, jax.numpy.sqrt(x2))))*jax.numpy.where(jax.numpy.less(x2, 2.0), 0.17677669529663688, 1.0/((x2*x2)*jax.numpy.sqrt(x2))))
+    x71 = jax.numpy.where(jax.numpy.less(x2, 4.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(1.7648891123448757e-45 - 1.1359381143141137e-48*x2) - 2.4702564609120444e-42) + 3.096829746762205e-39) - 3.4549006862315854e-36) + 3.4051501163498504e-33) - 2.9405903504764064e-30) + 2.204085567310931e-27) - 1.4183290625645841e-24) + 7.7363403412613678e-22) - 3.5231293914104271e-19) + 1.3153016394598927e-16) - 3.936040156083729e-14) + 9.1765964781837793e-12) - 1.6059043836821615e-9) + 2.0041686708353376e-7) - 1.6534391534391536e-5) + 0.00079365079365079365) - 0.016666666666666666, (-jax.numpy.where(jax.numpy.less(x2, 4.0), 2.0, jax.numpy.sqrt(x2))*_cos(jax.numpy.where(jax.numpy.less(x2, 4.0), 2.0, jax.numpy.sqrt(x2))) - 2.0*jax.numpy.where(jax.numpy.less(x2, 4.0), 2.0, jax.numpy.sqrt(x2)) + 3.0*_sin(jax.numpy.where(jax.numpy.less(x2, 4.0), 2.0, jax.numpy.sqrt(x2))))*jax.numpy.where(jax.numpy.less(x2, 4.0), 0.03125, 1.0/((x2*x2)*jax.numpy.sqrt(x2))))
     x72 = x71*xi_4
     x73 = x2*xi_1
     x74 = x71*xi_5

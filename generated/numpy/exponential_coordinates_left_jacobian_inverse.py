@@ -98,7 +98,7 @@ def _main(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5):
     x69 = x4*x62
     x70 = x57*xi_4
     x71 = x59*xi_5
-    x72 = numpy.where(numpy.less(x3, 2.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(3.5231293914104271e-19 - 7.7363403412613678e-22*x3) - 1.3153016394598927e-16) + 3.936040156083729e-14) - 9.1765964781837793e-12) + 1.6059043836821615e-9) - 2.0041686708353376e-7) + 1.6534391534391536e-5) - 0.00079365079365079365) + 0.016666666666666666, (numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3))*numpy.cos(numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3))) + 2*numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3)) - 3*numpy.sin(numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3))))*numpy.where(numpy.less(x3, 2.0), 0.17677669529663688, 1.0/((x3*x3)*numpy.sqrt(x3))))
+    x72 = numpy.where(numpy.less(x3, 4.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(1.1359381143141137e-48*x3 - 1.7648891123448757e-45) + 2.4702564609120444e-42) - 3.096829746762205e-39) + 3.4549006862315854e-36) - 3.4051501163498504e-33) + 2.9405903504764064e-30) - 2.204085567310931e-27) + 1.4183290625645841e-24) - 7.7363403412613678e-22) + 3.5231293914104271e-19) - 1.3153016394598927e-16) + 3.936040156083729e-14) - 9.1765964781837793e-12) + 1.6059043836821615e-9) - 2.0041686708353376e-7) + 1.6534391534391536e-5) - 0.00079365079365079365) + 0.016666666666666666, (numpy.where(numpy.less(x3, 4.0), 2.0, numpy.sqrt(x3))*numpy.cos(numpy.where(numpy.less(x3, 4.0), 2.0, numpy.sqrt(x3))) + 2*numpy.where(numpy.less(x3, 4.0), 2.0, numpy.sqrt(x3)) - 3*numpy.sin(numpy.where(numpy.less(x3, 4.0), 2.0, numpy.sqrt(x3))))*numpy.where(numpy.less(x3, 4.0), 0.03125, 1.0/((x3*x3)*numpy.sqrt(x3))))
     x73 = (0.25)*x1
     x74 = (0.25)*x2
     x75 = (0.25)*x0 + x73 + x74
@@ -156,13 +156,13 @@ def _main(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5):
     x127 = numpy.cos(numpy.sqrt(x3))
     x128 = x127 - 1
     x129 = x19*xi_5
-    x130 = numpy.where(numpy.less(x3, 0.25), x3*(x3*(x3*(x3*(x3*(x3*(1.1853103784320715e-11 - 4.9044309881360752e-14*x3) - 2.1794416635686479e-9) + 2.9227459783015339e-7) - 2.7006172839506174e-5) + 0.0015873015873015873) - 0.052777777777777778) - 0.16666666666666666, (-numpy.where(numpy.less(x3, 0.25), 0.0625, (x3*x3)) - numpy.where(numpy.less(x3, 0.25), 0.25, x3)*numpy.cos(numpy.where(numpy.less(x3, 0.25), 0.5, numpy.sqrt(x3))) + 5*numpy.where(numpy.less(x3, 0.25), 0.25, x3) + 8*numpy.cos(numpy.where(numpy.less(x3, 0.25), 0.5, numpy.sqrt(x3))) - 8)*numpy.where(numpy.less(x3, 0.25), 16.0, 1.0/(x3*x3)))
+    x130 = numpy.where(numpy.less(x3, 0.5), x3*(x3*(x3*(x3*(x3*(x3*(1.1853103784320715e-11 - 4.9044309881360752e-14*x3) - 2.1794416635686479e-9) + 2.9227459783015339e-7) - 2.7006172839506174e-5) + 0.0015873015873015873) - 0.052777777777777778) - 0.16666666666666666, (-numpy.where(numpy.less(x3, 0.5), 0.25, (x3*x3)) - numpy.where(numpy.less(x3, 0.5), 0.5, x3)*numpy.cos(numpy.where(numpy.less(x3, 0.5), 0.70710678118654752, numpy.sqrt(x3))) + 5*numpy.where(numpy.less(x3, 0.5), 0.5, x3) + 8*numpy.cos(numpy.where(numpy.less(x3, 0.5), 0.70710678118654752, numpy.sqrt(x3))) - 8)*numpy.where(numpy.less(x3, 0.5), 4.0, 1.0/(x3*x3)))
     x131 = x74*xi_5
     x132 = x2*xi_5
     x133 = x18*x72
     x134 = x75 + 0.5
     x135 = x2*x35
-    x136 = numpy.where(numpy.less(x3, 0.5), x3*(x3*(x3*(x3*(x3*(x3*(3.4412236793189175e-11 - 1.4338431997162155e-13*x3) - 6.2630270963604301e-9) + 8.2671957671957675e-7) - 7.4404761904761911e-5) + 0.0041666666666666666) - 0.125) - 0.5, (-2*numpy.where(numpy.less(x3, 0.5), 0.5, x3) - 3*numpy.cos(numpy.where(numpy.less(x3, 0.5), 0.70710678118654752, numpy.sqrt(x3))) + 3)*numpy.where(numpy.less(x3, 0.5), 2.0, 1.0/x3))
+    x136 = numpy.where(numpy.less(x3, 1.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(4.6857620905758683e-16*x3 - 1.4338431997162155e-13) + 3.4412236793189175e-11) - 6.2630270963604301e-9) + 8.2671957671957675e-7) - 7.4404761904761911e-5) + 0.0041666666666666666) - 0.125) - 0.5, (-2*numpy.where(numpy.less(x3, 1.0), 1.0, x3) - 3*numpy.cos(numpy.where(numpy.less(x3, 1.0), 1.0, numpy.sqrt(x3))) + 3)*numpy.where(numpy.less(x3, 1.0), 1.0, 1.0/x3))
     x137 = x8*xi_5
     x138 = x46*xi_2
     x139 = (0.25)*x130
@@ -189,7 +189,7 @@ def _main(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5):
     x160 = x143*x89
     x161 = x145*x89
     x162 = x123*xi_4
-    x163 = numpy.where(numpy.less(x3, 0.5), x3*(x3*(x3*(x3*(x3*(x3*(1.4338431997162155e-13*x3 - 3.4412236793189175e-11) + 6.2630270963604301e-9) - 8.2671957671957675e-7) + 7.4404761904761911e-5) - 0.0041666666666666666) + 0.125) + 0.5, (2*numpy.where(numpy.less(x3, 0.5), 0.5, x3) + 3*numpy.cos(numpy.where(numpy.less(x3, 0.5), 0.70710678118654752, numpy.sqrt(x3))) - 3)*numpy.where(numpy.less(x3, 0.5), 2.0, 1.0/x3))
+    x163 = numpy.where(numpy.less(x3, 1.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(1.4338431997162155e-13 - 4.6857620905758683e-16*x3) - 3.4412236793189175e-11) + 6.2630270963604301e-9) - 8.2671957671957675e-7) + 7.4404761904761911e-5) - 0.0041666666666666666) + 0.125) + 0.5, (2*numpy.where(numpy.less(x3, 1.0), 1.0, x3) + 3*numpy.cos(numpy.where(numpy.less(x3, 1.0), 1.0, numpy.sqrt(x3))) - 3)*numpy.where(numpy.less(x3, 1.0), 1.0, 1.0/x3))
     x164 = x163*xi_3
     x165 = x33*xi_0
     x166 = numpy.where(numpy.less(x3, 2.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(8.2206352466243297e-19 - 1.7793582784901148e-21*x3) - 3.1238413937172451e-16) + 9.5589546647747705e-14) - 2.2941491195459449e-11) + 4.17535139757362e-9) - 5.5114638447971777e-7) + 4.9603174603174603e-5) - 0.0027777777777777779) + 0.083333333333333329, (numpy.where(numpy.less(x3, 2.0), 2.0, x3) + 2*numpy.cos(numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3))) - 2)*numpy.where(numpy.less(x3, 2.0), 0.25, 1.0/(x3*x3)))
@@ -245,7 +245,7 @@ def _main(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5):
     x216 = -x125
     x217 = -x128
     x218 = x19*xi_4
-    x219 = numpy.where(numpy.less(x3, 0.25), x3*(x3*(x3*(x3*(x3*(x3*(4.9044309881360752e-14*x3 - 1.1853103784320715e-11) + 2.1794416635686479e-9) - 2.9227459783015339e-7) + 2.7006172839506174e-5) - 0.0015873015873015873) + 0.052777777777777778) + 0.16666666666666666, (numpy.where(numpy.less(x3, 0.25), 0.0625, (x3*x3)) + numpy.where(numpy.less(x3, 0.25), 0.25, x3)*numpy.cos(numpy.where(numpy.less(x3, 0.25), 0.5, numpy.sqrt(x3))) - 5*numpy.where(numpy.less(x3, 0.25), 0.25, x3) - 8*numpy.cos(numpy.where(numpy.less(x3, 0.25), 0.5, numpy.sqrt(x3))) + 8)*numpy.where(numpy.less(x3, 0.25), 16.0, 1.0/(x3*x3)))
+    x219 = numpy.where(numpy.less(x3, 0.5), x3*(x3*(x3*(x3*(x3*(x3*(4.9044309881360752e-14*x3 - 1.1853103784320715e-11) + 2.1794416635686479e-9) - 2.9227459783015339e-7) + 2.7006172839506174e-5) - 0.0015873015873015873) + 0.052777777777777778) + 0.16666666666666666, (numpy.where(numpy.less(x3, 0.5), 0.25, (x3*x3)) + numpy.where(numpy.less(x3, 0.5), 0.5, x3)*numpy.cos(numpy.where(numpy.less(x3, 0.5), 0.70710678118654752, numpy.sqrt(x3))) - 5*numpy.where(numpy.less(x3, 0.5), 0.5, x3) - 8*numpy.cos(numpy.where(numpy.less(x3, 0.5), 0.70710678118654752, numpy.sqrt(x3))) + 8)*numpy.where(numpy.less(x3, 0.5), 4.0, 1.0/(x3*x3)))
     x220 = x219*x73
     x221 = x3*x72
     x222 = -x134

@@ -5,7 +5,15 @@
 # template: array_kernel.py.j2
 # math hash: sha256:b7a461f5c6ac5b7d
 # sympy 1.14.0, rigidsym 0.2.0
-# operations: 282
+# operations: 287
+# accuracy rewrite (main): cos phi as 1 - 2 s^2 or 2 c^2 - 1: the bare cos phi left by the
+#     half-angle rewrite, as 1 - 2 s^2 or 2 c^2 - 1 (s, c: sin, cos of phi/2) rather than 1 -
+#     2 s^2: the form of the measured least error among 1 - 2 s^2, 1 - 2 s^2 or 2 c^2 - 1, (c
+#     - s) (c + s) (rigidsym.codegen.cos_form); worst ratio to the rule max(2 e_best, 4 u)
+#     (e_best: the most accurate of the textbook formula and the forms tried, per point;
+#     rigidsym.codegen.rule) at 408 points of the regimes (rigidsym.codegen.regimes, exact,
+#     rounded to float64) 1 -> 0.79, never worse than the textbook formula by that rule; equal
+#     to the declared formula by the zero test (exact-cancel)
 """Time derivative of L_matrix along omega, with the Jacobians of its outputs.
 
 d/dt L_matrix(e(t), phi(t)) with e_dot, phi_dot from omega (the corrected form where the printed one does not hold); and d(output)/d(input) by sympy on the declared formula
@@ -19,7 +27,7 @@ the checked, differentiable API.
 
 import torch
 
-OPS = 282
+OPS = 287
 MATH_HASH = "b7a461f5c6ac5b7d"
 COLUMNS = ("e_0", "e_1", "e_2", "phi", "omega_0", "omega_1", "omega_2", )
 
@@ -31,205 +39,206 @@ def _main(e_0, e_1, e_2, phi, omega_0, omega_1, omega_2):
     x3 = 2.0*x2
     x4 = e_0*x3
     x5 = e_2*x4
-    x6 = x1*torch.cos(x0)
-    x7 = e_1*x6
-    x8 = 2.0*x7
-    x9 = -x8
-    x10 = x5 + x9
-    x11 = (0.5)*omega_1
-    x12 = e_1*x4
-    x13 = e_2*x6
-    x14 = 2.0*x13
-    x15 = x12 + x14
-    x16 = omega_0*x6
-    x17 = 2.0*x16
-    x18 = omega_1*x6
-    x19 = 2.0*x18
-    x20 = omega_2*x6
-    x21 = 2.0*x20
-    x22 = e_0*x17 + e_1*x19 + e_2*x21
-    x23 = e_1*e_2
-    x24 = x23*x3
-    x25 = e_0*x6
-    x26 = 2.0*x25
-    x27 = x24 + x26
-    x28 = (e_1*e_1)
-    x29 = 1.0 - x28
-    x30 = 1.0 - x3
-    x31 = x29*x30
-    x32 = x28 + x31
-    x33 = (e_2*e_2)
-    x34 = 1.0 - x33
-    x35 = x30*x34
-    x36 = x33 + x35
-    x37 = -x24 + x26
-    x38 = -x37
-    x39 = (0.5)*omega_0
-    x40 = (e_0*e_0)
-    x41 = 1.0 - x40
-    x42 = x30*x41
-    x43 = x40 + x42
-    x44 = (0.5)*omega_2
-    x45 = -x14
-    x46 = x12 + x45
-    x47 = x5 + x8
-    x48 = omega_1*x2
-    x49 = e_2*x48
-    x50 = omega_2*x2
-    x51 = e_1*x50
-    x52 = e_0*x50
-    x53 = -x18
-    x54 = e_0*x48
-    x55 = x20 + x54
-    x56 = e_1*x3
-    x57 = omega_2*x56 - x49
-    x58 = e_1*x48
-    x59 = -x20
-    x60 = e_2*x50
-    x61 = e_2*x3
-    x62 = -omega_1*x61 + x51
-    x63 = omega_2*x4
-    x64 = omega_0*x2
-    x65 = e_2*x64
-    x66 = -x65
-    x67 = -x16
-    x68 = e_0*x64
-    x69 = e_1*x64
-    x70 = omega_0*x61
-    x71 = omega_1*x4 - x69
-    x72 = -omega_0*x56
-    x73 = x18 + x65
-    x74 = e_0*x14
-    x75 = e_1*x30
-    x76 = x74 - x75
-    x77 = e_2*x30
-    x78 = e_0*x8
-    x79 = x77 + x78
-    x80 = e_0*x30
-    x81 = omega_0*x80 + omega_1*x75 + omega_2*x77
-    x82 = e_2*x8
-    x83 = x80 + x82
-    x84 = x80 - x82
-    x85 = -x84
-    x86 = -x77 + x78
-    x87 = x74 + x75
-    x88 = 2.0*x6
-    x89 = x29*x88
-    x90 = x34*x88
-    x91 = x41*x88
-    x92 = e_0*x2
-    x93 = e_2*x92
-    x94 = x7 + x93
-    x95 = -x94
-    x96 = e_1*x92
-    x97 = -x13 + x96
-    x98 = x2*x23
-    x99 = x25 + x98
-    x100 = -x99
-    x101 = (0.5)*x28 + (0.5)*x31
-    x102 = (0.5)*x33 + (0.5)*x35
-    x103 = -x25 + x98
-    x104 = -x7 + x93
-    x105 = (0.5)*x40 + (0.5)*x42
-    x106 = x13 + x96
-    x107 = -x106
+    x6 = torch.cos(x0)
+    x7 = x1*x6
+    x8 = e_1*x7
+    x9 = 2.0*x8
+    x10 = -x9
+    x11 = x10 + x5
+    x12 = (0.5)*omega_1
+    x13 = e_1*x4
+    x14 = e_2*x7
+    x15 = 2.0*x14
+    x16 = x13 + x15
+    x17 = omega_0*x7
+    x18 = 2.0*x17
+    x19 = omega_1*x7
+    x20 = 2.0*x19
+    x21 = omega_2*x7
+    x22 = 2.0*x21
+    x23 = e_0*x18 + e_1*x20 + e_2*x22
+    x24 = e_1*e_2
+    x25 = x24*x3
+    x26 = e_0*x7
+    x27 = 2.0*x26
+    x28 = x25 + x27
+    x29 = (e_1*e_1)
+    x30 = 1.0 - x29
+    x31 = torch.where(torch.lt(x2, 0.5), 1.0 - x3, 2.0*(x6*x6) - 1.0)
+    x32 = x30*x31
+    x33 = x29 + x32
+    x34 = -x25 + x27
+    x35 = -x34
+    x36 = (e_2*e_2)
+    x37 = 1.0 - x36
+    x38 = x31*x37
+    x39 = x36 + x38
+    x40 = (0.5)*omega_0
+    x41 = (e_0*e_0)
+    x42 = 1.0 - x41
+    x43 = x31*x42
+    x44 = x41 + x43
+    x45 = (0.5)*omega_2
+    x46 = -x15
+    x47 = x13 + x46
+    x48 = x5 + x9
+    x49 = omega_1*x2
+    x50 = e_2*x49
+    x51 = omega_2*x2
+    x52 = e_1*x51
+    x53 = e_0*x51
+    x54 = -x19
+    x55 = e_0*x49
+    x56 = x21 + x55
+    x57 = e_1*x3
+    x58 = omega_2*x57 - x50
+    x59 = e_1*x49
+    x60 = -x21
+    x61 = e_2*x51
+    x62 = e_2*x3
+    x63 = -omega_1*x62 + x52
+    x64 = omega_2*x4
+    x65 = omega_0*x2
+    x66 = e_2*x65
+    x67 = -x66
+    x68 = -x17
+    x69 = e_0*x65
+    x70 = e_1*x65
+    x71 = omega_0*x62
+    x72 = omega_1*x4 - x70
+    x73 = -omega_0*x57
+    x74 = x19 + x66
+    x75 = e_0*x15
+    x76 = e_1*x31
+    x77 = x75 - x76
+    x78 = e_0*x9
+    x79 = e_2*x31
+    x80 = x78 + x79
+    x81 = e_0*x31
+    x82 = omega_0*x81 + omega_1*x76 + omega_2*x79
+    x83 = e_2*x9
+    x84 = x81 + x83
+    x85 = x81 - x83
+    x86 = -x85
+    x87 = x78 - x79
+    x88 = x75 + x76
+    x89 = 2.0*x7
+    x90 = x30*x89
+    x91 = x37*x89
+    x92 = x42*x89
+    x93 = e_0*x2
+    x94 = e_2*x93
+    x95 = x8 + x94
+    x96 = -x95
+    x97 = e_1*x93
+    x98 = -x14 + x97
+    x99 = x2*x24
+    x100 = x26 + x99
+    x101 = -x100
+    x102 = (0.5)*x29 + (0.5)*x32
+    x103 = (0.5)*x36 + (0.5)*x38
+    x104 = -x26 + x99
+    x105 = -x8 + x94
+    x106 = (0.5)*x41 + (0.5)*x43
+    x107 = x14 + x97
+    x108 = -x107
     return (
-        (0.5)*omega_2*x15 - x10*x11 - x22,
-        (0.5)*omega_2*x32 - x11*x27,
-        (0.5)*omega_2*x38 - x11*x36,
-        x10*x39 - x43*x44,
-        (0.5)*omega_0*x27 - x22 - x44*x46,
-        x36*x39 - x44*x47,
-        (0.5)*omega_1*x43 - x15*x39,
-        (0.5)*omega_1*x46 - x32*x39,
-        (0.5)*omega_1*x47 - x22 - x38*x39,
-        x11*x46 - x39*(x32 + x36) + x44*x47,
-        -x11*(x36 + x43) + x15*x39 - x37*x44,
-        x10*x39 + x11*x27 - x44*(x32 + x43),
-        -x17 - x49 + x51,
-        x52 + x53,
-        -x55,
-        x53,
-        x57,
-        -x58,
-        x59,
-        x60,
-        x62,
-        -x63 - x66,
-        x67,
-        x68,
-        -x16 - x51,
-        -x19 - x52 - x66,
-        x59 + x69,
-        -x60,
-        x59,
-        -x52 + x70,
-        x71,
-        -x68,
-        x67,
+        (0.5)*omega_2*x16 - x11*x12 - x23,
+        (0.5)*omega_2*x33 - x12*x28,
+        (0.5)*omega_2*x35 - x12*x39,
+        x11*x40 - x44*x45,
+        (0.5)*omega_0*x28 - x23 - x45*x47,
+        x39*x40 - x45*x48,
+        (0.5)*omega_1*x44 - x16*x40,
+        (0.5)*omega_1*x47 - x33*x40,
+        (0.5)*omega_1*x48 - x23 - x35*x40,
+        x12*x47 - x40*(x33 + x39) + x45*x48,
+        -x12*(x39 + x44) + x16*x40 - x34*x45,
+        x11*x40 + x12*x28 - x45*(x33 + x44),
+        -x18 - x50 + x52,
+        x53 + x54,
+        -x56,
+        x54,
         x58,
-        x54 + x72,
-        x53,
-        x49 + x67,
-        -x73,
-        -x21 + x54 - x69,
-        x58 + x60,
-        x55 + x72,
-        -x18 + x52 - x70,
-        -x20 - x71,
-        x60 + x68,
-        x16 + x62,
-        -x63 + x73,
-        -x16 - x57,
-        x58 + x68,
-        (0.5)*omega_2*x79 - x11*x76 - x81,
-        -x11*x83 - x20*x29,
-        x18*x34 + x44*x85,
-        x20*x41 + x39*x76,
-        (0.5)*omega_0*x83 - x44*x86 - x81,
-        -x16*x34 - x44*x87,
-        -x18*x41 - x39*x79,
-        x11*x86 + x16*x29,
-        (0.5)*omega_1*x87 - x39*x85 - x81,
-        x11*x86 - x39*(-x89 - x90) + x44*x87,
-        -x11*(-x90 - x91) + x39*x79 - x44*x84,
-        x11*x83 + x39*x76 - x44*(-x89 - x91),
-        -x26,
-        x95,
-        x97,
+        -x59,
+        x60,
+        x61,
+        x63,
+        -x64 - x67,
+        x68,
+        x69,
+        -x17 - x52,
+        -x20 - x53 - x67,
+        x60 + x70,
+        -x61,
+        x60,
+        -x53 + x71,
+        x72,
+        -x69,
+        x68,
+        x59,
+        x55 + x73,
+        x54,
+        x50 + x68,
+        -x74,
+        -x22 + x55 - x70,
+        x59 + x61,
+        x56 + x73,
+        -x19 + x53 - x71,
+        -x21 - x72,
+        x61 + x69,
+        x17 + x63,
+        -x64 + x74,
+        -x17 - x58,
+        x59 + x69,
+        (0.5)*omega_2*x80 - x12*x77 - x82,
+        -x12*x84 - x21*x30,
+        x19*x37 + x45*x86,
+        x21*x42 + x40*x77,
+        (0.5)*omega_0*x84 - x45*x87 - x82,
+        -x17*x37 - x45*x88,
+        -x19*x42 - x40*x80,
+        x12*x87 + x17*x30,
+        (0.5)*omega_1*x88 - x40*x86 - x82,
+        x12*x87 - x40*(-x90 - x91) + x45*x88,
+        -x12*(-x91 - x92) + x40*x80 - x45*x85,
+        x12*x84 + x40*x77 - x45*(-x90 - x92),
+        -x27,
+        x96,
+        x98,
         0.0,
-        x100,
         x101,
-        0.0,
-        -x102,
-        x103,
-        x104,
-        0.0,
-        -x105,
-        x103,
-        x9,
-        x107,
         x102,
         0.0,
-        x95,
-        x107,
+        -x103,
+        x104,
         x105,
         0.0,
-        -x101,
-        x97,
-        0.0,
-        x100,
+        -x106,
         x104,
-        x45,
-        -x101 - x102,
-        x97,
-        x94,
-        x106,
-        -x102 - x105,
+        x10,
+        x108,
         x103,
+        0.0,
+        x96,
+        x108,
+        x106,
+        0.0,
+        -x102,
+        x98,
+        0.0,
+        x101,
+        x105,
+        x46,
+        -x102 - x103,
+        x98,
+        x95,
+        x107,
+        -x103 - x106,
         x104,
-        x99,
-        -x101 - x105,
+        x105,
+        x100,
+        -x102 - x106,
     ), (
     )
 

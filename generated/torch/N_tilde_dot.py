@@ -5,7 +5,15 @@
 # template: array_kernel.py.j2
 # math hash: sha256:b1c3eb794fbb8245
 # sympy 1.14.0, rigidsym 0.2.0
-# operations: 79
+# operations: 84
+# accuracy rewrite (main): cos phi as 1 - 2 s^2 or 2 c^2 - 1: the bare cos phi left by the
+#     half-angle rewrite, as 1 - 2 s^2 or 2 c^2 - 1 (s, c: sin, cos of phi/2) rather than 1 -
+#     2 s^2: the form of the measured least error among 1 - 2 s^2, 1 - 2 s^2 or 2 c^2 - 1, (c
+#     - s) (c + s) (rigidsym.codegen.cos_form); worst ratio to the rule max(2 e_best, 4 u)
+#     (e_best: the most accurate of the textbook formula and the forms tried, per point;
+#     rigidsym.codegen.rule) at 388 points of the regimes (rigidsym.codegen.regimes, exact,
+#     rounded to float64) 1.1 -> 0.65, never worse than the textbook formula by that rule;
+#     equal to the declared formula by the zero test (exact-cancel)
 """Time derivative of N_tilde along omega.
 
 d/dt N_tilde(e(t), phi(t)) with e_dot, phi_dot from omega (the corrected form where the printed one does not hold)
@@ -19,24 +27,24 @@ the checked, differentiable API.
 
 import torch
 
-OPS = 79
+OPS = 84
 MATH_HASH = "b1c3eb794fbb8245"
 COLUMNS = ("e_0", "e_1", "e_2", "phi", "omega_0", "omega_1", "omega_2", )
 
 
 def _main(e_0, e_1, e_2, phi, omega_0, omega_1, omega_2):
-    x0 = (0.5)*phi
-    x1 = torch.sin(x0)
-    x2 = (x1*x1)
-    x3 = 2.0*x2
-    x4 = e_0*omega_0 + e_1*omega_1 + e_2*omega_2
-    x5 = x4*(1.0 - x3)
-    x6 = torch.cos(x0)
-    x7 = 2.0*x1*x4*x6
+    x0 = e_0*omega_0 + e_1*omega_1 + e_2*omega_2
+    x1 = (0.5)*phi
+    x2 = torch.sin(x1)
+    x3 = (x2*x2)
+    x4 = 2.0*x3
+    x5 = torch.cos(x1)
+    x6 = x0*torch.where(torch.lt(x3, 0.5), 1.0 - x4, 2.0*(x5*x5) - 1.0)
+    x7 = 2.0*x0*x2*x5
     x8 = e_2*x7
     x9 = (0.5)*e_1
     x10 = (0.5)*e_0
-    x11 = x6/x1
+    x11 = x5/x2
     x12 = e_2*x11
     x13 = x10*x12
     x14 = x12*x9
@@ -49,20 +57,20 @@ def _main(e_0, e_1, e_2, phi, omega_0, omega_1, omega_2):
     x21 = omega_0*x15*(1.0 - (e_0*e_0)) + omega_1*(x18 - x19) + omega_2*(-x13 - x9)
     x22 = e_0*x7
     return (
-        x5,
-        -2.0*x16*x2 - x8,
-        x17 + x20*x3,
+        x6,
+        -2.0*x16*x3 - x8,
+        x17 + x20*x4,
         x21,
-        x16*x3 + x8,
-        x5,
-        -2.0*x2*x21 - x22,
+        x16*x4 + x8,
+        x6,
+        -2.0*x21*x3 - x22,
         x20,
-        -x17 - 2.0*x2*x20,
-        x21*x3 + x22,
-        x5,
+        -x17 - 2.0*x20*x3,
+        x21*x4 + x22,
+        x6,
         x16,
     ), (
-        x1,
+        x2,
     )
 
 
@@ -74,17 +82,17 @@ VARIANTS = (
 
 def _vjp(e_0, e_1, e_2, phi, omega_0, omega_1, omega_2, _g0, _g1, _g2, _g3, _g4, _g5, _g6, _g7, _g8, _g9, _g10, _g11):
     """The cotangents of the inputs (``COLUMNS``) from those of the outputs: reverse mode
-    over ``_main``, 225 operations."""
-    x0 = (0.5)*phi
-    x1 = torch.sin(x0)
-    x2 = (x1*x1)
-    x3 = 2.0*x2
-    x4 = e_0*omega_0 + e_1*omega_1 + e_2*omega_2
-    x6 = torch.cos(x0)
-    x7 = 2.0*x1*x4*x6
+    over ``_main``, 238 operations."""
+    x0 = e_0*omega_0 + e_1*omega_1 + e_2*omega_2
+    x1 = (0.5)*phi
+    x2 = torch.sin(x1)
+    x3 = (x2*x2)
+    x4 = 2.0*x3
+    x5 = torch.cos(x1)
+    x7 = 2.0*x0*x2*x5
     x9 = (0.5)*e_1
     x10 = (0.5)*e_0
-    x11 = x6/x1
+    x11 = x5/x2
     x12 = e_2*x11
     x13 = x10*x12
     x14 = x12*x9
@@ -95,15 +103,15 @@ def _vjp(e_0, e_1, e_2, phi, omega_0, omega_1, omega_2, _g0, _g1, _g2, _g3, _g4,
     x20 = omega_0*(-x18 - x19) + omega_1*x15*(1.0 - (e_1*e_1)) + omega_2*(x10 - x14)
     x21 = omega_0*x15*(1.0 - (e_0*e_0)) + omega_1*(x18 - x19) + omega_2*(-x13 - x9)
     _b0 = -_g6 + _g9
-    _c0 = 2.0*x2
-    _b1 = -_c0*_g6 + _g3 + _g9*x3
-    _b2 = -_c0*_g8 + _g2*x3 + _g7
+    _c0 = 2.0*x3
+    _b1 = -_c0*_g6 + _g3 + _g9*x4
+    _b2 = -_c0*_g8 + _g2*x4 + _g7
     _c1 = _b1*omega_1
     _c2 = _b2*omega_0
     _b3 = -_c1 - _c2
     _b4 = _c1 - _c2
     _b5 = _g2 - _g8
-    _b6 = -_c0*_g1 + _g11 + _g4*x3
+    _b6 = -_c0*_g1 + _g11 + _g4*x4
     _c3 = _b1*(1.0 - (e_0*e_0))
     _c4 = _b2*(1.0 - (e_1*e_1))
     _c5 = _b6*(1.0 - (e_2*e_2))
@@ -121,58 +129,62 @@ def _vjp(e_0, e_1, e_2, phi, omega_0, omega_1, omega_2, _g0, _g1, _g2, _g3, _g4,
     _b13 = _b8*x12 + _c10*x11 - _c8 + _c9
     _b14 = -_g1 + _g4
     _b15 = _b0*e_0 + _b14*e_2 + _b5*e_1
-    _c11 = 2.0*x1
-    _c12 = _b15*_c11
-    _b16 = _b11/x1 + _c12*x4
-    _b17 = _g0 + _g10 + _g5
-    _b18 = _b17*(1.0 - x3) + _c12*x6
-    _b19 = -_b17*x4 + _g2*x20 + _g4*x16 + _g9*x21
-    _b20 = 2.0*_b19 - 2.0*_g1*x16 - 2.0*_g6*x21 - 2.0*_g8*x20
-    _b21 = -_b11*x6/(x1*x1) + 2.0*_b15*x4*x6 + _b20*_c11
-    _b22 = -_b16*x1 + _b21*x6
-    _c13 = 2.0*x15
+    _b16 = _g0 + _g10 + _g5
+    _c11 = 2.0*x2
+    _c12 = _b15*x0
+    _c13 = torch.lt(x3, 0.5)
+    _c14 = _b16*x0
+    _b17 = _b11/x2 + _c11*_c12 + _c14*torch.where(_c13, 0.0, 4.0*x5)
+    _b18 = _c14*torch.where(_c13, -1.0, 0.0) + _g2*x20 + _g4*x16 + _g9*x21
+    _b19 = 2.0*_b18 - 2.0*_g1*x16 - 2.0*_g6*x21 - 2.0*_g8*x20
+    _b20 = -_b11*x5/(x2*x2) + _b19*_c11 + 2.0*_c12*x5
+    _b21 = -_b17*x2 + _b20*x5
+    _b22 = _b15*_c11*x5 + _b16*torch.where(_c13, 1.0 - x4, 2.0*(x5*x5) - 1.0)
+    _c15 = 2.0*x15
     return (
-        _b0*x7 - _b1*_c13*e_0*omega_0 + (0.5)*_b12 + _b18*omega_0 + _b3*x11*x9,
-        (0.5)*_b13 + _b18*omega_1 - _b2*_c13*e_1*omega_1 + _b5*x7,
-        _b10*x11 + _b14*x7 + _b18*omega_2 + (0.5)*_b4 - _b6*_c13*e_2*omega_2,
-        (0.5)*_b22,
-        _b18*e_0 + _b2*(-x18 - x19) + _b6*(-x13 + x9) + _c3*x15,
-        _b1*(x18 - x19) + _b18*e_1 + _b6*(-x10 - x14) + _c4*x15,
-        _b1*(-x13 - x9) + _b18*e_2 + _b2*(x10 - x14) + _c5*x15,
+        _b0*x7 - _b1*_c15*e_0*omega_0 + (0.5)*_b12 + _b22*omega_0 + _b3*x11*x9,
+        (0.5)*_b13 - _b2*_c15*e_1*omega_1 + _b22*omega_1 + _b5*x7,
+        _b10*x11 + _b14*x7 + _b22*omega_2 + (0.5)*_b4 - _b6*_c15*e_2*omega_2,
+        (0.5)*_b21,
+        _b2*(-x18 - x19) + _b22*e_0 + _b6*(-x13 + x9) + _c3*x15,
+        _b1*(x18 - x19) + _b22*e_1 + _b6*(-x10 - x14) + _c4*x15,
+        _b1*(-x13 - x9) + _b2*(x10 - x14) + _b22*e_2 + _c5*x15,
     )
 
 
 def _jvp(e_0, e_1, e_2, phi, omega_0, omega_1, omega_2, _t0, _t1, _t2, _t3, _t4, _t5, _t6):
     """The tangents of the outputs from those of the inputs, linear in the tangents:
-    forward mode over ``_main``, 227 operations."""
-    x0 = (0.5)*phi
-    _d0 = (0.5)*_t3
-    x1 = torch.sin(x0)
-    _d1 = _d0*torch.cos(x0)
-    x2 = (x1*x1)
-    _e0 = 2.0*_d1
-    _d2 = _e0*x1
-    x3 = 2.0*x2
-    _e1 = 2.0*_d2
-    _d3 = _e1
-    x4 = e_0*omega_0 + e_1*omega_1 + e_2*omega_2
-    _e2 = _t0*omega_0
-    _e3 = _t1*omega_1
-    _e4 = _t2*omega_2
-    _d4 = _e2 + _e3 + _e4 + _t4*e_0 + _t5*e_1 + _t6*e_2
-    _d5 = -_d3*x4 + _d4*(1.0 - x3)
-    x6 = torch.cos(x0)
-    _d6 = -_d0*x1
-    x7 = 2.0*x1*x4*x6
-    _e5 = 2.0*x1
-    _d7 = _d4*_e5*x6 + _d6*_e5*x4 + _e0*x4*x6
+    forward mode over ``_main``, 239 operations."""
+    x0 = e_0*omega_0 + e_1*omega_1 + e_2*omega_2
+    _e0 = _t0*omega_0
+    _e1 = _t1*omega_1
+    _e2 = _t2*omega_2
+    _d0 = _e0 + _e1 + _e2 + _t4*e_0 + _t5*e_1 + _t6*e_2
+    x1 = (0.5)*phi
+    _d1 = (0.5)*_t3
+    x2 = torch.sin(x1)
+    _d2 = _d1*torch.cos(x1)
+    x3 = (x2*x2)
+    _e3 = 2.0*x2
+    _d3 = _d2*_e3
+    x4 = 2.0*x3
+    _e4 = 2.0*_d3
+    _d4 = _e4
+    x5 = torch.cos(x1)
+    _d5 = -_d1*x2
+    _e5 = torch.lt(x3, 0.5)
+    _e6 = _d5*x0
+    _d6 = _d0*torch.where(_e5, 1.0 - x4, 2.0*(x5*x5) - 1.0) + _d4*x0*torch.where(_e5, -1.0, 0.0) + _e6*torch.where(_e5, 0.0, 4.0*x5)
+    x7 = 2.0*x0*x2*x5
+    _e7 = _d2*x5
+    _d7 = _d0*_e3*x5 + _e3*_e6 + 2.0*_e7*x0
     _d8 = _d7*e_2 + _t2*x7
     x9 = (0.5)*e_1
     _d9 = (0.5)*_t1
     x10 = (0.5)*e_0
     _d10 = (0.5)*_t0
-    x11 = x6/x1
-    _d11 = -_d1*x6/(x1*x1) + _d6/x1
+    x11 = x5/x2
+    _d11 = _d5/x2 - _e7/(x2*x2)
     x12 = e_2*x11
     _d12 = _d11*e_2 + _t2*x11
     x13 = x10*x12
@@ -182,52 +194,52 @@ def _jvp(e_0, e_1, e_2, phi, omega_0, omega_1, omega_2, _t0, _t1, _t2, _t3, _t4,
     x15 = (0.5)*x11
     _d15 = (0.5)*_d11
     x16 = omega_0*(-x13 + x9) + omega_1*(-x10 - x14) + omega_2*x15*(1.0 - (e_2*e_2))
-    _e6 = 2.0*x15
-    _e7 = 1.0 - (e_2*e_2)
-    _d16 = -_d10*omega_1 - _d13*omega_0 - _d14*omega_1 + _d15*_e7*omega_2 + _d9*omega_0 - _e4*_e6*e_2 + _e7*_t6*x15 + _t4*(-x13 + x9) + _t5*(-x10 - x14)
+    _e8 = 2.0*x15
+    _e9 = 1.0 - (e_2*e_2)
+    _d16 = -_d10*omega_1 - _d13*omega_0 - _d14*omega_1 + _d15*_e9*omega_2 + _d9*omega_0 - _e2*_e8*e_2 + _e9*_t6*x15 + _t4*(-x13 + x9) + _t5*(-x10 - x14)
     _d17 = _d7*e_1 + _t1*x7
     x18 = (0.5)*e_2
     _d18 = (0.5)*_t2
     x19 = e_0*x11*x9
     _d19 = _d11*e_0*x9 + _d9*e_0*x11 + _t0*x11*x9
     x20 = omega_0*(-x18 - x19) + omega_1*x15*(1.0 - (e_1*e_1)) + omega_2*(x10 - x14)
-    _e8 = 1.0 - (e_1*e_1)
-    _d20 = _d10*omega_2 - _d14*omega_2 + _d15*_e8*omega_1 - _d18*omega_0 - _d19*omega_0 - _e3*_e6*e_1 + _e8*_t5*x15 + _t4*(-x18 - x19) + _t6*(x10 - x14)
+    _e10 = 1.0 - (e_1*e_1)
+    _d20 = _d10*omega_2 - _d14*omega_2 + _d15*_e10*omega_1 - _d18*omega_0 - _d19*omega_0 - _e1*_e8*e_1 + _e10*_t5*x15 + _t4*(-x18 - x19) + _t6*(x10 - x14)
     x21 = omega_0*x15*(1.0 - (e_0*e_0)) + omega_1*(x18 - x19) + omega_2*(-x13 - x9)
-    _e9 = 1.0 - (e_0*e_0)
-    _d21 = -_d13*omega_2 + _d15*_e9*omega_0 + _d18*omega_1 - _d19*omega_1 - _d9*omega_2 - _e2*_e6*e_0 + _e9*_t4*x15 + _t5*(x18 - x19) + _t6*(-x13 - x9)
+    _e11 = 1.0 - (e_0*e_0)
+    _d21 = -_d13*omega_2 + _d15*_e11*omega_0 + _d18*omega_1 - _d19*omega_1 - _d9*omega_2 - _e0*_e8*e_0 + _e11*_t4*x15 + _t5*(x18 - x19) + _t6*(-x13 - x9)
     _d22 = _d7*e_0 + _t0*x7
-    _e10 = 2.0*x2
+    _e12 = 2.0*x3
     return (
-        _d5,
-        -_d16*_e10 - _d8 - _e1*x16,
-        _d17 + _d20*x3 + _d3*x20,
+        _d6,
+        -_d16*_e12 - _d8 - _e4*x16,
+        _d17 + _d20*x4 + _d4*x20,
         _d21,
-        _d16*x3 + _d3*x16 + _d8,
-        _d5,
-        -_d21*_e10 - _d22 - _e1*x21,
+        _d16*x4 + _d4*x16 + _d8,
+        _d6,
+        -_d21*_e12 - _d22 - _e4*x21,
         _d20,
-        -_d17 - _d20*_e10 - _e1*x20,
-        _d21*x3 + _d22 + _d3*x21,
-        _d5,
+        -_d17 - _d20*_e12 - _e4*x20,
+        _d21*x4 + _d22 + _d4*x21,
+        _d6,
         _d16,
     )
 
 
 def _main_saved(e_0, e_1, e_2, phi, omega_0, omega_1, omega_2):
     """``_main``, and the temps ``_vjp`` would compute again: saved by autograd."""
-    x0 = (0.5)*phi
-    x1 = torch.sin(x0)
-    x2 = (x1*x1)
-    x3 = 2.0*x2
-    x4 = e_0*omega_0 + e_1*omega_1 + e_2*omega_2
-    x5 = x4*(1.0 - x3)
-    x6 = torch.cos(x0)
-    x7 = 2.0*x1*x4*x6
+    x0 = e_0*omega_0 + e_1*omega_1 + e_2*omega_2
+    x1 = (0.5)*phi
+    x2 = torch.sin(x1)
+    x3 = (x2*x2)
+    x4 = 2.0*x3
+    x5 = torch.cos(x1)
+    x6 = x0*torch.where(torch.lt(x3, 0.5), 1.0 - x4, 2.0*(x5*x5) - 1.0)
+    x7 = 2.0*x0*x2*x5
     x8 = e_2*x7
     x9 = (0.5)*e_1
     x10 = (0.5)*e_0
-    x11 = x6/x1
+    x11 = x5/x2
     x12 = e_2*x11
     x13 = x10*x12
     x14 = x12*x9
@@ -240,35 +252,35 @@ def _main_saved(e_0, e_1, e_2, phi, omega_0, omega_1, omega_2):
     x21 = omega_0*x15*(1.0 - (e_0*e_0)) + omega_1*(x18 - x19) + omega_2*(-x13 - x9)
     x22 = e_0*x7
     return (
-        x5,
-        -2.0*x16*x2 - x8,
-        x17 + x20*x3,
+        x6,
+        -2.0*x16*x3 - x8,
+        x17 + x20*x4,
         x21,
-        x16*x3 + x8,
-        x5,
-        -2.0*x2*x21 - x22,
+        x16*x4 + x8,
+        x6,
+        -2.0*x21*x3 - x22,
         x20,
-        -x17 - 2.0*x2*x20,
-        x21*x3 + x22,
-        x5,
+        -x17 - 2.0*x20*x3,
+        x21*x4 + x22,
+        x6,
         x16,
     ), (
-        x1,
-    ), (x0, x1, x2, x3, x4, x6, x7, x9, x10, x11, x12, x13, x14, x15, x16, x18, x19, x20, x21, )
+        x2,
+    ), (x0, x1, x2, x3, x4, x5, x7, x9, x10, x11, x12, x13, x14, x15, x16, x18, x19, x20, x21, )
 
 
-def _vjp_saved(e_0, e_1, e_2, phi, omega_0, omega_1, omega_2, x0, x1, x2, x3, x4, x6, x7, x9, x10, x11, x12, x13, x14, x15, x16, x18, x19, x20, x21, _g0, _g1, _g2, _g3, _g4, _g5, _g6, _g7, _g8, _g9, _g10, _g11):
+def _vjp_saved(e_0, e_1, e_2, phi, omega_0, omega_1, omega_2, x0, x1, x2, x3, x4, x5, x7, x9, x10, x11, x12, x13, x14, x15, x16, x18, x19, x20, x21, _g0, _g1, _g2, _g3, _g4, _g5, _g6, _g7, _g8, _g9, _g10, _g11):
     """``_vjp`` on the forward's saved temps (19 of them)."""
     _b0 = -_g6 + _g9
-    _c0 = 2.0*x2
-    _b1 = -_c0*_g6 + _g3 + _g9*x3
-    _b2 = -_c0*_g8 + _g2*x3 + _g7
+    _c0 = 2.0*x3
+    _b1 = -_c0*_g6 + _g3 + _g9*x4
+    _b2 = -_c0*_g8 + _g2*x4 + _g7
     _c1 = _b1*omega_1
     _c2 = _b2*omega_0
     _b3 = -_c1 - _c2
     _b4 = _c1 - _c2
     _b5 = _g2 - _g8
-    _b6 = -_c0*_g1 + _g11 + _g4*x3
+    _b6 = -_c0*_g1 + _g11 + _g4*x4
     _c3 = _b1*(1.0 - (e_0*e_0))
     _c4 = _b2*(1.0 - (e_1*e_1))
     _c5 = _b6*(1.0 - (e_2*e_2))
@@ -286,24 +298,26 @@ def _vjp_saved(e_0, e_1, e_2, phi, omega_0, omega_1, omega_2, x0, x1, x2, x3, x4
     _b13 = _b8*x12 + _c10*x11 - _c8 + _c9
     _b14 = -_g1 + _g4
     _b15 = _b0*e_0 + _b14*e_2 + _b5*e_1
-    _c11 = 2.0*x1
-    _c12 = _b15*_c11
-    _b16 = _b11/x1 + _c12*x4
-    _b17 = _g0 + _g10 + _g5
-    _b18 = _b17*(1.0 - x3) + _c12*x6
-    _b19 = -_b17*x4 + _g2*x20 + _g4*x16 + _g9*x21
-    _b20 = 2.0*_b19 - 2.0*_g1*x16 - 2.0*_g6*x21 - 2.0*_g8*x20
-    _b21 = -_b11*x6/(x1*x1) + 2.0*_b15*x4*x6 + _b20*_c11
-    _b22 = -_b16*x1 + _b21*x6
-    _c13 = 2.0*x15
+    _b16 = _g0 + _g10 + _g5
+    _c11 = 2.0*x2
+    _c12 = _b15*x0
+    _c13 = torch.lt(x3, 0.5)
+    _c14 = _b16*x0
+    _b17 = _b11/x2 + _c11*_c12 + _c14*torch.where(_c13, 0.0, 4.0*x5)
+    _b18 = _c14*torch.where(_c13, -1.0, 0.0) + _g2*x20 + _g4*x16 + _g9*x21
+    _b19 = 2.0*_b18 - 2.0*_g1*x16 - 2.0*_g6*x21 - 2.0*_g8*x20
+    _b20 = -_b11*x5/(x2*x2) + _b19*_c11 + 2.0*_c12*x5
+    _b21 = -_b17*x2 + _b20*x5
+    _b22 = _b15*_c11*x5 + _b16*torch.where(_c13, 1.0 - x4, 2.0*(x5*x5) - 1.0)
+    _c15 = 2.0*x15
     return (
-        _b0*x7 - _b1*_c13*e_0*omega_0 + (0.5)*_b12 + _b18*omega_0 + _b3*x11*x9,
-        (0.5)*_b13 + _b18*omega_1 - _b2*_c13*e_1*omega_1 + _b5*x7,
-        _b10*x11 + _b14*x7 + _b18*omega_2 + (0.5)*_b4 - _b6*_c13*e_2*omega_2,
-        (0.5)*_b22,
-        _b18*e_0 + _b2*(-x18 - x19) + _b6*(-x13 + x9) + _c3*x15,
-        _b1*(x18 - x19) + _b18*e_1 + _b6*(-x10 - x14) + _c4*x15,
-        _b1*(-x13 - x9) + _b18*e_2 + _b2*(x10 - x14) + _c5*x15,
+        _b0*x7 - _b1*_c15*e_0*omega_0 + (0.5)*_b12 + _b22*omega_0 + _b3*x11*x9,
+        (0.5)*_b13 - _b2*_c15*e_1*omega_1 + _b22*omega_1 + _b5*x7,
+        _b10*x11 + _b14*x7 + _b22*omega_2 + (0.5)*_b4 - _b6*_c15*e_2*omega_2,
+        (0.5)*_b21,
+        _b2*(-x18 - x19) + _b22*e_0 + _b6*(-x13 + x9) + _c3*x15,
+        _b1*(x18 - x19) + _b22*e_1 + _b6*(-x10 - x14) + _c4*x15,
+        _b1*(-x13 - x9) + _b2*(x10 - x14) + _b22*e_2 + _c5*x15,
     )
 
 

@@ -29,6 +29,7 @@ from rigidsym.codegen.accurate import Chosen, improve
 from rigidsym.codegen.api_spec import render_api
 from rigidsym.codegen.arrays import render_array_kernels
 from rigidsym.codegen.compensated import NUMPY_SOURCE, uses_diffprod
+from rigidsym.codegen.cos_form import choose as choose_cos
 from rigidsym.codegen.cprogram import TRIG_BLOCK as TRIG_BLOCK
 from rigidsym.codegen.cprogram import (
     _f32_code,
@@ -101,20 +102,23 @@ def compile_kernel(kernel: Kernel) -> KernelCode:
     before: list = []     # float predicates of the branches tried before (accuracy points)
     for br in spec.branches:
         cond = br.when(**syms)
-        flat = _flatten(spec, br.build(**syms))
-        parts += [cond, *flat]
+        declared = _flatten(spec, br.build(**syms))
+        parts += [cond, *declared]
         fcond = sp.lambdify(sflat, cond, modules="math")
-        flat, got = improve(spec, br.name, flat, syms, sflat, list(before), fcond)
+        flat, got = improve(spec, br.name, declared, syms, sflat, list(before), fcond)
         flat = removable(flat)
+        form, got2 = choose_cos(spec, br.name, declared, flat, angles, sflat, list(before),
+                                fcond)
         before.append(fcond)
-        chosen += got
-        variants.append(Variant(br.name, compile_program(flat, angles), cond))
-    flat = _flatten(spec, spec.build(**syms))
-    parts += flat
-    flat, got = improve(spec, "main", flat, syms, sflat, before)
+        chosen += got + got2
+        variants.append(Variant(br.name, compile_program(flat, angles, form), cond))
+    declared = _flatten(spec, spec.build(**syms))
+    parts += declared
+    flat, got = improve(spec, "main", declared, syms, sflat, before)
     flat = removable(flat)
-    chosen += got
-    variants.append(Variant("main", compile_program(flat, angles), None))
+    form, got2 = choose_cos(spec, "main", declared, flat, angles, sflat, before)
+    chosen += got + got2
+    variants.append(Variant("main", compile_program(flat, angles, form), None))
     if of is not None:
         args = [ss for _, ss in flat_symbols(of)]
         sizes = [o.size for o in of.outputs]

@@ -3,10 +3,11 @@
 1. Half-angle rewrite of every angle input ``phi`` (own rewrite, through
    :class:`sympy.codegen.rewriting.ReplaceOptim`): a sum ``k (1 - cos phi)`` hidden in an
    ``Add`` becomes ``2 k sin^2(phi/2)``, ``k (1 + cos phi)`` becomes ``2 k cos^2(phi/2)``;
-   then ``sin phi -> 2 sin(phi/2) cos(phi/2)`` and ``cos phi -> 1 - 2 sin^2(phi/2)``. This
-   removes the cancellation of ``1 - cos phi`` near 0 (and of ``1 + cos phi`` near pi),
-   turns removable ratios such as ``sin phi / (1 - cos phi)`` into ``cot(phi/2)`` by
-   sympy's automatic power collection, and leaves two transcendental calls per angle.
+   then ``sin phi -> 2 sin(phi/2) cos(phi/2)`` and ``cos phi`` by one of :data:`COS_FORMS`
+   (chosen per kernel by measured error, :mod:`.cos_form`). This removes the cancellation
+   of ``1 - cos phi`` near 0 (and of ``1 + cos phi`` near pi), turns removable ratios such
+   as ``sin phi / (1 - cos phi)`` into ``cot(phi/2)`` by sympy's automatic power
+   collection, and leaves two transcendental calls per angle.
 2. ``sympy.cse`` over all outputs (and denominators) of a kernel at once, so
    sub-expressions are shared across outputs.
 3. Operation count of the result (``sympy.count_ops`` of the CSE'd program).
@@ -22,13 +23,29 @@ from dataclasses import dataclass
 import sympy as sp
 from sympy.codegen.rewriting import ReplaceOptim, optimize
 
-__all__ = ["half_angle_optims", "Program", "compile_program", "math_hash"]
+__all__ = ["COS_FORMS", "half_angle_optims", "Program", "compile_program", "math_hash"]
+
+#: the forms of a bare ``cos phi`` from ``s = sin(phi/2)``, ``c = cos(phi/2)`` (each rounded,
+#: relative error about u/2). ``1 - 2 s^2`` is off by about 3 u absolute near pi, where
+#: ``cos phi`` itself (libm, the textbook) is off by u/2: the error of ``s^2`` (1.5 u) twice
+#: (issue 37: L_matrix 5.2 u near pi where the textbook is 2-4 u). ``2 c^2 - 1`` is the
+#: mirror image (accurate near pi, 3 u near 0); the piecewise form takes the better of the
+#: two (at most about 1.5 u); ``(c - s)(c + s)`` has no branch (at most about 2.5 u).
+COS_FORMS = {
+    "1 - 2 s^2": lambda s, c: 1 - 2 * s**2,
+    "1 - 2 s^2 or 2 c^2 - 1": lambda s, c: sp.Piecewise((1 - 2 * s**2, s**2 < sp.S.Half),
+                                                        (2 * c**2 - 1, True)),
+    "(c - s) (c + s)": lambda s, c: (c - s) * (c + s),
+}
+DEFAULT_COS = "1 - 2 s^2"
 
 
-def half_angle_optims(phi: sp.Symbol) -> list:
-    """The rewrites of :mod:`sympy.codegen.rewriting` that make ``phi`` cancellation-free."""
+def half_angle_optims(phi: sp.Symbol, cos_form: str = DEFAULT_COS) -> list:
+    """The rewrites of :mod:`sympy.codegen.rewriting` that make ``phi`` cancellation-free;
+    a bare ``cos phi`` left becomes :data:`COS_FORMS` ``[cos_form]``."""
     C, S = sp.cos(phi), sp.sin(phi)
     s, c = sp.sin(phi / 2), sp.cos(phi / 2)
+    cos_phi = COS_FORMS[cos_form](s, c)
 
     def _fold(add: sp.Add) -> sp.Expr:
         k = sp.S.Zero           # coefficient of cos(phi)
@@ -54,14 +71,14 @@ def half_angle_optims(phi: sp.Symbol) -> list:
 
     fold = ReplaceOptim(lambda x: x.is_Add and x.has(C), _fold)
     last = ReplaceOptim(lambda x: x in (S, C),
-                        lambda x: 2 * s * c if x == S else 1 - 2 * s**2)
+                        lambda x: 2 * s * c if x == S else cos_phi)
     return [fold, last]
 
 
-def rewrite(expr: sp.Expr, angles: list[sp.Symbol]) -> sp.Expr:
+def rewrite(expr: sp.Expr, angles: list[sp.Symbol], cos_form: str = DEFAULT_COS) -> sp.Expr:
     """Apply the half-angle rewrites for each angle symbol."""
     for phi in angles:
-        expr = optimize(expr, half_angle_optims(phi))
+        expr = optimize(expr, half_angle_optims(phi, cos_form))
     return expr
 
 
@@ -85,13 +102,15 @@ class Program:
     ops: int
 
 
-def compile_program(outputs: list[sp.Expr], angles: list[sp.Symbol]) -> Program:
-    """Rewrite, CSE and count a flat list of scalar outputs.
+def compile_program(outputs: list[sp.Expr], angles: list[sp.Symbol],
+                    cos_form: str = DEFAULT_COS) -> Program:
+    """Rewrite (``cos_form``: the form of a bare ``cos phi``, :data:`COS_FORMS`), CSE and
+    count a flat list of scalar outputs.
 
     Returns a :class:`Program` whose ``dens`` are the expressions divided by (a sample is
     singular where one of them is exactly 0).
     """
-    rw = [rewrite(sp.sympify(e), angles) for e in outputs]
+    rw = [rewrite(sp.sympify(e), angles, cos_form) for e in outputs]
     dens = denominators(rw)
     temps, red = sp.cse(rw + dens, symbols=sp.numbered_symbols("x"), order="canonical")
     n = len(rw)

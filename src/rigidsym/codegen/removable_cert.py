@@ -26,8 +26,9 @@ and rounding included, over the whole interval ``[0, t*]``.
 ``t*`` is the smallest power of two at or above which the closed form's bound is within 10 %
 of its best (or ``<= 2u``), or, where no series of order ``<= 18`` is within ``2u`` that
 far, the largest smaller one where one is; ``n`` the smallest order whose Taylor bound is
-``<= 2u`` on ``[0, t*]`` in float64; the float32 bound of the same series is recorded
-(``<= 2u`` but where a float32 ``c_0`` rounds by nearly ``u`` itself). The closed form's
+``<= 2u`` on ``[0, t*]`` in float64 (where the closed form there is past 32 u, ``t*`` moves
+up while a series within 2.5 u reaches it: :func:`_wider`); the float32 bound of the same
+series is recorded (``<= 2u`` but where a float32 ``c_0`` rounds by nearly ``u`` itself). The closed form's
 bound just above ``t*`` is recorded: its rounding (one ulp per ``sin``/``cos``, the
 cancellation in ``s - sin s``) is
 what it is; the series branch keeps the singular neighbourhood within ``2u``.
@@ -365,8 +366,40 @@ def certify(h: sp.Expr) -> Certificate:
     ok = [t for t in tops if bounds[t] <= max(2.0, 1.1 * best)]
     # the closed form at its best; where no series is within 2u that far, smaller t*
     for t in ok + sorted((t for t in tops if t < min(ok)), reverse=True):
-        for n in range(_KMAX + 1):
-            b64, b32 = _taylor_bound(ser, n, t, U64), _taylor_bound(ser, n, t, U32)
-            if b64 <= 2:
-                return Certificate(n, t, b64, b32, bounds[t])
+        n = _order(ser, t, 2.0)
+        if n is not None:
+            return _wider(ser, Certificate(n, t, _taylor_bound(ser, n, t, U64),
+                                           _taylor_bound(ser, n, t, U32), bounds[t]), bounds)
     raise NotRemovable(f"no order up to {_KMAX} is within 2u")  # pragma: no cover
+
+
+def _order(ser: Series, t: float, within: float) -> int | None:
+    """The smallest order whose float64 Taylor bound on [0, t] is ``<= within`` u."""
+    return next((n for n in range(_KMAX + 1) if _taylor_bound(ser, n, t, U64) <= within),
+                None)
+
+
+#: a closed form's bound past which the switch may move up (see :func:`_wider`)
+WIDE_CLOSED = 32.0
+#: the series' bound it may then take (u)
+WIDE_SERIES = 2.5
+
+
+def _wider(ser: Series, cert: Certificate, bounds: dict) -> Certificate:
+    """Where the closed form just above ``t*`` is past WIDE_CLOSED u (a derivative's
+    quotient, ``(s cos s + 2 s - 3 sin s) / s^5``: 181 u at ``t* = 2``, 5979 u for a third
+    derivative's), ``t*`` doubles (twice at most) while a series within WIDE_SERIES u
+    reaches it and the closed form's bound falls by a half at least: the worse of the two
+    branches is what a kernel sees (issue 37: the SE(3) left Jacobian's Jacobian 9 u at
+    ``|w|^2`` just above 2, where the textbook is 3 u)."""
+    for _ in range(2):
+        t = cert.threshold * 2
+        if cert.closed64 <= WIDE_CLOSED or t not in bounds or \
+                bounds[t] * 1.5 > cert.closed64:
+            break
+        n = _order(ser, t, WIDE_SERIES)
+        if n is None:
+            break
+        cert = Certificate(n, t, _taylor_bound(ser, n, t, U64), _taylor_bound(ser, n, t, U32),
+                           bounds[t])
+    return cert

@@ -188,6 +188,12 @@ class BookRules:
     # ---- matrices (the chapter's, and a reader's [R d; 0 1] whose 0 is a block)
     def matrix(self, items):
         rows = [r for r in items if isinstance(r, list)]
+        if self.reader and len(rows) > 1 and len({len(r) for r in rows}) == 1 \
+                and all(_shape(c) is None for r in rows for c in r):
+            # a reader's matrix of scalars is one matrix, printed as one (Craig's R_K(theta),
+            # read as 9 blocks of 1 x 1, was printed block by block; the chapter's parses
+            # stay as recorded, tests/test_latex_parses.py)
+            return sp.ImmutableMatrix([[self._val(c) for c in r] for r in rows])
         if self.reader and any(_shape(c) for r in rows for c in r):  # [R d; 0 1]: 0 a block
             rows = [[sp.ZeroMatrix(1, 1) if c == 0 else c for c in r] for r in rows]
         cells = _fit_blocks([[_as_block(c) for c in row] for row in rows])

@@ -114,8 +114,8 @@ def book_text(name: str) -> str:
             out += _SUB_TEXT[s]
         elif s.isdigit():
             out += s.translate(_SUBSCRIPT_DIGITS)
-        else:
-            out += "_" + s
+        else:   # a Greek subscript in its letter (Craig's c_θ), as the base is
+            out += "_" + _GREEK.get(s, s)
     return out
 
 
