@@ -265,7 +265,9 @@ def _compiled_saving(space: _arrays.Space, name: str):
     recomputes, as :func:`_function`'s."""
     meta, xp = space.progs.meta[name], torch
     nargs, nout = len(meta["args"]), len(meta["outputs"])
-    at_safe = space.lib.constant(lambda: _torch_host.safe_temps(space.progs, name))
+    # the kernel's name an argument: Dynamo keeps one constant per code object and
+    # arguments (one lambda without arguments gave every kernel the first one's temps)
+    at_safe = space.lib.constant(lambda n: _torch_host.safe_temps(space.progs, n))
 
     def values(xs):
         # an inf input taken as NaN inside, as Space.values(finite=True)
@@ -275,7 +277,7 @@ def _compiled_saving(space: _arrays.Space, name: str):
         outs, dens, temps = space.progs.vjp(name, "saved")[0](*cols)
         sing = singular_mask(xp, dens, cols[0])
         if space.progs.divides(name):
-            temps = [xp.where(sing, v, t) for v, t in zip(at_safe(), temps, strict=True)]
+            temps = [xp.where(sing, v, t) for v, t in zip(at_safe(name), temps, strict=True)]
         return (*shape_outputs(xp, list(outs), meta["outputs"], cols[0]), sing,
                 *temps)
 
