@@ -260,11 +260,14 @@ class Space:
         or an eager CPU mask read)."""
         return not self.progs.divides(name) or self.lib.clear(singular)
 
-    def vjp_saved(self, name: str, xs, temps, grads: list) -> list:
+    def vjp_saved(self, name: str, xs, temps, grads: list, singular=None) -> list:
         """:meth:`vjp` on the forward's ``temps`` (:meth:`values_saved`) where no sample
-        is singular (:meth:`regular`): the same operations less those of the forward."""
+        is singular (:meth:`regular`), or on the safe point's inputs in the ``singular``
+        samples with the temps of :meth:`values_saved_traced`: the same operations less
+        those of the forward."""
         meta = self.progs.meta[name]
-        cols = columns(xs, meta["args"])
+        cols = columns(xs, meta["args"]) if singular is None else \
+            self._safe_columns(name, xs, singular)
         flat = self.progs.vjp(name, "saved")[1](*cols, *temps,
                                                  *_cotangents(grads, meta["outputs"]))
         return shape_outputs(self.lib.xp, list(flat), meta["args"], cols[0])
