@@ -33,6 +33,12 @@ import sympy as sp
 
 from rigidsym.algebra.symbols import constrained_group
 from rigidsym.codegen import rule as _rule
+from rigidsym.codegen.accurate_rules import (
+    _axis_point_from_skew,
+    _exact_powers,
+    _rewritten_then_differentiated,
+    _skew_one_minus_cos,
+)
 from rigidsym.codegen.compensated import compensated_sums, diffprod, expand_diffprod, sumprod
 from rigidsym.codegen.compensated import expand_numerators as _expand_numerators
 from rigidsym.codegen.compensated import expand_plain as _expand_plain
@@ -89,109 +95,6 @@ class Chosen:
 
 
 # --------------------------------------------------------------------------- rules
-def _skew_one_minus_cos(flat, ctx):
-    """``(1 - Q00) + (1 - Q11) + (1 - Q22)`` (= 3 - tr Q = 2 (1 - cos phi)) ->
-    ``||Q - Q^T||_F^2 / (2 (1 + tr Q))`` (= 2 sin^2 phi / (1 + cos phi))."""
-    reps = {}
-    for Q in ctx["rotations"]:
-        d = [Q[i, i] for i in range(3)]
-        old_forms = {sp.Add(*[sp.UnevaluatedExpr(1 - x) for x in d]), 3 - sum(d)}
-        skew = sum((Q[i, j] - Q[j, i]) ** 2 for i, j in ((2, 1), (0, 2), (1, 0)))
-        new = skew / (1 + sum(d))
-        for e in flat:
-            for sub in sp.preorder_traversal(e):
-                if sub in old_forms:
-                    reps[sub] = new
-    if not reps:
-        return None
-    return [e.xreplace(reps) for e in flat], list(reps.items())
-
-
-def _axis_point_from_skew(flat, ctx):
-    """(3.18)'s ``p0 = (Q - 1)^T (Q a - a') / (2 (1 - cos phi))`` -> ``(1 + tr Q) / (4 v.v)
-    v x c + (c - v (v.c) / v.v) / 2``, ``v = vect(Q)``, ``c = a' - Q a`` (= ``cot(phi/2)/2 e
-    x c + (c - e (e.c))/2``, with ``Q - 1 = sin phi E + (1 - cos phi) E^2``). The declared
-    form reads the diagonal of Q, whose rounding (absolute u) is relative ``u / phi`` of
-    ``(Q - 1)^T c`` as phi -> 0; this one reads the axis from the skew part only, as
-    pytransform3d's screw parameters do (issue 37: 3e7 u where they are 4 u at phi = 1e-8)."""
-    k = ctx["kernel"]
-    vecs = [a.name for a in k.args if a.kind == "any" and a.shape == (3,)]
-    reps = {}
-    for Q in ctx["rotations"]:
-        om = sp.Add(*[sp.UnevaluatedExpr(1 - Q[i, i]) for i in range(3)])
-        h = sp.Dummy("half")
-        for x, y in zip(vecs, vecs[1:], strict=False):
-            a, ap = sp.Matrix(ctx["flat"][x]), sp.Matrix(ctx["flat"][y])
-            # the declaration's grouping, rebuilt as kernels_spec builds it
-            old = ((Q - sp.eye(3)).T * (Q * a - ap) / (2 * (1 - (1 - h)))).xreplace(
-                {h: om / 2})
-            v = sp.Matrix([Q[2, 1] - Q[1, 2], Q[0, 2] - Q[2, 0], Q[1, 0] - Q[0, 1]]) / 2
-            c = ap - Q * a
-            vv = v.dot(v)
-            new = (1 + Q.trace()) / (4 * vv) * v.cross(c) + (c - v * (v.dot(c) / vv)) / 2
-            if any(e.has(old[i]) for e in flat for i in range(3)):
-                reps.update(zip(old, new, strict=True))
-    if not reps:
-        return None
-    # subs, not xreplace: in the Plücker moment p0 x e a component of p0 is a factor of a
-    # larger product (sympy flattens Mul), which only subs finds
-    return [e.subs(reps) if e.has(om) else e for e in flat], list(reps.items())
-
-
-def _rewritten_then_differentiated(flat, ctx):
-    """A ``<name>_with_jacobians`` kernel: its values through the other rules, and its
-    derivatives those of the rewritten values (a rewrite of unconstrained inputs only: two
-    functions equal on an open set have equal derivatives)."""
-    k = ctx["kernel"]
-    if not k.name.endswith("_with_jacobians"):
-        return None
-    m = len(k.outputs) // (1 + len(k.args))
-    sizes = [o.size for o in k.outputs[:m]]
-    nv = sum(sizes)
-    values, parts = flat[:nv], []
-    for rule in (r for r in RULES if r.propose not in (_rewritten_then_differentiated,
-                                                       _expand_plain, compensated_sums,
-                                                       _exact_powers)):
-        got = rule.propose(values, ctx)
-        if got is not None:
-            values, p = got
-            parts += p
-    constrained = {x for a in k.args if a.kind != "any" for x in ctx["flat"][a.name]}
-    if not parts or any(sp.sympify(o).free_symbols & constrained for o, _ in parts):
-        return None
-    out, start = list(values), 0
-    for size in sizes:
-        f = values[start:start + size]
-        for a in k.args:
-            out += [sp.diff(fi, x) for fi in f for x in ctx["flat"][a.name]]
-        start += size
-    return out, parts
-
-
-def _exact_powers(flat, ctx):
-    """``x^(k/2)`` (``|k| >= 3``) and ``x^-n`` (``n >= 2``) -> ``pow(x, k/2)``: the kernels
-    print a rational power as a product of roots and a quotient (``1/(x sqrt x)``: three
-    roundings, four for ``x^(-5/2)``), where ``pow`` rounds once; the exponent is written
-    as its float (exact in binary), which every printer prints as ``pow``."""
-    if ctx.get("angles"):
-        # the half-angle rewrite, after this measurement, rewrites those powers' bases
-        return None
-    # a norm under a function (sin sqrt(T) / sqrt(T)^3, 1 / (1 - cos sqrt(T))^2) makes
-    # removable quotients (rigidsym.codegen.removable), which read its powers as rational
-    quotients = {a.base for e in flat for f in e.atoms(sp.Function) for a in
-                 f.atoms(sp.Pow) if a.exp.is_Rational and a.exp.q == 2}
-    reps = {}
-    for e in flat:
-        for p in sp.preorder_traversal(e):
-            if isinstance(p, sp.Pow) and p.exp.is_Rational and p.base.free_symbols and (
-                    (p.exp.q == 2 and abs(p.exp.p) >= 3) or (p.exp.is_Integer and p.exp <= -2)) \
-                    and p.base not in quotients and not p.base.atoms(sp.Function):
-                reps[p] = sp.Pow(p.base, sp.Float(float(p.exp)))
-    if not reps:
-        return None
-    return [e.xreplace(reps) for e in flat], list(reps.items())
-
-
 RULES = (
     Rewrite("derivatives of the rewritten values",
             "the Jacobian of the declared grouping inherits its cancellation; the "
