@@ -36,7 +36,6 @@ from rigidsym.codegen import rule as _rule
 from rigidsym.codegen.accurate_rules import (
     _axis_point_from_skew,
     _exact_powers,
-    _rewritten_then_differentiated,
     _skew_one_minus_cos,
 )
 from rigidsym.codegen.compensated import compensated_sums, diffprod, expand_diffprod, sumprod
@@ -95,6 +94,37 @@ class Chosen:
 
 
 # --------------------------------------------------------------------------- rules
+
+def _rewritten_then_differentiated(flat, ctx):
+    """A ``<name>_with_jacobians`` kernel: its values through the other rules, and its
+    derivatives those of the rewritten values (a rewrite of unconstrained inputs only: two
+    functions equal on an open set have equal derivatives)."""
+    k = ctx["kernel"]
+    if not k.name.endswith("_with_jacobians"):
+        return None
+    m = len(k.outputs) // (1 + len(k.args))
+    sizes = [o.size for o in k.outputs[:m]]
+    nv = sum(sizes)
+    values, parts = flat[:nv], []
+    for rule in (r for r in RULES if r.propose not in (_rewritten_then_differentiated,
+                                                       _expand_plain, compensated_sums,
+                                                       _exact_powers)):
+        got = rule.propose(values, ctx)
+        if got is not None:
+            values, p = got
+            parts += p
+    constrained = {x for a in k.args if a.kind != "any" for x in ctx["flat"][a.name]}
+    if not parts or any(sp.sympify(o).free_symbols & constrained for o, _ in parts):
+        return None
+    out, start = list(values), 0
+    for size in sizes:
+        f = values[start:start + size]
+        for a in k.args:
+            out += [sp.diff(fi, x) for fi in f for x in ctx["flat"][a.name]]
+        start += size
+    return out, parts
+
+
 RULES = (
     Rewrite("derivatives of the rewritten values",
             "the Jacobian of the declared grouping inherits its cancellation; the "

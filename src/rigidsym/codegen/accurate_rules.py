@@ -7,9 +7,6 @@ from __future__ import annotations
 
 import sympy as sp
 
-from rigidsym.codegen.compensated import compensated_sums
-from rigidsym.codegen.compensated import expand_plain as _expand_plain
-
 
 def _skew_one_minus_cos(flat, ctx):
     """``(1 - Q00) + (1 - Q11) + (1 - Q22)`` (= 3 - tr Q = 2 (1 - cos phi)) ->
@@ -58,38 +55,6 @@ def _axis_point_from_skew(flat, ctx):
     # subs, not xreplace: in the Plücker moment p0 x e a component of p0 is a factor of a
     # larger product (sympy flattens Mul), which only subs finds
     return [e.subs(reps) if e.has(om) else e for e in flat], list(reps.items())
-
-
-def _rewritten_then_differentiated(flat, ctx):
-    """A ``<name>_with_jacobians`` kernel: its values through the other rules, and its
-    derivatives those of the rewritten values (a rewrite of unconstrained inputs only: two
-    functions equal on an open set have equal derivatives)."""
-    k = ctx["kernel"]
-    if not k.name.endswith("_with_jacobians"):
-        return None
-    m = len(k.outputs) // (1 + len(k.args))
-    sizes = [o.size for o in k.outputs[:m]]
-    nv = sum(sizes)
-    values, parts = flat[:nv], []
-    from rigidsym.codegen.accurate import RULES  # the rules list names this one
-
-    for rule in (r for r in RULES if r.propose not in (_rewritten_then_differentiated,
-                                                       _expand_plain, compensated_sums,
-                                                       _exact_powers)):
-        got = rule.propose(values, ctx)
-        if got is not None:
-            values, p = got
-            parts += p
-    constrained = {x for a in k.args if a.kind != "any" for x in ctx["flat"][a.name]}
-    if not parts or any(sp.sympify(o).free_symbols & constrained for o, _ in parts):
-        return None
-    out, start = list(values), 0
-    for size in sizes:
-        f = values[start:start + size]
-        for a in k.args:
-            out += [sp.diff(fi, x) for fi in f for x in ctx["flat"][a.name]]
-        start += size
-    return out, parts
 
 
 def _exact_powers(flat, ctx):
