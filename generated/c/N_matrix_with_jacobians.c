@@ -20,14 +20,17 @@
  * precision plan in the header; sin/cos in double from the widened inputs). */
 
 /* The first nl samples (a multiple of RIGIDSYM_LANES, at most a block), of which the first m
- * count: RIGIDSYM_LANES at a time through the lanes function, then one finiteness test over
- * the first m samples' outputs (still in cache): finite inputs can overflow into a non-finite
- * output, flagged as a singular sample is, and one range test over its inputs (a sample
- * with an input of extreme magnitude, whose intermediates could overflow or underflow, or a
- * non-finite input, is flagged: the Python path re-runs it in a wider type, issue 37).
- * When something is flagged, each sample's flag is
- * recomputed from that sample alone (its own flag and its own output row) and its row
- * written as NaN. Returns the number of flagged samples among the first m. */
+ * count: RIGIDSYM_LANES at a time through the lanes function, then one range test over the
+ * first m samples' inputs (still in cache): a sample with an input of extreme magnitude,
+ * whose intermediates could overflow or underflow, or a non-finite input, is flagged (the
+ * Python path re-runs it in a wider type, issue 37). A non-finite output of finite inputs of
+ * ordinary magnitude comes from an operation that raised invalid, divide-by-zero or
+ * overflow: the block's floating-point exception flags (rigidsym_fp_raised) stand for the
+ * finiteness test over its outputs, a second pass, which the block runs only when a flag
+ * is raised. When something is flagged, each sample's flag is recomputed from that sample
+ * alone (its own singular bit, its own output row, its own inputs) and its row written as
+ * NaN: a sample's verdict, like its bits, does not depend on its batch. Returns the number
+ * of flagged samples among the first m. */
 
 /* Samples [i0, i0 + m) of the batch, m <= 64: a full block, or a partial one (the tail
  * of a batch, a batch of a few samples, one sample). m a multiple of RIGIDSYM_LANES: in place;
@@ -155,6 +158,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_N_matrix_with_jacobians_block(
     double *RIGIDSYM_RESTRICT out_N_matrix_D_phi)
 {
     int64_t mask[64 / RIGIDSYM_LANES_TRIG], any = 0;
+    rigidsym_fp_clear();
     for (int64_t g = 0; g * RIGIDSYM_LANES_TRIG < nl; ++g) {
         const int64_t j = g * RIGIDSYM_LANES_TRIG;
         mask[g] = rigidsym_N_matrix_with_jacobians_lanes(
@@ -166,9 +170,13 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_N_matrix_with_jacobians_block(
 
         any |= mask[g];
     }
+#if RIGIDSYM_FP_FLAGS
+    any |= rigidsym_fp_raised();
+#else
     any |= rigidsym_any_nonfinite(out_N_matrix, 12 * m);
     any |= rigidsym_any_nonfinite(out_N_matrix_D_e, 36 * m);
     any |= rigidsym_any_nonfinite(out_N_matrix_D_phi, 12 * m);
+#endif
     any |= rigidsym_any_extreme(in_e, 3 * m);
     any |= rigidsym_any_extreme(in_phi, 1 * m);
     if (any == 0)
@@ -204,6 +212,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_N_matrix_with_jacobians_block_f32(
     float *RIGIDSYM_RESTRICT out_N_matrix_D_phi)
 {
     int64_t mask[64 / RIGIDSYM_LANES_F32], any = 0;
+    rigidsym_fp_clear();
     for (int64_t g = 0; g * RIGIDSYM_LANES_F32 < nl; ++g) {
         const int64_t j = g * RIGIDSYM_LANES_F32;
         mask[g] = rigidsym_N_matrix_with_jacobians_lanes_f32(
@@ -215,9 +224,13 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_N_matrix_with_jacobians_block_f32(
 
         any |= mask[g];
     }
+#if RIGIDSYM_FP_FLAGS
+    any |= rigidsym_fp_raised();
+#else
     any |= rigidsym_any_nonfinite_f32(out_N_matrix, 12 * m);
     any |= rigidsym_any_nonfinite_f32(out_N_matrix_D_e, 36 * m);
     any |= rigidsym_any_nonfinite_f32(out_N_matrix_D_phi, 12 * m);
+#endif
     any |= rigidsym_any_extreme_f32(in_e, 3 * m);
     any |= rigidsym_any_extreme_f32(in_phi, 1 * m);
     if (any == 0)

@@ -35,14 +35,17 @@
  * precision plan in the header; sin/cos in double from the widened inputs). */
 
 /* The first nl samples (a multiple of RIGIDSYM_LANES, at most a block), of which the first m
- * count: RIGIDSYM_LANES at a time through the lanes function, then one finiteness test over
- * the first m samples' outputs (still in cache): finite inputs can overflow into a non-finite
- * output, flagged as a singular sample is, and one range test over its inputs (a sample
- * with an input of extreme magnitude, whose intermediates could overflow or underflow, or a
- * non-finite input, is flagged: the Python path re-runs it in a wider type, issue 37).
- * When something is flagged, each sample's flag is
- * recomputed from that sample alone (its own flag and its own output row) and its row
- * written as NaN. Returns the number of flagged samples among the first m. */
+ * count: RIGIDSYM_LANES at a time through the lanes function, then one range test over the
+ * first m samples' inputs (still in cache): a sample with an input of extreme magnitude,
+ * whose intermediates could overflow or underflow, or a non-finite input, is flagged (the
+ * Python path re-runs it in a wider type, issue 37). A non-finite output of finite inputs of
+ * ordinary magnitude comes from an operation that raised invalid, divide-by-zero or
+ * overflow: the block's floating-point exception flags (rigidsym_fp_raised) stand for the
+ * finiteness test over its outputs, a second pass, which the block runs only when a flag
+ * is raised. When something is flagged, each sample's flag is recomputed from that sample
+ * alone (its own singular bit, its own output row, its own inputs) and its row written as
+ * NaN: a sample's verdict, like its bits, does not depend on its batch. Returns the number
+ * of flagged samples among the first m. */
 
 /* Samples [i0, i0 + m) of the batch, m <= RIGIDSYM_CHECK_BLOCK: a full block, or a partial one (the tail
  * of a batch, a batch of a few samples, one sample). m a multiple of RIGIDSYM_LANES: in place;
@@ -142,6 +145,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_wrench_axis_with_jacobians_block(
     double *RIGIDSYM_RESTRICT out_plucker_D_a)
 {
     int64_t mask[RIGIDSYM_CHECK_BLOCK / RIGIDSYM_LANES], any = 0;
+    rigidsym_fp_clear();
     for (int64_t g = 0; g * RIGIDSYM_LANES < nl; ++g) {
         const int64_t j = g * RIGIDSYM_LANES;
         mask[g] = rigidsym_wrench_axis_with_jacobians_lanes(
@@ -159,6 +163,9 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_wrench_axis_with_jacobians_block(
 
         any |= mask[g];
     }
+#if RIGIDSYM_FP_FLAGS
+    any |= rigidsym_fp_raised();
+#else
     any |= rigidsym_any_nonfinite(out_p0, 3 * m);
     any |= rigidsym_any_nonfinite(out_pitch, 1 * m);
     any |= rigidsym_any_nonfinite(out_plucker, 6 * m);
@@ -168,6 +175,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_wrench_axis_with_jacobians_block(
     any |= rigidsym_any_nonfinite(out_pitch_D_a, 3 * m);
     any |= rigidsym_any_nonfinite(out_plucker_D_w_A, 36 * m);
     any |= rigidsym_any_nonfinite(out_plucker_D_a, 18 * m);
+#endif
     any |= rigidsym_any_extreme(in_w_A, 6 * m);
     any |= rigidsym_any_extreme(in_a, 3 * m);
     if (any == 0)
@@ -227,6 +235,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_wrench_axis_with_jacobians_block_f32(
     float *RIGIDSYM_RESTRICT out_plucker_D_a)
 {
     int64_t mask[RIGIDSYM_CHECK_BLOCK / RIGIDSYM_LANES_F32], any = 0;
+    rigidsym_fp_clear();
     for (int64_t g = 0; g * RIGIDSYM_LANES_F32 < nl; ++g) {
         const int64_t j = g * RIGIDSYM_LANES_F32;
         mask[g] = rigidsym_wrench_axis_with_jacobians_lanes_f32(
@@ -244,6 +253,9 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_wrench_axis_with_jacobians_block_f32(
 
         any |= mask[g];
     }
+#if RIGIDSYM_FP_FLAGS
+    any |= rigidsym_fp_raised();
+#else
     any |= rigidsym_any_nonfinite_f32(out_p0, 3 * m);
     any |= rigidsym_any_nonfinite_f32(out_pitch, 1 * m);
     any |= rigidsym_any_nonfinite_f32(out_plucker, 6 * m);
@@ -253,6 +265,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_wrench_axis_with_jacobians_block_f32(
     any |= rigidsym_any_nonfinite_f32(out_pitch_D_a, 3 * m);
     any |= rigidsym_any_nonfinite_f32(out_plucker_D_w_A, 36 * m);
     any |= rigidsym_any_nonfinite_f32(out_plucker_D_a, 18 * m);
+#endif
     any |= rigidsym_any_extreme_f32(in_w_A, 6 * m);
     any |= rigidsym_any_extreme_f32(in_a, 3 * m);
     if (any == 0)
