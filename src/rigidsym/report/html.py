@@ -9,6 +9,7 @@ the schema-2 records (:func:`rigidsym.report.record.result_record`) through Jinj
 from __future__ import annotations
 
 import html
+import re
 from functools import cache
 
 import sympy as sp
@@ -48,6 +49,18 @@ def _value_mathml(text: str | None) -> Markup:
     return math_or_text(notation.latex(v), text, display=False)
 
 
+#: a letter subscript the Unicode text writes with an underscore (M_A, Ṡ_N: Unicode has no
+#: subscript capitals); HTML sets it as a subscript, as the MathML beside it does
+_LETTER_SUB = re.compile(r"(?<![\w\u0300-\u036f'])([A-Za-zΑ-Ωα-ω][\u0300-\u036f]*'*)"
+                         r"_([A-Za-zΑ-Ωα-ω]{1,2})(?![A-Za-z0-9_])")
+
+
+def text_html(text: str | None) -> Markup:
+    """Unicode text in book notation (:func:`rigidsym.printing.labels.label_text`) as HTML:
+    escaped, a letter subscript as ``<sub>`` (``M_A`` -> ``M<sub>A</sub>``)."""
+    return Markup(_LETTER_SUB.sub(r"\1<sub>\2</sub>", html.escape(text or "")))
+
+
 def prose_html(text: str | None) -> Markup:
     """Running text of a declaration (evidence, a label) as HTML: its LaTeX pieces
     (``\\dot{\\boldsymbol{\\nu}}``) as inline MathML, its ASCII mathematics in book
@@ -55,7 +68,7 @@ def prose_html(text: str | None) -> Markup:
     out = []
     for is_tex, piece in latex_spans(text or ""):
         out.append(str(math_or_text(piece, latex_text(piece), display=False)) if is_tex
-                   else html.escape(label_text(piece)))
+                   else text_html(label_text(piece)))
     return Markup("".join(out))
 
 
@@ -65,10 +78,10 @@ def _prose_view(rec: dict) -> dict:
     failing = next((m["text"] for m in rec["members"]
                     if m["status"] == "fails" and m["role"] != "corrected"), None)
     return {"evidence_html": prose_html(rec["evidence"]), "ce_sides": sides_of(failing),
-            "failing_member_shown": label_text(rec["failing_member"] or ""),
-            "title_shown": label_text(rec["title"]),
-            "singular_shown": label_text(rec["singular"] or ""),
-            "ce_member_shown": label_text(ce.get("member") or ""),
+            "failing_member_shown": text_html(label_text(rec["failing_member"] or "")),
+            "title_shown": text_html(label_text(rec["title"])),
+            "singular_shown": text_html(label_text(rec["singular"] or "")),
+            "ce_member_shown": text_html(label_text(ce.get("member") or "")),
             "ce_whose": whose_symbols(rec["id"])}
 
 
@@ -79,7 +92,7 @@ def _view(rec: dict) -> dict:
              transcription_text=transcription_words(rec.get("transcription")))
     v["undecided"] = undecided_reasons(rec) if rec["verdict"] == "undecided" else []
     v["members"] = [dict(m, mathml=math_or_text(m["latex"], m["text"]),
-                         label_shown=label_text(m["label"])) for m in rec["members"]]
+                         label_shown=text_html(label_text(m["label"]))) for m in rec["members"]]
     v.update(_prose_view(rec))
     v["failing_text"] = next((m["text"] for m in rec["members"]
                               if m["status"] == "fails" and m["role"] != "corrected"), None)
