@@ -46,10 +46,9 @@ def _book_forms(text: str) -> str:
     """The ASCII text's own shorthands in the book's forms, before either printer reads
     it: ``diag(I_C, O)`` as the block matrix ``[I_C, O; O, O]`` (the book prints a
     block-diagonal matrix as its blocks, (3.138), as the labels beside it print theirs),
-    ``6x6`` as ``6×6``, a braced term's label in words."""
+    a braced term's label in words."""
     text = _BRACE.sub(r"braced \1", text)
     text = re.sub(r"\((?:under)?brace\)", "(braced)", text)
-    text = re.sub(r"\b(\d+)x(\d+)\b", r"\1×\2", text)
     while m := _DIAG.search(text):
         depth, args, start = 0, [], m.end()
         for k in range(m.end(), len(text)):
@@ -92,7 +91,8 @@ def label_latex(text: str) -> str:
     (``"adot . omega/||omega||^2"`` -> ``\\dot{a} \\cdot \\omega/\\|\\omega\\|^{2}``), its English
     words as ``\\text{...}`` (``"pdot_perp brace"`` -> ``\\text{braced } \\dot{p}_{\\perp}``).
     """
-    toks = _LATEX_TOKEN.findall(_book_forms(text or ""))
+    # a size, 6x6, is 6 × 6 (not the product of 6 and x₆)
+    toks = _LATEX_TOKEN.findall(re.sub(r"\b(\d+)x(\d+)\b", r"\1×\2", _book_forms(text or "")))
     out: list[tuple[bool, str]] = []  # (is_math, piece)
 
     def mathy(t: str) -> bool:

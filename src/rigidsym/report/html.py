@@ -50,15 +50,22 @@ def _value_mathml(text: str | None) -> Markup:
 
 
 #: a letter subscript the Unicode text writes with an underscore (M_A, Ṡ_N: Unicode has no
-#: subscript capitals); HTML sets it as a subscript, as the MathML beside it does
-_LETTER_SUB = re.compile(r"(?<![\w\u0300-\u036f'])([A-Za-zΑ-Ωα-ω][\u0300-\u036f]*'*)"
-                         r"_([A-Za-zΑ-Ωα-ω]{1,2})(?![A-Za-z0-9_])")
+#: subscript capitals); the page sets it as a subscript, as the MathML beside it does
+_LETTER = r"(?:(?![\u00b2\u00b3\u00b9\u1d2c-\u1dbf\u2070-\u209f])[^\W\d_])"  # not ², ᵀ, ₁
+_LETTER_SUB = re.compile(rf"(?<![\w\u0300-\u036f'])({_LETTER}[\u0300-\u036f]*'*)"
+                         rf"_({_LETTER}{{1,2}})(?!{_LETTER}|[0-9_])")
+#: what the subscript pass leaves alone: tags, MathML, code listings, the head
+_NOT_TEXT = re.compile(r"(<math\b.*?</math>|<pre\b.*?</pre>|<style\b.*?</style>|"
+                       r"<title\b.*?</title>|<[^>]+>)", re.S)
 
 
-def text_html(text: str | None) -> Markup:
-    """Unicode text in book notation (:func:`rigidsym.printing.labels.label_text`) as HTML:
-    escaped, a letter subscript as ``<sub>`` (``M_A`` -> ``M<sub>A</sub>``)."""
-    return Markup(_LETTER_SUB.sub(r"\1<sub>\2</sub>", html.escape(text or "")))
+def letter_subscripts(page: str) -> str:
+    """``page`` (HTML) with the letter subscripts of its text in ``<sub>``: ``M_A`` ->
+    ``M<sub>A</sub>`` in labels, causes, repairs and the book-notation ``<code>`` spans;
+    names of code (``plucker_transfer``, ``ad_dual``) are never one letter and a
+    subscript, so they stay as written."""
+    return "".join(p if i % 2 else _LETTER_SUB.sub(r"\1<sub>\2</sub>", p)
+                   for i, p in enumerate(_NOT_TEXT.split(page)))
 
 
 def prose_html(text: str | None) -> Markup:
@@ -68,7 +75,7 @@ def prose_html(text: str | None) -> Markup:
     out = []
     for is_tex, piece in latex_spans(text or ""):
         out.append(str(math_or_text(piece, latex_text(piece), display=False)) if is_tex
-                   else text_html(label_text(piece)))
+                   else html.escape(label_text(piece)))
     return Markup("".join(out))
 
 
@@ -78,10 +85,10 @@ def _prose_view(rec: dict) -> dict:
     failing = next((m["text"] for m in rec["members"]
                     if m["status"] == "fails" and m["role"] != "corrected"), None)
     return {"evidence_html": prose_html(rec["evidence"]), "ce_sides": sides_of(failing),
-            "failing_member_shown": text_html(label_text(rec["failing_member"] or "")),
-            "title_shown": text_html(label_text(rec["title"])),
-            "singular_shown": text_html(label_text(rec["singular"] or "")),
-            "ce_member_shown": text_html(label_text(ce.get("member") or "")),
+            "failing_member_shown": label_text(rec["failing_member"] or ""),
+            "title_shown": label_text(rec["title"]),
+            "singular_shown": label_text(rec["singular"] or ""),
+            "ce_member_shown": label_text(ce.get("member") or ""),
             "ce_whose": whose_symbols(rec["id"])}
 
 
@@ -92,7 +99,7 @@ def _view(rec: dict) -> dict:
              transcription_text=transcription_words(rec.get("transcription")))
     v["undecided"] = undecided_reasons(rec) if rec["verdict"] == "undecided" else []
     v["members"] = [dict(m, mathml=math_or_text(m["latex"], m["text"]),
-                         label_shown=text_html(label_text(m["label"]))) for m in rec["members"]]
+                         label_shown=label_text(m["label"])) for m in rec["members"]]
     v.update(_prose_view(rec))
     v["failing_text"] = next((m["text"] for m in rec["members"]
                               if m["status"] == "fails" and m["role"] != "corrected"), None)
@@ -126,13 +133,13 @@ def to_html(results: list[Outcome], *, title: str = TITLE, source: str | None = 
     """
     views = [_view(result_record(r, timings=False)) for r in results]
     s = summary(results)
-    return _env().get_template("chapter3.html.j2").render(
+    return letter_subscripts(_env().get_template("chapter3.html.j2").render(
         causes=cause_line(results) if s["does-not-hold"] else "",
         title=title, source=source, citation=CITATION.replace("*", ""),
         counts=list(s.items()), total=len(results),
         bad=[v for v in views if v["verdict"] == "does-not-hold"],
         off=[v for v in views if v["verdict"] != v["expected"]],
-        groups=sections(views), errata=errata_rows(views), words=html_entries())
+        groups=sections(views), errata=errata_rows(views), words=html_entries()))
 
 
 def markdown_to_html(text: str, title: str, figures: dict[str, str] | None = None) -> str:
