@@ -29,6 +29,7 @@ FORBIDDEN = [
     (re.compile(r"(?<=\w)_(?:alt|neg)\b"), "an _alt/_neg suffix"),
     (re.compile(r"\d?prime\b"), "a prime spelled out"),
     (re.compile(r"\bbrace\b"), "the word brace (the book's underbrace)"),
+    (re.compile(r"\bunderbrace\b"), "LaTeX's \\underbrace as a word (a braced term)"),
     (re.compile(r"\|\|"), "an ASCII norm ||"),
     (re.compile(r"Pluecker"), "Pluecker (the book spells Plücker)"),
     (re.compile(r"\b[A-Za-z]+_(?:dot|ddot|tilde|hat|bar|par|perp|inf)\b"),
@@ -125,7 +126,7 @@ def code():
 def test_the_scan_finds_what_it_looks_for(code):
     # the scan itself: each kind of slip found, book notation and code names left alone
     for slip in ["(-M_C)[:3, 3:] = O", "replace V by V_alt", "θ_neg = 1", "e_2prime",
-                 "pdot_perp brace", "adot . omega/||omega||^2", "Pluecker array",
+                 "pdot_perp brace", "ṗ⊥ underbrace", "adot . omega/||omega||^2", "Pluecker array",
                  "n_wrench_turn = 1", "m[[A, B], [C, O]]", "[[[ω], 0], [[v], [ω]]]"]:
         assert offences(slip, code), slip
     assert offences("M_A = [I_C, O; O, m 𝟏]; ‖ω‖² = ω·ω; [M_A - M_C]₁₂ = O; "

@@ -49,7 +49,7 @@ def test_book_notation(shown):
 
 def test_3_59_names_only_the_wrong_brace(shown):
     t = shown["3.59"]
-    assert "Fails: member “ṗ⊥ underbrace”" in t
+    assert "Fails: member “braced ṗ⊥”" in t
     assert t.count("[fails]") == 1
     words = " ".join(t.split())  # the cause paragraph is wrapped to the width
     assert "cause not determined" in words and "what is known" in words

@@ -36,6 +36,35 @@ _TOKEN = re.compile(r"(?<![A-Za-z0-9_])[A-Za-z][A-Za-z0-9_]*'*")  # not inside "
 
 
 _NESTED = re.compile(r"\[(\[[^\[\]]*\](?:, \[[^\[\]]*\])+)\]")
+#: (3.59)'s braced terms, labelled "pdot_perp brace" (or "underbrace", LaTeX's command
+#: name): "braced ṗ⊥" in words, never a LaTeX command as text
+_BRACE = re.compile(r"(?<![\w(])([A-Za-z][\w']*) (?:under)?brace\b")
+_DIAG = re.compile(r"\bdiag\(")
+
+
+def _book_forms(text: str) -> str:
+    """The ASCII text's own shorthands in the book's forms, before either printer reads
+    it: ``diag(I_C, O)`` as the block matrix ``[I_C, O; O, O]`` (the book prints a
+    block-diagonal matrix as its blocks, (3.138), as the labels beside it print theirs),
+    a braced term's label in words."""
+    text = _BRACE.sub(r"braced \1", text)
+    text = re.sub(r"\((?:under)?brace\)", "(braced)", text)
+    while m := _DIAG.search(text):
+        depth, args, start = 0, [], m.end()
+        for k in range(m.end(), len(text)):
+            depth += (text[k] in "([") - (text[k] in ")]")
+            if depth < 0:
+                break
+            if depth == 0 and text[k] == ",":
+                args.append(text[start:k].strip())
+                start = k + 1
+        else:
+            return text  # unbalanced: left as written
+        args.append(text[start:k].strip())
+        body = "; ".join(", ".join(a if i == j else "O" for j in range(len(args)))
+                         for i, a in enumerate(args))
+        text = f"{text[:m.start()]}[{body}]{text[k + 1:]}"
+    return text
 
 
 def _mathy(tok: str) -> bool:
@@ -54,16 +83,16 @@ def _token(tok: str) -> str:
 
 #: a label's tokens for :func:`label_latex`
 _LATEX_TOKEN = re.compile(r"\|\||\^T\b|\^-?\d+|[A-Za-z][A-Za-z0-9_]*'*~?|\d+|\s+|.")
-_WORD = {"brace": "underbrace"}  # the book's word for the braced term of (3.59)
 
 
 def label_latex(text: str) -> str:
     """A member's ASCII label as LaTeX for the MathML printer (issue 28: the errata table
     labels members in MathML, never in ASCII): its mathematics in book notation
     (``"adot . omega/||omega||^2"`` -> ``\\dot{a} \\cdot \\omega/\\|\\omega\\|^{2}``), its English
-    words as ``\\text{...}`` (``"pdot_perp brace"`` -> ``\\dot{p}_{\\perp}\\text{ underbrace}``).
+    words as ``\\text{...}`` (``"pdot_perp brace"`` -> ``\\text{braced } \\dot{p}_{\\perp}``).
     """
-    toks = _LATEX_TOKEN.findall(text or "")
+    # a size, 6x6, is 6 × 6 (not the product of 6 and x₆)
+    toks = _LATEX_TOKEN.findall(re.sub(r"\b(\d+)x(\d+)\b", r"\1×\2", _book_forms(text or "")))
     out: list[tuple[bool, str]] = []  # (is_math, piece)
 
     def mathy(t: str) -> bool:
@@ -76,6 +105,8 @@ def label_latex(text: str) -> str:
             [x for x in reversed(toks[:i]) if not x.isspace()][:1]
         if t == "||":
             out.append((True, r"\|"))
+        elif t == "×":
+            out.append((True, r"\times"))
         elif t == "^T":
             out.append((True, "^{T}"))
         elif t.startswith("^"):
@@ -90,7 +121,7 @@ def label_latex(text: str) -> str:
         elif t == "." and len(near) == 2 and all(mathy(n) or n in "()|" for n in near):
             out.append((True, r"\cdot"))
         elif t[0].isalpha():
-            out.append((False, _WORD.get(t, t)))
+            out.append((False, t))
         elif t.isdigit() or t in "+/=()[],":
             out.append((True, t))
         elif t == "-" and not (out and not out[-1][0]):
@@ -125,12 +156,11 @@ def label_text(text: str) -> str:
         return text
     if "\\" in text:
         text = "".join(latex_text(p) if is_tex else p for is_tex, p in latex_spans(text))
-    out = re.sub(r"\|\|([^|]+?)\|\|", lambda m: f"‖{m.group(1)}‖", text)
+    out = re.sub(r"\|\|([^|]+?)\|\|", lambda m: f"‖{m.group(1)}‖", _book_forms(text))
     out = re.sub(r"([A-Za-z])~", lambda m: m.group(1) + _COMBINING["tilde"], out)
     out = re.sub(r"\^T\b", "ᵀ", out)
     out = re.sub(r"\^(-?\d+)\b", lambda m: m.group(1).translate(_SUP), out)
     out = out.replace("!=", "≠").replace("<=", "≤").replace(">=", "≥")
-    out = re.sub(r"\bbrace\b", "underbrace", out)  # (3.59)'s braced term, as the book's LaTeX
     # a block matrix written as Python's nested lists, m[[X, Y], [Z, W]]: block notation
     out = _NESTED.sub(lambda m: "[" + "; ".join(re.findall(r"\[([^\[\]]*)\]", m.group(1)))
                       + "]", out)

@@ -48,6 +48,9 @@ _BOOK_COMPOUNDS = {"p_star": ("p*", "p^{*}", r"\mathbf{p}^{*}"),
                                r"(\mathbf{A}^T\mathbf{A})^{-1}")}
 #: a declaration module's private prefix on atom names (``s34_adot``, ``sec342_vdot``)
 _PRIVATE = re.compile(r"^(?:s|sec|ex)\d{2,}_")
+#: an entry of a reader's vector renamed beside a scalar of the same glyph (``a__1`` beside
+#: ``a_1``, :func:`rigidsym.latex.letting._fresh`): printed ``(a)₁``, never the scalar's ``a₁``
+_RENAMED_ENTRY = re.compile(r"(.*[^_])__+(\d{1,2})")
 
 
 def _parse(name: str) -> tuple[str, list[str], list[str], str]:
@@ -102,6 +105,8 @@ def book_text(name: str) -> str:
         return f"‖{book_text(name[5:])}‖"
     if name in _BOOK_COMPOUNDS:
         return _BOOK_COMPOUNDS[name][0]
+    if m := _RENAMED_ENTRY.fullmatch(name):
+        return f"({book_text(m.group(1))}){m.group(2).translate(_SUBSCRIPT_DIGITS)}"
     base, accents, subs, primes = _parse(_BOOK_NAMES.get(name, name))
     out = _GREEK.get(base, base)
     if len(out) == 1:
@@ -109,6 +114,8 @@ def book_text(name: str) -> str:
     else:
         out += "".join("_" + a for a in accents)
     out += primes
+    if _entry_of_subscripted(subs):  # I_C_21: the entry (2, 1) of I_C, (I_C)₂₁, not I_C₂₁
+        return f"({book_text(name.rsplit('_', 1)[0])})" + subs[-1].translate(_SUBSCRIPT_DIGITS)
     for s in subs:
         if s in _SUB_TEXT:
             out += _SUB_TEXT[s]
@@ -117,6 +124,19 @@ def book_text(name: str) -> str:
         else:   # a Greek subscript in its letter (Craig's c_θ), as the base is
             out += "_" + _GREEK.get(s, s)
     return out
+
+
+def _entry_of_subscripted(subs: list[str]) -> bool:
+    """Whether the subscripts are a letter subscript and then an entry's digits (``C``,
+    ``21`` of ``I_C_21``): two subscripts on one letter would read as one."""
+    return len(subs) > 1 and subs[-1].isdigit() and not subs[-2].isdigit() \
+        and subs[-2] not in _SUB_TEXT
+
+
+def has_subscript(name: str) -> bool:
+    """Whether an atom's book name carries a subscript (``M_A``, ``pdot_perp``, ``x_1``): an
+    entry of it is printed ``(M_A)₁₂``, never with a second subscript."""
+    return bool(_RENAMED_ENTRY.fullmatch(name) or _parse(_BOOK_NAMES.get(name, name))[2])
 
 
 def book_group(name: str) -> str:
@@ -138,6 +158,8 @@ def book_latex(name: str, bold: bool = False) -> str:
         return rf"\|{book_latex(name[5:], bold=True)}\|"
     if name in _BOOK_COMPOUNDS:
         return _BOOK_COMPOUNDS[name][2 if bold else 1]
+    if m := _RENAMED_ENTRY.fullmatch(name):  # an entry of a vector: the vector in bold
+        return rf"\left({book_latex(m.group(1), bold=True)}\right)_{{{m.group(2)}}}"
     base, accents, subs, primes = _parse(_BOOK_NAMES.get(name, name))
     if base in _GREEK:
         core = "\\" + ("lambda" if base == "lam" else base)
@@ -149,6 +171,8 @@ def book_latex(name: str, bold: bool = False) -> str:
     for a in accents:
         core = rf"\{a}{{{core}}}"
     core += primes
+    if _entry_of_subscripted(subs):  # (\mathbf{I}_{C})_{21}: as the text's (I_C)₂₁
+        return rf"\left({book_latex(name.rsplit('_', 1)[0], True)}\right)_{{{subs[-1]}}}"
     if subs:  # a word (isa, wrench) upright, as one symbol, not a product of letters
         core += "_{" + ",".join(_SUB_LATEX.get(s) or (rf"\mathrm{{{s}}}" if len(s) > 1
                                                       and s.isalpha() else s)

@@ -22,6 +22,7 @@ from rigidsym.printing.names import (
     book_group,
     book_latex,
     book_text,
+    has_subscript,
 )
 
 __all__ = ["is_negative_term", "book_group", "book_text", "book_latex", "text", "latex",
@@ -128,7 +129,8 @@ class BookStrPrinter(_BookNotation, StrPrinter):
         return "𝟏"  # bold, as the book: a plain 1 would read as a scalar
 
     def _print_ZeroMatrix(self, expr):
-        return "O"
+        r, c = expr.shape  # the book's O₃₄, O₄₃ (3.80b, 3.92) beside its square O
+        return "O" if r == c or 1 in (r, c) else f"O{r}{c}".translate(_SUBSCRIPT_DIGITS)
 
     def _print_Transpose(self, expr):
         return self.parenthesize(expr.arg, PRECEDENCE["Pow"], strict=True) + "ᵀ"
@@ -142,7 +144,8 @@ class BookStrPrinter(_BookNotation, StrPrinter):
         return f"tr({self._print(arg)})"
 
     def _entry(self, name: str, sub: str) -> str:
-        return book_text(name) + sub.translate(_SUBSCRIPT_DIGITS)
+        head = f"({book_text(name)})" if has_subscript(name) else book_text(name)
+        return head + sub.translate(_SUBSCRIPT_DIGITS)  # (M_A)₁₂: one subscript per letter
 
     def _block(self, parent: str, sub: str) -> str:
         return f"[{parent}]{sub.translate(_SUBSCRIPT_DIGITS)}"
@@ -274,7 +277,8 @@ class BookLatexPrinter(_BookNotation, LatexPrinter):
         return r"\mathbf{1}"
 
     def _print_ZeroMatrix(self, expr):
-        return r"\mathbf{O}"
+        r, c = expr.shape
+        return r"\mathbf{O}" if r == c or 1 in (r, c) else rf"\mathbf{{O}}_{{{r}{c}}}"
 
     def _dot(self, a, b) -> str:
         a, b = (rf"\left({self._print(x)}\right)" if type(x).__name__ == "Cross" else self._print(x)
@@ -285,6 +289,8 @@ class BookLatexPrinter(_BookNotation, LatexPrinter):
         return rf"\mathrm{{tr}}\left({self._print(arg)}\right)"
 
     def _entry(self, name: str, sub: str) -> str:
+        if has_subscript(name):  # I_{C}_{21} is no LaTeX: (\mathbf{I}_{C})_{21}
+            return rf"\left({book_latex(name, bold=True)}\right)_{{{sub}}}"
         return f"{book_latex(name)}_{{{sub}}}"
 
     def _block(self, parent: str, sub: str) -> str:

@@ -9,6 +9,7 @@ the schema-2 records (:func:`rigidsym.report.record.result_record`) through Jinj
 from __future__ import annotations
 
 import html
+import re
 from functools import cache
 
 import sympy as sp
@@ -46,6 +47,25 @@ def _value_mathml(text: str | None) -> Markup:
     except (sp.SympifyError, SyntaxError, TypeError):
         return Markup(f"<code>{html.escape(text)}</code>")
     return math_or_text(notation.latex(v), text, display=False)
+
+
+#: a letter subscript the Unicode text writes with an underscore (M_A, Ṡ_N: Unicode has no
+#: subscript capitals); the page sets it as a subscript, as the MathML beside it does
+_LETTER = r"(?:(?![\u00b2\u00b3\u00b9\u1d2c-\u1dbf\u2070-\u209f])[^\W\d_])"  # not ², ᵀ, ₁
+_LETTER_SUB = re.compile(rf"(?<![\w\u0300-\u036f'])({_LETTER}[\u0300-\u036f]*'*)"
+                         rf"_({_LETTER}{{1,2}})(?!{_LETTER}|[0-9_])")
+#: what the subscript pass leaves alone: tags, MathML, code listings, the head
+_NOT_TEXT = re.compile(r"(<math\b.*?</math>|<pre\b.*?</pre>|<style\b.*?</style>|"
+                       r"<title\b.*?</title>|<[^>]+>)", re.S)
+
+
+def letter_subscripts(page: str) -> str:
+    """``page`` (HTML) with the letter subscripts of its text in ``<sub>``: ``M_A`` ->
+    ``M<sub>A</sub>`` in labels, causes, repairs and the book-notation ``<code>`` spans;
+    names of code (``plucker_transfer``, ``ad_dual``) are never one letter and a
+    subscript, so they stay as written."""
+    return "".join(p if i % 2 else _LETTER_SUB.sub(r"\1<sub>\2</sub>", p)
+                   for i, p in enumerate(_NOT_TEXT.split(page)))
 
 
 def prose_html(text: str | None) -> Markup:
@@ -113,13 +133,13 @@ def to_html(results: list[Outcome], *, title: str = TITLE, source: str | None = 
     """
     views = [_view(result_record(r, timings=False)) for r in results]
     s = summary(results)
-    return _env().get_template("chapter3.html.j2").render(
+    return letter_subscripts(_env().get_template("chapter3.html.j2").render(
         causes=cause_line(results) if s["does-not-hold"] else "",
         title=title, source=source, citation=CITATION.replace("*", ""),
         counts=list(s.items()), total=len(results),
         bad=[v for v in views if v["verdict"] == "does-not-hold"],
         off=[v for v in views if v["verdict"] != v["expected"]],
-        groups=sections(views), errata=errata_rows(views), words=html_entries())
+        groups=sections(views), errata=errata_rows(views), words=html_entries()))
 
 
 def markdown_to_html(text: str, title: str, figures: dict[str, str] | None = None) -> str:

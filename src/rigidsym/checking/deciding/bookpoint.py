@@ -290,8 +290,9 @@ def _add_free(add, a, plan) -> None:
     mates = sorted((x for x in plan.rules if x != sp.pi and atom_base(x)[1] == k
                     and constraint_of(atom_base(x)[0]) is None
                     and group_base(plain_name(x)) == g), key=sp.default_sort_key)
-    value = sp.ImmutableMatrix(mates) if len(mates) > 1 else a
-    add(("free", g, k), *_name(g, k, len(mates) > 1), value)
+    lone = len(mates) < 2  # a lone scalar by its own name: a reader's K_1 is K₁, not K
+    g = plain_name(a) if lone else g
+    add(("free", g, k), *_name(g, k, not lone), a if lone else sp.ImmutableMatrix(mates))
 
 
 def _angle_of(value, plan):

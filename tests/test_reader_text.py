@@ -1,0 +1,142 @@
+"""What a reader sees of a symbol, as the book prints it: no LaTeX command as a word
+((3.59)'s braces), a block-diagonal matrix as its blocks ((3.148)), the book's O₃₄ ((3.94)),
+one subscript per letter (an entry of I_C is (I_C)₂₁), letter subscripts as subscripts in
+HTML (M_A), and a reader's scalar K_1 never printed as the first entry of their vector K.
+Each test here failed on main before these fixes (3915e94)."""
+
+from __future__ import annotations
+
+import re
+import unicodedata
+from fractions import Fraction
+from pathlib import Path
+
+import pytest
+import sympy as sp
+
+from rigidsym.checking.deciding import registry
+from rigidsym.checking.deciding.registry import REGISTRY, load_all
+from rigidsym.cli import main
+from rigidsym.printing import notation
+from rigidsym.printing.labels import label_latex, label_text
+from rigidsym.printing.names import book_latex, book_text
+
+REPORT = Path(__file__).resolve().parents[1] / "generated" / "report"
+#: a LaTeX subscript on a subscript: I_{C}_{21} is a TeX error ("double subscript")
+_DOUBLE_SUB = re.compile(r"_\{[^{}]*\}_\{")
+
+
+def _html_text(page: str) -> str:
+    from tests.test_reader_names import html_text
+    return html_text(page)
+
+
+# ------------------------------------------------------------------------- (3.59)
+def test_the_braced_terms_of_3_59_read_in_words_not_as_latex():
+    load_all()
+    st = REGISTRY["3.59"].build()
+    texts = [r.label for r in st.printed + (st.corrected or [])] + [REGISTRY["3.59"].evidence]
+    for t in texts:
+        assert "underbrace" not in label_text(t), label_text(t)
+        assert "underbrace" not in label_latex(t), label_latex(t)
+    assert label_text("pdot_perp brace") == "braced ṗ⊥"
+    assert label_latex("pdot_perp brace") == r"\text{braced } \dot{p}_{\perp}"
+    md = (REPORT / "chapter3.md").read_text(encoding="utf-8")
+    md = re.sub(r"\$\$.*?\$\$", " ", md, flags=re.S)   # the book's own LaTeX aside
+    assert "underbrace" not in md
+    assert "underbrace" not in _html_text((REPORT / "chapter3.html").read_text("utf-8"))
+
+
+# ------------------------------------------------------------------------ (3.148)
+def test_a_block_diagonal_matrix_reads_as_its_blocks():
+    """The book prints block-diagonal matrices as their blocks ((3.138): [I, O; O, m1]);
+    (3.148)'s corrected label said diag(I_C, O) beside [O, C - A; O, 1]."""
+    assert label_text("J = diag(I_C, O), P = [C - A; 1]") == "J = [I_C, O; O, O], P = [C - A; 1]"
+    assert label_text("W = diag(Omega, m 1)") == "W = [Ω, O; O, m 1]"
+    assert "diag" not in label_latex("J = diag(I_C, O)")
+    assert "x_{6}" not in label_latex("6x6 R = [O, C - A; O, 1]")   # a size, not x₆
+    load_all()
+    st = REGISTRY["3.148"].build()   # the label's [I_C, O; O, O] is the declaration's J
+    J = sp.Matrix(st.model[sp.MatrixSymbol("J", 6, 6)])
+    I_C = next(v for k, v in st.model.items() if getattr(k, "name", "") == "I_C")
+    assert J[:3, :3] == sp.Matrix(I_C) and J[:3, 3:].is_zero_matrix and \
+        J[3:, :].is_zero_matrix
+    md = (REPORT / "chapter3.md").read_text(encoding="utf-8")
+    assert "diag(" not in md and "J = [I_C, O; O, O], P = [C - A; 1]" in md
+    assert "diag(" not in _html_text((REPORT / "chapter3.html").read_text("utf-8"))
+
+
+# ------------------------------------------------------------------------- (3.94)
+def test_zero_blocks_print_as_the_book_prints_them():
+    """(3.94) prints [Ḟ, O; O₃₄, O] and (3.92) [Ḟ, O₄₃; O, O]: a non-square zero block
+    carries its size, in text and LaTeX."""
+    Z = sp.ZeroMatrix(3, 4)
+    assert notation.text(Z) == "O₃₄" and notation.latex(Z) == r"\mathbf{O}_{34}"
+    assert notation.text(sp.ZeroMatrix(3, 3)) == "O"
+    load_all()
+    for eq_id, block in (("3.94", r"\mathbf{O}_{34}"), ("3.92", r"\mathbf{O}_{43}")):
+        assert block in REGISTRY[eq_id].latex   # the book's
+        for r in REGISTRY[eq_id].build().printed:
+            assert block in notation.latex(r.rhs), (eq_id, notation.latex(r.rhs))
+
+
+# ------------------------------------------------------------- subscripts, entries
+def test_an_entry_of_a_subscripted_matrix_has_one_subscript():
+    I_C = sp.MatrixSymbol("I_C", 3, 3)
+    assert notation.text(I_C[1, 0]) == "(I_C)₂₁"
+    assert notation.latex(I_C[1, 0]) == r"\left(\mathbf{I}_{C}\right)_{21}"
+    assert book_text("I_C_21") == "(I_C)₂₁"
+    assert not _DOUBLE_SUB.search(book_latex("I_C_21"))
+    assert notation.text(sp.MatrixSymbol("a", 3, 1)[0, 0]) == "a₁"   # plain entries as before
+    json_text = (REPORT / "chapter3.json").read_text(encoding="utf-8")
+    assert not _DOUBLE_SUB.search(json_text.replace("\\\\", "\\")), "a double subscript"
+
+
+def test_letter_subscripts_are_subscripts_in_html():
+    """Unicode has no subscript capitals, so the text writes M_A; the HTML page sets the
+    subscript as the MathML beside it does (labels, causes, repairs, code spans), and
+    leaves code names, MathML and attributes alone."""
+    from rigidsym.report.html import letter_subscripts as sub
+    assert sub("<p>M_A - M_C</p>") == "<p>M<sub>A</sub> - M<sub>C</sub></p>"
+    assert sub("<code>Ṡ_N = [Ḟ, O; O₃₄, O]</code>").startswith("<code>Ṡ<sub>N</sub> =")
+    assert sub("<p>μ_i², s_wᵀ</p>") == "<p>μ<sub>i</sub>², s<sub>w</sub>ᵀ</p>"
+    kept = ('<p>kernel plucker_transfer, ad_dual(V), p_L2</p><a href="#a_b">x</a>'
+            "<math><mi>M_A</mi></math><pre>s_t</pre>")
+    assert sub(kept) == kept
+    page = (REPORT / "chapter3.html").read_text("utf-8")
+    shown = re.sub(r"<math.*?</math>|<pre.*?</pre>", " ", page, flags=re.S)
+    for name in ("M_A", "Ṡ_N", "I_C", "m_i"):
+        assert name not in unicodedata.normalize("NFC", _html_text(shown)), name
+    page = unicodedata.normalize("NFC", page)
+    assert "M<sub>A</sub>" in page and "Ṡ<sub>N</sub>" in page
+
+
+# ------------------------------------------------------ a reader's K_1 and vector K
+@pytest.fixture
+def _forget_latex_ids():
+    yield
+    registry.forget_module("rigidsym.latex.letting")
+
+
+def test_a_scalar_K_1_and_the_unit_vector_K_print_apart(capsys, _forget_latex_ids):
+    code = main(["check", "--latex", r"K_1 = \mathbf{K}^T\mathbf{a}",
+                 "--let", r"\mathbf{K}: unit vector"])
+    out = capsys.readouterr().out
+    assert code == 1 and "Counterexample" in out
+    block = out.split("Counterexample", 1)[1].split("left side", 1)[0]
+    rows = dict(line.strip().split(" = ", 1) for line in block.splitlines()[1:]
+                if " = " in line)
+    assert len(rows) == len([x for x in block.splitlines()[1:] if " = " in x]), block
+    assert {"K₁", "K", "a"} <= set(rows), block
+    K = [Fraction(x) for x in rows["K"].split("≈")[0].strip(" []").split(";")]
+    assert sum(x * x for x in K) == 1   # the vector K, a unit vector, exactly
+    left = out.split("left side K₁ = ", 1)[1].split()[0]
+    assert Fraction(rows["K₁"].split("≈")[0].strip()) == Fraction(left)   # the scalar
+
+
+def test_a_renamed_vector_entry_never_prints_as_the_scalar():
+    # letting._fresh names the entries of \mathbf{K} K__1.. beside a scalar K_1
+    from rigidsym.report.record import _atom_text
+    assert book_text("K__1") == "(K)₁" != book_text("K_1") == "K₁"
+    assert book_latex("K__1") == r"\left(\mathbf{K}\right)_{1}"
+    assert _atom_text("K__1") != _atom_text("K_1")
