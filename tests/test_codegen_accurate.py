@@ -83,3 +83,21 @@ def test_powers_by_pow_not_under_a_quotient():
     assert accurate._decide(parts, {}) == "exact-cancel"
     # an angle kernel: the half-angle rewrite comes after the measurement
     assert accurate._exact_powers(out, {"angles": [sp.Symbol("phi")]}) is None
+
+
+def test_fractions_in_cos_phi_merged_and_decided():
+    """Issue 37: sympy.diff of ``sin phi / (2 - 2 cos phi)`` (the cot(phi/2) of ``e_dot``)
+    sums ``cos phi / (2 - 2 cos phi) - 2 sin^2 phi / (2 - 2 cos phi)^2``, which cancel;
+    the rule merges the terms of one phi-free factor into their reduced fraction
+    ``-1 / (2 - 2 cos phi)`` and leaves a sum it cannot shorten alone."""
+    phi = sp.Symbol("phi", real=True)
+    w, e = sp.symbols("w e", real=True)
+    f = sp.diff(w * (1 - e**2) * sp.sin(phi) / (2 - 2 * sp.cos(phi)), phi)
+    out, parts = accurate._angle_fractions([f, w * sp.cos(phi) + e], {"angles": [phi]})
+    assert sp.count_ops(out[0]) < sp.count_ops(f) and not out[0].has(sp.sin(phi))
+    assert sp.simplify(out[0] * (2 - 2 * sp.cos(phi)) + w * (1 - e**2)) == 0
+    assert out[1] == w * sp.cos(phi) + e and len(parts) == 1
+    k = BY["N_tilde_dot"]
+    sub = {phi: accurate._constrained(k, input_symbols(k))[input_symbols(k)["phi"]]}
+    assert accurate._decide(parts, sub) in ("exact-cancel", "random-exact")
+    assert accurate._angle_fractions([w * sp.cos(phi) + e], {"angles": [phi]}) is None

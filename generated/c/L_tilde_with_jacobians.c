@@ -6,14 +6,14 @@
  * template: c_kernel.c.j2
  * math hash: sha256:6f7cbc14b1897619
  * sympy 1.14.0, rigidsym 0.2.0
- * operations: 35
- * accuracy rewrite (main): cos phi as 1 - 2 s^2 or 2 c^2 - 1: the bare cos phi left by the
- *     half-angle rewrite, as 1 - 2 s^2 or 2 c^2 - 1 (s, c: sin, cos of phi/2) rather than 1 -
- *     2 s^2: the form of the measured least error among 1 - 2 s^2, 1 - 2 s^2 or 2 c^2 - 1, (c
- *     - s) (c + s) (rigidsym.codegen.cos_form); worst ratio to the rule max(2 e_best, 4 u)
+ * operations: 20
+ * accuracy rewrite (main): fractions in cos phi merged (L_tilde_D_phi): sympy.diff of a
+ *     quotient in cos phi (cot(phi/2) as sin phi / (1 - cos phi)) sums terms that cancel (cos
+ *     phi / (2 - 2 cos phi) - 2 sin^2 phi / (2 - 2 cos phi)^2); merged into one reduced
+ *     fraction (-1 / (2 - 2 cos phi)) they do not; worst ratio to the rule max(2 e_best, 4 u)
  *     (e_best: the most accurate of the textbook formula and the forms tried, per point;
- *     rigidsym.codegen.rule) at 336 points of the regimes (rigidsym.codegen.regimes, exact,
- *     rounded to float64) 0.86 -> 0.67, never worse than the textbook formula by that rule;
+ *     rigidsym.codegen.rule) at 68 points of the regimes (rigidsym.codegen.regimes, exact,
+ *     rounded to float64) 1.5 -> 0.5, never worse than the textbook formula by that rule;
  *     equal to the declared formula by the zero test (exact-cancel)
  */
 #include "L_tilde_with_jacobians.h"
@@ -74,8 +74,8 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_L_tilde_with_jacobians_lanes(
         const double phi = col_phi[j];
         const double x0 = (0.5)*phi;
 
-        trig_0[j] = RIGIDSYM_VSIN(x0);
-        trig_1[j] = RIGIDSYM_VCOS(x0);
+        trig_0[j] = RIGIDSYM_VCOS(x0);
+        trig_1[j] = RIGIDSYM_VSIN(x0);
         far |= RIGIDSYM_TRIG_FAR(x0);
     }
     if (far) {
@@ -84,9 +84,9 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_L_tilde_with_jacobians_lanes(
         const double x0 = (0.5)*phi;
 
             if (RIGIDSYM_TRIG_FAR(x0))
-                trig_0[j] = sin(x0);
+                trig_0[j] = cos(x0);
             if (RIGIDSYM_TRIG_FAR(x0))
-                trig_1[j] = cos(x0);
+                trig_1[j] = sin(x0);
         }
     }
     for (int64_t j = 0; j < RIGIDSYM_LANES_TRIG; ++j) {
@@ -127,8 +127,8 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_L_tilde_with_jacobians_lanes_f32(
         const double phi = col_phi[j];
         const double x0 = (0.5)*phi;
 
-        trig_0[j] = RIGIDSYM_VSIN(x0);
-        trig_1[j] = RIGIDSYM_VCOS(x0);
+        trig_0[j] = RIGIDSYM_VCOS(x0);
+        trig_1[j] = RIGIDSYM_VSIN(x0);
         far |= RIGIDSYM_TRIG_FAR(x0);
     }
     if (far) {
@@ -137,9 +137,9 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_L_tilde_with_jacobians_lanes_f32(
         const double x0 = (0.5)*phi;
 
             if (RIGIDSYM_TRIG_FAR(x0))
-                trig_0[j] = sin(x0);
+                trig_0[j] = cos(x0);
             if (RIGIDSYM_TRIG_FAR(x0))
-                trig_1[j] = cos(x0);
+                trig_1[j] = sin(x0);
         }
     }
     for (int64_t j = 0; j < RIGIDSYM_LANES_F32; ++j) {

@@ -6,14 +6,14 @@
  * template: c_kernel.h.j2
  * math hash: sha256:6f7cbc14b1897619
  * sympy 1.14.0, rigidsym 0.2.0
- * operations: 35
- * accuracy rewrite (main): cos phi as 1 - 2 s^2 or 2 c^2 - 1: the bare cos phi left by the
- *     half-angle rewrite, as 1 - 2 s^2 or 2 c^2 - 1 (s, c: sin, cos of phi/2) rather than 1 -
- *     2 s^2: the form of the measured least error among 1 - 2 s^2, 1 - 2 s^2 or 2 c^2 - 1, (c
- *     - s) (c + s) (rigidsym.codegen.cos_form); worst ratio to the rule max(2 e_best, 4 u)
+ * operations: 20
+ * accuracy rewrite (main): fractions in cos phi merged (L_tilde_D_phi): sympy.diff of a
+ *     quotient in cos phi (cot(phi/2) as sin phi / (1 - cos phi)) sums terms that cancel (cos
+ *     phi / (2 - 2 cos phi) - 2 sin^2 phi / (2 - 2 cos phi)^2); merged into one reduced
+ *     fraction (-1 / (2 - 2 cos phi)) they do not; worst ratio to the rule max(2 e_best, 4 u)
  *     (e_best: the most accurate of the textbook formula and the forms tried, per point;
- *     rigidsym.codegen.rule) at 336 points of the regimes (rigidsym.codegen.regimes, exact,
- *     rounded to float64) 0.86 -> 0.67, never worse than the textbook formula by that rule;
+ *     rigidsym.codegen.rule) at 68 points of the regimes (rigidsym.codegen.regimes, exact,
+ *     rounded to float64) 1.5 -> 0.5, never worse than the textbook formula by that rule;
  *     equal to the declared formula by the zero test (exact-cancel)
  *
  * Left inverse of the rate matrix of the linear invariants [u; u0]: omega = L_tilde rate, with the Jacobians of its outputs.
@@ -24,7 +24,7 @@
  * measured at generation, rigidsym.codegen.float32; worst error 1.0 of what
  * the rule of issue 37 allows, max(2 e_textbook, 4 u), per output, normwise, at its
  * points where the kernel computed in double is within it). In double:
- *   trig_0, trig_1, x1, x2, x3, x11, x12, x13, x14, x15
+ *   trig_0, trig_1, x1, x2, x10
  */
 #ifndef RIGIDSYM_L_TILDE_WITH_JACOBIANS_H
 #define RIGIDSYM_L_TILDE_WITH_JACOBIANS_H
@@ -48,67 +48,62 @@ static inline int rigidsym_L_tilde_with_jacobians_sample(
     int singular = 0;
     {
         const double x0 = (0.5)*phi;
-        const double x1 = sin(x0);
-        const double x2 = cos(x0);
-        const double x3 = x1/x2;
-        const double x4 = e_2*x3;
-        const double x5 = -x4;
-        const double x6 = e_1*x3;
-        const double x7 = e_0*x3;
-        const double x8 = -x7;
-        const double x9 = -x6;
-        const double x10 = -x3;
-        const double x11 = (x1*x1);
-        const double x12 = (x2*x2);
-        const double x13 = 1.0/x12;
-        const double x14 = x11*x13;
-        const double x15 = (0.5)*x13*((x11 < 0.5) ? (1.0 - 2.0*x11) : (2.0*x12 - 1.0));
-        const double x16 = e_2*x14 + e_2*x15;
-        const double x17 = -x16;
-        const double x18 = e_1*x14 + e_1*x15;
-        const double x19 = e_0*x14 + e_0*x15;
-        const double x20 = -x19;
-        const double x21 = -x18;
+        const double x1 = cos(x0);
+        const double x2 = sin(x0)/x1;
+        const double x3 = e_2*x2;
+        const double x4 = -x3;
+        const double x5 = e_1*x2;
+        const double x6 = e_0*x2;
+        const double x7 = -x6;
+        const double x8 = -x5;
+        const double x9 = -x2;
+        const double x10 = (0.5)/(x1*x1);
+        const double x11 = e_2*x10;
+        const double x12 = -x11;
+        const double x13 = e_1*x10;
+        const double x14 = e_0*x10;
+        const double x15 = -x14;
+        const double x16 = -x13;
         out_L_tilde[0] = 1.0;
-        out_L_tilde[1] = x5;
-        out_L_tilde[2] = x6;
-        out_L_tilde[3] = x8;
-        out_L_tilde[4] = x4;
+        out_L_tilde[1] = x4;
+        out_L_tilde[2] = x5;
+        out_L_tilde[3] = x7;
+        out_L_tilde[4] = x3;
         out_L_tilde[5] = 1.0;
-        out_L_tilde[6] = x8;
-        out_L_tilde[7] = x9;
-        out_L_tilde[8] = x9;
-        out_L_tilde[9] = x7;
+        out_L_tilde[6] = x7;
+        out_L_tilde[7] = x8;
+        out_L_tilde[8] = x8;
+        out_L_tilde[9] = x6;
         out_L_tilde[10] = 1.0;
-        out_L_tilde[11] = x5;
+        out_L_tilde[11] = x4;
         out_L_tilde_D_e[0] = 0.0;
         out_L_tilde_D_e[1] = 0.0;
         out_L_tilde_D_e[2] = 0.0;
         out_L_tilde_D_e[3] = 0.0;
         out_L_tilde_D_e[4] = 0.0;
-        out_L_tilde_D_e[5] = x10;
+        out_L_tilde_D_e[5] = x9;
         out_L_tilde_D_e[6] = 0.0;
-        out_L_tilde_D_e[7] = x3;
+        out_L_tilde_D_e[7] = x2;
         out_L_tilde_D_e[8] = 0.0;
-        out_L_tilde_D_e[9] = x10;
+        out_L_tilde_D_e[9] = x9;
         out_L_tilde_D_e[10] = 0.0;
         out_L_tilde_D_e[11] = 0.0;
         out_L_tilde_D_e[12] = 0.0;
         out_L_tilde_D_e[13] = 0.0;
-        out_L_tilde_D_e[14] = x3;
+        out_L_tilde_D_e[14] = x2;
         out_L_tilde_D_e[15] = 0.0;
         out_L_tilde_D_e[16] = 0.0;
         out_L_tilde_D_e[17] = 0.0;
-        out_L_tilde_D_e[18] = x10;
+        out_L_tilde_D_e[18] = x9;
         out_L_tilde_D_e[19] = 0.0;
         out_L_tilde_D_e[20] = 0.0;
         out_L_tilde_D_e[21] = 0.0;
-        out_L_tilde_D_e[22] = x10;
+        out_L_tilde_D_e[22] = x9;
         out_L_tilde_D_e[23] = 0.0;
         out_L_tilde_D_e[24] = 0.0;
-        out_L_tilde_D_e[25] = x10;
+        out_L_tilde_D_e[25] = x9;
         out_L_tilde_D_e[26] = 0.0;
-        out_L_tilde_D_e[27] = x3;
+        out_L_tilde_D_e[27] = x2;
         out_L_tilde_D_e[28] = 0.0;
         out_L_tilde_D_e[29] = 0.0;
         out_L_tilde_D_e[30] = 0.0;
@@ -116,23 +111,23 @@ static inline int rigidsym_L_tilde_with_jacobians_sample(
         out_L_tilde_D_e[32] = 0.0;
         out_L_tilde_D_e[33] = 0.0;
         out_L_tilde_D_e[34] = 0.0;
-        out_L_tilde_D_e[35] = x10;
+        out_L_tilde_D_e[35] = x9;
         out_L_tilde_D_phi[0] = 0.0;
-        out_L_tilde_D_phi[1] = x17;
-        out_L_tilde_D_phi[2] = x18;
-        out_L_tilde_D_phi[3] = x20;
-        out_L_tilde_D_phi[4] = x16;
+        out_L_tilde_D_phi[1] = x12;
+        out_L_tilde_D_phi[2] = x13;
+        out_L_tilde_D_phi[3] = x15;
+        out_L_tilde_D_phi[4] = x11;
         out_L_tilde_D_phi[5] = 0.0;
-        out_L_tilde_D_phi[6] = x20;
-        out_L_tilde_D_phi[7] = x21;
-        out_L_tilde_D_phi[8] = x21;
-        out_L_tilde_D_phi[9] = x19;
+        out_L_tilde_D_phi[6] = x15;
+        out_L_tilde_D_phi[7] = x16;
+        out_L_tilde_D_phi[8] = x16;
+        out_L_tilde_D_phi[9] = x14;
         out_L_tilde_D_phi[10] = 0.0;
-        out_L_tilde_D_phi[11] = x17;
-        singular |= (x2) == 0.0;
+        out_L_tilde_D_phi[11] = x12;
+        singular |= (x1) == 0.0;
         /* quantities that can be non-finite for finite inputs (divisions, roots):
          * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
-        const double finite = (((x3 - x3) + (x13 - x13)) + ((x2 - x2) + (x12 - x12)));
+        const double finite = ((x2 - x2) + ((x10 - x10) + (x1 - x1)));
         singular |= finite != finite;
     }
     return singular;
@@ -157,66 +152,61 @@ static inline int rigidsym_L_tilde_with_jacobians_sample_trig(
     int singular = 0;
     {
         const double x1 = trig_0;
-        const double x2 = trig_1;
-        const double x3 = x1/x2;
-        const double x4 = e_2*x3;
-        const double x5 = -x4;
-        const double x6 = e_1*x3;
-        const double x7 = e_0*x3;
-        const double x8 = -x7;
-        const double x9 = -x6;
-        const double x10 = -x3;
-        const double x11 = (x1*x1);
-        const double x12 = (x2*x2);
-        const double x13 = 1.0/x12;
-        const double x14 = x11*x13;
-        const double x15 = (0.5)*x13*((x11 < 0.5) ? (1.0 - 2.0*x11) : (2.0*x12 - 1.0));
-        const double x16 = e_2*x14 + e_2*x15;
-        const double x17 = -x16;
-        const double x18 = e_1*x14 + e_1*x15;
-        const double x19 = e_0*x14 + e_0*x15;
-        const double x20 = -x19;
-        const double x21 = -x18;
+        const double x2 = trig_1/x1;
+        const double x3 = e_2*x2;
+        const double x4 = -x3;
+        const double x5 = e_1*x2;
+        const double x6 = e_0*x2;
+        const double x7 = -x6;
+        const double x8 = -x5;
+        const double x9 = -x2;
+        const double x10 = (0.5)/(x1*x1);
+        const double x11 = e_2*x10;
+        const double x12 = -x11;
+        const double x13 = e_1*x10;
+        const double x14 = e_0*x10;
+        const double x15 = -x14;
+        const double x16 = -x13;
         out_L_tilde[0] = 1.0;
-        out_L_tilde[1] = x5;
-        out_L_tilde[2] = x6;
-        out_L_tilde[3] = x8;
-        out_L_tilde[4] = x4;
+        out_L_tilde[1] = x4;
+        out_L_tilde[2] = x5;
+        out_L_tilde[3] = x7;
+        out_L_tilde[4] = x3;
         out_L_tilde[5] = 1.0;
-        out_L_tilde[6] = x8;
-        out_L_tilde[7] = x9;
-        out_L_tilde[8] = x9;
-        out_L_tilde[9] = x7;
+        out_L_tilde[6] = x7;
+        out_L_tilde[7] = x8;
+        out_L_tilde[8] = x8;
+        out_L_tilde[9] = x6;
         out_L_tilde[10] = 1.0;
-        out_L_tilde[11] = x5;
+        out_L_tilde[11] = x4;
         out_L_tilde_D_e[0] = 0.0;
         out_L_tilde_D_e[1] = 0.0;
         out_L_tilde_D_e[2] = 0.0;
         out_L_tilde_D_e[3] = 0.0;
         out_L_tilde_D_e[4] = 0.0;
-        out_L_tilde_D_e[5] = x10;
+        out_L_tilde_D_e[5] = x9;
         out_L_tilde_D_e[6] = 0.0;
-        out_L_tilde_D_e[7] = x3;
+        out_L_tilde_D_e[7] = x2;
         out_L_tilde_D_e[8] = 0.0;
-        out_L_tilde_D_e[9] = x10;
+        out_L_tilde_D_e[9] = x9;
         out_L_tilde_D_e[10] = 0.0;
         out_L_tilde_D_e[11] = 0.0;
         out_L_tilde_D_e[12] = 0.0;
         out_L_tilde_D_e[13] = 0.0;
-        out_L_tilde_D_e[14] = x3;
+        out_L_tilde_D_e[14] = x2;
         out_L_tilde_D_e[15] = 0.0;
         out_L_tilde_D_e[16] = 0.0;
         out_L_tilde_D_e[17] = 0.0;
-        out_L_tilde_D_e[18] = x10;
+        out_L_tilde_D_e[18] = x9;
         out_L_tilde_D_e[19] = 0.0;
         out_L_tilde_D_e[20] = 0.0;
         out_L_tilde_D_e[21] = 0.0;
-        out_L_tilde_D_e[22] = x10;
+        out_L_tilde_D_e[22] = x9;
         out_L_tilde_D_e[23] = 0.0;
         out_L_tilde_D_e[24] = 0.0;
-        out_L_tilde_D_e[25] = x10;
+        out_L_tilde_D_e[25] = x9;
         out_L_tilde_D_e[26] = 0.0;
-        out_L_tilde_D_e[27] = x3;
+        out_L_tilde_D_e[27] = x2;
         out_L_tilde_D_e[28] = 0.0;
         out_L_tilde_D_e[29] = 0.0;
         out_L_tilde_D_e[30] = 0.0;
@@ -224,23 +214,23 @@ static inline int rigidsym_L_tilde_with_jacobians_sample_trig(
         out_L_tilde_D_e[32] = 0.0;
         out_L_tilde_D_e[33] = 0.0;
         out_L_tilde_D_e[34] = 0.0;
-        out_L_tilde_D_e[35] = x10;
+        out_L_tilde_D_e[35] = x9;
         out_L_tilde_D_phi[0] = 0.0;
-        out_L_tilde_D_phi[1] = x17;
-        out_L_tilde_D_phi[2] = x18;
-        out_L_tilde_D_phi[3] = x20;
-        out_L_tilde_D_phi[4] = x16;
+        out_L_tilde_D_phi[1] = x12;
+        out_L_tilde_D_phi[2] = x13;
+        out_L_tilde_D_phi[3] = x15;
+        out_L_tilde_D_phi[4] = x11;
         out_L_tilde_D_phi[5] = 0.0;
-        out_L_tilde_D_phi[6] = x20;
-        out_L_tilde_D_phi[7] = x21;
-        out_L_tilde_D_phi[8] = x21;
-        out_L_tilde_D_phi[9] = x19;
+        out_L_tilde_D_phi[6] = x15;
+        out_L_tilde_D_phi[7] = x16;
+        out_L_tilde_D_phi[8] = x16;
+        out_L_tilde_D_phi[9] = x14;
         out_L_tilde_D_phi[10] = 0.0;
-        out_L_tilde_D_phi[11] = x17;
-        singular |= (x2) == 0.0;
+        out_L_tilde_D_phi[11] = x12;
+        singular |= (x1) == 0.0;
         /* quantities that can be non-finite for finite inputs (divisions, roots):
          * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
-        const double finite = (((x3 - x3) + (x13 - x13)) + ((x2 - x2) + (x12 - x12)));
+        const double finite = ((x2 - x2) + ((x10 - x10) + (x1 - x1)));
         singular |= finite != finite;
     }
     return singular;
@@ -266,66 +256,61 @@ static inline int rigidsym_L_tilde_with_jacobians_sample_trig_f32(
     int singular = 0;
     {
         const double x1 = trig_0;
-        const double x2 = trig_1;
-        const double x3 = x1/x2;
-        const float x4 = e_2*x3;
-        const float x5 = -x4;
-        const float x6 = e_1*x3;
-        const float x7 = e_0*x3;
-        const float x8 = -x7;
-        const float x9 = -x6;
-        const float x10 = -x3;
-        const double x11 = (x1*x1);
-        const double x12 = (x2*x2);
-        const double x13 = 1.0/x12;
-        const double x14 = x11*x13;
-        const double x15 = (0.5)*x13*((x11 < 0.5) ? (1.0 - 2.0*x11) : (2.0*x12 - 1.0));
-        const float x16 = e_2*x14 + e_2*x15;
-        const float x17 = -x16;
-        const float x18 = e_1*x14 + e_1*x15;
-        const float x19 = e_0*x14 + e_0*x15;
-        const float x20 = -x19;
-        const float x21 = -x18;
+        const double x2 = trig_1/x1;
+        const float x3 = e_2*x2;
+        const float x4 = -x3;
+        const float x5 = e_1*x2;
+        const float x6 = e_0*x2;
+        const float x7 = -x6;
+        const float x8 = -x5;
+        const float x9 = -x2;
+        const double x10 = (0.5)/(x1*x1);
+        const float x11 = e_2*x10;
+        const float x12 = -x11;
+        const float x13 = e_1*x10;
+        const float x14 = e_0*x10;
+        const float x15 = -x14;
+        const float x16 = -x13;
         out_L_tilde[0] = 1.0f;
-        out_L_tilde[1] = x5;
-        out_L_tilde[2] = x6;
-        out_L_tilde[3] = x8;
-        out_L_tilde[4] = x4;
+        out_L_tilde[1] = x4;
+        out_L_tilde[2] = x5;
+        out_L_tilde[3] = x7;
+        out_L_tilde[4] = x3;
         out_L_tilde[5] = 1.0f;
-        out_L_tilde[6] = x8;
-        out_L_tilde[7] = x9;
-        out_L_tilde[8] = x9;
-        out_L_tilde[9] = x7;
+        out_L_tilde[6] = x7;
+        out_L_tilde[7] = x8;
+        out_L_tilde[8] = x8;
+        out_L_tilde[9] = x6;
         out_L_tilde[10] = 1.0f;
-        out_L_tilde[11] = x5;
+        out_L_tilde[11] = x4;
         out_L_tilde_D_e[0] = 0.0f;
         out_L_tilde_D_e[1] = 0.0f;
         out_L_tilde_D_e[2] = 0.0f;
         out_L_tilde_D_e[3] = 0.0f;
         out_L_tilde_D_e[4] = 0.0f;
-        out_L_tilde_D_e[5] = x10;
+        out_L_tilde_D_e[5] = x9;
         out_L_tilde_D_e[6] = 0.0f;
-        out_L_tilde_D_e[7] = x3;
+        out_L_tilde_D_e[7] = x2;
         out_L_tilde_D_e[8] = 0.0f;
-        out_L_tilde_D_e[9] = x10;
+        out_L_tilde_D_e[9] = x9;
         out_L_tilde_D_e[10] = 0.0f;
         out_L_tilde_D_e[11] = 0.0f;
         out_L_tilde_D_e[12] = 0.0f;
         out_L_tilde_D_e[13] = 0.0f;
-        out_L_tilde_D_e[14] = x3;
+        out_L_tilde_D_e[14] = x2;
         out_L_tilde_D_e[15] = 0.0f;
         out_L_tilde_D_e[16] = 0.0f;
         out_L_tilde_D_e[17] = 0.0f;
-        out_L_tilde_D_e[18] = x10;
+        out_L_tilde_D_e[18] = x9;
         out_L_tilde_D_e[19] = 0.0f;
         out_L_tilde_D_e[20] = 0.0f;
         out_L_tilde_D_e[21] = 0.0f;
-        out_L_tilde_D_e[22] = x10;
+        out_L_tilde_D_e[22] = x9;
         out_L_tilde_D_e[23] = 0.0f;
         out_L_tilde_D_e[24] = 0.0f;
-        out_L_tilde_D_e[25] = x10;
+        out_L_tilde_D_e[25] = x9;
         out_L_tilde_D_e[26] = 0.0f;
-        out_L_tilde_D_e[27] = x3;
+        out_L_tilde_D_e[27] = x2;
         out_L_tilde_D_e[28] = 0.0f;
         out_L_tilde_D_e[29] = 0.0f;
         out_L_tilde_D_e[30] = 0.0f;
@@ -333,21 +318,21 @@ static inline int rigidsym_L_tilde_with_jacobians_sample_trig_f32(
         out_L_tilde_D_e[32] = 0.0f;
         out_L_tilde_D_e[33] = 0.0f;
         out_L_tilde_D_e[34] = 0.0f;
-        out_L_tilde_D_e[35] = x10;
+        out_L_tilde_D_e[35] = x9;
         out_L_tilde_D_phi[0] = 0.0f;
-        out_L_tilde_D_phi[1] = x17;
-        out_L_tilde_D_phi[2] = x18;
-        out_L_tilde_D_phi[3] = x20;
-        out_L_tilde_D_phi[4] = x16;
+        out_L_tilde_D_phi[1] = x12;
+        out_L_tilde_D_phi[2] = x13;
+        out_L_tilde_D_phi[3] = x15;
+        out_L_tilde_D_phi[4] = x11;
         out_L_tilde_D_phi[5] = 0.0f;
-        out_L_tilde_D_phi[6] = x20;
-        out_L_tilde_D_phi[7] = x21;
-        out_L_tilde_D_phi[8] = x21;
-        out_L_tilde_D_phi[9] = x19;
+        out_L_tilde_D_phi[6] = x15;
+        out_L_tilde_D_phi[7] = x16;
+        out_L_tilde_D_phi[8] = x16;
+        out_L_tilde_D_phi[9] = x14;
         out_L_tilde_D_phi[10] = 0.0f;
-        out_L_tilde_D_phi[11] = x17;
-        singular |= (x2) == 0.0;
-        const double finite = (((x3 - x3) + (x13 - x13)) + ((x2 - x2) + (x12 - x12)));
+        out_L_tilde_D_phi[11] = x12;
+        singular |= (x1) == 0.0;
+        const double finite = ((x2 - x2) + ((x10 - x10) + (x1 - x1)));
         singular |= finite != finite;
     }
     return singular;

@@ -5,14 +5,22 @@
 # template: array_kernel.py.j2
 # math hash: sha256:a24e938b75871a8c
 # sympy 1.14.0, rigidsym 0.2.0
-# operations: 318
+# operations: 317
+# accuracy rewrite (main): fractions in cos phi merged (N_tilde_dot_D_phi): sympy.diff of a
+#     quotient in cos phi (cot(phi/2) as sin phi / (1 - cos phi)) sums terms that cancel (cos
+#     phi / (2 - 2 cos phi) - 2 sin^2 phi / (2 - 2 cos phi)^2); merged into one reduced
+#     fraction (-1 / (2 - 2 cos phi)) they do not; worst ratio to the rule max(2 e_best, 4 u)
+#     (e_best: the most accurate of the textbook formula and the forms tried, per point;
+#     rigidsym.codegen.rule) at 75 points of the regimes (rigidsym.codegen.regimes, exact,
+#     rounded to float64) 1.5 -> 0.5, never worse than the textbook formula by that rule;
+#     equal to the declared formula by the zero test (exact-cancel)
 # accuracy rewrite (main): cos phi as 1 - 2 s^2 or 2 c^2 - 1: the bare cos phi left by the
 #     half-angle rewrite, as 1 - 2 s^2 or 2 c^2 - 1 (s, c: sin, cos of phi/2) rather than 1 -
 #     2 s^2: the form of the measured least error among 1 - 2 s^2, 1 - 2 s^2 or 2 c^2 - 1, (c
 #     - s) (c + s) (rigidsym.codegen.cos_form); worst ratio to the rule max(2 e_best, 4 u)
 #     (e_best: the most accurate of the textbook formula and the forms tried, per point;
 #     rigidsym.codegen.rule) at 388 points of the regimes (rigidsym.codegen.regimes, exact,
-#     rounded to float64) 1.1 -> 0.79, never worse than the textbook formula by that rule;
+#     rounded to float64) 1.2 -> 0.88, never worse than the textbook formula by that rule;
 #     equal to the declared formula by the zero test (exact-cancel)
 """Time derivative of N_tilde along omega, with the Jacobians of its outputs.
 
@@ -42,7 +50,7 @@ def _sin(x):
 def _cos(x):
     return _sincos(x)[..., 1]
 
-OPS = 318
+OPS = 317
 MATH_HASH = "a24e938b75871a8c"
 COLUMNS = ("e_0", "e_1", "e_2", "phi", "omega_0", "omega_1", "omega_2", )
 
@@ -57,214 +65,209 @@ def _main(e_0, e_1, e_2, phi, omega_0, omega_1, omega_2):
     x6 = (x5*x5)
     x7 = 2.0*x6
     x8 = _cos(x4)
-    x9 = (x8*x8)
-    x10 = jax.numpy.where(jax.numpy.less(x6, 0.5), 1.0 - x7, 2.0*x9 - 1.0)
-    x11 = x10*x3
-    x12 = x5*x8
-    x13 = 2.0*x12
-    x14 = x13*x3
-    x15 = e_2*x14
-    x16 = (0.5)*e_1
-    x17 = (0.5)*e_0
-    x18 = x8/x5
-    x19 = e_2*x18
-    x20 = x17*x19
-    x21 = -x16 + x20
-    x22 = -x21
-    x23 = x16*x19
-    x24 = x17 + x23
-    x25 = -x24
-    x26 = (e_2*e_2)
-    x27 = 1.0 - x26
-    x28 = (0.5)*omega_2
-    x29 = omega_0*x22 + omega_1*x25 + x18*x27*x28
-    x30 = -x29
-    x31 = e_1*x14
-    x32 = (0.5)*e_2
-    x33 = x16*x18
-    x34 = e_0*x33
-    x35 = x32 + x34
-    x36 = -x35
-    x37 = x17 - x23
-    x38 = (e_1*e_1)
-    x39 = 1.0 - x38
-    x40 = (0.5)*omega_1
-    x41 = x39*x40
-    x42 = omega_0*x36 + omega_2*x37 + x18*x41
-    x43 = -x32 + x34
-    x44 = -x43
-    x45 = x16 + x20
-    x46 = -x45
-    x47 = (e_0*e_0)
-    x48 = 1.0 - x47
-    x49 = (0.5)*omega_0
-    x50 = x48*x49
-    x51 = omega_1*x44 + omega_2*x46 + x18*x50
-    x52 = e_0*x14
-    x53 = -x51
-    x54 = -x42
-    x55 = omega_0*x10
-    x56 = omega_1*x10
-    x57 = omega_2*x10
-    x58 = e_2*x13
-    x59 = omega_0*x58
-    x60 = x18*x32
-    x61 = omega_0*x60 + x40
-    x62 = omega_1*x58
-    x63 = omega_1*x60 - x49
-    x64 = x18*x2
-    x65 = x0*x18
-    x66 = (0.5)*x65
-    x67 = x1*x18
-    x68 = (0.5)*x67
-    x69 = x64 + x66 + x68
-    x70 = x13*x2 + x14
-    x71 = e_1*x13
-    x72 = omega_0*x71
-    x73 = omega_0*x33 - x28
-    x74 = -x73
-    x75 = (0.5)*x64
-    x76 = x66 + x67 + x75
-    x77 = -x76
-    x78 = x1*x13 + x14
-    x79 = omega_2*x71
-    x80 = omega_2*x33 + x49
+    x9 = jax.numpy.where(jax.numpy.less(x6, 0.5), 1.0 - x7, 2.0*(x8*x8) - 1.0)
+    x10 = x3*x9
+    x11 = x5*x8
+    x12 = 2.0*x11
+    x13 = x12*x3
+    x14 = e_2*x13
+    x15 = (0.5)*e_1
+    x16 = (0.5)*e_0
+    x17 = x8/x5
+    x18 = e_2*x17
+    x19 = x16*x18
+    x20 = -x15 + x19
+    x21 = -x20
+    x22 = x15*x18
+    x23 = x16 + x22
+    x24 = -x23
+    x25 = (e_2*e_2)
+    x26 = 1.0 - x25
+    x27 = (0.5)*omega_2
+    x28 = omega_0*x21 + omega_1*x24 + x17*x26*x27
+    x29 = e_1*x13
+    x30 = (0.5)*e_2
+    x31 = x15*x17
+    x32 = e_0*x31
+    x33 = x30 + x32
+    x34 = -x33
+    x35 = x16 - x22
+    x36 = (e_1*e_1)
+    x37 = 1.0 - x36
+    x38 = (0.5)*omega_1
+    x39 = omega_0*x34 + omega_2*x35 + x17*x37*x38
+    x40 = -x30 + x32
+    x41 = -x40
+    x42 = x15 + x19
+    x43 = -x42
+    x44 = (e_0*e_0)
+    x45 = 1.0 - x44
+    x46 = (0.5)*omega_0
+    x47 = omega_1*x41 + omega_2*x43 + x17*x45*x46
+    x48 = e_0*x13
+    x49 = omega_0*x9
+    x50 = omega_1*x9
+    x51 = omega_2*x9
+    x52 = omega_0*x12
+    x53 = e_2*x52
+    x54 = x17*x30
+    x55 = omega_0*x54 + x38
+    x56 = e_2*omega_1
+    x57 = x12*x56
+    x58 = omega_1*x54 - x46
+    x59 = x17*x2
+    x60 = x0*x17
+    x61 = (0.5)*x60
+    x62 = x1*x17
+    x63 = (0.5)*x62
+    x64 = x59 + x61 + x63
+    x65 = x12*x2 + x13
+    x66 = e_1*x52
+    x67 = omega_0*x31 - x27
+    x68 = -x67
+    x69 = (0.5)*x59
+    x70 = x61 + x62 + x69
+    x71 = -x70
+    x72 = x1*x12 + x13
+    x73 = e_1*omega_2
+    x74 = x12*x73
+    x75 = omega_2*x31 + x46
+    x76 = -x75
+    x77 = x60 + x63 + x69
+    x78 = -x77
+    x79 = x16*x17
+    x80 = omega_1*x79 + x27
     x81 = -x80
-    x82 = x65 + x68 + x75
+    x82 = omega_2*x79 - x38
     x83 = -x82
-    x84 = x17*x18
-    x85 = omega_1*x84 + x28
-    x86 = -x85
-    x87 = omega_2*x84 - x40
-    x88 = -x87
-    x89 = -x61
-    x90 = -x63
-    x91 = -x69
-    x92 = x0*x13 + x14
-    x93 = e_0*x13
-    x94 = omega_1*x93
-    x95 = omega_2*x93
-    x96 = -x14
-    x97 = e_2*x11
-    x98 = 1.0/x6
-    x99 = (0.25)*x98
-    x100 = e_0*x10
-    x101 = (0.25)*e_2*x98
-    x102 = (0.5)*e_0*e_2*x9*x98 - x100*x101
-    x103 = e_1*x10
-    x104 = (0.5)*e_1*e_2*x9*x98 - x101*x103
-    x105 = omega_0*x102 + omega_1*x104 - 0.5*omega_2*x27*x9*x98 + x27*x57*x99
-    x106 = e_1*x11
-    x107 = x9*x98
-    x108 = (0.5)*e_0*e_1*x9*x98 - e_1*x100*x99
-    x109 = omega_0*x108 + omega_2*x104 - x107*x41 + x39*x56*x99
-    x110 = omega_1*x108 + omega_2*x102 - x107*x50 + x48*x55*x99
-    x111 = e_0*x11
-    x112 = e_2*x10
-    x113 = e_0*x58
-    x114 = e_1*x58
-    x115 = x12*x27 + x13*x26
-    x116 = e_0*x71
-    x117 = x12*x39 + x13*x38
-    x118 = (0.5)*x18
-    x119 = x12*x48 + x13*x47
+    x84 = -x55
+    x85 = -x58
+    x86 = -x64
+    x87 = x0*x12 + x13
+    x88 = e_0*x12
+    x89 = omega_1*x88
+    x90 = omega_2*x88
+    x91 = -x13
+    x92 = omega_0*x11
+    x93 = (0.5)*x51
+    x94 = x30*x9
+    x95 = e_0*omega_1*x11 - e_1*x92 - e_2*x10 + x0*x94 + x1*x94 + x25*x93 - x93
+    x96 = x15*x9
+    x97 = -e_0*omega_2*x5*x8 - e_1*x3*x9 + e_2*x92 - 0.5*omega_1*x9 + x0*x96 + x2*x96 + (0.5)*x36*x50
+    x98 = (0.25)/x6
+    x99 = e_0*x98
+    x100 = (0.5)*x49
+    x101 = x16*x9
+    x102 = -e_0*x10 + x1*x101 + x100*x44 - x100 + x101*x2 - x11*x56 + x11*x73
+    x103 = e_1*x98
+    x104 = e_2*x98
+    x105 = e_0*x9
+    x106 = e_1*x9
+    x107 = e_2*x9
+    x108 = e_2*x88
+    x109 = e_1*e_2*x12
+    x110 = x11*x26 + x12*x25
+    x111 = e_1*x88
+    x112 = x11*x37 + x12*x36
+    x113 = (0.5)*x17
+    x114 = x11*x45 + x12*x44
     return (
-        x11,
-        -x15 + 2.0*x30*x6,
-        x31 + x42*x7,
+        x10,
+        -x14 - 2.0*x28*x6,
+        x29 + x39*x7,
+        x47,
+        x14 + x28*x7,
+        x10,
+        -2.0*x47*x6 - x48,
+        x39,
+        -x29 - 2.0*x39*x6,
+        x47*x7 + x48,
+        x10,
+        x28,
+        x49,
+        x50,
         x51,
-        x15 + x29*x7,
-        x11,
-        -x52 + 2.0*x53*x6,
-        x42,
-        -x31 + 2.0*x54*x6,
-        x51*x7 + x52,
-        x11,
-        x29,
-        x55,
-        x56,
-        x57,
-        -x59 + 2.0*x6*x61,
-        2.0*x6*x63 - x62,
-        2.0*x6*x69 - x70,
-        x7*x74 + x72,
-        x7*x77 + x78,
-        x7*x81 + x79,
-        x83,
-        x86,
-        x88,
-        x59 + x7*x89,
-        x62 + x7*x90,
-        x7*x91 + x70,
-        x55,
-        x56,
-        x57,
-        2.0*x6*x82 - x92,
-        2.0*x6*x85 - x94,
-        2.0*x6*x87 - x95,
-        x74,
-        x77,
+        -x53 + 2.0*x55*x6,
+        -x57 + 2.0*x58*x6,
+        2.0*x6*x64 - x65,
+        x66 + x68*x7,
+        x7*x71 + x72,
+        x7*x76 + x74,
+        x78,
         x81,
-        2.0*x6*x73 - x72,
-        2.0*x6*x76 - x78,
-        2.0*x6*x80 - x79,
-        x7*x83 + x92,
-        x7*x86 + x94,
-        x7*x88 + x95,
-        x55,
-        x56,
-        x57,
-        x89,
-        x90,
+        x83,
+        x53 + x7*x84,
+        x57 + x7*x85,
+        x65 + x7*x86,
+        x49,
+        x50,
+        x51,
+        2.0*x6*x77 - x87,
+        2.0*x6*x80 - x89,
+        2.0*x6*x82 - x90,
+        x68,
+        x71,
+        x76,
+        2.0*x6*x67 - x66,
+        2.0*x6*x70 - x72,
+        2.0*x6*x75 - x74,
+        x7*x78 + x87,
+        x7*x81 + x89,
+        x7*x83 + x90,
+        x49,
+        x50,
+        x51,
+        x84,
+        x85,
+        x86,
         x91,
-        x96,
-        -x105*x7 + x13*x30 - x97,
-        x106 + x109*x7 + x13*x42,
-        x110,
-        x105*x7 + x13*x29 + x97,
-        x96,
-        -x110*x7 - x111 + x13*x53,
-        x109,
-        -x106 - x109*x7 + x13*x54,
-        x110*x7 + x111 + x13*x51,
-        x96,
+        x95,
+        -x97,
+        -omega_0*x45*x98 + x1*x99 + x2*x99,
+        -x95,
+        x91,
+        x102,
+        -omega_1*x37*x98 + x0*x103 + x103*x2,
+        x97,
+        -x102,
+        x91,
+        -omega_2*x26*x98 + x0*x104 + x1*x104,
         x105,
-        x100,
-        x103,
+        x106,
+        x107,
+        -x108 + 2.0*x20*x6,
+        -x109 + 2.0*x23*x6,
+        -x110,
+        x111 + x34*x7,
         x112,
-        -x113 + 2.0*x21*x6,
-        -x114 + 2.0*x24*x6,
-        -x115,
-        x116 + x36*x7,
-        x117,
-        x114 + x37*x7,
-        x118*x48,
-        x44,
-        x46,
-        x113 + x22*x7,
-        x114 + x25*x7,
-        x115,
-        x100,
-        x103,
-        x112,
-        -x119,
-        -x116 + 2.0*x43*x6,
-        -x113 + 2.0*x45*x6,
-        x36,
-        x118*x39,
-        x37,
-        -x116 + 2.0*x35*x6,
-        -x117,
-        -x114 - 2.0*x37*x6,
-        x119,
-        x116 + x44*x7,
-        x113 + x46*x7,
-        x100,
-        x103,
-        x112,
-        x22,
-        x25,
-        x118*x27,
+        x109 + x35*x7,
+        x113*x45,
+        x41,
+        x43,
+        x108 + x21*x7,
+        x109 + x24*x7,
+        x110,
+        x105,
+        x106,
+        x107,
+        -x114,
+        -x111 + 2.0*x40*x6,
+        -x108 + 2.0*x42*x6,
+        x34,
+        x113*x37,
+        x35,
+        -x111 + 2.0*x33*x6,
+        -x112,
+        -x109 - 2.0*x35*x6,
+        x114,
+        x111 + x41*x7,
+        x108 + x43*x7,
+        x105,
+        x106,
+        x107,
+        x21,
+        x24,
+        x113*x26,
     ), (
         x5,
     )

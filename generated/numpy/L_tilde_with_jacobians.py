@@ -5,14 +5,14 @@
 # template: numpy_kernel.py.j2
 # math hash: sha256:6f7cbc14b1897619
 # sympy 1.14.0, rigidsym 0.2.0
-# operations: 35
-# accuracy rewrite (main): cos phi as 1 - 2 s^2 or 2 c^2 - 1: the bare cos phi left by the
-#     half-angle rewrite, as 1 - 2 s^2 or 2 c^2 - 1 (s, c: sin, cos of phi/2) rather than 1 -
-#     2 s^2: the form of the measured least error among 1 - 2 s^2, 1 - 2 s^2 or 2 c^2 - 1, (c
-#     - s) (c + s) (rigidsym.codegen.cos_form); worst ratio to the rule max(2 e_best, 4 u)
+# operations: 20
+# accuracy rewrite (main): fractions in cos phi merged (L_tilde_D_phi): sympy.diff of a
+#     quotient in cos phi (cot(phi/2) as sin phi / (1 - cos phi)) sums terms that cancel (cos
+#     phi / (2 - 2 cos phi) - 2 sin^2 phi / (2 - 2 cos phi)^2); merged into one reduced
+#     fraction (-1 / (2 - 2 cos phi)) they do not; worst ratio to the rule max(2 e_best, 4 u)
 #     (e_best: the most accurate of the textbook formula and the forms tried, per point;
-#     rigidsym.codegen.rule) at 336 points of the regimes (rigidsym.codegen.regimes, exact,
-#     rounded to float64) 0.86 -> 0.67, never worse than the textbook formula by that rule;
+#     rigidsym.codegen.rule) at 68 points of the regimes (rigidsym.codegen.regimes, exact,
+#     rounded to float64) 1.5 -> 0.5, never worse than the textbook formula by that rule;
 #     equal to the declared formula by the zero test (exact-cancel)
 """Left inverse of the rate matrix of the linear invariants [u; u0]: omega = L_tilde rate, with the Jacobians of its outputs.
 
@@ -27,7 +27,7 @@ the ``(n,)`` uint8 array of flags: 0 fine, ``SINGULAR`` (a denominator is exactl
 
 import numpy
 
-OPS = 35
+OPS = 20
 MATH_HASH = "6f7cbc14b1897619"
 #: sample flags returned by the batch function
 SINGULAR, NONFINITE = 1, 2
@@ -35,95 +35,89 @@ SINGULAR, NONFINITE = 1, 2
 
 def _main(e_0, e_1, e_2, phi):
     x0 = (0.5)*phi
-    x1 = numpy.sin(x0)
-    x2 = numpy.cos(x0)
-    x3 = x1/x2
-    x4 = e_2*x3
-    x5 = -x4
-    x6 = e_1*x3
-    x7 = e_0*x3
-    x8 = -x7
-    x9 = -x6
-    x10 = -x3
-    x11 = (x1*x1)
-    x12 = (x2*x2)
-    x13 = 1.0/x12
-    x14 = x11*x13
-    x15 = (0.5)*x13*numpy.where(numpy.less(x11, 0.5), 1 - 2*x11, 2*x12 - 1)
-    x16 = e_2*x14 + e_2*x15
-    x17 = -x16
-    x18 = e_1*x14 + e_1*x15
-    x19 = e_0*x14 + e_0*x15
-    x20 = -x19
-    x21 = -x18
+    x1 = numpy.cos(x0)
+    x2 = numpy.sin(x0)/x1
+    x3 = e_2*x2
+    x4 = -x3
+    x5 = e_1*x2
+    x6 = e_0*x2
+    x7 = -x6
+    x8 = -x5
+    x9 = -x2
+    x10 = (0.5)/(x1*x1)
+    x11 = e_2*x10
+    x12 = -x11
+    x13 = e_1*x10
+    x14 = e_0*x10
+    x15 = -x14
+    x16 = -x13
     return (
         1,
-        x5,
-        x6,
-        x8,
         x4,
-        1,
-        x8,
-        x9,
-        x9,
-        x7,
-        1,
         x5,
-        0,
-        0,
-        0,
-        0,
-        0,
-        x10,
-        0,
+        x7,
         x3,
-        0,
-        x10,
-        0,
-        0,
-        0,
-        0,
-        x3,
-        0,
-        0,
-        0,
-        x10,
-        0,
-        0,
-        0,
-        x10,
-        0,
-        0,
-        x10,
-        0,
-        x3,
+        1,
+        x7,
+        x8,
+        x8,
+        x6,
+        1,
+        x4,
         0,
         0,
         0,
         0,
         0,
+        x9,
         0,
-        0,
-        x10,
-        0,
-        x17,
-        x18,
-        x20,
-        x16,
-        0,
-        x20,
-        x21,
-        x21,
-        x19,
-        0,
-        x17,
-    ), (
         x2,
-    ), (
-        x3,
-        x13,
+        0,
+        x9,
+        0,
+        0,
+        0,
+        0,
         x2,
+        0,
+        0,
+        0,
+        x9,
+        0,
+        0,
+        0,
+        x9,
+        0,
+        0,
+        x9,
+        0,
+        x2,
+        0,
+        0,
+        0,
+        0,
+        0,
+        0,
+        0,
+        x9,
+        0,
         x12,
+        x13,
+        x15,
+        x11,
+        0,
+        x15,
+        x16,
+        x16,
+        x14,
+        0,
+        x12,
+    ), (
+        x1,
+    ), (
+        x2,
+        x10,
+        x1,
     )
 
 

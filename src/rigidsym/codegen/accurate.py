@@ -34,6 +34,7 @@ import sympy as sp
 from rigidsym.algebra.symbols import constrained_group
 from rigidsym.codegen import rule as _rule
 from rigidsym.codegen.accurate_rules import (
+    _angle_fractions,
     _axis_point_from_skew,
     _exact_powers,
     _skew_one_minus_cos,
@@ -108,7 +109,7 @@ def _rewritten_then_differentiated(flat, ctx):
     values, parts = flat[:nv], []
     for rule in (r for r in RULES if r.propose not in (_rewritten_then_differentiated,
                                                        _expand_plain, compensated_sums,
-                                                       _exact_powers)):
+                                                       _exact_powers, _angle_fractions)):
         got = rule.propose(values, ctx)
         if got is not None:
             values, p = got
@@ -160,6 +161,11 @@ RULES = (
             "three or four times, pow once: the Jacobian of a norm's quotient "
             "(f x n / ||f||^2 differentiated) sums several of them",
             _exact_powers, costly=True, gain=1.25),
+    Rewrite("fractions in cos phi merged",
+            "sympy.diff of a quotient in cos phi (cot(phi/2) as sin phi / (1 - cos phi)) "
+            "sums terms that cancel (cos phi / (2 - 2 cos phi) - 2 sin^2 phi / (2 - 2 cos "
+            "phi)^2); merged into one reduced fraction (-1 / (2 - 2 cos phi)) they do not",
+            _angle_fractions, costly=True, gain=1.25),
 )
 
 

@@ -79,3 +79,59 @@ def _exact_powers(flat, ctx):
     if not reps:
         return None
     return [e.xreplace(reps) for e in flat], list(reps.items())
+
+
+def _rational_in_cos(f: sp.Expr, phi: sp.Symbol) -> sp.Expr:
+    """``f``, a rational function of ``cos phi`` and ``sin phi``, as one reduced fraction
+    (``sin^2 -> 1 - cos^2``, then ``cancel``); ``f`` itself where it holds phi otherwise."""
+    C, S = sp.Dummy("C"), sp.Dummy("S")
+    g = f.xreplace({sp.sin(phi): S, sp.cos(phi): C})
+    if g.has(phi):
+        return f
+    circle = sp.Poly(S**2 + C**2 - 1, S)
+    num, den = (sp.expand(x) for x in sp.fraction(sp.together(g)))
+    num, den = (sp.rem(sp.Poly(x, S), circle).as_expr() if x.has(S) else x
+                for x in (num, den))
+    return sp.factor(sp.cancel(num / den)).xreplace({S: sp.sin(phi), C: sp.cos(phi)})
+
+
+def _merge_angle_terms(e: sp.Expr, phi: sp.Symbol, memo: dict) -> sp.Expr:
+    """In every sum, the terms sharing a phi-free factor: their functions of phi merged
+    into one reduced fraction where that has fewer operations."""
+    if e in memo:
+        return memo[e]
+    if e.is_Atom or not e.has(phi):
+        return e
+    args = [_merge_angle_terms(a, phi, memo) for a in e.args]
+    out = e.func(*args) if args != list(e.args) else e
+    if out.is_Add:
+        groups: dict = {}
+        for t in out.args:
+            ind, dep = t.as_independent(phi, as_Add=False)
+            c, ind = ind.as_coeff_Mul()
+            groups.setdefault(ind, []).append(c * dep)
+        terms, merged = [], False
+        for ind, parts in groups.items():
+            s = sp.Add(*parts)
+            if len(parts) > 1 and any(x.has(phi) for x in parts):
+                r = _rational_in_cos(s, phi)
+                if sp.count_ops(r) < sp.count_ops(s):
+                    s, merged = r, True
+            terms.append(ind * s)
+        if merged:
+            out = sp.Add(*terms)
+    memo[e] = out
+    return out
+
+
+def _angle_fractions(flat, ctx):
+    """Sums of fractions in ``cos phi`` over one phi-free factor as one reduced fraction:
+    ``sympy.diff`` of ``sin phi / (2 - 2 cos phi)`` gives ``cos phi / (2 - 2 cos phi) - 2
+    sin^2 phi / (2 - 2 cos phi)^2``, which is ``-1 / (2 - 2 cos phi)`` (issue 37:
+    ``N_tilde_dot_with_jacobians``' derivative by phi 4.7 u where the textbook is 2.3 u)."""
+    out = list(flat)
+    for phi in ctx["angles"]:
+        memo: dict = {}
+        out = [_merge_angle_terms(sp.sympify(e), phi, memo) for e in out]
+    parts = [(o, n) for o, n in zip(flat, out, strict=True) if o != n]
+    return (out, parts) if parts else None
