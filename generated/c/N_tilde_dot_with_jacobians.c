@@ -6,14 +6,14 @@
  * template: c_kernel.c.j2
  * math hash: sha256:a24e938b75871a8c
  * sympy 1.14.0, rigidsym 0.2.0
- * operations: 317
+ * operations: 291
  * accuracy rewrite (main): fractions in cos phi merged (N_tilde_dot_D_phi): sympy.diff of a
  *     quotient in cos phi (cot(phi/2) as sin phi / (1 - cos phi)) sums terms that cancel (cos
  *     phi / (2 - 2 cos phi) - 2 sin^2 phi / (2 - 2 cos phi)^2); merged into one reduced
  *     fraction (-1 / (2 - 2 cos phi)) they do not; worst ratio to the rule max(2 e_best, 4 u)
  *     (e_best: the most accurate of the textbook formula and the forms tried, per point;
  *     rigidsym.codegen.rule) at 75 points of the regimes (rigidsym.codegen.regimes, exact,
- *     rounded to float64) 1.5 -> 0.5, never worse than the textbook formula by that rule;
+ *     rounded to float64) 1.5 -> 0.85, never worse than the textbook formula by that rule;
  *     equal to the declared formula by the zero test (exact-cancel)
  * accuracy rewrite (main): cos phi as 1 - 2 s^2 or 2 c^2 - 1: the bare cos phi left by the
  *     half-angle rewrite, as 1 - 2 s^2 or 2 c^2 - 1 (s, c: sin, cos of phi/2) rather than 1 -
@@ -21,7 +21,7 @@
  *     - s) (c + s) (rigidsym.codegen.cos_form); worst ratio to the rule max(2 e_best, 4 u)
  *     (e_best: the most accurate of the textbook formula and the forms tried, per point;
  *     rigidsym.codegen.rule) at 388 points of the regimes (rigidsym.codegen.regimes, exact,
- *     rounded to float64) 1.2 -> 0.88, never worse than the textbook formula by that rule;
+ *     rounded to float64) 1.1 -> 0.67, never worse than the textbook formula by that rule;
  *     equal to the declared formula by the zero test (exact-cancel)
  */
 #include "N_tilde_dot_with_jacobians.h"

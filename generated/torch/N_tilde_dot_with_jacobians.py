@@ -5,14 +5,14 @@
 # template: array_kernel.py.j2
 # math hash: sha256:a24e938b75871a8c
 # sympy 1.14.0, rigidsym 0.2.0
-# operations: 317
+# operations: 291
 # accuracy rewrite (main): fractions in cos phi merged (N_tilde_dot_D_phi): sympy.diff of a
 #     quotient in cos phi (cot(phi/2) as sin phi / (1 - cos phi)) sums terms that cancel (cos
 #     phi / (2 - 2 cos phi) - 2 sin^2 phi / (2 - 2 cos phi)^2); merged into one reduced
 #     fraction (-1 / (2 - 2 cos phi)) they do not; worst ratio to the rule max(2 e_best, 4 u)
 #     (e_best: the most accurate of the textbook formula and the forms tried, per point;
 #     rigidsym.codegen.rule) at 75 points of the regimes (rigidsym.codegen.regimes, exact,
-#     rounded to float64) 1.5 -> 0.5, never worse than the textbook formula by that rule;
+#     rounded to float64) 1.5 -> 0.85, never worse than the textbook formula by that rule;
 #     equal to the declared formula by the zero test (exact-cancel)
 # accuracy rewrite (main): cos phi as 1 - 2 s^2 or 2 c^2 - 1: the bare cos phi left by the
 #     half-angle rewrite, as 1 - 2 s^2 or 2 c^2 - 1 (s, c: sin, cos of phi/2) rather than 1 -
@@ -20,7 +20,7 @@
 #     - s) (c + s) (rigidsym.codegen.cos_form); worst ratio to the rule max(2 e_best, 4 u)
 #     (e_best: the most accurate of the textbook formula and the forms tried, per point;
 #     rigidsym.codegen.rule) at 388 points of the regimes (rigidsym.codegen.regimes, exact,
-#     rounded to float64) 1.2 -> 0.88, never worse than the textbook formula by that rule;
+#     rounded to float64) 1.1 -> 0.67, never worse than the textbook formula by that rule;
 #     equal to the declared formula by the zero test (exact-cancel)
 """Time derivative of N_tilde along omega, with the Jacobians of its outputs.
 
@@ -35,7 +35,7 @@ the checked, differentiable API.
 
 import torch
 
-OPS = 317
+OPS = 291
 MATH_HASH = "a24e938b75871a8c"
 COLUMNS = ("e_0", "e_1", "e_2", "phi", "omega_0", "omega_1", "omega_2", )
 
@@ -70,165 +70,165 @@ def _main(e_0, e_1, e_2, phi, omega_0, omega_1, omega_2):
     x26 = 1.0 - x25
     x27 = (0.5)*omega_2
     x28 = omega_0*x21 + omega_1*x24 + x17*x26*x27
-    x29 = e_1*x13
-    x30 = (0.5)*e_2
-    x31 = x15*x17
-    x32 = e_0*x31
-    x33 = x30 + x32
-    x34 = -x33
-    x35 = x16 - x22
-    x36 = (e_1*e_1)
-    x37 = 1.0 - x36
-    x38 = (0.5)*omega_1
-    x39 = omega_0*x34 + omega_2*x35 + x17*x37*x38
-    x40 = -x30 + x32
-    x41 = -x40
-    x42 = x15 + x19
-    x43 = -x42
-    x44 = (e_0*e_0)
-    x45 = 1.0 - x44
-    x46 = (0.5)*omega_0
-    x47 = omega_1*x41 + omega_2*x43 + x17*x45*x46
-    x48 = e_0*x13
-    x49 = omega_0*x9
-    x50 = omega_1*x9
-    x51 = omega_2*x9
-    x52 = omega_0*x12
-    x53 = e_2*x52
-    x54 = x17*x30
-    x55 = omega_0*x54 + x38
-    x56 = e_2*omega_1
-    x57 = x12*x56
-    x58 = omega_1*x54 - x46
-    x59 = x17*x2
-    x60 = x0*x17
-    x61 = (0.5)*x60
-    x62 = x1*x17
+    x29 = -x28
+    x30 = e_1*x13
+    x31 = (0.5)*e_2
+    x32 = x15*x17
+    x33 = e_0*x32
+    x34 = x31 + x33
+    x35 = -x34
+    x36 = x16 - x22
+    x37 = (e_1*e_1)
+    x38 = 1.0 - x37
+    x39 = (0.5)*omega_1
+    x40 = omega_0*x35 + omega_2*x36 + x17*x38*x39
+    x41 = -x31 + x33
+    x42 = -x41
+    x43 = x15 + x19
+    x44 = -x43
+    x45 = (e_0*e_0)
+    x46 = 1.0 - x45
+    x47 = (0.5)*omega_0
+    x48 = omega_1*x42 + omega_2*x44 + x17*x46*x47
+    x49 = e_0*x13
+    x50 = -x48
+    x51 = -x40
+    x52 = omega_0*x9
+    x53 = omega_1*x9
+    x54 = omega_2*x9
+    x55 = e_2*x12
+    x56 = omega_0*x55
+    x57 = x17*x31
+    x58 = omega_0*x57 + x39
+    x59 = omega_1*x55
+    x60 = omega_1*x57 - x47
+    x61 = x17*x2
+    x62 = x0*x17
     x63 = (0.5)*x62
-    x64 = x59 + x61 + x63
-    x65 = x12*x2 + x13
-    x66 = e_1*x52
-    x67 = omega_0*x31 - x27
-    x68 = -x67
-    x69 = (0.5)*x59
-    x70 = x61 + x62 + x69
+    x64 = x1*x17
+    x65 = (0.5)*x64
+    x66 = x61 + x63 + x65
+    x67 = x12*x2 + x13
+    x68 = e_1*x12
+    x69 = omega_0*x68
+    x70 = omega_0*x32 - x27
     x71 = -x70
-    x72 = x1*x12 + x13
-    x73 = e_1*omega_2
-    x74 = x12*x73
-    x75 = omega_2*x31 + x46
-    x76 = -x75
-    x77 = x60 + x63 + x69
+    x72 = (0.5)*x61
+    x73 = x63 + x64 + x72
+    x74 = -x73
+    x75 = x1*x12 + x13
+    x76 = omega_2*x68
+    x77 = omega_2*x32 + x47
     x78 = -x77
-    x79 = x16*x17
-    x80 = omega_1*x79 + x27
-    x81 = -x80
-    x82 = omega_2*x79 - x38
+    x79 = x62 + x65 + x72
+    x80 = -x79
+    x81 = x16*x17
+    x82 = omega_1*x81 + x27
     x83 = -x82
-    x84 = -x55
-    x85 = -x58
-    x86 = -x64
-    x87 = x0*x12 + x13
-    x88 = e_0*x12
-    x89 = omega_1*x88
-    x90 = omega_2*x88
-    x91 = -x13
-    x92 = omega_0*x11
-    x93 = (0.5)*x51
-    x94 = x30*x9
-    x95 = e_0*omega_1*x11 - e_1*x92 - e_2*x10 + x0*x94 + x1*x94 + x25*x93 - x93
-    x96 = x15*x9
-    x97 = -e_0*omega_2*x5*x8 - e_1*x3*x9 + e_2*x92 - 0.5*omega_1*x9 + x0*x96 + x2*x96 + (0.5)*x36*x50
-    x98 = (0.25)/x6
-    x99 = e_0*x98
-    x100 = (0.5)*x49
-    x101 = x16*x9
-    x102 = -e_0*x10 + x1*x101 + x100*x44 - x100 + x101*x2 - x11*x56 + x11*x73
-    x103 = e_1*x98
-    x104 = e_2*x98
+    x84 = omega_2*x81 - x39
+    x85 = -x84
+    x86 = -x58
+    x87 = -x60
+    x88 = -x66
+    x89 = x0*x12 + x13
+    x90 = e_0*x12
+    x91 = omega_1*x90
+    x92 = omega_2*x90
+    x93 = -x13
+    x94 = e_2*x10
+    x95 = 1.0/x6
+    x96 = (0.25)*x95
+    x97 = e_2*x96
+    x98 = -0.25*omega_2*x26*x95 + x0*x97 + x1*x97
+    x99 = e_1*x10
+    x100 = e_1*x96
+    x101 = -omega_1*x38*x96 + x0*x100 + x100*x2
+    x102 = e_0*x96
+    x103 = -omega_0*x46*x96 + x1*x102 + x102*x2
+    x104 = e_0*x10
     x105 = e_0*x9
     x106 = e_1*x9
     x107 = e_2*x9
-    x108 = e_2*x88
-    x109 = e_1*e_2*x12
+    x108 = e_0*x55
+    x109 = e_1*x55
     x110 = x11*x26 + x12*x25
-    x111 = e_1*x88
-    x112 = x11*x37 + x12*x36
+    x111 = e_0*x68
+    x112 = x11*x38 + x12*x37
     x113 = (0.5)*x17
-    x114 = x11*x45 + x12*x44
+    x114 = x11*x46 + x12*x45
     return (
         x10,
-        -x14 - 2.0*x28*x6,
-        x29 + x39*x7,
-        x47,
+        -x14 + 2.0*x29*x6,
+        x30 + x40*x7,
+        x48,
         x14 + x28*x7,
         x10,
-        -2.0*x47*x6 - x48,
-        x39,
-        -x29 - 2.0*x39*x6,
-        x47*x7 + x48,
+        -x49 + 2.0*x50*x6,
+        x40,
+        -x30 + 2.0*x51*x6,
+        x48*x7 + x49,
         x10,
         x28,
-        x49,
-        x50,
-        x51,
-        -x53 + 2.0*x55*x6,
-        -x57 + 2.0*x58*x6,
-        2.0*x6*x64 - x65,
-        x66 + x68*x7,
-        x7*x71 + x72,
-        x7*x76 + x74,
-        x78,
-        x81,
+        x52,
+        x53,
+        x54,
+        -x56 + 2.0*x58*x6,
+        -x59 + 2.0*x6*x60,
+        2.0*x6*x66 - x67,
+        x69 + x7*x71,
+        x7*x74 + x75,
+        x7*x78 + x76,
+        x80,
         x83,
-        x53 + x7*x84,
-        x57 + x7*x85,
-        x65 + x7*x86,
-        x49,
-        x50,
-        x51,
-        2.0*x6*x77 - x87,
-        2.0*x6*x80 - x89,
-        2.0*x6*x82 - x90,
-        x68,
-        x71,
-        x76,
-        2.0*x6*x67 - x66,
-        2.0*x6*x70 - x72,
-        2.0*x6*x75 - x74,
-        x7*x78 + x87,
-        x7*x81 + x89,
-        x7*x83 + x90,
-        x49,
-        x50,
-        x51,
-        x84,
         x85,
+        x56 + x7*x86,
+        x59 + x7*x87,
+        x67 + x7*x88,
+        x52,
+        x53,
+        x54,
+        2.0*x6*x79 - x89,
+        2.0*x6*x82 - x91,
+        2.0*x6*x84 - x92,
+        x71,
+        x74,
+        x78,
+        2.0*x6*x70 - x69,
+        2.0*x6*x73 - x75,
+        2.0*x6*x77 - x76,
+        x7*x80 + x89,
+        x7*x83 + x91,
+        x7*x85 + x92,
+        x52,
+        x53,
+        x54,
         x86,
-        x91,
-        x95,
-        -x97,
-        -omega_0*x45*x98 + x1*x99 + x2*x99,
-        -x95,
-        x91,
-        x102,
-        -omega_1*x37*x98 + x0*x103 + x103*x2,
-        x97,
-        -x102,
-        x91,
-        -omega_2*x26*x98 + x0*x104 + x1*x104,
+        x87,
+        x88,
+        x93,
+        x12*x29 - x7*x98 - x94,
+        x101*x7 + x12*x40 + x99,
+        x103,
+        x12*x28 + x7*x98 + x94,
+        x93,
+        -x103*x7 - x104 + x12*x50,
+        x101,
+        -x101*x7 + x12*x51 - x99,
+        x103*x7 + x104 + x12*x48,
+        x93,
+        x98,
         x105,
         x106,
         x107,
         -x108 + 2.0*x20*x6,
         -x109 + 2.0*x23*x6,
         -x110,
-        x111 + x34*x7,
+        x111 + x35*x7,
         x112,
-        x109 + x35*x7,
-        x113*x45,
-        x41,
-        x43,
+        x109 + x36*x7,
+        x113*x46,
+        x42,
+        x44,
         x108 + x21*x7,
         x109 + x24*x7,
         x110,
@@ -236,17 +236,17 @@ def _main(e_0, e_1, e_2, phi, omega_0, omega_1, omega_2):
         x106,
         x107,
         -x114,
-        -x111 + 2.0*x40*x6,
-        -x108 + 2.0*x42*x6,
-        x34,
-        x113*x37,
+        -x111 + 2.0*x41*x6,
+        -x108 + 2.0*x43*x6,
         x35,
-        -x111 + 2.0*x33*x6,
+        x113*x38,
+        x36,
+        -x111 + 2.0*x34*x6,
         -x112,
-        -x109 - 2.0*x35*x6,
+        -x109 - 2.0*x36*x6,
         x114,
-        x111 + x41*x7,
-        x108 + x43*x7,
+        x111 + x42*x7,
+        x108 + x44*x7,
         x105,
         x106,
         x107,

@@ -95,6 +95,10 @@ def _rational_in_cos(f: sp.Expr, phi: sp.Symbol) -> sp.Expr:
     return sp.factor(sp.cancel(num / den)).xreplace({S: sp.sin(phi), C: sp.cos(phi)})
 
 
+#: the largest sum `_merge_angle_terms` hands to sympy's factor (terms, operations)
+MERGE_TERMS, MERGE_OPS = 4, 40
+
+
 def _merge_angle_terms(e: sp.Expr, phi: sp.Symbol, memo: dict) -> sp.Expr:
     """In every sum, the terms sharing a phi-free factor: their functions of phi merged
     into one reduced fraction where that has fewer operations."""
@@ -113,7 +117,10 @@ def _merge_angle_terms(e: sp.Expr, phi: sp.Symbol, memo: dict) -> sp.Expr:
         terms, merged = [], False
         for ind, parts in groups.items():
             s = sp.Add(*parts)
-            if len(parts) > 1 and any(x.has(phi) for x in parts):
+            # bounded: factor/cancel of a large sum ran for tens of minutes (the Jacobian
+            # kernels' long sums); the cancelling sums this is for are a few terms
+            if 1 < len(parts) <= MERGE_TERMS and any(x.has(phi) for x in parts) and \
+                    sp.count_ops(s) <= MERGE_OPS:
                 r = _rational_in_cos(s, phi)
                 if sp.count_ops(r) < sp.count_ops(s):
                     s, merged = r, True
