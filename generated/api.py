@@ -401,9 +401,9 @@ def L_tilde_dot(
     Notes:
         Singular set: 1 + cos(phi) = 0 (phi = pi).
 
-        Accuracy: error <= 1.14 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 500 ulp in float64) over 11 regimes (docs/accuracy.md, kernels.accuracy); singular when 1 + cos(phi) = 0 (phi = pi), flagged where cos(phi/2) == 0 in floating point, never for a float phi: finite at phi = fl(pi).
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 2.26e+03 ulp in float64) over 11 regimes (docs/accuracy.md, kernels.accuracy); singular when 1 + cos(phi) = 0 (phi = pi), flagged where cos(phi/2) == 0 in floating point, never for a float phi: finite at phi = fl(pi).
 
-        Generated; 91 operations; math hash 4a1f179ad0d8d060.
+        Generated; 79 operations; math hash 4a1f179ad0d8d060.
     """
     return _F.L_tilde_dot(e, phi, omega, out, check, on_singular, threads)
 

@@ -8,7 +8,7 @@ import pytest
 import sympy as sp
 from rigidsym.derivations.kernels_spec import KERNELS
 
-from rigidsym.codegen import accurate
+from rigidsym.codegen import accurate, accurate_rules
 from rigidsym.codegen.generator import _flatten
 from rigidsym.codegen.spec import flat_symbols, input_symbols
 
@@ -101,3 +101,42 @@ def test_fractions_in_cos_phi_merged_and_decided():
     sub = {phi: accurate._constrained(k, input_symbols(k))[input_symbols(k)["phi"]]}
     assert accurate._decide(parts, sub) in ("exact-cancel", "random-exact")
     assert accurate._angle_fractions([w * sp.cos(phi) + e], {"angles": [phi]}) is None
+
+
+def _ctx(name: str) -> tuple:
+    k = BY[name]
+    syms = input_symbols(k)
+    ctx = {"rotations": [], "angles": [syms[a.name] for a in k.args if a.kind == "angle"],
+           "kernel": k, "flat": {a.name: [syms[a.name]] if a.shape == () else
+                                 list(syms[a.name]) for a in k.args}}
+    return k, syms, _flatten(k, k.build(**syms)), ctx
+
+
+def test_tan_half_polynomial_exact_off_the_sphere_and_decided():
+    """Issue 37: L_tilde_dot's fractions over ``1 + cos phi`` as the polynomial in ``t =
+    tan(phi/2)`` they are, each coefficient homogenised in ``e`` (old main: 6.3 u where the
+    textbook is 2.3 u, tests/test_accuracy.py). Equal to the declaration everywhere, off
+    the unit sphere too (the harness's unit vectors a few ulps off read the declared
+    formula): checked exactly at a rational point with ``|e| != 1``, ``t = 1/2``."""
+    k, syms, flat, ctx = _ctx("L_tilde_dot")
+    out, parts = accurate._tan_half_polynomial(flat, ctx)
+    phi, e = syms["phi"], list(syms["e"])
+    assert len(parts) == 9 and not any(x.has(sp.cos(phi), sp.sin(phi)) for x in out)
+    # tan(phi/2) = 1/2: sin phi = 4/5, cos phi = 3/5 (sin(phi/2) : cos(phi/2) = 1 : 2)
+    at = {sp.sin(phi): sp.Rational(4, 5), sp.cos(phi): sp.Rational(3, 5),
+          sp.sin(phi / 2): 1, sp.cos(phi / 2): 2,
+          **dict(zip(e, [sp.Rational(1, 3), sp.Rational(-2, 5), sp.Rational(7, 4)],
+                     strict=True)),
+          **dict(zip(syms["omega"], [sp.Rational(3, 7), 5, sp.Rational(-1, 9)], strict=True))}
+    for old, new in zip(flat, out, strict=True):
+        assert old.xreplace(at) == new.xreplace(at)
+        assert sp.sympify(new).xreplace(at).is_Rational
+    # homogenised: e0^2 w + e1^2 w + 2 e2^2 w - w (cancels in floating point near |e| = 1)
+    w = sp.Symbol("w")
+    h = accurate_rules._homogenised(e[0]**2 * w + e[1]**2 * w + 2 * e[2]**2 * w - w, e)
+    assert h == e[2]**2 * w + sp.Mul(w, sp.Add(*[x**2 for x in e], -1), evaluate=False)
+    assert accurate._decide(parts, accurate._constrained(k, syms)) == "exact-cancel"
+    # cheap to refuse: a divisor 1 - cos phi (N_tilde_dot), no unit vector or angle, and
+    # L_tilde, whose half-angle program is t e already
+    for name in ("N_tilde_dot", "L_tilde", "rotation_from_natural_invariants"):
+        assert accurate._tan_half_polynomial(*_ctx(name)[2:]) is None, name

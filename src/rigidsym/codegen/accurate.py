@@ -38,6 +38,7 @@ from rigidsym.codegen.accurate_rules import (
     _axis_point_from_skew,
     _exact_powers,
     _skew_one_minus_cos,
+    _tan_half_polynomial,
 )
 from rigidsym.codegen.compensated import compensated_sums, diffprod, expand_diffprod, sumprod
 from rigidsym.codegen.compensated import expand_numerators as _expand_numerators
@@ -109,7 +110,8 @@ def _rewritten_then_differentiated(flat, ctx):
     values, parts = flat[:nv], []
     for rule in (r for r in RULES if r.propose not in (_rewritten_then_differentiated,
                                                        _expand_plain, compensated_sums,
-                                                       _exact_powers, _angle_fractions)):
+                                                       _exact_powers, _angle_fractions,
+                                                       _tan_half_polynomial)):
         got = rule.propose(values, ctx)
         if got is not None:
             values, p = got
@@ -161,6 +163,11 @@ RULES = (
             "three or four times, pow once: the Jacobian of a norm's quotient "
             "(f x n / ||f||^2 differentiated) sums several of them",
             _exact_powers, costly=True, gain=1.25),
+    Rewrite("a polynomial in tan(phi/2)",
+            "a fraction over 1 + cos phi in the half-angle program reads sin(phi/2) apart "
+            "from cos phi (each rounded); as the polynomial in t = tan(phi/2) it is, each "
+            "coefficient homogenised in the unit vector, it reads t alone",
+            _tan_half_polynomial, costly=True),
     Rewrite("fractions in cos phi merged",
             "sympy.diff of a quotient in cos phi (cot(phi/2) as sin phi / (1 - cos phi)) "
             "sums terms that cancel (cos phi / (2 - 2 cos phi) - 2 sin^2 phi / (2 - 2 cos "
