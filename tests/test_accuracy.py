@@ -58,7 +58,9 @@ def _losses(rows) -> str:
 #: test's points, so that test allows libmvec nothing (old main's libmvec build fails it:
 #: rotation_from_natural_invariants 1.9, euler_angle_rates_xzx_fixed 3.2).
 SWEEP_RULE = 2.0
-OPEN = {("L_tilde_dot_with_jacobians", "numpy", "float64"): 1.6,
+# (L_tilde_dot_with_jacobians float64, NumPy 1.6, is gone: no default test judged it; its
+# worst point is held by test_l_tilde_dot_with_jacobians_at_its_old_worst_point)
+OPEN = {
         # the Jacobian at ||f|| -> 0 by pow now (NumPy 0.84; 1.67 before); C 4.7 u where
         # the textbook is 1.95 u at one point: the rounding of the same sum, another order
         ("wrench_axis_with_jacobians", "c", "float64"): 1.2,
@@ -281,3 +283,15 @@ def test_l_tilde_dot_at_its_old_worst_point():
     rows = A.judge(name, "random", pts, np.float64, _backends())
     K.use_backend("numpy")
     assert all(r.rule_ratio <= 0.8 for r in rows), _losses(rows)
+
+
+def test_l_tilde_dot_with_jacobians_at_its_old_worst_point():
+    """L_tilde_dot_with_jacobians at the unit vectors a few ulps off of seed 1 (phi = -1.79):
+    old main 1.95 of the rule there (d/dphi 7.8 u where the textbook is 1.9 u); its values
+    the polynomial in tan(phi/2), differentiated, now: 1.14 (4.6 u, the cancellation in the
+    derivative by phi, open in docs/accuracy.md), held to it."""
+    name = "L_tilde_dot_with_jacobians"
+    pts = A.P.regimes(A.R.kernel_of(name), np.float64, n_random=8, seed=1)["unit off by ulps"]
+    rows = A.judge(name, "unit off by ulps", pts, np.float64, _backends())
+    K.use_backend("numpy")
+    assert all(r.rule_ratio <= 1.2 for r in rows), _losses(rows)

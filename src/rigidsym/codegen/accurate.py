@@ -99,8 +99,9 @@ class Chosen:
 
 def _rewritten_then_differentiated(flat, ctx):
     """A ``<name>_with_jacobians`` kernel: its values through the other rules, and its
-    derivatives those of the rewritten values (a rewrite of unconstrained inputs only: two
-    functions equal on an open set have equal derivatives)."""
+    derivatives those of the rewritten values (a rewrite of unconstrained inputs only, or
+    one decided equal off the constraints: two functions equal on an open set have equal
+    derivatives)."""
     k = ctx["kernel"]
     if not k.name.endswith("_with_jacobians"):
         return None
@@ -117,7 +118,19 @@ def _rewritten_then_differentiated(flat, ctx):
             values, p = got
             parts += p
     constrained = {x for a in k.args if a.kind != "any" for x in ctx["flat"][a.name]}
-    if not parts or any(sp.sympify(o).free_symbols & constrained for o, _ in parts):
+    if any(sp.sympify(o).free_symbols & constrained for o, _ in parts):
+        return None
+    # the polynomial in tan(phi/2) is an identity off the unit sphere too: decided so here
+    # (the angle's kind alone imposed), its derivatives are the declared ones'
+    got = _tan_half_polynomial(values, {**ctx, "kernel": k.jacobian_of})
+    angle = {ctx["flat"][a.name][0]: constrained_group("angle", f"zt_{a.name}")
+             for a in k.args if a.kind == "angle"}
+    try:
+        if got is not None and _decide(got[1], angle):
+            values, parts = got[0], parts + got[1]
+    except AssertionError:
+        pass
+    if not parts:
         return None
     out, start = list(values), 0
     for size in sizes:
