@@ -35,6 +35,7 @@ from rigidsym.algebra.symbols import constrained_group
 from rigidsym.codegen import rule as _rule
 from rigidsym.codegen.accurate_rules import (
     _angle_fractions,
+    _axis_point_from_axis,
     _axis_point_from_skew,
     _exact_powers,
     _skew_one_minus_cos,
@@ -106,16 +107,28 @@ def _rewritten_then_differentiated(flat, ctx):
     m = len(k.outputs) // (1 + len(k.args))
     sizes = [o.size for o in k.outputs[:m]]
     nv = sum(sizes)
-    values, parts = flat[:nv], []
+    values, parts, exact = flat[:nv], [], []
     for rule in (r for r in RULES if r.propose not in (_rewritten_then_differentiated,
                                                        _expand_plain, compensated_sums,
                                                        _exact_powers, _angle_fractions)):
-        got = rule.propose(values, ctx)
+        got = rule.propose(values, dict(ctx, values_only=True))
         if got is not None:
             values, p = got
-            parts += p
+            (exact if rule.propose in EXACT_OFF_CONSTRAINTS else parts).extend(p)
     constrained = {x for a in k.args if a.kind != "any" for x in ctx["flat"][a.name]}
-    if not parts or any(sp.sympify(o).free_symbols & constrained for o, _ in parts):
+    if any(sp.sympify(o).free_symbols & constrained for o, _ in parts):
+        return None
+    # a rewrite equal off its unit vectors' sphere too: decided so here (angles alone
+    # constrained), or not differentiated
+    if exact:
+        syms = {a.name: sp.Matrix(ctx["flat"][a.name]) if a.shape else ctx["flat"][a.name][0]
+                for a in k.args}
+        try:
+            _decide(exact, _constrained(k, syms, kinds=("angle",)))
+        except AssertionError:
+            return None
+        parts += exact
+    if not parts:
         return None
     out, start = list(values), 0
     for size in sizes:
@@ -125,6 +138,11 @@ def _rewritten_then_differentiated(flat, ctx):
         start += size
     return out, parts
 
+
+#: rewrites equal to the declared formula off the sphere of their unit vectors too (the
+#: zero test decides that with the angles alone constrained), so that the derivatives of the
+#: rewritten values are the declared derivatives, unit arguments included
+EXACT_OFF_CONSTRAINTS = (_axis_point_from_axis,)
 
 RULES = (
     Rewrite("derivatives of the rewritten values",
@@ -136,6 +154,12 @@ RULES = (
             "of it as phi -> 0; cot(phi/2)/2 e x c + (c - e (e.c))/2 from vect(Q) and tr Q "
             "reads the axis from the skew part (valid where 1 + tr Q does not cancel)",
             _axis_point_from_skew),
+    Rewrite("the axis point from the axis",
+            "(Q - 1)^T (Q a - a') with Q from (e, phi) rounds Q's entries and sums over them; "
+            "cot(phi/2)/2 e x (a' - a) - e x (e x (a + a'))/2 (plus exact terms in e.e - 1, "
+            "compensated, for a unit vector a few ulps off) reads the axis and the angle "
+            "from the inputs",
+            _axis_point_from_axis),
     Rewrite("1 - cos(phi) from the skew part of Q",
             "3 - tr Q cancels as phi -> 0 and the rounding of the diagonal of Q is "
             "relative 1/phi^2 there; the skew part keeps relative accuracy 1/phi, the "
@@ -263,13 +287,14 @@ def _worst(err: np.ndarray, e_ref: np.ndarray) -> float:
                zip(err[some], e_ref[some], strict=True))
 
 
-def _constrained(kernel, syms_by_arg) -> dict:
-    """Kernel input symbols -> the zero test's constrained atoms of the same kinds."""
+def _constrained(kernel, syms_by_arg, kinds=("unit", "rotation", "angle")) -> dict:
+    """Kernel input symbols -> the zero test's constrained atoms of the same kinds (of the
+    argument kinds ``kinds``)."""
     sub = {}
     for a in kernel.args:
         kind = {"unit": "unit" if a.size == 3 else "unit4", "rotation": "rotation",
                 "angle": "angle"}.get(a.kind)
-        if kind is None:
+        if kind is None or a.kind not in kinds:
             continue
         g = constrained_group(kind, f"zt_{a.name}")
         old = syms_by_arg[a.name]

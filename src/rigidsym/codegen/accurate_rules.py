@@ -57,6 +57,52 @@ def _axis_point_from_skew(flat, ctx):
     return [e.subs(reps) if e.has(om) else e for e in flat], list(reps.items())
 
 
+def _axis_point_from_axis(flat, ctx):
+    """(3.18)'s ``p0 = (Q - 1)^T (Q a - a') / (2 (1 - cos phi))`` with ``Q`` from ``(e, phi)``
+    by (2.49) -> ``cot(phi/2)/2 e x (a' - a) - e x (e x (a + a'))/2 + d ((a - a')/2 + s^2 E^2
+    a + s^2 d a)``, ``s = sin(phi/2)``, ``E^2 x = e (e.x) - (e.e) x``, ``d = e.e - 1`` (Dot2).
+
+    With ``Q - 1 = 2 s (c E + s N)``, ``N = e e^T - 1 = E^2 + d 1`` (which commutes with E),
+    the declared product is exactly this for every e, unit or not (so its derivatives are
+    the declared ones too): the midpoint's part normal to the axis plus the cot term, read
+    from the inputs, where the declared form rounds Q's nine entries and two sums of three
+    products over them (issue 37: 5.1 u where the textbook is 1.0 u at a random point); the
+    ``d`` terms keep it equal to the declared formula at a unit vector a few ulps off (35 u
+    there without them), and ``d`` is ``e.e - 1`` compensated (plainly it is itself a few
+    ulps, so half wrong)."""
+    from rigidsym.algebra.primitives import rotation_from_natural_invariants
+    from rigidsym.codegen.compensated import SumProd
+
+    k = ctx["kernel"]
+    if k.name.endswith("_with_jacobians") and not ctx.get("values_only"):
+        # the values alone rewritten lose the declared derivatives' shared terms (365 -> 458
+        # operations) and moved the float32 C plan past the rule (0.86 -> 1.6 at phi -> pi):
+        # there only with their own derivatives (accurate._rewritten_then_differentiated)
+        return None
+    units = [a.name for a in k.args if a.kind == "unit" and a.shape == (3,)]
+    vecs = [a.name for a in k.args if a.kind == "any" and a.shape == (3,)]
+    reps = {}
+    for u in units:
+        e = sp.Matrix(ctx["flat"][u])
+        for phi in ctx["angles"]:
+            Q = rotation_from_natural_invariants(e, phi)
+            for x, y in zip(vecs, vecs[1:], strict=False):
+                a, ap = sp.Matrix(ctx["flat"][x]), sp.Matrix(ctx["flat"][y])
+                old = (Q - sp.eye(3)).T * (Q * a - ap) / (2 - 2 * sp.cos(phi))
+                if not any(o == f or f.has(o) for o in old for f in flat):
+                    continue
+                sh, ch = sp.sin(phi / 2), sp.cos(phi / 2)
+                d = SumProd(e[0], e[0], e[1], e[1], e[2], e[2], -1, 1)
+                ee = e.dot(e)
+                e2a = e * e.dot(a) - ee * a
+                new = (ch / (2 * sh) * e.cross(ap - a) - e.cross(e.cross(a + ap)) / 2
+                       + d * ((a - ap) / 2 + sh**2 * e2a + sh**2 * d * a))
+                reps.update(zip(old, new, strict=True))
+    if not reps:
+        return None
+    return [reps.get(e, e.xreplace(reps)) for e in flat], list(reps.items())
+
+
 def _exact_powers(flat, ctx):
     """``x^(k/2)`` (``|k| >= 3``) and ``x^-n`` (``n >= 2``) -> ``pow(x, k/2)``: the kernels
     print a rational power as a product of roots and a quotient (``1/(x sqrt x)``: three
