@@ -80,8 +80,8 @@ def _saved(program, vjp, hoisted: dict) -> list[str]:
     forward's common subexpressions)."""
     fwd = {str(s) for s, _ in program.temps}
     nodes = _compensated([e for _, e in vjp.temps] + list(vjp.outputs))
-    return [str(s) for s, _ in vjp.temps if str(s) in fwd] + \
-        [hoisted[n] for n in nodes if n in hoisted]
+    saved = [str(s) for s, _ in vjp.temps if str(s) in fwd]
+    return saved + [hoisted[n] for n in nodes if n in hoisted and hoisted[n] not in saved]
 
 
 def _compensated(exprs: list) -> list:
@@ -105,11 +105,13 @@ def hoist_compensated(program) -> dict:
     stay bit for bit. Why (issue 38, the first compile of ``instant_screw_axis``): the VJP
     reads the compensated pitch (``_sumprod``, ~65 operations) that the forward computes;
     named, the forward saves it and the VJP takes it instead of computing it again. Empty
-    where a node holds another (not printed by one name then)."""
+    where a node holds another (not printed by one name then). A node that is a temp's whole
+    expression keeps that temp's name."""
     nodes = _compensated([e for _, e in program.temps] + list(program.outputs))
     if any(m is not n and m.has(n) for m in nodes for n in nodes):
         return {}
-    return {n: f"xc{i}" for i, n in enumerate(nodes)}
+    whole = {e: str(s) for s, e in program.temps}
+    return {n: whole.get(n, f"xc{i}") for i, n in enumerate(nodes)}
 
 
 def _lines(pr, temps: list, outputs: list) -> list[tuple[str, str]]:
@@ -123,6 +125,10 @@ def _lines(pr, temps: list, outputs: list) -> list[tuple[str, str]]:
             out.append((todo.pop(n), pr.compensated_call(n)))
 
     for s, e in temps:
+        if todo.get(e) == str(s):  # the temp is the node: computed there
+            del todo[e]
+            out.append((str(s), pr.compensated_call(e)))
+            continue
         place(e)
         out.append((str(s), pr.doprint(e)))
     for o in outputs:
