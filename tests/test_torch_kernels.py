@@ -410,7 +410,7 @@ def test_backward_takes_the_compensated_sums_from_the_forward():
               for x, a in zip(sample(name, 5), meta["args"], strict=True)]
         try:
             for h, f in real.items():
-                scope[h] = lambda *a, f=f, h=h: calls.append(h) or f(*a)
+                scope[h] = lambda *a, f=f, h=h, calls=calls: calls.append(h) or f(*a)
             outs, _, temps = space.values_saved(name, xs)
             forward, calls[:] = len(calls), []
             grads = [torch.ones_like(o) for o in outs]
