@@ -16,6 +16,9 @@ gives the median per call of wall time and, in brackets, the ratio of process CP
 Also: the first call's time (trace + compile + run) of ``torch.compile`` and ``jax.jit``
 for kernel and hand, the graph breaks (``torch._dynamo.explain``), the load average.
 Prints the Markdown of the ``arrays-grad`` section of benchmarks/RESULTS.md.
+
+``--first [KERNEL ...] --reps R``: only the first ``torch.compile`` call, ``R`` times in one
+process, kernel and hand alternated, and the node counts of the forward and backward graphs.
 """
 
 # ruff: noqa: B023 - each closure is timed at once, inside its own loop iteration
@@ -148,6 +151,86 @@ def run_grad(sizes, reps: int = 9) -> tuple[list[dict], dict]:
     return rows, facts
 
 
+def _graph_nodes(torch, fn, xs) -> tuple[int, int]:
+    """``(forward, backward)``: the nodes of the ATen graphs AOTAutograd hands inductor for
+    the value + gradient of ``fn`` (``dynamic=True``; no compile, the graphs only)."""
+    from torch._dynamo.backends.common import aot_autograd
+
+    counts = []
+
+    def count(gm, _inputs):
+        counts.append(len(gm.graph.nodes))
+        return gm.forward
+
+    torch._dynamo.reset()
+    c = torch.compile(fn, dynamic=True, backend=aot_autograd(fw_compiler=count,
+                                                              bw_compiler=count))
+    _loss(c(*[t.clone().requires_grad_(True) for t in xs])).backward()
+    torch._dynamo.reset()
+    return counts[0], sum(counts[1:])
+
+
+def _cpu() -> float:
+    """CPU seconds of this process and its waited-for children (the C++ compiler)."""
+    import resource
+
+    me, kids = (resource.getrusage(w) for w in (resource.RUSAGE_SELF,
+                                                   resource.RUSAGE_CHILDREN))
+    return me.ru_utime + me.ru_stime + kids.ru_utime + kids.ru_stime
+
+
+#: inductor's phases of a first call (``torch._dynamo.utils.compilation_time_metrics``)
+PHASES = {"all": "_compile.compile_inner", "aot trace": "aot_trace_joint_graph",
+          "forward": "compile_fx.<locals>.fw_compiler_base",
+          "backward": "compile_fx.<locals>.bw_compiler", "schedule": "Scheduler.__init__",
+          "codegen": "Scheduler.codegen", "c++": "compile_file"}
+
+
+def run_first(names, n: int, reps: int) -> dict:
+    """``{kernel: {"k": [(wall s, cpu s, {phase: s}), ...], "h": [...], "nodes k": (fw, bw),
+    "nodes h": ...}}``: the first call of ``torch.compile`` (inductor, ``dynamic=True``,
+    value + gradient, caches off: trace, compile, run), ``reps`` times, kernel and hand
+    alternated (which one goes first alternating too), after one small compile that pays
+    inductor's start; ``compile_threads=1`` so that the C++ compiler is a child of this
+    process and its CPU time is counted (the CPU time: robust to the load of a shared
+    machine, where the wall time of one first call moves by 2x)."""
+    import torch
+    from torch._dynamo.utils import compilation_time_metrics as metrics
+
+    from rigidsym.kernels import torch as rk
+
+    torch.set_num_threads(1)
+    _warm_inductor(torch)
+    out = {}
+    for name in names:
+        f = getattr(rk, name)
+        fns = {"k": lambda *a, f=f: f(*a, check=False), "h": _hand(torch, name)}
+        xs = [torch.from_numpy(x) for x in _inputs(name, n, np.float64)]
+        got: dict = {k: [] for k in fns}
+        for r in range(reps):
+            for k in (("k", "h") if r % 2 == 0 else ("h", "k")):
+                torch._dynamo.reset()
+                metrics.clear()
+                with torch._inductor.config.patch(force_disable_caches=True,
+                                                  compile_threads=1):
+                    c = torch.compile(fns[k], dynamic=True)
+                    cpu = _cpu()
+                    wall = _first(lambda c=c: _loss(c(*[
+                        t.clone().requires_grad_(True) for t in xs])).backward())
+                    got[k].append((wall, _cpu() - cpu, {p: sum(metrics.get(m, [0.0]))
+                                                        for p, m in PHASES.items()}))
+        for k, fn in fns.items():
+            got[f"nodes {k}"] = _graph_nodes(torch, fn, xs)
+        out[name] = got
+        for k in fns:
+            print(name, k, "wall", [round(w, 2) for w, _, _ in got[k]], "cpu",
+                  [round(c, 2) for _, c, _ in got[k]], "phases", [
+                      {p: round(v, 2) for p, v in ph.items()} for _, _, ph in got[k]],
+                  flush=True)
+        print(name, "graph nodes (forward, backward): k", got["nodes k"], "h", got["nodes h"])
+    return out
+
+
 def _cell(r, mode):
     (kw, kc), (hw, hc) = r[f"{mode} k"], r[f"{mode} h"]
     return [f"{kw * 1e3:.3g} / {hw * 1e3:.3g}", f"{kw / hw:.2f} ({kc / hc:.2f})"]
@@ -201,5 +284,14 @@ if __name__ == "__main__":
     ap = argparse.ArgumentParser()
     ap.add_argument("--sizes", nargs="+", type=float, default=None)
     ap.add_argument("--reps", type=int, default=9, help="timing samples (3 at N >= 1e6)")
+    ap.add_argument("--first", nargs="*", metavar="KERNEL", default=None,
+                    help="only the first torch.compile call (--reps times, kernel and hand "
+                    "alternated, N = the first of --sizes) and the graphs' node counts, of "
+                    "these kernels (default: both)")
     a = ap.parse_args()
-    main(a.sizes, a.reps)
+    if a.first is not None:
+        before = os.getloadavg()[0]
+        run_first(a.first or KERNELS, int((a.sizes or [1e3])[0]), a.reps)
+        print(f"load average before {before:.1f}, after {os.getloadavg()[0]:.1f}")
+    else:
+        main(a.sizes, a.reps)

@@ -315,7 +315,7 @@ def steiner_theorem_dyad_form() -> Statement:
     uxd = cpm(u) * (a - c)
     return Statement(
         [Rel(D[3:6, 3:6], O3, "lower-right block m P_2 P_2^T = O, so P_2 = O"),
-         Rel(D[0:3, 3:6], O3, "upper-right block m P_1 P_2^T, = O since P_2 = O")],
+         Rel(D[0:3, 3:6], O3, "upper-right block m P_1 P_2^T = O, since P_2 = O")],
         model,
         claims=[Rel(x.T * D * x, -m * uxd.T * uxd,
                     "x = [u; (A - C)^T u]: x^T (M_A - M_C) x = -m ||u x (a - c)||^2")],

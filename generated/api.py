@@ -1560,9 +1560,9 @@ def screw_axis_point(
     Notes:
         Singular set: phi = 0 (pure translation).
 
-        Accuracy: error <= 1.05 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 286 ulp in float64) over 11 regimes (docs/accuracy.md, kernels.accuracy); singular when phi = 0 (pure translation), flagged where sin(phi/2) == 0 in floating point: phi == 0 exactly (and abs(phi) < 1e-323); an output overflows (non-finite) where the result exceeds the type, about abs(phi) < 1e-300 x norm(input) in float64.
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 112 ulp in float64) over 11 regimes (docs/accuracy.md, kernels.accuracy); singular when phi = 0 (pure translation), flagged where sin(phi/2) == 0 in floating point: phi == 0 exactly (and abs(phi) < 1e-323); an output overflows (non-finite) where the result exceeds the type, about abs(phi) < 1e-300 x norm(input) in float64.
 
-        Generated; 89 operations; math hash e89a638961851614.
+        Generated; 99 operations; math hash e89a638961851614.
     """
     return _F.screw_axis_point(e, phi, a, a_prime, out, check, on_singular, threads)
 

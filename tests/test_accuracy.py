@@ -277,7 +277,7 @@ def test_l_tilde_dot_at_its_old_worst_point():
     """L_tilde_dot at the random points of seed 2 (its worst, phi = 2.67): old main 1.39 of
     the rule there (6.3 u where the textbook is 2.3 u: the half-angle program read sin(phi/2)
     apart from cos phi); the polynomial in tan(phi/2) of
-    rigidsym.codegen.accurate_rules._tan_half_polynomial now."""
+    rigidsym.codegen.tan_half._tan_half_polynomial now."""
     name = "L_tilde_dot"
     pts = A.P.regimes(A.R.kernel_of(name), np.float64, n_random=8, seed=2)["random"]
     rows = A.judge(name, "random", pts, np.float64, _backends())

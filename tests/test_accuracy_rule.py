@@ -27,6 +27,7 @@ import accuracy as A  # noqa: E402
 from test_accuracy import _backends  # noqa: E402
 
 U = 2.0**-53
+ROOT = Path(__file__).resolve().parents[1]
 
 
 def test_the_rule():
@@ -113,6 +114,23 @@ def test_screw_axis_point_from_the_skew_part():
             got = A.run_kernel("screw_of_displacement", arrays, np.float64, b)[0]
             err = np.linalg.norm(got[4:7] - ref[4:7]) / np.linalg.norm(ref[4:7])
             assert err <= 16 * U, (b, t, err / U)
+
+
+def test_screw_axis_point_from_the_axis():
+    """screw_axis_point at the harness's random points of seed 2: old main built Q from (e,
+    phi) and summed over its entries ((Q - 1)^T (Q a - a')), 5.1 u at phi = 2.92 where the
+    textbook formula is 1.0 u (1.27 of the rule); the generator now reads the axis and the
+    angle from the inputs (cot(phi/2)/2 e x (a' - a) - e x (e x (a + a'))/2, exact in e.e -
+    1), within the rule there and off the unit sphere by ulps."""
+    name = "screw_axis_point"
+    k = A.R.kernel_of(name)
+    regs = A.P.regimes(k, np.float64, n_random=8, seed=2)
+    for regime in ("random", "unit off by ulps"):
+        rows = A.judge(name, regime, regs[regime], np.float64, _backends())
+        assert all(r.rule_ratio <= 1 and not r.spurious for r in rows), [
+            (r.backend, regime, r.rule_ratio, r.err_u) for r in rows]
+    src = (ROOT / "generated" / "numpy" / f"{name}.py").read_text()
+    assert "the axis point from the axis" in src
 
 
 @pytest.mark.extra

@@ -111,6 +111,21 @@ def test_letter_subscripts_are_subscripts_in_html():
     assert "M<sub>A</sub>" in page and "Ṡ<sub>N</sub>" in page
 
 
+
+def test_the_exercises_page_sets_letter_subscripts_too():
+    """The exercises HTML (Markdown through markdown_to_html) wrote I_C and I_xx with an
+    underscore where the chapter page sets them as subscripts; an inline SVG figure keeps
+    its text as drawn (no <sub> inside <svg>)."""
+    from rigidsym.report.html import markdown_to_html
+    svg = '<svg xmlns="http://www.w3.org/2000/svg"><text>p_C</text></svg>'
+    page = markdown_to_html("I_C e_z = I_zz e_z, `I_C_per_kg_m2`\n\n![axis](f.svg)\n",
+                            "t", {"f.svg": svg})
+    assert "I<sub>C</sub> e<sub>z</sub> = I<sub>zz</sub> e<sub>z</sub>" in page
+    assert "I_C_per_kg_m2" in page and "<text>p_C</text>" in page
+    shown = (REPORT / "exercises.html").read_text("utf-8")
+    assert "I<sub>C</sub>" in shown
+    assert not re.search(r"<svg\b(?:(?!</svg>).)*<sub>", shown, flags=re.S)
+
 # ------------------------------------------------------ a reader's K_1 and vector K
 @pytest.fixture
 def _forget_latex_ids():

@@ -6,15 +6,15 @@
  * template: c_kernel.c.j2
  * math hash: sha256:e89a638961851614
  * sympy 1.14.0, rigidsym 0.2.0
- * operations: 89
- * accuracy rewrite (main): cos phi as 1 - 2 s^2 or 2 c^2 - 1: the bare cos phi left by the
- *     half-angle rewrite, as 1 - 2 s^2 or 2 c^2 - 1 (s, c: sin, cos of phi/2) rather than 1 -
- *     2 s^2: the form of the measured least error among 1 - 2 s^2, 1 - 2 s^2 or 2 c^2 - 1, (c
- *     - s) (c + s) (rigidsym.codegen.cos_form); worst ratio to the rule max(2 e_best, 4 u)
+ * operations: 99
+ * accuracy rewrite (main): the axis point from the axis: (Q - 1)^T (Q a - a') with Q from (e,
+ *     phi) rounds Q's entries and sums over them; cot(phi/2)/2 e x (a' - a) - e x (e x (a +
+ *     a'))/2 (plus exact terms in e.e - 1, compensated, for a unit vector a few ulps off)
+ *     reads the axis and the angle from the inputs; worst ratio to the rule max(2 e_best, 4 u)
  *     (e_best: the most accurate of the textbook formula and the forms tried, per point;
- *     rigidsym.codegen.rule) at 348 points of the regimes (rigidsym.codegen.regimes, exact,
- *     rounded to float64) 1.9 -> 0.89, never worse than the textbook formula by that rule;
- *     equal to the declared formula by the zero test (exact-cancel)
+ *     rigidsym.codegen.rule) at 55 points of the regimes (rigidsym.codegen.regimes, exact,
+ *     rounded to float64) a singular flag -> 0.89, never worse than the textbook formula by
+ *     that rule; equal to the declared formula by the zero test (exact-cancel)
  */
 #include "screw_axis_point.h"
 
@@ -72,21 +72,21 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_screw_axis_point_lanes(
     RIGIDSYM_SIMD_FAR
     for (int64_t j = 0; j < RIGIDSYM_LANES_TRIG; ++j) {
         const double phi = col_phi[j];
-        const double x0 = (0.5)*phi;
+        const double x8 = (0.5)*phi;
 
-        trig_0[j] = RIGIDSYM_VSIN(x0);
-        trig_1[j] = RIGIDSYM_VCOS(x0);
-        far |= RIGIDSYM_TRIG_FAR(x0);
+        trig_0[j] = RIGIDSYM_VSIN(x8);
+        trig_1[j] = RIGIDSYM_VCOS(x8);
+        far |= RIGIDSYM_TRIG_FAR(x8);
     }
     if (far) {
         for (int64_t j = 0; j < RIGIDSYM_LANES_TRIG; ++j) {
         const double phi = col_phi[j];
-        const double x0 = (0.5)*phi;
+        const double x8 = (0.5)*phi;
 
-            if (RIGIDSYM_TRIG_FAR(x0))
-                trig_0[j] = sin(x0);
-            if (RIGIDSYM_TRIG_FAR(x0))
-                trig_1[j] = cos(x0);
+            if (RIGIDSYM_TRIG_FAR(x8))
+                trig_0[j] = sin(x8);
+            if (RIGIDSYM_TRIG_FAR(x8))
+                trig_1[j] = cos(x8);
         }
     }
     for (int64_t j = 0; j < RIGIDSYM_LANES_TRIG; ++j) {
@@ -125,21 +125,21 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_screw_axis_point_lanes_f32(
     RIGIDSYM_SIMD_FAR
     for (int64_t j = 0; j < RIGIDSYM_LANES_F32; ++j) {
         const double phi = col_phi[j];
-        const double x0 = (0.5)*phi;
+        const double x8 = (0.5)*phi;
 
-        trig_0[j] = RIGIDSYM_VSIN(x0);
-        trig_1[j] = RIGIDSYM_VCOS(x0);
-        far |= RIGIDSYM_TRIG_FAR(x0);
+        trig_0[j] = RIGIDSYM_VSIN(x8);
+        trig_1[j] = RIGIDSYM_VCOS(x8);
+        far |= RIGIDSYM_TRIG_FAR(x8);
     }
     if (far) {
         for (int64_t j = 0; j < RIGIDSYM_LANES_F32; ++j) {
         const double phi = col_phi[j];
-        const double x0 = (0.5)*phi;
+        const double x8 = (0.5)*phi;
 
-            if (RIGIDSYM_TRIG_FAR(x0))
-                trig_0[j] = sin(x0);
-            if (RIGIDSYM_TRIG_FAR(x0))
-                trig_1[j] = cos(x0);
+            if (RIGIDSYM_TRIG_FAR(x8))
+                trig_0[j] = sin(x8);
+            if (RIGIDSYM_TRIG_FAR(x8))
+                trig_1[j] = cos(x8);
         }
     }
     for (int64_t j = 0; j < RIGIDSYM_LANES_F32; ++j) {

@@ -6,25 +6,25 @@
  * template: c_kernel.h.j2
  * math hash: sha256:e89a638961851614
  * sympy 1.14.0, rigidsym 0.2.0
- * operations: 89
- * accuracy rewrite (main): cos phi as 1 - 2 s^2 or 2 c^2 - 1: the bare cos phi left by the
- *     half-angle rewrite, as 1 - 2 s^2 or 2 c^2 - 1 (s, c: sin, cos of phi/2) rather than 1 -
- *     2 s^2: the form of the measured least error among 1 - 2 s^2, 1 - 2 s^2 or 2 c^2 - 1, (c
- *     - s) (c + s) (rigidsym.codegen.cos_form); worst ratio to the rule max(2 e_best, 4 u)
+ * operations: 99
+ * accuracy rewrite (main): the axis point from the axis: (Q - 1)^T (Q a - a') with Q from (e,
+ *     phi) rounds Q's entries and sums over them; cot(phi/2)/2 e x (a' - a) - e x (e x (a +
+ *     a'))/2 (plus exact terms in e.e - 1, compensated, for a unit vector a few ulps off)
+ *     reads the axis and the angle from the inputs; worst ratio to the rule max(2 e_best, 4 u)
  *     (e_best: the most accurate of the textbook formula and the forms tried, per point;
- *     rigidsym.codegen.rule) at 348 points of the regimes (rigidsym.codegen.regimes, exact,
- *     rounded to float64) 1.9 -> 0.89, never worse than the textbook formula by that rule;
- *     equal to the declared formula by the zero test (exact-cancel)
+ *     rigidsym.codegen.rule) at 55 points of the regimes (rigidsym.codegen.regimes, exact,
+ *     rounded to float64) a singular flag -> 0.89, never worse than the textbook formula by
+ *     that rule; equal to the declared formula by the zero test (exact-cancel)
  *
  * Point of the screw axis closest to the origin.
  * p0 = (Q - 1)^T (Q a - a') / (2 (1 - cos phi)), Q from (e, phi) by (2.49)
  * Singular set: phi = 0 (pure translation)
  *
  * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
- * measured at generation, rigidsym.codegen.float32; worst error 0.97 of what
+ * measured at generation, rigidsym.codegen.float32; worst error 0.941 of what
  * the rule of issue 37 allows, max(2 e_textbook, 4 u), per output, normwise, at its
  * points where the kernel computed in double is within it). In double:
- *   trig_0, trig_1, x1, x2, x5, x6, x7, x8, x10, x11, x15, x16, x17, x18, x20, x21, x23, x24, x25
+ *   trig_0, trig_1, x0, x1, x3, x6, x7, x9, x10, x16, p0[0], p0[1]
  */
 #ifndef RIGIDSYM_SCREW_AXIS_POINT_H
 #define RIGIDSYM_SCREW_AXIS_POINT_H
@@ -53,39 +53,31 @@ static inline int rigidsym_screw_axis_point_sample(
     const double a_prime_2 = in_a_prime[2];
     int singular = 0;
     {
-        const double x0 = (0.5)*phi;
-        const double x1 = sin(x0);
-        const double x2 = (x1*x1);
-        const double x3 = (e_0*e_0);
-        const double x4 = 2.0*x2;
-        const double x5 = e_0*e_1*x4;
-        const double x6 = cos(x0);
-        const double x7 = 2.0*x1*x6;
-        const double x8 = e_2*x7;
-        const double x9 = x5 - x8;
-        const double x10 = e_2*x4;
-        const double x11 = e_0*x10;
-        const double x12 = e_1*x7;
-        const double x13 = x11 + x12;
-        const double x14 = ((x2 < 0.5) ? (1.0 - x4) : (2.0*(x6*x6) - 1.0));
-        const double x15 = a_0*(x14*(1.0 - x3) + x3) + a_1*x9 + a_2*x13 - a_prime_0;
-        const double x16 = x5 + x8;
-        const double x17 = e_0*x7;
-        const double x18 = 2.0*e_1*e_2*x2 - x17;
-        const double x19 = (e_1*e_1);
-        const double x20 = a_0*x16 + a_1*(x14*(1.0 - x19) + x19) + a_2*x18 - a_prime_1;
-        const double x21 = x11 - x12;
-        const double x22 = e_1*x10 + x17;
-        const double x23 = (e_2*e_2);
-        const double x24 = a_0*x21 + a_1*x22 + a_2*(x14*(1.0 - x23) + x23) - a_prime_2;
-        const double x25 = (0.25)/x2;
-        out_p0[0] = x25*(x15*x2*(2.0*x3 - 2.0) + x16*x20 + x21*x24);
-        out_p0[1] = x25*(x15*x9 + x2*x20*(2.0*x19 - 2.0) + x22*x24);
-        out_p0[2] = x25*(x13*x15 + x18*x20 + x2*x24*(2.0*x23 - 2.0));
-        singular |= (x1) == 0.0;
+        const double x0 = a_1 + a_prime_1;
+        const double x1 = a_0 + a_prime_0;
+        const double x2 = (0.5)*e_0*x0 - 0.5*e_1*x1;
+        const double x3 = a_2 + a_prime_2;
+        const double x4 = -e_0*x3 + e_2*x1;
+        const double x5 = (0.5)*e_2;
+        const double x6 = -a_2 + a_prime_2;
+        const double x7 = -a_1 + a_prime_1;
+        const double x8 = (0.5)*phi;
+        const double x9 = sin(x8);
+        const double x10 = (0.5)*cos(x8)/x9;
+        const double x11 = rigidsym_sumprod4(e_0, e_0, e_1, e_1, e_2, e_2, -1.0, 1.0);
+        const double x12 = (x9*x9);
+        const double x13 = x11*x12;
+        const double x14 = (e_0*e_0) + (e_1*e_1) + (e_2*e_2);
+        const double x15 = a_0*e_0 + a_1*e_1 + a_2*e_2;
+        const double x16 = e_1*x3 - e_2*x0;
+        const double x17 = -a_0 + a_prime_0;
+        out_p0[0] = -e_1*x2 + x10*(e_1*x6 - e_2*x7) + x11*(a_0*x13 + (0.5)*a_0 - 0.5*a_prime_0 + x12*(-a_0*x14 + e_0*x15)) + x4*x5;
+        out_p0[1] = e_0*x2 + x10*(-e_0*x6 + e_2*x17) + x11*(a_1*x13 + (0.5)*a_1 - 0.5*a_prime_1 + x12*(-a_1*x14 + e_1*x15)) - x16*x5;
+        out_p0[2] = -0.5*e_0*x4 + (0.5)*e_1*x16 + x10*(e_0*x7 - e_1*x17) + x11*(a_2*x13 + (0.5)*a_2 - 0.5*a_prime_2 + x12*(-a_2*x14 + e_2*x15));
+        singular |= (x9) == 0.0;
         /* quantities that can be non-finite for finite inputs (divisions, roots):
          * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
-        const double finite = ((x25 - x25) + (x2 - x2));
+        const double finite = ((x10 - x10) + (x9 - x9));
         singular |= finite != finite;
     }
     return singular;
@@ -115,38 +107,30 @@ static inline int rigidsym_screw_axis_point_sample_trig(
     const double a_prime_2 = in_a_prime[2];
     int singular = 0;
     {
-        const double x1 = trig_0;
-        const double x2 = (x1*x1);
-        const double x3 = (e_0*e_0);
-        const double x4 = 2.0*x2;
-        const double x5 = e_0*e_1*x4;
-        const double x6 = trig_1;
-        const double x7 = 2.0*x1*x6;
-        const double x8 = e_2*x7;
-        const double x9 = x5 - x8;
-        const double x10 = e_2*x4;
-        const double x11 = e_0*x10;
-        const double x12 = e_1*x7;
-        const double x13 = x11 + x12;
-        const double x14 = ((x2 < 0.5) ? (1.0 - x4) : (2.0*(x6*x6) - 1.0));
-        const double x15 = a_0*(x14*(1.0 - x3) + x3) + a_1*x9 + a_2*x13 - a_prime_0;
-        const double x16 = x5 + x8;
-        const double x17 = e_0*x7;
-        const double x18 = 2.0*e_1*e_2*x2 - x17;
-        const double x19 = (e_1*e_1);
-        const double x20 = a_0*x16 + a_1*(x14*(1.0 - x19) + x19) + a_2*x18 - a_prime_1;
-        const double x21 = x11 - x12;
-        const double x22 = e_1*x10 + x17;
-        const double x23 = (e_2*e_2);
-        const double x24 = a_0*x21 + a_1*x22 + a_2*(x14*(1.0 - x23) + x23) - a_prime_2;
-        const double x25 = (0.25)/x2;
-        out_p0[0] = x25*(x15*x2*(2.0*x3 - 2.0) + x16*x20 + x21*x24);
-        out_p0[1] = x25*(x15*x9 + x2*x20*(2.0*x19 - 2.0) + x22*x24);
-        out_p0[2] = x25*(x13*x15 + x18*x20 + x2*x24*(2.0*x23 - 2.0));
-        singular |= (x1) == 0.0;
+        const double x0 = a_1 + a_prime_1;
+        const double x1 = a_0 + a_prime_0;
+        const double x2 = (0.5)*e_0*x0 - 0.5*e_1*x1;
+        const double x3 = a_2 + a_prime_2;
+        const double x4 = -e_0*x3 + e_2*x1;
+        const double x5 = (0.5)*e_2;
+        const double x6 = -a_2 + a_prime_2;
+        const double x7 = -a_1 + a_prime_1;
+        const double x9 = trig_0;
+        const double x10 = (0.5)*trig_1/x9;
+        const double x11 = rigidsym_sumprod4(e_0, e_0, e_1, e_1, e_2, e_2, -1.0, 1.0);
+        const double x12 = (x9*x9);
+        const double x13 = x11*x12;
+        const double x14 = (e_0*e_0) + (e_1*e_1) + (e_2*e_2);
+        const double x15 = a_0*e_0 + a_1*e_1 + a_2*e_2;
+        const double x16 = e_1*x3 - e_2*x0;
+        const double x17 = -a_0 + a_prime_0;
+        out_p0[0] = -e_1*x2 + x10*(e_1*x6 - e_2*x7) + x11*(a_0*x13 + (0.5)*a_0 - 0.5*a_prime_0 + x12*(-a_0*x14 + e_0*x15)) + x4*x5;
+        out_p0[1] = e_0*x2 + x10*(-e_0*x6 + e_2*x17) + x11*(a_1*x13 + (0.5)*a_1 - 0.5*a_prime_1 + x12*(-a_1*x14 + e_1*x15)) - x16*x5;
+        out_p0[2] = -0.5*e_0*x4 + (0.5)*e_1*x16 + x10*(e_0*x7 - e_1*x17) + x11*(a_2*x13 + (0.5)*a_2 - 0.5*a_prime_2 + x12*(-a_2*x14 + e_2*x15));
+        singular |= (x9) == 0.0;
         /* quantities that can be non-finite for finite inputs (divisions, roots):
          * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
-        const double finite = ((x25 - x25) + (x2 - x2));
+        const double finite = ((x10 - x10) + (x9 - x9));
         singular |= finite != finite;
     }
     return singular;
@@ -177,36 +161,28 @@ static inline int rigidsym_screw_axis_point_sample_trig_f32(
     const float a_prime_2 = in_a_prime[2];
     int singular = 0;
     {
-        const double x1 = trig_0;
-        const double x2 = (x1*x1);
-        const float x3 = (e_0*e_0);
-        const float x4 = 2.0f*x2;
-        const double x5 = ((double)e_0)*((double)e_1)*((double)x4);
-        const double x6 = trig_1;
-        const double x7 = 2.0*x1*x6;
-        const double x8 = ((double)e_2)*x7;
-        const float x9 = x5 - x8;
-        const double x10 = ((double)e_2)*((double)x4);
-        const double x11 = ((double)e_0)*x10;
-        const float x12 = e_1*x7;
-        const float x13 = x11 + x12;
-        const float x14 = ((x2 < 0.5f) ? (1.0f - x4) : (2.0f*(x6*x6) - 1.0f));
-        const double x15 = ((double)a_0)*(((double)x14)*(1.0 - ((double)x3)) + ((double)x3)) + ((double)a_1)*((double)x9) + ((double)a_2)*((double)x13) - ((double)a_prime_0);
-        const double x16 = x5 + x8;
-        const double x17 = ((double)e_0)*x7;
-        const double x18 = 2.0*((double)e_1)*((double)e_2)*x2 - x17;
-        const float x19 = (e_1*e_1);
-        const double x20 = ((double)a_0)*x16 + ((double)a_1)*(((double)x14)*(1.0 - ((double)x19)) + ((double)x19)) + ((double)a_2)*x18 - ((double)a_prime_1);
-        const double x21 = x11 - ((double)x12);
-        const float x22 = e_1*x10 + x17;
-        const double x23 = (((double)e_2)*((double)e_2));
-        const double x24 = ((double)a_0)*x21 + ((double)a_1)*((double)x22) + ((double)a_2)*(((double)x14)*(1.0 - x23) + x23) - ((double)a_prime_2);
-        const double x25 = (0.25)/x2;
-        out_p0[0] = x25*(x15*x2*(2.0f*x3 - 2.0f) + x16*x20 + x21*x24);
-        out_p0[1] = x25*(x15*x9 + x2*x20*(2.0f*x19 - 2.0f) + x22*x24);
-        out_p0[2] = x25*(x13*x15 + x18*x20 + x2*x24*(2.0f*x23 - 2.0f));
-        singular |= (x1) == 0.0;
-        const double finite = ((x25 - x25) + (x2 - x2));
+        const double x0 = ((double)a_1) + ((double)a_prime_1);
+        const double x1 = ((double)a_0) + ((double)a_prime_0);
+        const float x2 = (0.5f)*e_0*x0 - 0.5f*e_1*x1;
+        const double x3 = ((double)a_2) + ((double)a_prime_2);
+        const float x4 = -e_0*x3 + e_2*x1;
+        const float x5 = (0.5f)*e_2;
+        const double x6 = -((double)a_2) + ((double)a_prime_2);
+        const double x7 = -((double)a_1) + ((double)a_prime_1);
+        const double x9 = trig_0;
+        const double x10 = (0.5)*trig_1/x9;
+        const float x11 = rigidsym_sumprod4(e_0, e_0, e_1, e_1, e_2, e_2, -1.0f, 1.0f);
+        const float x12 = (x9*x9);
+        const float x13 = x11*x12;
+        const float x14 = (e_0*e_0) + (e_1*e_1) + (e_2*e_2);
+        const float x15 = a_0*e_0 + a_1*e_1 + a_2*e_2;
+        const double x16 = ((double)e_1)*x3 - ((double)e_2)*x0;
+        const float x17 = -a_0 + a_prime_0;
+        out_p0[0] = -((double)e_1)*((double)x2) + x10*(((double)e_1)*x6 - ((double)e_2)*x7) + ((double)x11)*(((double)a_0)*((double)x13) + (0.5)*((double)a_0) - 0.5*((double)a_prime_0) + ((double)x12)*(-((double)a_0)*((double)x14) + ((double)e_0)*((double)x15))) + ((double)x4)*((double)x5);
+        out_p0[1] = ((double)e_0)*((double)x2) + x10*(-((double)e_0)*x6 + ((double)e_2)*((double)x17)) + ((double)x11)*(((double)a_1)*((double)x13) + (0.5)*((double)a_1) - 0.5*((double)a_prime_1) + ((double)x12)*(-((double)a_1)*((double)x14) + ((double)e_1)*((double)x15))) - x16*((double)x5);
+        out_p0[2] = -0.5f*e_0*x4 + (0.5f)*e_1*x16 + x10*(e_0*x7 - e_1*x17) + x11*(a_2*x13 + (0.5f)*a_2 - 0.5f*a_prime_2 + x12*(-a_2*x14 + e_2*x15));
+        singular |= (x9) == 0.0;
+        const double finite = ((x10 - x10) + (x9 - x9));
         singular |= finite != finite;
     }
     return singular;

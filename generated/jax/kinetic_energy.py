@@ -74,8 +74,11 @@ COLUMNS = ("I_C_00", "I_C_01", "I_C_02", "I_C_10", "I_C_11", "I_C_12", "I_C_20",
 
 def _main(I_C_00, I_C_01, I_C_02, I_C_10, I_C_11, I_C_12, I_C_20, I_C_21, I_C_22, m, omega_0, omega_1, omega_2, c_dot_0, c_dot_1, c_dot_2):
     x0 = (0.5)*m
+    xc0 = _sumprod(I_C_00, omega_0, I_C_10, omega_1, I_C_20, omega_2)
+    xc1 = _sumprod(I_C_01, omega_0, I_C_11, omega_1, I_C_21, omega_2)
+    xc2 = _sumprod(I_C_02, omega_0, I_C_12, omega_1, I_C_22, omega_2)
     return (
-        (c_dot_0*c_dot_0)*x0 + (c_dot_1*c_dot_1)*x0 + (c_dot_2*c_dot_2)*x0 + (0.5)*omega_0*_sumprod(I_C_00, omega_0, I_C_10, omega_1, I_C_20, omega_2) + (0.5)*omega_1*_sumprod(I_C_01, omega_0, I_C_11, omega_1, I_C_21, omega_2) + (0.5)*omega_2*_sumprod(I_C_02, omega_0, I_C_12, omega_1, I_C_22, omega_2),
+        (c_dot_0*c_dot_0)*x0 + (c_dot_1*c_dot_1)*x0 + (c_dot_2*c_dot_2)*x0 + (0.5)*omega_0*xc0 + (0.5)*omega_1*xc1 + (0.5)*omega_2*xc2,
     ), (
     )
 
@@ -100,6 +103,9 @@ def _vjp(I_C_00, I_C_01, I_C_02, I_C_10, I_C_11, I_C_12, I_C_20, I_C_21, I_C_22,
     _c6 = (0.5)*omega_1
     _c7 = (0.5)*omega_2
     _c8 = 2.0*_g0*x0
+    xc0 = _sumprod(I_C_00, omega_0, I_C_10, omega_1, I_C_20, omega_2)
+    xc1 = _sumprod(I_C_01, omega_0, I_C_11, omega_1, I_C_21, omega_2)
+    xc2 = _sumprod(I_C_02, omega_0, I_C_12, omega_1, I_C_22, omega_2)
     return (
         _c0*(omega_0*omega_0),
         _c2,
@@ -111,9 +117,9 @@ def _vjp(I_C_00, I_C_01, I_C_02, I_C_10, I_C_11, I_C_12, I_C_20, I_C_21, I_C_22,
         _c4,
         _c0*(omega_2*omega_2),
         (0.5)*_b0,
-        _g0*(I_C_00*_c5 + I_C_01*_c6 + I_C_02*_c7 + (0.5)*_sumprod(I_C_00, omega_0, I_C_10, omega_1, I_C_20, omega_2)),
-        _g0*(I_C_10*_c5 + I_C_11*_c6 + I_C_12*_c7 + (0.5)*_sumprod(I_C_01, omega_0, I_C_11, omega_1, I_C_21, omega_2)),
-        _g0*(I_C_20*_c5 + I_C_21*_c6 + I_C_22*_c7 + (0.5)*_sumprod(I_C_02, omega_0, I_C_12, omega_1, I_C_22, omega_2)),
+        _g0*(I_C_00*_c5 + I_C_01*_c6 + I_C_02*_c7 + (0.5)*xc0),
+        _g0*(I_C_10*_c5 + I_C_11*_c6 + I_C_12*_c7 + (0.5)*xc1),
+        _g0*(I_C_20*_c5 + I_C_21*_c6 + I_C_22*_c7 + (0.5)*xc2),
         _c8*c_dot_0,
         _c8*c_dot_1,
         _c8*c_dot_2,
@@ -132,8 +138,11 @@ def _jvp(I_C_00, I_C_01, I_C_02, I_C_10, I_C_11, I_C_12, I_C_20, I_C_21, I_C_22,
     _e4 = (0.5)*omega_1
     _e5 = _e4*omega_2
     _e6 = (0.5)*omega_2
+    xc0 = _sumprod(I_C_00, omega_0, I_C_10, omega_1, I_C_20, omega_2)
+    xc1 = _sumprod(I_C_01, omega_0, I_C_11, omega_1, I_C_21, omega_2)
+    xc2 = _sumprod(I_C_02, omega_0, I_C_12, omega_1, I_C_22, omega_2)
     return (
-        _d0*((c_dot_0*c_dot_0) + (c_dot_1*c_dot_1) + (c_dot_2*c_dot_2)) + _e1*_t1 + _e1*_t3 + _e2*_t13*c_dot_0 + _e2*_t14*c_dot_1 + _e2*_t15*c_dot_2 + _e3*_t2 + _e3*_t6 + _e5*_t5 + _e5*_t7 + (0.5)*_t0*(omega_0*omega_0) + _t10*(I_C_00*_e0 + I_C_01*_e4 + I_C_02*_e6 + (0.5)*_sumprod(I_C_00, omega_0, I_C_10, omega_1, I_C_20, omega_2)) + _t11*(I_C_10*_e0 + I_C_11*_e4 + I_C_12*_e6 + (0.5)*_sumprod(I_C_01, omega_0, I_C_11, omega_1, I_C_21, omega_2)) + _t12*(I_C_20*_e0 + I_C_21*_e4 + I_C_22*_e6 + (0.5)*_sumprod(I_C_02, omega_0, I_C_12, omega_1, I_C_22, omega_2)) + (0.5)*_t4*(omega_1*omega_1) + (0.5)*_t8*(omega_2*omega_2),
+        _d0*((c_dot_0*c_dot_0) + (c_dot_1*c_dot_1) + (c_dot_2*c_dot_2)) + _e1*_t1 + _e1*_t3 + _e2*_t13*c_dot_0 + _e2*_t14*c_dot_1 + _e2*_t15*c_dot_2 + _e3*_t2 + _e3*_t6 + _e5*_t5 + _e5*_t7 + (0.5)*_t0*(omega_0*omega_0) + _t10*(I_C_00*_e0 + I_C_01*_e4 + I_C_02*_e6 + (0.5)*xc0) + _t11*(I_C_10*_e0 + I_C_11*_e4 + I_C_12*_e6 + (0.5)*xc1) + _t12*(I_C_20*_e0 + I_C_21*_e4 + I_C_22*_e6 + (0.5)*xc2) + (0.5)*_t4*(omega_1*omega_1) + (0.5)*_t8*(omega_2*omega_2),
     )
 
 

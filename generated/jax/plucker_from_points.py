@@ -79,13 +79,16 @@ def _main(p1_0, p1_1, p1_2, p2_0, p2_1, p2_2):
     x2 = -p1_2 + p2_2
     x3 = (x0*x0) + (x1*x1) + (x2*x2)
     x4 = 1.0/jax.numpy.sqrt(x3)
+    xc0 = _diffprod(p1_1, p2_2, p1_2, p2_1)
+    xc1 = _diffprod(-p1_0, p2_2, -p1_2, p2_0)
+    xc2 = _diffprod(p1_0, p2_1, p1_1, p2_0)
     return (
         x0*x4,
         x1*x4,
         x2*x4,
-        x4*_diffprod(p1_1, p2_2, p1_2, p2_1),
-        x4*_diffprod(-p1_0, p2_2, -p1_2, p2_0),
-        x4*_diffprod(p1_0, p2_1, p1_1, p2_0),
+        x4*xc0,
+        x4*xc1,
+        x4*xc2,
     ), (
         x3,
     )
@@ -105,7 +108,10 @@ def _vjp(p1_0, p1_1, p1_2, p2_0, p2_1, p2_2, _g0, _g1, _g2, _g3, _g4, _g5):
     x2 = -p1_2 + p2_2
     x3 = (x0*x0) + (x1*x1) + (x2*x2)
     x4 = 1.0/jax.numpy.sqrt(x3)
-    _b0 = _g0*x0 + _g1*x1 + _g2*x2 + _g3*_diffprod(p1_1, p2_2, p1_2, p2_1) + _g4*_diffprod(-p1_0, p2_2, -p1_2, p2_0) + _g5*_diffprod(p1_0, p2_1, p1_1, p2_0)
+    xc0 = _diffprod(p1_1, p2_2, p1_2, p2_1)
+    xc1 = _diffprod(-p1_0, p2_2, -p1_2, p2_0)
+    xc2 = _diffprod(p1_0, p2_1, p1_1, p2_0)
+    _b0 = _g0*x0 + _g1*x1 + _g2*x2 + _g3*xc0 + _g4*xc1 + _g5*xc2
     _b1 = -0.5*_b0/(x3*jax.numpy.sqrt(x3))
     _c0 = 2.0*_b1
     _b2 = _c0*x2 + _g2*x4
@@ -141,13 +147,16 @@ def _jvp(p1_0, p1_1, p1_2, p2_0, p2_1, p2_2, _t0, _t1, _t2, _t3, _t4, _t5):
     _e1 = _t5*x4
     _e2 = _t2*x4
     _e3 = p1_2*x4
+    xc0 = _diffprod(p1_1, p2_2, p1_2, p2_1)
+    xc1 = _diffprod(-p1_0, p2_2, -p1_2, p2_0)
+    xc2 = _diffprod(p1_0, p2_1, p1_1, p2_0)
     return (
         _d0*x4 + _d4*x0,
         _d1*x4 + _d4*x1,
         _d2*x4 + _d4*x2,
-        _d4*_diffprod(p1_1, p2_2, p1_2, p2_1) + _e0*_t1 + _e1*p1_1 - _e2*p2_1 - _e3*_t4,
-        _d4*_diffprod(-p1_0, p2_2, -p1_2, p2_0) - _e0*_t0 - _e1*p1_0 + _e2*p2_0 + _e3*_t3,
-        _d4*_diffprod(p1_0, p2_1, p1_1, p2_0) + _t0*p2_1*x4 - _t1*p2_0*x4 - _t3*p1_1*x4 + _t4*p1_0*x4,
+        _d4*xc0 + _e0*_t1 + _e1*p1_1 - _e2*p2_1 - _e3*_t4,
+        _d4*xc1 - _e0*_t0 - _e1*p1_0 + _e2*p2_0 + _e3*_t3,
+        _d4*xc2 + _t0*p2_1*x4 - _t1*p2_0*x4 - _t3*p1_1*x4 + _t4*p1_0*x4,
     )
 
 

@@ -84,11 +84,12 @@ def _main(w_A_0, w_A_1, w_A_2, w_A_3, w_A_4, w_A_5, a_0, a_1, a_2):
     x8 = 1.0/jax.numpy.sqrt(x0)
     x9 = 1.0/(x0*jax.numpy.sqrt(x0))
     x10 = x7*x9
+    xc0 = _sumprod(w_A_0, w_A_3, w_A_1, w_A_4, w_A_2, w_A_5)
     return (
         x1*x4,
         x1*x6,
         x1*x7,
-        x1*_sumprod(w_A_0, w_A_3, w_A_1, w_A_4, w_A_2, w_A_5),
+        x1*xc0,
         w_A_3*x8,
         w_A_4*x8,
         w_A_5*x8,
@@ -132,7 +133,8 @@ def _vjp(w_A_0, w_A_1, w_A_2, w_A_3, w_A_4, w_A_5, a_0, a_1, a_2, _g0, _g1, _g2,
     _b6 = -_c1*x9 + _c2*w_A_4 + _g0*x1
     _b7 = _b3*w_A_3 - _b6*w_A_5
     _b8 = -_b4*w_A_3 + _b6*w_A_4
-    _b9 = _g0*x4 + _g1*x6 + _g2*x7 + _g3*_sumprod(w_A_0, w_A_3, w_A_1, w_A_4, w_A_2, w_A_5)
+    xc0 = _sumprod(w_A_0, w_A_3, w_A_1, w_A_4, w_A_2, w_A_5)
+    _b9 = _g0*x4 + _g1*x6 + _g2*x7 + _g3*xc0
     _b10 = -1.5*_b1/((x0*x0)*jax.numpy.sqrt(x0)) - 0.5*_b2*x9 - _b9/(x0*x0)
     _c3 = _g3*x1
     _c4 = 2.0*_b10
@@ -177,11 +179,12 @@ def _jvp(w_A_0, w_A_1, w_A_2, w_A_3, w_A_4, w_A_5, a_0, a_1, a_2, _t0, _t1, _t2,
     _e0 = w_A_5*x9
     _e1 = _d9*w_A_5
     _e2 = _t5*x9
+    xc0 = _sumprod(w_A_0, w_A_3, w_A_1, w_A_4, w_A_2, w_A_5)
     return (
         _d1*x4 + _d4*x1,
         _d1*x6 + _d6*x1,
         _d1*x7 + _d7*x1,
-        _d1*_sumprod(w_A_0, w_A_3, w_A_1, w_A_4, w_A_2, w_A_5) + _t0*w_A_3*x1 + _t1*w_A_4*x1 + _t2*w_A_5*x1 + _t3*w_A_0*x1 + _t4*w_A_1*x1 + _t5*w_A_2*x1,
+        _d1*xc0 + _t0*w_A_3*x1 + _t1*w_A_4*x1 + _t2*w_A_5*x1 + _t3*w_A_0*x1 + _t4*w_A_1*x1 + _t5*w_A_2*x1,
         _d8*w_A_3 + _t3*x8,
         _d8*w_A_4 + _t4*x8,
         _d8*w_A_5 + _t5*x8,

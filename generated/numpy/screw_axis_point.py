@@ -5,15 +5,15 @@
 # template: numpy_kernel.py.j2
 # math hash: sha256:e89a638961851614
 # sympy 1.14.0, rigidsym 0.2.0
-# operations: 89
-# accuracy rewrite (main): cos phi as 1 - 2 s^2 or 2 c^2 - 1: the bare cos phi left by the
-#     half-angle rewrite, as 1 - 2 s^2 or 2 c^2 - 1 (s, c: sin, cos of phi/2) rather than 1 -
-#     2 s^2: the form of the measured least error among 1 - 2 s^2, 1 - 2 s^2 or 2 c^2 - 1, (c
-#     - s) (c + s) (rigidsym.codegen.cos_form); worst ratio to the rule max(2 e_best, 4 u)
+# operations: 99
+# accuracy rewrite (main): the axis point from the axis: (Q - 1)^T (Q a - a') with Q from (e,
+#     phi) rounds Q's entries and sums over them; cot(phi/2)/2 e x (a' - a) - e x (e x (a +
+#     a'))/2 (plus exact terms in e.e - 1, compensated, for a unit vector a few ulps off)
+#     reads the axis and the angle from the inputs; worst ratio to the rule max(2 e_best, 4 u)
 #     (e_best: the most accurate of the textbook formula and the forms tried, per point;
-#     rigidsym.codegen.rule) at 348 points of the regimes (rigidsym.codegen.regimes, exact,
-#     rounded to float64) 1.9 -> 0.89, never worse than the textbook formula by that rule;
-#     equal to the declared formula by the zero test (exact-cancel)
+#     rigidsym.codegen.rule) at 55 points of the regimes (rigidsym.codegen.regimes, exact,
+#     rounded to float64) a singular flag -> 0.89, never worse than the textbook formula by
+#     that rule; equal to the declared formula by the zero test (exact-cancel)
 """Point of the screw axis closest to the origin.
 
 p0 = (Q - 1)^T (Q a - a') / (2 (1 - cos phi)), Q from (e, phi) by (2.49)
@@ -27,48 +27,80 @@ the ``(n,)`` uint8 array of flags: 0 fine, ``SINGULAR`` (a denominator is exactl
 
 import numpy
 
-OPS = 89
+
+def _split(x, k):
+    # Veltkamp: x = hi + lo exactly, hi of at most p - ceil(p/2) bits
+    t = k * x
+    hi = t - (t - x)
+    return hi, x - hi
+
+
+def _two_prod(a, b, k):
+    # Dekker: a b = p + e exactly (barring underflow)
+    p = a * b
+    ah, al = _split(a, k)
+    bh, bl = _split(b, k)
+    return p, ((ah * bh - p) + ah * bl + al * bh) + al * bl
+
+
+def _diffprod(a, b, c, d):
+    """a b - c d compensated (Kahan's algorithm, its fma emulated; rigidsym.codegen.compensated)."""
+    k = 2.0 ** ((numpy.finfo(a.dtype).nmant + 2) // 2) + 1.0 if isinstance(a, numpy.ndarray) and a.dtype.kind == 'f' else 134217729.0
+    p, q = _two_prod(a, b, k)
+    w, r = _two_prod(c, d, k)
+    s = p - w
+    bb = s - p
+    t = (p - (s - bb)) + (-w - bb)     # p - w = s + t exactly (Knuth's TwoSum)
+    return (s + (t + q)) - r
+
+
+def _sumprod(*args):
+    """a1 b1 + ... + an bn compensated (Dot2 of Ogita, Rump and Oishi)."""
+    a = args[0]
+    k = 2.0 ** ((numpy.finfo(a.dtype).nmant + 2) // 2) + 1.0 if isinstance(a, numpy.ndarray) and a.dtype.kind == 'f' else 134217729.0
+    p, s = _two_prod(args[0], args[1], k)
+    for i in range(2, len(args), 2):
+        h, r = _two_prod(args[i], args[i + 1], k)
+        t = p + h
+        z = t - p
+        s = s + (((p - (t - z)) + (h - z)) + r)     # Knuth's TwoSum error, then the product's
+        p = t
+    return p + s
+
+OPS = 99
 MATH_HASH = "e89a638961851614"
 #: sample flags returned by the batch function
 SINGULAR, NONFINITE = 1, 2
 
 
 def _main(e_0, e_1, e_2, phi, a_0, a_1, a_2, a_prime_0, a_prime_1, a_prime_2):
-    x0 = (0.5)*phi
-    x1 = numpy.sin(x0)
-    x2 = (x1*x1)
-    x3 = (e_0*e_0)
-    x4 = 2*x2
-    x5 = e_0*e_1*x4
-    x6 = numpy.cos(x0)
-    x7 = 2*x1*x6
-    x8 = e_2*x7
-    x9 = x5 - x8
-    x10 = e_2*x4
-    x11 = e_0*x10
-    x12 = e_1*x7
-    x13 = x11 + x12
-    x14 = numpy.where(numpy.less(x2, 0.5), 1 - x4, 2*(x6*x6) - 1)
-    x15 = a_0*(x14*(1 - x3) + x3) + a_1*x9 + a_2*x13 - a_prime_0
-    x16 = x5 + x8
-    x17 = e_0*x7
-    x18 = 2*e_1*e_2*x2 - x17
-    x19 = (e_1*e_1)
-    x20 = a_0*x16 + a_1*(x14*(1 - x19) + x19) + a_2*x18 - a_prime_1
-    x21 = x11 - x12
-    x22 = e_1*x10 + x17
-    x23 = (e_2*e_2)
-    x24 = a_0*x21 + a_1*x22 + a_2*(x14*(1 - x23) + x23) - a_prime_2
-    x25 = (0.25)/x2
+    x0 = a_1 + a_prime_1
+    x1 = a_0 + a_prime_0
+    x2 = (0.5)*e_0*x0 - 0.5*e_1*x1
+    x3 = a_2 + a_prime_2
+    x4 = -e_0*x3 + e_2*x1
+    x5 = (0.5)*e_2
+    x6 = -a_2 + a_prime_2
+    x7 = -a_1 + a_prime_1
+    x8 = (0.5)*phi
+    x9 = numpy.sin(x8)
+    x10 = (0.5)*numpy.cos(x8)/x9
+    x11 = _sumprod(e_0, e_0, e_1, e_1, e_2, e_2, -1, 1)
+    x12 = (x9*x9)
+    x13 = x11*x12
+    x14 = (e_0*e_0) + (e_1*e_1) + (e_2*e_2)
+    x15 = a_0*e_0 + a_1*e_1 + a_2*e_2
+    x16 = e_1*x3 - e_2*x0
+    x17 = -a_0 + a_prime_0
     return (
-        x25*(x15*x2*(2*x3 - 2) + x16*x20 + x21*x24),
-        x25*(x15*x9 + x2*x20*(2*x19 - 2) + x22*x24),
-        x25*(x13*x15 + x18*x20 + x2*x24*(2*x23 - 2)),
+        -e_1*x2 + x10*(e_1*x6 - e_2*x7) + x11*(a_0*x13 + (0.5)*a_0 - 0.5*a_prime_0 + x12*(-a_0*x14 + e_0*x15)) + x4*x5,
+        e_0*x2 + x10*(-e_0*x6 + e_2*x17) + x11*(a_1*x13 + (0.5)*a_1 - 0.5*a_prime_1 + x12*(-a_1*x14 + e_1*x15)) - x16*x5,
+        -0.5*e_0*x4 + (0.5)*e_1*x16 + x10*(e_0*x7 - e_1*x17) + x11*(a_2*x13 + (0.5)*a_2 - 0.5*a_prime_2 + x12*(-a_2*x14 + e_2*x15)),
     ), (
-        x1,
+        x9,
     ), (
-        x25,
-        x2,
+        x10,
+        x9,
     )
 
 

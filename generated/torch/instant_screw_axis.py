@@ -84,11 +84,12 @@ def _main(omega_0, omega_1, omega_2, a_0, a_1, a_2, a_dot_0, a_dot_1, a_dot_2):
     x8 = x1*x7
     x9 = x1*(omega_0*x3 - omega_1*x6)
     x10 = 1.0/torch.sqrt(x0)
+    xc0 = _sumprod(a_dot_0, omega_0, a_dot_1, omega_1, a_dot_2, omega_2)
     return (
         x5,
         x8,
         x9,
-        x1*_sumprod(a_dot_0, omega_0, a_dot_1, omega_1, a_dot_2, omega_2),
+        x1*xc0,
         omega_0*x10,
         omega_1*x10,
         omega_2*x10,
@@ -138,7 +139,8 @@ def _vjp(omega_0, omega_1, omega_2, a_0, a_1, a_2, a_dot_0, a_dot_1, a_dot_2, _g
     _b8 = -_b3*omega_0 + _b6*omega_1
     _c7 = _c1*x7
     _c8 = _c5*x4
-    _b9 = _b1*(omega_0*x3 - omega_1*x6) + _b2*x7 + _b5*x4 + _c7*omega_2 + _c8*omega_1 + _g3*_sumprod(a_dot_0, omega_0, a_dot_1, omega_1, a_dot_2, omega_2)
+    xc0 = _sumprod(a_dot_0, omega_0, a_dot_1, omega_1, a_dot_2, omega_2)
+    _b9 = _b1*(omega_0*x3 - omega_1*x6) + _b2*x7 + _b5*x4 + _c7*omega_2 + _c8*omega_1 + _g3*xc0
     _b10 = -0.5*_b0/(x0*torch.sqrt(x0)) - _b9/(x0*x0)
     _c9 = 2.0*_b10
     _c10 = _g3*x1
@@ -194,11 +196,12 @@ def _jvp(omega_0, omega_1, omega_2, a_0, a_1, a_2, a_dot_0, a_dot_1, a_dot_2, _t
     _e11 = _d9*x10
     _e12 = omega_2*x10
     _e13 = omega_1*x10
+    xc0 = _sumprod(a_dot_0, omega_0, a_dot_1, omega_1, a_dot_2, omega_2)
     return (
         _d5,
         _d8,
         _d9,
-        _d1*_sumprod(a_dot_0, omega_0, a_dot_1, omega_1, a_dot_2, omega_2) + _e4*_t6 + _e5*a_dot_0 + _e6*_t7 + _e7*a_dot_1 + _t2*a_dot_2*x1 + _t8*omega_2*x1,
+        _d1*xc0 + _e4*_t6 + _e5*a_dot_0 + _e6*_t7 + _e7*a_dot_1 + _t2*a_dot_2*x1 + _t8*omega_2*x1,
         _d10*omega_0 + _e8,
         _d10*omega_1 + _e9,
         _d10*omega_2 + _e10,
@@ -221,11 +224,12 @@ def _main_saved(omega_0, omega_1, omega_2, a_0, a_1, a_2, a_dot_0, a_dot_1, a_do
     x8 = x1*x7
     x9 = x1*(omega_0*x3 - omega_1*x6)
     x10 = 1.0/torch.sqrt(x0)
+    xc0 = _sumprod(a_dot_0, omega_0, a_dot_1, omega_1, a_dot_2, omega_2)
     return (
         x5,
         x8,
         x9,
-        x1*_sumprod(a_dot_0, omega_0, a_dot_1, omega_1, a_dot_2, omega_2),
+        x1*xc0,
         omega_0*x10,
         omega_1*x10,
         omega_2*x10,
@@ -234,11 +238,11 @@ def _main_saved(omega_0, omega_1, omega_2, a_0, a_1, a_2, a_dot_0, a_dot_1, a_do
         x10*(-omega_0*x8 + omega_1*x1*x4),
     ), (
         x0,
-    ), (x0, x1, x2, x3, x4, x5, x6, x7, x8, x9, x10, )
+    ), (x0, x1, x2, x3, x4, x5, x6, x7, x8, x9, x10, xc0, )
 
 
-def _vjp_saved(omega_0, omega_1, omega_2, a_0, a_1, a_2, a_dot_0, a_dot_1, a_dot_2, x0, x1, x2, x3, x4, x5, x6, x7, x8, x9, x10, _g0, _g1, _g2, _g3, _g4, _g5, _g6, _g7, _g8, _g9):
-    """``_vjp`` on the forward's saved temps (11 of them)."""
+def _vjp_saved(omega_0, omega_1, omega_2, a_0, a_1, a_2, a_dot_0, a_dot_1, a_dot_2, x0, x1, x2, x3, x4, x5, x6, x7, x8, x9, x10, xc0, _g0, _g1, _g2, _g3, _g4, _g5, _g6, _g7, _g8, _g9):
+    """``_vjp`` on the forward's saved temps (12 of them)."""
     _b0 = _g4*omega_0 + _g5*omega_1 + _g6*omega_2 + _g7*(-omega_1*x9 + omega_2*x1*x7) + _g8*(omega_0*x9 - omega_2*x5) + _g9*(-omega_0*x8 + omega_1*x1*x4)
     _c0 = omega_0*x10
     _c1 = _g7*x10
@@ -257,7 +261,7 @@ def _vjp_saved(omega_0, omega_1, omega_2, a_0, a_1, a_2, a_dot_0, a_dot_1, a_dot
     _b8 = -_b3*omega_0 + _b6*omega_1
     _c7 = _c1*x7
     _c8 = _c5*x4
-    _b9 = _b1*(omega_0*x3 - omega_1*x6) + _b2*x7 + _b5*x4 + _c7*omega_2 + _c8*omega_1 + _g3*_sumprod(a_dot_0, omega_0, a_dot_1, omega_1, a_dot_2, omega_2)
+    _b9 = _b1*(omega_0*x3 - omega_1*x6) + _b2*x7 + _b5*x4 + _c7*omega_2 + _c8*omega_1 + _g3*xc0
     _b10 = -0.5*_b0/(x0*torch.sqrt(x0)) - _b9/(x0*x0)
     _c9 = 2.0*_b10
     _c10 = _g3*x1

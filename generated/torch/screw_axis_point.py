@@ -5,15 +5,15 @@
 # template: array_kernel.py.j2
 # math hash: sha256:e89a638961851614
 # sympy 1.14.0, rigidsym 0.2.0
-# operations: 89
-# accuracy rewrite (main): cos phi as 1 - 2 s^2 or 2 c^2 - 1: the bare cos phi left by the
-#     half-angle rewrite, as 1 - 2 s^2 or 2 c^2 - 1 (s, c: sin, cos of phi/2) rather than 1 -
-#     2 s^2: the form of the measured least error among 1 - 2 s^2, 1 - 2 s^2 or 2 c^2 - 1, (c
-#     - s) (c + s) (rigidsym.codegen.cos_form); worst ratio to the rule max(2 e_best, 4 u)
+# operations: 99
+# accuracy rewrite (main): the axis point from the axis: (Q - 1)^T (Q a - a') with Q from (e,
+#     phi) rounds Q's entries and sums over them; cot(phi/2)/2 e x (a' - a) - e x (e x (a +
+#     a'))/2 (plus exact terms in e.e - 1, compensated, for a unit vector a few ulps off)
+#     reads the axis and the angle from the inputs; worst ratio to the rule max(2 e_best, 4 u)
 #     (e_best: the most accurate of the textbook formula and the forms tried, per point;
-#     rigidsym.codegen.rule) at 348 points of the regimes (rigidsym.codegen.regimes, exact,
-#     rounded to float64) 1.9 -> 0.89, never worse than the textbook formula by that rule;
-#     equal to the declared formula by the zero test (exact-cancel)
+#     rigidsym.codegen.rule) at 55 points of the regimes (rigidsym.codegen.regimes, exact,
+#     rounded to float64) a singular flag -> 0.89, never worse than the textbook formula by
+#     that rule; equal to the declared formula by the zero test (exact-cancel)
 """Point of the screw axis closest to the origin.
 
 p0 = (Q - 1)^T (Q a - a') / (2 (1 - cos phi)), Q from (e, phi) by (2.49)
@@ -27,44 +27,76 @@ the checked, differentiable API.
 
 import torch
 
-OPS = 89
+
+def _split(x, k):
+    # Veltkamp: x = hi + lo exactly, hi of at most p - ceil(p/2) bits
+    t = k * x
+    hi = t - (t - x)
+    return hi, x - hi
+
+
+def _two_prod(a, b, k):
+    # Dekker: a b = p + e exactly (barring underflow)
+    p = a * b
+    ah, al = _split(a, k)
+    bh, bl = _split(b, k)
+    return p, ((ah * bh - p) + ah * bl + al * bh) + al * bl
+
+
+def _diffprod(a, b, c, d):
+    """a b - c d compensated (Kahan's algorithm, its fma emulated; rigidsym.codegen.compensated)."""
+    k = 4097.0 if a.dtype == torch.float32 else 134217729.0
+    p, q = _two_prod(a, b, k)
+    w, r = _two_prod(c, d, k)
+    s = p - w
+    bb = s - p
+    t = (p - (s - bb)) + (-w - bb)     # p - w = s + t exactly (Knuth's TwoSum)
+    return (s + (t + q)) - r
+
+
+def _sumprod(*args):
+    """a1 b1 + ... + an bn compensated (Dot2 of Ogita, Rump and Oishi)."""
+    a = args[0]
+    k = 4097.0 if a.dtype == torch.float32 else 134217729.0
+    p, s = _two_prod(args[0], args[1], k)
+    for i in range(2, len(args), 2):
+        h, r = _two_prod(args[i], args[i + 1], k)
+        t = p + h
+        z = t - p
+        s = s + (((p - (t - z)) + (h - z)) + r)     # Knuth's TwoSum error, then the product's
+        p = t
+    return p + s
+
+OPS = 99
 MATH_HASH = "e89a638961851614"
 COLUMNS = ("e_0", "e_1", "e_2", "phi", "a_0", "a_1", "a_2", "a_prime_0", "a_prime_1", "a_prime_2", )
 
 
 def _main(e_0, e_1, e_2, phi, a_0, a_1, a_2, a_prime_0, a_prime_1, a_prime_2):
-    x0 = (0.5)*phi
-    x1 = torch.sin(x0)
-    x2 = (x1*x1)
-    x3 = (e_0*e_0)
-    x4 = 2.0*x2
-    x5 = e_0*e_1*x4
-    x6 = torch.cos(x0)
-    x7 = 2.0*x1*x6
-    x8 = e_2*x7
-    x9 = x5 - x8
-    x10 = e_2*x4
-    x11 = e_0*x10
-    x12 = e_1*x7
-    x13 = x11 + x12
-    x14 = torch.where(torch.lt(x2, 0.5), 1.0 - x4, 2.0*(x6*x6) - 1.0)
-    x15 = a_0*(x14*(1.0 - x3) + x3) + a_1*x9 + a_2*x13 - a_prime_0
-    x16 = x5 + x8
-    x17 = e_0*x7
-    x18 = 2.0*e_1*e_2*x2 - x17
-    x19 = (e_1*e_1)
-    x20 = a_0*x16 + a_1*(x14*(1.0 - x19) + x19) + a_2*x18 - a_prime_1
-    x21 = x11 - x12
-    x22 = e_1*x10 + x17
-    x23 = (e_2*e_2)
-    x24 = a_0*x21 + a_1*x22 + a_2*(x14*(1.0 - x23) + x23) - a_prime_2
-    x25 = (0.25)/x2
+    x0 = a_1 + a_prime_1
+    x1 = a_0 + a_prime_0
+    x2 = (0.5)*e_0*x0 - 0.5*e_1*x1
+    x3 = a_2 + a_prime_2
+    x4 = -e_0*x3 + e_2*x1
+    x5 = (0.5)*e_2
+    x6 = -a_2 + a_prime_2
+    x7 = -a_1 + a_prime_1
+    x8 = (0.5)*phi
+    x9 = torch.sin(x8)
+    x10 = (0.5)*torch.cos(x8)/x9
+    x11 = _sumprod(e_0, e_0, e_1, e_1, e_2, e_2, -1.0, 1.0)
+    x12 = (x9*x9)
+    x13 = x11*x12
+    x14 = (e_0*e_0) + (e_1*e_1) + (e_2*e_2)
+    x15 = a_0*e_0 + a_1*e_1 + a_2*e_2
+    x16 = e_1*x3 - e_2*x0
+    x17 = -a_0 + a_prime_0
     return (
-        x25*(x15*x2*(2.0*x3 - 2.0) + x16*x20 + x21*x24),
-        x25*(x15*x9 + x2*x20*(2.0*x19 - 2.0) + x22*x24),
-        x25*(x13*x15 + x18*x20 + x2*x24*(2.0*x23 - 2.0)),
+        -e_1*x2 + x10*(e_1*x6 - e_2*x7) + x11*(a_0*x13 + (0.5)*a_0 - 0.5*a_prime_0 + x12*(-a_0*x14 + e_0*x15)) + x4*x5,
+        e_0*x2 + x10*(-e_0*x6 + e_2*x17) + x11*(a_1*x13 + (0.5)*a_1 - 0.5*a_prime_1 + x12*(-a_1*x14 + e_1*x15)) - x16*x5,
+        -0.5*e_0*x4 + (0.5)*e_1*x16 + x10*(e_0*x7 - e_1*x17) + x11*(a_2*x13 + (0.5)*a_2 - 0.5*a_prime_2 + x12*(-a_2*x14 + e_2*x15)),
     ), (
-        x1,
+        x9,
     )
 
 
@@ -76,285 +108,231 @@ VARIANTS = (
 
 def _vjp(e_0, e_1, e_2, phi, a_0, a_1, a_2, a_prime_0, a_prime_1, a_prime_2, _g0, _g1, _g2):
     """The cotangents of the inputs (``COLUMNS``) from those of the outputs: reverse mode
-    over ``_main``, 255 operations."""
-    x0 = (0.5)*phi
-    x1 = torch.sin(x0)
-    x2 = (x1*x1)
-    x3 = (e_0*e_0)
-    x4 = 2.0*x2
-    x5 = e_0*e_1*x4
-    x6 = torch.cos(x0)
-    x7 = 2.0*x1*x6
-    x8 = e_2*x7
-    x9 = x5 - x8
-    x10 = e_2*x4
-    x11 = e_0*x10
-    x12 = e_1*x7
-    x13 = x11 + x12
-    x14 = torch.where(torch.lt(x2, 0.5), 1.0 - x4, 2.0*(x6*x6) - 1.0)
-    x15 = a_0*(x14*(1.0 - x3) + x3) + a_1*x9 + a_2*x13 - a_prime_0
-    x16 = x5 + x8
-    x17 = e_0*x7
-    x18 = 2.0*e_1*e_2*x2 - x17
-    x19 = (e_1*e_1)
-    x20 = a_0*x16 + a_1*(x14*(1.0 - x19) + x19) + a_2*x18 - a_prime_1
-    x21 = x11 - x12
-    x22 = e_1*x10 + x17
-    x23 = (e_2*e_2)
-    x24 = a_0*x21 + a_1*x22 + a_2*(x14*(1.0 - x23) + x23) - a_prime_2
-    x25 = (0.25)/x2
-    _c0 = 2.0*x3 - 2.0
-    _c1 = _c0*x2
-    _c2 = 2.0*x19 - 2.0
-    _c3 = _c2*x2
-    _c4 = 2.0*x23 - 2.0
-    _c5 = _c4*x2
-    _b0 = _g0*(_c1*x15 + x16*x20 + x21*x24) + _g1*(_c3*x20 + x15*x9 + x22*x24) + _g2*(_c5*x24 + x13*x15 + x18*x20)
-    _c6 = _g0*x25
-    _c7 = _g1*x25
-    _c8 = _g2*x25
-    _b1 = _c5*_c8 + _c6*x21 + _c7*x22
-    _c9 = _c8*x24
-    _c10 = 2.0*x2
-    _c11 = 1.0 - x14
-    _c12 = _b1*a_2
-    _b2 = _c10*_c9 + _c11*_c12
-    _b3 = _b1*a_1 + _c7*x24
-    _b4 = _b1*a_0 + _c6*x24
-    _b5 = _c3*_c7 + _c6*x16 + _c8*x18
-    _c13 = _c7*x20
-    _c14 = _b5*a_1
-    _b6 = _c10*_c13 + _c11*_c14
-    _b7 = _b5*a_2 + _c8*x20
-    _b8 = _b3 - _b7
-    _b9 = _b5*a_0 + _c6*x20
-    _b10 = _c1*_c6 + _c7*x9 + _c8*x13
-    _c15 = 1.0 - x23
-    _c16 = 1.0 - x3
-    _c17 = _b10*a_0
-    _c18 = 1.0 - x19
-    _b11 = _c12*_c15 + _c14*_c18 + _c16*_c17
-    _b12 = _b10*a_2 + _c8*x15
-    _b13 = _b12 - _b4
-    _b14 = _b12 + _b4
-    _b15 = _b14*e_0 + _b3*e_1
-    _b16 = _b10*a_1 + _c7*x15
-    _b17 = -_b16 + _b9
-    _b18 = _b13*e_1 + _b17*e_2 + _b8*e_0
-    _c19 = 2.0*_b18
-    _c20 = torch.lt(x2, 0.5)
-    _b19 = _b11*torch.where(_c20, 0.0, 4.0*x6) + _c19*x1
-    _b20 = _b16 + _b9
-    _c21 = _b20*e_1
-    _b21 = _b11*torch.where(_c20, -1.0, 0.0) + _b15*e_2 + _c21*e_0
-    _c22 = _c6*x15
-    _b22 = _c10*_c22 + _c11*_c17
-    _c23 = 2.0*e_1
-    _c24 = _b7*_c23
-    _b23 = -0.25*_b0/(x2*x2) + 2.0*_b21 + _c0*_c22 + _c13*_c2 + _c24*e_2 + _c4*_c9
-    _b24 = 2.0*_b23*x1 + _c19*x6
-    _b25 = -_b19*x1 + _b24*x6
-    _c25 = 2.0*e_2
+    over ``_main``, 252 operations."""
+    x0 = a_1 + a_prime_1
+    x1 = a_0 + a_prime_0
+    x2 = (0.5)*e_0*x0 - 0.5*e_1*x1
+    x3 = a_2 + a_prime_2
+    x4 = -e_0*x3 + e_2*x1
+    x5 = (0.5)*e_2
+    x6 = -a_2 + a_prime_2
+    x7 = -a_1 + a_prime_1
+    x8 = (0.5)*phi
+    x9 = torch.sin(x8)
+    x10 = (0.5)*torch.cos(x8)/x9
+    x11 = _sumprod(e_0, e_0, e_1, e_1, e_2, e_2, -1.0, 1.0)
+    x12 = (x9*x9)
+    x13 = x11*x12
+    x14 = (e_0*e_0) + (e_1*e_1) + (e_2*e_2)
+    x15 = a_0*e_0 + a_1*e_1 + a_2*e_2
+    x16 = e_1*x3 - e_2*x0
+    x17 = -a_0 + a_prime_0
+    _c0 = e_2*x10
+    _b0 = _c0*_g1 - _g2*e_1*x10
+    _b1 = -_g1*x5 + (0.5)*_g2*e_1
+    _c1 = _g0*x11
+    _c2 = _c1*x12
+    _c3 = _g1*x11
+    _c4 = _c3*x12
+    _c5 = _g2*x11
+    _c6 = _c5*x12
+    _b2 = _c2*e_0 + _c4*e_1 + _c6*e_2
+    _c7 = _c1*a_0
+    _c8 = _c3*a_1
+    _c9 = _c5*a_2
+    _b3 = -_c7*x12 - _c8*x12 - _c9*x12
+    _b4 = _c7 + _c8 + _c9
+    _c10 = -a_0*x14 + e_0*x15
+    _c11 = -a_1*x14 + e_1*x15
+    _c12 = -a_2*x14 + e_2*x15
+    _b5 = _b4*x11 + _c1*_c10 + _c11*_c3 + _c12*_c5
+    _b6 = _b4*x12 + _g0*(_c10*x12 + a_0*x13 + (0.5)*a_0 - 0.5*a_prime_0) + _g1*(_c11*x12 + a_1*x13 + (0.5)*a_1 - 0.5*a_prime_1) + _g2*(_c12*x12 + a_2*x13 + (0.5)*a_2 - 0.5*a_prime_2)
+    _b7 = _g0*(e_1*x6 - e_2*x7) + _g1*(-e_0*x6 + e_2*x17) + _g2*(e_0*x7 - e_1*x17)
+    _c13 = torch.cos(x8)
+    _c14 = (0.5)*_b7
+    _b8 = 2.0*_b5*x9 - _c13*_c14/(x9*x9)
+    _b9 = _b8*_c13 - _c14
+    _b10 = -_c0*_g0 + _g2*e_0*x10
+    _c15 = _g0*e_1
+    _b11 = _c15*x10 - _g1*e_0*x10
+    _b12 = _g0*x4 - _g1*x16
+    _b13 = _g0*x5 - 0.5*_g2*e_0
+    _b14 = _b1*e_1 - _b13*e_0
+    _b15 = -_c15 + _g1*e_0
+    _c16 = (0.5)*_b15
+    _b16 = _b13*e_2 - _c16*e_1
+    _b17 = -_b1*e_2 + (0.5)*_b15*e_0
+    _c17 = 2.0*e_0
+    _c18 = x10*x6 - x2
+    _c19 = x10*x7
+    _c20 = 2.0*e_1
+    _c21 = x10*x17
+    _c22 = 2.0*e_2
+    _c23 = -x12*x14 + x13 + 0.5
     return (
-        _b14*x10 + 2.0*_b22*e_0 + _b8*x7 + _c21*x4,
-        _b13*x7 + _b20*e_0*x4 + _b3*x10 + _b6*_c23 + _b7*_c25*x2,
-        _b15*x4 + _b17*x7 + _b2*_c25 + _c24*x2,
-        (0.5)*_b25,
-        _b1*x21 + _b10*(_c16*x14 + x3) + _b5*x16,
-        _b1*x22 + _b10*x9 + _b5*(_c18*x14 + x19),
-        _b1*(_c15*x14 + x23) + _b10*x13 + _b5*x18,
-        -_b10,
-        -_b5,
-        -_b1,
+        -_b13*x3 + _b2*a_0 + _b3*_c17 + _b6*_c17 + _c16*x0 - _c18*_g1 + _c2*x15 + _g2*(_c19 - 0.5*x4),
+        _b1*x3 + _b2*a_1 + _b3*_c20 + _b6*_c20 - _c16*x1 + _c18*_g0 + _c4*x15 + _g2*(-_c21 + (0.5)*x16),
+        -_b1*x0 + (0.5)*_b12 + _b13*x1 + _b2*a_2 + _b3*_c22 + _b6*_c22 - _c19*_g0 + _c21*_g1 + _c6*x15,
+        (0.5)*_b9,
+        -_b0 + _b16 + _b2*e_0 + _c1*_c23,
+        -_b10 + _b17 + _b2*e_1 + _c23*_c3,
+        -_b11 + _b14 + _b2*e_2 + _c23*_c5,
+        _b0 + _b16 - 0.5*_c1,
+        _b10 + _b17 - 0.5*_c3,
+        _b11 + _b14 - 0.5*_c5,
     )
 
 
 def _jvp(e_0, e_1, e_2, phi, a_0, a_1, a_2, a_prime_0, a_prime_1, a_prime_2, _t0, _t1, _t2, _t3, _t4, _t5, _t6, _t7, _t8, _t9):
     """The tangents of the outputs from those of the inputs, linear in the tangents:
-    forward mode over ``_main``, 273 operations."""
-    x0 = (0.5)*phi
-    _d0 = (0.5)*_t3
-    x1 = torch.sin(x0)
-    _d1 = _d0*torch.cos(x0)
-    x2 = (x1*x1)
-    _e0 = 2.0*_d1
-    _d2 = _e0*x1
-    x3 = (e_0*e_0)
-    _d3 = 2.0*_t0*e_0
-    x4 = 2.0*x2
-    _e1 = 2.0*_d2
-    _d4 = _e1
-    x5 = e_0*e_1*x4
-    _d5 = _d4*e_0*e_1 + _t0*e_1*x4 + _t1*e_0*x4
-    x6 = torch.cos(x0)
-    _d6 = -_d0*x1
-    x7 = 2.0*x1*x6
-    _d7 = 2.0*_d6*x1 + _e0*x6
-    x8 = e_2*x7
-    _d8 = _d7*e_2 + _t2*x7
-    x9 = x5 - x8
-    _d9 = _d5 - _d8
-    x10 = e_2*x4
-    _d10 = _d4*e_2 + _t2*x4
-    x11 = e_0*x10
-    _d11 = _d10*e_0 + _t0*x10
-    x12 = e_1*x7
-    _d12 = _d7*e_1 + _t1*x7
-    x13 = x11 + x12
-    _d13 = _d11 + _d12
-    x14 = torch.where(torch.lt(x2, 0.5), 1.0 - x4, 2.0*(x6*x6) - 1.0)
-    _e2 = torch.lt(x2, 0.5)
-    _d14 = _d4*torch.where(_e2, -1.0, 0.0) + _d6*torch.where(_e2, 0.0, 4.0*x6)
-    x15 = a_0*(x14*(1.0 - x3) + x3) + a_1*x9 + a_2*x13 - a_prime_0
-    _e3 = 1.0 - x3
-    _e4 = 1.0 - x14
-    _d15 = _d13*a_2 + _d14*_e3*a_0 + _d3*_e4*a_0 + _d9*a_1 + _t4*(_e3*x14 + x3) + _t5*x9 + _t6*x13 - _t7
-    x16 = x5 + x8
-    _d16 = _d5 + _d8
-    x17 = e_0*x7
-    _d17 = _d7*e_0 + _t0*x7
-    x18 = 2.0*e_1*e_2*x2 - x17
-    _e5 = 2.0*_t1
-    _e6 = 2.0*_t2
-    _d18 = -_d17 + _e1*e_1*e_2 + _e5*e_2*x2 + _e6*e_1*x2
-    x19 = (e_1*e_1)
-    _d19 = _e5*e_1
-    x20 = a_0*x16 + a_1*(x14*(1.0 - x19) + x19) + a_2*x18 - a_prime_1
-    _e7 = 1.0 - x19
-    _d20 = _d14*_e7*a_1 + _d16*a_0 + _d18*a_2 + _d19*_e4*a_1 + _t4*x16 + _t5*(_e7*x14 + x19) + _t6*x18 - _t8
-    x21 = x11 - x12
-    _d21 = _d11 - _d12
-    x22 = e_1*x10 + x17
-    _d22 = _d10*e_1 + _d17 + _t1*x10
-    x23 = (e_2*e_2)
-    _d23 = _e6*e_2
-    x24 = a_0*x21 + a_1*x22 + a_2*(x14*(1.0 - x23) + x23) - a_prime_2
-    _e8 = 1.0 - x23
-    _d24 = _d14*_e8*a_2 + _d21*a_0 + _d22*a_1 + _d23*_e4*a_2 + _t4*x21 + _t5*x22 + _t6*(_e8*x14 + x23) - _t9
-    x25 = (0.25)/x2
-    _d25 = -0.25*_d2/(x2*x2)
-    _e9 = x20*x25
-    _e10 = _d20*x25
-    _e11 = x24*x25
-    _e12 = _d24*x25
-    _e13 = x15*x25
-    _e14 = 2.0*x2
-    _e15 = 2.0*x3 - 2.0
-    _e16 = _e15*x2
-    _e17 = _d15*x25
-    _e18 = 2.0*x19 - 2.0
-    _e19 = _e18*x2
-    _e20 = 2.0*x23 - 2.0
-    _e21 = _e20*x2
+    forward mode over ``_main``, 256 operations."""
+    x0 = a_1 + a_prime_1
+    _d0 = _t5 + _t8
+    x1 = a_0 + a_prime_0
+    _d1 = _t4 + _t7
+    x2 = (0.5)*e_0*x0 - 0.5*e_1*x1
+    _e0 = (0.5)*e_0
+    _e1 = (0.5)*e_1
+    _d2 = _d0*_e0 - _d1*_e1 + (0.5)*_t0*x0 - 0.5*_t1*x1
+    x3 = a_2 + a_prime_2
+    _d3 = _t6 + _t9
+    x4 = -e_0*x3 + e_2*x1
+    _d4 = _d1*e_2 - _d3*e_0 - _t0*x3 + _t2*x1
+    x5 = (0.5)*e_2
+    _d5 = (0.5)*_t2
+    x6 = -a_2 + a_prime_2
+    _d6 = -_t6 + _t9
+    x7 = -a_1 + a_prime_1
+    _d7 = -_t5 + _t8
+    x8 = (0.5)*phi
+    _d8 = (0.5)*_t3
+    x9 = torch.sin(x8)
+    _e2 = torch.cos(x8)
+    _d9 = _d8*_e2
+    x10 = (0.5)*torch.cos(x8)/x9
+    _d10 = -0.5*_d8 - 0.5*_d9*_e2/(x9*x9)
+    x11 = _sumprod(e_0, e_0, e_1, e_1, e_2, e_2, -1.0, 1.0)
+    _e3 = 2.0*_t0*e_0 + 2.0*_t1*e_1 + 2.0*_t2*e_2
+    _d11 = _e3
+    x12 = (x9*x9)
+    _d12 = 2.0*_d9*x9
+    x13 = x11*x12
+    _e4 = _d12*x11
+    _d13 = _d11*x12 + _e4
+    x14 = (e_0*e_0) + (e_1*e_1) + (e_2*e_2)
+    _d14 = _e3
+    x15 = a_0*e_0 + a_1*e_1 + a_2*e_2
+    _d15 = _t0*a_0 + _t1*a_1 + _t2*a_2 + _t4*e_0 + _t5*e_1 + _t6*e_2
+    x16 = e_1*x3 - e_2*x0
+    _d16 = -_d0*e_2 + _d3*e_1 + _t1*x3 - _t2*x0
+    x17 = -a_0 + a_prime_0
+    _d17 = -_t4 + _t7
+    _e5 = (0.5)*x11
+    _e6 = _d13*x11
+    _e7 = _d6*x10
+    _e8 = e_2*x10
+    _e9 = x10*x7
+    _e10 = x11*x12
+    _e11 = _d15*_e10
+    _e12 = _e10*x15
+    _e13 = _d14*_e10
+    _e14 = x10*x6 - x2
+    _e15 = x11*(-x12*x14 + x13 + 0.5)
+    _e16 = -a_0*x14 + e_0*x15
+    _e17 = x10*x17
+    _e18 = -a_1*x14 + e_1*x15
+    _e19 = -a_2*x14 + e_2*x15
     return (
-        _d16*_e9 + _d2*_e13*_e15 + _d21*_e11 + _d25*(_e16*x15 + x16*x20 + x21*x24) + _d3*_e13*_e14 + _e10*x16 + _e12*x21 + _e16*_e17,
-        _d19*_e14*_e9 + _d2*_e18*_e9 + _d22*_e11 + _d25*(_e19*x20 + x15*x9 + x22*x24) + _d9*_e13 + _e10*_e19 + _e12*x22 + _e17*x9,
-        _d13*_e13 + _d18*_e9 + _d2*_e11*_e20 + _d23*_e11*_e14 + _d25*(_e21*x24 + x13*x15 + x18*x20) + _e10*x18 + _e12*_e21 + _e17*x13,
+        _d10*(e_1*x6 - e_2*x7) + _d11*(_e16*x12 + a_0*x13 + (0.5)*a_0 - 0.5*a_prime_0) - _d2*e_1 + _d4*x5 + _d5*x4 - _d7*_e8 + _e11*e_0 + _e12*_t0 - _e13*a_0 + _e14*_t1 + _e15*_t4 + _e16*_e4 - _e5*_t7 + _e6*a_0 + _e7*e_1 - _e9*_t2,
+        _d10*(-e_0*x6 + e_2*x17) + _d11*(_e18*x12 + a_1*x13 + (0.5)*a_1 - 0.5*a_prime_1) - _d16*x5 + _d17*_e8 + _d2*e_0 - _d5*x16 + _e11*e_1 + _e12*_t1 - _e13*a_1 - _e14*_t0 + _e15*_t5 + _e17*_t2 + _e18*_e4 - _e5*_t8 + _e6*a_1 - _e7*e_0,
+        _d10*(e_0*x7 - e_1*x17) + _d11*(_e19*x12 + a_2*x13 + (0.5)*a_2 - 0.5*a_prime_2) + _d16*_e1 - _d17*e_1*x10 - _d4*_e0 + _d7*e_0*x10 + _e11*e_2 + _e12*_t2 - _e13*a_2 + _e15*_t6 + _e19*_e4 - _e5*_t9 + _e6*a_2 + _t0*(_e9 - 0.5*x4) + _t1*(-_e17 + (0.5)*x16),
     )
 
 
 def _main_saved(e_0, e_1, e_2, phi, a_0, a_1, a_2, a_prime_0, a_prime_1, a_prime_2):
     """``_main``, and the temps ``_vjp`` would compute again: saved by autograd."""
-    x0 = (0.5)*phi
-    x1 = torch.sin(x0)
-    x2 = (x1*x1)
-    x3 = (e_0*e_0)
-    x4 = 2.0*x2
-    x5 = e_0*e_1*x4
-    x6 = torch.cos(x0)
-    x7 = 2.0*x1*x6
-    x8 = e_2*x7
-    x9 = x5 - x8
-    x10 = e_2*x4
-    x11 = e_0*x10
-    x12 = e_1*x7
-    x13 = x11 + x12
-    x14 = torch.where(torch.lt(x2, 0.5), 1.0 - x4, 2.0*(x6*x6) - 1.0)
-    x15 = a_0*(x14*(1.0 - x3) + x3) + a_1*x9 + a_2*x13 - a_prime_0
-    x16 = x5 + x8
-    x17 = e_0*x7
-    x18 = 2.0*e_1*e_2*x2 - x17
-    x19 = (e_1*e_1)
-    x20 = a_0*x16 + a_1*(x14*(1.0 - x19) + x19) + a_2*x18 - a_prime_1
-    x21 = x11 - x12
-    x22 = e_1*x10 + x17
-    x23 = (e_2*e_2)
-    x24 = a_0*x21 + a_1*x22 + a_2*(x14*(1.0 - x23) + x23) - a_prime_2
-    x25 = (0.25)/x2
+    x0 = a_1 + a_prime_1
+    x1 = a_0 + a_prime_0
+    x2 = (0.5)*e_0*x0 - 0.5*e_1*x1
+    x3 = a_2 + a_prime_2
+    x4 = -e_0*x3 + e_2*x1
+    x5 = (0.5)*e_2
+    x6 = -a_2 + a_prime_2
+    x7 = -a_1 + a_prime_1
+    x8 = (0.5)*phi
+    x9 = torch.sin(x8)
+    x10 = (0.5)*torch.cos(x8)/x9
+    x11 = _sumprod(e_0, e_0, e_1, e_1, e_2, e_2, -1.0, 1.0)
+    x12 = (x9*x9)
+    x13 = x11*x12
+    x14 = (e_0*e_0) + (e_1*e_1) + (e_2*e_2)
+    x15 = a_0*e_0 + a_1*e_1 + a_2*e_2
+    x16 = e_1*x3 - e_2*x0
+    x17 = -a_0 + a_prime_0
     return (
-        x25*(x15*x2*(2.0*x3 - 2.0) + x16*x20 + x21*x24),
-        x25*(x15*x9 + x2*x20*(2.0*x19 - 2.0) + x22*x24),
-        x25*(x13*x15 + x18*x20 + x2*x24*(2.0*x23 - 2.0)),
+        -e_1*x2 + x10*(e_1*x6 - e_2*x7) + x11*(a_0*x13 + (0.5)*a_0 - 0.5*a_prime_0 + x12*(-a_0*x14 + e_0*x15)) + x4*x5,
+        e_0*x2 + x10*(-e_0*x6 + e_2*x17) + x11*(a_1*x13 + (0.5)*a_1 - 0.5*a_prime_1 + x12*(-a_1*x14 + e_1*x15)) - x16*x5,
+        -0.5*e_0*x4 + (0.5)*e_1*x16 + x10*(e_0*x7 - e_1*x17) + x11*(a_2*x13 + (0.5)*a_2 - 0.5*a_prime_2 + x12*(-a_2*x14 + e_2*x15)),
     ), (
-        x1,
-    ), (x0, x1, x2, x3, x4, x5, x6, x7, x8, x9, x10, x11, x12, x13, x14, x15, x16, x17, x18, x19, x20, x21, x22, x23, x24, x25, )
+        x9,
+    ), (x0, x1, x2, x3, x4, x5, x6, x7, x8, x9, x10, x11, x12, x13, x14, x15, x16, x17, )
 
 
-def _vjp_saved(e_0, e_1, e_2, phi, a_0, a_1, a_2, a_prime_0, a_prime_1, a_prime_2, x0, x1, x2, x3, x4, x5, x6, x7, x8, x9, x10, x11, x12, x13, x14, x15, x16, x17, x18, x19, x20, x21, x22, x23, x24, x25, _g0, _g1, _g2):
-    """``_vjp`` on the forward's saved temps (26 of them)."""
-    _c0 = 2.0*x3 - 2.0
-    _c1 = _c0*x2
-    _c2 = 2.0*x19 - 2.0
-    _c3 = _c2*x2
-    _c4 = 2.0*x23 - 2.0
-    _c5 = _c4*x2
-    _b0 = _g0*(_c1*x15 + x16*x20 + x21*x24) + _g1*(_c3*x20 + x15*x9 + x22*x24) + _g2*(_c5*x24 + x13*x15 + x18*x20)
-    _c6 = _g0*x25
-    _c7 = _g1*x25
-    _c8 = _g2*x25
-    _b1 = _c5*_c8 + _c6*x21 + _c7*x22
-    _c9 = _c8*x24
-    _c10 = 2.0*x2
-    _c11 = 1.0 - x14
-    _c12 = _b1*a_2
-    _b2 = _c10*_c9 + _c11*_c12
-    _b3 = _b1*a_1 + _c7*x24
-    _b4 = _b1*a_0 + _c6*x24
-    _b5 = _c3*_c7 + _c6*x16 + _c8*x18
-    _c13 = _c7*x20
-    _c14 = _b5*a_1
-    _b6 = _c10*_c13 + _c11*_c14
-    _b7 = _b5*a_2 + _c8*x20
-    _b8 = _b3 - _b7
-    _b9 = _b5*a_0 + _c6*x20
-    _b10 = _c1*_c6 + _c7*x9 + _c8*x13
-    _c15 = 1.0 - x23
-    _c16 = 1.0 - x3
-    _c17 = _b10*a_0
-    _c18 = 1.0 - x19
-    _b11 = _c12*_c15 + _c14*_c18 + _c16*_c17
-    _b12 = _b10*a_2 + _c8*x15
-    _b13 = _b12 - _b4
-    _b14 = _b12 + _b4
-    _b15 = _b14*e_0 + _b3*e_1
-    _b16 = _b10*a_1 + _c7*x15
-    _b17 = -_b16 + _b9
-    _b18 = _b13*e_1 + _b17*e_2 + _b8*e_0
-    _c19 = 2.0*_b18
-    _c20 = torch.lt(x2, 0.5)
-    _b19 = _b11*torch.where(_c20, 0.0, 4.0*x6) + _c19*x1
-    _b20 = _b16 + _b9
-    _c21 = _b20*e_1
-    _b21 = _b11*torch.where(_c20, -1.0, 0.0) + _b15*e_2 + _c21*e_0
-    _c22 = _c6*x15
-    _b22 = _c10*_c22 + _c11*_c17
-    _c23 = 2.0*e_1
-    _c24 = _b7*_c23
-    _b23 = -0.25*_b0/(x2*x2) + 2.0*_b21 + _c0*_c22 + _c13*_c2 + _c24*e_2 + _c4*_c9
-    _b24 = 2.0*_b23*x1 + _c19*x6
-    _b25 = -_b19*x1 + _b24*x6
-    _c25 = 2.0*e_2
+def _vjp_saved(e_0, e_1, e_2, phi, a_0, a_1, a_2, a_prime_0, a_prime_1, a_prime_2, x0, x1, x2, x3, x4, x5, x6, x7, x8, x9, x10, x11, x12, x13, x14, x15, x16, x17, _g0, _g1, _g2):
+    """``_vjp`` on the forward's saved temps (18 of them)."""
+    _c0 = e_2*x10
+    _b0 = _c0*_g1 - _g2*e_1*x10
+    _b1 = -_g1*x5 + (0.5)*_g2*e_1
+    _c1 = _g0*x11
+    _c2 = _c1*x12
+    _c3 = _g1*x11
+    _c4 = _c3*x12
+    _c5 = _g2*x11
+    _c6 = _c5*x12
+    _b2 = _c2*e_0 + _c4*e_1 + _c6*e_2
+    _c7 = _c1*a_0
+    _c8 = _c3*a_1
+    _c9 = _c5*a_2
+    _b3 = -_c7*x12 - _c8*x12 - _c9*x12
+    _b4 = _c7 + _c8 + _c9
+    _c10 = -a_0*x14 + e_0*x15
+    _c11 = -a_1*x14 + e_1*x15
+    _c12 = -a_2*x14 + e_2*x15
+    _b5 = _b4*x11 + _c1*_c10 + _c11*_c3 + _c12*_c5
+    _b6 = _b4*x12 + _g0*(_c10*x12 + a_0*x13 + (0.5)*a_0 - 0.5*a_prime_0) + _g1*(_c11*x12 + a_1*x13 + (0.5)*a_1 - 0.5*a_prime_1) + _g2*(_c12*x12 + a_2*x13 + (0.5)*a_2 - 0.5*a_prime_2)
+    _b7 = _g0*(e_1*x6 - e_2*x7) + _g1*(-e_0*x6 + e_2*x17) + _g2*(e_0*x7 - e_1*x17)
+    _c13 = torch.cos(x8)
+    _c14 = (0.5)*_b7
+    _b8 = 2.0*_b5*x9 - _c13*_c14/(x9*x9)
+    _b9 = _b8*_c13 - _c14
+    _b10 = -_c0*_g0 + _g2*e_0*x10
+    _c15 = _g0*e_1
+    _b11 = _c15*x10 - _g1*e_0*x10
+    _b12 = _g0*x4 - _g1*x16
+    _b13 = _g0*x5 - 0.5*_g2*e_0
+    _b14 = _b1*e_1 - _b13*e_0
+    _b15 = -_c15 + _g1*e_0
+    _c16 = (0.5)*_b15
+    _b16 = _b13*e_2 - _c16*e_1
+    _b17 = -_b1*e_2 + (0.5)*_b15*e_0
+    _c17 = 2.0*e_0
+    _c18 = x10*x6 - x2
+    _c19 = x10*x7
+    _c20 = 2.0*e_1
+    _c21 = x10*x17
+    _c22 = 2.0*e_2
+    _c23 = -x12*x14 + x13 + 0.5
     return (
-        _b14*x10 + 2.0*_b22*e_0 + _b8*x7 + _c21*x4,
-        _b13*x7 + _b20*e_0*x4 + _b3*x10 + _b6*_c23 + _b7*_c25*x2,
-        _b15*x4 + _b17*x7 + _b2*_c25 + _c24*x2,
-        (0.5)*_b25,
-        _b1*x21 + _b10*(_c16*x14 + x3) + _b5*x16,
-        _b1*x22 + _b10*x9 + _b5*(_c18*x14 + x19),
-        _b1*(_c15*x14 + x23) + _b10*x13 + _b5*x18,
-        -_b10,
-        -_b5,
-        -_b1,
+        -_b13*x3 + _b2*a_0 + _b3*_c17 + _b6*_c17 + _c16*x0 - _c18*_g1 + _c2*x15 + _g2*(_c19 - 0.5*x4),
+        _b1*x3 + _b2*a_1 + _b3*_c20 + _b6*_c20 - _c16*x1 + _c18*_g0 + _c4*x15 + _g2*(-_c21 + (0.5)*x16),
+        -_b1*x0 + (0.5)*_b12 + _b13*x1 + _b2*a_2 + _b3*_c22 + _b6*_c22 - _c19*_g0 + _c21*_g1 + _c6*x15,
+        (0.5)*_b9,
+        -_b0 + _b16 + _b2*e_0 + _c1*_c23,
+        -_b10 + _b17 + _b2*e_1 + _c23*_c3,
+        -_b11 + _b14 + _b2*e_2 + _c23*_c5,
+        _b0 + _b16 - 0.5*_c1,
+        _b10 + _b17 - 0.5*_c3,
+        _b11 + _b14 - 0.5*_c5,
     )
 
 

@@ -84,11 +84,12 @@ def _main(w_A_0, w_A_1, w_A_2, w_A_3, w_A_4, w_A_5, a_0, a_1, a_2):
     x8 = 1.0/torch.sqrt(x0)
     x9 = 1.0/(x0*torch.sqrt(x0))
     x10 = x7*x9
+    xc0 = _sumprod(w_A_0, w_A_3, w_A_1, w_A_4, w_A_2, w_A_5)
     return (
         x1*x4,
         x1*x6,
         x1*x7,
-        x1*_sumprod(w_A_0, w_A_3, w_A_1, w_A_4, w_A_2, w_A_5),
+        x1*xc0,
         w_A_3*x8,
         w_A_4*x8,
         w_A_5*x8,
@@ -132,7 +133,8 @@ def _vjp(w_A_0, w_A_1, w_A_2, w_A_3, w_A_4, w_A_5, a_0, a_1, a_2, _g0, _g1, _g2,
     _b6 = -_c1*x9 + _c2*w_A_4 + _g0*x1
     _b7 = _b3*w_A_3 - _b6*w_A_5
     _b8 = -_b4*w_A_3 + _b6*w_A_4
-    _b9 = _g0*x4 + _g1*x6 + _g2*x7 + _g3*_sumprod(w_A_0, w_A_3, w_A_1, w_A_4, w_A_2, w_A_5)
+    xc0 = _sumprod(w_A_0, w_A_3, w_A_1, w_A_4, w_A_2, w_A_5)
+    _b9 = _g0*x4 + _g1*x6 + _g2*x7 + _g3*xc0
     _b10 = -1.5*_b1/((x0*x0)*torch.sqrt(x0)) - 0.5*_b2*x9 - _b9/(x0*x0)
     _c3 = _g3*x1
     _c4 = 2.0*_b10
@@ -177,11 +179,12 @@ def _jvp(w_A_0, w_A_1, w_A_2, w_A_3, w_A_4, w_A_5, a_0, a_1, a_2, _t0, _t1, _t2,
     _e0 = w_A_5*x9
     _e1 = _d9*w_A_5
     _e2 = _t5*x9
+    xc0 = _sumprod(w_A_0, w_A_3, w_A_1, w_A_4, w_A_2, w_A_5)
     return (
         _d1*x4 + _d4*x1,
         _d1*x6 + _d6*x1,
         _d1*x7 + _d7*x1,
-        _d1*_sumprod(w_A_0, w_A_3, w_A_1, w_A_4, w_A_2, w_A_5) + _t0*w_A_3*x1 + _t1*w_A_4*x1 + _t2*w_A_5*x1 + _t3*w_A_0*x1 + _t4*w_A_1*x1 + _t5*w_A_2*x1,
+        _d1*xc0 + _t0*w_A_3*x1 + _t1*w_A_4*x1 + _t2*w_A_5*x1 + _t3*w_A_0*x1 + _t4*w_A_1*x1 + _t5*w_A_2*x1,
         _d8*w_A_3 + _t3*x8,
         _d8*w_A_4 + _t4*x8,
         _d8*w_A_5 + _t5*x8,
@@ -204,11 +207,12 @@ def _main_saved(w_A_0, w_A_1, w_A_2, w_A_3, w_A_4, w_A_5, a_0, a_1, a_2):
     x8 = 1.0/torch.sqrt(x0)
     x9 = 1.0/(x0*torch.sqrt(x0))
     x10 = x7*x9
+    xc0 = _sumprod(w_A_0, w_A_3, w_A_1, w_A_4, w_A_2, w_A_5)
     return (
         x1*x4,
         x1*x6,
         x1*x7,
-        x1*_sumprod(w_A_0, w_A_3, w_A_1, w_A_4, w_A_2, w_A_5),
+        x1*xc0,
         w_A_3*x8,
         w_A_4*x8,
         w_A_5*x8,
@@ -217,11 +221,11 @@ def _main_saved(w_A_0, w_A_1, w_A_2, w_A_3, w_A_4, w_A_5, a_0, a_1, a_2):
         -w_A_3*x6*x9 + w_A_4*x4*x9,
     ), (
         x0,
-    ), (x0, x1, x2, x3, x4, x5, x6, x7, x8, x9, x10, )
+    ), (x0, x1, x2, x3, x4, x5, x6, x7, x8, x9, x10, xc0, )
 
 
-def _vjp_saved(w_A_0, w_A_1, w_A_2, w_A_3, w_A_4, w_A_5, a_0, a_1, a_2, x0, x1, x2, x3, x4, x5, x6, x7, x8, x9, x10, _g0, _g1, _g2, _g3, _g4, _g5, _g6, _g7, _g8, _g9):
-    """``_vjp`` on the forward's saved temps (11 of them)."""
+def _vjp_saved(w_A_0, w_A_1, w_A_2, w_A_3, w_A_4, w_A_5, a_0, a_1, a_2, x0, x1, x2, x3, x4, x5, x6, x7, x8, x9, x10, xc0, _g0, _g1, _g2, _g3, _g4, _g5, _g6, _g7, _g8, _g9):
+    """``_vjp`` on the forward's saved temps (12 of them)."""
     _b0 = -_g7*w_A_4 + _g8*w_A_3
     _c0 = _g7*w_A_5
     _c1 = _g8*w_A_5
@@ -234,7 +238,7 @@ def _vjp_saved(w_A_0, w_A_1, w_A_2, w_A_3, w_A_4, w_A_5, a_0, a_1, a_2, x0, x1, 
     _b6 = -_c1*x9 + _c2*w_A_4 + _g0*x1
     _b7 = _b3*w_A_3 - _b6*w_A_5
     _b8 = -_b4*w_A_3 + _b6*w_A_4
-    _b9 = _g0*x4 + _g1*x6 + _g2*x7 + _g3*_sumprod(w_A_0, w_A_3, w_A_1, w_A_4, w_A_2, w_A_5)
+    _b9 = _g0*x4 + _g1*x6 + _g2*x7 + _g3*xc0
     _b10 = -1.5*_b1/((x0*x0)*torch.sqrt(x0)) - 0.5*_b2*x9 - _b9/(x0*x0)
     _c3 = _g3*x1
     _c4 = 2.0*_b10

@@ -35,16 +35,17 @@ from rigidsym.algebra.symbols import constrained_group
 from rigidsym.codegen import rule as _rule
 from rigidsym.codegen.accurate_rules import (
     _angle_fractions,
+    _axis_point_from_axis,
     _axis_point_from_skew,
     _exact_powers,
     _skew_one_minus_cos,
-    _tan_half_polynomial,
 )
 from rigidsym.codegen.compensated import compensated_sums, diffprod, expand_diffprod, sumprod
 from rigidsym.codegen.compensated import expand_numerators as _expand_numerators
 from rigidsym.codegen.compensated import expand_plain as _expand_plain
 from rigidsym.codegen.printers import KernelNumPyPrinter
 from rigidsym.codegen.regimes import regimes
+from rigidsym.codegen.tan_half import TAN_HALF_TEXT, _tan_half_polynomial
 
 __all__ = ["Chosen", "Rewrite", "RULES", "improve"]
 
@@ -99,37 +100,33 @@ class Chosen:
 
 def _rewritten_then_differentiated(flat, ctx):
     """A ``<name>_with_jacobians`` kernel: its values through the other rules, and its
-    derivatives those of the rewritten values (a rewrite of unconstrained inputs only, or
-    one decided equal off the constraints: two functions equal on an open set have equal
-    derivatives)."""
+    derivatives those of the rewritten values (a rewrite of unconstrained inputs only: two
+    functions equal on an open set have equal derivatives)."""
     k = ctx["kernel"]
     if not k.name.endswith("_with_jacobians"):
         return None
-    m = len(k.outputs) // (1 + len(k.args))
-    sizes = [o.size for o in k.outputs[:m]]
-    nv = sum(sizes)
-    values, parts = flat[:nv], []
+    sizes = [o.size for o in k.outputs[:len(k.outputs) // (1 + len(k.args))]]
+    values, parts, exact = flat[:sum(sizes)], [], []
     for rule in (r for r in RULES if r.propose not in (_rewritten_then_differentiated,
                                                        _expand_plain, compensated_sums,
-                                                       _exact_powers, _angle_fractions,
-                                                       _tan_half_polynomial)):
-        got = rule.propose(values, ctx)
+                                                       _exact_powers, _angle_fractions)):
+        got = rule.propose(values, dict(ctx, values_only=True))
         if got is not None:
             values, p = got
-            parts += p
+            (exact if rule.propose in EXACT_OFF_CONSTRAINTS else parts).extend(p)
     constrained = {x for a in k.args if a.kind != "any" for x in ctx["flat"][a.name]}
     if any(sp.sympify(o).free_symbols & constrained for o, _ in parts):
         return None
-    # the polynomial in tan(phi/2) is an identity off the unit sphere too: decided so here
-    # (the angle's kind alone imposed), its derivatives are the declared ones'
-    got = _tan_half_polynomial(values, {**ctx, "kernel": k.jacobian_of})
-    angle = {ctx["flat"][a.name][0]: constrained_group("angle", f"zt_{a.name}")
-             for a in k.args if a.kind == "angle"}
-    try:
-        if got is not None and _decide(got[1], angle):
-            values, parts = got[0], parts + got[1]
-    except AssertionError:
-        pass
+    # a rewrite equal off its unit vectors' sphere too: decided so here (angles alone
+    # constrained), or not differentiated
+    if exact:
+        syms = {a.name: sp.Matrix(ctx["flat"][a.name]) if a.shape else ctx["flat"][a.name][0]
+                for a in k.args}
+        try:
+            _decide(exact, _constrained(k, syms, kinds=("angle",)))
+        except AssertionError:
+            return None
+        parts += exact
     if not parts:
         return None
     out, start = list(values), 0
@@ -141,6 +138,11 @@ def _rewritten_then_differentiated(flat, ctx):
     return out, parts
 
 
+#: rewrites equal to the declared formula off the sphere of their unit vectors too (the
+#: zero test decides that with the angles alone constrained), so that the derivatives of the
+#: rewritten values are the declared derivatives, unit arguments included
+EXACT_OFF_CONSTRAINTS = (_axis_point_from_axis, _tan_half_polynomial)
+
 RULES = (
     Rewrite("derivatives of the rewritten values",
             "the Jacobian of the declared grouping inherits its cancellation; the "
@@ -151,6 +153,12 @@ RULES = (
             "of it as phi -> 0; cot(phi/2)/2 e x c + (c - e (e.c))/2 from vect(Q) and tr Q "
             "reads the axis from the skew part (valid where 1 + tr Q does not cancel)",
             _axis_point_from_skew),
+    Rewrite("the axis point from the axis",
+            "(Q - 1)^T (Q a - a') with Q from (e, phi) rounds Q's entries and sums over them; "
+            "cot(phi/2)/2 e x (a' - a) - e x (e x (a + a'))/2 (plus exact terms in e.e - 1, "
+            "compensated, for a unit vector a few ulps off) reads the axis and the angle "
+            "from the inputs",
+            _axis_point_from_axis),
     Rewrite("1 - cos(phi) from the skew part of Q",
             "3 - tr Q cancels as phi -> 0 and the rounding of the diagonal of Q is "
             "relative 1/phi^2 there; the skew part keeps relative accuracy 1/phi, the "
@@ -176,11 +184,7 @@ RULES = (
             "three or four times, pow once: the Jacobian of a norm's quotient "
             "(f x n / ||f||^2 differentiated) sums several of them",
             _exact_powers, costly=True, gain=1.25),
-    Rewrite("a polynomial in tan(phi/2)",
-            "a fraction over 1 + cos phi in the half-angle program reads sin(phi/2) apart "
-            "from cos phi (each rounded); as the polynomial in t = tan(phi/2) it is, each "
-            "coefficient homogenised in the unit vector, it reads t alone",
-            _tan_half_polynomial, costly=True),
+    Rewrite(*TAN_HALF_TEXT, _tan_half_polynomial, costly=True),
     Rewrite("fractions in cos phi merged",
             "sympy.diff of a quotient in cos phi (cot(phi/2) as sin phi / (1 - cos phi)) "
             "sums terms that cancel (cos phi / (2 - 2 cos phi) - 2 sin^2 phi / (2 - 2 cos "
@@ -283,13 +287,14 @@ def _worst(err: np.ndarray, e_ref: np.ndarray) -> float:
                zip(err[some], e_ref[some], strict=True))
 
 
-def _constrained(kernel, syms_by_arg) -> dict:
-    """Kernel input symbols -> the zero test's constrained atoms of the same kinds."""
+def _constrained(kernel, syms_by_arg, kinds=("unit", "rotation", "angle")) -> dict:
+    """Kernel input symbols -> the zero test's constrained atoms of the same kinds (of the
+    argument kinds ``kinds``)."""
     sub = {}
     for a in kernel.args:
         kind = {"unit": "unit" if a.size == 3 else "unit4", "rotation": "rotation",
                 "angle": "angle"}.get(a.kind)
-        if kind is None:
+        if kind is None or a.kind not in kinds:
             continue
         g = constrained_group(kind, f"zt_{a.name}")
         old = syms_by_arg[a.name]

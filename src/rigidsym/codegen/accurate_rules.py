@@ -7,8 +7,6 @@ from __future__ import annotations
 
 import sympy as sp
 
-from rigidsym.codegen.optimise import rewrite as _half_angle_rewrite
-
 
 def _skew_one_minus_cos(flat, ctx):
     """``(1 - Q00) + (1 - Q11) + (1 - Q22)`` (= 3 - tr Q = 2 (1 - cos phi)) ->
@@ -57,6 +55,52 @@ def _axis_point_from_skew(flat, ctx):
     # subs, not xreplace: in the Plücker moment p0 x e a component of p0 is a factor of a
     # larger product (sympy flattens Mul), which only subs finds
     return [e.subs(reps) if e.has(om) else e for e in flat], list(reps.items())
+
+
+def _axis_point_from_axis(flat, ctx):
+    """(3.18)'s ``p0 = (Q - 1)^T (Q a - a') / (2 (1 - cos phi))`` with ``Q`` from ``(e, phi)``
+    by (2.49) -> ``cot(phi/2)/2 e x (a' - a) - e x (e x (a + a'))/2 + d ((a - a')/2 + s^2 E^2
+    a + s^2 d a)``, ``s = sin(phi/2)``, ``E^2 x = e (e.x) - (e.e) x``, ``d = e.e - 1`` (Dot2).
+
+    With ``Q - 1 = 2 s (c E + s N)``, ``N = e e^T - 1 = E^2 + d 1`` (which commutes with E),
+    the declared product is exactly this for every e, unit or not (so its derivatives are
+    the declared ones too): the midpoint's part normal to the axis plus the cot term, read
+    from the inputs, where the declared form rounds Q's nine entries and two sums of three
+    products over them (issue 37: 5.1 u where the textbook is 1.0 u at a random point); the
+    ``d`` terms keep it equal to the declared formula at a unit vector a few ulps off (35 u
+    there without them), and ``d`` is ``e.e - 1`` compensated (plainly it is itself a few
+    ulps, so half wrong)."""
+    from rigidsym.algebra.primitives import rotation_from_natural_invariants
+    from rigidsym.codegen.compensated import SumProd
+
+    k = ctx["kernel"]
+    if k.name.endswith("_with_jacobians") and not ctx.get("values_only"):
+        # the values alone rewritten lose the declared derivatives' shared terms (365 -> 458
+        # operations) and moved the float32 C plan past the rule (0.86 -> 1.6 at phi -> pi):
+        # there only with their own derivatives (accurate._rewritten_then_differentiated)
+        return None
+    units = [a.name for a in k.args if a.kind == "unit" and a.shape == (3,)]
+    vecs = [a.name for a in k.args if a.kind == "any" and a.shape == (3,)]
+    reps = {}
+    for u in units:
+        e = sp.Matrix(ctx["flat"][u])
+        for phi in ctx["angles"]:
+            Q = rotation_from_natural_invariants(e, phi)
+            for x, y in zip(vecs, vecs[1:], strict=False):
+                a, ap = sp.Matrix(ctx["flat"][x]), sp.Matrix(ctx["flat"][y])
+                old = (Q - sp.eye(3)).T * (Q * a - ap) / (2 - 2 * sp.cos(phi))
+                if not any(o == f or f.has(o) for o in old for f in flat):
+                    continue
+                sh, ch = sp.sin(phi / 2), sp.cos(phi / 2)
+                d = SumProd(e[0], e[0], e[1], e[1], e[2], e[2], -1, 1)
+                ee = e.dot(e)
+                e2a = e * e.dot(a) - ee * a
+                new = (ch / (2 * sh) * e.cross(ap - a) - e.cross(e.cross(a + ap)) / 2
+                       + d * ((a - ap) / 2 + sh**2 * e2a + sh**2 * d * a))
+                reps.update(zip(old, new, strict=True))
+    if not reps:
+        return None
+    return [reps.get(e, e.xreplace(reps)) for e in flat], list(reps.items())
 
 
 def _exact_powers(flat, ctx):
@@ -143,96 +187,4 @@ def _angle_fractions(flat, ctx):
         memo: dict = {}
         out = [_merge_angle_terms(sp.sympify(e), phi, memo) for e in out]
     parts = [(o, n) for o, n in zip(flat, out, strict=True) if o != n]
-    return (out, parts) if parts else None
-
-
-#: the largest output (operations) :func:`_tan_half_polynomial` hands to sympy's cancel: a
-#: generic cancel over every kernel with an angle and a unit vector (outputs up to 120
-#: operations, the Jacobian kernels' derivatives) ran ``rigidsym generate`` past 10 minutes
-TAN_HALF_OPS = 80
-
-
-def _tan_half_shape(flat, ctx):
-    """``(phi, e)`` where the kernel is this rule's shape (cheap to recognise, before any
-    cancel): one angle, one unit 3-vector, no rotation, not a Jacobian kernel; every output
-    with phi at most :data:`TAN_HALF_OPS` operations, phi in ``sin phi`` and ``cos phi``
-    only, and its only divisor with phi ``1 + cos phi`` (so that in ``t = tan(phi/2)``,
-    ``1 + cos phi = 2 / (1 + t^2)``, it may be a polynomial); else None."""
-    k = ctx["kernel"]
-    units = [a for a in k.args if a.kind == "unit" and a.shape == (3,)]
-    if k.name.endswith("_with_jacobians") or len(ctx["angles"]) != 1 or len(units) != 1 \
-            or ctx["rotations"]:
-        return None
-    phi = ctx["angles"][0]
-    trig, plus, divides = (sp.sin(phi), sp.cos(phi)), sp.cos(phi) + 1, False
-    for f in flat:
-        f = sp.sympify(f)
-        if not f.has(phi):
-            continue
-        if sp.count_ops(f) > TAN_HALF_OPS:
-            return None
-        for p in sp.preorder_traversal(f):
-            if isinstance(p, sp.Function) and p.has(phi) and p not in trig:
-                return None
-            if isinstance(p, sp.Pow) and p.exp.is_negative and p.base.has(phi):
-                if p.base != plus:
-                    return None
-                divides = True
-    return (phi, ctx["flat"][units[0].name]) if divides else None
-
-
-def _homogenised(c: sp.Expr, e: list) -> sp.Expr:
-    """``c``, a polynomial in the unit vector ``e``, as ``H + q (e . e - 1)``: ``H`` its
-    terms of degree ``d - 2 j`` times ``(e . e)^j`` (homogeneous, cancelled symbolically:
-    ``e0^2 w2 + e1^2 w2 + 2 e2^2 w2 - w2``, which cancels in floating point, is
-    ``e2 (e . w) + w2 (e . e - 1)``), ``q`` the exact quotient; equal to ``c`` everywhere,
-    off the unit sphere too. ``c`` itself where it is homogeneous or of mixed parity."""
-    parts: dict = {}
-    for mon, co in sp.Poly(c, *e).terms():
-        parts.setdefault(sum(mon), []).append(co * sp.Mul(*[x**n for x, n in zip(e, mon,
-                                                                                  strict=True)]))
-    if len(parts) < 2 or len({d % 2 for d in parts}) > 1:
-        return c
-    d, ee = max(parts), sp.Add(*[x**2 for x in e])
-    h = sp.expand(sp.Add(*[sp.Add(*ts) * ee**((d - j) // 2) for j, ts in parts.items()]))
-    q = sp.expand(-sp.Add(*[sp.Add(*ts) * sp.Add(*[ee**i for i in range((d - j) // 2)])
-                            for j, ts in parts.items()]))
-    # written plainly (no UnevaluatedExpr: the JAX printer differentiates the program, and
-    # a differentiated UnevaluatedExpr prints as a Derivative)
-    return h if q == 0 else sp.Add(h, sp.Mul(q, sp.Add(ee, -1), evaluate=False))
-
-
-def _tan_half_polynomial(flat, ctx):
-    """A rational function of ``sin phi``, ``cos phi`` over powers of ``1 + cos phi`` that is
-    a polynomial in ``t = tan(phi/2)`` -> that polynomial, each coefficient homogenised in
-    the unit vector (:func:`_homogenised`), ``t`` from ``sin(phi/2) / cos(phi/2)``:
-    ``L_tilde_dot = [CPM(v) | -v]``, ``v = (w + t (w x e) + t^2 (e (e . w) + w (e . e -
-    1)))/2`` (issue 37: the half-angle program reads ``sin(phi/2)`` apart from ``cos
-    phi``; 6.3 u where the textbook is 2.3 u). Equal to the declaration off the unit
-    sphere too (the identity is ``sin phi = 2t / (1 + t^2)``, ``cos phi = (1 - t^2) / (1 +
-    t^2)``), so the harness's unit vectors a few ulps off read the declared formula."""
-    shape = _tan_half_shape(flat, ctx)
-    if shape is None:
-        return None
-    phi, e = shape
-    t = sp.Dummy("t")
-    half = {t: sp.sin(phi / 2) / sp.cos(phi / 2)}
-    to_t = {sp.sin(phi): 2 * t / (1 + t**2), sp.cos(phi): (1 - t**2) / (1 + t**2)}
-    out, parts = [], []
-    for f in flat:
-        f = sp.sympify(f)
-        new = None
-        if f.has(phi):
-            num, den = sp.fraction(sp.cancel(f.xreplace(to_t)))
-            if not den.has(t):
-                poly = sp.Poly(num, t)
-                new = sp.Add(*[t**n * _homogenised(c, e) for (n,), c in poly.terms()])
-                new = (new / den).xreplace(half)
-        # where the half-angle rewrite gives this form already (L_tilde: 1 + t CPM(e)),
-        # nothing is proposed (a rewrite that prints the same program)
-        if new is None or _half_angle_rewrite(f, [phi]) == _half_angle_rewrite(new, [phi]):
-            out.append(f)
-        else:
-            out.append(new)
-            parts.append((f, new))
     return (out, parts) if parts else None

@@ -14,12 +14,14 @@ from __future__ import annotations
 
 from typing import Any
 
+import sympy as sp
+
 from rigidsym.codegen.compensated import ARRAY_SOURCE
 from rigidsym.codegen.jacobians import has_jacobian
 from rigidsym.codegen.printers import KernelJaxPrinter, torch_printer
 from rigidsym.codegen.vjp import cotangent_names, jvp_program, tangent_names, vjp_program
 
-__all__ = ["BACKENDS", "render_array_kernels"]
+__all__ = ["BACKENDS", "render_array_kernels", "hoist_compensated"]
 
 #: back-end -> (folder, module the printed code names)
 BACKENDS = {"torch": "torch", "jax": "jax.numpy"}
@@ -56,7 +58,7 @@ def _variant(v: Any, printer) -> dict:
     p = v.program
     return {"name": v.name,
             "cond": None if v.cond is None else printer.doprint(v.cond),
-            "temps": [(str(s), printer.doprint(e)) for s, e in p.temps],
+            "temps": _lines(printer, p.temps, [*p.outputs, *p.dens]),
             "outputs": [printer.doprint(e) for e in p.outputs],
             "dens": [printer.doprint(e) for e in p.dens]}
 
@@ -70,13 +72,68 @@ def _calls_trig(variants: list, back: dict | None) -> bool:
     return any("_sin(" in t or "_cos(" in t for t in texts)
 
 
-def _saved(program, vjp) -> list[str]:
+def _saved(program, vjp, hoisted: dict) -> list[str]:
     """The forward temps the reverse-mode program reads (it recomputes them from the
-    inputs): the PyTorch forward returns them for autograd to save, and ``_vjp_saved``
-    takes them instead of recomputing them (issue 38: the backward reuses the forward's
-    common subexpressions)."""
+    inputs), then the compensated sums it reads (``hoisted``: named by
+    :func:`hoist_compensated`): the PyTorch forward returns them for autograd to save, and
+    ``_vjp_saved`` takes them instead of recomputing them (issue 38: the backward reuses the
+    forward's common subexpressions)."""
     fwd = {str(s) for s, _ in program.temps}
-    return [str(s) for s, _ in vjp.temps if str(s) in fwd]
+    nodes = _compensated([e for _, e in vjp.temps] + list(vjp.outputs))
+    saved = [str(s) for s, _ in vjp.temps if str(s) in fwd]
+    return saved + [hoisted[n] for n in nodes if n in hoisted and hoisted[n] not in saved]
+
+
+def _compensated(exprs: list) -> list:
+    """The compensated nodes (``DiffProd``, ``SumProd``) of ``exprs``, in order of first
+    appearance."""
+    from rigidsym.codegen.compensated import DiffProd, SumProd
+
+    seen: dict = {}
+    for e in exprs:
+        for n in sp.preorder_traversal(sp.sympify(e)):
+            if isinstance(n, (DiffProd, SumProd)):
+                seen.setdefault(n, None)
+    return list(seen)
+
+
+def hoist_compensated(program) -> dict:
+    """``{node: name}``: each compensated sum of the forward ``program`` named ``xc<i>``.
+    The printers print a named node as its name (``printers._PowMixin.named``) and
+    :func:`_lines` computes it once, just before its first reader; the expressions stay
+    as they are, so every other term prints in the same order, and values and gradients
+    stay bit for bit. Why (issue 38, the first compile of ``instant_screw_axis``): the VJP
+    reads the compensated pitch (``_sumprod``, ~65 operations) that the forward computes;
+    named, the forward saves it and the VJP takes it instead of computing it again. Empty
+    where a node holds another (not printed by one name then). A node that is a temp's whole
+    expression keeps that temp's name."""
+    nodes = _compensated([e for _, e in program.temps] + list(program.outputs))
+    if any(m is not n and m.has(n) for m in nodes for n in nodes):
+        return {}
+    whole = {e: str(s) for s, e in program.temps}
+    return {n: whole.get(n, f"xc{i}") for i, n in enumerate(nodes)}
+
+
+def _lines(pr, temps: list, outputs: list) -> list[tuple[str, str]]:
+    """The printed assignments of ``temps``, each named compensated node of ``pr.named``
+    that they or ``outputs`` read assigned once just before its first reader."""
+    out: list = []
+    todo = dict(pr.named)
+
+    def place(expr) -> None:
+        for n in [n for n in todo if sp.sympify(expr).has(n)]:
+            out.append((todo.pop(n), pr.compensated_call(n)))
+
+    for s, e in temps:
+        if todo.get(e) == str(s):  # the temp is the node: computed there
+            del todo[e]
+            out.append((str(s), pr.compensated_call(e)))
+            continue
+        place(e)
+        out.append((str(s), pr.doprint(e)))
+    for o in outputs:
+        place(o)
+    return out
 
 
 def render_array_kernels(env, kc: Any, header) -> dict[str, str]:
@@ -94,22 +151,25 @@ def render_array_kernels(env, kc: Any, header) -> dict[str, str]:
     # the backward of a kernel with a generated Jacobian (one formula, no branches): reverse
     # mode over its optimised program (issue 38)
     vjp = jvp = None
+    hoisted: dict = {}
     if has_jacobian(kc.kernel) and len(kc.variants) == 1:
         ins = [s for _, syms in kc.inputs for s in syms]
         vjp = vjp_program(kc.variants[0].program, ins)
         jvp = jvp_program(kc.variants[0].program, ins)
+        hoisted = hoist_compensated(kc.variants[0].program)
     files = {}
     for backend, module in BACKENDS.items():
         pr = _printer(backend)
+        pr.named = hoisted
         # branches first, in order, then main (the order of the NumPy kernel's selection)
         variants = [_variant(v, pr) for v in kc.variants]
         back = None if vjp is None else {
             "args": columns + cotangent_names(len(kc.variants[0].program.outputs)),
-            "temps": [(str(s), pr.doprint(e)) for s, e in vjp.temps],
-            "saved": _saved(kc.variants[0].program, vjp),
+            "temps": _lines(pr, vjp.temps, vjp.outputs),
+            "saved": _saved(kc.variants[0].program, vjp, hoisted),
             "outputs": [pr.doprint(e) for e in vjp.outputs], "ops": vjp.ops,
             "targs": columns + tangent_names(len(columns)),
-            "ttemps": [(str(s), pr.doprint(e)) for s, e in jvp.temps],
+            "ttemps": _lines(pr, jvp.temps, jvp.outputs),
             "toutputs": [pr.doprint(e) for e in jvp.outputs], "tops": jvp.ops}
         helpers = [ARRAY_SOURCE.strip("\n").replace("{module}", module)] if \
             uses_diffprod(kc) else []

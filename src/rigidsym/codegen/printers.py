@@ -40,15 +40,22 @@ class _PowMixin:
     #: module names it (a helper the templates define)
     _diffprod = "_diffprod"
 
-    def _print_DiffProd(self, expr):
-        return f"{self._diffprod}({', '.join(self._print(a) for a in expr.args)})"
-
     #: the compensated sum of products (:class:`rigidsym.codegen.compensated.SumProd`)
     _sumprod = "_sumprod"
+    #: ``{compensated node: temp name}``: nodes a program computes once as a named temp
+    #: (:func:`rigidsym.codegen.arrays.hoist_compensated`), printed as that name
+    named: dict = {}
 
-    def _print_SumProd(self, expr):
-        name = self._sumprod.format(n=len(expr.args) // 2)
+    def compensated_call(self, expr) -> str:
+        """The call of the helper that evaluates the compensated node ``expr``."""
+        name = self._diffprod if expr.func.__name__ == "DiffProd" else \
+            self._sumprod.format(n=len(expr.args) // 2)
         return f"{name}({', '.join(self._print(a) for a in expr.args)})"
+
+    def _print_DiffProd(self, expr):
+        return self.named.get(expr) or self.compensated_call(expr)
+
+    _print_SumProd = _print_DiffProd
 
     def _sqrt(self, arg: str) -> str:  # pragma: no cover - overridden
         raise NotImplementedError

@@ -48,6 +48,12 @@ _BOOK_COMPOUNDS = {"p_star": ("p*", "p^{*}", r"\mathbf{p}^{*}"),
                                r"(\mathbf{A}^T\mathbf{A})^{-1}")}
 #: a declaration module's private prefix on atom names (``s34_adot``, ``sec342_vdot``)
 _PRIVATE = re.compile(r"^(?:s|sec|ex)\d{2,}_")
+
+
+def strip_private(name: str) -> str:
+    """An atom name without its declaration module's private prefix (``s34_adot`` ->
+    ``adot``)."""
+    return _PRIVATE.sub("", name)
 #: an entry of a reader's vector renamed beside a scalar of the same glyph (``a__1`` beside
 #: ``a_1``, :func:`rigidsym.latex.letting._fresh`): printed ``(a)₁``, never the scalar's ``a₁``
 _RENAMED_ENTRY = re.compile(r"(.*[^_])__+(\d{1,2})")

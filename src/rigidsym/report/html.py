@@ -54,8 +54,9 @@ def _value_mathml(text: str | None) -> Markup:
 _LETTER = r"(?:(?![\u00b2\u00b3\u00b9\u1d2c-\u1dbf\u2070-\u209f])[^\W\d_])"  # not ², ᵀ, ₁
 _LETTER_SUB = re.compile(rf"(?<![\w\u0300-\u036f'])({_LETTER}[\u0300-\u036f]*'*)"
                          rf"_({_LETTER}{{1,2}})(?!{_LETTER}|[0-9_])")
-#: what the subscript pass leaves alone: tags, MathML, code listings, the head
-_NOT_TEXT = re.compile(r"(<math\b.*?</math>|<pre\b.*?</pre>|<style\b.*?</style>|"
+#: what the subscript pass leaves alone: tags, MathML, inline SVG figures (no <sub> there),
+#: code listings, the head
+_NOT_TEXT = re.compile(r"(<math\b.*?</math>|<svg\b.*?</svg>|<pre\b.*?</pre>|<style\b.*?</style>|"
                        r"<title\b.*?</title>|<[^>]+>)", re.S)
 
 
@@ -180,5 +181,5 @@ def markdown_to_html(text: str, title: str, figures: dict[str, str] | None = Non
         return default_image(tokens, idx, options, env)
 
     md.add_render_rule("image", image)
-    body = md.render(text)
+    body = letter_subscripts(md.render(text))
     return _env().get_template("page.html.j2").render(title=title, body=Markup(body))

@@ -13,7 +13,7 @@ from sympy.core.function import AppliedUndef
 
 from rigidsym.algebra.symbols import TIME, constraint_of
 from rigidsym.checking.deciding.explicit import _entries
-from rigidsym.printing.names import _PRIVATE
+from rigidsym.printing.names import strip_private
 from rigidsym.zero.decide import Unsupported, evaluate
 from rigidsym.zero.plan import _TRIG
 
@@ -120,6 +120,6 @@ def plain_name(a) -> str:
 def group_base(name: str) -> str:
     """The ASCII name of the vector an entry atom belongs to (``s38_mu1`` -> ``mu``,
     ``a_2`` -> ``a``), as :func:`rigidsym.printing.notation.book_group` reads it."""
-    name = _PRIVATE.sub("", name)
+    name = strip_private(name)
     return re.sub(r"_\d+$", "", name) if re.search(r"_\d+$", name) else \
         re.sub(r"(?<=[A-Za-z])\d+$", "", name)
