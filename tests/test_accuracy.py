@@ -59,7 +59,7 @@ def _losses(rows) -> str:
 #: rotation_from_natural_invariants 1.9, euler_angle_rates_xzx_fixed 3.2).
 SWEEP_RULE = 2.0
 # (L_tilde_dot_with_jacobians float64, NumPy 1.6, is gone: no default test judged it; its
-# worst point is held by test_l_tilde_dot_with_jacobians_at_its_old_worst_point)
+# worst point is held by test_at_the_old_worst_point)
 OPEN = {
         # the Jacobian at ||f|| -> 0 by pow now (NumPy 0.84; 1.67 before); C 4.7 u where
         # the textbook is 1.95 u at one point: the rounding of the same sum, another order
@@ -261,37 +261,25 @@ def test_full_sweep_both_types():
     assert not past, _losses(past)
 
 
-def test_n_tilde_dot_derivative_by_phi_at_its_old_worst_point():
-    """N_tilde_dot_with_jacobians at the random points of seed 2 (its worst, phi = -0.68):
-    old main 1.03 of the rule there (d e_dot / d phi 4.7 u where the textbook is 2.3 u:
-    sympy.diff's cancelling fractions in cos phi, merged by
-    rigidsym.codegen.accurate_rules._angle_fractions now)."""
-    name = "N_tilde_dot_with_jacobians"
-    pts = A.P.regimes(A.R.kernel_of(name), np.float64, n_random=8, seed=2)["random"]
-    rows = A.judge(name, "random", pts, np.float64, _backends())
+#: (kernel, regime, seed, limit on the rule's ratio): old worst points of closed rows
+OLD_WORST = [
+    # phi = -0.68: old main 1.03 (d e_dot / d phi 4.7 u where the textbook is 2.3 u:
+    # sympy.diff's cancelling fractions in cos phi, merged by accurate_rules._angle_fractions)
+    ("N_tilde_dot_with_jacobians", "random", 2, 0.8),
+    # phi = 2.67: old main 1.39 (6.3 u where the textbook is 2.3 u: the half-angle program
+    # read sin(phi/2) apart from cos phi; the polynomial in tan(phi/2) of codegen.tan_half)
+    ("L_tilde_dot", "random", 2, 0.8),
+    # phi = -1.79: old main 1.95 (d/dphi 7.8 u where the textbook is 1.9 u); that polynomial
+    # differentiated: 1.14 (4.6 u, the cancellation in d/dphi, open in docs/accuracy.md)
+    ("L_tilde_dot_with_jacobians", "unit off by ulps", 1, 1.2),
+]
+
+
+@pytest.mark.parametrize("name,regime,seed,limit", OLD_WORST)
+def test_at_the_old_worst_point(name, regime, seed, limit):
+    """A closed row at its old worst point (float64, C and NumPy): within ``limit``, where
+    old main was past the rule (OLD_WORST)."""
+    pts = A.P.regimes(A.R.kernel_of(name), np.float64, n_random=8, seed=seed)[regime]
+    rows = A.judge(name, regime, pts, np.float64, _backends())
     K.use_backend("numpy")
-    assert all(r.rule_ratio <= 0.8 for r in rows), _losses(rows)
-
-
-def test_l_tilde_dot_at_its_old_worst_point():
-    """L_tilde_dot at the random points of seed 2 (its worst, phi = 2.67): old main 1.39 of
-    the rule there (6.3 u where the textbook is 2.3 u: the half-angle program read sin(phi/2)
-    apart from cos phi); the polynomial in tan(phi/2) of
-    rigidsym.codegen.tan_half._tan_half_polynomial now."""
-    name = "L_tilde_dot"
-    pts = A.P.regimes(A.R.kernel_of(name), np.float64, n_random=8, seed=2)["random"]
-    rows = A.judge(name, "random", pts, np.float64, _backends())
-    K.use_backend("numpy")
-    assert all(r.rule_ratio <= 0.8 for r in rows), _losses(rows)
-
-
-def test_l_tilde_dot_with_jacobians_at_its_old_worst_point():
-    """L_tilde_dot_with_jacobians at the unit vectors a few ulps off of seed 1 (phi = -1.79):
-    old main 1.95 of the rule there (d/dphi 7.8 u where the textbook is 1.9 u); its values
-    the polynomial in tan(phi/2), differentiated, now: 1.14 (4.6 u, the cancellation in the
-    derivative by phi, open in docs/accuracy.md), held to it."""
-    name = "L_tilde_dot_with_jacobians"
-    pts = A.P.regimes(A.R.kernel_of(name), np.float64, n_random=8, seed=1)["unit off by ulps"]
-    rows = A.judge(name, "unit off by ulps", pts, np.float64, _backends())
-    K.use_backend("numpy")
-    assert all(r.rule_ratio <= 1.2 for r in rows), _losses(rows)
+    assert all(r.rule_ratio <= limit for r in rows), _losses(rows)
