@@ -609,7 +609,7 @@ def euler_rodrigues_from_rotation(
     Notes:
         At phi = pi exactly (r0 = 0) eta and -eta are both parameters of Q.
 
-        Accuracy: error <= 1.12 u (kappa + 1) in float64, <= 1.02 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 1.76e+16 ulp in float64) over 6 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1.12 u (kappa + 1) in float64, <= 1.02 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 19 ulp in float64) over 6 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 73 operations; math hash 019b8ba8b4ba61cb.
     """
@@ -687,7 +687,7 @@ def exponential_coordinates_from_transform(
     Notes:
         T is not validated (its rotation block is read as a rotation).
 
-        Accuracy: error <= 1.15 u (kappa + 1) in float64, <= 1.19 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 2.51e+16 ulp in float64) over 9 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1.15 u (kappa + 1) in float64, <= 1.19 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 124 ulp in float64) over 9 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 645 operations; math hash 1ba043e69a601155.
     """
@@ -1035,7 +1035,7 @@ def natural_invariants_from_rotation(
 
         For an exactly symmetric Q (phi = pi) the sign of e is fixed by the rule: the component of e of largest magnitude is positive (e is taken from the column of the largest diagonal entry of Q); near pi, the skew part of Q fixes the sign, as in Pinocchio's log3.
 
-        Accuracy: error <= 1.26 u (kappa + 1) in float64, <= 1.38 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 1.76e+16 ulp in float64) over 6 regimes (docs/accuracy.md, kernels.accuracy); singular when phi = 0 (Q = 1): the axis e is undefined, flagged where ||vect(Q)||^2 == 0 with tr Q >= 0 (the main build): Q exactly symmetric in floating point, i.e. phi = 0 (Q = 1), or abs(phi) below the rounding of Q (about 1e-16).
+        Accuracy: error <= 1.26 u (kappa + 1) in float64, <= 1.38 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 11 ulp in float64) over 6 regimes (docs/accuracy.md, kernels.accuracy); singular when phi = 0 (Q = 1): the axis e is undefined, flagged where ||vect(Q)||^2 == 0 with tr Q >= 0 (the main build): Q exactly symmetric in floating point, i.e. phi = 0 (Q = 1), or abs(phi) below the rounding of Q (about 1e-16).
 
         Generated; 172 operations; math hash 445339cc0a3a5a8f.
     """
@@ -1360,7 +1360,7 @@ def rotation_vector_from_rotation(
     Notes:
         At phi = pi exactly, w and -w are both logarithms; the sign follows natural_invariants_from_rotation's rule.
 
-        Accuracy: error <= 1.77 u (kappa + 1) in float64, <= 1.8 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 1.76e+16 ulp in float64) over 6 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1.77 u (kappa + 1) in float64, <= 1.8 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 10 ulp in float64) over 6 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 189 operations; math hash 2e15491416cd7072.
     """
@@ -1612,7 +1612,7 @@ def screw_of_displacement(
 
         For an exactly symmetric Q (phi = pi) the sign of e follows natural_invariants_from_rotation's rule (largest-magnitude component positive).
 
-        Accuracy: error <= 1.3 u (kappa + 1) in float64, <= 1.14 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 1.59e+16 ulp in float64) over 9 regimes (docs/accuracy.md, kernels.accuracy); singular when phi = 0 (pure translation: no axis, infinite pitch), flagged where ||Q - Q^T||^2 == 0 with tr Q >= 0 (the main build, after the rewrite of 1 - cos phi from the skew part of Q): Q exactly symmetric in floating point, phi below the rounding of Q (about 1e-16 in float64, 6e-8 in float32); before the rewrite 3 - tr Q == 0 flagged up to phi ~ 1.5e-8.
+        Accuracy: error <= 1.3 u (kappa + 1) in float64, <= 1.14 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 863 ulp in float64) over 9 regimes (docs/accuracy.md, kernels.accuracy); singular when phi = 0 (pure translation: no axis, infinite pitch), flagged where ||Q - Q^T||^2 == 0 with tr Q >= 0 (the main build, after the rewrite of 1 - cos phi from the skew part of Q): Q exactly symmetric in floating point, phi below the rounding of Q (about 1e-16 in float64, 6e-8 in float32); before the rewrite 3 - tr Q == 0 flagged up to phi ~ 1.5e-8.
 
         Generated; 571 operations; math hash 24c2ead304ca194c.
     """

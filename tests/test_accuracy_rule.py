@@ -87,6 +87,10 @@ def test_the_harness_forgives_a_jump_not_a_conditioning_loss():
     assert A._diff(-ref, ref, flipped, slice(0, 3), bound) == 0.0
     assert A._diff(ref * (1 + 1e-7), ref, near, slice(0, 3), bound) == pytest.approx(1e-7)
     assert A._diff(ref * (1 + 1e-15), ref, near, slice(0, 3), bound) < bound
+    # and the componentwise figure of an axis of the other sign is taken against that sign
+    # (old main: 1.76e16 ulps for natural_invariants_from_rotation near pi)
+    assert A._judged_by(-ref, ref, flipped, slice(0, 3), bound) is not ref
+    assert A._judged_by(ref * (1 + 1e-7), ref, near, slice(0, 3), bound) is ref
 
 
 def _forms(name: str):
