@@ -50,6 +50,23 @@ def _cos(x):
 '''
 
 
+#: the JAX programs' named compensated sums (``xc0 = _keep(_sumprod(...))``,
+#: :func:`hoist_compensated`): XLA on the CPU fused the ~65 operations of the compensated
+#: pitch of instant_screw_axis into each of the 6 fusions reading it (jit value + gradient
+#: 2.2-2.6x a hand-written formula at N = 1e3 on one core); through a dot, as the
+#: ``_sincos`` pair, it is computed once (exact: x 1 + (-0) 0 = x; XLA's CPU code flushes
+#: subnormals wherever it computes). ``jax.lax.optimization_barrier`` does not stop it: XLA
+#: removes it before fusion (issue 38)
+JAX_KEEP_SOURCE = '''
+
+def _keep(x):
+    if jax.default_backend() == "cpu":
+        pair = jax.numpy.stack([x, jax.numpy.full_like(x, -0.0)], -1)
+        x = (pair @ jax.numpy.eye(2, dtype=x.dtype))[..., 0]
+    return x
+'''
+
+
 def _printer(backend: str):
     return torch_printer() if backend == "torch" else KernelJaxPrinter()
 
@@ -122,12 +139,12 @@ def _lines(pr, temps: list, outputs: list) -> list[tuple[str, str]]:
 
     def place(expr) -> None:
         for n in [n for n in todo if sp.sympify(expr).has(n)]:
-            out.append((todo.pop(n), pr.compensated_call(n)))
+            out.append((todo.pop(n), pr.named_call(n)))
 
     for s, e in temps:
         if todo.get(e) == str(s):  # the temp is the node: computed there
             del todo[e]
-            out.append((str(s), pr.compensated_call(e)))
+            out.append((str(s), pr.named_call(e)))
             continue
         place(e)
         out.append((str(s), pr.doprint(e)))
@@ -175,6 +192,8 @@ def render_array_kernels(env, kc: Any, header) -> dict[str, str]:
             uses_diffprod(kc) else []
         if backend == "jax" and _calls_trig(variants, back):
             helpers.append(JAX_TRIG_SOURCE.strip("\n"))
+        if backend == "jax" and hoisted:
+            helpers.append(JAX_KEEP_SOURCE.strip("\n"))
         files[f"{backend}/{kc.kernel.name}.py"] = env.get_template(t).render(
             header=header(t), backend=backend, module=module, k=kc.kernel, ops=kc.ops,
             hash=kc.hash, columns=columns, variants=variants, vjp=back,
