@@ -168,7 +168,7 @@ def _jvp(omega_0, omega_1, omega_2, a_0, a_1, a_2, a_dot_0, a_dot_1, a_dot_2, _t
     """The tangents of the outputs from those of the inputs, linear in the tangents:
     forward mode over ``_main``, 182 operations."""
     x0 = (omega_0*omega_0) + (omega_1*omega_1) + (omega_2*omega_2)
-    _d0 = 2.0*_t0*omega_0 + 2.0*_t1*omega_1 + 2.0*_t2*omega_2
+    _d0 = _keep(2.0*_t0*omega_0 + 2.0*_t1*omega_1 + 2.0*_t2*omega_2)
     x1 = 1.0/x0
     _d1 = -_d0/(x0*x0)
     x2 = a_0*omega_1 - a_1*omega_0 + a_dot_2

@@ -162,7 +162,7 @@ def _jvp(w_A_0, w_A_1, w_A_2, w_A_3, w_A_4, w_A_5, a_0, a_1, a_2, _t0, _t1, _t2,
     """The tangents of the outputs from those of the inputs, linear in the tangents:
     forward mode over ``_main``, 179 operations."""
     x0 = (w_A_3*w_A_3) + (w_A_4*w_A_4) + (w_A_5*w_A_5)
-    _d0 = 2.0*_t3*w_A_3 + 2.0*_t4*w_A_4 + 2.0*_t5*w_A_5
+    _d0 = _keep(2.0*_t3*w_A_3 + 2.0*_t4*w_A_4 + 2.0*_t5*w_A_5)
     x1 = 1.0/x0
     _d1 = -_d0/(x0*x0)
     x2 = a_0*w_A_4 - a_1*w_A_3 + w_A_2
