@@ -17,14 +17,7 @@ jax = pytest.importorskip("jax", reason="JAX is not installed (the [jax] extra)"
 import jax.numpy as jnp  # noqa: E402
 
 from rigidsym.kernels import jax as rj  # noqa: E402
-
-
-@pytest.fixture(autouse=True)
-def _x64():
-    old = jax.config.jax_enable_x64
-    jax.config.update("jax_enable_x64", True)
-    yield
-    jax.config.update("jax_enable_x64", old)
+from tests.test_jax_kernels import _x64  # noqa: E402, F401 - the x64 fixture (autouse)
 
 
 def _step(fn, nargs: int):
