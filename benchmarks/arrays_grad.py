@@ -89,34 +89,40 @@ def _warm_inductor(torch) -> None:
     torch._dynamo.reset()
 
 
-def run_grad(sizes, reps: int = 9) -> tuple[list[dict], dict]:
+def run_grad(sizes, reps: int = 9, modes=tuple(TARGETS)) -> tuple[list[dict], dict]:
     """Rows (one per kernel, dtype, N: seconds per mode and candidate) and the compile
-    facts (first-call seconds, graph breaks)."""
+    facts (first-call seconds, graph breaks), of the ``modes`` (of ``TARGETS``)."""
     import jax
-    import torch
 
     jax.config.update("jax_enable_x64", True)
-    torch.set_num_threads(1)
     from rigidsym.kernels import jax as rj
-    from rigidsym.kernels import torch as rk
+    torch = None
+    if set(modes) - {"jit"}:  # PyTorch only for its modes
+        import torch
+
+        from rigidsym.kernels import torch as rk
+        torch.set_num_threads(1)
 
     rows, facts = [], {}
-    _warm_inductor(torch)
+    if "compiled" in modes:
+        _warm_inductor(torch)
     jax.block_until_ready(jax.jit(jax.grad(lambda v: (jax.numpy.sin(v) * v).sum()))(
         jax.numpy.ones(8)))  # and JAX's start
     for name in KERNELS:
-        f = getattr(rk, name)
         tpeer, jpeer = _peers(name)
-        eager = {"k": lambda *a, f=f: f(*a, check=False), "h": _hand(torch, name), **tpeer}
+        f = None if torch is None else getattr(rk, name)
+        eager = {} if torch is None else {
+            "k": lambda *a, f=f: f(*a, check=False), "h": _hand(torch, name), **tpeer}
         jfns = {"k": getattr(rj, name), "h": _hand(jax.numpy, name), **jpeer}
         nargs = len(_inputs(name, 1, float))
         jits = {k: jax.jit(jax.value_and_grad(lambda *a, fn=fn: _loss(fn(*a)),
                                               argnums=tuple(range(nargs))))
                 for k, fn in jfns.items()}
-        first = [torch.from_numpy(x) for x in _inputs(name, sizes[0], np.float64)]
+        first = [] if torch is None else [torch.from_numpy(x)
+                                          for x in _inputs(name, sizes[0], np.float64)]
         firstj = [jax.device_put(x) for x in _inputs(name, sizes[0], np.float64)]
         comp, fact = {}, {}
-        for k in ("h", "k"):
+        for k in ("h", "k") if "compiled" in modes else ():
             g = [t.clone().requires_grad_(True) for t in first]
             fact[f"breaks {k}"] = torch._dynamo.explain(eager[k])(*g).graph_break_count
             torch._dynamo.reset()
@@ -124,12 +130,13 @@ def run_grad(sizes, reps: int = 9) -> tuple[list[dict], dict]:
                 comp[k] = torch.compile(eager[k], dynamic=True)
                 fact[f"compile {k}"] = _first(lambda c=comp[k]: _loss(c(*[
                     t.clone().requires_grad_(True) for t in first])).backward())
+        for k in ("h", "k"):
             fact[f"jit {k}"] = _first(lambda j=jits[k]: jax.block_until_ready(j(*firstj)))
         facts[name] = fact
         for dtype in (np.float64, np.float32):
             for n in sizes:
                 xs = _inputs(name, n, dtype)
-                ts = [torch.from_numpy(x) for x in xs]
+                ts = [] if torch is None else [torch.from_numpy(x) for x in xs]
                 js = [jax.device_put(x) for x in xs]
                 row = {"kernel": name, "dtype": np.dtype(dtype).name, "n": n}
                 r = max(3, reps if n < 1e6 else 3)
@@ -138,12 +145,12 @@ def run_grad(sizes, reps: int = 9) -> tuple[list[dict], dict]:
                     return {k: (lambda fn=fn: _loss(fn(*[t.clone().requires_grad_(True)
                                                          for t in ts])).backward())
                             for k, fn in fns.items()}
-                for mode, got in (
-                        ("eager", _interleaved(steps(eager), n, r)),
-                        ("compiled", _interleaved(steps(comp), n, r)),
-                        ("jit", _interleaved({k: (lambda j=j: jax.block_until_ready(j(*js)))
-                                              for k, j in jits.items()}, n, r))):
-                    for k, v in got.items():
+                timed = {"eager": lambda: _interleaved(steps(eager), n, r),
+                         "compiled": lambda: _interleaved(steps(comp), n, r),
+                         "jit": lambda: _interleaved({k: (lambda j=j: jax.block_until_ready(
+                             j(*js))) for k, j in jits.items()}, n, r)}
+                for mode in modes:
+                    for k, v in timed[mode]().items():
                         row[f"{mode} {k}"] = v
                 rows.append(row)
                 print({k: (f"{v[0] * 1e3:.3g}" if isinstance(v, tuple) else v)
@@ -240,14 +247,15 @@ def grad_table(rows) -> str:
     """The Markdown table: ms of kernel / hand per mode, ratio of wall (of CPU) time."""
     peers = sorted({k.split(" ", 1)[1] for r in rows for k in r
                     if " " in k and k.split(" ", 1)[1] not in ("k", "h")})
+    modes = [m for m in TARGETS if rows and f"{m} k" in rows[0]]
     head = ["kernel", "dtype", "N"]
-    for m in TARGETS:
+    for m in modes:
         head += [f"{m} ms (k / h)", f"ratio (cpu) <= {TARGETS[m]}"]
     head += [f"{p} ms" for p in peers]
     lines = ["| " + " | ".join(head) + " |", "|---|---|" + "---:|" * (len(head) - 2)]
     for r in rows:
         cells = [r["kernel"], r["dtype"], f"{r['n']:.0e}"]
-        for m in TARGETS:
+        for m in modes:
             cells += _cell(r, m)
         for p in peers:
             v = [r[k][0] for k in (f"eager {p}", f"jit {p}") if k in r]
@@ -260,38 +268,48 @@ def facts_table(facts) -> str:
     lines = ["| kernel | torch.compile first call s (k / h) | ratio <= 1.5 | jax.jit first "
              "call s (k / h) | graph breaks (k / h) |", "|---|---:|---:|---:|---:|"]
     for name, f in facts.items():
-        lines.append(f"| {name} | {f['compile k']:.2f} / {f['compile h']:.2f} | "
-                     f"{f['compile k'] / f['compile h']:.2f} | {f['jit k']:.2f} / "
-                     f"{f['jit h']:.2f} | {f['breaks k']} / {f['breaks h']} |")
+        comp = (f"{f['compile k']:.2f} / {f['compile h']:.2f} | "
+                f"{f['compile k'] / f['compile h']:.2f}") if "compile k" in f else "- | -"
+        breaks = f"{f['breaks k']} / {f['breaks h']}" if "breaks k" in f else "-"
+        lines.append(f"| {name} | {comp} | {f['jit k']:.2f} / {f['jit h']:.2f} | {breaks} |")
     return "\n".join(lines)
 
 
-def main(sizes=None, reps: int = 9) -> None:
+def main(sizes=None, reps: int = 9, modes=tuple(TARGETS)) -> None:
     import jax
-    import torch
     before = os.getloadavg()
-    rows, facts = run_grad([int(s) for s in sizes or [1e3, 1e4, 1e5, 1e6]], reps)
+    rows, facts = run_grad([int(s) for s in sizes or [1e3, 1e4, 1e5, 1e6]], reps, modes)
     print(grad_table(rows))
     print()
     print(facts_table(facts))
+    torch = sys.modules.get("torch")
     print(f"\nload average before {before[0]:.1f}, after {os.getloadavg()[0]:.1f} "
-          f"({os.cpu_count()} cores); CPU: {platform.processor() or platform.machine()}; "
-          f"torch {torch.__version__} ({torch.get_num_threads()} thread), "
-          f"jax {jax.__version__}")
+          f"({os.cpu_count()} cores, {len(os.sched_getaffinity(0))} used); "
+          f"CPU: {platform.processor() or platform.machine()}; "
+          + (f"torch {torch.__version__} ({torch.get_num_threads()} thread), "
+             if torch else "") + f"jax {jax.__version__}")
 
 
 if __name__ == "__main__":
     ap = argparse.ArgumentParser()
     ap.add_argument("--sizes", nargs="+", type=float, default=None)
     ap.add_argument("--reps", type=int, default=9, help="timing samples (3 at N >= 1e6)")
+    ap.add_argument("--modes", nargs="+", choices=list(TARGETS), default=list(TARGETS),
+                    help="the modes timed (default all)")
+    ap.add_argument("--one-core", action="store_true",
+                    help="pin the process to one CPU core before JAX starts: XLA then splits "
+                    "no fusion into parallel tasks (issue 38: on 2 shared cores a split "
+                    "fusion waits for the second one), as torch runs on one thread here")
     ap.add_argument("--first", nargs="*", metavar="KERNEL", default=None,
                     help="only the first torch.compile call (--reps times, kernel and hand "
                     "alternated, N = the first of --sizes) and the graphs' node counts, of "
                     "these kernels (default: both)")
     a = ap.parse_args()
+    if a.one_core:
+        os.sched_setaffinity(0, {min(os.sched_getaffinity(0))})
     if a.first is not None:
         before = os.getloadavg()[0]
         run_first(a.first or KERNELS, int((a.sizes or [1e3])[0]), a.reps)
         print(f"load average before {before:.1f}, after {os.getloadavg()[0]:.1f}")
     else:
-        main(a.sizes, a.reps)
+        main(a.sizes, a.reps, tuple(a.modes))

@@ -67,6 +67,13 @@ def _sumprod(*args):
         p = t
     return p + s
 
+
+def _keep(x):
+    if jax.default_backend() == "cpu":
+        pair = jax.numpy.stack([x, jax.numpy.full_like(x, -0.0)], -1)
+        x = (pair @ jax.numpy.eye(2, dtype=x.dtype))[..., 0]
+    return x
+
 OPS = 52
 MATH_HASH = "bbbb3fe59daee446"
 COLUMNS = ("omega_0", "omega_1", "omega_2", "a_0", "a_1", "a_2", "a_dot_0", "a_dot_1", "a_dot_2", )
@@ -84,7 +91,7 @@ def _main(omega_0, omega_1, omega_2, a_0, a_1, a_2, a_dot_0, a_dot_1, a_dot_2):
     x8 = x1*x7
     x9 = x1*(omega_0*x3 - omega_1*x6)
     x10 = 1.0/jax.numpy.sqrt(x0)
-    xc0 = _sumprod(a_dot_0, omega_0, a_dot_1, omega_1, a_dot_2, omega_2)
+    xc0 = _keep(_sumprod(a_dot_0, omega_0, a_dot_1, omega_1, a_dot_2, omega_2))
     return (
         x5,
         x8,
@@ -139,7 +146,7 @@ def _vjp(omega_0, omega_1, omega_2, a_0, a_1, a_2, a_dot_0, a_dot_1, a_dot_2, _g
     _b8 = -_b3*omega_0 + _b6*omega_1
     _c7 = _c1*x7
     _c8 = _c5*x4
-    xc0 = _sumprod(a_dot_0, omega_0, a_dot_1, omega_1, a_dot_2, omega_2)
+    xc0 = _keep(_sumprod(a_dot_0, omega_0, a_dot_1, omega_1, a_dot_2, omega_2))
     _b9 = _b1*(omega_0*x3 - omega_1*x6) + _b2*x7 + _b5*x4 + _c7*omega_2 + _c8*omega_1 + _g3*xc0
     _b10 = -0.5*_b0/(x0*jax.numpy.sqrt(x0)) - _b9/(x0*x0)
     _c9 = 2.0*_b10
@@ -161,7 +168,7 @@ def _jvp(omega_0, omega_1, omega_2, a_0, a_1, a_2, a_dot_0, a_dot_1, a_dot_2, _t
     """The tangents of the outputs from those of the inputs, linear in the tangents:
     forward mode over ``_main``, 182 operations."""
     x0 = (omega_0*omega_0) + (omega_1*omega_1) + (omega_2*omega_2)
-    _d0 = 2.0*_t0*omega_0 + 2.0*_t1*omega_1 + 2.0*_t2*omega_2
+    _d0 = _keep(2.0*_t0*omega_0 + 2.0*_t1*omega_1 + 2.0*_t2*omega_2)
     x1 = 1.0/x0
     _d1 = -_d0/(x0*x0)
     x2 = a_0*omega_1 - a_1*omega_0 + a_dot_2
@@ -196,7 +203,7 @@ def _jvp(omega_0, omega_1, omega_2, a_0, a_1, a_2, a_dot_0, a_dot_1, a_dot_2, _t
     _e11 = _d9*x10
     _e12 = omega_2*x10
     _e13 = omega_1*x10
-    xc0 = _sumprod(a_dot_0, omega_0, a_dot_1, omega_1, a_dot_2, omega_2)
+    xc0 = _keep(_sumprod(a_dot_0, omega_0, a_dot_1, omega_1, a_dot_2, omega_2))
     return (
         _d5,
         _d8,

@@ -67,6 +67,13 @@ def _sumprod(*args):
         p = t
     return p + s
 
+
+def _keep(x):
+    if jax.default_backend() == "cpu":
+        pair = jax.numpy.stack([x, jax.numpy.full_like(x, -0.0)], -1)
+        x = (pair @ jax.numpy.eye(2, dtype=x.dtype))[..., 0]
+    return x
+
 OPS = 21
 MATH_HASH = "59e2107c6b1479ae"
 COLUMNS = ("I_C_00", "I_C_01", "I_C_02", "I_C_10", "I_C_11", "I_C_12", "I_C_20", "I_C_21", "I_C_22", "m", "omega_0", "omega_1", "omega_2", "c_dot_0", "c_dot_1", "c_dot_2", )
@@ -74,9 +81,9 @@ COLUMNS = ("I_C_00", "I_C_01", "I_C_02", "I_C_10", "I_C_11", "I_C_12", "I_C_20",
 
 def _main(I_C_00, I_C_01, I_C_02, I_C_10, I_C_11, I_C_12, I_C_20, I_C_21, I_C_22, m, omega_0, omega_1, omega_2, c_dot_0, c_dot_1, c_dot_2):
     x0 = (0.5)*m
-    xc0 = _sumprod(I_C_00, omega_0, I_C_10, omega_1, I_C_20, omega_2)
-    xc1 = _sumprod(I_C_01, omega_0, I_C_11, omega_1, I_C_21, omega_2)
-    xc2 = _sumprod(I_C_02, omega_0, I_C_12, omega_1, I_C_22, omega_2)
+    xc0 = _keep(_sumprod(I_C_00, omega_0, I_C_10, omega_1, I_C_20, omega_2))
+    xc1 = _keep(_sumprod(I_C_01, omega_0, I_C_11, omega_1, I_C_21, omega_2))
+    xc2 = _keep(_sumprod(I_C_02, omega_0, I_C_12, omega_1, I_C_22, omega_2))
     return (
         (c_dot_0*c_dot_0)*x0 + (c_dot_1*c_dot_1)*x0 + (c_dot_2*c_dot_2)*x0 + (0.5)*omega_0*xc0 + (0.5)*omega_1*xc1 + (0.5)*omega_2*xc2,
     ), (
@@ -103,9 +110,9 @@ def _vjp(I_C_00, I_C_01, I_C_02, I_C_10, I_C_11, I_C_12, I_C_20, I_C_21, I_C_22,
     _c6 = (0.5)*omega_1
     _c7 = (0.5)*omega_2
     _c8 = 2.0*_g0*x0
-    xc0 = _sumprod(I_C_00, omega_0, I_C_10, omega_1, I_C_20, omega_2)
-    xc1 = _sumprod(I_C_01, omega_0, I_C_11, omega_1, I_C_21, omega_2)
-    xc2 = _sumprod(I_C_02, omega_0, I_C_12, omega_1, I_C_22, omega_2)
+    xc0 = _keep(_sumprod(I_C_00, omega_0, I_C_10, omega_1, I_C_20, omega_2))
+    xc1 = _keep(_sumprod(I_C_01, omega_0, I_C_11, omega_1, I_C_21, omega_2))
+    xc2 = _keep(_sumprod(I_C_02, omega_0, I_C_12, omega_1, I_C_22, omega_2))
     return (
         _c0*(omega_0*omega_0),
         _c2,
@@ -138,9 +145,9 @@ def _jvp(I_C_00, I_C_01, I_C_02, I_C_10, I_C_11, I_C_12, I_C_20, I_C_21, I_C_22,
     _e4 = (0.5)*omega_1
     _e5 = _e4*omega_2
     _e6 = (0.5)*omega_2
-    xc0 = _sumprod(I_C_00, omega_0, I_C_10, omega_1, I_C_20, omega_2)
-    xc1 = _sumprod(I_C_01, omega_0, I_C_11, omega_1, I_C_21, omega_2)
-    xc2 = _sumprod(I_C_02, omega_0, I_C_12, omega_1, I_C_22, omega_2)
+    xc0 = _keep(_sumprod(I_C_00, omega_0, I_C_10, omega_1, I_C_20, omega_2))
+    xc1 = _keep(_sumprod(I_C_01, omega_0, I_C_11, omega_1, I_C_21, omega_2))
+    xc2 = _keep(_sumprod(I_C_02, omega_0, I_C_12, omega_1, I_C_22, omega_2))
     return (
         _d0*((c_dot_0*c_dot_0) + (c_dot_1*c_dot_1) + (c_dot_2*c_dot_2)) + _e1*_t1 + _e1*_t3 + _e2*_t13*c_dot_0 + _e2*_t14*c_dot_1 + _e2*_t15*c_dot_2 + _e3*_t2 + _e3*_t6 + _e5*_t5 + _e5*_t7 + (0.5)*_t0*(omega_0*omega_0) + _t10*(I_C_00*_e0 + I_C_01*_e4 + I_C_02*_e6 + (0.5)*xc0) + _t11*(I_C_10*_e0 + I_C_11*_e4 + I_C_12*_e6 + (0.5)*xc1) + _t12*(I_C_20*_e0 + I_C_21*_e4 + I_C_22*_e6 + (0.5)*xc2) + (0.5)*_t4*(omega_1*omega_1) + (0.5)*_t8*(omega_2*omega_2),
     )

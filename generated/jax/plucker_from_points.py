@@ -68,6 +68,13 @@ def _sumprod(*args):
         p = t
     return p + s
 
+
+def _keep(x):
+    if jax.default_backend() == "cpu":
+        pair = jax.numpy.stack([x, jax.numpy.full_like(x, -0.0)], -1)
+        x = (pair @ jax.numpy.eye(2, dtype=x.dtype))[..., 0]
+    return x
+
 OPS = 22
 MATH_HASH = "37ca360961ff48ba"
 COLUMNS = ("p1_0", "p1_1", "p1_2", "p2_0", "p2_1", "p2_2", )
@@ -79,9 +86,9 @@ def _main(p1_0, p1_1, p1_2, p2_0, p2_1, p2_2):
     x2 = -p1_2 + p2_2
     x3 = (x0*x0) + (x1*x1) + (x2*x2)
     x4 = 1.0/jax.numpy.sqrt(x3)
-    xc0 = _diffprod(p1_1, p2_2, p1_2, p2_1)
-    xc1 = _diffprod(-p1_0, p2_2, -p1_2, p2_0)
-    xc2 = _diffprod(p1_0, p2_1, p1_1, p2_0)
+    xc0 = _keep(_diffprod(p1_1, p2_2, p1_2, p2_1))
+    xc1 = _keep(_diffprod(-p1_0, p2_2, -p1_2, p2_0))
+    xc2 = _keep(_diffprod(p1_0, p2_1, p1_1, p2_0))
     return (
         x0*x4,
         x1*x4,
@@ -108,9 +115,9 @@ def _vjp(p1_0, p1_1, p1_2, p2_0, p2_1, p2_2, _g0, _g1, _g2, _g3, _g4, _g5):
     x2 = -p1_2 + p2_2
     x3 = (x0*x0) + (x1*x1) + (x2*x2)
     x4 = 1.0/jax.numpy.sqrt(x3)
-    xc0 = _diffprod(p1_1, p2_2, p1_2, p2_1)
-    xc1 = _diffprod(-p1_0, p2_2, -p1_2, p2_0)
-    xc2 = _diffprod(p1_0, p2_1, p1_1, p2_0)
+    xc0 = _keep(_diffprod(p1_1, p2_2, p1_2, p2_1))
+    xc1 = _keep(_diffprod(-p1_0, p2_2, -p1_2, p2_0))
+    xc2 = _keep(_diffprod(p1_0, p2_1, p1_1, p2_0))
     _b0 = _g0*x0 + _g1*x1 + _g2*x2 + _g3*xc0 + _g4*xc1 + _g5*xc2
     _b1 = -0.5*_b0/(x3*jax.numpy.sqrt(x3))
     _c0 = 2.0*_b1
@@ -140,16 +147,16 @@ def _jvp(p1_0, p1_1, p1_2, p2_0, p2_1, p2_2, _t0, _t1, _t2, _t3, _t4, _t5):
     x2 = -p1_2 + p2_2
     _d2 = -_t2 + _t5
     x3 = (x0*x0) + (x1*x1) + (x2*x2)
-    _d3 = 2.0*_d0*x0 + 2.0*_d1*x1 + 2.0*_d2*x2
+    _d3 = _keep(2.0*_d0*x0 + 2.0*_d1*x1 + 2.0*_d2*x2)
     x4 = 1.0/jax.numpy.sqrt(x3)
     _d4 = -0.5*_d3/(x3*jax.numpy.sqrt(x3))
     _e0 = p2_2*x4
     _e1 = _t5*x4
     _e2 = _t2*x4
     _e3 = p1_2*x4
-    xc0 = _diffprod(p1_1, p2_2, p1_2, p2_1)
-    xc1 = _diffprod(-p1_0, p2_2, -p1_2, p2_0)
-    xc2 = _diffprod(p1_0, p2_1, p1_1, p2_0)
+    xc0 = _keep(_diffprod(p1_1, p2_2, p1_2, p2_1))
+    xc1 = _keep(_diffprod(-p1_0, p2_2, -p1_2, p2_0))
+    xc2 = _keep(_diffprod(p1_0, p2_1, p1_1, p2_0))
     return (
         _d0*x4 + _d4*x0,
         _d1*x4 + _d4*x1,

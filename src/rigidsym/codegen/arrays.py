@@ -50,6 +50,23 @@ def _cos(x):
 '''
 
 
+#: the JAX programs' named compensated sums (``xc0 = _keep(_sumprod(...))``,
+#: :func:`hoist_compensated`): XLA on the CPU fused the ~65 operations of the compensated
+#: pitch of instant_screw_axis into each of the 6 fusions reading it (jit value + gradient
+#: 2.2-2.6x a hand-written formula at N = 1e3 on one core); through a dot, as the
+#: ``_sincos`` pair, it is computed once (exact: x 1 + (-0) 0 = x; XLA's CPU code flushes
+#: subnormals wherever it computes). ``jax.lax.optimization_barrier`` does not stop it: XLA
+#: removes it before fusion (issue 38)
+JAX_KEEP_SOURCE = '''
+
+def _keep(x):
+    if jax.default_backend() == "cpu":
+        pair = jax.numpy.stack([x, jax.numpy.full_like(x, -0.0)], -1)
+        x = (pair @ jax.numpy.eye(2, dtype=x.dtype))[..., 0]
+    return x
+'''
+
+
 def _printer(backend: str):
     return torch_printer() if backend == "torch" else KernelJaxPrinter()
 
@@ -122,18 +139,41 @@ def _lines(pr, temps: list, outputs: list) -> list[tuple[str, str]]:
 
     def place(expr) -> None:
         for n in [n for n in todo if sp.sympify(expr).has(n)]:
-            out.append((todo.pop(n), pr.compensated_call(n)))
+            out.append((todo.pop(n), pr.named_call(n)))
 
     for s, e in temps:
         if todo.get(e) == str(s):  # the temp is the node: computed there
             del todo[e]
-            out.append((str(s), pr.compensated_call(e)))
+            out.append((str(s), pr.named_call(e)))
             continue
         place(e)
         out.append((str(s), pr.doprint(e)))
     for o in outputs:
         place(o)
     return out
+
+
+def _kept_tangents(program, lines: list, backend: str) -> list:
+    """JAX: the printed JVP with the tangent of each denominator that is a temp (``_d<k>``
+    of temp ``k``: a norm every output reads through a quotient) through ``_keep``. Its
+    transpose then sums the denominator's cotangent once: XLA had fused that sum of every
+    output's contribution into each input's cotangent column (instant_screw_axis, one
+    core, N = 1e3: jit value + gradient 1.12-1.21x -> 0.89x a hand-written formula in
+    float32, 0.96-1.00x -> 0.76x in float64; keeping every tangent: 1.22x; issue 38). Only
+    a denominator of two input columns or more."""
+    if backend != "jax":
+        return lines
+    dens, defs = {sp.sympify(d) for d in program.dens}, dict(program.temps)
+
+    def inputs(x) -> set:  # the input columns temp x reads, through other temps
+        return set().union(*(inputs(s) if s in defs else {s}
+                             for s in defs[x].free_symbols))
+
+    # a denominator of one input column has one cotangent column to feed: nothing to share
+    # (L_tilde, N_matrix: 2-10 % slower with the dot)
+    keep = {f"_d{k}" for k, (x, _) in enumerate(program.temps)
+            if x in dens and len(inputs(x)) >= 2}
+    return [(s, f"_keep({e})" if s in keep else e) for s, e in lines]
 
 
 def render_array_kernels(env, kc: Any, header) -> dict[str, str]:
@@ -169,12 +209,16 @@ def render_array_kernels(env, kc: Any, header) -> dict[str, str]:
             "saved": _saved(kc.variants[0].program, vjp, hoisted),
             "outputs": [pr.doprint(e) for e in vjp.outputs], "ops": vjp.ops,
             "targs": columns + tangent_names(len(columns)),
-            "ttemps": _lines(pr, jvp.temps, jvp.outputs),
+            "ttemps": _kept_tangents(kc.variants[0].program, _lines(pr, jvp.temps,
+                                                                    jvp.outputs), backend),
             "toutputs": [pr.doprint(e) for e in jvp.outputs], "tops": jvp.ops}
         helpers = [ARRAY_SOURCE.strip("\n").replace("{module}", module)] if \
             uses_diffprod(kc) else []
         if backend == "jax" and _calls_trig(variants, back):
             helpers.append(JAX_TRIG_SOURCE.strip("\n"))
+        kept = back is not None and any(e.startswith("_keep(") for _, e in back["ttemps"])
+        if backend == "jax" and (hoisted or kept):
+            helpers.append(JAX_KEEP_SOURCE.strip("\n"))
         files[f"{backend}/{kc.kernel.name}.py"] = env.get_template(t).render(
             header=header(t), backend=backend, module=module, k=kc.kernel, ops=kc.ops,
             hash=kc.hash, columns=columns, variants=variants, vjp=back,

@@ -52,6 +52,11 @@ class _PowMixin:
             self._sumprod.format(n=len(expr.args) // 2)
         return f"{name}({', '.join(self._print(a) for a in expr.args)})"
 
+    def named_call(self, expr) -> str:
+        """The right-hand side of the named temp (``named``) of the compensated node
+        ``expr``: its helper's call (the JAX printer wraps it)."""
+        return self.compensated_call(expr)
+
     def _print_DiffProd(self, expr):
         return self.named.get(expr) or self.compensated_call(expr)
 
@@ -235,6 +240,10 @@ class KernelJaxPrinter(KernelNumPyPrinter, JaxPrinter):
 
     def _print_Integer(self, expr):
         return f"{int(expr)}.0"
+
+    def named_call(self, expr) -> str:
+        # computed once for all its readers (JAX_KEEP_SOURCE, issue 38)
+        return f"_keep({self.compensated_call(expr)})"
 
     # the sine and cosine of one argument share one evaluation (JAX_TRIG_SOURCE, issue 38)
     def _print_sin(self, expr):

@@ -287,27 +287,31 @@ class Space:
         cols = self._safe_columns(name, xs, singular)
         return shape_outputs(xp, list(fn(*cols, *_cotangents(grads, outs))), args, cols[0])
 
-    def jvp(self, name: str, xs, tangents: list, singular) -> list:
+    def jvp(self, name: str, xs, tangents: list, singular, finite: bool = False) -> list:
         """The tangents of the outputs from those of the inputs (arrays, zeros for none):
         the generated forward-mode program, linear in the tangents, zero in the
         ``singular`` samples (whose values are NaN or an error); the Jacobian kernel then
-        a contraction in a folder generated without it."""
+        a contraction in a folder generated without it. ``finite``: as :meth:`values`'
+        (the columns its own, so that XLA computes the forward temps once for both)."""
         meta, xp = self.progs.meta[name], self.lib.xp
         args, outs = meta["args"], meta["outputs"]
         fn = self.progs.vjp(name, "jvp")
         if fn is None:
             return contract(xp, tangents, self.jacobian(name, xs, singular), outs, args,
                             forward=True, singular=singular)
-        cols = self._safe_columns(name, xs, singular)
+        cols = self._safe_columns(name, xs, singular, finite)
         flat = list(fn(*cols, *columns(tangents, args)))
         if self.progs.divides(name):
             flat = [xp.where(singular, 0.0, _full(xp, v, cols[0])) for v in flat]
         return shape_outputs(xp, flat, outs, cols[0])
 
-    def _safe_columns(self, name: str, xs, singular) -> list:
+    def _safe_columns(self, name: str, xs, singular, finite: bool = False) -> list:
         """The columns of ``xs``, the safe point's in the ``singular`` samples (no
-        ``where`` without a denominator or with a clear eager mask, issue 38)."""
+        ``where`` without a denominator or with a clear eager mask, issue 38); ``finite``:
+        inf as NaN first, as :meth:`values`."""
         cols, where = columns(xs, self.progs.meta[name]["args"]), self.lib.xp.where
+        if finite and not self.progs.propagates_inf(name):
+            cols = _ar.finite_columns(cols)
         if self.regular(name, singular):
             return cols
         return [where(singular, v, c) for v, c in zip(self._safe(name), cols, strict=True)]

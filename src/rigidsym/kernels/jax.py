@@ -106,7 +106,7 @@ def _make(space: _arrays.Space, name: str):
         # on other inputs (issue 38: the backward reuses the forward's subexpressions)
         res = space.values(name, primals, divides, _traced(primals))
         # the generated forward-mode program, linear in the tangents (JAX transposes it)
-        touts = space.jvp(name, primals, list(tangents), res[-1])
+        touts = space.jvp(name, primals, list(tangents), res[-1], _traced(primals))
         zero = np.zeros(res[-1].shape, dtype=jax.dtypes.float0)
         return res, (*touts, zero)
 
