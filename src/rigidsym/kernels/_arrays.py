@@ -341,9 +341,11 @@ class Space:
         elif clear:  # no sample singular, of non-finite output or input: nothing to flag
             return res[0] if len(res) == 1 else tuple(res)
         # a result that does not fit the dtype, from finite inputs (a NaN input's NaN is
-        # its IEEE value, issue 37)
-        over = nonfinite_rows(xp, res, batch) & ~nonfinite_rows(xp, full, batch)
-        sing, bad = bad, bad | over
+        # its IEEE value, issue 37); a compiled function may have flagged them already
+        sing = bad
+        if not (lib.finite_inside() and res[0].dtype == dtype and
+                getattr(self.function(name), "flags_overflow", False)):
+            bad = bad | (nonfinite_rows(xp, res, batch) & ~nonfinite_rows(xp, full, batch))
         if on_singular == "raise":
             if bool(bad.any()):  # the error path copies the masks to the host
                 raise_flagged(name, meta, lib.host(sing), lib.host(bad & ~sing),

@@ -118,7 +118,7 @@ def nonfinite_rows(xp, arrays: list, batch: tuple):
     would copy every output once more."""
     total = None
     for a in arrays:
-        s = (a.reshape(batch + (-1,)) * 0).sum(-1)
+        s = (a.reshape(batch + (-1,)) * 0.0).sum(-1)
         total = s if total is None else total + s
     return xp.isnan(total)
 

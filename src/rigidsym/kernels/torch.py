@@ -202,10 +202,11 @@ def _make(space: _arrays.Space, name: str):
     nout = len(space.progs.meta[name]["outputs"])
     if space.progs.vjp(name, "saved"):
         compiled = _compiled_saving(space, name)
+    traced = _in_graph(compiled, nout)
 
     def apply(*xs):
         if torch.compiler.is_compiling():
-            return compiled.apply(*xs)[:nout + 1]
+            return traced(*xs)
         if fast is None or torch._C._are_functorch_transforms_active():
             return eager.apply(*xs)
         if not _recorded(xs):  # nothing to differentiate: the program alone
@@ -213,7 +214,24 @@ def _make(space: _arrays.Space, name: str):
             return space.values(name, xs) if host is None else (*host[0], host[1])
         return fast(*xs)
 
+    # compiled, the mask returned holds the samples whose result overflowed (Space.call)
+    apply.flags_overflow = getattr(compiled, "flags_overflow", False)
     return apply
+
+
+def _in_graph(cls, nout: int):
+    """``cls.apply`` (its outputs and mask) as one call in Dynamo's graph
+    (``torch.compiler.allow_in_graph``): Dynamo does not trace its Python bytecode by
+    bytecode, AOTAutograd traces the forward and the backward at tensor-operation level
+    (issue 38, the first compile: Dynamo's trace of the Function's forward, backward and
+    outputs took ~0.8 s of ``instant_screw_axis``'s, the hand-written formula's whole trace
+    ~0.2 s). Sound here: the function reads no Python state a guard would have to
+    watch (the kernel's programs are fixed; the inputs' dtypes and devices Dynamo guards on
+    the tensors) and mutates none."""
+    def call(*xs):
+        return cls.apply(*xs)[:nout + 1]
+
+    return torch.compiler.allow_in_graph(call)
 
 
 def _saving(space: _arrays.Space, name: str):
@@ -267,17 +285,23 @@ def _compiled_saving(space: _arrays.Space, name: str):
     nargs, nout = len(meta["args"]), len(meta["outputs"])
     # the kernel's name an argument: Dynamo keeps one constant per code object and
     # arguments (one lambda without arguments gave every kernel the first one's temps)
-    at_safe = space.lib.constant(lambda n: _torch_host.safe_temps(space.progs, n))
+    safe = _torch_host.safe_temps(space.progs, name)  # now: a host run (not under a trace)
+    at_safe = space.lib.constant(lambda n: safe)
 
     def values(xs):
         # an inf input taken as NaN inside, as Space.values(finite=True)
-        cols = columns(xs, meta["args"])
+        cols = raw = columns(xs, meta["args"])
         if not space.progs.propagates_inf(name):
             cols = finite_columns(cols)
         outs, dens, temps = space.progs.vjp(name, "saved")[0](*cols)
-        sing = singular_mask(xp, dens, cols[0])
-        if space.progs.divides(name):
-            temps = [xp.where(sing, v, t) for v, t in zip(at_safe(name), temps, strict=True)]
+        # the samples whose result does not fit the dtype, from finite inputs (Space.call's
+        # rule), found here on the columns: pointwise, fused into the program's kernel
+        # (on the stacked outputs it was a reduction per output and per input, a buffer
+        # each for inductor); singular with them: their temps the safe point's too (an
+        # overflowed temp times the zero cotangent there is NaN)
+        sing = singular_mask(xp, dens, cols[0]) | (
+            _nonfinite(outs, cols[0]) & ~_nonfinite(raw, cols[0]))
+        temps = [xp.where(sing, v, t) for v, t in zip(at_safe(name), temps, strict=True)]
         return (*shape_outputs(xp, list(outs), meta["outputs"], cols[0]), sing,
                 *temps)
 
@@ -292,10 +316,22 @@ def _compiled_saving(space: _arrays.Space, name: str):
             return tuple(space.vjp(name, xs, list(grads[:nout]), sing))
         return tuple(space.vjp_saved(name, xs, temps, list(grads[:nout]), sing))
 
-    return type(f"{name}_compiled_saving_function", (torch.autograd.Function,), {
+    fn = type(f"{name}_compiled_saving_function", (torch.autograd.Function,), {
         "generate_vmap_rule": True, "setup_context": staticmethod(setup_context),
         "backward": staticmethod(backward), "forward": staticmethod(_fixed_arity(
             values, nargs))})
+    fn.flags_overflow = True  # Space.call: its mask holds the overflowed samples already
+    return fn
+
+
+def _nonfinite(cols, like):
+    """The batch mask of the samples with an inf or NaN among ``cols`` (scalar columns or
+    constants): one NaN-propagating sum of ``0.0 * c`` (a float zero: inductor folds an
+    integer ``x * 0`` to zeros, which hid every overflow under torch.compile, issue 38)."""
+    total = torch.zeros_like(like)
+    for c in cols:
+        total = total + c * 0.0
+    return torch.isnan(total)
 
 
 def _plain_apply(cls):
