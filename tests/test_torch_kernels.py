@@ -307,6 +307,22 @@ def test_inductor_with_grad(name):
     _compiled_matches(name, "inductor")
 
 
+@pytest.mark.slow
+def test_inductor_flags_an_overflowed_result():
+    """A result that does not fit the dtype from finite inputs is NaN in its whole row under
+    inductor as in eager mode (issue 37's rule). Old main returned the pitch inf there and
+    the row's other outputs as numbers: inductor folds an integer ``x * 0`` to zeros,
+    which removed the check (``_arrays_eval.nonfinite_rows``)."""
+    omega = torch.tensor([[1e-10, 0.0, 0.0], [0.3, -0.2, 1.0]], dtype=torch.float64)
+    a = torch.zeros(2, 3, dtype=torch.float64)
+    a_dot = torch.tensor([[1e300, 0.0, 0.0], [0.5, 0.1, -0.4]], dtype=torch.float64)
+    f = torch.compile(rk.instant_screw_axis, backend="inductor", fullgraph=True)
+    got, want = f(omega, a, a_dot), rk.instant_screw_axis(omega, a, a_dot, on_singular="nan")
+    for g, w in zip(got, want, strict=True):
+        assert torch.isnan(g[0]).all() and torch.isnan(w[0]).all()
+        _close(g[1], w[1], 1e-12)
+
+
 def test_inside_a_module_with_its_own_parameters():
     class Screw(torch.nn.Module):
         def __init__(self):

@@ -57,6 +57,7 @@ from rigidsym.kernels import _arrays, _arrays_api, _torch_host
 from rigidsym.kernels._arrays_eval import columns, shape_outputs, singular_mask
 from rigidsym.kernels._arrays_rescue import finite_columns
 from rigidsym.kernels._errors import NonFiniteResultError, SingularConfigurationError
+from rigidsym.kernels._jacobian import full_batch
 
 __all__ = ["load", "euler_rate_matrix", "euler_angle_rates", "SingularConfigurationError",
            "NonFiniteResultError"]
@@ -283,25 +284,20 @@ def _compiled_saving(space: _arrays.Space, name: str):
     recomputes, as :func:`_function`'s."""
     meta, xp = space.progs.meta[name], torch
     nargs, nout = len(meta["args"]), len(meta["outputs"])
-    # the kernel's name an argument: Dynamo keeps one constant per code object and
-    # arguments (one lambda without arguments gave every kernel the first one's temps)
-    safe = _torch_host.safe_temps(space.progs, name)  # now: a host run (not under a trace)
-    at_safe = space.lib.constant(lambda n: safe)
+    forward, vjp = space.progs.vjp(name, "saved")
 
     def values(xs):
         # an inf input taken as NaN inside, as Space.values(finite=True)
         cols = raw = columns(xs, meta["args"])
         if not space.progs.propagates_inf(name):
             cols = finite_columns(cols)
-        outs, dens, temps = space.progs.vjp(name, "saved")[0](*cols)
+        outs, dens, temps = forward(*cols)
         # the samples whose result does not fit the dtype, from finite inputs (Space.call's
         # rule), found here on the columns: pointwise, fused into the program's kernel
         # (on the stacked outputs it was a reduction per output and per input, a buffer
-        # each for inductor); singular with them: their temps the safe point's too (an
-        # overflowed temp times the zero cotangent there is NaN)
+        # each for inductor)
         sing = singular_mask(xp, dens, cols[0]) | (
             _nonfinite(outs, cols[0]) & ~_nonfinite(raw, cols[0]))
-        temps = [xp.where(sing, v, t) for v, t in zip(at_safe(name), temps, strict=True)]
         return (*shape_outputs(xp, list(outs), meta["outputs"], cols[0]), sing,
                 *temps)
 
@@ -314,7 +310,12 @@ def _compiled_saving(space: _arrays.Space, name: str):
         xs, sing, temps = saved[:nargs], saved[nargs], saved[nargs + 1:]
         if torch.is_grad_enabled():
             return tuple(space.vjp(name, xs, list(grads[:nout]), sing))
-        return tuple(space.vjp_saved(name, xs, temps, list(grads[:nout]), sing))
+        # the flagged samples' cotangents are zero (Space.call's NaN there is a where):
+        # their inputs' too, set after the VJP, which may be NaN there (0 * inf)
+        cols = columns(xs, meta["args"])
+        flat = vjp(*cols, *temps, *_arrays._cotangents(list(grads[:nout]), meta["outputs"]))
+        flat = [torch.where(sing, 0.0, full_batch(xp, v, cols[0])) for v in flat]
+        return tuple(shape_outputs(xp, flat, meta["args"], cols[0]))
 
     fn = type(f"{name}_compiled_saving_function", (torch.autograd.Function,), {
         "generate_vmap_rule": True, "setup_context": staticmethod(setup_context),
