@@ -54,10 +54,10 @@ except ImportError as _exc:  # pragma: no cover - exercised where PyTorch is abs
 import numpy as np
 
 from rigidsym.kernels import _arrays, _arrays_api, _torch_host
-from rigidsym.kernels._arrays_eval import columns, shape_outputs, singular_mask
-from rigidsym.kernels._arrays_rescue import finite_columns
 from rigidsym.kernels._errors import NonFiniteResultError, SingularConfigurationError
-from rigidsym.kernels._jacobian import full_batch
+from rigidsym.kernels._torch_compiled import compiled_saving as _compiled_saving
+from rigidsym.kernels._torch_compiled import fixed_arity as _fixed_arity
+from rigidsym.kernels._torch_compiled import in_graph as _in_graph
 
 __all__ = ["load", "euler_rate_matrix", "euler_angle_rates", "SingularConfigurationError",
            "NonFiniteResultError"]
@@ -139,15 +139,6 @@ def _as_tensor(v, dtype, device, name: str) -> torch.Tensor:
     return torch.as_tensor(v, dtype=dtype, device=device)
 
 
-def _fixed_arity(values, n: int):
-    """``forward(x0, ..., x{n-1})``: Dynamo reads a ``forward(*xs)`` as taking ``ctx``
-    first, so the arity is spelled out (the kernels' argument counts differ)."""
-    params = ", ".join(f"x{i}" for i in range(n))
-    scope: dict = {"values": values}
-    exec(f"def forward({params}):\n    return values(({params},))\n", scope)  # noqa: S102
-    return scope["forward"]
-
-
 def _differentiable(xs) -> bool:
     """Autograd may run through ``xs``: grad mode with an input requiring grad, or a
     torch.func transform (its wrapped tensors)."""
@@ -220,21 +211,6 @@ def _make(space: _arrays.Space, name: str):
     return apply
 
 
-def _in_graph(cls, nout: int):
-    """``cls.apply`` (its outputs and mask) as one call in Dynamo's graph
-    (``torch.compiler.allow_in_graph``): Dynamo does not trace its Python bytecode by
-    bytecode, AOTAutograd traces the forward and the backward at tensor-operation level
-    (issue 38, the first compile: Dynamo's trace of the Function's forward, backward and
-    outputs took ~0.8 s of ``instant_screw_axis``'s, the hand-written formula's whole trace
-    ~0.2 s). Sound here: the function reads no Python state a guard would have to
-    watch (the kernel's programs are fixed; the inputs' dtypes and devices Dynamo guards on
-    the tensors) and mutates none."""
-    def call(*xs):
-        return cls.apply(*xs)[:nout + 1]
-
-    return torch.compiler.allow_in_graph(call)
-
-
 def _saving(space: _arrays.Space, name: str):
     """The ``torch.autograd.Function`` of eager autograd outside torch.func (issue 38: the
     backward reuses the forward's common subexpressions): its forward saves the temps the
@@ -272,67 +248,6 @@ def _saving(space: _arrays.Space, name: str):
 
     return type(f"{name}_saving_function", (torch.autograd.Function,),
                 {"forward": staticmethod(forward), "backward": staticmethod(backward)})
-
-
-def _compiled_saving(space: _arrays.Space, name: str):
-    """The ``torch.autograd.Function`` of a traced call (torch.compile) of a kernel with
-    ``SAVED`` programs (issue 38, the first compile: fewer operations for Dynamo to trace
-    and inductor to compile): the forward returns, as non-differentiable outputs after the
-    mask, the temps the VJP reads, those of the singular samples the safe point's (a
-    trace-time constant: the VJP there takes the safe point, as ``Space.vjp``); the
-    backward takes them, no forward temp computed again. A backward differentiated again
-    recomputes, as :func:`_function`'s."""
-    meta, xp = space.progs.meta[name], torch
-    nargs, nout = len(meta["args"]), len(meta["outputs"])
-    forward, vjp = space.progs.vjp(name, "saved")
-
-    def values(xs):
-        # an inf input taken as NaN inside, as Space.values(finite=True)
-        cols = raw = columns(xs, meta["args"])
-        if not space.progs.propagates_inf(name):
-            cols = finite_columns(cols)
-        outs, dens, temps = forward(*cols)
-        # the samples whose result does not fit the dtype, from finite inputs (Space.call's
-        # rule), found here on the columns: pointwise, fused into the program's kernel
-        # (on the stacked outputs it was a reduction per output and per input, a buffer
-        # each for inductor)
-        sing = singular_mask(xp, dens, cols[0]) | (
-            _nonfinite(outs, cols[0]) & ~_nonfinite(raw, cols[0]))
-        return (*shape_outputs(xp, list(outs), meta["outputs"], cols[0]), sing,
-                *temps)
-
-    def setup_context(ctx, inputs, output):
-        ctx.save_for_backward(*inputs, *output[nout:])
-        ctx.mark_non_differentiable(*output[nout:])
-
-    def backward(ctx, *grads):
-        saved = ctx.saved_tensors
-        xs, sing, temps = saved[:nargs], saved[nargs], saved[nargs + 1:]
-        if torch.is_grad_enabled():
-            return tuple(space.vjp(name, xs, list(grads[:nout]), sing))
-        # the flagged samples' cotangents are zero (Space.call's NaN there is a where):
-        # their inputs' too, set after the VJP, which may be NaN there (0 * inf)
-        cols = columns(xs, meta["args"])
-        flat = vjp(*cols, *temps, *_arrays._cotangents(list(grads[:nout]), meta["outputs"]))
-        flat = [torch.where(sing, 0.0, full_batch(xp, v, cols[0])) for v in flat]
-        return tuple(shape_outputs(xp, flat, meta["args"], cols[0]))
-
-    fn = type(f"{name}_compiled_saving_function", (torch.autograd.Function,), {
-        "generate_vmap_rule": True, "setup_context": staticmethod(setup_context),
-        "backward": staticmethod(backward), "forward": staticmethod(_fixed_arity(
-            values, nargs))})
-    fn.flags_overflow = True  # Space.call: its mask holds the overflowed samples already
-    return fn
-
-
-def _nonfinite(cols, like):
-    """The batch mask of the samples with an inf or NaN among ``cols`` (scalar columns or
-    constants): one NaN-propagating sum of ``0.0 * c`` (a float zero: inductor folds an
-    integer ``x * 0`` to zeros, which hid every overflow under torch.compile, issue 38)."""
-    total = torch.zeros_like(like)
-    for c in cols:
-        total = total + c * 0.0
-    return torch.isnan(total)
 
 
 def _plain_apply(cls):
