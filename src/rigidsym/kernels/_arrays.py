@@ -342,10 +342,12 @@ class Space:
             return res[0] if len(res) == 1 else tuple(res)
         # a result that does not fit the dtype, from finite inputs (a NaN input's NaN is
         # its IEEE value, issue 37); a compiled function may have flagged them already
+        if lib.finite_inside() and res[0].dtype == dtype and \
+                getattr(self.function(name), "flags_overflow", False):
+            # a compiled function that flagged the overflowed samples and set NaN there
+            return res[0] if len(res) == 1 else tuple(res)
         sing = bad
-        if not (lib.finite_inside() and res[0].dtype == dtype and
-                getattr(self.function(name), "flags_overflow", False)):
-            bad = bad | (nonfinite_rows(xp, res, batch) & ~nonfinite_rows(xp, full, batch))
+        bad = bad | (nonfinite_rows(xp, res, batch) & ~nonfinite_rows(xp, full, batch))
         if on_singular == "raise":
             if bool(bad.any()):  # the error path copies the masks to the host
                 raise_flagged(name, meta, lib.host(sing), lib.host(bad & ~sing),

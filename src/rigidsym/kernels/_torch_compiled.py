@@ -37,11 +37,12 @@ def compiled_saving(space: _arrays.Space, name: str):
     meta, xp = space.progs.meta[name], torch
     nargs, nout = len(meta["args"]), len(meta["outputs"])
     forward, vjp = space.progs.vjp(name, "saved")
+    inf = space.progs.propagates_inf(name)
 
     def values(xs):
         # an inf input taken as NaN inside, as Space.values(finite=True)
         cols = raw = columns(xs, meta["args"])
-        if not space.progs.propagates_inf(name):
+        if not inf:
             cols = finite_columns(cols)
         outs, dens, temps = forward(*cols)
         # the samples whose result does not fit the dtype, from finite inputs (Space.call's
@@ -50,8 +51,12 @@ def compiled_saving(space: _arrays.Space, name: str):
         # each for inductor)
         sing = singular_mask(xp, dens, cols[0]) | (
             nonfinite(outs, cols[0]) & ~nonfinite(raw, cols[0]))
-        return (*shape_outputs(xp, list(outs), meta["outputs"], cols[0]), sing,
-                *temps)
+        # NaN in the flagged samples here, column by column (Space.call's where on the
+        # stacked outputs read each stack once more: a buffer each for inductor); a program
+        # that keeps inf inputs: its non-finite outputs NaN too, as Space.call's
+        outs = [torch.where(sing | torch.isinf(v) if inf else sing, torch.nan, v)
+                for v in (full_batch(xp, v, cols[0]) for v in outs)]
+        return (*shape_outputs(xp, outs, meta["outputs"], cols[0]), sing, *temps)
 
     def setup_context(ctx, inputs, output):
         ctx.save_for_backward(*inputs, *output[nout:])
@@ -60,10 +65,12 @@ def compiled_saving(space: _arrays.Space, name: str):
     def backward(ctx, *grads):
         saved = ctx.saved_tensors
         xs, sing, temps = saved[:nargs], saved[nargs], saved[nargs + 1:]
-        if torch.is_grad_enabled():
-            return tuple(space.vjp(name, xs, list(grads[:nout]), sing))
-        # the flagged samples' cotangents are zero (Space.call's NaN there is a where):
-        # their inputs' too, set after the VJP, which may be NaN there (0 * inf)
+        if torch.is_grad_enabled():  # the safe point's inputs in the flagged samples
+            return tuple(torch.where(sing.reshape(sing.shape + (1,) * (g.ndim - sing.ndim)),
+                                     0.0, g)
+                         for g in space.vjp(name, xs, list(grads[:nout]), sing))
+        # the flagged samples' outputs are NaN whatever the inputs: their inputs'
+        # cotangents zero, set after the VJP, which may be NaN there (0 * inf)
         cols = columns(xs, meta["args"])
         flat = vjp(*cols, *temps, *_arrays._cotangents(list(grads[:nout]), meta["outputs"]))
         flat = [torch.where(sing, 0.0, full_batch(xp, v, cols[0])) for v in flat]
@@ -73,7 +80,8 @@ def compiled_saving(space: _arrays.Space, name: str):
         "generate_vmap_rule": True, "setup_context": staticmethod(setup_context),
         "backward": staticmethod(backward), "forward": staticmethod(fixed_arity(
             values, nargs))})
-    fn.flags_overflow = True  # Space.call: its mask holds the overflowed samples already
+    # Space.call: its mask holds the overflowed samples, its outputs are NaN where flagged
+    fn.flags_overflow = True
     return fn
 
 
