@@ -247,14 +247,21 @@ def _diff(c, ref, at_input, sl, bound) -> float:
     point's output is then -w (the log of SO(3)), or [-w; J_l(-w)^-1 p] (the log of SE(3),
     not the negation of [w; v]), a jump that no derivative (kappa) sees; the kernel is
     judged by its documented sign rule at its own input there (a Jacobian kernel's derivative
-    is then that of the other logarithm, ``d phi e - phi de`` for ``d phi e + phi de``)."""
+    is then that of the other logarithm, ``d phi e - phi de`` for ``d phi e + phi de``).
+
+    Only such a jump (the formula at the input at least 1e-3 of the output's norm away from
+    ``ref``) is forgiven: near phi = 0 the declared formula at a rounded Q (off SO(3))
+    reads Q's diagonal, 1e8 u from the truth, and forgiving that would make the textbook,
+    which does the same, a yardstick of 1 u (screw_of_displacement's `Q: phi -> 0` row)."""
     if not np.isfinite(c).all():
         return np.inf
     d = float(np.linalg.norm(c - ref))
     if d <= bound or at_input is None:
         return d
     v = at_input.get()
-    return d if v is None else min(d, float(np.linalg.norm(c - v[sl])))
+    if v is None or np.linalg.norm(v[sl] - ref) < 1e-3 * np.linalg.norm(ref):
+        return d
+    return min(d, float(np.linalg.norm(c - v[sl])))
 
 
 def _point(arrays, s) -> str:

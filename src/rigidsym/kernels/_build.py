@@ -13,8 +13,10 @@ whose dispatcher (``rigidsym_dispatch.h``) picks a path at import. Paths: ``x86-
 (baseline), ``x86-64-v3`` (AVX2 + FMA) and ``x86-64-v4`` (AVX-512) on x86-64, no ``-march``
 elsewhere, ``native`` (``-march=native``, one path) on request, never by default.
 
-Flags of the kernels: ``-O3 -std=c99 -ffp-contract=off -fno-math-errno`` (never
-``-ffast-math``; ``RIGIDSYM_CFLAGS`` replaces them). No FMA contraction (issue 37): the
+Flags of the kernels: ``-O3 -std=c99 -ffp-contract=off -fno-math-errno
+-fno-tree-slp-vectorize`` (never ``-ffast-math``; ``RIGIDSYM_CFLAGS`` replaces them; the last
+because GCC's SLP vectorizer fuses products into vfmaddsub despite -ffp-contract=off, see
+:data:`KERNEL_FLAGS`). No FMA contraction (issue 37): the
 generator chooses its forms by their error measured with every product rounded (NumPy), and a
 contracted ``a b + c`` rounds differently, not always better: contracted, C was 3.76 times the
 textbook's error in ``rotation_from_rotation_vector`` (theta = |w| 0.79 ulp off, the
@@ -75,7 +77,17 @@ TABLE_SOURCE = "rigidsym_table.c"
 #: optimisation flags of the kernels (``RIGIDSYM_CFLAGS`` replaces them). -fno-math-errno:
 #: sqrt then never calls libm to set errno, a branch that kept every lanes loop with a root
 #: scalar (gcc -fopt-info-vec-missed: "control flow in loop"); results are the same bits.
-KERNEL_FLAGS = ("-O3", "-std=c99", "-ffp-contract=off", "-fno-math-errno")
+#: -fno-tree-slp-vectorize: GCC's SLP vectorizer (12.2, x86-64-v3 and -v4) forms fused
+#: multiply-add-subtract instructions (vfmaddsub, vfmsubadd) from alternating `a b - c` and `a
+#: b + c` lanes even under -ffp-contract=off (the class of box2d issue 1086 on RISC-V): 18
+#: functions of the module had them, and 9 float64 kernels gave other bits on C than on NumPy
+#: (moving_frame_acceleration at 18 % of random points, wrench_axis_with_jacobians 1024 ulps of
+#: a small component), and float32 lanes loops left their measured plans. Without it: the
+#: same bits as the scalar program; measured at the geometric mean 0.99 of the time over
+#: the 158 kernels (one thread, N = 1e5), up to 1.2 on two Jacobian kernels. Clang takes the
+#: flag as its -fno-slp-vectorize (and honours -ffp-contract=off there anyway).
+KERNEL_FLAGS = ("-O3", "-std=c99", "-ffp-contract=off", "-fno-math-errno",
+                "-fno-tree-slp-vectorize")
 #: every object: position-independent, only PyInit__ckernels exported
 COMMON_FLAGS = ("-fPIC", "-fvisibility=hidden", "-DNDEBUG")
 #: flags of the libmvec build (sin/cos not fused into a scalar sincos call)
