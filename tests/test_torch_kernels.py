@@ -440,9 +440,9 @@ def test_backward_takes_the_compensated_sums_from_the_forward():
 @pytest.mark.slow
 def test_compiled_masked_row_has_zero_gradient():
     """Issue 38: under torch.compile the backward takes the temps its forward saved
-    (``torch._compiled_saving``: the first compile of instant_screw_axis 2.1x -> 1.3-1.6x
-    the hand's); those of a masked sample are the safe point's, so its gradient is exactly
-    0 and a parameter the batch shares stays finite, equal to eager autograd's."""
+    (``_torch_compiled.compiled_saving``) and sets the input cotangents of a masked sample
+    to zero after the VJP (NaN there, 0 * inf), so its gradient is exactly 0 and a
+    parameter the batch shares stays finite, equal to eager autograd's."""
     rng = np.random.default_rng(5)
     base, a, a_dot = _t([rng.standard_normal((4, 3)) for _ in range(3)])
     base[2] = 0.0  # singular: the pitch is NaN there
