@@ -48,6 +48,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 import _accuracy_peers as O  # noqa: E402
 import _accuracy_points as P  # noqa: E402
 import _accuracy_ref as R  # noqa: E402
+from _accuracy_judge import _AtInput, _diff, _judged_by, _kappa, _point, _Rounded  # noqa: E402,F401
 from _accuracy_seeds import DATA, DEFAULT_SEEDS, merged, seeds_for  # noqa: E402,F401
 from _accuracy_tables import kernel_table, markdown, rule_table, synced  # noqa: E402,F401
 
@@ -181,10 +182,14 @@ def judge(name: str, regime: str, points, dtype, backends, refs=None,
                 kap_rule = bound / (8 * u * norm) - 1
                 rr = max(rule.ratio(err, u, kap_rule), rule.ratio(err2, u, None, e_ref))
                 # componentwise, over the components not tiny beside their output (below
-                # 1e-3 of its norm a component's ulps say nothing of the result)
-                big_ = np.abs(ref[sl]) >= 1e-3 * norms[o]
-                ulp = np.spacing(np.abs(ref[sl][big_]).astype(dtype)).astype(np.float64)
-                ulps = float(np.max(np.abs(c[sl][big_] - ref[sl][big_]) /
+                # 1e-3 of its norm a component's ulps say nothing of the result), against
+                # the truth at the input the kernel got: the kernel's own error, which the
+                # rounding of the input (the condition half's) does not swell to 1e14 ulps
+                # of a component that cancels (plucker_from_points at scale 1e6)
+                ref_c = _judged_by(c[sl], r2, at_input, sl, bound)
+                big_ = np.abs(ref_c) >= 1e-3 * n2
+                ulp = np.spacing(np.abs(ref_c[big_]).astype(dtype)).astype(np.float64)
+                ulps = float(np.max(np.abs(c[sl][big_] - ref_c[big_]) /
                                     np.maximum(ulp, 1e-300), initial=0.0))
                 row.ulps = max(row.ulps, ulps)
                 row.err_u = max(row.err_u, err / u)
@@ -197,76 +202,6 @@ def judge(name: str, regime: str, points, dtype, backends, refs=None,
                     row.kappa = kap
                     row.worst_point = _point(arrays, s)
     return list(rows.values())
-
-
-def _kappa(scale, norms) -> float:
-    """The worst condition number over the outputs (an output that is 0: its absolute
-    scale); inf where a derivative or a norm overflowed float64."""
-    with np.errstate(all="ignore"):
-        k = scale / np.where(norms > 0, norms, np.inf)
-    return float(np.where(np.isnan(k), np.inf, k).max())
-
-
-class _Rounded:
-    """The declared formula at the point with the unconstrained arguments as rounded to the
-    type (constrained ones exact, on their manifold), on first use; the exact point's
-    reference where nothing was rounded."""
-
-    def __init__(self, k, f, p, arrays, s, ref):
-        self.pt = [[P.q(float(x)) for x in arrays[j][s].ravel()] if a.kind == "any"
-                   else list(p[j]) for j, a in enumerate(k.args)]
-        self.f, self.ref = f, ref
-        self.v = ref if self.pt == [list(x) for x in p] else None
-
-    def get(self):
-        if self.v is None:
-            self.v = R.reference(self.f, [x for a in self.pt for x in a])[0]
-            if self.v is None:          # undefined there: the exact point's
-                self.v = self.ref
-        return self.v
-
-
-class _AtInput:
-    """The declared formula at the input the kernel got (not the exact point), computed on
-    first use: the reference of the sign rule near pi."""
-
-    def __init__(self, f, arrays, s):
-        self.f, self.arrays, self.s, self.v = f, arrays, s, False
-
-    def get(self):
-        if self.v is False:
-            exact = [P.q(float(x)) for a in self.arrays for x in a[self.s].ravel()]
-            self.v = R.reference(self.f, exact)[0]
-        return self.v
-
-
-def _diff(c, ref, at_input, sl, bound) -> float:
-    """``||c - ref||``; where that is past ``bound`` in a kernel with branches, at most the
-    distance to the declared formula at the input the kernel got. Near pi the rounding of
-    Q (or of a transform's R) can flip the sign of its skew part, which fixes e: the exact
-    point's output is then -w (the log of SO(3)), or [-w; J_l(-w)^-1 p] (the log of SE(3),
-    not the negation of [w; v]), a jump that no derivative (kappa) sees; the kernel is
-    judged by its documented sign rule at its own input there (a Jacobian kernel's derivative
-    is then that of the other logarithm, ``d phi e - phi de`` for ``d phi e + phi de``).
-
-    Only such a jump (the formula at the input at least 1e-3 of the output's norm away from
-    ``ref``) is forgiven: near phi = 0 the declared formula at a rounded Q (off SO(3))
-    reads Q's diagonal, 1e8 u from the truth, and forgiving that would make the textbook,
-    which does the same, a yardstick of 1 u (screw_of_displacement's `Q: phi -> 0` row)."""
-    if not np.isfinite(c).all():
-        return np.inf
-    d = float(np.linalg.norm(c - ref))
-    if d <= bound or at_input is None:
-        return d
-    v = at_input.get()
-    if v is None or np.linalg.norm(v[sl] - ref) < 1e-3 * np.linalg.norm(ref):
-        return d
-    return min(d, float(np.linalg.norm(c - v[sl])))
-
-
-def _point(arrays, s) -> str:
-    return "; ".join(np.array2string(a[s].ravel().astype(np.float64), precision=17,
-                                     separator=",") for a in arrays)
 
 
 def kernel_names(include_jacobians: bool = True) -> list[str]:

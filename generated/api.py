@@ -609,7 +609,7 @@ def euler_rodrigues_from_rotation(
     Notes:
         At phi = pi exactly (r0 = 0) eta and -eta are both parameters of Q.
 
-        Accuracy: error <= 1.12 u (kappa + 1) in float64, <= 1.02 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 1.76e+16 ulp in float64) over 6 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1.12 u (kappa + 1) in float64, <= 1.02 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 19 ulp in float64) over 6 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 73 operations; math hash 019b8ba8b4ba61cb.
     """
@@ -687,7 +687,7 @@ def exponential_coordinates_from_transform(
     Notes:
         T is not validated (its rotation block is read as a rotation).
 
-        Accuracy: error <= 1.15 u (kappa + 1) in float64, <= 1.19 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 2.51e+16 ulp in float64) over 9 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1.15 u (kappa + 1) in float64, <= 1.19 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 124 ulp in float64) over 9 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 645 operations; math hash 1ba043e69a601155.
     """
@@ -898,7 +898,7 @@ def instant_screw_axis(
     Notes:
         Singular set: omega = 0 (pure translation).
 
-        Accuracy: error <= 1.15 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 79 ulp in float64) over 5 regimes (docs/accuracy.md, kernels.accuracy); singular when omega = 0 (pure translation), flagged where ||omega||^2 == 0 in floating point: omega == 0; a square underflows to 0 only for ||omega|| < 1.5e-162 (float64), < 1e-19 (float32 arithmetic), which benchmarks/accuracy.py calls below the smallest useful step.
+        Accuracy: error <= 1.15 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 70 ulp in float64) over 5 regimes (docs/accuracy.md, kernels.accuracy); singular when omega = 0 (pure translation), flagged where ||omega||^2 == 0 in floating point: omega == 0; a square underflows to 0 only for ||omega|| < 1.5e-162 (float64), < 1e-19 (float32 arithmetic), which benchmarks/accuracy.py calls below the smallest useful step.
 
         Generated; 52 operations; math hash bbbb3fe59daee446.
     """
@@ -1035,7 +1035,7 @@ def natural_invariants_from_rotation(
 
         For an exactly symmetric Q (phi = pi) the sign of e is fixed by the rule: the component of e of largest magnitude is positive (e is taken from the column of the largest diagonal entry of Q); near pi, the skew part of Q fixes the sign, as in Pinocchio's log3.
 
-        Accuracy: error <= 1.26 u (kappa + 1) in float64, <= 1.38 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 1.76e+16 ulp in float64) over 6 regimes (docs/accuracy.md, kernels.accuracy); singular when phi = 0 (Q = 1): the axis e is undefined, flagged where ||vect(Q)||^2 == 0 with tr Q >= 0 (the main build): Q exactly symmetric in floating point, i.e. phi = 0 (Q = 1), or abs(phi) below the rounding of Q (about 1e-16).
+        Accuracy: error <= 1.26 u (kappa + 1) in float64, <= 1.38 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 11 ulp in float64) over 6 regimes (docs/accuracy.md, kernels.accuracy); singular when phi = 0 (Q = 1): the axis e is undefined, flagged where ||vect(Q)||^2 == 0 with tr Q >= 0 (the main build): Q exactly symmetric in floating point, i.e. phi = 0 (Q = 1), or abs(phi) below the rounding of Q (about 1e-16).
 
         Generated; 172 operations; math hash 445339cc0a3a5a8f.
     """
@@ -1122,7 +1122,7 @@ def plucker_from_points(
     Notes:
         Singular set: p1 = p2.
 
-        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1.08 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 3.77e+14 ulp in float64) over 6 regimes (docs/accuracy.md, kernels.accuracy); singular when p1 = p2, flagged where ||p2 - p1||^2 == 0 in floating point: p1 == p2; a square underflows to 0 only for ||p2 - p1|| < 1.5e-162 (float64), < 1e-19 (float32 arithmetic), which benchmarks/accuracy.py calls below the smallest useful step.
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1.08 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 2 ulp in float64) over 6 regimes (docs/accuracy.md, kernels.accuracy); singular when p1 = p2, flagged where ||p2 - p1||^2 == 0 in floating point: p1 == p2; a square underflows to 0 only for ||p2 - p1|| < 1.5e-162 (float64), < 1e-19 (float32 arithmetic), which benchmarks/accuracy.py calls below the smallest useful step.
 
         Generated; 22 operations; math hash 37ca360961ff48ba.
     """
@@ -1321,7 +1321,7 @@ def rotation_from_rotation_vector(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1.6 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 3.44e+07 ulp in float64) over 4 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1.6 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 4.73e+07 ulp in float64) over 4 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 31 operations; math hash 26ba18056a63eeb8.
     """
@@ -1360,7 +1360,7 @@ def rotation_vector_from_rotation(
     Notes:
         At phi = pi exactly, w and -w are both logarithms; the sign follows natural_invariants_from_rotation's rule.
 
-        Accuracy: error <= 1.77 u (kappa + 1) in float64, <= 1.8 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 1.76e+16 ulp in float64) over 6 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1.77 u (kappa + 1) in float64, <= 1.8 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 10 ulp in float64) over 6 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 189 operations; math hash 2e15491416cd7072.
     """
@@ -1397,7 +1397,7 @@ def rotation_vector_left_jacobian(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1.34 u (kappa + 1) in float64, <= 1.76 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 82 ulp in float64) over 4 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1.34 u (kappa + 1) in float64, <= 1.76 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 69 ulp in float64) over 4 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 31 operations; math hash d4a19d08f115cd7e.
     """
@@ -1437,7 +1437,7 @@ def rotation_vector_left_jacobian_inverse(
     Notes:
         Singular set: theta = 2 pi k, k != 0 (theta = norm of w).
 
-        Accuracy: error <= 1.6 u (kappa + 1) in float64, <= 1.3 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 1.38e+07 ulp in float64) over 4 regimes (docs/accuracy.md, kernels.accuracy); singular when theta = 2 pi k, k != 0 (theta = norm of w).
+        Accuracy: error <= 1.6 u (kappa + 1) in float64, <= 1.3 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 1.9e+07 ulp in float64) over 4 regimes (docs/accuracy.md, kernels.accuracy); singular when theta = 2 pi k, k != 0 (theta = norm of w).
 
         Generated; 32 operations; math hash 2f680f5aa3fbff2f.
     """
@@ -1474,7 +1474,7 @@ def rotation_vector_right_jacobian(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1.34 u (kappa + 1) in float64, <= 1.76 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 82 ulp in float64) over 4 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1.34 u (kappa + 1) in float64, <= 1.76 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 69 ulp in float64) over 4 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 31 operations; math hash 35131894d7e1775b.
     """
@@ -1514,7 +1514,7 @@ def rotation_vector_right_jacobian_inverse(
     Notes:
         Singular set: theta = 2 pi k, k != 0 (theta = norm of w).
 
-        Accuracy: error <= 1.6 u (kappa + 1) in float64, <= 1.3 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 1.38e+07 ulp in float64) over 4 regimes (docs/accuracy.md, kernels.accuracy); singular when theta = 2 pi k, k != 0 (theta = norm of w).
+        Accuracy: error <= 1.6 u (kappa + 1) in float64, <= 1.3 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 1.9e+07 ulp in float64) over 4 regimes (docs/accuracy.md, kernels.accuracy); singular when theta = 2 pi k, k != 0 (theta = norm of w).
 
         Generated; 32 operations; math hash db168e620321154f.
     """
@@ -1612,7 +1612,7 @@ def screw_of_displacement(
 
         For an exactly symmetric Q (phi = pi) the sign of e follows natural_invariants_from_rotation's rule (largest-magnitude component positive).
 
-        Accuracy: error <= 1.3 u (kappa + 1) in float64, <= 1.14 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 1.59e+16 ulp in float64) over 9 regimes (docs/accuracy.md, kernels.accuracy); singular when phi = 0 (pure translation: no axis, infinite pitch), flagged where ||Q - Q^T||^2 == 0 with tr Q >= 0 (the main build, after the rewrite of 1 - cos phi from the skew part of Q): Q exactly symmetric in floating point, phi below the rounding of Q (about 1e-16 in float64, 6e-8 in float32); before the rewrite 3 - tr Q == 0 flagged up to phi ~ 1.5e-8.
+        Accuracy: error <= 1.3 u (kappa + 1) in float64, <= 1.14 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 863 ulp in float64) over 9 regimes (docs/accuracy.md, kernels.accuracy); singular when phi = 0 (pure translation: no axis, infinite pitch), flagged where ||Q - Q^T||^2 == 0 with tr Q >= 0 (the main build, after the rewrite of 1 - cos phi from the skew part of Q): Q exactly symmetric in floating point, phi below the rounding of Q (about 1e-16 in float64, 6e-8 in float32); before the rewrite 3 - tr Q == 0 flagged up to phi ~ 1.5e-8.
 
         Generated; 571 operations; math hash 24c2ead304ca194c.
     """
@@ -1729,7 +1729,7 @@ def twist_transfer_matrix(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 1 ulp in float64) over 4 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 0 ulp in float64) over 4 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 6 operations; math hash b790e8d04828afbd.
     """
@@ -1775,7 +1775,7 @@ def wrench_axis(
     Notes:
         Singular set: f = 0 (pure moment).
 
-        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 104 ulp in float64) over 5 regimes (docs/accuracy.md, kernels.accuracy); singular when f = 0 (pure moment), flagged where ||f||^2 == 0 in floating point: f == 0; a square underflows to 0 only for ||f|| < 1.5e-162 (float64), < 1e-19 (float32 arithmetic), which benchmarks/accuracy.py calls below the smallest useful step.
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 96 ulp in float64) over 5 regimes (docs/accuracy.md, kernels.accuracy); singular when f = 0 (pure moment), flagged where ||f||^2 == 0 in floating point: f == 0; a square underflows to 0 only for ||f|| < 1.5e-162 (float64), < 1e-19 (float32 arithmetic), which benchmarks/accuracy.py calls below the smallest useful step.
 
         Generated; 55 operations; math hash 6e28211949601ec4.
     """
@@ -1855,7 +1855,7 @@ def wrench_transfer_matrix(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 1 ulp in float64) over 4 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 0 ulp in float64) over 4 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 6 operations; math hash d1200d894b2faa3f.
     """

@@ -87,6 +87,22 @@ def test_the_harness_forgives_a_jump_not_a_conditioning_loss():
     assert A._diff(-ref, ref, flipped, slice(0, 3), bound) == 0.0
     assert A._diff(ref * (1 + 1e-7), ref, near, slice(0, 3), bound) == pytest.approx(1e-7)
     assert A._diff(ref * (1 + 1e-15), ref, near, slice(0, 3), bound) < bound
+    # and the componentwise figure of an axis of the other sign is taken against that sign
+    # (old main: 1.76e16 ulps for natural_invariants_from_rotation near pi)
+    assert A._judged_by(-ref, ref, flipped, slice(0, 3), bound) is not ref
+    assert A._judged_by(ref * (1 + 1e-7), ref, near, slice(0, 3), bound) is ref
+
+
+def test_the_componentwise_figure_is_the_kernels_own_error():
+    """plucker_from_points at nearly coincident points (p2 -> p1): old main's harness took the
+    componentwise ulps against the exact point's truth, which the rounding of the inputs
+    (kappa up to 1e13 there) moves by up to 3.8e14 ulps (2.8e13 at these points) while the
+    kernel is within 2 u of the truth at its input; the figure is now the latter, as the
+    rule's second half reads it."""
+    k = A.R.kernel_of("plucker_from_points")
+    pts = A.P.regimes(k, np.float64, n_random=1, seed=0, extremes=False)["p2->p1"]
+    rows = A.judge("plucker_from_points", "p2->p1", pts, np.float64, ["numpy"])
+    assert rows[0].samples >= 12 and rows[0].ulps < 16, rows[0].ulps
 
 
 def _forms(name: str):

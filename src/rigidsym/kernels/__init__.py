@@ -274,7 +274,8 @@ def accuracy(name: str) -> dict:
         "backends"}``, where the normwise relative error of every output is at most
         ``bound * u * (kappa + 1)`` (``u`` the unit roundoff, ``kappa`` the condition number
         on the inputs' tangent space), attained in ``regime`` (``kappa`` and ``err`` there),
-        ``ulps`` the worst componentwise error, ``rule`` the worst ratio to issue 37's rule
+        ``ulps`` the worst componentwise error (against the truth at the input as given),
+        ``rule`` the worst ratio to issue 37's rule
         (``err <= 8 u (kappa + 1)`` and ``err <= max(2 e_ref, 4 u)``, ``e_ref`` the smallest
         error of the textbook formula and of the peers: ``docs/accuracy.md``), ``backends``
         per back-end ``{"err_u", "vs_ref", "vs_ref_where", "rule"}`` (the worst error in u,
