@@ -308,6 +308,18 @@ def test_inductor_with_grad(name):
 
 
 @pytest.mark.slow
+def test_compiled_torch_func_grad():
+    """``torch.compile(torch.func.grad(...))`` of a kernel equals the eager transform. Old
+    main: Dynamo's trace of the Function under the transform failed ("Cannot access data
+    pointer of Tensor that doesn't have storage"); now the Function is one call in its
+    graph (``allow_in_graph``)."""
+    rng = np.random.default_rng(0)
+    xs = _t([rng.standard_normal((5, 3)) for _ in range(3)])
+    g = torch.func.grad(lambda o, a, ad: rk.instant_screw_axis(o, a, ad, check=False)[1].sum())
+    _close(torch.compile(g, backend="aot_eager", fullgraph=True)(*xs), g(*xs).numpy(), 1e-12)
+
+
+@pytest.mark.slow
 def test_inductor_flags_an_overflowed_result():
     """A result that does not fit the dtype from finite inputs is NaN in its whole row under
     inductor as in eager mode (issue 37's rule). Old main returned the pitch inf there and
