@@ -338,14 +338,13 @@ class Space:
             res, bad, clear = self._rescue(name, full, res, bad, batch)
         if res[0].dtype != dtype:  # float16, bfloat16: computed in float32, rounded once
             res = [lib.cast(r, dtype) for r in res]
-        elif clear:  # no sample singular, of non-finite output or input: nothing to flag
+        elif clear or (lib.finite_inside() and
+                       getattr(self.function(name), "flags_overflow", False)):
+            # no sample singular, of non-finite output or input: nothing to flag; or a
+            # compiled function that flagged the overflowed samples and set NaN there
             return res[0] if len(res) == 1 else tuple(res)
         # a result that does not fit the dtype, from finite inputs (a NaN input's NaN is
-        # its IEEE value, issue 37); a compiled function may have flagged them already
-        if lib.finite_inside() and res[0].dtype == dtype and \
-                getattr(self.function(name), "flags_overflow", False):
-            # a compiled function that flagged the overflowed samples and set NaN there
-            return res[0] if len(res) == 1 else tuple(res)
+        # its IEEE value, issue 37)
         sing = bad
         bad = bad | (nonfinite_rows(xp, res, batch) & ~nonfinite_rows(xp, full, batch))
         if on_singular == "raise":
