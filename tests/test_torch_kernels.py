@@ -307,6 +307,53 @@ def test_inductor_with_grad(name):
     _compiled_matches(name, "inductor")
 
 
+@pytest.mark.slow
+@pytest.mark.parametrize("backend", ["aot_eager", "inductor"])
+def test_compiled_float16_flags_a_result_that_overflows_float16(backend):
+    """float16 is computed in float32 and rounded once: a result beyond float16's range
+    (pitch 1e5) is NaN in its row under torch.compile as in eager mode, not inf (the
+    compiled Function's own overflow flag is float32's; the rounding's is Space.call's,
+    decided before the rounding: main's inductor returned inf, its check after the
+    rounding computed in float32)."""
+    h = torch.float16
+    omega = torch.tensor([[1e-3, 0.0, 0.0], [0.3, -0.2, 1.0]], dtype=h)
+    a = torch.zeros(2, 3, dtype=h)
+    a_dot = torch.tensor([[100.0, 0.0, 0.0], [0.5, 0.1, -0.4]], dtype=h)
+    f = torch.compile(rk.instant_screw_axis, backend=backend, fullgraph=True)
+    got, want = f(omega, a, a_dot), rk.instant_screw_axis(omega, a, a_dot, on_singular="nan")
+    for g, w in zip(got, want, strict=True):
+        assert torch.isnan(g[0]).all() and torch.isnan(w[0]).all()
+        assert torch.equal(g[1], w[1])
+
+
+@pytest.mark.slow
+def test_compiled_torch_func_grad():
+    """``torch.compile(torch.func.grad(...))`` of a kernel equals the eager transform. Old
+    main: Dynamo's trace of the Function under the transform failed ("Cannot access data
+    pointer of Tensor that doesn't have storage"); now the Function is one call in its
+    graph (``allow_in_graph``)."""
+    rng = np.random.default_rng(0)
+    xs = _t([rng.standard_normal((5, 3)) for _ in range(3)])
+    g = torch.func.grad(lambda o, a, ad: rk.instant_screw_axis(o, a, ad, check=False)[1].sum())
+    _close(torch.compile(g, backend="aot_eager", fullgraph=True)(*xs), g(*xs).numpy(), 1e-12)
+
+
+@pytest.mark.slow
+def test_inductor_flags_an_overflowed_result():
+    """A result that does not fit the dtype from finite inputs is NaN in its whole row under
+    inductor as in eager mode (issue 37's rule). Old main returned the pitch inf there and
+    the row's other outputs as numbers: inductor folds an integer ``x * 0`` to zeros,
+    which removed the check (``_arrays_eval.nonfinite_rows``)."""
+    omega = torch.tensor([[1e-10, 0.0, 0.0], [0.3, -0.2, 1.0]], dtype=torch.float64)
+    a = torch.zeros(2, 3, dtype=torch.float64)
+    a_dot = torch.tensor([[1e300, 0.0, 0.0], [0.5, 0.1, -0.4]], dtype=torch.float64)
+    f = torch.compile(rk.instant_screw_axis, backend="inductor", fullgraph=True)
+    got, want = f(omega, a, a_dot), rk.instant_screw_axis(omega, a, a_dot, on_singular="nan")
+    for g, w in zip(got, want, strict=True):
+        assert torch.isnan(g[0]).all() and torch.isnan(w[0]).all()
+        _close(g[1], w[1], 1e-12)
+
+
 def test_inside_a_module_with_its_own_parameters():
     class Screw(torch.nn.Module):
         def __init__(self):
@@ -424,9 +471,9 @@ def test_backward_takes_the_compensated_sums_from_the_forward():
 @pytest.mark.slow
 def test_compiled_masked_row_has_zero_gradient():
     """Issue 38: under torch.compile the backward takes the temps its forward saved
-    (``torch._compiled_saving``: the first compile of instant_screw_axis 2.1x -> 1.3-1.6x
-    the hand's); those of a masked sample are the safe point's, so its gradient is exactly
-    0 and a parameter the batch shares stays finite, equal to eager autograd's."""
+    (``_torch_compiled.compiled_saving``) and sets the input cotangents of a masked sample
+    to zero after the VJP (NaN there, 0 * inf), so its gradient is exactly 0 and a
+    parameter the batch shares stays finite, equal to eager autograd's."""
     rng = np.random.default_rng(5)
     base, a, a_dot = _t([rng.standard_normal((4, 3)) for _ in range(3)])
     base[2] = 0.0  # singular: the pitch is NaN there

@@ -38,6 +38,7 @@ from rigidsym.kernels._arrays_eval import (
     evaluate,
     nonfinite_rows,
     propagates_inf,
+    rounds_to_inf,
     shape_outputs,
     singular_mask,
 )
@@ -340,14 +341,20 @@ class Space:
         clear = False
         if not traced:
             res, bad, clear = self._rescue(name, full, res, bad, batch)
+        big = None
         if res[0].dtype != dtype:  # float16, bfloat16: computed in float32, rounded once
+            big = rounds_to_inf(xp, res, batch, lib.finfo(dtype))
             res = [lib.cast(r, dtype) for r in res]
-        elif clear:  # no sample singular, of non-finite output or input: nothing to flag
+        elif clear or (lib.finite_inside() and
+                       getattr(self.function(name), "flags_overflow", False)):
+            # no sample singular, of non-finite output or input: nothing to flag; or a
+            # compiled function that flagged the overflowed samples and set NaN there
             return res[0] if len(res) == 1 else tuple(res)
         # a result that does not fit the dtype, from finite inputs (a NaN input's NaN is
         # its IEEE value, issue 37)
-        over = nonfinite_rows(xp, res, batch) & ~nonfinite_rows(xp, full, batch)
-        sing, bad = bad, bad | over
+        sing = bad
+        over = nonfinite_rows(xp, res, batch)
+        bad = bad | ((over if big is None else over | big) & ~nonfinite_rows(xp, full, batch))
         if on_singular == "raise":
             if bool(bad.any()):  # the error path copies the masks to the host
                 raise_flagged(name, meta, lib.host(sing), lib.host(bad & ~sing),

@@ -13,7 +13,7 @@ from typing import Any
 from rigidsym.kernels._jacobian import full_batch as _full
 
 __all__ = ["columns", "shape_outputs", "evaluate", "singular_mask", "nonfinite_rows",
-           "propagates_inf"]
+           "rounds_to_inf", "propagates_inf"]
 
 
 def columns(arrays: list, args: list[dict]) -> list:
@@ -118,9 +118,25 @@ def nonfinite_rows(xp, arrays: list, batch: tuple):
     would copy every output once more."""
     total = None
     for a in arrays:
-        s = (a.reshape(batch + (-1,)) * 0).sum(-1)
+        s = (a.reshape(batch + (-1,)) * 0.0).sum(-1)
         total = s if total is None else total + s
     return xp.isnan(total)
+
+
+def rounds_to_inf(xp, arrays: list, batch: tuple, finfo):
+    """The batch mask of the samples with an entry of ``arrays`` (float32, each ``batch +
+    shape``) that rounds to inf in the narrower type of ``finfo`` (float16, bfloat16):
+    ``|x| >= max + ulp(max) / 2`` (round to nearest even), decided on the float32 values,
+    before the rounding: inductor computes a float16 rounding and a check after it in
+    float32 without rounding in between, so ``isinf`` of the rounded value is no test there
+    (issue 38)."""
+    big = float(finfo.max) + 2.0 ** math.floor(math.log2(float(finfo.max))) * float(
+        finfo.eps) / 2
+    rows = None
+    for a in arrays:
+        r = (xp.abs(a) >= big).reshape(batch + (-1,)).any(-1)
+        rows = r if rows is None else rows | r
+    return rows
 
 
 #: the functions of a program that are non-finite wherever their argument is (sin and cos

@@ -27,7 +27,7 @@ import torch
 
 from rigidsym.kernels._arrays_eval import columns, shape_outputs, singular_mask
 
-__all__ = ["programs", "forward", "vjp", "views", "safe_temps", "GRAIN"]
+__all__ = ["programs", "forward", "vjp", "views", "GRAIN"]
 
 #: the largest batch this route takes: PyTorch's grain size (``at::internal::GRAIN_SIZE``),
 #: below which its elementwise operations run on one thread anyway; a larger batch is
@@ -149,16 +149,3 @@ def views(tensors: list):
             return None
         out.append(d.numpy())
     return out
-
-
-def safe_temps(progs, name: str) -> list[float]:
-    """The temps of kernel ``name``'s ``SAVED`` forward at its safe point (floats, float64,
-    cached): those of the singular samples in a traced call, whose VJP takes the safe point
-    there (:func:`rigidsym.kernels.torch._compiled_saving`)."""
-    key = ("safe temps", name)
-    if key not in progs._programs:
-        cols = [np.array([v], dtype=np.float64) for v in progs.safe(name)]
-        with np.errstate(all="ignore"):
-            temps = programs(progs, name)[0](*cols)[2]
-        progs._programs[key] = [float(np.asarray(t).reshape(-1)[0]) for t in temps]
-    return progs._programs[key]

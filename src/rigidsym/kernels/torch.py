@@ -54,9 +54,10 @@ except ImportError as _exc:  # pragma: no cover - exercised where PyTorch is abs
 import numpy as np
 
 from rigidsym.kernels import _arrays, _arrays_api, _torch_host
-from rigidsym.kernels._arrays_eval import columns, shape_outputs, singular_mask
-from rigidsym.kernels._arrays_rescue import finite_columns
 from rigidsym.kernels._errors import NonFiniteResultError, SingularConfigurationError
+from rigidsym.kernels._torch_compiled import compiled_saving as _compiled_saving
+from rigidsym.kernels._torch_compiled import fixed_arity as _fixed_arity
+from rigidsym.kernels._torch_compiled import in_graph as _in_graph
 
 __all__ = ["load", "euler_rate_matrix", "euler_angle_rates", "SingularConfigurationError",
            "NonFiniteResultError"]
@@ -138,15 +139,6 @@ def _as_tensor(v, dtype, device, name: str) -> torch.Tensor:
     return torch.as_tensor(v, dtype=dtype, device=device)
 
 
-def _fixed_arity(values, n: int):
-    """``forward(x0, ..., x{n-1})``: Dynamo reads a ``forward(*xs)`` as taking ``ctx``
-    first, so the arity is spelled out (the kernels' argument counts differ)."""
-    params = ", ".join(f"x{i}" for i in range(n))
-    scope: dict = {"values": values}
-    exec(f"def forward({params}):\n    return values(({params},))\n", scope)  # noqa: S102
-    return scope["forward"]
-
-
 def _differentiable(xs) -> bool:
     """Autograd may run through ``xs``: grad mode with an input requiring grad, or a
     torch.func transform (its wrapped tensors)."""
@@ -202,10 +194,11 @@ def _make(space: _arrays.Space, name: str):
     nout = len(space.progs.meta[name]["outputs"])
     if space.progs.vjp(name, "saved"):
         compiled = _compiled_saving(space, name)
+    traced = _in_graph(compiled, nout)
 
     def apply(*xs):
         if torch.compiler.is_compiling():
-            return compiled.apply(*xs)[:nout + 1]
+            return traced(*xs)
         if fast is None or torch._C._are_functorch_transforms_active():
             return eager.apply(*xs)
         if not _recorded(xs):  # nothing to differentiate: the program alone
@@ -213,6 +206,8 @@ def _make(space: _arrays.Space, name: str):
             return space.values(name, xs) if host is None else (*host[0], host[1])
         return fast(*xs)
 
+    # compiled, the mask returned holds the samples whose result overflowed (Space.call)
+    apply.flags_overflow = getattr(compiled, "flags_overflow", False)
     return apply
 
 
@@ -253,49 +248,6 @@ def _saving(space: _arrays.Space, name: str):
 
     return type(f"{name}_saving_function", (torch.autograd.Function,),
                 {"forward": staticmethod(forward), "backward": staticmethod(backward)})
-
-
-def _compiled_saving(space: _arrays.Space, name: str):
-    """The ``torch.autograd.Function`` of a traced call (torch.compile) of a kernel with
-    ``SAVED`` programs (issue 38, the first compile: fewer operations for Dynamo to trace
-    and inductor to compile): the forward returns, as non-differentiable outputs after the
-    mask, the temps the VJP reads, those of the singular samples the safe point's (a
-    trace-time constant: the VJP there takes the safe point, as ``Space.vjp``); the
-    backward takes them, no forward temp computed again. A backward differentiated again
-    recomputes, as :func:`_function`'s."""
-    meta, xp = space.progs.meta[name], torch
-    nargs, nout = len(meta["args"]), len(meta["outputs"])
-    # the kernel's name an argument: Dynamo keeps one constant per code object and
-    # arguments (one lambda without arguments gave every kernel the first one's temps)
-    at_safe = space.lib.constant(lambda n: _torch_host.safe_temps(space.progs, n))
-
-    def values(xs):
-        # an inf input taken as NaN inside, as Space.values(finite=True)
-        cols = columns(xs, meta["args"])
-        if not space.progs.propagates_inf(name):
-            cols = finite_columns(cols)
-        outs, dens, temps = space.progs.vjp(name, "saved")[0](*cols)
-        sing = singular_mask(xp, dens, cols[0])
-        if space.progs.divides(name):
-            temps = [xp.where(sing, v, t) for v, t in zip(at_safe(name), temps, strict=True)]
-        return (*shape_outputs(xp, list(outs), meta["outputs"], cols[0]), sing,
-                *temps)
-
-    def setup_context(ctx, inputs, output):
-        ctx.save_for_backward(*inputs, *output[nout:])
-        ctx.mark_non_differentiable(*output[nout:])
-
-    def backward(ctx, *grads):
-        saved = ctx.saved_tensors
-        xs, sing, temps = saved[:nargs], saved[nargs], saved[nargs + 1:]
-        if torch.is_grad_enabled():
-            return tuple(space.vjp(name, xs, list(grads[:nout]), sing))
-        return tuple(space.vjp_saved(name, xs, temps, list(grads[:nout]), sing))
-
-    return type(f"{name}_compiled_saving_function", (torch.autograd.Function,), {
-        "generate_vmap_rule": True, "setup_context": staticmethod(setup_context),
-        "backward": staticmethod(backward), "forward": staticmethod(_fixed_arity(
-            values, nargs))})
 
 
 def _plain_apply(cls):
