@@ -164,10 +164,14 @@ def _kept_tangents(program, lines: list, backend: str) -> list:
     if backend != "jax":
         return lines
     dens, defs = {sp.sympify(d) for d in program.dens}, dict(program.temps)
+    seen: dict = {}
 
-    def inputs(x) -> set:  # the input columns temp x reads, through other temps
-        return set().union(*(inputs(s) if s in defs else {s}
-                             for s in defs[x].free_symbols))
+    def inputs(x) -> set:  # the input columns temp x reads, through other temps (memoised:
+        # shared temps would otherwise be walked once per path)
+        if x not in seen:
+            seen[x] = set().union(*(inputs(s) if s in defs else {s}
+                                    for s in defs[x].free_symbols))
+        return seen[x]
 
     # a denominator of one input column has one cotangent column to feed: nothing to share
     # (L_tilde, N_matrix: 2-10 % slower with the dot)
