@@ -16,7 +16,7 @@ from pathlib import Path
 from rigidsym.checking.deciding.registry import BadInput
 from rigidsym.codegen.spec import Kernel
 
-__all__ = ["user_kernels", "generate_user", "cmd_generate_user"]
+__all__ = ["user_kernels", "load_user_kernels", "generate_user", "cmd_generate_user"]
 
 
 def _source_name(src, title: str) -> str:
@@ -48,18 +48,15 @@ def user_kernels(um) -> list[Kernel]:
     return out
 
 
-def generate_user(modules):
-    """Generate the kernels of user modules (paths or dotted names) in memory.
-
-    Returns:
-        The generator's result (relative path -> text), headers naming the modules.
+def load_user_kernels(modules) -> tuple[list[Kernel], str]:
+    """The kernels of user modules (paths or dotted names), sources named, and the modules'
+    titles joined (the generated files' origin).
 
     Raises:
         BadInput: for a module that cannot be loaded, one without ``KERNELS``, or two
             kernels of one name.
     """
     from rigidsym.checking.deciding.usermodules import load_many
-    from rigidsym.codegen.generator import generate
 
     ums = load_many(modules)
     kernels, titles = [], []
@@ -74,7 +71,23 @@ def generate_user(modules):
     dup = sorted({n for n in names if names.count(n) > 1})
     if dup:
         raise BadInput(f"kernel {dup[0]} is declared twice in {', '.join(titles)}")
-    return generate(kernels, origin=", ".join(titles))
+    return kernels, ", ".join(titles)
+
+
+def generate_user(modules):
+    """Generate the kernels of user modules (paths or dotted names) in memory.
+
+    Returns:
+        The generator's result (relative path -> text), headers naming the modules.
+
+    Raises:
+        BadInput: for a module that cannot be loaded, one without ``KERNELS``, or two
+            kernels of one name.
+    """
+    from rigidsym.codegen.generator import generate
+
+    kernels, origin = load_user_kernels(modules)
+    return generate(kernels, origin=origin)
 
 
 def cmd_generate_user(args) -> int:
