@@ -266,5 +266,121 @@ def test_header_documents_arguments_units_and_layout():
     assert re.search(r"RIGIDSYM_C_BEGIN_DECLS", h)
 
 
-def _unused():  # keep sys imported for the slow tests below
+# -- slow: every source under every flag of the matrix, gcc and clang, plain and CMake --
+
+#: flags -> the flag the #error must name, or None where the sources must build and be right
+MATRIX = {
+    "": None,
+    "-O3": None,
+    "-ffast-math": "-ffast-math",
+    "-Ofast": "-Ofast",
+    "-fassociative-math -fno-signed-zeros -fno-trapping-math": "-fassociative-math",
+    "-ffinite-math-only": "-ffinite-math-only",
+    "-ffp-contract=fast": None,
+    "-O3 -march=native -ffp-contract=fast": None,
+}
+COMPILERS = [c for c in ("gcc", "clang") if shutil.which(c)]
+
+
+def _fails_naming(res: subprocess.CompletedProcess, flag: str) -> bool:
+    return res.returncode != 0 and "#error" in res.stderr or \
+        (res.returncode != 0 and "error:" in res.stderr and flag in res.stderr)
+
+
+@pytest.mark.slow
+@pytest.mark.skipif(not COMPILERS, reason="neither gcc nor clang is installed")
+@pytest.mark.parametrize("flags", list(MATRIX))
+@pytest.mark.parametrize("cc", ["gcc", "clang"])
+def test_flag_matrix_plain_build_right_or_error(tmp_path, cc, flags):
+    """Each source file alone, then the example: an #error naming the flag, or results that
+    match the NumPy kernels to 1e-12 (clang's -fassociative-math, which no macro shows, is
+    turned off by the sources' pragma, so it must build and be right)."""
+    if shutil.which(cc) is None:
+        pytest.skip(f"{cc} is not installed")
+    want_error = MATRIX[flags]
+    if cc == "clang" and want_error == "-fassociative-math":
+        want_error = None            # clang: no macro; the pragma keeps the code right
+    for src in sources():
+        res = subprocess.run([cc, *STRICT, "-O2", *flags.split(), "-c", str(src), "-o",
+                              str(tmp_path / (src.stem + ".o"))], capture_output=True,
+                             text=True)
+        if want_error is None:
+            assert res.returncode == 0, res.stderr
+        else:
+            named = "-ffast-math" if want_error == "-Ofast" else want_error
+            assert res.returncode != 0 and "#error" in res.stderr or "error:" in res.stderr
+            assert named in res.stderr and "-fno-" in res.stderr, res.stderr
+    if want_error is None:
+        exe = build_example(cc, tmp_path, [*STRICT, "-O2", *flags.split()])
+        assert_matches(run_example(exe), expected())
+
+
+def _cmake(tmp_path: Path, cc: str, flags: str) -> Path:
+    build = tmp_path / f"build_{cc}"
+    subprocess.run(["cmake", "-S", str(EXAMPLE), "-B", str(build), f"-DCMAKE_C_COMPILER={cc}",
+                    f"-DCMAKE_C_FLAGS={' '.join([*STRICT, flags])}",
+                    "-DCMAKE_BUILD_TYPE=Release"], check=True, capture_output=True)
+    subprocess.run(["cmake", "--build", str(build)], check=True, capture_output=True)
+    return build / "control_loop"
+
+
+@pytest.mark.slow
+@pytest.mark.skipif(shutil.which("cmake") is None, reason="cmake is not installed")
+@pytest.mark.parametrize("flags", ["", "-Ofast", "-fassociative-math -fno-signed-zeros "
+                                   "-fno-trapping-math", "-ffinite-math-only"])
+@pytest.mark.parametrize("cc", ["gcc", "clang"])
+def test_cmake_build_is_right_under_the_application_flags(tmp_path, cc, flags):
+    """The CMake target compiles the kernels with its own flags after the project's: an
+    application built with -Ofast links right kernels (and its own main.c stays fast)."""
+    if shutil.which(cc) is None:
+        pytest.skip(f"{cc} is not installed")
+    assert_matches(run_example(_cmake(tmp_path, cc, flags)), expected())
+
+
+@pytest.mark.slow
+@pytest.mark.skipif(shutil.which("cmake") is None or shutil.which("pkg-config") is None,
+                    reason="cmake or pkg-config is not installed")
+def test_installed_library_by_find_package_and_pkg_config(tmp_path):
+    """cmake --install, then a project using find_package(rigidsym_c), and a plain line
+    using pkg-config --cflags --libs rigidsym_c."""
+    build, prefix = tmp_path / "lib", tmp_path / "prefix"
+    subprocess.run(["cmake", "-S", str(KERNELS_DIR), "-B", str(build),
+                    f"-DCMAKE_INSTALL_PREFIX={prefix}"], check=True, capture_output=True)
+    subprocess.run(["cmake", "--build", str(build)], check=True, capture_output=True)
+    subprocess.run(["cmake", "--install", str(build)], check=True, capture_output=True)
+    app = tmp_path / "app"
+    app.mkdir()
+    shutil.copy(EXAMPLE / "main.c", app / "main.c")
+    (app / "CMakeLists.txt").write_text(
+        "cmake_minimum_required(VERSION 3.13)\nproject(app LANGUAGES C)\n"
+        "find_package(rigidsym_c REQUIRED)\nadd_executable(app main.c)\n"
+        "target_link_libraries(app PRIVATE rigidsym_c::rigidsym_c m)\n")
+    subprocess.run(["cmake", "-S", str(app), "-B", str(app / "b"),
+                    f"-DCMAKE_PREFIX_PATH={prefix}"], check=True, capture_output=True)
+    subprocess.run(["cmake", "--build", str(app / "b")], check=True, capture_output=True)
+    assert_matches(run_example(app / "b" / "app"), expected())
+    pcdir = next(prefix.rglob("rigidsym_c.pc")).parent
+    env = {"PKG_CONFIG_PATH": str(pcdir), "PATH": "/usr/bin:/bin"}
+    flags = subprocess.run(["pkg-config", "--cflags", "--libs", "--static", "rigidsym_c"],
+                           env=env, check=True, capture_output=True, text=True).stdout.split()
+    exe = tmp_path / "pc_app"
+    subprocess.run([GCC or "cc", *STRICT, str(EXAMPLE / "main.c"), *flags, "-o", str(exe)],
+                   check=True)
+    assert_matches(run_example(exe), expected())
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("cc", ["clang", "g++"])
+def test_example_builds_with_clang_and_as_cpp(tmp_path, cc):
+    if shutil.which(cc) is None or GCC is None:
+        pytest.skip(f"{cc} is not installed")
+    if cc == "g++":
+        exe = build_example(cc, tmp_path, ["-std=c++11", "-Wall", "-Wextra", "-Werror",
+                                           "-pedantic", "-O2"], lang="c++")
+    else:
+        exe = build_example(cc, tmp_path, [*STRICT, "-O2"])
+    assert_matches(run_example(exe), expected())
+
+
+def _unused():  # keep sys imported
     return sys.executable
