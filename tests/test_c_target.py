@@ -384,3 +384,35 @@ def test_example_builds_with_clang_and_as_cpp(tmp_path, cc):
 
 def _unused():  # keep sys imported
     return sys.executable
+
+
+# -- the package's own build refuses the same flags (RIGIDSYM_CFLAGS) --
+
+SAFE = ["-O2", "-O3", "-std=c99", "-ffp-contract=off", "-ffp-contract=fast", "-march=native",
+        "-fno-math-errno", "-g"]
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.lists(st.sampled_from(SAFE), max_size=4), st.sampled_from(sorted(
+    __import__("rigidsym.kernels._build", fromlist=["UNSAFE_FLAGS"]).UNSAFE_FLAGS)),
+    st.lists(st.sampled_from(SAFE), max_size=3), st.booleans())
+def test_package_build_refuses_unsafe_flags(before, bad, after, undo):
+    """An unsafe flag is refused, naming it, unless a later flag undoes it."""
+    import os
+
+    from rigidsym.kernels import _build
+
+    fix = [_build.UNSAFE_FLAGS[bad]] if undo else []
+    old = os.environ.get("RIGIDSYM_CFLAGS")
+    os.environ["RIGIDSYM_CFLAGS"] = " ".join([*before, bad, *after, *fix])
+    try:
+        if undo:
+            assert _build.kernel_flags()[-1] == fix[0]
+        else:
+            with pytest.raises(ValueError, match=re.escape(bad)):
+                _build.kernel_flags()
+    finally:
+        if old is None:
+            del os.environ["RIGIDSYM_CFLAGS"]
+        else:
+            os.environ["RIGIDSYM_CFLAGS"] = old
