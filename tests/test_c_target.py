@@ -382,6 +382,64 @@ def test_example_builds_with_clang_and_as_cpp(tmp_path, cc):
     assert_matches(run_example(exe), expected())
 
 
+ARM = shutil.which("arm-none-eabi-gcc")
+M4F = ["-mcpu=cortex-m4", "-mthumb", "-mfloat-abi=hard", "-mfpu=fpv4-sp-d16"]
+#: what a double operation or double libm call leaves in a Cortex-M4F object
+DOUBLE_SYMBOLS = re.compile(r"^(__aeabi_d\w+|__aeabi_[fil]2d|__aeabi_d2\w+|sin|cos|tan|sqrt|"
+                            r"atan2|fma|pow|exp|log|fabs|__ieee754_\w+[^f])$")
+
+
+@pytest.mark.slow
+@pytest.mark.skipif(ARM is None, reason="arm-none-eabi-gcc is not installed (Debian: "
+                                        "gcc-arm-none-eabi)")
+def test_float_functions_have_no_double_operation_on_cortex_m4f(tmp_path):
+    """Every _f32 function's section of every Cortex-M4F object references no __aeabi_d*
+    helper and no double libm function; the float example, linked with newlib, neither;
+    -Wdouble-promotion clean."""
+    relocs: dict[str, set[str]] = {}
+    for src in sources():
+        obj = tmp_path / (src.stem + ".o")
+        subprocess.run([ARM, *M4F, *STRICT, "-Wdouble-promotion", "-O2", "-ffunction-sections",
+                        "-I", str(KERNELS_DIR), "-c", str(src), "-o", str(obj)], check=True)
+        dump = subprocess.run(["arm-none-eabi-objdump", "-r", str(obj)], check=True,
+                              capture_output=True, text=True).stdout
+        section = ""
+        for line in dump.splitlines():
+            if line.startswith("RELOCATION RECORDS FOR"):
+                section = line.split("[")[1].rstrip("]:")
+            elif "R_ARM" in line:
+                relocs.setdefault(section, set()).add(line.split()[-1])
+    floats = [sec for sec in relocs if sec.endswith("_f32")]
+    doubles = [sec for sec in relocs if sec.startswith(".text.rigidsym_c_")
+               and not sec.endswith("_f32")]
+    assert floats and doubles
+    for sec in floats:
+        assert not {s for s in relocs[sec] if DOUBLE_SYMBOLS.match(s)}, (sec, relocs[sec])
+    # the check can fail: the double functions do call double helpers or libm
+    assert any(DOUBLE_SYMBOLS.match(s) for sec in doubles for s in relocs[sec])
+    elf = tmp_path / "fw.elf"
+    subprocess.run([ARM, *M4F, *STRICT, "-Wdouble-promotion", "-O2", "-ffunction-sections",
+                    "-fdata-sections", "-I", str(KERNELS_DIR), str(EXAMPLE / "main_f32.c"),
+                    *map(str, sources()), "-Wl,--gc-sections", "--specs=nosys.specs",
+                    "-o", str(elf), "-lm"], check=True)
+    syms = subprocess.run(["arm-none-eabi-nm", str(elf)], check=True, capture_output=True,
+                          text=True).stdout.split()
+    assert "sinf" in syms and "cosf" in syms
+    assert not [s for s in syms if DOUBLE_SYMBOLS.match(s)]
+
+
+@pytest.mark.slow
+@needs_gcc
+def test_float_example_matches_numpy_to_float_rounding(tmp_path):
+    """The float-only loop on the host: every output within 8 u (float32) of the NumPy
+    kernels' float64 value, normwise (the inputs themselves rounded to float)."""
+    exe = tmp_path / "f32"
+    subprocess.run([GCC, *STRICT, "-Wdouble-promotion", "-O2", "-DRIGIDSYM_EXAMPLE_PRINT",
+                    "-I", str(KERNELS_DIR), str(EXAMPLE / "main_f32.c"), *map(str, sources()),
+                    "-o", str(exe), "-lm"], check=True)
+    assert_matches(run_example(exe), expected(), tol=8 * 2.0**-24)
+
+
 def _unused():  # keep sys imported
     return sys.executable
 
