@@ -2,10 +2,11 @@
 C++ project builds without Python, with a documented scalar API and status codes, guarded
 against the compiler flags that would make it silently wrong.
 
-Default run: the committed example folder is what the generator writes; the example
-control loop builds (gcc, -std=c99 -Wall -Wextra -Werror -pedantic) and matches the NumPy
-kernels to 1e-12; the status codes, by property; the fast-math guard. ``slow``: the flag
-matrix with gcc and clang (plain and CMake builds), C++, the Cortex-M4F float-only check.
+Default run: the example control loop builds (gcc, -std=c99 -Wall -Wextra -Werror
+-pedantic) and matches the NumPy kernels to 1e-12; the status codes, by property; the
+fast-math guard; the generator's one-line errors. ``slow``: the committed example folder is
+what the generator writes; the flag matrix with gcc and clang (plain and CMake builds), C++,
+the installed library (find_package, pkg-config), the Cortex-M4F float-only check.
 """
 
 from __future__ import annotations
@@ -104,6 +105,7 @@ def assert_matches(got: dict, want: dict, tol: float = 1e-12) -> None:
         assert np.max(np.abs(got[key] - w)) <= tol * scale, (key, got[key], w)
 
 
+@pytest.mark.slow  # generates six kernels: 3-10 s on a loaded 2-core machine
 def test_example_folder_is_what_the_generator_writes(tmp_path):
     """examples/c/rigidsym_c is the output of the command in examples/c/README.md, byte for
     byte (the --check of the C target)."""
@@ -474,3 +476,85 @@ def test_package_build_refuses_unsafe_flags(before, bad, after, undo):
             del os.environ["RIGIDSYM_CFLAGS"]
         else:
             os.environ["RIGIDSYM_CFLAGS"] = old
+
+
+# -- generator errors a user can act on (item 7) --
+
+_HEAD = '''import sympy as sp
+from rigidsym.codegen.spec import Arg, Kernel, Out
+'''
+BAD_MODULES = {
+    # a symbol that is not an argument
+    "unknown_symbol": (_HEAD + '''
+def pend(theta, l):
+    return sp.Symbol("g") * sp.sin(theta) / l
+KERNELS = [Kernel(name="pendulum", summary="s", formula="a = g sin(theta) / l", ids=("x",),
+    sources=(pend,), args=(Arg("theta", (), "any", "angle"), Arg("l", (), "any", "length")),
+    outputs=(Out("a", (), "acc"),), build=lambda theta, l: {"a": pend(theta, l)})]
+''', "pendulum", "symbol g is not an argument"),
+    # a Python NameError in a formula
+    "name_error": (_HEAD + '''
+def f(x):
+    return x * gravity
+KERNELS = [Kernel(name="scaled", summary="s", formula="y", ids=("x",), sources=(f,),
+    args=(Arg("x", (), "any", "x"),), outputs=(Out("y", (), "y"),),
+    build=lambda x: {"y": f(x)})]
+''', "scaled", "'gravity', which is not defined"),
+    # an output of another shape than declared
+    "shape_mismatch": (_HEAD + '''
+def f(x):
+    return sp.Matrix([x, x])
+KERNELS = [Kernel(name="pair", summary="s", formula="y", ids=("x",), sources=(f,),
+    args=(Arg("x", (), "any", "x"),), outputs=(Out("y", (3,), "y"),),
+    build=lambda x: {"y": f(x)})]
+''', "pair", "y: expected (3,), got (2, 1)"),
+}
+
+
+@pytest.mark.parametrize("target", ["c", "package"])
+@pytest.mark.parametrize("case", sorted(BAD_MODULES))
+def test_generator_errors_are_one_line_exit_2_nothing_written(tmp_path, capsys, case, target):
+    from rigidsym.cli import main
+
+    text, kernel, says = BAD_MODULES[case]
+    mod = tmp_path / f"{case}.py"
+    mod.write_text(text)
+    out = tmp_path / "out"
+    extra = ["--target", "c"] if target == "c" else ["--no-build"]
+    assert main(["generate", *extra, "--module", str(mod), "--out", str(out)]) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1, err
+    assert f"module {case}, kernel {kernel}" in err and says in err, err
+    assert not out.exists()
+
+
+def test_division_by_a_vanishing_argument_warns_and_records_the_set(tmp_path, capsys):
+    import json
+
+    from rigidsym.cli import main
+
+    mod = tmp_path / "rates.py"
+    mod.write_text(_HEAD + '''
+def rate(v, r):
+    return v / r
+def sinc(r):
+    return sp.sin(r) / r
+KERNELS = [Kernel(name="angular_rate", summary="s", formula="w = v / r", ids=("x",),
+    sources=(rate,), args=(Arg("v", (), "any", "speed"), Arg("r", (), "any", "radius")),
+    outputs=(Out("w", (), "rate"),), build=lambda v, r: {"w": rate(v, r)}),
+    Kernel(name="sinc", summary="s", formula="sin r / r", ids=("x",), sources=(sinc,),
+    args=(Arg("r", (), "any", "r"),), outputs=(Out("y", (), "y"),),
+    build=lambda r: {"y": sinc(r)})]
+''')
+    out = tmp_path / "out"
+    assert main(["generate", "--module", str(mod), "--out", str(out), "--no-build"]) == 0
+    err = capsys.readouterr().err
+    warned = [line for line in err.splitlines() if line.startswith("rigidsym: warning:")]
+    assert len(warned) == 1 and "kernel angular_rate" in warned[0] and "r = 0" in warned[0]
+    meta = {k["name"]: k for k in json.loads((out / "kernels.json").read_text())["kernels"]}
+    assert meta["angular_rate"]["singular"] == "r = 0"
+    assert meta["angular_rate"]["singular_arg"] == "r"
+    assert meta["sinc"]["singular"] == ""      # removable at 0: no warning, no set
+    cdir = tmp_path / "c"
+    assert main(["generate", "--target", "c", "--module", str(mod), "--out", str(cdir)]) == 0
+    assert "Singular set: r = 0" in (cdir / "rigidsym_c_angular_rate.h").read_text()

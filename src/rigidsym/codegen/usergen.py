@@ -60,8 +60,10 @@ def load_user_kernels(modules) -> tuple[list[Kernel], str]:
 
     ums = load_many(modules)
     kernels, titles = [], []
+    from rigidsym.codegen.validate import validate_all
+
     for um in ums:
-        ks = user_kernels(um)
+        ks = validate_all(user_kernels(um), um.title)
         if not ks:
             raise BadInput(f"module {um.title}: declares no KERNELS (a list of "
                            f"rigidsym.codegen.spec.Kernel)")
@@ -105,7 +107,10 @@ def cmd_generate_user(args) -> int:
         # write() removes files it does not own: never in a folder of someone else's files
         raise BadInput(f"--out: {out} is not empty and holds no generated kernels; give a new "
                        f"or empty folder")
-    res = generate_user(args.module)
+    from rigidsym.codegen.validate import one_line_warnings
+
+    with one_line_warnings():
+        res = generate_user(args.module)
     if args.check:
         diff = check(res, out)
         if diff:

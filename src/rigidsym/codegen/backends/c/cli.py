@@ -69,7 +69,10 @@ def cmd_generate_c(args) -> int:
         # write() removes the files it does not own: never in a folder of someone else's
         raise BadInput(f"--out: {out} is not empty and holds no C target "
                        f"({MARKER}); give a new or empty folder")
-    kernels, origin = select_kernels(args.module, getattr(args, "kernel", None))
+    from rigidsym.codegen.validate import one_line_warnings
+
+    with one_line_warnings():
+        kernels, origin = select_kernels(args.module, getattr(args, "kernel", None))
     files = generate_c(compile_many(kernels, plan32=False), origin)
 
     class _Result:  # what codegen.files reads of a generation
