@@ -31,19 +31,48 @@ RIGIDSYM_C_API int rigidsym_c_body_energy(
     const double omega_0 = omega[0];
     const double omega_1 = omega[1];
     const double omega_2 = omega[2];
-    int status = 0;
-    int singular = 0;
+    uint64_t odd = 0;
+    int status = 0, singular = 0;
     double finite = 0.0;
-    status |= rigidsym_c_scan_d(&m, 1);
-    status |= rigidsym_c_scan_d(v, 3);
-    status |= rigidsym_c_scan_d(inertia, 9);
-    status |= rigidsym_c_scan_d(omega, 3);
+#if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
+    {   /* the range test of every input component, as one loop (it vectorises) */
+        const double in_[16] = {
+            m, v[0], v[1], v[2], inertia[0], inertia[1], inertia[2], inertia[3], inertia[4],
+            inertia[5], inertia[6], inertia[7], inertia[8], omega[0], omega[1], omega[2]
+        };
+        int j_;
+        for (j_ = 0; j_ < 16; ++j_)
+            RIGIDSYM_C_ODD_D(odd, in_[j_]);
+    }
+    if (odd >> 63) {
+        const double *args[4];
+        const int sizes[4] = {1, 3, 9, 3};
+        int j;
+        args[0] = &m;
+        args[1] = v;
+        args[2] = inertia;
+        args[3] = omega;
+        status = RIGIDSYM_C_EXTREME_INPUT;
+        for (j = 0; j < 4; ++j)
+            if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
+                status = RIGIDSYM_C_NONFINITE_INPUT;
+    }
+#else
+    (void)odd;
+#endif
     {
         T[0] = (0.5)*m*((v_0*v_0) + (v_1*v_1) + (v_2*v_2)) + (0.5)*omega_0*(inertia_00*omega_0 + inertia_10*omega_1 + inertia_20*omega_2) + (0.5)*omega_1*(inertia_01*omega_0 + inertia_11*omega_1 + inertia_21*omega_2) + (0.5)*omega_2*(inertia_02*omega_0 + inertia_12*omega_1 + inertia_22*omega_2);
     }
-    /* x - x is 0 for finite x, NaN otherwise: one test for every output (the guards of
-     * rigidsym_c_impl.h keep the compiler from folding it) */
+    /* no division or root, and every output bounded by 2^306 for inputs of
+     * ordinary magnitude (|x| < 2^101): only an extreme or non-finite input can make an
+     * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN
+     * otherwise; the guards of rigidsym_c_impl.h keep the compiler from folding it) */
+#if defined(RIGIDSYM_C_TRUSTED_INPUTS)
     finite += (T[0] - T[0]);
+#else
+    if (status)
+        finite += (T[0] - T[0]);
+#endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
@@ -76,19 +105,48 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_f32(
     const float omega_0 = omega[0];
     const float omega_1 = omega[1];
     const float omega_2 = omega[2];
-    int status = 0;
-    int singular = 0;
+    uint32_t odd = 0;
+    int status = 0, singular = 0;
     float finite = 0.0f;
-    status |= rigidsym_c_scan_f(&m, 1);
-    status |= rigidsym_c_scan_f(v, 3);
-    status |= rigidsym_c_scan_f(inertia, 9);
-    status |= rigidsym_c_scan_f(omega, 3);
+#if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
+    {   /* the range test of every input component, as one loop (it vectorises) */
+        const float in_[16] = {
+            m, v[0], v[1], v[2], inertia[0], inertia[1], inertia[2], inertia[3], inertia[4],
+            inertia[5], inertia[6], inertia[7], inertia[8], omega[0], omega[1], omega[2]
+        };
+        int j_;
+        for (j_ = 0; j_ < 16; ++j_)
+            RIGIDSYM_C_ODD_F(odd, in_[j_]);
+    }
+    if (odd >> 31) {
+        const float *args[4];
+        const int sizes[4] = {1, 3, 9, 3};
+        int j;
+        args[0] = &m;
+        args[1] = v;
+        args[2] = inertia;
+        args[3] = omega;
+        status = RIGIDSYM_C_EXTREME_INPUT;
+        for (j = 0; j < 4; ++j)
+            if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
+                status = RIGIDSYM_C_NONFINITE_INPUT;
+    }
+#else
+    (void)odd;
+#endif
     {
         T[0] = (0.5f)*m*((v_0*v_0) + (v_1*v_1) + (v_2*v_2)) + (0.5f)*omega_0*(inertia_00*omega_0 + inertia_10*omega_1 + inertia_20*omega_2) + (0.5f)*omega_1*(inertia_01*omega_0 + inertia_11*omega_1 + inertia_21*omega_2) + (0.5f)*omega_2*(inertia_02*omega_0 + inertia_12*omega_1 + inertia_22*omega_2);
     }
-    /* x - x is 0 for finite x, NaN otherwise: one test for every output (the guards of
-     * rigidsym_c_impl.h keep the compiler from folding it) */
+    /* no division or root, and every output bounded by 2^96 for inputs of
+     * ordinary magnitude (|x| < 2^31): only an extreme or non-finite input can make an
+     * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN
+     * otherwise; the guards of rigidsym_c_impl.h keep the compiler from folding it) */
+#if defined(RIGIDSYM_C_TRUSTED_INPUTS)
     finite += (T[0] - T[0]);
+#else
+    if (status)
+        finite += (T[0] - T[0]);
+#endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
@@ -122,13 +180,35 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians(
     const double omega_0 = omega[0];
     const double omega_1 = omega[1];
     const double omega_2 = omega[2];
-    int status = 0;
-    int singular = 0;
+    uint64_t odd = 0;
+    int status = 0, singular = 0;
     double finite = 0.0;
-    status |= rigidsym_c_scan_d(&m, 1);
-    status |= rigidsym_c_scan_d(v, 3);
-    status |= rigidsym_c_scan_d(inertia, 9);
-    status |= rigidsym_c_scan_d(omega, 3);
+#if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
+    {   /* the range test of every input component, as one loop (it vectorises) */
+        const double in_[16] = {
+            m, v[0], v[1], v[2], inertia[0], inertia[1], inertia[2], inertia[3], inertia[4],
+            inertia[5], inertia[6], inertia[7], inertia[8], omega[0], omega[1], omega[2]
+        };
+        int j_;
+        for (j_ = 0; j_ < 16; ++j_)
+            RIGIDSYM_C_ODD_D(odd, in_[j_]);
+    }
+    if (odd >> 63) {
+        const double *args[4];
+        const int sizes[4] = {1, 3, 9, 3};
+        int j;
+        args[0] = &m;
+        args[1] = v;
+        args[2] = inertia;
+        args[3] = omega;
+        status = RIGIDSYM_C_EXTREME_INPUT;
+        for (j = 0; j < 4; ++j)
+            if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
+                status = RIGIDSYM_C_NONFINITE_INPUT;
+    }
+#else
+    (void)odd;
+#endif
     {
         const double x0 = (v_0*v_0);
         const double x1 = (v_1*v_1);
@@ -166,9 +246,16 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians(
         T_D_omega[1] = inertia_10*x6 + inertia_12*x14 + (0.5)*x7 + x8 + (0.5)*x9;
         T_D_omega[2] = inertia_20*x6 + inertia_21*x10 + (0.5)*x11 + (0.5)*x12 + x13;
     }
-    /* x - x is 0 for finite x, NaN otherwise: one test for every output (the guards of
-     * rigidsym_c_impl.h keep the compiler from folding it) */
+    /* no division or root, and every output bounded by 2^306 for inputs of
+     * ordinary magnitude (|x| < 2^101): only an extreme or non-finite input can make an
+     * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN
+     * otherwise; the guards of rigidsym_c_impl.h keep the compiler from folding it) */
+#if defined(RIGIDSYM_C_TRUSTED_INPUTS)
     finite += (((((T[0] - T[0]) + (T_D_m[0] - T_D_m[0])) + ((T_D_v[0] - T_D_v[0]) + (T_D_v[1] - T_D_v[1]))) + (((T_D_v[2] - T_D_v[2]) + (T_D_inertia[0] - T_D_inertia[0])) + ((T_D_inertia[1] - T_D_inertia[1]) + (T_D_inertia[2] - T_D_inertia[2])))) + ((((T_D_inertia[3] - T_D_inertia[3]) + (T_D_inertia[4] - T_D_inertia[4])) + ((T_D_inertia[5] - T_D_inertia[5]) + (T_D_inertia[6] - T_D_inertia[6]))) + (((T_D_inertia[7] - T_D_inertia[7]) + (T_D_inertia[8] - T_D_inertia[8])) + ((T_D_omega[0] - T_D_omega[0]) + ((T_D_omega[1] - T_D_omega[1]) + (T_D_omega[2] - T_D_omega[2]))))));
+#else
+    if (status)
+        finite += (((((T[0] - T[0]) + (T_D_m[0] - T_D_m[0])) + ((T_D_v[0] - T_D_v[0]) + (T_D_v[1] - T_D_v[1]))) + (((T_D_v[2] - T_D_v[2]) + (T_D_inertia[0] - T_D_inertia[0])) + ((T_D_inertia[1] - T_D_inertia[1]) + (T_D_inertia[2] - T_D_inertia[2])))) + ((((T_D_inertia[3] - T_D_inertia[3]) + (T_D_inertia[4] - T_D_inertia[4])) + ((T_D_inertia[5] - T_D_inertia[5]) + (T_D_inertia[6] - T_D_inertia[6]))) + (((T_D_inertia[7] - T_D_inertia[7]) + (T_D_inertia[8] - T_D_inertia[8])) + ((T_D_omega[0] - T_D_omega[0]) + ((T_D_omega[1] - T_D_omega[1]) + (T_D_omega[2] - T_D_omega[2]))))));
+#endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
@@ -218,13 +305,35 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians_f32(
     const float omega_0 = omega[0];
     const float omega_1 = omega[1];
     const float omega_2 = omega[2];
-    int status = 0;
-    int singular = 0;
+    uint32_t odd = 0;
+    int status = 0, singular = 0;
     float finite = 0.0f;
-    status |= rigidsym_c_scan_f(&m, 1);
-    status |= rigidsym_c_scan_f(v, 3);
-    status |= rigidsym_c_scan_f(inertia, 9);
-    status |= rigidsym_c_scan_f(omega, 3);
+#if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
+    {   /* the range test of every input component, as one loop (it vectorises) */
+        const float in_[16] = {
+            m, v[0], v[1], v[2], inertia[0], inertia[1], inertia[2], inertia[3], inertia[4],
+            inertia[5], inertia[6], inertia[7], inertia[8], omega[0], omega[1], omega[2]
+        };
+        int j_;
+        for (j_ = 0; j_ < 16; ++j_)
+            RIGIDSYM_C_ODD_F(odd, in_[j_]);
+    }
+    if (odd >> 31) {
+        const float *args[4];
+        const int sizes[4] = {1, 3, 9, 3};
+        int j;
+        args[0] = &m;
+        args[1] = v;
+        args[2] = inertia;
+        args[3] = omega;
+        status = RIGIDSYM_C_EXTREME_INPUT;
+        for (j = 0; j < 4; ++j)
+            if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
+                status = RIGIDSYM_C_NONFINITE_INPUT;
+    }
+#else
+    (void)odd;
+#endif
     {
         const float x0 = (v_0*v_0);
         const float x1 = (v_1*v_1);
@@ -262,9 +371,16 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians_f32(
         T_D_omega[1] = inertia_10*x6 + inertia_12*x14 + (0.5f)*x7 + x8 + (0.5f)*x9;
         T_D_omega[2] = inertia_20*x6 + inertia_21*x10 + (0.5f)*x11 + (0.5f)*x12 + x13;
     }
-    /* x - x is 0 for finite x, NaN otherwise: one test for every output (the guards of
-     * rigidsym_c_impl.h keep the compiler from folding it) */
+    /* no division or root, and every output bounded by 2^96 for inputs of
+     * ordinary magnitude (|x| < 2^31): only an extreme or non-finite input can make an
+     * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN
+     * otherwise; the guards of rigidsym_c_impl.h keep the compiler from folding it) */
+#if defined(RIGIDSYM_C_TRUSTED_INPUTS)
     finite += (((((T[0] - T[0]) + (T_D_m[0] - T_D_m[0])) + ((T_D_v[0] - T_D_v[0]) + (T_D_v[1] - T_D_v[1]))) + (((T_D_v[2] - T_D_v[2]) + (T_D_inertia[0] - T_D_inertia[0])) + ((T_D_inertia[1] - T_D_inertia[1]) + (T_D_inertia[2] - T_D_inertia[2])))) + ((((T_D_inertia[3] - T_D_inertia[3]) + (T_D_inertia[4] - T_D_inertia[4])) + ((T_D_inertia[5] - T_D_inertia[5]) + (T_D_inertia[6] - T_D_inertia[6]))) + (((T_D_inertia[7] - T_D_inertia[7]) + (T_D_inertia[8] - T_D_inertia[8])) + ((T_D_omega[0] - T_D_omega[0]) + ((T_D_omega[1] - T_D_omega[1]) + (T_D_omega[2] - T_D_omega[2]))))));
+#else
+    if (status)
+        finite += (((((T[0] - T[0]) + (T_D_m[0] - T_D_m[0])) + ((T_D_v[0] - T_D_v[0]) + (T_D_v[1] - T_D_v[1]))) + (((T_D_v[2] - T_D_v[2]) + (T_D_inertia[0] - T_D_inertia[0])) + ((T_D_inertia[1] - T_D_inertia[1]) + (T_D_inertia[2] - T_D_inertia[2])))) + ((((T_D_inertia[3] - T_D_inertia[3]) + (T_D_inertia[4] - T_D_inertia[4])) + ((T_D_inertia[5] - T_D_inertia[5]) + (T_D_inertia[6] - T_D_inertia[6]))) + (((T_D_inertia[7] - T_D_inertia[7]) + (T_D_inertia[8] - T_D_inertia[8])) + ((T_D_omega[0] - T_D_omega[0]) + ((T_D_omega[1] - T_D_omega[1]) + (T_D_omega[2] - T_D_omega[2]))))));
+#endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {

@@ -48,40 +48,51 @@
 #include "rigidsym_c_common.h"
 
 /* The input bits of the status: RIGIDSYM_C_NONFINITE_INPUT when a component is infinite or
- * NaN (exponent bits all ones), RIGIDSYM_C_EXTREME_INPUT when one is nonzero of magnitude
- * outside [2^-100, 2^101) (float: [2^-30, 2^31)), where products of the inputs could
- * underflow or overflow. Integer tests of the bits, so that no floating-point flag changes
- * them. */
-static inline int rigidsym_c_scan_d(const double *p, int n)
+ * NaN, RIGIDSYM_C_EXTREME_INPUT when all are finite and one is nonzero of magnitude outside
+ * [2^-100, 2^101) (float: [2^-30, 2^31)), where products of the inputs could underflow or
+ * overflow. Integer tests of the bits (no floating-point operation, so no flag or compiler
+ * flag changes them). The common path is one test per component, RIGIDSYM_C_ODD_D: with
+ * a = |x|'s bits and d = a - 2^-100's bits, d and d - (2^101's bits - 2^-100's bits) have
+ * the same sign exactly when a is outside the range (inf and NaN included), and a + (2^63 - 1)
+ * has its sign bit set exactly when x != 0; so the sign bit of the OR over the components is
+ * set when one of them is odd. Only then does rigidsym_c_classify_* look again, to tell the
+ * two bits apart. */
+#define RIGIDSYM_C_ODD_D(acc, x) do { \
+        uint64_t b_, d_; \
+        const double x_ = (x); \
+        memcpy(&b_, &x_, sizeof b_); \
+        b_ &= 0x7fffffffffffffffULL; \
+        d_ = b_ - (923ULL << 52); \
+        (acc) |= ~(d_ ^ (d_ - (201ULL << 52))) & (b_ + 0x7fffffffffffffffULL); \
+    } while (0)
+
+#define RIGIDSYM_C_ODD_F(acc, x) do { \
+        uint32_t b_, d_; \
+        const float x_ = (x); \
+        memcpy(&b_, &x_, sizeof b_); \
+        b_ &= 0x7fffffffU; \
+        d_ = b_ - (97U << 23); \
+        (acc) |= ~(d_ ^ (d_ - (61U << 23))) & (b_ + 0x7fffffffU); \
+    } while (0)
+
+/* RIGIDSYM_C_NONFINITE_INPUT when one of the n values at p is infinite or NaN, else
+ * RIGIDSYM_C_EXTREME_INPUT (called only when RIGIDSYM_C_ODD_* found an odd value) */
+static inline int rigidsym_c_classify_d(const double *p, int n)
 {
-    int status = 0;
     int j;
-    for (j = 0; j < n; ++j) {
-        uint64_t b;
-        memcpy(&b, p + j, sizeof b);
-        b &= 0x7fffffffffffffffULL;
-        if (b >= 0x7ff0000000000000ULL)
-            status |= RIGIDSYM_C_NONFINITE_INPUT;
-        else if (b != 0 && (b < (923ULL << 52) || b >= (1124ULL << 52)))
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-    }
-    return status;
+    for (j = 0; j < n; ++j)
+        if (!(p[j] - p[j] == 0.0))
+            return RIGIDSYM_C_NONFINITE_INPUT;
+    return RIGIDSYM_C_EXTREME_INPUT;
 }
 
-static inline int rigidsym_c_scan_f(const float *p, int n)
+static inline int rigidsym_c_classify_f(const float *p, int n)
 {
-    int status = 0;
     int j;
-    for (j = 0; j < n; ++j) {
-        uint32_t b;
-        memcpy(&b, p + j, sizeof b);
-        b &= 0x7fffffffU;
-        if (b >= 0x7f800000U)
-            status |= RIGIDSYM_C_NONFINITE_INPUT;
-        else if (b != 0 && (b < (97U << 23) || b >= (158U << 23)))
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-    }
-    return status;
+    for (j = 0; j < n; ++j)
+        if (!(p[j] - p[j] == 0.0f))
+            return RIGIDSYM_C_NONFINITE_INPUT;
+    return RIGIDSYM_C_EXTREME_INPUT;
 }
 
 /* a b - c d compensated (Kahan's algorithm): within 2 u of the exact value however much the

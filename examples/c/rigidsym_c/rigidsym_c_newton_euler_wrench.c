@@ -34,14 +34,37 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench(
     const double c_ddot_0 = c_ddot[0];
     const double c_ddot_1 = c_ddot[1];
     const double c_ddot_2 = c_ddot[2];
-    int status = 0;
-    int singular = 0;
+    uint64_t odd = 0;
+    int status = 0, singular = 0;
     double finite = 0.0;
-    status |= rigidsym_c_scan_d(I_C, 9);
-    status |= rigidsym_c_scan_d(&m, 1);
-    status |= rigidsym_c_scan_d(omega, 3);
-    status |= rigidsym_c_scan_d(omega_dot, 3);
-    status |= rigidsym_c_scan_d(c_ddot, 3);
+#if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
+    {   /* the range test of every input component, as one loop (it vectorises) */
+        const double in_[20] = {
+            I_C[0], I_C[1], I_C[2], I_C[3], I_C[4], I_C[5], I_C[6], I_C[7], I_C[8], m, omega[0],
+            omega[1], omega[2], omega_dot[0], omega_dot[1], omega_dot[2], c_ddot[0], c_ddot[1],
+            c_ddot[2], 0.0
+        };
+        int j_;
+        for (j_ = 0; j_ < 20; ++j_)
+            RIGIDSYM_C_ODD_D(odd, in_[j_]);
+    }
+    if (odd >> 63) {
+        const double *args[5];
+        const int sizes[5] = {9, 1, 3, 3, 3};
+        int j;
+        args[0] = I_C;
+        args[1] = &m;
+        args[2] = omega;
+        args[3] = omega_dot;
+        args[4] = c_ddot;
+        status = RIGIDSYM_C_EXTREME_INPUT;
+        for (j = 0; j < 5; ++j)
+            if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
+                status = RIGIDSYM_C_NONFINITE_INPUT;
+    }
+#else
+    (void)odd;
+#endif
     {
         const double x0 = I_C_20*omega_0 + I_C_21*omega_1 + I_C_22*omega_2;
         const double x1 = I_C_10*omega_0 + I_C_11*omega_1 + I_C_12*omega_2;
@@ -53,9 +76,16 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench(
         w[4] = c_ddot_1*m;
         w[5] = c_ddot_2*m;
     }
-    /* x - x is 0 for finite x, NaN otherwise: one test for every output (the guards of
-     * rigidsym_c_impl.h keep the compiler from folding it) */
+    /* no division or root, and every output bounded by 2^307 for inputs of
+     * ordinary magnitude (|x| < 2^101): only an extreme or non-finite input can make an
+     * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN
+     * otherwise; the guards of rigidsym_c_impl.h keep the compiler from folding it) */
+#if defined(RIGIDSYM_C_TRUSTED_INPUTS)
     finite += (((w[0] - w[0]) + ((w[1] - w[1]) + (w[2] - w[2]))) + ((w[3] - w[3]) + ((w[4] - w[4]) + (w[5] - w[5]))));
+#else
+    if (status)
+        finite += (((w[0] - w[0]) + ((w[1] - w[1]) + (w[2] - w[2]))) + ((w[3] - w[3]) + ((w[4] - w[4]) + (w[5] - w[5]))));
+#endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
@@ -96,14 +126,37 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_f32(
     const float c_ddot_0 = c_ddot[0];
     const float c_ddot_1 = c_ddot[1];
     const float c_ddot_2 = c_ddot[2];
-    int status = 0;
-    int singular = 0;
+    uint32_t odd = 0;
+    int status = 0, singular = 0;
     float finite = 0.0f;
-    status |= rigidsym_c_scan_f(I_C, 9);
-    status |= rigidsym_c_scan_f(&m, 1);
-    status |= rigidsym_c_scan_f(omega, 3);
-    status |= rigidsym_c_scan_f(omega_dot, 3);
-    status |= rigidsym_c_scan_f(c_ddot, 3);
+#if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
+    {   /* the range test of every input component, as one loop (it vectorises) */
+        const float in_[20] = {
+            I_C[0], I_C[1], I_C[2], I_C[3], I_C[4], I_C[5], I_C[6], I_C[7], I_C[8], m, omega[0],
+            omega[1], omega[2], omega_dot[0], omega_dot[1], omega_dot[2], c_ddot[0], c_ddot[1],
+            c_ddot[2], 0.0f
+        };
+        int j_;
+        for (j_ = 0; j_ < 20; ++j_)
+            RIGIDSYM_C_ODD_F(odd, in_[j_]);
+    }
+    if (odd >> 31) {
+        const float *args[5];
+        const int sizes[5] = {9, 1, 3, 3, 3};
+        int j;
+        args[0] = I_C;
+        args[1] = &m;
+        args[2] = omega;
+        args[3] = omega_dot;
+        args[4] = c_ddot;
+        status = RIGIDSYM_C_EXTREME_INPUT;
+        for (j = 0; j < 5; ++j)
+            if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
+                status = RIGIDSYM_C_NONFINITE_INPUT;
+    }
+#else
+    (void)odd;
+#endif
     {
         const float x0 = I_C_20*omega_0 + I_C_21*omega_1 + I_C_22*omega_2;
         const float x1 = I_C_10*omega_0 + I_C_11*omega_1 + I_C_12*omega_2;
@@ -115,9 +168,16 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_f32(
         w[4] = c_ddot_1*m;
         w[5] = c_ddot_2*m;
     }
-    /* x - x is 0 for finite x, NaN otherwise: one test for every output (the guards of
-     * rigidsym_c_impl.h keep the compiler from folding it) */
+    /* no division or root, and every output bounded by 2^97 for inputs of
+     * ordinary magnitude (|x| < 2^31): only an extreme or non-finite input can make an
+     * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN
+     * otherwise; the guards of rigidsym_c_impl.h keep the compiler from folding it) */
+#if defined(RIGIDSYM_C_TRUSTED_INPUTS)
     finite += (((w[0] - w[0]) + ((w[1] - w[1]) + (w[2] - w[2]))) + ((w[3] - w[3]) + ((w[4] - w[4]) + (w[5] - w[5]))));
+#else
+    if (status)
+        finite += (((w[0] - w[0]) + ((w[1] - w[1]) + (w[2] - w[2]))) + ((w[3] - w[3]) + ((w[4] - w[4]) + (w[5] - w[5]))));
+#endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
@@ -158,14 +218,37 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians(
     const double c_ddot_0 = c_ddot[0];
     const double c_ddot_1 = c_ddot[1];
     const double c_ddot_2 = c_ddot[2];
-    int status = 0;
-    int singular = 0;
+    uint64_t odd = 0;
+    int status = 0, singular = 0;
     double finite = 0.0;
-    status |= rigidsym_c_scan_d(I_C, 9);
-    status |= rigidsym_c_scan_d(&m, 1);
-    status |= rigidsym_c_scan_d(omega, 3);
-    status |= rigidsym_c_scan_d(omega_dot, 3);
-    status |= rigidsym_c_scan_d(c_ddot, 3);
+#if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
+    {   /* the range test of every input component, as one loop (it vectorises) */
+        const double in_[20] = {
+            I_C[0], I_C[1], I_C[2], I_C[3], I_C[4], I_C[5], I_C[6], I_C[7], I_C[8], m, omega[0],
+            omega[1], omega[2], omega_dot[0], omega_dot[1], omega_dot[2], c_ddot[0], c_ddot[1],
+            c_ddot[2], 0.0
+        };
+        int j_;
+        for (j_ = 0; j_ < 20; ++j_)
+            RIGIDSYM_C_ODD_D(odd, in_[j_]);
+    }
+    if (odd >> 63) {
+        const double *args[5];
+        const int sizes[5] = {9, 1, 3, 3, 3};
+        int j;
+        args[0] = I_C;
+        args[1] = &m;
+        args[2] = omega;
+        args[3] = omega_dot;
+        args[4] = c_ddot;
+        status = RIGIDSYM_C_EXTREME_INPUT;
+        for (j = 0; j < 5; ++j)
+            if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
+                status = RIGIDSYM_C_NONFINITE_INPUT;
+    }
+#else
+    (void)odd;
+#endif
     {
         const double x0 = I_C_21*omega_1;
         const double x1 = I_C_20*omega_0;
@@ -312,9 +395,16 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians(
         w_D_c_ddot[16] = 0.0;
         w_D_c_ddot[17] = m;
     }
-    /* x - x is 0 for finite x, NaN otherwise: one test for every output (the guards of
-     * rigidsym_c_impl.h keep the compiler from folding it) */
+    /* no division or root, and every output bounded by 2^308 for inputs of
+     * ordinary magnitude (|x| < 2^101): only an extreme or non-finite input can make an
+     * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN
+     * otherwise; the guards of rigidsym_c_impl.h keep the compiler from folding it) */
+#if defined(RIGIDSYM_C_TRUSTED_INPUTS)
     finite += (((((((w[0] - w[0]) + ((w[1] - w[1]) + (w[2] - w[2]))) + (((w[3] - w[3]) + (w[4] - w[4])) + ((w[5] - w[5]) + (w_D_I_C[0] - w_D_I_C[0])))) + ((((w_D_I_C[1] - w_D_I_C[1]) + (w_D_I_C[2] - w_D_I_C[2])) + ((w_D_I_C[3] - w_D_I_C[3]) + (w_D_I_C[4] - w_D_I_C[4]))) + (((w_D_I_C[5] - w_D_I_C[5]) + (w_D_I_C[6] - w_D_I_C[6])) + ((w_D_I_C[7] - w_D_I_C[7]) + (w_D_I_C[8] - w_D_I_C[8]))))) + ((((w_D_I_C[9] - w_D_I_C[9]) + ((w_D_I_C[10] - w_D_I_C[10]) + (w_D_I_C[11] - w_D_I_C[11]))) + (((w_D_I_C[12] - w_D_I_C[12]) + (w_D_I_C[13] - w_D_I_C[13])) + ((w_D_I_C[14] - w_D_I_C[14]) + (w_D_I_C[15] - w_D_I_C[15])))) + ((((w_D_I_C[16] - w_D_I_C[16]) + (w_D_I_C[17] - w_D_I_C[17])) + ((w_D_I_C[18] - w_D_I_C[18]) + (w_D_I_C[19] - w_D_I_C[19]))) + (((w_D_I_C[20] - w_D_I_C[20]) + (w_D_I_C[21] - w_D_I_C[21])) + ((w_D_I_C[22] - w_D_I_C[22]) + (w_D_I_C[23] - w_D_I_C[23])))))) + (((((w_D_I_C[24] - w_D_I_C[24]) + ((w_D_I_C[25] - w_D_I_C[25]) + (w_D_I_C[26] - w_D_I_C[26]))) + (((w_D_I_C[27] - w_D_I_C[27]) + (w_D_I_C[28] - w_D_I_C[28])) + ((w_D_I_C[29] - w_D_I_C[29]) + (w_D_I_C[30] - w_D_I_C[30])))) + ((((w_D_I_C[31] - w_D_I_C[31]) + (w_D_I_C[32] - w_D_I_C[32])) + ((w_D_I_C[33] - w_D_I_C[33]) + (w_D_I_C[34] - w_D_I_C[34]))) + (((w_D_I_C[35] - w_D_I_C[35]) + (w_D_I_C[36] - w_D_I_C[36])) + ((w_D_I_C[37] - w_D_I_C[37]) + (w_D_I_C[38] - w_D_I_C[38]))))) + ((((w_D_I_C[39] - w_D_I_C[39]) + ((w_D_I_C[40] - w_D_I_C[40]) + (w_D_I_C[41] - w_D_I_C[41]))) + (((w_D_I_C[42] - w_D_I_C[42]) + (w_D_I_C[43] - w_D_I_C[43])) + ((w_D_I_C[44] - w_D_I_C[44]) + (w_D_I_C[45] - w_D_I_C[45])))) + ((((w_D_I_C[46] - w_D_I_C[46]) + (w_D_I_C[47] - w_D_I_C[47])) + ((w_D_I_C[48] - w_D_I_C[48]) + (w_D_I_C[49] - w_D_I_C[49]))) + (((w_D_I_C[50] - w_D_I_C[50]) + (w_D_I_C[51] - w_D_I_C[51])) + ((w_D_I_C[52] - w_D_I_C[52]) + (w_D_I_C[53] - w_D_I_C[53]))))))) + ((((((w_D_m[0] - w_D_m[0]) + ((w_D_m[1] - w_D_m[1]) + (w_D_m[2] - w_D_m[2]))) + (((w_D_m[3] - w_D_m[3]) + (w_D_m[4] - w_D_m[4])) + ((w_D_m[5] - w_D_m[5]) + (w_D_omega[0] - w_D_omega[0])))) + ((((w_D_omega[1] - w_D_omega[1]) + (w_D_omega[2] - w_D_omega[2])) + ((w_D_omega[3] - w_D_omega[3]) + (w_D_omega[4] - w_D_omega[4]))) + (((w_D_omega[5] - w_D_omega[5]) + (w_D_omega[6] - w_D_omega[6])) + ((w_D_omega[7] - w_D_omega[7]) + (w_D_omega[8] - w_D_omega[8]))))) + ((((w_D_omega[9] - w_D_omega[9]) + ((w_D_omega[10] - w_D_omega[10]) + (w_D_omega[11] - w_D_omega[11]))) + (((w_D_omega[12] - w_D_omega[12]) + (w_D_omega[13] - w_D_omega[13])) + ((w_D_omega[14] - w_D_omega[14]) + (w_D_omega[15] - w_D_omega[15])))) + ((((w_D_omega[16] - w_D_omega[16]) + (w_D_omega[17] - w_D_omega[17])) + ((w_D_omega_dot[0] - w_D_omega_dot[0]) + (w_D_omega_dot[1] - w_D_omega_dot[1]))) + (((w_D_omega_dot[2] - w_D_omega_dot[2]) + (w_D_omega_dot[3] - w_D_omega_dot[3])) + ((w_D_omega_dot[4] - w_D_omega_dot[4]) + (w_D_omega_dot[5] - w_D_omega_dot[5])))))) + (((((w_D_omega_dot[6] - w_D_omega_dot[6]) + ((w_D_omega_dot[7] - w_D_omega_dot[7]) + (w_D_omega_dot[8] - w_D_omega_dot[8]))) + (((w_D_omega_dot[9] - w_D_omega_dot[9]) + (w_D_omega_dot[10] - w_D_omega_dot[10])) + ((w_D_omega_dot[11] - w_D_omega_dot[11]) + (w_D_omega_dot[12] - w_D_omega_dot[12])))) + ((((w_D_omega_dot[13] - w_D_omega_dot[13]) + (w_D_omega_dot[14] - w_D_omega_dot[14])) + ((w_D_omega_dot[15] - w_D_omega_dot[15]) + (w_D_omega_dot[16] - w_D_omega_dot[16]))) + (((w_D_omega_dot[17] - w_D_omega_dot[17]) + (w_D_c_ddot[0] - w_D_c_ddot[0])) + ((w_D_c_ddot[1] - w_D_c_ddot[1]) + (w_D_c_ddot[2] - w_D_c_ddot[2]))))) + ((((w_D_c_ddot[3] - w_D_c_ddot[3]) + ((w_D_c_ddot[4] - w_D_c_ddot[4]) + (w_D_c_ddot[5] - w_D_c_ddot[5]))) + (((w_D_c_ddot[6] - w_D_c_ddot[6]) + (w_D_c_ddot[7] - w_D_c_ddot[7])) + ((w_D_c_ddot[8] - w_D_c_ddot[8]) + (w_D_c_ddot[9] - w_D_c_ddot[9])))) + ((((w_D_c_ddot[10] - w_D_c_ddot[10]) + (w_D_c_ddot[11] - w_D_c_ddot[11])) + ((w_D_c_ddot[12] - w_D_c_ddot[12]) + (w_D_c_ddot[13] - w_D_c_ddot[13]))) + (((w_D_c_ddot[14] - w_D_c_ddot[14]) + (w_D_c_ddot[15] - w_D_c_ddot[15])) + ((w_D_c_ddot[16] - w_D_c_ddot[16]) + (w_D_c_ddot[17] - w_D_c_ddot[17]))))))));
+#else
+    if (status)
+        finite += (((((((w[0] - w[0]) + ((w[1] - w[1]) + (w[2] - w[2]))) + (((w[3] - w[3]) + (w[4] - w[4])) + ((w[5] - w[5]) + (w_D_I_C[0] - w_D_I_C[0])))) + ((((w_D_I_C[1] - w_D_I_C[1]) + (w_D_I_C[2] - w_D_I_C[2])) + ((w_D_I_C[3] - w_D_I_C[3]) + (w_D_I_C[4] - w_D_I_C[4]))) + (((w_D_I_C[5] - w_D_I_C[5]) + (w_D_I_C[6] - w_D_I_C[6])) + ((w_D_I_C[7] - w_D_I_C[7]) + (w_D_I_C[8] - w_D_I_C[8]))))) + ((((w_D_I_C[9] - w_D_I_C[9]) + ((w_D_I_C[10] - w_D_I_C[10]) + (w_D_I_C[11] - w_D_I_C[11]))) + (((w_D_I_C[12] - w_D_I_C[12]) + (w_D_I_C[13] - w_D_I_C[13])) + ((w_D_I_C[14] - w_D_I_C[14]) + (w_D_I_C[15] - w_D_I_C[15])))) + ((((w_D_I_C[16] - w_D_I_C[16]) + (w_D_I_C[17] - w_D_I_C[17])) + ((w_D_I_C[18] - w_D_I_C[18]) + (w_D_I_C[19] - w_D_I_C[19]))) + (((w_D_I_C[20] - w_D_I_C[20]) + (w_D_I_C[21] - w_D_I_C[21])) + ((w_D_I_C[22] - w_D_I_C[22]) + (w_D_I_C[23] - w_D_I_C[23])))))) + (((((w_D_I_C[24] - w_D_I_C[24]) + ((w_D_I_C[25] - w_D_I_C[25]) + (w_D_I_C[26] - w_D_I_C[26]))) + (((w_D_I_C[27] - w_D_I_C[27]) + (w_D_I_C[28] - w_D_I_C[28])) + ((w_D_I_C[29] - w_D_I_C[29]) + (w_D_I_C[30] - w_D_I_C[30])))) + ((((w_D_I_C[31] - w_D_I_C[31]) + (w_D_I_C[32] - w_D_I_C[32])) + ((w_D_I_C[33] - w_D_I_C[33]) + (w_D_I_C[34] - w_D_I_C[34]))) + (((w_D_I_C[35] - w_D_I_C[35]) + (w_D_I_C[36] - w_D_I_C[36])) + ((w_D_I_C[37] - w_D_I_C[37]) + (w_D_I_C[38] - w_D_I_C[38]))))) + ((((w_D_I_C[39] - w_D_I_C[39]) + ((w_D_I_C[40] - w_D_I_C[40]) + (w_D_I_C[41] - w_D_I_C[41]))) + (((w_D_I_C[42] - w_D_I_C[42]) + (w_D_I_C[43] - w_D_I_C[43])) + ((w_D_I_C[44] - w_D_I_C[44]) + (w_D_I_C[45] - w_D_I_C[45])))) + ((((w_D_I_C[46] - w_D_I_C[46]) + (w_D_I_C[47] - w_D_I_C[47])) + ((w_D_I_C[48] - w_D_I_C[48]) + (w_D_I_C[49] - w_D_I_C[49]))) + (((w_D_I_C[50] - w_D_I_C[50]) + (w_D_I_C[51] - w_D_I_C[51])) + ((w_D_I_C[52] - w_D_I_C[52]) + (w_D_I_C[53] - w_D_I_C[53]))))))) + ((((((w_D_m[0] - w_D_m[0]) + ((w_D_m[1] - w_D_m[1]) + (w_D_m[2] - w_D_m[2]))) + (((w_D_m[3] - w_D_m[3]) + (w_D_m[4] - w_D_m[4])) + ((w_D_m[5] - w_D_m[5]) + (w_D_omega[0] - w_D_omega[0])))) + ((((w_D_omega[1] - w_D_omega[1]) + (w_D_omega[2] - w_D_omega[2])) + ((w_D_omega[3] - w_D_omega[3]) + (w_D_omega[4] - w_D_omega[4]))) + (((w_D_omega[5] - w_D_omega[5]) + (w_D_omega[6] - w_D_omega[6])) + ((w_D_omega[7] - w_D_omega[7]) + (w_D_omega[8] - w_D_omega[8]))))) + ((((w_D_omega[9] - w_D_omega[9]) + ((w_D_omega[10] - w_D_omega[10]) + (w_D_omega[11] - w_D_omega[11]))) + (((w_D_omega[12] - w_D_omega[12]) + (w_D_omega[13] - w_D_omega[13])) + ((w_D_omega[14] - w_D_omega[14]) + (w_D_omega[15] - w_D_omega[15])))) + ((((w_D_omega[16] - w_D_omega[16]) + (w_D_omega[17] - w_D_omega[17])) + ((w_D_omega_dot[0] - w_D_omega_dot[0]) + (w_D_omega_dot[1] - w_D_omega_dot[1]))) + (((w_D_omega_dot[2] - w_D_omega_dot[2]) + (w_D_omega_dot[3] - w_D_omega_dot[3])) + ((w_D_omega_dot[4] - w_D_omega_dot[4]) + (w_D_omega_dot[5] - w_D_omega_dot[5])))))) + (((((w_D_omega_dot[6] - w_D_omega_dot[6]) + ((w_D_omega_dot[7] - w_D_omega_dot[7]) + (w_D_omega_dot[8] - w_D_omega_dot[8]))) + (((w_D_omega_dot[9] - w_D_omega_dot[9]) + (w_D_omega_dot[10] - w_D_omega_dot[10])) + ((w_D_omega_dot[11] - w_D_omega_dot[11]) + (w_D_omega_dot[12] - w_D_omega_dot[12])))) + ((((w_D_omega_dot[13] - w_D_omega_dot[13]) + (w_D_omega_dot[14] - w_D_omega_dot[14])) + ((w_D_omega_dot[15] - w_D_omega_dot[15]) + (w_D_omega_dot[16] - w_D_omega_dot[16]))) + (((w_D_omega_dot[17] - w_D_omega_dot[17]) + (w_D_c_ddot[0] - w_D_c_ddot[0])) + ((w_D_c_ddot[1] - w_D_c_ddot[1]) + (w_D_c_ddot[2] - w_D_c_ddot[2]))))) + ((((w_D_c_ddot[3] - w_D_c_ddot[3]) + ((w_D_c_ddot[4] - w_D_c_ddot[4]) + (w_D_c_ddot[5] - w_D_c_ddot[5]))) + (((w_D_c_ddot[6] - w_D_c_ddot[6]) + (w_D_c_ddot[7] - w_D_c_ddot[7])) + ((w_D_c_ddot[8] - w_D_c_ddot[8]) + (w_D_c_ddot[9] - w_D_c_ddot[9])))) + ((((w_D_c_ddot[10] - w_D_c_ddot[10]) + (w_D_c_ddot[11] - w_D_c_ddot[11])) + ((w_D_c_ddot[12] - w_D_c_ddot[12]) + (w_D_c_ddot[13] - w_D_c_ddot[13]))) + (((w_D_c_ddot[14] - w_D_c_ddot[14]) + (w_D_c_ddot[15] - w_D_c_ddot[15])) + ((w_D_c_ddot[16] - w_D_c_ddot[16]) + (w_D_c_ddot[17] - w_D_c_ddot[17]))))))));
+#endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
@@ -469,14 +559,37 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians_f32(
     const float c_ddot_0 = c_ddot[0];
     const float c_ddot_1 = c_ddot[1];
     const float c_ddot_2 = c_ddot[2];
-    int status = 0;
-    int singular = 0;
+    uint32_t odd = 0;
+    int status = 0, singular = 0;
     float finite = 0.0f;
-    status |= rigidsym_c_scan_f(I_C, 9);
-    status |= rigidsym_c_scan_f(&m, 1);
-    status |= rigidsym_c_scan_f(omega, 3);
-    status |= rigidsym_c_scan_f(omega_dot, 3);
-    status |= rigidsym_c_scan_f(c_ddot, 3);
+#if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
+    {   /* the range test of every input component, as one loop (it vectorises) */
+        const float in_[20] = {
+            I_C[0], I_C[1], I_C[2], I_C[3], I_C[4], I_C[5], I_C[6], I_C[7], I_C[8], m, omega[0],
+            omega[1], omega[2], omega_dot[0], omega_dot[1], omega_dot[2], c_ddot[0], c_ddot[1],
+            c_ddot[2], 0.0f
+        };
+        int j_;
+        for (j_ = 0; j_ < 20; ++j_)
+            RIGIDSYM_C_ODD_F(odd, in_[j_]);
+    }
+    if (odd >> 31) {
+        const float *args[5];
+        const int sizes[5] = {9, 1, 3, 3, 3};
+        int j;
+        args[0] = I_C;
+        args[1] = &m;
+        args[2] = omega;
+        args[3] = omega_dot;
+        args[4] = c_ddot;
+        status = RIGIDSYM_C_EXTREME_INPUT;
+        for (j = 0; j < 5; ++j)
+            if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
+                status = RIGIDSYM_C_NONFINITE_INPUT;
+    }
+#else
+    (void)odd;
+#endif
     {
         const float x0 = I_C_21*omega_1;
         const float x1 = I_C_20*omega_0;
@@ -623,9 +736,16 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians_f32(
         w_D_c_ddot[16] = 0.0f;
         w_D_c_ddot[17] = m;
     }
-    /* x - x is 0 for finite x, NaN otherwise: one test for every output (the guards of
-     * rigidsym_c_impl.h keep the compiler from folding it) */
+    /* no division or root, and every output bounded by 2^98 for inputs of
+     * ordinary magnitude (|x| < 2^31): only an extreme or non-finite input can make an
+     * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN
+     * otherwise; the guards of rigidsym_c_impl.h keep the compiler from folding it) */
+#if defined(RIGIDSYM_C_TRUSTED_INPUTS)
     finite += (((((((w[0] - w[0]) + ((w[1] - w[1]) + (w[2] - w[2]))) + (((w[3] - w[3]) + (w[4] - w[4])) + ((w[5] - w[5]) + (w_D_I_C[0] - w_D_I_C[0])))) + ((((w_D_I_C[1] - w_D_I_C[1]) + (w_D_I_C[2] - w_D_I_C[2])) + ((w_D_I_C[3] - w_D_I_C[3]) + (w_D_I_C[4] - w_D_I_C[4]))) + (((w_D_I_C[5] - w_D_I_C[5]) + (w_D_I_C[6] - w_D_I_C[6])) + ((w_D_I_C[7] - w_D_I_C[7]) + (w_D_I_C[8] - w_D_I_C[8]))))) + ((((w_D_I_C[9] - w_D_I_C[9]) + ((w_D_I_C[10] - w_D_I_C[10]) + (w_D_I_C[11] - w_D_I_C[11]))) + (((w_D_I_C[12] - w_D_I_C[12]) + (w_D_I_C[13] - w_D_I_C[13])) + ((w_D_I_C[14] - w_D_I_C[14]) + (w_D_I_C[15] - w_D_I_C[15])))) + ((((w_D_I_C[16] - w_D_I_C[16]) + (w_D_I_C[17] - w_D_I_C[17])) + ((w_D_I_C[18] - w_D_I_C[18]) + (w_D_I_C[19] - w_D_I_C[19]))) + (((w_D_I_C[20] - w_D_I_C[20]) + (w_D_I_C[21] - w_D_I_C[21])) + ((w_D_I_C[22] - w_D_I_C[22]) + (w_D_I_C[23] - w_D_I_C[23])))))) + (((((w_D_I_C[24] - w_D_I_C[24]) + ((w_D_I_C[25] - w_D_I_C[25]) + (w_D_I_C[26] - w_D_I_C[26]))) + (((w_D_I_C[27] - w_D_I_C[27]) + (w_D_I_C[28] - w_D_I_C[28])) + ((w_D_I_C[29] - w_D_I_C[29]) + (w_D_I_C[30] - w_D_I_C[30])))) + ((((w_D_I_C[31] - w_D_I_C[31]) + (w_D_I_C[32] - w_D_I_C[32])) + ((w_D_I_C[33] - w_D_I_C[33]) + (w_D_I_C[34] - w_D_I_C[34]))) + (((w_D_I_C[35] - w_D_I_C[35]) + (w_D_I_C[36] - w_D_I_C[36])) + ((w_D_I_C[37] - w_D_I_C[37]) + (w_D_I_C[38] - w_D_I_C[38]))))) + ((((w_D_I_C[39] - w_D_I_C[39]) + ((w_D_I_C[40] - w_D_I_C[40]) + (w_D_I_C[41] - w_D_I_C[41]))) + (((w_D_I_C[42] - w_D_I_C[42]) + (w_D_I_C[43] - w_D_I_C[43])) + ((w_D_I_C[44] - w_D_I_C[44]) + (w_D_I_C[45] - w_D_I_C[45])))) + ((((w_D_I_C[46] - w_D_I_C[46]) + (w_D_I_C[47] - w_D_I_C[47])) + ((w_D_I_C[48] - w_D_I_C[48]) + (w_D_I_C[49] - w_D_I_C[49]))) + (((w_D_I_C[50] - w_D_I_C[50]) + (w_D_I_C[51] - w_D_I_C[51])) + ((w_D_I_C[52] - w_D_I_C[52]) + (w_D_I_C[53] - w_D_I_C[53]))))))) + ((((((w_D_m[0] - w_D_m[0]) + ((w_D_m[1] - w_D_m[1]) + (w_D_m[2] - w_D_m[2]))) + (((w_D_m[3] - w_D_m[3]) + (w_D_m[4] - w_D_m[4])) + ((w_D_m[5] - w_D_m[5]) + (w_D_omega[0] - w_D_omega[0])))) + ((((w_D_omega[1] - w_D_omega[1]) + (w_D_omega[2] - w_D_omega[2])) + ((w_D_omega[3] - w_D_omega[3]) + (w_D_omega[4] - w_D_omega[4]))) + (((w_D_omega[5] - w_D_omega[5]) + (w_D_omega[6] - w_D_omega[6])) + ((w_D_omega[7] - w_D_omega[7]) + (w_D_omega[8] - w_D_omega[8]))))) + ((((w_D_omega[9] - w_D_omega[9]) + ((w_D_omega[10] - w_D_omega[10]) + (w_D_omega[11] - w_D_omega[11]))) + (((w_D_omega[12] - w_D_omega[12]) + (w_D_omega[13] - w_D_omega[13])) + ((w_D_omega[14] - w_D_omega[14]) + (w_D_omega[15] - w_D_omega[15])))) + ((((w_D_omega[16] - w_D_omega[16]) + (w_D_omega[17] - w_D_omega[17])) + ((w_D_omega_dot[0] - w_D_omega_dot[0]) + (w_D_omega_dot[1] - w_D_omega_dot[1]))) + (((w_D_omega_dot[2] - w_D_omega_dot[2]) + (w_D_omega_dot[3] - w_D_omega_dot[3])) + ((w_D_omega_dot[4] - w_D_omega_dot[4]) + (w_D_omega_dot[5] - w_D_omega_dot[5])))))) + (((((w_D_omega_dot[6] - w_D_omega_dot[6]) + ((w_D_omega_dot[7] - w_D_omega_dot[7]) + (w_D_omega_dot[8] - w_D_omega_dot[8]))) + (((w_D_omega_dot[9] - w_D_omega_dot[9]) + (w_D_omega_dot[10] - w_D_omega_dot[10])) + ((w_D_omega_dot[11] - w_D_omega_dot[11]) + (w_D_omega_dot[12] - w_D_omega_dot[12])))) + ((((w_D_omega_dot[13] - w_D_omega_dot[13]) + (w_D_omega_dot[14] - w_D_omega_dot[14])) + ((w_D_omega_dot[15] - w_D_omega_dot[15]) + (w_D_omega_dot[16] - w_D_omega_dot[16]))) + (((w_D_omega_dot[17] - w_D_omega_dot[17]) + (w_D_c_ddot[0] - w_D_c_ddot[0])) + ((w_D_c_ddot[1] - w_D_c_ddot[1]) + (w_D_c_ddot[2] - w_D_c_ddot[2]))))) + ((((w_D_c_ddot[3] - w_D_c_ddot[3]) + ((w_D_c_ddot[4] - w_D_c_ddot[4]) + (w_D_c_ddot[5] - w_D_c_ddot[5]))) + (((w_D_c_ddot[6] - w_D_c_ddot[6]) + (w_D_c_ddot[7] - w_D_c_ddot[7])) + ((w_D_c_ddot[8] - w_D_c_ddot[8]) + (w_D_c_ddot[9] - w_D_c_ddot[9])))) + ((((w_D_c_ddot[10] - w_D_c_ddot[10]) + (w_D_c_ddot[11] - w_D_c_ddot[11])) + ((w_D_c_ddot[12] - w_D_c_ddot[12]) + (w_D_c_ddot[13] - w_D_c_ddot[13]))) + (((w_D_c_ddot[14] - w_D_c_ddot[14]) + (w_D_c_ddot[15] - w_D_c_ddot[15])) + ((w_D_c_ddot[16] - w_D_c_ddot[16]) + (w_D_c_ddot[17] - w_D_c_ddot[17]))))))));
+#else
+    if (status)
+        finite += (((((((w[0] - w[0]) + ((w[1] - w[1]) + (w[2] - w[2]))) + (((w[3] - w[3]) + (w[4] - w[4])) + ((w[5] - w[5]) + (w_D_I_C[0] - w_D_I_C[0])))) + ((((w_D_I_C[1] - w_D_I_C[1]) + (w_D_I_C[2] - w_D_I_C[2])) + ((w_D_I_C[3] - w_D_I_C[3]) + (w_D_I_C[4] - w_D_I_C[4]))) + (((w_D_I_C[5] - w_D_I_C[5]) + (w_D_I_C[6] - w_D_I_C[6])) + ((w_D_I_C[7] - w_D_I_C[7]) + (w_D_I_C[8] - w_D_I_C[8]))))) + ((((w_D_I_C[9] - w_D_I_C[9]) + ((w_D_I_C[10] - w_D_I_C[10]) + (w_D_I_C[11] - w_D_I_C[11]))) + (((w_D_I_C[12] - w_D_I_C[12]) + (w_D_I_C[13] - w_D_I_C[13])) + ((w_D_I_C[14] - w_D_I_C[14]) + (w_D_I_C[15] - w_D_I_C[15])))) + ((((w_D_I_C[16] - w_D_I_C[16]) + (w_D_I_C[17] - w_D_I_C[17])) + ((w_D_I_C[18] - w_D_I_C[18]) + (w_D_I_C[19] - w_D_I_C[19]))) + (((w_D_I_C[20] - w_D_I_C[20]) + (w_D_I_C[21] - w_D_I_C[21])) + ((w_D_I_C[22] - w_D_I_C[22]) + (w_D_I_C[23] - w_D_I_C[23])))))) + (((((w_D_I_C[24] - w_D_I_C[24]) + ((w_D_I_C[25] - w_D_I_C[25]) + (w_D_I_C[26] - w_D_I_C[26]))) + (((w_D_I_C[27] - w_D_I_C[27]) + (w_D_I_C[28] - w_D_I_C[28])) + ((w_D_I_C[29] - w_D_I_C[29]) + (w_D_I_C[30] - w_D_I_C[30])))) + ((((w_D_I_C[31] - w_D_I_C[31]) + (w_D_I_C[32] - w_D_I_C[32])) + ((w_D_I_C[33] - w_D_I_C[33]) + (w_D_I_C[34] - w_D_I_C[34]))) + (((w_D_I_C[35] - w_D_I_C[35]) + (w_D_I_C[36] - w_D_I_C[36])) + ((w_D_I_C[37] - w_D_I_C[37]) + (w_D_I_C[38] - w_D_I_C[38]))))) + ((((w_D_I_C[39] - w_D_I_C[39]) + ((w_D_I_C[40] - w_D_I_C[40]) + (w_D_I_C[41] - w_D_I_C[41]))) + (((w_D_I_C[42] - w_D_I_C[42]) + (w_D_I_C[43] - w_D_I_C[43])) + ((w_D_I_C[44] - w_D_I_C[44]) + (w_D_I_C[45] - w_D_I_C[45])))) + ((((w_D_I_C[46] - w_D_I_C[46]) + (w_D_I_C[47] - w_D_I_C[47])) + ((w_D_I_C[48] - w_D_I_C[48]) + (w_D_I_C[49] - w_D_I_C[49]))) + (((w_D_I_C[50] - w_D_I_C[50]) + (w_D_I_C[51] - w_D_I_C[51])) + ((w_D_I_C[52] - w_D_I_C[52]) + (w_D_I_C[53] - w_D_I_C[53]))))))) + ((((((w_D_m[0] - w_D_m[0]) + ((w_D_m[1] - w_D_m[1]) + (w_D_m[2] - w_D_m[2]))) + (((w_D_m[3] - w_D_m[3]) + (w_D_m[4] - w_D_m[4])) + ((w_D_m[5] - w_D_m[5]) + (w_D_omega[0] - w_D_omega[0])))) + ((((w_D_omega[1] - w_D_omega[1]) + (w_D_omega[2] - w_D_omega[2])) + ((w_D_omega[3] - w_D_omega[3]) + (w_D_omega[4] - w_D_omega[4]))) + (((w_D_omega[5] - w_D_omega[5]) + (w_D_omega[6] - w_D_omega[6])) + ((w_D_omega[7] - w_D_omega[7]) + (w_D_omega[8] - w_D_omega[8]))))) + ((((w_D_omega[9] - w_D_omega[9]) + ((w_D_omega[10] - w_D_omega[10]) + (w_D_omega[11] - w_D_omega[11]))) + (((w_D_omega[12] - w_D_omega[12]) + (w_D_omega[13] - w_D_omega[13])) + ((w_D_omega[14] - w_D_omega[14]) + (w_D_omega[15] - w_D_omega[15])))) + ((((w_D_omega[16] - w_D_omega[16]) + (w_D_omega[17] - w_D_omega[17])) + ((w_D_omega_dot[0] - w_D_omega_dot[0]) + (w_D_omega_dot[1] - w_D_omega_dot[1]))) + (((w_D_omega_dot[2] - w_D_omega_dot[2]) + (w_D_omega_dot[3] - w_D_omega_dot[3])) + ((w_D_omega_dot[4] - w_D_omega_dot[4]) + (w_D_omega_dot[5] - w_D_omega_dot[5])))))) + (((((w_D_omega_dot[6] - w_D_omega_dot[6]) + ((w_D_omega_dot[7] - w_D_omega_dot[7]) + (w_D_omega_dot[8] - w_D_omega_dot[8]))) + (((w_D_omega_dot[9] - w_D_omega_dot[9]) + (w_D_omega_dot[10] - w_D_omega_dot[10])) + ((w_D_omega_dot[11] - w_D_omega_dot[11]) + (w_D_omega_dot[12] - w_D_omega_dot[12])))) + ((((w_D_omega_dot[13] - w_D_omega_dot[13]) + (w_D_omega_dot[14] - w_D_omega_dot[14])) + ((w_D_omega_dot[15] - w_D_omega_dot[15]) + (w_D_omega_dot[16] - w_D_omega_dot[16]))) + (((w_D_omega_dot[17] - w_D_omega_dot[17]) + (w_D_c_ddot[0] - w_D_c_ddot[0])) + ((w_D_c_ddot[1] - w_D_c_ddot[1]) + (w_D_c_ddot[2] - w_D_c_ddot[2]))))) + ((((w_D_c_ddot[3] - w_D_c_ddot[3]) + ((w_D_c_ddot[4] - w_D_c_ddot[4]) + (w_D_c_ddot[5] - w_D_c_ddot[5]))) + (((w_D_c_ddot[6] - w_D_c_ddot[6]) + (w_D_c_ddot[7] - w_D_c_ddot[7])) + ((w_D_c_ddot[8] - w_D_c_ddot[8]) + (w_D_c_ddot[9] - w_D_c_ddot[9])))) + ((((w_D_c_ddot[10] - w_D_c_ddot[10]) + (w_D_c_ddot[11] - w_D_c_ddot[11])) + ((w_D_c_ddot[12] - w_D_c_ddot[12]) + (w_D_c_ddot[13] - w_D_c_ddot[13]))) + (((w_D_c_ddot[14] - w_D_c_ddot[14]) + (w_D_c_ddot[15] - w_D_c_ddot[15])) + ((w_D_c_ddot[16] - w_D_c_ddot[16]) + (w_D_c_ddot[17] - w_D_c_ddot[17]))))))));
+#endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {

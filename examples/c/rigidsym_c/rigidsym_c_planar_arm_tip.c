@@ -15,21 +15,49 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip(
     double l2,
     double p[2])
 {
-    int status = 0;
-    int singular = 0;
+    uint64_t odd = 0;
+    int status = 0, singular = 0;
     double finite = 0.0;
-    status |= rigidsym_c_scan_d(&q1, 1);
-    status |= rigidsym_c_scan_d(&q2, 1);
-    status |= rigidsym_c_scan_d(&l1, 1);
-    status |= rigidsym_c_scan_d(&l2, 1);
+#if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
+    {   /* the range test of every input component, as one loop (it vectorises) */
+        const double in_[4] = {
+            q1, q2, l1, l2
+        };
+        int j_;
+        for (j_ = 0; j_ < 4; ++j_)
+            RIGIDSYM_C_ODD_D(odd, in_[j_]);
+    }
+    if (odd >> 63) {
+        const double *args[4];
+        const int sizes[4] = {1, 1, 1, 1};
+        int j;
+        args[0] = &q1;
+        args[1] = &q2;
+        args[2] = &l1;
+        args[3] = &l2;
+        status = RIGIDSYM_C_EXTREME_INPUT;
+        for (j = 0; j < 4; ++j)
+            if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
+                status = RIGIDSYM_C_NONFINITE_INPUT;
+    }
+#else
+    (void)odd;
+#endif
     {
         const double x0 = q1 + q2;
         p[0] = l1*cos(q1) + l2*cos(x0);
         p[1] = l1*sin(q1) + l2*sin(x0);
     }
-    /* x - x is 0 for finite x, NaN otherwise: one test for every output (the guards of
-     * rigidsym_c_impl.h keep the compiler from folding it) */
+    /* no division or root, and every output bounded by 2^102 for inputs of
+     * ordinary magnitude (|x| < 2^101): only an extreme or non-finite input can make an
+     * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN
+     * otherwise; the guards of rigidsym_c_impl.h keep the compiler from folding it) */
+#if defined(RIGIDSYM_C_TRUSTED_INPUTS)
     finite += ((p[0] - p[0]) + (p[1] - p[1]));
+#else
+    if (status)
+        finite += ((p[0] - p[0]) + (p[1] - p[1]));
+#endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
@@ -47,21 +75,49 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_f32(
     float l2,
     float p[2])
 {
-    int status = 0;
-    int singular = 0;
+    uint32_t odd = 0;
+    int status = 0, singular = 0;
     float finite = 0.0f;
-    status |= rigidsym_c_scan_f(&q1, 1);
-    status |= rigidsym_c_scan_f(&q2, 1);
-    status |= rigidsym_c_scan_f(&l1, 1);
-    status |= rigidsym_c_scan_f(&l2, 1);
+#if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
+    {   /* the range test of every input component, as one loop (it vectorises) */
+        const float in_[4] = {
+            q1, q2, l1, l2
+        };
+        int j_;
+        for (j_ = 0; j_ < 4; ++j_)
+            RIGIDSYM_C_ODD_F(odd, in_[j_]);
+    }
+    if (odd >> 31) {
+        const float *args[4];
+        const int sizes[4] = {1, 1, 1, 1};
+        int j;
+        args[0] = &q1;
+        args[1] = &q2;
+        args[2] = &l1;
+        args[3] = &l2;
+        status = RIGIDSYM_C_EXTREME_INPUT;
+        for (j = 0; j < 4; ++j)
+            if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
+                status = RIGIDSYM_C_NONFINITE_INPUT;
+    }
+#else
+    (void)odd;
+#endif
     {
         const float x0 = q1 + q2;
         p[0] = l1*cosf(q1) + l2*cosf(x0);
         p[1] = l1*sinf(q1) + l2*sinf(x0);
     }
-    /* x - x is 0 for finite x, NaN otherwise: one test for every output (the guards of
-     * rigidsym_c_impl.h keep the compiler from folding it) */
+    /* no division or root, and every output bounded by 2^32 for inputs of
+     * ordinary magnitude (|x| < 2^31): only an extreme or non-finite input can make an
+     * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN
+     * otherwise; the guards of rigidsym_c_impl.h keep the compiler from folding it) */
+#if defined(RIGIDSYM_C_TRUSTED_INPUTS)
     finite += ((p[0] - p[0]) + (p[1] - p[1]));
+#else
+    if (status)
+        finite += ((p[0] - p[0]) + (p[1] - p[1]));
+#endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
@@ -79,13 +135,34 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians(
     double l2,
     double p[2],    double p_D_q1[2],    double p_D_q2[2],    double p_D_l1[2],    double p_D_l2[2])
 {
-    int status = 0;
-    int singular = 0;
+    uint64_t odd = 0;
+    int status = 0, singular = 0;
     double finite = 0.0;
-    status |= rigidsym_c_scan_d(&q1, 1);
-    status |= rigidsym_c_scan_d(&q2, 1);
-    status |= rigidsym_c_scan_d(&l1, 1);
-    status |= rigidsym_c_scan_d(&l2, 1);
+#if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
+    {   /* the range test of every input component, as one loop (it vectorises) */
+        const double in_[4] = {
+            q1, q2, l1, l2
+        };
+        int j_;
+        for (j_ = 0; j_ < 4; ++j_)
+            RIGIDSYM_C_ODD_D(odd, in_[j_]);
+    }
+    if (odd >> 63) {
+        const double *args[4];
+        const int sizes[4] = {1, 1, 1, 1};
+        int j;
+        args[0] = &q1;
+        args[1] = &q2;
+        args[2] = &l1;
+        args[3] = &l2;
+        status = RIGIDSYM_C_EXTREME_INPUT;
+        for (j = 0; j < 4; ++j)
+            if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
+                status = RIGIDSYM_C_NONFINITE_INPUT;
+    }
+#else
+    (void)odd;
+#endif
     {
         const double x0 = cos(q1);
         const double x1 = q1 + q2;
@@ -107,9 +184,16 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians(
         p_D_l2[0] = x2;
         p_D_l2[1] = x6;
     }
-    /* x - x is 0 for finite x, NaN otherwise: one test for every output (the guards of
-     * rigidsym_c_impl.h keep the compiler from folding it) */
+    /* no division or root, and every output bounded by 2^102 for inputs of
+     * ordinary magnitude (|x| < 2^101): only an extreme or non-finite input can make an
+     * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN
+     * otherwise; the guards of rigidsym_c_impl.h keep the compiler from folding it) */
+#if defined(RIGIDSYM_C_TRUSTED_INPUTS)
     finite += ((((p[0] - p[0]) + (p[1] - p[1])) + ((p_D_q1[0] - p_D_q1[0]) + ((p_D_q1[1] - p_D_q1[1]) + (p_D_q2[0] - p_D_q2[0])))) + (((p_D_q2[1] - p_D_q2[1]) + (p_D_l1[0] - p_D_l1[0])) + ((p_D_l1[1] - p_D_l1[1]) + ((p_D_l2[0] - p_D_l2[0]) + (p_D_l2[1] - p_D_l2[1])))));
+#else
+    if (status)
+        finite += ((((p[0] - p[0]) + (p[1] - p[1])) + ((p_D_q1[0] - p_D_q1[0]) + ((p_D_q1[1] - p_D_q1[1]) + (p_D_q2[0] - p_D_q2[0])))) + (((p_D_q2[1] - p_D_q2[1]) + (p_D_l1[0] - p_D_l1[0])) + ((p_D_l1[1] - p_D_l1[1]) + ((p_D_l2[0] - p_D_l2[0]) + (p_D_l2[1] - p_D_l2[1])))));
+#endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
@@ -135,13 +219,34 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians_f32(
     float l2,
     float p[2],    float p_D_q1[2],    float p_D_q2[2],    float p_D_l1[2],    float p_D_l2[2])
 {
-    int status = 0;
-    int singular = 0;
+    uint32_t odd = 0;
+    int status = 0, singular = 0;
     float finite = 0.0f;
-    status |= rigidsym_c_scan_f(&q1, 1);
-    status |= rigidsym_c_scan_f(&q2, 1);
-    status |= rigidsym_c_scan_f(&l1, 1);
-    status |= rigidsym_c_scan_f(&l2, 1);
+#if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
+    {   /* the range test of every input component, as one loop (it vectorises) */
+        const float in_[4] = {
+            q1, q2, l1, l2
+        };
+        int j_;
+        for (j_ = 0; j_ < 4; ++j_)
+            RIGIDSYM_C_ODD_F(odd, in_[j_]);
+    }
+    if (odd >> 31) {
+        const float *args[4];
+        const int sizes[4] = {1, 1, 1, 1};
+        int j;
+        args[0] = &q1;
+        args[1] = &q2;
+        args[2] = &l1;
+        args[3] = &l2;
+        status = RIGIDSYM_C_EXTREME_INPUT;
+        for (j = 0; j < 4; ++j)
+            if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
+                status = RIGIDSYM_C_NONFINITE_INPUT;
+    }
+#else
+    (void)odd;
+#endif
     {
         const float x0 = cosf(q1);
         const float x1 = q1 + q2;
@@ -163,9 +268,16 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians_f32(
         p_D_l2[0] = x2;
         p_D_l2[1] = x6;
     }
-    /* x - x is 0 for finite x, NaN otherwise: one test for every output (the guards of
-     * rigidsym_c_impl.h keep the compiler from folding it) */
+    /* no division or root, and every output bounded by 2^32 for inputs of
+     * ordinary magnitude (|x| < 2^31): only an extreme or non-finite input can make an
+     * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN
+     * otherwise; the guards of rigidsym_c_impl.h keep the compiler from folding it) */
+#if defined(RIGIDSYM_C_TRUSTED_INPUTS)
     finite += ((((p[0] - p[0]) + (p[1] - p[1])) + ((p_D_q1[0] - p_D_q1[0]) + ((p_D_q1[1] - p_D_q1[1]) + (p_D_q2[0] - p_D_q2[0])))) + (((p_D_q2[1] - p_D_q2[1]) + (p_D_l1[0] - p_D_l1[0])) + ((p_D_l1[1] - p_D_l1[1]) + ((p_D_l2[0] - p_D_l2[0]) + (p_D_l2[1] - p_D_l2[1])))));
+#else
+    if (status)
+        finite += ((((p[0] - p[0]) + (p[1] - p[1])) + ((p_D_q1[0] - p_D_q1[0]) + ((p_D_q1[1] - p_D_q1[1]) + (p_D_q2[0] - p_D_q2[0])))) + (((p_D_q2[1] - p_D_q2[1]) + (p_D_l1[0] - p_D_l1[0])) + ((p_D_l1[1] - p_D_l1[1]) + ((p_D_l2[0] - p_D_l2[0]) + (p_D_l2[1] - p_D_l2[1])))));
+#endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {

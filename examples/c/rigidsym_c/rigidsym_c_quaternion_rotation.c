@@ -16,10 +16,31 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation(
     const double q_1 = q[1];
     const double q_2 = q[2];
     const double q_3 = q[3];
-    int status = 0;
-    int singular = 0;
+    uint64_t odd = 0;
+    int status = 0, singular = 0;
     double finite = 0.0;
-    status |= rigidsym_c_scan_d(q, 4);
+#if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
+    {   /* the range test of every input component, as one loop (it vectorises) */
+        const double in_[4] = {
+            q[0], q[1], q[2], q[3]
+        };
+        int j_;
+        for (j_ = 0; j_ < 4; ++j_)
+            RIGIDSYM_C_ODD_D(odd, in_[j_]);
+    }
+    if (odd >> 63) {
+        const double *args[1];
+        const int sizes[1] = {4};
+        int j;
+        args[0] = q;
+        status = RIGIDSYM_C_EXTREME_INPUT;
+        for (j = 0; j < 1; ++j)
+            if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
+                status = RIGIDSYM_C_NONFINITE_INPUT;
+    }
+#else
+    (void)odd;
+#endif
     {
         const double x0 = 2.0*(q_2*q_2);
         const double x1 = 2.0*(q_3*q_3) - 1.0;
@@ -39,9 +60,16 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation(
         Q[7] = 2.0*q_2*q_3 + x7;
         Q[8] = -x0 - x6 + 1.0;
     }
-    /* x - x is 0 for finite x, NaN otherwise: one test for every output (the guards of
-     * rigidsym_c_impl.h keep the compiler from folding it) */
+    /* no division or root, and every output bounded by 2^205 for inputs of
+     * ordinary magnitude (|x| < 2^101): only an extreme or non-finite input can make an
+     * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN
+     * otherwise; the guards of rigidsym_c_impl.h keep the compiler from folding it) */
+#if defined(RIGIDSYM_C_TRUSTED_INPUTS)
     finite += ((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + (Q[3] - Q[3]))) + (((Q[4] - Q[4]) + (Q[5] - Q[5])) + ((Q[6] - Q[6]) + ((Q[7] - Q[7]) + (Q[8] - Q[8])))));
+#else
+    if (status)
+        finite += ((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + (Q[3] - Q[3]))) + (((Q[4] - Q[4]) + (Q[5] - Q[5])) + ((Q[6] - Q[6]) + ((Q[7] - Q[7]) + (Q[8] - Q[8])))));
+#endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
@@ -67,10 +95,31 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_f32(
     const float q_1 = q[1];
     const float q_2 = q[2];
     const float q_3 = q[3];
-    int status = 0;
-    int singular = 0;
+    uint32_t odd = 0;
+    int status = 0, singular = 0;
     float finite = 0.0f;
-    status |= rigidsym_c_scan_f(q, 4);
+#if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
+    {   /* the range test of every input component, as one loop (it vectorises) */
+        const float in_[4] = {
+            q[0], q[1], q[2], q[3]
+        };
+        int j_;
+        for (j_ = 0; j_ < 4; ++j_)
+            RIGIDSYM_C_ODD_F(odd, in_[j_]);
+    }
+    if (odd >> 31) {
+        const float *args[1];
+        const int sizes[1] = {4};
+        int j;
+        args[0] = q;
+        status = RIGIDSYM_C_EXTREME_INPUT;
+        for (j = 0; j < 1; ++j)
+            if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
+                status = RIGIDSYM_C_NONFINITE_INPUT;
+    }
+#else
+    (void)odd;
+#endif
     {
         const float x0 = 2.0f*(q_2*q_2);
         const float x1 = 2.0f*(q_3*q_3) - 1.0f;
@@ -90,9 +139,16 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_f32(
         Q[7] = 2.0f*q_2*q_3 + x7;
         Q[8] = -x0 - x6 + 1.0f;
     }
-    /* x - x is 0 for finite x, NaN otherwise: one test for every output (the guards of
-     * rigidsym_c_impl.h keep the compiler from folding it) */
+    /* no division or root, and every output bounded by 2^65 for inputs of
+     * ordinary magnitude (|x| < 2^31): only an extreme or non-finite input can make an
+     * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN
+     * otherwise; the guards of rigidsym_c_impl.h keep the compiler from folding it) */
+#if defined(RIGIDSYM_C_TRUSTED_INPUTS)
     finite += ((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + (Q[3] - Q[3]))) + (((Q[4] - Q[4]) + (Q[5] - Q[5])) + ((Q[6] - Q[6]) + ((Q[7] - Q[7]) + (Q[8] - Q[8])))));
+#else
+    if (status)
+        finite += ((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + (Q[3] - Q[3]))) + (((Q[4] - Q[4]) + (Q[5] - Q[5])) + ((Q[6] - Q[6]) + ((Q[7] - Q[7]) + (Q[8] - Q[8])))));
+#endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
@@ -118,10 +174,31 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_with_jacobians(
     const double q_1 = q[1];
     const double q_2 = q[2];
     const double q_3 = q[3];
-    int status = 0;
-    int singular = 0;
+    uint64_t odd = 0;
+    int status = 0, singular = 0;
     double finite = 0.0;
-    status |= rigidsym_c_scan_d(q, 4);
+#if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
+    {   /* the range test of every input component, as one loop (it vectorises) */
+        const double in_[4] = {
+            q[0], q[1], q[2], q[3]
+        };
+        int j_;
+        for (j_ = 0; j_ < 4; ++j_)
+            RIGIDSYM_C_ODD_D(odd, in_[j_]);
+    }
+    if (odd >> 63) {
+        const double *args[1];
+        const int sizes[1] = {4};
+        int j;
+        args[0] = q;
+        status = RIGIDSYM_C_EXTREME_INPUT;
+        for (j = 0; j < 1; ++j)
+            if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
+                status = RIGIDSYM_C_NONFINITE_INPUT;
+    }
+#else
+    (void)odd;
+#endif
     {
         const double x0 = 2.0*(q_2*q_2);
         const double x1 = 2.0*(q_3*q_3) - 1.0;
@@ -183,9 +260,16 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_with_jacobians(
         Q_D_q[34] = x9;
         Q_D_q[35] = 0.0;
     }
-    /* x - x is 0 for finite x, NaN otherwise: one test for every output (the guards of
-     * rigidsym_c_impl.h keep the compiler from folding it) */
+    /* no division or root, and every output bounded by 2^205 for inputs of
+     * ordinary magnitude (|x| < 2^101): only an extreme or non-finite input can make an
+     * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN
+     * otherwise; the guards of rigidsym_c_impl.h keep the compiler from folding it) */
+#if defined(RIGIDSYM_C_TRUSTED_INPUTS)
     finite += ((((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + ((Q[3] - Q[3]) + (Q[4] - Q[4])))) + (((Q[5] - Q[5]) + ((Q[6] - Q[6]) + (Q[7] - Q[7]))) + ((Q[8] - Q[8]) + ((Q_D_q[0] - Q_D_q[0]) + (Q_D_q[1] - Q_D_q[1]))))) + ((((Q_D_q[2] - Q_D_q[2]) + (Q_D_q[3] - Q_D_q[3])) + ((Q_D_q[4] - Q_D_q[4]) + ((Q_D_q[5] - Q_D_q[5]) + (Q_D_q[6] - Q_D_q[6])))) + (((Q_D_q[7] - Q_D_q[7]) + ((Q_D_q[8] - Q_D_q[8]) + (Q_D_q[9] - Q_D_q[9]))) + ((Q_D_q[10] - Q_D_q[10]) + ((Q_D_q[11] - Q_D_q[11]) + (Q_D_q[12] - Q_D_q[12])))))) + (((((Q_D_q[13] - Q_D_q[13]) + (Q_D_q[14] - Q_D_q[14])) + ((Q_D_q[15] - Q_D_q[15]) + ((Q_D_q[16] - Q_D_q[16]) + (Q_D_q[17] - Q_D_q[17])))) + (((Q_D_q[18] - Q_D_q[18]) + ((Q_D_q[19] - Q_D_q[19]) + (Q_D_q[20] - Q_D_q[20]))) + ((Q_D_q[21] - Q_D_q[21]) + ((Q_D_q[22] - Q_D_q[22]) + (Q_D_q[23] - Q_D_q[23]))))) + ((((Q_D_q[24] - Q_D_q[24]) + ((Q_D_q[25] - Q_D_q[25]) + (Q_D_q[26] - Q_D_q[26]))) + ((Q_D_q[27] - Q_D_q[27]) + ((Q_D_q[28] - Q_D_q[28]) + (Q_D_q[29] - Q_D_q[29])))) + (((Q_D_q[30] - Q_D_q[30]) + ((Q_D_q[31] - Q_D_q[31]) + (Q_D_q[32] - Q_D_q[32]))) + ((Q_D_q[33] - Q_D_q[33]) + ((Q_D_q[34] - Q_D_q[34]) + (Q_D_q[35] - Q_D_q[35])))))));
+#else
+    if (status)
+        finite += ((((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + ((Q[3] - Q[3]) + (Q[4] - Q[4])))) + (((Q[5] - Q[5]) + ((Q[6] - Q[6]) + (Q[7] - Q[7]))) + ((Q[8] - Q[8]) + ((Q_D_q[0] - Q_D_q[0]) + (Q_D_q[1] - Q_D_q[1]))))) + ((((Q_D_q[2] - Q_D_q[2]) + (Q_D_q[3] - Q_D_q[3])) + ((Q_D_q[4] - Q_D_q[4]) + ((Q_D_q[5] - Q_D_q[5]) + (Q_D_q[6] - Q_D_q[6])))) + (((Q_D_q[7] - Q_D_q[7]) + ((Q_D_q[8] - Q_D_q[8]) + (Q_D_q[9] - Q_D_q[9]))) + ((Q_D_q[10] - Q_D_q[10]) + ((Q_D_q[11] - Q_D_q[11]) + (Q_D_q[12] - Q_D_q[12])))))) + (((((Q_D_q[13] - Q_D_q[13]) + (Q_D_q[14] - Q_D_q[14])) + ((Q_D_q[15] - Q_D_q[15]) + ((Q_D_q[16] - Q_D_q[16]) + (Q_D_q[17] - Q_D_q[17])))) + (((Q_D_q[18] - Q_D_q[18]) + ((Q_D_q[19] - Q_D_q[19]) + (Q_D_q[20] - Q_D_q[20]))) + ((Q_D_q[21] - Q_D_q[21]) + ((Q_D_q[22] - Q_D_q[22]) + (Q_D_q[23] - Q_D_q[23]))))) + ((((Q_D_q[24] - Q_D_q[24]) + ((Q_D_q[25] - Q_D_q[25]) + (Q_D_q[26] - Q_D_q[26]))) + ((Q_D_q[27] - Q_D_q[27]) + ((Q_D_q[28] - Q_D_q[28]) + (Q_D_q[29] - Q_D_q[29])))) + (((Q_D_q[30] - Q_D_q[30]) + ((Q_D_q[31] - Q_D_q[31]) + (Q_D_q[32] - Q_D_q[32]))) + ((Q_D_q[33] - Q_D_q[33]) + ((Q_D_q[34] - Q_D_q[34]) + (Q_D_q[35] - Q_D_q[35])))))));
+#endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
@@ -247,10 +331,31 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_with_jacobians_f32(
     const float q_1 = q[1];
     const float q_2 = q[2];
     const float q_3 = q[3];
-    int status = 0;
-    int singular = 0;
+    uint32_t odd = 0;
+    int status = 0, singular = 0;
     float finite = 0.0f;
-    status |= rigidsym_c_scan_f(q, 4);
+#if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
+    {   /* the range test of every input component, as one loop (it vectorises) */
+        const float in_[4] = {
+            q[0], q[1], q[2], q[3]
+        };
+        int j_;
+        for (j_ = 0; j_ < 4; ++j_)
+            RIGIDSYM_C_ODD_F(odd, in_[j_]);
+    }
+    if (odd >> 31) {
+        const float *args[1];
+        const int sizes[1] = {4};
+        int j;
+        args[0] = q;
+        status = RIGIDSYM_C_EXTREME_INPUT;
+        for (j = 0; j < 1; ++j)
+            if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
+                status = RIGIDSYM_C_NONFINITE_INPUT;
+    }
+#else
+    (void)odd;
+#endif
     {
         const float x0 = 2.0f*(q_2*q_2);
         const float x1 = 2.0f*(q_3*q_3) - 1.0f;
@@ -312,9 +417,16 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_with_jacobians_f32(
         Q_D_q[34] = x9;
         Q_D_q[35] = 0.0f;
     }
-    /* x - x is 0 for finite x, NaN otherwise: one test for every output (the guards of
-     * rigidsym_c_impl.h keep the compiler from folding it) */
+    /* no division or root, and every output bounded by 2^65 for inputs of
+     * ordinary magnitude (|x| < 2^31): only an extreme or non-finite input can make an
+     * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN
+     * otherwise; the guards of rigidsym_c_impl.h keep the compiler from folding it) */
+#if defined(RIGIDSYM_C_TRUSTED_INPUTS)
     finite += ((((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + ((Q[3] - Q[3]) + (Q[4] - Q[4])))) + (((Q[5] - Q[5]) + ((Q[6] - Q[6]) + (Q[7] - Q[7]))) + ((Q[8] - Q[8]) + ((Q_D_q[0] - Q_D_q[0]) + (Q_D_q[1] - Q_D_q[1]))))) + ((((Q_D_q[2] - Q_D_q[2]) + (Q_D_q[3] - Q_D_q[3])) + ((Q_D_q[4] - Q_D_q[4]) + ((Q_D_q[5] - Q_D_q[5]) + (Q_D_q[6] - Q_D_q[6])))) + (((Q_D_q[7] - Q_D_q[7]) + ((Q_D_q[8] - Q_D_q[8]) + (Q_D_q[9] - Q_D_q[9]))) + ((Q_D_q[10] - Q_D_q[10]) + ((Q_D_q[11] - Q_D_q[11]) + (Q_D_q[12] - Q_D_q[12])))))) + (((((Q_D_q[13] - Q_D_q[13]) + (Q_D_q[14] - Q_D_q[14])) + ((Q_D_q[15] - Q_D_q[15]) + ((Q_D_q[16] - Q_D_q[16]) + (Q_D_q[17] - Q_D_q[17])))) + (((Q_D_q[18] - Q_D_q[18]) + ((Q_D_q[19] - Q_D_q[19]) + (Q_D_q[20] - Q_D_q[20]))) + ((Q_D_q[21] - Q_D_q[21]) + ((Q_D_q[22] - Q_D_q[22]) + (Q_D_q[23] - Q_D_q[23]))))) + ((((Q_D_q[24] - Q_D_q[24]) + ((Q_D_q[25] - Q_D_q[25]) + (Q_D_q[26] - Q_D_q[26]))) + ((Q_D_q[27] - Q_D_q[27]) + ((Q_D_q[28] - Q_D_q[28]) + (Q_D_q[29] - Q_D_q[29])))) + (((Q_D_q[30] - Q_D_q[30]) + ((Q_D_q[31] - Q_D_q[31]) + (Q_D_q[32] - Q_D_q[32]))) + ((Q_D_q[33] - Q_D_q[33]) + ((Q_D_q[34] - Q_D_q[34]) + (Q_D_q[35] - Q_D_q[35])))))));
+#else
+    if (status)
+        finite += ((((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + ((Q[3] - Q[3]) + (Q[4] - Q[4])))) + (((Q[5] - Q[5]) + ((Q[6] - Q[6]) + (Q[7] - Q[7]))) + ((Q[8] - Q[8]) + ((Q_D_q[0] - Q_D_q[0]) + (Q_D_q[1] - Q_D_q[1]))))) + ((((Q_D_q[2] - Q_D_q[2]) + (Q_D_q[3] - Q_D_q[3])) + ((Q_D_q[4] - Q_D_q[4]) + ((Q_D_q[5] - Q_D_q[5]) + (Q_D_q[6] - Q_D_q[6])))) + (((Q_D_q[7] - Q_D_q[7]) + ((Q_D_q[8] - Q_D_q[8]) + (Q_D_q[9] - Q_D_q[9]))) + ((Q_D_q[10] - Q_D_q[10]) + ((Q_D_q[11] - Q_D_q[11]) + (Q_D_q[12] - Q_D_q[12])))))) + (((((Q_D_q[13] - Q_D_q[13]) + (Q_D_q[14] - Q_D_q[14])) + ((Q_D_q[15] - Q_D_q[15]) + ((Q_D_q[16] - Q_D_q[16]) + (Q_D_q[17] - Q_D_q[17])))) + (((Q_D_q[18] - Q_D_q[18]) + ((Q_D_q[19] - Q_D_q[19]) + (Q_D_q[20] - Q_D_q[20]))) + ((Q_D_q[21] - Q_D_q[21]) + ((Q_D_q[22] - Q_D_q[22]) + (Q_D_q[23] - Q_D_q[23]))))) + ((((Q_D_q[24] - Q_D_q[24]) + ((Q_D_q[25] - Q_D_q[25]) + (Q_D_q[26] - Q_D_q[26]))) + ((Q_D_q[27] - Q_D_q[27]) + ((Q_D_q[28] - Q_D_q[28]) + (Q_D_q[29] - Q_D_q[29])))) + (((Q_D_q[30] - Q_D_q[30]) + ((Q_D_q[31] - Q_D_q[31]) + (Q_D_q[32] - Q_D_q[32]))) + ((Q_D_q[33] - Q_D_q[33]) + ((Q_D_q[34] - Q_D_q[34]) + (Q_D_q[35] - Q_D_q[35])))))));
+#endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {

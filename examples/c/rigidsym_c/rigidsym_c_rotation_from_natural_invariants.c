@@ -16,11 +16,32 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants(
     const double e_0 = e[0];
     const double e_1 = e[1];
     const double e_2 = e[2];
-    int status = 0;
-    int singular = 0;
+    uint64_t odd = 0;
+    int status = 0, singular = 0;
     double finite = 0.0;
-    status |= rigidsym_c_scan_d(e, 3);
-    status |= rigidsym_c_scan_d(&phi, 1);
+#if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
+    {   /* the range test of every input component, as one loop (it vectorises) */
+        const double in_[4] = {
+            e[0], e[1], e[2], phi
+        };
+        int j_;
+        for (j_ = 0; j_ < 4; ++j_)
+            RIGIDSYM_C_ODD_D(odd, in_[j_]);
+    }
+    if (odd >> 63) {
+        const double *args[2];
+        const int sizes[2] = {3, 1};
+        int j;
+        args[0] = e;
+        args[1] = &phi;
+        status = RIGIDSYM_C_EXTREME_INPUT;
+        for (j = 0; j < 2; ++j)
+            if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
+                status = RIGIDSYM_C_NONFINITE_INPUT;
+    }
+#else
+    (void)odd;
+#endif
     {
         const double x0 = (e_0*e_0);
         const double x1 = (0.5)*phi;
@@ -48,9 +69,16 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants(
         Q[7] = e_1*e_2*x4 + x14;
         Q[8] = x15 + x6*(1.0 - x15);
     }
-    /* x - x is 0 for finite x, NaN otherwise: one test for every output (the guards of
-     * rigidsym_c_impl.h keep the compiler from folding it) */
+    /* no division or root, and every output bounded by 2^206 for inputs of
+     * ordinary magnitude (|x| < 2^101): only an extreme or non-finite input can make an
+     * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN
+     * otherwise; the guards of rigidsym_c_impl.h keep the compiler from folding it) */
+#if defined(RIGIDSYM_C_TRUSTED_INPUTS)
     finite += ((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + (Q[3] - Q[3]))) + (((Q[4] - Q[4]) + (Q[5] - Q[5])) + ((Q[6] - Q[6]) + ((Q[7] - Q[7]) + (Q[8] - Q[8])))));
+#else
+    if (status)
+        finite += ((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + (Q[3] - Q[3]))) + (((Q[4] - Q[4]) + (Q[5] - Q[5])) + ((Q[6] - Q[6]) + ((Q[7] - Q[7]) + (Q[8] - Q[8])))));
+#endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
@@ -76,11 +104,32 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_f32(
     const float e_0 = e[0];
     const float e_1 = e[1];
     const float e_2 = e[2];
-    int status = 0;
-    int singular = 0;
+    uint32_t odd = 0;
+    int status = 0, singular = 0;
     float finite = 0.0f;
-    status |= rigidsym_c_scan_f(e, 3);
-    status |= rigidsym_c_scan_f(&phi, 1);
+#if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
+    {   /* the range test of every input component, as one loop (it vectorises) */
+        const float in_[4] = {
+            e[0], e[1], e[2], phi
+        };
+        int j_;
+        for (j_ = 0; j_ < 4; ++j_)
+            RIGIDSYM_C_ODD_F(odd, in_[j_]);
+    }
+    if (odd >> 31) {
+        const float *args[2];
+        const int sizes[2] = {3, 1};
+        int j;
+        args[0] = e;
+        args[1] = &phi;
+        status = RIGIDSYM_C_EXTREME_INPUT;
+        for (j = 0; j < 2; ++j)
+            if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
+                status = RIGIDSYM_C_NONFINITE_INPUT;
+    }
+#else
+    (void)odd;
+#endif
     {
         const float x0 = (e_0*e_0);
         const float x1 = (0.5f)*phi;
@@ -108,9 +157,16 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_f32(
         Q[7] = e_1*e_2*x4 + x14;
         Q[8] = x15 + x6*(1.0f - x15);
     }
-    /* x - x is 0 for finite x, NaN otherwise: one test for every output (the guards of
-     * rigidsym_c_impl.h keep the compiler from folding it) */
+    /* no division or root, and every output bounded by 2^66 for inputs of
+     * ordinary magnitude (|x| < 2^31): only an extreme or non-finite input can make an
+     * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN
+     * otherwise; the guards of rigidsym_c_impl.h keep the compiler from folding it) */
+#if defined(RIGIDSYM_C_TRUSTED_INPUTS)
     finite += ((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + (Q[3] - Q[3]))) + (((Q[4] - Q[4]) + (Q[5] - Q[5])) + ((Q[6] - Q[6]) + ((Q[7] - Q[7]) + (Q[8] - Q[8])))));
+#else
+    if (status)
+        finite += ((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + (Q[3] - Q[3]))) + (((Q[4] - Q[4]) + (Q[5] - Q[5])) + ((Q[6] - Q[6]) + ((Q[7] - Q[7]) + (Q[8] - Q[8])))));
+#endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
@@ -136,11 +192,32 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_with_jacobians(
     const double e_0 = e[0];
     const double e_1 = e[1];
     const double e_2 = e[2];
-    int status = 0;
-    int singular = 0;
+    uint64_t odd = 0;
+    int status = 0, singular = 0;
     double finite = 0.0;
-    status |= rigidsym_c_scan_d(e, 3);
-    status |= rigidsym_c_scan_d(&phi, 1);
+#if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
+    {   /* the range test of every input component, as one loop (it vectorises) */
+        const double in_[4] = {
+            e[0], e[1], e[2], phi
+        };
+        int j_;
+        for (j_ = 0; j_ < 4; ++j_)
+            RIGIDSYM_C_ODD_D(odd, in_[j_]);
+    }
+    if (odd >> 63) {
+        const double *args[2];
+        const int sizes[2] = {3, 1};
+        int j;
+        args[0] = e;
+        args[1] = &phi;
+        status = RIGIDSYM_C_EXTREME_INPUT;
+        for (j = 0; j < 2; ++j)
+            if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
+                status = RIGIDSYM_C_NONFINITE_INPUT;
+    }
+#else
+    (void)odd;
+#endif
     {
         const double x0 = (e_0*e_0);
         const double x1 = 1.0 - x0;
@@ -216,9 +293,16 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_with_jacobians(
         Q_D_phi[7] = e_1*x11 + x27;
         Q_D_phi[8] = -x10*x19;
     }
-    /* x - x is 0 for finite x, NaN otherwise: one test for every output (the guards of
-     * rigidsym_c_impl.h keep the compiler from folding it) */
+    /* no division or root, and every output bounded by 2^206 for inputs of
+     * ordinary magnitude (|x| < 2^101): only an extreme or non-finite input can make an
+     * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN
+     * otherwise; the guards of rigidsym_c_impl.h keep the compiler from folding it) */
+#if defined(RIGIDSYM_C_TRUSTED_INPUTS)
     finite += ((((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + ((Q[3] - Q[3]) + (Q[4] - Q[4])))) + (((Q[5] - Q[5]) + ((Q[6] - Q[6]) + (Q[7] - Q[7]))) + ((Q[8] - Q[8]) + ((Q_D_e[0] - Q_D_e[0]) + (Q_D_e[1] - Q_D_e[1]))))) + ((((Q_D_e[2] - Q_D_e[2]) + (Q_D_e[3] - Q_D_e[3])) + ((Q_D_e[4] - Q_D_e[4]) + ((Q_D_e[5] - Q_D_e[5]) + (Q_D_e[6] - Q_D_e[6])))) + (((Q_D_e[7] - Q_D_e[7]) + ((Q_D_e[8] - Q_D_e[8]) + (Q_D_e[9] - Q_D_e[9]))) + ((Q_D_e[10] - Q_D_e[10]) + ((Q_D_e[11] - Q_D_e[11]) + (Q_D_e[12] - Q_D_e[12])))))) + (((((Q_D_e[13] - Q_D_e[13]) + (Q_D_e[14] - Q_D_e[14])) + ((Q_D_e[15] - Q_D_e[15]) + ((Q_D_e[16] - Q_D_e[16]) + (Q_D_e[17] - Q_D_e[17])))) + (((Q_D_e[18] - Q_D_e[18]) + ((Q_D_e[19] - Q_D_e[19]) + (Q_D_e[20] - Q_D_e[20]))) + ((Q_D_e[21] - Q_D_e[21]) + ((Q_D_e[22] - Q_D_e[22]) + (Q_D_e[23] - Q_D_e[23]))))) + ((((Q_D_e[24] - Q_D_e[24]) + ((Q_D_e[25] - Q_D_e[25]) + (Q_D_e[26] - Q_D_e[26]))) + ((Q_D_phi[0] - Q_D_phi[0]) + ((Q_D_phi[1] - Q_D_phi[1]) + (Q_D_phi[2] - Q_D_phi[2])))) + (((Q_D_phi[3] - Q_D_phi[3]) + ((Q_D_phi[4] - Q_D_phi[4]) + (Q_D_phi[5] - Q_D_phi[5]))) + ((Q_D_phi[6] - Q_D_phi[6]) + ((Q_D_phi[7] - Q_D_phi[7]) + (Q_D_phi[8] - Q_D_phi[8])))))));
+#else
+    if (status)
+        finite += ((((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + ((Q[3] - Q[3]) + (Q[4] - Q[4])))) + (((Q[5] - Q[5]) + ((Q[6] - Q[6]) + (Q[7] - Q[7]))) + ((Q[8] - Q[8]) + ((Q_D_e[0] - Q_D_e[0]) + (Q_D_e[1] - Q_D_e[1]))))) + ((((Q_D_e[2] - Q_D_e[2]) + (Q_D_e[3] - Q_D_e[3])) + ((Q_D_e[4] - Q_D_e[4]) + ((Q_D_e[5] - Q_D_e[5]) + (Q_D_e[6] - Q_D_e[6])))) + (((Q_D_e[7] - Q_D_e[7]) + ((Q_D_e[8] - Q_D_e[8]) + (Q_D_e[9] - Q_D_e[9]))) + ((Q_D_e[10] - Q_D_e[10]) + ((Q_D_e[11] - Q_D_e[11]) + (Q_D_e[12] - Q_D_e[12])))))) + (((((Q_D_e[13] - Q_D_e[13]) + (Q_D_e[14] - Q_D_e[14])) + ((Q_D_e[15] - Q_D_e[15]) + ((Q_D_e[16] - Q_D_e[16]) + (Q_D_e[17] - Q_D_e[17])))) + (((Q_D_e[18] - Q_D_e[18]) + ((Q_D_e[19] - Q_D_e[19]) + (Q_D_e[20] - Q_D_e[20]))) + ((Q_D_e[21] - Q_D_e[21]) + ((Q_D_e[22] - Q_D_e[22]) + (Q_D_e[23] - Q_D_e[23]))))) + ((((Q_D_e[24] - Q_D_e[24]) + ((Q_D_e[25] - Q_D_e[25]) + (Q_D_e[26] - Q_D_e[26]))) + ((Q_D_phi[0] - Q_D_phi[0]) + ((Q_D_phi[1] - Q_D_phi[1]) + (Q_D_phi[2] - Q_D_phi[2])))) + (((Q_D_phi[3] - Q_D_phi[3]) + ((Q_D_phi[4] - Q_D_phi[4]) + (Q_D_phi[5] - Q_D_phi[5]))) + ((Q_D_phi[6] - Q_D_phi[6]) + ((Q_D_phi[7] - Q_D_phi[7]) + (Q_D_phi[8] - Q_D_phi[8])))))));
+#endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
@@ -280,11 +364,32 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_with_jacobians_f3
     const float e_0 = e[0];
     const float e_1 = e[1];
     const float e_2 = e[2];
-    int status = 0;
-    int singular = 0;
+    uint32_t odd = 0;
+    int status = 0, singular = 0;
     float finite = 0.0f;
-    status |= rigidsym_c_scan_f(e, 3);
-    status |= rigidsym_c_scan_f(&phi, 1);
+#if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
+    {   /* the range test of every input component, as one loop (it vectorises) */
+        const float in_[4] = {
+            e[0], e[1], e[2], phi
+        };
+        int j_;
+        for (j_ = 0; j_ < 4; ++j_)
+            RIGIDSYM_C_ODD_F(odd, in_[j_]);
+    }
+    if (odd >> 31) {
+        const float *args[2];
+        const int sizes[2] = {3, 1};
+        int j;
+        args[0] = e;
+        args[1] = &phi;
+        status = RIGIDSYM_C_EXTREME_INPUT;
+        for (j = 0; j < 2; ++j)
+            if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
+                status = RIGIDSYM_C_NONFINITE_INPUT;
+    }
+#else
+    (void)odd;
+#endif
     {
         const float x0 = (e_0*e_0);
         const float x1 = 1.0f - x0;
@@ -360,9 +465,16 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_with_jacobians_f3
         Q_D_phi[7] = e_1*x11 + x27;
         Q_D_phi[8] = -x10*x19;
     }
-    /* x - x is 0 for finite x, NaN otherwise: one test for every output (the guards of
-     * rigidsym_c_impl.h keep the compiler from folding it) */
+    /* no division or root, and every output bounded by 2^66 for inputs of
+     * ordinary magnitude (|x| < 2^31): only an extreme or non-finite input can make an
+     * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN
+     * otherwise; the guards of rigidsym_c_impl.h keep the compiler from folding it) */
+#if defined(RIGIDSYM_C_TRUSTED_INPUTS)
     finite += ((((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + ((Q[3] - Q[3]) + (Q[4] - Q[4])))) + (((Q[5] - Q[5]) + ((Q[6] - Q[6]) + (Q[7] - Q[7]))) + ((Q[8] - Q[8]) + ((Q_D_e[0] - Q_D_e[0]) + (Q_D_e[1] - Q_D_e[1]))))) + ((((Q_D_e[2] - Q_D_e[2]) + (Q_D_e[3] - Q_D_e[3])) + ((Q_D_e[4] - Q_D_e[4]) + ((Q_D_e[5] - Q_D_e[5]) + (Q_D_e[6] - Q_D_e[6])))) + (((Q_D_e[7] - Q_D_e[7]) + ((Q_D_e[8] - Q_D_e[8]) + (Q_D_e[9] - Q_D_e[9]))) + ((Q_D_e[10] - Q_D_e[10]) + ((Q_D_e[11] - Q_D_e[11]) + (Q_D_e[12] - Q_D_e[12])))))) + (((((Q_D_e[13] - Q_D_e[13]) + (Q_D_e[14] - Q_D_e[14])) + ((Q_D_e[15] - Q_D_e[15]) + ((Q_D_e[16] - Q_D_e[16]) + (Q_D_e[17] - Q_D_e[17])))) + (((Q_D_e[18] - Q_D_e[18]) + ((Q_D_e[19] - Q_D_e[19]) + (Q_D_e[20] - Q_D_e[20]))) + ((Q_D_e[21] - Q_D_e[21]) + ((Q_D_e[22] - Q_D_e[22]) + (Q_D_e[23] - Q_D_e[23]))))) + ((((Q_D_e[24] - Q_D_e[24]) + ((Q_D_e[25] - Q_D_e[25]) + (Q_D_e[26] - Q_D_e[26]))) + ((Q_D_phi[0] - Q_D_phi[0]) + ((Q_D_phi[1] - Q_D_phi[1]) + (Q_D_phi[2] - Q_D_phi[2])))) + (((Q_D_phi[3] - Q_D_phi[3]) + ((Q_D_phi[4] - Q_D_phi[4]) + (Q_D_phi[5] - Q_D_phi[5]))) + ((Q_D_phi[6] - Q_D_phi[6]) + ((Q_D_phi[7] - Q_D_phi[7]) + (Q_D_phi[8] - Q_D_phi[8])))))));
+#else
+    if (status)
+        finite += ((((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + ((Q[3] - Q[3]) + (Q[4] - Q[4])))) + (((Q[5] - Q[5]) + ((Q[6] - Q[6]) + (Q[7] - Q[7]))) + ((Q[8] - Q[8]) + ((Q_D_e[0] - Q_D_e[0]) + (Q_D_e[1] - Q_D_e[1]))))) + ((((Q_D_e[2] - Q_D_e[2]) + (Q_D_e[3] - Q_D_e[3])) + ((Q_D_e[4] - Q_D_e[4]) + ((Q_D_e[5] - Q_D_e[5]) + (Q_D_e[6] - Q_D_e[6])))) + (((Q_D_e[7] - Q_D_e[7]) + ((Q_D_e[8] - Q_D_e[8]) + (Q_D_e[9] - Q_D_e[9]))) + ((Q_D_e[10] - Q_D_e[10]) + ((Q_D_e[11] - Q_D_e[11]) + (Q_D_e[12] - Q_D_e[12])))))) + (((((Q_D_e[13] - Q_D_e[13]) + (Q_D_e[14] - Q_D_e[14])) + ((Q_D_e[15] - Q_D_e[15]) + ((Q_D_e[16] - Q_D_e[16]) + (Q_D_e[17] - Q_D_e[17])))) + (((Q_D_e[18] - Q_D_e[18]) + ((Q_D_e[19] - Q_D_e[19]) + (Q_D_e[20] - Q_D_e[20]))) + ((Q_D_e[21] - Q_D_e[21]) + ((Q_D_e[22] - Q_D_e[22]) + (Q_D_e[23] - Q_D_e[23]))))) + ((((Q_D_e[24] - Q_D_e[24]) + ((Q_D_e[25] - Q_D_e[25]) + (Q_D_e[26] - Q_D_e[26]))) + ((Q_D_phi[0] - Q_D_phi[0]) + ((Q_D_phi[1] - Q_D_phi[1]) + (Q_D_phi[2] - Q_D_phi[2])))) + (((Q_D_phi[3] - Q_D_phi[3]) + ((Q_D_phi[4] - Q_D_phi[4]) + (Q_D_phi[5] - Q_D_phi[5]))) + ((Q_D_phi[6] - Q_D_phi[6]) + ((Q_D_phi[7] - Q_D_phi[7]) + (Q_D_phi[8] - Q_D_phi[8])))))));
+#endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {

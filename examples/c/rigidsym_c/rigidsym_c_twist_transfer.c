@@ -26,12 +26,33 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer(
     const double p_0 = p[0];
     const double p_1 = p[1];
     const double p_2 = p[2];
-    int status = 0;
-    int singular = 0;
+    uint64_t odd = 0;
+    int status = 0, singular = 0;
     double finite = 0.0;
-    status |= rigidsym_c_scan_d(t_A, 6);
-    status |= rigidsym_c_scan_d(a, 3);
-    status |= rigidsym_c_scan_d(p, 3);
+#if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
+    {   /* the range test of every input component, as one loop (it vectorises) */
+        const double in_[12] = {
+            t_A[0], t_A[1], t_A[2], t_A[3], t_A[4], t_A[5], a[0], a[1], a[2], p[0], p[1], p[2]
+        };
+        int j_;
+        for (j_ = 0; j_ < 12; ++j_)
+            RIGIDSYM_C_ODD_D(odd, in_[j_]);
+    }
+    if (odd >> 63) {
+        const double *args[3];
+        const int sizes[3] = {6, 3, 3};
+        int j;
+        args[0] = t_A;
+        args[1] = a;
+        args[2] = p;
+        status = RIGIDSYM_C_EXTREME_INPUT;
+        for (j = 0; j < 3; ++j)
+            if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
+                status = RIGIDSYM_C_NONFINITE_INPUT;
+    }
+#else
+    (void)odd;
+#endif
     {
         const double x0 = a_2 - p_2;
         const double x1 = a_1 - p_1;
@@ -43,9 +64,16 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer(
         t_P[4] = t_A_0*x0 - t_A_2*x2 + t_A_4;
         t_P[5] = -t_A_0*x1 + t_A_1*x2 + t_A_5;
     }
-    /* x - x is 0 for finite x, NaN otherwise: one test for every output (the guards of
-     * rigidsym_c_impl.h keep the compiler from folding it) */
+    /* no division or root, and every output bounded by 2^205 for inputs of
+     * ordinary magnitude (|x| < 2^101): only an extreme or non-finite input can make an
+     * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN
+     * otherwise; the guards of rigidsym_c_impl.h keep the compiler from folding it) */
+#if defined(RIGIDSYM_C_TRUSTED_INPUTS)
     finite += (((t_P[0] - t_P[0]) + ((t_P[1] - t_P[1]) + (t_P[2] - t_P[2]))) + ((t_P[3] - t_P[3]) + ((t_P[4] - t_P[4]) + (t_P[5] - t_P[5]))));
+#else
+    if (status)
+        finite += (((t_P[0] - t_P[0]) + ((t_P[1] - t_P[1]) + (t_P[2] - t_P[2]))) + ((t_P[3] - t_P[3]) + ((t_P[4] - t_P[4]) + (t_P[5] - t_P[5]))));
+#endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
@@ -78,12 +106,33 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_f32(
     const float p_0 = p[0];
     const float p_1 = p[1];
     const float p_2 = p[2];
-    int status = 0;
-    int singular = 0;
+    uint32_t odd = 0;
+    int status = 0, singular = 0;
     float finite = 0.0f;
-    status |= rigidsym_c_scan_f(t_A, 6);
-    status |= rigidsym_c_scan_f(a, 3);
-    status |= rigidsym_c_scan_f(p, 3);
+#if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
+    {   /* the range test of every input component, as one loop (it vectorises) */
+        const float in_[12] = {
+            t_A[0], t_A[1], t_A[2], t_A[3], t_A[4], t_A[5], a[0], a[1], a[2], p[0], p[1], p[2]
+        };
+        int j_;
+        for (j_ = 0; j_ < 12; ++j_)
+            RIGIDSYM_C_ODD_F(odd, in_[j_]);
+    }
+    if (odd >> 31) {
+        const float *args[3];
+        const int sizes[3] = {6, 3, 3};
+        int j;
+        args[0] = t_A;
+        args[1] = a;
+        args[2] = p;
+        status = RIGIDSYM_C_EXTREME_INPUT;
+        for (j = 0; j < 3; ++j)
+            if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
+                status = RIGIDSYM_C_NONFINITE_INPUT;
+    }
+#else
+    (void)odd;
+#endif
     {
         const float x0 = a_2 - p_2;
         const float x1 = a_1 - p_1;
@@ -95,9 +144,16 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_f32(
         t_P[4] = t_A_0*x0 - t_A_2*x2 + t_A_4;
         t_P[5] = -t_A_0*x1 + t_A_1*x2 + t_A_5;
     }
-    /* x - x is 0 for finite x, NaN otherwise: one test for every output (the guards of
-     * rigidsym_c_impl.h keep the compiler from folding it) */
+    /* no division or root, and every output bounded by 2^65 for inputs of
+     * ordinary magnitude (|x| < 2^31): only an extreme or non-finite input can make an
+     * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN
+     * otherwise; the guards of rigidsym_c_impl.h keep the compiler from folding it) */
+#if defined(RIGIDSYM_C_TRUSTED_INPUTS)
     finite += (((t_P[0] - t_P[0]) + ((t_P[1] - t_P[1]) + (t_P[2] - t_P[2]))) + ((t_P[3] - t_P[3]) + ((t_P[4] - t_P[4]) + (t_P[5] - t_P[5]))));
+#else
+    if (status)
+        finite += (((t_P[0] - t_P[0]) + ((t_P[1] - t_P[1]) + (t_P[2] - t_P[2]))) + ((t_P[3] - t_P[3]) + ((t_P[4] - t_P[4]) + (t_P[5] - t_P[5]))));
+#endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
@@ -130,12 +186,33 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_with_jacobians(
     const double p_0 = p[0];
     const double p_1 = p[1];
     const double p_2 = p[2];
-    int status = 0;
-    int singular = 0;
+    uint64_t odd = 0;
+    int status = 0, singular = 0;
     double finite = 0.0;
-    status |= rigidsym_c_scan_d(t_A, 6);
-    status |= rigidsym_c_scan_d(a, 3);
-    status |= rigidsym_c_scan_d(p, 3);
+#if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
+    {   /* the range test of every input component, as one loop (it vectorises) */
+        const double in_[12] = {
+            t_A[0], t_A[1], t_A[2], t_A[3], t_A[4], t_A[5], a[0], a[1], a[2], p[0], p[1], p[2]
+        };
+        int j_;
+        for (j_ = 0; j_ < 12; ++j_)
+            RIGIDSYM_C_ODD_D(odd, in_[j_]);
+    }
+    if (odd >> 63) {
+        const double *args[3];
+        const int sizes[3] = {6, 3, 3};
+        int j;
+        args[0] = t_A;
+        args[1] = a;
+        args[2] = p;
+        status = RIGIDSYM_C_EXTREME_INPUT;
+        for (j = 0; j < 3; ++j)
+            if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
+                status = RIGIDSYM_C_NONFINITE_INPUT;
+    }
+#else
+    (void)odd;
+#endif
     {
         const double x0 = a_2 - p_2;
         const double x1 = -x0;
@@ -225,9 +302,16 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_with_jacobians(
         t_P_D_p[16] = t_A_0;
         t_P_D_p[17] = 0.0;
     }
-    /* x - x is 0 for finite x, NaN otherwise: one test for every output (the guards of
-     * rigidsym_c_impl.h keep the compiler from folding it) */
+    /* no division or root, and every output bounded by 2^205 for inputs of
+     * ordinary magnitude (|x| < 2^101): only an extreme or non-finite input can make an
+     * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN
+     * otherwise; the guards of rigidsym_c_impl.h keep the compiler from folding it) */
+#if defined(RIGIDSYM_C_TRUSTED_INPUTS)
     finite += (((((((t_P[0] - t_P[0]) + (t_P[1] - t_P[1])) + ((t_P[2] - t_P[2]) + (t_P[3] - t_P[3]))) + (((t_P[4] - t_P[4]) + (t_P[5] - t_P[5])) + ((t_P_D_t_A[0] - t_P_D_t_A[0]) + ((t_P_D_t_A[1] - t_P_D_t_A[1]) + (t_P_D_t_A[2] - t_P_D_t_A[2]))))) + ((((t_P_D_t_A[3] - t_P_D_t_A[3]) + (t_P_D_t_A[4] - t_P_D_t_A[4])) + ((t_P_D_t_A[5] - t_P_D_t_A[5]) + ((t_P_D_t_A[6] - t_P_D_t_A[6]) + (t_P_D_t_A[7] - t_P_D_t_A[7])))) + (((t_P_D_t_A[8] - t_P_D_t_A[8]) + (t_P_D_t_A[9] - t_P_D_t_A[9])) + ((t_P_D_t_A[10] - t_P_D_t_A[10]) + ((t_P_D_t_A[11] - t_P_D_t_A[11]) + (t_P_D_t_A[12] - t_P_D_t_A[12])))))) + (((((t_P_D_t_A[13] - t_P_D_t_A[13]) + (t_P_D_t_A[14] - t_P_D_t_A[14])) + ((t_P_D_t_A[15] - t_P_D_t_A[15]) + ((t_P_D_t_A[16] - t_P_D_t_A[16]) + (t_P_D_t_A[17] - t_P_D_t_A[17])))) + (((t_P_D_t_A[18] - t_P_D_t_A[18]) + (t_P_D_t_A[19] - t_P_D_t_A[19])) + ((t_P_D_t_A[20] - t_P_D_t_A[20]) + ((t_P_D_t_A[21] - t_P_D_t_A[21]) + (t_P_D_t_A[22] - t_P_D_t_A[22]))))) + ((((t_P_D_t_A[23] - t_P_D_t_A[23]) + (t_P_D_t_A[24] - t_P_D_t_A[24])) + ((t_P_D_t_A[25] - t_P_D_t_A[25]) + ((t_P_D_t_A[26] - t_P_D_t_A[26]) + (t_P_D_t_A[27] - t_P_D_t_A[27])))) + (((t_P_D_t_A[28] - t_P_D_t_A[28]) + (t_P_D_t_A[29] - t_P_D_t_A[29])) + ((t_P_D_t_A[30] - t_P_D_t_A[30]) + ((t_P_D_t_A[31] - t_P_D_t_A[31]) + (t_P_D_t_A[32] - t_P_D_t_A[32]))))))) + ((((((t_P_D_t_A[33] - t_P_D_t_A[33]) + (t_P_D_t_A[34] - t_P_D_t_A[34])) + ((t_P_D_t_A[35] - t_P_D_t_A[35]) + (t_P_D_a[0] - t_P_D_a[0]))) + (((t_P_D_a[1] - t_P_D_a[1]) + (t_P_D_a[2] - t_P_D_a[2])) + ((t_P_D_a[3] - t_P_D_a[3]) + ((t_P_D_a[4] - t_P_D_a[4]) + (t_P_D_a[5] - t_P_D_a[5]))))) + ((((t_P_D_a[6] - t_P_D_a[6]) + (t_P_D_a[7] - t_P_D_a[7])) + ((t_P_D_a[8] - t_P_D_a[8]) + ((t_P_D_a[9] - t_P_D_a[9]) + (t_P_D_a[10] - t_P_D_a[10])))) + (((t_P_D_a[11] - t_P_D_a[11]) + (t_P_D_a[12] - t_P_D_a[12])) + ((t_P_D_a[13] - t_P_D_a[13]) + ((t_P_D_a[14] - t_P_D_a[14]) + (t_P_D_a[15] - t_P_D_a[15])))))) + (((((t_P_D_a[16] - t_P_D_a[16]) + (t_P_D_a[17] - t_P_D_a[17])) + ((t_P_D_p[0] - t_P_D_p[0]) + ((t_P_D_p[1] - t_P_D_p[1]) + (t_P_D_p[2] - t_P_D_p[2])))) + (((t_P_D_p[3] - t_P_D_p[3]) + (t_P_D_p[4] - t_P_D_p[4])) + ((t_P_D_p[5] - t_P_D_p[5]) + ((t_P_D_p[6] - t_P_D_p[6]) + (t_P_D_p[7] - t_P_D_p[7]))))) + ((((t_P_D_p[8] - t_P_D_p[8]) + (t_P_D_p[9] - t_P_D_p[9])) + ((t_P_D_p[10] - t_P_D_p[10]) + ((t_P_D_p[11] - t_P_D_p[11]) + (t_P_D_p[12] - t_P_D_p[12])))) + (((t_P_D_p[13] - t_P_D_p[13]) + (t_P_D_p[14] - t_P_D_p[14])) + ((t_P_D_p[15] - t_P_D_p[15]) + ((t_P_D_p[16] - t_P_D_p[16]) + (t_P_D_p[17] - t_P_D_p[17]))))))));
+#else
+    if (status)
+        finite += (((((((t_P[0] - t_P[0]) + (t_P[1] - t_P[1])) + ((t_P[2] - t_P[2]) + (t_P[3] - t_P[3]))) + (((t_P[4] - t_P[4]) + (t_P[5] - t_P[5])) + ((t_P_D_t_A[0] - t_P_D_t_A[0]) + ((t_P_D_t_A[1] - t_P_D_t_A[1]) + (t_P_D_t_A[2] - t_P_D_t_A[2]))))) + ((((t_P_D_t_A[3] - t_P_D_t_A[3]) + (t_P_D_t_A[4] - t_P_D_t_A[4])) + ((t_P_D_t_A[5] - t_P_D_t_A[5]) + ((t_P_D_t_A[6] - t_P_D_t_A[6]) + (t_P_D_t_A[7] - t_P_D_t_A[7])))) + (((t_P_D_t_A[8] - t_P_D_t_A[8]) + (t_P_D_t_A[9] - t_P_D_t_A[9])) + ((t_P_D_t_A[10] - t_P_D_t_A[10]) + ((t_P_D_t_A[11] - t_P_D_t_A[11]) + (t_P_D_t_A[12] - t_P_D_t_A[12])))))) + (((((t_P_D_t_A[13] - t_P_D_t_A[13]) + (t_P_D_t_A[14] - t_P_D_t_A[14])) + ((t_P_D_t_A[15] - t_P_D_t_A[15]) + ((t_P_D_t_A[16] - t_P_D_t_A[16]) + (t_P_D_t_A[17] - t_P_D_t_A[17])))) + (((t_P_D_t_A[18] - t_P_D_t_A[18]) + (t_P_D_t_A[19] - t_P_D_t_A[19])) + ((t_P_D_t_A[20] - t_P_D_t_A[20]) + ((t_P_D_t_A[21] - t_P_D_t_A[21]) + (t_P_D_t_A[22] - t_P_D_t_A[22]))))) + ((((t_P_D_t_A[23] - t_P_D_t_A[23]) + (t_P_D_t_A[24] - t_P_D_t_A[24])) + ((t_P_D_t_A[25] - t_P_D_t_A[25]) + ((t_P_D_t_A[26] - t_P_D_t_A[26]) + (t_P_D_t_A[27] - t_P_D_t_A[27])))) + (((t_P_D_t_A[28] - t_P_D_t_A[28]) + (t_P_D_t_A[29] - t_P_D_t_A[29])) + ((t_P_D_t_A[30] - t_P_D_t_A[30]) + ((t_P_D_t_A[31] - t_P_D_t_A[31]) + (t_P_D_t_A[32] - t_P_D_t_A[32]))))))) + ((((((t_P_D_t_A[33] - t_P_D_t_A[33]) + (t_P_D_t_A[34] - t_P_D_t_A[34])) + ((t_P_D_t_A[35] - t_P_D_t_A[35]) + (t_P_D_a[0] - t_P_D_a[0]))) + (((t_P_D_a[1] - t_P_D_a[1]) + (t_P_D_a[2] - t_P_D_a[2])) + ((t_P_D_a[3] - t_P_D_a[3]) + ((t_P_D_a[4] - t_P_D_a[4]) + (t_P_D_a[5] - t_P_D_a[5]))))) + ((((t_P_D_a[6] - t_P_D_a[6]) + (t_P_D_a[7] - t_P_D_a[7])) + ((t_P_D_a[8] - t_P_D_a[8]) + ((t_P_D_a[9] - t_P_D_a[9]) + (t_P_D_a[10] - t_P_D_a[10])))) + (((t_P_D_a[11] - t_P_D_a[11]) + (t_P_D_a[12] - t_P_D_a[12])) + ((t_P_D_a[13] - t_P_D_a[13]) + ((t_P_D_a[14] - t_P_D_a[14]) + (t_P_D_a[15] - t_P_D_a[15])))))) + (((((t_P_D_a[16] - t_P_D_a[16]) + (t_P_D_a[17] - t_P_D_a[17])) + ((t_P_D_p[0] - t_P_D_p[0]) + ((t_P_D_p[1] - t_P_D_p[1]) + (t_P_D_p[2] - t_P_D_p[2])))) + (((t_P_D_p[3] - t_P_D_p[3]) + (t_P_D_p[4] - t_P_D_p[4])) + ((t_P_D_p[5] - t_P_D_p[5]) + ((t_P_D_p[6] - t_P_D_p[6]) + (t_P_D_p[7] - t_P_D_p[7]))))) + ((((t_P_D_p[8] - t_P_D_p[8]) + (t_P_D_p[9] - t_P_D_p[9])) + ((t_P_D_p[10] - t_P_D_p[10]) + ((t_P_D_p[11] - t_P_D_p[11]) + (t_P_D_p[12] - t_P_D_p[12])))) + (((t_P_D_p[13] - t_P_D_p[13]) + (t_P_D_p[14] - t_P_D_p[14])) + ((t_P_D_p[15] - t_P_D_p[15]) + ((t_P_D_p[16] - t_P_D_p[16]) + (t_P_D_p[17] - t_P_D_p[17]))))))));
+#endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
@@ -332,12 +416,33 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_with_jacobians_f32(
     const float p_0 = p[0];
     const float p_1 = p[1];
     const float p_2 = p[2];
-    int status = 0;
-    int singular = 0;
+    uint32_t odd = 0;
+    int status = 0, singular = 0;
     float finite = 0.0f;
-    status |= rigidsym_c_scan_f(t_A, 6);
-    status |= rigidsym_c_scan_f(a, 3);
-    status |= rigidsym_c_scan_f(p, 3);
+#if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
+    {   /* the range test of every input component, as one loop (it vectorises) */
+        const float in_[12] = {
+            t_A[0], t_A[1], t_A[2], t_A[3], t_A[4], t_A[5], a[0], a[1], a[2], p[0], p[1], p[2]
+        };
+        int j_;
+        for (j_ = 0; j_ < 12; ++j_)
+            RIGIDSYM_C_ODD_F(odd, in_[j_]);
+    }
+    if (odd >> 31) {
+        const float *args[3];
+        const int sizes[3] = {6, 3, 3};
+        int j;
+        args[0] = t_A;
+        args[1] = a;
+        args[2] = p;
+        status = RIGIDSYM_C_EXTREME_INPUT;
+        for (j = 0; j < 3; ++j)
+            if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
+                status = RIGIDSYM_C_NONFINITE_INPUT;
+    }
+#else
+    (void)odd;
+#endif
     {
         const float x0 = a_2 - p_2;
         const float x1 = -x0;
@@ -427,9 +532,16 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_with_jacobians_f32(
         t_P_D_p[16] = t_A_0;
         t_P_D_p[17] = 0.0f;
     }
-    /* x - x is 0 for finite x, NaN otherwise: one test for every output (the guards of
-     * rigidsym_c_impl.h keep the compiler from folding it) */
+    /* no division or root, and every output bounded by 2^65 for inputs of
+     * ordinary magnitude (|x| < 2^31): only an extreme or non-finite input can make an
+     * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN
+     * otherwise; the guards of rigidsym_c_impl.h keep the compiler from folding it) */
+#if defined(RIGIDSYM_C_TRUSTED_INPUTS)
     finite += (((((((t_P[0] - t_P[0]) + (t_P[1] - t_P[1])) + ((t_P[2] - t_P[2]) + (t_P[3] - t_P[3]))) + (((t_P[4] - t_P[4]) + (t_P[5] - t_P[5])) + ((t_P_D_t_A[0] - t_P_D_t_A[0]) + ((t_P_D_t_A[1] - t_P_D_t_A[1]) + (t_P_D_t_A[2] - t_P_D_t_A[2]))))) + ((((t_P_D_t_A[3] - t_P_D_t_A[3]) + (t_P_D_t_A[4] - t_P_D_t_A[4])) + ((t_P_D_t_A[5] - t_P_D_t_A[5]) + ((t_P_D_t_A[6] - t_P_D_t_A[6]) + (t_P_D_t_A[7] - t_P_D_t_A[7])))) + (((t_P_D_t_A[8] - t_P_D_t_A[8]) + (t_P_D_t_A[9] - t_P_D_t_A[9])) + ((t_P_D_t_A[10] - t_P_D_t_A[10]) + ((t_P_D_t_A[11] - t_P_D_t_A[11]) + (t_P_D_t_A[12] - t_P_D_t_A[12])))))) + (((((t_P_D_t_A[13] - t_P_D_t_A[13]) + (t_P_D_t_A[14] - t_P_D_t_A[14])) + ((t_P_D_t_A[15] - t_P_D_t_A[15]) + ((t_P_D_t_A[16] - t_P_D_t_A[16]) + (t_P_D_t_A[17] - t_P_D_t_A[17])))) + (((t_P_D_t_A[18] - t_P_D_t_A[18]) + (t_P_D_t_A[19] - t_P_D_t_A[19])) + ((t_P_D_t_A[20] - t_P_D_t_A[20]) + ((t_P_D_t_A[21] - t_P_D_t_A[21]) + (t_P_D_t_A[22] - t_P_D_t_A[22]))))) + ((((t_P_D_t_A[23] - t_P_D_t_A[23]) + (t_P_D_t_A[24] - t_P_D_t_A[24])) + ((t_P_D_t_A[25] - t_P_D_t_A[25]) + ((t_P_D_t_A[26] - t_P_D_t_A[26]) + (t_P_D_t_A[27] - t_P_D_t_A[27])))) + (((t_P_D_t_A[28] - t_P_D_t_A[28]) + (t_P_D_t_A[29] - t_P_D_t_A[29])) + ((t_P_D_t_A[30] - t_P_D_t_A[30]) + ((t_P_D_t_A[31] - t_P_D_t_A[31]) + (t_P_D_t_A[32] - t_P_D_t_A[32]))))))) + ((((((t_P_D_t_A[33] - t_P_D_t_A[33]) + (t_P_D_t_A[34] - t_P_D_t_A[34])) + ((t_P_D_t_A[35] - t_P_D_t_A[35]) + (t_P_D_a[0] - t_P_D_a[0]))) + (((t_P_D_a[1] - t_P_D_a[1]) + (t_P_D_a[2] - t_P_D_a[2])) + ((t_P_D_a[3] - t_P_D_a[3]) + ((t_P_D_a[4] - t_P_D_a[4]) + (t_P_D_a[5] - t_P_D_a[5]))))) + ((((t_P_D_a[6] - t_P_D_a[6]) + (t_P_D_a[7] - t_P_D_a[7])) + ((t_P_D_a[8] - t_P_D_a[8]) + ((t_P_D_a[9] - t_P_D_a[9]) + (t_P_D_a[10] - t_P_D_a[10])))) + (((t_P_D_a[11] - t_P_D_a[11]) + (t_P_D_a[12] - t_P_D_a[12])) + ((t_P_D_a[13] - t_P_D_a[13]) + ((t_P_D_a[14] - t_P_D_a[14]) + (t_P_D_a[15] - t_P_D_a[15])))))) + (((((t_P_D_a[16] - t_P_D_a[16]) + (t_P_D_a[17] - t_P_D_a[17])) + ((t_P_D_p[0] - t_P_D_p[0]) + ((t_P_D_p[1] - t_P_D_p[1]) + (t_P_D_p[2] - t_P_D_p[2])))) + (((t_P_D_p[3] - t_P_D_p[3]) + (t_P_D_p[4] - t_P_D_p[4])) + ((t_P_D_p[5] - t_P_D_p[5]) + ((t_P_D_p[6] - t_P_D_p[6]) + (t_P_D_p[7] - t_P_D_p[7]))))) + ((((t_P_D_p[8] - t_P_D_p[8]) + (t_P_D_p[9] - t_P_D_p[9])) + ((t_P_D_p[10] - t_P_D_p[10]) + ((t_P_D_p[11] - t_P_D_p[11]) + (t_P_D_p[12] - t_P_D_p[12])))) + (((t_P_D_p[13] - t_P_D_p[13]) + (t_P_D_p[14] - t_P_D_p[14])) + ((t_P_D_p[15] - t_P_D_p[15]) + ((t_P_D_p[16] - t_P_D_p[16]) + (t_P_D_p[17] - t_P_D_p[17]))))))));
+#else
+    if (status)
+        finite += (((((((t_P[0] - t_P[0]) + (t_P[1] - t_P[1])) + ((t_P[2] - t_P[2]) + (t_P[3] - t_P[3]))) + (((t_P[4] - t_P[4]) + (t_P[5] - t_P[5])) + ((t_P_D_t_A[0] - t_P_D_t_A[0]) + ((t_P_D_t_A[1] - t_P_D_t_A[1]) + (t_P_D_t_A[2] - t_P_D_t_A[2]))))) + ((((t_P_D_t_A[3] - t_P_D_t_A[3]) + (t_P_D_t_A[4] - t_P_D_t_A[4])) + ((t_P_D_t_A[5] - t_P_D_t_A[5]) + ((t_P_D_t_A[6] - t_P_D_t_A[6]) + (t_P_D_t_A[7] - t_P_D_t_A[7])))) + (((t_P_D_t_A[8] - t_P_D_t_A[8]) + (t_P_D_t_A[9] - t_P_D_t_A[9])) + ((t_P_D_t_A[10] - t_P_D_t_A[10]) + ((t_P_D_t_A[11] - t_P_D_t_A[11]) + (t_P_D_t_A[12] - t_P_D_t_A[12])))))) + (((((t_P_D_t_A[13] - t_P_D_t_A[13]) + (t_P_D_t_A[14] - t_P_D_t_A[14])) + ((t_P_D_t_A[15] - t_P_D_t_A[15]) + ((t_P_D_t_A[16] - t_P_D_t_A[16]) + (t_P_D_t_A[17] - t_P_D_t_A[17])))) + (((t_P_D_t_A[18] - t_P_D_t_A[18]) + (t_P_D_t_A[19] - t_P_D_t_A[19])) + ((t_P_D_t_A[20] - t_P_D_t_A[20]) + ((t_P_D_t_A[21] - t_P_D_t_A[21]) + (t_P_D_t_A[22] - t_P_D_t_A[22]))))) + ((((t_P_D_t_A[23] - t_P_D_t_A[23]) + (t_P_D_t_A[24] - t_P_D_t_A[24])) + ((t_P_D_t_A[25] - t_P_D_t_A[25]) + ((t_P_D_t_A[26] - t_P_D_t_A[26]) + (t_P_D_t_A[27] - t_P_D_t_A[27])))) + (((t_P_D_t_A[28] - t_P_D_t_A[28]) + (t_P_D_t_A[29] - t_P_D_t_A[29])) + ((t_P_D_t_A[30] - t_P_D_t_A[30]) + ((t_P_D_t_A[31] - t_P_D_t_A[31]) + (t_P_D_t_A[32] - t_P_D_t_A[32]))))))) + ((((((t_P_D_t_A[33] - t_P_D_t_A[33]) + (t_P_D_t_A[34] - t_P_D_t_A[34])) + ((t_P_D_t_A[35] - t_P_D_t_A[35]) + (t_P_D_a[0] - t_P_D_a[0]))) + (((t_P_D_a[1] - t_P_D_a[1]) + (t_P_D_a[2] - t_P_D_a[2])) + ((t_P_D_a[3] - t_P_D_a[3]) + ((t_P_D_a[4] - t_P_D_a[4]) + (t_P_D_a[5] - t_P_D_a[5]))))) + ((((t_P_D_a[6] - t_P_D_a[6]) + (t_P_D_a[7] - t_P_D_a[7])) + ((t_P_D_a[8] - t_P_D_a[8]) + ((t_P_D_a[9] - t_P_D_a[9]) + (t_P_D_a[10] - t_P_D_a[10])))) + (((t_P_D_a[11] - t_P_D_a[11]) + (t_P_D_a[12] - t_P_D_a[12])) + ((t_P_D_a[13] - t_P_D_a[13]) + ((t_P_D_a[14] - t_P_D_a[14]) + (t_P_D_a[15] - t_P_D_a[15])))))) + (((((t_P_D_a[16] - t_P_D_a[16]) + (t_P_D_a[17] - t_P_D_a[17])) + ((t_P_D_p[0] - t_P_D_p[0]) + ((t_P_D_p[1] - t_P_D_p[1]) + (t_P_D_p[2] - t_P_D_p[2])))) + (((t_P_D_p[3] - t_P_D_p[3]) + (t_P_D_p[4] - t_P_D_p[4])) + ((t_P_D_p[5] - t_P_D_p[5]) + ((t_P_D_p[6] - t_P_D_p[6]) + (t_P_D_p[7] - t_P_D_p[7]))))) + ((((t_P_D_p[8] - t_P_D_p[8]) + (t_P_D_p[9] - t_P_D_p[9])) + ((t_P_D_p[10] - t_P_D_p[10]) + ((t_P_D_p[11] - t_P_D_p[11]) + (t_P_D_p[12] - t_P_D_p[12])))) + (((t_P_D_p[13] - t_P_D_p[13]) + (t_P_D_p[14] - t_P_D_p[14])) + ((t_P_D_p[15] - t_P_D_p[15]) + ((t_P_D_p[16] - t_P_D_p[16]) + (t_P_D_p[17] - t_P_D_p[17]))))))));
+#endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
