@@ -239,6 +239,34 @@ def test_overflow_is_flagged_never_silent(lib, big):
     assert np.isfinite(T[0]) or status & NONFINITE_RESULT
 
 
+@settings(max_examples=15, deadline=None)
+@given(st.integers(0, 9), st.data())
+def test_batch_function_is_the_scalar_function_per_row(lib, n, data):
+    """rigidsym_c_<k>_batch over n rows gives each row what the scalar function gives it,
+    the statuses per row and their OR (a NaN row among ordinary ones)."""
+    rows = np.array(data.draw(st.lists(st.lists(finite, min_size=12, max_size=12),
+                                       min_size=n, max_size=n))).reshape(n, 12)
+    if n:
+        rows[data.draw(st.integers(0, n - 1)), 0] = np.nan
+    t_A, a, p = (np.ascontiguousarray(rows[:, s]) for s in (slice(0, 6), slice(6, 9),
+                                                            slice(9, 12)))
+    out = np.zeros((n, 6))
+    status = np.zeros(n, np.int32)
+    ptr = ctypes.POINTER(ctypes.c_double)
+    fn = lib.rigidsym_c_twist_transfer_batch
+    fn.restype = ctypes.c_int
+    total = fn(ctypes.c_size_t(n), t_A.ctypes.data_as(ptr), a.ctypes.data_as(ptr),
+               p.ctypes.data_as(ptr), out.ctypes.data_as(ptr),
+               status.ctypes.data_as(ctypes.POINTER(ctypes.c_int)))
+    want_all = 0
+    for i in range(n):
+        s, (row,) = call(lib, "rigidsym_c_twist_transfer", t_A[i], a[i], p[i], ("out", 6))
+        assert s == status[i]
+        np.testing.assert_array_equal(row, out[i])
+        want_all |= s
+    assert total == want_all
+
+
 def test_float_functions_agree_with_double(lib):
     rng = np.random.default_rng(5)
     worst = 0.0
@@ -429,6 +457,15 @@ def test_float_functions_have_no_double_operation_on_cortex_m4f(tmp_path):
                           text=True).stdout.split()
     assert "sinf" in syms and "cosf" in syms
     assert not [s for s in syms if DOUBLE_SYMBOLS.match(s)]
+    # a per-sample loop for MCUs with <= 2 KB of stack: every function's frame, batch
+    # loops included (-fstack-usage), well under it
+    for src in sources():
+        subprocess.run([ARM, *M4F, "-std=c99", "-O2", "-fstack-usage", "-I", str(KERNELS_DIR),
+                        "-c", str(src), "-o", str(tmp_path / "su.o")], check=True,
+                       cwd=tmp_path)
+        frames = [int(line.split("\t")[1])
+                  for line in (tmp_path / "su.su").read_text().splitlines()]
+        assert frames and max(frames) <= 2048, (src.name, frames)
 
 
 @pytest.mark.slow

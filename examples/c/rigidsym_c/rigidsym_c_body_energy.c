@@ -82,6 +82,32 @@ RIGIDSYM_C_API int rigidsym_c_body_energy(
     return status;
 }
 
+
+RIGIDSYM_C_API int rigidsym_c_body_energy_batch(
+    size_t n,
+    const double *m,
+    const double *v,
+    const double *inertia,
+    const double *omega,
+    double *T,
+    int *status)
+{
+    int all = 0;
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        const int s = rigidsym_c_body_energy(
+            m[i],
+            v + 3 * i,
+            inertia + 9 * i,
+            omega + 3 * i,
+            T + 1 * i);
+        if (status)
+            status[i] = s;
+        all |= s;
+    }
+    return all;
+}
+
 RIGIDSYM_C_API int rigidsym_c_body_energy_f32(
     float m,
     const float v[3],
@@ -154,6 +180,32 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_f32(
         T[0] = NAN;
     }
     return status;
+}
+
+
+RIGIDSYM_C_API int rigidsym_c_body_energy_f32_batch(
+    size_t n,
+    const float *m,
+    const float *v,
+    const float *inertia,
+    const float *omega,
+    float *T,
+    int *status)
+{
+    int all = 0;
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        const int s = rigidsym_c_body_energy_f32(
+            m[i],
+            v + 3 * i,
+            inertia + 9 * i,
+            omega + 3 * i,
+            T + 1 * i);
+        if (status)
+            status[i] = s;
+        all |= s;
+    }
+    return all;
 }
 
 RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians(
@@ -281,6 +333,40 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians(
     return status;
 }
 
+
+RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians_batch(
+    size_t n,
+    const double *m,
+    const double *v,
+    const double *inertia,
+    const double *omega,
+    double *T,
+    double *T_D_m,
+    double *T_D_v,
+    double *T_D_inertia,
+    double *T_D_omega,
+    int *status)
+{
+    int all = 0;
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        const int s = rigidsym_c_body_energy_with_jacobians(
+            m[i],
+            v + 3 * i,
+            inertia + 9 * i,
+            omega + 3 * i,
+            T + 1 * i,
+            T_D_m + 1 * i,
+            T_D_v + 3 * i,
+            T_D_inertia + 9 * i,
+            T_D_omega + 3 * i);
+        if (status)
+            status[i] = s;
+        all |= s;
+    }
+    return all;
+}
+
 RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians_f32(
     float m,
     const float v[3],
@@ -404,4 +490,38 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians_f32(
         T_D_omega[2] = NAN;
     }
     return status;
+}
+
+
+RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians_f32_batch(
+    size_t n,
+    const float *m,
+    const float *v,
+    const float *inertia,
+    const float *omega,
+    float *T,
+    float *T_D_m,
+    float *T_D_v,
+    float *T_D_inertia,
+    float *T_D_omega,
+    int *status)
+{
+    int all = 0;
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        const int s = rigidsym_c_body_energy_with_jacobians_f32(
+            m[i],
+            v + 3 * i,
+            inertia + 9 * i,
+            omega + 3 * i,
+            T + 1 * i,
+            T_D_m + 1 * i,
+            T_D_v + 3 * i,
+            T_D_inertia + 9 * i,
+            T_D_omega + 3 * i);
+        if (status)
+            status[i] = s;
+        all |= s;
+    }
+    return all;
 }

@@ -49,6 +49,26 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_f32(
     float *T);
 
 
+/* The same over n samples, one after the other (no heap, no stack beyond one call's):
+ * each argument and output holds n rows of its per-sample size, row-major ([n][size]);
+ * status[i] (status may be NULL) receives sample i's status; returns their OR. */
+RIGIDSYM_C_API int rigidsym_c_body_energy_batch(
+    size_t n,
+    const double *m,
+    const double *v,
+    const double *inertia,
+    const double *omega,
+    double *T,
+    int *status);
+RIGIDSYM_C_API int rigidsym_c_body_energy_f32_batch(
+    size_t n,
+    const float *m,
+    const float *v,
+    const float *inertia,
+    const float *omega,
+    float *T,
+    int *status);
+
 /* body_energy_with_jacobians:
  * Kinetic energy of a rigid body, with the Jacobians of its outputs.
  *
@@ -95,6 +115,34 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians_f32(
     float *T,
     float *T_D_m,
     float T_D_v[3],    float T_D_inertia[9],    float T_D_omega[3]);
+
+/* The same over n samples, one after the other (no heap, no stack beyond one call's):
+ * each argument and output holds n rows of its per-sample size, row-major ([n][size]);
+ * status[i] (status may be NULL) receives sample i's status; returns their OR. */
+RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians_batch(
+    size_t n,
+    const double *m,
+    const double *v,
+    const double *inertia,
+    const double *omega,
+    double *T,
+    double *T_D_m,
+    double *T_D_v,
+    double *T_D_inertia,
+    double *T_D_omega,
+    int *status);
+RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians_f32_batch(
+    size_t n,
+    const float *m,
+    const float *v,
+    const float *inertia,
+    const float *omega,
+    float *T,
+    float *T_D_m,
+    float *T_D_v,
+    float *T_D_inertia,
+    float *T_D_omega,
+    int *status);
 
 RIGIDSYM_C_END_DECLS
 

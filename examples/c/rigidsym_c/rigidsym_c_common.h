@@ -28,6 +28,8 @@
  * wider type; this C does not) */
 #define RIGIDSYM_C_EXTREME_INPUT 8
 
+#include <stddef.h>   /* size_t, of the _batch functions */
+
 /* C++ callers get C linkage (the sources are C99). */
 #ifdef __cplusplus
 #define RIGIDSYM_C_BEGIN_DECLS extern "C" {

@@ -100,6 +100,34 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench(
     return status;
 }
 
+
+RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_batch(
+    size_t n,
+    const double *I_C,
+    const double *m,
+    const double *omega,
+    const double *omega_dot,
+    const double *c_ddot,
+    double *w,
+    int *status)
+{
+    int all = 0;
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        const int s = rigidsym_c_newton_euler_wrench(
+            I_C + 9 * i,
+            m[i],
+            omega + 3 * i,
+            omega_dot + 3 * i,
+            c_ddot + 3 * i,
+            w + 6 * i);
+        if (status)
+            status[i] = s;
+        all |= s;
+    }
+    return all;
+}
+
 RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_f32(
     const float I_C[9],
     float m,
@@ -190,6 +218,34 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_f32(
         w[5] = NAN;
     }
     return status;
+}
+
+
+RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_f32_batch(
+    size_t n,
+    const float *I_C,
+    const float *m,
+    const float *omega,
+    const float *omega_dot,
+    const float *c_ddot,
+    float *w,
+    int *status)
+{
+    int all = 0;
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        const int s = rigidsym_c_newton_euler_wrench_f32(
+            I_C + 9 * i,
+            m[i],
+            omega + 3 * i,
+            omega_dot + 3 * i,
+            c_ddot + 3 * i,
+            w + 6 * i);
+        if (status)
+            status[i] = s;
+        all |= s;
+    }
+    return all;
 }
 
 RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians(
@@ -533,6 +589,44 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians(
     return status;
 }
 
+
+RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians_batch(
+    size_t n,
+    const double *I_C,
+    const double *m,
+    const double *omega,
+    const double *omega_dot,
+    const double *c_ddot,
+    double *w,
+    double *w_D_I_C,
+    double *w_D_m,
+    double *w_D_omega,
+    double *w_D_omega_dot,
+    double *w_D_c_ddot,
+    int *status)
+{
+    int all = 0;
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        const int s = rigidsym_c_newton_euler_wrench_with_jacobians(
+            I_C + 9 * i,
+            m[i],
+            omega + 3 * i,
+            omega_dot + 3 * i,
+            c_ddot + 3 * i,
+            w + 6 * i,
+            w_D_I_C + 54 * i,
+            w_D_m + 6 * i,
+            w_D_omega + 18 * i,
+            w_D_omega_dot + 18 * i,
+            w_D_c_ddot + 18 * i);
+        if (status)
+            status[i] = s;
+        all |= s;
+    }
+    return all;
+}
+
 RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians_f32(
     const float I_C[9],
     float m,
@@ -872,4 +966,42 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians_f32(
         w_D_c_ddot[17] = NAN;
     }
     return status;
+}
+
+
+RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians_f32_batch(
+    size_t n,
+    const float *I_C,
+    const float *m,
+    const float *omega,
+    const float *omega_dot,
+    const float *c_ddot,
+    float *w,
+    float *w_D_I_C,
+    float *w_D_m,
+    float *w_D_omega,
+    float *w_D_omega_dot,
+    float *w_D_c_ddot,
+    int *status)
+{
+    int all = 0;
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        const int s = rigidsym_c_newton_euler_wrench_with_jacobians_f32(
+            I_C + 9 * i,
+            m[i],
+            omega + 3 * i,
+            omega_dot + 3 * i,
+            c_ddot + 3 * i,
+            w + 6 * i,
+            w_D_I_C + 54 * i,
+            w_D_m + 6 * i,
+            w_D_omega + 18 * i,
+            w_D_omega_dot + 18 * i,
+            w_D_c_ddot + 18 * i);
+        if (status)
+            status[i] = s;
+        all |= s;
+    }
+    return all;
 }

@@ -50,6 +50,28 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_f32(
     const float c_ddot[3],
     float w[6]);
 
+/* The same over n samples, one after the other (no heap, no stack beyond one call's):
+ * each argument and output holds n rows of its per-sample size, row-major ([n][size]);
+ * status[i] (status may be NULL) receives sample i's status; returns their OR. */
+RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_batch(
+    size_t n,
+    const double *I_C,
+    const double *m,
+    const double *omega,
+    const double *omega_dot,
+    const double *c_ddot,
+    double *w,
+    int *status);
+RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_f32_batch(
+    size_t n,
+    const float *I_C,
+    const float *m,
+    const float *omega,
+    const float *omega_dot,
+    const float *c_ddot,
+    float *w,
+    int *status);
+
 /* newton_euler_wrench_with_jacobians:
  * Newton-Euler wrench [n_C; f] of a rigid body, with the Jacobians of its outputs.
  *
@@ -96,6 +118,38 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians_f32(
     const float omega_dot[3],
     const float c_ddot[3],
     float w[6],    float w_D_I_C[54],    float w_D_m[6],    float w_D_omega[18],    float w_D_omega_dot[18],    float w_D_c_ddot[18]);
+
+/* The same over n samples, one after the other (no heap, no stack beyond one call's):
+ * each argument and output holds n rows of its per-sample size, row-major ([n][size]);
+ * status[i] (status may be NULL) receives sample i's status; returns their OR. */
+RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians_batch(
+    size_t n,
+    const double *I_C,
+    const double *m,
+    const double *omega,
+    const double *omega_dot,
+    const double *c_ddot,
+    double *w,
+    double *w_D_I_C,
+    double *w_D_m,
+    double *w_D_omega,
+    double *w_D_omega_dot,
+    double *w_D_c_ddot,
+    int *status);
+RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians_f32_batch(
+    size_t n,
+    const float *I_C,
+    const float *m,
+    const float *omega,
+    const float *omega_dot,
+    const float *c_ddot,
+    float *w,
+    float *w_D_I_C,
+    float *w_D_m,
+    float *w_D_omega,
+    float *w_D_omega_dot,
+    float *w_D_c_ddot,
+    int *status);
 
 RIGIDSYM_C_END_DECLS
 

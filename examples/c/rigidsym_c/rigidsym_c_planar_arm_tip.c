@@ -68,6 +68,32 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip(
     return status;
 }
 
+
+RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_batch(
+    size_t n,
+    const double *q1,
+    const double *q2,
+    const double *l1,
+    const double *l2,
+    double *p,
+    int *status)
+{
+    int all = 0;
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        const int s = rigidsym_c_planar_arm_tip(
+            q1[i],
+            q2[i],
+            l1[i],
+            l2[i],
+            p + 2 * i);
+        if (status)
+            status[i] = s;
+        all |= s;
+    }
+    return all;
+}
+
 RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_f32(
     float q1,
     float q2,
@@ -126,6 +152,32 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_f32(
         p[1] = NAN;
     }
     return status;
+}
+
+
+RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_f32_batch(
+    size_t n,
+    const float *q1,
+    const float *q2,
+    const float *l1,
+    const float *l2,
+    float *p,
+    int *status)
+{
+    int all = 0;
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        const int s = rigidsym_c_planar_arm_tip_f32(
+            q1[i],
+            q2[i],
+            l1[i],
+            l2[i],
+            p + 2 * i);
+        if (status)
+            status[i] = s;
+        all |= s;
+    }
+    return all;
 }
 
 RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians(
@@ -212,6 +264,40 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians(
     return status;
 }
 
+
+RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians_batch(
+    size_t n,
+    const double *q1,
+    const double *q2,
+    const double *l1,
+    const double *l2,
+    double *p,
+    double *p_D_q1,
+    double *p_D_q2,
+    double *p_D_l1,
+    double *p_D_l2,
+    int *status)
+{
+    int all = 0;
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        const int s = rigidsym_c_planar_arm_tip_with_jacobians(
+            q1[i],
+            q2[i],
+            l1[i],
+            l2[i],
+            p + 2 * i,
+            p_D_q1 + 2 * i,
+            p_D_q2 + 2 * i,
+            p_D_l1 + 2 * i,
+            p_D_l2 + 2 * i);
+        if (status)
+            status[i] = s;
+        all |= s;
+    }
+    return all;
+}
+
 RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians_f32(
     float q1,
     float q2,
@@ -294,4 +380,38 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians_f32(
         p_D_l2[1] = NAN;
     }
     return status;
+}
+
+
+RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians_f32_batch(
+    size_t n,
+    const float *q1,
+    const float *q2,
+    const float *l1,
+    const float *l2,
+    float *p,
+    float *p_D_q1,
+    float *p_D_q2,
+    float *p_D_l1,
+    float *p_D_l2,
+    int *status)
+{
+    int all = 0;
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        const int s = rigidsym_c_planar_arm_tip_with_jacobians_f32(
+            q1[i],
+            q2[i],
+            l1[i],
+            l2[i],
+            p + 2 * i,
+            p_D_q1 + 2 * i,
+            p_D_q2 + 2 * i,
+            p_D_l1 + 2 * i,
+            p_D_l2 + 2 * i);
+        if (status)
+            status[i] = s;
+        all |= s;
+    }
+    return all;
 }

@@ -47,6 +47,26 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_f32(
     float l2,
     float p[2]);
 
+/* The same over n samples, one after the other (no heap, no stack beyond one call's):
+ * each argument and output holds n rows of its per-sample size, row-major ([n][size]);
+ * status[i] (status may be NULL) receives sample i's status; returns their OR. */
+RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_batch(
+    size_t n,
+    const double *q1,
+    const double *q2,
+    const double *l1,
+    const double *l2,
+    double *p,
+    int *status);
+RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_f32_batch(
+    size_t n,
+    const float *q1,
+    const float *q2,
+    const float *l1,
+    const float *l2,
+    float *p,
+    int *status);
+
 /* planar_arm_tip_with_jacobians:
  * Tip position of a planar two-link arm, with the Jacobians of its outputs.
  *
@@ -89,6 +109,34 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians_f32(
     float l1,
     float l2,
     float p[2],    float p_D_q1[2],    float p_D_q2[2],    float p_D_l1[2],    float p_D_l2[2]);
+
+/* The same over n samples, one after the other (no heap, no stack beyond one call's):
+ * each argument and output holds n rows of its per-sample size, row-major ([n][size]);
+ * status[i] (status may be NULL) receives sample i's status; returns their OR. */
+RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians_batch(
+    size_t n,
+    const double *q1,
+    const double *q2,
+    const double *l1,
+    const double *l2,
+    double *p,
+    double *p_D_q1,
+    double *p_D_q2,
+    double *p_D_l1,
+    double *p_D_l2,
+    int *status);
+RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians_f32_batch(
+    size_t n,
+    const float *q1,
+    const float *q2,
+    const float *l1,
+    const float *l2,
+    float *p,
+    float *p_D_q1,
+    float *p_D_q2,
+    float *p_D_l1,
+    float *p_D_l2,
+    int *status);
 
 RIGIDSYM_C_END_DECLS
 

@@ -87,6 +87,26 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation(
     return status;
 }
 
+
+RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_batch(
+    size_t n,
+    const double *q,
+    double *Q,
+    int *status)
+{
+    int all = 0;
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        const int s = rigidsym_c_quaternion_rotation(
+            q + 4 * i,
+            Q + 9 * i);
+        if (status)
+            status[i] = s;
+        all |= s;
+    }
+    return all;
+}
+
 RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_f32(
     const float q[4],
     float Q[9])
@@ -164,6 +184,26 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_f32(
         Q[8] = NAN;
     }
     return status;
+}
+
+
+RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_f32_batch(
+    size_t n,
+    const float *q,
+    float *Q,
+    int *status)
+{
+    int all = 0;
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        const int s = rigidsym_c_quaternion_rotation_f32(
+            q + 4 * i,
+            Q + 9 * i);
+        if (status)
+            status[i] = s;
+        all |= s;
+    }
+    return all;
 }
 
 RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_with_jacobians(
@@ -323,6 +363,28 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_with_jacobians(
     return status;
 }
 
+
+RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_with_jacobians_batch(
+    size_t n,
+    const double *q,
+    double *Q,
+    double *Q_D_q,
+    int *status)
+{
+    int all = 0;
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        const int s = rigidsym_c_quaternion_rotation_with_jacobians(
+            q + 4 * i,
+            Q + 9 * i,
+            Q_D_q + 36 * i);
+        if (status)
+            status[i] = s;
+        all |= s;
+    }
+    return all;
+}
+
 RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_with_jacobians_f32(
     const float q[4],
     float Q[9],    float Q_D_q[36])
@@ -478,4 +540,26 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_with_jacobians_f32(
         Q_D_q[35] = NAN;
     }
     return status;
+}
+
+
+RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_with_jacobians_f32_batch(
+    size_t n,
+    const float *q,
+    float *Q,
+    float *Q_D_q,
+    int *status)
+{
+    int all = 0;
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        const int s = rigidsym_c_quaternion_rotation_with_jacobians_f32(
+            q + 4 * i,
+            Q + 9 * i,
+            Q_D_q + 36 * i);
+        if (status)
+            status[i] = s;
+        all |= s;
+    }
+    return all;
 }

@@ -38,6 +38,20 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_f32(
     const float q[4],
     float Q[9]);
 
+/* The same over n samples, one after the other (no heap, no stack beyond one call's):
+ * each argument and output holds n rows of its per-sample size, row-major ([n][size]);
+ * status[i] (status may be NULL) receives sample i's status; returns their OR. */
+RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_batch(
+    size_t n,
+    const double *q,
+    double *Q,
+    int *status);
+RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_f32_batch(
+    size_t n,
+    const float *q,
+    float *Q,
+    int *status);
+
 /* quaternion_rotation_with_jacobians:
  * Rotation matrix of a unit quaternion, with the Jacobians of its outputs.
  *
@@ -68,6 +82,22 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_with_jacobians(
 RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_with_jacobians_f32(
     const float q[4],
     float Q[9],    float Q_D_q[36]);
+
+/* The same over n samples, one after the other (no heap, no stack beyond one call's):
+ * each argument and output holds n rows of its per-sample size, row-major ([n][size]);
+ * status[i] (status may be NULL) receives sample i's status; returns their OR. */
+RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_with_jacobians_batch(
+    size_t n,
+    const double *q,
+    double *Q,
+    double *Q_D_q,
+    int *status);
+RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_with_jacobians_f32_batch(
+    size_t n,
+    const float *q,
+    float *Q,
+    float *Q_D_q,
+    int *status);
 
 RIGIDSYM_C_END_DECLS
 

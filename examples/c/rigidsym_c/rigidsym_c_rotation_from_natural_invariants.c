@@ -96,6 +96,28 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants(
     return status;
 }
 
+
+RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_batch(
+    size_t n,
+    const double *e,
+    const double *phi,
+    double *Q,
+    int *status)
+{
+    int all = 0;
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        const int s = rigidsym_c_rotation_from_natural_invariants(
+            e + 3 * i,
+            phi[i],
+            Q + 9 * i);
+        if (status)
+            status[i] = s;
+        all |= s;
+    }
+    return all;
+}
+
 RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_f32(
     const float e[3],
     float phi,
@@ -182,6 +204,28 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_f32(
         Q[8] = NAN;
     }
     return status;
+}
+
+
+RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_f32_batch(
+    size_t n,
+    const float *e,
+    const float *phi,
+    float *Q,
+    int *status)
+{
+    int all = 0;
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        const int s = rigidsym_c_rotation_from_natural_invariants_f32(
+            e + 3 * i,
+            phi[i],
+            Q + 9 * i);
+        if (status)
+            status[i] = s;
+        all |= s;
+    }
+    return all;
 }
 
 RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_with_jacobians(
@@ -356,6 +400,32 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_with_jacobians(
     return status;
 }
 
+
+RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_with_jacobians_batch(
+    size_t n,
+    const double *e,
+    const double *phi,
+    double *Q,
+    double *Q_D_e,
+    double *Q_D_phi,
+    int *status)
+{
+    int all = 0;
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        const int s = rigidsym_c_rotation_from_natural_invariants_with_jacobians(
+            e + 3 * i,
+            phi[i],
+            Q + 9 * i,
+            Q_D_e + 27 * i,
+            Q_D_phi + 9 * i);
+        if (status)
+            status[i] = s;
+        all |= s;
+    }
+    return all;
+}
+
 RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_with_jacobians_f32(
     const float e[3],
     float phi,
@@ -526,4 +596,30 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_with_jacobians_f3
         Q_D_phi[8] = NAN;
     }
     return status;
+}
+
+
+RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_with_jacobians_f32_batch(
+    size_t n,
+    const float *e,
+    const float *phi,
+    float *Q,
+    float *Q_D_e,
+    float *Q_D_phi,
+    int *status)
+{
+    int all = 0;
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        const int s = rigidsym_c_rotation_from_natural_invariants_with_jacobians_f32(
+            e + 3 * i,
+            phi[i],
+            Q + 9 * i,
+            Q_D_e + 27 * i,
+            Q_D_phi + 9 * i);
+        if (status)
+            status[i] = s;
+        all |= s;
+    }
+    return all;
 }

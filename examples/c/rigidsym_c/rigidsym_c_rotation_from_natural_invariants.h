@@ -41,6 +41,22 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_f32(
     float phi,
     float Q[9]);
 
+/* The same over n samples, one after the other (no heap, no stack beyond one call's):
+ * each argument and output holds n rows of its per-sample size, row-major ([n][size]);
+ * status[i] (status may be NULL) receives sample i's status; returns their OR. */
+RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_batch(
+    size_t n,
+    const double *e,
+    const double *phi,
+    double *Q,
+    int *status);
+RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_f32_batch(
+    size_t n,
+    const float *e,
+    const float *phi,
+    float *Q,
+    int *status);
+
 /* rotation_from_natural_invariants_with_jacobians:
  * Rotation matrix from its natural invariants (e, phi), with the Jacobians of its
  * outputs.
@@ -76,6 +92,26 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_with_jacobians_f3
     const float e[3],
     float phi,
     float Q[9],    float Q_D_e[27],    float Q_D_phi[9]);
+
+/* The same over n samples, one after the other (no heap, no stack beyond one call's):
+ * each argument and output holds n rows of its per-sample size, row-major ([n][size]);
+ * status[i] (status may be NULL) receives sample i's status; returns their OR. */
+RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_with_jacobians_batch(
+    size_t n,
+    const double *e,
+    const double *phi,
+    double *Q,
+    double *Q_D_e,
+    double *Q_D_phi,
+    int *status);
+RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_with_jacobians_f32_batch(
+    size_t n,
+    const float *e,
+    const float *phi,
+    float *Q,
+    float *Q_D_e,
+    float *Q_D_phi,
+    int *status);
 
 RIGIDSYM_C_END_DECLS
 

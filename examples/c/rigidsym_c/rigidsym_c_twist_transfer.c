@@ -88,6 +88,30 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer(
     return status;
 }
 
+
+RIGIDSYM_C_API int rigidsym_c_twist_transfer_batch(
+    size_t n,
+    const double *t_A,
+    const double *a,
+    const double *p,
+    double *t_P,
+    int *status)
+{
+    int all = 0;
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        const int s = rigidsym_c_twist_transfer(
+            t_A + 6 * i,
+            a + 3 * i,
+            p + 3 * i,
+            t_P + 6 * i);
+        if (status)
+            status[i] = s;
+        all |= s;
+    }
+    return all;
+}
+
 RIGIDSYM_C_API int rigidsym_c_twist_transfer_f32(
     const float t_A[6],
     const float a[3],
@@ -166,6 +190,30 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_f32(
         t_P[5] = NAN;
     }
     return status;
+}
+
+
+RIGIDSYM_C_API int rigidsym_c_twist_transfer_f32_batch(
+    size_t n,
+    const float *t_A,
+    const float *a,
+    const float *p,
+    float *t_P,
+    int *status)
+{
+    int all = 0;
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        const int s = rigidsym_c_twist_transfer_f32(
+            t_A + 6 * i,
+            a + 3 * i,
+            p + 3 * i,
+            t_P + 6 * i);
+        if (status)
+            status[i] = s;
+        all |= s;
+    }
+    return all;
 }
 
 RIGIDSYM_C_API int rigidsym_c_twist_transfer_with_jacobians(
@@ -398,6 +446,36 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_with_jacobians(
     return status;
 }
 
+
+RIGIDSYM_C_API int rigidsym_c_twist_transfer_with_jacobians_batch(
+    size_t n,
+    const double *t_A,
+    const double *a,
+    const double *p,
+    double *t_P,
+    double *t_P_D_t_A,
+    double *t_P_D_a,
+    double *t_P_D_p,
+    int *status)
+{
+    int all = 0;
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        const int s = rigidsym_c_twist_transfer_with_jacobians(
+            t_A + 6 * i,
+            a + 3 * i,
+            p + 3 * i,
+            t_P + 6 * i,
+            t_P_D_t_A + 36 * i,
+            t_P_D_a + 18 * i,
+            t_P_D_p + 18 * i);
+        if (status)
+            status[i] = s;
+        all |= s;
+    }
+    return all;
+}
+
 RIGIDSYM_C_API int rigidsym_c_twist_transfer_with_jacobians_f32(
     const float t_A[6],
     const float a[3],
@@ -626,4 +704,34 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_with_jacobians_f32(
         t_P_D_p[17] = NAN;
     }
     return status;
+}
+
+
+RIGIDSYM_C_API int rigidsym_c_twist_transfer_with_jacobians_f32_batch(
+    size_t n,
+    const float *t_A,
+    const float *a,
+    const float *p,
+    float *t_P,
+    float *t_P_D_t_A,
+    float *t_P_D_a,
+    float *t_P_D_p,
+    int *status)
+{
+    int all = 0;
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        const int s = rigidsym_c_twist_transfer_with_jacobians_f32(
+            t_A + 6 * i,
+            a + 3 * i,
+            p + 3 * i,
+            t_P + 6 * i,
+            t_P_D_t_A + 36 * i,
+            t_P_D_a + 18 * i,
+            t_P_D_p + 18 * i);
+        if (status)
+            status[i] = s;
+        all |= s;
+    }
+    return all;
 }

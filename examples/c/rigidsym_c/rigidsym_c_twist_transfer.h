@@ -44,6 +44,24 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_f32(
     const float p[3],
     float t_P[6]);
 
+/* The same over n samples, one after the other (no heap, no stack beyond one call's):
+ * each argument and output holds n rows of its per-sample size, row-major ([n][size]);
+ * status[i] (status may be NULL) receives sample i's status; returns their OR. */
+RIGIDSYM_C_API int rigidsym_c_twist_transfer_batch(
+    size_t n,
+    const double *t_A,
+    const double *a,
+    const double *p,
+    double *t_P,
+    int *status);
+RIGIDSYM_C_API int rigidsym_c_twist_transfer_f32_batch(
+    size_t n,
+    const float *t_A,
+    const float *a,
+    const float *p,
+    float *t_P,
+    int *status);
+
 /* twist_transfer_with_jacobians:
  * Twist at P from the twist at A (same body), with the Jacobians of its outputs.
  *
@@ -82,6 +100,30 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_with_jacobians_f32(
     const float a[3],
     const float p[3],
     float t_P[6],    float t_P_D_t_A[36],    float t_P_D_a[18],    float t_P_D_p[18]);
+
+/* The same over n samples, one after the other (no heap, no stack beyond one call's):
+ * each argument and output holds n rows of its per-sample size, row-major ([n][size]);
+ * status[i] (status may be NULL) receives sample i's status; returns their OR. */
+RIGIDSYM_C_API int rigidsym_c_twist_transfer_with_jacobians_batch(
+    size_t n,
+    const double *t_A,
+    const double *a,
+    const double *p,
+    double *t_P,
+    double *t_P_D_t_A,
+    double *t_P_D_a,
+    double *t_P_D_p,
+    int *status);
+RIGIDSYM_C_API int rigidsym_c_twist_transfer_with_jacobians_f32_batch(
+    size_t n,
+    const float *t_A,
+    const float *a,
+    const float *p,
+    float *t_P,
+    float *t_P_D_t_A,
+    float *t_P_D_a,
+    float *t_P_D_p,
+    int *status);
 
 RIGIDSYM_C_END_DECLS
 
