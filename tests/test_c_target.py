@@ -596,3 +596,33 @@ KERNELS = [Kernel(name="angular_rate", summary="s", formula="w = v / r", ids=("x
     cdir = tmp_path / "c"
     assert main(["generate", "--target", "c", "--module", str(mod), "--out", str(cdir)]) == 0
     assert "Singular set: r = 0" in (cdir / "rigidsym_c_angular_rate.h").read_text()
+
+
+@pytest.mark.slow
+@needs_gcc
+def test_single_header_builds_in_c_and_cpp_and_guards_only_the_implementation(tmp_path):
+    """--single-header: one file; the implementing C file stops under -Ofast, an
+    application (C++, -Ofast) includes it freely, and the program matches NumPy."""
+    from rigidsym.cli import main
+
+    out = tmp_path / "k"
+    assert main(["generate", "--target", "c", *EXAMPLE_ARGS, "--single-header", "--out",
+                 str(out)]) == 0
+    impl = tmp_path / "impl.c"
+    impl.write_text('#define RIGIDSYM_C_IMPLEMENTATION\n#include "rigidsym_c_single.h"\n')
+    bad = subprocess.run([GCC, *STRICT, "-Ofast", "-I", str(out), "-c", str(impl), "-o",
+                          str(tmp_path / "bad.o")], capture_output=True, text=True)
+    assert bad.returncode != 0 and "-ffast-math" in bad.stderr
+    subprocess.run([GCC, *STRICT, "-O2", "-I", str(out), "-c", str(impl), "-o",
+                    str(tmp_path / "impl.o")], check=True)
+    main_cpp = tmp_path / "main.c"
+    main_cpp.write_text((EXAMPLE / "main.c").read_text().replace('"rigidsym_c.h"',
+                                                                '"rigidsym_c_single.h"'))
+    exe = tmp_path / "app"
+    cxx = shutil.which("g++")
+    if cxx is None:
+        pytest.skip("g++ is not installed")
+    subprocess.run([cxx, "-std=c++11", "-Wall", "-Wextra", "-Werror", "-pedantic", "-Ofast",
+                    "-I", str(out), "-x", "c++", str(main_cpp), "-x", "none",
+                    str(tmp_path / "impl.o"), "-o", str(exe), "-lm"], check=True)
+    assert_matches(run_example(exe), expected())

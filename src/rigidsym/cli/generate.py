@@ -29,6 +29,9 @@ def _generate_args(p) -> None:
     p.add_argument("--kernel", action="append", metavar="NAME",
                    help="with --target c: a book kernel to include (repeatable; default: "
                         "every book kernel when no --module is given, none otherwise)")
+    p.add_argument("--single-header", action="store_true",
+                   help="with --target c: also write rigidsym_c_single.h, every kernel in "
+                        "one self-contained header (default: off)")
 
 
 def cmd_generate(args) -> int:
