@@ -626,3 +626,66 @@ def test_single_header_builds_in_c_and_cpp_and_guards_only_the_implementation(tm
                     "-I", str(out), "-x", "c++", str(main_cpp), "-x", "none",
                     str(tmp_path / "impl.o"), "-o", str(exe), "-lm"], check=True)
     assert_matches(run_example(exe), expected())
+
+
+#: book kernels with branches, removable quotients, compensated products, atan2 and roots
+HARD_KERNELS = ["screw_of_displacement", "rotation_vector_from_rotation",
+                "exponential_coordinates_left_jacobian", "euler_rodrigues_from_rotation",
+                "instant_screw_axis", "natural_invariants_from_rotation"]
+
+
+@pytest.mark.slow  # generation: about 40 s of CPU
+@needs_gcc
+def test_hard_book_kernels_equal_the_package_kernels(tmp_path):
+    """The C target of kernels with branches, removable quotients and singular sets: the
+    double functions give the package's bits at random valid inputs (the same program,
+    without FMA), the float ones agree within 16 u of float32 (inputs rounded too), the
+    Jacobian twins build, and a pure translation is flagged singular with NaN outputs."""
+    import json
+
+    from rigidsym import kernels as K
+    from rigidsym.cli import main
+
+    out = tmp_path / "k"
+    args = [a for n in HARD_KERNELS for a in ("--kernel", n)]
+    assert main(["generate", "--target", "c", *args, "--out", str(out)]) == 0
+    so = tmp_path / "lib.so"
+    subprocess.run([GCC, *STRICT, "-Wdouble-promotion", "-O2", "-shared", "-fPIC",
+                    *map(str, sorted(out.glob("*.c"))), "-o", str(so), "-lm"], check=True)
+    clib = ctypes.CDLL(str(so))
+    meta = {k["name"]: k for k in
+            json.loads((REPO / "generated" / "kernels.json").read_text())["kernels"]}
+    rng = np.random.default_rng(53)
+
+    def value(a):
+        shape = tuple(a["shape"])
+        if a["kind"] == "rotation":
+            e = rng.normal(size=3)
+            return np.asarray(K.rotation_from_natural_invariants(e / np.linalg.norm(e),
+                                                                 rng.uniform(-3, 3)))
+        if a["kind"] == "unit":
+            v = rng.normal(size=shape)
+            return v / np.linalg.norm(v)
+        return float(rng.uniform(-2, 2)) if shape == () else rng.normal(size=shape)
+
+    for name in HARD_KERNELS:
+        m = meta[name]
+        outs = [("out", max(1, int(np.prod(o["shape"])))) for o in m["outputs"]]
+        for _ in range(30):
+            xs = [value(a) for a in m["args"]]
+            s, got = call(clib, f"rigidsym_c_{name}", *xs, *outs)
+            sf, gotf = call(clib, f"rigidsym_c_{name}_f32",
+                            *[x if isinstance(x, float) else np.float32(x) for x in xs],
+                            *outs, dtype=np.float32)
+            want = getattr(K, name)(*xs, check=False)
+            want = list(want) if isinstance(want, tuple) else [want]
+            assert s == 0 and sf == 0, (name, s, sf)
+            for g, gf, w in zip(got, gotf, want, strict=True):
+                w = np.ravel(w)
+                np.testing.assert_array_equal(g, w)
+                assert np.max(np.abs(gf - w)) <= 16 * 2.0**-24 * max(1, np.max(np.abs(w)))
+    m = meta["screw_of_displacement"]
+    s, got = call(clib, "rigidsym_c_screw_of_displacement", np.eye(3), [1.0, 0, 0],
+                  [2.0, 0.5, 0], *[("out", max(1, int(np.prod(o["shape"]))))
+                                   for o in m["outputs"]])
+    assert s & SINGULAR and all(np.isnan(g).all() for g in got)
