@@ -41,9 +41,11 @@ def cmd_generate(args) -> int:
     if getattr(args, "target", "package") == "c":
         from rigidsym.codegen.backends.c.cli import cmd_generate_c
         return cmd_generate_c(args)
-    if getattr(args, "kernel", None):
-        print("error: --kernel: only with --target c", file=sys.stderr)
-        return 2
+    for opt, given in (("--kernel", getattr(args, "kernel", None)),
+                       ("--single-header", getattr(args, "single_header", False))):
+        if given:
+            print(f"error: {opt}: only with --target c", file=sys.stderr)
+            return 2
     if args.module:
         from rigidsym.codegen.usergen import cmd_generate_user
         return cmd_generate_user(args)
