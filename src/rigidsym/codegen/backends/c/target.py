@@ -26,7 +26,7 @@ import jinja2
 import sympy as sp
 
 import rigidsym
-from rigidsym.codegen.backends.c.printer import DoublePrinter, FloatOnlyPrinter
+from rigidsym.codegen.backends.c.printer import DoublePrinter, FloatOnlyPrinter, WidePrinter
 from rigidsym.codegen.cprogram import _balanced, _finite_check, _program_lines
 from rigidsym.codegen.spec import Kernel
 
@@ -49,10 +49,11 @@ STATUS = (
     ("NONFINITE_RESULT", 4, "an output, or a divisor or radicand on the way, is not finite "
                             "(overflow of finite inputs, or a non-finite input)"),
     ("EXTREME_INPUT", 8, "a nonzero input component has magnitude outside [2^-100, 2^101) "
-                         "(double; float: [2^-30, 2^31)): intermediates may have "
-                         "underflowed or overflowed, so the outputs are not guaranteed to "
-                         "the stated bound (the Python package re-runs such samples in a "
-                         "wider type; this C does not)"),
+                         "(double; float: [2^-30, 2^31)) and there is no wider type to "
+                         "re-run the sample in (the double functions re-run it in long "
+                         "double where that is wider, RIGIDSYM_C_WIDE): intermediates may "
+                         "have underflowed or overflowed, so the outputs are not "
+                         "guaranteed to the stated bound"),
 )
 _C_KEYWORDS = set("""auto break case char const continue default do double else enum extern
 float for goto if inline int long register restrict return short signed sizeof static struct
@@ -210,7 +211,18 @@ def _function(kc, ctype: str) -> dict:
             "scan": _padded([f"{a.name}[{j}]" if a.shape else a.name
                              for a in k.args for j in range(a.size)], ctype),
             "slots": slots, "out_check": _balanced([f"({s} - {s})" for s in slots]),
-            "bounded": None if any(v["finite"] for v in variants) else _bounded(kc, ctype)}
+            "bounded": None if any(v["finite"] for v in variants) else _bounded(kc, ctype),
+            "wide": _wide(kc, k) if ctype == "double" else None}
+
+
+def _wide(kc, k: Kernel) -> list[dict]:
+    """The variants of ``kc`` printed in long double (the rescue of extreme inputs)."""
+    variants = _program(kc, WidePrinter(), "long double")
+    for v in variants:
+        v["zero"] = "0.0L"
+        for o in k.outputs:
+            v["finite"] = v["finite"].replace(f"out_{o.name}[", f"{o.name}[")
+    return variants
 
 
 def _kernel_entry(kc) -> dict:
