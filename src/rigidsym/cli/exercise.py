@@ -136,13 +136,17 @@ def _notebook(ex_id: str, path: str, data: dict) -> None:
 
 #: exit codes of ``rigidsym exercise`` (docs/exercise-data.md)
 EXIT_SOLVED, EXIT_ILL_POSED, EXIT_BAD_INPUT, EXIT_INTERNAL = 0, 1, 2, 3
+#: a case the solver does not handle ("not solved for these data: ..."): its limit, not
+#: the data's, so never the code of an ill-posed exercise
+EXIT_NOT_SOLVED = 4
 
 
 def run(args) -> int:
     """Solve chapter-3 exercises with computer algebra (worked solutions, machine-checked).
 
     Exit codes: 0 solved and checked, 1 ill-posed (one sentence says why), 2 bad input
-    (one line names the argument), 3 an internal error (a defect: please report it)."""
+    (one line names the argument), 3 an internal error (a defect: please report it), 4 not
+    solved for these data (a case the solver does not handle; one sentence says which)."""
     try:
         return _run(args)
     except Exception as exc:  # noqa: BLE001 - a defect must never read as an answer
@@ -200,9 +204,12 @@ def _run(args) -> int:
 
 
 def _exit_code(s) -> int:
-    """0 solved and checked, 1 ill-posed; a solution whose own checks fail is a defect."""
+    """0 solved and checked, 1 ill-posed, 4 not solved; a solution whose own checks fail
+    is a defect."""
     if s.status == "ill-posed":
         return EXIT_ILL_POSED
+    if s.status == "not solved":
+        return EXIT_NOT_SOLVED
     if s.checked:
         return EXIT_SOLVED
     failed = [c.name for c in s.checks if not c.passed] or ["no check ran"]

@@ -50,6 +50,12 @@ def to_json_value(v):
     return str(sp.sympify(v))
 
 
+#: the statuses that end a solution before its answers, and how the renderers head them:
+#: ill-posed (the data admit no answer, or more than one) and not solved (a case the
+#: solver does not handle: a limit of the solver, not of the data)
+ENDED = {"ill-posed": "Ill-posed", "not solved": "Not solved for these data"}
+
+
 def solution_record(s) -> dict:
     """A solution as the JSON record of a schema-2 key: ``id``, ``status``, ``data`` (by
     parameter name, exact strings), ``tol``, ``answers`` (sympy values as strings),
@@ -150,8 +156,8 @@ def render_text(s: Solution) -> str:
         out.append(f"  Step {i}. {st.name}: {st.why}")
         out += ["      " + ln for ln in _pretty(st.expr).splitlines()]
     out.append("")
-    if s.status == "ill-posed":
-        out += [f"Ill-posed: {s.reason}", "", "status: ill-posed; checked: false"]
+    if s.status in ENDED:
+        out += [f"{ENDED[s.status]}: {s.reason}", "", f"status: {s.status}; checked: false"]
         return "\n".join(out)
     out.append("Answers:")
     for k, v in s.answers.items():
@@ -191,8 +197,8 @@ def render_markdown(s: Solution, *, level: int = 2, statement: bool = True,
     if statement:
         out += [f"> {s.statement}", ""]
     out += [f"**Status:** {s.status}; **checked:** {str(s.checked).lower()}", ""]
-    if s.status == "ill-posed":
-        out[-2:] = [f"**Status:** ill-posed: {s.reason}", ""]
+    if s.status in ENDED:
+        out[-2:] = [f"**Status:** {s.status}: {s.reason}", ""]
     if s.assumptions:
         out.append("**Assumptions**")
         out += [f"- {a}" for a in s.assumptions] + [""]
@@ -203,8 +209,8 @@ def render_markdown(s: Solution, *, level: int = 2, statement: bool = True,
     out.append("")
     for i, st in enumerate(s.steps, 1):
         out += [f"{i}. *{st.name}*: {st.why}", "", f"   {_latex(st.expr)}", ""]
-    if s.status == "ill-posed":
-        out += [f"**Ill-posed:** {s.reason}", ""]
+    if s.status in ENDED:
+        out += [f"**{ENDED[s.status]}:** {s.reason}", ""]
         return "\n".join(out)
     out.append("**Answers**")
     out.append("")
@@ -299,8 +305,8 @@ def render_latex(s: Solution) -> str:
     out += [f"\\item \\textit{{{_tex(st.name)}}}: {_tex(st.why)} {_tex_value(st.expr)}"
             for st in s.steps]
     out += ["\\end{enumerate}"]
-    if s.status == "ill-posed":
-        return "\n".join(out + [f"\\paragraph{{Ill-posed}} {_tex(s.reason)}"])
+    if s.status in ENDED:
+        return "\n".join(out + [f"\\paragraph{{{ENDED[s.status]}}} {_tex(s.reason)}"])
     out += ["\\paragraph{Answers}", "\\begin{itemize}"]
     out += [f"\\item \\texttt{{{_tex(k)}}} = {_tex_value(v)}" for k, v in s.answers.items()]
     out += ["\\end{itemize}", "\\paragraph{Machine checks}", "\\begin{itemize}"]
