@@ -49,7 +49,9 @@ def add_arguments(p) -> None:
     p.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
                    help="a datum of the exercise (repeatable): n_1=0,0,5 (a vector), "
                         "I_A='1,0,0;0,2,0;0,0,3' (a matrix, rows split by ;), a=0.05; "
-                        "values are exact: 5/3, 0.1 (= 1/10), sqrt(3)/2")
+                        "values are exact: 5/3, 0.1 (= 1/10), sqrt(3)/2; a unit after a "
+                        "space applies to every entry: 'd=0,0,100 mm', '30 deg', 'N m' "
+                        "(a bare number is in the unit --parameters lists)")
     p.add_argument("--data", metavar="FILE.json",
                    help="the data as a JSON object {name: value}; JSON numbers with a "
                         "decimal point are floats, read as measurements; strings are exact")
@@ -87,7 +89,10 @@ def parse_value(ex_id: str, name: str, text: str):
     exercise's parameters)."""
     from rigidsym.checking.worked import parameters
     from rigidsym.checking.worked.worked_numbers import split_text
+    from rigidsym.checking.worked.worked_units import split_unit
 
+    if split_unit(text)[1] is not None:
+        return text.strip()   # a unit for every entry: solve() splits and converts
     try:
         shape = parameters(ex_id)[name].shape
     except KeyError:
@@ -250,7 +255,9 @@ def _solve_one(ex_id: str, data: dict):
 
     # bad data is one error line, before any progress line
     rest = {k: v for k, v in data.items() if k != "tol"}
-    read_data(parameters(ex_id), rest, data.get("tol"))
+    for note in read_data(parameters(ex_id), rest, data.get("tol")).notes:
+        if note.startswith("Warning: "):
+            print(f"rigidsym: warning: {note[len('Warning: '):]}", file=sys.stderr)
     with Reporter("rigidsym exercise") as rep, \
             rep.phase(f"solving exercise {ex_id[2:]}") as ph:
         s = solve(ex_id, **data)

@@ -298,7 +298,7 @@ def parameters(ex_id: str) -> Parameters:
         "no numeric data: the exercise is stated for every body, line or motion, so "
         "there is nothing to vary")
     return Parameters(ex_id, rows, note, bool(getattr(mod, "MEASURED", False)),
-                      getattr(mod, "default_tol", None))
+                      getattr(mod, "default_tol", None), tuple(getattr(mod, "READINGS", ())))
 
 
 #: CPU seconds one exact solve may take before its data are refused (a student's exact data
