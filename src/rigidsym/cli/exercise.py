@@ -204,8 +204,49 @@ def _run(args) -> int:
     if to_stdout:
         sys.stdout.write(doc)
     else:
-        print(render_text(s))
+        print(render_text(s, ascii_only=_ascii(args)))
     return _exit_code(s)
+
+
+def _ascii(args) -> bool:
+    """Whether the output is plain ASCII (``--ascii`` in either place, RIGIDSYM_ASCII, or
+    a terminal that cannot show Unicode: stdout is then an ASCII stream)."""
+    from rigidsym.printing.ascii import AsciiStream
+
+    return bool(getattr(args, "ascii", False)) or isinstance(sys.stdout, AsciiStream)
+
+
+def answers_text(s) -> str:
+    """The answers of a solution, one ``name = value`` per answer in sympy's one-line form
+    (with a float beside an exact number), lines of at most 100 columns, indented; or the
+    reason of an ill-posed or not solved one."""
+    import textwrap
+
+    import sympy as sp
+
+    from rigidsym.checking.worked.worked_render import display
+
+    if s.status != "solved":
+        return textwrap.fill(s.reason, 100, initial_indent="    ", subsequent_indent="      ")
+    out = []
+    for k, v in s.answers.items():
+        def listed(m):      # a column as one list, a matrix as a list of rows
+            return m.T.tolist()[0] if m.cols == 1 else m.tolist()
+
+        shown = display(v)
+        text = (v if isinstance(v, str) else sp.sstr(listed(shown))
+                if isinstance(v, sp.MatrixBase) else sp.sstr(shown))
+        if isinstance(v, sp.Basic | sp.MatrixBase) and not isinstance(v, str):
+            try:
+                approx = sp.N(v, 6)
+                approx = sp.sstr(listed(approx) if isinstance(v, sp.MatrixBase) else approx)
+            except Exception:  # noqa: BLE001 - sympy's N refuses booleans and sets variously
+                approx = text
+            if approx != text and not (isinstance(v, sp.Basic) and v.free_symbols):
+                text += f"  (~ {approx})"
+        out.append(textwrap.fill(f"{k} = {text}", 100, initial_indent="    ",
+                                 subsequent_indent="        ", break_on_hyphens=False))
+    return "\n".join(out)
 
 
 def _exit_code(s) -> int:
@@ -281,8 +322,8 @@ def _run_all(ids, fmt: str, json_path: str | None) -> int:
             n_ok += ok
             ph.advance(1, label=f"exercise {i[2:]} {s.status}")
             if fmt == "plain":
-                print(f"{s.id:7s} {s.status:8s} checked={str(s.checked).lower():5s} {s.title}",
-                      flush=True)
+                print(f"{s.id:7s} {s.status:8s} checked={str(s.checked).lower():5s} {s.title}")
+                print(answers_text(s), flush=True)
         ph.finish(f"{n_ok} / {len(ids)} solved and checked")
     if json_path or fmt == "json":
         doc = to_json(ids)  # from the solutions just cached
