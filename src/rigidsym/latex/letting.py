@@ -24,10 +24,11 @@ from rigidsym.checking.deciding.errors import BadInput
 from rigidsym.checking.deciding.registry import Rel, Statement
 from rigidsym.latex import guards
 from rigidsym.latex.bookrules import SETS
+from rigidsym.latex.declgraph import glyph_keys, model_order
 from rigidsym.latex.glyphrows import _Reader, _symbol
 from rigidsym.latex.lending import lent
 from rigidsym.latex.lets import KIND_WORDS, Let, kind_of, read_lets
-from rigidsym.latex.shapes import _shape
+from rigidsym.latex.shapes import LatexError, _shape
 from rigidsym.latex.table import Glyph
 from rigidsym.printing import notation
 
@@ -146,25 +147,62 @@ def read_statement(latex: str, lets: list[Let], book: str | None = None,
     defines = tuple(r.lhs.name for r in printed) if kind == "definition" else ()
     text = "; ".join(f"{notation.text(r.lhs)} {'≡' if kind == 'definition' else '='} "
                      f"{notation.text(r.rhs)}" for r in printed)
-    notes += parsed.readings
+    notes += rd.notes + parsed.readings
     st = Statement(printed, model, defines=defines, from_latex=True)
     return Reading(st, kind, text, notes, free)
 
 
+def _is_function(x: Let) -> bool:
+    return bool(x.params) and x.params != ("t",)  # X(t) = ...: a model in time
+
+
 def _read_models(rd: _Reader, lets: list[Let], values: dict) -> set[str]:
-    """The ``NAME = LATEX`` models into ``values``; the glyphs they use."""
-    occurs: set[str] = set()
+    """The ``NAME = LATEX`` models into ``values`` and the ``NAME(params) = LATEX``
+    functions into the reader, each after the models it mentions (issue 52: any order of
+    the ``--let``s reads the same); the glyphs they use."""
+    mentions = {}
     for x in lets:
         if x.latex:
-            p = rd.parse(f"{x.name} = {x.latex}", f"--let '{x.text}'")
-            if len(p.chains) != 1 or len(p.chains[0]) != 2:
-                raise BadInput(f"--let '{x.text}': expected NAME = one expression")
-            occurs |= set(p.glyphs) - {x.key}  # its own NAME is no occurrence
-            rhs = p.chains[0][1]
-            g = Glyph(x.key, "*", rd._name(x.key), _shape(rhs) or (), "model", "--let model")
-            rd.over[x.key] = g
-            values[_symbol(g)] = rhs
+            try:
+                mentions[x.key] = glyph_keys(x.latex) - set(x.param_keys)
+            except LatexError:
+                mentions[x.key] = set()  # the parse below says why
+    occurs: set[str] = set()
+    for x in model_order(lets, mentions):
+        occurs |= mentions[x.key] | set(x.param_keys)
+        if _is_function(x):
+            rd.add_function(x)
+            _function_model(rd, x, values)
+            continue
+        p = rd.parse(f"{x.name} = {x.latex}", f"--let '{x.text}'")
+        if len(p.chains) != 1 or len(p.chains[0]) != 2:
+            raise BadInput(f"--let '{x.text}': expected NAME = one expression")
+        occurs |= set(p.glyphs) - {x.key}  # its own NAME is no occurrence
+        rd.model_readings(x, p.readings)
+        rhs = p.chains[0][1]
+        g = Glyph(x.key, "*", rd._name(x.key), _shape(rhs) or (), "model", "--let model")
+        rd.over[x.key] = g
+        values[_symbol(g)] = rhs
     return occurs
+
+
+def _function_model(rd: _Reader, x: Let, values: dict) -> None:
+    """A function of scalar parameters (``R(\\theta) = e^{[\\hat\\omega]\\theta}``) is
+    also the model of its NAME, as before issue 52 (``R`` alone is ``R(θ)``); one of a
+    vector or matrix is a function only (``S`` alone is refused)."""
+    try:
+        p = rd.parse(f"{x.name} = {x.latex}", f"--let '{x.text}'", record=False)
+    except LatexError:
+        return
+    if any(p.glyphs.get(k) is None or p.glyphs[k].shape for k in x.param_keys) \
+            or len(p.chains) != 1 or len(p.chains[0]) != 2:
+        return
+    rd.used.update(p.glyphs)
+    rd.glyphs.update(p.glyphs)
+    rhs = p.chains[0][1]
+    g = Glyph(x.key, "*", rd._name(x.key), _shape(rhs) or (), "model", "--let model")
+    rd.over[x.key] = g
+    values[_symbol(g)] = rhs
 
 
 def _glyph_values(rd: _Reader, lend: dict, values: dict) -> tuple[list[str], list[str]]:

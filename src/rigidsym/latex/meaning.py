@@ -60,10 +60,35 @@ class MeaningRules:
     def __init__(self, *args, **kwargs):
         super().__init__(*args, **kwargs)
         self.applied: dict[str, list] = {}
+        self.functions: dict = {}  # key -> expand(args) -> (value, params): --let functions
+
+    def apply_many(self, items):
+        """``glyph ( a, b, ... )`` with an optional power: a ``--let`` function of several
+        parameters (issue 52), never a product."""
+        f, sup = items[0], (items[-1] if isinstance(items[-1], str) else None)
+        args = [_as_scalar(self._val(a)) for a in (items[1:-1] if sup is not None else items[1:])]
+        if f.key not in self.functions:
+            raise LatexError(f"{f.key}({', '.join(['...'] * len(args))}): {f.key} is applied to "
+                             f"{len(args)} arguments but no --let declares it a function: "
+                             f"--let '{f.key}(a, b, ...) = LATEX'", "function")
+        v = self._expand(f.key, args)
+        return self.power([v, sup]) if sup is not None else v
+
+    def _expand(self, key, args):
+        from rigidsym.printing import notation
+
+        v, params = self.functions[key](args)
+        said = ", ".join(f"{p} = {notation.text(a)}" for p, a in zip(params, args, strict=True))
+        self._note(f"{key}({', '.join(notation.text(a) for a in args)}): the --let function "
+                   f"{key}({', '.join(params)}) at {said}")
+        return v
 
     def apply(self, items):
         """``glyph ( expr )`` with an optional power after the parenthesis."""
         f, arg, sup = items[0], items[1], (items[2] if len(items) > 2 else None)
+        if getattr(f, "key", None) in self.functions:  # a --let function (issue 52)
+            v = self._expand(f.key, [_as_scalar(self._val(arg))])
+            return self.power([v, sup]) if sup is not None else v
         fv, x = self._val(f), _as_scalar(self._val(arg))
         if self.reader and _shape(fv) is not None and _shape(x) is None and x is not _TIME:
             from rigidsym.printing import notation
