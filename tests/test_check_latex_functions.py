@@ -185,3 +185,39 @@ def test_a_reading_inside_a_model_is_printed():
                              let=[r"\mathbf{N} = [\mathbf{g}]"], repairs=False)
     assert any(n.startswith(r"in --let '\mathbf{N} = [\mathbf{g}]': [x] of a 3-vector")
                for n in r.model), r.model
+
+
+# ------------------------------------------- readings enumerated and agreed (issue 52, item 2)
+ROD = [r"\mathbf{e}: unit vector; \theta: angle", r"\mathbf{g} = \tan\frac{\theta}{2}\mathbf{e}",
+       r"R = \cos\theta\,I_{3\times3} + (1-\cos\theta)\mathbf{e}\mathbf{e}^T"
+       r" - \sin\theta[\mathbf{e}]_\times"]
+
+
+@pytest.mark.parametrize("sign, verdict", [("-", "verified"), ("+", "does-not-hold")])
+def test_a_model_applied_to_a_vector_keeps_the_reading_that_type_checks(sign, verdict):
+    # R a model without parameters: R(g) a product R g (3-vector) or R applied to g; only
+    # the application type-checks against a 3x3 side. On main: R g, "shape mismatch"
+    r = rigidsym.check_latex(r"R(\mathbf{g}) = " + _gibbs(sign), let=ROD, repairs=False)
+    assert r.verdict == verdict, r.detail
+    assert "R(g): read as R applied to g (a choice: or the product R g)" in r.model, r.model
+    assert any(n.startswith("not read as R(...) a product: the two sides differ in shape")
+               for n in r.model), r.model
+
+
+def test_readings_that_agree_give_the_verdict_and_say_so():
+    r = rigidsym.check_latex(r"\det(A(R)) = 1", let=["A = R", "R: rotation"], repairs=False)
+    assert r.verdict == "verified"
+    assert any("2 readings type-check" in n and "all verified" in n for n in r.model), r.model
+
+
+def test_readings_that_disagree_are_refused_naming_the_choice(capsys):
+    args = ["--latex", r"A(\mathbf{B}) = \mathbf{B}^T", "--let", r"A = \mathbf{B}^T",
+            "--let", r"\mathbf{B}: matrix"]
+    code, out, err = _cli(capsys, *args)
+    assert code == 2, out + err
+    assert "A(...) can be read as a product or as A applied" in err + out
+    assert "A(...) a product: does-not-hold; A(...) applied: verified" in err + out
+    # the --let the message names settles it
+    code, out, err = _cli(capsys, "--latex", r"A(\mathbf{B}) = \mathbf{B}^T", "--let",
+                          r"A(\mathbf{C}) = \mathbf{C}^T", "--no-repairs")
+    assert code == 0, out + err

@@ -342,9 +342,34 @@ def _check_latex(latex, let, book, modules, repairs=True, repair_budget=None, no
     _repair_args(repairs, repair_budget)
     eq, reading = declare_latex(latex, let, book=book, modules=modules, notation=notation)
     r = Result.of(_check(eq, repairs=repairs, repair_budget=repair_budget))
+    if reading.others:  # several readings type-check: a verdict only when all agree
+        _readings_agree(reading, r, [_check(o.eq, repairs=False) for o in reading.others])
     r.expected = r.verdict
     r.model = list(r.model) + reading.notes
     return r, reading
+
+
+def _readings_agree(reading, first, others) -> None:
+    """Issue 52, item 2: the verdict of every reading that type-checks, or bad input naming
+    the choice, each reading's verdict and the ``--let`` that settles it."""
+    from rigidsym.checking.deciding.errors import BadInput
+    from rigidsym.latex.letting import _said
+
+    verdicts = [first.verdict] + [o.verdict for o in others]
+    readings = [reading, *reading.others]
+    if len(set(verdicts)) == 1:
+        reading.notes.append(f"{len(readings)} readings type-check "
+                             f"({' | '.join(_said(x.choices) for x in readings)}): all "
+                             f"{verdicts[0]}")
+        return
+    keys = sorted({k for x in readings for k, c in x.choices.items()
+                   if c != reading.choices.get(k)})
+    said = "; ".join(f"{_said(x.choices)}: {v}" for x, v in zip(readings, verdicts, strict=True))
+    k = keys[0] if keys else "X"
+    raise BadInput(f"--latex: {', '.join(f'{x}(...)' for x in keys)} can be read as a product or "
+                   f"as {k} applied to its argument, and the readings disagree ({said}): say "
+                   f"which, with a --let function (--let '{k}(PARAM) = LATEX': an application) "
+                   f"or by writing the product without parentheses")
 
 
 def verify(ids: Sequence[str] | str | None = None, sections: Sequence[str] | str | None = None,

@@ -45,6 +45,8 @@ class _Reader:
         self.in_models: set[str] = set()  # the glyphs of the notation's models used
         self.functions: dict[str, Let] = {}  # the --let functions by key (issue 52)
         self.expanders: dict = {}  # key -> expand(args) for the parser
+        self.choices: dict[str, str] = {}  # X(y): "product" or "apply" (issue 52, item 2)
+        self.choice_points: dict[str, str] = {}  # the X(y) met, by key: the argument
         for x in lets + [x for x in (notation.lets if notation else ())
                          if x.kind and x.key not in self.declared]:
             if x.kind:
@@ -114,8 +116,9 @@ class _Reader:
         for _ in range(4):
             try:
                 p = parse_latex(text, self.book, {**self.over, **(over or {})}, reader=True,
-                                functions=self.expanders)
+                                functions=self.expanders, choices=self.choices)
             except LatexError as exc:
+                self.choice_points.update(getattr(exc, "choice_points", {}))
                 extra = self._extra(exc.glyphs) if exc.construct == "shapes" else {}
                 extra = {k: g for k, g in extra.items() if k not in (over or {})}
                 if extra:
@@ -124,6 +127,7 @@ class _Reader:
                 raise self._hint(exc, what) from None
             extra = {k: g for k, g in self._extra(p.glyphs).items() if k not in (over or {})}
             if not extra:
+                self.choice_points.update(p.choice_points)
                 if record:
                     self.used.update(p.glyphs)
                     self.glyphs.update(p.glyphs)

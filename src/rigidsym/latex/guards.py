@@ -142,7 +142,8 @@ def applications(applied: dict, models: dict, glyphs: dict) -> None:
                            f"it depends on {notation.text(arg)} is unknown (read as {key} "
                            f"itself it would be a guess): give its model, e.g. --let "
                            f"'{key} = LATEX' in {notation.text(arg)}")
-        if not (_names(arg) <= _through(model, models)):
+        if not (_names(arg) <= _through(model, models)
+                or _through(arg, models) - set(models) & _through(model, models)):
             raise BadInput(f"--latex: {key}({notation.text(arg)}): the model of {key} does not "
                            f"depend on {notation.text(arg)}; write the model in "
                            f"{notation.text(arg)} (--let '{key} = ...')")

@@ -44,6 +44,8 @@ class Parsed:
         glyphs: the glyph-table rows used, by LaTeX key.
         applied: the non-scalar symbols read as applied to a parenthesised scalar
             (``R(\\theta)``), by LaTeX key: the arguments (``rigidsym.latex.meaning``).
+        choice_points: the symbols ``X`` of ``X(y)`` that no rule reads (a model applied to
+            no scalar: a product or an application; issue 52), by key: the argument.
     """
 
     chains: list = field(default_factory=list)
@@ -52,6 +54,7 @@ class Parsed:
     readings: list = field(default_factory=list)
     glyphs: dict = field(default_factory=dict)
     applied: dict = field(default_factory=dict)  # R(\theta): key -> arguments (latex.meaning)
+    choice_points: dict = field(default_factory=dict)  # X(y) product or application (issue 52)
 
     def pairs(self):
         """Every pair ``(chain, i, j, E_i, E_j)`` with ``i < j`` of a chain: each is a

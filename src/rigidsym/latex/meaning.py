@@ -61,6 +61,8 @@ class MeaningRules:
         super().__init__(*args, **kwargs)
         self.applied: dict[str, list] = {}
         self.functions: dict = {}  # key -> expand(args) -> (value, params): --let functions
+        self.choices: dict[str, str] = {}  # key -> "product" | "apply" (issue 52, item 2)
+        self.choice_points: dict[str, str] = {}  # key -> its argument, as read
 
     def apply_many(self, items):
         """``glyph ( a, b, ... )`` with an optional power: a ``--let`` function of several
@@ -90,6 +92,9 @@ class MeaningRules:
             v = self._expand(f.key, [_as_scalar(self._val(arg))])
             return self.power([v, sup]) if sup is not None else v
         fv, x = self._val(f), _as_scalar(self._val(arg))
+        if self.reader and _shape(fv) is not None and _shape(x) is not None \
+                and getattr(self.overrides.get(f.key), "kind", None) == "model":
+            return self._choose(f, fv, x, arg, sup)
         if self.reader and _shape(fv) is not None and _shape(x) is None and x is not _TIME:
             from rigidsym.printing import notation
 
@@ -99,6 +104,28 @@ class MeaningRules:
                        f"scalar): {f.key} itself, depending on {a} as its model says")
             return self.power([fv, sup]) if sup is not None else fv
         if sup is not None:  # a(b + c)^2: the power binds to the parenthesis
+            arg = self.power([arg, sup])
+        return self.mul([f, arg])
+
+    def _choose(self, f, fv, x, arg, sup):
+        """``X(\\mathbf{y})``, ``X`` a model without parameters, ``\\mathbf{y}`` no scalar:
+        a product ``X y`` or ``X`` applied to ``y``; no rule settles it (issue 52, item 2).
+        The reading follows ``self.choices[key]`` (``"product"`` unless told): the reader
+        reads the statement once per choice and keeps those that type-check
+        (:mod:`rigidsym.latex.letting`), the checker decides each."""
+        from rigidsym.printing import notation
+
+        how = self.choices.get(f.key, "product")
+        self.choice_points.setdefault(f.key, notation.text(x))
+        a = notation.text(x)
+        if how == "apply":
+            self.applied.setdefault(f.key, []).append(x)
+            self._note(f"{f.key}({a}): read as {f.key} applied to {a} (a choice: or the "
+                       f"product {f.key} {a})")
+            return self.power([fv, sup]) if sup is not None else fv
+        self._note(f"{f.key}({a}): read as the product {f.key} {a} (a choice: or {f.key} "
+                   f"applied to {a})")
+        if sup is not None:
             arg = self.power([arg, sup])
         return self.mul([f, arg])
 

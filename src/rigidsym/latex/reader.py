@@ -15,7 +15,7 @@ __all__ = ["parse_latex"]
 
 def parse_latex(latex: str, section: str | None = "*", overrides: dict | None = None,
                 block_rows: bool = False, reader: bool = False,
-                functions: dict | None = None) -> Parsed:
+                functions: dict | None = None, choices: dict | None = None) -> Parsed:
     """Parse a LaTeX statement into relations of book symbols.
 
     Args:
@@ -32,6 +32,8 @@ def parse_latex(latex: str, section: str | None = "*", overrides: dict | None = 
             identity, an identity is sized by its neighbours (``rigidsym.latex.vocab``).
         functions: the ``--let`` functions by LaTeX key (issue 52): ``expand(args)`` gives
             ``(value, parameter names)``, the body with the arguments substituted.
+        choices: how to read each choice point by key (``{"R": "apply"}``; issue 52): ``X(y)``
+            with ``X`` a model and ``y`` no scalar, a product unless told.
 
     Returns:
         A :class:`Parsed`.
@@ -48,15 +50,17 @@ def parse_latex(latex: str, section: str | None = "*", overrides: dict | None = 
     build = _Build(section, overrides or {}, block_rows, reader)
     build.braces = []
     build.functions = functions or {}
+    build.choices = choices or {}
     try:
         stmts = build.transform(tree)
     except lark.exceptions.VisitError as exc:
         if isinstance(exc.orig_exc, LatexError):
             exc.orig_exc.glyphs = dict(build.glyphs)  # those read before it: for hints
+            exc.orig_exc.choice_points = dict(build.choice_points)  # issue 52
             raise exc.orig_exc from None
         raise LatexError(f"cannot read {latex!r}: {exc.orig_exc}", "shapes") from None
     out = Parsed(readings=build.readings, glyphs=build.glyphs,
-                 applied=build.applied)
+                 applied=build.applied, choice_points=build.choice_points)
     for st in stmts:
         _, exprs, ops = st
         exprs = [_as_scalar(_value(e)) for e in exprs]
