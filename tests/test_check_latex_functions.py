@@ -221,3 +221,41 @@ def test_readings_that_disagree_are_refused_naming_the_choice(capsys):
     code, out, err = _cli(capsys, "--latex", r"A(\mathbf{B}) = \mathbf{B}^T", "--let",
                           r"A(\mathbf{C}) = \mathbf{C}^T", "--no-repairs")
     assert code == 0, out + err
+
+
+# --------------------------------------------------- the constructs of item 4 (issue 52)
+@pytest.mark.parametrize("latex, lets, verdict", [
+    # Markley-Crassidis' vector part q_{1:3} (on main: "unexpected ':'")
+    (r"\mathbf{q}_{1:3}^T\mathbf{q}_{1:3} + q_4^2 = 1",
+     [r"\mathbf{q}: unit 4-vector", r"q_4 = \mathbf{q}_{4:4}"], "verified"),
+    (r"\mathbf{q}_{1:3}^T\mathbf{q}_{1:3} = 1", [r"\mathbf{q}: unit 4-vector"], "does-not-hold"),
+    (r"\mathbf{q}_{1:3} = \mathbf{v}", [r"\mathbf{q} = \begin{bmatrix}\mathbf{v}\\ 1"
+                                        r"\end{bmatrix}"], "verified"),
+    # |a| of a vector its length, of a scalar its absolute value (on main: "unexpected '|'")
+    (r"|\mathbf{a}| = 1", [r"\mathbf{a}: unit vector"], "verified"),
+    (r"|\mathbf{a}|^2 = \mathbf{a}^T\mathbf{a}", [r"\mathbf{a}: vector"], "verified"),
+    (r"|\mathbf{a}|^2 = 2\mathbf{a}^T\mathbf{a}", [r"\mathbf{a}: vector"], "does-not-hold"),
+    (r"|x|^2 = x^2", [], "verified"),
+    # Tsai's \$ for a screw, a name (on main: "unknown macro \$")
+    (r"\$^T\$ = \mathbf{s}^T\mathbf{s} + \mathbf{s}_0^T\mathbf{s}_0",
+     [r"\$ = \begin{bmatrix}\mathbf{s}\\ \mathbf{s}_0\end{bmatrix}"], "verified"),
+    # a starred, left-indexed name in a --let (on main: "X^{*} is Featherstone's dual ...")
+    (r"({}^{B}\mathbf{X}_{A}^{*})^T{}^{B}\mathbf{X}_{A} = \mathbf{1}",
+     [r"{}^{B}\mathbf{X}_{A}^{*} = {}^{B}\mathbf{X}_{A}^{-T}",
+      r"{}^{B}\mathbf{X}_{A}: spatial transform"], "verified"),
+])
+def test_slices_bars_dollar_and_starred_names(latex, lets, verdict):
+    r = rigidsym.check_latex(latex, let=lets, repairs=False)
+    assert r.verdict == verdict, r.detail
+
+
+@pytest.mark.parametrize("latex, lets, match", [
+    (r"\mathbf{q}_{1:5} = \mathbf{v}", [r"\mathbf{q}: unit 4-vector"], "entries 1 to 5"),
+    (r"x_{1:2} = 1", [], "which is no vector"),
+    (r"|\mathbf{A}| = 1", [], r"write \\det"),
+    (r"\mathbf{J} = \int_0^1 \mathbf{C}^\alpha d\alpha", [r"\mathbf{C}: rotation"],
+     "does not integrate or sum"),
+])
+def test_what_item_4_refuses_it_refuses_with_a_reason(latex, lets, match):
+    with pytest.raises(LatexError, match=match):
+        rigidsym.check_latex(latex, let=lets)

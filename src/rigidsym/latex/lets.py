@@ -156,6 +156,9 @@ def _key(name: str, decl: str) -> str:
     """The glyph key of a NAME (``\\mathbf Q`` -> ``\\mathbf{Q}``)."""
     if not name:
         raise BadInput(f"--let '{decl}': expected a NAME before ':' or '='")
+    star = re.fullmatch(r"(.*?)\s*\^\s*(?:\*|\{\s*\*\s*\}|\\ast|\{\s*\\ast\s*\})", name)
+    if star and star.group(1):  # {}^B X_A^{*}: a starred name of its own (issue 52)
+        return _key(star.group(1), decl) + "^{*}"
     try:
         p = parse_latex(f"{name} = 0", None)
     except LatexError as exc:

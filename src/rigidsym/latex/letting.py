@@ -232,7 +232,7 @@ def _read(rd: _Reader, latex: str, lets: list[Let], lend: dict, table) -> Readin
     defines = tuple(r.lhs.name for r in printed) if kind == "definition" else ()
     text = "; ".join(f"{notation.text(r.lhs)} {'≡' if kind == 'definition' else '='} "
                      f"{notation.text(r.rhs)}" for r in printed)
-    notes += rd.notes + parsed.readings
+    notes += list(dict.fromkeys(rd.notes + parsed.readings))  # each reading once
     st = Statement(printed, model, defines=defines, from_latex=True)
     return Reading(st, kind, text, notes, free,
                    choices={k: rd.choices.get(k, "product") for k in rd.choice_points})
@@ -260,6 +260,8 @@ def _read_models(rd: _Reader, lets: list[Let], values: dict) -> set[str]:
             rd.add_function(x)
             _function_model(rd, x, values)
             continue
+        if x.key.endswith("^{*}"):  # a starred NAME (issue 52) reads as a name of its own
+            rd.over.setdefault(x.key, Glyph(x.key, "*", rd._name(x.key), (), "model", ""))
         p = rd.parse(f"{x.name} = {x.latex}", f"--let '{x.text}'")
         if len(p.chains) != 1 or len(p.chains[0]) != 2:
             raise BadInput(f"--let '{x.text}': expected NAME = one expression")
