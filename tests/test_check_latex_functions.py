@@ -259,3 +259,35 @@ def test_slices_bars_dollar_and_starred_names(latex, lets, verdict):
 def test_what_item_4_refuses_it_refuses_with_a_reason(latex, lets, match):
     with pytest.raises(LatexError, match=match):
         rigidsym.check_latex(latex, let=lets)
+
+
+# ------------------------------------------------ item 6: the repair search bounded (issue 52)
+MR_SLIP = (r"e^{[\hat\omega]\theta} = I + \sin\theta\,[\hat\omega]^3 + (1 - \sin\theta)"
+           r"[\hat\omega]^2\cos\theta")  # far from Rodrigues: 5000 candidates take ~9 s
+
+
+def test_the_repair_search_stops_at_its_time_limit_and_says_so():
+    r = rigidsym.check_latex(MR_SLIP, let=[r"\hat\omega: unit vector; \theta: angle"],
+                             repair_seconds=1)
+    assert r.verdict == "does-not-hold" and r.counterexample
+    assert "search stopped after 1 s" in r.detail and "candidates tried" in r.detail, r.detail
+    n = int(r.detail.split("s, ")[-1].split(" candidates")[0])
+    assert 0 <= n < 5000
+
+
+@pytest.mark.parametrize("bad", [0, -1.0, float("nan"), "10", True])
+def test_a_bad_time_limit_is_refused_naming_it(bad):
+    with pytest.raises(ValueError, match="repair_seconds"):
+        rigidsym.check_latex(r"x = x", repair_seconds=bad)
+
+
+def test_an_ad_hoc_check_expects_nothing_and_angles_print_as_numbers(capsys):
+    code, out, err = _cli(capsys, "--latex", r"\mathbf{a}^T\mathbf{a} = \cos\psi", "--let",
+                          r"\mathbf{a}: unit vector; \psi: angle", "--no-repairs")
+    assert code == 1 and "as expected" not in out + err
+    import sympy as sp
+
+    r = rigidsym.check_latex(r"\mathbf{a}^T\mathbf{a} = \cos\psi",
+                             let=[r"\mathbf{a}: unit vector; \psi: angle"], repairs=False)
+    for name, value in r.counterexample["point"].items():  # evaluated: "-pi/2", not
+        assert sp.sstr(sp.sympify(value)) == value, (name, value)  # "2*atan(-1)"
