@@ -25,7 +25,9 @@ EXAMPLES = """\
   rigidsym verify                         all 181 ids of the chapter (~40 s on 2 cores)
   rigidsym verify 3.96 --section 3.8      every part of (3.96), and section 3.8
   rigidsym verify --module my_eqs.py      your own equations
-  rigidsym verify --format json > v.json  the schema-2 document on stdout"""
+  rigidsym verify --format json > v.json  the schema-2 document on stdout
+  rigidsym verify --certificates certs    a certificate per id, re-checked by certcheck
+                                          (docs/certificates.md)"""
 
 
 def add_arguments(v) -> None:
@@ -49,6 +51,10 @@ def add_arguments(v) -> None:
     v.add_argument("--no-cache", action="store_true",
                    help="check every id again; neither read nor write the verdict cache "
                         "(default: off, the cache is used)")
+    v.add_argument("--certificates", metavar="DIR",
+                   help="write a certificate per decided id into DIR (docs/certificates.md) "
+                        "and re-check them with the independent checker certcheck when it "
+                        "is found (default: none)")
     add_repair_arguments(v)
 
 
@@ -118,6 +124,11 @@ def run(args) -> int:
                          cache=not args.no_cache, expanded=False, extra=extra,
                          **repair_options(args))
     wall = time.perf_counter() - t0
+    if args.certificates:
+        from rigidsym.checking.certificates import certify_line, write_certificates
+
+        certified = write_certificates(results, args.certificates, recheck=True)
+        print(certify_line(certified, args.certificates), file=sys.stderr)
     if args.json:
         write_atomic(args.json, to_json(results))
     off = [r for r in results if r.verdict != r.expected]
