@@ -306,7 +306,7 @@ def check_identity(st: Statement, rels: list, fast: bool) -> list[str]:
                 try:
                     diff = F.sub(evaluate(a, F, leaf, trig, memo),
                                  evaluate(b, F, leaf, trig, memo))
-                except Vanishing as exc:
+                except (Vanishing, ValueError) as exc:
                     raise CheckError(f"{_who(r)} entry ({i + 1}, {j + 1}): {exc}") from None
                 if not F.is_zero(diff):
                     raise CheckError(f"{_who(r)} entry ({i + 1}, {j + 1}): lhs - rhs is not "
@@ -429,6 +429,8 @@ def check_counterexample(st: Statement, index: int, ev: dict) -> str:
             except Vanishing:
                 raise CheckError(f"{_who(r)} entry ({i + 1}, {j + 1}): a divisor vanishes "
                                  "at the point") from None
+            except ValueError as exc:
+                raise CheckError(f"{_who(r)} entry ({i + 1}, {j + 1}): {exc}") from None
             if hit is None and not F.is_zero(d):
                 hit = (i, j, d)
     if hit is None:

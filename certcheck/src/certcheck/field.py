@@ -185,6 +185,9 @@ def evaluate(node, field: Field, leaf, trig, memo: dict):
             memo[key] = leaf("pi")
         elif tag in ("cos", "sin"):
             memo[key] = trig(tag, n[1])
+        elif tag == "sqrt":
+            raise ValueError("sqrt: this checker decides no relation holding a square root "
+                             "(a definition's statement may hold one)")
         elif not ready:
             stack.append((n, True))
             stack.extend((k, False) for k in n[1:] if isinstance(k, tuple))

@@ -6,16 +6,17 @@
     term   := unary (("*" | "/") unary)*
     unary  := "-" unary | power
     power  := atom ("^" ["-"] INTEGER)?
-    atom   := INTEGER | NAME | "pi" | "(" expr ")" | ("cos" | "sin") "(" expr ")"
+    atom   := INTEGER | NAME | "pi" | "(" expr ")" | ("cos" | "sin" | "sqrt") "(" expr ")"
     NAME   := letter (letter | digit | "_" | ".")* "'"*     (a prime per time derivative)
 
 A rational is an integer quotient (``3/4``). A name refers to an atom of the statement or
 to an earlier ``let`` (a named subexpression, so a shared part is written once). The
 argument of ``cos``/``sin`` must be a rational combination of declared angles and ``pi``;
-that is checked where it is evaluated. The parse is a tree of tuples:
+that is checked where it is evaluated. ``sqrt`` may stand in a definition's statement (which
+is not evaluated); the checker decides nothing that holds one. The parse is a tree of tuples:
 ``("num", int)``, ``("name", str)``, ``("pi",)``, ``("add", a, b)``, ``("sub", a, b)``,
 ``("mul", a, b)``, ``("div", a, b)``, ``("neg", a)``, ``("pow", a, n)``,
-``("cos", a)``, ``("sin", a)``.
+``("cos", a)``, ``("sin", a)``, ``("sqrt", a)``.
 """
 
 from __future__ import annotations
@@ -103,7 +104,7 @@ class _Parser:
             return ("num", int(value))
         if kind == "name":
             self.take()
-            if value in ("cos", "sin"):
+            if value in ("cos", "sin", "sqrt"):
                 self.take("op", "(")
                 arg = self.expr()
                 self.take("op", ")")
@@ -152,6 +153,6 @@ def names_in(node, acc: set | None = None, seen: set | None = None) -> set:
             acc.add(n[1])
         elif n[0] in ("add", "sub", "mul", "div"):
             stack.extend((n[1], n[2]))
-        elif n[0] in ("neg", "pow"):
+        elif n[0] in ("neg", "pow", "sqrt"):
             stack.append(n[1])
     return acc

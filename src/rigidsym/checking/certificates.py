@@ -28,6 +28,7 @@ from pathlib import Path
 
 import sympy as sp
 from sympy.core.function import AppliedUndef
+from sympy.matrices.expressions.matexpr import MatrixElement
 
 from rigidsym._io import write_atomic
 from rigidsym.algebra.symbols import TIME, constraint_of
@@ -112,7 +113,7 @@ class _Printer:
         stack = [e]
         while stack:
             x = stack.pop()
-            if x.is_Atom or isinstance(x, AppliedUndef | sp.Derivative):
+            if x.is_Atom or isinstance(x, AppliedUndef | sp.Derivative | MatrixElement):
                 continue
             self._count[x] = self._count.get(x, 0) + 1
             if self._count[x] == 1:
@@ -171,9 +172,15 @@ class _Printer:
                     "-" + "*".join(self._factor(a) for a in sp.Mul.make_args(pos))
             return "*".join(self._factor(a) for a in e.args)
         if isinstance(e, sp.Pow):
+            if e.exp in (sp.S.Half, -sp.S.Half):  # only a definition's statement holds one
+                root = f"sqrt({self._p(e.base, top=True)})"
+                return root if e.exp > 0 else f"1/{root}"
             if not e.exp.is_Integer:
                 raise Unprintable(f"a non-integer power: {e}")
             return f"{self._factor(e.base)}^{int(e.exp)}"
+        if isinstance(e, MatrixElement) and isinstance(e.parent, sp.MatrixSymbol):
+            # an entry of a matrix the model leaves free: a free atom
+            return self.atom(sp.Symbol(f"{e.parent.name}_{int(e.i) + 1}{int(e.j) + 1}"))
         if isinstance(e, sp.cos | sp.sin):
             return f"{type(e).__name__}({self._p(e.args[0], top=True)})"
         raise Unprintable(f"{type(e).__name__} ({sp.sstr(e)[:60]})")
