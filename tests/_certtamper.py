@@ -10,7 +10,8 @@ from fractions import Fraction
 
 
 def _rels(cert, etype):
-    return [r for r in cert["relations"] if r["evidence"]["type"] == etype]
+    kinds = ("identity", "cofactors") if etype == "identity" else (etype,)
+    return [r for r in cert["relations"] if r["evidence"]["type"] in kinds]
 
 
 def changed_coefficient(cert):
@@ -100,11 +101,12 @@ def weakened_kinds(cert):
 
 
 def moved_point(cert):
-    """A counterexample's value of a constrained atom moved by 1/3 (off the constraint set)."""
+    """A counterexample's (or a cofactor certificate's) value of a constrained atom moved by
+    1/3 (off the constraint set)."""
     c = copy.deepcopy(cert)
     constrained = {n for g in c["atoms"] if g["kind"] in ("unit", "unit4", "rotation",
                                                            "transform") for n in g["names"]}
-    for r in _rels(c, "counterexample"):
+    for r in _rels(c, "counterexample") + _rels(c, "cofactors"):
         for name in sorted(r["evidence"]["point"]):
             if name in constrained:
                 v = Fraction(r["evidence"]["point"][name]) + Fraction(1, 3)
@@ -154,6 +156,58 @@ def forged_identity(cert):
     return c
 
 
+def _cofactor_entry(cert):
+    """The first cofactor entry with a non-zero cofactor: (entry, index)."""
+    for r in _rels(cert, "cofactors"):
+        for e in r["evidence"]["entries"]:
+            for k, mu in enumerate(e["cofactors"]):
+                if mu != "0":
+                    return e, k
+    return None, None
+
+
+def dropped_cofactor(cert):
+    """A non-zero cofactor set to 0."""
+    c = copy.deepcopy(cert)
+    e, k = _cofactor_entry(c)
+    if e is None:
+        return None
+    e["cofactors"][k] = "0"
+    return c
+
+
+def altered_cofactor(cert):
+    """A non-zero cofactor changed by 1."""
+    c = copy.deepcopy(cert)
+    e, k = _cofactor_entry(c)
+    if e is None:
+        return None
+    e["cofactors"][k] = f"({e['cofactors'][k]}) + 1"
+    return c
+
+
+def extra_hypothesis(cert):
+    """One more cofactor than the kinds give hypotheses (a hypothesis of the certificate's)."""
+    c = copy.deepcopy(cert)
+    rels = _rels(c, "cofactors")
+    if not rels:
+        return None
+    for e in rels[0]["evidence"]["entries"]:
+        e["cofactors"].append("1")
+    return c
+
+
+def zero_D(cert):
+    """A cofactor certificate's stated denominator D set to 0."""
+    c = copy.deepcopy(cert)
+    rels = _rels(c, "cofactors")
+    if not rels:
+        return None
+    for e in rels[0]["evidence"]["entries"]:
+        e["denominator"] = "0"
+    return c
+
+
 def claimed_verified(cert):
     """A does-not-hold's verdict changed to verified, its evidence left as it is."""
     if cert["verdict"] != "does-not-hold":
@@ -166,8 +220,35 @@ def claimed_verified(cert):
 #: every tampering, by name
 TAMPERINGS = {f.__name__: f for f in (
     changed_coefficient, fake_hypothesis, unknown_kind, swapped_side, weakened_kinds,
-    moved_point, made_to_agree, zero_denominator, forged_identity, claimed_verified)}
+    moved_point, made_to_agree, zero_denominator, forged_identity, claimed_verified,
+    dropped_cofactor, altered_cofactor, extra_hypothesis, zero_D)}
 
 
 def roundtrip(cert):
     return json.loads(json.dumps(cert))
+
+
+def holds_without_constraints(eq_id: str) -> bool:
+    """rigidsym's zero test on the id's relations with every constrained atom replaced by a
+    free symbol of the same name."""
+    import sympy as sp
+    from sympy.core.function import AppliedUndef
+
+    from rigidsym.algebra.symbols import constraint_of
+    from rigidsym.checking.deciding.explicit import _entries, explicit
+    from rigidsym.checking.deciding.registry import REGISTRY
+    from rigidsym.zero.decide import decide_zero
+
+    st = REGISTRY[eq_id].build()
+    diffs = []
+    for r in st.printed + st.claims:
+        for a, b in zip(_entries(explicit(r.lhs, st.model)), _entries(explicit(r.rhs, st.model)),
+                        strict=True):
+            d = sp.sympify(a - b)
+            free = {x: sp.Symbol(x.name, real=True) for x in d.free_symbols
+                    if constraint_of(x) is not None and constraint_of(x).kind != "angle"}
+            free.update({f: sp.Function(f.func.__name__, real=True)(*f.args)
+                         for f in d.atoms(AppliedUndef) if constraint_of(f) is not None
+                         and constraint_of(f).kind != "angle"})
+            diffs.append(d.xreplace(free))
+    return decide_zero(diffs).zero is True

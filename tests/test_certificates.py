@@ -20,19 +20,18 @@ from certcheck import CheckError, check_certificate  # noqa: E402
 
 
 def test_verify_writes_and_rechecks(tmp_path, capsys):
-    """Two ids (a verified one, the five parts of 3.96, one failing): a file each, the
-    independent checker re-checks them in its own process, and says so."""
-    rc = main(["verify", "3.13", "3.96", "--quiet", "--certificates", str(tmp_path)])
+    """A verified id and a failing one: a file each, the independent checker re-checks them
+    in its own process, and says so."""
+    rc = main(["verify", "3.13", "3.96e", "--quiet", "--certificates", str(tmp_path)])
     err = capsys.readouterr().err
     assert rc == 0
     files = sorted(p.name for p in tmp_path.glob("*.json"))
-    assert files == ["3.13.json", "3.96a.json", "3.96b.json", "3.96c.json", "3.96d.json",
-                     "3.96e.json"]
-    assert "certcheck re-checked 6 of 6" in err, err
+    assert files == ["3.13.json", "3.96e.json"]
+    assert "certcheck re-checked 2 of 2" in err, err
     cert = json.loads((tmp_path / "3.96e.json").read_text())
     assert cert["verdict"] == "does-not-hold"
     roles = {r["role"]: r["evidence"]["type"] for r in cert["relations"]}
-    assert roles == {"printed": "counterexample", "corrected": "identity"}
+    assert roles == {"printed": "counterexample", "corrected": "cofactors"}
     assert (tmp_path / "SKIPPED.txt").read_text() == "none\n"
 
 
@@ -50,6 +49,7 @@ def test_recheck_reports_a_failure(tmp_path, capsys):
     assert "certcheck FAILED (3.13)" in line and "not zero" in line
 
 
+@pytest.mark.slow
 def test_user_module_gets_certificates(tmp_path, capsys):
     """A reader's own module (docs/own-equations.md's example) is certified like the book."""
     example = ROOT / "examples" / "rotation_identities.py"
@@ -88,34 +88,8 @@ def test_whole_chapter_certified_and_tampering_rejected(tmp_path):
                     check_certificate(t)
                 except CheckError:
                     continue
-                assert _holds_without_constraints(i), i
+                assert certtamper.holds_without_constraints(i), i
                 continue
             with pytest.raises(CheckError):
                 check_certificate(t)
     assert counts == {"verified": 121, "does-not-hold": 11, "definition": 49}
-
-
-def _holds_without_constraints(eq_id: str) -> bool:
-    """rigidsym's zero test on the id's relations with every constrained atom replaced by a
-    free symbol of the same name."""
-    import sympy as sp
-    from sympy.core.function import AppliedUndef
-
-    from rigidsym.algebra.symbols import constraint_of
-    from rigidsym.checking.deciding.explicit import _entries, explicit
-    from rigidsym.checking.deciding.registry import REGISTRY
-    from rigidsym.zero.decide import decide_zero
-
-    st = REGISTRY[eq_id].build()
-    diffs = []
-    for r in st.printed + st.claims:
-        for a, b in zip(_entries(explicit(r.lhs, st.model)), _entries(explicit(r.rhs, st.model)),
-                        strict=True):
-            d = sp.sympify(a - b)
-            free = {x: sp.Symbol(x.name, real=True) for x in d.free_symbols
-                    if constraint_of(x) is not None and constraint_of(x).kind != "angle"}
-            free.update({f: sp.Function(f.func.__name__, real=True)(*f.args)
-                         for f in d.atoms(AppliedUndef) if constraint_of(f) is not None
-                         and constraint_of(f).kind != "angle"})
-            diffs.append(d.xreplace(free))
-    return decide_zero(diffs).zero is True

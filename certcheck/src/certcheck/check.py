@@ -175,7 +175,7 @@ class Statement:
                          "and pi")
 
     def angle_form(self, arg) -> dict:
-        form = self.trig[id(arg)]
+        form = self._linear(arg)  # never looked up by id: a later tree may reuse one
         if form.get("", 0):
             raise CheckError("a cos/sin argument with a rational constant term")
         if (2 * form.get("pi", 0)).denominator != 1:
@@ -445,6 +445,103 @@ def check_counterexample(st: Statement, index: int, ev: dict) -> str:
             f" entry ({i + 1}, {j + 1}) of lhs - rhs {what}")
 
 
+# ----------------------------------------------------------------------------- cofactors
+def check_cofactors(st: Statement, index: int, ev: dict, fast: bool = True) -> str:
+    """Relation ``index`` is an identity by cofactors: for each entry, ``D (lhs - rhs) -
+    sum_i mu_i h_i`` is the zero rational function of the atoms (``cos``/``sin`` of each
+    angle over its M as two more variables), the ``h_i`` the hypotheses of the kinds
+    (generated here), and ``D`` and every divisor are non-zero at an exact point of the
+    constraint set."""
+    r, lhs, rhs = st.rels[index]
+    orders, used, bare_pi, trig_angles = usage = st.usage[index]
+    _same_shape(lhs, rhs, r)
+    if bare_pi or any(st.groups[st.atom_group[b][0]]["kind"] in ("angle", "angle_pi")
+                      for b, k in used if k == 0):
+        raise CheckError(f"{_who(r)}: cofactors with a bare angle or pi are not decided here")
+    point = {n: _rational(v, n) for n, v in dict(ev.get("point", {})).items()}
+    facts, Ms, taus = _check_point(st, usage, point, dict(ev.get("angles", {})))
+    names, nxt, hyps_of = [], {}, []
+    for gi, g in enumerate(st.groups):
+        if gi not in orders:
+            continue
+        top = orders[gi] if g["timed"] else 0
+        if g["kind"] in K.PARAMS:
+            names += [n + "'" * k for k in range(top + 1) for n in g["names"]]
+            hyps_of.append((gi, top))
+        else:
+            names += sorted({b + "'" * k for b, k in used if st.atom_group[b][0] == gi})
+    angles = [g["names"][0] for gi, g in enumerate(st.groups) if g["names"][0] in trig_angles]
+    for a in angles:
+        if Ms.get(st.atom_group[a][0]) != st.M[st.atom_group[a][0]]:
+            raise CheckError(f"angle {a}: the point's M must be {st.M[st.atom_group[a][0]]}")
+        names += [f"cos({a}/{st.M[st.atom_group[a][0]]})", f"sin({a}/{st.M[st.atom_group[a][0]]})"]
+    index_of = {n: i for i, n in enumerate(names)}
+    for gi, top in hyps_of:
+        for k in range(top):
+            for n in st.groups[gi]["names"]:
+                nxt[index_of[n + "'" * k]] = index_of[n + "'" * (k + 1)]
+    F = Field(make_ring(names, fast), nxt)
+    hyps = []
+    for gi, top in hyps_of:
+        g = st.groups[gi]
+        for h in K.constraints(g["kind"], F, [F.var(index_of[n]) for n in g["names"]]):
+            for k in range(top + 1):
+                hyps.append(h)
+                h = F.d(h) if k < top else h
+    units = {}
+    for a in angles:
+        M = st.M[st.atom_group[a][0]]
+        C, S = F.var(index_of[f"cos({a}/{M})"]), F.var(index_of[f"sin({a}/{M})"])
+        hyps.append(F.sub(F.add(F.mul(C, C), F.mul(S, S)), F.one))
+        units[a] = (C, S)
+    trig = _trig(st, F, units.__getitem__, {}, st.M)
+
+    def leaf(name):
+        if name not in index_of:
+            raise CheckError(f"{name!r} is not an atom of this relation")
+        return F.var(index_of[name])
+    entries = list(ev.get("entries", []))
+    flat = [(i, j, a, b) for i, (lr, rr) in enumerate(zip(lhs, rhs, strict=True))
+            for j, (a, b) in enumerate(zip(lr, rr, strict=True))]
+    if len(entries) != len(flat):
+        raise CheckError(f"{_who(r)}: {len(entries)} cofactor entries for {len(flat)} entries")
+    memo: dict = {}
+    dens = []
+    for (i, j, a, b), e in zip(flat, entries, strict=True):
+        where = f"{_who(r)} entry ({i + 1}, {j + 1})"
+        mus = list(e.get("cofactors", []))
+        if len(mus) != len(hyps):
+            raise CheckError(f"{where}: {len(mus)} cofactors for {len(hyps)} hypotheses")
+        try:
+            D = evaluate(parse(e["denominator"], st.lets), F, leaf, trig, memo)
+            total = F.mul(D, F.sub(evaluate(a, F, leaf, trig, memo),
+                                   evaluate(b, F, leaf, trig, memo)))
+            for mu, h in zip(mus, hyps, strict=True):
+                total = F.sub(total, F.mul(evaluate(parse(mu), F, leaf, trig, memo), h))
+        except (Vanishing, ValueError, KeyError) as exc:
+            raise CheckError(f"{where}: {exc}") from None
+        if not F.is_zero(total):
+            raise CheckError(f"{where}: D (lhs - rhs) - sum mu_i h_i is not zero")
+        dens.append(D)
+    values = []
+    for n in names:
+        if n.startswith(("cos(", "sin(")):
+            t = taus[n[4:n.index("/")]]
+            values.append((1 - t * t) / (1 + t * t) if n[0] == "c" else 2 * t / (1 + t * t))
+        elif n in point:
+            values.append(point[n])
+        else:
+            raise CheckError(f"the point gives no value to {n}")
+    for f in F.factors:  # every divisor met on the way, the denominators' included
+        if F.ring.evaluate(f, values) == 0:
+            raise CheckError(f"{_who(r)}: a divisor vanishes at the point")
+    for D in dens:
+        if F.value(D, values) == 0:
+            raise CheckError(f"{_who(r)}: a denominator D vanishes at the point")
+    return (f"{_who(r)}: identity by cofactors over {len(hyps)} hypotheses, D != 0 at a "
+            f"point of the constraint set ({'; '.join(facts) or 'no constraints'})")
+
+
 # ----------------------------------------------------------------------------- the verdict
 def hypotheses(st: Statement) -> list[str]:
     """The hypotheses of the statement in words (from the kinds, never the certificate)."""
@@ -461,7 +558,8 @@ def check_certificate(cert: dict, fast: bool = True) -> tuple[str, list[str]]:
     st = Statement(cert)
     verdict = cert.get("verdict")
     lines = [f"hypothesis: {h}" for h in hypotheses(st)]
-    by = {"identity": [], "counterexample": [], "shape": [], "statement": []}
+    by = {"identity": [], "cofactors": [], "counterexample": [], "shape": [],
+          "statement": []}
     for rel in st.rels:
         t = dict(rel[0].get("evidence") or {}).get("type")
         if t not in by:
@@ -499,6 +597,8 @@ def check_certificate(cert: dict, fast: bool = True) -> tuple[str, list[str]]:
                      f"and {shapes[1][0]}x{shapes[1][1]}")
     for rel in by["counterexample"]:
         lines.append(check_counterexample(st, st.rels.index(rel), rel[0]["evidence"]))
+    for rel in by["cofactors"]:
+        lines.append(check_cofactors(st, st.rels.index(rel), rel[0]["evidence"], fast))
     if by["identity"]:
         lines.extend(check_identity(st, by["identity"], fast))
     return verdict, lines

@@ -169,13 +169,18 @@ class Field:
 def evaluate(node, field: Field, leaf, trig, memo: dict):
     """The value of a parsed tree in ``field``: ``leaf(name)`` gives an atom's value,
     ``trig(kind, argument tree)`` a cosine's or sine's; ``memo`` (by node identity) makes a
-    shared subtree cost once. Iterative, so a deep tree does not hit the recursion limit."""
+    shared subtree cost once (the nodes are kept alive in ``memo[None]``, so an identity is
+    never reused by a later tree). Iterative, so a deep tree does not hit the recursion
+    limit."""
+    keep = memo.setdefault(None, [])
     stack = [(node, False)]
     while stack:
         n, ready = stack.pop()
         key = id(n)
         if key in memo:
             continue
+        if not ready:
+            keep.append(n)
         tag = n[0]
         if tag == "num":
             memo[key] = field.const(n[1])
@@ -198,5 +203,4 @@ def evaluate(node, field: Field, leaf, trig, memo: dict):
         else:
             a, b = memo[id(n[1])], memo[id(n[2])]
             memo[key] = getattr(field, tag)(a, b)
-        _ = n
     return memo[id(node)]

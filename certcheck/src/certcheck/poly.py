@@ -195,7 +195,7 @@ class FlintRing(Ring):
             v = Fraction(int(c))
             for x, e in zip(values, exps, strict=False):
                 if e:
-                    v *= x ** e
+                    v *= x ** int(e)
             total += v
         return total
 

@@ -216,6 +216,11 @@ def _point(pr: _Printer, lhs, rhs, seed: int) -> dict:
     plan = make_plan(_entries(lhs) + _entries(rhs))
     pt = _small_witness(diff, plan, seed) or \
         {p: zr.witness.get(p, Fraction(1, 2)) for p in plan.params}
+    return {"type": "counterexample", **_atom_point(pr, plan, pt)}
+
+
+def _atom_point(pr: _Printer, plan, pt: dict) -> dict:
+    """``{"point", "angles"}``: the atoms' and jets' values at the parameter point ``pt``."""
     point, angles = {}, {}
     for atom, rule in plan.rules.items():
         if atom in plan.bare or atom is sp.pi:
@@ -226,19 +231,68 @@ def _point(pr: _Printer, lhs, rhs, seed: int) -> dict:
         point[pr.atom(base) + "'" * k] = str(Fraction(str(v)))
     for a, (tau, M) in plan.angles.items():
         angles[pr.atom(a)] = {"M": int(M), "tan": str(pt[tau])}
-    return {"type": "counterexample", "point": point, "angles": angles}
+    return {"point": point, "angles": angles}
+
+
+def _candidate_points(pr: _Printer, sides: list, seed: int, n: int = 6) -> list:
+    """Exact points of the constraint set for the atoms of ``sides`` (small rationals; the
+    angles' M those of all the sides, as the checker's)."""
+    import random
+
+    plan = make_plan([e for s in sides for e in _entries(s)])
+    rng = random.Random(seed)
+    small = [Fraction(k, d) for k in range(-3, 4) for d in (1, 2, 3)]
+    out = []
+    for _ in range(4 * n):
+        pt = {p: rng.choice(small) for p in plan.params}
+        try:
+            out.append(_atom_point(pr, plan, pt))
+        except ZeroDivisionError:
+            continue
+        if len(out) == n:
+            break
+    return out
+
+
+def _angle_M(sides) -> dict:
+    """Angle atom -> the lcm of the denominators of its coefficients in the cos/sin
+    arguments of ``sides`` (the checker's ``M``)."""
+    from math import lcm
+
+    out: dict = {}
+    for s in sides:
+        for e in _entries(s):
+            for f in sp.sympify(e).atoms(sp.cos, sp.sin):
+                for term in sp.Add.make_args(sp.expand(f.args[0])):
+                    c, rest = term.as_coeff_Mul()
+                    if rest is not sp.pi and c.is_Rational:
+                        out[rest] = lcm(out.get(rest, 1), int(c.q))
+    return out
+
+
+def _fails(r, model: dict, seed: int) -> bool:
+    """Whether the relation ``r`` fails: a shape mismatch, or a counterexample."""
+    if shape_of(r.lhs) != shape_of(r.rhs):
+        return True
+    lhs, rhs = explicit(r.lhs, model), explicit(r.rhs, model)
+    diff = [a - b for a, b in zip(_entries(lhs), _entries(rhs), strict=True)]
+    return decide_zero(diff, seed=seed).zero is False
 
 
 def certificate(eq_id: str, verdict: str, members: list[dict] | None = None,
-                seed: int | None = None) -> dict:
+                seed: int | None = None, cofactors: bool = True) -> dict:
     """The certificate of an id's verdict (a plain dict; ``json.dumps`` writes it).
 
     Args:
         eq_id: a registered id (book or user).
         verdict: its computed verdict: ``verified``, ``does-not-hold`` or ``definition``.
         members: the result's member records (``Outcome.members``): a does-not-hold
-            certifies its first member whose status is ``fails``.
+            certifies its first member whose status is ``fails``; ``None``: the first member
+            the zero test finds failing.
         seed: the seed of the counterexample search (default: the id's).
+        cofactors: give an identity cofactor evidence where
+            :func:`rigidsym.checking.cofactors.cofactor_evidence` finds it (else, and when
+            ``False``, a re-computation certificate).
 
     Raises:
         Unprintable: the statement leaves the grammar, an atom has a kind the checker does
@@ -264,8 +318,11 @@ def certificate(eq_id: str, verdict: str, members: list[dict] | None = None,
         pairs = [(r, "printed", "statement") for r in st.printed]
         pairs += [(r, "claim", "identity") for r in st.claims]
     else:
-        status = [m.get("status") for m in (members or [])][:len(asserted)]
-        bad = next((i for i, s in enumerate(status) if s == "fails"), None)
+        if members is None:
+            bad = next((i for i, r in enumerate(asserted) if _fails(r, st.model, seed)), None)
+        else:
+            status = [m.get("status") for m in members][:len(asserted)]
+            bad = next((i for i, s in enumerate(status) if s == "fails"), None)
         if bad is None:
             raise Unprintable("no failing member on record")
         pairs = [(asserted[bad], "printed" if bad < len(st.printed) else "claim", "fails")]
@@ -293,9 +350,28 @@ def certificate(eq_id: str, verdict: str, members: list[dict] | None = None,
                 raise Unprintable(str(exc)) from None
         rels.append(_relation(pr, r.label, role, lhs, rhs, ev))
     atoms = list(pr.groups.values())
+    if cofactors:
+        _add_cofactors(pr, rels, sides, atoms, seed)
     return {"format": FORMAT, "version": VERSION, "id": eq_id, "title": eq.title,
             "verdict": verdict, "book_latex": eq.latex or "", "atoms": atoms,
             "book_names": pr.book, "let": pr.lets, "relations": rels}
+
+
+def _add_cofactors(pr: _Printer, rels: list, sides: list, atoms: list, seed: int) -> None:
+    """Replace identity evidence by cofactors where they are found (in place)."""
+    from rigidsym.checking.cofactors import NoCofactors, cofactor_evidence
+
+    every = [x for s in sides for x in s[2:4]]
+    M = {pr.atom(a): m for a, m in _angle_M(every).items()}
+    points = None
+    for rel, (_, _, lhs, rhs, _) in zip(rels, sides, strict=True):
+        if rel["evidence"]["type"] != "identity":
+            continue
+        try:
+            points = points or _candidate_points(pr, every, seed)
+            rel["evidence"] = cofactor_evidence(lhs, rhs, atoms, pr.atom, M, points)
+        except (NoCofactors, Unsupported) as exc:
+            rel["evidence"] = {"type": "identity", "why_not_cofactors": str(exc)}
 
 
 def write_certificates(results, directory, recheck: bool = False) -> dict:
