@@ -35,6 +35,29 @@ def test_verify_writes_and_rechecks(tmp_path, capsys):
     assert (tmp_path / "SKIPPED.txt").read_text() == "none\n"
 
 
+def test_json_says_certified(tmp_path, capsys):
+    """verify --json with --certificates: each record says whether its verdict is certified,
+    by which evidence, and whether certcheck passed it."""
+    doc = tmp_path / "v.json"
+    main(["verify", "3.96e", "--quiet", "--certificates", str(tmp_path / "c"), "--json",
+          str(doc)])
+    capsys.readouterr()
+    (row,) = json.loads(doc.read_text())["equations"]
+    assert row["certificate"] == {"file": "3.96e.json", "rechecked": True,
+                                  "evidence": ["counterexample", "cofactors"]}
+
+
+def test_check_latex_certificate(tmp_path, capsys):
+    """A reader's LaTeX (rigidsym check --latex): its verdict's certificate, re-checked."""
+    f = tmp_path / "c.json"
+    rc = main(["check", "--latex", r"\mathbf{e}^T\mathbf{e} = 2", "--let",
+               r"\mathbf{e}: unit vector", "--certificate", str(f)])
+    assert rc == 1
+    assert "re-checked by certcheck" in capsys.readouterr().err
+    verdict, lines = check_certificate(json.loads(f.read_text()), fast=False)
+    assert verdict == "does-not-hold" and "unit constraints hold exactly" in lines[-1]
+
+
 def test_recheck_reports_a_failure(tmp_path, capsys):
     """A certificate changed on disk after writing: the re-check names it."""
     from rigidsym.checking.certificates import certify_line, recheck_folder

@@ -38,7 +38,7 @@ from rigidsym.checking.deciding.registry import REGISTRY
 from rigidsym.zero.decide import Unsupported, decide_zero, evaluate, make_plan
 
 __all__ = ["FORMAT", "VERSION", "Unprintable", "certificate", "write_certificates",
-           "certificate_file", "recheck_folder", "certify_line"]
+           "certificate_file", "recheck_folder", "certify_line", "certificate_field"]
 
 FORMAT = "rigidsym-certificate"
 VERSION = 1
@@ -387,12 +387,12 @@ def write_certificates(results, directory, recheck: bool = False) -> dict:
 
     Returns:
         ``{"written": [ids], "skipped": {id: why}, "rechecked": {id: passed} or None,
-        "checker": its location or None, "failures": {id: the checker's reason}}``;
-        undecided ids are skipped.
+        "checker": its location or None, "failures": {id: the checker's reason},
+        "evidence": {id: [evidence type per relation]}}``; undecided ids are skipped.
     """
     out = Path(directory)
     out.mkdir(parents=True, exist_ok=True)
-    written, skipped, files = [], {}, {}
+    written, skipped, files, evidence = [], {}, {}, {}
     for r in results:
         if r.verdict == "undecided":
             skipped[r.id] = "undecided: nothing to certify"
@@ -405,10 +405,11 @@ def write_certificates(results, directory, recheck: bool = False) -> dict:
         write_atomic(out / certificate_file(r.id), json.dumps(cert, indent=1) + "\n")
         written.append(r.id)
         files[certificate_file(r.id)] = r.id
+        evidence[r.id] = [rel["evidence"]["type"] for rel in cert["relations"]]
     write_atomic(out / "SKIPPED.txt",
                  "".join(f"{i}: {why}\n" for i, why in skipped.items()) or "none\n")
     summary = {"written": written, "skipped": skipped, "rechecked": None, "checker": None,
-               "failures": {}}
+               "failures": {}, "evidence": evidence}
     if recheck and written:
         summary.update(recheck_folder(out, files))
     return summary
@@ -460,6 +461,16 @@ def recheck_folder(directory, files: dict) -> dict:
         failures["(certcheck)"] = proc.stderr.strip()[-300:]
     return {"rechecked": passed, "checker": where or "installed certcheck",
             "failures": failures}
+
+
+def certificate_field(summary: dict, eq_id: str) -> dict:
+    """The ``certificate`` member of an id's JSON record (``verify --certificates --json``):
+    ``{"file", "evidence", "rechecked"}``, or ``{"file": None, "why"}``."""
+    if eq_id in summary["skipped"]:
+        return {"file": None, "why": summary["skipped"][eq_id]}
+    rechecked = summary["rechecked"]
+    return {"file": certificate_file(eq_id), "evidence": summary["evidence"].get(eq_id, []),
+            "rechecked": None if rechecked is None else rechecked.get(eq_id)}
 
 
 def certify_line(summary: dict, directory) -> str:
