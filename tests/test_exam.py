@@ -25,7 +25,9 @@ _NUMBER = re.compile(r"-?\d+(?:\.\d+)?(?:e-?\d+)?(?:/\d+)?")
 def _visible_numbers(page: str) -> set[str]:
     """The numbers a reader sees: the text of the page and of its figures' <text>."""
     page = re.sub(r"<style>.*?</style>", " ", page, flags=re.S)    # CSS is not seen
-    text = html.unescape(re.sub(r"<(?!/?text)[^>]*>", " ", page))
+    # every tag goes, attributes too (an SVG <text style="font-size: 11px"> is not seen);
+    # the text between the tags, the figures' labels included, stays
+    text = html.unescape(re.sub(r"<[^>]*>", " ", page))
     return set(_NUMBER.findall(text))
 
 

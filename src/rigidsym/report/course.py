@@ -79,10 +79,12 @@ def student_seed(seed: int, name: str) -> int:
 
 
 def version_of(sols: list) -> str:
-    """A short version of an exam: 6 hex digits of its problems' exercises and data, so a
-    returned sheet is matched to its key."""
+    """A short version of an exam: 6 letters (no digit, so no number on the sheet reads
+    as an answer) of a hash of its problems' exercises and data, so a returned sheet is
+    matched to its key."""
     text = "|".join(f"{s.id}:{_exam._key(s)}" for s in sols)
-    return hashlib.sha256(text.encode()).hexdigest()[:6]
+    h = int(hashlib.sha256(text.encode()).hexdigest(), 16)
+    return "".join("ABCDEFGHJKLMNPQRSTUVWXYZ"[(h >> (5 * i)) % 24] for i in range(6))
 
 
 def _slug(name: str) -> str:

@@ -78,7 +78,8 @@ def _as_array(v, where: str, shape: tuple = ()) -> np.ndarray:
     """A student's value (number, exact string, nested lists) as a float array; a string
     for a vector or matrix answer is split as ``--set`` splits it (``0,0,1;1,0,0;0,1,0``)."""
     if isinstance(v, str) and shape and ("," in v or ";" in v):
-        return _as_array(split_text(shape, v), where)
+        rows = ";" in v and len(shape) == 1           # a column typed as rows: 1;2;3
+        return _as_array(split_text((shape[0], 1) if rows else shape, v), where)
     if isinstance(v, str) and v.strip().lower() in _TRUTH:
         return np.array(_TRUTH[v.strip().lower()])
     if isinstance(v, bool):
