@@ -9,7 +9,11 @@ for a list, its order; the answer's column name in the class's answers CSV follo
 
 from __future__ import annotations
 
-__all__ = ["task", "box_label", "TASKS", "BOXES"]
+__all__ = ["task", "box_label", "TASKS", "BOXES", "ASKED"]
+
+#: exercise -> the answers a handout asks (default: every answer that is a value); 3.10's
+#: table of all twelve sequences stays in the key
+ASKED = {"ex3.10": ("W", "W_body", "det_W", "W_inverse")}
 
 #: exercise -> the task, stated on "the data below" (no number of the book's)
 TASKS = {

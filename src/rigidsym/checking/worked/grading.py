@@ -23,7 +23,7 @@ import sympy as sp
 
 from .worked_numbers import read_text, split_text
 
-__all__ = ["grade", "Graded", "RTOL", "SLIPS", "is_blank", "answer_shape"]
+__all__ = ["grade", "Graded", "RTOL", "SLIPS", "is_blank", "answer_shape", "gradeable"]
 
 #: relative tolerance: an answer is right within 0.1 % of its largest entry
 RTOL = 1e-3
@@ -191,18 +191,121 @@ def grade(solution, answers: dict, slips: dict | None = None,
     out = []
     for name, right in solution.answers.items():
         given = answers.get(name)
-        if isinstance(right, str):
+        if isinstance(right, str) or not gradeable(right):
             if name in answers:
-                out.append(Graded(name, None, None, right, "an answer in words: not graded "
-                                                          "by machine"))
+                out.append(Graded(name, None, None, to_json_value(right),
+                                  "an answer in words or a set: not graded by machine"))
             continue
         if is_blank(given):
             out.append(Graded(name, False, None, to_json_value(right),
                               "missing: no answer given", missing=True))
             continue
+        if _symbols(right):
+            out.append(_grade_expression(name, given, right))
+            continue
         out.append(_grade_one(name, given, right, to_json_value(right),
                               (slips or {}).get(name, []), replayed))
     return out
+
+
+def gradeable(right) -> bool:
+    """A number, a truth, an expression or a matrix of them (not a set, not words)."""
+    if isinstance(right, sp.MatrixBase):
+        return all(isinstance(x, sp.Expr) for x in right)
+    return right in (sp.true, sp.false) or isinstance(right, sp.Expr)
+
+
+def _symbols(right) -> list:
+    """The free symbols of an answer that is an expression (3.10's W in the angles)."""
+    if right in (sp.true, sp.false):
+        return []
+    return sorted(right.free_symbols, key=str)
+
+
+#: the points at which an expression answer is compared (angles in radians, generic)
+_POINTS = ((0.3, -0.7, 1.1, 0.45), (1.3, 0.4, -0.9, -1.2), (-0.8, 1.7, 0.25, 0.6))
+_FUNCTIONS = {"sin": sp.sin, "cos": sp.cos, "tan": sp.tan, "sqrt": sp.sqrt, "pi": sp.pi,
+              "sec": sp.sec, "csc": sp.csc, "cot": sp.cot}
+
+
+def _parse_expression(text: str, names: dict, where: str) -> sp.Expr:
+    """A student's expression in the answer's own symbols and a few functions: checked
+    character by character and name by name before sympy reads it (nothing else runs)."""
+    import re
+
+    t = text.strip().replace("^", "**")
+    if len(t) > 400 or not re.fullmatch(r"[\w\s+\-*/().]*", t):
+        raise ValueError(f"{where}: {text!r} is not an expression (allowed: numbers, "
+                         f"{', '.join(sorted(names))}, {', '.join(sorted(_FUNCTIONS))}, "
+                         f"+ - * / ^ and brackets)")
+    for n in re.findall(r"[A-Za-z_]\w*", t):
+        if n not in names and n not in _FUNCTIONS:
+            raise ValueError(f"{where}: {n!r} is neither a symbol of the answer "
+                             f"({', '.join(sorted(names))}) nor a known function")
+    if "__" in t:
+        raise ValueError(f"{where}: {text!r} is not an expression")
+    return sp.sympify(t, locals={**_FUNCTIONS, **names})
+
+
+def _grade_expression(name, given, right) -> Graded:
+    """An answer that is an expression (or a matrix of them) in symbols: the student's
+    expression equals it at three generic points within the tolerance; the slips of the
+    final answer are tried as for numbers, at every point alike."""
+    syms = _symbols(right)
+    names = {str(s): s for s in syms}
+    shown = to_json_value_light(right)
+    shape = answer_shape(right)
+    try:
+        g = _expressions(given, shape, names, name)
+        G = np.array([_at(g, syms, pt) for pt in _POINTS])
+    except (ValueError, TypeError, ZeroDivisionError, sp.SympifyError) as exc:
+        return Graded(name, False, None, shown, f"not read: {exc}")
+    E = np.array([_at(right, syms, pt) for pt in _POINTS])
+    if G.size == E.size and G.shape != E.shape:
+        G = G.reshape(E.shape)
+    scale = max(float(np.max(np.abs(E))), 1e-300)
+    tol = (f"equal at {len(_POINTS)} generic values of {', '.join(names)}, within "
+           f"{RTOL:g} x {scale:.3g}")
+    if _close(G, E, scale):
+        return Graded(name, True, None, shown, tol)
+    per_point = [list(_candidates(E[k], name, [])) for k in range(len(_POINTS))]
+    for i, (word, detail, _) in enumerate(per_point[0]):
+        if all(i < len(c) and c[i][:2] == (word, detail)
+               and _close(G[k], c[i][2], max(scale, float(np.max(np.abs(c[i][2])))))
+               for k, c in enumerate(per_point)):
+            return Graded(name, False, word, shown, f"matches {detail}")
+    return Graded(name, False, None, shown, f"not {tol}, and not a known slip")
+
+
+def _expressions(v, shape, names, where):
+    if isinstance(v, str) and shape and ("," in v or ";" in v):
+        rows = ";" in v and len(shape) == 1
+        v = split_text((shape[0], 1) if rows else shape, v)
+    if isinstance(v, list | tuple):
+        return sp.Matrix([_expressions(x, (), names, where) if not isinstance(x, list | tuple)
+                          else [_expressions(y, (), names, where) for y in x] for x in v])
+    if isinstance(v, bool):
+        raise TypeError(f"{where}: expected an expression, got a truth")
+    if isinstance(v, int | float):
+        return sp.Float(v) if isinstance(v, float) else sp.Integer(v)
+    if isinstance(v, str):
+        return _parse_expression(v, names, where)
+    raise TypeError(f"{where}: expected an expression or nested lists of them, got "
+                    f"{type(v).__name__}")
+
+
+def _at(expr, syms, point) -> np.ndarray:
+    vals = {s: point[k % len(point)] for k, s in enumerate(syms)}
+    e = expr.subs(vals) if syms else expr
+    out = np.array(sp.N(e, 17).tolist() if isinstance(e, sp.MatrixBase) else sp.N(e, 17),
+                   dtype=float)
+    return out
+
+
+def to_json_value_light(v):
+    """The expected answer as the key writes it (``str`` of sympy values)."""
+    from .worked_render import to_json_value
+    return to_json_value(v)
 
 
 class _Replays:
