@@ -177,9 +177,11 @@ def exam(spec, out_dir: str | Path, seed: int | None = None) -> dict[str, Path]:
 
     The spec (a TOML file, or the same as a dict) lists ``[[problem]]`` tables: an
     ``exercise`` with its ``data``, or ``variants = n`` random well-posed variants drawn
-    from the seed with readable exact numbers (Exercises 3.1, 3.2, 3.4, 3.5, 3.7, 3.10,
-    3.11, 3.12, 3.14, 3.19: Cayley rotations of small rationals, Pythagorean unit vectors,
-    small integers, short decimals). See ``docs/exams.md``.
+    from the seed, for every exercise: readable exact numbers (Cayley rotations of small
+    rationals, Pythagorean unit vectors, small integers, short decimals), or, for the
+    proofs, true-or-false statements decided by the zero test. A class from a roster:
+    ``rigidsym exam SPEC --students ROSTER`` (:mod:`rigidsym.report.course`). See
+    ``docs/exams.md``.
 
     Args:
         spec: a ``.toml`` path or a dict (``title``, ``seed``, ``problem``).

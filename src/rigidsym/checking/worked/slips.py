@@ -66,7 +66,7 @@ def data_slips(ex_id: str, data: dict, every: bool = False) -> list[tuple[str, s
     frames: dict[str, dict[str, str]] = {}
     for p in params:
         m = _FRAME.match(p.name)
-        if m:
+        if m and ("frame" in p.meaning or "observer" in p.meaning):
             frames.setdefault(m.group(2), {})[m.group(1)] = p.name
     tags = sorted(frames)
     for i, a in enumerate(tags):
@@ -103,15 +103,30 @@ def replays(solution):
             yield word, detail, s.answers
 
 
-def slip_list(ex_id: str) -> list[str]:
-    """The slips the grader replays for ``ex_id`` on the book's data, as words (for the
-    docs' table): ``["transpose: Q used for Q^T along the way", ...]``."""
-    from rigidsym.checking.worked import exercise_module, parameters
+def slip_list(ex_id: str) -> str:
+    """The slips the grader tries for ``ex_id`` beyond the final answer's edits, in one
+    line (the docs' table): the data slips of :func:`data_slips` on the book's data, grouped
+    by word, then the exercise's own (its module's ``slips``), or "-"."""
+    from rigidsym.checking.worked import exercise_module, parameters, solve
 
-    data = parameters(ex_id).defaults()
-    data = {k: sp.Matrix(v) if isinstance(v, sp.MatrixBase) else v for k, v in data.items()}
-    out = [f"{w}: {d.split(' (')[0]}" for w, d, _ in data_slips(ex_id, data, every=True)]
-    mod = exercise_module(ex_id)
-    if hasattr(mod, "slips"):
-        out.append("reference point, sign of a term: the exercise's own (slips())")
-    return out
+    data = {k: sp.Matrix(v) if isinstance(v, sp.MatrixBase) else v
+            for k, v in parameters(ex_id).defaults().items()}
+    groups: dict[str, list[str]] = {}
+    for word, detail, _ in data_slips(ex_id, data, every=True):
+        cut = {"transpose": (" along", 0), "unit": (" typed", 0),
+               "sign": (" along", 0), "frame": (" swapped", 0)}[word][0]
+        what = detail.split(cut)[0].removeprefix("the sign of ")
+        if what not in groups.setdefault(word, []):
+            groups[word].append(what)
+    words = {"transpose": "transpose", "unit": "unit (mm, cm for m)", "sign": "sign",
+             "frame": "frame"}
+    parts = [f"{words[w]}: {', '.join(v)}" for w, v in groups.items()]
+    own = getattr(exercise_module(ex_id), "slips", None)
+    if own:
+        found = []
+        for items in own(solve(ex_id)).values():
+            for w, d, _ in items:
+                if f"{w}: {d}" not in found:
+                    found.append(f"{w}: {d}")
+        parts.append("its own: " + "; ".join(found))
+    return "; ".join(parts) or "-"
