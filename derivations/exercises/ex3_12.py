@@ -164,10 +164,11 @@ def _draw_cut(ax, a, S) -> None:
 
 
 def random_data(rng) -> dict:
-    """A variant with readable sizes in metres (an exam's draw): the side a and a height h
-    of 2, 2.5, 3 or 4 sides, so that h >= a sqrt(3) and the cut leaves through a side face."""
+    """A variant with readable sizes in metres (an exam's draw): the side a (1 to 10 cm)
+    and a height h of 2 to 6 sides, so that h >= a sqrt(3) and the cut leaves through a
+    side face; 50 variants."""
     from decimal import Decimal
 
-    a = rng.choice(["0.02", "0.03", "0.04", "0.05", "0.1"])
-    k = rng.choice(["2", "2.5", "3", "4"])
+    a = rng.choice([f"0.{k:02d}" for k in range(1, 10)] + ["0.1"])
+    k = rng.choice(["2", "3", "4", "5", "6"])
     return {"a": a, "h": format((Decimal(a) * Decimal(k)).normalize(), "f")}

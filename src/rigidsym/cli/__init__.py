@@ -1,5 +1,5 @@
-"""The ``rigidsym`` command: verify, report, show, check, exercise, generate, build-c, cache,
-glossary.
+"""The ``rigidsym`` command: verify, report, show, check, exercise, exam, grade, generate,
+build-c, cache, glossary.
 
 Exit codes: 0 = all as expected, 1 = some computed verdict differs from its expectation,
 2 = bad input (a one-line message naming what was expected and, where there is one, the
@@ -20,6 +20,7 @@ from rigidsym.cli import (
     exercise,
     generate,
     glossary,
+    grade,
     report,
     show,
     verify,
@@ -32,7 +33,7 @@ __all__ = ["main", "build_parser"]
 #: (and optionally ``EXAMPLES``, shown under the command's own ``--help``)
 _COMMANDS = {"verify": verify, "report": report, "show": show, "check": check,
              "exercise": exercise,
-             "exam": exam,
+             "exam": exam, "grade": grade,
              "generate": generate.GENERATE, "build-c": generate.BUILD_C, "cache": cache,
              "glossary": glossary}
 
