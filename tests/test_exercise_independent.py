@@ -4,7 +4,7 @@ degenerate configurations included -- agrees with an independent solution in pla
 exactly where the independent solution finds no answer or more than one.
 
 The default run draws a few data sets per exercise (derandomised, seconds); ``-m slow``
-draws 200 for 3.1, 3.4, 3.5, 3.7 and 3.19; 60 for 3.2 and 3.10; 50 for 3.11; 25 for 3.12
+draws 200 for 3.1, 3.4, 3.5, 3.7, 3.14 and 3.19; 60 for 3.2 and 3.10; 50 for 3.11; 25 for 3.12
 (an exact solve of the prisms takes 2-8 s, one of 3.10 at given angles 0.2 s of CPU but
 3 s of wall on a loaded 2-core machine; the prisms' data repeat, 72 pairs of sizes).
 """
@@ -328,11 +328,40 @@ def check_ex3_10(data):
     assert _close(_f(s.answers["eta_dot"]), np.linalg.solve(W, omega), 1e-6)
 
 
+@st.composite
+def ex3_14_data(draw):
+    """One diagonal of small integers (repeated moments, the flat-plate limit and the
+    triangle inequality broken too) seen in two drawn frames; or another diagonal, or a
+    non-symmetric entry."""
+    d = draw(st.sampled_from([(1, 2, 3), (2, 3, 4), (1, 1, 2), (2, 2, 2), (1, 1, 1),
+                              (1, 2, 4), (3, 4, 5), (0, 1, 1)]))
+    QA, QB = draw(rotations()), draw(rotations())
+    IA = QA * sp.diag(*d) * QA.T
+    dB = draw(st.sampled_from([d, d, d[::-1], (d[0], d[1], d[2] + 1)]))
+    IB = QB * sp.diag(*dB) * QB.T
+    if draw(st.integers(0, 6)) == 0:
+        IA = IA + sp.Matrix([[0, 1, 0], [0, 0, 0], [0, 0, 0]])
+    return {"I_A": IA.tolist(), "I_B": IB.tolist()}
+
+
+def check_ex3_14(data):
+    s = ex.solve("ex3.14", **data)
+    IA, IB = _m(data["I_A"]), _m(data["I_B"])
+    if motions.inertia_pair(IA, IB) == "ill-posed":
+        assert s.status == "ill-posed", (data, s.answers)
+        return
+    assert s.status == "solved" and s.checked, (data, s.reason)
+    Q = _m(s.answers["Q_B_A"])
+    assert _close(Q.T @ Q, np.eye(3)) and abs(np.linalg.det(Q) - 1) < 1e-9
+    assert _close(Q @ IA @ Q.T, IB, 1e-7), (data, Q)
+
+
 CASES = {"ex3.1": (ex3_1_data, check_ex3_1, 2, 200),
          "ex3.2": (ex3_2_data, check_ex3_2, 0, 60),
          "ex3.4": (ex3_4_data, check_ex3_4, 2, 200),
          "ex3.5": (ex3_5_data, check_ex3_5, 2, 200),
          "ex3.7": (ex3_7_data, check_ex3_7, 4, 200),
+         "ex3.14": (ex3_14_data, check_ex3_14, 1, 200),
          "ex3.19": (ex3_19_data, check_ex3_19, 2, 200),
          "ex3.10": (ex3_10_data, check_ex3_10, 1, 60),
          "ex3.11": (ex3_11_data, check_ex3_11, 0, 50),

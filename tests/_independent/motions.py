@@ -130,3 +130,18 @@ def euler_rate_matrix(seq: str, eta, h: float = 1e-6):
         Qd = (Q(eta + d) - Q(eta - d)) / (2 * h)
         cols.append(_vect(Qd @ Q(eta).T))
     return np.column_stack(cols)
+
+
+def inertia_pair(IA, IB):
+    """3.14 (exact data): ``"ill-posed"`` or ``"solved"``: the same inertia matrix in two
+    frames iff both are symmetric with equal eigenvalues, positive, obeying I_1 + I_2 >=
+    I_3 (sorted)."""
+    IA, IB = np.asarray(IA, float), np.asarray(IB, float)
+    if not (np.allclose(IA, IA.T, atol=TOL) and np.allclose(IB, IB.T, atol=TOL)):
+        return "ill-posed"
+    la, lb = np.linalg.eigvalsh(IA), np.linalg.eigvalsh(IB)
+    if not np.allclose(la, lb, atol=1e-9):
+        return "ill-posed"
+    if la[0] <= TOL or la[0] + la[1] < la[2] - 1e-9:
+        return "ill-posed"
+    return "solved"
