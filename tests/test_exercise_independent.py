@@ -363,7 +363,7 @@ CASES = {"ex3.1": (ex3_1_data, check_ex3_1, 2, 200),
          "ex3.7": (ex3_7_data, check_ex3_7, 4, 200),
          "ex3.14": (ex3_14_data, check_ex3_14, 1, 200),
          "ex3.19": (ex3_19_data, check_ex3_19, 2, 200),
-         "ex3.10": (ex3_10_data, check_ex3_10, 1, 60),
+         "ex3.10": (ex3_10_data, check_ex3_10, 0, 60),
          "ex3.11": (ex3_11_data, check_ex3_11, 0, 50),
          "ex3.12": (ex3_12_data, check_ex3_12, 0, 25)}
 
