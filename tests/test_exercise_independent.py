@@ -4,7 +4,7 @@ degenerate configurations included -- agrees with an independent solution in pla
 exactly where the independent solution finds no answer or more than one.
 
 The default run draws a few data sets per exercise (derandomised, seconds); ``-m slow``
-draws 200 for 3.1, 3.4, 3.5, 3.7, 3.14 and 3.19; 60 for 3.2 and 3.10; 50 for 3.11; 25 for 3.12
+draws 200 for 3.1, 3.4, 3.5, 3.7, 3.14 and 3.19; 60 for 3.2, 3.6 and 3.10; 50 for 3.11; 25 for 3.12
 (an exact solve of the prisms takes 2-8 s, one of 3.10 at given angles 0.2 s of CPU but
 3 s of wall on a loaded 2-core machine; the prisms' data repeat, 72 pairs of sizes).
 """
@@ -356,10 +356,37 @@ def check_ex3_14(data):
     assert _close(Q @ IA @ Q.T, IB, 1e-7), (data, Q)
 
 
+@st.composite
+def ex3_6_data(draw):
+    """A face normal (all one sign, or a zero or mixed-sign component), a diagonal (along
+    the normal too), C' and P of small integers."""
+    n = draw(st.sampled_from([(1, 1, 1), (1, 2, 2), (-1, -1, -1), (2, 1, 3), (1, 0, 1),
+                              (1, -1, 1)]))
+    CCp = draw(st.one_of(small_vectors(), st.just(sp.Matrix(n))))
+    return {"face_normal": list(n), "CC_prime": list(CCp),
+            "C_prime": list(draw(small_vectors())), "p": list(draw(small_vectors()) / 4)}
+
+
+def check_ex3_6(data):
+    s = ex.solve("ex3.6", **data)
+    kind, want = motions.grasp_screw(*(_f(sp.Matrix(data[k]))
+                                       for k in ("face_normal", "CC_prime", "C_prime", "p")))
+    if kind == "ill-posed":
+        assert s.status == "ill-posed", (data, want, s.answers)
+        return
+    assert s.status == "solved" and s.checked, (data, s.reason)
+    Q, phi, e, p0, half = want
+    assert _close(_m(s.answers["Q"]), Q) and abs(float(s.answers["phi"]) - phi) < 1e-9
+    e_got = _f(s.answers["e"])
+    assert _close(e_got, e) or half and _close(e_got, -e), (data, e_got, e)
+    assert _close(_f(s.answers["axis_point_p0"]), p0), (data, p0)
+
+
 CASES = {"ex3.1": (ex3_1_data, check_ex3_1, 2, 200),
          "ex3.2": (ex3_2_data, check_ex3_2, 0, 60),
          "ex3.4": (ex3_4_data, check_ex3_4, 2, 200),
          "ex3.5": (ex3_5_data, check_ex3_5, 2, 200),
+         "ex3.6": (ex3_6_data, check_ex3_6, 0, 60),
          "ex3.7": (ex3_7_data, check_ex3_7, 4, 200),
          "ex3.14": (ex3_14_data, check_ex3_14, 1, 200),
          "ex3.19": (ex3_19_data, check_ex3_19, 2, 200),

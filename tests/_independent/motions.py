@@ -145,3 +145,33 @@ def inertia_pair(IA, IB):
     if la[0] <= TOL or la[0] + la[1] < la[2] - 1e-9:
         return "ill-posed"
     return "solved"
+
+
+def grasp_screw(face_normal, CCp, Cp, p):
+    """3.6: ``("ill-posed", why)`` or ``("solved", (Q, phi, e, p0, half_turn))``: the grasp
+    frame [i'', j'', k''] (i'' along the face normal with positive components, j'' normal to
+    i'' and CC' with a positive Z component) and the screw taking P to C'."""
+    d, CCp, Cp, p = (np.asarray(v, float) for v in (face_normal, CCp, Cp, p))
+    if not (np.all(d > 0) or np.all(d < 0)):
+        return "ill-posed", "signs"
+    i2 = np.abs(d) / np.linalg.norm(d)
+    j = np.cross(i2, CCp)
+    if np.linalg.norm(j) < TOL:
+        return "ill-posed", "normal to the faces"
+    j2 = j / np.linalg.norm(j)
+    if abs(j2[2]) < TOL:
+        return "ill-posed", "zero Z"
+    j2 = j2 if j2[2] > 0 else -j2
+    Q = np.column_stack([i2, j2, np.cross(i2, j2)])
+    if np.allclose(Q, np.eye(3), atol=TOL):
+        return "ill-posed", "translation"
+    w, V = np.linalg.eig(Q)
+    e = np.real(V[:, np.argmin(abs(w - 1))])
+    e /= np.linalg.norm(e)
+    s = e @ _vect(Q)
+    if s < 0:
+        e, s = -e, -s
+    phi = np.arctan2(s, (np.trace(Q) - 1) / 2)
+    c = Cp - Q @ p
+    p0 = np.linalg.pinv(np.eye(3) - Q) @ (c - (e @ c) * e)
+    return "solved", (Q, phi, e, p0, abs(s) < 1e-7)
