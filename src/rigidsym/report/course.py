@@ -126,14 +126,19 @@ def class_exam(spec, roster: str | Path, out_dir: str | Path,
     out = Path(out_dir)
     taken: dict = {}
     records, work, columns = [], [], {}
+    slugs: set[str] = set()
     for st in students:                 # drawn in order: each differs from those before
+        slug = _slug(st["name"])
+        while slug in slugs:            # "Amy Ames" and "Amy-Ames": two files
+            slug += "_"
+        slugs.add(slug)
         own = student_seed(seed, st["name"])
         drawn = _exam._drawn(spec, own, taken)
         sols = [s for s, _ in drawn]
         version = version_of(sols)
         head = _head(title, st, own, version)
         work.append((f"{title}: {st['name']}", sols, head,
-                     out / "handouts" / f"{_slug(st['name'])}.html"))
+                     out / "handouts" / f"{slug}.html"))
         problems = []
         for n, (s, k) in enumerate(drawn, 1):
             rec = dict(solution_record(s), problem=n, spec_problem=k, weight=weights[k - 1],
@@ -144,7 +149,7 @@ def class_exam(spec, roster: str | Path, out_dir: str | Path,
                 columns[f"P{n}.{a}"] = None
         records.append({"student": st["name"], "id": st["id"], "email": st["email"],
                         "seed": own, "version": version,
-                        "handout": f"handouts/{_slug(st['name'])}.html",
+                        "handout": f"handouts/{slug}.html",
                         "problems": problems})
     keys_html = _render_all(work)
     key = {**document_header(), "title": title, "seed": seed,
