@@ -64,6 +64,9 @@ def build_parser() -> argparse.ArgumentParser:
     """
     p = argparse.ArgumentParser(prog="rigidsym", description=DESCRIPTION, epilog=EPILOG,
                                 formatter_class=HelpFormatter)
+    p.add_argument("--ascii", action="store_true", dest="ascii_all",
+                   help="plain ASCII output for every command (as the commands' own "
+                        "--ascii; default: off)")
     sub = p.add_subparsers(dest="command", required=True, title="commands",
                            metavar="COMMAND")
     for name, cmd in _COMMANDS.items():
@@ -103,6 +106,8 @@ def main(argv: list[str] | None = None) -> int:
         sp_.error = _error(f"rigidsym {name} --help lists its options")
     args = parser.parse_args(argv)
     from rigidsym.checking.deciding.registry import BadInput
+    if getattr(args, "ascii_all", False):   # rigidsym --ascii COMMAND: as COMMAND --ascii
+        args.ascii = True
     with ascii_output(getattr(args, "ascii", False)):
         try:
             code = args.func(args)
