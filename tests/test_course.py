@@ -148,6 +148,15 @@ def test_grading_a_class_names_slips_counts_blanks_and_exits_nonzero(made, capsy
     assert float(book["Bob Burr"]["Problem 1"]) == pytest.approx(2 * 1.5 / 3, abs=1e-3)
     assert float(book["Cy Cole"]["Total"]) == 0
     assert book["Amy Ames"]["ID number"] == "1001"
+    # the exam's own answer files: a folder of <handout's stem>.json, {"P1": {...}}
+    folder = d / "files"
+    folder.mkdir()
+    mine = {f"P{p['problem']}": {a: p["answers"][a] for a in p["asked"]}
+            for p in key["students"][0]["problems"]}
+    (folder / "Amy_Ames.json").write_text(json.dumps(mine))
+    assert main(["grade", str(d / "out"), str(folder)]) == 1      # Bob and Cy: missing
+    rows = list(csv.DictReader((d / "out" / "grades.csv").open()))
+    assert all(r["status"] == "right" for r in rows if r["student"] == "Amy Ames")
     assert book["Amy Ames"]["Email address"] == "amy@example.org"
 
 
