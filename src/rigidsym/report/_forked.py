@@ -1,11 +1,12 @@
 """Map a function over ``range(n)`` in forked worker processes (a class's handouts, its
 grades): the work is set up in this process and the workers inherit it by ``fork``; where
-the platform cannot fork, or one core is all there is, the map runs here."""
+the platform is not Linux, or one core is all there is, the map runs here."""
 
 from __future__ import annotations
 
 import multiprocessing as mp
 import os
+import sys
 from collections.abc import Callable
 
 __all__ = ["forked_map", "jobs"]
@@ -30,7 +31,8 @@ def forked_map(fn: Callable[[int], object], n: int) -> list:
     """``[fn(0), ..., fn(n - 1)]``, in order; ``fn`` may read anything this process holds
     (the workers are forks of it). Every worker has ended when it returns."""
     k = jobs(n)
-    if k == 1 or "fork" not in mp.get_all_start_methods():
+    # fork only on Linux: macOS's system libraries are not fork-safe (Python's own warning)
+    if k == 1 or not sys.platform.startswith("linux"):
         return [fn(i) for i in range(n)]
     from concurrent.futures import ProcessPoolExecutor
 
