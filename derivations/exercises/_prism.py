@@ -8,6 +8,8 @@ integral of a polynomial (density 1).
 
 from __future__ import annotations
 
+import functools
+
 import sympy as sp
 
 x, y, z = sp.symbols("x y z", real=True)
@@ -44,10 +46,30 @@ def integrate_pieces(f, pieces, a=A_SIDE):
     return sp.radsimp(sp.expand(total))
 
 
+_SIDE, _HEIGHT = sp.symbols("a_side h_height", positive=True)
+
+
+@functools.cache
+def _whole_prism():
+    """The whole prism's mass properties once, in a symbolic side and height."""
+    return _mass_properties(0, _HEIGHT, _SIDE, None)
+
+
 def mass_properties(zlo, zhi, a=A_SIDE, pieces=None):
     """Volume V, centroid c, centroidal inertia per unit density I_C / rho (exact), and the
     inertia about O; of the part ``zlo(y) <= z <= zhi(y)``, or of ``pieces`` (see
-    :func:`integrate_pieces`) when given."""
+    :func:`integrate_pieces`) when given. The whole prism (``zlo = 0``, ``zhi = h``, no
+    pieces) is integrated once in a symbolic side and height and evaluated at the numbers
+    (the same exact values; a class of 30 prisms integrates once)."""
+    if pieces is None and zlo == 0 and all(sp.sympify(v).is_Number for v in (zhi, a)):
+        at = {_SIDE: a, _HEIGHT: zhi}
+        return tuple(sp.sympify(v).subs(at).applyfunc(lambda e: sp.radsimp(sp.expand(e)))
+                     if isinstance(v, sp.MatrixBase) else sp.radsimp(sp.expand(v.subs(at)))
+                     for v in _whole_prism())
+    return _mass_properties(zlo, zhi, a, pieces)
+
+
+def _mass_properties(zlo, zhi, a, pieces):
     if pieces is None:
         s = a * sp.sqrt(3) / 2
         pieces = [(-s, s, zlo, zhi)]

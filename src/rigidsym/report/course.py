@@ -124,29 +124,53 @@ def class_exam(spec, roster: str | Path, out_dir: str | Path,
     weights = [float(p.get("weight", 1)) for p in spec["problem"]]
     students = read_roster(roster)
     out = Path(out_dir)
-    taken: dict = {}
-    records, work, columns = [], [], {}
-    for st in students:                 # drawn in order: each differs from those before
-        own = student_seed(seed, st["name"])
+    slugs: list[str] = []
+    for st in students:
+        slug = _slug(st["name"])
+        while slug in slugs:            # "Amy Ames" and "Amy-Ames": two files
+            slug += "_"
+        slugs.append(slug)
+    seeds = [student_seed(seed, st["name"]) for st in students]
+    slots = _slots(spec)
+
+    def make(i: int, taken: dict | None = None) -> dict:
+        """Student i's exam: drawn (against ``taken``: the draws of the students before
+        i), its handout written; its key record and section, and its drawn data keys."""
+        st, own = students[i], seeds[i]
         drawn = _exam._drawn(spec, own, taken)
         sols = [s for s, _ in drawn]
         version = version_of(sols)
         head = _head(title, st, own, version)
-        work.append((f"{title}: {st['name']}", sols, head,
-                     out / "handouts" / f"{_slug(st['name'])}.html"))
-        problems = []
-        for n, (s, k) in enumerate(drawn, 1):
-            rec = dict(solution_record(s), problem=n, spec_problem=k, weight=weights[k - 1],
-                       asked=_exam.asked(s),
-                       labels={a: box_label(s.id, a) for a in _exam.asked(s)})
-            problems.append(rec)
-            for a in _exam.asked(s):
-                columns[f"P{n}.{a}"] = None
-        records.append({"student": st["name"], "id": st["id"], "email": st["email"],
-                        "seed": own, "version": version,
-                        "handout": f"handouts/{_slug(st['name'])}.html",
-                        "problems": problems})
-    keys_html = _render_all(work)
+        write_atomic(out / "handouts" / f"{slugs[i]}.html",
+                     _exam._handout(f"{title}: {st['name']}", sols, head, columns=True))
+        problems = [dict(solution_record(s), problem=n, spec_problem=k,
+                         weight=weights[k - 1], asked=_exam.asked(s),
+                         labels={a: box_label(s.id, a) for a in _exam.asked(s)})
+                    for n, (s, k) in enumerate(drawn, 1)]
+        return {"record": {"student": st["name"], "id": st["id"], "email": st["email"],
+                           "seed": own, "version": version,
+                           "handout": f"handouts/{slugs[i]}.html", "problems": problems},
+                "section": _key_section(head, sols),
+                "drawn": [(slot, _exam._key(s)) for slot, s in zip(slots, sols, strict=True)
+                          if slot is not None]}
+
+    from rigidsym.report._forked import forked_map
+
+    # every student drawn at once (forked workers: the solves and figures), then, in roster
+    # order, a student whose draw repeats an earlier student's is drawn again here against
+    # the draws before it: the same exams as drawing one student after another
+    made = forked_map(make, len(students))
+    taken: dict = {}
+    for i, m in enumerate(made):
+        if any(key in taken.get(slot, ()) for slot, key in m["drawn"]):
+            made[i] = make(i, taken)
+        else:
+            for slot, key in m["drawn"]:
+                taken.setdefault(slot, set()).add(key)
+    records = [m["record"] for m in made]
+    keys_html = [m["section"] for m in made]
+    columns = {f"P{p['problem']}.{a}": None for r in records for p in r["problems"]
+               for a in p["asked"]}
     key = {**document_header(), "title": title, "seed": seed,
            "slip_credit": float(spec.get("slip_credit", 0)), "students": records}
     return {
@@ -160,45 +184,13 @@ def class_exam(spec, roster: str | Path, out_dir: str | Path,
     }
 
 
-_WORK: list = []
-
-
-def _render(i: int) -> str:
-    """Write student ``i``'s handout (figures drawn here: the costly part) and return the
-    student's section of the key."""
-    title, sols, head, path = _WORK[i]
-    write_atomic(path, _exam._handout(title, sols, head, columns=True))
-    return _key_section(head, sols)
-
-
-def _jobs(n: int) -> int:
-    """Worker processes for ``n`` handouts: the cores this process may use, at most 8."""
-    import os
-
-    try:
-        cores = len(os.sched_getaffinity(0))
-    except AttributeError:              # not Linux
-        cores = os.cpu_count() or 1
-    return max(1, min(cores, 8, n))
-
-
-def _render_all(work: list) -> list[str]:
-    """Every handout written, the key's sections returned in order; in forked worker
-    processes where the platform forks (the figures dominate: 0.3 s each), else here."""
-    import multiprocessing as mp
-
-    global _WORK
-    _WORK = work
-    try:
-        jobs = _jobs(len(work))
-        if jobs == 1 or "fork" not in mp.get_all_start_methods():
-            return [_render(i) for i in range(len(work))]
-        from concurrent.futures import ProcessPoolExecutor
-
-        with ProcessPoolExecutor(jobs, mp_context=mp.get_context("fork")) as pool:
-            return list(pool.map(_render, range(len(work))))
-    finally:
-        _WORK = []
+def _slots(spec: dict) -> list:
+    """The draw slot ``(spec problem, variant)`` of each problem of an exam, in order;
+    ``None`` for a problem on given data (the same for every student)."""
+    out = []
+    for k, p in enumerate(spec["problem"], 1):
+        out += [(k, v) for v in range(int(p["variants"]))] if "variants" in p else [None]
+    return out
 
 
 def _key_section(head: str, sols: list) -> str:

@@ -100,8 +100,6 @@ def grade_class(out_dir: str | Path, answers: str | Path) -> dict:
         ValueError: no ``key.json`` in ``out_dir``, unreadable answers, a student not in
             the key, or a column ``P<k>.<name>`` that is no box of the exam.
     """
-    from rigidsym.checking.worked.grading import grade
-
     folder = Path(out_dir)
     try:
         key = json.loads((folder / "key.json").read_text(encoding="utf-8"))
@@ -120,34 +118,15 @@ def grade_class(out_dir: str | Path, answers: str | Path) -> dict:
             raise ValueError(f"answers: {who}: {bad[0]!r} is no answer box of this exam "
                              f"(columns are P<problem>.<answer>, as in answers.csv)")
     credit = float(key.get("slip_credit", 0))
-    rows, book, lines, all_right = [], [], [], True
+    from rigidsym.report._forked import forked_map
+
     n_problems = max(len(r["problems"]) for r in key["students"])
-    for r in key["students"]:
-        ans = given.get(r["student"], {})
-        per_problem, wrong = [], []
-        for p in r["problems"]:
-            k = p["problem"]
-            mine = {a: ans.get(f"P{k}.{a}") for a in p["asked"]}
-            graded = [g for g in grade(solution_of(p), mine) if g.correct is not None]
-            share = p["weight"] / max(len(graded), 1)
-            total = 0.0
-            for g in graded:
-                score = 1.0 if g.correct else credit if g.slip else 0.0
-                total += share * score
-                status = "right" if g.correct else "missing" if g.missing else "wrong"
-                all_right &= status == "right"
-                if status != "right":
-                    wrong.append(f"P{k}.{g.name}: " + (g.slip or status if status == "wrong"
-                                                       else "missing"))
-                rows.append([r["student"], r["id"], r["version"], k, p["id"][2:], g.name,
-                             p["labels"].get(g.name, g.name), f"{share:.6g}",
-                             f"{share * score:.6g}", status, g.slip or "", g.detail])
-            per_problem.append(total)
-        book.append([r["id"], r["email"], r["student"], *[f"{x:.4g}" for x in per_problem],
-                     f"{sum(per_problem):.4g}"])
-        out_of = sum(p["weight"] for p in r["problems"])
-        lines.append(f"  {r['student']:24s} {sum(per_problem):6.3g} / {out_of:<4g} "
-                     f"{'; '.join(wrong) or 'all right'}")
+    done = forked_map(lambda i: _student(key["students"][i], given, credit),
+                      len(key["students"]))
+    rows = [row for d in done for row in d[0]]
+    book = [d[1] for d in done]
+    lines = [d[2] for d in done]
+    all_right = all(d[3] for d in done)
     grades = _csv([["student", "id", "version", "problem", "exercise", "answer", "label",
                     "max_points", "points", "status", "slip", "detail"], *rows])
     gradebook = _csv([["ID number", "Email address", "Full name",
@@ -156,6 +135,39 @@ def grade_class(out_dir: str | Path, answers: str | Path) -> dict:
             "gradebook": write_atomic(folder / "gradebook.csv", gradebook),
             "table": f"{key['title']}: {len(key['students'])} students\n" + "\n".join(lines),
             "all_right": all_right}
+
+
+def _student(r: dict, given: dict, credit: float) -> tuple:
+    """One student graded: (rows of grades.csv, the gradebook's row, the summary line,
+    every box right)."""
+    from rigidsym.checking.worked.grading import grade
+
+    ans = given.get(r["student"], {})
+    rows, per_problem, wrong, all_right = [], [], [], True
+    for p in r["problems"]:
+        k = p["problem"]
+        mine = {a: ans.get(f"P{k}.{a}") for a in p["asked"]}
+        graded = [g for g in grade(solution_of(p), mine) if g.correct is not None]
+        share = p["weight"] / max(len(graded), 1)
+        total = 0.0
+        for g in graded:
+            score = 1.0 if g.correct else credit if g.slip else 0.0
+            total += share * score
+            status = "right" if g.correct else "missing" if g.missing else "wrong"
+            all_right &= status == "right"
+            if status != "right":
+                wrong.append(f"P{k}.{g.name}: " + ((g.slip or status) if status == "wrong"
+                                                   else "missing"))
+            rows.append([r["student"], r["id"], r["version"], k, p["id"][2:], g.name,
+                         p["labels"].get(g.name, g.name), f"{share:.6g}",
+                         f"{share * score:.6g}", status, g.slip or "", g.detail])
+        per_problem.append(total)
+    book = [r["id"], r["email"], r["student"], *[f"{x:.4g}" for x in per_problem],
+            f"{sum(per_problem):.4g}"]
+    out_of = sum(p["weight"] for p in r["problems"])
+    line = (f"  {r['student']:24s} {sum(per_problem):6.3g} / {out_of:<4g} "
+            f"{'; '.join(wrong) or 'all right'}")
+    return rows, book, line, all_right
 
 
 def _csv(rows: list) -> str:
