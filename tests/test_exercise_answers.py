@@ -77,6 +77,27 @@ def test_cli_3_7_on_the_issue_data_exits_0():
     assert r.returncode == 0, r.stderr
 
 
+def test_ex3_10_evaluation_step_at_given_angles():
+    """The evaluation step alone (the full solve decides the twelve sequences' symbolic
+    checks first, 3-4 s of CPU: under -m slow below and in the property test)."""
+    from rigidsym.checking.worked import IllPosed, Solution, exercise_module
+
+    m = exercise_module("ex3.10")
+    W = m.euler_rate_matrix("ZXZ")
+    d = sp.trigsimp(W.det())
+    s = Solution("ex3.10", "t", "st", "cit")
+    m._evaluated(s, W, d, {"theta": sp.pi / 6, "phi": sp.pi / 4, "psi": 0}, V([0, 0, 1]))
+    assert s.answers["det_W_at"] == -sp.sqrt(2) / 2 and s.answers["eta_dot"] == V([1, 0, 0])
+    assert s.checked
+    lock = Solution("ex3.10", "t", "st", "cit")
+    with pytest.raises(IllPosed, match="infinitely many"):
+        m._evaluated(lock, W, d, {"theta": 0, "phi": 0, "psi": 0}, V([0, 0, 1]))
+    none = Solution("ex3.10", "t", "st", "cit")
+    with pytest.raises(IllPosed, match="no eta_dot"):      # W = [e_z, e_x, e_z] there
+        m._evaluated(none, W, d, {"theta": 0, "phi": 0, "psi": 0}, V([0, 1, 0]))
+
+
+@pytest.mark.slow      # the full solve: 3-4 s of CPU for the symbolic part, once
 def test_ex3_10_evaluated_at_given_angles():
     s = ex.solve("ex3.10", theta="30 deg", phi="pi/4", psi="0", omega=[0, 0, 1])
     assert s.status == "solved" and s.checked
