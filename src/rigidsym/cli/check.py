@@ -56,6 +56,9 @@ def add_arguments(c) -> None:
                    help="print the schema-2 record, with read_as and readings (default: "
                         "book notation as text)")
     add_repair_arguments(c)
+    c.add_argument("--repair-seconds", type=float, metavar="S", default=10.0,
+                   help="a time limit of the repair search, seconds; past it the verdict is "
+                        "printed with what was tried (default: 10)")
 
 
 def run(args) -> int:
@@ -68,14 +71,14 @@ def run(args) -> int:
     try:
         from rigidsym._progress import Reporter
         from rigidsym.api import _check_latex
-        from rigidsym.checking.runner import verdict_words
 
         opts = repair_options(args)
         with Reporter("rigidsym check", keep=False) as rep, \
                 rep.phase("reading and checking the LaTeX") as ph:  # no silent second
             r, reading = _check_latex(args.latex, args.let, args.book, args.module or (),
-                                      opts["repairs"], opts["repair_budget"], args.notation)
-            ph.finish(verdict_words(r))
+                                      opts["repairs"], opts["repair_budget"], args.notation,
+                                      args.repair_seconds)
+            ph.finish(f"{r.id} {r.verdict}")  # an ad-hoc check expects nothing (issue 52)
     except LatexError as exc:
         print(f"rigidsym: error: --latex: {exc}", file=sys.stderr)
         return 2
