@@ -210,11 +210,12 @@ def _lemma(name, lhs, rhs, D, mus, hyps) -> str:
         lines.append(f"  replace ({lhs} - ({rhs})) with ({comb}) by field.")
         lines.append(f"  {'rewrite ' + ', '.join(rew.split()) + '. ' if rew else ''}field.")
     else:
-        side = " | ".join([f"intro Z0; apply {n}; nra" for n in
-                           [p.split(" : ")[0] for p in premises if p.startswith("N")]]
+        side = " | ".join([f"intro Z0; apply {n}; ring_simplify in Z0; ring_simplify; lra"
+                           for n in [p.split(" : ")[0] for p in premises if p.startswith("N")]]
                           + ["lra"])
         lines.append(f"  assert (E : ({D}) * ({lhs} - ({rhs})) = {comb}) by "
-                     f"(field; repeat split; try assumption; solve [{side}]).")
+                     f"(first [field; repeat split; assumption | "
+                     f"field; repeat split; try assumption; solve [{side}]]).")
         if rew:
             lines.append(f"  rewrite {', '.join(rew.split())} in E.")
         lines.append(f"  assert (Z : ({D}) * ({lhs} - ({rhs})) = 0) by (rewrite E; field).")
