@@ -47,6 +47,16 @@ def test_json_says_certified(tmp_path, capsys):
                                   "evidence": ["counterexample", "cofactors"]}
 
 
+def test_show_says_certified(tmp_path, capsys):
+    """rigidsym show ID --certificates DIR: the verdict's certificate, and whether certcheck
+    re-checks it, under the explanation."""
+    rc = main(["show", "3.13", "--certificates", str(tmp_path)])
+    out = capsys.readouterr().out
+    assert rc == 0
+    assert f"Certificate (3.13): {tmp_path}/3.13.json (cofactors); re-checked by certcheck" \
+        in out, out
+
+
 def test_check_latex_certificate(tmp_path, capsys):
     """A reader's LaTeX (rigidsym check --latex): its verdict's certificate, re-checked."""
     f = tmp_path / "c.json"
