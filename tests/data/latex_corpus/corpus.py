@@ -15,7 +15,7 @@ HERE = Path(__file__).resolve().parent
 BOOKS = ("lynch_park", "murray_li_sastry", "siciliano", "spong", "corke", "featherstone",
          "craig", "barfoot", "sola",
          # issue 52: books the corpus did not cover, read with --let functions and models
-         "shuster", "diebel", "markley", "tsai", "mccarthy")
+         "shuster", "diebel", "markley", "tsai", "mccarthy", "goldstein", "selig")
 POINTS = 6  # random points per entry
 SEED = 40
 
