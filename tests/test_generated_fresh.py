@@ -85,6 +85,8 @@ def test_the_inputs_hold_the_declarations_templates_and_lazy_imports():
                  "rigidsym/codegen/jacobians.py"):
         assert must in labels, must
     assert not any(lab.startswith("rigidsym/generated") for lab in labels)
+    # the build record an install writes beside the extension differs on every machine
+    assert not any("_ckernels" in lab for lab in labels), sorted(labels)
 
 
 @pytest.mark.slow  # a whole generation (70 to 360 s of CPU); the default run compares digests

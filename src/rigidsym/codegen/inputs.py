@@ -41,6 +41,9 @@ ENTRY_MODULES = ("rigidsym.codegen.generator", "rigidsym.codegen.jacobians", KER
 #: the output and the manifest's own module's outputs: never inputs
 _NOT_INPUTS = ("rigidsym.generated",)
 _DATA_SUFFIXES = (".j2", ".json", ".lark", ".csv", ".txt", ".c", ".h")
+#: what a build writes beside the sources (the extension's build record, with its time): not
+#: an input, and different on every machine
+_BUILD_OUTPUTS = ("_ckernels",)
 
 _PKG = Path(__file__).resolve().parents[1]          # src/rigidsym
 
@@ -125,7 +128,8 @@ def input_files() -> tuple[Path, ...]:
     files = set(seen.values())
     for folder in {p.parent for p in seen.values()}:
         for p in folder.rglob("*"):
-            if p.is_file() and p.suffix in _DATA_SUFFIXES and "__pycache__" not in p.parts:
+            if p.is_file() and p.suffix in _DATA_SUFFIXES and "__pycache__" not in p.parts \
+                    and not p.name.startswith(_BUILD_OUTPUTS):
                 files.add(p)
     return tuple(sorted(files))
 
