@@ -8,6 +8,52 @@
 #include "rigidsym_c_impl.h"
 #include "rigidsym_c_body_energy.h"
 
+#if RIGIDSYM_C_WIDE
+/* rigidsym_c_body_energy in long double, rounded once to double: the rescue of a sample with an
+ * extreme input (RIGIDSYM_C_WIDE, rigidsym_c_impl.h) */
+static int rigidsym_c_body_energy_wide(
+    double in_m,
+    const double in_v[3],
+    const double in_inertia[9],
+    const double in_omega[3],
+    double *T)
+{
+    const long double m = in_m;
+    const long double v_0 = in_v[0];
+    const long double v_1 = in_v[1];
+    const long double v_2 = in_v[2];
+    const long double inertia_00 = in_inertia[0];
+    const long double inertia_01 = in_inertia[1];
+    const long double inertia_02 = in_inertia[2];
+    const long double inertia_10 = in_inertia[3];
+    const long double inertia_11 = in_inertia[4];
+    const long double inertia_12 = in_inertia[5];
+    const long double inertia_20 = in_inertia[6];
+    const long double inertia_21 = in_inertia[7];
+    const long double inertia_22 = in_inertia[8];
+    const long double omega_0 = in_omega[0];
+    const long double omega_1 = in_omega[1];
+    const long double omega_2 = in_omega[2];
+    int status = 0, singular = 0;
+    long double finite = 0.0L;
+    (void)in_m;
+    (void)in_v;
+    (void)in_inertia;
+    (void)in_omega;
+    {
+        T[0] = (double)((0.5)*m*((v_0*v_0) + (v_1*v_1) + (v_2*v_2)) + (0.5)*omega_0*(inertia_00*omega_0 + inertia_10*omega_1 + inertia_20*omega_2) + (0.5)*omega_1*(inertia_01*omega_0 + inertia_11*omega_1 + inertia_21*omega_2) + (0.5)*omega_2*(inertia_02*omega_0 + inertia_12*omega_1 + inertia_22*omega_2));
+    }
+    finite += (long double)((T[0] - T[0]));
+    if (finite != finite)
+        status |= RIGIDSYM_C_NONFINITE_RESULT;
+    if (singular) {
+        status |= RIGIDSYM_C_SINGULAR;
+        T[0] = NAN;
+    }
+    return status;
+}
+#endif
+
 RIGIDSYM_C_API int rigidsym_c_body_energy(
     double m,
     const double v[3],
@@ -56,6 +102,10 @@ RIGIDSYM_C_API int rigidsym_c_body_energy(
         for (j = 0; j < 4; ++j)
             if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
                 status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_WIDE
+        if (status == RIGIDSYM_C_EXTREME_INPUT)
+            return rigidsym_c_body_energy_wide(m, v, inertia, omega, T);
+#endif
     }
 #else
     (void)odd;
@@ -208,6 +258,106 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_f32_batch(
     return all;
 }
 
+#if RIGIDSYM_C_WIDE
+/* rigidsym_c_body_energy_with_jacobians in long double, rounded once to double: the rescue of a sample with an
+ * extreme input (RIGIDSYM_C_WIDE, rigidsym_c_impl.h) */
+static int rigidsym_c_body_energy_with_jacobians_wide(
+    double in_m,
+    const double in_v[3],
+    const double in_inertia[9],
+    const double in_omega[3],
+    double *T,
+    double *T_D_m,
+    double T_D_v[3],
+    double T_D_inertia[9],
+    double T_D_omega[3])
+{
+    const long double m = in_m;
+    const long double v_0 = in_v[0];
+    const long double v_1 = in_v[1];
+    const long double v_2 = in_v[2];
+    const long double inertia_00 = in_inertia[0];
+    const long double inertia_01 = in_inertia[1];
+    const long double inertia_02 = in_inertia[2];
+    const long double inertia_10 = in_inertia[3];
+    const long double inertia_11 = in_inertia[4];
+    const long double inertia_12 = in_inertia[5];
+    const long double inertia_20 = in_inertia[6];
+    const long double inertia_21 = in_inertia[7];
+    const long double inertia_22 = in_inertia[8];
+    const long double omega_0 = in_omega[0];
+    const long double omega_1 = in_omega[1];
+    const long double omega_2 = in_omega[2];
+    int status = 0, singular = 0;
+    long double finite = 0.0L;
+    (void)in_m;
+    (void)in_v;
+    (void)in_inertia;
+    (void)in_omega;
+    {
+        const long double x0 = (v_0*v_0);
+        const long double x1 = (v_1*v_1);
+        const long double x2 = (v_2*v_2);
+        const long double x3 = inertia_00*omega_0;
+        const long double x4 = inertia_10*omega_1;
+        const long double x5 = inertia_20*omega_2;
+        const long double x6 = (0.5)*omega_0;
+        const long double x7 = inertia_01*omega_0;
+        const long double x8 = inertia_11*omega_1;
+        const long double x9 = inertia_21*omega_2;
+        const long double x10 = (0.5)*omega_1;
+        const long double x11 = inertia_02*omega_0;
+        const long double x12 = inertia_12*omega_1;
+        const long double x13 = inertia_22*omega_2;
+        const long double x14 = (0.5)*omega_2;
+        const long double x15 = omega_1*x6;
+        const long double x16 = omega_2*x6;
+        const long double x17 = omega_2*x10;
+        T[0] = (double)((0.5)*m*(x0 + x1 + x2) + x10*(x7 + x8 + x9) + x14*(x11 + x12 + x13) + x6*(x3 + x4 + x5));
+        T_D_m[0] = (double)((0.5)*x0 + (0.5)*x1 + (0.5)*x2);
+        T_D_v[0] = (double)(m*v_0);
+        T_D_v[1] = (double)(m*v_1);
+        T_D_v[2] = (double)(m*v_2);
+        T_D_inertia[0] = (double)((0.5)*(omega_0*omega_0));
+        T_D_inertia[1] = (double)(x15);
+        T_D_inertia[2] = (double)(x16);
+        T_D_inertia[3] = (double)(x15);
+        T_D_inertia[4] = (double)((0.5)*(omega_1*omega_1));
+        T_D_inertia[5] = (double)(x17);
+        T_D_inertia[6] = (double)(x16);
+        T_D_inertia[7] = (double)(x17);
+        T_D_inertia[8] = (double)((0.5)*(omega_2*omega_2));
+        T_D_omega[0] = (double)(inertia_01*x10 + inertia_02*x14 + x3 + (0.5)*x4 + (0.5)*x5);
+        T_D_omega[1] = (double)(inertia_10*x6 + inertia_12*x14 + (0.5)*x7 + x8 + (0.5)*x9);
+        T_D_omega[2] = (double)(inertia_20*x6 + inertia_21*x10 + (0.5)*x11 + (0.5)*x12 + x13);
+    }
+    finite += (long double)((((((T[0] - T[0]) + (T_D_m[0] - T_D_m[0])) + ((T_D_v[0] - T_D_v[0]) + (T_D_v[1] - T_D_v[1]))) + (((T_D_v[2] - T_D_v[2]) + (T_D_inertia[0] - T_D_inertia[0])) + ((T_D_inertia[1] - T_D_inertia[1]) + (T_D_inertia[2] - T_D_inertia[2])))) + ((((T_D_inertia[3] - T_D_inertia[3]) + (T_D_inertia[4] - T_D_inertia[4])) + ((T_D_inertia[5] - T_D_inertia[5]) + (T_D_inertia[6] - T_D_inertia[6]))) + (((T_D_inertia[7] - T_D_inertia[7]) + (T_D_inertia[8] - T_D_inertia[8])) + ((T_D_omega[0] - T_D_omega[0]) + ((T_D_omega[1] - T_D_omega[1]) + (T_D_omega[2] - T_D_omega[2])))))));
+    if (finite != finite)
+        status |= RIGIDSYM_C_NONFINITE_RESULT;
+    if (singular) {
+        status |= RIGIDSYM_C_SINGULAR;
+        T[0] = NAN;
+        T_D_m[0] = NAN;
+        T_D_v[0] = NAN;
+        T_D_v[1] = NAN;
+        T_D_v[2] = NAN;
+        T_D_inertia[0] = NAN;
+        T_D_inertia[1] = NAN;
+        T_D_inertia[2] = NAN;
+        T_D_inertia[3] = NAN;
+        T_D_inertia[4] = NAN;
+        T_D_inertia[5] = NAN;
+        T_D_inertia[6] = NAN;
+        T_D_inertia[7] = NAN;
+        T_D_inertia[8] = NAN;
+        T_D_omega[0] = NAN;
+        T_D_omega[1] = NAN;
+        T_D_omega[2] = NAN;
+    }
+    return status;
+}
+#endif
+
 RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians(
     double m,
     const double v[3],
@@ -257,6 +407,10 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians(
         for (j = 0; j < 4; ++j)
             if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
                 status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_WIDE
+        if (status == RIGIDSYM_C_EXTREME_INPUT)
+            return rigidsym_c_body_energy_with_jacobians_wide(m, v, inertia, omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
+#endif
     }
 #else
     (void)odd;

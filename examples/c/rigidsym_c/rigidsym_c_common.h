@@ -23,9 +23,10 @@
  * inputs, or a non-finite input) */
 #define RIGIDSYM_C_NONFINITE_RESULT 4
 /* a nonzero input component has magnitude outside [2^-100, 2^101) (double; float:
- * [2^-30, 2^31)): intermediates may have underflowed or overflowed, so the outputs are
- * not guaranteed to the stated bound (the Python package re-runs such samples in a
- * wider type; this C does not) */
+ * [2^-30, 2^31)) and there is no wider type to re-run the sample in (the double
+ * functions re-run it in long double where that is wider, RIGIDSYM_C_WIDE):
+ * intermediates may have underflowed or overflowed, so the outputs are not guaranteed
+ * to the stated bound */
 #define RIGIDSYM_C_EXTREME_INPUT 8
 
 #include <stddef.h>   /* size_t, of the _batch functions */

@@ -41,9 +41,23 @@
 #pragma GCC optimize("fp-contract=off")
 #endif
 
+#include <float.h>
 #include <math.h>
 #include <stdint.h>
 #include <string.h>
+
+/* The rescue of extreme inputs (RIGIDSYM_C_EXTREME_INPUT) in a wider type: where long double
+ * has more exponent range and precision than double (x86-64: 80-bit extended, exponent to
+ * 16383; aarch64 Linux: quad), a double function re-runs a sample with an input outside
+ * [2^-100, 2^101) in long double and rounds once, as the Python package does; elsewhere
+ * (long double == double: Windows, Cortex-M, macOS arm64) the sample keeps its flag.
+ * -DRIGIDSYM_C_NO_WIDE turns it off (so does RIGIDSYM_C_TRUSTED_INPUTS: no input test). */
+#if !defined(RIGIDSYM_C_NO_WIDE) && !defined(RIGIDSYM_C_TRUSTED_INPUTS) && \
+    LDBL_MAX_EXP > DBL_MAX_EXP && LDBL_MANT_DIG > DBL_MANT_DIG
+#define RIGIDSYM_C_WIDE 1
+#else
+#define RIGIDSYM_C_WIDE 0
+#endif
 
 #include "rigidsym_c_common.h"
 
@@ -114,6 +128,15 @@ static inline float rigidsym_c_diffprodf(float a, float b, float c, float d)
     return f + e;
 }
 
+static inline long double rigidsym_c_diffprodl(long double a, long double b, long double c,
+                                               long double d)
+{
+    const long double w = c * d;
+    const long double e = fmal(-c, d, w);
+    const long double f = fmal(a, b, -w);
+    return f + e;
+}
+
 /* a1 b1 + ... + an bn compensated (Dot2 of Ogita, Rump and Oishi, 2005) */
 #define RIGIDSYM_C_DOT2_STEP(T, FMA, a, b) do { \
         const T h_ = (a) * (b); \
@@ -169,6 +192,30 @@ static inline float rigidsym_c_sumprod4f(float a0, float b0, float a1, float b1,
     RIGIDSYM_C_DOT2_STEP(float, fmaf, a1, b1);
     RIGIDSYM_C_DOT2_STEP(float, fmaf, a2, b2);
     RIGIDSYM_C_DOT2_STEP(float, fmaf, a3, b3);
+    return p + s;
+}
+
+static inline long double rigidsym_c_sumprod2l(long double a0, long double b0, long double a1, long double b1)
+{
+    long double p = a0 * b0, s = fmal(a0, b0, -p);
+    RIGIDSYM_C_DOT2_STEP(long double, fmal, a1, b1);
+    return p + s;
+}
+
+static inline long double rigidsym_c_sumprod3l(long double a0, long double b0, long double a1, long double b1, long double a2, long double b2)
+{
+    long double p = a0 * b0, s = fmal(a0, b0, -p);
+    RIGIDSYM_C_DOT2_STEP(long double, fmal, a1, b1);
+    RIGIDSYM_C_DOT2_STEP(long double, fmal, a2, b2);
+    return p + s;
+}
+
+static inline long double rigidsym_c_sumprod4l(long double a0, long double b0, long double a1, long double b1, long double a2, long double b2, long double a3, long double b3)
+{
+    long double p = a0 * b0, s = fmal(a0, b0, -p);
+    RIGIDSYM_C_DOT2_STEP(long double, fmal, a1, b1);
+    RIGIDSYM_C_DOT2_STEP(long double, fmal, a2, b2);
+    RIGIDSYM_C_DOT2_STEP(long double, fmal, a3, b3);
     return p + s;
 }
 

@@ -8,6 +8,70 @@
 #include "rigidsym_c_impl.h"
 #include "rigidsym_c_newton_euler_wrench.h"
 
+#if RIGIDSYM_C_WIDE
+/* rigidsym_c_newton_euler_wrench in long double, rounded once to double: the rescue of a sample with an
+ * extreme input (RIGIDSYM_C_WIDE, rigidsym_c_impl.h) */
+static int rigidsym_c_newton_euler_wrench_wide(
+    const double in_I_C[9],
+    double in_m,
+    const double in_omega[3],
+    const double in_omega_dot[3],
+    const double in_c_ddot[3],
+    double w[6])
+{
+    const long double I_C_00 = in_I_C[0];
+    const long double I_C_01 = in_I_C[1];
+    const long double I_C_02 = in_I_C[2];
+    const long double I_C_10 = in_I_C[3];
+    const long double I_C_11 = in_I_C[4];
+    const long double I_C_12 = in_I_C[5];
+    const long double I_C_20 = in_I_C[6];
+    const long double I_C_21 = in_I_C[7];
+    const long double I_C_22 = in_I_C[8];
+    const long double m = in_m;
+    const long double omega_0 = in_omega[0];
+    const long double omega_1 = in_omega[1];
+    const long double omega_2 = in_omega[2];
+    const long double omega_dot_0 = in_omega_dot[0];
+    const long double omega_dot_1 = in_omega_dot[1];
+    const long double omega_dot_2 = in_omega_dot[2];
+    const long double c_ddot_0 = in_c_ddot[0];
+    const long double c_ddot_1 = in_c_ddot[1];
+    const long double c_ddot_2 = in_c_ddot[2];
+    int status = 0, singular = 0;
+    long double finite = 0.0L;
+    (void)in_I_C;
+    (void)in_m;
+    (void)in_omega;
+    (void)in_omega_dot;
+    (void)in_c_ddot;
+    {
+        const long double x0 = I_C_20*omega_0 + I_C_21*omega_1 + I_C_22*omega_2;
+        const long double x1 = I_C_10*omega_0 + I_C_11*omega_1 + I_C_12*omega_2;
+        const long double x2 = I_C_00*omega_0 + I_C_01*omega_1 + I_C_02*omega_2;
+        w[0] = (double)(I_C_00*omega_dot_0 + I_C_01*omega_dot_1 + I_C_02*omega_dot_2 + omega_1*x0 - omega_2*x1);
+        w[1] = (double)(I_C_10*omega_dot_0 + I_C_11*omega_dot_1 + I_C_12*omega_dot_2 - omega_0*x0 + omega_2*x2);
+        w[2] = (double)(I_C_20*omega_dot_0 + I_C_21*omega_dot_1 + I_C_22*omega_dot_2 + omega_0*x1 - omega_1*x2);
+        w[3] = (double)(c_ddot_0*m);
+        w[4] = (double)(c_ddot_1*m);
+        w[5] = (double)(c_ddot_2*m);
+    }
+    finite += (long double)((((w[0] - w[0]) + ((w[1] - w[1]) + (w[2] - w[2]))) + ((w[3] - w[3]) + ((w[4] - w[4]) + (w[5] - w[5])))));
+    if (finite != finite)
+        status |= RIGIDSYM_C_NONFINITE_RESULT;
+    if (singular) {
+        status |= RIGIDSYM_C_SINGULAR;
+        w[0] = NAN;
+        w[1] = NAN;
+        w[2] = NAN;
+        w[3] = NAN;
+        w[4] = NAN;
+        w[5] = NAN;
+    }
+    return status;
+}
+#endif
+
 RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench(
     const double I_C[9],
     double m,
@@ -61,6 +125,10 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench(
         for (j = 0; j < 5; ++j)
             if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
                 status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_WIDE
+        if (status == RIGIDSYM_C_EXTREME_INPUT)
+            return rigidsym_c_newton_euler_wrench_wide(I_C, m, omega, omega_dot, c_ddot, w);
+#endif
     }
 #else
     (void)odd;
@@ -248,6 +316,324 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_f32_batch(
     return all;
 }
 
+#if RIGIDSYM_C_WIDE
+/* rigidsym_c_newton_euler_wrench_with_jacobians in long double, rounded once to double: the rescue of a sample with an
+ * extreme input (RIGIDSYM_C_WIDE, rigidsym_c_impl.h) */
+static int rigidsym_c_newton_euler_wrench_with_jacobians_wide(
+    const double in_I_C[9],
+    double in_m,
+    const double in_omega[3],
+    const double in_omega_dot[3],
+    const double in_c_ddot[3],
+    double w[6],
+    double w_D_I_C[54],
+    double w_D_m[6],
+    double w_D_omega[18],
+    double w_D_omega_dot[18],
+    double w_D_c_ddot[18])
+{
+    const long double I_C_00 = in_I_C[0];
+    const long double I_C_01 = in_I_C[1];
+    const long double I_C_02 = in_I_C[2];
+    const long double I_C_10 = in_I_C[3];
+    const long double I_C_11 = in_I_C[4];
+    const long double I_C_12 = in_I_C[5];
+    const long double I_C_20 = in_I_C[6];
+    const long double I_C_21 = in_I_C[7];
+    const long double I_C_22 = in_I_C[8];
+    const long double m = in_m;
+    const long double omega_0 = in_omega[0];
+    const long double omega_1 = in_omega[1];
+    const long double omega_2 = in_omega[2];
+    const long double omega_dot_0 = in_omega_dot[0];
+    const long double omega_dot_1 = in_omega_dot[1];
+    const long double omega_dot_2 = in_omega_dot[2];
+    const long double c_ddot_0 = in_c_ddot[0];
+    const long double c_ddot_1 = in_c_ddot[1];
+    const long double c_ddot_2 = in_c_ddot[2];
+    int status = 0, singular = 0;
+    long double finite = 0.0L;
+    (void)in_I_C;
+    (void)in_m;
+    (void)in_omega;
+    (void)in_omega_dot;
+    (void)in_c_ddot;
+    {
+        const long double x0 = I_C_21*omega_1;
+        const long double x1 = I_C_20*omega_0;
+        const long double x2 = I_C_22*omega_2;
+        const long double x3 = x1 + x2;
+        const long double x4 = x0 + x3;
+        const long double x5 = I_C_12*omega_2;
+        const long double x6 = I_C_10*omega_0;
+        const long double x7 = I_C_11*omega_1;
+        const long double x8 = x6 + x7;
+        const long double x9 = x5 + x8;
+        const long double x10 = I_C_02*omega_2;
+        const long double x11 = I_C_00*omega_0;
+        const long double x12 = I_C_01*omega_1;
+        const long double x13 = x11 + x12;
+        const long double x14 = x10 + x13;
+        const long double x15 = omega_0*omega_2;
+        const long double x16 = -x15;
+        const long double x17 = omega_1*omega_2;
+        const long double x18 = -x17;
+        const long double x19 = (omega_2*omega_2);
+        const long double x20 = omega_0*omega_1;
+        const long double x21 = (omega_1*omega_1);
+        const long double x22 = (omega_0*omega_0);
+        const long double x23 = -x20;
+        w[0] = (double)(I_C_00*omega_dot_0 + I_C_01*omega_dot_1 + I_C_02*omega_dot_2 + omega_1*x4 - omega_2*x9);
+        w[1] = (double)(I_C_10*omega_dot_0 + I_C_11*omega_dot_1 + I_C_12*omega_dot_2 - omega_0*x4 + omega_2*x14);
+        w[2] = (double)(I_C_20*omega_dot_0 + I_C_21*omega_dot_1 + I_C_22*omega_dot_2 + omega_0*x9 - omega_1*x14);
+        w[3] = (double)(c_ddot_0*m);
+        w[4] = (double)(c_ddot_1*m);
+        w[5] = (double)(c_ddot_2*m);
+        w_D_I_C[0] = (double)(omega_dot_0);
+        w_D_I_C[1] = (double)(omega_dot_1);
+        w_D_I_C[2] = (double)(omega_dot_2);
+        w_D_I_C[3] = (double)(x16);
+        w_D_I_C[4] = (double)(x18);
+        w_D_I_C[5] = (double)(-x19);
+        w_D_I_C[6] = (double)(x20);
+        w_D_I_C[7] = (double)(x21);
+        w_D_I_C[8] = (double)(x17);
+        w_D_I_C[9] = (double)(x15);
+        w_D_I_C[10] = (double)(x17);
+        w_D_I_C[11] = (double)(x19);
+        w_D_I_C[12] = (double)(omega_dot_0);
+        w_D_I_C[13] = (double)(omega_dot_1);
+        w_D_I_C[14] = (double)(omega_dot_2);
+        w_D_I_C[15] = (double)(-x22);
+        w_D_I_C[16] = (double)(x23);
+        w_D_I_C[17] = (double)(x16);
+        w_D_I_C[18] = (double)(x23);
+        w_D_I_C[19] = (double)(-x21);
+        w_D_I_C[20] = (double)(x18);
+        w_D_I_C[21] = (double)(x22);
+        w_D_I_C[22] = (double)(x20);
+        w_D_I_C[23] = (double)(x15);
+        w_D_I_C[24] = (double)(omega_dot_0);
+        w_D_I_C[25] = (double)(omega_dot_1);
+        w_D_I_C[26] = (double)(omega_dot_2);
+        w_D_I_C[27] = (double)(0.0);
+        w_D_I_C[28] = (double)(0.0);
+        w_D_I_C[29] = (double)(0.0);
+        w_D_I_C[30] = (double)(0.0);
+        w_D_I_C[31] = (double)(0.0);
+        w_D_I_C[32] = (double)(0.0);
+        w_D_I_C[33] = (double)(0.0);
+        w_D_I_C[34] = (double)(0.0);
+        w_D_I_C[35] = (double)(0.0);
+        w_D_I_C[36] = (double)(0.0);
+        w_D_I_C[37] = (double)(0.0);
+        w_D_I_C[38] = (double)(0.0);
+        w_D_I_C[39] = (double)(0.0);
+        w_D_I_C[40] = (double)(0.0);
+        w_D_I_C[41] = (double)(0.0);
+        w_D_I_C[42] = (double)(0.0);
+        w_D_I_C[43] = (double)(0.0);
+        w_D_I_C[44] = (double)(0.0);
+        w_D_I_C[45] = (double)(0.0);
+        w_D_I_C[46] = (double)(0.0);
+        w_D_I_C[47] = (double)(0.0);
+        w_D_I_C[48] = (double)(0.0);
+        w_D_I_C[49] = (double)(0.0);
+        w_D_I_C[50] = (double)(0.0);
+        w_D_I_C[51] = (double)(0.0);
+        w_D_I_C[52] = (double)(0.0);
+        w_D_I_C[53] = (double)(0.0);
+        w_D_m[0] = (double)(0.0);
+        w_D_m[1] = (double)(0.0);
+        w_D_m[2] = (double)(0.0);
+        w_D_m[3] = (double)(c_ddot_0);
+        w_D_m[4] = (double)(c_ddot_1);
+        w_D_m[5] = (double)(c_ddot_2);
+        w_D_omega[0] = (double)(-I_C_10*omega_2 + I_C_20*omega_1);
+        w_D_omega[1] = (double)(-I_C_11*omega_2 + 2.0*x0 + x3);
+        w_D_omega[2] = (double)(I_C_22*omega_1 - 2.0*x5 - x8);
+        w_D_omega[3] = (double)(I_C_00*omega_2 - x0 - 2.0*x1 - x2);
+        w_D_omega[4] = (double)(I_C_01*omega_2 - I_C_21*omega_0);
+        w_D_omega[5] = (double)(-I_C_22*omega_0 + 2.0*x10 + x13);
+        w_D_omega[6] = (double)(-I_C_00*omega_1 + x5 + 2.0*x6 + x7);
+        w_D_omega[7] = (double)(I_C_11*omega_0 - x10 - x11 - 2.0*x12);
+        w_D_omega[8] = (double)(-I_C_02*omega_1 + I_C_12*omega_0);
+        w_D_omega[9] = (double)(0.0);
+        w_D_omega[10] = (double)(0.0);
+        w_D_omega[11] = (double)(0.0);
+        w_D_omega[12] = (double)(0.0);
+        w_D_omega[13] = (double)(0.0);
+        w_D_omega[14] = (double)(0.0);
+        w_D_omega[15] = (double)(0.0);
+        w_D_omega[16] = (double)(0.0);
+        w_D_omega[17] = (double)(0.0);
+        w_D_omega_dot[0] = (double)(I_C_00);
+        w_D_omega_dot[1] = (double)(I_C_01);
+        w_D_omega_dot[2] = (double)(I_C_02);
+        w_D_omega_dot[3] = (double)(I_C_10);
+        w_D_omega_dot[4] = (double)(I_C_11);
+        w_D_omega_dot[5] = (double)(I_C_12);
+        w_D_omega_dot[6] = (double)(I_C_20);
+        w_D_omega_dot[7] = (double)(I_C_21);
+        w_D_omega_dot[8] = (double)(I_C_22);
+        w_D_omega_dot[9] = (double)(0.0);
+        w_D_omega_dot[10] = (double)(0.0);
+        w_D_omega_dot[11] = (double)(0.0);
+        w_D_omega_dot[12] = (double)(0.0);
+        w_D_omega_dot[13] = (double)(0.0);
+        w_D_omega_dot[14] = (double)(0.0);
+        w_D_omega_dot[15] = (double)(0.0);
+        w_D_omega_dot[16] = (double)(0.0);
+        w_D_omega_dot[17] = (double)(0.0);
+        w_D_c_ddot[0] = (double)(0.0);
+        w_D_c_ddot[1] = (double)(0.0);
+        w_D_c_ddot[2] = (double)(0.0);
+        w_D_c_ddot[3] = (double)(0.0);
+        w_D_c_ddot[4] = (double)(0.0);
+        w_D_c_ddot[5] = (double)(0.0);
+        w_D_c_ddot[6] = (double)(0.0);
+        w_D_c_ddot[7] = (double)(0.0);
+        w_D_c_ddot[8] = (double)(0.0);
+        w_D_c_ddot[9] = (double)(m);
+        w_D_c_ddot[10] = (double)(0.0);
+        w_D_c_ddot[11] = (double)(0.0);
+        w_D_c_ddot[12] = (double)(0.0);
+        w_D_c_ddot[13] = (double)(m);
+        w_D_c_ddot[14] = (double)(0.0);
+        w_D_c_ddot[15] = (double)(0.0);
+        w_D_c_ddot[16] = (double)(0.0);
+        w_D_c_ddot[17] = (double)(m);
+    }
+    finite += (long double)((((((((w[0] - w[0]) + ((w[1] - w[1]) + (w[2] - w[2]))) + (((w[3] - w[3]) + (w[4] - w[4])) + ((w[5] - w[5]) + (w_D_I_C[0] - w_D_I_C[0])))) + ((((w_D_I_C[1] - w_D_I_C[1]) + (w_D_I_C[2] - w_D_I_C[2])) + ((w_D_I_C[3] - w_D_I_C[3]) + (w_D_I_C[4] - w_D_I_C[4]))) + (((w_D_I_C[5] - w_D_I_C[5]) + (w_D_I_C[6] - w_D_I_C[6])) + ((w_D_I_C[7] - w_D_I_C[7]) + (w_D_I_C[8] - w_D_I_C[8]))))) + ((((w_D_I_C[9] - w_D_I_C[9]) + ((w_D_I_C[10] - w_D_I_C[10]) + (w_D_I_C[11] - w_D_I_C[11]))) + (((w_D_I_C[12] - w_D_I_C[12]) + (w_D_I_C[13] - w_D_I_C[13])) + ((w_D_I_C[14] - w_D_I_C[14]) + (w_D_I_C[15] - w_D_I_C[15])))) + ((((w_D_I_C[16] - w_D_I_C[16]) + (w_D_I_C[17] - w_D_I_C[17])) + ((w_D_I_C[18] - w_D_I_C[18]) + (w_D_I_C[19] - w_D_I_C[19]))) + (((w_D_I_C[20] - w_D_I_C[20]) + (w_D_I_C[21] - w_D_I_C[21])) + ((w_D_I_C[22] - w_D_I_C[22]) + (w_D_I_C[23] - w_D_I_C[23])))))) + (((((w_D_I_C[24] - w_D_I_C[24]) + ((w_D_I_C[25] - w_D_I_C[25]) + (w_D_I_C[26] - w_D_I_C[26]))) + (((w_D_I_C[27] - w_D_I_C[27]) + (w_D_I_C[28] - w_D_I_C[28])) + ((w_D_I_C[29] - w_D_I_C[29]) + (w_D_I_C[30] - w_D_I_C[30])))) + ((((w_D_I_C[31] - w_D_I_C[31]) + (w_D_I_C[32] - w_D_I_C[32])) + ((w_D_I_C[33] - w_D_I_C[33]) + (w_D_I_C[34] - w_D_I_C[34]))) + (((w_D_I_C[35] - w_D_I_C[35]) + (w_D_I_C[36] - w_D_I_C[36])) + ((w_D_I_C[37] - w_D_I_C[37]) + (w_D_I_C[38] - w_D_I_C[38]))))) + ((((w_D_I_C[39] - w_D_I_C[39]) + ((w_D_I_C[40] - w_D_I_C[40]) + (w_D_I_C[41] - w_D_I_C[41]))) + (((w_D_I_C[42] - w_D_I_C[42]) + (w_D_I_C[43] - w_D_I_C[43])) + ((w_D_I_C[44] - w_D_I_C[44]) + (w_D_I_C[45] - w_D_I_C[45])))) + ((((w_D_I_C[46] - w_D_I_C[46]) + (w_D_I_C[47] - w_D_I_C[47])) + ((w_D_I_C[48] - w_D_I_C[48]) + (w_D_I_C[49] - w_D_I_C[49]))) + (((w_D_I_C[50] - w_D_I_C[50]) + (w_D_I_C[51] - w_D_I_C[51])) + ((w_D_I_C[52] - w_D_I_C[52]) + (w_D_I_C[53] - w_D_I_C[53]))))))) + ((((((w_D_m[0] - w_D_m[0]) + ((w_D_m[1] - w_D_m[1]) + (w_D_m[2] - w_D_m[2]))) + (((w_D_m[3] - w_D_m[3]) + (w_D_m[4] - w_D_m[4])) + ((w_D_m[5] - w_D_m[5]) + (w_D_omega[0] - w_D_omega[0])))) + ((((w_D_omega[1] - w_D_omega[1]) + (w_D_omega[2] - w_D_omega[2])) + ((w_D_omega[3] - w_D_omega[3]) + (w_D_omega[4] - w_D_omega[4]))) + (((w_D_omega[5] - w_D_omega[5]) + (w_D_omega[6] - w_D_omega[6])) + ((w_D_omega[7] - w_D_omega[7]) + (w_D_omega[8] - w_D_omega[8]))))) + ((((w_D_omega[9] - w_D_omega[9]) + ((w_D_omega[10] - w_D_omega[10]) + (w_D_omega[11] - w_D_omega[11]))) + (((w_D_omega[12] - w_D_omega[12]) + (w_D_omega[13] - w_D_omega[13])) + ((w_D_omega[14] - w_D_omega[14]) + (w_D_omega[15] - w_D_omega[15])))) + ((((w_D_omega[16] - w_D_omega[16]) + (w_D_omega[17] - w_D_omega[17])) + ((w_D_omega_dot[0] - w_D_omega_dot[0]) + (w_D_omega_dot[1] - w_D_omega_dot[1]))) + (((w_D_omega_dot[2] - w_D_omega_dot[2]) + (w_D_omega_dot[3] - w_D_omega_dot[3])) + ((w_D_omega_dot[4] - w_D_omega_dot[4]) + (w_D_omega_dot[5] - w_D_omega_dot[5])))))) + (((((w_D_omega_dot[6] - w_D_omega_dot[6]) + ((w_D_omega_dot[7] - w_D_omega_dot[7]) + (w_D_omega_dot[8] - w_D_omega_dot[8]))) + (((w_D_omega_dot[9] - w_D_omega_dot[9]) + (w_D_omega_dot[10] - w_D_omega_dot[10])) + ((w_D_omega_dot[11] - w_D_omega_dot[11]) + (w_D_omega_dot[12] - w_D_omega_dot[12])))) + ((((w_D_omega_dot[13] - w_D_omega_dot[13]) + (w_D_omega_dot[14] - w_D_omega_dot[14])) + ((w_D_omega_dot[15] - w_D_omega_dot[15]) + (w_D_omega_dot[16] - w_D_omega_dot[16]))) + (((w_D_omega_dot[17] - w_D_omega_dot[17]) + (w_D_c_ddot[0] - w_D_c_ddot[0])) + ((w_D_c_ddot[1] - w_D_c_ddot[1]) + (w_D_c_ddot[2] - w_D_c_ddot[2]))))) + ((((w_D_c_ddot[3] - w_D_c_ddot[3]) + ((w_D_c_ddot[4] - w_D_c_ddot[4]) + (w_D_c_ddot[5] - w_D_c_ddot[5]))) + (((w_D_c_ddot[6] - w_D_c_ddot[6]) + (w_D_c_ddot[7] - w_D_c_ddot[7])) + ((w_D_c_ddot[8] - w_D_c_ddot[8]) + (w_D_c_ddot[9] - w_D_c_ddot[9])))) + ((((w_D_c_ddot[10] - w_D_c_ddot[10]) + (w_D_c_ddot[11] - w_D_c_ddot[11])) + ((w_D_c_ddot[12] - w_D_c_ddot[12]) + (w_D_c_ddot[13] - w_D_c_ddot[13]))) + (((w_D_c_ddot[14] - w_D_c_ddot[14]) + (w_D_c_ddot[15] - w_D_c_ddot[15])) + ((w_D_c_ddot[16] - w_D_c_ddot[16]) + (w_D_c_ddot[17] - w_D_c_ddot[17])))))))));
+    if (finite != finite)
+        status |= RIGIDSYM_C_NONFINITE_RESULT;
+    if (singular) {
+        status |= RIGIDSYM_C_SINGULAR;
+        w[0] = NAN;
+        w[1] = NAN;
+        w[2] = NAN;
+        w[3] = NAN;
+        w[4] = NAN;
+        w[5] = NAN;
+        w_D_I_C[0] = NAN;
+        w_D_I_C[1] = NAN;
+        w_D_I_C[2] = NAN;
+        w_D_I_C[3] = NAN;
+        w_D_I_C[4] = NAN;
+        w_D_I_C[5] = NAN;
+        w_D_I_C[6] = NAN;
+        w_D_I_C[7] = NAN;
+        w_D_I_C[8] = NAN;
+        w_D_I_C[9] = NAN;
+        w_D_I_C[10] = NAN;
+        w_D_I_C[11] = NAN;
+        w_D_I_C[12] = NAN;
+        w_D_I_C[13] = NAN;
+        w_D_I_C[14] = NAN;
+        w_D_I_C[15] = NAN;
+        w_D_I_C[16] = NAN;
+        w_D_I_C[17] = NAN;
+        w_D_I_C[18] = NAN;
+        w_D_I_C[19] = NAN;
+        w_D_I_C[20] = NAN;
+        w_D_I_C[21] = NAN;
+        w_D_I_C[22] = NAN;
+        w_D_I_C[23] = NAN;
+        w_D_I_C[24] = NAN;
+        w_D_I_C[25] = NAN;
+        w_D_I_C[26] = NAN;
+        w_D_I_C[27] = NAN;
+        w_D_I_C[28] = NAN;
+        w_D_I_C[29] = NAN;
+        w_D_I_C[30] = NAN;
+        w_D_I_C[31] = NAN;
+        w_D_I_C[32] = NAN;
+        w_D_I_C[33] = NAN;
+        w_D_I_C[34] = NAN;
+        w_D_I_C[35] = NAN;
+        w_D_I_C[36] = NAN;
+        w_D_I_C[37] = NAN;
+        w_D_I_C[38] = NAN;
+        w_D_I_C[39] = NAN;
+        w_D_I_C[40] = NAN;
+        w_D_I_C[41] = NAN;
+        w_D_I_C[42] = NAN;
+        w_D_I_C[43] = NAN;
+        w_D_I_C[44] = NAN;
+        w_D_I_C[45] = NAN;
+        w_D_I_C[46] = NAN;
+        w_D_I_C[47] = NAN;
+        w_D_I_C[48] = NAN;
+        w_D_I_C[49] = NAN;
+        w_D_I_C[50] = NAN;
+        w_D_I_C[51] = NAN;
+        w_D_I_C[52] = NAN;
+        w_D_I_C[53] = NAN;
+        w_D_m[0] = NAN;
+        w_D_m[1] = NAN;
+        w_D_m[2] = NAN;
+        w_D_m[3] = NAN;
+        w_D_m[4] = NAN;
+        w_D_m[5] = NAN;
+        w_D_omega[0] = NAN;
+        w_D_omega[1] = NAN;
+        w_D_omega[2] = NAN;
+        w_D_omega[3] = NAN;
+        w_D_omega[4] = NAN;
+        w_D_omega[5] = NAN;
+        w_D_omega[6] = NAN;
+        w_D_omega[7] = NAN;
+        w_D_omega[8] = NAN;
+        w_D_omega[9] = NAN;
+        w_D_omega[10] = NAN;
+        w_D_omega[11] = NAN;
+        w_D_omega[12] = NAN;
+        w_D_omega[13] = NAN;
+        w_D_omega[14] = NAN;
+        w_D_omega[15] = NAN;
+        w_D_omega[16] = NAN;
+        w_D_omega[17] = NAN;
+        w_D_omega_dot[0] = NAN;
+        w_D_omega_dot[1] = NAN;
+        w_D_omega_dot[2] = NAN;
+        w_D_omega_dot[3] = NAN;
+        w_D_omega_dot[4] = NAN;
+        w_D_omega_dot[5] = NAN;
+        w_D_omega_dot[6] = NAN;
+        w_D_omega_dot[7] = NAN;
+        w_D_omega_dot[8] = NAN;
+        w_D_omega_dot[9] = NAN;
+        w_D_omega_dot[10] = NAN;
+        w_D_omega_dot[11] = NAN;
+        w_D_omega_dot[12] = NAN;
+        w_D_omega_dot[13] = NAN;
+        w_D_omega_dot[14] = NAN;
+        w_D_omega_dot[15] = NAN;
+        w_D_omega_dot[16] = NAN;
+        w_D_omega_dot[17] = NAN;
+        w_D_c_ddot[0] = NAN;
+        w_D_c_ddot[1] = NAN;
+        w_D_c_ddot[2] = NAN;
+        w_D_c_ddot[3] = NAN;
+        w_D_c_ddot[4] = NAN;
+        w_D_c_ddot[5] = NAN;
+        w_D_c_ddot[6] = NAN;
+        w_D_c_ddot[7] = NAN;
+        w_D_c_ddot[8] = NAN;
+        w_D_c_ddot[9] = NAN;
+        w_D_c_ddot[10] = NAN;
+        w_D_c_ddot[11] = NAN;
+        w_D_c_ddot[12] = NAN;
+        w_D_c_ddot[13] = NAN;
+        w_D_c_ddot[14] = NAN;
+        w_D_c_ddot[15] = NAN;
+        w_D_c_ddot[16] = NAN;
+        w_D_c_ddot[17] = NAN;
+    }
+    return status;
+}
+#endif
+
 RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians(
     const double I_C[9],
     double m,
@@ -301,6 +687,10 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians(
         for (j = 0; j < 5; ++j)
             if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
                 status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_WIDE
+        if (status == RIGIDSYM_C_EXTREME_INPUT)
+            return rigidsym_c_newton_euler_wrench_with_jacobians_wide(I_C, m, omega, omega_dot, c_ddot, w, w_D_I_C, w_D_m, w_D_omega, w_D_omega_dot, w_D_c_ddot);
+#endif
     }
 #else
     (void)odd;

@@ -8,6 +8,43 @@
 #include "rigidsym_c_impl.h"
 #include "rigidsym_c_planar_arm_tip.h"
 
+#if RIGIDSYM_C_WIDE
+/* rigidsym_c_planar_arm_tip in long double, rounded once to double: the rescue of a sample with an
+ * extreme input (RIGIDSYM_C_WIDE, rigidsym_c_impl.h) */
+static int rigidsym_c_planar_arm_tip_wide(
+    double in_q1,
+    double in_q2,
+    double in_l1,
+    double in_l2,
+    double p[2])
+{
+    const long double q1 = in_q1;
+    const long double q2 = in_q2;
+    const long double l1 = in_l1;
+    const long double l2 = in_l2;
+    int status = 0, singular = 0;
+    long double finite = 0.0L;
+    (void)in_q1;
+    (void)in_q2;
+    (void)in_l1;
+    (void)in_l2;
+    {
+        const long double x0 = q1 + q2;
+        p[0] = (double)(l1*cosl(q1) + l2*cosl(x0));
+        p[1] = (double)(l1*sinl(q1) + l2*sinl(x0));
+    }
+    finite += (long double)(((p[0] - p[0]) + (p[1] - p[1])));
+    if (finite != finite)
+        status |= RIGIDSYM_C_NONFINITE_RESULT;
+    if (singular) {
+        status |= RIGIDSYM_C_SINGULAR;
+        p[0] = NAN;
+        p[1] = NAN;
+    }
+    return status;
+}
+#endif
+
 RIGIDSYM_C_API int rigidsym_c_planar_arm_tip(
     double q1,
     double q2,
@@ -39,6 +76,10 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip(
         for (j = 0; j < 4; ++j)
             if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
                 status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_WIDE
+        if (status == RIGIDSYM_C_EXTREME_INPUT)
+            return rigidsym_c_planar_arm_tip_wide(q1, q2, l1, l2, p);
+#endif
     }
 #else
     (void)odd;
@@ -180,6 +221,71 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_f32_batch(
     return all;
 }
 
+#if RIGIDSYM_C_WIDE
+/* rigidsym_c_planar_arm_tip_with_jacobians in long double, rounded once to double: the rescue of a sample with an
+ * extreme input (RIGIDSYM_C_WIDE, rigidsym_c_impl.h) */
+static int rigidsym_c_planar_arm_tip_with_jacobians_wide(
+    double in_q1,
+    double in_q2,
+    double in_l1,
+    double in_l2,
+    double p[2],
+    double p_D_q1[2],
+    double p_D_q2[2],
+    double p_D_l1[2],
+    double p_D_l2[2])
+{
+    const long double q1 = in_q1;
+    const long double q2 = in_q2;
+    const long double l1 = in_l1;
+    const long double l2 = in_l2;
+    int status = 0, singular = 0;
+    long double finite = 0.0L;
+    (void)in_q1;
+    (void)in_q2;
+    (void)in_l1;
+    (void)in_l2;
+    {
+        const long double x0 = cosl(q1);
+        const long double x1 = q1 + q2;
+        const long double x2 = cosl(x1);
+        const long double x3 = l2*x2;
+        const long double x4 = l1*x0 + x3;
+        const long double x5 = sinl(q1);
+        const long double x6 = sinl(x1);
+        const long double x7 = l2*x6;
+        const long double x8 = l1*x5 + x7;
+        p[0] = (double)(x4);
+        p[1] = (double)(x8);
+        p_D_q1[0] = (double)(-x8);
+        p_D_q1[1] = (double)(x4);
+        p_D_q2[0] = (double)(-x7);
+        p_D_q2[1] = (double)(x3);
+        p_D_l1[0] = (double)(x0);
+        p_D_l1[1] = (double)(x5);
+        p_D_l2[0] = (double)(x2);
+        p_D_l2[1] = (double)(x6);
+    }
+    finite += (long double)(((((p[0] - p[0]) + (p[1] - p[1])) + ((p_D_q1[0] - p_D_q1[0]) + ((p_D_q1[1] - p_D_q1[1]) + (p_D_q2[0] - p_D_q2[0])))) + (((p_D_q2[1] - p_D_q2[1]) + (p_D_l1[0] - p_D_l1[0])) + ((p_D_l1[1] - p_D_l1[1]) + ((p_D_l2[0] - p_D_l2[0]) + (p_D_l2[1] - p_D_l2[1]))))));
+    if (finite != finite)
+        status |= RIGIDSYM_C_NONFINITE_RESULT;
+    if (singular) {
+        status |= RIGIDSYM_C_SINGULAR;
+        p[0] = NAN;
+        p[1] = NAN;
+        p_D_q1[0] = NAN;
+        p_D_q1[1] = NAN;
+        p_D_q2[0] = NAN;
+        p_D_q2[1] = NAN;
+        p_D_l1[0] = NAN;
+        p_D_l1[1] = NAN;
+        p_D_l2[0] = NAN;
+        p_D_l2[1] = NAN;
+    }
+    return status;
+}
+#endif
+
 RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians(
     double q1,
     double q2,
@@ -211,6 +317,10 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians(
         for (j = 0; j < 4; ++j)
             if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
                 status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_WIDE
+        if (status == RIGIDSYM_C_EXTREME_INPUT)
+            return rigidsym_c_planar_arm_tip_with_jacobians_wide(q1, q2, l1, l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
+#endif
     }
 #else
     (void)odd;

@@ -8,6 +8,58 @@
 #include "rigidsym_c_impl.h"
 #include "rigidsym_c_quaternion_rotation.h"
 
+#if RIGIDSYM_C_WIDE
+/* rigidsym_c_quaternion_rotation in long double, rounded once to double: the rescue of a sample with an
+ * extreme input (RIGIDSYM_C_WIDE, rigidsym_c_impl.h) */
+static int rigidsym_c_quaternion_rotation_wide(
+    const double in_q[4],
+    double Q[9])
+{
+    const long double q_0 = in_q[0];
+    const long double q_1 = in_q[1];
+    const long double q_2 = in_q[2];
+    const long double q_3 = in_q[3];
+    int status = 0, singular = 0;
+    long double finite = 0.0L;
+    (void)in_q;
+    {
+        const long double x0 = 2.0*(q_2*q_2);
+        const long double x1 = 2.0*(q_3*q_3) - 1.0;
+        const long double x2 = 2.0*q_0;
+        const long double x3 = q_3*x2;
+        const long double x4 = q_2*x2;
+        const long double x5 = 2.0*q_1;
+        const long double x6 = 2.0*(q_1*q_1);
+        const long double x7 = q_1*x2;
+        Q[0] = (double)(-x0 - x1);
+        Q[1] = (double)(2.0*q_1*q_2 - x3);
+        Q[2] = (double)(q_3*x5 + x4);
+        Q[3] = (double)(q_2*x5 + x3);
+        Q[4] = (double)(-x1 - x6);
+        Q[5] = (double)(2.0*q_2*q_3 - x7);
+        Q[6] = (double)(2.0*q_1*q_3 - x4);
+        Q[7] = (double)(2.0*q_2*q_3 + x7);
+        Q[8] = (double)(-x0 - x6 + 1.0);
+    }
+    finite += (long double)(((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + (Q[3] - Q[3]))) + (((Q[4] - Q[4]) + (Q[5] - Q[5])) + ((Q[6] - Q[6]) + ((Q[7] - Q[7]) + (Q[8] - Q[8]))))));
+    if (finite != finite)
+        status |= RIGIDSYM_C_NONFINITE_RESULT;
+    if (singular) {
+        status |= RIGIDSYM_C_SINGULAR;
+        Q[0] = NAN;
+        Q[1] = NAN;
+        Q[2] = NAN;
+        Q[3] = NAN;
+        Q[4] = NAN;
+        Q[5] = NAN;
+        Q[6] = NAN;
+        Q[7] = NAN;
+        Q[8] = NAN;
+    }
+    return status;
+}
+#endif
+
 RIGIDSYM_C_API int rigidsym_c_quaternion_rotation(
     const double q[4],
     double Q[9])
@@ -37,6 +89,10 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation(
         for (j = 0; j < 1; ++j)
             if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
                 status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_WIDE
+        if (status == RIGIDSYM_C_EXTREME_INPUT)
+            return rigidsym_c_quaternion_rotation_wide(q, Q);
+#endif
     }
 #else
     (void)odd;
@@ -206,6 +262,137 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_f32_batch(
     return all;
 }
 
+#if RIGIDSYM_C_WIDE
+/* rigidsym_c_quaternion_rotation_with_jacobians in long double, rounded once to double: the rescue of a sample with an
+ * extreme input (RIGIDSYM_C_WIDE, rigidsym_c_impl.h) */
+static int rigidsym_c_quaternion_rotation_with_jacobians_wide(
+    const double in_q[4],
+    double Q[9],
+    double Q_D_q[36])
+{
+    const long double q_0 = in_q[0];
+    const long double q_1 = in_q[1];
+    const long double q_2 = in_q[2];
+    const long double q_3 = in_q[3];
+    int status = 0, singular = 0;
+    long double finite = 0.0L;
+    (void)in_q;
+    {
+        const long double x0 = 2.0*(q_2*q_2);
+        const long double x1 = 2.0*(q_3*q_3) - 1.0;
+        const long double x2 = 2.0*q_3;
+        const long double x3 = q_0*x2;
+        const long double x4 = 2.0*q_2;
+        const long double x5 = q_0*x4;
+        const long double x6 = 2.0*(q_1*q_1);
+        const long double x7 = 2.0*q_1;
+        const long double x8 = q_0*x7;
+        const long double x9 = -4.0*q_2;
+        const long double x10 = -4.0*q_3;
+        const long double x11 = 2.0*q_0;
+        const long double x12 = -x11;
+        const long double x13 = -4.0*q_1;
+        Q[0] = (double)(-x0 - x1);
+        Q[1] = (double)(2.0*q_1*q_2 - x3);
+        Q[2] = (double)(q_1*x2 + x5);
+        Q[3] = (double)(q_1*x4 + x3);
+        Q[4] = (double)(-x1 - x6);
+        Q[5] = (double)(2.0*q_2*q_3 - x8);
+        Q[6] = (double)(2.0*q_1*q_3 - x5);
+        Q[7] = (double)(q_2*x2 + x8);
+        Q[8] = (double)(-x0 - x6 + 1.0);
+        Q_D_q[0] = (double)(0.0);
+        Q_D_q[1] = (double)(0.0);
+        Q_D_q[2] = (double)(x9);
+        Q_D_q[3] = (double)(x10);
+        Q_D_q[4] = (double)(-x2);
+        Q_D_q[5] = (double)(x4);
+        Q_D_q[6] = (double)(x7);
+        Q_D_q[7] = (double)(x12);
+        Q_D_q[8] = (double)(x4);
+        Q_D_q[9] = (double)(x2);
+        Q_D_q[10] = (double)(x11);
+        Q_D_q[11] = (double)(x7);
+        Q_D_q[12] = (double)(x2);
+        Q_D_q[13] = (double)(x4);
+        Q_D_q[14] = (double)(x7);
+        Q_D_q[15] = (double)(x11);
+        Q_D_q[16] = (double)(0.0);
+        Q_D_q[17] = (double)(x13);
+        Q_D_q[18] = (double)(0.0);
+        Q_D_q[19] = (double)(x10);
+        Q_D_q[20] = (double)(-x7);
+        Q_D_q[21] = (double)(x12);
+        Q_D_q[22] = (double)(x2);
+        Q_D_q[23] = (double)(x4);
+        Q_D_q[24] = (double)(-x4);
+        Q_D_q[25] = (double)(x2);
+        Q_D_q[26] = (double)(x12);
+        Q_D_q[27] = (double)(x7);
+        Q_D_q[28] = (double)(x7);
+        Q_D_q[29] = (double)(x11);
+        Q_D_q[30] = (double)(x2);
+        Q_D_q[31] = (double)(x4);
+        Q_D_q[32] = (double)(0.0);
+        Q_D_q[33] = (double)(x13);
+        Q_D_q[34] = (double)(x9);
+        Q_D_q[35] = (double)(0.0);
+    }
+    finite += (long double)(((((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + ((Q[3] - Q[3]) + (Q[4] - Q[4])))) + (((Q[5] - Q[5]) + ((Q[6] - Q[6]) + (Q[7] - Q[7]))) + ((Q[8] - Q[8]) + ((Q_D_q[0] - Q_D_q[0]) + (Q_D_q[1] - Q_D_q[1]))))) + ((((Q_D_q[2] - Q_D_q[2]) + (Q_D_q[3] - Q_D_q[3])) + ((Q_D_q[4] - Q_D_q[4]) + ((Q_D_q[5] - Q_D_q[5]) + (Q_D_q[6] - Q_D_q[6])))) + (((Q_D_q[7] - Q_D_q[7]) + ((Q_D_q[8] - Q_D_q[8]) + (Q_D_q[9] - Q_D_q[9]))) + ((Q_D_q[10] - Q_D_q[10]) + ((Q_D_q[11] - Q_D_q[11]) + (Q_D_q[12] - Q_D_q[12])))))) + (((((Q_D_q[13] - Q_D_q[13]) + (Q_D_q[14] - Q_D_q[14])) + ((Q_D_q[15] - Q_D_q[15]) + ((Q_D_q[16] - Q_D_q[16]) + (Q_D_q[17] - Q_D_q[17])))) + (((Q_D_q[18] - Q_D_q[18]) + ((Q_D_q[19] - Q_D_q[19]) + (Q_D_q[20] - Q_D_q[20]))) + ((Q_D_q[21] - Q_D_q[21]) + ((Q_D_q[22] - Q_D_q[22]) + (Q_D_q[23] - Q_D_q[23]))))) + ((((Q_D_q[24] - Q_D_q[24]) + ((Q_D_q[25] - Q_D_q[25]) + (Q_D_q[26] - Q_D_q[26]))) + ((Q_D_q[27] - Q_D_q[27]) + ((Q_D_q[28] - Q_D_q[28]) + (Q_D_q[29] - Q_D_q[29])))) + (((Q_D_q[30] - Q_D_q[30]) + ((Q_D_q[31] - Q_D_q[31]) + (Q_D_q[32] - Q_D_q[32]))) + ((Q_D_q[33] - Q_D_q[33]) + ((Q_D_q[34] - Q_D_q[34]) + (Q_D_q[35] - Q_D_q[35]))))))));
+    if (finite != finite)
+        status |= RIGIDSYM_C_NONFINITE_RESULT;
+    if (singular) {
+        status |= RIGIDSYM_C_SINGULAR;
+        Q[0] = NAN;
+        Q[1] = NAN;
+        Q[2] = NAN;
+        Q[3] = NAN;
+        Q[4] = NAN;
+        Q[5] = NAN;
+        Q[6] = NAN;
+        Q[7] = NAN;
+        Q[8] = NAN;
+        Q_D_q[0] = NAN;
+        Q_D_q[1] = NAN;
+        Q_D_q[2] = NAN;
+        Q_D_q[3] = NAN;
+        Q_D_q[4] = NAN;
+        Q_D_q[5] = NAN;
+        Q_D_q[6] = NAN;
+        Q_D_q[7] = NAN;
+        Q_D_q[8] = NAN;
+        Q_D_q[9] = NAN;
+        Q_D_q[10] = NAN;
+        Q_D_q[11] = NAN;
+        Q_D_q[12] = NAN;
+        Q_D_q[13] = NAN;
+        Q_D_q[14] = NAN;
+        Q_D_q[15] = NAN;
+        Q_D_q[16] = NAN;
+        Q_D_q[17] = NAN;
+        Q_D_q[18] = NAN;
+        Q_D_q[19] = NAN;
+        Q_D_q[20] = NAN;
+        Q_D_q[21] = NAN;
+        Q_D_q[22] = NAN;
+        Q_D_q[23] = NAN;
+        Q_D_q[24] = NAN;
+        Q_D_q[25] = NAN;
+        Q_D_q[26] = NAN;
+        Q_D_q[27] = NAN;
+        Q_D_q[28] = NAN;
+        Q_D_q[29] = NAN;
+        Q_D_q[30] = NAN;
+        Q_D_q[31] = NAN;
+        Q_D_q[32] = NAN;
+        Q_D_q[33] = NAN;
+        Q_D_q[34] = NAN;
+        Q_D_q[35] = NAN;
+    }
+    return status;
+}
+#endif
+
 RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_with_jacobians(
     const double q[4],
     double Q[9],    double Q_D_q[36])
@@ -235,6 +422,10 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_with_jacobians(
         for (j = 0; j < 1; ++j)
             if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
                 status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_WIDE
+        if (status == RIGIDSYM_C_EXTREME_INPUT)
+            return rigidsym_c_quaternion_rotation_with_jacobians_wide(q, Q, Q_D_q);
+#endif
     }
 #else
     (void)odd;

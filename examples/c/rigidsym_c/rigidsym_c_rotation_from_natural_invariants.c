@@ -8,6 +8,68 @@
 #include "rigidsym_c_impl.h"
 #include "rigidsym_c_rotation_from_natural_invariants.h"
 
+#if RIGIDSYM_C_WIDE
+/* rigidsym_c_rotation_from_natural_invariants in long double, rounded once to double: the rescue of a sample with an
+ * extreme input (RIGIDSYM_C_WIDE, rigidsym_c_impl.h) */
+static int rigidsym_c_rotation_from_natural_invariants_wide(
+    const double in_e[3],
+    double in_phi,
+    double Q[9])
+{
+    const long double e_0 = in_e[0];
+    const long double e_1 = in_e[1];
+    const long double e_2 = in_e[2];
+    const long double phi = in_phi;
+    int status = 0, singular = 0;
+    long double finite = 0.0L;
+    (void)in_e;
+    (void)in_phi;
+    {
+        const long double x0 = (e_0*e_0);
+        const long double x1 = (0.5)*phi;
+        const long double x2 = sinl(x1);
+        const long double x3 = (x2*x2);
+        const long double x4 = 2.0*x3;
+        const long double x5 = cosl(x1);
+        const long double x6 = ((x3 < 0.5) ? (1.0 - x4) : (2.0*(x5*x5) - 1.0));
+        const long double x7 = e_0*x4;
+        const long double x8 = e_1*x7;
+        const long double x9 = 2.0*x2*x5;
+        const long double x10 = e_2*x9;
+        const long double x11 = e_2*x7;
+        const long double x12 = e_1*x9;
+        const long double x13 = (e_1*e_1);
+        const long double x14 = e_0*x9;
+        const long double x15 = (e_2*e_2);
+        Q[0] = (double)(x0 + x6*(1.0 - x0));
+        Q[1] = (double)(-x10 + x8);
+        Q[2] = (double)(x11 + x12);
+        Q[3] = (double)(x10 + x8);
+        Q[4] = (double)(x13 + x6*(1.0 - x13));
+        Q[5] = (double)(2.0*e_1*e_2*x3 - x14);
+        Q[6] = (double)(x11 - x12);
+        Q[7] = (double)(e_1*e_2*x4 + x14);
+        Q[8] = (double)(x15 + x6*(1.0 - x15));
+    }
+    finite += (long double)(((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + (Q[3] - Q[3]))) + (((Q[4] - Q[4]) + (Q[5] - Q[5])) + ((Q[6] - Q[6]) + ((Q[7] - Q[7]) + (Q[8] - Q[8]))))));
+    if (finite != finite)
+        status |= RIGIDSYM_C_NONFINITE_RESULT;
+    if (singular) {
+        status |= RIGIDSYM_C_SINGULAR;
+        Q[0] = NAN;
+        Q[1] = NAN;
+        Q[2] = NAN;
+        Q[3] = NAN;
+        Q[4] = NAN;
+        Q[5] = NAN;
+        Q[6] = NAN;
+        Q[7] = NAN;
+        Q[8] = NAN;
+    }
+    return status;
+}
+#endif
+
 RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants(
     const double e[3],
     double phi,
@@ -38,6 +100,10 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants(
         for (j = 0; j < 2; ++j)
             if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
                 status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_WIDE
+        if (status == RIGIDSYM_C_EXTREME_INPUT)
+            return rigidsym_c_rotation_from_natural_invariants_wide(e, phi, Q);
+#endif
     }
 #else
     (void)odd;
@@ -228,6 +294,154 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_f32_batch(
     return all;
 }
 
+#if RIGIDSYM_C_WIDE
+/* rigidsym_c_rotation_from_natural_invariants_with_jacobians in long double, rounded once to double: the rescue of a sample with an
+ * extreme input (RIGIDSYM_C_WIDE, rigidsym_c_impl.h) */
+static int rigidsym_c_rotation_from_natural_invariants_with_jacobians_wide(
+    const double in_e[3],
+    double in_phi,
+    double Q[9],
+    double Q_D_e[27],
+    double Q_D_phi[9])
+{
+    const long double e_0 = in_e[0];
+    const long double e_1 = in_e[1];
+    const long double e_2 = in_e[2];
+    const long double phi = in_phi;
+    int status = 0, singular = 0;
+    long double finite = 0.0L;
+    (void)in_e;
+    (void)in_phi;
+    {
+        const long double x0 = (e_0*e_0);
+        const long double x1 = 1.0 - x0;
+        const long double x2 = (0.5)*phi;
+        const long double x3 = sinl(x2);
+        const long double x4 = (x3*x3);
+        const long double x5 = 2.0*x4;
+        const long double x6 = 1.0 - x5;
+        const long double x7 = e_1*x5;
+        const long double x8 = e_0*x7;
+        const long double x9 = cosl(x2);
+        const long double x10 = 2.0*x3*x9;
+        const long double x11 = e_2*x10;
+        const long double x12 = e_0*x5;
+        const long double x13 = e_2*x12;
+        const long double x14 = e_1*x10;
+        const long double x15 = (e_1*e_1);
+        const long double x16 = 1.0 - x15;
+        const long double x17 = e_0*x10;
+        const long double x18 = (e_2*e_2);
+        const long double x19 = 1.0 - x18;
+        const long double x20 = 4.0*x4;
+        const long double x21 = -x10;
+        const long double x22 = e_2*x5;
+        const long double x23 = e_0*x14;
+        const long double x24 = e_2*x6;
+        const long double x25 = e_1*x6;
+        const long double x26 = e_0*x11;
+        const long double x27 = e_0*x6;
+        Q[0] = (double)(x0 + x1*x6);
+        Q[1] = (double)(-x11 + x8);
+        Q[2] = (double)(x13 + x14);
+        Q[3] = (double)(x11 + x8);
+        Q[4] = (double)(x15 + x16*x6);
+        Q[5] = (double)(2.0*e_1*e_2*x4 - x17);
+        Q[6] = (double)(x13 - x14);
+        Q[7] = (double)(e_2*x7 + x17);
+        Q[8] = (double)(x18 + x19*x6);
+        Q_D_e[0] = (double)(e_0*x20);
+        Q_D_e[1] = (double)(0.0);
+        Q_D_e[2] = (double)(0.0);
+        Q_D_e[3] = (double)(x7);
+        Q_D_e[4] = (double)(x12);
+        Q_D_e[5] = (double)(x21);
+        Q_D_e[6] = (double)(x22);
+        Q_D_e[7] = (double)(x10);
+        Q_D_e[8] = (double)(x12);
+        Q_D_e[9] = (double)(x7);
+        Q_D_e[10] = (double)(x12);
+        Q_D_e[11] = (double)(x10);
+        Q_D_e[12] = (double)(0.0);
+        Q_D_e[13] = (double)(e_1*x20);
+        Q_D_e[14] = (double)(0.0);
+        Q_D_e[15] = (double)(x21);
+        Q_D_e[16] = (double)(x22);
+        Q_D_e[17] = (double)(x7);
+        Q_D_e[18] = (double)(x22);
+        Q_D_e[19] = (double)(x21);
+        Q_D_e[20] = (double)(x12);
+        Q_D_e[21] = (double)(x10);
+        Q_D_e[22] = (double)(x22);
+        Q_D_e[23] = (double)(x7);
+        Q_D_e[24] = (double)(0.0);
+        Q_D_e[25] = (double)(0.0);
+        Q_D_e[26] = (double)(e_2*x20);
+        Q_D_phi[0] = (double)(-x1*x10);
+        Q_D_phi[1] = (double)(x23 - x24);
+        Q_D_phi[2] = (double)(x25 + x26);
+        Q_D_phi[3] = (double)(x23 + x24);
+        Q_D_phi[4] = (double)(-x10*x16);
+        Q_D_phi[5] = (double)(2.0*e_1*e_2*x3*x9 - x27);
+        Q_D_phi[6] = (double)(-x25 + x26);
+        Q_D_phi[7] = (double)(e_1*x11 + x27);
+        Q_D_phi[8] = (double)(-x10*x19);
+    }
+    finite += (long double)(((((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + ((Q[3] - Q[3]) + (Q[4] - Q[4])))) + (((Q[5] - Q[5]) + ((Q[6] - Q[6]) + (Q[7] - Q[7]))) + ((Q[8] - Q[8]) + ((Q_D_e[0] - Q_D_e[0]) + (Q_D_e[1] - Q_D_e[1]))))) + ((((Q_D_e[2] - Q_D_e[2]) + (Q_D_e[3] - Q_D_e[3])) + ((Q_D_e[4] - Q_D_e[4]) + ((Q_D_e[5] - Q_D_e[5]) + (Q_D_e[6] - Q_D_e[6])))) + (((Q_D_e[7] - Q_D_e[7]) + ((Q_D_e[8] - Q_D_e[8]) + (Q_D_e[9] - Q_D_e[9]))) + ((Q_D_e[10] - Q_D_e[10]) + ((Q_D_e[11] - Q_D_e[11]) + (Q_D_e[12] - Q_D_e[12])))))) + (((((Q_D_e[13] - Q_D_e[13]) + (Q_D_e[14] - Q_D_e[14])) + ((Q_D_e[15] - Q_D_e[15]) + ((Q_D_e[16] - Q_D_e[16]) + (Q_D_e[17] - Q_D_e[17])))) + (((Q_D_e[18] - Q_D_e[18]) + ((Q_D_e[19] - Q_D_e[19]) + (Q_D_e[20] - Q_D_e[20]))) + ((Q_D_e[21] - Q_D_e[21]) + ((Q_D_e[22] - Q_D_e[22]) + (Q_D_e[23] - Q_D_e[23]))))) + ((((Q_D_e[24] - Q_D_e[24]) + ((Q_D_e[25] - Q_D_e[25]) + (Q_D_e[26] - Q_D_e[26]))) + ((Q_D_phi[0] - Q_D_phi[0]) + ((Q_D_phi[1] - Q_D_phi[1]) + (Q_D_phi[2] - Q_D_phi[2])))) + (((Q_D_phi[3] - Q_D_phi[3]) + ((Q_D_phi[4] - Q_D_phi[4]) + (Q_D_phi[5] - Q_D_phi[5]))) + ((Q_D_phi[6] - Q_D_phi[6]) + ((Q_D_phi[7] - Q_D_phi[7]) + (Q_D_phi[8] - Q_D_phi[8]))))))));
+    if (finite != finite)
+        status |= RIGIDSYM_C_NONFINITE_RESULT;
+    if (singular) {
+        status |= RIGIDSYM_C_SINGULAR;
+        Q[0] = NAN;
+        Q[1] = NAN;
+        Q[2] = NAN;
+        Q[3] = NAN;
+        Q[4] = NAN;
+        Q[5] = NAN;
+        Q[6] = NAN;
+        Q[7] = NAN;
+        Q[8] = NAN;
+        Q_D_e[0] = NAN;
+        Q_D_e[1] = NAN;
+        Q_D_e[2] = NAN;
+        Q_D_e[3] = NAN;
+        Q_D_e[4] = NAN;
+        Q_D_e[5] = NAN;
+        Q_D_e[6] = NAN;
+        Q_D_e[7] = NAN;
+        Q_D_e[8] = NAN;
+        Q_D_e[9] = NAN;
+        Q_D_e[10] = NAN;
+        Q_D_e[11] = NAN;
+        Q_D_e[12] = NAN;
+        Q_D_e[13] = NAN;
+        Q_D_e[14] = NAN;
+        Q_D_e[15] = NAN;
+        Q_D_e[16] = NAN;
+        Q_D_e[17] = NAN;
+        Q_D_e[18] = NAN;
+        Q_D_e[19] = NAN;
+        Q_D_e[20] = NAN;
+        Q_D_e[21] = NAN;
+        Q_D_e[22] = NAN;
+        Q_D_e[23] = NAN;
+        Q_D_e[24] = NAN;
+        Q_D_e[25] = NAN;
+        Q_D_e[26] = NAN;
+        Q_D_phi[0] = NAN;
+        Q_D_phi[1] = NAN;
+        Q_D_phi[2] = NAN;
+        Q_D_phi[3] = NAN;
+        Q_D_phi[4] = NAN;
+        Q_D_phi[5] = NAN;
+        Q_D_phi[6] = NAN;
+        Q_D_phi[7] = NAN;
+        Q_D_phi[8] = NAN;
+    }
+    return status;
+}
+#endif
+
 RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_with_jacobians(
     const double e[3],
     double phi,
@@ -258,6 +472,10 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_with_jacobians(
         for (j = 0; j < 2; ++j)
             if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
                 status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_WIDE
+        if (status == RIGIDSYM_C_EXTREME_INPUT)
+            return rigidsym_c_rotation_from_natural_invariants_with_jacobians_wide(e, phi, Q, Q_D_e, Q_D_phi);
+#endif
     }
 #else
     (void)odd;

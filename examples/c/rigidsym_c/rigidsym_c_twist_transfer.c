@@ -8,6 +8,59 @@
 #include "rigidsym_c_impl.h"
 #include "rigidsym_c_twist_transfer.h"
 
+#if RIGIDSYM_C_WIDE
+/* rigidsym_c_twist_transfer in long double, rounded once to double: the rescue of a sample with an
+ * extreme input (RIGIDSYM_C_WIDE, rigidsym_c_impl.h) */
+static int rigidsym_c_twist_transfer_wide(
+    const double in_t_A[6],
+    const double in_a[3],
+    const double in_p[3],
+    double t_P[6])
+{
+    const long double t_A_0 = in_t_A[0];
+    const long double t_A_1 = in_t_A[1];
+    const long double t_A_2 = in_t_A[2];
+    const long double t_A_3 = in_t_A[3];
+    const long double t_A_4 = in_t_A[4];
+    const long double t_A_5 = in_t_A[5];
+    const long double a_0 = in_a[0];
+    const long double a_1 = in_a[1];
+    const long double a_2 = in_a[2];
+    const long double p_0 = in_p[0];
+    const long double p_1 = in_p[1];
+    const long double p_2 = in_p[2];
+    int status = 0, singular = 0;
+    long double finite = 0.0L;
+    (void)in_t_A;
+    (void)in_a;
+    (void)in_p;
+    {
+        const long double x0 = a_2 - p_2;
+        const long double x1 = a_1 - p_1;
+        const long double x2 = a_0 - p_0;
+        t_P[0] = (double)(t_A_0);
+        t_P[1] = (double)(t_A_1);
+        t_P[2] = (double)(t_A_2);
+        t_P[3] = (double)(-t_A_1*x0 + t_A_2*x1 + t_A_3);
+        t_P[4] = (double)(t_A_0*x0 - t_A_2*x2 + t_A_4);
+        t_P[5] = (double)(-t_A_0*x1 + t_A_1*x2 + t_A_5);
+    }
+    finite += (long double)((((t_P[0] - t_P[0]) + ((t_P[1] - t_P[1]) + (t_P[2] - t_P[2]))) + ((t_P[3] - t_P[3]) + ((t_P[4] - t_P[4]) + (t_P[5] - t_P[5])))));
+    if (finite != finite)
+        status |= RIGIDSYM_C_NONFINITE_RESULT;
+    if (singular) {
+        status |= RIGIDSYM_C_SINGULAR;
+        t_P[0] = NAN;
+        t_P[1] = NAN;
+        t_P[2] = NAN;
+        t_P[3] = NAN;
+        t_P[4] = NAN;
+        t_P[5] = NAN;
+    }
+    return status;
+}
+#endif
+
 RIGIDSYM_C_API int rigidsym_c_twist_transfer(
     const double t_A[6],
     const double a[3],
@@ -49,6 +102,10 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer(
         for (j = 0; j < 3; ++j)
             if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
                 status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_WIDE
+        if (status == RIGIDSYM_C_EXTREME_INPUT)
+            return rigidsym_c_twist_transfer_wide(t_A, a, p, t_P);
+#endif
     }
 #else
     (void)odd;
@@ -216,6 +273,212 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_f32_batch(
     return all;
 }
 
+#if RIGIDSYM_C_WIDE
+/* rigidsym_c_twist_transfer_with_jacobians in long double, rounded once to double: the rescue of a sample with an
+ * extreme input (RIGIDSYM_C_WIDE, rigidsym_c_impl.h) */
+static int rigidsym_c_twist_transfer_with_jacobians_wide(
+    const double in_t_A[6],
+    const double in_a[3],
+    const double in_p[3],
+    double t_P[6],
+    double t_P_D_t_A[36],
+    double t_P_D_a[18],
+    double t_P_D_p[18])
+{
+    const long double t_A_0 = in_t_A[0];
+    const long double t_A_1 = in_t_A[1];
+    const long double t_A_2 = in_t_A[2];
+    const long double t_A_3 = in_t_A[3];
+    const long double t_A_4 = in_t_A[4];
+    const long double t_A_5 = in_t_A[5];
+    const long double a_0 = in_a[0];
+    const long double a_1 = in_a[1];
+    const long double a_2 = in_a[2];
+    const long double p_0 = in_p[0];
+    const long double p_1 = in_p[1];
+    const long double p_2 = in_p[2];
+    int status = 0, singular = 0;
+    long double finite = 0.0L;
+    (void)in_t_A;
+    (void)in_a;
+    (void)in_p;
+    {
+        const long double x0 = a_2 - p_2;
+        const long double x1 = -x0;
+        const long double x2 = a_1 - p_1;
+        const long double x3 = a_0 - p_0;
+        const long double x4 = -x3;
+        const long double x5 = -x2;
+        const long double x6 = -t_A_1;
+        const long double x7 = -t_A_2;
+        const long double x8 = -t_A_0;
+        t_P[0] = (double)(t_A_0);
+        t_P[1] = (double)(t_A_1);
+        t_P[2] = (double)(t_A_2);
+        t_P[3] = (double)(t_A_1*x1 + t_A_2*x2 + t_A_3);
+        t_P[4] = (double)(t_A_0*x0 + t_A_2*x4 + t_A_4);
+        t_P[5] = (double)(t_A_0*x5 + t_A_1*x3 + t_A_5);
+        t_P_D_t_A[0] = (double)(1.0);
+        t_P_D_t_A[1] = (double)(0.0);
+        t_P_D_t_A[2] = (double)(0.0);
+        t_P_D_t_A[3] = (double)(0.0);
+        t_P_D_t_A[4] = (double)(0.0);
+        t_P_D_t_A[5] = (double)(0.0);
+        t_P_D_t_A[6] = (double)(0.0);
+        t_P_D_t_A[7] = (double)(1.0);
+        t_P_D_t_A[8] = (double)(0.0);
+        t_P_D_t_A[9] = (double)(0.0);
+        t_P_D_t_A[10] = (double)(0.0);
+        t_P_D_t_A[11] = (double)(0.0);
+        t_P_D_t_A[12] = (double)(0.0);
+        t_P_D_t_A[13] = (double)(0.0);
+        t_P_D_t_A[14] = (double)(1.0);
+        t_P_D_t_A[15] = (double)(0.0);
+        t_P_D_t_A[16] = (double)(0.0);
+        t_P_D_t_A[17] = (double)(0.0);
+        t_P_D_t_A[18] = (double)(0.0);
+        t_P_D_t_A[19] = (double)(x1);
+        t_P_D_t_A[20] = (double)(x2);
+        t_P_D_t_A[21] = (double)(1.0);
+        t_P_D_t_A[22] = (double)(0.0);
+        t_P_D_t_A[23] = (double)(0.0);
+        t_P_D_t_A[24] = (double)(x0);
+        t_P_D_t_A[25] = (double)(0.0);
+        t_P_D_t_A[26] = (double)(x4);
+        t_P_D_t_A[27] = (double)(0.0);
+        t_P_D_t_A[28] = (double)(1.0);
+        t_P_D_t_A[29] = (double)(0.0);
+        t_P_D_t_A[30] = (double)(x5);
+        t_P_D_t_A[31] = (double)(x3);
+        t_P_D_t_A[32] = (double)(0.0);
+        t_P_D_t_A[33] = (double)(0.0);
+        t_P_D_t_A[34] = (double)(0.0);
+        t_P_D_t_A[35] = (double)(1.0);
+        t_P_D_a[0] = (double)(0.0);
+        t_P_D_a[1] = (double)(0.0);
+        t_P_D_a[2] = (double)(0.0);
+        t_P_D_a[3] = (double)(0.0);
+        t_P_D_a[4] = (double)(0.0);
+        t_P_D_a[5] = (double)(0.0);
+        t_P_D_a[6] = (double)(0.0);
+        t_P_D_a[7] = (double)(0.0);
+        t_P_D_a[8] = (double)(0.0);
+        t_P_D_a[9] = (double)(0.0);
+        t_P_D_a[10] = (double)(t_A_2);
+        t_P_D_a[11] = (double)(x6);
+        t_P_D_a[12] = (double)(x7);
+        t_P_D_a[13] = (double)(0.0);
+        t_P_D_a[14] = (double)(t_A_0);
+        t_P_D_a[15] = (double)(t_A_1);
+        t_P_D_a[16] = (double)(x8);
+        t_P_D_a[17] = (double)(0.0);
+        t_P_D_p[0] = (double)(0.0);
+        t_P_D_p[1] = (double)(0.0);
+        t_P_D_p[2] = (double)(0.0);
+        t_P_D_p[3] = (double)(0.0);
+        t_P_D_p[4] = (double)(0.0);
+        t_P_D_p[5] = (double)(0.0);
+        t_P_D_p[6] = (double)(0.0);
+        t_P_D_p[7] = (double)(0.0);
+        t_P_D_p[8] = (double)(0.0);
+        t_P_D_p[9] = (double)(0.0);
+        t_P_D_p[10] = (double)(x7);
+        t_P_D_p[11] = (double)(t_A_1);
+        t_P_D_p[12] = (double)(t_A_2);
+        t_P_D_p[13] = (double)(0.0);
+        t_P_D_p[14] = (double)(x8);
+        t_P_D_p[15] = (double)(x6);
+        t_P_D_p[16] = (double)(t_A_0);
+        t_P_D_p[17] = (double)(0.0);
+    }
+    finite += (long double)((((((((t_P[0] - t_P[0]) + (t_P[1] - t_P[1])) + ((t_P[2] - t_P[2]) + (t_P[3] - t_P[3]))) + (((t_P[4] - t_P[4]) + (t_P[5] - t_P[5])) + ((t_P_D_t_A[0] - t_P_D_t_A[0]) + ((t_P_D_t_A[1] - t_P_D_t_A[1]) + (t_P_D_t_A[2] - t_P_D_t_A[2]))))) + ((((t_P_D_t_A[3] - t_P_D_t_A[3]) + (t_P_D_t_A[4] - t_P_D_t_A[4])) + ((t_P_D_t_A[5] - t_P_D_t_A[5]) + ((t_P_D_t_A[6] - t_P_D_t_A[6]) + (t_P_D_t_A[7] - t_P_D_t_A[7])))) + (((t_P_D_t_A[8] - t_P_D_t_A[8]) + (t_P_D_t_A[9] - t_P_D_t_A[9])) + ((t_P_D_t_A[10] - t_P_D_t_A[10]) + ((t_P_D_t_A[11] - t_P_D_t_A[11]) + (t_P_D_t_A[12] - t_P_D_t_A[12])))))) + (((((t_P_D_t_A[13] - t_P_D_t_A[13]) + (t_P_D_t_A[14] - t_P_D_t_A[14])) + ((t_P_D_t_A[15] - t_P_D_t_A[15]) + ((t_P_D_t_A[16] - t_P_D_t_A[16]) + (t_P_D_t_A[17] - t_P_D_t_A[17])))) + (((t_P_D_t_A[18] - t_P_D_t_A[18]) + (t_P_D_t_A[19] - t_P_D_t_A[19])) + ((t_P_D_t_A[20] - t_P_D_t_A[20]) + ((t_P_D_t_A[21] - t_P_D_t_A[21]) + (t_P_D_t_A[22] - t_P_D_t_A[22]))))) + ((((t_P_D_t_A[23] - t_P_D_t_A[23]) + (t_P_D_t_A[24] - t_P_D_t_A[24])) + ((t_P_D_t_A[25] - t_P_D_t_A[25]) + ((t_P_D_t_A[26] - t_P_D_t_A[26]) + (t_P_D_t_A[27] - t_P_D_t_A[27])))) + (((t_P_D_t_A[28] - t_P_D_t_A[28]) + (t_P_D_t_A[29] - t_P_D_t_A[29])) + ((t_P_D_t_A[30] - t_P_D_t_A[30]) + ((t_P_D_t_A[31] - t_P_D_t_A[31]) + (t_P_D_t_A[32] - t_P_D_t_A[32]))))))) + ((((((t_P_D_t_A[33] - t_P_D_t_A[33]) + (t_P_D_t_A[34] - t_P_D_t_A[34])) + ((t_P_D_t_A[35] - t_P_D_t_A[35]) + (t_P_D_a[0] - t_P_D_a[0]))) + (((t_P_D_a[1] - t_P_D_a[1]) + (t_P_D_a[2] - t_P_D_a[2])) + ((t_P_D_a[3] - t_P_D_a[3]) + ((t_P_D_a[4] - t_P_D_a[4]) + (t_P_D_a[5] - t_P_D_a[5]))))) + ((((t_P_D_a[6] - t_P_D_a[6]) + (t_P_D_a[7] - t_P_D_a[7])) + ((t_P_D_a[8] - t_P_D_a[8]) + ((t_P_D_a[9] - t_P_D_a[9]) + (t_P_D_a[10] - t_P_D_a[10])))) + (((t_P_D_a[11] - t_P_D_a[11]) + (t_P_D_a[12] - t_P_D_a[12])) + ((t_P_D_a[13] - t_P_D_a[13]) + ((t_P_D_a[14] - t_P_D_a[14]) + (t_P_D_a[15] - t_P_D_a[15])))))) + (((((t_P_D_a[16] - t_P_D_a[16]) + (t_P_D_a[17] - t_P_D_a[17])) + ((t_P_D_p[0] - t_P_D_p[0]) + ((t_P_D_p[1] - t_P_D_p[1]) + (t_P_D_p[2] - t_P_D_p[2])))) + (((t_P_D_p[3] - t_P_D_p[3]) + (t_P_D_p[4] - t_P_D_p[4])) + ((t_P_D_p[5] - t_P_D_p[5]) + ((t_P_D_p[6] - t_P_D_p[6]) + (t_P_D_p[7] - t_P_D_p[7]))))) + ((((t_P_D_p[8] - t_P_D_p[8]) + (t_P_D_p[9] - t_P_D_p[9])) + ((t_P_D_p[10] - t_P_D_p[10]) + ((t_P_D_p[11] - t_P_D_p[11]) + (t_P_D_p[12] - t_P_D_p[12])))) + (((t_P_D_p[13] - t_P_D_p[13]) + (t_P_D_p[14] - t_P_D_p[14])) + ((t_P_D_p[15] - t_P_D_p[15]) + ((t_P_D_p[16] - t_P_D_p[16]) + (t_P_D_p[17] - t_P_D_p[17])))))))));
+    if (finite != finite)
+        status |= RIGIDSYM_C_NONFINITE_RESULT;
+    if (singular) {
+        status |= RIGIDSYM_C_SINGULAR;
+        t_P[0] = NAN;
+        t_P[1] = NAN;
+        t_P[2] = NAN;
+        t_P[3] = NAN;
+        t_P[4] = NAN;
+        t_P[5] = NAN;
+        t_P_D_t_A[0] = NAN;
+        t_P_D_t_A[1] = NAN;
+        t_P_D_t_A[2] = NAN;
+        t_P_D_t_A[3] = NAN;
+        t_P_D_t_A[4] = NAN;
+        t_P_D_t_A[5] = NAN;
+        t_P_D_t_A[6] = NAN;
+        t_P_D_t_A[7] = NAN;
+        t_P_D_t_A[8] = NAN;
+        t_P_D_t_A[9] = NAN;
+        t_P_D_t_A[10] = NAN;
+        t_P_D_t_A[11] = NAN;
+        t_P_D_t_A[12] = NAN;
+        t_P_D_t_A[13] = NAN;
+        t_P_D_t_A[14] = NAN;
+        t_P_D_t_A[15] = NAN;
+        t_P_D_t_A[16] = NAN;
+        t_P_D_t_A[17] = NAN;
+        t_P_D_t_A[18] = NAN;
+        t_P_D_t_A[19] = NAN;
+        t_P_D_t_A[20] = NAN;
+        t_P_D_t_A[21] = NAN;
+        t_P_D_t_A[22] = NAN;
+        t_P_D_t_A[23] = NAN;
+        t_P_D_t_A[24] = NAN;
+        t_P_D_t_A[25] = NAN;
+        t_P_D_t_A[26] = NAN;
+        t_P_D_t_A[27] = NAN;
+        t_P_D_t_A[28] = NAN;
+        t_P_D_t_A[29] = NAN;
+        t_P_D_t_A[30] = NAN;
+        t_P_D_t_A[31] = NAN;
+        t_P_D_t_A[32] = NAN;
+        t_P_D_t_A[33] = NAN;
+        t_P_D_t_A[34] = NAN;
+        t_P_D_t_A[35] = NAN;
+        t_P_D_a[0] = NAN;
+        t_P_D_a[1] = NAN;
+        t_P_D_a[2] = NAN;
+        t_P_D_a[3] = NAN;
+        t_P_D_a[4] = NAN;
+        t_P_D_a[5] = NAN;
+        t_P_D_a[6] = NAN;
+        t_P_D_a[7] = NAN;
+        t_P_D_a[8] = NAN;
+        t_P_D_a[9] = NAN;
+        t_P_D_a[10] = NAN;
+        t_P_D_a[11] = NAN;
+        t_P_D_a[12] = NAN;
+        t_P_D_a[13] = NAN;
+        t_P_D_a[14] = NAN;
+        t_P_D_a[15] = NAN;
+        t_P_D_a[16] = NAN;
+        t_P_D_a[17] = NAN;
+        t_P_D_p[0] = NAN;
+        t_P_D_p[1] = NAN;
+        t_P_D_p[2] = NAN;
+        t_P_D_p[3] = NAN;
+        t_P_D_p[4] = NAN;
+        t_P_D_p[5] = NAN;
+        t_P_D_p[6] = NAN;
+        t_P_D_p[7] = NAN;
+        t_P_D_p[8] = NAN;
+        t_P_D_p[9] = NAN;
+        t_P_D_p[10] = NAN;
+        t_P_D_p[11] = NAN;
+        t_P_D_p[12] = NAN;
+        t_P_D_p[13] = NAN;
+        t_P_D_p[14] = NAN;
+        t_P_D_p[15] = NAN;
+        t_P_D_p[16] = NAN;
+        t_P_D_p[17] = NAN;
+    }
+    return status;
+}
+#endif
+
 RIGIDSYM_C_API int rigidsym_c_twist_transfer_with_jacobians(
     const double t_A[6],
     const double a[3],
@@ -257,6 +520,10 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_with_jacobians(
         for (j = 0; j < 3; ++j)
             if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
                 status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_WIDE
+        if (status == RIGIDSYM_C_EXTREME_INPUT)
+            return rigidsym_c_twist_transfer_with_jacobians_wide(t_A, a, p, t_P, t_P_D_t_A, t_P_D_a, t_P_D_p);
+#endif
     }
 #else
     (void)odd;

@@ -29,6 +29,9 @@ def _generate_args(p) -> None:
     p.add_argument("--kernel", action="append", metavar="NAME",
                    help="with --target c: a book kernel to include (repeatable; default: "
                         "every book kernel when no --module is given, none otherwise)")
+    p.add_argument("--single-header", action="store_true",
+                   help="with --target c: also write rigidsym_c_single.h, every kernel in "
+                        "one self-contained header (default: off)")
 
 
 def cmd_generate(args) -> int:
@@ -38,9 +41,11 @@ def cmd_generate(args) -> int:
     if getattr(args, "target", "package") == "c":
         from rigidsym.codegen.backends.c.cli import cmd_generate_c
         return cmd_generate_c(args)
-    if getattr(args, "kernel", None):
-        print("error: --kernel: only with --target c", file=sys.stderr)
-        return 2
+    for opt, given in (("--kernel", getattr(args, "kernel", None)),
+                       ("--single-header", getattr(args, "single_header", False))):
+        if given:
+            print(f"error: {opt}: only with --target c", file=sys.stderr)
+            return 2
     if args.module:
         from rigidsym.codegen.usergen import cmd_generate_user
         return cmd_generate_user(args)

@@ -73,7 +73,8 @@ def cmd_generate_c(args) -> int:
 
     with one_line_warnings():
         kernels, origin = select_kernels(args.module, getattr(args, "kernel", None))
-    files = generate_c(compile_many(kernels, plan32=False), origin)
+    files = generate_c(compile_many(kernels, plan32=False), origin,
+                       single_header=getattr(args, "single_header", False))
 
     class _Result:  # what codegen.files reads of a generation
         pass

@@ -12,11 +12,11 @@ from __future__ import annotations
 
 import numpy as np
 import sympy as sp
-from sympy.codegen.ast import float32, real
+from sympy.codegen.ast import float32, float80, real
 
 from rigidsym.codegen.printers import KernelCPrinter
 
-__all__ = ["DoublePrinter", "FloatOnlyPrinter"]
+__all__ = ["DoublePrinter", "FloatOnlyPrinter", "WidePrinter"]
 
 
 class DoublePrinter(KernelCPrinter):
@@ -57,3 +57,17 @@ class FloatOnlyPrinter(KernelCPrinter):
 
     def _print_Pi(self, expr):
         return self._literal(float(sp.pi))
+
+
+class WidePrinter(KernelCPrinter):
+    """C99 printer of the long double rescue of the double functions (``sinl``, ``sqrtl``,
+    ``L`` literals; doubles' exact literals stay as they are: they widen exactly)."""
+
+    _diffprod = "rigidsym_c_diffprodl"
+    _sumprod = "rigidsym_c_sumprod{n}l"
+
+    def __init__(self, settings=None):
+        super().__init__({"type_aliases": {real: float80}, **(settings or {})})
+
+    def _sqrt(self, arg: str) -> str:
+        return f"sqrtl({arg})"
