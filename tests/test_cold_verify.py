@@ -50,3 +50,22 @@ def test_matmul_refuses_shapes_that_do_not_fit():
 
     with pytest.raises(sp.ShapeError):
         matmul(sp.ImmutableMatrix([[1, 2]]), sp.ImmutableMatrix([[1, 2]]))
+
+
+_TREES = st.recursive(
+    st.sampled_from([_X, _Y, _Z, sp.Integer(2), sp.Rational(1, 2)]),
+    lambda c: st.one_of(
+        st.tuples(c, c).map(lambda t: t[0] + t[1]), st.tuples(c, c).map(lambda t: t[0] * t[1]),
+        c.map(sp.acos), c.map(sp.sqrt), st.tuples(c, c).map(lambda t: sp.atan2(*t)),
+        c.map(sp.asin), c.map(lambda e: e ** -1)),
+    max_leaves=12)
+
+
+@settings(max_examples=80, deadline=None)
+@given(st.lists(_TREES, min_size=1, max_size=4))
+def test_nodes_are_sympys_atoms(exprs):
+    from rigidsym.checking.deciding.branches import _nodes
+
+    types = (sp.acos, sp.asin, sp.atan2, sp.Pow)
+    want = set().union(*(e.atoms(*types) for e in exprs))
+    assert _nodes(exprs, types) == want
