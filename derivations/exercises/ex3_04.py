@@ -13,7 +13,13 @@ import sympy as sp
 
 from rigidsym.checking.worked import Param, Solution, exact_check, is_zero, truth_check
 
-from ._fit import exact_rotation, is_local_minimum, nearest_rotation, squared_residual
+from ._fit import (
+    accepting_tol,
+    exact_rotation,
+    is_local_minimum,
+    nearest_rotation,
+    squared_residual,
+)
 from ._random import cayley
 
 ID = "ex3.4"
@@ -71,8 +77,9 @@ def solve(n_1=PARAMETERS[0].default, f_1=PARAMETERS[1].default, n_2=PARAMETERS[2
 def _exact(s: Solution, n1, f1, n2, f2, inv1, inv2) -> Solution:
     for k, name in enumerate(_INVARIANTS):
         if not is_zero(inv1[k] - inv2[k]):
+            gap = max(_gaps(n1, f1, n2, f2), key=float)
             s.fail(f"The measurements are not compatible: {name} is {inv1[k]} in F_1 but "
-                   f"{inv2[k]} in F_2, and a rotation preserves it.")
+                   f"{inv2[k]} in F_2, and a rotation preserves it{accepting_tol(gap)}.")
     B1 = s.step("triad in F1", sp.Matrix.hstack(f1, n1, f1.cross(n1)),
                 "f, n and f x n are independent (f, n not parallel) and rotate together.")
     B2 = s.step("triad in F2", sp.Matrix.hstack(f2, n2, f2.cross(n2)), "The same triad in F2.")
@@ -101,7 +108,7 @@ def _measured(s: Solution, n1, f1, n2, f2, tol) -> Solution:
         if bool(g > tol):
             s.fail(f"The measurements are not compatible within tol = {float(tol):.3g}: "
                    f"{name} differs by {float(g):.3g} between F_1 and F_2, and a rotation "
-                   f"preserves it.")
+                   f"preserves it{accepting_tol(max(gaps, key=float))}.")
     pairs = [(f1, f2), (n1, n2)]
     M = s.step("correlation", f1 * f2.T + n1 * n2.T,
                "Least squares: Q maximises tr(Q^T M), M = f_1 f_2^T + n_1 n_2^T (orthogonal "

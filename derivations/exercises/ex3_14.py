@@ -13,7 +13,7 @@ import sympy as sp
 
 from rigidsym.checking.worked import Param, Solution, exact_check, is_zero, truth_check
 
-from ._fit import exact_rotation, is_local_minimum, sorted_eigh
+from ._fit import accepting_tol, exact_rotation, is_local_minimum, sorted_eigh
 
 ID = "ex3.14"
 TITLE = "Two observers of one inertia matrix"
@@ -81,8 +81,11 @@ def solve(I_A=PARAMETERS[0].default, I_B=PARAMETERS[1].default, tol=None) -> Sol
     if tol is None:
         for k, name in enumerate(_INV):
             if not is_zero(inv[k] - invB[k]):
+                gap = max(abs(float(a) - float(b)) for a, b in
+                          zip(principal_moments(IA), principal_moments(IB), strict=True))
                 s.fail(f"The measurements are not acceptable: {name} is {inv[k]} for A but "
-                       f"{invB[k]} for B, and a change of frame preserves it.")
+                       f"{invB[k]} for B, and a change of frame preserves it"
+                       f"{accepting_tol(gap)}.")
         return _exact(s, IA, IB, inv)
     return _measured(s, IA, IB, inv, tol)
 
@@ -136,7 +139,8 @@ def _measured(s: Solution, IA, IB, inv, tol) -> Solution:
     for k, g in enumerate(gaps):
         if bool(g > tol):
             s.fail(f"The measurements are not acceptable within tol = {float(tol):.3g}: the "
-                   f"principal moment I_{k + 1} differs by {float(g):.3g} between A and B.")
+                   f"principal moment I_{k + 1} differs by {float(g):.3g} between A and B"
+                   f"{accepting_tol(max(gaps, key=float))}.")
     _admissible(s, "[I]_B", lamB, slack=tol)
     Q = _rounded_rotation(s, IA, IB)
 
