@@ -100,18 +100,35 @@ def weakened_kinds(cert):
     return c if changed else None
 
 
+def _names(cert, rel):
+    """The atom names a relation uses (through the lets it refers to)."""
+    import re
+    lets = dict(cert["let"])
+    todo = [x for row in rel["lhs"] + rel["rhs"] for x in row]
+    seen, names = set(), set()
+    while todo:
+        for n in re.findall(r"[A-Za-z][A-Za-z0-9_.]*'*", todo.pop()):
+            if n in lets and n not in seen:
+                seen.add(n)
+                todo.append(lets[n])
+            names.add(n.rstrip("'"))
+    return names
+
+
 def moved_point(cert):
-    """A counterexample's (or a cofactor certificate's) value of a constrained atom moved by
-    1/3 (off the constraint set)."""
+    """A counterexample's (or a cofactor certificate's) values of the constrained atoms the
+    relation uses moved by 1/3 (off the constraint set)."""
     c = copy.deepcopy(cert)
     constrained = {n for g in c["atoms"] if g["kind"] in ("unit", "unit4", "rotation",
                                                            "transform") for n in g["names"]}
     for r in _rels(c, "counterexample") + _rels(c, "cofactors"):
-        for name in sorted(r["evidence"]["point"]):
-            if name in constrained:
+        used = constrained & _names(c, r)
+        moved = [n for n in sorted(r["evidence"]["point"]) if n.rstrip("'") in used]
+        if moved:
+            for name in moved:
                 v = Fraction(r["evidence"]["point"][name]) + Fraction(1, 3)
                 r["evidence"]["point"][name] = str(v)
-                return c
+            return c
     return None
 
 

@@ -240,3 +240,28 @@ def test_cli_exit_codes(tmp_path):
     (tmp_path / "bad.json").write_text(json.dumps(bad))
     p = subprocess.run(run + [str(tmp_path)], capture_output=True, text=True)
     assert p.returncode == 1 and "FAILED bad.json" in p.stdout, p.stdout
+
+
+@pytest.mark.slow
+def test_fresh_venv_without_rigidsym_or_sympy(tmp_path, quick_certs):
+    """pip install ./certcheck into a fresh virtual environment (no rigidsym, sympy, numpy
+    or flint there) and run its console script on the chapter share."""
+    import shutil
+
+    folder, certs = quick_certs
+    src = tmp_path / "certcheck"  # a copy: the build leaves nothing in the checkout
+    shutil.copytree(ROOT / "certcheck", src,
+                    ignore=shutil.ignore_patterns("build", "*.egg-info", "__pycache__"))
+    venv = tmp_path / "venv"
+    subprocess.run([sys.executable, "-m", "venv", str(venv)], check=True)
+    py = venv / "bin" / "python"
+    p = subprocess.run([str(py), "-m", "pip", "install", "-q", str(src)],
+                       capture_output=True, text=True, timeout=600)
+    if p.returncode != 0:
+        pytest.skip(f"pip could not install certcheck here: {p.stderr[-300:]}")
+    for mod in ("rigidsym", "sympy", "numpy", "flint"):
+        assert subprocess.run([str(py), "-c", f"import {mod}"], capture_output=True).returncode
+    p = subprocess.run([str(venv / "bin" / "certcheck"), str(folder), "--quiet"],
+                       capture_output=True, text=True, timeout=600)
+    assert p.returncode == 0, p.stdout + p.stderr
+    assert p.stdout.count("CHECKED") == len(certs)

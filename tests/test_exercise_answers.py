@@ -4,6 +4,8 @@ moments fit one line or two mirror lines; a cut through the top face leaves two 
 import subprocess
 import sys
 
+import numpy as np
+import pytest
 import sympy as sp
 
 import rigidsym.exercises as ex
@@ -38,6 +40,7 @@ def test_ex3_7_parallel_moments_give_both_mirror_lines():
                         s.answers[f"p_star{tag}"])
 
 
+@pytest.mark.slow      # an exact piecewise solve: 6 s of CPU, minutes on a loaded machine
 def test_ex3_12_cut_through_the_top_face_gives_both_parts():
     s = ex.solve("ex3.12", a="1/40", h="1/40")
     assert s.status == "solved" and s.checked
@@ -46,8 +49,8 @@ def test_ex3_12_cut_through_the_top_face_gives_both_parts():
     # the parts fill the prism: V = 3 sqrt(3)/2 a^2 h
     assert abs(lo + up - 3 * 3**0.5 / 2 * (1 / 40) ** 3) < 1e-15
     for t in ("wedge", "upper"):
-        R = s.answers[f"{t}_principal_axes"]
-        assert sp.simplify(R.T * R - sp.eye(3)) == sp.zeros(3, 3)   # unit, orthogonal axes
+        R = np.array(s.answers[f"{t}_principal_axes"].evalf(), float)
+        assert np.allclose(R.T @ R, np.eye(3), atol=1e-12)           # unit, orthogonal axes
         m = [float(x) for x in s.answers[f"{t}_principal_moments_per_rho_m5"]]
         assert m == sorted(m)
 
@@ -72,3 +75,36 @@ def test_cli_3_7_on_the_issue_data_exits_0():
                         "--set", "b=2,0,0", "--set", "n_A=0,1,0", "--set", "n_B=0,2,0"],
                        capture_output=True, text=True, timeout=120)
     assert r.returncode == 0, r.stderr
+
+
+def test_ex3_10_evaluation_step_at_given_angles():
+    """The evaluation step alone (the full solve decides the twelve sequences' symbolic
+    checks first, 3-4 s of CPU: under -m slow below and in the property test)."""
+    from rigidsym.checking.worked import IllPosed, Solution, exercise_module
+
+    m = exercise_module("ex3.10")
+    W = m.euler_rate_matrix("ZXZ")
+    d = sp.trigsimp(W.det())
+    s = Solution("ex3.10", "t", "st", "cit")
+    m._evaluated(s, W, d, {"theta": sp.pi / 6, "phi": sp.pi / 4, "psi": 0}, V([0, 0, 1]))
+    assert s.answers["det_W_at"] == -sp.sqrt(2) / 2 and s.answers["eta_dot"] == V([1, 0, 0])
+    assert s.checked
+    lock = Solution("ex3.10", "t", "st", "cit")
+    with pytest.raises(IllPosed, match="infinitely many"):
+        m._evaluated(lock, W, d, {"theta": 0, "phi": 0, "psi": 0}, V([0, 0, 1]))
+    none = Solution("ex3.10", "t", "st", "cit")
+    with pytest.raises(IllPosed, match="no eta_dot"):      # W = [e_z, e_x, e_z] there
+        m._evaluated(none, W, d, {"theta": 0, "phi": 0, "psi": 0}, V([0, 1, 0]))
+
+
+@pytest.mark.slow      # the full solve: 3-4 s of CPU for the symbolic part, once
+def test_ex3_10_evaluated_at_given_angles():
+    s = ex.solve("ex3.10", theta="30 deg", phi="pi/4", psi="0", omega=[0, 0, 1])
+    assert s.status == "solved" and s.checked
+    assert s.data["theta"] == sp.pi / 6                      # 30 deg, exact
+    W = s.answers["W_at"]
+    assert sp.simplify(W.det() - s.answers["det_W_at"]) == 0
+    assert s.answers["det_W_at"] == -sp.sqrt(2) / 2         # -sin(phi) for Z-X-Z
+    assert s.answers["eta_dot"] == V([1, 0, 0])             # omega along Z: theta_dot alone
+    gimbal = ex.solve("ex3.10", theta="0", phi="0", psi="0", omega=[1, 0, 0])
+    assert gimbal.status == "ill-posed" and "singular" in gimbal.reason

@@ -146,8 +146,14 @@ def figure(s: Solution):
     frame(ax, sp.zeros(3, 1), Q, "2", "tab:purple", scale=size)
     arrow(ax, sp.zeros(3, 1), g["f_1"], "tab:red", "f (F_1)")
     arrow(ax, sp.zeros(3, 1), g["n_1"], "tab:blue", "n (F_1)")
-    arrow(ax, sp.zeros(3, 1), Q * g["f_2"], "tab:red", "Q f_2", dashed=True)
-    arrow(ax, sp.zeros(3, 1), Q * g["n_2"], "tab:blue", "Q n_2", dashed=True)
+    # the checks land on the readings they check (that is the point), so they are drawn
+    # apart: a dashed arrow of another colour and a hollow ring at its tip
+    for vec, colour, label in ((Q * g["f_2"], "tab:orange", "Q f_2 (check: tip on f's)"),
+                               (Q * g["n_2"], "tab:cyan", "Q n_2 (check: tip on n's)")):
+        arrow(ax, sp.zeros(3, 1), vec, colour, None, dashed=True)
+        tip = [float(x) for x in vec]
+        ax.scatter(*tip, s=160, facecolors="none", edgecolors=colour, linewidths=2.0,
+                   label=label, depthshade=False)
     axes3d(ax, [g["f_1"], g["n_1"], sp.ones(3, 1) * size, -sp.ones(3, 1) * size])
     return fig
 

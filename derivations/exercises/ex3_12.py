@@ -74,6 +74,7 @@ def solve(a=A_SIDE, h=HEIGHT) -> Solution:
         s.answers[f"{tag}_principal_moments_per_kg_m2"] = sp.Matrix([p[0] / V for p in pr])
         s.answers[f"{tag}_principal_axes"] = sp.Matrix.hstack(*[p[1] for p in pr])
         s.answers[f"{tag}_axis_angle_from_y_rad"] = alpha
+    s.extra = _in_mm(s)
     A = 3 * sp.sqrt(3) / 2 * a**2
     s.check(exact_check("volumes add to the prism's, and the wedge is half the prism below "
                         "z = 2 S for a tall prism (Cavalieri)",
@@ -89,6 +90,22 @@ def solve(a=A_SIDE, h=HEIGHT) -> Solution:
     return s
 
 
+def _in_mm(s: Solution) -> str:
+    """The answers in the book's units (mm), to 4 digits: volume, centroid, the principal
+    moments per kg (sorted) and their unit axes."""
+    out = ["In the book's units (mm), to 4 digits:"]
+    for tag, name in (("wedge", "lower part"), ("upper", "upper part")):
+        V = float(s.answers[f"{tag}_volume_m3"]) * 1e9
+        c = [float(x) * 1e3 for x in s.answers[f"{tag}_centroid_m"]]
+        m = [float(x) * 1e6 for x in s.answers[f"{tag}_principal_moments_per_kg_m2"]]
+        R = s.answers[f"{tag}_principal_axes"]
+        out.append(f"  {name}: V = {V:.4g} mm^3, C = [{', '.join(f'{x:.4g}' for x in c)}] mm")
+        for k in range(3):
+            axis = ", ".join(f"{float(x):.4f}" for x in R[:, k])
+            out.append(f"    I_{k + 1}/m = {m[k]:.4g} mm^2 about [{axis}]")
+    return "\n".join(out)
+
+
 def figure(s: Solution):
     """The prism, the 45-degree cut plane, and each part's centroid with its principal
     axes (drawn from the answers)."""
@@ -100,14 +117,22 @@ def figure(s: Solution):
     fig, ax = new_figure("Exercise 3.12: the prism cut at 45 degrees, two parts")
     pts = draw_prism(ax, a, h)
     _draw_cut(ax, a, S)
-    size = max(a, h) / 4
     for tag, colour in (("wedge", "tab:red"), ("upper", "tab:blue")):
         c, axes = s.answers[f"{tag}_centroid_m"], s.answers[f"{tag}_principal_axes"]
-        point(ax, c, colour, f"{tag}: centroid and principal axes")
+        per_kg = s.answers[f"{tag}_principal_moments_per_kg_m2"]
+        point(ax, c, colour, f"{tag}: centroid; principal axes, length = radius of "
+                             f"gyration")
         for k in range(3):
-            v = axes[:, k]
-            arrow(ax, c, v / sp.sqrt(v.dot(v)), colour, scale=float(sp.N(size)))
+            # scaled: each axis is drawn as long as its radius of gyration sqrt(I_k / m)
+            r = float(sp.sqrt(sp.N(per_kg[k], 15)))
+            v = [float(x) for x in axes[:, k]]
+            arrow(ax, c, sp.Matrix(v), colour, scale=r)
+            tip = [float(ci) + r * vi for ci, vi in zip(c, v, strict=True)]
+            ax.text(*tip, f" {k + 1}: {1000 * r:.3g} mm", color=colour, fontsize=7)
     axes3d(ax, pts)
+    ax.set_xlabel("x (m)")
+    ax.set_ylabel("y (m)")
+    ax.set_zlabel("z (m)")
     return fig
 
 

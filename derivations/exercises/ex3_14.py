@@ -104,13 +104,30 @@ def _exact(s: Solution, IA, IB, inv) -> Solution:
     else:
         Q = _rounded_rotation(s, IA, IB)
         exact = False
-    s.answers = {"invariants": inv, "principal_moments": ev, "Q_B_A": Q, "acceptable": sp.true}
+    s.answers = {"invariants": inv, "principal_moments": ev, "Q_B_A": Q, "acceptable": sp.true,
+                 "Q_B_A_is_one_of": _family(lam)}
     s.check(truth_check("invariants equal (exact)", inv == _invariants(IB), f"{list(inv)}"))
     s.check(exact_check("Q proper orthogonal" + (" and Q [I]_A Q^T = [I]_B" if exact else ""),
                         [Q.T * Q - sp.eye(3), Q.det() - 1] + ([Q * IA * Q.T - IB] if exact
                                                                else [])))
     _admissible_check(s, lam)
     return s
+
+
+def _family(lam) -> str:
+    """Which rotations map [I]_A onto [I]_B besides the one given: a principal axis has no
+    sense, and equal moments leave their plane's axes free."""
+    ties = sum(is_zero(lam[i] - lam[j]) for i, j in ((0, 1), (1, 2), (0, 2)))
+    distinct = 3 if ties == 0 else 1 if ties == 3 else 2
+    if distinct == 3:
+        return ("four rotations: Q D_A with D_A = V_A D V_A^T, D = diag(1, 1, 1), "
+                "diag(1, -1, -1), diag(-1, 1, -1) or diag(-1, -1, 1) (a principal axis has "
+                "no sense)")
+    if distinct == 2:
+        return ("infinitely many: Q times any turn about the principal axis of the simple "
+                "moment (the two equal moments leave their plane's axes free), and the half "
+                "turns about the axes of that plane")
+    return "every rotation: [I]_A = [I]_B = I 1 (all moments equal)"
 
 
 def _eigenbasis(I, lam) -> sp.Matrix:

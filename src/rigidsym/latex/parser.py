@@ -168,6 +168,9 @@ class _Build(MeaningRules, VocabRules, BookRules, lark.Transformer):
         if not 1 <= lo <= hi <= shape[0]:
             raise LatexError(f"{key}: entries {lo} to {hi} of {vkey}, a {shape[0]}-vector",
                              "shapes")
+        if lo == hi:  # q_{4:4}: one entry, a scalar
+            self.readings.append(f"{key}: entry {lo} of {vkey}")
+            return _GlyphKey(key, base, rest, accent, v[lo - 1, 0])
         self.readings.append(f"{key}: entries {lo} to {hi} of {vkey}")
         return _GlyphKey(key, base, rest, accent,
                          sp.ImmutableMatrix([[v[i, 0]] for i in range(lo - 1, hi)]))

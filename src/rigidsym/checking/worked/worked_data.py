@@ -60,7 +60,8 @@ class Param:
     Attributes:
         name: a valid identifier, as the book writes it with subscripts after ``_`` and
             primes spelled out (``n_1``, ``I_A``, ``C_prime``).
-        default: the book's value (exact sympy: a number or a Matrix; a str for a choice).
+        default: the book's value (exact sympy: a number or a Matrix; a str for a choice;
+            None for an optional datum the book leaves symbolic, such as 3.10's angles).
         shape: ``()`` a number, ``(3,)`` a vector, ``(6,)``, ``(3, 3)`` a matrix; ``None``
             for a choice among ``choices``.
         meaning: one line.
@@ -163,6 +164,8 @@ class Parameters:
 
 
 def _flat_text(v) -> str:
+    if v is None:
+        return "(not given)"
     if isinstance(v, sp.MatrixBase):
         if v.cols == 1:
             return "[" + ", ".join(str(x) for x in v) + "]"
@@ -295,12 +298,18 @@ def read_value(p: Param, v, measured: bool = True, notes: list | None = None
         ValueError: wrong shape, a string that is not a number, NaN/inf, complex, a
             magnitude outside 1e-15 to 1e15.
     """
+    if v is None and p.default is None:
+        return None, False           # an optional datum (3.10's angles), left out
     if p.shape is None:
         if not isinstance(v, str) or v.strip().upper() not in p.choices:
             raise ValueError(f"{p.name}: expected one of {', '.join(p.choices)}, got {v!r}")
         return v.strip().upper(), False
     if isinstance(v, str):
         v = _unit_read(p, v)
+    if p.shape == () and p.unit == "rad" and isinstance(v, str):
+        turns = _pi_multiple(v, p.name)
+        if turns is not None:      # pi/4, 30 deg: exact, as their sines and cosines are
+            return turns, False
     if p.shape == ():
         return _scalar(v, p.name, measured, notes)
     if isinstance(v, str):
@@ -309,6 +318,20 @@ def read_value(p: Param, v, measured: bool = True, notes: list | None = None
     read = [_scalar(x, f"{p.name}[{i}]", measured, notes) for i, x in enumerate(flat)]
     rows, cols = (p.shape[0], 1) if len(p.shape) == 1 else p.shape
     return sp.ImmutableMatrix(rows, cols, [x for x, _ in read]), any(f for _, f in read)
+
+
+def _pi_multiple(text: str, where: str):
+    """An angle's text that is a rational multiple of pi (``pi/4``, ``(30)*(pi/180)``), as
+    that exact multiple; else None (read as any number)."""
+    from .worked_numbers import _bounded, _parse
+
+    try:
+        read_text(text, where)                       # the reader's bounds and refusals
+        value = _bounded(_parse(text.strip(), where), where, repr(text))
+    except ValueError:
+        return None
+    ratio = sp.simplify(value / sp.pi)
+    return ratio * sp.pi if ratio.is_Rational else None
 
 
 def _unit_read(p: Param, text: str):
@@ -396,7 +419,9 @@ def read_data(params: Parameters, data: dict, tol=None) -> Data:
                         f"are: {have}")
     values, measures, given_floats, notes, places = {}, [], [], [], []
     for p in params:
-        if p.name in data:
+        if p.name in data and data[p.name] is None and p.default is None:
+            values[p.name] = None          # an optional datum, left out (a notebook's None)
+        elif p.name in data:
             values[p.name], measure = read_value(p, data[p.name], params.measured, notes)
             if not has_unit(data[p.name]):
                 from .worked_units import implausible
