@@ -64,3 +64,31 @@ def backend(request):
         pytest.skip("no C compiler")
     yield request.param
     K.use_backend("numpy")
+
+
+#: what this process collected (tests/test_budget.py): every node id before the marker
+#: expression deselects, then the ids selected, and whether the whole of tests/ was collected
+COLLECTED: dict = {}
+
+
+def _plain_id(item) -> str:
+    """The node id without the ``@group`` suffix that ``--dist loadgroup`` appends."""
+    nodeid = item.nodeid
+    for mark in item.iter_markers("xdist_group"):
+        name = mark.args[0] if mark.args else mark.kwargs.get("name", "")
+        nodeid = nodeid.removesuffix(f"@{name}")
+    return nodeid
+
+
+@pytest.hookimpl(tryfirst=True)
+def pytest_collection_modifyitems(session, config, items):
+    COLLECTED["all"] = [_plain_id(i) for i in items]
+    tests = Path(__file__).resolve().parent
+    args = [Path(str(a).split("::")[0]).resolve() for a in config.args] or [tests]
+    COLLECTED["whole"] = all(tests.is_relative_to(a) for a in args) and \
+        not config.getoption("keyword") and not config.getoption("deselect")
+
+
+def pytest_collection_finish(session):
+    COLLECTED["selected"] = [_plain_id(i) for i in session.items]
+    COLLECTED["markexpr"] = session.config.getoption("markexpr")

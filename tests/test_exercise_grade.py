@@ -13,6 +13,7 @@ import pytest
 import sympy as sp
 
 import rigidsym.exercises as ex
+from rigidsym.checking.worked import to_json_value
 from rigidsym.cli import main
 
 
@@ -21,7 +22,11 @@ def _floats(m) -> list:
 
 
 def _slip(solution, name, value):
-    (g,) = ex.grade(solution, {name: value})
+    return _named(ex.grade(solution, {name: value}), name)
+
+
+def _named(graded, name):
+    (g,) = [g for g in graded if g.name == name]
     return g
 
 
@@ -89,7 +94,7 @@ def test_right_answers_pass_and_random_ones_are_not_a_known_slip(ex34, ex319, ex
     rng = np.random.default_rng(32)
     for s in (ex34, ex319, ex311):
         numeric = {k: v for k, v in s.answers.items() if isinstance(v, sp.MatrixBase)}
-        right = {k: [[str(x) for x in r] for r in v.tolist()] for k, v in numeric.items()}
+        right = {k: to_json_value(v) for k, v in s.answers.items() if not isinstance(v, str)}
         assert all(g.correct and g.slip is None for g in ex.grade(s, right))
         for k, v in numeric.items():
             g = _slip(s, k, (rng.uniform(-7, 7, size=v.shape) + 0.123).tolist())
@@ -102,7 +107,7 @@ def test_bad_answers():
         ex.grade(s, {"x": 1})
     with pytest.raises(TypeError, match="answers: expected a dict"):
         ex.grade(s, [1])
-    (g,) = ex.grade(s, {"e": ["a", 0, 0]})
+    g = _named(ex.grade(s, {"e": ["a", 0, 0]}), "e")
     assert g.correct is False and g.detail.startswith("not read")
 
 
@@ -112,12 +117,14 @@ def test_cli_one_student_and_a_class(tmp_path, capsys):
     wrong = dict(right, n_2=_floats(-s.answers["n_2"]))
     (tmp_path / "amy.json").write_text(json.dumps(right))
     (tmp_path / "bob.json").write_text(json.dumps(wrong))
-    assert main(["exercise", "3.19", "--grade", str(tmp_path / "bob.json"), "--json"]) == 0
+    assert main(["exercise", "3.19", "--grade", str(tmp_path / "amy.json")]) == 0
+    capsys.readouterr()
+    assert main(["exercise", "3.19", "--grade", str(tmp_path / "bob.json"), "--json"]) == 1
     doc = json.loads(capsys.readouterr().out)
     by = {a["name"]: a for a in doc["answers"]}
-    assert set(by["n_2"]) == {"name", "correct", "slip", "expected", "detail"}
+    assert set(by["n_2"]) == {"name", "correct", "missing", "slip", "expected", "detail"}
     assert by["n_2"]["slip"] == "sign" and by["f_2"]["correct"] is True
-    assert main(["exercise", "3.19", "--grade", str(tmp_path)]) == 0
+    assert main(["exercise", "3.19", "--grade", str(tmp_path)]) == 1
     out = capsys.readouterr().out
     assert "2 students" in out and "n_2: sign" in out
     table = tmp_path / "class.csv"
@@ -125,7 +132,38 @@ def test_cli_one_student_and_a_class(tmp_path, capsys):
         w = csv.writer(fh)
         w.writerow(["student", "n_2"])
         w.writerow(["cy", json.dumps(_floats(s.answers["n_2"] * 1000))])
-    assert main(["exercise", "3.19", "--grade", str(table), "--json"]) == 0
+    assert main(["exercise", "3.19", "--grade", str(table), "--json"]) == 1
     doc = json.loads(capsys.readouterr().out)
-    assert doc["students"][0]["answers"][0]["slip"] == "unit"
+    by = {a["name"]: a for a in doc["students"][0]["answers"]}
+    assert by["n_2"]["slip"] == "unit" and by["f_2"]["missing"] is True
     assert main(["exercise", "3.19", "--grade", str(tmp_path / "none.json")]) == 2
+
+
+def test_a_blank_is_missing_and_one_of_three_is_one_of_three(tmp_path, capsys):
+    s = ex.solve("3.19")
+    asked = [k for k, v in s.answers.items() if isinstance(v, sp.MatrixBase)]
+    assert len(asked) == 3
+    n2 = [[str(x) for x in r] for r in s.answers["n_2"].tolist()]
+    graded = ex.grade(s, {"n_2": n2, "w_2": "  ", "f_2": []})
+    assert [g.name for g in graded] == asked                 # every answer asked, graded
+    assert [(g.correct, g.missing) for g in graded if g.name != "n_2"] == [(False, True)] * 2
+    table = tmp_path / "class.csv"
+    with table.open("w", newline="") as fh:
+        csv.writer(fh).writerows([["student", "w_2", "n_2", "f_2"],
+                                  ["dee", "", json.dumps(n2), ""]])
+    assert main(["exercise", "3.19", "--grade", str(table)]) == 1
+    out = capsys.readouterr().out
+    assert " 1/3 " in out and "w_2: missing" in out and "f_2: missing" in out
+
+
+def test_answers_are_read_as_set_reads_data(ex34):
+    """A matrix answer typed as ``--set`` takes it (rows split by ';'), or as JSON rows."""
+    Q = ex34.answers["Q_1_2"]
+    typed = ";".join(",".join(str(x) for x in Q.row(i)) for i in range(3))
+    assert _slip(ex34, "Q_1_2", typed).correct is True
+    assert _slip(ex34, "Q_1_2", "[" + typed.replace(";", "],[") + "]").correct is True
+    t_typed = ";".join(",".join(str(x) for x in Q.col(i)) for i in range(3))
+    assert _slip(ex34, "Q_1_2", t_typed).slip == "transpose"
+    s = ex.solve("3.19")
+    f = s.answers["f_2"]
+    assert _slip(s, "f_2", ",".join(str(x) for x in f)).correct is True

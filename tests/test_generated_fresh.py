@@ -1,19 +1,27 @@
 """generated/ is what `rigidsym generate` would write: byte for byte, no missing or orphan file.
 
-Runs the `--check` logic in-process, and regenerates under another PYTHONHASHSEED to prove
-the output does not depend on set iteration order.
+The default run compares generated/inputs.json (the digests of every input file of the
+generator and of every file it wrote) with the tree: seconds instead of a generation of 70 to
+360 s of CPU (issue 54). The `slow` tests generate again in-process and compare byte for byte
+(the `--check` logic), regenerate in a fresh process under another PYTHONHASHSEED to prove the
+output does not depend on set iteration order, and check that every module that generation
+imported is among the recorded inputs (the digest rule misses nothing the generator reads).
 """
 
 from __future__ import annotations
 
+import json
 import os
+import shutil
 import subprocess
 import sys
+from dataclasses import dataclass
 from functools import cache
 from pathlib import Path
 
 import pytest
 
+from rigidsym.codegen import inputs
 from rigidsym.codegen.generator import check, default_out_dir, generate, write
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -40,14 +48,62 @@ def test_loadgroup_keeps_this_module_on_one_worker(request):
     assert request.node.nodeid.endswith("@generated_fresh"), request.node.nodeid
 
 
+def test_generated_matches_its_recorded_inputs():
+    """No input of the generator changed since generated/ was written, and no generated file
+    was edited, removed or added by hand (the cheap half of `rigidsym generate --check`)."""
+    lines = inputs.compare(ROOT / "generated")
+    assert lines == [], ("generated/ is stale or edited; run `rigidsym generate`:\n"
+                         + "\n".join(lines[:60]))
+
+
+def test_compare_sees_an_edit_an_orphan_a_missing_file_and_a_changed_input(tmp_path):
+    out = tmp_path / "generated"
+    shutil.copytree(ROOT / "generated", out, ignore=shutil.ignore_patterns("__pycache__"))
+    assert inputs.compare(out) == []
+    (out / "kernels.json").write_text("{}\n")
+    (out / "numpy" / "orphan.py").write_text("x = 1\n")
+    (out / "api.py").unlink()
+    lines = inputs.compare(out)
+    assert "changed by hand: generated/kernels.json" in lines
+    assert "orphan file: generated/numpy/orphan.py" in lines
+    assert "missing file: generated/api.py" in lines
+    # an input edited after the generation: its digest differs from the recorded one
+    rec = json.loads((out / inputs.MANIFEST).read_text())
+    some = "rigidsym/codegen/templates/c_fast.h.j2"
+    assert some in rec["inputs"]
+    rec["inputs"][some] = "0" * 64
+    (out / inputs.MANIFEST).write_text(json.dumps(rec))
+    assert f"input changed: {some}" in inputs.compare(out)
+
+
+def test_the_inputs_hold_the_declarations_templates_and_lazy_imports():
+    labels = set(inputs.manifest()["inputs"])
+    for must in ("rigidsym/codegen/generator.py", "rigidsym/codegen/templates/c_fast.h.j2",
+                 "rigidsym/derivations/kernels_spec.py", "rigidsym/derivations/sec3_2.py",
+                 "rigidsym/derivations/kernels_accuracy.json",
+                 # imported inside generate(), not at the top of the module
+                 "rigidsym/codegen/jacobians.py"):
+        assert must in labels, must
+    assert not any(lab.startswith("rigidsym/generated") for lab in labels)
+    # the build record an install writes beside the extension differs on every machine
+    assert not any("_ckernels" in lab for lab in labels), sorted(labels)
+
+
+@pytest.mark.slow  # a whole generation (70 to 360 s of CPU); the default run compares digests
 def test_generated_is_fresh():
     res = _generated()
     diff = check(res)
     assert diff == "", "generated/ is stale; run `rigidsym generate`:\n" + diff[:4000]
 
 
+@dataclass
+class _Files:
+    files: dict[str, str]
+
+
 def test_check_reports_missing_orphan_and_changed(tmp_path):
-    res = _generated()
+    res = _Files({"c/k.c": "int k;\n", "kernels.json": "{}\n",
+                  "numpy/k.py": "def k():\n    pass\n"})
     write(res, tmp_path)
     assert check(res, tmp_path) == ""
     first = next(iter(res.files))
@@ -64,21 +120,36 @@ def test_check_reports_missing_orphan_and_changed(tmp_path):
 
 
 def test_no_timestamps_or_absolute_paths():
-    res = _generated()
-    for rel, text in res.files.items():
+    # the files on disk: test_generated_matches_its_recorded_inputs holds them to a generation
+    for p in sorted((ROOT / "generated").rglob("*")):
+        if not p.is_file() or "__pycache__" in p.parts or p.suffix not in (".py", ".c", ".h",
+                                                                            ".json"):
+            continue
+        rel, text = p.relative_to(ROOT).as_posix(), p.read_text(encoding="utf-8")
         assert str(ROOT) not in text, rel
         assert "/home/" not in text and "/root/" not in text, rel
 
 
 @pytest.mark.slow  # a second, independent generation in a subprocess
 def test_independent_of_hash_seed(tmp_path):
-    env = dict(os.environ, PYTHONHASHSEED="4242")
-    code = ("import sys; from rigidsym.codegen.generator import generate, write; "
-            "write(generate(), sys.argv[1])")
-    subprocess.run([sys.executable, "-c", code, str(tmp_path)], check=True, env=env,
-                   cwd=ROOT)
-    assert check(_generated(), tmp_path) == ""
+    """The same files under another PYTHONHASHSEED, and every module the generation imported
+    is among the inputs whose digests generated/inputs.json records."""
+    # one process (RIGIDSYM_GENERATE_JOBS=1): the modules its workers import are its own
+    env = dict(os.environ, PYTHONHASHSEED="4242", RIGIDSYM_GENERATE_JOBS="1")
+    code = ("import sys, json; from rigidsym.codegen.generator import generate, write; "
+            "write(generate(), sys.argv[1]); "
+            "print(json.dumps(sorted(m.__file__ for n, m in sys.modules.items() "
+            "if n.startswith('rigidsym') and getattr(m, '__file__', None))))")
+    p = subprocess.run([sys.executable, "-c", code, str(tmp_path / "out")], check=True,
+                       env=env, cwd=tmp_path, capture_output=True, text=True)
+    assert check(_generated(), tmp_path / "out") == ""
     assert default_out_dir() == ROOT / "generated"
+    recorded = {p.resolve() for p in inputs.input_files()}
+    generated = (ROOT / "generated").resolve()
+    imported = {Path(f).resolve() for f in json.loads(p.stdout.splitlines()[-1])}
+    missed = sorted(str(f) for f in imported
+                    if f not in recorded and not f.is_relative_to(generated))
+    assert missed == [], f"modules the generator imports but inputs.json does not hash: {missed}"
 
 
 @pytest.mark.slow  # the CLI generates again; test_generated_is_fresh checks the same tree

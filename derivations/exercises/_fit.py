@@ -23,6 +23,19 @@ from rigidsym.declare import cpm
 _FLIPS = [sp.diag(1, 1, 1), sp.diag(1, -1, -1), sp.diag(-1, 1, -1), sp.diag(-1, -1, 1)]
 
 
+def accepting_tol(gap) -> str:
+    """The words a refusal ends with: the smallest 2-digit tolerance that accepts a gap
+    (``"tol = 0.0034 would accept them (--tol 0.0034)"``)."""
+    import math
+
+    x = float(gap)
+    if not x > 0:
+        return ""
+    e = math.floor(math.log10(x)) - 1
+    t = math.ceil(x / 10**e * (1 + 1e-12)) * 10**e
+    return f"; tol = {t:.2g} would accept them (--tol {t:.2g})"
+
+
 def cayley(s) -> sp.Matrix:
     """The rotation ``(1 + CPM(s))(1 - CPM(s))^-1`` of a 3-vector ``s`` (exact for rational s).
 

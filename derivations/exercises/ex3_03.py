@@ -31,6 +31,22 @@ def quadric(lines, p):
     return f, M.subs(zero), g, h
 
 
+def _origin_check(s: Solution) -> None:
+    """Three skew lines with independent directions; moving the origin by c turns h into
+    f(c) and keeps M: both signs of h occur with one det M, so h > 0 does not fix it."""
+    from rigidsym.checking.worked import truth_check
+
+    p = sp.Matrix(sp.symbols("x y z", real=True))
+    lines = [(sp.zeros(3, 1), sp.Matrix([1, 0, 0])), (sp.Matrix([0, 0, 1]), sp.Matrix([0, 1, 0])),
+             (sp.Matrix([1, 1, 0]), sp.Matrix([0, 0, 1]))]
+    f, M, _, _ = quadric(lines, p)
+    vals = [f.subs(dict(zip(p, c, strict=True))) for c in ([0, 0, 0], [2, 2, 2], [0, 1, 0])]
+    ok = M.det() != 0 and max(vals) > 0 > min(vals)
+    s.check(truth_check("one quadric, det M != 0, and f takes both signs at origins c: h = "
+                        "f(c) > 0 or < 0 for the same det M", ok,
+                        f"det M = {M.det()}, f(c) = {', '.join(map(str, vals))} (exact)"))
+
+
 def mutual_moment(l1, l2):
     """Moment of one line about another (Exercise 3.3): ``(a_1 - a_2) . (e_1 x e_2)``
     up to the norms of e_1, e_2; zero iff the lines meet (or are parallel)."""
@@ -66,7 +82,24 @@ def solve() -> Solution:
     s.step("no cubic term", "det[E_1 p, E_2 p, E_3 p] = 0",
            "The three vectors e_k x p are all normal to p, hence coplanar: f is quadratic.")
     f, M, g, h = quadric(lines, p)
-    s.step("h", h, "h = f(0) = det[n_1, n_2, n_3].")
+    n = [a.cross(e) for a, e in lines]
+    e = [e for _, e in lines]
+    s.step("expansion", "f(p) = det[n_1 + E_1 p, n_2 + E_2 p, n_3 + E_3 p]",
+           "E_k = CPM(e_k); det[u, v, w] = u.(v x w) is linear in each column, so f is the "
+           "sum of the determinants with 0, 1, 2 or 3 columns E_k p.")
+    s.step("M (no components)", "M = (1/2) sum_cyc [n_k (e_i x e_j)^T + (e_i x e_j) n_k^T]",
+           "(e_i x p) x (e_j x p) = ((e_i x e_j).p) p, so det[E_i p, E_j p, n_k] = "
+           "(n_k.p)((e_i x e_j).p) = p^T n_k (e_i x e_j)^T p; M is its symmetric part, summed "
+           "over (i, j, k) = (1, 2, 3), (2, 3, 1), (3, 1, 2).")
+    s.step("g (no components)", "g = -[e_1 x (n_2 x n_3) + e_2 x (n_3 x n_1) + e_3 x (n_1 x n_2)]",
+           "det[E_1 p, n_2, n_3] = (e_1 x p).(n_2 x n_3) = -p.(e_1 x (n_2 x n_3)), and "
+           "cyclically.")
+    s.step("h (no components)", "h = det[n_1, n_2, n_3]", "h = f(0).")
+    M_book = sum((n[k] * e[i].cross(e[j]).T + e[i].cross(e[j]) * n[k].T
+                  for i, j, k in ((0, 1, 2), (1, 2, 0), (2, 0, 1))), sp.zeros(3, 3)) / 2
+    g_book = -(e[0].cross(n[1].cross(n[2])) + e[1].cross(n[2].cross(n[0]))
+               + e[2].cross(n[0].cross(n[1])))
+    h_book = sp.Matrix.hstack(*n).det()
     # coefficient of det M: derive in the frame of the common perpendicular of L_1, L_2
     d, t_, b1, b2, b3, q1, q2, q3 = sp.symbols("d t b1 b2 b3 q1 q2 q3", real=True)
     special = [(sp.zeros(3, 1), sp.Matrix([1, 0, 0])),
@@ -86,10 +119,30 @@ def solve() -> Solution:
                  "det M = k mu_12 mu_23 mu_31 det[e_1, e_2, e_3] (frame-free form, decided "
                  "below for generic lines); mu_ij = (a_i - a_j).(e_i x e_j) vanishes iff "
                  "L_i, L_j meet.")
-    s.answers = {"f": "p^T M p + g^T p + h, with M, g, h below", "M": M, "g": g, "h": h,
+    s.step("isotropic directions", "e_k^T M e_k = 0, k = 1, 2, 3",
+           "L_k lies on the quadric, so f(a_k + lambda e_k) = 0 for every lambda; its "
+           "lambda^2 coefficient is e_k^T M e_k.")
+    s.step("det M < 0", "M indefinite; det M != 0 => eigenvalues (+, +, -) or (-, -, +)",
+           "A definite M has e^T M e != 0 for every e != 0, so M, isotropic on e_1, e_2, e_3, "
+           "is indefinite; with det M != 0 two eigenvalues share a sign. f and -f give the "
+           "same surface: the sign that makes two eigenvalues positive gives det M < 0. The "
+           "book's h > 0 does not fix that sign: h = f(0) changes sign with the origin (a "
+           "point inside or outside the surface) while M does not (checked below).")
+    s.answers = {"f": "p^T M p + g^T p + h",
+                 "M": "(1/2) sum_cyc [n_k (e_i x e_j)^T + (e_i x e_j) n_k^T], n_k = a_k x e_k",
+                 "g": "-[e_1 x (n_2 x n_3) + e_2 x (n_3 x n_1) + e_3 x (n_1 x n_2)]",
+                 "h": "det[n_1, n_2, n_3]",
                  "det_M": law, "det_M_nonzero_in_general": sp.false,
                  "det_M_nonzero_iff": "the lines are pairwise skew and e_1, e_2, e_3 are "
-                                      "linearly independent (not all parallel to one plane)"}
+                                      "linearly independent (not all parallel to one plane)",
+                 "det_M_negative": "when f is signed so that M has two positive eigenvalues "
+                                   "(M is indefinite: e_k^T M e_k = 0); h > 0 does not fix "
+                                   "the sign, since h depends on the origin"}
+    s.check(identity_check("M, g, h in the book's matrix form equal the coefficients of f "
+                           "(generic lines)", [M - M_book, g - g_book, h - h_book]))
+    s.check(identity_check("e_k^T M e_k = 0 for k = 1, 2, 3 (generic lines)",
+                           [(ek.T * M * ek)[0] for ek in e]))
+    _origin_check(s)
     s.check(identity_check("f(p) = p^T M p + g^T p + h (quadratic) for generic lines",
                            [f - ((p.T * M * p)[0] + (g.T * p)[0] + h)]))
     lam = scalar("lambda")

@@ -13,7 +13,13 @@ import sympy as sp
 
 from rigidsym.checking.worked import Param, Solution, exact_check, is_zero, truth_check
 
-from ._fit import exact_rotation, is_local_minimum, nearest_rotation, squared_residual
+from ._fit import (
+    accepting_tol,
+    exact_rotation,
+    is_local_minimum,
+    nearest_rotation,
+    squared_residual,
+)
 from ._random import cayley
 
 ID = "ex3.4"
@@ -71,8 +77,9 @@ def solve(n_1=PARAMETERS[0].default, f_1=PARAMETERS[1].default, n_2=PARAMETERS[2
 def _exact(s: Solution, n1, f1, n2, f2, inv1, inv2) -> Solution:
     for k, name in enumerate(_INVARIANTS):
         if not is_zero(inv1[k] - inv2[k]):
+            gap = max(_gaps(n1, f1, n2, f2), key=float)
             s.fail(f"The measurements are not compatible: {name} is {inv1[k]} in F_1 but "
-                   f"{inv2[k]} in F_2, and a rotation preserves it.")
+                   f"{inv2[k]} in F_2, and a rotation preserves it{accepting_tol(gap)}.")
     B1 = s.step("triad in F1", sp.Matrix.hstack(f1, n1, f1.cross(n1)),
                 "f, n and f x n are independent (f, n not parallel) and rotate together.")
     B2 = s.step("triad in F2", sp.Matrix.hstack(f2, n2, f2.cross(n2)), "The same triad in F2.")
@@ -101,7 +108,7 @@ def _measured(s: Solution, n1, f1, n2, f2, tol) -> Solution:
         if bool(g > tol):
             s.fail(f"The measurements are not compatible within tol = {float(tol):.3g}: "
                    f"{name} differs by {float(g):.3g} between F_1 and F_2, and a rotation "
-                   f"preserves it.")
+                   f"preserves it{accepting_tol(max(gaps, key=float))}.")
     pairs = [(f1, f2), (n1, n2)]
     M = s.step("correlation", f1 * f2.T + n1 * n2.T,
                "Least squares: Q maximises tr(Q^T M), M = f_1 f_2^T + n_1 n_2^T (orthogonal "
@@ -139,8 +146,14 @@ def figure(s: Solution):
     frame(ax, sp.zeros(3, 1), Q, "2", "tab:purple", scale=size)
     arrow(ax, sp.zeros(3, 1), g["f_1"], "tab:red", "f (F_1)")
     arrow(ax, sp.zeros(3, 1), g["n_1"], "tab:blue", "n (F_1)")
-    arrow(ax, sp.zeros(3, 1), Q * g["f_2"], "tab:red", "Q f_2", dashed=True)
-    arrow(ax, sp.zeros(3, 1), Q * g["n_2"], "tab:blue", "Q n_2", dashed=True)
+    # the checks land on the readings they check (that is the point), so they are drawn
+    # apart: a dashed arrow of another colour and a hollow ring at its tip
+    for vec, colour, label in ((Q * g["f_2"], "tab:orange", "Q f_2 (check: tip on f's)"),
+                               (Q * g["n_2"], "tab:cyan", "Q n_2 (check: tip on n's)")):
+        arrow(ax, sp.zeros(3, 1), vec, colour, None, dashed=True)
+        tip = [float(x) for x in vec]
+        ax.scatter(*tip, s=160, facecolors="none", edgecolors=colour, linewidths=2.0,
+                   label=label, depthshade=False)
     axes3d(ax, [g["f_1"], g["n_1"], sp.ones(3, 1) * size, -sp.ones(3, 1) * size])
     return fig
 

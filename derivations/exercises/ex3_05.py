@@ -36,13 +36,19 @@ def solve(plucker=PARAMETERS[0].default) -> Solution:
         assumptions=["e is a unit vector (normalised Plücker coordinates), as the book's "
                      "data have; other data are normalised first (Plücker coordinates are "
                      "homogeneous)."])
-    n = s.step("moment", p.cross(e), "Moment of the line about the origin, Sec. 3.3.")
-    ps = s.step("candidate", e.cross(n), "p* = e x n = e x (p x e) = p - (e.p) e.")
-    s.step("on the line", ps.cross(e) - n,
-           "p* x e = n means p* lies on the line (its moment about O is the line's).")
-    s.step("closest", ps.dot(e),
-           "p*.e = 0: O - p* is normal to the line, so p* is the foot of the perpendicular.")
-    s.step("distance", ps.dot(ps) - n.dot(n), "||p*|| = ||e x n|| = ||n|| since e is normal to n.")
+    n, ps = p.cross(e), e.cross(p.cross(e))
+    s.step("moment", "n = p x e",
+           "The moment of the line about the origin (Sec. 3.3), p any point of the line.")
+    s.step("(a) candidate", "p* = e x n = e x (p x e) = (e.e) p - (e.p) e = p - (e.p) e",
+           "The double cross product a x (b x c) = (a.c) b - (a.b) c, and e.e = 1.")
+    s.step("(a) on the line", "p* x e = (p - (e.p) e) x e = p x e = n",
+           "e x e = 0; a point whose moment about O is the line's lies on the line, so p* "
+           "is a point of it.")
+    s.step("(a) closest", "p*.e = e.p - (e.p)(e.e) = 0",
+           "O - p* is normal to the line, so p* is the foot of the perpendicular from O: "
+           "||p* + lambda e||^2 = ||p*||^2 + lambda^2 is least at lambda = 0.")
+    s.step("(b) distance", "||p*||^2 = ||e x n||^2 = (e.e)(n.n) - (e.n)^2 = ||n||^2",
+           "Lagrange's identity, e.e = 1 and e.n = e.(p x e) = 0: d = ||p*|| = ||n||.")
     ec, nc = data[:3, :], data[3:, :]
     if is_zero(ec):
         s.fail("The direction part e of the data is zero, so they are not the Plücker "

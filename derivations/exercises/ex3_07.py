@@ -38,30 +38,85 @@ def solve(a=PARAMETERS[0].default, b=PARAMETERS[1].default, n_A=PARAMETERS[2].de
     u = s.step("direction", nA.cross(nB),
                "Both moments are normal to e (n_X.e = 0), so e is parallel to n_A x n_B.")
     if is_zero(u):
-        s.fail("The two moments are parallel (or one is zero), so they do not fix the "
-               "direction of the axis.")
-    e0 = (u / u.norm()).applyfunc(sp.radsimp)
-    rel = s.step("transfer", ((b - a).cross(e0) - (nA - nB)).applyfunc(sp.radsimp),
-                 "n_A - n_B = (b - a) x e fixes the sense of e (zero for e = +u/||u||).")
-    if is_zero(rel):
-        e = e0
-    elif is_zero((b - a).cross(-e0) - (nA - nB)):
-        e = -e0
+        lines = _parallel_moments(s, a, b, nA, nB)
     else:
-        s.fail("The moments are not those of one line: n_A - n_B must equal (b - a) x e for "
-               "a unit e normal to both, and it does not for either sense of e.")
-    n0 = s.step("moment about O", nA + a.cross(e), "n_O = n_A + a x e (moment transfer).")
-    ps = s.step("closest point", e.cross(n0), "p* = e x n_O (Exercise 3.5).")
-    pl = s.step("Plücker coordinates about O", sp.Matrix.vstack(e, n0), "[e; n_O].")
-    s.answers = {"e": e, "p_star": ps, "plucker_O": pl}
-    s.check(exact_check("(p* - a) x e = n_A and (p* - b) x e = n_B (the data are reproduced)",
-                        [(ps - a).cross(e) - nA, (ps - b).cross(e) - nB]))
-    s.check(exact_check("Plücker constraints: e.e = 1, e.n_O = 0; p*.e = 0",
-                        [e.dot(e) - 1, e.dot(n0), ps.dot(e)]))
-    s.check(truth_check("both measured moments are normal to e",
-                        is_zero(nA.dot(e)) and is_zero(nB.dot(e)), "exact (minimal polynomial)"))
+        e0 = (u / u.norm()).applyfunc(sp.radsimp)
+        rel = s.step("transfer", ((b - a).cross(e0) - (nA - nB)).applyfunc(sp.radsimp),
+                     "n_A - n_B = (b - a) x e fixes the sense of e (zero for e = +u/||u||).")
+        if is_zero(rel):
+            e = e0
+        elif is_zero((b - a).cross(-e0) - (nA - nB)):
+            e = -e0
+        else:
+            s.fail("The moments are not those of one line: n_A - n_B must equal (b - a) x e "
+                   "for a unit e normal to both, and it does not for either sense of e.")
+        lines = [e]
+    answers = {}
+    for k, e in enumerate(lines):
+        tag = "" if k == 0 else "_2"
+        which = "" if len(lines) == 1 else f" (line {k + 1})"
+        n0 = s.step(f"moment about O{which}", nA + a.cross(e),
+                    "n_O = n_A + a x e (moment transfer).")
+        ps = s.step(f"closest point{which}", e.cross(n0), "p* = e x n_O (Exercise 3.5).")
+        pl = s.step(f"Plücker coordinates about O{which}", sp.Matrix.vstack(e, n0), "[e; n_O].")
+        answers.update({f"e{tag}": e, f"p_star{tag}": ps, f"plucker_O{tag}": pl})
+        _checks(s, a, b, nA, nB, e, n0, ps, which)
+    s.answers = answers
     return s
 
+
+def _parallel_moments(s: Solution, a, b, nA, nB) -> list:
+    """The directions e when n_A x n_B = 0: from (b - a) x e = n_A - n_B, |e| = 1 and
+    n_A.e = 0 (n_B.e = 0 follows). ``e = e_perp + t d/|d|`` with ``e_perp = m x d/|d|^2``;
+    one or two directions, or :meth:`Solution.fail` when none or infinitely many."""
+    d, m = b - a, nA - nB
+    if is_zero(d):
+        if is_zero(m):
+            s.fail("A and B coincide and n_A = n_B, so the data give one moment only: every "
+                   "line with a unit e normal to n_A, through p = a + e x n_A, fits "
+                   "(infinitely many, a circle of directions).")
+        s.fail("A and B coincide but n_A != n_B, so no line has these moments.")
+    if not is_zero(m.dot(d)):
+        s.fail("The moments are not those of one line: n_A - n_B = (b - a) x e must be "
+               "normal to b - a, and it is not.")
+    dd = d.dot(d)
+    ep = s.step("parallel moments: e normal to b - a",
+                (m.cross(d) / dd).applyfunc(sp.radsimp),
+                "n_A x n_B = 0 leaves e free in the plane normal to n_A; (b - a) x e = "
+                "n_A - n_B fixes its part normal to b - a: e_perp = (n_A - n_B) x (b - a) / "
+                "|b - a|^2, and e = e_perp + t (b - a)/|b - a|.")
+    rest = sp.radsimp(1 - ep.dot(ep))
+    if is_zero(rest):
+        rest = sp.Integer(0)
+    elif rest < 0:
+        s.fail("The moments are not those of one line: |n_A - n_B| > |b - a|, so no unit "
+               "e has (b - a) x e = n_A - n_B.")
+    dn = d / sp.sqrt(dd)
+    c, c0 = sp.radsimp(nA.dot(dn)), sp.radsimp(nA.dot(ep))
+    roots = {sp.radsimp(sp.sqrt(rest)), sp.radsimp(-sp.sqrt(rest))}
+    ts = sorted((t for t in roots if is_zero(c0 + t * c)), key=lambda t: -t)
+    if not ts:
+        s.fail("The moments are not those of one line: no unit e with (b - a) x e = n_A - "
+               "n_B is normal to n_A.")
+    lines = [(ep + t * dn).applyfunc(sp.radsimp) for t in ts]
+    s.step("parallel moments: the directions", sp.Matrix.hstack(*lines),
+           "t = +-sqrt(1 - |e_perp|^2), kept where n_A.e = 0: "
+           + ("one line (e normal to b - a, or t fixed by n_A)." if len(lines) == 1 else
+              "the line AB in either sense (zero moments do not fix the sense of e); both "
+              "are answers (e_2, p_star_2, plucker_O_2)." if is_zero(nA) else
+              "two lines, mirror images of each other in the plane through A and B that "
+              "contains n_A; both are answers (e_2, p_star_2, plucker_O_2)."))
+    return lines
+
+
+def _checks(s: Solution, a, b, nA, nB, e, n0, ps, which: str) -> None:
+    """The checks of one line: the data reproduced, the Plücker constraints."""
+    s.check(exact_check(f"(p* - a) x e = n_A and (p* - b) x e = n_B{which}",
+                        [(ps - a).cross(e) - nA, (ps - b).cross(e) - nB]))
+    s.check(exact_check(f"Plücker constraints: e.e = 1, e.n_O = 0; p*.e = 0{which}",
+                        [e.dot(e) - 1, e.dot(n0), ps.dot(e)]))
+    s.check(truth_check(f"both measured moments are normal to e{which}",
+                        is_zero(nA.dot(e)) and is_zero(nB.dot(e)), "exact (minimal polynomial)"))
 
 def figure(s: Solution):
     """The axis with its unit vector e, the points A and B with the measured moments, and

@@ -6,6 +6,8 @@ frame and in the body frame; det W, its singular set (solved by sympy) and W^-1.
 
 from __future__ import annotations
 
+import functools
+
 import sympy as sp
 
 from rigidsym.checking.worked import Param, Solution, identity_check, truth_check
@@ -24,12 +26,20 @@ SEQUENCES = PROPER_EULER + TAIT_BRYAN
 BOOK_SEQUENCE = "ZXZ"
 PARAMETERS = (Param("sequence", BOOK_SEQUENCE, None, "the intrinsic Euler-angle sequence "
                     "whose W is derived step by step (all twelve are tabulated)",
-                    choices=tuple(SEQUENCES)),)
+                    choices=tuple(SEQUENCES)),
+              Param("theta", None, (), "first Euler angle, to evaluate W at (not given: "
+                    "symbolic)", "rad"),
+              Param("phi", None, (), "middle Euler angle (not given: symbolic)", "rad"),
+              Param("psi", None, (), "third Euler angle (not given: symbolic)", "rad"),
+              Param("omega", None, (3,), "angular velocity, fixed frame, to solve "
+                    "eta_dot = W^-1 omega (not given: none)", "rad/s"))
 VARIANTS = (
     ("a Tait-Bryan sequence (roll, pitch, yaw)", {"sequence": "XYZ"}),
+    ("W, det W and the Euler-angle rates at given angles",
+     {"theta": "pi/6", "phi": "pi/4", "psi": "0", "omega": [0, 0, 1]}),
 )
-DATA_NOTE = ("the Euler-angle convention; the angles themselves stay symbolic (theta, phi, "
-             "psi)")
+DATA_NOTE = ("the Euler-angle convention; the angles stay symbolic (theta, phi, psi) unless "
+             "given, and then W, det W and eta_dot = W^-1 omega are evaluated there")
 
 theta, phi, psi = sp.symbols("theta phi psi", real=True)
 ETA = sp.Matrix([theta, phi, psi])
@@ -74,8 +84,10 @@ def condition_number(seq: str, phi_value: float) -> float:
     return float(np.linalg.cond(np.array(f(0.3, phi_value, -0.7), dtype=float)))
 
 
+@functools.cache
 def table() -> list[tuple]:
-    """Rows (sequence, class, det W (fixed), det W (body), singular set of phi)."""
+    """Rows (sequence, class, det W (fixed), det W (body), singular set of phi); computed
+    once (the angles given by a student do not change it)."""
     rows = []
     for seq in SEQUENCES:
         Wf, Wb = euler_rate_matrix(seq), euler_rate_matrix(seq, "body")
@@ -123,13 +135,20 @@ def figure(s: Solution):
     return fig
 
 
-def solve(sequence: str = BOOK_SEQUENCE) -> Solution:
+def solve(sequence: str = BOOK_SEQUENCE, theta=None, phi=None, psi=None,
+          omega=None) -> Solution:
     """Worked solution of Exercise 3.10, step by step for ``sequence`` (e.g. ``"ZXZ"``).
 
     Long: a worked solution is read top to bottom as the book's steps (statement, steps,
     answers, checks); split into functions it would no longer read as one solution.
     """
     seq = sequence
+    at = {k: v for k, v in (("theta", theta), ("phi", phi), ("psi", psi)) if v is not None}
+    return _solve(seq, at, None if omega is None else sp.Matrix(omega))
+
+
+def _solve(seq: str, at: dict, omega) -> Solution:
+    """:func:`solve` with the angles given (by name) and omega (or None)."""
     s = Solution(
         ID, TITLE, STATEMENT, CITATION,
         given={"eta": ETA, "sequence": seq, "sequences": ", ".join(SEQUENCES)},
@@ -172,8 +191,76 @@ def solve(sequence: str = BOOK_SEQUENCE) -> Solution:
              "|---|---|---|---|---|"]
     lines += [f"| {q} | {c} | `{df}` | `{db}` | `{ss}` |" for q, c, df, db, ss in rows]
     s.extra = "\n".join(lines)
-    _checks(s, seq, W, Winv, rows)
+    s.checks.extend(_symbolic_checks(seq))
+    if at or omega is not None:
+        _evaluated(s, W, d, at, omega)
     return s
+
+
+def _algebraic(x) -> bool:
+    """Whether a closed number is algebraic (its minimal polynomial exists)."""
+    try:
+        sp.minimal_polynomial(x, sp.Symbol("x_minpoly"))
+    except (sp.polys.polyerrors.NotAlgebraic, NotImplementedError):
+        return False
+    return True
+
+
+def _evaluated(s: Solution, W, d, at: dict, omega) -> None:
+    """W, det W and, with omega, eta_dot = W^-1 omega at the given angles (exact)."""
+    from rigidsym.checking.worked import exact_check, is_zero
+
+    sub = {ETA[k]: at[n] for k, n in enumerate(("theta", "phi", "psi")) if n in at}
+    free = [n for n in ("theta", "phi", "psi") if n not in at]
+    shown = ", ".join(f"{n} = {at[n]}" for n in at) or "symbolic angles"
+    Wv = s.step(f"W at {shown}", W.subs(sub).applyfunc(sp.radsimp),
+                "The angles given, put into W (fixed frame).")
+    dv = s.step(f"det W at {shown}", sp.radsimp(sp.trigsimp(d.subs(sub))),
+                "det W there (its singular set is above).")
+    s.answers.update({"W_at": Wv, "det_W_at": dv})
+    if omega is None:
+        return
+    if free:   # incomplete data: bad input, naming what is missing
+        raise ValueError(f"omega: eta_dot = W^-1 omega needs all three angles; "
+                         f"{', '.join(free)} {'is' if len(free) == 1 else 'are'} not given "
+                         f"(--set {free[0]}=...)")
+    if not _algebraic(dv):
+        # an angle that is not a rational multiple of pi (0.5 rad): sin and cos of it are
+        # transcendental, so W is evaluated to 30 digits and the check is numeric
+        Wn, on = Wv.evalf(30), omega.evalf(30)
+        if abs(Wn.det()) < sp.Float("1e-25"):
+            s.fail("W is singular at these angles (det W = 0 to 30 digits, gimbal lock), so "
+                   "omega does not fix the Euler-angle rates.")
+        rate = s.step("eta_dot = W^-1 omega (30 digits)", Wn.LUsolve(on),
+                      "W is invertible here; sin and cos of these angles are transcendental, "
+                      "so W and the rates are evaluated to 30 digits.")
+        s.answers["eta_dot"] = rate
+        res = max(abs(x) for x in Wn * rate - on)
+        s.check(truth_check("W eta_dot = omega at the given angles, to 25 digits",
+                            res < sp.Float("1e-25"), f"largest residual {float(res):.2g}"))
+        return
+    if is_zero(dv):
+        in_range = sp.Matrix.hstack(Wv, omega).rank(simplify=True) == Wv.rank(simplify=True)
+        s.fail("W is singular at these angles (det W = 0, gimbal lock), so omega does not "
+               "fix the Euler-angle rates: " + (
+                   "infinitely many eta_dot give it (the first and third rates add along one "
+                   "axis)." if in_range else "no eta_dot gives it (omega is not in the range "
+                   "of W)."))
+    rate = s.step("eta_dot = W^-1 omega", (Wv.inv() * omega).applyfunc(sp.radsimp),
+                  "W is invertible here (det W != 0), so the rates are unique.")
+    s.answers["eta_dot"] = rate
+    s.check(exact_check("W eta_dot = omega at the given angles", [Wv * rate - omega]))
+
+
+@functools.cache
+def _symbolic_checks(seq: str) -> tuple:
+    """The checks of the symbolic solution of ``seq`` (:func:`_checks`), decided once: they
+    do not depend on the angles a student evaluates W at."""
+    W = euler_rate_matrix(seq)
+    Winv = (W.adjugate() / sp.trigsimp(W.det())).applyfunc(sp.trigsimp)
+    s = Solution(ID, TITLE, STATEMENT, CITATION)
+    _checks(s, seq, W, Winv, table())
+    return tuple(s.checks)
 
 
 def _checks(s: Solution, seq: str, W, Winv, rows) -> None:

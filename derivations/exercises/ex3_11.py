@@ -110,6 +110,9 @@ def given_figure(s: Solution):
 
 
 def random_data(rng) -> dict:
-    """A variant with readable sizes in metres (an exam's draw)."""
-    return {"a": rng.choice(["0.02", "0.025", "0.03", "0.04", "0.05"]),
-            "h": rng.choice(["0.05", "0.1", "0.12", "0.15", "0.2"])}
+    """A variant with readable sizes in metres (an exam's draw): a side of 1 to 10 cm
+    (or 2.5, 7.5 cm) and a height of 5 to 30 cm, whole centimetres; 312 variants, so a
+    class of 30 gets 30 different prisms."""
+    sides = [f"0.{k:02d}" for k in range(1, 10)] + ["0.1", "0.025", "0.075"]
+    return {"a": rng.choice(sides),
+            "h": rng.choice([f"{k / 100:g}" for k in range(5, 31)])}

@@ -17,16 +17,16 @@ STATEMENT = ("\"cutting it into two parts, which are separated by a plane that c
 CITATION = "Angeles, Sec. 3.9, Exercise 3.12"
 FIGURE_NAME = "cut"
 PARAMETERS = (Param("a", A_SIDE, (), "side of the regular hexagonal bases", "m"),
-              Param("h", HEIGHT, (), "height of the prism (at least a sqrt(3), so that the "
-                    "cut leaves through a side face)", "m"))
+              Param("h", HEIGHT, (), "height of the prism (below a sqrt(3) the cut leaves "
+                    "through the top face)", "m"))
 VARIANTS = (
     ("a wider prism", {"a": "0.05", "h": "0.15"}),
-    ("a prism too short for the cut (ill-posed)", {"h": "0.04"}),
+    ("a prism so short that the cut leaves through the top face", {"h": "0.025"}),
 )
 
 
-def _part(s: Solution, name: str, zlo, zhi, a):
-    V, c, I_C, I_O = mass_properties(zlo, zhi, a)
+def _part(s: Solution, name: str, pieces, a):
+    V, c, I_C, I_O = mass_properties(None, None, a, pieces)
     s.step(f"{name}: volume", V, "Exact iterated integral over the part.")
     s.step(f"{name}: centroid", c, "First moments / V (x = 0 by symmetry in the plane x = 0).")
     s.step(f"{name}: I_C per unit density", I_C,
@@ -34,9 +34,10 @@ def _part(s: Solution, name: str, zlo, zhi, a):
     pr, alpha = principal_yz(I_C)
     s.step(f"{name}: principal moments per unit density", sp.Matrix([p[0] for p in pr]),
            "x is principal; the y-z block's eigenvalues (I_yy + I_zz)/2 -+ "
-           "sqrt(((I_yy - I_zz)/2)^2 + I_yz^2).")
+           "sqrt(((I_yy - I_zz)/2)^2 + I_yz^2); sorted, smallest first.")
     s.step(f"{name}: principal axes", sp.Matrix.hstack(*[p[1] for p in pr]),
-           "Columns (unnormalised): e_x and [0, I_yz, lambda - I_yy] in the y-z plane.")
+           "Unit columns, in the order of the moments: e_x, and [0, I_yz, lambda - I_yy] "
+           "normalised in the y-z plane.")
     return V, c, I_C, I_O, pr, alpha
 
 
@@ -49,16 +50,21 @@ def solve(a=A_SIDE, h=HEIGHT) -> Solution:
                             "z = 0; normal [0, -1, 1]/sqrt(2), at 45 deg to the Z axis)",
                "a (m)": a, "h (m)": h},
         assumptions=["Same frame as Exercise 3.11 (hexagon centred at O, 0 <= z <= h). The "
-                     "plane reaches z = a sqrt(3) (43.3 mm for the book's a) <= h, so it cuts "
-                     "off a wedge (lower part) and leaves the upper part.",
+                     "plane rises to z = a sqrt(3) (43.3 mm for the book's a) at the far edge: "
+                     "at or below h it cuts off a wedge (lower part); above h it leaves "
+                     "through the top face, and the lower part is the rest below the plane.",
                      "Results per unit density (m^5) and per kg of the part (m^2)."])
     positive_sizes(s, a, h)
-    if 2 * S > h:
-        s.fail(f"The cut plane reaches z = a sqrt(3) = {float(2 * S):.4g} m above the base, "
-               f"higher than h = {float(h):.4g} m, so it leaves through the top face and the "
-               f"parts are not a wedge and a remainder as solved here.")
-    lower = _part(s, "wedge", 0, y + S, a)
-    upper = _part(s, "upper part", y + S, h, a)
+    y0 = sp.radsimp(h - S)  # where the cut plane z = y + S meets the top face z = h
+    if sp.radsimp(y0 - S) >= 0:
+        lower = _part(s, "wedge", [(-S, S, 0, y + S)], a)
+        upper = _part(s, "upper part", [(-S, S, y + S, h)], a)
+    else:
+        s.step("the cut leaves through the top face", y0,
+               "a sqrt(3) > h: the plane meets the top face z = h along y = h - a sqrt(3)/2; "
+               "beyond it the lower part is the full height.")
+        lower = _part(s, "wedge", [(-S, y0, 0, y + S), (y0, S, 0, h)], a)
+        upper = _part(s, "upper part", [(-S, y0, y + S, h)], a)
     I_full = mass_properties(0, h, a)[3]
     for tag, (V, c, I_C, _, pr, alpha) in (("wedge", lower), ("upper", upper)):
         s.answers[f"{tag}_volume_m3"] = V
@@ -68,15 +74,36 @@ def solve(a=A_SIDE, h=HEIGHT) -> Solution:
         s.answers[f"{tag}_principal_moments_per_kg_m2"] = sp.Matrix([p[0] / V for p in pr])
         s.answers[f"{tag}_principal_axes"] = sp.Matrix.hstack(*[p[1] for p in pr])
         s.answers[f"{tag}_axis_angle_from_y_rad"] = alpha
+    s.extra = _in_mm(s)
     A = 3 * sp.sqrt(3) / 2 * a**2
-    s.check(exact_check("wedge volume = apothem x hexagon area (Cavalieri), volumes add to "
-                        "the prism's", [lower[0] - S * A, lower[0] + upper[0] - A * h]))
+    s.check(exact_check("volumes add to the prism's, and the wedge is half the prism below "
+                        "z = 2 S for a tall prism (Cavalieri)",
+                        [lower[0] + upper[0] - A * h]
+                        + ([lower[0] - S * A] if sp.radsimp(y0 - S) >= 0 else [])))
     s.check(exact_check("inertia about O is additive: wedge + upper = whole prism",
                         [lower[3] + upper[3] - I_full]))
     for tag, (_, _, I_C, _, pr, _) in (("wedge", lower), ("upper", upper)):
-        s.check(exact_check(f"{tag}: I_C v = lambda v for the three principal pairs",
-                            [I_C * v - lam * v for lam, v in pr]))
+        R = sp.Matrix.hstack(*[p[1] for p in pr])
+        s.check(exact_check(f"{tag}: I_C v = lambda v for the three principal pairs, and the "
+                            "axes are orthonormal (R^T R = 1)",
+                            [I_C * v - lam * v for lam, v in pr] + [R.T * R - sp.eye(3)]))
     return s
+
+
+def _in_mm(s: Solution) -> str:
+    """The answers in the book's units (mm), to 4 digits: volume, centroid, the principal
+    moments per kg (sorted) and their unit axes."""
+    out = ["In the book's units (mm), to 4 digits:"]
+    for tag, name in (("wedge", "lower part"), ("upper", "upper part")):
+        V = float(s.answers[f"{tag}_volume_m3"]) * 1e9
+        c = [float(x) * 1e3 for x in s.answers[f"{tag}_centroid_m"]]
+        m = [float(x) * 1e6 for x in s.answers[f"{tag}_principal_moments_per_kg_m2"]]
+        R = s.answers[f"{tag}_principal_axes"]
+        out.append(f"  {name}: V = {V:.4g} mm^3, C = [{', '.join(f'{x:.4g}' for x in c)}] mm")
+        for k in range(3):
+            axis = ", ".join(f"{float(x):.4f}" for x in R[:, k])
+            out.append(f"    I_{k + 1}/m = {m[k]:.4g} mm^2 about [{axis}]")
+    return "\n".join(out)
 
 
 def figure(s: Solution):
@@ -90,14 +117,22 @@ def figure(s: Solution):
     fig, ax = new_figure("Exercise 3.12: the prism cut at 45 degrees, two parts")
     pts = draw_prism(ax, a, h)
     _draw_cut(ax, a, S)
-    size = max(a, h) / 4
     for tag, colour in (("wedge", "tab:red"), ("upper", "tab:blue")):
         c, axes = s.answers[f"{tag}_centroid_m"], s.answers[f"{tag}_principal_axes"]
-        point(ax, c, colour, f"{tag}: centroid and principal axes")
+        per_kg = s.answers[f"{tag}_principal_moments_per_kg_m2"]
+        point(ax, c, colour, f"{tag}: centroid; principal axes, length = radius of "
+                             f"gyration")
         for k in range(3):
-            v = axes[:, k]
-            arrow(ax, c, v / sp.sqrt(v.dot(v)), colour, scale=float(sp.N(size)))
+            # scaled: each axis is drawn as long as its radius of gyration sqrt(I_k / m)
+            r = float(sp.sqrt(sp.N(per_kg[k], 15)))
+            v = [float(x) for x in axes[:, k]]
+            arrow(ax, c, sp.Matrix(v), colour, scale=r)
+            tip = [float(ci) + r * vi for ci, vi in zip(c, v, strict=True)]
+            ax.text(*tip, f" {k + 1}: {1000 * r:.3g} mm", color=colour, fontsize=7)
     axes3d(ax, pts)
+    ax.set_xlabel("x (m)")
+    ax.set_ylabel("y (m)")
+    ax.set_zlabel("z (m)")
     return fig
 
 
@@ -129,10 +164,11 @@ def _draw_cut(ax, a, S) -> None:
 
 
 def random_data(rng) -> dict:
-    """A variant with readable sizes in metres (an exam's draw): the side a and a height h
-    of 2, 2.5, 3 or 4 sides, so that h >= a sqrt(3) and the cut leaves through a side face."""
+    """A variant with readable sizes in metres (an exam's draw): the side a (1 to 10 cm)
+    and a height h of 2 to 6 sides, so that h >= a sqrt(3) and the cut leaves through a
+    side face; 50 variants."""
     from decimal import Decimal
 
-    a = rng.choice(["0.02", "0.03", "0.04", "0.05", "0.1"])
-    k = rng.choice(["2", "2.5", "3", "4"])
+    a = rng.choice([f"0.{k:02d}" for k in range(1, 10)] + ["0.1"])
+    k = rng.choice(["2", "3", "4", "5", "6"])
     return {"a": a, "h": format((Decimal(a) * Decimal(k)).normalize(), "f")}

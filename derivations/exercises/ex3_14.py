@@ -13,7 +13,7 @@ import sympy as sp
 
 from rigidsym.checking.worked import Param, Solution, exact_check, is_zero, truth_check
 
-from ._fit import exact_rotation, is_local_minimum, sorted_eigh
+from ._fit import accepting_tol, exact_rotation, is_local_minimum, sorted_eigh
 
 ID = "ex3.14"
 TITLE = "Two observers of one inertia matrix"
@@ -81,8 +81,11 @@ def solve(I_A=PARAMETERS[0].default, I_B=PARAMETERS[1].default, tol=None) -> Sol
     if tol is None:
         for k, name in enumerate(_INV):
             if not is_zero(inv[k] - invB[k]):
+                gap = max(abs(float(a) - float(b)) for a, b in
+                          zip(principal_moments(IA), principal_moments(IB), strict=True))
                 s.fail(f"The measurements are not acceptable: {name} is {inv[k]} for A but "
-                       f"{invB[k]} for B, and a change of frame preserves it.")
+                       f"{invB[k]} for B, and a change of frame preserves it"
+                       f"{accepting_tol(gap)}.")
         return _exact(s, IA, IB, inv)
     return _measured(s, IA, IB, inv, tol)
 
@@ -101,13 +104,30 @@ def _exact(s: Solution, IA, IB, inv) -> Solution:
     else:
         Q = _rounded_rotation(s, IA, IB)
         exact = False
-    s.answers = {"invariants": inv, "principal_moments": ev, "Q_B_A": Q, "acceptable": sp.true}
+    s.answers = {"invariants": inv, "principal_moments": ev, "Q_B_A": Q, "acceptable": sp.true,
+                 "Q_B_A_is_one_of": _family(lam)}
     s.check(truth_check("invariants equal (exact)", inv == _invariants(IB), f"{list(inv)}"))
     s.check(exact_check("Q proper orthogonal" + (" and Q [I]_A Q^T = [I]_B" if exact else ""),
                         [Q.T * Q - sp.eye(3), Q.det() - 1] + ([Q * IA * Q.T - IB] if exact
                                                                else [])))
     _admissible_check(s, lam)
     return s
+
+
+def _family(lam) -> str:
+    """Which rotations map [I]_A onto [I]_B besides the one given: a principal axis has no
+    sense, and equal moments leave their plane's axes free."""
+    ties = sum(is_zero(lam[i] - lam[j]) for i, j in ((0, 1), (1, 2), (0, 2)))
+    distinct = 3 if ties == 0 else 1 if ties == 3 else 2
+    if distinct == 3:
+        return ("four rotations: Q D_A with D_A = V_A D V_A^T, D = diag(1, 1, 1), "
+                "diag(1, -1, -1), diag(-1, 1, -1) or diag(-1, -1, 1) (a principal axis has "
+                "no sense)")
+    if distinct == 2:
+        return ("infinitely many: Q times any turn about the principal axis of the simple "
+                "moment (the two equal moments leave their plane's axes free), and the half "
+                "turns about the axes of that plane")
+    return "every rotation: [I]_A = [I]_B = I 1 (all moments equal)"
 
 
 def _eigenbasis(I, lam) -> sp.Matrix:
@@ -136,7 +156,8 @@ def _measured(s: Solution, IA, IB, inv, tol) -> Solution:
     for k, g in enumerate(gaps):
         if bool(g > tol):
             s.fail(f"The measurements are not acceptable within tol = {float(tol):.3g}: the "
-                   f"principal moment I_{k + 1} differs by {float(g):.3g} between A and B.")
+                   f"principal moment I_{k + 1} differs by {float(g):.3g} between A and B"
+                   f"{accepting_tol(max(gaps, key=float))}.")
     _admissible(s, "[I]_B", lamB, slack=tol)
     Q = _rounded_rotation(s, IA, IB)
 

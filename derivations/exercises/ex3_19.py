@@ -14,7 +14,7 @@ from rigidsym.checking.worked import Param, Solution, exact_check, identity_chec
 from rigidsym.declare import block, rotation, vector
 
 from ..sec3_4_2 import twist_transfer_matrix
-from ._fit import exact_rotation, nearest_rotation
+from ._fit import accepting_tol, exact_rotation, nearest_rotation
 from ._random import cayley
 from ._screw import rotation_defect
 
@@ -25,6 +25,9 @@ STATEMENT = ("\"If points P and S lie a distance of 100 mm apart, find the wrenc
 CITATION = "Angeles, Sec. 3.9, Exercise 3.19"
 FIGURE_NAME = "sensor"
 MEASURED = True
+#: decimals in Q are readings (its orthogonality is judged within a tolerance); decimals in
+#: the offset d and the wrench are exact lengths and loads (0.1 m is 1/10 m)
+READINGS = ("Q",)
 _V = sp.ImmutableMatrix
 PARAMETERS = (
     Param("n_S", _V([1, 0, 1]), (3,), "moment read by the sensor (about S), in F_S", "N m"),
@@ -60,7 +63,8 @@ def _rotation(s: Solution, Q, tol):
     err = max(abs(x) for x in Q.T * Q - sp.eye(3))
     if bool(err > tol) or bool(Q.det() <= 0):
         s.fail(f"The given orientation Q is not a rotation within tol = {float(tol):.3g} "
-               f"(Q^T Q - 1 has an entry of {float(err):.3g}, det Q = {float(Q.det()):.4g}).")
+               f"(Q^T Q - 1 has an entry of {float(err):.3g}, det Q = {float(Q.det()):.4g})"
+               f"{accepting_tol(err) if Q.det() > 0 else ''}.")
     R = exact_rotation(nearest_rotation(np.array(Q.tolist(), dtype=float)))
     s.step("nearest rotation", R,
            "The measured Q is orthogonal within tol; it is replaced by its orthogonal polar "

@@ -30,24 +30,35 @@ def solve() -> Solution:
                      "The hint M_A = M_C + P P^T (and the erratum's M_C + m P P^T) asks for a "
                      "positive-semidefinite difference; it is shown indefinite unless a = c, "
                      "so no real P (or R) exists; M_A = U^T M_C U is the correct 6 x 6 form."])
-    U = s.step("twist transfer", twist_transfer_matrix(a, c),
-               "t_C = U t_A with U = [[1, O], [A - C, 1]] (Eq. 3.83b): c_dot = a_dot + "
-               "omega x (c - a).")
+    U = twist_transfer_matrix(a, c)
+    s.step("twist transfer", "t_C = U t_A,  U = [[1, O], [A - C, 1]]",
+           "Eq. (3.83b): c_dot = a_dot + omega x (c - a) = a_dot + (A - C) omega, with "
+           "A = CPM(a), C = CPM(c); omega is the same at every point.")
     M = inertia_dyad(J, m)
-    MA = s.step("dyad at A", U.T * M * U,
-                "T = t_C^T M t_C / 2 = t_A^T (U^T M U) t_A / 2, so M_A = U^T M U.")
+    MA = U.T * M * U
+    s.step("dyad at A", "M_A = U^T M_C U,  M_C = [[I_C, O], [O, m 1]]",
+           "T = t_C^T M_C t_C / 2 = t_A^T (U^T M_C U) t_A / 2 for every t_A.")
     C, A = cpm(c), cpm(a)
     I_A = inertia_at_point(J, m, a, c)
     printed = block([[I_A, m * (C - A)], [m * (C - A).T, m * sp.eye(3)]])
-    s.step("(3.147)", printed, "Blocks of U^T M U, with I_C - m (C - A)^2 = I_A (Eq. 3.133b).")
+    s.step("(3.147) block by block",
+           "U^T M_C U = [[1, (A - C)^T], [O, 1]] [[I_C, O], [m (A - C), m 1]]\n"
+           "          = [[I_C + m (A - C)^T (A - C), m (A - C)^T], [m (A - C), m 1]]\n"
+           "          = [[I_A, m (C - A)], [m (C - A)^T, m 1]]",
+           "A - C is skew: (A - C)^T = C - A, so the first block is I_C - m (C - A)^2 = I_A "
+           "(Eq. 3.133b), which is Eq. (3.147).")
     s.step("positive definite", "x^T M_A x = (U x)^T M_C (U x) > 0 for x != 0",
            "M_C is positive definite (I_C > 0, m > 0) and U is invertible (det U = 1).")
     D = MA - M
     B = C - A
     x = sp.Matrix.vstack(u, -B.T * u)
-    qf = s.step("the hint's difference", (x.T * D * x)[0],
-                "With x = [u; -(C - A)^T u]: x^T (M_A - M_C) x = -m ||(C - A)^T u||^2 < 0 "
-                "when a != c, so M_A - M_C is indefinite.")
+    qf = (x.T * D * x)[0]
+    s.step("the hint's difference",
+           "M_A - M_C = [[m B B^T, m B], [m B^T, O]],  B = C - A\n"
+           "x = [u; -B^T u]:  x^T (M_A - M_C) x = m ||B^T u||^2 - 2 m ||B^T u||^2 "
+           "= -m ||B^T u||^2",
+           "Negative for a u with B^T u != 0 (B != O when a != c), while [u; 0] gives "
+           "m ||B^T u||^2 > 0: M_A - M_C is indefinite.")
     s.answers = {"M_A": "U^T M_C U = [[I_A, m(C - A)], [m(C - A)^T, m 1]] (3.147 holds)",
                  "positive_definite": sp.true,
                  "P_with_M_A_eq_M_C_plus_PPT_exists": sp.false,
@@ -60,5 +71,7 @@ def solve() -> Solution:
                            [qf + m * (B.T * u).dot(B.T * u)]))
     s.check(identity_check("Schur complement of m 1 in M_A is I_C (so M_A > 0 iff I_C > 0, "
                            "m > 0)", [I_A - m * B * B.T - J]))
+    s.check(identity_check("M_A - M_C = [[m B B^T, m B], [m B^T, O]] with B = C - A",
+                           [D - block([[m * B * B.T, m * B], [m * B.T, sp.zeros(3)]])]))
     s.check(nonidentity_check("M_A - M_C is not zero (a != c)", [D]))
     return s

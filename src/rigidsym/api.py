@@ -275,10 +275,15 @@ def check(eq_id: str, *, modules: Iterable[ModuleSpec] = (), repairs: bool = Tru
     return Result.of(_check(ids[0], repairs=repairs, repair_budget=repair_budget))
 
 
+#: the default time limit of check_latex's repair search, seconds (issue 52, item 6)
+REPAIR_SECONDS = 10.0
+
+
 def check_latex(latex: str, let: Sequence[str] | dict[str, str] | str | None = None, *,
                 book: str | None = None, modules: Iterable[ModuleSpec] = (),
                 repairs: bool = True, repair_budget: int | None = None,
-                notation: str | None = None) -> Result:
+                notation: str | None = None,
+                repair_seconds: float | None = REPAIR_SECONDS) -> Result:
     """Decide a relation written in LaTeX (the Python side of ``rigidsym check --latex``).
 
     The LaTeX is read by the chapter's reader (:func:`rigidsym.latex.parse_latex`); each
@@ -303,6 +308,9 @@ def check_latex(latex: str, let: Sequence[str] | dict[str, str] | str | None = N
             book symbols, ``MODEL`` first), matched by name.
         repairs: search the smallest edits that make a failing relation hold.
         repair_budget: candidates tried per failing relation (``None``: 5000).
+        repair_seconds: a time limit of the repair search in seconds (default
+            :data:`REPAIR_SECONDS`, 10; ``None``: none): past it the verdict is given with
+            "search stopped after N s, K candidates tried" (issue 52).
         notation: a book's symbol table (``"lynch-park"``, ``"murray-li-sastry"``,
             ``"siciliano"``, ``"spong"``, ``"craig"``, ``"featherstone"``, ``"barfoot"``,
             ``"sola"``, ``"corke"``: ``rigidsym.latex.notations.NOTATIONS``): what its
@@ -322,8 +330,8 @@ def check_latex(latex: str, let: Sequence[str] | dict[str, str] | str | None = N
         BadInput: a declaration that is neither form, an unknown KIND (the kinds listed), a
             ``let`` naming a symbol that occurs nowhere, an ambiguous glyph of ``book``, a
             module that cannot be loaded.
-        ValueError: if ``repairs`` is not a bool or ``repair_budget`` not a non-negative
-            integer.
+        ValueError: if ``repairs`` is not a bool, ``repair_budget`` not a non-negative
+            integer or ``repair_seconds`` not a positive number.
 
     Example:
         >>> r = check_latex(r"\\mathbf{Q}^T\\mathbf{Q} = \\mathbf{1}",
@@ -331,20 +339,58 @@ def check_latex(latex: str, let: Sequence[str] | dict[str, str] | str | None = N
         >>> r.verdict                                              # doctest: +SKIP
         'verified'
     """
-    return _check_latex(latex, let, book, modules, repairs, repair_budget, notation)[0]
+    return _check_latex(latex, let, book, modules, repairs, repair_budget, notation,
+                        repair_seconds)[0]
 
 
-def _check_latex(latex, let, book, modules, repairs=True, repair_budget=None, notation=None):
+
+def _seconds(x) -> float | None:
+    if x is None:
+        return None
+    if isinstance(x, bool) or not isinstance(x, int | float) or not x > 0 or x != x:
+        raise ValueError(f"repair_seconds: expected a positive number of seconds or None, "
+                         f"got {x!r}")
+    return float(x)
+
+
+def _check_latex(latex, let, book, modules, repairs=True, repair_budget=None, notation=None,
+                 repair_seconds=REPAIR_SECONDS):
     """:func:`check_latex` and the :class:`rigidsym.latex.letting.Reading` (for the CLI)."""
     from rigidsym.checking.checker import check as _check
     from rigidsym.latex.letting import declare_latex
 
     _repair_args(repairs, repair_budget)
     eq, reading = declare_latex(latex, let, book=book, modules=modules, notation=notation)
-    r = Result.of(_check(eq, repairs=repairs, repair_budget=repair_budget))
+    r = Result.of(_check(eq, repairs=repairs, repair_budget=repair_budget,
+                         repair_seconds=_seconds(repair_seconds)))
+    if reading.others:  # several readings type-check: a verdict only when all agree
+        _readings_agree(reading, r, [_check(o.eq, repairs=False) for o in reading.others])
     r.expected = r.verdict
     r.model = list(r.model) + reading.notes
     return r, reading
+
+
+def _readings_agree(reading, first, others) -> None:
+    """Issue 52, item 2: the verdict of every reading that type-checks, or bad input naming
+    the choice, each reading's verdict and the ``--let`` that settles it."""
+    from rigidsym.checking.deciding.errors import BadInput
+    from rigidsym.latex.letting import _said
+
+    verdicts = [first.verdict] + [o.verdict for o in others]
+    readings = [reading, *reading.others]
+    if len(set(verdicts)) == 1:
+        reading.notes.append(f"{len(readings)} readings type-check "
+                             f"({' | '.join(_said(x.choices) for x in readings)}): all "
+                             f"{verdicts[0]}")
+        return
+    keys = sorted({k for x in readings for k, c in x.choices.items()
+                   if c != reading.choices.get(k)})
+    said = "; ".join(f"{_said(x.choices)}: {v}" for x, v in zip(readings, verdicts, strict=True))
+    k = keys[0] if keys else "X"
+    raise BadInput(f"--latex: {', '.join(f'{x}(...)' for x in keys)} can be read as a product or "
+                   f"as {k} applied to its argument, and the readings disagree ({said}): say "
+                   f"which, with a --let function (--let '{k}(PARAM) = LATEX': an application) "
+                   f"or by writing the product without parentheses")
 
 
 def verify(ids: Sequence[str] | str | None = None, sections: Sequence[str] | str | None = None,

@@ -142,7 +142,10 @@ def grade(solution: Solution, answers: dict) -> list[Graded]:
     (whole, one component, or one term of the exercise), ``"degrees"``, ``"unit"`` (a
     power of ten: mm, cm, g, mm^2), ``"swap"`` (two entries, rows or columns) or
     ``"reference point"`` (the same quantity about another point of the body, where the
-    exercise declares it: 3.11, 3.19); else the detail says "not a known slip".
+    exercise declares it: 3.11, 3.19); then the solution replayed with a slip along the
+    way (``Q`` for ``Q^T``, a length in mm, a sign, frames swapped: ``"transpose"``,
+    ``"unit"``, ``"sign"``, ``"frame"``); else the detail says "not a known slip". An
+    answer left out or blank is missing (and wrong).
 
     Args:
         solution: a solved :class:`Solution` from :func:`solve` (the student's data).
@@ -150,8 +153,9 @@ def grade(solution: Solution, answers: dict) -> list[Graded]:
             an exact string such as ``"sqrt(3)/2"``, or nested lists of them.
 
     Returns:
-        A list of :class:`Graded` (``name``, ``correct``, ``slip``, ``expected``,
-        ``detail``; ``.as_dict()``), in the order of ``answers``.
+        A list of :class:`Graded` (``name``, ``correct``, ``missing``, ``slip``,
+        ``expected``, ``detail``; ``.as_dict()``), one per answer the solution asks, in
+        its order.
 
     Raises:
         TypeError: ``solution`` is not a :class:`Solution`, or ``answers`` not a dict.
@@ -165,9 +169,7 @@ def grade(solution: Solution, answers: dict) -> list[Graded]:
     if not isinstance(answers, dict):
         raise TypeError(f"answers: expected a dict {{name: value}}, got "
                         f"{type(answers).__name__}")
-    own = getattr(exercise_module(solution.id), "slips", None)
-    return _grade(solution, answers, own(solution) if own and solution.status == "solved"
-                  else None)
+    return _grade(solution, answers)
 
 
 def exam(spec, out_dir: str | Path, seed: int | None = None) -> dict[str, Path]:
@@ -175,9 +177,11 @@ def exam(spec, out_dir: str | Path, seed: int | None = None) -> dict[str, Path]:
 
     The spec (a TOML file, or the same as a dict) lists ``[[problem]]`` tables: an
     ``exercise`` with its ``data``, or ``variants = n`` random well-posed variants drawn
-    from the seed with readable exact numbers (Exercises 3.1, 3.2, 3.4, 3.5, 3.7, 3.10,
-    3.11, 3.12, 3.14, 3.19: Cayley rotations of small rationals, Pythagorean unit vectors,
-    small integers, short decimals). See ``docs/exams.md``.
+    from the seed, for every exercise: readable exact numbers (Cayley rotations of small
+    rationals, Pythagorean unit vectors, small integers, short decimals), or, for the
+    proofs, true-or-false statements decided by the zero test. A class from a roster:
+    ``rigidsym exam SPEC --students ROSTER`` (:mod:`rigidsym.report.course`). See
+    ``docs/exams.md``.
 
     Args:
         spec: a ``.toml`` path or a dict (``title``, ``seed``, ``problem``).

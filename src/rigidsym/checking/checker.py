@@ -215,7 +215,8 @@ def _derived_str(st: Statement) -> str:
 
 
 def check(eq: Equation | str, *, repairs: bool = True,
-          repair_budget: int | None = None, expanded: bool = True) -> Outcome:
+          repair_budget: int | None = None, expanded: bool = True,
+          repair_seconds: float | None = None) -> Outcome:
     """Compute the verdict of one declaration, with its numeric backing.
 
     Args:
@@ -227,6 +228,8 @@ def check(eq: Equation | str, *, repairs: bool = True,
         expanded: print the expanded strings (``printed``, ``derived``, ``corrected``:
             the full reports and the API); ``False`` leaves them ``None`` (a tenth of a
             chapter's checking time, for ``rigidsym verify``, which never shows them).
+        repair_seconds: a time limit of the repair search, seconds (``None``: none); past
+            it the result says "search stopped after N s, K candidates tried".
 
     Returns:
         A :class:`Outcome`; ``verdict`` is computed here, never read from the declaration.
@@ -238,7 +241,7 @@ def check(eq: Equation | str, *, repairs: bool = True,
     _work.count("decide", eq.id)
     t0 = time.perf_counter()
     try:
-        return _check(eq, t0, RepairSettings(repairs, repair_budget), expanded)
+        return _check(eq, t0, RepairSettings(repairs, repair_budget, repair_seconds), expanded)
     except Exception as exc:  # a defect to report as undecided, not to hide
         return Outcome(
             id=eq.id, title=eq.title, kind=eq.kind, verdict="undecided", expected=eq.expected,

@@ -1,5 +1,5 @@
-"""The ``rigidsym`` command: verify, report, show, check, exercise, generate, build-c, cache,
-glossary.
+"""The ``rigidsym`` command: verify, report, show, check, exercise, exam, grade, generate,
+build-c, cache, glossary.
 
 Exit codes: 0 = all as expected, 1 = some computed verdict differs from its expectation,
 2 = bad input (a one-line message naming what was expected and, where there is one, the
@@ -20,6 +20,7 @@ from rigidsym.cli import (
     exercise,
     generate,
     glossary,
+    grade,
     report,
     show,
     verify,
@@ -32,7 +33,7 @@ __all__ = ["main", "build_parser"]
 #: (and optionally ``EXAMPLES``, shown under the command's own ``--help``)
 _COMMANDS = {"verify": verify, "report": report, "show": show, "check": check,
              "exercise": exercise,
-             "exam": exam,
+             "exam": exam, "grade": grade,
              "generate": generate.GENERATE, "build-c": generate.BUILD_C, "cache": cache,
              "glossary": glossary}
 
@@ -63,6 +64,9 @@ def build_parser() -> argparse.ArgumentParser:
     """
     p = argparse.ArgumentParser(prog="rigidsym", description=DESCRIPTION, epilog=EPILOG,
                                 formatter_class=HelpFormatter)
+    p.add_argument("--ascii", action="store_true", dest="ascii_all",
+                   help="plain ASCII output for every command (as the commands' own "
+                        "--ascii; default: off)")
     sub = p.add_subparsers(dest="command", required=True, title="commands",
                            metavar="COMMAND")
     for name, cmd in _COMMANDS.items():
@@ -102,6 +106,8 @@ def main(argv: list[str] | None = None) -> int:
         sp_.error = _error(f"rigidsym {name} --help lists its options")
     args = parser.parse_args(argv)
     from rigidsym.checking.deciding.registry import BadInput
+    if getattr(args, "ascii_all", False):   # rigidsym --ascii COMMAND: as COMMAND --ascii
+        args.ascii = True
     with ascii_output(getattr(args, "ascii", False)):
         try:
             code = args.func(args)

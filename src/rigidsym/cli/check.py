@@ -49,10 +49,16 @@ def add_arguments(c) -> None:
     c.add_argument("--module", action="append", metavar="PATH_OR_DOTTED",
                    help=MODULE_HELP + "; it lends its symbols and models, matched by name "
                                       "(default: none)")
+    c.add_argument("--certificate", metavar="FILE",
+                   help="write the verdict's certificate to FILE (docs/certificates.md) and "
+                        "re-check it with certcheck when it is found (default: none)")
     c.add_argument("--json", action="store_true",
                    help="print the schema-2 record, with read_as and readings (default: "
                         "book notation as text)")
     add_repair_arguments(c)
+    c.add_argument("--repair-seconds", type=float, metavar="S", default=10.0,
+                   help="a time limit of the repair search, seconds; past it the verdict is "
+                        "printed with what was tried (default: 10)")
 
 
 def run(args) -> int:
@@ -65,14 +71,14 @@ def run(args) -> int:
     try:
         from rigidsym._progress import Reporter
         from rigidsym.api import _check_latex
-        from rigidsym.checking.runner import verdict_words
 
         opts = repair_options(args)
         with Reporter("rigidsym check", keep=False) as rep, \
                 rep.phase("reading and checking the LaTeX") as ph:  # no silent second
             r, reading = _check_latex(args.latex, args.let, args.book, args.module or (),
-                                      opts["repairs"], opts["repair_budget"], args.notation)
-            ph.finish(verdict_words(r))
+                                      opts["repairs"], opts["repair_budget"], args.notation,
+                                      args.repair_seconds)
+            ph.finish(f"{r.id} {r.verdict}")  # an ad-hoc check expects nothing (issue 52)
     except LatexError as exc:
         print(f"rigidsym: error: --latex: {exc}", file=sys.stderr)
         return 2
@@ -83,6 +89,8 @@ def run(args) -> int:
         print(f"rigidsym: error: cannot read the input: {type(exc).__name__}: {exc}",
               file=sys.stderr)
         return 2
+    if args.certificate:
+        _certify(r, args.certificate)
     if args.json:
         from rigidsym.report.record import result_record
 
@@ -104,3 +112,31 @@ def run(args) -> int:
     print(explain(atoms, {"printed": st.printed, "claim": st.claims,
                           "corrected": st.corrected or []}, "--latex (rigidsym check)", width))
     return EXIT.get(r.verdict, 3)
+
+
+def _certify(r, path: str) -> None:
+    """Write ``r``'s certificate to ``path`` and re-check it (a line on stderr)."""
+    import json
+    from pathlib import Path
+
+    from rigidsym._io import write_atomic
+    from rigidsym.checking.certificates import Unprintable, certificate, recheck_folder
+
+    if r.verdict == "undecided":
+        print("certificate: none (the verdict is undecided)", file=sys.stderr)
+        return
+    try:
+        cert = certificate(r.id, r.verdict, r.members)
+    except Unprintable as exc:
+        print(f"certificate: none ({exc})", file=sys.stderr)
+        return
+    write_atomic(path, json.dumps(cert, indent=1) + "\n")
+    out = recheck_folder(path, {Path(path).name: r.id})
+    if out["rechecked"] is None:
+        print(f"certificate: written to {path}; certcheck not found, not re-checked",
+              file=sys.stderr)
+    elif out["rechecked"].get(r.id):
+        print(f"certificate: written to {path}, re-checked by certcheck", file=sys.stderr)
+    else:
+        print(f"certificate: written to {path}; certcheck FAILED: "
+              f"{out['failures'].get(r.id, '?')}", file=sys.stderr)

@@ -9,7 +9,9 @@ __all__ = ["add_arguments", "run", "HELP", "EXAMPLES"]
 HELP = "write an exam: a student handout and an answer key"
 EXAMPLES = """\
   rigidsym exam quiz.toml --out quiz/         handout.html, key.html, key.json
-  rigidsym exam quiz.toml --out quiz/ --seed 8   other random variants"""
+  rigidsym exam quiz.toml --out quiz/ --seed 8   other random variants
+  rigidsym exam quiz.toml --students roster.csv --out class/   an exam per student
+  rigidsym grade class/ class/answers.csv      grade the class (rigidsym grade --help)"""
 
 
 def add_arguments(p) -> None:
@@ -19,6 +21,11 @@ def add_arguments(p) -> None:
     p.add_argument("--out", required=True, metavar="DIR", help="the folder to write")
     p.add_argument("--seed", type=int, help="the seed of the random variants (default: the "
                                             "spec's seed, else 0)")
+    p.add_argument("--students", metavar="ROSTER.csv",
+                   help="a class: one exam per student of the roster (a 'name' column; 'id' "
+                        "and 'email' optional), each with its own seed and a different "
+                        "variant of every drawn problem; one key, an answers template and "
+                        "a Moodle XML export (default: one exam)")
 
 
 def run(args) -> int:
@@ -26,7 +33,11 @@ def run(args) -> int:
     from rigidsym.exercises import exam
 
     try:
-        paths = exam(args.spec, args.out, seed=args.seed)
+        if getattr(args, "students", None):
+            from rigidsym.report.course import class_exam
+            paths = class_exam(args.spec, args.students, args.out, seed=args.seed)
+        else:
+            paths = exam(args.spec, args.out, seed=args.seed)
     except (ValueError, TypeError) as exc:
         print(f"rigidsym: error: {exc} (docs/exams.md describes the spec)", file=sys.stderr)
         return 2

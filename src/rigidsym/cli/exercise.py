@@ -49,7 +49,9 @@ def add_arguments(p) -> None:
     p.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
                    help="a datum of the exercise (repeatable): n_1=0,0,5 (a vector), "
                         "I_A='1,0,0;0,2,0;0,0,3' (a matrix, rows split by ;), a=0.05; "
-                        "values are exact: 5/3, 0.1 (= 1/10), sqrt(3)/2")
+                        "values are exact: 5/3, 0.1 (= 1/10), sqrt(3)/2; a unit after a "
+                        "space applies to every entry: 'd=0,0,100 mm', '30 deg', 'N m' "
+                        "(a bare number is in the unit --parameters lists)")
     p.add_argument("--data", metavar="FILE.json",
                    help="the data as a JSON object {name: value}; JSON numbers with a "
                         "decimal point are floats, read as measurements; strings are exact")
@@ -87,7 +89,10 @@ def parse_value(ex_id: str, name: str, text: str):
     exercise's parameters)."""
     from rigidsym.checking.worked import parameters
     from rigidsym.checking.worked.worked_numbers import split_text
+    from rigidsym.checking.worked.worked_units import split_unit
 
+    if split_unit(text)[1] is not None:
+        return text.strip()   # a unit for every entry: solve() splits and converts
     try:
         shape = parameters(ex_id)[name].shape
     except KeyError:
@@ -136,13 +141,17 @@ def _notebook(ex_id: str, path: str, data: dict) -> None:
 
 #: exit codes of ``rigidsym exercise`` (docs/exercise-data.md)
 EXIT_SOLVED, EXIT_ILL_POSED, EXIT_BAD_INPUT, EXIT_INTERNAL = 0, 1, 2, 3
+#: a case the solver does not handle ("not solved for these data: ..."): its limit, not
+#: the data's, so never the code of an ill-posed exercise
+EXIT_NOT_SOLVED = 4
 
 
 def run(args) -> int:
     """Solve chapter-3 exercises with computer algebra (worked solutions, machine-checked).
 
     Exit codes: 0 solved and checked, 1 ill-posed (one sentence says why), 2 bad input
-    (one line names the argument), 3 an internal error (a defect: please report it)."""
+    (one line names the argument), 3 an internal error (a defect: please report it), 4 not
+    solved for these data (a case the solver does not handle; one sentence says which)."""
     try:
         return _run(args)
     except Exception as exc:  # noqa: BLE001 - a defect must never read as an answer
@@ -195,14 +204,58 @@ def _run(args) -> int:
     if to_stdout:
         sys.stdout.write(doc)
     else:
-        print(render_text(s))
+        print(render_text(s, ascii_only=_ascii(args)))
     return _exit_code(s)
 
 
+def _ascii(args) -> bool:
+    """Whether the output is plain ASCII (``--ascii`` in either place, RIGIDSYM_ASCII, or
+    a terminal that cannot show Unicode: stdout is then an ASCII stream)."""
+    from rigidsym.printing.ascii import AsciiStream
+
+    return bool(getattr(args, "ascii", False)) or isinstance(sys.stdout, AsciiStream)
+
+
+def answers_text(s) -> str:
+    """The answers of a solution, one ``name = value`` per answer in sympy's one-line form
+    (with a float beside an exact number), lines of at most 100 columns, indented; or the
+    reason of an ill-posed or not solved one."""
+    import textwrap
+
+    import sympy as sp
+
+    from rigidsym.checking.worked.worked_render import display
+
+    if s.status != "solved":
+        return textwrap.fill(s.reason, 100, initial_indent="    ", subsequent_indent="      ")
+    out = []
+    for k, v in s.answers.items():
+        def listed(m):      # a column as one list, a matrix as a list of rows
+            return m.T.tolist()[0] if m.cols == 1 else m.tolist()
+
+        shown = display(v)
+        text = (v if isinstance(v, str) else sp.sstr(listed(shown))
+                if isinstance(v, sp.MatrixBase) else sp.sstr(shown))
+        if isinstance(v, sp.Basic | sp.MatrixBase) and not isinstance(v, str):
+            try:
+                approx = sp.N(v, 6)
+                approx = sp.sstr(listed(approx) if isinstance(v, sp.MatrixBase) else approx)
+            except Exception:  # noqa: BLE001 - sympy's N refuses booleans and sets variously
+                approx = text
+            if approx != text and not (isinstance(v, sp.Basic) and v.free_symbols):
+                text += f"  (~ {approx})"
+        out.append(textwrap.fill(f"{k} = {text}", 100, initial_indent="    ",
+                                 subsequent_indent="        ", break_on_hyphens=False))
+    return "\n".join(out)
+
+
 def _exit_code(s) -> int:
-    """0 solved and checked, 1 ill-posed; a solution whose own checks fail is a defect."""
+    """0 solved and checked, 1 ill-posed, 4 not solved; a solution whose own checks fail
+    is a defect."""
     if s.status == "ill-posed":
         return EXIT_ILL_POSED
+    if s.status == "not solved":
+        return EXIT_NOT_SOLVED
     if s.checked:
         return EXIT_SOLVED
     failed = [c.name for c in s.checks if not c.passed] or ["no check ran"]
@@ -243,7 +296,9 @@ def _solve_one(ex_id: str, data: dict):
 
     # bad data is one error line, before any progress line
     rest = {k: v for k, v in data.items() if k != "tol"}
-    read_data(parameters(ex_id), rest, data.get("tol"))
+    for note in read_data(parameters(ex_id), rest, data.get("tol")).notes:
+        if note.startswith("Warning: "):
+            print(f"rigidsym: warning: {note[len('Warning: '):]}", file=sys.stderr)
     with Reporter("rigidsym exercise") as rep, \
             rep.phase(f"solving exercise {ex_id[2:]}") as ph:
         s = solve(ex_id, **data)
@@ -267,8 +322,8 @@ def _run_all(ids, fmt: str, json_path: str | None) -> int:
             n_ok += ok
             ph.advance(1, label=f"exercise {i[2:]} {s.status}")
             if fmt == "plain":
-                print(f"{s.id:7s} {s.status:8s} checked={str(s.checked).lower():5s} {s.title}",
-                      flush=True)
+                print(f"{s.id:7s} {s.status:8s} checked={str(s.checked).lower():5s} {s.title}")
+                print(answers_text(s), flush=True)
         ph.finish(f"{n_ok} / {len(ids)} solved and checked")
     if json_path or fmt == "json":
         doc = to_json(ids)  # from the solutions just cached

@@ -22,12 +22,30 @@ def _generate_args(p) -> None:
                         "default: none, the package's kernels)")
     p.add_argument("--no-build", action="store_true",
                    help="with --module: write the C only; do not compile it into the cache")
+    p.add_argument("--target", choices=("package", "c"), default="package",
+                   help="package: the Python package's kernels (NumPy, C extension, PyTorch, "
+                        "JAX); c: C99 sources, headers and build files for C and C++ "
+                        "projects, no Python (docs/c-api.md); default: package")
+    p.add_argument("--kernel", action="append", metavar="NAME",
+                   help="with --target c: a book kernel to include (repeatable; default: "
+                        "every book kernel when no --module is given, none otherwise)")
+    p.add_argument("--single-header", action="store_true",
+                   help="with --target c: also write rigidsym_c_single.h, every kernel in "
+                        "one self-contained header (default: off)")
 
 
 def cmd_generate(args) -> int:
     """Generate the NumPy and C kernels into generated/ (--check: compare only)."""
     from rigidsym.codegen.generator import check, default_out_dir, generate, write
 
+    if getattr(args, "target", "package") == "c":
+        from rigidsym.codegen.backends.c.cli import cmd_generate_c
+        return cmd_generate_c(args)
+    for opt, given in (("--kernel", getattr(args, "kernel", None)),
+                       ("--single-header", getattr(args, "single_header", False))):
+        if given:
+            print(f"error: {opt}: only with --target c", file=sys.stderr)
+            return 2
     if args.module:
         from rigidsym.codegen.usergen import cmd_generate_user
         return cmd_generate_user(args)
@@ -152,7 +170,8 @@ def cmd_build_c(args) -> int:
 GENERATE = SimpleNamespace(
     HELP="generate the NumPy and C kernels (into generated/, or --out)",
     EXAMPLES="  rigidsym generate --check             is generated/ up to date?\n"
-             "  rigidsym generate --module my_eqs.py --out mykernels/   your own kernels",
+             "  rigidsym generate --module my_eqs.py --out mykernels/   your own kernels\n"
+             "  rigidsym generate --target c --module my_eqs.py --out fw/   C for firmware",
     add_arguments=_generate_args, run=cmd_generate)
 BUILD_C = SimpleNamespace(HELP="compile the generated C kernels into the user cache",
                           add_arguments=_build_args, run=cmd_build_c)

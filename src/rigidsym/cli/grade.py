@@ -6,79 +6,67 @@ one column per answer name (a cell is a number, an exact string, or JSON nested 
 One student prints a line per answer; a class prints one summary table (a row per
 student: how many right, the slips named). ``--json`` prints (or writes to PATH)
 ``{"answers": [{"name", "correct", "slip", "expected", "detail"}]}`` for one student and
-``{"students": [{"student", "answers": [...]}]}`` for a class.
+``{"students": [{"student", "answers": [...]}]}`` for a class. Every answer the
+exercise asks is graded: one left out or blank is missing (and wrong). Exit 0 when every
+answer of every student is right, 1 when any is wrong or missing, 2 bad input.
 """
 
 from __future__ import annotations
 
-import csv
 import json
 import sys
 from pathlib import Path
 
 from rigidsym._io import write_atomic
 
-__all__ = ["grade_command", "read_answers"]
+__all__ = ["grade_command", "read_answers", "add_arguments", "run", "HELP", "EXAMPLES"]
+
+HELP = "grade a class: each student's answers against their own exam"
+EXAMPLES = """\
+  rigidsym grade class/ class/answers.csv    grades.csv and gradebook.csv in class/
+  rigidsym grade class/ answers/             a folder of <student>.json answer files
+  (class/ as rigidsym exam SPEC --students roster.csv --out class/ wrote it)"""
+
+
+def add_arguments(p) -> None:
+    """Arguments of ``rigidsym grade``."""
+    p.add_argument("dir", metavar="DIR", help="the class's exam folder (its key.json)")
+    p.add_argument("answers", metavar="ANSWERS",
+                   help="the filled answers CSV (a row per student, a column P<k>.<answer> "
+                        "per box, as DIR/answers.csv) or a folder of <student>.json files")
+
+
+def run(args) -> int:
+    """Grade the class: 0 every answer right, 1 any wrong or missing, 2 bad input, 3 a
+    defect. Writes DIR/grades.csv and DIR/gradebook.csv and prints a line per student."""
+    from rigidsym.report.gradebook import grade_class
+
+    try:
+        done = grade_class(args.dir, args.answers)
+    except (ValueError, TypeError) as exc:
+        print(f"rigidsym: error: {exc} (docs/exams.md describes the files)", file=sys.stderr)
+        return 2
+    except Exception as exc:  # noqa: BLE001 - a defect, never the code of a grade
+        print(f"rigidsym: internal error, please report: {type(exc).__name__}: {exc}",
+              file=sys.stderr)
+        return 3
+    print(done["table"])
+    print(f"wrote {done['grades']}\nwrote {done['gradebook']}")
+    return 0 if done["all_right"] else 1
 
 
 def read_answers(path: str | Path) -> dict[str, dict]:
-    """Students' answers: ``{student: {answer name: value}}`` from a JSON file (the
-    student is its stem), a folder of them, or a CSV file.
+    """Students' answers, ``{student: {answer name: value}}``: as
+    :func:`rigidsym.report.answers.read_answers` (imported when asked for)."""
+    from rigidsym.report.answers import read_answers as read
 
-    Raises:
-        ValueError: a path that is missing or unreadable, a file that is not a JSON object,
-            or a CSV without a ``student`` column (the message names the file).
-    """
-    p = Path(path)
-    if p.is_dir():
-        files = sorted(p.glob("*.json"))
-        if not files:
-            raise ValueError(f"--grade: no *.json answer files in the folder {p}")
-        return {f.stem: _json_answers(f) for f in files}
-    if p.suffix.lower() == ".csv":
-        return _csv_answers(p)
-    return {p.stem: _json_answers(p)}
-
-
-def _json_answers(f: Path) -> dict:
-    try:
-        doc = json.loads(f.read_text(encoding="utf-8"))
-    except (OSError, ValueError) as exc:
-        raise ValueError(f"--grade: cannot read {f}: {exc}") from None
-    if not isinstance(doc, dict):
-        raise ValueError(f"--grade: expected a JSON object {{answer name: value}} in {f}")
-    return doc
-
-
-def _csv_answers(f: Path) -> dict[str, dict]:
-    try:
-        with f.open(newline="", encoding="utf-8") as fh:
-            rows = list(csv.DictReader(fh))
-    except (OSError, csv.Error, UnicodeDecodeError) as exc:
-        raise ValueError(f"--grade: cannot read {f}: {exc}") from None
-    if not rows or "student" not in rows[0]:
-        raise ValueError(f"--grade: {f} needs a header row with a 'student' column and one "
-                         f"column per answer name")
-    out = {}
-    for r in rows:
-        who = r.pop("student")
-        out[who] = {k: _cell(v) for k, v in r.items() if k and v not in ("", None)}
-    return out
-
-
-def _cell(text: str):
-    t = text.strip()
-    if t.startswith("["):
-        try:
-            return json.loads(t)
-        except ValueError:
-            return t
-    return t
+    return read(path)
 
 
 def grade_command(solution, path: str, json_target: str | None) -> int:
     """Grade the answers at ``path`` against ``solution``; print (or write) the result.
-    Returns 0 (graded; wrong answers are the students', not an error)."""
+    Returns 0 when every answer is right, 1 when any is wrong or missing (a script or a CI
+    job can tell), after printing the grades either way."""
     from rigidsym.exercises import grade
 
     students = read_answers(path)
@@ -94,15 +82,21 @@ def grade_command(solution, path: str, json_target: str | None) -> int:
         else:
             write_atomic(json_target, text)
             print(f"wrote {json_target}")
-        return 0
+        return _code(graded)
     if one:
         for g in next(iter(graded.values())):
-            mark = {True: "right", False: "WRONG", None: "not graded"}[g["correct"]]
+            mark = "MISSING" if g["missing"] else \
+                {True: "right", False: "WRONG", None: "not graded"}[g["correct"]]
             slip = f" [slip: {g['slip']}]" if g["slip"] else ""
             print(f"  {g['name']:28s} {mark}{slip}: {g['detail']}")
-        return 0
+        return _code(graded)
     print(_table(solution.id, graded))
-    return 0
+    return _code(graded)
+
+
+def _code(graded: dict) -> int:
+    """0 every answer right (or not graded by machine), 1 any wrong or missing."""
+    return int(any(g["correct"] is False for gs in graded.values() for g in gs))
 
 
 def _table(ex_id: str, graded: dict) -> str:
@@ -114,10 +108,10 @@ def _table(ex_id: str, graded: dict) -> str:
     counts: dict[str, int] = {}
     for who, gs in graded.items():
         right = sum(g["correct"] is True for g in gs)
-        slips = [f"{g['name']}: {g['slip'] or 'not a known slip'}" for g in gs
-                 if g["correct"] is False]
+        slips = [f"{g['name']}: {'missing' if g['missing'] else g['slip'] or 'not a known slip'}"
+                 for g in gs if g["correct"] is False]
         for g in gs:
-            if g["correct"] is False:
+            if g["correct"] is False and not g["missing"]:
                 counts[g["slip"] or "not a known slip"] = counts.get(
                     g["slip"] or "not a known slip", 0) + 1
         lines.append(f"  {who:{width}s}  {right:>2d}/{len(gs):<2d}  {'; '.join(slips) or '-'}")

@@ -31,6 +31,9 @@ def add_arguments(s) -> None:
                      help="print the members as LaTeX (default: book notation as text)")
     fmt.add_argument("--json", action="store_true",
                      help="print the schema-2 record (default: book notation as text)")
+    s.add_argument("--certificates", metavar="DIR",
+                   help="also write each shown verdict's certificate into DIR and say whether "
+                        "certcheck re-checks it (docs/certificates.md; default: none)")
     add_repair_arguments(s)
 
 
@@ -76,6 +79,7 @@ def run(args) -> int:
     from rigidsym.report.record import result_record
     from rigidsym.report.show import explain, output_width
     width = output_width()
+    shown = []
     for k, eq_id in enumerate(select_with_modules([args.id], None, args.module)):
         eq = REGISTRY[eq_id]
         with Reporter("rigidsym show", keep=False) as rep, \
@@ -83,6 +87,7 @@ def run(args) -> int:
             st = eq.build()
             r = check(eq_id, **repair_options(args))
             ph.finish(verdict_words(r))
+        shown.append(r)
         if args.json:
             print(json.dumps(result_record(r), indent=1, ensure_ascii=False))
             continue
@@ -99,4 +104,24 @@ def run(args) -> int:
             print("\n" + "-" * min(width, 40) + "\n")
         print(explain(r, {"printed": st.printed, "claim": st.claims,
                           "corrected": st.corrected or []}, where, width))
+    if args.certificates:
+        _certificates(shown, args.certificates, args.json)
     return 0
+
+
+def _certificates(results, directory, to_stderr: bool = False) -> None:
+    """Write the shown verdicts' certificates and say, per id, whether each is certified and
+    re-checked by certcheck (on stderr with ``--json``, so stdout stays the records)."""
+    from rigidsym.checking.certificates import certificate_field, write_certificates
+
+    done = write_certificates(results, directory, recheck=True)
+    for r in results:
+        f = certificate_field(done, r.id)
+        if f["file"] is None:
+            line = f"Certificate ({r.id}): none ({f['why']})"
+        else:
+            state = {True: "re-checked by certcheck", False: "certcheck FAILED: "
+                     + done["failures"].get(r.id, "?"), None: "certcheck not found"}
+            line = (f"Certificate ({r.id}): {directory}/{f['file']} "
+                    f"({', '.join(f['evidence'])}); {state[f['rechecked']]}")
+        print(line, file=sys.stderr if to_stderr else sys.stdout)

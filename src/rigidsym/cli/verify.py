@@ -25,7 +25,9 @@ EXAMPLES = """\
   rigidsym verify                         all 181 ids of the chapter (~40 s on 2 cores)
   rigidsym verify 3.96 --section 3.8      every part of (3.96), and section 3.8
   rigidsym verify --module my_eqs.py      your own equations
-  rigidsym verify --format json > v.json  the schema-2 document on stdout"""
+  rigidsym verify --format json > v.json  the schema-2 document on stdout
+  rigidsym verify --certificates certs    a certificate per id, re-checked by certcheck
+                                          (docs/certificates.md)"""
 
 
 def add_arguments(v) -> None:
@@ -49,6 +51,10 @@ def add_arguments(v) -> None:
     v.add_argument("--no-cache", action="store_true",
                    help="check every id again; neither read nor write the verdict cache "
                         "(default: off, the cache is used)")
+    v.add_argument("--certificates", metavar="DIR",
+                   help="write a certificate per decided id into DIR (docs/certificates.md) "
+                        "and re-check them with the independent checker certcheck when it "
+                        "is found (default: none)")
     add_repair_arguments(v)
 
 
@@ -102,11 +108,29 @@ def _undecided(results, off) -> None:
                 print(f"({r.id}) undecided: {label_text(why)}")
 
 
+def _document(results, certified) -> str:
+    """The JSON document; with ``--certificates``, each record says whether its verdict is
+    certified and re-checked (``"certificate"``, docs/certificates.md)."""
+    from rigidsym.report.record import dumps, to_json
+
+    text = to_json(results)
+    if certified is None:
+        return text
+    import json
+
+    from rigidsym.checking.certificates import certificate_field
+
+    doc = json.loads(text)
+    for row in doc["equations"]:
+        row["certificate"] = certificate_field(certified, row["id"])
+    return dumps(doc) + "\n"
+
+
 def run(args) -> int:
     """``rigidsym verify``: decide equations, print a table, optionally write JSON."""
     from rigidsym.checking.deciding.registry import is_user_id
     from rigidsym.checking.runner import run_checks  # sympy: after the parser
-    from rigidsym.report.record import cause_line, summary, to_json, transcription_extra
+    from rigidsym.report.record import cause_line, summary, transcription_extra
 
     ids = select_with_modules(args.ids, args.section, args.module)
     fmt = output_format(args)
@@ -118,8 +142,14 @@ def run(args) -> int:
                          cache=not args.no_cache, expanded=False, extra=extra,
                          **repair_options(args))
     wall = time.perf_counter() - t0
+    certified = None
+    if args.certificates:
+        from rigidsym.checking.certificates import certify_line, write_certificates
+
+        certified = write_certificates(results, args.certificates, recheck=True)
+        print(certify_line(certified, args.certificates), file=sys.stderr)
     if args.json:
-        write_atomic(args.json, to_json(results))
+        write_atomic(args.json, _document(results, certified))
     off = [r for r in results if r.verdict != r.expected]
     s = summary(results)
     hits = "" if args.no_cache else \
@@ -130,7 +160,7 @@ def run(args) -> int:
     if book and summary(book)["does-not-hold"]:
         line += f" (the book's does-not-hold by cause: {cause_line(book)})"
     if fmt == "json":  # stdout is the document; the words go to stderr
-        sys.stdout.write(to_json(results))
+        sys.stdout.write(_document(results, certified))
         print(line, file=sys.stderr)
         return 1 if off else 0
     if not args.quiet:

@@ -25,6 +25,7 @@ import rigidsym
 from rigidsym import _kinds
 from rigidsym._config import KERNEL_SPEC as BOOK_ORIGIN
 from rigidsym._config import generated_dir
+from rigidsym.codegen import inputs
 from rigidsym.codegen.accurate import Chosen, improve
 from rigidsym.codegen.api_spec import render_api
 from rigidsym.codegen.arrays import render_array_kernels
@@ -87,9 +88,11 @@ class GenerationResult:
     kernels: list[KernelCode]
 
 
-def compile_kernel(kernel: Kernel) -> KernelCode:
+def compile_kernel(kernel: Kernel, plan32: bool = True) -> KernelCode:
     """Build, hash and optimise every variant of ``kernel`` (of a Jacobian kernel
-    ``jacobian_from="program"``: its values' variants, each then differentiated)."""
+    ``jacobian_from="program"``: its values' variants, each then differentiated).
+    ``plan32=False`` skips the float32 precision plans (the C-only target has no use for
+    them: its float functions compute in float throughout)."""
     of = kernel.jacobian_of if kernel.jacobian_from == "program" else None
     spec = of or kernel
     syms = input_symbols(spec)
@@ -127,6 +130,8 @@ def compile_kernel(kernel: Kernel) -> KernelCode:
         parts.append(sp.Symbol("forward_mode_over_the_program"))
     ops = sum(v.program.ops for v in variants)
     kc = KernelCode(kernel, variants, math_hash(parts), ops, flat_symbols(kernel), chosen)
+    if not plan32:
+        return kc
     kc.plan32 = plan_kernel(kernel, variants, _trig_split(kc)) if of is None else \
         _double_plan(kc)
     return kc
@@ -149,27 +154,37 @@ def _double_plan(kc: KernelCode) -> dict:
 
 
 _TODO: list = []
+_PLAN32: list = [True]
 
 
 def _compile_index(i: int):
-    kc = compile_kernel(_TODO[i])
+    kc = compile_kernel(_TODO[i], _PLAN32[0])
     return kc.variants, kc.hash, kc.ops, kc.inputs, kc.rewrites, kc.plan32
 
 
-def _compile_all(todo: list) -> list[KernelCode]:
+def _compile_all(todo: list, plan32: bool = True) -> list[KernelCode]:
     """Compile kernels, over two forked workers when there are many (same result, in order)."""
     jobs = min(2, os.cpu_count() or 1)
     if len(todo) < 8 or jobs < 2 or os.environ.get("RIGIDSYM_GENERATE_JOBS") == "1":
-        return [compile_kernel(k) for k in todo]
+        return [compile_kernel(k, plan32) for k in todo]
     import multiprocessing as mp
 
     _TODO[:] = todo
+    _PLAN32[0] = plan32
     try:
         with mp.get_context("fork").Pool(jobs) as pool:
             parts = pool.map(_compile_index, range(len(todo)), chunksize=1)
     finally:
         _TODO.clear()
+        _PLAN32[0] = True
     return [KernelCode(k, *p) for k, p in zip(todo, parts, strict=True)]
+
+
+def compile_many(kernels: list[Kernel], plan32: bool = True) -> list[KernelCode]:
+    """``kernels`` and their Jacobian twins (sorted by name), compiled to programs
+    (``plan32=False``: without the float32 precision plans of the package's kernels)."""
+    return _compile_all(_with_jacobian_kernels(sorted(kernels, key=lambda k: k.name)),
+                        plan32)
 
 
 def _env() -> jinja2.Environment:
@@ -298,6 +313,9 @@ def generate(kernels=None, origin: str = BOOK_ORIGIN) -> GenerationResult:
                     ("c_kernels_index.h.j2", "c/rigidsym_kernels.h")):
         files[path] = env.get_template(t).render(kernels=metas, template=t, **ver)
     files.update(_render_extension(env, metas, ver))
+    if kernels_are_book:
+        # what the default test run compares instead of generating again (issue 54)
+        files[inputs.MANIFEST] = inputs.render(files)
     return GenerationResult(dict(sorted(files.items())), done)
 
 

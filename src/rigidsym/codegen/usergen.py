@@ -16,7 +16,7 @@ from pathlib import Path
 from rigidsym.checking.deciding.registry import BadInput
 from rigidsym.codegen.spec import Kernel
 
-__all__ = ["user_kernels", "generate_user", "cmd_generate_user"]
+__all__ = ["user_kernels", "load_user_kernels", "generate_user", "cmd_generate_user"]
 
 
 def _source_name(src, title: str) -> str:
@@ -48,6 +48,34 @@ def user_kernels(um) -> list[Kernel]:
     return out
 
 
+def load_user_kernels(modules) -> tuple[list[Kernel], str]:
+    """The kernels of user modules (paths or dotted names), sources named, and the modules'
+    titles joined (the generated files' origin).
+
+    Raises:
+        BadInput: for a module that cannot be loaded, one without ``KERNELS``, or two
+            kernels of one name.
+    """
+    from rigidsym.checking.deciding.usermodules import load_many
+
+    ums = load_many(modules)
+    kernels, titles = [], []
+    from rigidsym.codegen.validate import validate_all
+
+    for um in ums:
+        ks = validate_all(user_kernels(um), um.title)
+        if not ks:
+            raise BadInput(f"module {um.title}: declares no KERNELS (a list of "
+                           f"rigidsym.codegen.spec.Kernel)")
+        kernels += ks
+        titles.append(um.title)
+    names = [k.name for k in kernels]
+    dup = sorted({n for n in names if names.count(n) > 1})
+    if dup:
+        raise BadInput(f"kernel {dup[0]} is declared twice in {', '.join(titles)}")
+    return kernels, ", ".join(titles)
+
+
 def generate_user(modules):
     """Generate the kernels of user modules (paths or dotted names) in memory.
 
@@ -58,23 +86,10 @@ def generate_user(modules):
         BadInput: for a module that cannot be loaded, one without ``KERNELS``, or two
             kernels of one name.
     """
-    from rigidsym.checking.deciding.usermodules import load_many
     from rigidsym.codegen.generator import generate
 
-    ums = load_many(modules)
-    kernels, titles = [], []
-    for um in ums:
-        ks = user_kernels(um)
-        if not ks:
-            raise BadInput(f"module {um.title}: declares no KERNELS (a list of "
-                           f"rigidsym.codegen.spec.Kernel)")
-        kernels += ks
-        titles.append(um.title)
-    names = [k.name for k in kernels]
-    dup = sorted({n for n in names if names.count(n) > 1})
-    if dup:
-        raise BadInput(f"kernel {dup[0]} is declared twice in {', '.join(titles)}")
-    return generate(kernels, origin=", ".join(titles))
+    kernels, origin = load_user_kernels(modules)
+    return generate(kernels, origin=origin)
 
 
 def cmd_generate_user(args) -> int:
@@ -92,7 +107,10 @@ def cmd_generate_user(args) -> int:
         # write() removes files it does not own: never in a folder of someone else's files
         raise BadInput(f"--out: {out} is not empty and holds no generated kernels; give a new "
                        f"or empty folder")
-    res = generate_user(args.module)
+    from rigidsym.codegen.validate import one_line_warnings
+
+    with one_line_warnings():
+        res = generate_user(args.module)
     if args.check:
         diff = check(res, out)
         if diff:

@@ -108,16 +108,47 @@ class CompilerNotFound(BuildError):
     """No C compiler on ``PATH`` (``CC``, else the compiler Python was built with)."""
 
 
+#: flags that let the compiler assume no NaN or inf, or reorder sums (issue 53): the
+#: kernels' NaN/singular tests (x - x, x != x) fold away and rigidsym_sincos' reduction is
+#: reassociated (the book's rotation came back as the identity). Each with the flag that
+#: undoes it when it comes later on the line.
+UNSAFE_FLAGS = {
+    "-ffast-math": "-fno-fast-math", "-Ofast": "-fno-fast-math",
+    "-ffinite-math-only": "-fno-finite-math-only",
+    "-fassociative-math": "-fno-associative-math",
+    "-funsafe-math-optimizations": "-fno-unsafe-math-optimizations",
+    "-freciprocal-math": "-fno-reciprocal-math",
+}
+
+
+def unsafe_flag(flags) -> str | None:
+    """The first flag of ``flags`` that would make the kernels silently wrong and that no
+    later flag undoes (:data:`UNSAFE_FLAGS`; ``-fno-fast-math`` undoes them all), or None."""
+    flags = list(flags)
+    for i, f in enumerate(flags):
+        if f in UNSAFE_FLAGS:
+            later = flags[i + 1:]
+            if UNSAFE_FLAGS[f] not in later and "-fno-fast-math" not in later and \
+                    "-fno-unsafe-math-optimizations" not in later:
+                return f
+    return None
+
+
 def kernel_flags() -> tuple[str, ...]:
     """``RIGIDSYM_CFLAGS`` (split) or :data:`KERNEL_FLAGS`.
 
     Raises:
-        ValueError: the flags contain ``-ffast-math`` (it breaks the NaN/singular logic).
+        ValueError: the flags contain one of :data:`UNSAFE_FLAGS` (``-ffast-math``,
+            ``-Ofast``, ``-ffinite-math-only``, ``-fassociative-math``, ...) not undone
+            later on the line: it breaks the NaN/singular logic and the sin/cos reduction.
     """
     env = os.environ.get("RIGIDSYM_CFLAGS")
     flags = tuple(shlex.split(env)) if env else KERNEL_FLAGS
-    if "-ffast-math" in flags:
-        raise ValueError("RIGIDSYM_CFLAGS: -ffast-math breaks the kernels' NaN/singular logic")
+    bad = unsafe_flag(flags)
+    if bad is not None:
+        raise ValueError(f"RIGIDSYM_CFLAGS: {bad} breaks the kernels' NaN/singular logic and "
+                         f"their sin/cos reduction; remove it (or add "
+                         f"{UNSAFE_FLAGS[bad]} after it)")
     return flags
 
 

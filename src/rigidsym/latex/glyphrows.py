@@ -43,6 +43,10 @@ class _Reader:
         self.models: dict = {}  # the notation's models of the glyphs used
         self.by_notation: set[str] = set()  # the glyphs the notation declares
         self.in_models: set[str] = set()  # the glyphs of the notation's models used
+        self.functions: dict[str, Let] = {}  # the --let functions by key (issue 52)
+        self.expanders: dict = {}  # key -> expand(args) for the parser
+        self.choices: dict[str, str] = {}  # X(y): "product" or "apply" (issue 52, item 2)
+        self.choice_points: dict[str, str] = {}  # the X(y) met, by key: the argument
         for x in lets + [x for x in (notation.lets if notation else ())
                          if x.kind and x.key not in self.declared]:
             if x.kind:
@@ -105,23 +109,79 @@ class _Reader:
         self.models[_symbol(g)] = rhs
         return g
 
-    def parse(self, text: str, what: str):
+    def parse(self, text: str, what: str, over: dict | None = None, record: bool = True):
+        """``text`` parsed with the overrides (``over`` on top of them: a function's
+        parameters), the ``--let`` functions and the rows the first reading could not know;
+        its glyphs recorded as used unless ``record`` is false."""
         for _ in range(4):
             try:
-                p = parse_latex(text, self.book, self.over, reader=True)
+                p = parse_latex(text, self.book, {**self.over, **(over or {})}, reader=True,
+                                functions=self.expanders, choices=self.choices)
             except LatexError as exc:
+                self.choice_points.update(getattr(exc, "choice_points", {}))
                 extra = self._extra(exc.glyphs) if exc.construct == "shapes" else {}
+                extra = {k: g for k, g in extra.items() if k not in (over or {})}
                 if extra:
                     self.over.update(extra)
                     continue
                 raise self._hint(exc, what) from None
-            extra = self._extra(p.glyphs)
+            extra = {k: g for k, g in self._extra(p.glyphs).items() if k not in (over or {})}
             if not extra:
-                self.used.update(p.glyphs)
-                self.glyphs.update(p.glyphs)
+                self.choice_points.update(p.choice_points)
+                if record:
+                    self.used.update(p.glyphs)
+                    self.glyphs.update(p.glyphs)
                 return p
             self.over.update(extra)
         raise LatexError(f"{what}: the glyphs' shapes do not settle", "shapes")
+
+    # ---- --let functions (issue 52): S(\mathbf{a}) = [\mathbf{a}]_\times
+    def add_function(self, x: Let) -> None:
+        """Declare the ``--let`` function ``x`` (``NAME(params) = LATEX``): each application
+        substitutes its arguments (:meth:`expand`)."""
+        self.functions[x.key] = x
+        self.expanders[x.key] = lambda args, x=x: self.expand(x, args)
+        self.over.setdefault(x.key, Glyph(x.key, "*", self._name(x.key), (), "function",
+                                          f"--let function of {', '.join(x.params)}"))
+
+    def expand(self, x: Let, args: list):
+        """``x`` applied to ``args``: its body read with each parameter of the argument's
+        shape, the arguments substituted; ``(value, parameters)``."""
+        from rigidsym.printing import notation
+
+        call = f"{x.key}({', '.join(notation.text(a) for a in args)})"
+        if len(args) != len(x.params):
+            raise LatexError(f"{call}: {x.key} is a function of {len(x.params)} parameter"
+                             f"{'s' if len(x.params) != 1 else ''} (--let '{x.text}'), "
+                             f"applied to {len(args)}", "function")
+        over, subs = {}, {}
+        for pk, a in zip(x.param_keys, args, strict=True):
+            shape = tuple(_shape(a) or ())
+            d = self.declared.get(pk)
+            if d is not None and d.kind and tuple(kind_of(d.kind, d.text)[0]) != shape:
+                raise LatexError(f"{call}: the parameter {pk} of {x.key} is declared "
+                                 f"'{d.text}', the argument {notation.text(a)} is "
+                                 f"{_shape_words(shape)}", "shapes")
+            g = Glyph(pk, "*", f"{self._name(x.key)}⟨{self._name(pk)}⟩", shape, "param",
+                      f"parameter of {x.key}")
+            over[pk] = g
+            subs[_symbol(g)] = a
+        p = self.parse(f"{x.name} = {x.latex}", f"--let '{x.text}'", over, record=False)
+        for k, g in p.glyphs.items():
+            if k not in over and k != x.key:
+                self.used.add(k)
+                self.glyphs[k] = g
+                self.in_models.add(k)
+        self.model_readings(x, p.readings)
+        return p.chains[0][1].xreplace(subs), x.params
+
+    def model_readings(self, x: Let, readings: list[str]) -> None:
+        """The readings of a ``--let`` model, printed with the others (issue 52: before, a
+        bracket read inside a model was never said)."""
+        for r in readings:
+            note = f"in --let '{x.text}': {r}"
+            if note not in self.notes:
+                self.notes.append(note)
 
     def _hint(self, exc: LatexError, what: str) -> LatexError:
         msg = str(exc)
@@ -135,6 +195,12 @@ class _Reader:
         out = LatexError(msg, exc.construct)
         out.glyphs = exc.glyphs
         return out
+
+
+def _shape_words(shape) -> str:
+    if not shape:
+        return "a scalar"
+    return f"a {shape[0]}-vector" if shape[1] == 1 else f"a {shape[0]}×{shape[1]} matrix"
 
 
 def _symbol(g: Glyph):

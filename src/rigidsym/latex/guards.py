@@ -111,6 +111,19 @@ def book_meanings(free: list[str]) -> None:
                 f"murray-li-sastry")
 
 
+def _through(model, models: dict) -> set[str]:
+    """The names a model mentions, through the models of the names it mentions (issue 52:
+    ``R_3`` written with ``c_\\psi``, ``c_\\psi = \\cos\\psi``, depends on ψ)."""
+    seen: set[str] = set()
+    todo = [model]
+    while todo:
+        for n in _names(todo.pop()) - seen:
+            seen.add(n)
+            if n in models:
+                todo.append(models[n])
+    return seen
+
+
 def applications(applied: dict, models: dict, glyphs: dict) -> None:
     """``R(\\theta)``: one argument per symbol, one its model depends on."""
     from rigidsym.printing import notation
@@ -129,7 +142,8 @@ def applications(applied: dict, models: dict, glyphs: dict) -> None:
                            f"it depends on {notation.text(arg)} is unknown (read as {key} "
                            f"itself it would be a guess): give its model, e.g. --let "
                            f"'{key} = LATEX' in {notation.text(arg)}")
-        if not (_names(arg) <= _names(model)):
+        if not (_names(arg) <= _through(model, models)
+                or _through(arg, models) - set(models) & _through(model, models)):
             raise BadInput(f"--latex: {key}({notation.text(arg)}): the model of {key} does not "
                            f"depend on {notation.text(arg)}; write the model in "
                            f"{notation.text(arg)} (--let '{key} = ...')")

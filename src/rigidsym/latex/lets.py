@@ -97,6 +97,9 @@ class Let:
         key: the glyph's key after parsing (``\\mathbf{Q}``).
         kind: the KIND as written, or ``""`` for a model.
         latex: the model's LaTeX, or ``""`` for a kind.
+        params: a function's parameters as written (``S(\\mathbf{a}) = ...``: ``("\\mathbf{a}",)``;
+            issue 52), ``()`` for a symbol.
+        param_keys: their glyph keys.
     """
 
     text: str
@@ -104,6 +107,8 @@ class Let:
     key: str
     kind: str = ""
     latex: str = ""
+    params: tuple[str, ...] = ()
+    param_keys: tuple[str, ...] = ()
 
 
 def split_lets(items) -> list[str]:
@@ -136,10 +141,24 @@ def _top_level(text: str, ch: str) -> int:
     return -1
 
 
+def _split_commas(text: str) -> list[str]:
+    """``text`` split at the commas outside braces (``\\phi,\\theta,\\psi``)."""
+    out, depth, start = [], 0, 0
+    for i, c in enumerate(text):
+        depth += {"{": 1, "}": -1}.get(c, 0)
+        if c == "," and depth == 0:
+            out.append(text[start:i])
+            start = i + 1
+    return out + [text[start:]]
+
+
 def _key(name: str, decl: str) -> str:
     """The glyph key of a NAME (``\\mathbf Q`` -> ``\\mathbf{Q}``)."""
     if not name:
         raise BadInput(f"--let '{decl}': expected a NAME before ':' or '='")
+    star = re.fullmatch(r"(.*?)\s*\^\s*(?:\*|\{\s*\*\s*\}|\\ast|\{\s*\\ast\s*\})", name)
+    if star and star.group(1):  # {}^B X_A^{*}: a starred name of its own (issue 52)
+        return _key(star.group(1), decl) + "^{*}"
     try:
         p = parse_latex(f"{name} = 0", None)
     except LatexError as exc:
@@ -204,12 +223,21 @@ def read_lets(let) -> list[Let]:
             out.append(Let(d, name, _key(name, d), kind=kind))
         elif eq >= 0:
             name, tex = d[:eq].strip(), d[eq + 1:].strip()
+            params: tuple[str, ...] = ()
             applied = re.fullmatch(r"(.+?)\s*\(([^()]+)\)", name)
-            if applied:  # R(\theta) = ...: the model of R, in theta (latex.meaning)
+            if applied:  # S(\mathbf{a}) = ...: a function of its parameters (issue 52)
                 name = applied.group(1)
+                params = tuple(q.strip() for q in _split_commas(applied.group(2)))
+                if not all(params):
+                    raise BadInput(f"--let '{d}': expected parameters NAME(a, b, ...), "
+                                   f"got an empty one")
             if not tex:
                 raise BadInput(f"--let '{d}': expected LaTeX after '='")
-            out.append(Let(d, name, _key(name, d), latex=tex))
+            keys = tuple(_key(q, d) for q in params)
+            if len(set(keys)) != len(keys):
+                raise BadInput(f"--let '{d}': a parameter is named twice")
+            out.append(Let(d, name, _key(name, d), latex=tex, params=params,
+                           param_keys=keys))
         else:
             raise BadInput(f"--let '{d}': expected 'NAME: KIND' (e.g. '\\mathbf{{Q}}: "
                            f"rotation') or 'NAME = LATEX' (e.g. '\\mathbf{{E}} = "

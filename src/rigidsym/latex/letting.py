@@ -13,6 +13,7 @@ reading says so.
 from __future__ import annotations
 
 import hashlib
+import itertools
 import json
 import re
 from dataclasses import dataclass, field
@@ -24,14 +25,15 @@ from rigidsym.checking.deciding.errors import BadInput
 from rigidsym.checking.deciding.registry import Rel, Statement
 from rigidsym.latex import guards
 from rigidsym.latex.bookrules import SETS
+from rigidsym.latex.declgraph import glyph_keys, model_order
 from rigidsym.latex.glyphrows import _Reader, _symbol
 from rigidsym.latex.lending import lent
 from rigidsym.latex.lets import KIND_WORDS, Let, kind_of, read_lets
-from rigidsym.latex.shapes import _shape
+from rigidsym.latex.shapes import LatexError, _shape
 from rigidsym.latex.table import Glyph
 from rigidsym.printing import notation
 
-__all__ = ["Reading", "read_statement", "latex_id", "check_book", "declare_latex",
+__all__ = ["Reading", "read_statement", "read_one", "latex_id", "check_book", "declare_latex",
            "KIND_WORDS", "Let", "read_lets"]
 
 @dataclass
@@ -52,6 +54,10 @@ class Reading:
     text: str
     notes: list[str] = field(default_factory=list)
     free: list[str] = field(default_factory=list)
+    choices: dict = field(default_factory=dict)  # the choice taken at each choice point
+    others: list = field(default_factory=list)  # the other readings that type-check
+    dropped: list = field(default_factory=list)  # (choices, why) of those that do not
+    eq: object = None  # its registered Equation (declare_latex)
 
 
 
@@ -94,6 +100,74 @@ def _words(shape) -> str:
 
 def read_statement(latex: str, lets: list[Let], book: str | None = None,
                    lend: dict | None = None, table=None) -> Reading:
+    """Read a reader's LaTeX and its declarations into a :class:`Reading`: every reading
+    of its choice points (``X(\\mathbf{y})``, ``X`` a model: a product or an application;
+    at most :data:`MAX_READINGS`) that type-checks, the first returned, the others in its
+    ``others`` (issue 52, item 2: the checker decides each, a verdict only when all agree).
+
+    Args and Raises: as :func:`read_one`; when no reading type-checks, the first reading's
+    error.
+    """
+    try:
+        first = read_one(latex, lets, book, lend, table)
+    except (LatexError, BadInput) as exc:
+        if not getattr(exc, "choice_points", None):
+            raise
+        first, error, points = None, exc, exc.choice_points
+    else:
+        if not first.choices:
+            return first
+        error, points = None, first.choices
+    keys = sorted(points)[:_MAX_POINTS]
+    kept, dropped = [], []
+    for combo in itertools.product(("product", "apply"), repeat=len(keys)):
+        choices = dict(zip(keys, combo, strict=True))
+        try:
+            r = first if first is not None and choices == first.choices else read_one(
+                latex, lets, book, lend, table, choices)
+        except (LatexError, BadInput) as exc:
+            dropped.append((choices, str(exc).splitlines()[0]))
+            continue
+        why = _shape_slip(r)
+        if why:
+            dropped.append((choices, why))
+            continue
+        kept.append(r)
+    if not kept:  # no reading type-checks: the first one, decided (or refused) as before
+        if first is None:
+            raise error
+        return first
+    kept[0].others, kept[0].dropped = kept[1:], dropped
+    for choices, why in dropped:
+        kept[0].notes.append(f"not read as {_said(choices)}: {why}")
+    return kept[0]
+
+
+#: choice points enumerated (2**3 readings at most); any more are read by the default
+_MAX_POINTS = 3
+
+
+def _said(choices: dict) -> str:
+    return "; ".join(f"{k}(...) {'applied' if c == 'apply' else 'a product'}"
+                     for k, c in sorted(choices.items()))
+
+
+def _shape_slip(r: Reading) -> str:
+    """Why a reading does not type-check (sides of different shapes), or ``""``."""
+    from rigidsym.checking.deciding.explicit import UnknownShape, shape_of
+
+    for rel in r.statement.printed:
+        try:
+            sl, sr = shape_of(rel.lhs), shape_of(rel.rhs)
+        except UnknownShape:
+            continue
+        if sl != sr:
+            return f"the two sides differ in shape ({_words(sl)} = {_words(sr)})"
+    return ""
+
+
+def read_one(latex: str, lets: list[Let], book: str | None = None,
+             lend: dict | None = None, table=None, choices: dict | None = None) -> Reading:
     """Read a reader's LaTeX and its declarations into a :class:`Statement`.
 
     Args:
@@ -103,9 +177,11 @@ def read_statement(latex: str, lets: list[Let], book: str | None = None,
         lend: symbols a module lends, by name: ``name -> (symbol, model value or None)``.
         table: a book's :class:`~rigidsym.latex.notations.Notation` (``--notation``),
             below the ``--let`` declarations.
+        choices: how to read each choice point by key (``{"R": "apply"}``), the default
+            (a product) for the others.
 
     Returns:
-        The :class:`Reading`.
+        The :class:`Reading`, its ``choices`` the choice taken at each point met.
 
     Raises:
         LatexError: LaTeX that cannot be read (position and caret; an unknown macro
@@ -113,11 +189,21 @@ def read_statement(latex: str, lets: list[Let], book: str | None = None,
         BadInput: a --let naming a symbol that occurs nowhere, an ambiguous book glyph,
             models that refer to each other in a cycle or whose shape differs from a use.
     """
-    from rigidsym.checking.deciding.explicit import _EXPLICIT_CACHE, explicit
-
     lend = lend or {}
     lets = list(lets) + declared_lets(latex, lets)  # ", R \\in SO(3)": a --let (issue 40)
     rd = _Reader(lets, book, lend, table)
+    rd.choices = dict(choices or {})
+    try:
+        return _read(rd, latex, lets, lend, table)
+    except (LatexError, BadInput) as exc:
+        exc.choice_points = {k: rd.choices.get(k, "product") for k in rd.choice_points}
+        raise
+
+
+def _read(rd: _Reader, latex: str, lets: list[Let], lend: dict, table) -> Reading:
+    """:func:`read_one`'s body."""
+    from rigidsym.checking.deciding.explicit import _EXPLICIT_CACHE, explicit
+
     values: dict = {}  # book symbol -> value in book symbols (resolved below)
     occurs = _read_models(rd, lets, values)
     models = {sym.name: v for sym, v in values.items()}  # the --let models, for R(\theta)
@@ -146,25 +232,65 @@ def read_statement(latex: str, lets: list[Let], book: str | None = None,
     defines = tuple(r.lhs.name for r in printed) if kind == "definition" else ()
     text = "; ".join(f"{notation.text(r.lhs)} {'≡' if kind == 'definition' else '='} "
                      f"{notation.text(r.rhs)}" for r in printed)
-    notes += parsed.readings
+    notes += list(dict.fromkeys(rd.notes + parsed.readings))  # each reading once
     st = Statement(printed, model, defines=defines, from_latex=True)
-    return Reading(st, kind, text, notes, free)
+    return Reading(st, kind, text, notes, free,
+                   choices={k: rd.choices.get(k, "product") for k in rd.choice_points})
+
+
+def _is_function(x: Let) -> bool:
+    return bool(x.params) and x.params != ("t",)  # X(t) = ...: a model in time
 
 
 def _read_models(rd: _Reader, lets: list[Let], values: dict) -> set[str]:
-    """The ``NAME = LATEX`` models into ``values``; the glyphs they use."""
-    occurs: set[str] = set()
+    """The ``NAME = LATEX`` models into ``values`` and the ``NAME(params) = LATEX``
+    functions into the reader, each after the models it mentions (issue 52: any order of
+    the ``--let``s reads the same); the glyphs they use."""
+    mentions = {}
     for x in lets:
         if x.latex:
-            p = rd.parse(f"{x.name} = {x.latex}", f"--let '{x.text}'")
-            if len(p.chains) != 1 or len(p.chains[0]) != 2:
-                raise BadInput(f"--let '{x.text}': expected NAME = one expression")
-            occurs |= set(p.glyphs) - {x.key}  # its own NAME is no occurrence
-            rhs = p.chains[0][1]
-            g = Glyph(x.key, "*", rd._name(x.key), _shape(rhs) or (), "model", "--let model")
-            rd.over[x.key] = g
-            values[_symbol(g)] = rhs
+            try:
+                mentions[x.key] = glyph_keys(x.latex) - set(x.param_keys)
+            except LatexError:
+                mentions[x.key] = set()  # the parse below says why
+    occurs: set[str] = set()
+    for x in model_order(lets, mentions):
+        occurs |= mentions[x.key] | set(x.param_keys)
+        if _is_function(x):
+            rd.add_function(x)
+            _function_model(rd, x, values)
+            continue
+        if x.key.endswith("^{*}"):  # a starred NAME (issue 52) reads as a name of its own
+            rd.over.setdefault(x.key, Glyph(x.key, "*", rd._name(x.key), (), "model", ""))
+        p = rd.parse(f"{x.name} = {x.latex}", f"--let '{x.text}'")
+        if len(p.chains) != 1 or len(p.chains[0]) != 2:
+            raise BadInput(f"--let '{x.text}': expected NAME = one expression")
+        occurs |= set(p.glyphs) - {x.key}  # its own NAME is no occurrence
+        rd.model_readings(x, p.readings)
+        rhs = p.chains[0][1]
+        g = Glyph(x.key, "*", rd._name(x.key), _shape(rhs) or (), "model", "--let model")
+        rd.over[x.key] = g
+        values[_symbol(g)] = rhs
     return occurs
+
+
+def _function_model(rd: _Reader, x: Let, values: dict) -> None:
+    """A function of scalar parameters (``R(\\theta) = e^{[\\hat\\omega]\\theta}``) is
+    also the model of its NAME, as before issue 52 (``R`` alone is ``R(θ)``); one of a
+    vector or matrix is a function only (``S`` alone is refused)."""
+    try:
+        p = rd.parse(f"{x.name} = {x.latex}", f"--let '{x.text}'", record=False)
+    except LatexError:
+        return
+    if any(p.glyphs.get(k) is None or p.glyphs[k].shape for k in x.param_keys) \
+            or len(p.chains) != 1 or len(p.chains[0]) != 2:
+        return
+    rd.used.update(p.glyphs)
+    rd.glyphs.update(p.glyphs)
+    rhs = p.chains[0][1]
+    g = Glyph(x.key, "*", rd._name(x.key), _shape(rhs) or (), "model", "--let model")
+    rd.over[x.key] = g
+    values[_symbol(g)] = rhs
 
 
 def _glyph_values(rd: _Reader, lend: dict, values: dict) -> tuple[list[str], list[str]]:
@@ -305,9 +431,9 @@ def declare_latex(latex: str, let=None, *, book: str | None = None, modules=(),
     n = len(reading.statement.printed)
     title = "a relation read from LaTeX" if n == 1 else f"{n} relations read from LaTeX"
 
-    def statement() -> Statement:
-        return reading.statement
-
-    equation(eq_id, title, section=f"book {book}" if book else "latex", latex=latex,
-             kind=reading.kind)(statement)
+    for n, r in enumerate([reading, *reading.others]):
+        r_id = eq_id if n == 0 else f"{eq_id}.r{n + 1}"  # another reading (issue 52)
+        equation(r_id, title, section=f"book {book}" if book else "latex", latex=latex,
+                 kind=r.kind)(lambda st=r.statement: st)
+        r.eq = REGISTRY[r_id]
     return REGISTRY[eq_id], reading

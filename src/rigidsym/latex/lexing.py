@@ -44,6 +44,8 @@ class Parsed:
         glyphs: the glyph-table rows used, by LaTeX key.
         applied: the non-scalar symbols read as applied to a parenthesised scalar
             (``R(\\theta)``), by LaTeX key: the arguments (``rigidsym.latex.meaning``).
+        choice_points: the symbols ``X`` of ``X(y)`` that no rule reads (a model applied to
+            no scalar: a product or an application; issue 52), by key: the argument.
     """
 
     chains: list = field(default_factory=list)
@@ -52,6 +54,7 @@ class Parsed:
     readings: list = field(default_factory=list)
     glyphs: dict = field(default_factory=dict)
     applied: dict = field(default_factory=dict)  # R(\theta): key -> arguments (latex.meaning)
+    choice_points: dict = field(default_factory=dict)  # X(y) product or application (issue 52)
 
     def pairs(self):
         """Every pair ``(chain, i, j, E_i, E_j)`` with ``i < j`` of a chain: each is a
@@ -243,6 +246,11 @@ def tree(latex: str):
         if token.startswith("\\"):
             what = f"unknown macro {token}" if construct == "a macro" else \
                 f"{token} ({construct}) cannot be read here"
+            if construct == "an integral or sum":  # issue 52, item 4: the reason
+                what += (": rigidsym decides algebraic identities and does not integrate or "
+                         "sum (an integral's closed form is yours to give: name the integral "
+                         "and give its value as a --let model, e.g. --let '\\mathbf{J} = "
+                         "...')")
             raise LatexError(f"{what} at position {pos}:\n{caret(text, pos, len(token))}",
                              f"unknown macro {token}") from None
         raise LatexError(f"unexpected {rest[:1]!r} at position {pos}:\n{caret(text, pos)}",
@@ -284,6 +292,6 @@ def _expected(names) -> str:
             pattern = None
         word = _TERMINALS.get(n) or (pattern.value if isinstance(
             pattern, lark.lexer.PatternStr) else None)
-        if word and word not in out:
+        if word and word not in out and word not in ("\\$", "|"):  # rare: said last if ever
             out.append(word)
     return ", ".join(out[:10]) + (" ..." if len(out) > 10 else "")

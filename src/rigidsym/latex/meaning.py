@@ -60,11 +60,41 @@ class MeaningRules:
     def __init__(self, *args, **kwargs):
         super().__init__(*args, **kwargs)
         self.applied: dict[str, list] = {}
+        self.functions: dict = {}  # key -> expand(args) -> (value, params): --let functions
+        self.choices: dict[str, str] = {}  # key -> "product" | "apply" (issue 52, item 2)
+        self.choice_points: dict[str, str] = {}  # key -> its argument, as read
+
+    def apply_many(self, items):
+        """``glyph ( a, b, ... )`` with an optional power: a ``--let`` function of several
+        parameters (issue 52), never a product."""
+        f, sup = items[0], (items[-1] if isinstance(items[-1], str) else None)
+        args = [_as_scalar(self._val(a)) for a in (items[1:-1] if sup is not None else items[1:])]
+        if f.key not in self.functions:
+            raise LatexError(f"{f.key}({', '.join(['...'] * len(args))}): {f.key} is applied to "
+                             f"{len(args)} arguments but no --let declares it a function: "
+                             f"--let '{f.key}(a, b, ...) = LATEX'", "function")
+        v = self._expand(f.key, args)
+        return self.power([v, sup]) if sup is not None else v
+
+    def _expand(self, key, args):
+        from rigidsym.printing import notation
+
+        v, params = self.functions[key](args)
+        said = ", ".join(f"{p} = {notation.text(a)}" for p, a in zip(params, args, strict=True))
+        self._note(f"{key}({', '.join(notation.text(a) for a in args)}): the --let function "
+                   f"{key}({', '.join(params)}) at {said}")
+        return v
 
     def apply(self, items):
         """``glyph ( expr )`` with an optional power after the parenthesis."""
         f, arg, sup = items[0], items[1], (items[2] if len(items) > 2 else None)
+        if getattr(f, "key", None) in self.functions:  # a --let function (issue 52)
+            v = self._expand(f.key, [_as_scalar(self._val(arg))])
+            return self.power([v, sup]) if sup is not None else v
         fv, x = self._val(f), _as_scalar(self._val(arg))
+        if self.reader and _shape(fv) is not None and _shape(x) is not None \
+                and getattr(self.overrides.get(f.key), "kind", None) == "model":
+            return self._choose(f, fv, x, arg, sup)
         if self.reader and _shape(fv) is not None and _shape(x) is None and x is not _TIME:
             from rigidsym.printing import notation
 
@@ -74,6 +104,28 @@ class MeaningRules:
                        f"scalar): {f.key} itself, depending on {a} as its model says")
             return self.power([fv, sup]) if sup is not None else fv
         if sup is not None:  # a(b + c)^2: the power binds to the parenthesis
+            arg = self.power([arg, sup])
+        return self.mul([f, arg])
+
+    def _choose(self, f, fv, x, arg, sup):
+        """``X(\\mathbf{y})``, ``X`` a model without parameters, ``\\mathbf{y}`` no scalar:
+        a product ``X y`` or ``X`` applied to ``y``; no rule settles it (issue 52, item 2).
+        The reading follows ``self.choices[key]`` (``"product"`` unless told): the reader
+        reads the statement once per choice and keeps those that type-check
+        (:mod:`rigidsym.latex.letting`), the checker decides each."""
+        from rigidsym.printing import notation
+
+        how = self.choices.get(f.key, "product")
+        self.choice_points.setdefault(f.key, notation.text(x))
+        a = notation.text(x)
+        if how == "apply":
+            self.applied.setdefault(f.key, []).append(x)
+            self._note(f"{f.key}({a}): read as {f.key} applied to {a} (a choice: or the "
+                       f"product {f.key} {a})")
+            return self.power([fv, sup]) if sup is not None else fv
+        self._note(f"{f.key}({a}): read as the product {f.key} {a} (a choice: or {f.key} "
+                   f"applied to {a})")
+        if sup is not None:
             arg = self.power([arg, sup])
         return self.mul([f, arg])
 

@@ -127,6 +127,8 @@ class _Build(MeaningRules, VocabRules, BookRules, lark.Transformer):
         else:
             key = self._key(base, rest, accent, pre)
         kind = base[0]
+        if rest and isinstance(rest[-1], tuple) and ":" in rest[-1][1] and inner is None:
+            return self._slice(key, base, rest, accent, pre)
         sized = self._sized(key, base, rest, accent)  # I, I_3, \mathbf{1}_3 (latex.meaning)
         if sized is not None:
             return _GlyphKey(key, base, rest, accent, sized)
@@ -151,6 +153,27 @@ class _Build(MeaningRules, VocabRules, BookRules, lark.Transformer):
         if accent in ("\\vec", "\\underline") and kind == "plain":  # vector fonts
             base = ("bold", base[1])
         return _GlyphKey(key, base, rest, accent, self._symbol(key, base))
+
+    def _slice(self, key, base, rest, accent, pre):
+        """``\\mathbf{q}_{1:3}``: entries 1 to 3 (counted from 1, both included) of the
+        vector ``\\mathbf{q}`` (issue 52, item 4); of a scalar or matrix refused."""
+        lo, hi = (int(n) for n in rest[-1][1].replace(" ", "").split(":"))
+        vkey = self._key(base, rest[:-1], accent, pre)
+        v = self._symbol(vkey, base)
+        shape = getattr(v, "shape", None)
+        if not shape or shape[1] != 1 or shape[0] == 1:
+            raise LatexError(f"{key}: a range of entries of {vkey}, which is no vector "
+                             f"({_words(v)}); declare it, e.g. --let '{vkey}: 4-vector'",
+                             "shapes")
+        if not 1 <= lo <= hi <= shape[0]:
+            raise LatexError(f"{key}: entries {lo} to {hi} of {vkey}, a {shape[0]}-vector",
+                             "shapes")
+        if lo == hi:  # q_{4:4}: one entry, a scalar
+            self.readings.append(f"{key}: entry {lo} of {vkey}")
+            return _GlyphKey(key, base, rest, accent, v[lo - 1, 0])
+        self.readings.append(f"{key}: entries {lo} to {hi} of {vkey}")
+        return _GlyphKey(key, base, rest, accent,
+                         sp.ImmutableMatrix([[v[i, 0]] for i in range(lo - 1, hi)]))
 
     def _symbol(self, key, base):
         g = self.overrides.get(key)
@@ -275,6 +298,10 @@ class _Build(MeaningRules, VocabRules, BookRules, lark.Transformer):
         return _as_scalar(a.T * b)
 
     def power(self, items):
+        if items[1] == "*" and isinstance(items[0], _GlyphKey) \
+                and items[0].key + "^{*}" in self.overrides:  # a starred name a --let
+            self.glyphs.pop(items[0].key, None)  # declares (issue 52): a symbol of its own
+            return self._symbol(items[0].key + "^{*}", items[0].base)
         x, sup = _value(items[0]), items[1]
         if sup != "T" and not sup.lstrip("-").isdigit():
             return self.book_power(x, sup)

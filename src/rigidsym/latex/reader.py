@@ -14,7 +14,8 @@ __all__ = ["parse_latex"]
 
 
 def parse_latex(latex: str, section: str | None = "*", overrides: dict | None = None,
-                block_rows: bool = False, reader: bool = False) -> Parsed:
+                block_rows: bool = False, reader: bool = False,
+                functions: dict | None = None, choices: dict | None = None) -> Parsed:
     """Parse a LaTeX statement into relations of book symbols.
 
     Args:
@@ -29,6 +30,10 @@ def parse_latex(latex: str, section: str | None = "*", overrides: dict | None = 
         reader: a reader's LaTeX (``rigidsym check --latex``): ``[x]`` of one 3- or
             6-vector symbol or product is its hat, a plain ``I`` no override declares is the
             identity, an identity is sized by its neighbours (``rigidsym.latex.vocab``).
+        functions: the ``--let`` functions by LaTeX key (issue 52): ``expand(args)`` gives
+            ``(value, parameter names)``, the body with the arguments substituted.
+        choices: how to read each choice point by key (``{"R": "apply"}``; issue 52): ``X(y)``
+            with ``X`` a model and ``y`` no scalar, a product unless told.
 
     Returns:
         A :class:`Parsed`.
@@ -40,17 +45,22 @@ def parse_latex(latex: str, section: str | None = "*", overrides: dict | None = 
     if not isinstance(latex, str) or not latex.strip():
         raise LatexError(f"latex: expected a non-empty LaTeX string, got {latex!r}")
     tree = _tree(latex)
+    if reader:
+        _no_double_brackets(tree, latex)
     build = _Build(section, overrides or {}, block_rows, reader)
     build.braces = []
+    build.functions = functions or {}
+    build.choices = choices or {}
     try:
         stmts = build.transform(tree)
     except lark.exceptions.VisitError as exc:
         if isinstance(exc.orig_exc, LatexError):
             exc.orig_exc.glyphs = dict(build.glyphs)  # those read before it: for hints
+            exc.orig_exc.choice_points = dict(build.choice_points)  # issue 52
             raise exc.orig_exc from None
         raise LatexError(f"cannot read {latex!r}: {exc.orig_exc}", "shapes") from None
     out = Parsed(readings=build.readings, glyphs=build.glyphs,
-                 applied=build.applied)
+                 applied=build.applied, choice_points=build.choice_points)
     for st in stmts:
         _, exprs, ops = st
         exprs = [_as_scalar(_value(e)) for e in exprs]
@@ -86,3 +96,28 @@ def _tree(latex: str):
     """lark's parse tree, or a :class:`LatexError` that says where and what was expected
     (:func:`rigidsym.latex.lexing.tree`: pylatexenc's boundaries of the macros)."""
     return tree(latex)
+
+
+def _is_square(t) -> bool:
+    """A ``[ ... ]`` (or ``\\left[ ... \\right]``) group of the parse tree."""
+    if not isinstance(t, lark.Tree):
+        return False
+    if t.data == "bracket":
+        return True
+    return t.data == "sized" and "[" in str(t.children[0])
+
+
+def _no_double_brackets(tree, latex: str) -> None:
+    """A bracket holding only a bracket (Shuster's ``[[\\mathbf{u}]]``, the *negative* of
+    the cross-product matrix) matches no rule: refused by name, never read as the one
+    bracket it resembles (issue 52; before, ``[[g]]`` was ``[g]``, a sign lost unsaid)."""
+    for t in tree.iter_subtrees():
+        if _is_square(t):
+            inner = [c for c in t.children if isinstance(c, lark.Tree)]
+            if len(inner) == 1 and _is_square(inner[0]):
+                raise LatexError(
+                    f"unknown bracket [[...]] in {latex!r}: no rule reads a bracket directly "
+                    f"inside a bracket (Shuster writes [[u]] for the negative of the "
+                    f"cross-product matrix); say what it is with a --let function, e.g. "
+                    f"--let 'N(\\mathbf{{u}}) = -[\\mathbf{{u}}]_\\times' and N(\\mathbf{{u}})",
+                    "unknown bracket [[...]]")

@@ -36,8 +36,9 @@ from rigidsym.checking.worked import (
     solution_record,
     solve,
 )
+from rigidsym.report.exam_text import ASKED, box_label, task
 
-__all__ = ["exam", "read_spec"]
+__all__ = ["exam", "read_spec", "asked"]
 
 _DRAWS = 50
 _STYLE = """
@@ -77,7 +78,7 @@ def read_spec(spec) -> dict:
         ex_id = normalise_id(str(p["exercise"]))
         if "data" in p and "variants" in p:
             raise ValueError(f"spec: problem {k} gives both data and variants; one of them")
-        if "variants" in p and not hasattr(exercise_module(ex_id), "random_data"):
+        if "variants" in p and ex_id not in _drawable():
             drawn = [i[2:] for i in _drawable()]
             raise ValueError(f"spec: problem {k}: exercise {ex_id[2:]} draws no random "
                              f"variants (those that do: {', '.join(drawn)}); give its data")
@@ -85,33 +86,75 @@ def read_spec(spec) -> dict:
 
 
 def _drawable() -> list[str]:
+    """The exercises that draw variants: their own ``random_data``, or the book's
+    ``_variants`` module (3.6's data, the proofs' true-or-false statements)."""
     from rigidsym.checking.worked import EXERCISE_IDS
-    return [i for i in EXERCISE_IDS if hasattr(exercise_module(i), "random_data")]
+    more = set(_variants().drawn())
+    return [i for i in EXERCISE_IDS if hasattr(exercise_module(i), "random_data")
+            or i in more]
 
 
-def _problems(spec: dict, seed: int) -> list:
+def _variants():
+    """The book's module of variants for the exercises without ``random_data`` (loaded by
+    its configured name: the machinery never imports the book)."""
+    import importlib
+
+    from rigidsym import _config
+    return importlib.import_module(f"{_config.EXERCISES}._variants")
+
+
+def _variant(ex_id: str, rng):
+    """One variant of ``ex_id``: a solution on drawn data, or a drawn problem itself."""
+    own = getattr(exercise_module(ex_id), "random_data", None)
+    if own is not None:
+        return solve(ex_id, **own(rng))
+    got = _variants().draw(ex_id, rng)
+    return solve(ex_id, **got[1]) if isinstance(got, tuple) else got
+
+
+def _problems(spec: dict, seed: int, taken: dict | None = None) -> list:
     """The solved problems, in order: data given, or drawn (well-posed, checked)."""
+    return [s for s, _k in _drawn(spec, seed, taken)]
+
+
+def _drawn(spec: dict, seed: int, taken: dict | None = None) -> list[tuple]:
+    """``[(solution, spec problem number), ...]``: data given, or drawn well-posed and
+    checked from ``seed``. ``taken`` (slot -> set of data keys drawn for other students)
+    makes every draw differ from those before it: a repeat is drawn again."""
     out = []
     for k, p in enumerate(spec["problem"], 1):
         ex_id = normalise_id(str(p["exercise"]))
         if "variants" not in p:
-            out.append(solve(ex_id, **p.get("data", {})))
+            out.append((solve(ex_id, **p.get("data", {})), k))
             continue
         for v in range(int(p["variants"])):
-            rng = random.Random(f"{seed}:{k}:{ex_id}:{v}")
-            for _ in range(_DRAWS):
-                s = solve(ex_id, **exercise_module(ex_id).random_data(rng))
-                if s.status == "solved" and s.checked:
-                    break
+            seen = taken.setdefault((k, v), set()) if taken is not None else set()
+            s = None
+            for attempt in range(2 * _DRAWS):
+                if attempt == _DRAWS and s is not None:
+                    seen.clear()       # its variants are spent (3.10 has 12): reuse them
+                rng = random.Random(f"{seed}:{k}:{ex_id}:{v}" + (f":{attempt}" if attempt
+                                                                 else ""))
+                drawn = _variant(ex_id, rng)
+                if drawn.status == "solved" and drawn.checked:
+                    s = drawn
+                    if _key(s) not in seen:
+                        break
             else:
-                raise ValueError(f"spec: problem {k}: no well-posed variant of {ex_id[2:]} "
-                                 f"in {_DRAWS} draws")
-            out.append(s)
-    for k, s in enumerate(out, 1):
+                raise ValueError(f"spec: problem {k}: no well-posed variant of "
+                                 f"{ex_id[2:]} in {2 * _DRAWS} draws")
+            seen.add(_key(s))
+            out.append((s, k))
+    for s, k in out:
         if s.status != "solved":
             raise ValueError(f"spec: problem {k} ({s.id[2:]}) is {s.status} on its data: "
                              f"{s.reason}")
     return out
+
+
+def _key(s) -> str:
+    """The data of a solution as one string (equal data, equal strings)."""
+    return repr(sorted((k, str(v)) for k, v in s.data.items()))
 
 
 def _svg(fig) -> str:
@@ -127,16 +170,20 @@ def _svg(fig) -> str:
 
 
 def _no_ticks(fig):
-    """No coordinate tick labels on a handout's figure: a tick could read as an answer
-    (the centroid at h/2 is a tick of the prism's z axis)."""
+    """No coordinate ticks on a handout's figure: a tick could read as an answer (the
+    centroid at h/2 is a tick of the prism's z axis); without ticks or grid a 3-D figure
+    also draws in about a third of the time (a class of 30 draws 90)."""
     for ax in fig.axes:
+        ax.grid(False)
         for axis in ("xaxis", "yaxis", "zaxis"):
             if hasattr(ax, axis):
-                getattr(ax, axis).set_ticklabels([])
+                getattr(ax, axis).set_ticks([])    # no tick at all: a third of the time
     return fig
 
 
 def _data_table(s) -> str:
+    if not len(parameters(s.id)):
+        return ""
     rows = []
     for p in parameters(s.id):
         v = s.data[p.name]
@@ -155,21 +202,42 @@ def _page(title: str, body: str) -> str:
             f"<h1>{html.escape(title)}</h1>\n{body}\n</body></html>\n")
 
 
-def _handout(title: str, sols: list) -> str:
+def _handout(title: str, sols: list, head: str = "", columns: bool = False) -> str:
+    """The handout: per problem the task on the student's data (stated once), the data,
+    a figure of the given data only, and a box per answer labelled in the book's words
+    (``columns``: with the answer's column in the class's answers CSV)."""
     parts = []
     for k, s in enumerate(sols, 1):
         mod = exercise_module(s.id)
         draw = getattr(mod, "given_figure", None)
         fig = f"<figure>{_svg(_no_ticks(draw(s)))}</figure>" if draw else ""
-        asked = [n for n, v in s.answers.items() if not isinstance(v, str)]
-        space = "".join(f"<p><b>{html.escape(n)}</b> =</p><div class=\"answer\"></div>"
-                        for n in asked)
         parts.append(
             f"<section class=\"problem\"><h2>Problem {k}: {html.escape(mod.TITLE)}</h2>"
-            f"<p>{html.escape(s.statement)} ({html.escape(s.citation)}), on the data "
-            f"below, which replace the book's.</p>{_data_table(s)}{fig}"
-            f"<h3>Your answers</h3>{space}</section>")
-    return _page(title, "\n".join(parts))
+            f"<p>{html.escape(task(s.id, s.statement))} <small>(after "
+            f"{html.escape(s.citation)})</small></p>{_data_table(s)}{fig}"
+            f"<h3>Your answers</h3>{_boxes(s, k, columns)}</section>")
+    return _page(title, head + "\n".join(parts))
+
+
+def _boxes(s, k: int, columns: bool) -> str:
+    """A box per answer asked, labelled in the book's words and symbols."""
+    out = []
+    for n in asked(s):
+        col = f" <small>(column <code>P{k}.{html.escape(n)}</code>)</small>" if columns \
+            else ""
+        out.append(f"<p><b>{html.escape(box_label(s.id, n))}</b>{col}</p>"
+                   f"<div class=\"answer\"></div>")
+    return "".join(out)
+
+
+def asked(s) -> list[str]:
+    """The answers a handout asks for: the solution's answers that are values (an answer
+    in words is read by the instructor, not boxed)."""
+    from rigidsym.checking.worked.grading import gradeable
+
+    only = ASKED.get(s.id)
+    return [n for n, v in s.answers.items() if not isinstance(v, str) and gradeable(v)
+            and (only is None or n in only)]
 
 
 def _key_html(title: str, sols: list) -> str:

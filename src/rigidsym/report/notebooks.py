@@ -37,6 +37,8 @@ def _literal(v) -> str:
     """A parameter value as Python source a student edits: ints bare, floats as floats,
     others as strings the exact reader takes ("-5/3", "sqrt(3)/2"); vectors and matrices
     as lists."""
+    if v is None:                                     # an optional datum, not given
+        return "None"
     if type(v).__module__.split(".")[0] == "numpy":   # NumPy arrays and scalars
         v = v.tolist()
     if isinstance(v, str):

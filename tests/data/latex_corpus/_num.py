@@ -131,6 +131,9 @@ def _draw(kind: str, rng):
     if k == "unit vector":
         v = rng.normal(size=3)
         return (v / np.linalg.norm(v)).reshape(3, 1)
+    if k == "unit 4-vector":
+        v = rng.normal(size=4)
+        return (v / np.linalg.norm(v)).reshape(4, 1)
     if k == "angle":
         return rng.uniform(-np.pi, np.pi)
     if k == "angle in [0, pi]":
@@ -220,9 +223,12 @@ def residual(pair) -> float:
     return float(np.abs(a - b).max() / max(1.0, np.abs(a).max(), np.abs(b).max()))
 
 
-def E(section: str, number: str, latex: str, holds: bool, num, note: str = "") -> dict:
+def E(section: str, number: str, latex: str, holds: bool, num, note: str = "",
+      lets: tuple = ()) -> dict:
     """One corpus entry: where it is in the book, its LaTeX as the book prints it, whether
     it holds (False: a slip, a realistic mistyping of a true equation) and ``num``, a
-    function of a :class:`Point` returning the two members as NumPy values."""
+    function of a :class:`Point` returning the two members as NumPy values. ``lets``: the
+    ``--let`` models and functions a reader of the book writes (issue 52), beside the
+    table's kinds."""
     return {"section": section, "number": number, "latex": latex, "holds": holds,
-            "num": num, "note": note}
+            "num": num, "note": note, "lets": list(lets)}

@@ -13,7 +13,9 @@ import numpy as np
 
 HERE = Path(__file__).resolve().parent
 BOOKS = ("lynch_park", "murray_li_sastry", "siciliano", "spong", "corke", "featherstone",
-         "craig", "barfoot", "sola")
+         "craig", "barfoot", "sola",
+         # issue 52: books the corpus did not cover, read with --let functions and models
+         "shuster", "diebel", "markley", "tsai", "mccarthy", "goldstein", "selig")
 POINTS = 6  # random points per entry
 SEED = 40
 
@@ -72,6 +74,13 @@ def lets_for(latex: str, table: str) -> list[str]:
         if found:
             used.append(f"{name}: {kind}")
     return used
+
+
+def lets_of(entry: dict) -> list[str]:
+    """Every ``--let`` of an entry: its table's kinds of the symbols its LaTeX and its
+    models use, then its models and functions (issue 52)."""
+    models = list(entry.get("lets", []))
+    return lets_for(" ".join([entry["latex"], *models]), entry["table"]) + models
 
 
 def confirm(entry: dict) -> tuple[bool, str]:

@@ -28,7 +28,7 @@ def run(entry: dict) -> dict:
     from rigidsym.checking.deciding import registry
     from rigidsym.latex.notations import NOTATIONS
 
-    lets = corpus.lets_for(entry["latex"], entry["table"])
+    lets = corpus.lets_of(entry)
     book = entry["book"]["key"]
     t0 = time.perf_counter()
     try:

@@ -116,7 +116,9 @@ def _counterexample(lhs, rhs, witness, seed, extra=()) -> tuple[dict, object, di
         v = evaluate(rule, plan, pt) if rule != atom else pt[atom]
         point[sp.sstr(atom)] = str(v)
     for a, (tau, M) in plan.angles.items():
-        point[sp.sstr(a)] = f"{2 * M}*atan({pt[tau]})"
+        # evaluated where it is a number (issue 52: "ψ = 0", "-pi/2", never "2*atan(0)")
+        point[sp.sstr(a)] = sp.sstr(2 * M * sp.atan(sp.Rational(pt[tau].numerator,
+                                                                pt[tau].denominator)))
     lv, rv = _exact_value(lhs, plan, pt), _exact_value(rhs, plan, pt)
     if isinstance(lv, sp.MatrixBase) != isinstance(rv, sp.MatrixBase):
         # a 1 x 1 matrix (a^T b) against a scalar: shape_of calls both 1 x 1

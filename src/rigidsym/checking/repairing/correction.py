@@ -18,6 +18,7 @@ budget is the run's when given, else the declaration's, else
 
 from __future__ import annotations
 
+import time
 from collections.abc import Callable
 from dataclasses import dataclass, field
 
@@ -40,6 +41,7 @@ class RepairSettings:
 
     enabled: bool = True
     budget: int | None = None
+    seconds: float | None = None  # a time limit of the search per statement (issue 52)
 
 
 def budget_of(eq, settings: RepairSettings) -> int:
@@ -87,10 +89,11 @@ def _search(eq, st, rels, outs, seed, settings, decide) -> tuple[list, list, dic
     of each member label)``."""
     failing = [r for r, o in zip(rels, outs, strict=True) if o.zero is False]
     budget = budget_of(eq, settings)
+    deadline = time.monotonic() + settings.seconds if settings.seconds else None
     sh = repair.share(failing, rels, st.model, decide, seed)
     searches, records, first = [], [], {}
     for rel in failing:
-        s = repair.search_member(rel, sh, budget)
+        s = repair.search_member(rel, sh, budget, deadline, settings.seconds or 0.0)
         searches.append(repair.search_record(s, budget))
         for f in s.found[:repair.KEEP]:
             partners = _declared_partner(rel.label, len(st.printed), st.corrected or [])

@@ -25,6 +25,7 @@ explanations of the slip, and both are reported).
 from __future__ import annotations
 
 import re
+import time
 from collections.abc import Callable
 from dataclasses import dataclass, field
 
@@ -96,6 +97,7 @@ class Search:
     full_tests: int = 0
     undecidable: int = 0
     stopped: str = ""
+    limit: float = 0.0  # the time limit it ran under, seconds (0: none; issue 52)
 
 
 @dataclass
@@ -122,6 +124,14 @@ class _Ctx:
     sides: tuple
     seen: set = field(default_factory=set)
     found_diffs: list = field(default_factory=list)
+    deadline: float | None = None  # time.monotonic() after which the search stops
+
+    def late(self) -> bool:
+        """Past the deadline: the search stops, saying so (issue 52, item 6)."""
+        if self.deadline is not None and time.monotonic() > self.deadline:
+            self.search.stopped = "time"
+            return True
+        return False
 
 
 # --------------------------------------------------------------------------- book symbols
@@ -202,19 +212,22 @@ def share(failing: list[Rel], rels: list[Rel], model: dict, decide: Callable,
     return Shared(rels, model, pl, pts, decide, seed)
 
 
-def search_member(rel: Rel, sh: Shared, budget: int = REPAIR_BUDGET) -> Search:
+def search_member(rel: Rel, sh: Shared, budget: int = REPAIR_BUDGET,
+                  deadline: float | None = None, limit: float = 0.0) -> Search:
     """Search the repairs of one failing member.
 
     Args:
         rel: the member that does not hold.
         sh: from :func:`share`.
         budget: the most candidates to try.
+        deadline: ``time.monotonic()`` after which the search stops (``None``: none).
+        limit: the time limit in seconds, for the words (:func:`search_record`).
 
     Returns:
         A :class:`Search`; ``found`` holds the verified repairs in report order.
     """
-    s = Search(member=rel.label)
-    ctx = _Ctx(rel, sh, budget, s, T.sides(rel))
+    s = Search(member=rel.label, limit=limit)
+    ctx = _Ctx(rel, sh, budget, s, T.sides(rel), deadline=deadline)
     singles = candidates.prepare(rel, mutate.single_edits(rel, sh.pools), ctx.sides,
                                  sh.shapes)
     done = _run(ctx, (((x.edit,), x.raw) for x in singles))
@@ -262,6 +275,8 @@ def _run(ctx: _Ctx, cands) -> bool:
             ctx.search.stopped = "budget"
             _verify(ctx, survivors)
             return False
+        if ctx.late():
+            return False
         ctx.search.candidates += 1
         if not _dies(ctx, raw):
             survivors.append(edits)
@@ -280,12 +295,16 @@ def _dies(ctx: _Ctx, raw) -> bool:
             return True
         except Inconclusive:
             continue
+        except (ValueError, ZeroDivisionError, ArithmeticError):  # a singular candidate
+            return True  # (an inverse of a singular block): skipped, never raised (issue 52)
     return False
 
 
 def _verify(ctx: _Ctx, survivors) -> bool:
     sh = ctx.sh
     for edits in survivors:
+        if ctx.late():
+            return False
         if ctx.search.full_tests >= FULL_TESTS:
             ctx.search.stopped = "full tests"
             return False
@@ -365,6 +384,9 @@ def search_record(s: Search, budget: int) -> dict:
         words = f"none in the first {s.candidates} candidates"
         if s.stopped == "full tests":
             words += f" ({FULL_TESTS} full zero tests spent)"
+        if s.stopped == "time":
+            words = (f"search stopped after {s.limit:g} s, {s.candidates} candidates tried "
+                     f"(--repair-seconds)")
     return {"member": s.member, "candidates": s.candidates, "found": n,
             "complete": s.complete, "undecidable": s.undecidable, "budget": budget,
             "words": words}

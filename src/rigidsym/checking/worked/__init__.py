@@ -99,10 +99,11 @@ class Solution:
         checks: machine checks of the answers (independent of the solution path).
         assumptions: data not in the project's source (chapter 3 converted to text,
             without its figures; chapter 2 is not in it), and caveats.
-        status: ``"solved"``, ``"partial"`` or ``"ill-posed"`` (the data admit no
-            answer; the steps end at the one that fails).
+        status: ``"solved"``, ``"partial"``, ``"ill-posed"`` (the data admit no
+            answer, or more than one; the steps end at the one that fails) or ``"not
+            solved"`` (a case the solver does not handle: its limit, not the data's).
         extra: free-form rendered text (tables) appended after the answers.
-        reason: for an ill-posed solution, why, in one sentence.
+        reason: for an ill-posed or not solved solution, why, in one sentence.
         floats: the data given as floats (measurements); rendering then shows long
             exact numbers to 10 digits.
         data: the data solved on, by parameter name (exact sympy values; the book's
@@ -152,8 +153,21 @@ class Solution:
         self.reason = reason
         raise IllPosed(self, reason)
 
+    def not_solved(self, reason: str):
+        """End the solution here: the data may well have an answer, but this solver does
+        not handle their case (a limit of the solver, never blamed on the data).
+
+        Raises:
+            IllPosed: always (the exception that ends a solution), with ``status ==
+                "not solved"`` and ``reason`` starting "not solved for these data: ".
+        """
+        self.status = "not solved"
+        self.reason = f"not solved for these data: {reason}"
+        raise IllPosed(self, self.reason)
+
     def __repr__(self) -> str:
-        verdict = f"checked={self.checked}" if self.status != "ill-posed" else self.reason
+        verdict = (f"checked={self.checked}" if self.status not in ("ill-posed", "not solved")
+                   else self.reason)
         return f"<Solution {self.id} {self.title!r}: {self.status}, {verdict}>"
 
     def _repr_html_(self) -> str:
@@ -284,7 +298,7 @@ def parameters(ex_id: str) -> Parameters:
         "no numeric data: the exercise is stated for every body, line or motion, so "
         "there is nothing to vary")
     return Parameters(ex_id, rows, note, bool(getattr(mod, "MEASURED", False)),
-                      getattr(mod, "default_tol", None))
+                      getattr(mod, "default_tol", None), tuple(getattr(mod, "READINGS", ())))
 
 
 #: CPU seconds one exact solve may take before its data are refused (a student's exact data

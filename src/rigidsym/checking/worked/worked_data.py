@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import decimal
 import numbers
+import re
 from dataclasses import dataclass, field
 from fractions import Fraction
 
@@ -59,7 +60,8 @@ class Param:
     Attributes:
         name: a valid identifier, as the book writes it with subscripts after ``_`` and
             primes spelled out (``n_1``, ``I_A``, ``C_prime``).
-        default: the book's value (exact sympy: a number or a Matrix; a str for a choice).
+        default: the book's value (exact sympy: a number or a Matrix; a str for a choice;
+            None for an optional datum the book leaves symbolic, such as 3.10's angles).
         shape: ``()`` a number, ``(3,)`` a vector, ``(6,)``, ``(3, 3)`` a matrix; ``None``
             for a choice among ``choices``.
         meaning: one line.
@@ -97,6 +99,8 @@ class Parameters:
         measured: whether the data are measurements (floats, judged within a tolerance).
         default_tol: ``values -> (tol, how it was chosen)``, or None for 10^-3 times the
             largest datum.
+        readings: the parameters whose decimal texts (``"1.667"``) are readings, judged
+            within a tolerance derived from their digits; ``()``: all of them.
     """
 
     exercise: str
@@ -105,6 +109,8 @@ class Parameters:
     measured: bool = False
     #: ``values -> (tol, how it was chosen)``; None: 10^-3 x the largest absolute datum
     default_tol: object = None
+    #: the parameters whose decimal texts are readings (measured exercises); () all of them
+    readings: tuple = ()
 
     def __iter__(self):
         return iter(self.rows)
@@ -158,6 +164,8 @@ class Parameters:
 
 
 def _flat_text(v) -> str:
+    if v is None:
+        return "(not given)"
     if isinstance(v, sp.MatrixBase):
         if v.cols == 1:
             return "[" + ", ".join(str(x) for x in v) + "]"
@@ -290,10 +298,18 @@ def read_value(p: Param, v, measured: bool = True, notes: list | None = None
         ValueError: wrong shape, a string that is not a number, NaN/inf, complex, a
             magnitude outside 1e-15 to 1e15.
     """
+    if v is None and p.default is None:
+        return None, False           # an optional datum (3.10's angles), left out
     if p.shape is None:
         if not isinstance(v, str) or v.strip().upper() not in p.choices:
             raise ValueError(f"{p.name}: expected one of {', '.join(p.choices)}, got {v!r}")
         return v.strip().upper(), False
+    if isinstance(v, str):
+        v = _unit_read(p, v)
+    if p.shape == () and p.unit == "rad" and isinstance(v, str):
+        turns = _pi_multiple(v, p.name)
+        if turns is not None:      # pi/4, 30 deg: exact, as their sines and cosines are
+            return turns, False
     if p.shape == ():
         return _scalar(v, p.name, measured, notes)
     if isinstance(v, str):
@@ -302,6 +318,61 @@ def read_value(p: Param, v, measured: bool = True, notes: list | None = None
     read = [_scalar(x, f"{p.name}[{i}]", measured, notes) for i, x in enumerate(flat)]
     rows, cols = (p.shape[0], 1) if len(p.shape) == 1 else p.shape
     return sp.ImmutableMatrix(rows, cols, [x for x, _ in read]), any(f for _, f in read)
+
+
+def _pi_multiple(text: str, where: str):
+    """An angle's text that is a rational multiple of pi (``pi/4``, ``(30)*(pi/180)``), as
+    that exact multiple; else None (read as any number)."""
+    from .worked_numbers import _bounded, _parse
+
+    try:
+        read_text(text, where)                       # the reader's bounds and refusals
+        value = _bounded(_parse(text.strip(), where), where, repr(text))
+    except ValueError:
+        return None
+    ratio = sp.simplify(value / sp.pi)
+    return ratio * sp.pi if ratio.is_Rational else None
+
+
+def _unit_read(p: Param, text: str):
+    """The text of a value with its unit (``"0,0,100 mm"``) as entry texts in ``p``'s
+    documented unit (``[..., "(100)*(1/1000)"]``); a text with no unit as it is."""
+    from .worked_units import split_unit, with_unit
+
+    num, unit = split_unit(text)
+    if unit is None:
+        return text
+    return with_unit(split_text(p.shape, num) if p.shape else num, unit, p.unit, p.name)
+
+
+def has_unit(v) -> bool:
+    """Whether a raw value is a text that ends with a unit (``"25 mm"``)."""
+    from .worked_units import split_unit
+
+    return isinstance(v, str) and split_unit(v)[1] is not None
+
+
+#: a tolerance derived from the digits given: this many units in the last decimal place
+DECIMAL_ULPS = 3
+_DECIMAL = re.compile(r"^\s*[-+]?(\d*)\.(\d+)\s*$")
+
+
+def _decimal_ulp(v):
+    """The coarsest last decimal place among the decimal texts in a raw value (``"1.667"``
+    -> 1/1000), or None when it holds none (integers and fractions are exact)."""
+    if isinstance(v, str):
+        from .worked_units import split_unit
+
+        num, unit = split_unit(v)
+        if unit is not None:
+            return None
+        v = re.split(r"[,;\[\]]", num)
+        got = [sp.Rational(1, 10 ** len(m.group(2))) for m in map(_DECIMAL.match, v) if m]
+        return max(got) if got else None
+    if isinstance(v, list | tuple):
+        got = [u for u in (_decimal_ulp(x) for x in v) if u is not None]
+        return max(got) if got else None
+    return None
 
 
 def _has_float(v) -> bool:
@@ -346,17 +417,33 @@ def read_data(params: Parameters, data: dict, tol=None) -> Data:
         have = ", ".join(params.names) if params.names else "none (no numeric data)"
         raise TypeError(f"{params.exercise} has no parameter {unknown[0]!r}; its parameters "
                         f"are: {have}")
-    values, measures, given_floats, notes = {}, [], [], []
+    values, measures, given_floats, notes, places = {}, [], [], [], []
     for p in params:
-        if p.name in data:
+        if p.name in data and data[p.name] is None and p.default is None:
+            values[p.name] = None          # an optional datum, left out (a notebook's None)
+        elif p.name in data:
             values[p.name], measure = read_value(p, data[p.name], params.measured, notes)
-            if measure:
+            if not has_unit(data[p.name]):
+                from .worked_units import implausible
+                warning = implausible(values[p.name], p.unit, p.name)
+                if warning:
+                    notes.append(warning)
+            ulp = (_decimal_ulp(data[p.name]) if params.measured
+                   and p.name in (params.readings or params.names) else None)
+            if ulp is not None:
+                places.append(ulp)
+            if measure or ulp is not None:
                 measures.append(p.name)
             if _has_float(data[p.name]):
                 given_floats.append(p.name)
         else:
             values[p.name] = p.default
+    places.sort(reverse=True)          # the coarsest reading first
     out = Data(values, tuple(measures))
+    if places and params.measured:
+        out.notes.append(f"Decimals are readings: data given with a decimal point in a "
+                         f"measured exercise are measurements, the coarsest read to "
+                         f"{places[0]}; write fractions (5/3) for exact data.")
     if given_floats and params.measured:
         out.notes.append(f"Floats are measurements: {', '.join(given_floats)} were given as "
                          f"floats, each converted exactly to the binary fraction it stores "
@@ -381,6 +468,13 @@ def read_data(params: Parameters, data: dict, tol=None) -> Data:
     elif measures and params.measured:
         out.tol, how = (params.default_tol or _default_tol)(values)
         out.tol_default = True
+        if places:
+            digit_tol = DECIMAL_ULPS * places[0]
+            if digit_tol > out.tol or not given_floats:
+                out.tol = digit_tol
+                how = (f"{DECIMAL_ULPS} units in the last decimal place given ({places[0]}: "
+                       f"each entry is within half a unit, and an invariant of 3 entries in "
+                       f"two frames moves by at most {DECIMAL_ULPS} units)")
     if out.tol is not None:
         how = f"the default, {how}" if out.tol_default else "as given"
         out.notes.append(f"Measured data: compatibility is judged within tol = {out.tol} "

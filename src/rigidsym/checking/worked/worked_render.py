@@ -9,6 +9,7 @@ document fragment for nbconvert's LaTeX/PDF export.
 from __future__ import annotations
 
 import html
+import re
 from typing import Protocol
 
 import sympy as sp
@@ -48,6 +49,12 @@ def to_json_value(v):
     if isinstance(v, str):
         return v
     return str(sp.sympify(v))
+
+
+#: the statuses that end a solution before its answers, and how the renderers head them:
+#: ill-posed (the data admit no answer, or more than one) and not solved (a case the
+#: solver does not handle: a limit of the solver, not of the data)
+ENDED = {"ill-posed": "Ill-posed", "not solved": "Not solved for these data"}
 
 
 def solution_record(s) -> dict:
@@ -125,47 +132,129 @@ def _view(s: Solution) -> Solution:
     return v
 
 
-def _pretty(v) -> str:
-    if isinstance(v, str):
+#: the width of a line of text output (the terminal's 100 columns of the house style)
+WIDTH = 100
+#: a symbol's internal prefix (``ex35_e_1``: unique among the registry's declarations)
+_INTERNAL = re.compile(r"^(?:ex3\d*_|_+)(?=[A-Za-z])")
+
+
+def display(v):
+    """``v`` with the book's names: an exercise's internal prefix dropped from its
+    symbols and functions (``ex35_e_1`` is shown as ``e_1``, ``ex39_e_1(t)`` as
+    ``e_1(t)``); a Dummy shown by its name. Display only: the values are unchanged."""
+    if not isinstance(v, sp.Basic | sp.MatrixBase):
         return v
-    return sp.pretty(v, use_unicode=True, wrap_line=False)
+    from sympy.core.function import AppliedUndef
+
+    atoms = v.atoms(sp.Symbol, AppliedUndef)
+    subs = {}
+    for a in atoms:
+        name = a.func.__name__ if isinstance(a, AppliedUndef) else a.name
+        new = _INTERNAL.sub("", name)
+        if isinstance(a, sp.Dummy):
+            subs[a] = sp.Symbol(new, **a.assumptions0)
+        elif new != name:
+            subs[a] = (sp.Function(new)(*a.args) if isinstance(a, AppliedUndef)
+                       else sp.Symbol(new, **a.assumptions0))
+    return v.xreplace(subs) if subs else v
 
 
-def render_text(s: Solution) -> str:
-    """Terminal rendering: statement, given, numbered steps, answers, checks."""
+def _pretty(v, indent: int = 0, ascii_only: bool = False) -> str:
+    """``v`` as lines of at most :data:`WIDTH` columns after ``indent``: sympy's 2-D
+    form, or, when that is wider, a matrix entry by entry and an expression in one line,
+    wrapped at its operators."""
+    if isinstance(v, str):
+        return _wrap(v, indent)
+    v = display(v)
+    text = sp.pretty(v, use_unicode=not ascii_only, wrap_line=False)
+    if max(map(len, text.splitlines() or [""])) + indent <= WIDTH:
+        return text
+    if isinstance(v, sp.MatrixBase):
+        out = []
+        for i in range(v.rows):
+            for j in range(v.cols):
+                where = f"[{i + 1}]" if v.cols == 1 else f"[{i + 1}, {j + 1}]"
+                out.append(_wrap(f"{where} = {sp.sstr(v[i, j])}", indent, hang=4))
+        return "\n".join(out)
+    return _wrap(sp.sstr(v), indent, hang=4)
+
+
+def _wrap(text: str, indent: int, hang: int = 2) -> str:
+    """``text`` filled to :data:`WIDTH` columns after ``indent``; continuation lines
+    indented by ``hang`` more."""
+    import textwrap
+
+    lines = []
+    for par in text.splitlines() or [""]:
+        if len(par) + indent <= WIDTH:
+            lines.append(par)
+            continue
+        lines += textwrap.wrap(par, width=WIDTH - indent, subsequent_indent=" " * hang,
+                               break_on_hyphens=False) or [""]
+    return "\n".join(lines)
+
+
+def render_text(s: Solution, ascii_only: bool = False) -> str:
+    """Terminal rendering: statement, given, numbered steps, answers, checks; every line
+    at most :data:`WIDTH` columns, the symbols by their book names (:func:`display`).
+    ``ascii_only``: sympy's ASCII forms, and the text's few non-ASCII letters (Plücker)
+    spelled plainly, for a terminal without Unicode."""
     s = _view(s)
-    out = [f"Exercise {s.id[2:]}: {s.title}", f"  {s.citation}", "", s.statement, ""]
+    out = [_wrap(f"Exercise {s.id[2:]}: {s.title}", 0), f"  {s.citation}", "",
+           _wrap(s.statement, 0), ""]
+
+    def block(v, indent: int) -> None:
+        out.extend(" " * indent + ln for ln in _pretty(v, indent, ascii_only).splitlines())
+
+    def line(text: str, indent: int, hang: int = 2) -> None:
+        out.extend(" " * indent + ln for ln in _wrap(text, indent, hang).splitlines())
+
     if s.assumptions:
         out.append("Assumptions:")
-        out += [f"  - {a}" for a in s.assumptions]
+        for a in s.assumptions:
+            line(f"- {a}", 2)
         out.append("")
     if s.given:
         out.append("Given:")
         for k, v in s.given.items():
-            out.append(f"  {k} =")
-            out += ["    " + ln for ln in _pretty(v).splitlines()]
+            line(f"{k} =", 2)
+            block(v, 4)
         out.append("")
     out.append("Solution:")
     for i, st in enumerate(s.steps, 1):
-        out.append(f"  Step {i}. {st.name}: {st.why}")
-        out += ["      " + ln for ln in _pretty(st.expr).splitlines()]
+        line(f"Step {i}. {st.name}: {st.why}", 2, 4)
+        block(st.expr, 6)
     out.append("")
-    if s.status == "ill-posed":
-        out += [f"Ill-posed: {s.reason}", "", "status: ill-posed; checked: false"]
-        return "\n".join(out)
+    if s.status in ENDED:
+        line(f"{ENDED[s.status]}: {s.reason}", 0)
+        out += ["", f"status: {s.status}; checked: false"]
+        return _plain("\n".join(out)) if ascii_only else "\n".join(out)
     out.append("Answers:")
     for k, v in s.answers.items():
         f = _float_of(v)
-        out.append(f"  {k} =" + (f"   (~ {f})" if f else ""))
-        out += ["    " + ln for ln in _pretty(v).splitlines()]
+        line(f"{k} =" + (f"   (~ {f})" if f else ""), 2, 4)
+        block(v, 4)
     if s.extra:
-        out += ["", s.extra]
+        out.append("")
+        line(s.extra, 0)
     out.append("")
     out.append("Machine checks:")
     for c in s.checks:
-        out.append(f"  [{'ok' if c.passed else 'FAIL'}] {c.name}: {c.detail}")
+        line(f"[{'ok' if c.passed else 'FAIL'}] {c.name}: {c.detail}", 2, 4)
     out.append(f"\nstatus: {s.status}; checked: {str(s.checked).lower()}")
-    return "\n".join(out)
+    return _plain("\n".join(out)) if ascii_only else "\n".join(out)
+
+
+#: the non-ASCII letters of the exercises' own text, spelled plainly
+_PLAIN = str.maketrans({"ü": "u", "é": "e", "°": " deg", "·": ".", "×": "x", "≤": "<=",
+                        "≥": ">=", "−": "-", "–": "-", "—": "--", "’": "'", "…": "...",
+                        "π": "pi", "ω": "omega", "θ": "theta", "φ": "phi", "ψ": "psi",
+                        "η": "eta", "ε": "epsilon", "λ": "lambda", "ρ": "rho", "³": "^3",
+                        "²": "^2", "₂": "_2", "₁": "_1"})
+
+
+def _plain(text: str) -> str:
+    return text.translate(_PLAIN)
 
 
 def _latex(v) -> str:
@@ -191,8 +280,8 @@ def render_markdown(s: Solution, *, level: int = 2, statement: bool = True,
     if statement:
         out += [f"> {s.statement}", ""]
     out += [f"**Status:** {s.status}; **checked:** {str(s.checked).lower()}", ""]
-    if s.status == "ill-posed":
-        out[-2:] = [f"**Status:** ill-posed: {s.reason}", ""]
+    if s.status in ENDED:
+        out[-2:] = [f"**Status:** {s.status}: {s.reason}", ""]
     if s.assumptions:
         out.append("**Assumptions**")
         out += [f"- {a}" for a in s.assumptions] + [""]
@@ -203,8 +292,8 @@ def render_markdown(s: Solution, *, level: int = 2, statement: bool = True,
     out.append("")
     for i, st in enumerate(s.steps, 1):
         out += [f"{i}. *{st.name}*: {st.why}", "", f"   {_latex(st.expr)}", ""]
-    if s.status == "ill-posed":
-        out += [f"**Ill-posed:** {s.reason}", ""]
+    if s.status in ENDED:
+        out += [f"**{ENDED[s.status]}:** {s.reason}", ""]
         return "\n".join(out)
     out.append("**Answers**")
     out.append("")
@@ -299,8 +388,8 @@ def render_latex(s: Solution) -> str:
     out += [f"\\item \\textit{{{_tex(st.name)}}}: {_tex(st.why)} {_tex_value(st.expr)}"
             for st in s.steps]
     out += ["\\end{enumerate}"]
-    if s.status == "ill-posed":
-        return "\n".join(out + [f"\\paragraph{{Ill-posed}} {_tex(s.reason)}"])
+    if s.status in ENDED:
+        return "\n".join(out + [f"\\paragraph{{{ENDED[s.status]}}} {_tex(s.reason)}"])
     out += ["\\paragraph{Answers}", "\\begin{itemize}"]
     out += [f"\\item \\texttt{{{_tex(k)}}} = {_tex_value(v)}" for k, v in s.answers.items()]
     out += ["\\end{itemize}", "\\paragraph{Machine checks}", "\\begin{itemize}"]

@@ -1,0 +1,120 @@
+"""Scalar speed of the C target's functions against hand-written C (issue 53).
+
+    python benchmarks/c_scalar.py [--n 2000] [--results]
+
+The six kernels of examples/c (three book kernels, three of the example's own module), each
+as the generated double and float function (examples/c/rigidsym_c, built by gcc -O2 -std=c99)
+and as hand-written C of the same formula (benchmarks/c_scalar/hand.c), called one sample at
+a time by benchmarks/c_scalar/bench.c on inputs that move each call. Two measures: the
+instructions per call by ``valgrind --tool=callgrind`` (the function inclusive of its sin/cos
+calls; independent of the machine's load), and the CPU time per call (the best of 7 runs of
+--n calls; noisy on a shared machine). Built twice: the default (every input's range test,
+the status of docs/c-api.md) and -DRIGIDSYM_C_TRUSTED_INPUTS (no input test: the outputs'
+finiteness test only). ``--results`` writes the table into benchmarks/RESULTS.md (between
+``<!-- c-scalar -->`` markers). Needs gcc and valgrind.
+"""
+
+from __future__ import annotations
+
+import argparse
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+HERE = ROOT / "benchmarks" / "c_scalar"
+KERNELS = ROOT / "examples" / "c" / "rigidsym_c"
+#: (kernel, the hand-written function's name)
+CASES = [("rotation_from_natural_invariants", "hand_rotation"),
+         ("twist_transfer", "hand_twist"), ("newton_euler_wrench", "hand_wrench"),
+         ("quaternion_rotation", "hand_quat"),
+         ("planar_arm_tip_with_jacobians", "hand_arm"), ("body_energy", "hand_energy")]
+
+
+def build(out: Path, extra: list[str]) -> Path:
+    exe = out / ("bench" + "".join(e.replace("-", "_") for e in extra))
+    subprocess.run(["gcc", "-std=c99", "-O2", *extra, "-I", str(KERNELS), str(HERE / "bench.c"),
+                    str(HERE / "hand.c"), *map(str, sorted(KERNELS.glob("*.c"))), "-o",
+                    str(exe), "-lm"], check=True)
+    return exe
+
+
+def instructions(exe: Path, kernel: str, which: str, dtype: str, fn: str, n: int,
+                 tmp: Path) -> float:
+    """Instructions per call of ``fn`` (inclusive of its callees) by callgrind."""
+    out = tmp / "cg.out"
+    subprocess.run(["valgrind", "--tool=callgrind", f"--callgrind-out-file={out}", str(exe),
+                    kernel, which, dtype, str(n)], check=True, capture_output=True)
+    text = subprocess.run(["callgrind_annotate", "--inclusive=yes", str(out)], check=True,
+                          capture_output=True, text=True).stdout
+    m = re.search(r"^\s*([\d,]+) \([^)]*\)\s+\S*:" + re.escape(fn) + r" ", text, re.M)
+    if m is None:
+        raise RuntimeError(f"{fn} not in the callgrind profile")
+    return int(m.group(1).replace(",", "")) / (7 * n + 1)
+
+
+def seconds(exe: Path, kernel: str, which: str, dtype: str, n: int) -> float:
+    res = subprocess.run([str(exe), kernel, which, dtype, str(n)], check=True,
+                         capture_output=True, text=True)
+    return float(res.stdout.split()[0])
+
+
+def main(argv=None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--n", type=int, default=2000, help="calls per run (default 2000)")
+    ap.add_argument("--results", action="store_true", help="write benchmarks/RESULTS.md")
+    args = ap.parse_args(argv)
+    if shutil.which("gcc") is None or shutil.which("valgrind") is None:
+        print("needs gcc and valgrind", file=sys.stderr)
+        return 2
+    rows = []
+    with tempfile.TemporaryDirectory() as t:
+        tmp = Path(t)
+        exes = {"checked": build(tmp, []), "trusted": build(tmp, ["-DRIGIDSYM_C_TRUSTED_INPUTS"])}
+        for kernel, hand in CASES:
+            for dtype, sfx in (("f64", ""), ("f32", "_f32")):
+                cell = {"kernel": kernel, "dtype": dtype}
+                for mode, exe in exes.items():
+                    cell[mode] = instructions(exe, kernel, "gen", dtype,
+                                              f"rigidsym_c_{kernel}{sfx}", args.n, tmp)
+                    cell[mode + "_ns"] = seconds(exe, kernel, "gen", dtype, 20 * args.n)
+                cell["hand"] = instructions(exes["checked"], kernel, "hand", dtype, hand + sfx,
+                                            args.n, tmp)
+                cell["hand_ns"] = seconds(exes["checked"], kernel, "hand", dtype, 20 * args.n)
+                rows.append(cell)
+                print(f"{kernel:34s} {dtype}  generated {cell['checked']:7.1f} instr "
+                      f"({cell['checked'] / cell['hand']:.2f}x), trusted {cell['trusted']:7.1f}"
+                      f" ({cell['trusted'] / cell['hand']:.2f}x), hand {cell['hand']:7.1f}; "
+                      f"ns {cell['checked_ns']:.1f} / {cell['trusted_ns']:.1f} / "
+                      f"{cell['hand_ns']:.1f}", flush=True)
+    if args.results:
+        sys.path.insert(0, str(ROOT / "benchmarks"))
+        from _results import write_section
+
+        lines = ["<!-- c-scalar -->", "## C target: scalar functions against hand-written C "
+                 "(issue 53)", "",
+                 "`python benchmarks/c_scalar.py --results`: instructions per call by "
+                 "callgrind (inclusive of sin/cos; load-independent) and CPU ns per call "
+                 "(best of 7, gcc 12 -O2, this shared 2-core machine). *checked*: the "
+                 "default status (every input component's range test); *trusted*: "
+                 "`-DRIGIDSYM_C_TRUSTED_INPUTS` (the outputs' finiteness test only).", "",
+                 "| kernel | type | checked instr | trusted instr | hand instr | checked / "
+                 "hand | trusted / hand | checked ns | trusted ns | hand ns |",
+                 "|---|---|---|---|---|---|---|---|---|---|"]
+        for c in rows:
+            lines.append(f"| {c['kernel']} | {c['dtype']} | {c['checked']:.0f} | "
+                         f"{c['trusted']:.0f} | {c['hand']:.0f} | "
+                         f"{c['checked'] / c['hand']:.2f} | {c['trusted'] / c['hand']:.2f} | "
+                         f"{c['checked_ns']:.1f} | {c['trusted_ns']:.1f} | "
+                         f"{c['hand_ns']:.1f} |")
+        lines.append("<!-- /c-scalar -->")
+        write_section(ROOT / "benchmarks" / "RESULTS.md", "\n".join(lines),
+                      "<!-- c-scalar -->", "<!-- /c-scalar -->")
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())

@@ -1,0 +1,251 @@
+"""Variants of the exercises that draw no random data of their own (issue 51 item 3).
+
+Exercise 3.6 gets numeric variants (the gripper point P drawn at random). The proofs
+(3.3, 3.8, 3.9, 3.13, 3.15-3.18, 3.20, 3.21) become "true or false, and why": three
+statements drawn from the exercise's identity, equivalent forms of it, and one-edit slips
+of it (a sign, a factor or exponent, the order of a product or a transpose), as the repair
+search edits a printed equation. Every statement is decided here by the sound zero test
+(:func:`rigidsym.checking.worked.identity_check`, and a refutation by an exact
+counterexample, :func:`~rigidsym.checking.worked.nonidentity_check`), never assumed: a
+statement neither proved nor refuted is never drawn.
+
+The answers: ``holds``, one truth per statement (1 true, 0 false; "true"/"false" typed),
+and ``why``, one reason per statement: 1 it holds (the identity or an equivalent form),
+2 it fails by a sign, 3 by a factor, term or exponent, 4 by the order of a product or a
+transpose.
+"""
+
+from __future__ import annotations
+
+from functools import cache
+
+import sympy as sp
+
+from rigidsym.checking.worked import (
+    Solution,
+    exercise_module,
+    identity_check,
+    nonidentity_check,
+)
+from rigidsym.declare import block, cpm, scalar, symmetric_matrix, vector
+
+__all__ = ["drawn", "draw", "statements", "decided", "WHY"]
+
+#: the reasons a student picks from, by number
+WHY = {1: "it holds (the identity, or an equivalent form of it)",
+       2: "it fails: a sign is changed",
+       3: "it fails: a factor, a term or an exponent is changed",
+       4: "it fails: the order of a product, or a transpose, is changed"}
+_PER_VARIANT = 3
+
+
+def _dot(u, v):
+    return (u.T * v)[0]
+
+
+def _s33():
+    e, p, x, lam = vector("e"), vector("p"), vector("x"), scalar("lambda")
+    m = (p + lam * e).cross(e)
+    return [("(p + lambda e) x e = p x e", m - p.cross(e), 1),
+            ("(p + lambda e) x e = -(p x e)", m + p.cross(e), 2),
+            ("(p + lambda e) x e = (1 + lambda) p x e", m - (1 + lam) * p.cross(e), 3),
+            ("(p + lambda e) x e = e x p", m - e.cross(p), 4),
+            ("(x - p) x e = x x e + e x p", (x - p).cross(e) - x.cross(e) - e.cross(p), 1)]
+
+
+def _s38():
+    w, p = vector("omega"), vector("p")
+    W, n = cpm(w), _dot(w, w)
+    return [("CPM(omega)^2 = omega omega^T - ||omega||^2 1", W**2 - (w * w.T - n * sp.eye(3)), 1),
+            ("CPM(omega)^2 = omega omega^T + ||omega||^2 1", W**2 - (w * w.T + n * sp.eye(3)), 2),
+            ("CPM(omega)^3 = -||omega||^2 CPM(omega)", W**3 + n * W, 1),
+            ("CPM(omega)^3 = -||omega||^4 CPM(omega)", W**3 + n**2 * W, 3),
+            ("CPM(omega)^5 p = -||omega||^4 omega x p", W**5 * p + n**2 * w.cross(p), 2),
+            ("CPM(omega)^4 = ||omega||^2 (||omega||^2 1 - omega omega^T)",
+             W**4 - n * (n * sp.eye(3) - w * w.T), 1)]
+
+
+def _s39():
+    a, b = vector("a"), vector("b")
+    A, B = cpm(a), cpm(b)
+    return [("CPM(a) CPM(b) - CPM(b) CPM(a) = CPM(a x b)", A * B - B * A - cpm(a.cross(b)), 1),
+            ("CPM(a) CPM(b) - CPM(b) CPM(a) = CPM(b x a)", A * B - B * A - cpm(b.cross(a)), 4),
+            ("CPM(a) CPM(b) = CPM(b) CPM(a) (two small rotations commute exactly)",
+             A * B - B * A, 4),
+            ("CPM(a) b = -CPM(b) a", A * b + B * a, 1),
+            ("CPM(a) CPM(b) = b a^T - (a . b) 1", A * B - (b * a.T - _dot(a, b) * sp.eye(3)), 1),
+            ("CPM(a) CPM(b) = a b^T - (a . b) 1", A * B - (a * b.T - _dot(a, b) * sp.eye(3)), 4)]
+
+
+def _s313():
+    p1, p2, m = vector("p_1"), vector("p_2"), scalar("m")
+    P = sp.Matrix.hstack(p1, p2)
+    L = m * ((P * P.T).trace() * sp.eye(3) - P * P.T)
+    S = cpm(p1)**2 + cpm(p2)**2
+    return [("m[tr(P P^T) 1 - P P^T] = -m (CPM(p_1)^2 + CPM(p_2)^2), P = [p_1 p_2]",
+             L + m * S, 1),
+            ("m[tr(P P^T) 1 - P P^T] = m (CPM(p_1)^2 + CPM(p_2)^2), P = [p_1 p_2]", L - m * S, 2),
+            ("m[tr(P P^T) 1 - P P^T] = -2 m (CPM(p_1)^2 + CPM(p_2)^2), P = [p_1 p_2]",
+             L + 2 * m * S, 3),
+            ("-CPM(p_1)^2 = ||p_1||^2 1 - p_1 p_1^T",
+             -cpm(p1)**2 - (_dot(p1, p1) * sp.eye(3) - p1 * p1.T), 1),
+            ("-CPM(p_1)^2 = ||p_1||^2 1 + p_1 p_1^T",
+             -cpm(p1)**2 - (_dot(p1, p1) * sp.eye(3) + p1 * p1.T), 2)]
+
+
+def _steiner():
+    d, m, I_C = vector("d"), scalar("m"), symmetric_matrix("I_C")
+    return d, m, I_C, I_C - m * cpm(d)**2
+
+
+def _s315():
+    d, m, I_C, I_P = _steiner()
+    n = _dot(d, d)
+    return [("I_P = I_C - m CPM(d)^2 equals I_C + m (||d||^2 1 - d d^T)",
+             I_P - (I_C + m * (n * sp.eye(3) - d * d.T)), 1),
+            ("I_P = I_C - m CPM(d)^2 equals I_C - m (||d||^2 1 - d d^T)",
+             I_P - (I_C - m * (n * sp.eye(3) - d * d.T)), 2),
+            ("I_P = I_C - m CPM(d)^2 equals I_C + m d d^T", I_P - (I_C + m * d * d.T), 3),
+            ("(I_C - m CPM(d)^2) d = I_C d", I_P * d - I_C * d, 1),
+            ("(I_C - m CPM(d)^2) d = I_C d + m ||d||^2 d", I_P * d - I_C * d - m * n * d, 3)]
+
+
+def _s316():
+    d, m, I_C, I_A = _steiner()
+    x = vector("x")
+    q = (x.T * (I_A - I_C) * x)[0]
+    dx = d.cross(x)
+    return [("x^T (I_A - I_C) x = m ||d x x||^2", q - m * _dot(dx, dx), 1),
+            ("x^T (I_A - I_C) x = -m ||d x x||^2", q + m * _dot(dx, dx), 2),
+            ("x^T (I_A - I_C) x = m (d . x)^2", q - m * _dot(d, x)**2, 3),
+            ("x^T (I_A - I_C) x = m (||d||^2 ||x||^2 - (d . x)^2)",
+             q - m * (_dot(d, d) * _dot(x, x) - _dot(d, x)**2), 1),
+            ("x^T (I_A - I_C) x = m ||d||^2 ||x||^2", q - m * _dot(d, d) * _dot(x, x), 3)]
+
+
+def _omega_inertia():
+    w, I = vector("omega"), symmetric_matrix("I")
+    return w, cpm(w), I
+
+
+def _s317():
+    w, O, I = _omega_inertia()
+    C = O * I - I * O
+    return [("(Omega I - I Omega)^T = Omega I - I Omega", C.T - C, 1),
+            ("(Omega I + I Omega)^T = Omega I + I Omega", (O * I + I * O).T - (O * I + I * O), 2),
+            ("(Omega I)^T = -I Omega", (O * I).T + I * O, 1),
+            ("(Omega I)^T = -Omega I", (O * I).T + O * I, 4),
+            ("Omega omega = 0", O * w, 1)]
+
+
+def _s318():
+    w, O, I = _omega_inertia()
+    S = O * I + I * O
+    D = (O * I - I * O) - 2 * O * I
+    return [("(Omega I + I Omega)^T = -(Omega I + I Omega)", S.T + S, 1),
+            ("(Omega I - I Omega)^T = -(Omega I - I Omega)",
+             (O * I - I * O).T + (O * I - I * O), 2),
+            ("(Omega I - I Omega) - 2 Omega I = -(Omega I + I Omega)", D + S, 1),
+            ("(Omega I - I Omega) - 2 Omega I = -(Omega I + 2 I Omega)", D + O * I + 2 * I * O, 3),
+            ("(Omega I - I Omega) - 2 Omega I = Omega I - I Omega", D - (O * I - I * O), 2)]
+
+
+def _s320():
+    b, m, I = vector("b"), scalar("m"), symmetric_matrix("I_C")
+    B, one, O = cpm(b), sp.eye(3), sp.zeros(3)
+    N = block([[one, O], [-B, one]])
+    M = block([[I, O], [O, m * one]])
+
+    def right(k):
+        return block([[I - k * m * B**2, m * B], [-m * B, m * one]])
+    NMN = N.T * M * N
+    return [("N^T M_C N = [[I_C - m B^2, m B], [-m B, m 1]], N = [[1, O], [-B, 1]], "
+             "B = CPM(b)", NMN - right(1), 1),
+            ("N^T M_C N = [[I_C + m B^2, m B], [-m B, m 1]], N = [[1, O], [-B, 1]], "
+             "B = CPM(b)", NMN - right(-1), 2),
+            ("N^T M_C N = [[I_C - 2 m B^2, m B], [-m B, m 1]], N = [[1, O], [-B, 1]], "
+             "B = CPM(b)", NMN - right(2), 3),
+            ("N M_C N^T = [[I_C - m B^2, m B], [-m B, m 1]], N = [[1, O], [-B, 1]], "
+             "B = CPM(b)", N * M * N.T - right(1), 4),
+            ("(N^T M_C N)^T = N^T M_C N (it is symmetric)", NMN.T - NMN, 1)]
+
+
+def _s321():
+    a, b = vector("omega"), vector("omega_dot")
+    A, B = cpm(a), cpm(b)
+    return [("tr(CPM(omega_dot) (CPM(omega)^2)^T) = 0", sp.Matrix([(B * (A**2).T).trace()]), 1),
+            ("tr(CPM(omega_dot)^2 (CPM(omega)^2)^T) = 0",
+             sp.Matrix([(B**2 * (A**2).T).trace()]), 3),
+            ("tr(CPM(omega) CPM(omega_dot)) = -2 omega . omega_dot",
+             sp.Matrix([(A * B).trace() + 2 * _dot(a, b)]), 1),
+            ("tr(CPM(omega) CPM(omega_dot)) = -omega . omega_dot",
+             sp.Matrix([(A * B).trace() + _dot(a, b)]), 3),
+            ("tr(CPM(omega) CPM(omega_dot)) = 2 omega . omega_dot",
+             sp.Matrix([(A * B).trace() - 2 * _dot(a, b)]), 2),
+            ("(CPM(omega)^2)^T = CPM(omega)^2", (A**2).T - A**2, 1)]
+
+
+_STATEMENTS = {"ex3.3": _s33, "ex3.8": _s38, "ex3.9": _s39, "ex3.13": _s313,
+               "ex3.15": _s315, "ex3.16": _s316, "ex3.17": _s317, "ex3.18": _s318,
+               "ex3.20": _s320, "ex3.21": _s321}
+_NUMERIC = ("ex3.6",)
+
+
+def drawn() -> tuple[str, ...]:
+    """The exercises this module draws variants of."""
+    return _NUMERIC + tuple(_STATEMENTS)
+
+
+@cache
+def statements(ex_id: str) -> tuple:
+    """``((text, zero expression, reason number), ...)`` of a proof exercise."""
+    return tuple(_STATEMENTS[ex_id]())
+
+
+@cache
+def decided(ex_id: str, k: int):
+    """Statement ``k`` of ``ex_id`` decided: ``(holds, check)``; ``holds`` is None when
+    the zero test neither proved nor refuted it."""
+    text, expr, _ = statements(ex_id)[k]
+    proved = identity_check(f"({text}) decided: holds for every value", [expr])
+    if proved.passed:
+        return True, proved
+    refuted = nonidentity_check(f"({text}) decided: fails (an exact counterexample)", [expr])
+    return (False, refuted) if refuted.passed else (None, proved)
+
+
+def draw(ex_id: str, rng) -> tuple[str, dict] | Solution:
+    """A variant of ``ex_id``: ``("data", {...})`` for the exercise's solver (3.6), or the
+    true-or-false problem itself, a solved and checked :class:`Solution`.
+
+    Raises:
+        KeyError: ``ex_id`` has no variant here (see :func:`drawn`).
+    """
+    if ex_id == "ex3.6":
+        return "data", {"p": [sp.Rational(rng.randint(-8, 8), 4) for _ in range(3)]}
+    pool = [k for k in range(len(statements(ex_id))) if decided(ex_id, k)[0] is not None]
+    picks = rng.sample(pool, _PER_VARIANT)
+    mod = exercise_module(ex_id)
+    lines = [f"({'i' * (n + 1) if n < 3 else n + 1}) {statements(ex_id)[k][0]}"
+             for n, k in enumerate(picks)]
+    s = Solution(ex_id, mod.TITLE,
+                 "True or false, and why? For every value of the symbols: "
+                 + "; ".join(lines) + ". Reasons: " + "; ".join(f"{n} {w}" for n, w in
+                                                                 WHY.items()) + ".",
+                 mod.CITATION + " (a true-or-false variant)")
+    truths = [decided(ex_id, k)[0] for k in picks]
+    s.steps = [_step(ex_id, k) for k in picks]
+    s.answers = {"holds": sp.Matrix([int(t) for t in truths]),
+                 "why": sp.Matrix([1 if t else statements(ex_id)[k][2]
+                                   for t, k in zip(truths, picks, strict=True)])}
+    s.checks = [decided(ex_id, k)[1] for k in picks]
+    s.data = {"statements": sp.Matrix(picks)}
+    return s
+
+
+def _step(ex_id: str, k: int):
+    from rigidsym.checking.worked import Step
+
+    text, expr, why = statements(ex_id)[k]
+    holds = decided(ex_id, k)[0]
+    return Step(text, expr, "holds: " + WHY[1] if holds else f"fails: {WHY[why]}")

@@ -1,0 +1,121 @@
+"""Units on a student's data: ``'0,0,100 mm'``, ``'30 deg'``, ``'1,0,1 N m'`` (pint).
+
+A value's text may end with a unit, after a space; it applies to every entry, and the
+entries are converted to the parameter's documented (SI) unit by an exact factor: pint
+gives the conversion as a float, and the factor kept is the rational, or rational multiple
+of pi, it rounds (``mm`` -> 1/1000, ``deg`` -> pi/180, ``in`` -> 127/5000), checked to 15
+digits. The entries stay text, ``(100)*(1/1000)``, so the one number reader
+(:mod:`.worked_numbers`) reads them exactly. A bare number keeps the documented unit; one
+implausible for it (a length above :data:`PLAUSIBLE` m: a 150 m prism) is read as given
+and warned of, naming the unit assumed.
+"""
+
+from __future__ import annotations
+
+import functools
+import re
+
+import sympy as sp
+
+__all__ = ["split_unit", "factor", "with_unit", "implausible", "PLAUSIBLE"]
+
+#: the largest magnitude plausible for a bare number in a parameter's unit (the chapter's
+#: bodies and sensors are hand-sized to a few metres); above it, a warning names the unit
+PLAUSIBLE = {"m": sp.Integer(10)}
+
+# a unit: after a space, starts with a letter (or µ, °), then letters, digits, spaces,
+# *, /, ^, ** and . (``N m``, ``kg*m^2``, ``m/s``); the number before it ends with a digit,
+# a bracket or a degree sign
+_UNIT = re.compile(r"^(?P<num>.*?[\d)\]°.])\s+(?P<unit>[A-Za-zµ°][A-Za-z0-9µ°_*/^.· ]*)$",
+                   re.S)
+
+
+@functools.cache
+def _registry():
+    import pint
+
+    return pint.UnitRegistry()
+
+
+def split_unit(text: str) -> tuple[str, str | None]:
+    """``"0,0,100 mm"`` -> ``("0,0,100", "mm")``; a text with no unit -> ``(text, None)``.
+    Only a tail that pint reads as a unit counts (``"2 pi"`` has none: ``pi`` is a number
+    to the reader, which refuses the space)."""
+    m = _UNIT.match(text.strip())
+    if not m:
+        return text, None
+    unit = m.group("unit").strip()
+    if unit in ("pi", "E") or not _is_unit(unit):
+        return text, None
+    return m.group("num").strip(), unit
+
+
+def _pint_text(unit: str) -> str:
+    """The project's unit spelling as pint reads it: ``N m`` -> ``N*m``, ``m^2`` kept."""
+    return re.sub(r"\s+", "*", unit.strip().replace("·", "*"))
+
+
+def _is_unit(unit: str) -> bool:
+    try:
+        _registry().parse_units(_pint_text(unit))
+    except Exception:  # noqa: BLE001 - pint raises several kinds for text it cannot read
+        return False
+    return True
+
+
+def factor(unit: str, documented: str, where: str) -> sp.Expr:
+    """The exact factor from ``unit`` to the parameter's ``documented`` unit.
+
+    Raises:
+        ValueError: the units are not compatible, or the parameter has no single unit
+            (the message names ``where`` and both units).
+    """
+    if ";" in documented:
+        raise ValueError(f"{where}: its entries have different units ({documented}); give "
+                         f"bare numbers in those units, not {unit!r}")
+    ureg = _registry()
+    target = _pint_text(documented) if documented else "dimensionless"
+    if target in ("rad", "dimensionless") and unit in ("rad", "radian", "radians"):
+        return sp.Integer(1)
+    try:
+        f = float(ureg.Quantity(1, _pint_text(unit)).to(target).magnitude)
+    except Exception:  # noqa: BLE001 - pint's DimensionalityError and kin
+        shown = documented or "a pure number"
+        dim = str(ureg.parse_units(_pint_text(unit)).dimensionality)
+        raise ValueError(f"{where}: {unit!r} is not a unit of {shown} ({unit} is "
+                         f"{dim}); give {where} in {shown}, or a unit of it") from None
+    from fractions import Fraction
+
+    for base, den in ((sp.pi, 10**4), (sp.Integer(1), 10**9)):   # deg = pi/180 first
+        q = Fraction(f / float(base)).limit_denominator(den)
+        guess = sp.Rational(q.numerator, q.denominator) * base
+        if abs(float(guess) - f) <= 4e-16 * abs(f):
+            return guess
+    raise ValueError(f"{where}: the factor from {unit!r} to {documented} ({f!r}) is not an "
+                     f"exact rational; give the value in {documented}")
+
+
+def with_unit(entries, unit: str, documented: str, where: str):
+    """Each entry text times the exact factor (nested lists kept): ``"100"`` ->
+    ``"(100)*(1/1000)"``."""
+    f = factor(unit, documented, where)
+    if f == 1:
+        return entries
+    if isinstance(entries, list):
+        return [with_unit(e, unit, documented, where) for e in entries]
+    return f"({entries})*({f})"
+
+
+def implausible(value, documented: str, name: str) -> str:
+    """A warning (one sentence) when a bare ``value`` is implausible in its documented
+    unit, else ``""``."""
+    top = PLAUSIBLE.get(documented)
+    if top is None:
+        return ""
+    entries = list(value) if isinstance(value, sp.MatrixBase) else [value]
+    big = max((abs(float(x)) for x in entries if isinstance(x, sp.Expr)), default=0.0)
+    if big <= top:
+        return ""
+    return (f"Warning: {name} was read in {documented}, its documented unit: {big:g} "
+            f"{documented} is implausible for the chapter's bodies; if you meant another unit, "
+            f"write it after the value (e.g. '{name}=... mm').")

@@ -1,0 +1,73 @@
+"""Printers of the C-only target: the kernels' programs as C99 on ``double`` (the package's
+:class:`~rigidsym.codegen.printers.KernelCPrinter`) or on ``float`` only.
+
+:class:`FloatOnlyPrinter` prints a program in float arithmetic throughout: float literals
+(``2.0f``, rationals rounded once to float), the C99 float functions (``sinf``, ``cosf``,
+``sqrtf``, ``atan2f``, ``fmaf`` in the compensated products' helpers), so that a float
+function of the target has no double operation (checked on a Cortex-M4F object by the
+tests: no ``__aeabi_d*`` helper is referenced).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import sympy as sp
+from sympy.codegen.ast import float32, float80, real
+
+from rigidsym.codegen.printers import KernelCPrinter
+
+__all__ = ["DoublePrinter", "FloatOnlyPrinter", "WidePrinter"]
+
+
+class DoublePrinter(KernelCPrinter):
+    """The package's double printer, with the target's compensated-product helpers."""
+
+    _diffprod = "rigidsym_c_diffprod"
+    _sumprod = "rigidsym_c_sumprod{n}"
+
+
+class FloatOnlyPrinter(KernelCPrinter):
+    """C99 printer of float-only programs (every literal, function and helper in float)."""
+
+    _one = "1.0f"
+    _diffprod = "rigidsym_c_diffprodf"
+    _sumprod = "rigidsym_c_sumprod{n}f"
+
+    def __init__(self, settings=None):
+        super().__init__({"type_aliases": {real: float32}, **(settings or {})})
+
+    def _sqrt(self, arg: str) -> str:
+        return f"sqrtf({arg})"
+
+    @staticmethod
+    def _literal(value: float) -> str:
+        return f"{float(np.float32(value))!r}f"
+
+    def _print_Integer(self, expr):
+        return f"{int(expr)}.0f"
+
+    def _print_Rational(self, expr):
+        return self._literal(float(expr))
+
+    def _print_Float(self, expr):
+        return self._literal(float(expr))
+
+    def _print_NumberSymbol(self, expr):
+        return self._literal(float(expr))
+
+    def _print_Pi(self, expr):
+        return self._literal(float(sp.pi))
+
+
+class WidePrinter(KernelCPrinter):
+    """C99 printer of the long double rescue of the double functions (``sinl``, ``sqrtl``,
+    ``L`` literals; doubles' exact literals stay as they are: they widen exactly)."""
+
+    _diffprod = "rigidsym_c_diffprodl"
+    _sumprod = "rigidsym_c_sumprod{n}l"
+
+    def __init__(self, settings=None):
+        super().__init__({"type_aliases": {real: float80}, **(settings or {})})
+
+    def _sqrt(self, arg: str) -> str:
+        return f"sqrtl({arg})"

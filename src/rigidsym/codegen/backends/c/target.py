@@ -1,0 +1,323 @@
+"""The C-only target: ``rigidsym generate --target c --out DIR``.
+
+Writes what a C or C++ project needs and nothing of Python: per kernel a header and a
+source with its scalar functions (double and float-only, each with its Jacobian twin when
+the kernel has one), the shared declarations (``rigidsym_c.h``: status codes, ``extern
+"C"``), the sources' private header (the compiler-flag guards), a ``CMakeLists.txt`` (a
+library target usable by ``add_subdirectory`` and, installed, ``find_package``), a
+pkg-config file and a README. Every file carries a provenance line (generator version,
+declaration hash) and the licence line. docs/c-api.md is the user's guide.
+
+The programs are the ones the package's kernels run (:func:`rigidsym.codegen.generator.
+compile_kernel`: the same rewrites and CSE), printed by :mod:`.printer` into the templates of
+this folder; nothing here changes what ``rigidsym generate`` writes into ``generated/``.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import keyword
+import math
+import re
+import textwrap
+from pathlib import Path
+
+import jinja2
+import sympy as sp
+
+import rigidsym
+from rigidsym.codegen.backends.c.printer import DoublePrinter, FloatOnlyPrinter, WidePrinter
+from rigidsym.codegen.cprogram import _balanced, _finite_check, _program_lines
+from rigidsym.codegen.spec import Kernel
+
+__all__ = ["generate_c", "TEMPLATES", "LIBRARY", "PREFIX", "STATUS"]
+
+TEMPLATES = Path(__file__).parent / "templates"
+#: the library's name (CMake target, pkg-config module, file prefix)
+LIBRARY = "rigidsym_c"
+#: the prefix of every exported function
+PREFIX = "rigidsym_c_"
+#: the status bits of every scalar function: (macro suffix, value, meaning)
+STATUS = (
+    ("OK", 0, "finite inputs of ordinary magnitude, not on the singular set: the outputs "
+              "are the kernel's values within its stated bound"),
+    ("SINGULAR", 1, "the inputs lie on the kernel's singular set (a divisor is exactly "
+                    "zero, or a branch condition has no value): every output is NaN"),
+    ("NONFINITE_INPUT", 2, "an input component is NaN or infinite: the outputs that depend "
+                           "on it are NaN or infinite (IEEE arithmetic), the others as for "
+                           "finite input"),
+    ("NONFINITE_RESULT", 4, "an output, or a divisor or radicand on the way, is not finite "
+                            "(overflow of finite inputs, or a non-finite input)"),
+    ("EXTREME_INPUT", 8, "a nonzero input component has magnitude outside [2^-100, 2^101) "
+                         "(double; float: [2^-30, 2^31)) and there is no wider type to "
+                         "re-run the sample in (the double functions re-run it in long "
+                         "double where that is wider, RIGIDSYM_C_WIDE): intermediates may "
+                         "have underflowed or overflowed, so the outputs are not "
+                         "guaranteed to the stated bound"),
+)
+_C_KEYWORDS = set("""auto break case char const continue default do double else enum extern
+float for goto if inline int long register restrict return short signed sizeof static struct
+switch typedef union unsigned void volatile while bool true false class new delete this
+template typename namespace operator private public protected virtual""".split())
+
+
+class CTargetError(ValueError):
+    """A kernel the C-only target cannot print (a name that would collide in C)."""
+
+
+def _env() -> jinja2.Environment:
+    env = jinja2.Environment(
+        loader=jinja2.FileSystemLoader(str(TEMPLATES)), keep_trailing_newline=True,
+        trim_blocks=True, lstrip_blocks=True, undefined=jinja2.StrictUndefined,
+        autoescape=False)
+    env.filters["wrap"] = lambda text, width: textwrap.wrap(text, width) or [""]
+    env.filters["paren"] = lambda eq: f"({eq})"
+    return env
+
+
+def _layout(shape) -> str:
+    """The storage of a per-sample shape, for the header."""
+    shape = tuple(shape)
+    if shape == ():
+        return "scalar"
+    if len(shape) == 1:
+        return f"vector of {shape[0]}"
+    dims = " x ".join(map(str, shape))
+    strides, s = [], 1
+    for d in reversed(shape[1:]):
+        s *= d
+        strides.insert(0, s)
+    idx = " + ".join([f"{st}*{v}" for st, v in zip(strides, "ijklm", strict=False)] +
+                     ["ijklm"[len(shape) - 1]])
+    sub = "][".join("ijklm"[:len(shape)])
+    return f"{dims}, row-major: [{sub}] at [{idx}]"
+
+
+def _program(kc, printer, ctype: str) -> dict:
+    """The printed variants of ``kc``'s program (branches in order, main last)."""
+    zero = "0.0f" if ctype == "float" else "0.0"
+    out = []
+    for v in kc.variants:
+        lines = _program_lines(v.program, printer)
+        out.append({"cond": None if v.cond is None else printer.doprint(v.cond),
+                    "finite": _finite_check(v.program, kc.kernel, printer), "zero": zero,
+                    **lines})
+    return out
+
+
+#: log2 of the largest ordinary input (the top of the range the status calls ordinary) and
+#: of the largest finite value, per type, less a margin for the rounding of the sums
+_ORDINARY = {"double": (101, 1020), "float": (31, 124)}
+
+
+class _Unbounded(Exception):
+    pass
+
+
+def _log2_bound(e, env: dict, top: float) -> float:
+    """An upper bound of log2 |e| when every input is below 2^top in magnitude and each
+    temporary of ``env`` below 2^env[t]; raises _Unbounded for a division, a root or a
+    function it does not know."""
+    if e.is_Symbol:
+        return env.get(e, top)
+    if e.is_Number:
+        return math.log2(abs(float(e))) if e != 0 else -math.inf
+    if isinstance(e, sp.sin | sp.cos):
+        return 0.0
+    if isinstance(e, sp.atan2):
+        return 2.0
+    if e.is_Add:
+        return max(_log2_bound(a, env, top) for a in e.args) + math.log2(len(e.args))
+    if e.is_Mul:
+        return sum(_log2_bound(a, env, top) for a in e.args)
+    if e.is_Pow and e.exp.is_Integer and e.exp > 0:
+        return _log2_bound(e.base, env, top) * int(e.exp)
+    if isinstance(e, sp.Piecewise):
+        return max(_log2_bound(x, env, top) for x, _ in e.args)
+    name = type(e).__name__
+    if name in ("DiffProd", "SumProd"):   # compensated a b - c d, sum of products
+        pairs = [e.args[i:i + 2] for i in range(0, len(e.args), 2)]
+        return max(_log2_bound(a, env, top) + _log2_bound(b, env, top) for a, b in pairs) \
+            + math.log2(len(pairs))
+    raise _Unbounded(name)
+
+
+def _bounded(kc, ctype: str) -> int | None:
+    """log2 of a bound of every output of ``kc`` for ordinary inputs (below 2^101, float
+    2^31), when the program has no division or root and that bound is finite in ``ctype``
+    (so that only an extreme or non-finite input can give a non-finite output); else None."""
+    top, limit = _ORDINARY[ctype]
+    worst = -math.inf
+    for v in kc.variants:
+        p = v.program
+        if p.dens:
+            return None
+        env: dict = {}
+        try:
+            for t, e in p.temps:
+                env[t] = _log2_bound(sp.sympify(e), env, top)
+            for e in p.outputs:
+                worst = max(worst, _log2_bound(sp.sympify(e), env, top))
+        except _Unbounded:
+            return None
+    return math.ceil(worst) if worst <= limit else None
+
+
+def _padded(items: list[str], ctype: str) -> list[str]:
+    """The input components of the range test, padded with zeros (ordinary) to a multiple
+    of 4, so that GCC's -O2 vectoriser (no epilogue loops) takes the loop: measured 412 -> 307
+    instructions per call on newton_euler_wrench's 19 components (benchmarks/c_scalar.py)."""
+    zero = "0.0f" if ctype == "float" else "0.0"
+    return items + [zero] * (-len(items) % 4)
+
+
+def _check_names(k: Kernel, temps: set[str]) -> None:
+    names = [a.name for a in k.args] + [o.name for o in k.outputs]
+    for n in names:
+        bad = n in _C_KEYWORDS or keyword.iskeyword(n) or n in temps or \
+            re.fullmatch(r"x\d+|status|singular|finite|trig_\d+", n)
+        if bad:
+            raise CTargetError(f"kernel {k.name}: argument or output {n!r} would collide "
+                               f"with a C keyword or a local of the generated function; "
+                               f"rename it in the declaration")
+    if len(set(names)) != len(names):
+        raise CTargetError(f"kernel {k.name}: two arguments or outputs share a name")
+
+
+def _function(kc, ctype: str) -> dict:
+    """One scalar function of ``kc`` in ``ctype`` ("double" or "float")."""
+    k = kc.kernel
+    printer = DoublePrinter() if ctype == "double" else FloatOnlyPrinter()
+    variants = _program(kc, printer, ctype)
+    used: set[str] = set()
+    temps: set[str] = set()
+    for v in kc.variants:
+        temps |= {str(s) for s, _ in v.program.temps}
+        for e in [*(x for _, x in v.program.temps), *v.program.outputs, *v.program.dens,
+                  *([v.cond] if v.cond is not None else [])]:
+            used |= {str(s) for s in sp.sympify(e).free_symbols}
+    _check_names(k, temps)
+    suffix = "_f32" if ctype == "float" else ""
+    slots = [f"{o.name}[{j}]" for o in k.outputs for j in range(o.size)]
+    for v in variants:  # the package's finiteness check names the outputs out_<name>
+        for o in k.outputs:
+            v["finite"] = v["finite"].replace(f"out_{o.name}[", f"{o.name}[")
+    return {"name": f"{PREFIX}{k.name}{suffix}", "ctype": ctype, "variants": variants,
+            "used": used, "inputs": kc.inputs,
+            "args": [{"name": a.name, "size": a.size, "shape": list(a.shape), "doc": a.doc,
+                      "kind": a.kind, "layout": _layout(a.shape)} for a in k.args],
+            "outs": [{"name": o.name, "size": o.size, "shape": list(o.shape), "doc": o.doc,
+                      "layout": _layout(o.shape)} for o in k.outputs],
+            "scan": _padded([f"{a.name}[{j}]" if a.shape else a.name
+                             for a in k.args for j in range(a.size)], ctype),
+            "slots": slots, "out_check": _balanced([f"({s} - {s})" for s in slots]),
+            "bounded": None if any(v["finite"] for v in variants) else _bounded(kc, ctype),
+            "wide": _wide(kc, k) if ctype == "double" else None}
+
+
+def _wide(kc, k: Kernel) -> list[dict]:
+    """The variants of ``kc`` printed in long double (the rescue of extreme inputs)."""
+    variants = _program(kc, WidePrinter(), "long double")
+    for v in variants:
+        v["zero"] = "0.0L"
+        for o in k.outputs:
+            v["finite"] = v["finite"].replace(f"out_{o.name}[", f"{o.name}[")
+    return variants
+
+
+def _kernel_entry(kc) -> dict:
+    k = kc.kernel
+    return {"name": k.name, "summary": k.summary, "formula": k.formula, "ids": list(k.ids),
+            "sources": list(k.sources), "singular": k.singular, "hash": kc.hash,
+            "ops": kc.ops, "notes": k.notes,
+            "functions": [_function(kc, "double"), _function(kc, "float")]}
+
+
+def _groups(codes, origin) -> list[dict]:
+    """Kernels with their Jacobian twins (``<name>_with_jacobians``) in one file pair."""
+    from rigidsym.codegen.jacobians import SUFFIX
+
+    by = {kc.kernel.name: kc for kc in codes}
+    groups = []
+    for name, kc in by.items():
+        if name.endswith(SUFFIX) and name[:-len(SUFFIX)] in by:
+            continue
+        members = [kc] + ([by[name + SUFFIX]] if name + SUFFIX in by else [])
+        groups.append({"name": name, "kernels": [_kernel_entry(m) for m in members],
+                       "origin": origin.get(name, "") if isinstance(origin, dict) else origin,
+                       "hash": _combined([m.hash for m in members])})
+    return sorted(groups, key=lambda g: g["name"])
+
+
+def _combined(hashes) -> str:
+    return hashlib.sha256(" ".join(hashes).encode()).hexdigest()[:16]
+
+
+def _single_header(files: dict[str, str], groups: list[dict], allhash: str, ver: dict,
+                   origin: str) -> str:
+    """One self-contained header (stb style): the declarations, and under
+    ``RIGIDSYM_C_IMPLEMENTATION`` the guards and the definitions."""
+    def body(text: str) -> str:
+        return "".join(line for line in text.splitlines(keepends=True)
+                       if not line.startswith(f'#include "{LIBRARY}'))
+    heads = [f"{LIBRARY}_common.h"] + [f"{LIBRARY}_{g['name']}.h" for g in groups]
+    srcs = [f"{LIBRARY}_impl.h"] + [f"{LIBRARY}_{g['name']}.c" for g in groups]
+    top = (f"/*\n * {LIBRARY}: every kernel in one header. In exactly one C file of your "
+           f"project:\n *     #define RIGIDSYM_C_IMPLEMENTATION\n *     #include "
+           f"\"{LIBRARY}_single.h\"\n * (that file gets the definitions and the compiler-flag "
+           f"guards, which also\n * apply to the rest of it); elsewhere include it without "
+           f"the define.\n * Generated by rigidsym {ver['rigidsym']} (sympy {ver['sympy']}) "
+           f"from {origin};\n * declaration hash sha256:{allhash}. Do not edit: regenerate "
+           f"with\n * `rigidsym generate --target c --single-header`.\n"
+           f" * SPDX-License-Identifier: MIT (see LICENSE beside this file)\n */\n")
+    return (top + "".join(body(files[h]) for h in heads) +
+            "\n#if defined(RIGIDSYM_C_IMPLEMENTATION)\n" +
+            "".join(body(files[c]) for c in srcs) +
+            "\n#endif /* RIGIDSYM_C_IMPLEMENTATION */\n")
+
+
+def generate_c(codes, origin: str | dict[str, str],
+               single_header: bool = False) -> dict[str, str]:
+    """The C-only target's files (``{relative path: text}``) of compiled kernels.
+
+    Args:
+        codes: :class:`rigidsym.codegen.generator.KernelCode` of the kernels and their
+            Jacobian twins (as :func:`rigidsym.codegen.generator.compile_many` gives them).
+        origin: where the kernels are declared (a module's name), for the provenance lines;
+            or ``{kernel name: module}`` when they come from several.
+        single_header: also write ``rigidsym_c_single.h``, every declaration and (under
+            ``RIGIDSYM_C_IMPLEMENTATION``) every definition in one file.
+
+    Returns:
+        ``{relative path: text}``: ``rigidsym_c.h``, ``rigidsym_c_impl.h``, per kernel
+        ``rigidsym_c_<kernel>.h`` and ``.c``, ``CMakeLists.txt``, ``rigidsym_c.pc.in``,
+        ``rigidsym_cConfig.cmake.in``, ``README.md``, ``LICENSE``.
+
+    Raises:
+        CTargetError: a kernel whose argument or output name would collide in C.
+    """
+    env = _env()
+    groups = _groups(codes, origin)
+    if isinstance(origin, dict):
+        origin = ", ".join(dict.fromkeys(origin.values()))
+    ver = {"rigidsym": rigidsym.__version__, "sympy": sp.__version__}
+    allhash = _combined([g["hash"] for g in groups])
+    common = {"lib": LIBRARY, "prefix": PREFIX, "status": STATUS, "ver": ver,
+              "origin": origin, "groups": groups, "allhash": allhash}
+    files: dict[str, str] = {}
+    for g in groups:
+        for t, ext in (("kernel.h.j2", "h"), ("kernel.c.j2", "c")):
+            files[f"{LIBRARY}_{g['name']}.{ext}"] = env.get_template(t).render(
+                g=g, template=t, **common)
+    for t, path in (("rigidsym_c.h.j2", f"{LIBRARY}.h"),
+                    ("rigidsym_c_common.h.j2", f"{LIBRARY}_common.h"),
+                    ("rigidsym_c_impl.h.j2", f"{LIBRARY}_impl.h"),
+                    ("CMakeLists.txt.j2", "CMakeLists.txt"),
+                    ("pc.in.j2", f"{LIBRARY}.pc.in"),
+                    ("Config.cmake.in.j2", f"{LIBRARY}Config.cmake.in"),
+                    ("README.md.j2", "README.md"),
+                    ("LICENSE.j2", "LICENSE")):
+        files[path] = env.get_template(t).render(template=t, **common)
+    if single_header:
+        files[f"{LIBRARY}_single.h"] = _single_header(files, groups, allhash, ver, origin)
+    return dict(sorted(files.items()))

@@ -1,0 +1,722 @@
+"""The C-only target (issue 53): ``rigidsym generate --target c`` writes C99 that a C or
+C++ project builds without Python, with a documented scalar API and status codes, guarded
+against the compiler flags that would make it silently wrong.
+
+Default run: the example control loop builds (gcc, -std=c99 -Wall -Wextra -Werror
+-pedantic) and matches the NumPy kernels to 1e-12; the status codes, by property; the
+fast-math guard; the generator's one-line errors. ``slow``: the committed example folder is
+what the generator writes; the flag matrix with gcc and clang (plain and CMake builds), C++,
+the installed library (find_package, pkg-config), the Cortex-M4F float-only check.
+"""
+
+from __future__ import annotations
+
+import ctypes
+import re
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+REPO = Path(__file__).resolve().parents[1]
+EXAMPLE = REPO / "examples" / "c"
+KERNELS_DIR = EXAMPLE / "rigidsym_c"
+STRICT = ["-std=c99", "-Wall", "-Wextra", "-Werror", "-pedantic"]
+GCC = shutil.which("gcc")
+needs_gcc = pytest.mark.skipif(GCC is None, reason="gcc is not installed")
+
+#: the status bits (rigidsym_c_common.h)
+OK, SINGULAR, NONFINITE_INPUT, NONFINITE_RESULT, EXTREME_INPUT = 0, 1, 2, 4, 8
+
+
+def sources(d: Path = KERNELS_DIR) -> list[Path]:
+    return sorted(d.glob("rigidsym_c_*.c"))
+
+
+def build_example(cc: str, out: Path, flags: list[str], lang: str = "c") -> Path:
+    """The example control loop built by one plain compiler line."""
+    exe = out / f"control_loop_{Path(cc).name}_{len(flags)}"
+    args = [cc, *flags, "-I", str(KERNELS_DIR)]
+    if lang == "c++":
+        # the application in C++ through the same headers; the kernels stay C
+        objs = []
+        for s in sources():
+            o = out / (s.stem + ".o")
+            subprocess.run(["gcc", *STRICT, "-O2", "-c", str(s), "-o", str(o)], check=True)
+            objs.append(str(o))
+        cmd = [*args, "-x", "c++", str(EXAMPLE / "main.c"), "-x", "none", *objs,
+               "-o", str(exe), "-lm"]
+    else:
+        cmd = [*args, str(EXAMPLE / "main.c"), *map(str, sources()), "-o", str(exe), "-lm"]
+    subprocess.run(cmd, check=True, capture_output=True, text=True)
+    return exe
+
+
+def run_example(exe: Path) -> dict[tuple[str, int], np.ndarray]:
+    res = subprocess.run([str(exe)], check=True, capture_output=True, text=True)
+    out = {}
+    for line in res.stdout.splitlines():
+        name, tick, *vals = line.split()
+        out[name, int(tick)] = np.array([float(v) for v in vals])
+    return out
+
+
+def expected() -> dict[tuple[str, int], np.ndarray]:
+    """The example's outputs from the package's kernels (book) and NumPy (user module)."""
+    from rigidsym import kernels as K
+
+    out = {}
+    for tick in range(8):
+        t = 0.01 * tick
+        e, phi = np.array([0.0, 0.6, 0.8]), 0.3 + t
+        out["Q", tick] = K.rotation_from_natural_invariants(e, phi).ravel()
+        t_A = np.array([0.1, -0.2 + t, 0.3, 1.0, 0.5, -0.25])
+        out["t_P", tick] = K.twist_transfer(t_A, np.zeros(3), np.array([0.2, 0.1 - t, 0.4]))
+        I_C = np.array([[0.02, 0.001, 0.0], [0.001, 0.03, 0.002], [0.0, 0.002, 0.025]])
+        omega = np.array([0.1, -0.2 + t, 0.3])
+        out["w", tick] = K.newton_euler_wrench(I_C, 1.5, omega, np.array([0.0, 0.5, -t]),
+                                               np.array([0.0, 0.0, -9.81 + t]))
+        s = np.sin(0.5 * phi)
+        w_, x, y, z = np.cos(0.5 * phi), 0.0, 0.6 * s, 0.8 * s
+        out["Qq", tick] = np.array([
+            1 - 2 * (y * y + z * z), 2 * (x * y - w_ * z), 2 * (x * z + w_ * y),
+            2 * (x * y + w_ * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w_ * x),
+            2 * (x * z - w_ * y), 2 * (y * z + w_ * x), 1 - 2 * (x * x + y * y)])
+        q1, q2, l1, l2 = 0.4 + t, -0.7 + 2 * t, 0.35, 0.25
+        out["tip", tick] = np.array([l1 * np.cos(q1) + l2 * np.cos(q1 + q2),
+                                     l1 * np.sin(q1) + l2 * np.sin(q1 + q2)])
+        out["tip_D_q1", tick] = np.array([-l1 * np.sin(q1) - l2 * np.sin(q1 + q2),
+                                          l1 * np.cos(q1) + l2 * np.cos(q1 + q2)])
+        out["tip_D_q2", tick] = np.array([-l2 * np.sin(q1 + q2), l2 * np.cos(q1 + q2)])
+        v = np.array([0.3, 0.0, -0.1 + t])
+        out["T", tick] = np.array([0.5 * 1.5 * v @ v + 0.5 * omega @ I_C @ omega])
+    return out
+
+
+def assert_matches(got: dict, want: dict, tol: float = 1e-12) -> None:
+    assert set(got) == set(want)
+    for key, w in want.items():
+        scale = max(1.0, float(np.max(np.abs(w))))
+        assert np.max(np.abs(got[key] - w)) <= tol * scale, (key, got[key], w)
+
+
+@pytest.mark.slow  # generates six kernels: 3-10 s on a loaded 2-core machine
+def test_example_folder_is_what_the_generator_writes(tmp_path):
+    """examples/c/rigidsym_c is the output of the command in examples/c/README.md, byte for
+    byte (the --check of the C target)."""
+    from rigidsym.cli import main
+
+    code = main(["generate", "--target", "c", *EXAMPLE_ARGS, "--out", str(KERNELS_DIR),
+                 "--check"])
+    assert code == 0
+
+
+#: the example's generate command (examples/c/README.md)
+EXAMPLE_ARGS = ["--module", str(EXAMPLE / "my_kernels.py"),
+                "--kernel", "rotation_from_natural_invariants", "--kernel", "twist_transfer",
+                "--kernel", "newton_euler_wrench"]
+
+
+def test_every_file_has_provenance_and_licence():
+    for p in KERNELS_DIR.iterdir():
+        text = p.read_text(encoding="utf-8")
+        head = "\n".join(text.splitlines()[:8])
+        assert "rigidsym 0" in head and "sha256:" in head, p.name
+        assert "MIT" in head, p.name
+    for h in KERNELS_DIR.glob("*.h"):
+        text = h.read_text(encoding="utf-8")
+        assert "Python.h" not in text and "numpy" not in text.lower()
+        if h.name != "rigidsym_c_impl.h":
+            assert "__FAST_MATH__" not in text, "guards belong in the sources, not headers"
+
+
+@needs_gcc
+def test_example_builds_strict_and_matches_numpy(tmp_path):
+    exe = build_example(GCC, tmp_path, [*STRICT, "-O2"])
+    assert_matches(run_example(exe), expected())
+
+
+@needs_gcc
+@pytest.mark.parametrize("flag", ["-ffast-math", "-Ofast", "-ffinite-math-only"])
+def test_fast_math_stops_the_build_naming_the_flag(tmp_path, flag):
+    res = subprocess.run([GCC, *STRICT, flag, "-c", str(sources()[0]), "-o",
+                          str(tmp_path / "x.o")], capture_output=True, text=True)
+    assert res.returncode != 0
+    named = "-ffinite-math-only" if flag == "-ffinite-math-only" else "-ffast-math"
+    assert "#error" in res.stderr and named in res.stderr and "-fno-" in res.stderr
+
+
+@needs_gcc
+def test_an_application_with_fast_math_still_includes_the_headers(tmp_path):
+    src = tmp_path / "app.c"
+    src.write_text('#include "rigidsym_c.h"\nint main(void) { return RIGIDSYM_C_OK; }\n')
+    subprocess.run([GCC, *STRICT, "-Ofast", "-I", str(KERNELS_DIR), "-c", str(src), "-o",
+                    str(tmp_path / "app.o")], check=True)
+
+
+# -- the status codes, through ctypes on a shared build of the folder --
+
+@pytest.fixture(scope="module")
+def lib(tmp_path_factory):
+    if GCC is None:
+        pytest.skip("gcc is not installed")
+    so = tmp_path_factory.mktemp("lib") / "librigidsym_c.so"
+    subprocess.run([GCC, *STRICT, "-O2", "-shared", "-fPIC", *map(str, sources()), "-o",
+                    str(so), "-lm"], check=True)
+    return ctypes.CDLL(str(so))
+
+
+def call(lib, name: str, *args, dtype=np.float64):
+    """Call a scalar function: arrays by pointer, Python floats by value; returns
+    (status, outputs)."""
+    ct = ctypes.c_double if dtype == np.float64 else ctypes.c_float
+    fn = getattr(lib, name)
+    cargs, outs = [], []
+    for a in args:
+        if isinstance(a, int | float):
+            cargs.append(ct(a))
+        elif isinstance(a, tuple):            # ("out", size)
+            o = np.zeros(a[1], dtype)
+            outs.append(o)
+            cargs.append(o.ctypes.data_as(ctypes.POINTER(ct)))
+        else:
+            a = np.ascontiguousarray(a, dtype)
+            outs.append(None)
+            cargs.append(a.ctypes.data_as(ctypes.POINTER(ct)))
+            cargs[-1]._keep = a  # type: ignore[attr-defined]
+    fn.restype = ctypes.c_int
+    status = fn(*cargs)
+    return status, [o for o in outs if o is not None]
+
+
+finite = st.floats(-1e3, 1e3, allow_nan=False, allow_infinity=False)
+
+
+@settings(max_examples=40, deadline=None)
+@given(st.lists(finite, min_size=3, max_size=3), finite)
+def test_status_ok_and_values_for_ordinary_inputs(lib, e, phi):
+    from rigidsym import kernels as K
+
+    e = np.array(e)
+    status, (Q,) = call(lib, "rigidsym_c_rotation_from_natural_invariants", e, phi,
+                        ("out", 9))
+    small = any(0 < abs(x) < 2.0**-100 for x in [*e, phi])
+    assert status == (EXTREME_INPUT if small and not WIDE else OK)
+    if small:   # both re-run it in long double (the package NumPy's, this C's own)
+        return
+    want = K.rotation_from_natural_invariants(e, phi, check=False).ravel()
+    scale = max(1.0, float(np.max(np.abs(want))))
+    assert np.max(np.abs(Q - want)) <= 1e-12 * scale
+
+
+@settings(max_examples=40, deadline=None)
+@given(st.lists(finite, min_size=3, max_size=3), st.sampled_from([np.nan, np.inf, -np.inf]),
+       st.integers(0, 3))
+def test_every_kernel_flags_a_nonfinite_input(lib, e, bad, where):
+    """A kernel without a division too (rotation_from_natural_invariants) flags it."""
+    e, phi = np.array(e), 0.5
+    if where < 3:
+        e[where] = bad
+    else:
+        phi = bad
+    status, _ = call(lib, "rigidsym_c_rotation_from_natural_invariants", e, phi, ("out", 9))
+    assert status & NONFINITE_INPUT
+    status, _ = call(lib, "rigidsym_c_body_energy", 1.0, e, np.eye(3), [0.0, 0.0, phi],
+                     ("out", 1))
+    assert status & NONFINITE_INPUT
+
+
+WIDE = np.finfo(np.longdouble).maxexp > np.finfo(np.float64).maxexp
+
+
+@pytest.mark.skipif(not WIDE, reason="long double is double here: no wider type to rescue in")
+@settings(max_examples=25, deadline=None)
+@given(st.sampled_from([1e-300, 1e-200, 1e-40, 1e-12, 1e30]), st.integers(0, 2**32 - 1))
+def test_extreme_inputs_are_rescued_in_long_double(lib, scale, seed):
+    """Inputs scaled to 1e-300 ... 1e30 (every intermediate representable in long double):
+    status 0 and the package kernels' values (both re-run in long double, rounded once)."""
+    from rigidsym import kernels as K
+
+    rng = np.random.default_rng(seed)
+    t, a, p = (rng.normal(size=n) * scale for n in (6, 3, 3))
+    status, (got,) = call(lib, "rigidsym_c_twist_transfer", t, a, p, ("out", 6))
+    want = K.twist_transfer(t, a, p, check=False)
+    assert status == OK
+    assert np.max(np.abs(got - want)) <= 1e-15 * np.max(np.abs(want))
+    e = rng.normal(size=3) * scale
+    status, (Q,) = call(lib, "rigidsym_c_rotation_from_natural_invariants", e, 0.3, ("out", 9))
+    assert status == OK
+    want = K.rotation_from_natural_invariants(e, 0.3, check=False).ravel()
+    assert np.max(np.abs(Q - want)) <= 1e-15 * np.max(np.abs(want))
+
+
+@settings(max_examples=30, deadline=None)
+@given(st.floats(2.0**101, 1e300))
+def test_overflow_is_flagged_never_silent(lib, big):
+    """v |v|^2 overflows: the status says so (the package's batch path re-runs the row)."""
+    status, (T,) = call(lib, "rigidsym_c_body_energy", 1.0, [big, 0, 0], np.eye(3),
+                        [0.0, 0.0, 0.0], ("out", 1))
+    if WIDE:    # rescued in long double: right where it fits, flagged where it does not
+        assert status in (OK, NONFINITE_RESULT)
+        assert (status == OK) == (big * big / 2 < np.finfo(np.float64).max)
+    else:
+        assert status & EXTREME_INPUT
+    assert np.isfinite(T[0]) or status & NONFINITE_RESULT
+
+
+@settings(max_examples=15, deadline=None)
+@given(st.integers(0, 9), st.data())
+def test_batch_function_is_the_scalar_function_per_row(lib, n, data):
+    """rigidsym_c_<k>_batch over n rows gives each row what the scalar function gives it,
+    the statuses per row and their OR (a NaN row among ordinary ones)."""
+    rows = np.array(data.draw(st.lists(st.lists(finite, min_size=12, max_size=12),
+                                       min_size=n, max_size=n))).reshape(n, 12)
+    if n:
+        rows[data.draw(st.integers(0, n - 1)), 0] = np.nan
+    t_A, a, p = (np.ascontiguousarray(rows[:, s]) for s in (slice(0, 6), slice(6, 9),
+                                                            slice(9, 12)))
+    out = np.zeros((n, 6))
+    status = np.zeros(n, np.int32)
+    ptr = ctypes.POINTER(ctypes.c_double)
+    fn = lib.rigidsym_c_twist_transfer_batch
+    fn.restype = ctypes.c_int
+    total = fn(ctypes.c_size_t(n), t_A.ctypes.data_as(ptr), a.ctypes.data_as(ptr),
+               p.ctypes.data_as(ptr), out.ctypes.data_as(ptr),
+               status.ctypes.data_as(ctypes.POINTER(ctypes.c_int)))
+    want_all = 0
+    for i in range(n):
+        s, (row,) = call(lib, "rigidsym_c_twist_transfer", t_A[i], a[i], p[i], ("out", 6))
+        assert s == status[i]
+        np.testing.assert_array_equal(row, out[i])
+        want_all |= s
+    assert total == want_all
+
+
+def test_float_functions_agree_with_double(lib):
+    rng = np.random.default_rng(5)
+    worst = 0.0
+    for _ in range(200):
+        e = rng.normal(size=3)
+        e /= np.linalg.norm(e)
+        phi = float(rng.uniform(-3, 3))
+        _, (Qd,) = call(lib, "rigidsym_c_rotation_from_natural_invariants", e, phi,
+                        ("out", 9))
+        s, (Qf,) = call(lib, "rigidsym_c_rotation_from_natural_invariants_f32",
+                        e.astype(np.float32), float(np.float32(phi)), ("out", 9),
+                        dtype=np.float32)
+        assert s == OK
+        worst = max(worst, float(np.max(np.abs(Qf - Qd))))
+    assert worst < 8 * 2.0**-24
+
+
+def test_header_documents_arguments_units_and_layout():
+    h = (KERNELS_DIR / "rigidsym_c_newton_euler_wrench.h").read_text(encoding="utf-8")
+    for needed in ["3.134", "I_C: inertia at the mass centre [kg m^2]; 3 x 3, row-major: "
+                   "[i][j] at [3*i + j]", "w: [n_C; f] [N m; N]; vector of 6",
+                   "RIGIDSYM_C_NONFINITE_INPUT", "rigidsym_c_newton_euler_wrench_f32(",
+                   "rigidsym_c_newton_euler_wrench_with_jacobians(",
+                   "w_D_I_C: d w / d I_C, shape (6,) + (3, 3); 6 x 3 x 3, row-major: "
+                   "[i][j][k] at [9*i + 3*j + k]"]:
+        assert needed in h, needed
+    assert re.search(r"RIGIDSYM_C_BEGIN_DECLS", h)
+
+
+# -- slow: every source under every flag of the matrix, gcc and clang, plain and CMake --
+
+#: flags -> the flag the #error must name, or None where the sources must build and be right
+MATRIX = {
+    "": None,
+    "-O3": None,
+    "-ffast-math": "-ffast-math",
+    "-Ofast": "-Ofast",
+    "-fassociative-math -fno-signed-zeros -fno-trapping-math": "-fassociative-math",
+    "-ffinite-math-only": "-ffinite-math-only",
+    "-ffp-contract=fast": None,
+    "-O3 -march=native -ffp-contract=fast": None,
+    "-DRIGIDSYM_C_TRUSTED_INPUTS": None,      # no input range test: still right
+    "-DRIGIDSYM_C_NO_WIDE": None,             # no long double rescue: still right
+}
+COMPILERS = [c for c in ("gcc", "clang") if shutil.which(c)]
+
+
+def _fails_naming(res: subprocess.CompletedProcess, flag: str) -> bool:
+    return res.returncode != 0 and "#error" in res.stderr or \
+        (res.returncode != 0 and "error:" in res.stderr and flag in res.stderr)
+
+
+@pytest.mark.slow
+@pytest.mark.skipif(not COMPILERS, reason="neither gcc nor clang is installed")
+@pytest.mark.parametrize("flags", list(MATRIX))
+@pytest.mark.parametrize("cc", ["gcc", "clang"])
+def test_flag_matrix_plain_build_right_or_error(tmp_path, cc, flags):
+    """Each source file alone, then the example: an #error naming the flag, or results that
+    match the NumPy kernels to 1e-12 (clang's -fassociative-math, which no macro shows, is
+    turned off by the sources' pragma, so it must build and be right)."""
+    if shutil.which(cc) is None:
+        pytest.skip(f"{cc} is not installed")
+    want_error = MATRIX[flags]
+    if cc == "clang" and want_error == "-fassociative-math":
+        want_error = None            # clang: no macro; the pragma keeps the code right
+    for src in sources():
+        res = subprocess.run([cc, *STRICT, "-O2", *flags.split(), "-c", str(src), "-o",
+                              str(tmp_path / (src.stem + ".o"))], capture_output=True,
+                             text=True)
+        if want_error is None:
+            assert res.returncode == 0, res.stderr
+        else:
+            named = "-ffast-math" if want_error == "-Ofast" else want_error
+            assert res.returncode != 0 and "#error" in res.stderr or "error:" in res.stderr
+            assert named in res.stderr and "-fno-" in res.stderr, res.stderr
+    if want_error is None:
+        exe = build_example(cc, tmp_path, [*STRICT, "-O2", *flags.split()])
+        assert_matches(run_example(exe), expected())
+
+
+def _cmake(tmp_path: Path, cc: str, flags: str) -> Path:
+    build = tmp_path / f"build_{cc}"
+    subprocess.run(["cmake", "-S", str(EXAMPLE), "-B", str(build), f"-DCMAKE_C_COMPILER={cc}",
+                    f"-DCMAKE_C_FLAGS={' '.join([*STRICT, flags])}",
+                    "-DCMAKE_BUILD_TYPE=Release"], check=True, capture_output=True)
+    subprocess.run(["cmake", "--build", str(build)], check=True, capture_output=True)
+    return build / "control_loop"
+
+
+@pytest.mark.slow
+@pytest.mark.skipif(shutil.which("cmake") is None, reason="cmake is not installed")
+@pytest.mark.parametrize("flags", ["", "-Ofast", "-fassociative-math -fno-signed-zeros "
+                                   "-fno-trapping-math", "-ffinite-math-only"])
+@pytest.mark.parametrize("cc", ["gcc", "clang"])
+def test_cmake_build_is_right_under_the_application_flags(tmp_path, cc, flags):
+    """The CMake target compiles the kernels with its own flags after the project's: an
+    application built with -Ofast links right kernels (and its own main.c stays fast)."""
+    if shutil.which(cc) is None:
+        pytest.skip(f"{cc} is not installed")
+    assert_matches(run_example(_cmake(tmp_path, cc, flags)), expected())
+
+
+@pytest.mark.slow
+@pytest.mark.skipif(shutil.which("cmake") is None or shutil.which("pkg-config") is None,
+                    reason="cmake or pkg-config is not installed")
+def test_installed_library_by_find_package_and_pkg_config(tmp_path):
+    """cmake --install, then a project using find_package(rigidsym_c), and a plain line
+    using pkg-config --cflags --libs rigidsym_c."""
+    build, prefix = tmp_path / "lib", tmp_path / "prefix"
+    subprocess.run(["cmake", "-S", str(KERNELS_DIR), "-B", str(build),
+                    f"-DCMAKE_INSTALL_PREFIX={prefix}"], check=True, capture_output=True)
+    subprocess.run(["cmake", "--build", str(build)], check=True, capture_output=True)
+    subprocess.run(["cmake", "--install", str(build)], check=True, capture_output=True)
+    app = tmp_path / "app"
+    app.mkdir()
+    shutil.copy(EXAMPLE / "main.c", app / "main.c")
+    (app / "CMakeLists.txt").write_text(
+        "cmake_minimum_required(VERSION 3.13)\nproject(app LANGUAGES C)\n"
+        "find_package(rigidsym_c REQUIRED)\nadd_executable(app main.c)\n"
+        "target_link_libraries(app PRIVATE rigidsym_c::rigidsym_c m)\n")
+    subprocess.run(["cmake", "-S", str(app), "-B", str(app / "b"),
+                    f"-DCMAKE_PREFIX_PATH={prefix}"], check=True, capture_output=True)
+    subprocess.run(["cmake", "--build", str(app / "b")], check=True, capture_output=True)
+    assert_matches(run_example(app / "b" / "app"), expected())
+    pcdir = next(prefix.rglob("rigidsym_c.pc")).parent
+    env = {"PKG_CONFIG_PATH": str(pcdir), "PATH": "/usr/bin:/bin"}
+    flags = subprocess.run(["pkg-config", "--cflags", "--libs", "--static", "rigidsym_c"],
+                           env=env, check=True, capture_output=True, text=True).stdout.split()
+    exe = tmp_path / "pc_app"
+    subprocess.run([GCC or "cc", *STRICT, str(EXAMPLE / "main.c"), *flags, "-o", str(exe)],
+                   check=True)
+    assert_matches(run_example(exe), expected())
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("cc", ["clang", "g++"])
+def test_example_builds_with_clang_and_as_cpp(tmp_path, cc):
+    if shutil.which(cc) is None or GCC is None:
+        pytest.skip(f"{cc} is not installed")
+    if cc == "g++":
+        exe = build_example(cc, tmp_path, ["-std=c++11", "-Wall", "-Wextra", "-Werror",
+                                           "-pedantic", "-O2"], lang="c++")
+    else:
+        exe = build_example(cc, tmp_path, [*STRICT, "-O2"])
+    assert_matches(run_example(exe), expected())
+
+
+ARM = shutil.which("arm-none-eabi-gcc")
+M4F = ["-mcpu=cortex-m4", "-mthumb", "-mfloat-abi=hard", "-mfpu=fpv4-sp-d16"]
+#: what a double operation or double libm call leaves in a Cortex-M4F object
+DOUBLE_SYMBOLS = re.compile(r"^(__aeabi_d\w+|__aeabi_[fil]2d|__aeabi_d2\w+|sin|cos|tan|sqrt|"
+                            r"atan2|fma|pow|exp|log|fabs|__ieee754_\w+[^f])$")
+
+
+@pytest.mark.slow
+@pytest.mark.skipif(ARM is None, reason="arm-none-eabi-gcc is not installed (Debian: "
+                                        "gcc-arm-none-eabi)")
+def test_float_functions_have_no_double_operation_on_cortex_m4f(tmp_path):
+    """Every _f32 function's section of every Cortex-M4F object references no __aeabi_d*
+    helper and no double libm function; the float example, linked with newlib, neither;
+    -Wdouble-promotion clean."""
+    relocs: dict[str, set[str]] = {}
+    for src in sources():
+        obj = tmp_path / (src.stem + ".o")
+        subprocess.run([ARM, *M4F, *STRICT, "-Wdouble-promotion", "-O2", "-ffunction-sections",
+                        "-I", str(KERNELS_DIR), "-c", str(src), "-o", str(obj)], check=True)
+        dump = subprocess.run(["arm-none-eabi-objdump", "-r", str(obj)], check=True,
+                              capture_output=True, text=True).stdout
+        section = ""
+        for line in dump.splitlines():
+            if line.startswith("RELOCATION RECORDS FOR"):
+                section = line.split("[")[1].rstrip("]:")
+            elif "R_ARM" in line:
+                relocs.setdefault(section, set()).add(line.split()[-1])
+    floats = [sec for sec in relocs if sec.endswith("_f32")]
+    doubles = [sec for sec in relocs if sec.startswith(".text.rigidsym_c_")
+               and not sec.endswith("_f32")]
+    assert floats and doubles
+    for sec in floats:
+        assert not {s for s in relocs[sec] if DOUBLE_SYMBOLS.match(s)}, (sec, relocs[sec])
+    # the check can fail: the double functions do call double helpers or libm
+    assert any(DOUBLE_SYMBOLS.match(s) for sec in doubles for s in relocs[sec])
+    elf = tmp_path / "fw.elf"
+    subprocess.run([ARM, *M4F, *STRICT, "-Wdouble-promotion", "-O2", "-ffunction-sections",
+                    "-fdata-sections", "-I", str(KERNELS_DIR), str(EXAMPLE / "main_f32.c"),
+                    *map(str, sources()), "-Wl,--gc-sections", "--specs=nosys.specs",
+                    "-o", str(elf), "-lm"], check=True)
+    syms = subprocess.run(["arm-none-eabi-nm", str(elf)], check=True, capture_output=True,
+                          text=True).stdout.split()
+    assert "sinf" in syms and "cosf" in syms
+    assert not [s for s in syms if DOUBLE_SYMBOLS.match(s)]
+    # a per-sample loop for MCUs with <= 2 KB of stack: every function's frame, batch
+    # loops included (-fstack-usage), well under it
+    for src in sources():
+        subprocess.run([ARM, *M4F, "-std=c99", "-O2", "-fstack-usage", "-I", str(KERNELS_DIR),
+                        "-c", str(src), "-o", str(tmp_path / "su.o")], check=True,
+                       cwd=tmp_path)
+        frames = [int(line.split("\t")[1])
+                  for line in (tmp_path / "su.su").read_text().splitlines()]
+        assert frames and max(frames) <= 2048, (src.name, frames)
+
+
+@pytest.mark.slow
+@needs_gcc
+def test_float_example_matches_numpy_to_float_rounding(tmp_path):
+    """The float-only loop on the host: every output within 8 u (float32) of the NumPy
+    kernels' float64 value, normwise (the inputs themselves rounded to float)."""
+    exe = tmp_path / "f32"
+    subprocess.run([GCC, *STRICT, "-Wdouble-promotion", "-O2", "-DRIGIDSYM_EXAMPLE_PRINT",
+                    "-I", str(KERNELS_DIR), str(EXAMPLE / "main_f32.c"), *map(str, sources()),
+                    "-o", str(exe), "-lm"], check=True)
+    assert_matches(run_example(exe), expected(), tol=8 * 2.0**-24)
+
+
+def _unused():  # keep sys imported
+    return sys.executable
+
+
+# -- the package's own build refuses the same flags (RIGIDSYM_CFLAGS) --
+
+SAFE = ["-O2", "-O3", "-std=c99", "-ffp-contract=off", "-ffp-contract=fast", "-march=native",
+        "-fno-math-errno", "-g"]
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.lists(st.sampled_from(SAFE), max_size=4), st.sampled_from(sorted(
+    __import__("rigidsym.kernels._build", fromlist=["UNSAFE_FLAGS"]).UNSAFE_FLAGS)),
+    st.lists(st.sampled_from(SAFE), max_size=3), st.booleans())
+def test_package_build_refuses_unsafe_flags(before, bad, after, undo):
+    """An unsafe flag is refused, naming it, unless a later flag undoes it."""
+    import os
+
+    from rigidsym.kernels import _build
+
+    fix = [_build.UNSAFE_FLAGS[bad]] if undo else []
+    old = os.environ.get("RIGIDSYM_CFLAGS")
+    os.environ["RIGIDSYM_CFLAGS"] = " ".join([*before, bad, *after, *fix])
+    try:
+        if undo:
+            assert _build.kernel_flags()[-1] == fix[0]
+        else:
+            with pytest.raises(ValueError, match=re.escape(bad)):
+                _build.kernel_flags()
+    finally:
+        if old is None:
+            del os.environ["RIGIDSYM_CFLAGS"]
+        else:
+            os.environ["RIGIDSYM_CFLAGS"] = old
+
+
+# -- generator errors a user can act on (item 7) --
+
+_HEAD = '''import sympy as sp
+from rigidsym.codegen.spec import Arg, Kernel, Out
+'''
+BAD_MODULES = {
+    # a symbol that is not an argument
+    "unknown_symbol": (_HEAD + '''
+def pend(theta, l):
+    return sp.Symbol("g") * sp.sin(theta) / l
+KERNELS = [Kernel(name="pendulum", summary="s", formula="a = g sin(theta) / l", ids=("x",),
+    sources=(pend,), args=(Arg("theta", (), "any", "angle"), Arg("l", (), "any", "length")),
+    outputs=(Out("a", (), "acc"),), build=lambda theta, l: {"a": pend(theta, l)})]
+''', "pendulum", "symbol g is not an argument"),
+    # a Python NameError in a formula
+    "name_error": (_HEAD + '''
+def f(x):
+    return x * gravity
+KERNELS = [Kernel(name="scaled", summary="s", formula="y", ids=("x",), sources=(f,),
+    args=(Arg("x", (), "any", "x"),), outputs=(Out("y", (), "y"),),
+    build=lambda x: {"y": f(x)})]
+''', "scaled", "'gravity', which is not defined"),
+    # an output of another shape than declared
+    "shape_mismatch": (_HEAD + '''
+def f(x):
+    return sp.Matrix([x, x])
+KERNELS = [Kernel(name="pair", summary="s", formula="y", ids=("x",), sources=(f,),
+    args=(Arg("x", (), "any", "x"),), outputs=(Out("y", (3,), "y"),),
+    build=lambda x: {"y": f(x)})]
+''', "pair", "y: expected (3,), got (2, 1)"),
+}
+
+
+@pytest.mark.parametrize("target", ["c", "package"])
+@pytest.mark.parametrize("case", sorted(BAD_MODULES))
+def test_generator_errors_are_one_line_exit_2_nothing_written(tmp_path, capsys, case, target):
+    from rigidsym.cli import main
+
+    text, kernel, says = BAD_MODULES[case]
+    mod = tmp_path / f"{case}.py"
+    mod.write_text(text)
+    out = tmp_path / "out"
+    extra = ["--target", "c"] if target == "c" else ["--no-build"]
+    assert main(["generate", *extra, "--module", str(mod), "--out", str(out)]) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1, err
+    assert f"module {case}, kernel {kernel}" in err and says in err, err
+    assert not out.exists()
+
+
+def test_division_by_a_vanishing_argument_warns_and_records_the_set(tmp_path, capsys):
+    import json
+
+    from rigidsym.cli import main
+
+    mod = tmp_path / "rates.py"
+    mod.write_text(_HEAD + '''
+def rate(v, r):
+    return v / r
+def sinc(r):
+    return sp.sin(r) / r
+KERNELS = [Kernel(name="angular_rate", summary="s", formula="w = v / r", ids=("x",),
+    sources=(rate,), args=(Arg("v", (), "any", "speed"), Arg("r", (), "any", "radius")),
+    outputs=(Out("w", (), "rate"),), build=lambda v, r: {"w": rate(v, r)}),
+    Kernel(name="sinc", summary="s", formula="sin r / r", ids=("x",), sources=(sinc,),
+    args=(Arg("r", (), "any", "r"),), outputs=(Out("y", (), "y"),),
+    build=lambda r: {"y": sinc(r)})]
+''')
+    out = tmp_path / "out"
+    assert main(["generate", "--module", str(mod), "--out", str(out), "--no-build"]) == 0
+    err = capsys.readouterr().err
+    warned = [line for line in err.splitlines() if line.startswith("rigidsym: warning:")]
+    assert len(warned) == 1 and "kernel angular_rate" in warned[0] and "r = 0" in warned[0]
+    meta = {k["name"]: k for k in json.loads((out / "kernels.json").read_text())["kernels"]}
+    assert meta["angular_rate"]["singular"] == "r = 0"
+    assert meta["angular_rate"]["singular_arg"] == "r"
+    assert meta["sinc"]["singular"] == ""      # removable at 0: no warning, no set
+    cdir = tmp_path / "c"
+    assert main(["generate", "--target", "c", "--module", str(mod), "--out", str(cdir)]) == 0
+    assert "Singular set: r = 0" in (cdir / "rigidsym_c_angular_rate.h").read_text()
+
+
+@pytest.mark.slow
+@needs_gcc
+def test_single_header_builds_in_c_and_cpp_and_guards_only_the_implementation(tmp_path):
+    """--single-header: one file; the implementing C file stops under -Ofast, an
+    application (C++, -Ofast) includes it freely, and the program matches NumPy."""
+    from rigidsym.cli import main
+
+    out = tmp_path / "k"
+    assert main(["generate", "--target", "c", *EXAMPLE_ARGS, "--single-header", "--out",
+                 str(out)]) == 0
+    impl = tmp_path / "impl.c"
+    impl.write_text('#define RIGIDSYM_C_IMPLEMENTATION\n#include "rigidsym_c_single.h"\n')
+    bad = subprocess.run([GCC, *STRICT, "-Ofast", "-I", str(out), "-c", str(impl), "-o",
+                          str(tmp_path / "bad.o")], capture_output=True, text=True)
+    assert bad.returncode != 0 and "-ffast-math" in bad.stderr
+    subprocess.run([GCC, *STRICT, "-O2", "-I", str(out), "-c", str(impl), "-o",
+                    str(tmp_path / "impl.o")], check=True)
+    main_cpp = tmp_path / "main.c"
+    main_cpp.write_text((EXAMPLE / "main.c").read_text().replace('"rigidsym_c.h"',
+                                                                '"rigidsym_c_single.h"'))
+    exe = tmp_path / "app"
+    cxx = shutil.which("g++")
+    if cxx is None:
+        pytest.skip("g++ is not installed")
+    subprocess.run([cxx, "-std=c++11", "-Wall", "-Wextra", "-Werror", "-pedantic", "-Ofast",
+                    "-I", str(out), "-x", "c++", str(main_cpp), "-x", "none",
+                    str(tmp_path / "impl.o"), "-o", str(exe), "-lm"], check=True)
+    assert_matches(run_example(exe), expected())
+
+
+#: book kernels with branches, removable quotients, compensated products, atan2 and roots
+HARD_KERNELS = ["screw_of_displacement", "rotation_vector_from_rotation",
+                "exponential_coordinates_left_jacobian", "euler_rodrigues_from_rotation",
+                "instant_screw_axis", "natural_invariants_from_rotation"]
+
+
+@pytest.mark.slow  # generation: about 40 s of CPU
+@needs_gcc
+def test_hard_book_kernels_equal_the_package_kernels(tmp_path):
+    """The C target of kernels with branches, removable quotients and singular sets: the
+    double functions give the package's bits at random valid inputs (the same program,
+    without FMA), the float ones agree within 16 u of float32 (inputs rounded too), the
+    Jacobian twins build, and a pure translation is flagged singular with NaN outputs."""
+    import json
+
+    from rigidsym import kernels as K
+    from rigidsym.cli import main
+
+    out = tmp_path / "k"
+    args = [a for n in HARD_KERNELS for a in ("--kernel", n)]
+    assert main(["generate", "--target", "c", *args, "--out", str(out)]) == 0
+    so = tmp_path / "lib.so"
+    subprocess.run([GCC, *STRICT, "-Wdouble-promotion", "-O2", "-shared", "-fPIC",
+                    *map(str, sorted(out.glob("*.c"))), "-o", str(so), "-lm"], check=True)
+    clib = ctypes.CDLL(str(so))
+    meta = {k["name"]: k for k in
+            json.loads((REPO / "generated" / "kernels.json").read_text())["kernels"]}
+    rng = np.random.default_rng(53)
+
+    def value(a):
+        shape = tuple(a["shape"])
+        if a["kind"] == "rotation":
+            e = rng.normal(size=3)
+            return np.asarray(K.rotation_from_natural_invariants(e / np.linalg.norm(e),
+                                                                 rng.uniform(-3, 3)))
+        if a["kind"] == "unit":
+            v = rng.normal(size=shape)
+            return v / np.linalg.norm(v)
+        return float(rng.uniform(-2, 2)) if shape == () else rng.normal(size=shape)
+
+    for name in HARD_KERNELS:
+        m = meta[name]
+        outs = [("out", max(1, int(np.prod(o["shape"])))) for o in m["outputs"]]
+        for _ in range(30):
+            xs = [value(a) for a in m["args"]]
+            s, got = call(clib, f"rigidsym_c_{name}", *xs, *outs)
+            sf, gotf = call(clib, f"rigidsym_c_{name}_f32",
+                            *[x if isinstance(x, float) else np.float32(x) for x in xs],
+                            *outs, dtype=np.float32)
+            want = getattr(K, name)(*xs, check=False)
+            want = list(want) if isinstance(want, tuple) else [want]
+            assert s == 0 and sf == 0, (name, s, sf)
+            for g, gf, w in zip(got, gotf, want, strict=True):
+                w = np.ravel(w)
+                np.testing.assert_array_equal(g, w)
+                assert np.max(np.abs(gf - w)) <= 16 * 2.0**-24 * max(1, np.max(np.abs(w)))
+    m = meta["screw_of_displacement"]
+    s, got = call(clib, "rigidsym_c_screw_of_displacement", np.eye(3), [1.0, 0, 0],
+                  [2.0, 0.5, 0], *[("out", max(1, int(np.prod(o["shape"]))))
+                                   for o in m["outputs"]])
+    assert s & SINGULAR and all(np.isnan(g).all() for g in got)

@@ -1,0 +1,293 @@
+"""Functions as the books define them, declarations in any order, and no bracket read as
+the one it resembles (issue 52, items 1-3): the three wrong verdicts of the issue and the
+``S(\\mathbf{i})`` case, each with what it gave on main before the fix."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from test_check_latex import _cli, _forget_latex_ids  # noqa: F401  (autouse fixture, CLI helper)
+
+import rigidsym
+from rigidsym.checking.deciding.errors import BadInput
+from rigidsym.latex import LatexError
+
+# Shuster's Gibbs-vector attitude matrix (Shuster 1993, (195)): R(g) the *passive* rotation,
+# R = cos θ 1 + (1 - cos θ) e eᵀ - sin θ [e]×, with g = tan(θ/2) e
+GIBBS = (r"\frac{(1-\mathbf{g}\cdot\mathbf{g})I_{3\times3} + 2\mathbf{g}\mathbf{g}^T"
+         r" {sign} 2[\mathbf{{g}}]_\times}}{{1+\mathbf{{g}}\cdot\mathbf{{g}}}}")
+GIBBS_LETS = [r"\mathbf{e}: unit vector; \theta: angle",
+              r"\mathbf{g} = \tan\frac{\theta}{2}\mathbf{e}",
+              r"R(\mathbf{g}) = \cos\theta\,I_{3\times3} + (1-\cos\theta)\mathbf{e}\mathbf{e}^T"
+              r" - \sin\theta[\mathbf{e}]_\times"]
+
+
+def _gibbs(sign: str) -> str:
+    return (r"\frac{(1-\mathbf{g}\cdot\mathbf{g})I_{3\times3} + 2\mathbf{g}\mathbf{g}^T "
+            + sign + r" 2[\mathbf{g}]_\times}{1+\mathbf{g}\cdot\mathbf{g}}")
+
+
+def _hat(v):
+    return np.array([[0, -v[2], v[1]], [v[2], 0, -v[0]], [-v[1], v[0], 0]])
+
+
+def test_the_gibbs_form_is_true_by_numpy_and_its_sign_slip_is_not():
+    """The truth of the two Gibbs cases below, independent of rigidsym."""
+    rng = np.random.default_rng(52)
+    e = rng.normal(size=3)
+    e /= np.linalg.norm(e)
+    th = 0.7
+    g = np.tan(th / 2) * e
+    R = np.cos(th) * np.eye(3) + (1 - np.cos(th)) * np.outer(e, e) - np.sin(th) * _hat(e)
+    for s, holds in ((-1, True), (1, False)):
+        rhs = ((1 - g @ g) * np.eye(3) + 2 * np.outer(g, g) + s * 2 * _hat(g)) / (1 + g @ g)
+        assert np.allclose(R, rhs) == holds
+
+
+@pytest.mark.parametrize("sign, verdict", [("-", "verified"), ("+", "does-not-hold")])
+def test_a_function_of_a_vector_is_applied_not_multiplied(sign, verdict):
+    # on main: R(g) read as R·g, "shape mismatch: 3x1 vs 3x3", with no reading printed
+    r = rigidsym.check_latex(r"R(\mathbf{g}) = " + _gibbs(sign), let=GIBBS_LETS, repairs=False)
+    assert r.verdict == verdict, r.detail
+    assert any("R(g): the --let function R(\\mathbf{g})" in n for n in r.model), r.model
+
+
+S_LET = r"S(\mathbf{a}) = [\mathbf{a}]_\times"
+
+
+@pytest.mark.parametrize("latex, lets, verdict", [
+    # on main: does-not-hold (S read as a model in a, S(i) as S itself)
+    (r"S(\mathbf{i}) = [\mathbf{i}]_\times", [S_LET, r"\mathbf{i}: vector"], "verified"),
+    (r"S(\mathbf{i}) = [\mathbf{i}]_\times", [S_LET], "verified"),
+    (r"S(\mathbf{i}) = -[\mathbf{i}]_\times", [S_LET, r"\mathbf{i}: vector"], "does-not-hold"),
+    # on main: "juxtaposition of a 3x1 matrix and a 3x3 matrix: no product fits"
+    (r"S(R\mathbf{a}) = R S(\mathbf{a}) R^T", [S_LET, "R: rotation", r"\mathbf{a}: vector"],
+     "verified"),
+    (r"S(R\mathbf{a}) = R^T S(\mathbf{a}) R", [S_LET, "R: rotation", r"\mathbf{a}: vector"],
+     "does-not-hold"),
+    (r"S(\mathbf{a} + \mathbf{b}) = S(\mathbf{a}) + S(\mathbf{b})", [S_LET], "verified"),
+])
+def test_a_function_of_a_vector_substitutes_its_argument(latex, lets, verdict):
+    r = rigidsym.check_latex(latex, let=lets, repairs=False)
+    assert r.verdict == verdict, r.detail
+
+
+ROTS = [r"R_z(\varphi) = \begin{bmatrix}\cos\varphi & -\sin\varphi & 0\\ \sin\varphi & "
+        r"\cos\varphi & 0\\ 0 & 0 & 1\end{bmatrix}",
+        r"\varphi: angle"]
+
+
+@pytest.mark.parametrize("latex, verdict", [
+    (r"R_z(\varphi)R_z(\vartheta) = R_z(\vartheta)R_z(\varphi)", "verified"),
+    (r"R_z(\varphi)^T R_z(\varphi) = I_3", "verified"),
+    (r"R_z(\varphi)R_z(\psi) = R_z(\psi)^T R_z(\varphi)", "does-not-hold"),
+])
+def test_one_function_applied_to_several_arguments(latex, verdict):
+    # on main: "R_z applied to 2 different arguments" (bad input)
+    other = [r"\vartheta: angle"] if "vartheta" in latex else [r"\psi: angle"] \
+        if "psi" in latex else []
+    r = rigidsym.check_latex(latex, let=ROTS + other, repairs=False)
+    assert r.verdict == verdict, r.detail
+
+
+def test_a_function_of_several_parameters():
+    # on main: "unexpected ','" at the first comma
+    lets = [r"\phi: angle; \theta: angle; \psi: angle",
+            r"R_x(\alpha) = \begin{bmatrix}1 & 0 & 0\\ 0 & \cos\alpha & -\sin\alpha\\ 0 & "
+            r"\sin\alpha & \cos\alpha\end{bmatrix}", ROTS[0],
+            r"E'_{123}(\phi,\theta,\psi) = R_x(\phi) R_z(\theta) R_x(\psi)"]
+    r = rigidsym.check_latex(r"E'_{123}(\phi,\theta,\psi)^T E'_{123}(\phi,\theta,\psi) = I_3",
+                             let=lets, repairs=False)
+    assert r.verdict == "verified", r.detail
+    r = rigidsym.check_latex(r"E'_{123}(\phi,\theta,\psi) = R_x(\phi) R_z(\psi) R_x(\theta)",
+                             let=lets, repairs=False)
+    assert r.verdict == "does-not-hold", r.detail
+    with pytest.raises(LatexError, match="function of 3 parameters"):
+        rigidsym.check_latex(r"E'_{123}(\phi,\theta) = I_3", let=lets)
+    with pytest.raises(LatexError, match="no --let declares it a function"):
+        rigidsym.check_latex(r"F(\phi,\theta) = I_3", let=[r"\phi: angle; \theta: angle"])
+
+
+def test_a_declared_parameter_kind_must_fit_the_argument():
+    with pytest.raises(LatexError, match="parameter .* is declared"):
+        rigidsym.check_latex(r"S(R) = R", let=[S_LET, r"\mathbf{a}: vector", "R: rotation"])
+
+
+# ------------------------------------------------ declarations as a graph (issue 52, item 3)
+W = r"\mathbf{w} = F\mathbf{x}"
+
+
+@pytest.mark.parametrize("lets", [[W, "F = -I_3"], ["F = -I_3", W]])
+def test_the_minimal_declaration_order_case_verifies_in_both_orders(lets):
+    # on main: W first made F a free scalar (does-not-hold); F first verified
+    r = rigidsym.check_latex(r"\mathbf{w} = -\mathbf{x}", let=lets, repairs=False)
+    assert r.verdict == "verified", (r.detail, r.model)
+
+
+DIEBEL = [r"R = R_3 R_2 R_1",
+          r"R_1 = \begin{bmatrix}1 & 0 & 0\\ 0 & c_\phi & s_\phi\\ 0 & -s_\phi & c_\phi"
+          r"\end{bmatrix}",
+          r"R_2 = \begin{bmatrix}c_\theta & 0 & -s_\theta\\ 0 & 1 & 0\\ s_\theta & 0 & c_\theta"
+          r"\end{bmatrix}",
+          r"R_3 = \begin{bmatrix}c_\psi & s_\psi & 0\\ -s_\psi & c_\psi & 0\\ 0 & 0 & 1"
+          r"\end{bmatrix}",
+          r"c_\phi = \cos\phi; s_\phi = \sin\phi; c_\theta = \cos\theta; s_\theta = \sin\theta",
+          r"c_\psi = \cos\psi; s_\psi = \sin\psi",
+          r"\phi: angle; \theta: angle; \psi: angle"]
+
+
+@pytest.mark.parametrize("order", [list(range(7)), list(range(6, -1, -1)), [3, 0, 5, 1, 6, 2, 4]])
+def test_models_using_models_top_down_or_bottom_up(order):
+    # Diebel's 3-2-1 Euler angles, R = R_3 R_2 R_1 declared first as the book does: on main
+    # R_3 ... became free scalars ("free: R_1, R_2, R_3") and a rotation identity failed
+    lets = [DIEBEL[i] for i in order]
+    r = rigidsym.check_latex(r"R^T R = I_3", let=lets, repairs=False)
+    assert r.verdict == "verified", (r.detail, r.model)
+    r = rigidsym.check_latex(r"R = R_1 R_2 R_3", let=lets, repairs=False)
+    assert r.verdict == "does-not-hold", (r.detail, r.model)
+
+
+def test_a_dependence_through_another_model_is_seen():
+    # on main: "the model of R_3 does not depend on ψ" (false: through c_ψ, s_ψ)
+    r = rigidsym.check_latex(r"R_3(\psi)^T R_3(\psi) = I_3", let=[
+        DIEBEL[3], DIEBEL[5], r"\psi: angle"], repairs=False)
+    assert r.verdict == "verified", r.detail
+
+
+def test_a_cycle_of_models_is_named():
+    with pytest.raises(BadInput, match=r"cycle: A -> B -> A"):
+        rigidsym.check_latex("A = 1", let=["A = B + 1", "B = A - 1"])
+
+
+# ---------------------------------------------------- what matches no rule (issue 52, item 1)
+@pytest.mark.parametrize("latex, lets", [
+    (r"\mathbf{a} = [[\mathbf{u}]]\mathbf{b}", []),  # on main: read as [u], a sign lost
+    (r"\mathbf{a} = \mathbf{N}\mathbf{b}", [r"\mathbf{N} = [[\mathbf{u}]]"]),  # in a model
+])
+def test_an_unknown_bracket_is_refused_by_name(latex, lets):
+    with pytest.raises(LatexError, match=r"unknown bracket \[\[\.\.\.\]\]"):
+        rigidsym.check_latex(latex, let=lets)
+
+
+def test_shusters_bracket_written_as_a_function_decides(capsys):
+    code, out, err = _cli(capsys, "--latex", r"\mathbf{a} = [[\mathbf{u}]]\mathbf{b}")
+    assert code == 2 and "unknown bracket" in err + out
+    code, out, err = _cli(capsys, "--latex", r"N(\mathbf{u})\mathbf{b} = \mathbf{b}\times"
+                          r"\mathbf{u}", "--let", r"N(\mathbf{u}) = -[\mathbf{u}]_\times",
+                          "--no-repairs")
+    assert code == 0, out + err
+    assert "the --let function N(\\mathbf{u})" in out, out
+
+
+def test_a_reading_inside_a_model_is_printed():
+    # on main the readings of a --let model were dropped: [g] read as a hat, unsaid
+    r = rigidsym.check_latex(r"\mathbf{w} = \mathbf{N}\mathbf{x}",
+                             let=[r"\mathbf{N} = [\mathbf{g}]"], repairs=False)
+    assert any(n.startswith(r"in --let '\mathbf{N} = [\mathbf{g}]': [x] of a 3-vector")
+               for n in r.model), r.model
+
+
+# ------------------------------------------- readings enumerated and agreed (issue 52, item 2)
+ROD = [r"\mathbf{e}: unit vector; \theta: angle", r"\mathbf{g} = \tan\frac{\theta}{2}\mathbf{e}",
+       r"R = \cos\theta\,I_{3\times3} + (1-\cos\theta)\mathbf{e}\mathbf{e}^T"
+       r" - \sin\theta[\mathbf{e}]_\times"]
+
+
+@pytest.mark.parametrize("sign, verdict", [("-", "verified"), ("+", "does-not-hold")])
+def test_a_model_applied_to_a_vector_keeps_the_reading_that_type_checks(sign, verdict):
+    # R a model without parameters: R(g) a product R g (3-vector) or R applied to g; only
+    # the application type-checks against a 3x3 side. On main: R g, "shape mismatch"
+    r = rigidsym.check_latex(r"R(\mathbf{g}) = " + _gibbs(sign), let=ROD, repairs=False)
+    assert r.verdict == verdict, r.detail
+    assert "R(g): read as R applied to g (a choice: or the product R g)" in r.model, r.model
+    assert any(n.startswith("not read as R(...) a product: the two sides differ in shape")
+               for n in r.model), r.model
+
+
+def test_readings_that_agree_give_the_verdict_and_say_so():
+    r = rigidsym.check_latex(r"\det(A(R)) = 1", let=["A = R", "R: rotation"], repairs=False)
+    assert r.verdict == "verified"
+    assert any("2 readings type-check" in n and "all verified" in n for n in r.model), r.model
+
+
+def test_readings_that_disagree_are_refused_naming_the_choice(capsys):
+    args = ["--latex", r"A(\mathbf{B}) = \mathbf{B}^T", "--let", r"A = \mathbf{B}^T",
+            "--let", r"\mathbf{B}: matrix"]
+    code, out, err = _cli(capsys, *args)
+    assert code == 2, out + err
+    assert "A(...) can be read as a product or as A applied" in err + out
+    assert "A(...) a product: does-not-hold; A(...) applied: verified" in err + out
+    # the --let the message names settles it
+    code, out, err = _cli(capsys, "--latex", r"A(\mathbf{B}) = \mathbf{B}^T", "--let",
+                          r"A(\mathbf{C}) = \mathbf{C}^T", "--no-repairs")
+    assert code == 0, out + err
+
+
+# --------------------------------------------------- the constructs of item 4 (issue 52)
+@pytest.mark.parametrize("latex, lets, verdict", [
+    # Markley-Crassidis' vector part q_{1:3} (on main: "unexpected ':'")
+    (r"\mathbf{q}_{1:3}^T\mathbf{q}_{1:3} + q_4^2 = 1",
+     [r"\mathbf{q}: unit 4-vector", r"q_4 = \mathbf{q}_{4:4}"], "verified"),
+    (r"\mathbf{q}_{1:3}^T\mathbf{q}_{1:3} = 1", [r"\mathbf{q}: unit 4-vector"], "does-not-hold"),
+    (r"\mathbf{q}_{1:3} = \mathbf{v}", [r"\mathbf{q} = \begin{bmatrix}\mathbf{v}\\ 1"
+                                        r"\end{bmatrix}"], "verified"),
+    # |a| of a vector its length, of a scalar its absolute value (on main: "unexpected '|'")
+    (r"|\mathbf{a}| = 1", [r"\mathbf{a}: unit vector"], "verified"),
+    (r"|\mathbf{a}|^2 = \mathbf{a}^T\mathbf{a}", [r"\mathbf{a}: vector"], "verified"),
+    (r"|\mathbf{a}|^2 = 2\mathbf{a}^T\mathbf{a}", [r"\mathbf{a}: vector"], "does-not-hold"),
+    (r"|x|^2 = x^2", [], "verified"),
+    # Tsai's \$ for a screw, a name (on main: "unknown macro \$")
+    (r"\$^T\$ = \mathbf{s}^T\mathbf{s} + \mathbf{s}_0^T\mathbf{s}_0",
+     [r"\$ = \begin{bmatrix}\mathbf{s}\\ \mathbf{s}_0\end{bmatrix}"], "verified"),
+    # a starred, left-indexed name in a --let (on main: "X^{*} is Featherstone's dual ...")
+    (r"({}^{B}\mathbf{X}_{A}^{*})^T{}^{B}\mathbf{X}_{A} = \mathbf{1}",
+     [r"{}^{B}\mathbf{X}_{A}^{*} = {}^{B}\mathbf{X}_{A}^{-T}",
+      r"{}^{B}\mathbf{X}_{A}: spatial transform"], "verified"),
+])
+def test_slices_bars_dollar_and_starred_names(latex, lets, verdict):
+    r = rigidsym.check_latex(latex, let=lets, repairs=False)
+    assert r.verdict == verdict, r.detail
+
+
+@pytest.mark.parametrize("latex, lets, match", [
+    (r"\mathbf{q}_{1:5} = \mathbf{v}", [r"\mathbf{q}: unit 4-vector"], "entries 1 to 5"),
+    (r"x_{1:2} = 1", [], "which is no vector"),
+    (r"|\mathbf{A}| = 1", [], r"write \\det"),
+    (r"\mathbf{J} = \int_0^1 \mathbf{C}^\alpha d\alpha", [r"\mathbf{C}: rotation"],
+     "does not integrate or sum"),
+])
+def test_what_item_4_refuses_it_refuses_with_a_reason(latex, lets, match):
+    with pytest.raises(LatexError, match=match):
+        rigidsym.check_latex(latex, let=lets)
+
+
+# ------------------------------------------------ item 6: the repair search bounded (issue 52)
+MR_SLIP = (r"e^{[\hat\omega]\theta} = I + \sin\theta\,[\hat\omega]^3 + (1 - \sin\theta)"
+           r"[\hat\omega]^2\cos\theta")  # far from Rodrigues: 5000 candidates take ~9 s
+
+
+def test_the_repair_search_stops_at_its_time_limit_and_says_so():
+    r = rigidsym.check_latex(MR_SLIP, let=[r"\hat\omega: unit vector; \theta: angle"],
+                             repair_seconds=1)
+    assert r.verdict == "does-not-hold" and r.counterexample
+    assert "search stopped after 1 s" in r.detail and "candidates tried" in r.detail, r.detail
+    n = int(r.detail.split("s, ")[-1].split(" candidates")[0])
+    assert 0 <= n < 5000
+
+
+@pytest.mark.parametrize("bad", [0, -1.0, float("nan"), "10", True])
+def test_a_bad_time_limit_is_refused_naming_it(bad):
+    with pytest.raises(ValueError, match="repair_seconds"):
+        rigidsym.check_latex(r"x = x", repair_seconds=bad)
+
+
+def test_an_ad_hoc_check_expects_nothing_and_angles_print_as_numbers(capsys):
+    code, out, err = _cli(capsys, "--latex", r"\mathbf{a}^T\mathbf{a} = \cos\psi", "--let",
+                          r"\mathbf{a}: unit vector; \psi: angle", "--no-repairs")
+    assert code == 1 and "as expected" not in out + err
+    import sympy as sp
+
+    r = rigidsym.check_latex(r"\mathbf{a}^T\mathbf{a} = \cos\psi",
+                             let=[r"\mathbf{a}: unit vector; \psi: angle"], repairs=False)
+    for name, value in r.counterexample["point"].items():  # evaluated: "-pi/2", not
+        assert sp.sstr(sp.sympify(value)) == value, (name, value)  # "2*atan(-1)"
