@@ -134,7 +134,44 @@ def _peers() -> dict[str, list[tuple[str, Callable]]]:
         f = In * pin.Motion(cdd, wd) + In.vxiv(pin.Motion(np.zeros(3), w))
         return [*f.angular, *f.linear]
     add("newton_euler_wrench", "pinocchio Inertia (I a + v x* I v)", pin, newton_euler)
+    _lie_peers(add, pr, pt)
     return P
+
+
+def _lie_peers(add, pr, pt) -> None:
+    """The Lie-group maps and their Jacobians in pytransform3d (issue 48: "none has the
+    operation" was wrong; angular first as rigidsym, quaternions w first there)."""
+    add("rotation_from_rotation_vector", "pytransform3d matrix_from_compact_axis_angle", pr,
+        lambda w: pr.matrix_from_compact_axis_angle(w).ravel())
+    add("rotation_vector_from_rotation", "pytransform3d compact_axis_angle_from_matrix", pr,
+        lambda Q: pr.compact_axis_angle_from_matrix(Q))
+    for side, sign in (("left", 1), ("right", -1)):
+        add(f"rotation_vector_{side}_jacobian", "pytransform3d left_jacobian_SO3" +
+            ("(-w)" if sign < 0 else ""), pr,
+            lambda w, sign=sign: pr.left_jacobian_SO3(sign * w).ravel())
+        add(f"rotation_vector_{side}_jacobian_inverse", "pytransform3d left_jacobian_SO3_inv" +
+            ("(-w)" if sign < 0 else ""), pr,
+            lambda w, sign=sign: pr.left_jacobian_SO3_inv(sign * w).ravel())
+    add("transform_from_exponential_coordinates",
+        "pytransform3d transform_from_exponential_coordinates", pt,
+        lambda xi: pt.transform_from_exponential_coordinates(xi).ravel())
+    add("exponential_coordinates_from_transform",
+        "pytransform3d exponential_coordinates_from_transform", pt,
+        lambda T: pt.exponential_coordinates_from_transform(T))
+    add("exponential_coordinates_left_jacobian", "pytransform3d left_jacobian_SE3", pt,
+        lambda xi: pt.left_jacobian_SE3(xi).ravel())
+    add("exponential_coordinates_left_jacobian_inverse", "pytransform3d left_jacobian_SE3_inv",
+        pt, lambda xi: pt.left_jacobian_SE3_inv(xi).ravel())
+
+    def er(Q):
+        q = pr.quaternion_from_matrix(Q)
+        return np.r_[q[1:], q[0]] * (1.0 if q[0] >= 0 else -1.0)
+    add("euler_rodrigues_from_rotation", "pytransform3d quaternion_from_matrix", pr, er)
+
+    def product(a, b):
+        q = pr.concatenate_quaternions(np.r_[a[3], a[:3]], np.r_[b[3], b[:3]])
+        return np.r_[q[1:], q[0]]
+    add("euler_rodrigues_product", "pytransform3d concatenate_quaternions", pr, product)
 
 
 _CACHE: dict = {}

@@ -220,7 +220,7 @@ def sweep(names, dtypes, backends, n_random=8, small=None, progress=None, refs=N
         for dt in dtypes:
             for seed in seeds:
                 for regime, pts in P.regimes(k, dt, n_random=n_random, small=small,
-                                             seed=seed).items():
+                                             seed=seed, derived=True).items():
                     # the refs cache is keyed by regime and index: one seed only
                     for r in judge(name, regime, pts, dt, backends,
                                    refs if len(seeds) == 1 else None, runner):

@@ -56,7 +56,10 @@ def _rot_ni(e, phi):
 
 
 def _rot_er(eta):
-    return {"Q": formula(_PR + "rotation_from_euler_rodrigues")(eta[:3, :], eta[3])}
+    # normalised (issue 48), as jaxlie and pytransform3d: (2.3) divided by eta . eta, a
+    # rotation for every eta != 0; the book's form returned |eta|^2 Q, which the next
+    # kernel's rotation check rejected at |eta| - 1 = 4e-9 (inside the unit tolerance)
+    return {"Q": formula(_PR + "rotation_from_quaternion")(eta)}
 
 
 def _ni_main(Q):
@@ -82,8 +85,9 @@ KERNELS: list[Kernel] = [
     Kernel(
         name="rotation_from_euler_rodrigues",
         summary="Rotation matrix from the Euler-Rodrigues parameters eta = [r; r0].",
-        formula="Q = (r0^2 - r.r) 1 + 2 r r^T + 2 r0 CPM(r)",
-        ids=("2.3",), sources=(_PR + "rotation_from_euler_rodrigues",),
+        formula="Q = ((r0^2 - r.r) 1 + 2 r r^T + 2 r0 CPM(r)) / (r.r + r0^2)",
+        ids=("2.3",), sources=(_PR + "rotation_from_quaternion",),
+        singular="eta = 0 (no rotation)",
         args=(Arg("eta", (4,), "unit", "Euler-Rodrigues parameters [r1, r2, r3, r0]"),),
         outputs=(Out("Q", (3, 3), "rotation matrix"),), build=_rot_er,
     ),

@@ -22,6 +22,8 @@ First principles used by the models (nothing of the book's closed forms is assum
 
 from __future__ import annotations
 
+from functools import cache
+
 import sympy as sp
 
 from rigidsym.declare import (
@@ -168,7 +170,16 @@ def _axis_point_by_solving(moment, d) -> sp.Matrix:
 
 
 def _wrench_model():
-    """Model with ||f|| rational: f = W e; n_A, n_P at free points A, P; the axis point."""
+    """Model with ||f|| rational: f = W e; n_A, n_P at free points A, P; the axis point.
+
+    Fresh copies of dicts derived once per process (six declarations share them; the axis
+    point's ``solve`` took a third of the section's build, once per declaration)."""
+    model, ex = _wrench_model_once()
+    return dict(model), dict(ex)
+
+
+@cache
+def _wrench_model_once():
     fv, moment, e, W = _force_system(unit=True)
     av, pv = vector("s37_a"), vector("s37_p")
     p0 = _axis_point_by_solving(moment, fv)

@@ -685,7 +685,7 @@ def exponential_coordinates_from_transform(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        T is not validated (its rotation block is read as a rotation).
+        check=True validates T: its last row [0, 0, 0, 1], its R a rotation.
 
         Accuracy: error <= 1.15 u (kappa + 1) in float64, <= 1.19 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 124 ulp in float64) over 9 regimes (docs/accuracy.md, kernels.accuracy).
 
@@ -766,7 +766,7 @@ def exponential_coordinates_left_jacobian_inverse(
 
         Accuracy: error <= 1.37 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 143 ulp in float64) over 3 regimes (docs/accuracy.md, kernels.accuracy); singular when theta = 2 pi k, k != 0 (theta = norm of w).
 
-        Generated; 1102 operations; math hash 403a221bb493ca86.
+        Generated; 369 operations; math hash 6ed4c1e9b516ac2d.
     """
     return _F.exponential_coordinates_left_jacobian_inverse(xi, out, check, on_singular, threads)
 
@@ -1225,9 +1225,9 @@ def rotation_from_euler_rodrigues(
 ) -> NDArray[np.floating]:
     r"""Rotation matrix from the Euler-Rodrigues parameters eta = [r; r0].
 
-        Q = (r0^2 - r.r) 1 + 2 r r^T + 2 r0 CPM(r)
+        Q = ((r0^2 - r.r) 1 + 2 r r^T + 2 r0 CPM(r)) / (r.r + r0^2)
 
-    Book: Eq. (2.3); composed of rigidsym.algebra.primitives.rotation_from_euler_rodrigues.
+    Book: Eq. (2.3); composed of rigidsym.algebra.primitives.rotation_from_quaternion.
 
     Args:
         eta: array-like (..., 4), unit; Euler-Rodrigues parameters [r1, r2, r3, r0]
@@ -1243,11 +1243,14 @@ def rotation_from_euler_rodrigues(
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
         ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
+        SingularConfigurationError: on the singular set (eta = 0 (no rotation)), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 140 ulp in float64) over 2 regimes (docs/accuracy.md, kernels.accuracy).
+        Singular set: eta = 0 (no rotation).
 
-        Generated; 33 operations; math hash 59342dd978b76a46.
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 140 ulp in float64) over 2 regimes (docs/accuracy.md, kernels.accuracy); singular when eta = 0 (no rotation).
+
+        Generated; 45 operations; math hash c12495cda1ede225.
     """
     return _F.rotation_from_euler_rodrigues(eta, out, check, on_singular, threads)
 

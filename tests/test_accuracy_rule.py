@@ -202,6 +202,30 @@ def test_peers_compute_the_kernels_outputs(name):
         np.testing.assert_allclose(v, want, rtol=1e-9, atol=1e-9, err_msg=label)
 
 
+LIE_PEERED = ["rotation_from_rotation_vector", "rotation_vector_from_rotation",
+              "rotation_vector_left_jacobian", "rotation_vector_right_jacobian",
+              "rotation_vector_left_jacobian_inverse", "rotation_vector_right_jacobian_inverse",
+              "transform_from_exponential_coordinates", "exponential_coordinates_from_transform",
+              "exponential_coordinates_left_jacobian",
+              "exponential_coordinates_left_jacobian_inverse", "euler_rodrigues_from_rotation",
+              "euler_rodrigues_product"]
+
+
+@pytest.mark.parametrize("name", LIE_PEERED)
+def test_lie_peers_compute_the_kernels_outputs(name):
+    """The Lie-group maps' and Jacobians' pytransform3d peers (issue 48: the table said none
+    has the operation) compute the kernel's outputs in its conventions."""
+    pytest.importorskip("pytransform3d", reason="the [oracles] extra")
+    k = A.R.kernel_of(name)
+    pts = A.P.regimes(k, np.float64, n_random=6, extremes=False)["random"]
+    arrays = A._round(pts, np.float64, k)
+    want = A.run_kernel(name, arrays, np.float64, "numpy")
+    got = O.evaluate(name, arrays, want.shape[1])
+    assert got, f"{name}: no peer"
+    for label, v in got.items():
+        np.testing.assert_allclose(v, want, rtol=1e-9, atol=1e-9, err_msg=label)
+
+
 def test_sumprod_is_a_dot_product_in_twice_the_precision():
     """``SumProd`` (Dot2, ``rigidsym.codegen.compensated``) within 1 u of the exact sum of
     products however much it cancels (here by 1e8: the plain sum is 1e7 u off)."""

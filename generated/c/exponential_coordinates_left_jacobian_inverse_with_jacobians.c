@@ -4,17 +4,16 @@
  * source: rigidsym.derivations.lie_maps.exponential_coordinates_left_jacobian_inverse (composed in rigidsym.derivations.kernels_spec)
  * equations: (barfoot:se3-jl-definition), (barfoot:se3-jl-xi), (barfoot:se3-jl-inverse)
  * template: c_kernel.c.j2
- * math hash: sha256:26a3a8dc99ccb39f
+ * math hash: sha256:20f074c2b57a3d71
  * sympy 1.14.0, rigidsym 0.2.0
- * operations: 5973
+ * operations: 2370
  */
 #include "exponential_coordinates_left_jacobian_inverse_with_jacobians.h"
 
 /* Exactly L = RIGIDSYM_LANES samples (RIGIDSYM_LANES_F32 in float32), always: every sample of every batch is computed by
  * this one function, never inlined, so that a sample's bits do not depend on its batch or
  * on where it sits in it (no scalar remainder of a vector loop, one vectorisation and FMA
- * contraction for all, and the sin/cos loop works on local aligned arrays only (no alias or
- * alignment versions of it)). Returns the mask of the samples it flags (singular):
+ * contraction for all). Returns the mask of the samples it flags (singular):
  * bit j for sample j.
  * T float: the float32 sample function (float inputs and outputs, the arithmetic of the
  * precision plan in the header; sin/cos in double from the widened inputs). */
@@ -32,7 +31,7 @@
  * NaN: a sample's verdict, like its bits, does not depend on its batch. Returns the number
  * of flagged samples among the first m. */
 
-/* Samples [i0, i0 + m) of the batch, m <= 64: a full block, or a partial one (the tail
+/* Samples [i0, i0 + m) of the batch, m <= RIGIDSYM_CHECK_BLOCK: a full block, or a partial one (the tail
  * of a batch, a batch of a few samples, one sample). m a multiple of RIGIDSYM_LANES: in place;
  * else through a block padded to the next multiple (its samples, then copies of its last one:
  * valid inputs). Every sample goes through the same lanes function, so its bits do not depend
@@ -49,52 +48,15 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_exponential_coordinates_left_jacobian_
     double *RIGIDSYM_RESTRICT out_J_D_xi)
 {
     int64_t count = 0;
-    RIGIDSYM_ALIGNED double trig_0[RIGIDSYM_LANES_TRIG];
-    RIGIDSYM_ALIGNED double col_xi_0[RIGIDSYM_LANES_TRIG];
-    RIGIDSYM_ALIGNED double col_xi_1[RIGIDSYM_LANES_TRIG];
-    RIGIDSYM_ALIGNED double col_xi_2[RIGIDSYM_LANES_TRIG];
-    for (int64_t j = 0; j < RIGIDSYM_LANES_TRIG; ++j) {
-        col_xi_0[j] = in_xi[6 * j + 0];
-        col_xi_1[j] = in_xi[6 * j + 1];
-        col_xi_2[j] = in_xi[6 * j + 2];
-    }
-    /* a SIMD loop evaluates the sin/cos values into local arrays, then a per-sample loop
-     * reads them; a lane whose argument is past RIGIDSYM_TRIG_MAX or not finite gets libm's
-     * scalar sin/cos in between (rare: the arguments are angles) */
-    int64_t far = 0;
-    RIGIDSYM_SIMD_FAR
-    for (int64_t j = 0; j < RIGIDSYM_LANES_TRIG; ++j) {
-        const double xi_0 = col_xi_0[j];
-        const double xi_1 = col_xi_1[j];
-        const double xi_2 = col_xi_2[j];
-        const double x0 = (xi_0*xi_0);
-        const double x1 = (xi_1*xi_1);
-        const double x2 = (xi_2*xi_2);
-        const double x3 = x0 + x1 + x2;
-
-        trig_0[j] = RIGIDSYM_VCOS(sqrt(x3));
-        far |= RIGIDSYM_TRIG_FAR(sqrt(x3));
-    }
-    if (far) {
-        for (int64_t j = 0; j < RIGIDSYM_LANES_TRIG; ++j) {
-        const double xi_0 = col_xi_0[j];
-        const double xi_1 = col_xi_1[j];
-        const double xi_2 = col_xi_2[j];
-        const double x0 = (xi_0*xi_0);
-        const double x1 = (xi_1*xi_1);
-        const double x2 = (xi_2*xi_2);
-        const double x3 = x0 + x1 + x2;
-
-            if (RIGIDSYM_TRIG_FAR(sqrt(x3)))
-                trig_0[j] = cos(sqrt(x3));
-        }
-    }
-    for (int64_t j = 0; j < RIGIDSYM_LANES_TRIG; ++j) {
-        count += (int64_t)(rigidsym_exponential_coordinates_left_jacobian_inverse_with_jacobians_sample_trig(
+    /* No division, root or branch: nothing to count per sample. A plain loop; the
+     * compiler's cost model decides on vectorisation (forcing it turns the strided
+     * row-major loads into gathers, measured slower). */
+    for (int64_t j = 0; j < RIGIDSYM_LANES; ++j) {
+        (void)rigidsym_exponential_coordinates_left_jacobian_inverse_with_jacobians_sample(
             in_xi + 6 * j,
-            trig_0[j],
             out_J + 36 * j,
-            out_J_D_xi + 216 * j) != 0) << j;
+            out_J_D_xi + 216 * j);
+
     }
     return count;
 }
@@ -107,52 +69,15 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_exponential_coordinates_left_jacobian_
     float *RIGIDSYM_RESTRICT out_J_D_xi)
 {
     int64_t count = 0;
-    RIGIDSYM_ALIGNED double trig_0[RIGIDSYM_LANES_F32];
-    RIGIDSYM_ALIGNED double col_xi_0[RIGIDSYM_LANES_F32];
-    RIGIDSYM_ALIGNED double col_xi_1[RIGIDSYM_LANES_F32];
-    RIGIDSYM_ALIGNED double col_xi_2[RIGIDSYM_LANES_F32];
+    /* No division, root or branch: nothing to count per sample. A plain loop; the
+     * compiler's cost model decides on vectorisation (forcing it turns the strided
+     * row-major loads into gathers, measured slower). */
     for (int64_t j = 0; j < RIGIDSYM_LANES_F32; ++j) {
-        col_xi_0[j] = in_xi[6 * j + 0];
-        col_xi_1[j] = in_xi[6 * j + 1];
-        col_xi_2[j] = in_xi[6 * j + 2];
-    }
-    /* a SIMD loop evaluates the sin/cos values into local arrays, then a per-sample loop
-     * reads them; a lane whose argument is past RIGIDSYM_TRIG_MAX or not finite gets libm's
-     * scalar sin/cos in between (rare: the arguments are angles) */
-    int64_t far = 0;
-    RIGIDSYM_SIMD_FAR
-    for (int64_t j = 0; j < RIGIDSYM_LANES_F32; ++j) {
-        const double xi_0 = col_xi_0[j];
-        const double xi_1 = col_xi_1[j];
-        const double xi_2 = col_xi_2[j];
-        const double x0 = (xi_0*xi_0);
-        const double x1 = (xi_1*xi_1);
-        const double x2 = (xi_2*xi_2);
-        const double x3 = x0 + x1 + x2;
-
-        trig_0[j] = RIGIDSYM_VCOS(sqrt(x3));
-        far |= RIGIDSYM_TRIG_FAR(sqrt(x3));
-    }
-    if (far) {
-        for (int64_t j = 0; j < RIGIDSYM_LANES_F32; ++j) {
-        const double xi_0 = col_xi_0[j];
-        const double xi_1 = col_xi_1[j];
-        const double xi_2 = col_xi_2[j];
-        const double x0 = (xi_0*xi_0);
-        const double x1 = (xi_1*xi_1);
-        const double x2 = (xi_2*xi_2);
-        const double x3 = x0 + x1 + x2;
-
-            if (RIGIDSYM_TRIG_FAR(sqrt(x3)))
-                trig_0[j] = cos(sqrt(x3));
-        }
-    }
-    for (int64_t j = 0; j < RIGIDSYM_LANES_F32; ++j) {
-        count += (int64_t)(rigidsym_exponential_coordinates_left_jacobian_inverse_with_jacobians_sample_trig_f32(
+        (void)rigidsym_exponential_coordinates_left_jacobian_inverse_with_jacobians_sample_f32(
             in_xi + 6 * j,
-            trig_0[j],
             out_J + 36 * j,
-            out_J_D_xi + 216 * j) != 0) << j;
+            out_J_D_xi + 216 * j);
+
     }
     return count;
 }
@@ -165,10 +90,10 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_exponential_coordinates_left_jacobian_
     double *RIGIDSYM_RESTRICT out_J,
     double *RIGIDSYM_RESTRICT out_J_D_xi)
 {
-    int64_t mask[64 / RIGIDSYM_LANES_TRIG], any = 0;
+    int64_t mask[RIGIDSYM_CHECK_BLOCK / RIGIDSYM_LANES], any = 0;
     rigidsym_fp_clear();
-    for (int64_t g = 0; g * RIGIDSYM_LANES_TRIG < nl; ++g) {
-        const int64_t j = g * RIGIDSYM_LANES_TRIG;
+    for (int64_t g = 0; g * RIGIDSYM_LANES < nl; ++g) {
+        const int64_t j = g * RIGIDSYM_LANES;
         mask[g] = rigidsym_exponential_coordinates_left_jacobian_inverse_with_jacobians_lanes(
             in_xi + 6 * j,
             out_J + 36 * j,
@@ -187,7 +112,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_exponential_coordinates_left_jacobian_
         return 0;
     int64_t count = 0;
     for (int64_t j = 0; j < m; ++j) {
-        int flagged = (int)((mask[j / RIGIDSYM_LANES_TRIG] >> (j % RIGIDSYM_LANES_TRIG)) & 1);
+        int flagged = (int)((mask[j / RIGIDSYM_LANES] >> (j % RIGIDSYM_LANES)) & 1);
         flagged |= rigidsym_any_nonfinite(out_J + 36 * j, 36);
         flagged |= rigidsym_any_nonfinite(out_J_D_xi + 216 * j, 216);
         flagged |= rigidsym_any_extreme(in_xi + 6 * j, 6);
@@ -209,7 +134,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_exponential_coordinates_left_jacobian_
     float *RIGIDSYM_RESTRICT out_J,
     float *RIGIDSYM_RESTRICT out_J_D_xi)
 {
-    int64_t mask[64 / RIGIDSYM_LANES_F32], any = 0;
+    int64_t mask[RIGIDSYM_CHECK_BLOCK / RIGIDSYM_LANES_F32], any = 0;
     rigidsym_fp_clear();
     for (int64_t g = 0; g * RIGIDSYM_LANES_F32 < nl; ++g) {
         const int64_t j = g * RIGIDSYM_LANES_F32;
@@ -253,16 +178,16 @@ static int64_t rigidsym_exponential_coordinates_left_jacobian_inverse_with_jacob
     double *RIGIDSYM_RESTRICT out_J,
     double *RIGIDSYM_RESTRICT out_J_D_xi)
 {
-    if (m % RIGIDSYM_LANES_TRIG == 0)
+    if (m % RIGIDSYM_LANES == 0)
         return rigidsym_exponential_coordinates_left_jacobian_inverse_with_jacobians_block(m, m,
             in_xi + 6 * i0,
             out_J + 36 * i0,
             out_J_D_xi + 216 * i0);
 
-    const int64_t nl = (m + RIGIDSYM_LANES_TRIG - 1) / RIGIDSYM_LANES_TRIG * RIGIDSYM_LANES_TRIG;
-    double pad_xi[6 * 64];
-    double pad_J[36 * 64];
-    double pad_J_D_xi[216 * 64];
+    const int64_t nl = (m + RIGIDSYM_LANES - 1) / RIGIDSYM_LANES * RIGIDSYM_LANES;
+    double pad_xi[6 * RIGIDSYM_CHECK_BLOCK];
+    double pad_J[36 * RIGIDSYM_CHECK_BLOCK];
+    double pad_J_D_xi[216 * RIGIDSYM_CHECK_BLOCK];
     for (int64_t j = 0; j < nl; ++j) {
         const int64_t s = i0 + (j < m ? j : m - 1);
         memcpy(pad_xi + 6 * j, in_xi + 6 * s,
@@ -291,9 +216,9 @@ static int64_t rigidsym_exponential_coordinates_left_jacobian_inverse_with_jacob
             out_J_D_xi + 216 * i0);
 
     const int64_t nl = (m + RIGIDSYM_LANES_F32 - 1) / RIGIDSYM_LANES_F32 * RIGIDSYM_LANES_F32;
-    float pad_xi[6 * 64];
-    float pad_J[36 * 64];
-    float pad_J_D_xi[216 * 64];
+    float pad_xi[6 * RIGIDSYM_CHECK_BLOCK];
+    float pad_J[36 * RIGIDSYM_CHECK_BLOCK];
+    float pad_J_D_xi[216 * RIGIDSYM_CHECK_BLOCK];
     for (int64_t j = 0; j < nl; ++j) {
         const int64_t s = i0 + (j < m ? j : m - 1);
         memcpy(pad_xi + 6 * j, in_xi + 6 * s,
@@ -315,12 +240,12 @@ int64_t RIGIDSYM_ISA_NAME(rigidsym_exponential_coordinates_left_jacobian_inverse
     float *RIGIDSYM_RESTRICT out_J,
     float *RIGIDSYM_RESTRICT out_J_D_xi)
 {
-    const int64_t nblocks = (n + 64 - 1) / 64;
+    const int64_t nblocks = (n + RIGIDSYM_CHECK_BLOCK - 1) / RIGIDSYM_CHECK_BLOCK;
     int64_t count = 0;
     if (threads <= 1 || nblocks <= 1) {
         for (int64_t b = 0; b < nblocks; ++b) {
-            const int64_t i0 = b * 64;
-            count += rigidsym_exponential_coordinates_left_jacobian_inverse_with_jacobians_run_f32(i0, n - i0 < 64 ? n - i0 : 64,
+            const int64_t i0 = b * RIGIDSYM_CHECK_BLOCK;
+            count += rigidsym_exponential_coordinates_left_jacobian_inverse_with_jacobians_run_f32(i0, n - i0 < RIGIDSYM_CHECK_BLOCK ? n - i0 : RIGIDSYM_CHECK_BLOCK,
                 in_xi,
                 out_J,
                 out_J_D_xi);
@@ -329,8 +254,8 @@ int64_t RIGIDSYM_ISA_NAME(rigidsym_exponential_coordinates_left_jacobian_inverse
     }
     RIGIDSYM_PARALLEL_FOR(threads)
     for (int64_t b = 0; b < nblocks; ++b) {
-        const int64_t i0 = b * 64;
-        count += rigidsym_exponential_coordinates_left_jacobian_inverse_with_jacobians_run_f32(i0, n - i0 < 64 ? n - i0 : 64,
+        const int64_t i0 = b * RIGIDSYM_CHECK_BLOCK;
+        count += rigidsym_exponential_coordinates_left_jacobian_inverse_with_jacobians_run_f32(i0, n - i0 < RIGIDSYM_CHECK_BLOCK ? n - i0 : RIGIDSYM_CHECK_BLOCK,
             in_xi,
             out_J,
             out_J_D_xi);
@@ -345,12 +270,12 @@ int64_t RIGIDSYM_ISA_NAME(rigidsym_exponential_coordinates_left_jacobian_inverse
     double *RIGIDSYM_RESTRICT out_J,
     double *RIGIDSYM_RESTRICT out_J_D_xi)
 {
-    const int64_t nblocks = (n + 64 - 1) / 64;
+    const int64_t nblocks = (n + RIGIDSYM_CHECK_BLOCK - 1) / RIGIDSYM_CHECK_BLOCK;
     int64_t count = 0;
     if (threads <= 1 || nblocks <= 1) {
         for (int64_t b = 0; b < nblocks; ++b) {
-            const int64_t i0 = b * 64;
-            count += rigidsym_exponential_coordinates_left_jacobian_inverse_with_jacobians_run(i0, n - i0 < 64 ? n - i0 : 64,
+            const int64_t i0 = b * RIGIDSYM_CHECK_BLOCK;
+            count += rigidsym_exponential_coordinates_left_jacobian_inverse_with_jacobians_run(i0, n - i0 < RIGIDSYM_CHECK_BLOCK ? n - i0 : RIGIDSYM_CHECK_BLOCK,
                 in_xi,
                 out_J,
                 out_J_D_xi);
@@ -359,8 +284,8 @@ int64_t RIGIDSYM_ISA_NAME(rigidsym_exponential_coordinates_left_jacobian_inverse
     }
     RIGIDSYM_PARALLEL_FOR(threads)
     for (int64_t b = 0; b < nblocks; ++b) {
-        const int64_t i0 = b * 64;
-        count += rigidsym_exponential_coordinates_left_jacobian_inverse_with_jacobians_run(i0, n - i0 < 64 ? n - i0 : 64,
+        const int64_t i0 = b * RIGIDSYM_CHECK_BLOCK;
+        count += rigidsym_exponential_coordinates_left_jacobian_inverse_with_jacobians_run(i0, n - i0 < RIGIDSYM_CHECK_BLOCK ? n - i0 : RIGIDSYM_CHECK_BLOCK,
             in_xi,
             out_J,
             out_J_D_xi);

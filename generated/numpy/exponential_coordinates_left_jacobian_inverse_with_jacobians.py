@@ -3,9 +3,9 @@
 # source: rigidsym.derivations.lie_maps.exponential_coordinates_left_jacobian_inverse (composed in rigidsym.derivations.kernels_spec)
 # equations: (barfoot:se3-jl-definition), (barfoot:se3-jl-xi), (barfoot:se3-jl-inverse)
 # template: numpy_kernel.py.j2
-# math hash: sha256:26a3a8dc99ccb39f
+# math hash: sha256:20f074c2b57a3d71
 # sympy 1.14.0, rigidsym 0.2.0
-# operations: 5973
+# operations: 2370
 """The left Jacobian inverse of SE(3) at xi = [w; v] (6 x 6, angular first), with the Jacobians of its outputs.
 
 the block inverse of [[J_l, 0], [Q, J_l]]; and d(output)/d(input) by sympy on the declared formula
@@ -19,47 +19,47 @@ the ``(n,)`` uint8 array of flags: 0 fine, ``SINGULAR`` (a denominator is exactl
 
 import numpy
 
-OPS = 5973
-MATH_HASH = "26a3a8dc99ccb39f"
+OPS = 2370
+MATH_HASH = "20f074c2b57a3d71"
 #: sample flags returned by the batch function
 SINGULAR, NONFINITE = 1, 2
 
 
 def _main(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5):
-    x0 = (xi_0*xi_0)
-    x1 = (xi_1*xi_1)
-    x2 = (xi_2*xi_2)
-    x3 = x0 + x1 + x2
-    x4 = numpy.where(numpy.less(x3, 4.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(1.867346851419009e-30*x3 + 7.3719898813306206e-29) + 2.9103449512297299e-27) + 1.1489581337744405e-25) + 4.5359049046753659e-24) + 1.7907034854075093e-22) + 7.0694140792589346e-21) + 2.7908929371625045e-19) + 1.1018005656720459e-17) + 4.3497373971161238e-16) + 1.717212411255569e-14) + 6.7793605926451654e-13) + 2.6765073061369358e-11) + 1.0568380277374986e-9) + 4.17535139757362e-8) + 1.6534391534391535e-6) + 6.6137566137566142e-5) + 0.0027777777777777779) + 0.16666666666666666, (-numpy.where(numpy.less(x3, 4.0), 2.0, numpy.sqrt(x3))*numpy.sin(numpy.where(numpy.less(x3, 4.0), 2.0, numpy.sqrt(x3))) - 2*numpy.cos(numpy.where(numpy.less(x3, 4.0), 2.0, numpy.sqrt(x3))) + 2)*numpy.where(numpy.less(x3, 4.0), 0.25, 1.0/x3)/(1 - numpy.cos(numpy.where(numpy.less(x3, 4.0), 2.0, numpy.sqrt(x3)))))
-    dc0 = numpy.where(numpy.less(x3, 2.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(1.7234372006616606e-24*x3 + 6.3502668665455129e-23) + 2.3279145310297621e-21) + 8.4832968951107215e-20) + 3.0699822308787551e-18) + 1.1018005656720459e-16) + 3.914763657404511e-15) + 1.3737699290044552e-13) + 4.7455524148516162e-12) + 1.6059043836821613e-10) + 5.2841901386874934e-9) + 1.670140559029448e-7) + 4.9603174603174603e-6) + 0.00013227513227513228) + 0.0027777777777777779, (0.5)*((1 - numpy.cos(numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3))))*(-numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3))*numpy.cos(numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3))) + numpy.sin(numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3))))*numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3)) - 2*(1 - numpy.cos(numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3))))*(-numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3))*numpy.sin(numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3))) - 2*numpy.cos(numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3))) + 2) - (-numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3))*numpy.sin(numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3))) - 2*numpy.cos(numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3))) + 2)*numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3))*numpy.sin(numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3))))*numpy.where(numpy.less(x3, 2.0), 0.25, 1.0/(x3*x3))/((1 - numpy.cos(numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3))))*(1 - numpy.cos(numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3))))))
-    dc1 = 2*xi_0
-    dx4_0 = dc0*dc1
-    dc2 = 2*xi_1
-    dx4_1 = dc0*dc2
-    dc3 = 2*xi_2
-    dx4_2 = dc0*dc3
-    x5 = (0.5)*x1
-    x6 = x4*x5
-    dx6_0 = dx4_0*x5
-    dc4 = x4*xi_1
-    dx6_1 = dc4 + dx4_1*x5
-    dx6_2 = dx4_2*x5
-    x7 = (0.5)*x2
-    x8 = x4*x7
-    dx8_0 = dx4_0*x7
-    dx8_1 = dx4_1*x7
-    dc5 = x4*xi_2
-    dx8_2 = dc5 + dx4_2*x7
-    x9 = -x6 - x8 + 1
-    dx9_0 = -dx6_0 - dx8_0
-    dx9_1 = -dx6_1 - dx8_1
-    dx9_2 = -dx6_2 - dx8_2
+    x0 = (xi_1*xi_1)
+    x1 = (xi_2*xi_2)
+    x2 = (xi_0*xi_0)
+    x3 = x0 + x2
+    x4 = x1 + x3
+    x5 = numpy.where(numpy.less(x4, 4.0), x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(1.867346851419009e-30*x4 + 7.3719898813306206e-29) + 2.9103449512297299e-27) + 1.1489581337744405e-25) + 4.5359049046753659e-24) + 1.7907034854075093e-22) + 7.0694140792589346e-21) + 2.7908929371625045e-19) + 1.1018005656720459e-17) + 4.3497373971161238e-16) + 1.717212411255569e-14) + 6.7793605926451654e-13) + 2.6765073061369358e-11) + 1.0568380277374986e-9) + 4.17535139757362e-8) + 1.6534391534391535e-6) + 6.6137566137566142e-5) + 0.0027777777777777779) + 0.16666666666666666, (-numpy.where(numpy.less(x4, 4.0), 2.0, numpy.sqrt(x4))*numpy.cos((0.5)*numpy.where(numpy.less(x4, 4.0), 2.0, numpy.sqrt(x4))) + 2*numpy.sin((0.5)*numpy.where(numpy.less(x4, 4.0), 2.0, numpy.sqrt(x4))))*numpy.where(numpy.less(x4, 4.0), 0.25, 1.0/x4)/numpy.sin((0.5)*numpy.where(numpy.less(x4, 4.0), 2.0, numpy.sqrt(x4))))
+    dc0 = 2*numpy.where(numpy.less(x4, 2.0), x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(1.7234372006616606e-24*x4 + 6.3502668665455129e-23) + 2.3279145310297621e-21) + 8.4832968951107215e-20) + 3.0699822308787551e-18) + 1.1018005656720459e-16) + 3.914763657404511e-15) + 1.3737699290044552e-13) + 4.7455524148516162e-12) + 1.6059043836821613e-10) + 5.2841901386874934e-9) + 1.670140559029448e-7) + 4.9603174603174603e-6) + 0.00013227513227513228) + 0.0027777777777777779, (0.25)*(2*numpy.where(numpy.less(x4, 2.0), 1.414213562373095, numpy.sqrt(x4))*numpy.sin((0.5)*numpy.where(numpy.less(x4, 2.0), 1.414213562373095, numpy.sqrt(x4)))*numpy.cos((0.5)*numpy.where(numpy.less(x4, 2.0), 1.414213562373095, numpy.sqrt(x4))) + numpy.where(numpy.less(x4, 2.0), 2.0, x4) - 8*(numpy.sin((0.5)*numpy.where(numpy.less(x4, 2.0), 1.414213562373095, numpy.sqrt(x4)))*numpy.sin((0.5)*numpy.where(numpy.less(x4, 2.0), 1.414213562373095, numpy.sqrt(x4)))))*numpy.where(numpy.less(x4, 2.0), 0.25, 1.0/(x4*x4))/(numpy.sin((0.5)*numpy.where(numpy.less(x4, 2.0), 1.414213562373095, numpy.sqrt(x4)))*numpy.sin((0.5)*numpy.where(numpy.less(x4, 2.0), 1.414213562373095, numpy.sqrt(x4)))))
+    dx5_0 = dc0*xi_0
+    dx5_1 = dc0*xi_1
+    dx5_2 = dc0*xi_2
+    x6 = (0.5)*x5
+    x7 = x0*x6
+    dc1 = (0.5)*x0
+    dx7_0 = dc1*dx5_0
+    dc2 = 2*x6
+    dc3 = dc2*xi_1
+    dx7_1 = dc1*dx5_1 + dc3
+    dx7_2 = dc1*dx5_2
+    x8 = x1*x6
+    dc4 = (0.5)*x1
+    dx8_0 = dc4*dx5_0
+    dx8_1 = dc4*dx5_1
+    dc5 = dc2*xi_2
+    dx8_2 = dc4*dx5_2 + dc5
+    x9 = -x7 - x8 + 1
+    dx9_0 = -dx7_0 - dx8_0
+    dx9_1 = -dx7_1 - dx8_1
+    dx9_2 = -dx7_2 - dx8_2
     x10 = (0.5)*xi_2
     x11 = (0.5)*xi_1
-    x12 = x4*xi_0
-    dx12_0 = dx4_0*xi_0 + x4
-    dx12_1 = dx4_1*xi_0
-    dx12_2 = dx4_2*xi_0
+    x12 = x5*xi_0
+    dx12_0 = dx5_0*xi_0 + x5
+    dx12_1 = dx5_1*xi_0
+    dx12_2 = dx5_2*xi_0
     x13 = x11*x12
     dx13_0 = dx12_0*x11
     dc6 = (0.5)*x12
@@ -75,1464 +75,408 @@ def _main(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5):
     dx16_1 = dx15_1 - 0.5
     x17 = -x10 + x13
     dx17_2 = dx13_2 - 0.5
-    x18 = -x3
-    x19 = (0.5)*x4
-    x20 = x18*x19 + 1
-    dc7 = (0.5)*x18
-    dc8 = dc1*x19
-    dc9 = -dc8
-    dx20_0 = dc7*dx4_0 + dc9
-    dc10 = dc2*x19
-    dc11 = -dc10
-    dx20_1 = dc11 + dc7*dx4_1
-    dc12 = dc3*x19
-    dc13 = -dc12
-    dx20_2 = dc13 + dc7*dx4_2
-    x21 = x20 + x6
-    dx21_0 = dx20_0 + dx6_0
-    dx21_1 = dx20_1 + dx6_1
-    dx21_2 = dx20_2 + dx6_2
-    x22 = (0.5)*xi_0
-    x23 = x4*xi_1
-    dc14 = dx4_0*xi_1
-    dx23_0 = dc14
-    dc15 = dx4_1*xi_1
-    dx23_1 = dc15 + x4
-    dc16 = dx4_2*xi_1
-    dx23_2 = dc16
-    x24 = x10*x23
-    dx24_0 = dx23_0*x10
-    dx24_1 = dx23_1*x10
-    dx24_2 = dx23_2*x10 + (0.5)*x23
-    x25 = x22 + x24
-    dx25_0 = dx24_0 + 0.5
-    x26 = x11 + x15
-    dx26_1 = dx15_1 + 0.5
-    x27 = -x22 + (0.5)*x4*xi_1*xi_2
-    dc17 = (0.5)*xi_2
-    dx27_0 = dc14*dc17 - 0.5
-    dx27_1 = dc15*dc17 + (0.5)*dc5
-    dx27_2 = dc16*dc17 + (0.5)*dc4
-    x28 = x20 + x8
-    dx28_0 = dx20_0 + dx8_0
-    dx28_1 = dx20_1 + dx8_1
-    dx28_2 = dx20_2 + dx8_2
-    x29 = numpy.where(numpy.less(x3, 1.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(4.7794773323873853e-14 - 1.5619206968586225e-16*x3) - 1.1470745597729725e-11) + 2.08767569878681e-9) - 2.7557319223985888e-7) + 2.4801587301587302e-5) - 0.0013888888888888889) + 0.041666666666666664) - 0.5, (numpy.cos(numpy.where(numpy.less(x3, 1.0), 1.0, numpy.sqrt(x3))) - 1)*numpy.where(numpy.less(x3, 1.0), 1.0, 1.0/x3))
-    dc18 = numpy.where(numpy.less(x3, 2.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(3.6992858609809485e-18 - 8.8967913924505729e-21*x3) - 1.249536557486898e-15) + 3.3456341326711696e-13) - 6.882447358637835e-11) + 1.043837849393405e-8) - 1.1022927689594355e-6) + 7.4404761904761911e-5) - 0.0027777777777777779) + 0.041666666666666664, (0.5)*(-numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3))*numpy.sin(numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3))) - 2*numpy.cos(numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3))) + 2)*numpy.where(numpy.less(x3, 2.0), 0.25, 1.0/(x3*x3)))
-    dx29_0 = dc1*dc18
-    dx29_1 = dc18*dc2
-    dx29_2 = dc18*dc3
-    x30 = x29*xi_4
-    dx30_0 = dx29_0*xi_4
-    dx30_1 = dx29_1*xi_4
-    dx30_2 = dx29_2*xi_4
-    x31 = x29*xi_5
-    dx31_0 = dx29_0*xi_5
-    dx31_1 = dx29_1*xi_5
-    dx31_2 = dx29_2*xi_5
-    x32 = numpy.where(numpy.less(x3, 1.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(8.2206352466243295e-18*x3 - 2.8114572543455206e-15) + 7.6471637318198164e-13) - 1.6059043836821613e-10) + 2.505210838544172e-8) - 2.7557319223985893e-6) + 0.00019841269841269841) - 0.0083333333333333332) + 0.16666666666666666, (numpy.where(numpy.less(x3, 1.0), 1.0, numpy.sqrt(x3)) - numpy.sin(numpy.where(numpy.less(x3, 1.0), 1.0, numpy.sqrt(x3))))*numpy.where(numpy.less(x3, 1.0), 1.0, 1.0/(x3*numpy.sqrt(x3))))
-    dc19 = numpy.where(numpy.less(x3, 4.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(8.8244455617243787e-46 - 5.6796905715705686e-49*x3) - 1.2351282304560222e-42) + 1.5484148733811025e-39) - 1.7274503431157927e-36) + 1.7025750581749252e-33) - 1.4702951752382032e-30) + 1.1020427836554655e-27) - 7.0916453128229206e-25) + 3.8681701706306839e-22) - 1.7615646957052136e-19) + 6.5765081972994636e-17) - 1.9680200780418645e-14) + 4.5882982390918896e-12) - 8.0295219184108074e-10) + 1.0020843354176688e-7) - 8.2671957671957678e-6) + 0.00039682539682539683) - 0.0083333333333333332, (0.5)*((1 - numpy.cos(numpy.where(numpy.less(x3, 4.0), 2.0, numpy.sqrt(x3))))*numpy.where(numpy.less(x3, 4.0), 2.0, numpy.sqrt(x3)) - 3*numpy.where(numpy.less(x3, 4.0), 2.0, numpy.sqrt(x3)) + 3*numpy.sin(numpy.where(numpy.less(x3, 4.0), 2.0, numpy.sqrt(x3))))*numpy.where(numpy.less(x3, 4.0), 0.03125, 1.0/((x3*x3)*numpy.sqrt(x3))))
-    dx32_0 = dc1*dc19
-    dx32_1 = dc19*dc2
-    dx32_2 = dc19*dc3
-    x33 = x32*xi_4
-    dx33_0 = dx32_0*xi_4
-    dx33_1 = dx32_1*xi_4
-    dx33_2 = dx32_2*xi_4
-    x34 = x33*xi_1
-    dx34_0 = dx33_0*xi_1
-    dx34_1 = dx33_1*xi_1 + x33
-    dx34_2 = dx33_2*xi_1
-    dc20 = x32*xi_1
-    dx34_4 = dc20
-    x35 = x32*xi_5
-    dx35_0 = dx32_0*xi_5
-    dx35_1 = dx32_1*xi_5
-    dx35_2 = dx32_2*xi_5
-    x36 = x35*xi_2
-    dx36_0 = dx35_0*xi_2
-    dx36_1 = dx35_1*xi_2
-    dx36_2 = dx35_2*xi_2 + x35
-    dc21 = x32*xi_2
-    dx36_5 = dc21
-    x37 = (xi_1*xi_1*xi_1)
-    dx37_1 = 3*(xi_1*xi_1)
-    x38 = numpy.where(numpy.less(x3, 2.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(1.7793582784901148e-21*x3 - 8.2206352466243297e-19) + 3.1238413937172451e-16) - 9.5589546647747705e-14) + 2.2941491195459449e-11) - 4.17535139757362e-9) + 5.5114638447971777e-7) - 4.9603174603174603e-5) + 0.0027777777777777779) - 0.083333333333333329, (-numpy.where(numpy.less(x3, 2.0), 2.0, x3) - 2*numpy.cos(numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3))) + 2)*numpy.where(numpy.less(x3, 2.0), 0.25, 1.0/(x3*x3)))
-    dc22 = numpy.where(numpy.less(x3, 4.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(2.7046145578907471e-50*x3 - 4.4122227808621894e-47) + 6.500674897136959e-44) - 8.6023048521172363e-41) + 1.0161472606563485e-37) - 1.0641094113593283e-34) + 9.8019678349213543e-32) - 7.8717341689676112e-29) + 5.4551117790945548e-26) - 3.2234751421922368e-23) + 1.6014224506411032e-20) - 6.5765081972994638e-18) + 2.1866889756020719e-15) - 5.7353727988648621e-13) + 1.1470745597729724e-10) - 1.670140559029448e-8) + 1.6534391534391535e-6) - 9.9206349206349206e-5) + 0.0027777777777777779, ((-numpy.where(numpy.less(x3, 4.0), 2.0, numpy.sqrt(x3)) + numpy.sin(numpy.where(numpy.less(x3, 4.0), 2.0, numpy.sqrt(x3))))*numpy.where(numpy.less(x3, 4.0), 2.0, numpy.sqrt(x3)) + 2*numpy.where(numpy.less(x3, 4.0), 4.0, x3) + 4*numpy.cos(numpy.where(numpy.less(x3, 4.0), 2.0, numpy.sqrt(x3))) - 4)*numpy.where(numpy.less(x3, 4.0), 0.015625, 1.0/(x3*x3*x3)))
-    dx38_0 = dc1*dc22
-    dx38_1 = dc2*dc22
-    dx38_2 = dc22*dc3
-    x39 = x37*x38
-    dx39_0 = dx38_0*x37
-    dx39_1 = dx37_1*x38 + dx38_1*x37
-    dx39_2 = dx38_2*x37
-    x40 = (xi_2*xi_2*xi_2)
-    dx40_2 = 3*(xi_2*xi_2)
-    x41 = x38*x40
-    dx41_0 = dx38_0*x40
-    dx41_1 = dx38_1*x40
-    dx41_2 = dx38_2*x40 + dx40_2*x38
-    x42 = (0.5)*x37
-    x43 = x33*x42
-    dx43_0 = dx33_0*x42
-    dc23 = (0.5)*x33
-    dx43_1 = dc23*dx37_1 + dx33_1*x42
-    dx43_2 = dx33_2*x42
-    dx43_4 = x32*x42
-    x44 = (0.5)*x40
-    x45 = x35*x44
-    dx45_0 = dx35_0*x44
-    dx45_1 = dx35_1*x44
-    dc24 = (0.5)*x35
-    dx45_2 = dc24*dx40_2 + dx35_2*x44
-    dx45_5 = x32*x44
-    x46 = xi_0*xi_3
-    x47 = x38*x46
-    dx47_0 = dx38_0*x46 + x38*xi_3
-    dx47_1 = dx38_1*x46
-    dx47_2 = dx38_2*x46
-    dc25 = x38*xi_0
-    dx47_3 = dc25
-    x48 = xi_1*xi_4
-    x49 = x2*x38
-    dx49_0 = dx38_0*x2
-    dx49_1 = dx38_1*x2
-    dc26 = dc3*x38
-    dx49_2 = dc26 + dx38_2*x2
-    x50 = xi_2*xi_5
-    x51 = x1*x38
-    dx51_0 = dx38_0*x1
-    dc27 = dc2*x38
-    dx51_1 = dc27 + dx38_1*x1
-    dx51_2 = dx38_2*x1
-    x52 = x32*xi_3
-    dx52_0 = dx32_0*xi_3
-    dx52_1 = dx32_1*xi_3
-    dx52_2 = dx32_2*xi_3
-    x53 = x1*x22
-    dx53_1 = dc2*x22
-    x54 = x52*x53
-    dc28 = (0.5)*x52
-    dc29 = dc28*x1
-    dx54_0 = dc29 + dx52_0*x53
-    dx54_1 = dx52_1*x53 + dx53_1*x52
-    dx54_2 = dx52_2*x53
-    dc30 = x32*x53
-    dx54_3 = dc30
-    x55 = x2*x52
-    dx55_0 = dx52_0*x2
-    dx55_1 = dx52_1*x2
-    dx55_2 = dc3*x52 + dx52_2*x2
-    dc31 = x2*x32
-    dx55_3 = dc31
-    x56 = x22*x55
-    dc32 = (0.5)*x55
-    dx56_0 = dc32 + dx55_0*x22
-    dx56_1 = dx55_1*x22
-    dx56_2 = dx55_2*x22
-    dx56_3 = dx55_3*x22
-    x57 = x11*x2
-    dx57_2 = dc3*x11
-    x58 = x33*x57
-    dx58_0 = dx33_0*x57
-    dx58_1 = dc23*x2 + dx33_1*x57
-    dx58_2 = dx33_2*x57 + dx57_2*x33
-    dx58_4 = x32*x57
-    x59 = x1*x10
-    dx59_1 = dc2*x10
-    x60 = x35*x59
-    dx60_0 = dx35_0*x59
-    dx60_1 = dx35_1*x59 + dx59_1*x35
-    dx60_2 = dc24*x1 + dx35_2*x59
-    dc33 = x32*x59
-    dx60_5 = dc33
-    x61 = x37*xi_4
-    dx61_1 = dx37_1*xi_4
-    x62 = numpy.where(numpy.less(x3, 1.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(4.7794773323873853e-14 - 1.5619206968586225e-16*x3) - 1.1470745597729725e-11) + 2.08767569878681e-9) - 2.7557319223985888e-7) + 2.4801587301587302e-5) - 0.0013888888888888889) + 0.041666666666666664) + 0.5, (numpy.where(numpy.less(x3, 1.0), 1.0, x3) + numpy.cos(numpy.where(numpy.less(x3, 1.0), 1.0, numpy.sqrt(x3))) - 1)*numpy.where(numpy.less(x3, 1.0), 1.0, 1.0/x3))
-    dc34 = numpy.where(numpy.less(x3, 2.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(3.6992858609809485e-18 - 8.8967913924505729e-21*x3) - 1.249536557486898e-15) + 3.3456341326711696e-13) - 6.882447358637835e-11) + 1.043837849393405e-8) - 1.1022927689594355e-6) + 7.4404761904761911e-5) - 0.0027777777777777779) + 0.041666666666666664, (0.5)*((2*numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3)) - numpy.sin(numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3))))*numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3)) - 2*numpy.where(numpy.less(x3, 2.0), 2.0, x3) - 2*numpy.cos(numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3))) + 2)*numpy.where(numpy.less(x3, 2.0), 0.25, 1.0/(x3*x3)))
-    dx62_0 = dc1*dc34
-    dx62_1 = dc2*dc34
-    dx62_2 = dc3*dc34
-    x63 = x19*x62
-    dc35 = dx4_0*x62
-    dx63_0 = (0.5)*dc35 + dx62_0*x19
-    dc36 = dx4_1*x62
-    dx63_1 = (0.5)*dc36 + dx62_1*x19
-    dc37 = dx4_2*x62
-    dx63_2 = (0.5)*dc37 + dx62_2*x19
-    x64 = x40*xi_5
-    dx64_2 = dx40_2*xi_5
-    x65 = x4*xi_3
-    dc38 = dx4_0*xi_3
-    dx65_0 = dc38
-    dc39 = dx4_1*xi_3
-    dx65_1 = dc39
-    dc40 = dx4_2*xi_3
-    dx65_2 = dc40
-    x66 = x62*x65
-    dx66_0 = dx62_0*x65 + dx65_0*x62
-    dx66_1 = dx62_1*x65 + dx65_1*x62
-    dx66_2 = dx62_2*x65 + dx65_2*x62
-    dx66_3 = x4*x62
-    x67 = x22*x65
-    dx67_0 = dx65_0*x22 + (0.5)*x65
-    dx67_1 = dx65_1*x22
-    dx67_2 = dx65_2*x22
-    dx67_3 = x22*x4
-    x68 = x2*x67
-    dx68_0 = dx67_0*x2
-    dx68_1 = dx67_1*x2
-    dx68_2 = dc3*x67 + dx67_2*x2
-    dx68_3 = dx67_3*x2
-    x69 = x4*x62
-    dx69_0 = dc35 + dx62_0*x4
-    dx69_1 = dc36 + dx62_1*x4
-    dx69_2 = dc37 + dx62_2*x4
-    x70 = x57*xi_4
-    dc41 = x2*xi_4
-    dx70_1 = (0.5)*dc41
-    dx70_2 = dx57_2*xi_4
-    x71 = x59*xi_5
-    dx71_1 = dx59_1*xi_5
-    dc42 = x1*xi_5
-    dx71_2 = (0.5)*dc42
-    x72 = numpy.where(numpy.less(x3, 4.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(1.1359381143141137e-48*x3 - 1.7648891123448757e-45) + 2.4702564609120444e-42) - 3.096829746762205e-39) + 3.4549006862315854e-36) - 3.4051501163498504e-33) + 2.9405903504764064e-30) - 2.204085567310931e-27) + 1.4183290625645841e-24) - 7.7363403412613678e-22) + 3.5231293914104271e-19) - 1.3153016394598927e-16) + 3.936040156083729e-14) - 9.1765964781837793e-12) + 1.6059043836821615e-9) - 2.0041686708353376e-7) + 1.6534391534391536e-5) - 0.00079365079365079365) + 0.016666666666666666, (numpy.where(numpy.less(x3, 4.0), 2.0, numpy.sqrt(x3))*numpy.cos(numpy.where(numpy.less(x3, 4.0), 2.0, numpy.sqrt(x3))) + 2*numpy.where(numpy.less(x3, 4.0), 2.0, numpy.sqrt(x3)) - 3*numpy.sin(numpy.where(numpy.less(x3, 4.0), 2.0, numpy.sqrt(x3))))*numpy.where(numpy.less(x3, 4.0), 0.03125, 1.0/((x3*x3)*numpy.sqrt(x3))))
-    dc43 = numpy.where(numpy.less(x3, 4.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(2.0446886057654048e-47 - 1.2579602594840682e-50*x3) - 3.0003114909862885e-44) + 3.952410337459271e-41) - 4.6452446201433075e-38) + 4.8368609607242191e-35) - 4.4266951512548055e-32) + 3.5287084205716874e-29) - 2.4244941240420241e-26) + 1.4183290625645841e-23) - 6.962706307135231e-21) + 2.8185035131283417e-18) - 9.2071114762192488e-16) + 2.3616240936502375e-13) - 4.5882982390918898e-11) + 6.423617534728646e-9) - 6.0125060125060129e-7) + 3.3068783068783071e-5) - 0.00079365079365079365, (0.5)*((-numpy.where(numpy.less(x3, 4.0), 2.0, numpy.sqrt(x3))*numpy.sin(numpy.where(numpy.less(x3, 4.0), 2.0, numpy.sqrt(x3))) - 2*numpy.cos(numpy.where(numpy.less(x3, 4.0), 2.0, numpy.sqrt(x3))) + 2)*numpy.where(numpy.less(x3, 4.0), 2.0, numpy.sqrt(x3)) - 5*numpy.where(numpy.less(x3, 4.0), 2.0, numpy.sqrt(x3))*numpy.cos(numpy.where(numpy.less(x3, 4.0), 2.0, numpy.sqrt(x3))) - 10*numpy.where(numpy.less(x3, 4.0), 2.0, numpy.sqrt(x3)) + 15*numpy.sin(numpy.where(numpy.less(x3, 4.0), 2.0, numpy.sqrt(x3))))*numpy.where(numpy.less(x3, 4.0), 0.0078125, 1.0/((x3*x3*x3)*numpy.sqrt(x3))))
-    dx72_0 = dc1*dc43
-    dx72_1 = dc2*dc43
-    dx72_2 = dc3*dc43
-    x73 = (0.25)*x1
-    x74 = (0.25)*x2
-    x75 = (0.25)*x0 + x73 + x74
-    x76 = x75 - 1
-    x77 = x72*x76
-    dc44 = x72*xi_0
-    dc45 = (0.5)*dc44 + dx72_0*x76
-    dx77_0 = dc45
-    dc46 = (0.5)*x72
-    dc47 = dc46*xi_1 + dx72_1*x76
-    dx77_1 = dc47
-    dc48 = dc46*xi_2 + dx72_2*x76
-    dx77_2 = dc48
-    x78 = x46*x77
-    dx78_0 = dx77_0*x46 + x77*xi_3
-    dx78_1 = dx77_1*x46
-    dx78_2 = dx77_2*x46
-    dx78_3 = x77*xi_0
-    x79 = x2*x48
-    dx79_1 = dc41
-    dx79_2 = dc3*x48
-    dc49 = x2*xi_1
-    dx79_4 = dc49
-    x80 = x1*x50
-    dx80_1 = dc2*x50
-    dx80_2 = dc42
-    dc50 = x1*xi_2
-    dx80_5 = dc50
-    x81 = 2*x0 + 2*x1 + 2*x2
-    x82 = -x81
-    x83 = x4*x82
-    dc51 = dx4_0*x82
-    dc52 = x4*xi_0
-    dc53 = 4*dc52
-    dx83_0 = dc51 - dc53
-    dc54 = dx4_1*x82
-    dc55 = 4*dc4
-    dx83_1 = dc54 - dc55
-    dc56 = dx4_2*x82
-    dc57 = 4*dc5
-    dx83_2 = dc56 - dc57
-    x84 = x11*x33
-    dx84_0 = dx33_0*x11
-    dx84_1 = dc23 + dx33_1*x11
-    dx84_2 = dx33_2*x11
-    dc58 = x11*x32
-    dx84_4 = dc58
-    x85 = x61*x72
-    dx85_0 = dx72_0*x61
-    dx85_1 = dx61_1*x72 + dx72_1*x61
-    dx85_2 = dx72_2*x61
-    dx85_4 = x37*x72
-    x86 = (x4*x4)
-    dc59 = 2*x4
-    dx86_0 = dc59*dx4_0
-    dx86_1 = dc59*dx4_1
-    dx86_2 = dc59*dx4_2
-    x87 = (x3*x3)
-    dc60 = 4*xi_0
-    dx87_0 = dc60*x3
-    dc61 = 4*xi_1
-    dx87_1 = dc61*x3
-    dc62 = 4*xi_2
-    dx87_2 = dc62*x3
-    x88 = (0.25)*x87
-    x89 = x86*x88
-    dc63 = dx87_0*x86
-    dx89_0 = (0.25)*dc63 + dx86_0*x88
-    dc64 = dx87_1*x86
-    dx89_1 = (0.25)*dc64 + dx86_1*x88
-    dc65 = dx87_2*x86
-    dx89_2 = (0.25)*dc65 + dx86_2*x88
-    x90 = x85*x89
-    dx90_0 = dx85_0*x89 + dx89_0*x85
-    dx90_1 = dx85_1*x89 + dx89_1*x85
-    dx90_2 = dx85_2*x89 + dx89_2*x85
-    dx90_4 = dx85_4*x89
-    x91 = x10*x35
-    dx91_0 = dx35_0*x10
-    dx91_1 = dx35_1*x10
-    dx91_2 = dc24 + dx35_2*x10
-    dc66 = x10*x32
-    dx91_5 = dc66
-    x92 = x64*x72
-    dx92_0 = dx72_0*x64
-    dx92_1 = dx72_1*x64
-    dx92_2 = dx64_2*x72 + dx72_2*x64
-    dx92_5 = x40*x72
-    x93 = x89*x92
-    dx93_0 = dx89_0*x92 + dx92_0*x89
-    dx93_1 = dx89_1*x92 + dx92_1*x89
-    dx93_2 = dx89_2*x92 + dx92_2*x89
-    dx93_5 = dx92_5*x89
-    x94 = x72*x87
-    dx94_0 = dx72_0*x87 + dx87_0*x72
-    dx94_1 = dx72_1*x87 + dx87_1*x72
-    dx94_2 = dx72_2*x87 + dx87_2*x72
-    x95 = x86*x94
-    dx95_0 = dx86_0*x94 + dx94_0*x86
-    dx95_1 = dx86_1*x94 + dx94_1*x86
-    dx95_2 = dx86_2*x94 + dx94_2*x86
-    x96 = x46*x95
-    dx96_0 = dx95_0*x46 + x95*xi_3
-    dx96_1 = dx95_1*x46
-    dx96_2 = dx95_2*x46
-    dx96_3 = x95*xi_0
-    x97 = x73*x96
-    dx97_0 = dx96_0*x73
-    dc67 = (0.5)*x96
-    dx97_1 = dc67*xi_1 + dx96_1*x73
-    dx97_2 = dx96_2*x73
-    dx97_3 = dx96_3*x73
-    x98 = x74*x96
-    dx98_0 = dx96_0*x74
-    dx98_1 = dx96_1*x74
-    dx98_2 = dc67*xi_2 + dx96_2*x74
-    dx98_3 = dx96_3*x74
-    x99 = x48*x74*x95
-    dc68 = x48*x74
-    dx99_0 = dc68*dx95_0
-    dc69 = x74*x95
-    dx99_1 = dc68*dx95_1 + dc69*xi_4
-    dx99_2 = dc17*x48*x95 + dc68*dx95_2
-    dx99_4 = dc69*xi_1
-    x100 = x73*x95
-    dx100_0 = dx95_0*x73
-    dc70 = (0.5)*xi_1
-    dx100_1 = dc70*x95 + dx95_1*x73
-    dx100_2 = dx95_2*x73
-    x101 = x100*x50
-    dx101_0 = dx100_0*x50
-    dx101_1 = dx100_1*x50
-    dx101_2 = dx100_2*x50 + x100*xi_5
-    dc71 = x100*xi_2
-    dx101_5 = dc71
-    x102 = x19*x81
-    dc72 = dx4_0*x81
-    dc73 = dc60*x19
-    dx102_0 = (0.5)*dc72 + dc73
-    dc74 = dx4_1*x81
-    dc75 = dc61*x19
-    dx102_1 = (0.5)*dc74 + dc75
-    dc76 = dx4_2*x81
-    dc77 = dc62*x19
-    dx102_2 = (0.5)*dc76 + dc77
-    x103 = x3 + 2
-    x104 = -x103
-    x105 = x104*x19
-    dc78 = dx4_0*x104
-    dx105_0 = (0.5)*dc78 + dc9
-    dc79 = dx4_1*x104
-    dx105_1 = dc11 + (0.5)*dc79
-    dc80 = dx4_2*x104
-    dx105_2 = dc13 + (0.5)*dc80
-    x106 = x33*x37
-    dx106_0 = dx33_0*x37
-    dx106_1 = dx33_1*x37 + dx37_1*x33
-    dx106_2 = dx33_2*x37
-    dx106_4 = x32*x37
-    x107 = x35*x40
-    dx107_0 = dx35_0*x40
-    dx107_1 = dx35_1*x40
-    dx107_2 = dx35_2*x40 + dx40_2*x35
-    dx107_5 = x32*x40
-    x108 = x72*xi_3
-    dx108_0 = dx72_0*xi_3
-    dx108_1 = dx72_1*xi_3
-    dx108_2 = dx72_2*xi_3
-    x109 = x108*x81
-    dx109_0 = dc60*x108 + dx108_0*x81
-    dx109_1 = dc61*x108 + dx108_1*x81
-    dx109_2 = dc62*x108 + dx108_2*x81
-    dx109_3 = x72*x81
-    x110 = x109*x4
-    dx110_0 = dx109_0*x4 + dx4_0*x109
-    dx110_1 = dx109_1*x4 + dx4_1*x109
-    dx110_2 = dx109_2*x4 + dx4_2*x109
-    dx110_3 = dx109_3*x4
-    x111 = x22*x4
-    dx111_0 = dx4_0*x22 + (0.5)*x4
-    dx111_1 = dx4_1*x22
-    dx111_2 = dx4_2*x22
-    x112 = x70*x72
-    dx112_0 = dx72_0*x70
-    dx112_1 = dx70_1*x72 + dx72_1*x70
-    dx112_2 = dx70_2*x72 + dx72_2*x70
-    dx112_4 = x57*x72
-    x113 = x4*x81
-    dx113_0 = dc53 + dc72
-    dx113_1 = dc55 + dc74
-    dx113_2 = dc57 + dc76
-    x114 = x71*x72
-    dx114_0 = dx72_0*x71
-    dx114_1 = dx71_1*x72 + dx72_1*x71
-    dx114_2 = dx71_2*x72 + dx72_2*x71
-    dx114_5 = x59*x72
-    x115 = (0.25)*x86
-    x116 = x115*x81
-    dc81 = dx86_0*x81
-    dc82 = dc60*x115
-    dx116_0 = (0.25)*dc81 + dc82
-    dc83 = dx86_1*x81
-    dc84 = dc61*x115
-    dx116_1 = (0.25)*dc83 + dc84
-    dc85 = dx86_2*x81
-    dc86 = dc62*x115
-    dx116_2 = (0.25)*dc85 + dc86
-    x117 = x104*x4
-    dc87 = dc1*x4
-    dx117_0 = dc78 - dc87
-    dc88 = 2*dc4
-    dx117_1 = dc79 - dc88
-    dc89 = 2*dc5
-    dx117_2 = dc80 - dc89
-    x118 = x32*x46
-    dx118_0 = dx32_0*x46 + x32*xi_3
-    dx118_1 = dx32_1*x46
-    dx118_2 = dx32_2*x46
-    dc90 = x32*xi_0
-    dx118_3 = dc90
-    x119 = x81*x86
-    dx119_0 = dc60*x86 + dc81
-    dx119_1 = dc61*x86 + dc83
-    dx119_2 = dc62*x86 + dc85
-    x120 = x118*x119
-    dx120_0 = dx118_0*x119 + dx119_0*x118
-    dx120_1 = dx118_1*x119 + dx119_1*x118
-    dx120_2 = dx118_2*x119 + dx119_2*x118
-    dx120_3 = dx118_3*x119
-    x121 = x119*x74
-    dx121_0 = dx119_0*x74
-    dx121_1 = dx119_1*x74
-    dx121_2 = dc17*x119 + dx119_2*x74
-    x122 = x119*x73
-    dx122_0 = dx119_0*x73
-    dx122_1 = dc70*x119 + dx119_1*x73
-    dx122_2 = dx119_2*x73
-    x123 = numpy.where(numpy.less(x3, 1.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(1.5619206968586225e-16*x3 - 4.7794773323873853e-14) + 1.1470745597729725e-11) - 2.08767569878681e-9) + 2.7557319223985888e-7) - 2.4801587301587302e-5) + 0.0013888888888888889) - 0.041666666666666664) + 0.5, (1 - numpy.cos(numpy.where(numpy.less(x3, 1.0), 1.0, numpy.sqrt(x3))))*numpy.where(numpy.less(x3, 1.0), 1.0, 1.0/x3))
-    dc91 = numpy.where(numpy.less(x3, 2.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(8.8967913924505729e-21*x3 - 3.6992858609809485e-18) + 1.249536557486898e-15) - 3.3456341326711696e-13) + 6.882447358637835e-11) - 1.043837849393405e-8) + 1.1022927689594355e-6) - 7.4404761904761911e-5) + 0.0027777777777777779) - 0.041666666666666664, (0.5)*(numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3))*numpy.sin(numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3))) + 2*numpy.cos(numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3))) - 2)*numpy.where(numpy.less(x3, 2.0), 0.25, 1.0/(x3*x3)))
-    dx123_0 = dc1*dc91
-    dx123_1 = dc2*dc91
-    dx123_2 = dc3*dc91
-    x124 = x123*xi_5
-    dx124_0 = dx123_0*xi_5
-    dx124_1 = dx123_1*xi_5
-    dx124_2 = dx123_2*xi_5
-    x125 = (0.5)*x0 + x5 + x7
-    x126 = x125*x35
-    dc92 = x35*xi_0
-    dx126_0 = dc92 + dx35_0*x125
-    dc93 = x35*xi_1
-    dx126_1 = dc93 + dx35_1*x125
-    dc94 = x35*xi_2
-    dx126_2 = dc94 + dx35_2*x125
-    dc95 = x125*x32
-    dx126_5 = dc95
-    x127 = numpy.cos(numpy.sqrt(x3))
-    dc96 = numpy.where(numpy.less(x3, 9.0949470177292824e-13), 1.0 - 0.16666666666666666*x3, numpy.where(numpy.less(x3, 9.0949470177292824e-13), 1048576.0, 1.0/numpy.sqrt(x3))*numpy.sin(numpy.where(numpy.less(x3, 9.0949470177292824e-13), 9.5367431640625e-7, numpy.sqrt(x3))))
-    dx127_0 = -dc96*xi_0
-    dx127_1 = -dc96*xi_1
-    dx127_2 = -dc96*xi_2
-    x128 = x127 - 1
-    x129 = x19*xi_5
-    dc97 = (0.5)*xi_5
-    dx129_0 = dc97*dx4_0
-    dx129_1 = dc97*dx4_1
-    dx129_2 = dc97*dx4_2
-    x130 = numpy.where(numpy.less(x3, 0.5), x3*(x3*(x3*(x3*(x3*(x3*(1.1853103784320715e-11 - 4.9044309881360752e-14*x3) - 2.1794416635686479e-9) + 2.9227459783015339e-7) - 2.7006172839506174e-5) + 0.0015873015873015873) - 0.052777777777777778) - 0.16666666666666666, (-numpy.where(numpy.less(x3, 0.5), 0.25, (x3*x3)) - numpy.where(numpy.less(x3, 0.5), 0.5, x3)*numpy.cos(numpy.where(numpy.less(x3, 0.5), 0.70710678118654752, numpy.sqrt(x3))) + 5*numpy.where(numpy.less(x3, 0.5), 0.5, x3) + 8*numpy.cos(numpy.where(numpy.less(x3, 0.5), 0.70710678118654752, numpy.sqrt(x3))) - 8)*numpy.where(numpy.less(x3, 0.5), 4.0, 1.0/(x3*x3)))
-    dc98 = numpy.where(numpy.less(x3, 2.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(9.0257303981382629e-21*x3 - 3.7633427590065923e-18) + 1.275842590276096e-15) - 3.4331016916952524e-13) + 7.1118622705924299e-11) - 1.0897208317843239e-8) + 1.1690983913206136e-6) - 8.1018518518518516e-5) + 0.0031746031746031746) - 0.052777777777777778, (0.5)*((-2*numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3))*numpy.cos(numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3))) + 10*numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3)) + numpy.where(numpy.less(x3, 2.0), 2.0, x3)*numpy.sin(numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3))) - 4*numpy.where(numpy.less(x3, 2.0), 2.8284271247461901, (x3*numpy.sqrt(x3))) - 8*numpy.sin(numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3))))*numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3)) + 4*numpy.where(numpy.less(x3, 2.0), 2.0, x3)*numpy.cos(numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3))) - 20*numpy.where(numpy.less(x3, 2.0), 2.0, x3) + 4*numpy.where(numpy.less(x3, 2.0), 4.0, (x3*x3)) - 32*numpy.cos(numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3))) + 32)*numpy.where(numpy.less(x3, 2.0), 0.125, 1.0/(x3*x3*x3)))
-    dx130_0 = dc1*dc98
-    dx130_1 = dc2*dc98
-    dx130_2 = dc3*dc98
-    x131 = x74*xi_5
-    dx131_2 = dc17*xi_5
-    x132 = x2*xi_5
-    dx132_2 = dc3*xi_5
-    x133 = x18*x72
-    dc99 = dc1*x72
-    dx133_0 = -dc99 + dx72_0*x18
-    dc100 = dc2*x72
-    dx133_1 = -dc100 + dx72_1*x18
-    dc101 = dc3*x72
-    dx133_2 = -dc101 + dx72_2*x18
-    x134 = x75 + 0.5
-    x135 = x2*x35
-    dx135_0 = dx35_0*x2
-    dx135_1 = dx35_1*x2
-    dx135_2 = 2*dc94 + dx35_2*x2
-    dx135_5 = dc31
-    x136 = numpy.where(numpy.less(x3, 1.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(4.6857620905758683e-16*x3 - 1.4338431997162155e-13) + 3.4412236793189175e-11) - 6.2630270963604301e-9) + 8.2671957671957675e-7) - 7.4404761904761911e-5) + 0.0041666666666666666) - 0.125) - 0.5, (-2*numpy.where(numpy.less(x3, 1.0), 1.0, x3) - 3*numpy.cos(numpy.where(numpy.less(x3, 1.0), 1.0, numpy.sqrt(x3))) + 3)*numpy.where(numpy.less(x3, 1.0), 1.0, 1.0/x3))
-    dc102 = numpy.where(numpy.less(x3, 2.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(2.669037417735172e-20*x3 - 1.1097857582942845e-17) + 3.7486096724606947e-15) - 1.0036902398013508e-12) + 2.0647342075913505e-10) - 3.1315135481802147e-8) + 3.306878306878307e-6) - 0.00022321428571428571) + 0.0083333333333333332) - 0.125, (0.5)*((-4*numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3)) + 3*numpy.sin(numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3))))*numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3)) + 4*numpy.where(numpy.less(x3, 2.0), 2.0, x3) + 6*numpy.cos(numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3))) - 6)*numpy.where(numpy.less(x3, 2.0), 0.25, 1.0/(x3*x3)))
-    dx136_0 = dc1*dc102
-    dx136_1 = dc102*dc2
-    dx136_2 = dc102*dc3
-    x137 = x8*xi_5
-    dx137_0 = dx8_0*xi_5
-    dx137_1 = dx8_1*xi_5
-    dx137_2 = dx8_2*xi_5
-    x138 = x46*xi_2
-    dc103 = xi_2*xi_3
-    dx138_0 = dc103
-    dx138_3 = xi_0*xi_2
-    x139 = (0.25)*x130
-    x140 = x48*xi_2
-    dx140_1 = xi_2*xi_4
-    dc104 = xi_1*xi_2
-    dx140_4 = dc104
-    x141 = x128 + x3
-    dx141_0 = dc1 + dx127_0
-    dx141_1 = dc2 + dx127_1
-    dx141_2 = dc3 + dx127_2
-    x142 = x131*x86
-    dx142_0 = dx86_0*x131
-    dx142_1 = dx86_1*x131
-    dx142_2 = dx131_2*x86 + dx86_2*x131
-    dx142_5 = x74*x86
-    x143 = x118*xi_2
-    dx143_0 = dx118_0*xi_2
-    dx143_1 = dx118_1*xi_2
-    dx143_2 = dx118_2*xi_2 + x118
-    dx143_3 = dx118_3*xi_2
-    x144 = x33*xi_2
-    dx144_0 = dx33_0*xi_2
-    dx144_1 = dx33_1*xi_2
-    dx144_2 = dx33_2*xi_2 + x33
-    dx144_4 = dc21
-    x145 = x144*xi_1
-    dx145_0 = dx144_0*xi_1
-    dx145_1 = dx144_1*xi_1 + x144
-    dx145_2 = dx144_2*xi_1
-    dx145_4 = dx144_4*xi_1
-    x146 = x4*x46
-    dx146_0 = dx4_0*x46 + x4*xi_3
-    dx146_1 = dx4_1*x46
-    dx146_2 = dx4_2*x46
-    dx146_3 = dc52
-    x147 = x10*x136
-    dx147_0 = dx136_0*x10
-    dx147_1 = dx136_1*x10
-    dc105 = (0.5)*x136
-    dx147_2 = dc105 + dx136_2*x10
-    x148 = x4*x48
-    dx148_0 = dx4_0*x48
-    dx148_1 = dx4_1*x48 + x4*xi_4
-    dx148_2 = dx4_2*x48
-    dx148_4 = dc4
-    x149 = x137*x94
-    dx149_0 = dx137_0*x94 + dx94_0*x137
-    dx149_1 = dx137_1*x94 + dx94_1*x137
-    dx149_2 = dx137_2*x94 + dx94_2*x137
-    dx149_5 = x8*x94
-    x150 = x86*x87
-    dx150_0 = dc63 + dx86_0*x87
-    dx150_1 = dc64 + dx86_1*x87
-    dx150_2 = dc65 + dx86_2*x87
-    x151 = x150*x74
-    dx151_0 = dx150_0*x74
-    dx151_1 = dx150_1*x74
-    dx151_2 = dc17*x150 + dx150_2*x74
-    x152 = x151*x35
-    dx152_0 = dx151_0*x35 + dx35_0*x151
-    dx152_1 = dx151_1*x35 + dx35_1*x151
-    dx152_2 = dx151_2*x35 + dx35_2*x151
-    dc106 = x151*x32
-    dx152_5 = dc106
-    x153 = x141*x86
-    dc107 = dx141_0*x86
-    dx153_0 = dc107 + dx86_0*x141
-    dc108 = dx141_1*x86
-    dx153_1 = dc108 + dx86_1*x141
-    dc109 = dx141_2*x86
-    dx153_2 = dc109 + dx86_2*x141
-    x154 = (0.25)*x153
-    x155 = x146*x94
-    dx155_0 = dx146_0*x94 + dx94_0*x146
-    dx155_1 = dx146_1*x94 + dx94_1*x146
-    dx155_2 = dx146_2*x94 + dx94_2*x146
-    dx155_3 = dx146_3*x94
-    x156 = x10*x155
-    dx156_0 = dx155_0*x10
-    dx156_1 = dx155_1*x10
-    dc110 = (0.5)*x155
-    dx156_2 = dc110 + dx155_2*x10
-    dx156_3 = dx155_3*x10
-    x157 = x4*x94
-    dx157_0 = dx4_0*x94 + dx94_0*x4
-    dx157_1 = dx4_1*x94 + dx94_1*x4
-    dx157_2 = dx4_2*x94 + dx94_2*x4
-    x158 = x157*x48
-    dx158_0 = dx157_0*x48
-    dx158_1 = dx157_1*x48 + x157*xi_4
-    dx158_2 = dx157_2*x48
-    dx158_4 = x157*xi_1
-    x159 = x10*x158
-    dx159_0 = dx158_0*x10
-    dx159_1 = dx158_1*x10
-    dx159_2 = dx158_2*x10 + (0.5)*x158
-    dx159_4 = dx158_4*x10
-    x160 = x143*x89
-    dx160_0 = dx143_0*x89 + dx89_0*x143
-    dx160_1 = dx143_1*x89 + dx89_1*x143
-    dx160_2 = dx143_2*x89 + dx89_2*x143
-    dx160_3 = dx143_3*x89
-    x161 = x145*x89
-    dx161_0 = dx145_0*x89 + dx89_0*x145
-    dx161_1 = dx145_1*x89 + dx89_1*x145
-    dx161_2 = dx145_2*x89 + dx89_2*x145
-    dx161_4 = dx145_4*x89
-    x162 = x123*xi_4
-    dx162_0 = dx123_0*xi_4
-    dx162_1 = dx123_1*xi_4
-    dx162_2 = dx123_2*xi_4
-    x163 = numpy.where(numpy.less(x3, 1.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(1.4338431997162155e-13 - 4.6857620905758683e-16*x3) - 3.4412236793189175e-11) + 6.2630270963604301e-9) - 8.2671957671957675e-7) + 7.4404761904761911e-5) - 0.0041666666666666666) + 0.125) + 0.5, (2*numpy.where(numpy.less(x3, 1.0), 1.0, x3) + 3*numpy.cos(numpy.where(numpy.less(x3, 1.0), 1.0, numpy.sqrt(x3))) - 3)*numpy.where(numpy.less(x3, 1.0), 1.0, 1.0/x3))
-    dc111 = numpy.where(numpy.less(x3, 2.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(1.1097857582942845e-17 - 2.669037417735172e-20*x3) - 3.7486096724606947e-15) + 1.0036902398013508e-12) - 2.0647342075913505e-10) + 3.1315135481802147e-8) - 3.306878306878307e-6) + 0.00022321428571428571) - 0.0083333333333333332) + 0.125, (0.5)*((4*numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3)) - 3*numpy.sin(numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3))))*numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3)) - 4*numpy.where(numpy.less(x3, 2.0), 2.0, x3) - 6*numpy.cos(numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3))) + 6)*numpy.where(numpy.less(x3, 2.0), 0.25, 1.0/(x3*x3)))
-    dx163_0 = dc1*dc111
-    dx163_1 = dc111*dc2
-    dx163_2 = dc111*dc3
-    x164 = x163*xi_3
-    dx164_0 = dx163_0*xi_3
-    dx164_1 = dx163_1*xi_3
-    dx164_2 = dx163_2*xi_3
-    x165 = x33*xi_0
-    dx165_0 = dx33_0*xi_0 + x33
-    dx165_1 = dx33_1*xi_0
-    dx165_2 = dx33_2*xi_0
-    dx165_4 = dc90
-    x166 = numpy.where(numpy.less(x3, 2.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(8.2206352466243297e-19 - 1.7793582784901148e-21*x3) - 3.1238413937172451e-16) + 9.5589546647747705e-14) - 2.2941491195459449e-11) + 4.17535139757362e-9) - 5.5114638447971777e-7) + 4.9603174603174603e-5) - 0.0027777777777777779) + 0.083333333333333329, (numpy.where(numpy.less(x3, 2.0), 2.0, x3) + 2*numpy.cos(numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3))) - 2)*numpy.where(numpy.less(x3, 2.0), 0.25, 1.0/(x3*x3)))
-    dc112 = numpy.where(numpy.less(x3, 4.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(4.4122227808621894e-47 - 2.7046145578907471e-50*x3) - 6.500674897136959e-44) + 8.6023048521172363e-41) - 1.0161472606563485e-37) + 1.0641094113593283e-34) - 9.8019678349213543e-32) + 7.8717341689676112e-29) - 5.4551117790945548e-26) + 3.2234751421922368e-23) - 1.6014224506411032e-20) + 6.5765081972994638e-18) - 2.1866889756020719e-15) + 5.7353727988648621e-13) - 1.1470745597729724e-10) + 1.670140559029448e-8) - 1.6534391534391535e-6) + 9.9206349206349206e-5) - 0.0027777777777777779, ((numpy.where(numpy.less(x3, 4.0), 2.0, numpy.sqrt(x3)) - numpy.sin(numpy.where(numpy.less(x3, 4.0), 2.0, numpy.sqrt(x3))))*numpy.where(numpy.less(x3, 4.0), 2.0, numpy.sqrt(x3)) - 2*numpy.where(numpy.less(x3, 4.0), 4.0, x3) - 4*numpy.cos(numpy.where(numpy.less(x3, 4.0), 2.0, numpy.sqrt(x3))) + 4)*numpy.where(numpy.less(x3, 4.0), 0.015625, 1.0/(x3*x3*x3)))
-    dx166_0 = dc1*dc112
-    dx166_1 = dc112*dc2
-    dx166_2 = dc112*dc3
-    x167 = x166*xi_0
-    dx167_0 = dx166_0*xi_0 + x166
-    dx167_1 = dx166_1*xi_0
-    dx167_2 = dx166_2*xi_0
-    x168 = x1*xi_4
-    dx168_1 = dc2*xi_4
-    x169 = x52*(-x125 - 1)
-    dc113 = -x125 - 1
-    dx169_0 = dc113*dx52_0 - x52*xi_0
-    dc114 = x52*xi_1
-    dx169_1 = dc113*dx52_1 - dc114
-    dc115 = x52*xi_2
-    dx169_2 = dc113*dx52_2 - dc115
-    dx169_3 = dc113*x32
-    x170 = x3 - x88
-    dc116 = (0.25)*dx87_0
-    dx170_0 = -dc116 + 2*xi_0
-    dc117 = (0.25)*dx87_1
-    dx170_1 = -dc117 + 2*xi_1
-    dc118 = (0.25)*dx87_2
-    dx170_2 = -dc118 + 2*xi_2
-    x171 = x108*x170
-    dx171_0 = dx108_0*x170 + dx170_0*x108
-    dx171_1 = dx108_1*x170 + dx170_1*x108
-    dx171_2 = dx108_2*x170 + dx170_2*x108
-    dx171_3 = x170*x72
-    x172 = x108*x76
-    dc119 = (0.5)*x108
-    dx172_0 = dc119*xi_0 + dx108_0*x76
-    dx172_1 = dc70*x108 + dx108_1*x76
-    dx172_2 = dc17*x108 + dx108_2*x76
-    dx172_3 = x72*x76
-    x173 = x11*x55
-    dx173_0 = dx55_0*x11
-    dx173_1 = dc32 + dx55_1*x11
-    dx173_2 = dx55_2*x11
-    dx173_3 = dx55_3*x11
-    x174 = -x141
-    x175 = x174*x65
-    dx175_0 = -dx141_0*x65 + dx65_0*x174
-    dx175_1 = -dx141_1*x65 + dx65_1*x174
-    dx175_2 = -dx141_2*x65 + dx65_2*x174
-    dx175_3 = x174*x4
-    x176 = x19*xi_3
-    dx176_0 = (0.5)*dc38
-    dx176_1 = (0.5)*dc39
-    dx176_2 = (0.5)*dc40
-    x177 = x176*x62
-    dx177_0 = dx176_0*x62 + dx62_0*x176
-    dx177_1 = dx176_1*x62 + dx62_1*x176
-    dx177_2 = dx176_2*x62 + dx62_2*x176
-    dx177_3 = x19*x62
-    x178 = x33*x53
-    dc120 = dc23*x1
-    dx178_0 = dc120 + dx33_0*x53
-    dx178_1 = dx33_1*x53 + dx53_1*x33
-    dx178_2 = dx33_2*x53
-    dx178_4 = dc30
-    x179 = x50*xi_1
-    dx179_2 = xi_1*xi_5
-    dx179_5 = dc104
-    x180 = -x72*x76
-    dx180_0 = -dc45
-    dx180_1 = -dc47
-    dx180_2 = -dc48
-    x181 = x180*xi_0
-    dx181_0 = dx180_0*xi_0 + x180
-    dx181_1 = dx180_1*xi_0
-    dx181_2 = dx180_2*xi_0
-    x182 = numpy.where(numpy.less(x3, 1.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(1.5619206968586225e-16*x3 - 4.7794773323873853e-14) + 1.1470745597729725e-11) - 2.08767569878681e-9) + 2.7557319223985888e-7) - 2.4801587301587302e-5) + 0.0013888888888888889) - 0.041666666666666664) - 0.5, (-numpy.where(numpy.less(x3, 1.0), 1.0, x3) - numpy.cos(numpy.where(numpy.less(x3, 1.0), 1.0, numpy.sqrt(x3))) + 1)*numpy.where(numpy.less(x3, 1.0), 1.0, 1.0/x3))
-    dc121 = numpy.where(numpy.less(x3, 2.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(8.8967913924505729e-21*x3 - 3.6992858609809485e-18) + 1.249536557486898e-15) - 3.3456341326711696e-13) + 6.882447358637835e-11) - 1.043837849393405e-8) + 1.1022927689594355e-6) - 7.4404761904761911e-5) + 0.0027777777777777779) - 0.041666666666666664, (0.5)*((-2*numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3)) + numpy.sin(numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3))))*numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3)) + 2*numpy.where(numpy.less(x3, 2.0), 2.0, x3) + 2*numpy.cos(numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3))) - 2)*numpy.where(numpy.less(x3, 2.0), 0.25, 1.0/(x3*x3)))
-    dx182_0 = dc1*dc121
-    dx182_1 = dc121*dc2
-    dx182_2 = dc121*dc3
-    x183 = x111*x182
-    dx183_0 = dx111_0*x182 + dx182_0*x111
-    dx183_1 = dx111_1*x182 + dx182_1*x111
-    dx183_2 = dx111_2*x182 + dx182_2*x111
-    x184 = x111*x3
-    dx184_0 = dc1*x111 + dx111_0*x3
-    dx184_1 = dc2*x111 + dx111_1*x3
-    dx184_2 = dc3*x111 + dx111_2*x3
-    x185 = x11*x52
-    dx185_0 = dx52_0*x11
-    dx185_1 = dc28 + dx52_1*x11
-    dx185_2 = dx52_2*x11
-    dx185_3 = dc58
-    x186 = x4*(3*x0 + 3*x1 + 3*x2 + x87)
-    dc122 = 3*x0 + 3*x1 + 3*x2 + x87
-    dx186_0 = dc122*dx4_0 + 6*dc52 + dx87_0*x4
-    dx186_1 = dc122*dx4_1 + 6*dc4 + dx87_1*x4
-    dx186_2 = dc122*dx4_2 + 6*dc5 + dx87_2*x4
-    x187 = x108*x19
-    dx187_0 = dc119*dx4_0 + dx108_0*x19
-    dx187_1 = dc119*dx4_1 + dx108_1*x19
-    dx187_2 = dc119*dx4_2 + dx108_2*x19
-    dx187_3 = x19*x72
-    x188 = x37*x81
-    dx188_0 = dc60*x37
-    dx188_1 = dc61*x37 + dx37_1*x81
-    dx188_2 = dc62*x37
-    x189 = x105*x52
-    dx189_0 = dx105_0*x52 + dx52_0*x105
-    dx189_1 = dx105_1*x52 + dx52_1*x105
-    dx189_2 = dx105_2*x52 + dx52_2*x105
-    dx189_3 = x105*x32
-    x190 = x108*x87
-    dx190_0 = dx108_0*x87 + dx87_0*x108
-    dx190_1 = dx108_1*x87 + dx87_1*x108
-    dx190_2 = dx108_2*x87 + dx87_2*x108
-    dx190_3 = x72*x87
-    x191 = x35*xi_0
-    dx191_0 = dx35_0*xi_0 + x35
-    dx191_1 = dx35_1*xi_0
-    dx191_2 = dx35_2*xi_0
-    dx191_5 = dc90
-    x192 = x108*x89
-    dx192_0 = dx108_0*x89 + dx89_0*x108
-    dx192_1 = dx108_1*x89 + dx89_1*x108
-    dx192_2 = dx108_2*x89 + dx89_2*x108
-    dx192_3 = x72*x89
-    x193 = (x3*x3*x3)
-    dc123 = 6*(x3*x3)
-    dx193_0 = dc123*xi_0
-    dx193_1 = dc123*xi_1
-    dx193_2 = dc123*xi_2
-    x194 = (0.25)*xi_3
-    x195 = x194*x86
-    dx195_0 = dx86_0*x194
-    dx195_1 = dx86_1*x194
-    dx195_2 = dx86_2*x194
-    x196 = x193*x195
-    dx196_0 = dx193_0*x195 + dx195_0*x193
-    dx196_1 = dx193_1*x195 + dx195_1*x193
-    dx196_2 = dx193_2*x195 + dx195_2*x193
-    dc124 = (0.25)*x86
-    dx196_3 = dc124*x193
-    x197 = x196*x72
-    dx197_0 = dx196_0*x72 + dx72_0*x196
-    dx197_1 = dx196_1*x72 + dx72_1*x196
-    dx197_2 = dx196_2*x72 + dx72_2*x196
-    dx197_3 = dx196_3*x72
-    x198 = x195*x32
-    dx198_0 = dx195_0*x32 + dx32_0*x195
-    dx198_1 = dx195_1*x32 + dx32_1*x195
-    dx198_2 = dx195_2*x32 + dx32_2*x195
-    dx198_3 = dc124*x32
-    x199 = x15*xi_5
-    dx199_0 = dx15_0*xi_5
-    dx199_1 = dx15_1*xi_5
-    dx199_2 = dx15_2*xi_5
-    x200 = x199*xi_1
-    dx200_0 = dx199_0*xi_1
-    dx200_1 = dx199_1*xi_1 + x199
-    dx200_2 = dx199_2*xi_1
-    dc125 = x15*xi_1
-    dx200_5 = dc125
-    x201 = x72*x83
-    dx201_0 = dx72_0*x83 + dx83_0*x72
-    dx201_1 = dx72_1*x83 + dx83_1*x72
-    dx201_2 = dx72_2*x83 + dx83_2*x72
-    x202 = x201*x22
-    dx202_0 = dx201_0*x22 + (0.5)*x201
-    dx202_1 = dx201_1*x22
-    dx202_2 = dx201_2*x22
-    x203 = x103*x4
-    dc126 = dx4_0*x103
-    dx203_0 = dc126 + dc87
-    dc127 = dx4_1*x103
-    dx203_1 = dc127 + dc88
-    dc128 = dx4_2*x103
-    dx203_2 = dc128 + dc89
-    x204 = x74*x86
-    dx204_0 = dx86_0*x74
-    dx204_1 = dx86_1*x74
-    dx204_2 = dc17*x86 + dx86_2*x74
-    x205 = x100*xi_4
-    dx205_0 = dx100_0*xi_4
-    dx205_1 = dx100_1*xi_4
-    dx205_2 = dx100_2*xi_4
-    x206 = x73*x86
-    dx206_0 = dx86_0*x73
-    dx206_1 = dc70*x86 + dx86_1*x73
-    dx206_2 = dx86_2*x73
-    x207 = x206*x82
-    dx207_0 = -dc60*x206 + dx206_0*x82
-    dx207_1 = -dc61*x206 + dx206_1*x82
-    dx207_2 = -dc62*x206 + dx206_2*x82
-    x208 = x72*x82
-    dx208_0 = -dc60*x72 + dx72_0*x82
-    dx208_1 = -dc61*x72 + dx72_1*x82
-    dx208_2 = -dc62*x72 + dx72_2*x82
-    x209 = x103*x24
-    dx209_0 = dc1*x24 + dx24_0*x103
-    dx209_1 = dc2*x24 + dx24_1*x103
-    dx209_2 = dc3*x24 + dx24_2*x103
-    x210 = x72*x89
-    dx210_0 = dx72_0*x89 + dx89_0*x72
-    dx210_1 = dx72_1*x89 + dx89_1*x72
-    dx210_2 = dx72_2*x89 + dx89_2*x72
-    x211 = x210*xi_0
-    dx211_0 = dx210_0*xi_0 + x210
-    dx211_1 = dx210_1*xi_0
-    dx211_2 = dx210_2*xi_0
-    x212 = x191*xi_2
-    dx212_0 = dx191_0*xi_2
-    dx212_1 = dx191_1*xi_2
-    dx212_2 = dx191_2*xi_2 + x191
-    dx212_5 = dx191_5*xi_2
-    x213 = x115*x82
-    dc129 = (0.25)*x82
-    dx213_0 = dc129*dx86_0 - dc82
-    dx213_1 = dc129*dx86_1 - dc84
-    dx213_2 = dc129*dx86_2 - dc86
-    x214 = x213*xi_1
-    dx214_0 = dx213_0*xi_1
-    dx214_1 = dx213_1*xi_1 + x213
-    dx214_2 = dx213_2*xi_1
-    x215 = -x10*x191*xi_1 + x11*x164 + x11*x175 + x110*x57 + x117*x173 + x121*x52*xi_1 - x150*x185 + x162*x22 + x165*x207 - x165 + x167*x168 + x167*x179 + x168*x181 + x168*x183 + x168*x202 + x169*xi_1 + x171*xi_1 + x172*x2*xi_1 + x172*x37 + x173 + x177*x37 + x178*x203 - x178 + x179*x181 + x179*x211 + x182*x200 + x184*x33 + x185*x186 + x187*x188 + x188*x198 + x189*x37 - x190*x204*xi_1 - x190*x23 + x191*x209 - x192*x37 + x197*xi_1 + x200*x208 + x205*xi_0 + x212*x214 + x39*xi_3 + x42*x52 + x49*xi_1*xi_3 + x57*x66
-    dc130 = x207 - 1
-    dc131 = x168 + x179
-    dc132 = dc49 + x37
-    dc133 = x117 + 1
-    dc134 = x203 - 1
-    dc135 = -x150 + x186
-    dc136 = x187 + x198
-    dc137 = x204*xi_1
-    dc138 = -dc137 - x23
-    dc139 = -x10*xi_1 + x209
-    dc140 = x182 + x208
-    dc141 = x121*xi_1 + x42
-    dc142 = xi_1*xi_3
-    dc143 = x190*xi_1
-    dc144 = (0.5)*x162 + x205
-    dx215_0 = dc114*dx121_0 + dc130*dx165_0 + dc131*dx167_0 + dc131*dx181_0 + dc132*dx172_0 + dc133*dx173_0 + dc134*dx178_0 + dc135*dx185_0 + dc136*dx188_0 + dc138*dx190_0 + dc139*dx191_0 + dc140*dx200_0 + dc141*dx52_0 + dc142*dx49_0 - dc143*dx204_0 + dc144 + dx110_0*x57 + dx117_0*x173 - dx150_0*x185 + dx162_0*x22 + dx164_0*x11 + dx169_0*xi_1 + dx171_0*xi_1 + dx175_0*x11 + dx177_0*x37 + dx182_0*x200 + dx183_0*x168 + dx184_0*x33 + dx186_0*x185 + dx187_0*x188 + dx189_0*x37 - dx192_0*x37 + dx197_0*xi_1 + dx198_0*x188 + dx202_0*x168 + dx203_0*x178 + dx205_0*xi_0 + dx207_0*x165 + dx208_0*x200 + dx209_0*x191 + dx211_0*x179 + dx212_0*x214 + dx214_0*x212 - dx23_0*x190 + dx33_0*x184 + dx39_0*xi_3 + dx66_0*x57
-    dc145 = x167 + x181
-    dc146 = dc145 + x183 + x202
-    dc147 = x172 + x177 + x189 - x192
-    dc148 = dc145 + x211
-    dc149 = x110 + x66
-    dc150 = (0.5)*dc149
-    dc151 = (0.5)*x164 + x169 + x171 + (0.5)*x175 + x197
-    dx215_1 = dc114*dx121_1 + dc130*dx165_1 + dc131*dx167_1 + dc131*dx181_1 + dc132*dx172_1 + dc133*dx173_1 + dc134*dx178_1 + dc135*dx185_1 + dc136*dx188_1 + dc138*dx190_1 + dc139*dx191_1 + dc140*dx200_1 + dc141*dx52_1 + dc142*dx49_1 - dc143*dx204_1 + dc146*dx168_1 + dc147*dx37_1 + dc148*x50 + dc150*x2 + dc151 + dc28*dx37_1 + dx110_1*x57 + dx117_1*x173 - dx150_1*x185 + dx162_1*x22 + dx164_1*x11 + dx169_1*xi_1 + dx171_1*xi_1 + dx175_1*x11 + dx177_1*x37 + dx182_1*x200 + dx183_1*x168 + dx184_1*x33 + dx186_1*x185 + dx187_1*x188 + dx189_1*x37 - dx192_1*x37 + dx197_1*xi_1 + dx198_1*x188 + dx202_1*x168 + dx203_1*x178 + dx205_1*xi_0 + dx207_1*x165 + dx208_1*x200 + dx209_1*x191 + dx211_1*x179 + dx212_1*x214 + dx214_1*x212 - dx23_1*x190 + dx33_1*x184 + dx39_1*xi_3 + dx66_1*x57 - x10*x191 + x121*x52 + x172*x2 - x190*x204 + x49*xi_3
-    dc152 = 2*dc104*x172
-    dx215_2 = dc114*dx121_2 + dc130*dx165_2 + dc131*dx167_2 + dc131*dx181_2 + dc132*dx172_2 + dc133*dx173_2 + dc134*dx178_2 + dc135*dx185_2 + dc136*dx188_2 + dc138*dx190_2 + dc139*dx191_2 + dc140*dx200_2 + dc141*dx52_2 + dc142*dx49_2 - dc143*dx204_2 + dc148*dx179_2 + dc149*dx57_2 + dc152 - dc70*x191 + dx110_2*x57 + dx117_2*x173 - dx150_2*x185 + dx162_2*x22 + dx164_2*x11 + dx169_2*xi_1 + dx171_2*xi_1 + dx175_2*x11 + dx177_2*x37 + dx182_2*x200 + dx183_2*x168 + dx184_2*x33 + dx186_2*x185 + dx187_2*x188 + dx189_2*x37 - dx192_2*x37 + dx197_2*xi_1 + dx198_2*x188 + dx202_2*x168 + dx203_2*x178 + dx205_2*xi_0 + dx207_2*x165 + dx208_2*x200 + dx209_2*x191 + dx211_2*x179 + dx212_2*x214 + dx214_2*x212 - dx23_2*x190 + dx33_2*x184 + dx39_2*xi_3 + dx66_2*x57
-    dc153 = x39 + x49*xi_1
-    dx215_3 = dc132*dx172_3 + dc133*dx173_3 + dc135*dx185_3 + dc138*dx190_3 + dc141*x32 + dc153 + dx110_3*x57 + dx169_3*xi_1 + dx171_3*xi_1 + dx175_3*x11 + dx177_3*x37 + dx187_3*x188 + dx189_3*x37 - dx192_3*x37 + dx197_3*xi_1 + dx198_3*x188 + dx66_3*x57 + x11*x163
-    dc154 = x123*x22 + x184*x32
-    dx215_4 = dc130*dx165_4 + dc134*dx178_4 + dc146*x1 + dc154 + x100*xi_0
-    dx215_5 = dc139*dx191_5 + dc140*dx200_5 + dc148*dx179_5 + dx212_5*x214
-    x216 = -x125
-    x217 = -x128
-    x218 = x19*xi_4
-    dc155 = (0.5)*xi_4
-    dx218_0 = dc155*dx4_0
-    dx218_1 = dc155*dx4_1
-    dx218_2 = dc155*dx4_2
-    x219 = numpy.where(numpy.less(x3, 0.5), x3*(x3*(x3*(x3*(x3*(x3*(4.9044309881360752e-14*x3 - 1.1853103784320715e-11) + 2.1794416635686479e-9) - 2.9227459783015339e-7) + 2.7006172839506174e-5) - 0.0015873015873015873) + 0.052777777777777778) + 0.16666666666666666, (numpy.where(numpy.less(x3, 0.5), 0.25, (x3*x3)) + numpy.where(numpy.less(x3, 0.5), 0.5, x3)*numpy.cos(numpy.where(numpy.less(x3, 0.5), 0.70710678118654752, numpy.sqrt(x3))) - 5*numpy.where(numpy.less(x3, 0.5), 0.5, x3) - 8*numpy.cos(numpy.where(numpy.less(x3, 0.5), 0.70710678118654752, numpy.sqrt(x3))) + 8)*numpy.where(numpy.less(x3, 0.5), 4.0, 1.0/(x3*x3)))
-    dc156 = numpy.where(numpy.less(x3, 2.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(3.7633427590065923e-18 - 9.0257303981382629e-21*x3) - 1.275842590276096e-15) + 3.4331016916952524e-13) - 7.1118622705924299e-11) + 1.0897208317843239e-8) - 1.1690983913206136e-6) + 8.1018518518518516e-5) - 0.0031746031746031746) + 0.052777777777777778, (0.5)*((2*numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3))*numpy.cos(numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3))) - 10*numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3)) - numpy.where(numpy.less(x3, 2.0), 2.0, x3)*numpy.sin(numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3))) + 4*numpy.where(numpy.less(x3, 2.0), 2.8284271247461901, (x3*numpy.sqrt(x3))) + 8*numpy.sin(numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3))))*numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3)) - 4*numpy.where(numpy.less(x3, 2.0), 2.0, x3)*numpy.cos(numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3))) + 20*numpy.where(numpy.less(x3, 2.0), 2.0, x3) - 4*numpy.where(numpy.less(x3, 2.0), 4.0, (x3*x3)) + 32*numpy.cos(numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3))) - 32)*numpy.where(numpy.less(x3, 2.0), 0.125, 1.0/(x3*x3*x3)))
-    dx219_0 = dc1*dc156
-    dx219_1 = dc156*dc2
-    dx219_2 = dc156*dc3
-    x220 = x219*x73
-    dx220_0 = dx219_0*x73
-    dx220_1 = dc70*x219 + dx219_1*x73
-    dx220_2 = dx219_2*x73
-    x221 = x3*x72
-    dx221_0 = dc99 + dx72_0*x3
-    dx221_1 = dc100 + dx72_1*x3
-    dx221_2 = dc101 + dx72_2*x3
-    x222 = -x134
-    x223 = x1*x222
-    dc157 = (0.5)*xi_0
-    dc158 = dc157*x1
-    dx223_0 = -dc158
-    dc159 = dc70*x1
-    dx223_1 = -dc159 + 2*x222*xi_1
-    dc160 = (0.5)*dc50
-    dx223_2 = -dc160
-    x224 = x6*xi_4
-    dx224_0 = dx6_0*xi_4
-    dx224_1 = dx6_1*xi_4
-    dx224_2 = dx6_2*xi_4
-    x225 = (0.25)*x219
-    x226 = x46*xi_1
-    dx226_0 = dc142
-    dx226_3 = xi_0*xi_1
-    x227 = x174*x86
-    dx227_0 = -dc107 + dx86_0*x174
-    dx227_1 = -dc108 + dx86_1*x174
-    dx227_2 = -dc109 + dx86_2*x174
-    x228 = x227*x73
-    dx228_0 = dx227_0*x73
-    dx228_1 = dc70*x227 + dx227_1*x73
-    dx228_2 = dx227_2*x73
-    x229 = x118*xi_1
-    dx229_0 = dx118_0*xi_1
-    dx229_1 = dx118_1*xi_1 + x118
-    dx229_2 = dx118_2*xi_1
-    dx229_3 = dx118_3*xi_1
-    x230 = x35*xi_1
-    dx230_0 = dx35_0*xi_1
-    dx230_1 = dx35_1*xi_1 + x35
-    dx230_2 = dx35_2*xi_1
-    dx230_5 = dc20
-    x231 = x230*xi_2
-    dx231_0 = dx230_0*xi_2
-    dx231_1 = dx230_1*xi_2
-    dx231_2 = dx230_2*xi_2 + x230
-    dx231_5 = dx230_5*xi_2
-    x232 = x146*x163
-    dx232_0 = dx146_0*x163 + dx163_0*x146
-    dx232_1 = dx146_1*x163 + dx163_1*x146
-    dx232_2 = dx146_2*x163 + dx163_2*x146
-    dx232_3 = dx146_3*x163
-    x233 = x24*xi_5
-    dx233_0 = dx24_0*xi_5
-    dx233_1 = dx24_1*xi_5
-    dx233_2 = dx24_2*xi_5
-    x234 = x224*x94
-    dx234_0 = dx224_0*x94 + dx94_0*x224
-    dx234_1 = dx224_1*x94 + dx94_1*x224
-    dx234_2 = dx224_2*x94 + dx94_2*x224
-    dx234_4 = x6*x94
-    x235 = (0.25)*x227
-    x236 = x150*x73
-    dx236_0 = dx150_0*x73
-    dx236_1 = dc70*x150 + dx150_1*x73
-    dx236_2 = dx150_2*x73
-    x237 = x236*x33
-    dx237_0 = dx236_0*x33 + dx33_0*x236
-    dx237_1 = dx236_1*x33 + dx33_1*x236
-    dx237_2 = dx236_2*x33 + dx33_2*x236
-    dc161 = x236*x32
-    dx237_4 = dc161
-    x238 = x11*x155
-    dx238_0 = dx155_0*x11
-    dx238_1 = dc110 + dx155_1*x11
-    dx238_2 = dx155_2*x11
-    dx238_3 = dx155_3*x11
-    x239 = x233*x94
-    dx239_0 = dx233_0*x94 + dx94_0*x233
-    dx239_1 = dx233_1*x94 + dx94_1*x233
-    dx239_2 = dx233_2*x94 + dx94_2*x233
-    dx239_5 = x24*x94
-    x240 = x229*x89
-    dx240_0 = dx229_0*x89 + dx89_0*x229
-    dx240_1 = dx229_1*x89 + dx89_1*x229
-    dx240_2 = dx229_2*x89 + dx89_2*x229
-    dx240_3 = dx229_3*x89
-    x241 = x231*x89
-    dx241_0 = dx231_0*x89 + dx89_0*x231
-    dx241_1 = dx231_1*x89 + dx89_1*x231
-    dx241_2 = dx231_2*x89 + dx89_2*x231
-    dx241_5 = dx231_5*x89
-    x242 = x52*x59
-    dx242_0 = dx52_0*x59
-    dx242_1 = dx52_1*x59 + dx59_1*x52
-    dx242_2 = dc29 + dx52_2*x59
-    dx242_3 = dc33
-    x243 = x135*x22
-    dc162 = (0.5)*x135
-    dx243_0 = dc162 + dx135_0*x22
-    dx243_1 = dx135_1*x22
-    dx243_2 = dx135_2*x22
-    dx243_5 = dx135_5*x22
-    x244 = x10*x52
-    dx244_0 = dx52_0*x10
-    dx244_1 = dx52_1*x10
-    dx244_2 = dc28 + dx52_2*x10
-    dx244_3 = dc66
-    x245 = x40*x81
-    dx245_0 = dc60*x40
-    dx245_1 = dc61*x40
-    dx245_2 = dc62*x40 + dx40_2*x81
-    x246 = x190*xi_2
-    dx246_0 = dx190_0*xi_2
-    dx246_1 = dx190_1*xi_2
-    dx246_2 = dx190_2*xi_2 + x190
-    dx246_3 = dx190_3*xi_2
-    x247 = x165*xi_1
-    dx247_0 = dx165_0*xi_1
-    dx247_1 = dx165_1*xi_1 + x165
-    dx247_2 = dx165_2*xi_1
-    dx247_4 = dx165_4*xi_1
-    x248 = x182*x48
-    dx248_0 = dx182_0*x48
-    dx248_1 = dx182_1*x48 + x182*xi_4
-    dx248_2 = dx182_2*x48
-    dx248_4 = x182*xi_1
-    x249 = x142*x94
-    dx249_0 = dx142_0*x94 + dx94_0*x142
-    dx249_1 = dx142_1*x94 + dx94_1*x142
-    dx249_2 = dx142_2*x94 + dx94_2*x142
-    dx249_5 = dx142_5*x94
-    x250 = x204*x82
-    dx250_0 = -dc60*x204 + dx204_0*x82
-    dx250_1 = -4*dc137 + dx204_1*x82
-    dx250_2 = -dc62*x204 + dx204_2*x82
-    x251 = x1*x172*xi_2 + x10*x164 + x10*x175 - x10*x247 + x110*x59 + x117*x242 + x122*x52*xi_2 + x124*x22 + x132*x167 + x132*x181 + x132*x183 + x132*x202 + x140*x167 + x140*x181 + x140*x211 + x15*x208*x48 + x15*x248 - x150*x244 + x165*x209 + x169*xi_2 + x171*xi_2 + x172*x40 + x177*x40 + x184*x35 + x186*x244 + x187*x245 + x189*x40 + x191*x250 - x191 - x192*x40 + x197*xi_2 + x198*x245 + x203*x243 - x206*x246 + x213*x247*xi_2 + x242 - x243 - x246*x4 + x249*xi_0 + x41*xi_3 + x44*x52 + x51*xi_2*xi_3 + x59*x66
-    dc163 = x208*x48 + x248
-    dc164 = x132 + x140
-    dc165 = dc50 + x40
-    dc166 = x250 - 1
-    dc167 = -x206 - x4
-    dc168 = -x10 + x213*xi_2
-    dc169 = x122*xi_2 + x44
-    dc170 = x15*x48
-    dc171 = x247*xi_2
-    dc172 = (0.5)*x124 + x249
-    dx251_0 = dc103*dx51_0 + dc115*dx122_0 + dc133*dx242_0 + dc134*dx243_0 + dc135*dx244_0 + dc136*dx245_0 + dc163*dx15_0 + dc164*dx167_0 + dc164*dx181_0 + dc165*dx172_0 + dc166*dx191_0 + dc167*dx246_0 + dc168*dx247_0 + dc169*dx52_0 + dc170*dx208_0 + dc171*dx213_0 + dc172 + dx110_0*x59 + dx117_0*x242 + dx124_0*x22 - dx150_0*x244 + dx164_0*x10 + dx165_0*x209 + dx169_0*xi_2 + dx171_0*xi_2 + dx175_0*x10 + dx177_0*x40 + dx183_0*x132 + dx184_0*x35 + dx186_0*x244 + dx187_0*x245 + dx189_0*x40 - dx192_0*x40 + dx197_0*xi_2 + dx198_0*x245 + dx202_0*x132 + dx203_0*x243 - dx206_0*x246 + dx209_0*x165 + dx211_0*x140 + dx248_0*x15 + dx249_0*xi_0 + dx250_0*x191 + dx35_0*x184 + dx41_0*xi_3 - dx4_0*x246 + dx66_0*x59
-    dx251_1 = dc103*dx51_1 + dc115*dx122_1 + dc133*dx242_1 + dc134*dx243_1 + dc135*dx244_1 + dc136*dx245_1 + dc148*dx140_1 + dc149*dx59_1 + dc152 + dc163*dx15_1 + dc164*dx167_1 + dc164*dx181_1 + dc165*dx172_1 + dc166*dx191_1 + dc167*dx246_1 + dc168*dx247_1 + dc169*dx52_1 + dc170*dx208_1 + dc171*dx213_1 + dx110_1*x59 + dx117_1*x242 + dx124_1*x22 - dx150_1*x244 + dx164_1*x10 + dx165_1*x209 + dx169_1*xi_2 + dx171_1*xi_2 + dx175_1*x10 + dx177_1*x40 + dx183_1*x132 + dx184_1*x35 + dx186_1*x244 + dx187_1*x245 + dx189_1*x40 - dx192_1*x40 + dx197_1*xi_2 + dx198_1*x245 + dx202_1*x132 + dx203_1*x243 - dx206_1*x246 + dx209_1*x165 + dx211_1*x140 + dx248_1*x15 + dx249_1*xi_0 + dx250_1*x191 + dx35_1*x184 + dx41_1*xi_3 - dx4_1*x246 + dx66_1*x59 + x15*x208*xi_4
-    dc173 = dc150*x1
-    dx251_2 = dc103*dx51_2 + dc115*dx122_2 + dc133*dx242_2 + dc134*dx243_2 + dc135*dx244_2 + dc136*dx245_2 + dc146*dx132_2 + dc147*dx40_2 + dc148*x48 + dc151 + dc163*dx15_2 + dc164*dx167_2 + dc164*dx181_2 + dc165*dx172_2 + dc166*dx191_2 + dc167*dx246_2 + dc168*dx247_2 + dc169*dx52_2 + dc170*dx208_2 + dc171*dx213_2 + dc173 + dc28*dx40_2 + dx110_2*x59 + dx117_2*x242 + dx124_2*x22 - dx150_2*x244 + dx164_2*x10 + dx165_2*x209 + dx169_2*xi_2 + dx171_2*xi_2 + dx175_2*x10 + dx177_2*x40 + dx183_2*x132 + dx184_2*x35 + dx186_2*x244 + dx187_2*x245 + dx189_2*x40 - dx192_2*x40 + dx197_2*xi_2 + dx198_2*x245 + dx202_2*x132 + dx203_2*x243 - dx206_2*x246 + dx209_2*x165 + dx211_2*x140 + dx248_2*x15 + dx249_2*xi_0 + dx250_2*x191 + dx35_2*x184 + dx41_2*xi_3 - dx4_2*x246 + dx66_2*x59 + x1*x172 + x122*x52 + x213*x247 - 0.5*x247 + x51*xi_3
-    dc174 = x10*x163
-    dc175 = x41 + x51*xi_2
-    dx251_3 = dc133*dx242_3 + dc135*dx244_3 + dc165*dx172_3 + dc167*dx246_3 + dc169*x32 + dc174 + dc175 + dx110_3*x59 + dx169_3*xi_2 + dx171_3*xi_2 + dx175_3*x10 + dx177_3*x40 + dx187_3*x245 + dx189_3*x40 - dx192_3*x40 + dx197_3*xi_2 + dx198_3*x245 + dx66_3*x59
-    dx251_4 = dc125*x208 + dc148*dx140_4 + dc168*dx247_4 + dx165_4*x209 + dx248_4*x15
-    dx251_5 = dc134*dx243_5 + dc146*x2 + dc154 + dc166*dx191_5 + dx249_5*xi_0
-    x252 = x1*x166
-    dx252_0 = dx166_0*x1
-    dx252_1 = dc2*x166 + dx166_1*x1
-    dx252_2 = dx166_2*x1
-    x253 = x3*x38
-    dx253_0 = 2*dc25 + dx38_0*x3
-    dx253_1 = dc27 + dx38_1*x3
-    dx253_2 = dc26 + dx38_2*x3
-    x254 = x125*x33
-    dc176 = x33*xi_0
-    dx254_0 = dc176 + dx33_0*x125
-    dc177 = x33*xi_1
-    dx254_1 = dc177 + dx33_1*x125
-    dc178 = x33*xi_2
-    dx254_2 = dc178 + dx33_2*x125
-    dx254_4 = dc95
-    x255 = x125 + 2
-    x256 = x182*x19
-    dc179 = dx4_0*x182
-    dx256_0 = (0.5)*dc179 + dx182_0*x19
-    dc180 = dx4_1*x182
-    dx256_1 = (0.5)*dc180 + dx182_1*x19
-    dc181 = dx4_2*x182
-    dx256_2 = (0.5)*dc181 + dx182_2*x19
-    x257 = x180*x46
-    dx257_0 = dx180_0*x46 + x180*xi_3
-    dx257_1 = dx180_1*x46
-    dx257_2 = dx180_2*x46
-    dx257_3 = x180*xi_0
-    x258 = -x81 - x87
-    dx258_0 = -dc60 - dx87_0
-    dx258_1 = -dc61 - dx87_1
-    dx258_2 = -dc62 - dx87_2
-    x259 = x4*x84
-    dx259_0 = dx4_0*x84 + dx84_0*x4
-    dx259_1 = dx4_1*x84 + dx84_1*x4
-    dx259_2 = dx4_2*x84 + dx84_2*x4
-    dx259_4 = dx84_4*x4
-    x260 = x182*x4
-    dx260_0 = dc179 + dx182_0*x4
-    dx260_1 = dc180 + dx182_1*x4
-    dx260_2 = dc181 + dx182_2*x4
-    x261 = -4*x0 - 4*x1 - 4*x2 - x87
-    dx261_0 = -dx87_0 - 8*xi_0
-    dx261_1 = -dx87_1 - 8*xi_1
-    dx261_2 = -dx87_2 - 8*xi_2
-    x262 = x4*x91
-    dx262_0 = dx4_0*x91 + dx91_0*x4
-    dx262_1 = dx4_1*x91 + dx91_1*x4
-    dx262_2 = dx4_2*x91 + dx91_2*x4
-    dx262_5 = dx91_5*x4
-    x263 = x19*x82
-    dx263_0 = (0.5)*dc51 - dc73
-    dx263_1 = (0.5)*dc54 - dc75
-    dx263_2 = (0.5)*dc56 - dc77
-    x264 = x103*x19
-    dx264_0 = (0.5)*dc126 + dc8
-    dx264_1 = dc10 + (0.5)*dc127
-    dx264_2 = dc12 + (0.5)*dc128
-    x265 = x108*x83
-    dx265_0 = dx108_0*x83 + dx83_0*x108
-    dx265_1 = dx108_1*x83 + dx83_1*x108
-    dx265_2 = dx108_2*x83 + dx83_2*x108
-    dx265_3 = x72*x83
-    x266 = x182*x46
-    dx266_0 = dx182_0*x46 + x182*xi_3
-    dx266_1 = dx182_1*x46
-    dx266_2 = dx182_2*x46
-    dx266_3 = x182*xi_0
-    x267 = -x170*x72
-    dx267_0 = -dx170_0*x72 - dx72_0*x170
-    dx267_1 = -dx170_1*x72 - dx72_1*x170
-    dx267_2 = -dx170_2*x72 - dx72_2*x170
-    x268 = x141*x4
-    dx268_0 = dx141_0*x4 + dx4_0*x141
-    dx268_1 = dx141_1*x4 + dx4_1*x141
-    dx268_2 = dx141_2*x4 + dx4_2*x141
-    x269 = x46*x72
-    dx269_0 = dx72_0*x46 + x72*xi_3
-    dx269_1 = dx72_1*x46
-    dx269_2 = dx72_2*x46
-    dx269_3 = dc44
-    x270 = x115*x193
-    dc182 = (0.25)*x193
-    dx270_0 = dc182*dx86_0 + dx193_0*x115
-    dx270_1 = dc182*dx86_1 + dx193_1*x115
-    dx270_2 = dc182*dx86_2 + dx193_2*x115
-    x271 = x270*x72
-    dx271_0 = dx270_0*x72 + dx72_0*x270
-    dx271_1 = dx270_1*x72 + dx72_1*x270
-    dx271_2 = dx270_2*x72 + dx72_2*x270
-    x272 = x10*x268*xi_5 + x11*x268*xi_4 + x111*x261*x52 + x118*x255 + x141*x67 + x150*x22*x52 + x150*x84 + x150*x91 + x155 + x157*x50 + x158 + x266 + x267*x46 + x267*x48 + x267*x50 - x269*x270 - x271*x48 - x271*x50
-    dc183 = x261*x52
-    dc184 = x111*x52
-    dc185 = x48 + x50
-    dc186 = dc185 + x46
-    dc187 = x84 + x91
-    dc188 = dc187 + x22*x52
-    dc189 = x10*xi_5 + x11*xi_4
-    dc190 = -dc185
-    dc191 = x111*x261 + x150*x22
-    dx272_0 = dc183*dx111_0 + dc184*dx261_0 + dc186*dx267_0 + dc188*dx150_0 + dc189*dx268_0 + dc190*dx271_0 + dc191*dx52_0 + dc28*x150 + dx118_0*x255 + dx141_0*x67 + dx155_0 + dx157_0*x50 + dx158_0 + dx266_0 - dx269_0*x270 - dx270_0*x269 + dx67_0*x141 + dx84_0*x150 + dx91_0*x150 + x118*xi_0 + x267*xi_3
-    dc192 = x267 - x271
-    dx272_1 = dc155*x268 + dc183*dx111_1 + dc184*dx261_1 + dc186*dx267_1 + dc188*dx150_1 + dc189*dx268_1 + dc190*dx271_1 + dc191*dx52_1 + dc192*xi_4 + dx118_1*x255 + dx141_1*x67 + dx155_1 + dx157_1*x50 + dx158_1 + dx266_1 - dx269_1*x270 - dx270_1*x269 + dx67_1*x141 + dx84_1*x150 + dx91_1*x150 + x118*xi_1
-    dc193 = dc192 + x157
-    dx272_2 = dc183*dx111_2 + dc184*dx261_2 + dc186*dx267_2 + dc188*dx150_2 + dc189*dx268_2 + dc190*dx271_2 + dc191*dx52_2 + dc193*xi_5 + dc97*x268 + dx118_2*x255 + dx141_2*x67 + dx155_2 + dx157_2*x50 + dx158_2 + dx266_2 - dx269_2*x270 - dx270_2*x269 + dx67_2*x141 + dx84_2*x150 + dx91_2*x150 + x118*xi_2
-    dx272_3 = dc191*x32 + dx118_3*x255 + dx155_3 + dx266_3 - dx269_3*x270 + dx67_3*x141 + x267*xi_0
-    dx272_4 = dc192*xi_1 + dx158_4 + dx84_4*x150 + x11*x268
-    dx272_5 = dc193*xi_2 + dx91_5*x150 + x10*x268
-    x273 = x3 + x88
-    dx273_0 = dc1 + dc116
-    dx273_1 = dc117 + dc2
-    dx273_2 = dc118 + dc3
-    x274 = 2*x127 + x81 - 2
-    dx274_0 = dc60 + 2*dx127_0
-    dx274_1 = dc61 + 2*dx127_1
-    dx274_2 = dc62 + 2*dx127_2
-    x275 = x74*xi_3
-    dx275_2 = (0.5)*dc103
-    x276 = x108*x3
-    dc194 = dc1*x108
-    dx276_0 = dc194 + dx108_0*x3
-    dc195 = dc2*x108
-    dx276_1 = dc195 + dx108_1*x3
-    dc196 = dc3*x108
-    dx276_2 = dc196 + dx108_2*x3
-    dx276_3 = x3*x72
-    x277 = x187*x193
-    dx277_0 = dx187_0*x193 + dx193_0*x187
-    dx277_1 = dx187_1*x193 + dx193_1*x187
-    dx277_2 = dx187_2*x193 + dx193_2*x187
-    dx277_3 = dx187_3*x193
-    x278 = x196*x32
-    dx278_0 = dx196_0*x32 + dx32_0*x196
-    dx278_1 = dx196_1*x32 + dx32_1*x196
-    dx278_2 = dx196_2*x32 + dx32_2*x196
-    dx278_3 = dx196_3*x32
-    x279 = x139*xi_0
-    dc197 = (0.25)*xi_0
-    dx279_0 = dc197*dx130_0 + x139
-    dx279_1 = dc197*dx130_1
-    dx279_2 = dc197*dx130_2
-    x280 = x133*xi_0
-    dx280_0 = dx133_0*xi_0 + x133
-    dx280_1 = dx133_1*xi_0
-    dx280_2 = dx133_2*xi_0
-    x281 = x13*xi_4
-    dx281_0 = dx13_0*xi_4
-    dx281_1 = dx13_1*xi_4
-    dx281_2 = dx13_2*xi_4
-    x282 = x190*x6
-    dx282_0 = dx190_0*x6 + dx6_0*x190
-    dx282_1 = dx190_1*x6 + dx6_1*x190
-    dx282_2 = dx190_2*x6 + dx6_2*x190
-    dx282_3 = dx190_3*x6
-    x283 = x190*x8
-    dx283_0 = dx190_0*x8 + dx8_0*x190
-    dx283_1 = dx190_1*x8 + dx8_1*x190
-    dx283_2 = dx190_2*x8 + dx8_2*x190
-    dx283_3 = dx190_3*x8
-    x284 = x154*xi_0
-    dx284_0 = dc197*dx153_0 + x154
-    dx284_1 = dc197*dx153_1
-    dx284_2 = dc197*dx153_2
-    x285 = x236*x52
-    dx285_0 = dx236_0*x52 + dx52_0*x236
-    dx285_1 = dx236_1*x52 + dx52_1*x236
-    dx285_2 = dx236_2*x52 + dx52_2*x236
-    dx285_3 = dc161
-    x286 = x151*x52
-    dx286_0 = dx151_0*x52 + dx52_0*x151
-    dx286_1 = dx151_1*x52 + dx52_1*x151
-    dx286_2 = dx151_2*x52 + dx52_2*x151
-    dx286_3 = dc106
-    x287 = x281*x94
-    dx287_0 = dx281_0*x94 + dx94_0*x281
-    dx287_1 = dx281_1*x94 + dx94_1*x281
-    dx287_2 = dx281_2*x94 + dx94_2*x281
-    dx287_4 = x13*x94
-    x288 = x199*x94
-    dx288_0 = dx199_0*x94 + dx94_0*x199
-    dx288_1 = dx199_1*x94 + dx94_1*x199
-    dx288_2 = dx199_2*x94 + dx94_2*x199
-    dx288_5 = x15*x94
-    x289 = x247*x89
-    dx289_0 = dx247_0*x89 + dx89_0*x247
-    dx289_1 = dx247_1*x89 + dx89_1*x247
-    dx289_2 = dx247_2*x89 + dx89_2*x247
-    dx289_4 = dx247_4*x89
-    x290 = x212*x89
-    dx290_0 = dx212_0*x89 + dx89_0*x212
-    dx290_1 = dx212_1*x89 + dx89_1*x212
-    dx290_2 = dx212_2*x89 + dx89_2*x212
-    dx290_5 = dx212_5*x89
-    x291 = x166*xi_1
-    dx291_0 = dx166_0*xi_1
-    dx291_1 = dx166_1*xi_1 + x166
-    dx291_2 = dx166_2*xi_1
-    x292 = x168*xi_2
-    dx292_1 = dx168_1*xi_2
-    dx292_4 = dc50
-    x293 = x11*x135
-    dx293_0 = dx135_0*x11
-    dx293_1 = dc162 + dx135_1*x11
-    dx293_2 = dx135_2*x11
-    dx293_5 = dx135_5*x11
-    x294 = x33*x59
-    dx294_0 = dx33_0*x59
-    dx294_1 = dx33_1*x59 + dx59_1*x33
-    dx294_2 = dc120 + dx33_2*x59
-    dx294_4 = dc33
-    x295 = x180*xi_1
-    dx295_0 = dx180_0*xi_1
-    dx295_1 = dx180_1*xi_1 + x180
-    dx295_2 = dx180_2*xi_1
-    x296 = x11*x132
-    dx296_2 = dx132_2*x11
-    dx296_5 = x11*x2
-    x297 = x3*x4
-    dx297_0 = dc87 + dx4_0*x3
-    dx297_1 = dc88 + dx4_1*x3
-    dx297_2 = dc89 + dx4_2*x3
-    x298 = x10*x168
-    dx298_1 = dx168_1*x10
-    dx298_4 = x1*x10
-    x299 = x10*x162 - x10*x229 + x10*x297*x33 + x11*x124 + x11*x297*x35 + x118*x209 + x132*x291 + x132*x295 + x138*x210*xi_1 + x138*x291 + x138*x295 + x143*x214 + x144*x207 - x144 + x166*x292 + x180*x292 + x201*x296 + x201*x298 + x203*x293 + x203*x294 + x205*xi_2 + x230*x250 - x230 + x24*x266 + x24*x269*x82 + x249*xi_1 + x260*x296 + x260*x298 - x293 - x294
-    dc198 = x138*xi_1
-    dc199 = x24*x82
-    dc200 = x10*x297
-    dc201 = x11*x297
-    dc202 = x296 + x298
-    dc203 = x293 + x294
-    dc204 = x132 + x138
-    dc205 = x24*x269
-    dc206 = x266 + x269*x82
-    dc207 = x291 + x295
-    dc208 = dc207 + x210*xi_1
-    dc209 = x10*x33 + x11*x35
-    dx299_0 = dc130*dx144_0 + dc134*dx293_0 + dc134*dx294_0 + dc166*dx230_0 + dc198*dx210_0 + dc199*dx269_0 + dc200*dx33_0 + dc201*dx35_0 + dc202*dx201_0 + dc202*dx260_0 + dc203*dx203_0 + dc204*dx291_0 + dc204*dx295_0 - dc205*dc60 + dc206*dx24_0 + dc208*dx138_0 + dc209*dx297_0 + dx118_0*x209 + dx124_0*x11 + dx143_0*x214 + dx162_0*x10 + dx166_0*x292 + dx180_0*x292 + dx205_0*xi_2 + dx207_0*x144 + dx209_0*x118 + dx214_0*x143 - dx229_0*x10 + dx249_0*xi_1 + dx250_0*x230 + dx266_0*x24
-    dc210 = x166 + x180
-    dc211 = x201 + x260
-    dc212 = (0.5)*dc211
-    dx299_1 = dc130*dx144_1 + dc134*dx293_1 + dc134*dx294_1 + dc166*dx230_1 + dc172 + dc198*dx210_1 + dc199*dx269_1 + dc200*dx33_1 + dc201*dx35_1 + dc202*dx201_1 + dc202*dx260_1 + dc203*dx203_1 + dc204*dx291_1 + dc204*dx295_1 - dc205*dc61 + dc206*dx24_1 + dc209*dx297_1 + dc210*dx292_1 + dc211*dx298_1 + dc212*x132 + dc24*x297 + dx118_1*x209 + dx124_1*x11 + dx143_1*x214 + dx162_1*x10 + dx166_1*x292 + dx180_1*x292 + dx205_1*xi_2 + dx207_1*x144 + dx209_1*x118 + dx214_1*x143 - dx229_1*x10 + dx249_1*xi_1 + dx250_1*x230 + dx266_1*x24 + x138*x210
-    dx299_2 = dc130*dx144_2 + dc134*dx293_2 + dc134*dx294_2 + dc144 + dc166*dx230_2 + dc198*dx210_2 + dc199*dx269_2 + dc200*dx33_2 + dc201*dx35_2 + dc202*dx201_2 + dc202*dx260_2 + dc203*dx203_2 + dc204*dx291_2 + dc204*dx295_2 - dc205*dc62 + dc206*dx24_2 + dc207*dx132_2 + dc208*x46 + dc209*dx297_2 + dc210*x168 + dc211*dx296_2 + dc212*x168 + dc23*x297 + dx118_2*x209 + dx124_2*x11 + dx143_2*x214 + dx162_2*x10 + dx166_2*x292 + dx180_2*x292 + dx205_2*xi_2 + dx207_2*x144 + dx209_2*x118 + dx214_2*x143 - dx229_2*x10 + dx249_2*xi_1 + dx250_2*x230 + dx266_2*x24 - 0.5*x229
-    dx299_3 = dc199*dx269_3 + dc208*dx138_3 + dx118_3*x209 + dx143_3*x214 - dx229_3*x10 + dx266_3*x24
-    dx299_4 = dc130*dx144_4 + dc134*dx294_4 + dc210*dx292_4 + dc211*dx298_4 + dc66*x297 + dc71 + x10*x123
-    dx299_5 = dc134*dx293_5 + dc166*dx230_5 + dc207*x2 + dc211*dx296_5 + dc58*x297 + dx249_5*xi_1 + x11*x123
-    x300 = x130*x73
-    dx300_0 = dx130_0*x73
-    dx300_1 = dc70*x130 + dx130_1*x73
-    dx300_2 = dx130_2*x73
-    x301 = x1*x134
-    dx301_0 = dc158
-    dx301_1 = dc159 + dc2*x134
-    dx301_2 = dc160
-    x302 = x153*x73
-    dx302_0 = dx153_0*x73
-    dx302_1 = dc70*x153 + dx153_1*x73
-    dx302_2 = dx153_2*x73
-    x303 = x108*x18
-    dx303_0 = -dc194 + dx108_0*x18
-    dx303_1 = -dc195 + dx108_1*x18
-    dx303_2 = -dc196 + dx108_2*x18
-    dx303_3 = x18*x72
-    x304 = x136*xi_3
-    dx304_0 = dx136_0*xi_3
-    dx304_1 = dx136_1*xi_3
-    dx304_2 = dx136_2*xi_3
-    x305 = x225*xi_0
-    dx305_0 = dc197*dx219_0 + x225
-    dx305_1 = dc197*dx219_1
-    dx305_2 = dc197*dx219_2
-    x306 = x221*xi_0
-    dx306_0 = dx221_0*xi_0 + x221
-    dx306_1 = dx221_1*xi_0
-    dx306_2 = dx221_2*xi_0
-    x307 = x235*xi_0
-    dx307_0 = dc197*dx227_0 + x235
-    dx307_1 = dc197*dx227_1
-    dx307_2 = dc197*dx227_2
-    x308 = x166*x2
-    dx308_0 = dx166_0*x2
-    dx308_1 = dx166_1*x2
-    dx308_2 = dc3*x166 + dx166_2*x2
-    dc213 = x111*x2
-    dc214 = x109*x2
-    dc215 = x85 + x92
-    dc216 = x106 + x107
-    dc217 = x105 + x116
-    dc218 = x112 + x114
-    dc219 = x73 + x74
-    dc220 = x121 + 2
-    dc221 = x122 + 2
-    dc222 = x1 + x2
-    dc223 = x61 + x64
-    dc224 = x70 + x71
-    dc225 = x54 + x60
-    dc226 = x56 + x58
-    dc227 = dc225 + dc226
-    dc228 = dc223 + x79 + x80
-    dc229 = x63 + x77
-    dc230 = x47 + x78
-    dc231 = dx127_0*x129
-    dc232 = dx141_0*x142
-    dc233 = x146 + x148
-    dc234 = (0.25)*x138 + (0.25)*x140
-    dc235 = dc164 + x138
-    dc236 = x133 + x139 + x154
-    dc237 = x135 + x143 + x145
-    dc238 = dc157*dc237
-    dc239 = dx127_1*x129
-    dc240 = dx141_1*x142
-    dc241 = dc237*dc70
-    dc242 = dx127_2*x129
-    dc243 = dx141_2*x142
-    dc244 = dc236*x46
-    dc245 = dc17*dc237
-    dc246 = x123 + x128*x19
-    dc247 = dx127_0*x218
-    dc248 = x224 + x233
-    dc249 = x216 + x223
-    dc250 = (0.25)*x179 + (0.25)*x226
-    dc251 = dc131 + x226
-    dc252 = x221 + x225 + x235
-    dc253 = x229 + x231
-    dc254 = dc157*dc253
-    dc255 = dx127_1*x218
-    dc256 = dc253*dc70
-    dc257 = dc252*x46 + (0.5)*x232
-    dc258 = dx127_2*x218
-    dc259 = dc17*dc253
-    dc260 = x19*x217 + x29
-    dc261 = x220 + x228
-    dc262 = x10*x148 + x137
-    dc263 = x182*x53
-    dc264 = x213 + x264
-    dc265 = x61 + x80
-    dc266 = x118 + x36
-    dc267 = x46 + x50
-    dc268 = x207 + x255
-    dc269 = x50 + x53*x65
-    dc270 = x182*x65 + x265
-    dc271 = dc210 + x256
-    dc272 = x182 + x252
-    dc273 = dx273_0*x52
-    dc274 = dx176_0*x274
-    dc275 = dx274_0*x176
-    dc276 = dc32*xi_0
-    dc277 = x195*x3
-    dc278 = x141*x3
-    dc279 = x199 + x281
-    dc280 = x6 + x8
-    dc281 = x223 + x273
-    dc282 = x212 + x247
-    dc283 = dc157*dc282
-    dc284 = x141*x195 + x194*numpy.where(numpy.less(x3, 0.5), x3*(x3*(x3*(x3*(x3*(x3*(8.1633472837176542e-11 - 3.8735633282093839e-13*x3) - 1.2801352087066372e-8) + 1.4196194751750306e-6) - 0.00010361552028218695) + 0.004464285714285714) - 0.094444444444444442) - 0.33333333333333331, (0.5)*((-4*numpy.where(numpy.less(x3, 0.5), 0.35355339059327376, (x3*numpy.sqrt(x3))) + numpy.where(numpy.less(x3, 0.5), 0.5, x3)*numpy.sin(numpy.where(numpy.less(x3, 0.5), 0.70710678118654752, numpy.sqrt(x3))) - 2*numpy.where(numpy.less(x3, 0.5), 0.70710678118654752, numpy.sqrt(x3))*numpy.cos(numpy.where(numpy.less(x3, 0.5), 0.70710678118654752, numpy.sqrt(x3))) + 10*numpy.where(numpy.less(x3, 0.5), 0.70710678118654752, numpy.sqrt(x3)) - 4*numpy.sin(numpy.where(numpy.less(x3, 0.5), 0.70710678118654752, numpy.sqrt(x3))))*numpy.where(numpy.less(x3, 0.5), 0.70710678118654752, numpy.sqrt(x3)) + 2*numpy.where(numpy.less(x3, 0.5), 0.25, (x3*x3)) + 2*numpy.where(numpy.less(x3, 0.5), 0.5, x3)*numpy.cos(numpy.where(numpy.less(x3, 0.5), 0.70710678118654752, numpy.sqrt(x3))) - 10*numpy.where(numpy.less(x3, 0.5), 0.5, x3) - 8*numpy.cos(numpy.where(numpy.less(x3, 0.5), 0.70710678118654752, numpy.sqrt(x3))) + 8)*numpy.where(numpy.less(x3, 0.5), 4.0, 1.0/(x3*x3)))
-    dc285 = dx273_1*x52
-    dc286 = dx176_1*x274
-    dc287 = dx274_1*x176
-    dc288 = dc32*xi_1
-    dc289 = dc282*dc70
-    dc290 = x279 + x280 + x284
-    dc291 = dx273_2*x52
-    dc292 = dx176_2*x274
-    dc293 = dx274_2*x176
-    dc294 = dc32*xi_2
-    dc295 = x219 + x227
-    dc296 = dc17*dc282
-    dc297 = x19*x274
-    dc298 = x11*x136
-    dc299 = dc248 + x11*x146
-    dc300 = x300 + x302
-    dc301 = x194*x3
-    dc302 = -x273 + x301
-    dc303 = x194*x227 + x194*numpy.where(numpy.less(x3, 0.5), x3*(x3*(x3*(x3*(x3*(x3*(3.8735633282093839e-13*x3 - 8.1633472837176542e-11) + 1.2801352087066372e-8) - 1.4196194751750306e-6) + 0.00010361552028218695) - 0.004464285714285714) + 0.094444444444444442) + 0.33333333333333331, (0.5)*((4*numpy.where(numpy.less(x3, 0.5), 0.35355339059327376, (x3*numpy.sqrt(x3))) - numpy.where(numpy.less(x3, 0.5), 0.5, x3)*numpy.sin(numpy.where(numpy.less(x3, 0.5), 0.70710678118654752, numpy.sqrt(x3))) + 2*numpy.where(numpy.less(x3, 0.5), 0.70710678118654752, numpy.sqrt(x3))*numpy.cos(numpy.where(numpy.less(x3, 0.5), 0.70710678118654752, numpy.sqrt(x3))) - 10*numpy.where(numpy.less(x3, 0.5), 0.70710678118654752, numpy.sqrt(x3)) + 4*numpy.sin(numpy.where(numpy.less(x3, 0.5), 0.70710678118654752, numpy.sqrt(x3))))*numpy.where(numpy.less(x3, 0.5), 0.70710678118654752, numpy.sqrt(x3)) - 2*numpy.where(numpy.less(x3, 0.5), 0.25, (x3*x3)) - 2*numpy.where(numpy.less(x3, 0.5), 0.5, x3)*numpy.cos(numpy.where(numpy.less(x3, 0.5), 0.70710678118654752, numpy.sqrt(x3))) + 10*numpy.where(numpy.less(x3, 0.5), 0.5, x3) + 8*numpy.cos(numpy.where(numpy.less(x3, 0.5), 0.70710678118654752, numpy.sqrt(x3))) - 8)*numpy.where(numpy.less(x3, 0.5), 4.0, 1.0/(x3*x3)))
-    dc304 = x305 + x306 + x307
-    dc305 = x130 + x153
-    dc306 = x2*x22
-    dc307 = x64 + x79
-    dc308 = x118 + x34
-    dc309 = x46 + x48
-    dc310 = x250 + x255
+    x18 = -x4*x6 + 1
+    dc7 = (0.5)*x4
+    dx18_0 = -dc2*xi_0 - dc7*dx5_0
+    dx18_1 = -dc3 - dc7*dx5_1
+    dx18_2 = -dc5 - dc7*dx5_2
+    x19 = x18 + x7
+    dx19_0 = dx18_0 + dx7_0
+    dx19_1 = dx18_1 + dx7_1
+    dx19_2 = dx18_2 + dx7_2
+    x20 = (0.5)*xi_0
+    x21 = x10*x5*xi_1 + x20
+    dc8 = x10*xi_1
+    dx21_0 = dc8*dx5_0 + 0.5
+    dx21_1 = dc8*dx5_1 + x10*x5
+    dc9 = (0.5)*x5
+    dc10 = dc9*xi_1
+    dx21_2 = dc10 + dc8*dx5_2
+    x22 = x11 + x15
+    dx22_1 = dx15_1 + 0.5
+    x23 = -x20 + (0.5)*x5*xi_1*xi_2
+    dc11 = xi_1*xi_2
+    dc12 = (0.5)*dc11
+    dx23_0 = dc12*dx5_0 - 0.5
+    dx23_1 = dc12*dx5_1 + dc9*xi_2
+    dx23_2 = dc10 + dc12*dx5_2
+    x24 = x18 + x8
+    dx24_0 = dx18_0 + dx8_0
+    dx24_1 = dx18_1 + dx8_1
+    dx24_2 = dx18_2 + dx8_2
+    x25 = xi_0*xi_3
+    x26 = xi_2*xi_5
+    x27 = -x25 - x26
+    x28 = numpy.where(numpy.less(x4, 1.0), x4*(x4*(x4*(x4*(x4*(x4*(x4*(8.2206352466243295e-18*x4 - 2.8114572543455206e-15) + 7.6471637318198164e-13) - 1.6059043836821613e-10) + 2.505210838544172e-8) - 2.7557319223985893e-6) + 0.00019841269841269841) - 0.0083333333333333332) + 0.16666666666666666, (numpy.where(numpy.less(x4, 1.0), 1.0, numpy.sqrt(x4)) - numpy.sin(numpy.where(numpy.less(x4, 1.0), 1.0, numpy.sqrt(x4))))*numpy.where(numpy.less(x4, 1.0), 1.0, 1.0/(x4*numpy.sqrt(x4))))
+    dc13 = 2*numpy.where(numpy.less(x4, 4.0), x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(8.8244455617243787e-46 - 5.6796905715705686e-49*x4) - 1.2351282304560222e-42) + 1.5484148733811025e-39) - 1.7274503431157927e-36) + 1.7025750581749252e-33) - 1.4702951752382032e-30) + 1.1020427836554655e-27) - 7.0916453128229206e-25) + 3.8681701706306839e-22) - 1.7615646957052136e-19) + 6.5765081972994636e-17) - 1.9680200780418645e-14) + 4.5882982390918896e-12) - 8.0295219184108074e-10) + 1.0020843354176688e-7) - 8.2671957671957678e-6) + 0.00039682539682539683) - 0.0083333333333333332, (0.5)*((1 - numpy.cos(numpy.where(numpy.less(x4, 4.0), 2.0, numpy.sqrt(x4))))*numpy.where(numpy.less(x4, 4.0), 2.0, numpy.sqrt(x4)) - 3*numpy.where(numpy.less(x4, 4.0), 2.0, numpy.sqrt(x4)) + 3*numpy.sin(numpy.where(numpy.less(x4, 4.0), 2.0, numpy.sqrt(x4))))*numpy.where(numpy.less(x4, 4.0), 0.03125, 1.0/((x4*x4)*numpy.sqrt(x4))))
+    dx28_0 = dc13*xi_0
+    dx28_1 = dc13*xi_1
+    dx28_2 = dc13*xi_2
+    x29 = 2*x28
+    x30 = xi_1*xi_5
+    x31 = x30*xi_0
+    dc14 = xi_0*xi_5
+    dx31_1 = dc14
+    dc15 = xi_0*xi_1
+    dx31_5 = dc15
+    x32 = xi_1*xi_3
+    x33 = -x32*xi_2
+    dc16 = xi_2*xi_3
+    dx33_1 = -dc16
+    dx33_3 = -dc11
+    x34 = x31 + x33
+    dx34_1 = dx31_1 + dx33_1
+    x35 = (0.5)*numpy.where(numpy.less(x4, 2.0), x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(8.2206352466243297e-19 - 1.7793582784901148e-21*x4) - 3.1238413937172451e-16) + 9.5589546647747705e-14) - 2.2941491195459449e-11) + 4.17535139757362e-9) - 5.5114638447971777e-7) + 4.9603174603174603e-5) - 0.0027777777777777779) + 0.083333333333333329, (numpy.where(numpy.less(x4, 2.0), 2.0, x4) + 2*numpy.cos(numpy.where(numpy.less(x4, 2.0), 1.414213562373095, numpy.sqrt(x4))) - 2)*numpy.where(numpy.less(x4, 2.0), 0.25, 1.0/(x4*x4)))
+    dc17 = numpy.where(numpy.less(x4, 4.0), x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(4.4122227808621894e-47 - 2.7046145578907471e-50*x4) - 6.500674897136959e-44) + 8.6023048521172363e-41) - 1.0161472606563485e-37) + 1.0641094113593283e-34) - 9.8019678349213543e-32) + 7.8717341689676112e-29) - 5.4551117790945548e-26) + 3.2234751421922368e-23) - 1.6014224506411032e-20) + 6.5765081972994638e-18) - 2.1866889756020719e-15) + 5.7353727988648621e-13) - 1.1470745597729724e-10) + 1.670140559029448e-8) - 1.6534391534391535e-6) + 9.9206349206349206e-5) - 0.0027777777777777779, ((numpy.where(numpy.less(x4, 4.0), 2.0, numpy.sqrt(x4)) - numpy.sin(numpy.where(numpy.less(x4, 4.0), 2.0, numpy.sqrt(x4))))*numpy.where(numpy.less(x4, 4.0), 2.0, numpy.sqrt(x4)) - 2*numpy.where(numpy.less(x4, 4.0), 4.0, x4) - 4*numpy.cos(numpy.where(numpy.less(x4, 4.0), 2.0, numpy.sqrt(x4))) + 4)*numpy.where(numpy.less(x4, 4.0), 0.015625, 1.0/(x4*x4*x4)))
+    dx35_0 = dc17*xi_0
+    dx35_1 = dc17*xi_1
+    dx35_2 = dc17*xi_2
+    x36 = xi_1*xi_4
+    x37 = x36*xi_0
+    dc18 = xi_0*xi_4
+    dx37_1 = dc18
+    dx37_4 = dc15
+    x38 = x27*xi_0 - x37
+    dc19 = xi_0*xi_3
+    dx38_0 = -dc19 + x27 - x36
+    dx38_2 = -dc14
+    dc20 = (xi_0*xi_0)
+    dc21 = -dc20
+    dx38_3 = dc21
+    dc22 = xi_0*xi_2
+    dx38_5 = -dc22
+    x39 = x36*xi_2
+    dc23 = xi_2*xi_4
+    dx39_1 = dc23
+    dx39_4 = dc11
+    x40 = -x27*xi_2
+    dx40_0 = dc16
+    dc24 = -xi_2*xi_5
+    dx40_2 = -dc24 - x27
+    dx40_3 = dc22
+    dc25 = (xi_2*xi_2)
+    dx40_5 = dc25
+    x41 = x39 + x40
+    dx41_2 = dx40_2 + x36
+    x42 = numpy.where(numpy.less(x4, 4.0), x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(1.1359381143141137e-48*x4 - 1.7648891123448757e-45) + 2.4702564609120444e-42) - 3.096829746762205e-39) + 3.4549006862315854e-36) - 3.4051501163498504e-33) + 2.9405903504764064e-30) - 2.204085567310931e-27) + 1.4183290625645841e-24) - 7.7363403412613678e-22) + 3.5231293914104271e-19) - 1.3153016394598927e-16) + 3.936040156083729e-14) - 9.1765964781837793e-12) + 1.6059043836821615e-9) - 2.0041686708353376e-7) + 1.6534391534391536e-5) - 0.00079365079365079365) + 0.016666666666666666, (numpy.where(numpy.less(x4, 4.0), 2.0, numpy.sqrt(x4))*numpy.cos(numpy.where(numpy.less(x4, 4.0), 2.0, numpy.sqrt(x4))) + 2*numpy.where(numpy.less(x4, 4.0), 2.0, numpy.sqrt(x4)) - 3*numpy.sin(numpy.where(numpy.less(x4, 4.0), 2.0, numpy.sqrt(x4))))*numpy.where(numpy.less(x4, 4.0), 0.03125, 1.0/((x4*x4)*numpy.sqrt(x4))))
+    dc26 = 2*numpy.where(numpy.less(x4, 4.0), x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(2.0446886057654048e-47 - 1.2579602594840682e-50*x4) - 3.0003114909862885e-44) + 3.952410337459271e-41) - 4.6452446201433075e-38) + 4.8368609607242191e-35) - 4.4266951512548055e-32) + 3.5287084205716874e-29) - 2.4244941240420241e-26) + 1.4183290625645841e-23) - 6.962706307135231e-21) + 2.8185035131283417e-18) - 9.2071114762192488e-16) + 2.3616240936502375e-13) - 4.5882982390918898e-11) + 6.423617534728646e-9) - 6.0125060125060129e-7) + 3.3068783068783071e-5) - 0.00079365079365079365, (0.5)*((-numpy.where(numpy.less(x4, 4.0), 2.0, numpy.sqrt(x4))*numpy.sin(numpy.where(numpy.less(x4, 4.0), 2.0, numpy.sqrt(x4))) - 2*numpy.cos(numpy.where(numpy.less(x4, 4.0), 2.0, numpy.sqrt(x4))) + 2)*numpy.where(numpy.less(x4, 4.0), 2.0, numpy.sqrt(x4)) - 5*numpy.where(numpy.less(x4, 4.0), 2.0, numpy.sqrt(x4))*numpy.cos(numpy.where(numpy.less(x4, 4.0), 2.0, numpy.sqrt(x4))) - 10*numpy.where(numpy.less(x4, 4.0), 2.0, numpy.sqrt(x4)) + 15*numpy.sin(numpy.where(numpy.less(x4, 4.0), 2.0, numpy.sqrt(x4))))*numpy.where(numpy.less(x4, 4.0), 0.0078125, 1.0/((x4*x4*x4)*numpy.sqrt(x4))))
+    dx42_0 = dc26*xi_0
+    dx42_1 = dc26*xi_1
+    dx42_2 = dc26*xi_2
+    x43 = (0.5)*x42
+    x44 = -x1 - x2
+    x45 = -x37 + x44*xi_3
+    dc27 = 2*dc19
+    dx45_0 = -dc27 - x36
+    dc28 = 2*dc16
+    dx45_2 = -dc28
+    x46 = x39 - x44*xi_5
+    dc29 = 2*dc14
+    dx46_0 = dc29
+    dc30 = 2*xi_2*xi_5
+    dx46_2 = dc30 + x36
+    x47 = x27*x29 + x43*(-x38*xi_0 + x41*xi_2) + x43*(-x45*xi_0 + x46*xi_2)
+    dc31 = x29*xi_3
+    dc32 = x43*x45
+    dc33 = x43*xi_0
+    dc34 = -x38*xi_0 + x41*xi_2 - x45*xi_0 + x46*xi_2
+    dx47_0 = -dc31 - dc32 - dc33*dx38_0 - dc33*dx45_0 + (0.5)*dc34*dx42_0 + 2*dx28_0*x27 + dx40_0*x43*xi_2 + dx46_0*x43*xi_2 - x38*x43
+    dc35 = 2*x27
+    dc36 = 2*dc33
+    dc37 = x43*xi_2
+    dc38 = 2*dc37
+    dc39 = (0.5)*dc34
+    dx47_1 = dc35*dx28_1 + dc36*dx37_1 + dc38*dx39_1 + dc39*dx42_1
+    dc40 = x43*x46
+    dc41 = -x29*xi_5
+    dx47_2 = -dc33*dx38_2 - dc33*dx45_2 + dc35*dx28_2 + dc37*dx41_2 + dc37*dx46_2 + dc39*dx42_2 + dc40 + dc41 + x41*x43
+    dc42 = x29*xi_0
+    dx47_3 = -dc33*dx38_3 - dc33*x44 - dc42 + dx40_3*x43*xi_2
+    dx47_4 = dc36*dx37_4 + dc38*dx39_4
+    dc43 = x29*xi_2
+    dx47_5 = -dc33*dx38_5 - dc37*x44 - dc43 + dx40_5*x43*xi_2
+    x48 = (0.5)*xi_3
+    x49 = x26*xi_0
+    dx49_2 = dc14
+    dx49_5 = dc22
+    x50 = -x25 - x36
+    x51 = x50*xi_0
+    dx51_0 = -dc19 + x50
+    dx51_1 = -dc18
+    dx51_3 = dc21
+    dc44 = -dc15
+    dx51_4 = dc44
+    x52 = x49 - x51
+    dx52_0 = -dx51_0 + x26
+    x53 = xi_2*xi_4
+    x54 = x53*xi_0
+    dx54_2 = dc18
+    dx54_4 = dc22
+    x55 = x33 + x54
+    dx55_2 = dx54_2 - x32
+    x56 = -x55
+    x57 = x26*xi_1
+    dc45 = xi_1*xi_5
+    dx57_2 = dc45
+    dx57_5 = dc11
+    x58 = -x3
+    x59 = -x57 + x58*xi_4
+    dc46 = 2*dc18
+    dx59_0 = -dc46
+    dc47 = xi_1*xi_4
+    dc48 = 2*dc47
+    dx59_1 = -dc48 - x26
+    x60 = x49 - x58*xi_3
+    dx60_0 = dc27 + x26
+    dc49 = xi_1*xi_3
+    dc50 = 2*dc49
+    dx60_1 = dc50
+    x61 = (1.5)*numpy.where(numpy.less(x4, 2.0), x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(1.7793582784901148e-21*x4 - 8.2206352466243297e-19) + 3.1238413937172451e-16) - 9.5589546647747705e-14) + 2.2941491195459449e-11) - 4.17535139757362e-9) + 5.5114638447971777e-7) - 4.9603174603174603e-5) + 0.0027777777777777779) - 0.083333333333333329, (-numpy.where(numpy.less(x4, 2.0), 2.0, x4) - 2*numpy.cos(numpy.where(numpy.less(x4, 2.0), 1.414213562373095, numpy.sqrt(x4))) + 2)*numpy.where(numpy.less(x4, 2.0), 0.25, 1.0/(x4*x4)))
+    dc51 = 3*numpy.where(numpy.less(x4, 4.0), x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(2.7046145578907471e-50*x4 - 4.4122227808621894e-47) + 6.500674897136959e-44) - 8.6023048521172363e-41) + 1.0161472606563485e-37) - 1.0641094113593283e-34) + 9.8019678349213543e-32) - 7.8717341689676112e-29) + 5.4551117790945548e-26) - 3.2234751421922368e-23) + 1.6014224506411032e-20) - 6.5765081972994638e-18) + 2.1866889756020719e-15) - 5.7353727988648621e-13) + 1.1470745597729724e-10) - 1.670140559029448e-8) + 1.6534391534391535e-6) - 9.9206349206349206e-5) + 0.0027777777777777779, ((-numpy.where(numpy.less(x4, 4.0), 2.0, numpy.sqrt(x4)) + numpy.sin(numpy.where(numpy.less(x4, 4.0), 2.0, numpy.sqrt(x4))))*numpy.where(numpy.less(x4, 4.0), 2.0, numpy.sqrt(x4)) + 2*numpy.where(numpy.less(x4, 4.0), 4.0, x4) + 4*numpy.cos(numpy.where(numpy.less(x4, 4.0), 2.0, numpy.sqrt(x4))) - 4)*numpy.where(numpy.less(x4, 4.0), 0.015625, 1.0/(x4*x4*x4)))
+    dx61_0 = dc51*xi_0
+    dx61_1 = dc51*xi_1
+    dx61_2 = dc51*xi_2
+    x62 = x50*xi_1 - x57
+    dx62_0 = -dc49
+    dx62_1 = -dc47 - x26 + x50
+    dx62_3 = dc44
+    dc52 = (xi_1*xi_1)
+    dx62_4 = -dc52
+    x63 = x10*x42
+    dx63_0 = dx42_0*x10
+    dx63_1 = dx42_1*x10
+    dc53 = (0.5)*x42
+    dx63_2 = dc53 + dx42_2*x10
+    x64 = x28*x30 + x28*x53
+    dc54 = x30 + x53
+    dx64_0 = dc54*dx28_0
+    dx64_1 = dc54*dx28_1 + x28*xi_5
+    dx64_2 = dc54*dx28_2 + x28*xi_4
+    dc55 = x28*xi_2
+    dx64_4 = dc55
+    dc56 = x28*xi_1
+    dx64_5 = dc56
+    x65 = x28*x52 + x35*x60 + x35*(x1*xi_3 - x51) + x43*(-x56*xi_0 + x59*xi_2) - x48 + x52*x61 + x62*x63 + x64
+    dc57 = x43*x56
+    dc58 = x28 + x61
+    dc59 = x1*xi_3 - x51 + x60
+    dc60 = -0.5*x56*xi_0 + (0.5)*x59*xi_2
+    dx65_0 = dc33*x53 + dc37*dx59_0 - dc57 + dc58*dx52_0 + dc59*dx35_0 + dc60*dx42_0 + dx28_0*x52 - dx51_0*x35 + dx60_0*x35 + dx61_0*x52 + dx62_0*x63 + dx63_0*x62 + dx64_0
+    dx65_1 = dc33*dx33_1 + dc37*dx59_1 - dc58*dx51_1 + dc59*dx35_1 + dc60*dx42_1 + dx28_1*x52 - dx51_1*x35 + dx60_1*x35 + dx61_1*x52 + dx62_1*x63 + dx63_1*x62 + dx64_1
+    dc61 = x43*x59
+    dx65_2 = dc28*x35 + dc33*dx55_2 - dc37*dx57_2 + dc58*dx49_2 + dc59*dx35_2 + dc60*dx42_2 + dc61 + dx28_2*x52 + dx49_2*x35 - dx57_2*x63 + dx61_2*x52 + dx63_2*x62 + dx64_2
+    dc62 = -x1*x35 + x35*x58 + 0.5
+    dx65_3 = -dc58*dx51_3 - dc62 + dx33_3*x43*xi_0 - dx51_3*x35 + dx62_3*x63
+    dc63 = dc37*x58
+    dx65_4 = dc33*dx54_4 - dc58*dx51_4 + dc63 - dx51_4*x35 + dx62_4*x63 + dx64_4
+    dx65_5 = -dc37*dx57_5 + dc58*dx49_5 + dx49_5*x35 - dx57_5*x63 + dx64_5
+    x66 = (0.5)*xi_5
+    x67 = x25*xi_2
+    dx67_0 = dc16
+    dx67_3 = dc22
+    x68 = -x26 - x36
+    x69 = -x68*xi_2
+    dx69_1 = dc23
+    dx69_2 = -dc24 - x68
+    dx69_4 = dc11
+    dx69_5 = dc25
+    x70 = -x67 - x69
+    dx70_2 = -dx69_2 - x25
+    x71 = x31 - x54
+    dx71_0 = x30 - x53
+    x72 = -x71
+    x73 = x25*xi_1
+    dx73_0 = dc49
+    dx73_3 = dc15
+    x74 = -x0 - x1
+    x75 = x73 - x74*xi_4
+    dx75_1 = dc48 + x25
+    dc64 = 2*dc23
+    dx75_2 = dc64
+    x76 = -x67 + x74*xi_5
+    dc65 = 2*dc45
+    dx76_1 = -dc65
+    dx76_2 = -dc30 - x25
+    x77 = -x68*xi_1
+    dx77_1 = dc47 - x68
+    dx77_2 = dc45
+    dx77_4 = dc52
+    dx77_5 = dc11
+    x78 = x73 + x77
+    dx78_1 = dx77_1 + x25
+    x79 = x20*x42
+    dx79_0 = dc53 + dx42_0*x20
+    dx79_1 = dx42_1*x20
+    dx79_2 = dx42_2*x20
+    x80 = x28*xi_0
+    dx80_0 = dx28_0*xi_0 + x28
+    dx80_1 = dx28_1*xi_0
+    dx80_2 = dx28_2*xi_0
+    x81 = x28*x32 + x80*xi_4
+    dx81_0 = dx28_0*x32 + dx80_0*xi_4
+    dc66 = x28*xi_3
+    dx81_1 = dc66 + dx28_1*x32 + dx80_1*xi_4
+    dx81_2 = dx28_2*x32 + dx80_2*xi_4
+    dx81_3 = dc56
+    x82 = x28*x70 + x35*x76 + x35*(-x2*xi_5 - x69) + x43*(x72*xi_2 - x75*xi_0) + x61*x70 + x66 - x78*x79 + x81
+    dc67 = x43*x75
+    dc68 = x72*xi_2 - x75*xi_0
+    dc69 = -x2*xi_5 - x69 + x76
+    dx82_0 = -dc29*x35 - dc33*dx73_0 - dc37*dx71_0 - dc58*dx67_0 - dc67 + (0.5)*dc68*dx42_0 + dc69*dx35_0 + dx28_0*x70 + dx61_0*x70 - dx67_0*x35 - dx73_0*x79 - dx79_0*x78 + dx81_0
+    dc70 = (0.5)*dc68
+    dx82_1 = -dc33*dx75_1 - dc37*dx31_1 - dc58*dx69_1 + dc69*dx35_1 + dc70*dx42_1 + dx28_1*x70 + dx61_1*x70 - dx69_1*x35 + dx76_1*x35 - dx78_1*x79 - dx79_1*x78 + dx81_1
+    dc71 = x43*x72
+    dx82_2 = -dc33*dx75_2 + dc37*dx54_2 + dc58*dx70_2 + dc69*dx35_2 + dc70*dx42_2 + dc71 + dx28_2*x70 + dx61_2*x70 - dx69_2*x35 + dx76_2*x35 - dx77_2*x79 - dx79_2*x78 + dx81_2
+    dx82_3 = -dc33*dx73_3 - dc58*dx67_3 - dx67_3*x35 - dx73_3*x79 + dx81_3
+    dc72 = dc33*x74 + x80
+    dx82_4 = dc37*dx54_4 - dc58*dx69_4 + dc72 - dx69_4*x35 - dx77_4*x79
+    dc73 = x2*x35
+    dc74 = x35*x74
+    dc75 = dc37*dx31_5
+    dx82_5 = -dc58*dx69_5 - dc73 + dc74 - dc75 - dx69_5*x35 - dx77_5*x79 + 0.5
+    x83 = x17*x47 + x22*x65 + x82*x9
+    dx83_0 = dx13_0*x47 + dx15_0*x65 + dx47_0*x17 + dx65_0*x22 + dx82_0*x9 + dx9_0*x82
+    dx83_1 = dx13_1*x47 + dx22_1*x65 + dx47_1*x17 + dx65_1*x22 + dx82_1*x9 + dx9_1*x82
+    dx83_2 = dx15_2*x65 + dx17_2*x47 + dx47_2*x17 + dx65_2*x22 + dx82_2*x9 + dx9_2*x82
+    dx83_3 = dx47_3*x17 + dx65_3*x22 + dx82_3*x9
+    dx83_4 = dx47_4*x17 + dx65_4*x22 + dx82_4*x9
+    dx83_5 = dx47_5*x17 + dx65_5*x22 + dx82_5*x9
+    x84 = x29*x50 + x35*x55 + x35*x56 + x43*(x52*xi_0 - x62*xi_1) + x43*(-x59*xi_1 + x60*xi_0)
+    dc76 = x43*x60
+    dc77 = 2*x50
+    dc78 = x55 + x56
+    dc79 = x43*xi_1
+    dc80 = x52*xi_0 - x59*xi_1 + x60*xi_0 - x62*xi_1
+    dc81 = (0.5)*dc80
+    dx84_0 = -dc31 + dc33*dx52_0 + dc33*dx60_0 + dc76 + dc77*dx28_0 + dc78*dx35_0 - dc79*dx59_0 - dc79*dx62_0 + dc81*dx42_0 + x43*x52
+    dc82 = x29*xi_4
+    dx84_1 = -dc33*dx51_1 - dc61 + dc78*dx35_1 - dc79*dx59_1 - dc79*dx62_1 + (0.5)*dc80*dx42_1 - dc82 + 2*dx28_1*x50 + dx60_1*x43*xi_0 - x43*x62
+    dc83 = 2*dc79
+    dx84_2 = dc36*dx49_2 + dc77*dx28_2 + dc78*dx35_2 + dc81*dx42_2 + dc83*dx57_2
+    dx84_3 = -dc33*dx51_3 - dc33*x58 - dc42 - dc79*dx62_3
+    dc84 = x29*xi_1
+    dx84_4 = -dc33*dx51_4 - dc79*dx62_4 - dc79*x58 - dc84
+    dx84_5 = dc36*dx49_5 + dc83*dx57_5
+    x85 = x11*x42
+    dx85_0 = dx42_0*x11
+    dx85_1 = dc53 + dx42_1*x11
+    dx85_2 = dx42_2*x11
+    x86 = x28*x38 + x35*x45 + x35*(-x0*xi_3 + x27*xi_0) + x38*x61 - x41*x85 + x43*(x34*xi_0 - x46*xi_1) + x48 + x64
+    dc85 = x34*x43
+    dc86 = -x0*xi_3 + x27*xi_0 + x45
+    dc87 = x34*xi_0 - x46*xi_1
+    dc88 = (0.5)*dc87
+    dx86_0 = -dc19*x35 + dc33*x30 + dc58*dx38_0 - dc79*dx46_0 + dc85 + dc86*dx35_0 + dc88*dx42_0 + dx28_0*x38 - dx40_0*x85 + dx45_0*x35 + dx61_0*x38 + dx64_0 - dx85_0*x41 + x27*x35
+    dx86_1 = -dc40 - dc50*x35 - dc58*dx37_1 - dc79*dx39_1 + dc86*dx35_1 + (0.5)*dc87*dx42_1 + dx28_1*x38 + dx34_1*x43*xi_0 - dx37_1*x35 - dx39_1*x85 + dx61_1*x38 + dx64_1 - dx85_1*x41
+    dx86_2 = -dc14*x35 - dc33*x32 + dc58*dx38_2 - dc79*dx46_2 + dc86*dx35_2 + dc88*dx42_2 + dx28_2*x38 - dx41_2*x85 + dx45_2*x35 + dx61_2*x38 + dx64_2 - dx85_2*x41
+    dc89 = x35*x44
+    dc90 = x0*x35
+    dx86_3 = -dc20*x35 + dc33*dx33_3 + dc58*dx38_3 + dc89 - dc90 - dx40_3*x85 + 0.5
+    dx86_4 = -dc58*dx37_4 - dc79*dx39_4 - dx37_4*x35 - dx39_4*x85 + dx64_4
+    dc91 = dc79*x44
+    dx86_5 = -dc22*x35 + dc33*dx31_5 + dc58*dx38_5 + dc91 - dx40_5*x85 + dx64_5
+    x87 = (0.5)*xi_4
+    x88 = x28*xi_2*xi_3 + x80*xi_5
+    dx88_0 = dc16*dx28_0 + dx80_0*xi_5
+    dx88_1 = dc16*dx28_1 + dx80_1*xi_5
+    dx88_2 = dc16*dx28_2 + dc66 + dx80_2*xi_5
+    dx88_3 = dc55
+    x89 = x28*x78 + x35*x75 + x35*(x2*xi_4 + x77) + x43*(-x72*xi_1 + x76*xi_0) + x61*x78 + x70*x79 - x87 + x88
+    dc92 = x43*x76
+    dc93 = x2*xi_4 + x75 + x77
+    dc94 = -0.5*x72*xi_1 + (0.5)*x76*xi_0
+    dx89_0 = -dc33*dx67_0 + dc46*x35 + dc58*dx73_0 + dc79*dx71_0 + dc92 + dc93*dx35_0 + dc94*dx42_0 + dx28_0*x78 + dx61_0*x78 - dx67_0*x79 + dx73_0*x35 + dx79_0*x70 + dx88_0
+    dx89_1 = dc33*dx76_1 + dc58*dx78_1 - dc71 + dc79*dx31_1 + dc93*dx35_1 + dc94*dx42_1 + dx28_1*x78 + dx61_1*x78 - dx69_1*x79 + dx75_1*x35 + dx77_1*x35 + dx79_1*x70 + dx88_1
+    dx89_2 = dc33*dx76_2 + dc58*dx77_2 - dc79*dx54_2 + dc93*dx35_2 + dc94*dx42_2 + dx28_2*x78 + dx61_2*x78 + dx70_2*x79 + dx75_2*x35 + dx77_2*x35 + dx79_2*x70 + dx88_2
+    dx89_3 = -dc33*dx67_3 + dc58*dx73_3 - dx67_3*x79 + dx73_3*x35 + dx88_3
+    dc95 = dc79*dx54_4
+    dx89_4 = dc58*dx77_4 + dc73 - dc74 - dc95 - dx69_4*x79 + dx77_4*x35 - 0.5
+    dx89_5 = dc58*dx77_5 + dc72 + dc79*dx31_5 - dx69_5*x79 + dx77_5*x35
+    x90 = x17*x86 + x22*x84 + x89*x9
+    dx90_0 = dx13_0*x86 + dx15_0*x84 + dx84_0*x22 + dx86_0*x17 + dx89_0*x9 + dx9_0*x89
+    dx90_1 = dx13_1*x86 + dx22_1*x84 + dx84_1*x22 + dx86_1*x17 + dx89_1*x9 + dx9_1*x89
+    dx90_2 = dx15_2*x84 + dx17_2*x86 + dx84_2*x22 + dx86_2*x17 + dx89_2*x9 + dx9_2*x89
+    dx90_3 = dx84_3*x22 + dx86_3*x17 + dx89_3*x9
+    dx90_4 = dx84_4*x22 + dx86_4*x17 + dx89_4*x9
+    dx90_5 = dx84_5*x22 + dx86_5*x17 + dx89_5*x9
+    x91 = x29*x68 + x35*x71 + x35*x72 + x43*(-x70*xi_2 + x78*xi_1) + x43*(x75*xi_1 - x76*xi_2)
+    dc96 = 2*x68
+    dc97 = x71 + x72
+    dc98 = -0.5*x70*xi_2 + (0.5)*x75*xi_1 - 0.5*x76*xi_2 + (0.5)*x78*xi_1
+    dx91_0 = dc38*dx67_0 + dc83*dx73_0 + dc96*dx28_0 + dc97*dx35_0 + dc98*dx42_0
+    dx91_1 = dc37*dx69_1 - dc37*dx76_1 + dc67 + dc79*dx75_1 + dc79*dx78_1 - dc82 + dc96*dx28_1 + dc97*dx35_1 + dc98*dx42_1 + x43*x78
+    dx91_2 = -dc37*dx70_2 - dc37*dx76_2 + dc41 + dc79*dx75_2 + dc79*dx77_2 - dc92 + dc96*dx28_2 + dc97*dx35_2 + dc98*dx42_2 - x43*x70
+    dx91_3 = dc38*dx67_3 + dc83*dx73_3
+    dx91_4 = dc37*dx69_4 + dc79*dx77_4 - dc79*x74 - dc84
+    dx91_5 = dc37*dx69_5 - dc37*x74 - dc43 + dc79*dx77_5
+    x92 = x28*x41 + x35*x46 + x35*(x0*xi_5 + x40) + x38*x85 + x41*x61 + x43*(-x34*xi_2 + x45*xi_1) - x66 + x81
+    dc99 = x0*xi_5 + x40 + x46
+    dc100 = -0.5*x34*xi_2 + (0.5)*x45*xi_1
+    dx92_0 = dc100*dx42_0 - dc37*x30 + dc58*dx40_0 + dc79*dx45_0 + dc99*dx35_0 + dx28_0*x41 + dx38_0*x85 + dx40_0*x35 + dx46_0*x35 + dx61_0*x41 + dx81_0 + dx85_0*x38
+    dx92_1 = dc100*dx42_1 + dc32 - dc37*dx34_1 + dc58*dx39_1 + dc65*x35 - dc79*dx37_1 + dc99*dx35_1 + dx28_1*x41 - dx37_1*x85 + dx39_1*x35 + dx61_1*x41 + dx81_1 + dx85_1*x38
+    dx92_2 = dc100*dx42_2 + dc37*x32 + dc58*dx41_2 + dc79*dx45_2 - dc85 + dc99*dx35_2 + dx28_2*x41 + dx38_2*x85 + dx40_2*x35 + dx46_2*x35 + dx61_2*x41 + dx81_2 + dx85_2*x38
+    dx92_3 = -dc37*dx33_3 + dc58*dx40_3 + dc91 + dx38_3*x85 + dx40_3*x35 + dx81_3
+    dx92_4 = dc58*dx39_4 - dc79*dx37_4 - dx37_4*x85 + dx39_4*x35 + x80
+    dx92_5 = dc58*dx40_5 - dc75 - dc89 + dc90 + dx38_5*x85 + dx40_5*x35 - 0.5
+    x93 = x28*x62 + x35*x59 + x35*(-x1*xi_4 + x50*xi_1) + x43*(x56*xi_1 - x60*xi_2) - x52*x63 + x61*x62 + x87 + x88
+    dc101 = -x1*xi_4 + x50*xi_1 + x59
+    dc102 = x56*xi_1 - x60*xi_2
+    dc103 = (0.5)*dc102
+    dx93_0 = dc101*dx35_0 + dc103*dx42_0 - dc37*dx60_0 - dc49*x35 + dc58*dx62_0 - dc79*x53 + dx28_0*x62 - dx52_0*x63 + dx59_0*x35 + dx61_0*x62 - dx63_0*x52 + dx88_0
+    dx93_1 = dc101*dx35_1 + dc103*dx42_1 - dc37*dx60_1 - dc47*x35 + dc57 + dc58*dx62_1 - dc79*dx33_1 + dx28_1*x62 + dx51_1*x63 + dx59_1*x35 + dx61_1*x62 - dx63_1*x52 + dx88_1 + x35*x50
+    dx93_2 = dc101*dx35_2 + (0.5)*dc102*dx42_2 - dc37*dx49_2 - dc58*dx57_2 - dc64*x35 - dc76 - dc79*dx55_2 + dx28_2*x62 - dx49_2*x63 - dx57_2*x35 + dx61_2*x62 - dx63_2*x52 + dx88_2
+    dx93_3 = -dc15*x35 + dc58*dx62_3 + dc63 - dc79*dx33_3 + dx51_3*x63 + dx88_3
+    dx93_4 = -dc52*x35 + dc58*dx62_4 + dc62 - dc95 + dx51_4*x63
+    dx93_5 = -dc37*dx49_5 - dc58*dx57_5 - dx49_5*x63 - dx57_5*x35 + x80
+    x94 = x17*x92 + x22*x93 + x9*x91
+    dx94_0 = dx13_0*x92 + dx15_0*x93 + dx91_0*x9 + dx92_0*x17 + dx93_0*x22 + dx9_0*x91
+    dx94_1 = dx13_1*x92 + dx22_1*x93 + dx91_1*x9 + dx92_1*x17 + dx93_1*x22 + dx9_1*x91
+    dx94_2 = dx15_2*x93 + dx17_2*x92 + dx91_2*x9 + dx92_2*x17 + dx93_2*x22 + dx9_2*x91
+    dx94_3 = dx91_3*x9 + dx92_3*x17 + dx93_3*x22
+    dx94_4 = dx91_4*x9 + dx92_4*x17 + dx93_4*x22
+    dx94_5 = dx91_5*x9 + dx92_5*x17 + dx93_5*x22
+    x95 = x14*x82 + x19*x47 + x23*x65
+    dx95_0 = dx13_0*x82 + dx19_0*x47 + dx23_0*x65 + dx47_0*x19 + dx65_0*x23 + dx82_0*x14
+    dx95_1 = dx13_1*x82 + dx19_1*x47 + dx23_1*x65 + dx47_1*x19 + dx65_1*x23 + dx82_1*x14
+    dx95_2 = dx14_2*x82 + dx19_2*x47 + dx23_2*x65 + dx47_2*x19 + dx65_2*x23 + dx82_2*x14
+    dx95_3 = dx47_3*x19 + dx65_3*x23 + dx82_3*x14
+    dx95_4 = dx47_4*x19 + dx65_4*x23 + dx82_4*x14
+    dx95_5 = dx47_5*x19 + dx65_5*x23 + dx82_5*x14
+    x96 = x14*x89 + x19*x86 + x23*x84
+    dx96_0 = dx13_0*x89 + dx19_0*x86 + dx23_0*x84 + dx84_0*x23 + dx86_0*x19 + dx89_0*x14
+    dx96_1 = dx13_1*x89 + dx19_1*x86 + dx23_1*x84 + dx84_1*x23 + dx86_1*x19 + dx89_1*x14
+    dx96_2 = dx14_2*x89 + dx19_2*x86 + dx23_2*x84 + dx84_2*x23 + dx86_2*x19 + dx89_2*x14
+    dx96_3 = dx84_3*x23 + dx86_3*x19 + dx89_3*x14
+    dx96_4 = dx84_4*x23 + dx86_4*x19 + dx89_4*x14
+    dx96_5 = dx84_5*x23 + dx86_5*x19 + dx89_5*x14
+    x97 = x14*x91 + x19*x92 + x23*x93
+    dx97_0 = dx13_0*x91 + dx19_0*x92 + dx23_0*x93 + dx91_0*x14 + dx92_0*x19 + dx93_0*x23
+    dx97_1 = dx13_1*x91 + dx19_1*x92 + dx23_1*x93 + dx91_1*x14 + dx92_1*x19 + dx93_1*x23
+    dx97_2 = dx14_2*x91 + dx19_2*x92 + dx23_2*x93 + dx91_2*x14 + dx92_2*x19 + dx93_2*x23
+    dx97_3 = dx91_3*x14 + dx92_3*x19 + dx93_3*x23
+    dx97_4 = dx91_4*x14 + dx92_4*x19 + dx93_4*x23
+    dx97_5 = dx91_5*x14 + dx92_5*x19 + dx93_5*x23
+    x98 = x16*x82 + x21*x47 + x24*x65
+    dx98_0 = dx15_0*x82 + dx21_0*x47 + dx24_0*x65 + dx47_0*x21 + dx65_0*x24 + dx82_0*x16
+    dx98_1 = dx16_1*x82 + dx21_1*x47 + dx24_1*x65 + dx47_1*x21 + dx65_1*x24 + dx82_1*x16
+    dx98_2 = dx15_2*x82 + dx21_2*x47 + dx24_2*x65 + dx47_2*x21 + dx65_2*x24 + dx82_2*x16
+    dx98_3 = dx47_3*x21 + dx65_3*x24 + dx82_3*x16
+    dx98_4 = dx47_4*x21 + dx65_4*x24 + dx82_4*x16
+    dx98_5 = dx47_5*x21 + dx65_5*x24 + dx82_5*x16
+    x99 = x16*x89 + x21*x86 + x24*x84
+    dx99_0 = dx15_0*x89 + dx21_0*x86 + dx24_0*x84 + dx84_0*x24 + dx86_0*x21 + dx89_0*x16
+    dx99_1 = dx16_1*x89 + dx21_1*x86 + dx24_1*x84 + dx84_1*x24 + dx86_1*x21 + dx89_1*x16
+    dx99_2 = dx15_2*x89 + dx21_2*x86 + dx24_2*x84 + dx84_2*x24 + dx86_2*x21 + dx89_2*x16
+    dx99_3 = dx84_3*x24 + dx86_3*x21 + dx89_3*x16
+    dx99_4 = dx84_4*x24 + dx86_4*x21 + dx89_4*x16
+    dx99_5 = dx84_5*x24 + dx86_5*x21 + dx89_5*x16
+    x100 = x16*x91 + x21*x92 + x24*x93
+    dx100_0 = dx15_0*x91 + dx21_0*x92 + dx24_0*x93 + dx91_0*x16 + dx92_0*x21 + dx93_0*x24
+    dx100_1 = dx16_1*x91 + dx21_1*x92 + dx24_1*x93 + dx91_1*x16 + dx92_1*x21 + dx93_1*x24
+    dx100_2 = dx15_2*x91 + dx21_2*x92 + dx24_2*x93 + dx91_2*x16 + dx92_2*x21 + dx93_2*x24
+    dx100_3 = dx91_3*x16 + dx92_3*x21 + dx93_3*x24
+    dx100_4 = dx91_4*x16 + dx92_4*x21 + dx93_4*x24
+    dx100_5 = dx91_5*x16 + dx92_5*x21 + dx93_5*x24
     return (
         x9,
         x14,
@@ -1541,35 +485,35 @@ def _main(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5):
         0,
         0,
         x17,
+        x19,
         x21,
-        x25,
         0,
         0,
         0,
-        x26,
-        x27,
-        x28,
+        x22,
+        x23,
+        x24,
         0,
         0,
         0,
-        x1*x47 + x1*x78 - x101 + x102*x85 + x102*x92 + x105*x106 + x105*x107 + x106*x116 + x107*x116 + x109*x111*x2 + x110*x53 + x112*x113 + x113*x114 + x117*x54 + x117*x56 + x117*x58 + x117*x60 + x120*x73 + x120*x74 + x121*x34 + x122*x36 + x2*x47 + x2*x78 + x30*xi_1 + x31*xi_2 + 2*x34 + 2*x36 + x39*xi_4 + x41*xi_5 + x43 + x45 + x48*x49 + x50*x51 + x53*x66 + x54 + x56 + x58 + x60 + x61*x63 + x61*x77 + x62*x68 + x63*x64 + x64*x77 + x69*x70 + x69*x71 + x77*x79 + x77*x80 + x83*x84 + x83*x91 - x90 - x93 - x97 - x98 - x99,
-        x124 + x126 + x128*x129 + x130*x131 + x132*x133 + x133*x138 + x133*x140 + x134*x135 + x134*x143 + x134*x145 + x136*x137 + x138*x139 + x138*x154 + x139*x140 + x140*x154 + x141*x142 + x146*x147 + x147*x148 + x149 - x152 + x156 + x159 - x160 - x161 + x215,
-        x11*x232 + x163*x224 + x163*x233 + x168*x221 + x179*x221 + x179*x225 + x179*x235 + x216*x33 + x217*x218 + x220*xi_4 + x221*x226 + x222*x229 + x222*x231 + x223*x33 + x225*x226 + x226*x235 + x228*xi_4 - x234 + x237 - x238 - x239 + x240 + x241 + x251 + x30,
+        -x14*x83 - x16*x90 - x9*x94,
+        -x14*x95 - x16*x96 - x9*x97,
+        -x100*x9 - x14*x98 - x16*x99,
         x9,
         x14,
         x16,
-        x10*x148*x163 + x10*x232 + x129*x217 + x131*x219 + x132*x221 + x135*x222 + x137*x163 + x138*x221 + x138*x225 + x138*x235 + x140*x221 + x140*x225 + x140*x235 + x142*x174 + x143*x222 + x145*x222 - x149 + x152 - x156 - x159 + x160 + x161 + x215 + x216*x35 + x31,
-        x1*x257 + x101 + x106*x213 + x106*x264 + x114*x83 + x118*x207 + x166*x61 + x180*x61 + x180*x80 + x182*x50 + x182*x53*x65 + x203*x54 + x203*x60 + x207*x36 + x252*x46 + x252*x50 + x253*x48 + x254*xi_1 + x255*x36 + x256*x61 + x258*x259 + x260*x71 + x261*x262 + x263*x85 + x265*x53 + x272 - x43 - x54 - x60 + x90 + x97,
-        x1*x276 + x134*x212 + x134*x247 + x136*x199 + x136*x281 + x141*x195*x3 + x164*x6 + x164*x8 - x176*x274 - x190 + x194*numpy.where(numpy.less(x3, 0.5), x3*(x3*(x3*(x3*(x3*(x3*(x3*(1.1661924691025221e-11 - 4.8419541602617299e-14*x3) - 2.1335586811777287e-9) + 2.8392389503500614e-7) - 2.5903880070546738e-5) + 0.001488095238095238) - 0.047222222222222221) - 0.33333333333333331) + 2.0, (-numpy.where(numpy.less(x3, 0.5), 0.25, (x3*x3)) - numpy.where(numpy.less(x3, 0.5), 0.5, x3)*numpy.cos(numpy.where(numpy.less(x3, 0.5), 0.70710678118654752, numpy.sqrt(x3))) + 5*numpy.where(numpy.less(x3, 0.5), 0.5, x3) + 4*numpy.cos(numpy.where(numpy.less(x3, 0.5), 0.70710678118654752, numpy.sqrt(x3))) - 4)*numpy.where(numpy.less(x3, 0.5), 2.0, 1.0/x3)) + x2*x276 + x219*x275 + x220*xi_3 + x222*x55 + x223*x52 + x227*x275 + x228*xi_3 + x273*x52 + x277 - x278 + x279*x48 + x279*x50 + x280*x48 + x280*x50 - x282 - x283 + x284*x48 + x284*x50 + x285 + x286 + x287 + x288 - x289 - x290 + x299,
+        -x17*x94 - x19*x83 - x21*x90,
+        -x17*x97 - x19*x95 - x21*x96,
+        -x100*x17 - x19*x98 - x21*x99,
         x17,
+        x19,
         x21,
-        x25,
-        x11*x136*x146 + x128*x218 + x133*x168 + x133*x179 + x133*x226 + x134*x229 + x134*x231 + x136*x224 + x136*x233 + x139*x179 + x139*x226 + x154*x179 + x154*x226 + x162 + x234 - x237 + x238 + x239 - x240 - x241 + x251 + x254 + x300*xi_4 + x301*x33 + x302*xi_4,
-        x1*x303 + x130*x275 + x134*x55 + x153*x275 + x163*x199 + x163*x281 + x176*x274 + x190 + x194*x227*x3 + x194*numpy.where(numpy.less(x3, 0.5), x3*(x3*(x3*(x3*(x3*(x3*(x3*(4.8419541602617299e-14*x3 - 1.1661924691025221e-11) + 2.1335586811777287e-9) - 2.8392389503500614e-7) + 2.5903880070546738e-5) - 0.001488095238095238) + 0.047222222222222221) + 0.33333333333333331) - 2.0, (numpy.where(numpy.less(x3, 0.5), 0.25, (x3*x3)) + numpy.where(numpy.less(x3, 0.5), 0.5, x3)*numpy.cos(numpy.where(numpy.less(x3, 0.5), 0.70710678118654752, numpy.sqrt(x3))) - 5*numpy.where(numpy.less(x3, 0.5), 0.5, x3) - 4*numpy.cos(numpy.where(numpy.less(x3, 0.5), 0.70710678118654752, numpy.sqrt(x3))) + 4)*numpy.where(numpy.less(x3, 0.5), 2.0, 1.0/x3)) + x2*x303 + x212*x222 + x222*x247 - x273*x52 - x277 + x278 + x282 + x283 - x285 - x286 - x287 - x288 + x289 + x290 + x299 + x300*xi_3 + x301*x52 + x302*xi_3 + x304*x6 + x304*x8 + x305*x48 + x305*x50 + x306*x48 + x306*x50 + x307*x48 + x307*x50,
-        x107*x213 + x107*x264 + x112*x83 + x118*x250 + x126*xi_2 + x166*x64 + x180*x64 + x180*x79 + x182*x68 + x2*x22*x265 + x2*x257 + x203*x56 + x203*x58 + x248 + x250*x34 + x253*x50 + x255*x34 + x256*x64 + x258*x262 + x259*x261 + x260*x70 + x263*x92 + x272 + x308*x46 + x308*x48 - x45 - x56 - x58 + x93 + x98 + x99,
-        x26,
-        x27,
-        x28,
+        -x22*x94 - x23*x83 - x24*x90,
+        -x22*x97 - x23*x95 - x24*x96,
+        -x100*x22 - x23*x98 - x24*x99,
+        x22,
+        x23,
+        x24,
         dx9_0,
         dx9_1,
         dx9_2,
@@ -1612,13 +556,49 @@ def _main(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5):
         0,
         0,
         0,
+        dx19_0,
+        dx19_1,
+        dx19_2,
+        0,
+        0,
+        0,
         dx21_0,
         dx21_1,
         dx21_2,
         0,
         0,
         0,
-        dx25_0,
+        0,
+        0,
+        0,
+        0,
+        0,
+        0,
+        0,
+        0,
+        0,
+        0,
+        0,
+        0,
+        0,
+        0,
+        0,
+        0,
+        0,
+        0,
+        dx15_0,
+        dx22_1,
+        dx15_2,
+        0,
+        0,
+        0,
+        dx23_0,
+        dx23_1,
+        dx23_2,
+        0,
+        0,
+        0,
+        dx24_0,
         dx24_1,
         dx24_2,
         0,
@@ -1642,60 +622,24 @@ def _main(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5):
         0,
         0,
         0,
-        dx15_0,
-        dx26_1,
-        dx15_2,
-        0,
-        0,
-        0,
-        dx27_0,
-        dx27_1,
-        dx27_2,
-        0,
-        0,
-        0,
-        dx28_0,
-        dx28_1,
-        dx28_2,
-        0,
-        0,
-        0,
-        0,
-        0,
-        0,
-        0,
-        0,
-        0,
-        0,
-        0,
-        0,
-        0,
-        0,
-        0,
-        0,
-        0,
-        0,
-        0,
-        0,
-        0,
-        dc133*dx54_0 + dc133*dx56_0 + dc133*dx58_0 + dc133*dx60_0 + dc173 + dc187*dx83_0 + dc213*dx109_0 + dc214*dx111_0 + dc215*dx102_0 + dc216*dx105_0 + dc216*dx116_0 + dc217*dx106_0 + dc217*dx107_0 + dc218*dx113_0 + dc219*dx120_0 + dc220*dx34_0 + dc221*dx36_0 + dc222*dx47_0 + dc222*dx78_0 + dc223*dx63_0 + dc224*dx69_0 + dc227*dx117_0 + dc228*dx77_0 - dx101_0 + dx110_0*x53 + dx112_0*x113 + dx114_0*x113 + dx121_0*x34 + dx122_0*x36 + dx30_0*xi_1 + dx31_0*xi_2 + dx39_0*xi_4 + dx41_0*xi_5 + dx43_0 + dx45_0 + dx49_0*x48 + dx51_0*x50 + dx62_0*x68 + dx66_0*x53 + dx68_0*x62 + dx84_0*x83 + dx85_0*x102 - dx90_0 + dx91_0*x83 + dx92_0*x102 - dx93_0 - dx97_0 - dx98_0 - dx99_0,
-        dc133*dx54_1 + dc133*dx56_1 + dc133*dx58_1 + dc133*dx60_1 + dc149*dx53_1 + dc187*dx83_1 + dc2*dc230 + dc213*dx109_1 + dc214*dx111_1 + dc215*dx102_1 + dc216*dx105_1 + dc216*dx116_1 + dc217*dx106_1 + dc217*dx107_1 + dc218*dx113_1 + dc219*dx120_1 + dc220*dx34_1 + dc221*dx36_1 + dc222*dx47_1 + dc222*dx78_1 + dc223*dx63_1 + dc224*dx69_1 + dc227*dx117_1 + dc228*dx77_1 + dc229*dx61_1 + dc70*x120 - dx101_1 + dx110_1*x53 + dx112_1*x113 + dx114_1*x113 + dx121_1*x34 + dx122_1*x36 + dx30_1*xi_1 + dx31_1*xi_2 + dx39_1*xi_4 + dx41_1*xi_5 + dx43_1 + dx45_1 + dx49_1*x48 + dx51_1*x50 + dx62_1*x68 + dx66_1*x53 + dx68_1*x62 + dx70_1*x69 + dx71_1*x69 + dx79_1*x77 + dx80_1*x77 + dx84_1*x83 + dx85_1*x102 - dx90_1 + dx91_1*x83 + dx92_1*x102 - dx93_1 - dx97_1 - dx98_1 - dx99_1 + x30 + x49*xi_4,
-        dc133*dx54_2 + dc133*dx56_2 + dc133*dx58_2 + dc133*dx60_2 + dc17*x120 + dc187*dx83_2 + dc213*dx109_2 + dc214*dx111_2 + dc215*dx102_2 + dc216*dx105_2 + dc216*dx116_2 + dc217*dx106_2 + dc217*dx107_2 + dc218*dx113_2 + dc219*dx120_2 + dc220*dx34_2 + dc221*dx36_2 + dc222*dx47_2 + dc222*dx78_2 + dc223*dx63_2 + dc224*dx69_2 + dc227*dx117_2 + dc228*dx77_2 + dc229*dx64_2 + dc3*(dc230 + x109*x111) - dx101_2 + dx110_2*x53 + dx112_2*x113 + dx114_2*x113 + dx121_2*x34 + dx122_2*x36 + dx30_2*xi_1 + dx31_2*xi_2 + dx39_2*xi_4 + dx41_2*xi_5 + dx43_2 + dx45_2 + dx49_2*x48 + dx51_2*x50 + dx62_2*x68 + dx66_2*x53 + dx68_2*x62 + dx70_2*x69 + dx71_2*x69 + dx79_2*x77 + dx80_2*x77 + dx84_2*x83 + dx85_2*x102 - dx90_2 + dx91_2*x83 + dx92_2*x102 - dx93_2 - dx97_2 - dx98_2 - dx99_2 + x31 + x51*xi_5,
-        dc133*dx54_3 + dc133*dx56_3 + dc213*dx109_3 + dc219*dx120_3 + dc222*dx47_3 + dc222*dx78_3 + dx110_3*x53 + dx66_3*x53 + dx68_3*x62 - dx97_3 - dx98_3,
-        dc133*dx58_4 + dc153 + dc217*dx106_4 + dc220*dx34_4 + dc229*x37 + dx112_4*x113 + dx43_4 + dx79_4*x77 + dx84_4*x83 + dx85_4*x102 - dx90_4 - dx99_4 + x29*xi_1 + x57*x69,
-        dc133*dx60_5 + dc175 + dc217*dx107_5 + dc221*dx36_5 + dc229*x40 - dx101_5 + dx114_5*x113 + dx45_5 + dx80_5*x77 + dx91_5*x83 + dx92_5*x102 - dx93_5 + x29*xi_2 + x59*x69,
-        dc231 + dc232 + dc233*dx147_0 + dc234*dx130_0 + dc234*dx153_0 + dc235*dx133_0 + dc236*dx138_0 + dc238 + dx124_0 + dx126_0 + dx129_0*x128 + dx130_0*x131 + dx135_0*x134 + dx136_0*x137 + dx137_0*x136 + dx142_0*x141 + dx143_0*x134 + dx145_0*x134 + dx146_0*x147 + dx148_0*x147 + dx149_0 - dx152_0 + dx156_0 + dx159_0 - dx160_0 - dx161_0 + dx215_0,
-        dc233*dx147_1 + dc234*dx130_1 + dc234*dx153_1 + dc235*dx133_1 + dc236*dx140_1 + dc239 + dc240 + dc241 + dx124_1 + dx126_1 + dx129_1*x128 + dx130_1*x131 + dx135_1*x134 + dx136_1*x137 + dx137_1*x136 + dx142_1*x141 + dx143_1*x134 + dx145_1*x134 + dx146_1*x147 + dx148_1*x147 + dx149_1 - dx152_1 + dx156_1 + dx159_1 - dx160_1 - dx161_1 + dx215_1,
-        dc233*dx147_2 + dc234*dx130_2 + dc234*dx153_2 + dc235*dx133_2 + dc236*x48 + dc242 + dc243 + dc244 + dc245 + dx124_2 + dx126_2 + dx129_2*x128 + dx130_2*x131 + dx131_2*x130 + dx132_2*x133 + dx135_2*x134 + dx136_2*x137 + dx137_2*x136 + dx142_2*x141 + dx143_2*x134 + dx145_2*x134 + dx146_2*x147 + dx148_2*x147 + dx149_2 - dx152_2 + dx156_2 + dx159_2 - dx160_2 - dx161_2 + dx215_2,
-        dc236*dx138_3 + dx143_3*x134 + dx146_3*x147 + dx156_3 - dx160_3 + dx215_3,
-        dc236*dx140_4 + dx145_4*x134 + dx148_4*x147 + dx159_4 - dx161_4 + dx215_4,
-        dc246 + dx126_5 + dx135_5*x134 + dx142_5*x141 + dx149_5 - dx152_5 + dx215_5 + x130*x74 + x133*x2 + x136*x8,
-        -dc176 - dc247 + dc248*dx163_0 + dc249*dx33_0 + dc250*dx219_0 + dc250*dx227_0 + dc251*dx221_0 + dc252*dx226_0 - dc254 + dx218_0*x217 + dx220_0*xi_4 + dx223_0*x33 + dx224_0*x163 + dx228_0*xi_4 + dx229_0*x222 + dx231_0*x222 + dx232_0*x11 + dx233_0*x163 - dx234_0 + dx237_0 - dx238_0 - dx239_0 + dx240_0 + dx241_0 + dx251_0 + dx30_0,
-        -dc177 + dc248*dx163_1 + dc249*dx33_1 + dc250*dx219_1 + dc250*dx227_1 + dc251*dx221_1 + dc252*x50 - dc255 - dc256 + dc257 + dx168_1*x221 + dx218_1*x217 + dx220_1*xi_4 + dx223_1*x33 + dx224_1*x163 + dx228_1*xi_4 + dx229_1*x222 + dx231_1*x222 + dx232_1*x11 + dx233_1*x163 - dx234_1 + dx237_1 - dx238_1 - dx239_1 + dx240_1 + dx241_1 + dx251_1 + dx30_1,
-        -dc178 + dc248*dx163_2 + dc249*dx33_2 + dc250*dx219_2 + dc250*dx227_2 + dc251*dx221_2 + dc252*dx179_2 - dc258 - dc259 + dx218_2*x217 + dx220_2*xi_4 + dx223_2*x33 + dx224_2*x163 + dx228_2*xi_4 + dx229_2*x222 + dx231_2*x222 + dx232_2*x11 + dx233_2*x163 - dx234_2 + dx237_2 - dx238_2 - dx239_2 + dx240_2 + dx241_2 + dx251_2 + dx30_2,
-        dc252*dx226_3 + dx229_3*x222 + dx232_3*x11 - dx238_3 + dx240_3 + dx251_3,
-        dc249*x32 + dc260 + dc261 - dx234_4 + dx237_4 + dx251_4 + x1*x221 + x163*x6,
-        dc252*dx179_5 + dx231_5*x222 - dx239_5 + dx241_5 + dx251_5 + x163*x24,
+        -dx13_0*x83 - dx15_0*x90 - dx83_0*x14 - dx90_0*x16 - dx94_0*x9 - dx9_0*x94,
+        -dx13_1*x83 - dx16_1*x90 - dx83_1*x14 - dx90_1*x16 - dx94_1*x9 - dx9_1*x94,
+        -dx14_2*x83 - dx15_2*x90 - dx83_2*x14 - dx90_2*x16 - dx94_2*x9 - dx9_2*x94,
+        -dx83_3*x14 - dx90_3*x16 - dx94_3*x9,
+        -dx83_4*x14 - dx90_4*x16 - dx94_4*x9,
+        -dx83_5*x14 - dx90_5*x16 - dx94_5*x9,
+        -dx13_0*x95 - dx15_0*x96 - dx95_0*x14 - dx96_0*x16 - dx97_0*x9 - dx9_0*x97,
+        -dx13_1*x95 - dx16_1*x96 - dx95_1*x14 - dx96_1*x16 - dx97_1*x9 - dx9_1*x97,
+        -dx14_2*x95 - dx15_2*x96 - dx95_2*x14 - dx96_2*x16 - dx97_2*x9 - dx9_2*x97,
+        -dx95_3*x14 - dx96_3*x16 - dx97_3*x9,
+        -dx95_4*x14 - dx96_4*x16 - dx97_4*x9,
+        -dx95_5*x14 - dx96_5*x16 - dx97_5*x9,
+        -dx100_0*x9 - dx13_0*x98 - dx15_0*x99 - dx98_0*x14 - dx99_0*x16 - dx9_0*x100,
+        -dx100_1*x9 - dx13_1*x98 - dx16_1*x99 - dx98_1*x14 - dx99_1*x16 - dx9_1*x100,
+        -dx100_2*x9 - dx14_2*x98 - dx15_2*x99 - dx98_2*x14 - dx99_2*x16 - dx9_2*x100,
+        -dx100_3*x9 - dx98_3*x14 - dx99_3*x16,
+        -dx100_4*x9 - dx98_4*x14 - dx99_4*x16,
+        -dx100_5*x9 - dx98_5*x14 - dx99_5*x16,
         dx9_0,
         dx9_1,
         dx9_2,
@@ -1714,27 +658,33 @@ def _main(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5):
         0,
         0,
         0,
-        dc174*dx148_0 - dc231 - dc232 + dc234*dx219_0 + dc234*dx227_0 + dc235*dx221_0 - dc238 + dc252*dx138_0 + dc262*dx163_0 - dc92 + dx129_0*x217 + dx135_0*x222 + dx137_0*x163 + dx142_0*x174 + dx143_0*x222 + dx145_0*x222 - dx149_0 + dx152_0 - dx156_0 - dx159_0 + dx160_0 + dx161_0 + dx215_0 + dx219_0*x131 + dx232_0*x10 + dx31_0 + dx35_0*x216,
-        dc174*dx148_1 + dc234*dx219_1 + dc234*dx227_1 + dc235*dx221_1 - dc239 - dc240 - dc241 + dc252*dx140_1 + dc262*dx163_1 - dc93 + dx129_1*x217 + dx135_1*x222 + dx137_1*x163 + dx142_1*x174 + dx143_1*x222 + dx145_1*x222 - dx149_1 + dx152_1 - dx156_1 - dx159_1 + dx160_1 + dx161_1 + dx215_1 + dx219_1*x131 + dx232_1*x10 + dx31_1 + dx35_1*x216,
-        dc174*dx148_2 + dc234*dx219_2 + dc234*dx227_2 + dc235*dx221_2 - dc242 - dc243 - dc245 + dc252*x48 + dc257 + dc262*dx163_2 - dc94 + dx129_2*x217 + dx131_2*x219 + dx132_2*x221 + dx135_2*x222 + dx137_2*x163 + dx142_2*x174 + dx143_2*x222 + dx145_2*x222 - dx149_2 + dx152_2 - dx156_2 - dx159_2 + dx160_2 + dx161_2 + dx215_2 + dx219_2*x131 + dx232_2*x10 + dx31_2 + dx35_2*x216 + (0.5)*x148*x163,
-        dc252*dx138_3 + dx143_3*x222 - dx156_3 + dx160_3 + dx215_3 + dx232_3*x10,
-        dc174*dx148_4 + dc252*dx140_4 + dx145_4*x222 - dx159_4 + dx161_4 + dx215_4,
-        dc260 + dx135_5*x222 + dx142_5*x174 - dx149_5 + dx152_5 + dx215_5 + x163*x8 + x2*x221 + x216*x32 + x219*x74,
-        dc134*dx54_0 + dc134*dx60_0 + dc225*dx203_0 + dc263*dx65_0 + dc264*dx106_0 + dc265*dx180_0 + dc266*dx207_0 + dc267*dx252_0 + dc268*dx36_0 + dc269*dx182_0 + (0.5)*dc270*x1 + dx101_0 + dx114_0*x83 + dx118_0*x207 + dx166_0*x61 + dx213_0*x106 + dx253_0*x48 + dx254_0*xi_1 + dx256_0*x61 + dx257_0*x1 + dx258_0*x259 + dx259_0*x258 + dx260_0*x71 + dx261_0*x262 + dx262_0*x261 + dx263_0*x85 + dx264_0*x106 + dx265_0*x53 + dx272_0 - dx43_0 + dx83_0*x114 + dx85_0*x263 + dx90_0 + dx97_0 + x252*xi_3 + x36*xi_0,
-        dc134*dx54_1 + dc134*dx60_1 + dc2*x257 + dc225*dx203_1 + dc263*dx65_1 + dc264*dx106_1 + dc265*dx180_1 + dc266*dx207_1 + dc267*dx252_1 + dc268*dx36_1 + dc269*dx182_1 + dc270*dx53_1 + dc271*dx61_1 + dx101_1 + dx114_1*x83 + dx118_1*x207 + dx166_1*x61 + dx213_1*x106 + dx253_1*x48 + dx254_1*xi_1 + dx256_1*x61 + dx257_1*x1 + dx258_1*x259 + dx259_1*x258 + dx260_1*x71 + dx261_1*x262 + dx262_1*x261 + dx263_1*x85 + dx264_1*x106 + dx265_1*x53 + dx272_1 - dx43_1 + dx71_1*x260 + dx80_1*x180 + dx83_1*x114 + dx85_1*x263 + dx90_1 + dx97_1 + x253*xi_4 + x254 + x36*xi_1,
-        dc134*dx54_2 + dc134*dx60_2 + dc225*dx203_2 + dc263*dx65_2 + dc264*dx106_2 + dc265*dx180_2 + dc266*dx207_2 + dc267*dx252_2 + dc268*dx36_2 + dc269*dx182_2 + dc272*xi_5 + dx101_2 + dx114_2*x83 + dx118_2*x207 + dx166_2*x61 + dx213_2*x106 + dx253_2*x48 + dx254_2*xi_1 + dx256_2*x61 + dx257_2*x1 + dx258_2*x259 + dx259_2*x258 + dx260_2*x71 + dx261_2*x262 + dx262_2*x261 + dx263_2*x85 + dx264_2*x106 + dx265_2*x53 + dx272_2 - dx43_2 + dx71_2*x260 + dx80_2*x180 + dx83_2*x114 + dx85_2*x263 + dx90_2 + dx97_2 + x36*xi_2,
-        dc134*dx54_3 + dc263*x4 + dx118_3*x207 + dx257_3*x1 + dx265_3*x53 + dx272_3 + dx97_3 + x252*xi_0,
-        dc264*dx106_4 + dc271*x37 + dx254_4*xi_1 + dx259_4*x258 + dx272_4 - dx43_4 + dx85_4*x263 + dx90_4 + x253*xi_1,
-        dc134*dx60_5 + dc268*dx36_5 + dc272*xi_2 + dx101_5 + dx114_5*x83 + dx262_5*x261 + dx272_5 + dx80_5*x180 + x260*x59,
-        dc1*dc284 + dc185*dx279_0 + dc185*dx280_0 + dc185*dx284_0 + dc222*dx276_0 + dc273 - dc274 - dc275 - dc276 + dc277*dx141_0 + dc278*dx195_0 + dc279*dx136_0 + dc280*dx164_0 + dc281*dx52_0 + dc283 - dx190_0 + dx199_0*x136 + dx212_0*x134 + dx219_0*x275 + dx220_0*xi_3 + dx223_0*x52 + dx227_0*x275 + dx228_0*xi_3 + dx247_0*x134 + dx277_0 - dx278_0 + dx281_0*x136 - dx282_0 - dx283_0 + dx285_0 + dx286_0 + dx287_0 + dx288_0 - dx289_0 - dx290_0 + dx299_0 + dx55_0*x222 + dx6_0*x164 + dx8_0*x164,
-        dc185*dx279_1 + dc185*dx280_1 + dc185*dx284_1 + dc2*dc284 + dc2*x276 + dc222*dx276_1 + dc277*dx141_1 + dc278*dx195_1 + dc279*dx136_1 + dc280*dx164_1 + dc281*dx52_1 + dc285 - dc286 - dc287 - dc288 + dc289 + dc290*xi_4 - dx190_1 + dx199_1*x136 + dx212_1*x134 + dx219_1*x275 + dx220_1*xi_3 + dx223_1*x52 + dx227_1*x275 + dx228_1*xi_3 + dx247_1*x134 + dx277_1 - dx278_1 + dx281_1*x136 - dx282_1 - dx283_1 + dx285_1 + dx286_1 + dx287_1 + dx288_1 - dx289_1 - dx290_1 + dx299_1 + dx55_1*x222 + dx6_1*x164 + dx8_1*x164,
-        dc185*dx279_2 + dc185*dx280_2 + dc185*dx284_2 + dc222*dx276_2 + dc277*dx141_2 + dc278*dx195_2 + dc279*dx136_2 + dc280*dx164_2 + dc281*dx52_2 + dc284*dc3 + dc290*xi_5 + dc291 - dc292 - dc293 - dc294 + dc295*dx275_2 + dc296 + dc3*x276 - dx190_2 + dx199_2*x136 + dx212_2*x134 + dx219_2*x275 + dx220_2*xi_3 + dx223_2*x52 + dx227_2*x275 + dx228_2*xi_3 + dx247_2*x134 + dx277_2 - dx278_2 + dx281_2*x136 - dx282_2 - dx283_2 + dx285_2 + dx286_2 + dx287_2 + dx288_2 - dx289_2 - dx290_2 + dx299_2 + dx55_2*x222 + dx6_2*x164 + dx8_2*x164,
-        dc124*dc278 + dc222*dx276_3 + dc261 + dc280*x163 + dc281*x32 + dc295*x74 - dc297 - dx190_3 + dx277_3 - dx278_3 - dx282_3 - dx283_3 + dx285_3 + dx286_3 + dx299_3 + dx55_3*x222 + (0.25)*numpy.where(numpy.less(x3, 0.5), x3*(x3*(x3*(x3*(x3*(x3*(x3*(1.1661924691025221e-11 - 4.8419541602617299e-14*x3) - 2.1335586811777287e-9) + 2.8392389503500614e-7) - 2.5903880070546738e-5) + 0.001488095238095238) - 0.047222222222222221) - 0.33333333333333331) + 2.0, (-numpy.where(numpy.less(x3, 0.5), 0.25, (x3*x3)) - numpy.where(numpy.less(x3, 0.5), 0.5, x3)*numpy.cos(numpy.where(numpy.less(x3, 0.5), 0.70710678118654752, numpy.sqrt(x3))) + 5*numpy.where(numpy.less(x3, 0.5), 0.5, x3) + 4*numpy.cos(numpy.where(numpy.less(x3, 0.5), 0.70710678118654752, numpy.sqrt(x3))) - 4)*numpy.where(numpy.less(x3, 0.5), 2.0, 1.0/x3)),
-        dc290*xi_1 + dx247_4*x134 + dx287_4 - dx289_4 + dx299_4 + x13*x136,
-        dc290*xi_2 + dx212_5*x134 + dx288_5 - dx290_5 + dx299_5 + x136*x15,
+        -dx13_0*x94 - dx19_0*x83 - dx21_0*x90 - dx83_0*x19 - dx90_0*x21 - dx94_0*x17,
+        -dx13_1*x94 - dx19_1*x83 - dx21_1*x90 - dx83_1*x19 - dx90_1*x21 - dx94_1*x17,
+        -dx17_2*x94 - dx19_2*x83 - dx21_2*x90 - dx83_2*x19 - dx90_2*x21 - dx94_2*x17,
+        -dx83_3*x19 - dx90_3*x21 - dx94_3*x17,
+        -dx83_4*x19 - dx90_4*x21 - dx94_4*x17,
+        -dx83_5*x19 - dx90_5*x21 - dx94_5*x17,
+        -dx13_0*x97 - dx19_0*x95 - dx21_0*x96 - dx95_0*x19 - dx96_0*x21 - dx97_0*x17,
+        -dx13_1*x97 - dx19_1*x95 - dx21_1*x96 - dx95_1*x19 - dx96_1*x21 - dx97_1*x17,
+        -dx17_2*x97 - dx19_2*x95 - dx21_2*x96 - dx95_2*x19 - dx96_2*x21 - dx97_2*x17,
+        -dx95_3*x19 - dx96_3*x21 - dx97_3*x17,
+        -dx95_4*x19 - dx96_4*x21 - dx97_4*x17,
+        -dx95_5*x19 - dx96_5*x21 - dx97_5*x17,
+        -dx100_0*x17 - dx13_0*x100 - dx19_0*x98 - dx21_0*x99 - dx98_0*x19 - dx99_0*x21,
+        -dx100_1*x17 - dx13_1*x100 - dx19_1*x98 - dx21_1*x99 - dx98_1*x19 - dx99_1*x21,
+        -dx100_2*x17 - dx17_2*x100 - dx19_2*x98 - dx21_2*x99 - dx98_2*x19 - dx99_2*x21,
+        -dx100_3*x17 - dx98_3*x19 - dx99_3*x21,
+        -dx100_4*x17 - dx98_4*x19 - dx99_4*x21,
+        -dx100_5*x17 - dx98_5*x19 - dx99_5*x21,
         dx13_0,
         dx13_1,
         dx17_2,
+        0,
+        0,
+        0,
+        dx19_0,
+        dx19_1,
+        dx19_2,
         0,
         0,
         0,
@@ -1744,52 +694,44 @@ def _main(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5):
         0,
         0,
         0,
-        dx25_0,
+        -dx15_0*x94 - dx23_0*x83 - dx24_0*x90 - dx83_0*x23 - dx90_0*x24 - dx94_0*x22,
+        -dx22_1*x94 - dx23_1*x83 - dx24_1*x90 - dx83_1*x23 - dx90_1*x24 - dx94_1*x22,
+        -dx15_2*x94 - dx23_2*x83 - dx24_2*x90 - dx83_2*x23 - dx90_2*x24 - dx94_2*x22,
+        -dx83_3*x23 - dx90_3*x24 - dx94_3*x22,
+        -dx83_4*x23 - dx90_4*x24 - dx94_4*x22,
+        -dx83_5*x23 - dx90_5*x24 - dx94_5*x22,
+        -dx15_0*x97 - dx23_0*x95 - dx24_0*x96 - dx95_0*x23 - dx96_0*x24 - dx97_0*x22,
+        -dx22_1*x97 - dx23_1*x95 - dx24_1*x96 - dx95_1*x23 - dx96_1*x24 - dx97_1*x22,
+        -dx15_2*x97 - dx23_2*x95 - dx24_2*x96 - dx95_2*x23 - dx96_2*x24 - dx97_2*x22,
+        -dx95_3*x23 - dx96_3*x24 - dx97_3*x22,
+        -dx95_4*x23 - dx96_4*x24 - dx97_4*x22,
+        -dx95_5*x23 - dx96_5*x24 - dx97_5*x22,
+        -dx100_0*x22 - dx15_0*x100 - dx23_0*x98 - dx24_0*x99 - dx98_0*x23 - dx99_0*x24,
+        -dx100_1*x22 - dx22_1*x100 - dx23_1*x98 - dx24_1*x99 - dx98_1*x23 - dx99_1*x24,
+        -dx100_2*x22 - dx15_2*x100 - dx23_2*x98 - dx24_2*x99 - dx98_2*x23 - dx99_2*x24,
+        -dx100_3*x22 - dx98_3*x23 - dx99_3*x24,
+        -dx100_4*x22 - dx98_4*x23 - dx99_4*x24,
+        -dx100_5*x22 - dx98_5*x23 - dx99_5*x24,
+        dx15_0,
+        dx22_1,
+        dx15_2,
+        0,
+        0,
+        0,
+        dx23_0,
+        dx23_1,
+        dx23_2,
+        0,
+        0,
+        0,
+        dx24_0,
         dx24_1,
         dx24_2,
         0,
         0,
         0,
-        dc236*dx226_0 + dc247 + dc250*dx130_0 + dc250*dx153_0 + dc251*dx133_0 + dc254 + dc298*dx146_0 + dc299*dx136_0 + dx162_0 + dx218_0*x128 + dx224_0*x136 + dx229_0*x134 + dx231_0*x134 + dx233_0*x136 + dx234_0 - dx237_0 + dx238_0 + dx239_0 - dx240_0 - dx241_0 + dx251_0 + dx254_0 + dx300_0*xi_4 + dx301_0*x33 + dx302_0*xi_4 + dx33_0*x301,
-        dc105*x146 + dc236*x50 + dc244 + dc250*dx130_1 + dc250*dx153_1 + dc251*dx133_1 + dc255 + dc256 + dc298*dx146_1 + dc299*dx136_1 + dx162_1 + dx168_1*x133 + dx218_1*x128 + dx224_1*x136 + dx229_1*x134 + dx231_1*x134 + dx233_1*x136 + dx234_1 - dx237_1 + dx238_1 + dx239_1 - dx240_1 - dx241_1 + dx251_1 + dx254_1 + dx300_1*xi_4 + dx301_1*x33 + dx302_1*xi_4 + dx33_1*x301,
-        dc236*dx179_2 + dc250*dx130_2 + dc250*dx153_2 + dc251*dx133_2 + dc258 + dc259 + dc298*dx146_2 + dc299*dx136_2 + dx162_2 + dx218_2*x128 + dx224_2*x136 + dx229_2*x134 + dx231_2*x134 + dx233_2*x136 + dx234_2 - dx237_2 + dx238_2 + dx239_2 - dx240_2 - dx241_2 + dx251_2 + dx254_2 + dx300_2*xi_4 + dx301_2*x33 + dx302_2*xi_4 + dx33_2*x301,
-        dc236*dx226_3 + dc298*dx146_3 + dx229_3*x134 + dx238_3 - dx240_3 + dx251_3,
-        dc246 + dc300 + dx234_4 - dx237_4 + dx251_4 + dx254_4 + x1*x133 + x136*x6 + x301*x32,
-        dc236*dx179_5 + dx231_5*x134 + dx239_5 - dx241_5 + dx251_5 + x136*x24,
-        dc1*dc303 + dc185*dx305_0 + dc185*dx306_0 + dc185*dx307_0 + dc222*dx303_0 - dc273 + dc274 + dc275 + dc276 + dc279*dx163_0 + dc280*dx304_0 - dc283 + dc301*dx227_0 + dc302*dx52_0 + dx130_0*x275 + dx153_0*x275 + dx190_0 + dx199_0*x163 + dx212_0*x222 + dx247_0*x222 - dx277_0 + dx278_0 + dx281_0*x163 + dx282_0 + dx283_0 - dx285_0 - dx286_0 - dx287_0 - dx288_0 + dx289_0 + dx290_0 + dx299_0 + dx300_0*xi_3 + dx301_0*x52 + dx302_0*xi_3 + dx55_0*x134 + dx6_0*x304 + dx8_0*x304,
-        dc185*dx305_1 + dc185*dx306_1 + dc185*dx307_1 + dc2*dc303 + dc2*x303 + dc222*dx303_1 + dc279*dx163_1 + dc280*dx304_1 - dc285 + dc286 + dc287 + dc288 - dc289 + dc301*dx227_1 + dc302*dx52_1 + dc304*xi_4 + dx130_1*x275 + dx153_1*x275 + dx190_1 + dx199_1*x163 + dx212_1*x222 + dx247_1*x222 - dx277_1 + dx278_1 + dx281_1*x163 + dx282_1 + dx283_1 - dx285_1 - dx286_1 - dx287_1 - dx288_1 + dx289_1 + dx290_1 + dx299_1 + dx300_1*xi_3 + dx301_1*x52 + dx302_1*xi_3 + dx55_1*x134 + dx6_1*x304 + dx8_1*x304,
-        dc185*dx305_2 + dc185*dx306_2 + dc185*dx307_2 + dc222*dx303_2 + dc279*dx163_2 + dc280*dx304_2 - dc291 + dc292 + dc293 + dc294 - dc296 + dc3*dc303 + dc3*x303 + dc301*dx227_2 + dc302*dx52_2 + dc304*xi_5 + dc305*dx275_2 + dx130_2*x275 + dx153_2*x275 + dx190_2 + dx199_2*x163 + dx212_2*x222 + dx247_2*x222 - dx277_2 + dx278_2 + dx281_2*x163 + dx282_2 + dx283_2 - dx285_2 - dx286_2 - dx287_2 - dx288_2 + dx289_2 + dx290_2 + dx299_2 + dx300_2*xi_3 + dx301_2*x52 + dx302_2*xi_3 + dx55_2*x134 + dx6_2*x304 + dx8_2*x304,
-        dc222*dx303_3 + dc280*x136 + dc297 + dc300 + dc302*x32 + dc305*x74 + dx190_3 - dx277_3 + dx278_3 + dx282_3 + dx283_3 - dx285_3 - dx286_3 + dx299_3 + dx55_3*x134 + (0.25)*x227*x3 + (0.25)*numpy.where(numpy.less(x3, 0.5), x3*(x3*(x3*(x3*(x3*(x3*(x3*(4.8419541602617299e-14*x3 - 1.1661924691025221e-11) + 2.1335586811777287e-9) - 2.8392389503500614e-7) + 2.5903880070546738e-5) - 0.001488095238095238) + 0.047222222222222221) + 0.33333333333333331) - 2.0, (numpy.where(numpy.less(x3, 0.5), 0.25, (x3*x3)) + numpy.where(numpy.less(x3, 0.5), 0.5, x3)*numpy.cos(numpy.where(numpy.less(x3, 0.5), 0.70710678118654752, numpy.sqrt(x3))) - 5*numpy.where(numpy.less(x3, 0.5), 0.5, x3) - 4*numpy.cos(numpy.where(numpy.less(x3, 0.5), 0.70710678118654752, numpy.sqrt(x3))) + 4)*numpy.where(numpy.less(x3, 0.5), 2.0, 1.0/x3)),
-        dc304*xi_1 + dx247_4*x222 - dx287_4 + dx289_4 + dx299_4 + x13*x163,
-        dc304*xi_2 + dx212_5*x222 - dx288_5 + dx290_5 + dx299_5 + x15*x163,
-        dc134*dx56_0 + dc134*dx58_0 + dc226*dx203_0 + dc264*dx107_0 + dc306*dx265_0 + dc307*dx180_0 + dc308*dx250_0 + dc309*dx308_0 + dc310*dx34_0 + dx112_0*x83 + dx118_0*x250 + dx126_0*xi_2 + dx166_0*x64 + dx182_0*x68 + dx213_0*x107 + dx248_0 + dx253_0*x50 + dx256_0*x64 + dx257_0*x2 + dx258_0*x262 + dx259_0*x261 + dx260_0*x70 + dx261_0*x259 + dx262_0*x258 + dx263_0*x92 + dx264_0*x107 + dx272_0 - dx45_0 + dx68_0*x182 + dx83_0*x112 + dx92_0*x263 + dx93_0 + dx98_0 + dx99_0 + (0.5)*x2*x265 + x308*xi_3 + x34*xi_0,
-        dc134*dx56_1 + dc134*dx58_1 + dc226*dx203_1 + dc264*dx107_1 + dc306*dx265_1 + dc307*dx180_1 + dc308*dx250_1 + dc309*dx308_1 + dc310*dx34_1 + dx112_1*x83 + dx118_1*x250 + dx126_1*xi_2 + dx166_1*x64 + dx182_1*x68 + dx213_1*x107 + dx248_1 + dx253_1*x50 + dx256_1*x64 + dx257_1*x2 + dx258_1*x262 + dx259_1*x261 + dx260_1*x70 + dx261_1*x259 + dx262_1*x258 + dx263_1*x92 + dx264_1*x107 + dx272_1 - dx45_1 + dx68_1*x182 + dx70_1*x260 + dx79_1*x180 + dx83_1*x112 + dx92_1*x263 + dx93_1 + dx98_1 + dx99_1 + x308*xi_4 + x34*xi_1,
-        dc134*dx56_2 + dc134*dx58_2 + dc226*dx203_2 + dc264*dx107_2 + dc271*dx64_2 + dc3*(x22*x265 + x257) + dc306*dx265_2 + dc307*dx180_2 + dc308*dx250_2 + dc309*dx308_2 + dc310*dx34_2 + dx112_2*x83 + dx118_2*x250 + dx126_2*xi_2 + dx166_2*x64 + dx182_2*x68 + dx213_2*x107 + dx248_2 + dx253_2*x50 + dx256_2*x64 + dx257_2*x2 + dx258_2*x262 + dx259_2*x261 + dx260_2*x70 + dx261_2*x259 + dx262_2*x258 + dx263_2*x92 + dx264_2*x107 + dx272_2 - dx45_2 + dx68_2*x182 + dx70_2*x260 + dx79_2*x180 + dx83_2*x112 + dx92_2*x263 + dx93_2 + dx98_2 + dx99_2 + x126 + x253*xi_5 + x34*xi_2,
-        dc134*dx56_3 + dc306*dx265_3 + dx118_3*x250 + dx257_3*x2 + dx272_3 + dx68_3*x182 + dx98_3 + x308*xi_0,
-        dc134*dx58_4 + dc310*dx34_4 + dx112_4*x83 + dx248_4 + dx259_4*x261 + dx272_4 + dx79_4*x180 + dx99_4 + x260*x57 + x308*xi_1,
-        dc264*dx107_5 + dc271*x40 + dx126_5*xi_2 + dx262_5*x258 + dx272_5 - dx45_5 + dx92_5*x263 + dx93_5 + x253*xi_2,
-        dx15_0,
-        dx26_1,
-        dx15_2,
-        0,
-        0,
-        0,
-        dx27_0,
-        dx27_1,
-        dx27_2,
-        0,
-        0,
-        0,
-        dx28_0,
-        dx28_1,
-        dx28_2,
-        0,
-        0,
-        0,
     ), (
     ), (
-        x127,
-        x3,
     )
 
 

@@ -169,10 +169,45 @@ def _transforms_near(rng, small, add, name: str) -> None:
                                          [q(v) * q(sc) for v in rng.standard_normal(3)]))
 
 
+def _derived(kernel, rng, small, base, out: dict) -> None:
+    """The zeros of the kernel's own denominator factors and differences in a norm
+    (:mod:`rigidsym.codegen.singular_sets`, issue 48), approached from both sides along a
+    random rational axis per point: ``|w| = theta0 -+ delta`` for each step ``delta``."""
+    from rigidsym.codegen.singular_sets import norm_zeros
+
+    seen = set()
+    for z in norm_zeros(kernel):
+        t0 = float(z.theta0)
+        if (z.arg, z.comps, t0) in seen:
+            continue
+        seen.add((z.arg, z.comps, t0))
+        name = f"derived: |{kernel.args[z.arg].name}|->{sp_str(z.theta0)}"
+        for s in small:
+            for sign in (-1, 1):
+                p = base()
+                d = unit(rng, len(z.comps))
+                r = q(t0 + sign * s)
+                v = list(p[z.arg])
+                for j, c in enumerate(z.comps):
+                    v[c] = r * d[j]
+                p[z.arg] = v
+                out.setdefault(name, []).append(p)
+
+
+def sp_str(x) -> str:
+    """A zero as the regime names it (``2*pi``)."""
+    import sympy as sp
+
+    return sp.sstr(x).replace(" ", "")
+
+
 def regimes(kernel, dtype, n_random: int = 8, seed: int = 0, small=None,
-            extremes: bool = True):
+            extremes: bool = True, derived: bool = False):
     """``{regime: [point]}`` for ``kernel`` (its ``Arg`` kinds and names decide the sweeps);
-    ``extremes``: the ends of the floating range too."""
+    ``extremes``: the ends of the floating range too; ``derived``: the zeros of the
+    kernel's own denominator factors and differences in a norm (issue 48,
+    :mod:`rigidsym.codegen.singular_sets`; the harness's, not yet the generator's choice of
+    forms: that would regenerate every kernel with a norm)."""
     rng = np.random.default_rng(seed)
     small = small if small is not None else (STEPS32 if dtype == np.float32 else STEPS)
     args = kernel.args
@@ -228,4 +263,6 @@ def regimes(kernel, dtype, n_random: int = 8, seed: int = 0, small=None,
         _coincident(rng, small, base, out)
     if extremes:
         _range(kernel, dtype, base, out)
+    if derived:
+        _derived(kernel, rng, small, base, out)
     return out

@@ -377,10 +377,12 @@ class Space:
         if not _ar.screen(lib, full, res, sing, bits):
             return res, sing, True
         rows = _ar.flag_rows(xp, full, res, sing, batch, bits)
-        if not bool(rows.any()):
-            return res, sing, True
+        if not bool(rows.any()):     # flags of ordinary inputs stand (issue 48)
+            return res, sing, False
         res, s, put = _ar.rescue(lib, self.progs, name, full, res, rows, batch, bits)
         dev = lib.device(full)
         if lib.rescued is not None and put.any():
             res = lib.rescued(res, lib.as_array(put.reshape(batch), None, dev, "rows"), full)
-        return res, lib.as_array(s.reshape(batch), None, dev, "singular"), False
+        s = lib.as_array(s.reshape(batch), None, dev, "singular")
+        # the wide run's singular rows, and the own flags of the rows it did not re-run
+        return res, s | (sing.reshape(s.shape) & ~rows.reshape(s.shape)), False

@@ -81,18 +81,17 @@ def _screen(xp, host, xs: list, res: list, sing, bits: int) -> bool:
 
 
 def flag_rows(xp, xs: list, res: list, sing, batch: tuple, bits: int):
-    """``batch`` bool on the device: samples with a singular flag, a non-finite output, or an
-    input that is non-finite or of extreme magnitude (:func:`input_range`). The inputs are
-    tested on their bits, as the C kernels do: XLA on CPU flushes subnormals to zero in
-    every floating operation, comparisons included, so a float test would miss them."""
-    rows = sing.reshape(batch) if batch else sing.reshape((1,))
-    # the outputs, then the inputs, each tested as one array: every operation is a dispatch
-    # of a few us in eager PyTorch, the fixed cost of a call at small N (issue 38)
-    out = xp.concatenate([_rows(xp, r, batch) for r in res], -1)
-    rows = rows | ~xp.isfinite(out).all(-1)
+    """``batch`` bool on the device: samples with an input that is non-finite or of extreme
+    magnitude (:func:`input_range`), the only ones re-run, whatever their flags (one answer
+    per row, issue 48, the rule of C and NumPy: a flagged sample of ordinary inputs keeps its
+    own flag; its wide value was a wrong number where a difference cancelled to a zero
+    denominator). The inputs are tested on their bits, as the C kernels do: XLA on CPU
+    flushes subnormals to zero in every floating operation, comparisons included, so a float
+    test would miss them. (``res`` and ``sing``: the signature of before.)"""
+    del res, sing
     a, tiny, big = _magnitudes(xp, xp.concatenate([_rows(xp, x, batch) for x in xs], -1),
                                bits)
-    return rows | ((a >= big) | ((a < tiny) & (a != 0))).any(-1)
+    return ((a >= big) | ((a < tiny) & (a != 0))).any(-1)
 
 
 def traced_inputs(xp, xs: list) -> list:

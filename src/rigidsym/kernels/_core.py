@@ -248,10 +248,13 @@ class KernelSpace:
             def g(*arrays):
                 flags = k(*arrays)
                 n = len(flags)
-                rows = flags != 0
-                # float32 samples ran in float64 arithmetic: the C kernels' float32 range
-                # (a non-finite float32 input too: its IEEE limits are no value, issue 37)
-                rows |= extreme_rows(arrays[:nin], n, RANGE32 if f32 else None)
+                # the rows re-run in the wide type: those with an input of extreme magnitude
+                # or a non-finite one, whatever their flags, and no other (one answer per
+                # row, issue 48: a flagged row of ordinary inputs is singular or cancels to
+                # a zero denominator, and its wide value was a wrong number, which C gave in
+                # raise mode and not in nan mode); float32 samples ran in float64
+                # arithmetic: the C kernels' float32 range
+                rows = extreme_rows(arrays[:nin], n, RANGE32 if f32 else None)
                 if rows.any():
                     idx = np.flatnonzero(rows)
                     flags[idx] = rescue(wide, arrays[:nin], arrays[nin:], idx)
@@ -263,12 +266,16 @@ class KernelSpace:
         def f(*arrays):
             n = arrays[0].shape[0]
             count = batch(k, f32, n, t if n >= MIN_PARALLEL else 1, *arrays)
-            if count:      # flagged rows are NaN: re-run them; those still flagged stay NaN
-                idx = np.flatnonzero(np.isnan(arrays[nin].reshape(n, -1)[:, 0]))
-                bad = idx[rescue(wide, arrays[:nin], arrays[nin:], idx) != 0]
+            if count:      # flagged rows are NaN: re-run those of extreme or non-finite
+                # input (the NumPy backend's rule); those still flagged stay NaN
+                nan = np.isnan(arrays[nin].reshape(n, -1)[:, 0])
+                idx = np.flatnonzero(nan & extreme_rows(arrays[:nin], n,
+                                                        RANGE32 if f32 else None))
+                bad = idx[rescue(wide, arrays[:nin], arrays[nin:], idx) != 0] \
+                    if idx.size else idx
                 for o in arrays[nin:]:
                     o.reshape(n, -1)[bad] = np.nan
-                count = bad.size
+                count = int(nan.sum()) - idx.size + bad.size
             return count
         return f
 
@@ -329,10 +336,26 @@ class KernelSpace:
         an overflow, an input of extreme magnitude or a non-finite one): those rows are
         re-run by :func:`~rigidsym.kernels._rescue.rescue`, which computes them and tells
         which is which."""
-        idx = np.flatnonzero(np.isnan(bufs[0].reshape(n, -1)[:, 0]))
+        nan = np.isnan(bufs[0].reshape(n, -1)[:, 0])
         flags = np.zeros(n, dtype=np.uint8)
+        if not nan.any():
+            return flags
+        f32 = bufs[0].dtype == np.float32
+        ext = extreme_rows(flat, n, RANGE32 if f32 else None)
+        idx = np.flatnonzero(nan & ext)
         if idx.size:
             flags[idx] = rescue(self.numpy_kernel(name), flat, bufs, idx)
+        # rows of ordinary inputs are never re-run (one answer per row, issue 48): their
+        # flag is the NumPy kernel's in the call's own type, the program C ran
+        own = np.flatnonzero(nan & ~ext)
+        if own.size:
+            wide = self.numpy_kernel(name)
+            k = numpy_f32(wide, len(flat)) if f32 else wide
+            ins = [np.ascontiguousarray(a[own]) for a in flat]
+            tmp = [np.empty((own.size,) + b.shape[1:], dtype=b.dtype) for b in bufs]
+            with np.errstate(all="ignore"):
+                sub = np.asarray(k(*ins, *tmp)).astype(np.uint8)
+            flags[own] = np.where(sub == 0, _NONFINITE, sub)
         return flags
 
 

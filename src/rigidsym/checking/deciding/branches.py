@@ -118,6 +118,24 @@ def _apply(x, f):
     return x.applyfunc(f) if isinstance(x, sp.MatrixBase) else f(x)
 
 
+def _nodes(exprs: list, types: tuple) -> set:
+    """The subexpressions of ``exprs`` of one of ``types`` (``Basic.atoms(*types)`` of
+    each, united), each distinct node visited once: ``atoms`` walks a subexpression shared
+    by many entries (a rotation matrix in every entry of a product) once per occurrence,
+    a tenth of a cold ``rigidsym verify`` (issue 54)."""
+    out, seen = set(), set()
+    stack = list(exprs)
+    while stack:
+        x = stack.pop()
+        if id(x) in seen:
+            continue
+        seen.add(id(x))
+        if isinstance(x, types):
+            out.add(x)
+        stack.extend(x.args)
+    return out
+
+
 def cases(lhs, rhs) -> list[tuple]:
     """The cases to decide: ``(lhs, rhs, lhs', rhs', sub)`` with the split angles
     substituted, then also ``acos``/``atan2`` rewritten, and ``sub`` the substitution of
@@ -125,8 +143,7 @@ def cases(lhs, rhs) -> list[tuple]:
     one case, ``(lhs, rhs, lhs, rhs, {})``, when the relation holds neither."""
     ents = list(lhs) if isinstance(lhs, sp.MatrixBase) else [lhs]
     ents += list(rhs) if isinstance(rhs, sp.MatrixBase) else [rhs]
-    fns = set().union(*(sp.sympify(e).atoms(sp.acos, sp.asin, sp.atan2) for e in ents))
-    fns |= set().union(*(sp.sympify(e).atoms(sp.Pow) for e in ents))
+    fns = _nodes([sp.sympify(e) for e in ents], (sp.acos, sp.asin, sp.atan2, sp.Pow))
     fns = {f for f in fns if not isinstance(f, sp.Pow) or _is_root(f)}
     if not fns:
         return [(lhs, rhs, lhs, rhs, {})]

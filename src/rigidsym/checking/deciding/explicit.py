@@ -103,7 +103,7 @@ def _mx(x, model) -> sp.ImmutableMatrix:
                 coeff = coeff * _sc(a, model)
         acc = mats[0]
         for m in mats[1:]:
-            acc = acc * m
+            acc = matmul(acc, m)
         return im(coeff * acc) if coeff != 1 else im(acc)
     if isinstance(x, sp.MatPow) and x.exp.is_Integer:
         base, n = _mx(x.base, model), int(x.exp)
@@ -111,7 +111,7 @@ def _mx(x, model) -> sp.ImmutableMatrix:
             base, n = im(base.inv()), -n
         acc = im(sp.eye(base.rows))
         for _ in range(n):
-            acc = acc * base
+            acc = matmul(acc, base)
         return im(acc)
     if isinstance(x, sp.Transpose):
         return im(_mx(x.arg, model).T)
@@ -130,6 +130,47 @@ def _mx(x, model) -> sp.ImmutableMatrix:
     y = x.xreplace(model) if model else x
     y = y.doit()
     return im(y.as_explicit() if isinstance(y, sp.MatrixExpr) else y)
+
+
+_INFINITE = (sp.S.Infinity, sp.S.NegativeInfinity, sp.S.ComplexInfinity, sp.S.NaN)
+
+
+def _finite_atoms(mats) -> bool:
+    """Whether no entry of ``mats`` holds an infinity or ``nan`` (or an atom declared
+    infinite): each distinct node visited once (a shared subexpression is not walked again,
+    as ``Basic.has`` would)."""
+    seen: set[int] = set()
+    stack = [e for m in mats for e in m]
+    while stack:
+        x = stack.pop()
+        if id(x) in seen:
+            continue
+        seen.add(id(x))
+        if x in _INFINITE or (x.is_Symbol and x.is_finite is False):
+            return False
+        stack.extend(x.args)
+    return True
+
+
+def matmul(a: sp.MatrixBase, b: sp.MatrixBase) -> sp.ImmutableMatrix:
+    """``a * b`` of explicit matrices, entry by entry: ``Add`` of the products of the
+    nonzero pairs, the same expressions as sympy's product.
+
+    sympy's product (``DomainMatrix`` over ``EXRAW``) first asks, for every nonzero entry
+    of either side, whether ``0 * entry`` is ``0`` (``Mul`` asks whether the entry is
+    finite, a walk of the assumptions system over the whole expression): a fifth of a
+    cold ``rigidsym verify``. Here that question is asked of the atoms only, once: with no
+    infinity anywhere, ``0 * entry`` is ``0`` for every entry and the products of the
+    nonzero pairs are all that sympy adds; otherwise sympy's own product is used.
+
+    Raises:
+        ShapeError: the shapes do not fit (sympy's error).
+    """
+    if a.cols != b.rows or not _finite_atoms((a, b)):
+        return sp.ImmutableMatrix(a * b)
+    rows, cols = a.tolist(), b.T.tolist()
+    return sp.ImmutableMatrix([[sp.Add(*[x * y for x, y in zip(r, c, strict=True) if x and y])
+                                for c in cols] for r in rows])
 
 
 class UnknownShape(ValueError):
