@@ -14,9 +14,8 @@ from functools import partial
 
 import sympy as sp
 
-from rigidsym.algebra.primitives import cpm
-from rigidsym.codegen.removable import Grouped
-from rigidsym.codegen.spec import Arg, Branch, Kernel, Out
+from rigidsym.codegen.spec import Arg, Branch, Grouped, Kernel, Out
+from rigidsym.declare import cpm
 
 from .kernel_wiring import Q_ARG, _ni_common, _ni_near_pi, _ni_when, formula
 

@@ -51,7 +51,8 @@ PUBLIC = {
         "batch_function", "build_info",
         "euler_angle_rates", "euler_rate_matrix", "get_num_threads", "jacobian", "load",
         "set_num_threads", "swap_blocks", "use_backend", *KERNELS],
-    "rigidsym.codegen.spec": ["Arg", "Branch", "Kernel", "Out", "input_symbols"],
+    # issue 48: Grouped marks a group the removable-singularity pass never distributes
+    "rigidsym.codegen.spec": ["Arg", "Branch", "Grouped", "Kernel", "Out", "input_symbols"],
     "rigidsym.cli": ["build_parser", "main"],
     # issue 22: the exercises to run, see and vary
     "rigidsym.exercises": ["EXERCISE_IDS", "Graded", "IllPosed", "Param", "Parameters",

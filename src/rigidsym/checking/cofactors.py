@@ -21,6 +21,7 @@ kind with its time derivatives 0 ... K, then the angles' ``cos^2 + sin^2 - 1``).
 from __future__ import annotations
 
 import re
+import time
 from fractions import Fraction
 
 import flint
@@ -249,9 +250,44 @@ def cofactor_evidence(lhs, rhs, atoms: list, atom_name, M: dict, points: list) -
             point.
     """
     L, Rh = _entries(lhs), _entries(rhs)
+    names, nxt, order, angle_names = _layout(L + Rh, atoms, atom_name, M)
+    R = _Ring(names)
+    nxt_i = {R.index[a]: R.index[b] for a, b in nxt.items()}
+    unit = _unit_of(R, atom_name, M)
+    memo: dict = {}
+    hyps = [(g["group"], k) for g in atoms  # the checker's order
+            if g["kind"] in ("unit", "unit4") and g["group"] in order
+            for k in range(order[g["group"]] + 1)] + [("angle", a) for a in angle_names]
+    entries = []
+    t0 = time.process_time()
+    for a, b in zip(L, Rh, strict=True):
+        if time.process_time() - t0 > SECONDS:
+            raise NoCofactors(f"over {SECONDS} s of CPU")
+        ln = _convert(sp.sympify(a), R, atom_name, unit, memo)
+        rn = _convert(sp.sympify(b), R, atom_name, unit, memo)
+        D, mus = _entry_cofactors(ln, rn, R, atoms, order, nxt_i, angle_names, M)
+        entries.append((D, [mus.get(k) for k in hyps]))
+    free = {n for g in atoms if g["kind"] == "free" for n in g["names"]}
+    divisors = [D for D, _ in entries] + memo.get(None, [])
+    for point in points:
+        values = _values(R, point, M, free)
+        if values is not None and all(D(*values) != 0 for D in divisors):
+            break
+    else:
+        raise NoCofactors("no candidate point where every denominator is non-zero")
+    return {"type": "cofactors",
+            "entries": [{"denominator": R.text(D),
+                         "cofactors": ["0" if m is None else R.text(m) for m in mus]}
+                        for D, mus in entries], **point}
+
+
+def _layout(exprs: list, atoms: list, atom_name, M: dict) -> tuple:
+    """The ring's variables for the entries ``exprs``: ``(names, next jet of each unit
+    entry jet, K of each unit group used, the angles under cos/sin)``; :class:`NoCofactors`
+    for a bare angle, or a kind without a triangular set here."""
     used: dict = {}   # certificate name -> its jets used outside cos/sin
     trig_angles: set = set()
-    for e in L + Rh:
+    for e in exprs:
         _scan(sp.sympify(e), atom_name, used, trig_angles)
     names, nxt, order = [], {}, {}
     for g in atoms:
@@ -284,8 +320,12 @@ def cofactor_evidence(lhs, rhs, atoms: list, atom_name, M: dict, points: list) -
                    if g["kind"] in ("angle", "angle_pi") and g["names"][0] in trig_angles]
     for a in angle_names:
         names += [f"cos({a}/{M[a]})", f"sin({a}/{M[a]})"]
-    R = _Ring(names)
-    nxt_i = {R.index[a]: R.index[b] for a, b in nxt.items()}
+    return names, nxt, order, angle_names
+
+
+def _unit_of(R: _Ring, atom_name, M: dict):
+    """``arg -> exp(i arg)`` as a pair (cos, sin) of ring elements, for a rational
+    combination of angles and ``pi`` (the angles' coefficients multiples of ``1/M``)."""
 
     def unit(arg):
         form = sp.expand(arg)
@@ -305,57 +345,34 @@ def cofactor_evidence(lhs, rhs, atoms: list, atom_name, M: dict, points: list) -
             z = (z[0] * w[0] - z[1] * w[1], z[0] * w[1] + z[1] * w[0])
         return z
 
-    def name_of(a):
-        return atom_name(a)
+    return unit
 
-    memo: dict = {}
-    hyps = []  # the checker's order
+
+def _entry_cofactors(ln, rn, R: _Ring, atoms: list, order: dict, nxt_i: dict,
+                     angle_names: list, M: dict) -> tuple:
+    """``(D, {hypothesis: cofactor})`` of one entry ``ln = rn`` (each ``(num, den)`` over
+    the ring); :class:`NoCofactors` for a non-zero remainder or a size past the limit."""
+    N, Q = _reduce((ln[0] * rn[1] - rn[0] * ln[1], ln[1] * rn[1]))
+    mus: dict = {}
+    mult = R.one
     for g in atoms:
         if g["kind"] in ("unit", "unit4") and g["group"] in order:
-            hyps += [(g["group"], k) for k in range(order[g["group"]] + 1)]
-    hyps += [("angle", a) for a in angle_names]
-    import time
-
-    entries = []
-    t0 = time.process_time()
-    for a, b in zip(L, Rh, strict=True):
-        if time.process_time() - t0 > SECONDS:
-            raise NoCofactors(f"over {SECONDS} s of CPU")
-        ln = _convert(sp.sympify(a), R, name_of, unit, memo)
-        rn = _convert(sp.sympify(b), R, name_of, unit, memo)
-        N, Q = _reduce((ln[0] * rn[1] - rn[0] * ln[1], ln[1] * rn[1]))
-        mus: dict = {}
-        mult = R.one
-        for g in atoms:
-            if g["kind"] in ("unit", "unit4") and g["group"] in order:
-                N, mult = _reduce_group(N, R, g, order[g["group"]], nxt_i, mus, mult)
-        for a_ in angle_names:
-            C, S = R.var(f"cos({a_}/{M[a_]})"), R.var(f"sin({a_}/{M[a_]})")
-            h = C**2 + S**2 - R.one
-            r = _rem_square(N, R.index[f"sin({a_}/{M[a_]})"], R.one - C**2)
-            q, rest = divmod(N - r, h)
-            if not rest.is_zero():
-                raise NoCofactors("a division by cos^2 + sin^2 - 1 left a remainder")
-            mus[("angle", a_)] = q
-            N = r
-        if not N.is_zero():
-            raise NoCofactors("the remainder is not zero")
-        D = mult * Q
-        if any(len(m) > TERMS_LIMIT for m in mus.values()) or len(D) > TERMS_LIMIT:
-            raise NoCofactors(f"a cofactor of more than {TERMS_LIMIT} terms")
-        entries.append((D, [mus.get(k) for k in hyps]))
-    free = {n for g in atoms if g["kind"] == "free" for n in g["names"]}
-    divisors = [D for D, _ in entries] + memo.get(None, [])
-    for point in points:
-        values = _values(R, point, M, free)
-        if values is not None and all(D(*values) != 0 for D in divisors):
-            break
-    else:
-        raise NoCofactors("no candidate point where every denominator is non-zero")
-    return {"type": "cofactors",
-            "entries": [{"denominator": R.text(D),
-                         "cofactors": ["0" if m is None else R.text(m) for m in mus]}
-                        for D, mus in entries], **point}
+            N, mult = _reduce_group(N, R, g, order[g["group"]], nxt_i, mus, mult)
+    for a_ in angle_names:
+        C, S = R.var(f"cos({a_}/{M[a_]})"), R.var(f"sin({a_}/{M[a_]})")
+        h = C**2 + S**2 - R.one
+        r = _rem_square(N, R.index[f"sin({a_}/{M[a_]})"], R.one - C**2)
+        q, rest = divmod(N - r, h)
+        if not rest.is_zero():
+            raise NoCofactors("a division by cos^2 + sin^2 - 1 left a remainder")
+        mus[("angle", a_)] = q
+        N = r
+    if not N.is_zero():
+        raise NoCofactors("the remainder is not zero")
+    D = mult * Q
+    if any(len(m) > TERMS_LIMIT for m in mus.values()) or len(D) > TERMS_LIMIT:
+        raise NoCofactors(f"a cofactor of more than {TERMS_LIMIT} terms")
+    return D, mus
 
 
 def _values(R: _Ring, point: dict, M: dict, free: set):

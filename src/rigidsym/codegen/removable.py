@@ -34,24 +34,9 @@ import sympy as sp
 
 from rigidsym.codegen.removable_cert import NotRemovable, S, certify, series_of
 from rigidsym.codegen.removable_terms import Terms, TooLarge
+from rigidsym.codegen.spec import Grouped
 
 __all__ = ["QuotientBase", "quotient", "rewrite", "half_angle", "Grouped", "NAMES"]
-
-
-class Grouped(sp.UnevaluatedExpr):
-    """A sub-expression this pass rewrites alone and never distributes into the
-    monomials around it (issue 48: the SE(3) inverse Jacobian's 3 x 3 matrix products, which
-    distributed into monomials of degree 9 in ``w`` lost up to 470 times the rule at large
-    ``|w|``); :func:`rewrite` removes the marks from what it returns, so the program keeps the
-    grouping as its structure and nothing after this pass sees them. Printed (the harness's
-    reference) as its argument in parentheses: an ``UnevaluatedExpr`` of a sum printed bare
-    (``-a + b``) was read by the enclosing sum's printer as a negative term, its sign
-    pulled out of the first term alone (``- (a + b)``)."""
-
-    def _in_parentheses(self, printer, *args, **kw):
-        return f"({printer._print(self.args[0])})"
-
-    _sympystr = _lambdacode = _pythoncode = _mpmathcode = _numpycode = _in_parentheses
 
 
 def _ungrouped(e):

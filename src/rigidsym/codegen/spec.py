@@ -17,7 +17,7 @@ import sympy as sp
 
 from rigidsym import _kinds
 
-__all__ = ["Arg", "Out", "Branch", "Kernel", "input_symbols"]
+__all__ = ["Arg", "Out", "Branch", "Kernel", "input_symbols", "Grouped"]
 
 
 @dataclass(frozen=True)
@@ -199,3 +199,26 @@ def flatten_outputs(kernel: Kernel, values: dict) -> list[sp.Expr]:
                 raise ValueError(f"{kernel.name}.{o.name}: expected {o.shape}, got {m.shape}")
             flat.extend(list(m))          # row-major
     return flat
+
+
+class Grouped(sp.UnevaluatedExpr):
+    """A sub-expression the removable-singularity pass (:mod:`rigidsym.codegen.removable`)
+    rewrites alone and never distributes into the monomials around it (issue 48: the SE(3)
+    inverse Jacobian's 3 x 3 matrix products, which distributed into monomials of degree 9 in
+    ``w`` lost up to 470 times the rule at large ``|w|``); that pass removes the marks from
+    what it returns, so the program keeps the grouping as its structure and nothing after it
+    sees them. Printed (the harness's reference) as its argument in parentheses: an
+    ``UnevaluatedExpr`` of a sum printed bare (``-a + b``) was read by the enclosing sum's
+    printer as a negative term, its sign pulled out of the first term alone (``- (a + b)``).
+    Here, beside the kernel declarations' other names, so that a book or a reader's module
+    marks a group without importing the generator's passes.
+
+    Args:
+        expr: the sympy expression to keep together (a scalar; a matrix is marked entry by
+            entry).
+    """
+
+    def _in_parentheses(self, printer, *args, **kw):
+        return f"({printer._print(self.args[0])})"
+
+    _sympystr = _lambdacode = _pythoncode = _mpmathcode = _numpycode = _in_parentheses

@@ -1,7 +1,8 @@
 """The given data of a worked exercise: declared parameters, read exactly or as measurements.
 
 An exercise declares its numeric data as :class:`Param` rows (name, the book's value,
-shape, one-line meaning, unit). A student's value is read by :func:`read_value`:
+shape, one-line meaning, unit; :mod:`.worked_params`, re-exported here). A student's value
+is read by :func:`read_value`:
 
 - exact: an ``int``, a :class:`fractions.Fraction`, a :class:`decimal.Decimal`, a decimal
   string (``"0.1"`` is 1/10), a string that sympifies to a closed real number
@@ -26,151 +27,12 @@ from fractions import Fraction
 import sympy as sp
 
 from .worked_numbers import close, read_text, split_text
+from .worked_params import _SHAPE_WORDS, IllPosed, Param, Parameters
 
 __all__ = ["Param", "Parameters", "Data", "read_value", "read_data", "IllPosed"]
 
-_SHAPE_WORDS = {(): "a real number", (3,): "a 3-vector (3 numbers)",
-                (6,): "a 6-array (6 numbers)", (3, 3): "a 3 x 3 matrix (3 rows of 3 numbers)"}
 #: default tolerance of measured data, relative to the largest magnitude among the data
 DEFAULT_RELATIVE_TOL = sp.Rational(1, 1000)
-
-
-class IllPosed(Exception):
-    """The data make the exercise ill-posed.
-
-    Args:
-        solution: the solution so far, ending at the failing step.
-        reason: why, in one sentence.
-
-    Attributes:
-        solution: as given.
-        reason: as given (also the exception's message).
-    """
-
-    def __init__(self, solution, reason: str):
-        super().__init__(reason)
-        self.solution = solution
-        self.reason = reason
-
-
-@dataclass(frozen=True)
-class Param:
-    """One given datum of an exercise.
-
-    Attributes:
-        name: a valid identifier, as the book writes it with subscripts after ``_`` and
-            primes spelled out (``n_1``, ``I_A``, ``C_prime``).
-        default: the book's value (exact sympy: a number or a Matrix; a str for a choice;
-            None for an optional datum the book leaves symbolic, such as 3.10's angles).
-        shape: ``()`` a number, ``(3,)`` a vector, ``(6,)``, ``(3, 3)`` a matrix; ``None``
-            for a choice among ``choices``.
-        meaning: one line.
-        unit: SI unit of the entries ("" when dimensionless).
-        choices: the allowed strings of a choice parameter.
-    """
-
-    name: str
-    default: object
-    shape: tuple | None
-    meaning: str
-    unit: str = ""
-    choices: tuple = ()
-
-    @property
-    def shape_text(self) -> str:
-        """The shape in words, as a reader says it (``(3,)``, ``(3, 3)``, ``scalar``,
-        ``one of ...``)."""
-        if self.shape is None:
-            return "one of " + ", ".join(self.choices)
-        return "scalar" if self.shape == () else str(self.shape)
-
-
-@dataclass(frozen=True)
-class Parameters:
-    """The given data of one exercise: a table of :class:`Param` and a sentence.
-
-    Iterating gives the rows; ``params["n_1"]`` one row; ``defaults()`` the book's values.
-    Displayed as a table in a notebook (``_repr_html_``) and as text by ``str()``.
-
-    Attributes:
-        exercise: the exercise id (``"ex3.4"``).
-        rows: the :class:`Param` rows, in the exercise's order.
-        note: a sentence on the data (why there are none, how tolerances are chosen).
-        measured: whether the data are measurements (floats, judged within a tolerance).
-        default_tol: ``values -> (tol, how it was chosen)``, or None for 10^-3 times the
-            largest datum.
-        readings: the parameters whose decimal texts (``"1.667"``) are readings, judged
-            within a tolerance derived from their digits; ``()``: all of them.
-    """
-
-    exercise: str
-    rows: tuple = ()
-    note: str = ""
-    measured: bool = False
-    #: ``values -> (tol, how it was chosen)``; None: 10^-3 x the largest absolute datum
-    default_tol: object = None
-    #: the parameters whose decimal texts are readings (measured exercises); () all of them
-    readings: tuple = ()
-
-    def __iter__(self):
-        return iter(self.rows)
-
-    def __len__(self) -> int:
-        return len(self.rows)
-
-    def __getitem__(self, name: str) -> Param:
-        for p in self.rows:
-            if p.name == name:
-                return p
-        raise KeyError(f"{self.exercise} has no parameter {name!r}")
-
-    @property
-    def names(self) -> list[str]:
-        """The parameter names, in the order of the table."""
-        return [p.name for p in self.rows]
-
-    def defaults(self) -> dict:
-        """``{name: the book's value}``."""
-        return {p.name: p.default for p in self.rows}
-
-    def __str__(self) -> str:
-        if not self.rows:
-            return f"{self.exercise}: {self.note}"
-        out = [f"{self.exercise}: {self.note}" if self.note else f"{self.exercise}:"]
-        for p in self.rows:
-            unit = f" [{p.unit}]" if p.unit else ""
-            out.append(f"  {p.name:10s} {p.shape_text:8s} = {_flat_text(p.default)}{unit}")
-            out.append(f"  {'':10s} {p.meaning}")
-        if self.measured:
-            out.append("  tol        scalar   (keyword) tolerance of float (measured) data; by "
-                       "default set from the data, and stated in the solution")
-        return "\n".join(out)
-
-    def _repr_html_(self) -> str:
-        import html
-        head = f"<p><b>{html.escape(self.exercise)}</b>: {html.escape(self.note)}</p>"
-        if not self.rows:
-            return head
-        # inline left alignment: Jupyter's table style right-aligns every cell
-        td = '<td style="text-align: left">'
-        rows = "".join(
-            f"<tr>{td}<code>{html.escape(p.name)}</code></td>{td}{html.escape(p.shape_text)}"
-            f"</td>{td}<code>{html.escape(_flat_text(p.default))}</code></td>"
-            f"{td}{html.escape(p.unit)}</td>{td}{html.escape(p.meaning)}</td></tr>"
-            for p in self.rows)
-        th = "".join(f'<th style="text-align: left">{h}</th>'
-                     for h in ("name", "shape", "book's value", "unit", "meaning"))
-        return (head + f"<table><thead><tr>{th}</tr></thead><tbody>{rows}</tbody></table>")
-
-
-def _flat_text(v) -> str:
-    if v is None:
-        return "(not given)"
-    if isinstance(v, sp.MatrixBase):
-        if v.cols == 1:
-            return "[" + ", ".join(str(x) for x in v) + "]"
-        return "[" + "; ".join(", ".join(str(x) for x in v.row(i)) for i in range(v.rows)) + "]"
-    return str(v)
 
 
 @dataclass
@@ -417,6 +279,21 @@ def read_data(params: Parameters, data: dict, tol=None) -> Data:
         have = ", ".join(params.names) if params.names else "none (no numeric data)"
         raise TypeError(f"{params.exercise} has no parameter {unknown[0]!r}; its parameters "
                         f"are: {have}")
+    values, measures, given_floats, notes, places = _read_given(params, data)
+    out = Data(values, tuple(measures))
+    _say_how_read(out, params, places, given_floats, notes)
+    how = _tolerance(out, params, tol, values, measures, places, given_floats)
+    if out.tol is not None:
+        how = f"the default, {how}" if out.tol_default else "as given"
+        out.notes.append(f"Measured data: compatibility is judged within tol = {out.tol} "
+                         f"(~ {float(out.tol):.3g}; {how}); the answer is the least-squares "
+                         f"one, with its residual.")
+    return out
+
+
+def _read_given(params: Parameters, data: dict) -> tuple:
+    """Each parameter's value (read, or the book's): ``(values, measured names, names given
+    as floats, notes, decimal places of readings, coarsest first)``."""
     values, measures, given_floats, notes, places = {}, [], [], [], []
     for p in params:
         if p.name in data and data[p.name] is None and p.default is None:
@@ -439,7 +316,13 @@ def read_data(params: Parameters, data: dict, tol=None) -> Data:
         else:
             values[p.name] = p.default
     places.sort(reverse=True)          # the coarsest reading first
-    out = Data(values, tuple(measures))
+    return values, measures, given_floats, notes, places
+
+
+def _say_how_read(out: Data, params: Parameters, places: list, given_floats: list,
+                  notes: list) -> None:
+    """Append to ``out.notes`` the sentences on how decimals and floats were read, then
+    ``notes`` (each hint once)."""
     if places and params.measured:
         out.notes.append(f"Decimals are readings: data given with a decimal point in a "
                          f"measured exercise are measurements, the coarsest read to "
@@ -454,6 +337,18 @@ def read_data(params: Parameters, data: dict, tol=None) -> Data:
                          f"the data of {params.exercise} are exact, so each float is "
                          f"read as the shortest decimal that prints it (0.1 is 1/10).")
     out.notes.extend(dict.fromkeys(notes))   # a hint once, however many entries share it
+
+
+def _tolerance(out: Data, params: Parameters, tol, values: dict, measures: list,
+               places: list, given_floats: list):
+    """Set ``out.tol`` (and ``out.tol_default``): ``tol`` as given, or the default for
+    measured data; returns how the default was chosen (``None`` when it was not).
+
+    Raises:
+        TypeError: ``tol`` for data that are not measurements.
+        ValueError: ``tol <= 0``.
+    """
+    how = None
     if tol is not None:
         if not params.measured:
             raise TypeError(f"tol: the data of {params.exercise} are not measurements; tol "
@@ -475,9 +370,4 @@ def read_data(params: Parameters, data: dict, tol=None) -> Data:
                 how = (f"{DECIMAL_ULPS} units in the last decimal place given ({places[0]}: "
                        f"each entry is within half a unit, and an invariant of 3 entries in "
                        f"two frames moves by at most {DECIMAL_ULPS} units)")
-    if out.tol is not None:
-        how = f"the default, {how}" if out.tol_default else "as given"
-        out.notes.append(f"Measured data: compatibility is judged within tol = {out.tol} "
-                         f"(~ {float(out.tol):.3g}; {how}); the answer is the least-squares "
-                         f"one, with its residual.")
-    return out
+    return how
