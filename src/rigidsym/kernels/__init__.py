@@ -50,10 +50,10 @@ from rigidsym._io import load_module
 from rigidsym.generated.api import *  # noqa: F403 - the generated kernels (true signatures)
 from rigidsym.generated.api import __all__ as _KERNELS
 from rigidsym.kernels import _names, _state
-from rigidsym.kernels._core import ORTHO_TOL as ORTHO_TOL  # the tolerances of check=True
-from rigidsym.kernels._core import UNIT_TOL as UNIT_TOL
 from rigidsym.kernels._core import KernelSpace
 from rigidsym.kernels._errors import NonFiniteResultError, SingularConfigurationError
+from rigidsym.kernels._inputs import ORTHO_TOL as ORTHO_TOL  # the tolerances of check=True
+from rigidsym.kernels._inputs import UNIT_TOL as UNIT_TOL
 from rigidsym.kernels._jacobian import jacobian
 from rigidsym.kernels._scale import check_threads
 from rigidsym.kernels._scale import get_num_threads as get_num_threads
@@ -372,7 +372,7 @@ def swap_blocks(x: ArrayLike, matrix: bool = False) -> NDArray[np.floating]:
         >>> swap_blocks([1, 2, 3, 4, 5, 6]).tolist()
         [4.0, 5.0, 6.0, 1.0, 2.0, 3.0]
     """
-    from rigidsym.kernels._core import as_array
+    from rigidsym.kernels._inputs import as_array
 
     shape = (6, 6) if _names.flag(matrix, "matrix") else (6,)
     a = as_array(x, {"name": "x", "tshape": shape})

@@ -188,11 +188,24 @@ def read_lets(let) -> list[Let]:
         BadInput: a declaration that is neither form, a NAME that is not one glyph, an
             unknown KIND (the kinds listed), a name declared twice.
     """
+    out = [_one_let(d) for d in _items(let)]
+    seen: dict[str, Let] = {}
+    for x in out:
+        if x.key in seen:
+            raise BadInput(f"--let: {x.key} is declared twice ('{seen[x.key].text}' and "
+                           f"'{x.text}')")
+        seen[x.key] = x
+    return out
+
+
+def _items(let) -> list[str]:
+    """The declaration strings of ``let`` (:func:`read_lets`' argument), a dict's values
+    written as ``NAME: KIND`` or ``NAME = LATEX``."""
     if let is None:
-        items: list[str] = []
-    elif isinstance(let, str):
-        items = split_lets([let])
-    elif isinstance(let, dict):
+        return []
+    if isinstance(let, str):
+        return split_lets([let])
+    if isinstance(let, dict):
         items = []
         for name, value in let.items():
             if not isinstance(name, str) or not isinstance(value, str):
@@ -207,45 +220,38 @@ def read_lets(let) -> list[Let]:
                     # a word that is no kind ('rotaton'), not a product of letters
                     raise BadInput(f"{exc} (a model written in letters: '= {v}')") from None
                 items.append(f"{name} = {v.removeprefix('=').strip()}")
-    elif isinstance(let, list | tuple):
+        return items
+    if isinstance(let, list | tuple):
         if not all(isinstance(x, str) for x in let):
             raise BadInput(f"let: expected strings 'NAME: KIND' or 'NAME = LATEX', got "
                            f"{let!r}")
-        items = split_lets(let)
-    else:
-        raise BadInput(f"let: expected a list of strings or a dict, got {type(let).__name__}")
-    out: list[Let] = []
-    for d in items:
-        colon, eq = _top_level(d, ":"), _top_level(d, "=")
-        if colon >= 0 and (eq < 0 or colon < eq):
-            name, kind = d[:colon].strip(), d[colon + 1:].strip()
-            kind_of(kind, d)
-            out.append(Let(d, name, _key(name, d), kind=kind))
-        elif eq >= 0:
-            name, tex = d[:eq].strip(), d[eq + 1:].strip()
-            params: tuple[str, ...] = ()
-            applied = re.fullmatch(r"(.+?)\s*\(([^()]+)\)", name)
-            if applied:  # S(\mathbf{a}) = ...: a function of its parameters (issue 52)
-                name = applied.group(1)
-                params = tuple(q.strip() for q in _split_commas(applied.group(2)))
-                if not all(params):
-                    raise BadInput(f"--let '{d}': expected parameters NAME(a, b, ...), "
-                                   f"got an empty one")
-            if not tex:
-                raise BadInput(f"--let '{d}': expected LaTeX after '='")
-            keys = tuple(_key(q, d) for q in params)
-            if len(set(keys)) != len(keys):
-                raise BadInput(f"--let '{d}': a parameter is named twice")
-            out.append(Let(d, name, _key(name, d), latex=tex, params=params,
-                           param_keys=keys))
-        else:
-            raise BadInput(f"--let '{d}': expected 'NAME: KIND' (e.g. '\\mathbf{{Q}}: "
-                           f"rotation') or 'NAME = LATEX' (e.g. '\\mathbf{{E}} = "
-                           f"\\mathrm{{CPM}}(\\mathbf{{e}})')")
-    seen: dict[str, Let] = {}
-    for x in out:
-        if x.key in seen:
-            raise BadInput(f"--let: {x.key} is declared twice ('{seen[x.key].text}' and "
-                           f"'{x.text}')")
-        seen[x.key] = x
-    return out
+        return split_lets(let)
+    raise BadInput(f"let: expected a list of strings or a dict, got {type(let).__name__}")
+
+
+def _one_let(d: str) -> Let:
+    """One declaration: ``NAME: KIND``, ``NAME = LATEX`` or ``NAME(params) = LATEX``."""
+    colon, eq = _top_level(d, ":"), _top_level(d, "=")
+    if colon >= 0 and (eq < 0 or colon < eq):
+        name, kind = d[:colon].strip(), d[colon + 1:].strip()
+        kind_of(kind, d)
+        return Let(d, name, _key(name, d), kind=kind)
+    if eq >= 0:
+        name, tex = d[:eq].strip(), d[eq + 1:].strip()
+        params: tuple[str, ...] = ()
+        applied = re.fullmatch(r"(.+?)\s*\(([^()]+)\)", name)
+        if applied:  # S(\mathbf{a}) = ...: a function of its parameters (issue 52)
+            name = applied.group(1)
+            params = tuple(q.strip() for q in _split_commas(applied.group(2)))
+            if not all(params):
+                raise BadInput(f"--let '{d}': expected parameters NAME(a, b, ...), "
+                               f"got an empty one")
+        if not tex:
+            raise BadInput(f"--let '{d}': expected LaTeX after '='")
+        keys = tuple(_key(q, d) for q in params)
+        if len(set(keys)) != len(keys):
+            raise BadInput(f"--let '{d}': a parameter is named twice")
+        return Let(d, name, _key(name, d), latex=tex, params=params, param_keys=keys)
+    raise BadInput(f"--let '{d}': expected 'NAME: KIND' (e.g. '\\mathbf{{Q}}: "
+                   f"rotation') or 'NAME = LATEX' (e.g. '\\mathbf{{E}} = "
+                   f"\\mathrm{{CPM}}(\\mathbf{{e}})')")

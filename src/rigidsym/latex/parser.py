@@ -19,14 +19,14 @@ import lark
 import sympy as sp
 
 from rigidsym.algebra.operators import Det, Vect
-from rigidsym.latex.bookrules import BookRules, index_key, sup_word
+from rigidsym.latex.bookrules import BookRules, sup_word
+from rigidsym.latex.glyphing import _TIME, GlyphRules, _GlyphKey
 from rigidsym.latex.lexing import Parsed, Relation, parser
 from rigidsym.latex.meaning import MeaningRules
 from rigidsym.latex.shapes import (
     LatexError,
     SizedZero,
     _as_scalar,
-    _default_glyph,
     _fit,
     _product,
     _shape,
@@ -40,12 +40,10 @@ from rigidsym.latex.vocab import VocabRules
 __all__ = ["LatexError", "Relation", "Parsed", "parser"]
 
 
-_TIME = sp.Symbol("t", real=True)  # the plain letter t: time, the argument of p(t)
-
-
-class _Build(MeaningRules, VocabRules, BookRules, lark.Transformer):
+class _Build(GlyphRules, MeaningRules, VocabRules, BookRules, lark.Transformer):
     """Tree -> sympy, in the declaration vocabulary (module docstring); ``reader``: a
-    reader's LaTeX, ``[x]`` of a vector its hat, ``I`` the identity (``latex/vocab.py``)."""
+    reader's LaTeX, ``[x]`` of a vector its hat, ``I`` the identity (``latex/vocab.py``); the
+    glyphs' rules are :class:`~rigidsym.latex.glyphing.GlyphRules`."""
 
     def __init__(self, section: str, overrides: dict, block_rows: bool, reader: bool = False):
         super().__init__()
@@ -54,140 +52,6 @@ class _Build(MeaningRules, VocabRules, BookRules, lark.Transformer):
         self.readings: list[str] = []
         self.glyphs: dict[str, Glyph] = {}
         self.made: dict = {}  # result -> (how, parts): to re-read a bracket as a block row
-
-    # ---- glyphs
-    def base(self, items):
-        if len(items) == 2:
-            bold, letter = items
-            return ("bold", str(letter))
-        return ("plain", str(items[0]))
-
-    def zero(self, _):
-        return ("zero", "0")
-
-    def one(self, _):
-        return ("one", "1")
-
-    def subscript(self, items):
-        parts = [str(i) for i in items]  # a space after a Greek letter before a letter
-        return ("sub", "".join(p + " " if p.startswith("\\") and p[-1].isalpha() and
-                               k + 1 < len(parts) and parts[k + 1][:1].isalpha() else p
-                               for k, p in enumerate(parts)))
-
-    def times(self, _):
-        return "\\times "
-
-    def slash(self, _):
-        return "/"
-
-    def calsub(self, items):
-        return "\\mathcal{" + str(items[0]) + "}" + (str(items[1]) if len(items) > 1 else "")
-
-    def _key(self, base, rest, accent=None, pre="") -> str:
-        kind, letter = base
-        core = {"bold": f"\\mathbf{{{letter}}}" if not letter.startswith("\\")
-                else f"\\boldsymbol{{{letter}}}",
-                "plain": letter, "zero": "\\mathbf{0}", "one": "\\mathbf{1}",
-                "cal": f"\\mathcal{{{letter}}}"}[kind]
-        if accent:
-            core = f"{accent}{{{core}}}"
-        core = pre + core
-        for r in rest:
-            if isinstance(r, tuple):
-                core += "_{" + r[1] + "}"
-            else:
-                core += str(r)
-        return core
-
-    def glyph(self, items):
-        if isinstance(items[0], lark.Token) and items[0].type == "LEFT_INDEX":
-            return self._resolve(items[1], items[2:], None, pre=index_key(str(items[0])))
-        return self._resolve(items[0], items[1:], None)
-
-    def accented(self, items):
-        accent, inner = str(items[0]), items[1]
-        if not isinstance(inner, _GlyphKey):
-            raise LatexError(f"{accent} over an expression: expected a glyph", "accent")
-        base, rest = inner.base, list(inner.rest) + list(items[2:])
-        if accent == "\\dot" and not items[2:] and self.timed(inner.key):  # d/dt of X(t)
-            return self.velocity(inner.key, inner.value)
-        self.glyphs.pop(inner.key, None)  # only the accented glyph is a symbol here
-        return self._resolve(base, rest, (inner.accent or "") + accent if inner.accent
-                             else accent, inner)
-
-    def arrow(self, items):
-        key = f"\\overrightarrow{{{items[0]}}}"
-        return self._symbol(key, None)
-
-    def _resolve(self, base, rest, accent, inner=None, pre=""):
-        if inner is not None:  # an accent over a glyph that has its own sub/primes
-            key = f"{accent}{{{inner.key}}}" + "".join(
-                "_{" + r[1] + "}" if isinstance(r, tuple) else str(r)
-                for r in rest[len(inner.rest):])
-        else:
-            key = self._key(base, rest, accent, pre)
-        kind = base[0]
-        if rest and isinstance(rest[-1], tuple) and ":" in rest[-1][1] and inner is None:
-            return self._slice(key, base, rest, accent, pre)
-        sized = self._sized(key, base, rest, accent)  # I, I_3, \mathbf{1}_3 (latex.meaning)
-        if sized is not None:
-            return _GlyphKey(key, base, rest, accent, sized)
-        if kind == "zero":
-            z = None if accent else self.sized_zero(key, rest)
-            return _GlyphKey(key, base, rest, accent, z if z is not None
-                             else sp.ZeroMatrix(3, 1))
-        if kind == "one":
-            n = 3
-            for r in rest:
-                if isinstance(r, tuple) and "times" in r[1]:
-                    n = int(r[1].split("\\times")[0])
-            return _GlyphKey(key, base, rest, accent, sp.Identity(n))
-        if kind == "bold" and base[1] == "O" and not accent:
-            rows = cols = 3
-            for r in rest:
-                if isinstance(r, tuple) and r[1].isdigit() and len(r[1]) == 2:
-                    rows, cols = int(r[1][0]), int(r[1][1])
-            return _GlyphKey(key, base, rest, accent, sp.ZeroMatrix(rows, cols))
-        if kind == "plain" and base[1] == "t" and not rest and not accent:
-            return _GlyphKey(key, base, rest, accent, _TIME)
-        if accent in ("\\vec", "\\underline") and kind == "plain":  # vector fonts
-            base = ("bold", base[1])
-        return _GlyphKey(key, base, rest, accent, self._symbol(key, base))
-
-    def _slice(self, key, base, rest, accent, pre):
-        """``\\mathbf{q}_{1:3}``: entries 1 to 3 (counted from 1, both included) of the
-        vector ``\\mathbf{q}`` (issue 52, item 4); of a scalar or matrix refused."""
-        lo, hi = (int(n) for n in rest[-1][1].replace(" ", "").split(":"))
-        vkey = self._key(base, rest[:-1], accent, pre)
-        v = self._symbol(vkey, base)
-        shape = getattr(v, "shape", None)
-        if not shape or shape[1] != 1 or shape[0] == 1:
-            raise LatexError(f"{key}: a range of entries of {vkey}, which is no vector "
-                             f"({_words(v)}); declare it, e.g. --let '{vkey}: 4-vector'",
-                             "shapes")
-        if not 1 <= lo <= hi <= shape[0]:
-            raise LatexError(f"{key}: entries {lo} to {hi} of {vkey}, a {shape[0]}-vector",
-                             "shapes")
-        if lo == hi:  # q_{4:4}: one entry, a scalar
-            self.readings.append(f"{key}: entry {lo} of {vkey}")
-            return _GlyphKey(key, base, rest, accent, v[lo - 1, 0])
-        self.readings.append(f"{key}: entries {lo} to {hi} of {vkey}")
-        return _GlyphKey(key, base, rest, accent,
-                         sp.ImmutableMatrix([[v[i, 0]] for i in range(lo - 1, hi)]))
-
-    def _symbol(self, key, base):
-        g = self.overrides.get(key)
-        if g is None and self.section is not None:  # None: no glyph table (a reader's LaTeX)
-            g = lookup(key, self.section)
-        if g is None:
-            g = _default_glyph(key, base)
-        self.glyphs[key] = g
-        if g.shape == ():
-            return sp.Symbol(g.name, real=True)
-        if g.kind == "row":  # a per-id note: the text's vector stands for its row
-            self.readings.append(f"{key} read as the row {g.name}^T (per-id note)")
-            return sp.MatrixSymbol(g.name, *g.shape).T
-        return sp.MatrixSymbol(g.name, *g.shape)
 
     # ---- numbers and groups
     def number(self, items):
@@ -391,15 +255,6 @@ class _Build(MeaningRules, VocabRules, BookRules, lark.Transformer):
             elif isinstance(t, lark.Token):  # "\\text{for } phi \\neq 0": a side condition
                 self.readings.append(f"side condition not checked: {t}")
         return [i for i in items if not isinstance(i, lark.Token)]
-
-
-@dataclass(frozen=True)
-class _GlyphKey:
-    key: str
-    base: tuple
-    rest: list
-    accent: str | None
-    value: object
 
 
 @dataclass(frozen=True)

@@ -55,7 +55,7 @@ def strip_private(name: str) -> str:
     ``adot``)."""
     return _PRIVATE.sub("", name)
 #: an entry of a reader's vector renamed beside a scalar of the same glyph (``a__1`` beside
-#: ``a_1``, :func:`rigidsym.latex.letting._fresh`): printed ``(a)₁``, never the scalar's ``a₁``
+#: ``a_1``, :func:`rigidsym.latex.values._fresh`): printed ``(a)₁``, never the scalar's ``a₁``
 _RENAMED_ENTRY = re.compile(r"(.*[^_])__+(\d{1,2})")
 
 

@@ -124,12 +124,7 @@ def class_exam(spec, roster: str | Path, out_dir: str | Path,
     weights = [float(p.get("weight", 1)) for p in spec["problem"]]
     students = read_roster(roster)
     out = Path(out_dir)
-    slugs: list[str] = []
-    for st in students:
-        slug = _slug(st["name"])
-        while slug in slugs:            # "Amy Ames" and "Amy-Ames": two files
-            slug += "_"
-        slugs.append(slug)
+    slugs = _unique_slugs(students)
     seeds = [student_seed(seed, st["name"]) for st in students]
     slots = _slots(spec)
 
@@ -154,19 +149,7 @@ def class_exam(spec, roster: str | Path, out_dir: str | Path,
                 "drawn": [(slot, _exam._key(s)) for slot, s in zip(slots, sols, strict=True)
                           if slot is not None]}
 
-    from rigidsym.report._forked import forked_map
-
-    # every student drawn at once (forked workers: the solves and figures), then, in roster
-    # order, a student whose draw repeats an earlier student's is drawn again here against
-    # the draws before it: the same exams as drawing one student after another
-    made = forked_map(make, len(students))
-    taken: dict = {}
-    for i, m in enumerate(made):
-        if any(key in taken.get(slot, ()) for slot, key in m["drawn"]):
-            made[i] = make(i, taken)
-        else:
-            for slot, key in m["drawn"]:
-                taken.setdefault(slot, set()).add(key)
+    made = _draw_all(make, len(students))
     records = [m["record"] for m in made]
     keys_html = [m["section"] for m in made]
     columns = {f"P{p['problem']}.{a}": None for r in records for p in r["problems"]
@@ -182,6 +165,36 @@ def class_exam(spec, roster: str | Path, out_dir: str | Path,
         "answers": write_atomic(out / "answers.csv", _template(students, list(columns))),
         "moodle": write_atomic(out / "moodle.xml", moodle_xml(title, key)),
     }
+
+
+def _unique_slugs(students: list[dict]) -> list[str]:
+    """One file name per student, in roster order, each distinct (``"Amy Ames"`` and
+    ``"Amy-Ames"``: two files)."""
+    slugs: list[str] = []
+    for st in students:
+        slug = _slug(st["name"])
+        while slug in slugs:
+            slug += "_"
+        slugs.append(slug)
+    return slugs
+
+
+def _draw_all(make, n: int) -> list[dict]:
+    """``make(i)`` of every student i < n, drawn at once (forked workers: the solves and
+    figures); then, in roster order, a student whose draw repeats an earlier student's is
+    drawn again here against the draws before it (``make(i, taken)``): the same exams as
+    drawing one student after another."""
+    from rigidsym.report._forked import forked_map
+
+    made = forked_map(make, n)
+    taken: dict = {}
+    for i, m in enumerate(made):
+        if any(key in taken.get(slot, ()) for slot, key in m["drawn"]):
+            made[i] = make(i, taken)
+        else:
+            for slot, key in m["drawn"]:
+                taken.setdefault(slot, set()).add(key)
+    return made
 
 
 def _slots(spec: dict) -> list:

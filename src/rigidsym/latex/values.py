@@ -1,0 +1,169 @@
+"""The values of a reading's symbols (issue 29, item 4; issue 52): the ``--let`` models
+and functions, each after those it mentions; each used glyph's value (a declared kind, a
+module's model, a glyph-table row or definition, a free matrix of named entries); and the
+models made explicit in dependency order, a cycle refused. Used by
+:mod:`rigidsym.latex.letting`, which reads the LaTeX itself.
+"""
+
+from __future__ import annotations
+
+import sympy as sp
+
+from rigidsym.algebra import symbols as _sym
+from rigidsym.checking.deciding.errors import BadInput
+from rigidsym.latex.declgraph import glyph_keys, model_order
+from rigidsym.latex.glyphrows import _Reader, _symbol
+from rigidsym.latex.lets import Let, kind_of
+from rigidsym.latex.shapes import LatexError, _shape
+from rigidsym.latex.table import Glyph
+
+__all__: list[str] = []
+
+
+def _words(shape) -> str:
+    if not shape:
+        return "scalar"
+    return f"{shape[0]}-vector" if shape[1] == 1 else f"{shape[0]}×{shape[1]} matrix"
+
+
+def _is_function(x: Let) -> bool:
+    return bool(x.params) and x.params != ("t",)  # X(t) = ...: a model in time
+
+
+def _read_models(rd: _Reader, lets: list[Let], values: dict) -> set[str]:
+    """The ``NAME = LATEX`` models into ``values`` and the ``NAME(params) = LATEX``
+    functions into the reader, each after the models it mentions (issue 52: any order of
+    the ``--let``s reads the same); the glyphs they use."""
+    mentions = {}
+    for x in lets:
+        if x.latex:
+            try:
+                mentions[x.key] = glyph_keys(x.latex) - set(x.param_keys)
+            except LatexError:
+                mentions[x.key] = set()  # the parse below says why
+    occurs: set[str] = set()
+    for x in model_order(lets, mentions):
+        occurs |= mentions[x.key] | set(x.param_keys)
+        if _is_function(x):
+            rd.add_function(x)
+            _function_model(rd, x, values)
+            continue
+        if x.key.endswith("^{*}"):  # a starred NAME (issue 52) reads as a name of its own
+            rd.over.setdefault(x.key, Glyph(x.key, "*", rd._name(x.key), (), "model", ""))
+        p = rd.parse(f"{x.name} = {x.latex}", f"--let '{x.text}'")
+        if len(p.chains) != 1 or len(p.chains[0]) != 2:
+            raise BadInput(f"--let '{x.text}': expected NAME = one expression")
+        occurs |= set(p.glyphs) - {x.key}  # its own NAME is no occurrence
+        rd.model_readings(x, p.readings)
+        rhs = p.chains[0][1]
+        g = Glyph(x.key, "*", rd._name(x.key), _shape(rhs) or (), "model", "--let model")
+        rd.over[x.key] = g
+        values[_symbol(g)] = rhs
+    return occurs
+
+
+def _function_model(rd: _Reader, x: Let, values: dict) -> None:
+    """A function of scalar parameters (``R(\\theta) = e^{[\\hat\\omega]\\theta}``) is
+    also the model of its NAME, as before issue 52 (``R`` alone is ``R(θ)``); one of a
+    vector or matrix is a function only (``S`` alone is refused)."""
+    try:
+        p = rd.parse(f"{x.name} = {x.latex}", f"--let '{x.text}'", record=False)
+    except LatexError:
+        return
+    if any(p.glyphs.get(k) is None or p.glyphs[k].shape for k in x.param_keys) \
+            or len(p.chains) != 1 or len(p.chains[0]) != 2:
+        return
+    rd.used.update(p.glyphs)
+    rd.glyphs.update(p.glyphs)
+    rhs = p.chains[0][1]
+    g = Glyph(x.key, "*", rd._name(x.key), _shape(rhs) or (), "model", "--let model")
+    rd.over[x.key] = g
+    values[_symbol(g)] = rhs
+
+
+def _glyph_values(rd: _Reader, lend: dict, values: dict) -> tuple[list[str], list[str]]:
+    """Each used glyph's value into ``values`` (a declared kind, a lent model, a glyph-table
+    row or definition, a free matrix of named entries); the notes and the free glyphs."""
+    notes, free, seen, free_, lent_ = [], [], set(), [], []
+    scalars = {(rd.over.get(k) or rd.glyphs[k]).name for k in rd.used
+               if not (rd.over.get(k) or rd.glyphs[k]).shape}
+    while rd.used - seen:  # a book definition read below may bring glyphs of its own
+        key = min(rd.used - seen)
+        seen.add(key)
+        g = rd.over.get(key) or rd.glyphs.get(key)
+        sym = _symbol(g)
+        if key in rd.declared:
+            x = rd.declared[key]
+            value = _fresh(kind_of(x.kind, x.text)[1], g.name, scalars) if x.kind else None
+            if value is not None and value != sym:  # a free scalar stands for itself
+                values[sym] = value
+            continue
+        if g.kind == "module":
+            value = lend[g.name][1]
+            if value is not None:
+                values[sym] = value
+            lent_.append(f"{key} ({_words(g.shape)}"
+                         f"{', its model' if value is not None else ', free'})")
+        elif g.kind == "free":
+            free.append(key)
+            free_.append(f"{key} ({_words(g.shape)})")
+        else:  # a glyph-table row of --book
+            notes.append(f"{key}: {g.meaning} ({g.name}, {_words(g.shape)}; glyph table, "
+                         f"{g.section})")
+            if g.kind == "angle":
+                values[sym] = _sym.angle(g.name)
+            elif g.definition:
+                d = rd.parse(f"{key} = {g.definition}", f"the definition of {key}")
+                values[sym] = d.chains[0][1]
+        if g.shape and sym not in values:  # a free matrix of named entries (the zero test
+            # takes atoms, not Q[0, 0]; and they read better in a counterexample)
+            values[sym] = _fresh((lambda n, s=g.shape: _sym.vector(n, n=s[0])) if
+                                 g.shape[1] == 1 else
+                                 (lambda n, s=g.shape: _sym.matrix(n, *s)), g.name, scalars)
+    if free_:
+        notes.append("free, no --let declares them (shapes by the book's convention: bold "
+                     "lower-case a 3-vector, bold capital 3×3, else a scalar): "
+                     + ", ".join(free_))
+    if lent_:
+        notes.append("lent by --module: " + ", ".join(lent_))
+    return notes, free
+
+
+def _fresh(factory, name: str, scalars: set[str]):
+    """``factory(name)``, its free entries renamed (``a_1`` -> ``a__1``) where one would be
+    the same atom as a scalar of the LaTeX (``a_1`` beside ``\\mathbf{a}``): a free entry
+    and a scalar glyph are independent quantities, never silently one."""
+    value = factory(name)
+    while hasattr(value, "free_symbols") and {
+            s.name for s in value.free_symbols} & (scalars - {name}):
+        name += "_"
+        value = factory(name)
+    return value
+
+
+def _resolve(values: dict, explicit) -> dict:
+    """Models in book symbols made explicit, each after those it refers to."""
+    done: dict = {}
+    todo = dict(values)
+    while todo:
+        progress = False
+        for sym, v in list(todo.items()):
+            refs = {a for a in _atoms(v) if a in todo and a != sym}
+            if refs:
+                continue
+            if sym in _atoms(v):
+                raise BadInput(f"--let: the model of {sym} refers to {sym} itself")
+            done[sym] = explicit(v, done) if isinstance(v, sp.Basic) else v
+            del todo[sym]
+            progress = True
+        if not progress:
+            names = ", ".join(str(s) for s in todo)
+            raise BadInput(f"--let: the models of {names} refer to each other in a cycle")
+    return done
+
+
+def _atoms(v) -> set:
+    if not isinstance(v, sp.Basic):
+        return set()
+    return set(v.atoms(sp.MatrixSymbol)) | {s for s in v.atoms(sp.Symbol)
+                                           if type(s) is sp.Symbol}
