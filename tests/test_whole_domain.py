@@ -245,7 +245,7 @@ def _arg_names(name):
             if p not in ("out", "check", "on_singular", "threads")]
 
 
-@settings(max_examples=15, deadline=None)
+@settings(max_examples=6, deadline=None)
 @given(st.integers(0, 2**32 - 1))
 def test_every_rotation_is_accepted_by_every_kernel_that_takes_one(seed):
     """Chain each kernel that returns a rotation into each kernel that takes one (check=True:
@@ -288,7 +288,7 @@ def _same(a, b) -> bool:
     return bool(np.all((a == b) | (np.isnan(a) & np.isnan(b))))
 
 
-@settings(max_examples=10, deadline=None)
+@settings(max_examples=5, deadline=None)
 @given(st.integers(0, 2**32 - 1))
 def test_one_answer_per_row(seed):
     """A row's value or NaN depends only on that row, the dtype and on_singular: alone or in
