@@ -13,8 +13,8 @@ from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, fields
 from typing import overload
 
-from rigidsym.checking.checker import Outcome
 from rigidsym.checking.deciding.registry import VERDICTS
+from rigidsym.checking.outcome import Outcome
 
 __all__ = ["Result", "Results"]
 
