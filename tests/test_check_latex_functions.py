@@ -266,7 +266,16 @@ MR_SLIP = (r"e^{[\hat\omega]\theta} = I + \sin\theta\,[\hat\omega]^3 + (1 - \sin
            r"[\hat\omega]^2\cos\theta")  # far from Rodrigues: 5000 candidates take ~9 s
 
 
-def test_the_repair_search_stops_at_its_time_limit_and_says_so():
+def test_the_repair_search_stops_at_its_time_limit_and_says_so(monkeypatch):
+    # a clock that advances 0.05 s a reading: the limit is reached after a fixed amount of
+    # work on any machine (on a quiet one the whole search took under the 1 s it asks for, so
+    # the real clock made this test pass or fail with the machine's speed)
+    import itertools
+    import time
+
+    ticks = itertools.count()
+    start = time.monotonic()
+    monkeypatch.setattr(time, "monotonic", lambda: start + 0.05 * next(ticks))
     r = rigidsym.check_latex(MR_SLIP, let=[r"\hat\omega: unit vector; \theta: angle"],
                              repair_seconds=1)
     assert r.verdict == "does-not-hold" and r.counterexample
