@@ -9,13 +9,15 @@ from __future__ import annotations
 
 import difflib
 import os
+import sys
+import time
 from pathlib import Path
 from typing import Protocol
 
 from rigidsym._config import generated_dir
 from rigidsym._io import write_atomic
 
-__all__ = ["write", "check", "Generation"]
+__all__ = ["write", "check", "check_or_write", "Generation"]
 
 
 class Generation(Protocol):
@@ -80,3 +82,24 @@ def check(result: Generation, out: Path | None = None) -> str:
             diff = f"orphan file: generated/{rel}\n" + diff
         chunks.append(diff if diff.endswith("\n") else diff + "\n")
     return "".join(chunks)
+
+
+def check_or_write(result: Generation, out: Path, *, check_only: bool, kernels: int,
+                   rerun: str, t0: float) -> int | None:
+    """What ``rigidsym generate --out DIR [--check]`` does with a generation (the user's
+    kernels, the C target): with ``check_only``, print the diff and return 1 when ``out`` is
+    stale (``rerun`` is the command that rewrites it), else 0; otherwise write the changed
+    files, say how many, and return None (the caller may go on, e.g. to build)."""
+    if check_only:
+        diff = check(result, out)
+        if diff:
+            sys.stdout.write(diff)
+            print(f"{out} is stale: run `{rerun}`", file=sys.stderr)
+            return 1
+        print(f"{out} is up to date: {kernels} kernels, {len(result.files)} files "
+              f"({time.perf_counter() - t0:.1f} s)")
+        return 0
+    touched = write(result, out)
+    print(f"{kernels} kernels, {len(result.files)} files, {len(touched)} changed in {out} "
+          f"({time.perf_counter() - t0:.1f} s)")
+    return None

@@ -94,7 +94,7 @@ def generate_user(modules):
 
 def cmd_generate_user(args) -> int:
     """``rigidsym generate --module M --out DIR [--check]``."""
-    from rigidsym.codegen.generator import check, write
+    from rigidsym.codegen.files import check_or_write
 
     t0 = time.perf_counter()
     if not args.out:
@@ -111,19 +111,10 @@ def cmd_generate_user(args) -> int:
 
     with one_line_warnings():
         res = generate_user(args.module)
-    if args.check:
-        diff = check(res, out)
-        if diff:
-            sys.stdout.write(diff)
-            print(f"{out} is stale: run `rigidsym generate --module ... --out {out}`",
-                  file=sys.stderr)
-            return 1
-        print(f"{out} is up to date: {len(res.kernels)} kernels, {len(res.files)} files "
-              f"({time.perf_counter() - t0:.1f} s)")
-        return 0
-    touched = write(res, out)
-    print(f"{len(res.kernels)} kernels, {len(res.files)} files, {len(touched)} changed in "
-          f"{out} ({time.perf_counter() - t0:.1f} s)")
+    rc = check_or_write(res, out, check_only=args.check, kernels=len(res.kernels),
+                        rerun=f"rigidsym generate --module ... --out {out}", t0=t0)
+    if rc is not None:
+        return rc
     if getattr(args, "no_build", False):
         return 0
     return _compile(out)

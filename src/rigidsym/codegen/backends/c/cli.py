@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import importlib
-import sys
 import time
 from pathlib import Path
 
@@ -55,7 +54,7 @@ def select_kernels(modules, names) -> tuple[list, dict[str, str]]:
 def cmd_generate_c(args) -> int:
     """Write (or with ``--check`` compare) the C-only target into ``--out``."""
     from rigidsym.codegen.backends.c.target import generate_c
-    from rigidsym.codegen.files import check, write
+    from rigidsym.codegen.files import check_or_write
     from rigidsym.codegen.generator import compile_many
 
     t0 = time.perf_counter()
@@ -80,17 +79,6 @@ def cmd_generate_c(args) -> int:
         pass
     res = _Result()
     res.files = files  # type: ignore[attr-defined]
-    if args.check:
-        diff = check(res, out)
-        if diff:
-            sys.stdout.write(diff)
-            print(f"{out} is stale: run `rigidsym generate --target c ... --out {out}`",
-                  file=sys.stderr)
-            return 1
-        print(f"{out} is up to date: {len(kernels)} kernels, {len(files)} files "
-              f"({time.perf_counter() - t0:.1f} s)")
-        return 0
-    touched = write(res, out)
-    print(f"{len(kernels)} kernels, {len(files)} files, {len(touched)} changed in {out} "
-          f"({time.perf_counter() - t0:.1f} s)")
-    return 0
+    rc = check_or_write(res, out, check_only=args.check, kernels=len(kernels),
+                        rerun=f"rigidsym generate --target c ... --out {out}", t0=t0)
+    return rc or 0
