@@ -222,3 +222,9 @@ class Grouped(sp.UnevaluatedExpr):
         return f"({printer._print(self.args[0])})"
 
     _sympystr = _lambdacode = _pythoncode = _mpmathcode = _numpycode = _in_parentheses
+
+    def _eval_derivative(self, s):
+        # the mark is a grouping, not a function: d(group)/ds is the derivative of what it
+        # groups (without it sympy leaves Derivative(group, s), which the Jacobian program
+        # cannot substitute into; issue 48's SE(3) inverse Jacobian)
+        return self.args[0].diff(s)
