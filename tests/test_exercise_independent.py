@@ -97,14 +97,17 @@ def check_ex3_7(data):
 
 
 SIZES = st.sampled_from(["1/100", "1/50", "1/40", "3/100", "1/20", "1/10", "3/20", "1/5"])
+#: a student's sizes, whole millimetres written in metres (1 mm to 300 mm)
+MM = st.integers(1, 300).map(lambda k: f"{k}/1000")
 
 
 @st.composite
 def ex3_12_data(draw):
     """Side and height in metres: tall prisms, short ones (the cut leaves through the top
-    face), and the boundary h = a sqrt(3) (the cut leaves along the top face's edge)."""
-    a = draw(SIZES)
-    h = draw(st.one_of(SIZES, st.just(f"sqrt(3)*{a}")))
+    face, meeting it at y >= 0 or y < 0), and the boundaries h = a sqrt(3) (the cut leaves
+    along the top face's edge) and h = a sqrt(3)/2 (it meets the top face at y = 0)."""
+    a = draw(st.one_of(SIZES, MM))
+    h = draw(st.one_of(SIZES, MM, st.sampled_from([f"sqrt(3)*{a}", f"sqrt(3)*{a}/2"])))
     return {"a": a, "h": h}
 
 
@@ -130,7 +133,7 @@ def check_ex3_12(data):
 
 @st.composite
 def ex3_11_data(draw):
-    return {"a": draw(SIZES), "h": draw(st.one_of(SIZES, st.just("1/1000")))}
+    return {"a": draw(st.one_of(SIZES, MM)), "h": draw(st.one_of(SIZES, MM, st.just("1/1000")))}
 
 
 def check_ex3_11(data):
@@ -391,8 +394,8 @@ CASES = {"ex3.1": (ex3_1_data, check_ex3_1, 2, 200),
          "ex3.14": (ex3_14_data, check_ex3_14, 1, 200),
          "ex3.19": (ex3_19_data, check_ex3_19, 2, 200),
          "ex3.10": (ex3_10_data, check_ex3_10, 0, 60),
-         "ex3.11": (ex3_11_data, check_ex3_11, 0, 50),
-         "ex3.12": (ex3_12_data, check_ex3_12, 0, 8)}
+         "ex3.11": (ex3_11_data, check_ex3_11, 0, 200),
+         "ex3.12": (ex3_12_data, check_ex3_12, 0, 200)}
 
 
 def _run(ex_id: str, n: int) -> None:

@@ -18,6 +18,9 @@ TITLE = "Euler-angle rates and the angular velocity"
 STATEMENT = ("\"find the matrix W such that omega = W eta_dot ... Find under which conditions "
              "W becomes singular.\"")
 CITATION = "Angeles, Fundamentals of Robotic Mechanical Systems, Sec. 3.9, Exercise 3.10"
+#: the documented unit of each answer with one (graded answers may be written in any
+#: compatible unit, issue 50); the others are pure numbers or mixed
+ANSWER_UNITS = {"eta_dot": "rad/s"}
 FIGURE_NAME = "condition"
 PROPER_EULER = ["ZXZ", "XYX", "YZY", "ZYZ", "XZX", "YXY"]
 TAIT_BRYAN = ["XYZ", "YZX", "ZXY", "XZY", "ZYX", "YXZ"]
