@@ -17,7 +17,10 @@ output by at most ``u kappa``). Verdict **accurate** by issue 37's rule
 that are exactly zero) **and** ``err <= max(2 e_ref, 4 u)``, ``e_ref`` the smallest error of
 the textbook formula (the declaration, naively, in the same type) and of each peer that has
 the operation (``_accuracy_peers``; float64), the second half measured against the truth at
-the input the kernel got (the unconstrained arguments as rounded). A flagged sample (NaN,
+the input the kernel got (the unconstrained arguments as rounded); where it fails at the
+point, it is decided by the medians of the kernel's and the yardsticks' errors over a cloud
+of neighbouring inputs (``_accuracy_cloud``: one input's error is luck where ``u kappa``
+dominates it). A flagged sample (NaN,
 ``SingularConfigurationError`` in the API) is
 **expected** where the exact result is undefined, kappa >= 1e12, kappa u >= 1/8 (the
 rounding of the input can reach the singular set) or the result overflows the type, else
