@@ -108,6 +108,30 @@ def test_a_function_of_several_parameters():
         rigidsym.check_latex(r"F(\phi,\theta) = I_3", let=[r"\phi: angle; \theta: angle"])
 
 
+SELIG_R = (r"R(\mathbf{n},\theta) = I_3 + \sin\theta\,[\mathbf{n}]_\times + (1 - \cos\theta)"
+           r"[\mathbf{n}]_\times^2")
+
+
+@pytest.mark.parametrize("latex, verdict", [
+    # on main: "unexpected ','" (an operator's argument held no application; Selig (4.7))
+    (r"\operatorname{tr} R(\mathbf{n},\theta) = 1 + 2\cos\theta", "verified"),
+    (r"\operatorname{tr} R(\mathbf{n},\theta) = 1 + \cos\theta", "does-not-hold"),
+    (r"\mathrm{tr}\,R(\mathbf{n},\theta)^2 = \operatorname{tr} R(\mathbf{n},2\theta)", "verified"),
+    # arguments holding (...) and {...}: still one application of two arguments
+    (r"\operatorname{tr} R(Q\mathbf{n},(\theta+\phi)) = 1 + 2\cos(\theta+\phi)", "verified"),
+    (r"\operatorname{tr} R(\mathbf{n},\frac{\theta}{2}) = 1 + 2\cos\theta", "does-not-hold"),
+    # a parenthesis without a comma after an operator's argument stays a product
+    (r"\cos\theta(1 + \phi) = \cos\theta + \phi\cos\theta", "verified"),
+    (r"\sin\theta(\phi) = \phi\sin\theta", "verified"),
+])
+def test_an_operator_applies_to_a_function_of_several_arguments(latex, verdict):
+    kinds = {r"\mathbf{n}": "unit vector", r"\theta": "angle", r"\phi": "angle", "Q": "rotation"}
+    lets = [f"{k}: {v}" for k, v in kinds.items() if k in latex]
+    r = rigidsym.check_latex(latex, let=lets + ([SELIG_R] if "R(" in latex else []),
+                             repairs=False)
+    assert r.verdict == verdict, r.detail
+
+
 def test_a_declared_parameter_kind_must_fit_the_argument():
     with pytest.raises(LatexError, match="parameter .* is declared"):
         rigidsym.check_latex(r"S(R) = R", let=[S_LET, r"\mathbf{a}: vector", "R: rotation"])
