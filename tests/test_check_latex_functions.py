@@ -247,6 +247,47 @@ def test_readings_that_disagree_are_refused_naming_the_choice(capsys):
     assert code == 0, out + err
 
 
+# a bracket around a product: its hat or a bracket that groups (issue 52, item 2)
+RAB = [r"R: rotation", r"\mathbf{a}: vector", r"\mathbf{c}: vector"]
+
+
+def test_a_bracket_around_a_product_keeps_the_reading_that_type_checks():
+    # on main: [R a] always the hat, "\mathbf{b} = [R\mathbf{a}]" does-not-hold (shapes)
+    r = rigidsym.check_latex(r"\mathbf{b} = [R\mathbf{a}]",
+                             let=RAB[:2] + [r"\mathbf{b} = R\mathbf{a}"], repairs=False)
+    assert r.verdict == "verified", r.detail
+    assert any(n.startswith("[R a]: read as a bracket that groups") for n in r.model), r.model
+    assert any(n.startswith("not read as [R a] the hat: the two sides differ in shape")
+               for n in r.model), r.model
+    r = rigidsym.check_latex(r"[R\mathbf{a}]\mathbf{c} = (R\mathbf{a})\times\mathbf{c}",
+                             let=RAB, repairs=False)
+    assert r.verdict == "verified", r.detail
+    assert any("not read as [R a] a bracket that groups" in n for n in r.model), r.model
+
+
+def test_a_bracket_whose_readings_disagree_is_refused_naming_it_and_what_settles_it(capsys):
+    # c^T [R a] c: the hat gives c . (R a x c) = 0, the group (c^T R a) c, no zero
+    latex = r"\mathbf{c}^T [R\mathbf{a}] \mathbf{c} = 0"
+    code, out, err = _cli(capsys, "--latex", latex, *(f"--let={x}" for x in RAB),
+                          "--no-repairs")
+    assert code == 2, out + err
+    assert "[R a] can be read as the hat of the vector or as a bracket that groups it" in err
+    assert "[R a] the hat: verified; [R a] a bracket that groups: does-not-hold" in err, err
+    for spelled, verdict in ((r"[R\mathbf{a}]_\times", "verified"),
+                             (r"(R\mathbf{a})", "does-not-hold")):
+        r = rigidsym.check_latex(latex.replace(r"[R\mathbf{a}]", spelled), let=RAB,
+                                 repairs=False)
+        assert r.verdict == verdict, (spelled, r.detail)
+
+
+def test_a_bracket_around_one_symbol_is_its_hat_by_the_rule():
+    # a bracket around one symbol groups nothing: no choice, one reading
+    r = rigidsym.check_latex(r"\mathbf{c}^T [\mathbf{a}] \mathbf{c} = 0", let=RAB[1:],
+                             repairs=False)
+    assert r.verdict == "verified", r.detail
+    assert not any("type-check" in n or "not read as" in n for n in r.model), r.model
+
+
 # --------------------------------------------------- the constructs of item 4 (issue 52)
 @pytest.mark.parametrize("latex, lets, verdict", [
     # Markley-Crassidis' vector part q_{1:3} (on main: "unexpected ':'")
