@@ -280,6 +280,43 @@ def test_a_bracket_whose_readings_disagree_is_refused_naming_it_and_what_settles
         assert r.verdict == verdict, (spelled, r.detail)
 
 
+# a subscript: part of a name or an entry of a declared vector (issue 52, item 2)
+HALF = [r"\mathbf{e}: unit vector; \theta: angle",
+        r"\mathbf{q} = \begin{bmatrix}\sin\frac{\theta}{2}\mathbf{e}\\ \cos\frac{\theta}{2}"
+        r"\end{bmatrix}"]
+I1 = [r"\mathbf{a}: vector", r"\mathbf{i} = \begin{bmatrix}1\\0\\0\end{bmatrix}"]
+
+
+@pytest.mark.parametrize("latex, lets, verdict", [
+    # on main: "\mathbf{q} does not occur" (bad input), q_4 a free symbol of its own
+    (r"q_4 = \cos\frac{\theta}{2}", HALF, "verified"),
+    (r"q_4 = \sin\frac{\theta}{2}", HALF, "does-not-hold"),
+    (r"\mathbf{q}_4 = \cos\frac{\theta}{2}", HALF, "verified"),
+    # a bold a_1 of its own is a 3-vector by the convention: only the entry type-checks
+    (r"\mathbf{a}_1 = \mathbf{a}^T\mathbf{i}", I1, "verified"),
+    # declared, a_1 is no choice: a scalar of its own (on main the same, undeclared)
+    (r"a_1 = \mathbf{a}^T\mathbf{i}", I1 + ["a_1: scalar"], "does-not-hold"),
+])
+def test_a_subscript_is_a_name_or_an_entry_by_the_reading_that_type_checks(latex, lets, verdict):
+    r = rigidsym.check_latex(latex, let=lets, repairs=False)
+    assert r.verdict == verdict, r.detail
+    chose = [n for n in r.model if "read as entry" in n]
+    assert bool(chose) == (len(lets) == 2), r.model
+
+
+def test_a_subscript_whose_readings_disagree_is_refused_naming_what_settles_it(capsys):
+    # on main: does-not-hold, a_1 a free scalar (a true equation where a_1 is a's entry)
+    code, out, err = _cli(capsys, "--latex", r"a_1 = \mathbf{a}^T\mathbf{i}",
+                          *(f"--let={x}" for x in I1), "--no-repairs")
+    assert code == 2, out + err
+    assert r"a_{1} can be read as a symbol of its own or as an entry of \mathbf{a}" in err, err
+    assert r"a_{1} a symbol of its own: does-not-hold; a_{1} entry 1 of \mathbf{a}: verified" \
+        in err, err
+    r = rigidsym.check_latex(r"\mathbf{a}_{1:1} = \mathbf{a}^T\mathbf{i}", let=I1,
+                             repairs=False)
+    assert r.verdict == "verified", r.detail
+
+
 def test_a_bracket_around_one_symbol_is_its_hat_by_the_rule():
     # a bracket around one symbol groups nothing: no choice, one reading
     r = rigidsym.check_latex(r"\mathbf{c}^T [\mathbf{a}] \mathbf{c} = 0", let=RAB[1:],

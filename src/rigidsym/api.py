@@ -199,12 +199,20 @@ def _readings_agree(reading, first, others) -> None:
 def _choice_words(key: str) -> str:
     if key.startswith("["):
         return f"{key} can be read as the hat of the vector or as a bracket that groups it"
+    if " of " in key:
+        name, vec = key.split(" of ", 1)
+        return f"{name} can be read as a symbol of its own or as an entry of {vec}"
     return f"{key}(...) can be read as a product or as {key} applied to its argument"
 
 
 def _settles(key: str) -> str:
     if key.startswith("["):
         return f"{key[:-1]}]_\\times for the hat or ({key[1:-1]}) to group"
+    if " of " in key:
+        name, vec = key.split(" of ", 1)
+        k = name.rsplit("_{", 1)[-1].rstrip("}")
+        return (f"--let '{name}: scalar' (a symbol of its own) or {vec}_{{{k}:{k}}} (the "
+                f"entry)")
     return (f"with a --let function (--let '{key}(PARAM) = LATEX': an application) or by "
             f"writing the product without parentheses")
 

@@ -30,18 +30,28 @@ __all__: list[str] = []
 #: the readings of each kind of choice point (issue 52, item 2), the default first: a model
 #: before a parenthesised non-scalar (``X(\\mathbf{y})``, keyed by ``X``), a bracket around a
 #: 3-vector or 6-vector (``[\\mathbf{a}]``, keyed by ``[a]``): its hat or a grouping
-ALTERNATIVES = {"apply": ("product", "apply"), "bracket": ("hat", "group")}
+ALTERNATIVES = {"apply": ("product", "apply"), "bracket": ("hat", "group"),
+                "index": ("name", "entry")}
+
+
+def _kind(key: str) -> str:
+    return "bracket" if key.startswith("[") else "index" if " of " in key else "apply"
 
 
 def alternatives(key: str) -> tuple[str, str]:
     """The readings of the choice point ``key``, the default first."""
-    return ALTERNATIVES["bracket" if key.startswith("[") else "apply"]
+    return ALTERNATIVES[_kind(key)]
 
 
 def said(key: str, choice: str) -> str:
-    """One choice in words: ``R(...) applied``, ``[a] the hat``."""
-    if key.startswith("["):
+    """One choice in words: ``R(...) applied``, ``[a] the hat``, ``a_{1} of \\mathbf{a}
+    its entry``."""
+    if _kind(key) == "bracket":
         return f"{key} {'a bracket that groups' if choice == 'group' else 'the hat'}"
+    if _kind(key) == "index":
+        name, vec = key.split(" of ", 1)
+        k = name.rsplit("_{", 1)[-1].rstrip("}")
+        return f"{name} {f'entry {k} of {vec}' if choice == 'entry' else 'a symbol of its own'}"
     return f"{key}(...) {'applied' if choice == 'apply' else 'a product'}"
 
 
