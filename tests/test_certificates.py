@@ -197,3 +197,28 @@ def test_whole_chapter_export_is_byte_reproducible():
     a, b = _export_digests("3", []), _export_digests("4", [])
     assert len(a.splitlines()) == 181 and a == b, \
         [x for x, y in zip(a.splitlines(), b.splitlines(), strict=False) if x != y]
+
+
+def test_reports_say_how_each_verdict_is_certified(tmp_path, capsys):
+    """rigidsym report --certificates: the Markdown and the HTML entry of each id name its
+    certificate, each relation's evidence (cofactors; counterexample) and certcheck's
+    re-check; a certificate certcheck rejects is shown as rejected, not as certified."""
+    from rigidsym.checking.deciding.registry import load_all
+    from rigidsym.checking.runner import run_checks
+    from rigidsym.report.html import to_html
+    from rigidsym.report.markdown import to_markdown
+    from rigidsym.report.user import certified
+
+    load_all()
+    results = run_checks(["3.13", "3.96e"], progress=False, expanded=False)
+    fields = certified(results, tmp_path)
+    assert "certcheck re-checked 2 of 2" in capsys.readouterr().err
+    md, page = to_markdown(results, certified=fields), to_html(results, certified=fields)
+    for text in (md, page):
+        assert "3.13.json (1 relation: 1 by cofactors); re-checked by certcheck" in \
+            text.replace("`", ""), text
+        assert ("3.96e.json (2 relations: 1 an exact counterexample, 1 by cofactors); "
+                "re-checked by certcheck") in text.replace("`", "")
+    assert "Certificate" not in to_markdown(results)  # without --certificates: nothing
+    fields["3.13"]["rechecked"] = False
+    assert "certcheck REJECTED it" in to_markdown(results, certified=fields)
