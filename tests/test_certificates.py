@@ -10,6 +10,8 @@ from pathlib import Path
 
 import _certtamper as certtamper
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from rigidsym.cli import main
 
@@ -130,9 +132,10 @@ def test_whole_chapter_certified_and_tampering_rejected(tmp_path):
 
 #: identities issue 49 asks Coq to check: A^T A and its inverse (3.13, 3.16), a
 #: Rodrigues-form rotation (3.1: relative position rotated by Q = e e^T + cos(phi)(1 - e e^T)
-#: + sin(phi) E), Steiner's 3.133a and 3.147. (3.14 and 3.15 run past 240 s of coqc here:
+#: + sin(phi) E), Steiner's 3.133a and 3.147, and a rotation along a motion (3.99: the
+#: rotation's hypotheses and their derivatives). (3.14 and 3.15 run past 240 s of coqc here:
 #: field's side conditions on their large divisors; docs/certificates.md.)
-COQ_IDS = ["3.13", "3.16", "3.1", "3.133a", "3.147"]
+COQ_IDS = ["3.13", "3.16", "3.1", "3.133a", "3.147", "3.99"]
 
 
 @pytest.mark.slow
@@ -222,3 +225,43 @@ def test_reports_say_how_each_verdict_is_certified(tmp_path, capsys):
     assert "Certificate" not in to_markdown(results)  # without --certificates: nothing
     fields["3.13"]["rechecked"] = False
     assert "certcheck REJECTED it" in to_markdown(results, certified=fields)
+
+
+@settings(max_examples=15, deadline=None)
+@given(st.lists(st.integers(-3, 3), min_size=14, max_size=14), st.integers(0, 13),
+       st.integers(1, 3))
+def test_rotation_chain_reduces_exactly_the_ideal(coeffs, where, off):
+    """cofrot's triangular set of a rotation along a motion (jets to order 1): a
+    combination sum a_i h_i of the checker's 14 hypotheses (7 constraints, their first
+    derivatives; a_i small polynomials in the entries and jets) reduces to zero, with
+    cofactors that give it back exactly (mult f = sum mu_i h_i); adding a non-zero
+    constant leaves a non-zero remainder."""
+    import flint
+
+    from rigidsym.checking import cofrot
+    from rigidsym.checking.cofactors import _dpoly
+
+    class R:  # the ring of cofactors._Ring: names, index, var, one, zero, gens
+        names = [f"Q_{r}{c}" + "'" * k for k in range(2) for r in (1, 2, 3) for c in (1, 2, 3)]
+        index = {n: i for i, n in enumerate(names)}
+        ctx = flint.fmpq_mpoly_ctx.get([f"x{i}" for i in range(18)], "lex")
+        gens = ctx.gens()
+        one = ctx.from_dict({(0,) * 18: 1})
+        zero = one - one
+        var = staticmethod(lambda n: R.gens[R.index[n]])
+
+    nxt = {i: i + 9 for i in range(9)}
+    names = R.names[:9]
+    H = cofrot.hypotheses(R, names, False)
+    hyps = [H[i // 2] if i % 2 == 0 else _dpoly(H[i // 2], R, nxt) for i in range(14)]
+    f = sum((c * (R.gens[(i + where) % 18] + off) * h
+             for i, (c, h) in enumerate(zip(coeffs, hyps, strict=True))), R.zero)
+    for extra, zero in ((R.zero, True), (R.one * off, False)):
+        mus: dict = {}
+        N, mult = cofrot.pseudo_reduce(f + extra, R, cofrot.rotation_chain(R, names, H),
+                                       names, 1, lambda p: _dpoly(p, R, nxt), mus, R.one, "Q")
+        assert N.is_zero() == zero
+        if zero:
+            back = sum((mus.get(("Q", i // 2, i % 2), R.zero) * h
+                        for i, h in enumerate(hyps)), R.zero)
+            assert mult * f == back
