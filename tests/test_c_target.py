@@ -720,3 +720,47 @@ def test_hard_book_kernels_equal_the_package_kernels(tmp_path):
                   [2.0, 0.5, 0], *[("out", max(1, int(np.prod(o["shape"]))))
                                    for o in m["outputs"]])
     assert s & SINGULAR and all(np.isnan(g).all() for g in got)
+
+
+# -- the float functions' accuracy bound, stated in each header (item 4) --
+
+BOUND = re.compile(r"/\* (\w+) in float arithmetic only.*?Accuracy: each output within "
+                   r"([\d.e+-]+) u \(kappa \+ 1\)", re.S)
+
+
+def stated_bounds(d: Path = KERNELS_DIR) -> dict[str, float]:
+    """``{kernel: the float bound its header states}`` over the headers of ``d``."""
+    out = {}
+    for h in sorted(d.glob("rigidsym_c_*.h")):
+        out.update({k: float(b) for k, b in BOUND.findall(h.read_text(encoding="utf-8"))})
+    return out
+
+
+def test_every_float_function_of_the_example_states_its_bound():
+    """Each kernel of the example (the book's and the module's, with their twins) states a
+    measured bound, none 'not measured', and each within the float32 rule (8 u (kappa+1))."""
+    heads = "".join(h.read_text(encoding="utf-8") for h in KERNELS_DIR.glob("rigidsym_c_*.h"))
+    names = set(re.findall(r"^RIGIDSYM_C_API int rigidsym_c_(\w+)_f32\($", heads, re.M))
+    bounds = stated_bounds()
+    assert names and set(bounds) == names, names ^ set(bounds)
+    assert "not measured" not in heads
+    assert all(0 < b <= 8 for b in bounds.values()), bounds
+
+
+@pytest.mark.slow  # the harness on every kernel of the example: ~20-60 s on a loaded machine
+def test_stated_float_bounds_hold_on_fresh_points(lib):
+    """The accuracy harness (benchmarks/accuracy.py: float32 regimes, arb reference,
+    condition number) on the float functions of the committed example, with seeds the
+    bound was not measured on: the worst err / (u (kappa + 1)) stays within the bound the
+    header states (and is not 0: a header stating 0 would fail)."""
+    sys.path.insert(0, str(REPO / "benchmarks"))
+    import c_float_bounds as CB
+
+    from rigidsym.codegen.usergen import load_user_kernels
+
+    CB.register(load_user_kernels([str(EXAMPLE / "my_kernels.py")])[0])
+    run = CB.runner(lib)
+    for name, bound in stated_bounds().items():
+        measured, rows = CB.worst(run, name, seeds=(11,), n_random=8)
+        assert sum(r.samples for r in rows) >= 8, name
+        assert 0 < measured <= bound, (name, measured, bound)

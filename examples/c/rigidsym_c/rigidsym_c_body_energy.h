@@ -40,7 +40,11 @@ RIGIDSYM_C_API int rigidsym_c_body_energy(
 
 
 /* body_energy in float arithmetic only (float literals, sinf/cosf/sqrtf: no
- * double operation, for FPUs without double); arguments, outputs, status as above. */
+ * double operation, for FPUs without double); arguments, outputs, status as above.
+ * Accuracy: each output within 2.0 u (kappa + 1) of the exact value,
+ * normwise relative, u = 2^-24, kappa the output's condition number (measured by
+ * benchmarks/c_float_bounds.py: worst 0.812 over 96 points of the
+ * accuracy harness's float32 regimes, against arb at the exact point). */
 RIGIDSYM_C_API int rigidsym_c_body_energy_f32(
     float m,
     const float v[3],
@@ -106,7 +110,11 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians(
     double T_D_v[3],    double T_D_inertia[9],    double T_D_omega[3]);
 
 /* body_energy_with_jacobians in float arithmetic only (float literals, sinf/cosf/sqrtf: no
- * double operation, for FPUs without double); arguments, outputs, status as above. */
+ * double operation, for FPUs without double); arguments, outputs, status as above.
+ * Accuracy: each output within 2.0 u (kappa + 1) of the exact value,
+ * normwise relative, u = 2^-24, kappa the output's condition number (measured by
+ * benchmarks/c_float_bounds.py: worst 0.812 over 96 points of the
+ * accuracy harness's float32 regimes, against arb at the exact point). */
 RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians_f32(
     float m,
     const float v[3],

@@ -41,7 +41,11 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench(
     double w[6]);
 
 /* newton_euler_wrench in float arithmetic only (float literals, sinf/cosf/sqrtf: no
- * double operation, for FPUs without double); arguments, outputs, status as above. */
+ * double operation, for FPUs without double); arguments, outputs, status as above.
+ * Accuracy: each output within 1.0 u (kappa + 1) of the exact value,
+ * normwise relative, u = 2^-24, kappa the output's condition number (measured by
+ * benchmarks/c_float_bounds.py: worst 0.384 over 106 points of the
+ * accuracy harness's float32 regimes, against arb at the exact point). */
 RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_f32(
     const float I_C[9],
     float m,
@@ -110,7 +114,11 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians(
     double w[6],    double w_D_I_C[54],    double w_D_m[6],    double w_D_omega[18],    double w_D_omega_dot[18],    double w_D_c_ddot[18]);
 
 /* newton_euler_wrench_with_jacobians in float arithmetic only (float literals, sinf/cosf/sqrtf: no
- * double operation, for FPUs without double); arguments, outputs, status as above. */
+ * double operation, for FPUs without double); arguments, outputs, status as above.
+ * Accuracy: each output within 1.5 u (kappa + 1) of the exact value,
+ * normwise relative, u = 2^-24, kappa the output's condition number (measured by
+ * benchmarks/c_float_bounds.py: worst 0.568 over 106 points of the
+ * accuracy harness's float32 regimes, against arb at the exact point). */
 RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians_f32(
     const float I_C[9],
     float m,

@@ -33,7 +33,11 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation(
     double Q[9]);
 
 /* quaternion_rotation in float arithmetic only (float literals, sinf/cosf/sqrtf: no
- * double operation, for FPUs without double); arguments, outputs, status as above. */
+ * double operation, for FPUs without double); arguments, outputs, status as above.
+ * Accuracy: each output within 2.0 u (kappa + 1) of the exact value,
+ * normwise relative, u = 2^-24, kappa the output's condition number (measured by
+ * benchmarks/c_float_bounds.py: worst 0.863 over 20 points of the
+ * accuracy harness's float32 regimes, against arb at the exact point). */
 RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_f32(
     const float q[4],
     float Q[9]);
@@ -78,7 +82,11 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_with_jacobians(
     double Q[9],    double Q_D_q[36]);
 
 /* quaternion_rotation_with_jacobians in float arithmetic only (float literals, sinf/cosf/sqrtf: no
- * double operation, for FPUs without double); arguments, outputs, status as above. */
+ * double operation, for FPUs without double); arguments, outputs, status as above.
+ * Accuracy: each output within 2.0 u (kappa + 1) of the exact value,
+ * normwise relative, u = 2^-24, kappa the output's condition number (measured by
+ * benchmarks/c_float_bounds.py: worst 0.863 over 20 points of the
+ * accuracy harness's float32 regimes, against arb at the exact point). */
 RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_with_jacobians_f32(
     const float q[4],
     float Q[9],    float Q_D_q[36]);

@@ -37,7 +37,11 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer(
     double t_P[6]);
 
 /* twist_transfer in float arithmetic only (float literals, sinf/cosf/sqrtf: no
- * double operation, for FPUs without double); arguments, outputs, status as above. */
+ * double operation, for FPUs without double); arguments, outputs, status as above.
+ * Accuracy: each output within 1.5 u (kappa + 1) of the exact value,
+ * normwise relative, u = 2^-24, kappa the output's condition number (measured by
+ * benchmarks/c_float_bounds.py: worst 0.704 over 104 points of the
+ * accuracy harness's float32 regimes, against arb at the exact point). */
 RIGIDSYM_C_API int rigidsym_c_twist_transfer_f32(
     const float t_A[6],
     const float a[3],
@@ -94,7 +98,11 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_with_jacobians(
     double t_P[6],    double t_P_D_t_A[36],    double t_P_D_a[18],    double t_P_D_p[18]);
 
 /* twist_transfer_with_jacobians in float arithmetic only (float literals, sinf/cosf/sqrtf: no
- * double operation, for FPUs without double); arguments, outputs, status as above. */
+ * double operation, for FPUs without double); arguments, outputs, status as above.
+ * Accuracy: each output within 1.5 u (kappa + 1) of the exact value,
+ * normwise relative, u = 2^-24, kappa the output's condition number (measured by
+ * benchmarks/c_float_bounds.py: worst 0.704 over 104 points of the
+ * accuracy harness's float32 regimes, against arb at the exact point). */
 RIGIDSYM_C_API int rigidsym_c_twist_transfer_with_jacobians_f32(
     const float t_A[6],
     const float a[3],
