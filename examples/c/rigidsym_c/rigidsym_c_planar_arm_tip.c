@@ -55,6 +55,11 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip(
     uint64_t odd = 0;
     int status = 0, singular = 0;
     double finite = 0.0;
+#if RIGIDSYM_C_RESCALE_D
+    int rs_e0 = 0;
+    double rs_l1;
+    double rs_l2;
+#endif
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
     {   /* the range test of every input component, as one loop (it vectorises) */
         const double in_[4] = {
@@ -80,6 +85,35 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip(
         if (status == RIGIDSYM_C_EXTREME_INPUT)
             return rigidsym_c_planar_arm_tip_wide(q1, q2, l1, l2, p);
 #endif
+#if RIGIDSYM_C_RESCALE_D
+        /* every output is homogeneous in the arguments of each step below: scale them
+         * by the power of two 2^-e that brings their largest component into [1/2, 1)
+         * (exact), evaluate, scale the outputs back by 2^(e d) (homogeneous.py); only
+         * when every component is then of ordinary magnitude (else the flag stays) */
+        if (status == RIGIDSYM_C_EXTREME_INPUT) {
+            int still_ = 0;
+            {
+                double m_ = 0.0;
+                m_ = fabs(l1) > m_ ? fabs(l1) : m_;
+                m_ = fabs(l2) > m_ ? fabs(l2) : m_;
+                if (m_ > 0.0)
+                    (void)frexp(m_, &rs_e0);
+                rs_l1 = ldexp(l1, -rs_e0);
+                still_ |= rigidsym_c_extreme_d(&rs_l1, 1);
+                rs_l2 = ldexp(l2, -rs_e0);
+                still_ |= rigidsym_c_extreme_d(&rs_l2, 1);
+            }
+            still_ |= rigidsym_c_extreme_d(&q1, 1);
+            still_ |= rigidsym_c_extreme_d(&q2, 1);
+            if (still_) {
+                rs_e0 = 0;
+            } else {
+                status = 0;
+                l1 = rs_l1;
+                l2 = rs_l2;
+            }
+        }
+#endif
     }
 #else
     (void)odd;
@@ -89,6 +123,13 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip(
         p[0] = l1*cos(q1) + l2*cos(x0);
         p[1] = l1*sin(q1) + l2*sin(x0);
     }
+#if RIGIDSYM_C_RESCALE_D
+    if (rs_e0) {    /* the outputs back to the inputs' scale (rounded once, or inf) */
+        p[0] = ldexp(p[0], 1 * rs_e0);
+        p[1] = ldexp(p[1], 1 * rs_e0);
+        finite += ((p[0] - p[0]) + (p[1] - p[1]));
+    }
+#endif
     /* no division or root, and every output bounded by 2^102 for inputs of
      * ordinary magnitude (|x| < 2^101): only an extreme or non-finite input can make an
      * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN
@@ -111,7 +152,7 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip(
 
 
 RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_batch(
-    size_t n,
+    size_t count,
     const double *q1,
     const double *q2,
     const double *l1,
@@ -119,20 +160,20 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_batch(
     double *p,
     int *status)
 {
-    int all = 0;
-    size_t i;
-    for (i = 0; i < n; ++i) {
-        const int s = rigidsym_c_planar_arm_tip(
-            q1[i],
-            q2[i],
-            l1[i],
-            l2[i],
-            p + 2 * i);
+    int all_ = 0;
+    size_t i_;
+    for (i_ = 0; i_ < count; ++i_) {
+        const int s_ = rigidsym_c_planar_arm_tip(
+            q1[i_],
+            q2[i_],
+            l1[i_],
+            l2[i_],
+            p + 2 * i_);
         if (status)
-            status[i] = s;
-        all |= s;
+            status[i_] = s_;
+        all_ |= s_;
     }
-    return all;
+    return all_;
 }
 
 RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_f32(
@@ -145,6 +186,11 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_f32(
     uint32_t odd = 0;
     int status = 0, singular = 0;
     float finite = 0.0f;
+#if RIGIDSYM_C_RESCALE_F
+    int rs_e0 = 0;
+    float rs_l1;
+    float rs_l2;
+#endif
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
     {   /* the range test of every input component, as one loop (it vectorises) */
         const float in_[4] = {
@@ -166,6 +212,35 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_f32(
         for (j = 0; j < 4; ++j)
             if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
                 status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_RESCALE_F
+        /* every output is homogeneous in the arguments of each step below: scale them
+         * by the power of two 2^-e that brings their largest component into [1/2, 1)
+         * (exact), evaluate, scale the outputs back by 2^(e d) (homogeneous.py); only
+         * when every component is then of ordinary magnitude (else the flag stays) */
+        if (status == RIGIDSYM_C_EXTREME_INPUT) {
+            int still_ = 0;
+            {
+                float m_ = 0.0f;
+                m_ = fabsf(l1) > m_ ? fabsf(l1) : m_;
+                m_ = fabsf(l2) > m_ ? fabsf(l2) : m_;
+                if (m_ > 0.0f)
+                    (void)frexpf(m_, &rs_e0);
+                rs_l1 = ldexpf(l1, -rs_e0);
+                still_ |= rigidsym_c_extreme_f(&rs_l1, 1);
+                rs_l2 = ldexpf(l2, -rs_e0);
+                still_ |= rigidsym_c_extreme_f(&rs_l2, 1);
+            }
+            still_ |= rigidsym_c_extreme_f(&q1, 1);
+            still_ |= rigidsym_c_extreme_f(&q2, 1);
+            if (still_) {
+                rs_e0 = 0;
+            } else {
+                status = 0;
+                l1 = rs_l1;
+                l2 = rs_l2;
+            }
+        }
+#endif
     }
 #else
     (void)odd;
@@ -175,6 +250,13 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_f32(
         p[0] = l1*cosf(q1) + l2*cosf(x0);
         p[1] = l1*sinf(q1) + l2*sinf(x0);
     }
+#if RIGIDSYM_C_RESCALE_F
+    if (rs_e0) {    /* the outputs back to the inputs' scale (rounded once, or inf) */
+        p[0] = ldexpf(p[0], 1 * rs_e0);
+        p[1] = ldexpf(p[1], 1 * rs_e0);
+        finite += ((p[0] - p[0]) + (p[1] - p[1]));
+    }
+#endif
     /* no division or root, and every output bounded by 2^32 for inputs of
      * ordinary magnitude (|x| < 2^31): only an extreme or non-finite input can make an
      * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN
@@ -197,7 +279,7 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_f32(
 
 
 RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_f32_batch(
-    size_t n,
+    size_t count,
     const float *q1,
     const float *q2,
     const float *l1,
@@ -205,20 +287,20 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_f32_batch(
     float *p,
     int *status)
 {
-    int all = 0;
-    size_t i;
-    for (i = 0; i < n; ++i) {
-        const int s = rigidsym_c_planar_arm_tip_f32(
-            q1[i],
-            q2[i],
-            l1[i],
-            l2[i],
-            p + 2 * i);
+    int all_ = 0;
+    size_t i_;
+    for (i_ = 0; i_ < count; ++i_) {
+        const int s_ = rigidsym_c_planar_arm_tip_f32(
+            q1[i_],
+            q2[i_],
+            l1[i_],
+            l2[i_],
+            p + 2 * i_);
         if (status)
-            status[i] = s;
-        all |= s;
+            status[i_] = s_;
+        all_ |= s_;
     }
-    return all;
+    return all_;
 }
 
 #if RIGIDSYM_C_WIDE
@@ -296,6 +378,11 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians(
     uint64_t odd = 0;
     int status = 0, singular = 0;
     double finite = 0.0;
+#if RIGIDSYM_C_RESCALE_D
+    int rs_e0 = 0;
+    double rs_l1;
+    double rs_l2;
+#endif
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
     {   /* the range test of every input component, as one loop (it vectorises) */
         const double in_[4] = {
@@ -320,6 +407,35 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians(
 #if RIGIDSYM_C_WIDE
         if (status == RIGIDSYM_C_EXTREME_INPUT)
             return rigidsym_c_planar_arm_tip_with_jacobians_wide(q1, q2, l1, l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
+#endif
+#if RIGIDSYM_C_RESCALE_D
+        /* every output is homogeneous in the arguments of each step below: scale them
+         * by the power of two 2^-e that brings their largest component into [1/2, 1)
+         * (exact), evaluate, scale the outputs back by 2^(e d) (homogeneous.py); only
+         * when every component is then of ordinary magnitude (else the flag stays) */
+        if (status == RIGIDSYM_C_EXTREME_INPUT) {
+            int still_ = 0;
+            {
+                double m_ = 0.0;
+                m_ = fabs(l1) > m_ ? fabs(l1) : m_;
+                m_ = fabs(l2) > m_ ? fabs(l2) : m_;
+                if (m_ > 0.0)
+                    (void)frexp(m_, &rs_e0);
+                rs_l1 = ldexp(l1, -rs_e0);
+                still_ |= rigidsym_c_extreme_d(&rs_l1, 1);
+                rs_l2 = ldexp(l2, -rs_e0);
+                still_ |= rigidsym_c_extreme_d(&rs_l2, 1);
+            }
+            still_ |= rigidsym_c_extreme_d(&q1, 1);
+            still_ |= rigidsym_c_extreme_d(&q2, 1);
+            if (still_) {
+                rs_e0 = 0;
+            } else {
+                status = 0;
+                l1 = rs_l1;
+                l2 = rs_l2;
+            }
+        }
 #endif
     }
 #else
@@ -346,6 +462,17 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians(
         p_D_l2[0] = x2;
         p_D_l2[1] = x6;
     }
+#if RIGIDSYM_C_RESCALE_D
+    if (rs_e0) {    /* the outputs back to the inputs' scale (rounded once, or inf) */
+        p[0] = ldexp(p[0], 1 * rs_e0);
+        p[1] = ldexp(p[1], 1 * rs_e0);
+        p_D_q1[0] = ldexp(p_D_q1[0], 1 * rs_e0);
+        p_D_q1[1] = ldexp(p_D_q1[1], 1 * rs_e0);
+        p_D_q2[0] = ldexp(p_D_q2[0], 1 * rs_e0);
+        p_D_q2[1] = ldexp(p_D_q2[1], 1 * rs_e0);
+        finite += ((((p[0] - p[0]) + (p[1] - p[1])) + ((p_D_q1[0] - p_D_q1[0]) + ((p_D_q1[1] - p_D_q1[1]) + (p_D_q2[0] - p_D_q2[0])))) + (((p_D_q2[1] - p_D_q2[1]) + (p_D_l1[0] - p_D_l1[0])) + ((p_D_l1[1] - p_D_l1[1]) + ((p_D_l2[0] - p_D_l2[0]) + (p_D_l2[1] - p_D_l2[1])))));
+    }
+#endif
     /* no division or root, and every output bounded by 2^102 for inputs of
      * ordinary magnitude (|x| < 2^101): only an extreme or non-finite input can make an
      * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN
@@ -376,7 +503,7 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians(
 
 
 RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians_batch(
-    size_t n,
+    size_t count,
     const double *q1,
     const double *q2,
     const double *l1,
@@ -388,24 +515,24 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians_batch(
     double *p_D_l2,
     int *status)
 {
-    int all = 0;
-    size_t i;
-    for (i = 0; i < n; ++i) {
-        const int s = rigidsym_c_planar_arm_tip_with_jacobians(
-            q1[i],
-            q2[i],
-            l1[i],
-            l2[i],
-            p + 2 * i,
-            p_D_q1 + 2 * i,
-            p_D_q2 + 2 * i,
-            p_D_l1 + 2 * i,
-            p_D_l2 + 2 * i);
+    int all_ = 0;
+    size_t i_;
+    for (i_ = 0; i_ < count; ++i_) {
+        const int s_ = rigidsym_c_planar_arm_tip_with_jacobians(
+            q1[i_],
+            q2[i_],
+            l1[i_],
+            l2[i_],
+            p + 2 * i_,
+            p_D_q1 + 2 * i_,
+            p_D_q2 + 2 * i_,
+            p_D_l1 + 2 * i_,
+            p_D_l2 + 2 * i_);
         if (status)
-            status[i] = s;
-        all |= s;
+            status[i_] = s_;
+        all_ |= s_;
     }
-    return all;
+    return all_;
 }
 
 RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians_f32(
@@ -418,6 +545,11 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians_f32(
     uint32_t odd = 0;
     int status = 0, singular = 0;
     float finite = 0.0f;
+#if RIGIDSYM_C_RESCALE_F
+    int rs_e0 = 0;
+    float rs_l1;
+    float rs_l2;
+#endif
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
     {   /* the range test of every input component, as one loop (it vectorises) */
         const float in_[4] = {
@@ -439,6 +571,35 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians_f32(
         for (j = 0; j < 4; ++j)
             if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
                 status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_RESCALE_F
+        /* every output is homogeneous in the arguments of each step below: scale them
+         * by the power of two 2^-e that brings their largest component into [1/2, 1)
+         * (exact), evaluate, scale the outputs back by 2^(e d) (homogeneous.py); only
+         * when every component is then of ordinary magnitude (else the flag stays) */
+        if (status == RIGIDSYM_C_EXTREME_INPUT) {
+            int still_ = 0;
+            {
+                float m_ = 0.0f;
+                m_ = fabsf(l1) > m_ ? fabsf(l1) : m_;
+                m_ = fabsf(l2) > m_ ? fabsf(l2) : m_;
+                if (m_ > 0.0f)
+                    (void)frexpf(m_, &rs_e0);
+                rs_l1 = ldexpf(l1, -rs_e0);
+                still_ |= rigidsym_c_extreme_f(&rs_l1, 1);
+                rs_l2 = ldexpf(l2, -rs_e0);
+                still_ |= rigidsym_c_extreme_f(&rs_l2, 1);
+            }
+            still_ |= rigidsym_c_extreme_f(&q1, 1);
+            still_ |= rigidsym_c_extreme_f(&q2, 1);
+            if (still_) {
+                rs_e0 = 0;
+            } else {
+                status = 0;
+                l1 = rs_l1;
+                l2 = rs_l2;
+            }
+        }
+#endif
     }
 #else
     (void)odd;
@@ -464,6 +625,17 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians_f32(
         p_D_l2[0] = x2;
         p_D_l2[1] = x6;
     }
+#if RIGIDSYM_C_RESCALE_F
+    if (rs_e0) {    /* the outputs back to the inputs' scale (rounded once, or inf) */
+        p[0] = ldexpf(p[0], 1 * rs_e0);
+        p[1] = ldexpf(p[1], 1 * rs_e0);
+        p_D_q1[0] = ldexpf(p_D_q1[0], 1 * rs_e0);
+        p_D_q1[1] = ldexpf(p_D_q1[1], 1 * rs_e0);
+        p_D_q2[0] = ldexpf(p_D_q2[0], 1 * rs_e0);
+        p_D_q2[1] = ldexpf(p_D_q2[1], 1 * rs_e0);
+        finite += ((((p[0] - p[0]) + (p[1] - p[1])) + ((p_D_q1[0] - p_D_q1[0]) + ((p_D_q1[1] - p_D_q1[1]) + (p_D_q2[0] - p_D_q2[0])))) + (((p_D_q2[1] - p_D_q2[1]) + (p_D_l1[0] - p_D_l1[0])) + ((p_D_l1[1] - p_D_l1[1]) + ((p_D_l2[0] - p_D_l2[0]) + (p_D_l2[1] - p_D_l2[1])))));
+    }
+#endif
     /* no division or root, and every output bounded by 2^32 for inputs of
      * ordinary magnitude (|x| < 2^31): only an extreme or non-finite input can make an
      * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN
@@ -494,7 +666,7 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians_f32(
 
 
 RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians_f32_batch(
-    size_t n,
+    size_t count,
     const float *q1,
     const float *q2,
     const float *l1,
@@ -506,22 +678,22 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians_f32_batch(
     float *p_D_l2,
     int *status)
 {
-    int all = 0;
-    size_t i;
-    for (i = 0; i < n; ++i) {
-        const int s = rigidsym_c_planar_arm_tip_with_jacobians_f32(
-            q1[i],
-            q2[i],
-            l1[i],
-            l2[i],
-            p + 2 * i,
-            p_D_q1 + 2 * i,
-            p_D_q2 + 2 * i,
-            p_D_l1 + 2 * i,
-            p_D_l2 + 2 * i);
+    int all_ = 0;
+    size_t i_;
+    for (i_ = 0; i_ < count; ++i_) {
+        const int s_ = rigidsym_c_planar_arm_tip_with_jacobians_f32(
+            q1[i_],
+            q2[i_],
+            l1[i_],
+            l2[i_],
+            p + 2 * i_,
+            p_D_q1 + 2 * i_,
+            p_D_q2 + 2 * i_,
+            p_D_l1 + 2 * i_,
+            p_D_l2 + 2 * i_);
         if (status)
-            status[i] = s;
-        all |= s;
+            status[i_] = s_;
+        all_ |= s_;
     }
-    return all;
+    return all_;
 }

@@ -28,6 +28,8 @@ RIGIDSYM_C_BEGIN_DECLS
  * Returns: the status, 0 or the OR of RIGIDSYM_C_SINGULAR, RIGIDSYM_C_NONFINITE_INPUT,
  * RIGIDSYM_C_NONFINITE_RESULT, RIGIDSYM_C_EXTREME_INPUT (rigidsym_c_common.h).
  * Constraints ("unit", "rotation", ...) are the caller's to meet: they are not checked.
+ * Extreme inputs without a wider type: no rescaling (the outputs are homogeneous in no
+ * argument that may be scaled), so they give RIGIDSYM_C_EXTREME_INPUT.
  */
 RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants(
     const double e[3],
@@ -45,17 +47,18 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_f32(
     float phi,
     float Q[9]);
 
-/* The same over n samples, one after the other (no heap, no stack beyond one call's):
- * each argument and output holds n rows of its per-sample size, row-major ([n][size]);
+/* The same over count samples, one after the other (no heap, no stack beyond one
+ * call's): each argument and output holds count rows of its per-sample size, row-major
+ * ([count][size]);
  * status[i] (status may be NULL) receives sample i's status; returns their OR. */
 RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_batch(
-    size_t n,
+    size_t count,
     const double *e,
     const double *phi,
     double *Q,
     int *status);
 RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_f32_batch(
-    size_t n,
+    size_t count,
     const float *e,
     const float *phi,
     float *Q,
@@ -84,6 +87,8 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_f32_batch(
  * Returns: the status, 0 or the OR of RIGIDSYM_C_SINGULAR, RIGIDSYM_C_NONFINITE_INPUT,
  * RIGIDSYM_C_NONFINITE_RESULT, RIGIDSYM_C_EXTREME_INPUT (rigidsym_c_common.h).
  * Constraints ("unit", "rotation", ...) are the caller's to meet: they are not checked.
+ * Extreme inputs without a wider type: no rescaling (the outputs are homogeneous in no
+ * argument that may be scaled), so they give RIGIDSYM_C_EXTREME_INPUT.
  */
 RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_with_jacobians(
     const double e[3],
@@ -101,11 +106,12 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_with_jacobians_f3
     float phi,
     float Q[9],    float Q_D_e[27],    float Q_D_phi[9]);
 
-/* The same over n samples, one after the other (no heap, no stack beyond one call's):
- * each argument and output holds n rows of its per-sample size, row-major ([n][size]);
+/* The same over count samples, one after the other (no heap, no stack beyond one
+ * call's): each argument and output holds count rows of its per-sample size, row-major
+ * ([count][size]);
  * status[i] (status may be NULL) receives sample i's status; returns their OR. */
 RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_with_jacobians_batch(
-    size_t n,
+    size_t count,
     const double *e,
     const double *phi,
     double *Q,
@@ -113,7 +119,7 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_with_jacobians_ba
     double *Q_D_phi,
     int *status);
 RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_with_jacobians_f32_batch(
-    size_t n,
+    size_t count,
     const float *e,
     const float *phi,
     float *Q,

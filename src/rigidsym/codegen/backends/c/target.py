@@ -27,9 +27,11 @@ import jinja2
 import sympy as sp
 
 import rigidsym
+from rigidsym.codegen.backends.c.homogeneous import rescale_steps
 from rigidsym.codegen.backends.c.printer import DoublePrinter, FloatOnlyPrinter, WidePrinter
 from rigidsym.codegen.cprogram import _balanced, _finite_check, _program_lines
-from rigidsym.codegen.spec import Kernel
+from rigidsym.codegen.generator import _flatten
+from rigidsym.codegen.spec import Kernel, input_symbols
 
 __all__ = ["generate_c", "float_bounds", "TEMPLATES", "LIBRARY", "PREFIX", "STATUS",
            "FLOAT_BOUNDS"]
@@ -54,10 +56,11 @@ STATUS = (
     ("NONFINITE_RESULT", 4, "an output, or a divisor or radicand on the way, is not finite "
                             "(overflow of finite inputs, or a non-finite input)"),
     ("EXTREME_INPUT", 8, "a nonzero input component has magnitude outside [2^-100, 2^101) "
-                         "(double; float: [2^-30, 2^31)) and there is no wider type to "
-                         "re-run the sample in (the double functions re-run it in long "
-                         "double where that is wider, RIGIDSYM_C_WIDE): intermediates may "
-                         "have underflowed or overflowed, so the outputs are not "
+                         "(double; float: [2^-30, 2^31)) that neither a wider type (the "
+                         "double functions re-run the sample in long double where that is "
+                         "wider, RIGIDSYM_C_WIDE) nor power-of-two rescaling (of the "
+                         "arguments the kernel is homogeneous in) could take: intermediates "
+                         "may have underflowed or overflowed, so the outputs are not "
                          "guaranteed to the stated bound"),
 )
 _C_KEYWORDS = set("""auto break case char const continue default do double else enum extern
@@ -180,7 +183,8 @@ def _check_names(k: Kernel, temps: set[str]) -> None:
     names = [a.name for a in k.args] + [o.name for o in k.outputs]
     for n in names:
         bad = n in _C_KEYWORDS or keyword.iskeyword(n) or n in temps or \
-            re.fullmatch(r"x\d+|status|singular|finite|trig_\d+", n)
+            re.fullmatch(r"x\d+|status|singular|finite|odd|count|j|args|sizes|trig_\d+|"
+                         r"rs_\w+|\w+_", n)
         if bad:
             raise CTargetError(f"kernel {k.name}: argument or output {n!r} would collide "
                                f"with a C keyword or a local of the generated function; "
@@ -189,8 +193,9 @@ def _check_names(k: Kernel, temps: set[str]) -> None:
         raise CTargetError(f"kernel {k.name}: two arguments or outputs share a name")
 
 
-def _function(kc, ctype: str) -> dict:
-    """One scalar function of ``kc`` in ``ctype`` ("double" or "float")."""
+def _function(kc, ctype: str, rescale: list) -> dict:
+    """One scalar function of ``kc`` in ``ctype`` ("double" or "float"); ``rescale``: its
+    power-of-two rescaling steps (:func:`.homogeneous.rescale_steps`)."""
     k = kc.kernel
     printer = DoublePrinter() if ctype == "double" else FloatOnlyPrinter()
     variants = _program(kc, printer, ctype)
@@ -217,7 +222,8 @@ def _function(kc, ctype: str) -> dict:
                              for a in k.args for j in range(a.size)], ctype),
             "slots": slots, "out_check": _balanced([f"({s} - {s})" for s in slots]),
             "bounded": None if any(v["finite"] for v in variants) else _bounded(kc, ctype),
-            "wide": _wide(kc, k) if ctype == "double" else None}
+            "wide": _wide(kc, k) if ctype == "double" else None,
+            "rescale": rescale, "rescaled": {n for st in rescale for n in st["args"]}}
 
 
 def _wide(kc, k: Kernel) -> list[dict]:
@@ -245,11 +251,13 @@ def float_bounds(modules=()) -> dict:
 def _kernel_entry(kc, bounds: dict) -> dict:
     k = kc.kernel
     b = bounds.get(k.name)
+    steps = rescale_steps(k, list(_flatten(k, k.build(**input_symbols(k))))) \
+        if len(kc.variants) == 1 else []
     return {"name": k.name, "summary": k.summary, "formula": k.formula, "ids": list(k.ids),
             "sources": list(k.sources), "singular": k.singular, "hash": kc.hash,
             "ops": kc.ops, "notes": k.notes,
             "float_bound": b if b is not None and b.get("hash") == kc.hash else None,
-            "functions": [_function(kc, "double"), _function(kc, "float")]}
+            "functions": [_function(kc, "double", steps), _function(kc, "float", steps)]}
 
 
 def _groups(codes, origin, bounds: dict) -> list[dict]:
