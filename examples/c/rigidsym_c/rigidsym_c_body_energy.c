@@ -54,6 +54,66 @@ static int rigidsym_c_body_energy_wide(
 }
 #endif
 
+
+#if RIGIDSYM_C_RESCALE_D
+/* rigidsym_c_body_energy at extreme inputs (RIGIDSYM_C_EXTREME_INPUT, finite): the status and
+ * outputs of the rescue below, or -1 where it cannot take the sample (the caller then goes
+ * on as without it). Kept out of the scalar function, so that its fast path stays a leaf. */
+static RIGIDSYM_C_COLD int rigidsym_c_body_energy_rescue(
+    double m,
+    const double v[3],
+    const double inertia[9],
+    const double omega[3],
+    double *T)
+{
+    int status;
+    int j;
+    double finite;
+    /* every output is homogeneous in the arguments of each step below: scale them
+     * by the power of two 2^-e that brings their largest component into [1/2, 1)
+     * (exact), evaluate, scale the outputs back by 2^(e d) (homogeneous.py); only
+     * when every component is then of ordinary magnitude (else the flag stays) */
+    int still_ = 0;
+    int rs_e0 = 0;
+    double rs_m;
+    double rs_v[3];
+    double rs_inertia[9];
+    double rs_omega[3];
+    {
+        double m_ = 0.0;
+        m_ = fabs(m) > m_ ? fabs(m) : m_;
+        for (j = 0; j < 3; ++j)
+            m_ = fabs(v[j]) > m_ ? fabs(v[j]) : m_;
+        for (j = 0; j < 9; ++j)
+            m_ = fabs(inertia[j]) > m_ ? fabs(inertia[j]) : m_;
+        for (j = 0; j < 3; ++j)
+            m_ = fabs(omega[j]) > m_ ? fabs(omega[j]) : m_;
+        if (m_ > 0.0)
+            (void)frexp(m_, &rs_e0);
+        rs_m = ldexp(m, -rs_e0);
+        still_ |= rigidsym_c_extreme_d(&rs_m, 1);
+        for (j = 0; j < 3; ++j)
+            rs_v[j] = ldexp(v[j], -rs_e0);
+        still_ |= rigidsym_c_extreme_d(rs_v, 3);
+        for (j = 0; j < 9; ++j)
+            rs_inertia[j] = ldexp(inertia[j], -rs_e0);
+        still_ |= rigidsym_c_extreme_d(rs_inertia, 9);
+        for (j = 0; j < 3; ++j)
+            rs_omega[j] = ldexp(omega[j], -rs_e0);
+        still_ |= rigidsym_c_extreme_d(rs_omega, 3);
+    }
+    if (!still_) {  /* every input now ordinary: the function itself, scaled back */
+        status = rigidsym_c_body_energy(rs_m, rs_v, rs_inertia, rs_omega, T);
+        T[0] = ldexp(T[0], 3 * rs_e0);
+        finite = (T[0] - T[0]);
+        if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
+            status |= RIGIDSYM_C_NONFINITE_RESULT;
+        return status;
+    }
+    return -1;
+}
+#endif
+
 RIGIDSYM_C_API int rigidsym_c_body_energy(
     double m,
     const double v[3],
@@ -65,13 +125,6 @@ RIGIDSYM_C_API int rigidsym_c_body_energy(
     uint64_t odd = 0;
     int status = 0, singular = 0;
     double finite = 0.0;
-#if RIGIDSYM_C_RESCALE_D
-    int rs_e0 = 0;
-    double rs_m;
-    double rs_v[3];
-    double rs_inertia[9];
-    double rs_omega[3];
-#endif
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
     {   /* the range test of every input component, as one loop (it vectorises) */
         const double in_[16] = {
@@ -99,44 +152,10 @@ RIGIDSYM_C_API int rigidsym_c_body_energy(
             return rigidsym_c_body_energy_wide(m, v, inertia, omega, T);
 #endif
 #if RIGIDSYM_C_RESCALE_D
-        /* every output is homogeneous in the arguments of each step below: scale them
-         * by the power of two 2^-e that brings their largest component into [1/2, 1)
-         * (exact), evaluate, scale the outputs back by 2^(e d) (homogeneous.py); only
-         * when every component is then of ordinary magnitude (else the flag stays) */
-        if (status == RIGIDSYM_C_EXTREME_INPUT) {
-            int still_ = 0;
-            {
-                double m_ = 0.0;
-                m_ = fabs(m) > m_ ? fabs(m) : m_;
-                for (j = 0; j < 3; ++j)
-                    m_ = fabs(v[j]) > m_ ? fabs(v[j]) : m_;
-                for (j = 0; j < 9; ++j)
-                    m_ = fabs(inertia[j]) > m_ ? fabs(inertia[j]) : m_;
-                for (j = 0; j < 3; ++j)
-                    m_ = fabs(omega[j]) > m_ ? fabs(omega[j]) : m_;
-                if (m_ > 0.0)
-                    (void)frexp(m_, &rs_e0);
-                rs_m = ldexp(m, -rs_e0);
-                still_ |= rigidsym_c_extreme_d(&rs_m, 1);
-                for (j = 0; j < 3; ++j)
-                    rs_v[j] = ldexp(v[j], -rs_e0);
-                still_ |= rigidsym_c_extreme_d(rs_v, 3);
-                for (j = 0; j < 9; ++j)
-                    rs_inertia[j] = ldexp(inertia[j], -rs_e0);
-                still_ |= rigidsym_c_extreme_d(rs_inertia, 9);
-                for (j = 0; j < 3; ++j)
-                    rs_omega[j] = ldexp(omega[j], -rs_e0);
-                still_ |= rigidsym_c_extreme_d(rs_omega, 3);
-            }
-            if (still_) {
-                rs_e0 = 0;
-            } else {
-                status = 0;
-                m = rs_m;
-                v = rs_v;
-                inertia = rs_inertia;
-                omega = rs_omega;
-            }
+        if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
+            const int r_ = rigidsym_c_body_energy_rescue(m, v, inertia, omega, T);
+            if (r_ >= 0)
+                return r_;
         }
 #endif
     }
@@ -161,12 +180,6 @@ RIGIDSYM_C_API int rigidsym_c_body_energy(
     {
         T[0] = (0.5)*m*((v_0*v_0) + (v_1*v_1) + (v_2*v_2)) + (0.5)*omega_0*(inertia_00*omega_0 + inertia_10*omega_1 + inertia_20*omega_2) + (0.5)*omega_1*(inertia_01*omega_0 + inertia_11*omega_1 + inertia_21*omega_2) + (0.5)*omega_2*(inertia_02*omega_0 + inertia_12*omega_1 + inertia_22*omega_2);
     }
-#if RIGIDSYM_C_RESCALE_D
-    if (rs_e0) {    /* the outputs back to the inputs' scale (rounded once, or inf) */
-        T[0] = ldexp(T[0], 3 * rs_e0);
-        finite += (T[0] - T[0]);
-    }
-#endif
     /* no division or root, and every output bounded by 2^306 for inputs of
      * ordinary magnitude (|x| < 2^101): only an extreme or non-finite input can make an
      * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN
@@ -212,6 +225,66 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_batch(
     return all_;
 }
 
+
+#if RIGIDSYM_C_RESCALE_F
+/* rigidsym_c_body_energy_f32 at extreme inputs (RIGIDSYM_C_EXTREME_INPUT, finite): the status and
+ * outputs of the rescue below, or -1 where it cannot take the sample (the caller then goes
+ * on as without it). Kept out of the scalar function, so that its fast path stays a leaf. */
+static RIGIDSYM_C_COLD int rigidsym_c_body_energy_f32_rescue(
+    float m,
+    const float v[3],
+    const float inertia[9],
+    const float omega[3],
+    float *T)
+{
+    int status;
+    int j;
+    float finite;
+    /* every output is homogeneous in the arguments of each step below: scale them
+     * by the power of two 2^-e that brings their largest component into [1/2, 1)
+     * (exact), evaluate, scale the outputs back by 2^(e d) (homogeneous.py); only
+     * when every component is then of ordinary magnitude (else the flag stays) */
+    int still_ = 0;
+    int rs_e0 = 0;
+    float rs_m;
+    float rs_v[3];
+    float rs_inertia[9];
+    float rs_omega[3];
+    {
+        float m_ = 0.0f;
+        m_ = fabsf(m) > m_ ? fabsf(m) : m_;
+        for (j = 0; j < 3; ++j)
+            m_ = fabsf(v[j]) > m_ ? fabsf(v[j]) : m_;
+        for (j = 0; j < 9; ++j)
+            m_ = fabsf(inertia[j]) > m_ ? fabsf(inertia[j]) : m_;
+        for (j = 0; j < 3; ++j)
+            m_ = fabsf(omega[j]) > m_ ? fabsf(omega[j]) : m_;
+        if (m_ > 0.0f)
+            (void)frexpf(m_, &rs_e0);
+        rs_m = ldexpf(m, -rs_e0);
+        still_ |= rigidsym_c_extreme_f(&rs_m, 1);
+        for (j = 0; j < 3; ++j)
+            rs_v[j] = ldexpf(v[j], -rs_e0);
+        still_ |= rigidsym_c_extreme_f(rs_v, 3);
+        for (j = 0; j < 9; ++j)
+            rs_inertia[j] = ldexpf(inertia[j], -rs_e0);
+        still_ |= rigidsym_c_extreme_f(rs_inertia, 9);
+        for (j = 0; j < 3; ++j)
+            rs_omega[j] = ldexpf(omega[j], -rs_e0);
+        still_ |= rigidsym_c_extreme_f(rs_omega, 3);
+    }
+    if (!still_) {  /* every input now ordinary: the function itself, scaled back */
+        status = rigidsym_c_body_energy_f32(rs_m, rs_v, rs_inertia, rs_omega, T);
+        T[0] = ldexpf(T[0], 3 * rs_e0);
+        finite = (T[0] - T[0]);
+        if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
+            status |= RIGIDSYM_C_NONFINITE_RESULT;
+        return status;
+    }
+    return -1;
+}
+#endif
+
 RIGIDSYM_C_API int rigidsym_c_body_energy_f32(
     float m,
     const float v[3],
@@ -223,13 +296,6 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_f32(
     uint32_t odd = 0;
     int status = 0, singular = 0;
     float finite = 0.0f;
-#if RIGIDSYM_C_RESCALE_F
-    int rs_e0 = 0;
-    float rs_m;
-    float rs_v[3];
-    float rs_inertia[9];
-    float rs_omega[3];
-#endif
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
     {   /* the range test of every input component, as one loop (it vectorises) */
         const float in_[16] = {
@@ -253,44 +319,10 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_f32(
             if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
                 status = RIGIDSYM_C_NONFINITE_INPUT;
 #if RIGIDSYM_C_RESCALE_F
-        /* every output is homogeneous in the arguments of each step below: scale them
-         * by the power of two 2^-e that brings their largest component into [1/2, 1)
-         * (exact), evaluate, scale the outputs back by 2^(e d) (homogeneous.py); only
-         * when every component is then of ordinary magnitude (else the flag stays) */
-        if (status == RIGIDSYM_C_EXTREME_INPUT) {
-            int still_ = 0;
-            {
-                float m_ = 0.0f;
-                m_ = fabsf(m) > m_ ? fabsf(m) : m_;
-                for (j = 0; j < 3; ++j)
-                    m_ = fabsf(v[j]) > m_ ? fabsf(v[j]) : m_;
-                for (j = 0; j < 9; ++j)
-                    m_ = fabsf(inertia[j]) > m_ ? fabsf(inertia[j]) : m_;
-                for (j = 0; j < 3; ++j)
-                    m_ = fabsf(omega[j]) > m_ ? fabsf(omega[j]) : m_;
-                if (m_ > 0.0f)
-                    (void)frexpf(m_, &rs_e0);
-                rs_m = ldexpf(m, -rs_e0);
-                still_ |= rigidsym_c_extreme_f(&rs_m, 1);
-                for (j = 0; j < 3; ++j)
-                    rs_v[j] = ldexpf(v[j], -rs_e0);
-                still_ |= rigidsym_c_extreme_f(rs_v, 3);
-                for (j = 0; j < 9; ++j)
-                    rs_inertia[j] = ldexpf(inertia[j], -rs_e0);
-                still_ |= rigidsym_c_extreme_f(rs_inertia, 9);
-                for (j = 0; j < 3; ++j)
-                    rs_omega[j] = ldexpf(omega[j], -rs_e0);
-                still_ |= rigidsym_c_extreme_f(rs_omega, 3);
-            }
-            if (still_) {
-                rs_e0 = 0;
-            } else {
-                status = 0;
-                m = rs_m;
-                v = rs_v;
-                inertia = rs_inertia;
-                omega = rs_omega;
-            }
+        if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
+            const int r_ = rigidsym_c_body_energy_f32_rescue(m, v, inertia, omega, T);
+            if (r_ >= 0)
+                return r_;
         }
 #endif
     }
@@ -315,12 +347,6 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_f32(
     {
         T[0] = (0.5f)*m*((v_0*v_0) + (v_1*v_1) + (v_2*v_2)) + (0.5f)*omega_0*(inertia_00*omega_0 + inertia_10*omega_1 + inertia_20*omega_2) + (0.5f)*omega_1*(inertia_01*omega_0 + inertia_11*omega_1 + inertia_21*omega_2) + (0.5f)*omega_2*(inertia_02*omega_0 + inertia_12*omega_1 + inertia_22*omega_2);
     }
-#if RIGIDSYM_C_RESCALE_F
-    if (rs_e0) {    /* the outputs back to the inputs' scale (rounded once, or inf) */
-        T[0] = ldexpf(T[0], 3 * rs_e0);
-        finite += (T[0] - T[0]);
-    }
-#endif
     /* no division or root, and every output bounded by 2^96 for inputs of
      * ordinary magnitude (|x| < 2^31): only an extreme or non-finite input can make an
      * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN
@@ -466,6 +492,86 @@ static int rigidsym_c_body_energy_with_jacobians_wide(
 }
 #endif
 
+
+#if RIGIDSYM_C_RESCALE_D
+/* rigidsym_c_body_energy_with_jacobians at extreme inputs (RIGIDSYM_C_EXTREME_INPUT, finite): the status and
+ * outputs of the rescue below, or -1 where it cannot take the sample (the caller then goes
+ * on as without it). Kept out of the scalar function, so that its fast path stays a leaf. */
+static RIGIDSYM_C_COLD int rigidsym_c_body_energy_with_jacobians_rescue(
+    double m,
+    const double v[3],
+    const double inertia[9],
+    const double omega[3],
+    double *T,
+    double *T_D_m,
+    double T_D_v[3],
+    double T_D_inertia[9],
+    double T_D_omega[3])
+{
+    int status;
+    int j;
+    double finite;
+    /* every output is homogeneous in the arguments of each step below: scale them
+     * by the power of two 2^-e that brings their largest component into [1/2, 1)
+     * (exact), evaluate, scale the outputs back by 2^(e d) (homogeneous.py); only
+     * when every component is then of ordinary magnitude (else the flag stays) */
+    int still_ = 0;
+    int rs_e0 = 0;
+    double rs_m;
+    double rs_v[3];
+    double rs_inertia[9];
+    double rs_omega[3];
+    {
+        double m_ = 0.0;
+        m_ = fabs(m) > m_ ? fabs(m) : m_;
+        for (j = 0; j < 3; ++j)
+            m_ = fabs(v[j]) > m_ ? fabs(v[j]) : m_;
+        for (j = 0; j < 9; ++j)
+            m_ = fabs(inertia[j]) > m_ ? fabs(inertia[j]) : m_;
+        for (j = 0; j < 3; ++j)
+            m_ = fabs(omega[j]) > m_ ? fabs(omega[j]) : m_;
+        if (m_ > 0.0)
+            (void)frexp(m_, &rs_e0);
+        rs_m = ldexp(m, -rs_e0);
+        still_ |= rigidsym_c_extreme_d(&rs_m, 1);
+        for (j = 0; j < 3; ++j)
+            rs_v[j] = ldexp(v[j], -rs_e0);
+        still_ |= rigidsym_c_extreme_d(rs_v, 3);
+        for (j = 0; j < 9; ++j)
+            rs_inertia[j] = ldexp(inertia[j], -rs_e0);
+        still_ |= rigidsym_c_extreme_d(rs_inertia, 9);
+        for (j = 0; j < 3; ++j)
+            rs_omega[j] = ldexp(omega[j], -rs_e0);
+        still_ |= rigidsym_c_extreme_d(rs_omega, 3);
+    }
+    if (!still_) {  /* every input now ordinary: the function itself, scaled back */
+        status = rigidsym_c_body_energy_with_jacobians(rs_m, rs_v, rs_inertia, rs_omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
+        T[0] = ldexp(T[0], 3 * rs_e0);
+        T_D_m[0] = ldexp(T_D_m[0], 2 * rs_e0);
+        T_D_v[0] = ldexp(T_D_v[0], 2 * rs_e0);
+        T_D_v[1] = ldexp(T_D_v[1], 2 * rs_e0);
+        T_D_v[2] = ldexp(T_D_v[2], 2 * rs_e0);
+        T_D_inertia[0] = ldexp(T_D_inertia[0], 2 * rs_e0);
+        T_D_inertia[1] = ldexp(T_D_inertia[1], 2 * rs_e0);
+        T_D_inertia[2] = ldexp(T_D_inertia[2], 2 * rs_e0);
+        T_D_inertia[3] = ldexp(T_D_inertia[3], 2 * rs_e0);
+        T_D_inertia[4] = ldexp(T_D_inertia[4], 2 * rs_e0);
+        T_D_inertia[5] = ldexp(T_D_inertia[5], 2 * rs_e0);
+        T_D_inertia[6] = ldexp(T_D_inertia[6], 2 * rs_e0);
+        T_D_inertia[7] = ldexp(T_D_inertia[7], 2 * rs_e0);
+        T_D_inertia[8] = ldexp(T_D_inertia[8], 2 * rs_e0);
+        T_D_omega[0] = ldexp(T_D_omega[0], 2 * rs_e0);
+        T_D_omega[1] = ldexp(T_D_omega[1], 2 * rs_e0);
+        T_D_omega[2] = ldexp(T_D_omega[2], 2 * rs_e0);
+        finite = (((((T[0] - T[0]) + (T_D_m[0] - T_D_m[0])) + ((T_D_v[0] - T_D_v[0]) + (T_D_v[1] - T_D_v[1]))) + (((T_D_v[2] - T_D_v[2]) + (T_D_inertia[0] - T_D_inertia[0])) + ((T_D_inertia[1] - T_D_inertia[1]) + (T_D_inertia[2] - T_D_inertia[2])))) + ((((T_D_inertia[3] - T_D_inertia[3]) + (T_D_inertia[4] - T_D_inertia[4])) + ((T_D_inertia[5] - T_D_inertia[5]) + (T_D_inertia[6] - T_D_inertia[6]))) + (((T_D_inertia[7] - T_D_inertia[7]) + (T_D_inertia[8] - T_D_inertia[8])) + ((T_D_omega[0] - T_D_omega[0]) + ((T_D_omega[1] - T_D_omega[1]) + (T_D_omega[2] - T_D_omega[2]))))));
+        if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
+            status |= RIGIDSYM_C_NONFINITE_RESULT;
+        return status;
+    }
+    return -1;
+}
+#endif
+
 RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians(
     double m,
     const double v[3],
@@ -478,13 +584,6 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians(
     uint64_t odd = 0;
     int status = 0, singular = 0;
     double finite = 0.0;
-#if RIGIDSYM_C_RESCALE_D
-    int rs_e0 = 0;
-    double rs_m;
-    double rs_v[3];
-    double rs_inertia[9];
-    double rs_omega[3];
-#endif
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
     {   /* the range test of every input component, as one loop (it vectorises) */
         const double in_[16] = {
@@ -512,44 +611,10 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians(
             return rigidsym_c_body_energy_with_jacobians_wide(m, v, inertia, omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
 #endif
 #if RIGIDSYM_C_RESCALE_D
-        /* every output is homogeneous in the arguments of each step below: scale them
-         * by the power of two 2^-e that brings their largest component into [1/2, 1)
-         * (exact), evaluate, scale the outputs back by 2^(e d) (homogeneous.py); only
-         * when every component is then of ordinary magnitude (else the flag stays) */
-        if (status == RIGIDSYM_C_EXTREME_INPUT) {
-            int still_ = 0;
-            {
-                double m_ = 0.0;
-                m_ = fabs(m) > m_ ? fabs(m) : m_;
-                for (j = 0; j < 3; ++j)
-                    m_ = fabs(v[j]) > m_ ? fabs(v[j]) : m_;
-                for (j = 0; j < 9; ++j)
-                    m_ = fabs(inertia[j]) > m_ ? fabs(inertia[j]) : m_;
-                for (j = 0; j < 3; ++j)
-                    m_ = fabs(omega[j]) > m_ ? fabs(omega[j]) : m_;
-                if (m_ > 0.0)
-                    (void)frexp(m_, &rs_e0);
-                rs_m = ldexp(m, -rs_e0);
-                still_ |= rigidsym_c_extreme_d(&rs_m, 1);
-                for (j = 0; j < 3; ++j)
-                    rs_v[j] = ldexp(v[j], -rs_e0);
-                still_ |= rigidsym_c_extreme_d(rs_v, 3);
-                for (j = 0; j < 9; ++j)
-                    rs_inertia[j] = ldexp(inertia[j], -rs_e0);
-                still_ |= rigidsym_c_extreme_d(rs_inertia, 9);
-                for (j = 0; j < 3; ++j)
-                    rs_omega[j] = ldexp(omega[j], -rs_e0);
-                still_ |= rigidsym_c_extreme_d(rs_omega, 3);
-            }
-            if (still_) {
-                rs_e0 = 0;
-            } else {
-                status = 0;
-                m = rs_m;
-                v = rs_v;
-                inertia = rs_inertia;
-                omega = rs_omega;
-            }
+        if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
+            const int r_ = rigidsym_c_body_energy_with_jacobians_rescue(m, v, inertia, omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
+            if (r_ >= 0)
+                return r_;
         }
 #endif
     }
@@ -608,28 +673,6 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians(
         T_D_omega[1] = inertia_10*x6 + inertia_12*x14 + (0.5)*x7 + x8 + (0.5)*x9;
         T_D_omega[2] = inertia_20*x6 + inertia_21*x10 + (0.5)*x11 + (0.5)*x12 + x13;
     }
-#if RIGIDSYM_C_RESCALE_D
-    if (rs_e0) {    /* the outputs back to the inputs' scale (rounded once, or inf) */
-        T[0] = ldexp(T[0], 3 * rs_e0);
-        T_D_m[0] = ldexp(T_D_m[0], 2 * rs_e0);
-        T_D_v[0] = ldexp(T_D_v[0], 2 * rs_e0);
-        T_D_v[1] = ldexp(T_D_v[1], 2 * rs_e0);
-        T_D_v[2] = ldexp(T_D_v[2], 2 * rs_e0);
-        T_D_inertia[0] = ldexp(T_D_inertia[0], 2 * rs_e0);
-        T_D_inertia[1] = ldexp(T_D_inertia[1], 2 * rs_e0);
-        T_D_inertia[2] = ldexp(T_D_inertia[2], 2 * rs_e0);
-        T_D_inertia[3] = ldexp(T_D_inertia[3], 2 * rs_e0);
-        T_D_inertia[4] = ldexp(T_D_inertia[4], 2 * rs_e0);
-        T_D_inertia[5] = ldexp(T_D_inertia[5], 2 * rs_e0);
-        T_D_inertia[6] = ldexp(T_D_inertia[6], 2 * rs_e0);
-        T_D_inertia[7] = ldexp(T_D_inertia[7], 2 * rs_e0);
-        T_D_inertia[8] = ldexp(T_D_inertia[8], 2 * rs_e0);
-        T_D_omega[0] = ldexp(T_D_omega[0], 2 * rs_e0);
-        T_D_omega[1] = ldexp(T_D_omega[1], 2 * rs_e0);
-        T_D_omega[2] = ldexp(T_D_omega[2], 2 * rs_e0);
-        finite += (((((T[0] - T[0]) + (T_D_m[0] - T_D_m[0])) + ((T_D_v[0] - T_D_v[0]) + (T_D_v[1] - T_D_v[1]))) + (((T_D_v[2] - T_D_v[2]) + (T_D_inertia[0] - T_D_inertia[0])) + ((T_D_inertia[1] - T_D_inertia[1]) + (T_D_inertia[2] - T_D_inertia[2])))) + ((((T_D_inertia[3] - T_D_inertia[3]) + (T_D_inertia[4] - T_D_inertia[4])) + ((T_D_inertia[5] - T_D_inertia[5]) + (T_D_inertia[6] - T_D_inertia[6]))) + (((T_D_inertia[7] - T_D_inertia[7]) + (T_D_inertia[8] - T_D_inertia[8])) + ((T_D_omega[0] - T_D_omega[0]) + ((T_D_omega[1] - T_D_omega[1]) + (T_D_omega[2] - T_D_omega[2]))))));
-    }
-#endif
     /* no division or root, and every output bounded by 2^306 for inputs of
      * ordinary magnitude (|x| < 2^101): only an extreme or non-finite input can make an
      * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN
@@ -699,6 +742,86 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians_batch(
     return all_;
 }
 
+
+#if RIGIDSYM_C_RESCALE_F
+/* rigidsym_c_body_energy_with_jacobians_f32 at extreme inputs (RIGIDSYM_C_EXTREME_INPUT, finite): the status and
+ * outputs of the rescue below, or -1 where it cannot take the sample (the caller then goes
+ * on as without it). Kept out of the scalar function, so that its fast path stays a leaf. */
+static RIGIDSYM_C_COLD int rigidsym_c_body_energy_with_jacobians_f32_rescue(
+    float m,
+    const float v[3],
+    const float inertia[9],
+    const float omega[3],
+    float *T,
+    float *T_D_m,
+    float T_D_v[3],
+    float T_D_inertia[9],
+    float T_D_omega[3])
+{
+    int status;
+    int j;
+    float finite;
+    /* every output is homogeneous in the arguments of each step below: scale them
+     * by the power of two 2^-e that brings their largest component into [1/2, 1)
+     * (exact), evaluate, scale the outputs back by 2^(e d) (homogeneous.py); only
+     * when every component is then of ordinary magnitude (else the flag stays) */
+    int still_ = 0;
+    int rs_e0 = 0;
+    float rs_m;
+    float rs_v[3];
+    float rs_inertia[9];
+    float rs_omega[3];
+    {
+        float m_ = 0.0f;
+        m_ = fabsf(m) > m_ ? fabsf(m) : m_;
+        for (j = 0; j < 3; ++j)
+            m_ = fabsf(v[j]) > m_ ? fabsf(v[j]) : m_;
+        for (j = 0; j < 9; ++j)
+            m_ = fabsf(inertia[j]) > m_ ? fabsf(inertia[j]) : m_;
+        for (j = 0; j < 3; ++j)
+            m_ = fabsf(omega[j]) > m_ ? fabsf(omega[j]) : m_;
+        if (m_ > 0.0f)
+            (void)frexpf(m_, &rs_e0);
+        rs_m = ldexpf(m, -rs_e0);
+        still_ |= rigidsym_c_extreme_f(&rs_m, 1);
+        for (j = 0; j < 3; ++j)
+            rs_v[j] = ldexpf(v[j], -rs_e0);
+        still_ |= rigidsym_c_extreme_f(rs_v, 3);
+        for (j = 0; j < 9; ++j)
+            rs_inertia[j] = ldexpf(inertia[j], -rs_e0);
+        still_ |= rigidsym_c_extreme_f(rs_inertia, 9);
+        for (j = 0; j < 3; ++j)
+            rs_omega[j] = ldexpf(omega[j], -rs_e0);
+        still_ |= rigidsym_c_extreme_f(rs_omega, 3);
+    }
+    if (!still_) {  /* every input now ordinary: the function itself, scaled back */
+        status = rigidsym_c_body_energy_with_jacobians_f32(rs_m, rs_v, rs_inertia, rs_omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
+        T[0] = ldexpf(T[0], 3 * rs_e0);
+        T_D_m[0] = ldexpf(T_D_m[0], 2 * rs_e0);
+        T_D_v[0] = ldexpf(T_D_v[0], 2 * rs_e0);
+        T_D_v[1] = ldexpf(T_D_v[1], 2 * rs_e0);
+        T_D_v[2] = ldexpf(T_D_v[2], 2 * rs_e0);
+        T_D_inertia[0] = ldexpf(T_D_inertia[0], 2 * rs_e0);
+        T_D_inertia[1] = ldexpf(T_D_inertia[1], 2 * rs_e0);
+        T_D_inertia[2] = ldexpf(T_D_inertia[2], 2 * rs_e0);
+        T_D_inertia[3] = ldexpf(T_D_inertia[3], 2 * rs_e0);
+        T_D_inertia[4] = ldexpf(T_D_inertia[4], 2 * rs_e0);
+        T_D_inertia[5] = ldexpf(T_D_inertia[5], 2 * rs_e0);
+        T_D_inertia[6] = ldexpf(T_D_inertia[6], 2 * rs_e0);
+        T_D_inertia[7] = ldexpf(T_D_inertia[7], 2 * rs_e0);
+        T_D_inertia[8] = ldexpf(T_D_inertia[8], 2 * rs_e0);
+        T_D_omega[0] = ldexpf(T_D_omega[0], 2 * rs_e0);
+        T_D_omega[1] = ldexpf(T_D_omega[1], 2 * rs_e0);
+        T_D_omega[2] = ldexpf(T_D_omega[2], 2 * rs_e0);
+        finite = (((((T[0] - T[0]) + (T_D_m[0] - T_D_m[0])) + ((T_D_v[0] - T_D_v[0]) + (T_D_v[1] - T_D_v[1]))) + (((T_D_v[2] - T_D_v[2]) + (T_D_inertia[0] - T_D_inertia[0])) + ((T_D_inertia[1] - T_D_inertia[1]) + (T_D_inertia[2] - T_D_inertia[2])))) + ((((T_D_inertia[3] - T_D_inertia[3]) + (T_D_inertia[4] - T_D_inertia[4])) + ((T_D_inertia[5] - T_D_inertia[5]) + (T_D_inertia[6] - T_D_inertia[6]))) + (((T_D_inertia[7] - T_D_inertia[7]) + (T_D_inertia[8] - T_D_inertia[8])) + ((T_D_omega[0] - T_D_omega[0]) + ((T_D_omega[1] - T_D_omega[1]) + (T_D_omega[2] - T_D_omega[2]))))));
+        if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
+            status |= RIGIDSYM_C_NONFINITE_RESULT;
+        return status;
+    }
+    return -1;
+}
+#endif
+
 RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians_f32(
     float m,
     const float v[3],
@@ -711,13 +834,6 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians_f32(
     uint32_t odd = 0;
     int status = 0, singular = 0;
     float finite = 0.0f;
-#if RIGIDSYM_C_RESCALE_F
-    int rs_e0 = 0;
-    float rs_m;
-    float rs_v[3];
-    float rs_inertia[9];
-    float rs_omega[3];
-#endif
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
     {   /* the range test of every input component, as one loop (it vectorises) */
         const float in_[16] = {
@@ -741,44 +857,10 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians_f32(
             if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
                 status = RIGIDSYM_C_NONFINITE_INPUT;
 #if RIGIDSYM_C_RESCALE_F
-        /* every output is homogeneous in the arguments of each step below: scale them
-         * by the power of two 2^-e that brings their largest component into [1/2, 1)
-         * (exact), evaluate, scale the outputs back by 2^(e d) (homogeneous.py); only
-         * when every component is then of ordinary magnitude (else the flag stays) */
-        if (status == RIGIDSYM_C_EXTREME_INPUT) {
-            int still_ = 0;
-            {
-                float m_ = 0.0f;
-                m_ = fabsf(m) > m_ ? fabsf(m) : m_;
-                for (j = 0; j < 3; ++j)
-                    m_ = fabsf(v[j]) > m_ ? fabsf(v[j]) : m_;
-                for (j = 0; j < 9; ++j)
-                    m_ = fabsf(inertia[j]) > m_ ? fabsf(inertia[j]) : m_;
-                for (j = 0; j < 3; ++j)
-                    m_ = fabsf(omega[j]) > m_ ? fabsf(omega[j]) : m_;
-                if (m_ > 0.0f)
-                    (void)frexpf(m_, &rs_e0);
-                rs_m = ldexpf(m, -rs_e0);
-                still_ |= rigidsym_c_extreme_f(&rs_m, 1);
-                for (j = 0; j < 3; ++j)
-                    rs_v[j] = ldexpf(v[j], -rs_e0);
-                still_ |= rigidsym_c_extreme_f(rs_v, 3);
-                for (j = 0; j < 9; ++j)
-                    rs_inertia[j] = ldexpf(inertia[j], -rs_e0);
-                still_ |= rigidsym_c_extreme_f(rs_inertia, 9);
-                for (j = 0; j < 3; ++j)
-                    rs_omega[j] = ldexpf(omega[j], -rs_e0);
-                still_ |= rigidsym_c_extreme_f(rs_omega, 3);
-            }
-            if (still_) {
-                rs_e0 = 0;
-            } else {
-                status = 0;
-                m = rs_m;
-                v = rs_v;
-                inertia = rs_inertia;
-                omega = rs_omega;
-            }
+        if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
+            const int r_ = rigidsym_c_body_energy_with_jacobians_f32_rescue(m, v, inertia, omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
+            if (r_ >= 0)
+                return r_;
         }
 #endif
     }
@@ -837,28 +919,6 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians_f32(
         T_D_omega[1] = inertia_10*x6 + inertia_12*x14 + (0.5f)*x7 + x8 + (0.5f)*x9;
         T_D_omega[2] = inertia_20*x6 + inertia_21*x10 + (0.5f)*x11 + (0.5f)*x12 + x13;
     }
-#if RIGIDSYM_C_RESCALE_F
-    if (rs_e0) {    /* the outputs back to the inputs' scale (rounded once, or inf) */
-        T[0] = ldexpf(T[0], 3 * rs_e0);
-        T_D_m[0] = ldexpf(T_D_m[0], 2 * rs_e0);
-        T_D_v[0] = ldexpf(T_D_v[0], 2 * rs_e0);
-        T_D_v[1] = ldexpf(T_D_v[1], 2 * rs_e0);
-        T_D_v[2] = ldexpf(T_D_v[2], 2 * rs_e0);
-        T_D_inertia[0] = ldexpf(T_D_inertia[0], 2 * rs_e0);
-        T_D_inertia[1] = ldexpf(T_D_inertia[1], 2 * rs_e0);
-        T_D_inertia[2] = ldexpf(T_D_inertia[2], 2 * rs_e0);
-        T_D_inertia[3] = ldexpf(T_D_inertia[3], 2 * rs_e0);
-        T_D_inertia[4] = ldexpf(T_D_inertia[4], 2 * rs_e0);
-        T_D_inertia[5] = ldexpf(T_D_inertia[5], 2 * rs_e0);
-        T_D_inertia[6] = ldexpf(T_D_inertia[6], 2 * rs_e0);
-        T_D_inertia[7] = ldexpf(T_D_inertia[7], 2 * rs_e0);
-        T_D_inertia[8] = ldexpf(T_D_inertia[8], 2 * rs_e0);
-        T_D_omega[0] = ldexpf(T_D_omega[0], 2 * rs_e0);
-        T_D_omega[1] = ldexpf(T_D_omega[1], 2 * rs_e0);
-        T_D_omega[2] = ldexpf(T_D_omega[2], 2 * rs_e0);
-        finite += (((((T[0] - T[0]) + (T_D_m[0] - T_D_m[0])) + ((T_D_v[0] - T_D_v[0]) + (T_D_v[1] - T_D_v[1]))) + (((T_D_v[2] - T_D_v[2]) + (T_D_inertia[0] - T_D_inertia[0])) + ((T_D_inertia[1] - T_D_inertia[1]) + (T_D_inertia[2] - T_D_inertia[2])))) + ((((T_D_inertia[3] - T_D_inertia[3]) + (T_D_inertia[4] - T_D_inertia[4])) + ((T_D_inertia[5] - T_D_inertia[5]) + (T_D_inertia[6] - T_D_inertia[6]))) + (((T_D_inertia[7] - T_D_inertia[7]) + (T_D_inertia[8] - T_D_inertia[8])) + ((T_D_omega[0] - T_D_omega[0]) + ((T_D_omega[1] - T_D_omega[1]) + (T_D_omega[2] - T_D_omega[2]))))));
-    }
-#endif
     /* no division or root, and every output bounded by 2^96 for inputs of
      * ordinary magnitude (|x| < 2^31): only an extreme or non-finite input can make an
      * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN

@@ -62,6 +62,11 @@
 /* The rescue without a wider type (the float functions; the double ones where long double
  * is double): power-of-two rescaling of the arguments in which the kernel is homogeneous
  * (docs/c-api.md, "Extreme inputs"). */
+#if defined(__GNUC__)
+#define RIGIDSYM_C_COLD __attribute__((cold, noinline))
+#else
+#define RIGIDSYM_C_COLD
+#endif
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
 #define RIGIDSYM_C_RESCALE_F 1
 #define RIGIDSYM_C_RESCALE_D (!RIGIDSYM_C_WIDE)

@@ -45,6 +45,54 @@ static int rigidsym_c_planar_arm_tip_wide(
 }
 #endif
 
+
+#if RIGIDSYM_C_RESCALE_D
+/* rigidsym_c_planar_arm_tip at extreme inputs (RIGIDSYM_C_EXTREME_INPUT, finite): the status and
+ * outputs of the rescue below, or -1 where it cannot take the sample (the caller then goes
+ * on as without it). Kept out of the scalar function, so that its fast path stays a leaf. */
+static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_rescue(
+    double q1,
+    double q2,
+    double l1,
+    double l2,
+    double p[2])
+{
+    int status;
+    double finite;
+    /* every output is homogeneous in the arguments of each step below: scale them
+     * by the power of two 2^-e that brings their largest component into [1/2, 1)
+     * (exact), evaluate, scale the outputs back by 2^(e d) (homogeneous.py); only
+     * when every component is then of ordinary magnitude (else the flag stays) */
+    int still_ = 0;
+    int rs_e0 = 0;
+    double rs_l1;
+    double rs_l2;
+    {
+        double m_ = 0.0;
+        m_ = fabs(l1) > m_ ? fabs(l1) : m_;
+        m_ = fabs(l2) > m_ ? fabs(l2) : m_;
+        if (m_ > 0.0)
+            (void)frexp(m_, &rs_e0);
+        rs_l1 = ldexp(l1, -rs_e0);
+        still_ |= rigidsym_c_extreme_d(&rs_l1, 1);
+        rs_l2 = ldexp(l2, -rs_e0);
+        still_ |= rigidsym_c_extreme_d(&rs_l2, 1);
+    }
+    still_ |= rigidsym_c_extreme_d(&q1, 1);
+    still_ |= rigidsym_c_extreme_d(&q2, 1);
+    if (!still_) {  /* every input now ordinary: the function itself, scaled back */
+        status = rigidsym_c_planar_arm_tip(q1, q2, rs_l1, rs_l2, p);
+        p[0] = ldexp(p[0], 1 * rs_e0);
+        p[1] = ldexp(p[1], 1 * rs_e0);
+        finite = ((p[0] - p[0]) + (p[1] - p[1]));
+        if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
+            status |= RIGIDSYM_C_NONFINITE_RESULT;
+        return status;
+    }
+    return -1;
+}
+#endif
+
 RIGIDSYM_C_API int rigidsym_c_planar_arm_tip(
     double q1,
     double q2,
@@ -55,11 +103,6 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip(
     uint64_t odd = 0;
     int status = 0, singular = 0;
     double finite = 0.0;
-#if RIGIDSYM_C_RESCALE_D
-    int rs_e0 = 0;
-    double rs_l1;
-    double rs_l2;
-#endif
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
     {   /* the range test of every input component, as one loop (it vectorises) */
         const double in_[4] = {
@@ -86,32 +129,10 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip(
             return rigidsym_c_planar_arm_tip_wide(q1, q2, l1, l2, p);
 #endif
 #if RIGIDSYM_C_RESCALE_D
-        /* every output is homogeneous in the arguments of each step below: scale them
-         * by the power of two 2^-e that brings their largest component into [1/2, 1)
-         * (exact), evaluate, scale the outputs back by 2^(e d) (homogeneous.py); only
-         * when every component is then of ordinary magnitude (else the flag stays) */
-        if (status == RIGIDSYM_C_EXTREME_INPUT) {
-            int still_ = 0;
-            {
-                double m_ = 0.0;
-                m_ = fabs(l1) > m_ ? fabs(l1) : m_;
-                m_ = fabs(l2) > m_ ? fabs(l2) : m_;
-                if (m_ > 0.0)
-                    (void)frexp(m_, &rs_e0);
-                rs_l1 = ldexp(l1, -rs_e0);
-                still_ |= rigidsym_c_extreme_d(&rs_l1, 1);
-                rs_l2 = ldexp(l2, -rs_e0);
-                still_ |= rigidsym_c_extreme_d(&rs_l2, 1);
-            }
-            still_ |= rigidsym_c_extreme_d(&q1, 1);
-            still_ |= rigidsym_c_extreme_d(&q2, 1);
-            if (still_) {
-                rs_e0 = 0;
-            } else {
-                status = 0;
-                l1 = rs_l1;
-                l2 = rs_l2;
-            }
+        if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
+            const int r_ = rigidsym_c_planar_arm_tip_rescue(q1, q2, l1, l2, p);
+            if (r_ >= 0)
+                return r_;
         }
 #endif
     }
@@ -123,13 +144,6 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip(
         p[0] = l1*cos(q1) + l2*cos(x0);
         p[1] = l1*sin(q1) + l2*sin(x0);
     }
-#if RIGIDSYM_C_RESCALE_D
-    if (rs_e0) {    /* the outputs back to the inputs' scale (rounded once, or inf) */
-        p[0] = ldexp(p[0], 1 * rs_e0);
-        p[1] = ldexp(p[1], 1 * rs_e0);
-        finite += ((p[0] - p[0]) + (p[1] - p[1]));
-    }
-#endif
     /* no division or root, and every output bounded by 2^102 for inputs of
      * ordinary magnitude (|x| < 2^101): only an extreme or non-finite input can make an
      * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN
@@ -176,6 +190,54 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_batch(
     return all_;
 }
 
+
+#if RIGIDSYM_C_RESCALE_F
+/* rigidsym_c_planar_arm_tip_f32 at extreme inputs (RIGIDSYM_C_EXTREME_INPUT, finite): the status and
+ * outputs of the rescue below, or -1 where it cannot take the sample (the caller then goes
+ * on as without it). Kept out of the scalar function, so that its fast path stays a leaf. */
+static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_f32_rescue(
+    float q1,
+    float q2,
+    float l1,
+    float l2,
+    float p[2])
+{
+    int status;
+    float finite;
+    /* every output is homogeneous in the arguments of each step below: scale them
+     * by the power of two 2^-e that brings their largest component into [1/2, 1)
+     * (exact), evaluate, scale the outputs back by 2^(e d) (homogeneous.py); only
+     * when every component is then of ordinary magnitude (else the flag stays) */
+    int still_ = 0;
+    int rs_e0 = 0;
+    float rs_l1;
+    float rs_l2;
+    {
+        float m_ = 0.0f;
+        m_ = fabsf(l1) > m_ ? fabsf(l1) : m_;
+        m_ = fabsf(l2) > m_ ? fabsf(l2) : m_;
+        if (m_ > 0.0f)
+            (void)frexpf(m_, &rs_e0);
+        rs_l1 = ldexpf(l1, -rs_e0);
+        still_ |= rigidsym_c_extreme_f(&rs_l1, 1);
+        rs_l2 = ldexpf(l2, -rs_e0);
+        still_ |= rigidsym_c_extreme_f(&rs_l2, 1);
+    }
+    still_ |= rigidsym_c_extreme_f(&q1, 1);
+    still_ |= rigidsym_c_extreme_f(&q2, 1);
+    if (!still_) {  /* every input now ordinary: the function itself, scaled back */
+        status = rigidsym_c_planar_arm_tip_f32(q1, q2, rs_l1, rs_l2, p);
+        p[0] = ldexpf(p[0], 1 * rs_e0);
+        p[1] = ldexpf(p[1], 1 * rs_e0);
+        finite = ((p[0] - p[0]) + (p[1] - p[1]));
+        if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
+            status |= RIGIDSYM_C_NONFINITE_RESULT;
+        return status;
+    }
+    return -1;
+}
+#endif
+
 RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_f32(
     float q1,
     float q2,
@@ -186,11 +248,6 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_f32(
     uint32_t odd = 0;
     int status = 0, singular = 0;
     float finite = 0.0f;
-#if RIGIDSYM_C_RESCALE_F
-    int rs_e0 = 0;
-    float rs_l1;
-    float rs_l2;
-#endif
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
     {   /* the range test of every input component, as one loop (it vectorises) */
         const float in_[4] = {
@@ -213,32 +270,10 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_f32(
             if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
                 status = RIGIDSYM_C_NONFINITE_INPUT;
 #if RIGIDSYM_C_RESCALE_F
-        /* every output is homogeneous in the arguments of each step below: scale them
-         * by the power of two 2^-e that brings their largest component into [1/2, 1)
-         * (exact), evaluate, scale the outputs back by 2^(e d) (homogeneous.py); only
-         * when every component is then of ordinary magnitude (else the flag stays) */
-        if (status == RIGIDSYM_C_EXTREME_INPUT) {
-            int still_ = 0;
-            {
-                float m_ = 0.0f;
-                m_ = fabsf(l1) > m_ ? fabsf(l1) : m_;
-                m_ = fabsf(l2) > m_ ? fabsf(l2) : m_;
-                if (m_ > 0.0f)
-                    (void)frexpf(m_, &rs_e0);
-                rs_l1 = ldexpf(l1, -rs_e0);
-                still_ |= rigidsym_c_extreme_f(&rs_l1, 1);
-                rs_l2 = ldexpf(l2, -rs_e0);
-                still_ |= rigidsym_c_extreme_f(&rs_l2, 1);
-            }
-            still_ |= rigidsym_c_extreme_f(&q1, 1);
-            still_ |= rigidsym_c_extreme_f(&q2, 1);
-            if (still_) {
-                rs_e0 = 0;
-            } else {
-                status = 0;
-                l1 = rs_l1;
-                l2 = rs_l2;
-            }
+        if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
+            const int r_ = rigidsym_c_planar_arm_tip_f32_rescue(q1, q2, l1, l2, p);
+            if (r_ >= 0)
+                return r_;
         }
 #endif
     }
@@ -250,13 +285,6 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_f32(
         p[0] = l1*cosf(q1) + l2*cosf(x0);
         p[1] = l1*sinf(q1) + l2*sinf(x0);
     }
-#if RIGIDSYM_C_RESCALE_F
-    if (rs_e0) {    /* the outputs back to the inputs' scale (rounded once, or inf) */
-        p[0] = ldexpf(p[0], 1 * rs_e0);
-        p[1] = ldexpf(p[1], 1 * rs_e0);
-        finite += ((p[0] - p[0]) + (p[1] - p[1]));
-    }
-#endif
     /* no division or root, and every output bounded by 2^32 for inputs of
      * ordinary magnitude (|x| < 2^31): only an extreme or non-finite input can make an
      * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN
@@ -368,6 +396,62 @@ static int rigidsym_c_planar_arm_tip_with_jacobians_wide(
 }
 #endif
 
+
+#if RIGIDSYM_C_RESCALE_D
+/* rigidsym_c_planar_arm_tip_with_jacobians at extreme inputs (RIGIDSYM_C_EXTREME_INPUT, finite): the status and
+ * outputs of the rescue below, or -1 where it cannot take the sample (the caller then goes
+ * on as without it). Kept out of the scalar function, so that its fast path stays a leaf. */
+static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_with_jacobians_rescue(
+    double q1,
+    double q2,
+    double l1,
+    double l2,
+    double p[2],
+    double p_D_q1[2],
+    double p_D_q2[2],
+    double p_D_l1[2],
+    double p_D_l2[2])
+{
+    int status;
+    double finite;
+    /* every output is homogeneous in the arguments of each step below: scale them
+     * by the power of two 2^-e that brings their largest component into [1/2, 1)
+     * (exact), evaluate, scale the outputs back by 2^(e d) (homogeneous.py); only
+     * when every component is then of ordinary magnitude (else the flag stays) */
+    int still_ = 0;
+    int rs_e0 = 0;
+    double rs_l1;
+    double rs_l2;
+    {
+        double m_ = 0.0;
+        m_ = fabs(l1) > m_ ? fabs(l1) : m_;
+        m_ = fabs(l2) > m_ ? fabs(l2) : m_;
+        if (m_ > 0.0)
+            (void)frexp(m_, &rs_e0);
+        rs_l1 = ldexp(l1, -rs_e0);
+        still_ |= rigidsym_c_extreme_d(&rs_l1, 1);
+        rs_l2 = ldexp(l2, -rs_e0);
+        still_ |= rigidsym_c_extreme_d(&rs_l2, 1);
+    }
+    still_ |= rigidsym_c_extreme_d(&q1, 1);
+    still_ |= rigidsym_c_extreme_d(&q2, 1);
+    if (!still_) {  /* every input now ordinary: the function itself, scaled back */
+        status = rigidsym_c_planar_arm_tip_with_jacobians(q1, q2, rs_l1, rs_l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
+        p[0] = ldexp(p[0], 1 * rs_e0);
+        p[1] = ldexp(p[1], 1 * rs_e0);
+        p_D_q1[0] = ldexp(p_D_q1[0], 1 * rs_e0);
+        p_D_q1[1] = ldexp(p_D_q1[1], 1 * rs_e0);
+        p_D_q2[0] = ldexp(p_D_q2[0], 1 * rs_e0);
+        p_D_q2[1] = ldexp(p_D_q2[1], 1 * rs_e0);
+        finite = ((((p[0] - p[0]) + (p[1] - p[1])) + ((p_D_q1[0] - p_D_q1[0]) + ((p_D_q1[1] - p_D_q1[1]) + (p_D_q2[0] - p_D_q2[0])))) + (((p_D_q2[1] - p_D_q2[1]) + (p_D_l1[0] - p_D_l1[0])) + ((p_D_l1[1] - p_D_l1[1]) + ((p_D_l2[0] - p_D_l2[0]) + (p_D_l2[1] - p_D_l2[1])))));
+        if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
+            status |= RIGIDSYM_C_NONFINITE_RESULT;
+        return status;
+    }
+    return -1;
+}
+#endif
+
 RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians(
     double q1,
     double q2,
@@ -378,11 +462,6 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians(
     uint64_t odd = 0;
     int status = 0, singular = 0;
     double finite = 0.0;
-#if RIGIDSYM_C_RESCALE_D
-    int rs_e0 = 0;
-    double rs_l1;
-    double rs_l2;
-#endif
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
     {   /* the range test of every input component, as one loop (it vectorises) */
         const double in_[4] = {
@@ -409,32 +488,10 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians(
             return rigidsym_c_planar_arm_tip_with_jacobians_wide(q1, q2, l1, l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
 #endif
 #if RIGIDSYM_C_RESCALE_D
-        /* every output is homogeneous in the arguments of each step below: scale them
-         * by the power of two 2^-e that brings their largest component into [1/2, 1)
-         * (exact), evaluate, scale the outputs back by 2^(e d) (homogeneous.py); only
-         * when every component is then of ordinary magnitude (else the flag stays) */
-        if (status == RIGIDSYM_C_EXTREME_INPUT) {
-            int still_ = 0;
-            {
-                double m_ = 0.0;
-                m_ = fabs(l1) > m_ ? fabs(l1) : m_;
-                m_ = fabs(l2) > m_ ? fabs(l2) : m_;
-                if (m_ > 0.0)
-                    (void)frexp(m_, &rs_e0);
-                rs_l1 = ldexp(l1, -rs_e0);
-                still_ |= rigidsym_c_extreme_d(&rs_l1, 1);
-                rs_l2 = ldexp(l2, -rs_e0);
-                still_ |= rigidsym_c_extreme_d(&rs_l2, 1);
-            }
-            still_ |= rigidsym_c_extreme_d(&q1, 1);
-            still_ |= rigidsym_c_extreme_d(&q2, 1);
-            if (still_) {
-                rs_e0 = 0;
-            } else {
-                status = 0;
-                l1 = rs_l1;
-                l2 = rs_l2;
-            }
+        if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
+            const int r_ = rigidsym_c_planar_arm_tip_with_jacobians_rescue(q1, q2, l1, l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
+            if (r_ >= 0)
+                return r_;
         }
 #endif
     }
@@ -462,17 +519,6 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians(
         p_D_l2[0] = x2;
         p_D_l2[1] = x6;
     }
-#if RIGIDSYM_C_RESCALE_D
-    if (rs_e0) {    /* the outputs back to the inputs' scale (rounded once, or inf) */
-        p[0] = ldexp(p[0], 1 * rs_e0);
-        p[1] = ldexp(p[1], 1 * rs_e0);
-        p_D_q1[0] = ldexp(p_D_q1[0], 1 * rs_e0);
-        p_D_q1[1] = ldexp(p_D_q1[1], 1 * rs_e0);
-        p_D_q2[0] = ldexp(p_D_q2[0], 1 * rs_e0);
-        p_D_q2[1] = ldexp(p_D_q2[1], 1 * rs_e0);
-        finite += ((((p[0] - p[0]) + (p[1] - p[1])) + ((p_D_q1[0] - p_D_q1[0]) + ((p_D_q1[1] - p_D_q1[1]) + (p_D_q2[0] - p_D_q2[0])))) + (((p_D_q2[1] - p_D_q2[1]) + (p_D_l1[0] - p_D_l1[0])) + ((p_D_l1[1] - p_D_l1[1]) + ((p_D_l2[0] - p_D_l2[0]) + (p_D_l2[1] - p_D_l2[1])))));
-    }
-#endif
     /* no division or root, and every output bounded by 2^102 for inputs of
      * ordinary magnitude (|x| < 2^101): only an extreme or non-finite input can make an
      * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN
@@ -535,6 +581,62 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians_batch(
     return all_;
 }
 
+
+#if RIGIDSYM_C_RESCALE_F
+/* rigidsym_c_planar_arm_tip_with_jacobians_f32 at extreme inputs (RIGIDSYM_C_EXTREME_INPUT, finite): the status and
+ * outputs of the rescue below, or -1 where it cannot take the sample (the caller then goes
+ * on as without it). Kept out of the scalar function, so that its fast path stays a leaf. */
+static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_with_jacobians_f32_rescue(
+    float q1,
+    float q2,
+    float l1,
+    float l2,
+    float p[2],
+    float p_D_q1[2],
+    float p_D_q2[2],
+    float p_D_l1[2],
+    float p_D_l2[2])
+{
+    int status;
+    float finite;
+    /* every output is homogeneous in the arguments of each step below: scale them
+     * by the power of two 2^-e that brings their largest component into [1/2, 1)
+     * (exact), evaluate, scale the outputs back by 2^(e d) (homogeneous.py); only
+     * when every component is then of ordinary magnitude (else the flag stays) */
+    int still_ = 0;
+    int rs_e0 = 0;
+    float rs_l1;
+    float rs_l2;
+    {
+        float m_ = 0.0f;
+        m_ = fabsf(l1) > m_ ? fabsf(l1) : m_;
+        m_ = fabsf(l2) > m_ ? fabsf(l2) : m_;
+        if (m_ > 0.0f)
+            (void)frexpf(m_, &rs_e0);
+        rs_l1 = ldexpf(l1, -rs_e0);
+        still_ |= rigidsym_c_extreme_f(&rs_l1, 1);
+        rs_l2 = ldexpf(l2, -rs_e0);
+        still_ |= rigidsym_c_extreme_f(&rs_l2, 1);
+    }
+    still_ |= rigidsym_c_extreme_f(&q1, 1);
+    still_ |= rigidsym_c_extreme_f(&q2, 1);
+    if (!still_) {  /* every input now ordinary: the function itself, scaled back */
+        status = rigidsym_c_planar_arm_tip_with_jacobians_f32(q1, q2, rs_l1, rs_l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
+        p[0] = ldexpf(p[0], 1 * rs_e0);
+        p[1] = ldexpf(p[1], 1 * rs_e0);
+        p_D_q1[0] = ldexpf(p_D_q1[0], 1 * rs_e0);
+        p_D_q1[1] = ldexpf(p_D_q1[1], 1 * rs_e0);
+        p_D_q2[0] = ldexpf(p_D_q2[0], 1 * rs_e0);
+        p_D_q2[1] = ldexpf(p_D_q2[1], 1 * rs_e0);
+        finite = ((((p[0] - p[0]) + (p[1] - p[1])) + ((p_D_q1[0] - p_D_q1[0]) + ((p_D_q1[1] - p_D_q1[1]) + (p_D_q2[0] - p_D_q2[0])))) + (((p_D_q2[1] - p_D_q2[1]) + (p_D_l1[0] - p_D_l1[0])) + ((p_D_l1[1] - p_D_l1[1]) + ((p_D_l2[0] - p_D_l2[0]) + (p_D_l2[1] - p_D_l2[1])))));
+        if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
+            status |= RIGIDSYM_C_NONFINITE_RESULT;
+        return status;
+    }
+    return -1;
+}
+#endif
+
 RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians_f32(
     float q1,
     float q2,
@@ -545,11 +647,6 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians_f32(
     uint32_t odd = 0;
     int status = 0, singular = 0;
     float finite = 0.0f;
-#if RIGIDSYM_C_RESCALE_F
-    int rs_e0 = 0;
-    float rs_l1;
-    float rs_l2;
-#endif
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
     {   /* the range test of every input component, as one loop (it vectorises) */
         const float in_[4] = {
@@ -572,32 +669,10 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians_f32(
             if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
                 status = RIGIDSYM_C_NONFINITE_INPUT;
 #if RIGIDSYM_C_RESCALE_F
-        /* every output is homogeneous in the arguments of each step below: scale them
-         * by the power of two 2^-e that brings their largest component into [1/2, 1)
-         * (exact), evaluate, scale the outputs back by 2^(e d) (homogeneous.py); only
-         * when every component is then of ordinary magnitude (else the flag stays) */
-        if (status == RIGIDSYM_C_EXTREME_INPUT) {
-            int still_ = 0;
-            {
-                float m_ = 0.0f;
-                m_ = fabsf(l1) > m_ ? fabsf(l1) : m_;
-                m_ = fabsf(l2) > m_ ? fabsf(l2) : m_;
-                if (m_ > 0.0f)
-                    (void)frexpf(m_, &rs_e0);
-                rs_l1 = ldexpf(l1, -rs_e0);
-                still_ |= rigidsym_c_extreme_f(&rs_l1, 1);
-                rs_l2 = ldexpf(l2, -rs_e0);
-                still_ |= rigidsym_c_extreme_f(&rs_l2, 1);
-            }
-            still_ |= rigidsym_c_extreme_f(&q1, 1);
-            still_ |= rigidsym_c_extreme_f(&q2, 1);
-            if (still_) {
-                rs_e0 = 0;
-            } else {
-                status = 0;
-                l1 = rs_l1;
-                l2 = rs_l2;
-            }
+        if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
+            const int r_ = rigidsym_c_planar_arm_tip_with_jacobians_f32_rescue(q1, q2, l1, l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
+            if (r_ >= 0)
+                return r_;
         }
 #endif
     }
@@ -625,17 +700,6 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians_f32(
         p_D_l2[0] = x2;
         p_D_l2[1] = x6;
     }
-#if RIGIDSYM_C_RESCALE_F
-    if (rs_e0) {    /* the outputs back to the inputs' scale (rounded once, or inf) */
-        p[0] = ldexpf(p[0], 1 * rs_e0);
-        p[1] = ldexpf(p[1], 1 * rs_e0);
-        p_D_q1[0] = ldexpf(p_D_q1[0], 1 * rs_e0);
-        p_D_q1[1] = ldexpf(p_D_q1[1], 1 * rs_e0);
-        p_D_q2[0] = ldexpf(p_D_q2[0], 1 * rs_e0);
-        p_D_q2[1] = ldexpf(p_D_q2[1], 1 * rs_e0);
-        finite += ((((p[0] - p[0]) + (p[1] - p[1])) + ((p_D_q1[0] - p_D_q1[0]) + ((p_D_q1[1] - p_D_q1[1]) + (p_D_q2[0] - p_D_q2[0])))) + (((p_D_q2[1] - p_D_q2[1]) + (p_D_l1[0] - p_D_l1[0])) + ((p_D_l1[1] - p_D_l1[1]) + ((p_D_l2[0] - p_D_l2[0]) + (p_D_l2[1] - p_D_l2[1])))));
-    }
-#endif
     /* no division or root, and every output bounded by 2^32 for inputs of
      * ordinary magnitude (|x| < 2^31): only an extreme or non-finite input can make an
      * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN

@@ -60,6 +60,7 @@ static int rigidsym_c_quaternion_rotation_wide(
 }
 #endif
 
+
 RIGIDSYM_C_API int rigidsym_c_quaternion_rotation(
     const double q[4],
     double Q[9])
@@ -162,6 +163,7 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_batch(
     }
     return all_;
 }
+
 
 RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_f32(
     const float q[4],
@@ -393,6 +395,7 @@ static int rigidsym_c_quaternion_rotation_with_jacobians_wide(
 }
 #endif
 
+
 RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_with_jacobians(
     const double q[4],
     double Q[9],    double Q_D_q[36])
@@ -575,6 +578,7 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_with_jacobians_batch(
     }
     return all_;
 }
+
 
 RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_with_jacobians_f32(
     const float q[4],

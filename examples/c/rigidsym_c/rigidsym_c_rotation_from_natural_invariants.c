@@ -70,6 +70,7 @@ static int rigidsym_c_rotation_from_natural_invariants_wide(
 }
 #endif
 
+
 RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants(
     const double e[3],
     double phi,
@@ -183,6 +184,7 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_batch(
     }
     return all_;
 }
+
 
 RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_f32(
     const float e[3],
@@ -442,6 +444,7 @@ static int rigidsym_c_rotation_from_natural_invariants_with_jacobians_wide(
 }
 #endif
 
+
 RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_with_jacobians(
     const double e[3],
     double phi,
@@ -643,6 +646,7 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_with_jacobians_ba
     }
     return all_;
 }
+
 
 RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_with_jacobians_f32(
     const float e[3],
