@@ -37,10 +37,12 @@ class _NotHomogeneous(Exception):
     pass
 
 
-def degree(expr, scaled: set) -> Fraction:
+def degree(expr, scaled: set, env: dict | None = None) -> Fraction | None:
     """The degree of ``expr`` under ``x -> 2^k x`` of the symbols of ``scaled`` (the others
-    fixed); raises ``ValueError`` where homogeneity is not shown."""
-    memo: dict = {}
+    fixed; a symbol of ``env``, a temporary of a program, has the degree given there);
+    None for an expression that is exactly zero; raises ``ValueError`` where homogeneity is
+    not shown."""
+    memo: dict = {s: d for s, d in (env or {}).items()}
     try:
         return _deg(sp.sympify(expr), frozenset(scaled), memo)
     except _NotHomogeneous as exc:
@@ -51,7 +53,9 @@ def _deg(e, S, memo) -> Fraction | None:
     """The degree, or None for an expression that is exactly zero (of every degree)."""
     if e in memo:
         return memo[e]
-    if e.is_Symbol:
+    if hasattr(e, "_eval_rewrite_as_Add"):      # the compensated a b - c d, sum of products
+        d = _deg(e.rewrite(sp.Add), S, memo)
+    elif e.is_Symbol:
         d = Fraction(1) if e in S else Fraction(0)
     elif e.is_Number or e.is_NumberSymbol:
         d = None if e == 0 else Fraction(0)
@@ -76,7 +80,7 @@ def _deg(e, S, memo) -> Fraction | None:
     elif isinstance(e, sp.Abs):
         d = _deg(e.args[0], S, memo)
     elif isinstance(e, sp.Function) and not isinstance(e, sp.Piecewise) and \
-            all(a.is_Number or not (a.free_symbols & S) for a in e.args):
+            all(_deg(a, S, memo) in (None, 0) for a in e.args):
         d = Fraction(0)     # a function of unscaled arguments only
     else:
         raise _NotHomogeneous(type(e).__name__)
@@ -84,30 +88,39 @@ def _deg(e, S, memo) -> Fraction | None:
     return d
 
 
-def rescale_steps(kernel, exprs: list) -> list[dict]:
+def rescale_steps(kernel, program) -> list[dict]:
     """The rescaling of ``kernel`` (a :class:`~rigidsym.codegen.spec.Kernel` without
-    branches), given its flat output expressions ``exprs`` (row-major, outputs in order):
-    ``[{"args": [names], "degrees": [int per output slot]}]``, one step per independent
-    scale: each scalable argument alone where every output is homogeneous in it (it is then
-    normalised on its own), then the others together where every output is homogeneous in
-    them jointly (an argument inside ``sin``, ``cos``, ... is never scaled). ``[]`` where
-    neither holds; an argument in no step keeps its extreme flag."""
+    branches) whose ``program`` (temporaries ``[(symbol, expr)]`` in order and flat
+    ``outputs``, row-major) the C target prints: ``[{"args": [names], "degrees": [int per
+    output slot]}]``, one step per independent scale: each scalable argument alone where
+    every output is homogeneous in it (it is then normalised on its own), then the others
+    together where every output is homogeneous in them jointly (an argument that reaches
+    ``sin``, ``cos``, ... is never scaled). ``[]`` where neither holds; an argument in no
+    step keeps its extreme flag."""
     from rigidsym.codegen.spec import flat_symbols
 
     if kernel.branches:
         return []
     kinds = {a.name: a.kind for a in kernel.args}
+    temps = [(t, sp.sympify(x)) for t, x in program.temps]
+    outs = [sp.sympify(x) for x in program.outputs]
+    reach: dict = {}      # temporary -> the input symbols it depends on
+    for t, x in temps:
+        reach[t] = set().union(*(reach.get(v, {v}) for v in x.free_symbols))
     inside: set = set()
-    for x in exprs:
-        for f in sp.sympify(x).atoms(sp.Function):
-            if not isinstance(f, sp.Abs | sp.atan2):
-                inside |= f.free_symbols
+    for x in [x for _, x in temps] + outs:
+        for f in x.atoms(sp.Function):
+            if not isinstance(f, sp.Abs | sp.atan2) and not hasattr(f, "_eval_rewrite_as_Add"):
+                inside |= set().union(*(reach.get(v, {v}) for v in f.free_symbols))
     groups = [(name, set(syms)) for name, syms in flat_symbols(kernel)
               if kinds[name] in SCALABLE and not set(syms) & inside]
 
     def step(names, syms):
+        env: dict = {}
         try:
-            ds = [degree(x, syms) for x in exprs]
+            for t, x in temps:
+                env[t] = degree(x, syms, env)
+            ds = [degree(x, syms, env) for x in outs]
         except ValueError:
             return None
         if any(d is not None and d.denominator != 1 for d in ds):

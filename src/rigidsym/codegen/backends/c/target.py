@@ -30,8 +30,7 @@ import rigidsym
 from rigidsym.codegen.backends.c.homogeneous import rescale_steps
 from rigidsym.codegen.backends.c.printer import DoublePrinter, FloatOnlyPrinter, WidePrinter
 from rigidsym.codegen.cprogram import _balanced, _finite_check, _program_lines
-from rigidsym.codegen.generator import _flatten
-from rigidsym.codegen.spec import Kernel, input_symbols
+from rigidsym.codegen.spec import Kernel
 
 __all__ = ["generate_c", "float_bounds", "TEMPLATES", "LIBRARY", "PREFIX", "STATUS",
            "FLOAT_BOUNDS"]
@@ -251,8 +250,7 @@ def float_bounds(modules=()) -> dict:
 def _kernel_entry(kc, bounds: dict) -> dict:
     k = kc.kernel
     b = bounds.get(k.name)
-    steps = rescale_steps(k, list(_flatten(k, k.build(**input_symbols(k))))) \
-        if len(kc.variants) == 1 else []
+    steps = rescale_steps(k, kc.variants[0].program) if len(kc.variants) == 1 else []
     return {"name": k.name, "summary": k.summary, "formula": k.formula, "ids": list(k.ids),
             "sources": list(k.sources), "singular": k.singular, "hash": kc.hash,
             "ops": kc.ops, "notes": k.notes,
