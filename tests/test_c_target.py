@@ -868,3 +868,34 @@ def check_rescued(lib_, name, dtype, scale, seed):
         return          # (partly) subnormal or at the top: no relative bound there
     assert status == OK, status
     assert np.all(np.abs(got - ref) <= 8 * float(fi.eps) / 2 * mag), (got, ref, mag)
+
+
+@settings(max_examples=20, deadline=None)
+@given(st.lists(st.tuples(st.integers(-3, 3).filter(bool), st.integers(0, 3),
+                          st.integers(0, 3), st.integers(0, 2)), min_size=1, max_size=4),
+       st.booleans())
+def test_homogeneity_degree_is_exact(terms, wrap):
+    """homogeneous.degree on sums of monomials c x^a y^b z^e (x, y scaled; z fixed), and
+    the same under a square root or a sine of z: a degree is claimed exactly when the terms
+    share one, and then f(2x, 2y, z) = 2^d f(x, y, z) holds symbolically."""
+    import sympy as sp
+
+    from rigidsym.codegen.backends.c.homogeneous import degree
+
+    x, y, z = sp.symbols("x y z", positive=True)
+    poly = sp.expand(sum(c * x**a * y**b * z**e for c, a, b, e in terms))
+    degs = {a + b for a, b, _ in sp.Poly(poly, x, y, z).monoms()} if poly != 0 else set()
+    f = sp.sqrt(poly**2) * sp.sin(z) if wrap else poly
+    try:
+        d = degree(f, {x, y})
+    except ValueError:
+        assert len(degs) > 1
+        return
+    assert len(degs) <= 1
+    if d is not None:
+        at = {x: sp.Rational(3, 7), y: sp.Rational(-5, 3), z: sp.Rational(2, 9)}
+        scaled = f.subs({x: 2 * x, y: 2 * y}, simultaneous=True).subs(at)
+        want = (2**d * f).subs(at)
+        assert abs(sp.N(scaled - want, 60)) <= 1e-50 * (1 + abs(sp.N(want, 60)))
+    with pytest.raises(ValueError):
+        degree(sp.sin(x) + f, {x, y})
