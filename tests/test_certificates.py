@@ -10,6 +10,8 @@ from pathlib import Path
 
 import _certtamper as certtamper
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from rigidsym.cli import main
 
@@ -130,9 +132,10 @@ def test_whole_chapter_certified_and_tampering_rejected(tmp_path):
 
 #: identities issue 49 asks Coq to check: A^T A and its inverse (3.13, 3.16), a
 #: Rodrigues-form rotation (3.1: relative position rotated by Q = e e^T + cos(phi)(1 - e e^T)
-#: + sin(phi) E), Steiner's 3.133a and 3.147. (3.14 and 3.15 run past 240 s of coqc here:
+#: + sin(phi) E), Steiner's 3.133a and 3.147, and a rotation along a motion (3.99: the
+#: rotation's hypotheses and their derivatives). (3.14 and 3.15 run past 240 s of coqc here:
 #: field's side conditions on their large divisors; docs/certificates.md.)
-COQ_IDS = ["3.13", "3.16", "3.1", "3.133a", "3.147"]
+COQ_IDS = ["3.13", "3.16", "3.1", "3.133a", "3.147", "3.99"]
 
 
 @pytest.mark.slow
@@ -157,3 +160,108 @@ def test_coq_proves_cofactor_certificates(eq_id):
     assert ok, msg
     if eq_id == "3.13":  # Coq rejects a wrong cofactor too
         assert not prove(certtamper.altered_cofactor(cert), timeout=600)[0]
+
+
+#: ids whose export depended on PYTHONHASHSEED before the atoms, points and book names were
+#: written in a fixed order (sympy's traversal named the atoms in a hash-dependent order)
+HASH_IDS = ["3.59", "3.96e"]
+
+_EXPORT = """
+import hashlib, json, sys
+from rigidsym.checking.certificates import certificate
+from rigidsym.checking.deciding.registry import REGISTRY, book_ids, load_all
+load_all()
+for i in sys.argv[1:] or book_ids():
+    text = json.dumps(certificate(i, REGISTRY[i].expected), indent=1)
+    print(i, hashlib.sha256(text.encode()).hexdigest())
+"""
+
+
+def _export_digests(hashseed: str, ids: list[str]) -> str:
+    import os
+    import subprocess
+
+    env = {**os.environ, "PYTHONHASHSEED": hashseed}
+    proc = subprocess.run([sys.executable, "-c", _EXPORT, *ids], capture_output=True,
+                          text=True, env=env, check=True, timeout=1200)
+    return proc.stdout
+
+
+def test_export_is_byte_reproducible_across_hash_seeds():
+    """Two processes with different PYTHONHASHSEED write the same bytes (the ids whose
+    atom groups used to come out in a hash-dependent order)."""
+    a, b = _export_digests("1", HASH_IDS), _export_digests("2", HASH_IDS)
+    assert len(a.splitlines()) == len(HASH_IDS) and a == b
+
+
+@pytest.mark.slow
+def test_whole_chapter_export_is_byte_reproducible():
+    """Every id of the chapter: the same bytes under two PYTHONHASHSEEDs."""
+    a, b = _export_digests("3", []), _export_digests("4", [])
+    assert len(a.splitlines()) == 181 and a == b, \
+        [x for x, y in zip(a.splitlines(), b.splitlines(), strict=False) if x != y]
+
+
+def test_reports_say_how_each_verdict_is_certified(tmp_path, capsys):
+    """rigidsym report --certificates: the Markdown and the HTML entry of each id name its
+    certificate, each relation's evidence (cofactors; counterexample) and certcheck's
+    re-check; a certificate certcheck rejects is shown as rejected, not as certified."""
+    from rigidsym.checking.deciding.registry import load_all
+    from rigidsym.checking.runner import run_checks
+    from rigidsym.report.html import to_html
+    from rigidsym.report.markdown import to_markdown
+    from rigidsym.report.user import certified
+
+    load_all()
+    results = run_checks(["3.13", "3.96e"], progress=False, expanded=False)
+    fields = certified(results, tmp_path)
+    assert "certcheck re-checked 2 of 2" in capsys.readouterr().err
+    md, page = to_markdown(results, certified=fields), to_html(results, certified=fields)
+    for text in (md, page):
+        assert "3.13.json (1 relation: 1 by cofactors); re-checked by certcheck" in \
+            text.replace("`", ""), text
+        assert ("3.96e.json (2 relations: 1 an exact counterexample, 1 by cofactors); "
+                "re-checked by certcheck") in text.replace("`", "")
+    assert "Certificate" not in to_markdown(results)  # without --certificates: nothing
+    fields["3.13"]["rechecked"] = False
+    assert "certcheck REJECTED it" in to_markdown(results, certified=fields)
+
+
+@settings(max_examples=15, deadline=None)
+@given(st.lists(st.integers(-3, 3), min_size=14, max_size=14), st.integers(0, 13),
+       st.integers(1, 3))
+def test_rotation_chain_reduces_exactly_the_ideal(coeffs, where, off):
+    """cofrot's triangular set of a rotation along a motion (jets to order 1): a
+    combination sum a_i h_i of the checker's 14 hypotheses (7 constraints, their first
+    derivatives; a_i small polynomials in the entries and jets) reduces to zero, with
+    cofactors that give it back exactly (mult f = sum mu_i h_i); adding a non-zero
+    constant leaves a non-zero remainder."""
+    import flint
+
+    from rigidsym.checking import cofrot
+    from rigidsym.checking.cofactors import _dpoly
+
+    class R:  # the ring of cofactors._Ring: names, index, var, one, zero, gens
+        names = [f"Q_{r}{c}" + "'" * k for k in range(2) for r in (1, 2, 3) for c in (1, 2, 3)]
+        index = {n: i for i, n in enumerate(names)}
+        ctx = flint.fmpq_mpoly_ctx.get([f"x{i}" for i in range(18)], "lex")
+        gens = ctx.gens()
+        one = ctx.from_dict({(0,) * 18: 1})
+        zero = one - one
+        var = staticmethod(lambda n: R.gens[R.index[n]])
+
+    nxt = {i: i + 9 for i in range(9)}
+    names = R.names[:9]
+    H = cofrot.hypotheses(R, names, False)
+    hyps = [H[i // 2] if i % 2 == 0 else _dpoly(H[i // 2], R, nxt) for i in range(14)]
+    f = sum((c * (R.gens[(i + where) % 18] + off) * h
+             for i, (c, h) in enumerate(zip(coeffs, hyps, strict=True))), R.zero)
+    for extra, zero in ((R.zero, True), (R.one * off, False)):
+        mus: dict = {}
+        N, mult = cofrot.pseudo_reduce(f + extra, R, cofrot.rotation_chain(R, names, H),
+                                       names, 1, lambda p: _dpoly(p, R, nxt), mus, R.one, "Q")
+        assert N.is_zero() == zero
+        if zero:
+            back = sum((mus.get(("Q", i // 2, i % 2), R.zero) * h
+                        for i, h in enumerate(hyps)), R.zero)
+            assert mult * f == back

@@ -40,7 +40,7 @@ def test_ex3_7_parallel_moments_give_both_mirror_lines():
                         s.answers[f"p_star{tag}"])
 
 
-@pytest.mark.slow      # an exact piecewise solve: 6 s of CPU, minutes on a loaded machine
+# default since 3.12's parts are integrated once in a symbolic a and h: about 2 s of CPU
 def test_ex3_12_cut_through_the_top_face_gives_both_parts():
     s = ex.solve("ex3.12", a="1/40", h="1/40")
     assert s.status == "solved" and s.checked

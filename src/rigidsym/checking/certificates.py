@@ -74,7 +74,7 @@ def _atom_point(pr: _Printer, plan, pt: dict) -> dict:
         point[pr.atom(base) + "'" * k] = str(Fraction(str(v)))
     for a, (tau, M) in plan.angles.items():
         angles[pr.atom(a)] = {"M": int(M), "tan": str(pt[tau])}
-    return {"point": point, "angles": angles}
+    return {"point": dict(sorted(point.items())), "angles": dict(sorted(angles.items()))}
 
 
 def _candidate_points(pr: _Printer, sides: list, seed: int, n: int = 6) -> list:
@@ -192,12 +192,14 @@ def certificate(eq_id: str, verdict: str, members: list[dict] | None = None,
             except Unsupported as exc:
                 raise Unprintable(str(exc)) from None
         rels.append(_relation(pr, r.label, role, lhs, rhs, ev))
-    atoms = list(pr.groups.values())
+    # the groups in a fixed order (their first naming follows sympy's traversal, which
+    # differs across PYTHONHASHSEED): the same statement gives the same bytes
+    atoms = sorted(pr.groups.values(), key=lambda g: g["group"])
     if cofactors:
         _add_cofactors(pr, rels, sides, atoms, seed)
     return {"format": FORMAT, "version": VERSION, "id": eq_id, "title": eq.title,
             "verdict": verdict, "book_latex": eq.latex or "", "atoms": atoms,
-            "book_names": pr.book, "let": pr.lets, "relations": rels}
+            "book_names": dict(sorted(pr.book.items())), "let": pr.lets, "relations": rels}
 
 
 def _add_cofactors(pr: _Printer, rels: list, sides: list, atoms: list, seed: int) -> None:

@@ -9,11 +9,11 @@ constrained group after another (their variables are disjoint):
   k-th time derivative of ``|x|^2 - 1`` is linear in ``x_last^(k)`` with coefficient
   ``2 x_last``, so ``x_last^(k)`` is eliminated by a pseudo-remainder (``D`` gains a power of
   ``x_last``); then ``x_last^2 = 1 - sum of the other squares`` (a monic remainder);
-- an angle: ``sin^2 = 1 - cos^2`` of ``angle / M`` (monic).
+- an angle: ``sin^2 = 1 - cos^2`` of ``angle / M`` (monic);
+- a rotation or a transform: the triangular set of :mod:`rigidsym.checking.cofrot`.
 
-Rotations and transforms are left to the re-computation certificate (their ideal is not
-triangular in the entries), and so are statements with a bare angle or ``pi`` (a point where
-``D`` is not zero would need a transcendental coordinate). The hypotheses' order is the
+A bare angle or ``pi`` is left to the re-computation certificate (a point where ``D`` is not
+zero would need a transcendental coordinate). The hypotheses' order is the
 checker's (``certcheck.check``: groups in the certificate's order, each constraint of the
 kind with its time derivatives 0 ... K, then the angles' ``cos^2 + sin^2 - 1``).
 """
@@ -28,16 +28,25 @@ import flint
 import sympy as sp
 from sympy.core.function import AppliedUndef
 
+from rigidsym.checking import cofrot
 from rigidsym.checking.deciding.explicit import _entries
 
-__all__ = ["NoCofactors", "cofactor_evidence", "TERMS_LIMIT"]
+__all__ = ["NoCofactors", "cofactor_evidence", "TERMS_LIMIT", "CHARS_LIMIT"]
 
 #: past this many terms in a numerator or cofactor the certificate stays a re-computation
 #: one (a file a referee can still open)
 TERMS_LIMIT = 20_000
+#: past this many characters of a relation's cofactors, too (a rotation along a motion
+#: reaches megabytes, which certcheck's re-check would take minutes and gigabytes over)
+CHARS_LIMIT = 200_000
 #: CPU seconds per relation; past it, a re-computation certificate (the method recorded does
 #: not depend on the machine's load, as CPU time is counted)
 SECONDS = 5.0
+
+
+_UNITS = ("unit", "unit4")
+#: kinds reduced by a triangular set of :mod:`rigidsym.checking.cofrot`: their hypotheses
+_CHAINS = {"rotation": 7, "transform": 11}
 
 
 class NoCofactors(Exception):
@@ -142,38 +151,14 @@ def _dpoly(p, R: _Ring, nxt: dict):
     return out
 
 
-def _by_powers(p, i: int) -> dict:
-    """``p`` as ``{k: coefficient of x_i^k}``."""
-    out: dict = {}
-    ctx = p.context()
-    for exps, c in p.to_dict().items():
-        k = exps[i]
-        e = list(exps)
-        e[i] = 0
-        out[k] = out.get(k, ctx.from_dict({})) + ctx.from_dict({tuple(e): c})
-    return out
-
-
 def _rem_square(N, i: int, s):
     """``N`` modulo ``x_i^2 - s`` (``s`` free of ``x_i``): a remainder of degree < 2 in ``x_i``."""
-    parts = _by_powers(N, i)
+    parts = cofrot._by_powers(N, i)
     x = N.context().gens()[i]
     out = N.context().from_dict({})
     for k, a in parts.items():
         out = out + a * s ** (k // 2) * (x if k % 2 else 1)
     return out
-
-
-def _prem_linear(N, i: int, c, d):
-    """``(m, r)`` with ``c^m N = q (c x_i + d) + r``, ``r`` free of ``x_i``."""
-    if N.is_zero():
-        return 0, N
-    parts = _by_powers(N, i)
-    m = max(parts)
-    out = N.context().from_dict({})
-    for k, a in parts.items():
-        out = out + a * (-d) ** k * c ** (m - k)
-    return m, out
 
 
 def _reduce_group(N, R: _Ring, g: dict, order: int, nxt: dict, mus: dict, mult):
@@ -189,7 +174,7 @@ def _reduce_group(N, R: _Ring, g: dict, order: int, nxt: dict, mus: dict, mult):
         gk = gs[k]
         c = gk.derivative(i)
         d = gk - c * R.gens[i]
-        m, r = _prem_linear(N, i, c, d)
+        m, r = cofrot._prem_linear(N, i, c, d)
         q, rest = divmod(c**m * N - r, gk)
         if not rest.is_zero():
             raise NoCofactors("a pseudo-division left a remainder")
@@ -255,9 +240,13 @@ def cofactor_evidence(lhs, rhs, atoms: list, atom_name, M: dict, points: list) -
     nxt_i = {R.index[a]: R.index[b] for a, b in nxt.items()}
     unit = _unit_of(R, atom_name, M)
     memo: dict = {}
-    hyps = [(g["group"], k) for g in atoms  # the checker's order
-            if g["kind"] in ("unit", "unit4") and g["group"] in order
-            for k in range(order[g["group"]] + 1)] + [("angle", a) for a in angle_names]
+    hyps = []  # the checker's order
+    for g in atoms:
+        K = order.get(g["group"]) if g["kind"] != "free" else None
+        if K is not None:
+            hyps += [(g["group"], k) for k in range(K + 1)] if g["kind"] in _UNITS else \
+                [(g["group"], h, k) for h in range(_CHAINS[g["kind"]]) for k in range(K + 1)]
+    hyps += [("angle", a) for a in angle_names]
     entries = []
     t0 = time.process_time()
     for a, b in zip(L, Rh, strict=True):
@@ -265,7 +254,8 @@ def cofactor_evidence(lhs, rhs, atoms: list, atom_name, M: dict, points: list) -
             raise NoCofactors(f"over {SECONDS} s of CPU")
         ln = _convert(sp.sympify(a), R, atom_name, unit, memo)
         rn = _convert(sp.sympify(b), R, atom_name, unit, memo)
-        D, mus = _entry_cofactors(ln, rn, R, atoms, order, nxt_i, angle_names, M)
+        D, mus = _entry_cofactors(ln, rn, R, atoms, order, nxt_i, angle_names, M,
+                                  t0 + SECONDS)
         entries.append((D, [mus.get(k) for k in hyps]))
     free = {n for g in atoms if g["kind"] == "free" for n in g["names"]}
     divisors = [D for D, _ in entries] + memo.get(None, [])
@@ -275,10 +265,11 @@ def cofactor_evidence(lhs, rhs, atoms: list, atom_name, M: dict, points: list) -
             break
     else:
         raise NoCofactors("no candidate point where every denominator is non-zero")
-    return {"type": "cofactors",
-            "entries": [{"denominator": R.text(D),
-                         "cofactors": ["0" if m is None else R.text(m) for m in mus]}
-                        for D, mus in entries], **point}
+    out = [{"denominator": R.text(D), "cofactors": ["0" if m is None else R.text(m)
+                                                   for m in mus]} for D, mus in entries]
+    if sum(len(m) for e in out for m in e["cofactors"]) > CHARS_LIMIT:
+        raise NoCofactors(f"cofactors of more than {CHARS_LIMIT} characters")
+    return {"type": "cofactors", "entries": out, **point}
 
 
 def _layout(exprs: list, atoms: list, atom_name, M: dict) -> tuple:
@@ -301,7 +292,7 @@ def _layout(exprs: list, atoms: list, atom_name, M: dict) -> tuple:
             continue
         if not use:
             continue
-        if g["kind"] not in ("unit", "unit4", "free"):
+        if g["kind"] not in (*_UNITS, *_CHAINS, "free"):
             raise NoCofactors(f"a {g['kind']} (no triangular set in its entries here)")
         K = max(use) if g["timed"] else 0
         order[g["group"]] = K
@@ -311,7 +302,7 @@ def _layout(exprs: list, atoms: list, atom_name, M: dict) -> tuple:
                     continue
                 names.append(n + "'" * k)
     for g in atoms:
-        if g["kind"] in ("unit", "unit4") and g["group"] in order:
+        if g["kind"] in (*_UNITS, *_CHAINS) and g["group"] in order:
             K = order[g["group"]]
             for k in range(K):
                 for n in g["names"]:
@@ -349,15 +340,25 @@ def _unit_of(R: _Ring, atom_name, M: dict):
 
 
 def _entry_cofactors(ln, rn, R: _Ring, atoms: list, order: dict, nxt_i: dict,
-                     angle_names: list, M: dict) -> tuple:
+                     angle_names: list, M: dict, deadline: float) -> tuple:
     """``(D, {hypothesis: cofactor})`` of one entry ``ln = rn`` (each ``(num, den)`` over
     the ring); :class:`NoCofactors` for a non-zero remainder or a size past the limit."""
     N, Q = _reduce((ln[0] * rn[1] - rn[0] * ln[1], ln[1] * rn[1]))
     mus: dict = {}
     mult = R.one
     for g in atoms:
-        if g["kind"] in ("unit", "unit4") and g["group"] in order:
+        if g["kind"] in _UNITS and g["group"] in order:
             N, mult = _reduce_group(N, R, g, order[g["group"]], nxt_i, mus, mult)
+        elif g["kind"] in _CHAINS and g["group"] in order:
+            H = cofrot.hypotheses(R, g["names"], g["kind"] == "transform")
+            chain = (cofrot.transform_chain if g["kind"] == "transform" else
+                     cofrot.rotation_chain)(R, g["names"], H)
+            try:
+                N, mult = cofrot.pseudo_reduce(N, R, chain, g["names"], order[g["group"]],
+                                               lambda p: _dpoly(p, R, nxt_i), mus, mult,
+                                               g["group"], (TERMS_LIMIT, deadline))
+            except cofrot.ChainRemainder as exc:
+                raise NoCofactors(str(exc)) from None
     for a_ in angle_names:
         C, S = R.var(f"cos({a_}/{M[a_]})"), R.var(f"sin({a_}/{M[a_]})")
         h = C**2 + S**2 - R.one

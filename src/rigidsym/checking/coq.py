@@ -96,9 +96,7 @@ def _hypotheses(cert: dict, rel: dict) -> list[tuple[str, str]]:
     names = set(re.findall(r"[A-Za-z][A-Za-z0-9_.]*'*", text))
     out = []
     for g in cert["atoms"]:
-        if g["kind"] not in ("unit", "unit4"):
-            if g["kind"] in ("rotation", "transform") and names & set(g["names"]):
-                raise NoProof(f"a {g['kind']}")
+        if g["kind"] not in ("unit", "unit4", "rotation", "transform"):
             continue
         used = [n for n in names if n.rstrip("'") in g["names"]]
         if not used:
@@ -106,17 +104,29 @@ def _hypotheses(cert: dict, rel: dict) -> list[tuple[str, str]]:
         order = max(len(n) - len(n.rstrip("'")) for n in used) if g["timed"] else 0
         jets = {(n, k): sp.Symbol(_ident(n + "'" * k)) for n in g["names"]
                 for k in range(order + 2)}
-        h = sum(jets[(n, 0)] ** 2 for n in g["names"]) - 1
-        for k in range(order + 1):
-            out.append((_poly(sp.expand(h)), f"{g['group']} unit, derivative {k}"))
-            h = sum(sp.diff(h, jets[(n, j)]) * jets[(n, j + 1)]
-                    for n in g["names"] for j in range(order + 1))
+        for i, h in enumerate(_constraints(g["kind"], [jets[(n, 0)] for n in g["names"]])):
+            for k in range(order + 1):
+                out.append((_poly(sp.expand(h)), f"{g['group']} {g['kind']} constraint "
+                                                 f"{i + 1}, derivative {k}"))
+                h = sum(sp.diff(h, jets[(n, j)]) * jets[(n, j + 1)]
+                        for n in g["names"] for j in range(order + 1))
     for g in cert["atoms"]:
         if g["kind"] in ("angle", "angle_pi") and re.search(
                 rf"(cos|sin)\({re.escape(g['names'][0])}(/1)?\)", text):
             a = _ident(g["names"][0])
             out.append((f"(cos {a})^2 + (sin {a})^2 - 1", f"{g['group']} angle"))
     return out
+
+
+def _constraints(kind: str, X: list) -> list:
+    """certcheck's constraint polynomials of a kind (``certcheck.kinds.constraints``)."""
+    if kind in ("unit", "unit4"):
+        return [sum(x**2 for x in X) - 1]
+    M = [X[i] for i in (0, 1, 2, 4, 5, 6, 8, 9, 10)] if kind == "transform" else X
+    out = [sum(M[3 * k + i] * M[3 * k + j] for k in range(3)) - int(i == j)
+           for i in range(3) for j in range(i, 3)]
+    out.append(sp.Matrix(3, 3, M).det() - 1)
+    return out + ([X[12], X[13], X[14], X[15] - 1] if kind == "transform" else [])
 
 
 def _poly(p) -> str:

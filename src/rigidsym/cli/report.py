@@ -15,7 +15,9 @@ HELP = "write the report: HTML, Markdown, JSON, the exercises"
 EXAMPLES = """\
   rigidsym report                          into generated/report/ (a source tree) or
                                            ./rigidsym-report/ (~1 min 15 s on 2 cores)
-  rigidsym report --module my_eqs.py --out notes/   your own equations' report"""
+  rigidsym report --module my_eqs.py --out notes/   your own equations' report
+  rigidsym report --certificates certs     each entry says how its verdict is certified
+                                           and whether certcheck re-checked it"""
 
 
 def add_arguments(r) -> None:
@@ -30,6 +32,11 @@ def add_arguments(r) -> None:
     r.add_argument("--no-cache", action="store_true",
                    help="check every id again; neither read nor write the verdict cache "
                         "(default: off, the cache is used)")
+    r.add_argument("--certificates", metavar="DIR", default=None,
+                   help="write each verdict's certificate into DIR, re-check them with "
+                        "certcheck, and say in the Markdown and HTML how each verdict is "
+                        "certified (docs/certificates.md; default: none, ~2 min more for the "
+                        "chapter)")
     r.add_argument("--module", action="append", metavar="PATH_OR_DOTTED",
                    help=MODULE_HELP + ": report its ids into --out as <module>.{md,json,html} "
                                       "(default: none, the chapter)")
@@ -50,15 +57,16 @@ def default_report_dir(cwd: Path | None = None) -> Path:
     return here / "rigidsym-report"
 
 
-def _chapter_files(results, full: bool) -> list[tuple[str, object]]:
+def _chapter_files(results, full: bool, certified: dict | None = None
+                   ) -> list[tuple[str, object]]:
     """``(file name, function making its text)`` of the chapter report, in writing order."""
     from rigidsym.report.html import to_html
     from rigidsym.report.markdown import to_markdown
     from rigidsym.report.record import to_json
 
-    files = [("chapter3.md", lambda: to_markdown(results)),
+    files = [("chapter3.md", lambda: to_markdown(results, certified=certified)),
              ("chapter3.json", lambda: to_json(results, timings=False)),
-             ("chapter3.html", lambda: to_html(results))]
+             ("chapter3.html", lambda: to_html(results, certified=certified))]
     if full:  # expanded values: never over the lean, committed files
         files += [("chapter3-full.md", lambda: to_markdown(results, full=True)),
                   ("chapter3-full.json", lambda: to_json(results, timings=False, full=True))]
@@ -87,7 +95,8 @@ def run(args) -> int:
     if args.module:  # a user module's report: titled by it, files named after it
         from rigidsym.report.user import write_user_report
         return write_user_report(args.module, Path(args.out) if args.out else Path.cwd(),
-                                 args.jobs, cache=not args.no_cache)
+                                 args.jobs, cache=not args.no_cache,
+                                 certificates=args.certificates)
     from rigidsym._progress import Reporter
     from rigidsym.cli.exercise import write_report as write_exercises
     from rigidsym.report.record import transcription_extra
@@ -99,7 +108,14 @@ def run(args) -> int:
             ph.finish(f"{len(ids)} ids")
         results = run_checks(ids, jobs=args.jobs, progress=True, cache=not args.no_cache,
                              reporter=rep, expanded=args.full, extra=transcription_extra())
-        files = _chapter_files(results, args.full)
+        cert = None
+        if args.certificates:
+            from rigidsym.report.user import certified
+
+            with rep.phase("writing and re-checking the certificates") as ph:
+                cert = certified(results, args.certificates)
+                ph.finish(f"{len(cert)} ids")
+        files = _chapter_files(results, args.full, cert)
         written = []
         with rep.phase(f"rendering and writing {len(files)} files of the chapter report",
                        total=len(files)) as ph:

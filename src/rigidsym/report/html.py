@@ -22,7 +22,7 @@ from rigidsym.printing import notation
 from rigidsym.printing.labels import label_text, latex_spans, latex_text
 from rigidsym.report.counterexample import html_view, sides_of, whose_symbols
 from rigidsym.report.glossary import html_entries
-from rigidsym.report.markdown import anchor, sections, undecided_reasons
+from rigidsym.report.markdown import anchor, certificate_words, sections, undecided_reasons
 from rigidsym.report.mathtext import math_or_text
 from rigidsym.report.numeric import numeric_sentence
 from rigidsym.report.record import CITATION, TITLE, cause_line, result_record, summary
@@ -118,7 +118,8 @@ def _view(rec: dict) -> dict:
     return v
 
 
-def to_html(results: list[Outcome], *, title: str = TITLE, source: str | None = None) -> str:
+def to_html(results: list[Outcome], *, title: str = TITLE, source: str | None = None,
+            certified: dict | None = None) -> str:
     """The report as one self-contained HTML page.
 
     Args:
@@ -126,13 +127,17 @@ def to_html(results: list[Outcome], *, title: str = TITLE, source: str | None = 
         title: the page's title (default the chapter's).
         source: where the declarations come from, in words (``"the user module
             notes"``); ``None`` for the book (its citation and the exercises' page).
+        certified: id -> its certificate field, as for
+            :func:`rigidsym.report.markdown.to_markdown`.
 
     Returns:
         HTML text: summary counts, the equations that do not hold (each linking to its
         entry), a table of contents by section, then one entry per equation with the anchor
         ``#eq-<id>``.
     """
-    views = [_view(result_record(r, timings=False)) for r in results]
+    views = [dict(_view(result_record(r, timings=False)),
+                  certificate_text=certificate_words((certified or {}).get(r.id)).replace("`", ""))
+             for r in results]
     s = summary(results)
     return letter_subscripts(_env().get_template("chapter3.html.j2").render(
         causes=cause_line(results) if s["does-not-hold"] else "",

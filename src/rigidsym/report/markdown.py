@@ -96,6 +96,28 @@ def how_checked(rec: dict) -> str:
     return " ".join(x for x in out if x)
 
 
+_EVIDENCE_WORDS = {"cofactors": "by cofactors", "identity": "by re-computation",
+                   "counterexample": "an exact counterexample", "shape": "a shape mismatch",
+                   "statement": "a statement"}
+
+
+def certificate_words(field: dict | None) -> str:
+    """A verdict's certification in one sentence (``""`` without one): its file, each
+    relation's evidence (cofactors, re-computation, counterexample, shapes, statement) and
+    whether certcheck re-checked it; ``field`` as
+    :func:`rigidsym.checking.certificates.certificate_field` gives it."""
+    if field is None:
+        return ""
+    if field["file"] is None:
+        return f"Certificate: none ({field['why']})."
+    ev = field["evidence"]
+    kinds = ", ".join(f"{ev.count(k)} {_EVIDENCE_WORDS.get(k, k)}" for k in dict.fromkeys(ev))
+    state = {True: "re-checked by certcheck", False: "certcheck REJECTED it",
+             None: "not re-checked (certcheck not found)"}[field["rechecked"]]
+    return (f"Certificate `{field['file']}` ({len(ev)} relation{'s' * (len(ev) != 1)}: "
+            f"{kinds}); {state}.")
+
+
 def _entry(rec: dict, full: bool) -> list[str]:
     out = [f'### ({rec["id"]}) {label_text(rec["title"])} <a id="{anchor(rec["id"])}"></a>',
            ""]
@@ -124,6 +146,8 @@ def _entry(rec: dict, full: bool) -> list[str]:
                                   whose_symbols(rec["id"]))
     out += markdown_repairs(rec)
     out += [how_checked(rec), ""]
+    if rec.get("certificate"):
+        out += [certificate_words(rec["certificate"]), ""]
     if full:
         out += ["Transcribed:", "", "```", rec["printed"], "```", "",
                 "Derived from first principles:", "", "```", rec["derived"], "```", ""]
@@ -144,7 +168,7 @@ def _source_paragraph(source: str | None) -> str:
 
 
 def to_markdown(results: list[Outcome], full: bool = False, *, title: str = TITLE,
-                source: str | None = None) -> str:
+                source: str | None = None, certified: dict | None = None) -> str:
     """The report: summary, equations that do not hold, then every equation.
 
     Args:
@@ -153,11 +177,15 @@ def to_markdown(results: list[Outcome], full: bool = False, *, title: str = TITL
         title: the document's title (default the chapter's).
         source: where the declarations come from, in words (``"the user module
             notes"``); ``None`` for the book (its citation and how it was checked).
+        certified: id -> its certificate field (``rigidsym report --certificates``):
+            each entry then says how its verdict is certified and whether certcheck
+            re-checked it; ``None``: nothing on certificates.
 
     Returns:
         Markdown text, deterministic (no timings).
     """
-    recs = [result_record(r, timings=False, full=full) for r in results]
+    recs = [dict(result_record(r, timings=False, full=full),
+                 certificate=(certified or {}).get(r.id)) for r in results]
     s = summary(results)
     out = [f"# {title}", "", _source_paragraph(source), "",
            "| verdict | count |", "|---|---|"]
