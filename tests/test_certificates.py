@@ -239,7 +239,7 @@ def test_rotation_chain_reduces_exactly_the_ideal(coeffs, where, off):
     import flint
 
     from rigidsym.checking import cofrot
-    from rigidsym.checking.cofactors import _dpoly
+    from rigidsym.checking.cofrot import _dpoly
 
     class R:  # the ring of cofactors._Ring: names, index, var, one, zero, gens
         names = [f"Q_{r}{c}" + "'" * k for k in range(2) for r in (1, 2, 3) for c in (1, 2, 3)]
@@ -265,3 +265,33 @@ def test_rotation_chain_reduces_exactly_the_ideal(coeffs, where, off):
             back = sum((mus.get(("Q", i // 2, i % 2), R.zero) * h
                         for i, h in enumerate(hyps)), R.zero)
             assert mult * f == back
+
+
+@settings(max_examples=20, deadline=None)
+@given(st.lists(st.tuples(st.integers(0, 6), st.integers(0, 8), st.integers(-3, 3)),
+                min_size=1, max_size=5), st.integers(1, 4))
+def test_linear_ansatz_finds_combinations_and_nothing_else(terms, off):
+    """cofansatz.linear_combination: for f = sum c * q_v * h_i over a rotation's 7
+    hypotheses and the derived members Q - C(Q), Q Q^T - 1, the cofactors it returns give f
+    back exactly; f + a non-zero constant (not in the ideal: it is off SO(3)) gets none."""
+    import flint
+
+    from rigidsym.checking import cofansatz, cofrot
+
+    class R:
+        names = [f"Q_{r}{c}" for r in (1, 2, 3) for c in (1, 2, 3)]
+        index = {n: i for i, n in enumerate(names)}
+        ctx = flint.fmpq_mpoly_ctx.get([f"x{i}" for i in range(9)], "lex")
+        gens = ctx.gens()
+        one = ctx.from_dict({(0,) * 9: 1})
+        zero = one - one
+        var = staticmethod(lambda n: R.gens[R.index[n]])
+
+    H = cofrot.hypotheses(R, R.names, False)
+    extra = cofrot.derived(R, R.names, False, 0, lambda p: p)
+    gens = H + [G for G, _ in extra]
+    f = sum((c * R.gens[v] * H[i] for i, v, c in terms), R.zero)
+    mus = cofansatz.linear_combination(f, gens, 1, 4000)
+    assert mus is not None and f == sum((m * g for m, g in zip(mus, gens, strict=True)),
+                                        R.zero)
+    assert cofansatz.linear_combination(f + off, gens, 1, 4000) is None

@@ -28,7 +28,7 @@ import flint
 import sympy as sp
 from sympy.core.function import AppliedUndef
 
-from rigidsym.checking import cofrot
+from rigidsym.checking import cofansatz, cofrot
 from rigidsym.checking.deciding.explicit import _entries
 
 __all__ = ["NoCofactors", "cofactor_evidence", "TERMS_LIMIT", "CHARS_LIMIT"]
@@ -131,43 +131,13 @@ def _convert(e, R: _Ring, atom_name, unit, memo):
     return out
 
 
-def _cpow(z, n: int, R: _Ring):
-    """``z ** n`` for ``z = (C, S)`` (a negative ``n``: the conjugate's power)."""
-    if n < 0:
-        re_, im = _cpow(z, -n, R)
-        return (re_, -im)
-    out = (R.one, R.zero)
-    for _ in range(n):
-        out = (out[0] * z[0] - out[1] * z[1], out[0] * z[1] + out[1] * z[0])
-    return out
-
-
-def _dpoly(p, R: _Ring, nxt: dict):
-    out = R.zero
-    for i, j in nxt.items():
-        d = p.derivative(i)
-        if not d.is_zero():
-            out = out + d * R.gens[j]
-    return out
-
-
-def _rem_square(N, i: int, s):
-    """``N`` modulo ``x_i^2 - s`` (``s`` free of ``x_i``): a remainder of degree < 2 in ``x_i``."""
-    parts = cofrot._by_powers(N, i)
-    x = N.context().gens()[i]
-    out = N.context().from_dict({})
-    for k, a in parts.items():
-        out = out + a * s ** (k // 2) * (x if k % 2 else 1)
-    return out
-
-
 def _reduce_group(N, R: _Ring, g: dict, order: int, nxt: dict, mus: dict, mult):
     """Eliminate a unit group's last coordinate and its jets from ``N``; ``(N, mult)``."""
     x = g["names"]
     h = sum((R.var(n) ** 2 for n in x), -R.one)
     gs = [h]
     for _ in range(order):
-        gs.append(_dpoly(gs[-1], R, nxt))
+        gs.append(cofrot._dpoly(gs[-1], R, nxt))
     last = x[-1]
     for k in range(order, 0, -1):
         i = R.index[last + "'" * k]
@@ -184,7 +154,7 @@ def _reduce_group(N, R: _Ring, g: dict, order: int, nxt: dict, mus: dict, mult):
         mus[(g["group"], k)] = q
         N = r
     s = R.one - sum((R.var(n) ** 2 for n in x[:-1]), R.zero)
-    r = _rem_square(N, R.index[last], s)
+    r = cofrot._rem_square(N, R.index[last], s)
     q, rest = divmod(N - r, h)
     if not rest.is_zero():
         raise NoCofactors("a division by the unit constraint left a remainder")
@@ -254,8 +224,8 @@ def cofactor_evidence(lhs, rhs, atoms: list, atom_name, M: dict, points: list) -
             raise NoCofactors(f"over {SECONDS} s of CPU")
         ln = _convert(sp.sympify(a), R, atom_name, unit, memo)
         rn = _convert(sp.sympify(b), R, atom_name, unit, memo)
-        D, mus = _entry_cofactors(ln, rn, R, atoms, order, nxt_i, angle_names, M,
-                                  t0 + SECONDS)
+        D, mus = _ansatz(ln, rn, R, atoms, order, nxt_i, hyps, M) or \
+            _entry_cofactors(ln, rn, R, atoms, order, nxt_i, angle_names, M, t0 + SECONDS)
         entries.append((D, [mus.get(k) for k in hyps]))
     free = {n for g in atoms if g["kind"] == "free" for n in g["names"]}
     divisors = [D for D, _ in entries] + memo.get(None, [])
@@ -332,11 +302,34 @@ def _unit_of(R: _Ring, atom_name, M: dict):
             k = Fraction(int(c.p), int(c.q)) * M[a]
             if k.denominator != 1:
                 raise NoCofactors("an angle coefficient off its M")
-            w = _cpow((R.var(f"cos({a}/{M[a]})"), R.var(f"sin({a}/{M[a]})")), int(k), R)
+            w = cofrot._cpow((R.var(f"cos({a}/{M[a]})"), R.var(f"sin({a}/{M[a]})")), int(k), R)
             z = (z[0] * w[0] - z[1] * w[1], z[0] * w[1] + z[1] * w[0])
         return z
 
     return unit
+
+
+def _ansatz(ln, rn, R: _Ring, atoms: list, order: dict, nxt_i: dict, hyps: list,
+            M: dict):
+    """``(D, {hypothesis: cofactor})`` by :func:`cofansatz.linear_combination` (no
+    multiplier: ``D`` is the entry's denominator) for a relation on a rotation or transform;
+    ``None`` otherwise or when the ansatz finds none."""
+    if not any(g["kind"] in _CHAINS and g["group"] in order for g in atoms):
+        return None
+    N, Q = _reduce((ln[0] * rn[1] - rn[0] * ln[1], ln[1] * rn[1]))
+    d = lambda p: cofrot._dpoly(p, R, nxt_i)  # noqa: E731
+    polys = cofansatz.hypothesis_polys(R, atoms, hyps, M, d, cofrot.hypotheses)
+    extra = [(g["group"], G, cof) for g in atoms if g["kind"] in _CHAINS and g["group"] in order
+             for G, cof in cofrot.derived(R, g["names"], g["kind"] == "transform",
+                                          order[g["group"]], d)]
+    mus = cofansatz.linear_combination(N, polys + [G for _, G, _ in extra], 1, 4000)
+    if mus is None:
+        return None
+    out = dict(zip(hyps, mus[:len(hyps)], strict=True))
+    for (group, _, cof), nu in zip(extra, mus[len(hyps):], strict=True):
+        for (h, j), c in cof.items():  # G = sum c h^(j): nu G in the hypotheses
+            out[(group, h, j)] = out[(group, h, j)] + nu * c
+    return Q, out
 
 
 def _entry_cofactors(ln, rn, R: _Ring, atoms: list, order: dict, nxt_i: dict,
@@ -355,14 +348,14 @@ def _entry_cofactors(ln, rn, R: _Ring, atoms: list, order: dict, nxt_i: dict,
                      cofrot.rotation_chain)(R, g["names"], H)
             try:
                 N, mult = cofrot.pseudo_reduce(N, R, chain, g["names"], order[g["group"]],
-                                               lambda p: _dpoly(p, R, nxt_i), mus, mult,
+                                               lambda p: cofrot._dpoly(p, R, nxt_i), mus, mult,
                                                g["group"], (TERMS_LIMIT, deadline))
             except cofrot.ChainRemainder as exc:
                 raise NoCofactors(str(exc)) from None
     for a_ in angle_names:
         C, S = R.var(f"cos({a_}/{M[a_]})"), R.var(f"sin({a_}/{M[a_]})")
         h = C**2 + S**2 - R.one
-        r = _rem_square(N, R.index[f"sin({a_}/{M[a_]})"], R.one - C**2)
+        r = cofrot._rem_square(N, R.index[f"sin({a_}/{M[a_]})"], R.one - C**2)
         q, rest = divmod(N - r, h)
         if not rest.is_zero():
             raise NoCofactors("a division by cos^2 + sin^2 - 1 left a remainder")

@@ -218,3 +218,82 @@ def _prem(N, T, x: int, budget: tuple[int, float]):
         if len(r) > budget[0] or time.process_time() > budget[1]:
             raise ChainRemainder(f"past the budget ({budget[0]} terms, CPU time)")
     return lc, e, r
+
+
+def _cpow(z, n: int, R):
+    """``z ** n`` for ``z = (C, S)`` (a negative ``n``: the conjugate's power)."""
+    if n < 0:
+        re_, im = _cpow(z, -n, R)
+        return (re_, -im)
+    out = (R.one, R.zero)
+    for _ in range(n):
+        out = (out[0] * z[0] - out[1] * z[1], out[0] * z[1] + out[1] * z[0])
+    return out
+
+
+def _dpoly(p, R, nxt: dict):
+    out = R.zero
+    for i, j in nxt.items():
+        d = p.derivative(i)
+        if not d.is_zero():
+            out = out + d * R.gens[j]
+    return out
+
+
+def _rem_square(N, i: int, s):
+    """``N`` modulo ``x_i^2 - s`` (``s`` free of ``x_i``): a remainder of degree < 2 in ``x_i``."""
+    parts = _by_powers(N, i)
+    x = N.context().gens()[i]
+    out = N.context().from_dict({})
+    for k, a in parts.items():
+        out = out + a * s ** (k // 2) * (x if k % 2 else 1)
+    return out
+
+
+def derived(R, names: list[str], transform: bool, K: int, d) -> list:
+    """More members of a rotation's ideal with their cofactors written out, for the linear
+    ansatz (:mod:`rigidsym.checking.cofansatz`): ``F = Q - C(Q) = -(det Q - 1) Q + C(Q) H``
+    and ``E = Q Q^T - 1 = F Q^T + (det Q - 1) 1`` (``H = Q^T Q - 1``; from ``C(Q) Q^T =
+    det Q``), entry by entry, and their time derivatives up to ``K``: a list of ``(G,
+    {(hypothesis index, j): coefficient})`` with ``G = sum coefficient * h^(j)``."""
+    H = hypotheses(R, names, transform)
+    X = [R.var(n) for n in names]
+    M = [X[i] for i in (0, 1, 2, 4, 5, 6, 8, 9, 10)] if transform else X
+    q = [[M[3 * r + c] for c in range(3)] for r in range(3)]
+    col = [[q[r][c] for r in range(3)] for c in range(3)]
+
+    def cross(a, b):
+        return [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2],
+                a[0] * b[1] - a[1] * b[0]]
+    C = [cross(col[1], col[2]), cross(col[2], col[0]), cross(col[0], col[1])]  # columns
+    hix = {(0, 0): 0, (0, 1): 1, (0, 2): 2, (1, 1): 3, (1, 2): 4, (2, 2): 5}
+    F = [[{6: -q[r][c]} for c in range(3)] for r in range(3)]
+    for r in range(3):
+        for c in range(3):
+            for k in range(3):
+                key = hix[(min(k, c), max(k, c))]
+                F[r][c][key] = F[r][c].get(key, R.zero) + C[k][r]
+    out = []
+    for r in range(3):
+        out.append((q[r][0] - C[0][r], F[r][0]))
+        out.append((q[r][1] - C[1][r], F[r][1]))
+        out.append((q[r][2] - C[2][r], F[r][2]))
+    for i in range(3):
+        for j in range(i, 3):
+            cof: dict = {6: R.one if i == j else R.zero}
+            for c in range(3):
+                for key, v in F[i][c].items():
+                    cof[key] = cof.get(key, R.zero) + v * q[j][c]
+            G = sum((q[i][c] * q[j][c] for c in range(3)), R.zero) - (R.one if i == j else R.zero)
+            out.append((G, cof))
+    for G, cof in out:
+        if G != sum((v * H[h] for h, v in cof.items()), R.zero):
+            raise AssertionError("derived rotation member: its cofactors do not give it")
+    jets = []
+    for G, cof in out:
+        Gs = _derivatives(G, K, d)
+        cs = {h: _derivatives(v, K, d) for h, v in cof.items()}
+        for k in range(K + 1):
+            jets.append((Gs[k], {(h, j): comb(k, j) * cs[h][k - j]
+                                 for h in cs for j in range(k + 1)}))
+    return jets
