@@ -6,6 +6,7 @@ it is being built. Its objects are compiled in parallel, one per source and buil
 x86-64-v2 baseline and x86-64-v3 on x86-64, chosen at import by the module's dispatcher).
 """
 
+import dataclasses
 import importlib.util
 import json
 import sys
@@ -61,6 +62,11 @@ class BuildKernels(build_ext):
     def build_extension(self, ext):
         drv = _driver()
         cfg = drv.configure()
+        if self.editable_mode or self.inplace:
+            # an editable install runs on this machine only: the paths its CPU runs (issue
+            # 54: the x86-64-v2 objects were 38 % of a newcomer's install); the wheel keeps
+            # every path
+            cfg = dataclasses.replace(cfg, paths=drv._paths.host_paths(cfg.paths))
         out = Path(self.get_ext_fullpath(ext.name))
         n = drv.object_count(GENERATED / "c", cfg)
         print(f"rigidsym: compiling {n} objects ({', '.join(p.name for p in cfg.paths)}; "

@@ -430,3 +430,35 @@ def test_the_avx512_path_compiles_only_the_kernels_calling_sin_or_cos(tmp_path):
     # without a path after it, a trig_only path compiles everything
     plan, aliases = _paths.partial_plan((_paths.X86_V4,), srcs, "rigidsym_table.c")
     assert len(plan["v4"]) == len(srcs) and aliases == []
+
+
+@pytest.mark.parametrize("flags, want", [
+    # an AVX-512 machine: the trig-only x86-64-v4 path and x86-64-v3 behind it, no v2
+    ("sse4_2 ssse3 popcnt cx16 avx avx2 fma bmi1 bmi2 f16c movbe abm avx512f avx512bw "
+     "avx512cd avx512dq avx512vl", ["v4", "v3"]),
+    # AVX2 without AVX-512 (many AMD desktops): x86-64-v3 alone
+    ("sse4_2 ssse3 popcnt cx16 avx avx2 fma bmi1 bmi2 f16c movbe abm", ["v3"]),
+    # AVX-512 flags without FMA cannot run x86-64-v4 either (the levels nest)
+    ("sse4_2 ssse3 popcnt cx16 avx avx2 avx512f avx512bw avx512cd avx512dq avx512vl",
+     ["v2"]),
+    # a CPU below x86-64-v2: every path, and the dispatcher refuses at import, naming it
+    ("sse2", ["v4", "v3", "v2"]),
+])
+def test_an_editable_install_compiles_the_paths_its_cpu_runs(flags, want, monkeypatch):
+    """Issue 54: an editable install (setup.py, ``editable_mode``) compiles only the paths
+    this CPU runs, down to one that compiles every kernel: what it imports is then the same
+    path a full build's dispatcher picks on this CPU."""
+    from rigidsym.kernels import _paths
+
+    monkeypatch.delenv("RIGIDSYM_PATHS", raising=False)
+    info = f"processor\t: 0\nflags\t\t: {flags}\n"
+    got = [p.suffix for p in _paths.host_paths(_paths.X86_PATHS, cpuinfo=info)]
+    assert got == want
+    # the full build's choice on this CPU is the first kept path (or none runs at all)
+    runs = [p.suffix for p in _paths.X86_PATHS if _paths._runs(p, set(flags.split()))]
+    assert got[0] == runs[0] if runs else got == [p.suffix for p in _paths.X86_PATHS]
+    monkeypatch.setenv("RIGIDSYM_PATHS", "v3,v2")     # the user's choice wins
+    assert _paths.host_paths(_paths.X86_PATHS, cpuinfo=info) == _paths.X86_PATHS
+    # no flags line (not Linux's cpuinfo): unchanged
+    monkeypatch.delenv("RIGIDSYM_PATHS")
+    assert _paths.host_paths(_paths.X86_PATHS, cpuinfo="model name: x\n") == _paths.X86_PATHS

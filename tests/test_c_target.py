@@ -720,3 +720,182 @@ def test_hard_book_kernels_equal_the_package_kernels(tmp_path):
                   [2.0, 0.5, 0], *[("out", max(1, int(np.prod(o["shape"]))))
                                    for o in m["outputs"]])
     assert s & SINGULAR and all(np.isnan(g).all() for g in got)
+
+
+# -- the float functions' accuracy bound, stated in each header (item 4) --
+
+BOUND = re.compile(r"/\* (\w+) in float arithmetic only.*?Accuracy: each output within "
+                   r"([\d.e+-]+) u \(kappa \+ 1\)", re.S)
+
+
+def stated_bounds(d: Path = KERNELS_DIR) -> dict[str, float]:
+    """``{kernel: the float bound its header states}`` over the headers of ``d``."""
+    out = {}
+    for h in sorted(d.glob("rigidsym_c_*.h")):
+        out.update({k: float(b) for k, b in BOUND.findall(h.read_text(encoding="utf-8"))})
+    return out
+
+
+def test_every_float_function_of_the_example_states_its_bound():
+    """Each kernel of the example (the book's and the module's, with their twins) states a
+    measured bound, none 'not measured', and each within the float32 rule (8 u (kappa+1))."""
+    heads = "".join(h.read_text(encoding="utf-8") for h in KERNELS_DIR.glob("rigidsym_c_*.h"))
+    names = set(re.findall(r"^RIGIDSYM_C_API int rigidsym_c_(\w+)_f32\($", heads, re.M))
+    bounds = stated_bounds()
+    assert names and set(bounds) == names, names ^ set(bounds)
+    assert "not measured" not in heads
+    assert all(0 < b <= 8 for b in bounds.values()), bounds
+
+
+@pytest.mark.slow  # the harness on every kernel of the example: ~20-60 s on a loaded machine
+def test_stated_float_bounds_hold_on_fresh_points(lib):
+    """The accuracy harness (benchmarks/accuracy.py: float32 regimes, arb reference,
+    condition number) on the float functions of the committed example, with seeds the
+    bound was not measured on: the worst err / (u (kappa + 1)) stays within the bound the
+    header states (and is not 0: a header stating 0 would fail)."""
+    sys.path.insert(0, str(REPO / "benchmarks"))
+    import c_float_bounds as CB
+
+    from rigidsym.codegen.usergen import load_user_kernels
+
+    CB.register(load_user_kernels([str(EXAMPLE / "my_kernels.py")])[0])
+    run = CB.runner(lib)
+    for name, bound in stated_bounds().items():
+        measured, rows = CB.worst(run, name, seeds=(11,), n_random=8)
+        assert sum(r.samples for r in rows) >= 8, name
+        assert 0 < measured <= bound, (name, measured, bound)
+
+
+# -- the rescue without a wider type: power-of-two rescaling (item 3) --
+
+@pytest.fixture(scope="module")
+def lib_narrow(tmp_path_factory):
+    """The example's kernels built as on a target whose long double is double
+    (-DRIGIDSYM_C_NO_WIDE): the double functions have no wider type, the float ones never."""
+    if GCC is None:
+        pytest.skip("gcc is not installed")
+    so = tmp_path_factory.mktemp("narrow") / "librigidsym_c_narrow.so"
+    subprocess.run([GCC, *STRICT, "-O2", "-DRIGIDSYM_C_NO_WIDE", "-shared", "-fPIC",
+                    *map(str, sources()), "-o", str(so), "-lm"], check=True)
+    return ctypes.CDLL(str(so))
+
+
+def _reference(name: str, xs: list) -> tuple[np.ndarray, np.ndarray]:
+    """(value, sum of the magnitudes of its terms) of three example kernels at the exact
+    inputs, in 60-digit mpmath: the rounding of any evaluation is within a few u of the
+    second, whatever the scale."""
+    import mpmath as mp
+
+    mp.mp.dps = 60
+    f = [[mp.mpf(float(v)) for v in np.ravel(x)] for x in xs]
+    if name == "body_energy":
+        (m,), v, inertia, w = f
+        terms = [m * vi * vi / 2 for vi in v] + \
+            [w[i] * inertia[3 * i + j] * w[j] / 2 for i in range(3) for j in range(3)]
+        return np.array([float(sum(terms))]), np.array([float(sum(map(abs, terms)))])
+    if name == "planar_arm_tip":
+        (q1,), (q2,), (l1,), (l2,) = f
+        terms = [(l1 * mp.cos(q1), l2 * mp.cos(q1 + q2)), (l1 * mp.sin(q1), l2 * mp.sin(q1 + q2))]
+        return (np.array([float(a + b) for a, b in terms]),
+                np.array([float(abs(a) + abs(b)) for a, b in terms]))
+    t, a, p = f                       # twist_transfer: [omega; v + (a - p) x omega]
+    w, v = t[:3], t[3:]
+    r = [a[i] - p[i] for i in range(3)]
+    cross = [(r[1] * w[2], -r[2] * w[1]), (r[2] * w[0], -r[0] * w[2]),
+             (r[0] * w[1], -r[1] * w[0])]
+    val = [*w, *(v[i] + c[0] + c[1] for i, c in enumerate(cross))]
+    mag = [*map(abs, w), *(abs(v[i]) + abs(c[0]) + abs(c[1]) for i, c in enumerate(cross))]
+    return np.array([float(x) for x in val]), np.array([float(x) for x in mag])
+
+
+#: per kernel: (arguments scaled, degree of the outputs in them, a point of ordinary scale)
+RESCUED = {
+    "body_energy": lambda r, s: [np.array(abs(r.normal()) * s), r.normal(size=3) * s,
+                                 np.diag(abs(r.normal(size=3)) + 0.1).ravel() * s,
+                                 r.normal(size=3) * s],
+    "planar_arm_tip": lambda r, s: [float(r.uniform(-3, 3)), float(r.uniform(-3, 3)),
+                                    float(r.uniform(2, 3) * s), float(r.uniform(0, 1) * s)],
+    "twist_transfer": lambda r, s: [r.normal(size=6) * s, r.normal(size=3),
+                                    r.normal(size=3)],
+}
+OUT_SIZE = {"body_energy": 1, "planar_arm_tip": 2, "twist_transfer": 6}
+
+
+FLOAT_SCALES = [1e-36, 1e-12, 3e9, 1e37]
+DOUBLE_SCALES = [1e-300, 1e-200, 1e-40, 1e300]
+
+
+@settings(max_examples=30, deadline=None)
+@given(st.sampled_from(sorted(RESCUED)), st.sampled_from(FLOAT_SCALES),
+       st.integers(0, 2**32 - 1))
+def test_extreme_float_inputs_are_rescaled(lib, name, scale, seed):
+    """The float functions (no wider type on a float-only FPU) at 1e-36 ... 1e37: right
+    by power-of-two rescaling (check_rescued)."""
+    check_rescued(lib, name, np.float32, scale, seed)
+
+
+@pytest.mark.slow   # its own build of the example's sources (-DRIGIDSYM_C_NO_WIDE)
+@settings(max_examples=30, deadline=None)
+@given(st.sampled_from(sorted(RESCUED)), st.sampled_from(DOUBLE_SCALES),
+       st.integers(0, 2**32 - 1))
+def test_extreme_double_inputs_are_rescaled_without_long_double(lib_narrow, name, scale,
+                                                                seed):
+    """The double functions where long double is double (Cortex-M, Windows) at 1e-300 ...
+    1e300: right by power-of-two rescaling (check_rescued)."""
+    check_rescued(lib_narrow, name, np.float64, scale, seed)
+
+
+def check_rescued(lib_, name, dtype, scale, seed):
+    """Inputs of extreme magnitude in the arguments a kernel is homogeneous in (float, and
+    double without long double): never NaN; where the exact result is a normal number of
+    the type, status 0 (no EXTREME_INPUT left) and within 8 u of the sum of the terms'
+    magnitudes (mpmath) of the exact value; where it overflows, NONFINITE_RESULT."""
+    rng = np.random.default_rng(seed)
+    xs = [np.asarray(x, dtype) if not isinstance(x, float) else float(dtype(x))
+          for x in RESCUED[name](rng, scale)]
+    xs = [x.item() if isinstance(x, np.ndarray) and x.ndim == 0 else x for x in xs]
+    fn = f"rigidsym_c_{name}" + ("_f32" if dtype == np.float32 else "")
+    status, (got,) = call(lib_, fn, *xs, ("out", OUT_SIZE[name]), dtype=dtype)
+    ref, mag = _reference(name, xs)
+    fi = np.finfo(dtype)
+    assert not np.isnan(got).any(), (status, got)
+    if np.max(np.abs(ref)) > float(fi.max):
+        assert status & NONFINITE_RESULT
+        return
+    small = 4 * float(fi.tiny)     # a normal result: rescaled, it is rounded once
+    if np.max(mag) < small or np.min(mag[mag > 0], initial=np.inf) < small or \
+            np.max(mag) > float(fi.max) / 4:
+        return          # (partly) subnormal or at the top: no relative bound there
+    assert status == OK, status
+    assert np.all(np.abs(got - ref) <= 8 * float(fi.eps) / 2 * mag), (got, ref, mag)
+
+
+@settings(max_examples=20, deadline=None)
+@given(st.lists(st.tuples(st.integers(-3, 3).filter(bool), st.integers(0, 3),
+                          st.integers(0, 3), st.integers(0, 2)), min_size=1, max_size=4),
+       st.booleans())
+def test_homogeneity_degree_is_exact(terms, wrap):
+    """homogeneous.degree on sums of monomials c x^a y^b z^e (x, y scaled; z fixed), and
+    the same under a square root or a sine of z: a degree is claimed exactly when the terms
+    share one, and then f(2x, 2y, z) = 2^d f(x, y, z) holds symbolically."""
+    import sympy as sp
+
+    from rigidsym.codegen.backends.c.homogeneous import degree
+
+    x, y, z = sp.symbols("x y z", positive=True)
+    poly = sp.expand(sum(c * x**a * y**b * z**e for c, a, b, e in terms))
+    degs = {a + b for a, b, _ in sp.Poly(poly, x, y, z).monoms()} if poly != 0 else set()
+    f = sp.sqrt(poly**2) * sp.sin(z) if wrap else poly
+    try:
+        d = degree(f, {x, y})
+    except ValueError:
+        assert len(degs) > 1
+        return
+    assert len(degs) <= 1
+    if d is not None:
+        at = {x: sp.Rational(3, 7), y: sp.Rational(-5, 3), z: sp.Rational(2, 9)}
+        scaled = f.subs({x: 2 * x, y: 2 * y}, simultaneous=True).subs(at)
+        want = (2**d * f).subs(at)
+        assert abs(sp.N(scaled - want, 60)) <= 1e-50 * (1 + abs(sp.N(want, 60)))
+    with pytest.raises(ValueError):
+        degree(sp.sin(x) + f, {x, y})

@@ -108,6 +108,30 @@ def test_a_function_of_several_parameters():
         rigidsym.check_latex(r"F(\phi,\theta) = I_3", let=[r"\phi: angle; \theta: angle"])
 
 
+SELIG_R = (r"R(\mathbf{n},\theta) = I_3 + \sin\theta\,[\mathbf{n}]_\times + (1 - \cos\theta)"
+           r"[\mathbf{n}]_\times^2")
+
+
+@pytest.mark.parametrize("latex, verdict", [
+    # on main: "unexpected ','" (an operator's argument held no application; Selig (4.7))
+    (r"\operatorname{tr} R(\mathbf{n},\theta) = 1 + 2\cos\theta", "verified"),
+    (r"\operatorname{tr} R(\mathbf{n},\theta) = 1 + \cos\theta", "does-not-hold"),
+    (r"\mathrm{tr}\,R(\mathbf{n},\theta)^2 = \operatorname{tr} R(\mathbf{n},2\theta)", "verified"),
+    # arguments holding (...) and {...}: still one application of two arguments
+    (r"\operatorname{tr} R(Q\mathbf{n},(\theta+\phi)) = 1 + 2\cos(\theta+\phi)", "verified"),
+    (r"\operatorname{tr} R(\mathbf{n},\frac{\theta}{2}) = 1 + 2\cos\theta", "does-not-hold"),
+    # a parenthesis without a comma after an operator's argument stays a product
+    (r"\cos\theta(1 + \phi) = \cos\theta + \phi\cos\theta", "verified"),
+    (r"\sin\theta(\phi) = \phi\sin\theta", "verified"),
+])
+def test_an_operator_applies_to_a_function_of_several_arguments(latex, verdict):
+    kinds = {r"\mathbf{n}": "unit vector", r"\theta": "angle", r"\phi": "angle", "Q": "rotation"}
+    lets = [f"{k}: {v}" for k, v in kinds.items() if k in latex]
+    r = rigidsym.check_latex(latex, let=lets + ([SELIG_R] if "R(" in latex else []),
+                             repairs=False)
+    assert r.verdict == verdict, r.detail
+
+
 def test_a_declared_parameter_kind_must_fit_the_argument():
     with pytest.raises(LatexError, match="parameter .* is declared"):
         rigidsym.check_latex(r"S(R) = R", let=[S_LET, r"\mathbf{a}: vector", "R: rotation"])
@@ -221,6 +245,84 @@ def test_readings_that_disagree_are_refused_naming_the_choice(capsys):
     code, out, err = _cli(capsys, "--latex", r"A(\mathbf{B}) = \mathbf{B}^T", "--let",
                           r"A(\mathbf{C}) = \mathbf{C}^T", "--no-repairs")
     assert code == 0, out + err
+
+
+# a bracket around a product: its hat or a bracket that groups (issue 52, item 2)
+RAB = [r"R: rotation", r"\mathbf{a}: vector", r"\mathbf{c}: vector"]
+
+
+def test_a_bracket_around_a_product_keeps_the_reading_that_type_checks():
+    # on main: [R a] always the hat, "\mathbf{b} = [R\mathbf{a}]" does-not-hold (shapes)
+    r = rigidsym.check_latex(r"\mathbf{b} = [R\mathbf{a}]",
+                             let=RAB[:2] + [r"\mathbf{b} = R\mathbf{a}"], repairs=False)
+    assert r.verdict == "verified", r.detail
+    assert any(n.startswith("[R a]: read as a bracket that groups") for n in r.model), r.model
+    assert any(n.startswith("not read as [R a] the hat: the two sides differ in shape")
+               for n in r.model), r.model
+    r = rigidsym.check_latex(r"[R\mathbf{a}]\mathbf{c} = (R\mathbf{a})\times\mathbf{c}",
+                             let=RAB, repairs=False)
+    assert r.verdict == "verified", r.detail
+    assert any("not read as [R a] a bracket that groups" in n for n in r.model), r.model
+
+
+def test_a_bracket_whose_readings_disagree_is_refused_naming_it_and_what_settles_it(capsys):
+    # c^T [R a] c: the hat gives c . (R a x c) = 0, the group (c^T R a) c, no zero
+    latex = r"\mathbf{c}^T [R\mathbf{a}] \mathbf{c} = 0"
+    code, out, err = _cli(capsys, "--latex", latex, *(f"--let={x}" for x in RAB),
+                          "--no-repairs")
+    assert code == 2, out + err
+    assert "[R a] can be read as the hat of the vector or as a bracket that groups it" in err
+    assert "[R a] the hat: verified; [R a] a bracket that groups: does-not-hold" in err, err
+    for spelled, verdict in ((r"[R\mathbf{a}]_\times", "verified"),
+                             (r"(R\mathbf{a})", "does-not-hold")):
+        r = rigidsym.check_latex(latex.replace(r"[R\mathbf{a}]", spelled), let=RAB,
+                                 repairs=False)
+        assert r.verdict == verdict, (spelled, r.detail)
+
+
+# a subscript: part of a name or an entry of a declared vector (issue 52, item 2)
+HALF = [r"\mathbf{e}: unit vector; \theta: angle",
+        r"\mathbf{q} = \begin{bmatrix}\sin\frac{\theta}{2}\mathbf{e}\\ \cos\frac{\theta}{2}"
+        r"\end{bmatrix}"]
+I1 = [r"\mathbf{a}: vector", r"\mathbf{i} = \begin{bmatrix}1\\0\\0\end{bmatrix}"]
+
+
+@pytest.mark.parametrize("latex, lets, verdict", [
+    # on main: "\mathbf{q} does not occur" (bad input), q_4 a free symbol of its own
+    (r"q_4 = \cos\frac{\theta}{2}", HALF, "verified"),
+    (r"q_4 = \sin\frac{\theta}{2}", HALF, "does-not-hold"),
+    (r"\mathbf{q}_4 = \cos\frac{\theta}{2}", HALF, "verified"),
+    # a bold a_1 of its own is a 3-vector by the convention: only the entry type-checks
+    (r"\mathbf{a}_1 = \mathbf{a}^T\mathbf{i}", I1, "verified"),
+    # declared, a_1 is no choice: a scalar of its own (on main the same, undeclared)
+    (r"a_1 = \mathbf{a}^T\mathbf{i}", I1 + ["a_1: scalar"], "does-not-hold"),
+])
+def test_a_subscript_is_a_name_or_an_entry_by_the_reading_that_type_checks(latex, lets, verdict):
+    r = rigidsym.check_latex(latex, let=lets, repairs=False)
+    assert r.verdict == verdict, r.detail
+    chose = [n for n in r.model if "read as entry" in n]
+    assert bool(chose) == (len(lets) == 2), r.model
+
+
+def test_a_subscript_whose_readings_disagree_is_refused_naming_what_settles_it(capsys):
+    # on main: does-not-hold, a_1 a free scalar (a true equation where a_1 is a's entry)
+    code, out, err = _cli(capsys, "--latex", r"a_1 = \mathbf{a}^T\mathbf{i}",
+                          *(f"--let={x}" for x in I1), "--no-repairs")
+    assert code == 2, out + err
+    assert r"a_{1} can be read as a symbol of its own or as an entry of \mathbf{a}" in err, err
+    assert r"a_{1} a symbol of its own: does-not-hold; a_{1} entry 1 of \mathbf{a}: verified" \
+        in err, err
+    r = rigidsym.check_latex(r"\mathbf{a}_{1:1} = \mathbf{a}^T\mathbf{i}", let=I1,
+                             repairs=False)
+    assert r.verdict == "verified", r.detail
+
+
+def test_a_bracket_around_one_symbol_is_its_hat_by_the_rule():
+    # a bracket around one symbol groups nothing: no choice, one reading
+    r = rigidsym.check_latex(r"\mathbf{c}^T [\mathbf{a}] \mathbf{c} = 0", let=RAB[1:],
+                             repairs=False)
+    assert r.verdict == "verified", r.detail
+    assert not any("type-check" in n or "not read as" in n for n in r.model), r.model
 
 
 # --------------------------------------------------- the constructs of item 4 (issue 52)

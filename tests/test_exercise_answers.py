@@ -40,7 +40,7 @@ def test_ex3_7_parallel_moments_give_both_mirror_lines():
                         s.answers[f"p_star{tag}"])
 
 
-@pytest.mark.slow      # an exact piecewise solve: 6 s of CPU, minutes on a loaded machine
+# default since 3.12's parts are integrated once in a symbolic a and h: about 2 s of CPU
 def test_ex3_12_cut_through_the_top_face_gives_both_parts():
     s = ex.solve("ex3.12", a="1/40", h="1/40")
     assert s.status == "solved" and s.checked
@@ -108,3 +108,24 @@ def test_ex3_10_evaluated_at_given_angles():
     assert s.answers["eta_dot"] == V([1, 0, 0])             # omega along Z: theta_dot alone
     gimbal = ex.solve("ex3.10", theta="0", phi="0", psi="0", omega=[1, 0, 0])
     assert gimbal.status == "ill-posed" and "singular" in gimbal.reason
+
+
+def test_ex3_12_principal_check_decides_and_can_fail(monkeypatch):
+    """3.12 checks its principal pairs' formula once, in symbols (issue 50: a draw costs no
+    minimal polynomial): the formula holds, and a formula with a slip does not pass."""
+    import importlib
+
+    from rigidsym.checking.worked import exercise_module
+
+    prism = importlib.import_module(exercise_module("ex3.12").__package__ + "._prism")
+    assert prism._formula_holds()
+    right = prism._yz_pairs
+    monkeypatch.setattr(prism, "_yz_pairs", lambda p, q, r, s: [
+        (lam, v + sp.Matrix([0, 0, r])) for lam, v in right(p, q, r, s)])   # a slip
+    prism._formula_holds.cache_clear()
+    try:
+        assert not prism._formula_holds()
+    finally:
+        prism._formula_holds.cache_clear()
+    I = sp.Matrix([[2, 1, 0], [1, 3, 1], [0, 1, 4]])                       # x not principal
+    assert not prism.principal_check("x", I, []).passed

@@ -11,6 +11,8 @@ import json
 import numpy as np
 import pytest
 import sympy as sp
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 import rigidsym.exercises as ex
 from rigidsym.checking.worked import to_json_value
@@ -167,3 +169,47 @@ def test_answers_are_read_as_set_reads_data(ex34):
     s = ex.solve("3.19")
     f = s.answers["f_2"]
     assert _slip(s, "f_2", ",".join(str(x) for x in f)).correct is True
+
+
+#: lengths by their definitions (not pint's table): an answer in any of them grades right
+_METRES_PER = {"m": 1, "cm": sp.Rational(1, 100), "mm": sp.Rational(1, 1000),
+               "um": sp.Rational(1, 10**6), "km": 1000, "in": sp.Rational(254, 10**4),
+               "ft": sp.Rational(3048, 10**4)}
+
+
+@given(unit=st.sampled_from(sorted(_METRES_PER)), per_entry=st.booleans())
+@settings(max_examples=12, deadline=None, derandomize=True, database=None)
+def test_an_answer_in_any_compatible_unit_grades_right(ex311, unit, per_entry):
+    a, h = sp.Rational(1, 20), sp.Rational(1, 100)
+    centroid = [0, 0, h / 2]                     # metres: the prism's middle, on its axis
+    volume = 3 * sp.sqrt(3) / 2 * a**2 * h       # the hexagon's area times h, m^3
+    shown = [f"{float(x / _METRES_PER[unit]):.12g}" for x in centroid]
+    given = [f"{x} {unit}" for x in shown] if per_entry else ",".join(shown) + f" {unit}"
+    g = _slip(ex311, "centroid_m", given)
+    assert g.correct is True and g.slip is None, g.detail
+    v = _slip(ex311, "volume_m3", f"{float(volume / _METRES_PER[unit] ** 3):.12g} {unit}^3")
+    assert v.correct is True, v.detail
+    if unit != "m":
+        assert f"read in {unit}" in g.detail
+
+
+def test_a_bare_number_in_another_unit_is_named_a_unit_slip(ex311):
+    h = sp.Rational(1, 100)
+    g = _slip(ex311, "centroid_m", [0, 0, float(h / 2 * 1000)])     # mm typed as m
+    assert g.correct is False and g.slip == "unit"
+    assert "a unit slip: the number is in mm, the answer in m" in g.detail
+    v = _slip(ex311, "volume_m3", float(3 * sp.sqrt(3) / 2 * (sp.Rational(1, 20))**2 * h
+                                        * 10**6))                  # cm^3 typed as m^3
+    assert v.slip == "unit" and "in cm^3" in v.detail
+    s = ex.solve("3.1", A_prime=[0, 0, 0], B_prime=[-1, 0, 0], D_prime=[0, -1, 0],
+                 E_prime=[0, 0, 1])                    # a half turn about z: phi = pi rad
+    assert _slip(s, "phi", "180 deg").correct is True
+    d = _slip(s, "phi", 180)
+    assert d.slip == "degrees" and "a unit slip: deg given where rad is expected" in d.detail
+
+
+def test_a_unit_that_does_not_fit_is_refused_by_name(ex311, ex34):
+    g = _slip(ex311, "volume_m3", "0.0001 kg")
+    assert g.correct is False and "'kg' is not a unit of m^3" in g.detail
+    q = _slip(ex34, "Q_1_2", "1,0,0;0,1,0;0,0,1 mm")
+    assert q.correct is False and "no single unit" in q.detail

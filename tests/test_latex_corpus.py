@@ -36,7 +36,6 @@ QUICK = {"lynch-park-06", "lynch-park-07", "murray-li-sastry-16", "siciliano-12"
 
 XFAIL = {  # id -> what is wrong with its reading today (issue 40; remove a line once fixed)
     "siciliano-09": "unread",  # \boldsymbol{S}(\cdot) an operator: no notation line gives it
-    "selig-07": "unread",  # tr R(n, θ): an operator's argument holds no application (issue 52)
 }
 
 

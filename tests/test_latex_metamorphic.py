@@ -3,11 +3,12 @@ entry read with its book's table is unchanged when
 
 (a) its ``--let``s come in another order (with two models declared top-down, ``Y = Z``
     before ``Z = (x)``, so the order is one a book could give),
-(b) a symbol is renamed consistently (``\\mathbf{u}`` -> ``\\mathbf{h}``, its table line too),
+(b) a symbol is renamed consistently (``\\mathbf{u}`` -> ``\\mathbf{h}`` or
+    ``\\boldsymbol{\\chi}``, ``\\theta`` -> ``\\kappa``, ``R`` -> ``K``; its table line too),
 (c) it is spelt another equivalent way (``^T``/``^\\top``/``^\\mathsf{T}``, ``\\mathbf``/
     ``\\boldsymbol``, ``\\left(``/``(``, ``\\frac{a}{b}``/``((a)/(b))``, spacing),
-(d) a symbol is replaced by a model of it (``\\mathbf{u}`` -> ``Y`` with ``--let 'Y = Z'``,
-    ``--let 'Z = (\\mathbf{u})'``) instead of being written inline,
+(d) a declared symbol is replaced by a model of it (``\\mathbf{u}`` -> ``Y`` with
+    ``--let 'Y = Z'``, ``--let 'Z = (\\mathbf{u})'``) instead of being written inline,
 (e) a ``--let`` line moves into a ``--notation`` table.
 
 Measured on the entries that are decided (verified or does-not-hold); a variant that does
@@ -79,16 +80,102 @@ def _bold_symbols(latex: str, lets: list[str]) -> list[str]:
     return sorted(c for c in declared if c.islower() and c not in "eit")
 
 
+_GREEK = ("alpha", "beta", "gamma", "delta", "epsilon", "varepsilon", "zeta", "eta", "theta",
+          "vartheta", "iota", "kappa", "lambda", "mu", "nu", "xi", "rho", "varrho", "sigma", "tau",
+          "phi", "varphi", "chi", "psi", "omega")
+
+
+def _greek_in(text: str) -> set[str]:
+    return {g for g in _GREEK if re.search(r"\\" + g + r"(?![A-Za-z])", text)}
+
+
+def _book_text(notation: str | None) -> str:
+    """The lines of the book's --notation table: a letter they name keeps its name."""
+    if notation is None:
+        return ""
+    from rigidsym.latex import notations
+
+    return " ".join(x.text for x in notations.notation(notation).lets)
+
+
+# a plain capital letter (group 2), not a macro's name nor a letter of a font's argument
+_MACRO = (r"(\\(?:mathrm|operatorname|mathcal|mathbf|boldsymbol|bm|text|mathsf)\s*\{[^{}]*\}"
+          r"|\\[A-Za-z]+)")
+
+
+def _capital(c: str) -> re.Pattern:
+    return re.compile(_MACRO + "|(" + c + ")")
+
+
+def _has_capital(text: str, c: str) -> bool:
+    return any(m.group(2) for m in _capital(c).finditer(text))
+
+
+def _occurs(key: str, latex: str) -> bool:
+    """``key`` written in ``latex`` as a glyph of its own (not the start of a longer one)."""
+    before = r"(?<![\\A-Za-z{^_])" if key[:1].isalpha() else ""
+    return re.search(before + re.escape(key) + r"(?![A-Za-z_'])", latex) is not None
+
+
+def _renamable(latex, lets, notation):
+    """What (b) may rename: Greek letters, letters of bold glyphs and plain capitals the
+    entry declares; a letter the book's --notation table names for a glyph of the LaTeX
+    that no --let of the entry declares keeps its name (so does a Greek letter of any
+    glyph the table names: MLS's ``\\hat\\omega``, the skew matrix of ``\\omega``)."""
+    text = " ".join([latex, *lets])
+    keys = [x.split(":")[0].split("=")[0].strip().removesuffix("(t)") for x in lets]
+    book = []
+    if notation is not None:
+        from rigidsym.latex import notations
+
+        book = [x for x in notations.notation(notation).lets
+                if _occurs(x.key, latex) and x.key not in keys
+                or x.key not in keys and _greek_in(x.key) & _greek_in(latex)]
+    kept = _greek_in(" ".join(x.text for x in book))
+    kept_latin = set(re.sub(r"\\[A-Za-z]+", "", " ".join(x.text for x in book)))
+    greek = sorted(_greek_in(text) - kept)
+    bold = sorted({m.group(1) for k in keys for m in _BOLD.finditer(k)} - set("IOeit")
+                  - kept_latin)
+    capital = sorted({c for k in keys for c in "ABCDFGHJKLMNPQRSUVWXYZ"
+                      if _has_capital(k, c)} - kept_latin)
+    return greek, bold, capital
+
+
 def rename(latex, lets, notation, draw):
-    """(b) ``\\mathbf{u}`` -> ``\\mathbf{h}`` everywhere, a letter the entry does not use."""
-    names = _bold_symbols(latex, lets)
-    spare = [c for c in _SPARE if c not in re.sub(r"\\[A-Za-z]+", "", latex)]
-    if not names or not spare:
+    """(b) a symbol renamed everywhere (the LaTeX and its --let lines) into a letter the entry
+    does not use: a Greek letter into another (``\\theta`` -> ``\\kappa``, its subscripted,
+    dotted and bold forms with it), a bold letter into another or into a bold Greek one
+    (``\\mathbf{u}`` -> ``\\mathbf{h}``, ``\\boldsymbol{\\chi}``: Latin <-> Greek), a
+    plain capital into another (``{}^A_B R`` -> ``{}^A_B W``)."""
+    greek, bold, capital = _renamable(latex, lets, notation)
+    text = " ".join([latex, *lets])
+    letters = set(re.sub(r"\\[A-Za-z]+", "", text))
+    used = _greek_in(text) | _greek_in(_book_text(notation))
+    spare_greek = [g for g in ("kappa", "chi", "zeta", "iota", "varrho", "nu") if g not in used]
+    spare = [c for c in _SPARE if c not in letters]
+    spare_cap = [c for c in "GHKLMNUVW" if not _has_capital(text, c)
+                 and c not in _book_text(notation)]
+    options = ([("greek", g) for g in greek] * bool(spare_greek)
+               + [("bold", c) for c in bold] * bool(spare or spare_greek)
+               + [("capital", c) for c in capital] * bool(spare_cap))
+    if not options:
         return None
-    old, new = draw(st.sampled_from(names)), draw(st.sampled_from(spare))
-    rx = re.compile(r"\\(mathbf|boldsymbol)\{" + old + r"\}")
-    return (rx.sub(lambda m: rf"\{m.group(1)}{{{new}}}", latex),
-            [rx.sub(lambda m: rf"\{m.group(1)}{{{new}}}", x) for x in lets], notation)
+    how, old = draw(st.sampled_from(options))
+    if how == "greek":
+        new = draw(st.sampled_from(spare_greek))
+        rx, sub = re.compile(r"\\" + old + r"(?![A-Za-z])"), (lambda m: "\\" + new)
+    elif how == "capital":
+        new = draw(st.sampled_from(spare_cap))
+        rx, sub = _capital(old), (lambda m: m.group(1) or new)
+    else:
+        into = draw(st.sampled_from([("mathbf", c) for c in (spare if old.islower() else
+                                                             spare_cap)]
+                                    + [("boldsymbol", "\\" + g) for g in spare_greek
+                                       if old.islower()]))
+        rx = re.compile(r"\\(mathbf|boldsymbol)\{" + old + r"\}")
+        sub = (lambda m: rf"\{m.group(1)}{{{into[1]}}}") if into[0] == "mathbf" else \
+            (lambda m: rf"\boldsymbol{{{into[1]}}}")
+    return rx.sub(sub, latex), [rx.sub(sub, x) for x in lets], notation
 
 
 _SPELLINGS = [
@@ -124,25 +211,57 @@ def respell(latex, lets, notation, draw):
     return rx.sub(lambda m: alt, latex), lets, notation
 
 
+_ACCENTS = r"\\(hat|dot|ddot|tilde|bar|vec|underline)\s*\{?\s*"
+
+
+def _standalone(latex: str, glyph: str) -> re.Pattern | None:
+    """A pattern of ``glyph``'s occurrences in ``latex`` if each is the symbol alone (no
+    subscript, prime, accent, argument or index of another glyph), else ``None``."""
+    g = re.escape(glyph) + (r"(?![A-Za-z])" if glyph[-1].isalpha() else "")
+    rx = re.compile(r"(?<![A-Za-z\\{_^])" + g if not glyph.startswith("\\") else g)
+    spots = list(rx.finditer(latex))
+    if not spots:
+        return None
+    for m in spots:
+        after, before = latex[m.end():m.end() + 2], latex[:m.start()]
+        dual = re.match(r"\^\s*(\*|\{\s*(\*|-\s*T)\s*\})", latex[m.end():])
+        if after[:1] in ("_", "'", "(") or dual or re.search(_ACCENTS + r"$", before) \
+                or re.search(r"_\s*\{?[^{}]*$", before[-12:]) or before.endswith("\\"):
+            return None
+    return rx
+
+
 def model(latex, lets, notation, draw):
-    """(d) a bold symbol replaced by ``Y`` with ``Y = Z``, ``Z = (\\mathbf{u})`` declared
-    top-down (a model that uses a model declared after it)."""
-    names = _bold_symbols(latex, lets)
-    if not names or re.search(r"(?<!\\)[YZ]", latex):
+    """(d) a symbol a ``NAME: KIND`` line declares, written only alone, replaced by ``Y`` with
+    ``Y = Z``, ``Z = (NAME)`` declared top-down (a model that uses a model declared after
+    it). Not: a function of time (``\\theta(t)``), a Greek letter the book's --notation
+    names, a symbol under Featherstone's dual (``X^*``, ``X^{-T}``: the dual needs the
+    kind ``spatial transform``, which a model has not; measured: 5 entries)."""
+    if re.search(r"(?<!\\)[YZ]", latex):
         return None
-    old = draw(st.sampled_from(names))
-    rx = re.compile(r"\\(mathbf|boldsymbol)\{" + old + r"\}(?![_'])")
-    if not rx.search(latex) or re.search(r"\\(hat|dot|ddot|tilde|bar|vec)\s*\{?\s*\\"
-                                         r"(mathbf|boldsymbol)\{" + old, latex):
+    keys = [x.split(":")[0].strip() for x in lets if ":" in x and "=" not in x.split(":")[0]]
+    book = _greek_in(_book_text(notation))
+    options = []
+    for k in keys:
+        if k.endswith(")") or (re.fullmatch(r"\\[a-z]+", k) and k[1:] in book):
+            continue
+        rx = _standalone(latex, k)
+        if rx is not None:
+            options.append((k, rx))
+    if not options:
         return None
-    return (rx.sub("{Y}", latex), ["Y = Z", rf"Z = (\mathbf{{{old}}})"] + lets, notation)
+    k, rx = draw(st.sampled_from(options))
+    return (rx.sub(lambda m: "{Y}", latex), ["Y = Z", f"Z = ({k})"] + lets, notation)
 
 
 def permute(latex, lets, notation, draw):
-    """(a) the --lets of (d)'s variant in any order."""
+    """(a) the --lets in any order: those of (d)'s variant (a model declared before the one
+    it uses) where it applies, else the entry's own --lets."""
     v = model(latex, lets, notation, draw)
     if v is None:
-        return None
+        if len(lets) < 2:
+            return None
+        v = (latex, lets, notation)
     return v[0], draw(st.permutations(v[1])), v[2]
 
 
@@ -207,6 +326,8 @@ def test_the_verdict_is_unchanged_on_every_entry(prop, data, monkeypatch):
             ran.append(i)
         monkeypatch.undo()
     decided = [i for i in ENTRIES if base(i) in ("verified", "does-not-hold")]
-    floor = {"a-permutation": 0.25, "b-renaming": 0.25, "c-spelling": 0.6, "d-model": 0.25,
-             "e-notation": 0.9}[prop]  # the share of decided entries a variant applies to
+    # the share of decided entries a variant applies to (measured on 255: a 216, b 223,
+    # c 255, d 172, e 255; what is skipped and why: docs/check-latex.md)
+    floor = {"a-permutation": 0.8, "b-renaming": 0.85, "c-spelling": 0.95, "d-model": 0.65,
+             "e-notation": 0.95}[prop]
     assert len(ran) >= floor * len(decided), (prop, len(ran), len(decided))

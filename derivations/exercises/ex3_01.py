@@ -14,6 +14,9 @@ STATEMENT = ("\"Determine the matrix representing the rotation Q undergone by th
              "Find the Plücker coordinates of line L of the cube undergoing displacements of "
              "minimum magnitude. Find the intersections of L with the coordinate planes.\"")
 CITATION = "Angeles, Sec. 3.9, Exercise 3.1"
+#: the documented unit of each answer with one (graded answers may be written in any
+#: compatible unit, issue 50); the others are pure numbers or mixed
+ANSWER_UNITS = {"phi": "rad"}
 FIGURE_NAME = "cube"
 _V = sp.ImmutableMatrix
 # Assumed geometry (Fig. 3.9 is not in the text): unit cube, A at O, B on X, D on Y, E on Z,

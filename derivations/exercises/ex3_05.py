@@ -13,6 +13,9 @@ STATEMENT = ("\"Show that the distance of the axis to the origin ... d = ||n||. 
              "point P* on the axis, which lies closest to the above-mentioned origin, has a "
              "position vector p* = e x n\"")
 CITATION = "Angeles, Sec. 3.9, Exercise 3.5"
+#: the documented unit of each answer with one (graded answers may be written in any
+#: compatible unit, issue 50); the others are pure numbers or mixed
+ANSWER_UNITS = {"d": "m", "p_star": "m"}
 FIGURE_NAME = "axis"
 _h = sp.sqrt(2) / 2
 PARAMETERS = (Param("plucker", sp.ImmutableMatrix([-_h, 0, _h, 0, -sp.sqrt(2), 0]), (6,),

@@ -14,6 +14,9 @@ STATEMENT = ("\"Compute the angle of rotation of the motion undergone by G ... a
              "unit vector parallel to the axis of rotation ... Determine the set of points of "
              "G undergoing a displacement of minimum magnitude\"")
 CITATION = "Angeles, Sec. 3.9, Exercise 3.6"
+#: the documented unit of each answer with one (graded answers may be written in any
+#: compatible unit, issue 50); the others are pure numbers or mixed
+ANSWER_UNITS = {"phi": "rad", "axis_point_p0": "m"}
 FIGURE_NAME = "grasp"
 _V = sp.ImmutableMatrix
 PARAMETERS = (

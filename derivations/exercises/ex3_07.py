@@ -12,6 +12,9 @@ STATEMENT = ("\"the moment of this axis is measured with respect to two points, 
              "Determine the unit vector e ... the point P* ... the Plücker coordinates of the "
              "axis about the origin\"")
 CITATION = "Angeles, Sec. 3.9, Exercise 3.7"
+#: the documented unit of each answer with one (graded answers may be written in any
+#: compatible unit, issue 50); the others are pure numbers or mixed
+ANSWER_UNITS = {"p_star": "m", "p_star_2": "m"}
 FIGURE_NAME = "axis"
 _V = sp.ImmutableMatrix
 PARAMETERS = (

@@ -18,6 +18,9 @@ TITLE = "Euler-angle rates and the angular velocity"
 STATEMENT = ("\"find the matrix W such that omega = W eta_dot ... Find under which conditions "
              "W becomes singular.\"")
 CITATION = "Angeles, Fundamentals of Robotic Mechanical Systems, Sec. 3.9, Exercise 3.10"
+#: the documented unit of each answer with one (graded answers may be written in any
+#: compatible unit, issue 50); the others are pure numbers or mixed
+ANSWER_UNITS = {"eta_dot": "rad/s"}
 FIGURE_NAME = "condition"
 PROPER_EULER = ["ZXZ", "XYX", "YZY", "ZYZ", "XZX", "YXY"]
 TAIT_BRYAN = ["XYZ", "YZX", "ZXY", "XZY", "ZYX", "YXZ"]
@@ -170,15 +173,14 @@ def _solve(seq: str, at: dict, omega) -> Solution:
                                                   Ra * axis_rotation(b, phi) * _AXES[c]),
            f"Angular velocities add: theta_dot about {a}, phi_dot about the once-moved {b}, "
            f"psi_dot about the twice-moved {c}; these directions are the columns of W.")
-    W = s.step("W (fixed frame)", euler_rate_matrix(seq),
-               "omega = W eta_dot with the columns above.")
-    Wb = s.step("W_B (body frame)", euler_rate_matrix(seq, "body"),
-                "omega_B = Q^T omega, so W_B = Q^T W.")
-    d = s.step("det W", sp.trigsimp(W.det()), "Expanded and simplified by sympy.")
-    sing = s.step("singular set", singular_set(d),
+    W0, Wb0, d0, sing0, Winv0 = _symbolic(seq)
+    W = s.step("W (fixed frame)", W0, "omega = W eta_dot with the columns above.")
+    Wb = s.step("W_B (body frame)", Wb0, "omega_B = Q^T omega, so W_B = Q^T W.")
+    d = s.step("det W", d0, "Expanded and simplified by sympy.")
+    sing = s.step("singular set", sing0,
                   "sympy solveset of det W = 0 for phi in [-pi, pi): the first and third "
                   "axes become parallel (gimbal lock), theta and psi rotate about one line.")
-    Winv = s.step("W^-1 (where det W != 0)", (W.adjugate() / d).applyfunc(sp.trigsimp),
+    Winv = s.step("W^-1 (where det W != 0)", Winv0,
                   "adj(W)/det W, so eta_dot = W^-1 omega off the singular set.")
     rows = table()
     s.answers = {"W": W, "W_body": Wb, "det_W": d, "singular_phi": sing,
@@ -195,6 +197,16 @@ def _solve(seq: str, at: dict, omega) -> Solution:
     if at or omega is not None:
         _evaluated(s, W, d, at, omega)
     return s
+
+
+@functools.cache
+def _symbolic(seq: str) -> tuple:
+    """W, W_B, det W, its singular set and W^-1 of ``seq`` in the angles, derived once (they
+    do not depend on the angles a student evaluates them at)."""
+    W = euler_rate_matrix(seq)
+    d = sp.trigsimp(W.det())
+    return (sp.ImmutableMatrix(W), sp.ImmutableMatrix(euler_rate_matrix(seq, "body")), d,
+            singular_set(d), sp.ImmutableMatrix((W.adjugate() / d).applyfunc(sp.trigsimp)))
 
 
 def _algebraic(x) -> bool:
@@ -256,11 +268,27 @@ def _evaluated(s: Solution, W, d, at: dict, omega) -> None:
 def _symbolic_checks(seq: str) -> tuple:
     """The checks of the symbolic solution of ``seq`` (:func:`_checks`), decided once: they
     do not depend on the angles a student evaluates W at."""
-    W = euler_rate_matrix(seq)
-    Winv = (W.adjugate() / sp.trigsimp(W.det())).applyfunc(sp.trigsimp)
+    W, _, _, _, Winv = _symbolic(seq)
     s = Solution(ID, TITLE, STATEMENT, CITATION)
     _checks(s, seq, W, Winv, table())
     return tuple(s.checks)
+
+
+@functools.cache
+def _rate_checks(q: str) -> tuple:
+    """Differentiate Q(t) of sequence ``q`` directly: omega = vect(Q_dot Q^T) = W eta_dot
+    and Q^T Q_dot = cpm(W_B eta_dot), as identities (decided once per sequence)."""
+    at = [angle(f"ex310_{n}", t=TIME) for n in ("theta", "phi", "psi")]
+    rate = sp.Matrix([sp.diff(x, TIME) for x in at])
+    Q = euler_rotation(q, at)
+    Qd = Q.diff(TIME)
+    Omega = Qd * Q.T
+    sub = dict(zip((theta, phi, psi), at, strict=True))
+    wf = euler_rate_matrix(q).subs(sub) * rate
+    wb = euler_rate_matrix(q, "body").subs(sub) * rate
+    return (identity_check(f"{q}: vect(Q_dot Q^T) = W eta_dot, Omega = cpm(omega)",
+                           [vect(Omega) - wf, Omega - cpm(wf)]),
+            identity_check(f"{q}: Q^T Q_dot = cpm(W_B eta_dot)", [Q.T * Qd - cpm(wb)]))
 
 
 def _checks(s: Solution, seq: str, W, Winv, rows) -> None:
@@ -268,29 +296,25 @@ def _checks(s: Solution, seq: str, W, Winv, rows) -> None:
     sequence; W W^-1 = 1; the singular set zeroes det W and drops the rank."""
     a, b, c = seq
     at = [angle(f"ex310_{n}", t=TIME) for n in ("theta", "phi", "psi")]
-    rate = sp.Matrix([sp.diff(x, TIME) for x in at])
     for q in SEQUENCES:
-        Q = euler_rotation(q, at)
-        Qd = Q.diff(TIME)
-        Omega = Qd * Q.T
-        sub = dict(zip((theta, phi, psi), at, strict=True))
-        wf = euler_rate_matrix(q).subs(sub) * rate
-        wb = euler_rate_matrix(q, "body").subs(sub) * rate
-        s.check(identity_check(f"{q}: vect(Q_dot Q^T) = W eta_dot, Omega = cpm(omega)",
-                               [vect(Omega) - wf, Omega - cpm(wf)]))
-        s.check(identity_check(f"{q}: Q^T Q_dot = cpm(W_B eta_dot)",
-                               [Q.T * Qd - cpm(wb)]))
+        s.checks.extend(_rate_checks(q))
     s.check(identity_check(f"{a}-{b}-{c}: W W^-1 = 1 (off the singular set)",
                            [(W * Winv - sp.eye(3)).subs(
                                {theta: at[0], phi: at[1], psi: at[2]})]))
-    # singular set: det vanishes at each reported point, and rank drops to 2 there
+    s.check(_singular_check(tuple(rows)))
+
+
+@functools.cache
+def _singular_check(rows: tuple):
+    """The singular sets of the table's ``rows``: det W vanishes at each reported point, and
+    the rank of W drops to 2 there (the same for every sequence solved: decided once)."""
     ok = True
     for q, _c, df, _db, ss in rows:
         for p in ss:
             ok &= df.subs(phi, p) == 0 and euler_rate_matrix(q).subs(phi, p).rank() == 2
         ok &= len(ss) == 2
-    s.check(truth_check("every singular point found zeroes det W and drops rank W to 2",
-                        ok, "two points per sequence in [-pi, pi)"))
+    return truth_check("every singular point found zeroes det W and drops rank W to 2",
+                       ok, "two points per sequence in [-pi, pi)")
 
 
 def random_data(rng) -> dict:

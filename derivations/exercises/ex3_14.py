@@ -20,6 +20,9 @@ TITLE = "Two observers of one inertia matrix"
 STATEMENT = ("\"The centroidal inertia matrix of a rigid body is measured by two observers ... "
              "Show that the two measurements are acceptable.\"")
 CITATION = "Angeles, Sec. 3.9, Exercise 3.14"
+#: the documented unit of each answer with one (graded answers may be written in any
+#: compatible unit, issue 50); the others are pure numbers or mixed
+ANSWER_UNITS = {"principal_moments": "kg m^2"}
 MEASURED = True
 PARAMETERS = (
     Param("I_A", sp.ImmutableMatrix(sp.diag(1, 2, 3)), (3, 3),

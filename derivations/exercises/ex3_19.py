@@ -23,6 +23,9 @@ TITLE = "Six-axis force sensor"
 STATEMENT = ("\"If points P and S lie a distance of 100 mm apart, find the wrench in F_2, when "
              "the readouts of the sensor are [n]_S = [1, 0, 1]^T Nm, [f]_S = [0, 1, 0]^T N\"")
 CITATION = "Angeles, Sec. 3.9, Exercise 3.19"
+#: the documented unit of each answer with one (graded answers may be written in any
+#: compatible unit, issue 50); the others are pure numbers or mixed
+ANSWER_UNITS = {"n_2": "N m", "f_2": "N"}
 FIGURE_NAME = "sensor"
 MEASURED = True
 #: decimals in Q are readings (its orthogonality is judged within a tolerance); decimals in

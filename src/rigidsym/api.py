@@ -192,11 +192,29 @@ def _readings_agree(reading, first, others) -> None:
     keys = sorted({k for x in readings for k, c in x.choices.items()
                    if c != reading.choices.get(k)})
     said = "; ".join(f"{_said(x.choices)}: {v}" for x, v in zip(readings, verdicts, strict=True))
-    k = keys[0] if keys else "X"
-    raise BadInput(f"--latex: {', '.join(f'{x}(...)' for x in keys)} can be read as a product or "
-                   f"as {k} applied to its argument, and the readings disagree ({said}): say "
-                   f"which, with a --let function (--let '{k}(PARAM) = LATEX': an application) "
-                   f"or by writing the product without parentheses")
+    raise BadInput(f"--latex: {' and '.join(_choice_words(k) for k in keys)}, and the readings "
+                   f"disagree ({said}): say which, {'; '.join(_settles(k) for k in keys)}")
+
+
+def _choice_words(key: str) -> str:
+    if key.startswith("["):
+        return f"{key} can be read as the hat of the vector or as a bracket that groups it"
+    if " of " in key:
+        name, vec = key.split(" of ", 1)
+        return f"{name} can be read as a symbol of its own or as an entry of {vec}"
+    return f"{key}(...) can be read as a product or as {key} applied to its argument"
+
+
+def _settles(key: str) -> str:
+    if key.startswith("["):
+        return f"{key[:-1]}]_\\times for the hat or ({key[1:-1]}) to group"
+    if " of " in key:
+        name, vec = key.split(" of ", 1)
+        k = name.rsplit("_{", 1)[-1].rstrip("}")
+        return (f"--let '{name}: scalar' (a symbol of its own) or {vec}_{{{k}:{k}}} (the "
+                f"entry)")
+    return (f"with a --let function (--let '{key}(PARAM) = LATEX': an application) or by "
+            f"writing the product without parentheses")
 
 
 def verify(ids: Sequence[str] | str | None = None, sections: Sequence[str] | str | None = None,

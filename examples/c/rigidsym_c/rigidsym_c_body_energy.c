@@ -54,6 +54,66 @@ static int rigidsym_c_body_energy_wide(
 }
 #endif
 
+
+#if RIGIDSYM_C_RESCALE_D
+/* rigidsym_c_body_energy at extreme inputs (RIGIDSYM_C_EXTREME_INPUT, finite): the status and
+ * outputs of the rescue below, or -1 where it cannot take the sample (the caller then goes
+ * on as without it). Kept out of the scalar function, so that its fast path stays a leaf. */
+static RIGIDSYM_C_COLD int rigidsym_c_body_energy_rescue(
+    double m,
+    const double v[3],
+    const double inertia[9],
+    const double omega[3],
+    double *T)
+{
+    int status;
+    int j;
+    double finite;
+    /* every output is homogeneous in the arguments of each step below: scale them
+     * by the power of two 2^-e that brings their largest component into [1/2, 1)
+     * (exact), evaluate, scale the outputs back by 2^(e d) (homogeneous.py); only
+     * when every component is then of ordinary magnitude (else the flag stays) */
+    int still_ = 0;
+    int rs_e0 = 0;
+    double rs_m;
+    double rs_v[3];
+    double rs_inertia[9];
+    double rs_omega[3];
+    {
+        double m_ = 0.0;
+        m_ = fabs(m) > m_ ? fabs(m) : m_;
+        for (j = 0; j < 3; ++j)
+            m_ = fabs(v[j]) > m_ ? fabs(v[j]) : m_;
+        for (j = 0; j < 9; ++j)
+            m_ = fabs(inertia[j]) > m_ ? fabs(inertia[j]) : m_;
+        for (j = 0; j < 3; ++j)
+            m_ = fabs(omega[j]) > m_ ? fabs(omega[j]) : m_;
+        if (m_ > 0.0)
+            (void)frexp(m_, &rs_e0);
+        rs_m = ldexp(m, -rs_e0);
+        still_ |= rigidsym_c_extreme_d(&rs_m, 1);
+        for (j = 0; j < 3; ++j)
+            rs_v[j] = ldexp(v[j], -rs_e0);
+        still_ |= rigidsym_c_extreme_d(rs_v, 3);
+        for (j = 0; j < 9; ++j)
+            rs_inertia[j] = ldexp(inertia[j], -rs_e0);
+        still_ |= rigidsym_c_extreme_d(rs_inertia, 9);
+        for (j = 0; j < 3; ++j)
+            rs_omega[j] = ldexp(omega[j], -rs_e0);
+        still_ |= rigidsym_c_extreme_d(rs_omega, 3);
+    }
+    if (!still_) {  /* every input now ordinary: the function itself, scaled back */
+        status = rigidsym_c_body_energy(rs_m, rs_v, rs_inertia, rs_omega, T);
+        T[0] = ldexp(T[0], 3 * rs_e0);
+        finite = (T[0] - T[0]);
+        if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
+            status |= RIGIDSYM_C_NONFINITE_RESULT;
+        return status;
+    }
+    return -1;
+}
+#endif
+
 RIGIDSYM_C_API int rigidsym_c_body_energy(
     double m,
     const double v[3],
@@ -62,21 +122,6 @@ RIGIDSYM_C_API int rigidsym_c_body_energy(
     double *T)
 
 {
-    const double v_0 = v[0];
-    const double v_1 = v[1];
-    const double v_2 = v[2];
-    const double inertia_00 = inertia[0];
-    const double inertia_01 = inertia[1];
-    const double inertia_02 = inertia[2];
-    const double inertia_10 = inertia[3];
-    const double inertia_11 = inertia[4];
-    const double inertia_12 = inertia[5];
-    const double inertia_20 = inertia[6];
-    const double inertia_21 = inertia[7];
-    const double inertia_22 = inertia[8];
-    const double omega_0 = omega[0];
-    const double omega_1 = omega[1];
-    const double omega_2 = omega[2];
     uint64_t odd = 0;
     int status = 0, singular = 0;
     double finite = 0.0;
@@ -106,10 +151,32 @@ RIGIDSYM_C_API int rigidsym_c_body_energy(
         if (status == RIGIDSYM_C_EXTREME_INPUT)
             return rigidsym_c_body_energy_wide(m, v, inertia, omega, T);
 #endif
+#if RIGIDSYM_C_RESCALE_D
+        if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
+            const int r_ = rigidsym_c_body_energy_rescue(m, v, inertia, omega, T);
+            if (r_ >= 0)
+                return r_;
+        }
+#endif
     }
 #else
     (void)odd;
 #endif
+    const double v_0 = v[0];
+    const double v_1 = v[1];
+    const double v_2 = v[2];
+    const double inertia_00 = inertia[0];
+    const double inertia_01 = inertia[1];
+    const double inertia_02 = inertia[2];
+    const double inertia_10 = inertia[3];
+    const double inertia_11 = inertia[4];
+    const double inertia_12 = inertia[5];
+    const double inertia_20 = inertia[6];
+    const double inertia_21 = inertia[7];
+    const double inertia_22 = inertia[8];
+    const double omega_0 = omega[0];
+    const double omega_1 = omega[1];
+    const double omega_2 = omega[2];
     {
         T[0] = (0.5)*m*((v_0*v_0) + (v_1*v_1) + (v_2*v_2)) + (0.5)*omega_0*(inertia_00*omega_0 + inertia_10*omega_1 + inertia_20*omega_2) + (0.5)*omega_1*(inertia_01*omega_0 + inertia_11*omega_1 + inertia_21*omega_2) + (0.5)*omega_2*(inertia_02*omega_0 + inertia_12*omega_1 + inertia_22*omega_2);
     }
@@ -134,7 +201,7 @@ RIGIDSYM_C_API int rigidsym_c_body_energy(
 
 
 RIGIDSYM_C_API int rigidsym_c_body_energy_batch(
-    size_t n,
+    size_t count,
     const double *m,
     const double *v,
     const double *inertia,
@@ -142,21 +209,81 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_batch(
     double *T,
     int *status)
 {
-    int all = 0;
-    size_t i;
-    for (i = 0; i < n; ++i) {
-        const int s = rigidsym_c_body_energy(
-            m[i],
-            v + 3 * i,
-            inertia + 9 * i,
-            omega + 3 * i,
-            T + 1 * i);
+    int all_ = 0;
+    size_t i_;
+    for (i_ = 0; i_ < count; ++i_) {
+        const int s_ = rigidsym_c_body_energy(
+            m[i_],
+            v + 3 * i_,
+            inertia + 9 * i_,
+            omega + 3 * i_,
+            T + 1 * i_);
         if (status)
-            status[i] = s;
-        all |= s;
+            status[i_] = s_;
+        all_ |= s_;
     }
-    return all;
+    return all_;
 }
+
+
+#if RIGIDSYM_C_RESCALE_F
+/* rigidsym_c_body_energy_f32 at extreme inputs (RIGIDSYM_C_EXTREME_INPUT, finite): the status and
+ * outputs of the rescue below, or -1 where it cannot take the sample (the caller then goes
+ * on as without it). Kept out of the scalar function, so that its fast path stays a leaf. */
+static RIGIDSYM_C_COLD int rigidsym_c_body_energy_f32_rescue(
+    float m,
+    const float v[3],
+    const float inertia[9],
+    const float omega[3],
+    float *T)
+{
+    int status;
+    int j;
+    float finite;
+    /* every output is homogeneous in the arguments of each step below: scale them
+     * by the power of two 2^-e that brings their largest component into [1/2, 1)
+     * (exact), evaluate, scale the outputs back by 2^(e d) (homogeneous.py); only
+     * when every component is then of ordinary magnitude (else the flag stays) */
+    int still_ = 0;
+    int rs_e0 = 0;
+    float rs_m;
+    float rs_v[3];
+    float rs_inertia[9];
+    float rs_omega[3];
+    {
+        float m_ = 0.0f;
+        m_ = fabsf(m) > m_ ? fabsf(m) : m_;
+        for (j = 0; j < 3; ++j)
+            m_ = fabsf(v[j]) > m_ ? fabsf(v[j]) : m_;
+        for (j = 0; j < 9; ++j)
+            m_ = fabsf(inertia[j]) > m_ ? fabsf(inertia[j]) : m_;
+        for (j = 0; j < 3; ++j)
+            m_ = fabsf(omega[j]) > m_ ? fabsf(omega[j]) : m_;
+        if (m_ > 0.0f)
+            (void)frexpf(m_, &rs_e0);
+        rs_m = ldexpf(m, -rs_e0);
+        still_ |= rigidsym_c_extreme_f(&rs_m, 1);
+        for (j = 0; j < 3; ++j)
+            rs_v[j] = ldexpf(v[j], -rs_e0);
+        still_ |= rigidsym_c_extreme_f(rs_v, 3);
+        for (j = 0; j < 9; ++j)
+            rs_inertia[j] = ldexpf(inertia[j], -rs_e0);
+        still_ |= rigidsym_c_extreme_f(rs_inertia, 9);
+        for (j = 0; j < 3; ++j)
+            rs_omega[j] = ldexpf(omega[j], -rs_e0);
+        still_ |= rigidsym_c_extreme_f(rs_omega, 3);
+    }
+    if (!still_) {  /* every input now ordinary: the function itself, scaled back */
+        status = rigidsym_c_body_energy_f32(rs_m, rs_v, rs_inertia, rs_omega, T);
+        T[0] = ldexpf(T[0], 3 * rs_e0);
+        finite = (T[0] - T[0]);
+        if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
+            status |= RIGIDSYM_C_NONFINITE_RESULT;
+        return status;
+    }
+    return -1;
+}
+#endif
 
 RIGIDSYM_C_API int rigidsym_c_body_energy_f32(
     float m,
@@ -166,21 +293,6 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_f32(
     float *T)
 
 {
-    const float v_0 = v[0];
-    const float v_1 = v[1];
-    const float v_2 = v[2];
-    const float inertia_00 = inertia[0];
-    const float inertia_01 = inertia[1];
-    const float inertia_02 = inertia[2];
-    const float inertia_10 = inertia[3];
-    const float inertia_11 = inertia[4];
-    const float inertia_12 = inertia[5];
-    const float inertia_20 = inertia[6];
-    const float inertia_21 = inertia[7];
-    const float inertia_22 = inertia[8];
-    const float omega_0 = omega[0];
-    const float omega_1 = omega[1];
-    const float omega_2 = omega[2];
     uint32_t odd = 0;
     int status = 0, singular = 0;
     float finite = 0.0f;
@@ -206,10 +318,32 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_f32(
         for (j = 0; j < 4; ++j)
             if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
                 status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_RESCALE_F
+        if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
+            const int r_ = rigidsym_c_body_energy_f32_rescue(m, v, inertia, omega, T);
+            if (r_ >= 0)
+                return r_;
+        }
+#endif
     }
 #else
     (void)odd;
 #endif
+    const float v_0 = v[0];
+    const float v_1 = v[1];
+    const float v_2 = v[2];
+    const float inertia_00 = inertia[0];
+    const float inertia_01 = inertia[1];
+    const float inertia_02 = inertia[2];
+    const float inertia_10 = inertia[3];
+    const float inertia_11 = inertia[4];
+    const float inertia_12 = inertia[5];
+    const float inertia_20 = inertia[6];
+    const float inertia_21 = inertia[7];
+    const float inertia_22 = inertia[8];
+    const float omega_0 = omega[0];
+    const float omega_1 = omega[1];
+    const float omega_2 = omega[2];
     {
         T[0] = (0.5f)*m*((v_0*v_0) + (v_1*v_1) + (v_2*v_2)) + (0.5f)*omega_0*(inertia_00*omega_0 + inertia_10*omega_1 + inertia_20*omega_2) + (0.5f)*omega_1*(inertia_01*omega_0 + inertia_11*omega_1 + inertia_21*omega_2) + (0.5f)*omega_2*(inertia_02*omega_0 + inertia_12*omega_1 + inertia_22*omega_2);
     }
@@ -234,7 +368,7 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_f32(
 
 
 RIGIDSYM_C_API int rigidsym_c_body_energy_f32_batch(
-    size_t n,
+    size_t count,
     const float *m,
     const float *v,
     const float *inertia,
@@ -242,20 +376,20 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_f32_batch(
     float *T,
     int *status)
 {
-    int all = 0;
-    size_t i;
-    for (i = 0; i < n; ++i) {
-        const int s = rigidsym_c_body_energy_f32(
-            m[i],
-            v + 3 * i,
-            inertia + 9 * i,
-            omega + 3 * i,
-            T + 1 * i);
+    int all_ = 0;
+    size_t i_;
+    for (i_ = 0; i_ < count; ++i_) {
+        const int s_ = rigidsym_c_body_energy_f32(
+            m[i_],
+            v + 3 * i_,
+            inertia + 9 * i_,
+            omega + 3 * i_,
+            T + 1 * i_);
         if (status)
-            status[i] = s;
-        all |= s;
+            status[i_] = s_;
+        all_ |= s_;
     }
-    return all;
+    return all_;
 }
 
 #if RIGIDSYM_C_WIDE
@@ -358,6 +492,86 @@ static int rigidsym_c_body_energy_with_jacobians_wide(
 }
 #endif
 
+
+#if RIGIDSYM_C_RESCALE_D
+/* rigidsym_c_body_energy_with_jacobians at extreme inputs (RIGIDSYM_C_EXTREME_INPUT, finite): the status and
+ * outputs of the rescue below, or -1 where it cannot take the sample (the caller then goes
+ * on as without it). Kept out of the scalar function, so that its fast path stays a leaf. */
+static RIGIDSYM_C_COLD int rigidsym_c_body_energy_with_jacobians_rescue(
+    double m,
+    const double v[3],
+    const double inertia[9],
+    const double omega[3],
+    double *T,
+    double *T_D_m,
+    double T_D_v[3],
+    double T_D_inertia[9],
+    double T_D_omega[3])
+{
+    int status;
+    int j;
+    double finite;
+    /* every output is homogeneous in the arguments of each step below: scale them
+     * by the power of two 2^-e that brings their largest component into [1/2, 1)
+     * (exact), evaluate, scale the outputs back by 2^(e d) (homogeneous.py); only
+     * when every component is then of ordinary magnitude (else the flag stays) */
+    int still_ = 0;
+    int rs_e0 = 0;
+    double rs_m;
+    double rs_v[3];
+    double rs_inertia[9];
+    double rs_omega[3];
+    {
+        double m_ = 0.0;
+        m_ = fabs(m) > m_ ? fabs(m) : m_;
+        for (j = 0; j < 3; ++j)
+            m_ = fabs(v[j]) > m_ ? fabs(v[j]) : m_;
+        for (j = 0; j < 9; ++j)
+            m_ = fabs(inertia[j]) > m_ ? fabs(inertia[j]) : m_;
+        for (j = 0; j < 3; ++j)
+            m_ = fabs(omega[j]) > m_ ? fabs(omega[j]) : m_;
+        if (m_ > 0.0)
+            (void)frexp(m_, &rs_e0);
+        rs_m = ldexp(m, -rs_e0);
+        still_ |= rigidsym_c_extreme_d(&rs_m, 1);
+        for (j = 0; j < 3; ++j)
+            rs_v[j] = ldexp(v[j], -rs_e0);
+        still_ |= rigidsym_c_extreme_d(rs_v, 3);
+        for (j = 0; j < 9; ++j)
+            rs_inertia[j] = ldexp(inertia[j], -rs_e0);
+        still_ |= rigidsym_c_extreme_d(rs_inertia, 9);
+        for (j = 0; j < 3; ++j)
+            rs_omega[j] = ldexp(omega[j], -rs_e0);
+        still_ |= rigidsym_c_extreme_d(rs_omega, 3);
+    }
+    if (!still_) {  /* every input now ordinary: the function itself, scaled back */
+        status = rigidsym_c_body_energy_with_jacobians(rs_m, rs_v, rs_inertia, rs_omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
+        T[0] = ldexp(T[0], 3 * rs_e0);
+        T_D_m[0] = ldexp(T_D_m[0], 2 * rs_e0);
+        T_D_v[0] = ldexp(T_D_v[0], 2 * rs_e0);
+        T_D_v[1] = ldexp(T_D_v[1], 2 * rs_e0);
+        T_D_v[2] = ldexp(T_D_v[2], 2 * rs_e0);
+        T_D_inertia[0] = ldexp(T_D_inertia[0], 2 * rs_e0);
+        T_D_inertia[1] = ldexp(T_D_inertia[1], 2 * rs_e0);
+        T_D_inertia[2] = ldexp(T_D_inertia[2], 2 * rs_e0);
+        T_D_inertia[3] = ldexp(T_D_inertia[3], 2 * rs_e0);
+        T_D_inertia[4] = ldexp(T_D_inertia[4], 2 * rs_e0);
+        T_D_inertia[5] = ldexp(T_D_inertia[5], 2 * rs_e0);
+        T_D_inertia[6] = ldexp(T_D_inertia[6], 2 * rs_e0);
+        T_D_inertia[7] = ldexp(T_D_inertia[7], 2 * rs_e0);
+        T_D_inertia[8] = ldexp(T_D_inertia[8], 2 * rs_e0);
+        T_D_omega[0] = ldexp(T_D_omega[0], 2 * rs_e0);
+        T_D_omega[1] = ldexp(T_D_omega[1], 2 * rs_e0);
+        T_D_omega[2] = ldexp(T_D_omega[2], 2 * rs_e0);
+        finite = (((((T[0] - T[0]) + (T_D_m[0] - T_D_m[0])) + ((T_D_v[0] - T_D_v[0]) + (T_D_v[1] - T_D_v[1]))) + (((T_D_v[2] - T_D_v[2]) + (T_D_inertia[0] - T_D_inertia[0])) + ((T_D_inertia[1] - T_D_inertia[1]) + (T_D_inertia[2] - T_D_inertia[2])))) + ((((T_D_inertia[3] - T_D_inertia[3]) + (T_D_inertia[4] - T_D_inertia[4])) + ((T_D_inertia[5] - T_D_inertia[5]) + (T_D_inertia[6] - T_D_inertia[6]))) + (((T_D_inertia[7] - T_D_inertia[7]) + (T_D_inertia[8] - T_D_inertia[8])) + ((T_D_omega[0] - T_D_omega[0]) + ((T_D_omega[1] - T_D_omega[1]) + (T_D_omega[2] - T_D_omega[2]))))));
+        if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
+            status |= RIGIDSYM_C_NONFINITE_RESULT;
+        return status;
+    }
+    return -1;
+}
+#endif
+
 RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians(
     double m,
     const double v[3],
@@ -367,21 +581,6 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians(
     double *T_D_m,
     double T_D_v[3],    double T_D_inertia[9],    double T_D_omega[3])
 {
-    const double v_0 = v[0];
-    const double v_1 = v[1];
-    const double v_2 = v[2];
-    const double inertia_00 = inertia[0];
-    const double inertia_01 = inertia[1];
-    const double inertia_02 = inertia[2];
-    const double inertia_10 = inertia[3];
-    const double inertia_11 = inertia[4];
-    const double inertia_12 = inertia[5];
-    const double inertia_20 = inertia[6];
-    const double inertia_21 = inertia[7];
-    const double inertia_22 = inertia[8];
-    const double omega_0 = omega[0];
-    const double omega_1 = omega[1];
-    const double omega_2 = omega[2];
     uint64_t odd = 0;
     int status = 0, singular = 0;
     double finite = 0.0;
@@ -411,10 +610,32 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians(
         if (status == RIGIDSYM_C_EXTREME_INPUT)
             return rigidsym_c_body_energy_with_jacobians_wide(m, v, inertia, omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
 #endif
+#if RIGIDSYM_C_RESCALE_D
+        if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
+            const int r_ = rigidsym_c_body_energy_with_jacobians_rescue(m, v, inertia, omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
+            if (r_ >= 0)
+                return r_;
+        }
+#endif
     }
 #else
     (void)odd;
 #endif
+    const double v_0 = v[0];
+    const double v_1 = v[1];
+    const double v_2 = v[2];
+    const double inertia_00 = inertia[0];
+    const double inertia_01 = inertia[1];
+    const double inertia_02 = inertia[2];
+    const double inertia_10 = inertia[3];
+    const double inertia_11 = inertia[4];
+    const double inertia_12 = inertia[5];
+    const double inertia_20 = inertia[6];
+    const double inertia_21 = inertia[7];
+    const double inertia_22 = inertia[8];
+    const double omega_0 = omega[0];
+    const double omega_1 = omega[1];
+    const double omega_2 = omega[2];
     {
         const double x0 = (v_0*v_0);
         const double x1 = (v_1*v_1);
@@ -489,7 +710,7 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians(
 
 
 RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians_batch(
-    size_t n,
+    size_t count,
     const double *m,
     const double *v,
     const double *inertia,
@@ -501,25 +722,105 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians_batch(
     double *T_D_omega,
     int *status)
 {
-    int all = 0;
-    size_t i;
-    for (i = 0; i < n; ++i) {
-        const int s = rigidsym_c_body_energy_with_jacobians(
-            m[i],
-            v + 3 * i,
-            inertia + 9 * i,
-            omega + 3 * i,
-            T + 1 * i,
-            T_D_m + 1 * i,
-            T_D_v + 3 * i,
-            T_D_inertia + 9 * i,
-            T_D_omega + 3 * i);
+    int all_ = 0;
+    size_t i_;
+    for (i_ = 0; i_ < count; ++i_) {
+        const int s_ = rigidsym_c_body_energy_with_jacobians(
+            m[i_],
+            v + 3 * i_,
+            inertia + 9 * i_,
+            omega + 3 * i_,
+            T + 1 * i_,
+            T_D_m + 1 * i_,
+            T_D_v + 3 * i_,
+            T_D_inertia + 9 * i_,
+            T_D_omega + 3 * i_);
         if (status)
-            status[i] = s;
-        all |= s;
+            status[i_] = s_;
+        all_ |= s_;
     }
-    return all;
+    return all_;
 }
+
+
+#if RIGIDSYM_C_RESCALE_F
+/* rigidsym_c_body_energy_with_jacobians_f32 at extreme inputs (RIGIDSYM_C_EXTREME_INPUT, finite): the status and
+ * outputs of the rescue below, or -1 where it cannot take the sample (the caller then goes
+ * on as without it). Kept out of the scalar function, so that its fast path stays a leaf. */
+static RIGIDSYM_C_COLD int rigidsym_c_body_energy_with_jacobians_f32_rescue(
+    float m,
+    const float v[3],
+    const float inertia[9],
+    const float omega[3],
+    float *T,
+    float *T_D_m,
+    float T_D_v[3],
+    float T_D_inertia[9],
+    float T_D_omega[3])
+{
+    int status;
+    int j;
+    float finite;
+    /* every output is homogeneous in the arguments of each step below: scale them
+     * by the power of two 2^-e that brings their largest component into [1/2, 1)
+     * (exact), evaluate, scale the outputs back by 2^(e d) (homogeneous.py); only
+     * when every component is then of ordinary magnitude (else the flag stays) */
+    int still_ = 0;
+    int rs_e0 = 0;
+    float rs_m;
+    float rs_v[3];
+    float rs_inertia[9];
+    float rs_omega[3];
+    {
+        float m_ = 0.0f;
+        m_ = fabsf(m) > m_ ? fabsf(m) : m_;
+        for (j = 0; j < 3; ++j)
+            m_ = fabsf(v[j]) > m_ ? fabsf(v[j]) : m_;
+        for (j = 0; j < 9; ++j)
+            m_ = fabsf(inertia[j]) > m_ ? fabsf(inertia[j]) : m_;
+        for (j = 0; j < 3; ++j)
+            m_ = fabsf(omega[j]) > m_ ? fabsf(omega[j]) : m_;
+        if (m_ > 0.0f)
+            (void)frexpf(m_, &rs_e0);
+        rs_m = ldexpf(m, -rs_e0);
+        still_ |= rigidsym_c_extreme_f(&rs_m, 1);
+        for (j = 0; j < 3; ++j)
+            rs_v[j] = ldexpf(v[j], -rs_e0);
+        still_ |= rigidsym_c_extreme_f(rs_v, 3);
+        for (j = 0; j < 9; ++j)
+            rs_inertia[j] = ldexpf(inertia[j], -rs_e0);
+        still_ |= rigidsym_c_extreme_f(rs_inertia, 9);
+        for (j = 0; j < 3; ++j)
+            rs_omega[j] = ldexpf(omega[j], -rs_e0);
+        still_ |= rigidsym_c_extreme_f(rs_omega, 3);
+    }
+    if (!still_) {  /* every input now ordinary: the function itself, scaled back */
+        status = rigidsym_c_body_energy_with_jacobians_f32(rs_m, rs_v, rs_inertia, rs_omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
+        T[0] = ldexpf(T[0], 3 * rs_e0);
+        T_D_m[0] = ldexpf(T_D_m[0], 2 * rs_e0);
+        T_D_v[0] = ldexpf(T_D_v[0], 2 * rs_e0);
+        T_D_v[1] = ldexpf(T_D_v[1], 2 * rs_e0);
+        T_D_v[2] = ldexpf(T_D_v[2], 2 * rs_e0);
+        T_D_inertia[0] = ldexpf(T_D_inertia[0], 2 * rs_e0);
+        T_D_inertia[1] = ldexpf(T_D_inertia[1], 2 * rs_e0);
+        T_D_inertia[2] = ldexpf(T_D_inertia[2], 2 * rs_e0);
+        T_D_inertia[3] = ldexpf(T_D_inertia[3], 2 * rs_e0);
+        T_D_inertia[4] = ldexpf(T_D_inertia[4], 2 * rs_e0);
+        T_D_inertia[5] = ldexpf(T_D_inertia[5], 2 * rs_e0);
+        T_D_inertia[6] = ldexpf(T_D_inertia[6], 2 * rs_e0);
+        T_D_inertia[7] = ldexpf(T_D_inertia[7], 2 * rs_e0);
+        T_D_inertia[8] = ldexpf(T_D_inertia[8], 2 * rs_e0);
+        T_D_omega[0] = ldexpf(T_D_omega[0], 2 * rs_e0);
+        T_D_omega[1] = ldexpf(T_D_omega[1], 2 * rs_e0);
+        T_D_omega[2] = ldexpf(T_D_omega[2], 2 * rs_e0);
+        finite = (((((T[0] - T[0]) + (T_D_m[0] - T_D_m[0])) + ((T_D_v[0] - T_D_v[0]) + (T_D_v[1] - T_D_v[1]))) + (((T_D_v[2] - T_D_v[2]) + (T_D_inertia[0] - T_D_inertia[0])) + ((T_D_inertia[1] - T_D_inertia[1]) + (T_D_inertia[2] - T_D_inertia[2])))) + ((((T_D_inertia[3] - T_D_inertia[3]) + (T_D_inertia[4] - T_D_inertia[4])) + ((T_D_inertia[5] - T_D_inertia[5]) + (T_D_inertia[6] - T_D_inertia[6]))) + (((T_D_inertia[7] - T_D_inertia[7]) + (T_D_inertia[8] - T_D_inertia[8])) + ((T_D_omega[0] - T_D_omega[0]) + ((T_D_omega[1] - T_D_omega[1]) + (T_D_omega[2] - T_D_omega[2]))))));
+        if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
+            status |= RIGIDSYM_C_NONFINITE_RESULT;
+        return status;
+    }
+    return -1;
+}
+#endif
 
 RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians_f32(
     float m,
@@ -530,21 +831,6 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians_f32(
     float *T_D_m,
     float T_D_v[3],    float T_D_inertia[9],    float T_D_omega[3])
 {
-    const float v_0 = v[0];
-    const float v_1 = v[1];
-    const float v_2 = v[2];
-    const float inertia_00 = inertia[0];
-    const float inertia_01 = inertia[1];
-    const float inertia_02 = inertia[2];
-    const float inertia_10 = inertia[3];
-    const float inertia_11 = inertia[4];
-    const float inertia_12 = inertia[5];
-    const float inertia_20 = inertia[6];
-    const float inertia_21 = inertia[7];
-    const float inertia_22 = inertia[8];
-    const float omega_0 = omega[0];
-    const float omega_1 = omega[1];
-    const float omega_2 = omega[2];
     uint32_t odd = 0;
     int status = 0, singular = 0;
     float finite = 0.0f;
@@ -570,10 +856,32 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians_f32(
         for (j = 0; j < 4; ++j)
             if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
                 status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_RESCALE_F
+        if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
+            const int r_ = rigidsym_c_body_energy_with_jacobians_f32_rescue(m, v, inertia, omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
+            if (r_ >= 0)
+                return r_;
+        }
+#endif
     }
 #else
     (void)odd;
 #endif
+    const float v_0 = v[0];
+    const float v_1 = v[1];
+    const float v_2 = v[2];
+    const float inertia_00 = inertia[0];
+    const float inertia_01 = inertia[1];
+    const float inertia_02 = inertia[2];
+    const float inertia_10 = inertia[3];
+    const float inertia_11 = inertia[4];
+    const float inertia_12 = inertia[5];
+    const float inertia_20 = inertia[6];
+    const float inertia_21 = inertia[7];
+    const float inertia_22 = inertia[8];
+    const float omega_0 = omega[0];
+    const float omega_1 = omega[1];
+    const float omega_2 = omega[2];
     {
         const float x0 = (v_0*v_0);
         const float x1 = (v_1*v_1);
@@ -648,7 +956,7 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians_f32(
 
 
 RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians_f32_batch(
-    size_t n,
+    size_t count,
     const float *m,
     const float *v,
     const float *inertia,
@@ -660,22 +968,22 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians_f32_batch(
     float *T_D_omega,
     int *status)
 {
-    int all = 0;
-    size_t i;
-    for (i = 0; i < n; ++i) {
-        const int s = rigidsym_c_body_energy_with_jacobians_f32(
-            m[i],
-            v + 3 * i,
-            inertia + 9 * i,
-            omega + 3 * i,
-            T + 1 * i,
-            T_D_m + 1 * i,
-            T_D_v + 3 * i,
-            T_D_inertia + 9 * i,
-            T_D_omega + 3 * i);
+    int all_ = 0;
+    size_t i_;
+    for (i_ = 0; i_ < count; ++i_) {
+        const int s_ = rigidsym_c_body_energy_with_jacobians_f32(
+            m[i_],
+            v + 3 * i_,
+            inertia + 9 * i_,
+            omega + 3 * i_,
+            T + 1 * i_,
+            T_D_m + 1 * i_,
+            T_D_v + 3 * i_,
+            T_D_inertia + 9 * i_,
+            T_D_omega + 3 * i_);
         if (status)
-            status[i] = s;
-        all |= s;
+            status[i_] = s_;
+        all_ |= s_;
     }
-    return all;
+    return all_;
 }

@@ -30,6 +30,9 @@ RIGIDSYM_C_BEGIN_DECLS
  * Returns: the status, 0 or the OR of RIGIDSYM_C_SINGULAR, RIGIDSYM_C_NONFINITE_INPUT,
  * RIGIDSYM_C_NONFINITE_RESULT, RIGIDSYM_C_EXTREME_INPUT (rigidsym_c_common.h).
  * Constraints ("unit", "rotation", ...) are the caller's to meet: they are not checked.
+ * Extreme inputs without a wider type (the float function; the double one where long
+ * double is double): exact power-of-two rescaling of m and v and inertia and omega
+ * (the outputs are homogeneous in each), so their extreme magnitudes give status 0.
  */
 RIGIDSYM_C_API int rigidsym_c_body_energy(
     double m,
@@ -40,7 +43,11 @@ RIGIDSYM_C_API int rigidsym_c_body_energy(
 
 
 /* body_energy in float arithmetic only (float literals, sinf/cosf/sqrtf: no
- * double operation, for FPUs without double); arguments, outputs, status as above. */
+ * double operation, for FPUs without double); arguments, outputs, status as above.
+ * Accuracy: each output within 2.0 u (kappa + 1) of the exact value,
+ * normwise relative, u = 2^-24, kappa the output's condition number (measured by
+ * benchmarks/c_float_bounds.py: worst 0.812 over 96 points of the
+ * accuracy harness's float32 regimes, against arb at the exact point). */
 RIGIDSYM_C_API int rigidsym_c_body_energy_f32(
     float m,
     const float v[3],
@@ -49,11 +56,12 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_f32(
     float *T);
 
 
-/* The same over n samples, one after the other (no heap, no stack beyond one call's):
- * each argument and output holds n rows of its per-sample size, row-major ([n][size]);
+/* The same over count samples, one after the other (no heap, no stack beyond one
+ * call's): each argument and output holds count rows of its per-sample size, row-major
+ * ([count][size]);
  * status[i] (status may be NULL) receives sample i's status; returns their OR. */
 RIGIDSYM_C_API int rigidsym_c_body_energy_batch(
-    size_t n,
+    size_t count,
     const double *m,
     const double *v,
     const double *inertia,
@@ -61,7 +69,7 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_batch(
     double *T,
     int *status);
 RIGIDSYM_C_API int rigidsym_c_body_energy_f32_batch(
-    size_t n,
+    size_t count,
     const float *m,
     const float *v,
     const float *inertia,
@@ -95,6 +103,9 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_f32_batch(
  * Returns: the status, 0 or the OR of RIGIDSYM_C_SINGULAR, RIGIDSYM_C_NONFINITE_INPUT,
  * RIGIDSYM_C_NONFINITE_RESULT, RIGIDSYM_C_EXTREME_INPUT (rigidsym_c_common.h).
  * Constraints ("unit", "rotation", ...) are the caller's to meet: they are not checked.
+ * Extreme inputs without a wider type (the float function; the double one where long
+ * double is double): exact power-of-two rescaling of m and v and inertia and omega
+ * (the outputs are homogeneous in each), so their extreme magnitudes give status 0.
  */
 RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians(
     double m,
@@ -106,7 +117,11 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians(
     double T_D_v[3],    double T_D_inertia[9],    double T_D_omega[3]);
 
 /* body_energy_with_jacobians in float arithmetic only (float literals, sinf/cosf/sqrtf: no
- * double operation, for FPUs without double); arguments, outputs, status as above. */
+ * double operation, for FPUs without double); arguments, outputs, status as above.
+ * Accuracy: each output within 2.0 u (kappa + 1) of the exact value,
+ * normwise relative, u = 2^-24, kappa the output's condition number (measured by
+ * benchmarks/c_float_bounds.py: worst 0.812 over 96 points of the
+ * accuracy harness's float32 regimes, against arb at the exact point). */
 RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians_f32(
     float m,
     const float v[3],
@@ -116,11 +131,12 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians_f32(
     float *T_D_m,
     float T_D_v[3],    float T_D_inertia[9],    float T_D_omega[3]);
 
-/* The same over n samples, one after the other (no heap, no stack beyond one call's):
- * each argument and output holds n rows of its per-sample size, row-major ([n][size]);
+/* The same over count samples, one after the other (no heap, no stack beyond one
+ * call's): each argument and output holds count rows of its per-sample size, row-major
+ * ([count][size]);
  * status[i] (status may be NULL) receives sample i's status; returns their OR. */
 RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians_batch(
-    size_t n,
+    size_t count,
     const double *m,
     const double *v,
     const double *inertia,
@@ -132,7 +148,7 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians_batch(
     double *T_D_omega,
     int *status);
 RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians_f32_batch(
-    size_t n,
+    size_t count,
     const float *m,
     const float *v,
     const float *inertia,

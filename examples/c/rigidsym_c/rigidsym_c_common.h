@@ -23,10 +23,10 @@
  * inputs, or a non-finite input) */
 #define RIGIDSYM_C_NONFINITE_RESULT 4
 /* a nonzero input component has magnitude outside [2^-100, 2^101) (double; float:
- * [2^-30, 2^31)) and there is no wider type to re-run the sample in (the double
- * functions re-run it in long double where that is wider, RIGIDSYM_C_WIDE):
- * intermediates may have underflowed or overflowed, so the outputs are not guaranteed
- * to the stated bound */
+ * [2^-30, 2^31)) that neither a wider type (the double functions re-run the sample in
+ * long double where that is wider, RIGIDSYM_C_WIDE) nor power-of-two rescaling (of the
+ * arguments the kernel is homogeneous in) could take: intermediates may have
+ * underflowed or overflowed, so the outputs are not guaranteed to the stated bound */
 #define RIGIDSYM_C_EXTREME_INPUT 8
 
 #include <stddef.h>   /* size_t, of the _batch functions */

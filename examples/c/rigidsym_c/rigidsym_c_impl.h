@@ -59,6 +59,22 @@
 #define RIGIDSYM_C_WIDE 0
 #endif
 
+/* The rescue without a wider type (the float functions; the double ones where long double
+ * is double): power-of-two rescaling of the arguments in which the kernel is homogeneous
+ * (docs/c-api.md, "Extreme inputs"). */
+#if defined(__GNUC__)
+#define RIGIDSYM_C_COLD __attribute__((cold, noinline))
+#else
+#define RIGIDSYM_C_COLD
+#endif
+#if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
+#define RIGIDSYM_C_RESCALE_F 1
+#define RIGIDSYM_C_RESCALE_D (!RIGIDSYM_C_WIDE)
+#else
+#define RIGIDSYM_C_RESCALE_F 0
+#define RIGIDSYM_C_RESCALE_D 0
+#endif
+
 #include "rigidsym_c_common.h"
 
 /* The input bits of the status: RIGIDSYM_C_NONFINITE_INPUT when a component is infinite or
@@ -107,6 +123,26 @@ static inline int rigidsym_c_classify_f(const float *p, int n)
         if (!(p[j] - p[j] == 0.0f))
             return RIGIDSYM_C_NONFINITE_INPUT;
     return RIGIDSYM_C_EXTREME_INPUT;
+}
+
+/* 1 when one of the n finite values at p is nonzero of magnitude outside the ordinary
+ * range (after a rescue: an argument that was not rescaled) */
+static inline int rigidsym_c_extreme_d(const double *p, int n)
+{
+    uint64_t odd = 0;
+    int j;
+    for (j = 0; j < n; ++j)
+        RIGIDSYM_C_ODD_D(odd, p[j]);
+    return (int)(odd >> 63);
+}
+
+static inline int rigidsym_c_extreme_f(const float *p, int n)
+{
+    uint32_t odd = 0;
+    int j;
+    for (j = 0; j < n; ++j)
+        RIGIDSYM_C_ODD_F(odd, p[j]);
+    return (int)(odd >> 31);
 }
 
 /* a b - c d compensated (Kahan's algorithm): within 2 u of the exact value however much the

@@ -72,6 +72,83 @@ static int rigidsym_c_newton_euler_wrench_wide(
 }
 #endif
 
+
+#if RIGIDSYM_C_RESCALE_D
+/* rigidsym_c_newton_euler_wrench at extreme inputs (RIGIDSYM_C_EXTREME_INPUT, finite): the status and
+ * outputs of the rescue below, or -1 where it cannot take the sample (the caller then goes
+ * on as without it). Kept out of the scalar function, so that its fast path stays a leaf. */
+static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_rescue(
+    const double I_C[9],
+    double m,
+    const double omega[3],
+    const double omega_dot[3],
+    const double c_ddot[3],
+    double w[6])
+{
+    int status;
+    int j;
+    double finite;
+    /* every output is homogeneous in the arguments of each step below: scale them
+     * by the power of two 2^-e that brings their largest component into [1/2, 1)
+     * (exact), evaluate, scale the outputs back by 2^(e d) (homogeneous.py); only
+     * when every component is then of ordinary magnitude (else the flag stays) */
+    int still_ = 0;
+    int rs_e0 = 0;
+    int rs_e1 = 0;
+    int rs_e2 = 0;
+    double rs_I_C[9];
+    double rs_m;
+    double rs_c_ddot[3];
+    {
+        double m_ = 0.0;
+        for (j = 0; j < 9; ++j)
+            m_ = fabs(I_C[j]) > m_ ? fabs(I_C[j]) : m_;
+        if (m_ > 0.0)
+            (void)frexp(m_, &rs_e0);
+        for (j = 0; j < 9; ++j)
+            rs_I_C[j] = ldexp(I_C[j], -rs_e0);
+        still_ |= rigidsym_c_extreme_d(rs_I_C, 9);
+    }
+    {
+        double m_ = 0.0;
+        m_ = fabs(m) > m_ ? fabs(m) : m_;
+        if (m_ > 0.0)
+            (void)frexp(m_, &rs_e1);
+        rs_m = ldexp(m, -rs_e1);
+        still_ |= rigidsym_c_extreme_d(&rs_m, 1);
+    }
+    {
+        double m_ = 0.0;
+        for (j = 0; j < 3; ++j)
+            m_ = fabs(c_ddot[j]) > m_ ? fabs(c_ddot[j]) : m_;
+        if (m_ > 0.0)
+            (void)frexp(m_, &rs_e2);
+        for (j = 0; j < 3; ++j)
+            rs_c_ddot[j] = ldexp(c_ddot[j], -rs_e2);
+        still_ |= rigidsym_c_extreme_d(rs_c_ddot, 3);
+    }
+    still_ |= rigidsym_c_extreme_d(omega, 3);
+    still_ |= rigidsym_c_extreme_d(omega_dot, 3);
+    if (!still_) {  /* every input now ordinary: the function itself, scaled back */
+        status = rigidsym_c_newton_euler_wrench(rs_I_C, rs_m, omega, omega_dot, rs_c_ddot, w);
+        w[0] = ldexp(w[0], 1 * rs_e0);
+        w[1] = ldexp(w[1], 1 * rs_e0);
+        w[2] = ldexp(w[2], 1 * rs_e0);
+        w[3] = ldexp(w[3], 1 * rs_e1);
+        w[4] = ldexp(w[4], 1 * rs_e1);
+        w[5] = ldexp(w[5], 1 * rs_e1);
+        w[3] = ldexp(w[3], 1 * rs_e2);
+        w[4] = ldexp(w[4], 1 * rs_e2);
+        w[5] = ldexp(w[5], 1 * rs_e2);
+        finite = (((w[0] - w[0]) + ((w[1] - w[1]) + (w[2] - w[2]))) + ((w[3] - w[3]) + ((w[4] - w[4]) + (w[5] - w[5]))));
+        if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
+            status |= RIGIDSYM_C_NONFINITE_RESULT;
+        return status;
+    }
+    return -1;
+}
+#endif
+
 RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench(
     const double I_C[9],
     double m,
@@ -80,24 +157,6 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench(
     const double c_ddot[3],
     double w[6])
 {
-    const double I_C_00 = I_C[0];
-    const double I_C_01 = I_C[1];
-    const double I_C_02 = I_C[2];
-    const double I_C_10 = I_C[3];
-    const double I_C_11 = I_C[4];
-    const double I_C_12 = I_C[5];
-    const double I_C_20 = I_C[6];
-    const double I_C_21 = I_C[7];
-    const double I_C_22 = I_C[8];
-    const double omega_0 = omega[0];
-    const double omega_1 = omega[1];
-    const double omega_2 = omega[2];
-    const double omega_dot_0 = omega_dot[0];
-    const double omega_dot_1 = omega_dot[1];
-    const double omega_dot_2 = omega_dot[2];
-    const double c_ddot_0 = c_ddot[0];
-    const double c_ddot_1 = c_ddot[1];
-    const double c_ddot_2 = c_ddot[2];
     uint64_t odd = 0;
     int status = 0, singular = 0;
     double finite = 0.0;
@@ -129,10 +188,35 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench(
         if (status == RIGIDSYM_C_EXTREME_INPUT)
             return rigidsym_c_newton_euler_wrench_wide(I_C, m, omega, omega_dot, c_ddot, w);
 #endif
+#if RIGIDSYM_C_RESCALE_D
+        if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
+            const int r_ = rigidsym_c_newton_euler_wrench_rescue(I_C, m, omega, omega_dot, c_ddot, w);
+            if (r_ >= 0)
+                return r_;
+        }
+#endif
     }
 #else
     (void)odd;
 #endif
+    const double I_C_00 = I_C[0];
+    const double I_C_01 = I_C[1];
+    const double I_C_02 = I_C[2];
+    const double I_C_10 = I_C[3];
+    const double I_C_11 = I_C[4];
+    const double I_C_12 = I_C[5];
+    const double I_C_20 = I_C[6];
+    const double I_C_21 = I_C[7];
+    const double I_C_22 = I_C[8];
+    const double omega_0 = omega[0];
+    const double omega_1 = omega[1];
+    const double omega_2 = omega[2];
+    const double omega_dot_0 = omega_dot[0];
+    const double omega_dot_1 = omega_dot[1];
+    const double omega_dot_2 = omega_dot[2];
+    const double c_ddot_0 = c_ddot[0];
+    const double c_ddot_1 = c_ddot[1];
+    const double c_ddot_2 = c_ddot[2];
     {
         const double x0 = I_C_20*omega_0 + I_C_21*omega_1 + I_C_22*omega_2;
         const double x1 = I_C_10*omega_0 + I_C_11*omega_1 + I_C_12*omega_2;
@@ -170,7 +254,7 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench(
 
 
 RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_batch(
-    size_t n,
+    size_t count,
     const double *I_C,
     const double *m,
     const double *omega,
@@ -179,22 +263,99 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_batch(
     double *w,
     int *status)
 {
-    int all = 0;
-    size_t i;
-    for (i = 0; i < n; ++i) {
-        const int s = rigidsym_c_newton_euler_wrench(
-            I_C + 9 * i,
-            m[i],
-            omega + 3 * i,
-            omega_dot + 3 * i,
-            c_ddot + 3 * i,
-            w + 6 * i);
+    int all_ = 0;
+    size_t i_;
+    for (i_ = 0; i_ < count; ++i_) {
+        const int s_ = rigidsym_c_newton_euler_wrench(
+            I_C + 9 * i_,
+            m[i_],
+            omega + 3 * i_,
+            omega_dot + 3 * i_,
+            c_ddot + 3 * i_,
+            w + 6 * i_);
         if (status)
-            status[i] = s;
-        all |= s;
+            status[i_] = s_;
+        all_ |= s_;
     }
-    return all;
+    return all_;
 }
+
+
+#if RIGIDSYM_C_RESCALE_F
+/* rigidsym_c_newton_euler_wrench_f32 at extreme inputs (RIGIDSYM_C_EXTREME_INPUT, finite): the status and
+ * outputs of the rescue below, or -1 where it cannot take the sample (the caller then goes
+ * on as without it). Kept out of the scalar function, so that its fast path stays a leaf. */
+static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_f32_rescue(
+    const float I_C[9],
+    float m,
+    const float omega[3],
+    const float omega_dot[3],
+    const float c_ddot[3],
+    float w[6])
+{
+    int status;
+    int j;
+    float finite;
+    /* every output is homogeneous in the arguments of each step below: scale them
+     * by the power of two 2^-e that brings their largest component into [1/2, 1)
+     * (exact), evaluate, scale the outputs back by 2^(e d) (homogeneous.py); only
+     * when every component is then of ordinary magnitude (else the flag stays) */
+    int still_ = 0;
+    int rs_e0 = 0;
+    int rs_e1 = 0;
+    int rs_e2 = 0;
+    float rs_I_C[9];
+    float rs_m;
+    float rs_c_ddot[3];
+    {
+        float m_ = 0.0f;
+        for (j = 0; j < 9; ++j)
+            m_ = fabsf(I_C[j]) > m_ ? fabsf(I_C[j]) : m_;
+        if (m_ > 0.0f)
+            (void)frexpf(m_, &rs_e0);
+        for (j = 0; j < 9; ++j)
+            rs_I_C[j] = ldexpf(I_C[j], -rs_e0);
+        still_ |= rigidsym_c_extreme_f(rs_I_C, 9);
+    }
+    {
+        float m_ = 0.0f;
+        m_ = fabsf(m) > m_ ? fabsf(m) : m_;
+        if (m_ > 0.0f)
+            (void)frexpf(m_, &rs_e1);
+        rs_m = ldexpf(m, -rs_e1);
+        still_ |= rigidsym_c_extreme_f(&rs_m, 1);
+    }
+    {
+        float m_ = 0.0f;
+        for (j = 0; j < 3; ++j)
+            m_ = fabsf(c_ddot[j]) > m_ ? fabsf(c_ddot[j]) : m_;
+        if (m_ > 0.0f)
+            (void)frexpf(m_, &rs_e2);
+        for (j = 0; j < 3; ++j)
+            rs_c_ddot[j] = ldexpf(c_ddot[j], -rs_e2);
+        still_ |= rigidsym_c_extreme_f(rs_c_ddot, 3);
+    }
+    still_ |= rigidsym_c_extreme_f(omega, 3);
+    still_ |= rigidsym_c_extreme_f(omega_dot, 3);
+    if (!still_) {  /* every input now ordinary: the function itself, scaled back */
+        status = rigidsym_c_newton_euler_wrench_f32(rs_I_C, rs_m, omega, omega_dot, rs_c_ddot, w);
+        w[0] = ldexpf(w[0], 1 * rs_e0);
+        w[1] = ldexpf(w[1], 1 * rs_e0);
+        w[2] = ldexpf(w[2], 1 * rs_e0);
+        w[3] = ldexpf(w[3], 1 * rs_e1);
+        w[4] = ldexpf(w[4], 1 * rs_e1);
+        w[5] = ldexpf(w[5], 1 * rs_e1);
+        w[3] = ldexpf(w[3], 1 * rs_e2);
+        w[4] = ldexpf(w[4], 1 * rs_e2);
+        w[5] = ldexpf(w[5], 1 * rs_e2);
+        finite = (((w[0] - w[0]) + ((w[1] - w[1]) + (w[2] - w[2]))) + ((w[3] - w[3]) + ((w[4] - w[4]) + (w[5] - w[5]))));
+        if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
+            status |= RIGIDSYM_C_NONFINITE_RESULT;
+        return status;
+    }
+    return -1;
+}
+#endif
 
 RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_f32(
     const float I_C[9],
@@ -204,24 +365,6 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_f32(
     const float c_ddot[3],
     float w[6])
 {
-    const float I_C_00 = I_C[0];
-    const float I_C_01 = I_C[1];
-    const float I_C_02 = I_C[2];
-    const float I_C_10 = I_C[3];
-    const float I_C_11 = I_C[4];
-    const float I_C_12 = I_C[5];
-    const float I_C_20 = I_C[6];
-    const float I_C_21 = I_C[7];
-    const float I_C_22 = I_C[8];
-    const float omega_0 = omega[0];
-    const float omega_1 = omega[1];
-    const float omega_2 = omega[2];
-    const float omega_dot_0 = omega_dot[0];
-    const float omega_dot_1 = omega_dot[1];
-    const float omega_dot_2 = omega_dot[2];
-    const float c_ddot_0 = c_ddot[0];
-    const float c_ddot_1 = c_ddot[1];
-    const float c_ddot_2 = c_ddot[2];
     uint32_t odd = 0;
     int status = 0, singular = 0;
     float finite = 0.0f;
@@ -249,10 +392,35 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_f32(
         for (j = 0; j < 5; ++j)
             if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
                 status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_RESCALE_F
+        if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
+            const int r_ = rigidsym_c_newton_euler_wrench_f32_rescue(I_C, m, omega, omega_dot, c_ddot, w);
+            if (r_ >= 0)
+                return r_;
+        }
+#endif
     }
 #else
     (void)odd;
 #endif
+    const float I_C_00 = I_C[0];
+    const float I_C_01 = I_C[1];
+    const float I_C_02 = I_C[2];
+    const float I_C_10 = I_C[3];
+    const float I_C_11 = I_C[4];
+    const float I_C_12 = I_C[5];
+    const float I_C_20 = I_C[6];
+    const float I_C_21 = I_C[7];
+    const float I_C_22 = I_C[8];
+    const float omega_0 = omega[0];
+    const float omega_1 = omega[1];
+    const float omega_2 = omega[2];
+    const float omega_dot_0 = omega_dot[0];
+    const float omega_dot_1 = omega_dot[1];
+    const float omega_dot_2 = omega_dot[2];
+    const float c_ddot_0 = c_ddot[0];
+    const float c_ddot_1 = c_ddot[1];
+    const float c_ddot_2 = c_ddot[2];
     {
         const float x0 = I_C_20*omega_0 + I_C_21*omega_1 + I_C_22*omega_2;
         const float x1 = I_C_10*omega_0 + I_C_11*omega_1 + I_C_12*omega_2;
@@ -290,7 +458,7 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_f32(
 
 
 RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_f32_batch(
-    size_t n,
+    size_t count,
     const float *I_C,
     const float *m,
     const float *omega,
@@ -299,21 +467,21 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_f32_batch(
     float *w,
     int *status)
 {
-    int all = 0;
-    size_t i;
-    for (i = 0; i < n; ++i) {
-        const int s = rigidsym_c_newton_euler_wrench_f32(
-            I_C + 9 * i,
-            m[i],
-            omega + 3 * i,
-            omega_dot + 3 * i,
-            c_ddot + 3 * i,
-            w + 6 * i);
+    int all_ = 0;
+    size_t i_;
+    for (i_ = 0; i_ < count; ++i_) {
+        const int s_ = rigidsym_c_newton_euler_wrench_f32(
+            I_C + 9 * i_,
+            m[i_],
+            omega + 3 * i_,
+            omega_dot + 3 * i_,
+            c_ddot + 3 * i_,
+            w + 6 * i_);
         if (status)
-            status[i] = s;
-        all |= s;
+            status[i_] = s_;
+        all_ |= s_;
     }
-    return all;
+    return all_;
 }
 
 #if RIGIDSYM_C_WIDE
@@ -634,6 +802,112 @@ static int rigidsym_c_newton_euler_wrench_with_jacobians_wide(
 }
 #endif
 
+
+#if RIGIDSYM_C_RESCALE_D
+/* rigidsym_c_newton_euler_wrench_with_jacobians at extreme inputs (RIGIDSYM_C_EXTREME_INPUT, finite): the status and
+ * outputs of the rescue below, or -1 where it cannot take the sample (the caller then goes
+ * on as without it). Kept out of the scalar function, so that its fast path stays a leaf. */
+static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_with_jacobians_rescue(
+    const double I_C[9],
+    double m,
+    const double omega[3],
+    const double omega_dot[3],
+    const double c_ddot[3],
+    double w[6],
+    double w_D_I_C[54],
+    double w_D_m[6],
+    double w_D_omega[18],
+    double w_D_omega_dot[18],
+    double w_D_c_ddot[18])
+{
+    int status;
+    int j;
+    double finite;
+    /* every output is homogeneous in the arguments of each step below: scale them
+     * by the power of two 2^-e that brings their largest component into [1/2, 1)
+     * (exact), evaluate, scale the outputs back by 2^(e d) (homogeneous.py); only
+     * when every component is then of ordinary magnitude (else the flag stays) */
+    int still_ = 0;
+    int rs_e0 = 0;
+    int rs_e1 = 0;
+    int rs_e2 = 0;
+    double rs_I_C[9];
+    double rs_m;
+    double rs_c_ddot[3];
+    {
+        double m_ = 0.0;
+        for (j = 0; j < 9; ++j)
+            m_ = fabs(I_C[j]) > m_ ? fabs(I_C[j]) : m_;
+        if (m_ > 0.0)
+            (void)frexp(m_, &rs_e0);
+        for (j = 0; j < 9; ++j)
+            rs_I_C[j] = ldexp(I_C[j], -rs_e0);
+        still_ |= rigidsym_c_extreme_d(rs_I_C, 9);
+    }
+    {
+        double m_ = 0.0;
+        m_ = fabs(m) > m_ ? fabs(m) : m_;
+        if (m_ > 0.0)
+            (void)frexp(m_, &rs_e1);
+        rs_m = ldexp(m, -rs_e1);
+        still_ |= rigidsym_c_extreme_d(&rs_m, 1);
+    }
+    {
+        double m_ = 0.0;
+        for (j = 0; j < 3; ++j)
+            m_ = fabs(c_ddot[j]) > m_ ? fabs(c_ddot[j]) : m_;
+        if (m_ > 0.0)
+            (void)frexp(m_, &rs_e2);
+        for (j = 0; j < 3; ++j)
+            rs_c_ddot[j] = ldexp(c_ddot[j], -rs_e2);
+        still_ |= rigidsym_c_extreme_d(rs_c_ddot, 3);
+    }
+    still_ |= rigidsym_c_extreme_d(omega, 3);
+    still_ |= rigidsym_c_extreme_d(omega_dot, 3);
+    if (!still_) {  /* every input now ordinary: the function itself, scaled back */
+        status = rigidsym_c_newton_euler_wrench_with_jacobians(rs_I_C, rs_m, omega, omega_dot, rs_c_ddot, w, w_D_I_C, w_D_m, w_D_omega, w_D_omega_dot, w_D_c_ddot);
+        w[0] = ldexp(w[0], 1 * rs_e0);
+        w[1] = ldexp(w[1], 1 * rs_e0);
+        w[2] = ldexp(w[2], 1 * rs_e0);
+        w_D_omega[0] = ldexp(w_D_omega[0], 1 * rs_e0);
+        w_D_omega[1] = ldexp(w_D_omega[1], 1 * rs_e0);
+        w_D_omega[2] = ldexp(w_D_omega[2], 1 * rs_e0);
+        w_D_omega[3] = ldexp(w_D_omega[3], 1 * rs_e0);
+        w_D_omega[4] = ldexp(w_D_omega[4], 1 * rs_e0);
+        w_D_omega[5] = ldexp(w_D_omega[5], 1 * rs_e0);
+        w_D_omega[6] = ldexp(w_D_omega[6], 1 * rs_e0);
+        w_D_omega[7] = ldexp(w_D_omega[7], 1 * rs_e0);
+        w_D_omega[8] = ldexp(w_D_omega[8], 1 * rs_e0);
+        w_D_omega_dot[0] = ldexp(w_D_omega_dot[0], 1 * rs_e0);
+        w_D_omega_dot[1] = ldexp(w_D_omega_dot[1], 1 * rs_e0);
+        w_D_omega_dot[2] = ldexp(w_D_omega_dot[2], 1 * rs_e0);
+        w_D_omega_dot[3] = ldexp(w_D_omega_dot[3], 1 * rs_e0);
+        w_D_omega_dot[4] = ldexp(w_D_omega_dot[4], 1 * rs_e0);
+        w_D_omega_dot[5] = ldexp(w_D_omega_dot[5], 1 * rs_e0);
+        w_D_omega_dot[6] = ldexp(w_D_omega_dot[6], 1 * rs_e0);
+        w_D_omega_dot[7] = ldexp(w_D_omega_dot[7], 1 * rs_e0);
+        w_D_omega_dot[8] = ldexp(w_D_omega_dot[8], 1 * rs_e0);
+        w[3] = ldexp(w[3], 1 * rs_e1);
+        w[4] = ldexp(w[4], 1 * rs_e1);
+        w[5] = ldexp(w[5], 1 * rs_e1);
+        w_D_c_ddot[9] = ldexp(w_D_c_ddot[9], 1 * rs_e1);
+        w_D_c_ddot[13] = ldexp(w_D_c_ddot[13], 1 * rs_e1);
+        w_D_c_ddot[17] = ldexp(w_D_c_ddot[17], 1 * rs_e1);
+        w[3] = ldexp(w[3], 1 * rs_e2);
+        w[4] = ldexp(w[4], 1 * rs_e2);
+        w[5] = ldexp(w[5], 1 * rs_e2);
+        w_D_m[3] = ldexp(w_D_m[3], 1 * rs_e2);
+        w_D_m[4] = ldexp(w_D_m[4], 1 * rs_e2);
+        w_D_m[5] = ldexp(w_D_m[5], 1 * rs_e2);
+        finite = (((((((w[0] - w[0]) + ((w[1] - w[1]) + (w[2] - w[2]))) + (((w[3] - w[3]) + (w[4] - w[4])) + ((w[5] - w[5]) + (w_D_I_C[0] - w_D_I_C[0])))) + ((((w_D_I_C[1] - w_D_I_C[1]) + (w_D_I_C[2] - w_D_I_C[2])) + ((w_D_I_C[3] - w_D_I_C[3]) + (w_D_I_C[4] - w_D_I_C[4]))) + (((w_D_I_C[5] - w_D_I_C[5]) + (w_D_I_C[6] - w_D_I_C[6])) + ((w_D_I_C[7] - w_D_I_C[7]) + (w_D_I_C[8] - w_D_I_C[8]))))) + ((((w_D_I_C[9] - w_D_I_C[9]) + ((w_D_I_C[10] - w_D_I_C[10]) + (w_D_I_C[11] - w_D_I_C[11]))) + (((w_D_I_C[12] - w_D_I_C[12]) + (w_D_I_C[13] - w_D_I_C[13])) + ((w_D_I_C[14] - w_D_I_C[14]) + (w_D_I_C[15] - w_D_I_C[15])))) + ((((w_D_I_C[16] - w_D_I_C[16]) + (w_D_I_C[17] - w_D_I_C[17])) + ((w_D_I_C[18] - w_D_I_C[18]) + (w_D_I_C[19] - w_D_I_C[19]))) + (((w_D_I_C[20] - w_D_I_C[20]) + (w_D_I_C[21] - w_D_I_C[21])) + ((w_D_I_C[22] - w_D_I_C[22]) + (w_D_I_C[23] - w_D_I_C[23])))))) + (((((w_D_I_C[24] - w_D_I_C[24]) + ((w_D_I_C[25] - w_D_I_C[25]) + (w_D_I_C[26] - w_D_I_C[26]))) + (((w_D_I_C[27] - w_D_I_C[27]) + (w_D_I_C[28] - w_D_I_C[28])) + ((w_D_I_C[29] - w_D_I_C[29]) + (w_D_I_C[30] - w_D_I_C[30])))) + ((((w_D_I_C[31] - w_D_I_C[31]) + (w_D_I_C[32] - w_D_I_C[32])) + ((w_D_I_C[33] - w_D_I_C[33]) + (w_D_I_C[34] - w_D_I_C[34]))) + (((w_D_I_C[35] - w_D_I_C[35]) + (w_D_I_C[36] - w_D_I_C[36])) + ((w_D_I_C[37] - w_D_I_C[37]) + (w_D_I_C[38] - w_D_I_C[38]))))) + ((((w_D_I_C[39] - w_D_I_C[39]) + ((w_D_I_C[40] - w_D_I_C[40]) + (w_D_I_C[41] - w_D_I_C[41]))) + (((w_D_I_C[42] - w_D_I_C[42]) + (w_D_I_C[43] - w_D_I_C[43])) + ((w_D_I_C[44] - w_D_I_C[44]) + (w_D_I_C[45] - w_D_I_C[45])))) + ((((w_D_I_C[46] - w_D_I_C[46]) + (w_D_I_C[47] - w_D_I_C[47])) + ((w_D_I_C[48] - w_D_I_C[48]) + (w_D_I_C[49] - w_D_I_C[49]))) + (((w_D_I_C[50] - w_D_I_C[50]) + (w_D_I_C[51] - w_D_I_C[51])) + ((w_D_I_C[52] - w_D_I_C[52]) + (w_D_I_C[53] - w_D_I_C[53]))))))) + ((((((w_D_m[0] - w_D_m[0]) + ((w_D_m[1] - w_D_m[1]) + (w_D_m[2] - w_D_m[2]))) + (((w_D_m[3] - w_D_m[3]) + (w_D_m[4] - w_D_m[4])) + ((w_D_m[5] - w_D_m[5]) + (w_D_omega[0] - w_D_omega[0])))) + ((((w_D_omega[1] - w_D_omega[1]) + (w_D_omega[2] - w_D_omega[2])) + ((w_D_omega[3] - w_D_omega[3]) + (w_D_omega[4] - w_D_omega[4]))) + (((w_D_omega[5] - w_D_omega[5]) + (w_D_omega[6] - w_D_omega[6])) + ((w_D_omega[7] - w_D_omega[7]) + (w_D_omega[8] - w_D_omega[8]))))) + ((((w_D_omega[9] - w_D_omega[9]) + ((w_D_omega[10] - w_D_omega[10]) + (w_D_omega[11] - w_D_omega[11]))) + (((w_D_omega[12] - w_D_omega[12]) + (w_D_omega[13] - w_D_omega[13])) + ((w_D_omega[14] - w_D_omega[14]) + (w_D_omega[15] - w_D_omega[15])))) + ((((w_D_omega[16] - w_D_omega[16]) + (w_D_omega[17] - w_D_omega[17])) + ((w_D_omega_dot[0] - w_D_omega_dot[0]) + (w_D_omega_dot[1] - w_D_omega_dot[1]))) + (((w_D_omega_dot[2] - w_D_omega_dot[2]) + (w_D_omega_dot[3] - w_D_omega_dot[3])) + ((w_D_omega_dot[4] - w_D_omega_dot[4]) + (w_D_omega_dot[5] - w_D_omega_dot[5])))))) + (((((w_D_omega_dot[6] - w_D_omega_dot[6]) + ((w_D_omega_dot[7] - w_D_omega_dot[7]) + (w_D_omega_dot[8] - w_D_omega_dot[8]))) + (((w_D_omega_dot[9] - w_D_omega_dot[9]) + (w_D_omega_dot[10] - w_D_omega_dot[10])) + ((w_D_omega_dot[11] - w_D_omega_dot[11]) + (w_D_omega_dot[12] - w_D_omega_dot[12])))) + ((((w_D_omega_dot[13] - w_D_omega_dot[13]) + (w_D_omega_dot[14] - w_D_omega_dot[14])) + ((w_D_omega_dot[15] - w_D_omega_dot[15]) + (w_D_omega_dot[16] - w_D_omega_dot[16]))) + (((w_D_omega_dot[17] - w_D_omega_dot[17]) + (w_D_c_ddot[0] - w_D_c_ddot[0])) + ((w_D_c_ddot[1] - w_D_c_ddot[1]) + (w_D_c_ddot[2] - w_D_c_ddot[2]))))) + ((((w_D_c_ddot[3] - w_D_c_ddot[3]) + ((w_D_c_ddot[4] - w_D_c_ddot[4]) + (w_D_c_ddot[5] - w_D_c_ddot[5]))) + (((w_D_c_ddot[6] - w_D_c_ddot[6]) + (w_D_c_ddot[7] - w_D_c_ddot[7])) + ((w_D_c_ddot[8] - w_D_c_ddot[8]) + (w_D_c_ddot[9] - w_D_c_ddot[9])))) + ((((w_D_c_ddot[10] - w_D_c_ddot[10]) + (w_D_c_ddot[11] - w_D_c_ddot[11])) + ((w_D_c_ddot[12] - w_D_c_ddot[12]) + (w_D_c_ddot[13] - w_D_c_ddot[13]))) + (((w_D_c_ddot[14] - w_D_c_ddot[14]) + (w_D_c_ddot[15] - w_D_c_ddot[15])) + ((w_D_c_ddot[16] - w_D_c_ddot[16]) + (w_D_c_ddot[17] - w_D_c_ddot[17]))))))));
+        if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
+            status |= RIGIDSYM_C_NONFINITE_RESULT;
+        return status;
+    }
+    return -1;
+}
+#endif
+
 RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians(
     const double I_C[9],
     double m,
@@ -642,24 +916,6 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians(
     const double c_ddot[3],
     double w[6],    double w_D_I_C[54],    double w_D_m[6],    double w_D_omega[18],    double w_D_omega_dot[18],    double w_D_c_ddot[18])
 {
-    const double I_C_00 = I_C[0];
-    const double I_C_01 = I_C[1];
-    const double I_C_02 = I_C[2];
-    const double I_C_10 = I_C[3];
-    const double I_C_11 = I_C[4];
-    const double I_C_12 = I_C[5];
-    const double I_C_20 = I_C[6];
-    const double I_C_21 = I_C[7];
-    const double I_C_22 = I_C[8];
-    const double omega_0 = omega[0];
-    const double omega_1 = omega[1];
-    const double omega_2 = omega[2];
-    const double omega_dot_0 = omega_dot[0];
-    const double omega_dot_1 = omega_dot[1];
-    const double omega_dot_2 = omega_dot[2];
-    const double c_ddot_0 = c_ddot[0];
-    const double c_ddot_1 = c_ddot[1];
-    const double c_ddot_2 = c_ddot[2];
     uint64_t odd = 0;
     int status = 0, singular = 0;
     double finite = 0.0;
@@ -691,10 +947,35 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians(
         if (status == RIGIDSYM_C_EXTREME_INPUT)
             return rigidsym_c_newton_euler_wrench_with_jacobians_wide(I_C, m, omega, omega_dot, c_ddot, w, w_D_I_C, w_D_m, w_D_omega, w_D_omega_dot, w_D_c_ddot);
 #endif
+#if RIGIDSYM_C_RESCALE_D
+        if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
+            const int r_ = rigidsym_c_newton_euler_wrench_with_jacobians_rescue(I_C, m, omega, omega_dot, c_ddot, w, w_D_I_C, w_D_m, w_D_omega, w_D_omega_dot, w_D_c_ddot);
+            if (r_ >= 0)
+                return r_;
+        }
+#endif
     }
 #else
     (void)odd;
 #endif
+    const double I_C_00 = I_C[0];
+    const double I_C_01 = I_C[1];
+    const double I_C_02 = I_C[2];
+    const double I_C_10 = I_C[3];
+    const double I_C_11 = I_C[4];
+    const double I_C_12 = I_C[5];
+    const double I_C_20 = I_C[6];
+    const double I_C_21 = I_C[7];
+    const double I_C_22 = I_C[8];
+    const double omega_0 = omega[0];
+    const double omega_1 = omega[1];
+    const double omega_2 = omega[2];
+    const double omega_dot_0 = omega_dot[0];
+    const double omega_dot_1 = omega_dot[1];
+    const double omega_dot_2 = omega_dot[2];
+    const double c_ddot_0 = c_ddot[0];
+    const double c_ddot_1 = c_ddot[1];
+    const double c_ddot_2 = c_ddot[2];
     {
         const double x0 = I_C_21*omega_1;
         const double x1 = I_C_20*omega_0;
@@ -981,7 +1262,7 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians(
 
 
 RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians_batch(
-    size_t n,
+    size_t count,
     const double *I_C,
     const double *m,
     const double *omega,
@@ -995,27 +1276,133 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians_batch(
     double *w_D_c_ddot,
     int *status)
 {
-    int all = 0;
-    size_t i;
-    for (i = 0; i < n; ++i) {
-        const int s = rigidsym_c_newton_euler_wrench_with_jacobians(
-            I_C + 9 * i,
-            m[i],
-            omega + 3 * i,
-            omega_dot + 3 * i,
-            c_ddot + 3 * i,
-            w + 6 * i,
-            w_D_I_C + 54 * i,
-            w_D_m + 6 * i,
-            w_D_omega + 18 * i,
-            w_D_omega_dot + 18 * i,
-            w_D_c_ddot + 18 * i);
+    int all_ = 0;
+    size_t i_;
+    for (i_ = 0; i_ < count; ++i_) {
+        const int s_ = rigidsym_c_newton_euler_wrench_with_jacobians(
+            I_C + 9 * i_,
+            m[i_],
+            omega + 3 * i_,
+            omega_dot + 3 * i_,
+            c_ddot + 3 * i_,
+            w + 6 * i_,
+            w_D_I_C + 54 * i_,
+            w_D_m + 6 * i_,
+            w_D_omega + 18 * i_,
+            w_D_omega_dot + 18 * i_,
+            w_D_c_ddot + 18 * i_);
         if (status)
-            status[i] = s;
-        all |= s;
+            status[i_] = s_;
+        all_ |= s_;
     }
-    return all;
+    return all_;
 }
+
+
+#if RIGIDSYM_C_RESCALE_F
+/* rigidsym_c_newton_euler_wrench_with_jacobians_f32 at extreme inputs (RIGIDSYM_C_EXTREME_INPUT, finite): the status and
+ * outputs of the rescue below, or -1 where it cannot take the sample (the caller then goes
+ * on as without it). Kept out of the scalar function, so that its fast path stays a leaf. */
+static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_with_jacobians_f32_rescue(
+    const float I_C[9],
+    float m,
+    const float omega[3],
+    const float omega_dot[3],
+    const float c_ddot[3],
+    float w[6],
+    float w_D_I_C[54],
+    float w_D_m[6],
+    float w_D_omega[18],
+    float w_D_omega_dot[18],
+    float w_D_c_ddot[18])
+{
+    int status;
+    int j;
+    float finite;
+    /* every output is homogeneous in the arguments of each step below: scale them
+     * by the power of two 2^-e that brings their largest component into [1/2, 1)
+     * (exact), evaluate, scale the outputs back by 2^(e d) (homogeneous.py); only
+     * when every component is then of ordinary magnitude (else the flag stays) */
+    int still_ = 0;
+    int rs_e0 = 0;
+    int rs_e1 = 0;
+    int rs_e2 = 0;
+    float rs_I_C[9];
+    float rs_m;
+    float rs_c_ddot[3];
+    {
+        float m_ = 0.0f;
+        for (j = 0; j < 9; ++j)
+            m_ = fabsf(I_C[j]) > m_ ? fabsf(I_C[j]) : m_;
+        if (m_ > 0.0f)
+            (void)frexpf(m_, &rs_e0);
+        for (j = 0; j < 9; ++j)
+            rs_I_C[j] = ldexpf(I_C[j], -rs_e0);
+        still_ |= rigidsym_c_extreme_f(rs_I_C, 9);
+    }
+    {
+        float m_ = 0.0f;
+        m_ = fabsf(m) > m_ ? fabsf(m) : m_;
+        if (m_ > 0.0f)
+            (void)frexpf(m_, &rs_e1);
+        rs_m = ldexpf(m, -rs_e1);
+        still_ |= rigidsym_c_extreme_f(&rs_m, 1);
+    }
+    {
+        float m_ = 0.0f;
+        for (j = 0; j < 3; ++j)
+            m_ = fabsf(c_ddot[j]) > m_ ? fabsf(c_ddot[j]) : m_;
+        if (m_ > 0.0f)
+            (void)frexpf(m_, &rs_e2);
+        for (j = 0; j < 3; ++j)
+            rs_c_ddot[j] = ldexpf(c_ddot[j], -rs_e2);
+        still_ |= rigidsym_c_extreme_f(rs_c_ddot, 3);
+    }
+    still_ |= rigidsym_c_extreme_f(omega, 3);
+    still_ |= rigidsym_c_extreme_f(omega_dot, 3);
+    if (!still_) {  /* every input now ordinary: the function itself, scaled back */
+        status = rigidsym_c_newton_euler_wrench_with_jacobians_f32(rs_I_C, rs_m, omega, omega_dot, rs_c_ddot, w, w_D_I_C, w_D_m, w_D_omega, w_D_omega_dot, w_D_c_ddot);
+        w[0] = ldexpf(w[0], 1 * rs_e0);
+        w[1] = ldexpf(w[1], 1 * rs_e0);
+        w[2] = ldexpf(w[2], 1 * rs_e0);
+        w_D_omega[0] = ldexpf(w_D_omega[0], 1 * rs_e0);
+        w_D_omega[1] = ldexpf(w_D_omega[1], 1 * rs_e0);
+        w_D_omega[2] = ldexpf(w_D_omega[2], 1 * rs_e0);
+        w_D_omega[3] = ldexpf(w_D_omega[3], 1 * rs_e0);
+        w_D_omega[4] = ldexpf(w_D_omega[4], 1 * rs_e0);
+        w_D_omega[5] = ldexpf(w_D_omega[5], 1 * rs_e0);
+        w_D_omega[6] = ldexpf(w_D_omega[6], 1 * rs_e0);
+        w_D_omega[7] = ldexpf(w_D_omega[7], 1 * rs_e0);
+        w_D_omega[8] = ldexpf(w_D_omega[8], 1 * rs_e0);
+        w_D_omega_dot[0] = ldexpf(w_D_omega_dot[0], 1 * rs_e0);
+        w_D_omega_dot[1] = ldexpf(w_D_omega_dot[1], 1 * rs_e0);
+        w_D_omega_dot[2] = ldexpf(w_D_omega_dot[2], 1 * rs_e0);
+        w_D_omega_dot[3] = ldexpf(w_D_omega_dot[3], 1 * rs_e0);
+        w_D_omega_dot[4] = ldexpf(w_D_omega_dot[4], 1 * rs_e0);
+        w_D_omega_dot[5] = ldexpf(w_D_omega_dot[5], 1 * rs_e0);
+        w_D_omega_dot[6] = ldexpf(w_D_omega_dot[6], 1 * rs_e0);
+        w_D_omega_dot[7] = ldexpf(w_D_omega_dot[7], 1 * rs_e0);
+        w_D_omega_dot[8] = ldexpf(w_D_omega_dot[8], 1 * rs_e0);
+        w[3] = ldexpf(w[3], 1 * rs_e1);
+        w[4] = ldexpf(w[4], 1 * rs_e1);
+        w[5] = ldexpf(w[5], 1 * rs_e1);
+        w_D_c_ddot[9] = ldexpf(w_D_c_ddot[9], 1 * rs_e1);
+        w_D_c_ddot[13] = ldexpf(w_D_c_ddot[13], 1 * rs_e1);
+        w_D_c_ddot[17] = ldexpf(w_D_c_ddot[17], 1 * rs_e1);
+        w[3] = ldexpf(w[3], 1 * rs_e2);
+        w[4] = ldexpf(w[4], 1 * rs_e2);
+        w[5] = ldexpf(w[5], 1 * rs_e2);
+        w_D_m[3] = ldexpf(w_D_m[3], 1 * rs_e2);
+        w_D_m[4] = ldexpf(w_D_m[4], 1 * rs_e2);
+        w_D_m[5] = ldexpf(w_D_m[5], 1 * rs_e2);
+        finite = (((((((w[0] - w[0]) + ((w[1] - w[1]) + (w[2] - w[2]))) + (((w[3] - w[3]) + (w[4] - w[4])) + ((w[5] - w[5]) + (w_D_I_C[0] - w_D_I_C[0])))) + ((((w_D_I_C[1] - w_D_I_C[1]) + (w_D_I_C[2] - w_D_I_C[2])) + ((w_D_I_C[3] - w_D_I_C[3]) + (w_D_I_C[4] - w_D_I_C[4]))) + (((w_D_I_C[5] - w_D_I_C[5]) + (w_D_I_C[6] - w_D_I_C[6])) + ((w_D_I_C[7] - w_D_I_C[7]) + (w_D_I_C[8] - w_D_I_C[8]))))) + ((((w_D_I_C[9] - w_D_I_C[9]) + ((w_D_I_C[10] - w_D_I_C[10]) + (w_D_I_C[11] - w_D_I_C[11]))) + (((w_D_I_C[12] - w_D_I_C[12]) + (w_D_I_C[13] - w_D_I_C[13])) + ((w_D_I_C[14] - w_D_I_C[14]) + (w_D_I_C[15] - w_D_I_C[15])))) + ((((w_D_I_C[16] - w_D_I_C[16]) + (w_D_I_C[17] - w_D_I_C[17])) + ((w_D_I_C[18] - w_D_I_C[18]) + (w_D_I_C[19] - w_D_I_C[19]))) + (((w_D_I_C[20] - w_D_I_C[20]) + (w_D_I_C[21] - w_D_I_C[21])) + ((w_D_I_C[22] - w_D_I_C[22]) + (w_D_I_C[23] - w_D_I_C[23])))))) + (((((w_D_I_C[24] - w_D_I_C[24]) + ((w_D_I_C[25] - w_D_I_C[25]) + (w_D_I_C[26] - w_D_I_C[26]))) + (((w_D_I_C[27] - w_D_I_C[27]) + (w_D_I_C[28] - w_D_I_C[28])) + ((w_D_I_C[29] - w_D_I_C[29]) + (w_D_I_C[30] - w_D_I_C[30])))) + ((((w_D_I_C[31] - w_D_I_C[31]) + (w_D_I_C[32] - w_D_I_C[32])) + ((w_D_I_C[33] - w_D_I_C[33]) + (w_D_I_C[34] - w_D_I_C[34]))) + (((w_D_I_C[35] - w_D_I_C[35]) + (w_D_I_C[36] - w_D_I_C[36])) + ((w_D_I_C[37] - w_D_I_C[37]) + (w_D_I_C[38] - w_D_I_C[38]))))) + ((((w_D_I_C[39] - w_D_I_C[39]) + ((w_D_I_C[40] - w_D_I_C[40]) + (w_D_I_C[41] - w_D_I_C[41]))) + (((w_D_I_C[42] - w_D_I_C[42]) + (w_D_I_C[43] - w_D_I_C[43])) + ((w_D_I_C[44] - w_D_I_C[44]) + (w_D_I_C[45] - w_D_I_C[45])))) + ((((w_D_I_C[46] - w_D_I_C[46]) + (w_D_I_C[47] - w_D_I_C[47])) + ((w_D_I_C[48] - w_D_I_C[48]) + (w_D_I_C[49] - w_D_I_C[49]))) + (((w_D_I_C[50] - w_D_I_C[50]) + (w_D_I_C[51] - w_D_I_C[51])) + ((w_D_I_C[52] - w_D_I_C[52]) + (w_D_I_C[53] - w_D_I_C[53]))))))) + ((((((w_D_m[0] - w_D_m[0]) + ((w_D_m[1] - w_D_m[1]) + (w_D_m[2] - w_D_m[2]))) + (((w_D_m[3] - w_D_m[3]) + (w_D_m[4] - w_D_m[4])) + ((w_D_m[5] - w_D_m[5]) + (w_D_omega[0] - w_D_omega[0])))) + ((((w_D_omega[1] - w_D_omega[1]) + (w_D_omega[2] - w_D_omega[2])) + ((w_D_omega[3] - w_D_omega[3]) + (w_D_omega[4] - w_D_omega[4]))) + (((w_D_omega[5] - w_D_omega[5]) + (w_D_omega[6] - w_D_omega[6])) + ((w_D_omega[7] - w_D_omega[7]) + (w_D_omega[8] - w_D_omega[8]))))) + ((((w_D_omega[9] - w_D_omega[9]) + ((w_D_omega[10] - w_D_omega[10]) + (w_D_omega[11] - w_D_omega[11]))) + (((w_D_omega[12] - w_D_omega[12]) + (w_D_omega[13] - w_D_omega[13])) + ((w_D_omega[14] - w_D_omega[14]) + (w_D_omega[15] - w_D_omega[15])))) + ((((w_D_omega[16] - w_D_omega[16]) + (w_D_omega[17] - w_D_omega[17])) + ((w_D_omega_dot[0] - w_D_omega_dot[0]) + (w_D_omega_dot[1] - w_D_omega_dot[1]))) + (((w_D_omega_dot[2] - w_D_omega_dot[2]) + (w_D_omega_dot[3] - w_D_omega_dot[3])) + ((w_D_omega_dot[4] - w_D_omega_dot[4]) + (w_D_omega_dot[5] - w_D_omega_dot[5])))))) + (((((w_D_omega_dot[6] - w_D_omega_dot[6]) + ((w_D_omega_dot[7] - w_D_omega_dot[7]) + (w_D_omega_dot[8] - w_D_omega_dot[8]))) + (((w_D_omega_dot[9] - w_D_omega_dot[9]) + (w_D_omega_dot[10] - w_D_omega_dot[10])) + ((w_D_omega_dot[11] - w_D_omega_dot[11]) + (w_D_omega_dot[12] - w_D_omega_dot[12])))) + ((((w_D_omega_dot[13] - w_D_omega_dot[13]) + (w_D_omega_dot[14] - w_D_omega_dot[14])) + ((w_D_omega_dot[15] - w_D_omega_dot[15]) + (w_D_omega_dot[16] - w_D_omega_dot[16]))) + (((w_D_omega_dot[17] - w_D_omega_dot[17]) + (w_D_c_ddot[0] - w_D_c_ddot[0])) + ((w_D_c_ddot[1] - w_D_c_ddot[1]) + (w_D_c_ddot[2] - w_D_c_ddot[2]))))) + ((((w_D_c_ddot[3] - w_D_c_ddot[3]) + ((w_D_c_ddot[4] - w_D_c_ddot[4]) + (w_D_c_ddot[5] - w_D_c_ddot[5]))) + (((w_D_c_ddot[6] - w_D_c_ddot[6]) + (w_D_c_ddot[7] - w_D_c_ddot[7])) + ((w_D_c_ddot[8] - w_D_c_ddot[8]) + (w_D_c_ddot[9] - w_D_c_ddot[9])))) + ((((w_D_c_ddot[10] - w_D_c_ddot[10]) + (w_D_c_ddot[11] - w_D_c_ddot[11])) + ((w_D_c_ddot[12] - w_D_c_ddot[12]) + (w_D_c_ddot[13] - w_D_c_ddot[13]))) + (((w_D_c_ddot[14] - w_D_c_ddot[14]) + (w_D_c_ddot[15] - w_D_c_ddot[15])) + ((w_D_c_ddot[16] - w_D_c_ddot[16]) + (w_D_c_ddot[17] - w_D_c_ddot[17]))))))));
+        if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
+            status |= RIGIDSYM_C_NONFINITE_RESULT;
+        return status;
+    }
+    return -1;
+}
+#endif
 
 RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians_f32(
     const float I_C[9],
@@ -1025,24 +1412,6 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians_f32(
     const float c_ddot[3],
     float w[6],    float w_D_I_C[54],    float w_D_m[6],    float w_D_omega[18],    float w_D_omega_dot[18],    float w_D_c_ddot[18])
 {
-    const float I_C_00 = I_C[0];
-    const float I_C_01 = I_C[1];
-    const float I_C_02 = I_C[2];
-    const float I_C_10 = I_C[3];
-    const float I_C_11 = I_C[4];
-    const float I_C_12 = I_C[5];
-    const float I_C_20 = I_C[6];
-    const float I_C_21 = I_C[7];
-    const float I_C_22 = I_C[8];
-    const float omega_0 = omega[0];
-    const float omega_1 = omega[1];
-    const float omega_2 = omega[2];
-    const float omega_dot_0 = omega_dot[0];
-    const float omega_dot_1 = omega_dot[1];
-    const float omega_dot_2 = omega_dot[2];
-    const float c_ddot_0 = c_ddot[0];
-    const float c_ddot_1 = c_ddot[1];
-    const float c_ddot_2 = c_ddot[2];
     uint32_t odd = 0;
     int status = 0, singular = 0;
     float finite = 0.0f;
@@ -1070,10 +1439,35 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians_f32(
         for (j = 0; j < 5; ++j)
             if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
                 status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_RESCALE_F
+        if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
+            const int r_ = rigidsym_c_newton_euler_wrench_with_jacobians_f32_rescue(I_C, m, omega, omega_dot, c_ddot, w, w_D_I_C, w_D_m, w_D_omega, w_D_omega_dot, w_D_c_ddot);
+            if (r_ >= 0)
+                return r_;
+        }
+#endif
     }
 #else
     (void)odd;
 #endif
+    const float I_C_00 = I_C[0];
+    const float I_C_01 = I_C[1];
+    const float I_C_02 = I_C[2];
+    const float I_C_10 = I_C[3];
+    const float I_C_11 = I_C[4];
+    const float I_C_12 = I_C[5];
+    const float I_C_20 = I_C[6];
+    const float I_C_21 = I_C[7];
+    const float I_C_22 = I_C[8];
+    const float omega_0 = omega[0];
+    const float omega_1 = omega[1];
+    const float omega_2 = omega[2];
+    const float omega_dot_0 = omega_dot[0];
+    const float omega_dot_1 = omega_dot[1];
+    const float omega_dot_2 = omega_dot[2];
+    const float c_ddot_0 = c_ddot[0];
+    const float c_ddot_1 = c_ddot[1];
+    const float c_ddot_2 = c_ddot[2];
     {
         const float x0 = I_C_21*omega_1;
         const float x1 = I_C_20*omega_0;
@@ -1360,7 +1754,7 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians_f32(
 
 
 RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians_f32_batch(
-    size_t n,
+    size_t count,
     const float *I_C,
     const float *m,
     const float *omega,
@@ -1374,24 +1768,24 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians_f32_batch(
     float *w_D_c_ddot,
     int *status)
 {
-    int all = 0;
-    size_t i;
-    for (i = 0; i < n; ++i) {
-        const int s = rigidsym_c_newton_euler_wrench_with_jacobians_f32(
-            I_C + 9 * i,
-            m[i],
-            omega + 3 * i,
-            omega_dot + 3 * i,
-            c_ddot + 3 * i,
-            w + 6 * i,
-            w_D_I_C + 54 * i,
-            w_D_m + 6 * i,
-            w_D_omega + 18 * i,
-            w_D_omega_dot + 18 * i,
-            w_D_c_ddot + 18 * i);
+    int all_ = 0;
+    size_t i_;
+    for (i_ = 0; i_ < count; ++i_) {
+        const int s_ = rigidsym_c_newton_euler_wrench_with_jacobians_f32(
+            I_C + 9 * i_,
+            m[i_],
+            omega + 3 * i_,
+            omega_dot + 3 * i_,
+            c_ddot + 3 * i_,
+            w + 6 * i_,
+            w_D_I_C + 54 * i_,
+            w_D_m + 6 * i_,
+            w_D_omega + 18 * i_,
+            w_D_omega_dot + 18 * i_,
+            w_D_c_ddot + 18 * i_);
         if (status)
-            status[i] = s;
-        all |= s;
+            status[i_] = s_;
+        all_ |= s_;
     }
-    return all;
+    return all_;
 }

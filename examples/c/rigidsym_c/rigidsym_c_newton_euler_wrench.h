@@ -31,6 +31,9 @@ RIGIDSYM_C_BEGIN_DECLS
  * Returns: the status, 0 or the OR of RIGIDSYM_C_SINGULAR, RIGIDSYM_C_NONFINITE_INPUT,
  * RIGIDSYM_C_NONFINITE_RESULT, RIGIDSYM_C_EXTREME_INPUT (rigidsym_c_common.h).
  * Constraints ("unit", "rotation", ...) are the caller's to meet: they are not checked.
+ * Extreme inputs without a wider type (the float function; the double one where long
+ * double is double): exact power-of-two rescaling of I_C; of m; of c_ddot
+ * (the outputs are homogeneous in each), so their extreme magnitudes give status 0.
  */
 RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench(
     const double I_C[9],
@@ -41,7 +44,11 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench(
     double w[6]);
 
 /* newton_euler_wrench in float arithmetic only (float literals, sinf/cosf/sqrtf: no
- * double operation, for FPUs without double); arguments, outputs, status as above. */
+ * double operation, for FPUs without double); arguments, outputs, status as above.
+ * Accuracy: each output within 1.0 u (kappa + 1) of the exact value,
+ * normwise relative, u = 2^-24, kappa the output's condition number (measured by
+ * benchmarks/c_float_bounds.py: worst 0.384 over 106 points of the
+ * accuracy harness's float32 regimes, against arb at the exact point). */
 RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_f32(
     const float I_C[9],
     float m,
@@ -50,11 +57,12 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_f32(
     const float c_ddot[3],
     float w[6]);
 
-/* The same over n samples, one after the other (no heap, no stack beyond one call's):
- * each argument and output holds n rows of its per-sample size, row-major ([n][size]);
+/* The same over count samples, one after the other (no heap, no stack beyond one
+ * call's): each argument and output holds count rows of its per-sample size, row-major
+ * ([count][size]);
  * status[i] (status may be NULL) receives sample i's status; returns their OR. */
 RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_batch(
-    size_t n,
+    size_t count,
     const double *I_C,
     const double *m,
     const double *omega,
@@ -63,7 +71,7 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_batch(
     double *w,
     int *status);
 RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_f32_batch(
-    size_t n,
+    size_t count,
     const float *I_C,
     const float *m,
     const float *omega,
@@ -100,6 +108,9 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_f32_batch(
  * Returns: the status, 0 or the OR of RIGIDSYM_C_SINGULAR, RIGIDSYM_C_NONFINITE_INPUT,
  * RIGIDSYM_C_NONFINITE_RESULT, RIGIDSYM_C_EXTREME_INPUT (rigidsym_c_common.h).
  * Constraints ("unit", "rotation", ...) are the caller's to meet: they are not checked.
+ * Extreme inputs without a wider type (the float function; the double one where long
+ * double is double): exact power-of-two rescaling of I_C; of m; of c_ddot
+ * (the outputs are homogeneous in each), so their extreme magnitudes give status 0.
  */
 RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians(
     const double I_C[9],
@@ -110,7 +121,11 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians(
     double w[6],    double w_D_I_C[54],    double w_D_m[6],    double w_D_omega[18],    double w_D_omega_dot[18],    double w_D_c_ddot[18]);
 
 /* newton_euler_wrench_with_jacobians in float arithmetic only (float literals, sinf/cosf/sqrtf: no
- * double operation, for FPUs without double); arguments, outputs, status as above. */
+ * double operation, for FPUs without double); arguments, outputs, status as above.
+ * Accuracy: each output within 1.5 u (kappa + 1) of the exact value,
+ * normwise relative, u = 2^-24, kappa the output's condition number (measured by
+ * benchmarks/c_float_bounds.py: worst 0.568 over 106 points of the
+ * accuracy harness's float32 regimes, against arb at the exact point). */
 RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians_f32(
     const float I_C[9],
     float m,
@@ -119,11 +134,12 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians_f32(
     const float c_ddot[3],
     float w[6],    float w_D_I_C[54],    float w_D_m[6],    float w_D_omega[18],    float w_D_omega_dot[18],    float w_D_c_ddot[18]);
 
-/* The same over n samples, one after the other (no heap, no stack beyond one call's):
- * each argument and output holds n rows of its per-sample size, row-major ([n][size]);
+/* The same over count samples, one after the other (no heap, no stack beyond one
+ * call's): each argument and output holds count rows of its per-sample size, row-major
+ * ([count][size]);
  * status[i] (status may be NULL) receives sample i's status; returns their OR. */
 RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians_batch(
-    size_t n,
+    size_t count,
     const double *I_C,
     const double *m,
     const double *omega,
@@ -137,7 +153,7 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians_batch(
     double *w_D_c_ddot,
     int *status);
 RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians_f32_batch(
-    size_t n,
+    size_t count,
     const float *I_C,
     const float *m,
     const float *omega,

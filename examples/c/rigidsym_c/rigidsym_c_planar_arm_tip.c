@@ -45,6 +45,54 @@ static int rigidsym_c_planar_arm_tip_wide(
 }
 #endif
 
+
+#if RIGIDSYM_C_RESCALE_D
+/* rigidsym_c_planar_arm_tip at extreme inputs (RIGIDSYM_C_EXTREME_INPUT, finite): the status and
+ * outputs of the rescue below, or -1 where it cannot take the sample (the caller then goes
+ * on as without it). Kept out of the scalar function, so that its fast path stays a leaf. */
+static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_rescue(
+    double q1,
+    double q2,
+    double l1,
+    double l2,
+    double p[2])
+{
+    int status;
+    double finite;
+    /* every output is homogeneous in the arguments of each step below: scale them
+     * by the power of two 2^-e that brings their largest component into [1/2, 1)
+     * (exact), evaluate, scale the outputs back by 2^(e d) (homogeneous.py); only
+     * when every component is then of ordinary magnitude (else the flag stays) */
+    int still_ = 0;
+    int rs_e0 = 0;
+    double rs_l1;
+    double rs_l2;
+    {
+        double m_ = 0.0;
+        m_ = fabs(l1) > m_ ? fabs(l1) : m_;
+        m_ = fabs(l2) > m_ ? fabs(l2) : m_;
+        if (m_ > 0.0)
+            (void)frexp(m_, &rs_e0);
+        rs_l1 = ldexp(l1, -rs_e0);
+        still_ |= rigidsym_c_extreme_d(&rs_l1, 1);
+        rs_l2 = ldexp(l2, -rs_e0);
+        still_ |= rigidsym_c_extreme_d(&rs_l2, 1);
+    }
+    still_ |= rigidsym_c_extreme_d(&q1, 1);
+    still_ |= rigidsym_c_extreme_d(&q2, 1);
+    if (!still_) {  /* every input now ordinary: the function itself, scaled back */
+        status = rigidsym_c_planar_arm_tip(q1, q2, rs_l1, rs_l2, p);
+        p[0] = ldexp(p[0], 1 * rs_e0);
+        p[1] = ldexp(p[1], 1 * rs_e0);
+        finite = ((p[0] - p[0]) + (p[1] - p[1]));
+        if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
+            status |= RIGIDSYM_C_NONFINITE_RESULT;
+        return status;
+    }
+    return -1;
+}
+#endif
+
 RIGIDSYM_C_API int rigidsym_c_planar_arm_tip(
     double q1,
     double q2,
@@ -80,6 +128,13 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip(
         if (status == RIGIDSYM_C_EXTREME_INPUT)
             return rigidsym_c_planar_arm_tip_wide(q1, q2, l1, l2, p);
 #endif
+#if RIGIDSYM_C_RESCALE_D
+        if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
+            const int r_ = rigidsym_c_planar_arm_tip_rescue(q1, q2, l1, l2, p);
+            if (r_ >= 0)
+                return r_;
+        }
+#endif
     }
 #else
     (void)odd;
@@ -111,7 +166,7 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip(
 
 
 RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_batch(
-    size_t n,
+    size_t count,
     const double *q1,
     const double *q2,
     const double *l1,
@@ -119,21 +174,69 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_batch(
     double *p,
     int *status)
 {
-    int all = 0;
-    size_t i;
-    for (i = 0; i < n; ++i) {
-        const int s = rigidsym_c_planar_arm_tip(
-            q1[i],
-            q2[i],
-            l1[i],
-            l2[i],
-            p + 2 * i);
+    int all_ = 0;
+    size_t i_;
+    for (i_ = 0; i_ < count; ++i_) {
+        const int s_ = rigidsym_c_planar_arm_tip(
+            q1[i_],
+            q2[i_],
+            l1[i_],
+            l2[i_],
+            p + 2 * i_);
         if (status)
-            status[i] = s;
-        all |= s;
+            status[i_] = s_;
+        all_ |= s_;
     }
-    return all;
+    return all_;
 }
+
+
+#if RIGIDSYM_C_RESCALE_F
+/* rigidsym_c_planar_arm_tip_f32 at extreme inputs (RIGIDSYM_C_EXTREME_INPUT, finite): the status and
+ * outputs of the rescue below, or -1 where it cannot take the sample (the caller then goes
+ * on as without it). Kept out of the scalar function, so that its fast path stays a leaf. */
+static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_f32_rescue(
+    float q1,
+    float q2,
+    float l1,
+    float l2,
+    float p[2])
+{
+    int status;
+    float finite;
+    /* every output is homogeneous in the arguments of each step below: scale them
+     * by the power of two 2^-e that brings their largest component into [1/2, 1)
+     * (exact), evaluate, scale the outputs back by 2^(e d) (homogeneous.py); only
+     * when every component is then of ordinary magnitude (else the flag stays) */
+    int still_ = 0;
+    int rs_e0 = 0;
+    float rs_l1;
+    float rs_l2;
+    {
+        float m_ = 0.0f;
+        m_ = fabsf(l1) > m_ ? fabsf(l1) : m_;
+        m_ = fabsf(l2) > m_ ? fabsf(l2) : m_;
+        if (m_ > 0.0f)
+            (void)frexpf(m_, &rs_e0);
+        rs_l1 = ldexpf(l1, -rs_e0);
+        still_ |= rigidsym_c_extreme_f(&rs_l1, 1);
+        rs_l2 = ldexpf(l2, -rs_e0);
+        still_ |= rigidsym_c_extreme_f(&rs_l2, 1);
+    }
+    still_ |= rigidsym_c_extreme_f(&q1, 1);
+    still_ |= rigidsym_c_extreme_f(&q2, 1);
+    if (!still_) {  /* every input now ordinary: the function itself, scaled back */
+        status = rigidsym_c_planar_arm_tip_f32(q1, q2, rs_l1, rs_l2, p);
+        p[0] = ldexpf(p[0], 1 * rs_e0);
+        p[1] = ldexpf(p[1], 1 * rs_e0);
+        finite = ((p[0] - p[0]) + (p[1] - p[1]));
+        if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
+            status |= RIGIDSYM_C_NONFINITE_RESULT;
+        return status;
+    }
+    return -1;
+}
+#endif
 
 RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_f32(
     float q1,
@@ -166,6 +269,13 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_f32(
         for (j = 0; j < 4; ++j)
             if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
                 status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_RESCALE_F
+        if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
+            const int r_ = rigidsym_c_planar_arm_tip_f32_rescue(q1, q2, l1, l2, p);
+            if (r_ >= 0)
+                return r_;
+        }
+#endif
     }
 #else
     (void)odd;
@@ -197,7 +307,7 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_f32(
 
 
 RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_f32_batch(
-    size_t n,
+    size_t count,
     const float *q1,
     const float *q2,
     const float *l1,
@@ -205,20 +315,20 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_f32_batch(
     float *p,
     int *status)
 {
-    int all = 0;
-    size_t i;
-    for (i = 0; i < n; ++i) {
-        const int s = rigidsym_c_planar_arm_tip_f32(
-            q1[i],
-            q2[i],
-            l1[i],
-            l2[i],
-            p + 2 * i);
+    int all_ = 0;
+    size_t i_;
+    for (i_ = 0; i_ < count; ++i_) {
+        const int s_ = rigidsym_c_planar_arm_tip_f32(
+            q1[i_],
+            q2[i_],
+            l1[i_],
+            l2[i_],
+            p + 2 * i_);
         if (status)
-            status[i] = s;
-        all |= s;
+            status[i_] = s_;
+        all_ |= s_;
     }
-    return all;
+    return all_;
 }
 
 #if RIGIDSYM_C_WIDE
@@ -286,6 +396,62 @@ static int rigidsym_c_planar_arm_tip_with_jacobians_wide(
 }
 #endif
 
+
+#if RIGIDSYM_C_RESCALE_D
+/* rigidsym_c_planar_arm_tip_with_jacobians at extreme inputs (RIGIDSYM_C_EXTREME_INPUT, finite): the status and
+ * outputs of the rescue below, or -1 where it cannot take the sample (the caller then goes
+ * on as without it). Kept out of the scalar function, so that its fast path stays a leaf. */
+static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_with_jacobians_rescue(
+    double q1,
+    double q2,
+    double l1,
+    double l2,
+    double p[2],
+    double p_D_q1[2],
+    double p_D_q2[2],
+    double p_D_l1[2],
+    double p_D_l2[2])
+{
+    int status;
+    double finite;
+    /* every output is homogeneous in the arguments of each step below: scale them
+     * by the power of two 2^-e that brings their largest component into [1/2, 1)
+     * (exact), evaluate, scale the outputs back by 2^(e d) (homogeneous.py); only
+     * when every component is then of ordinary magnitude (else the flag stays) */
+    int still_ = 0;
+    int rs_e0 = 0;
+    double rs_l1;
+    double rs_l2;
+    {
+        double m_ = 0.0;
+        m_ = fabs(l1) > m_ ? fabs(l1) : m_;
+        m_ = fabs(l2) > m_ ? fabs(l2) : m_;
+        if (m_ > 0.0)
+            (void)frexp(m_, &rs_e0);
+        rs_l1 = ldexp(l1, -rs_e0);
+        still_ |= rigidsym_c_extreme_d(&rs_l1, 1);
+        rs_l2 = ldexp(l2, -rs_e0);
+        still_ |= rigidsym_c_extreme_d(&rs_l2, 1);
+    }
+    still_ |= rigidsym_c_extreme_d(&q1, 1);
+    still_ |= rigidsym_c_extreme_d(&q2, 1);
+    if (!still_) {  /* every input now ordinary: the function itself, scaled back */
+        status = rigidsym_c_planar_arm_tip_with_jacobians(q1, q2, rs_l1, rs_l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
+        p[0] = ldexp(p[0], 1 * rs_e0);
+        p[1] = ldexp(p[1], 1 * rs_e0);
+        p_D_q1[0] = ldexp(p_D_q1[0], 1 * rs_e0);
+        p_D_q1[1] = ldexp(p_D_q1[1], 1 * rs_e0);
+        p_D_q2[0] = ldexp(p_D_q2[0], 1 * rs_e0);
+        p_D_q2[1] = ldexp(p_D_q2[1], 1 * rs_e0);
+        finite = ((((p[0] - p[0]) + (p[1] - p[1])) + ((p_D_q1[0] - p_D_q1[0]) + ((p_D_q1[1] - p_D_q1[1]) + (p_D_q2[0] - p_D_q2[0])))) + (((p_D_q2[1] - p_D_q2[1]) + (p_D_l1[0] - p_D_l1[0])) + ((p_D_l1[1] - p_D_l1[1]) + ((p_D_l2[0] - p_D_l2[0]) + (p_D_l2[1] - p_D_l2[1])))));
+        if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
+            status |= RIGIDSYM_C_NONFINITE_RESULT;
+        return status;
+    }
+    return -1;
+}
+#endif
+
 RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians(
     double q1,
     double q2,
@@ -320,6 +486,13 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians(
 #if RIGIDSYM_C_WIDE
         if (status == RIGIDSYM_C_EXTREME_INPUT)
             return rigidsym_c_planar_arm_tip_with_jacobians_wide(q1, q2, l1, l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
+#endif
+#if RIGIDSYM_C_RESCALE_D
+        if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
+            const int r_ = rigidsym_c_planar_arm_tip_with_jacobians_rescue(q1, q2, l1, l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
+            if (r_ >= 0)
+                return r_;
+        }
 #endif
     }
 #else
@@ -376,7 +549,7 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians(
 
 
 RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians_batch(
-    size_t n,
+    size_t count,
     const double *q1,
     const double *q2,
     const double *l1,
@@ -388,25 +561,81 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians_batch(
     double *p_D_l2,
     int *status)
 {
-    int all = 0;
-    size_t i;
-    for (i = 0; i < n; ++i) {
-        const int s = rigidsym_c_planar_arm_tip_with_jacobians(
-            q1[i],
-            q2[i],
-            l1[i],
-            l2[i],
-            p + 2 * i,
-            p_D_q1 + 2 * i,
-            p_D_q2 + 2 * i,
-            p_D_l1 + 2 * i,
-            p_D_l2 + 2 * i);
+    int all_ = 0;
+    size_t i_;
+    for (i_ = 0; i_ < count; ++i_) {
+        const int s_ = rigidsym_c_planar_arm_tip_with_jacobians(
+            q1[i_],
+            q2[i_],
+            l1[i_],
+            l2[i_],
+            p + 2 * i_,
+            p_D_q1 + 2 * i_,
+            p_D_q2 + 2 * i_,
+            p_D_l1 + 2 * i_,
+            p_D_l2 + 2 * i_);
         if (status)
-            status[i] = s;
-        all |= s;
+            status[i_] = s_;
+        all_ |= s_;
     }
-    return all;
+    return all_;
 }
+
+
+#if RIGIDSYM_C_RESCALE_F
+/* rigidsym_c_planar_arm_tip_with_jacobians_f32 at extreme inputs (RIGIDSYM_C_EXTREME_INPUT, finite): the status and
+ * outputs of the rescue below, or -1 where it cannot take the sample (the caller then goes
+ * on as without it). Kept out of the scalar function, so that its fast path stays a leaf. */
+static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_with_jacobians_f32_rescue(
+    float q1,
+    float q2,
+    float l1,
+    float l2,
+    float p[2],
+    float p_D_q1[2],
+    float p_D_q2[2],
+    float p_D_l1[2],
+    float p_D_l2[2])
+{
+    int status;
+    float finite;
+    /* every output is homogeneous in the arguments of each step below: scale them
+     * by the power of two 2^-e that brings their largest component into [1/2, 1)
+     * (exact), evaluate, scale the outputs back by 2^(e d) (homogeneous.py); only
+     * when every component is then of ordinary magnitude (else the flag stays) */
+    int still_ = 0;
+    int rs_e0 = 0;
+    float rs_l1;
+    float rs_l2;
+    {
+        float m_ = 0.0f;
+        m_ = fabsf(l1) > m_ ? fabsf(l1) : m_;
+        m_ = fabsf(l2) > m_ ? fabsf(l2) : m_;
+        if (m_ > 0.0f)
+            (void)frexpf(m_, &rs_e0);
+        rs_l1 = ldexpf(l1, -rs_e0);
+        still_ |= rigidsym_c_extreme_f(&rs_l1, 1);
+        rs_l2 = ldexpf(l2, -rs_e0);
+        still_ |= rigidsym_c_extreme_f(&rs_l2, 1);
+    }
+    still_ |= rigidsym_c_extreme_f(&q1, 1);
+    still_ |= rigidsym_c_extreme_f(&q2, 1);
+    if (!still_) {  /* every input now ordinary: the function itself, scaled back */
+        status = rigidsym_c_planar_arm_tip_with_jacobians_f32(q1, q2, rs_l1, rs_l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
+        p[0] = ldexpf(p[0], 1 * rs_e0);
+        p[1] = ldexpf(p[1], 1 * rs_e0);
+        p_D_q1[0] = ldexpf(p_D_q1[0], 1 * rs_e0);
+        p_D_q1[1] = ldexpf(p_D_q1[1], 1 * rs_e0);
+        p_D_q2[0] = ldexpf(p_D_q2[0], 1 * rs_e0);
+        p_D_q2[1] = ldexpf(p_D_q2[1], 1 * rs_e0);
+        finite = ((((p[0] - p[0]) + (p[1] - p[1])) + ((p_D_q1[0] - p_D_q1[0]) + ((p_D_q1[1] - p_D_q1[1]) + (p_D_q2[0] - p_D_q2[0])))) + (((p_D_q2[1] - p_D_q2[1]) + (p_D_l1[0] - p_D_l1[0])) + ((p_D_l1[1] - p_D_l1[1]) + ((p_D_l2[0] - p_D_l2[0]) + (p_D_l2[1] - p_D_l2[1])))));
+        if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
+            status |= RIGIDSYM_C_NONFINITE_RESULT;
+        return status;
+    }
+    return -1;
+}
+#endif
 
 RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians_f32(
     float q1,
@@ -439,6 +668,13 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians_f32(
         for (j = 0; j < 4; ++j)
             if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
                 status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_RESCALE_F
+        if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
+            const int r_ = rigidsym_c_planar_arm_tip_with_jacobians_f32_rescue(q1, q2, l1, l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
+            if (r_ >= 0)
+                return r_;
+        }
+#endif
     }
 #else
     (void)odd;
@@ -494,7 +730,7 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians_f32(
 
 
 RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians_f32_batch(
-    size_t n,
+    size_t count,
     const float *q1,
     const float *q2,
     const float *l1,
@@ -506,22 +742,22 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians_f32_batch(
     float *p_D_l2,
     int *status)
 {
-    int all = 0;
-    size_t i;
-    for (i = 0; i < n; ++i) {
-        const int s = rigidsym_c_planar_arm_tip_with_jacobians_f32(
-            q1[i],
-            q2[i],
-            l1[i],
-            l2[i],
-            p + 2 * i,
-            p_D_q1 + 2 * i,
-            p_D_q2 + 2 * i,
-            p_D_l1 + 2 * i,
-            p_D_l2 + 2 * i);
+    int all_ = 0;
+    size_t i_;
+    for (i_ = 0; i_ < count; ++i_) {
+        const int s_ = rigidsym_c_planar_arm_tip_with_jacobians_f32(
+            q1[i_],
+            q2[i_],
+            l1[i_],
+            l2[i_],
+            p + 2 * i_,
+            p_D_q1 + 2 * i_,
+            p_D_q2 + 2 * i_,
+            p_D_l1 + 2 * i_,
+            p_D_l2 + 2 * i_);
         if (status)
-            status[i] = s;
-        all |= s;
+            status[i_] = s_;
+        all_ |= s_;
     }
-    return all;
+    return all_;
 }

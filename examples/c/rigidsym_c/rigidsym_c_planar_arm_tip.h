@@ -30,6 +30,9 @@ RIGIDSYM_C_BEGIN_DECLS
  * Returns: the status, 0 or the OR of RIGIDSYM_C_SINGULAR, RIGIDSYM_C_NONFINITE_INPUT,
  * RIGIDSYM_C_NONFINITE_RESULT, RIGIDSYM_C_EXTREME_INPUT (rigidsym_c_common.h).
  * Constraints ("unit", "rotation", ...) are the caller's to meet: they are not checked.
+ * Extreme inputs without a wider type (the float function; the double one where long
+ * double is double): exact power-of-two rescaling of l1 and l2
+ * (the outputs are homogeneous in each), so their extreme magnitudes give status 0.
  */
 RIGIDSYM_C_API int rigidsym_c_planar_arm_tip(
     double q1,
@@ -39,7 +42,11 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip(
     double p[2]);
 
 /* planar_arm_tip in float arithmetic only (float literals, sinf/cosf/sqrtf: no
- * double operation, for FPUs without double); arguments, outputs, status as above. */
+ * double operation, for FPUs without double); arguments, outputs, status as above.
+ * Accuracy: each output within 1.5 u (kappa + 1) of the exact value,
+ * normwise relative, u = 2^-24, kappa the output's condition number (measured by
+ * benchmarks/c_float_bounds.py: worst 0.647 over 66 points of the
+ * accuracy harness's float32 regimes, against arb at the exact point). */
 RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_f32(
     float q1,
     float q2,
@@ -47,11 +54,12 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_f32(
     float l2,
     float p[2]);
 
-/* The same over n samples, one after the other (no heap, no stack beyond one call's):
- * each argument and output holds n rows of its per-sample size, row-major ([n][size]);
+/* The same over count samples, one after the other (no heap, no stack beyond one
+ * call's): each argument and output holds count rows of its per-sample size, row-major
+ * ([count][size]);
  * status[i] (status may be NULL) receives sample i's status; returns their OR. */
 RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_batch(
-    size_t n,
+    size_t count,
     const double *q1,
     const double *q2,
     const double *l1,
@@ -59,7 +67,7 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_batch(
     double *p,
     int *status);
 RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_f32_batch(
-    size_t n,
+    size_t count,
     const float *q1,
     const float *q2,
     const float *l1,
@@ -93,6 +101,9 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_f32_batch(
  * Returns: the status, 0 or the OR of RIGIDSYM_C_SINGULAR, RIGIDSYM_C_NONFINITE_INPUT,
  * RIGIDSYM_C_NONFINITE_RESULT, RIGIDSYM_C_EXTREME_INPUT (rigidsym_c_common.h).
  * Constraints ("unit", "rotation", ...) are the caller's to meet: they are not checked.
+ * Extreme inputs without a wider type (the float function; the double one where long
+ * double is double): exact power-of-two rescaling of l1 and l2
+ * (the outputs are homogeneous in each), so their extreme magnitudes give status 0.
  */
 RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians(
     double q1,
@@ -102,7 +113,11 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians(
     double p[2],    double p_D_q1[2],    double p_D_q2[2],    double p_D_l1[2],    double p_D_l2[2]);
 
 /* planar_arm_tip_with_jacobians in float arithmetic only (float literals, sinf/cosf/sqrtf: no
- * double operation, for FPUs without double); arguments, outputs, status as above. */
+ * double operation, for FPUs without double); arguments, outputs, status as above.
+ * Accuracy: each output within 1.5 u (kappa + 1) of the exact value,
+ * normwise relative, u = 2^-24, kappa the output's condition number (measured by
+ * benchmarks/c_float_bounds.py: worst 0.675 over 66 points of the
+ * accuracy harness's float32 regimes, against arb at the exact point). */
 RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians_f32(
     float q1,
     float q2,
@@ -110,11 +125,12 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians_f32(
     float l2,
     float p[2],    float p_D_q1[2],    float p_D_q2[2],    float p_D_l1[2],    float p_D_l2[2]);
 
-/* The same over n samples, one after the other (no heap, no stack beyond one call's):
- * each argument and output holds n rows of its per-sample size, row-major ([n][size]);
+/* The same over count samples, one after the other (no heap, no stack beyond one
+ * call's): each argument and output holds count rows of its per-sample size, row-major
+ * ([count][size]);
  * status[i] (status may be NULL) receives sample i's status; returns their OR. */
 RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians_batch(
-    size_t n,
+    size_t count,
     const double *q1,
     const double *q2,
     const double *l1,
@@ -126,7 +142,7 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians_batch(
     double *p_D_l2,
     int *status);
 RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians_f32_batch(
-    size_t n,
+    size_t count,
     const float *q1,
     const float *q2,
     const float *l1,

@@ -60,14 +60,11 @@ static int rigidsym_c_quaternion_rotation_wide(
 }
 #endif
 
+
 RIGIDSYM_C_API int rigidsym_c_quaternion_rotation(
     const double q[4],
     double Q[9])
 {
-    const double q_0 = q[0];
-    const double q_1 = q[1];
-    const double q_2 = q[2];
-    const double q_3 = q[3];
     uint64_t odd = 0;
     int status = 0, singular = 0;
     double finite = 0.0;
@@ -97,6 +94,10 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation(
 #else
     (void)odd;
 #endif
+    const double q_0 = q[0];
+    const double q_1 = q[1];
+    const double q_2 = q[2];
+    const double q_3 = q[3];
     {
         const double x0 = 2.0*(q_2*q_2);
         const double x1 = 2.0*(q_3*q_3) - 1.0;
@@ -145,32 +146,29 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation(
 
 
 RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_batch(
-    size_t n,
+    size_t count,
     const double *q,
     double *Q,
     int *status)
 {
-    int all = 0;
-    size_t i;
-    for (i = 0; i < n; ++i) {
-        const int s = rigidsym_c_quaternion_rotation(
-            q + 4 * i,
-            Q + 9 * i);
+    int all_ = 0;
+    size_t i_;
+    for (i_ = 0; i_ < count; ++i_) {
+        const int s_ = rigidsym_c_quaternion_rotation(
+            q + 4 * i_,
+            Q + 9 * i_);
         if (status)
-            status[i] = s;
-        all |= s;
+            status[i_] = s_;
+        all_ |= s_;
     }
-    return all;
+    return all_;
 }
+
 
 RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_f32(
     const float q[4],
     float Q[9])
 {
-    const float q_0 = q[0];
-    const float q_1 = q[1];
-    const float q_2 = q[2];
-    const float q_3 = q[3];
     uint32_t odd = 0;
     int status = 0, singular = 0;
     float finite = 0.0f;
@@ -196,6 +194,10 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_f32(
 #else
     (void)odd;
 #endif
+    const float q_0 = q[0];
+    const float q_1 = q[1];
+    const float q_2 = q[2];
+    const float q_3 = q[3];
     {
         const float x0 = 2.0f*(q_2*q_2);
         const float x1 = 2.0f*(q_3*q_3) - 1.0f;
@@ -244,22 +246,22 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_f32(
 
 
 RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_f32_batch(
-    size_t n,
+    size_t count,
     const float *q,
     float *Q,
     int *status)
 {
-    int all = 0;
-    size_t i;
-    for (i = 0; i < n; ++i) {
-        const int s = rigidsym_c_quaternion_rotation_f32(
-            q + 4 * i,
-            Q + 9 * i);
+    int all_ = 0;
+    size_t i_;
+    for (i_ = 0; i_ < count; ++i_) {
+        const int s_ = rigidsym_c_quaternion_rotation_f32(
+            q + 4 * i_,
+            Q + 9 * i_);
         if (status)
-            status[i] = s;
-        all |= s;
+            status[i_] = s_;
+        all_ |= s_;
     }
-    return all;
+    return all_;
 }
 
 #if RIGIDSYM_C_WIDE
@@ -393,14 +395,11 @@ static int rigidsym_c_quaternion_rotation_with_jacobians_wide(
 }
 #endif
 
+
 RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_with_jacobians(
     const double q[4],
     double Q[9],    double Q_D_q[36])
 {
-    const double q_0 = q[0];
-    const double q_1 = q[1];
-    const double q_2 = q[2];
-    const double q_3 = q[3];
     uint64_t odd = 0;
     int status = 0, singular = 0;
     double finite = 0.0;
@@ -430,6 +429,10 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_with_jacobians(
 #else
     (void)odd;
 #endif
+    const double q_0 = q[0];
+    const double q_1 = q[1];
+    const double q_2 = q[2];
+    const double q_3 = q[3];
     {
         const double x0 = 2.0*(q_2*q_2);
         const double x1 = 2.0*(q_3*q_3) - 1.0;
@@ -556,34 +559,31 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_with_jacobians(
 
 
 RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_with_jacobians_batch(
-    size_t n,
+    size_t count,
     const double *q,
     double *Q,
     double *Q_D_q,
     int *status)
 {
-    int all = 0;
-    size_t i;
-    for (i = 0; i < n; ++i) {
-        const int s = rigidsym_c_quaternion_rotation_with_jacobians(
-            q + 4 * i,
-            Q + 9 * i,
-            Q_D_q + 36 * i);
+    int all_ = 0;
+    size_t i_;
+    for (i_ = 0; i_ < count; ++i_) {
+        const int s_ = rigidsym_c_quaternion_rotation_with_jacobians(
+            q + 4 * i_,
+            Q + 9 * i_,
+            Q_D_q + 36 * i_);
         if (status)
-            status[i] = s;
-        all |= s;
+            status[i_] = s_;
+        all_ |= s_;
     }
-    return all;
+    return all_;
 }
+
 
 RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_with_jacobians_f32(
     const float q[4],
     float Q[9],    float Q_D_q[36])
 {
-    const float q_0 = q[0];
-    const float q_1 = q[1];
-    const float q_2 = q[2];
-    const float q_3 = q[3];
     uint32_t odd = 0;
     int status = 0, singular = 0;
     float finite = 0.0f;
@@ -609,6 +609,10 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_with_jacobians_f32(
 #else
     (void)odd;
 #endif
+    const float q_0 = q[0];
+    const float q_1 = q[1];
+    const float q_2 = q[2];
+    const float q_3 = q[3];
     {
         const float x0 = 2.0f*(q_2*q_2);
         const float x1 = 2.0f*(q_3*q_3) - 1.0f;
@@ -735,22 +739,22 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_with_jacobians_f32(
 
 
 RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_with_jacobians_f32_batch(
-    size_t n,
+    size_t count,
     const float *q,
     float *Q,
     float *Q_D_q,
     int *status)
 {
-    int all = 0;
-    size_t i;
-    for (i = 0; i < n; ++i) {
-        const int s = rigidsym_c_quaternion_rotation_with_jacobians_f32(
-            q + 4 * i,
-            Q + 9 * i,
-            Q_D_q + 36 * i);
+    int all_ = 0;
+    size_t i_;
+    for (i_ = 0; i_ < count; ++i_) {
+        const int s_ = rigidsym_c_quaternion_rotation_with_jacobians_f32(
+            q + 4 * i_,
+            Q + 9 * i_,
+            Q_D_q + 36 * i_);
         if (status)
-            status[i] = s;
-        all |= s;
+            status[i_] = s_;
+        all_ |= s_;
     }
-    return all;
+    return all_;
 }

@@ -70,14 +70,12 @@ static int rigidsym_c_rotation_from_natural_invariants_wide(
 }
 #endif
 
+
 RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants(
     const double e[3],
     double phi,
     double Q[9])
 {
-    const double e_0 = e[0];
-    const double e_1 = e[1];
-    const double e_2 = e[2];
     uint64_t odd = 0;
     int status = 0, singular = 0;
     double finite = 0.0;
@@ -108,6 +106,9 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants(
 #else
     (void)odd;
 #endif
+    const double e_0 = e[0];
+    const double e_1 = e[1];
+    const double e_2 = e[2];
     {
         const double x0 = (e_0*e_0);
         const double x1 = (0.5)*phi;
@@ -164,34 +165,32 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants(
 
 
 RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_batch(
-    size_t n,
+    size_t count,
     const double *e,
     const double *phi,
     double *Q,
     int *status)
 {
-    int all = 0;
-    size_t i;
-    for (i = 0; i < n; ++i) {
-        const int s = rigidsym_c_rotation_from_natural_invariants(
-            e + 3 * i,
-            phi[i],
-            Q + 9 * i);
+    int all_ = 0;
+    size_t i_;
+    for (i_ = 0; i_ < count; ++i_) {
+        const int s_ = rigidsym_c_rotation_from_natural_invariants(
+            e + 3 * i_,
+            phi[i_],
+            Q + 9 * i_);
         if (status)
-            status[i] = s;
-        all |= s;
+            status[i_] = s_;
+        all_ |= s_;
     }
-    return all;
+    return all_;
 }
+
 
 RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_f32(
     const float e[3],
     float phi,
     float Q[9])
 {
-    const float e_0 = e[0];
-    const float e_1 = e[1];
-    const float e_2 = e[2];
     uint32_t odd = 0;
     int status = 0, singular = 0;
     float finite = 0.0f;
@@ -218,6 +217,9 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_f32(
 #else
     (void)odd;
 #endif
+    const float e_0 = e[0];
+    const float e_1 = e[1];
+    const float e_2 = e[2];
     {
         const float x0 = (e_0*e_0);
         const float x1 = (0.5f)*phi;
@@ -274,24 +276,24 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_f32(
 
 
 RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_f32_batch(
-    size_t n,
+    size_t count,
     const float *e,
     const float *phi,
     float *Q,
     int *status)
 {
-    int all = 0;
-    size_t i;
-    for (i = 0; i < n; ++i) {
-        const int s = rigidsym_c_rotation_from_natural_invariants_f32(
-            e + 3 * i,
-            phi[i],
-            Q + 9 * i);
+    int all_ = 0;
+    size_t i_;
+    for (i_ = 0; i_ < count; ++i_) {
+        const int s_ = rigidsym_c_rotation_from_natural_invariants_f32(
+            e + 3 * i_,
+            phi[i_],
+            Q + 9 * i_);
         if (status)
-            status[i] = s;
-        all |= s;
+            status[i_] = s_;
+        all_ |= s_;
     }
-    return all;
+    return all_;
 }
 
 #if RIGIDSYM_C_WIDE
@@ -442,14 +444,12 @@ static int rigidsym_c_rotation_from_natural_invariants_with_jacobians_wide(
 }
 #endif
 
+
 RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_with_jacobians(
     const double e[3],
     double phi,
     double Q[9],    double Q_D_e[27],    double Q_D_phi[9])
 {
-    const double e_0 = e[0];
-    const double e_1 = e[1];
-    const double e_2 = e[2];
     uint64_t odd = 0;
     int status = 0, singular = 0;
     double finite = 0.0;
@@ -480,6 +480,9 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_with_jacobians(
 #else
     (void)odd;
 #endif
+    const double e_0 = e[0];
+    const double e_1 = e[1];
+    const double e_2 = e[2];
     {
         const double x0 = (e_0*e_0);
         const double x1 = 1.0 - x0;
@@ -620,7 +623,7 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_with_jacobians(
 
 
 RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_with_jacobians_batch(
-    size_t n,
+    size_t count,
     const double *e,
     const double *phi,
     double *Q,
@@ -628,30 +631,28 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_with_jacobians_ba
     double *Q_D_phi,
     int *status)
 {
-    int all = 0;
-    size_t i;
-    for (i = 0; i < n; ++i) {
-        const int s = rigidsym_c_rotation_from_natural_invariants_with_jacobians(
-            e + 3 * i,
-            phi[i],
-            Q + 9 * i,
-            Q_D_e + 27 * i,
-            Q_D_phi + 9 * i);
+    int all_ = 0;
+    size_t i_;
+    for (i_ = 0; i_ < count; ++i_) {
+        const int s_ = rigidsym_c_rotation_from_natural_invariants_with_jacobians(
+            e + 3 * i_,
+            phi[i_],
+            Q + 9 * i_,
+            Q_D_e + 27 * i_,
+            Q_D_phi + 9 * i_);
         if (status)
-            status[i] = s;
-        all |= s;
+            status[i_] = s_;
+        all_ |= s_;
     }
-    return all;
+    return all_;
 }
+
 
 RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_with_jacobians_f32(
     const float e[3],
     float phi,
     float Q[9],    float Q_D_e[27],    float Q_D_phi[9])
 {
-    const float e_0 = e[0];
-    const float e_1 = e[1];
-    const float e_2 = e[2];
     uint32_t odd = 0;
     int status = 0, singular = 0;
     float finite = 0.0f;
@@ -678,6 +679,9 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_with_jacobians_f3
 #else
     (void)odd;
 #endif
+    const float e_0 = e[0];
+    const float e_1 = e[1];
+    const float e_2 = e[2];
     {
         const float x0 = (e_0*e_0);
         const float x1 = 1.0f - x0;
@@ -818,7 +822,7 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_with_jacobians_f3
 
 
 RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_with_jacobians_f32_batch(
-    size_t n,
+    size_t count,
     const float *e,
     const float *phi,
     float *Q,
@@ -826,18 +830,18 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_with_jacobians_f3
     float *Q_D_phi,
     int *status)
 {
-    int all = 0;
-    size_t i;
-    for (i = 0; i < n; ++i) {
-        const int s = rigidsym_c_rotation_from_natural_invariants_with_jacobians_f32(
-            e + 3 * i,
-            phi[i],
-            Q + 9 * i,
-            Q_D_e + 27 * i,
-            Q_D_phi + 9 * i);
+    int all_ = 0;
+    size_t i_;
+    for (i_ = 0; i_ < count; ++i_) {
+        const int s_ = rigidsym_c_rotation_from_natural_invariants_with_jacobians_f32(
+            e + 3 * i_,
+            phi[i_],
+            Q + 9 * i_,
+            Q_D_e + 27 * i_,
+            Q_D_phi + 9 * i_);
         if (status)
-            status[i] = s;
-        all |= s;
+            status[i_] = s_;
+        all_ |= s_;
     }
-    return all;
+    return all_;
 }

@@ -61,24 +61,62 @@ static int rigidsym_c_twist_transfer_wide(
 }
 #endif
 
+
+#if RIGIDSYM_C_RESCALE_D
+/* rigidsym_c_twist_transfer at extreme inputs (RIGIDSYM_C_EXTREME_INPUT, finite): the status and
+ * outputs of the rescue below, or -1 where it cannot take the sample (the caller then goes
+ * on as without it). Kept out of the scalar function, so that its fast path stays a leaf. */
+static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_rescue(
+    const double t_A[6],
+    const double a[3],
+    const double p[3],
+    double t_P[6])
+{
+    int status;
+    int j;
+    double finite;
+    /* every output is homogeneous in the arguments of each step below: scale them
+     * by the power of two 2^-e that brings their largest component into [1/2, 1)
+     * (exact), evaluate, scale the outputs back by 2^(e d) (homogeneous.py); only
+     * when every component is then of ordinary magnitude (else the flag stays) */
+    int still_ = 0;
+    int rs_e0 = 0;
+    double rs_t_A[6];
+    {
+        double m_ = 0.0;
+        for (j = 0; j < 6; ++j)
+            m_ = fabs(t_A[j]) > m_ ? fabs(t_A[j]) : m_;
+        if (m_ > 0.0)
+            (void)frexp(m_, &rs_e0);
+        for (j = 0; j < 6; ++j)
+            rs_t_A[j] = ldexp(t_A[j], -rs_e0);
+        still_ |= rigidsym_c_extreme_d(rs_t_A, 6);
+    }
+    still_ |= rigidsym_c_extreme_d(a, 3);
+    still_ |= rigidsym_c_extreme_d(p, 3);
+    if (!still_) {  /* every input now ordinary: the function itself, scaled back */
+        status = rigidsym_c_twist_transfer(rs_t_A, a, p, t_P);
+        t_P[0] = ldexp(t_P[0], 1 * rs_e0);
+        t_P[1] = ldexp(t_P[1], 1 * rs_e0);
+        t_P[2] = ldexp(t_P[2], 1 * rs_e0);
+        t_P[3] = ldexp(t_P[3], 1 * rs_e0);
+        t_P[4] = ldexp(t_P[4], 1 * rs_e0);
+        t_P[5] = ldexp(t_P[5], 1 * rs_e0);
+        finite = (((t_P[0] - t_P[0]) + ((t_P[1] - t_P[1]) + (t_P[2] - t_P[2]))) + ((t_P[3] - t_P[3]) + ((t_P[4] - t_P[4]) + (t_P[5] - t_P[5]))));
+        if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
+            status |= RIGIDSYM_C_NONFINITE_RESULT;
+        return status;
+    }
+    return -1;
+}
+#endif
+
 RIGIDSYM_C_API int rigidsym_c_twist_transfer(
     const double t_A[6],
     const double a[3],
     const double p[3],
     double t_P[6])
 {
-    const double t_A_0 = t_A[0];
-    const double t_A_1 = t_A[1];
-    const double t_A_2 = t_A[2];
-    const double t_A_3 = t_A[3];
-    const double t_A_4 = t_A[4];
-    const double t_A_5 = t_A[5];
-    const double a_0 = a[0];
-    const double a_1 = a[1];
-    const double a_2 = a[2];
-    const double p_0 = p[0];
-    const double p_1 = p[1];
-    const double p_2 = p[2];
     uint64_t odd = 0;
     int status = 0, singular = 0;
     double finite = 0.0;
@@ -106,10 +144,29 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer(
         if (status == RIGIDSYM_C_EXTREME_INPUT)
             return rigidsym_c_twist_transfer_wide(t_A, a, p, t_P);
 #endif
+#if RIGIDSYM_C_RESCALE_D
+        if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
+            const int r_ = rigidsym_c_twist_transfer_rescue(t_A, a, p, t_P);
+            if (r_ >= 0)
+                return r_;
+        }
+#endif
     }
 #else
     (void)odd;
 #endif
+    const double t_A_0 = t_A[0];
+    const double t_A_1 = t_A[1];
+    const double t_A_2 = t_A[2];
+    const double t_A_3 = t_A[3];
+    const double t_A_4 = t_A[4];
+    const double t_A_5 = t_A[5];
+    const double a_0 = a[0];
+    const double a_1 = a[1];
+    const double a_2 = a[2];
+    const double p_0 = p[0];
+    const double p_1 = p[1];
+    const double p_2 = p[2];
     {
         const double x0 = a_2 - p_2;
         const double x1 = a_1 - p_1;
@@ -147,27 +204,77 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer(
 
 
 RIGIDSYM_C_API int rigidsym_c_twist_transfer_batch(
-    size_t n,
+    size_t count,
     const double *t_A,
     const double *a,
     const double *p,
     double *t_P,
     int *status)
 {
-    int all = 0;
-    size_t i;
-    for (i = 0; i < n; ++i) {
-        const int s = rigidsym_c_twist_transfer(
-            t_A + 6 * i,
-            a + 3 * i,
-            p + 3 * i,
-            t_P + 6 * i);
+    int all_ = 0;
+    size_t i_;
+    for (i_ = 0; i_ < count; ++i_) {
+        const int s_ = rigidsym_c_twist_transfer(
+            t_A + 6 * i_,
+            a + 3 * i_,
+            p + 3 * i_,
+            t_P + 6 * i_);
         if (status)
-            status[i] = s;
-        all |= s;
+            status[i_] = s_;
+        all_ |= s_;
     }
-    return all;
+    return all_;
 }
+
+
+#if RIGIDSYM_C_RESCALE_F
+/* rigidsym_c_twist_transfer_f32 at extreme inputs (RIGIDSYM_C_EXTREME_INPUT, finite): the status and
+ * outputs of the rescue below, or -1 where it cannot take the sample (the caller then goes
+ * on as without it). Kept out of the scalar function, so that its fast path stays a leaf. */
+static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_f32_rescue(
+    const float t_A[6],
+    const float a[3],
+    const float p[3],
+    float t_P[6])
+{
+    int status;
+    int j;
+    float finite;
+    /* every output is homogeneous in the arguments of each step below: scale them
+     * by the power of two 2^-e that brings their largest component into [1/2, 1)
+     * (exact), evaluate, scale the outputs back by 2^(e d) (homogeneous.py); only
+     * when every component is then of ordinary magnitude (else the flag stays) */
+    int still_ = 0;
+    int rs_e0 = 0;
+    float rs_t_A[6];
+    {
+        float m_ = 0.0f;
+        for (j = 0; j < 6; ++j)
+            m_ = fabsf(t_A[j]) > m_ ? fabsf(t_A[j]) : m_;
+        if (m_ > 0.0f)
+            (void)frexpf(m_, &rs_e0);
+        for (j = 0; j < 6; ++j)
+            rs_t_A[j] = ldexpf(t_A[j], -rs_e0);
+        still_ |= rigidsym_c_extreme_f(rs_t_A, 6);
+    }
+    still_ |= rigidsym_c_extreme_f(a, 3);
+    still_ |= rigidsym_c_extreme_f(p, 3);
+    if (!still_) {  /* every input now ordinary: the function itself, scaled back */
+        status = rigidsym_c_twist_transfer_f32(rs_t_A, a, p, t_P);
+        t_P[0] = ldexpf(t_P[0], 1 * rs_e0);
+        t_P[1] = ldexpf(t_P[1], 1 * rs_e0);
+        t_P[2] = ldexpf(t_P[2], 1 * rs_e0);
+        t_P[3] = ldexpf(t_P[3], 1 * rs_e0);
+        t_P[4] = ldexpf(t_P[4], 1 * rs_e0);
+        t_P[5] = ldexpf(t_P[5], 1 * rs_e0);
+        finite = (((t_P[0] - t_P[0]) + ((t_P[1] - t_P[1]) + (t_P[2] - t_P[2]))) + ((t_P[3] - t_P[3]) + ((t_P[4] - t_P[4]) + (t_P[5] - t_P[5]))));
+        if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
+            status |= RIGIDSYM_C_NONFINITE_RESULT;
+        return status;
+    }
+    return -1;
+}
+#endif
 
 RIGIDSYM_C_API int rigidsym_c_twist_transfer_f32(
     const float t_A[6],
@@ -175,18 +282,6 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_f32(
     const float p[3],
     float t_P[6])
 {
-    const float t_A_0 = t_A[0];
-    const float t_A_1 = t_A[1];
-    const float t_A_2 = t_A[2];
-    const float t_A_3 = t_A[3];
-    const float t_A_4 = t_A[4];
-    const float t_A_5 = t_A[5];
-    const float a_0 = a[0];
-    const float a_1 = a[1];
-    const float a_2 = a[2];
-    const float p_0 = p[0];
-    const float p_1 = p[1];
-    const float p_2 = p[2];
     uint32_t odd = 0;
     int status = 0, singular = 0;
     float finite = 0.0f;
@@ -210,10 +305,29 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_f32(
         for (j = 0; j < 3; ++j)
             if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
                 status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_RESCALE_F
+        if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
+            const int r_ = rigidsym_c_twist_transfer_f32_rescue(t_A, a, p, t_P);
+            if (r_ >= 0)
+                return r_;
+        }
+#endif
     }
 #else
     (void)odd;
 #endif
+    const float t_A_0 = t_A[0];
+    const float t_A_1 = t_A[1];
+    const float t_A_2 = t_A[2];
+    const float t_A_3 = t_A[3];
+    const float t_A_4 = t_A[4];
+    const float t_A_5 = t_A[5];
+    const float a_0 = a[0];
+    const float a_1 = a[1];
+    const float a_2 = a[2];
+    const float p_0 = p[0];
+    const float p_1 = p[1];
+    const float p_2 = p[2];
     {
         const float x0 = a_2 - p_2;
         const float x1 = a_1 - p_1;
@@ -251,26 +365,26 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_f32(
 
 
 RIGIDSYM_C_API int rigidsym_c_twist_transfer_f32_batch(
-    size_t n,
+    size_t count,
     const float *t_A,
     const float *a,
     const float *p,
     float *t_P,
     int *status)
 {
-    int all = 0;
-    size_t i;
-    for (i = 0; i < n; ++i) {
-        const int s = rigidsym_c_twist_transfer_f32(
-            t_A + 6 * i,
-            a + 3 * i,
-            p + 3 * i,
-            t_P + 6 * i);
+    int all_ = 0;
+    size_t i_;
+    for (i_ = 0; i_ < count; ++i_) {
+        const int s_ = rigidsym_c_twist_transfer_f32(
+            t_A + 6 * i_,
+            a + 3 * i_,
+            p + 3 * i_,
+            t_P + 6 * i_);
         if (status)
-            status[i] = s;
-        all |= s;
+            status[i_] = s_;
+        all_ |= s_;
     }
-    return all;
+    return all_;
 }
 
 #if RIGIDSYM_C_WIDE
@@ -479,24 +593,77 @@ static int rigidsym_c_twist_transfer_with_jacobians_wide(
 }
 #endif
 
+
+#if RIGIDSYM_C_RESCALE_D
+/* rigidsym_c_twist_transfer_with_jacobians at extreme inputs (RIGIDSYM_C_EXTREME_INPUT, finite): the status and
+ * outputs of the rescue below, or -1 where it cannot take the sample (the caller then goes
+ * on as without it). Kept out of the scalar function, so that its fast path stays a leaf. */
+static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_with_jacobians_rescue(
+    const double t_A[6],
+    const double a[3],
+    const double p[3],
+    double t_P[6],
+    double t_P_D_t_A[36],
+    double t_P_D_a[18],
+    double t_P_D_p[18])
+{
+    int status;
+    int j;
+    double finite;
+    /* every output is homogeneous in the arguments of each step below: scale them
+     * by the power of two 2^-e that brings their largest component into [1/2, 1)
+     * (exact), evaluate, scale the outputs back by 2^(e d) (homogeneous.py); only
+     * when every component is then of ordinary magnitude (else the flag stays) */
+    int still_ = 0;
+    int rs_e0 = 0;
+    double rs_t_A[6];
+    {
+        double m_ = 0.0;
+        for (j = 0; j < 6; ++j)
+            m_ = fabs(t_A[j]) > m_ ? fabs(t_A[j]) : m_;
+        if (m_ > 0.0)
+            (void)frexp(m_, &rs_e0);
+        for (j = 0; j < 6; ++j)
+            rs_t_A[j] = ldexp(t_A[j], -rs_e0);
+        still_ |= rigidsym_c_extreme_d(rs_t_A, 6);
+    }
+    still_ |= rigidsym_c_extreme_d(a, 3);
+    still_ |= rigidsym_c_extreme_d(p, 3);
+    if (!still_) {  /* every input now ordinary: the function itself, scaled back */
+        status = rigidsym_c_twist_transfer_with_jacobians(rs_t_A, a, p, t_P, t_P_D_t_A, t_P_D_a, t_P_D_p);
+        t_P[0] = ldexp(t_P[0], 1 * rs_e0);
+        t_P[1] = ldexp(t_P[1], 1 * rs_e0);
+        t_P[2] = ldexp(t_P[2], 1 * rs_e0);
+        t_P[3] = ldexp(t_P[3], 1 * rs_e0);
+        t_P[4] = ldexp(t_P[4], 1 * rs_e0);
+        t_P[5] = ldexp(t_P[5], 1 * rs_e0);
+        t_P_D_a[10] = ldexp(t_P_D_a[10], 1 * rs_e0);
+        t_P_D_a[11] = ldexp(t_P_D_a[11], 1 * rs_e0);
+        t_P_D_a[12] = ldexp(t_P_D_a[12], 1 * rs_e0);
+        t_P_D_a[14] = ldexp(t_P_D_a[14], 1 * rs_e0);
+        t_P_D_a[15] = ldexp(t_P_D_a[15], 1 * rs_e0);
+        t_P_D_a[16] = ldexp(t_P_D_a[16], 1 * rs_e0);
+        t_P_D_p[10] = ldexp(t_P_D_p[10], 1 * rs_e0);
+        t_P_D_p[11] = ldexp(t_P_D_p[11], 1 * rs_e0);
+        t_P_D_p[12] = ldexp(t_P_D_p[12], 1 * rs_e0);
+        t_P_D_p[14] = ldexp(t_P_D_p[14], 1 * rs_e0);
+        t_P_D_p[15] = ldexp(t_P_D_p[15], 1 * rs_e0);
+        t_P_D_p[16] = ldexp(t_P_D_p[16], 1 * rs_e0);
+        finite = (((((((t_P[0] - t_P[0]) + (t_P[1] - t_P[1])) + ((t_P[2] - t_P[2]) + (t_P[3] - t_P[3]))) + (((t_P[4] - t_P[4]) + (t_P[5] - t_P[5])) + ((t_P_D_t_A[0] - t_P_D_t_A[0]) + ((t_P_D_t_A[1] - t_P_D_t_A[1]) + (t_P_D_t_A[2] - t_P_D_t_A[2]))))) + ((((t_P_D_t_A[3] - t_P_D_t_A[3]) + (t_P_D_t_A[4] - t_P_D_t_A[4])) + ((t_P_D_t_A[5] - t_P_D_t_A[5]) + ((t_P_D_t_A[6] - t_P_D_t_A[6]) + (t_P_D_t_A[7] - t_P_D_t_A[7])))) + (((t_P_D_t_A[8] - t_P_D_t_A[8]) + (t_P_D_t_A[9] - t_P_D_t_A[9])) + ((t_P_D_t_A[10] - t_P_D_t_A[10]) + ((t_P_D_t_A[11] - t_P_D_t_A[11]) + (t_P_D_t_A[12] - t_P_D_t_A[12])))))) + (((((t_P_D_t_A[13] - t_P_D_t_A[13]) + (t_P_D_t_A[14] - t_P_D_t_A[14])) + ((t_P_D_t_A[15] - t_P_D_t_A[15]) + ((t_P_D_t_A[16] - t_P_D_t_A[16]) + (t_P_D_t_A[17] - t_P_D_t_A[17])))) + (((t_P_D_t_A[18] - t_P_D_t_A[18]) + (t_P_D_t_A[19] - t_P_D_t_A[19])) + ((t_P_D_t_A[20] - t_P_D_t_A[20]) + ((t_P_D_t_A[21] - t_P_D_t_A[21]) + (t_P_D_t_A[22] - t_P_D_t_A[22]))))) + ((((t_P_D_t_A[23] - t_P_D_t_A[23]) + (t_P_D_t_A[24] - t_P_D_t_A[24])) + ((t_P_D_t_A[25] - t_P_D_t_A[25]) + ((t_P_D_t_A[26] - t_P_D_t_A[26]) + (t_P_D_t_A[27] - t_P_D_t_A[27])))) + (((t_P_D_t_A[28] - t_P_D_t_A[28]) + (t_P_D_t_A[29] - t_P_D_t_A[29])) + ((t_P_D_t_A[30] - t_P_D_t_A[30]) + ((t_P_D_t_A[31] - t_P_D_t_A[31]) + (t_P_D_t_A[32] - t_P_D_t_A[32]))))))) + ((((((t_P_D_t_A[33] - t_P_D_t_A[33]) + (t_P_D_t_A[34] - t_P_D_t_A[34])) + ((t_P_D_t_A[35] - t_P_D_t_A[35]) + (t_P_D_a[0] - t_P_D_a[0]))) + (((t_P_D_a[1] - t_P_D_a[1]) + (t_P_D_a[2] - t_P_D_a[2])) + ((t_P_D_a[3] - t_P_D_a[3]) + ((t_P_D_a[4] - t_P_D_a[4]) + (t_P_D_a[5] - t_P_D_a[5]))))) + ((((t_P_D_a[6] - t_P_D_a[6]) + (t_P_D_a[7] - t_P_D_a[7])) + ((t_P_D_a[8] - t_P_D_a[8]) + ((t_P_D_a[9] - t_P_D_a[9]) + (t_P_D_a[10] - t_P_D_a[10])))) + (((t_P_D_a[11] - t_P_D_a[11]) + (t_P_D_a[12] - t_P_D_a[12])) + ((t_P_D_a[13] - t_P_D_a[13]) + ((t_P_D_a[14] - t_P_D_a[14]) + (t_P_D_a[15] - t_P_D_a[15])))))) + (((((t_P_D_a[16] - t_P_D_a[16]) + (t_P_D_a[17] - t_P_D_a[17])) + ((t_P_D_p[0] - t_P_D_p[0]) + ((t_P_D_p[1] - t_P_D_p[1]) + (t_P_D_p[2] - t_P_D_p[2])))) + (((t_P_D_p[3] - t_P_D_p[3]) + (t_P_D_p[4] - t_P_D_p[4])) + ((t_P_D_p[5] - t_P_D_p[5]) + ((t_P_D_p[6] - t_P_D_p[6]) + (t_P_D_p[7] - t_P_D_p[7]))))) + ((((t_P_D_p[8] - t_P_D_p[8]) + (t_P_D_p[9] - t_P_D_p[9])) + ((t_P_D_p[10] - t_P_D_p[10]) + ((t_P_D_p[11] - t_P_D_p[11]) + (t_P_D_p[12] - t_P_D_p[12])))) + (((t_P_D_p[13] - t_P_D_p[13]) + (t_P_D_p[14] - t_P_D_p[14])) + ((t_P_D_p[15] - t_P_D_p[15]) + ((t_P_D_p[16] - t_P_D_p[16]) + (t_P_D_p[17] - t_P_D_p[17]))))))));
+        if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
+            status |= RIGIDSYM_C_NONFINITE_RESULT;
+        return status;
+    }
+    return -1;
+}
+#endif
+
 RIGIDSYM_C_API int rigidsym_c_twist_transfer_with_jacobians(
     const double t_A[6],
     const double a[3],
     const double p[3],
     double t_P[6],    double t_P_D_t_A[36],    double t_P_D_a[18],    double t_P_D_p[18])
 {
-    const double t_A_0 = t_A[0];
-    const double t_A_1 = t_A[1];
-    const double t_A_2 = t_A[2];
-    const double t_A_3 = t_A[3];
-    const double t_A_4 = t_A[4];
-    const double t_A_5 = t_A[5];
-    const double a_0 = a[0];
-    const double a_1 = a[1];
-    const double a_2 = a[2];
-    const double p_0 = p[0];
-    const double p_1 = p[1];
-    const double p_2 = p[2];
     uint64_t odd = 0;
     int status = 0, singular = 0;
     double finite = 0.0;
@@ -524,10 +691,29 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_with_jacobians(
         if (status == RIGIDSYM_C_EXTREME_INPUT)
             return rigidsym_c_twist_transfer_with_jacobians_wide(t_A, a, p, t_P, t_P_D_t_A, t_P_D_a, t_P_D_p);
 #endif
+#if RIGIDSYM_C_RESCALE_D
+        if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
+            const int r_ = rigidsym_c_twist_transfer_with_jacobians_rescue(t_A, a, p, t_P, t_P_D_t_A, t_P_D_a, t_P_D_p);
+            if (r_ >= 0)
+                return r_;
+        }
+#endif
     }
 #else
     (void)odd;
 #endif
+    const double t_A_0 = t_A[0];
+    const double t_A_1 = t_A[1];
+    const double t_A_2 = t_A[2];
+    const double t_A_3 = t_A[3];
+    const double t_A_4 = t_A[4];
+    const double t_A_5 = t_A[5];
+    const double a_0 = a[0];
+    const double a_1 = a[1];
+    const double a_2 = a[2];
+    const double p_0 = p[0];
+    const double p_1 = p[1];
+    const double p_2 = p[2];
     {
         const double x0 = a_2 - p_2;
         const double x1 = -x0;
@@ -715,7 +901,7 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_with_jacobians(
 
 
 RIGIDSYM_C_API int rigidsym_c_twist_transfer_with_jacobians_batch(
-    size_t n,
+    size_t count,
     const double *t_A,
     const double *a,
     const double *p,
@@ -725,23 +911,88 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_with_jacobians_batch(
     double *t_P_D_p,
     int *status)
 {
-    int all = 0;
-    size_t i;
-    for (i = 0; i < n; ++i) {
-        const int s = rigidsym_c_twist_transfer_with_jacobians(
-            t_A + 6 * i,
-            a + 3 * i,
-            p + 3 * i,
-            t_P + 6 * i,
-            t_P_D_t_A + 36 * i,
-            t_P_D_a + 18 * i,
-            t_P_D_p + 18 * i);
+    int all_ = 0;
+    size_t i_;
+    for (i_ = 0; i_ < count; ++i_) {
+        const int s_ = rigidsym_c_twist_transfer_with_jacobians(
+            t_A + 6 * i_,
+            a + 3 * i_,
+            p + 3 * i_,
+            t_P + 6 * i_,
+            t_P_D_t_A + 36 * i_,
+            t_P_D_a + 18 * i_,
+            t_P_D_p + 18 * i_);
         if (status)
-            status[i] = s;
-        all |= s;
+            status[i_] = s_;
+        all_ |= s_;
     }
-    return all;
+    return all_;
 }
+
+
+#if RIGIDSYM_C_RESCALE_F
+/* rigidsym_c_twist_transfer_with_jacobians_f32 at extreme inputs (RIGIDSYM_C_EXTREME_INPUT, finite): the status and
+ * outputs of the rescue below, or -1 where it cannot take the sample (the caller then goes
+ * on as without it). Kept out of the scalar function, so that its fast path stays a leaf. */
+static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_with_jacobians_f32_rescue(
+    const float t_A[6],
+    const float a[3],
+    const float p[3],
+    float t_P[6],
+    float t_P_D_t_A[36],
+    float t_P_D_a[18],
+    float t_P_D_p[18])
+{
+    int status;
+    int j;
+    float finite;
+    /* every output is homogeneous in the arguments of each step below: scale them
+     * by the power of two 2^-e that brings their largest component into [1/2, 1)
+     * (exact), evaluate, scale the outputs back by 2^(e d) (homogeneous.py); only
+     * when every component is then of ordinary magnitude (else the flag stays) */
+    int still_ = 0;
+    int rs_e0 = 0;
+    float rs_t_A[6];
+    {
+        float m_ = 0.0f;
+        for (j = 0; j < 6; ++j)
+            m_ = fabsf(t_A[j]) > m_ ? fabsf(t_A[j]) : m_;
+        if (m_ > 0.0f)
+            (void)frexpf(m_, &rs_e0);
+        for (j = 0; j < 6; ++j)
+            rs_t_A[j] = ldexpf(t_A[j], -rs_e0);
+        still_ |= rigidsym_c_extreme_f(rs_t_A, 6);
+    }
+    still_ |= rigidsym_c_extreme_f(a, 3);
+    still_ |= rigidsym_c_extreme_f(p, 3);
+    if (!still_) {  /* every input now ordinary: the function itself, scaled back */
+        status = rigidsym_c_twist_transfer_with_jacobians_f32(rs_t_A, a, p, t_P, t_P_D_t_A, t_P_D_a, t_P_D_p);
+        t_P[0] = ldexpf(t_P[0], 1 * rs_e0);
+        t_P[1] = ldexpf(t_P[1], 1 * rs_e0);
+        t_P[2] = ldexpf(t_P[2], 1 * rs_e0);
+        t_P[3] = ldexpf(t_P[3], 1 * rs_e0);
+        t_P[4] = ldexpf(t_P[4], 1 * rs_e0);
+        t_P[5] = ldexpf(t_P[5], 1 * rs_e0);
+        t_P_D_a[10] = ldexpf(t_P_D_a[10], 1 * rs_e0);
+        t_P_D_a[11] = ldexpf(t_P_D_a[11], 1 * rs_e0);
+        t_P_D_a[12] = ldexpf(t_P_D_a[12], 1 * rs_e0);
+        t_P_D_a[14] = ldexpf(t_P_D_a[14], 1 * rs_e0);
+        t_P_D_a[15] = ldexpf(t_P_D_a[15], 1 * rs_e0);
+        t_P_D_a[16] = ldexpf(t_P_D_a[16], 1 * rs_e0);
+        t_P_D_p[10] = ldexpf(t_P_D_p[10], 1 * rs_e0);
+        t_P_D_p[11] = ldexpf(t_P_D_p[11], 1 * rs_e0);
+        t_P_D_p[12] = ldexpf(t_P_D_p[12], 1 * rs_e0);
+        t_P_D_p[14] = ldexpf(t_P_D_p[14], 1 * rs_e0);
+        t_P_D_p[15] = ldexpf(t_P_D_p[15], 1 * rs_e0);
+        t_P_D_p[16] = ldexpf(t_P_D_p[16], 1 * rs_e0);
+        finite = (((((((t_P[0] - t_P[0]) + (t_P[1] - t_P[1])) + ((t_P[2] - t_P[2]) + (t_P[3] - t_P[3]))) + (((t_P[4] - t_P[4]) + (t_P[5] - t_P[5])) + ((t_P_D_t_A[0] - t_P_D_t_A[0]) + ((t_P_D_t_A[1] - t_P_D_t_A[1]) + (t_P_D_t_A[2] - t_P_D_t_A[2]))))) + ((((t_P_D_t_A[3] - t_P_D_t_A[3]) + (t_P_D_t_A[4] - t_P_D_t_A[4])) + ((t_P_D_t_A[5] - t_P_D_t_A[5]) + ((t_P_D_t_A[6] - t_P_D_t_A[6]) + (t_P_D_t_A[7] - t_P_D_t_A[7])))) + (((t_P_D_t_A[8] - t_P_D_t_A[8]) + (t_P_D_t_A[9] - t_P_D_t_A[9])) + ((t_P_D_t_A[10] - t_P_D_t_A[10]) + ((t_P_D_t_A[11] - t_P_D_t_A[11]) + (t_P_D_t_A[12] - t_P_D_t_A[12])))))) + (((((t_P_D_t_A[13] - t_P_D_t_A[13]) + (t_P_D_t_A[14] - t_P_D_t_A[14])) + ((t_P_D_t_A[15] - t_P_D_t_A[15]) + ((t_P_D_t_A[16] - t_P_D_t_A[16]) + (t_P_D_t_A[17] - t_P_D_t_A[17])))) + (((t_P_D_t_A[18] - t_P_D_t_A[18]) + (t_P_D_t_A[19] - t_P_D_t_A[19])) + ((t_P_D_t_A[20] - t_P_D_t_A[20]) + ((t_P_D_t_A[21] - t_P_D_t_A[21]) + (t_P_D_t_A[22] - t_P_D_t_A[22]))))) + ((((t_P_D_t_A[23] - t_P_D_t_A[23]) + (t_P_D_t_A[24] - t_P_D_t_A[24])) + ((t_P_D_t_A[25] - t_P_D_t_A[25]) + ((t_P_D_t_A[26] - t_P_D_t_A[26]) + (t_P_D_t_A[27] - t_P_D_t_A[27])))) + (((t_P_D_t_A[28] - t_P_D_t_A[28]) + (t_P_D_t_A[29] - t_P_D_t_A[29])) + ((t_P_D_t_A[30] - t_P_D_t_A[30]) + ((t_P_D_t_A[31] - t_P_D_t_A[31]) + (t_P_D_t_A[32] - t_P_D_t_A[32]))))))) + ((((((t_P_D_t_A[33] - t_P_D_t_A[33]) + (t_P_D_t_A[34] - t_P_D_t_A[34])) + ((t_P_D_t_A[35] - t_P_D_t_A[35]) + (t_P_D_a[0] - t_P_D_a[0]))) + (((t_P_D_a[1] - t_P_D_a[1]) + (t_P_D_a[2] - t_P_D_a[2])) + ((t_P_D_a[3] - t_P_D_a[3]) + ((t_P_D_a[4] - t_P_D_a[4]) + (t_P_D_a[5] - t_P_D_a[5]))))) + ((((t_P_D_a[6] - t_P_D_a[6]) + (t_P_D_a[7] - t_P_D_a[7])) + ((t_P_D_a[8] - t_P_D_a[8]) + ((t_P_D_a[9] - t_P_D_a[9]) + (t_P_D_a[10] - t_P_D_a[10])))) + (((t_P_D_a[11] - t_P_D_a[11]) + (t_P_D_a[12] - t_P_D_a[12])) + ((t_P_D_a[13] - t_P_D_a[13]) + ((t_P_D_a[14] - t_P_D_a[14]) + (t_P_D_a[15] - t_P_D_a[15])))))) + (((((t_P_D_a[16] - t_P_D_a[16]) + (t_P_D_a[17] - t_P_D_a[17])) + ((t_P_D_p[0] - t_P_D_p[0]) + ((t_P_D_p[1] - t_P_D_p[1]) + (t_P_D_p[2] - t_P_D_p[2])))) + (((t_P_D_p[3] - t_P_D_p[3]) + (t_P_D_p[4] - t_P_D_p[4])) + ((t_P_D_p[5] - t_P_D_p[5]) + ((t_P_D_p[6] - t_P_D_p[6]) + (t_P_D_p[7] - t_P_D_p[7]))))) + ((((t_P_D_p[8] - t_P_D_p[8]) + (t_P_D_p[9] - t_P_D_p[9])) + ((t_P_D_p[10] - t_P_D_p[10]) + ((t_P_D_p[11] - t_P_D_p[11]) + (t_P_D_p[12] - t_P_D_p[12])))) + (((t_P_D_p[13] - t_P_D_p[13]) + (t_P_D_p[14] - t_P_D_p[14])) + ((t_P_D_p[15] - t_P_D_p[15]) + ((t_P_D_p[16] - t_P_D_p[16]) + (t_P_D_p[17] - t_P_D_p[17]))))))));
+        if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
+            status |= RIGIDSYM_C_NONFINITE_RESULT;
+        return status;
+    }
+    return -1;
+}
+#endif
 
 RIGIDSYM_C_API int rigidsym_c_twist_transfer_with_jacobians_f32(
     const float t_A[6],
@@ -749,18 +1000,6 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_with_jacobians_f32(
     const float p[3],
     float t_P[6],    float t_P_D_t_A[36],    float t_P_D_a[18],    float t_P_D_p[18])
 {
-    const float t_A_0 = t_A[0];
-    const float t_A_1 = t_A[1];
-    const float t_A_2 = t_A[2];
-    const float t_A_3 = t_A[3];
-    const float t_A_4 = t_A[4];
-    const float t_A_5 = t_A[5];
-    const float a_0 = a[0];
-    const float a_1 = a[1];
-    const float a_2 = a[2];
-    const float p_0 = p[0];
-    const float p_1 = p[1];
-    const float p_2 = p[2];
     uint32_t odd = 0;
     int status = 0, singular = 0;
     float finite = 0.0f;
@@ -784,10 +1023,29 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_with_jacobians_f32(
         for (j = 0; j < 3; ++j)
             if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
                 status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_RESCALE_F
+        if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
+            const int r_ = rigidsym_c_twist_transfer_with_jacobians_f32_rescue(t_A, a, p, t_P, t_P_D_t_A, t_P_D_a, t_P_D_p);
+            if (r_ >= 0)
+                return r_;
+        }
+#endif
     }
 #else
     (void)odd;
 #endif
+    const float t_A_0 = t_A[0];
+    const float t_A_1 = t_A[1];
+    const float t_A_2 = t_A[2];
+    const float t_A_3 = t_A[3];
+    const float t_A_4 = t_A[4];
+    const float t_A_5 = t_A[5];
+    const float a_0 = a[0];
+    const float a_1 = a[1];
+    const float a_2 = a[2];
+    const float p_0 = p[0];
+    const float p_1 = p[1];
+    const float p_2 = p[2];
     {
         const float x0 = a_2 - p_2;
         const float x1 = -x0;
@@ -975,7 +1233,7 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_with_jacobians_f32(
 
 
 RIGIDSYM_C_API int rigidsym_c_twist_transfer_with_jacobians_f32_batch(
-    size_t n,
+    size_t count,
     const float *t_A,
     const float *a,
     const float *p,
@@ -985,20 +1243,20 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_with_jacobians_f32_batch(
     float *t_P_D_p,
     int *status)
 {
-    int all = 0;
-    size_t i;
-    for (i = 0; i < n; ++i) {
-        const int s = rigidsym_c_twist_transfer_with_jacobians_f32(
-            t_A + 6 * i,
-            a + 3 * i,
-            p + 3 * i,
-            t_P + 6 * i,
-            t_P_D_t_A + 36 * i,
-            t_P_D_a + 18 * i,
-            t_P_D_p + 18 * i);
+    int all_ = 0;
+    size_t i_;
+    for (i_ = 0; i_ < count; ++i_) {
+        const int s_ = rigidsym_c_twist_transfer_with_jacobians_f32(
+            t_A + 6 * i_,
+            a + 3 * i_,
+            p + 3 * i_,
+            t_P + 6 * i_,
+            t_P_D_t_A + 36 * i_,
+            t_P_D_a + 18 * i_,
+            t_P_D_p + 18 * i_);
         if (status)
-            status[i] = s;
-        all |= s;
+            status[i_] = s_;
+        all_ |= s_;
     }
-    return all;
+    return all_;
 }

@@ -29,6 +29,9 @@ RIGIDSYM_C_BEGIN_DECLS
  * Returns: the status, 0 or the OR of RIGIDSYM_C_SINGULAR, RIGIDSYM_C_NONFINITE_INPUT,
  * RIGIDSYM_C_NONFINITE_RESULT, RIGIDSYM_C_EXTREME_INPUT (rigidsym_c_common.h).
  * Constraints ("unit", "rotation", ...) are the caller's to meet: they are not checked.
+ * Extreme inputs without a wider type (the float function; the double one where long
+ * double is double): exact power-of-two rescaling of t_A
+ * (the outputs are homogeneous in each), so their extreme magnitudes give status 0.
  */
 RIGIDSYM_C_API int rigidsym_c_twist_transfer(
     const double t_A[6],
@@ -37,25 +40,30 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer(
     double t_P[6]);
 
 /* twist_transfer in float arithmetic only (float literals, sinf/cosf/sqrtf: no
- * double operation, for FPUs without double); arguments, outputs, status as above. */
+ * double operation, for FPUs without double); arguments, outputs, status as above.
+ * Accuracy: each output within 1.5 u (kappa + 1) of the exact value,
+ * normwise relative, u = 2^-24, kappa the output's condition number (measured by
+ * benchmarks/c_float_bounds.py: worst 0.704 over 104 points of the
+ * accuracy harness's float32 regimes, against arb at the exact point). */
 RIGIDSYM_C_API int rigidsym_c_twist_transfer_f32(
     const float t_A[6],
     const float a[3],
     const float p[3],
     float t_P[6]);
 
-/* The same over n samples, one after the other (no heap, no stack beyond one call's):
- * each argument and output holds n rows of its per-sample size, row-major ([n][size]);
+/* The same over count samples, one after the other (no heap, no stack beyond one
+ * call's): each argument and output holds count rows of its per-sample size, row-major
+ * ([count][size]);
  * status[i] (status may be NULL) receives sample i's status; returns their OR. */
 RIGIDSYM_C_API int rigidsym_c_twist_transfer_batch(
-    size_t n,
+    size_t count,
     const double *t_A,
     const double *a,
     const double *p,
     double *t_P,
     int *status);
 RIGIDSYM_C_API int rigidsym_c_twist_transfer_f32_batch(
-    size_t n,
+    size_t count,
     const float *t_A,
     const float *a,
     const float *p,
@@ -86,6 +94,9 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_f32_batch(
  * Returns: the status, 0 or the OR of RIGIDSYM_C_SINGULAR, RIGIDSYM_C_NONFINITE_INPUT,
  * RIGIDSYM_C_NONFINITE_RESULT, RIGIDSYM_C_EXTREME_INPUT (rigidsym_c_common.h).
  * Constraints ("unit", "rotation", ...) are the caller's to meet: they are not checked.
+ * Extreme inputs without a wider type (the float function; the double one where long
+ * double is double): exact power-of-two rescaling of t_A
+ * (the outputs are homogeneous in each), so their extreme magnitudes give status 0.
  */
 RIGIDSYM_C_API int rigidsym_c_twist_transfer_with_jacobians(
     const double t_A[6],
@@ -94,18 +105,23 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_with_jacobians(
     double t_P[6],    double t_P_D_t_A[36],    double t_P_D_a[18],    double t_P_D_p[18]);
 
 /* twist_transfer_with_jacobians in float arithmetic only (float literals, sinf/cosf/sqrtf: no
- * double operation, for FPUs without double); arguments, outputs, status as above. */
+ * double operation, for FPUs without double); arguments, outputs, status as above.
+ * Accuracy: each output within 1.5 u (kappa + 1) of the exact value,
+ * normwise relative, u = 2^-24, kappa the output's condition number (measured by
+ * benchmarks/c_float_bounds.py: worst 0.704 over 104 points of the
+ * accuracy harness's float32 regimes, against arb at the exact point). */
 RIGIDSYM_C_API int rigidsym_c_twist_transfer_with_jacobians_f32(
     const float t_A[6],
     const float a[3],
     const float p[3],
     float t_P[6],    float t_P_D_t_A[36],    float t_P_D_a[18],    float t_P_D_p[18]);
 
-/* The same over n samples, one after the other (no heap, no stack beyond one call's):
- * each argument and output holds n rows of its per-sample size, row-major ([n][size]);
+/* The same over count samples, one after the other (no heap, no stack beyond one
+ * call's): each argument and output holds count rows of its per-sample size, row-major
+ * ([count][size]);
  * status[i] (status may be NULL) receives sample i's status; returns their OR. */
 RIGIDSYM_C_API int rigidsym_c_twist_transfer_with_jacobians_batch(
-    size_t n,
+    size_t count,
     const double *t_A,
     const double *a,
     const double *p,
@@ -115,7 +131,7 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_with_jacobians_batch(
     double *t_P_D_p,
     int *status);
 RIGIDSYM_C_API int rigidsym_c_twist_transfer_with_jacobians_f32_batch(
-    size_t n,
+    size_t count,
     const float *t_A,
     const float *a,
     const float *p,

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import json
 import sys
+import textwrap
 from pathlib import Path
 
 from rigidsym._io import write_atomic
@@ -298,7 +299,9 @@ def _solve_one(ex_id: str, data: dict):
     rest = {k: v for k, v in data.items() if k != "tol"}
     for note in read_data(parameters(ex_id), rest, data.get("tol")).notes:
         if note.startswith("Warning: "):
-            print(f"rigidsym: warning: {note[len('Warning: '):]}", file=sys.stderr)
+            print(textwrap.fill(f"rigidsym: warning: {note[len('Warning: '):]}", 100,
+                                subsequent_indent="  ", break_long_words=False,
+                                break_on_hyphens=False), file=sys.stderr)   # 100 columns
     with Reporter("rigidsym exercise") as rep, \
             rep.phase(f"solving exercise {ex_id[2:]}") as ph:
         s = solve(ex_id, **data)

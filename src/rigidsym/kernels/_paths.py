@@ -22,7 +22,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 __all__ = ["IsaPath", "X86_V4", "X86_PATHS", "NATIVE", "BASELINE", "default_paths",
-           "cpu_features", "calls_trig", "partial_plan"]
+           "host_paths", "cpu_features", "calls_trig", "partial_plan"]
 
 @dataclass(frozen=True)
 class IsaPath:
@@ -75,6 +75,52 @@ def default_paths(native: bool = False) -> tuple[IsaPath, ...]:
         raise ValueError(f"RIGIDSYM_PATHS: expected suffixes among {', '.join(known)}, got "
                          f"{env!r}")
     return tuple(sorted((known[s] for s in set(wanted)), key=lambda p: -int(p.suffix[1])))
+
+
+#: the CPU flags (``/proc/cpuinfo``, Linux's names) each x86-64 level needs (psABI)
+_LEVEL_FLAGS = {
+    "v2": {"sse4_2", "ssse3", "popcnt", "cx16"},
+    "v3": {"avx", "avx2", "fma", "bmi1", "bmi2", "f16c", "movbe", "abm"},
+    "v4": {"avx512f", "avx512bw", "avx512cd", "avx512dq", "avx512vl"},
+}
+
+
+def _runs(path: IsaPath, flags: set[str]) -> bool:
+    level = int(path.suffix[1])
+    return all(_LEVEL_FLAGS[f"v{k}"] <= flags for k in range(2, level + 1))
+
+
+def host_paths(paths: tuple[IsaPath, ...], cpuinfo: str | None = None) -> tuple[IsaPath, ...]:
+    """The paths of ``paths`` an editable install needs on this machine: those its CPU runs,
+    down to the first one that compiles every kernel (issue 54: an editable install is this
+    checkout on this machine, and the x86-64-v2 objects it never runs were 159 of its 419
+    objects on an AVX-512 host). ``paths`` unchanged off x86-64 Linux, with
+    ``RIGIDSYM_PATHS`` set, or when the CPU's flags cannot be read; the module's dispatcher
+    still refuses, naming the path, a CPU that lacks the remaining baseline (a checkout
+    shared with an older machine: reinstall there, or set ``RIGIDSYM_PATHS``).
+
+    ``cpuinfo``: the text of ``/proc/cpuinfo`` (tests pass their own)."""
+    if os.environ.get("RIGIDSYM_PATHS") or not all(p.suffix in ("v2", "v3", "v4")
+                                                  for p in paths):
+        return paths
+    if cpuinfo is None:
+        try:
+            cpuinfo = Path("/proc/cpuinfo").read_text(errors="replace")
+        except OSError:
+            return paths
+    line = next((ln for ln in cpuinfo.splitlines() if ln.split(":")[0].strip() == "flags"),
+                None)
+    if line is None:
+        return paths
+    flags = set(line.partition(":")[2].split())
+    kept = []
+    for i, p in enumerate(paths):
+        if not _runs(p, flags):
+            continue
+        kept.append(p)
+        if not (p.trig_only and i + 1 < len(paths)):
+            return tuple(kept)
+    return paths        # the CPU runs none of them: the dispatcher says so at import
 
 
 def cpu_features() -> str:

@@ -13,6 +13,7 @@ import lark
 import sympy as sp
 
 from rigidsym.latex.bookrules import index_key
+from rigidsym.latex.meaning import alternatives
 from rigidsym.latex.shapes import LatexError, _default_glyph, _words
 from rigidsym.latex.table import lookup
 
@@ -124,7 +125,36 @@ class GlyphRules:
             return _GlyphKey(key, base, rest, accent, _TIME)
         if accent in ("\\vec", "\\underline") and kind == "plain":  # vector fonts
             base = ("bold", base[1])
+        entry = self._entry(key, base, rest, accent, inner, pre)
+        if entry is not None:
+            return entry
         return _GlyphKey(key, base, rest, accent, self._symbol(key, base))
+
+    def _entry(self, key, base, rest, accent, inner, pre):
+        """``a_1``, ``\\mathbf{q}_4`` where nothing declares it but a ``--let`` declares the
+        vector ``\\mathbf{a}`` (``\\mathbf{q}``): a symbol of its own or entry 1 (4) of
+        the vector, a choice point (issue 52, item 2; ``self.choices``, a symbol of its own
+        unless told). ``None`` where it is no choice: the symbol, by the rules."""
+        if not getattr(self, "reader", False) or accent or inner is not None or pre \
+                or len(rest) != 1 or not isinstance(rest[0], tuple) \
+                or not rest[0][1].isdigit() or key in self.overrides:
+            return None
+        k = int(rest[0][1])
+        for vbase in dict.fromkeys([("bold", base[1]), base]):
+            vkey = self._key(vbase, [], None)
+            g = self.overrides.get(vkey)
+            shape = getattr(g, "shape", ())
+            if len(shape) == 2 and shape[1] == 1 and 1 <= k <= shape[0] > 1:
+                point = f"{key} of {vkey}"
+                self.choice_points.setdefault(point, alternatives(point))
+                if self.choices.get(point) != "entry":
+                    self.readings.append(f"{key}: a symbol of its own (a choice: or entry {k} "
+                                         f"of {vkey})")
+                    return None
+                self.readings.append(f"{key}: read as entry {k} of {vkey} (a choice: or a "
+                                     f"symbol of its own)")
+                return _GlyphKey(key, base, rest, accent, self._symbol(vkey, vbase)[k - 1, 0])
+        return None
 
     def _slice(self, key, base, rest, accent, pre):
         """``\\mathbf{q}_{1:3}``: entries 1 to 3 (counted from 1, both included) of the

@@ -27,6 +27,7 @@ from rigidsym.latex.bookrules import SETS
 from rigidsym.latex.glyphrows import _Reader
 from rigidsym.latex.lending import lent
 from rigidsym.latex.lets import KIND_WORDS, Let, read_lets
+from rigidsym.latex.meaning import alternatives, said
 from rigidsym.latex.shapes import LatexError
 from rigidsym.latex.values import _glyph_values, _read_models, _resolve, _words
 from rigidsym.printing import notation
@@ -94,7 +95,8 @@ def read_statement(latex: str, lets: list[Let], book: str | None = None,
                    lend: dict | None = None, table=None) -> Reading:
     """Read a reader's LaTeX and its declarations into a :class:`Reading`: every reading
     of its choice points (``X(\\mathbf{y})``, ``X`` a model: a product or an application;
-    at most :data:`MAX_READINGS`) that type-checks, the first returned, the others in its
+    ``[\\mathbf{a}]``: its hat or a bracket that groups; the first :data:`_MAX_POINTS` points)
+    that type-checks, the first returned, the others in its
     ``others`` (issue 52, item 2: the checker decides each, a verdict only when all agree).
 
     Args and Raises: as :func:`read_one`; when no reading type-checks, the first reading's
@@ -112,7 +114,7 @@ def read_statement(latex: str, lets: list[Let], book: str | None = None,
         error, points = None, first.choices
     keys = sorted(points)[:_MAX_POINTS]
     kept, dropped = [], []
-    for combo in itertools.product(("product", "apply"), repeat=len(keys)):
+    for combo in itertools.product(*(alternatives(k) for k in keys)):
         choices = dict(zip(keys, combo, strict=True))
         try:
             r = first if first is not None and choices == first.choices else read_one(
@@ -140,8 +142,7 @@ _MAX_POINTS = 3
 
 
 def _said(choices: dict) -> str:
-    return "; ".join(f"{k}(...) {'applied' if c == 'apply' else 'a product'}"
-                     for k, c in sorted(choices.items()))
+    return "; ".join(said(k, c) for k, c in sorted(choices.items()))
 
 
 def _shape_slip(r: Reading) -> str:
@@ -188,7 +189,7 @@ def read_one(latex: str, lets: list[Let], book: str | None = None,
     try:
         return _read(rd, latex, lets, lend, table)
     except (LatexError, BadInput) as exc:
-        exc.choice_points = {k: rd.choices.get(k, "product") for k in rd.choice_points}
+        exc.choice_points = {k: rd.choices.get(k, alternatives(k)[0]) for k in rd.choice_points}
         raise
 
 
@@ -227,7 +228,7 @@ def _read(rd: _Reader, latex: str, lets: list[Let], lend: dict, table) -> Readin
     notes += list(dict.fromkeys(rd.notes + parsed.readings))  # each reading once
     st = Statement(printed, model, defines=defines, from_latex=True)
     return Reading(st, kind, text, notes, free,
-                   choices={k: rd.choices.get(k, "product") for k in rd.choice_points})
+                   choices={k: rd.choices.get(k, alternatives(k)[0]) for k in rd.choice_points})
 
 
 def _relations(parsed) -> tuple[list[Rel], str]:

@@ -27,6 +27,33 @@ from rigidsym.latex.table import lookup
 
 __all__: list[str] = []
 
+#: the readings of each kind of choice point (issue 52, item 2), the default first: a model
+#: before a parenthesised non-scalar (``X(\\mathbf{y})``, keyed by ``X``), a bracket around a
+#: 3-vector or 6-vector (``[\\mathbf{a}]``, keyed by ``[a]``): its hat or a grouping
+ALTERNATIVES = {"apply": ("product", "apply"), "bracket": ("hat", "group"),
+                "index": ("name", "entry")}
+
+
+def _kind(key: str) -> str:
+    return "bracket" if key.startswith("[") else "index" if " of " in key else "apply"
+
+
+def alternatives(key: str) -> tuple[str, str]:
+    """The readings of the choice point ``key``, the default first."""
+    return ALTERNATIVES[_kind(key)]
+
+
+def said(key: str, choice: str) -> str:
+    """One choice in words: ``R(...) applied``, ``[a] the hat``, ``a_{1} of \\mathbf{a}
+    its entry``."""
+    if _kind(key) == "bracket":
+        return f"{key} {'a bracket that groups' if choice == 'group' else 'the hat'}"
+    if _kind(key) == "index":
+        name, vec = key.split(" of ", 1)
+        k = name.rsplit("_{", 1)[-1].rstrip("}")
+        return f"{name} {f'entry {k} of {vec}' if choice == 'entry' else 'a symbol of its own'}"
+    return f"{key}(...) {'applied' if choice == 'apply' else 'a product'}"
+
 
 
 class BracketCpm(Cpm):
@@ -61,8 +88,8 @@ class MeaningRules:
         super().__init__(*args, **kwargs)
         self.applied: dict[str, list] = {}
         self.functions: dict = {}  # key -> expand(args) -> (value, params): --let functions
-        self.choices: dict[str, str] = {}  # key -> "product" | "apply" (issue 52, item 2)
-        self.choice_points: dict[str, str] = {}  # key -> its argument, as read
+        self.choices: dict[str, str] = {}  # key -> one of its alternatives (issue 52, item 2)
+        self.choice_points: dict[str, tuple] = {}  # key -> its alternatives, the default first
 
     def apply_many(self, items):
         """``glyph ( a, b, ... )`` with an optional power: a ``--let`` function of several
@@ -116,7 +143,7 @@ class MeaningRules:
         from rigidsym.printing import notation
 
         how = self.choices.get(f.key, "product")
-        self.choice_points.setdefault(f.key, notation.text(x))
+        self.choice_points.setdefault(f.key, alternatives(f.key))
         a = notation.text(x)
         if how == "apply":
             self.applied.setdefault(f.key, []).append(x)

@@ -27,7 +27,7 @@ import lark
 import sympy as sp
 
 from rigidsym.algebra import motions
-from rigidsym.latex.meaning import as_written
+from rigidsym.latex.meaning import alternatives, as_written
 from rigidsym.latex.shapes import LatexError, _as_scalar, _shape, _words
 
 __all__: list[str] = []
@@ -135,16 +135,28 @@ class VocabRules:
 
     def hat_bracket(self, x):
         """``[x]``: the hat of one symbol or one product of shape 3 x 1 or 6 x 1, else
-        ``x`` (the bracket groups)."""
+        ``x`` (the bracket groups). The hat of a product is a choice point (issue 52, item
+        2): the other reading, a bracket that groups the product ``[R\\mathbf{a}]``, is
+        read too (``self.choices``) and kept where it type-checks. A bracket around one
+        symbol groups nothing: it is the hat, by the rule."""
+        from rigidsym.printing import notation
+
         v = self._val(x)
         if _shape(v) not in ((3, 1), (6, 1)):
             return v
         how = self.made.get(v)
         if not (isinstance(v, sp.MatrixSymbol) or (how and how[0] == "mul")):
             return v
+        key = f"[{notation.text(v)}]"
+        if not isinstance(v, sp.MatrixSymbol):  # [R a]: a choice; [a] groups nothing
+            self.choice_points.setdefault(key, alternatives(key))
+        if self.choices.get(key) == "group":
+            self._note(f"{key}: read as a bracket that groups the vector (a choice: or its "
+                       f"so(3) (se(3)) matrix hat)")
+            return v
         self._note("[x] of a 3-vector (6-vector) read as its so(3) (se(3)) matrix hat(x) "
                    "(MR (3.30), (3.85)); a bracket holding a sum, a scalar or a matrix "
-                   "groups; write ( ) to group a vector")
+                   "groups; write ( ) to group a vector, [x]_\\times for the hat")
         return as_written(motions.hat(v))  # printed [x] as written (latex.meaning)
 
     # ---- derivatives

@@ -21,7 +21,9 @@ from dataclasses import dataclass
 import numpy as np
 import sympy as sp
 
+from .grading_units import unit_off, unit_slip
 from .worked_numbers import read_text, split_text
+from .worked_units import answer_unit
 
 __all__ = ["grade", "Graded", "RTOL", "SLIPS", "is_blank", "answer_shape", "gradeable"]
 
@@ -180,12 +182,13 @@ def grade(solution, answers: dict, slips: dict | None = None,
     if unknown:
         raise ValueError(f"answers: {solution.id} has no answer {unknown[0]!r}; its answers "
                          f"are: {', '.join(known)}")
+    from rigidsym.checking.worked import exercise_module
+
     from .worked_render import to_json_value
 
+    module = exercise_module(solution.id)
     if slips is None:
-        from rigidsym.checking.worked import exercise_module
-
-        own = getattr(exercise_module(solution.id), "slips", None)
+        own = getattr(module, "slips", None)
         slips = own(solution) if own else {}
     replayed = _Replays(solution) if replay else None
     out = []
@@ -204,7 +207,8 @@ def grade(solution, answers: dict, slips: dict | None = None,
             out.append(_grade_expression(name, given, right))
             continue
         out.append(_grade_one(name, given, right, to_json_value(right),
-                              (slips or {}).get(name, []), replayed))
+                              (slips or {}).get(name, []), replayed,
+                              answer_unit(module, name)))
     return out
 
 
@@ -322,22 +326,26 @@ class _Replays:
         return iter(self.done)
 
 
-def _grade_one(name, given, right, shown, extra, replayed=None) -> Graded:
+def _grade_one(name, given, right, shown, extra, replayed=None, unit=None) -> Graded:
     e = _expected(right)
     try:
-        g = _as_array(given, name, answer_shape(right))
+        given, f, written = unit_off(given, unit, name)
+        g = _as_array(given, name, answer_shape(right)) * f
     except (ValueError, TypeError) as exc:
         return Graded(name, False, None, shown, f"not read: {exc}")
     if g.size == e.size and g.shape != e.shape:
         g = g.reshape(e.shape)        # a vector as 3 numbers, or as a column
     scale = max(float(np.max(np.abs(e))) if e.size else 0.0, 1e-300)
     tol = f"within {RTOL:g} x {scale:.3g} (0.1 % of the largest entry)"
+    if written and written != unit:
+        tol = f"read in {written}, converted to {unit}: {tol}"
     if _close(g, e, scale):
         return Graded(name, True, None, shown, tol)
     extra_f = [(w, d, _expected(v)) for w, d, v in extra]
     for word, detail, value in _candidates(e, name, extra_f):
         if _close(g, value, max(scale, float(np.max(np.abs(value))))):
-            return Graded(name, False, word, shown, f"matches {detail}")
+            return Graded(name, False, word, shown,
+                          f"matches {detail}" + unit_slip(word, value, e, unit, written))
     for word, detail, answers in replayed or ():
         value = answers.get(name)
         if value is None or isinstance(value, str):

@@ -17,7 +17,8 @@ import re
 
 import sympy as sp
 
-__all__ = ["split_unit", "factor", "with_unit", "implausible", "PLAUSIBLE"]
+__all__ = ["split_unit", "factor", "with_unit", "implausible", "PLAUSIBLE", "answer_unit",
+           "answer_factor", "slipped_unit"]
 
 #: the largest magnitude plausible for a bare number in a parameter's unit (the chapter's
 #: bodies and sensors are hand-sized to a few metres); above it, a warning names the unit
@@ -73,17 +74,7 @@ def factor(unit: str, documented: str, where: str) -> sp.Expr:
     if ";" in documented:
         raise ValueError(f"{where}: its entries have different units ({documented}); give "
                          f"bare numbers in those units, not {unit!r}")
-    ureg = _registry()
-    target = _pint_text(documented) if documented else "dimensionless"
-    if target in ("rad", "dimensionless") and unit in ("rad", "radian", "radians"):
-        return sp.Integer(1)
-    try:
-        f = float(ureg.Quantity(1, _pint_text(unit)).to(target).magnitude)
-    except Exception:  # noqa: BLE001 - pint's DimensionalityError and kin
-        shown = documented or "a pure number"
-        dim = str(ureg.parse_units(_pint_text(unit)).dimensionality)
-        raise ValueError(f"{where}: {unit!r} is not a unit of {shown} ({unit} is "
-                         f"{dim}); give {where} in {shown}, or a unit of it") from None
+    f = _float_factor(unit, documented, where)
     from fractions import Fraction
 
     for base, den in ((sp.pi, 10**4), (sp.Integer(1), 10**9)):   # deg = pi/180 first
@@ -93,6 +84,21 @@ def factor(unit: str, documented: str, where: str) -> sp.Expr:
             return guess
     raise ValueError(f"{where}: the factor from {unit!r} to {documented} ({f!r}) is not an "
                      f"exact rational; give the value in {documented}")
+
+
+def _float_factor(unit: str, documented: str, where: str) -> float:
+    """pint's factor from ``unit`` to ``documented`` (a float), or a ValueError naming both."""
+    ureg = _registry()
+    target = _pint_text(documented) if documented else "dimensionless"
+    if target in ("rad", "dimensionless") and unit in ("rad", "radian", "radians"):
+        return 1.0
+    try:
+        return float(ureg.Quantity(1, _pint_text(unit)).to(target).magnitude)
+    except Exception:  # noqa: BLE001 - pint's DimensionalityError and kin
+        shown = documented or "a pure number"
+        dim = str(ureg.parse_units(_pint_text(unit)).dimensionality)
+        raise ValueError(f"{where}: {unit!r} is not a unit of {shown} ({unit} is "
+                         f"{dim}); give {where} in {shown}, or a unit of it") from None
 
 
 def with_unit(entries, unit: str, documented: str, where: str):
@@ -119,3 +125,51 @@ def implausible(value, documented: str, name: str) -> str:
     return (f"Warning: {name} was read in {documented}, its documented unit: {big:g} "
             f"{documented} is implausible for the chapter's bodies; if you meant another unit, "
             f"write it after the value (e.g. '{name}=... mm').")
+
+
+#: an answer's unit from its name's tail (``volume_m3``, ``centroid_m``), longest first
+_TAILS = (("_per_kg_m2", "m^2"), ("_m5", "m^5"), ("_m3", "m^3"), ("_m2", "m^2"), ("_m", "m"),
+          ("_rad", "rad"))
+
+
+def answer_unit(module, name: str) -> str | None:
+    """The documented unit of the answer ``name`` of an exercise ``module``: its
+    ``ANSWER_UNITS`` entry, else its name's tail (``volume_m3`` -> ``m^3``); ``None`` when
+    the answer documents no single unit (a pure number, a Plücker vector's two units)."""
+    own = getattr(module, "ANSWER_UNITS", {})
+    if name in own:
+        return own[name] or None
+    return next((u for tail, u in _TAILS if name.endswith(tail)), None)
+
+
+def answer_factor(text: str, documented: str | None, where: str) -> tuple[str, float, str]:
+    """A student's answer text with its unit taken off, the factor to the answer's
+    documented unit, and the unit written (``"25 mm"`` -> ``("25", 0.001, "mm")``; no unit
+    -> ``(text, 1.0, "")``).
+
+    Raises:
+        ValueError: a unit on an answer that documents none, or an incompatible one (the
+            message names ``where`` and both units).
+    """
+    num, unit = split_unit(text)
+    if unit is None:
+        return text, 1.0, ""
+    if documented is None:
+        raise ValueError(f"{where}: this answer has no single unit to convert {unit!r} to; "
+                         f"give the bare number")
+    return num, _float_factor(unit, documented, where), unit   # a grade is a float judgement
+
+
+def slipped_unit(ratio: float, documented: str | None) -> str | None:
+    """The unit a bare number ``ratio`` times the right one was most likely given in (the
+    answer's ``documented`` unit with a prefix: ``m`` and 1000 -> ``mm``, ``m^3`` and 1e9 ->
+    ``mm^3``), or ``None``."""
+    if not documented or "m" not in documented.split("^")[0].split():
+        return None
+    ureg = _registry()
+    for pre in ("m", "c", "k", "µ", "d"):
+        cand = re.sub(r"(?<![A-Za-z])m(?![A-Za-z])", pre + "m", documented)
+        f = float(ureg.Quantity(1, _pint_text(cand)).to(_pint_text(documented)).magnitude)
+        if abs(f * ratio - 1) < 1e-9:
+            return cand
+    return None

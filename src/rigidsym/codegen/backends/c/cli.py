@@ -53,7 +53,7 @@ def select_kernels(modules, names) -> tuple[list, dict[str, str]]:
 
 def cmd_generate_c(args) -> int:
     """Write (or with ``--check`` compare) the C-only target into ``--out``."""
-    from rigidsym.codegen.backends.c.target import generate_c
+    from rigidsym.codegen.backends.c.target import float_bounds, generate_c
     from rigidsym.codegen.files import check_or_write
     from rigidsym.codegen.generator import compile_many
 
@@ -73,7 +73,8 @@ def cmd_generate_c(args) -> int:
     with one_line_warnings():
         kernels, origin = select_kernels(args.module, getattr(args, "kernel", None))
     files = generate_c(compile_many(kernels, plan32=False), origin,
-                       single_header=getattr(args, "single_header", False))
+                       single_header=getattr(args, "single_header", False),
+                       bounds=float_bounds(args.module))
 
     class _Result:  # what codegen.files reads of a generation
         pass

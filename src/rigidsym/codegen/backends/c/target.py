@@ -16,6 +16,7 @@ this folder; nothing here changes what ``rigidsym generate`` writes into ``gener
 from __future__ import annotations
 
 import hashlib
+import json
 import keyword
 import math
 import re
@@ -26,13 +27,18 @@ import jinja2
 import sympy as sp
 
 import rigidsym
+from rigidsym.codegen.backends.c.homogeneous import rescale_steps
 from rigidsym.codegen.backends.c.printer import DoublePrinter, FloatOnlyPrinter, WidePrinter
 from rigidsym.codegen.cprogram import _balanced, _finite_check, _program_lines
 from rigidsym.codegen.spec import Kernel
 
-__all__ = ["generate_c", "TEMPLATES", "LIBRARY", "PREFIX", "STATUS"]
+__all__ = ["generate_c", "float_bounds", "TEMPLATES", "LIBRARY", "PREFIX", "STATUS",
+           "FLOAT_BOUNDS"]
 
 TEMPLATES = Path(__file__).parent / "templates"
+#: the float functions' measured accuracy bounds of the book's kernels
+#: (benchmarks/c_float_bounds.py --write), keyed by kernel name, valid for its hash
+FLOAT_BOUNDS = Path(__file__).parent / "float_bounds.json"
 #: the library's name (CMake target, pkg-config module, file prefix)
 LIBRARY = "rigidsym_c"
 #: the prefix of every exported function
@@ -49,10 +55,11 @@ STATUS = (
     ("NONFINITE_RESULT", 4, "an output, or a divisor or radicand on the way, is not finite "
                             "(overflow of finite inputs, or a non-finite input)"),
     ("EXTREME_INPUT", 8, "a nonzero input component has magnitude outside [2^-100, 2^101) "
-                         "(double; float: [2^-30, 2^31)) and there is no wider type to "
-                         "re-run the sample in (the double functions re-run it in long "
-                         "double where that is wider, RIGIDSYM_C_WIDE): intermediates may "
-                         "have underflowed or overflowed, so the outputs are not "
+                         "(double; float: [2^-30, 2^31)) that neither a wider type (the "
+                         "double functions re-run the sample in long double where that is "
+                         "wider, RIGIDSYM_C_WIDE) nor power-of-two rescaling (of the "
+                         "arguments the kernel is homogeneous in) could take: intermediates "
+                         "may have underflowed or overflowed, so the outputs are not "
                          "guaranteed to the stated bound"),
 )
 _C_KEYWORDS = set("""auto break case char const continue default do double else enum extern
@@ -175,7 +182,8 @@ def _check_names(k: Kernel, temps: set[str]) -> None:
     names = [a.name for a in k.args] + [o.name for o in k.outputs]
     for n in names:
         bad = n in _C_KEYWORDS or keyword.iskeyword(n) or n in temps or \
-            re.fullmatch(r"x\d+|status|singular|finite|trig_\d+", n)
+            re.fullmatch(r"x\d+|status|singular|finite|odd|count|j|args|sizes|trig_\d+|"
+                         r"rs_\w+|\w+_", n)
         if bad:
             raise CTargetError(f"kernel {k.name}: argument or output {n!r} would collide "
                                f"with a C keyword or a local of the generated function; "
@@ -184,8 +192,9 @@ def _check_names(k: Kernel, temps: set[str]) -> None:
         raise CTargetError(f"kernel {k.name}: two arguments or outputs share a name")
 
 
-def _function(kc, ctype: str) -> dict:
-    """One scalar function of ``kc`` in ``ctype`` ("double" or "float")."""
+def _function(kc, ctype: str, rescale: list) -> dict:
+    """One scalar function of ``kc`` in ``ctype`` ("double" or "float"); ``rescale``: its
+    power-of-two rescaling steps (:func:`.homogeneous.rescale_steps`)."""
     k = kc.kernel
     printer = DoublePrinter() if ctype == "double" else FloatOnlyPrinter()
     variants = _program(kc, printer, ctype)
@@ -212,7 +221,8 @@ def _function(kc, ctype: str) -> dict:
                              for a in k.args for j in range(a.size)], ctype),
             "slots": slots, "out_check": _balanced([f"({s} - {s})" for s in slots]),
             "bounded": None if any(v["finite"] for v in variants) else _bounded(kc, ctype),
-            "wide": _wide(kc, k) if ctype == "double" else None}
+            "wide": _wide(kc, k) if ctype == "double" else None,
+            "rescale": rescale, "rescaled": {n for st in rescale for n in st["args"]}}
 
 
 def _wide(kc, k: Kernel) -> list[dict]:
@@ -225,15 +235,30 @@ def _wide(kc, k: Kernel) -> list[dict]:
     return variants
 
 
-def _kernel_entry(kc) -> dict:
+def float_bounds(modules=()) -> dict:
+    """The measured bounds of the float functions: the book's (:data:`FLOAT_BOUNDS`) and,
+    for each user module given as a path ``M.py``, those of ``M.float_bounds.json`` beside
+    it (both written by ``benchmarks/c_float_bounds.py --write``)."""
+    out: dict = {}
+    for path in [FLOAT_BOUNDS, *(Path(m).with_suffix(".float_bounds.json")
+                                 for m in modules or () if str(m).endswith(".py"))]:
+        if path.is_file():
+            out.update(json.loads(path.read_text(encoding="utf-8")))
+    return out
+
+
+def _kernel_entry(kc, bounds: dict) -> dict:
     k = kc.kernel
+    b = bounds.get(k.name)
+    steps = rescale_steps(k, kc.variants[0].program) if len(kc.variants) == 1 else []
     return {"name": k.name, "summary": k.summary, "formula": k.formula, "ids": list(k.ids),
             "sources": list(k.sources), "singular": k.singular, "hash": kc.hash,
             "ops": kc.ops, "notes": k.notes,
-            "functions": [_function(kc, "double"), _function(kc, "float")]}
+            "float_bound": b if b is not None and b.get("hash") == kc.hash else None,
+            "functions": [_function(kc, "double", steps), _function(kc, "float", steps)]}
 
 
-def _groups(codes, origin) -> list[dict]:
+def _groups(codes, origin, bounds: dict) -> list[dict]:
     """Kernels with their Jacobian twins (``<name>_with_jacobians``) in one file pair."""
     from rigidsym.codegen.jacobians import SUFFIX
 
@@ -243,7 +268,7 @@ def _groups(codes, origin) -> list[dict]:
         if name.endswith(SUFFIX) and name[:-len(SUFFIX)] in by:
             continue
         members = [kc] + ([by[name + SUFFIX]] if name + SUFFIX in by else [])
-        groups.append({"name": name, "kernels": [_kernel_entry(m) for m in members],
+        groups.append({"name": name, "kernels": [_kernel_entry(m, bounds) for m in members],
                        "origin": origin.get(name, "") if isinstance(origin, dict) else origin,
                        "hash": _combined([m.hash for m in members])})
     return sorted(groups, key=lambda g: g["name"])
@@ -276,8 +301,8 @@ def _single_header(files: dict[str, str], groups: list[dict], allhash: str, ver:
             "\n#endif /* RIGIDSYM_C_IMPLEMENTATION */\n")
 
 
-def generate_c(codes, origin: str | dict[str, str],
-               single_header: bool = False) -> dict[str, str]:
+def generate_c(codes, origin: str | dict[str, str], single_header: bool = False,
+               bounds: dict | None = None) -> dict[str, str]:
     """The C-only target's files (``{relative path: text}``) of compiled kernels.
 
     Args:
@@ -287,6 +312,9 @@ def generate_c(codes, origin: str | dict[str, str],
             or ``{kernel name: module}`` when they come from several.
         single_header: also write ``rigidsym_c_single.h``, every declaration and (under
             ``RIGIDSYM_C_IMPLEMENTATION``) every definition in one file.
+        bounds: the float functions' measured bounds, ``{kernel: {"hash", "bound", ...}}``
+            (default: the book's, :func:`float_bounds`); a kernel without one, or whose
+            hash differs, is stated as not measured.
 
     Returns:
         ``{relative path: text}``: ``rigidsym_c.h``, ``rigidsym_c_impl.h``, per kernel
@@ -297,7 +325,7 @@ def generate_c(codes, origin: str | dict[str, str],
         CTargetError: a kernel whose argument or output name would collide in C.
     """
     env = _env()
-    groups = _groups(codes, origin)
+    groups = _groups(codes, origin, float_bounds() if bounds is None else bounds)
     if isinstance(origin, dict):
         origin = ", ".join(dict.fromkeys(origin.values()))
     ver = {"rigidsym": rigidsym.__version__, "sympy": sp.__version__}
