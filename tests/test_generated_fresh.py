@@ -21,8 +21,9 @@ from pathlib import Path
 
 import pytest
 
+import rigidsym
 from rigidsym.codegen import inputs
-from rigidsym.codegen.generator import check, default_out_dir, generate, write
+from rigidsym.codegen.generator import TEMPLATES, check, default_out_dir, generate, write
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -69,7 +70,7 @@ def test_compare_sees_an_edit_an_orphan_a_missing_file_and_a_changed_input(tmp_p
     assert "missing file: generated/api.py" in lines
     # an input edited after the generation: its digest differs from the recorded one
     rec = json.loads((out / inputs.MANIFEST).read_text())
-    some = "rigidsym/codegen/templates/c_fast.h.j2"
+    some = "rigidsym/codegen/backends/c/templates/c_fast.h.j2"
     assert some in rec["inputs"]
     rec["inputs"][some] = "0" * 64
     (out / inputs.MANIFEST).write_text(json.dumps(rec))
@@ -78,13 +79,22 @@ def test_compare_sees_an_edit_an_orphan_a_missing_file_and_a_changed_input(tmp_p
 
 def test_the_inputs_hold_the_declarations_templates_and_lazy_imports():
     labels = set(inputs.manifest()["inputs"])
-    for must in ("rigidsym/codegen/generator.py", "rigidsym/codegen/templates/c_fast.h.j2",
+    for must in ("rigidsym/codegen/generator.py",
+                 "rigidsym/codegen/backends/c/templates/c_fast.h.j2",
                  "rigidsym/derivations/kernels_spec.py", "rigidsym/derivations/sec3_2.py",
                  "rigidsym/derivations/kernels_accuracy.json",
                  # imported inside generate(), not at the top of the module
                  "rigidsym/codegen/jacobians.py"):
         assert must in labels, must
     assert not any(lab.startswith("rigidsym/generated") for lab in labels)
+    # every template the generator's loader can render is an input (issue 53: they live in
+    # codegen/backends/<language>/templates/), and none hides another of the same name
+    found = [p for folder in TEMPLATES for p in sorted(folder.glob("*.j2"))]
+    assert {p.name for p in found} >= {"c_fast.h.j2", "numpy_kernel.py.j2", "api.py.j2"}
+    assert len({p.name for p in found}) == len(found), sorted(p.name for p in found)
+    site = Path(rigidsym.__file__).resolve().parents[1]      # src/ or an installed tree
+    missing = [p for p in found if p.resolve().relative_to(site).as_posix() not in labels]
+    assert not missing, missing
     # the build record an install writes beside the extension differs on every machine
     assert not any("_ckernels" in lab for lab in labels), sorted(labels)
 

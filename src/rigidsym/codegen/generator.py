@@ -51,7 +51,11 @@ from rigidsym.codegen.vjp import jacobian_program
 
 __all__ = ["generate", "write", "check", "GenerationResult", "default_out_dir", "TEMPLATES"]
 
-TEMPLATES = Path(__file__).parent / "templates"
+#: where the package's own templates are, one folder per language (issue 53): the C of the
+#: extension module (``c_*.j2``, beside the C target's) and the Python package's files
+#: (NumPy, PyTorch and JAX kernels, ``api.py``, ``__init__.py``); names are unique across them
+TEMPLATES = tuple(Path(__file__).parent / "backends" / lang / "templates"
+                  for lang in ("c", "python"))
 #: the ``kind`` of an entry point's argument whose constraint only the Python path checks
 #: (``RIGIDSYM_PYTHON`` in ``c_fast.h.j2``)
 _C_PYTHON_CHECK = 3
@@ -189,7 +193,7 @@ def compile_many(kernels: list[Kernel], plan32: bool = True) -> list[KernelCode]
 
 def _env() -> jinja2.Environment:
     return jinja2.Environment(
-        loader=jinja2.FileSystemLoader(str(TEMPLATES)), keep_trailing_newline=True,
+        loader=jinja2.FileSystemLoader([str(t) for t in TEMPLATES]), keep_trailing_newline=True,
         trim_blocks=True, lstrip_blocks=True, undefined=jinja2.StrictUndefined,
         autoescape=False)
 
