@@ -67,6 +67,19 @@ def test_the_wheel_has_one_top_level_package(wheel):
     assert dist_info == {"-".join(wheel.name.split("-")[:2]) + ".dist-info"}
 
 
+def test_wheel_ships_every_template(wheel):
+    """Issue 53: the generator's templates moved to codegen/backends/<language>/templates/;
+    the wheel carries every one of the checkout's (``generate`` and ``--target c`` from an
+    installed package need them), the report's too."""
+    with zipfile.ZipFile(wheel) as z:
+        names = set(z.namelist())
+    src = REPO / "src"
+    templates = {p.relative_to(src).as_posix() for p in (src / "rigidsym").rglob("*.j2")}
+    assert any("/backends/python/templates/" in t for t in templates)
+    assert any("/backends/c/templates/c_" in t for t in templates)
+    assert templates <= names, sorted(templates - names)
+
+
 def _run(installed, cwd, *args) -> subprocess.CompletedProcess:
     return subprocess.run([sys.executable, *args], cwd=cwd, env=installed["env"],
                           capture_output=True, text=True, timeout=900)
