@@ -10,7 +10,9 @@ declaration hash) and the licence line. docs/c-api.md is the user's guide.
 
 The programs are the ones the package's kernels run (:func:`rigidsym.codegen.generator.
 compile_kernel`: the same rewrites and CSE), printed by :mod:`.printer` into the templates of
-this folder; nothing here changes what ``rigidsym generate`` writes into ``generated/``.
+this folder's ``templates/``; nothing here changes what ``rigidsym generate`` writes into
+``generated/``. The ``c_*.j2`` beside them are the package's extension-module C, rendered by
+:mod:`rigidsym.codegen.generator` (issue 53: one place for every C template).
 """
 
 from __future__ import annotations
