@@ -1,0 +1,248 @@
+"""Coq proofs by normal forms (issue 49): for a relation whose hypotheses are those of unit
+vectors and angles only (no rotation, nothing along a motion), the certificate's ``let``
+abbreviations become Coq ``Definition``s (the statement stays as small as the certificate,
+where inlining them made 3.14's file 1.8 MB), each polynomial abbreviation is rewritten to
+its normal form modulo the hypotheses (``ring`` checks ``let_k - NF_k = sum mu_i h_i`` with
+cofactors computed here), and the entry, cleared of its divisors, is checked by ``field``
+on those small normal forms.
+
+The Gröbner basis is the hypotheses themselves: a unit vector's ``x_1^2 + ... - 1`` (leading
+term ``x_1^2`` in graded reverse lexicographic order) and an angle's ``sin^2 + cos^2 - 1``
+(leading term ``sin^2``) have pairwise coprime leading terms, so division by them is the
+normal form. Coq trusts none of it: every step is a ``ring``/``field`` goal.
+"""
+
+from __future__ import annotations
+
+import re
+
+import sympy as sp
+
+_NAME = re.compile(r"[A-Za-z][A-Za-z0-9_.]*'*")
+_TRIG = re.compile(r"\b(cos|sin)\(([A-Za-z][A-Za-z0-9_.]*)(?:/1)?\)")
+
+
+class NotReducible(ValueError):
+    """This relation is not for the normal-form proof (the message says why)."""
+
+
+def _ident(name: str) -> str:
+    return "v_" + name.replace(".", "_")
+
+
+def _gens(cert: dict) -> tuple[list, list]:
+    """(generators in order, hypothesis polynomials) of the unit and angle groups; free
+    atoms after them."""
+    gens, hyps = [], []
+    for g in cert["atoms"]:
+        if g["kind"] in ("unit", "unit4"):
+            if g["timed"]:
+                raise NotReducible("a unit vector along a motion")
+            xs = [sp.Symbol(_ident(n)) for n in g["names"]]
+            gens += xs
+            hyps.append(sum(x**2 for x in xs) - 1)
+        elif g["kind"] in ("angle", "angle_pi"):
+            a = _ident(g["names"][0])
+            s, c = sp.Symbol(f"(sin {a})"), sp.Symbol(f"(cos {a})")
+            gens += [s, c]
+            hyps.append(s**2 + c**2 - 1)
+        elif g["kind"] in ("rotation", "transform"):
+            raise NotReducible(f"a {g['kind']}")
+    return gens, hyps
+
+
+def _sympy(text: str, env: dict):
+    """A grammar expression as sympy, names from ``env`` (lets, atoms); cos/sin of an angle
+    itself as the symbols ``(cos v_phi)``, ``(sin v_phi)``."""
+    local: dict = {}
+
+    def trig(m):
+        key = f"{m[1]}__{_ident(m[2])}"
+        local[key] = sp.Symbol(f"({m[1]} {_ident(m[2])})")
+        return key
+
+    s = _TRIG.sub(trig, text)
+    if re.search(r"\b(cos|sin|sqrt|pi)\b(?!__)", s):
+        raise NotReducible("cos/sin of something other than an angle itself")
+
+    def name(m):
+        n = m[0]
+        if n in local:
+            return n
+        key = "n_" + re.sub(r"\W", lambda c: f"_{ord(c[0])}_", n)
+        local[key] = env[n] if n in env else sp.Symbol(_ident(n))
+        return key
+
+    s = re.sub(r"[A-Za-z][A-Za-z0-9_.]*'*", name, s).replace("^", "**")
+    return sp.sympify(s, locals=local)
+
+
+def _reduce(p, gens, hyps) -> tuple[list, object]:
+    """(cofactors, normal form) of the polynomial ``p`` modulo ``hyps``."""
+    p = sp.expand(p)
+    if not hyps:
+        return [], p
+    gens = list(gens) + sorted(p.free_symbols - set(gens), key=str)
+    if p == 0:
+        return [0] * len(hyps), p
+    q, r = sp.reduced(p, hyps, *gens, order="grevlex")
+    return list(q), r
+
+
+def _poly(p) -> str:
+    """A polynomial in Coq's syntax (symbols named by their Coq text)."""
+    p = sp.expand(p)
+    if p == 0:
+        return "0"
+    xs = sorted(p.free_symbols, key=str)
+    if not xs:
+        return f"({p})%R"
+    terms = []
+    for mono, c in sp.Poly(p, *xs).terms():
+        terms.append(" * ".join([f"({c})%R"] + [f"{x}^{e}" if e > 1 else str(x)
+                                             for x, e in zip(xs, mono, strict=True) if e]))
+    return " + ".join(terms)
+
+
+def _comb(mus, hyp_texts) -> str:
+    return " + ".join(f"({_poly(m)}) * ({h})" for m, h in zip(mus, hyp_texts, strict=True)
+                      if m != 0) or "0"
+
+
+def normal_forms(cert: dict) -> dict:
+    """``{let name: (sympy value, normal form or None)}``; the normal form (a polynomial in
+    the atoms) for a polynomial abbreviation, None for one that divides."""
+    gens, hyps = _gens(cert)
+    env: dict = {}
+    out = {}
+    for name, text in cert["let"]:
+        v = _sympy(text, env)
+        if v.is_polynomial(*v.free_symbols):
+            nf = _reduce(v, gens, hyps)[1]
+            env[name] = nf
+            out[name] = (v, nf)
+        else:
+            env[name] = v
+            out[name] = (v, None)
+    return out
+
+
+def _lets_used(texts, lets: dict) -> list[str]:
+    """The abbreviations ``texts`` use, directly or through others, in definition order."""
+    seen: set = set()
+    todo = [n for t in texts for n in _NAME.findall(t) if n in lets]
+    while todo:
+        n = todo.pop()
+        if n not in seen:
+            seen.add(n)
+            todo += [m for m in _NAME.findall(lets[n]) if m in lets]
+    return [n for n in lets if n in seen]
+
+
+def reduced_file(cert: dict, coq_expr, divisors) -> str:
+    """The Coq file of every cofactor-certified relation of ``cert`` by normal forms
+    (``coq_expr(text, {})`` writes a grammar text in Coq; ``divisors(*texts)`` the
+    expressions a Coq text divides by).
+
+    Raises:
+        NotReducible: a rotation, a motion, a function other than cos/sin of an angle, or an
+            entry whose cleared numerator does not reduce to 0.
+    """
+    gens, hyps = _gens(cert)
+    nfs = normal_forms(cert)
+    lets = dict(cert["let"])
+    angle = [i for i, h in enumerate(hyps) if "(sin " in str(h)]
+    htext = [_poly(h) for h in hyps]
+    for i in angle:  # as written, so that sin2_cos2 rewrites its one 1
+        a = re.search(r"sin (v_[A-Za-z0-9_]*)", str(hyps[i]))[1]
+        htext[i] = f"(cos {a})^2 + (sin {a})^2 - 1"
+    unit = [i for i in range(len(hyps)) if i not in angle]
+    prem = "".join(f"  ({htext[i]} = 0) ->\n" for i in unit)
+    hnames = " ".join(f"H{i}" for i in unit)
+    asserts = "".join(
+        f"  assert (H{i} : {htext[i]} = 0) by (rewrite <- (sin2_cos2 "
+        f"{re.search(r'sin (v_[A-Za-z0-9_]*)', htext[i])[1]}); unfold Rsqr; ring).\n"
+        for i in angle)
+    rw_h = "rewrite " + ", ".join(f"?H{i}" for i in range(len(hyps))) + "; " if hyps else ""
+    names = sorted({_ident(n) for g in cert["atoms"] for n in g["names"]})
+    out = ["Section Cert.", f"Variables {' '.join(names)} : R."]
+    out += [f"Definition {_ident(n)} := {coq_expr(t, {})}." for n, t in cert["let"]]
+    applied = {n: f"(L_{_ident(n)} {hnames})".replace(" )", ")") for n in lets}
+    for n, t in cert["let"]:
+        v, nf = nfs[n]
+        if nf is None:
+            continue
+        mus, r = _reduce(v - nf, gens, hyps)
+        if r != 0:
+            raise NotReducible(f"{n}: no normal form")
+        rw = "".join(f"  rewrite {applied[m]}.\n" for m in _lets_used([t], lets)
+                     if m != n and nfs[m][1] is not None and m in _NAME.findall(t))
+        out.append(f"Lemma L_{_ident(n)} :\n{prem}  {_ident(n)} = {_poly(nf)}.\n"
+                   f"Proof.\n  intros {hnames}.\n{asserts}  unfold {_ident(n)}.\n{rw}"
+                   f"  apply Rminus_diag_uniq.\n  transitivity ({_comb(mus, htext)}); "
+                   f"[field | {rw_h}ring].\nQed.")
+    env = {n: (nf if nf is not None else v) for n, (v, nf) in nfs.items()}
+    for ri, rel in enumerate(cert["relations"]):
+        if rel["evidence"]["type"] != "cofactors":
+            continue
+        for i, (lr, rr) in enumerate(zip(rel["lhs"], rel["rhs"], strict=True)):
+            for j, (a, b) in enumerate(zip(lr, rr, strict=True)):
+                out.append(_entry(f"r{ri}_e{i + 1}{j + 1}", a, b, cert, env, nfs, gens, hyps,
+                                  htext, (prem, hnames, asserts, rw_h, applied),
+                                  coq_expr, divisors))
+    out.append("End Cert.")
+    return "\n".join(out) + "\n"
+
+
+def _entry(name, a, b, cert, env, nfs, gens, hyps, htext, parts, coq_expr, divisors) -> str:
+    prem, hnames, asserts, rw_h, applied = parts
+    lets = dict(cert["let"])
+    used = _lets_used([a, b], lets)
+    rational = [n for n in used if nfs[n][1] is None]
+    lhs, rhs = coq_expr(a, {}), coq_expr(b, {})
+    divs = divisors(lhs, rhs, *(coq_expr(lets[n], {}) for n in rational))
+    f = _sympy(a, env) - _sympy(b, env)
+    for k in (1, 2, 3):
+        W = sp.Mul(*[_sympy_coq(d, env, cert) ** k for d in divs])
+        num = sp.cancel(sp.together(W * f))
+        if num.is_polynomial(*num.free_symbols):
+            break
+    else:
+        raise NotReducible(f"{name}: the divisors do not clear the entry")
+    mus, r = _reduce(num, gens, hyps)
+    if r != 0:
+        raise NotReducible(f"{name}: the cleared entry does not reduce to 0")
+    wtext = " * ".join(f"({d})^{k}" for d in divs) or "1"
+    nprem = "".join(f"  ({d} <> 0) ->\n" for d in divs)
+    nnames = " ".join(f"N{i}" for i in range(len(divs)))
+    unf = (f"  unfold {', '.join(_ident(n) for n in reversed(rational))} in *.\n"
+           if rational else "")
+    rw = ", ".join(f"?{applied[n]}" for n in reversed(used) if nfs[n][1] is not None)
+    rw = f"  rewrite {rw} in *.\n" if rw else ""
+    return (f"Lemma {name} :\n{prem}{nprem}  {lhs} = {rhs}.\n"
+            f"Proof.\n  intros {hnames} {nnames}.\n{asserts}"
+            f"  assert (NW : {wtext} <> 0) by (repeat apply Rmult_integral_contrapositive_"
+            f"currified; try apply pow_nonzero; try assumption; apply R1_neq_R0).\n"
+            f"  apply Rminus_diag_uniq.\n  apply (Rmult_eq_reg_l ({wtext})); [| exact NW].\n"
+            f"  rewrite Rmult_0_r.\n  transitivity ({_comb(mus, htext)}); "
+            f"[| {rw_h}ring].\n{unf}{rw}"
+            f"  field; repeat split; try assumption.\n{_side(len(divs))}Qed.")
+
+
+def _side(n: int) -> str:
+    """Close field's side goals ``X <> 0``: each is a premise up to ``ring``."""
+    if not n:
+        return ""
+    tries = " | ".join(f"apply N{i}; transitivity X; [ring | exact Z]" for i in range(n))
+    return (f"  all: match goal with |- ?X <> 0 => intro Z; first [{tries}] end.\n")
+
+
+def _sympy_coq(text: str, env: dict, cert: dict):
+    """A divisor written in Coq (``v_`` names, ``(cos v_phi)``) back as sympy over
+    ``env``."""
+    back = {_ident(n): n for g in cert["atoms"] for n in g["names"]}
+    back.update({_ident(n): n for n, _ in cert["let"]})
+    s = re.sub(r"\((cos|sin) (v_[A-Za-z0-9_]*)\)", lambda m: f"{m[1]}({back[m[2]]})", text)
+    s = re.sub(r"\bv_[A-Za-z0-9_]*'*", lambda m: back[m[0]], s.replace("%R", ""))
+    s = re.sub(r"\(/ ", "(1/", s)
+    return _sympy(s, env)
