@@ -133,16 +133,16 @@ def test_whole_chapter_certified_and_tampering_rejected(tmp_path):
 #: identities issue 49 asks Coq to check: A^T A, its inverse and the inverse's coefficients
 #: (3.13-3.16), a Rodrigues-form rotation (3.1: relative position rotated by
 #: Q = e e^T + cos(phi)(1 - e e^T) + sin(phi) E), Steiner's 3.133a and 3.147 (these by
-#: normal forms, checking/coqnf.py), and a rotation along a motion (3.99: the rotation's
-#: hypotheses and their derivatives, by the certificate's cofactors).
-COQ_IDS = ["3.13", "3.14", "3.15", "3.16", "3.1", "3.133a", "3.147", "3.99"]
+#: normal forms, checking/coqnf.py), a rotation along a motion (3.99: the rotation's
+#: hypotheses and their derivatives) and a static one (3.51), by the certificate's cofactors.
+COQ_IDS = ["3.13", "3.14", "3.15", "3.16", "3.1", "3.133a", "3.147", "3.99", "3.51"]
 
 
 @pytest.mark.slow
 @pytest.mark.parametrize("eq_id", COQ_IDS)
 def test_coq_proves_cofactor_certificates(eq_id):
     """coqc (Debian's coq) proves each entry: lemmas forall atoms, hypotheses ->
-    divisors <> 0 -> lhs = rhs; and rejects a changed statement (3.13) or cofactor (3.99)."""
+    divisors <> 0 -> lhs = rhs; and rejects a changed statement (3.13) or cofactor (3.51)."""
     import shutil
 
     from rigidsym.checking.certificates import certificate
@@ -162,7 +162,7 @@ def test_coq_proves_cofactor_certificates(eq_id):
     if eq_id == "3.13":  # a false statement is not proved, by either path
         assert not prove(certtamper.changed_coefficient(cert), timeout=600)[0]
         assert not prove(certtamper.swapped_side(cert), timeout=600)[0]
-    if eq_id == "3.99":  # Coq rejects a wrong cofactor of the cofactor path
+    if eq_id == "3.51":  # Coq rejects a wrong cofactor of the cofactor path
         assert not prove(certtamper.altered_cofactor(cert), timeout=600)[0]
 
 
