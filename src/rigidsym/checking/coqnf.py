@@ -165,7 +165,7 @@ def reduced_file(cert: dict, coq_expr, divisors) -> str:
         for i in angle)
     rw_h = "rewrite " + ", ".join(f"?H{i}" for i in range(len(hyps))) + "; " if hyps else ""
     names = sorted({_ident(n) for g in cert["atoms"] for n in g["names"]})
-    out = ["Section Cert.", f"Variables {' '.join(names)} : R."]
+    out = ["Section Cert."] + ([f"Variables {' '.join(names)} : R."] if names else [])
     out += [f"Definition {_ident(n)} := {coq_expr(t, {})}." for n, t in cert["let"]]
     applied = {n: f"(L_{_ident(n)} {hnames})".replace(" )", ")") for n in lets}
     for n, t in cert["let"]:
