@@ -15,11 +15,12 @@ normal form. Coq trusts none of it: every step is a ``ring``/``field`` goal.
 from __future__ import annotations
 
 import re
+from fractions import Fraction
+from math import gcd
 
 import sympy as sp
 
 _NAME = re.compile(r"[A-Za-z][A-Za-z0-9_.]*'*")
-_TRIG = re.compile(r"\b(cos|sin)\(([A-Za-z][A-Za-z0-9_.]*)(?:/1)?\)")
 
 
 class NotReducible(ValueError):
@@ -30,7 +31,85 @@ def _ident(name: str) -> str:
     return "v_" + name.replace(".", "_")
 
 
-def _gens(cert: dict) -> tuple[list, list]:
+_CALL = re.compile(r"\b(cos|sin)\(\s*(?:\((-?\d+)/(\d+)\)\*|(-?\d+)\*)?"
+                   r"([A-Za-z][A-Za-z0-9_.]*)(?:/(\d+))?\s*\)")
+
+
+def _psi(name: str, M: int) -> str:
+    """Coq text of the angle ``name / M`` the cos/sin of an angle are polynomials in."""
+    return _ident(name) if M == 1 else f"({_ident(name)} / {M})"
+
+
+def _angles(cert: dict) -> tuple[dict, dict, dict]:
+    """The certificate with each cos/sin call replaced by a name ``trg__N``, the angles'
+    ``M`` (cos(k phi/M) for integer k), and ``{name: (fn, k, angle, M)}``."""
+    calls: dict = {}
+
+    def key(m):
+        num, den = (int(m[2]), int(m[3])) if m[2] else (int(m[4] or 1), 1)
+        return (m[1], Fraction(num, den * int(m[6] or 1)), m[5])
+
+    texts = [t for _, t in cert["let"]] + [x for r in cert["relations"]
+                                           for side in (r["lhs"], r["rhs"])
+                                           for row in side for x in row]
+    for t in texts:
+        for m in _CALL.finditer(t):
+            calls.setdefault(key(m), f"trg__{len(calls)}")
+    M: dict = {}
+    for _, r, a in calls:
+        M[a] = M.get(a, 1) * r.denominator // gcd(M.get(a, 1), r.denominator)
+    info = {n: (fn, int(r * M[a]), a, M[a]) for (fn, r, a), n in calls.items()}
+
+    def sub(t):
+        return _CALL.sub(lambda m: calls[key(m)], t)
+
+    c = dict(cert, let=[[n, sub(t)] for n, t in cert["let"]])
+    c["relations"] = [dict(r, lhs=[[sub(x) for x in row] for row in r["lhs"]],
+                           rhs=[[sub(x) for x in row] for row in r["rhs"]])
+                      for r in cert["relations"]]
+    return c, M, info
+
+
+def _trig_values(info: dict) -> dict:
+    """``{trg name: cos/sin(k psi) as a polynomial in cos psi, sin psi}``."""
+    out = {}
+    for n, (fn, k, a, M) in info.items():
+        c, s = sp.Symbol(f"(cos {_psi(a, M)})"), sp.Symbol(f"(sin {_psi(a, M)})")
+        ck, sk = c, s  # cos_plus, sin_plus as Coq rewrites them: no sin^2 + cos^2 = 1
+        for _ in range(k - 1):
+            ck, sk = sp.expand(ck * c - sk * s), sp.expand(sk * c + ck * s)
+        out[n] = ck if fn == "cos" else sk
+    return out
+
+
+def _trig_text(fn: str, k: int, a: str, M: int) -> str:
+    """Coq text of cos/sin(k a / M), in lowest terms (cos(phi) stays ``cos v_phi``)."""
+    r = Fraction(k, M)
+    arg = _ident(a) if r.numerator == 1 else f"{r.numerator} * {_ident(a)}"
+    return f"({fn} {arg})" if r == 1 else \
+        f"({fn} ({arg}{f' / {r.denominator}' if r.denominator > 1 else ''}))"
+
+
+def _trig_lemmas(info: dict, values: dict) -> tuple[list, list]:
+    """(Coq lemmas ``T_n : cos (k phi / M) = P(cos psi, sin psi)``, their names), for the
+    calls that are not cos/sin of psi itself; by ``cos_plus``/``sin_plus``."""
+    out, names = [], []
+    for n, (fn, k, a, M) in info.items():
+        if k < 1:
+            raise NotReducible("cos/sin of a negative multiple of an angle")
+        text, psi = _trig_text(fn, k, a, M), _psi(a, M)
+        if text == f"({fn} {psi})":
+            continue
+        arg = text[len(fn) + 2:-1]
+        out.append(f"Lemma T_{n} : {text} = {_poly(values[n])}.\nProof.\n"
+                   f"  assert (E : {fn} {arg} = {fn} ({' + '.join([psi] * k)})) by "
+                   f"(f_equal; field).\n  rewrite E; repeat rewrite ?cos_plus, ?sin_plus; "
+                   "ring.\nQed.")
+        names.append(f"T_{n}")
+    return out, names
+
+
+def _gens(cert: dict, M: dict) -> tuple[list, list]:
     """(generators in order, hypothesis polynomials) of the unit and angle groups; free
     atoms after them."""
     gens, hyps = [], []
@@ -42,7 +121,7 @@ def _gens(cert: dict) -> tuple[list, list]:
             gens += xs
             hyps.append(sum(x**2 for x in xs) - 1)
         elif g["kind"] in ("angle", "angle_pi"):
-            a = _ident(g["names"][0])
+            a = _psi(g["names"][0], M.get(g["names"][0], 1))
             s, c = sp.Symbol(f"(sin {a})"), sp.Symbol(f"(cos {a})")
             gens += [s, c]
             hyps.append(s**2 + c**2 - 1)
@@ -52,18 +131,12 @@ def _gens(cert: dict) -> tuple[list, list]:
 
 
 def _sympy(text: str, env: dict):
-    """A grammar expression as sympy, names from ``env`` (lets, atoms); cos/sin of an angle
-    itself as the symbols ``(cos v_phi)``, ``(sin v_phi)``."""
+    """A grammar expression as sympy, names from ``env`` (lets, cos/sin calls already
+    named by :func:`_angles`), other names as symbols ``v_name``."""
     local: dict = {}
-
-    def trig(m):
-        key = f"{m[1]}__{_ident(m[2])}"
-        local[key] = sp.Symbol(f"({m[1]} {_ident(m[2])})")
-        return key
-
-    s = _TRIG.sub(trig, text)
-    if re.search(r"\b(cos|sin|sqrt|pi)\b(?!__)", s):
-        raise NotReducible("cos/sin of something other than an angle itself")
+    s = text
+    if re.search(r"\b(cos|sin|sqrt|pi)\b", s):
+        raise NotReducible("cos/sin of something other than a rational multiple of an angle")
 
     def name(m):
         n = m[0]
@@ -109,11 +182,11 @@ def _comb(mus, hyp_texts) -> str:
                       if m != 0) or "0"
 
 
-def normal_forms(cert: dict) -> dict:
+def normal_forms(cert: dict, gens: list, hyps: list, trig: dict) -> dict:
     """``{let name: (sympy value, normal form or None)}``; the normal form (a polynomial in
-    the atoms) for a polynomial abbreviation, None for one that divides."""
-    gens, hyps = _gens(cert)
-    env: dict = {}
+    the atoms) for a polynomial abbreviation, None for one that divides (``cert`` as
+    :func:`_angles` writes it, ``trig`` the values of its cos/sin calls)."""
+    env: dict = dict(trig)
     out = {}
     for name, text in cert["let"]:
         v = _sympy(text, env)
@@ -148,25 +221,31 @@ def reduced_file(cert: dict, coq_expr, divisors) -> str:
         NotReducible: a rotation, a motion, a function other than cos/sin of an angle, or an
             entry whose cleared numerator does not reduce to 0.
     """
-    gens, hyps = _gens(cert)
-    nfs = normal_forms(cert)
+    cert, M, info = _angles(cert)
+    trig = _trig_values(info)
+    gens, hyps = _gens(cert, M)
+    nfs = normal_forms(cert, gens, hyps, trig)
     lets = dict(cert["let"])
     angle = [i for i, h in enumerate(hyps) if "(sin " in str(h)]
     htext = [_poly(h) for h in hyps]
+    psi = {}
     for i in angle:  # as written, so that sin2_cos2 rewrites its one 1
-        a = re.search(r"sin (v_[A-Za-z0-9_]*)", str(hyps[i]))[1]
-        htext[i] = f"(cos {a})^2 + (sin {a})^2 - 1"
+        psi[i] = next(str(x)[5:-1] for x in hyps[i].free_symbols if str(x).startswith("(sin"))
+        htext[i] = f"(cos {psi[i]})^2 + (sin {psi[i]})^2 - 1"
     unit = [i for i in range(len(hyps)) if i not in angle]
     prem = "".join(f"  ({htext[i]} = 0) ->\n" for i in unit)
     hnames = " ".join(f"H{i}" for i in unit)
     asserts = "".join(
         f"  assert (H{i} : {htext[i]} = 0) by (rewrite <- (sin2_cos2 "
-        f"{re.search(r'sin (v_[A-Za-z0-9_]*)', htext[i])[1]}); unfold Rsqr; ring).\n"
+        f"{psi[i]}); unfold Rsqr; ring).\n"
         for i in angle)
     rw_h = "rewrite " + ", ".join(f"?H{i}" for i in range(len(hyps))) + "; " if hyps else ""
     names = sorted({_ident(n) for g in cert["atoms"] for n in g["names"]})
     out = ["Section Cert."] + ([f"Variables {' '.join(names)} : R."] if names else [])
     out += [f"Definition {_ident(n)} := {coq_expr(t, {})}." for n, t in cert["let"]]
+    tl, tnames = _trig_lemmas(info, trig)
+    out += tl
+    rw_t = "".join(f"  rewrite ?{t}.\n" for t in tnames)
     applied = {n: f"(L_{_ident(n)} {hnames})".replace(" )", ")") for n in lets}
     for n, t in cert["let"]:
         v, nf = nfs[n]
@@ -178,24 +257,25 @@ def reduced_file(cert: dict, coq_expr, divisors) -> str:
         rw = "".join(f"  rewrite {applied[m]}.\n" for m in _lets_used([t], lets)
                      if m != n and nfs[m][1] is not None and m in _NAME.findall(t))
         out.append(f"Lemma L_{_ident(n)} :\n{prem}  {_ident(n)} = {_poly(nf)}.\n"
-                   f"Proof.\n  intros {hnames}.\n{asserts}  unfold {_ident(n)}.\n{rw}"
+                   f"Proof.\n  intros {hnames}.\n{asserts}  unfold {_ident(n)}.\n{rw}{rw_t}"
                    f"  apply Rminus_diag_uniq.\n  transitivity ({_comb(mus, htext)}); "
                    f"[field | {rw_h}ring].\nQed.")
-    env = {n: (nf if nf is not None else v) for n, (v, nf) in nfs.items()}
+    env = dict(trig, **{n: (nf if nf is not None else v) for n, (v, nf) in nfs.items()})
     for ri, rel in enumerate(cert["relations"]):
         if rel["evidence"]["type"] != "cofactors":
             continue
         for i, (lr, rr) in enumerate(zip(rel["lhs"], rel["rhs"], strict=True)):
             for j, (a, b) in enumerate(zip(lr, rr, strict=True)):
                 out.append(_entry(f"r{ri}_e{i + 1}{j + 1}", a, b, cert, env, nfs, gens, hyps,
-                                  htext, (prem, hnames, asserts, rw_h, applied),
+                                  htext, (prem, hnames, asserts, rw_h, applied, tnames),
                                   coq_expr, divisors))
     out.append("End Cert.")
-    return "\n".join(out) + "\n"
+    return re.sub(r"\bv_(trg__\d+)\b", lambda m: _trig_text(*info[m[1]]),
+                  "\n".join(out) + "\n")
 
 
 def _entry(name, a, b, cert, env, nfs, gens, hyps, htext, parts, coq_expr, divisors) -> str:
-    prem, hnames, asserts, rw_h, applied = parts
+    prem, hnames, asserts, rw_h, applied, tnames = parts
     lets = dict(cert["let"])
     used = _lets_used([a, b], lets)
     rational = [n for n in used if nfs[n][1] is None]
@@ -219,6 +299,7 @@ def _entry(name, a, b, cert, env, nfs, gens, hyps, htext, parts, coq_expr, divis
            if rational else "")
     rw = ", ".join(f"?{applied[n]}" for n in reversed(used) if nfs[n][1] is not None)
     rw = f"  rewrite {rw} in *.\n" if rw else ""
+    rw += "".join(f"  rewrite ?{t} in *.\n" for t in tnames)
     return (f"Lemma {name} :\n{prem}{nprem}  {lhs} = {rhs}.\n"
             f"Proof.\n  intros {hnames} {nnames}.\n{asserts}"
             f"  assert (NW : {wtext} <> 0) by (repeat apply Rmult_integral_contrapositive_"
@@ -241,7 +322,7 @@ def _sympy_coq(text: str, env: dict, cert: dict):
     """A divisor written in Coq (``v_`` names, ``(cos v_phi)``) back as sympy over
     ``env``."""
     back = {_ident(n): n for g in cert["atoms"] for n in g["names"]}
-    back.update({_ident(n): n for n, _ in cert["let"]})
+    back.update({_ident(n): n for n in env})
     s = re.sub(r"\((cos|sin) (v_[A-Za-z0-9_]*)\)", lambda m: f"{m[1]}({back[m[2]]})", text)
     s = re.sub(r"\bv_[A-Za-z0-9_]*'*", lambda m: back[m[0]], s.replace("%R", ""))
     s = re.sub(r"\(/ ", "(1/", s)
