@@ -311,11 +311,18 @@ def _entry(name, a, b, cert, env, nfs, gens, hyps, htext, parts, coq_expr, divis
 
 
 def _side(n: int) -> str:
-    """Close field's side goals ``X <> 0``: each is a premise up to ``ring``."""
+    """Close field's side goals ``X <> 0``: each is a premise up to ``ring``, or the
+    numerator of a premise that divides (``field_simplify`` leaves ``X' / Q = 0`` and
+    ``Q <> 0``; two passes)."""
     if not n:
         return ""
-    tries = " | ".join(f"apply N{i}; transitivity X; [ring | exact Z]" for i in range(n))
-    return (f"  all: match goal with |- ?X <> 0 => intro Z; first [{tries}] end.\n")
+    eq = "transitivity X; [ring | exact Z]"
+    tries = " | ".join(f"apply N{i}; {eq}" for i in range(n))
+    tries += "".join(f" | apply N{i}; field_simplify; [first [unfold Rdiv; apply "
+                     f"Rmult_eq_0_compat_r; {eq} | {eq}] | idtac ..]" for i in range(n))
+    one = (f"try (match goal with |- ?X <> 0 => let Z := fresh \"Z\" in intro Z; "
+           f"first [{tries}] end)")
+    return f"  all: {one}.\n  all: {one}.\n"
 
 
 def _sympy_coq(text: str, env: dict, cert: dict):
