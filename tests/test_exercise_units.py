@@ -12,7 +12,9 @@ from rigidsym.cli import main
 
 @pytest.mark.parametrize(("text", "unit"), [
     ("0,0,100 mm", "mm"), ("30 deg", "deg"), ("1,0,1 N m", "N m"), ("5 kg m^2", "kg m^2"),
-    ("sqrt(3)/2", None), ("2 pi", None), ("cos(30°)", None), ("150", None), ("1e-3", None)])
+    ("sqrt(3)/2", None), ("2 pi", None), ("cos(30°)", None), ("150", None), ("1e-3", None),
+    # as students type them: a unit right after the digits, never a number's own letters
+    ("30deg", "deg"), ("0,0,100mm", "mm"), ("2pi", None), ("2e3", None), ("1E5", None)])
 def test_split_unit(text, unit):
     assert split_unit(text)[1] == unit
 
@@ -49,3 +51,14 @@ def test_bare_millimetres_warn_naming_the_unit(capsys):
     assert "rigidsym: warning: a was read in m" in err
     assert max(map(len, err.splitlines())) <= 100        # wrapped, as the solution's text
     assert not [n for n in ex.solve("ex3.11").assumptions if n.startswith("Warning:")]
+
+
+def test_a_unit_right_after_the_digits_converts_as_with_a_space(capsys):
+    """Issue 50: ``100mm`` as students type it is ``100 mm`` (before: "'mm' is not a name the
+    reader knows"); letters that are not a unit are still refused as bad data."""
+    assert main(["exercise", "3.19", "--set", "d=0,0,100mm"]) == 0
+    with_space = capsys.readouterr().out
+    assert main(["exercise", "3.19", "--set", "d=0,0,100 mm"]) == 0
+    assert capsys.readouterr().out == with_space and "1/10" in with_space
+    assert main(["exercise", "3.19", "--set", "d=0,0,100zz"]) == 2
+    assert "'zz' is not a name" in capsys.readouterr().err

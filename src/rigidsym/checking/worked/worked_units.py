@@ -26,9 +26,10 @@ PLAUSIBLE = {"m": sp.Integer(10)}
 
 # a unit: after a space, starts with a letter (or µ, °), then letters, digits, spaces,
 # *, /, ^, ** and . (``N m``, ``kg*m^2``, ``m/s``); the number before it ends with a digit,
-# a bracket or a degree sign
-_UNIT = re.compile(r"^(?P<num>.*?[\d)\]°.])\s+(?P<unit>[A-Za-zµ°][A-Za-z0-9µ°_*/^.· ]*)$",
-                   re.S)
+# a bracket or a degree sign. Written as students write it, a letter may follow the last
+# digit directly (``30deg``, ``100mm``): pint still has to read the tail as a unit
+_UNIT = re.compile(r"^(?P<num>.*?[\d)\]°.])(?:\s+|(?<=\d)(?=[A-Za-zµ]))"
+                   r"(?P<unit>[A-Za-zµ°][A-Za-z0-9µ°_*/^.· ]*)$", re.S)
 
 
 @functools.cache
