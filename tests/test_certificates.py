@@ -130,19 +130,20 @@ def test_whole_chapter_certified_and_tampering_rejected(tmp_path):
     assert counts == {"verified": 121, "does-not-hold": 11, "definition": 49}
 
 
-#: identities issue 49 asks Coq to check: A^T A and its inverse (3.13, 3.16), a
-#: Rodrigues-form rotation (3.1: relative position rotated by Q = e e^T + cos(phi)(1 - e e^T)
-#: + sin(phi) E), Steiner's 3.133a and 3.147, and a rotation along a motion (3.99: the
-#: rotation's hypotheses and their derivatives). (3.14 and 3.15 run past 240 s of coqc here:
-#: field's side conditions on their large divisors; docs/certificates.md.)
-COQ_IDS = ["3.13", "3.16", "3.1", "3.133a", "3.147", "3.99"]
+#: identities issue 49 asks Coq to check: A^T A, its inverse and the inverse's coefficients
+#: (3.13-3.16), a Rodrigues-form rotation (3.1: relative position rotated by
+#: Q = e e^T + cos(phi)(1 - e e^T) + sin(phi) E), Steiner's 3.133a and 3.147 (these by
+#: normal forms, checking/coqnf.py), a rotation along a motion (3.99: the rotation's
+#: hypotheses and their derivatives) and a static one (3.51), by the certificate's cofactors;
+#: 3.35, half angles: cos(phi) and sin(phi) rewritten in cos(phi/2), sin(phi/2).
+COQ_IDS = ["3.13", "3.14", "3.15", "3.16", "3.1", "3.133a", "3.147", "3.99", "3.51", "3.35"]
 
 
 @pytest.mark.slow
 @pytest.mark.parametrize("eq_id", COQ_IDS)
 def test_coq_proves_cofactor_certificates(eq_id):
-    """coqc (Debian's coq) proves each entry from the certificate's cofactors: lemmas
-    forall atoms, hypotheses -> divisors <> 0 -> lhs = rhs."""
+    """coqc (Debian's coq) proves each entry: lemmas forall atoms, hypotheses ->
+    divisors <> 0 -> lhs = rhs; and rejects a changed statement (3.13) or cofactor (3.51)."""
     import shutil
 
     from rigidsym.checking.certificates import certificate
@@ -154,12 +155,35 @@ def test_coq_proves_cofactor_certificates(eq_id):
     load_all()
     cert = certificate(eq_id, REGISTRY[eq_id].expected)
     text = coq_file(cert)
-    assert text.count("Lemma ") == sum(len(r["evidence"]["entries"]) for r in
-                                       cert["relations"] if r["evidence"]["type"] == "cofactors")
+    assert text.count("Lemma r") == sum(len(r["evidence"]["entries"]) for r in
+                                        cert["relations"]
+                                        if r["evidence"]["type"] == "cofactors")
     ok, msg = prove(cert, timeout=600)
     assert ok, msg
-    if eq_id == "3.13":  # Coq rejects a wrong cofactor too
+    if eq_id == "3.13":  # a false statement is not proved, by either path
+        assert not prove(certtamper.changed_coefficient(cert), timeout=600)[0]
+        assert not prove(certtamper.swapped_side(cert), timeout=600)[0]
+    if eq_id == "3.51":  # Coq rejects a wrong cofactor of the cofactor path
         assert not prove(certtamper.altered_cofactor(cert), timeout=600)[0]
+
+
+def test_coq_normal_forms_refuse_a_false_entry():
+    """The normal-form export (unit vectors, angles) writes 3.14's lemmas with its
+    abbreviations as Definitions (the file a few kB, not 1.8 MB inlined), and refuses the
+    statement with 1/7 added to an entry: its cleared numerator does not reduce to 0
+    modulo the unit vector's and the angle's hypotheses."""
+    from rigidsym.checking import coqnf
+    from rigidsym.checking.certificates import certificate
+    from rigidsym.checking.coq import _coq_expr, _divisors
+    from rigidsym.checking.deciding.registry import REGISTRY, load_all
+
+    load_all()
+    cert = certificate("3.14", REGISTRY["3.14"].expected)
+    text = coqnf.reduced_file(cert, _coq_expr, _divisors)
+    assert text.count("Lemma r0_e") == 9 and len(text) < 60_000
+    assert "Definition v_let24 :=" in text
+    with pytest.raises(coqnf.NotReducible, match="does not reduce to 0"):
+        coqnf.reduced_file(certtamper.changed_coefficient(cert), _coq_expr, _divisors)
 
 
 #: ids whose export depended on PYTHONHASHSEED before the atoms, points and book names were
