@@ -34,6 +34,21 @@ class ChainRemainder(ArithmeticError):
     reduction went past its size or time budget (the message says which)."""
 
 
+
+#: the index of the orthogonality hypothesis (Q^T Q - 1)_{jk}, j <= k, in the checker's order
+_HIX = {(0, 0): 0, (0, 1): 1, (0, 2): 2, (1, 1): 3, (1, 2): 4, (2, 2): 5}
+
+
+def _cofactor_columns(q):
+    """The columns of the cofactor matrix C(Q) of the 3 x 3 ``q`` (rows of ring elements):
+    column k is the cross product of the other two columns of Q, in cyclic order."""
+    col = [[q[r][c] for r in range(3)] for c in range(3)]
+
+    def cross(a, b):
+        return [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2],
+                a[0] * b[1] - a[1] * b[0]]
+    return [cross(col[1], col[2]), cross(col[2], col[0]), cross(col[0], col[1])]
+
 def _by_powers(p, i: int) -> dict:
     """``p`` as ``{k: coefficient of x_i^k}``."""
     out: dict = {}
@@ -55,13 +70,7 @@ def _rotation_members(R, names: list[str], H: list) -> list:
     """The level-0 chain of a rotation whose entries (row-major) are ``names``; ``H`` the
     ring polynomials of its 7 hypotheses (checker's order), elimination order first."""
     q = [[R.var(names[3 * r + c]) for c in range(3)] for r in range(3)]
-    col = [[q[r][c] for r in range(3)] for c in range(3)]
-
-    def cross(a, b):
-        return [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2],
-                a[0] * b[1] - a[1] * b[0]]
-    C = [cross(col[1], col[2]), cross(col[2], col[0]), cross(col[0], col[1])]  # columns
-    hix = {(0, 0): 0, (0, 1): 1, (0, 2): 2, (1, 1): 3, (1, 2): 4, (2, 2): 5}
+    C, hix = _cofactor_columns(q), _HIX
     out = []
     for r in range(3):  # q_r3 - C_r3 = -(det - 1) q_r3 + sum_k C_rk H_k3
         cof: dict = {6: -q[r][2]}
@@ -260,13 +269,7 @@ def derived(R, names: list[str], transform: bool, K: int, d) -> list:
     X = [R.var(n) for n in names]
     M = [X[i] for i in (0, 1, 2, 4, 5, 6, 8, 9, 10)] if transform else X
     q = [[M[3 * r + c] for c in range(3)] for r in range(3)]
-    col = [[q[r][c] for r in range(3)] for c in range(3)]
-
-    def cross(a, b):
-        return [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2],
-                a[0] * b[1] - a[1] * b[0]]
-    C = [cross(col[1], col[2]), cross(col[2], col[0]), cross(col[0], col[1])]  # columns
-    hix = {(0, 0): 0, (0, 1): 1, (0, 2): 2, (1, 1): 3, (1, 2): 4, (2, 2): 5}
+    C, hix = _cofactor_columns(q), _HIX
     F = [[{6: -q[r][c]} for c in range(3)] for r in range(3)]
     for r in range(3):
         for c in range(3):
