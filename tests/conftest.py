@@ -91,4 +91,7 @@ def pytest_collection_modifyitems(session, config, items):
 
 def pytest_collection_finish(session):
     COLLECTED["selected"] = [_plain_id(i) for i in session.items]
+    # the tests that need no extra: the same set whichever extras are installed
+    COLLECTED["core"] = [_plain_id(i) for i in session.items
+                         if i.get_closest_marker("extra") is None]
     COLLECTED["markexpr"] = session.config.getoption("markexpr")

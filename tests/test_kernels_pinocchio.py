@@ -30,6 +30,9 @@ import pytest
 
 from rigidsym import kernels as K
 
+# the [oracles] extra: the default run counts only tests without the mark (tests/test_budget.py)
+pytestmark = pytest.mark.extra
+
 pin = pytest.importorskip("pinocchio")
 
 N = 40
