@@ -726,7 +726,7 @@ def exponential_coordinates_left_jacobian(
     Notes:
         Accuracy: error <= 1.05 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 82 ulp in float64) over 3 regimes (docs/accuracy.md, kernels.accuracy).
 
-        Generated; 226 operations; math hash a4133e465ca458b7.
+        Generated; 97 operations; math hash f108b6a9d1d2e209.
     """
     return _F.exponential_coordinates_left_jacobian(xi, out, check, on_singular, threads)
 
@@ -766,7 +766,7 @@ def exponential_coordinates_left_jacobian_inverse(
 
         Accuracy: error <= 1.37 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 143 ulp in float64) over 3 regimes (docs/accuracy.md, kernels.accuracy); singular when theta = 2 pi k, k != 0 (theta = norm of w).
 
-        Generated; 369 operations; math hash 6ed4c1e9b516ac2d.
+        Generated; 200 operations; math hash 166c30e8dcb611f0.
     """
     return _F.exponential_coordinates_left_jacobian_inverse(xi, out, check, on_singular, threads)
 
@@ -1654,7 +1654,7 @@ def transform_from_exponential_coordinates(
     Notes:
         Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 53 ulp in float64) over 3 regimes (docs/accuracy.md, kernels.accuracy).
 
-        Generated; 77 operations; math hash 6422323903f35e70.
+        Generated; 62 operations; math hash ba43251f4eb5689e.
     """
     return _F.transform_from_exponential_coordinates(xi, out, check, on_singular, threads)
 

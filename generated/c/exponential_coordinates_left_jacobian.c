@@ -4,9 +4,9 @@
  * source: rigidsym.derivations.lie_maps.exponential_coordinates_left_jacobian (composed in rigidsym.derivations.kernels_spec)
  * equations: (barfoot:se3-jl-definition), (barfoot:se3-jl-xi), (barfoot:se3-jl-inverse)
  * template: c_kernel.c.j2
- * math hash: sha256:a4133e465ca458b7
+ * math hash: sha256:f108b6a9d1d2e209
  * sympy 1.14.0, rigidsym 0.2.0
- * operations: 226
+ * operations: 97
  */
 #include "exponential_coordinates_left_jacobian.h"
 

@@ -4,9 +4,9 @@
  * source: rigidsym.derivations.lie_maps.exponential_coordinates_left_jacobian_inverse (composed in rigidsym.derivations.kernels_spec)
  * equations: (barfoot:se3-jl-definition), (barfoot:se3-jl-xi), (barfoot:se3-jl-inverse)
  * template: c_kernel.c.j2
- * math hash: sha256:6ed4c1e9b516ac2d
+ * math hash: sha256:166c30e8dcb611f0
  * sympy 1.14.0, rigidsym 0.2.0
- * operations: 369
+ * operations: 200
  */
 #include "exponential_coordinates_left_jacobian_inverse.h"
 

@@ -4,9 +4,9 @@
  * source: rigidsym.derivations.lie_maps.exponential_coordinates_left_jacobian_inverse (composed in rigidsym.derivations.kernels_spec)
  * equations: (barfoot:se3-jl-definition), (barfoot:se3-jl-xi), (barfoot:se3-jl-inverse)
  * template: c_kernel.c.j2
- * math hash: sha256:20f074c2b57a3d71
+ * math hash: sha256:2758ddd2b4b87e04
  * sympy 1.14.0, rigidsym 0.2.0
- * operations: 2370
+ * operations: 1519
  */
 #include "exponential_coordinates_left_jacobian_inverse_with_jacobians.h"
 

@@ -4,9 +4,9 @@
  * source: rigidsym.derivations.lie_maps.exponential_coordinates_left_jacobian (composed in rigidsym.derivations.kernels_spec)
  * equations: (barfoot:se3-jl-definition), (barfoot:se3-jl-xi), (barfoot:se3-jl-inverse)
  * template: c_kernel.c.j2
- * math hash: sha256:90ad5ab1c6aa4ae7
+ * math hash: sha256:3fc3d84f93d24b04
  * sympy 1.14.0, rigidsym 0.2.0
- * operations: 1050
+ * operations: 499
  */
 #include "exponential_coordinates_left_jacobian_with_jacobians.h"
 

@@ -3,9 +3,9 @@
 # source: rigidsym.derivations.lie_maps.exponential_coordinates_left_jacobian (composed in rigidsym.derivations.kernels_spec)
 # equations: (barfoot:se3-jl-definition), (barfoot:se3-jl-xi), (barfoot:se3-jl-inverse)
 # template: array_kernel.py.j2
-# math hash: sha256:90ad5ab1c6aa4ae7
+# math hash: sha256:3fc3d84f93d24b04
 # sympy 1.14.0, rigidsym 0.2.0
-# operations: 1050
+# operations: 499
 """The left Jacobian of SE(3) at xi = [w; v] (6 x 6, angular first), with the Jacobians of its outputs.
 
 [[J_l(w), 0], [Q(v, w), J_l(w)]] (Barfoot Sec. 7.1.5, reordered); and d(output)/d(input) by sympy on the declared formula
@@ -34,416 +34,269 @@ def _sin(x):
 def _cos(x):
     return _sincos(x)[..., 1]
 
-OPS = 1050
-MATH_HASH = "90ad5ab1c6aa4ae7"
+OPS = 499
+MATH_HASH = "3fc3d84f93d24b04"
 COLUMNS = ("xi_0", "xi_1", "xi_2", "xi_3", "xi_4", "xi_5", )
 
 
 def _main(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5):
     x0 = (xi_1*xi_1)
-    x1 = (xi_2*xi_2)
-    x2 = x0 + x1 + (xi_0*xi_0)
-    x3 = jax.numpy.where(jax.numpy.less(x2, 1.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(8.2206352466243295e-18*x2 - 2.8114572543455206e-15) + 7.6471637318198164e-13) - 1.6059043836821613e-10) + 2.505210838544172e-8) - 2.7557319223985893e-6) + 0.00019841269841269841) - 0.0083333333333333332) + 0.16666666666666666, (jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2)) - _sin(jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2))))*jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, 1.0/(x2*jax.numpy.sqrt(x2))))
-    dc0 = 2.0*jax.numpy.where(jax.numpy.less(x2, 4.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(8.8244455617243787e-46 - 5.6796905715705686e-49*x2) - 1.2351282304560222e-42) + 1.5484148733811025e-39) - 1.7274503431157927e-36) + 1.7025750581749252e-33) - 1.4702951752382032e-30) + 1.1020427836554655e-27) - 7.0916453128229206e-25) + 3.8681701706306839e-22) - 1.7615646957052136e-19) + 6.5765081972994636e-17) - 1.9680200780418645e-14) + 4.5882982390918896e-12) - 8.0295219184108074e-10) + 1.0020843354176688e-7) - 8.2671957671957678e-6) + 0.00039682539682539683) - 0.0083333333333333332, (0.5)*((1.0 - _cos(jax.numpy.where(jax.numpy.less(x2, 4.0), 2.0, jax.numpy.sqrt(x2))))*jax.numpy.where(jax.numpy.less(x2, 4.0), 2.0, jax.numpy.sqrt(x2)) - 3.0*jax.numpy.where(jax.numpy.less(x2, 4.0), 2.0, jax.numpy.sqrt(x2)) + 3.0*_sin(jax.numpy.where(jax.numpy.less(x2, 4.0), 2.0, jax.numpy.sqrt(x2))))*jax.numpy.where(jax.numpy.less(x2, 4.0), 0.03125, 1.0/((x2*x2)*jax.numpy.sqrt(x2))))
-    dx3_0 = dc0*xi_0
-    dx3_1 = dc0*xi_1
-    dx3_2 = dc0*xi_2
-    x4 = x0*x3
-    dx4_0 = dx3_0*x0
-    dc1 = x3*xi_1
+    x1 = (xi_0*xi_0)
+    x2 = (xi_2*xi_2)
+    x3 = x0 + x1 + x2
+    x4 = jax.numpy.where(jax.numpy.less(x3, 1.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(8.2206352466243295e-18*x3 - 2.8114572543455206e-15) + 7.6471637318198164e-13) - 1.6059043836821613e-10) + 2.505210838544172e-8) - 2.7557319223985893e-6) + 0.00019841269841269841) - 0.0083333333333333332) + 0.16666666666666666, (jax.numpy.where(jax.numpy.less(x3, 1.0), 1.0, jax.numpy.sqrt(x3)) - _sin(jax.numpy.where(jax.numpy.less(x3, 1.0), 1.0, jax.numpy.sqrt(x3))))*jax.numpy.where(jax.numpy.less(x3, 1.0), 1.0, 1.0/(x3*jax.numpy.sqrt(x3))))
+    dc0 = 2.0*jax.numpy.where(jax.numpy.less(x3, 4.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(8.8244455617243787e-46 - 5.6796905715705686e-49*x3) - 1.2351282304560222e-42) + 1.5484148733811025e-39) - 1.7274503431157927e-36) + 1.7025750581749252e-33) - 1.4702951752382032e-30) + 1.1020427836554655e-27) - 7.0916453128229206e-25) + 3.8681701706306839e-22) - 1.7615646957052136e-19) + 6.5765081972994636e-17) - 1.9680200780418645e-14) + 4.5882982390918896e-12) - 8.0295219184108074e-10) + 1.0020843354176688e-7) - 8.2671957671957678e-6) + 0.00039682539682539683) - 0.0083333333333333332, (0.5)*((1.0 - _cos(jax.numpy.where(jax.numpy.less(x3, 4.0), 2.0, jax.numpy.sqrt(x3))))*jax.numpy.where(jax.numpy.less(x3, 4.0), 2.0, jax.numpy.sqrt(x3)) - 3.0*jax.numpy.where(jax.numpy.less(x3, 4.0), 2.0, jax.numpy.sqrt(x3)) + 3.0*_sin(jax.numpy.where(jax.numpy.less(x3, 4.0), 2.0, jax.numpy.sqrt(x3))))*jax.numpy.where(jax.numpy.less(x3, 4.0), 0.03125, 1.0/((x3*x3)*jax.numpy.sqrt(x3))))
+    dx4_0 = dc0*xi_0
+    dx4_1 = dc0*xi_1
+    dx4_2 = dc0*xi_2
+    x5 = x0*x4
+    dx5_0 = dx4_0*x0
+    dc1 = x4*xi_1
     dc2 = 2.0*dc1
-    dx4_1 = dc2 + dx3_1*x0
-    dx4_2 = dx3_2*x0
-    x5 = x1*x3
-    dx5_0 = dx3_0*x1
-    dx5_1 = dx3_1*x1
-    dc3 = x3*xi_2
+    dx5_1 = dc2 + dx4_1*x0
+    dx5_2 = dx4_2*x0
+    x6 = x2*x4
+    dx6_0 = dx4_0*x2
+    dx6_1 = dx4_1*x2
+    dc3 = x4*xi_2
     dc4 = 2.0*dc3
-    dx5_2 = dc4 + dx3_2*x1
-    x6 = -x4 - x5 + 1.0
-    dx6_0 = -dx4_0 - dx5_0
-    dx6_1 = -dx4_1 - dx5_1
-    dx6_2 = -dx4_2 - dx5_2
-    x7 = jax.numpy.where(jax.numpy.less(x2, 1.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(1.5619206968586225e-16*x2 - 4.7794773323873853e-14) + 1.1470745597729725e-11) - 2.08767569878681e-9) + 2.7557319223985888e-7) - 2.4801587301587302e-5) + 0.0013888888888888889) - 0.041666666666666664) + 0.5, (1.0 - _cos(jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2))))*jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, 1.0/x2))
-    dc5 = 2.0*jax.numpy.where(jax.numpy.less(x2, 2.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(8.8967913924505729e-21*x2 - 3.6992858609809485e-18) + 1.249536557486898e-15) - 3.3456341326711696e-13) + 6.882447358637835e-11) - 1.043837849393405e-8) + 1.1022927689594355e-6) - 7.4404761904761911e-5) + 0.0027777777777777779) - 0.041666666666666664, (0.5)*(jax.numpy.where(jax.numpy.less(x2, 2.0), 1.414213562373095, jax.numpy.sqrt(x2))*_sin(jax.numpy.where(jax.numpy.less(x2, 2.0), 1.414213562373095, jax.numpy.sqrt(x2))) + 2.0*_cos(jax.numpy.where(jax.numpy.less(x2, 2.0), 1.414213562373095, jax.numpy.sqrt(x2))) - 2.0)*jax.numpy.where(jax.numpy.less(x2, 2.0), 0.25, 1.0/(x2*x2)))
-    dx7_0 = dc5*xi_0
-    dx7_1 = dc5*xi_1
-    dx7_2 = dc5*xi_2
-    x8 = x7*xi_2
-    dx8_0 = dx7_0*xi_2
-    dx8_1 = dx7_1*xi_2
-    dx8_2 = dx7_2*xi_2 + x7
-    x9 = x3*xi_0
-    dx9_0 = dx3_0*xi_0 + x3
-    dx9_1 = dx3_1*xi_0
-    dx9_2 = dx3_2*xi_0
-    x10 = x9*xi_1
-    dx10_0 = dx9_0*xi_1
-    dx10_1 = dx9_1*xi_1 + x9
-    dx10_2 = dx9_2*xi_1
-    x11 = x10 - x8
-    dx11_0 = dx10_0 - dx8_0
-    dx11_1 = dx10_1 - dx8_1
-    dx11_2 = dx10_2 - dx8_2
-    x12 = x7*xi_1
-    dx12_0 = dx7_0*xi_1
-    dx12_1 = dx7_1*xi_1 + x7
-    dx12_2 = dx7_2*xi_1
-    x13 = x9*xi_2
-    dx13_0 = dx9_0*xi_2
-    dx13_1 = dx9_1*xi_2
-    dx13_2 = dx9_2*xi_2 + x9
-    x14 = x12 + x13
-    dx14_0 = dx12_0 + dx13_0
-    dx14_1 = dx12_1 + dx13_1
-    dx14_2 = dx12_2 + dx13_2
-    x15 = x10 + x8
-    dx15_0 = dx10_0 + dx8_0
-    dx15_1 = dx10_1 + dx8_1
-    dx15_2 = dx10_2 + dx8_2
-    x16 = -x2
-    x17 = x16*x3
-    dc6 = 2.0*xi_0
-    dx17_0 = -dc6*x3 + dx3_0*x16
-    dx17_1 = -dc2 + dx3_1*x16
-    dx17_2 = -dc4 + dx3_2*x16
-    x18 = x17 + 1.0
-    x19 = x18 + x4
-    dx19_0 = dx17_0 + dx4_0
-    dx19_1 = dx17_1 + dx4_1
-    dx19_2 = dx17_2 + dx4_2
-    x20 = x7*xi_0
-    dx20_0 = dx7_0*xi_0 + x7
-    dx20_1 = dx7_1*xi_0
-    dx20_2 = dx7_2*xi_0
-    x21 = -x20 + x3*xi_1*xi_2
-    dx21_0 = -dx20_0 + dx3_0*xi_1*xi_2
-    dc7 = dx3_1*xi_1
-    dx21_1 = dc3 + dc7*xi_2 - dx20_1
-    dc8 = dx3_2*xi_1
-    dx21_2 = dc1 + dc8*xi_2 - dx20_2
-    x22 = -x12 + x13
-    dx22_0 = -dx12_0 + dx13_0
-    dx22_1 = -dx12_1 + dx13_1
-    dx22_2 = -dx12_2 + dx13_2
-    x23 = x3*xi_1
-    dx23_0 = dx3_0*xi_1
-    dx23_1 = dc7 + x3
-    dx23_2 = dc8
-    x24 = x23*xi_2
-    dx24_0 = dx23_0*xi_2
-    dx24_1 = dx23_1*xi_2
-    dx24_2 = dx23_2*xi_2 + x23
-    x25 = x20 + x24
-    dx25_0 = dx20_0 + dx24_0
-    dx25_1 = dx20_1 + dx24_1
-    dx25_2 = dx20_2 + dx24_2
-    x26 = x18 + x5
-    dx26_0 = dx17_0 + dx5_0
-    dx26_1 = dx17_1 + dx5_1
-    dx26_2 = dx17_2 + dx5_2
-    x27 = 2.0*x23*xi_4
-    dc9 = 2.0*xi_4
-    dx27_0 = dc9*dx23_0
-    dx27_1 = dc9*dx23_1
-    dx27_2 = dc9*dx23_2
-    x28 = x3*xi_2
-    dx28_0 = dx3_0*xi_2
-    dx28_1 = dx3_1*xi_2
-    dx28_2 = dx3_2*xi_2 + x3
-    x29 = 2.0*x28*xi_5
-    dc10 = 2.0*xi_5
-    dx29_0 = dc10*dx28_0
-    dx29_1 = dc10*dx28_1
-    dx29_2 = dc10*dx28_2
-    x30 = jax.numpy.where(jax.numpy.less(x2, 4.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(1.1359381143141137e-48*x2 - 1.7648891123448757e-45) + 2.4702564609120444e-42) - 3.096829746762205e-39) + 3.4549006862315854e-36) - 3.4051501163498504e-33) + 2.9405903504764064e-30) - 2.204085567310931e-27) + 1.4183290625645841e-24) - 7.7363403412613678e-22) + 3.5231293914104271e-19) - 1.3153016394598927e-16) + 3.936040156083729e-14) - 9.1765964781837793e-12) + 1.6059043836821615e-9) - 2.0041686708353376e-7) + 1.6534391534391536e-5) - 0.00079365079365079365) + 0.016666666666666666, (jax.numpy.where(jax.numpy.less(x2, 4.0), 2.0, jax.numpy.sqrt(x2))*_cos(jax.numpy.where(jax.numpy.less(x2, 4.0), 2.0, jax.numpy.sqrt(x2))) + 2.0*jax.numpy.where(jax.numpy.less(x2, 4.0), 2.0, jax.numpy.sqrt(x2)) - 3.0*_sin(jax.numpy.where(jax.numpy.less(x2, 4.0), 2.0, jax.numpy.sqrt(x2))))*jax.numpy.where(jax.numpy.less(x2, 4.0), 0.03125, 1.0/((x2*x2)*jax.numpy.sqrt(x2))))
-    dc11 = jax.numpy.where(jax.numpy.less(x2, 4.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(2.0446886057654048e-47 - 1.2579602594840682e-50*x2) - 3.0003114909862885e-44) + 3.952410337459271e-41) - 4.6452446201433075e-38) + 4.8368609607242191e-35) - 4.4266951512548055e-32) + 3.5287084205716874e-29) - 2.4244941240420241e-26) + 1.4183290625645841e-23) - 6.962706307135231e-21) + 2.8185035131283417e-18) - 9.2071114762192488e-16) + 2.3616240936502375e-13) - 4.5882982390918898e-11) + 6.423617534728646e-9) - 6.0125060125060129e-7) + 3.3068783068783071e-5) - 0.00079365079365079365, (0.5)*((-jax.numpy.where(jax.numpy.less(x2, 4.0), 2.0, jax.numpy.sqrt(x2))*_sin(jax.numpy.where(jax.numpy.less(x2, 4.0), 2.0, jax.numpy.sqrt(x2))) - 2.0*_cos(jax.numpy.where(jax.numpy.less(x2, 4.0), 2.0, jax.numpy.sqrt(x2))) + 2.0)*jax.numpy.where(jax.numpy.less(x2, 4.0), 2.0, jax.numpy.sqrt(x2)) - 5.0*jax.numpy.where(jax.numpy.less(x2, 4.0), 2.0, jax.numpy.sqrt(x2))*_cos(jax.numpy.where(jax.numpy.less(x2, 4.0), 2.0, jax.numpy.sqrt(x2))) - 10.0*jax.numpy.where(jax.numpy.less(x2, 4.0), 2.0, jax.numpy.sqrt(x2)) + 15.0*_sin(jax.numpy.where(jax.numpy.less(x2, 4.0), 2.0, jax.numpy.sqrt(x2))))*jax.numpy.where(jax.numpy.less(x2, 4.0), 0.0078125, 1.0/((x2*x2*x2)*jax.numpy.sqrt(x2))))
-    dx30_0 = dc11*dc6
-    dc12 = 2.0*dc11
-    dx30_1 = dc12*xi_1
-    dx30_2 = dc12*xi_2
-    x31 = x30*(xi_1*xi_1*xi_1)
-    dc13 = (xi_1*xi_1*xi_1)
-    dx31_0 = dc13*dx30_0
-    dc14 = 3.0*x30
-    dx31_1 = dc13*dx30_1 + dc14*(xi_1*xi_1)
-    dx31_2 = dc13*dx30_2
-    x32 = x30*xi_0
-    dx32_0 = dx30_0*xi_0 + x30
-    dx32_1 = dx30_1*xi_0
-    dx32_2 = dx30_2*xi_0
-    x33 = x0*x32
-    dx33_0 = dx32_0*x0
-    dc15 = 2.0*xi_1
-    dx33_1 = dc15*x32 + dx32_1*x0
-    dx33_2 = dx32_2*x0
-    x34 = xi_2*xi_5
-    x35 = x0*x30
-    dx35_0 = dx30_0*x0
-    dx35_1 = dc15*x30 + dx30_1*x0
-    dx35_2 = dx30_2*x0
-    x36 = x31*xi_4 + x33*xi_3 + x34*x35
-    dx36_0 = dx31_0*xi_4 + dx33_0*xi_3 + dx35_0*x34
-    dx36_1 = dx31_1*xi_4 + dx33_1*xi_3 + dx35_1*x34
-    dx36_2 = dx31_2*xi_4 + dx33_2*xi_3 + dx35_2*x34 + x35*xi_5
-    dx36_5 = x35*xi_2
-    x37 = x30*(xi_2*xi_2*xi_2)
-    dc16 = (xi_2*xi_2*xi_2)
-    dx37_0 = dc16*dx30_0
-    dx37_1 = dc16*dx30_1
-    dx37_2 = dc14*(xi_2*xi_2) + dc16*dx30_2
-    x38 = x1*xi_3
-    dc17 = 2.0*xi_2
-    dc18 = dc17*xi_3
-    dx38_2 = dc18
-    x39 = xi_1*xi_4
-    x40 = x1*x30*x39 + x32*x38 + x37*xi_5
-    dc19 = x1*x39
-    dx40_0 = dc19*dx30_0 + dx32_0*x38 + dx37_0*xi_5
-    dc20 = x1*x30
-    dx40_1 = dc19*dx30_1 + dc20*xi_4 + dx32_1*x38 + dx37_1*xi_5
-    dc21 = x39*xi_2
-    dx40_2 = dc19*dx30_2 + 2.0*dc21*x30 + dx32_2*x38 + dx37_2*xi_5 + dx38_2*x32
-    dc22 = x1*x32
-    dx40_3 = dc22
-    dx40_4 = dc20*xi_1
-    x41 = jax.numpy.where(jax.numpy.less(x2, 1.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(4.7794773323873853e-14 - 1.5619206968586225e-16*x2) - 1.1470745597729725e-11) + 2.08767569878681e-9) - 2.7557319223985888e-7) + 2.4801587301587302e-5) - 0.0013888888888888889) + 0.041666666666666664) - 0.5, (_cos(jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2))) - 1.0)*jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, 1.0/x2))
-    dc23 = jax.numpy.where(jax.numpy.less(x2, 2.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(3.6992858609809485e-18 - 8.8967913924505729e-21*x2) - 1.249536557486898e-15) + 3.3456341326711696e-13) - 6.882447358637835e-11) + 1.043837849393405e-8) - 1.1022927689594355e-6) + 7.4404761904761911e-5) - 0.0027777777777777779) + 0.041666666666666664, (0.5)*(-jax.numpy.where(jax.numpy.less(x2, 2.0), 1.414213562373095, jax.numpy.sqrt(x2))*_sin(jax.numpy.where(jax.numpy.less(x2, 2.0), 1.414213562373095, jax.numpy.sqrt(x2))) - 2.0*_cos(jax.numpy.where(jax.numpy.less(x2, 2.0), 1.414213562373095, jax.numpy.sqrt(x2))) + 2.0)*jax.numpy.where(jax.numpy.less(x2, 2.0), 0.25, 1.0/(x2*x2)))
-    dx41_0 = dc23*dc6
-    dx41_1 = dc15*dc23
-    dx41_2 = dc17*dc23
-    x42 = jax.numpy.where(jax.numpy.less(x2, 2.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(1.7793582784901148e-21*x2 - 8.2206352466243297e-19) + 3.1238413937172451e-16) - 9.5589546647747705e-14) + 2.2941491195459449e-11) - 4.17535139757362e-9) + 5.5114638447971777e-7) - 4.9603174603174603e-5) + 0.0027777777777777779) - 0.083333333333333329, (-jax.numpy.where(jax.numpy.less(x2, 2.0), 2.0, x2) - 2.0*_cos(jax.numpy.where(jax.numpy.less(x2, 2.0), 1.414213562373095, jax.numpy.sqrt(x2))) + 2.0)*jax.numpy.where(jax.numpy.less(x2, 2.0), 0.25, 1.0/(x2*x2)))
-    dc24 = jax.numpy.where(jax.numpy.less(x2, 4.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(2.7046145578907471e-50*x2 - 4.4122227808621894e-47) + 6.500674897136959e-44) - 8.6023048521172363e-41) + 1.0161472606563485e-37) - 1.0641094113593283e-34) + 9.8019678349213543e-32) - 7.8717341689676112e-29) + 5.4551117790945548e-26) - 3.2234751421922368e-23) + 1.6014224506411032e-20) - 6.5765081972994638e-18) + 2.1866889756020719e-15) - 5.7353727988648621e-13) + 1.1470745597729724e-10) - 1.670140559029448e-8) + 1.6534391534391535e-6) - 9.9206349206349206e-5) + 0.0027777777777777779, ((-jax.numpy.where(jax.numpy.less(x2, 4.0), 2.0, jax.numpy.sqrt(x2)) + _sin(jax.numpy.where(jax.numpy.less(x2, 4.0), 2.0, jax.numpy.sqrt(x2))))*jax.numpy.where(jax.numpy.less(x2, 4.0), 2.0, jax.numpy.sqrt(x2)) + 2.0*jax.numpy.where(jax.numpy.less(x2, 4.0), 4.0, x2) + 4.0*_cos(jax.numpy.where(jax.numpy.less(x2, 4.0), 2.0, jax.numpy.sqrt(x2))) - 4.0)*jax.numpy.where(jax.numpy.less(x2, 4.0), 0.015625, 1.0/(x2*x2*x2)))
-    dx42_0 = dc24*dc6
-    dx42_1 = dc15*dc24
-    dx42_2 = dc17*dc24
-    x43 = x1*xi_5
-    dx43_2 = dc10*xi_2
-    x44 = x5*xi_5
-    dx44_0 = dx5_0*xi_5
-    dx44_1 = dx5_1*xi_5
-    dx44_2 = dx5_2*xi_5
-    x45 = x42*xi_2
-    dx45_0 = dx42_0*xi_2
-    dx45_1 = dx42_1*xi_2
-    dx45_2 = dx42_2*xi_2 + x42
-    x46 = xi_0*xi_3
-    x47 = x13*xi_3
-    dx47_0 = dx13_0*xi_3
-    dx47_1 = dx13_1*xi_3
-    dx47_2 = dx13_2*xi_3
-    x48 = x24*xi_4
-    dx48_0 = dx24_0*xi_4
-    dx48_1 = dx24_1*xi_4
-    dx48_2 = dx24_2*xi_4
-    x49 = x30*xi_1
-    dx49_0 = dx30_0*xi_1
-    dx49_1 = dx30_1*xi_1 + x30
-    dx49_2 = dx30_2*xi_1
-    x50 = x16*xi_3
-    dc25 = dc6*xi_3
-    dx50_0 = -dc25
-    dc26 = dc15*xi_3
-    dx50_1 = -dc26
-    dx50_2 = -dc18
-    x51 = x32*xi_1
-    dx51_0 = dx32_0*xi_1
-    dx51_1 = dx32_1*xi_1 + x32
-    dx51_2 = dx32_2*xi_1
-    x52 = x23*xi_3 + x31*xi_3 - x33*xi_4 - x34*x51 + x38*x49 + x49*x50 + x9*xi_4
-    dc27 = x38 + x50
-    dx52_0 = dc27*dx49_0 + dx23_0*xi_3 + dx31_0*xi_3 - dx33_0*xi_4 + dx50_0*x49 - dx51_0*x34 + dx9_0*xi_4
-    dx52_1 = dc27*dx49_1 + dx23_1*xi_3 + dx31_1*xi_3 - dx33_1*xi_4 + dx50_1*x49 - dx51_1*x34 + dx9_1*xi_4
-    dx52_2 = dc27*dx49_2 + dx23_2*xi_3 + dx31_2*xi_3 - dx33_2*xi_4 + dx38_2*x49 + dx50_2*x49 - dx51_2*x34 + dx9_2*xi_4 - x51*xi_5
-    dc28 = x1*x49
-    dx52_3 = dc28 + x16*x49 + x23 + x31
-    dc29 = -x9
-    dx52_4 = -dc29 - x33
-    dc30 = -x51*xi_2
-    dx52_5 = dc30
-    x53 = jax.numpy.where(jax.numpy.less(x2, 2.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(8.2206352466243297e-19 - 1.7793582784901148e-21*x2) - 3.1238413937172451e-16) + 9.5589546647747705e-14) - 2.2941491195459449e-11) + 4.17535139757362e-9) - 5.5114638447971777e-7) + 4.9603174603174603e-5) - 0.0027777777777777779) + 0.083333333333333329, (jax.numpy.where(jax.numpy.less(x2, 2.0), 2.0, x2) + 2.0*_cos(jax.numpy.where(jax.numpy.less(x2, 2.0), 1.414213562373095, jax.numpy.sqrt(x2))) - 2.0)*jax.numpy.where(jax.numpy.less(x2, 2.0), 0.25, 1.0/(x2*x2)))
-    dc31 = jax.numpy.where(jax.numpy.less(x2, 4.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(4.4122227808621894e-47 - 2.7046145578907471e-50*x2) - 6.500674897136959e-44) + 8.6023048521172363e-41) - 1.0161472606563485e-37) + 1.0641094113593283e-34) - 9.8019678349213543e-32) + 7.8717341689676112e-29) - 5.4551117790945548e-26) + 3.2234751421922368e-23) - 1.6014224506411032e-20) + 6.5765081972994638e-18) - 2.1866889756020719e-15) + 5.7353727988648621e-13) - 1.1470745597729724e-10) + 1.670140559029448e-8) - 1.6534391534391535e-6) + 9.9206349206349206e-5) - 0.0027777777777777779, ((jax.numpy.where(jax.numpy.less(x2, 4.0), 2.0, jax.numpy.sqrt(x2)) - _sin(jax.numpy.where(jax.numpy.less(x2, 4.0), 2.0, jax.numpy.sqrt(x2))))*jax.numpy.where(jax.numpy.less(x2, 4.0), 2.0, jax.numpy.sqrt(x2)) - 2.0*jax.numpy.where(jax.numpy.less(x2, 4.0), 4.0, x2) - 4.0*_cos(jax.numpy.where(jax.numpy.less(x2, 4.0), 2.0, jax.numpy.sqrt(x2))) + 4.0)*jax.numpy.where(jax.numpy.less(x2, 4.0), 0.015625, 1.0/(x2*x2*x2)))
-    dx53_0 = dc31*dc6
-    dx53_1 = dc15*dc31
-    dx53_2 = dc17*dc31
-    x54 = x0*x53
-    dx54_0 = dx53_0*x0
-    dx54_1 = dc15*x53 + dx53_1*x0
-    dx54_2 = dx53_2*x0
-    x55 = x4*xi_4
-    dx55_0 = dx4_0*xi_4
-    dx55_1 = dx4_1*xi_4
-    dx55_2 = dx4_2*xi_4
-    x56 = x53*xi_1
-    dx56_0 = dx53_0*xi_1
-    dx56_1 = dx53_1*xi_1 + x53
-    dx56_2 = dx53_2*xi_1
-    x57 = x10*xi_3
-    dx57_0 = dx10_0*xi_3
-    dx57_1 = dx10_1*xi_3
-    dx57_2 = dx10_2*xi_3
-    x58 = x24*xi_5
-    dx58_0 = dx24_0*xi_5
-    dx58_1 = dx24_1*xi_5
-    dx58_2 = dx24_2*xi_5
-    x59 = x35*xi_2
-    dx59_0 = dx35_0*xi_2
-    dx59_1 = dx35_1*xi_2
-    dx59_2 = dx35_2*xi_2 + x35
-    x60 = x28*xi_3 + x30*x50*xi_2 - x32*x39*xi_2 - x32*x43 + x37*xi_3 + x59*xi_3 + x9*xi_5
-    dc32 = x50*xi_2
-    dc33 = x30*xi_2
-    dc34 = -dc21 - x43
-    dx60_0 = dc32*dx30_0 + dc33*dx50_0 + dc34*dx32_0 + dx28_0*xi_3 + dx37_0*xi_3 + dx59_0*xi_3 + dx9_0*xi_5
-    dc35 = x32*xi_2
-    dx60_1 = dc32*dx30_1 + dc33*dx50_1 + dc34*dx32_1 - dc35*xi_4 + dx28_1*xi_3 + dx37_1*xi_3 + dx59_1*xi_3 + dx9_1*xi_5
-    dx60_2 = dc32*dx30_2 + dc33*dx50_2 + dc34*dx32_2 + dx28_2*xi_3 + dx37_2*xi_3 - dx43_2*x32 + dx59_2*xi_3 + dx9_2*xi_5 + x30*x50 - x32*x39
-    dx60_3 = dc33*x16 + x28 + x37 + x59
-    dx60_4 = -dc35*xi_1
-    dx60_5 = -dc22 - dc29
-    x61 = x53*xi_2
-    dx61_0 = dx53_0*xi_2
-    dx61_1 = dx53_1*xi_2
-    dx61_2 = dx53_2*xi_2 + x53
-    x62 = -x2*x30*xi_0*xi_3 - x2*x30*xi_1*xi_4 - x2*x30*xi_2*xi_5 + 2.0*x9*xi_3
-    dc36 = 2.0*xi_3
-    dc37 = x2*x30
-    dc38 = xi_0*xi_3
-    dc39 = xi_1*xi_4
-    dc40 = x2*xi_5
-    dc41 = -dc38*x2 - dc39*x2 - dc40*xi_2
-    dc42 = -dc33*xi_5 - dc38*x30 - dc39*x30
-    dx62_0 = dc36*dx9_0 - dc37*xi_3 + dc41*dx30_0 + dc42*dc6
-    dx62_1 = dc15*dc42 + dc36*dx9_1 - dc37*xi_4 + dc41*dx30_1
-    dx62_2 = dc17*dc42 + dc36*dx9_2 - dc40*x30 + dc41*dx30_2
-    dx62_3 = -dc37*xi_0 + 2.0*x9
-    dx62_4 = -dc37*xi_1
-    dx62_5 = -dc33*x2
-    x63 = x4*xi_3
-    dx63_0 = dx4_0*xi_3
-    dx63_1 = dx4_1*xi_3
-    dx63_2 = dx4_2*xi_3
-    x64 = x5*xi_3
-    dx64_0 = dx5_0*xi_3
-    dx64_1 = dx5_1*xi_3
-    dx64_2 = dx5_2*xi_3
-    x65 = x42*xi_0
-    dx65_0 = dx42_0*xi_0 + x42
-    dx65_1 = dx42_1*xi_0
-    dx65_2 = dx42_2*xi_0
-    x66 = x10*xi_4
-    dx66_0 = dx10_0*xi_4
-    dx66_1 = dx10_1*xi_4
-    dx66_2 = dx10_2*xi_4
-    x67 = x13*xi_5
-    dx67_0 = dx13_0*xi_5
-    dx67_1 = dx13_1*xi_5
-    dx67_2 = dx13_2*xi_5
-    x68 = x23*xi_5 + x28*xi_4 - x43*x49 - x51*xi_2*xi_3 - x59*xi_4
-    dc43 = xi_2*xi_3
-    dx68_0 = -dc43*dx51_0 + dx23_0*xi_5 + dx28_0*xi_4 - dx49_0*x43 - dx59_0*xi_4
-    dx68_1 = -dc43*dx51_1 + dx23_1*xi_5 + dx28_1*xi_4 - dx49_1*x43 - dx59_1*xi_4
-    dx68_2 = -dc43*dx51_2 + dx23_2*xi_5 + dx28_2*xi_4 - dx43_2*x49 - dx49_2*x43 - dx59_2*xi_4 - x51*xi_3
-    dx68_3 = dc30
-    dx68_4 = x28 - x59
-    dx68_5 = -dc28 + x23
-    x69 = x0*x42
-    dx69_0 = dx42_0*x0
-    dx69_1 = dc15*x42 + dx42_1*x0
-    dx69_2 = dx42_2*x0
-    x70 = x42*xi_1
-    dx70_0 = dx42_0*xi_1
-    dx70_1 = dx42_1*xi_1 + x42
-    dx70_2 = dx42_2*xi_1
-    x71 = x53*xi_0
-    dx71_0 = dx53_0*xi_0 + x53
-    dx71_1 = dx53_1*xi_0
-    dx71_2 = dx53_2*xi_0
-    dc44 = 2.0*x23
-    dc45 = 2.0*x28
-    dc46 = x39 + x46
-    dc47 = x1*x42 + x5
-    dc48 = x34 + x46
-    dc49 = -x10
-    dc50 = -x4 + x54
-    dc51 = -x24
-    dc52 = -x13
-    dc53 = x1*x53 - x5
-    dc54 = x2*xi_3
-    dc55 = x34 + x39
-    dc56 = x3*xi_3 + xi_3*jax.numpy.where(jax.numpy.less(x2, 2.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(8.8967913924505729e-21*x2 - 3.6992858609809485e-18) + 1.249536557486898e-15) - 3.3456341326711696e-13) + 6.882447358637835e-11) - 1.043837849393405e-8) + 1.1022927689594355e-6) - 7.4404761904761911e-5) + 0.0027777777777777779) - 0.041666666666666664, (0.5)*((-2.0*jax.numpy.where(jax.numpy.less(x2, 2.0), 1.414213562373095, jax.numpy.sqrt(x2)) + _sin(jax.numpy.where(jax.numpy.less(x2, 2.0), 1.414213562373095, jax.numpy.sqrt(x2))))*jax.numpy.where(jax.numpy.less(x2, 2.0), 1.414213562373095, jax.numpy.sqrt(x2)) + 2.0*jax.numpy.where(jax.numpy.less(x2, 2.0), 2.0, x2) + 2.0*_cos(jax.numpy.where(jax.numpy.less(x2, 2.0), 1.414213562373095, jax.numpy.sqrt(x2))) - 2.0)*jax.numpy.where(jax.numpy.less(x2, 2.0), 0.25, 1.0/(x2*x2)))
-    dc57 = x4 + x69
-    dc58 = jax.numpy.where(jax.numpy.less(x2, 2.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(3.6992858609809485e-18 - 8.8967913924505729e-21*x2) - 1.249536557486898e-15) + 3.3456341326711696e-13) - 6.882447358637835e-11) + 1.043837849393405e-8) - 1.1022927689594355e-6) + 7.4404761904761911e-5) - 0.0027777777777777779) + 0.041666666666666664, (0.5)*((2.0*jax.numpy.where(jax.numpy.less(x2, 2.0), 1.414213562373095, jax.numpy.sqrt(x2)) - _sin(jax.numpy.where(jax.numpy.less(x2, 2.0), 1.414213562373095, jax.numpy.sqrt(x2))))*jax.numpy.where(jax.numpy.less(x2, 2.0), 1.414213562373095, jax.numpy.sqrt(x2)) - 2.0*jax.numpy.where(jax.numpy.less(x2, 2.0), 2.0, x2) - 2.0*_cos(jax.numpy.where(jax.numpy.less(x2, 2.0), 1.414213562373095, jax.numpy.sqrt(x2))) + 2.0)*jax.numpy.where(jax.numpy.less(x2, 2.0), 0.25, 1.0/(x2*x2)))
+    dx6_2 = dc4 + dx4_2*x2
+    x7 = -x5 - x6 + 1.0
+    dx7_0 = -dx5_0 - dx6_0
+    dx7_1 = -dx5_1 - dx6_1
+    dx7_2 = -dx5_2 - dx6_2
+    x8 = jax.numpy.where(jax.numpy.less(x3, 1.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(1.5619206968586225e-16*x3 - 4.7794773323873853e-14) + 1.1470745597729725e-11) - 2.08767569878681e-9) + 2.7557319223985888e-7) - 2.4801587301587302e-5) + 0.0013888888888888889) - 0.041666666666666664) + 0.5, (1.0 - _cos(jax.numpy.where(jax.numpy.less(x3, 1.0), 1.0, jax.numpy.sqrt(x3))))*jax.numpy.where(jax.numpy.less(x3, 1.0), 1.0, 1.0/x3))
+    dc5 = 2.0*jax.numpy.where(jax.numpy.less(x3, 2.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(8.8967913924505729e-21*x3 - 3.6992858609809485e-18) + 1.249536557486898e-15) - 3.3456341326711696e-13) + 6.882447358637835e-11) - 1.043837849393405e-8) + 1.1022927689594355e-6) - 7.4404761904761911e-5) + 0.0027777777777777779) - 0.041666666666666664, (0.5)*(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))*_sin(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))) + 2.0*_cos(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))) - 2.0)*jax.numpy.where(jax.numpy.less(x3, 2.0), 0.25, 1.0/(x3*x3)))
+    dx8_0 = dc5*xi_0
+    dx8_1 = dc5*xi_1
+    dx8_2 = dc5*xi_2
+    x9 = x8*xi_2
+    dx9_0 = dx8_0*xi_2
+    dx9_1 = dx8_1*xi_2
+    dx9_2 = dx8_2*xi_2 + x8
+    x10 = x4*xi_0
+    dx10_0 = dx4_0*xi_0 + x4
+    dx10_1 = dx4_1*xi_0
+    dx10_2 = dx4_2*xi_0
+    x11 = x10*xi_1
+    dx11_0 = dx10_0*xi_1
+    dx11_1 = dx10_1*xi_1 + x10
+    dx11_2 = dx10_2*xi_1
+    x12 = x11 - x9
+    dx12_0 = dx11_0 - dx9_0
+    dx12_1 = dx11_1 - dx9_1
+    dx12_2 = dx11_2 - dx9_2
+    x13 = x8*xi_1
+    dx13_0 = dx8_0*xi_1
+    dx13_1 = dx8_1*xi_1 + x8
+    dx13_2 = dx8_2*xi_1
+    x14 = x10*xi_2
+    dx14_0 = dx10_0*xi_2
+    dx14_1 = dx10_1*xi_2
+    dx14_2 = dx10_2*xi_2 + x10
+    x15 = x13 + x14
+    dx15_0 = dx13_0 + dx14_0
+    dx15_1 = dx13_1 + dx14_1
+    dx15_2 = dx13_2 + dx14_2
+    x16 = x11 + x9
+    dx16_0 = dx11_0 + dx9_0
+    dx16_1 = dx11_1 + dx9_1
+    dx16_2 = dx11_2 + dx9_2
+    x17 = -x3*x4 + 1.0
+    dc6 = x4*xi_0
+    dx17_0 = -2.0*dc6 - dx4_0*x3
+    dx17_1 = -dc2 - dx4_1*x3
+    dx17_2 = -dc4 - dx4_2*x3
+    x18 = x17 + x5
+    dx18_0 = dx17_0 + dx5_0
+    dx18_1 = dx17_1 + dx5_1
+    dx18_2 = dx17_2 + dx5_2
+    x19 = x8*xi_0
+    dx19_0 = dx8_0*xi_0 + x8
+    dx19_1 = dx8_1*xi_0
+    dx19_2 = dx8_2*xi_0
+    x20 = -x19 + x4*xi_1*xi_2
+    dx20_0 = -dx19_0 + dx4_0*xi_1*xi_2
+    dc7 = xi_1*xi_2
+    dx20_1 = dc3 + dc7*dx4_1 - dx19_1
+    dx20_2 = dc1 + dc7*dx4_2 - dx19_2
+    x21 = -x13 + x14
+    dx21_0 = -dx13_0 + dx14_0
+    dx21_1 = -dx13_1 + dx14_1
+    dx21_2 = -dx13_2 + dx14_2
+    x22 = xi_1*xi_2
+    x23 = x19 + x22*x4
+    dx23_0 = dx19_0 + dx4_0*x22
+    dx23_1 = dc3 + dx19_1 + dx4_1*x22
+    dx23_2 = dc1 + dx19_2 + dx4_2*x22
+    x24 = x17 + x6
+    dx24_0 = dx17_0 + dx6_0
+    dx24_1 = dx17_1 + dx6_1
+    dx24_2 = dx17_2 + dx6_2
+    x25 = xi_0*xi_3
+    x26 = 2.0*x4
+    x27 = xi_1*xi_4
+    x28 = xi_2*xi_5
+    x29 = x25 + x27 + x28
+    x30 = -x29*jax.numpy.where(jax.numpy.less(x3, 1.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(1.4797143443923793e-16*x3 - 4.498331606952833e-14) + 1.0706029224547743e-11) - 1.9270852604185937e-9) + 2.5052108385441718e-7) - 2.2045855379188714e-5) + 0.0011904761904761906) - 0.033333333333333333) + 0.33333333333333331, (-jax.numpy.where(jax.numpy.less(x3, 1.0), 1.0, jax.numpy.sqrt(x3))*_cos(jax.numpy.where(jax.numpy.less(x3, 1.0), 1.0, jax.numpy.sqrt(x3))) + _sin(jax.numpy.where(jax.numpy.less(x3, 1.0), 1.0, jax.numpy.sqrt(x3))))*jax.numpy.where(jax.numpy.less(x3, 1.0), 1.0, 1.0/(x3*jax.numpy.sqrt(x3))))
+    dc8 = jax.numpy.where(jax.numpy.less(x3, 1.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(1.4797143443923793e-16*x3 - 4.498331606952833e-14) + 1.0706029224547743e-11) - 1.9270852604185937e-9) + 2.5052108385441718e-7) - 2.2045855379188714e-5) + 0.0011904761904761906) - 0.033333333333333333) + 0.33333333333333331, (-jax.numpy.where(jax.numpy.less(x3, 1.0), 1.0, jax.numpy.sqrt(x3))*_cos(jax.numpy.where(jax.numpy.less(x3, 1.0), 1.0, jax.numpy.sqrt(x3))) + _sin(jax.numpy.where(jax.numpy.less(x3, 1.0), 1.0, jax.numpy.sqrt(x3))))*jax.numpy.where(jax.numpy.less(x3, 1.0), 1.0, 1.0/(x3*jax.numpy.sqrt(x3))))
+    dc9 = 2.0*xi_0
+    dc10 = x29*jax.numpy.where(jax.numpy.less(x3, 2.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(8.5099743753875046e-21*x3 - 3.5231293914104271e-18) + 1.1837714755139035e-15) - 3.1488321248669832e-13) + 6.4236175347286453e-11) - 9.6354263020929689e-9) + 1.0020843354176687e-6) - 6.6137566137566142e-5) + 0.0023809523809523812) - 0.033333333333333333, (0.5)*(3.0*jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))*_cos(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))) + jax.numpy.where(jax.numpy.less(x3, 2.0), 2.0, x3)*_sin(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))) - 3.0*_sin(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))))*jax.numpy.where(jax.numpy.less(x3, 2.0), 0.17677669529663688, 1.0/((x3*x3)*jax.numpy.sqrt(x3))))
+    dx30_0 = -dc10*dc9 - dc8*xi_3
+    dc11 = 2.0*dc10
+    dx30_1 = -dc11*xi_1 - dc8*xi_4
+    dx30_2 = -dc11*xi_2 - dc8*xi_5
+    dx30_3 = -dc8*xi_0
+    dx30_4 = -dc8*xi_1
+    dx30_5 = -dc8*xi_2
+    x31 = jax.numpy.where(jax.numpy.less(x3, 4.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(1.7648891123448757e-45 - 1.1359381143141137e-48*x3) - 2.4702564609120444e-42) + 3.096829746762205e-39) - 3.4549006862315854e-36) + 3.4051501163498504e-33) - 2.9405903504764064e-30) + 2.204085567310931e-27) - 1.4183290625645841e-24) + 7.7363403412613678e-22) - 3.5231293914104271e-19) + 1.3153016394598927e-16) - 3.936040156083729e-14) + 9.1765964781837793e-12) - 1.6059043836821615e-9) + 2.0041686708353376e-7) - 1.6534391534391536e-5) + 0.00079365079365079365) - 0.016666666666666666, (-jax.numpy.where(jax.numpy.less(x3, 4.0), 2.0, jax.numpy.sqrt(x3))*_cos(jax.numpy.where(jax.numpy.less(x3, 4.0), 2.0, jax.numpy.sqrt(x3))) - 2.0*jax.numpy.where(jax.numpy.less(x3, 4.0), 2.0, jax.numpy.sqrt(x3)) + 3.0*_sin(jax.numpy.where(jax.numpy.less(x3, 4.0), 2.0, jax.numpy.sqrt(x3))))*jax.numpy.where(jax.numpy.less(x3, 4.0), 0.03125, 1.0/((x3*x3)*jax.numpy.sqrt(x3))))
+    dc12 = 2.0*jax.numpy.where(jax.numpy.less(x3, 4.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(1.2579602594840682e-50*x3 - 2.0446886057654048e-47) + 3.0003114909862885e-44) - 3.952410337459271e-41) + 4.6452446201433075e-38) - 4.8368609607242191e-35) + 4.4266951512548055e-32) - 3.5287084205716874e-29) + 2.4244941240420241e-26) - 1.4183290625645841e-23) + 6.962706307135231e-21) - 2.8185035131283417e-18) + 9.2071114762192488e-16) - 2.3616240936502375e-13) + 4.5882982390918898e-11) - 6.423617534728646e-9) + 6.0125060125060129e-7) - 3.3068783068783071e-5) + 0.00079365079365079365, (0.5)*((jax.numpy.where(jax.numpy.less(x3, 4.0), 2.0, jax.numpy.sqrt(x3))*_sin(jax.numpy.where(jax.numpy.less(x3, 4.0), 2.0, jax.numpy.sqrt(x3))) + 2.0*_cos(jax.numpy.where(jax.numpy.less(x3, 4.0), 2.0, jax.numpy.sqrt(x3))) - 2.0)*jax.numpy.where(jax.numpy.less(x3, 4.0), 2.0, jax.numpy.sqrt(x3)) + 5.0*jax.numpy.where(jax.numpy.less(x3, 4.0), 2.0, jax.numpy.sqrt(x3))*_cos(jax.numpy.where(jax.numpy.less(x3, 4.0), 2.0, jax.numpy.sqrt(x3))) + 10.0*jax.numpy.where(jax.numpy.less(x3, 4.0), 2.0, jax.numpy.sqrt(x3)) - 15.0*_sin(jax.numpy.where(jax.numpy.less(x3, 4.0), 2.0, jax.numpy.sqrt(x3))))*jax.numpy.where(jax.numpy.less(x3, 4.0), 0.0078125, 1.0/((x3*x3*x3)*jax.numpy.sqrt(x3))))
+    dx31_0 = dc12*xi_0
+    dx31_1 = dc12*xi_1
+    dx31_2 = dc12*xi_2
+    x32 = x29*x31
+    dc13 = dx31_0*x29
+    dc14 = x31*xi_3
+    dx32_0 = dc13 + dc14
+    dc15 = dx31_1*x29
+    dc16 = x31*xi_4
+    dx32_1 = dc15 + dc16
+    dc17 = dx31_2*x29
+    dc18 = x31*xi_5
+    dx32_2 = dc17 + dc18
+    dx32_3 = x31*xi_0
+    dc19 = x31*xi_1
+    dx32_4 = dc19
+    dc20 = x31*xi_2
+    dx32_5 = dc20
+    x33 = x8*xi_5
+    dx33_0 = dx8_0*xi_5
+    dx33_1 = dx8_1*xi_5
+    dx33_2 = dx8_2*xi_5
+    x34 = x29*jax.numpy.where(jax.numpy.less(x3, 2.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(1.7793582784901146e-20*x3 - 7.398571721961897e-18) + 2.499073114973796e-15) - 6.6912682653423392e-13) + 1.376489471727567e-10) - 2.08767569878681e-8) + 2.2045855379188711e-6) - 0.00014880952380952382) + 0.0055555555555555558) - 0.083333333333333329, (jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))*_sin(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))) + 2.0*_cos(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))) - 2.0)*jax.numpy.where(jax.numpy.less(x3, 2.0), 0.25, 1.0/(x3*x3)))
+    dc21 = jax.numpy.where(jax.numpy.less(x3, 2.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(1.7793582784901146e-20*x3 - 7.398571721961897e-18) + 2.499073114973796e-15) - 6.6912682653423392e-13) + 1.376489471727567e-10) - 2.08767569878681e-8) + 2.2045855379188711e-6) - 0.00014880952380952382) + 0.0055555555555555558) - 0.083333333333333329, (jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))*_sin(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))) + 2.0*_cos(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))) - 2.0)*jax.numpy.where(jax.numpy.less(x3, 2.0), 0.25, 1.0/(x3*x3)))
+    dc22 = x29*jax.numpy.where(jax.numpy.less(x3, 2.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(1.6014224506411032e-19 - 3.5458226564114604e-22*x3) - 5.9188573775695176e-17) + 1.7493511804816575e-14) - 4.0147609592054033e-12) + 6.8824473586378345e-10) - 8.3507027951472401e-8) + 6.613756613756614e-6) - 0.00029761904761904765) + 0.0055555555555555558, (0.5)*((jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))*_cos(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))) - _sin(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))))*jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3)) - 4.0*jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))*_sin(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))) - 8.0*_cos(jax.numpy.where(jax.numpy.less(x3, 2.0), 1.414213562373095, jax.numpy.sqrt(x3))) + 8.0)*jax.numpy.where(jax.numpy.less(x3, 2.0), 0.125, 1.0/(x3*x3*x3)))
+    dx34_0 = dc21*xi_3 + dc22*dc9
+    dc23 = 2.0*dc22
+    dx34_1 = dc21*xi_4 + dc23*xi_1
+    dx34_2 = dc21*xi_5 + dc23*xi_2
+    dx34_3 = dc21*xi_0
+    dx34_4 = dc21*xi_1
+    dx34_5 = dc21*xi_2
+    x35 = x34*xi_2
+    dx35_0 = dx34_0*xi_2
+    dx35_1 = dx34_1*xi_2
+    dx35_2 = dx34_2*xi_2 + x34
+    dx35_3 = dx34_3*xi_2
+    dx35_4 = dx34_4*xi_2
+    dx35_5 = dx34_5*xi_2
+    x36 = x32*xi_0
+    dx36_0 = dx32_0*xi_0 + x32
+    dx36_1 = dx32_1*xi_0
+    dx36_2 = dx32_2*xi_0
+    dx36_3 = dx32_3*xi_0
+    dx36_4 = dx32_4*xi_0
+    dx36_5 = dx32_5*xi_0
+    x37 = x36*xi_1 + x4*(xi_0*xi_4 + xi_1*xi_3)
+    dc24 = x4*xi_4
+    dc25 = xi_0*xi_4 + xi_1*xi_3
+    dx37_0 = dc24 + dc25*dx4_0 + dx36_0*xi_1
+    dc26 = x36 + x4*xi_3
+    dx37_1 = dc25*dx4_1 + dc26 + dx36_1*xi_1
+    dx37_2 = dc25*dx4_2 + dx36_2*xi_1
+    dx37_3 = dc1 + dx36_3*xi_1
+    dx37_4 = dc6 + dx36_4*xi_1
+    dx37_5 = dx36_5*xi_1
+    x38 = x8*xi_4
+    dx38_0 = dx8_0*xi_4
+    dx38_1 = dx8_1*xi_4
+    dx38_2 = dx8_2*xi_4
+    x39 = x34*xi_1
+    dx39_0 = dx34_0*xi_1
+    dx39_1 = dx34_1*xi_1 + x34
+    dx39_2 = dx34_2*xi_1
+    dx39_3 = dx34_3*xi_1
+    dx39_4 = dx34_4*xi_1
+    dx39_5 = dx34_5*xi_1
+    x40 = x36*xi_2 + x4*(xi_0*xi_5 + xi_2*xi_3)
+    dc27 = x4*xi_5
+    dc28 = xi_0*xi_5 + xi_2*xi_3
+    dx40_0 = dc27 + dc28*dx4_0 + dx36_0*xi_2
+    dx40_1 = dc28*dx4_1 + dx36_1*xi_2
+    dx40_2 = dc26 + dc28*dx4_2 + dx36_2*xi_2
+    dx40_3 = dc3 + dx36_3*xi_2
+    dx40_4 = dx36_4*xi_2
+    dx40_5 = dc6 + dx36_5*xi_2
+    x41 = xi_1*xi_5 + xi_2*xi_4
+    x42 = x34*xi_0 + x8*xi_3
+    dx42_0 = dx34_0*xi_0 + dx8_0*xi_3 + x34
+    dx42_1 = dx34_1*xi_0 + dx8_1*xi_3
+    dx42_2 = dx34_2*xi_0 + dx8_2*xi_3
+    dx42_3 = dx34_3*xi_0 + x8
+    dx42_4 = dx34_4*xi_0
+    dx42_5 = dx34_5*xi_0
+    dc29 = 2.0*x25
+    dc30 = dx33_0 + dx35_0
+    dc31 = dx33_1 + dx35_1
+    dc32 = dx33_2 + dx35_2
+    dc33 = dx35_5 + x8
+    dc34 = dx38_0 + dx39_0
+    dc35 = dx38_1 + dx39_1
+    dc36 = dx38_2 + dx39_2
+    dc37 = dx39_4 + x8
+    dc38 = 2.0*x27
+    dc39 = x32*xi_1
+    dc40 = dx4_0*x41
+    dc41 = dc27 + dx4_1*x41
+    dc42 = dc24 + dx4_2*x41
+    dc43 = x32*xi_2
+    dc44 = 2.0*x28
     return (
-        x6,
-        x11,
-        x14,
-        0.0,
-        0.0,
-        0.0,
+        x7,
+        x12,
         x15,
-        x19,
+        0.0,
+        0.0,
+        0.0,
+        x16,
+        x18,
+        x20,
+        0.0,
+        0.0,
+        0.0,
         x21,
+        x23,
+        x24,
         0.0,
         0.0,
         0.0,
-        x22,
-        x25,
-        x26,
-        0.0,
-        0.0,
-        0.0,
-        -x27 - x29 + x36 + x40,
-        x39*x45 + x41*xi_5 + x42*x43 + x44 + x45*x46 + x47 + x48 + x52,
-        x34*x56 + x46*x56 + x54*xi_4 - x55 - x57 - x58 + x60 + x7*xi_4,
-        x6,
-        x11,
-        x14,
-        x39*x61 + x43*x53 - x44 + x46*x61 - x47 - x48 + x52 + x7*xi_5,
-        -x29 - x36 - x62,
-        x2*x3*xi_3 + x34*x65 + x38*x53 + x39*x65 + x54*xi_3 - x63 - x64 + x66 + x67 + x68 + xi_3*jax.numpy.where(jax.numpy.less(x2, 1.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(1.5619206968586225e-16*x2 - 4.7794773323873853e-14) + 1.1470745597729725e-11) - 2.08767569878681e-9) + 2.7557319223985888e-7) - 2.4801587301587302e-5) + 0.0013888888888888889) - 0.041666666666666664) - 0.5, (-jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, x2) - _cos(jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2))) + 1.0)*jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, 1.0/x2)),
+        x1*x32 + x25*x26 + x30,
+        -x33 - x35 + x37,
+        x38 + x39 + x40,
+        x7,
+        x12,
         x15,
-        x19,
+        x33 + x35 + x37,
+        x0*x32 + x26*x27 + x30,
+        x29*x31*xi_1*xi_2 + x4*x41 - x42,
+        x16,
+        x18,
+        x20,
+        -x38 - x39 + x40,
+        x22*x32 + x4*x41 + x42,
+        x2*x32 + x26*x28 + x30,
         x21,
-        x34*x70 + x41*xi_4 + x46*x70 + x55 + x57 + x58 + x60 + x69*xi_4,
-        x17*xi_3 + x34*x71 + x38*x42 + x39*x71 + x63 + x64 - x66 - x67 + x68 + x69*xi_3 + xi_3*jax.numpy.where(jax.numpy.less(x2, 1.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(4.7794773323873853e-14 - 1.5619206968586225e-16*x2) - 1.1470745597729725e-11) + 2.08767569878681e-9) - 2.7557319223985888e-7) + 2.4801587301587302e-5) - 0.0013888888888888889) + 0.041666666666666664) + 0.5, (jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, x2) + _cos(jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2))) - 1.0)*jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, 1.0/x2)),
-        -x27 - x40 - x62,
-        x22,
-        x25,
-        x26,
-        dx6_0,
-        dx6_1,
-        dx6_2,
+        x23,
+        x24,
+        dx7_0,
+        dx7_1,
+        dx7_2,
         0.0,
         0.0,
         0.0,
-        dx11_0,
-        dx11_1,
-        dx11_2,
-        0.0,
-        0.0,
-        0.0,
-        dx14_0,
-        dx14_1,
-        dx14_2,
-        0.0,
-        0.0,
-        0.0,
-        0.0,
-        0.0,
-        0.0,
-        0.0,
-        0.0,
-        0.0,
-        0.0,
-        0.0,
-        0.0,
-        0.0,
-        0.0,
-        0.0,
-        0.0,
-        0.0,
-        0.0,
+        dx12_0,
+        dx12_1,
+        dx12_2,
         0.0,
         0.0,
         0.0,
@@ -453,9 +306,57 @@ def _main(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5):
         0.0,
         0.0,
         0.0,
-        dx19_0,
-        dx19_1,
-        dx19_2,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        dx16_0,
+        dx16_1,
+        dx16_2,
+        0.0,
+        0.0,
+        0.0,
+        dx18_0,
+        dx18_1,
+        dx18_2,
+        0.0,
+        0.0,
+        0.0,
+        dx20_0,
+        dx20_1,
+        dx20_2,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
         0.0,
         0.0,
         0.0,
@@ -465,39 +366,15 @@ def _main(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5):
         0.0,
         0.0,
         0.0,
+        dx23_0,
+        dx23_1,
+        dx23_2,
         0.0,
         0.0,
         0.0,
-        0.0,
-        0.0,
-        0.0,
-        0.0,
-        0.0,
-        0.0,
-        0.0,
-        0.0,
-        0.0,
-        0.0,
-        0.0,
-        0.0,
-        0.0,
-        0.0,
-        0.0,
-        dx22_0,
-        dx22_1,
-        dx22_2,
-        0.0,
-        0.0,
-        0.0,
-        dx25_0,
-        dx25_1,
-        dx25_2,
-        0.0,
-        0.0,
-        0.0,
-        dx26_0,
-        dx26_1,
-        dx26_2,
+        dx24_0,
+        dx24_1,
+        dx24_2,
         0.0,
         0.0,
         0.0,
@@ -519,111 +396,111 @@ def _main(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5):
         0.0,
         0.0,
         0.0,
-        -dx27_0 - dx29_0 + dx36_0 + dx40_0,
-        -dx27_1 - dx29_1 + dx36_1 + dx40_1,
-        -dx27_2 - dx29_2 + dx36_2 + dx40_2,
-        dx40_3 + x33,
-        -dc44 + dx40_4 + x31,
-        -dc45 + dx36_5 + x37,
-        dc46*dx45_0 + dx41_0*xi_5 + dx42_0*x43 + dx44_0 + dx47_0 + dx48_0 + dx52_0 + x45*xi_3,
-        dc46*dx45_1 + dx41_1*xi_5 + dx42_1*x43 + dx44_1 + dx47_1 + dx48_1 + dx52_1 + x45*xi_4,
-        dc46*dx45_2 + dx41_2*xi_5 + dx42_2*x43 + dx43_2*x42 + dx44_2 + dx47_2 + dx48_2 + dx52_2,
-        dx52_3 + x13 + x45*xi_0,
-        dx52_4 + x24 + x45*xi_1,
-        dc47 + dx52_5 + x41,
-        dc48*dx56_0 + dx54_0*xi_4 - dx55_0 - dx57_0 - dx58_0 + dx60_0 + dx7_0*xi_4 + x56*xi_3,
-        dc48*dx56_1 + dx54_1*xi_4 - dx55_1 - dx57_1 - dx58_1 + dx60_1 + dx7_1*xi_4,
-        dc48*dx56_2 + dx54_2*xi_4 - dx55_2 - dx57_2 - dx58_2 + dx60_2 + dx7_2*xi_4 + x56*xi_5,
-        dc49 + dx60_3 + x56*xi_0,
-        dc50 + dx60_4 + x7,
-        dc51 + dx60_5 + x56*xi_2,
-        dx6_0,
-        dx6_1,
-        dx6_2,
+        dc29*dx4_0 + dc9*x32 + dx30_0 + dx32_0*x1 + x26*xi_3,
+        dc29*dx4_1 + dx30_1 + dx32_1*x1,
+        dc29*dx4_2 + dx30_2 + dx32_2*x1,
+        dx30_3 + dx32_3*x1 + x26*xi_0,
+        dx30_4 + dx32_4*x1,
+        dx30_5 + dx32_5*x1,
+        -dc30 + dx37_0,
+        -dc31 + dx37_1,
+        -dc32 + dx37_2,
+        -dx35_3 + dx37_3,
+        -dx35_4 + dx37_4,
+        -dc33 + dx37_5,
+        dc34 + dx40_0,
+        dc35 + dx40_1,
+        dc36 + dx40_2,
+        dx39_3 + dx40_3,
+        dc37 + dx40_4,
+        dx39_5 + dx40_5,
+        dx7_0,
+        dx7_1,
+        dx7_2,
         0.0,
         0.0,
         0.0,
-        dx11_0,
-        dx11_1,
-        dx11_2,
+        dx12_0,
+        dx12_1,
+        dx12_2,
         0.0,
         0.0,
         0.0,
-        dx14_0,
-        dx14_1,
-        dx14_2,
-        0.0,
-        0.0,
-        0.0,
-        dc46*dx61_0 - dx44_0 - dx47_0 - dx48_0 + dx52_0 + dx53_0*x43 + dx7_0*xi_5 + x61*xi_3,
-        dc46*dx61_1 - dx44_1 - dx47_1 - dx48_1 + dx52_1 + dx53_1*x43 + dx7_1*xi_5 + x61*xi_4,
-        dc46*dx61_2 + dx43_2*x53 - dx44_2 - dx47_2 - dx48_2 + dx52_2 + dx53_2*x43 + dx7_2*xi_5,
-        dc52 + dx52_3 + x61*xi_0,
-        dc51 + dx52_4 + x61*xi_1,
-        dc53 + dx52_5 + x7,
-        -dx29_0 - dx36_0 - dx62_0,
-        -dx29_1 - dx36_1 - dx62_1,
-        -dx29_2 - dx36_2 - dx62_2,
-        -dx62_3 - x33,
-        -dx62_4 - x31,
-        -dc45 - dx36_5 - dx62_5,
-        dc54*dx3_0 + dc55*dx65_0 + dc56*dc6 + dx53_0*x38 + dx54_0*xi_3 - dx63_0 - dx64_0 + dx66_0 + dx67_0 + dx68_0,
-        dc15*dc56 + dc54*dx3_1 + dc55*dx65_1 + dx53_1*x38 + dx54_1*xi_3 - dx63_1 - dx64_1 + dx66_1 + dx67_1 + dx68_1 + x65*xi_4,
-        dc17*dc56 + dc54*dx3_2 + dc55*dx65_2 + dx38_2*x53 + dx53_2*x38 + dx54_2*xi_3 - dx63_2 - dx64_2 + dx66_2 + dx67_2 + dx68_2 + x65*xi_5,
-        dc50 + dc53 + dx68_3 + x2*x3 + jax.numpy.where(jax.numpy.less(x2, 1.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(1.5619206968586225e-16*x2 - 4.7794773323873853e-14) + 1.1470745597729725e-11) - 2.08767569878681e-9) + 2.7557319223985888e-7) - 2.4801587301587302e-5) + 0.0013888888888888889) - 0.041666666666666664) - 0.5, (-jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, x2) - _cos(jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2))) + 1.0)*jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, 1.0/x2)),
-        dx68_4 + x10 + x65*xi_1,
-        dx68_5 + x13 + x65*xi_2,
         dx15_0,
         dx15_1,
         dx15_2,
         0.0,
         0.0,
         0.0,
-        dx19_0,
-        dx19_1,
-        dx19_2,
+        dc30 + dx37_0,
+        dc31 + dx37_1,
+        dc32 + dx37_2,
+        dx35_3 + dx37_3,
+        dx35_4 + dx37_4,
+        dc33 + dx37_5,
+        dc38*dx4_0 + dx30_0 + dx32_0*x0,
+        dc38*dx4_1 + 2.0*dc39 + dx30_1 + dx32_1*x0 + x26*xi_4,
+        dc38*dx4_2 + dx30_2 + dx32_2*x0,
+        dx30_3 + dx32_3*x0,
+        dx30_4 + dx32_4*x0 + x26*xi_1,
+        dx30_5 + dx32_5*x0,
+        dc13*dc7 + dc14*dc7 + dc40 - dx42_0,
+        dc15*dc7 + dc16*dc7 + dc20*x29 + dc41 - dx42_1,
+        dc17*dc7 + dc18*dc7 + dc19*x29 + dc42 - dx42_2,
+        -dx42_3 + x31*xi_0*xi_1*xi_2,
+        dc20*(xi_1*xi_1) + dc3 - dx42_4,
+        dc1 + dc19*(xi_2*xi_2) - dx42_5,
+        dx16_0,
+        dx16_1,
+        dx16_2,
         0.0,
         0.0,
         0.0,
+        dx18_0,
+        dx18_1,
+        dx18_2,
+        0.0,
+        0.0,
+        0.0,
+        dx20_0,
+        dx20_1,
+        dx20_2,
+        0.0,
+        0.0,
+        0.0,
+        -dc34 + dx40_0,
+        -dc35 + dx40_1,
+        -dc36 + dx40_2,
+        -dx39_3 + dx40_3,
+        -dc37 + dx40_4,
+        -dx39_5 + dx40_5,
+        dc40 + dx32_0*x22 + dx42_0,
+        dc41 + dc43 + dx32_1*x22 + dx42_1,
+        dc39 + dc42 + dx32_2*x22 + dx42_2,
+        dx32_3*x22 + dx42_3,
+        dc3 + dx32_4*x22 + dx42_4,
+        dc1 + dx32_5*x22 + dx42_5,
+        dc44*dx4_0 + dx30_0 + dx32_0*x2,
+        dc44*dx4_1 + dx30_1 + dx32_1*x2,
+        2.0*dc43 + dc44*dx4_2 + dx30_2 + dx32_2*x2 + x26*xi_5,
+        dx30_3 + dx32_3*x2,
+        dx30_4 + dx32_4*x2,
+        dx30_5 + dx32_5*x2 + x26*xi_2,
         dx21_0,
         dx21_1,
         dx21_2,
         0.0,
         0.0,
         0.0,
-        dc48*dx70_0 + dx41_0*xi_4 + dx55_0 + dx57_0 + dx58_0 + dx60_0 + dx69_0*xi_4 + x70*xi_3,
-        dc48*dx70_1 + dx41_1*xi_4 + dx55_1 + dx57_1 + dx58_1 + dx60_1 + dx69_1*xi_4,
-        dc48*dx70_2 + dx41_2*xi_4 + dx55_2 + dx57_2 + dx58_2 + dx60_2 + dx69_2*xi_4 + x70*xi_5,
-        dx60_3 + x10 + x70*xi_0,
-        dc57 + dx60_4 + x41,
-        dx60_5 + x24 + x70*xi_2,
-        dc25*dc58 + dc55*dx71_0 + dx17_0*xi_3 + dx42_0*x38 + dx63_0 + dx64_0 - dx66_0 - dx67_0 + dx68_0 + dx69_0*xi_3,
-        dc26*dc58 + dc55*dx71_1 + dx17_1*xi_3 + dx42_1*x38 + dx63_1 + dx64_1 - dx66_1 - dx67_1 + dx68_1 + dx69_1*xi_3 + x71*xi_4,
-        dc18*dc58 + dc55*dx71_2 + dx17_2*xi_3 + dx38_2*x42 + dx42_2*x38 + dx63_2 + dx64_2 - dx66_2 - dx67_2 + dx68_2 + dx69_2*xi_3 + x71*xi_5,
-        dc47 + dc57 + dx68_3 + x17 + jax.numpy.where(jax.numpy.less(x2, 1.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(4.7794773323873853e-14 - 1.5619206968586225e-16*x2) - 1.1470745597729725e-11) + 2.08767569878681e-9) - 2.7557319223985888e-7) + 2.4801587301587302e-5) - 0.0013888888888888889) + 0.041666666666666664) + 0.5, (jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, x2) + _cos(jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2))) - 1.0)*jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, 1.0/x2)),
-        dc49 + dx68_4 + x71*xi_1,
-        dc52 + dx68_5 + x71*xi_2,
-        -dx27_0 - dx40_0 - dx62_0,
-        -dx27_1 - dx40_1 - dx62_1,
-        -dx27_2 - dx40_2 - dx62_2,
-        -dx40_3 - dx62_3,
-        -dc44 - dx40_4 - dx62_4,
-        -dx62_5 - x37,
-        dx22_0,
-        dx22_1,
-        dx22_2,
+        dx23_0,
+        dx23_1,
+        dx23_2,
         0.0,
         0.0,
         0.0,
-        dx25_0,
-        dx25_1,
-        dx25_2,
-        0.0,
-        0.0,
-        0.0,
-        dx26_0,
-        dx26_1,
-        dx26_2,
+        dx24_0,
+        dx24_1,
+        dx24_2,
         0.0,
         0.0,
         0.0,

@@ -3,9 +3,9 @@
 # source: rigidsym.derivations.lie_maps.exponential_coordinates_left_jacobian (composed in rigidsym.derivations.kernels_spec)
 # equations: (barfoot:se3-jl-definition), (barfoot:se3-jl-xi), (barfoot:se3-jl-inverse)
 # template: numpy_kernel.py.j2
-# math hash: sha256:a4133e465ca458b7
+# math hash: sha256:f108b6a9d1d2e209
 # sympy 1.14.0, rigidsym 0.2.0
-# operations: 226
+# operations: 97
 """The left Jacobian of SE(3) at xi = [w; v] (6 x 6, angular first).
 
 [[J_l(w), 0], [Q(v, w), J_l(w)]] (Barfoot Sec. 7.1.5, reordered)
@@ -19,122 +19,93 @@ the ``(n,)`` uint8 array of flags: 0 fine, ``SINGULAR`` (a denominator is exactl
 
 import numpy
 
-OPS = 226
-MATH_HASH = "a4133e465ca458b7"
+OPS = 97
+MATH_HASH = "f108b6a9d1d2e209"
 #: sample flags returned by the batch function
 SINGULAR, NONFINITE = 1, 2
 
 
 def _main(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5):
     x0 = (xi_1*xi_1)
-    x1 = (xi_2*xi_2)
-    x2 = x0 + x1 + (xi_0*xi_0)
-    x3 = numpy.where(numpy.less(x2, 1.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(8.2206352466243295e-18*x2 - 2.8114572543455206e-15) + 7.6471637318198164e-13) - 1.6059043836821613e-10) + 2.505210838544172e-8) - 2.7557319223985893e-6) + 0.00019841269841269841) - 0.0083333333333333332) + 0.16666666666666666, (numpy.where(numpy.less(x2, 1.0), 1.0, numpy.sqrt(x2)) - numpy.sin(numpy.where(numpy.less(x2, 1.0), 1.0, numpy.sqrt(x2))))*numpy.where(numpy.less(x2, 1.0), 1.0, 1.0/(x2*numpy.sqrt(x2))))
-    x4 = x0*x3
-    x5 = x1*x3
-    x6 = -x4 - x5 + 1
-    x7 = numpy.where(numpy.less(x2, 1.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(1.5619206968586225e-16*x2 - 4.7794773323873853e-14) + 1.1470745597729725e-11) - 2.08767569878681e-9) + 2.7557319223985888e-7) - 2.4801587301587302e-5) + 0.0013888888888888889) - 0.041666666666666664) + 0.5, (1 - numpy.cos(numpy.where(numpy.less(x2, 1.0), 1.0, numpy.sqrt(x2))))*numpy.where(numpy.less(x2, 1.0), 1.0, 1.0/x2))
-    x8 = x7*xi_2
-    x9 = x3*xi_0
-    x10 = x9*xi_1
-    x11 = x10 - x8
-    x12 = x7*xi_1
-    x13 = x9*xi_2
-    x14 = x12 + x13
-    x15 = x10 + x8
-    x16 = -x2
-    x17 = x16*x3
-    x18 = x17 + 1
-    x19 = x18 + x4
-    x20 = x7*xi_0
-    x21 = -x20 + x3*xi_1*xi_2
-    x22 = -x12 + x13
-    x23 = x3*xi_1
-    x24 = x23*xi_2
-    x25 = x20 + x24
-    x26 = x18 + x5
-    x27 = 2*x23*xi_4
-    x28 = x3*xi_2
-    x29 = 2*x28*xi_5
-    x30 = numpy.where(numpy.less(x2, 4.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(1.1359381143141137e-48*x2 - 1.7648891123448757e-45) + 2.4702564609120444e-42) - 3.096829746762205e-39) + 3.4549006862315854e-36) - 3.4051501163498504e-33) + 2.9405903504764064e-30) - 2.204085567310931e-27) + 1.4183290625645841e-24) - 7.7363403412613678e-22) + 3.5231293914104271e-19) - 1.3153016394598927e-16) + 3.936040156083729e-14) - 9.1765964781837793e-12) + 1.6059043836821615e-9) - 2.0041686708353376e-7) + 1.6534391534391536e-5) - 0.00079365079365079365) + 0.016666666666666666, (numpy.where(numpy.less(x2, 4.0), 2.0, numpy.sqrt(x2))*numpy.cos(numpy.where(numpy.less(x2, 4.0), 2.0, numpy.sqrt(x2))) + 2*numpy.where(numpy.less(x2, 4.0), 2.0, numpy.sqrt(x2)) - 3*numpy.sin(numpy.where(numpy.less(x2, 4.0), 2.0, numpy.sqrt(x2))))*numpy.where(numpy.less(x2, 4.0), 0.03125, 1.0/((x2*x2)*numpy.sqrt(x2))))
-    x31 = x30*(xi_1*xi_1*xi_1)
-    x32 = x30*xi_0
-    x33 = x0*x32
-    x34 = xi_2*xi_5
-    x35 = x0*x30
-    x36 = x31*xi_4 + x33*xi_3 + x34*x35
-    x37 = x30*(xi_2*xi_2*xi_2)
-    x38 = x1*xi_3
-    x39 = xi_1*xi_4
-    x40 = x1*x30*x39 + x32*x38 + x37*xi_5
-    x41 = numpy.where(numpy.less(x2, 1.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(4.7794773323873853e-14 - 1.5619206968586225e-16*x2) - 1.1470745597729725e-11) + 2.08767569878681e-9) - 2.7557319223985888e-7) + 2.4801587301587302e-5) - 0.0013888888888888889) + 0.041666666666666664) - 0.5, (numpy.cos(numpy.where(numpy.less(x2, 1.0), 1.0, numpy.sqrt(x2))) - 1)*numpy.where(numpy.less(x2, 1.0), 1.0, 1.0/x2))
-    x42 = numpy.where(numpy.less(x2, 2.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(1.7793582784901148e-21*x2 - 8.2206352466243297e-19) + 3.1238413937172451e-16) - 9.5589546647747705e-14) + 2.2941491195459449e-11) - 4.17535139757362e-9) + 5.5114638447971777e-7) - 4.9603174603174603e-5) + 0.0027777777777777779) - 0.083333333333333329, (-numpy.where(numpy.less(x2, 2.0), 2.0, x2) - 2*numpy.cos(numpy.where(numpy.less(x2, 2.0), 1.414213562373095, numpy.sqrt(x2))) + 2)*numpy.where(numpy.less(x2, 2.0), 0.25, 1.0/(x2*x2)))
-    x43 = x1*xi_5
-    x44 = x5*xi_5
-    x45 = x42*xi_2
-    x46 = xi_0*xi_3
-    x47 = x13*xi_3
-    x48 = x24*xi_4
-    x49 = x30*xi_1
-    x50 = x16*xi_3
-    x51 = x32*xi_1
-    x52 = x23*xi_3 + x31*xi_3 - x33*xi_4 - x34*x51 + x38*x49 + x49*x50 + x9*xi_4
-    x53 = numpy.where(numpy.less(x2, 2.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(8.2206352466243297e-19 - 1.7793582784901148e-21*x2) - 3.1238413937172451e-16) + 9.5589546647747705e-14) - 2.2941491195459449e-11) + 4.17535139757362e-9) - 5.5114638447971777e-7) + 4.9603174603174603e-5) - 0.0027777777777777779) + 0.083333333333333329, (numpy.where(numpy.less(x2, 2.0), 2.0, x2) + 2*numpy.cos(numpy.where(numpy.less(x2, 2.0), 1.414213562373095, numpy.sqrt(x2))) - 2)*numpy.where(numpy.less(x2, 2.0), 0.25, 1.0/(x2*x2)))
-    x54 = x0*x53
-    x55 = x4*xi_4
-    x56 = x53*xi_1
-    x57 = x10*xi_3
-    x58 = x24*xi_5
-    x59 = x35*xi_2
-    x60 = x28*xi_3 + x30*x50*xi_2 - x32*x39*xi_2 - x32*x43 + x37*xi_3 + x59*xi_3 + x9*xi_5
-    x61 = x53*xi_2
-    x62 = -x2*x30*xi_0*xi_3 - x2*x30*xi_1*xi_4 - x2*x30*xi_2*xi_5 + 2*x9*xi_3
-    x63 = x4*xi_3
-    x64 = x5*xi_3
-    x65 = x42*xi_0
-    x66 = x10*xi_4
-    x67 = x13*xi_5
-    x68 = x23*xi_5 + x28*xi_4 - x43*x49 - x51*xi_2*xi_3 - x59*xi_4
-    x69 = x0*x42
-    x70 = x42*xi_1
-    x71 = x53*xi_0
+    x1 = (xi_0*xi_0)
+    x2 = (xi_2*xi_2)
+    x3 = x0 + x1 + x2
+    x4 = numpy.where(numpy.less(x3, 1.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(8.2206352466243295e-18*x3 - 2.8114572543455206e-15) + 7.6471637318198164e-13) - 1.6059043836821613e-10) + 2.505210838544172e-8) - 2.7557319223985893e-6) + 0.00019841269841269841) - 0.0083333333333333332) + 0.16666666666666666, (numpy.where(numpy.less(x3, 1.0), 1.0, numpy.sqrt(x3)) - numpy.sin(numpy.where(numpy.less(x3, 1.0), 1.0, numpy.sqrt(x3))))*numpy.where(numpy.less(x3, 1.0), 1.0, 1.0/(x3*numpy.sqrt(x3))))
+    x5 = x0*x4
+    x6 = x2*x4
+    x7 = -x5 - x6 + 1
+    x8 = numpy.where(numpy.less(x3, 1.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(1.5619206968586225e-16*x3 - 4.7794773323873853e-14) + 1.1470745597729725e-11) - 2.08767569878681e-9) + 2.7557319223985888e-7) - 2.4801587301587302e-5) + 0.0013888888888888889) - 0.041666666666666664) + 0.5, (1 - numpy.cos(numpy.where(numpy.less(x3, 1.0), 1.0, numpy.sqrt(x3))))*numpy.where(numpy.less(x3, 1.0), 1.0, 1.0/x3))
+    x9 = x8*xi_2
+    x10 = x4*xi_0
+    x11 = x10*xi_1
+    x12 = x11 - x9
+    x13 = x8*xi_1
+    x14 = x10*xi_2
+    x15 = x13 + x14
+    x16 = x11 + x9
+    x17 = -x3*x4 + 1
+    x18 = x17 + x5
+    x19 = x8*xi_0
+    x20 = -x19 + x4*xi_1*xi_2
+    x21 = -x13 + x14
+    x22 = xi_1*xi_2
+    x23 = x19 + x22*x4
+    x24 = x17 + x6
+    x25 = xi_0*xi_3
+    x26 = 2*x4
+    x27 = xi_1*xi_4
+    x28 = xi_2*xi_5
+    x29 = x25 + x27 + x28
+    x30 = -x29*numpy.where(numpy.less(x3, 1.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(1.4797143443923793e-16*x3 - 4.498331606952833e-14) + 1.0706029224547743e-11) - 1.9270852604185937e-9) + 2.5052108385441718e-7) - 2.2045855379188714e-5) + 0.0011904761904761906) - 0.033333333333333333) + 0.33333333333333331, (-numpy.where(numpy.less(x3, 1.0), 1.0, numpy.sqrt(x3))*numpy.cos(numpy.where(numpy.less(x3, 1.0), 1.0, numpy.sqrt(x3))) + numpy.sin(numpy.where(numpy.less(x3, 1.0), 1.0, numpy.sqrt(x3))))*numpy.where(numpy.less(x3, 1.0), 1.0, 1.0/(x3*numpy.sqrt(x3))))
+    x31 = numpy.where(numpy.less(x3, 4.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(1.7648891123448757e-45 - 1.1359381143141137e-48*x3) - 2.4702564609120444e-42) + 3.096829746762205e-39) - 3.4549006862315854e-36) + 3.4051501163498504e-33) - 2.9405903504764064e-30) + 2.204085567310931e-27) - 1.4183290625645841e-24) + 7.7363403412613678e-22) - 3.5231293914104271e-19) + 1.3153016394598927e-16) - 3.936040156083729e-14) + 9.1765964781837793e-12) - 1.6059043836821615e-9) + 2.0041686708353376e-7) - 1.6534391534391536e-5) + 0.00079365079365079365) - 0.016666666666666666, (-numpy.where(numpy.less(x3, 4.0), 2.0, numpy.sqrt(x3))*numpy.cos(numpy.where(numpy.less(x3, 4.0), 2.0, numpy.sqrt(x3))) - 2*numpy.where(numpy.less(x3, 4.0), 2.0, numpy.sqrt(x3)) + 3*numpy.sin(numpy.where(numpy.less(x3, 4.0), 2.0, numpy.sqrt(x3))))*numpy.where(numpy.less(x3, 4.0), 0.03125, 1.0/((x3*x3)*numpy.sqrt(x3))))
+    x32 = x29*x31
+    x33 = x8*xi_5
+    x34 = x29*numpy.where(numpy.less(x3, 2.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(1.7793582784901146e-20*x3 - 7.398571721961897e-18) + 2.499073114973796e-15) - 6.6912682653423392e-13) + 1.376489471727567e-10) - 2.08767569878681e-8) + 2.2045855379188711e-6) - 0.00014880952380952382) + 0.0055555555555555558) - 0.083333333333333329, (numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3))*numpy.sin(numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3))) + 2*numpy.cos(numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3))) - 2)*numpy.where(numpy.less(x3, 2.0), 0.25, 1.0/(x3*x3)))
+    x35 = x34*xi_2
+    x36 = x32*xi_0
+    x37 = x36*xi_1 + x4*(xi_0*xi_4 + xi_1*xi_3)
+    x38 = x8*xi_4
+    x39 = x34*xi_1
+    x40 = x36*xi_2 + x4*(xi_0*xi_5 + xi_2*xi_3)
+    x41 = xi_1*xi_5 + xi_2*xi_4
+    x42 = x34*xi_0 + x8*xi_3
     return (
-        x6,
-        x11,
-        x14,
-        0,
-        0,
-        0,
+        x7,
+        x12,
         x15,
-        x19,
+        0,
+        0,
+        0,
+        x16,
+        x18,
+        x20,
+        0,
+        0,
+        0,
         x21,
+        x23,
+        x24,
         0,
         0,
         0,
-        x22,
-        x25,
-        x26,
-        0,
-        0,
-        0,
-        -x27 - x29 + x36 + x40,
-        x39*x45 + x41*xi_5 + x42*x43 + x44 + x45*x46 + x47 + x48 + x52,
-        x34*x56 + x46*x56 + x54*xi_4 - x55 - x57 - x58 + x60 + x7*xi_4,
-        x6,
-        x11,
-        x14,
-        x39*x61 + x43*x53 - x44 + x46*x61 - x47 - x48 + x52 + x7*xi_5,
-        -x29 - x36 - x62,
-        x2*x3*xi_3 + x34*x65 + x38*x53 + x39*x65 + x54*xi_3 - x63 - x64 + x66 + x67 + x68 + xi_3*numpy.where(numpy.less(x2, 1.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(1.5619206968586225e-16*x2 - 4.7794773323873853e-14) + 1.1470745597729725e-11) - 2.08767569878681e-9) + 2.7557319223985888e-7) - 2.4801587301587302e-5) + 0.0013888888888888889) - 0.041666666666666664) - 0.5, (-numpy.where(numpy.less(x2, 1.0), 1.0, x2) - numpy.cos(numpy.where(numpy.less(x2, 1.0), 1.0, numpy.sqrt(x2))) + 1)*numpy.where(numpy.less(x2, 1.0), 1.0, 1.0/x2)),
+        x1*x32 + x25*x26 + x30,
+        -x33 - x35 + x37,
+        x38 + x39 + x40,
+        x7,
+        x12,
         x15,
-        x19,
+        x33 + x35 + x37,
+        x0*x32 + x26*x27 + x30,
+        x29*x31*xi_1*xi_2 + x4*x41 - x42,
+        x16,
+        x18,
+        x20,
+        -x38 - x39 + x40,
+        x22*x32 + x4*x41 + x42,
+        x2*x32 + x26*x28 + x30,
         x21,
-        x34*x70 + x41*xi_4 + x46*x70 + x55 + x57 + x58 + x60 + x69*xi_4,
-        x17*xi_3 + x34*x71 + x38*x42 + x39*x71 + x63 + x64 - x66 - x67 + x68 + x69*xi_3 + xi_3*numpy.where(numpy.less(x2, 1.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(4.7794773323873853e-14 - 1.5619206968586225e-16*x2) - 1.1470745597729725e-11) + 2.08767569878681e-9) - 2.7557319223985888e-7) + 2.4801587301587302e-5) - 0.0013888888888888889) + 0.041666666666666664) + 0.5, (numpy.where(numpy.less(x2, 1.0), 1.0, x2) + numpy.cos(numpy.where(numpy.less(x2, 1.0), 1.0, numpy.sqrt(x2))) - 1)*numpy.where(numpy.less(x2, 1.0), 1.0, 1.0/x2)),
-        -x27 - x40 - x62,
-        x22,
-        x25,
-        x26,
+        x23,
+        x24,
     ), (
     ), (
     )

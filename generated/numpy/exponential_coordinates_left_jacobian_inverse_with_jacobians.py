@@ -3,9 +3,9 @@
 # source: rigidsym.derivations.lie_maps.exponential_coordinates_left_jacobian_inverse (composed in rigidsym.derivations.kernels_spec)
 # equations: (barfoot:se3-jl-definition), (barfoot:se3-jl-xi), (barfoot:se3-jl-inverse)
 # template: numpy_kernel.py.j2
-# math hash: sha256:20f074c2b57a3d71
+# math hash: sha256:2758ddd2b4b87e04
 # sympy 1.14.0, rigidsym 0.2.0
-# operations: 2370
+# operations: 1519
 """The left Jacobian inverse of SE(3) at xi = [w; v] (6 x 6, angular first), with the Jacobians of its outputs.
 
 the block inverse of [[J_l, 0], [Q, J_l]]; and d(output)/d(input) by sympy on the declared formula
@@ -19,516 +19,438 @@ the ``(n,)`` uint8 array of flags: 0 fine, ``SINGULAR`` (a denominator is exactl
 
 import numpy
 
-OPS = 2370
-MATH_HASH = "20f074c2b57a3d71"
+OPS = 1519
+MATH_HASH = "2758ddd2b4b87e04"
 #: sample flags returned by the batch function
 SINGULAR, NONFINITE = 1, 2
 
 
 def _main(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5):
     x0 = (xi_1*xi_1)
-    x1 = (xi_2*xi_2)
-    x2 = (xi_0*xi_0)
-    x3 = x0 + x2
-    x4 = x1 + x3
-    x5 = numpy.where(numpy.less(x4, 4.0), x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(1.867346851419009e-30*x4 + 7.3719898813306206e-29) + 2.9103449512297299e-27) + 1.1489581337744405e-25) + 4.5359049046753659e-24) + 1.7907034854075093e-22) + 7.0694140792589346e-21) + 2.7908929371625045e-19) + 1.1018005656720459e-17) + 4.3497373971161238e-16) + 1.717212411255569e-14) + 6.7793605926451654e-13) + 2.6765073061369358e-11) + 1.0568380277374986e-9) + 4.17535139757362e-8) + 1.6534391534391535e-6) + 6.6137566137566142e-5) + 0.0027777777777777779) + 0.16666666666666666, (-numpy.where(numpy.less(x4, 4.0), 2.0, numpy.sqrt(x4))*numpy.cos((0.5)*numpy.where(numpy.less(x4, 4.0), 2.0, numpy.sqrt(x4))) + 2*numpy.sin((0.5)*numpy.where(numpy.less(x4, 4.0), 2.0, numpy.sqrt(x4))))*numpy.where(numpy.less(x4, 4.0), 0.25, 1.0/x4)/numpy.sin((0.5)*numpy.where(numpy.less(x4, 4.0), 2.0, numpy.sqrt(x4))))
-    dc0 = 2*numpy.where(numpy.less(x4, 2.0), x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(1.7234372006616606e-24*x4 + 6.3502668665455129e-23) + 2.3279145310297621e-21) + 8.4832968951107215e-20) + 3.0699822308787551e-18) + 1.1018005656720459e-16) + 3.914763657404511e-15) + 1.3737699290044552e-13) + 4.7455524148516162e-12) + 1.6059043836821613e-10) + 5.2841901386874934e-9) + 1.670140559029448e-7) + 4.9603174603174603e-6) + 0.00013227513227513228) + 0.0027777777777777779, (0.25)*(2*numpy.where(numpy.less(x4, 2.0), 1.414213562373095, numpy.sqrt(x4))*numpy.sin((0.5)*numpy.where(numpy.less(x4, 2.0), 1.414213562373095, numpy.sqrt(x4)))*numpy.cos((0.5)*numpy.where(numpy.less(x4, 2.0), 1.414213562373095, numpy.sqrt(x4))) + numpy.where(numpy.less(x4, 2.0), 2.0, x4) - 8*(numpy.sin((0.5)*numpy.where(numpy.less(x4, 2.0), 1.414213562373095, numpy.sqrt(x4)))*numpy.sin((0.5)*numpy.where(numpy.less(x4, 2.0), 1.414213562373095, numpy.sqrt(x4)))))*numpy.where(numpy.less(x4, 2.0), 0.25, 1.0/(x4*x4))/(numpy.sin((0.5)*numpy.where(numpy.less(x4, 2.0), 1.414213562373095, numpy.sqrt(x4)))*numpy.sin((0.5)*numpy.where(numpy.less(x4, 2.0), 1.414213562373095, numpy.sqrt(x4)))))
-    dx5_0 = dc0*xi_0
-    dx5_1 = dc0*xi_1
-    dx5_2 = dc0*xi_2
-    x6 = (0.5)*x5
-    x7 = x0*x6
+    x1 = (xi_0*xi_0)
+    x2 = (xi_2*xi_2)
+    x3 = x0 + x1 + x2
+    x4 = numpy.where(numpy.less(x3, 4.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(1.867346851419009e-30*x3 + 7.3719898813306206e-29) + 2.9103449512297299e-27) + 1.1489581337744405e-25) + 4.5359049046753659e-24) + 1.7907034854075093e-22) + 7.0694140792589346e-21) + 2.7908929371625045e-19) + 1.1018005656720459e-17) + 4.3497373971161238e-16) + 1.717212411255569e-14) + 6.7793605926451654e-13) + 2.6765073061369358e-11) + 1.0568380277374986e-9) + 4.17535139757362e-8) + 1.6534391534391535e-6) + 6.6137566137566142e-5) + 0.0027777777777777779) + 0.16666666666666666, (-numpy.where(numpy.less(x3, 4.0), 2.0, numpy.sqrt(x3))*numpy.cos((0.5)*numpy.where(numpy.less(x3, 4.0), 2.0, numpy.sqrt(x3))) + 2*numpy.sin((0.5)*numpy.where(numpy.less(x3, 4.0), 2.0, numpy.sqrt(x3))))*numpy.where(numpy.less(x3, 4.0), 0.25, 1.0/x3)/numpy.sin((0.5)*numpy.where(numpy.less(x3, 4.0), 2.0, numpy.sqrt(x3))))
+    dc0 = 2*numpy.where(numpy.less(x3, 2.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(1.7234372006616606e-24*x3 + 6.3502668665455129e-23) + 2.3279145310297621e-21) + 8.4832968951107215e-20) + 3.0699822308787551e-18) + 1.1018005656720459e-16) + 3.914763657404511e-15) + 1.3737699290044552e-13) + 4.7455524148516162e-12) + 1.6059043836821613e-10) + 5.2841901386874934e-9) + 1.670140559029448e-7) + 4.9603174603174603e-6) + 0.00013227513227513228) + 0.0027777777777777779, (0.25)*(2*numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3))*numpy.sin((0.5)*numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3)))*numpy.cos((0.5)*numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3))) + numpy.where(numpy.less(x3, 2.0), 2.0, x3) - 8*(numpy.sin((0.5)*numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3)))*numpy.sin((0.5)*numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3)))))*numpy.where(numpy.less(x3, 2.0), 0.25, 1.0/(x3*x3))/(numpy.sin((0.5)*numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3)))*numpy.sin((0.5)*numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3)))))
+    dx4_0 = dc0*xi_0
+    dx4_1 = dc0*xi_1
+    dx4_2 = dc0*xi_2
+    x5 = (0.5)*x4
+    x6 = x0*x5
     dc1 = (0.5)*x0
-    dx7_0 = dc1*dx5_0
-    dc2 = 2*x6
+    dx6_0 = dc1*dx4_0
+    dc2 = 2*x5
     dc3 = dc2*xi_1
-    dx7_1 = dc1*dx5_1 + dc3
-    dx7_2 = dc1*dx5_2
-    x8 = x1*x6
-    dc4 = (0.5)*x1
-    dx8_0 = dc4*dx5_0
-    dx8_1 = dc4*dx5_1
+    dx6_1 = dc1*dx4_1 + dc3
+    dx6_2 = dc1*dx4_2
+    x7 = x2*x5
+    dc4 = (0.5)*x2
+    dx7_0 = dc4*dx4_0
+    dx7_1 = dc4*dx4_1
     dc5 = dc2*xi_2
-    dx8_2 = dc4*dx5_2 + dc5
-    x9 = -x7 - x8 + 1
-    dx9_0 = -dx7_0 - dx8_0
-    dx9_1 = -dx7_1 - dx8_1
-    dx9_2 = -dx7_2 - dx8_2
-    x10 = (0.5)*xi_2
-    x11 = (0.5)*xi_1
-    x12 = x5*xi_0
-    dx12_0 = dx5_0*xi_0 + x5
-    dx12_1 = dx5_1*xi_0
-    dx12_2 = dx5_2*xi_0
-    x13 = x11*x12
-    dx13_0 = dx12_0*x11
-    dc6 = (0.5)*x12
-    dx13_1 = dc6 + dx12_1*x11
-    dx13_2 = dx12_2*x11
-    x14 = x10 + x13
-    dx14_2 = dx13_2 + 0.5
-    x15 = x10*x12
-    dx15_0 = dx12_0*x10
-    dx15_1 = dx12_1*x10
-    dx15_2 = dc6 + dx12_2*x10
-    x16 = -x11 + x15
-    dx16_1 = dx15_1 - 0.5
-    x17 = -x10 + x13
-    dx17_2 = dx13_2 - 0.5
-    x18 = -x4*x6 + 1
-    dc7 = (0.5)*x4
-    dx18_0 = -dc2*xi_0 - dc7*dx5_0
-    dx18_1 = -dc3 - dc7*dx5_1
-    dx18_2 = -dc5 - dc7*dx5_2
-    x19 = x18 + x7
-    dx19_0 = dx18_0 + dx7_0
-    dx19_1 = dx18_1 + dx7_1
-    dx19_2 = dx18_2 + dx7_2
-    x20 = (0.5)*xi_0
-    x21 = x10*x5*xi_1 + x20
-    dc8 = x10*xi_1
-    dx21_0 = dc8*dx5_0 + 0.5
-    dx21_1 = dc8*dx5_1 + x10*x5
-    dc9 = (0.5)*x5
+    dx7_2 = dc4*dx4_2 + dc5
+    x8 = -x6 - x7 + 1
+    dx8_0 = -dx6_0 - dx7_0
+    dx8_1 = -dx6_1 - dx7_1
+    dx8_2 = -dx6_2 - dx7_2
+    x9 = (0.5)*xi_2
+    x10 = (0.5)*xi_1
+    x11 = x4*xi_0
+    dx11_0 = dx4_0*xi_0 + x4
+    dx11_1 = dx4_1*xi_0
+    dx11_2 = dx4_2*xi_0
+    x12 = x10*x11
+    dx12_0 = dx11_0*x10
+    dc6 = (0.5)*x11
+    dx12_1 = dc6 + dx11_1*x10
+    dx12_2 = dx11_2*x10
+    x13 = x12 + x9
+    dx13_2 = dx12_2 + 0.5
+    x14 = x11*x9
+    dx14_0 = dx11_0*x9
+    dx14_1 = dx11_1*x9
+    dx14_2 = dc6 + dx11_2*x9
+    x15 = -x10 + x14
+    dx15_1 = dx14_1 - 0.5
+    x16 = x12 - x9
+    dx16_2 = dx12_2 - 0.5
+    x17 = -x3*x5 + 1
+    dc7 = (0.5)*x3
+    dx17_0 = -dc2*xi_0 - dc7*dx4_0
+    dx17_1 = -dc3 - dc7*dx4_1
+    dx17_2 = -dc5 - dc7*dx4_2
+    x18 = x17 + x6
+    dx18_0 = dx17_0 + dx6_0
+    dx18_1 = dx17_1 + dx6_1
+    dx18_2 = dx17_2 + dx6_2
+    x19 = (0.5)*xi_0
+    x20 = x19 + x4*x9*xi_1
+    dc8 = x9*xi_1
+    dx20_0 = dc8*dx4_0 + 0.5
+    dx20_1 = dc8*dx4_1 + x4*x9
+    dc9 = (0.5)*x4
     dc10 = dc9*xi_1
-    dx21_2 = dc10 + dc8*dx5_2
-    x22 = x11 + x15
-    dx22_1 = dx15_1 + 0.5
-    x23 = -x20 + (0.5)*x5*xi_1*xi_2
+    dx20_2 = dc10 + dc8*dx4_2
+    x21 = x10 + x14
+    dx21_1 = dx14_1 + 0.5
+    x22 = -x19 + (0.5)*x4*xi_1*xi_2
     dc11 = xi_1*xi_2
     dc12 = (0.5)*dc11
-    dx23_0 = dc12*dx5_0 - 0.5
-    dx23_1 = dc12*dx5_1 + dc9*xi_2
-    dx23_2 = dc10 + dc12*dx5_2
-    x24 = x18 + x8
-    dx24_0 = dx18_0 + dx8_0
-    dx24_1 = dx18_1 + dx8_1
-    dx24_2 = dx18_2 + dx8_2
-    x25 = xi_0*xi_3
-    x26 = xi_2*xi_5
-    x27 = -x25 - x26
-    x28 = numpy.where(numpy.less(x4, 1.0), x4*(x4*(x4*(x4*(x4*(x4*(x4*(8.2206352466243295e-18*x4 - 2.8114572543455206e-15) + 7.6471637318198164e-13) - 1.6059043836821613e-10) + 2.505210838544172e-8) - 2.7557319223985893e-6) + 0.00019841269841269841) - 0.0083333333333333332) + 0.16666666666666666, (numpy.where(numpy.less(x4, 1.0), 1.0, numpy.sqrt(x4)) - numpy.sin(numpy.where(numpy.less(x4, 1.0), 1.0, numpy.sqrt(x4))))*numpy.where(numpy.less(x4, 1.0), 1.0, 1.0/(x4*numpy.sqrt(x4))))
-    dc13 = 2*numpy.where(numpy.less(x4, 4.0), x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(8.8244455617243787e-46 - 5.6796905715705686e-49*x4) - 1.2351282304560222e-42) + 1.5484148733811025e-39) - 1.7274503431157927e-36) + 1.7025750581749252e-33) - 1.4702951752382032e-30) + 1.1020427836554655e-27) - 7.0916453128229206e-25) + 3.8681701706306839e-22) - 1.7615646957052136e-19) + 6.5765081972994636e-17) - 1.9680200780418645e-14) + 4.5882982390918896e-12) - 8.0295219184108074e-10) + 1.0020843354176688e-7) - 8.2671957671957678e-6) + 0.00039682539682539683) - 0.0083333333333333332, (0.5)*((1 - numpy.cos(numpy.where(numpy.less(x4, 4.0), 2.0, numpy.sqrt(x4))))*numpy.where(numpy.less(x4, 4.0), 2.0, numpy.sqrt(x4)) - 3*numpy.where(numpy.less(x4, 4.0), 2.0, numpy.sqrt(x4)) + 3*numpy.sin(numpy.where(numpy.less(x4, 4.0), 2.0, numpy.sqrt(x4))))*numpy.where(numpy.less(x4, 4.0), 0.03125, 1.0/((x4*x4)*numpy.sqrt(x4))))
-    dx28_0 = dc13*xi_0
-    dx28_1 = dc13*xi_1
-    dx28_2 = dc13*xi_2
-    x29 = 2*x28
-    x30 = xi_1*xi_5
-    x31 = x30*xi_0
-    dc14 = xi_0*xi_5
-    dx31_1 = dc14
-    dc15 = xi_0*xi_1
-    dx31_5 = dc15
-    x32 = xi_1*xi_3
-    x33 = -x32*xi_2
-    dc16 = xi_2*xi_3
-    dx33_1 = -dc16
-    dx33_3 = -dc11
-    x34 = x31 + x33
-    dx34_1 = dx31_1 + dx33_1
-    x35 = (0.5)*numpy.where(numpy.less(x4, 2.0), x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(8.2206352466243297e-19 - 1.7793582784901148e-21*x4) - 3.1238413937172451e-16) + 9.5589546647747705e-14) - 2.2941491195459449e-11) + 4.17535139757362e-9) - 5.5114638447971777e-7) + 4.9603174603174603e-5) - 0.0027777777777777779) + 0.083333333333333329, (numpy.where(numpy.less(x4, 2.0), 2.0, x4) + 2*numpy.cos(numpy.where(numpy.less(x4, 2.0), 1.414213562373095, numpy.sqrt(x4))) - 2)*numpy.where(numpy.less(x4, 2.0), 0.25, 1.0/(x4*x4)))
-    dc17 = numpy.where(numpy.less(x4, 4.0), x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(4.4122227808621894e-47 - 2.7046145578907471e-50*x4) - 6.500674897136959e-44) + 8.6023048521172363e-41) - 1.0161472606563485e-37) + 1.0641094113593283e-34) - 9.8019678349213543e-32) + 7.8717341689676112e-29) - 5.4551117790945548e-26) + 3.2234751421922368e-23) - 1.6014224506411032e-20) + 6.5765081972994638e-18) - 2.1866889756020719e-15) + 5.7353727988648621e-13) - 1.1470745597729724e-10) + 1.670140559029448e-8) - 1.6534391534391535e-6) + 9.9206349206349206e-5) - 0.0027777777777777779, ((numpy.where(numpy.less(x4, 4.0), 2.0, numpy.sqrt(x4)) - numpy.sin(numpy.where(numpy.less(x4, 4.0), 2.0, numpy.sqrt(x4))))*numpy.where(numpy.less(x4, 4.0), 2.0, numpy.sqrt(x4)) - 2*numpy.where(numpy.less(x4, 4.0), 4.0, x4) - 4*numpy.cos(numpy.where(numpy.less(x4, 4.0), 2.0, numpy.sqrt(x4))) + 4)*numpy.where(numpy.less(x4, 4.0), 0.015625, 1.0/(x4*x4*x4)))
-    dx35_0 = dc17*xi_0
-    dx35_1 = dc17*xi_1
-    dx35_2 = dc17*xi_2
-    x36 = xi_1*xi_4
-    x37 = x36*xi_0
-    dc18 = xi_0*xi_4
-    dx37_1 = dc18
-    dx37_4 = dc15
-    x38 = x27*xi_0 - x37
-    dc19 = xi_0*xi_3
-    dx38_0 = -dc19 + x27 - x36
-    dx38_2 = -dc14
-    dc20 = (xi_0*xi_0)
-    dc21 = -dc20
-    dx38_3 = dc21
-    dc22 = xi_0*xi_2
-    dx38_5 = -dc22
-    x39 = x36*xi_2
-    dc23 = xi_2*xi_4
-    dx39_1 = dc23
-    dx39_4 = dc11
-    x40 = -x27*xi_2
-    dx40_0 = dc16
-    dc24 = -xi_2*xi_5
-    dx40_2 = -dc24 - x27
-    dx40_3 = dc22
-    dc25 = (xi_2*xi_2)
-    dx40_5 = dc25
-    x41 = x39 + x40
-    dx41_2 = dx40_2 + x36
-    x42 = numpy.where(numpy.less(x4, 4.0), x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(1.1359381143141137e-48*x4 - 1.7648891123448757e-45) + 2.4702564609120444e-42) - 3.096829746762205e-39) + 3.4549006862315854e-36) - 3.4051501163498504e-33) + 2.9405903504764064e-30) - 2.204085567310931e-27) + 1.4183290625645841e-24) - 7.7363403412613678e-22) + 3.5231293914104271e-19) - 1.3153016394598927e-16) + 3.936040156083729e-14) - 9.1765964781837793e-12) + 1.6059043836821615e-9) - 2.0041686708353376e-7) + 1.6534391534391536e-5) - 0.00079365079365079365) + 0.016666666666666666, (numpy.where(numpy.less(x4, 4.0), 2.0, numpy.sqrt(x4))*numpy.cos(numpy.where(numpy.less(x4, 4.0), 2.0, numpy.sqrt(x4))) + 2*numpy.where(numpy.less(x4, 4.0), 2.0, numpy.sqrt(x4)) - 3*numpy.sin(numpy.where(numpy.less(x4, 4.0), 2.0, numpy.sqrt(x4))))*numpy.where(numpy.less(x4, 4.0), 0.03125, 1.0/((x4*x4)*numpy.sqrt(x4))))
-    dc26 = 2*numpy.where(numpy.less(x4, 4.0), x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(2.0446886057654048e-47 - 1.2579602594840682e-50*x4) - 3.0003114909862885e-44) + 3.952410337459271e-41) - 4.6452446201433075e-38) + 4.8368609607242191e-35) - 4.4266951512548055e-32) + 3.5287084205716874e-29) - 2.4244941240420241e-26) + 1.4183290625645841e-23) - 6.962706307135231e-21) + 2.8185035131283417e-18) - 9.2071114762192488e-16) + 2.3616240936502375e-13) - 4.5882982390918898e-11) + 6.423617534728646e-9) - 6.0125060125060129e-7) + 3.3068783068783071e-5) - 0.00079365079365079365, (0.5)*((-numpy.where(numpy.less(x4, 4.0), 2.0, numpy.sqrt(x4))*numpy.sin(numpy.where(numpy.less(x4, 4.0), 2.0, numpy.sqrt(x4))) - 2*numpy.cos(numpy.where(numpy.less(x4, 4.0), 2.0, numpy.sqrt(x4))) + 2)*numpy.where(numpy.less(x4, 4.0), 2.0, numpy.sqrt(x4)) - 5*numpy.where(numpy.less(x4, 4.0), 2.0, numpy.sqrt(x4))*numpy.cos(numpy.where(numpy.less(x4, 4.0), 2.0, numpy.sqrt(x4))) - 10*numpy.where(numpy.less(x4, 4.0), 2.0, numpy.sqrt(x4)) + 15*numpy.sin(numpy.where(numpy.less(x4, 4.0), 2.0, numpy.sqrt(x4))))*numpy.where(numpy.less(x4, 4.0), 0.0078125, 1.0/((x4*x4*x4)*numpy.sqrt(x4))))
-    dx42_0 = dc26*xi_0
-    dx42_1 = dc26*xi_1
-    dx42_2 = dc26*xi_2
-    x43 = (0.5)*x42
-    x44 = -x1 - x2
-    x45 = -x37 + x44*xi_3
-    dc27 = 2*dc19
-    dx45_0 = -dc27 - x36
-    dc28 = 2*dc16
-    dx45_2 = -dc28
-    x46 = x39 - x44*xi_5
-    dc29 = 2*dc14
-    dx46_0 = dc29
-    dc30 = 2*xi_2*xi_5
-    dx46_2 = dc30 + x36
-    x47 = x27*x29 + x43*(-x38*xi_0 + x41*xi_2) + x43*(-x45*xi_0 + x46*xi_2)
-    dc31 = x29*xi_3
-    dc32 = x43*x45
-    dc33 = x43*xi_0
-    dc34 = -x38*xi_0 + x41*xi_2 - x45*xi_0 + x46*xi_2
-    dx47_0 = -dc31 - dc32 - dc33*dx38_0 - dc33*dx45_0 + (0.5)*dc34*dx42_0 + 2*dx28_0*x27 + dx40_0*x43*xi_2 + dx46_0*x43*xi_2 - x38*x43
-    dc35 = 2*x27
-    dc36 = 2*dc33
-    dc37 = x43*xi_2
-    dc38 = 2*dc37
-    dc39 = (0.5)*dc34
-    dx47_1 = dc35*dx28_1 + dc36*dx37_1 + dc38*dx39_1 + dc39*dx42_1
-    dc40 = x43*x46
-    dc41 = -x29*xi_5
-    dx47_2 = -dc33*dx38_2 - dc33*dx45_2 + dc35*dx28_2 + dc37*dx41_2 + dc37*dx46_2 + dc39*dx42_2 + dc40 + dc41 + x41*x43
-    dc42 = x29*xi_0
-    dx47_3 = -dc33*dx38_3 - dc33*x44 - dc42 + dx40_3*x43*xi_2
-    dx47_4 = dc36*dx37_4 + dc38*dx39_4
-    dc43 = x29*xi_2
-    dx47_5 = -dc33*dx38_5 - dc37*x44 - dc43 + dx40_5*x43*xi_2
-    x48 = (0.5)*xi_3
-    x49 = x26*xi_0
-    dx49_2 = dc14
-    dx49_5 = dc22
-    x50 = -x25 - x36
-    x51 = x50*xi_0
-    dx51_0 = -dc19 + x50
-    dx51_1 = -dc18
-    dx51_3 = dc21
-    dc44 = -dc15
-    dx51_4 = dc44
-    x52 = x49 - x51
-    dx52_0 = -dx51_0 + x26
-    x53 = xi_2*xi_4
-    x54 = x53*xi_0
-    dx54_2 = dc18
-    dx54_4 = dc22
-    x55 = x33 + x54
-    dx55_2 = dx54_2 - x32
-    x56 = -x55
-    x57 = x26*xi_1
-    dc45 = xi_1*xi_5
-    dx57_2 = dc45
-    dx57_5 = dc11
-    x58 = -x3
-    x59 = -x57 + x58*xi_4
-    dc46 = 2*dc18
-    dx59_0 = -dc46
-    dc47 = xi_1*xi_4
-    dc48 = 2*dc47
-    dx59_1 = -dc48 - x26
-    x60 = x49 - x58*xi_3
-    dx60_0 = dc27 + x26
-    dc49 = xi_1*xi_3
-    dc50 = 2*dc49
-    dx60_1 = dc50
-    x61 = (1.5)*numpy.where(numpy.less(x4, 2.0), x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(1.7793582784901148e-21*x4 - 8.2206352466243297e-19) + 3.1238413937172451e-16) - 9.5589546647747705e-14) + 2.2941491195459449e-11) - 4.17535139757362e-9) + 5.5114638447971777e-7) - 4.9603174603174603e-5) + 0.0027777777777777779) - 0.083333333333333329, (-numpy.where(numpy.less(x4, 2.0), 2.0, x4) - 2*numpy.cos(numpy.where(numpy.less(x4, 2.0), 1.414213562373095, numpy.sqrt(x4))) + 2)*numpy.where(numpy.less(x4, 2.0), 0.25, 1.0/(x4*x4)))
-    dc51 = 3*numpy.where(numpy.less(x4, 4.0), x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(2.7046145578907471e-50*x4 - 4.4122227808621894e-47) + 6.500674897136959e-44) - 8.6023048521172363e-41) + 1.0161472606563485e-37) - 1.0641094113593283e-34) + 9.8019678349213543e-32) - 7.8717341689676112e-29) + 5.4551117790945548e-26) - 3.2234751421922368e-23) + 1.6014224506411032e-20) - 6.5765081972994638e-18) + 2.1866889756020719e-15) - 5.7353727988648621e-13) + 1.1470745597729724e-10) - 1.670140559029448e-8) + 1.6534391534391535e-6) - 9.9206349206349206e-5) + 0.0027777777777777779, ((-numpy.where(numpy.less(x4, 4.0), 2.0, numpy.sqrt(x4)) + numpy.sin(numpy.where(numpy.less(x4, 4.0), 2.0, numpy.sqrt(x4))))*numpy.where(numpy.less(x4, 4.0), 2.0, numpy.sqrt(x4)) + 2*numpy.where(numpy.less(x4, 4.0), 4.0, x4) + 4*numpy.cos(numpy.where(numpy.less(x4, 4.0), 2.0, numpy.sqrt(x4))) - 4)*numpy.where(numpy.less(x4, 4.0), 0.015625, 1.0/(x4*x4*x4)))
-    dx61_0 = dc51*xi_0
-    dx61_1 = dc51*xi_1
-    dx61_2 = dc51*xi_2
-    x62 = x50*xi_1 - x57
-    dx62_0 = -dc49
-    dx62_1 = -dc47 - x26 + x50
-    dx62_3 = dc44
-    dc52 = (xi_1*xi_1)
-    dx62_4 = -dc52
-    x63 = x10*x42
-    dx63_0 = dx42_0*x10
-    dx63_1 = dx42_1*x10
-    dc53 = (0.5)*x42
-    dx63_2 = dc53 + dx42_2*x10
-    x64 = x28*x30 + x28*x53
-    dc54 = x30 + x53
-    dx64_0 = dc54*dx28_0
-    dx64_1 = dc54*dx28_1 + x28*xi_5
-    dx64_2 = dc54*dx28_2 + x28*xi_4
-    dc55 = x28*xi_2
-    dx64_4 = dc55
-    dc56 = x28*xi_1
-    dx64_5 = dc56
-    x65 = x28*x52 + x35*x60 + x35*(x1*xi_3 - x51) + x43*(-x56*xi_0 + x59*xi_2) - x48 + x52*x61 + x62*x63 + x64
-    dc57 = x43*x56
-    dc58 = x28 + x61
-    dc59 = x1*xi_3 - x51 + x60
-    dc60 = -0.5*x56*xi_0 + (0.5)*x59*xi_2
-    dx65_0 = dc33*x53 + dc37*dx59_0 - dc57 + dc58*dx52_0 + dc59*dx35_0 + dc60*dx42_0 + dx28_0*x52 - dx51_0*x35 + dx60_0*x35 + dx61_0*x52 + dx62_0*x63 + dx63_0*x62 + dx64_0
-    dx65_1 = dc33*dx33_1 + dc37*dx59_1 - dc58*dx51_1 + dc59*dx35_1 + dc60*dx42_1 + dx28_1*x52 - dx51_1*x35 + dx60_1*x35 + dx61_1*x52 + dx62_1*x63 + dx63_1*x62 + dx64_1
-    dc61 = x43*x59
-    dx65_2 = dc28*x35 + dc33*dx55_2 - dc37*dx57_2 + dc58*dx49_2 + dc59*dx35_2 + dc60*dx42_2 + dc61 + dx28_2*x52 + dx49_2*x35 - dx57_2*x63 + dx61_2*x52 + dx63_2*x62 + dx64_2
-    dc62 = -x1*x35 + x35*x58 + 0.5
-    dx65_3 = -dc58*dx51_3 - dc62 + dx33_3*x43*xi_0 - dx51_3*x35 + dx62_3*x63
-    dc63 = dc37*x58
-    dx65_4 = dc33*dx54_4 - dc58*dx51_4 + dc63 - dx51_4*x35 + dx62_4*x63 + dx64_4
-    dx65_5 = -dc37*dx57_5 + dc58*dx49_5 + dx49_5*x35 - dx57_5*x63 + dx64_5
-    x66 = (0.5)*xi_5
-    x67 = x25*xi_2
-    dx67_0 = dc16
-    dx67_3 = dc22
-    x68 = -x26 - x36
-    x69 = -x68*xi_2
-    dx69_1 = dc23
-    dx69_2 = -dc24 - x68
-    dx69_4 = dc11
-    dx69_5 = dc25
-    x70 = -x67 - x69
-    dx70_2 = -dx69_2 - x25
-    x71 = x31 - x54
-    dx71_0 = x30 - x53
-    x72 = -x71
-    x73 = x25*xi_1
-    dx73_0 = dc49
-    dx73_3 = dc15
-    x74 = -x0 - x1
-    x75 = x73 - x74*xi_4
-    dx75_1 = dc48 + x25
-    dc64 = 2*dc23
-    dx75_2 = dc64
-    x76 = -x67 + x74*xi_5
-    dc65 = 2*dc45
-    dx76_1 = -dc65
-    dx76_2 = -dc30 - x25
-    x77 = -x68*xi_1
-    dx77_1 = dc47 - x68
-    dx77_2 = dc45
-    dx77_4 = dc52
-    dx77_5 = dc11
-    x78 = x73 + x77
-    dx78_1 = dx77_1 + x25
-    x79 = x20*x42
-    dx79_0 = dc53 + dx42_0*x20
-    dx79_1 = dx42_1*x20
-    dx79_2 = dx42_2*x20
-    x80 = x28*xi_0
-    dx80_0 = dx28_0*xi_0 + x28
-    dx80_1 = dx28_1*xi_0
-    dx80_2 = dx28_2*xi_0
-    x81 = x28*x32 + x80*xi_4
-    dx81_0 = dx28_0*x32 + dx80_0*xi_4
-    dc66 = x28*xi_3
-    dx81_1 = dc66 + dx28_1*x32 + dx80_1*xi_4
-    dx81_2 = dx28_2*x32 + dx80_2*xi_4
-    dx81_3 = dc56
-    x82 = x28*x70 + x35*x76 + x35*(-x2*xi_5 - x69) + x43*(x72*xi_2 - x75*xi_0) + x61*x70 + x66 - x78*x79 + x81
-    dc67 = x43*x75
-    dc68 = x72*xi_2 - x75*xi_0
-    dc69 = -x2*xi_5 - x69 + x76
-    dx82_0 = -dc29*x35 - dc33*dx73_0 - dc37*dx71_0 - dc58*dx67_0 - dc67 + (0.5)*dc68*dx42_0 + dc69*dx35_0 + dx28_0*x70 + dx61_0*x70 - dx67_0*x35 - dx73_0*x79 - dx79_0*x78 + dx81_0
-    dc70 = (0.5)*dc68
-    dx82_1 = -dc33*dx75_1 - dc37*dx31_1 - dc58*dx69_1 + dc69*dx35_1 + dc70*dx42_1 + dx28_1*x70 + dx61_1*x70 - dx69_1*x35 + dx76_1*x35 - dx78_1*x79 - dx79_1*x78 + dx81_1
-    dc71 = x43*x72
-    dx82_2 = -dc33*dx75_2 + dc37*dx54_2 + dc58*dx70_2 + dc69*dx35_2 + dc70*dx42_2 + dc71 + dx28_2*x70 + dx61_2*x70 - dx69_2*x35 + dx76_2*x35 - dx77_2*x79 - dx79_2*x78 + dx81_2
-    dx82_3 = -dc33*dx73_3 - dc58*dx67_3 - dx67_3*x35 - dx73_3*x79 + dx81_3
-    dc72 = dc33*x74 + x80
-    dx82_4 = dc37*dx54_4 - dc58*dx69_4 + dc72 - dx69_4*x35 - dx77_4*x79
-    dc73 = x2*x35
-    dc74 = x35*x74
-    dc75 = dc37*dx31_5
-    dx82_5 = -dc58*dx69_5 - dc73 + dc74 - dc75 - dx69_5*x35 - dx77_5*x79 + 0.5
-    x83 = x17*x47 + x22*x65 + x82*x9
-    dx83_0 = dx13_0*x47 + dx15_0*x65 + dx47_0*x17 + dx65_0*x22 + dx82_0*x9 + dx9_0*x82
-    dx83_1 = dx13_1*x47 + dx22_1*x65 + dx47_1*x17 + dx65_1*x22 + dx82_1*x9 + dx9_1*x82
-    dx83_2 = dx15_2*x65 + dx17_2*x47 + dx47_2*x17 + dx65_2*x22 + dx82_2*x9 + dx9_2*x82
-    dx83_3 = dx47_3*x17 + dx65_3*x22 + dx82_3*x9
-    dx83_4 = dx47_4*x17 + dx65_4*x22 + dx82_4*x9
-    dx83_5 = dx47_5*x17 + dx65_5*x22 + dx82_5*x9
-    x84 = x29*x50 + x35*x55 + x35*x56 + x43*(x52*xi_0 - x62*xi_1) + x43*(-x59*xi_1 + x60*xi_0)
-    dc76 = x43*x60
-    dc77 = 2*x50
-    dc78 = x55 + x56
-    dc79 = x43*xi_1
-    dc80 = x52*xi_0 - x59*xi_1 + x60*xi_0 - x62*xi_1
-    dc81 = (0.5)*dc80
-    dx84_0 = -dc31 + dc33*dx52_0 + dc33*dx60_0 + dc76 + dc77*dx28_0 + dc78*dx35_0 - dc79*dx59_0 - dc79*dx62_0 + dc81*dx42_0 + x43*x52
-    dc82 = x29*xi_4
-    dx84_1 = -dc33*dx51_1 - dc61 + dc78*dx35_1 - dc79*dx59_1 - dc79*dx62_1 + (0.5)*dc80*dx42_1 - dc82 + 2*dx28_1*x50 + dx60_1*x43*xi_0 - x43*x62
-    dc83 = 2*dc79
-    dx84_2 = dc36*dx49_2 + dc77*dx28_2 + dc78*dx35_2 + dc81*dx42_2 + dc83*dx57_2
-    dx84_3 = -dc33*dx51_3 - dc33*x58 - dc42 - dc79*dx62_3
-    dc84 = x29*xi_1
-    dx84_4 = -dc33*dx51_4 - dc79*dx62_4 - dc79*x58 - dc84
-    dx84_5 = dc36*dx49_5 + dc83*dx57_5
-    x85 = x11*x42
-    dx85_0 = dx42_0*x11
-    dx85_1 = dc53 + dx42_1*x11
-    dx85_2 = dx42_2*x11
-    x86 = x28*x38 + x35*x45 + x35*(-x0*xi_3 + x27*xi_0) + x38*x61 - x41*x85 + x43*(x34*xi_0 - x46*xi_1) + x48 + x64
-    dc85 = x34*x43
-    dc86 = -x0*xi_3 + x27*xi_0 + x45
-    dc87 = x34*xi_0 - x46*xi_1
-    dc88 = (0.5)*dc87
-    dx86_0 = -dc19*x35 + dc33*x30 + dc58*dx38_0 - dc79*dx46_0 + dc85 + dc86*dx35_0 + dc88*dx42_0 + dx28_0*x38 - dx40_0*x85 + dx45_0*x35 + dx61_0*x38 + dx64_0 - dx85_0*x41 + x27*x35
-    dx86_1 = -dc40 - dc50*x35 - dc58*dx37_1 - dc79*dx39_1 + dc86*dx35_1 + (0.5)*dc87*dx42_1 + dx28_1*x38 + dx34_1*x43*xi_0 - dx37_1*x35 - dx39_1*x85 + dx61_1*x38 + dx64_1 - dx85_1*x41
-    dx86_2 = -dc14*x35 - dc33*x32 + dc58*dx38_2 - dc79*dx46_2 + dc86*dx35_2 + dc88*dx42_2 + dx28_2*x38 - dx41_2*x85 + dx45_2*x35 + dx61_2*x38 + dx64_2 - dx85_2*x41
-    dc89 = x35*x44
-    dc90 = x0*x35
-    dx86_3 = -dc20*x35 + dc33*dx33_3 + dc58*dx38_3 + dc89 - dc90 - dx40_3*x85 + 0.5
-    dx86_4 = -dc58*dx37_4 - dc79*dx39_4 - dx37_4*x35 - dx39_4*x85 + dx64_4
-    dc91 = dc79*x44
-    dx86_5 = -dc22*x35 + dc33*dx31_5 + dc58*dx38_5 + dc91 - dx40_5*x85 + dx64_5
-    x87 = (0.5)*xi_4
-    x88 = x28*xi_2*xi_3 + x80*xi_5
-    dx88_0 = dc16*dx28_0 + dx80_0*xi_5
-    dx88_1 = dc16*dx28_1 + dx80_1*xi_5
-    dx88_2 = dc16*dx28_2 + dc66 + dx80_2*xi_5
-    dx88_3 = dc55
-    x89 = x28*x78 + x35*x75 + x35*(x2*xi_4 + x77) + x43*(-x72*xi_1 + x76*xi_0) + x61*x78 + x70*x79 - x87 + x88
-    dc92 = x43*x76
-    dc93 = x2*xi_4 + x75 + x77
-    dc94 = -0.5*x72*xi_1 + (0.5)*x76*xi_0
-    dx89_0 = -dc33*dx67_0 + dc46*x35 + dc58*dx73_0 + dc79*dx71_0 + dc92 + dc93*dx35_0 + dc94*dx42_0 + dx28_0*x78 + dx61_0*x78 - dx67_0*x79 + dx73_0*x35 + dx79_0*x70 + dx88_0
-    dx89_1 = dc33*dx76_1 + dc58*dx78_1 - dc71 + dc79*dx31_1 + dc93*dx35_1 + dc94*dx42_1 + dx28_1*x78 + dx61_1*x78 - dx69_1*x79 + dx75_1*x35 + dx77_1*x35 + dx79_1*x70 + dx88_1
-    dx89_2 = dc33*dx76_2 + dc58*dx77_2 - dc79*dx54_2 + dc93*dx35_2 + dc94*dx42_2 + dx28_2*x78 + dx61_2*x78 + dx70_2*x79 + dx75_2*x35 + dx77_2*x35 + dx79_2*x70 + dx88_2
-    dx89_3 = -dc33*dx67_3 + dc58*dx73_3 - dx67_3*x79 + dx73_3*x35 + dx88_3
-    dc95 = dc79*dx54_4
-    dx89_4 = dc58*dx77_4 + dc73 - dc74 - dc95 - dx69_4*x79 + dx77_4*x35 - 0.5
-    dx89_5 = dc58*dx77_5 + dc72 + dc79*dx31_5 - dx69_5*x79 + dx77_5*x35
-    x90 = x17*x86 + x22*x84 + x89*x9
-    dx90_0 = dx13_0*x86 + dx15_0*x84 + dx84_0*x22 + dx86_0*x17 + dx89_0*x9 + dx9_0*x89
-    dx90_1 = dx13_1*x86 + dx22_1*x84 + dx84_1*x22 + dx86_1*x17 + dx89_1*x9 + dx9_1*x89
-    dx90_2 = dx15_2*x84 + dx17_2*x86 + dx84_2*x22 + dx86_2*x17 + dx89_2*x9 + dx9_2*x89
-    dx90_3 = dx84_3*x22 + dx86_3*x17 + dx89_3*x9
-    dx90_4 = dx84_4*x22 + dx86_4*x17 + dx89_4*x9
-    dx90_5 = dx84_5*x22 + dx86_5*x17 + dx89_5*x9
-    x91 = x29*x68 + x35*x71 + x35*x72 + x43*(-x70*xi_2 + x78*xi_1) + x43*(x75*xi_1 - x76*xi_2)
-    dc96 = 2*x68
-    dc97 = x71 + x72
-    dc98 = -0.5*x70*xi_2 + (0.5)*x75*xi_1 - 0.5*x76*xi_2 + (0.5)*x78*xi_1
-    dx91_0 = dc38*dx67_0 + dc83*dx73_0 + dc96*dx28_0 + dc97*dx35_0 + dc98*dx42_0
-    dx91_1 = dc37*dx69_1 - dc37*dx76_1 + dc67 + dc79*dx75_1 + dc79*dx78_1 - dc82 + dc96*dx28_1 + dc97*dx35_1 + dc98*dx42_1 + x43*x78
-    dx91_2 = -dc37*dx70_2 - dc37*dx76_2 + dc41 + dc79*dx75_2 + dc79*dx77_2 - dc92 + dc96*dx28_2 + dc97*dx35_2 + dc98*dx42_2 - x43*x70
-    dx91_3 = dc38*dx67_3 + dc83*dx73_3
-    dx91_4 = dc37*dx69_4 + dc79*dx77_4 - dc79*x74 - dc84
-    dx91_5 = dc37*dx69_5 - dc37*x74 - dc43 + dc79*dx77_5
-    x92 = x28*x41 + x35*x46 + x35*(x0*xi_5 + x40) + x38*x85 + x41*x61 + x43*(-x34*xi_2 + x45*xi_1) - x66 + x81
-    dc99 = x0*xi_5 + x40 + x46
-    dc100 = -0.5*x34*xi_2 + (0.5)*x45*xi_1
-    dx92_0 = dc100*dx42_0 - dc37*x30 + dc58*dx40_0 + dc79*dx45_0 + dc99*dx35_0 + dx28_0*x41 + dx38_0*x85 + dx40_0*x35 + dx46_0*x35 + dx61_0*x41 + dx81_0 + dx85_0*x38
-    dx92_1 = dc100*dx42_1 + dc32 - dc37*dx34_1 + dc58*dx39_1 + dc65*x35 - dc79*dx37_1 + dc99*dx35_1 + dx28_1*x41 - dx37_1*x85 + dx39_1*x35 + dx61_1*x41 + dx81_1 + dx85_1*x38
-    dx92_2 = dc100*dx42_2 + dc37*x32 + dc58*dx41_2 + dc79*dx45_2 - dc85 + dc99*dx35_2 + dx28_2*x41 + dx38_2*x85 + dx40_2*x35 + dx46_2*x35 + dx61_2*x41 + dx81_2 + dx85_2*x38
-    dx92_3 = -dc37*dx33_3 + dc58*dx40_3 + dc91 + dx38_3*x85 + dx40_3*x35 + dx81_3
-    dx92_4 = dc58*dx39_4 - dc79*dx37_4 - dx37_4*x85 + dx39_4*x35 + x80
-    dx92_5 = dc58*dx40_5 - dc75 - dc89 + dc90 + dx38_5*x85 + dx40_5*x35 - 0.5
-    x93 = x28*x62 + x35*x59 + x35*(-x1*xi_4 + x50*xi_1) + x43*(x56*xi_1 - x60*xi_2) - x52*x63 + x61*x62 + x87 + x88
-    dc101 = -x1*xi_4 + x50*xi_1 + x59
-    dc102 = x56*xi_1 - x60*xi_2
-    dc103 = (0.5)*dc102
-    dx93_0 = dc101*dx35_0 + dc103*dx42_0 - dc37*dx60_0 - dc49*x35 + dc58*dx62_0 - dc79*x53 + dx28_0*x62 - dx52_0*x63 + dx59_0*x35 + dx61_0*x62 - dx63_0*x52 + dx88_0
-    dx93_1 = dc101*dx35_1 + dc103*dx42_1 - dc37*dx60_1 - dc47*x35 + dc57 + dc58*dx62_1 - dc79*dx33_1 + dx28_1*x62 + dx51_1*x63 + dx59_1*x35 + dx61_1*x62 - dx63_1*x52 + dx88_1 + x35*x50
-    dx93_2 = dc101*dx35_2 + (0.5)*dc102*dx42_2 - dc37*dx49_2 - dc58*dx57_2 - dc64*x35 - dc76 - dc79*dx55_2 + dx28_2*x62 - dx49_2*x63 - dx57_2*x35 + dx61_2*x62 - dx63_2*x52 + dx88_2
-    dx93_3 = -dc15*x35 + dc58*dx62_3 + dc63 - dc79*dx33_3 + dx51_3*x63 + dx88_3
-    dx93_4 = -dc52*x35 + dc58*dx62_4 + dc62 - dc95 + dx51_4*x63
-    dx93_5 = -dc37*dx49_5 - dc58*dx57_5 - dx49_5*x63 - dx57_5*x35 + x80
-    x94 = x17*x92 + x22*x93 + x9*x91
-    dx94_0 = dx13_0*x92 + dx15_0*x93 + dx91_0*x9 + dx92_0*x17 + dx93_0*x22 + dx9_0*x91
-    dx94_1 = dx13_1*x92 + dx22_1*x93 + dx91_1*x9 + dx92_1*x17 + dx93_1*x22 + dx9_1*x91
-    dx94_2 = dx15_2*x93 + dx17_2*x92 + dx91_2*x9 + dx92_2*x17 + dx93_2*x22 + dx9_2*x91
-    dx94_3 = dx91_3*x9 + dx92_3*x17 + dx93_3*x22
-    dx94_4 = dx91_4*x9 + dx92_4*x17 + dx93_4*x22
-    dx94_5 = dx91_5*x9 + dx92_5*x17 + dx93_5*x22
-    x95 = x14*x82 + x19*x47 + x23*x65
-    dx95_0 = dx13_0*x82 + dx19_0*x47 + dx23_0*x65 + dx47_0*x19 + dx65_0*x23 + dx82_0*x14
-    dx95_1 = dx13_1*x82 + dx19_1*x47 + dx23_1*x65 + dx47_1*x19 + dx65_1*x23 + dx82_1*x14
-    dx95_2 = dx14_2*x82 + dx19_2*x47 + dx23_2*x65 + dx47_2*x19 + dx65_2*x23 + dx82_2*x14
-    dx95_3 = dx47_3*x19 + dx65_3*x23 + dx82_3*x14
-    dx95_4 = dx47_4*x19 + dx65_4*x23 + dx82_4*x14
-    dx95_5 = dx47_5*x19 + dx65_5*x23 + dx82_5*x14
-    x96 = x14*x89 + x19*x86 + x23*x84
-    dx96_0 = dx13_0*x89 + dx19_0*x86 + dx23_0*x84 + dx84_0*x23 + dx86_0*x19 + dx89_0*x14
-    dx96_1 = dx13_1*x89 + dx19_1*x86 + dx23_1*x84 + dx84_1*x23 + dx86_1*x19 + dx89_1*x14
-    dx96_2 = dx14_2*x89 + dx19_2*x86 + dx23_2*x84 + dx84_2*x23 + dx86_2*x19 + dx89_2*x14
-    dx96_3 = dx84_3*x23 + dx86_3*x19 + dx89_3*x14
-    dx96_4 = dx84_4*x23 + dx86_4*x19 + dx89_4*x14
-    dx96_5 = dx84_5*x23 + dx86_5*x19 + dx89_5*x14
-    x97 = x14*x91 + x19*x92 + x23*x93
-    dx97_0 = dx13_0*x91 + dx19_0*x92 + dx23_0*x93 + dx91_0*x14 + dx92_0*x19 + dx93_0*x23
-    dx97_1 = dx13_1*x91 + dx19_1*x92 + dx23_1*x93 + dx91_1*x14 + dx92_1*x19 + dx93_1*x23
-    dx97_2 = dx14_2*x91 + dx19_2*x92 + dx23_2*x93 + dx91_2*x14 + dx92_2*x19 + dx93_2*x23
-    dx97_3 = dx91_3*x14 + dx92_3*x19 + dx93_3*x23
-    dx97_4 = dx91_4*x14 + dx92_4*x19 + dx93_4*x23
-    dx97_5 = dx91_5*x14 + dx92_5*x19 + dx93_5*x23
-    x98 = x16*x82 + x21*x47 + x24*x65
-    dx98_0 = dx15_0*x82 + dx21_0*x47 + dx24_0*x65 + dx47_0*x21 + dx65_0*x24 + dx82_0*x16
-    dx98_1 = dx16_1*x82 + dx21_1*x47 + dx24_1*x65 + dx47_1*x21 + dx65_1*x24 + dx82_1*x16
-    dx98_2 = dx15_2*x82 + dx21_2*x47 + dx24_2*x65 + dx47_2*x21 + dx65_2*x24 + dx82_2*x16
-    dx98_3 = dx47_3*x21 + dx65_3*x24 + dx82_3*x16
-    dx98_4 = dx47_4*x21 + dx65_4*x24 + dx82_4*x16
-    dx98_5 = dx47_5*x21 + dx65_5*x24 + dx82_5*x16
-    x99 = x16*x89 + x21*x86 + x24*x84
-    dx99_0 = dx15_0*x89 + dx21_0*x86 + dx24_0*x84 + dx84_0*x24 + dx86_0*x21 + dx89_0*x16
-    dx99_1 = dx16_1*x89 + dx21_1*x86 + dx24_1*x84 + dx84_1*x24 + dx86_1*x21 + dx89_1*x16
-    dx99_2 = dx15_2*x89 + dx21_2*x86 + dx24_2*x84 + dx84_2*x24 + dx86_2*x21 + dx89_2*x16
-    dx99_3 = dx84_3*x24 + dx86_3*x21 + dx89_3*x16
-    dx99_4 = dx84_4*x24 + dx86_4*x21 + dx89_4*x16
-    dx99_5 = dx84_5*x24 + dx86_5*x21 + dx89_5*x16
-    x100 = x16*x91 + x21*x92 + x24*x93
-    dx100_0 = dx15_0*x91 + dx21_0*x92 + dx24_0*x93 + dx91_0*x16 + dx92_0*x21 + dx93_0*x24
-    dx100_1 = dx16_1*x91 + dx21_1*x92 + dx24_1*x93 + dx91_1*x16 + dx92_1*x21 + dx93_1*x24
-    dx100_2 = dx15_2*x91 + dx21_2*x92 + dx24_2*x93 + dx91_2*x16 + dx92_2*x21 + dx93_2*x24
-    dx100_3 = dx91_3*x16 + dx92_3*x21 + dx93_3*x24
-    dx100_4 = dx91_4*x16 + dx92_4*x21 + dx93_4*x24
-    dx100_5 = dx91_5*x16 + dx92_5*x21 + dx93_5*x24
+    dx22_0 = dc12*dx4_0 - 0.5
+    dx22_1 = dc12*dx4_1 + dc9*xi_2
+    dx22_2 = dc10 + dc12*dx4_2
+    x23 = x17 + x7
+    dx23_0 = dx17_0 + dx7_0
+    dx23_1 = dx17_1 + dx7_1
+    dx23_2 = dx17_2 + dx7_2
+    x24 = xi_1*xi_4
+    x25 = numpy.where(numpy.less(x3, 1.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(8.2206352466243295e-18*x3 - 2.8114572543455206e-15) + 7.6471637318198164e-13) - 1.6059043836821613e-10) + 2.505210838544172e-8) - 2.7557319223985893e-6) + 0.00019841269841269841) - 0.0083333333333333332) + 0.16666666666666666, (numpy.where(numpy.less(x3, 1.0), 1.0, numpy.sqrt(x3)) - numpy.sin(numpy.where(numpy.less(x3, 1.0), 1.0, numpy.sqrt(x3))))*numpy.where(numpy.less(x3, 1.0), 1.0, 1.0/(x3*numpy.sqrt(x3))))
+    dc13 = 2*numpy.where(numpy.less(x3, 4.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(8.8244455617243787e-46 - 5.6796905715705686e-49*x3) - 1.2351282304560222e-42) + 1.5484148733811025e-39) - 1.7274503431157927e-36) + 1.7025750581749252e-33) - 1.4702951752382032e-30) + 1.1020427836554655e-27) - 7.0916453128229206e-25) + 3.8681701706306839e-22) - 1.7615646957052136e-19) + 6.5765081972994636e-17) - 1.9680200780418645e-14) + 4.5882982390918896e-12) - 8.0295219184108074e-10) + 1.0020843354176688e-7) - 8.2671957671957678e-6) + 0.00039682539682539683) - 0.0083333333333333332, (0.5)*((1 - numpy.cos(numpy.where(numpy.less(x3, 4.0), 2.0, numpy.sqrt(x3))))*numpy.where(numpy.less(x3, 4.0), 2.0, numpy.sqrt(x3)) - 3*numpy.where(numpy.less(x3, 4.0), 2.0, numpy.sqrt(x3)) + 3*numpy.sin(numpy.where(numpy.less(x3, 4.0), 2.0, numpy.sqrt(x3))))*numpy.where(numpy.less(x3, 4.0), 0.03125, 1.0/((x3*x3)*numpy.sqrt(x3))))
+    dx25_0 = dc13*xi_0
+    dx25_1 = dc13*xi_1
+    dx25_2 = dc13*xi_2
+    x26 = 2*x25
+    x27 = xi_0*xi_3
+    x28 = xi_2*xi_5
+    x29 = x24 + x27 + x28
+    x30 = -x29*numpy.where(numpy.less(x3, 1.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(1.4797143443923793e-16*x3 - 4.498331606952833e-14) + 1.0706029224547743e-11) - 1.9270852604185937e-9) + 2.5052108385441718e-7) - 2.2045855379188714e-5) + 0.0011904761904761906) - 0.033333333333333333) + 0.33333333333333331, (-numpy.where(numpy.less(x3, 1.0), 1.0, numpy.sqrt(x3))*numpy.cos(numpy.where(numpy.less(x3, 1.0), 1.0, numpy.sqrt(x3))) + numpy.sin(numpy.where(numpy.less(x3, 1.0), 1.0, numpy.sqrt(x3))))*numpy.where(numpy.less(x3, 1.0), 1.0, 1.0/(x3*numpy.sqrt(x3))))
+    dc14 = numpy.where(numpy.less(x3, 1.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(1.4797143443923793e-16*x3 - 4.498331606952833e-14) + 1.0706029224547743e-11) - 1.9270852604185937e-9) + 2.5052108385441718e-7) - 2.2045855379188714e-5) + 0.0011904761904761906) - 0.033333333333333333) + 0.33333333333333331, (-numpy.where(numpy.less(x3, 1.0), 1.0, numpy.sqrt(x3))*numpy.cos(numpy.where(numpy.less(x3, 1.0), 1.0, numpy.sqrt(x3))) + numpy.sin(numpy.where(numpy.less(x3, 1.0), 1.0, numpy.sqrt(x3))))*numpy.where(numpy.less(x3, 1.0), 1.0, 1.0/(x3*numpy.sqrt(x3))))
+    dc15 = x29*numpy.where(numpy.less(x3, 2.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(8.5099743753875046e-21*x3 - 3.5231293914104271e-18) + 1.1837714755139035e-15) - 3.1488321248669832e-13) + 6.4236175347286453e-11) - 9.6354263020929689e-9) + 1.0020843354176687e-6) - 6.6137566137566142e-5) + 0.0023809523809523812) - 0.033333333333333333, (0.5)*(3*numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3))*numpy.cos(numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3))) + numpy.where(numpy.less(x3, 2.0), 2.0, x3)*numpy.sin(numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3))) - 3*numpy.sin(numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3))))*numpy.where(numpy.less(x3, 2.0), 0.17677669529663688, 1.0/((x3*x3)*numpy.sqrt(x3))))
+    dc16 = 2*dc15
+    dx30_0 = -dc14*xi_3 - dc16*xi_0
+    dc17 = 2*xi_1
+    dx30_1 = -dc14*xi_4 - dc15*dc17
+    dx30_2 = -dc14*xi_5 - dc16*xi_2
+    dx30_3 = -dc14*xi_0
+    dx30_4 = -dc14*xi_1
+    dx30_5 = -dc14*xi_2
+    x31 = numpy.where(numpy.less(x3, 4.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(1.7648891123448757e-45 - 1.1359381143141137e-48*x3) - 2.4702564609120444e-42) + 3.096829746762205e-39) - 3.4549006862315854e-36) + 3.4051501163498504e-33) - 2.9405903504764064e-30) + 2.204085567310931e-27) - 1.4183290625645841e-24) + 7.7363403412613678e-22) - 3.5231293914104271e-19) + 1.3153016394598927e-16) - 3.936040156083729e-14) + 9.1765964781837793e-12) - 1.6059043836821615e-9) + 2.0041686708353376e-7) - 1.6534391534391536e-5) + 0.00079365079365079365) - 0.016666666666666666, (-numpy.where(numpy.less(x3, 4.0), 2.0, numpy.sqrt(x3))*numpy.cos(numpy.where(numpy.less(x3, 4.0), 2.0, numpy.sqrt(x3))) - 2*numpy.where(numpy.less(x3, 4.0), 2.0, numpy.sqrt(x3)) + 3*numpy.sin(numpy.where(numpy.less(x3, 4.0), 2.0, numpy.sqrt(x3))))*numpy.where(numpy.less(x3, 4.0), 0.03125, 1.0/((x3*x3)*numpy.sqrt(x3))))
+    dc18 = 2*numpy.where(numpy.less(x3, 4.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(1.2579602594840682e-50*x3 - 2.0446886057654048e-47) + 3.0003114909862885e-44) - 3.952410337459271e-41) + 4.6452446201433075e-38) - 4.8368609607242191e-35) + 4.4266951512548055e-32) - 3.5287084205716874e-29) + 2.4244941240420241e-26) - 1.4183290625645841e-23) + 6.962706307135231e-21) - 2.8185035131283417e-18) + 9.2071114762192488e-16) - 2.3616240936502375e-13) + 4.5882982390918898e-11) - 6.423617534728646e-9) + 6.0125060125060129e-7) - 3.3068783068783071e-5) + 0.00079365079365079365, (0.5)*((numpy.where(numpy.less(x3, 4.0), 2.0, numpy.sqrt(x3))*numpy.sin(numpy.where(numpy.less(x3, 4.0), 2.0, numpy.sqrt(x3))) + 2*numpy.cos(numpy.where(numpy.less(x3, 4.0), 2.0, numpy.sqrt(x3))) - 2)*numpy.where(numpy.less(x3, 4.0), 2.0, numpy.sqrt(x3)) + 5*numpy.where(numpy.less(x3, 4.0), 2.0, numpy.sqrt(x3))*numpy.cos(numpy.where(numpy.less(x3, 4.0), 2.0, numpy.sqrt(x3))) + 10*numpy.where(numpy.less(x3, 4.0), 2.0, numpy.sqrt(x3)) - 15*numpy.sin(numpy.where(numpy.less(x3, 4.0), 2.0, numpy.sqrt(x3))))*numpy.where(numpy.less(x3, 4.0), 0.0078125, 1.0/((x3*x3*x3)*numpy.sqrt(x3))))
+    dx31_0 = dc18*xi_0
+    dx31_1 = dc18*xi_1
+    dx31_2 = dc18*xi_2
+    x32 = x29*x31
+    dc19 = dx31_0*x29
+    dc20 = x31*xi_3
+    dx32_0 = dc19 + dc20
+    dc21 = dx31_1*x29
+    dc22 = x31*xi_4
+    dx32_1 = dc21 + dc22
+    dc23 = dx31_2*x29
+    dc24 = x31*xi_5
+    dx32_2 = dc23 + dc24
+    dx32_3 = x31*xi_0
+    dc25 = x31*xi_1
+    dx32_4 = dc25
+    dc26 = x31*xi_2
+    dx32_5 = dc26
+    x33 = x0*x32 + x24*x26 + x30
+    dc27 = 2*x24
+    dx33_0 = dc27*dx25_0 + dx30_0 + dx32_0*x0
+    dx33_1 = dc17*x32 + dc27*dx25_1 + dx30_1 + dx32_1*x0 + x26*xi_4
+    dx33_2 = dc27*dx25_2 + dx30_2 + dx32_2*x0
+    dx33_3 = dx30_3 + dx32_3*x0
+    dx33_4 = dx30_4 + dx32_4*x0 + x26*xi_1
+    dx33_5 = dx30_5 + dx32_5*x0
+    x34 = xi_1*xi_5 + xi_2*xi_4
+    x35 = numpy.where(numpy.less(x3, 1.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(1.5619206968586225e-16*x3 - 4.7794773323873853e-14) + 1.1470745597729725e-11) - 2.08767569878681e-9) + 2.7557319223985888e-7) - 2.4801587301587302e-5) + 0.0013888888888888889) - 0.041666666666666664) + 0.5, (1 - numpy.cos(numpy.where(numpy.less(x3, 1.0), 1.0, numpy.sqrt(x3))))*numpy.where(numpy.less(x3, 1.0), 1.0, 1.0/x3))
+    dc28 = numpy.where(numpy.less(x3, 2.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(8.8967913924505729e-21*x3 - 3.6992858609809485e-18) + 1.249536557486898e-15) - 3.3456341326711696e-13) + 6.882447358637835e-11) - 1.043837849393405e-8) + 1.1022927689594355e-6) - 7.4404761904761911e-5) + 0.0027777777777777779) - 0.041666666666666664, (0.5)*(numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3))*numpy.sin(numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3))) + 2*numpy.cos(numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3))) - 2)*numpy.where(numpy.less(x3, 2.0), 0.25, 1.0/(x3*x3)))
+    dc29 = 2*dc28
+    dx35_0 = dc29*xi_0
+    dx35_1 = dc17*dc28
+    dx35_2 = dc29*xi_2
+    x36 = x29*numpy.where(numpy.less(x3, 2.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(1.7793582784901146e-20*x3 - 7.398571721961897e-18) + 2.499073114973796e-15) - 6.6912682653423392e-13) + 1.376489471727567e-10) - 2.08767569878681e-8) + 2.2045855379188711e-6) - 0.00014880952380952382) + 0.0055555555555555558) - 0.083333333333333329, (numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3))*numpy.sin(numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3))) + 2*numpy.cos(numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3))) - 2)*numpy.where(numpy.less(x3, 2.0), 0.25, 1.0/(x3*x3)))
+    dc30 = numpy.where(numpy.less(x3, 2.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(1.7793582784901146e-20*x3 - 7.398571721961897e-18) + 2.499073114973796e-15) - 6.6912682653423392e-13) + 1.376489471727567e-10) - 2.08767569878681e-8) + 2.2045855379188711e-6) - 0.00014880952380952382) + 0.0055555555555555558) - 0.083333333333333329, (numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3))*numpy.sin(numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3))) + 2*numpy.cos(numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3))) - 2)*numpy.where(numpy.less(x3, 2.0), 0.25, 1.0/(x3*x3)))
+    dc31 = x29*numpy.where(numpy.less(x3, 2.0), x3*(x3*(x3*(x3*(x3*(x3*(x3*(x3*(1.6014224506411032e-19 - 3.5458226564114604e-22*x3) - 5.9188573775695176e-17) + 1.7493511804816575e-14) - 4.0147609592054033e-12) + 6.8824473586378345e-10) - 8.3507027951472401e-8) + 6.613756613756614e-6) - 0.00029761904761904765) + 0.0055555555555555558, (0.5)*((numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3))*numpy.cos(numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3))) - numpy.sin(numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3))))*numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3)) - 4*numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3))*numpy.sin(numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3))) - 8*numpy.cos(numpy.where(numpy.less(x3, 2.0), 1.414213562373095, numpy.sqrt(x3))) + 8)*numpy.where(numpy.less(x3, 2.0), 0.125, 1.0/(x3*x3*x3)))
+    dc32 = 2*dc31
+    dx36_0 = dc30*xi_3 + dc32*xi_0
+    dx36_1 = dc17*dc31 + dc30*xi_4
+    dx36_2 = dc30*xi_5 + dc32*xi_2
+    dx36_3 = dc30*xi_0
+    dx36_4 = dc30*xi_1
+    dx36_5 = dc30*xi_2
+    x37 = x35*xi_3 + x36*xi_0
+    dx37_0 = dx35_0*xi_3 + dx36_0*xi_0 + x36
+    dx37_1 = dx35_1*xi_3 + dx36_1*xi_0
+    dx37_2 = dx35_2*xi_3 + dx36_2*xi_0
+    dx37_3 = dx36_3*xi_0 + x35
+    dx37_4 = dx36_4*xi_0
+    dx37_5 = dx36_5*xi_0
+    x38 = x25*x34 + x29*x31*xi_1*xi_2 - x37
+    dc33 = dx25_0*x34
+    dx38_0 = dc11*dc19 + dc11*dc20 + dc33 - dx37_0
+    dc34 = x25*xi_5
+    dc35 = dc34 + dx25_1*x34
+    dx38_1 = dc11*dc21 + dc11*dc22 + dc26*x29 + dc35 - dx37_1
+    dc36 = dx25_2*x34
+    dc37 = x25*xi_4
+    dx38_2 = dc11*dc23 + dc11*dc24 + dc25*x29 + dc36 + dc37 - dx37_2
+    dx38_3 = -dx37_3 + x31*xi_0*xi_1*xi_2
+    dc38 = x25*xi_2
+    dx38_4 = dc26*(xi_1*xi_1) + dc38 - dx37_4
+    dc39 = x25*xi_1
+    dx38_5 = dc25*(xi_2*xi_2) + dc39 - dx37_5
+    x39 = x35*xi_5
+    dx39_0 = dx35_0*xi_5
+    dx39_1 = dx35_1*xi_5
+    dx39_2 = dx35_2*xi_5
+    x40 = x36*xi_2
+    dx40_0 = dx36_0*xi_2
+    dx40_1 = dx36_1*xi_2
+    dx40_2 = dx36_2*xi_2 + x36
+    dx40_3 = dx36_3*xi_2
+    dx40_4 = dx36_4*xi_2
+    dx40_5 = dx36_5*xi_2
+    x41 = x32*xi_1
+    dx41_0 = dx32_0*xi_1
+    dx41_1 = dx32_1*xi_1 + x32
+    dx41_2 = dx32_2*xi_1
+    dx41_3 = dx32_3*xi_1
+    dx41_4 = dx32_4*xi_1
+    dx41_5 = dx32_5*xi_1
+    x42 = x25*(xi_0*xi_4 + xi_1*xi_3) + x41*xi_0
+    dc40 = xi_0*xi_4 + xi_1*xi_3
+    dc41 = dc37 + x41
+    dx42_0 = dc40*dx25_0 + dc41 + dx41_0*xi_0
+    dc42 = x25*xi_3
+    dx42_1 = dc40*dx25_1 + dc42 + dx41_1*xi_0
+    dx42_2 = dc40*dx25_2 + dx41_2*xi_0
+    dx42_3 = dc39 + dx41_3*xi_0
+    dc43 = x25*xi_0
+    dx42_4 = dc43 + dx41_4*xi_0
+    dx42_5 = dx41_5*xi_0
+    x43 = x39 + x40 + x42
+    dc44 = dx39_0 + dx40_0
+    dx43_0 = dc44 + dx42_0
+    dc45 = dx39_1 + dx40_1
+    dx43_1 = dc45 + dx42_1
+    dc46 = dx39_2 + dx40_2
+    dx43_2 = dc46 + dx42_2
+    dx43_3 = dx40_3 + dx42_3
+    dx43_4 = dx40_4 + dx42_4
+    dc47 = dx40_5 + x35
+    dx43_5 = dc47 + dx42_5
+    x44 = x16*x33 + x21*x38 + x43*x8
+    dx44_0 = dx12_0*x33 + dx14_0*x38 + dx33_0*x16 + dx38_0*x21 + dx43_0*x8 + dx8_0*x43
+    dx44_1 = dx12_1*x33 + dx21_1*x38 + dx33_1*x16 + dx38_1*x21 + dx43_1*x8 + dx8_1*x43
+    dx44_2 = dx14_2*x38 + dx16_2*x33 + dx33_2*x16 + dx38_2*x21 + dx43_2*x8 + dx8_2*x43
+    dx44_3 = dx33_3*x16 + dx38_3*x21 + dx43_3*x8
+    dx44_4 = dx33_4*x16 + dx38_4*x21 + dx43_4*x8
+    dx44_5 = dx33_5*x16 + dx38_5*x21 + dx43_5*x8
+    x45 = x2*x32 + x26*x28 + x30
+    dc48 = 2*x28
+    dx45_0 = dc48*dx25_0 + dx30_0 + dx32_0*x2
+    dx45_1 = dc48*dx25_1 + dx30_1 + dx32_1*x2
+    dc49 = x32*xi_2
+    dx45_2 = dc48*dx25_2 + 2*dc49 + dx30_2 + dx32_2*x2 + x26*xi_5
+    dx45_3 = dx30_3 + dx32_3*x2
+    dx45_4 = dx30_4 + dx32_4*x2
+    dx45_5 = dx30_5 + dx32_5*x2 + x26*xi_2
+    x46 = x25*x34 + x37 + x41*xi_2
+    dx46_0 = dc33 + dx37_0 + dx41_0*xi_2
+    dx46_1 = dc35 + dx37_1 + dx41_1*xi_2
+    dx46_2 = dc36 + dc41 + dx37_2 + dx41_2*xi_2
+    dx46_3 = dx37_3 + dx41_3*xi_2
+    dx46_4 = dc38 + dx37_4 + dx41_4*xi_2
+    dx46_5 = dc39 + dx37_5 + dx41_5*xi_2
+    x47 = x35*xi_4
+    dx47_0 = dx35_0*xi_4
+    dx47_1 = dx35_1*xi_4
+    dx47_2 = dx35_2*xi_4
+    x48 = x36*xi_1
+    dx48_0 = dx36_0*xi_1
+    dx48_1 = dx36_1*xi_1 + x36
+    dx48_2 = dx36_2*xi_1
+    dx48_3 = dx36_3*xi_1
+    dx48_4 = dx36_4*xi_1
+    dx48_5 = dx36_5*xi_1
+    x49 = x25*(xi_0*xi_5 + xi_2*xi_3) + x32*xi_0*xi_2
+    dc50 = xi_0*xi_2
+    dc51 = xi_0*xi_5 + xi_2*xi_3
+    dx49_0 = dc34 + dc49 + dc50*dx32_0 + dc51*dx25_0
+    dx49_1 = dc50*dx32_1 + dc51*dx25_1
+    dc52 = x32*xi_0
+    dx49_2 = dc42 + dc50*dx32_2 + dc51*dx25_2 + dc52
+    dx49_3 = dc38 + dc50*dx32_3
+    dx49_4 = dc50*dx32_4
+    dx49_5 = dc43 + dc50*dx32_5
+    x50 = -x47 - x48 + x49
+    dc53 = dx47_0 + dx48_0
+    dx50_0 = -dc53 + dx49_0
+    dc54 = dx47_1 + dx48_1
+    dx50_1 = -dc54 + dx49_1
+    dc55 = dx47_2 + dx48_2
+    dx50_2 = -dc55 + dx49_2
+    dx50_3 = -dx48_3 + dx49_3
+    dc56 = dx48_4 + x35
+    dx50_4 = -dc56 + dx49_4
+    dx50_5 = -dx48_5 + dx49_5
+    x51 = x16*x46 + x21*x45 + x50*x8
+    dx51_0 = dx12_0*x46 + dx14_0*x45 + dx45_0*x21 + dx46_0*x16 + dx50_0*x8 + dx8_0*x50
+    dx51_1 = dx12_1*x46 + dx21_1*x45 + dx45_1*x21 + dx46_1*x16 + dx50_1*x8 + dx8_1*x50
+    dx51_2 = dx14_2*x45 + dx16_2*x46 + dx45_2*x21 + dx46_2*x16 + dx50_2*x8 + dx8_2*x50
+    dx51_3 = dx45_3*x21 + dx46_3*x16 + dx50_3*x8
+    dx51_4 = dx45_4*x21 + dx46_4*x16 + dx50_4*x8
+    dx51_5 = dx45_5*x21 + dx46_5*x16 + dx50_5*x8
+    x52 = x1*x32 + x26*x27 + x30
+    dc57 = 2*x27
+    dx52_0 = 2*dc52 + dc57*dx25_0 + dx30_0 + dx32_0*x1 + x26*xi_3
+    dx52_1 = dc57*dx25_1 + dx30_1 + dx32_1*x1
+    dx52_2 = dc57*dx25_2 + dx30_2 + dx32_2*x1
+    dx52_3 = dx30_3 + dx32_3*x1 + x26*xi_0
+    dx52_4 = dx30_4 + dx32_4*x1
+    dx52_5 = dx30_5 + dx32_5*x1
+    x53 = x47 + x48 + x49
+    dx53_0 = dc53 + dx49_0
+    dx53_1 = dc54 + dx49_1
+    dx53_2 = dc55 + dx49_2
+    dx53_3 = dx48_3 + dx49_3
+    dx53_4 = dc56 + dx49_4
+    dx53_5 = dx48_5 + dx49_5
+    x54 = -x39 - x40 + x42
+    dx54_0 = -dc44 + dx42_0
+    dx54_1 = -dc45 + dx42_1
+    dx54_2 = -dc46 + dx42_2
+    dx54_3 = -dx40_3 + dx42_3
+    dx54_4 = -dx40_4 + dx42_4
+    dx54_5 = -dc47 + dx42_5
+    x55 = x16*x54 + x21*x53 + x52*x8
+    dx55_0 = dx12_0*x54 + dx14_0*x53 + dx52_0*x8 + dx53_0*x21 + dx54_0*x16 + dx8_0*x52
+    dx55_1 = dx12_1*x54 + dx21_1*x53 + dx52_1*x8 + dx53_1*x21 + dx54_1*x16 + dx8_1*x52
+    dx55_2 = dx14_2*x53 + dx16_2*x54 + dx52_2*x8 + dx53_2*x21 + dx54_2*x16 + dx8_2*x52
+    dx55_3 = dx52_3*x8 + dx53_3*x21 + dx54_3*x16
+    dx55_4 = dx52_4*x8 + dx53_4*x21 + dx54_4*x16
+    dx55_5 = dx52_5*x8 + dx53_5*x21 + dx54_5*x16
+    x56 = x13*x43 + x18*x33 + x22*x38
+    dx56_0 = dx12_0*x43 + dx18_0*x33 + dx22_0*x38 + dx33_0*x18 + dx38_0*x22 + dx43_0*x13
+    dx56_1 = dx12_1*x43 + dx18_1*x33 + dx22_1*x38 + dx33_1*x18 + dx38_1*x22 + dx43_1*x13
+    dx56_2 = dx13_2*x43 + dx18_2*x33 + dx22_2*x38 + dx33_2*x18 + dx38_2*x22 + dx43_2*x13
+    dx56_3 = dx33_3*x18 + dx38_3*x22 + dx43_3*x13
+    dx56_4 = dx33_4*x18 + dx38_4*x22 + dx43_4*x13
+    dx56_5 = dx33_5*x18 + dx38_5*x22 + dx43_5*x13
+    x57 = x13*x50 + x18*x46 + x22*x45
+    dx57_0 = dx12_0*x50 + dx18_0*x46 + dx22_0*x45 + dx45_0*x22 + dx46_0*x18 + dx50_0*x13
+    dx57_1 = dx12_1*x50 + dx18_1*x46 + dx22_1*x45 + dx45_1*x22 + dx46_1*x18 + dx50_1*x13
+    dx57_2 = dx13_2*x50 + dx18_2*x46 + dx22_2*x45 + dx45_2*x22 + dx46_2*x18 + dx50_2*x13
+    dx57_3 = dx45_3*x22 + dx46_3*x18 + dx50_3*x13
+    dx57_4 = dx45_4*x22 + dx46_4*x18 + dx50_4*x13
+    dx57_5 = dx45_5*x22 + dx46_5*x18 + dx50_5*x13
+    x58 = x13*x52 + x18*x54 + x22*x53
+    dx58_0 = dx12_0*x52 + dx18_0*x54 + dx22_0*x53 + dx52_0*x13 + dx53_0*x22 + dx54_0*x18
+    dx58_1 = dx12_1*x52 + dx18_1*x54 + dx22_1*x53 + dx52_1*x13 + dx53_1*x22 + dx54_1*x18
+    dx58_2 = dx13_2*x52 + dx18_2*x54 + dx22_2*x53 + dx52_2*x13 + dx53_2*x22 + dx54_2*x18
+    dx58_3 = dx52_3*x13 + dx53_3*x22 + dx54_3*x18
+    dx58_4 = dx52_4*x13 + dx53_4*x22 + dx54_4*x18
+    dx58_5 = dx52_5*x13 + dx53_5*x22 + dx54_5*x18
+    x59 = x15*x43 + x20*x33 + x23*x38
+    dx59_0 = dx14_0*x43 + dx20_0*x33 + dx23_0*x38 + dx33_0*x20 + dx38_0*x23 + dx43_0*x15
+    dx59_1 = dx15_1*x43 + dx20_1*x33 + dx23_1*x38 + dx33_1*x20 + dx38_1*x23 + dx43_1*x15
+    dx59_2 = dx14_2*x43 + dx20_2*x33 + dx23_2*x38 + dx33_2*x20 + dx38_2*x23 + dx43_2*x15
+    dx59_3 = dx33_3*x20 + dx38_3*x23 + dx43_3*x15
+    dx59_4 = dx33_4*x20 + dx38_4*x23 + dx43_4*x15
+    dx59_5 = dx33_5*x20 + dx38_5*x23 + dx43_5*x15
+    x60 = x15*x50 + x20*x46 + x23*x45
+    dx60_0 = dx14_0*x50 + dx20_0*x46 + dx23_0*x45 + dx45_0*x23 + dx46_0*x20 + dx50_0*x15
+    dx60_1 = dx15_1*x50 + dx20_1*x46 + dx23_1*x45 + dx45_1*x23 + dx46_1*x20 + dx50_1*x15
+    dx60_2 = dx14_2*x50 + dx20_2*x46 + dx23_2*x45 + dx45_2*x23 + dx46_2*x20 + dx50_2*x15
+    dx60_3 = dx45_3*x23 + dx46_3*x20 + dx50_3*x15
+    dx60_4 = dx45_4*x23 + dx46_4*x20 + dx50_4*x15
+    dx60_5 = dx45_5*x23 + dx46_5*x20 + dx50_5*x15
+    x61 = x15*x52 + x20*x54 + x23*x53
+    dx61_0 = dx14_0*x52 + dx20_0*x54 + dx23_0*x53 + dx52_0*x15 + dx53_0*x23 + dx54_0*x20
+    dx61_1 = dx15_1*x52 + dx20_1*x54 + dx23_1*x53 + dx52_1*x15 + dx53_1*x23 + dx54_1*x20
+    dx61_2 = dx14_2*x52 + dx20_2*x54 + dx23_2*x53 + dx52_2*x15 + dx53_2*x23 + dx54_2*x20
+    dx61_3 = dx52_3*x15 + dx53_3*x23 + dx54_3*x20
+    dx61_4 = dx52_4*x15 + dx53_4*x23 + dx54_4*x20
+    dx61_5 = dx52_5*x15 + dx53_5*x23 + dx54_5*x20
     return (
-        x9,
-        x14,
+        x8,
+        x13,
+        x15,
+        0,
+        0,
+        0,
         x16,
+        x18,
+        x20,
         0,
         0,
         0,
-        x17,
-        x19,
         x21,
-        0,
-        0,
-        0,
         x22,
         x23,
-        x24,
         0,
         0,
         0,
-        -x14*x83 - x16*x90 - x9*x94,
-        -x14*x95 - x16*x96 - x9*x97,
-        -x100*x9 - x14*x98 - x16*x99,
-        x9,
-        x14,
+        -x13*x44 - x15*x51 - x55*x8,
+        -x13*x56 - x15*x57 - x58*x8,
+        -x13*x59 - x15*x60 - x61*x8,
+        x8,
+        x13,
+        x15,
+        -x16*x55 - x18*x44 - x20*x51,
+        -x16*x58 - x18*x56 - x20*x57,
+        -x16*x61 - x18*x59 - x20*x60,
         x16,
-        -x17*x94 - x19*x83 - x21*x90,
-        -x17*x97 - x19*x95 - x21*x96,
-        -x100*x17 - x19*x98 - x21*x99,
-        x17,
-        x19,
+        x18,
+        x20,
+        -x21*x55 - x22*x44 - x23*x51,
+        -x21*x58 - x22*x56 - x23*x57,
+        -x21*x61 - x22*x59 - x23*x60,
         x21,
-        -x22*x94 - x23*x83 - x24*x90,
-        -x22*x97 - x23*x95 - x24*x96,
-        -x100*x22 - x23*x98 - x24*x99,
         x22,
         x23,
-        x24,
-        dx9_0,
-        dx9_1,
-        dx9_2,
+        dx8_0,
+        dx8_1,
+        dx8_2,
         0,
         0,
         0,
-        dx13_0,
-        dx13_1,
+        dx12_0,
+        dx12_1,
+        dx13_2,
+        0,
+        0,
+        0,
+        dx14_0,
+        dx15_1,
         dx14_2,
         0,
         0,
         0,
-        dx15_0,
-        dx16_1,
-        dx15_2,
+        0,
+        0,
+        0,
+        0,
+        0,
+        0,
+        0,
+        0,
+        0,
+        0,
+        0,
+        0,
+        0,
+        0,
+        0,
+        0,
+        0,
+        0,
+        dx12_0,
+        dx12_1,
+        dx16_2,
+        0,
+        0,
+        0,
+        dx18_0,
+        dx18_1,
+        dx18_2,
+        0,
+        0,
+        0,
+        dx20_0,
+        dx20_1,
+        dx20_2,
         0,
         0,
         0,
@@ -550,45 +472,15 @@ def _main(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5):
         0,
         0,
         0,
-        dx13_0,
-        dx13_1,
-        dx17_2,
-        0,
-        0,
-        0,
-        dx19_0,
-        dx19_1,
-        dx19_2,
-        0,
-        0,
-        0,
-        dx21_0,
+        dx14_0,
         dx21_1,
-        dx21_2,
+        dx14_2,
         0,
         0,
         0,
-        0,
-        0,
-        0,
-        0,
-        0,
-        0,
-        0,
-        0,
-        0,
-        0,
-        0,
-        0,
-        0,
-        0,
-        0,
-        0,
-        0,
-        0,
-        dx15_0,
+        dx22_0,
         dx22_1,
-        dx15_2,
+        dx22_2,
         0,
         0,
         0,
@@ -598,9 +490,6 @@ def _main(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5):
         0,
         0,
         0,
-        dx24_0,
-        dx24_1,
-        dx24_2,
         0,
         0,
         0,
@@ -619,114 +508,111 @@ def _main(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5):
         0,
         0,
         0,
+        -dx12_0*x44 - dx14_0*x51 - dx44_0*x13 - dx51_0*x15 - dx55_0*x8 - dx8_0*x55,
+        -dx12_1*x44 - dx15_1*x51 - dx44_1*x13 - dx51_1*x15 - dx55_1*x8 - dx8_1*x55,
+        -dx13_2*x44 - dx14_2*x51 - dx44_2*x13 - dx51_2*x15 - dx55_2*x8 - dx8_2*x55,
+        -dx44_3*x13 - dx51_3*x15 - dx55_3*x8,
+        -dx44_4*x13 - dx51_4*x15 - dx55_4*x8,
+        -dx44_5*x13 - dx51_5*x15 - dx55_5*x8,
+        -dx12_0*x56 - dx14_0*x57 - dx56_0*x13 - dx57_0*x15 - dx58_0*x8 - dx8_0*x58,
+        -dx12_1*x56 - dx15_1*x57 - dx56_1*x13 - dx57_1*x15 - dx58_1*x8 - dx8_1*x58,
+        -dx13_2*x56 - dx14_2*x57 - dx56_2*x13 - dx57_2*x15 - dx58_2*x8 - dx8_2*x58,
+        -dx56_3*x13 - dx57_3*x15 - dx58_3*x8,
+        -dx56_4*x13 - dx57_4*x15 - dx58_4*x8,
+        -dx56_5*x13 - dx57_5*x15 - dx58_5*x8,
+        -dx12_0*x59 - dx14_0*x60 - dx59_0*x13 - dx60_0*x15 - dx61_0*x8 - dx8_0*x61,
+        -dx12_1*x59 - dx15_1*x60 - dx59_1*x13 - dx60_1*x15 - dx61_1*x8 - dx8_1*x61,
+        -dx13_2*x59 - dx14_2*x60 - dx59_2*x13 - dx60_2*x15 - dx61_2*x8 - dx8_2*x61,
+        -dx59_3*x13 - dx60_3*x15 - dx61_3*x8,
+        -dx59_4*x13 - dx60_4*x15 - dx61_4*x8,
+        -dx59_5*x13 - dx60_5*x15 - dx61_5*x8,
+        dx8_0,
+        dx8_1,
+        dx8_2,
         0,
         0,
         0,
-        -dx13_0*x83 - dx15_0*x90 - dx83_0*x14 - dx90_0*x16 - dx94_0*x9 - dx9_0*x94,
-        -dx13_1*x83 - dx16_1*x90 - dx83_1*x14 - dx90_1*x16 - dx94_1*x9 - dx9_1*x94,
-        -dx14_2*x83 - dx15_2*x90 - dx83_2*x14 - dx90_2*x16 - dx94_2*x9 - dx9_2*x94,
-        -dx83_3*x14 - dx90_3*x16 - dx94_3*x9,
-        -dx83_4*x14 - dx90_4*x16 - dx94_4*x9,
-        -dx83_5*x14 - dx90_5*x16 - dx94_5*x9,
-        -dx13_0*x95 - dx15_0*x96 - dx95_0*x14 - dx96_0*x16 - dx97_0*x9 - dx9_0*x97,
-        -dx13_1*x95 - dx16_1*x96 - dx95_1*x14 - dx96_1*x16 - dx97_1*x9 - dx9_1*x97,
-        -dx14_2*x95 - dx15_2*x96 - dx95_2*x14 - dx96_2*x16 - dx97_2*x9 - dx9_2*x97,
-        -dx95_3*x14 - dx96_3*x16 - dx97_3*x9,
-        -dx95_4*x14 - dx96_4*x16 - dx97_4*x9,
-        -dx95_5*x14 - dx96_5*x16 - dx97_5*x9,
-        -dx100_0*x9 - dx13_0*x98 - dx15_0*x99 - dx98_0*x14 - dx99_0*x16 - dx9_0*x100,
-        -dx100_1*x9 - dx13_1*x98 - dx16_1*x99 - dx98_1*x14 - dx99_1*x16 - dx9_1*x100,
-        -dx100_2*x9 - dx14_2*x98 - dx15_2*x99 - dx98_2*x14 - dx99_2*x16 - dx9_2*x100,
-        -dx100_3*x9 - dx98_3*x14 - dx99_3*x16,
-        -dx100_4*x9 - dx98_4*x14 - dx99_4*x16,
-        -dx100_5*x9 - dx98_5*x14 - dx99_5*x16,
-        dx9_0,
-        dx9_1,
-        dx9_2,
+        dx12_0,
+        dx12_1,
+        dx13_2,
         0,
         0,
         0,
-        dx13_0,
-        dx13_1,
+        dx14_0,
+        dx15_1,
         dx14_2,
         0,
         0,
         0,
-        dx15_0,
-        dx16_1,
-        dx15_2,
+        -dx12_0*x55 - dx18_0*x44 - dx20_0*x51 - dx44_0*x18 - dx51_0*x20 - dx55_0*x16,
+        -dx12_1*x55 - dx18_1*x44 - dx20_1*x51 - dx44_1*x18 - dx51_1*x20 - dx55_1*x16,
+        -dx16_2*x55 - dx18_2*x44 - dx20_2*x51 - dx44_2*x18 - dx51_2*x20 - dx55_2*x16,
+        -dx44_3*x18 - dx51_3*x20 - dx55_3*x16,
+        -dx44_4*x18 - dx51_4*x20 - dx55_4*x16,
+        -dx44_5*x18 - dx51_5*x20 - dx55_5*x16,
+        -dx12_0*x58 - dx18_0*x56 - dx20_0*x57 - dx56_0*x18 - dx57_0*x20 - dx58_0*x16,
+        -dx12_1*x58 - dx18_1*x56 - dx20_1*x57 - dx56_1*x18 - dx57_1*x20 - dx58_1*x16,
+        -dx16_2*x58 - dx18_2*x56 - dx20_2*x57 - dx56_2*x18 - dx57_2*x20 - dx58_2*x16,
+        -dx56_3*x18 - dx57_3*x20 - dx58_3*x16,
+        -dx56_4*x18 - dx57_4*x20 - dx58_4*x16,
+        -dx56_5*x18 - dx57_5*x20 - dx58_5*x16,
+        -dx12_0*x61 - dx18_0*x59 - dx20_0*x60 - dx59_0*x18 - dx60_0*x20 - dx61_0*x16,
+        -dx12_1*x61 - dx18_1*x59 - dx20_1*x60 - dx59_1*x18 - dx60_1*x20 - dx61_1*x16,
+        -dx16_2*x61 - dx18_2*x59 - dx20_2*x60 - dx59_2*x18 - dx60_2*x20 - dx61_2*x16,
+        -dx59_3*x18 - dx60_3*x20 - dx61_3*x16,
+        -dx59_4*x18 - dx60_4*x20 - dx61_4*x16,
+        -dx59_5*x18 - dx60_5*x20 - dx61_5*x16,
+        dx12_0,
+        dx12_1,
+        dx16_2,
         0,
         0,
         0,
-        -dx13_0*x94 - dx19_0*x83 - dx21_0*x90 - dx83_0*x19 - dx90_0*x21 - dx94_0*x17,
-        -dx13_1*x94 - dx19_1*x83 - dx21_1*x90 - dx83_1*x19 - dx90_1*x21 - dx94_1*x17,
-        -dx17_2*x94 - dx19_2*x83 - dx21_2*x90 - dx83_2*x19 - dx90_2*x21 - dx94_2*x17,
-        -dx83_3*x19 - dx90_3*x21 - dx94_3*x17,
-        -dx83_4*x19 - dx90_4*x21 - dx94_4*x17,
-        -dx83_5*x19 - dx90_5*x21 - dx94_5*x17,
-        -dx13_0*x97 - dx19_0*x95 - dx21_0*x96 - dx95_0*x19 - dx96_0*x21 - dx97_0*x17,
-        -dx13_1*x97 - dx19_1*x95 - dx21_1*x96 - dx95_1*x19 - dx96_1*x21 - dx97_1*x17,
-        -dx17_2*x97 - dx19_2*x95 - dx21_2*x96 - dx95_2*x19 - dx96_2*x21 - dx97_2*x17,
-        -dx95_3*x19 - dx96_3*x21 - dx97_3*x17,
-        -dx95_4*x19 - dx96_4*x21 - dx97_4*x17,
-        -dx95_5*x19 - dx96_5*x21 - dx97_5*x17,
-        -dx100_0*x17 - dx13_0*x100 - dx19_0*x98 - dx21_0*x99 - dx98_0*x19 - dx99_0*x21,
-        -dx100_1*x17 - dx13_1*x100 - dx19_1*x98 - dx21_1*x99 - dx98_1*x19 - dx99_1*x21,
-        -dx100_2*x17 - dx17_2*x100 - dx19_2*x98 - dx21_2*x99 - dx98_2*x19 - dx99_2*x21,
-        -dx100_3*x17 - dx98_3*x19 - dx99_3*x21,
-        -dx100_4*x17 - dx98_4*x19 - dx99_4*x21,
-        -dx100_5*x17 - dx98_5*x19 - dx99_5*x21,
-        dx13_0,
-        dx13_1,
-        dx17_2,
+        dx18_0,
+        dx18_1,
+        dx18_2,
         0,
         0,
         0,
-        dx19_0,
-        dx19_1,
-        dx19_2,
+        dx20_0,
+        dx20_1,
+        dx20_2,
         0,
         0,
         0,
-        dx21_0,
+        -dx14_0*x55 - dx22_0*x44 - dx23_0*x51 - dx44_0*x22 - dx51_0*x23 - dx55_0*x21,
+        -dx21_1*x55 - dx22_1*x44 - dx23_1*x51 - dx44_1*x22 - dx51_1*x23 - dx55_1*x21,
+        -dx14_2*x55 - dx22_2*x44 - dx23_2*x51 - dx44_2*x22 - dx51_2*x23 - dx55_2*x21,
+        -dx44_3*x22 - dx51_3*x23 - dx55_3*x21,
+        -dx44_4*x22 - dx51_4*x23 - dx55_4*x21,
+        -dx44_5*x22 - dx51_5*x23 - dx55_5*x21,
+        -dx14_0*x58 - dx22_0*x56 - dx23_0*x57 - dx56_0*x22 - dx57_0*x23 - dx58_0*x21,
+        -dx21_1*x58 - dx22_1*x56 - dx23_1*x57 - dx56_1*x22 - dx57_1*x23 - dx58_1*x21,
+        -dx14_2*x58 - dx22_2*x56 - dx23_2*x57 - dx56_2*x22 - dx57_2*x23 - dx58_2*x21,
+        -dx56_3*x22 - dx57_3*x23 - dx58_3*x21,
+        -dx56_4*x22 - dx57_4*x23 - dx58_4*x21,
+        -dx56_5*x22 - dx57_5*x23 - dx58_5*x21,
+        -dx14_0*x61 - dx22_0*x59 - dx23_0*x60 - dx59_0*x22 - dx60_0*x23 - dx61_0*x21,
+        -dx21_1*x61 - dx22_1*x59 - dx23_1*x60 - dx59_1*x22 - dx60_1*x23 - dx61_1*x21,
+        -dx14_2*x61 - dx22_2*x59 - dx23_2*x60 - dx59_2*x22 - dx60_2*x23 - dx61_2*x21,
+        -dx59_3*x22 - dx60_3*x23 - dx61_3*x21,
+        -dx59_4*x22 - dx60_4*x23 - dx61_4*x21,
+        -dx59_5*x22 - dx60_5*x23 - dx61_5*x21,
+        dx14_0,
         dx21_1,
-        dx21_2,
+        dx14_2,
         0,
         0,
         0,
-        -dx15_0*x94 - dx23_0*x83 - dx24_0*x90 - dx83_0*x23 - dx90_0*x24 - dx94_0*x22,
-        -dx22_1*x94 - dx23_1*x83 - dx24_1*x90 - dx83_1*x23 - dx90_1*x24 - dx94_1*x22,
-        -dx15_2*x94 - dx23_2*x83 - dx24_2*x90 - dx83_2*x23 - dx90_2*x24 - dx94_2*x22,
-        -dx83_3*x23 - dx90_3*x24 - dx94_3*x22,
-        -dx83_4*x23 - dx90_4*x24 - dx94_4*x22,
-        -dx83_5*x23 - dx90_5*x24 - dx94_5*x22,
-        -dx15_0*x97 - dx23_0*x95 - dx24_0*x96 - dx95_0*x23 - dx96_0*x24 - dx97_0*x22,
-        -dx22_1*x97 - dx23_1*x95 - dx24_1*x96 - dx95_1*x23 - dx96_1*x24 - dx97_1*x22,
-        -dx15_2*x97 - dx23_2*x95 - dx24_2*x96 - dx95_2*x23 - dx96_2*x24 - dx97_2*x22,
-        -dx95_3*x23 - dx96_3*x24 - dx97_3*x22,
-        -dx95_4*x23 - dx96_4*x24 - dx97_4*x22,
-        -dx95_5*x23 - dx96_5*x24 - dx97_5*x22,
-        -dx100_0*x22 - dx15_0*x100 - dx23_0*x98 - dx24_0*x99 - dx98_0*x23 - dx99_0*x24,
-        -dx100_1*x22 - dx22_1*x100 - dx23_1*x98 - dx24_1*x99 - dx98_1*x23 - dx99_1*x24,
-        -dx100_2*x22 - dx15_2*x100 - dx23_2*x98 - dx24_2*x99 - dx98_2*x23 - dx99_2*x24,
-        -dx100_3*x22 - dx98_3*x23 - dx99_3*x24,
-        -dx100_4*x22 - dx98_4*x23 - dx99_4*x24,
-        -dx100_5*x22 - dx98_5*x23 - dx99_5*x24,
-        dx15_0,
+        dx22_0,
         dx22_1,
-        dx15_2,
+        dx22_2,
         0,
         0,
         0,
         dx23_0,
         dx23_1,
         dx23_2,
-        0,
-        0,
-        0,
-        dx24_0,
-        dx24_1,
-        dx24_2,
         0,
         0,
         0,
