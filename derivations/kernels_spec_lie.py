@@ -15,7 +15,6 @@ from functools import partial
 import sympy as sp
 
 from rigidsym.codegen.spec import Arg, Branch, Grouped, Kernel, Out
-from rigidsym.declare import cpm
 
 from .kernel_wiring import Q_ARG, _ni_common, _ni_near_pi, _ni_when, formula
 
@@ -27,7 +26,7 @@ _IDS = {"so3": ("sola:exp-so3", "sola:log-exp-so3", "sola:exp-log-so3"),
                 "sola:jl-w", "sola:jl-inverse"),
         "se3": ("sola:exp-se3", "sola:log-exp-se3"),
         "se3jac": ("barfoot:se3-jl-definition", "barfoot:se3-jl-xi",
-                   "barfoot:se3-jl-inverse"),
+                   "barfoot:se3-jl-inverse", "barfoot:se3-q-block"),
         "quat": ("sola:quat-of-rotation", "sola:quat-product")}
 W = Arg("w", (3,), "any", "rotation vector w = phi e [rad]")
 XI = Arg("xi", (6,), "any", "exponential coordinates [w; v] ([rad]; [m])")
@@ -40,22 +39,30 @@ def _call(out, fn):
     return build
 
 
-def _q_block_grouped(w, v, grouped):
-    # lie_maps.se3_q_block with each product of [w] and [v] kept a matrix product (as
-    # pytransform3d's _Q), not distributed into monomials in w whose w0^2 the removable
-    # pass reads as theta^2 - w1^2 - w2^2
-    th = sp.sqrt((w.T * w)[0])
-    W, V = (grouped(cpm(x)) for x in (w, v))
-    # associated as pytransform3d's _Q (W (V W), W (W V), V (W W), ...): measured at |w| in
-    # {3, pi, 4.5} against its left_jacobian_SE3_inv, (W V) W and its kin were outside the
-    # rule at 1 of 60 samples (1.14), these at none (0.74)
-    WV, VW, WW = grouped(W * V), grouped(V * W), grouped(W * W)
-    WVW = grouped(W * VW)
-    a = (th - sp.sin(th)) / th**3
-    b = (th**2 + 2 * sp.cos(th) - 2) / (2 * th**4)
-    c = (2 * th - 3 * sp.sin(th) + th * sp.cos(th)) / (2 * th**5)
-    return V / 2 + a * (WV + VW + WVW) + b * (grouped(W * WV) + grouped(V * WW) - 3 * WVW) \
-        + c * (grouped(W * grouped(V * WW)) + grouped(W * WVW))
+def _mark(e):
+    # a sub-expression the removable pass keeps together (codegen.spec.Grouped)
+    return e if e.is_Atom or (-e).is_Atom else Grouped(e)
+
+
+_grouped = partial(sp.Matrix.applyfunc, f=_mark)
+
+
+def _se3_exp(xi):
+    # J_l(w) v as lie_maps.rotation_vector_left_jacobian_times writes it, its w x v and w . v
+    # Grouped: distributed into monomials, the removable pass reads w0^2 as theta^2 - w1^2 -
+    # w2^2 and folds sin(theta)/theta v back into v - (1 - sin(theta)/theta) v, which loses
+    # theta relative at large |w| (issue 48: float32 4.65 u median at |w| = 24.5)
+    return {"T": formula(_LM + "transform_from_exponential_coordinates")(xi, group=_mark)}
+
+
+def _se3_jl(xi):
+    # the declared [[J_l, 0], [Q, J_l]] with lie_maps.se3_q_block's products of w and v
+    # Grouped (w . v, v w^T + w v^T, w w^T; issue 48): distributed, the removable pass folds
+    # its coefficients back into Barfoot's, whose terms of size |v| cancel to |v|/theta
+    w, v = xi[:3, :], xi[3:, :]
+    J = formula(_LM + "rotation_vector_left_jacobian")(w)
+    Q = formula(_LM + "se3_q_block")(w, v, group=_mark)
+    return {"J": sp.Matrix.vstack(sp.Matrix.hstack(J, sp.zeros(3)), sp.Matrix.hstack(Q, J))}
 
 
 def _se3_jl_inverse(xi):
@@ -63,13 +70,12 @@ def _se3_jl_inverse(xi):
     # matrices (issue 48): each entry of J^-1 and Q and of Q J^-1 Grouped, so the
     # removable pass rewrites each alone and never distributes the product into monomials
     # of degree 9 in w (median 4-10 u at |w| in {3, pi, 4.5}, 24 of 60 samples outside the
-    # rule's max(2 e_peer, 4 u) of pytransform3d's left_jacobian_SE3_inv, which multiplies)
+    # rule's max(2 e_peer, 4 u) of pytransform3d's left_jacobian_SE3_inv, which multiplies);
+    # Q as lie_maps.se3_q_block writes it, without Barfoot's cancellation at large |w|
     w, v = xi[:3, :], xi[3:, :]
-    grouped = partial(sp.Matrix.applyfunc, f=lambda e: e if e.is_Atom or (-e).is_Atom
-                      else Grouped(e))
-    Ji = grouped(formula(_LM + "rotation_vector_left_jacobian_inverse")(w))
-    Qb = grouped(_q_block_grouped(w, v, grouped))
-    lower = -Ji * grouped(Qb * Ji)
+    Ji = _grouped(formula(_LM + "rotation_vector_left_jacobian_inverse")(w))
+    Qb = _grouped(formula(_LM + "se3_q_block")(w, v, group=_mark))
+    lower = -Ji * _grouped(Qb * Ji)
     return {"J": sp.Matrix.vstack(sp.Matrix.hstack(Ji, sp.zeros(3)),
                                   sp.Matrix.hstack(lower, Ji))}
 
@@ -191,10 +197,9 @@ LIE_KERNELS = [
       for side in ("left", "right") for inv in ("", "_inverse")],
     Kernel(name="transform_from_exponential_coordinates",
            summary="Exp of se(3): the transform of xi = [w; v].",
-           formula="T = [[Exp(w), J_l(w) v], [0, 1]]", ids=_IDS["se3"],
+           formula="T = [[Exp(w), J_l(w) v], [0, 1]]", ids=(*_IDS["se3"], "sola:jl-times"),
            sources=(_LM + "transform_from_exponential_coordinates",), args=(XI,),
-           outputs=(Out("T", (4, 4), "homogeneous transform"),),
-           build=_call("T", "transform_from_exponential_coordinates")),
+           outputs=(Out("T", (4, 4), "homogeneous transform"),), build=_se3_exp),
     *[Kernel(name=f"exponential_coordinates_left_jacobian{inv}",
              summary=f"The left Jacobian{' inverse' if inv else ''} of SE(3) at xi = [w; v] "
                      "(6 x 6, angular first).",
@@ -202,7 +207,7 @@ LIE_KERNELS = [
              if not inv else "the block inverse of [[J_l, 0], [Q, J_l]]",
              ids=_IDS["se3jac"], sources=(_LM + f"exponential_coordinates_left_jacobian{inv}",),
              args=(XI,), outputs=(Out("J", (6, 6), ""),),
-             build=_se3_jl_inverse if inv else _call("J", "exponential_coordinates_left_jacobian"),
+             build=_se3_jl_inverse if inv else _se3_jl,
              singular="theta = 2 pi k, k != 0 (theta = norm of w)" if inv else "",
              # 216 entries of degree 5: sympy's derivative of the expanded formula took
              # minutes to generate; forward mode over the optimised program takes seconds

@@ -173,6 +173,16 @@ def jl_inverse() -> Statement:
     return Statement([Rel(Jl * Jli, I3), Rel(Jr * Jri, I3, "right")], SO3)
 
 
+@equation("sola:jl-times", "J_l(w) v = (sin θ/θ) v + ((1 − cos θ)/θ²) w × v + ((θ − sin θ)/θ³) "
+          "(w·v) w (Solà App. B; Barfoot Sec. 7.1.3)", section="so3")
+def jl_times() -> Statement:
+    # the kernels' form of J_l v (no cancellation at large theta, issue 48)
+    p = vec("J_l v")
+    return Statement([Rel(p, Jl * v)],
+                     {**SO3, v: _im(v_),
+                      p: _im(L.rotation_vector_left_jacobian_times(w_, v_))})
+
+
 # ------------------------------------------------------------------ SE(3)
 def _se3(wv, vv) -> dict:
     x = sp.Matrix.vstack(wv, vv)
@@ -210,6 +220,16 @@ def se3_jl_inverse() -> Statement:
     return Statement([Rel(X * Xi, I6)],
                      {**_se3(w_, v_),
                       Xi: _im(L.exponential_coordinates_left_jacobian_inverse(x))})
+
+
+@equation("barfoot:se3-q-block", "Q(v, w) = A V + B (v wᵀ + w vᵀ) + (w·v)(D W + G w wᵀ − H 1) "
+          "is Barfoot's printed Q (Barfoot Sec. 7.1.5; Solà App. D)", section="se3")
+def se3_q_block() -> Statement:
+    # the kernels' Q, whose terms are each O(|v|/theta), against Barfoot's seven products,
+    # each O(|v|) at large theta (issue 48)
+    Qk, Qb = mat("Q(v, w)"), mat("Q_Barfoot(v, w)")
+    return Statement([Rel(Qk, Qb)], {Qk: _im(L.se3_q_block(w_, v_)),
+                                     Qb: _im(L.se3_q_block_barfoot(w_, v_))})
 
 
 @equation("barfoot:se3-jl-definition", "d/dt Exp(ξ) Exp(ξ)⁻¹ = [J_l(ξ) ξ̇]^ "

@@ -29,7 +29,8 @@ __all__ = ["rotation_from_rotation_vector", "rotation_vector_from_rotation",
            "rotation_vector_left_jacobian_inverse", "rotation_vector_right_jacobian_inverse",
            "exponential_coordinates_left_jacobian",
            "exponential_coordinates_left_jacobian_inverse", "euler_rodrigues_from_rotation",
-           "euler_rodrigues_product", "se3_q_block", "rotation_vector_from_rotation_small",
+           "euler_rodrigues_product", "se3_q_block", "se3_q_block_barfoot",
+           "rotation_vector_left_jacobian_times", "rotation_vector_from_rotation_small",
            "exponential_coordinates_from_transform_small"]
 
 
@@ -86,6 +87,42 @@ def rotation_vector_left_jacobian(w) -> sp.Matrix:
     """
     w, W, th = _w(w)
     return sp.eye(3) + (1 - sp.cos(th)) / th**2 * W + (th - sp.sin(th)) / th**3 * W * W
+
+
+def _ungrouped(x):
+    return x
+
+
+def rotation_vector_left_jacobian_times(w, v, group=None) -> sp.Matrix:
+    """``J_l(w) v = (sin theta / theta) v + ((1 - cos theta)/theta^2) w x v + ((theta - sin
+    theta)/theta^3) (w . v) w``: :func:`rotation_vector_left_jacobian` applied to ``v``.
+
+    Exactly ``J_l(w) v`` (``[w]^2 v = (w . v) w - theta^2 v``, and ``1 - theta^2 (theta -
+    sin theta)/theta^3 = sin theta / theta``), written so that no two terms cancel at large
+    ``theta``: as ``v + a [w] v + b [w]^2 v`` the part of ``v`` across ``w`` is ``v - (1 -
+    sin theta/theta) v``, which loses ``theta`` relative when ``J_l v`` is ``|v|/theta``
+    (issue 48: 4.7 u median at ``|w| = 24.5`` in float32, the search's 1.16 times the rule).
+
+    Source: Solà et al. 2018, App. B (``J_l``) and App. D (the translation of ``Exp`` of
+    SE(3)); Barfoot Sec. 7.1.3 (``J v``); MR (3.88) (``G(theta) v``).
+
+    Args:
+        w: 3 x 1 rotation vector [rad].
+        v: 3 x 1 vector.
+        group: the kernels' marker of a sub-expression kept together (``w x v`` and
+            ``w . v``, so that the removable pass does not distribute them back into the
+            monomials of ``v + a [w] v + b [w]^2 v``), or None.
+
+    Returns:
+        3 x 1 vector.
+    """
+    g = group or _ungrouped
+    w, _, th = _w(w)
+    v = as_vector(v, "v")
+    wxv = w.cross(v).applyfunc(g)
+    wv = g((w.T * v)[0])
+    return sp.sin(th) / th * v + (1 - sp.cos(th)) / th**2 * wxv \
+        + (th - sp.sin(th)) / th**3 * wv * w
 
 
 def rotation_vector_right_jacobian(w) -> sp.Matrix:
@@ -148,21 +185,25 @@ def _xi(xi):
     return xi[:3, :], xi[3:, :]
 
 
-def transform_from_exponential_coordinates(xi) -> sp.Matrix:
-    """``Exp([w; v]) = [[Exp(w), J_l(w) v], [0, 1]]``.
+def transform_from_exponential_coordinates(xi, group=None) -> sp.Matrix:
+    """``Exp([w; v]) = [[Exp(w), J_l(w) v], [0, 1]]``, ``J_l(w) v`` as
+    :func:`rotation_vector_left_jacobian_times` writes it (no cancellation at large
+    ``theta``).
 
     Source: Solà et al. 2018, App. D (Exp of SE(3)); Barfoot Sec. 7.1.3; MR (3.88) with
     ``[w; v] = [omega; v] theta``.
 
     Args:
         xi: 6 x 1 exponential coordinates ``[w; v]`` ([rad]; [m]).
+        group: the kernels' marker of a sub-expression kept together
+            (:class:`rigidsym.codegen.spec.Grouped`), or None (the plain formula).
 
     Returns:
         4 x 4 homogeneous transform.
     """
     w, v = _xi(xi)
     R = rotation_from_rotation_vector(w)
-    p = rotation_vector_left_jacobian(w) * v
+    p = rotation_vector_left_jacobian_times(w, v, group)
     return sp.Matrix.vstack(sp.Matrix.hstack(R, p), sp.Matrix([[0, 0, 0, 1]]))
 
 
@@ -227,13 +268,15 @@ def exponential_coordinates_from_transform_small(T) -> sp.Matrix:
     return sp.Matrix.vstack(a * u, p - a / 2 * up + g * u.cross(up))
 
 
-def se3_q_block(w, v) -> sp.Matrix:
-    """Barfoot's ``Q(v, w)`` block of the left Jacobian of SE(3) (Barfoot Sec. 7.1.5, his
-    ``Q(rho, phi)`` with ``rho = v``, ``phi = w``; Solà et al. 2018, App. D, ``Q(rho,
-    theta)``): ``V/2 + a (W V + V W + W V W) + b (W W V + V W W - 3 W V W) + c (W V W W +
-    W W V W)`` with ``W = [w]``, ``V = [v]``, ``a = (theta - sin theta)/theta^3``, ``b =
+def se3_q_block_barfoot(w, v) -> sp.Matrix:
+    """Barfoot's ``Q(v, w)`` block of the left Jacobian of SE(3) as he prints it (Barfoot Sec.
+    7.1.5, his ``Q(rho, phi)`` with ``rho = v``, ``phi = w``; Solà et al. 2018, App. D,
+    ``Q(rho, theta)``): ``V/2 + a (W V + V W + W V W) + b (W W V + V W W - 3 W V W) + c (W V
+    W W + W W V W)`` with ``W = [w]``, ``V = [v]``, ``a = (theta - sin theta)/theta^3``, ``b =
     (theta^2 + 2 cos theta - 2)/(2 theta^4)``, ``c = (2 theta - 3 sin theta + theta cos
-    theta)/(2 theta^5)``."""
+    theta)/(2 theta^5)``. The kernels use :func:`se3_q_block`, the same matrix without the
+    cancellation (``derivations/lie_groups.py``, ``barfoot:se3-q-block``, proves them equal).
+    """
     w, W, th = _w(w)
     V = cpm(as_vector(v, "v"))
     a = (th - sp.sin(th)) / th**3
@@ -241,6 +284,58 @@ def se3_q_block(w, v) -> sp.Matrix:
     c = (2 * th - 3 * sp.sin(th) + th * sp.cos(th)) / (2 * th**5)
     return V / 2 + a * (W * V + V * W + W * V * W) + b * (W * W * V + V * W * W - 3 * W * V * W) \
         + c * (W * V * W * W + W * W * V * W)
+
+
+def se3_q_block(w, v, group=None) -> sp.Matrix:
+    """Barfoot's ``Q(v, w)`` block of the left Jacobian of SE(3), written without
+    cancellation: ``A V + B (v w^T + w v^T) + (w . v) (D W + G w w^T - H 1)`` with ``W =
+    [w]``, ``V = [v]`` and
+
+    - ``A = (1 - cos theta)/theta^2``, ``B = (theta - sin theta)/theta^3`` (those of
+      ``J_l``),
+    - ``D = (theta sin theta + 2 cos theta - 2)/theta^4``,
+    - ``G = (3 sin theta - 2 theta - theta cos theta)/theta^5``,
+    - ``H = (sin theta - theta cos theta)/theta^3``.
+
+    Derivation, from Barfoot's printed form (:func:`se3_q_block_barfoot`, Barfoot Sec. 7.1.5;
+    Solà et al. 2018, App. D): with ``W = theta E``, ``e`` unit, ``s = e . v`` and ``V = s E
+    + U`` (``U = [u]``, ``u = v - s e`` across ``w``), the identities ``E V E = -s E``, ``E^2
+    = e e^T - 1``, ``e e^T U + U e e^T = U`` and ``E V + V E = v e^T + e v^T - 2 s 1`` reduce
+    its seven products to ``V``, ``E V + V E``, ``s E`` and ``s E^2``; their coefficients are
+    ``1/2 - b theta^2 = A``, ``a theta = B theta``, ``1/2 - a theta^2 + b theta^2 - A = sin
+    theta/theta - 2 A = D theta^2`` and ``-2 c theta^3 = G theta^3``; ``[w]^2 = w w^T -
+    theta^2 1`` then gives ``H = 2 B + G theta^2``.
+    Barfoot's terms are each ``O(|v|)`` at large ``theta`` and cancel to a ``Q`` of size
+    ``|v|/theta`` (issue 48: 66 .. 280 u in every program at ``|w| ~ 240``, condition 1.8);
+    these are each ``O(|v|/theta)``. Exactly Barfoot's matrix for every ``w != 0`` (the
+    declaration ``barfoot:se3-q-block`` of ``derivations/lie_groups.py``); every coefficient
+    is removable at ``w = 0`` (``A -> 1/2``, ``B -> 1/6``, ``D -> -1/12``, ``G -> -1/60``,
+    ``H -> 1/3``).
+
+    Args:
+        w: 3 x 1 rotation vector [rad].
+        v: 3 x 1 vector ([m]).
+        group: the kernels' marker of a sub-expression kept together
+            (:class:`rigidsym.codegen.spec.Grouped`: ``w . v`` and the entries of ``v w^T +
+            w v^T`` and ``w w^T``, so that the removable pass does not distribute them into
+            monomials whose ``w0^2`` it reads as ``theta^2 - w1^2 - w2^2``), or None.
+
+    Returns:
+        3 x 3 matrix.
+    """
+    g = group or _ungrouped
+    w, W, th = _w(w)
+    v = as_vector(v, "v")
+    V = cpm(v)
+    A = (1 - sp.cos(th)) / th**2
+    B = (th - sp.sin(th)) / th**3
+    D = (th * sp.sin(th) + 2 * sp.cos(th) - 2) / th**4
+    G = (3 * sp.sin(th) - 2 * th - th * sp.cos(th)) / th**5
+    H = (sp.sin(th) - th * sp.cos(th)) / th**3
+    wv = g((w.T * v)[0])
+    sym = (v * w.T + w * v.T).applyfunc(g)
+    ww = (w * w.T).applyfunc(g)
+    return A * V + B * sym + wv * (D * W + G * ww - H * sp.eye(3))
 
 
 def exponential_coordinates_left_jacobian(xi) -> sp.Matrix:

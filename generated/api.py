@@ -706,7 +706,7 @@ def exponential_coordinates_left_jacobian(
 
         [[J_l(w), 0], [Q(v, w), J_l(w)]] (Barfoot Sec. 7.1.5, reordered)
 
-    Book: Eq. (barfoot:se3-jl-definition), (barfoot:se3-jl-xi), (barfoot:se3-jl-inverse); composed of rigidsym.derivations.lie_maps.exponential_coordinates_left_jacobian.
+    Book: Eq. (barfoot:se3-jl-definition), (barfoot:se3-jl-xi), (barfoot:se3-jl-inverse), (barfoot:se3-q-block); composed of rigidsym.derivations.lie_maps.exponential_coordinates_left_jacobian.
 
     Args:
         xi: array-like (..., 6); exponential coordinates [w; v] ([rad]; [m])
@@ -724,9 +724,9 @@ def exponential_coordinates_left_jacobian(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1.05 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 82 ulp in float64) over 3 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 2.44 u (kappa + 1) in float64, <= 1.46 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 1.08e+03 ulp in float64) over 6 regimes (docs/accuracy.md, kernels.accuracy).
 
-        Generated; 226 operations; math hash a4133e465ca458b7.
+        Generated; 97 operations; math hash f108b6a9d1d2e209.
     """
     return _F.exponential_coordinates_left_jacobian(xi, out, check, on_singular, threads)
 
@@ -743,7 +743,7 @@ def exponential_coordinates_left_jacobian_inverse(
 
         the block inverse of [[J_l, 0], [Q, J_l]]
 
-    Book: Eq. (barfoot:se3-jl-definition), (barfoot:se3-jl-xi), (barfoot:se3-jl-inverse); composed of rigidsym.derivations.lie_maps.exponential_coordinates_left_jacobian_inverse.
+    Book: Eq. (barfoot:se3-jl-definition), (barfoot:se3-jl-xi), (barfoot:se3-jl-inverse), (barfoot:se3-q-block); composed of rigidsym.derivations.lie_maps.exponential_coordinates_left_jacobian_inverse.
 
     Args:
         xi: array-like (..., 6); exponential coordinates [w; v] ([rad]; [m])
@@ -764,9 +764,9 @@ def exponential_coordinates_left_jacobian_inverse(
     Notes:
         Singular set: theta = 2 pi k, k != 0 (theta = norm of w).
 
-        Accuracy: error <= 1.37 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 143 ulp in float64) over 3 regimes (docs/accuracy.md, kernels.accuracy); singular when theta = 2 pi k, k != 0 (theta = norm of w).
+        Accuracy: error <= 1.78 u (kappa + 1) in float64, <= 1.43 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 4.4e+14 ulp in float64) over 6 regimes (docs/accuracy.md, kernels.accuracy); singular when theta = 2 pi k, k != 0 (theta = norm of w).
 
-        Generated; 369 operations; math hash 6ed4c1e9b516ac2d.
+        Generated; 200 operations; math hash 166c30e8dcb611f0.
     """
     return _F.exponential_coordinates_left_jacobian_inverse(xi, out, check, on_singular, threads)
 
@@ -1634,7 +1634,7 @@ def transform_from_exponential_coordinates(
 
         T = [[Exp(w), J_l(w) v], [0, 1]]
 
-    Book: Eq. (sola:exp-se3), (sola:log-exp-se3); composed of rigidsym.derivations.lie_maps.transform_from_exponential_coordinates.
+    Book: Eq. (sola:exp-se3), (sola:log-exp-se3), (sola:jl-times); composed of rigidsym.derivations.lie_maps.transform_from_exponential_coordinates.
 
     Args:
         xi: array-like (..., 6); exponential coordinates [w; v] ([rad]; [m])
@@ -1652,9 +1652,9 @@ def transform_from_exponential_coordinates(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 53 ulp in float64) over 3 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1.58 u (kappa + 1) in float64, <= 1.02 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 1.38e+03 ulp in float64) over 6 regimes (docs/accuracy.md, kernels.accuracy).
 
-        Generated; 77 operations; math hash 6422323903f35e70.
+        Generated; 62 operations; math hash ba43251f4eb5689e.
     """
     return _F.transform_from_exponential_coordinates(xi, out, check, on_singular, threads)
 

@@ -23,7 +23,7 @@ _SLOW = {"sola:log-exp-se3", "barfoot:se3-jl-inverse", "barfoot:se3-jl-definitio
 _FAST = ["sola:exp-so3", "sola:log-exp-so3", "sola:exp-log-so3", "sola:jl-definition",
          "sola:jr-definition", "sola:jl-jr", "sola:jl-R-jr", "sola:jl-w", "sola:jl-inverse",
          "sola:exp-se3", "barfoot:se3-jl-xi", "sola:quat-of-rotation", "sola:quat-product",
-         "sola:log-so3-small", "sola:log-se3-small"]
+         "sola:log-so3-small", "sola:log-se3-small", "sola:jl-times", "barfoot:se3-q-block"]
 
 
 @pytest.fixture(scope="module")
