@@ -211,47 +211,66 @@ def respell(latex, lets, notation, draw):
     return rx.sub(lambda m: alt, latex), lets, notation
 
 
-_ACCENTS = r"\\(hat|dot|ddot|tilde|bar|vec|underline)\s*\{?\s*"
+_ACCENTS = r"\\(?:hat|dot|ddot|tilde|bar|vec|underline)"
 
 
-def _standalone(latex: str, glyph: str) -> re.Pattern | None:
-    """A pattern of ``glyph``'s occurrences in ``latex`` if each is the symbol alone (no
-    subscript, prime, accent, argument or index of another glyph), else ``None``."""
-    g = re.escape(glyph) + (r"(?![A-Za-z])" if glyph[-1].isalpha() else "")
-    rx = re.compile(r"(?<![A-Za-z\\{_^])" + g if not glyph.startswith("\\") else g)
-    spots = list(rx.finditer(latex))
-    if not spots:
-        return None
-    for m in spots:
-        after, before = latex[m.end():m.end() + 2], latex[:m.start()]
-        dual = re.match(r"\^\s*(\*|\{\s*(\*|-\s*T)\s*\})", latex[m.end():])
-        if after[:1] in ("_", "'", "(") or dual or re.search(_ACCENTS + r"$", before) \
-                or re.search(r"_\s*\{?[^{}]*$", before[-12:]) or before.endswith("\\"):
-            return None
-    return rx
+def _spots(latex: str, glyph: str) -> list[tuple[int, int]]:
+    """Where ``glyph`` stands alone in ``latex``, a model can stand for it: not the start of
+    a longer glyph (``\\theta_1`` for ``\\theta``, a prime), not under an accent, in a
+    subscript (``\\mathrm{Ad}_{T}``), applied (``X(y)``), Featherstone's dual (``X^*``,
+    ``X^{-T}``, a kind a model has not), the variable of a derivative (``d\\theta``) nor
+    after ``\\forall``. Those occurrences stay as written (the model equals the symbol)."""
+    g = re.escape(glyph) + (r"(?![A-Za-z])" if glyph[-1].isalpha() else r"(?![0-9])")
+    rx = re.compile(g if glyph[0] in "\\{" else r"(?<![A-Za-z\\{_^])" + g)
+    out = []
+    for m in rx.finditer(latex):
+        after, before = latex[m.end():], latex[:m.start()]
+        if re.match(r"\s*_|'", after) or re.match(r"\s*\(", after) \
+                or re.match(r"\^\s*(\*|\{\s*(\*|-\s*T)\s*\})", after) \
+                or re.search(_ACCENTS + r"\s*\{?\s*$", before) \
+                or re.search(r"_\s*(\{[^{}]*)?$", before) or before.endswith("\\") \
+                or re.search(r"(?<![A-Za-z\\])d\s*\{?\s*$|\\forall\s*$", before):
+            continue
+        out.append((m.start(), m.end()))
+    return out
+
+
+def _model_keys(lets: list[str]) -> list[str]:
+    """The glyphs the --let lines name: ``NAME: KIND`` (``NAME(t)``, a function of time:
+    ``NAME``) and ``NAME = LATEX`` models without parameters."""
+    out = []
+    for x in lets:
+        head = re.split(r"[:=]", x, maxsplit=1)[0].strip()
+        if head.endswith("(t)"):
+            head = head[:-3].strip()
+        elif head.endswith(")"):
+            continue  # a function: its applications are not a symbol
+        out.append(head)
+    return out
 
 
 def model(latex, lets, notation, draw):
-    """(d) a symbol a ``NAME: KIND`` line declares, written only alone, replaced by ``Y`` with
-    ``Y = Z``, ``Z = (NAME)`` declared top-down (a model that uses a model declared after
-    it). Not: a function of time (``\\theta(t)``), a Greek letter the book's --notation
-    names, a symbol under Featherstone's dual (``X^*``, ``X^{-T}``: the dual needs the
-    kind ``spatial transform``, which a model has not; measured: 5 entries)."""
-    if re.search(r"(?<!\\)[YZ]", latex):
+    """(d) a glyph the --lets name (a declared symbol, a model, a function of time) or such
+    a glyph under an accent (``\\dot{\\mathbf{C}}``, ``\\hat\\omega``) replaced where it stands
+    alone (:func:`_spots`) by ``Y``, with ``Y = Z``, ``Z = (GLYPH)`` declared top-down (a
+    model that uses a model declared after it; two capitals the entry does not use)."""
+    text = " ".join([latex, *lets])
+    free = [c for c in "YZUWVQ" if not re.search(r"(?<![\\A-Za-z])" + c + r"(?![a-z])", text)]
+    if len(free) < 2:
         return None
-    keys = [x.split(":")[0].strip() for x in lets if ":" in x and "=" not in x.split(":")[0]]
-    book = _greek_in(_book_text(notation))
-    options = []
-    for k in keys:
-        if k.endswith(")") or (re.fullmatch(r"\\[a-z]+", k) and k[1:] in book):
-            continue
-        rx = _standalone(latex, k)
-        if rx is not None:
-            options.append((k, rx))
+    y, z = free[:2]
+    glyphs = []
+    for k in _model_keys(lets):
+        glyphs.append(k)
+        glyphs += [m.group(0) for m in re.finditer(
+            _ACCENTS + r"\s*(\{\s*" + re.escape(k) + r"\s*\}|\s*" + re.escape(k) + ")", latex)]
+    options = [(k, spots) for k in dict.fromkeys(glyphs) if (spots := _spots(latex, k))]
     if not options:
         return None
-    k, rx = draw(st.sampled_from(options))
-    return (rx.sub(lambda m: "{Y}", latex), ["Y = Z", f"Z = ({k})"] + lets, notation)
+    k, spots = draw(st.sampled_from(options))
+    for a, b in reversed(spots):
+        latex = latex[:a] + "{" + y + "}" + latex[b:]
+    return latex, [f"{y} = {z}", f"{z} = ({k})", *lets], notation
 
 
 def permute(latex, lets, notation, draw):
