@@ -73,13 +73,6 @@ _BOLD = re.compile(r"\\(?:mathbf|boldsymbol)\{([A-Za-z])\}")
 _SPARE = "hkmnqswz"
 
 
-def _bold_symbols(latex: str, lets: list[str]) -> list[str]:
-    """Bold Latin letters declared by a table line (a renaming keeps their kind)."""
-    declared = {m.group(1) for x in lets for m in [_BOLD.match(x.split(":")[0].strip())] if m
-                and x.split(":")[0].strip() == m.group(0)}
-    return sorted(c for c in declared if c.islower() and c not in "eit")
-
-
 _GREEK = ("alpha", "beta", "gamma", "delta", "epsilon", "varepsilon", "zeta", "eta", "theta",
           "vartheta", "iota", "kappa", "lambda", "mu", "nu", "xi", "rho", "varrho", "sigma", "tau",
           "phi", "varphi", "chi", "psi", "omega")
@@ -87,15 +80,6 @@ _GREEK = ("alpha", "beta", "gamma", "delta", "epsilon", "varepsilon", "zeta", "e
 
 def _greek_in(text: str) -> set[str]:
     return {g for g in _GREEK if re.search(r"\\" + g + r"(?![A-Za-z])", text)}
-
-
-def _book_text(notation: str | None) -> str:
-    """The lines of the book's --notation table: a letter they name keeps its name."""
-    if notation is None:
-        return ""
-    from rigidsym.latex import notations
-
-    return " ".join(x.text for x in notations.notation(notation).lets)
 
 
 # a plain capital letter (group 2), not a macro's name nor a letter of a font's argument
@@ -110,12 +94,6 @@ def _capital(c: str) -> re.Pattern:
 
 def _has_capital(text: str, c: str) -> bool:
     return any(m.group(2) for m in _capital(c).finditer(text))
-
-
-def _occurs(key: str, latex: str) -> bool:
-    """``key`` written in ``latex`` as a glyph of its own (not the start of a longer one)."""
-    before = r"(?<![\\A-Za-z{^_])" if key[:1].isalpha() else ""
-    return re.search(before + re.escape(key) + r"(?![A-Za-z_'])", latex) is not None
 
 
 def _letters(keys: list[str]) -> tuple[list[str], list[str], list[str], list[str]]:
