@@ -8,11 +8,15 @@ falls on both columns alike:
 - ``example``: ``--module examples/rotation_identities.py``, one job.
 
 Also printed: the search's own CPU seconds per does-not-hold id (one process, one job),
-from ``Result.seconds`` with and without the search.
+from ``Result.seconds`` with and without the search; and (``corpus``, issue 52) the wall
+time of ``rigidsym.check_latex`` with repairs on (the default ``--repair-seconds`` 10) on
+every entry of the book corpus (``tests/data/latex_corpus``), one process, an empty verdict
+cache, each entry with its book's table and ``--notation`` as the corpus test reads it: the
+slowest entries and the maximum (issue 52's target: none over 15 s).
 
 Usage (from the repository root)::
 
-    python benchmarks/repairs.py [--repeat N] [--skip chapter,example,per-id]
+    python benchmarks/repairs.py [--repeat N] [--skip chapter,example,per-id,corpus]
 
 Target (issue 23): the cold chapter with repairs takes at most 1.5 times as long as with
 ``--no-repairs``.
@@ -54,6 +58,29 @@ for i in select(None, None):
         continue
     r1 = check(i)
     out[i] = [r0.seconds, r1.seconds, sum(s["candidates"] for s in r1.repair_search)]
+print("@@", json.dumps(out))
+"""
+
+_CORPUS = """
+import json, sys, time
+sys.path.insert(0, "tests/data/latex_corpus")
+import corpus, rigidsym
+from rigidsym.checking.deciding import registry
+from rigidsym.latex.notations import NOTATIONS
+out = {}
+for e in corpus.entries():
+    book = e["book"]["key"]
+    t0 = time.perf_counter()
+    try:
+        r = rigidsym.check_latex(e["latex"], let=corpus.lets_of(e),
+                                 notation=book if book in NOTATIONS else None)
+        v = r.verdict
+        words = [s["words"] for s in r.repair_search]
+    except ValueError:
+        v, words = "bad-input", []
+    finally:
+        registry.forget_module("rigidsym.latex.letting")
+    out[e["id"]] = [round(time.perf_counter() - t0, 2), v, words]
 print("@@", json.dumps(out))
 """
 
@@ -106,6 +133,14 @@ def main(argv: list[str] | None = None) -> int:
             print(f"  {i:7s} {a:6.2f} {b:6.2f}  +{b - a:5.2f} s  {n} candidates")
         print(f"  total  {sum(a for a, _, _ in per.values()):6.2f} "
               f"{sum(b for _, b, _ in per.values()):6.2f}")
+    if "corpus" not in skip:
+        per = json.loads(_run(_CORPUS))
+        slow = sorted(per.items(), key=lambda kv: -kv[1][0])
+        print(f"corpus with repairs ({len(per)} entries, one process, cold verdict cache): "
+              f"max {slow[0][1][0]:.2f} s ({slow[0][0]}), total "
+              f"{sum(v[0] for v in per.values()):.1f} s; the slowest:")
+        for i, (sec, v, words) in slow[:8]:
+            print(f"  {i:22s} {sec:6.2f} s  {v:14s} {'; '.join(words)[:90]}")
     print(f"load average after: {os.getloadavg()}")
     return 0
 

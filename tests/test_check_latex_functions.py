@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+import sympy as sp
 from test_check_latex import _cli, _forget_latex_ids  # noqa: F401  (autouse fixture, CLI helper)
 
 import rigidsym
@@ -384,6 +385,76 @@ def test_the_repair_search_stops_at_its_time_limit_and_says_so(monkeypatch):
     assert "search stopped after 1 s" in r.detail and "candidates tried" in r.detail, r.detail
     n = int(r.detail.split("s, ")[-1].split(" candidates")[0])
     assert 0 <= n < 5000
+
+
+def test_the_time_limit_stops_a_step_inside_it_and_only_in_the_main_thread():
+    """Gap 2 of issue 52: one step of the search (sympy's Gauss-Jordan inverse of a 4x4 in
+    a final check) ran 20-100 s past the 10 s limit, which was read between candidates."""
+    import threading
+    import time
+
+    from rigidsym.checking.repairing.repair import Late, time_limit
+
+    t0 = time.monotonic()
+    with pytest.raises(Late), time_limit(t0 + 0.2):
+        while time.monotonic() < t0 + 30:  # a step that never looks at the clock
+            pass
+    assert time.monotonic() - t0 < 5
+    with time_limit(time.monotonic() + 0.05):
+        pass
+    time.sleep(0.1)  # disarmed on leaving: nothing is raised later
+    out = []
+    th = threading.Thread(target=lambda: out.append(time_limit(None).__enter__() is None))
+    th.start()
+    th.join()
+    assert out == [True]
+
+
+def _generic(name, n, m=None):
+    return sp.ImmutableMatrix(sp.MatrixSymbol(name, n, m or n).as_explicit())
+
+
+@pytest.mark.parametrize("make", ["generic 1", "generic 2", "generic 3", "generic 4",
+                                  "transform", "featherstone", "cayley", "rotation"])
+def test_the_exact_inverse_is_the_inverse(make):
+    """The search's inverses (by blocks, fraction-free over the entries' ring, else sympy's):
+    ``M^-1 M = I`` exactly at a random rational point, and a singular matrix refused."""
+    import random
+
+    from sympy.matrices.expressions.matexpr import MatrixElement
+
+    from rigidsym.checking.deciding.explicit import _inverse
+
+    e, r, th = _generic("E", 3), _generic("r", 3, 1), sp.Symbol("theta")
+    hat = sp.Matrix([[0, -r[2], r[1]], [r[2], 0, -r[0]], [-r[1], r[0], 0]])
+    m = {"transform": sp.BlockMatrix([[e, r], [sp.zeros(1, 3), sp.eye(1)]]).as_explicit(),
+         "featherstone": sp.BlockMatrix([[e, sp.zeros(3)], [-e * hat, e]]).as_explicit(),
+         "cayley": (sp.eye(3) - hat).inv(method="ADJ") * (sp.eye(3) + hat),
+         "rotation": sp.Matrix([[sp.cos(th), -sp.sin(th), r[0]], [sp.sin(th), sp.cos(th), 0],
+                                [0, r[1], 1]])}.get(make) or _generic("M", int(make[-1]))
+    m = sp.ImmutableMatrix(m)
+    rng = random.Random(make)
+    at = {a: sp.Rational(rng.randint(-9, 9), rng.randint(1, 5))
+          for a in m.atoms(MatrixElement) | {th}}
+    prod = (_inverse(m) * m).xreplace(at).applyfunc(sp.simplify)
+    assert prod == sp.eye(m.rows)
+    with pytest.raises(ValueError):
+        _inverse(sp.ImmutableMatrix([[r[0], r[1]], [2 * r[0], 2 * r[1]]]))
+
+
+@pytest.mark.slow
+def test_mccarthys_cayley_slip_takes_its_time_limit_not_more():
+    """The slowest corpus entries of issue 52's gap 2 (15-20 s with a 10 s limit): on the
+    real clock, within the limit and the verdict's own time."""
+    import time
+
+    t0 = time.monotonic()
+    r = rigidsym.check_latex(
+        r"C(\mathbf{b}) = (I_3 - [\mathbf{b}]_\times)(I_3 + [\mathbf{b}]_\times)^{-1}",
+        let=[r"\mathbf{b}: vector", r"C(\mathbf{b}) = (I_3 - [\mathbf{b}]_\times)^{-1}"
+             r"(I_3 + [\mathbf{b}]_\times)"], repair_seconds=3)
+    assert r.verdict == "does-not-hold" and r.counterexample
+    assert time.monotonic() - t0 < 3 + 5, r.detail
 
 
 @pytest.mark.parametrize("bad", [0, -1.0, float("nan"), "10", True])

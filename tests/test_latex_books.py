@@ -114,6 +114,19 @@ def test_d_dt_of_symbols_declared_functions_of_time():
         _read(r"\frac{d}{dt}\cos\theta = 0")
 
 
+def test_a_derivative_goes_through_the_models_of_its_variable():
+    """A model of a function of time is one too, and a model in v depends on v (issue 52,
+    item 5 (d): found by the metamorphic variant that writes Y for theta): before, d/dt
+    and d/d(theta) took Y for a constant and the verdicts flipped."""
+    lets = ["Y = Z", r"Z = (\theta)", r"\theta(t): angle"]
+    assert _v(r"\frac{d}{dt}\cos Y = -\dot\theta\sin\theta", lets) == "verified"
+    assert _v(r"\frac{d}{dt}\cos Y = 0", lets) == "does-not-hold"
+    assert _v(r"\frac{d}{d\theta}\sin Y = \cos\theta", lets) == "verified"
+    assert _v(r"\frac{d}{dt}(Q^T\mathbf{C}) = \dot{\mathbf{C}}^T\mathbf{C} + "
+              r"\mathbf{C}^T\dot{\mathbf{C}}",
+              ["Q = (\\mathbf{C})", r"\mathbf{C}(t): rotation"]) == "verified"
+
+
 @pytest.mark.parametrize("latex, token, construct", [
     (r"\cot\frac{1}{2}", r"\cot", "a function"),
     (r"\left\| x \right\|", r"\left\|", "a delimiter"),

@@ -77,6 +77,13 @@ def index_key(token: str) -> str:
     return out
 
 
+def _free(v) -> set:
+    """The symbols and matrix symbols of a model's value."""
+    if not isinstance(v, sp.Basic):
+        return set()
+    return set(v.atoms(sp.MatrixSymbol)) | set(v.atoms(sp.Symbol))
+
+
 class BookRules:
     """Transformer rules of the books' constructs (a mixin of the parser's ``_Build``: it
     provides ``_val``, ``_note``, ``glyphs``, ``overrides``, ``readings`` and ``made``)."""
@@ -234,6 +241,21 @@ class BookRules:
                                   f"the time derivative of {key}", "")
         return d
 
+    def models_of(self, names: set[str]) -> dict:
+        """The models read so far whose values mention a symbol named in ``names``,
+        directly or through another model, by name: their values (issue 52: ``Y = Z``,
+        ``Z = (\\theta)`` depends on ``\\theta`` as ``\\theta`` does)."""
+        out: dict = {}
+        grew = True
+        while grew:
+            grew = False
+            for name, v in getattr(self, "model_rhs", {}).items():
+                if name not in out and name not in names and any(
+                        a.name in names or a.name in out for a in _free(v)):
+                    out[name] = v
+                    grew = True
+        return out
+
     def time_derivative(self, x):
         """d/dt of an expression: the product rule over its matrix operations, the chain
         rule for scalars, each timed symbol's :meth:`velocity`; a symbol not declared a
@@ -245,11 +267,16 @@ class BookRules:
                              "unknown macro d/dt")
         self._note("d/dt: the product and chain rules over the symbols declared functions "
                    "of time")
+        self._moving = self.models_of(set(timed))  # models of functions of time
         return self._ddt(x, timed)
 
     def _ddt(self, x, timed):
+        """d/dt of ``x``; a model whose value mentions a function of time (``--let 'Y =
+        \\theta'``, ``\\theta(t)``) by its value's d/dt (issue 52)."""
         s = _shape(x)
         if isinstance(x, sp.MatrixSymbol):
+            if x.name in self._moving:  # a model of a function of time: its value's d/dt
+                return self._ddt(self._moving[x.name], timed)
             return self.velocity(timed[x.name], x) if x.name in timed else sp.ZeroMatrix(*s)
         if s is None:
             syms = [a for a in sp.sympify(x).free_symbols if a.name in timed]
@@ -257,8 +284,11 @@ class BookRules:
                    if a.name in timed) or sp.sympify(x).atoms(sp.MatrixExpr):
                 raise LatexError("d/dt of a scalar made of matrices: write the product out",
                                  "shapes")
+            moving = [a for a in sp.sympify(x).free_symbols if a.name in self._moving]
             return sum((sp.diff(x, a) * self.velocity(timed[a.name], a) for a in syms),
-                       sp.Integer(0))
+                       sp.Integer(0)) + sum(  # the chain rule through a scalar model
+                (sp.diff(x, a) * self._ddt(self._moving[a.name], timed) for a in moving),
+                sp.Integer(0))
         if isinstance(x, sp.MatAdd):
             return sp.MatAdd(*[self._ddt(a, timed) for a in x.args])
         if isinstance(x, sp.MatMul):

@@ -41,6 +41,7 @@ class _Reader:
         self.used: set[str] = set()
         self.glyphs: dict[str, Glyph] = {}
         self.models: dict = {}  # the notation's models of the glyphs used
+        self.model_rhs: dict = {}  # every model's value by its symbol's name (for d/dt)
         self.by_notation: set[str] = set()  # the glyphs the notation declares
         self.in_models: set[str] = set()  # the glyphs of the notation's models used
         self.functions: dict[str, Let] = {}  # the --let functions by key (issue 52)
@@ -107,6 +108,7 @@ class _Reader:
         self.in_models |= set(p.glyphs) - {x.key}
         g = Glyph(x.key, "*", self._name(x.key), _shape(rhs) or (), "model", "--notation")
         self.models[_symbol(g)] = rhs
+        self.model_rhs[g.name] = rhs
         return g
 
     def parse(self, text: str, what: str, over: dict | None = None, record: bool = True):
@@ -116,7 +118,8 @@ class _Reader:
         for _ in range(4):
             try:
                 p = parse_latex(text, self.book, {**self.over, **(over or {})}, reader=True,
-                                functions=self.expanders, choices=self.choices)
+                                functions=self.expanders, choices=self.choices,
+                                models=self.model_rhs)
             except LatexError as exc:
                 self.choice_points.update(getattr(exc, "choice_points", {}))
                 extra = self._extra(exc.glyphs) if exc.construct == "shapes" else {}

@@ -52,6 +52,7 @@ class _Build(GlyphRules, MeaningRules, VocabRules, BookRules, lark.Transformer):
         self.readings: list[str] = []
         self.glyphs: dict[str, Glyph] = {}
         self.made: dict = {}  # result -> (how, parts): to re-read a bracket as a block row
+        self.model_rhs: dict = {}  # the models read so far by name (d/dt differentiates them)
 
     # ---- numbers and groups
     def number(self, items):

@@ -15,7 +15,8 @@ __all__ = ["parse_latex"]
 
 def parse_latex(latex: str, section: str | None = "*", overrides: dict | None = None,
                 block_rows: bool = False, reader: bool = False,
-                functions: dict | None = None, choices: dict | None = None) -> Parsed:
+                functions: dict | None = None, choices: dict | None = None,
+                models: dict | None = None) -> Parsed:
     """Parse a LaTeX statement into relations of book symbols.
 
     Args:
@@ -34,6 +35,8 @@ def parse_latex(latex: str, section: str | None = "*", overrides: dict | None = 
             ``(value, parameter names)``, the body with the arguments substituted.
         choices: how to read each choice point by key (``{"R": "apply"}``; issue 52): ``X(y)``
             with ``X`` a model and ``y`` no scalar, a product unless told.
+        models: the models read so far, their values by symbol name: ``d/dt`` of a model
+            of a function of time differentiates its value (issue 52).
 
     Returns:
         A :class:`Parsed`.
@@ -51,6 +54,7 @@ def parse_latex(latex: str, section: str | None = "*", overrides: dict | None = 
     build.braces = []
     build.functions = functions or {}
     build.choices = choices or {}
+    build.model_rhs = models or {}
     try:
         stmts = build.transform(tree)
     except lark.exceptions.VisitError as exc:

@@ -58,6 +58,7 @@ def _read_models(rd: _Reader, lets: list[Let], values: dict) -> set[str]:
         rhs = p.chains[0][1]
         g = Glyph(x.key, "*", rd._name(x.key), _shape(rhs) or (), "model", "--let model")
         rd.over[x.key] = g
+        rd.model_rhs[g.name] = rhs
         values[_symbol(g)] = rhs
     return occurs
 
@@ -78,6 +79,7 @@ def _function_model(rd: _Reader, x: Let, values: dict) -> None:
     rhs = p.chains[0][1]
     g = Glyph(x.key, "*", rd._name(x.key), _shape(rhs) or (), "model", "--let model")
     rd.over[x.key] = g
+    rd.model_rhs[g.name] = rhs
     values[_symbol(g)] = rhs
 
 

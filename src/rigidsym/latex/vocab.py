@@ -27,6 +27,7 @@ import lark
 import sympy as sp
 
 from rigidsym.algebra import motions
+from rigidsym.latex.bookrules import _free as _free_atoms
 from rigidsym.latex.meaning import alternatives, as_written
 from rigidsym.latex.shapes import LatexError, _as_scalar, _shape, _words
 
@@ -177,7 +178,14 @@ class VocabRules:
             return self.time_derivative(self._val(x))
         self._note("d/dv: the vocabulary's derivative diff(X, v) (\\dot{X} stays the time "
                    "derivative)")
-        return motions.diff(_as_scalar(x), v)
+        x = _as_scalar(x)
+        through = self.models_of({v.name})  # a model in v: its value (issue 52)
+        for _ in range(len(through)):
+            at = {a: through[a.name] for a in _free_atoms(x) if a.name in through}
+            if not at:
+                break
+            x = x.xreplace(at)
+        return motions.diff(x, v)
 
     # ---- glyphs
     def calbase(self, items):

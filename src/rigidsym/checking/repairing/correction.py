@@ -89,19 +89,28 @@ def _search(eq, st, rels, outs, seed, settings, decide) -> tuple[list, list, dic
     of each member label)``."""
     failing = [r for r, o in zip(rels, outs, strict=True) if o.zero is False]
     budget = budget_of(eq, settings)
-    deadline = time.monotonic() + settings.seconds if settings.seconds else None
-    sh = repair.share(failing, rels, st.model, decide, seed)
+    limit = settings.seconds or 0.0
+    deadline = time.monotonic() + limit if settings.seconds else None
     searches, records, first = [], [], {}
-    for rel in failing:
-        s = repair.search_member(rel, sh, budget, deadline, settings.seconds or 0.0)
-        searches.append(repair.search_record(s, budget))
-        for f in s.found[:repair.KEEP]:
-            partners = _declared_partner(rel.label, len(st.printed), st.corrected or [])
-            equal = any(repair.same_relation(sh.generic, f.rel_sides, (c.lhs, c.rhs))
-                        for c in partners)
-            records.append(repair.repair_record(f, rel, sh.pools.keep, equal))
-        if s.found:
-            first[id(rel)] = s.found[0]
+    try:
+        with repair.time_limit(deadline):  # a step past the deadline is stopped (issue 52)
+            sh = repair.share(failing, rels, st.model, decide, seed)
+            for rel in failing:
+                s = repair.search_member(rel, sh, budget, deadline, limit)
+                searches.append(repair.search_record(s, budget))
+                for f in s.found[:repair.KEEP]:
+                    partners = _declared_partner(rel.label, len(st.printed),
+                                                 st.corrected or [])
+                    equal = deadline is None or time.monotonic() < deadline
+                    equal = equal and any(repair.same_relation(
+                        sh.generic, f.rel_sides, (c.lhs, c.rhs)) for c in partners)
+                    records.append(repair.repair_record(f, rel, sh.pools.keep, equal))
+                if s.found:
+                    first[id(rel)] = s.found[0]
+    except repair.Late:  # in the shared part or between members: the rest not searched
+        for rel in failing[len(searches):]:
+            s = repair.Search(member=rel.label, limit=limit, stopped="time")
+            searches.append(repair.search_record(s, budget))
     return searches, records, first
 
 

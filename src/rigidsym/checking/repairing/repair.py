@@ -25,11 +25,16 @@ explanations of the slip, and both are reported).
 from __future__ import annotations
 
 import re
+import signal
+import threading
 import time
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
+from contextlib import contextmanager
 from dataclasses import dataclass, field
 
 import sympy as sp
+from sympy.matrices.expressions.matexpr import MatrixElement
+from sympy.polys.matrices import DomainMatrix
 
 from rigidsym.checking.deciding.explicit import _entries, explicit, shape_of
 from rigidsym.checking.deciding.registry import Rel
@@ -134,6 +139,42 @@ class _Ctx:
         return False
 
 
+class Late(BaseException):  # noqa: N818  (not an error: the time is up)
+    """The repair search's time limit passed inside one of its steps (a symbolic inverse
+    of a final check, issue 52): raised by :func:`time_limit`'s alarm, caught by the search,
+    which stops and says so. A ``BaseException``, so that no ``except Exception`` on the
+    way (sympy's fallbacks) takes it for a failure and goes on."""
+
+
+@contextmanager
+def time_limit(deadline: float | None) -> Iterator[None]:
+    """Within the block, :class:`Late` is raised when ``time.monotonic()`` passes
+    ``deadline`` (``SIGALRM``, once), wherever the search is: between candidates the search
+    checks the time itself, but one step (sympy's Gauss-Jordan inverse of a 6x6) can take a
+    minute. Only in the main thread of a POSIX process whose ``SIGALRM`` has no handler
+    already (pytest-timeout's, a caller's); elsewhere the block runs unguarded."""
+    if deadline is None or not hasattr(signal, "setitimer") \
+            or threading.current_thread() is not threading.main_thread() \
+            or signal.getsignal(signal.SIGALRM) is not signal.SIG_DFL:
+        yield
+        return
+    on = [True]
+
+    def _late(signum, frame):
+        if on[0]:
+            on[0] = False
+            raise Late
+
+    old = signal.signal(signal.SIGALRM, _late)
+    try:
+        signal.setitimer(signal.ITIMER_REAL, max(deadline - time.monotonic(), 1e-3))
+        yield
+    finally:
+        on[0] = False
+        signal.setitimer(signal.ITIMER_REAL, 0)
+        signal.signal(signal.SIGALRM, old)
+
+
 # --------------------------------------------------------------------------- book symbols
 def book_difference(lhs, rhs) -> list | None:
     """``lhs - rhs`` entry by entry, expanded, with the book symbols left unsubstituted
@@ -145,7 +186,26 @@ def book_difference(lhs, rhs) -> list | None:
         a, b = explicit(lhs, {}), explicit(rhs, {})
     except (ValueError, NotImplementedError):
         return None
-    return [sp.expand(x - y) for x, y in zip(_entries(a), _entries(b), strict=True)]
+    diffs = [x - y for x, y in zip(_entries(a), _entries(b), strict=True)]
+    return _rational(diffs) or [sp.expand(x) for x in diffs]
+
+
+def _rational(xs: list) -> list | None:
+    """``xs`` as rational functions of their atoms (entries of matrix symbols, symbols,
+    ``cos θ`` as a generator, as :func:`sympy.expand` takes it), each one cancelled
+    fraction (zero exactly when it is zero), or ``None`` when they are not (a square
+    root): the inverse of a 4x4's entries (McCarthy, Sola's ``Ad`` of ``M^{-1}``) took
+    ``expand`` 30 s (issue 52), the fraction field under 1 s."""
+    sub = {a: sp.Dummy() for x in xs for a in sp.sympify(x).atoms(MatrixElement)}
+    try:
+        dm = DomainMatrix.from_list_sympy(1, len(xs), [[sp.sympify(x).xreplace(sub)
+                                                        for x in xs]])
+    except (sp.PolificationFailed, sp.CoercionFailed, sp.GeneratorsError):
+        return None
+    if dm.domain.is_EX or dm.domain.is_EXRAW:
+        return None
+    back = {v: k for k, v in sub.items()}
+    return [x.xreplace(back) for x in dm.to_Matrix()]
 
 
 def _generic(g: GenericValues, lhs, rhs):
@@ -228,6 +288,19 @@ def search_member(rel: Rel, sh: Shared, budget: int = REPAIR_BUDGET,
     """
     s = Search(member=rel.label, limit=limit)
     ctx = _Ctx(rel, sh, budget, s, T.sides(rel), deadline=deadline)
+    if ctx.late():
+        return s
+    try:
+        return _member(ctx)
+    except Late:  # the time limit passed inside a step (time_limit)
+        s.stopped, s.complete = "time", False
+        s.found.sort(key=lambda f: reader_key(f.edits, ctx.sides))
+        return s
+
+
+def _member(ctx: _Ctx) -> Search:
+    """:func:`search_member`'s body."""
+    rel, sh, s = ctx.rel, ctx.sh, ctx.search
     singles = candidates.prepare(rel, mutate.single_edits(rel, sh.pools), ctx.sides,
                                  sh.shapes)
     done = _run(ctx, (((x.edit,), x.raw) for x in singles))
