@@ -1654,7 +1654,7 @@ def transform_from_exponential_coordinates(
     Notes:
         Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 53 ulp in float64) over 3 regimes (docs/accuracy.md, kernels.accuracy).
 
-        Generated; 77 operations; math hash 6422323903f35e70.
+        Generated; 60 operations; math hash 84c3b7bba8e6b55d.
     """
     return _F.transform_from_exponential_coordinates(xi, out, check, on_singular, threads)
 

@@ -4,9 +4,9 @@
  * source: rigidsym.derivations.lie_maps.transform_from_exponential_coordinates (composed in rigidsym.derivations.kernels_spec)
  * equations: (sola:exp-se3), (sola:log-exp-se3)
  * template: c_kernel.c.j2
- * math hash: sha256:6422323903f35e70
+ * math hash: sha256:84c3b7bba8e6b55d
  * sympy 1.14.0, rigidsym 0.2.0
- * operations: 77
+ * operations: 60
  */
 #include "transform_from_exponential_coordinates.h"
 

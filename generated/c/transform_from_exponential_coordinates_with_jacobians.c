@@ -4,9 +4,9 @@
  * source: rigidsym.derivations.lie_maps.transform_from_exponential_coordinates (composed in rigidsym.derivations.kernels_spec)
  * equations: (sola:exp-se3), (sola:log-exp-se3)
  * template: c_kernel.c.j2
- * math hash: sha256:17f8e140ccf4351c
+ * math hash: sha256:4856f4b15a0b539f
  * sympy 1.14.0, rigidsym 0.2.0
- * operations: 363
+ * operations: 296
  */
 #include "transform_from_exponential_coordinates_with_jacobians.h"
 

@@ -3,9 +3,9 @@
 # source: rigidsym.derivations.lie_maps.transform_from_exponential_coordinates (composed in rigidsym.derivations.kernels_spec)
 # equations: (sola:exp-se3), (sola:log-exp-se3)
 # template: array_kernel.py.j2
-# math hash: sha256:6422323903f35e70
+# math hash: sha256:84c3b7bba8e6b55d
 # sympy 1.14.0, rigidsym 0.2.0
-# operations: 77
+# operations: 60
 """Exp of se(3): the transform of xi = [w; v].
 
 T = [[Exp(w), J_l(w) v], [0, 1]]
@@ -34,8 +34,8 @@ def _sin(x):
 def _cos(x):
     return _sincos(x)[..., 1]
 
-OPS = 77
-MATH_HASH = "6422323903f35e70"
+OPS = 60
+MATH_HASH = "84c3b7bba8e6b55d"
 COLUMNS = ("xi_0", "xi_1", "xi_2", "xi_3", "xi_4", "xi_5", )
 
 
@@ -54,28 +54,22 @@ def _main(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5):
     x11 = x8*xi_2
     x12 = x3*xi_1
     x13 = x3*xi_2
-    x14 = jax.numpy.where(jax.numpy.less(x2, 1.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(8.2206352466243295e-18*x2 - 2.8114572543455206e-15) + 7.6471637318198164e-13) - 1.6059043836821613e-10) + 2.505210838544172e-8) - 2.7557319223985893e-6) + 0.00019841269841269841) - 0.0083333333333333332) + 0.16666666666666666, (jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2)) - _sin(jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2))))*jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, 1.0/(x2*jax.numpy.sqrt(x2))))
-    x15 = x14*xi_4
-    x16 = xi_0*xi_1
-    x17 = x14*xi_5
-    x18 = x17*xi_2
-    x19 = x14*xi_3
-    x20 = -x2
-    x21 = x20*x3 + 1.0
-    x22 = x6*xi_0
+    x14 = (xi_0*xi_3 + xi_1*xi_4 + xi_2*xi_5)*jax.numpy.where(jax.numpy.less(x2, 1.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(8.2206352466243295e-18*x2 - 2.8114572543455206e-15) + 7.6471637318198164e-13) - 1.6059043836821613e-10) + 2.505210838544172e-8) - 2.7557319223985893e-6) + 0.00019841269841269841) - 0.0083333333333333332) + 0.16666666666666666, (jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2)) - _sin(jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2))))*jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, 1.0/(x2*jax.numpy.sqrt(x2))))
+    x15 = -x2*x3 + 1.0
+    x16 = x6*xi_0
     return (
         -x4 - x5 + 1.0,
         -x7 + x9,
         x10 + x11,
-        -x0*x19 - x1*x19 + x12*xi_5 - x13*xi_4 + x15*x16 + x18*xi_0 + xi_3,
+        x12*xi_5 - x13*xi_4 + x14*xi_0 + x6*xi_3,
         x7 + x9,
-        x21 + x4,
-        -x22 + x3*xi_1*xi_2,
-        x0*x15 + x13*xi_3 + x15*x20 + x16*x19 + x18*xi_1 - x8*xi_5 + xi_4,
+        x15 + x4,
+        -x16 + x3*xi_1*xi_2,
+        x13*xi_3 + x14*xi_1 + x6*xi_4 - x8*xi_5,
         -x10 + x11,
-        x12*xi_2 + x22,
-        x21 + x5,
-        x1*x17 - x12*xi_3 + x15*xi_1*xi_2 + x17*x20 + x19*xi_0*xi_2 + x8*xi_4 + xi_5,
+        x12*xi_2 + x16,
+        x15 + x5,
+        -x12*xi_3 + x14*xi_2 + x6*xi_5 + x8*xi_4,
         0.0,
         0.0,
         0.0,
@@ -92,7 +86,7 @@ VARIANTS = (
 
 def _vjp(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5, _g0, _g1, _g2, _g3, _g4, _g5, _g6, _g7, _g8, _g9, _g10, _g11, _g12, _g13, _g14, _g15):
     """The cotangents of the inputs (``COLUMNS``) from those of the outputs: reverse mode
-    over ``_main``, 176 operations."""
+    over ``_main``, 154 operations."""
     x0 = (xi_1*xi_1)
     x1 = (xi_2*xi_2)
     x2 = x0 + x1 + (xi_0*xi_0)
@@ -101,54 +95,39 @@ def _vjp(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5, _g0, _g1, _g2, _g3, _g4, _g5, _g6, 
     x8 = x3*xi_0
     x12 = x3*xi_1
     x13 = x3*xi_2
-    x14 = jax.numpy.where(jax.numpy.less(x2, 1.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(8.2206352466243295e-18*x2 - 2.8114572543455206e-15) + 7.6471637318198164e-13) - 1.6059043836821613e-10) + 2.505210838544172e-8) - 2.7557319223985893e-6) + 0.00019841269841269841) - 0.0083333333333333332) + 0.16666666666666666, (jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2)) - _sin(jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2))))*jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, 1.0/(x2*jax.numpy.sqrt(x2))))
-    x15 = x14*xi_4
-    x16 = xi_0*xi_1
-    x17 = x14*xi_5
-    x18 = x17*xi_2
-    x19 = x14*xi_3
-    x20 = -x2
+    x14 = (xi_0*xi_3 + xi_1*xi_4 + xi_2*xi_5)*jax.numpy.where(jax.numpy.less(x2, 1.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(8.2206352466243295e-18*x2 - 2.8114572543455206e-15) + 7.6471637318198164e-13) - 1.6059043836821613e-10) + 2.505210838544172e-8) - 2.7557319223985893e-6) + 0.00019841269841269841) - 0.0083333333333333332) + 0.16666666666666666, (jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2)) - _sin(jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2))))*jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, 1.0/(x2*jax.numpy.sqrt(x2))))
     _b0 = -_g6 + _g9
     _b1 = _g10 + _g5
-    _c0 = _g11*x17
-    _c1 = _g7*x15
-    _b2 = _b1*x3 + _c0 + _c1
-    _c2 = _g11*xi_2
-    _b3 = _c2*xi_0 + _g3*(-x0 - x1) + _g7*x16
-    _b4 = _g3*xi_0 + _g7*xi_1
-    _b5 = _b4*xi_2 + _g11*(x1 + x20)
-    _b6 = _g3*x15 + _g7*x19
-    _b7 = _c2*xi_1 + _g3*x16 + _g7*(x0 + x20)
-    _b8 = _b3*xi_3 + _b5*xi_5 + _b7*xi_4
-    _b9 = -_g3*xi_4 + _g7*xi_3
-    _b10 = -_g11*xi_3 + _g3*xi_5 + _g9*xi_2
-    _b11 = _g2 + _g8
-    _b12 = _g2 - _g8
-    _b13 = _g1 + _g4
-    _b14 = _b11*xi_2 + _b13*xi_1 + _g11*xi_4 - _g7*xi_5
-    _b15 = -_g1 + _g4
-    _b16 = _b0*xi_0 + _b12*xi_1 + _b15*xi_2
-    _b17 = -_g0 + _g10
-    _b18 = -_g0 + _g5
-    _c3 = _g6*xi_2
-    _b19 = _b1*x20 + _b10*xi_1 + _b14*xi_0 + _b17*x1 + _b18*x0 + _b9*xi_2 + _c3*xi_1
-    _b20 = _b16*jax.numpy.where(jax.numpy.less(x2, 1.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(2.2491658034764165e-14 - 7.3985717219618967e-17*x2) - 5.3530146122738714e-12) + 9.6354263020929685e-10) - 1.2526054192720859e-7) + 1.1022927689594357e-5) - 0.00059523809523809529) + 0.016666666666666666) - 0.16666666666666666, (0.5)*(jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2))*_cos(jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2))) - _sin(jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2))))*jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, 1.0/(x2*jax.numpy.sqrt(x2)))) + _b19*jax.numpy.where(jax.numpy.less(x2, 2.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(8.8967913924505729e-21*x2 - 3.6992858609809485e-18) + 1.249536557486898e-15) - 3.3456341326711696e-13) + 6.882447358637835e-11) - 1.043837849393405e-8) + 1.1022927689594355e-6) - 7.4404761904761911e-5) + 0.0027777777777777779) - 0.041666666666666664, (0.5)*(jax.numpy.where(jax.numpy.less(x2, 2.0), 1.414213562373095, jax.numpy.sqrt(x2))*_sin(jax.numpy.where(jax.numpy.less(x2, 2.0), 1.414213562373095, jax.numpy.sqrt(x2))) + 2.0*_cos(jax.numpy.where(jax.numpy.less(x2, 2.0), 1.414213562373095, jax.numpy.sqrt(x2))) - 2.0)*jax.numpy.where(jax.numpy.less(x2, 2.0), 0.25, 1.0/(x2*x2))) - _b2 + _b8*jax.numpy.where(jax.numpy.less(x2, 4.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(8.8244455617243787e-46 - 5.6796905715705686e-49*x2) - 1.2351282304560222e-42) + 1.5484148733811025e-39) - 1.7274503431157927e-36) + 1.7025750581749252e-33) - 1.4702951752382032e-30) + 1.1020427836554655e-27) - 7.0916453128229206e-25) + 3.8681701706306839e-22) - 1.7615646957052136e-19) + 6.5765081972994636e-17) - 1.9680200780418645e-14) + 4.5882982390918896e-12) - 8.0295219184108074e-10) + 1.0020843354176688e-7) - 8.2671957671957678e-6) + 0.00039682539682539683) - 0.0083333333333333332, (0.5)*((1.0 - _cos(jax.numpy.where(jax.numpy.less(x2, 4.0), 2.0, jax.numpy.sqrt(x2))))*jax.numpy.where(jax.numpy.less(x2, 4.0), 2.0, jax.numpy.sqrt(x2)) - 3.0*jax.numpy.where(jax.numpy.less(x2, 4.0), 2.0, jax.numpy.sqrt(x2)) + 3.0*_sin(jax.numpy.where(jax.numpy.less(x2, 4.0), 2.0, jax.numpy.sqrt(x2))))*jax.numpy.where(jax.numpy.less(x2, 4.0), 0.03125, 1.0/((x2*x2)*jax.numpy.sqrt(x2))))
-    _c4 = _b20 - _g3*x19
-    _b21 = _b17*x3 + _c0 + _c4
-    _b22 = _b18*x3 + _c1 + _c4
+    _b2 = _g11*xi_2 + _g3*xi_0 + _g7*xi_1
+    _b3 = -_g3*xi_4 + _g7*xi_3
+    _b4 = -_g11*xi_3 + _g3*xi_5 + _g9*xi_2
+    _b5 = _g2 + _g8
+    _b6 = _g2 - _g8
+    _b7 = _g1 + _g4
+    _b8 = _b5*xi_2 + _b7*xi_1 + _g11*xi_4 - _g7*xi_5
+    _b9 = -_g1 + _g4
+    _b10 = _b0*xi_0 + _b6*xi_1 + _b9*xi_2 + _g11*xi_5 + _g3*xi_3 + _g7*xi_4
+    _b11 = -_g0 + _g10
+    _b12 = -_g0 + _g5
+    _c0 = _g6*xi_2
+    _b13 = -_b1*x2 + _b11*x1 + _b12*x0 + _b3*xi_2 + _b4*xi_1 + _b8*xi_0 + _c0*xi_1
+    _b14 = -_b1*x3 + _b10*jax.numpy.where(jax.numpy.less(x2, 1.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(2.2491658034764165e-14 - 7.3985717219618967e-17*x2) - 5.3530146122738714e-12) + 9.6354263020929685e-10) - 1.2526054192720859e-7) + 1.1022927689594357e-5) - 0.00059523809523809529) + 0.016666666666666666) - 0.16666666666666666, (0.5)*(jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2))*_cos(jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2))) - _sin(jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2))))*jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, 1.0/(x2*jax.numpy.sqrt(x2)))) + _b13*jax.numpy.where(jax.numpy.less(x2, 2.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(8.8967913924505729e-21*x2 - 3.6992858609809485e-18) + 1.249536557486898e-15) - 3.3456341326711696e-13) + 6.882447358637835e-11) - 1.043837849393405e-8) + 1.1022927689594355e-6) - 7.4404761904761911e-5) + 0.0027777777777777779) - 0.041666666666666664, (0.5)*(jax.numpy.where(jax.numpy.less(x2, 2.0), 1.414213562373095, jax.numpy.sqrt(x2))*_sin(jax.numpy.where(jax.numpy.less(x2, 2.0), 1.414213562373095, jax.numpy.sqrt(x2))) + 2.0*_cos(jax.numpy.where(jax.numpy.less(x2, 2.0), 1.414213562373095, jax.numpy.sqrt(x2))) - 2.0)*jax.numpy.where(jax.numpy.less(x2, 2.0), 0.25, 1.0/(x2*x2))) + _b2*(xi_0*xi_3 + xi_1*xi_4 + xi_2*xi_5)*jax.numpy.where(jax.numpy.less(x2, 4.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(8.8244455617243787e-46 - 5.6796905715705686e-49*x2) - 1.2351282304560222e-42) + 1.5484148733811025e-39) - 1.7274503431157927e-36) + 1.7025750581749252e-33) - 1.4702951752382032e-30) + 1.1020427836554655e-27) - 7.0916453128229206e-25) + 3.8681701706306839e-22) - 1.7615646957052136e-19) + 6.5765081972994636e-17) - 1.9680200780418645e-14) + 4.5882982390918896e-12) - 8.0295219184108074e-10) + 1.0020843354176688e-7) - 8.2671957671957678e-6) + 0.00039682539682539683) - 0.0083333333333333332, (0.5)*((1.0 - _cos(jax.numpy.where(jax.numpy.less(x2, 4.0), 2.0, jax.numpy.sqrt(x2))))*jax.numpy.where(jax.numpy.less(x2, 4.0), 2.0, jax.numpy.sqrt(x2)) - 3.0*jax.numpy.where(jax.numpy.less(x2, 4.0), 2.0, jax.numpy.sqrt(x2)) + 3.0*_sin(jax.numpy.where(jax.numpy.less(x2, 4.0), 2.0, jax.numpy.sqrt(x2))))*jax.numpy.where(jax.numpy.less(x2, 4.0), 0.03125, 1.0/((x2*x2)*jax.numpy.sqrt(x2))))
+    _b15 = _b11*x3 + _b14
+    _b16 = _b12*x3 + _b14
+    _c1 = _b2*jax.numpy.where(jax.numpy.less(x2, 1.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(8.2206352466243295e-18*x2 - 2.8114572543455206e-15) + 7.6471637318198164e-13) - 1.6059043836821613e-10) + 2.505210838544172e-8) - 2.7557319223985893e-6) + 0.00019841269841269841) - 0.0083333333333333332) + 0.16666666666666666, (jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2)) - _sin(jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2))))*jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, 1.0/(x2*jax.numpy.sqrt(x2))))
     return (
-        _b0*x6 + _b14*x3 + 2.0*_b20*xi_0 + _b6*xi_1 + _c2*x19 + _g3*x18,
-        _b10*x3 + _b12*x6 + _b13*x8 + 2.0*_b22*xi_1 + _b6*xi_0 + _c2*x15 + _c3*x3 + _g7*x18,
-        _b11*x8 + _b15*x6 + 2.0*_b21*xi_2 + _b4*x17 + _b9*x3 + _g11*(x15*xi_1 + x19*xi_0) + _g6*x3*xi_1 + _g9*x12,
-        _b3*x14 - _g11*x12 + _g3 + _g7*x13,
-        _b7*x14 + _g11*x8 - _g3*x13 + _g7,
-        _b5*x14 + _g11 + _g3*x12 - _g7*x8,
+        _b0*x6 + 2.0*_b14*xi_0 + _b8*x3 + _c1*xi_3 + _g3*x14,
+        2.0*_b16*xi_1 + _b4*x3 + _b6*x6 + _b7*x8 + _c0*x3 + _c1*xi_4 + _g7*x14,
+        2.0*_b15*xi_2 + _b3*x3 + _b5*x8 + _b9*x6 + _c1*xi_5 + _g11*x14 + _g6*x3*xi_1 + _g9*x12,
+        _c1*xi_0 - _g11*x12 + _g3*x6 + _g7*x13,
+        _c1*xi_1 + _g11*x8 - _g3*x13 + _g7*x6,
+        _c1*xi_2 + _g11*x6 + _g3*x12 - _g7*x8,
     )
 
 
 def _jvp(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5, _t0, _t1, _t2, _t3, _t4, _t5):
     """The tangents of the outputs from those of the inputs, linear in the tangents:
-    forward mode over ``_main``, 177 operations."""
+    forward mode over ``_main``, 153 operations."""
     x0 = (xi_1*xi_1)
     _d0 = 2.0*_t1*xi_1
     x1 = (xi_2*xi_2)
@@ -174,35 +153,24 @@ def _jvp(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5, _t0, _t1, _t2, _t3, _t4, _t5):
     x13 = x3*xi_2
     _e2 = _t2*x3
     _d13 = _d3*xi_2 + _e2
-    x14 = jax.numpy.where(jax.numpy.less(x2, 1.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(8.2206352466243295e-18*x2 - 2.8114572543455206e-15) + 7.6471637318198164e-13) - 1.6059043836821613e-10) + 2.505210838544172e-8) - 2.7557319223985893e-6) + 0.00019841269841269841) - 0.0083333333333333332) + 0.16666666666666666, (jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2)) - _sin(jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2))))*jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, 1.0/(x2*jax.numpy.sqrt(x2))))
-    _d14 = _d2*jax.numpy.where(jax.numpy.less(x2, 4.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(8.8244455617243787e-46 - 5.6796905715705686e-49*x2) - 1.2351282304560222e-42) + 1.5484148733811025e-39) - 1.7274503431157927e-36) + 1.7025750581749252e-33) - 1.4702951752382032e-30) + 1.1020427836554655e-27) - 7.0916453128229206e-25) + 3.8681701706306839e-22) - 1.7615646957052136e-19) + 6.5765081972994636e-17) - 1.9680200780418645e-14) + 4.5882982390918896e-12) - 8.0295219184108074e-10) + 1.0020843354176688e-7) - 8.2671957671957678e-6) + 0.00039682539682539683) - 0.0083333333333333332, (0.5)*((1.0 - _cos(jax.numpy.where(jax.numpy.less(x2, 4.0), 2.0, jax.numpy.sqrt(x2))))*jax.numpy.where(jax.numpy.less(x2, 4.0), 2.0, jax.numpy.sqrt(x2)) - 3.0*jax.numpy.where(jax.numpy.less(x2, 4.0), 2.0, jax.numpy.sqrt(x2)) + 3.0*_sin(jax.numpy.where(jax.numpy.less(x2, 4.0), 2.0, jax.numpy.sqrt(x2))))*jax.numpy.where(jax.numpy.less(x2, 4.0), 0.03125, 1.0/((x2*x2)*jax.numpy.sqrt(x2))))
-    x15 = x14*xi_4
-    _d15 = _d14*xi_4 + _t4*x14
-    x16 = xi_0*xi_1
-    _d16 = _t0*xi_1 + _t1*xi_0
-    x17 = x14*xi_5
-    _d17 = _d14*xi_5 + _t5*x14
-    x18 = x17*xi_2
-    _d18 = _d17*xi_2 + _t2*x17
-    x19 = x14*xi_3
-    _d19 = _d14*xi_3 + _t3*x14
-    x20 = -x2
-    _d20 = -_d2
-    _d21 = _d20*x3 + _d3*x20
-    _d22 = _d6*xi_0 + _t0*x6
+    x14 = (xi_0*xi_3 + xi_1*xi_4 + xi_2*xi_5)*jax.numpy.where(jax.numpy.less(x2, 1.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(8.2206352466243295e-18*x2 - 2.8114572543455206e-15) + 7.6471637318198164e-13) - 1.6059043836821613e-10) + 2.505210838544172e-8) - 2.7557319223985893e-6) + 0.00019841269841269841) - 0.0083333333333333332) + 0.16666666666666666, (jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2)) - _sin(jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2))))*jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, 1.0/(x2*jax.numpy.sqrt(x2))))
+    _e3 = jax.numpy.where(jax.numpy.less(x2, 1.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(8.2206352466243295e-18*x2 - 2.8114572543455206e-15) + 7.6471637318198164e-13) - 1.6059043836821613e-10) + 2.505210838544172e-8) - 2.7557319223985893e-6) + 0.00019841269841269841) - 0.0083333333333333332) + 0.16666666666666666, (jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2)) - _sin(jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, jax.numpy.sqrt(x2))))*jax.numpy.where(jax.numpy.less(x2, 1.0), 1.0, 1.0/(x2*jax.numpy.sqrt(x2))))
+    _d14 = _d2*(xi_0*xi_3 + xi_1*xi_4 + xi_2*xi_5)*jax.numpy.where(jax.numpy.less(x2, 4.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(8.8244455617243787e-46 - 5.6796905715705686e-49*x2) - 1.2351282304560222e-42) + 1.5484148733811025e-39) - 1.7274503431157927e-36) + 1.7025750581749252e-33) - 1.4702951752382032e-30) + 1.1020427836554655e-27) - 7.0916453128229206e-25) + 3.8681701706306839e-22) - 1.7615646957052136e-19) + 6.5765081972994636e-17) - 1.9680200780418645e-14) + 4.5882982390918896e-12) - 8.0295219184108074e-10) + 1.0020843354176688e-7) - 8.2671957671957678e-6) + 0.00039682539682539683) - 0.0083333333333333332, (0.5)*((1.0 - _cos(jax.numpy.where(jax.numpy.less(x2, 4.0), 2.0, jax.numpy.sqrt(x2))))*jax.numpy.where(jax.numpy.less(x2, 4.0), 2.0, jax.numpy.sqrt(x2)) - 3.0*jax.numpy.where(jax.numpy.less(x2, 4.0), 2.0, jax.numpy.sqrt(x2)) + 3.0*_sin(jax.numpy.where(jax.numpy.less(x2, 4.0), 2.0, jax.numpy.sqrt(x2))))*jax.numpy.where(jax.numpy.less(x2, 4.0), 0.03125, 1.0/((x2*x2)*jax.numpy.sqrt(x2)))) + _e3*_t0*xi_3 + _e3*_t1*xi_4 + _e3*_t2*xi_5 + _e3*_t3*xi_0 + _e3*_t4*xi_1 + _e3*_t5*xi_2
+    _d15 = -_d2*x3 - _d3*x2
+    _d16 = _d6*xi_0 + _t0*x6
     return (
         -_d4 - _d5,
         -_d7 + _d9,
         _d10 + _d11,
-        -_d0*x19 - _d1*x19 + _d12*xi_5 - _d13*xi_4 + _d15*x16 + _d16*x15 + _d18*xi_0 + _d19*(-x0 - x1) + _t0*x18 + _t3 - _t4*x13 + _t5*x12,
+        _d12*xi_5 - _d13*xi_4 + _d14*xi_0 + _d6*xi_3 + _t0*x14 + _t3*x6 - _t4*x13 + _t5*x12,
         _d7 + _d9,
-        _d21 + _d4,
-        -_d22 + _e0*xi_2 + _e1*xi_2 + _e2*xi_1,
-        _d0*x15 + _d13*xi_3 + _d15*(x0 + x20) + _d16*x19 + _d18*xi_1 + _d19*x16 + _d20*x15 - _d8*xi_5 + _t1*x18 + _t3*x13 + _t4 - _t5*x8,
+        _d15 + _d4,
+        -_d16 + _e0*xi_2 + _e1*xi_2 + _e2*xi_1,
+        _d13*xi_3 + _d14*xi_1 + _d6*xi_4 - _d8*xi_5 + _t1*x14 + _t3*x13 + _t4*x6 - _t5*x8,
         -_d10 + _d11,
-        _d12*xi_2 + _d22 + _t2*x12,
-        _d21 + _d5,
-        _d1*x17 - _d12*xi_3 + _d15*xi_1*xi_2 + _d17*(x1 + x20) + _d19*xi_0*xi_2 + _d20*x17 + _d8*xi_4 + _t0*x19*xi_2 + _t1*x15*xi_2 + _t2*(x15*xi_1 + x19*xi_0) - _t3*x12 + _t4*x8 + _t5,
+        _d12*xi_2 + _d16 + _t2*x12,
+        _d15 + _d5,
+        -_d12*xi_3 + _d14*xi_2 + _d6*xi_5 + _d8*xi_4 + _t2*x14 - _t3*x12 + _t4*x8 + _t5*x6,
         0.0,
         0.0,
         0.0,

@@ -3,9 +3,9 @@
 # source: rigidsym.derivations.lie_maps.transform_from_exponential_coordinates (composed in rigidsym.derivations.kernels_spec)
 # equations: (sola:exp-se3), (sola:log-exp-se3)
 # template: numpy_kernel.py.j2
-# math hash: sha256:6422323903f35e70
+# math hash: sha256:84c3b7bba8e6b55d
 # sympy 1.14.0, rigidsym 0.2.0
-# operations: 77
+# operations: 60
 """Exp of se(3): the transform of xi = [w; v].
 
 T = [[Exp(w), J_l(w) v], [0, 1]]
@@ -19,8 +19,8 @@ the ``(n,)`` uint8 array of flags: 0 fine, ``SINGULAR`` (a denominator is exactl
 
 import numpy
 
-OPS = 77
-MATH_HASH = "6422323903f35e70"
+OPS = 60
+MATH_HASH = "84c3b7bba8e6b55d"
 #: sample flags returned by the batch function
 SINGULAR, NONFINITE = 1, 2
 
@@ -40,28 +40,22 @@ def _main(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5):
     x11 = x8*xi_2
     x12 = x3*xi_1
     x13 = x3*xi_2
-    x14 = numpy.where(numpy.less(x2, 1.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(8.2206352466243295e-18*x2 - 2.8114572543455206e-15) + 7.6471637318198164e-13) - 1.6059043836821613e-10) + 2.505210838544172e-8) - 2.7557319223985893e-6) + 0.00019841269841269841) - 0.0083333333333333332) + 0.16666666666666666, (numpy.where(numpy.less(x2, 1.0), 1.0, numpy.sqrt(x2)) - numpy.sin(numpy.where(numpy.less(x2, 1.0), 1.0, numpy.sqrt(x2))))*numpy.where(numpy.less(x2, 1.0), 1.0, 1.0/(x2*numpy.sqrt(x2))))
-    x15 = x14*xi_4
-    x16 = xi_0*xi_1
-    x17 = x14*xi_5
-    x18 = x17*xi_2
-    x19 = x14*xi_3
-    x20 = -x2
-    x21 = x20*x3 + 1
-    x22 = x6*xi_0
+    x14 = (xi_0*xi_3 + xi_1*xi_4 + xi_2*xi_5)*numpy.where(numpy.less(x2, 1.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(8.2206352466243295e-18*x2 - 2.8114572543455206e-15) + 7.6471637318198164e-13) - 1.6059043836821613e-10) + 2.505210838544172e-8) - 2.7557319223985893e-6) + 0.00019841269841269841) - 0.0083333333333333332) + 0.16666666666666666, (numpy.where(numpy.less(x2, 1.0), 1.0, numpy.sqrt(x2)) - numpy.sin(numpy.where(numpy.less(x2, 1.0), 1.0, numpy.sqrt(x2))))*numpy.where(numpy.less(x2, 1.0), 1.0, 1.0/(x2*numpy.sqrt(x2))))
+    x15 = -x2*x3 + 1
+    x16 = x6*xi_0
     return (
         -x4 - x5 + 1,
         -x7 + x9,
         x10 + x11,
-        -x0*x19 - x1*x19 + x12*xi_5 - x13*xi_4 + x15*x16 + x18*xi_0 + xi_3,
+        x12*xi_5 - x13*xi_4 + x14*xi_0 + x6*xi_3,
         x7 + x9,
-        x21 + x4,
-        -x22 + x3*xi_1*xi_2,
-        x0*x15 + x13*xi_3 + x15*x20 + x16*x19 + x18*xi_1 - x8*xi_5 + xi_4,
+        x15 + x4,
+        -x16 + x3*xi_1*xi_2,
+        x13*xi_3 + x14*xi_1 + x6*xi_4 - x8*xi_5,
         -x10 + x11,
-        x12*xi_2 + x22,
-        x21 + x5,
-        x1*x17 - x12*xi_3 + x15*xi_1*xi_2 + x17*x20 + x19*xi_0*xi_2 + x8*xi_4 + xi_5,
+        x12*xi_2 + x16,
+        x15 + x5,
+        -x12*xi_3 + x14*xi_2 + x6*xi_5 + x8*xi_4,
         0,
         0,
         0,

@@ -3,9 +3,9 @@
 # source: rigidsym.derivations.lie_maps.transform_from_exponential_coordinates (composed in rigidsym.derivations.kernels_spec)
 # equations: (sola:exp-se3), (sola:log-exp-se3)
 # template: numpy_kernel.py.j2
-# math hash: sha256:17f8e140ccf4351c
+# math hash: sha256:4856f4b15a0b539f
 # sympy 1.14.0, rigidsym 0.2.0
-# operations: 363
+# operations: 296
 """Exp of se(3): the transform of xi = [w; v], with the Jacobians of its outputs.
 
 T = [[Exp(w), J_l(w) v], [0, 1]]; and d(output)/d(input) by sympy on the declared formula
@@ -19,8 +19,8 @@ the ``(n,)`` uint8 array of flags: 0 fine, ``SINGULAR`` (a denominator is exactl
 
 import numpy
 
-OPS = 363
-MATH_HASH = "17f8e140ccf4351c"
+OPS = 296
+MATH_HASH = "4856f4b15a0b539f"
 #: sample flags returned by the batch function
 SINGULAR, NONFINITE = 1, 2
 
@@ -40,195 +40,174 @@ def _main(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5):
     x11 = x3*xi_0
     x12 = x11*xi_2
     x13 = x3*xi_2
-    x14 = numpy.where(numpy.less(x2, 1.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(8.2206352466243295e-18*x2 - 2.8114572543455206e-15) + 7.6471637318198164e-13) - 1.6059043836821613e-10) + 2.505210838544172e-8) - 2.7557319223985893e-6) + 0.00019841269841269841) - 0.0083333333333333332) + 0.16666666666666666, (numpy.where(numpy.less(x2, 1.0), 1.0, numpy.sqrt(x2)) - numpy.sin(numpy.where(numpy.less(x2, 1.0), 1.0, numpy.sqrt(x2))))*numpy.where(numpy.less(x2, 1.0), 1.0, 1.0/(x2*numpy.sqrt(x2))))
-    x15 = x14*xi_4
-    x16 = x15*xi_1
-    x17 = x14*xi_5
-    x18 = x17*xi_2
-    x19 = x0*x14
-    x20 = x1*x14
-    x21 = -x2
-    x22 = x21*x3 + 1
-    x23 = x6*xi_0
-    x24 = x14*xi_0
-    x25 = x24*xi_1
-    x26 = x14*x21
-    x27 = x24*xi_2
-    x28 = numpy.where(numpy.less(x2, 2.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(7.398571721961897e-18 - 1.7793582784901146e-20*x2) - 2.499073114973796e-15) + 6.6912682653423392e-13) - 1.376489471727567e-10) + 2.08767569878681e-8) - 2.2045855379188711e-6) + 0.00014880952380952382) - 0.0055555555555555558) + 0.083333333333333329, (-numpy.where(numpy.less(x2, 2.0), 1.414213562373095, numpy.sqrt(x2))*numpy.sin(numpy.where(numpy.less(x2, 2.0), 1.414213562373095, numpy.sqrt(x2))) - 2*numpy.cos(numpy.where(numpy.less(x2, 2.0), 1.414213562373095, numpy.sqrt(x2))) + 2)*numpy.where(numpy.less(x2, 2.0), 0.25, 1.0/(x2*x2)))
-    x29 = x28*xi_0
-    x30 = -2*x8
-    x31 = (xi_1*xi_1*xi_1)
-    x32 = x1*x28
-    x33 = x28*x31 + x32*xi_1
-    x34 = -2*x13
-    x35 = (xi_2*xi_2*xi_2)
-    x36 = x0*xi_2
-    x37 = x28*x35 + x28*x36
-    x38 = numpy.where(numpy.less(x2, 1.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(1.4797143443923793e-16*x2 - 4.498331606952833e-14) + 1.0706029224547743e-11) - 1.9270852604185937e-9) + 2.5052108385441718e-7) - 2.2045855379188714e-5) + 0.0011904761904761906) - 0.033333333333333333) + 0.33333333333333331, (-numpy.where(numpy.less(x2, 1.0), 1.0, numpy.sqrt(x2))*numpy.cos(numpy.where(numpy.less(x2, 1.0), 1.0, numpy.sqrt(x2))) + numpy.sin(numpy.where(numpy.less(x2, 1.0), 1.0, numpy.sqrt(x2))))*numpy.where(numpy.less(x2, 1.0), 1.0, 1.0/(x2*numpy.sqrt(x2))))
-    x39 = x38*xi_2
-    x40 = x39*xi_0
-    x41 = numpy.where(numpy.less(x2, 2.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(1.7793582784901146e-20*x2 - 7.398571721961897e-18) + 2.499073114973796e-15) - 6.6912682653423392e-13) + 1.376489471727567e-10) - 2.08767569878681e-8) + 2.2045855379188711e-6) - 0.00014880952380952382) + 0.0055555555555555558) - 0.083333333333333329, (numpy.where(numpy.less(x2, 2.0), 1.414213562373095, numpy.sqrt(x2))*numpy.sin(numpy.where(numpy.less(x2, 2.0), 1.414213562373095, numpy.sqrt(x2))) + 2*numpy.cos(numpy.where(numpy.less(x2, 2.0), 1.414213562373095, numpy.sqrt(x2))) - 2)*numpy.where(numpy.less(x2, 2.0), 0.25, 1.0/(x2*x2)))
-    x42 = x2*x41
-    x43 = x33 + x42*xi_1 + x8
+    x14 = xi_0*xi_3
+    x15 = xi_1*xi_4
+    x16 = xi_2*xi_5
+    x17 = x14 + x15 + x16
+    x18 = numpy.where(numpy.less(x2, 1.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(8.2206352466243295e-18*x2 - 2.8114572543455206e-15) + 7.6471637318198164e-13) - 1.6059043836821613e-10) + 2.505210838544172e-8) - 2.7557319223985893e-6) + 0.00019841269841269841) - 0.0083333333333333332) + 0.16666666666666666, (numpy.where(numpy.less(x2, 1.0), 1.0, numpy.sqrt(x2)) - numpy.sin(numpy.where(numpy.less(x2, 1.0), 1.0, numpy.sqrt(x2))))*numpy.where(numpy.less(x2, 1.0), 1.0, 1.0/(x2*numpy.sqrt(x2))))
+    x19 = x17*x18
+    x20 = -x2*x3 + 1
+    x21 = x6*xi_0
+    x22 = numpy.where(numpy.less(x2, 2.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(7.398571721961897e-18 - 1.7793582784901146e-20*x2) - 2.499073114973796e-15) + 6.6912682653423392e-13) - 1.376489471727567e-10) + 2.08767569878681e-8) - 2.2045855379188711e-6) + 0.00014880952380952382) - 0.0055555555555555558) + 0.083333333333333329, (-numpy.where(numpy.less(x2, 2.0), 1.414213562373095, numpy.sqrt(x2))*numpy.sin(numpy.where(numpy.less(x2, 2.0), 1.414213562373095, numpy.sqrt(x2))) - 2*numpy.cos(numpy.where(numpy.less(x2, 2.0), 1.414213562373095, numpy.sqrt(x2))) + 2)*numpy.where(numpy.less(x2, 2.0), 0.25, 1.0/(x2*x2)))
+    x23 = x22*xi_0
+    x24 = -2*x8
+    x25 = (xi_1*xi_1*xi_1)
+    x26 = x1*x22
+    x27 = x22*x25 + x26*xi_1
+    x28 = -2*x13
+    x29 = (xi_2*xi_2*xi_2)
+    x30 = x0*xi_2
+    x31 = x22*x29 + x22*x30
+    x32 = numpy.where(numpy.less(x2, 1.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(1.4797143443923793e-16*x2 - 4.498331606952833e-14) + 1.0706029224547743e-11) - 1.9270852604185937e-9) + 2.5052108385441718e-7) - 2.2045855379188714e-5) + 0.0011904761904761906) - 0.033333333333333333) + 0.33333333333333331, (-numpy.where(numpy.less(x2, 1.0), 1.0, numpy.sqrt(x2))*numpy.cos(numpy.where(numpy.less(x2, 1.0), 1.0, numpy.sqrt(x2))) + numpy.sin(numpy.where(numpy.less(x2, 1.0), 1.0, numpy.sqrt(x2))))*numpy.where(numpy.less(x2, 1.0), 1.0, 1.0/(x2*numpy.sqrt(x2))))
+    x33 = x32*xi_2
+    x34 = x33*xi_0
+    x35 = numpy.where(numpy.less(x2, 2.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(1.7793582784901146e-20*x2 - 7.398571721961897e-18) + 2.499073114973796e-15) - 6.6912682653423392e-13) + 1.376489471727567e-10) - 2.08767569878681e-8) + 2.2045855379188711e-6) - 0.00014880952380952382) + 0.0055555555555555558) - 0.083333333333333329, (numpy.where(numpy.less(x2, 2.0), 1.414213562373095, numpy.sqrt(x2))*numpy.sin(numpy.where(numpy.less(x2, 2.0), 1.414213562373095, numpy.sqrt(x2))) + 2*numpy.cos(numpy.where(numpy.less(x2, 2.0), 1.414213562373095, numpy.sqrt(x2))) - 2)*numpy.where(numpy.less(x2, 2.0), 0.25, 1.0/(x2*x2)))
+    x36 = x2*x35
+    x37 = x27 + x36*xi_1 + x8
+    x38 = x33*xi_1
+    x39 = x35*xi_0
+    x40 = x0*x39
+    x41 = x11 + x40
+    x42 = x1*x32
+    x43 = -x6
     x44 = x39*xi_1
-    x45 = x41*xi_0
-    x46 = x0*x45
-    x47 = x11 + x46
-    x48 = x1*x38
-    x49 = x45*xi_1
-    x50 = x49*xi_2
-    x51 = x50 - x6
-    x52 = numpy.where(numpy.less(x2, 1.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(4.498331606952833e-14 - 1.4797143443923793e-16*x2) - 1.0706029224547743e-11) + 1.9270852604185937e-9) - 2.5052108385441718e-7) + 2.2045855379188714e-5) - 0.0011904761904761906) + 0.033333333333333333) - 0.33333333333333331, (numpy.where(numpy.less(x2, 1.0), 1.0, numpy.sqrt(x2))*numpy.cos(numpy.where(numpy.less(x2, 1.0), 1.0, numpy.sqrt(x2))) - numpy.sin(numpy.where(numpy.less(x2, 1.0), 1.0, numpy.sqrt(x2))))*numpy.where(numpy.less(x2, 1.0), 1.0, 1.0/(x2*numpy.sqrt(x2))))
-    x53 = x52*xi_1
-    x54 = x53*xi_0
-    x55 = x13 + x37 + x42*xi_2
-    x56 = x0*x52
-    x57 = x50 + x6
-    x58 = x53*xi_2
-    x59 = x1*x45
-    x60 = x11 + x59
-    x61 = xi_2*xi_4
-    x62 = numpy.where(numpy.less(x2, 4.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(1.1359381143141137e-48*x2 - 1.7648891123448757e-45) + 2.4702564609120444e-42) - 3.096829746762205e-39) + 3.4549006862315854e-36) - 3.4051501163498504e-33) + 2.9405903504764064e-30) - 2.204085567310931e-27) + 1.4183290625645841e-24) - 7.7363403412613678e-22) + 3.5231293914104271e-19) - 1.3153016394598927e-16) + 3.936040156083729e-14) - 9.1765964781837793e-12) + 1.6059043836821615e-9) - 2.0041686708353376e-7) + 1.6534391534391536e-5) - 0.00079365079365079365) + 0.016666666666666666, (numpy.where(numpy.less(x2, 4.0), 2.0, numpy.sqrt(x2))*numpy.cos(numpy.where(numpy.less(x2, 4.0), 2.0, numpy.sqrt(x2))) + 2*numpy.where(numpy.less(x2, 4.0), 2.0, numpy.sqrt(x2)) - 3*numpy.sin(numpy.where(numpy.less(x2, 4.0), 2.0, numpy.sqrt(x2))))*numpy.where(numpy.less(x2, 4.0), 0.03125, 1.0/((x2*x2)*numpy.sqrt(x2))))
-    x63 = x31*x62
-    x64 = x35*x62
-    x65 = x0*xi_0
-    x66 = x62*xi_3
-    x67 = x1*x66
-    x68 = x62*xi_4
-    x69 = x1*xi_1
-    x70 = x62*xi_5
-    x71 = numpy.where(numpy.less(x2, 4.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(1.7648891123448757e-45 - 1.1359381143141137e-48*x2) - 2.4702564609120444e-42) + 3.096829746762205e-39) - 3.4549006862315854e-36) + 3.4051501163498504e-33) - 2.9405903504764064e-30) + 2.204085567310931e-27) - 1.4183290625645841e-24) + 7.7363403412613678e-22) - 3.5231293914104271e-19) + 1.3153016394598927e-16) - 3.936040156083729e-14) + 9.1765964781837793e-12) - 1.6059043836821615e-9) + 2.0041686708353376e-7) - 1.6534391534391536e-5) + 0.00079365079365079365) - 0.016666666666666666, (-numpy.where(numpy.less(x2, 4.0), 2.0, numpy.sqrt(x2))*numpy.cos(numpy.where(numpy.less(x2, 4.0), 2.0, numpy.sqrt(x2))) - 2*numpy.where(numpy.less(x2, 4.0), 2.0, numpy.sqrt(x2)) + 3*numpy.sin(numpy.where(numpy.less(x2, 4.0), 2.0, numpy.sqrt(x2))))*numpy.where(numpy.less(x2, 4.0), 0.03125, 1.0/((x2*x2)*numpy.sqrt(x2))))
-    x72 = x71*xi_4
-    x73 = x2*xi_1
-    x74 = x71*xi_5
-    x75 = x2*xi_2
-    x76 = x3*xi_5
-    x77 = x15*xi_0
-    x78 = x14*xi_1
-    x79 = x78*xi_3
-    x80 = x28*xi_1
-    x81 = x41*xi_5
-    x82 = xi_0*xi_2
-    x83 = x82*xi_1
-    x84 = x0*x81 + x63*xi_3 + x65*x72 + x67*xi_1 + x74*x83
-    x85 = x3*xi_4
-    x86 = x17*xi_0
-    x87 = xi_2*xi_3
-    x88 = x14*x87
-    x89 = x1*xi_0
-    x90 = x32*xi_4 + x36*x66 + x64*xi_3 + x72*x83 + x74*x89
-    x91 = x52*x82
-    x92 = x1*x52
-    x93 = -2*x11 + x2*x29
-    x94 = x2*x28
-    x95 = x94*xi_1
-    x96 = x36*x41
-    x97 = x94*xi_2
-    x98 = x38*xi_0*xi_1
-    x99 = x13 + x96
-    x100 = x1*x41
-    x101 = x100*xi_1
-    x102 = x101 + x8
-    x103 = x2*xi_0
-    x104 = x71*xi_3
-    x105 = x24*xi_3
-    x106 = x29*xi_5
-    x107 = x3*xi_3
-    x108 = x17*xi_1
-    x109 = x15*xi_2
-    x110 = x104*x83 + x36*x72 + x69*x74
-    x111 = x26 + 1
-    x112 = x0*x38
-    x113 = x0*x28
+    x45 = x44*xi_2
+    x46 = x43 + x45
+    x47 = numpy.where(numpy.less(x2, 1.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(4.498331606952833e-14 - 1.4797143443923793e-16*x2) - 1.0706029224547743e-11) + 1.9270852604185937e-9) - 2.5052108385441718e-7) + 2.2045855379188714e-5) - 0.0011904761904761906) + 0.033333333333333333) - 0.33333333333333331, (numpy.where(numpy.less(x2, 1.0), 1.0, numpy.sqrt(x2))*numpy.cos(numpy.where(numpy.less(x2, 1.0), 1.0, numpy.sqrt(x2))) - numpy.sin(numpy.where(numpy.less(x2, 1.0), 1.0, numpy.sqrt(x2))))*numpy.where(numpy.less(x2, 1.0), 1.0, 1.0/(x2*numpy.sqrt(x2))))
+    x48 = x47*xi_1
+    x49 = x48*xi_0
+    x50 = x13 + x31 + x36*xi_2
+    x51 = x0*x47
+    x52 = x45 + x6
+    x53 = x48*xi_2
+    x54 = x1*x39
+    x55 = x11 + x54
+    x56 = xi_2*xi_4
+    x57 = x17*numpy.where(numpy.less(x2, 4.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(1.1359381143141137e-48*x2 - 1.7648891123448757e-45) + 2.4702564609120444e-42) - 3.096829746762205e-39) + 3.4549006862315854e-36) - 3.4051501163498504e-33) + 2.9405903504764064e-30) - 2.204085567310931e-27) + 1.4183290625645841e-24) - 7.7363403412613678e-22) + 3.5231293914104271e-19) - 1.3153016394598927e-16) + 3.936040156083729e-14) - 9.1765964781837793e-12) + 1.6059043836821615e-9) - 2.0041686708353376e-7) + 1.6534391534391536e-5) - 0.00079365079365079365) + 0.016666666666666666, (numpy.where(numpy.less(x2, 4.0), 2.0, numpy.sqrt(x2))*numpy.cos(numpy.where(numpy.less(x2, 4.0), 2.0, numpy.sqrt(x2))) + 2*numpy.where(numpy.less(x2, 4.0), 2.0, numpy.sqrt(x2)) - 3*numpy.sin(numpy.where(numpy.less(x2, 4.0), 2.0, numpy.sqrt(x2))))*numpy.where(numpy.less(x2, 4.0), 0.03125, 1.0/((x2*x2)*numpy.sqrt(x2))))
+    x58 = x17*numpy.where(numpy.less(x2, 4.0), x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(x2*(1.7648891123448757e-45 - 1.1359381143141137e-48*x2) - 2.4702564609120444e-42) + 3.096829746762205e-39) - 3.4549006862315854e-36) + 3.4051501163498504e-33) - 2.9405903504764064e-30) + 2.204085567310931e-27) - 1.4183290625645841e-24) + 7.7363403412613678e-22) - 3.5231293914104271e-19) + 1.3153016394598927e-16) - 3.936040156083729e-14) + 9.1765964781837793e-12) - 1.6059043836821615e-9) + 2.0041686708353376e-7) - 1.6534391534391536e-5) + 0.00079365079365079365) - 0.016666666666666666, (-numpy.where(numpy.less(x2, 4.0), 2.0, numpy.sqrt(x2))*numpy.cos(numpy.where(numpy.less(x2, 4.0), 2.0, numpy.sqrt(x2))) - 2*numpy.where(numpy.less(x2, 4.0), 2.0, numpy.sqrt(x2)) + 3*numpy.sin(numpy.where(numpy.less(x2, 4.0), 2.0, numpy.sqrt(x2))))*numpy.where(numpy.less(x2, 4.0), 0.03125, 1.0/((x2*x2)*numpy.sqrt(x2))))
+    x59 = x3*xi_5
+    x60 = x18*xi_0
+    x61 = x22*xi_2
+    x62 = x35*xi_5
+    x63 = xi_0*xi_1
+    x64 = x0*x62 + x58*x63
+    x65 = x3*xi_4
+    x66 = x47*xi_2
+    x67 = x35*xi_1
+    x68 = x58*xi_2
+    x69 = x26*xi_4 + x68*xi_0
+    x70 = x0*x18
+    x71 = x1*x18
+    x72 = x60*xi_1
+    x73 = x60*xi_2
+    x74 = x66*xi_0
+    x75 = x1*x47
+    x76 = -2*x11 + x2*x23
+    x77 = x2*x22
+    x78 = x77*xi_1
+    x79 = x30*x35
+    x80 = x77*xi_2
+    x81 = x32*x63
+    x82 = x13 + x79
+    x83 = x1*x35
+    x84 = x83*xi_1
+    x85 = x8 + x84
+    x86 = x47*xi_0
+    x87 = x18*xi_1
+    x88 = x3*xi_3
+    x89 = x68*xi_1
+    x90 = x0*x32
+    x91 = x18*xi_2
+    x92 = x0*x22
     return (
         -x4 - x5 + 1,
         -x7 + x9,
         x10 + x12,
-        -x13*xi_4 + x16*xi_0 + x18*xi_0 - x19*xi_3 - x20*xi_3 + x8*xi_5 + xi_3,
+        -x13*xi_4 + x19*xi_0 + x6*xi_3 + x8*xi_5,
         x7 + x9,
-        x22 + x4,
-        -x23 + x3*xi_1*xi_2,
-        -x11*xi_5 + x13*xi_3 + x18*xi_1 + x19*xi_4 + x25*xi_3 + x26*xi_4 + xi_4,
+        x20 + x4,
+        -x21 + x3*xi_1*xi_2,
+        -x11*xi_5 + x13*xi_3 + x19*xi_1 + x6*xi_4,
         -x10 + x12,
-        x23 + x8*xi_2,
-        x22 + x5,
-        x11*xi_4 + x16*xi_2 + x20*xi_5 + x26*xi_5 + x27*xi_3 - x8*xi_3 + xi_5,
+        x21 + x8*xi_2,
+        x20 + x5,
+        x11*xi_4 + x19*xi_2 + x6*xi_5 - x8*xi_3,
         0,
         0,
         0,
         1,
-        x0*x29 + x1*x29,
-        x30 + x33,
+        x0*x23 + x1*x23,
+        x24 + x27,
+        x28 + x31,
+        0,
+        0,
+        0,
         x34 + x37,
+        x38 + x41,
+        x42 + x46,
         0,
         0,
         0,
-        x40 + x43,
-        x44 + x47,
-        x48 + x51,
+        x49 + x50,
+        x51 + x52,
+        x53 + x55,
         0,
         0,
         0,
-        x54 + x55,
-        x56 + x57,
-        x58 + x60,
+        x0*x57 + x1*x57 + x14*x18 + x14*x47 + x19 + x2*x58 + x23*x56 + x44*xi_5,
+        x15*x61 + x48*xi_3 + x59 + x60*xi_4 + x64,
+        x16*x67 + x60*xi_5 - x65 + x66*xi_3 + x69,
+        x18*x2 - x43 - x70 - x71,
+        -x13 + x72,
+        x73 + x8,
+        x37 + x74,
+        x41 + x53,
+        x52 + x75,
         0,
         0,
         0,
-        x16 + x18 + x29*x61 + x36*x70 + x49*xi_5 + x63*xi_4 + x64*xi_5 + x65*x66 + x67*xi_0 + x68*x69 + x72*x73 + x74*x75,
-        x61*x80 + x76 + x77 - 2*x79 + x84,
-        x81*xi_1*xi_2 - x85 + x86 - 2*x88 + x90,
-        -x19 - x20 + 1,
-        -x13 + x25,
-        x27 + x8,
-        x43 + x91,
-        x47 + x58,
-        x57 + x92,
+        x40 + x76,
+        x25*x35 + x78,
+        x28 + x79 + x80,
         0,
         0,
         0,
-        x46 + x93,
-        x31*x41 + x95,
-        x34 + x96 + x97,
+        x2*x32 + x46 + x51 + x75,
+        x81 + x82,
+        x34 + x85,
         0,
         0,
         0,
-        x2*x38 + x51 + x56 + x92,
-        x98 + x99,
-        x102 + x40,
+        x1*x62 + x14*x35*xi_2 - x59 + x64 + x77*xi_5 + x86*xi_4 + x87*xi_3,
+        x0*x58 + x15*x18 + x15*x47 + x19 + x23*xi_1*xi_5 + x67*xi_2*xi_3,
+        x16*x23 + x66*xi_4 + x83*xi_3 + x87*xi_5 + x88 + x89,
+        x13 + x72,
+        x6 + x70,
+        -x11 + x18*xi_1*xi_2,
+        x50 + x81,
+        x46 + x90,
+        x38 + x55,
         0,
         0,
         0,
-        x1*x81 + x103*x68 + x104*x73 + x45*x87 - x76 - 2*x77 + x79 + x84 + x94*xi_5,
-        x104*x65 + x105 + x106*xi_1 + x18 + x31*x72 + x36*x74 + x41*x87*xi_1 + x68*x73,
-        x100*xi_3 + x106*xi_2 + x107 + x108 - 2*x109 + x110 + x2*x61*x62,
-        x13 + x25,
-        x111 + x19,
-        -x11 + x14*xi_1*xi_2,
-        x55 + x98,
-        x112 + x51,
-        x44 + x60,
+        x2*x47 + x42 + x52 + x90,
+        x49 + x82,
+        x74 + x85,
         0,
         0,
         0,
-        x112 + x2*x52 + x48 + x57,
-        x54 + x99,
-        x102 + x91,
+        x54 + x76,
+        x24 + x78 + x84,
+        x29*x35 + x80,
         0,
         0,
         0,
-        x59 + x93,
-        x101 + x30 + x95,
-        x35*x41 + x97,
-        0,
-        0,
-        0,
-        x103*x70 + x113*xi_4 + x2*x71*x87 + x29*xi_1*xi_3 + x42*xi_4 + x85 - 2*x86 + x88 + x90,
-        -x107 - 2*x108 + x109 + x110 + x113*xi_3 + x49*xi_4 + x70*x73,
-        x104*x89 + x105 + x16 + x35*x74 + x45*x61 + x69*x72 + x70*x75 + x80*x87,
-        x27 - x8,
-        x11 + x78*xi_2,
-        x111 + x20,
+        x14*x22*xi_1 + x36*xi_4 + x65 + x69 + x86*xi_5 + x91*xi_3 + x92*xi_4,
+        x15*x39 + x48*xi_5 - x88 + x89 + x91*xi_4 + x92*xi_3,
+        x1*x58 + x16*x18 + x16*x47 + x19 + x39*x56 + x61*xi_1*xi_3,
+        x73 - x8,
+        x11 + x87*xi_2,
+        x6 + x71,
         0,
         0,
         0,
