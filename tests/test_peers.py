@@ -187,8 +187,8 @@ def _conv_pin_jlog3():
 
 def _conv_jaxlie_jlog():
     jaxlie = pytest.importorskip("jaxlie", reason="the [oracles] extra")
-    T._load("jaxlie")
-    return _log_first_order(lambda Q: np.asarray(jaxlie.SO3.from_matrix(Q).jlog()))
+    with T.x64():
+        return _log_first_order(lambda Q: np.asarray(jaxlie.SO3.from_matrix(Q).jlog()))
 
 
 def _log_first_order(jlog, h=1e-6):
@@ -219,6 +219,21 @@ def test_the_conventions_the_adapters_rest_on(what):
     claimed, other = CONVENTIONS[what]()
     assert claimed < 1e-4, (what, claimed)
     assert other > 1e-2, (what, other)
+
+
+@pytest.mark.extra
+def test_the_jaxlie_peers_leave_jaxs_default_type_alone():
+    """The jaxlie adapters compute in float64 inside a context: a test after them that runs
+    JAX in its default float32 (tests/test_jax_kernels.py) still gets float32."""
+    jax = pytest.importorskip("jax", reason="the [oracles] extra")
+    before = jax.config.jax_enable_x64
+    ok = [f for p, f in T.available("rotation_from_rotation_vector")[0]
+          if p.library == "jaxlie"]
+    if not ok:
+        pytest.skip("jaxlie: not installed (the [oracles] extra)")
+    Q = ok[0](W)[0]
+    assert Q.dtype == np.float64 and np.allclose(Q @ Q.T, np.eye(3), atol=1e-15)
+    assert jax.config.jax_enable_x64 == before
 
 
 @pytest.mark.extra

@@ -39,7 +39,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-__all__ = ["LIBRARIES", "PEERS", "Peer", "available", "for_kernel", "markdown"]
+__all__ = ["LIBRARIES", "PEERS", "Peer", "available", "for_kernel", "markdown", "x64"]
 
 #: library (as the table names it) -> (module imported on first use, distribution, version
 #: the adapters were checked with)
@@ -180,8 +180,22 @@ def _jit(key, make):
     return _JIT[key]
 
 
+def x64():
+    """A context in which JAX computes in float64 (the peers are float64; jaxlie follows
+    JAX's default type), leaving the process's setting as it was."""
+    import jax
+
+    ctx = getattr(jax, "enable_x64", None)
+    if ctx is not None:
+        return ctx(True)
+    from jax.experimental import enable_x64  # JAX < 0.5
+
+    return enable_x64()
+
+
 def _jl(jaxlie, key, make, *args):
-    return _np(_jit(key, make)(*(np.asarray(a, dtype=np.float64) for a in args)))
+    with x64():
+        return _np(_jit(key, make)(*(np.asarray(a, dtype=np.float64) for a in args)))
 
 
 def _er_sm(sb, Q):
@@ -461,11 +475,6 @@ def _load(library: str):
                 if library == "pytransform3d":
                     importlib.import_module("pytransform3d.rotations")
                     importlib.import_module("pytransform3d.transformations")
-                if library == "jaxlie":
-                    import jax
-
-                    # the peers are float64 (jaxlie follows JAX's default type)
-                    jax.config.update("jax_enable_x64", True)
             _LOADED[library] = m
         except ImportError as e:
             _LOADED[library] = e
