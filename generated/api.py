@@ -1652,7 +1652,7 @@ def transform_from_exponential_coordinates(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 53 ulp in float64) over 3 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1.58 u (kappa + 1) in float64, <= 1.02 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 1.38e+03 ulp in float64) over 6 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 60 operations; math hash 84c3b7bba8e6b55d.
     """
