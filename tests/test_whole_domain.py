@@ -416,16 +416,14 @@ def test_searched_worst_points(name, point, on_main):
 
 #: (kernel, dtype) where the slow search below still finds a point past the rule (seeds 0
 #: and 1; the reference half decided over a cloud of neighbouring inputs where the point
-#: fails it, benchmarks/_accuracy_cloud.py), measured with the [oracles] extra installed
+#: fails it, benchmarks/_accuracy_cloud.py), measured with the [oracles] extra installed.
+#: (transform_from_exponential_coordinates in float32, 1.16 at |w| = 24.5, passes since the
+#: kernel expands [w]^2 v as Pinocchio's exp6 does: the same cancellation, issue 48 item 2)
 SEARCH_OPEN = {
     ("exponential_coordinates_left_jacobian_inverse", "float64"):
         "1.68 at |w| = 242 (seed 0), the condition half (kappa 90): the Q of the SE(3) "
         "Jacobian below cancels there too; medians over the cloud: the kernel 450 u, the "
         "textbook 278 u, pytransform3d 2.9e4 u",
-    ("transform_from_exponential_coordinates", "float32"):
-        "1.16 at |w| = 24.5 (seed 1), the reference half: medians over the cloud 4.65 u "
-        "against the float32 textbook's 1.24 u (whose upper quartile is 21.7 u, the "
-        "kernel's 6.6 u)",
     ("exponential_coordinates_left_jacobian", "float64"):
         "4.1 and 16.9 at |w| ~ 240 (seeds 0, 1), the condition half: Barfoot's Q cancels "
         "there (norm 1.2 from terms of |v| ~ 167, kappa 1.8), every program 66 .. 280 u "
