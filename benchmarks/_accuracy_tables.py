@@ -86,9 +86,17 @@ def summary_table(data: dict) -> str:
     return "\n".join(lines) + "\n"
 
 
+def peer_table(data: dict) -> str:
+    """docs/accuracy.md's peer column: the package's table (:mod:`rigidsym.codegen.peers`),
+    not the data (``data`` unused: every table here takes it)."""
+    from rigidsym.codegen import peers
+
+    return peers.markdown()
+
+
 # The tables the data file makes, by file and marker (<!-- name --> ... <!-- /name -->).
 DOC_TABLES = {
-    "docs/accuracy.md": {"rule-summary": summary_table,
+    "docs/accuracy.md": {"rule-summary": summary_table, "peers": peer_table,
                          "rule-public": lambda d: rule_table(d, public_only=True),
                          "table": lambda d: kernel_table(d, public_only=True)},
     "benchmarks/RESULTS.md": {"rule-summary-all": summary_table, "rule-all": rule_table},

@@ -248,58 +248,6 @@ def test_screw_axis_point_from_the_axis():
     assert "the axis point from the axis" in src
 
 
-@pytest.mark.extra
-@pytest.mark.parametrize("name", ["rotation_from_natural_invariants",
-                                  "natural_invariants_from_rotation",
-                                  "rotation_from_euler_rodrigues", "plucker_from_points",
-                                  "instant_screw_axis", "wrench_axis", "screw_of_displacement",
-                                  "twist_transfer", "twist_transfer_matrix", "wrench_transfer",
-                                  "wrench_transfer_matrix", "inertia_at_point",
-                                  "inertia_dyad_at_point", "kinetic_energy",
-                                  "newton_euler_wrench"])
-def test_peers_compute_the_kernels_outputs(name):
-    """Each peer adapter (benchmarks/_accuracy_peers.py) computes the kernel's outputs in
-    its conventions (a wrong adapter would only ever look worse, and hide nothing, but
-    the table names it as a yardstick)."""
-    pytest.importorskip("pytransform3d", reason="the [oracles] extra")
-    pytest.importorskip("pinocchio", reason="the [oracles] extra")
-    pytest.importorskip("modern_robotics", reason="the [oracles] extra")
-    pytest.importorskip("spatialmath", reason="the [oracles] extra")
-    k = A.R.kernel_of(name)
-    pts = A.P.regimes(k, np.float64, n_random=6, extremes=False)["random"]
-    arrays = A._round(pts, np.float64, k)
-    K.use_backend("numpy")
-    want = A.run_kernel(name, arrays, np.float64, "numpy")
-    got = O.evaluate(name, arrays, want.shape[1])
-    assert got, f"{name}: no peer"
-    for label, v in got.items():
-        np.testing.assert_allclose(v, want, rtol=1e-9, atol=1e-9, err_msg=label)
-
-
-LIE_PEERED = ["rotation_from_rotation_vector", "rotation_vector_from_rotation",
-              "rotation_vector_left_jacobian", "rotation_vector_right_jacobian",
-              "rotation_vector_left_jacobian_inverse", "rotation_vector_right_jacobian_inverse",
-              "transform_from_exponential_coordinates", "exponential_coordinates_from_transform",
-              "exponential_coordinates_left_jacobian",
-              "exponential_coordinates_left_jacobian_inverse", "euler_rodrigues_from_rotation",
-              "euler_rodrigues_product"]
-
-
-@pytest.mark.parametrize("name", LIE_PEERED)
-def test_lie_peers_compute_the_kernels_outputs(name):
-    """The Lie-group maps' and Jacobians' pytransform3d peers (issue 48: the table said none
-    has the operation) compute the kernel's outputs in its conventions."""
-    pytest.importorskip("pytransform3d", reason="the [oracles] extra")
-    k = A.R.kernel_of(name)
-    pts = A.P.regimes(k, np.float64, n_random=6, extremes=False)["random"]
-    arrays = A._round(pts, np.float64, k)
-    want = A.run_kernel(name, arrays, np.float64, "numpy")
-    got = O.evaluate(name, arrays, want.shape[1])
-    assert got, f"{name}: no peer"
-    for label, v in got.items():
-        np.testing.assert_allclose(v, want, rtol=1e-9, atol=1e-9, err_msg=label)
-
-
 def test_sumprod_is_a_dot_product_in_twice_the_precision():
     """``SumProd`` (Dot2, ``rigidsym.codegen.compensated``) within 1 u of the exact sum of
     products however much it cancels (here by 1e8: the plain sum is 1e7 u off)."""

@@ -371,7 +371,35 @@ SEARCHED = [
     ("exponential_coordinates_left_jacobian_inverse",
      [[0.436380335850562, -3.793315210194787, -242.45010759734396, 145.3209406391041,
        -0.6470304241294565, 17.431943554373824]], 1.68, "float64"),
+    # issue 48 item 2: the slow search with every peer judging (Pinocchio's exp6 4.4 u,
+    # jaxlie 3.8 u; the kernel 16 u, its cloud median 3.7 times theirs) before J_l(w) v was
+    # written without its cancellation (lie_maps.rotation_vector_left_jacobian_times)
+    ("transform_from_exponential_coordinates",
+     [[0.38809818457524436, -13.470552770915118, -10.398374014686407, 120.50548345606701,
+       -0.013960675525783684, 13.470253145779274]], 1.83, "float64"),
 ]
+
+
+def test_exp_se3_kernel_is_the_declared_formula():
+    """The SE(3) exponential's kernel builds ``J_l(w) v`` expanded (``[w]^2 v = w (w.v) -
+    theta^2 v``, Pinocchio's form, issue 48; lie_maps.rotation_vector_left_jacobian_times
+    with its products Grouped); equal to ``lie_maps``' formula at random
+    rational points to 50 digits, theta from 1e-3 to 40 (an expansion that dropped a term
+    is off by O(1) somewhere there)."""
+    import importlib
+
+    spec = importlib.import_module("rigidsym.derivations.kernels_spec_lie")
+    k = next(k for k in spec.LIE_KERNELS if k.name == "transform_from_exponential_coordinates")
+    x = sp.Matrix(sp.symbols("x0:6"))
+    got, want = k.build(xi=x)["T"], L.transform_from_exponential_coordinates(x)
+    rng = np.random.default_rng(48)
+    for scale in (1e-3, 0.5, 3.0, 18.0, 40.0):
+        d = rng.standard_normal(6)
+        d[:3] *= scale / np.linalg.norm(d[:3])
+        sub = {s: sp.Rational(float(v)) for s, v in zip(x, d * [1, 1, 1, 50, 50, 50],
+                                                         strict=True)}
+        diff = (got.xreplace(sub).doit() - want.xreplace(sub)).evalf(60)  # doit: Grouped
+        assert max(abs(e) for e in diff) < sp.Float("1e-45"), scale
 
 
 def _harness():
