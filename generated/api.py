@@ -724,7 +724,7 @@ def exponential_coordinates_left_jacobian(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 2.44 u (kappa + 1) in float64, <= 1.46 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 1.08e+03 ulp in float64) over 6 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 3.39 u (kappa + 1) in float64, <= 2.26 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 2.64e+03 ulp in float64) over 6 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 97 operations; math hash f108b6a9d1d2e209.
     """
@@ -1248,7 +1248,7 @@ def rotation_from_euler_rodrigues(
     Notes:
         Singular set: eta = 0 (no rotation).
 
-        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 140 ulp in float64) over 2 regimes (docs/accuracy.md, kernels.accuracy); singular when eta = 0 (no rotation).
+        Accuracy: error <= 1 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 109 ulp in float64) over 2 regimes (docs/accuracy.md, kernels.accuracy); singular when eta = 0 (no rotation).
 
         Generated; 45 operations; math hash c12495cda1ede225.
     """
@@ -1324,7 +1324,7 @@ def rotation_from_rotation_vector(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1.6 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 4.73e+07 ulp in float64) over 4 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 1.6 u (kappa + 1) in float64, <= 1 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 4.73e+07 ulp in float64) over 7 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 31 operations; math hash 26ba18056a63eeb8.
     """
@@ -1400,7 +1400,7 @@ def rotation_vector_left_jacobian(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1.34 u (kappa + 1) in float64, <= 1.76 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 69 ulp in float64) over 4 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 2.26 u (kappa + 1) in float64, <= 1.76 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 708 ulp in float64) over 7 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 31 operations; math hash d4a19d08f115cd7e.
     """
@@ -1440,7 +1440,7 @@ def rotation_vector_left_jacobian_inverse(
     Notes:
         Singular set: theta = 2 pi k, k != 0 (theta = norm of w).
 
-        Accuracy: error <= 1.6 u (kappa + 1) in float64, <= 1.3 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 1.9e+07 ulp in float64) over 4 regimes (docs/accuracy.md, kernels.accuracy); singular when theta = 2 pi k, k != 0 (theta = norm of w).
+        Accuracy: error <= 1.7 u (kappa + 1) in float64, <= 1.94 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 5.79e+14 ulp in float64) over 7 regimes (docs/accuracy.md, kernels.accuracy); singular when theta = 2 pi k, k != 0 (theta = norm of w).
 
         Generated; 32 operations; math hash 2f680f5aa3fbff2f.
     """
@@ -1477,7 +1477,7 @@ def rotation_vector_right_jacobian(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 1.34 u (kappa + 1) in float64, <= 1.76 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 69 ulp in float64) over 4 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 2.26 u (kappa + 1) in float64, <= 1.76 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 708 ulp in float64) over 7 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 31 operations; math hash 35131894d7e1775b.
     """
@@ -1517,7 +1517,7 @@ def rotation_vector_right_jacobian_inverse(
     Notes:
         Singular set: theta = 2 pi k, k != 0 (theta = norm of w).
 
-        Accuracy: error <= 1.6 u (kappa + 1) in float64, <= 1.3 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 1.9e+07 ulp in float64) over 4 regimes (docs/accuracy.md, kernels.accuracy); singular when theta = 2 pi k, k != 0 (theta = norm of w).
+        Accuracy: error <= 1.7 u (kappa + 1) in float64, <= 1.94 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 5.79e+14 ulp in float64) over 7 regimes (docs/accuracy.md, kernels.accuracy); singular when theta = 2 pi k, k != 0 (theta = norm of w).
 
         Generated; 32 operations; math hash db168e620321154f.
     """
