@@ -724,7 +724,7 @@ def exponential_coordinates_left_jacobian(
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
 
     Notes:
-        Accuracy: error <= 3.39 u (kappa + 1) in float64, <= 2.26 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 2.64e+03 ulp in float64) over 6 regimes (docs/accuracy.md, kernels.accuracy).
+        Accuracy: error <= 2.44 u (kappa + 1) in float64, <= 1.46 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 1.08e+03 ulp in float64) over 6 regimes (docs/accuracy.md, kernels.accuracy).
 
         Generated; 97 operations; math hash f108b6a9d1d2e209.
     """
