@@ -15,6 +15,11 @@ the 6 x 6 Jacobian of SE(3) in the same order (Barfoot's ``[[J, Q], [0, J]]`` fo
 ``eta = [r; r0]``, as ``rotation_from_euler_rodrigues``. Every quotient in ``theta`` below is
 a removable singularity at ``w = 0`` (the kernels replace it by its certified series,
 :mod:`rigidsym.codegen.removable`).
+
+Long: one subject, the closed forms of the maps of SO(3) and SE(3), each with its sources and
+the derivation of the rewritten forms the kernels use (Q of the SE(3) Jacobian and J_l(w) v
+without their cancellation at large |w|, issue 48) beside the printed form they are proved
+equal to; the kernels and the declarations name these functions by this module's path.
 """
 
 from __future__ import annotations

@@ -393,7 +393,7 @@ def test_the_time_limit_stops_a_step_inside_it_and_only_in_the_main_thread():
     import threading
     import time
 
-    from rigidsym.checking.repairing.repair import Late, time_limit
+    from rigidsym.checking.repairing.deadline import Late, time_limit
 
     t0 = time.monotonic()
     with pytest.raises(Late), time_limit(t0 + 0.2):

@@ -18,6 +18,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from rigidsym.codegen import peer_adapters as PA
 from rigidsym.codegen import peers as T
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -164,13 +165,13 @@ def _conv_pin_jexp3():
 
 def _conv_pin_jexp6():
     pin = _pin()
-    J = T._swap(pin.Jexp6(pin.Motion(XI[3:], XI[:3])))     # [v; w] -> [w; v]
+    J = PA._swap(pin.Jexp6(pin.Motion(XI[3:], XI[:3])))     # [v; w] -> [w; v]
     return _right_first_order(_tr, J, XI)
 
 
 def _conv_pypose_jr():
     pp = _pp()
-    return _right_first_order(_rot, T._np(pp.so3(T._torch(W)).Jr()), W)
+    return _right_first_order(_rot, PA._np(pp.so3(PA._torch(W)).Jr()), W)
 
 
 def _conv_spatialmath_exp2jac():

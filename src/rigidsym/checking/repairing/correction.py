@@ -9,7 +9,7 @@ hold, whether or not a correction is known. A correction is additional evidence:
   (:mod:`rigidsym.checking.repairing.repair`) serves as the corrected form, marked "found by
   search";
 - with neither, the record says "no correction", with what was searched in the words of
-  :func:`rigidsym.checking.repairing.repair.search_record` (never a guess).
+  :func:`rigidsym.checking.repairing.records.search_record` (never a guess).
 
 The repair search runs for every does-not-hold (``repairs=False`` turns it off); its
 budget is the run's when given, else the declaration's, else
@@ -24,6 +24,8 @@ from dataclasses import dataclass, field
 
 from rigidsym.checking.deciding.records import member_record
 from rigidsym.checking.deciding.registry import Rel
+from rigidsym.checking.repairing import deadline as deadline_
+from rigidsym.checking.repairing import records as records_
 from rigidsym.checking.repairing import repair
 
 __all__ = ["Correction", "RepairSettings", "correct", "budget_of", "CORRECTIONS"]
@@ -93,24 +95,24 @@ def _search(eq, st, rels, outs, seed, settings, decide) -> tuple[list, list, dic
     deadline = time.monotonic() + limit if settings.seconds else None
     searches, records, first = [], [], {}
     try:
-        with repair.time_limit(deadline):  # a step past the deadline is stopped (issue 52)
+        with deadline_.time_limit(deadline):  # a step past the deadline is stopped (issue 52)
             sh = repair.share(failing, rels, st.model, decide, seed)
             for rel in failing:
                 s = repair.search_member(rel, sh, budget, deadline, limit)
-                searches.append(repair.search_record(s, budget))
+                searches.append(records_.search_record(s, budget))
                 for f in s.found[:repair.KEEP]:
                     partners = _declared_partner(rel.label, len(st.printed),
                                                  st.corrected or [])
                     equal = deadline is None or time.monotonic() < deadline
                     equal = equal and any(repair.same_relation(
                         sh.generic, f.rel_sides, (c.lhs, c.rhs)) for c in partners)
-                    records.append(repair.repair_record(f, rel, sh.pools.keep, equal))
+                    records.append(records_.repair_record(f, rel, sh.pools.keep, equal))
                 if s.found:
                     first[id(rel)] = s.found[0]
-    except repair.Late:  # in the shared part or between members: the rest not searched
+    except deadline_.Late:  # in the shared part or between members: the rest not searched
         for rel in failing[len(searches):]:
             s = repair.Search(member=rel.label, limit=limit, stopped="time")
-            searches.append(repair.search_record(s, budget))
+            searches.append(records_.search_record(s, budget))
     return searches, records, first
 
 

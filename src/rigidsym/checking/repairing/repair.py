@@ -14,8 +14,10 @@ tried, single edits first, then pairs. Each candidate is
 4. decided by the full sound zero test (the checker's ``decide_rel``): only a candidate
    decided to hold is a repair, with its method and failure bound.
 
-The search is bounded by a count of candidates (:data:`REPAIR_BUDGET` per member), never by
-time, so its results do not depend on the machine. It reports every single-edit repair,
+The search is bounded by a count of candidates (:data:`REPAIR_BUDGET` per member), so its
+results do not depend on the machine, and, where the run sets one (``--repair-seconds``,
+issue 52), by a time limit (:mod:`.deadline`), after which it says it stopped and how many
+candidates it tried. It reports every single-edit repair,
 else every two-edit one, sorted by edit kind and then position in the tree, keeps
 :data:`KEEP` and says how many were found; a repaired equation found twice by the same kind
 of edit (``-Eᵀ = E`` and ``Eᵀ = -E``) counts once (found by two kinds, it is two
@@ -24,12 +26,8 @@ explanations of the slip, and both are reported).
 
 from __future__ import annotations
 
-import re
-import signal
-import threading
 import time
-from collections.abc import Callable, Iterator
-from contextlib import contextmanager
+from collections.abc import Callable
 from dataclasses import dataclass, field
 
 import sympy as sp
@@ -40,6 +38,7 @@ from rigidsym.checking.deciding.explicit import _entries, explicit, shape_of
 from rigidsym.checking.deciding.registry import Rel
 from rigidsym.checking.repairing import candidates, mutate
 from rigidsym.checking.repairing import treeops as T
+from rigidsym.checking.repairing.deadline import Late
 from rigidsym.checking.repairing.fasteval import (
     GenericValues,
     Inconclusive,
@@ -48,13 +47,11 @@ from rigidsym.checking.repairing.fasteval import (
     differs,
     points_for,
 )
-from rigidsym.printing import notation
 from rigidsym.zero.decide import Unsupported, make_plan
 
 __all__ = ["REPAIR_BUDGET", "KEEP", "FULL_TESTS", "Search", "Found", "Decision", "Shared",
            "share",
-           "search_member", "book_difference", "same_relation", "trivial", "repair_record",
-           "search_record"]
+           "search_member", "book_difference", "same_relation", "trivial"]
 
 #: candidates tried per failing member unless the run or the declaration says otherwise
 REPAIR_BUDGET = 5000
@@ -63,7 +60,6 @@ KEEP = 5
 #: full zero tests per member at most (survivors of the fast filter are rare; a member the
 #: filter cannot evaluate would otherwise send every candidate to the full test)
 FULL_TESTS = 40
-_BOUND = re.compile(r"P\(false zero\) <= ([0-9.]+E[-+]?\d+)")
 
 
 @dataclass
@@ -137,42 +133,6 @@ class _Ctx:
             self.search.stopped = "time"
             return True
         return False
-
-
-class Late(BaseException):  # noqa: N818  (not an error: the time is up)
-    """The repair search's time limit passed inside one of its steps (a symbolic inverse
-    of a final check, issue 52): raised by :func:`time_limit`'s alarm, caught by the search,
-    which stops and says so. A ``BaseException``, so that no ``except Exception`` on the
-    way (sympy's fallbacks) takes it for a failure and goes on."""
-
-
-@contextmanager
-def time_limit(deadline: float | None) -> Iterator[None]:
-    """Within the block, :class:`Late` is raised when ``time.monotonic()`` passes
-    ``deadline`` (``SIGALRM``, once), wherever the search is: between candidates the search
-    checks the time itself, but one step (sympy's Gauss-Jordan inverse of a 6x6) can take a
-    minute. Only in the main thread of a POSIX process whose ``SIGALRM`` has no handler
-    already (pytest-timeout's, a caller's); elsewhere the block runs unguarded."""
-    if deadline is None or not hasattr(signal, "setitimer") \
-            or threading.current_thread() is not threading.main_thread() \
-            or signal.getsignal(signal.SIGALRM) is not signal.SIG_DFL:
-        yield
-        return
-    on = [True]
-
-    def _late(signum, frame):
-        if on[0]:
-            on[0] = False
-            raise Late
-
-    old = signal.signal(signal.SIGALRM, _late)
-    try:
-        signal.setitimer(signal.ITIMER_REAL, max(deadline - time.monotonic(), 1e-3))
-        yield
-    finally:
-        on[0] = False
-        signal.setitimer(signal.ITIMER_REAL, 0)
-        signal.signal(signal.SIGALRM, old)
 
 
 # --------------------------------------------------------------------------- book symbols
@@ -402,64 +362,3 @@ def _verify(ctx: _Ctx, survivors) -> bool:
             ctx.search.found.append(Found(tuple(edits), Rel(lhs, rhs, ctx.rel.label),
                                           out.method, out.detail))
     return True
-
-
-# --------------------------------------------------------------------------- records
-def _bound(detail: str) -> float | None:
-    found = [float(x) for x in _BOUND.findall(detail or "")]
-    return max(found) if found else None
-
-
-def repair_record(f: Found, printed: Rel, keep: set, equals_declared: bool) -> dict:
-    """The schema-2 record of one repair.
-
-    Returns:
-        ``{"member", "edits", "kinds", "text", "latex", "printed_text", "printed_latex",
-        "method", "failure_bound", "equals_declared"}``: ``edits`` in words and ``kinds``
-        (:data:`rigidsym.checking.repairing.mutate.KINDS`); ``text``/``latex`` are the
-        repaired member in book notation with each edited subterm marked (``⟦…⟧``,
-        ``\\boxed{…}``), and
-        ``printed_text``/``printed_latex`` the printed member with the subterms the edits
-        change marked.
-    """
-    lm, rm = mutate.apply_edits(printed, f.edits, "marked", keep)
-    lp, rp = mutate.apply_edits(printed, f.edits, "printed", keep)
-    return {"member": printed.label, "edits": [mutate.describe(e) for e in f.edits],
-            "kinds": [e.kind for e in f.edits],
-            "text": f"{notation.text(lm)} = {notation.text(rm)}",
-            "latex": notation.latex_relation(lm, rm),
-            "printed_text": f"{notation.text(lp)} = {notation.text(rp)}",
-            "printed_latex": notation.latex_relation(lp, rp),
-            "method": f.method, "failure_bound": _bound(f.detail),
-            "equals_declared": equals_declared}
-
-
-def search_record(s: Search, budget: int) -> dict:
-    """What was searched for one member, in words that never guess.
-
-    Returns:
-        ``{"member", "candidates", "found", "complete", "undecidable", "budget",
-        "words"}``: ``words`` is "no repair within 2 edits" only when every single edit and
-        pair of the vocabulary was tried (and says how many of them the zero test cannot
-        decide, such as an odd power of ``‖ω‖``), else "none in the first N candidates".
-    """
-    n = len(s.found)
-    if n:
-        kind = "one-edit" if s.depth == 1 else "two-edit"
-        words = (f"{n} {kind} repair{'s' if n > 1 else ''} found in {s.candidates} "
-                 f"candidates" + (f" ({KEEP} kept)" if n > KEEP else ""))
-    elif s.complete:
-        words = (f"no repair within 2 edits ({s.candidates} candidates: every single edit "
-                 f"and pair of the vocabulary"
-                 + (f"; {s.undecidable} of them beyond the zero test" if s.undecidable
-                    else "") + ")")
-    else:
-        words = f"none in the first {s.candidates} candidates"
-        if s.stopped == "full tests":
-            words += f" ({FULL_TESTS} full zero tests spent)"
-        if s.stopped == "time":
-            words = (f"search stopped after {s.limit:g} s, {s.candidates} candidates tried "
-                     f"(--repair-seconds)")
-    return {"member": s.member, "candidates": s.candidates, "found": n,
-            "complete": s.complete, "undecidable": s.undecidable, "budget": budget,
-            "words": words}
