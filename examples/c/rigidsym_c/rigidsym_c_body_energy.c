@@ -126,15 +126,45 @@ RIGIDSYM_C_API int rigidsym_c_body_energy(
     int status = 0, singular = 0;
     double finite = 0.0;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    {   /* the range test of every input component, as one loop (it vectorises) */
-        const double in_[16] = {
-            m, v[0], v[1], v[2], inertia[0], inertia[1], inertia[2], inertia[3], inertia[4],
-            inertia[5], inertia[6], inertia[7], inertia[8], omega[0], omega[1], omega[2]
-        };
-        int j_;
-        for (j_ = 0; j_ < 16; ++j_)
-            RIGIDSYM_C_ODD_D(odd, in_[j_]);
+#if RIGIDSYM_C_VECTOR
+    {   /* the range test of every input component, 2 per vector register */
+        rigidsym_c_vd oddv_ = {0, 0};
+        {
+            const rigidsym_c_vd v_ = {rigidsym_c_bits_d(&m), rigidsym_c_bits_d(&v[0])};
+            oddv_ |= rigidsym_c_odd_vd(v_);
+        }
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(v + 1));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(inertia));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(inertia + 2));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(inertia + 4));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(inertia + 6));
+        {
+            const rigidsym_c_vd v_ = {rigidsym_c_bits_d(&inertia[8]), rigidsym_c_bits_d(&omega[0])};
+            oddv_ |= rigidsym_c_odd_vd(v_);
+        }
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(omega + 1));
+        odd = oddv_[0] | oddv_[1];
     }
+#else
+    {   /* the range test of every input component, one at a time */
+        RIGIDSYM_C_ODD_D(odd, m);
+        RIGIDSYM_C_ODD_D(odd, v[0]);
+        RIGIDSYM_C_ODD_D(odd, v[1]);
+        RIGIDSYM_C_ODD_D(odd, v[2]);
+        RIGIDSYM_C_ODD_D(odd, inertia[0]);
+        RIGIDSYM_C_ODD_D(odd, inertia[1]);
+        RIGIDSYM_C_ODD_D(odd, inertia[2]);
+        RIGIDSYM_C_ODD_D(odd, inertia[3]);
+        RIGIDSYM_C_ODD_D(odd, inertia[4]);
+        RIGIDSYM_C_ODD_D(odd, inertia[5]);
+        RIGIDSYM_C_ODD_D(odd, inertia[6]);
+        RIGIDSYM_C_ODD_D(odd, inertia[7]);
+        RIGIDSYM_C_ODD_D(odd, inertia[8]);
+        RIGIDSYM_C_ODD_D(odd, omega[0]);
+        RIGIDSYM_C_ODD_D(odd, omega[1]);
+        RIGIDSYM_C_ODD_D(odd, omega[2]);
+    }
+#endif
     if (odd >> 63) {
         const double *args[4];
         const int sizes[4] = {1, 3, 9, 3};
@@ -182,13 +212,26 @@ RIGIDSYM_C_API int rigidsym_c_body_energy(
     }
     /* no division or root, and every output bounded by 2^306 for inputs of
      * ordinary magnitude (|x| < 2^101): only an extreme or non-finite input can make an
-     * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN
-     * otherwise; the guards of rigidsym_c_impl.h keep the compiler from folding it) */
+     * output non-finite, so only then are the outputs tested */
 #if defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    finite += (T[0] - T[0]);
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const double s_ = T[0];
+        if (!(s_ - s_ == 0.0))
+            finite += (T[0] - T[0]);
+    }
 #else
     if (status)
-        finite += (T[0] - T[0]);
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const double s_ = T[0];
+        if (!(s_ - s_ == 0.0))
+            finite += (T[0] - T[0]);
+    }
 #endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -297,15 +340,41 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_f32(
     int status = 0, singular = 0;
     float finite = 0.0f;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    {   /* the range test of every input component, as one loop (it vectorises) */
-        const float in_[16] = {
-            m, v[0], v[1], v[2], inertia[0], inertia[1], inertia[2], inertia[3], inertia[4],
-            inertia[5], inertia[6], inertia[7], inertia[8], omega[0], omega[1], omega[2]
-        };
-        int j_;
-        for (j_ = 0; j_ < 16; ++j_)
-            RIGIDSYM_C_ODD_F(odd, in_[j_]);
+#if RIGIDSYM_C_VECTOR
+    {   /* the range test of every input component, 4 per vector register */
+        rigidsym_c_vf oddv_ = {0, 0, 0, 0};
+        {
+            const rigidsym_c_vf v_ = {rigidsym_c_bits_f(&m), rigidsym_c_bits_f(&v[0]), rigidsym_c_bits_f(&v[1]), rigidsym_c_bits_f(&v[2])};
+            oddv_ |= rigidsym_c_odd_vf(v_);
+        }
+        oddv_ |= rigidsym_c_odd_vf(rigidsym_c_load_vf(inertia));
+        oddv_ |= rigidsym_c_odd_vf(rigidsym_c_load_vf(inertia + 4));
+        {
+            const rigidsym_c_vf v_ = {rigidsym_c_bits_f(&inertia[8]), rigidsym_c_bits_f(&omega[0]), rigidsym_c_bits_f(&omega[1]), rigidsym_c_bits_f(&omega[2])};
+            oddv_ |= rigidsym_c_odd_vf(v_);
+        }
+        odd = oddv_[0] | oddv_[1] | oddv_[2] | oddv_[3];
     }
+#else
+    {   /* the range test of every input component, one at a time */
+        RIGIDSYM_C_ODD_F(odd, m);
+        RIGIDSYM_C_ODD_F(odd, v[0]);
+        RIGIDSYM_C_ODD_F(odd, v[1]);
+        RIGIDSYM_C_ODD_F(odd, v[2]);
+        RIGIDSYM_C_ODD_F(odd, inertia[0]);
+        RIGIDSYM_C_ODD_F(odd, inertia[1]);
+        RIGIDSYM_C_ODD_F(odd, inertia[2]);
+        RIGIDSYM_C_ODD_F(odd, inertia[3]);
+        RIGIDSYM_C_ODD_F(odd, inertia[4]);
+        RIGIDSYM_C_ODD_F(odd, inertia[5]);
+        RIGIDSYM_C_ODD_F(odd, inertia[6]);
+        RIGIDSYM_C_ODD_F(odd, inertia[7]);
+        RIGIDSYM_C_ODD_F(odd, inertia[8]);
+        RIGIDSYM_C_ODD_F(odd, omega[0]);
+        RIGIDSYM_C_ODD_F(odd, omega[1]);
+        RIGIDSYM_C_ODD_F(odd, omega[2]);
+    }
+#endif
     if (odd >> 31) {
         const float *args[4];
         const int sizes[4] = {1, 3, 9, 3};
@@ -349,13 +418,26 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_f32(
     }
     /* no division or root, and every output bounded by 2^96 for inputs of
      * ordinary magnitude (|x| < 2^31): only an extreme or non-finite input can make an
-     * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN
-     * otherwise; the guards of rigidsym_c_impl.h keep the compiler from folding it) */
+     * output non-finite, so only then are the outputs tested */
 #if defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    finite += (T[0] - T[0]);
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const float s_ = T[0];
+        if (!(s_ - s_ == 0.0f))
+            finite += (T[0] - T[0]);
+    }
 #else
     if (status)
-        finite += (T[0] - T[0]);
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const float s_ = T[0];
+        if (!(s_ - s_ == 0.0f))
+            finite += (T[0] - T[0]);
+    }
 #endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -585,15 +667,45 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians(
     int status = 0, singular = 0;
     double finite = 0.0;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    {   /* the range test of every input component, as one loop (it vectorises) */
-        const double in_[16] = {
-            m, v[0], v[1], v[2], inertia[0], inertia[1], inertia[2], inertia[3], inertia[4],
-            inertia[5], inertia[6], inertia[7], inertia[8], omega[0], omega[1], omega[2]
-        };
-        int j_;
-        for (j_ = 0; j_ < 16; ++j_)
-            RIGIDSYM_C_ODD_D(odd, in_[j_]);
+#if RIGIDSYM_C_VECTOR
+    {   /* the range test of every input component, 2 per vector register */
+        rigidsym_c_vd oddv_ = {0, 0};
+        {
+            const rigidsym_c_vd v_ = {rigidsym_c_bits_d(&m), rigidsym_c_bits_d(&v[0])};
+            oddv_ |= rigidsym_c_odd_vd(v_);
+        }
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(v + 1));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(inertia));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(inertia + 2));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(inertia + 4));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(inertia + 6));
+        {
+            const rigidsym_c_vd v_ = {rigidsym_c_bits_d(&inertia[8]), rigidsym_c_bits_d(&omega[0])};
+            oddv_ |= rigidsym_c_odd_vd(v_);
+        }
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(omega + 1));
+        odd = oddv_[0] | oddv_[1];
     }
+#else
+    {   /* the range test of every input component, one at a time */
+        RIGIDSYM_C_ODD_D(odd, m);
+        RIGIDSYM_C_ODD_D(odd, v[0]);
+        RIGIDSYM_C_ODD_D(odd, v[1]);
+        RIGIDSYM_C_ODD_D(odd, v[2]);
+        RIGIDSYM_C_ODD_D(odd, inertia[0]);
+        RIGIDSYM_C_ODD_D(odd, inertia[1]);
+        RIGIDSYM_C_ODD_D(odd, inertia[2]);
+        RIGIDSYM_C_ODD_D(odd, inertia[3]);
+        RIGIDSYM_C_ODD_D(odd, inertia[4]);
+        RIGIDSYM_C_ODD_D(odd, inertia[5]);
+        RIGIDSYM_C_ODD_D(odd, inertia[6]);
+        RIGIDSYM_C_ODD_D(odd, inertia[7]);
+        RIGIDSYM_C_ODD_D(odd, inertia[8]);
+        RIGIDSYM_C_ODD_D(odd, omega[0]);
+        RIGIDSYM_C_ODD_D(odd, omega[1]);
+        RIGIDSYM_C_ODD_D(odd, omega[2]);
+    }
+#endif
     if (odd >> 63) {
         const double *args[4];
         const int sizes[4] = {1, 3, 9, 3};
@@ -675,13 +787,26 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians(
     }
     /* no division or root, and every output bounded by 2^306 for inputs of
      * ordinary magnitude (|x| < 2^101): only an extreme or non-finite input can make an
-     * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN
-     * otherwise; the guards of rigidsym_c_impl.h keep the compiler from folding it) */
+     * output non-finite, so only then are the outputs tested */
 #if defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    finite += (((((T[0] - T[0]) + (T_D_m[0] - T_D_m[0])) + ((T_D_v[0] - T_D_v[0]) + (T_D_v[1] - T_D_v[1]))) + (((T_D_v[2] - T_D_v[2]) + (T_D_inertia[0] - T_D_inertia[0])) + ((T_D_inertia[1] - T_D_inertia[1]) + (T_D_inertia[2] - T_D_inertia[2])))) + ((((T_D_inertia[3] - T_D_inertia[3]) + (T_D_inertia[4] - T_D_inertia[4])) + ((T_D_inertia[5] - T_D_inertia[5]) + (T_D_inertia[6] - T_D_inertia[6]))) + (((T_D_inertia[7] - T_D_inertia[7]) + (T_D_inertia[8] - T_D_inertia[8])) + ((T_D_omega[0] - T_D_omega[0]) + ((T_D_omega[1] - T_D_omega[1]) + (T_D_omega[2] - T_D_omega[2]))))));
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const double s_ = ((((T[0] + T_D_m[0]) + (T_D_v[0] + T_D_v[1])) + ((T_D_v[2] + T_D_inertia[0]) + (T_D_inertia[1] + T_D_inertia[2]))) + (((T_D_inertia[3] + T_D_inertia[4]) + (T_D_inertia[5] + T_D_inertia[6])) + ((T_D_inertia[7] + T_D_inertia[8]) + (T_D_omega[0] + (T_D_omega[1] + T_D_omega[2])))));
+        if (!(s_ - s_ == 0.0))
+            finite += (((((T[0] - T[0]) + (T_D_m[0] - T_D_m[0])) + ((T_D_v[0] - T_D_v[0]) + (T_D_v[1] - T_D_v[1]))) + (((T_D_v[2] - T_D_v[2]) + (T_D_inertia[0] - T_D_inertia[0])) + ((T_D_inertia[1] - T_D_inertia[1]) + (T_D_inertia[2] - T_D_inertia[2])))) + ((((T_D_inertia[3] - T_D_inertia[3]) + (T_D_inertia[4] - T_D_inertia[4])) + ((T_D_inertia[5] - T_D_inertia[5]) + (T_D_inertia[6] - T_D_inertia[6]))) + (((T_D_inertia[7] - T_D_inertia[7]) + (T_D_inertia[8] - T_D_inertia[8])) + ((T_D_omega[0] - T_D_omega[0]) + ((T_D_omega[1] - T_D_omega[1]) + (T_D_omega[2] - T_D_omega[2]))))));
+    }
 #else
     if (status)
-        finite += (((((T[0] - T[0]) + (T_D_m[0] - T_D_m[0])) + ((T_D_v[0] - T_D_v[0]) + (T_D_v[1] - T_D_v[1]))) + (((T_D_v[2] - T_D_v[2]) + (T_D_inertia[0] - T_D_inertia[0])) + ((T_D_inertia[1] - T_D_inertia[1]) + (T_D_inertia[2] - T_D_inertia[2])))) + ((((T_D_inertia[3] - T_D_inertia[3]) + (T_D_inertia[4] - T_D_inertia[4])) + ((T_D_inertia[5] - T_D_inertia[5]) + (T_D_inertia[6] - T_D_inertia[6]))) + (((T_D_inertia[7] - T_D_inertia[7]) + (T_D_inertia[8] - T_D_inertia[8])) + ((T_D_omega[0] - T_D_omega[0]) + ((T_D_omega[1] - T_D_omega[1]) + (T_D_omega[2] - T_D_omega[2]))))));
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const double s_ = ((((T[0] + T_D_m[0]) + (T_D_v[0] + T_D_v[1])) + ((T_D_v[2] + T_D_inertia[0]) + (T_D_inertia[1] + T_D_inertia[2]))) + (((T_D_inertia[3] + T_D_inertia[4]) + (T_D_inertia[5] + T_D_inertia[6])) + ((T_D_inertia[7] + T_D_inertia[8]) + (T_D_omega[0] + (T_D_omega[1] + T_D_omega[2])))));
+        if (!(s_ - s_ == 0.0))
+            finite += (((((T[0] - T[0]) + (T_D_m[0] - T_D_m[0])) + ((T_D_v[0] - T_D_v[0]) + (T_D_v[1] - T_D_v[1]))) + (((T_D_v[2] - T_D_v[2]) + (T_D_inertia[0] - T_D_inertia[0])) + ((T_D_inertia[1] - T_D_inertia[1]) + (T_D_inertia[2] - T_D_inertia[2])))) + ((((T_D_inertia[3] - T_D_inertia[3]) + (T_D_inertia[4] - T_D_inertia[4])) + ((T_D_inertia[5] - T_D_inertia[5]) + (T_D_inertia[6] - T_D_inertia[6]))) + (((T_D_inertia[7] - T_D_inertia[7]) + (T_D_inertia[8] - T_D_inertia[8])) + ((T_D_omega[0] - T_D_omega[0]) + ((T_D_omega[1] - T_D_omega[1]) + (T_D_omega[2] - T_D_omega[2]))))));
+    }
 #endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -835,15 +960,41 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians_f32(
     int status = 0, singular = 0;
     float finite = 0.0f;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    {   /* the range test of every input component, as one loop (it vectorises) */
-        const float in_[16] = {
-            m, v[0], v[1], v[2], inertia[0], inertia[1], inertia[2], inertia[3], inertia[4],
-            inertia[5], inertia[6], inertia[7], inertia[8], omega[0], omega[1], omega[2]
-        };
-        int j_;
-        for (j_ = 0; j_ < 16; ++j_)
-            RIGIDSYM_C_ODD_F(odd, in_[j_]);
+#if RIGIDSYM_C_VECTOR
+    {   /* the range test of every input component, 4 per vector register */
+        rigidsym_c_vf oddv_ = {0, 0, 0, 0};
+        {
+            const rigidsym_c_vf v_ = {rigidsym_c_bits_f(&m), rigidsym_c_bits_f(&v[0]), rigidsym_c_bits_f(&v[1]), rigidsym_c_bits_f(&v[2])};
+            oddv_ |= rigidsym_c_odd_vf(v_);
+        }
+        oddv_ |= rigidsym_c_odd_vf(rigidsym_c_load_vf(inertia));
+        oddv_ |= rigidsym_c_odd_vf(rigidsym_c_load_vf(inertia + 4));
+        {
+            const rigidsym_c_vf v_ = {rigidsym_c_bits_f(&inertia[8]), rigidsym_c_bits_f(&omega[0]), rigidsym_c_bits_f(&omega[1]), rigidsym_c_bits_f(&omega[2])};
+            oddv_ |= rigidsym_c_odd_vf(v_);
+        }
+        odd = oddv_[0] | oddv_[1] | oddv_[2] | oddv_[3];
     }
+#else
+    {   /* the range test of every input component, one at a time */
+        RIGIDSYM_C_ODD_F(odd, m);
+        RIGIDSYM_C_ODD_F(odd, v[0]);
+        RIGIDSYM_C_ODD_F(odd, v[1]);
+        RIGIDSYM_C_ODD_F(odd, v[2]);
+        RIGIDSYM_C_ODD_F(odd, inertia[0]);
+        RIGIDSYM_C_ODD_F(odd, inertia[1]);
+        RIGIDSYM_C_ODD_F(odd, inertia[2]);
+        RIGIDSYM_C_ODD_F(odd, inertia[3]);
+        RIGIDSYM_C_ODD_F(odd, inertia[4]);
+        RIGIDSYM_C_ODD_F(odd, inertia[5]);
+        RIGIDSYM_C_ODD_F(odd, inertia[6]);
+        RIGIDSYM_C_ODD_F(odd, inertia[7]);
+        RIGIDSYM_C_ODD_F(odd, inertia[8]);
+        RIGIDSYM_C_ODD_F(odd, omega[0]);
+        RIGIDSYM_C_ODD_F(odd, omega[1]);
+        RIGIDSYM_C_ODD_F(odd, omega[2]);
+    }
+#endif
     if (odd >> 31) {
         const float *args[4];
         const int sizes[4] = {1, 3, 9, 3};
@@ -921,13 +1072,26 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians_f32(
     }
     /* no division or root, and every output bounded by 2^96 for inputs of
      * ordinary magnitude (|x| < 2^31): only an extreme or non-finite input can make an
-     * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN
-     * otherwise; the guards of rigidsym_c_impl.h keep the compiler from folding it) */
+     * output non-finite, so only then are the outputs tested */
 #if defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    finite += (((((T[0] - T[0]) + (T_D_m[0] - T_D_m[0])) + ((T_D_v[0] - T_D_v[0]) + (T_D_v[1] - T_D_v[1]))) + (((T_D_v[2] - T_D_v[2]) + (T_D_inertia[0] - T_D_inertia[0])) + ((T_D_inertia[1] - T_D_inertia[1]) + (T_D_inertia[2] - T_D_inertia[2])))) + ((((T_D_inertia[3] - T_D_inertia[3]) + (T_D_inertia[4] - T_D_inertia[4])) + ((T_D_inertia[5] - T_D_inertia[5]) + (T_D_inertia[6] - T_D_inertia[6]))) + (((T_D_inertia[7] - T_D_inertia[7]) + (T_D_inertia[8] - T_D_inertia[8])) + ((T_D_omega[0] - T_D_omega[0]) + ((T_D_omega[1] - T_D_omega[1]) + (T_D_omega[2] - T_D_omega[2]))))));
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const float s_ = ((((T[0] + T_D_m[0]) + (T_D_v[0] + T_D_v[1])) + ((T_D_v[2] + T_D_inertia[0]) + (T_D_inertia[1] + T_D_inertia[2]))) + (((T_D_inertia[3] + T_D_inertia[4]) + (T_D_inertia[5] + T_D_inertia[6])) + ((T_D_inertia[7] + T_D_inertia[8]) + (T_D_omega[0] + (T_D_omega[1] + T_D_omega[2])))));
+        if (!(s_ - s_ == 0.0f))
+            finite += (((((T[0] - T[0]) + (T_D_m[0] - T_D_m[0])) + ((T_D_v[0] - T_D_v[0]) + (T_D_v[1] - T_D_v[1]))) + (((T_D_v[2] - T_D_v[2]) + (T_D_inertia[0] - T_D_inertia[0])) + ((T_D_inertia[1] - T_D_inertia[1]) + (T_D_inertia[2] - T_D_inertia[2])))) + ((((T_D_inertia[3] - T_D_inertia[3]) + (T_D_inertia[4] - T_D_inertia[4])) + ((T_D_inertia[5] - T_D_inertia[5]) + (T_D_inertia[6] - T_D_inertia[6]))) + (((T_D_inertia[7] - T_D_inertia[7]) + (T_D_inertia[8] - T_D_inertia[8])) + ((T_D_omega[0] - T_D_omega[0]) + ((T_D_omega[1] - T_D_omega[1]) + (T_D_omega[2] - T_D_omega[2]))))));
+    }
 #else
     if (status)
-        finite += (((((T[0] - T[0]) + (T_D_m[0] - T_D_m[0])) + ((T_D_v[0] - T_D_v[0]) + (T_D_v[1] - T_D_v[1]))) + (((T_D_v[2] - T_D_v[2]) + (T_D_inertia[0] - T_D_inertia[0])) + ((T_D_inertia[1] - T_D_inertia[1]) + (T_D_inertia[2] - T_D_inertia[2])))) + ((((T_D_inertia[3] - T_D_inertia[3]) + (T_D_inertia[4] - T_D_inertia[4])) + ((T_D_inertia[5] - T_D_inertia[5]) + (T_D_inertia[6] - T_D_inertia[6]))) + (((T_D_inertia[7] - T_D_inertia[7]) + (T_D_inertia[8] - T_D_inertia[8])) + ((T_D_omega[0] - T_D_omega[0]) + ((T_D_omega[1] - T_D_omega[1]) + (T_D_omega[2] - T_D_omega[2]))))));
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const float s_ = ((((T[0] + T_D_m[0]) + (T_D_v[0] + T_D_v[1])) + ((T_D_v[2] + T_D_inertia[0]) + (T_D_inertia[1] + T_D_inertia[2]))) + (((T_D_inertia[3] + T_D_inertia[4]) + (T_D_inertia[5] + T_D_inertia[6])) + ((T_D_inertia[7] + T_D_inertia[8]) + (T_D_omega[0] + (T_D_omega[1] + T_D_omega[2])))));
+        if (!(s_ - s_ == 0.0f))
+            finite += (((((T[0] - T[0]) + (T_D_m[0] - T_D_m[0])) + ((T_D_v[0] - T_D_v[0]) + (T_D_v[1] - T_D_v[1]))) + (((T_D_v[2] - T_D_v[2]) + (T_D_inertia[0] - T_D_inertia[0])) + ((T_D_inertia[1] - T_D_inertia[1]) + (T_D_inertia[2] - T_D_inertia[2])))) + ((((T_D_inertia[3] - T_D_inertia[3]) + (T_D_inertia[4] - T_D_inertia[4])) + ((T_D_inertia[5] - T_D_inertia[5]) + (T_D_inertia[6] - T_D_inertia[6]))) + (((T_D_inertia[7] - T_D_inertia[7]) + (T_D_inertia[8] - T_D_inertia[8])) + ((T_D_omega[0] - T_D_omega[0]) + ((T_D_omega[1] - T_D_omega[1]) + (T_D_omega[2] - T_D_omega[2]))))));
+    }
 #endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;

@@ -161,16 +161,53 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench(
     int status = 0, singular = 0;
     double finite = 0.0;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    {   /* the range test of every input component, as one loop (it vectorises) */
-        const double in_[20] = {
-            I_C[0], I_C[1], I_C[2], I_C[3], I_C[4], I_C[5], I_C[6], I_C[7], I_C[8], m, omega[0],
-            omega[1], omega[2], omega_dot[0], omega_dot[1], omega_dot[2], c_ddot[0], c_ddot[1],
-            c_ddot[2], 0.0
-        };
-        int j_;
-        for (j_ = 0; j_ < 20; ++j_)
-            RIGIDSYM_C_ODD_D(odd, in_[j_]);
+#if RIGIDSYM_C_VECTOR
+    {   /* the range test of every input component, 2 per vector register */
+        rigidsym_c_vd oddv_ = {0, 0};
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(I_C));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(I_C + 2));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(I_C + 4));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(I_C + 6));
+        {
+            const rigidsym_c_vd v_ = {rigidsym_c_bits_d(&I_C[8]), rigidsym_c_bits_d(&m)};
+            oddv_ |= rigidsym_c_odd_vd(v_);
+        }
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(omega));
+        {
+            const rigidsym_c_vd v_ = {rigidsym_c_bits_d(&omega[2]), rigidsym_c_bits_d(&omega_dot[0])};
+            oddv_ |= rigidsym_c_odd_vd(v_);
+        }
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(omega_dot + 1));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(c_ddot));
+        {
+            const rigidsym_c_vd v_ = {rigidsym_c_bits_d(&c_ddot[2]), 0};
+            oddv_ |= rigidsym_c_odd_vd(v_);
+        }
+        odd = oddv_[0] | oddv_[1];
     }
+#else
+    {   /* the range test of every input component, one at a time */
+        RIGIDSYM_C_ODD_D(odd, I_C[0]);
+        RIGIDSYM_C_ODD_D(odd, I_C[1]);
+        RIGIDSYM_C_ODD_D(odd, I_C[2]);
+        RIGIDSYM_C_ODD_D(odd, I_C[3]);
+        RIGIDSYM_C_ODD_D(odd, I_C[4]);
+        RIGIDSYM_C_ODD_D(odd, I_C[5]);
+        RIGIDSYM_C_ODD_D(odd, I_C[6]);
+        RIGIDSYM_C_ODD_D(odd, I_C[7]);
+        RIGIDSYM_C_ODD_D(odd, I_C[8]);
+        RIGIDSYM_C_ODD_D(odd, m);
+        RIGIDSYM_C_ODD_D(odd, omega[0]);
+        RIGIDSYM_C_ODD_D(odd, omega[1]);
+        RIGIDSYM_C_ODD_D(odd, omega[2]);
+        RIGIDSYM_C_ODD_D(odd, omega_dot[0]);
+        RIGIDSYM_C_ODD_D(odd, omega_dot[1]);
+        RIGIDSYM_C_ODD_D(odd, omega_dot[2]);
+        RIGIDSYM_C_ODD_D(odd, c_ddot[0]);
+        RIGIDSYM_C_ODD_D(odd, c_ddot[1]);
+        RIGIDSYM_C_ODD_D(odd, c_ddot[2]);
+    }
+#endif
     if (odd >> 63) {
         const double *args[5];
         const int sizes[5] = {9, 1, 3, 3, 3};
@@ -230,13 +267,26 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench(
     }
     /* no division or root, and every output bounded by 2^307 for inputs of
      * ordinary magnitude (|x| < 2^101): only an extreme or non-finite input can make an
-     * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN
-     * otherwise; the guards of rigidsym_c_impl.h keep the compiler from folding it) */
+     * output non-finite, so only then are the outputs tested */
 #if defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    finite += (((w[0] - w[0]) + ((w[1] - w[1]) + (w[2] - w[2]))) + ((w[3] - w[3]) + ((w[4] - w[4]) + (w[5] - w[5]))));
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const double s_ = ((w[0] + (w[1] + w[2])) + (w[3] + (w[4] + w[5])));
+        if (!(s_ - s_ == 0.0))
+            finite += (((w[0] - w[0]) + ((w[1] - w[1]) + (w[2] - w[2]))) + ((w[3] - w[3]) + ((w[4] - w[4]) + (w[5] - w[5]))));
+    }
 #else
     if (status)
-        finite += (((w[0] - w[0]) + ((w[1] - w[1]) + (w[2] - w[2]))) + ((w[3] - w[3]) + ((w[4] - w[4]) + (w[5] - w[5]))));
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const double s_ = ((w[0] + (w[1] + w[2])) + (w[3] + (w[4] + w[5])));
+        if (!(s_ - s_ == 0.0))
+            finite += (((w[0] - w[0]) + ((w[1] - w[1]) + (w[2] - w[2]))) + ((w[3] - w[3]) + ((w[4] - w[4]) + (w[5] - w[5]))));
+    }
 #endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -369,16 +419,48 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_f32(
     int status = 0, singular = 0;
     float finite = 0.0f;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    {   /* the range test of every input component, as one loop (it vectorises) */
-        const float in_[20] = {
-            I_C[0], I_C[1], I_C[2], I_C[3], I_C[4], I_C[5], I_C[6], I_C[7], I_C[8], m, omega[0],
-            omega[1], omega[2], omega_dot[0], omega_dot[1], omega_dot[2], c_ddot[0], c_ddot[1],
-            c_ddot[2], 0.0f
-        };
-        int j_;
-        for (j_ = 0; j_ < 20; ++j_)
-            RIGIDSYM_C_ODD_F(odd, in_[j_]);
+#if RIGIDSYM_C_VECTOR
+    {   /* the range test of every input component, 4 per vector register */
+        rigidsym_c_vf oddv_ = {0, 0, 0, 0};
+        oddv_ |= rigidsym_c_odd_vf(rigidsym_c_load_vf(I_C));
+        oddv_ |= rigidsym_c_odd_vf(rigidsym_c_load_vf(I_C + 4));
+        {
+            const rigidsym_c_vf v_ = {rigidsym_c_bits_f(&I_C[8]), rigidsym_c_bits_f(&m), rigidsym_c_bits_f(&omega[0]), rigidsym_c_bits_f(&omega[1])};
+            oddv_ |= rigidsym_c_odd_vf(v_);
+        }
+        {
+            const rigidsym_c_vf v_ = {rigidsym_c_bits_f(&omega[2]), rigidsym_c_bits_f(&omega_dot[0]), rigidsym_c_bits_f(&omega_dot[1]), rigidsym_c_bits_f(&omega_dot[2])};
+            oddv_ |= rigidsym_c_odd_vf(v_);
+        }
+        {
+            const rigidsym_c_vf v_ = {rigidsym_c_bits_f(&c_ddot[0]), rigidsym_c_bits_f(&c_ddot[1]), rigidsym_c_bits_f(&c_ddot[2]), 0};
+            oddv_ |= rigidsym_c_odd_vf(v_);
+        }
+        odd = oddv_[0] | oddv_[1] | oddv_[2] | oddv_[3];
     }
+#else
+    {   /* the range test of every input component, one at a time */
+        RIGIDSYM_C_ODD_F(odd, I_C[0]);
+        RIGIDSYM_C_ODD_F(odd, I_C[1]);
+        RIGIDSYM_C_ODD_F(odd, I_C[2]);
+        RIGIDSYM_C_ODD_F(odd, I_C[3]);
+        RIGIDSYM_C_ODD_F(odd, I_C[4]);
+        RIGIDSYM_C_ODD_F(odd, I_C[5]);
+        RIGIDSYM_C_ODD_F(odd, I_C[6]);
+        RIGIDSYM_C_ODD_F(odd, I_C[7]);
+        RIGIDSYM_C_ODD_F(odd, I_C[8]);
+        RIGIDSYM_C_ODD_F(odd, m);
+        RIGIDSYM_C_ODD_F(odd, omega[0]);
+        RIGIDSYM_C_ODD_F(odd, omega[1]);
+        RIGIDSYM_C_ODD_F(odd, omega[2]);
+        RIGIDSYM_C_ODD_F(odd, omega_dot[0]);
+        RIGIDSYM_C_ODD_F(odd, omega_dot[1]);
+        RIGIDSYM_C_ODD_F(odd, omega_dot[2]);
+        RIGIDSYM_C_ODD_F(odd, c_ddot[0]);
+        RIGIDSYM_C_ODD_F(odd, c_ddot[1]);
+        RIGIDSYM_C_ODD_F(odd, c_ddot[2]);
+    }
+#endif
     if (odd >> 31) {
         const float *args[5];
         const int sizes[5] = {9, 1, 3, 3, 3};
@@ -434,13 +516,26 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_f32(
     }
     /* no division or root, and every output bounded by 2^97 for inputs of
      * ordinary magnitude (|x| < 2^31): only an extreme or non-finite input can make an
-     * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN
-     * otherwise; the guards of rigidsym_c_impl.h keep the compiler from folding it) */
+     * output non-finite, so only then are the outputs tested */
 #if defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    finite += (((w[0] - w[0]) + ((w[1] - w[1]) + (w[2] - w[2]))) + ((w[3] - w[3]) + ((w[4] - w[4]) + (w[5] - w[5]))));
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const float s_ = ((w[0] + (w[1] + w[2])) + (w[3] + (w[4] + w[5])));
+        if (!(s_ - s_ == 0.0f))
+            finite += (((w[0] - w[0]) + ((w[1] - w[1]) + (w[2] - w[2]))) + ((w[3] - w[3]) + ((w[4] - w[4]) + (w[5] - w[5]))));
+    }
 #else
     if (status)
-        finite += (((w[0] - w[0]) + ((w[1] - w[1]) + (w[2] - w[2]))) + ((w[3] - w[3]) + ((w[4] - w[4]) + (w[5] - w[5]))));
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const float s_ = ((w[0] + (w[1] + w[2])) + (w[3] + (w[4] + w[5])));
+        if (!(s_ - s_ == 0.0f))
+            finite += (((w[0] - w[0]) + ((w[1] - w[1]) + (w[2] - w[2]))) + ((w[3] - w[3]) + ((w[4] - w[4]) + (w[5] - w[5]))));
+    }
 #endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -920,16 +1015,53 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians(
     int status = 0, singular = 0;
     double finite = 0.0;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    {   /* the range test of every input component, as one loop (it vectorises) */
-        const double in_[20] = {
-            I_C[0], I_C[1], I_C[2], I_C[3], I_C[4], I_C[5], I_C[6], I_C[7], I_C[8], m, omega[0],
-            omega[1], omega[2], omega_dot[0], omega_dot[1], omega_dot[2], c_ddot[0], c_ddot[1],
-            c_ddot[2], 0.0
-        };
-        int j_;
-        for (j_ = 0; j_ < 20; ++j_)
-            RIGIDSYM_C_ODD_D(odd, in_[j_]);
+#if RIGIDSYM_C_VECTOR
+    {   /* the range test of every input component, 2 per vector register */
+        rigidsym_c_vd oddv_ = {0, 0};
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(I_C));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(I_C + 2));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(I_C + 4));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(I_C + 6));
+        {
+            const rigidsym_c_vd v_ = {rigidsym_c_bits_d(&I_C[8]), rigidsym_c_bits_d(&m)};
+            oddv_ |= rigidsym_c_odd_vd(v_);
+        }
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(omega));
+        {
+            const rigidsym_c_vd v_ = {rigidsym_c_bits_d(&omega[2]), rigidsym_c_bits_d(&omega_dot[0])};
+            oddv_ |= rigidsym_c_odd_vd(v_);
+        }
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(omega_dot + 1));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(c_ddot));
+        {
+            const rigidsym_c_vd v_ = {rigidsym_c_bits_d(&c_ddot[2]), 0};
+            oddv_ |= rigidsym_c_odd_vd(v_);
+        }
+        odd = oddv_[0] | oddv_[1];
     }
+#else
+    {   /* the range test of every input component, one at a time */
+        RIGIDSYM_C_ODD_D(odd, I_C[0]);
+        RIGIDSYM_C_ODD_D(odd, I_C[1]);
+        RIGIDSYM_C_ODD_D(odd, I_C[2]);
+        RIGIDSYM_C_ODD_D(odd, I_C[3]);
+        RIGIDSYM_C_ODD_D(odd, I_C[4]);
+        RIGIDSYM_C_ODD_D(odd, I_C[5]);
+        RIGIDSYM_C_ODD_D(odd, I_C[6]);
+        RIGIDSYM_C_ODD_D(odd, I_C[7]);
+        RIGIDSYM_C_ODD_D(odd, I_C[8]);
+        RIGIDSYM_C_ODD_D(odd, m);
+        RIGIDSYM_C_ODD_D(odd, omega[0]);
+        RIGIDSYM_C_ODD_D(odd, omega[1]);
+        RIGIDSYM_C_ODD_D(odd, omega[2]);
+        RIGIDSYM_C_ODD_D(odd, omega_dot[0]);
+        RIGIDSYM_C_ODD_D(odd, omega_dot[1]);
+        RIGIDSYM_C_ODD_D(odd, omega_dot[2]);
+        RIGIDSYM_C_ODD_D(odd, c_ddot[0]);
+        RIGIDSYM_C_ODD_D(odd, c_ddot[1]);
+        RIGIDSYM_C_ODD_D(odd, c_ddot[2]);
+    }
+#endif
     if (odd >> 63) {
         const double *args[5];
         const int sizes[5] = {9, 1, 3, 3, 3};
@@ -1124,13 +1256,26 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians(
     }
     /* no division or root, and every output bounded by 2^308 for inputs of
      * ordinary magnitude (|x| < 2^101): only an extreme or non-finite input can make an
-     * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN
-     * otherwise; the guards of rigidsym_c_impl.h keep the compiler from folding it) */
+     * output non-finite, so only then are the outputs tested */
 #if defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    finite += (((((((w[0] - w[0]) + ((w[1] - w[1]) + (w[2] - w[2]))) + (((w[3] - w[3]) + (w[4] - w[4])) + ((w[5] - w[5]) + (w_D_I_C[0] - w_D_I_C[0])))) + ((((w_D_I_C[1] - w_D_I_C[1]) + (w_D_I_C[2] - w_D_I_C[2])) + ((w_D_I_C[3] - w_D_I_C[3]) + (w_D_I_C[4] - w_D_I_C[4]))) + (((w_D_I_C[5] - w_D_I_C[5]) + (w_D_I_C[6] - w_D_I_C[6])) + ((w_D_I_C[7] - w_D_I_C[7]) + (w_D_I_C[8] - w_D_I_C[8]))))) + ((((w_D_I_C[9] - w_D_I_C[9]) + ((w_D_I_C[10] - w_D_I_C[10]) + (w_D_I_C[11] - w_D_I_C[11]))) + (((w_D_I_C[12] - w_D_I_C[12]) + (w_D_I_C[13] - w_D_I_C[13])) + ((w_D_I_C[14] - w_D_I_C[14]) + (w_D_I_C[15] - w_D_I_C[15])))) + ((((w_D_I_C[16] - w_D_I_C[16]) + (w_D_I_C[17] - w_D_I_C[17])) + ((w_D_I_C[18] - w_D_I_C[18]) + (w_D_I_C[19] - w_D_I_C[19]))) + (((w_D_I_C[20] - w_D_I_C[20]) + (w_D_I_C[21] - w_D_I_C[21])) + ((w_D_I_C[22] - w_D_I_C[22]) + (w_D_I_C[23] - w_D_I_C[23])))))) + (((((w_D_I_C[24] - w_D_I_C[24]) + ((w_D_I_C[25] - w_D_I_C[25]) + (w_D_I_C[26] - w_D_I_C[26]))) + (((w_D_I_C[27] - w_D_I_C[27]) + (w_D_I_C[28] - w_D_I_C[28])) + ((w_D_I_C[29] - w_D_I_C[29]) + (w_D_I_C[30] - w_D_I_C[30])))) + ((((w_D_I_C[31] - w_D_I_C[31]) + (w_D_I_C[32] - w_D_I_C[32])) + ((w_D_I_C[33] - w_D_I_C[33]) + (w_D_I_C[34] - w_D_I_C[34]))) + (((w_D_I_C[35] - w_D_I_C[35]) + (w_D_I_C[36] - w_D_I_C[36])) + ((w_D_I_C[37] - w_D_I_C[37]) + (w_D_I_C[38] - w_D_I_C[38]))))) + ((((w_D_I_C[39] - w_D_I_C[39]) + ((w_D_I_C[40] - w_D_I_C[40]) + (w_D_I_C[41] - w_D_I_C[41]))) + (((w_D_I_C[42] - w_D_I_C[42]) + (w_D_I_C[43] - w_D_I_C[43])) + ((w_D_I_C[44] - w_D_I_C[44]) + (w_D_I_C[45] - w_D_I_C[45])))) + ((((w_D_I_C[46] - w_D_I_C[46]) + (w_D_I_C[47] - w_D_I_C[47])) + ((w_D_I_C[48] - w_D_I_C[48]) + (w_D_I_C[49] - w_D_I_C[49]))) + (((w_D_I_C[50] - w_D_I_C[50]) + (w_D_I_C[51] - w_D_I_C[51])) + ((w_D_I_C[52] - w_D_I_C[52]) + (w_D_I_C[53] - w_D_I_C[53]))))))) + ((((((w_D_m[0] - w_D_m[0]) + ((w_D_m[1] - w_D_m[1]) + (w_D_m[2] - w_D_m[2]))) + (((w_D_m[3] - w_D_m[3]) + (w_D_m[4] - w_D_m[4])) + ((w_D_m[5] - w_D_m[5]) + (w_D_omega[0] - w_D_omega[0])))) + ((((w_D_omega[1] - w_D_omega[1]) + (w_D_omega[2] - w_D_omega[2])) + ((w_D_omega[3] - w_D_omega[3]) + (w_D_omega[4] - w_D_omega[4]))) + (((w_D_omega[5] - w_D_omega[5]) + (w_D_omega[6] - w_D_omega[6])) + ((w_D_omega[7] - w_D_omega[7]) + (w_D_omega[8] - w_D_omega[8]))))) + ((((w_D_omega[9] - w_D_omega[9]) + ((w_D_omega[10] - w_D_omega[10]) + (w_D_omega[11] - w_D_omega[11]))) + (((w_D_omega[12] - w_D_omega[12]) + (w_D_omega[13] - w_D_omega[13])) + ((w_D_omega[14] - w_D_omega[14]) + (w_D_omega[15] - w_D_omega[15])))) + ((((w_D_omega[16] - w_D_omega[16]) + (w_D_omega[17] - w_D_omega[17])) + ((w_D_omega_dot[0] - w_D_omega_dot[0]) + (w_D_omega_dot[1] - w_D_omega_dot[1]))) + (((w_D_omega_dot[2] - w_D_omega_dot[2]) + (w_D_omega_dot[3] - w_D_omega_dot[3])) + ((w_D_omega_dot[4] - w_D_omega_dot[4]) + (w_D_omega_dot[5] - w_D_omega_dot[5])))))) + (((((w_D_omega_dot[6] - w_D_omega_dot[6]) + ((w_D_omega_dot[7] - w_D_omega_dot[7]) + (w_D_omega_dot[8] - w_D_omega_dot[8]))) + (((w_D_omega_dot[9] - w_D_omega_dot[9]) + (w_D_omega_dot[10] - w_D_omega_dot[10])) + ((w_D_omega_dot[11] - w_D_omega_dot[11]) + (w_D_omega_dot[12] - w_D_omega_dot[12])))) + ((((w_D_omega_dot[13] - w_D_omega_dot[13]) + (w_D_omega_dot[14] - w_D_omega_dot[14])) + ((w_D_omega_dot[15] - w_D_omega_dot[15]) + (w_D_omega_dot[16] - w_D_omega_dot[16]))) + (((w_D_omega_dot[17] - w_D_omega_dot[17]) + (w_D_c_ddot[0] - w_D_c_ddot[0])) + ((w_D_c_ddot[1] - w_D_c_ddot[1]) + (w_D_c_ddot[2] - w_D_c_ddot[2]))))) + ((((w_D_c_ddot[3] - w_D_c_ddot[3]) + ((w_D_c_ddot[4] - w_D_c_ddot[4]) + (w_D_c_ddot[5] - w_D_c_ddot[5]))) + (((w_D_c_ddot[6] - w_D_c_ddot[6]) + (w_D_c_ddot[7] - w_D_c_ddot[7])) + ((w_D_c_ddot[8] - w_D_c_ddot[8]) + (w_D_c_ddot[9] - w_D_c_ddot[9])))) + ((((w_D_c_ddot[10] - w_D_c_ddot[10]) + (w_D_c_ddot[11] - w_D_c_ddot[11])) + ((w_D_c_ddot[12] - w_D_c_ddot[12]) + (w_D_c_ddot[13] - w_D_c_ddot[13]))) + (((w_D_c_ddot[14] - w_D_c_ddot[14]) + (w_D_c_ddot[15] - w_D_c_ddot[15])) + ((w_D_c_ddot[16] - w_D_c_ddot[16]) + (w_D_c_ddot[17] - w_D_c_ddot[17]))))))));
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const double s_ = ((((((w[0] + (w[1] + w[2])) + ((w[3] + w[4]) + (w[5] + w_D_I_C[0]))) + (((w_D_I_C[1] + w_D_I_C[2]) + (w_D_I_C[3] + w_D_I_C[4])) + ((w_D_I_C[5] + w_D_I_C[6]) + (w_D_I_C[7] + w_D_I_C[8])))) + (((w_D_I_C[9] + (w_D_I_C[10] + w_D_I_C[11])) + ((w_D_I_C[12] + w_D_I_C[13]) + (w_D_I_C[14] + w_D_I_C[15]))) + (((w_D_I_C[16] + w_D_I_C[17]) + (w_D_I_C[18] + w_D_I_C[19])) + ((w_D_I_C[20] + w_D_I_C[21]) + (w_D_I_C[22] + w_D_I_C[23]))))) + ((((w_D_I_C[24] + (w_D_I_C[25] + w_D_I_C[26])) + ((w_D_I_C[27] + w_D_I_C[28]) + (w_D_I_C[29] + w_D_I_C[30]))) + (((w_D_I_C[31] + w_D_I_C[32]) + (w_D_I_C[33] + w_D_I_C[34])) + ((w_D_I_C[35] + w_D_I_C[36]) + (w_D_I_C[37] + w_D_I_C[38])))) + (((w_D_I_C[39] + (w_D_I_C[40] + w_D_I_C[41])) + ((w_D_I_C[42] + w_D_I_C[43]) + (w_D_I_C[44] + w_D_I_C[45]))) + (((w_D_I_C[46] + w_D_I_C[47]) + (w_D_I_C[48] + w_D_I_C[49])) + ((w_D_I_C[50] + w_D_I_C[51]) + (w_D_I_C[52] + w_D_I_C[53])))))) + (((((w_D_m[0] + (w_D_m[1] + w_D_m[2])) + ((w_D_m[3] + w_D_m[4]) + (w_D_m[5] + w_D_omega[0]))) + (((w_D_omega[1] + w_D_omega[2]) + (w_D_omega[3] + w_D_omega[4])) + ((w_D_omega[5] + w_D_omega[6]) + (w_D_omega[7] + w_D_omega[8])))) + (((w_D_omega[9] + (w_D_omega[10] + w_D_omega[11])) + ((w_D_omega[12] + w_D_omega[13]) + (w_D_omega[14] + w_D_omega[15]))) + (((w_D_omega[16] + w_D_omega[17]) + (w_D_omega_dot[0] + w_D_omega_dot[1])) + ((w_D_omega_dot[2] + w_D_omega_dot[3]) + (w_D_omega_dot[4] + w_D_omega_dot[5]))))) + ((((w_D_omega_dot[6] + (w_D_omega_dot[7] + w_D_omega_dot[8])) + ((w_D_omega_dot[9] + w_D_omega_dot[10]) + (w_D_omega_dot[11] + w_D_omega_dot[12]))) + (((w_D_omega_dot[13] + w_D_omega_dot[14]) + (w_D_omega_dot[15] + w_D_omega_dot[16])) + ((w_D_omega_dot[17] + w_D_c_ddot[0]) + (w_D_c_ddot[1] + w_D_c_ddot[2])))) + (((w_D_c_ddot[3] + (w_D_c_ddot[4] + w_D_c_ddot[5])) + ((w_D_c_ddot[6] + w_D_c_ddot[7]) + (w_D_c_ddot[8] + w_D_c_ddot[9]))) + (((w_D_c_ddot[10] + w_D_c_ddot[11]) + (w_D_c_ddot[12] + w_D_c_ddot[13])) + ((w_D_c_ddot[14] + w_D_c_ddot[15]) + (w_D_c_ddot[16] + w_D_c_ddot[17])))))));
+        if (!(s_ - s_ == 0.0))
+            finite += (((((((w[0] - w[0]) + ((w[1] - w[1]) + (w[2] - w[2]))) + (((w[3] - w[3]) + (w[4] - w[4])) + ((w[5] - w[5]) + (w_D_I_C[0] - w_D_I_C[0])))) + ((((w_D_I_C[1] - w_D_I_C[1]) + (w_D_I_C[2] - w_D_I_C[2])) + ((w_D_I_C[3] - w_D_I_C[3]) + (w_D_I_C[4] - w_D_I_C[4]))) + (((w_D_I_C[5] - w_D_I_C[5]) + (w_D_I_C[6] - w_D_I_C[6])) + ((w_D_I_C[7] - w_D_I_C[7]) + (w_D_I_C[8] - w_D_I_C[8]))))) + ((((w_D_I_C[9] - w_D_I_C[9]) + ((w_D_I_C[10] - w_D_I_C[10]) + (w_D_I_C[11] - w_D_I_C[11]))) + (((w_D_I_C[12] - w_D_I_C[12]) + (w_D_I_C[13] - w_D_I_C[13])) + ((w_D_I_C[14] - w_D_I_C[14]) + (w_D_I_C[15] - w_D_I_C[15])))) + ((((w_D_I_C[16] - w_D_I_C[16]) + (w_D_I_C[17] - w_D_I_C[17])) + ((w_D_I_C[18] - w_D_I_C[18]) + (w_D_I_C[19] - w_D_I_C[19]))) + (((w_D_I_C[20] - w_D_I_C[20]) + (w_D_I_C[21] - w_D_I_C[21])) + ((w_D_I_C[22] - w_D_I_C[22]) + (w_D_I_C[23] - w_D_I_C[23])))))) + (((((w_D_I_C[24] - w_D_I_C[24]) + ((w_D_I_C[25] - w_D_I_C[25]) + (w_D_I_C[26] - w_D_I_C[26]))) + (((w_D_I_C[27] - w_D_I_C[27]) + (w_D_I_C[28] - w_D_I_C[28])) + ((w_D_I_C[29] - w_D_I_C[29]) + (w_D_I_C[30] - w_D_I_C[30])))) + ((((w_D_I_C[31] - w_D_I_C[31]) + (w_D_I_C[32] - w_D_I_C[32])) + ((w_D_I_C[33] - w_D_I_C[33]) + (w_D_I_C[34] - w_D_I_C[34]))) + (((w_D_I_C[35] - w_D_I_C[35]) + (w_D_I_C[36] - w_D_I_C[36])) + ((w_D_I_C[37] - w_D_I_C[37]) + (w_D_I_C[38] - w_D_I_C[38]))))) + ((((w_D_I_C[39] - w_D_I_C[39]) + ((w_D_I_C[40] - w_D_I_C[40]) + (w_D_I_C[41] - w_D_I_C[41]))) + (((w_D_I_C[42] - w_D_I_C[42]) + (w_D_I_C[43] - w_D_I_C[43])) + ((w_D_I_C[44] - w_D_I_C[44]) + (w_D_I_C[45] - w_D_I_C[45])))) + ((((w_D_I_C[46] - w_D_I_C[46]) + (w_D_I_C[47] - w_D_I_C[47])) + ((w_D_I_C[48] - w_D_I_C[48]) + (w_D_I_C[49] - w_D_I_C[49]))) + (((w_D_I_C[50] - w_D_I_C[50]) + (w_D_I_C[51] - w_D_I_C[51])) + ((w_D_I_C[52] - w_D_I_C[52]) + (w_D_I_C[53] - w_D_I_C[53]))))))) + ((((((w_D_m[0] - w_D_m[0]) + ((w_D_m[1] - w_D_m[1]) + (w_D_m[2] - w_D_m[2]))) + (((w_D_m[3] - w_D_m[3]) + (w_D_m[4] - w_D_m[4])) + ((w_D_m[5] - w_D_m[5]) + (w_D_omega[0] - w_D_omega[0])))) + ((((w_D_omega[1] - w_D_omega[1]) + (w_D_omega[2] - w_D_omega[2])) + ((w_D_omega[3] - w_D_omega[3]) + (w_D_omega[4] - w_D_omega[4]))) + (((w_D_omega[5] - w_D_omega[5]) + (w_D_omega[6] - w_D_omega[6])) + ((w_D_omega[7] - w_D_omega[7]) + (w_D_omega[8] - w_D_omega[8]))))) + ((((w_D_omega[9] - w_D_omega[9]) + ((w_D_omega[10] - w_D_omega[10]) + (w_D_omega[11] - w_D_omega[11]))) + (((w_D_omega[12] - w_D_omega[12]) + (w_D_omega[13] - w_D_omega[13])) + ((w_D_omega[14] - w_D_omega[14]) + (w_D_omega[15] - w_D_omega[15])))) + ((((w_D_omega[16] - w_D_omega[16]) + (w_D_omega[17] - w_D_omega[17])) + ((w_D_omega_dot[0] - w_D_omega_dot[0]) + (w_D_omega_dot[1] - w_D_omega_dot[1]))) + (((w_D_omega_dot[2] - w_D_omega_dot[2]) + (w_D_omega_dot[3] - w_D_omega_dot[3])) + ((w_D_omega_dot[4] - w_D_omega_dot[4]) + (w_D_omega_dot[5] - w_D_omega_dot[5])))))) + (((((w_D_omega_dot[6] - w_D_omega_dot[6]) + ((w_D_omega_dot[7] - w_D_omega_dot[7]) + (w_D_omega_dot[8] - w_D_omega_dot[8]))) + (((w_D_omega_dot[9] - w_D_omega_dot[9]) + (w_D_omega_dot[10] - w_D_omega_dot[10])) + ((w_D_omega_dot[11] - w_D_omega_dot[11]) + (w_D_omega_dot[12] - w_D_omega_dot[12])))) + ((((w_D_omega_dot[13] - w_D_omega_dot[13]) + (w_D_omega_dot[14] - w_D_omega_dot[14])) + ((w_D_omega_dot[15] - w_D_omega_dot[15]) + (w_D_omega_dot[16] - w_D_omega_dot[16]))) + (((w_D_omega_dot[17] - w_D_omega_dot[17]) + (w_D_c_ddot[0] - w_D_c_ddot[0])) + ((w_D_c_ddot[1] - w_D_c_ddot[1]) + (w_D_c_ddot[2] - w_D_c_ddot[2]))))) + ((((w_D_c_ddot[3] - w_D_c_ddot[3]) + ((w_D_c_ddot[4] - w_D_c_ddot[4]) + (w_D_c_ddot[5] - w_D_c_ddot[5]))) + (((w_D_c_ddot[6] - w_D_c_ddot[6]) + (w_D_c_ddot[7] - w_D_c_ddot[7])) + ((w_D_c_ddot[8] - w_D_c_ddot[8]) + (w_D_c_ddot[9] - w_D_c_ddot[9])))) + ((((w_D_c_ddot[10] - w_D_c_ddot[10]) + (w_D_c_ddot[11] - w_D_c_ddot[11])) + ((w_D_c_ddot[12] - w_D_c_ddot[12]) + (w_D_c_ddot[13] - w_D_c_ddot[13]))) + (((w_D_c_ddot[14] - w_D_c_ddot[14]) + (w_D_c_ddot[15] - w_D_c_ddot[15])) + ((w_D_c_ddot[16] - w_D_c_ddot[16]) + (w_D_c_ddot[17] - w_D_c_ddot[17]))))))));
+    }
 #else
     if (status)
-        finite += (((((((w[0] - w[0]) + ((w[1] - w[1]) + (w[2] - w[2]))) + (((w[3] - w[3]) + (w[4] - w[4])) + ((w[5] - w[5]) + (w_D_I_C[0] - w_D_I_C[0])))) + ((((w_D_I_C[1] - w_D_I_C[1]) + (w_D_I_C[2] - w_D_I_C[2])) + ((w_D_I_C[3] - w_D_I_C[3]) + (w_D_I_C[4] - w_D_I_C[4]))) + (((w_D_I_C[5] - w_D_I_C[5]) + (w_D_I_C[6] - w_D_I_C[6])) + ((w_D_I_C[7] - w_D_I_C[7]) + (w_D_I_C[8] - w_D_I_C[8]))))) + ((((w_D_I_C[9] - w_D_I_C[9]) + ((w_D_I_C[10] - w_D_I_C[10]) + (w_D_I_C[11] - w_D_I_C[11]))) + (((w_D_I_C[12] - w_D_I_C[12]) + (w_D_I_C[13] - w_D_I_C[13])) + ((w_D_I_C[14] - w_D_I_C[14]) + (w_D_I_C[15] - w_D_I_C[15])))) + ((((w_D_I_C[16] - w_D_I_C[16]) + (w_D_I_C[17] - w_D_I_C[17])) + ((w_D_I_C[18] - w_D_I_C[18]) + (w_D_I_C[19] - w_D_I_C[19]))) + (((w_D_I_C[20] - w_D_I_C[20]) + (w_D_I_C[21] - w_D_I_C[21])) + ((w_D_I_C[22] - w_D_I_C[22]) + (w_D_I_C[23] - w_D_I_C[23])))))) + (((((w_D_I_C[24] - w_D_I_C[24]) + ((w_D_I_C[25] - w_D_I_C[25]) + (w_D_I_C[26] - w_D_I_C[26]))) + (((w_D_I_C[27] - w_D_I_C[27]) + (w_D_I_C[28] - w_D_I_C[28])) + ((w_D_I_C[29] - w_D_I_C[29]) + (w_D_I_C[30] - w_D_I_C[30])))) + ((((w_D_I_C[31] - w_D_I_C[31]) + (w_D_I_C[32] - w_D_I_C[32])) + ((w_D_I_C[33] - w_D_I_C[33]) + (w_D_I_C[34] - w_D_I_C[34]))) + (((w_D_I_C[35] - w_D_I_C[35]) + (w_D_I_C[36] - w_D_I_C[36])) + ((w_D_I_C[37] - w_D_I_C[37]) + (w_D_I_C[38] - w_D_I_C[38]))))) + ((((w_D_I_C[39] - w_D_I_C[39]) + ((w_D_I_C[40] - w_D_I_C[40]) + (w_D_I_C[41] - w_D_I_C[41]))) + (((w_D_I_C[42] - w_D_I_C[42]) + (w_D_I_C[43] - w_D_I_C[43])) + ((w_D_I_C[44] - w_D_I_C[44]) + (w_D_I_C[45] - w_D_I_C[45])))) + ((((w_D_I_C[46] - w_D_I_C[46]) + (w_D_I_C[47] - w_D_I_C[47])) + ((w_D_I_C[48] - w_D_I_C[48]) + (w_D_I_C[49] - w_D_I_C[49]))) + (((w_D_I_C[50] - w_D_I_C[50]) + (w_D_I_C[51] - w_D_I_C[51])) + ((w_D_I_C[52] - w_D_I_C[52]) + (w_D_I_C[53] - w_D_I_C[53]))))))) + ((((((w_D_m[0] - w_D_m[0]) + ((w_D_m[1] - w_D_m[1]) + (w_D_m[2] - w_D_m[2]))) + (((w_D_m[3] - w_D_m[3]) + (w_D_m[4] - w_D_m[4])) + ((w_D_m[5] - w_D_m[5]) + (w_D_omega[0] - w_D_omega[0])))) + ((((w_D_omega[1] - w_D_omega[1]) + (w_D_omega[2] - w_D_omega[2])) + ((w_D_omega[3] - w_D_omega[3]) + (w_D_omega[4] - w_D_omega[4]))) + (((w_D_omega[5] - w_D_omega[5]) + (w_D_omega[6] - w_D_omega[6])) + ((w_D_omega[7] - w_D_omega[7]) + (w_D_omega[8] - w_D_omega[8]))))) + ((((w_D_omega[9] - w_D_omega[9]) + ((w_D_omega[10] - w_D_omega[10]) + (w_D_omega[11] - w_D_omega[11]))) + (((w_D_omega[12] - w_D_omega[12]) + (w_D_omega[13] - w_D_omega[13])) + ((w_D_omega[14] - w_D_omega[14]) + (w_D_omega[15] - w_D_omega[15])))) + ((((w_D_omega[16] - w_D_omega[16]) + (w_D_omega[17] - w_D_omega[17])) + ((w_D_omega_dot[0] - w_D_omega_dot[0]) + (w_D_omega_dot[1] - w_D_omega_dot[1]))) + (((w_D_omega_dot[2] - w_D_omega_dot[2]) + (w_D_omega_dot[3] - w_D_omega_dot[3])) + ((w_D_omega_dot[4] - w_D_omega_dot[4]) + (w_D_omega_dot[5] - w_D_omega_dot[5])))))) + (((((w_D_omega_dot[6] - w_D_omega_dot[6]) + ((w_D_omega_dot[7] - w_D_omega_dot[7]) + (w_D_omega_dot[8] - w_D_omega_dot[8]))) + (((w_D_omega_dot[9] - w_D_omega_dot[9]) + (w_D_omega_dot[10] - w_D_omega_dot[10])) + ((w_D_omega_dot[11] - w_D_omega_dot[11]) + (w_D_omega_dot[12] - w_D_omega_dot[12])))) + ((((w_D_omega_dot[13] - w_D_omega_dot[13]) + (w_D_omega_dot[14] - w_D_omega_dot[14])) + ((w_D_omega_dot[15] - w_D_omega_dot[15]) + (w_D_omega_dot[16] - w_D_omega_dot[16]))) + (((w_D_omega_dot[17] - w_D_omega_dot[17]) + (w_D_c_ddot[0] - w_D_c_ddot[0])) + ((w_D_c_ddot[1] - w_D_c_ddot[1]) + (w_D_c_ddot[2] - w_D_c_ddot[2]))))) + ((((w_D_c_ddot[3] - w_D_c_ddot[3]) + ((w_D_c_ddot[4] - w_D_c_ddot[4]) + (w_D_c_ddot[5] - w_D_c_ddot[5]))) + (((w_D_c_ddot[6] - w_D_c_ddot[6]) + (w_D_c_ddot[7] - w_D_c_ddot[7])) + ((w_D_c_ddot[8] - w_D_c_ddot[8]) + (w_D_c_ddot[9] - w_D_c_ddot[9])))) + ((((w_D_c_ddot[10] - w_D_c_ddot[10]) + (w_D_c_ddot[11] - w_D_c_ddot[11])) + ((w_D_c_ddot[12] - w_D_c_ddot[12]) + (w_D_c_ddot[13] - w_D_c_ddot[13]))) + (((w_D_c_ddot[14] - w_D_c_ddot[14]) + (w_D_c_ddot[15] - w_D_c_ddot[15])) + ((w_D_c_ddot[16] - w_D_c_ddot[16]) + (w_D_c_ddot[17] - w_D_c_ddot[17]))))))));
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const double s_ = ((((((w[0] + (w[1] + w[2])) + ((w[3] + w[4]) + (w[5] + w_D_I_C[0]))) + (((w_D_I_C[1] + w_D_I_C[2]) + (w_D_I_C[3] + w_D_I_C[4])) + ((w_D_I_C[5] + w_D_I_C[6]) + (w_D_I_C[7] + w_D_I_C[8])))) + (((w_D_I_C[9] + (w_D_I_C[10] + w_D_I_C[11])) + ((w_D_I_C[12] + w_D_I_C[13]) + (w_D_I_C[14] + w_D_I_C[15]))) + (((w_D_I_C[16] + w_D_I_C[17]) + (w_D_I_C[18] + w_D_I_C[19])) + ((w_D_I_C[20] + w_D_I_C[21]) + (w_D_I_C[22] + w_D_I_C[23]))))) + ((((w_D_I_C[24] + (w_D_I_C[25] + w_D_I_C[26])) + ((w_D_I_C[27] + w_D_I_C[28]) + (w_D_I_C[29] + w_D_I_C[30]))) + (((w_D_I_C[31] + w_D_I_C[32]) + (w_D_I_C[33] + w_D_I_C[34])) + ((w_D_I_C[35] + w_D_I_C[36]) + (w_D_I_C[37] + w_D_I_C[38])))) + (((w_D_I_C[39] + (w_D_I_C[40] + w_D_I_C[41])) + ((w_D_I_C[42] + w_D_I_C[43]) + (w_D_I_C[44] + w_D_I_C[45]))) + (((w_D_I_C[46] + w_D_I_C[47]) + (w_D_I_C[48] + w_D_I_C[49])) + ((w_D_I_C[50] + w_D_I_C[51]) + (w_D_I_C[52] + w_D_I_C[53])))))) + (((((w_D_m[0] + (w_D_m[1] + w_D_m[2])) + ((w_D_m[3] + w_D_m[4]) + (w_D_m[5] + w_D_omega[0]))) + (((w_D_omega[1] + w_D_omega[2]) + (w_D_omega[3] + w_D_omega[4])) + ((w_D_omega[5] + w_D_omega[6]) + (w_D_omega[7] + w_D_omega[8])))) + (((w_D_omega[9] + (w_D_omega[10] + w_D_omega[11])) + ((w_D_omega[12] + w_D_omega[13]) + (w_D_omega[14] + w_D_omega[15]))) + (((w_D_omega[16] + w_D_omega[17]) + (w_D_omega_dot[0] + w_D_omega_dot[1])) + ((w_D_omega_dot[2] + w_D_omega_dot[3]) + (w_D_omega_dot[4] + w_D_omega_dot[5]))))) + ((((w_D_omega_dot[6] + (w_D_omega_dot[7] + w_D_omega_dot[8])) + ((w_D_omega_dot[9] + w_D_omega_dot[10]) + (w_D_omega_dot[11] + w_D_omega_dot[12]))) + (((w_D_omega_dot[13] + w_D_omega_dot[14]) + (w_D_omega_dot[15] + w_D_omega_dot[16])) + ((w_D_omega_dot[17] + w_D_c_ddot[0]) + (w_D_c_ddot[1] + w_D_c_ddot[2])))) + (((w_D_c_ddot[3] + (w_D_c_ddot[4] + w_D_c_ddot[5])) + ((w_D_c_ddot[6] + w_D_c_ddot[7]) + (w_D_c_ddot[8] + w_D_c_ddot[9]))) + (((w_D_c_ddot[10] + w_D_c_ddot[11]) + (w_D_c_ddot[12] + w_D_c_ddot[13])) + ((w_D_c_ddot[14] + w_D_c_ddot[15]) + (w_D_c_ddot[16] + w_D_c_ddot[17])))))));
+        if (!(s_ - s_ == 0.0))
+            finite += (((((((w[0] - w[0]) + ((w[1] - w[1]) + (w[2] - w[2]))) + (((w[3] - w[3]) + (w[4] - w[4])) + ((w[5] - w[5]) + (w_D_I_C[0] - w_D_I_C[0])))) + ((((w_D_I_C[1] - w_D_I_C[1]) + (w_D_I_C[2] - w_D_I_C[2])) + ((w_D_I_C[3] - w_D_I_C[3]) + (w_D_I_C[4] - w_D_I_C[4]))) + (((w_D_I_C[5] - w_D_I_C[5]) + (w_D_I_C[6] - w_D_I_C[6])) + ((w_D_I_C[7] - w_D_I_C[7]) + (w_D_I_C[8] - w_D_I_C[8]))))) + ((((w_D_I_C[9] - w_D_I_C[9]) + ((w_D_I_C[10] - w_D_I_C[10]) + (w_D_I_C[11] - w_D_I_C[11]))) + (((w_D_I_C[12] - w_D_I_C[12]) + (w_D_I_C[13] - w_D_I_C[13])) + ((w_D_I_C[14] - w_D_I_C[14]) + (w_D_I_C[15] - w_D_I_C[15])))) + ((((w_D_I_C[16] - w_D_I_C[16]) + (w_D_I_C[17] - w_D_I_C[17])) + ((w_D_I_C[18] - w_D_I_C[18]) + (w_D_I_C[19] - w_D_I_C[19]))) + (((w_D_I_C[20] - w_D_I_C[20]) + (w_D_I_C[21] - w_D_I_C[21])) + ((w_D_I_C[22] - w_D_I_C[22]) + (w_D_I_C[23] - w_D_I_C[23])))))) + (((((w_D_I_C[24] - w_D_I_C[24]) + ((w_D_I_C[25] - w_D_I_C[25]) + (w_D_I_C[26] - w_D_I_C[26]))) + (((w_D_I_C[27] - w_D_I_C[27]) + (w_D_I_C[28] - w_D_I_C[28])) + ((w_D_I_C[29] - w_D_I_C[29]) + (w_D_I_C[30] - w_D_I_C[30])))) + ((((w_D_I_C[31] - w_D_I_C[31]) + (w_D_I_C[32] - w_D_I_C[32])) + ((w_D_I_C[33] - w_D_I_C[33]) + (w_D_I_C[34] - w_D_I_C[34]))) + (((w_D_I_C[35] - w_D_I_C[35]) + (w_D_I_C[36] - w_D_I_C[36])) + ((w_D_I_C[37] - w_D_I_C[37]) + (w_D_I_C[38] - w_D_I_C[38]))))) + ((((w_D_I_C[39] - w_D_I_C[39]) + ((w_D_I_C[40] - w_D_I_C[40]) + (w_D_I_C[41] - w_D_I_C[41]))) + (((w_D_I_C[42] - w_D_I_C[42]) + (w_D_I_C[43] - w_D_I_C[43])) + ((w_D_I_C[44] - w_D_I_C[44]) + (w_D_I_C[45] - w_D_I_C[45])))) + ((((w_D_I_C[46] - w_D_I_C[46]) + (w_D_I_C[47] - w_D_I_C[47])) + ((w_D_I_C[48] - w_D_I_C[48]) + (w_D_I_C[49] - w_D_I_C[49]))) + (((w_D_I_C[50] - w_D_I_C[50]) + (w_D_I_C[51] - w_D_I_C[51])) + ((w_D_I_C[52] - w_D_I_C[52]) + (w_D_I_C[53] - w_D_I_C[53]))))))) + ((((((w_D_m[0] - w_D_m[0]) + ((w_D_m[1] - w_D_m[1]) + (w_D_m[2] - w_D_m[2]))) + (((w_D_m[3] - w_D_m[3]) + (w_D_m[4] - w_D_m[4])) + ((w_D_m[5] - w_D_m[5]) + (w_D_omega[0] - w_D_omega[0])))) + ((((w_D_omega[1] - w_D_omega[1]) + (w_D_omega[2] - w_D_omega[2])) + ((w_D_omega[3] - w_D_omega[3]) + (w_D_omega[4] - w_D_omega[4]))) + (((w_D_omega[5] - w_D_omega[5]) + (w_D_omega[6] - w_D_omega[6])) + ((w_D_omega[7] - w_D_omega[7]) + (w_D_omega[8] - w_D_omega[8]))))) + ((((w_D_omega[9] - w_D_omega[9]) + ((w_D_omega[10] - w_D_omega[10]) + (w_D_omega[11] - w_D_omega[11]))) + (((w_D_omega[12] - w_D_omega[12]) + (w_D_omega[13] - w_D_omega[13])) + ((w_D_omega[14] - w_D_omega[14]) + (w_D_omega[15] - w_D_omega[15])))) + ((((w_D_omega[16] - w_D_omega[16]) + (w_D_omega[17] - w_D_omega[17])) + ((w_D_omega_dot[0] - w_D_omega_dot[0]) + (w_D_omega_dot[1] - w_D_omega_dot[1]))) + (((w_D_omega_dot[2] - w_D_omega_dot[2]) + (w_D_omega_dot[3] - w_D_omega_dot[3])) + ((w_D_omega_dot[4] - w_D_omega_dot[4]) + (w_D_omega_dot[5] - w_D_omega_dot[5])))))) + (((((w_D_omega_dot[6] - w_D_omega_dot[6]) + ((w_D_omega_dot[7] - w_D_omega_dot[7]) + (w_D_omega_dot[8] - w_D_omega_dot[8]))) + (((w_D_omega_dot[9] - w_D_omega_dot[9]) + (w_D_omega_dot[10] - w_D_omega_dot[10])) + ((w_D_omega_dot[11] - w_D_omega_dot[11]) + (w_D_omega_dot[12] - w_D_omega_dot[12])))) + ((((w_D_omega_dot[13] - w_D_omega_dot[13]) + (w_D_omega_dot[14] - w_D_omega_dot[14])) + ((w_D_omega_dot[15] - w_D_omega_dot[15]) + (w_D_omega_dot[16] - w_D_omega_dot[16]))) + (((w_D_omega_dot[17] - w_D_omega_dot[17]) + (w_D_c_ddot[0] - w_D_c_ddot[0])) + ((w_D_c_ddot[1] - w_D_c_ddot[1]) + (w_D_c_ddot[2] - w_D_c_ddot[2]))))) + ((((w_D_c_ddot[3] - w_D_c_ddot[3]) + ((w_D_c_ddot[4] - w_D_c_ddot[4]) + (w_D_c_ddot[5] - w_D_c_ddot[5]))) + (((w_D_c_ddot[6] - w_D_c_ddot[6]) + (w_D_c_ddot[7] - w_D_c_ddot[7])) + ((w_D_c_ddot[8] - w_D_c_ddot[8]) + (w_D_c_ddot[9] - w_D_c_ddot[9])))) + ((((w_D_c_ddot[10] - w_D_c_ddot[10]) + (w_D_c_ddot[11] - w_D_c_ddot[11])) + ((w_D_c_ddot[12] - w_D_c_ddot[12]) + (w_D_c_ddot[13] - w_D_c_ddot[13]))) + (((w_D_c_ddot[14] - w_D_c_ddot[14]) + (w_D_c_ddot[15] - w_D_c_ddot[15])) + ((w_D_c_ddot[16] - w_D_c_ddot[16]) + (w_D_c_ddot[17] - w_D_c_ddot[17]))))))));
+    }
 #endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -1416,16 +1561,48 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians_f32(
     int status = 0, singular = 0;
     float finite = 0.0f;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    {   /* the range test of every input component, as one loop (it vectorises) */
-        const float in_[20] = {
-            I_C[0], I_C[1], I_C[2], I_C[3], I_C[4], I_C[5], I_C[6], I_C[7], I_C[8], m, omega[0],
-            omega[1], omega[2], omega_dot[0], omega_dot[1], omega_dot[2], c_ddot[0], c_ddot[1],
-            c_ddot[2], 0.0f
-        };
-        int j_;
-        for (j_ = 0; j_ < 20; ++j_)
-            RIGIDSYM_C_ODD_F(odd, in_[j_]);
+#if RIGIDSYM_C_VECTOR
+    {   /* the range test of every input component, 4 per vector register */
+        rigidsym_c_vf oddv_ = {0, 0, 0, 0};
+        oddv_ |= rigidsym_c_odd_vf(rigidsym_c_load_vf(I_C));
+        oddv_ |= rigidsym_c_odd_vf(rigidsym_c_load_vf(I_C + 4));
+        {
+            const rigidsym_c_vf v_ = {rigidsym_c_bits_f(&I_C[8]), rigidsym_c_bits_f(&m), rigidsym_c_bits_f(&omega[0]), rigidsym_c_bits_f(&omega[1])};
+            oddv_ |= rigidsym_c_odd_vf(v_);
+        }
+        {
+            const rigidsym_c_vf v_ = {rigidsym_c_bits_f(&omega[2]), rigidsym_c_bits_f(&omega_dot[0]), rigidsym_c_bits_f(&omega_dot[1]), rigidsym_c_bits_f(&omega_dot[2])};
+            oddv_ |= rigidsym_c_odd_vf(v_);
+        }
+        {
+            const rigidsym_c_vf v_ = {rigidsym_c_bits_f(&c_ddot[0]), rigidsym_c_bits_f(&c_ddot[1]), rigidsym_c_bits_f(&c_ddot[2]), 0};
+            oddv_ |= rigidsym_c_odd_vf(v_);
+        }
+        odd = oddv_[0] | oddv_[1] | oddv_[2] | oddv_[3];
     }
+#else
+    {   /* the range test of every input component, one at a time */
+        RIGIDSYM_C_ODD_F(odd, I_C[0]);
+        RIGIDSYM_C_ODD_F(odd, I_C[1]);
+        RIGIDSYM_C_ODD_F(odd, I_C[2]);
+        RIGIDSYM_C_ODD_F(odd, I_C[3]);
+        RIGIDSYM_C_ODD_F(odd, I_C[4]);
+        RIGIDSYM_C_ODD_F(odd, I_C[5]);
+        RIGIDSYM_C_ODD_F(odd, I_C[6]);
+        RIGIDSYM_C_ODD_F(odd, I_C[7]);
+        RIGIDSYM_C_ODD_F(odd, I_C[8]);
+        RIGIDSYM_C_ODD_F(odd, m);
+        RIGIDSYM_C_ODD_F(odd, omega[0]);
+        RIGIDSYM_C_ODD_F(odd, omega[1]);
+        RIGIDSYM_C_ODD_F(odd, omega[2]);
+        RIGIDSYM_C_ODD_F(odd, omega_dot[0]);
+        RIGIDSYM_C_ODD_F(odd, omega_dot[1]);
+        RIGIDSYM_C_ODD_F(odd, omega_dot[2]);
+        RIGIDSYM_C_ODD_F(odd, c_ddot[0]);
+        RIGIDSYM_C_ODD_F(odd, c_ddot[1]);
+        RIGIDSYM_C_ODD_F(odd, c_ddot[2]);
+    }
+#endif
     if (odd >> 31) {
         const float *args[5];
         const int sizes[5] = {9, 1, 3, 3, 3};
@@ -1616,13 +1793,26 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians_f32(
     }
     /* no division or root, and every output bounded by 2^98 for inputs of
      * ordinary magnitude (|x| < 2^31): only an extreme or non-finite input can make an
-     * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN
-     * otherwise; the guards of rigidsym_c_impl.h keep the compiler from folding it) */
+     * output non-finite, so only then are the outputs tested */
 #if defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    finite += (((((((w[0] - w[0]) + ((w[1] - w[1]) + (w[2] - w[2]))) + (((w[3] - w[3]) + (w[4] - w[4])) + ((w[5] - w[5]) + (w_D_I_C[0] - w_D_I_C[0])))) + ((((w_D_I_C[1] - w_D_I_C[1]) + (w_D_I_C[2] - w_D_I_C[2])) + ((w_D_I_C[3] - w_D_I_C[3]) + (w_D_I_C[4] - w_D_I_C[4]))) + (((w_D_I_C[5] - w_D_I_C[5]) + (w_D_I_C[6] - w_D_I_C[6])) + ((w_D_I_C[7] - w_D_I_C[7]) + (w_D_I_C[8] - w_D_I_C[8]))))) + ((((w_D_I_C[9] - w_D_I_C[9]) + ((w_D_I_C[10] - w_D_I_C[10]) + (w_D_I_C[11] - w_D_I_C[11]))) + (((w_D_I_C[12] - w_D_I_C[12]) + (w_D_I_C[13] - w_D_I_C[13])) + ((w_D_I_C[14] - w_D_I_C[14]) + (w_D_I_C[15] - w_D_I_C[15])))) + ((((w_D_I_C[16] - w_D_I_C[16]) + (w_D_I_C[17] - w_D_I_C[17])) + ((w_D_I_C[18] - w_D_I_C[18]) + (w_D_I_C[19] - w_D_I_C[19]))) + (((w_D_I_C[20] - w_D_I_C[20]) + (w_D_I_C[21] - w_D_I_C[21])) + ((w_D_I_C[22] - w_D_I_C[22]) + (w_D_I_C[23] - w_D_I_C[23])))))) + (((((w_D_I_C[24] - w_D_I_C[24]) + ((w_D_I_C[25] - w_D_I_C[25]) + (w_D_I_C[26] - w_D_I_C[26]))) + (((w_D_I_C[27] - w_D_I_C[27]) + (w_D_I_C[28] - w_D_I_C[28])) + ((w_D_I_C[29] - w_D_I_C[29]) + (w_D_I_C[30] - w_D_I_C[30])))) + ((((w_D_I_C[31] - w_D_I_C[31]) + (w_D_I_C[32] - w_D_I_C[32])) + ((w_D_I_C[33] - w_D_I_C[33]) + (w_D_I_C[34] - w_D_I_C[34]))) + (((w_D_I_C[35] - w_D_I_C[35]) + (w_D_I_C[36] - w_D_I_C[36])) + ((w_D_I_C[37] - w_D_I_C[37]) + (w_D_I_C[38] - w_D_I_C[38]))))) + ((((w_D_I_C[39] - w_D_I_C[39]) + ((w_D_I_C[40] - w_D_I_C[40]) + (w_D_I_C[41] - w_D_I_C[41]))) + (((w_D_I_C[42] - w_D_I_C[42]) + (w_D_I_C[43] - w_D_I_C[43])) + ((w_D_I_C[44] - w_D_I_C[44]) + (w_D_I_C[45] - w_D_I_C[45])))) + ((((w_D_I_C[46] - w_D_I_C[46]) + (w_D_I_C[47] - w_D_I_C[47])) + ((w_D_I_C[48] - w_D_I_C[48]) + (w_D_I_C[49] - w_D_I_C[49]))) + (((w_D_I_C[50] - w_D_I_C[50]) + (w_D_I_C[51] - w_D_I_C[51])) + ((w_D_I_C[52] - w_D_I_C[52]) + (w_D_I_C[53] - w_D_I_C[53]))))))) + ((((((w_D_m[0] - w_D_m[0]) + ((w_D_m[1] - w_D_m[1]) + (w_D_m[2] - w_D_m[2]))) + (((w_D_m[3] - w_D_m[3]) + (w_D_m[4] - w_D_m[4])) + ((w_D_m[5] - w_D_m[5]) + (w_D_omega[0] - w_D_omega[0])))) + ((((w_D_omega[1] - w_D_omega[1]) + (w_D_omega[2] - w_D_omega[2])) + ((w_D_omega[3] - w_D_omega[3]) + (w_D_omega[4] - w_D_omega[4]))) + (((w_D_omega[5] - w_D_omega[5]) + (w_D_omega[6] - w_D_omega[6])) + ((w_D_omega[7] - w_D_omega[7]) + (w_D_omega[8] - w_D_omega[8]))))) + ((((w_D_omega[9] - w_D_omega[9]) + ((w_D_omega[10] - w_D_omega[10]) + (w_D_omega[11] - w_D_omega[11]))) + (((w_D_omega[12] - w_D_omega[12]) + (w_D_omega[13] - w_D_omega[13])) + ((w_D_omega[14] - w_D_omega[14]) + (w_D_omega[15] - w_D_omega[15])))) + ((((w_D_omega[16] - w_D_omega[16]) + (w_D_omega[17] - w_D_omega[17])) + ((w_D_omega_dot[0] - w_D_omega_dot[0]) + (w_D_omega_dot[1] - w_D_omega_dot[1]))) + (((w_D_omega_dot[2] - w_D_omega_dot[2]) + (w_D_omega_dot[3] - w_D_omega_dot[3])) + ((w_D_omega_dot[4] - w_D_omega_dot[4]) + (w_D_omega_dot[5] - w_D_omega_dot[5])))))) + (((((w_D_omega_dot[6] - w_D_omega_dot[6]) + ((w_D_omega_dot[7] - w_D_omega_dot[7]) + (w_D_omega_dot[8] - w_D_omega_dot[8]))) + (((w_D_omega_dot[9] - w_D_omega_dot[9]) + (w_D_omega_dot[10] - w_D_omega_dot[10])) + ((w_D_omega_dot[11] - w_D_omega_dot[11]) + (w_D_omega_dot[12] - w_D_omega_dot[12])))) + ((((w_D_omega_dot[13] - w_D_omega_dot[13]) + (w_D_omega_dot[14] - w_D_omega_dot[14])) + ((w_D_omega_dot[15] - w_D_omega_dot[15]) + (w_D_omega_dot[16] - w_D_omega_dot[16]))) + (((w_D_omega_dot[17] - w_D_omega_dot[17]) + (w_D_c_ddot[0] - w_D_c_ddot[0])) + ((w_D_c_ddot[1] - w_D_c_ddot[1]) + (w_D_c_ddot[2] - w_D_c_ddot[2]))))) + ((((w_D_c_ddot[3] - w_D_c_ddot[3]) + ((w_D_c_ddot[4] - w_D_c_ddot[4]) + (w_D_c_ddot[5] - w_D_c_ddot[5]))) + (((w_D_c_ddot[6] - w_D_c_ddot[6]) + (w_D_c_ddot[7] - w_D_c_ddot[7])) + ((w_D_c_ddot[8] - w_D_c_ddot[8]) + (w_D_c_ddot[9] - w_D_c_ddot[9])))) + ((((w_D_c_ddot[10] - w_D_c_ddot[10]) + (w_D_c_ddot[11] - w_D_c_ddot[11])) + ((w_D_c_ddot[12] - w_D_c_ddot[12]) + (w_D_c_ddot[13] - w_D_c_ddot[13]))) + (((w_D_c_ddot[14] - w_D_c_ddot[14]) + (w_D_c_ddot[15] - w_D_c_ddot[15])) + ((w_D_c_ddot[16] - w_D_c_ddot[16]) + (w_D_c_ddot[17] - w_D_c_ddot[17]))))))));
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const float s_ = ((((((w[0] + (w[1] + w[2])) + ((w[3] + w[4]) + (w[5] + w_D_I_C[0]))) + (((w_D_I_C[1] + w_D_I_C[2]) + (w_D_I_C[3] + w_D_I_C[4])) + ((w_D_I_C[5] + w_D_I_C[6]) + (w_D_I_C[7] + w_D_I_C[8])))) + (((w_D_I_C[9] + (w_D_I_C[10] + w_D_I_C[11])) + ((w_D_I_C[12] + w_D_I_C[13]) + (w_D_I_C[14] + w_D_I_C[15]))) + (((w_D_I_C[16] + w_D_I_C[17]) + (w_D_I_C[18] + w_D_I_C[19])) + ((w_D_I_C[20] + w_D_I_C[21]) + (w_D_I_C[22] + w_D_I_C[23]))))) + ((((w_D_I_C[24] + (w_D_I_C[25] + w_D_I_C[26])) + ((w_D_I_C[27] + w_D_I_C[28]) + (w_D_I_C[29] + w_D_I_C[30]))) + (((w_D_I_C[31] + w_D_I_C[32]) + (w_D_I_C[33] + w_D_I_C[34])) + ((w_D_I_C[35] + w_D_I_C[36]) + (w_D_I_C[37] + w_D_I_C[38])))) + (((w_D_I_C[39] + (w_D_I_C[40] + w_D_I_C[41])) + ((w_D_I_C[42] + w_D_I_C[43]) + (w_D_I_C[44] + w_D_I_C[45]))) + (((w_D_I_C[46] + w_D_I_C[47]) + (w_D_I_C[48] + w_D_I_C[49])) + ((w_D_I_C[50] + w_D_I_C[51]) + (w_D_I_C[52] + w_D_I_C[53])))))) + (((((w_D_m[0] + (w_D_m[1] + w_D_m[2])) + ((w_D_m[3] + w_D_m[4]) + (w_D_m[5] + w_D_omega[0]))) + (((w_D_omega[1] + w_D_omega[2]) + (w_D_omega[3] + w_D_omega[4])) + ((w_D_omega[5] + w_D_omega[6]) + (w_D_omega[7] + w_D_omega[8])))) + (((w_D_omega[9] + (w_D_omega[10] + w_D_omega[11])) + ((w_D_omega[12] + w_D_omega[13]) + (w_D_omega[14] + w_D_omega[15]))) + (((w_D_omega[16] + w_D_omega[17]) + (w_D_omega_dot[0] + w_D_omega_dot[1])) + ((w_D_omega_dot[2] + w_D_omega_dot[3]) + (w_D_omega_dot[4] + w_D_omega_dot[5]))))) + ((((w_D_omega_dot[6] + (w_D_omega_dot[7] + w_D_omega_dot[8])) + ((w_D_omega_dot[9] + w_D_omega_dot[10]) + (w_D_omega_dot[11] + w_D_omega_dot[12]))) + (((w_D_omega_dot[13] + w_D_omega_dot[14]) + (w_D_omega_dot[15] + w_D_omega_dot[16])) + ((w_D_omega_dot[17] + w_D_c_ddot[0]) + (w_D_c_ddot[1] + w_D_c_ddot[2])))) + (((w_D_c_ddot[3] + (w_D_c_ddot[4] + w_D_c_ddot[5])) + ((w_D_c_ddot[6] + w_D_c_ddot[7]) + (w_D_c_ddot[8] + w_D_c_ddot[9]))) + (((w_D_c_ddot[10] + w_D_c_ddot[11]) + (w_D_c_ddot[12] + w_D_c_ddot[13])) + ((w_D_c_ddot[14] + w_D_c_ddot[15]) + (w_D_c_ddot[16] + w_D_c_ddot[17])))))));
+        if (!(s_ - s_ == 0.0f))
+            finite += (((((((w[0] - w[0]) + ((w[1] - w[1]) + (w[2] - w[2]))) + (((w[3] - w[3]) + (w[4] - w[4])) + ((w[5] - w[5]) + (w_D_I_C[0] - w_D_I_C[0])))) + ((((w_D_I_C[1] - w_D_I_C[1]) + (w_D_I_C[2] - w_D_I_C[2])) + ((w_D_I_C[3] - w_D_I_C[3]) + (w_D_I_C[4] - w_D_I_C[4]))) + (((w_D_I_C[5] - w_D_I_C[5]) + (w_D_I_C[6] - w_D_I_C[6])) + ((w_D_I_C[7] - w_D_I_C[7]) + (w_D_I_C[8] - w_D_I_C[8]))))) + ((((w_D_I_C[9] - w_D_I_C[9]) + ((w_D_I_C[10] - w_D_I_C[10]) + (w_D_I_C[11] - w_D_I_C[11]))) + (((w_D_I_C[12] - w_D_I_C[12]) + (w_D_I_C[13] - w_D_I_C[13])) + ((w_D_I_C[14] - w_D_I_C[14]) + (w_D_I_C[15] - w_D_I_C[15])))) + ((((w_D_I_C[16] - w_D_I_C[16]) + (w_D_I_C[17] - w_D_I_C[17])) + ((w_D_I_C[18] - w_D_I_C[18]) + (w_D_I_C[19] - w_D_I_C[19]))) + (((w_D_I_C[20] - w_D_I_C[20]) + (w_D_I_C[21] - w_D_I_C[21])) + ((w_D_I_C[22] - w_D_I_C[22]) + (w_D_I_C[23] - w_D_I_C[23])))))) + (((((w_D_I_C[24] - w_D_I_C[24]) + ((w_D_I_C[25] - w_D_I_C[25]) + (w_D_I_C[26] - w_D_I_C[26]))) + (((w_D_I_C[27] - w_D_I_C[27]) + (w_D_I_C[28] - w_D_I_C[28])) + ((w_D_I_C[29] - w_D_I_C[29]) + (w_D_I_C[30] - w_D_I_C[30])))) + ((((w_D_I_C[31] - w_D_I_C[31]) + (w_D_I_C[32] - w_D_I_C[32])) + ((w_D_I_C[33] - w_D_I_C[33]) + (w_D_I_C[34] - w_D_I_C[34]))) + (((w_D_I_C[35] - w_D_I_C[35]) + (w_D_I_C[36] - w_D_I_C[36])) + ((w_D_I_C[37] - w_D_I_C[37]) + (w_D_I_C[38] - w_D_I_C[38]))))) + ((((w_D_I_C[39] - w_D_I_C[39]) + ((w_D_I_C[40] - w_D_I_C[40]) + (w_D_I_C[41] - w_D_I_C[41]))) + (((w_D_I_C[42] - w_D_I_C[42]) + (w_D_I_C[43] - w_D_I_C[43])) + ((w_D_I_C[44] - w_D_I_C[44]) + (w_D_I_C[45] - w_D_I_C[45])))) + ((((w_D_I_C[46] - w_D_I_C[46]) + (w_D_I_C[47] - w_D_I_C[47])) + ((w_D_I_C[48] - w_D_I_C[48]) + (w_D_I_C[49] - w_D_I_C[49]))) + (((w_D_I_C[50] - w_D_I_C[50]) + (w_D_I_C[51] - w_D_I_C[51])) + ((w_D_I_C[52] - w_D_I_C[52]) + (w_D_I_C[53] - w_D_I_C[53]))))))) + ((((((w_D_m[0] - w_D_m[0]) + ((w_D_m[1] - w_D_m[1]) + (w_D_m[2] - w_D_m[2]))) + (((w_D_m[3] - w_D_m[3]) + (w_D_m[4] - w_D_m[4])) + ((w_D_m[5] - w_D_m[5]) + (w_D_omega[0] - w_D_omega[0])))) + ((((w_D_omega[1] - w_D_omega[1]) + (w_D_omega[2] - w_D_omega[2])) + ((w_D_omega[3] - w_D_omega[3]) + (w_D_omega[4] - w_D_omega[4]))) + (((w_D_omega[5] - w_D_omega[5]) + (w_D_omega[6] - w_D_omega[6])) + ((w_D_omega[7] - w_D_omega[7]) + (w_D_omega[8] - w_D_omega[8]))))) + ((((w_D_omega[9] - w_D_omega[9]) + ((w_D_omega[10] - w_D_omega[10]) + (w_D_omega[11] - w_D_omega[11]))) + (((w_D_omega[12] - w_D_omega[12]) + (w_D_omega[13] - w_D_omega[13])) + ((w_D_omega[14] - w_D_omega[14]) + (w_D_omega[15] - w_D_omega[15])))) + ((((w_D_omega[16] - w_D_omega[16]) + (w_D_omega[17] - w_D_omega[17])) + ((w_D_omega_dot[0] - w_D_omega_dot[0]) + (w_D_omega_dot[1] - w_D_omega_dot[1]))) + (((w_D_omega_dot[2] - w_D_omega_dot[2]) + (w_D_omega_dot[3] - w_D_omega_dot[3])) + ((w_D_omega_dot[4] - w_D_omega_dot[4]) + (w_D_omega_dot[5] - w_D_omega_dot[5])))))) + (((((w_D_omega_dot[6] - w_D_omega_dot[6]) + ((w_D_omega_dot[7] - w_D_omega_dot[7]) + (w_D_omega_dot[8] - w_D_omega_dot[8]))) + (((w_D_omega_dot[9] - w_D_omega_dot[9]) + (w_D_omega_dot[10] - w_D_omega_dot[10])) + ((w_D_omega_dot[11] - w_D_omega_dot[11]) + (w_D_omega_dot[12] - w_D_omega_dot[12])))) + ((((w_D_omega_dot[13] - w_D_omega_dot[13]) + (w_D_omega_dot[14] - w_D_omega_dot[14])) + ((w_D_omega_dot[15] - w_D_omega_dot[15]) + (w_D_omega_dot[16] - w_D_omega_dot[16]))) + (((w_D_omega_dot[17] - w_D_omega_dot[17]) + (w_D_c_ddot[0] - w_D_c_ddot[0])) + ((w_D_c_ddot[1] - w_D_c_ddot[1]) + (w_D_c_ddot[2] - w_D_c_ddot[2]))))) + ((((w_D_c_ddot[3] - w_D_c_ddot[3]) + ((w_D_c_ddot[4] - w_D_c_ddot[4]) + (w_D_c_ddot[5] - w_D_c_ddot[5]))) + (((w_D_c_ddot[6] - w_D_c_ddot[6]) + (w_D_c_ddot[7] - w_D_c_ddot[7])) + ((w_D_c_ddot[8] - w_D_c_ddot[8]) + (w_D_c_ddot[9] - w_D_c_ddot[9])))) + ((((w_D_c_ddot[10] - w_D_c_ddot[10]) + (w_D_c_ddot[11] - w_D_c_ddot[11])) + ((w_D_c_ddot[12] - w_D_c_ddot[12]) + (w_D_c_ddot[13] - w_D_c_ddot[13]))) + (((w_D_c_ddot[14] - w_D_c_ddot[14]) + (w_D_c_ddot[15] - w_D_c_ddot[15])) + ((w_D_c_ddot[16] - w_D_c_ddot[16]) + (w_D_c_ddot[17] - w_D_c_ddot[17]))))))));
+    }
 #else
     if (status)
-        finite += (((((((w[0] - w[0]) + ((w[1] - w[1]) + (w[2] - w[2]))) + (((w[3] - w[3]) + (w[4] - w[4])) + ((w[5] - w[5]) + (w_D_I_C[0] - w_D_I_C[0])))) + ((((w_D_I_C[1] - w_D_I_C[1]) + (w_D_I_C[2] - w_D_I_C[2])) + ((w_D_I_C[3] - w_D_I_C[3]) + (w_D_I_C[4] - w_D_I_C[4]))) + (((w_D_I_C[5] - w_D_I_C[5]) + (w_D_I_C[6] - w_D_I_C[6])) + ((w_D_I_C[7] - w_D_I_C[7]) + (w_D_I_C[8] - w_D_I_C[8]))))) + ((((w_D_I_C[9] - w_D_I_C[9]) + ((w_D_I_C[10] - w_D_I_C[10]) + (w_D_I_C[11] - w_D_I_C[11]))) + (((w_D_I_C[12] - w_D_I_C[12]) + (w_D_I_C[13] - w_D_I_C[13])) + ((w_D_I_C[14] - w_D_I_C[14]) + (w_D_I_C[15] - w_D_I_C[15])))) + ((((w_D_I_C[16] - w_D_I_C[16]) + (w_D_I_C[17] - w_D_I_C[17])) + ((w_D_I_C[18] - w_D_I_C[18]) + (w_D_I_C[19] - w_D_I_C[19]))) + (((w_D_I_C[20] - w_D_I_C[20]) + (w_D_I_C[21] - w_D_I_C[21])) + ((w_D_I_C[22] - w_D_I_C[22]) + (w_D_I_C[23] - w_D_I_C[23])))))) + (((((w_D_I_C[24] - w_D_I_C[24]) + ((w_D_I_C[25] - w_D_I_C[25]) + (w_D_I_C[26] - w_D_I_C[26]))) + (((w_D_I_C[27] - w_D_I_C[27]) + (w_D_I_C[28] - w_D_I_C[28])) + ((w_D_I_C[29] - w_D_I_C[29]) + (w_D_I_C[30] - w_D_I_C[30])))) + ((((w_D_I_C[31] - w_D_I_C[31]) + (w_D_I_C[32] - w_D_I_C[32])) + ((w_D_I_C[33] - w_D_I_C[33]) + (w_D_I_C[34] - w_D_I_C[34]))) + (((w_D_I_C[35] - w_D_I_C[35]) + (w_D_I_C[36] - w_D_I_C[36])) + ((w_D_I_C[37] - w_D_I_C[37]) + (w_D_I_C[38] - w_D_I_C[38]))))) + ((((w_D_I_C[39] - w_D_I_C[39]) + ((w_D_I_C[40] - w_D_I_C[40]) + (w_D_I_C[41] - w_D_I_C[41]))) + (((w_D_I_C[42] - w_D_I_C[42]) + (w_D_I_C[43] - w_D_I_C[43])) + ((w_D_I_C[44] - w_D_I_C[44]) + (w_D_I_C[45] - w_D_I_C[45])))) + ((((w_D_I_C[46] - w_D_I_C[46]) + (w_D_I_C[47] - w_D_I_C[47])) + ((w_D_I_C[48] - w_D_I_C[48]) + (w_D_I_C[49] - w_D_I_C[49]))) + (((w_D_I_C[50] - w_D_I_C[50]) + (w_D_I_C[51] - w_D_I_C[51])) + ((w_D_I_C[52] - w_D_I_C[52]) + (w_D_I_C[53] - w_D_I_C[53]))))))) + ((((((w_D_m[0] - w_D_m[0]) + ((w_D_m[1] - w_D_m[1]) + (w_D_m[2] - w_D_m[2]))) + (((w_D_m[3] - w_D_m[3]) + (w_D_m[4] - w_D_m[4])) + ((w_D_m[5] - w_D_m[5]) + (w_D_omega[0] - w_D_omega[0])))) + ((((w_D_omega[1] - w_D_omega[1]) + (w_D_omega[2] - w_D_omega[2])) + ((w_D_omega[3] - w_D_omega[3]) + (w_D_omega[4] - w_D_omega[4]))) + (((w_D_omega[5] - w_D_omega[5]) + (w_D_omega[6] - w_D_omega[6])) + ((w_D_omega[7] - w_D_omega[7]) + (w_D_omega[8] - w_D_omega[8]))))) + ((((w_D_omega[9] - w_D_omega[9]) + ((w_D_omega[10] - w_D_omega[10]) + (w_D_omega[11] - w_D_omega[11]))) + (((w_D_omega[12] - w_D_omega[12]) + (w_D_omega[13] - w_D_omega[13])) + ((w_D_omega[14] - w_D_omega[14]) + (w_D_omega[15] - w_D_omega[15])))) + ((((w_D_omega[16] - w_D_omega[16]) + (w_D_omega[17] - w_D_omega[17])) + ((w_D_omega_dot[0] - w_D_omega_dot[0]) + (w_D_omega_dot[1] - w_D_omega_dot[1]))) + (((w_D_omega_dot[2] - w_D_omega_dot[2]) + (w_D_omega_dot[3] - w_D_omega_dot[3])) + ((w_D_omega_dot[4] - w_D_omega_dot[4]) + (w_D_omega_dot[5] - w_D_omega_dot[5])))))) + (((((w_D_omega_dot[6] - w_D_omega_dot[6]) + ((w_D_omega_dot[7] - w_D_omega_dot[7]) + (w_D_omega_dot[8] - w_D_omega_dot[8]))) + (((w_D_omega_dot[9] - w_D_omega_dot[9]) + (w_D_omega_dot[10] - w_D_omega_dot[10])) + ((w_D_omega_dot[11] - w_D_omega_dot[11]) + (w_D_omega_dot[12] - w_D_omega_dot[12])))) + ((((w_D_omega_dot[13] - w_D_omega_dot[13]) + (w_D_omega_dot[14] - w_D_omega_dot[14])) + ((w_D_omega_dot[15] - w_D_omega_dot[15]) + (w_D_omega_dot[16] - w_D_omega_dot[16]))) + (((w_D_omega_dot[17] - w_D_omega_dot[17]) + (w_D_c_ddot[0] - w_D_c_ddot[0])) + ((w_D_c_ddot[1] - w_D_c_ddot[1]) + (w_D_c_ddot[2] - w_D_c_ddot[2]))))) + ((((w_D_c_ddot[3] - w_D_c_ddot[3]) + ((w_D_c_ddot[4] - w_D_c_ddot[4]) + (w_D_c_ddot[5] - w_D_c_ddot[5]))) + (((w_D_c_ddot[6] - w_D_c_ddot[6]) + (w_D_c_ddot[7] - w_D_c_ddot[7])) + ((w_D_c_ddot[8] - w_D_c_ddot[8]) + (w_D_c_ddot[9] - w_D_c_ddot[9])))) + ((((w_D_c_ddot[10] - w_D_c_ddot[10]) + (w_D_c_ddot[11] - w_D_c_ddot[11])) + ((w_D_c_ddot[12] - w_D_c_ddot[12]) + (w_D_c_ddot[13] - w_D_c_ddot[13]))) + (((w_D_c_ddot[14] - w_D_c_ddot[14]) + (w_D_c_ddot[15] - w_D_c_ddot[15])) + ((w_D_c_ddot[16] - w_D_c_ddot[16]) + (w_D_c_ddot[17] - w_D_c_ddot[17]))))))));
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const float s_ = ((((((w[0] + (w[1] + w[2])) + ((w[3] + w[4]) + (w[5] + w_D_I_C[0]))) + (((w_D_I_C[1] + w_D_I_C[2]) + (w_D_I_C[3] + w_D_I_C[4])) + ((w_D_I_C[5] + w_D_I_C[6]) + (w_D_I_C[7] + w_D_I_C[8])))) + (((w_D_I_C[9] + (w_D_I_C[10] + w_D_I_C[11])) + ((w_D_I_C[12] + w_D_I_C[13]) + (w_D_I_C[14] + w_D_I_C[15]))) + (((w_D_I_C[16] + w_D_I_C[17]) + (w_D_I_C[18] + w_D_I_C[19])) + ((w_D_I_C[20] + w_D_I_C[21]) + (w_D_I_C[22] + w_D_I_C[23]))))) + ((((w_D_I_C[24] + (w_D_I_C[25] + w_D_I_C[26])) + ((w_D_I_C[27] + w_D_I_C[28]) + (w_D_I_C[29] + w_D_I_C[30]))) + (((w_D_I_C[31] + w_D_I_C[32]) + (w_D_I_C[33] + w_D_I_C[34])) + ((w_D_I_C[35] + w_D_I_C[36]) + (w_D_I_C[37] + w_D_I_C[38])))) + (((w_D_I_C[39] + (w_D_I_C[40] + w_D_I_C[41])) + ((w_D_I_C[42] + w_D_I_C[43]) + (w_D_I_C[44] + w_D_I_C[45]))) + (((w_D_I_C[46] + w_D_I_C[47]) + (w_D_I_C[48] + w_D_I_C[49])) + ((w_D_I_C[50] + w_D_I_C[51]) + (w_D_I_C[52] + w_D_I_C[53])))))) + (((((w_D_m[0] + (w_D_m[1] + w_D_m[2])) + ((w_D_m[3] + w_D_m[4]) + (w_D_m[5] + w_D_omega[0]))) + (((w_D_omega[1] + w_D_omega[2]) + (w_D_omega[3] + w_D_omega[4])) + ((w_D_omega[5] + w_D_omega[6]) + (w_D_omega[7] + w_D_omega[8])))) + (((w_D_omega[9] + (w_D_omega[10] + w_D_omega[11])) + ((w_D_omega[12] + w_D_omega[13]) + (w_D_omega[14] + w_D_omega[15]))) + (((w_D_omega[16] + w_D_omega[17]) + (w_D_omega_dot[0] + w_D_omega_dot[1])) + ((w_D_omega_dot[2] + w_D_omega_dot[3]) + (w_D_omega_dot[4] + w_D_omega_dot[5]))))) + ((((w_D_omega_dot[6] + (w_D_omega_dot[7] + w_D_omega_dot[8])) + ((w_D_omega_dot[9] + w_D_omega_dot[10]) + (w_D_omega_dot[11] + w_D_omega_dot[12]))) + (((w_D_omega_dot[13] + w_D_omega_dot[14]) + (w_D_omega_dot[15] + w_D_omega_dot[16])) + ((w_D_omega_dot[17] + w_D_c_ddot[0]) + (w_D_c_ddot[1] + w_D_c_ddot[2])))) + (((w_D_c_ddot[3] + (w_D_c_ddot[4] + w_D_c_ddot[5])) + ((w_D_c_ddot[6] + w_D_c_ddot[7]) + (w_D_c_ddot[8] + w_D_c_ddot[9]))) + (((w_D_c_ddot[10] + w_D_c_ddot[11]) + (w_D_c_ddot[12] + w_D_c_ddot[13])) + ((w_D_c_ddot[14] + w_D_c_ddot[15]) + (w_D_c_ddot[16] + w_D_c_ddot[17])))))));
+        if (!(s_ - s_ == 0.0f))
+            finite += (((((((w[0] - w[0]) + ((w[1] - w[1]) + (w[2] - w[2]))) + (((w[3] - w[3]) + (w[4] - w[4])) + ((w[5] - w[5]) + (w_D_I_C[0] - w_D_I_C[0])))) + ((((w_D_I_C[1] - w_D_I_C[1]) + (w_D_I_C[2] - w_D_I_C[2])) + ((w_D_I_C[3] - w_D_I_C[3]) + (w_D_I_C[4] - w_D_I_C[4]))) + (((w_D_I_C[5] - w_D_I_C[5]) + (w_D_I_C[6] - w_D_I_C[6])) + ((w_D_I_C[7] - w_D_I_C[7]) + (w_D_I_C[8] - w_D_I_C[8]))))) + ((((w_D_I_C[9] - w_D_I_C[9]) + ((w_D_I_C[10] - w_D_I_C[10]) + (w_D_I_C[11] - w_D_I_C[11]))) + (((w_D_I_C[12] - w_D_I_C[12]) + (w_D_I_C[13] - w_D_I_C[13])) + ((w_D_I_C[14] - w_D_I_C[14]) + (w_D_I_C[15] - w_D_I_C[15])))) + ((((w_D_I_C[16] - w_D_I_C[16]) + (w_D_I_C[17] - w_D_I_C[17])) + ((w_D_I_C[18] - w_D_I_C[18]) + (w_D_I_C[19] - w_D_I_C[19]))) + (((w_D_I_C[20] - w_D_I_C[20]) + (w_D_I_C[21] - w_D_I_C[21])) + ((w_D_I_C[22] - w_D_I_C[22]) + (w_D_I_C[23] - w_D_I_C[23])))))) + (((((w_D_I_C[24] - w_D_I_C[24]) + ((w_D_I_C[25] - w_D_I_C[25]) + (w_D_I_C[26] - w_D_I_C[26]))) + (((w_D_I_C[27] - w_D_I_C[27]) + (w_D_I_C[28] - w_D_I_C[28])) + ((w_D_I_C[29] - w_D_I_C[29]) + (w_D_I_C[30] - w_D_I_C[30])))) + ((((w_D_I_C[31] - w_D_I_C[31]) + (w_D_I_C[32] - w_D_I_C[32])) + ((w_D_I_C[33] - w_D_I_C[33]) + (w_D_I_C[34] - w_D_I_C[34]))) + (((w_D_I_C[35] - w_D_I_C[35]) + (w_D_I_C[36] - w_D_I_C[36])) + ((w_D_I_C[37] - w_D_I_C[37]) + (w_D_I_C[38] - w_D_I_C[38]))))) + ((((w_D_I_C[39] - w_D_I_C[39]) + ((w_D_I_C[40] - w_D_I_C[40]) + (w_D_I_C[41] - w_D_I_C[41]))) + (((w_D_I_C[42] - w_D_I_C[42]) + (w_D_I_C[43] - w_D_I_C[43])) + ((w_D_I_C[44] - w_D_I_C[44]) + (w_D_I_C[45] - w_D_I_C[45])))) + ((((w_D_I_C[46] - w_D_I_C[46]) + (w_D_I_C[47] - w_D_I_C[47])) + ((w_D_I_C[48] - w_D_I_C[48]) + (w_D_I_C[49] - w_D_I_C[49]))) + (((w_D_I_C[50] - w_D_I_C[50]) + (w_D_I_C[51] - w_D_I_C[51])) + ((w_D_I_C[52] - w_D_I_C[52]) + (w_D_I_C[53] - w_D_I_C[53]))))))) + ((((((w_D_m[0] - w_D_m[0]) + ((w_D_m[1] - w_D_m[1]) + (w_D_m[2] - w_D_m[2]))) + (((w_D_m[3] - w_D_m[3]) + (w_D_m[4] - w_D_m[4])) + ((w_D_m[5] - w_D_m[5]) + (w_D_omega[0] - w_D_omega[0])))) + ((((w_D_omega[1] - w_D_omega[1]) + (w_D_omega[2] - w_D_omega[2])) + ((w_D_omega[3] - w_D_omega[3]) + (w_D_omega[4] - w_D_omega[4]))) + (((w_D_omega[5] - w_D_omega[5]) + (w_D_omega[6] - w_D_omega[6])) + ((w_D_omega[7] - w_D_omega[7]) + (w_D_omega[8] - w_D_omega[8]))))) + ((((w_D_omega[9] - w_D_omega[9]) + ((w_D_omega[10] - w_D_omega[10]) + (w_D_omega[11] - w_D_omega[11]))) + (((w_D_omega[12] - w_D_omega[12]) + (w_D_omega[13] - w_D_omega[13])) + ((w_D_omega[14] - w_D_omega[14]) + (w_D_omega[15] - w_D_omega[15])))) + ((((w_D_omega[16] - w_D_omega[16]) + (w_D_omega[17] - w_D_omega[17])) + ((w_D_omega_dot[0] - w_D_omega_dot[0]) + (w_D_omega_dot[1] - w_D_omega_dot[1]))) + (((w_D_omega_dot[2] - w_D_omega_dot[2]) + (w_D_omega_dot[3] - w_D_omega_dot[3])) + ((w_D_omega_dot[4] - w_D_omega_dot[4]) + (w_D_omega_dot[5] - w_D_omega_dot[5])))))) + (((((w_D_omega_dot[6] - w_D_omega_dot[6]) + ((w_D_omega_dot[7] - w_D_omega_dot[7]) + (w_D_omega_dot[8] - w_D_omega_dot[8]))) + (((w_D_omega_dot[9] - w_D_omega_dot[9]) + (w_D_omega_dot[10] - w_D_omega_dot[10])) + ((w_D_omega_dot[11] - w_D_omega_dot[11]) + (w_D_omega_dot[12] - w_D_omega_dot[12])))) + ((((w_D_omega_dot[13] - w_D_omega_dot[13]) + (w_D_omega_dot[14] - w_D_omega_dot[14])) + ((w_D_omega_dot[15] - w_D_omega_dot[15]) + (w_D_omega_dot[16] - w_D_omega_dot[16]))) + (((w_D_omega_dot[17] - w_D_omega_dot[17]) + (w_D_c_ddot[0] - w_D_c_ddot[0])) + ((w_D_c_ddot[1] - w_D_c_ddot[1]) + (w_D_c_ddot[2] - w_D_c_ddot[2]))))) + ((((w_D_c_ddot[3] - w_D_c_ddot[3]) + ((w_D_c_ddot[4] - w_D_c_ddot[4]) + (w_D_c_ddot[5] - w_D_c_ddot[5]))) + (((w_D_c_ddot[6] - w_D_c_ddot[6]) + (w_D_c_ddot[7] - w_D_c_ddot[7])) + ((w_D_c_ddot[8] - w_D_c_ddot[8]) + (w_D_c_ddot[9] - w_D_c_ddot[9])))) + ((((w_D_c_ddot[10] - w_D_c_ddot[10]) + (w_D_c_ddot[11] - w_D_c_ddot[11])) + ((w_D_c_ddot[12] - w_D_c_ddot[12]) + (w_D_c_ddot[13] - w_D_c_ddot[13]))) + (((w_D_c_ddot[14] - w_D_c_ddot[14]) + (w_D_c_ddot[15] - w_D_c_ddot[15])) + ((w_D_c_ddot[16] - w_D_c_ddot[16]) + (w_D_c_ddot[17] - w_D_c_ddot[17]))))))));
+    }
 #endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;

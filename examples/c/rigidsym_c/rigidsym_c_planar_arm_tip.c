@@ -104,14 +104,27 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip(
     int status = 0, singular = 0;
     double finite = 0.0;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    {   /* the range test of every input component, as one loop (it vectorises) */
-        const double in_[4] = {
-            q1, q2, l1, l2
-        };
-        int j_;
-        for (j_ = 0; j_ < 4; ++j_)
-            RIGIDSYM_C_ODD_D(odd, in_[j_]);
+#if RIGIDSYM_C_VECTOR
+    {   /* the range test of every input component, 2 per vector register */
+        rigidsym_c_vd oddv_ = {0, 0};
+        {
+            const rigidsym_c_vd v_ = {rigidsym_c_bits_d(&q1), rigidsym_c_bits_d(&q2)};
+            oddv_ |= rigidsym_c_odd_vd(v_);
+        }
+        {
+            const rigidsym_c_vd v_ = {rigidsym_c_bits_d(&l1), rigidsym_c_bits_d(&l2)};
+            oddv_ |= rigidsym_c_odd_vd(v_);
+        }
+        odd = oddv_[0] | oddv_[1];
     }
+#else
+    {   /* the range test of every input component, one at a time */
+        RIGIDSYM_C_ODD_D(odd, q1);
+        RIGIDSYM_C_ODD_D(odd, q2);
+        RIGIDSYM_C_ODD_D(odd, l1);
+        RIGIDSYM_C_ODD_D(odd, l2);
+    }
+#endif
     if (odd >> 63) {
         const double *args[4];
         const int sizes[4] = {1, 1, 1, 1};
@@ -146,13 +159,26 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip(
     }
     /* no division or root, and every output bounded by 2^102 for inputs of
      * ordinary magnitude (|x| < 2^101): only an extreme or non-finite input can make an
-     * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN
-     * otherwise; the guards of rigidsym_c_impl.h keep the compiler from folding it) */
+     * output non-finite, so only then are the outputs tested */
 #if defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    finite += ((p[0] - p[0]) + (p[1] - p[1]));
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const double s_ = (p[0] + p[1]);
+        if (!(s_ - s_ == 0.0))
+            finite += ((p[0] - p[0]) + (p[1] - p[1]));
+    }
 #else
     if (status)
-        finite += ((p[0] - p[0]) + (p[1] - p[1]));
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const double s_ = (p[0] + p[1]);
+        if (!(s_ - s_ == 0.0))
+            finite += ((p[0] - p[0]) + (p[1] - p[1]));
+    }
 #endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -249,14 +275,23 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_f32(
     int status = 0, singular = 0;
     float finite = 0.0f;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    {   /* the range test of every input component, as one loop (it vectorises) */
-        const float in_[4] = {
-            q1, q2, l1, l2
-        };
-        int j_;
-        for (j_ = 0; j_ < 4; ++j_)
-            RIGIDSYM_C_ODD_F(odd, in_[j_]);
+#if RIGIDSYM_C_VECTOR
+    {   /* the range test of every input component, 4 per vector register */
+        rigidsym_c_vf oddv_ = {0, 0, 0, 0};
+        {
+            const rigidsym_c_vf v_ = {rigidsym_c_bits_f(&q1), rigidsym_c_bits_f(&q2), rigidsym_c_bits_f(&l1), rigidsym_c_bits_f(&l2)};
+            oddv_ |= rigidsym_c_odd_vf(v_);
+        }
+        odd = oddv_[0] | oddv_[1] | oddv_[2] | oddv_[3];
     }
+#else
+    {   /* the range test of every input component, one at a time */
+        RIGIDSYM_C_ODD_F(odd, q1);
+        RIGIDSYM_C_ODD_F(odd, q2);
+        RIGIDSYM_C_ODD_F(odd, l1);
+        RIGIDSYM_C_ODD_F(odd, l2);
+    }
+#endif
     if (odd >> 31) {
         const float *args[4];
         const int sizes[4] = {1, 1, 1, 1};
@@ -287,13 +322,26 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_f32(
     }
     /* no division or root, and every output bounded by 2^32 for inputs of
      * ordinary magnitude (|x| < 2^31): only an extreme or non-finite input can make an
-     * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN
-     * otherwise; the guards of rigidsym_c_impl.h keep the compiler from folding it) */
+     * output non-finite, so only then are the outputs tested */
 #if defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    finite += ((p[0] - p[0]) + (p[1] - p[1]));
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const float s_ = (p[0] + p[1]);
+        if (!(s_ - s_ == 0.0f))
+            finite += ((p[0] - p[0]) + (p[1] - p[1]));
+    }
 #else
     if (status)
-        finite += ((p[0] - p[0]) + (p[1] - p[1]));
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const float s_ = (p[0] + p[1]);
+        if (!(s_ - s_ == 0.0f))
+            finite += ((p[0] - p[0]) + (p[1] - p[1]));
+    }
 #endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -463,14 +511,27 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians(
     int status = 0, singular = 0;
     double finite = 0.0;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    {   /* the range test of every input component, as one loop (it vectorises) */
-        const double in_[4] = {
-            q1, q2, l1, l2
-        };
-        int j_;
-        for (j_ = 0; j_ < 4; ++j_)
-            RIGIDSYM_C_ODD_D(odd, in_[j_]);
+#if RIGIDSYM_C_VECTOR
+    {   /* the range test of every input component, 2 per vector register */
+        rigidsym_c_vd oddv_ = {0, 0};
+        {
+            const rigidsym_c_vd v_ = {rigidsym_c_bits_d(&q1), rigidsym_c_bits_d(&q2)};
+            oddv_ |= rigidsym_c_odd_vd(v_);
+        }
+        {
+            const rigidsym_c_vd v_ = {rigidsym_c_bits_d(&l1), rigidsym_c_bits_d(&l2)};
+            oddv_ |= rigidsym_c_odd_vd(v_);
+        }
+        odd = oddv_[0] | oddv_[1];
     }
+#else
+    {   /* the range test of every input component, one at a time */
+        RIGIDSYM_C_ODD_D(odd, q1);
+        RIGIDSYM_C_ODD_D(odd, q2);
+        RIGIDSYM_C_ODD_D(odd, l1);
+        RIGIDSYM_C_ODD_D(odd, l2);
+    }
+#endif
     if (odd >> 63) {
         const double *args[4];
         const int sizes[4] = {1, 1, 1, 1};
@@ -521,13 +582,26 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians(
     }
     /* no division or root, and every output bounded by 2^102 for inputs of
      * ordinary magnitude (|x| < 2^101): only an extreme or non-finite input can make an
-     * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN
-     * otherwise; the guards of rigidsym_c_impl.h keep the compiler from folding it) */
+     * output non-finite, so only then are the outputs tested */
 #if defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    finite += ((((p[0] - p[0]) + (p[1] - p[1])) + ((p_D_q1[0] - p_D_q1[0]) + ((p_D_q1[1] - p_D_q1[1]) + (p_D_q2[0] - p_D_q2[0])))) + (((p_D_q2[1] - p_D_q2[1]) + (p_D_l1[0] - p_D_l1[0])) + ((p_D_l1[1] - p_D_l1[1]) + ((p_D_l2[0] - p_D_l2[0]) + (p_D_l2[1] - p_D_l2[1])))));
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const double s_ = (((p[0] + p[1]) + (p_D_q1[0] + (p_D_q1[1] + p_D_q2[0]))) + ((p_D_q2[1] + p_D_l1[0]) + (p_D_l1[1] + (p_D_l2[0] + p_D_l2[1]))));
+        if (!(s_ - s_ == 0.0))
+            finite += ((((p[0] - p[0]) + (p[1] - p[1])) + ((p_D_q1[0] - p_D_q1[0]) + ((p_D_q1[1] - p_D_q1[1]) + (p_D_q2[0] - p_D_q2[0])))) + (((p_D_q2[1] - p_D_q2[1]) + (p_D_l1[0] - p_D_l1[0])) + ((p_D_l1[1] - p_D_l1[1]) + ((p_D_l2[0] - p_D_l2[0]) + (p_D_l2[1] - p_D_l2[1])))));
+    }
 #else
     if (status)
-        finite += ((((p[0] - p[0]) + (p[1] - p[1])) + ((p_D_q1[0] - p_D_q1[0]) + ((p_D_q1[1] - p_D_q1[1]) + (p_D_q2[0] - p_D_q2[0])))) + (((p_D_q2[1] - p_D_q2[1]) + (p_D_l1[0] - p_D_l1[0])) + ((p_D_l1[1] - p_D_l1[1]) + ((p_D_l2[0] - p_D_l2[0]) + (p_D_l2[1] - p_D_l2[1])))));
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const double s_ = (((p[0] + p[1]) + (p_D_q1[0] + (p_D_q1[1] + p_D_q2[0]))) + ((p_D_q2[1] + p_D_l1[0]) + (p_D_l1[1] + (p_D_l2[0] + p_D_l2[1]))));
+        if (!(s_ - s_ == 0.0))
+            finite += ((((p[0] - p[0]) + (p[1] - p[1])) + ((p_D_q1[0] - p_D_q1[0]) + ((p_D_q1[1] - p_D_q1[1]) + (p_D_q2[0] - p_D_q2[0])))) + (((p_D_q2[1] - p_D_q2[1]) + (p_D_l1[0] - p_D_l1[0])) + ((p_D_l1[1] - p_D_l1[1]) + ((p_D_l2[0] - p_D_l2[0]) + (p_D_l2[1] - p_D_l2[1])))));
+    }
 #endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -648,14 +722,23 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians_f32(
     int status = 0, singular = 0;
     float finite = 0.0f;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    {   /* the range test of every input component, as one loop (it vectorises) */
-        const float in_[4] = {
-            q1, q2, l1, l2
-        };
-        int j_;
-        for (j_ = 0; j_ < 4; ++j_)
-            RIGIDSYM_C_ODD_F(odd, in_[j_]);
+#if RIGIDSYM_C_VECTOR
+    {   /* the range test of every input component, 4 per vector register */
+        rigidsym_c_vf oddv_ = {0, 0, 0, 0};
+        {
+            const rigidsym_c_vf v_ = {rigidsym_c_bits_f(&q1), rigidsym_c_bits_f(&q2), rigidsym_c_bits_f(&l1), rigidsym_c_bits_f(&l2)};
+            oddv_ |= rigidsym_c_odd_vf(v_);
+        }
+        odd = oddv_[0] | oddv_[1] | oddv_[2] | oddv_[3];
     }
+#else
+    {   /* the range test of every input component, one at a time */
+        RIGIDSYM_C_ODD_F(odd, q1);
+        RIGIDSYM_C_ODD_F(odd, q2);
+        RIGIDSYM_C_ODD_F(odd, l1);
+        RIGIDSYM_C_ODD_F(odd, l2);
+    }
+#endif
     if (odd >> 31) {
         const float *args[4];
         const int sizes[4] = {1, 1, 1, 1};
@@ -702,13 +785,26 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians_f32(
     }
     /* no division or root, and every output bounded by 2^32 for inputs of
      * ordinary magnitude (|x| < 2^31): only an extreme or non-finite input can make an
-     * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN
-     * otherwise; the guards of rigidsym_c_impl.h keep the compiler from folding it) */
+     * output non-finite, so only then are the outputs tested */
 #if defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    finite += ((((p[0] - p[0]) + (p[1] - p[1])) + ((p_D_q1[0] - p_D_q1[0]) + ((p_D_q1[1] - p_D_q1[1]) + (p_D_q2[0] - p_D_q2[0])))) + (((p_D_q2[1] - p_D_q2[1]) + (p_D_l1[0] - p_D_l1[0])) + ((p_D_l1[1] - p_D_l1[1]) + ((p_D_l2[0] - p_D_l2[0]) + (p_D_l2[1] - p_D_l2[1])))));
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const float s_ = (((p[0] + p[1]) + (p_D_q1[0] + (p_D_q1[1] + p_D_q2[0]))) + ((p_D_q2[1] + p_D_l1[0]) + (p_D_l1[1] + (p_D_l2[0] + p_D_l2[1]))));
+        if (!(s_ - s_ == 0.0f))
+            finite += ((((p[0] - p[0]) + (p[1] - p[1])) + ((p_D_q1[0] - p_D_q1[0]) + ((p_D_q1[1] - p_D_q1[1]) + (p_D_q2[0] - p_D_q2[0])))) + (((p_D_q2[1] - p_D_q2[1]) + (p_D_l1[0] - p_D_l1[0])) + ((p_D_l1[1] - p_D_l1[1]) + ((p_D_l2[0] - p_D_l2[0]) + (p_D_l2[1] - p_D_l2[1])))));
+    }
 #else
     if (status)
-        finite += ((((p[0] - p[0]) + (p[1] - p[1])) + ((p_D_q1[0] - p_D_q1[0]) + ((p_D_q1[1] - p_D_q1[1]) + (p_D_q2[0] - p_D_q2[0])))) + (((p_D_q2[1] - p_D_q2[1]) + (p_D_l1[0] - p_D_l1[0])) + ((p_D_l1[1] - p_D_l1[1]) + ((p_D_l2[0] - p_D_l2[0]) + (p_D_l2[1] - p_D_l2[1])))));
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const float s_ = (((p[0] + p[1]) + (p_D_q1[0] + (p_D_q1[1] + p_D_q2[0]))) + ((p_D_q2[1] + p_D_l1[0]) + (p_D_l1[1] + (p_D_l2[0] + p_D_l2[1]))));
+        if (!(s_ - s_ == 0.0f))
+            finite += ((((p[0] - p[0]) + (p[1] - p[1])) + ((p_D_q1[0] - p_D_q1[0]) + ((p_D_q1[1] - p_D_q1[1]) + (p_D_q2[0] - p_D_q2[0])))) + (((p_D_q2[1] - p_D_q2[1]) + (p_D_l1[0] - p_D_l1[0])) + ((p_D_l1[1] - p_D_l1[1]) + ((p_D_l2[0] - p_D_l2[0]) + (p_D_l2[1] - p_D_l2[1])))));
+    }
 #endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;

@@ -69,14 +69,21 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation(
     int status = 0, singular = 0;
     double finite = 0.0;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    {   /* the range test of every input component, as one loop (it vectorises) */
-        const double in_[4] = {
-            q[0], q[1], q[2], q[3]
-        };
-        int j_;
-        for (j_ = 0; j_ < 4; ++j_)
-            RIGIDSYM_C_ODD_D(odd, in_[j_]);
+#if RIGIDSYM_C_VECTOR
+    {   /* the range test of every input component, 2 per vector register */
+        rigidsym_c_vd oddv_ = {0, 0};
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(q));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(q + 2));
+        odd = oddv_[0] | oddv_[1];
     }
+#else
+    {   /* the range test of every input component, one at a time */
+        RIGIDSYM_C_ODD_D(odd, q[0]);
+        RIGIDSYM_C_ODD_D(odd, q[1]);
+        RIGIDSYM_C_ODD_D(odd, q[2]);
+        RIGIDSYM_C_ODD_D(odd, q[3]);
+    }
+#endif
     if (odd >> 63) {
         const double *args[1];
         const int sizes[1] = {4};
@@ -119,13 +126,26 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation(
     }
     /* no division or root, and every output bounded by 2^205 for inputs of
      * ordinary magnitude (|x| < 2^101): only an extreme or non-finite input can make an
-     * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN
-     * otherwise; the guards of rigidsym_c_impl.h keep the compiler from folding it) */
+     * output non-finite, so only then are the outputs tested */
 #if defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    finite += ((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + (Q[3] - Q[3]))) + (((Q[4] - Q[4]) + (Q[5] - Q[5])) + ((Q[6] - Q[6]) + ((Q[7] - Q[7]) + (Q[8] - Q[8])))));
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const double s_ = (((Q[0] + Q[1]) + (Q[2] + Q[3])) + ((Q[4] + Q[5]) + (Q[6] + (Q[7] + Q[8]))));
+        if (!(s_ - s_ == 0.0))
+            finite += ((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + (Q[3] - Q[3]))) + (((Q[4] - Q[4]) + (Q[5] - Q[5])) + ((Q[6] - Q[6]) + ((Q[7] - Q[7]) + (Q[8] - Q[8])))));
+    }
 #else
     if (status)
-        finite += ((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + (Q[3] - Q[3]))) + (((Q[4] - Q[4]) + (Q[5] - Q[5])) + ((Q[6] - Q[6]) + ((Q[7] - Q[7]) + (Q[8] - Q[8])))));
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const double s_ = (((Q[0] + Q[1]) + (Q[2] + Q[3])) + ((Q[4] + Q[5]) + (Q[6] + (Q[7] + Q[8]))));
+        if (!(s_ - s_ == 0.0))
+            finite += ((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + (Q[3] - Q[3]))) + (((Q[4] - Q[4]) + (Q[5] - Q[5])) + ((Q[6] - Q[6]) + ((Q[7] - Q[7]) + (Q[8] - Q[8])))));
+    }
 #endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -173,14 +193,20 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_f32(
     int status = 0, singular = 0;
     float finite = 0.0f;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    {   /* the range test of every input component, as one loop (it vectorises) */
-        const float in_[4] = {
-            q[0], q[1], q[2], q[3]
-        };
-        int j_;
-        for (j_ = 0; j_ < 4; ++j_)
-            RIGIDSYM_C_ODD_F(odd, in_[j_]);
+#if RIGIDSYM_C_VECTOR
+    {   /* the range test of every input component, 4 per vector register */
+        rigidsym_c_vf oddv_ = {0, 0, 0, 0};
+        oddv_ |= rigidsym_c_odd_vf(rigidsym_c_load_vf(q));
+        odd = oddv_[0] | oddv_[1] | oddv_[2] | oddv_[3];
     }
+#else
+    {   /* the range test of every input component, one at a time */
+        RIGIDSYM_C_ODD_F(odd, q[0]);
+        RIGIDSYM_C_ODD_F(odd, q[1]);
+        RIGIDSYM_C_ODD_F(odd, q[2]);
+        RIGIDSYM_C_ODD_F(odd, q[3]);
+    }
+#endif
     if (odd >> 31) {
         const float *args[1];
         const int sizes[1] = {4};
@@ -219,13 +245,26 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_f32(
     }
     /* no division or root, and every output bounded by 2^65 for inputs of
      * ordinary magnitude (|x| < 2^31): only an extreme or non-finite input can make an
-     * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN
-     * otherwise; the guards of rigidsym_c_impl.h keep the compiler from folding it) */
+     * output non-finite, so only then are the outputs tested */
 #if defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    finite += ((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + (Q[3] - Q[3]))) + (((Q[4] - Q[4]) + (Q[5] - Q[5])) + ((Q[6] - Q[6]) + ((Q[7] - Q[7]) + (Q[8] - Q[8])))));
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const float s_ = (((Q[0] + Q[1]) + (Q[2] + Q[3])) + ((Q[4] + Q[5]) + (Q[6] + (Q[7] + Q[8]))));
+        if (!(s_ - s_ == 0.0f))
+            finite += ((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + (Q[3] - Q[3]))) + (((Q[4] - Q[4]) + (Q[5] - Q[5])) + ((Q[6] - Q[6]) + ((Q[7] - Q[7]) + (Q[8] - Q[8])))));
+    }
 #else
     if (status)
-        finite += ((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + (Q[3] - Q[3]))) + (((Q[4] - Q[4]) + (Q[5] - Q[5])) + ((Q[6] - Q[6]) + ((Q[7] - Q[7]) + (Q[8] - Q[8])))));
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const float s_ = (((Q[0] + Q[1]) + (Q[2] + Q[3])) + ((Q[4] + Q[5]) + (Q[6] + (Q[7] + Q[8]))));
+        if (!(s_ - s_ == 0.0f))
+            finite += ((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + (Q[3] - Q[3]))) + (((Q[4] - Q[4]) + (Q[5] - Q[5])) + ((Q[6] - Q[6]) + ((Q[7] - Q[7]) + (Q[8] - Q[8])))));
+    }
 #endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -404,14 +443,21 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_with_jacobians(
     int status = 0, singular = 0;
     double finite = 0.0;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    {   /* the range test of every input component, as one loop (it vectorises) */
-        const double in_[4] = {
-            q[0], q[1], q[2], q[3]
-        };
-        int j_;
-        for (j_ = 0; j_ < 4; ++j_)
-            RIGIDSYM_C_ODD_D(odd, in_[j_]);
+#if RIGIDSYM_C_VECTOR
+    {   /* the range test of every input component, 2 per vector register */
+        rigidsym_c_vd oddv_ = {0, 0};
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(q));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(q + 2));
+        odd = oddv_[0] | oddv_[1];
     }
+#else
+    {   /* the range test of every input component, one at a time */
+        RIGIDSYM_C_ODD_D(odd, q[0]);
+        RIGIDSYM_C_ODD_D(odd, q[1]);
+        RIGIDSYM_C_ODD_D(odd, q[2]);
+        RIGIDSYM_C_ODD_D(odd, q[3]);
+    }
+#endif
     if (odd >> 63) {
         const double *args[1];
         const int sizes[1] = {4};
@@ -496,13 +542,26 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_with_jacobians(
     }
     /* no division or root, and every output bounded by 2^205 for inputs of
      * ordinary magnitude (|x| < 2^101): only an extreme or non-finite input can make an
-     * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN
-     * otherwise; the guards of rigidsym_c_impl.h keep the compiler from folding it) */
+     * output non-finite, so only then are the outputs tested */
 #if defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    finite += ((((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + ((Q[3] - Q[3]) + (Q[4] - Q[4])))) + (((Q[5] - Q[5]) + ((Q[6] - Q[6]) + (Q[7] - Q[7]))) + ((Q[8] - Q[8]) + ((Q_D_q[0] - Q_D_q[0]) + (Q_D_q[1] - Q_D_q[1]))))) + ((((Q_D_q[2] - Q_D_q[2]) + (Q_D_q[3] - Q_D_q[3])) + ((Q_D_q[4] - Q_D_q[4]) + ((Q_D_q[5] - Q_D_q[5]) + (Q_D_q[6] - Q_D_q[6])))) + (((Q_D_q[7] - Q_D_q[7]) + ((Q_D_q[8] - Q_D_q[8]) + (Q_D_q[9] - Q_D_q[9]))) + ((Q_D_q[10] - Q_D_q[10]) + ((Q_D_q[11] - Q_D_q[11]) + (Q_D_q[12] - Q_D_q[12])))))) + (((((Q_D_q[13] - Q_D_q[13]) + (Q_D_q[14] - Q_D_q[14])) + ((Q_D_q[15] - Q_D_q[15]) + ((Q_D_q[16] - Q_D_q[16]) + (Q_D_q[17] - Q_D_q[17])))) + (((Q_D_q[18] - Q_D_q[18]) + ((Q_D_q[19] - Q_D_q[19]) + (Q_D_q[20] - Q_D_q[20]))) + ((Q_D_q[21] - Q_D_q[21]) + ((Q_D_q[22] - Q_D_q[22]) + (Q_D_q[23] - Q_D_q[23]))))) + ((((Q_D_q[24] - Q_D_q[24]) + ((Q_D_q[25] - Q_D_q[25]) + (Q_D_q[26] - Q_D_q[26]))) + ((Q_D_q[27] - Q_D_q[27]) + ((Q_D_q[28] - Q_D_q[28]) + (Q_D_q[29] - Q_D_q[29])))) + (((Q_D_q[30] - Q_D_q[30]) + ((Q_D_q[31] - Q_D_q[31]) + (Q_D_q[32] - Q_D_q[32]))) + ((Q_D_q[33] - Q_D_q[33]) + ((Q_D_q[34] - Q_D_q[34]) + (Q_D_q[35] - Q_D_q[35])))))));
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const double s_ = (((((Q[0] + Q[1]) + (Q[2] + (Q[3] + Q[4]))) + ((Q[5] + (Q[6] + Q[7])) + (Q[8] + (Q_D_q[0] + Q_D_q[1])))) + (((Q_D_q[2] + Q_D_q[3]) + (Q_D_q[4] + (Q_D_q[5] + Q_D_q[6]))) + ((Q_D_q[7] + (Q_D_q[8] + Q_D_q[9])) + (Q_D_q[10] + (Q_D_q[11] + Q_D_q[12]))))) + ((((Q_D_q[13] + Q_D_q[14]) + (Q_D_q[15] + (Q_D_q[16] + Q_D_q[17]))) + ((Q_D_q[18] + (Q_D_q[19] + Q_D_q[20])) + (Q_D_q[21] + (Q_D_q[22] + Q_D_q[23])))) + (((Q_D_q[24] + (Q_D_q[25] + Q_D_q[26])) + (Q_D_q[27] + (Q_D_q[28] + Q_D_q[29]))) + ((Q_D_q[30] + (Q_D_q[31] + Q_D_q[32])) + (Q_D_q[33] + (Q_D_q[34] + Q_D_q[35]))))));
+        if (!(s_ - s_ == 0.0))
+            finite += ((((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + ((Q[3] - Q[3]) + (Q[4] - Q[4])))) + (((Q[5] - Q[5]) + ((Q[6] - Q[6]) + (Q[7] - Q[7]))) + ((Q[8] - Q[8]) + ((Q_D_q[0] - Q_D_q[0]) + (Q_D_q[1] - Q_D_q[1]))))) + ((((Q_D_q[2] - Q_D_q[2]) + (Q_D_q[3] - Q_D_q[3])) + ((Q_D_q[4] - Q_D_q[4]) + ((Q_D_q[5] - Q_D_q[5]) + (Q_D_q[6] - Q_D_q[6])))) + (((Q_D_q[7] - Q_D_q[7]) + ((Q_D_q[8] - Q_D_q[8]) + (Q_D_q[9] - Q_D_q[9]))) + ((Q_D_q[10] - Q_D_q[10]) + ((Q_D_q[11] - Q_D_q[11]) + (Q_D_q[12] - Q_D_q[12])))))) + (((((Q_D_q[13] - Q_D_q[13]) + (Q_D_q[14] - Q_D_q[14])) + ((Q_D_q[15] - Q_D_q[15]) + ((Q_D_q[16] - Q_D_q[16]) + (Q_D_q[17] - Q_D_q[17])))) + (((Q_D_q[18] - Q_D_q[18]) + ((Q_D_q[19] - Q_D_q[19]) + (Q_D_q[20] - Q_D_q[20]))) + ((Q_D_q[21] - Q_D_q[21]) + ((Q_D_q[22] - Q_D_q[22]) + (Q_D_q[23] - Q_D_q[23]))))) + ((((Q_D_q[24] - Q_D_q[24]) + ((Q_D_q[25] - Q_D_q[25]) + (Q_D_q[26] - Q_D_q[26]))) + ((Q_D_q[27] - Q_D_q[27]) + ((Q_D_q[28] - Q_D_q[28]) + (Q_D_q[29] - Q_D_q[29])))) + (((Q_D_q[30] - Q_D_q[30]) + ((Q_D_q[31] - Q_D_q[31]) + (Q_D_q[32] - Q_D_q[32]))) + ((Q_D_q[33] - Q_D_q[33]) + ((Q_D_q[34] - Q_D_q[34]) + (Q_D_q[35] - Q_D_q[35])))))));
+    }
 #else
     if (status)
-        finite += ((((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + ((Q[3] - Q[3]) + (Q[4] - Q[4])))) + (((Q[5] - Q[5]) + ((Q[6] - Q[6]) + (Q[7] - Q[7]))) + ((Q[8] - Q[8]) + ((Q_D_q[0] - Q_D_q[0]) + (Q_D_q[1] - Q_D_q[1]))))) + ((((Q_D_q[2] - Q_D_q[2]) + (Q_D_q[3] - Q_D_q[3])) + ((Q_D_q[4] - Q_D_q[4]) + ((Q_D_q[5] - Q_D_q[5]) + (Q_D_q[6] - Q_D_q[6])))) + (((Q_D_q[7] - Q_D_q[7]) + ((Q_D_q[8] - Q_D_q[8]) + (Q_D_q[9] - Q_D_q[9]))) + ((Q_D_q[10] - Q_D_q[10]) + ((Q_D_q[11] - Q_D_q[11]) + (Q_D_q[12] - Q_D_q[12])))))) + (((((Q_D_q[13] - Q_D_q[13]) + (Q_D_q[14] - Q_D_q[14])) + ((Q_D_q[15] - Q_D_q[15]) + ((Q_D_q[16] - Q_D_q[16]) + (Q_D_q[17] - Q_D_q[17])))) + (((Q_D_q[18] - Q_D_q[18]) + ((Q_D_q[19] - Q_D_q[19]) + (Q_D_q[20] - Q_D_q[20]))) + ((Q_D_q[21] - Q_D_q[21]) + ((Q_D_q[22] - Q_D_q[22]) + (Q_D_q[23] - Q_D_q[23]))))) + ((((Q_D_q[24] - Q_D_q[24]) + ((Q_D_q[25] - Q_D_q[25]) + (Q_D_q[26] - Q_D_q[26]))) + ((Q_D_q[27] - Q_D_q[27]) + ((Q_D_q[28] - Q_D_q[28]) + (Q_D_q[29] - Q_D_q[29])))) + (((Q_D_q[30] - Q_D_q[30]) + ((Q_D_q[31] - Q_D_q[31]) + (Q_D_q[32] - Q_D_q[32]))) + ((Q_D_q[33] - Q_D_q[33]) + ((Q_D_q[34] - Q_D_q[34]) + (Q_D_q[35] - Q_D_q[35])))))));
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const double s_ = (((((Q[0] + Q[1]) + (Q[2] + (Q[3] + Q[4]))) + ((Q[5] + (Q[6] + Q[7])) + (Q[8] + (Q_D_q[0] + Q_D_q[1])))) + (((Q_D_q[2] + Q_D_q[3]) + (Q_D_q[4] + (Q_D_q[5] + Q_D_q[6]))) + ((Q_D_q[7] + (Q_D_q[8] + Q_D_q[9])) + (Q_D_q[10] + (Q_D_q[11] + Q_D_q[12]))))) + ((((Q_D_q[13] + Q_D_q[14]) + (Q_D_q[15] + (Q_D_q[16] + Q_D_q[17]))) + ((Q_D_q[18] + (Q_D_q[19] + Q_D_q[20])) + (Q_D_q[21] + (Q_D_q[22] + Q_D_q[23])))) + (((Q_D_q[24] + (Q_D_q[25] + Q_D_q[26])) + (Q_D_q[27] + (Q_D_q[28] + Q_D_q[29]))) + ((Q_D_q[30] + (Q_D_q[31] + Q_D_q[32])) + (Q_D_q[33] + (Q_D_q[34] + Q_D_q[35]))))));
+        if (!(s_ - s_ == 0.0))
+            finite += ((((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + ((Q[3] - Q[3]) + (Q[4] - Q[4])))) + (((Q[5] - Q[5]) + ((Q[6] - Q[6]) + (Q[7] - Q[7]))) + ((Q[8] - Q[8]) + ((Q_D_q[0] - Q_D_q[0]) + (Q_D_q[1] - Q_D_q[1]))))) + ((((Q_D_q[2] - Q_D_q[2]) + (Q_D_q[3] - Q_D_q[3])) + ((Q_D_q[4] - Q_D_q[4]) + ((Q_D_q[5] - Q_D_q[5]) + (Q_D_q[6] - Q_D_q[6])))) + (((Q_D_q[7] - Q_D_q[7]) + ((Q_D_q[8] - Q_D_q[8]) + (Q_D_q[9] - Q_D_q[9]))) + ((Q_D_q[10] - Q_D_q[10]) + ((Q_D_q[11] - Q_D_q[11]) + (Q_D_q[12] - Q_D_q[12])))))) + (((((Q_D_q[13] - Q_D_q[13]) + (Q_D_q[14] - Q_D_q[14])) + ((Q_D_q[15] - Q_D_q[15]) + ((Q_D_q[16] - Q_D_q[16]) + (Q_D_q[17] - Q_D_q[17])))) + (((Q_D_q[18] - Q_D_q[18]) + ((Q_D_q[19] - Q_D_q[19]) + (Q_D_q[20] - Q_D_q[20]))) + ((Q_D_q[21] - Q_D_q[21]) + ((Q_D_q[22] - Q_D_q[22]) + (Q_D_q[23] - Q_D_q[23]))))) + ((((Q_D_q[24] - Q_D_q[24]) + ((Q_D_q[25] - Q_D_q[25]) + (Q_D_q[26] - Q_D_q[26]))) + ((Q_D_q[27] - Q_D_q[27]) + ((Q_D_q[28] - Q_D_q[28]) + (Q_D_q[29] - Q_D_q[29])))) + (((Q_D_q[30] - Q_D_q[30]) + ((Q_D_q[31] - Q_D_q[31]) + (Q_D_q[32] - Q_D_q[32]))) + ((Q_D_q[33] - Q_D_q[33]) + ((Q_D_q[34] - Q_D_q[34]) + (Q_D_q[35] - Q_D_q[35])))))));
+    }
 #endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -588,14 +647,20 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_with_jacobians_f32(
     int status = 0, singular = 0;
     float finite = 0.0f;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    {   /* the range test of every input component, as one loop (it vectorises) */
-        const float in_[4] = {
-            q[0], q[1], q[2], q[3]
-        };
-        int j_;
-        for (j_ = 0; j_ < 4; ++j_)
-            RIGIDSYM_C_ODD_F(odd, in_[j_]);
+#if RIGIDSYM_C_VECTOR
+    {   /* the range test of every input component, 4 per vector register */
+        rigidsym_c_vf oddv_ = {0, 0, 0, 0};
+        oddv_ |= rigidsym_c_odd_vf(rigidsym_c_load_vf(q));
+        odd = oddv_[0] | oddv_[1] | oddv_[2] | oddv_[3];
     }
+#else
+    {   /* the range test of every input component, one at a time */
+        RIGIDSYM_C_ODD_F(odd, q[0]);
+        RIGIDSYM_C_ODD_F(odd, q[1]);
+        RIGIDSYM_C_ODD_F(odd, q[2]);
+        RIGIDSYM_C_ODD_F(odd, q[3]);
+    }
+#endif
     if (odd >> 31) {
         const float *args[1];
         const int sizes[1] = {4};
@@ -676,13 +741,26 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_with_jacobians_f32(
     }
     /* no division or root, and every output bounded by 2^65 for inputs of
      * ordinary magnitude (|x| < 2^31): only an extreme or non-finite input can make an
-     * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN
-     * otherwise; the guards of rigidsym_c_impl.h keep the compiler from folding it) */
+     * output non-finite, so only then are the outputs tested */
 #if defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    finite += ((((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + ((Q[3] - Q[3]) + (Q[4] - Q[4])))) + (((Q[5] - Q[5]) + ((Q[6] - Q[6]) + (Q[7] - Q[7]))) + ((Q[8] - Q[8]) + ((Q_D_q[0] - Q_D_q[0]) + (Q_D_q[1] - Q_D_q[1]))))) + ((((Q_D_q[2] - Q_D_q[2]) + (Q_D_q[3] - Q_D_q[3])) + ((Q_D_q[4] - Q_D_q[4]) + ((Q_D_q[5] - Q_D_q[5]) + (Q_D_q[6] - Q_D_q[6])))) + (((Q_D_q[7] - Q_D_q[7]) + ((Q_D_q[8] - Q_D_q[8]) + (Q_D_q[9] - Q_D_q[9]))) + ((Q_D_q[10] - Q_D_q[10]) + ((Q_D_q[11] - Q_D_q[11]) + (Q_D_q[12] - Q_D_q[12])))))) + (((((Q_D_q[13] - Q_D_q[13]) + (Q_D_q[14] - Q_D_q[14])) + ((Q_D_q[15] - Q_D_q[15]) + ((Q_D_q[16] - Q_D_q[16]) + (Q_D_q[17] - Q_D_q[17])))) + (((Q_D_q[18] - Q_D_q[18]) + ((Q_D_q[19] - Q_D_q[19]) + (Q_D_q[20] - Q_D_q[20]))) + ((Q_D_q[21] - Q_D_q[21]) + ((Q_D_q[22] - Q_D_q[22]) + (Q_D_q[23] - Q_D_q[23]))))) + ((((Q_D_q[24] - Q_D_q[24]) + ((Q_D_q[25] - Q_D_q[25]) + (Q_D_q[26] - Q_D_q[26]))) + ((Q_D_q[27] - Q_D_q[27]) + ((Q_D_q[28] - Q_D_q[28]) + (Q_D_q[29] - Q_D_q[29])))) + (((Q_D_q[30] - Q_D_q[30]) + ((Q_D_q[31] - Q_D_q[31]) + (Q_D_q[32] - Q_D_q[32]))) + ((Q_D_q[33] - Q_D_q[33]) + ((Q_D_q[34] - Q_D_q[34]) + (Q_D_q[35] - Q_D_q[35])))))));
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const float s_ = (((((Q[0] + Q[1]) + (Q[2] + (Q[3] + Q[4]))) + ((Q[5] + (Q[6] + Q[7])) + (Q[8] + (Q_D_q[0] + Q_D_q[1])))) + (((Q_D_q[2] + Q_D_q[3]) + (Q_D_q[4] + (Q_D_q[5] + Q_D_q[6]))) + ((Q_D_q[7] + (Q_D_q[8] + Q_D_q[9])) + (Q_D_q[10] + (Q_D_q[11] + Q_D_q[12]))))) + ((((Q_D_q[13] + Q_D_q[14]) + (Q_D_q[15] + (Q_D_q[16] + Q_D_q[17]))) + ((Q_D_q[18] + (Q_D_q[19] + Q_D_q[20])) + (Q_D_q[21] + (Q_D_q[22] + Q_D_q[23])))) + (((Q_D_q[24] + (Q_D_q[25] + Q_D_q[26])) + (Q_D_q[27] + (Q_D_q[28] + Q_D_q[29]))) + ((Q_D_q[30] + (Q_D_q[31] + Q_D_q[32])) + (Q_D_q[33] + (Q_D_q[34] + Q_D_q[35]))))));
+        if (!(s_ - s_ == 0.0f))
+            finite += ((((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + ((Q[3] - Q[3]) + (Q[4] - Q[4])))) + (((Q[5] - Q[5]) + ((Q[6] - Q[6]) + (Q[7] - Q[7]))) + ((Q[8] - Q[8]) + ((Q_D_q[0] - Q_D_q[0]) + (Q_D_q[1] - Q_D_q[1]))))) + ((((Q_D_q[2] - Q_D_q[2]) + (Q_D_q[3] - Q_D_q[3])) + ((Q_D_q[4] - Q_D_q[4]) + ((Q_D_q[5] - Q_D_q[5]) + (Q_D_q[6] - Q_D_q[6])))) + (((Q_D_q[7] - Q_D_q[7]) + ((Q_D_q[8] - Q_D_q[8]) + (Q_D_q[9] - Q_D_q[9]))) + ((Q_D_q[10] - Q_D_q[10]) + ((Q_D_q[11] - Q_D_q[11]) + (Q_D_q[12] - Q_D_q[12])))))) + (((((Q_D_q[13] - Q_D_q[13]) + (Q_D_q[14] - Q_D_q[14])) + ((Q_D_q[15] - Q_D_q[15]) + ((Q_D_q[16] - Q_D_q[16]) + (Q_D_q[17] - Q_D_q[17])))) + (((Q_D_q[18] - Q_D_q[18]) + ((Q_D_q[19] - Q_D_q[19]) + (Q_D_q[20] - Q_D_q[20]))) + ((Q_D_q[21] - Q_D_q[21]) + ((Q_D_q[22] - Q_D_q[22]) + (Q_D_q[23] - Q_D_q[23]))))) + ((((Q_D_q[24] - Q_D_q[24]) + ((Q_D_q[25] - Q_D_q[25]) + (Q_D_q[26] - Q_D_q[26]))) + ((Q_D_q[27] - Q_D_q[27]) + ((Q_D_q[28] - Q_D_q[28]) + (Q_D_q[29] - Q_D_q[29])))) + (((Q_D_q[30] - Q_D_q[30]) + ((Q_D_q[31] - Q_D_q[31]) + (Q_D_q[32] - Q_D_q[32]))) + ((Q_D_q[33] - Q_D_q[33]) + ((Q_D_q[34] - Q_D_q[34]) + (Q_D_q[35] - Q_D_q[35])))))));
+    }
 #else
     if (status)
-        finite += ((((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + ((Q[3] - Q[3]) + (Q[4] - Q[4])))) + (((Q[5] - Q[5]) + ((Q[6] - Q[6]) + (Q[7] - Q[7]))) + ((Q[8] - Q[8]) + ((Q_D_q[0] - Q_D_q[0]) + (Q_D_q[1] - Q_D_q[1]))))) + ((((Q_D_q[2] - Q_D_q[2]) + (Q_D_q[3] - Q_D_q[3])) + ((Q_D_q[4] - Q_D_q[4]) + ((Q_D_q[5] - Q_D_q[5]) + (Q_D_q[6] - Q_D_q[6])))) + (((Q_D_q[7] - Q_D_q[7]) + ((Q_D_q[8] - Q_D_q[8]) + (Q_D_q[9] - Q_D_q[9]))) + ((Q_D_q[10] - Q_D_q[10]) + ((Q_D_q[11] - Q_D_q[11]) + (Q_D_q[12] - Q_D_q[12])))))) + (((((Q_D_q[13] - Q_D_q[13]) + (Q_D_q[14] - Q_D_q[14])) + ((Q_D_q[15] - Q_D_q[15]) + ((Q_D_q[16] - Q_D_q[16]) + (Q_D_q[17] - Q_D_q[17])))) + (((Q_D_q[18] - Q_D_q[18]) + ((Q_D_q[19] - Q_D_q[19]) + (Q_D_q[20] - Q_D_q[20]))) + ((Q_D_q[21] - Q_D_q[21]) + ((Q_D_q[22] - Q_D_q[22]) + (Q_D_q[23] - Q_D_q[23]))))) + ((((Q_D_q[24] - Q_D_q[24]) + ((Q_D_q[25] - Q_D_q[25]) + (Q_D_q[26] - Q_D_q[26]))) + ((Q_D_q[27] - Q_D_q[27]) + ((Q_D_q[28] - Q_D_q[28]) + (Q_D_q[29] - Q_D_q[29])))) + (((Q_D_q[30] - Q_D_q[30]) + ((Q_D_q[31] - Q_D_q[31]) + (Q_D_q[32] - Q_D_q[32]))) + ((Q_D_q[33] - Q_D_q[33]) + ((Q_D_q[34] - Q_D_q[34]) + (Q_D_q[35] - Q_D_q[35])))))));
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const float s_ = (((((Q[0] + Q[1]) + (Q[2] + (Q[3] + Q[4]))) + ((Q[5] + (Q[6] + Q[7])) + (Q[8] + (Q_D_q[0] + Q_D_q[1])))) + (((Q_D_q[2] + Q_D_q[3]) + (Q_D_q[4] + (Q_D_q[5] + Q_D_q[6]))) + ((Q_D_q[7] + (Q_D_q[8] + Q_D_q[9])) + (Q_D_q[10] + (Q_D_q[11] + Q_D_q[12]))))) + ((((Q_D_q[13] + Q_D_q[14]) + (Q_D_q[15] + (Q_D_q[16] + Q_D_q[17]))) + ((Q_D_q[18] + (Q_D_q[19] + Q_D_q[20])) + (Q_D_q[21] + (Q_D_q[22] + Q_D_q[23])))) + (((Q_D_q[24] + (Q_D_q[25] + Q_D_q[26])) + (Q_D_q[27] + (Q_D_q[28] + Q_D_q[29]))) + ((Q_D_q[30] + (Q_D_q[31] + Q_D_q[32])) + (Q_D_q[33] + (Q_D_q[34] + Q_D_q[35]))))));
+        if (!(s_ - s_ == 0.0f))
+            finite += ((((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + ((Q[3] - Q[3]) + (Q[4] - Q[4])))) + (((Q[5] - Q[5]) + ((Q[6] - Q[6]) + (Q[7] - Q[7]))) + ((Q[8] - Q[8]) + ((Q_D_q[0] - Q_D_q[0]) + (Q_D_q[1] - Q_D_q[1]))))) + ((((Q_D_q[2] - Q_D_q[2]) + (Q_D_q[3] - Q_D_q[3])) + ((Q_D_q[4] - Q_D_q[4]) + ((Q_D_q[5] - Q_D_q[5]) + (Q_D_q[6] - Q_D_q[6])))) + (((Q_D_q[7] - Q_D_q[7]) + ((Q_D_q[8] - Q_D_q[8]) + (Q_D_q[9] - Q_D_q[9]))) + ((Q_D_q[10] - Q_D_q[10]) + ((Q_D_q[11] - Q_D_q[11]) + (Q_D_q[12] - Q_D_q[12])))))) + (((((Q_D_q[13] - Q_D_q[13]) + (Q_D_q[14] - Q_D_q[14])) + ((Q_D_q[15] - Q_D_q[15]) + ((Q_D_q[16] - Q_D_q[16]) + (Q_D_q[17] - Q_D_q[17])))) + (((Q_D_q[18] - Q_D_q[18]) + ((Q_D_q[19] - Q_D_q[19]) + (Q_D_q[20] - Q_D_q[20]))) + ((Q_D_q[21] - Q_D_q[21]) + ((Q_D_q[22] - Q_D_q[22]) + (Q_D_q[23] - Q_D_q[23]))))) + ((((Q_D_q[24] - Q_D_q[24]) + ((Q_D_q[25] - Q_D_q[25]) + (Q_D_q[26] - Q_D_q[26]))) + ((Q_D_q[27] - Q_D_q[27]) + ((Q_D_q[28] - Q_D_q[28]) + (Q_D_q[29] - Q_D_q[29])))) + (((Q_D_q[30] - Q_D_q[30]) + ((Q_D_q[31] - Q_D_q[31]) + (Q_D_q[32] - Q_D_q[32]))) + ((Q_D_q[33] - Q_D_q[33]) + ((Q_D_q[34] - Q_D_q[34]) + (Q_D_q[35] - Q_D_q[35])))))));
+    }
 #endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;

@@ -80,14 +80,24 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants(
     int status = 0, singular = 0;
     double finite = 0.0;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    {   /* the range test of every input component, as one loop (it vectorises) */
-        const double in_[4] = {
-            e[0], e[1], e[2], phi
-        };
-        int j_;
-        for (j_ = 0; j_ < 4; ++j_)
-            RIGIDSYM_C_ODD_D(odd, in_[j_]);
+#if RIGIDSYM_C_VECTOR
+    {   /* the range test of every input component, 2 per vector register */
+        rigidsym_c_vd oddv_ = {0, 0};
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(e));
+        {
+            const rigidsym_c_vd v_ = {rigidsym_c_bits_d(&e[2]), rigidsym_c_bits_d(&phi)};
+            oddv_ |= rigidsym_c_odd_vd(v_);
+        }
+        odd = oddv_[0] | oddv_[1];
     }
+#else
+    {   /* the range test of every input component, one at a time */
+        RIGIDSYM_C_ODD_D(odd, e[0]);
+        RIGIDSYM_C_ODD_D(odd, e[1]);
+        RIGIDSYM_C_ODD_D(odd, e[2]);
+        RIGIDSYM_C_ODD_D(odd, phi);
+    }
+#endif
     if (odd >> 63) {
         const double *args[2];
         const int sizes[2] = {3, 1};
@@ -138,13 +148,26 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants(
     }
     /* no division or root, and every output bounded by 2^206 for inputs of
      * ordinary magnitude (|x| < 2^101): only an extreme or non-finite input can make an
-     * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN
-     * otherwise; the guards of rigidsym_c_impl.h keep the compiler from folding it) */
+     * output non-finite, so only then are the outputs tested */
 #if defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    finite += ((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + (Q[3] - Q[3]))) + (((Q[4] - Q[4]) + (Q[5] - Q[5])) + ((Q[6] - Q[6]) + ((Q[7] - Q[7]) + (Q[8] - Q[8])))));
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const double s_ = (((Q[0] + Q[1]) + (Q[2] + Q[3])) + ((Q[4] + Q[5]) + (Q[6] + (Q[7] + Q[8]))));
+        if (!(s_ - s_ == 0.0))
+            finite += ((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + (Q[3] - Q[3]))) + (((Q[4] - Q[4]) + (Q[5] - Q[5])) + ((Q[6] - Q[6]) + ((Q[7] - Q[7]) + (Q[8] - Q[8])))));
+    }
 #else
     if (status)
-        finite += ((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + (Q[3] - Q[3]))) + (((Q[4] - Q[4]) + (Q[5] - Q[5])) + ((Q[6] - Q[6]) + ((Q[7] - Q[7]) + (Q[8] - Q[8])))));
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const double s_ = (((Q[0] + Q[1]) + (Q[2] + Q[3])) + ((Q[4] + Q[5]) + (Q[6] + (Q[7] + Q[8]))));
+        if (!(s_ - s_ == 0.0))
+            finite += ((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + (Q[3] - Q[3]))) + (((Q[4] - Q[4]) + (Q[5] - Q[5])) + ((Q[6] - Q[6]) + ((Q[7] - Q[7]) + (Q[8] - Q[8])))));
+    }
 #endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -195,14 +218,23 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_f32(
     int status = 0, singular = 0;
     float finite = 0.0f;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    {   /* the range test of every input component, as one loop (it vectorises) */
-        const float in_[4] = {
-            e[0], e[1], e[2], phi
-        };
-        int j_;
-        for (j_ = 0; j_ < 4; ++j_)
-            RIGIDSYM_C_ODD_F(odd, in_[j_]);
+#if RIGIDSYM_C_VECTOR
+    {   /* the range test of every input component, 4 per vector register */
+        rigidsym_c_vf oddv_ = {0, 0, 0, 0};
+        {
+            const rigidsym_c_vf v_ = {rigidsym_c_bits_f(&e[0]), rigidsym_c_bits_f(&e[1]), rigidsym_c_bits_f(&e[2]), rigidsym_c_bits_f(&phi)};
+            oddv_ |= rigidsym_c_odd_vf(v_);
+        }
+        odd = oddv_[0] | oddv_[1] | oddv_[2] | oddv_[3];
     }
+#else
+    {   /* the range test of every input component, one at a time */
+        RIGIDSYM_C_ODD_F(odd, e[0]);
+        RIGIDSYM_C_ODD_F(odd, e[1]);
+        RIGIDSYM_C_ODD_F(odd, e[2]);
+        RIGIDSYM_C_ODD_F(odd, phi);
+    }
+#endif
     if (odd >> 31) {
         const float *args[2];
         const int sizes[2] = {3, 1};
@@ -249,13 +281,26 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_f32(
     }
     /* no division or root, and every output bounded by 2^66 for inputs of
      * ordinary magnitude (|x| < 2^31): only an extreme or non-finite input can make an
-     * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN
-     * otherwise; the guards of rigidsym_c_impl.h keep the compiler from folding it) */
+     * output non-finite, so only then are the outputs tested */
 #if defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    finite += ((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + (Q[3] - Q[3]))) + (((Q[4] - Q[4]) + (Q[5] - Q[5])) + ((Q[6] - Q[6]) + ((Q[7] - Q[7]) + (Q[8] - Q[8])))));
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const float s_ = (((Q[0] + Q[1]) + (Q[2] + Q[3])) + ((Q[4] + Q[5]) + (Q[6] + (Q[7] + Q[8]))));
+        if (!(s_ - s_ == 0.0f))
+            finite += ((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + (Q[3] - Q[3]))) + (((Q[4] - Q[4]) + (Q[5] - Q[5])) + ((Q[6] - Q[6]) + ((Q[7] - Q[7]) + (Q[8] - Q[8])))));
+    }
 #else
     if (status)
-        finite += ((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + (Q[3] - Q[3]))) + (((Q[4] - Q[4]) + (Q[5] - Q[5])) + ((Q[6] - Q[6]) + ((Q[7] - Q[7]) + (Q[8] - Q[8])))));
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const float s_ = (((Q[0] + Q[1]) + (Q[2] + Q[3])) + ((Q[4] + Q[5]) + (Q[6] + (Q[7] + Q[8]))));
+        if (!(s_ - s_ == 0.0f))
+            finite += ((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + (Q[3] - Q[3]))) + (((Q[4] - Q[4]) + (Q[5] - Q[5])) + ((Q[6] - Q[6]) + ((Q[7] - Q[7]) + (Q[8] - Q[8])))));
+    }
 #endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -454,14 +499,24 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_with_jacobians(
     int status = 0, singular = 0;
     double finite = 0.0;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    {   /* the range test of every input component, as one loop (it vectorises) */
-        const double in_[4] = {
-            e[0], e[1], e[2], phi
-        };
-        int j_;
-        for (j_ = 0; j_ < 4; ++j_)
-            RIGIDSYM_C_ODD_D(odd, in_[j_]);
+#if RIGIDSYM_C_VECTOR
+    {   /* the range test of every input component, 2 per vector register */
+        rigidsym_c_vd oddv_ = {0, 0};
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(e));
+        {
+            const rigidsym_c_vd v_ = {rigidsym_c_bits_d(&e[2]), rigidsym_c_bits_d(&phi)};
+            oddv_ |= rigidsym_c_odd_vd(v_);
+        }
+        odd = oddv_[0] | oddv_[1];
     }
+#else
+    {   /* the range test of every input component, one at a time */
+        RIGIDSYM_C_ODD_D(odd, e[0]);
+        RIGIDSYM_C_ODD_D(odd, e[1]);
+        RIGIDSYM_C_ODD_D(odd, e[2]);
+        RIGIDSYM_C_ODD_D(odd, phi);
+    }
+#endif
     if (odd >> 63) {
         const double *args[2];
         const int sizes[2] = {3, 1};
@@ -560,13 +615,26 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_with_jacobians(
     }
     /* no division or root, and every output bounded by 2^206 for inputs of
      * ordinary magnitude (|x| < 2^101): only an extreme or non-finite input can make an
-     * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN
-     * otherwise; the guards of rigidsym_c_impl.h keep the compiler from folding it) */
+     * output non-finite, so only then are the outputs tested */
 #if defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    finite += ((((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + ((Q[3] - Q[3]) + (Q[4] - Q[4])))) + (((Q[5] - Q[5]) + ((Q[6] - Q[6]) + (Q[7] - Q[7]))) + ((Q[8] - Q[8]) + ((Q_D_e[0] - Q_D_e[0]) + (Q_D_e[1] - Q_D_e[1]))))) + ((((Q_D_e[2] - Q_D_e[2]) + (Q_D_e[3] - Q_D_e[3])) + ((Q_D_e[4] - Q_D_e[4]) + ((Q_D_e[5] - Q_D_e[5]) + (Q_D_e[6] - Q_D_e[6])))) + (((Q_D_e[7] - Q_D_e[7]) + ((Q_D_e[8] - Q_D_e[8]) + (Q_D_e[9] - Q_D_e[9]))) + ((Q_D_e[10] - Q_D_e[10]) + ((Q_D_e[11] - Q_D_e[11]) + (Q_D_e[12] - Q_D_e[12])))))) + (((((Q_D_e[13] - Q_D_e[13]) + (Q_D_e[14] - Q_D_e[14])) + ((Q_D_e[15] - Q_D_e[15]) + ((Q_D_e[16] - Q_D_e[16]) + (Q_D_e[17] - Q_D_e[17])))) + (((Q_D_e[18] - Q_D_e[18]) + ((Q_D_e[19] - Q_D_e[19]) + (Q_D_e[20] - Q_D_e[20]))) + ((Q_D_e[21] - Q_D_e[21]) + ((Q_D_e[22] - Q_D_e[22]) + (Q_D_e[23] - Q_D_e[23]))))) + ((((Q_D_e[24] - Q_D_e[24]) + ((Q_D_e[25] - Q_D_e[25]) + (Q_D_e[26] - Q_D_e[26]))) + ((Q_D_phi[0] - Q_D_phi[0]) + ((Q_D_phi[1] - Q_D_phi[1]) + (Q_D_phi[2] - Q_D_phi[2])))) + (((Q_D_phi[3] - Q_D_phi[3]) + ((Q_D_phi[4] - Q_D_phi[4]) + (Q_D_phi[5] - Q_D_phi[5]))) + ((Q_D_phi[6] - Q_D_phi[6]) + ((Q_D_phi[7] - Q_D_phi[7]) + (Q_D_phi[8] - Q_D_phi[8])))))));
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const double s_ = (((((Q[0] + Q[1]) + (Q[2] + (Q[3] + Q[4]))) + ((Q[5] + (Q[6] + Q[7])) + (Q[8] + (Q_D_e[0] + Q_D_e[1])))) + (((Q_D_e[2] + Q_D_e[3]) + (Q_D_e[4] + (Q_D_e[5] + Q_D_e[6]))) + ((Q_D_e[7] + (Q_D_e[8] + Q_D_e[9])) + (Q_D_e[10] + (Q_D_e[11] + Q_D_e[12]))))) + ((((Q_D_e[13] + Q_D_e[14]) + (Q_D_e[15] + (Q_D_e[16] + Q_D_e[17]))) + ((Q_D_e[18] + (Q_D_e[19] + Q_D_e[20])) + (Q_D_e[21] + (Q_D_e[22] + Q_D_e[23])))) + (((Q_D_e[24] + (Q_D_e[25] + Q_D_e[26])) + (Q_D_phi[0] + (Q_D_phi[1] + Q_D_phi[2]))) + ((Q_D_phi[3] + (Q_D_phi[4] + Q_D_phi[5])) + (Q_D_phi[6] + (Q_D_phi[7] + Q_D_phi[8]))))));
+        if (!(s_ - s_ == 0.0))
+            finite += ((((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + ((Q[3] - Q[3]) + (Q[4] - Q[4])))) + (((Q[5] - Q[5]) + ((Q[6] - Q[6]) + (Q[7] - Q[7]))) + ((Q[8] - Q[8]) + ((Q_D_e[0] - Q_D_e[0]) + (Q_D_e[1] - Q_D_e[1]))))) + ((((Q_D_e[2] - Q_D_e[2]) + (Q_D_e[3] - Q_D_e[3])) + ((Q_D_e[4] - Q_D_e[4]) + ((Q_D_e[5] - Q_D_e[5]) + (Q_D_e[6] - Q_D_e[6])))) + (((Q_D_e[7] - Q_D_e[7]) + ((Q_D_e[8] - Q_D_e[8]) + (Q_D_e[9] - Q_D_e[9]))) + ((Q_D_e[10] - Q_D_e[10]) + ((Q_D_e[11] - Q_D_e[11]) + (Q_D_e[12] - Q_D_e[12])))))) + (((((Q_D_e[13] - Q_D_e[13]) + (Q_D_e[14] - Q_D_e[14])) + ((Q_D_e[15] - Q_D_e[15]) + ((Q_D_e[16] - Q_D_e[16]) + (Q_D_e[17] - Q_D_e[17])))) + (((Q_D_e[18] - Q_D_e[18]) + ((Q_D_e[19] - Q_D_e[19]) + (Q_D_e[20] - Q_D_e[20]))) + ((Q_D_e[21] - Q_D_e[21]) + ((Q_D_e[22] - Q_D_e[22]) + (Q_D_e[23] - Q_D_e[23]))))) + ((((Q_D_e[24] - Q_D_e[24]) + ((Q_D_e[25] - Q_D_e[25]) + (Q_D_e[26] - Q_D_e[26]))) + ((Q_D_phi[0] - Q_D_phi[0]) + ((Q_D_phi[1] - Q_D_phi[1]) + (Q_D_phi[2] - Q_D_phi[2])))) + (((Q_D_phi[3] - Q_D_phi[3]) + ((Q_D_phi[4] - Q_D_phi[4]) + (Q_D_phi[5] - Q_D_phi[5]))) + ((Q_D_phi[6] - Q_D_phi[6]) + ((Q_D_phi[7] - Q_D_phi[7]) + (Q_D_phi[8] - Q_D_phi[8])))))));
+    }
 #else
     if (status)
-        finite += ((((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + ((Q[3] - Q[3]) + (Q[4] - Q[4])))) + (((Q[5] - Q[5]) + ((Q[6] - Q[6]) + (Q[7] - Q[7]))) + ((Q[8] - Q[8]) + ((Q_D_e[0] - Q_D_e[0]) + (Q_D_e[1] - Q_D_e[1]))))) + ((((Q_D_e[2] - Q_D_e[2]) + (Q_D_e[3] - Q_D_e[3])) + ((Q_D_e[4] - Q_D_e[4]) + ((Q_D_e[5] - Q_D_e[5]) + (Q_D_e[6] - Q_D_e[6])))) + (((Q_D_e[7] - Q_D_e[7]) + ((Q_D_e[8] - Q_D_e[8]) + (Q_D_e[9] - Q_D_e[9]))) + ((Q_D_e[10] - Q_D_e[10]) + ((Q_D_e[11] - Q_D_e[11]) + (Q_D_e[12] - Q_D_e[12])))))) + (((((Q_D_e[13] - Q_D_e[13]) + (Q_D_e[14] - Q_D_e[14])) + ((Q_D_e[15] - Q_D_e[15]) + ((Q_D_e[16] - Q_D_e[16]) + (Q_D_e[17] - Q_D_e[17])))) + (((Q_D_e[18] - Q_D_e[18]) + ((Q_D_e[19] - Q_D_e[19]) + (Q_D_e[20] - Q_D_e[20]))) + ((Q_D_e[21] - Q_D_e[21]) + ((Q_D_e[22] - Q_D_e[22]) + (Q_D_e[23] - Q_D_e[23]))))) + ((((Q_D_e[24] - Q_D_e[24]) + ((Q_D_e[25] - Q_D_e[25]) + (Q_D_e[26] - Q_D_e[26]))) + ((Q_D_phi[0] - Q_D_phi[0]) + ((Q_D_phi[1] - Q_D_phi[1]) + (Q_D_phi[2] - Q_D_phi[2])))) + (((Q_D_phi[3] - Q_D_phi[3]) + ((Q_D_phi[4] - Q_D_phi[4]) + (Q_D_phi[5] - Q_D_phi[5]))) + ((Q_D_phi[6] - Q_D_phi[6]) + ((Q_D_phi[7] - Q_D_phi[7]) + (Q_D_phi[8] - Q_D_phi[8])))))));
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const double s_ = (((((Q[0] + Q[1]) + (Q[2] + (Q[3] + Q[4]))) + ((Q[5] + (Q[6] + Q[7])) + (Q[8] + (Q_D_e[0] + Q_D_e[1])))) + (((Q_D_e[2] + Q_D_e[3]) + (Q_D_e[4] + (Q_D_e[5] + Q_D_e[6]))) + ((Q_D_e[7] + (Q_D_e[8] + Q_D_e[9])) + (Q_D_e[10] + (Q_D_e[11] + Q_D_e[12]))))) + ((((Q_D_e[13] + Q_D_e[14]) + (Q_D_e[15] + (Q_D_e[16] + Q_D_e[17]))) + ((Q_D_e[18] + (Q_D_e[19] + Q_D_e[20])) + (Q_D_e[21] + (Q_D_e[22] + Q_D_e[23])))) + (((Q_D_e[24] + (Q_D_e[25] + Q_D_e[26])) + (Q_D_phi[0] + (Q_D_phi[1] + Q_D_phi[2]))) + ((Q_D_phi[3] + (Q_D_phi[4] + Q_D_phi[5])) + (Q_D_phi[6] + (Q_D_phi[7] + Q_D_phi[8]))))));
+        if (!(s_ - s_ == 0.0))
+            finite += ((((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + ((Q[3] - Q[3]) + (Q[4] - Q[4])))) + (((Q[5] - Q[5]) + ((Q[6] - Q[6]) + (Q[7] - Q[7]))) + ((Q[8] - Q[8]) + ((Q_D_e[0] - Q_D_e[0]) + (Q_D_e[1] - Q_D_e[1]))))) + ((((Q_D_e[2] - Q_D_e[2]) + (Q_D_e[3] - Q_D_e[3])) + ((Q_D_e[4] - Q_D_e[4]) + ((Q_D_e[5] - Q_D_e[5]) + (Q_D_e[6] - Q_D_e[6])))) + (((Q_D_e[7] - Q_D_e[7]) + ((Q_D_e[8] - Q_D_e[8]) + (Q_D_e[9] - Q_D_e[9]))) + ((Q_D_e[10] - Q_D_e[10]) + ((Q_D_e[11] - Q_D_e[11]) + (Q_D_e[12] - Q_D_e[12])))))) + (((((Q_D_e[13] - Q_D_e[13]) + (Q_D_e[14] - Q_D_e[14])) + ((Q_D_e[15] - Q_D_e[15]) + ((Q_D_e[16] - Q_D_e[16]) + (Q_D_e[17] - Q_D_e[17])))) + (((Q_D_e[18] - Q_D_e[18]) + ((Q_D_e[19] - Q_D_e[19]) + (Q_D_e[20] - Q_D_e[20]))) + ((Q_D_e[21] - Q_D_e[21]) + ((Q_D_e[22] - Q_D_e[22]) + (Q_D_e[23] - Q_D_e[23]))))) + ((((Q_D_e[24] - Q_D_e[24]) + ((Q_D_e[25] - Q_D_e[25]) + (Q_D_e[26] - Q_D_e[26]))) + ((Q_D_phi[0] - Q_D_phi[0]) + ((Q_D_phi[1] - Q_D_phi[1]) + (Q_D_phi[2] - Q_D_phi[2])))) + (((Q_D_phi[3] - Q_D_phi[3]) + ((Q_D_phi[4] - Q_D_phi[4]) + (Q_D_phi[5] - Q_D_phi[5]))) + ((Q_D_phi[6] - Q_D_phi[6]) + ((Q_D_phi[7] - Q_D_phi[7]) + (Q_D_phi[8] - Q_D_phi[8])))))));
+    }
 #endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -657,14 +725,23 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_with_jacobians_f3
     int status = 0, singular = 0;
     float finite = 0.0f;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    {   /* the range test of every input component, as one loop (it vectorises) */
-        const float in_[4] = {
-            e[0], e[1], e[2], phi
-        };
-        int j_;
-        for (j_ = 0; j_ < 4; ++j_)
-            RIGIDSYM_C_ODD_F(odd, in_[j_]);
+#if RIGIDSYM_C_VECTOR
+    {   /* the range test of every input component, 4 per vector register */
+        rigidsym_c_vf oddv_ = {0, 0, 0, 0};
+        {
+            const rigidsym_c_vf v_ = {rigidsym_c_bits_f(&e[0]), rigidsym_c_bits_f(&e[1]), rigidsym_c_bits_f(&e[2]), rigidsym_c_bits_f(&phi)};
+            oddv_ |= rigidsym_c_odd_vf(v_);
+        }
+        odd = oddv_[0] | oddv_[1] | oddv_[2] | oddv_[3];
     }
+#else
+    {   /* the range test of every input component, one at a time */
+        RIGIDSYM_C_ODD_F(odd, e[0]);
+        RIGIDSYM_C_ODD_F(odd, e[1]);
+        RIGIDSYM_C_ODD_F(odd, e[2]);
+        RIGIDSYM_C_ODD_F(odd, phi);
+    }
+#endif
     if (odd >> 31) {
         const float *args[2];
         const int sizes[2] = {3, 1};
@@ -759,13 +836,26 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_with_jacobians_f3
     }
     /* no division or root, and every output bounded by 2^66 for inputs of
      * ordinary magnitude (|x| < 2^31): only an extreme or non-finite input can make an
-     * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN
-     * otherwise; the guards of rigidsym_c_impl.h keep the compiler from folding it) */
+     * output non-finite, so only then are the outputs tested */
 #if defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    finite += ((((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + ((Q[3] - Q[3]) + (Q[4] - Q[4])))) + (((Q[5] - Q[5]) + ((Q[6] - Q[6]) + (Q[7] - Q[7]))) + ((Q[8] - Q[8]) + ((Q_D_e[0] - Q_D_e[0]) + (Q_D_e[1] - Q_D_e[1]))))) + ((((Q_D_e[2] - Q_D_e[2]) + (Q_D_e[3] - Q_D_e[3])) + ((Q_D_e[4] - Q_D_e[4]) + ((Q_D_e[5] - Q_D_e[5]) + (Q_D_e[6] - Q_D_e[6])))) + (((Q_D_e[7] - Q_D_e[7]) + ((Q_D_e[8] - Q_D_e[8]) + (Q_D_e[9] - Q_D_e[9]))) + ((Q_D_e[10] - Q_D_e[10]) + ((Q_D_e[11] - Q_D_e[11]) + (Q_D_e[12] - Q_D_e[12])))))) + (((((Q_D_e[13] - Q_D_e[13]) + (Q_D_e[14] - Q_D_e[14])) + ((Q_D_e[15] - Q_D_e[15]) + ((Q_D_e[16] - Q_D_e[16]) + (Q_D_e[17] - Q_D_e[17])))) + (((Q_D_e[18] - Q_D_e[18]) + ((Q_D_e[19] - Q_D_e[19]) + (Q_D_e[20] - Q_D_e[20]))) + ((Q_D_e[21] - Q_D_e[21]) + ((Q_D_e[22] - Q_D_e[22]) + (Q_D_e[23] - Q_D_e[23]))))) + ((((Q_D_e[24] - Q_D_e[24]) + ((Q_D_e[25] - Q_D_e[25]) + (Q_D_e[26] - Q_D_e[26]))) + ((Q_D_phi[0] - Q_D_phi[0]) + ((Q_D_phi[1] - Q_D_phi[1]) + (Q_D_phi[2] - Q_D_phi[2])))) + (((Q_D_phi[3] - Q_D_phi[3]) + ((Q_D_phi[4] - Q_D_phi[4]) + (Q_D_phi[5] - Q_D_phi[5]))) + ((Q_D_phi[6] - Q_D_phi[6]) + ((Q_D_phi[7] - Q_D_phi[7]) + (Q_D_phi[8] - Q_D_phi[8])))))));
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const float s_ = (((((Q[0] + Q[1]) + (Q[2] + (Q[3] + Q[4]))) + ((Q[5] + (Q[6] + Q[7])) + (Q[8] + (Q_D_e[0] + Q_D_e[1])))) + (((Q_D_e[2] + Q_D_e[3]) + (Q_D_e[4] + (Q_D_e[5] + Q_D_e[6]))) + ((Q_D_e[7] + (Q_D_e[8] + Q_D_e[9])) + (Q_D_e[10] + (Q_D_e[11] + Q_D_e[12]))))) + ((((Q_D_e[13] + Q_D_e[14]) + (Q_D_e[15] + (Q_D_e[16] + Q_D_e[17]))) + ((Q_D_e[18] + (Q_D_e[19] + Q_D_e[20])) + (Q_D_e[21] + (Q_D_e[22] + Q_D_e[23])))) + (((Q_D_e[24] + (Q_D_e[25] + Q_D_e[26])) + (Q_D_phi[0] + (Q_D_phi[1] + Q_D_phi[2]))) + ((Q_D_phi[3] + (Q_D_phi[4] + Q_D_phi[5])) + (Q_D_phi[6] + (Q_D_phi[7] + Q_D_phi[8]))))));
+        if (!(s_ - s_ == 0.0f))
+            finite += ((((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + ((Q[3] - Q[3]) + (Q[4] - Q[4])))) + (((Q[5] - Q[5]) + ((Q[6] - Q[6]) + (Q[7] - Q[7]))) + ((Q[8] - Q[8]) + ((Q_D_e[0] - Q_D_e[0]) + (Q_D_e[1] - Q_D_e[1]))))) + ((((Q_D_e[2] - Q_D_e[2]) + (Q_D_e[3] - Q_D_e[3])) + ((Q_D_e[4] - Q_D_e[4]) + ((Q_D_e[5] - Q_D_e[5]) + (Q_D_e[6] - Q_D_e[6])))) + (((Q_D_e[7] - Q_D_e[7]) + ((Q_D_e[8] - Q_D_e[8]) + (Q_D_e[9] - Q_D_e[9]))) + ((Q_D_e[10] - Q_D_e[10]) + ((Q_D_e[11] - Q_D_e[11]) + (Q_D_e[12] - Q_D_e[12])))))) + (((((Q_D_e[13] - Q_D_e[13]) + (Q_D_e[14] - Q_D_e[14])) + ((Q_D_e[15] - Q_D_e[15]) + ((Q_D_e[16] - Q_D_e[16]) + (Q_D_e[17] - Q_D_e[17])))) + (((Q_D_e[18] - Q_D_e[18]) + ((Q_D_e[19] - Q_D_e[19]) + (Q_D_e[20] - Q_D_e[20]))) + ((Q_D_e[21] - Q_D_e[21]) + ((Q_D_e[22] - Q_D_e[22]) + (Q_D_e[23] - Q_D_e[23]))))) + ((((Q_D_e[24] - Q_D_e[24]) + ((Q_D_e[25] - Q_D_e[25]) + (Q_D_e[26] - Q_D_e[26]))) + ((Q_D_phi[0] - Q_D_phi[0]) + ((Q_D_phi[1] - Q_D_phi[1]) + (Q_D_phi[2] - Q_D_phi[2])))) + (((Q_D_phi[3] - Q_D_phi[3]) + ((Q_D_phi[4] - Q_D_phi[4]) + (Q_D_phi[5] - Q_D_phi[5]))) + ((Q_D_phi[6] - Q_D_phi[6]) + ((Q_D_phi[7] - Q_D_phi[7]) + (Q_D_phi[8] - Q_D_phi[8])))))));
+    }
 #else
     if (status)
-        finite += ((((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + ((Q[3] - Q[3]) + (Q[4] - Q[4])))) + (((Q[5] - Q[5]) + ((Q[6] - Q[6]) + (Q[7] - Q[7]))) + ((Q[8] - Q[8]) + ((Q_D_e[0] - Q_D_e[0]) + (Q_D_e[1] - Q_D_e[1]))))) + ((((Q_D_e[2] - Q_D_e[2]) + (Q_D_e[3] - Q_D_e[3])) + ((Q_D_e[4] - Q_D_e[4]) + ((Q_D_e[5] - Q_D_e[5]) + (Q_D_e[6] - Q_D_e[6])))) + (((Q_D_e[7] - Q_D_e[7]) + ((Q_D_e[8] - Q_D_e[8]) + (Q_D_e[9] - Q_D_e[9]))) + ((Q_D_e[10] - Q_D_e[10]) + ((Q_D_e[11] - Q_D_e[11]) + (Q_D_e[12] - Q_D_e[12])))))) + (((((Q_D_e[13] - Q_D_e[13]) + (Q_D_e[14] - Q_D_e[14])) + ((Q_D_e[15] - Q_D_e[15]) + ((Q_D_e[16] - Q_D_e[16]) + (Q_D_e[17] - Q_D_e[17])))) + (((Q_D_e[18] - Q_D_e[18]) + ((Q_D_e[19] - Q_D_e[19]) + (Q_D_e[20] - Q_D_e[20]))) + ((Q_D_e[21] - Q_D_e[21]) + ((Q_D_e[22] - Q_D_e[22]) + (Q_D_e[23] - Q_D_e[23]))))) + ((((Q_D_e[24] - Q_D_e[24]) + ((Q_D_e[25] - Q_D_e[25]) + (Q_D_e[26] - Q_D_e[26]))) + ((Q_D_phi[0] - Q_D_phi[0]) + ((Q_D_phi[1] - Q_D_phi[1]) + (Q_D_phi[2] - Q_D_phi[2])))) + (((Q_D_phi[3] - Q_D_phi[3]) + ((Q_D_phi[4] - Q_D_phi[4]) + (Q_D_phi[5] - Q_D_phi[5]))) + ((Q_D_phi[6] - Q_D_phi[6]) + ((Q_D_phi[7] - Q_D_phi[7]) + (Q_D_phi[8] - Q_D_phi[8])))))));
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const float s_ = (((((Q[0] + Q[1]) + (Q[2] + (Q[3] + Q[4]))) + ((Q[5] + (Q[6] + Q[7])) + (Q[8] + (Q_D_e[0] + Q_D_e[1])))) + (((Q_D_e[2] + Q_D_e[3]) + (Q_D_e[4] + (Q_D_e[5] + Q_D_e[6]))) + ((Q_D_e[7] + (Q_D_e[8] + Q_D_e[9])) + (Q_D_e[10] + (Q_D_e[11] + Q_D_e[12]))))) + ((((Q_D_e[13] + Q_D_e[14]) + (Q_D_e[15] + (Q_D_e[16] + Q_D_e[17]))) + ((Q_D_e[18] + (Q_D_e[19] + Q_D_e[20])) + (Q_D_e[21] + (Q_D_e[22] + Q_D_e[23])))) + (((Q_D_e[24] + (Q_D_e[25] + Q_D_e[26])) + (Q_D_phi[0] + (Q_D_phi[1] + Q_D_phi[2]))) + ((Q_D_phi[3] + (Q_D_phi[4] + Q_D_phi[5])) + (Q_D_phi[6] + (Q_D_phi[7] + Q_D_phi[8]))))));
+        if (!(s_ - s_ == 0.0f))
+            finite += ((((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + ((Q[3] - Q[3]) + (Q[4] - Q[4])))) + (((Q[5] - Q[5]) + ((Q[6] - Q[6]) + (Q[7] - Q[7]))) + ((Q[8] - Q[8]) + ((Q_D_e[0] - Q_D_e[0]) + (Q_D_e[1] - Q_D_e[1]))))) + ((((Q_D_e[2] - Q_D_e[2]) + (Q_D_e[3] - Q_D_e[3])) + ((Q_D_e[4] - Q_D_e[4]) + ((Q_D_e[5] - Q_D_e[5]) + (Q_D_e[6] - Q_D_e[6])))) + (((Q_D_e[7] - Q_D_e[7]) + ((Q_D_e[8] - Q_D_e[8]) + (Q_D_e[9] - Q_D_e[9]))) + ((Q_D_e[10] - Q_D_e[10]) + ((Q_D_e[11] - Q_D_e[11]) + (Q_D_e[12] - Q_D_e[12])))))) + (((((Q_D_e[13] - Q_D_e[13]) + (Q_D_e[14] - Q_D_e[14])) + ((Q_D_e[15] - Q_D_e[15]) + ((Q_D_e[16] - Q_D_e[16]) + (Q_D_e[17] - Q_D_e[17])))) + (((Q_D_e[18] - Q_D_e[18]) + ((Q_D_e[19] - Q_D_e[19]) + (Q_D_e[20] - Q_D_e[20]))) + ((Q_D_e[21] - Q_D_e[21]) + ((Q_D_e[22] - Q_D_e[22]) + (Q_D_e[23] - Q_D_e[23]))))) + ((((Q_D_e[24] - Q_D_e[24]) + ((Q_D_e[25] - Q_D_e[25]) + (Q_D_e[26] - Q_D_e[26]))) + ((Q_D_phi[0] - Q_D_phi[0]) + ((Q_D_phi[1] - Q_D_phi[1]) + (Q_D_phi[2] - Q_D_phi[2])))) + (((Q_D_phi[3] - Q_D_phi[3]) + ((Q_D_phi[4] - Q_D_phi[4]) + (Q_D_phi[5] - Q_D_phi[5]))) + ((Q_D_phi[6] - Q_D_phi[6]) + ((Q_D_phi[7] - Q_D_phi[7]) + (Q_D_phi[8] - Q_D_phi[8])))))));
+    }
 #endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;

@@ -121,14 +121,36 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer(
     int status = 0, singular = 0;
     double finite = 0.0;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    {   /* the range test of every input component, as one loop (it vectorises) */
-        const double in_[12] = {
-            t_A[0], t_A[1], t_A[2], t_A[3], t_A[4], t_A[5], a[0], a[1], a[2], p[0], p[1], p[2]
-        };
-        int j_;
-        for (j_ = 0; j_ < 12; ++j_)
-            RIGIDSYM_C_ODD_D(odd, in_[j_]);
+#if RIGIDSYM_C_VECTOR
+    {   /* the range test of every input component, 2 per vector register */
+        rigidsym_c_vd oddv_ = {0, 0};
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(t_A));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(t_A + 2));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(t_A + 4));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(a));
+        {
+            const rigidsym_c_vd v_ = {rigidsym_c_bits_d(&a[2]), rigidsym_c_bits_d(&p[0])};
+            oddv_ |= rigidsym_c_odd_vd(v_);
+        }
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(p + 1));
+        odd = oddv_[0] | oddv_[1];
     }
+#else
+    {   /* the range test of every input component, one at a time */
+        RIGIDSYM_C_ODD_D(odd, t_A[0]);
+        RIGIDSYM_C_ODD_D(odd, t_A[1]);
+        RIGIDSYM_C_ODD_D(odd, t_A[2]);
+        RIGIDSYM_C_ODD_D(odd, t_A[3]);
+        RIGIDSYM_C_ODD_D(odd, t_A[4]);
+        RIGIDSYM_C_ODD_D(odd, t_A[5]);
+        RIGIDSYM_C_ODD_D(odd, a[0]);
+        RIGIDSYM_C_ODD_D(odd, a[1]);
+        RIGIDSYM_C_ODD_D(odd, a[2]);
+        RIGIDSYM_C_ODD_D(odd, p[0]);
+        RIGIDSYM_C_ODD_D(odd, p[1]);
+        RIGIDSYM_C_ODD_D(odd, p[2]);
+    }
+#endif
     if (odd >> 63) {
         const double *args[3];
         const int sizes[3] = {6, 3, 3};
@@ -180,13 +202,26 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer(
     }
     /* no division or root, and every output bounded by 2^205 for inputs of
      * ordinary magnitude (|x| < 2^101): only an extreme or non-finite input can make an
-     * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN
-     * otherwise; the guards of rigidsym_c_impl.h keep the compiler from folding it) */
+     * output non-finite, so only then are the outputs tested */
 #if defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    finite += (((t_P[0] - t_P[0]) + ((t_P[1] - t_P[1]) + (t_P[2] - t_P[2]))) + ((t_P[3] - t_P[3]) + ((t_P[4] - t_P[4]) + (t_P[5] - t_P[5]))));
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const double s_ = ((t_P[0] + (t_P[1] + t_P[2])) + (t_P[3] + (t_P[4] + t_P[5])));
+        if (!(s_ - s_ == 0.0))
+            finite += (((t_P[0] - t_P[0]) + ((t_P[1] - t_P[1]) + (t_P[2] - t_P[2]))) + ((t_P[3] - t_P[3]) + ((t_P[4] - t_P[4]) + (t_P[5] - t_P[5]))));
+    }
 #else
     if (status)
-        finite += (((t_P[0] - t_P[0]) + ((t_P[1] - t_P[1]) + (t_P[2] - t_P[2]))) + ((t_P[3] - t_P[3]) + ((t_P[4] - t_P[4]) + (t_P[5] - t_P[5]))));
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const double s_ = ((t_P[0] + (t_P[1] + t_P[2])) + (t_P[3] + (t_P[4] + t_P[5])));
+        if (!(s_ - s_ == 0.0))
+            finite += (((t_P[0] - t_P[0]) + ((t_P[1] - t_P[1]) + (t_P[2] - t_P[2]))) + ((t_P[3] - t_P[3]) + ((t_P[4] - t_P[4]) + (t_P[5] - t_P[5]))));
+    }
 #endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -286,14 +321,36 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_f32(
     int status = 0, singular = 0;
     float finite = 0.0f;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    {   /* the range test of every input component, as one loop (it vectorises) */
-        const float in_[12] = {
-            t_A[0], t_A[1], t_A[2], t_A[3], t_A[4], t_A[5], a[0], a[1], a[2], p[0], p[1], p[2]
-        };
-        int j_;
-        for (j_ = 0; j_ < 12; ++j_)
-            RIGIDSYM_C_ODD_F(odd, in_[j_]);
+#if RIGIDSYM_C_VECTOR
+    {   /* the range test of every input component, 4 per vector register */
+        rigidsym_c_vf oddv_ = {0, 0, 0, 0};
+        oddv_ |= rigidsym_c_odd_vf(rigidsym_c_load_vf(t_A));
+        {
+            const rigidsym_c_vf v_ = {rigidsym_c_bits_f(&t_A[4]), rigidsym_c_bits_f(&t_A[5]), rigidsym_c_bits_f(&a[0]), rigidsym_c_bits_f(&a[1])};
+            oddv_ |= rigidsym_c_odd_vf(v_);
+        }
+        {
+            const rigidsym_c_vf v_ = {rigidsym_c_bits_f(&a[2]), rigidsym_c_bits_f(&p[0]), rigidsym_c_bits_f(&p[1]), rigidsym_c_bits_f(&p[2])};
+            oddv_ |= rigidsym_c_odd_vf(v_);
+        }
+        odd = oddv_[0] | oddv_[1] | oddv_[2] | oddv_[3];
     }
+#else
+    {   /* the range test of every input component, one at a time */
+        RIGIDSYM_C_ODD_F(odd, t_A[0]);
+        RIGIDSYM_C_ODD_F(odd, t_A[1]);
+        RIGIDSYM_C_ODD_F(odd, t_A[2]);
+        RIGIDSYM_C_ODD_F(odd, t_A[3]);
+        RIGIDSYM_C_ODD_F(odd, t_A[4]);
+        RIGIDSYM_C_ODD_F(odd, t_A[5]);
+        RIGIDSYM_C_ODD_F(odd, a[0]);
+        RIGIDSYM_C_ODD_F(odd, a[1]);
+        RIGIDSYM_C_ODD_F(odd, a[2]);
+        RIGIDSYM_C_ODD_F(odd, p[0]);
+        RIGIDSYM_C_ODD_F(odd, p[1]);
+        RIGIDSYM_C_ODD_F(odd, p[2]);
+    }
+#endif
     if (odd >> 31) {
         const float *args[3];
         const int sizes[3] = {6, 3, 3};
@@ -341,13 +398,26 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_f32(
     }
     /* no division or root, and every output bounded by 2^65 for inputs of
      * ordinary magnitude (|x| < 2^31): only an extreme or non-finite input can make an
-     * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN
-     * otherwise; the guards of rigidsym_c_impl.h keep the compiler from folding it) */
+     * output non-finite, so only then are the outputs tested */
 #if defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    finite += (((t_P[0] - t_P[0]) + ((t_P[1] - t_P[1]) + (t_P[2] - t_P[2]))) + ((t_P[3] - t_P[3]) + ((t_P[4] - t_P[4]) + (t_P[5] - t_P[5]))));
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const float s_ = ((t_P[0] + (t_P[1] + t_P[2])) + (t_P[3] + (t_P[4] + t_P[5])));
+        if (!(s_ - s_ == 0.0f))
+            finite += (((t_P[0] - t_P[0]) + ((t_P[1] - t_P[1]) + (t_P[2] - t_P[2]))) + ((t_P[3] - t_P[3]) + ((t_P[4] - t_P[4]) + (t_P[5] - t_P[5]))));
+    }
 #else
     if (status)
-        finite += (((t_P[0] - t_P[0]) + ((t_P[1] - t_P[1]) + (t_P[2] - t_P[2]))) + ((t_P[3] - t_P[3]) + ((t_P[4] - t_P[4]) + (t_P[5] - t_P[5]))));
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const float s_ = ((t_P[0] + (t_P[1] + t_P[2])) + (t_P[3] + (t_P[4] + t_P[5])));
+        if (!(s_ - s_ == 0.0f))
+            finite += (((t_P[0] - t_P[0]) + ((t_P[1] - t_P[1]) + (t_P[2] - t_P[2]))) + ((t_P[3] - t_P[3]) + ((t_P[4] - t_P[4]) + (t_P[5] - t_P[5]))));
+    }
 #endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -668,14 +738,36 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_with_jacobians(
     int status = 0, singular = 0;
     double finite = 0.0;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    {   /* the range test of every input component, as one loop (it vectorises) */
-        const double in_[12] = {
-            t_A[0], t_A[1], t_A[2], t_A[3], t_A[4], t_A[5], a[0], a[1], a[2], p[0], p[1], p[2]
-        };
-        int j_;
-        for (j_ = 0; j_ < 12; ++j_)
-            RIGIDSYM_C_ODD_D(odd, in_[j_]);
+#if RIGIDSYM_C_VECTOR
+    {   /* the range test of every input component, 2 per vector register */
+        rigidsym_c_vd oddv_ = {0, 0};
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(t_A));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(t_A + 2));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(t_A + 4));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(a));
+        {
+            const rigidsym_c_vd v_ = {rigidsym_c_bits_d(&a[2]), rigidsym_c_bits_d(&p[0])};
+            oddv_ |= rigidsym_c_odd_vd(v_);
+        }
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(p + 1));
+        odd = oddv_[0] | oddv_[1];
     }
+#else
+    {   /* the range test of every input component, one at a time */
+        RIGIDSYM_C_ODD_D(odd, t_A[0]);
+        RIGIDSYM_C_ODD_D(odd, t_A[1]);
+        RIGIDSYM_C_ODD_D(odd, t_A[2]);
+        RIGIDSYM_C_ODD_D(odd, t_A[3]);
+        RIGIDSYM_C_ODD_D(odd, t_A[4]);
+        RIGIDSYM_C_ODD_D(odd, t_A[5]);
+        RIGIDSYM_C_ODD_D(odd, a[0]);
+        RIGIDSYM_C_ODD_D(odd, a[1]);
+        RIGIDSYM_C_ODD_D(odd, a[2]);
+        RIGIDSYM_C_ODD_D(odd, p[0]);
+        RIGIDSYM_C_ODD_D(odd, p[1]);
+        RIGIDSYM_C_ODD_D(odd, p[2]);
+    }
+#endif
     if (odd >> 63) {
         const double *args[3];
         const int sizes[3] = {6, 3, 3};
@@ -805,13 +897,26 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_with_jacobians(
     }
     /* no division or root, and every output bounded by 2^205 for inputs of
      * ordinary magnitude (|x| < 2^101): only an extreme or non-finite input can make an
-     * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN
-     * otherwise; the guards of rigidsym_c_impl.h keep the compiler from folding it) */
+     * output non-finite, so only then are the outputs tested */
 #if defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    finite += (((((((t_P[0] - t_P[0]) + (t_P[1] - t_P[1])) + ((t_P[2] - t_P[2]) + (t_P[3] - t_P[3]))) + (((t_P[4] - t_P[4]) + (t_P[5] - t_P[5])) + ((t_P_D_t_A[0] - t_P_D_t_A[0]) + ((t_P_D_t_A[1] - t_P_D_t_A[1]) + (t_P_D_t_A[2] - t_P_D_t_A[2]))))) + ((((t_P_D_t_A[3] - t_P_D_t_A[3]) + (t_P_D_t_A[4] - t_P_D_t_A[4])) + ((t_P_D_t_A[5] - t_P_D_t_A[5]) + ((t_P_D_t_A[6] - t_P_D_t_A[6]) + (t_P_D_t_A[7] - t_P_D_t_A[7])))) + (((t_P_D_t_A[8] - t_P_D_t_A[8]) + (t_P_D_t_A[9] - t_P_D_t_A[9])) + ((t_P_D_t_A[10] - t_P_D_t_A[10]) + ((t_P_D_t_A[11] - t_P_D_t_A[11]) + (t_P_D_t_A[12] - t_P_D_t_A[12])))))) + (((((t_P_D_t_A[13] - t_P_D_t_A[13]) + (t_P_D_t_A[14] - t_P_D_t_A[14])) + ((t_P_D_t_A[15] - t_P_D_t_A[15]) + ((t_P_D_t_A[16] - t_P_D_t_A[16]) + (t_P_D_t_A[17] - t_P_D_t_A[17])))) + (((t_P_D_t_A[18] - t_P_D_t_A[18]) + (t_P_D_t_A[19] - t_P_D_t_A[19])) + ((t_P_D_t_A[20] - t_P_D_t_A[20]) + ((t_P_D_t_A[21] - t_P_D_t_A[21]) + (t_P_D_t_A[22] - t_P_D_t_A[22]))))) + ((((t_P_D_t_A[23] - t_P_D_t_A[23]) + (t_P_D_t_A[24] - t_P_D_t_A[24])) + ((t_P_D_t_A[25] - t_P_D_t_A[25]) + ((t_P_D_t_A[26] - t_P_D_t_A[26]) + (t_P_D_t_A[27] - t_P_D_t_A[27])))) + (((t_P_D_t_A[28] - t_P_D_t_A[28]) + (t_P_D_t_A[29] - t_P_D_t_A[29])) + ((t_P_D_t_A[30] - t_P_D_t_A[30]) + ((t_P_D_t_A[31] - t_P_D_t_A[31]) + (t_P_D_t_A[32] - t_P_D_t_A[32]))))))) + ((((((t_P_D_t_A[33] - t_P_D_t_A[33]) + (t_P_D_t_A[34] - t_P_D_t_A[34])) + ((t_P_D_t_A[35] - t_P_D_t_A[35]) + (t_P_D_a[0] - t_P_D_a[0]))) + (((t_P_D_a[1] - t_P_D_a[1]) + (t_P_D_a[2] - t_P_D_a[2])) + ((t_P_D_a[3] - t_P_D_a[3]) + ((t_P_D_a[4] - t_P_D_a[4]) + (t_P_D_a[5] - t_P_D_a[5]))))) + ((((t_P_D_a[6] - t_P_D_a[6]) + (t_P_D_a[7] - t_P_D_a[7])) + ((t_P_D_a[8] - t_P_D_a[8]) + ((t_P_D_a[9] - t_P_D_a[9]) + (t_P_D_a[10] - t_P_D_a[10])))) + (((t_P_D_a[11] - t_P_D_a[11]) + (t_P_D_a[12] - t_P_D_a[12])) + ((t_P_D_a[13] - t_P_D_a[13]) + ((t_P_D_a[14] - t_P_D_a[14]) + (t_P_D_a[15] - t_P_D_a[15])))))) + (((((t_P_D_a[16] - t_P_D_a[16]) + (t_P_D_a[17] - t_P_D_a[17])) + ((t_P_D_p[0] - t_P_D_p[0]) + ((t_P_D_p[1] - t_P_D_p[1]) + (t_P_D_p[2] - t_P_D_p[2])))) + (((t_P_D_p[3] - t_P_D_p[3]) + (t_P_D_p[4] - t_P_D_p[4])) + ((t_P_D_p[5] - t_P_D_p[5]) + ((t_P_D_p[6] - t_P_D_p[6]) + (t_P_D_p[7] - t_P_D_p[7]))))) + ((((t_P_D_p[8] - t_P_D_p[8]) + (t_P_D_p[9] - t_P_D_p[9])) + ((t_P_D_p[10] - t_P_D_p[10]) + ((t_P_D_p[11] - t_P_D_p[11]) + (t_P_D_p[12] - t_P_D_p[12])))) + (((t_P_D_p[13] - t_P_D_p[13]) + (t_P_D_p[14] - t_P_D_p[14])) + ((t_P_D_p[15] - t_P_D_p[15]) + ((t_P_D_p[16] - t_P_D_p[16]) + (t_P_D_p[17] - t_P_D_p[17]))))))));
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const double s_ = ((((((t_P[0] + t_P[1]) + (t_P[2] + t_P[3])) + ((t_P[4] + t_P[5]) + (t_P_D_t_A[0] + (t_P_D_t_A[1] + t_P_D_t_A[2])))) + (((t_P_D_t_A[3] + t_P_D_t_A[4]) + (t_P_D_t_A[5] + (t_P_D_t_A[6] + t_P_D_t_A[7]))) + ((t_P_D_t_A[8] + t_P_D_t_A[9]) + (t_P_D_t_A[10] + (t_P_D_t_A[11] + t_P_D_t_A[12]))))) + ((((t_P_D_t_A[13] + t_P_D_t_A[14]) + (t_P_D_t_A[15] + (t_P_D_t_A[16] + t_P_D_t_A[17]))) + ((t_P_D_t_A[18] + t_P_D_t_A[19]) + (t_P_D_t_A[20] + (t_P_D_t_A[21] + t_P_D_t_A[22])))) + (((t_P_D_t_A[23] + t_P_D_t_A[24]) + (t_P_D_t_A[25] + (t_P_D_t_A[26] + t_P_D_t_A[27]))) + ((t_P_D_t_A[28] + t_P_D_t_A[29]) + (t_P_D_t_A[30] + (t_P_D_t_A[31] + t_P_D_t_A[32])))))) + (((((t_P_D_t_A[33] + t_P_D_t_A[34]) + (t_P_D_t_A[35] + t_P_D_a[0])) + ((t_P_D_a[1] + t_P_D_a[2]) + (t_P_D_a[3] + (t_P_D_a[4] + t_P_D_a[5])))) + (((t_P_D_a[6] + t_P_D_a[7]) + (t_P_D_a[8] + (t_P_D_a[9] + t_P_D_a[10]))) + ((t_P_D_a[11] + t_P_D_a[12]) + (t_P_D_a[13] + (t_P_D_a[14] + t_P_D_a[15]))))) + ((((t_P_D_a[16] + t_P_D_a[17]) + (t_P_D_p[0] + (t_P_D_p[1] + t_P_D_p[2]))) + ((t_P_D_p[3] + t_P_D_p[4]) + (t_P_D_p[5] + (t_P_D_p[6] + t_P_D_p[7])))) + (((t_P_D_p[8] + t_P_D_p[9]) + (t_P_D_p[10] + (t_P_D_p[11] + t_P_D_p[12]))) + ((t_P_D_p[13] + t_P_D_p[14]) + (t_P_D_p[15] + (t_P_D_p[16] + t_P_D_p[17])))))));
+        if (!(s_ - s_ == 0.0))
+            finite += (((((((t_P[0] - t_P[0]) + (t_P[1] - t_P[1])) + ((t_P[2] - t_P[2]) + (t_P[3] - t_P[3]))) + (((t_P[4] - t_P[4]) + (t_P[5] - t_P[5])) + ((t_P_D_t_A[0] - t_P_D_t_A[0]) + ((t_P_D_t_A[1] - t_P_D_t_A[1]) + (t_P_D_t_A[2] - t_P_D_t_A[2]))))) + ((((t_P_D_t_A[3] - t_P_D_t_A[3]) + (t_P_D_t_A[4] - t_P_D_t_A[4])) + ((t_P_D_t_A[5] - t_P_D_t_A[5]) + ((t_P_D_t_A[6] - t_P_D_t_A[6]) + (t_P_D_t_A[7] - t_P_D_t_A[7])))) + (((t_P_D_t_A[8] - t_P_D_t_A[8]) + (t_P_D_t_A[9] - t_P_D_t_A[9])) + ((t_P_D_t_A[10] - t_P_D_t_A[10]) + ((t_P_D_t_A[11] - t_P_D_t_A[11]) + (t_P_D_t_A[12] - t_P_D_t_A[12])))))) + (((((t_P_D_t_A[13] - t_P_D_t_A[13]) + (t_P_D_t_A[14] - t_P_D_t_A[14])) + ((t_P_D_t_A[15] - t_P_D_t_A[15]) + ((t_P_D_t_A[16] - t_P_D_t_A[16]) + (t_P_D_t_A[17] - t_P_D_t_A[17])))) + (((t_P_D_t_A[18] - t_P_D_t_A[18]) + (t_P_D_t_A[19] - t_P_D_t_A[19])) + ((t_P_D_t_A[20] - t_P_D_t_A[20]) + ((t_P_D_t_A[21] - t_P_D_t_A[21]) + (t_P_D_t_A[22] - t_P_D_t_A[22]))))) + ((((t_P_D_t_A[23] - t_P_D_t_A[23]) + (t_P_D_t_A[24] - t_P_D_t_A[24])) + ((t_P_D_t_A[25] - t_P_D_t_A[25]) + ((t_P_D_t_A[26] - t_P_D_t_A[26]) + (t_P_D_t_A[27] - t_P_D_t_A[27])))) + (((t_P_D_t_A[28] - t_P_D_t_A[28]) + (t_P_D_t_A[29] - t_P_D_t_A[29])) + ((t_P_D_t_A[30] - t_P_D_t_A[30]) + ((t_P_D_t_A[31] - t_P_D_t_A[31]) + (t_P_D_t_A[32] - t_P_D_t_A[32]))))))) + ((((((t_P_D_t_A[33] - t_P_D_t_A[33]) + (t_P_D_t_A[34] - t_P_D_t_A[34])) + ((t_P_D_t_A[35] - t_P_D_t_A[35]) + (t_P_D_a[0] - t_P_D_a[0]))) + (((t_P_D_a[1] - t_P_D_a[1]) + (t_P_D_a[2] - t_P_D_a[2])) + ((t_P_D_a[3] - t_P_D_a[3]) + ((t_P_D_a[4] - t_P_D_a[4]) + (t_P_D_a[5] - t_P_D_a[5]))))) + ((((t_P_D_a[6] - t_P_D_a[6]) + (t_P_D_a[7] - t_P_D_a[7])) + ((t_P_D_a[8] - t_P_D_a[8]) + ((t_P_D_a[9] - t_P_D_a[9]) + (t_P_D_a[10] - t_P_D_a[10])))) + (((t_P_D_a[11] - t_P_D_a[11]) + (t_P_D_a[12] - t_P_D_a[12])) + ((t_P_D_a[13] - t_P_D_a[13]) + ((t_P_D_a[14] - t_P_D_a[14]) + (t_P_D_a[15] - t_P_D_a[15])))))) + (((((t_P_D_a[16] - t_P_D_a[16]) + (t_P_D_a[17] - t_P_D_a[17])) + ((t_P_D_p[0] - t_P_D_p[0]) + ((t_P_D_p[1] - t_P_D_p[1]) + (t_P_D_p[2] - t_P_D_p[2])))) + (((t_P_D_p[3] - t_P_D_p[3]) + (t_P_D_p[4] - t_P_D_p[4])) + ((t_P_D_p[5] - t_P_D_p[5]) + ((t_P_D_p[6] - t_P_D_p[6]) + (t_P_D_p[7] - t_P_D_p[7]))))) + ((((t_P_D_p[8] - t_P_D_p[8]) + (t_P_D_p[9] - t_P_D_p[9])) + ((t_P_D_p[10] - t_P_D_p[10]) + ((t_P_D_p[11] - t_P_D_p[11]) + (t_P_D_p[12] - t_P_D_p[12])))) + (((t_P_D_p[13] - t_P_D_p[13]) + (t_P_D_p[14] - t_P_D_p[14])) + ((t_P_D_p[15] - t_P_D_p[15]) + ((t_P_D_p[16] - t_P_D_p[16]) + (t_P_D_p[17] - t_P_D_p[17]))))))));
+    }
 #else
     if (status)
-        finite += (((((((t_P[0] - t_P[0]) + (t_P[1] - t_P[1])) + ((t_P[2] - t_P[2]) + (t_P[3] - t_P[3]))) + (((t_P[4] - t_P[4]) + (t_P[5] - t_P[5])) + ((t_P_D_t_A[0] - t_P_D_t_A[0]) + ((t_P_D_t_A[1] - t_P_D_t_A[1]) + (t_P_D_t_A[2] - t_P_D_t_A[2]))))) + ((((t_P_D_t_A[3] - t_P_D_t_A[3]) + (t_P_D_t_A[4] - t_P_D_t_A[4])) + ((t_P_D_t_A[5] - t_P_D_t_A[5]) + ((t_P_D_t_A[6] - t_P_D_t_A[6]) + (t_P_D_t_A[7] - t_P_D_t_A[7])))) + (((t_P_D_t_A[8] - t_P_D_t_A[8]) + (t_P_D_t_A[9] - t_P_D_t_A[9])) + ((t_P_D_t_A[10] - t_P_D_t_A[10]) + ((t_P_D_t_A[11] - t_P_D_t_A[11]) + (t_P_D_t_A[12] - t_P_D_t_A[12])))))) + (((((t_P_D_t_A[13] - t_P_D_t_A[13]) + (t_P_D_t_A[14] - t_P_D_t_A[14])) + ((t_P_D_t_A[15] - t_P_D_t_A[15]) + ((t_P_D_t_A[16] - t_P_D_t_A[16]) + (t_P_D_t_A[17] - t_P_D_t_A[17])))) + (((t_P_D_t_A[18] - t_P_D_t_A[18]) + (t_P_D_t_A[19] - t_P_D_t_A[19])) + ((t_P_D_t_A[20] - t_P_D_t_A[20]) + ((t_P_D_t_A[21] - t_P_D_t_A[21]) + (t_P_D_t_A[22] - t_P_D_t_A[22]))))) + ((((t_P_D_t_A[23] - t_P_D_t_A[23]) + (t_P_D_t_A[24] - t_P_D_t_A[24])) + ((t_P_D_t_A[25] - t_P_D_t_A[25]) + ((t_P_D_t_A[26] - t_P_D_t_A[26]) + (t_P_D_t_A[27] - t_P_D_t_A[27])))) + (((t_P_D_t_A[28] - t_P_D_t_A[28]) + (t_P_D_t_A[29] - t_P_D_t_A[29])) + ((t_P_D_t_A[30] - t_P_D_t_A[30]) + ((t_P_D_t_A[31] - t_P_D_t_A[31]) + (t_P_D_t_A[32] - t_P_D_t_A[32]))))))) + ((((((t_P_D_t_A[33] - t_P_D_t_A[33]) + (t_P_D_t_A[34] - t_P_D_t_A[34])) + ((t_P_D_t_A[35] - t_P_D_t_A[35]) + (t_P_D_a[0] - t_P_D_a[0]))) + (((t_P_D_a[1] - t_P_D_a[1]) + (t_P_D_a[2] - t_P_D_a[2])) + ((t_P_D_a[3] - t_P_D_a[3]) + ((t_P_D_a[4] - t_P_D_a[4]) + (t_P_D_a[5] - t_P_D_a[5]))))) + ((((t_P_D_a[6] - t_P_D_a[6]) + (t_P_D_a[7] - t_P_D_a[7])) + ((t_P_D_a[8] - t_P_D_a[8]) + ((t_P_D_a[9] - t_P_D_a[9]) + (t_P_D_a[10] - t_P_D_a[10])))) + (((t_P_D_a[11] - t_P_D_a[11]) + (t_P_D_a[12] - t_P_D_a[12])) + ((t_P_D_a[13] - t_P_D_a[13]) + ((t_P_D_a[14] - t_P_D_a[14]) + (t_P_D_a[15] - t_P_D_a[15])))))) + (((((t_P_D_a[16] - t_P_D_a[16]) + (t_P_D_a[17] - t_P_D_a[17])) + ((t_P_D_p[0] - t_P_D_p[0]) + ((t_P_D_p[1] - t_P_D_p[1]) + (t_P_D_p[2] - t_P_D_p[2])))) + (((t_P_D_p[3] - t_P_D_p[3]) + (t_P_D_p[4] - t_P_D_p[4])) + ((t_P_D_p[5] - t_P_D_p[5]) + ((t_P_D_p[6] - t_P_D_p[6]) + (t_P_D_p[7] - t_P_D_p[7]))))) + ((((t_P_D_p[8] - t_P_D_p[8]) + (t_P_D_p[9] - t_P_D_p[9])) + ((t_P_D_p[10] - t_P_D_p[10]) + ((t_P_D_p[11] - t_P_D_p[11]) + (t_P_D_p[12] - t_P_D_p[12])))) + (((t_P_D_p[13] - t_P_D_p[13]) + (t_P_D_p[14] - t_P_D_p[14])) + ((t_P_D_p[15] - t_P_D_p[15]) + ((t_P_D_p[16] - t_P_D_p[16]) + (t_P_D_p[17] - t_P_D_p[17]))))))));
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const double s_ = ((((((t_P[0] + t_P[1]) + (t_P[2] + t_P[3])) + ((t_P[4] + t_P[5]) + (t_P_D_t_A[0] + (t_P_D_t_A[1] + t_P_D_t_A[2])))) + (((t_P_D_t_A[3] + t_P_D_t_A[4]) + (t_P_D_t_A[5] + (t_P_D_t_A[6] + t_P_D_t_A[7]))) + ((t_P_D_t_A[8] + t_P_D_t_A[9]) + (t_P_D_t_A[10] + (t_P_D_t_A[11] + t_P_D_t_A[12]))))) + ((((t_P_D_t_A[13] + t_P_D_t_A[14]) + (t_P_D_t_A[15] + (t_P_D_t_A[16] + t_P_D_t_A[17]))) + ((t_P_D_t_A[18] + t_P_D_t_A[19]) + (t_P_D_t_A[20] + (t_P_D_t_A[21] + t_P_D_t_A[22])))) + (((t_P_D_t_A[23] + t_P_D_t_A[24]) + (t_P_D_t_A[25] + (t_P_D_t_A[26] + t_P_D_t_A[27]))) + ((t_P_D_t_A[28] + t_P_D_t_A[29]) + (t_P_D_t_A[30] + (t_P_D_t_A[31] + t_P_D_t_A[32])))))) + (((((t_P_D_t_A[33] + t_P_D_t_A[34]) + (t_P_D_t_A[35] + t_P_D_a[0])) + ((t_P_D_a[1] + t_P_D_a[2]) + (t_P_D_a[3] + (t_P_D_a[4] + t_P_D_a[5])))) + (((t_P_D_a[6] + t_P_D_a[7]) + (t_P_D_a[8] + (t_P_D_a[9] + t_P_D_a[10]))) + ((t_P_D_a[11] + t_P_D_a[12]) + (t_P_D_a[13] + (t_P_D_a[14] + t_P_D_a[15]))))) + ((((t_P_D_a[16] + t_P_D_a[17]) + (t_P_D_p[0] + (t_P_D_p[1] + t_P_D_p[2]))) + ((t_P_D_p[3] + t_P_D_p[4]) + (t_P_D_p[5] + (t_P_D_p[6] + t_P_D_p[7])))) + (((t_P_D_p[8] + t_P_D_p[9]) + (t_P_D_p[10] + (t_P_D_p[11] + t_P_D_p[12]))) + ((t_P_D_p[13] + t_P_D_p[14]) + (t_P_D_p[15] + (t_P_D_p[16] + t_P_D_p[17])))))));
+        if (!(s_ - s_ == 0.0))
+            finite += (((((((t_P[0] - t_P[0]) + (t_P[1] - t_P[1])) + ((t_P[2] - t_P[2]) + (t_P[3] - t_P[3]))) + (((t_P[4] - t_P[4]) + (t_P[5] - t_P[5])) + ((t_P_D_t_A[0] - t_P_D_t_A[0]) + ((t_P_D_t_A[1] - t_P_D_t_A[1]) + (t_P_D_t_A[2] - t_P_D_t_A[2]))))) + ((((t_P_D_t_A[3] - t_P_D_t_A[3]) + (t_P_D_t_A[4] - t_P_D_t_A[4])) + ((t_P_D_t_A[5] - t_P_D_t_A[5]) + ((t_P_D_t_A[6] - t_P_D_t_A[6]) + (t_P_D_t_A[7] - t_P_D_t_A[7])))) + (((t_P_D_t_A[8] - t_P_D_t_A[8]) + (t_P_D_t_A[9] - t_P_D_t_A[9])) + ((t_P_D_t_A[10] - t_P_D_t_A[10]) + ((t_P_D_t_A[11] - t_P_D_t_A[11]) + (t_P_D_t_A[12] - t_P_D_t_A[12])))))) + (((((t_P_D_t_A[13] - t_P_D_t_A[13]) + (t_P_D_t_A[14] - t_P_D_t_A[14])) + ((t_P_D_t_A[15] - t_P_D_t_A[15]) + ((t_P_D_t_A[16] - t_P_D_t_A[16]) + (t_P_D_t_A[17] - t_P_D_t_A[17])))) + (((t_P_D_t_A[18] - t_P_D_t_A[18]) + (t_P_D_t_A[19] - t_P_D_t_A[19])) + ((t_P_D_t_A[20] - t_P_D_t_A[20]) + ((t_P_D_t_A[21] - t_P_D_t_A[21]) + (t_P_D_t_A[22] - t_P_D_t_A[22]))))) + ((((t_P_D_t_A[23] - t_P_D_t_A[23]) + (t_P_D_t_A[24] - t_P_D_t_A[24])) + ((t_P_D_t_A[25] - t_P_D_t_A[25]) + ((t_P_D_t_A[26] - t_P_D_t_A[26]) + (t_P_D_t_A[27] - t_P_D_t_A[27])))) + (((t_P_D_t_A[28] - t_P_D_t_A[28]) + (t_P_D_t_A[29] - t_P_D_t_A[29])) + ((t_P_D_t_A[30] - t_P_D_t_A[30]) + ((t_P_D_t_A[31] - t_P_D_t_A[31]) + (t_P_D_t_A[32] - t_P_D_t_A[32]))))))) + ((((((t_P_D_t_A[33] - t_P_D_t_A[33]) + (t_P_D_t_A[34] - t_P_D_t_A[34])) + ((t_P_D_t_A[35] - t_P_D_t_A[35]) + (t_P_D_a[0] - t_P_D_a[0]))) + (((t_P_D_a[1] - t_P_D_a[1]) + (t_P_D_a[2] - t_P_D_a[2])) + ((t_P_D_a[3] - t_P_D_a[3]) + ((t_P_D_a[4] - t_P_D_a[4]) + (t_P_D_a[5] - t_P_D_a[5]))))) + ((((t_P_D_a[6] - t_P_D_a[6]) + (t_P_D_a[7] - t_P_D_a[7])) + ((t_P_D_a[8] - t_P_D_a[8]) + ((t_P_D_a[9] - t_P_D_a[9]) + (t_P_D_a[10] - t_P_D_a[10])))) + (((t_P_D_a[11] - t_P_D_a[11]) + (t_P_D_a[12] - t_P_D_a[12])) + ((t_P_D_a[13] - t_P_D_a[13]) + ((t_P_D_a[14] - t_P_D_a[14]) + (t_P_D_a[15] - t_P_D_a[15])))))) + (((((t_P_D_a[16] - t_P_D_a[16]) + (t_P_D_a[17] - t_P_D_a[17])) + ((t_P_D_p[0] - t_P_D_p[0]) + ((t_P_D_p[1] - t_P_D_p[1]) + (t_P_D_p[2] - t_P_D_p[2])))) + (((t_P_D_p[3] - t_P_D_p[3]) + (t_P_D_p[4] - t_P_D_p[4])) + ((t_P_D_p[5] - t_P_D_p[5]) + ((t_P_D_p[6] - t_P_D_p[6]) + (t_P_D_p[7] - t_P_D_p[7]))))) + ((((t_P_D_p[8] - t_P_D_p[8]) + (t_P_D_p[9] - t_P_D_p[9])) + ((t_P_D_p[10] - t_P_D_p[10]) + ((t_P_D_p[11] - t_P_D_p[11]) + (t_P_D_p[12] - t_P_D_p[12])))) + (((t_P_D_p[13] - t_P_D_p[13]) + (t_P_D_p[14] - t_P_D_p[14])) + ((t_P_D_p[15] - t_P_D_p[15]) + ((t_P_D_p[16] - t_P_D_p[16]) + (t_P_D_p[17] - t_P_D_p[17]))))))));
+    }
 #endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -1004,14 +1109,36 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_with_jacobians_f32(
     int status = 0, singular = 0;
     float finite = 0.0f;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    {   /* the range test of every input component, as one loop (it vectorises) */
-        const float in_[12] = {
-            t_A[0], t_A[1], t_A[2], t_A[3], t_A[4], t_A[5], a[0], a[1], a[2], p[0], p[1], p[2]
-        };
-        int j_;
-        for (j_ = 0; j_ < 12; ++j_)
-            RIGIDSYM_C_ODD_F(odd, in_[j_]);
+#if RIGIDSYM_C_VECTOR
+    {   /* the range test of every input component, 4 per vector register */
+        rigidsym_c_vf oddv_ = {0, 0, 0, 0};
+        oddv_ |= rigidsym_c_odd_vf(rigidsym_c_load_vf(t_A));
+        {
+            const rigidsym_c_vf v_ = {rigidsym_c_bits_f(&t_A[4]), rigidsym_c_bits_f(&t_A[5]), rigidsym_c_bits_f(&a[0]), rigidsym_c_bits_f(&a[1])};
+            oddv_ |= rigidsym_c_odd_vf(v_);
+        }
+        {
+            const rigidsym_c_vf v_ = {rigidsym_c_bits_f(&a[2]), rigidsym_c_bits_f(&p[0]), rigidsym_c_bits_f(&p[1]), rigidsym_c_bits_f(&p[2])};
+            oddv_ |= rigidsym_c_odd_vf(v_);
+        }
+        odd = oddv_[0] | oddv_[1] | oddv_[2] | oddv_[3];
     }
+#else
+    {   /* the range test of every input component, one at a time */
+        RIGIDSYM_C_ODD_F(odd, t_A[0]);
+        RIGIDSYM_C_ODD_F(odd, t_A[1]);
+        RIGIDSYM_C_ODD_F(odd, t_A[2]);
+        RIGIDSYM_C_ODD_F(odd, t_A[3]);
+        RIGIDSYM_C_ODD_F(odd, t_A[4]);
+        RIGIDSYM_C_ODD_F(odd, t_A[5]);
+        RIGIDSYM_C_ODD_F(odd, a[0]);
+        RIGIDSYM_C_ODD_F(odd, a[1]);
+        RIGIDSYM_C_ODD_F(odd, a[2]);
+        RIGIDSYM_C_ODD_F(odd, p[0]);
+        RIGIDSYM_C_ODD_F(odd, p[1]);
+        RIGIDSYM_C_ODD_F(odd, p[2]);
+    }
+#endif
     if (odd >> 31) {
         const float *args[3];
         const int sizes[3] = {6, 3, 3};
@@ -1137,13 +1264,26 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_with_jacobians_f32(
     }
     /* no division or root, and every output bounded by 2^65 for inputs of
      * ordinary magnitude (|x| < 2^31): only an extreme or non-finite input can make an
-     * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN
-     * otherwise; the guards of rigidsym_c_impl.h keep the compiler from folding it) */
+     * output non-finite, so only then are the outputs tested */
 #if defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    finite += (((((((t_P[0] - t_P[0]) + (t_P[1] - t_P[1])) + ((t_P[2] - t_P[2]) + (t_P[3] - t_P[3]))) + (((t_P[4] - t_P[4]) + (t_P[5] - t_P[5])) + ((t_P_D_t_A[0] - t_P_D_t_A[0]) + ((t_P_D_t_A[1] - t_P_D_t_A[1]) + (t_P_D_t_A[2] - t_P_D_t_A[2]))))) + ((((t_P_D_t_A[3] - t_P_D_t_A[3]) + (t_P_D_t_A[4] - t_P_D_t_A[4])) + ((t_P_D_t_A[5] - t_P_D_t_A[5]) + ((t_P_D_t_A[6] - t_P_D_t_A[6]) + (t_P_D_t_A[7] - t_P_D_t_A[7])))) + (((t_P_D_t_A[8] - t_P_D_t_A[8]) + (t_P_D_t_A[9] - t_P_D_t_A[9])) + ((t_P_D_t_A[10] - t_P_D_t_A[10]) + ((t_P_D_t_A[11] - t_P_D_t_A[11]) + (t_P_D_t_A[12] - t_P_D_t_A[12])))))) + (((((t_P_D_t_A[13] - t_P_D_t_A[13]) + (t_P_D_t_A[14] - t_P_D_t_A[14])) + ((t_P_D_t_A[15] - t_P_D_t_A[15]) + ((t_P_D_t_A[16] - t_P_D_t_A[16]) + (t_P_D_t_A[17] - t_P_D_t_A[17])))) + (((t_P_D_t_A[18] - t_P_D_t_A[18]) + (t_P_D_t_A[19] - t_P_D_t_A[19])) + ((t_P_D_t_A[20] - t_P_D_t_A[20]) + ((t_P_D_t_A[21] - t_P_D_t_A[21]) + (t_P_D_t_A[22] - t_P_D_t_A[22]))))) + ((((t_P_D_t_A[23] - t_P_D_t_A[23]) + (t_P_D_t_A[24] - t_P_D_t_A[24])) + ((t_P_D_t_A[25] - t_P_D_t_A[25]) + ((t_P_D_t_A[26] - t_P_D_t_A[26]) + (t_P_D_t_A[27] - t_P_D_t_A[27])))) + (((t_P_D_t_A[28] - t_P_D_t_A[28]) + (t_P_D_t_A[29] - t_P_D_t_A[29])) + ((t_P_D_t_A[30] - t_P_D_t_A[30]) + ((t_P_D_t_A[31] - t_P_D_t_A[31]) + (t_P_D_t_A[32] - t_P_D_t_A[32]))))))) + ((((((t_P_D_t_A[33] - t_P_D_t_A[33]) + (t_P_D_t_A[34] - t_P_D_t_A[34])) + ((t_P_D_t_A[35] - t_P_D_t_A[35]) + (t_P_D_a[0] - t_P_D_a[0]))) + (((t_P_D_a[1] - t_P_D_a[1]) + (t_P_D_a[2] - t_P_D_a[2])) + ((t_P_D_a[3] - t_P_D_a[3]) + ((t_P_D_a[4] - t_P_D_a[4]) + (t_P_D_a[5] - t_P_D_a[5]))))) + ((((t_P_D_a[6] - t_P_D_a[6]) + (t_P_D_a[7] - t_P_D_a[7])) + ((t_P_D_a[8] - t_P_D_a[8]) + ((t_P_D_a[9] - t_P_D_a[9]) + (t_P_D_a[10] - t_P_D_a[10])))) + (((t_P_D_a[11] - t_P_D_a[11]) + (t_P_D_a[12] - t_P_D_a[12])) + ((t_P_D_a[13] - t_P_D_a[13]) + ((t_P_D_a[14] - t_P_D_a[14]) + (t_P_D_a[15] - t_P_D_a[15])))))) + (((((t_P_D_a[16] - t_P_D_a[16]) + (t_P_D_a[17] - t_P_D_a[17])) + ((t_P_D_p[0] - t_P_D_p[0]) + ((t_P_D_p[1] - t_P_D_p[1]) + (t_P_D_p[2] - t_P_D_p[2])))) + (((t_P_D_p[3] - t_P_D_p[3]) + (t_P_D_p[4] - t_P_D_p[4])) + ((t_P_D_p[5] - t_P_D_p[5]) + ((t_P_D_p[6] - t_P_D_p[6]) + (t_P_D_p[7] - t_P_D_p[7]))))) + ((((t_P_D_p[8] - t_P_D_p[8]) + (t_P_D_p[9] - t_P_D_p[9])) + ((t_P_D_p[10] - t_P_D_p[10]) + ((t_P_D_p[11] - t_P_D_p[11]) + (t_P_D_p[12] - t_P_D_p[12])))) + (((t_P_D_p[13] - t_P_D_p[13]) + (t_P_D_p[14] - t_P_D_p[14])) + ((t_P_D_p[15] - t_P_D_p[15]) + ((t_P_D_p[16] - t_P_D_p[16]) + (t_P_D_p[17] - t_P_D_p[17]))))))));
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const float s_ = ((((((t_P[0] + t_P[1]) + (t_P[2] + t_P[3])) + ((t_P[4] + t_P[5]) + (t_P_D_t_A[0] + (t_P_D_t_A[1] + t_P_D_t_A[2])))) + (((t_P_D_t_A[3] + t_P_D_t_A[4]) + (t_P_D_t_A[5] + (t_P_D_t_A[6] + t_P_D_t_A[7]))) + ((t_P_D_t_A[8] + t_P_D_t_A[9]) + (t_P_D_t_A[10] + (t_P_D_t_A[11] + t_P_D_t_A[12]))))) + ((((t_P_D_t_A[13] + t_P_D_t_A[14]) + (t_P_D_t_A[15] + (t_P_D_t_A[16] + t_P_D_t_A[17]))) + ((t_P_D_t_A[18] + t_P_D_t_A[19]) + (t_P_D_t_A[20] + (t_P_D_t_A[21] + t_P_D_t_A[22])))) + (((t_P_D_t_A[23] + t_P_D_t_A[24]) + (t_P_D_t_A[25] + (t_P_D_t_A[26] + t_P_D_t_A[27]))) + ((t_P_D_t_A[28] + t_P_D_t_A[29]) + (t_P_D_t_A[30] + (t_P_D_t_A[31] + t_P_D_t_A[32])))))) + (((((t_P_D_t_A[33] + t_P_D_t_A[34]) + (t_P_D_t_A[35] + t_P_D_a[0])) + ((t_P_D_a[1] + t_P_D_a[2]) + (t_P_D_a[3] + (t_P_D_a[4] + t_P_D_a[5])))) + (((t_P_D_a[6] + t_P_D_a[7]) + (t_P_D_a[8] + (t_P_D_a[9] + t_P_D_a[10]))) + ((t_P_D_a[11] + t_P_D_a[12]) + (t_P_D_a[13] + (t_P_D_a[14] + t_P_D_a[15]))))) + ((((t_P_D_a[16] + t_P_D_a[17]) + (t_P_D_p[0] + (t_P_D_p[1] + t_P_D_p[2]))) + ((t_P_D_p[3] + t_P_D_p[4]) + (t_P_D_p[5] + (t_P_D_p[6] + t_P_D_p[7])))) + (((t_P_D_p[8] + t_P_D_p[9]) + (t_P_D_p[10] + (t_P_D_p[11] + t_P_D_p[12]))) + ((t_P_D_p[13] + t_P_D_p[14]) + (t_P_D_p[15] + (t_P_D_p[16] + t_P_D_p[17])))))));
+        if (!(s_ - s_ == 0.0f))
+            finite += (((((((t_P[0] - t_P[0]) + (t_P[1] - t_P[1])) + ((t_P[2] - t_P[2]) + (t_P[3] - t_P[3]))) + (((t_P[4] - t_P[4]) + (t_P[5] - t_P[5])) + ((t_P_D_t_A[0] - t_P_D_t_A[0]) + ((t_P_D_t_A[1] - t_P_D_t_A[1]) + (t_P_D_t_A[2] - t_P_D_t_A[2]))))) + ((((t_P_D_t_A[3] - t_P_D_t_A[3]) + (t_P_D_t_A[4] - t_P_D_t_A[4])) + ((t_P_D_t_A[5] - t_P_D_t_A[5]) + ((t_P_D_t_A[6] - t_P_D_t_A[6]) + (t_P_D_t_A[7] - t_P_D_t_A[7])))) + (((t_P_D_t_A[8] - t_P_D_t_A[8]) + (t_P_D_t_A[9] - t_P_D_t_A[9])) + ((t_P_D_t_A[10] - t_P_D_t_A[10]) + ((t_P_D_t_A[11] - t_P_D_t_A[11]) + (t_P_D_t_A[12] - t_P_D_t_A[12])))))) + (((((t_P_D_t_A[13] - t_P_D_t_A[13]) + (t_P_D_t_A[14] - t_P_D_t_A[14])) + ((t_P_D_t_A[15] - t_P_D_t_A[15]) + ((t_P_D_t_A[16] - t_P_D_t_A[16]) + (t_P_D_t_A[17] - t_P_D_t_A[17])))) + (((t_P_D_t_A[18] - t_P_D_t_A[18]) + (t_P_D_t_A[19] - t_P_D_t_A[19])) + ((t_P_D_t_A[20] - t_P_D_t_A[20]) + ((t_P_D_t_A[21] - t_P_D_t_A[21]) + (t_P_D_t_A[22] - t_P_D_t_A[22]))))) + ((((t_P_D_t_A[23] - t_P_D_t_A[23]) + (t_P_D_t_A[24] - t_P_D_t_A[24])) + ((t_P_D_t_A[25] - t_P_D_t_A[25]) + ((t_P_D_t_A[26] - t_P_D_t_A[26]) + (t_P_D_t_A[27] - t_P_D_t_A[27])))) + (((t_P_D_t_A[28] - t_P_D_t_A[28]) + (t_P_D_t_A[29] - t_P_D_t_A[29])) + ((t_P_D_t_A[30] - t_P_D_t_A[30]) + ((t_P_D_t_A[31] - t_P_D_t_A[31]) + (t_P_D_t_A[32] - t_P_D_t_A[32]))))))) + ((((((t_P_D_t_A[33] - t_P_D_t_A[33]) + (t_P_D_t_A[34] - t_P_D_t_A[34])) + ((t_P_D_t_A[35] - t_P_D_t_A[35]) + (t_P_D_a[0] - t_P_D_a[0]))) + (((t_P_D_a[1] - t_P_D_a[1]) + (t_P_D_a[2] - t_P_D_a[2])) + ((t_P_D_a[3] - t_P_D_a[3]) + ((t_P_D_a[4] - t_P_D_a[4]) + (t_P_D_a[5] - t_P_D_a[5]))))) + ((((t_P_D_a[6] - t_P_D_a[6]) + (t_P_D_a[7] - t_P_D_a[7])) + ((t_P_D_a[8] - t_P_D_a[8]) + ((t_P_D_a[9] - t_P_D_a[9]) + (t_P_D_a[10] - t_P_D_a[10])))) + (((t_P_D_a[11] - t_P_D_a[11]) + (t_P_D_a[12] - t_P_D_a[12])) + ((t_P_D_a[13] - t_P_D_a[13]) + ((t_P_D_a[14] - t_P_D_a[14]) + (t_P_D_a[15] - t_P_D_a[15])))))) + (((((t_P_D_a[16] - t_P_D_a[16]) + (t_P_D_a[17] - t_P_D_a[17])) + ((t_P_D_p[0] - t_P_D_p[0]) + ((t_P_D_p[1] - t_P_D_p[1]) + (t_P_D_p[2] - t_P_D_p[2])))) + (((t_P_D_p[3] - t_P_D_p[3]) + (t_P_D_p[4] - t_P_D_p[4])) + ((t_P_D_p[5] - t_P_D_p[5]) + ((t_P_D_p[6] - t_P_D_p[6]) + (t_P_D_p[7] - t_P_D_p[7]))))) + ((((t_P_D_p[8] - t_P_D_p[8]) + (t_P_D_p[9] - t_P_D_p[9])) + ((t_P_D_p[10] - t_P_D_p[10]) + ((t_P_D_p[11] - t_P_D_p[11]) + (t_P_D_p[12] - t_P_D_p[12])))) + (((t_P_D_p[13] - t_P_D_p[13]) + (t_P_D_p[14] - t_P_D_p[14])) + ((t_P_D_p[15] - t_P_D_p[15]) + ((t_P_D_p[16] - t_P_D_p[16]) + (t_P_D_p[17] - t_P_D_p[17]))))))));
+    }
 #else
     if (status)
-        finite += (((((((t_P[0] - t_P[0]) + (t_P[1] - t_P[1])) + ((t_P[2] - t_P[2]) + (t_P[3] - t_P[3]))) + (((t_P[4] - t_P[4]) + (t_P[5] - t_P[5])) + ((t_P_D_t_A[0] - t_P_D_t_A[0]) + ((t_P_D_t_A[1] - t_P_D_t_A[1]) + (t_P_D_t_A[2] - t_P_D_t_A[2]))))) + ((((t_P_D_t_A[3] - t_P_D_t_A[3]) + (t_P_D_t_A[4] - t_P_D_t_A[4])) + ((t_P_D_t_A[5] - t_P_D_t_A[5]) + ((t_P_D_t_A[6] - t_P_D_t_A[6]) + (t_P_D_t_A[7] - t_P_D_t_A[7])))) + (((t_P_D_t_A[8] - t_P_D_t_A[8]) + (t_P_D_t_A[9] - t_P_D_t_A[9])) + ((t_P_D_t_A[10] - t_P_D_t_A[10]) + ((t_P_D_t_A[11] - t_P_D_t_A[11]) + (t_P_D_t_A[12] - t_P_D_t_A[12])))))) + (((((t_P_D_t_A[13] - t_P_D_t_A[13]) + (t_P_D_t_A[14] - t_P_D_t_A[14])) + ((t_P_D_t_A[15] - t_P_D_t_A[15]) + ((t_P_D_t_A[16] - t_P_D_t_A[16]) + (t_P_D_t_A[17] - t_P_D_t_A[17])))) + (((t_P_D_t_A[18] - t_P_D_t_A[18]) + (t_P_D_t_A[19] - t_P_D_t_A[19])) + ((t_P_D_t_A[20] - t_P_D_t_A[20]) + ((t_P_D_t_A[21] - t_P_D_t_A[21]) + (t_P_D_t_A[22] - t_P_D_t_A[22]))))) + ((((t_P_D_t_A[23] - t_P_D_t_A[23]) + (t_P_D_t_A[24] - t_P_D_t_A[24])) + ((t_P_D_t_A[25] - t_P_D_t_A[25]) + ((t_P_D_t_A[26] - t_P_D_t_A[26]) + (t_P_D_t_A[27] - t_P_D_t_A[27])))) + (((t_P_D_t_A[28] - t_P_D_t_A[28]) + (t_P_D_t_A[29] - t_P_D_t_A[29])) + ((t_P_D_t_A[30] - t_P_D_t_A[30]) + ((t_P_D_t_A[31] - t_P_D_t_A[31]) + (t_P_D_t_A[32] - t_P_D_t_A[32]))))))) + ((((((t_P_D_t_A[33] - t_P_D_t_A[33]) + (t_P_D_t_A[34] - t_P_D_t_A[34])) + ((t_P_D_t_A[35] - t_P_D_t_A[35]) + (t_P_D_a[0] - t_P_D_a[0]))) + (((t_P_D_a[1] - t_P_D_a[1]) + (t_P_D_a[2] - t_P_D_a[2])) + ((t_P_D_a[3] - t_P_D_a[3]) + ((t_P_D_a[4] - t_P_D_a[4]) + (t_P_D_a[5] - t_P_D_a[5]))))) + ((((t_P_D_a[6] - t_P_D_a[6]) + (t_P_D_a[7] - t_P_D_a[7])) + ((t_P_D_a[8] - t_P_D_a[8]) + ((t_P_D_a[9] - t_P_D_a[9]) + (t_P_D_a[10] - t_P_D_a[10])))) + (((t_P_D_a[11] - t_P_D_a[11]) + (t_P_D_a[12] - t_P_D_a[12])) + ((t_P_D_a[13] - t_P_D_a[13]) + ((t_P_D_a[14] - t_P_D_a[14]) + (t_P_D_a[15] - t_P_D_a[15])))))) + (((((t_P_D_a[16] - t_P_D_a[16]) + (t_P_D_a[17] - t_P_D_a[17])) + ((t_P_D_p[0] - t_P_D_p[0]) + ((t_P_D_p[1] - t_P_D_p[1]) + (t_P_D_p[2] - t_P_D_p[2])))) + (((t_P_D_p[3] - t_P_D_p[3]) + (t_P_D_p[4] - t_P_D_p[4])) + ((t_P_D_p[5] - t_P_D_p[5]) + ((t_P_D_p[6] - t_P_D_p[6]) + (t_P_D_p[7] - t_P_D_p[7]))))) + ((((t_P_D_p[8] - t_P_D_p[8]) + (t_P_D_p[9] - t_P_D_p[9])) + ((t_P_D_p[10] - t_P_D_p[10]) + ((t_P_D_p[11] - t_P_D_p[11]) + (t_P_D_p[12] - t_P_D_p[12])))) + (((t_P_D_p[13] - t_P_D_p[13]) + (t_P_D_p[14] - t_P_D_p[14])) + ((t_P_D_p[15] - t_P_D_p[15]) + ((t_P_D_p[16] - t_P_D_p[16]) + (t_P_D_p[17] - t_P_D_p[17]))))))));
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const float s_ = ((((((t_P[0] + t_P[1]) + (t_P[2] + t_P[3])) + ((t_P[4] + t_P[5]) + (t_P_D_t_A[0] + (t_P_D_t_A[1] + t_P_D_t_A[2])))) + (((t_P_D_t_A[3] + t_P_D_t_A[4]) + (t_P_D_t_A[5] + (t_P_D_t_A[6] + t_P_D_t_A[7]))) + ((t_P_D_t_A[8] + t_P_D_t_A[9]) + (t_P_D_t_A[10] + (t_P_D_t_A[11] + t_P_D_t_A[12]))))) + ((((t_P_D_t_A[13] + t_P_D_t_A[14]) + (t_P_D_t_A[15] + (t_P_D_t_A[16] + t_P_D_t_A[17]))) + ((t_P_D_t_A[18] + t_P_D_t_A[19]) + (t_P_D_t_A[20] + (t_P_D_t_A[21] + t_P_D_t_A[22])))) + (((t_P_D_t_A[23] + t_P_D_t_A[24]) + (t_P_D_t_A[25] + (t_P_D_t_A[26] + t_P_D_t_A[27]))) + ((t_P_D_t_A[28] + t_P_D_t_A[29]) + (t_P_D_t_A[30] + (t_P_D_t_A[31] + t_P_D_t_A[32])))))) + (((((t_P_D_t_A[33] + t_P_D_t_A[34]) + (t_P_D_t_A[35] + t_P_D_a[0])) + ((t_P_D_a[1] + t_P_D_a[2]) + (t_P_D_a[3] + (t_P_D_a[4] + t_P_D_a[5])))) + (((t_P_D_a[6] + t_P_D_a[7]) + (t_P_D_a[8] + (t_P_D_a[9] + t_P_D_a[10]))) + ((t_P_D_a[11] + t_P_D_a[12]) + (t_P_D_a[13] + (t_P_D_a[14] + t_P_D_a[15]))))) + ((((t_P_D_a[16] + t_P_D_a[17]) + (t_P_D_p[0] + (t_P_D_p[1] + t_P_D_p[2]))) + ((t_P_D_p[3] + t_P_D_p[4]) + (t_P_D_p[5] + (t_P_D_p[6] + t_P_D_p[7])))) + (((t_P_D_p[8] + t_P_D_p[9]) + (t_P_D_p[10] + (t_P_D_p[11] + t_P_D_p[12]))) + ((t_P_D_p[13] + t_P_D_p[14]) + (t_P_D_p[15] + (t_P_D_p[16] + t_P_D_p[17])))))));
+        if (!(s_ - s_ == 0.0f))
+            finite += (((((((t_P[0] - t_P[0]) + (t_P[1] - t_P[1])) + ((t_P[2] - t_P[2]) + (t_P[3] - t_P[3]))) + (((t_P[4] - t_P[4]) + (t_P[5] - t_P[5])) + ((t_P_D_t_A[0] - t_P_D_t_A[0]) + ((t_P_D_t_A[1] - t_P_D_t_A[1]) + (t_P_D_t_A[2] - t_P_D_t_A[2]))))) + ((((t_P_D_t_A[3] - t_P_D_t_A[3]) + (t_P_D_t_A[4] - t_P_D_t_A[4])) + ((t_P_D_t_A[5] - t_P_D_t_A[5]) + ((t_P_D_t_A[6] - t_P_D_t_A[6]) + (t_P_D_t_A[7] - t_P_D_t_A[7])))) + (((t_P_D_t_A[8] - t_P_D_t_A[8]) + (t_P_D_t_A[9] - t_P_D_t_A[9])) + ((t_P_D_t_A[10] - t_P_D_t_A[10]) + ((t_P_D_t_A[11] - t_P_D_t_A[11]) + (t_P_D_t_A[12] - t_P_D_t_A[12])))))) + (((((t_P_D_t_A[13] - t_P_D_t_A[13]) + (t_P_D_t_A[14] - t_P_D_t_A[14])) + ((t_P_D_t_A[15] - t_P_D_t_A[15]) + ((t_P_D_t_A[16] - t_P_D_t_A[16]) + (t_P_D_t_A[17] - t_P_D_t_A[17])))) + (((t_P_D_t_A[18] - t_P_D_t_A[18]) + (t_P_D_t_A[19] - t_P_D_t_A[19])) + ((t_P_D_t_A[20] - t_P_D_t_A[20]) + ((t_P_D_t_A[21] - t_P_D_t_A[21]) + (t_P_D_t_A[22] - t_P_D_t_A[22]))))) + ((((t_P_D_t_A[23] - t_P_D_t_A[23]) + (t_P_D_t_A[24] - t_P_D_t_A[24])) + ((t_P_D_t_A[25] - t_P_D_t_A[25]) + ((t_P_D_t_A[26] - t_P_D_t_A[26]) + (t_P_D_t_A[27] - t_P_D_t_A[27])))) + (((t_P_D_t_A[28] - t_P_D_t_A[28]) + (t_P_D_t_A[29] - t_P_D_t_A[29])) + ((t_P_D_t_A[30] - t_P_D_t_A[30]) + ((t_P_D_t_A[31] - t_P_D_t_A[31]) + (t_P_D_t_A[32] - t_P_D_t_A[32]))))))) + ((((((t_P_D_t_A[33] - t_P_D_t_A[33]) + (t_P_D_t_A[34] - t_P_D_t_A[34])) + ((t_P_D_t_A[35] - t_P_D_t_A[35]) + (t_P_D_a[0] - t_P_D_a[0]))) + (((t_P_D_a[1] - t_P_D_a[1]) + (t_P_D_a[2] - t_P_D_a[2])) + ((t_P_D_a[3] - t_P_D_a[3]) + ((t_P_D_a[4] - t_P_D_a[4]) + (t_P_D_a[5] - t_P_D_a[5]))))) + ((((t_P_D_a[6] - t_P_D_a[6]) + (t_P_D_a[7] - t_P_D_a[7])) + ((t_P_D_a[8] - t_P_D_a[8]) + ((t_P_D_a[9] - t_P_D_a[9]) + (t_P_D_a[10] - t_P_D_a[10])))) + (((t_P_D_a[11] - t_P_D_a[11]) + (t_P_D_a[12] - t_P_D_a[12])) + ((t_P_D_a[13] - t_P_D_a[13]) + ((t_P_D_a[14] - t_P_D_a[14]) + (t_P_D_a[15] - t_P_D_a[15])))))) + (((((t_P_D_a[16] - t_P_D_a[16]) + (t_P_D_a[17] - t_P_D_a[17])) + ((t_P_D_p[0] - t_P_D_p[0]) + ((t_P_D_p[1] - t_P_D_p[1]) + (t_P_D_p[2] - t_P_D_p[2])))) + (((t_P_D_p[3] - t_P_D_p[3]) + (t_P_D_p[4] - t_P_D_p[4])) + ((t_P_D_p[5] - t_P_D_p[5]) + ((t_P_D_p[6] - t_P_D_p[6]) + (t_P_D_p[7] - t_P_D_p[7]))))) + ((((t_P_D_p[8] - t_P_D_p[8]) + (t_P_D_p[9] - t_P_D_p[9])) + ((t_P_D_p[10] - t_P_D_p[10]) + ((t_P_D_p[11] - t_P_D_p[11]) + (t_P_D_p[12] - t_P_D_p[12])))) + (((t_P_D_p[13] - t_P_D_p[13]) + (t_P_D_p[14] - t_P_D_p[14])) + ((t_P_D_p[15] - t_P_D_p[15]) + ((t_P_D_p[16] - t_P_D_p[16]) + (t_P_D_p[17] - t_P_D_p[17]))))))));
+    }
 #endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
