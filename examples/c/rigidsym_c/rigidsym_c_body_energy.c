@@ -146,23 +146,17 @@ RIGIDSYM_C_API int rigidsym_c_body_energy(
         odd = oddv_[0] | oddv_[1];
     }
 #else
-    {   /* the range test of every input component, one at a time */
+    {   /* the range test of every input component, one at a time (an argument's
+         * components by a loop: compact code where there are no 16-byte vectors) */
+        int j_;
         RIGIDSYM_C_ODD_D(odd, m);
-        RIGIDSYM_C_ODD_D(odd, v[0]);
-        RIGIDSYM_C_ODD_D(odd, v[1]);
-        RIGIDSYM_C_ODD_D(odd, v[2]);
-        RIGIDSYM_C_ODD_D(odd, inertia[0]);
-        RIGIDSYM_C_ODD_D(odd, inertia[1]);
-        RIGIDSYM_C_ODD_D(odd, inertia[2]);
-        RIGIDSYM_C_ODD_D(odd, inertia[3]);
-        RIGIDSYM_C_ODD_D(odd, inertia[4]);
-        RIGIDSYM_C_ODD_D(odd, inertia[5]);
-        RIGIDSYM_C_ODD_D(odd, inertia[6]);
-        RIGIDSYM_C_ODD_D(odd, inertia[7]);
-        RIGIDSYM_C_ODD_D(odd, inertia[8]);
-        RIGIDSYM_C_ODD_D(odd, omega[0]);
-        RIGIDSYM_C_ODD_D(odd, omega[1]);
-        RIGIDSYM_C_ODD_D(odd, omega[2]);
+        for (j_ = 0; j_ < 3; ++j_)
+            RIGIDSYM_C_ODD_D(odd, v[j_]);
+        for (j_ = 0; j_ < 9; ++j_)
+            RIGIDSYM_C_ODD_D(odd, inertia[j_]);
+        for (j_ = 0; j_ < 3; ++j_)
+            RIGIDSYM_C_ODD_D(odd, omega[j_]);
+        (void)j_;
     }
 #endif
     if (odd >> 63) {
@@ -356,23 +350,17 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_f32(
         odd = oddv_[0] | oddv_[1] | oddv_[2] | oddv_[3];
     }
 #else
-    {   /* the range test of every input component, one at a time */
+    {   /* the range test of every input component, one at a time (an argument's
+         * components by a loop: compact code where there are no 16-byte vectors) */
+        int j_;
         RIGIDSYM_C_ODD_F(odd, m);
-        RIGIDSYM_C_ODD_F(odd, v[0]);
-        RIGIDSYM_C_ODD_F(odd, v[1]);
-        RIGIDSYM_C_ODD_F(odd, v[2]);
-        RIGIDSYM_C_ODD_F(odd, inertia[0]);
-        RIGIDSYM_C_ODD_F(odd, inertia[1]);
-        RIGIDSYM_C_ODD_F(odd, inertia[2]);
-        RIGIDSYM_C_ODD_F(odd, inertia[3]);
-        RIGIDSYM_C_ODD_F(odd, inertia[4]);
-        RIGIDSYM_C_ODD_F(odd, inertia[5]);
-        RIGIDSYM_C_ODD_F(odd, inertia[6]);
-        RIGIDSYM_C_ODD_F(odd, inertia[7]);
-        RIGIDSYM_C_ODD_F(odd, inertia[8]);
-        RIGIDSYM_C_ODD_F(odd, omega[0]);
-        RIGIDSYM_C_ODD_F(odd, omega[1]);
-        RIGIDSYM_C_ODD_F(odd, omega[2]);
+        for (j_ = 0; j_ < 3; ++j_)
+            RIGIDSYM_C_ODD_F(odd, v[j_]);
+        for (j_ = 0; j_ < 9; ++j_)
+            RIGIDSYM_C_ODD_F(odd, inertia[j_]);
+        for (j_ = 0; j_ < 3; ++j_)
+            RIGIDSYM_C_ODD_F(odd, omega[j_]);
+        (void)j_;
     }
 #endif
     if (odd >> 31) {
@@ -687,23 +675,17 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians(
         odd = oddv_[0] | oddv_[1];
     }
 #else
-    {   /* the range test of every input component, one at a time */
+    {   /* the range test of every input component, one at a time (an argument's
+         * components by a loop: compact code where there are no 16-byte vectors) */
+        int j_;
         RIGIDSYM_C_ODD_D(odd, m);
-        RIGIDSYM_C_ODD_D(odd, v[0]);
-        RIGIDSYM_C_ODD_D(odd, v[1]);
-        RIGIDSYM_C_ODD_D(odd, v[2]);
-        RIGIDSYM_C_ODD_D(odd, inertia[0]);
-        RIGIDSYM_C_ODD_D(odd, inertia[1]);
-        RIGIDSYM_C_ODD_D(odd, inertia[2]);
-        RIGIDSYM_C_ODD_D(odd, inertia[3]);
-        RIGIDSYM_C_ODD_D(odd, inertia[4]);
-        RIGIDSYM_C_ODD_D(odd, inertia[5]);
-        RIGIDSYM_C_ODD_D(odd, inertia[6]);
-        RIGIDSYM_C_ODD_D(odd, inertia[7]);
-        RIGIDSYM_C_ODD_D(odd, inertia[8]);
-        RIGIDSYM_C_ODD_D(odd, omega[0]);
-        RIGIDSYM_C_ODD_D(odd, omega[1]);
-        RIGIDSYM_C_ODD_D(odd, omega[2]);
+        for (j_ = 0; j_ < 3; ++j_)
+            RIGIDSYM_C_ODD_D(odd, v[j_]);
+        for (j_ = 0; j_ < 9; ++j_)
+            RIGIDSYM_C_ODD_D(odd, inertia[j_]);
+        for (j_ = 0; j_ < 3; ++j_)
+            RIGIDSYM_C_ODD_D(odd, omega[j_]);
+        (void)j_;
     }
 #endif
     if (odd >> 63) {
@@ -976,23 +958,17 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians_f32(
         odd = oddv_[0] | oddv_[1] | oddv_[2] | oddv_[3];
     }
 #else
-    {   /* the range test of every input component, one at a time */
+    {   /* the range test of every input component, one at a time (an argument's
+         * components by a loop: compact code where there are no 16-byte vectors) */
+        int j_;
         RIGIDSYM_C_ODD_F(odd, m);
-        RIGIDSYM_C_ODD_F(odd, v[0]);
-        RIGIDSYM_C_ODD_F(odd, v[1]);
-        RIGIDSYM_C_ODD_F(odd, v[2]);
-        RIGIDSYM_C_ODD_F(odd, inertia[0]);
-        RIGIDSYM_C_ODD_F(odd, inertia[1]);
-        RIGIDSYM_C_ODD_F(odd, inertia[2]);
-        RIGIDSYM_C_ODD_F(odd, inertia[3]);
-        RIGIDSYM_C_ODD_F(odd, inertia[4]);
-        RIGIDSYM_C_ODD_F(odd, inertia[5]);
-        RIGIDSYM_C_ODD_F(odd, inertia[6]);
-        RIGIDSYM_C_ODD_F(odd, inertia[7]);
-        RIGIDSYM_C_ODD_F(odd, inertia[8]);
-        RIGIDSYM_C_ODD_F(odd, omega[0]);
-        RIGIDSYM_C_ODD_F(odd, omega[1]);
-        RIGIDSYM_C_ODD_F(odd, omega[2]);
+        for (j_ = 0; j_ < 3; ++j_)
+            RIGIDSYM_C_ODD_F(odd, v[j_]);
+        for (j_ = 0; j_ < 9; ++j_)
+            RIGIDSYM_C_ODD_F(odd, inertia[j_]);
+        for (j_ = 0; j_ < 3; ++j_)
+            RIGIDSYM_C_ODD_F(odd, omega[j_]);
+        (void)j_;
     }
 #endif
     if (odd >> 31) {

@@ -106,13 +106,14 @@
     } while (0)
 
 /* The same test on 16 bytes at a time (2 doubles, 4 floats) where the compiler has GNU
- * vector extensions (GCC, clang: SSE2 on x86-64, NEON on aarch64; lowered to scalar code
- * elsewhere): every step above is a lane-wise add, sub, and, xor or or, so one register
+ * vector extensions (GCC, clang) and the target 16-byte integer vectors (SSE2 on x86-64,
+ * NEON on Arm): every step above is a lane-wise add, sub, and, xor or or, so one register
  * tests 2 (4) components, fed straight from the arguments (one unaligned load where a
- * group is contiguous). Measured on twist_transfer (12 components, gcc 12 -O2): 95 -> 46
- * instructions for the test (benchmarks/c_scalar.py). -DRIGIDSYM_C_NO_VECTOR: the scalar
- * macros, one component at a time. */
-#if defined(__GNUC__) && !defined(RIGIDSYM_C_NO_VECTOR)
+ * group is contiguous). Measured on twist_transfer (12 components, gcc 12 -O2): 95 -> 57
+ * instructions for the test (benchmarks/c_scalar.py). Elsewhere (Cortex-M, other
+ * compilers), or with -DRIGIDSYM_C_NO_VECTOR: the scalar macros, a loop per argument. */
+#if defined(__GNUC__) && !defined(RIGIDSYM_C_NO_VECTOR) && \
+    (defined(__SSE2__) || defined(__ARM_NEON) || defined(__ARM_NEON__) || defined(__aarch64__))
 #define RIGIDSYM_C_VECTOR 1
 typedef uint64_t rigidsym_c_vd __attribute__((vector_size(16)));
 typedef uint32_t rigidsym_c_vf __attribute__((vector_size(16)));

@@ -186,26 +186,19 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench(
         odd = oddv_[0] | oddv_[1];
     }
 #else
-    {   /* the range test of every input component, one at a time */
-        RIGIDSYM_C_ODD_D(odd, I_C[0]);
-        RIGIDSYM_C_ODD_D(odd, I_C[1]);
-        RIGIDSYM_C_ODD_D(odd, I_C[2]);
-        RIGIDSYM_C_ODD_D(odd, I_C[3]);
-        RIGIDSYM_C_ODD_D(odd, I_C[4]);
-        RIGIDSYM_C_ODD_D(odd, I_C[5]);
-        RIGIDSYM_C_ODD_D(odd, I_C[6]);
-        RIGIDSYM_C_ODD_D(odd, I_C[7]);
-        RIGIDSYM_C_ODD_D(odd, I_C[8]);
+    {   /* the range test of every input component, one at a time (an argument's
+         * components by a loop: compact code where there are no 16-byte vectors) */
+        int j_;
+        for (j_ = 0; j_ < 9; ++j_)
+            RIGIDSYM_C_ODD_D(odd, I_C[j_]);
         RIGIDSYM_C_ODD_D(odd, m);
-        RIGIDSYM_C_ODD_D(odd, omega[0]);
-        RIGIDSYM_C_ODD_D(odd, omega[1]);
-        RIGIDSYM_C_ODD_D(odd, omega[2]);
-        RIGIDSYM_C_ODD_D(odd, omega_dot[0]);
-        RIGIDSYM_C_ODD_D(odd, omega_dot[1]);
-        RIGIDSYM_C_ODD_D(odd, omega_dot[2]);
-        RIGIDSYM_C_ODD_D(odd, c_ddot[0]);
-        RIGIDSYM_C_ODD_D(odd, c_ddot[1]);
-        RIGIDSYM_C_ODD_D(odd, c_ddot[2]);
+        for (j_ = 0; j_ < 3; ++j_)
+            RIGIDSYM_C_ODD_D(odd, omega[j_]);
+        for (j_ = 0; j_ < 3; ++j_)
+            RIGIDSYM_C_ODD_D(odd, omega_dot[j_]);
+        for (j_ = 0; j_ < 3; ++j_)
+            RIGIDSYM_C_ODD_D(odd, c_ddot[j_]);
+        (void)j_;
     }
 #endif
     if (odd >> 63) {
@@ -439,26 +432,19 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_f32(
         odd = oddv_[0] | oddv_[1] | oddv_[2] | oddv_[3];
     }
 #else
-    {   /* the range test of every input component, one at a time */
-        RIGIDSYM_C_ODD_F(odd, I_C[0]);
-        RIGIDSYM_C_ODD_F(odd, I_C[1]);
-        RIGIDSYM_C_ODD_F(odd, I_C[2]);
-        RIGIDSYM_C_ODD_F(odd, I_C[3]);
-        RIGIDSYM_C_ODD_F(odd, I_C[4]);
-        RIGIDSYM_C_ODD_F(odd, I_C[5]);
-        RIGIDSYM_C_ODD_F(odd, I_C[6]);
-        RIGIDSYM_C_ODD_F(odd, I_C[7]);
-        RIGIDSYM_C_ODD_F(odd, I_C[8]);
+    {   /* the range test of every input component, one at a time (an argument's
+         * components by a loop: compact code where there are no 16-byte vectors) */
+        int j_;
+        for (j_ = 0; j_ < 9; ++j_)
+            RIGIDSYM_C_ODD_F(odd, I_C[j_]);
         RIGIDSYM_C_ODD_F(odd, m);
-        RIGIDSYM_C_ODD_F(odd, omega[0]);
-        RIGIDSYM_C_ODD_F(odd, omega[1]);
-        RIGIDSYM_C_ODD_F(odd, omega[2]);
-        RIGIDSYM_C_ODD_F(odd, omega_dot[0]);
-        RIGIDSYM_C_ODD_F(odd, omega_dot[1]);
-        RIGIDSYM_C_ODD_F(odd, omega_dot[2]);
-        RIGIDSYM_C_ODD_F(odd, c_ddot[0]);
-        RIGIDSYM_C_ODD_F(odd, c_ddot[1]);
-        RIGIDSYM_C_ODD_F(odd, c_ddot[2]);
+        for (j_ = 0; j_ < 3; ++j_)
+            RIGIDSYM_C_ODD_F(odd, omega[j_]);
+        for (j_ = 0; j_ < 3; ++j_)
+            RIGIDSYM_C_ODD_F(odd, omega_dot[j_]);
+        for (j_ = 0; j_ < 3; ++j_)
+            RIGIDSYM_C_ODD_F(odd, c_ddot[j_]);
+        (void)j_;
     }
 #endif
     if (odd >> 31) {
@@ -1040,26 +1026,19 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians(
         odd = oddv_[0] | oddv_[1];
     }
 #else
-    {   /* the range test of every input component, one at a time */
-        RIGIDSYM_C_ODD_D(odd, I_C[0]);
-        RIGIDSYM_C_ODD_D(odd, I_C[1]);
-        RIGIDSYM_C_ODD_D(odd, I_C[2]);
-        RIGIDSYM_C_ODD_D(odd, I_C[3]);
-        RIGIDSYM_C_ODD_D(odd, I_C[4]);
-        RIGIDSYM_C_ODD_D(odd, I_C[5]);
-        RIGIDSYM_C_ODD_D(odd, I_C[6]);
-        RIGIDSYM_C_ODD_D(odd, I_C[7]);
-        RIGIDSYM_C_ODD_D(odd, I_C[8]);
+    {   /* the range test of every input component, one at a time (an argument's
+         * components by a loop: compact code where there are no 16-byte vectors) */
+        int j_;
+        for (j_ = 0; j_ < 9; ++j_)
+            RIGIDSYM_C_ODD_D(odd, I_C[j_]);
         RIGIDSYM_C_ODD_D(odd, m);
-        RIGIDSYM_C_ODD_D(odd, omega[0]);
-        RIGIDSYM_C_ODD_D(odd, omega[1]);
-        RIGIDSYM_C_ODD_D(odd, omega[2]);
-        RIGIDSYM_C_ODD_D(odd, omega_dot[0]);
-        RIGIDSYM_C_ODD_D(odd, omega_dot[1]);
-        RIGIDSYM_C_ODD_D(odd, omega_dot[2]);
-        RIGIDSYM_C_ODD_D(odd, c_ddot[0]);
-        RIGIDSYM_C_ODD_D(odd, c_ddot[1]);
-        RIGIDSYM_C_ODD_D(odd, c_ddot[2]);
+        for (j_ = 0; j_ < 3; ++j_)
+            RIGIDSYM_C_ODD_D(odd, omega[j_]);
+        for (j_ = 0; j_ < 3; ++j_)
+            RIGIDSYM_C_ODD_D(odd, omega_dot[j_]);
+        for (j_ = 0; j_ < 3; ++j_)
+            RIGIDSYM_C_ODD_D(odd, c_ddot[j_]);
+        (void)j_;
     }
 #endif
     if (odd >> 63) {
@@ -1581,26 +1560,19 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians_f32(
         odd = oddv_[0] | oddv_[1] | oddv_[2] | oddv_[3];
     }
 #else
-    {   /* the range test of every input component, one at a time */
-        RIGIDSYM_C_ODD_F(odd, I_C[0]);
-        RIGIDSYM_C_ODD_F(odd, I_C[1]);
-        RIGIDSYM_C_ODD_F(odd, I_C[2]);
-        RIGIDSYM_C_ODD_F(odd, I_C[3]);
-        RIGIDSYM_C_ODD_F(odd, I_C[4]);
-        RIGIDSYM_C_ODD_F(odd, I_C[5]);
-        RIGIDSYM_C_ODD_F(odd, I_C[6]);
-        RIGIDSYM_C_ODD_F(odd, I_C[7]);
-        RIGIDSYM_C_ODD_F(odd, I_C[8]);
+    {   /* the range test of every input component, one at a time (an argument's
+         * components by a loop: compact code where there are no 16-byte vectors) */
+        int j_;
+        for (j_ = 0; j_ < 9; ++j_)
+            RIGIDSYM_C_ODD_F(odd, I_C[j_]);
         RIGIDSYM_C_ODD_F(odd, m);
-        RIGIDSYM_C_ODD_F(odd, omega[0]);
-        RIGIDSYM_C_ODD_F(odd, omega[1]);
-        RIGIDSYM_C_ODD_F(odd, omega[2]);
-        RIGIDSYM_C_ODD_F(odd, omega_dot[0]);
-        RIGIDSYM_C_ODD_F(odd, omega_dot[1]);
-        RIGIDSYM_C_ODD_F(odd, omega_dot[2]);
-        RIGIDSYM_C_ODD_F(odd, c_ddot[0]);
-        RIGIDSYM_C_ODD_F(odd, c_ddot[1]);
-        RIGIDSYM_C_ODD_F(odd, c_ddot[2]);
+        for (j_ = 0; j_ < 3; ++j_)
+            RIGIDSYM_C_ODD_F(odd, omega[j_]);
+        for (j_ = 0; j_ < 3; ++j_)
+            RIGIDSYM_C_ODD_F(odd, omega_dot[j_]);
+        for (j_ = 0; j_ < 3; ++j_)
+            RIGIDSYM_C_ODD_F(odd, c_ddot[j_]);
+        (void)j_;
     }
 #endif
     if (odd >> 31) {

@@ -118,11 +118,14 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip(
         odd = oddv_[0] | oddv_[1];
     }
 #else
-    {   /* the range test of every input component, one at a time */
+    {   /* the range test of every input component, one at a time (an argument's
+         * components by a loop: compact code where there are no 16-byte vectors) */
+        int j_;
         RIGIDSYM_C_ODD_D(odd, q1);
         RIGIDSYM_C_ODD_D(odd, q2);
         RIGIDSYM_C_ODD_D(odd, l1);
         RIGIDSYM_C_ODD_D(odd, l2);
+        (void)j_;
     }
 #endif
     if (odd >> 63) {
@@ -285,11 +288,14 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_f32(
         odd = oddv_[0] | oddv_[1] | oddv_[2] | oddv_[3];
     }
 #else
-    {   /* the range test of every input component, one at a time */
+    {   /* the range test of every input component, one at a time (an argument's
+         * components by a loop: compact code where there are no 16-byte vectors) */
+        int j_;
         RIGIDSYM_C_ODD_F(odd, q1);
         RIGIDSYM_C_ODD_F(odd, q2);
         RIGIDSYM_C_ODD_F(odd, l1);
         RIGIDSYM_C_ODD_F(odd, l2);
+        (void)j_;
     }
 #endif
     if (odd >> 31) {
@@ -525,11 +531,14 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians(
         odd = oddv_[0] | oddv_[1];
     }
 #else
-    {   /* the range test of every input component, one at a time */
+    {   /* the range test of every input component, one at a time (an argument's
+         * components by a loop: compact code where there are no 16-byte vectors) */
+        int j_;
         RIGIDSYM_C_ODD_D(odd, q1);
         RIGIDSYM_C_ODD_D(odd, q2);
         RIGIDSYM_C_ODD_D(odd, l1);
         RIGIDSYM_C_ODD_D(odd, l2);
+        (void)j_;
     }
 #endif
     if (odd >> 63) {
@@ -732,11 +741,14 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians_f32(
         odd = oddv_[0] | oddv_[1] | oddv_[2] | oddv_[3];
     }
 #else
-    {   /* the range test of every input component, one at a time */
+    {   /* the range test of every input component, one at a time (an argument's
+         * components by a loop: compact code where there are no 16-byte vectors) */
+        int j_;
         RIGIDSYM_C_ODD_F(odd, q1);
         RIGIDSYM_C_ODD_F(odd, q2);
         RIGIDSYM_C_ODD_F(odd, l1);
         RIGIDSYM_C_ODD_F(odd, l2);
+        (void)j_;
     }
 #endif
     if (odd >> 31) {

@@ -77,11 +77,12 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation(
         odd = oddv_[0] | oddv_[1];
     }
 #else
-    {   /* the range test of every input component, one at a time */
-        RIGIDSYM_C_ODD_D(odd, q[0]);
-        RIGIDSYM_C_ODD_D(odd, q[1]);
-        RIGIDSYM_C_ODD_D(odd, q[2]);
-        RIGIDSYM_C_ODD_D(odd, q[3]);
+    {   /* the range test of every input component, one at a time (an argument's
+         * components by a loop: compact code where there are no 16-byte vectors) */
+        int j_;
+        for (j_ = 0; j_ < 4; ++j_)
+            RIGIDSYM_C_ODD_D(odd, q[j_]);
+        (void)j_;
     }
 #endif
     if (odd >> 63) {
@@ -200,11 +201,12 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_f32(
         odd = oddv_[0] | oddv_[1] | oddv_[2] | oddv_[3];
     }
 #else
-    {   /* the range test of every input component, one at a time */
-        RIGIDSYM_C_ODD_F(odd, q[0]);
-        RIGIDSYM_C_ODD_F(odd, q[1]);
-        RIGIDSYM_C_ODD_F(odd, q[2]);
-        RIGIDSYM_C_ODD_F(odd, q[3]);
+    {   /* the range test of every input component, one at a time (an argument's
+         * components by a loop: compact code where there are no 16-byte vectors) */
+        int j_;
+        for (j_ = 0; j_ < 4; ++j_)
+            RIGIDSYM_C_ODD_F(odd, q[j_]);
+        (void)j_;
     }
 #endif
     if (odd >> 31) {
@@ -451,11 +453,12 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_with_jacobians(
         odd = oddv_[0] | oddv_[1];
     }
 #else
-    {   /* the range test of every input component, one at a time */
-        RIGIDSYM_C_ODD_D(odd, q[0]);
-        RIGIDSYM_C_ODD_D(odd, q[1]);
-        RIGIDSYM_C_ODD_D(odd, q[2]);
-        RIGIDSYM_C_ODD_D(odd, q[3]);
+    {   /* the range test of every input component, one at a time (an argument's
+         * components by a loop: compact code where there are no 16-byte vectors) */
+        int j_;
+        for (j_ = 0; j_ < 4; ++j_)
+            RIGIDSYM_C_ODD_D(odd, q[j_]);
+        (void)j_;
     }
 #endif
     if (odd >> 63) {
@@ -654,11 +657,12 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_with_jacobians_f32(
         odd = oddv_[0] | oddv_[1] | oddv_[2] | oddv_[3];
     }
 #else
-    {   /* the range test of every input component, one at a time */
-        RIGIDSYM_C_ODD_F(odd, q[0]);
-        RIGIDSYM_C_ODD_F(odd, q[1]);
-        RIGIDSYM_C_ODD_F(odd, q[2]);
-        RIGIDSYM_C_ODD_F(odd, q[3]);
+    {   /* the range test of every input component, one at a time (an argument's
+         * components by a loop: compact code where there are no 16-byte vectors) */
+        int j_;
+        for (j_ = 0; j_ < 4; ++j_)
+            RIGIDSYM_C_ODD_F(odd, q[j_]);
+        (void)j_;
     }
 #endif
     if (odd >> 31) {

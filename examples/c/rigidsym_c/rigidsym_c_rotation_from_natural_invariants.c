@@ -91,11 +91,13 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants(
         odd = oddv_[0] | oddv_[1];
     }
 #else
-    {   /* the range test of every input component, one at a time */
-        RIGIDSYM_C_ODD_D(odd, e[0]);
-        RIGIDSYM_C_ODD_D(odd, e[1]);
-        RIGIDSYM_C_ODD_D(odd, e[2]);
+    {   /* the range test of every input component, one at a time (an argument's
+         * components by a loop: compact code where there are no 16-byte vectors) */
+        int j_;
+        for (j_ = 0; j_ < 3; ++j_)
+            RIGIDSYM_C_ODD_D(odd, e[j_]);
         RIGIDSYM_C_ODD_D(odd, phi);
+        (void)j_;
     }
 #endif
     if (odd >> 63) {
@@ -228,11 +230,13 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_f32(
         odd = oddv_[0] | oddv_[1] | oddv_[2] | oddv_[3];
     }
 #else
-    {   /* the range test of every input component, one at a time */
-        RIGIDSYM_C_ODD_F(odd, e[0]);
-        RIGIDSYM_C_ODD_F(odd, e[1]);
-        RIGIDSYM_C_ODD_F(odd, e[2]);
+    {   /* the range test of every input component, one at a time (an argument's
+         * components by a loop: compact code where there are no 16-byte vectors) */
+        int j_;
+        for (j_ = 0; j_ < 3; ++j_)
+            RIGIDSYM_C_ODD_F(odd, e[j_]);
         RIGIDSYM_C_ODD_F(odd, phi);
+        (void)j_;
     }
 #endif
     if (odd >> 31) {
@@ -510,11 +514,13 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_with_jacobians(
         odd = oddv_[0] | oddv_[1];
     }
 #else
-    {   /* the range test of every input component, one at a time */
-        RIGIDSYM_C_ODD_D(odd, e[0]);
-        RIGIDSYM_C_ODD_D(odd, e[1]);
-        RIGIDSYM_C_ODD_D(odd, e[2]);
+    {   /* the range test of every input component, one at a time (an argument's
+         * components by a loop: compact code where there are no 16-byte vectors) */
+        int j_;
+        for (j_ = 0; j_ < 3; ++j_)
+            RIGIDSYM_C_ODD_D(odd, e[j_]);
         RIGIDSYM_C_ODD_D(odd, phi);
+        (void)j_;
     }
 #endif
     if (odd >> 63) {
@@ -735,11 +741,13 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_with_jacobians_f3
         odd = oddv_[0] | oddv_[1] | oddv_[2] | oddv_[3];
     }
 #else
-    {   /* the range test of every input component, one at a time */
-        RIGIDSYM_C_ODD_F(odd, e[0]);
-        RIGIDSYM_C_ODD_F(odd, e[1]);
-        RIGIDSYM_C_ODD_F(odd, e[2]);
+    {   /* the range test of every input component, one at a time (an argument's
+         * components by a loop: compact code where there are no 16-byte vectors) */
+        int j_;
+        for (j_ = 0; j_ < 3; ++j_)
+            RIGIDSYM_C_ODD_F(odd, e[j_]);
         RIGIDSYM_C_ODD_F(odd, phi);
+        (void)j_;
     }
 #endif
     if (odd >> 31) {

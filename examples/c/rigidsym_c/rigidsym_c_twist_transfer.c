@@ -136,19 +136,16 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer(
         odd = oddv_[0] | oddv_[1];
     }
 #else
-    {   /* the range test of every input component, one at a time */
-        RIGIDSYM_C_ODD_D(odd, t_A[0]);
-        RIGIDSYM_C_ODD_D(odd, t_A[1]);
-        RIGIDSYM_C_ODD_D(odd, t_A[2]);
-        RIGIDSYM_C_ODD_D(odd, t_A[3]);
-        RIGIDSYM_C_ODD_D(odd, t_A[4]);
-        RIGIDSYM_C_ODD_D(odd, t_A[5]);
-        RIGIDSYM_C_ODD_D(odd, a[0]);
-        RIGIDSYM_C_ODD_D(odd, a[1]);
-        RIGIDSYM_C_ODD_D(odd, a[2]);
-        RIGIDSYM_C_ODD_D(odd, p[0]);
-        RIGIDSYM_C_ODD_D(odd, p[1]);
-        RIGIDSYM_C_ODD_D(odd, p[2]);
+    {   /* the range test of every input component, one at a time (an argument's
+         * components by a loop: compact code where there are no 16-byte vectors) */
+        int j_;
+        for (j_ = 0; j_ < 6; ++j_)
+            RIGIDSYM_C_ODD_D(odd, t_A[j_]);
+        for (j_ = 0; j_ < 3; ++j_)
+            RIGIDSYM_C_ODD_D(odd, a[j_]);
+        for (j_ = 0; j_ < 3; ++j_)
+            RIGIDSYM_C_ODD_D(odd, p[j_]);
+        (void)j_;
     }
 #endif
     if (odd >> 63) {
@@ -336,19 +333,16 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_f32(
         odd = oddv_[0] | oddv_[1] | oddv_[2] | oddv_[3];
     }
 #else
-    {   /* the range test of every input component, one at a time */
-        RIGIDSYM_C_ODD_F(odd, t_A[0]);
-        RIGIDSYM_C_ODD_F(odd, t_A[1]);
-        RIGIDSYM_C_ODD_F(odd, t_A[2]);
-        RIGIDSYM_C_ODD_F(odd, t_A[3]);
-        RIGIDSYM_C_ODD_F(odd, t_A[4]);
-        RIGIDSYM_C_ODD_F(odd, t_A[5]);
-        RIGIDSYM_C_ODD_F(odd, a[0]);
-        RIGIDSYM_C_ODD_F(odd, a[1]);
-        RIGIDSYM_C_ODD_F(odd, a[2]);
-        RIGIDSYM_C_ODD_F(odd, p[0]);
-        RIGIDSYM_C_ODD_F(odd, p[1]);
-        RIGIDSYM_C_ODD_F(odd, p[2]);
+    {   /* the range test of every input component, one at a time (an argument's
+         * components by a loop: compact code where there are no 16-byte vectors) */
+        int j_;
+        for (j_ = 0; j_ < 6; ++j_)
+            RIGIDSYM_C_ODD_F(odd, t_A[j_]);
+        for (j_ = 0; j_ < 3; ++j_)
+            RIGIDSYM_C_ODD_F(odd, a[j_]);
+        for (j_ = 0; j_ < 3; ++j_)
+            RIGIDSYM_C_ODD_F(odd, p[j_]);
+        (void)j_;
     }
 #endif
     if (odd >> 31) {
@@ -753,19 +747,16 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_with_jacobians(
         odd = oddv_[0] | oddv_[1];
     }
 #else
-    {   /* the range test of every input component, one at a time */
-        RIGIDSYM_C_ODD_D(odd, t_A[0]);
-        RIGIDSYM_C_ODD_D(odd, t_A[1]);
-        RIGIDSYM_C_ODD_D(odd, t_A[2]);
-        RIGIDSYM_C_ODD_D(odd, t_A[3]);
-        RIGIDSYM_C_ODD_D(odd, t_A[4]);
-        RIGIDSYM_C_ODD_D(odd, t_A[5]);
-        RIGIDSYM_C_ODD_D(odd, a[0]);
-        RIGIDSYM_C_ODD_D(odd, a[1]);
-        RIGIDSYM_C_ODD_D(odd, a[2]);
-        RIGIDSYM_C_ODD_D(odd, p[0]);
-        RIGIDSYM_C_ODD_D(odd, p[1]);
-        RIGIDSYM_C_ODD_D(odd, p[2]);
+    {   /* the range test of every input component, one at a time (an argument's
+         * components by a loop: compact code where there are no 16-byte vectors) */
+        int j_;
+        for (j_ = 0; j_ < 6; ++j_)
+            RIGIDSYM_C_ODD_D(odd, t_A[j_]);
+        for (j_ = 0; j_ < 3; ++j_)
+            RIGIDSYM_C_ODD_D(odd, a[j_]);
+        for (j_ = 0; j_ < 3; ++j_)
+            RIGIDSYM_C_ODD_D(odd, p[j_]);
+        (void)j_;
     }
 #endif
     if (odd >> 63) {
@@ -1124,19 +1115,16 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_with_jacobians_f32(
         odd = oddv_[0] | oddv_[1] | oddv_[2] | oddv_[3];
     }
 #else
-    {   /* the range test of every input component, one at a time */
-        RIGIDSYM_C_ODD_F(odd, t_A[0]);
-        RIGIDSYM_C_ODD_F(odd, t_A[1]);
-        RIGIDSYM_C_ODD_F(odd, t_A[2]);
-        RIGIDSYM_C_ODD_F(odd, t_A[3]);
-        RIGIDSYM_C_ODD_F(odd, t_A[4]);
-        RIGIDSYM_C_ODD_F(odd, t_A[5]);
-        RIGIDSYM_C_ODD_F(odd, a[0]);
-        RIGIDSYM_C_ODD_F(odd, a[1]);
-        RIGIDSYM_C_ODD_F(odd, a[2]);
-        RIGIDSYM_C_ODD_F(odd, p[0]);
-        RIGIDSYM_C_ODD_F(odd, p[1]);
-        RIGIDSYM_C_ODD_F(odd, p[2]);
+    {   /* the range test of every input component, one at a time (an argument's
+         * components by a loop: compact code where there are no 16-byte vectors) */
+        int j_;
+        for (j_ = 0; j_ < 6; ++j_)
+            RIGIDSYM_C_ODD_F(odd, t_A[j_]);
+        for (j_ = 0; j_ < 3; ++j_)
+            RIGIDSYM_C_ODD_F(odd, a[j_]);
+        for (j_ = 0; j_ < 3; ++j_)
+            RIGIDSYM_C_ODD_F(odd, p[j_]);
+        (void)j_;
     }
 #endif
     if (odd >> 31) {
