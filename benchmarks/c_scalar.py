@@ -1,6 +1,6 @@
 """Scalar speed of the C target's functions against hand-written C (issue 53).
 
-    python benchmarks/c_scalar.py [--n 2000] [--results]
+    python benchmarks/c_scalar.py [--n 2000] [--cc gcc] [--results]
 
 The six kernels of examples/c (three book kernels, three of the example's own module), each
 as the generated double and float function (examples/c/rigidsym_c, built by gcc -O2 -std=c99)
@@ -34,9 +34,9 @@ CASES = [("rotation_from_natural_invariants", "hand_rotation"),
          ("planar_arm_tip_with_jacobians", "hand_arm"), ("body_energy", "hand_energy")]
 
 
-def build(out: Path, extra: list[str]) -> Path:
+def build(out: Path, extra: list[str], cc: str = "gcc") -> Path:
     exe = out / ("bench" + "".join(e.replace("-", "_") for e in extra))
-    subprocess.run(["gcc", "-std=c99", "-O2", *extra, "-I", str(KERNELS), str(HERE / "bench.c"),
+    subprocess.run([cc, "-std=c99", "-O2", *extra, "-I", str(KERNELS), str(HERE / "bench.c"),
                     str(HERE / "hand.c"), *map(str, sorted(KERNELS.glob("*.c"))), "-o",
                     str(exe), "-lm"], check=True)
     return exe
@@ -65,15 +65,17 @@ def seconds(exe: Path, kernel: str, which: str, dtype: str, n: int) -> float:
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--n", type=int, default=2000, help="calls per run (default 2000)")
+    ap.add_argument("--cc", default="gcc", help="the C compiler (default gcc; the table's)")
     ap.add_argument("--results", action="store_true", help="write benchmarks/RESULTS.md")
     args = ap.parse_args(argv)
-    if shutil.which("gcc") is None or shutil.which("valgrind") is None:
-        print("needs gcc and valgrind", file=sys.stderr)
+    if shutil.which(args.cc) is None or shutil.which("valgrind") is None:
+        print(f"needs {args.cc} and valgrind", file=sys.stderr)
         return 2
     rows = []
     with tempfile.TemporaryDirectory() as t:
         tmp = Path(t)
-        exes = {"checked": build(tmp, []), "trusted": build(tmp, ["-DRIGIDSYM_C_TRUSTED_INPUTS"])}
+        exes = {"checked": build(tmp, [], args.cc),
+                "trusted": build(tmp, ["-DRIGIDSYM_C_TRUSTED_INPUTS"], args.cc)}
         for kernel, hand in CASES:
             for dtype, sfx in (("f64", ""), ("f32", "_f32")):
                 cell = {"kernel": kernel, "dtype": dtype}

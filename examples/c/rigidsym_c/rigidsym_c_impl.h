@@ -38,7 +38,11 @@
 #endif
 #pragma clang fp contract(off)
 #elif defined(__GNUC__)
-#pragma GCC optimize("fp-contract=off")
+/* and GCC's straight-line (SLP) vectoriser off: on these short programs it packed pairs of
+ * products with shuffles and spills (measured, gcc 12 -O2, benchmarks/c_scalar.py:
+ * newton_euler_wrench trusted 176 -> 107 instructions, hand-written 76; twist_transfer
+ * 55 -> 47); the input range test's vectors are written out (RIGIDSYM_C_VECTOR) */
+#pragma GCC optimize("fp-contract=off", "no-tree-slp-vectorize")
 #endif
 
 #include <float.h>
