@@ -93,6 +93,65 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_rescue(
 }
 #endif
 
+
+#if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
+/* rigidsym_c_planar_arm_tip where the range test found an odd input (extreme or not finite): the
+ * input bits of the status, the rescue where there is one, else the ordinary evaluation
+ * with its outputs' test. Cold and out of line, reached by a tail call, so that the fast
+ * path of rigidsym_c_planar_arm_tip saves no register and makes no call. */
+static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_odd(
+    double q1,
+    double q2,
+    double l1,
+    double l2,
+    double p[2])
+{
+    const double *args[4];
+    const int sizes[4] = {1, 1, 1, 1};
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0;
+    double finite = 0.0;
+    args[0] = &q1;
+    args[1] = &q2;
+    args[2] = &l1;
+    args[3] = &l2;
+    for (j = 0; j < 4; ++j)
+        if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
+            status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_WIDE
+    if (status == RIGIDSYM_C_EXTREME_INPUT)
+        return rigidsym_c_planar_arm_tip_wide(q1, q2, l1, l2, p);
+#endif
+#if RIGIDSYM_C_RESCALE_D
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
+        const int r_ = rigidsym_c_planar_arm_tip_rescue(q1, q2, l1, l2, p);
+        if (r_ >= 0)
+            return r_;
+    }
+#endif
+    {
+        const double x0 = q1 + q2;
+        p[0] = l1*cos(q1) + l2*cos(x0);
+        p[1] = l1*sin(q1) + l2*sin(x0);
+    }
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const double s_ = (p[0] + p[1]);
+        if (!(s_ - s_ == 0.0))
+            finite += ((p[0] - p[0]) + (p[1] - p[1]));
+    }
+    if (finite != finite)
+        status |= RIGIDSYM_C_NONFINITE_RESULT;
+    if (singular) {
+        status |= RIGIDSYM_C_SINGULAR;
+        p[0] = NAN;
+        p[1] = NAN;
+    }
+    return status;
+}
+#endif
+
 RIGIDSYM_C_API int rigidsym_c_planar_arm_tip(
     double q1,
     double q2,
@@ -100,10 +159,10 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip(
     double l2,
     double p[2])
 {
-    uint64_t odd = 0;
     int status = 0, singular = 0;
     double finite = 0.0;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
+    uint64_t odd = 0;
 #if RIGIDSYM_C_VECTOR
     {   /* the range test of every input component, 2 per vector register */
         rigidsym_c_vd oddv_ = {0, 0};
@@ -128,32 +187,8 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip(
         (void)j_;
     }
 #endif
-    if (odd >> 63) {
-        const double *args[4];
-        const int sizes[4] = {1, 1, 1, 1};
-        int j;
-        args[0] = &q1;
-        args[1] = &q2;
-        args[2] = &l1;
-        args[3] = &l2;
-        status = RIGIDSYM_C_EXTREME_INPUT;
-        for (j = 0; j < 4; ++j)
-            if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
-                status = RIGIDSYM_C_NONFINITE_INPUT;
-#if RIGIDSYM_C_WIDE
-        if (status == RIGIDSYM_C_EXTREME_INPUT)
-            return rigidsym_c_planar_arm_tip_wide(q1, q2, l1, l2, p);
-#endif
-#if RIGIDSYM_C_RESCALE_D
-        if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
-            const int r_ = rigidsym_c_planar_arm_tip_rescue(q1, q2, l1, l2, p);
-            if (r_ >= 0)
-                return r_;
-        }
-#endif
-    }
-#else
-    (void)odd;
+    if (odd >> 63)
+        return rigidsym_c_planar_arm_tip_odd(q1, q2, l1, l2, p);
 #endif
     {
         const double x0 = q1 + q2;
@@ -162,18 +197,8 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip(
     }
     /* no division or root, and every output bounded by 2^102 for inputs of
      * ordinary magnitude (|x| < 2^101): only an extreme or non-finite input can make an
-     * output non-finite, so only then are the outputs tested */
+     * output non-finite, so only then (rigidsym_c_planar_arm_tip_odd) are the outputs tested */
 #if defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    {   /* the outputs' sum is finite only where every output is, so the exact test
-         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
-         * compiler from folding it) runs only where the sum is not: a non-finite output,
-         * or finite ones whose sum overflows */
-        const double s_ = (p[0] + p[1]);
-        if (!(s_ - s_ == 0.0))
-            finite += ((p[0] - p[0]) + (p[1] - p[1]));
-    }
-#else
-    if (status)
     {   /* the outputs' sum is finite only where every output is, so the exact test
          * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
          * compiler from folding it) runs only where the sum is not: a non-finite output,
@@ -267,6 +292,61 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_f32_rescue(
 }
 #endif
 
+
+#if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
+/* rigidsym_c_planar_arm_tip_f32 where the range test found an odd input (extreme or not finite): the
+ * input bits of the status, the rescue where there is one, else the ordinary evaluation
+ * with its outputs' test. Cold and out of line, reached by a tail call, so that the fast
+ * path of rigidsym_c_planar_arm_tip_f32 saves no register and makes no call. */
+static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_f32_odd(
+    float q1,
+    float q2,
+    float l1,
+    float l2,
+    float p[2])
+{
+    const float *args[4];
+    const int sizes[4] = {1, 1, 1, 1};
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0;
+    float finite = 0.0f;
+    args[0] = &q1;
+    args[1] = &q2;
+    args[2] = &l1;
+    args[3] = &l2;
+    for (j = 0; j < 4; ++j)
+        if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
+            status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_RESCALE_F
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
+        const int r_ = rigidsym_c_planar_arm_tip_f32_rescue(q1, q2, l1, l2, p);
+        if (r_ >= 0)
+            return r_;
+    }
+#endif
+    {
+        const float x0 = q1 + q2;
+        p[0] = l1*cosf(q1) + l2*cosf(x0);
+        p[1] = l1*sinf(q1) + l2*sinf(x0);
+    }
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const float s_ = (p[0] + p[1]);
+        if (!(s_ - s_ == 0.0f))
+            finite += ((p[0] - p[0]) + (p[1] - p[1]));
+    }
+    if (finite != finite)
+        status |= RIGIDSYM_C_NONFINITE_RESULT;
+    if (singular) {
+        status |= RIGIDSYM_C_SINGULAR;
+        p[0] = NAN;
+        p[1] = NAN;
+    }
+    return status;
+}
+#endif
+
 RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_f32(
     float q1,
     float q2,
@@ -274,10 +354,10 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_f32(
     float l2,
     float p[2])
 {
-    uint32_t odd = 0;
     int status = 0, singular = 0;
     float finite = 0.0f;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
+    uint32_t odd = 0;
 #if RIGIDSYM_C_VECTOR
     {   /* the range test of every input component, 4 per vector register */
         rigidsym_c_vf oddv_ = {0, 0, 0, 0};
@@ -298,28 +378,8 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_f32(
         (void)j_;
     }
 #endif
-    if (odd >> 31) {
-        const float *args[4];
-        const int sizes[4] = {1, 1, 1, 1};
-        int j;
-        args[0] = &q1;
-        args[1] = &q2;
-        args[2] = &l1;
-        args[3] = &l2;
-        status = RIGIDSYM_C_EXTREME_INPUT;
-        for (j = 0; j < 4; ++j)
-            if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
-                status = RIGIDSYM_C_NONFINITE_INPUT;
-#if RIGIDSYM_C_RESCALE_F
-        if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
-            const int r_ = rigidsym_c_planar_arm_tip_f32_rescue(q1, q2, l1, l2, p);
-            if (r_ >= 0)
-                return r_;
-        }
-#endif
-    }
-#else
-    (void)odd;
+    if (odd >> 31)
+        return rigidsym_c_planar_arm_tip_f32_odd(q1, q2, l1, l2, p);
 #endif
     {
         const float x0 = q1 + q2;
@@ -328,18 +388,8 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_f32(
     }
     /* no division or root, and every output bounded by 2^32 for inputs of
      * ordinary magnitude (|x| < 2^31): only an extreme or non-finite input can make an
-     * output non-finite, so only then are the outputs tested */
+     * output non-finite, so only then (rigidsym_c_planar_arm_tip_f32_odd) are the outputs tested */
 #if defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    {   /* the outputs' sum is finite only where every output is, so the exact test
-         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
-         * compiler from folding it) runs only where the sum is not: a non-finite output,
-         * or finite ones whose sum overflows */
-        const float s_ = (p[0] + p[1]);
-        if (!(s_ - s_ == 0.0f))
-            finite += ((p[0] - p[0]) + (p[1] - p[1]));
-    }
-#else
-    if (status)
     {   /* the outputs' sum is finite only where every output is, so the exact test
          * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
          * compiler from folding it) runs only where the sum is not: a non-finite output,
@@ -506,6 +556,93 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_with_jacobians_rescue(
 }
 #endif
 
+
+#if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
+/* rigidsym_c_planar_arm_tip_with_jacobians where the range test found an odd input (extreme or not finite): the
+ * input bits of the status, the rescue where there is one, else the ordinary evaluation
+ * with its outputs' test. Cold and out of line, reached by a tail call, so that the fast
+ * path of rigidsym_c_planar_arm_tip_with_jacobians saves no register and makes no call. */
+static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_with_jacobians_odd(
+    double q1,
+    double q2,
+    double l1,
+    double l2,
+    double p[2],
+    double p_D_q1[2],
+    double p_D_q2[2],
+    double p_D_l1[2],
+    double p_D_l2[2])
+{
+    const double *args[4];
+    const int sizes[4] = {1, 1, 1, 1};
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0;
+    double finite = 0.0;
+    args[0] = &q1;
+    args[1] = &q2;
+    args[2] = &l1;
+    args[3] = &l2;
+    for (j = 0; j < 4; ++j)
+        if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
+            status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_WIDE
+    if (status == RIGIDSYM_C_EXTREME_INPUT)
+        return rigidsym_c_planar_arm_tip_with_jacobians_wide(q1, q2, l1, l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
+#endif
+#if RIGIDSYM_C_RESCALE_D
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
+        const int r_ = rigidsym_c_planar_arm_tip_with_jacobians_rescue(q1, q2, l1, l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
+        if (r_ >= 0)
+            return r_;
+    }
+#endif
+    {
+        const double x0 = cos(q1);
+        const double x1 = q1 + q2;
+        const double x2 = cos(x1);
+        const double x3 = l2*x2;
+        const double x4 = l1*x0 + x3;
+        const double x5 = sin(q1);
+        const double x6 = sin(x1);
+        const double x7 = l2*x6;
+        const double x8 = l1*x5 + x7;
+        p[0] = x4;
+        p[1] = x8;
+        p_D_q1[0] = -x8;
+        p_D_q1[1] = x4;
+        p_D_q2[0] = -x7;
+        p_D_q2[1] = x3;
+        p_D_l1[0] = x0;
+        p_D_l1[1] = x5;
+        p_D_l2[0] = x2;
+        p_D_l2[1] = x6;
+    }
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const double s_ = (((p[0] + p[1]) + (p_D_q1[0] + (p_D_q1[1] + p_D_q2[0]))) + ((p_D_q2[1] + p_D_l1[0]) + (p_D_l1[1] + (p_D_l2[0] + p_D_l2[1]))));
+        if (!(s_ - s_ == 0.0))
+            finite += ((((p[0] - p[0]) + (p[1] - p[1])) + ((p_D_q1[0] - p_D_q1[0]) + ((p_D_q1[1] - p_D_q1[1]) + (p_D_q2[0] - p_D_q2[0])))) + (((p_D_q2[1] - p_D_q2[1]) + (p_D_l1[0] - p_D_l1[0])) + ((p_D_l1[1] - p_D_l1[1]) + ((p_D_l2[0] - p_D_l2[0]) + (p_D_l2[1] - p_D_l2[1])))));
+    }
+    if (finite != finite)
+        status |= RIGIDSYM_C_NONFINITE_RESULT;
+    if (singular) {
+        status |= RIGIDSYM_C_SINGULAR;
+        p[0] = NAN;
+        p[1] = NAN;
+        p_D_q1[0] = NAN;
+        p_D_q1[1] = NAN;
+        p_D_q2[0] = NAN;
+        p_D_q2[1] = NAN;
+        p_D_l1[0] = NAN;
+        p_D_l1[1] = NAN;
+        p_D_l2[0] = NAN;
+        p_D_l2[1] = NAN;
+    }
+    return status;
+}
+#endif
+
 RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians(
     double q1,
     double q2,
@@ -513,10 +650,10 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians(
     double l2,
     double p[2],    double p_D_q1[2],    double p_D_q2[2],    double p_D_l1[2],    double p_D_l2[2])
 {
-    uint64_t odd = 0;
     int status = 0, singular = 0;
     double finite = 0.0;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
+    uint64_t odd = 0;
 #if RIGIDSYM_C_VECTOR
     {   /* the range test of every input component, 2 per vector register */
         rigidsym_c_vd oddv_ = {0, 0};
@@ -541,32 +678,8 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians(
         (void)j_;
     }
 #endif
-    if (odd >> 63) {
-        const double *args[4];
-        const int sizes[4] = {1, 1, 1, 1};
-        int j;
-        args[0] = &q1;
-        args[1] = &q2;
-        args[2] = &l1;
-        args[3] = &l2;
-        status = RIGIDSYM_C_EXTREME_INPUT;
-        for (j = 0; j < 4; ++j)
-            if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
-                status = RIGIDSYM_C_NONFINITE_INPUT;
-#if RIGIDSYM_C_WIDE
-        if (status == RIGIDSYM_C_EXTREME_INPUT)
-            return rigidsym_c_planar_arm_tip_with_jacobians_wide(q1, q2, l1, l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
-#endif
-#if RIGIDSYM_C_RESCALE_D
-        if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
-            const int r_ = rigidsym_c_planar_arm_tip_with_jacobians_rescue(q1, q2, l1, l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
-            if (r_ >= 0)
-                return r_;
-        }
-#endif
-    }
-#else
-    (void)odd;
+    if (odd >> 63)
+        return rigidsym_c_planar_arm_tip_with_jacobians_odd(q1, q2, l1, l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
 #endif
     {
         const double x0 = cos(q1);
@@ -591,18 +704,8 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians(
     }
     /* no division or root, and every output bounded by 2^102 for inputs of
      * ordinary magnitude (|x| < 2^101): only an extreme or non-finite input can make an
-     * output non-finite, so only then are the outputs tested */
+     * output non-finite, so only then (rigidsym_c_planar_arm_tip_with_jacobians_odd) are the outputs tested */
 #if defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    {   /* the outputs' sum is finite only where every output is, so the exact test
-         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
-         * compiler from folding it) runs only where the sum is not: a non-finite output,
-         * or finite ones whose sum overflows */
-        const double s_ = (((p[0] + p[1]) + (p_D_q1[0] + (p_D_q1[1] + p_D_q2[0]))) + ((p_D_q2[1] + p_D_l1[0]) + (p_D_l1[1] + (p_D_l2[0] + p_D_l2[1]))));
-        if (!(s_ - s_ == 0.0))
-            finite += ((((p[0] - p[0]) + (p[1] - p[1])) + ((p_D_q1[0] - p_D_q1[0]) + ((p_D_q1[1] - p_D_q1[1]) + (p_D_q2[0] - p_D_q2[0])))) + (((p_D_q2[1] - p_D_q2[1]) + (p_D_l1[0] - p_D_l1[0])) + ((p_D_l1[1] - p_D_l1[1]) + ((p_D_l2[0] - p_D_l2[0]) + (p_D_l2[1] - p_D_l2[1])))));
-    }
-#else
-    if (status)
     {   /* the outputs' sum is finite only where every output is, so the exact test
          * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
          * compiler from folding it) runs only where the sum is not: a non-finite output,
@@ -720,6 +823,89 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_with_jacobians_f32_rescue(
 }
 #endif
 
+
+#if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
+/* rigidsym_c_planar_arm_tip_with_jacobians_f32 where the range test found an odd input (extreme or not finite): the
+ * input bits of the status, the rescue where there is one, else the ordinary evaluation
+ * with its outputs' test. Cold and out of line, reached by a tail call, so that the fast
+ * path of rigidsym_c_planar_arm_tip_with_jacobians_f32 saves no register and makes no call. */
+static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_with_jacobians_f32_odd(
+    float q1,
+    float q2,
+    float l1,
+    float l2,
+    float p[2],
+    float p_D_q1[2],
+    float p_D_q2[2],
+    float p_D_l1[2],
+    float p_D_l2[2])
+{
+    const float *args[4];
+    const int sizes[4] = {1, 1, 1, 1};
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0;
+    float finite = 0.0f;
+    args[0] = &q1;
+    args[1] = &q2;
+    args[2] = &l1;
+    args[3] = &l2;
+    for (j = 0; j < 4; ++j)
+        if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
+            status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_RESCALE_F
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
+        const int r_ = rigidsym_c_planar_arm_tip_with_jacobians_f32_rescue(q1, q2, l1, l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
+        if (r_ >= 0)
+            return r_;
+    }
+#endif
+    {
+        const float x0 = cosf(q1);
+        const float x1 = q1 + q2;
+        const float x2 = cosf(x1);
+        const float x3 = l2*x2;
+        const float x4 = l1*x0 + x3;
+        const float x5 = sinf(q1);
+        const float x6 = sinf(x1);
+        const float x7 = l2*x6;
+        const float x8 = l1*x5 + x7;
+        p[0] = x4;
+        p[1] = x8;
+        p_D_q1[0] = -x8;
+        p_D_q1[1] = x4;
+        p_D_q2[0] = -x7;
+        p_D_q2[1] = x3;
+        p_D_l1[0] = x0;
+        p_D_l1[1] = x5;
+        p_D_l2[0] = x2;
+        p_D_l2[1] = x6;
+    }
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const float s_ = (((p[0] + p[1]) + (p_D_q1[0] + (p_D_q1[1] + p_D_q2[0]))) + ((p_D_q2[1] + p_D_l1[0]) + (p_D_l1[1] + (p_D_l2[0] + p_D_l2[1]))));
+        if (!(s_ - s_ == 0.0f))
+            finite += ((((p[0] - p[0]) + (p[1] - p[1])) + ((p_D_q1[0] - p_D_q1[0]) + ((p_D_q1[1] - p_D_q1[1]) + (p_D_q2[0] - p_D_q2[0])))) + (((p_D_q2[1] - p_D_q2[1]) + (p_D_l1[0] - p_D_l1[0])) + ((p_D_l1[1] - p_D_l1[1]) + ((p_D_l2[0] - p_D_l2[0]) + (p_D_l2[1] - p_D_l2[1])))));
+    }
+    if (finite != finite)
+        status |= RIGIDSYM_C_NONFINITE_RESULT;
+    if (singular) {
+        status |= RIGIDSYM_C_SINGULAR;
+        p[0] = NAN;
+        p[1] = NAN;
+        p_D_q1[0] = NAN;
+        p_D_q1[1] = NAN;
+        p_D_q2[0] = NAN;
+        p_D_q2[1] = NAN;
+        p_D_l1[0] = NAN;
+        p_D_l1[1] = NAN;
+        p_D_l2[0] = NAN;
+        p_D_l2[1] = NAN;
+    }
+    return status;
+}
+#endif
+
 RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians_f32(
     float q1,
     float q2,
@@ -727,10 +913,10 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians_f32(
     float l2,
     float p[2],    float p_D_q1[2],    float p_D_q2[2],    float p_D_l1[2],    float p_D_l2[2])
 {
-    uint32_t odd = 0;
     int status = 0, singular = 0;
     float finite = 0.0f;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
+    uint32_t odd = 0;
 #if RIGIDSYM_C_VECTOR
     {   /* the range test of every input component, 4 per vector register */
         rigidsym_c_vf oddv_ = {0, 0, 0, 0};
@@ -751,28 +937,8 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians_f32(
         (void)j_;
     }
 #endif
-    if (odd >> 31) {
-        const float *args[4];
-        const int sizes[4] = {1, 1, 1, 1};
-        int j;
-        args[0] = &q1;
-        args[1] = &q2;
-        args[2] = &l1;
-        args[3] = &l2;
-        status = RIGIDSYM_C_EXTREME_INPUT;
-        for (j = 0; j < 4; ++j)
-            if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
-                status = RIGIDSYM_C_NONFINITE_INPUT;
-#if RIGIDSYM_C_RESCALE_F
-        if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
-            const int r_ = rigidsym_c_planar_arm_tip_with_jacobians_f32_rescue(q1, q2, l1, l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
-            if (r_ >= 0)
-                return r_;
-        }
-#endif
-    }
-#else
-    (void)odd;
+    if (odd >> 31)
+        return rigidsym_c_planar_arm_tip_with_jacobians_f32_odd(q1, q2, l1, l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
 #endif
     {
         const float x0 = cosf(q1);
@@ -797,18 +963,8 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians_f32(
     }
     /* no division or root, and every output bounded by 2^32 for inputs of
      * ordinary magnitude (|x| < 2^31): only an extreme or non-finite input can make an
-     * output non-finite, so only then are the outputs tested */
+     * output non-finite, so only then (rigidsym_c_planar_arm_tip_with_jacobians_f32_odd) are the outputs tested */
 #if defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    {   /* the outputs' sum is finite only where every output is, so the exact test
-         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
-         * compiler from folding it) runs only where the sum is not: a non-finite output,
-         * or finite ones whose sum overflows */
-        const float s_ = (((p[0] + p[1]) + (p_D_q1[0] + (p_D_q1[1] + p_D_q2[0]))) + ((p_D_q2[1] + p_D_l1[0]) + (p_D_l1[1] + (p_D_l2[0] + p_D_l2[1]))));
-        if (!(s_ - s_ == 0.0f))
-            finite += ((((p[0] - p[0]) + (p[1] - p[1])) + ((p_D_q1[0] - p_D_q1[0]) + ((p_D_q1[1] - p_D_q1[1]) + (p_D_q2[0] - p_D_q2[0])))) + (((p_D_q2[1] - p_D_q2[1]) + (p_D_l1[0] - p_D_l1[0])) + ((p_D_l1[1] - p_D_l1[1]) + ((p_D_l2[0] - p_D_l2[0]) + (p_D_l2[1] - p_D_l2[1])))));
-    }
-#else
-    if (status)
     {   /* the outputs' sum is finite only where every output is, so the exact test
          * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
          * compiler from folding it) runs only where the sum is not: a non-finite output,
