@@ -129,12 +129,16 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_odd(
 {
     const double *args[4];
     const int sizes[4] = {1, 3, 9, 3};
-    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0;
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0, odd_ = 0;
     double finite = 0.0;
     args[0] = &m;
     args[1] = v;
     args[2] = inertia;
     args[3] = omega;
+    for (j = 0; j < 4; ++j)
+        odd_ |= rigidsym_c_extreme_d(args[j], sizes[j]);
+    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
+        status = 0;
     for (j = 0; j < 4; ++j)
         if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
             status = RIGIDSYM_C_NONFINITE_INPUT;
@@ -197,7 +201,21 @@ RIGIDSYM_C_API int rigidsym_c_body_energy(
     double finite = 0.0;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
     uint64_t odd = 0;
-#if RIGIDSYM_C_VECTOR
+#if RIGIDSYM_C_SSE2
+    {   /* the range test of every input component, 2 per SSE2 register */
+        __m128i mx_ = _mm_setzero_si128(), mn_ = _mm_set1_epi16(0x7fff);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&m, *&v[0])), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadu_pd(v + 1)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadu_pd(inertia)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadu_pd(inertia + 2)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadu_pd(inertia + 4)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadu_pd(inertia + 6)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&inertia[8], *&omega[0])), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadu_pd(omega + 1)), &mx_, &mn_);
+        if (RIGIDSYM_C_Q_ODD_D(mx_, mn_))
+            return rigidsym_c_body_energy_odd(m, v, inertia, omega, T);
+    }
+#elif RIGIDSYM_C_VECTOR
     {   /* the range test of every input component, 2 per vector register */
         rigidsym_c_vd oddv_ = {0, 0};
         {
@@ -374,12 +392,16 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_f32_odd(
 {
     const float *args[4];
     const int sizes[4] = {1, 3, 9, 3};
-    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0;
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0, odd_ = 0;
     float finite = 0.0f;
     args[0] = &m;
     args[1] = v;
     args[2] = inertia;
     args[3] = omega;
+    for (j = 0; j < 4; ++j)
+        odd_ |= rigidsym_c_extreme_f(args[j], sizes[j]);
+    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
+        status = 0;
     for (j = 0; j < 4; ++j)
         if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
             status = RIGIDSYM_C_NONFINITE_INPUT;
@@ -438,7 +460,17 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_f32(
     float finite = 0.0f;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
     uint32_t odd = 0;
-#if RIGIDSYM_C_VECTOR
+#if RIGIDSYM_C_SSE2
+    {   /* the range test of every input component, 4 per SSE2 register */
+        __m128i mx_ = _mm_setzero_si128(), mn_ = _mm_set1_epi16(0x7fff);
+        rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&m, *&v[0], *&v[1], *&v[2])), &mx_, &mn_);
+        rigidsym_c_q_f(_mm_castps_si128(_mm_loadu_ps(inertia)), &mx_, &mn_);
+        rigidsym_c_q_f(_mm_castps_si128(_mm_loadu_ps(inertia + 4)), &mx_, &mn_);
+        rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&inertia[8], *&omega[0], *&omega[1], *&omega[2])), &mx_, &mn_);
+        if (RIGIDSYM_C_Q_ODD_F(mx_, mn_))
+            return rigidsym_c_body_energy_f32_odd(m, v, inertia, omega, T);
+    }
+#elif RIGIDSYM_C_VECTOR
     {   /* the range test of every input component, 4 per vector register */
         rigidsym_c_vf oddv_ = {0, 0, 0, 0};
         {
@@ -735,12 +767,16 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_with_jacobians_odd(
 {
     const double *args[4];
     const int sizes[4] = {1, 3, 9, 3};
-    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0;
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0, odd_ = 0;
     double finite = 0.0;
     args[0] = &m;
     args[1] = v;
     args[2] = inertia;
     args[3] = omega;
+    for (j = 0; j < 4; ++j)
+        odd_ |= rigidsym_c_extreme_d(args[j], sizes[j]);
+    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
+        status = 0;
     for (j = 0; j < 4; ++j)
         if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
             status = RIGIDSYM_C_NONFINITE_INPUT;
@@ -854,7 +890,21 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians(
     double finite = 0.0;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
     uint64_t odd = 0;
-#if RIGIDSYM_C_VECTOR
+#if RIGIDSYM_C_SSE2
+    {   /* the range test of every input component, 2 per SSE2 register */
+        __m128i mx_ = _mm_setzero_si128(), mn_ = _mm_set1_epi16(0x7fff);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&m, *&v[0])), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadu_pd(v + 1)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadu_pd(inertia)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadu_pd(inertia + 2)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadu_pd(inertia + 4)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadu_pd(inertia + 6)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&inertia[8], *&omega[0])), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadu_pd(omega + 1)), &mx_, &mn_);
+        if (RIGIDSYM_C_Q_ODD_D(mx_, mn_))
+            return rigidsym_c_body_energy_with_jacobians_odd(m, v, inertia, omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
+    }
+#elif RIGIDSYM_C_VECTOR
     {   /* the range test of every input component, 2 per vector register */
         rigidsym_c_vd oddv_ = {0, 0};
         {
@@ -1113,12 +1163,16 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_with_jacobians_f32_odd(
 {
     const float *args[4];
     const int sizes[4] = {1, 3, 9, 3};
-    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0;
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0, odd_ = 0;
     float finite = 0.0f;
     args[0] = &m;
     args[1] = v;
     args[2] = inertia;
     args[3] = omega;
+    for (j = 0; j < 4; ++j)
+        odd_ |= rigidsym_c_extreme_f(args[j], sizes[j]);
+    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
+        status = 0;
     for (j = 0; j < 4; ++j)
         if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
             status = RIGIDSYM_C_NONFINITE_INPUT;
@@ -1228,7 +1282,17 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians_f32(
     float finite = 0.0f;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
     uint32_t odd = 0;
-#if RIGIDSYM_C_VECTOR
+#if RIGIDSYM_C_SSE2
+    {   /* the range test of every input component, 4 per SSE2 register */
+        __m128i mx_ = _mm_setzero_si128(), mn_ = _mm_set1_epi16(0x7fff);
+        rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&m, *&v[0], *&v[1], *&v[2])), &mx_, &mn_);
+        rigidsym_c_q_f(_mm_castps_si128(_mm_loadu_ps(inertia)), &mx_, &mn_);
+        rigidsym_c_q_f(_mm_castps_si128(_mm_loadu_ps(inertia + 4)), &mx_, &mn_);
+        rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&inertia[8], *&omega[0], *&omega[1], *&omega[2])), &mx_, &mn_);
+        if (RIGIDSYM_C_Q_ODD_F(mx_, mn_))
+            return rigidsym_c_body_energy_with_jacobians_f32_odd(m, v, inertia, omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
+    }
+#elif RIGIDSYM_C_VECTOR
     {   /* the range test of every input component, 4 per vector register */
         rigidsym_c_vf oddv_ = {0, 0, 0, 0};
         {

@@ -165,13 +165,17 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_odd(
 {
     const double *args[5];
     const int sizes[5] = {9, 1, 3, 3, 3};
-    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0;
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0, odd_ = 0;
     double finite = 0.0;
     args[0] = I_C;
     args[1] = &m;
     args[2] = omega;
     args[3] = omega_dot;
     args[4] = c_ddot;
+    for (j = 0; j < 5; ++j)
+        odd_ |= rigidsym_c_extreme_d(args[j], sizes[j]);
+    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
+        status = 0;
     for (j = 0; j < 5; ++j)
         if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
             status = RIGIDSYM_C_NONFINITE_INPUT;
@@ -250,7 +254,23 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench(
     double finite = 0.0;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
     uint64_t odd = 0;
-#if RIGIDSYM_C_VECTOR
+#if RIGIDSYM_C_SSE2
+    {   /* the range test of every input component, 2 per SSE2 register */
+        __m128i mx_ = _mm_setzero_si128(), mn_ = _mm_set1_epi16(0x7fff);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadu_pd(I_C)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadu_pd(I_C + 2)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadu_pd(I_C + 4)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadu_pd(I_C + 6)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&I_C[8], *&m)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadu_pd(omega)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&omega[2], *&omega_dot[0])), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadu_pd(omega_dot + 1)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadu_pd(c_ddot)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&c_ddot[2], 0.0)), &mx_, &mn_);
+        if (RIGIDSYM_C_Q_ODD_D(mx_, mn_))
+            return rigidsym_c_newton_euler_wrench_odd(I_C, m, omega, omega_dot, c_ddot, w);
+    }
+#elif RIGIDSYM_C_VECTOR
     {   /* the range test of every input component, 2 per vector register */
         rigidsym_c_vd oddv_ = {0, 0};
         oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(I_C));
@@ -470,13 +490,17 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_f32_odd(
 {
     const float *args[5];
     const int sizes[5] = {9, 1, 3, 3, 3};
-    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0;
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0, odd_ = 0;
     float finite = 0.0f;
     args[0] = I_C;
     args[1] = &m;
     args[2] = omega;
     args[3] = omega_dot;
     args[4] = c_ddot;
+    for (j = 0; j < 5; ++j)
+        odd_ |= rigidsym_c_extreme_f(args[j], sizes[j]);
+    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
+        status = 0;
     for (j = 0; j < 5; ++j)
         if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
             status = RIGIDSYM_C_NONFINITE_INPUT;
@@ -551,7 +575,18 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_f32(
     float finite = 0.0f;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
     uint32_t odd = 0;
-#if RIGIDSYM_C_VECTOR
+#if RIGIDSYM_C_SSE2
+    {   /* the range test of every input component, 4 per SSE2 register */
+        __m128i mx_ = _mm_setzero_si128(), mn_ = _mm_set1_epi16(0x7fff);
+        rigidsym_c_q_f(_mm_castps_si128(_mm_loadu_ps(I_C)), &mx_, &mn_);
+        rigidsym_c_q_f(_mm_castps_si128(_mm_loadu_ps(I_C + 4)), &mx_, &mn_);
+        rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&I_C[8], *&m, *&omega[0], *&omega[1])), &mx_, &mn_);
+        rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&omega[2], *&omega_dot[0], *&omega_dot[1], *&omega_dot[2])), &mx_, &mn_);
+        rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&c_ddot[0], *&c_ddot[1], *&c_ddot[2], 0.0f)), &mx_, &mn_);
+        if (RIGIDSYM_C_Q_ODD_F(mx_, mn_))
+            return rigidsym_c_newton_euler_wrench_f32_odd(I_C, m, omega, omega_dot, c_ddot, w);
+    }
+#elif RIGIDSYM_C_VECTOR
     {   /* the range test of every input component, 4 per vector register */
         rigidsym_c_vf oddv_ = {0, 0, 0, 0};
         oddv_ |= rigidsym_c_odd_vf(rigidsym_c_load_vf(I_C));
@@ -1118,13 +1153,17 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_with_jacobians_odd(
 {
     const double *args[5];
     const int sizes[5] = {9, 1, 3, 3, 3};
-    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0;
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0, odd_ = 0;
     double finite = 0.0;
     args[0] = I_C;
     args[1] = &m;
     args[2] = omega;
     args[3] = omega_dot;
     args[4] = c_ddot;
+    for (j = 0; j < 5; ++j)
+        odd_ |= rigidsym_c_extreme_d(args[j], sizes[j]);
+    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
+        status = 0;
     for (j = 0; j < 5; ++j)
         if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
             status = RIGIDSYM_C_NONFINITE_INPUT;
@@ -1452,7 +1491,23 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians(
     double finite = 0.0;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
     uint64_t odd = 0;
-#if RIGIDSYM_C_VECTOR
+#if RIGIDSYM_C_SSE2
+    {   /* the range test of every input component, 2 per SSE2 register */
+        __m128i mx_ = _mm_setzero_si128(), mn_ = _mm_set1_epi16(0x7fff);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadu_pd(I_C)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadu_pd(I_C + 2)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadu_pd(I_C + 4)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadu_pd(I_C + 6)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&I_C[8], *&m)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadu_pd(omega)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&omega[2], *&omega_dot[0])), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadu_pd(omega_dot + 1)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadu_pd(c_ddot)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&c_ddot[2], 0.0)), &mx_, &mn_);
+        if (RIGIDSYM_C_Q_ODD_D(mx_, mn_))
+            return rigidsym_c_newton_euler_wrench_with_jacobians_odd(I_C, m, omega, omega_dot, c_ddot, w, w_D_I_C, w_D_m, w_D_omega, w_D_omega_dot, w_D_c_ddot);
+    }
+#elif RIGIDSYM_C_VECTOR
     {   /* the range test of every input component, 2 per vector register */
         rigidsym_c_vd oddv_ = {0, 0};
         oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(I_C));
@@ -1965,13 +2020,17 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_with_jacobians_f32_odd
 {
     const float *args[5];
     const int sizes[5] = {9, 1, 3, 3, 3};
-    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0;
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0, odd_ = 0;
     float finite = 0.0f;
     args[0] = I_C;
     args[1] = &m;
     args[2] = omega;
     args[3] = omega_dot;
     args[4] = c_ddot;
+    for (j = 0; j < 5; ++j)
+        odd_ |= rigidsym_c_extreme_f(args[j], sizes[j]);
+    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
+        status = 0;
     for (j = 0; j < 5; ++j)
         if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
             status = RIGIDSYM_C_NONFINITE_INPUT;
@@ -2295,7 +2354,18 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians_f32(
     float finite = 0.0f;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
     uint32_t odd = 0;
-#if RIGIDSYM_C_VECTOR
+#if RIGIDSYM_C_SSE2
+    {   /* the range test of every input component, 4 per SSE2 register */
+        __m128i mx_ = _mm_setzero_si128(), mn_ = _mm_set1_epi16(0x7fff);
+        rigidsym_c_q_f(_mm_castps_si128(_mm_loadu_ps(I_C)), &mx_, &mn_);
+        rigidsym_c_q_f(_mm_castps_si128(_mm_loadu_ps(I_C + 4)), &mx_, &mn_);
+        rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&I_C[8], *&m, *&omega[0], *&omega[1])), &mx_, &mn_);
+        rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&omega[2], *&omega_dot[0], *&omega_dot[1], *&omega_dot[2])), &mx_, &mn_);
+        rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&c_ddot[0], *&c_ddot[1], *&c_ddot[2], 0.0f)), &mx_, &mn_);
+        if (RIGIDSYM_C_Q_ODD_F(mx_, mn_))
+            return rigidsym_c_newton_euler_wrench_with_jacobians_f32_odd(I_C, m, omega, omega_dot, c_ddot, w, w_D_I_C, w_D_m, w_D_omega, w_D_omega_dot, w_D_c_ddot);
+    }
+#elif RIGIDSYM_C_VECTOR
     {   /* the range test of every input component, 4 per vector register */
         rigidsym_c_vf oddv_ = {0, 0, 0, 0};
         oddv_ |= rigidsym_c_odd_vf(rigidsym_c_load_vf(I_C));

@@ -108,12 +108,16 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_odd(
 {
     const double *args[4];
     const int sizes[4] = {1, 1, 1, 1};
-    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0;
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0, odd_ = 0;
     double finite = 0.0;
     args[0] = &q1;
     args[1] = &q2;
     args[2] = &l1;
     args[3] = &l2;
+    for (j = 0; j < 4; ++j)
+        odd_ |= rigidsym_c_extreme_d(args[j], sizes[j]);
+    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
+        status = 0;
     for (j = 0; j < 4; ++j)
         if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
             status = RIGIDSYM_C_NONFINITE_INPUT;
@@ -163,7 +167,15 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip(
     double finite = 0.0;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
     uint64_t odd = 0;
-#if RIGIDSYM_C_VECTOR
+#if RIGIDSYM_C_SSE2
+    {   /* the range test of every input component, 2 per SSE2 register */
+        __m128i mx_ = _mm_setzero_si128(), mn_ = _mm_set1_epi16(0x7fff);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&q1, *&q2)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&l1, *&l2)), &mx_, &mn_);
+        if (RIGIDSYM_C_Q_ODD_D(mx_, mn_))
+            return rigidsym_c_planar_arm_tip_odd(q1, q2, l1, l2, p);
+    }
+#elif RIGIDSYM_C_VECTOR
     {   /* the range test of every input component, 2 per vector register */
         rigidsym_c_vd oddv_ = {0, 0};
         {
@@ -307,12 +319,16 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_f32_odd(
 {
     const float *args[4];
     const int sizes[4] = {1, 1, 1, 1};
-    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0;
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0, odd_ = 0;
     float finite = 0.0f;
     args[0] = &q1;
     args[1] = &q2;
     args[2] = &l1;
     args[3] = &l2;
+    for (j = 0; j < 4; ++j)
+        odd_ |= rigidsym_c_extreme_f(args[j], sizes[j]);
+    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
+        status = 0;
     for (j = 0; j < 4; ++j)
         if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
             status = RIGIDSYM_C_NONFINITE_INPUT;
@@ -358,7 +374,14 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_f32(
     float finite = 0.0f;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
     uint32_t odd = 0;
-#if RIGIDSYM_C_VECTOR
+#if RIGIDSYM_C_SSE2
+    {   /* the range test of every input component, 4 per SSE2 register */
+        __m128i mx_ = _mm_setzero_si128(), mn_ = _mm_set1_epi16(0x7fff);
+        rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&q1, *&q2, *&l1, *&l2)), &mx_, &mn_);
+        if (RIGIDSYM_C_Q_ODD_F(mx_, mn_))
+            return rigidsym_c_planar_arm_tip_f32_odd(q1, q2, l1, l2, p);
+    }
+#elif RIGIDSYM_C_VECTOR
     {   /* the range test of every input component, 4 per vector register */
         rigidsym_c_vf oddv_ = {0, 0, 0, 0};
         {
@@ -575,12 +598,16 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_with_jacobians_odd(
 {
     const double *args[4];
     const int sizes[4] = {1, 1, 1, 1};
-    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0;
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0, odd_ = 0;
     double finite = 0.0;
     args[0] = &q1;
     args[1] = &q2;
     args[2] = &l1;
     args[3] = &l2;
+    for (j = 0; j < 4; ++j)
+        odd_ |= rigidsym_c_extreme_d(args[j], sizes[j]);
+    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
+        status = 0;
     for (j = 0; j < 4; ++j)
         if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
             status = RIGIDSYM_C_NONFINITE_INPUT;
@@ -654,7 +681,15 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians(
     double finite = 0.0;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
     uint64_t odd = 0;
-#if RIGIDSYM_C_VECTOR
+#if RIGIDSYM_C_SSE2
+    {   /* the range test of every input component, 2 per SSE2 register */
+        __m128i mx_ = _mm_setzero_si128(), mn_ = _mm_set1_epi16(0x7fff);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&q1, *&q2)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&l1, *&l2)), &mx_, &mn_);
+        if (RIGIDSYM_C_Q_ODD_D(mx_, mn_))
+            return rigidsym_c_planar_arm_tip_with_jacobians_odd(q1, q2, l1, l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
+    }
+#elif RIGIDSYM_C_VECTOR
     {   /* the range test of every input component, 2 per vector register */
         rigidsym_c_vd oddv_ = {0, 0};
         {
@@ -842,12 +877,16 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_with_jacobians_f32_odd(
 {
     const float *args[4];
     const int sizes[4] = {1, 1, 1, 1};
-    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0;
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0, odd_ = 0;
     float finite = 0.0f;
     args[0] = &q1;
     args[1] = &q2;
     args[2] = &l1;
     args[3] = &l2;
+    for (j = 0; j < 4; ++j)
+        odd_ |= rigidsym_c_extreme_f(args[j], sizes[j]);
+    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
+        status = 0;
     for (j = 0; j < 4; ++j)
         if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
             status = RIGIDSYM_C_NONFINITE_INPUT;
@@ -917,7 +956,14 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians_f32(
     float finite = 0.0f;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
     uint32_t odd = 0;
-#if RIGIDSYM_C_VECTOR
+#if RIGIDSYM_C_SSE2
+    {   /* the range test of every input component, 4 per SSE2 register */
+        __m128i mx_ = _mm_setzero_si128(), mn_ = _mm_set1_epi16(0x7fff);
+        rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&q1, *&q2, *&l1, *&l2)), &mx_, &mn_);
+        if (RIGIDSYM_C_Q_ODD_F(mx_, mn_))
+            return rigidsym_c_planar_arm_tip_with_jacobians_f32_odd(q1, q2, l1, l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
+    }
+#elif RIGIDSYM_C_VECTOR
     {   /* the range test of every input component, 4 per vector register */
         rigidsym_c_vf oddv_ = {0, 0, 0, 0};
         {

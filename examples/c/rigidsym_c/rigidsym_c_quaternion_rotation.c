@@ -73,9 +73,13 @@ static RIGIDSYM_C_COLD int rigidsym_c_quaternion_rotation_odd(
 {
     const double *args[1];
     const int sizes[1] = {4};
-    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0;
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0, odd_ = 0;
     double finite = 0.0;
     args[0] = q;
+    for (j = 0; j < 1; ++j)
+        odd_ |= rigidsym_c_extreme_d(args[j], sizes[j]);
+    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
+        status = 0;
     for (j = 0; j < 1; ++j)
         if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
             status = RIGIDSYM_C_NONFINITE_INPUT;
@@ -140,7 +144,15 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation(
     double finite = 0.0;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
     uint64_t odd = 0;
-#if RIGIDSYM_C_VECTOR
+#if RIGIDSYM_C_SSE2
+    {   /* the range test of every input component, 2 per SSE2 register */
+        __m128i mx_ = _mm_setzero_si128(), mn_ = _mm_set1_epi16(0x7fff);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadu_pd(q)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadu_pd(q + 2)), &mx_, &mn_);
+        if (RIGIDSYM_C_Q_ODD_D(mx_, mn_))
+            return rigidsym_c_quaternion_rotation_odd(q, Q);
+    }
+#elif RIGIDSYM_C_VECTOR
     {   /* the range test of every input component, 2 per vector register */
         rigidsym_c_vd oddv_ = {0, 0};
         oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(q));
@@ -245,9 +257,13 @@ static RIGIDSYM_C_COLD int rigidsym_c_quaternion_rotation_f32_odd(
 {
     const float *args[1];
     const int sizes[1] = {4};
-    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0;
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0, odd_ = 0;
     float finite = 0.0f;
     args[0] = q;
+    for (j = 0; j < 1; ++j)
+        odd_ |= rigidsym_c_extreme_f(args[j], sizes[j]);
+    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
+        status = 0;
     for (j = 0; j < 1; ++j)
         if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
             status = RIGIDSYM_C_NONFINITE_INPUT;
@@ -308,7 +324,14 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_f32(
     float finite = 0.0f;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
     uint32_t odd = 0;
-#if RIGIDSYM_C_VECTOR
+#if RIGIDSYM_C_SSE2
+    {   /* the range test of every input component, 4 per SSE2 register */
+        __m128i mx_ = _mm_setzero_si128(), mn_ = _mm_set1_epi16(0x7fff);
+        rigidsym_c_q_f(_mm_castps_si128(_mm_loadu_ps(q)), &mx_, &mn_);
+        if (RIGIDSYM_C_Q_ODD_F(mx_, mn_))
+            return rigidsym_c_quaternion_rotation_f32_odd(q, Q);
+    }
+#elif RIGIDSYM_C_VECTOR
     {   /* the range test of every input component, 4 per vector register */
         rigidsym_c_vf oddv_ = {0, 0, 0, 0};
         oddv_ |= rigidsym_c_odd_vf(rigidsym_c_load_vf(q));
@@ -544,9 +567,13 @@ static RIGIDSYM_C_COLD int rigidsym_c_quaternion_rotation_with_jacobians_odd(
 {
     const double *args[1];
     const int sizes[1] = {4};
-    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0;
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0, odd_ = 0;
     double finite = 0.0;
     args[0] = q;
+    for (j = 0; j < 1; ++j)
+        odd_ |= rigidsym_c_extreme_d(args[j], sizes[j]);
+    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
+        status = 0;
     for (j = 0; j < 1; ++j)
         if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
             status = RIGIDSYM_C_NONFINITE_INPUT;
@@ -689,7 +716,15 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_with_jacobians(
     double finite = 0.0;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
     uint64_t odd = 0;
-#if RIGIDSYM_C_VECTOR
+#if RIGIDSYM_C_SSE2
+    {   /* the range test of every input component, 2 per SSE2 register */
+        __m128i mx_ = _mm_setzero_si128(), mn_ = _mm_set1_epi16(0x7fff);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadu_pd(q)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadu_pd(q + 2)), &mx_, &mn_);
+        if (RIGIDSYM_C_Q_ODD_D(mx_, mn_))
+            return rigidsym_c_quaternion_rotation_with_jacobians_odd(q, Q, Q_D_q);
+    }
+#elif RIGIDSYM_C_VECTOR
     {   /* the range test of every input component, 2 per vector register */
         rigidsym_c_vd oddv_ = {0, 0};
         oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(q));
@@ -875,9 +910,13 @@ static RIGIDSYM_C_COLD int rigidsym_c_quaternion_rotation_with_jacobians_f32_odd
 {
     const float *args[1];
     const int sizes[1] = {4};
-    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0;
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0, odd_ = 0;
     float finite = 0.0f;
     args[0] = q;
+    for (j = 0; j < 1; ++j)
+        odd_ |= rigidsym_c_extreme_f(args[j], sizes[j]);
+    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
+        status = 0;
     for (j = 0; j < 1; ++j)
         if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
             status = RIGIDSYM_C_NONFINITE_INPUT;
@@ -1016,7 +1055,14 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_with_jacobians_f32(
     float finite = 0.0f;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
     uint32_t odd = 0;
-#if RIGIDSYM_C_VECTOR
+#if RIGIDSYM_C_SSE2
+    {   /* the range test of every input component, 4 per SSE2 register */
+        __m128i mx_ = _mm_setzero_si128(), mn_ = _mm_set1_epi16(0x7fff);
+        rigidsym_c_q_f(_mm_castps_si128(_mm_loadu_ps(q)), &mx_, &mn_);
+        if (RIGIDSYM_C_Q_ODD_F(mx_, mn_))
+            return rigidsym_c_quaternion_rotation_with_jacobians_f32_odd(q, Q, Q_D_q);
+    }
+#elif RIGIDSYM_C_VECTOR
     {   /* the range test of every input component, 4 per vector register */
         rigidsym_c_vf oddv_ = {0, 0, 0, 0};
         oddv_ |= rigidsym_c_odd_vf(rigidsym_c_load_vf(q));

@@ -84,10 +84,14 @@ static RIGIDSYM_C_COLD int rigidsym_c_rotation_from_natural_invariants_odd(
 {
     const double *args[2];
     const int sizes[2] = {3, 1};
-    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0;
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0, odd_ = 0;
     double finite = 0.0;
     args[0] = e;
     args[1] = &phi;
+    for (j = 0; j < 2; ++j)
+        odd_ |= rigidsym_c_extreme_d(args[j], sizes[j]);
+    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
+        status = 0;
     for (j = 0; j < 2; ++j)
         if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
             status = RIGIDSYM_C_NONFINITE_INPUT;
@@ -160,7 +164,15 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants(
     double finite = 0.0;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
     uint64_t odd = 0;
-#if RIGIDSYM_C_VECTOR
+#if RIGIDSYM_C_SSE2
+    {   /* the range test of every input component, 2 per SSE2 register */
+        __m128i mx_ = _mm_setzero_si128(), mn_ = _mm_set1_epi16(0x7fff);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadu_pd(e)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&e[2], *&phi)), &mx_, &mn_);
+        if (RIGIDSYM_C_Q_ODD_D(mx_, mn_))
+            return rigidsym_c_rotation_from_natural_invariants_odd(e, phi, Q);
+    }
+#elif RIGIDSYM_C_VECTOR
     {   /* the range test of every input component, 2 per vector register */
         rigidsym_c_vd oddv_ = {0, 0};
         oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(e));
@@ -279,10 +291,14 @@ static RIGIDSYM_C_COLD int rigidsym_c_rotation_from_natural_invariants_f32_odd(
 {
     const float *args[2];
     const int sizes[2] = {3, 1};
-    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0;
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0, odd_ = 0;
     float finite = 0.0f;
     args[0] = e;
     args[1] = &phi;
+    for (j = 0; j < 2; ++j)
+        odd_ |= rigidsym_c_extreme_f(args[j], sizes[j]);
+    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
+        status = 0;
     for (j = 0; j < 2; ++j)
         if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
             status = RIGIDSYM_C_NONFINITE_INPUT;
@@ -351,7 +367,14 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_f32(
     float finite = 0.0f;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
     uint32_t odd = 0;
-#if RIGIDSYM_C_VECTOR
+#if RIGIDSYM_C_SSE2
+    {   /* the range test of every input component, 4 per SSE2 register */
+        __m128i mx_ = _mm_setzero_si128(), mn_ = _mm_set1_epi16(0x7fff);
+        rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&e[0], *&e[1], *&e[2], *&phi)), &mx_, &mn_);
+        if (RIGIDSYM_C_Q_ODD_F(mx_, mn_))
+            return rigidsym_c_rotation_from_natural_invariants_f32_odd(e, phi, Q);
+    }
+#elif RIGIDSYM_C_VECTOR
     {   /* the range test of every input component, 4 per vector register */
         rigidsym_c_vf oddv_ = {0, 0, 0, 0};
         {
@@ -619,10 +642,14 @@ static RIGIDSYM_C_COLD int rigidsym_c_rotation_from_natural_invariants_with_jaco
 {
     const double *args[2];
     const int sizes[2] = {3, 1};
-    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0;
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0, odd_ = 0;
     double finite = 0.0;
     args[0] = e;
     args[1] = &phi;
+    for (j = 0; j < 2; ++j)
+        odd_ |= rigidsym_c_extreme_d(args[j], sizes[j]);
+    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
+        status = 0;
     for (j = 0; j < 2; ++j)
         if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
             status = RIGIDSYM_C_NONFINITE_INPUT;
@@ -779,7 +806,15 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_with_jacobians(
     double finite = 0.0;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
     uint64_t odd = 0;
-#if RIGIDSYM_C_VECTOR
+#if RIGIDSYM_C_SSE2
+    {   /* the range test of every input component, 2 per SSE2 register */
+        __m128i mx_ = _mm_setzero_si128(), mn_ = _mm_set1_epi16(0x7fff);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadu_pd(e)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&e[2], *&phi)), &mx_, &mn_);
+        if (RIGIDSYM_C_Q_ODD_D(mx_, mn_))
+            return rigidsym_c_rotation_from_natural_invariants_with_jacobians_odd(e, phi, Q, Q_D_e, Q_D_phi);
+    }
+#elif RIGIDSYM_C_VECTOR
     {   /* the range test of every input component, 2 per vector register */
         rigidsym_c_vd oddv_ = {0, 0};
         oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(e));
@@ -988,10 +1023,14 @@ static RIGIDSYM_C_COLD int rigidsym_c_rotation_from_natural_invariants_with_jaco
 {
     const float *args[2];
     const int sizes[2] = {3, 1};
-    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0;
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0, odd_ = 0;
     float finite = 0.0f;
     args[0] = e;
     args[1] = &phi;
+    for (j = 0; j < 2; ++j)
+        odd_ |= rigidsym_c_extreme_f(args[j], sizes[j]);
+    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
+        status = 0;
     for (j = 0; j < 2; ++j)
         if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
             status = RIGIDSYM_C_NONFINITE_INPUT;
@@ -1144,7 +1183,14 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_with_jacobians_f3
     float finite = 0.0f;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
     uint32_t odd = 0;
-#if RIGIDSYM_C_VECTOR
+#if RIGIDSYM_C_SSE2
+    {   /* the range test of every input component, 4 per SSE2 register */
+        __m128i mx_ = _mm_setzero_si128(), mn_ = _mm_set1_epi16(0x7fff);
+        rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&e[0], *&e[1], *&e[2], *&phi)), &mx_, &mn_);
+        if (RIGIDSYM_C_Q_ODD_F(mx_, mn_))
+            return rigidsym_c_rotation_from_natural_invariants_with_jacobians_f32_odd(e, phi, Q, Q_D_e, Q_D_phi);
+    }
+#elif RIGIDSYM_C_VECTOR
     {   /* the range test of every input component, 4 per vector register */
         rigidsym_c_vf oddv_ = {0, 0, 0, 0};
         {

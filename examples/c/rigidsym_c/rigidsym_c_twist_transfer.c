@@ -125,11 +125,15 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_odd(
 {
     const double *args[3];
     const int sizes[3] = {6, 3, 3};
-    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0;
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0, odd_ = 0;
     double finite = 0.0;
     args[0] = t_A;
     args[1] = a;
     args[2] = p;
+    for (j = 0; j < 3; ++j)
+        odd_ |= rigidsym_c_extreme_d(args[j], sizes[j]);
+    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
+        status = 0;
     for (j = 0; j < 3; ++j)
         if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
             status = RIGIDSYM_C_NONFINITE_INPUT;
@@ -200,7 +204,19 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer(
     double finite = 0.0;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
     uint64_t odd = 0;
-#if RIGIDSYM_C_VECTOR
+#if RIGIDSYM_C_SSE2
+    {   /* the range test of every input component, 2 per SSE2 register */
+        __m128i mx_ = _mm_setzero_si128(), mn_ = _mm_set1_epi16(0x7fff);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadu_pd(t_A)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadu_pd(t_A + 2)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadu_pd(t_A + 4)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadu_pd(a)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&a[2], *&p[0])), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadu_pd(p + 1)), &mx_, &mn_);
+        if (RIGIDSYM_C_Q_ODD_D(mx_, mn_))
+            return rigidsym_c_twist_transfer_odd(t_A, a, p, t_P);
+    }
+#elif RIGIDSYM_C_VECTOR
     {   /* the range test of every input component, 2 per vector register */
         rigidsym_c_vd oddv_ = {0, 0};
         oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(t_A));
@@ -368,11 +384,15 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_f32_odd(
 {
     const float *args[3];
     const int sizes[3] = {6, 3, 3};
-    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0;
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0, odd_ = 0;
     float finite = 0.0f;
     args[0] = t_A;
     args[1] = a;
     args[2] = p;
+    for (j = 0; j < 3; ++j)
+        odd_ |= rigidsym_c_extreme_f(args[j], sizes[j]);
+    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
+        status = 0;
     for (j = 0; j < 3; ++j)
         if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
             status = RIGIDSYM_C_NONFINITE_INPUT;
@@ -439,7 +459,16 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_f32(
     float finite = 0.0f;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
     uint32_t odd = 0;
-#if RIGIDSYM_C_VECTOR
+#if RIGIDSYM_C_SSE2
+    {   /* the range test of every input component, 4 per SSE2 register */
+        __m128i mx_ = _mm_setzero_si128(), mn_ = _mm_set1_epi16(0x7fff);
+        rigidsym_c_q_f(_mm_castps_si128(_mm_loadu_ps(t_A)), &mx_, &mn_);
+        rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&t_A[4], *&t_A[5], *&a[0], *&a[1])), &mx_, &mn_);
+        rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&a[2], *&p[0], *&p[1], *&p[2])), &mx_, &mn_);
+        if (RIGIDSYM_C_Q_ODD_F(mx_, mn_))
+            return rigidsym_c_twist_transfer_f32_odd(t_A, a, p, t_P);
+    }
+#elif RIGIDSYM_C_VECTOR
     {   /* the range test of every input component, 4 per vector register */
         rigidsym_c_vf oddv_ = {0, 0, 0, 0};
         oddv_ |= rigidsym_c_odd_vf(rigidsym_c_load_vf(t_A));
@@ -831,11 +860,15 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_with_jacobians_odd(
 {
     const double *args[3];
     const int sizes[3] = {6, 3, 3};
-    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0;
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0, odd_ = 0;
     double finite = 0.0;
     args[0] = t_A;
     args[1] = a;
     args[2] = p;
+    for (j = 0; j < 3; ++j)
+        odd_ |= rigidsym_c_extreme_d(args[j], sizes[j]);
+    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
+        status = 0;
     for (j = 0; j < 3; ++j)
         if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
             status = RIGIDSYM_C_NONFINITE_INPUT;
@@ -1056,7 +1089,19 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_with_jacobians(
     double finite = 0.0;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
     uint64_t odd = 0;
-#if RIGIDSYM_C_VECTOR
+#if RIGIDSYM_C_SSE2
+    {   /* the range test of every input component, 2 per SSE2 register */
+        __m128i mx_ = _mm_setzero_si128(), mn_ = _mm_set1_epi16(0x7fff);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadu_pd(t_A)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadu_pd(t_A + 2)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadu_pd(t_A + 4)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadu_pd(a)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&a[2], *&p[0])), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadu_pd(p + 1)), &mx_, &mn_);
+        if (RIGIDSYM_C_Q_ODD_D(mx_, mn_))
+            return rigidsym_c_twist_transfer_with_jacobians_odd(t_A, a, p, t_P, t_P_D_t_A, t_P_D_a, t_P_D_p);
+    }
+#elif RIGIDSYM_C_VECTOR
     {   /* the range test of every input component, 2 per vector register */
         rigidsym_c_vd oddv_ = {0, 0};
         oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(t_A));
@@ -1398,11 +1443,15 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_with_jacobians_f32_odd(
 {
     const float *args[3];
     const int sizes[3] = {6, 3, 3};
-    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0;
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0, odd_ = 0;
     float finite = 0.0f;
     args[0] = t_A;
     args[1] = a;
     args[2] = p;
+    for (j = 0; j < 3; ++j)
+        odd_ |= rigidsym_c_extreme_f(args[j], sizes[j]);
+    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
+        status = 0;
     for (j = 0; j < 3; ++j)
         if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
             status = RIGIDSYM_C_NONFINITE_INPUT;
@@ -1619,7 +1668,16 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_with_jacobians_f32(
     float finite = 0.0f;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
     uint32_t odd = 0;
-#if RIGIDSYM_C_VECTOR
+#if RIGIDSYM_C_SSE2
+    {   /* the range test of every input component, 4 per SSE2 register */
+        __m128i mx_ = _mm_setzero_si128(), mn_ = _mm_set1_epi16(0x7fff);
+        rigidsym_c_q_f(_mm_castps_si128(_mm_loadu_ps(t_A)), &mx_, &mn_);
+        rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&t_A[4], *&t_A[5], *&a[0], *&a[1])), &mx_, &mn_);
+        rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&a[2], *&p[0], *&p[1], *&p[2])), &mx_, &mn_);
+        if (RIGIDSYM_C_Q_ODD_F(mx_, mn_))
+            return rigidsym_c_twist_transfer_with_jacobians_f32_odd(t_A, a, p, t_P, t_P_D_t_A, t_P_D_a, t_P_D_p);
+    }
+#elif RIGIDSYM_C_VECTOR
     {   /* the range test of every input component, 4 per vector register */
         rigidsym_c_vf oddv_ = {0, 0, 0, 0};
         oddv_ |= rigidsym_c_odd_vf(rigidsym_c_load_vf(t_A));
