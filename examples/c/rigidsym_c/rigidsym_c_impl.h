@@ -181,7 +181,12 @@ static inline rigidsym_c_vf rigidsym_c_odd_vf(rigidsym_c_vf b)
  * instruction per register; q costs an and, an add and a shift. The test may flag a
  * component within an eighth of an octave inside an end of the range, which the cold
  * path (<name>_odd) tests again exactly. Measured on twist_transfer (12 components, gcc 12
- * -O2): the test 55 -> 45 instructions per call (benchmarks/c_scalar.py). */
+ * -O2): the test 55 -> 45 instructions per call (benchmarks/c_scalar.py). A register of
+ * doubles is filled by one load per component (movsd and movhpd), not one 16-byte load: a
+ * caller that has just stored its inputs one by one would stall on store forwarding
+ * (measured: quaternion_rotation 21 -> 13.6 ns, kinetic energy 22 -> 13 ns, for 3-7 more
+ * instructions). Floats keep the 16-byte load: four loads cost 6-28 more instructions and
+ * were slower on the wrench and the kinetic energy. */
 #if RIGIDSYM_C_VECTOR && defined(__SSE2__)
 #define RIGIDSYM_C_SSE2 1
 #include <emmintrin.h>

@@ -147,8 +147,8 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation(
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 2 per SSE2 register */
         __m128i mx_ = _mm_setzero_si128(), mn_ = _mm_set1_epi16(0x7fff);
-        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadu_pd(q)), &mx_, &mn_);
-        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadu_pd(q + 2)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadh_pd(_mm_load_sd(q), q + 1)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadh_pd(_mm_load_sd(q + 2), q + 2 + 1)), &mx_, &mn_);
         if (RIGIDSYM_C_Q_ODD_D(mx_, mn_))
             return rigidsym_c_quaternion_rotation_odd(q, Q);
     }
@@ -719,8 +719,8 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_with_jacobians(
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 2 per SSE2 register */
         __m128i mx_ = _mm_setzero_si128(), mn_ = _mm_set1_epi16(0x7fff);
-        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadu_pd(q)), &mx_, &mn_);
-        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadu_pd(q + 2)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadh_pd(_mm_load_sd(q), q + 1)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadh_pd(_mm_load_sd(q + 2), q + 2 + 1)), &mx_, &mn_);
         if (RIGIDSYM_C_Q_ODD_D(mx_, mn_))
             return rigidsym_c_quaternion_rotation_with_jacobians_odd(q, Q, Q_D_q);
     }

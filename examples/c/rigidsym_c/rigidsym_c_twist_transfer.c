@@ -207,12 +207,12 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer(
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 2 per SSE2 register */
         __m128i mx_ = _mm_setzero_si128(), mn_ = _mm_set1_epi16(0x7fff);
-        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadu_pd(t_A)), &mx_, &mn_);
-        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadu_pd(t_A + 2)), &mx_, &mn_);
-        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadu_pd(t_A + 4)), &mx_, &mn_);
-        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadu_pd(a)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadh_pd(_mm_load_sd(t_A), t_A + 1)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadh_pd(_mm_load_sd(t_A + 2), t_A + 2 + 1)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadh_pd(_mm_load_sd(t_A + 4), t_A + 4 + 1)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadh_pd(_mm_load_sd(a), a + 1)), &mx_, &mn_);
         rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&a[2], *&p[0])), &mx_, &mn_);
-        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadu_pd(p + 1)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadh_pd(_mm_load_sd(p + 1), p + 1 + 1)), &mx_, &mn_);
         if (RIGIDSYM_C_Q_ODD_D(mx_, mn_))
             return rigidsym_c_twist_transfer_odd(t_A, a, p, t_P);
     }
@@ -1092,12 +1092,12 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_with_jacobians(
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 2 per SSE2 register */
         __m128i mx_ = _mm_setzero_si128(), mn_ = _mm_set1_epi16(0x7fff);
-        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadu_pd(t_A)), &mx_, &mn_);
-        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadu_pd(t_A + 2)), &mx_, &mn_);
-        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadu_pd(t_A + 4)), &mx_, &mn_);
-        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadu_pd(a)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadh_pd(_mm_load_sd(t_A), t_A + 1)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadh_pd(_mm_load_sd(t_A + 2), t_A + 2 + 1)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadh_pd(_mm_load_sd(t_A + 4), t_A + 4 + 1)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadh_pd(_mm_load_sd(a), a + 1)), &mx_, &mn_);
         rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&a[2], *&p[0])), &mx_, &mn_);
-        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadu_pd(p + 1)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadh_pd(_mm_load_sd(p + 1), p + 1 + 1)), &mx_, &mn_);
         if (RIGIDSYM_C_Q_ODD_D(mx_, mn_))
             return rigidsym_c_twist_transfer_with_jacobians_odd(t_A, a, p, t_P, t_P_D_t_A, t_P_D_a, t_P_D_p);
     }
