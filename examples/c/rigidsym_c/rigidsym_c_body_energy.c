@@ -171,14 +171,9 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_odd(
     {
         T[0] = (0.5)*m*((v_0*v_0) + (v_1*v_1) + (v_2*v_2)) + (0.5)*omega_0*(inertia_00*omega_0 + inertia_10*omega_1 + inertia_20*omega_2) + (0.5)*omega_1*(inertia_01*omega_0 + inertia_11*omega_1 + inertia_21*omega_2) + (0.5)*omega_2*(inertia_02*omega_0 + inertia_12*omega_1 + inertia_22*omega_2);
     }
-    {   /* the outputs' sum is finite only where every output is, so the exact test
-         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
-         * compiler from folding it) runs only where the sum is not: a non-finite output,
-         * or finite ones whose sum overflows */
-        const double s_ = T[0];
-        if (!(s_ - s_ == 0.0))
-            finite += (T[0] - T[0]);
-    }
+    /* x - x is 0 for finite x, NaN otherwise (the guards of rigidsym_c_impl.h keep the
+     * compiler from folding it) */
+    finite += (T[0] - T[0]);
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
@@ -273,14 +268,9 @@ RIGIDSYM_C_API int rigidsym_c_body_energy(
      * ordinary magnitude (|x| < 2^101): only an extreme or non-finite input can make an
      * output non-finite, so only then (rigidsym_c_body_energy_odd) are the outputs tested */
 #if defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    {   /* the outputs' sum is finite only where every output is, so the exact test
-         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
-         * compiler from folding it) runs only where the sum is not: a non-finite output,
-         * or finite ones whose sum overflows */
-        const double s_ = T[0];
-        if (!(s_ - s_ == 0.0))
-            finite += (T[0] - T[0]);
-    }
+    /* x - x is 0 for finite x, NaN otherwise (the guards of rigidsym_c_impl.h keep the
+     * compiler from folding it) */
+    finite += (T[0] - T[0]);
 #endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -430,14 +420,9 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_f32_odd(
     {
         T[0] = (0.5f)*m*((v_0*v_0) + (v_1*v_1) + (v_2*v_2)) + (0.5f)*omega_0*(inertia_00*omega_0 + inertia_10*omega_1 + inertia_20*omega_2) + (0.5f)*omega_1*(inertia_01*omega_0 + inertia_11*omega_1 + inertia_21*omega_2) + (0.5f)*omega_2*(inertia_02*omega_0 + inertia_12*omega_1 + inertia_22*omega_2);
     }
-    {   /* the outputs' sum is finite only where every output is, so the exact test
-         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
-         * compiler from folding it) runs only where the sum is not: a non-finite output,
-         * or finite ones whose sum overflows */
-        const float s_ = T[0];
-        if (!(s_ - s_ == 0.0f))
-            finite += (T[0] - T[0]);
-    }
+    /* x - x is 0 for finite x, NaN otherwise (the guards of rigidsym_c_impl.h keep the
+     * compiler from folding it) */
+    finite += (T[0] - T[0]);
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
@@ -524,14 +509,9 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_f32(
      * ordinary magnitude (|x| < 2^31): only an extreme or non-finite input can make an
      * output non-finite, so only then (rigidsym_c_body_energy_f32_odd) are the outputs tested */
 #if defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    {   /* the outputs' sum is finite only where every output is, so the exact test
-         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
-         * compiler from folding it) runs only where the sum is not: a non-finite output,
-         * or finite ones whose sum overflows */
-        const float s_ = T[0];
-        if (!(s_ - s_ == 0.0f))
-            finite += (T[0] - T[0]);
-    }
+    /* x - x is 0 for finite x, NaN otherwise (the guards of rigidsym_c_impl.h keep the
+     * compiler from folding it) */
+    finite += (T[0] - T[0]);
 #endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
