@@ -114,6 +114,76 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_rescue(
 }
 #endif
 
+
+#if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
+/* rigidsym_c_body_energy where the range test found an odd input (extreme or not finite): the
+ * input bits of the status, the rescue where there is one, else the ordinary evaluation
+ * with its outputs' test. Cold and out of line, reached by a tail call, so that the fast
+ * path of rigidsym_c_body_energy saves no register and makes no call. */
+static RIGIDSYM_C_COLD int rigidsym_c_body_energy_odd(
+    double m,
+    const double v[3],
+    const double inertia[9],
+    const double omega[3],
+    double *T)
+{
+    const double *args[4];
+    const int sizes[4] = {1, 3, 9, 3};
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0, odd_ = 0;
+    double finite = 0.0;
+    args[0] = &m;
+    args[1] = v;
+    args[2] = inertia;
+    args[3] = omega;
+    for (j = 0; j < 4; ++j)
+        odd_ |= rigidsym_c_extreme_d(args[j], sizes[j]);
+    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
+        status = 0;
+    for (j = 0; j < 4; ++j)
+        if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
+            status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_WIDE
+    if (status == RIGIDSYM_C_EXTREME_INPUT)
+        return rigidsym_c_body_energy_wide(m, v, inertia, omega, T);
+#endif
+#if RIGIDSYM_C_RESCALE_D
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
+        const int r_ = rigidsym_c_body_energy_rescue(m, v, inertia, omega, T);
+        if (r_ >= 0)
+            return r_;
+    }
+#endif
+    const double v_0 = v[0];
+    const double v_1 = v[1];
+    const double v_2 = v[2];
+    const double inertia_00 = inertia[0];
+    const double inertia_01 = inertia[1];
+    const double inertia_02 = inertia[2];
+    const double inertia_10 = inertia[3];
+    const double inertia_11 = inertia[4];
+    const double inertia_12 = inertia[5];
+    const double inertia_20 = inertia[6];
+    const double inertia_21 = inertia[7];
+    const double inertia_22 = inertia[8];
+    const double omega_0 = omega[0];
+    const double omega_1 = omega[1];
+    const double omega_2 = omega[2];
+    {
+        T[0] = (0.5)*m*((v_0*v_0) + (v_1*v_1) + (v_2*v_2)) + (0.5)*omega_0*(inertia_00*omega_0 + inertia_10*omega_1 + inertia_20*omega_2) + (0.5)*omega_1*(inertia_01*omega_0 + inertia_11*omega_1 + inertia_21*omega_2) + (0.5)*omega_2*(inertia_02*omega_0 + inertia_12*omega_1 + inertia_22*omega_2);
+    }
+    /* x - x is 0 for finite x, NaN otherwise (the guards of rigidsym_c_impl.h keep the
+     * compiler from folding it) */
+    finite += (T[0] - T[0]);
+    if (finite != finite)
+        status |= RIGIDSYM_C_NONFINITE_RESULT;
+    if (singular) {
+        status |= RIGIDSYM_C_SINGULAR;
+        T[0] = NAN;
+    }
+    return status;
+}
+#endif
+
 RIGIDSYM_C_API int rigidsym_c_body_energy(
     double m,
     const double v[3],
@@ -122,45 +192,59 @@ RIGIDSYM_C_API int rigidsym_c_body_energy(
     double *T)
 
 {
-    uint64_t odd = 0;
     int status = 0, singular = 0;
     double finite = 0.0;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    {   /* the range test of every input component, as one loop (it vectorises) */
-        const double in_[16] = {
-            m, v[0], v[1], v[2], inertia[0], inertia[1], inertia[2], inertia[3], inertia[4],
-            inertia[5], inertia[6], inertia[7], inertia[8], omega[0], omega[1], omega[2]
-        };
-        int j_;
-        for (j_ = 0; j_ < 16; ++j_)
-            RIGIDSYM_C_ODD_D(odd, in_[j_]);
+    uint64_t odd = 0;
+#if RIGIDSYM_C_SSE2
+    {   /* the range test of every input component, 2 per SSE2 register */
+        __m128i mx_ = _mm_setzero_si128(), mn_ = _mm_set1_epi16(0x7fff);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&m, *&v[0])), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadh_pd(_mm_load_sd(v + 1), v + 1 + 1)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadh_pd(_mm_load_sd(inertia), inertia + 1)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadh_pd(_mm_load_sd(inertia + 2), inertia + 2 + 1)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadh_pd(_mm_load_sd(inertia + 4), inertia + 4 + 1)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadh_pd(_mm_load_sd(inertia + 6), inertia + 6 + 1)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&inertia[8], *&omega[0])), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadh_pd(_mm_load_sd(omega + 1), omega + 1 + 1)), &mx_, &mn_);
+        if (RIGIDSYM_C_Q_ODD_D(mx_, mn_))
+            return rigidsym_c_body_energy_odd(m, v, inertia, omega, T);
     }
-    if (odd >> 63) {
-        const double *args[4];
-        const int sizes[4] = {1, 3, 9, 3};
-        int j;
-        args[0] = &m;
-        args[1] = v;
-        args[2] = inertia;
-        args[3] = omega;
-        status = RIGIDSYM_C_EXTREME_INPUT;
-        for (j = 0; j < 4; ++j)
-            if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
-                status = RIGIDSYM_C_NONFINITE_INPUT;
-#if RIGIDSYM_C_WIDE
-        if (status == RIGIDSYM_C_EXTREME_INPUT)
-            return rigidsym_c_body_energy_wide(m, v, inertia, omega, T);
-#endif
-#if RIGIDSYM_C_RESCALE_D
-        if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
-            const int r_ = rigidsym_c_body_energy_rescue(m, v, inertia, omega, T);
-            if (r_ >= 0)
-                return r_;
+#elif RIGIDSYM_C_VECTOR
+    {   /* the range test of every input component, 2 per vector register */
+        rigidsym_c_vd oddv_ = {0, 0};
+        {
+            const rigidsym_c_vd v_ = {rigidsym_c_bits_d(&m), rigidsym_c_bits_d(&v[0])};
+            oddv_ |= rigidsym_c_odd_vd(v_);
         }
-#endif
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(v + 1));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(inertia));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(inertia + 2));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(inertia + 4));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(inertia + 6));
+        {
+            const rigidsym_c_vd v_ = {rigidsym_c_bits_d(&inertia[8]), rigidsym_c_bits_d(&omega[0])};
+            oddv_ |= rigidsym_c_odd_vd(v_);
+        }
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(omega + 1));
+        odd = oddv_[0] | oddv_[1];
     }
 #else
-    (void)odd;
+    {   /* the range test of every input component, one at a time (an argument's
+         * components by a loop: compact code where there are no 16-byte vectors) */
+        int j_;
+        RIGIDSYM_C_ODD_D(odd, m);
+        for (j_ = 0; j_ < 3; ++j_)
+            RIGIDSYM_C_ODD_D(odd, v[j_]);
+        for (j_ = 0; j_ < 9; ++j_)
+            RIGIDSYM_C_ODD_D(odd, inertia[j_]);
+        for (j_ = 0; j_ < 3; ++j_)
+            RIGIDSYM_C_ODD_D(odd, omega[j_]);
+        (void)j_;
+    }
+#endif
+    if (odd >> 63)
+        return rigidsym_c_body_energy_odd(m, v, inertia, omega, T);
 #endif
     const double v_0 = v[0];
     const double v_1 = v[1];
@@ -182,13 +266,11 @@ RIGIDSYM_C_API int rigidsym_c_body_energy(
     }
     /* no division or root, and every output bounded by 2^306 for inputs of
      * ordinary magnitude (|x| < 2^101): only an extreme or non-finite input can make an
-     * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN
-     * otherwise; the guards of rigidsym_c_impl.h keep the compiler from folding it) */
+     * output non-finite, so only then (rigidsym_c_body_energy_odd) are the outputs tested */
 #if defined(RIGIDSYM_C_TRUSTED_INPUTS)
+    /* x - x is 0 for finite x, NaN otherwise (the guards of rigidsym_c_impl.h keep the
+     * compiler from folding it) */
     finite += (T[0] - T[0]);
-#else
-    if (status)
-        finite += (T[0] - T[0]);
 #endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -285,6 +367,72 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_f32_rescue(
 }
 #endif
 
+
+#if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
+/* rigidsym_c_body_energy_f32 where the range test found an odd input (extreme or not finite): the
+ * input bits of the status, the rescue where there is one, else the ordinary evaluation
+ * with its outputs' test. Cold and out of line, reached by a tail call, so that the fast
+ * path of rigidsym_c_body_energy_f32 saves no register and makes no call. */
+static RIGIDSYM_C_COLD int rigidsym_c_body_energy_f32_odd(
+    float m,
+    const float v[3],
+    const float inertia[9],
+    const float omega[3],
+    float *T)
+{
+    const float *args[4];
+    const int sizes[4] = {1, 3, 9, 3};
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0, odd_ = 0;
+    float finite = 0.0f;
+    args[0] = &m;
+    args[1] = v;
+    args[2] = inertia;
+    args[3] = omega;
+    for (j = 0; j < 4; ++j)
+        odd_ |= rigidsym_c_extreme_f(args[j], sizes[j]);
+    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
+        status = 0;
+    for (j = 0; j < 4; ++j)
+        if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
+            status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_RESCALE_F
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
+        const int r_ = rigidsym_c_body_energy_f32_rescue(m, v, inertia, omega, T);
+        if (r_ >= 0)
+            return r_;
+    }
+#endif
+    const float v_0 = v[0];
+    const float v_1 = v[1];
+    const float v_2 = v[2];
+    const float inertia_00 = inertia[0];
+    const float inertia_01 = inertia[1];
+    const float inertia_02 = inertia[2];
+    const float inertia_10 = inertia[3];
+    const float inertia_11 = inertia[4];
+    const float inertia_12 = inertia[5];
+    const float inertia_20 = inertia[6];
+    const float inertia_21 = inertia[7];
+    const float inertia_22 = inertia[8];
+    const float omega_0 = omega[0];
+    const float omega_1 = omega[1];
+    const float omega_2 = omega[2];
+    {
+        T[0] = (0.5f)*m*((v_0*v_0) + (v_1*v_1) + (v_2*v_2)) + (0.5f)*omega_0*(inertia_00*omega_0 + inertia_10*omega_1 + inertia_20*omega_2) + (0.5f)*omega_1*(inertia_01*omega_0 + inertia_11*omega_1 + inertia_21*omega_2) + (0.5f)*omega_2*(inertia_02*omega_0 + inertia_12*omega_1 + inertia_22*omega_2);
+    }
+    /* x - x is 0 for finite x, NaN otherwise (the guards of rigidsym_c_impl.h keep the
+     * compiler from folding it) */
+    finite += (T[0] - T[0]);
+    if (finite != finite)
+        status |= RIGIDSYM_C_NONFINITE_RESULT;
+    if (singular) {
+        status |= RIGIDSYM_C_SINGULAR;
+        T[0] = NAN;
+    }
+    return status;
+}
+#endif
+
 RIGIDSYM_C_API int rigidsym_c_body_energy_f32(
     float m,
     const float v[3],
@@ -293,41 +441,51 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_f32(
     float *T)
 
 {
-    uint32_t odd = 0;
     int status = 0, singular = 0;
     float finite = 0.0f;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    {   /* the range test of every input component, as one loop (it vectorises) */
-        const float in_[16] = {
-            m, v[0], v[1], v[2], inertia[0], inertia[1], inertia[2], inertia[3], inertia[4],
-            inertia[5], inertia[6], inertia[7], inertia[8], omega[0], omega[1], omega[2]
-        };
-        int j_;
-        for (j_ = 0; j_ < 16; ++j_)
-            RIGIDSYM_C_ODD_F(odd, in_[j_]);
+    uint32_t odd = 0;
+#if RIGIDSYM_C_SSE2
+    {   /* the range test of every input component, 4 per SSE2 register */
+        __m128i mx_ = _mm_setzero_si128(), mn_ = _mm_set1_epi16(0x7fff);
+        rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&m, *&v[0], *&v[1], *&v[2])), &mx_, &mn_);
+        rigidsym_c_q_f(_mm_castps_si128(_mm_loadu_ps(inertia)), &mx_, &mn_);
+        rigidsym_c_q_f(_mm_castps_si128(_mm_loadu_ps(inertia + 4)), &mx_, &mn_);
+        rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&inertia[8], *&omega[0], *&omega[1], *&omega[2])), &mx_, &mn_);
+        if (RIGIDSYM_C_Q_ODD_F(mx_, mn_))
+            return rigidsym_c_body_energy_f32_odd(m, v, inertia, omega, T);
     }
-    if (odd >> 31) {
-        const float *args[4];
-        const int sizes[4] = {1, 3, 9, 3};
-        int j;
-        args[0] = &m;
-        args[1] = v;
-        args[2] = inertia;
-        args[3] = omega;
-        status = RIGIDSYM_C_EXTREME_INPUT;
-        for (j = 0; j < 4; ++j)
-            if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
-                status = RIGIDSYM_C_NONFINITE_INPUT;
-#if RIGIDSYM_C_RESCALE_F
-        if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
-            const int r_ = rigidsym_c_body_energy_f32_rescue(m, v, inertia, omega, T);
-            if (r_ >= 0)
-                return r_;
+#elif RIGIDSYM_C_VECTOR
+    {   /* the range test of every input component, 4 per vector register */
+        rigidsym_c_vf oddv_ = {0, 0, 0, 0};
+        {
+            const rigidsym_c_vf v_ = {rigidsym_c_bits_f(&m), rigidsym_c_bits_f(&v[0]), rigidsym_c_bits_f(&v[1]), rigidsym_c_bits_f(&v[2])};
+            oddv_ |= rigidsym_c_odd_vf(v_);
         }
-#endif
+        oddv_ |= rigidsym_c_odd_vf(rigidsym_c_load_vf(inertia));
+        oddv_ |= rigidsym_c_odd_vf(rigidsym_c_load_vf(inertia + 4));
+        {
+            const rigidsym_c_vf v_ = {rigidsym_c_bits_f(&inertia[8]), rigidsym_c_bits_f(&omega[0]), rigidsym_c_bits_f(&omega[1]), rigidsym_c_bits_f(&omega[2])};
+            oddv_ |= rigidsym_c_odd_vf(v_);
+        }
+        odd = oddv_[0] | oddv_[1] | oddv_[2] | oddv_[3];
     }
 #else
-    (void)odd;
+    {   /* the range test of every input component, one at a time (an argument's
+         * components by a loop: compact code where there are no 16-byte vectors) */
+        int j_;
+        RIGIDSYM_C_ODD_F(odd, m);
+        for (j_ = 0; j_ < 3; ++j_)
+            RIGIDSYM_C_ODD_F(odd, v[j_]);
+        for (j_ = 0; j_ < 9; ++j_)
+            RIGIDSYM_C_ODD_F(odd, inertia[j_]);
+        for (j_ = 0; j_ < 3; ++j_)
+            RIGIDSYM_C_ODD_F(odd, omega[j_]);
+        (void)j_;
+    }
+#endif
+    if (odd >> 31)
+        return rigidsym_c_body_energy_f32_odd(m, v, inertia, omega, T);
 #endif
     const float v_0 = v[0];
     const float v_1 = v[1];
@@ -349,13 +507,11 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_f32(
     }
     /* no division or root, and every output bounded by 2^96 for inputs of
      * ordinary magnitude (|x| < 2^31): only an extreme or non-finite input can make an
-     * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN
-     * otherwise; the guards of rigidsym_c_impl.h keep the compiler from folding it) */
+     * output non-finite, so only then (rigidsym_c_body_energy_f32_odd) are the outputs tested */
 #if defined(RIGIDSYM_C_TRUSTED_INPUTS)
+    /* x - x is 0 for finite x, NaN otherwise (the guards of rigidsym_c_impl.h keep the
+     * compiler from folding it) */
     finite += (T[0] - T[0]);
-#else
-    if (status)
-        finite += (T[0] - T[0]);
 #endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -572,6 +728,135 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_with_jacobians_rescue(
 }
 #endif
 
+
+#if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
+/* rigidsym_c_body_energy_with_jacobians where the range test found an odd input (extreme or not finite): the
+ * input bits of the status, the rescue where there is one, else the ordinary evaluation
+ * with its outputs' test. Cold and out of line, reached by a tail call, so that the fast
+ * path of rigidsym_c_body_energy_with_jacobians saves no register and makes no call. */
+static RIGIDSYM_C_COLD int rigidsym_c_body_energy_with_jacobians_odd(
+    double m,
+    const double v[3],
+    const double inertia[9],
+    const double omega[3],
+    double *T,
+    double *T_D_m,
+    double T_D_v[3],
+    double T_D_inertia[9],
+    double T_D_omega[3])
+{
+    const double *args[4];
+    const int sizes[4] = {1, 3, 9, 3};
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0, odd_ = 0;
+    double finite = 0.0;
+    args[0] = &m;
+    args[1] = v;
+    args[2] = inertia;
+    args[3] = omega;
+    for (j = 0; j < 4; ++j)
+        odd_ |= rigidsym_c_extreme_d(args[j], sizes[j]);
+    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
+        status = 0;
+    for (j = 0; j < 4; ++j)
+        if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
+            status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_WIDE
+    if (status == RIGIDSYM_C_EXTREME_INPUT)
+        return rigidsym_c_body_energy_with_jacobians_wide(m, v, inertia, omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
+#endif
+#if RIGIDSYM_C_RESCALE_D
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
+        const int r_ = rigidsym_c_body_energy_with_jacobians_rescue(m, v, inertia, omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
+        if (r_ >= 0)
+            return r_;
+    }
+#endif
+    const double v_0 = v[0];
+    const double v_1 = v[1];
+    const double v_2 = v[2];
+    const double inertia_00 = inertia[0];
+    const double inertia_01 = inertia[1];
+    const double inertia_02 = inertia[2];
+    const double inertia_10 = inertia[3];
+    const double inertia_11 = inertia[4];
+    const double inertia_12 = inertia[5];
+    const double inertia_20 = inertia[6];
+    const double inertia_21 = inertia[7];
+    const double inertia_22 = inertia[8];
+    const double omega_0 = omega[0];
+    const double omega_1 = omega[1];
+    const double omega_2 = omega[2];
+    {
+        const double x0 = (v_0*v_0);
+        const double x1 = (v_1*v_1);
+        const double x2 = (v_2*v_2);
+        const double x3 = inertia_00*omega_0;
+        const double x4 = inertia_10*omega_1;
+        const double x5 = inertia_20*omega_2;
+        const double x6 = (0.5)*omega_0;
+        const double x7 = inertia_01*omega_0;
+        const double x8 = inertia_11*omega_1;
+        const double x9 = inertia_21*omega_2;
+        const double x10 = (0.5)*omega_1;
+        const double x11 = inertia_02*omega_0;
+        const double x12 = inertia_12*omega_1;
+        const double x13 = inertia_22*omega_2;
+        const double x14 = (0.5)*omega_2;
+        const double x15 = omega_1*x6;
+        const double x16 = omega_2*x6;
+        const double x17 = omega_2*x10;
+        T[0] = (0.5)*m*(x0 + x1 + x2) + x10*(x7 + x8 + x9) + x14*(x11 + x12 + x13) + x6*(x3 + x4 + x5);
+        T_D_m[0] = (0.5)*x0 + (0.5)*x1 + (0.5)*x2;
+        T_D_v[0] = m*v_0;
+        T_D_v[1] = m*v_1;
+        T_D_v[2] = m*v_2;
+        T_D_inertia[0] = (0.5)*(omega_0*omega_0);
+        T_D_inertia[1] = x15;
+        T_D_inertia[2] = x16;
+        T_D_inertia[3] = x15;
+        T_D_inertia[4] = (0.5)*(omega_1*omega_1);
+        T_D_inertia[5] = x17;
+        T_D_inertia[6] = x16;
+        T_D_inertia[7] = x17;
+        T_D_inertia[8] = (0.5)*(omega_2*omega_2);
+        T_D_omega[0] = inertia_01*x10 + inertia_02*x14 + x3 + (0.5)*x4 + (0.5)*x5;
+        T_D_omega[1] = inertia_10*x6 + inertia_12*x14 + (0.5)*x7 + x8 + (0.5)*x9;
+        T_D_omega[2] = inertia_20*x6 + inertia_21*x10 + (0.5)*x11 + (0.5)*x12 + x13;
+    }
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const double s_ = ((((T[0] + T_D_m[0]) + (T_D_v[0] + T_D_v[1])) + ((T_D_v[2] + T_D_inertia[0]) + (T_D_inertia[1] + T_D_inertia[2]))) + (((T_D_inertia[3] + T_D_inertia[4]) + (T_D_inertia[5] + T_D_inertia[6])) + ((T_D_inertia[7] + T_D_inertia[8]) + (T_D_omega[0] + (T_D_omega[1] + T_D_omega[2])))));
+        if (!(s_ - s_ == 0.0))
+            finite += (((((T[0] - T[0]) + (T_D_m[0] - T_D_m[0])) + ((T_D_v[0] - T_D_v[0]) + (T_D_v[1] - T_D_v[1]))) + (((T_D_v[2] - T_D_v[2]) + (T_D_inertia[0] - T_D_inertia[0])) + ((T_D_inertia[1] - T_D_inertia[1]) + (T_D_inertia[2] - T_D_inertia[2])))) + ((((T_D_inertia[3] - T_D_inertia[3]) + (T_D_inertia[4] - T_D_inertia[4])) + ((T_D_inertia[5] - T_D_inertia[5]) + (T_D_inertia[6] - T_D_inertia[6]))) + (((T_D_inertia[7] - T_D_inertia[7]) + (T_D_inertia[8] - T_D_inertia[8])) + ((T_D_omega[0] - T_D_omega[0]) + ((T_D_omega[1] - T_D_omega[1]) + (T_D_omega[2] - T_D_omega[2]))))));
+    }
+    if (finite != finite)
+        status |= RIGIDSYM_C_NONFINITE_RESULT;
+    if (singular) {
+        status |= RIGIDSYM_C_SINGULAR;
+        T[0] = NAN;
+        T_D_m[0] = NAN;
+        T_D_v[0] = NAN;
+        T_D_v[1] = NAN;
+        T_D_v[2] = NAN;
+        T_D_inertia[0] = NAN;
+        T_D_inertia[1] = NAN;
+        T_D_inertia[2] = NAN;
+        T_D_inertia[3] = NAN;
+        T_D_inertia[4] = NAN;
+        T_D_inertia[5] = NAN;
+        T_D_inertia[6] = NAN;
+        T_D_inertia[7] = NAN;
+        T_D_inertia[8] = NAN;
+        T_D_omega[0] = NAN;
+        T_D_omega[1] = NAN;
+        T_D_omega[2] = NAN;
+    }
+    return status;
+}
+#endif
+
 RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians(
     double m,
     const double v[3],
@@ -581,45 +866,59 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians(
     double *T_D_m,
     double T_D_v[3],    double T_D_inertia[9],    double T_D_omega[3])
 {
-    uint64_t odd = 0;
     int status = 0, singular = 0;
     double finite = 0.0;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    {   /* the range test of every input component, as one loop (it vectorises) */
-        const double in_[16] = {
-            m, v[0], v[1], v[2], inertia[0], inertia[1], inertia[2], inertia[3], inertia[4],
-            inertia[5], inertia[6], inertia[7], inertia[8], omega[0], omega[1], omega[2]
-        };
-        int j_;
-        for (j_ = 0; j_ < 16; ++j_)
-            RIGIDSYM_C_ODD_D(odd, in_[j_]);
+    uint64_t odd = 0;
+#if RIGIDSYM_C_SSE2
+    {   /* the range test of every input component, 2 per SSE2 register */
+        __m128i mx_ = _mm_setzero_si128(), mn_ = _mm_set1_epi16(0x7fff);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&m, *&v[0])), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadh_pd(_mm_load_sd(v + 1), v + 1 + 1)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadh_pd(_mm_load_sd(inertia), inertia + 1)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadh_pd(_mm_load_sd(inertia + 2), inertia + 2 + 1)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadh_pd(_mm_load_sd(inertia + 4), inertia + 4 + 1)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadh_pd(_mm_load_sd(inertia + 6), inertia + 6 + 1)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&inertia[8], *&omega[0])), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadh_pd(_mm_load_sd(omega + 1), omega + 1 + 1)), &mx_, &mn_);
+        if (RIGIDSYM_C_Q_ODD_D(mx_, mn_))
+            return rigidsym_c_body_energy_with_jacobians_odd(m, v, inertia, omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
     }
-    if (odd >> 63) {
-        const double *args[4];
-        const int sizes[4] = {1, 3, 9, 3};
-        int j;
-        args[0] = &m;
-        args[1] = v;
-        args[2] = inertia;
-        args[3] = omega;
-        status = RIGIDSYM_C_EXTREME_INPUT;
-        for (j = 0; j < 4; ++j)
-            if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
-                status = RIGIDSYM_C_NONFINITE_INPUT;
-#if RIGIDSYM_C_WIDE
-        if (status == RIGIDSYM_C_EXTREME_INPUT)
-            return rigidsym_c_body_energy_with_jacobians_wide(m, v, inertia, omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
-#endif
-#if RIGIDSYM_C_RESCALE_D
-        if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
-            const int r_ = rigidsym_c_body_energy_with_jacobians_rescue(m, v, inertia, omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
-            if (r_ >= 0)
-                return r_;
+#elif RIGIDSYM_C_VECTOR
+    {   /* the range test of every input component, 2 per vector register */
+        rigidsym_c_vd oddv_ = {0, 0};
+        {
+            const rigidsym_c_vd v_ = {rigidsym_c_bits_d(&m), rigidsym_c_bits_d(&v[0])};
+            oddv_ |= rigidsym_c_odd_vd(v_);
         }
-#endif
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(v + 1));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(inertia));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(inertia + 2));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(inertia + 4));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(inertia + 6));
+        {
+            const rigidsym_c_vd v_ = {rigidsym_c_bits_d(&inertia[8]), rigidsym_c_bits_d(&omega[0])};
+            oddv_ |= rigidsym_c_odd_vd(v_);
+        }
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(omega + 1));
+        odd = oddv_[0] | oddv_[1];
     }
 #else
-    (void)odd;
+    {   /* the range test of every input component, one at a time (an argument's
+         * components by a loop: compact code where there are no 16-byte vectors) */
+        int j_;
+        RIGIDSYM_C_ODD_D(odd, m);
+        for (j_ = 0; j_ < 3; ++j_)
+            RIGIDSYM_C_ODD_D(odd, v[j_]);
+        for (j_ = 0; j_ < 9; ++j_)
+            RIGIDSYM_C_ODD_D(odd, inertia[j_]);
+        for (j_ = 0; j_ < 3; ++j_)
+            RIGIDSYM_C_ODD_D(odd, omega[j_]);
+        (void)j_;
+    }
+#endif
+    if (odd >> 63)
+        return rigidsym_c_body_energy_with_jacobians_odd(m, v, inertia, omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
 #endif
     const double v_0 = v[0];
     const double v_1 = v[1];
@@ -675,13 +974,16 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians(
     }
     /* no division or root, and every output bounded by 2^306 for inputs of
      * ordinary magnitude (|x| < 2^101): only an extreme or non-finite input can make an
-     * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN
-     * otherwise; the guards of rigidsym_c_impl.h keep the compiler from folding it) */
+     * output non-finite, so only then (rigidsym_c_body_energy_with_jacobians_odd) are the outputs tested */
 #if defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    finite += (((((T[0] - T[0]) + (T_D_m[0] - T_D_m[0])) + ((T_D_v[0] - T_D_v[0]) + (T_D_v[1] - T_D_v[1]))) + (((T_D_v[2] - T_D_v[2]) + (T_D_inertia[0] - T_D_inertia[0])) + ((T_D_inertia[1] - T_D_inertia[1]) + (T_D_inertia[2] - T_D_inertia[2])))) + ((((T_D_inertia[3] - T_D_inertia[3]) + (T_D_inertia[4] - T_D_inertia[4])) + ((T_D_inertia[5] - T_D_inertia[5]) + (T_D_inertia[6] - T_D_inertia[6]))) + (((T_D_inertia[7] - T_D_inertia[7]) + (T_D_inertia[8] - T_D_inertia[8])) + ((T_D_omega[0] - T_D_omega[0]) + ((T_D_omega[1] - T_D_omega[1]) + (T_D_omega[2] - T_D_omega[2]))))));
-#else
-    if (status)
-        finite += (((((T[0] - T[0]) + (T_D_m[0] - T_D_m[0])) + ((T_D_v[0] - T_D_v[0]) + (T_D_v[1] - T_D_v[1]))) + (((T_D_v[2] - T_D_v[2]) + (T_D_inertia[0] - T_D_inertia[0])) + ((T_D_inertia[1] - T_D_inertia[1]) + (T_D_inertia[2] - T_D_inertia[2])))) + ((((T_D_inertia[3] - T_D_inertia[3]) + (T_D_inertia[4] - T_D_inertia[4])) + ((T_D_inertia[5] - T_D_inertia[5]) + (T_D_inertia[6] - T_D_inertia[6]))) + (((T_D_inertia[7] - T_D_inertia[7]) + (T_D_inertia[8] - T_D_inertia[8])) + ((T_D_omega[0] - T_D_omega[0]) + ((T_D_omega[1] - T_D_omega[1]) + (T_D_omega[2] - T_D_omega[2]))))));
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const double s_ = ((((T[0] + T_D_m[0]) + (T_D_v[0] + T_D_v[1])) + ((T_D_v[2] + T_D_inertia[0]) + (T_D_inertia[1] + T_D_inertia[2]))) + (((T_D_inertia[3] + T_D_inertia[4]) + (T_D_inertia[5] + T_D_inertia[6])) + ((T_D_inertia[7] + T_D_inertia[8]) + (T_D_omega[0] + (T_D_omega[1] + T_D_omega[2])))));
+        if (!(s_ - s_ == 0.0))
+            finite += (((((T[0] - T[0]) + (T_D_m[0] - T_D_m[0])) + ((T_D_v[0] - T_D_v[0]) + (T_D_v[1] - T_D_v[1]))) + (((T_D_v[2] - T_D_v[2]) + (T_D_inertia[0] - T_D_inertia[0])) + ((T_D_inertia[1] - T_D_inertia[1]) + (T_D_inertia[2] - T_D_inertia[2])))) + ((((T_D_inertia[3] - T_D_inertia[3]) + (T_D_inertia[4] - T_D_inertia[4])) + ((T_D_inertia[5] - T_D_inertia[5]) + (T_D_inertia[6] - T_D_inertia[6]))) + (((T_D_inertia[7] - T_D_inertia[7]) + (T_D_inertia[8] - T_D_inertia[8])) + ((T_D_omega[0] - T_D_omega[0]) + ((T_D_omega[1] - T_D_omega[1]) + (T_D_omega[2] - T_D_omega[2]))))));
+    }
 #endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -822,6 +1124,131 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_with_jacobians_f32_rescue(
 }
 #endif
 
+
+#if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
+/* rigidsym_c_body_energy_with_jacobians_f32 where the range test found an odd input (extreme or not finite): the
+ * input bits of the status, the rescue where there is one, else the ordinary evaluation
+ * with its outputs' test. Cold and out of line, reached by a tail call, so that the fast
+ * path of rigidsym_c_body_energy_with_jacobians_f32 saves no register and makes no call. */
+static RIGIDSYM_C_COLD int rigidsym_c_body_energy_with_jacobians_f32_odd(
+    float m,
+    const float v[3],
+    const float inertia[9],
+    const float omega[3],
+    float *T,
+    float *T_D_m,
+    float T_D_v[3],
+    float T_D_inertia[9],
+    float T_D_omega[3])
+{
+    const float *args[4];
+    const int sizes[4] = {1, 3, 9, 3};
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0, odd_ = 0;
+    float finite = 0.0f;
+    args[0] = &m;
+    args[1] = v;
+    args[2] = inertia;
+    args[3] = omega;
+    for (j = 0; j < 4; ++j)
+        odd_ |= rigidsym_c_extreme_f(args[j], sizes[j]);
+    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
+        status = 0;
+    for (j = 0; j < 4; ++j)
+        if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
+            status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_RESCALE_F
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
+        const int r_ = rigidsym_c_body_energy_with_jacobians_f32_rescue(m, v, inertia, omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
+        if (r_ >= 0)
+            return r_;
+    }
+#endif
+    const float v_0 = v[0];
+    const float v_1 = v[1];
+    const float v_2 = v[2];
+    const float inertia_00 = inertia[0];
+    const float inertia_01 = inertia[1];
+    const float inertia_02 = inertia[2];
+    const float inertia_10 = inertia[3];
+    const float inertia_11 = inertia[4];
+    const float inertia_12 = inertia[5];
+    const float inertia_20 = inertia[6];
+    const float inertia_21 = inertia[7];
+    const float inertia_22 = inertia[8];
+    const float omega_0 = omega[0];
+    const float omega_1 = omega[1];
+    const float omega_2 = omega[2];
+    {
+        const float x0 = (v_0*v_0);
+        const float x1 = (v_1*v_1);
+        const float x2 = (v_2*v_2);
+        const float x3 = inertia_00*omega_0;
+        const float x4 = inertia_10*omega_1;
+        const float x5 = inertia_20*omega_2;
+        const float x6 = (0.5f)*omega_0;
+        const float x7 = inertia_01*omega_0;
+        const float x8 = inertia_11*omega_1;
+        const float x9 = inertia_21*omega_2;
+        const float x10 = (0.5f)*omega_1;
+        const float x11 = inertia_02*omega_0;
+        const float x12 = inertia_12*omega_1;
+        const float x13 = inertia_22*omega_2;
+        const float x14 = (0.5f)*omega_2;
+        const float x15 = omega_1*x6;
+        const float x16 = omega_2*x6;
+        const float x17 = omega_2*x10;
+        T[0] = (0.5f)*m*(x0 + x1 + x2) + x10*(x7 + x8 + x9) + x14*(x11 + x12 + x13) + x6*(x3 + x4 + x5);
+        T_D_m[0] = (0.5f)*x0 + (0.5f)*x1 + (0.5f)*x2;
+        T_D_v[0] = m*v_0;
+        T_D_v[1] = m*v_1;
+        T_D_v[2] = m*v_2;
+        T_D_inertia[0] = (0.5f)*(omega_0*omega_0);
+        T_D_inertia[1] = x15;
+        T_D_inertia[2] = x16;
+        T_D_inertia[3] = x15;
+        T_D_inertia[4] = (0.5f)*(omega_1*omega_1);
+        T_D_inertia[5] = x17;
+        T_D_inertia[6] = x16;
+        T_D_inertia[7] = x17;
+        T_D_inertia[8] = (0.5f)*(omega_2*omega_2);
+        T_D_omega[0] = inertia_01*x10 + inertia_02*x14 + x3 + (0.5f)*x4 + (0.5f)*x5;
+        T_D_omega[1] = inertia_10*x6 + inertia_12*x14 + (0.5f)*x7 + x8 + (0.5f)*x9;
+        T_D_omega[2] = inertia_20*x6 + inertia_21*x10 + (0.5f)*x11 + (0.5f)*x12 + x13;
+    }
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const float s_ = ((((T[0] + T_D_m[0]) + (T_D_v[0] + T_D_v[1])) + ((T_D_v[2] + T_D_inertia[0]) + (T_D_inertia[1] + T_D_inertia[2]))) + (((T_D_inertia[3] + T_D_inertia[4]) + (T_D_inertia[5] + T_D_inertia[6])) + ((T_D_inertia[7] + T_D_inertia[8]) + (T_D_omega[0] + (T_D_omega[1] + T_D_omega[2])))));
+        if (!(s_ - s_ == 0.0f))
+            finite += (((((T[0] - T[0]) + (T_D_m[0] - T_D_m[0])) + ((T_D_v[0] - T_D_v[0]) + (T_D_v[1] - T_D_v[1]))) + (((T_D_v[2] - T_D_v[2]) + (T_D_inertia[0] - T_D_inertia[0])) + ((T_D_inertia[1] - T_D_inertia[1]) + (T_D_inertia[2] - T_D_inertia[2])))) + ((((T_D_inertia[3] - T_D_inertia[3]) + (T_D_inertia[4] - T_D_inertia[4])) + ((T_D_inertia[5] - T_D_inertia[5]) + (T_D_inertia[6] - T_D_inertia[6]))) + (((T_D_inertia[7] - T_D_inertia[7]) + (T_D_inertia[8] - T_D_inertia[8])) + ((T_D_omega[0] - T_D_omega[0]) + ((T_D_omega[1] - T_D_omega[1]) + (T_D_omega[2] - T_D_omega[2]))))));
+    }
+    if (finite != finite)
+        status |= RIGIDSYM_C_NONFINITE_RESULT;
+    if (singular) {
+        status |= RIGIDSYM_C_SINGULAR;
+        T[0] = NAN;
+        T_D_m[0] = NAN;
+        T_D_v[0] = NAN;
+        T_D_v[1] = NAN;
+        T_D_v[2] = NAN;
+        T_D_inertia[0] = NAN;
+        T_D_inertia[1] = NAN;
+        T_D_inertia[2] = NAN;
+        T_D_inertia[3] = NAN;
+        T_D_inertia[4] = NAN;
+        T_D_inertia[5] = NAN;
+        T_D_inertia[6] = NAN;
+        T_D_inertia[7] = NAN;
+        T_D_inertia[8] = NAN;
+        T_D_omega[0] = NAN;
+        T_D_omega[1] = NAN;
+        T_D_omega[2] = NAN;
+    }
+    return status;
+}
+#endif
+
 RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians_f32(
     float m,
     const float v[3],
@@ -831,41 +1258,51 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians_f32(
     float *T_D_m,
     float T_D_v[3],    float T_D_inertia[9],    float T_D_omega[3])
 {
-    uint32_t odd = 0;
     int status = 0, singular = 0;
     float finite = 0.0f;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    {   /* the range test of every input component, as one loop (it vectorises) */
-        const float in_[16] = {
-            m, v[0], v[1], v[2], inertia[0], inertia[1], inertia[2], inertia[3], inertia[4],
-            inertia[5], inertia[6], inertia[7], inertia[8], omega[0], omega[1], omega[2]
-        };
-        int j_;
-        for (j_ = 0; j_ < 16; ++j_)
-            RIGIDSYM_C_ODD_F(odd, in_[j_]);
+    uint32_t odd = 0;
+#if RIGIDSYM_C_SSE2
+    {   /* the range test of every input component, 4 per SSE2 register */
+        __m128i mx_ = _mm_setzero_si128(), mn_ = _mm_set1_epi16(0x7fff);
+        rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&m, *&v[0], *&v[1], *&v[2])), &mx_, &mn_);
+        rigidsym_c_q_f(_mm_castps_si128(_mm_loadu_ps(inertia)), &mx_, &mn_);
+        rigidsym_c_q_f(_mm_castps_si128(_mm_loadu_ps(inertia + 4)), &mx_, &mn_);
+        rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&inertia[8], *&omega[0], *&omega[1], *&omega[2])), &mx_, &mn_);
+        if (RIGIDSYM_C_Q_ODD_F(mx_, mn_))
+            return rigidsym_c_body_energy_with_jacobians_f32_odd(m, v, inertia, omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
     }
-    if (odd >> 31) {
-        const float *args[4];
-        const int sizes[4] = {1, 3, 9, 3};
-        int j;
-        args[0] = &m;
-        args[1] = v;
-        args[2] = inertia;
-        args[3] = omega;
-        status = RIGIDSYM_C_EXTREME_INPUT;
-        for (j = 0; j < 4; ++j)
-            if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
-                status = RIGIDSYM_C_NONFINITE_INPUT;
-#if RIGIDSYM_C_RESCALE_F
-        if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
-            const int r_ = rigidsym_c_body_energy_with_jacobians_f32_rescue(m, v, inertia, omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
-            if (r_ >= 0)
-                return r_;
+#elif RIGIDSYM_C_VECTOR
+    {   /* the range test of every input component, 4 per vector register */
+        rigidsym_c_vf oddv_ = {0, 0, 0, 0};
+        {
+            const rigidsym_c_vf v_ = {rigidsym_c_bits_f(&m), rigidsym_c_bits_f(&v[0]), rigidsym_c_bits_f(&v[1]), rigidsym_c_bits_f(&v[2])};
+            oddv_ |= rigidsym_c_odd_vf(v_);
         }
-#endif
+        oddv_ |= rigidsym_c_odd_vf(rigidsym_c_load_vf(inertia));
+        oddv_ |= rigidsym_c_odd_vf(rigidsym_c_load_vf(inertia + 4));
+        {
+            const rigidsym_c_vf v_ = {rigidsym_c_bits_f(&inertia[8]), rigidsym_c_bits_f(&omega[0]), rigidsym_c_bits_f(&omega[1]), rigidsym_c_bits_f(&omega[2])};
+            oddv_ |= rigidsym_c_odd_vf(v_);
+        }
+        odd = oddv_[0] | oddv_[1] | oddv_[2] | oddv_[3];
     }
 #else
-    (void)odd;
+    {   /* the range test of every input component, one at a time (an argument's
+         * components by a loop: compact code where there are no 16-byte vectors) */
+        int j_;
+        RIGIDSYM_C_ODD_F(odd, m);
+        for (j_ = 0; j_ < 3; ++j_)
+            RIGIDSYM_C_ODD_F(odd, v[j_]);
+        for (j_ = 0; j_ < 9; ++j_)
+            RIGIDSYM_C_ODD_F(odd, inertia[j_]);
+        for (j_ = 0; j_ < 3; ++j_)
+            RIGIDSYM_C_ODD_F(odd, omega[j_]);
+        (void)j_;
+    }
+#endif
+    if (odd >> 31)
+        return rigidsym_c_body_energy_with_jacobians_f32_odd(m, v, inertia, omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
 #endif
     const float v_0 = v[0];
     const float v_1 = v[1];
@@ -921,13 +1358,16 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians_f32(
     }
     /* no division or root, and every output bounded by 2^96 for inputs of
      * ordinary magnitude (|x| < 2^31): only an extreme or non-finite input can make an
-     * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN
-     * otherwise; the guards of rigidsym_c_impl.h keep the compiler from folding it) */
+     * output non-finite, so only then (rigidsym_c_body_energy_with_jacobians_f32_odd) are the outputs tested */
 #if defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    finite += (((((T[0] - T[0]) + (T_D_m[0] - T_D_m[0])) + ((T_D_v[0] - T_D_v[0]) + (T_D_v[1] - T_D_v[1]))) + (((T_D_v[2] - T_D_v[2]) + (T_D_inertia[0] - T_D_inertia[0])) + ((T_D_inertia[1] - T_D_inertia[1]) + (T_D_inertia[2] - T_D_inertia[2])))) + ((((T_D_inertia[3] - T_D_inertia[3]) + (T_D_inertia[4] - T_D_inertia[4])) + ((T_D_inertia[5] - T_D_inertia[5]) + (T_D_inertia[6] - T_D_inertia[6]))) + (((T_D_inertia[7] - T_D_inertia[7]) + (T_D_inertia[8] - T_D_inertia[8])) + ((T_D_omega[0] - T_D_omega[0]) + ((T_D_omega[1] - T_D_omega[1]) + (T_D_omega[2] - T_D_omega[2]))))));
-#else
-    if (status)
-        finite += (((((T[0] - T[0]) + (T_D_m[0] - T_D_m[0])) + ((T_D_v[0] - T_D_v[0]) + (T_D_v[1] - T_D_v[1]))) + (((T_D_v[2] - T_D_v[2]) + (T_D_inertia[0] - T_D_inertia[0])) + ((T_D_inertia[1] - T_D_inertia[1]) + (T_D_inertia[2] - T_D_inertia[2])))) + ((((T_D_inertia[3] - T_D_inertia[3]) + (T_D_inertia[4] - T_D_inertia[4])) + ((T_D_inertia[5] - T_D_inertia[5]) + (T_D_inertia[6] - T_D_inertia[6]))) + (((T_D_inertia[7] - T_D_inertia[7]) + (T_D_inertia[8] - T_D_inertia[8])) + ((T_D_omega[0] - T_D_omega[0]) + ((T_D_omega[1] - T_D_omega[1]) + (T_D_omega[2] - T_D_omega[2]))))));
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const float s_ = ((((T[0] + T_D_m[0]) + (T_D_v[0] + T_D_v[1])) + ((T_D_v[2] + T_D_inertia[0]) + (T_D_inertia[1] + T_D_inertia[2]))) + (((T_D_inertia[3] + T_D_inertia[4]) + (T_D_inertia[5] + T_D_inertia[6])) + ((T_D_inertia[7] + T_D_inertia[8]) + (T_D_omega[0] + (T_D_omega[1] + T_D_omega[2])))));
+        if (!(s_ - s_ == 0.0f))
+            finite += (((((T[0] - T[0]) + (T_D_m[0] - T_D_m[0])) + ((T_D_v[0] - T_D_v[0]) + (T_D_v[1] - T_D_v[1]))) + (((T_D_v[2] - T_D_v[2]) + (T_D_inertia[0] - T_D_inertia[0])) + ((T_D_inertia[1] - T_D_inertia[1]) + (T_D_inertia[2] - T_D_inertia[2])))) + ((((T_D_inertia[3] - T_D_inertia[3]) + (T_D_inertia[4] - T_D_inertia[4])) + ((T_D_inertia[5] - T_D_inertia[5]) + (T_D_inertia[6] - T_D_inertia[6]))) + (((T_D_inertia[7] - T_D_inertia[7]) + (T_D_inertia[8] - T_D_inertia[8])) + ((T_D_omega[0] - T_D_omega[0]) + ((T_D_omega[1] - T_D_omega[1]) + (T_D_omega[2] - T_D_omega[2]))))));
+    }
 #endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;

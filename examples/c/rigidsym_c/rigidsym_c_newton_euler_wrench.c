@@ -149,6 +149,99 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_rescue(
 }
 #endif
 
+
+#if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
+/* rigidsym_c_newton_euler_wrench where the range test found an odd input (extreme or not finite): the
+ * input bits of the status, the rescue where there is one, else the ordinary evaluation
+ * with its outputs' test. Cold and out of line, reached by a tail call, so that the fast
+ * path of rigidsym_c_newton_euler_wrench saves no register and makes no call. */
+static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_odd(
+    const double I_C[9],
+    double m,
+    const double omega[3],
+    const double omega_dot[3],
+    const double c_ddot[3],
+    double w[6])
+{
+    const double *args[5];
+    const int sizes[5] = {9, 1, 3, 3, 3};
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0, odd_ = 0;
+    double finite = 0.0;
+    args[0] = I_C;
+    args[1] = &m;
+    args[2] = omega;
+    args[3] = omega_dot;
+    args[4] = c_ddot;
+    for (j = 0; j < 5; ++j)
+        odd_ |= rigidsym_c_extreme_d(args[j], sizes[j]);
+    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
+        status = 0;
+    for (j = 0; j < 5; ++j)
+        if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
+            status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_WIDE
+    if (status == RIGIDSYM_C_EXTREME_INPUT)
+        return rigidsym_c_newton_euler_wrench_wide(I_C, m, omega, omega_dot, c_ddot, w);
+#endif
+#if RIGIDSYM_C_RESCALE_D
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
+        const int r_ = rigidsym_c_newton_euler_wrench_rescue(I_C, m, omega, omega_dot, c_ddot, w);
+        if (r_ >= 0)
+            return r_;
+    }
+#endif
+    const double I_C_00 = I_C[0];
+    const double I_C_01 = I_C[1];
+    const double I_C_02 = I_C[2];
+    const double I_C_10 = I_C[3];
+    const double I_C_11 = I_C[4];
+    const double I_C_12 = I_C[5];
+    const double I_C_20 = I_C[6];
+    const double I_C_21 = I_C[7];
+    const double I_C_22 = I_C[8];
+    const double omega_0 = omega[0];
+    const double omega_1 = omega[1];
+    const double omega_2 = omega[2];
+    const double omega_dot_0 = omega_dot[0];
+    const double omega_dot_1 = omega_dot[1];
+    const double omega_dot_2 = omega_dot[2];
+    const double c_ddot_0 = c_ddot[0];
+    const double c_ddot_1 = c_ddot[1];
+    const double c_ddot_2 = c_ddot[2];
+    {
+        const double x0 = I_C_20*omega_0 + I_C_21*omega_1 + I_C_22*omega_2;
+        const double x1 = I_C_10*omega_0 + I_C_11*omega_1 + I_C_12*omega_2;
+        const double x2 = I_C_00*omega_0 + I_C_01*omega_1 + I_C_02*omega_2;
+        w[0] = I_C_00*omega_dot_0 + I_C_01*omega_dot_1 + I_C_02*omega_dot_2 + omega_1*x0 - omega_2*x1;
+        w[1] = I_C_10*omega_dot_0 + I_C_11*omega_dot_1 + I_C_12*omega_dot_2 - omega_0*x0 + omega_2*x2;
+        w[2] = I_C_20*omega_dot_0 + I_C_21*omega_dot_1 + I_C_22*omega_dot_2 + omega_0*x1 - omega_1*x2;
+        w[3] = c_ddot_0*m;
+        w[4] = c_ddot_1*m;
+        w[5] = c_ddot_2*m;
+    }
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const double s_ = ((w[0] + (w[1] + w[2])) + (w[3] + (w[4] + w[5])));
+        if (!(s_ - s_ == 0.0))
+            finite += (((w[0] - w[0]) + ((w[1] - w[1]) + (w[2] - w[2]))) + ((w[3] - w[3]) + ((w[4] - w[4]) + (w[5] - w[5]))));
+    }
+    if (finite != finite)
+        status |= RIGIDSYM_C_NONFINITE_RESULT;
+    if (singular) {
+        status |= RIGIDSYM_C_SINGULAR;
+        w[0] = NAN;
+        w[1] = NAN;
+        w[2] = NAN;
+        w[3] = NAN;
+        w[4] = NAN;
+        w[5] = NAN;
+    }
+    return status;
+}
+#endif
+
 RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench(
     const double I_C[9],
     double m,
@@ -157,47 +250,68 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench(
     const double c_ddot[3],
     double w[6])
 {
-    uint64_t odd = 0;
     int status = 0, singular = 0;
     double finite = 0.0;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    {   /* the range test of every input component, as one loop (it vectorises) */
-        const double in_[20] = {
-            I_C[0], I_C[1], I_C[2], I_C[3], I_C[4], I_C[5], I_C[6], I_C[7], I_C[8], m, omega[0],
-            omega[1], omega[2], omega_dot[0], omega_dot[1], omega_dot[2], c_ddot[0], c_ddot[1],
-            c_ddot[2], 0.0
-        };
-        int j_;
-        for (j_ = 0; j_ < 20; ++j_)
-            RIGIDSYM_C_ODD_D(odd, in_[j_]);
+    uint64_t odd = 0;
+#if RIGIDSYM_C_SSE2
+    {   /* the range test of every input component, 2 per SSE2 register */
+        __m128i mx_ = _mm_setzero_si128(), mn_ = _mm_set1_epi16(0x7fff);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadh_pd(_mm_load_sd(I_C), I_C + 1)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadh_pd(_mm_load_sd(I_C + 2), I_C + 2 + 1)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadh_pd(_mm_load_sd(I_C + 4), I_C + 4 + 1)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadh_pd(_mm_load_sd(I_C + 6), I_C + 6 + 1)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&I_C[8], *&m)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadh_pd(_mm_load_sd(omega), omega + 1)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&omega[2], *&omega_dot[0])), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadh_pd(_mm_load_sd(omega_dot + 1), omega_dot + 1 + 1)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadh_pd(_mm_load_sd(c_ddot), c_ddot + 1)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&c_ddot[2], 0.0)), &mx_, &mn_);
+        if (RIGIDSYM_C_Q_ODD_D(mx_, mn_))
+            return rigidsym_c_newton_euler_wrench_odd(I_C, m, omega, omega_dot, c_ddot, w);
     }
-    if (odd >> 63) {
-        const double *args[5];
-        const int sizes[5] = {9, 1, 3, 3, 3};
-        int j;
-        args[0] = I_C;
-        args[1] = &m;
-        args[2] = omega;
-        args[3] = omega_dot;
-        args[4] = c_ddot;
-        status = RIGIDSYM_C_EXTREME_INPUT;
-        for (j = 0; j < 5; ++j)
-            if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
-                status = RIGIDSYM_C_NONFINITE_INPUT;
-#if RIGIDSYM_C_WIDE
-        if (status == RIGIDSYM_C_EXTREME_INPUT)
-            return rigidsym_c_newton_euler_wrench_wide(I_C, m, omega, omega_dot, c_ddot, w);
-#endif
-#if RIGIDSYM_C_RESCALE_D
-        if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
-            const int r_ = rigidsym_c_newton_euler_wrench_rescue(I_C, m, omega, omega_dot, c_ddot, w);
-            if (r_ >= 0)
-                return r_;
+#elif RIGIDSYM_C_VECTOR
+    {   /* the range test of every input component, 2 per vector register */
+        rigidsym_c_vd oddv_ = {0, 0};
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(I_C));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(I_C + 2));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(I_C + 4));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(I_C + 6));
+        {
+            const rigidsym_c_vd v_ = {rigidsym_c_bits_d(&I_C[8]), rigidsym_c_bits_d(&m)};
+            oddv_ |= rigidsym_c_odd_vd(v_);
         }
-#endif
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(omega));
+        {
+            const rigidsym_c_vd v_ = {rigidsym_c_bits_d(&omega[2]), rigidsym_c_bits_d(&omega_dot[0])};
+            oddv_ |= rigidsym_c_odd_vd(v_);
+        }
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(omega_dot + 1));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(c_ddot));
+        {
+            const rigidsym_c_vd v_ = {rigidsym_c_bits_d(&c_ddot[2]), 0};
+            oddv_ |= rigidsym_c_odd_vd(v_);
+        }
+        odd = oddv_[0] | oddv_[1];
     }
 #else
-    (void)odd;
+    {   /* the range test of every input component, one at a time (an argument's
+         * components by a loop: compact code where there are no 16-byte vectors) */
+        int j_;
+        for (j_ = 0; j_ < 9; ++j_)
+            RIGIDSYM_C_ODD_D(odd, I_C[j_]);
+        RIGIDSYM_C_ODD_D(odd, m);
+        for (j_ = 0; j_ < 3; ++j_)
+            RIGIDSYM_C_ODD_D(odd, omega[j_]);
+        for (j_ = 0; j_ < 3; ++j_)
+            RIGIDSYM_C_ODD_D(odd, omega_dot[j_]);
+        for (j_ = 0; j_ < 3; ++j_)
+            RIGIDSYM_C_ODD_D(odd, c_ddot[j_]);
+        (void)j_;
+    }
+#endif
+    if (odd >> 63)
+        return rigidsym_c_newton_euler_wrench_odd(I_C, m, omega, omega_dot, c_ddot, w);
 #endif
     const double I_C_00 = I_C[0];
     const double I_C_01 = I_C[1];
@@ -230,13 +344,16 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench(
     }
     /* no division or root, and every output bounded by 2^307 for inputs of
      * ordinary magnitude (|x| < 2^101): only an extreme or non-finite input can make an
-     * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN
-     * otherwise; the guards of rigidsym_c_impl.h keep the compiler from folding it) */
+     * output non-finite, so only then (rigidsym_c_newton_euler_wrench_odd) are the outputs tested */
 #if defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    finite += (((w[0] - w[0]) + ((w[1] - w[1]) + (w[2] - w[2]))) + ((w[3] - w[3]) + ((w[4] - w[4]) + (w[5] - w[5]))));
-#else
-    if (status)
-        finite += (((w[0] - w[0]) + ((w[1] - w[1]) + (w[2] - w[2]))) + ((w[3] - w[3]) + ((w[4] - w[4]) + (w[5] - w[5]))));
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const double s_ = ((w[0] + (w[1] + w[2])) + (w[3] + (w[4] + w[5])));
+        if (!(s_ - s_ == 0.0))
+            finite += (((w[0] - w[0]) + ((w[1] - w[1]) + (w[2] - w[2]))) + ((w[3] - w[3]) + ((w[4] - w[4]) + (w[5] - w[5]))));
+    }
 #endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -357,6 +474,95 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_f32_rescue(
 }
 #endif
 
+
+#if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
+/* rigidsym_c_newton_euler_wrench_f32 where the range test found an odd input (extreme or not finite): the
+ * input bits of the status, the rescue where there is one, else the ordinary evaluation
+ * with its outputs' test. Cold and out of line, reached by a tail call, so that the fast
+ * path of rigidsym_c_newton_euler_wrench_f32 saves no register and makes no call. */
+static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_f32_odd(
+    const float I_C[9],
+    float m,
+    const float omega[3],
+    const float omega_dot[3],
+    const float c_ddot[3],
+    float w[6])
+{
+    const float *args[5];
+    const int sizes[5] = {9, 1, 3, 3, 3};
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0, odd_ = 0;
+    float finite = 0.0f;
+    args[0] = I_C;
+    args[1] = &m;
+    args[2] = omega;
+    args[3] = omega_dot;
+    args[4] = c_ddot;
+    for (j = 0; j < 5; ++j)
+        odd_ |= rigidsym_c_extreme_f(args[j], sizes[j]);
+    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
+        status = 0;
+    for (j = 0; j < 5; ++j)
+        if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
+            status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_RESCALE_F
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
+        const int r_ = rigidsym_c_newton_euler_wrench_f32_rescue(I_C, m, omega, omega_dot, c_ddot, w);
+        if (r_ >= 0)
+            return r_;
+    }
+#endif
+    const float I_C_00 = I_C[0];
+    const float I_C_01 = I_C[1];
+    const float I_C_02 = I_C[2];
+    const float I_C_10 = I_C[3];
+    const float I_C_11 = I_C[4];
+    const float I_C_12 = I_C[5];
+    const float I_C_20 = I_C[6];
+    const float I_C_21 = I_C[7];
+    const float I_C_22 = I_C[8];
+    const float omega_0 = omega[0];
+    const float omega_1 = omega[1];
+    const float omega_2 = omega[2];
+    const float omega_dot_0 = omega_dot[0];
+    const float omega_dot_1 = omega_dot[1];
+    const float omega_dot_2 = omega_dot[2];
+    const float c_ddot_0 = c_ddot[0];
+    const float c_ddot_1 = c_ddot[1];
+    const float c_ddot_2 = c_ddot[2];
+    {
+        const float x0 = I_C_20*omega_0 + I_C_21*omega_1 + I_C_22*omega_2;
+        const float x1 = I_C_10*omega_0 + I_C_11*omega_1 + I_C_12*omega_2;
+        const float x2 = I_C_00*omega_0 + I_C_01*omega_1 + I_C_02*omega_2;
+        w[0] = I_C_00*omega_dot_0 + I_C_01*omega_dot_1 + I_C_02*omega_dot_2 + omega_1*x0 - omega_2*x1;
+        w[1] = I_C_10*omega_dot_0 + I_C_11*omega_dot_1 + I_C_12*omega_dot_2 - omega_0*x0 + omega_2*x2;
+        w[2] = I_C_20*omega_dot_0 + I_C_21*omega_dot_1 + I_C_22*omega_dot_2 + omega_0*x1 - omega_1*x2;
+        w[3] = c_ddot_0*m;
+        w[4] = c_ddot_1*m;
+        w[5] = c_ddot_2*m;
+    }
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const float s_ = ((w[0] + (w[1] + w[2])) + (w[3] + (w[4] + w[5])));
+        if (!(s_ - s_ == 0.0f))
+            finite += (((w[0] - w[0]) + ((w[1] - w[1]) + (w[2] - w[2]))) + ((w[3] - w[3]) + ((w[4] - w[4]) + (w[5] - w[5]))));
+    }
+    if (finite != finite)
+        status |= RIGIDSYM_C_NONFINITE_RESULT;
+    if (singular) {
+        status |= RIGIDSYM_C_SINGULAR;
+        w[0] = NAN;
+        w[1] = NAN;
+        w[2] = NAN;
+        w[3] = NAN;
+        w[4] = NAN;
+        w[5] = NAN;
+    }
+    return status;
+}
+#endif
+
 RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_f32(
     const float I_C[9],
     float m,
@@ -365,43 +571,58 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_f32(
     const float c_ddot[3],
     float w[6])
 {
-    uint32_t odd = 0;
     int status = 0, singular = 0;
     float finite = 0.0f;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    {   /* the range test of every input component, as one loop (it vectorises) */
-        const float in_[20] = {
-            I_C[0], I_C[1], I_C[2], I_C[3], I_C[4], I_C[5], I_C[6], I_C[7], I_C[8], m, omega[0],
-            omega[1], omega[2], omega_dot[0], omega_dot[1], omega_dot[2], c_ddot[0], c_ddot[1],
-            c_ddot[2], 0.0f
-        };
-        int j_;
-        for (j_ = 0; j_ < 20; ++j_)
-            RIGIDSYM_C_ODD_F(odd, in_[j_]);
+    uint32_t odd = 0;
+#if RIGIDSYM_C_SSE2
+    {   /* the range test of every input component, 4 per SSE2 register */
+        __m128i mx_ = _mm_setzero_si128(), mn_ = _mm_set1_epi16(0x7fff);
+        rigidsym_c_q_f(_mm_castps_si128(_mm_loadu_ps(I_C)), &mx_, &mn_);
+        rigidsym_c_q_f(_mm_castps_si128(_mm_loadu_ps(I_C + 4)), &mx_, &mn_);
+        rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&I_C[8], *&m, *&omega[0], *&omega[1])), &mx_, &mn_);
+        rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&omega[2], *&omega_dot[0], *&omega_dot[1], *&omega_dot[2])), &mx_, &mn_);
+        rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&c_ddot[0], *&c_ddot[1], *&c_ddot[2], 0.0f)), &mx_, &mn_);
+        if (RIGIDSYM_C_Q_ODD_F(mx_, mn_))
+            return rigidsym_c_newton_euler_wrench_f32_odd(I_C, m, omega, omega_dot, c_ddot, w);
     }
-    if (odd >> 31) {
-        const float *args[5];
-        const int sizes[5] = {9, 1, 3, 3, 3};
-        int j;
-        args[0] = I_C;
-        args[1] = &m;
-        args[2] = omega;
-        args[3] = omega_dot;
-        args[4] = c_ddot;
-        status = RIGIDSYM_C_EXTREME_INPUT;
-        for (j = 0; j < 5; ++j)
-            if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
-                status = RIGIDSYM_C_NONFINITE_INPUT;
-#if RIGIDSYM_C_RESCALE_F
-        if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
-            const int r_ = rigidsym_c_newton_euler_wrench_f32_rescue(I_C, m, omega, omega_dot, c_ddot, w);
-            if (r_ >= 0)
-                return r_;
+#elif RIGIDSYM_C_VECTOR
+    {   /* the range test of every input component, 4 per vector register */
+        rigidsym_c_vf oddv_ = {0, 0, 0, 0};
+        oddv_ |= rigidsym_c_odd_vf(rigidsym_c_load_vf(I_C));
+        oddv_ |= rigidsym_c_odd_vf(rigidsym_c_load_vf(I_C + 4));
+        {
+            const rigidsym_c_vf v_ = {rigidsym_c_bits_f(&I_C[8]), rigidsym_c_bits_f(&m), rigidsym_c_bits_f(&omega[0]), rigidsym_c_bits_f(&omega[1])};
+            oddv_ |= rigidsym_c_odd_vf(v_);
         }
-#endif
+        {
+            const rigidsym_c_vf v_ = {rigidsym_c_bits_f(&omega[2]), rigidsym_c_bits_f(&omega_dot[0]), rigidsym_c_bits_f(&omega_dot[1]), rigidsym_c_bits_f(&omega_dot[2])};
+            oddv_ |= rigidsym_c_odd_vf(v_);
+        }
+        {
+            const rigidsym_c_vf v_ = {rigidsym_c_bits_f(&c_ddot[0]), rigidsym_c_bits_f(&c_ddot[1]), rigidsym_c_bits_f(&c_ddot[2]), 0};
+            oddv_ |= rigidsym_c_odd_vf(v_);
+        }
+        odd = oddv_[0] | oddv_[1] | oddv_[2] | oddv_[3];
     }
 #else
-    (void)odd;
+    {   /* the range test of every input component, one at a time (an argument's
+         * components by a loop: compact code where there are no 16-byte vectors) */
+        int j_;
+        for (j_ = 0; j_ < 9; ++j_)
+            RIGIDSYM_C_ODD_F(odd, I_C[j_]);
+        RIGIDSYM_C_ODD_F(odd, m);
+        for (j_ = 0; j_ < 3; ++j_)
+            RIGIDSYM_C_ODD_F(odd, omega[j_]);
+        for (j_ = 0; j_ < 3; ++j_)
+            RIGIDSYM_C_ODD_F(odd, omega_dot[j_]);
+        for (j_ = 0; j_ < 3; ++j_)
+            RIGIDSYM_C_ODD_F(odd, c_ddot[j_]);
+        (void)j_;
+    }
+#endif
+    if (odd >> 31)
+        return rigidsym_c_newton_euler_wrench_f32_odd(I_C, m, omega, omega_dot, c_ddot, w);
 #endif
     const float I_C_00 = I_C[0];
     const float I_C_01 = I_C[1];
@@ -434,13 +655,16 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_f32(
     }
     /* no division or root, and every output bounded by 2^97 for inputs of
      * ordinary magnitude (|x| < 2^31): only an extreme or non-finite input can make an
-     * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN
-     * otherwise; the guards of rigidsym_c_impl.h keep the compiler from folding it) */
+     * output non-finite, so only then (rigidsym_c_newton_euler_wrench_f32_odd) are the outputs tested */
 #if defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    finite += (((w[0] - w[0]) + ((w[1] - w[1]) + (w[2] - w[2]))) + ((w[3] - w[3]) + ((w[4] - w[4]) + (w[5] - w[5]))));
-#else
-    if (status)
-        finite += (((w[0] - w[0]) + ((w[1] - w[1]) + (w[2] - w[2]))) + ((w[3] - w[3]) + ((w[4] - w[4]) + (w[5] - w[5]))));
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const float s_ = ((w[0] + (w[1] + w[2])) + (w[3] + (w[4] + w[5])));
+        if (!(s_ - s_ == 0.0f))
+            finite += (((w[0] - w[0]) + ((w[1] - w[1]) + (w[2] - w[2]))) + ((w[3] - w[3]) + ((w[4] - w[4]) + (w[5] - w[5]))));
+    }
 #endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -908,6 +1132,353 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_with_jacobians_rescue(
 }
 #endif
 
+
+#if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
+/* rigidsym_c_newton_euler_wrench_with_jacobians where the range test found an odd input (extreme or not finite): the
+ * input bits of the status, the rescue where there is one, else the ordinary evaluation
+ * with its outputs' test. Cold and out of line, reached by a tail call, so that the fast
+ * path of rigidsym_c_newton_euler_wrench_with_jacobians saves no register and makes no call. */
+static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_with_jacobians_odd(
+    const double I_C[9],
+    double m,
+    const double omega[3],
+    const double omega_dot[3],
+    const double c_ddot[3],
+    double w[6],
+    double w_D_I_C[54],
+    double w_D_m[6],
+    double w_D_omega[18],
+    double w_D_omega_dot[18],
+    double w_D_c_ddot[18])
+{
+    const double *args[5];
+    const int sizes[5] = {9, 1, 3, 3, 3};
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0, odd_ = 0;
+    double finite = 0.0;
+    args[0] = I_C;
+    args[1] = &m;
+    args[2] = omega;
+    args[3] = omega_dot;
+    args[4] = c_ddot;
+    for (j = 0; j < 5; ++j)
+        odd_ |= rigidsym_c_extreme_d(args[j], sizes[j]);
+    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
+        status = 0;
+    for (j = 0; j < 5; ++j)
+        if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
+            status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_WIDE
+    if (status == RIGIDSYM_C_EXTREME_INPUT)
+        return rigidsym_c_newton_euler_wrench_with_jacobians_wide(I_C, m, omega, omega_dot, c_ddot, w, w_D_I_C, w_D_m, w_D_omega, w_D_omega_dot, w_D_c_ddot);
+#endif
+#if RIGIDSYM_C_RESCALE_D
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
+        const int r_ = rigidsym_c_newton_euler_wrench_with_jacobians_rescue(I_C, m, omega, omega_dot, c_ddot, w, w_D_I_C, w_D_m, w_D_omega, w_D_omega_dot, w_D_c_ddot);
+        if (r_ >= 0)
+            return r_;
+    }
+#endif
+    const double I_C_00 = I_C[0];
+    const double I_C_01 = I_C[1];
+    const double I_C_02 = I_C[2];
+    const double I_C_10 = I_C[3];
+    const double I_C_11 = I_C[4];
+    const double I_C_12 = I_C[5];
+    const double I_C_20 = I_C[6];
+    const double I_C_21 = I_C[7];
+    const double I_C_22 = I_C[8];
+    const double omega_0 = omega[0];
+    const double omega_1 = omega[1];
+    const double omega_2 = omega[2];
+    const double omega_dot_0 = omega_dot[0];
+    const double omega_dot_1 = omega_dot[1];
+    const double omega_dot_2 = omega_dot[2];
+    const double c_ddot_0 = c_ddot[0];
+    const double c_ddot_1 = c_ddot[1];
+    const double c_ddot_2 = c_ddot[2];
+    {
+        const double x0 = I_C_21*omega_1;
+        const double x1 = I_C_20*omega_0;
+        const double x2 = I_C_22*omega_2;
+        const double x3 = x1 + x2;
+        const double x4 = x0 + x3;
+        const double x5 = I_C_12*omega_2;
+        const double x6 = I_C_10*omega_0;
+        const double x7 = I_C_11*omega_1;
+        const double x8 = x6 + x7;
+        const double x9 = x5 + x8;
+        const double x10 = I_C_02*omega_2;
+        const double x11 = I_C_00*omega_0;
+        const double x12 = I_C_01*omega_1;
+        const double x13 = x11 + x12;
+        const double x14 = x10 + x13;
+        const double x15 = omega_0*omega_2;
+        const double x16 = -x15;
+        const double x17 = omega_1*omega_2;
+        const double x18 = -x17;
+        const double x19 = (omega_2*omega_2);
+        const double x20 = omega_0*omega_1;
+        const double x21 = (omega_1*omega_1);
+        const double x22 = (omega_0*omega_0);
+        const double x23 = -x20;
+        w[0] = I_C_00*omega_dot_0 + I_C_01*omega_dot_1 + I_C_02*omega_dot_2 + omega_1*x4 - omega_2*x9;
+        w[1] = I_C_10*omega_dot_0 + I_C_11*omega_dot_1 + I_C_12*omega_dot_2 - omega_0*x4 + omega_2*x14;
+        w[2] = I_C_20*omega_dot_0 + I_C_21*omega_dot_1 + I_C_22*omega_dot_2 + omega_0*x9 - omega_1*x14;
+        w[3] = c_ddot_0*m;
+        w[4] = c_ddot_1*m;
+        w[5] = c_ddot_2*m;
+        w_D_I_C[0] = omega_dot_0;
+        w_D_I_C[1] = omega_dot_1;
+        w_D_I_C[2] = omega_dot_2;
+        w_D_I_C[3] = x16;
+        w_D_I_C[4] = x18;
+        w_D_I_C[5] = -x19;
+        w_D_I_C[6] = x20;
+        w_D_I_C[7] = x21;
+        w_D_I_C[8] = x17;
+        w_D_I_C[9] = x15;
+        w_D_I_C[10] = x17;
+        w_D_I_C[11] = x19;
+        w_D_I_C[12] = omega_dot_0;
+        w_D_I_C[13] = omega_dot_1;
+        w_D_I_C[14] = omega_dot_2;
+        w_D_I_C[15] = -x22;
+        w_D_I_C[16] = x23;
+        w_D_I_C[17] = x16;
+        w_D_I_C[18] = x23;
+        w_D_I_C[19] = -x21;
+        w_D_I_C[20] = x18;
+        w_D_I_C[21] = x22;
+        w_D_I_C[22] = x20;
+        w_D_I_C[23] = x15;
+        w_D_I_C[24] = omega_dot_0;
+        w_D_I_C[25] = omega_dot_1;
+        w_D_I_C[26] = omega_dot_2;
+        w_D_I_C[27] = 0.0;
+        w_D_I_C[28] = 0.0;
+        w_D_I_C[29] = 0.0;
+        w_D_I_C[30] = 0.0;
+        w_D_I_C[31] = 0.0;
+        w_D_I_C[32] = 0.0;
+        w_D_I_C[33] = 0.0;
+        w_D_I_C[34] = 0.0;
+        w_D_I_C[35] = 0.0;
+        w_D_I_C[36] = 0.0;
+        w_D_I_C[37] = 0.0;
+        w_D_I_C[38] = 0.0;
+        w_D_I_C[39] = 0.0;
+        w_D_I_C[40] = 0.0;
+        w_D_I_C[41] = 0.0;
+        w_D_I_C[42] = 0.0;
+        w_D_I_C[43] = 0.0;
+        w_D_I_C[44] = 0.0;
+        w_D_I_C[45] = 0.0;
+        w_D_I_C[46] = 0.0;
+        w_D_I_C[47] = 0.0;
+        w_D_I_C[48] = 0.0;
+        w_D_I_C[49] = 0.0;
+        w_D_I_C[50] = 0.0;
+        w_D_I_C[51] = 0.0;
+        w_D_I_C[52] = 0.0;
+        w_D_I_C[53] = 0.0;
+        w_D_m[0] = 0.0;
+        w_D_m[1] = 0.0;
+        w_D_m[2] = 0.0;
+        w_D_m[3] = c_ddot_0;
+        w_D_m[4] = c_ddot_1;
+        w_D_m[5] = c_ddot_2;
+        w_D_omega[0] = -I_C_10*omega_2 + I_C_20*omega_1;
+        w_D_omega[1] = -I_C_11*omega_2 + 2.0*x0 + x3;
+        w_D_omega[2] = I_C_22*omega_1 - 2.0*x5 - x8;
+        w_D_omega[3] = I_C_00*omega_2 - x0 - 2.0*x1 - x2;
+        w_D_omega[4] = I_C_01*omega_2 - I_C_21*omega_0;
+        w_D_omega[5] = -I_C_22*omega_0 + 2.0*x10 + x13;
+        w_D_omega[6] = -I_C_00*omega_1 + x5 + 2.0*x6 + x7;
+        w_D_omega[7] = I_C_11*omega_0 - x10 - x11 - 2.0*x12;
+        w_D_omega[8] = -I_C_02*omega_1 + I_C_12*omega_0;
+        w_D_omega[9] = 0.0;
+        w_D_omega[10] = 0.0;
+        w_D_omega[11] = 0.0;
+        w_D_omega[12] = 0.0;
+        w_D_omega[13] = 0.0;
+        w_D_omega[14] = 0.0;
+        w_D_omega[15] = 0.0;
+        w_D_omega[16] = 0.0;
+        w_D_omega[17] = 0.0;
+        w_D_omega_dot[0] = I_C_00;
+        w_D_omega_dot[1] = I_C_01;
+        w_D_omega_dot[2] = I_C_02;
+        w_D_omega_dot[3] = I_C_10;
+        w_D_omega_dot[4] = I_C_11;
+        w_D_omega_dot[5] = I_C_12;
+        w_D_omega_dot[6] = I_C_20;
+        w_D_omega_dot[7] = I_C_21;
+        w_D_omega_dot[8] = I_C_22;
+        w_D_omega_dot[9] = 0.0;
+        w_D_omega_dot[10] = 0.0;
+        w_D_omega_dot[11] = 0.0;
+        w_D_omega_dot[12] = 0.0;
+        w_D_omega_dot[13] = 0.0;
+        w_D_omega_dot[14] = 0.0;
+        w_D_omega_dot[15] = 0.0;
+        w_D_omega_dot[16] = 0.0;
+        w_D_omega_dot[17] = 0.0;
+        w_D_c_ddot[0] = 0.0;
+        w_D_c_ddot[1] = 0.0;
+        w_D_c_ddot[2] = 0.0;
+        w_D_c_ddot[3] = 0.0;
+        w_D_c_ddot[4] = 0.0;
+        w_D_c_ddot[5] = 0.0;
+        w_D_c_ddot[6] = 0.0;
+        w_D_c_ddot[7] = 0.0;
+        w_D_c_ddot[8] = 0.0;
+        w_D_c_ddot[9] = m;
+        w_D_c_ddot[10] = 0.0;
+        w_D_c_ddot[11] = 0.0;
+        w_D_c_ddot[12] = 0.0;
+        w_D_c_ddot[13] = m;
+        w_D_c_ddot[14] = 0.0;
+        w_D_c_ddot[15] = 0.0;
+        w_D_c_ddot[16] = 0.0;
+        w_D_c_ddot[17] = m;
+    }
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const double s_ = ((((((w[0] + (w[1] + w[2])) + ((w[3] + w[4]) + (w[5] + w_D_I_C[0]))) + (((w_D_I_C[1] + w_D_I_C[2]) + (w_D_I_C[3] + w_D_I_C[4])) + ((w_D_I_C[5] + w_D_I_C[6]) + (w_D_I_C[7] + w_D_I_C[8])))) + (((w_D_I_C[9] + (w_D_I_C[10] + w_D_I_C[11])) + ((w_D_I_C[12] + w_D_I_C[13]) + (w_D_I_C[14] + w_D_I_C[15]))) + (((w_D_I_C[16] + w_D_I_C[17]) + (w_D_I_C[18] + w_D_I_C[19])) + ((w_D_I_C[20] + w_D_I_C[21]) + (w_D_I_C[22] + w_D_I_C[23]))))) + ((((w_D_I_C[24] + (w_D_I_C[25] + w_D_I_C[26])) + ((w_D_I_C[27] + w_D_I_C[28]) + (w_D_I_C[29] + w_D_I_C[30]))) + (((w_D_I_C[31] + w_D_I_C[32]) + (w_D_I_C[33] + w_D_I_C[34])) + ((w_D_I_C[35] + w_D_I_C[36]) + (w_D_I_C[37] + w_D_I_C[38])))) + (((w_D_I_C[39] + (w_D_I_C[40] + w_D_I_C[41])) + ((w_D_I_C[42] + w_D_I_C[43]) + (w_D_I_C[44] + w_D_I_C[45]))) + (((w_D_I_C[46] + w_D_I_C[47]) + (w_D_I_C[48] + w_D_I_C[49])) + ((w_D_I_C[50] + w_D_I_C[51]) + (w_D_I_C[52] + w_D_I_C[53])))))) + (((((w_D_m[0] + (w_D_m[1] + w_D_m[2])) + ((w_D_m[3] + w_D_m[4]) + (w_D_m[5] + w_D_omega[0]))) + (((w_D_omega[1] + w_D_omega[2]) + (w_D_omega[3] + w_D_omega[4])) + ((w_D_omega[5] + w_D_omega[6]) + (w_D_omega[7] + w_D_omega[8])))) + (((w_D_omega[9] + (w_D_omega[10] + w_D_omega[11])) + ((w_D_omega[12] + w_D_omega[13]) + (w_D_omega[14] + w_D_omega[15]))) + (((w_D_omega[16] + w_D_omega[17]) + (w_D_omega_dot[0] + w_D_omega_dot[1])) + ((w_D_omega_dot[2] + w_D_omega_dot[3]) + (w_D_omega_dot[4] + w_D_omega_dot[5]))))) + ((((w_D_omega_dot[6] + (w_D_omega_dot[7] + w_D_omega_dot[8])) + ((w_D_omega_dot[9] + w_D_omega_dot[10]) + (w_D_omega_dot[11] + w_D_omega_dot[12]))) + (((w_D_omega_dot[13] + w_D_omega_dot[14]) + (w_D_omega_dot[15] + w_D_omega_dot[16])) + ((w_D_omega_dot[17] + w_D_c_ddot[0]) + (w_D_c_ddot[1] + w_D_c_ddot[2])))) + (((w_D_c_ddot[3] + (w_D_c_ddot[4] + w_D_c_ddot[5])) + ((w_D_c_ddot[6] + w_D_c_ddot[7]) + (w_D_c_ddot[8] + w_D_c_ddot[9]))) + (((w_D_c_ddot[10] + w_D_c_ddot[11]) + (w_D_c_ddot[12] + w_D_c_ddot[13])) + ((w_D_c_ddot[14] + w_D_c_ddot[15]) + (w_D_c_ddot[16] + w_D_c_ddot[17])))))));
+        if (!(s_ - s_ == 0.0))
+            finite += (((((((w[0] - w[0]) + ((w[1] - w[1]) + (w[2] - w[2]))) + (((w[3] - w[3]) + (w[4] - w[4])) + ((w[5] - w[5]) + (w_D_I_C[0] - w_D_I_C[0])))) + ((((w_D_I_C[1] - w_D_I_C[1]) + (w_D_I_C[2] - w_D_I_C[2])) + ((w_D_I_C[3] - w_D_I_C[3]) + (w_D_I_C[4] - w_D_I_C[4]))) + (((w_D_I_C[5] - w_D_I_C[5]) + (w_D_I_C[6] - w_D_I_C[6])) + ((w_D_I_C[7] - w_D_I_C[7]) + (w_D_I_C[8] - w_D_I_C[8]))))) + ((((w_D_I_C[9] - w_D_I_C[9]) + ((w_D_I_C[10] - w_D_I_C[10]) + (w_D_I_C[11] - w_D_I_C[11]))) + (((w_D_I_C[12] - w_D_I_C[12]) + (w_D_I_C[13] - w_D_I_C[13])) + ((w_D_I_C[14] - w_D_I_C[14]) + (w_D_I_C[15] - w_D_I_C[15])))) + ((((w_D_I_C[16] - w_D_I_C[16]) + (w_D_I_C[17] - w_D_I_C[17])) + ((w_D_I_C[18] - w_D_I_C[18]) + (w_D_I_C[19] - w_D_I_C[19]))) + (((w_D_I_C[20] - w_D_I_C[20]) + (w_D_I_C[21] - w_D_I_C[21])) + ((w_D_I_C[22] - w_D_I_C[22]) + (w_D_I_C[23] - w_D_I_C[23])))))) + (((((w_D_I_C[24] - w_D_I_C[24]) + ((w_D_I_C[25] - w_D_I_C[25]) + (w_D_I_C[26] - w_D_I_C[26]))) + (((w_D_I_C[27] - w_D_I_C[27]) + (w_D_I_C[28] - w_D_I_C[28])) + ((w_D_I_C[29] - w_D_I_C[29]) + (w_D_I_C[30] - w_D_I_C[30])))) + ((((w_D_I_C[31] - w_D_I_C[31]) + (w_D_I_C[32] - w_D_I_C[32])) + ((w_D_I_C[33] - w_D_I_C[33]) + (w_D_I_C[34] - w_D_I_C[34]))) + (((w_D_I_C[35] - w_D_I_C[35]) + (w_D_I_C[36] - w_D_I_C[36])) + ((w_D_I_C[37] - w_D_I_C[37]) + (w_D_I_C[38] - w_D_I_C[38]))))) + ((((w_D_I_C[39] - w_D_I_C[39]) + ((w_D_I_C[40] - w_D_I_C[40]) + (w_D_I_C[41] - w_D_I_C[41]))) + (((w_D_I_C[42] - w_D_I_C[42]) + (w_D_I_C[43] - w_D_I_C[43])) + ((w_D_I_C[44] - w_D_I_C[44]) + (w_D_I_C[45] - w_D_I_C[45])))) + ((((w_D_I_C[46] - w_D_I_C[46]) + (w_D_I_C[47] - w_D_I_C[47])) + ((w_D_I_C[48] - w_D_I_C[48]) + (w_D_I_C[49] - w_D_I_C[49]))) + (((w_D_I_C[50] - w_D_I_C[50]) + (w_D_I_C[51] - w_D_I_C[51])) + ((w_D_I_C[52] - w_D_I_C[52]) + (w_D_I_C[53] - w_D_I_C[53]))))))) + ((((((w_D_m[0] - w_D_m[0]) + ((w_D_m[1] - w_D_m[1]) + (w_D_m[2] - w_D_m[2]))) + (((w_D_m[3] - w_D_m[3]) + (w_D_m[4] - w_D_m[4])) + ((w_D_m[5] - w_D_m[5]) + (w_D_omega[0] - w_D_omega[0])))) + ((((w_D_omega[1] - w_D_omega[1]) + (w_D_omega[2] - w_D_omega[2])) + ((w_D_omega[3] - w_D_omega[3]) + (w_D_omega[4] - w_D_omega[4]))) + (((w_D_omega[5] - w_D_omega[5]) + (w_D_omega[6] - w_D_omega[6])) + ((w_D_omega[7] - w_D_omega[7]) + (w_D_omega[8] - w_D_omega[8]))))) + ((((w_D_omega[9] - w_D_omega[9]) + ((w_D_omega[10] - w_D_omega[10]) + (w_D_omega[11] - w_D_omega[11]))) + (((w_D_omega[12] - w_D_omega[12]) + (w_D_omega[13] - w_D_omega[13])) + ((w_D_omega[14] - w_D_omega[14]) + (w_D_omega[15] - w_D_omega[15])))) + ((((w_D_omega[16] - w_D_omega[16]) + (w_D_omega[17] - w_D_omega[17])) + ((w_D_omega_dot[0] - w_D_omega_dot[0]) + (w_D_omega_dot[1] - w_D_omega_dot[1]))) + (((w_D_omega_dot[2] - w_D_omega_dot[2]) + (w_D_omega_dot[3] - w_D_omega_dot[3])) + ((w_D_omega_dot[4] - w_D_omega_dot[4]) + (w_D_omega_dot[5] - w_D_omega_dot[5])))))) + (((((w_D_omega_dot[6] - w_D_omega_dot[6]) + ((w_D_omega_dot[7] - w_D_omega_dot[7]) + (w_D_omega_dot[8] - w_D_omega_dot[8]))) + (((w_D_omega_dot[9] - w_D_omega_dot[9]) + (w_D_omega_dot[10] - w_D_omega_dot[10])) + ((w_D_omega_dot[11] - w_D_omega_dot[11]) + (w_D_omega_dot[12] - w_D_omega_dot[12])))) + ((((w_D_omega_dot[13] - w_D_omega_dot[13]) + (w_D_omega_dot[14] - w_D_omega_dot[14])) + ((w_D_omega_dot[15] - w_D_omega_dot[15]) + (w_D_omega_dot[16] - w_D_omega_dot[16]))) + (((w_D_omega_dot[17] - w_D_omega_dot[17]) + (w_D_c_ddot[0] - w_D_c_ddot[0])) + ((w_D_c_ddot[1] - w_D_c_ddot[1]) + (w_D_c_ddot[2] - w_D_c_ddot[2]))))) + ((((w_D_c_ddot[3] - w_D_c_ddot[3]) + ((w_D_c_ddot[4] - w_D_c_ddot[4]) + (w_D_c_ddot[5] - w_D_c_ddot[5]))) + (((w_D_c_ddot[6] - w_D_c_ddot[6]) + (w_D_c_ddot[7] - w_D_c_ddot[7])) + ((w_D_c_ddot[8] - w_D_c_ddot[8]) + (w_D_c_ddot[9] - w_D_c_ddot[9])))) + ((((w_D_c_ddot[10] - w_D_c_ddot[10]) + (w_D_c_ddot[11] - w_D_c_ddot[11])) + ((w_D_c_ddot[12] - w_D_c_ddot[12]) + (w_D_c_ddot[13] - w_D_c_ddot[13]))) + (((w_D_c_ddot[14] - w_D_c_ddot[14]) + (w_D_c_ddot[15] - w_D_c_ddot[15])) + ((w_D_c_ddot[16] - w_D_c_ddot[16]) + (w_D_c_ddot[17] - w_D_c_ddot[17]))))))));
+    }
+    if (finite != finite)
+        status |= RIGIDSYM_C_NONFINITE_RESULT;
+    if (singular) {
+        status |= RIGIDSYM_C_SINGULAR;
+        w[0] = NAN;
+        w[1] = NAN;
+        w[2] = NAN;
+        w[3] = NAN;
+        w[4] = NAN;
+        w[5] = NAN;
+        w_D_I_C[0] = NAN;
+        w_D_I_C[1] = NAN;
+        w_D_I_C[2] = NAN;
+        w_D_I_C[3] = NAN;
+        w_D_I_C[4] = NAN;
+        w_D_I_C[5] = NAN;
+        w_D_I_C[6] = NAN;
+        w_D_I_C[7] = NAN;
+        w_D_I_C[8] = NAN;
+        w_D_I_C[9] = NAN;
+        w_D_I_C[10] = NAN;
+        w_D_I_C[11] = NAN;
+        w_D_I_C[12] = NAN;
+        w_D_I_C[13] = NAN;
+        w_D_I_C[14] = NAN;
+        w_D_I_C[15] = NAN;
+        w_D_I_C[16] = NAN;
+        w_D_I_C[17] = NAN;
+        w_D_I_C[18] = NAN;
+        w_D_I_C[19] = NAN;
+        w_D_I_C[20] = NAN;
+        w_D_I_C[21] = NAN;
+        w_D_I_C[22] = NAN;
+        w_D_I_C[23] = NAN;
+        w_D_I_C[24] = NAN;
+        w_D_I_C[25] = NAN;
+        w_D_I_C[26] = NAN;
+        w_D_I_C[27] = NAN;
+        w_D_I_C[28] = NAN;
+        w_D_I_C[29] = NAN;
+        w_D_I_C[30] = NAN;
+        w_D_I_C[31] = NAN;
+        w_D_I_C[32] = NAN;
+        w_D_I_C[33] = NAN;
+        w_D_I_C[34] = NAN;
+        w_D_I_C[35] = NAN;
+        w_D_I_C[36] = NAN;
+        w_D_I_C[37] = NAN;
+        w_D_I_C[38] = NAN;
+        w_D_I_C[39] = NAN;
+        w_D_I_C[40] = NAN;
+        w_D_I_C[41] = NAN;
+        w_D_I_C[42] = NAN;
+        w_D_I_C[43] = NAN;
+        w_D_I_C[44] = NAN;
+        w_D_I_C[45] = NAN;
+        w_D_I_C[46] = NAN;
+        w_D_I_C[47] = NAN;
+        w_D_I_C[48] = NAN;
+        w_D_I_C[49] = NAN;
+        w_D_I_C[50] = NAN;
+        w_D_I_C[51] = NAN;
+        w_D_I_C[52] = NAN;
+        w_D_I_C[53] = NAN;
+        w_D_m[0] = NAN;
+        w_D_m[1] = NAN;
+        w_D_m[2] = NAN;
+        w_D_m[3] = NAN;
+        w_D_m[4] = NAN;
+        w_D_m[5] = NAN;
+        w_D_omega[0] = NAN;
+        w_D_omega[1] = NAN;
+        w_D_omega[2] = NAN;
+        w_D_omega[3] = NAN;
+        w_D_omega[4] = NAN;
+        w_D_omega[5] = NAN;
+        w_D_omega[6] = NAN;
+        w_D_omega[7] = NAN;
+        w_D_omega[8] = NAN;
+        w_D_omega[9] = NAN;
+        w_D_omega[10] = NAN;
+        w_D_omega[11] = NAN;
+        w_D_omega[12] = NAN;
+        w_D_omega[13] = NAN;
+        w_D_omega[14] = NAN;
+        w_D_omega[15] = NAN;
+        w_D_omega[16] = NAN;
+        w_D_omega[17] = NAN;
+        w_D_omega_dot[0] = NAN;
+        w_D_omega_dot[1] = NAN;
+        w_D_omega_dot[2] = NAN;
+        w_D_omega_dot[3] = NAN;
+        w_D_omega_dot[4] = NAN;
+        w_D_omega_dot[5] = NAN;
+        w_D_omega_dot[6] = NAN;
+        w_D_omega_dot[7] = NAN;
+        w_D_omega_dot[8] = NAN;
+        w_D_omega_dot[9] = NAN;
+        w_D_omega_dot[10] = NAN;
+        w_D_omega_dot[11] = NAN;
+        w_D_omega_dot[12] = NAN;
+        w_D_omega_dot[13] = NAN;
+        w_D_omega_dot[14] = NAN;
+        w_D_omega_dot[15] = NAN;
+        w_D_omega_dot[16] = NAN;
+        w_D_omega_dot[17] = NAN;
+        w_D_c_ddot[0] = NAN;
+        w_D_c_ddot[1] = NAN;
+        w_D_c_ddot[2] = NAN;
+        w_D_c_ddot[3] = NAN;
+        w_D_c_ddot[4] = NAN;
+        w_D_c_ddot[5] = NAN;
+        w_D_c_ddot[6] = NAN;
+        w_D_c_ddot[7] = NAN;
+        w_D_c_ddot[8] = NAN;
+        w_D_c_ddot[9] = NAN;
+        w_D_c_ddot[10] = NAN;
+        w_D_c_ddot[11] = NAN;
+        w_D_c_ddot[12] = NAN;
+        w_D_c_ddot[13] = NAN;
+        w_D_c_ddot[14] = NAN;
+        w_D_c_ddot[15] = NAN;
+        w_D_c_ddot[16] = NAN;
+        w_D_c_ddot[17] = NAN;
+    }
+    return status;
+}
+#endif
+
 RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians(
     const double I_C[9],
     double m,
@@ -916,47 +1487,68 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians(
     const double c_ddot[3],
     double w[6],    double w_D_I_C[54],    double w_D_m[6],    double w_D_omega[18],    double w_D_omega_dot[18],    double w_D_c_ddot[18])
 {
-    uint64_t odd = 0;
     int status = 0, singular = 0;
     double finite = 0.0;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    {   /* the range test of every input component, as one loop (it vectorises) */
-        const double in_[20] = {
-            I_C[0], I_C[1], I_C[2], I_C[3], I_C[4], I_C[5], I_C[6], I_C[7], I_C[8], m, omega[0],
-            omega[1], omega[2], omega_dot[0], omega_dot[1], omega_dot[2], c_ddot[0], c_ddot[1],
-            c_ddot[2], 0.0
-        };
-        int j_;
-        for (j_ = 0; j_ < 20; ++j_)
-            RIGIDSYM_C_ODD_D(odd, in_[j_]);
+    uint64_t odd = 0;
+#if RIGIDSYM_C_SSE2
+    {   /* the range test of every input component, 2 per SSE2 register */
+        __m128i mx_ = _mm_setzero_si128(), mn_ = _mm_set1_epi16(0x7fff);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadh_pd(_mm_load_sd(I_C), I_C + 1)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadh_pd(_mm_load_sd(I_C + 2), I_C + 2 + 1)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadh_pd(_mm_load_sd(I_C + 4), I_C + 4 + 1)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadh_pd(_mm_load_sd(I_C + 6), I_C + 6 + 1)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&I_C[8], *&m)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadh_pd(_mm_load_sd(omega), omega + 1)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&omega[2], *&omega_dot[0])), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadh_pd(_mm_load_sd(omega_dot + 1), omega_dot + 1 + 1)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadh_pd(_mm_load_sd(c_ddot), c_ddot + 1)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&c_ddot[2], 0.0)), &mx_, &mn_);
+        if (RIGIDSYM_C_Q_ODD_D(mx_, mn_))
+            return rigidsym_c_newton_euler_wrench_with_jacobians_odd(I_C, m, omega, omega_dot, c_ddot, w, w_D_I_C, w_D_m, w_D_omega, w_D_omega_dot, w_D_c_ddot);
     }
-    if (odd >> 63) {
-        const double *args[5];
-        const int sizes[5] = {9, 1, 3, 3, 3};
-        int j;
-        args[0] = I_C;
-        args[1] = &m;
-        args[2] = omega;
-        args[3] = omega_dot;
-        args[4] = c_ddot;
-        status = RIGIDSYM_C_EXTREME_INPUT;
-        for (j = 0; j < 5; ++j)
-            if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
-                status = RIGIDSYM_C_NONFINITE_INPUT;
-#if RIGIDSYM_C_WIDE
-        if (status == RIGIDSYM_C_EXTREME_INPUT)
-            return rigidsym_c_newton_euler_wrench_with_jacobians_wide(I_C, m, omega, omega_dot, c_ddot, w, w_D_I_C, w_D_m, w_D_omega, w_D_omega_dot, w_D_c_ddot);
-#endif
-#if RIGIDSYM_C_RESCALE_D
-        if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
-            const int r_ = rigidsym_c_newton_euler_wrench_with_jacobians_rescue(I_C, m, omega, omega_dot, c_ddot, w, w_D_I_C, w_D_m, w_D_omega, w_D_omega_dot, w_D_c_ddot);
-            if (r_ >= 0)
-                return r_;
+#elif RIGIDSYM_C_VECTOR
+    {   /* the range test of every input component, 2 per vector register */
+        rigidsym_c_vd oddv_ = {0, 0};
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(I_C));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(I_C + 2));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(I_C + 4));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(I_C + 6));
+        {
+            const rigidsym_c_vd v_ = {rigidsym_c_bits_d(&I_C[8]), rigidsym_c_bits_d(&m)};
+            oddv_ |= rigidsym_c_odd_vd(v_);
         }
-#endif
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(omega));
+        {
+            const rigidsym_c_vd v_ = {rigidsym_c_bits_d(&omega[2]), rigidsym_c_bits_d(&omega_dot[0])};
+            oddv_ |= rigidsym_c_odd_vd(v_);
+        }
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(omega_dot + 1));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(c_ddot));
+        {
+            const rigidsym_c_vd v_ = {rigidsym_c_bits_d(&c_ddot[2]), 0};
+            oddv_ |= rigidsym_c_odd_vd(v_);
+        }
+        odd = oddv_[0] | oddv_[1];
     }
 #else
-    (void)odd;
+    {   /* the range test of every input component, one at a time (an argument's
+         * components by a loop: compact code where there are no 16-byte vectors) */
+        int j_;
+        for (j_ = 0; j_ < 9; ++j_)
+            RIGIDSYM_C_ODD_D(odd, I_C[j_]);
+        RIGIDSYM_C_ODD_D(odd, m);
+        for (j_ = 0; j_ < 3; ++j_)
+            RIGIDSYM_C_ODD_D(odd, omega[j_]);
+        for (j_ = 0; j_ < 3; ++j_)
+            RIGIDSYM_C_ODD_D(odd, omega_dot[j_]);
+        for (j_ = 0; j_ < 3; ++j_)
+            RIGIDSYM_C_ODD_D(odd, c_ddot[j_]);
+        (void)j_;
+    }
+#endif
+    if (odd >> 63)
+        return rigidsym_c_newton_euler_wrench_with_jacobians_odd(I_C, m, omega, omega_dot, c_ddot, w, w_D_I_C, w_D_m, w_D_omega, w_D_omega_dot, w_D_c_ddot);
 #endif
     const double I_C_00 = I_C[0];
     const double I_C_01 = I_C[1];
@@ -1124,13 +1716,16 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians(
     }
     /* no division or root, and every output bounded by 2^308 for inputs of
      * ordinary magnitude (|x| < 2^101): only an extreme or non-finite input can make an
-     * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN
-     * otherwise; the guards of rigidsym_c_impl.h keep the compiler from folding it) */
+     * output non-finite, so only then (rigidsym_c_newton_euler_wrench_with_jacobians_odd) are the outputs tested */
 #if defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    finite += (((((((w[0] - w[0]) + ((w[1] - w[1]) + (w[2] - w[2]))) + (((w[3] - w[3]) + (w[4] - w[4])) + ((w[5] - w[5]) + (w_D_I_C[0] - w_D_I_C[0])))) + ((((w_D_I_C[1] - w_D_I_C[1]) + (w_D_I_C[2] - w_D_I_C[2])) + ((w_D_I_C[3] - w_D_I_C[3]) + (w_D_I_C[4] - w_D_I_C[4]))) + (((w_D_I_C[5] - w_D_I_C[5]) + (w_D_I_C[6] - w_D_I_C[6])) + ((w_D_I_C[7] - w_D_I_C[7]) + (w_D_I_C[8] - w_D_I_C[8]))))) + ((((w_D_I_C[9] - w_D_I_C[9]) + ((w_D_I_C[10] - w_D_I_C[10]) + (w_D_I_C[11] - w_D_I_C[11]))) + (((w_D_I_C[12] - w_D_I_C[12]) + (w_D_I_C[13] - w_D_I_C[13])) + ((w_D_I_C[14] - w_D_I_C[14]) + (w_D_I_C[15] - w_D_I_C[15])))) + ((((w_D_I_C[16] - w_D_I_C[16]) + (w_D_I_C[17] - w_D_I_C[17])) + ((w_D_I_C[18] - w_D_I_C[18]) + (w_D_I_C[19] - w_D_I_C[19]))) + (((w_D_I_C[20] - w_D_I_C[20]) + (w_D_I_C[21] - w_D_I_C[21])) + ((w_D_I_C[22] - w_D_I_C[22]) + (w_D_I_C[23] - w_D_I_C[23])))))) + (((((w_D_I_C[24] - w_D_I_C[24]) + ((w_D_I_C[25] - w_D_I_C[25]) + (w_D_I_C[26] - w_D_I_C[26]))) + (((w_D_I_C[27] - w_D_I_C[27]) + (w_D_I_C[28] - w_D_I_C[28])) + ((w_D_I_C[29] - w_D_I_C[29]) + (w_D_I_C[30] - w_D_I_C[30])))) + ((((w_D_I_C[31] - w_D_I_C[31]) + (w_D_I_C[32] - w_D_I_C[32])) + ((w_D_I_C[33] - w_D_I_C[33]) + (w_D_I_C[34] - w_D_I_C[34]))) + (((w_D_I_C[35] - w_D_I_C[35]) + (w_D_I_C[36] - w_D_I_C[36])) + ((w_D_I_C[37] - w_D_I_C[37]) + (w_D_I_C[38] - w_D_I_C[38]))))) + ((((w_D_I_C[39] - w_D_I_C[39]) + ((w_D_I_C[40] - w_D_I_C[40]) + (w_D_I_C[41] - w_D_I_C[41]))) + (((w_D_I_C[42] - w_D_I_C[42]) + (w_D_I_C[43] - w_D_I_C[43])) + ((w_D_I_C[44] - w_D_I_C[44]) + (w_D_I_C[45] - w_D_I_C[45])))) + ((((w_D_I_C[46] - w_D_I_C[46]) + (w_D_I_C[47] - w_D_I_C[47])) + ((w_D_I_C[48] - w_D_I_C[48]) + (w_D_I_C[49] - w_D_I_C[49]))) + (((w_D_I_C[50] - w_D_I_C[50]) + (w_D_I_C[51] - w_D_I_C[51])) + ((w_D_I_C[52] - w_D_I_C[52]) + (w_D_I_C[53] - w_D_I_C[53]))))))) + ((((((w_D_m[0] - w_D_m[0]) + ((w_D_m[1] - w_D_m[1]) + (w_D_m[2] - w_D_m[2]))) + (((w_D_m[3] - w_D_m[3]) + (w_D_m[4] - w_D_m[4])) + ((w_D_m[5] - w_D_m[5]) + (w_D_omega[0] - w_D_omega[0])))) + ((((w_D_omega[1] - w_D_omega[1]) + (w_D_omega[2] - w_D_omega[2])) + ((w_D_omega[3] - w_D_omega[3]) + (w_D_omega[4] - w_D_omega[4]))) + (((w_D_omega[5] - w_D_omega[5]) + (w_D_omega[6] - w_D_omega[6])) + ((w_D_omega[7] - w_D_omega[7]) + (w_D_omega[8] - w_D_omega[8]))))) + ((((w_D_omega[9] - w_D_omega[9]) + ((w_D_omega[10] - w_D_omega[10]) + (w_D_omega[11] - w_D_omega[11]))) + (((w_D_omega[12] - w_D_omega[12]) + (w_D_omega[13] - w_D_omega[13])) + ((w_D_omega[14] - w_D_omega[14]) + (w_D_omega[15] - w_D_omega[15])))) + ((((w_D_omega[16] - w_D_omega[16]) + (w_D_omega[17] - w_D_omega[17])) + ((w_D_omega_dot[0] - w_D_omega_dot[0]) + (w_D_omega_dot[1] - w_D_omega_dot[1]))) + (((w_D_omega_dot[2] - w_D_omega_dot[2]) + (w_D_omega_dot[3] - w_D_omega_dot[3])) + ((w_D_omega_dot[4] - w_D_omega_dot[4]) + (w_D_omega_dot[5] - w_D_omega_dot[5])))))) + (((((w_D_omega_dot[6] - w_D_omega_dot[6]) + ((w_D_omega_dot[7] - w_D_omega_dot[7]) + (w_D_omega_dot[8] - w_D_omega_dot[8]))) + (((w_D_omega_dot[9] - w_D_omega_dot[9]) + (w_D_omega_dot[10] - w_D_omega_dot[10])) + ((w_D_omega_dot[11] - w_D_omega_dot[11]) + (w_D_omega_dot[12] - w_D_omega_dot[12])))) + ((((w_D_omega_dot[13] - w_D_omega_dot[13]) + (w_D_omega_dot[14] - w_D_omega_dot[14])) + ((w_D_omega_dot[15] - w_D_omega_dot[15]) + (w_D_omega_dot[16] - w_D_omega_dot[16]))) + (((w_D_omega_dot[17] - w_D_omega_dot[17]) + (w_D_c_ddot[0] - w_D_c_ddot[0])) + ((w_D_c_ddot[1] - w_D_c_ddot[1]) + (w_D_c_ddot[2] - w_D_c_ddot[2]))))) + ((((w_D_c_ddot[3] - w_D_c_ddot[3]) + ((w_D_c_ddot[4] - w_D_c_ddot[4]) + (w_D_c_ddot[5] - w_D_c_ddot[5]))) + (((w_D_c_ddot[6] - w_D_c_ddot[6]) + (w_D_c_ddot[7] - w_D_c_ddot[7])) + ((w_D_c_ddot[8] - w_D_c_ddot[8]) + (w_D_c_ddot[9] - w_D_c_ddot[9])))) + ((((w_D_c_ddot[10] - w_D_c_ddot[10]) + (w_D_c_ddot[11] - w_D_c_ddot[11])) + ((w_D_c_ddot[12] - w_D_c_ddot[12]) + (w_D_c_ddot[13] - w_D_c_ddot[13]))) + (((w_D_c_ddot[14] - w_D_c_ddot[14]) + (w_D_c_ddot[15] - w_D_c_ddot[15])) + ((w_D_c_ddot[16] - w_D_c_ddot[16]) + (w_D_c_ddot[17] - w_D_c_ddot[17]))))))));
-#else
-    if (status)
-        finite += (((((((w[0] - w[0]) + ((w[1] - w[1]) + (w[2] - w[2]))) + (((w[3] - w[3]) + (w[4] - w[4])) + ((w[5] - w[5]) + (w_D_I_C[0] - w_D_I_C[0])))) + ((((w_D_I_C[1] - w_D_I_C[1]) + (w_D_I_C[2] - w_D_I_C[2])) + ((w_D_I_C[3] - w_D_I_C[3]) + (w_D_I_C[4] - w_D_I_C[4]))) + (((w_D_I_C[5] - w_D_I_C[5]) + (w_D_I_C[6] - w_D_I_C[6])) + ((w_D_I_C[7] - w_D_I_C[7]) + (w_D_I_C[8] - w_D_I_C[8]))))) + ((((w_D_I_C[9] - w_D_I_C[9]) + ((w_D_I_C[10] - w_D_I_C[10]) + (w_D_I_C[11] - w_D_I_C[11]))) + (((w_D_I_C[12] - w_D_I_C[12]) + (w_D_I_C[13] - w_D_I_C[13])) + ((w_D_I_C[14] - w_D_I_C[14]) + (w_D_I_C[15] - w_D_I_C[15])))) + ((((w_D_I_C[16] - w_D_I_C[16]) + (w_D_I_C[17] - w_D_I_C[17])) + ((w_D_I_C[18] - w_D_I_C[18]) + (w_D_I_C[19] - w_D_I_C[19]))) + (((w_D_I_C[20] - w_D_I_C[20]) + (w_D_I_C[21] - w_D_I_C[21])) + ((w_D_I_C[22] - w_D_I_C[22]) + (w_D_I_C[23] - w_D_I_C[23])))))) + (((((w_D_I_C[24] - w_D_I_C[24]) + ((w_D_I_C[25] - w_D_I_C[25]) + (w_D_I_C[26] - w_D_I_C[26]))) + (((w_D_I_C[27] - w_D_I_C[27]) + (w_D_I_C[28] - w_D_I_C[28])) + ((w_D_I_C[29] - w_D_I_C[29]) + (w_D_I_C[30] - w_D_I_C[30])))) + ((((w_D_I_C[31] - w_D_I_C[31]) + (w_D_I_C[32] - w_D_I_C[32])) + ((w_D_I_C[33] - w_D_I_C[33]) + (w_D_I_C[34] - w_D_I_C[34]))) + (((w_D_I_C[35] - w_D_I_C[35]) + (w_D_I_C[36] - w_D_I_C[36])) + ((w_D_I_C[37] - w_D_I_C[37]) + (w_D_I_C[38] - w_D_I_C[38]))))) + ((((w_D_I_C[39] - w_D_I_C[39]) + ((w_D_I_C[40] - w_D_I_C[40]) + (w_D_I_C[41] - w_D_I_C[41]))) + (((w_D_I_C[42] - w_D_I_C[42]) + (w_D_I_C[43] - w_D_I_C[43])) + ((w_D_I_C[44] - w_D_I_C[44]) + (w_D_I_C[45] - w_D_I_C[45])))) + ((((w_D_I_C[46] - w_D_I_C[46]) + (w_D_I_C[47] - w_D_I_C[47])) + ((w_D_I_C[48] - w_D_I_C[48]) + (w_D_I_C[49] - w_D_I_C[49]))) + (((w_D_I_C[50] - w_D_I_C[50]) + (w_D_I_C[51] - w_D_I_C[51])) + ((w_D_I_C[52] - w_D_I_C[52]) + (w_D_I_C[53] - w_D_I_C[53]))))))) + ((((((w_D_m[0] - w_D_m[0]) + ((w_D_m[1] - w_D_m[1]) + (w_D_m[2] - w_D_m[2]))) + (((w_D_m[3] - w_D_m[3]) + (w_D_m[4] - w_D_m[4])) + ((w_D_m[5] - w_D_m[5]) + (w_D_omega[0] - w_D_omega[0])))) + ((((w_D_omega[1] - w_D_omega[1]) + (w_D_omega[2] - w_D_omega[2])) + ((w_D_omega[3] - w_D_omega[3]) + (w_D_omega[4] - w_D_omega[4]))) + (((w_D_omega[5] - w_D_omega[5]) + (w_D_omega[6] - w_D_omega[6])) + ((w_D_omega[7] - w_D_omega[7]) + (w_D_omega[8] - w_D_omega[8]))))) + ((((w_D_omega[9] - w_D_omega[9]) + ((w_D_omega[10] - w_D_omega[10]) + (w_D_omega[11] - w_D_omega[11]))) + (((w_D_omega[12] - w_D_omega[12]) + (w_D_omega[13] - w_D_omega[13])) + ((w_D_omega[14] - w_D_omega[14]) + (w_D_omega[15] - w_D_omega[15])))) + ((((w_D_omega[16] - w_D_omega[16]) + (w_D_omega[17] - w_D_omega[17])) + ((w_D_omega_dot[0] - w_D_omega_dot[0]) + (w_D_omega_dot[1] - w_D_omega_dot[1]))) + (((w_D_omega_dot[2] - w_D_omega_dot[2]) + (w_D_omega_dot[3] - w_D_omega_dot[3])) + ((w_D_omega_dot[4] - w_D_omega_dot[4]) + (w_D_omega_dot[5] - w_D_omega_dot[5])))))) + (((((w_D_omega_dot[6] - w_D_omega_dot[6]) + ((w_D_omega_dot[7] - w_D_omega_dot[7]) + (w_D_omega_dot[8] - w_D_omega_dot[8]))) + (((w_D_omega_dot[9] - w_D_omega_dot[9]) + (w_D_omega_dot[10] - w_D_omega_dot[10])) + ((w_D_omega_dot[11] - w_D_omega_dot[11]) + (w_D_omega_dot[12] - w_D_omega_dot[12])))) + ((((w_D_omega_dot[13] - w_D_omega_dot[13]) + (w_D_omega_dot[14] - w_D_omega_dot[14])) + ((w_D_omega_dot[15] - w_D_omega_dot[15]) + (w_D_omega_dot[16] - w_D_omega_dot[16]))) + (((w_D_omega_dot[17] - w_D_omega_dot[17]) + (w_D_c_ddot[0] - w_D_c_ddot[0])) + ((w_D_c_ddot[1] - w_D_c_ddot[1]) + (w_D_c_ddot[2] - w_D_c_ddot[2]))))) + ((((w_D_c_ddot[3] - w_D_c_ddot[3]) + ((w_D_c_ddot[4] - w_D_c_ddot[4]) + (w_D_c_ddot[5] - w_D_c_ddot[5]))) + (((w_D_c_ddot[6] - w_D_c_ddot[6]) + (w_D_c_ddot[7] - w_D_c_ddot[7])) + ((w_D_c_ddot[8] - w_D_c_ddot[8]) + (w_D_c_ddot[9] - w_D_c_ddot[9])))) + ((((w_D_c_ddot[10] - w_D_c_ddot[10]) + (w_D_c_ddot[11] - w_D_c_ddot[11])) + ((w_D_c_ddot[12] - w_D_c_ddot[12]) + (w_D_c_ddot[13] - w_D_c_ddot[13]))) + (((w_D_c_ddot[14] - w_D_c_ddot[14]) + (w_D_c_ddot[15] - w_D_c_ddot[15])) + ((w_D_c_ddot[16] - w_D_c_ddot[16]) + (w_D_c_ddot[17] - w_D_c_ddot[17]))))))));
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const double s_ = ((((((w[0] + (w[1] + w[2])) + ((w[3] + w[4]) + (w[5] + w_D_I_C[0]))) + (((w_D_I_C[1] + w_D_I_C[2]) + (w_D_I_C[3] + w_D_I_C[4])) + ((w_D_I_C[5] + w_D_I_C[6]) + (w_D_I_C[7] + w_D_I_C[8])))) + (((w_D_I_C[9] + (w_D_I_C[10] + w_D_I_C[11])) + ((w_D_I_C[12] + w_D_I_C[13]) + (w_D_I_C[14] + w_D_I_C[15]))) + (((w_D_I_C[16] + w_D_I_C[17]) + (w_D_I_C[18] + w_D_I_C[19])) + ((w_D_I_C[20] + w_D_I_C[21]) + (w_D_I_C[22] + w_D_I_C[23]))))) + ((((w_D_I_C[24] + (w_D_I_C[25] + w_D_I_C[26])) + ((w_D_I_C[27] + w_D_I_C[28]) + (w_D_I_C[29] + w_D_I_C[30]))) + (((w_D_I_C[31] + w_D_I_C[32]) + (w_D_I_C[33] + w_D_I_C[34])) + ((w_D_I_C[35] + w_D_I_C[36]) + (w_D_I_C[37] + w_D_I_C[38])))) + (((w_D_I_C[39] + (w_D_I_C[40] + w_D_I_C[41])) + ((w_D_I_C[42] + w_D_I_C[43]) + (w_D_I_C[44] + w_D_I_C[45]))) + (((w_D_I_C[46] + w_D_I_C[47]) + (w_D_I_C[48] + w_D_I_C[49])) + ((w_D_I_C[50] + w_D_I_C[51]) + (w_D_I_C[52] + w_D_I_C[53])))))) + (((((w_D_m[0] + (w_D_m[1] + w_D_m[2])) + ((w_D_m[3] + w_D_m[4]) + (w_D_m[5] + w_D_omega[0]))) + (((w_D_omega[1] + w_D_omega[2]) + (w_D_omega[3] + w_D_omega[4])) + ((w_D_omega[5] + w_D_omega[6]) + (w_D_omega[7] + w_D_omega[8])))) + (((w_D_omega[9] + (w_D_omega[10] + w_D_omega[11])) + ((w_D_omega[12] + w_D_omega[13]) + (w_D_omega[14] + w_D_omega[15]))) + (((w_D_omega[16] + w_D_omega[17]) + (w_D_omega_dot[0] + w_D_omega_dot[1])) + ((w_D_omega_dot[2] + w_D_omega_dot[3]) + (w_D_omega_dot[4] + w_D_omega_dot[5]))))) + ((((w_D_omega_dot[6] + (w_D_omega_dot[7] + w_D_omega_dot[8])) + ((w_D_omega_dot[9] + w_D_omega_dot[10]) + (w_D_omega_dot[11] + w_D_omega_dot[12]))) + (((w_D_omega_dot[13] + w_D_omega_dot[14]) + (w_D_omega_dot[15] + w_D_omega_dot[16])) + ((w_D_omega_dot[17] + w_D_c_ddot[0]) + (w_D_c_ddot[1] + w_D_c_ddot[2])))) + (((w_D_c_ddot[3] + (w_D_c_ddot[4] + w_D_c_ddot[5])) + ((w_D_c_ddot[6] + w_D_c_ddot[7]) + (w_D_c_ddot[8] + w_D_c_ddot[9]))) + (((w_D_c_ddot[10] + w_D_c_ddot[11]) + (w_D_c_ddot[12] + w_D_c_ddot[13])) + ((w_D_c_ddot[14] + w_D_c_ddot[15]) + (w_D_c_ddot[16] + w_D_c_ddot[17])))))));
+        if (!(s_ - s_ == 0.0))
+            finite += (((((((w[0] - w[0]) + ((w[1] - w[1]) + (w[2] - w[2]))) + (((w[3] - w[3]) + (w[4] - w[4])) + ((w[5] - w[5]) + (w_D_I_C[0] - w_D_I_C[0])))) + ((((w_D_I_C[1] - w_D_I_C[1]) + (w_D_I_C[2] - w_D_I_C[2])) + ((w_D_I_C[3] - w_D_I_C[3]) + (w_D_I_C[4] - w_D_I_C[4]))) + (((w_D_I_C[5] - w_D_I_C[5]) + (w_D_I_C[6] - w_D_I_C[6])) + ((w_D_I_C[7] - w_D_I_C[7]) + (w_D_I_C[8] - w_D_I_C[8]))))) + ((((w_D_I_C[9] - w_D_I_C[9]) + ((w_D_I_C[10] - w_D_I_C[10]) + (w_D_I_C[11] - w_D_I_C[11]))) + (((w_D_I_C[12] - w_D_I_C[12]) + (w_D_I_C[13] - w_D_I_C[13])) + ((w_D_I_C[14] - w_D_I_C[14]) + (w_D_I_C[15] - w_D_I_C[15])))) + ((((w_D_I_C[16] - w_D_I_C[16]) + (w_D_I_C[17] - w_D_I_C[17])) + ((w_D_I_C[18] - w_D_I_C[18]) + (w_D_I_C[19] - w_D_I_C[19]))) + (((w_D_I_C[20] - w_D_I_C[20]) + (w_D_I_C[21] - w_D_I_C[21])) + ((w_D_I_C[22] - w_D_I_C[22]) + (w_D_I_C[23] - w_D_I_C[23])))))) + (((((w_D_I_C[24] - w_D_I_C[24]) + ((w_D_I_C[25] - w_D_I_C[25]) + (w_D_I_C[26] - w_D_I_C[26]))) + (((w_D_I_C[27] - w_D_I_C[27]) + (w_D_I_C[28] - w_D_I_C[28])) + ((w_D_I_C[29] - w_D_I_C[29]) + (w_D_I_C[30] - w_D_I_C[30])))) + ((((w_D_I_C[31] - w_D_I_C[31]) + (w_D_I_C[32] - w_D_I_C[32])) + ((w_D_I_C[33] - w_D_I_C[33]) + (w_D_I_C[34] - w_D_I_C[34]))) + (((w_D_I_C[35] - w_D_I_C[35]) + (w_D_I_C[36] - w_D_I_C[36])) + ((w_D_I_C[37] - w_D_I_C[37]) + (w_D_I_C[38] - w_D_I_C[38]))))) + ((((w_D_I_C[39] - w_D_I_C[39]) + ((w_D_I_C[40] - w_D_I_C[40]) + (w_D_I_C[41] - w_D_I_C[41]))) + (((w_D_I_C[42] - w_D_I_C[42]) + (w_D_I_C[43] - w_D_I_C[43])) + ((w_D_I_C[44] - w_D_I_C[44]) + (w_D_I_C[45] - w_D_I_C[45])))) + ((((w_D_I_C[46] - w_D_I_C[46]) + (w_D_I_C[47] - w_D_I_C[47])) + ((w_D_I_C[48] - w_D_I_C[48]) + (w_D_I_C[49] - w_D_I_C[49]))) + (((w_D_I_C[50] - w_D_I_C[50]) + (w_D_I_C[51] - w_D_I_C[51])) + ((w_D_I_C[52] - w_D_I_C[52]) + (w_D_I_C[53] - w_D_I_C[53]))))))) + ((((((w_D_m[0] - w_D_m[0]) + ((w_D_m[1] - w_D_m[1]) + (w_D_m[2] - w_D_m[2]))) + (((w_D_m[3] - w_D_m[3]) + (w_D_m[4] - w_D_m[4])) + ((w_D_m[5] - w_D_m[5]) + (w_D_omega[0] - w_D_omega[0])))) + ((((w_D_omega[1] - w_D_omega[1]) + (w_D_omega[2] - w_D_omega[2])) + ((w_D_omega[3] - w_D_omega[3]) + (w_D_omega[4] - w_D_omega[4]))) + (((w_D_omega[5] - w_D_omega[5]) + (w_D_omega[6] - w_D_omega[6])) + ((w_D_omega[7] - w_D_omega[7]) + (w_D_omega[8] - w_D_omega[8]))))) + ((((w_D_omega[9] - w_D_omega[9]) + ((w_D_omega[10] - w_D_omega[10]) + (w_D_omega[11] - w_D_omega[11]))) + (((w_D_omega[12] - w_D_omega[12]) + (w_D_omega[13] - w_D_omega[13])) + ((w_D_omega[14] - w_D_omega[14]) + (w_D_omega[15] - w_D_omega[15])))) + ((((w_D_omega[16] - w_D_omega[16]) + (w_D_omega[17] - w_D_omega[17])) + ((w_D_omega_dot[0] - w_D_omega_dot[0]) + (w_D_omega_dot[1] - w_D_omega_dot[1]))) + (((w_D_omega_dot[2] - w_D_omega_dot[2]) + (w_D_omega_dot[3] - w_D_omega_dot[3])) + ((w_D_omega_dot[4] - w_D_omega_dot[4]) + (w_D_omega_dot[5] - w_D_omega_dot[5])))))) + (((((w_D_omega_dot[6] - w_D_omega_dot[6]) + ((w_D_omega_dot[7] - w_D_omega_dot[7]) + (w_D_omega_dot[8] - w_D_omega_dot[8]))) + (((w_D_omega_dot[9] - w_D_omega_dot[9]) + (w_D_omega_dot[10] - w_D_omega_dot[10])) + ((w_D_omega_dot[11] - w_D_omega_dot[11]) + (w_D_omega_dot[12] - w_D_omega_dot[12])))) + ((((w_D_omega_dot[13] - w_D_omega_dot[13]) + (w_D_omega_dot[14] - w_D_omega_dot[14])) + ((w_D_omega_dot[15] - w_D_omega_dot[15]) + (w_D_omega_dot[16] - w_D_omega_dot[16]))) + (((w_D_omega_dot[17] - w_D_omega_dot[17]) + (w_D_c_ddot[0] - w_D_c_ddot[0])) + ((w_D_c_ddot[1] - w_D_c_ddot[1]) + (w_D_c_ddot[2] - w_D_c_ddot[2]))))) + ((((w_D_c_ddot[3] - w_D_c_ddot[3]) + ((w_D_c_ddot[4] - w_D_c_ddot[4]) + (w_D_c_ddot[5] - w_D_c_ddot[5]))) + (((w_D_c_ddot[6] - w_D_c_ddot[6]) + (w_D_c_ddot[7] - w_D_c_ddot[7])) + ((w_D_c_ddot[8] - w_D_c_ddot[8]) + (w_D_c_ddot[9] - w_D_c_ddot[9])))) + ((((w_D_c_ddot[10] - w_D_c_ddot[10]) + (w_D_c_ddot[11] - w_D_c_ddot[11])) + ((w_D_c_ddot[12] - w_D_c_ddot[12]) + (w_D_c_ddot[13] - w_D_c_ddot[13]))) + (((w_D_c_ddot[14] - w_D_c_ddot[14]) + (w_D_c_ddot[15] - w_D_c_ddot[15])) + ((w_D_c_ddot[16] - w_D_c_ddot[16]) + (w_D_c_ddot[17] - w_D_c_ddot[17]))))))));
+    }
 #endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -1404,6 +1999,349 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_with_jacobians_f32_res
 }
 #endif
 
+
+#if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
+/* rigidsym_c_newton_euler_wrench_with_jacobians_f32 where the range test found an odd input (extreme or not finite): the
+ * input bits of the status, the rescue where there is one, else the ordinary evaluation
+ * with its outputs' test. Cold and out of line, reached by a tail call, so that the fast
+ * path of rigidsym_c_newton_euler_wrench_with_jacobians_f32 saves no register and makes no call. */
+static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_with_jacobians_f32_odd(
+    const float I_C[9],
+    float m,
+    const float omega[3],
+    const float omega_dot[3],
+    const float c_ddot[3],
+    float w[6],
+    float w_D_I_C[54],
+    float w_D_m[6],
+    float w_D_omega[18],
+    float w_D_omega_dot[18],
+    float w_D_c_ddot[18])
+{
+    const float *args[5];
+    const int sizes[5] = {9, 1, 3, 3, 3};
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0, odd_ = 0;
+    float finite = 0.0f;
+    args[0] = I_C;
+    args[1] = &m;
+    args[2] = omega;
+    args[3] = omega_dot;
+    args[4] = c_ddot;
+    for (j = 0; j < 5; ++j)
+        odd_ |= rigidsym_c_extreme_f(args[j], sizes[j]);
+    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
+        status = 0;
+    for (j = 0; j < 5; ++j)
+        if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
+            status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_RESCALE_F
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
+        const int r_ = rigidsym_c_newton_euler_wrench_with_jacobians_f32_rescue(I_C, m, omega, omega_dot, c_ddot, w, w_D_I_C, w_D_m, w_D_omega, w_D_omega_dot, w_D_c_ddot);
+        if (r_ >= 0)
+            return r_;
+    }
+#endif
+    const float I_C_00 = I_C[0];
+    const float I_C_01 = I_C[1];
+    const float I_C_02 = I_C[2];
+    const float I_C_10 = I_C[3];
+    const float I_C_11 = I_C[4];
+    const float I_C_12 = I_C[5];
+    const float I_C_20 = I_C[6];
+    const float I_C_21 = I_C[7];
+    const float I_C_22 = I_C[8];
+    const float omega_0 = omega[0];
+    const float omega_1 = omega[1];
+    const float omega_2 = omega[2];
+    const float omega_dot_0 = omega_dot[0];
+    const float omega_dot_1 = omega_dot[1];
+    const float omega_dot_2 = omega_dot[2];
+    const float c_ddot_0 = c_ddot[0];
+    const float c_ddot_1 = c_ddot[1];
+    const float c_ddot_2 = c_ddot[2];
+    {
+        const float x0 = I_C_21*omega_1;
+        const float x1 = I_C_20*omega_0;
+        const float x2 = I_C_22*omega_2;
+        const float x3 = x1 + x2;
+        const float x4 = x0 + x3;
+        const float x5 = I_C_12*omega_2;
+        const float x6 = I_C_10*omega_0;
+        const float x7 = I_C_11*omega_1;
+        const float x8 = x6 + x7;
+        const float x9 = x5 + x8;
+        const float x10 = I_C_02*omega_2;
+        const float x11 = I_C_00*omega_0;
+        const float x12 = I_C_01*omega_1;
+        const float x13 = x11 + x12;
+        const float x14 = x10 + x13;
+        const float x15 = omega_0*omega_2;
+        const float x16 = -x15;
+        const float x17 = omega_1*omega_2;
+        const float x18 = -x17;
+        const float x19 = (omega_2*omega_2);
+        const float x20 = omega_0*omega_1;
+        const float x21 = (omega_1*omega_1);
+        const float x22 = (omega_0*omega_0);
+        const float x23 = -x20;
+        w[0] = I_C_00*omega_dot_0 + I_C_01*omega_dot_1 + I_C_02*omega_dot_2 + omega_1*x4 - omega_2*x9;
+        w[1] = I_C_10*omega_dot_0 + I_C_11*omega_dot_1 + I_C_12*omega_dot_2 - omega_0*x4 + omega_2*x14;
+        w[2] = I_C_20*omega_dot_0 + I_C_21*omega_dot_1 + I_C_22*omega_dot_2 + omega_0*x9 - omega_1*x14;
+        w[3] = c_ddot_0*m;
+        w[4] = c_ddot_1*m;
+        w[5] = c_ddot_2*m;
+        w_D_I_C[0] = omega_dot_0;
+        w_D_I_C[1] = omega_dot_1;
+        w_D_I_C[2] = omega_dot_2;
+        w_D_I_C[3] = x16;
+        w_D_I_C[4] = x18;
+        w_D_I_C[5] = -x19;
+        w_D_I_C[6] = x20;
+        w_D_I_C[7] = x21;
+        w_D_I_C[8] = x17;
+        w_D_I_C[9] = x15;
+        w_D_I_C[10] = x17;
+        w_D_I_C[11] = x19;
+        w_D_I_C[12] = omega_dot_0;
+        w_D_I_C[13] = omega_dot_1;
+        w_D_I_C[14] = omega_dot_2;
+        w_D_I_C[15] = -x22;
+        w_D_I_C[16] = x23;
+        w_D_I_C[17] = x16;
+        w_D_I_C[18] = x23;
+        w_D_I_C[19] = -x21;
+        w_D_I_C[20] = x18;
+        w_D_I_C[21] = x22;
+        w_D_I_C[22] = x20;
+        w_D_I_C[23] = x15;
+        w_D_I_C[24] = omega_dot_0;
+        w_D_I_C[25] = omega_dot_1;
+        w_D_I_C[26] = omega_dot_2;
+        w_D_I_C[27] = 0.0f;
+        w_D_I_C[28] = 0.0f;
+        w_D_I_C[29] = 0.0f;
+        w_D_I_C[30] = 0.0f;
+        w_D_I_C[31] = 0.0f;
+        w_D_I_C[32] = 0.0f;
+        w_D_I_C[33] = 0.0f;
+        w_D_I_C[34] = 0.0f;
+        w_D_I_C[35] = 0.0f;
+        w_D_I_C[36] = 0.0f;
+        w_D_I_C[37] = 0.0f;
+        w_D_I_C[38] = 0.0f;
+        w_D_I_C[39] = 0.0f;
+        w_D_I_C[40] = 0.0f;
+        w_D_I_C[41] = 0.0f;
+        w_D_I_C[42] = 0.0f;
+        w_D_I_C[43] = 0.0f;
+        w_D_I_C[44] = 0.0f;
+        w_D_I_C[45] = 0.0f;
+        w_D_I_C[46] = 0.0f;
+        w_D_I_C[47] = 0.0f;
+        w_D_I_C[48] = 0.0f;
+        w_D_I_C[49] = 0.0f;
+        w_D_I_C[50] = 0.0f;
+        w_D_I_C[51] = 0.0f;
+        w_D_I_C[52] = 0.0f;
+        w_D_I_C[53] = 0.0f;
+        w_D_m[0] = 0.0f;
+        w_D_m[1] = 0.0f;
+        w_D_m[2] = 0.0f;
+        w_D_m[3] = c_ddot_0;
+        w_D_m[4] = c_ddot_1;
+        w_D_m[5] = c_ddot_2;
+        w_D_omega[0] = -I_C_10*omega_2 + I_C_20*omega_1;
+        w_D_omega[1] = -I_C_11*omega_2 + 2.0f*x0 + x3;
+        w_D_omega[2] = I_C_22*omega_1 - 2.0f*x5 - x8;
+        w_D_omega[3] = I_C_00*omega_2 - x0 - 2.0f*x1 - x2;
+        w_D_omega[4] = I_C_01*omega_2 - I_C_21*omega_0;
+        w_D_omega[5] = -I_C_22*omega_0 + 2.0f*x10 + x13;
+        w_D_omega[6] = -I_C_00*omega_1 + x5 + 2.0f*x6 + x7;
+        w_D_omega[7] = I_C_11*omega_0 - x10 - x11 - 2.0f*x12;
+        w_D_omega[8] = -I_C_02*omega_1 + I_C_12*omega_0;
+        w_D_omega[9] = 0.0f;
+        w_D_omega[10] = 0.0f;
+        w_D_omega[11] = 0.0f;
+        w_D_omega[12] = 0.0f;
+        w_D_omega[13] = 0.0f;
+        w_D_omega[14] = 0.0f;
+        w_D_omega[15] = 0.0f;
+        w_D_omega[16] = 0.0f;
+        w_D_omega[17] = 0.0f;
+        w_D_omega_dot[0] = I_C_00;
+        w_D_omega_dot[1] = I_C_01;
+        w_D_omega_dot[2] = I_C_02;
+        w_D_omega_dot[3] = I_C_10;
+        w_D_omega_dot[4] = I_C_11;
+        w_D_omega_dot[5] = I_C_12;
+        w_D_omega_dot[6] = I_C_20;
+        w_D_omega_dot[7] = I_C_21;
+        w_D_omega_dot[8] = I_C_22;
+        w_D_omega_dot[9] = 0.0f;
+        w_D_omega_dot[10] = 0.0f;
+        w_D_omega_dot[11] = 0.0f;
+        w_D_omega_dot[12] = 0.0f;
+        w_D_omega_dot[13] = 0.0f;
+        w_D_omega_dot[14] = 0.0f;
+        w_D_omega_dot[15] = 0.0f;
+        w_D_omega_dot[16] = 0.0f;
+        w_D_omega_dot[17] = 0.0f;
+        w_D_c_ddot[0] = 0.0f;
+        w_D_c_ddot[1] = 0.0f;
+        w_D_c_ddot[2] = 0.0f;
+        w_D_c_ddot[3] = 0.0f;
+        w_D_c_ddot[4] = 0.0f;
+        w_D_c_ddot[5] = 0.0f;
+        w_D_c_ddot[6] = 0.0f;
+        w_D_c_ddot[7] = 0.0f;
+        w_D_c_ddot[8] = 0.0f;
+        w_D_c_ddot[9] = m;
+        w_D_c_ddot[10] = 0.0f;
+        w_D_c_ddot[11] = 0.0f;
+        w_D_c_ddot[12] = 0.0f;
+        w_D_c_ddot[13] = m;
+        w_D_c_ddot[14] = 0.0f;
+        w_D_c_ddot[15] = 0.0f;
+        w_D_c_ddot[16] = 0.0f;
+        w_D_c_ddot[17] = m;
+    }
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const float s_ = ((((((w[0] + (w[1] + w[2])) + ((w[3] + w[4]) + (w[5] + w_D_I_C[0]))) + (((w_D_I_C[1] + w_D_I_C[2]) + (w_D_I_C[3] + w_D_I_C[4])) + ((w_D_I_C[5] + w_D_I_C[6]) + (w_D_I_C[7] + w_D_I_C[8])))) + (((w_D_I_C[9] + (w_D_I_C[10] + w_D_I_C[11])) + ((w_D_I_C[12] + w_D_I_C[13]) + (w_D_I_C[14] + w_D_I_C[15]))) + (((w_D_I_C[16] + w_D_I_C[17]) + (w_D_I_C[18] + w_D_I_C[19])) + ((w_D_I_C[20] + w_D_I_C[21]) + (w_D_I_C[22] + w_D_I_C[23]))))) + ((((w_D_I_C[24] + (w_D_I_C[25] + w_D_I_C[26])) + ((w_D_I_C[27] + w_D_I_C[28]) + (w_D_I_C[29] + w_D_I_C[30]))) + (((w_D_I_C[31] + w_D_I_C[32]) + (w_D_I_C[33] + w_D_I_C[34])) + ((w_D_I_C[35] + w_D_I_C[36]) + (w_D_I_C[37] + w_D_I_C[38])))) + (((w_D_I_C[39] + (w_D_I_C[40] + w_D_I_C[41])) + ((w_D_I_C[42] + w_D_I_C[43]) + (w_D_I_C[44] + w_D_I_C[45]))) + (((w_D_I_C[46] + w_D_I_C[47]) + (w_D_I_C[48] + w_D_I_C[49])) + ((w_D_I_C[50] + w_D_I_C[51]) + (w_D_I_C[52] + w_D_I_C[53])))))) + (((((w_D_m[0] + (w_D_m[1] + w_D_m[2])) + ((w_D_m[3] + w_D_m[4]) + (w_D_m[5] + w_D_omega[0]))) + (((w_D_omega[1] + w_D_omega[2]) + (w_D_omega[3] + w_D_omega[4])) + ((w_D_omega[5] + w_D_omega[6]) + (w_D_omega[7] + w_D_omega[8])))) + (((w_D_omega[9] + (w_D_omega[10] + w_D_omega[11])) + ((w_D_omega[12] + w_D_omega[13]) + (w_D_omega[14] + w_D_omega[15]))) + (((w_D_omega[16] + w_D_omega[17]) + (w_D_omega_dot[0] + w_D_omega_dot[1])) + ((w_D_omega_dot[2] + w_D_omega_dot[3]) + (w_D_omega_dot[4] + w_D_omega_dot[5]))))) + ((((w_D_omega_dot[6] + (w_D_omega_dot[7] + w_D_omega_dot[8])) + ((w_D_omega_dot[9] + w_D_omega_dot[10]) + (w_D_omega_dot[11] + w_D_omega_dot[12]))) + (((w_D_omega_dot[13] + w_D_omega_dot[14]) + (w_D_omega_dot[15] + w_D_omega_dot[16])) + ((w_D_omega_dot[17] + w_D_c_ddot[0]) + (w_D_c_ddot[1] + w_D_c_ddot[2])))) + (((w_D_c_ddot[3] + (w_D_c_ddot[4] + w_D_c_ddot[5])) + ((w_D_c_ddot[6] + w_D_c_ddot[7]) + (w_D_c_ddot[8] + w_D_c_ddot[9]))) + (((w_D_c_ddot[10] + w_D_c_ddot[11]) + (w_D_c_ddot[12] + w_D_c_ddot[13])) + ((w_D_c_ddot[14] + w_D_c_ddot[15]) + (w_D_c_ddot[16] + w_D_c_ddot[17])))))));
+        if (!(s_ - s_ == 0.0f))
+            finite += (((((((w[0] - w[0]) + ((w[1] - w[1]) + (w[2] - w[2]))) + (((w[3] - w[3]) + (w[4] - w[4])) + ((w[5] - w[5]) + (w_D_I_C[0] - w_D_I_C[0])))) + ((((w_D_I_C[1] - w_D_I_C[1]) + (w_D_I_C[2] - w_D_I_C[2])) + ((w_D_I_C[3] - w_D_I_C[3]) + (w_D_I_C[4] - w_D_I_C[4]))) + (((w_D_I_C[5] - w_D_I_C[5]) + (w_D_I_C[6] - w_D_I_C[6])) + ((w_D_I_C[7] - w_D_I_C[7]) + (w_D_I_C[8] - w_D_I_C[8]))))) + ((((w_D_I_C[9] - w_D_I_C[9]) + ((w_D_I_C[10] - w_D_I_C[10]) + (w_D_I_C[11] - w_D_I_C[11]))) + (((w_D_I_C[12] - w_D_I_C[12]) + (w_D_I_C[13] - w_D_I_C[13])) + ((w_D_I_C[14] - w_D_I_C[14]) + (w_D_I_C[15] - w_D_I_C[15])))) + ((((w_D_I_C[16] - w_D_I_C[16]) + (w_D_I_C[17] - w_D_I_C[17])) + ((w_D_I_C[18] - w_D_I_C[18]) + (w_D_I_C[19] - w_D_I_C[19]))) + (((w_D_I_C[20] - w_D_I_C[20]) + (w_D_I_C[21] - w_D_I_C[21])) + ((w_D_I_C[22] - w_D_I_C[22]) + (w_D_I_C[23] - w_D_I_C[23])))))) + (((((w_D_I_C[24] - w_D_I_C[24]) + ((w_D_I_C[25] - w_D_I_C[25]) + (w_D_I_C[26] - w_D_I_C[26]))) + (((w_D_I_C[27] - w_D_I_C[27]) + (w_D_I_C[28] - w_D_I_C[28])) + ((w_D_I_C[29] - w_D_I_C[29]) + (w_D_I_C[30] - w_D_I_C[30])))) + ((((w_D_I_C[31] - w_D_I_C[31]) + (w_D_I_C[32] - w_D_I_C[32])) + ((w_D_I_C[33] - w_D_I_C[33]) + (w_D_I_C[34] - w_D_I_C[34]))) + (((w_D_I_C[35] - w_D_I_C[35]) + (w_D_I_C[36] - w_D_I_C[36])) + ((w_D_I_C[37] - w_D_I_C[37]) + (w_D_I_C[38] - w_D_I_C[38]))))) + ((((w_D_I_C[39] - w_D_I_C[39]) + ((w_D_I_C[40] - w_D_I_C[40]) + (w_D_I_C[41] - w_D_I_C[41]))) + (((w_D_I_C[42] - w_D_I_C[42]) + (w_D_I_C[43] - w_D_I_C[43])) + ((w_D_I_C[44] - w_D_I_C[44]) + (w_D_I_C[45] - w_D_I_C[45])))) + ((((w_D_I_C[46] - w_D_I_C[46]) + (w_D_I_C[47] - w_D_I_C[47])) + ((w_D_I_C[48] - w_D_I_C[48]) + (w_D_I_C[49] - w_D_I_C[49]))) + (((w_D_I_C[50] - w_D_I_C[50]) + (w_D_I_C[51] - w_D_I_C[51])) + ((w_D_I_C[52] - w_D_I_C[52]) + (w_D_I_C[53] - w_D_I_C[53]))))))) + ((((((w_D_m[0] - w_D_m[0]) + ((w_D_m[1] - w_D_m[1]) + (w_D_m[2] - w_D_m[2]))) + (((w_D_m[3] - w_D_m[3]) + (w_D_m[4] - w_D_m[4])) + ((w_D_m[5] - w_D_m[5]) + (w_D_omega[0] - w_D_omega[0])))) + ((((w_D_omega[1] - w_D_omega[1]) + (w_D_omega[2] - w_D_omega[2])) + ((w_D_omega[3] - w_D_omega[3]) + (w_D_omega[4] - w_D_omega[4]))) + (((w_D_omega[5] - w_D_omega[5]) + (w_D_omega[6] - w_D_omega[6])) + ((w_D_omega[7] - w_D_omega[7]) + (w_D_omega[8] - w_D_omega[8]))))) + ((((w_D_omega[9] - w_D_omega[9]) + ((w_D_omega[10] - w_D_omega[10]) + (w_D_omega[11] - w_D_omega[11]))) + (((w_D_omega[12] - w_D_omega[12]) + (w_D_omega[13] - w_D_omega[13])) + ((w_D_omega[14] - w_D_omega[14]) + (w_D_omega[15] - w_D_omega[15])))) + ((((w_D_omega[16] - w_D_omega[16]) + (w_D_omega[17] - w_D_omega[17])) + ((w_D_omega_dot[0] - w_D_omega_dot[0]) + (w_D_omega_dot[1] - w_D_omega_dot[1]))) + (((w_D_omega_dot[2] - w_D_omega_dot[2]) + (w_D_omega_dot[3] - w_D_omega_dot[3])) + ((w_D_omega_dot[4] - w_D_omega_dot[4]) + (w_D_omega_dot[5] - w_D_omega_dot[5])))))) + (((((w_D_omega_dot[6] - w_D_omega_dot[6]) + ((w_D_omega_dot[7] - w_D_omega_dot[7]) + (w_D_omega_dot[8] - w_D_omega_dot[8]))) + (((w_D_omega_dot[9] - w_D_omega_dot[9]) + (w_D_omega_dot[10] - w_D_omega_dot[10])) + ((w_D_omega_dot[11] - w_D_omega_dot[11]) + (w_D_omega_dot[12] - w_D_omega_dot[12])))) + ((((w_D_omega_dot[13] - w_D_omega_dot[13]) + (w_D_omega_dot[14] - w_D_omega_dot[14])) + ((w_D_omega_dot[15] - w_D_omega_dot[15]) + (w_D_omega_dot[16] - w_D_omega_dot[16]))) + (((w_D_omega_dot[17] - w_D_omega_dot[17]) + (w_D_c_ddot[0] - w_D_c_ddot[0])) + ((w_D_c_ddot[1] - w_D_c_ddot[1]) + (w_D_c_ddot[2] - w_D_c_ddot[2]))))) + ((((w_D_c_ddot[3] - w_D_c_ddot[3]) + ((w_D_c_ddot[4] - w_D_c_ddot[4]) + (w_D_c_ddot[5] - w_D_c_ddot[5]))) + (((w_D_c_ddot[6] - w_D_c_ddot[6]) + (w_D_c_ddot[7] - w_D_c_ddot[7])) + ((w_D_c_ddot[8] - w_D_c_ddot[8]) + (w_D_c_ddot[9] - w_D_c_ddot[9])))) + ((((w_D_c_ddot[10] - w_D_c_ddot[10]) + (w_D_c_ddot[11] - w_D_c_ddot[11])) + ((w_D_c_ddot[12] - w_D_c_ddot[12]) + (w_D_c_ddot[13] - w_D_c_ddot[13]))) + (((w_D_c_ddot[14] - w_D_c_ddot[14]) + (w_D_c_ddot[15] - w_D_c_ddot[15])) + ((w_D_c_ddot[16] - w_D_c_ddot[16]) + (w_D_c_ddot[17] - w_D_c_ddot[17]))))))));
+    }
+    if (finite != finite)
+        status |= RIGIDSYM_C_NONFINITE_RESULT;
+    if (singular) {
+        status |= RIGIDSYM_C_SINGULAR;
+        w[0] = NAN;
+        w[1] = NAN;
+        w[2] = NAN;
+        w[3] = NAN;
+        w[4] = NAN;
+        w[5] = NAN;
+        w_D_I_C[0] = NAN;
+        w_D_I_C[1] = NAN;
+        w_D_I_C[2] = NAN;
+        w_D_I_C[3] = NAN;
+        w_D_I_C[4] = NAN;
+        w_D_I_C[5] = NAN;
+        w_D_I_C[6] = NAN;
+        w_D_I_C[7] = NAN;
+        w_D_I_C[8] = NAN;
+        w_D_I_C[9] = NAN;
+        w_D_I_C[10] = NAN;
+        w_D_I_C[11] = NAN;
+        w_D_I_C[12] = NAN;
+        w_D_I_C[13] = NAN;
+        w_D_I_C[14] = NAN;
+        w_D_I_C[15] = NAN;
+        w_D_I_C[16] = NAN;
+        w_D_I_C[17] = NAN;
+        w_D_I_C[18] = NAN;
+        w_D_I_C[19] = NAN;
+        w_D_I_C[20] = NAN;
+        w_D_I_C[21] = NAN;
+        w_D_I_C[22] = NAN;
+        w_D_I_C[23] = NAN;
+        w_D_I_C[24] = NAN;
+        w_D_I_C[25] = NAN;
+        w_D_I_C[26] = NAN;
+        w_D_I_C[27] = NAN;
+        w_D_I_C[28] = NAN;
+        w_D_I_C[29] = NAN;
+        w_D_I_C[30] = NAN;
+        w_D_I_C[31] = NAN;
+        w_D_I_C[32] = NAN;
+        w_D_I_C[33] = NAN;
+        w_D_I_C[34] = NAN;
+        w_D_I_C[35] = NAN;
+        w_D_I_C[36] = NAN;
+        w_D_I_C[37] = NAN;
+        w_D_I_C[38] = NAN;
+        w_D_I_C[39] = NAN;
+        w_D_I_C[40] = NAN;
+        w_D_I_C[41] = NAN;
+        w_D_I_C[42] = NAN;
+        w_D_I_C[43] = NAN;
+        w_D_I_C[44] = NAN;
+        w_D_I_C[45] = NAN;
+        w_D_I_C[46] = NAN;
+        w_D_I_C[47] = NAN;
+        w_D_I_C[48] = NAN;
+        w_D_I_C[49] = NAN;
+        w_D_I_C[50] = NAN;
+        w_D_I_C[51] = NAN;
+        w_D_I_C[52] = NAN;
+        w_D_I_C[53] = NAN;
+        w_D_m[0] = NAN;
+        w_D_m[1] = NAN;
+        w_D_m[2] = NAN;
+        w_D_m[3] = NAN;
+        w_D_m[4] = NAN;
+        w_D_m[5] = NAN;
+        w_D_omega[0] = NAN;
+        w_D_omega[1] = NAN;
+        w_D_omega[2] = NAN;
+        w_D_omega[3] = NAN;
+        w_D_omega[4] = NAN;
+        w_D_omega[5] = NAN;
+        w_D_omega[6] = NAN;
+        w_D_omega[7] = NAN;
+        w_D_omega[8] = NAN;
+        w_D_omega[9] = NAN;
+        w_D_omega[10] = NAN;
+        w_D_omega[11] = NAN;
+        w_D_omega[12] = NAN;
+        w_D_omega[13] = NAN;
+        w_D_omega[14] = NAN;
+        w_D_omega[15] = NAN;
+        w_D_omega[16] = NAN;
+        w_D_omega[17] = NAN;
+        w_D_omega_dot[0] = NAN;
+        w_D_omega_dot[1] = NAN;
+        w_D_omega_dot[2] = NAN;
+        w_D_omega_dot[3] = NAN;
+        w_D_omega_dot[4] = NAN;
+        w_D_omega_dot[5] = NAN;
+        w_D_omega_dot[6] = NAN;
+        w_D_omega_dot[7] = NAN;
+        w_D_omega_dot[8] = NAN;
+        w_D_omega_dot[9] = NAN;
+        w_D_omega_dot[10] = NAN;
+        w_D_omega_dot[11] = NAN;
+        w_D_omega_dot[12] = NAN;
+        w_D_omega_dot[13] = NAN;
+        w_D_omega_dot[14] = NAN;
+        w_D_omega_dot[15] = NAN;
+        w_D_omega_dot[16] = NAN;
+        w_D_omega_dot[17] = NAN;
+        w_D_c_ddot[0] = NAN;
+        w_D_c_ddot[1] = NAN;
+        w_D_c_ddot[2] = NAN;
+        w_D_c_ddot[3] = NAN;
+        w_D_c_ddot[4] = NAN;
+        w_D_c_ddot[5] = NAN;
+        w_D_c_ddot[6] = NAN;
+        w_D_c_ddot[7] = NAN;
+        w_D_c_ddot[8] = NAN;
+        w_D_c_ddot[9] = NAN;
+        w_D_c_ddot[10] = NAN;
+        w_D_c_ddot[11] = NAN;
+        w_D_c_ddot[12] = NAN;
+        w_D_c_ddot[13] = NAN;
+        w_D_c_ddot[14] = NAN;
+        w_D_c_ddot[15] = NAN;
+        w_D_c_ddot[16] = NAN;
+        w_D_c_ddot[17] = NAN;
+    }
+    return status;
+}
+#endif
+
 RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians_f32(
     const float I_C[9],
     float m,
@@ -1412,43 +2350,58 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians_f32(
     const float c_ddot[3],
     float w[6],    float w_D_I_C[54],    float w_D_m[6],    float w_D_omega[18],    float w_D_omega_dot[18],    float w_D_c_ddot[18])
 {
-    uint32_t odd = 0;
     int status = 0, singular = 0;
     float finite = 0.0f;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    {   /* the range test of every input component, as one loop (it vectorises) */
-        const float in_[20] = {
-            I_C[0], I_C[1], I_C[2], I_C[3], I_C[4], I_C[5], I_C[6], I_C[7], I_C[8], m, omega[0],
-            omega[1], omega[2], omega_dot[0], omega_dot[1], omega_dot[2], c_ddot[0], c_ddot[1],
-            c_ddot[2], 0.0f
-        };
-        int j_;
-        for (j_ = 0; j_ < 20; ++j_)
-            RIGIDSYM_C_ODD_F(odd, in_[j_]);
+    uint32_t odd = 0;
+#if RIGIDSYM_C_SSE2
+    {   /* the range test of every input component, 4 per SSE2 register */
+        __m128i mx_ = _mm_setzero_si128(), mn_ = _mm_set1_epi16(0x7fff);
+        rigidsym_c_q_f(_mm_castps_si128(_mm_loadu_ps(I_C)), &mx_, &mn_);
+        rigidsym_c_q_f(_mm_castps_si128(_mm_loadu_ps(I_C + 4)), &mx_, &mn_);
+        rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&I_C[8], *&m, *&omega[0], *&omega[1])), &mx_, &mn_);
+        rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&omega[2], *&omega_dot[0], *&omega_dot[1], *&omega_dot[2])), &mx_, &mn_);
+        rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&c_ddot[0], *&c_ddot[1], *&c_ddot[2], 0.0f)), &mx_, &mn_);
+        if (RIGIDSYM_C_Q_ODD_F(mx_, mn_))
+            return rigidsym_c_newton_euler_wrench_with_jacobians_f32_odd(I_C, m, omega, omega_dot, c_ddot, w, w_D_I_C, w_D_m, w_D_omega, w_D_omega_dot, w_D_c_ddot);
     }
-    if (odd >> 31) {
-        const float *args[5];
-        const int sizes[5] = {9, 1, 3, 3, 3};
-        int j;
-        args[0] = I_C;
-        args[1] = &m;
-        args[2] = omega;
-        args[3] = omega_dot;
-        args[4] = c_ddot;
-        status = RIGIDSYM_C_EXTREME_INPUT;
-        for (j = 0; j < 5; ++j)
-            if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
-                status = RIGIDSYM_C_NONFINITE_INPUT;
-#if RIGIDSYM_C_RESCALE_F
-        if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
-            const int r_ = rigidsym_c_newton_euler_wrench_with_jacobians_f32_rescue(I_C, m, omega, omega_dot, c_ddot, w, w_D_I_C, w_D_m, w_D_omega, w_D_omega_dot, w_D_c_ddot);
-            if (r_ >= 0)
-                return r_;
+#elif RIGIDSYM_C_VECTOR
+    {   /* the range test of every input component, 4 per vector register */
+        rigidsym_c_vf oddv_ = {0, 0, 0, 0};
+        oddv_ |= rigidsym_c_odd_vf(rigidsym_c_load_vf(I_C));
+        oddv_ |= rigidsym_c_odd_vf(rigidsym_c_load_vf(I_C + 4));
+        {
+            const rigidsym_c_vf v_ = {rigidsym_c_bits_f(&I_C[8]), rigidsym_c_bits_f(&m), rigidsym_c_bits_f(&omega[0]), rigidsym_c_bits_f(&omega[1])};
+            oddv_ |= rigidsym_c_odd_vf(v_);
         }
-#endif
+        {
+            const rigidsym_c_vf v_ = {rigidsym_c_bits_f(&omega[2]), rigidsym_c_bits_f(&omega_dot[0]), rigidsym_c_bits_f(&omega_dot[1]), rigidsym_c_bits_f(&omega_dot[2])};
+            oddv_ |= rigidsym_c_odd_vf(v_);
+        }
+        {
+            const rigidsym_c_vf v_ = {rigidsym_c_bits_f(&c_ddot[0]), rigidsym_c_bits_f(&c_ddot[1]), rigidsym_c_bits_f(&c_ddot[2]), 0};
+            oddv_ |= rigidsym_c_odd_vf(v_);
+        }
+        odd = oddv_[0] | oddv_[1] | oddv_[2] | oddv_[3];
     }
 #else
-    (void)odd;
+    {   /* the range test of every input component, one at a time (an argument's
+         * components by a loop: compact code where there are no 16-byte vectors) */
+        int j_;
+        for (j_ = 0; j_ < 9; ++j_)
+            RIGIDSYM_C_ODD_F(odd, I_C[j_]);
+        RIGIDSYM_C_ODD_F(odd, m);
+        for (j_ = 0; j_ < 3; ++j_)
+            RIGIDSYM_C_ODD_F(odd, omega[j_]);
+        for (j_ = 0; j_ < 3; ++j_)
+            RIGIDSYM_C_ODD_F(odd, omega_dot[j_]);
+        for (j_ = 0; j_ < 3; ++j_)
+            RIGIDSYM_C_ODD_F(odd, c_ddot[j_]);
+        (void)j_;
+    }
+#endif
+    if (odd >> 31)
+        return rigidsym_c_newton_euler_wrench_with_jacobians_f32_odd(I_C, m, omega, omega_dot, c_ddot, w, w_D_I_C, w_D_m, w_D_omega, w_D_omega_dot, w_D_c_ddot);
 #endif
     const float I_C_00 = I_C[0];
     const float I_C_01 = I_C[1];
@@ -1616,13 +2569,16 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians_f32(
     }
     /* no division or root, and every output bounded by 2^98 for inputs of
      * ordinary magnitude (|x| < 2^31): only an extreme or non-finite input can make an
-     * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN
-     * otherwise; the guards of rigidsym_c_impl.h keep the compiler from folding it) */
+     * output non-finite, so only then (rigidsym_c_newton_euler_wrench_with_jacobians_f32_odd) are the outputs tested */
 #if defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    finite += (((((((w[0] - w[0]) + ((w[1] - w[1]) + (w[2] - w[2]))) + (((w[3] - w[3]) + (w[4] - w[4])) + ((w[5] - w[5]) + (w_D_I_C[0] - w_D_I_C[0])))) + ((((w_D_I_C[1] - w_D_I_C[1]) + (w_D_I_C[2] - w_D_I_C[2])) + ((w_D_I_C[3] - w_D_I_C[3]) + (w_D_I_C[4] - w_D_I_C[4]))) + (((w_D_I_C[5] - w_D_I_C[5]) + (w_D_I_C[6] - w_D_I_C[6])) + ((w_D_I_C[7] - w_D_I_C[7]) + (w_D_I_C[8] - w_D_I_C[8]))))) + ((((w_D_I_C[9] - w_D_I_C[9]) + ((w_D_I_C[10] - w_D_I_C[10]) + (w_D_I_C[11] - w_D_I_C[11]))) + (((w_D_I_C[12] - w_D_I_C[12]) + (w_D_I_C[13] - w_D_I_C[13])) + ((w_D_I_C[14] - w_D_I_C[14]) + (w_D_I_C[15] - w_D_I_C[15])))) + ((((w_D_I_C[16] - w_D_I_C[16]) + (w_D_I_C[17] - w_D_I_C[17])) + ((w_D_I_C[18] - w_D_I_C[18]) + (w_D_I_C[19] - w_D_I_C[19]))) + (((w_D_I_C[20] - w_D_I_C[20]) + (w_D_I_C[21] - w_D_I_C[21])) + ((w_D_I_C[22] - w_D_I_C[22]) + (w_D_I_C[23] - w_D_I_C[23])))))) + (((((w_D_I_C[24] - w_D_I_C[24]) + ((w_D_I_C[25] - w_D_I_C[25]) + (w_D_I_C[26] - w_D_I_C[26]))) + (((w_D_I_C[27] - w_D_I_C[27]) + (w_D_I_C[28] - w_D_I_C[28])) + ((w_D_I_C[29] - w_D_I_C[29]) + (w_D_I_C[30] - w_D_I_C[30])))) + ((((w_D_I_C[31] - w_D_I_C[31]) + (w_D_I_C[32] - w_D_I_C[32])) + ((w_D_I_C[33] - w_D_I_C[33]) + (w_D_I_C[34] - w_D_I_C[34]))) + (((w_D_I_C[35] - w_D_I_C[35]) + (w_D_I_C[36] - w_D_I_C[36])) + ((w_D_I_C[37] - w_D_I_C[37]) + (w_D_I_C[38] - w_D_I_C[38]))))) + ((((w_D_I_C[39] - w_D_I_C[39]) + ((w_D_I_C[40] - w_D_I_C[40]) + (w_D_I_C[41] - w_D_I_C[41]))) + (((w_D_I_C[42] - w_D_I_C[42]) + (w_D_I_C[43] - w_D_I_C[43])) + ((w_D_I_C[44] - w_D_I_C[44]) + (w_D_I_C[45] - w_D_I_C[45])))) + ((((w_D_I_C[46] - w_D_I_C[46]) + (w_D_I_C[47] - w_D_I_C[47])) + ((w_D_I_C[48] - w_D_I_C[48]) + (w_D_I_C[49] - w_D_I_C[49]))) + (((w_D_I_C[50] - w_D_I_C[50]) + (w_D_I_C[51] - w_D_I_C[51])) + ((w_D_I_C[52] - w_D_I_C[52]) + (w_D_I_C[53] - w_D_I_C[53]))))))) + ((((((w_D_m[0] - w_D_m[0]) + ((w_D_m[1] - w_D_m[1]) + (w_D_m[2] - w_D_m[2]))) + (((w_D_m[3] - w_D_m[3]) + (w_D_m[4] - w_D_m[4])) + ((w_D_m[5] - w_D_m[5]) + (w_D_omega[0] - w_D_omega[0])))) + ((((w_D_omega[1] - w_D_omega[1]) + (w_D_omega[2] - w_D_omega[2])) + ((w_D_omega[3] - w_D_omega[3]) + (w_D_omega[4] - w_D_omega[4]))) + (((w_D_omega[5] - w_D_omega[5]) + (w_D_omega[6] - w_D_omega[6])) + ((w_D_omega[7] - w_D_omega[7]) + (w_D_omega[8] - w_D_omega[8]))))) + ((((w_D_omega[9] - w_D_omega[9]) + ((w_D_omega[10] - w_D_omega[10]) + (w_D_omega[11] - w_D_omega[11]))) + (((w_D_omega[12] - w_D_omega[12]) + (w_D_omega[13] - w_D_omega[13])) + ((w_D_omega[14] - w_D_omega[14]) + (w_D_omega[15] - w_D_omega[15])))) + ((((w_D_omega[16] - w_D_omega[16]) + (w_D_omega[17] - w_D_omega[17])) + ((w_D_omega_dot[0] - w_D_omega_dot[0]) + (w_D_omega_dot[1] - w_D_omega_dot[1]))) + (((w_D_omega_dot[2] - w_D_omega_dot[2]) + (w_D_omega_dot[3] - w_D_omega_dot[3])) + ((w_D_omega_dot[4] - w_D_omega_dot[4]) + (w_D_omega_dot[5] - w_D_omega_dot[5])))))) + (((((w_D_omega_dot[6] - w_D_omega_dot[6]) + ((w_D_omega_dot[7] - w_D_omega_dot[7]) + (w_D_omega_dot[8] - w_D_omega_dot[8]))) + (((w_D_omega_dot[9] - w_D_omega_dot[9]) + (w_D_omega_dot[10] - w_D_omega_dot[10])) + ((w_D_omega_dot[11] - w_D_omega_dot[11]) + (w_D_omega_dot[12] - w_D_omega_dot[12])))) + ((((w_D_omega_dot[13] - w_D_omega_dot[13]) + (w_D_omega_dot[14] - w_D_omega_dot[14])) + ((w_D_omega_dot[15] - w_D_omega_dot[15]) + (w_D_omega_dot[16] - w_D_omega_dot[16]))) + (((w_D_omega_dot[17] - w_D_omega_dot[17]) + (w_D_c_ddot[0] - w_D_c_ddot[0])) + ((w_D_c_ddot[1] - w_D_c_ddot[1]) + (w_D_c_ddot[2] - w_D_c_ddot[2]))))) + ((((w_D_c_ddot[3] - w_D_c_ddot[3]) + ((w_D_c_ddot[4] - w_D_c_ddot[4]) + (w_D_c_ddot[5] - w_D_c_ddot[5]))) + (((w_D_c_ddot[6] - w_D_c_ddot[6]) + (w_D_c_ddot[7] - w_D_c_ddot[7])) + ((w_D_c_ddot[8] - w_D_c_ddot[8]) + (w_D_c_ddot[9] - w_D_c_ddot[9])))) + ((((w_D_c_ddot[10] - w_D_c_ddot[10]) + (w_D_c_ddot[11] - w_D_c_ddot[11])) + ((w_D_c_ddot[12] - w_D_c_ddot[12]) + (w_D_c_ddot[13] - w_D_c_ddot[13]))) + (((w_D_c_ddot[14] - w_D_c_ddot[14]) + (w_D_c_ddot[15] - w_D_c_ddot[15])) + ((w_D_c_ddot[16] - w_D_c_ddot[16]) + (w_D_c_ddot[17] - w_D_c_ddot[17]))))))));
-#else
-    if (status)
-        finite += (((((((w[0] - w[0]) + ((w[1] - w[1]) + (w[2] - w[2]))) + (((w[3] - w[3]) + (w[4] - w[4])) + ((w[5] - w[5]) + (w_D_I_C[0] - w_D_I_C[0])))) + ((((w_D_I_C[1] - w_D_I_C[1]) + (w_D_I_C[2] - w_D_I_C[2])) + ((w_D_I_C[3] - w_D_I_C[3]) + (w_D_I_C[4] - w_D_I_C[4]))) + (((w_D_I_C[5] - w_D_I_C[5]) + (w_D_I_C[6] - w_D_I_C[6])) + ((w_D_I_C[7] - w_D_I_C[7]) + (w_D_I_C[8] - w_D_I_C[8]))))) + ((((w_D_I_C[9] - w_D_I_C[9]) + ((w_D_I_C[10] - w_D_I_C[10]) + (w_D_I_C[11] - w_D_I_C[11]))) + (((w_D_I_C[12] - w_D_I_C[12]) + (w_D_I_C[13] - w_D_I_C[13])) + ((w_D_I_C[14] - w_D_I_C[14]) + (w_D_I_C[15] - w_D_I_C[15])))) + ((((w_D_I_C[16] - w_D_I_C[16]) + (w_D_I_C[17] - w_D_I_C[17])) + ((w_D_I_C[18] - w_D_I_C[18]) + (w_D_I_C[19] - w_D_I_C[19]))) + (((w_D_I_C[20] - w_D_I_C[20]) + (w_D_I_C[21] - w_D_I_C[21])) + ((w_D_I_C[22] - w_D_I_C[22]) + (w_D_I_C[23] - w_D_I_C[23])))))) + (((((w_D_I_C[24] - w_D_I_C[24]) + ((w_D_I_C[25] - w_D_I_C[25]) + (w_D_I_C[26] - w_D_I_C[26]))) + (((w_D_I_C[27] - w_D_I_C[27]) + (w_D_I_C[28] - w_D_I_C[28])) + ((w_D_I_C[29] - w_D_I_C[29]) + (w_D_I_C[30] - w_D_I_C[30])))) + ((((w_D_I_C[31] - w_D_I_C[31]) + (w_D_I_C[32] - w_D_I_C[32])) + ((w_D_I_C[33] - w_D_I_C[33]) + (w_D_I_C[34] - w_D_I_C[34]))) + (((w_D_I_C[35] - w_D_I_C[35]) + (w_D_I_C[36] - w_D_I_C[36])) + ((w_D_I_C[37] - w_D_I_C[37]) + (w_D_I_C[38] - w_D_I_C[38]))))) + ((((w_D_I_C[39] - w_D_I_C[39]) + ((w_D_I_C[40] - w_D_I_C[40]) + (w_D_I_C[41] - w_D_I_C[41]))) + (((w_D_I_C[42] - w_D_I_C[42]) + (w_D_I_C[43] - w_D_I_C[43])) + ((w_D_I_C[44] - w_D_I_C[44]) + (w_D_I_C[45] - w_D_I_C[45])))) + ((((w_D_I_C[46] - w_D_I_C[46]) + (w_D_I_C[47] - w_D_I_C[47])) + ((w_D_I_C[48] - w_D_I_C[48]) + (w_D_I_C[49] - w_D_I_C[49]))) + (((w_D_I_C[50] - w_D_I_C[50]) + (w_D_I_C[51] - w_D_I_C[51])) + ((w_D_I_C[52] - w_D_I_C[52]) + (w_D_I_C[53] - w_D_I_C[53]))))))) + ((((((w_D_m[0] - w_D_m[0]) + ((w_D_m[1] - w_D_m[1]) + (w_D_m[2] - w_D_m[2]))) + (((w_D_m[3] - w_D_m[3]) + (w_D_m[4] - w_D_m[4])) + ((w_D_m[5] - w_D_m[5]) + (w_D_omega[0] - w_D_omega[0])))) + ((((w_D_omega[1] - w_D_omega[1]) + (w_D_omega[2] - w_D_omega[2])) + ((w_D_omega[3] - w_D_omega[3]) + (w_D_omega[4] - w_D_omega[4]))) + (((w_D_omega[5] - w_D_omega[5]) + (w_D_omega[6] - w_D_omega[6])) + ((w_D_omega[7] - w_D_omega[7]) + (w_D_omega[8] - w_D_omega[8]))))) + ((((w_D_omega[9] - w_D_omega[9]) + ((w_D_omega[10] - w_D_omega[10]) + (w_D_omega[11] - w_D_omega[11]))) + (((w_D_omega[12] - w_D_omega[12]) + (w_D_omega[13] - w_D_omega[13])) + ((w_D_omega[14] - w_D_omega[14]) + (w_D_omega[15] - w_D_omega[15])))) + ((((w_D_omega[16] - w_D_omega[16]) + (w_D_omega[17] - w_D_omega[17])) + ((w_D_omega_dot[0] - w_D_omega_dot[0]) + (w_D_omega_dot[1] - w_D_omega_dot[1]))) + (((w_D_omega_dot[2] - w_D_omega_dot[2]) + (w_D_omega_dot[3] - w_D_omega_dot[3])) + ((w_D_omega_dot[4] - w_D_omega_dot[4]) + (w_D_omega_dot[5] - w_D_omega_dot[5])))))) + (((((w_D_omega_dot[6] - w_D_omega_dot[6]) + ((w_D_omega_dot[7] - w_D_omega_dot[7]) + (w_D_omega_dot[8] - w_D_omega_dot[8]))) + (((w_D_omega_dot[9] - w_D_omega_dot[9]) + (w_D_omega_dot[10] - w_D_omega_dot[10])) + ((w_D_omega_dot[11] - w_D_omega_dot[11]) + (w_D_omega_dot[12] - w_D_omega_dot[12])))) + ((((w_D_omega_dot[13] - w_D_omega_dot[13]) + (w_D_omega_dot[14] - w_D_omega_dot[14])) + ((w_D_omega_dot[15] - w_D_omega_dot[15]) + (w_D_omega_dot[16] - w_D_omega_dot[16]))) + (((w_D_omega_dot[17] - w_D_omega_dot[17]) + (w_D_c_ddot[0] - w_D_c_ddot[0])) + ((w_D_c_ddot[1] - w_D_c_ddot[1]) + (w_D_c_ddot[2] - w_D_c_ddot[2]))))) + ((((w_D_c_ddot[3] - w_D_c_ddot[3]) + ((w_D_c_ddot[4] - w_D_c_ddot[4]) + (w_D_c_ddot[5] - w_D_c_ddot[5]))) + (((w_D_c_ddot[6] - w_D_c_ddot[6]) + (w_D_c_ddot[7] - w_D_c_ddot[7])) + ((w_D_c_ddot[8] - w_D_c_ddot[8]) + (w_D_c_ddot[9] - w_D_c_ddot[9])))) + ((((w_D_c_ddot[10] - w_D_c_ddot[10]) + (w_D_c_ddot[11] - w_D_c_ddot[11])) + ((w_D_c_ddot[12] - w_D_c_ddot[12]) + (w_D_c_ddot[13] - w_D_c_ddot[13]))) + (((w_D_c_ddot[14] - w_D_c_ddot[14]) + (w_D_c_ddot[15] - w_D_c_ddot[15])) + ((w_D_c_ddot[16] - w_D_c_ddot[16]) + (w_D_c_ddot[17] - w_D_c_ddot[17]))))))));
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const float s_ = ((((((w[0] + (w[1] + w[2])) + ((w[3] + w[4]) + (w[5] + w_D_I_C[0]))) + (((w_D_I_C[1] + w_D_I_C[2]) + (w_D_I_C[3] + w_D_I_C[4])) + ((w_D_I_C[5] + w_D_I_C[6]) + (w_D_I_C[7] + w_D_I_C[8])))) + (((w_D_I_C[9] + (w_D_I_C[10] + w_D_I_C[11])) + ((w_D_I_C[12] + w_D_I_C[13]) + (w_D_I_C[14] + w_D_I_C[15]))) + (((w_D_I_C[16] + w_D_I_C[17]) + (w_D_I_C[18] + w_D_I_C[19])) + ((w_D_I_C[20] + w_D_I_C[21]) + (w_D_I_C[22] + w_D_I_C[23]))))) + ((((w_D_I_C[24] + (w_D_I_C[25] + w_D_I_C[26])) + ((w_D_I_C[27] + w_D_I_C[28]) + (w_D_I_C[29] + w_D_I_C[30]))) + (((w_D_I_C[31] + w_D_I_C[32]) + (w_D_I_C[33] + w_D_I_C[34])) + ((w_D_I_C[35] + w_D_I_C[36]) + (w_D_I_C[37] + w_D_I_C[38])))) + (((w_D_I_C[39] + (w_D_I_C[40] + w_D_I_C[41])) + ((w_D_I_C[42] + w_D_I_C[43]) + (w_D_I_C[44] + w_D_I_C[45]))) + (((w_D_I_C[46] + w_D_I_C[47]) + (w_D_I_C[48] + w_D_I_C[49])) + ((w_D_I_C[50] + w_D_I_C[51]) + (w_D_I_C[52] + w_D_I_C[53])))))) + (((((w_D_m[0] + (w_D_m[1] + w_D_m[2])) + ((w_D_m[3] + w_D_m[4]) + (w_D_m[5] + w_D_omega[0]))) + (((w_D_omega[1] + w_D_omega[2]) + (w_D_omega[3] + w_D_omega[4])) + ((w_D_omega[5] + w_D_omega[6]) + (w_D_omega[7] + w_D_omega[8])))) + (((w_D_omega[9] + (w_D_omega[10] + w_D_omega[11])) + ((w_D_omega[12] + w_D_omega[13]) + (w_D_omega[14] + w_D_omega[15]))) + (((w_D_omega[16] + w_D_omega[17]) + (w_D_omega_dot[0] + w_D_omega_dot[1])) + ((w_D_omega_dot[2] + w_D_omega_dot[3]) + (w_D_omega_dot[4] + w_D_omega_dot[5]))))) + ((((w_D_omega_dot[6] + (w_D_omega_dot[7] + w_D_omega_dot[8])) + ((w_D_omega_dot[9] + w_D_omega_dot[10]) + (w_D_omega_dot[11] + w_D_omega_dot[12]))) + (((w_D_omega_dot[13] + w_D_omega_dot[14]) + (w_D_omega_dot[15] + w_D_omega_dot[16])) + ((w_D_omega_dot[17] + w_D_c_ddot[0]) + (w_D_c_ddot[1] + w_D_c_ddot[2])))) + (((w_D_c_ddot[3] + (w_D_c_ddot[4] + w_D_c_ddot[5])) + ((w_D_c_ddot[6] + w_D_c_ddot[7]) + (w_D_c_ddot[8] + w_D_c_ddot[9]))) + (((w_D_c_ddot[10] + w_D_c_ddot[11]) + (w_D_c_ddot[12] + w_D_c_ddot[13])) + ((w_D_c_ddot[14] + w_D_c_ddot[15]) + (w_D_c_ddot[16] + w_D_c_ddot[17])))))));
+        if (!(s_ - s_ == 0.0f))
+            finite += (((((((w[0] - w[0]) + ((w[1] - w[1]) + (w[2] - w[2]))) + (((w[3] - w[3]) + (w[4] - w[4])) + ((w[5] - w[5]) + (w_D_I_C[0] - w_D_I_C[0])))) + ((((w_D_I_C[1] - w_D_I_C[1]) + (w_D_I_C[2] - w_D_I_C[2])) + ((w_D_I_C[3] - w_D_I_C[3]) + (w_D_I_C[4] - w_D_I_C[4]))) + (((w_D_I_C[5] - w_D_I_C[5]) + (w_D_I_C[6] - w_D_I_C[6])) + ((w_D_I_C[7] - w_D_I_C[7]) + (w_D_I_C[8] - w_D_I_C[8]))))) + ((((w_D_I_C[9] - w_D_I_C[9]) + ((w_D_I_C[10] - w_D_I_C[10]) + (w_D_I_C[11] - w_D_I_C[11]))) + (((w_D_I_C[12] - w_D_I_C[12]) + (w_D_I_C[13] - w_D_I_C[13])) + ((w_D_I_C[14] - w_D_I_C[14]) + (w_D_I_C[15] - w_D_I_C[15])))) + ((((w_D_I_C[16] - w_D_I_C[16]) + (w_D_I_C[17] - w_D_I_C[17])) + ((w_D_I_C[18] - w_D_I_C[18]) + (w_D_I_C[19] - w_D_I_C[19]))) + (((w_D_I_C[20] - w_D_I_C[20]) + (w_D_I_C[21] - w_D_I_C[21])) + ((w_D_I_C[22] - w_D_I_C[22]) + (w_D_I_C[23] - w_D_I_C[23])))))) + (((((w_D_I_C[24] - w_D_I_C[24]) + ((w_D_I_C[25] - w_D_I_C[25]) + (w_D_I_C[26] - w_D_I_C[26]))) + (((w_D_I_C[27] - w_D_I_C[27]) + (w_D_I_C[28] - w_D_I_C[28])) + ((w_D_I_C[29] - w_D_I_C[29]) + (w_D_I_C[30] - w_D_I_C[30])))) + ((((w_D_I_C[31] - w_D_I_C[31]) + (w_D_I_C[32] - w_D_I_C[32])) + ((w_D_I_C[33] - w_D_I_C[33]) + (w_D_I_C[34] - w_D_I_C[34]))) + (((w_D_I_C[35] - w_D_I_C[35]) + (w_D_I_C[36] - w_D_I_C[36])) + ((w_D_I_C[37] - w_D_I_C[37]) + (w_D_I_C[38] - w_D_I_C[38]))))) + ((((w_D_I_C[39] - w_D_I_C[39]) + ((w_D_I_C[40] - w_D_I_C[40]) + (w_D_I_C[41] - w_D_I_C[41]))) + (((w_D_I_C[42] - w_D_I_C[42]) + (w_D_I_C[43] - w_D_I_C[43])) + ((w_D_I_C[44] - w_D_I_C[44]) + (w_D_I_C[45] - w_D_I_C[45])))) + ((((w_D_I_C[46] - w_D_I_C[46]) + (w_D_I_C[47] - w_D_I_C[47])) + ((w_D_I_C[48] - w_D_I_C[48]) + (w_D_I_C[49] - w_D_I_C[49]))) + (((w_D_I_C[50] - w_D_I_C[50]) + (w_D_I_C[51] - w_D_I_C[51])) + ((w_D_I_C[52] - w_D_I_C[52]) + (w_D_I_C[53] - w_D_I_C[53]))))))) + ((((((w_D_m[0] - w_D_m[0]) + ((w_D_m[1] - w_D_m[1]) + (w_D_m[2] - w_D_m[2]))) + (((w_D_m[3] - w_D_m[3]) + (w_D_m[4] - w_D_m[4])) + ((w_D_m[5] - w_D_m[5]) + (w_D_omega[0] - w_D_omega[0])))) + ((((w_D_omega[1] - w_D_omega[1]) + (w_D_omega[2] - w_D_omega[2])) + ((w_D_omega[3] - w_D_omega[3]) + (w_D_omega[4] - w_D_omega[4]))) + (((w_D_omega[5] - w_D_omega[5]) + (w_D_omega[6] - w_D_omega[6])) + ((w_D_omega[7] - w_D_omega[7]) + (w_D_omega[8] - w_D_omega[8]))))) + ((((w_D_omega[9] - w_D_omega[9]) + ((w_D_omega[10] - w_D_omega[10]) + (w_D_omega[11] - w_D_omega[11]))) + (((w_D_omega[12] - w_D_omega[12]) + (w_D_omega[13] - w_D_omega[13])) + ((w_D_omega[14] - w_D_omega[14]) + (w_D_omega[15] - w_D_omega[15])))) + ((((w_D_omega[16] - w_D_omega[16]) + (w_D_omega[17] - w_D_omega[17])) + ((w_D_omega_dot[0] - w_D_omega_dot[0]) + (w_D_omega_dot[1] - w_D_omega_dot[1]))) + (((w_D_omega_dot[2] - w_D_omega_dot[2]) + (w_D_omega_dot[3] - w_D_omega_dot[3])) + ((w_D_omega_dot[4] - w_D_omega_dot[4]) + (w_D_omega_dot[5] - w_D_omega_dot[5])))))) + (((((w_D_omega_dot[6] - w_D_omega_dot[6]) + ((w_D_omega_dot[7] - w_D_omega_dot[7]) + (w_D_omega_dot[8] - w_D_omega_dot[8]))) + (((w_D_omega_dot[9] - w_D_omega_dot[9]) + (w_D_omega_dot[10] - w_D_omega_dot[10])) + ((w_D_omega_dot[11] - w_D_omega_dot[11]) + (w_D_omega_dot[12] - w_D_omega_dot[12])))) + ((((w_D_omega_dot[13] - w_D_omega_dot[13]) + (w_D_omega_dot[14] - w_D_omega_dot[14])) + ((w_D_omega_dot[15] - w_D_omega_dot[15]) + (w_D_omega_dot[16] - w_D_omega_dot[16]))) + (((w_D_omega_dot[17] - w_D_omega_dot[17]) + (w_D_c_ddot[0] - w_D_c_ddot[0])) + ((w_D_c_ddot[1] - w_D_c_ddot[1]) + (w_D_c_ddot[2] - w_D_c_ddot[2]))))) + ((((w_D_c_ddot[3] - w_D_c_ddot[3]) + ((w_D_c_ddot[4] - w_D_c_ddot[4]) + (w_D_c_ddot[5] - w_D_c_ddot[5]))) + (((w_D_c_ddot[6] - w_D_c_ddot[6]) + (w_D_c_ddot[7] - w_D_c_ddot[7])) + ((w_D_c_ddot[8] - w_D_c_ddot[8]) + (w_D_c_ddot[9] - w_D_c_ddot[9])))) + ((((w_D_c_ddot[10] - w_D_c_ddot[10]) + (w_D_c_ddot[11] - w_D_c_ddot[11])) + ((w_D_c_ddot[12] - w_D_c_ddot[12]) + (w_D_c_ddot[13] - w_D_c_ddot[13]))) + (((w_D_c_ddot[14] - w_D_c_ddot[14]) + (w_D_c_ddot[15] - w_D_c_ddot[15])) + ((w_D_c_ddot[16] - w_D_c_ddot[16]) + (w_D_c_ddot[17] - w_D_c_ddot[17]))))))));
+    }
 #endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;

@@ -93,6 +93,69 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_rescue(
 }
 #endif
 
+
+#if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
+/* rigidsym_c_planar_arm_tip where the range test found an odd input (extreme or not finite): the
+ * input bits of the status, the rescue where there is one, else the ordinary evaluation
+ * with its outputs' test. Cold and out of line, reached by a tail call, so that the fast
+ * path of rigidsym_c_planar_arm_tip saves no register and makes no call. */
+static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_odd(
+    double q1,
+    double q2,
+    double l1,
+    double l2,
+    double p[2])
+{
+    const double *args[4];
+    const int sizes[4] = {1, 1, 1, 1};
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0, odd_ = 0;
+    double finite = 0.0;
+    args[0] = &q1;
+    args[1] = &q2;
+    args[2] = &l1;
+    args[3] = &l2;
+    for (j = 0; j < 4; ++j)
+        odd_ |= rigidsym_c_extreme_d(args[j], sizes[j]);
+    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
+        status = 0;
+    for (j = 0; j < 4; ++j)
+        if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
+            status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_WIDE
+    if (status == RIGIDSYM_C_EXTREME_INPUT)
+        return rigidsym_c_planar_arm_tip_wide(q1, q2, l1, l2, p);
+#endif
+#if RIGIDSYM_C_RESCALE_D
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
+        const int r_ = rigidsym_c_planar_arm_tip_rescue(q1, q2, l1, l2, p);
+        if (r_ >= 0)
+            return r_;
+    }
+#endif
+    {
+        const double x0 = q1 + q2;
+        p[0] = l1*cos(q1) + l2*cos(x0);
+        p[1] = l1*sin(q1) + l2*sin(x0);
+    }
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const double s_ = (p[0] + p[1]);
+        if (!(s_ - s_ == 0.0))
+            finite += ((p[0] - p[0]) + (p[1] - p[1]));
+    }
+    if (finite != finite)
+        status |= RIGIDSYM_C_NONFINITE_RESULT;
+    if (singular) {
+        status |= RIGIDSYM_C_SINGULAR;
+        p[0] = NAN;
+        p[1] = NAN;
+    }
+    return status;
+}
+#endif
+
 RIGIDSYM_C_API int rigidsym_c_planar_arm_tip(
     double q1,
     double q2,
@@ -100,44 +163,44 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip(
     double l2,
     double p[2])
 {
-    uint64_t odd = 0;
     int status = 0, singular = 0;
     double finite = 0.0;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    {   /* the range test of every input component, as one loop (it vectorises) */
-        const double in_[4] = {
-            q1, q2, l1, l2
-        };
-        int j_;
-        for (j_ = 0; j_ < 4; ++j_)
-            RIGIDSYM_C_ODD_D(odd, in_[j_]);
+    uint64_t odd = 0;
+#if RIGIDSYM_C_SSE2
+    {   /* the range test of every input component, 2 per SSE2 register */
+        __m128i mx_ = _mm_setzero_si128(), mn_ = _mm_set1_epi16(0x7fff);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&q1, *&q2)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&l1, *&l2)), &mx_, &mn_);
+        if (RIGIDSYM_C_Q_ODD_D(mx_, mn_))
+            return rigidsym_c_planar_arm_tip_odd(q1, q2, l1, l2, p);
     }
-    if (odd >> 63) {
-        const double *args[4];
-        const int sizes[4] = {1, 1, 1, 1};
-        int j;
-        args[0] = &q1;
-        args[1] = &q2;
-        args[2] = &l1;
-        args[3] = &l2;
-        status = RIGIDSYM_C_EXTREME_INPUT;
-        for (j = 0; j < 4; ++j)
-            if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
-                status = RIGIDSYM_C_NONFINITE_INPUT;
-#if RIGIDSYM_C_WIDE
-        if (status == RIGIDSYM_C_EXTREME_INPUT)
-            return rigidsym_c_planar_arm_tip_wide(q1, q2, l1, l2, p);
-#endif
-#if RIGIDSYM_C_RESCALE_D
-        if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
-            const int r_ = rigidsym_c_planar_arm_tip_rescue(q1, q2, l1, l2, p);
-            if (r_ >= 0)
-                return r_;
+#elif RIGIDSYM_C_VECTOR
+    {   /* the range test of every input component, 2 per vector register */
+        rigidsym_c_vd oddv_ = {0, 0};
+        {
+            const rigidsym_c_vd v_ = {rigidsym_c_bits_d(&q1), rigidsym_c_bits_d(&q2)};
+            oddv_ |= rigidsym_c_odd_vd(v_);
         }
-#endif
+        {
+            const rigidsym_c_vd v_ = {rigidsym_c_bits_d(&l1), rigidsym_c_bits_d(&l2)};
+            oddv_ |= rigidsym_c_odd_vd(v_);
+        }
+        odd = oddv_[0] | oddv_[1];
     }
 #else
-    (void)odd;
+    {   /* the range test of every input component, one at a time (an argument's
+         * components by a loop: compact code where there are no 16-byte vectors) */
+        int j_;
+        RIGIDSYM_C_ODD_D(odd, q1);
+        RIGIDSYM_C_ODD_D(odd, q2);
+        RIGIDSYM_C_ODD_D(odd, l1);
+        RIGIDSYM_C_ODD_D(odd, l2);
+        (void)j_;
+    }
+#endif
+    if (odd >> 63)
+        return rigidsym_c_planar_arm_tip_odd(q1, q2, l1, l2, p);
 #endif
     {
         const double x0 = q1 + q2;
@@ -146,13 +209,16 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip(
     }
     /* no division or root, and every output bounded by 2^102 for inputs of
      * ordinary magnitude (|x| < 2^101): only an extreme or non-finite input can make an
-     * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN
-     * otherwise; the guards of rigidsym_c_impl.h keep the compiler from folding it) */
+     * output non-finite, so only then (rigidsym_c_planar_arm_tip_odd) are the outputs tested */
 #if defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    finite += ((p[0] - p[0]) + (p[1] - p[1]));
-#else
-    if (status)
-        finite += ((p[0] - p[0]) + (p[1] - p[1]));
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const double s_ = (p[0] + p[1]);
+        if (!(s_ - s_ == 0.0))
+            finite += ((p[0] - p[0]) + (p[1] - p[1]));
+    }
 #endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -238,6 +304,65 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_f32_rescue(
 }
 #endif
 
+
+#if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
+/* rigidsym_c_planar_arm_tip_f32 where the range test found an odd input (extreme or not finite): the
+ * input bits of the status, the rescue where there is one, else the ordinary evaluation
+ * with its outputs' test. Cold and out of line, reached by a tail call, so that the fast
+ * path of rigidsym_c_planar_arm_tip_f32 saves no register and makes no call. */
+static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_f32_odd(
+    float q1,
+    float q2,
+    float l1,
+    float l2,
+    float p[2])
+{
+    const float *args[4];
+    const int sizes[4] = {1, 1, 1, 1};
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0, odd_ = 0;
+    float finite = 0.0f;
+    args[0] = &q1;
+    args[1] = &q2;
+    args[2] = &l1;
+    args[3] = &l2;
+    for (j = 0; j < 4; ++j)
+        odd_ |= rigidsym_c_extreme_f(args[j], sizes[j]);
+    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
+        status = 0;
+    for (j = 0; j < 4; ++j)
+        if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
+            status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_RESCALE_F
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
+        const int r_ = rigidsym_c_planar_arm_tip_f32_rescue(q1, q2, l1, l2, p);
+        if (r_ >= 0)
+            return r_;
+    }
+#endif
+    {
+        const float x0 = q1 + q2;
+        p[0] = l1*cosf(q1) + l2*cosf(x0);
+        p[1] = l1*sinf(q1) + l2*sinf(x0);
+    }
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const float s_ = (p[0] + p[1]);
+        if (!(s_ - s_ == 0.0f))
+            finite += ((p[0] - p[0]) + (p[1] - p[1]));
+    }
+    if (finite != finite)
+        status |= RIGIDSYM_C_NONFINITE_RESULT;
+    if (singular) {
+        status |= RIGIDSYM_C_SINGULAR;
+        p[0] = NAN;
+        p[1] = NAN;
+    }
+    return status;
+}
+#endif
+
 RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_f32(
     float q1,
     float q2,
@@ -245,40 +370,39 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_f32(
     float l2,
     float p[2])
 {
-    uint32_t odd = 0;
     int status = 0, singular = 0;
     float finite = 0.0f;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    {   /* the range test of every input component, as one loop (it vectorises) */
-        const float in_[4] = {
-            q1, q2, l1, l2
-        };
-        int j_;
-        for (j_ = 0; j_ < 4; ++j_)
-            RIGIDSYM_C_ODD_F(odd, in_[j_]);
+    uint32_t odd = 0;
+#if RIGIDSYM_C_SSE2
+    {   /* the range test of every input component, 4 per SSE2 register */
+        __m128i mx_ = _mm_setzero_si128(), mn_ = _mm_set1_epi16(0x7fff);
+        rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&q1, *&q2, *&l1, *&l2)), &mx_, &mn_);
+        if (RIGIDSYM_C_Q_ODD_F(mx_, mn_))
+            return rigidsym_c_planar_arm_tip_f32_odd(q1, q2, l1, l2, p);
     }
-    if (odd >> 31) {
-        const float *args[4];
-        const int sizes[4] = {1, 1, 1, 1};
-        int j;
-        args[0] = &q1;
-        args[1] = &q2;
-        args[2] = &l1;
-        args[3] = &l2;
-        status = RIGIDSYM_C_EXTREME_INPUT;
-        for (j = 0; j < 4; ++j)
-            if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
-                status = RIGIDSYM_C_NONFINITE_INPUT;
-#if RIGIDSYM_C_RESCALE_F
-        if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
-            const int r_ = rigidsym_c_planar_arm_tip_f32_rescue(q1, q2, l1, l2, p);
-            if (r_ >= 0)
-                return r_;
+#elif RIGIDSYM_C_VECTOR
+    {   /* the range test of every input component, 4 per vector register */
+        rigidsym_c_vf oddv_ = {0, 0, 0, 0};
+        {
+            const rigidsym_c_vf v_ = {rigidsym_c_bits_f(&q1), rigidsym_c_bits_f(&q2), rigidsym_c_bits_f(&l1), rigidsym_c_bits_f(&l2)};
+            oddv_ |= rigidsym_c_odd_vf(v_);
         }
-#endif
+        odd = oddv_[0] | oddv_[1] | oddv_[2] | oddv_[3];
     }
 #else
-    (void)odd;
+    {   /* the range test of every input component, one at a time (an argument's
+         * components by a loop: compact code where there are no 16-byte vectors) */
+        int j_;
+        RIGIDSYM_C_ODD_F(odd, q1);
+        RIGIDSYM_C_ODD_F(odd, q2);
+        RIGIDSYM_C_ODD_F(odd, l1);
+        RIGIDSYM_C_ODD_F(odd, l2);
+        (void)j_;
+    }
+#endif
+    if (odd >> 31)
+        return rigidsym_c_planar_arm_tip_f32_odd(q1, q2, l1, l2, p);
 #endif
     {
         const float x0 = q1 + q2;
@@ -287,13 +411,16 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_f32(
     }
     /* no division or root, and every output bounded by 2^32 for inputs of
      * ordinary magnitude (|x| < 2^31): only an extreme or non-finite input can make an
-     * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN
-     * otherwise; the guards of rigidsym_c_impl.h keep the compiler from folding it) */
+     * output non-finite, so only then (rigidsym_c_planar_arm_tip_f32_odd) are the outputs tested */
 #if defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    finite += ((p[0] - p[0]) + (p[1] - p[1]));
-#else
-    if (status)
-        finite += ((p[0] - p[0]) + (p[1] - p[1]));
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const float s_ = (p[0] + p[1]);
+        if (!(s_ - s_ == 0.0f))
+            finite += ((p[0] - p[0]) + (p[1] - p[1]));
+    }
 #endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -452,6 +579,97 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_with_jacobians_rescue(
 }
 #endif
 
+
+#if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
+/* rigidsym_c_planar_arm_tip_with_jacobians where the range test found an odd input (extreme or not finite): the
+ * input bits of the status, the rescue where there is one, else the ordinary evaluation
+ * with its outputs' test. Cold and out of line, reached by a tail call, so that the fast
+ * path of rigidsym_c_planar_arm_tip_with_jacobians saves no register and makes no call. */
+static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_with_jacobians_odd(
+    double q1,
+    double q2,
+    double l1,
+    double l2,
+    double p[2],
+    double p_D_q1[2],
+    double p_D_q2[2],
+    double p_D_l1[2],
+    double p_D_l2[2])
+{
+    const double *args[4];
+    const int sizes[4] = {1, 1, 1, 1};
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0, odd_ = 0;
+    double finite = 0.0;
+    args[0] = &q1;
+    args[1] = &q2;
+    args[2] = &l1;
+    args[3] = &l2;
+    for (j = 0; j < 4; ++j)
+        odd_ |= rigidsym_c_extreme_d(args[j], sizes[j]);
+    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
+        status = 0;
+    for (j = 0; j < 4; ++j)
+        if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
+            status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_WIDE
+    if (status == RIGIDSYM_C_EXTREME_INPUT)
+        return rigidsym_c_planar_arm_tip_with_jacobians_wide(q1, q2, l1, l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
+#endif
+#if RIGIDSYM_C_RESCALE_D
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
+        const int r_ = rigidsym_c_planar_arm_tip_with_jacobians_rescue(q1, q2, l1, l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
+        if (r_ >= 0)
+            return r_;
+    }
+#endif
+    {
+        const double x0 = cos(q1);
+        const double x1 = q1 + q2;
+        const double x2 = cos(x1);
+        const double x3 = l2*x2;
+        const double x4 = l1*x0 + x3;
+        const double x5 = sin(q1);
+        const double x6 = sin(x1);
+        const double x7 = l2*x6;
+        const double x8 = l1*x5 + x7;
+        p[0] = x4;
+        p[1] = x8;
+        p_D_q1[0] = -x8;
+        p_D_q1[1] = x4;
+        p_D_q2[0] = -x7;
+        p_D_q2[1] = x3;
+        p_D_l1[0] = x0;
+        p_D_l1[1] = x5;
+        p_D_l2[0] = x2;
+        p_D_l2[1] = x6;
+    }
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const double s_ = (((p[0] + p[1]) + (p_D_q1[0] + (p_D_q1[1] + p_D_q2[0]))) + ((p_D_q2[1] + p_D_l1[0]) + (p_D_l1[1] + (p_D_l2[0] + p_D_l2[1]))));
+        if (!(s_ - s_ == 0.0))
+            finite += ((((p[0] - p[0]) + (p[1] - p[1])) + ((p_D_q1[0] - p_D_q1[0]) + ((p_D_q1[1] - p_D_q1[1]) + (p_D_q2[0] - p_D_q2[0])))) + (((p_D_q2[1] - p_D_q2[1]) + (p_D_l1[0] - p_D_l1[0])) + ((p_D_l1[1] - p_D_l1[1]) + ((p_D_l2[0] - p_D_l2[0]) + (p_D_l2[1] - p_D_l2[1])))));
+    }
+    if (finite != finite)
+        status |= RIGIDSYM_C_NONFINITE_RESULT;
+    if (singular) {
+        status |= RIGIDSYM_C_SINGULAR;
+        p[0] = NAN;
+        p[1] = NAN;
+        p_D_q1[0] = NAN;
+        p_D_q1[1] = NAN;
+        p_D_q2[0] = NAN;
+        p_D_q2[1] = NAN;
+        p_D_l1[0] = NAN;
+        p_D_l1[1] = NAN;
+        p_D_l2[0] = NAN;
+        p_D_l2[1] = NAN;
+    }
+    return status;
+}
+#endif
+
 RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians(
     double q1,
     double q2,
@@ -459,44 +677,44 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians(
     double l2,
     double p[2],    double p_D_q1[2],    double p_D_q2[2],    double p_D_l1[2],    double p_D_l2[2])
 {
-    uint64_t odd = 0;
     int status = 0, singular = 0;
     double finite = 0.0;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    {   /* the range test of every input component, as one loop (it vectorises) */
-        const double in_[4] = {
-            q1, q2, l1, l2
-        };
-        int j_;
-        for (j_ = 0; j_ < 4; ++j_)
-            RIGIDSYM_C_ODD_D(odd, in_[j_]);
+    uint64_t odd = 0;
+#if RIGIDSYM_C_SSE2
+    {   /* the range test of every input component, 2 per SSE2 register */
+        __m128i mx_ = _mm_setzero_si128(), mn_ = _mm_set1_epi16(0x7fff);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&q1, *&q2)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&l1, *&l2)), &mx_, &mn_);
+        if (RIGIDSYM_C_Q_ODD_D(mx_, mn_))
+            return rigidsym_c_planar_arm_tip_with_jacobians_odd(q1, q2, l1, l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
     }
-    if (odd >> 63) {
-        const double *args[4];
-        const int sizes[4] = {1, 1, 1, 1};
-        int j;
-        args[0] = &q1;
-        args[1] = &q2;
-        args[2] = &l1;
-        args[3] = &l2;
-        status = RIGIDSYM_C_EXTREME_INPUT;
-        for (j = 0; j < 4; ++j)
-            if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
-                status = RIGIDSYM_C_NONFINITE_INPUT;
-#if RIGIDSYM_C_WIDE
-        if (status == RIGIDSYM_C_EXTREME_INPUT)
-            return rigidsym_c_planar_arm_tip_with_jacobians_wide(q1, q2, l1, l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
-#endif
-#if RIGIDSYM_C_RESCALE_D
-        if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
-            const int r_ = rigidsym_c_planar_arm_tip_with_jacobians_rescue(q1, q2, l1, l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
-            if (r_ >= 0)
-                return r_;
+#elif RIGIDSYM_C_VECTOR
+    {   /* the range test of every input component, 2 per vector register */
+        rigidsym_c_vd oddv_ = {0, 0};
+        {
+            const rigidsym_c_vd v_ = {rigidsym_c_bits_d(&q1), rigidsym_c_bits_d(&q2)};
+            oddv_ |= rigidsym_c_odd_vd(v_);
         }
-#endif
+        {
+            const rigidsym_c_vd v_ = {rigidsym_c_bits_d(&l1), rigidsym_c_bits_d(&l2)};
+            oddv_ |= rigidsym_c_odd_vd(v_);
+        }
+        odd = oddv_[0] | oddv_[1];
     }
 #else
-    (void)odd;
+    {   /* the range test of every input component, one at a time (an argument's
+         * components by a loop: compact code where there are no 16-byte vectors) */
+        int j_;
+        RIGIDSYM_C_ODD_D(odd, q1);
+        RIGIDSYM_C_ODD_D(odd, q2);
+        RIGIDSYM_C_ODD_D(odd, l1);
+        RIGIDSYM_C_ODD_D(odd, l2);
+        (void)j_;
+    }
+#endif
+    if (odd >> 63)
+        return rigidsym_c_planar_arm_tip_with_jacobians_odd(q1, q2, l1, l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
 #endif
     {
         const double x0 = cos(q1);
@@ -521,13 +739,16 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians(
     }
     /* no division or root, and every output bounded by 2^102 for inputs of
      * ordinary magnitude (|x| < 2^101): only an extreme or non-finite input can make an
-     * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN
-     * otherwise; the guards of rigidsym_c_impl.h keep the compiler from folding it) */
+     * output non-finite, so only then (rigidsym_c_planar_arm_tip_with_jacobians_odd) are the outputs tested */
 #if defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    finite += ((((p[0] - p[0]) + (p[1] - p[1])) + ((p_D_q1[0] - p_D_q1[0]) + ((p_D_q1[1] - p_D_q1[1]) + (p_D_q2[0] - p_D_q2[0])))) + (((p_D_q2[1] - p_D_q2[1]) + (p_D_l1[0] - p_D_l1[0])) + ((p_D_l1[1] - p_D_l1[1]) + ((p_D_l2[0] - p_D_l2[0]) + (p_D_l2[1] - p_D_l2[1])))));
-#else
-    if (status)
-        finite += ((((p[0] - p[0]) + (p[1] - p[1])) + ((p_D_q1[0] - p_D_q1[0]) + ((p_D_q1[1] - p_D_q1[1]) + (p_D_q2[0] - p_D_q2[0])))) + (((p_D_q2[1] - p_D_q2[1]) + (p_D_l1[0] - p_D_l1[0])) + ((p_D_l1[1] - p_D_l1[1]) + ((p_D_l2[0] - p_D_l2[0]) + (p_D_l2[1] - p_D_l2[1])))));
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const double s_ = (((p[0] + p[1]) + (p_D_q1[0] + (p_D_q1[1] + p_D_q2[0]))) + ((p_D_q2[1] + p_D_l1[0]) + (p_D_l1[1] + (p_D_l2[0] + p_D_l2[1]))));
+        if (!(s_ - s_ == 0.0))
+            finite += ((((p[0] - p[0]) + (p[1] - p[1])) + ((p_D_q1[0] - p_D_q1[0]) + ((p_D_q1[1] - p_D_q1[1]) + (p_D_q2[0] - p_D_q2[0])))) + (((p_D_q2[1] - p_D_q2[1]) + (p_D_l1[0] - p_D_l1[0])) + ((p_D_l1[1] - p_D_l1[1]) + ((p_D_l2[0] - p_D_l2[0]) + (p_D_l2[1] - p_D_l2[1])))));
+    }
 #endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -637,6 +858,93 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_with_jacobians_f32_rescue(
 }
 #endif
 
+
+#if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
+/* rigidsym_c_planar_arm_tip_with_jacobians_f32 where the range test found an odd input (extreme or not finite): the
+ * input bits of the status, the rescue where there is one, else the ordinary evaluation
+ * with its outputs' test. Cold and out of line, reached by a tail call, so that the fast
+ * path of rigidsym_c_planar_arm_tip_with_jacobians_f32 saves no register and makes no call. */
+static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_with_jacobians_f32_odd(
+    float q1,
+    float q2,
+    float l1,
+    float l2,
+    float p[2],
+    float p_D_q1[2],
+    float p_D_q2[2],
+    float p_D_l1[2],
+    float p_D_l2[2])
+{
+    const float *args[4];
+    const int sizes[4] = {1, 1, 1, 1};
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0, odd_ = 0;
+    float finite = 0.0f;
+    args[0] = &q1;
+    args[1] = &q2;
+    args[2] = &l1;
+    args[3] = &l2;
+    for (j = 0; j < 4; ++j)
+        odd_ |= rigidsym_c_extreme_f(args[j], sizes[j]);
+    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
+        status = 0;
+    for (j = 0; j < 4; ++j)
+        if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
+            status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_RESCALE_F
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
+        const int r_ = rigidsym_c_planar_arm_tip_with_jacobians_f32_rescue(q1, q2, l1, l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
+        if (r_ >= 0)
+            return r_;
+    }
+#endif
+    {
+        const float x0 = cosf(q1);
+        const float x1 = q1 + q2;
+        const float x2 = cosf(x1);
+        const float x3 = l2*x2;
+        const float x4 = l1*x0 + x3;
+        const float x5 = sinf(q1);
+        const float x6 = sinf(x1);
+        const float x7 = l2*x6;
+        const float x8 = l1*x5 + x7;
+        p[0] = x4;
+        p[1] = x8;
+        p_D_q1[0] = -x8;
+        p_D_q1[1] = x4;
+        p_D_q2[0] = -x7;
+        p_D_q2[1] = x3;
+        p_D_l1[0] = x0;
+        p_D_l1[1] = x5;
+        p_D_l2[0] = x2;
+        p_D_l2[1] = x6;
+    }
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const float s_ = (((p[0] + p[1]) + (p_D_q1[0] + (p_D_q1[1] + p_D_q2[0]))) + ((p_D_q2[1] + p_D_l1[0]) + (p_D_l1[1] + (p_D_l2[0] + p_D_l2[1]))));
+        if (!(s_ - s_ == 0.0f))
+            finite += ((((p[0] - p[0]) + (p[1] - p[1])) + ((p_D_q1[0] - p_D_q1[0]) + ((p_D_q1[1] - p_D_q1[1]) + (p_D_q2[0] - p_D_q2[0])))) + (((p_D_q2[1] - p_D_q2[1]) + (p_D_l1[0] - p_D_l1[0])) + ((p_D_l1[1] - p_D_l1[1]) + ((p_D_l2[0] - p_D_l2[0]) + (p_D_l2[1] - p_D_l2[1])))));
+    }
+    if (finite != finite)
+        status |= RIGIDSYM_C_NONFINITE_RESULT;
+    if (singular) {
+        status |= RIGIDSYM_C_SINGULAR;
+        p[0] = NAN;
+        p[1] = NAN;
+        p_D_q1[0] = NAN;
+        p_D_q1[1] = NAN;
+        p_D_q2[0] = NAN;
+        p_D_q2[1] = NAN;
+        p_D_l1[0] = NAN;
+        p_D_l1[1] = NAN;
+        p_D_l2[0] = NAN;
+        p_D_l2[1] = NAN;
+    }
+    return status;
+}
+#endif
+
 RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians_f32(
     float q1,
     float q2,
@@ -644,40 +952,39 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians_f32(
     float l2,
     float p[2],    float p_D_q1[2],    float p_D_q2[2],    float p_D_l1[2],    float p_D_l2[2])
 {
-    uint32_t odd = 0;
     int status = 0, singular = 0;
     float finite = 0.0f;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    {   /* the range test of every input component, as one loop (it vectorises) */
-        const float in_[4] = {
-            q1, q2, l1, l2
-        };
-        int j_;
-        for (j_ = 0; j_ < 4; ++j_)
-            RIGIDSYM_C_ODD_F(odd, in_[j_]);
+    uint32_t odd = 0;
+#if RIGIDSYM_C_SSE2
+    {   /* the range test of every input component, 4 per SSE2 register */
+        __m128i mx_ = _mm_setzero_si128(), mn_ = _mm_set1_epi16(0x7fff);
+        rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&q1, *&q2, *&l1, *&l2)), &mx_, &mn_);
+        if (RIGIDSYM_C_Q_ODD_F(mx_, mn_))
+            return rigidsym_c_planar_arm_tip_with_jacobians_f32_odd(q1, q2, l1, l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
     }
-    if (odd >> 31) {
-        const float *args[4];
-        const int sizes[4] = {1, 1, 1, 1};
-        int j;
-        args[0] = &q1;
-        args[1] = &q2;
-        args[2] = &l1;
-        args[3] = &l2;
-        status = RIGIDSYM_C_EXTREME_INPUT;
-        for (j = 0; j < 4; ++j)
-            if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
-                status = RIGIDSYM_C_NONFINITE_INPUT;
-#if RIGIDSYM_C_RESCALE_F
-        if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
-            const int r_ = rigidsym_c_planar_arm_tip_with_jacobians_f32_rescue(q1, q2, l1, l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
-            if (r_ >= 0)
-                return r_;
+#elif RIGIDSYM_C_VECTOR
+    {   /* the range test of every input component, 4 per vector register */
+        rigidsym_c_vf oddv_ = {0, 0, 0, 0};
+        {
+            const rigidsym_c_vf v_ = {rigidsym_c_bits_f(&q1), rigidsym_c_bits_f(&q2), rigidsym_c_bits_f(&l1), rigidsym_c_bits_f(&l2)};
+            oddv_ |= rigidsym_c_odd_vf(v_);
         }
-#endif
+        odd = oddv_[0] | oddv_[1] | oddv_[2] | oddv_[3];
     }
 #else
-    (void)odd;
+    {   /* the range test of every input component, one at a time (an argument's
+         * components by a loop: compact code where there are no 16-byte vectors) */
+        int j_;
+        RIGIDSYM_C_ODD_F(odd, q1);
+        RIGIDSYM_C_ODD_F(odd, q2);
+        RIGIDSYM_C_ODD_F(odd, l1);
+        RIGIDSYM_C_ODD_F(odd, l2);
+        (void)j_;
+    }
+#endif
+    if (odd >> 31)
+        return rigidsym_c_planar_arm_tip_with_jacobians_f32_odd(q1, q2, l1, l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
 #endif
     {
         const float x0 = cosf(q1);
@@ -702,13 +1009,16 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians_f32(
     }
     /* no division or root, and every output bounded by 2^32 for inputs of
      * ordinary magnitude (|x| < 2^31): only an extreme or non-finite input can make an
-     * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN
-     * otherwise; the guards of rigidsym_c_impl.h keep the compiler from folding it) */
+     * output non-finite, so only then (rigidsym_c_planar_arm_tip_with_jacobians_f32_odd) are the outputs tested */
 #if defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    finite += ((((p[0] - p[0]) + (p[1] - p[1])) + ((p_D_q1[0] - p_D_q1[0]) + ((p_D_q1[1] - p_D_q1[1]) + (p_D_q2[0] - p_D_q2[0])))) + (((p_D_q2[1] - p_D_q2[1]) + (p_D_l1[0] - p_D_l1[0])) + ((p_D_l1[1] - p_D_l1[1]) + ((p_D_l2[0] - p_D_l2[0]) + (p_D_l2[1] - p_D_l2[1])))));
-#else
-    if (status)
-        finite += ((((p[0] - p[0]) + (p[1] - p[1])) + ((p_D_q1[0] - p_D_q1[0]) + ((p_D_q1[1] - p_D_q1[1]) + (p_D_q2[0] - p_D_q2[0])))) + (((p_D_q2[1] - p_D_q2[1]) + (p_D_l1[0] - p_D_l1[0])) + ((p_D_l1[1] - p_D_l1[1]) + ((p_D_l2[0] - p_D_l2[0]) + (p_D_l2[1] - p_D_l2[1])))));
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const float s_ = (((p[0] + p[1]) + (p_D_q1[0] + (p_D_q1[1] + p_D_q2[0]))) + ((p_D_q2[1] + p_D_l1[0]) + (p_D_l1[1] + (p_D_l2[0] + p_D_l2[1]))));
+        if (!(s_ - s_ == 0.0f))
+            finite += ((((p[0] - p[0]) + (p[1] - p[1])) + ((p_D_q1[0] - p_D_q1[0]) + ((p_D_q1[1] - p_D_q1[1]) + (p_D_q2[0] - p_D_q2[0])))) + (((p_D_q2[1] - p_D_q2[1]) + (p_D_l1[0] - p_D_l1[0])) + ((p_D_l1[1] - p_D_l1[1]) + ((p_D_l2[0] - p_D_l2[0]) + (p_D_l2[1] - p_D_l2[1])))));
+    }
 #endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;

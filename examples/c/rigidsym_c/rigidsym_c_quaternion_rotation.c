@@ -61,38 +61,115 @@ static int rigidsym_c_quaternion_rotation_wide(
 #endif
 
 
+
+#if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
+/* rigidsym_c_quaternion_rotation where the range test found an odd input (extreme or not finite): the
+ * input bits of the status, the rescue where there is one, else the ordinary evaluation
+ * with its outputs' test. Cold and out of line, reached by a tail call, so that the fast
+ * path of rigidsym_c_quaternion_rotation saves no register and makes no call. */
+static RIGIDSYM_C_COLD int rigidsym_c_quaternion_rotation_odd(
+    const double q[4],
+    double Q[9])
+{
+    const double *args[1];
+    const int sizes[1] = {4};
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0, odd_ = 0;
+    double finite = 0.0;
+    args[0] = q;
+    for (j = 0; j < 1; ++j)
+        odd_ |= rigidsym_c_extreme_d(args[j], sizes[j]);
+    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
+        status = 0;
+    for (j = 0; j < 1; ++j)
+        if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
+            status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_WIDE
+    if (status == RIGIDSYM_C_EXTREME_INPUT)
+        return rigidsym_c_quaternion_rotation_wide(q, Q);
+#endif
+    const double q_0 = q[0];
+    const double q_1 = q[1];
+    const double q_2 = q[2];
+    const double q_3 = q[3];
+    {
+        const double x0 = 2.0*(q_2*q_2);
+        const double x1 = 2.0*(q_3*q_3) - 1.0;
+        const double x2 = 2.0*q_0;
+        const double x3 = q_3*x2;
+        const double x4 = q_2*x2;
+        const double x5 = 2.0*q_1;
+        const double x6 = 2.0*(q_1*q_1);
+        const double x7 = q_1*x2;
+        Q[0] = -x0 - x1;
+        Q[1] = 2.0*q_1*q_2 - x3;
+        Q[2] = q_3*x5 + x4;
+        Q[3] = q_2*x5 + x3;
+        Q[4] = -x1 - x6;
+        Q[5] = 2.0*q_2*q_3 - x7;
+        Q[6] = 2.0*q_1*q_3 - x4;
+        Q[7] = 2.0*q_2*q_3 + x7;
+        Q[8] = -x0 - x6 + 1.0;
+    }
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const double s_ = (((Q[0] + Q[1]) + (Q[2] + Q[3])) + ((Q[4] + Q[5]) + (Q[6] + (Q[7] + Q[8]))));
+        if (!(s_ - s_ == 0.0))
+            finite += ((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + (Q[3] - Q[3]))) + (((Q[4] - Q[4]) + (Q[5] - Q[5])) + ((Q[6] - Q[6]) + ((Q[7] - Q[7]) + (Q[8] - Q[8])))));
+    }
+    if (finite != finite)
+        status |= RIGIDSYM_C_NONFINITE_RESULT;
+    if (singular) {
+        status |= RIGIDSYM_C_SINGULAR;
+        Q[0] = NAN;
+        Q[1] = NAN;
+        Q[2] = NAN;
+        Q[3] = NAN;
+        Q[4] = NAN;
+        Q[5] = NAN;
+        Q[6] = NAN;
+        Q[7] = NAN;
+        Q[8] = NAN;
+    }
+    return status;
+}
+#endif
+
 RIGIDSYM_C_API int rigidsym_c_quaternion_rotation(
     const double q[4],
     double Q[9])
 {
-    uint64_t odd = 0;
     int status = 0, singular = 0;
     double finite = 0.0;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    {   /* the range test of every input component, as one loop (it vectorises) */
-        const double in_[4] = {
-            q[0], q[1], q[2], q[3]
-        };
-        int j_;
-        for (j_ = 0; j_ < 4; ++j_)
-            RIGIDSYM_C_ODD_D(odd, in_[j_]);
+    uint64_t odd = 0;
+#if RIGIDSYM_C_SSE2
+    {   /* the range test of every input component, 2 per SSE2 register */
+        __m128i mx_ = _mm_setzero_si128(), mn_ = _mm_set1_epi16(0x7fff);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadh_pd(_mm_load_sd(q), q + 1)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadh_pd(_mm_load_sd(q + 2), q + 2 + 1)), &mx_, &mn_);
+        if (RIGIDSYM_C_Q_ODD_D(mx_, mn_))
+            return rigidsym_c_quaternion_rotation_odd(q, Q);
     }
-    if (odd >> 63) {
-        const double *args[1];
-        const int sizes[1] = {4};
-        int j;
-        args[0] = q;
-        status = RIGIDSYM_C_EXTREME_INPUT;
-        for (j = 0; j < 1; ++j)
-            if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
-                status = RIGIDSYM_C_NONFINITE_INPUT;
-#if RIGIDSYM_C_WIDE
-        if (status == RIGIDSYM_C_EXTREME_INPUT)
-            return rigidsym_c_quaternion_rotation_wide(q, Q);
-#endif
+#elif RIGIDSYM_C_VECTOR
+    {   /* the range test of every input component, 2 per vector register */
+        rigidsym_c_vd oddv_ = {0, 0};
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(q));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(q + 2));
+        odd = oddv_[0] | oddv_[1];
     }
 #else
-    (void)odd;
+    {   /* the range test of every input component, one at a time (an argument's
+         * components by a loop: compact code where there are no 16-byte vectors) */
+        int j_;
+        for (j_ = 0; j_ < 4; ++j_)
+            RIGIDSYM_C_ODD_D(odd, q[j_]);
+        (void)j_;
+    }
+#endif
+    if (odd >> 63)
+        return rigidsym_c_quaternion_rotation_odd(q, Q);
 #endif
     const double q_0 = q[0];
     const double q_1 = q[1];
@@ -119,13 +196,16 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation(
     }
     /* no division or root, and every output bounded by 2^205 for inputs of
      * ordinary magnitude (|x| < 2^101): only an extreme or non-finite input can make an
-     * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN
-     * otherwise; the guards of rigidsym_c_impl.h keep the compiler from folding it) */
+     * output non-finite, so only then (rigidsym_c_quaternion_rotation_odd) are the outputs tested */
 #if defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    finite += ((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + (Q[3] - Q[3]))) + (((Q[4] - Q[4]) + (Q[5] - Q[5])) + ((Q[6] - Q[6]) + ((Q[7] - Q[7]) + (Q[8] - Q[8])))));
-#else
-    if (status)
-        finite += ((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + (Q[3] - Q[3]))) + (((Q[4] - Q[4]) + (Q[5] - Q[5])) + ((Q[6] - Q[6]) + ((Q[7] - Q[7]) + (Q[8] - Q[8])))));
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const double s_ = (((Q[0] + Q[1]) + (Q[2] + Q[3])) + ((Q[4] + Q[5]) + (Q[6] + (Q[7] + Q[8]))));
+        if (!(s_ - s_ == 0.0))
+            finite += ((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + (Q[3] - Q[3]))) + (((Q[4] - Q[4]) + (Q[5] - Q[5])) + ((Q[6] - Q[6]) + ((Q[7] - Q[7]) + (Q[8] - Q[8])))));
+    }
 #endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -165,34 +245,109 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_batch(
 }
 
 
+
+#if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
+/* rigidsym_c_quaternion_rotation_f32 where the range test found an odd input (extreme or not finite): the
+ * input bits of the status, the rescue where there is one, else the ordinary evaluation
+ * with its outputs' test. Cold and out of line, reached by a tail call, so that the fast
+ * path of rigidsym_c_quaternion_rotation_f32 saves no register and makes no call. */
+static RIGIDSYM_C_COLD int rigidsym_c_quaternion_rotation_f32_odd(
+    const float q[4],
+    float Q[9])
+{
+    const float *args[1];
+    const int sizes[1] = {4};
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0, odd_ = 0;
+    float finite = 0.0f;
+    args[0] = q;
+    for (j = 0; j < 1; ++j)
+        odd_ |= rigidsym_c_extreme_f(args[j], sizes[j]);
+    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
+        status = 0;
+    for (j = 0; j < 1; ++j)
+        if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
+            status = RIGIDSYM_C_NONFINITE_INPUT;
+    const float q_0 = q[0];
+    const float q_1 = q[1];
+    const float q_2 = q[2];
+    const float q_3 = q[3];
+    {
+        const float x0 = 2.0f*(q_2*q_2);
+        const float x1 = 2.0f*(q_3*q_3) - 1.0f;
+        const float x2 = 2.0f*q_0;
+        const float x3 = q_3*x2;
+        const float x4 = q_2*x2;
+        const float x5 = 2.0f*q_1;
+        const float x6 = 2.0f*(q_1*q_1);
+        const float x7 = q_1*x2;
+        Q[0] = -x0 - x1;
+        Q[1] = 2.0f*q_1*q_2 - x3;
+        Q[2] = q_3*x5 + x4;
+        Q[3] = q_2*x5 + x3;
+        Q[4] = -x1 - x6;
+        Q[5] = 2.0f*q_2*q_3 - x7;
+        Q[6] = 2.0f*q_1*q_3 - x4;
+        Q[7] = 2.0f*q_2*q_3 + x7;
+        Q[8] = -x0 - x6 + 1.0f;
+    }
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const float s_ = (((Q[0] + Q[1]) + (Q[2] + Q[3])) + ((Q[4] + Q[5]) + (Q[6] + (Q[7] + Q[8]))));
+        if (!(s_ - s_ == 0.0f))
+            finite += ((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + (Q[3] - Q[3]))) + (((Q[4] - Q[4]) + (Q[5] - Q[5])) + ((Q[6] - Q[6]) + ((Q[7] - Q[7]) + (Q[8] - Q[8])))));
+    }
+    if (finite != finite)
+        status |= RIGIDSYM_C_NONFINITE_RESULT;
+    if (singular) {
+        status |= RIGIDSYM_C_SINGULAR;
+        Q[0] = NAN;
+        Q[1] = NAN;
+        Q[2] = NAN;
+        Q[3] = NAN;
+        Q[4] = NAN;
+        Q[5] = NAN;
+        Q[6] = NAN;
+        Q[7] = NAN;
+        Q[8] = NAN;
+    }
+    return status;
+}
+#endif
+
 RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_f32(
     const float q[4],
     float Q[9])
 {
-    uint32_t odd = 0;
     int status = 0, singular = 0;
     float finite = 0.0f;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    {   /* the range test of every input component, as one loop (it vectorises) */
-        const float in_[4] = {
-            q[0], q[1], q[2], q[3]
-        };
-        int j_;
-        for (j_ = 0; j_ < 4; ++j_)
-            RIGIDSYM_C_ODD_F(odd, in_[j_]);
+    uint32_t odd = 0;
+#if RIGIDSYM_C_SSE2
+    {   /* the range test of every input component, 4 per SSE2 register */
+        __m128i mx_ = _mm_setzero_si128(), mn_ = _mm_set1_epi16(0x7fff);
+        rigidsym_c_q_f(_mm_castps_si128(_mm_loadu_ps(q)), &mx_, &mn_);
+        if (RIGIDSYM_C_Q_ODD_F(mx_, mn_))
+            return rigidsym_c_quaternion_rotation_f32_odd(q, Q);
     }
-    if (odd >> 31) {
-        const float *args[1];
-        const int sizes[1] = {4};
-        int j;
-        args[0] = q;
-        status = RIGIDSYM_C_EXTREME_INPUT;
-        for (j = 0; j < 1; ++j)
-            if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
-                status = RIGIDSYM_C_NONFINITE_INPUT;
+#elif RIGIDSYM_C_VECTOR
+    {   /* the range test of every input component, 4 per vector register */
+        rigidsym_c_vf oddv_ = {0, 0, 0, 0};
+        oddv_ |= rigidsym_c_odd_vf(rigidsym_c_load_vf(q));
+        odd = oddv_[0] | oddv_[1] | oddv_[2] | oddv_[3];
     }
 #else
-    (void)odd;
+    {   /* the range test of every input component, one at a time (an argument's
+         * components by a loop: compact code where there are no 16-byte vectors) */
+        int j_;
+        for (j_ = 0; j_ < 4; ++j_)
+            RIGIDSYM_C_ODD_F(odd, q[j_]);
+        (void)j_;
+    }
+#endif
+    if (odd >> 31)
+        return rigidsym_c_quaternion_rotation_f32_odd(q, Q);
 #endif
     const float q_0 = q[0];
     const float q_1 = q[1];
@@ -219,13 +374,16 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_f32(
     }
     /* no division or root, and every output bounded by 2^65 for inputs of
      * ordinary magnitude (|x| < 2^31): only an extreme or non-finite input can make an
-     * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN
-     * otherwise; the guards of rigidsym_c_impl.h keep the compiler from folding it) */
+     * output non-finite, so only then (rigidsym_c_quaternion_rotation_f32_odd) are the outputs tested */
 #if defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    finite += ((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + (Q[3] - Q[3]))) + (((Q[4] - Q[4]) + (Q[5] - Q[5])) + ((Q[6] - Q[6]) + ((Q[7] - Q[7]) + (Q[8] - Q[8])))));
-#else
-    if (status)
-        finite += ((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + (Q[3] - Q[3]))) + (((Q[4] - Q[4]) + (Q[5] - Q[5])) + ((Q[6] - Q[6]) + ((Q[7] - Q[7]) + (Q[8] - Q[8])))));
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const float s_ = (((Q[0] + Q[1]) + (Q[2] + Q[3])) + ((Q[4] + Q[5]) + (Q[6] + (Q[7] + Q[8]))));
+        if (!(s_ - s_ == 0.0f))
+            finite += ((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + (Q[3] - Q[3]))) + (((Q[4] - Q[4]) + (Q[5] - Q[5])) + ((Q[6] - Q[6]) + ((Q[7] - Q[7]) + (Q[8] - Q[8])))));
+    }
 #endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -396,38 +554,194 @@ static int rigidsym_c_quaternion_rotation_with_jacobians_wide(
 #endif
 
 
+
+#if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
+/* rigidsym_c_quaternion_rotation_with_jacobians where the range test found an odd input (extreme or not finite): the
+ * input bits of the status, the rescue where there is one, else the ordinary evaluation
+ * with its outputs' test. Cold and out of line, reached by a tail call, so that the fast
+ * path of rigidsym_c_quaternion_rotation_with_jacobians saves no register and makes no call. */
+static RIGIDSYM_C_COLD int rigidsym_c_quaternion_rotation_with_jacobians_odd(
+    const double q[4],
+    double Q[9],
+    double Q_D_q[36])
+{
+    const double *args[1];
+    const int sizes[1] = {4};
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0, odd_ = 0;
+    double finite = 0.0;
+    args[0] = q;
+    for (j = 0; j < 1; ++j)
+        odd_ |= rigidsym_c_extreme_d(args[j], sizes[j]);
+    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
+        status = 0;
+    for (j = 0; j < 1; ++j)
+        if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
+            status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_WIDE
+    if (status == RIGIDSYM_C_EXTREME_INPUT)
+        return rigidsym_c_quaternion_rotation_with_jacobians_wide(q, Q, Q_D_q);
+#endif
+    const double q_0 = q[0];
+    const double q_1 = q[1];
+    const double q_2 = q[2];
+    const double q_3 = q[3];
+    {
+        const double x0 = 2.0*(q_2*q_2);
+        const double x1 = 2.0*(q_3*q_3) - 1.0;
+        const double x2 = 2.0*q_3;
+        const double x3 = q_0*x2;
+        const double x4 = 2.0*q_2;
+        const double x5 = q_0*x4;
+        const double x6 = 2.0*(q_1*q_1);
+        const double x7 = 2.0*q_1;
+        const double x8 = q_0*x7;
+        const double x9 = -4.0*q_2;
+        const double x10 = -4.0*q_3;
+        const double x11 = 2.0*q_0;
+        const double x12 = -x11;
+        const double x13 = -4.0*q_1;
+        Q[0] = -x0 - x1;
+        Q[1] = 2.0*q_1*q_2 - x3;
+        Q[2] = q_1*x2 + x5;
+        Q[3] = q_1*x4 + x3;
+        Q[4] = -x1 - x6;
+        Q[5] = 2.0*q_2*q_3 - x8;
+        Q[6] = 2.0*q_1*q_3 - x5;
+        Q[7] = q_2*x2 + x8;
+        Q[8] = -x0 - x6 + 1.0;
+        Q_D_q[0] = 0.0;
+        Q_D_q[1] = 0.0;
+        Q_D_q[2] = x9;
+        Q_D_q[3] = x10;
+        Q_D_q[4] = -x2;
+        Q_D_q[5] = x4;
+        Q_D_q[6] = x7;
+        Q_D_q[7] = x12;
+        Q_D_q[8] = x4;
+        Q_D_q[9] = x2;
+        Q_D_q[10] = x11;
+        Q_D_q[11] = x7;
+        Q_D_q[12] = x2;
+        Q_D_q[13] = x4;
+        Q_D_q[14] = x7;
+        Q_D_q[15] = x11;
+        Q_D_q[16] = 0.0;
+        Q_D_q[17] = x13;
+        Q_D_q[18] = 0.0;
+        Q_D_q[19] = x10;
+        Q_D_q[20] = -x7;
+        Q_D_q[21] = x12;
+        Q_D_q[22] = x2;
+        Q_D_q[23] = x4;
+        Q_D_q[24] = -x4;
+        Q_D_q[25] = x2;
+        Q_D_q[26] = x12;
+        Q_D_q[27] = x7;
+        Q_D_q[28] = x7;
+        Q_D_q[29] = x11;
+        Q_D_q[30] = x2;
+        Q_D_q[31] = x4;
+        Q_D_q[32] = 0.0;
+        Q_D_q[33] = x13;
+        Q_D_q[34] = x9;
+        Q_D_q[35] = 0.0;
+    }
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const double s_ = (((((Q[0] + Q[1]) + (Q[2] + (Q[3] + Q[4]))) + ((Q[5] + (Q[6] + Q[7])) + (Q[8] + (Q_D_q[0] + Q_D_q[1])))) + (((Q_D_q[2] + Q_D_q[3]) + (Q_D_q[4] + (Q_D_q[5] + Q_D_q[6]))) + ((Q_D_q[7] + (Q_D_q[8] + Q_D_q[9])) + (Q_D_q[10] + (Q_D_q[11] + Q_D_q[12]))))) + ((((Q_D_q[13] + Q_D_q[14]) + (Q_D_q[15] + (Q_D_q[16] + Q_D_q[17]))) + ((Q_D_q[18] + (Q_D_q[19] + Q_D_q[20])) + (Q_D_q[21] + (Q_D_q[22] + Q_D_q[23])))) + (((Q_D_q[24] + (Q_D_q[25] + Q_D_q[26])) + (Q_D_q[27] + (Q_D_q[28] + Q_D_q[29]))) + ((Q_D_q[30] + (Q_D_q[31] + Q_D_q[32])) + (Q_D_q[33] + (Q_D_q[34] + Q_D_q[35]))))));
+        if (!(s_ - s_ == 0.0))
+            finite += ((((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + ((Q[3] - Q[3]) + (Q[4] - Q[4])))) + (((Q[5] - Q[5]) + ((Q[6] - Q[6]) + (Q[7] - Q[7]))) + ((Q[8] - Q[8]) + ((Q_D_q[0] - Q_D_q[0]) + (Q_D_q[1] - Q_D_q[1]))))) + ((((Q_D_q[2] - Q_D_q[2]) + (Q_D_q[3] - Q_D_q[3])) + ((Q_D_q[4] - Q_D_q[4]) + ((Q_D_q[5] - Q_D_q[5]) + (Q_D_q[6] - Q_D_q[6])))) + (((Q_D_q[7] - Q_D_q[7]) + ((Q_D_q[8] - Q_D_q[8]) + (Q_D_q[9] - Q_D_q[9]))) + ((Q_D_q[10] - Q_D_q[10]) + ((Q_D_q[11] - Q_D_q[11]) + (Q_D_q[12] - Q_D_q[12])))))) + (((((Q_D_q[13] - Q_D_q[13]) + (Q_D_q[14] - Q_D_q[14])) + ((Q_D_q[15] - Q_D_q[15]) + ((Q_D_q[16] - Q_D_q[16]) + (Q_D_q[17] - Q_D_q[17])))) + (((Q_D_q[18] - Q_D_q[18]) + ((Q_D_q[19] - Q_D_q[19]) + (Q_D_q[20] - Q_D_q[20]))) + ((Q_D_q[21] - Q_D_q[21]) + ((Q_D_q[22] - Q_D_q[22]) + (Q_D_q[23] - Q_D_q[23]))))) + ((((Q_D_q[24] - Q_D_q[24]) + ((Q_D_q[25] - Q_D_q[25]) + (Q_D_q[26] - Q_D_q[26]))) + ((Q_D_q[27] - Q_D_q[27]) + ((Q_D_q[28] - Q_D_q[28]) + (Q_D_q[29] - Q_D_q[29])))) + (((Q_D_q[30] - Q_D_q[30]) + ((Q_D_q[31] - Q_D_q[31]) + (Q_D_q[32] - Q_D_q[32]))) + ((Q_D_q[33] - Q_D_q[33]) + ((Q_D_q[34] - Q_D_q[34]) + (Q_D_q[35] - Q_D_q[35])))))));
+    }
+    if (finite != finite)
+        status |= RIGIDSYM_C_NONFINITE_RESULT;
+    if (singular) {
+        status |= RIGIDSYM_C_SINGULAR;
+        Q[0] = NAN;
+        Q[1] = NAN;
+        Q[2] = NAN;
+        Q[3] = NAN;
+        Q[4] = NAN;
+        Q[5] = NAN;
+        Q[6] = NAN;
+        Q[7] = NAN;
+        Q[8] = NAN;
+        Q_D_q[0] = NAN;
+        Q_D_q[1] = NAN;
+        Q_D_q[2] = NAN;
+        Q_D_q[3] = NAN;
+        Q_D_q[4] = NAN;
+        Q_D_q[5] = NAN;
+        Q_D_q[6] = NAN;
+        Q_D_q[7] = NAN;
+        Q_D_q[8] = NAN;
+        Q_D_q[9] = NAN;
+        Q_D_q[10] = NAN;
+        Q_D_q[11] = NAN;
+        Q_D_q[12] = NAN;
+        Q_D_q[13] = NAN;
+        Q_D_q[14] = NAN;
+        Q_D_q[15] = NAN;
+        Q_D_q[16] = NAN;
+        Q_D_q[17] = NAN;
+        Q_D_q[18] = NAN;
+        Q_D_q[19] = NAN;
+        Q_D_q[20] = NAN;
+        Q_D_q[21] = NAN;
+        Q_D_q[22] = NAN;
+        Q_D_q[23] = NAN;
+        Q_D_q[24] = NAN;
+        Q_D_q[25] = NAN;
+        Q_D_q[26] = NAN;
+        Q_D_q[27] = NAN;
+        Q_D_q[28] = NAN;
+        Q_D_q[29] = NAN;
+        Q_D_q[30] = NAN;
+        Q_D_q[31] = NAN;
+        Q_D_q[32] = NAN;
+        Q_D_q[33] = NAN;
+        Q_D_q[34] = NAN;
+        Q_D_q[35] = NAN;
+    }
+    return status;
+}
+#endif
+
 RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_with_jacobians(
     const double q[4],
     double Q[9],    double Q_D_q[36])
 {
-    uint64_t odd = 0;
     int status = 0, singular = 0;
     double finite = 0.0;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    {   /* the range test of every input component, as one loop (it vectorises) */
-        const double in_[4] = {
-            q[0], q[1], q[2], q[3]
-        };
-        int j_;
-        for (j_ = 0; j_ < 4; ++j_)
-            RIGIDSYM_C_ODD_D(odd, in_[j_]);
+    uint64_t odd = 0;
+#if RIGIDSYM_C_SSE2
+    {   /* the range test of every input component, 2 per SSE2 register */
+        __m128i mx_ = _mm_setzero_si128(), mn_ = _mm_set1_epi16(0x7fff);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadh_pd(_mm_load_sd(q), q + 1)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadh_pd(_mm_load_sd(q + 2), q + 2 + 1)), &mx_, &mn_);
+        if (RIGIDSYM_C_Q_ODD_D(mx_, mn_))
+            return rigidsym_c_quaternion_rotation_with_jacobians_odd(q, Q, Q_D_q);
     }
-    if (odd >> 63) {
-        const double *args[1];
-        const int sizes[1] = {4};
-        int j;
-        args[0] = q;
-        status = RIGIDSYM_C_EXTREME_INPUT;
-        for (j = 0; j < 1; ++j)
-            if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
-                status = RIGIDSYM_C_NONFINITE_INPUT;
-#if RIGIDSYM_C_WIDE
-        if (status == RIGIDSYM_C_EXTREME_INPUT)
-            return rigidsym_c_quaternion_rotation_with_jacobians_wide(q, Q, Q_D_q);
-#endif
+#elif RIGIDSYM_C_VECTOR
+    {   /* the range test of every input component, 2 per vector register */
+        rigidsym_c_vd oddv_ = {0, 0};
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(q));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(q + 2));
+        odd = oddv_[0] | oddv_[1];
     }
 #else
-    (void)odd;
+    {   /* the range test of every input component, one at a time (an argument's
+         * components by a loop: compact code where there are no 16-byte vectors) */
+        int j_;
+        for (j_ = 0; j_ < 4; ++j_)
+            RIGIDSYM_C_ODD_D(odd, q[j_]);
+        (void)j_;
+    }
+#endif
+    if (odd >> 63)
+        return rigidsym_c_quaternion_rotation_with_jacobians_odd(q, Q, Q_D_q);
 #endif
     const double q_0 = q[0];
     const double q_1 = q[1];
@@ -496,13 +810,16 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_with_jacobians(
     }
     /* no division or root, and every output bounded by 2^205 for inputs of
      * ordinary magnitude (|x| < 2^101): only an extreme or non-finite input can make an
-     * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN
-     * otherwise; the guards of rigidsym_c_impl.h keep the compiler from folding it) */
+     * output non-finite, so only then (rigidsym_c_quaternion_rotation_with_jacobians_odd) are the outputs tested */
 #if defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    finite += ((((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + ((Q[3] - Q[3]) + (Q[4] - Q[4])))) + (((Q[5] - Q[5]) + ((Q[6] - Q[6]) + (Q[7] - Q[7]))) + ((Q[8] - Q[8]) + ((Q_D_q[0] - Q_D_q[0]) + (Q_D_q[1] - Q_D_q[1]))))) + ((((Q_D_q[2] - Q_D_q[2]) + (Q_D_q[3] - Q_D_q[3])) + ((Q_D_q[4] - Q_D_q[4]) + ((Q_D_q[5] - Q_D_q[5]) + (Q_D_q[6] - Q_D_q[6])))) + (((Q_D_q[7] - Q_D_q[7]) + ((Q_D_q[8] - Q_D_q[8]) + (Q_D_q[9] - Q_D_q[9]))) + ((Q_D_q[10] - Q_D_q[10]) + ((Q_D_q[11] - Q_D_q[11]) + (Q_D_q[12] - Q_D_q[12])))))) + (((((Q_D_q[13] - Q_D_q[13]) + (Q_D_q[14] - Q_D_q[14])) + ((Q_D_q[15] - Q_D_q[15]) + ((Q_D_q[16] - Q_D_q[16]) + (Q_D_q[17] - Q_D_q[17])))) + (((Q_D_q[18] - Q_D_q[18]) + ((Q_D_q[19] - Q_D_q[19]) + (Q_D_q[20] - Q_D_q[20]))) + ((Q_D_q[21] - Q_D_q[21]) + ((Q_D_q[22] - Q_D_q[22]) + (Q_D_q[23] - Q_D_q[23]))))) + ((((Q_D_q[24] - Q_D_q[24]) + ((Q_D_q[25] - Q_D_q[25]) + (Q_D_q[26] - Q_D_q[26]))) + ((Q_D_q[27] - Q_D_q[27]) + ((Q_D_q[28] - Q_D_q[28]) + (Q_D_q[29] - Q_D_q[29])))) + (((Q_D_q[30] - Q_D_q[30]) + ((Q_D_q[31] - Q_D_q[31]) + (Q_D_q[32] - Q_D_q[32]))) + ((Q_D_q[33] - Q_D_q[33]) + ((Q_D_q[34] - Q_D_q[34]) + (Q_D_q[35] - Q_D_q[35])))))));
-#else
-    if (status)
-        finite += ((((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + ((Q[3] - Q[3]) + (Q[4] - Q[4])))) + (((Q[5] - Q[5]) + ((Q[6] - Q[6]) + (Q[7] - Q[7]))) + ((Q[8] - Q[8]) + ((Q_D_q[0] - Q_D_q[0]) + (Q_D_q[1] - Q_D_q[1]))))) + ((((Q_D_q[2] - Q_D_q[2]) + (Q_D_q[3] - Q_D_q[3])) + ((Q_D_q[4] - Q_D_q[4]) + ((Q_D_q[5] - Q_D_q[5]) + (Q_D_q[6] - Q_D_q[6])))) + (((Q_D_q[7] - Q_D_q[7]) + ((Q_D_q[8] - Q_D_q[8]) + (Q_D_q[9] - Q_D_q[9]))) + ((Q_D_q[10] - Q_D_q[10]) + ((Q_D_q[11] - Q_D_q[11]) + (Q_D_q[12] - Q_D_q[12])))))) + (((((Q_D_q[13] - Q_D_q[13]) + (Q_D_q[14] - Q_D_q[14])) + ((Q_D_q[15] - Q_D_q[15]) + ((Q_D_q[16] - Q_D_q[16]) + (Q_D_q[17] - Q_D_q[17])))) + (((Q_D_q[18] - Q_D_q[18]) + ((Q_D_q[19] - Q_D_q[19]) + (Q_D_q[20] - Q_D_q[20]))) + ((Q_D_q[21] - Q_D_q[21]) + ((Q_D_q[22] - Q_D_q[22]) + (Q_D_q[23] - Q_D_q[23]))))) + ((((Q_D_q[24] - Q_D_q[24]) + ((Q_D_q[25] - Q_D_q[25]) + (Q_D_q[26] - Q_D_q[26]))) + ((Q_D_q[27] - Q_D_q[27]) + ((Q_D_q[28] - Q_D_q[28]) + (Q_D_q[29] - Q_D_q[29])))) + (((Q_D_q[30] - Q_D_q[30]) + ((Q_D_q[31] - Q_D_q[31]) + (Q_D_q[32] - Q_D_q[32]))) + ((Q_D_q[33] - Q_D_q[33]) + ((Q_D_q[34] - Q_D_q[34]) + (Q_D_q[35] - Q_D_q[35])))))));
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const double s_ = (((((Q[0] + Q[1]) + (Q[2] + (Q[3] + Q[4]))) + ((Q[5] + (Q[6] + Q[7])) + (Q[8] + (Q_D_q[0] + Q_D_q[1])))) + (((Q_D_q[2] + Q_D_q[3]) + (Q_D_q[4] + (Q_D_q[5] + Q_D_q[6]))) + ((Q_D_q[7] + (Q_D_q[8] + Q_D_q[9])) + (Q_D_q[10] + (Q_D_q[11] + Q_D_q[12]))))) + ((((Q_D_q[13] + Q_D_q[14]) + (Q_D_q[15] + (Q_D_q[16] + Q_D_q[17]))) + ((Q_D_q[18] + (Q_D_q[19] + Q_D_q[20])) + (Q_D_q[21] + (Q_D_q[22] + Q_D_q[23])))) + (((Q_D_q[24] + (Q_D_q[25] + Q_D_q[26])) + (Q_D_q[27] + (Q_D_q[28] + Q_D_q[29]))) + ((Q_D_q[30] + (Q_D_q[31] + Q_D_q[32])) + (Q_D_q[33] + (Q_D_q[34] + Q_D_q[35]))))));
+        if (!(s_ - s_ == 0.0))
+            finite += ((((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + ((Q[3] - Q[3]) + (Q[4] - Q[4])))) + (((Q[5] - Q[5]) + ((Q[6] - Q[6]) + (Q[7] - Q[7]))) + ((Q[8] - Q[8]) + ((Q_D_q[0] - Q_D_q[0]) + (Q_D_q[1] - Q_D_q[1]))))) + ((((Q_D_q[2] - Q_D_q[2]) + (Q_D_q[3] - Q_D_q[3])) + ((Q_D_q[4] - Q_D_q[4]) + ((Q_D_q[5] - Q_D_q[5]) + (Q_D_q[6] - Q_D_q[6])))) + (((Q_D_q[7] - Q_D_q[7]) + ((Q_D_q[8] - Q_D_q[8]) + (Q_D_q[9] - Q_D_q[9]))) + ((Q_D_q[10] - Q_D_q[10]) + ((Q_D_q[11] - Q_D_q[11]) + (Q_D_q[12] - Q_D_q[12])))))) + (((((Q_D_q[13] - Q_D_q[13]) + (Q_D_q[14] - Q_D_q[14])) + ((Q_D_q[15] - Q_D_q[15]) + ((Q_D_q[16] - Q_D_q[16]) + (Q_D_q[17] - Q_D_q[17])))) + (((Q_D_q[18] - Q_D_q[18]) + ((Q_D_q[19] - Q_D_q[19]) + (Q_D_q[20] - Q_D_q[20]))) + ((Q_D_q[21] - Q_D_q[21]) + ((Q_D_q[22] - Q_D_q[22]) + (Q_D_q[23] - Q_D_q[23]))))) + ((((Q_D_q[24] - Q_D_q[24]) + ((Q_D_q[25] - Q_D_q[25]) + (Q_D_q[26] - Q_D_q[26]))) + ((Q_D_q[27] - Q_D_q[27]) + ((Q_D_q[28] - Q_D_q[28]) + (Q_D_q[29] - Q_D_q[29])))) + (((Q_D_q[30] - Q_D_q[30]) + ((Q_D_q[31] - Q_D_q[31]) + (Q_D_q[32] - Q_D_q[32]))) + ((Q_D_q[33] - Q_D_q[33]) + ((Q_D_q[34] - Q_D_q[34]) + (Q_D_q[35] - Q_D_q[35])))))));
+    }
 #endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -580,34 +897,188 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_with_jacobians_batch(
 }
 
 
+
+#if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
+/* rigidsym_c_quaternion_rotation_with_jacobians_f32 where the range test found an odd input (extreme or not finite): the
+ * input bits of the status, the rescue where there is one, else the ordinary evaluation
+ * with its outputs' test. Cold and out of line, reached by a tail call, so that the fast
+ * path of rigidsym_c_quaternion_rotation_with_jacobians_f32 saves no register and makes no call. */
+static RIGIDSYM_C_COLD int rigidsym_c_quaternion_rotation_with_jacobians_f32_odd(
+    const float q[4],
+    float Q[9],
+    float Q_D_q[36])
+{
+    const float *args[1];
+    const int sizes[1] = {4};
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0, odd_ = 0;
+    float finite = 0.0f;
+    args[0] = q;
+    for (j = 0; j < 1; ++j)
+        odd_ |= rigidsym_c_extreme_f(args[j], sizes[j]);
+    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
+        status = 0;
+    for (j = 0; j < 1; ++j)
+        if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
+            status = RIGIDSYM_C_NONFINITE_INPUT;
+    const float q_0 = q[0];
+    const float q_1 = q[1];
+    const float q_2 = q[2];
+    const float q_3 = q[3];
+    {
+        const float x0 = 2.0f*(q_2*q_2);
+        const float x1 = 2.0f*(q_3*q_3) - 1.0f;
+        const float x2 = 2.0f*q_3;
+        const float x3 = q_0*x2;
+        const float x4 = 2.0f*q_2;
+        const float x5 = q_0*x4;
+        const float x6 = 2.0f*(q_1*q_1);
+        const float x7 = 2.0f*q_1;
+        const float x8 = q_0*x7;
+        const float x9 = -4.0f*q_2;
+        const float x10 = -4.0f*q_3;
+        const float x11 = 2.0f*q_0;
+        const float x12 = -x11;
+        const float x13 = -4.0f*q_1;
+        Q[0] = -x0 - x1;
+        Q[1] = 2.0f*q_1*q_2 - x3;
+        Q[2] = q_1*x2 + x5;
+        Q[3] = q_1*x4 + x3;
+        Q[4] = -x1 - x6;
+        Q[5] = 2.0f*q_2*q_3 - x8;
+        Q[6] = 2.0f*q_1*q_3 - x5;
+        Q[7] = q_2*x2 + x8;
+        Q[8] = -x0 - x6 + 1.0f;
+        Q_D_q[0] = 0.0f;
+        Q_D_q[1] = 0.0f;
+        Q_D_q[2] = x9;
+        Q_D_q[3] = x10;
+        Q_D_q[4] = -x2;
+        Q_D_q[5] = x4;
+        Q_D_q[6] = x7;
+        Q_D_q[7] = x12;
+        Q_D_q[8] = x4;
+        Q_D_q[9] = x2;
+        Q_D_q[10] = x11;
+        Q_D_q[11] = x7;
+        Q_D_q[12] = x2;
+        Q_D_q[13] = x4;
+        Q_D_q[14] = x7;
+        Q_D_q[15] = x11;
+        Q_D_q[16] = 0.0f;
+        Q_D_q[17] = x13;
+        Q_D_q[18] = 0.0f;
+        Q_D_q[19] = x10;
+        Q_D_q[20] = -x7;
+        Q_D_q[21] = x12;
+        Q_D_q[22] = x2;
+        Q_D_q[23] = x4;
+        Q_D_q[24] = -x4;
+        Q_D_q[25] = x2;
+        Q_D_q[26] = x12;
+        Q_D_q[27] = x7;
+        Q_D_q[28] = x7;
+        Q_D_q[29] = x11;
+        Q_D_q[30] = x2;
+        Q_D_q[31] = x4;
+        Q_D_q[32] = 0.0f;
+        Q_D_q[33] = x13;
+        Q_D_q[34] = x9;
+        Q_D_q[35] = 0.0f;
+    }
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const float s_ = (((((Q[0] + Q[1]) + (Q[2] + (Q[3] + Q[4]))) + ((Q[5] + (Q[6] + Q[7])) + (Q[8] + (Q_D_q[0] + Q_D_q[1])))) + (((Q_D_q[2] + Q_D_q[3]) + (Q_D_q[4] + (Q_D_q[5] + Q_D_q[6]))) + ((Q_D_q[7] + (Q_D_q[8] + Q_D_q[9])) + (Q_D_q[10] + (Q_D_q[11] + Q_D_q[12]))))) + ((((Q_D_q[13] + Q_D_q[14]) + (Q_D_q[15] + (Q_D_q[16] + Q_D_q[17]))) + ((Q_D_q[18] + (Q_D_q[19] + Q_D_q[20])) + (Q_D_q[21] + (Q_D_q[22] + Q_D_q[23])))) + (((Q_D_q[24] + (Q_D_q[25] + Q_D_q[26])) + (Q_D_q[27] + (Q_D_q[28] + Q_D_q[29]))) + ((Q_D_q[30] + (Q_D_q[31] + Q_D_q[32])) + (Q_D_q[33] + (Q_D_q[34] + Q_D_q[35]))))));
+        if (!(s_ - s_ == 0.0f))
+            finite += ((((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + ((Q[3] - Q[3]) + (Q[4] - Q[4])))) + (((Q[5] - Q[5]) + ((Q[6] - Q[6]) + (Q[7] - Q[7]))) + ((Q[8] - Q[8]) + ((Q_D_q[0] - Q_D_q[0]) + (Q_D_q[1] - Q_D_q[1]))))) + ((((Q_D_q[2] - Q_D_q[2]) + (Q_D_q[3] - Q_D_q[3])) + ((Q_D_q[4] - Q_D_q[4]) + ((Q_D_q[5] - Q_D_q[5]) + (Q_D_q[6] - Q_D_q[6])))) + (((Q_D_q[7] - Q_D_q[7]) + ((Q_D_q[8] - Q_D_q[8]) + (Q_D_q[9] - Q_D_q[9]))) + ((Q_D_q[10] - Q_D_q[10]) + ((Q_D_q[11] - Q_D_q[11]) + (Q_D_q[12] - Q_D_q[12])))))) + (((((Q_D_q[13] - Q_D_q[13]) + (Q_D_q[14] - Q_D_q[14])) + ((Q_D_q[15] - Q_D_q[15]) + ((Q_D_q[16] - Q_D_q[16]) + (Q_D_q[17] - Q_D_q[17])))) + (((Q_D_q[18] - Q_D_q[18]) + ((Q_D_q[19] - Q_D_q[19]) + (Q_D_q[20] - Q_D_q[20]))) + ((Q_D_q[21] - Q_D_q[21]) + ((Q_D_q[22] - Q_D_q[22]) + (Q_D_q[23] - Q_D_q[23]))))) + ((((Q_D_q[24] - Q_D_q[24]) + ((Q_D_q[25] - Q_D_q[25]) + (Q_D_q[26] - Q_D_q[26]))) + ((Q_D_q[27] - Q_D_q[27]) + ((Q_D_q[28] - Q_D_q[28]) + (Q_D_q[29] - Q_D_q[29])))) + (((Q_D_q[30] - Q_D_q[30]) + ((Q_D_q[31] - Q_D_q[31]) + (Q_D_q[32] - Q_D_q[32]))) + ((Q_D_q[33] - Q_D_q[33]) + ((Q_D_q[34] - Q_D_q[34]) + (Q_D_q[35] - Q_D_q[35])))))));
+    }
+    if (finite != finite)
+        status |= RIGIDSYM_C_NONFINITE_RESULT;
+    if (singular) {
+        status |= RIGIDSYM_C_SINGULAR;
+        Q[0] = NAN;
+        Q[1] = NAN;
+        Q[2] = NAN;
+        Q[3] = NAN;
+        Q[4] = NAN;
+        Q[5] = NAN;
+        Q[6] = NAN;
+        Q[7] = NAN;
+        Q[8] = NAN;
+        Q_D_q[0] = NAN;
+        Q_D_q[1] = NAN;
+        Q_D_q[2] = NAN;
+        Q_D_q[3] = NAN;
+        Q_D_q[4] = NAN;
+        Q_D_q[5] = NAN;
+        Q_D_q[6] = NAN;
+        Q_D_q[7] = NAN;
+        Q_D_q[8] = NAN;
+        Q_D_q[9] = NAN;
+        Q_D_q[10] = NAN;
+        Q_D_q[11] = NAN;
+        Q_D_q[12] = NAN;
+        Q_D_q[13] = NAN;
+        Q_D_q[14] = NAN;
+        Q_D_q[15] = NAN;
+        Q_D_q[16] = NAN;
+        Q_D_q[17] = NAN;
+        Q_D_q[18] = NAN;
+        Q_D_q[19] = NAN;
+        Q_D_q[20] = NAN;
+        Q_D_q[21] = NAN;
+        Q_D_q[22] = NAN;
+        Q_D_q[23] = NAN;
+        Q_D_q[24] = NAN;
+        Q_D_q[25] = NAN;
+        Q_D_q[26] = NAN;
+        Q_D_q[27] = NAN;
+        Q_D_q[28] = NAN;
+        Q_D_q[29] = NAN;
+        Q_D_q[30] = NAN;
+        Q_D_q[31] = NAN;
+        Q_D_q[32] = NAN;
+        Q_D_q[33] = NAN;
+        Q_D_q[34] = NAN;
+        Q_D_q[35] = NAN;
+    }
+    return status;
+}
+#endif
+
 RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_with_jacobians_f32(
     const float q[4],
     float Q[9],    float Q_D_q[36])
 {
-    uint32_t odd = 0;
     int status = 0, singular = 0;
     float finite = 0.0f;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    {   /* the range test of every input component, as one loop (it vectorises) */
-        const float in_[4] = {
-            q[0], q[1], q[2], q[3]
-        };
-        int j_;
-        for (j_ = 0; j_ < 4; ++j_)
-            RIGIDSYM_C_ODD_F(odd, in_[j_]);
+    uint32_t odd = 0;
+#if RIGIDSYM_C_SSE2
+    {   /* the range test of every input component, 4 per SSE2 register */
+        __m128i mx_ = _mm_setzero_si128(), mn_ = _mm_set1_epi16(0x7fff);
+        rigidsym_c_q_f(_mm_castps_si128(_mm_loadu_ps(q)), &mx_, &mn_);
+        if (RIGIDSYM_C_Q_ODD_F(mx_, mn_))
+            return rigidsym_c_quaternion_rotation_with_jacobians_f32_odd(q, Q, Q_D_q);
     }
-    if (odd >> 31) {
-        const float *args[1];
-        const int sizes[1] = {4};
-        int j;
-        args[0] = q;
-        status = RIGIDSYM_C_EXTREME_INPUT;
-        for (j = 0; j < 1; ++j)
-            if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
-                status = RIGIDSYM_C_NONFINITE_INPUT;
+#elif RIGIDSYM_C_VECTOR
+    {   /* the range test of every input component, 4 per vector register */
+        rigidsym_c_vf oddv_ = {0, 0, 0, 0};
+        oddv_ |= rigidsym_c_odd_vf(rigidsym_c_load_vf(q));
+        odd = oddv_[0] | oddv_[1] | oddv_[2] | oddv_[3];
     }
 #else
-    (void)odd;
+    {   /* the range test of every input component, one at a time (an argument's
+         * components by a loop: compact code where there are no 16-byte vectors) */
+        int j_;
+        for (j_ = 0; j_ < 4; ++j_)
+            RIGIDSYM_C_ODD_F(odd, q[j_]);
+        (void)j_;
+    }
+#endif
+    if (odd >> 31)
+        return rigidsym_c_quaternion_rotation_with_jacobians_f32_odd(q, Q, Q_D_q);
 #endif
     const float q_0 = q[0];
     const float q_1 = q[1];
@@ -676,13 +1147,16 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_with_jacobians_f32(
     }
     /* no division or root, and every output bounded by 2^65 for inputs of
      * ordinary magnitude (|x| < 2^31): only an extreme or non-finite input can make an
-     * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN
-     * otherwise; the guards of rigidsym_c_impl.h keep the compiler from folding it) */
+     * output non-finite, so only then (rigidsym_c_quaternion_rotation_with_jacobians_f32_odd) are the outputs tested */
 #if defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    finite += ((((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + ((Q[3] - Q[3]) + (Q[4] - Q[4])))) + (((Q[5] - Q[5]) + ((Q[6] - Q[6]) + (Q[7] - Q[7]))) + ((Q[8] - Q[8]) + ((Q_D_q[0] - Q_D_q[0]) + (Q_D_q[1] - Q_D_q[1]))))) + ((((Q_D_q[2] - Q_D_q[2]) + (Q_D_q[3] - Q_D_q[3])) + ((Q_D_q[4] - Q_D_q[4]) + ((Q_D_q[5] - Q_D_q[5]) + (Q_D_q[6] - Q_D_q[6])))) + (((Q_D_q[7] - Q_D_q[7]) + ((Q_D_q[8] - Q_D_q[8]) + (Q_D_q[9] - Q_D_q[9]))) + ((Q_D_q[10] - Q_D_q[10]) + ((Q_D_q[11] - Q_D_q[11]) + (Q_D_q[12] - Q_D_q[12])))))) + (((((Q_D_q[13] - Q_D_q[13]) + (Q_D_q[14] - Q_D_q[14])) + ((Q_D_q[15] - Q_D_q[15]) + ((Q_D_q[16] - Q_D_q[16]) + (Q_D_q[17] - Q_D_q[17])))) + (((Q_D_q[18] - Q_D_q[18]) + ((Q_D_q[19] - Q_D_q[19]) + (Q_D_q[20] - Q_D_q[20]))) + ((Q_D_q[21] - Q_D_q[21]) + ((Q_D_q[22] - Q_D_q[22]) + (Q_D_q[23] - Q_D_q[23]))))) + ((((Q_D_q[24] - Q_D_q[24]) + ((Q_D_q[25] - Q_D_q[25]) + (Q_D_q[26] - Q_D_q[26]))) + ((Q_D_q[27] - Q_D_q[27]) + ((Q_D_q[28] - Q_D_q[28]) + (Q_D_q[29] - Q_D_q[29])))) + (((Q_D_q[30] - Q_D_q[30]) + ((Q_D_q[31] - Q_D_q[31]) + (Q_D_q[32] - Q_D_q[32]))) + ((Q_D_q[33] - Q_D_q[33]) + ((Q_D_q[34] - Q_D_q[34]) + (Q_D_q[35] - Q_D_q[35])))))));
-#else
-    if (status)
-        finite += ((((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + ((Q[3] - Q[3]) + (Q[4] - Q[4])))) + (((Q[5] - Q[5]) + ((Q[6] - Q[6]) + (Q[7] - Q[7]))) + ((Q[8] - Q[8]) + ((Q_D_q[0] - Q_D_q[0]) + (Q_D_q[1] - Q_D_q[1]))))) + ((((Q_D_q[2] - Q_D_q[2]) + (Q_D_q[3] - Q_D_q[3])) + ((Q_D_q[4] - Q_D_q[4]) + ((Q_D_q[5] - Q_D_q[5]) + (Q_D_q[6] - Q_D_q[6])))) + (((Q_D_q[7] - Q_D_q[7]) + ((Q_D_q[8] - Q_D_q[8]) + (Q_D_q[9] - Q_D_q[9]))) + ((Q_D_q[10] - Q_D_q[10]) + ((Q_D_q[11] - Q_D_q[11]) + (Q_D_q[12] - Q_D_q[12])))))) + (((((Q_D_q[13] - Q_D_q[13]) + (Q_D_q[14] - Q_D_q[14])) + ((Q_D_q[15] - Q_D_q[15]) + ((Q_D_q[16] - Q_D_q[16]) + (Q_D_q[17] - Q_D_q[17])))) + (((Q_D_q[18] - Q_D_q[18]) + ((Q_D_q[19] - Q_D_q[19]) + (Q_D_q[20] - Q_D_q[20]))) + ((Q_D_q[21] - Q_D_q[21]) + ((Q_D_q[22] - Q_D_q[22]) + (Q_D_q[23] - Q_D_q[23]))))) + ((((Q_D_q[24] - Q_D_q[24]) + ((Q_D_q[25] - Q_D_q[25]) + (Q_D_q[26] - Q_D_q[26]))) + ((Q_D_q[27] - Q_D_q[27]) + ((Q_D_q[28] - Q_D_q[28]) + (Q_D_q[29] - Q_D_q[29])))) + (((Q_D_q[30] - Q_D_q[30]) + ((Q_D_q[31] - Q_D_q[31]) + (Q_D_q[32] - Q_D_q[32]))) + ((Q_D_q[33] - Q_D_q[33]) + ((Q_D_q[34] - Q_D_q[34]) + (Q_D_q[35] - Q_D_q[35])))))));
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const float s_ = (((((Q[0] + Q[1]) + (Q[2] + (Q[3] + Q[4]))) + ((Q[5] + (Q[6] + Q[7])) + (Q[8] + (Q_D_q[0] + Q_D_q[1])))) + (((Q_D_q[2] + Q_D_q[3]) + (Q_D_q[4] + (Q_D_q[5] + Q_D_q[6]))) + ((Q_D_q[7] + (Q_D_q[8] + Q_D_q[9])) + (Q_D_q[10] + (Q_D_q[11] + Q_D_q[12]))))) + ((((Q_D_q[13] + Q_D_q[14]) + (Q_D_q[15] + (Q_D_q[16] + Q_D_q[17]))) + ((Q_D_q[18] + (Q_D_q[19] + Q_D_q[20])) + (Q_D_q[21] + (Q_D_q[22] + Q_D_q[23])))) + (((Q_D_q[24] + (Q_D_q[25] + Q_D_q[26])) + (Q_D_q[27] + (Q_D_q[28] + Q_D_q[29]))) + ((Q_D_q[30] + (Q_D_q[31] + Q_D_q[32])) + (Q_D_q[33] + (Q_D_q[34] + Q_D_q[35]))))));
+        if (!(s_ - s_ == 0.0f))
+            finite += ((((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + ((Q[3] - Q[3]) + (Q[4] - Q[4])))) + (((Q[5] - Q[5]) + ((Q[6] - Q[6]) + (Q[7] - Q[7]))) + ((Q[8] - Q[8]) + ((Q_D_q[0] - Q_D_q[0]) + (Q_D_q[1] - Q_D_q[1]))))) + ((((Q_D_q[2] - Q_D_q[2]) + (Q_D_q[3] - Q_D_q[3])) + ((Q_D_q[4] - Q_D_q[4]) + ((Q_D_q[5] - Q_D_q[5]) + (Q_D_q[6] - Q_D_q[6])))) + (((Q_D_q[7] - Q_D_q[7]) + ((Q_D_q[8] - Q_D_q[8]) + (Q_D_q[9] - Q_D_q[9]))) + ((Q_D_q[10] - Q_D_q[10]) + ((Q_D_q[11] - Q_D_q[11]) + (Q_D_q[12] - Q_D_q[12])))))) + (((((Q_D_q[13] - Q_D_q[13]) + (Q_D_q[14] - Q_D_q[14])) + ((Q_D_q[15] - Q_D_q[15]) + ((Q_D_q[16] - Q_D_q[16]) + (Q_D_q[17] - Q_D_q[17])))) + (((Q_D_q[18] - Q_D_q[18]) + ((Q_D_q[19] - Q_D_q[19]) + (Q_D_q[20] - Q_D_q[20]))) + ((Q_D_q[21] - Q_D_q[21]) + ((Q_D_q[22] - Q_D_q[22]) + (Q_D_q[23] - Q_D_q[23]))))) + ((((Q_D_q[24] - Q_D_q[24]) + ((Q_D_q[25] - Q_D_q[25]) + (Q_D_q[26] - Q_D_q[26]))) + ((Q_D_q[27] - Q_D_q[27]) + ((Q_D_q[28] - Q_D_q[28]) + (Q_D_q[29] - Q_D_q[29])))) + (((Q_D_q[30] - Q_D_q[30]) + ((Q_D_q[31] - Q_D_q[31]) + (Q_D_q[32] - Q_D_q[32]))) + ((Q_D_q[33] - Q_D_q[33]) + ((Q_D_q[34] - Q_D_q[34]) + (Q_D_q[35] - Q_D_q[35])))))));
+    }
 #endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;

@@ -71,40 +71,129 @@ static int rigidsym_c_rotation_from_natural_invariants_wide(
 #endif
 
 
+
+#if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
+/* rigidsym_c_rotation_from_natural_invariants where the range test found an odd input (extreme or not finite): the
+ * input bits of the status, the rescue where there is one, else the ordinary evaluation
+ * with its outputs' test. Cold and out of line, reached by a tail call, so that the fast
+ * path of rigidsym_c_rotation_from_natural_invariants saves no register and makes no call. */
+static RIGIDSYM_C_COLD int rigidsym_c_rotation_from_natural_invariants_odd(
+    const double e[3],
+    double phi,
+    double Q[9])
+{
+    const double *args[2];
+    const int sizes[2] = {3, 1};
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0, odd_ = 0;
+    double finite = 0.0;
+    args[0] = e;
+    args[1] = &phi;
+    for (j = 0; j < 2; ++j)
+        odd_ |= rigidsym_c_extreme_d(args[j], sizes[j]);
+    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
+        status = 0;
+    for (j = 0; j < 2; ++j)
+        if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
+            status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_WIDE
+    if (status == RIGIDSYM_C_EXTREME_INPUT)
+        return rigidsym_c_rotation_from_natural_invariants_wide(e, phi, Q);
+#endif
+    const double e_0 = e[0];
+    const double e_1 = e[1];
+    const double e_2 = e[2];
+    {
+        const double x0 = (e_0*e_0);
+        const double x1 = (0.5)*phi;
+        const double x2 = sin(x1);
+        const double x3 = (x2*x2);
+        const double x4 = 2.0*x3;
+        const double x5 = cos(x1);
+        const double x6 = ((x3 < 0.5) ? (1.0 - x4) : (2.0*(x5*x5) - 1.0));
+        const double x7 = e_0*x4;
+        const double x8 = e_1*x7;
+        const double x9 = 2.0*x2*x5;
+        const double x10 = e_2*x9;
+        const double x11 = e_2*x7;
+        const double x12 = e_1*x9;
+        const double x13 = (e_1*e_1);
+        const double x14 = e_0*x9;
+        const double x15 = (e_2*e_2);
+        Q[0] = x0 + x6*(1.0 - x0);
+        Q[1] = -x10 + x8;
+        Q[2] = x11 + x12;
+        Q[3] = x10 + x8;
+        Q[4] = x13 + x6*(1.0 - x13);
+        Q[5] = 2.0*e_1*e_2*x3 - x14;
+        Q[6] = x11 - x12;
+        Q[7] = e_1*e_2*x4 + x14;
+        Q[8] = x15 + x6*(1.0 - x15);
+    }
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const double s_ = (((Q[0] + Q[1]) + (Q[2] + Q[3])) + ((Q[4] + Q[5]) + (Q[6] + (Q[7] + Q[8]))));
+        if (!(s_ - s_ == 0.0))
+            finite += ((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + (Q[3] - Q[3]))) + (((Q[4] - Q[4]) + (Q[5] - Q[5])) + ((Q[6] - Q[6]) + ((Q[7] - Q[7]) + (Q[8] - Q[8])))));
+    }
+    if (finite != finite)
+        status |= RIGIDSYM_C_NONFINITE_RESULT;
+    if (singular) {
+        status |= RIGIDSYM_C_SINGULAR;
+        Q[0] = NAN;
+        Q[1] = NAN;
+        Q[2] = NAN;
+        Q[3] = NAN;
+        Q[4] = NAN;
+        Q[5] = NAN;
+        Q[6] = NAN;
+        Q[7] = NAN;
+        Q[8] = NAN;
+    }
+    return status;
+}
+#endif
+
 RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants(
     const double e[3],
     double phi,
     double Q[9])
 {
-    uint64_t odd = 0;
     int status = 0, singular = 0;
     double finite = 0.0;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    {   /* the range test of every input component, as one loop (it vectorises) */
-        const double in_[4] = {
-            e[0], e[1], e[2], phi
-        };
-        int j_;
-        for (j_ = 0; j_ < 4; ++j_)
-            RIGIDSYM_C_ODD_D(odd, in_[j_]);
+    uint64_t odd = 0;
+#if RIGIDSYM_C_SSE2
+    {   /* the range test of every input component, 2 per SSE2 register */
+        __m128i mx_ = _mm_setzero_si128(), mn_ = _mm_set1_epi16(0x7fff);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadh_pd(_mm_load_sd(e), e + 1)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&e[2], *&phi)), &mx_, &mn_);
+        if (RIGIDSYM_C_Q_ODD_D(mx_, mn_))
+            return rigidsym_c_rotation_from_natural_invariants_odd(e, phi, Q);
     }
-    if (odd >> 63) {
-        const double *args[2];
-        const int sizes[2] = {3, 1};
-        int j;
-        args[0] = e;
-        args[1] = &phi;
-        status = RIGIDSYM_C_EXTREME_INPUT;
-        for (j = 0; j < 2; ++j)
-            if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
-                status = RIGIDSYM_C_NONFINITE_INPUT;
-#if RIGIDSYM_C_WIDE
-        if (status == RIGIDSYM_C_EXTREME_INPUT)
-            return rigidsym_c_rotation_from_natural_invariants_wide(e, phi, Q);
-#endif
+#elif RIGIDSYM_C_VECTOR
+    {   /* the range test of every input component, 2 per vector register */
+        rigidsym_c_vd oddv_ = {0, 0};
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(e));
+        {
+            const rigidsym_c_vd v_ = {rigidsym_c_bits_d(&e[2]), rigidsym_c_bits_d(&phi)};
+            oddv_ |= rigidsym_c_odd_vd(v_);
+        }
+        odd = oddv_[0] | oddv_[1];
     }
 #else
-    (void)odd;
+    {   /* the range test of every input component, one at a time (an argument's
+         * components by a loop: compact code where there are no 16-byte vectors) */
+        int j_;
+        for (j_ = 0; j_ < 3; ++j_)
+            RIGIDSYM_C_ODD_D(odd, e[j_]);
+        RIGIDSYM_C_ODD_D(odd, phi);
+        (void)j_;
+    }
+#endif
+    if (odd >> 63)
+        return rigidsym_c_rotation_from_natural_invariants_odd(e, phi, Q);
 #endif
     const double e_0 = e[0];
     const double e_1 = e[1];
@@ -138,13 +227,16 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants(
     }
     /* no division or root, and every output bounded by 2^206 for inputs of
      * ordinary magnitude (|x| < 2^101): only an extreme or non-finite input can make an
-     * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN
-     * otherwise; the guards of rigidsym_c_impl.h keep the compiler from folding it) */
+     * output non-finite, so only then (rigidsym_c_rotation_from_natural_invariants_odd) are the outputs tested */
 #if defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    finite += ((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + (Q[3] - Q[3]))) + (((Q[4] - Q[4]) + (Q[5] - Q[5])) + ((Q[6] - Q[6]) + ((Q[7] - Q[7]) + (Q[8] - Q[8])))));
-#else
-    if (status)
-        finite += ((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + (Q[3] - Q[3]))) + (((Q[4] - Q[4]) + (Q[5] - Q[5])) + ((Q[6] - Q[6]) + ((Q[7] - Q[7]) + (Q[8] - Q[8])))));
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const double s_ = (((Q[0] + Q[1]) + (Q[2] + Q[3])) + ((Q[4] + Q[5]) + (Q[6] + (Q[7] + Q[8]))));
+        if (!(s_ - s_ == 0.0))
+            finite += ((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + (Q[3] - Q[3]))) + (((Q[4] - Q[4]) + (Q[5] - Q[5])) + ((Q[6] - Q[6]) + ((Q[7] - Q[7]) + (Q[8] - Q[8])))));
+    }
 #endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -186,36 +278,123 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_batch(
 }
 
 
+
+#if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
+/* rigidsym_c_rotation_from_natural_invariants_f32 where the range test found an odd input (extreme or not finite): the
+ * input bits of the status, the rescue where there is one, else the ordinary evaluation
+ * with its outputs' test. Cold and out of line, reached by a tail call, so that the fast
+ * path of rigidsym_c_rotation_from_natural_invariants_f32 saves no register and makes no call. */
+static RIGIDSYM_C_COLD int rigidsym_c_rotation_from_natural_invariants_f32_odd(
+    const float e[3],
+    float phi,
+    float Q[9])
+{
+    const float *args[2];
+    const int sizes[2] = {3, 1};
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0, odd_ = 0;
+    float finite = 0.0f;
+    args[0] = e;
+    args[1] = &phi;
+    for (j = 0; j < 2; ++j)
+        odd_ |= rigidsym_c_extreme_f(args[j], sizes[j]);
+    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
+        status = 0;
+    for (j = 0; j < 2; ++j)
+        if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
+            status = RIGIDSYM_C_NONFINITE_INPUT;
+    const float e_0 = e[0];
+    const float e_1 = e[1];
+    const float e_2 = e[2];
+    {
+        const float x0 = (e_0*e_0);
+        const float x1 = (0.5f)*phi;
+        const float x2 = sinf(x1);
+        const float x3 = (x2*x2);
+        const float x4 = 2.0f*x3;
+        const float x5 = cosf(x1);
+        const float x6 = ((x3 < 0.5f) ? (1.0f - x4) : (2.0f*(x5*x5) - 1.0f));
+        const float x7 = e_0*x4;
+        const float x8 = e_1*x7;
+        const float x9 = 2.0f*x2*x5;
+        const float x10 = e_2*x9;
+        const float x11 = e_2*x7;
+        const float x12 = e_1*x9;
+        const float x13 = (e_1*e_1);
+        const float x14 = e_0*x9;
+        const float x15 = (e_2*e_2);
+        Q[0] = x0 + x6*(1.0f - x0);
+        Q[1] = -x10 + x8;
+        Q[2] = x11 + x12;
+        Q[3] = x10 + x8;
+        Q[4] = x13 + x6*(1.0f - x13);
+        Q[5] = 2.0f*e_1*e_2*x3 - x14;
+        Q[6] = x11 - x12;
+        Q[7] = e_1*e_2*x4 + x14;
+        Q[8] = x15 + x6*(1.0f - x15);
+    }
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const float s_ = (((Q[0] + Q[1]) + (Q[2] + Q[3])) + ((Q[4] + Q[5]) + (Q[6] + (Q[7] + Q[8]))));
+        if (!(s_ - s_ == 0.0f))
+            finite += ((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + (Q[3] - Q[3]))) + (((Q[4] - Q[4]) + (Q[5] - Q[5])) + ((Q[6] - Q[6]) + ((Q[7] - Q[7]) + (Q[8] - Q[8])))));
+    }
+    if (finite != finite)
+        status |= RIGIDSYM_C_NONFINITE_RESULT;
+    if (singular) {
+        status |= RIGIDSYM_C_SINGULAR;
+        Q[0] = NAN;
+        Q[1] = NAN;
+        Q[2] = NAN;
+        Q[3] = NAN;
+        Q[4] = NAN;
+        Q[5] = NAN;
+        Q[6] = NAN;
+        Q[7] = NAN;
+        Q[8] = NAN;
+    }
+    return status;
+}
+#endif
+
 RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_f32(
     const float e[3],
     float phi,
     float Q[9])
 {
-    uint32_t odd = 0;
     int status = 0, singular = 0;
     float finite = 0.0f;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    {   /* the range test of every input component, as one loop (it vectorises) */
-        const float in_[4] = {
-            e[0], e[1], e[2], phi
-        };
-        int j_;
-        for (j_ = 0; j_ < 4; ++j_)
-            RIGIDSYM_C_ODD_F(odd, in_[j_]);
+    uint32_t odd = 0;
+#if RIGIDSYM_C_SSE2
+    {   /* the range test of every input component, 4 per SSE2 register */
+        __m128i mx_ = _mm_setzero_si128(), mn_ = _mm_set1_epi16(0x7fff);
+        rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&e[0], *&e[1], *&e[2], *&phi)), &mx_, &mn_);
+        if (RIGIDSYM_C_Q_ODD_F(mx_, mn_))
+            return rigidsym_c_rotation_from_natural_invariants_f32_odd(e, phi, Q);
     }
-    if (odd >> 31) {
-        const float *args[2];
-        const int sizes[2] = {3, 1};
-        int j;
-        args[0] = e;
-        args[1] = &phi;
-        status = RIGIDSYM_C_EXTREME_INPUT;
-        for (j = 0; j < 2; ++j)
-            if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
-                status = RIGIDSYM_C_NONFINITE_INPUT;
+#elif RIGIDSYM_C_VECTOR
+    {   /* the range test of every input component, 4 per vector register */
+        rigidsym_c_vf oddv_ = {0, 0, 0, 0};
+        {
+            const rigidsym_c_vf v_ = {rigidsym_c_bits_f(&e[0]), rigidsym_c_bits_f(&e[1]), rigidsym_c_bits_f(&e[2]), rigidsym_c_bits_f(&phi)};
+            oddv_ |= rigidsym_c_odd_vf(v_);
+        }
+        odd = oddv_[0] | oddv_[1] | oddv_[2] | oddv_[3];
     }
 #else
-    (void)odd;
+    {   /* the range test of every input component, one at a time (an argument's
+         * components by a loop: compact code where there are no 16-byte vectors) */
+        int j_;
+        for (j_ = 0; j_ < 3; ++j_)
+            RIGIDSYM_C_ODD_F(odd, e[j_]);
+        RIGIDSYM_C_ODD_F(odd, phi);
+        (void)j_;
+    }
+#endif
+    if (odd >> 31)
+        return rigidsym_c_rotation_from_natural_invariants_f32_odd(e, phi, Q);
 #endif
     const float e_0 = e[0];
     const float e_1 = e[1];
@@ -249,13 +428,16 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_f32(
     }
     /* no division or root, and every output bounded by 2^66 for inputs of
      * ordinary magnitude (|x| < 2^31): only an extreme or non-finite input can make an
-     * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN
-     * otherwise; the guards of rigidsym_c_impl.h keep the compiler from folding it) */
+     * output non-finite, so only then (rigidsym_c_rotation_from_natural_invariants_f32_odd) are the outputs tested */
 #if defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    finite += ((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + (Q[3] - Q[3]))) + (((Q[4] - Q[4]) + (Q[5] - Q[5])) + ((Q[6] - Q[6]) + ((Q[7] - Q[7]) + (Q[8] - Q[8])))));
-#else
-    if (status)
-        finite += ((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + (Q[3] - Q[3]))) + (((Q[4] - Q[4]) + (Q[5] - Q[5])) + ((Q[6] - Q[6]) + ((Q[7] - Q[7]) + (Q[8] - Q[8])))));
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const float s_ = (((Q[0] + Q[1]) + (Q[2] + Q[3])) + ((Q[4] + Q[5]) + (Q[6] + (Q[7] + Q[8]))));
+        if (!(s_ - s_ == 0.0f))
+            finite += ((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + (Q[3] - Q[3]))) + (((Q[4] - Q[4]) + (Q[5] - Q[5])) + ((Q[6] - Q[6]) + ((Q[7] - Q[7]) + (Q[8] - Q[8])))));
+    }
 #endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -445,40 +627,215 @@ static int rigidsym_c_rotation_from_natural_invariants_with_jacobians_wide(
 #endif
 
 
+
+#if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
+/* rigidsym_c_rotation_from_natural_invariants_with_jacobians where the range test found an odd input (extreme or not finite): the
+ * input bits of the status, the rescue where there is one, else the ordinary evaluation
+ * with its outputs' test. Cold and out of line, reached by a tail call, so that the fast
+ * path of rigidsym_c_rotation_from_natural_invariants_with_jacobians saves no register and makes no call. */
+static RIGIDSYM_C_COLD int rigidsym_c_rotation_from_natural_invariants_with_jacobians_odd(
+    const double e[3],
+    double phi,
+    double Q[9],
+    double Q_D_e[27],
+    double Q_D_phi[9])
+{
+    const double *args[2];
+    const int sizes[2] = {3, 1};
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0, odd_ = 0;
+    double finite = 0.0;
+    args[0] = e;
+    args[1] = &phi;
+    for (j = 0; j < 2; ++j)
+        odd_ |= rigidsym_c_extreme_d(args[j], sizes[j]);
+    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
+        status = 0;
+    for (j = 0; j < 2; ++j)
+        if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
+            status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_WIDE
+    if (status == RIGIDSYM_C_EXTREME_INPUT)
+        return rigidsym_c_rotation_from_natural_invariants_with_jacobians_wide(e, phi, Q, Q_D_e, Q_D_phi);
+#endif
+    const double e_0 = e[0];
+    const double e_1 = e[1];
+    const double e_2 = e[2];
+    {
+        const double x0 = (e_0*e_0);
+        const double x1 = 1.0 - x0;
+        const double x2 = (0.5)*phi;
+        const double x3 = sin(x2);
+        const double x4 = (x3*x3);
+        const double x5 = 2.0*x4;
+        const double x6 = 1.0 - x5;
+        const double x7 = e_1*x5;
+        const double x8 = e_0*x7;
+        const double x9 = cos(x2);
+        const double x10 = 2.0*x3*x9;
+        const double x11 = e_2*x10;
+        const double x12 = e_0*x5;
+        const double x13 = e_2*x12;
+        const double x14 = e_1*x10;
+        const double x15 = (e_1*e_1);
+        const double x16 = 1.0 - x15;
+        const double x17 = e_0*x10;
+        const double x18 = (e_2*e_2);
+        const double x19 = 1.0 - x18;
+        const double x20 = 4.0*x4;
+        const double x21 = -x10;
+        const double x22 = e_2*x5;
+        const double x23 = e_0*x14;
+        const double x24 = e_2*x6;
+        const double x25 = e_1*x6;
+        const double x26 = e_0*x11;
+        const double x27 = e_0*x6;
+        Q[0] = x0 + x1*x6;
+        Q[1] = -x11 + x8;
+        Q[2] = x13 + x14;
+        Q[3] = x11 + x8;
+        Q[4] = x15 + x16*x6;
+        Q[5] = 2.0*e_1*e_2*x4 - x17;
+        Q[6] = x13 - x14;
+        Q[7] = e_2*x7 + x17;
+        Q[8] = x18 + x19*x6;
+        Q_D_e[0] = e_0*x20;
+        Q_D_e[1] = 0.0;
+        Q_D_e[2] = 0.0;
+        Q_D_e[3] = x7;
+        Q_D_e[4] = x12;
+        Q_D_e[5] = x21;
+        Q_D_e[6] = x22;
+        Q_D_e[7] = x10;
+        Q_D_e[8] = x12;
+        Q_D_e[9] = x7;
+        Q_D_e[10] = x12;
+        Q_D_e[11] = x10;
+        Q_D_e[12] = 0.0;
+        Q_D_e[13] = e_1*x20;
+        Q_D_e[14] = 0.0;
+        Q_D_e[15] = x21;
+        Q_D_e[16] = x22;
+        Q_D_e[17] = x7;
+        Q_D_e[18] = x22;
+        Q_D_e[19] = x21;
+        Q_D_e[20] = x12;
+        Q_D_e[21] = x10;
+        Q_D_e[22] = x22;
+        Q_D_e[23] = x7;
+        Q_D_e[24] = 0.0;
+        Q_D_e[25] = 0.0;
+        Q_D_e[26] = e_2*x20;
+        Q_D_phi[0] = -x1*x10;
+        Q_D_phi[1] = x23 - x24;
+        Q_D_phi[2] = x25 + x26;
+        Q_D_phi[3] = x23 + x24;
+        Q_D_phi[4] = -x10*x16;
+        Q_D_phi[5] = 2.0*e_1*e_2*x3*x9 - x27;
+        Q_D_phi[6] = -x25 + x26;
+        Q_D_phi[7] = e_1*x11 + x27;
+        Q_D_phi[8] = -x10*x19;
+    }
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const double s_ = (((((Q[0] + Q[1]) + (Q[2] + (Q[3] + Q[4]))) + ((Q[5] + (Q[6] + Q[7])) + (Q[8] + (Q_D_e[0] + Q_D_e[1])))) + (((Q_D_e[2] + Q_D_e[3]) + (Q_D_e[4] + (Q_D_e[5] + Q_D_e[6]))) + ((Q_D_e[7] + (Q_D_e[8] + Q_D_e[9])) + (Q_D_e[10] + (Q_D_e[11] + Q_D_e[12]))))) + ((((Q_D_e[13] + Q_D_e[14]) + (Q_D_e[15] + (Q_D_e[16] + Q_D_e[17]))) + ((Q_D_e[18] + (Q_D_e[19] + Q_D_e[20])) + (Q_D_e[21] + (Q_D_e[22] + Q_D_e[23])))) + (((Q_D_e[24] + (Q_D_e[25] + Q_D_e[26])) + (Q_D_phi[0] + (Q_D_phi[1] + Q_D_phi[2]))) + ((Q_D_phi[3] + (Q_D_phi[4] + Q_D_phi[5])) + (Q_D_phi[6] + (Q_D_phi[7] + Q_D_phi[8]))))));
+        if (!(s_ - s_ == 0.0))
+            finite += ((((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + ((Q[3] - Q[3]) + (Q[4] - Q[4])))) + (((Q[5] - Q[5]) + ((Q[6] - Q[6]) + (Q[7] - Q[7]))) + ((Q[8] - Q[8]) + ((Q_D_e[0] - Q_D_e[0]) + (Q_D_e[1] - Q_D_e[1]))))) + ((((Q_D_e[2] - Q_D_e[2]) + (Q_D_e[3] - Q_D_e[3])) + ((Q_D_e[4] - Q_D_e[4]) + ((Q_D_e[5] - Q_D_e[5]) + (Q_D_e[6] - Q_D_e[6])))) + (((Q_D_e[7] - Q_D_e[7]) + ((Q_D_e[8] - Q_D_e[8]) + (Q_D_e[9] - Q_D_e[9]))) + ((Q_D_e[10] - Q_D_e[10]) + ((Q_D_e[11] - Q_D_e[11]) + (Q_D_e[12] - Q_D_e[12])))))) + (((((Q_D_e[13] - Q_D_e[13]) + (Q_D_e[14] - Q_D_e[14])) + ((Q_D_e[15] - Q_D_e[15]) + ((Q_D_e[16] - Q_D_e[16]) + (Q_D_e[17] - Q_D_e[17])))) + (((Q_D_e[18] - Q_D_e[18]) + ((Q_D_e[19] - Q_D_e[19]) + (Q_D_e[20] - Q_D_e[20]))) + ((Q_D_e[21] - Q_D_e[21]) + ((Q_D_e[22] - Q_D_e[22]) + (Q_D_e[23] - Q_D_e[23]))))) + ((((Q_D_e[24] - Q_D_e[24]) + ((Q_D_e[25] - Q_D_e[25]) + (Q_D_e[26] - Q_D_e[26]))) + ((Q_D_phi[0] - Q_D_phi[0]) + ((Q_D_phi[1] - Q_D_phi[1]) + (Q_D_phi[2] - Q_D_phi[2])))) + (((Q_D_phi[3] - Q_D_phi[3]) + ((Q_D_phi[4] - Q_D_phi[4]) + (Q_D_phi[5] - Q_D_phi[5]))) + ((Q_D_phi[6] - Q_D_phi[6]) + ((Q_D_phi[7] - Q_D_phi[7]) + (Q_D_phi[8] - Q_D_phi[8])))))));
+    }
+    if (finite != finite)
+        status |= RIGIDSYM_C_NONFINITE_RESULT;
+    if (singular) {
+        status |= RIGIDSYM_C_SINGULAR;
+        Q[0] = NAN;
+        Q[1] = NAN;
+        Q[2] = NAN;
+        Q[3] = NAN;
+        Q[4] = NAN;
+        Q[5] = NAN;
+        Q[6] = NAN;
+        Q[7] = NAN;
+        Q[8] = NAN;
+        Q_D_e[0] = NAN;
+        Q_D_e[1] = NAN;
+        Q_D_e[2] = NAN;
+        Q_D_e[3] = NAN;
+        Q_D_e[4] = NAN;
+        Q_D_e[5] = NAN;
+        Q_D_e[6] = NAN;
+        Q_D_e[7] = NAN;
+        Q_D_e[8] = NAN;
+        Q_D_e[9] = NAN;
+        Q_D_e[10] = NAN;
+        Q_D_e[11] = NAN;
+        Q_D_e[12] = NAN;
+        Q_D_e[13] = NAN;
+        Q_D_e[14] = NAN;
+        Q_D_e[15] = NAN;
+        Q_D_e[16] = NAN;
+        Q_D_e[17] = NAN;
+        Q_D_e[18] = NAN;
+        Q_D_e[19] = NAN;
+        Q_D_e[20] = NAN;
+        Q_D_e[21] = NAN;
+        Q_D_e[22] = NAN;
+        Q_D_e[23] = NAN;
+        Q_D_e[24] = NAN;
+        Q_D_e[25] = NAN;
+        Q_D_e[26] = NAN;
+        Q_D_phi[0] = NAN;
+        Q_D_phi[1] = NAN;
+        Q_D_phi[2] = NAN;
+        Q_D_phi[3] = NAN;
+        Q_D_phi[4] = NAN;
+        Q_D_phi[5] = NAN;
+        Q_D_phi[6] = NAN;
+        Q_D_phi[7] = NAN;
+        Q_D_phi[8] = NAN;
+    }
+    return status;
+}
+#endif
+
 RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_with_jacobians(
     const double e[3],
     double phi,
     double Q[9],    double Q_D_e[27],    double Q_D_phi[9])
 {
-    uint64_t odd = 0;
     int status = 0, singular = 0;
     double finite = 0.0;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    {   /* the range test of every input component, as one loop (it vectorises) */
-        const double in_[4] = {
-            e[0], e[1], e[2], phi
-        };
-        int j_;
-        for (j_ = 0; j_ < 4; ++j_)
-            RIGIDSYM_C_ODD_D(odd, in_[j_]);
+    uint64_t odd = 0;
+#if RIGIDSYM_C_SSE2
+    {   /* the range test of every input component, 2 per SSE2 register */
+        __m128i mx_ = _mm_setzero_si128(), mn_ = _mm_set1_epi16(0x7fff);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadh_pd(_mm_load_sd(e), e + 1)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&e[2], *&phi)), &mx_, &mn_);
+        if (RIGIDSYM_C_Q_ODD_D(mx_, mn_))
+            return rigidsym_c_rotation_from_natural_invariants_with_jacobians_odd(e, phi, Q, Q_D_e, Q_D_phi);
     }
-    if (odd >> 63) {
-        const double *args[2];
-        const int sizes[2] = {3, 1};
-        int j;
-        args[0] = e;
-        args[1] = &phi;
-        status = RIGIDSYM_C_EXTREME_INPUT;
-        for (j = 0; j < 2; ++j)
-            if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
-                status = RIGIDSYM_C_NONFINITE_INPUT;
-#if RIGIDSYM_C_WIDE
-        if (status == RIGIDSYM_C_EXTREME_INPUT)
-            return rigidsym_c_rotation_from_natural_invariants_with_jacobians_wide(e, phi, Q, Q_D_e, Q_D_phi);
-#endif
+#elif RIGIDSYM_C_VECTOR
+    {   /* the range test of every input component, 2 per vector register */
+        rigidsym_c_vd oddv_ = {0, 0};
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(e));
+        {
+            const rigidsym_c_vd v_ = {rigidsym_c_bits_d(&e[2]), rigidsym_c_bits_d(&phi)};
+            oddv_ |= rigidsym_c_odd_vd(v_);
+        }
+        odd = oddv_[0] | oddv_[1];
     }
 #else
-    (void)odd;
+    {   /* the range test of every input component, one at a time (an argument's
+         * components by a loop: compact code where there are no 16-byte vectors) */
+        int j_;
+        for (j_ = 0; j_ < 3; ++j_)
+            RIGIDSYM_C_ODD_D(odd, e[j_]);
+        RIGIDSYM_C_ODD_D(odd, phi);
+        (void)j_;
+    }
+#endif
+    if (odd >> 63)
+        return rigidsym_c_rotation_from_natural_invariants_with_jacobians_odd(e, phi, Q, Q_D_e, Q_D_phi);
 #endif
     const double e_0 = e[0];
     const double e_1 = e[1];
@@ -560,13 +917,16 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_with_jacobians(
     }
     /* no division or root, and every output bounded by 2^206 for inputs of
      * ordinary magnitude (|x| < 2^101): only an extreme or non-finite input can make an
-     * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN
-     * otherwise; the guards of rigidsym_c_impl.h keep the compiler from folding it) */
+     * output non-finite, so only then (rigidsym_c_rotation_from_natural_invariants_with_jacobians_odd) are the outputs tested */
 #if defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    finite += ((((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + ((Q[3] - Q[3]) + (Q[4] - Q[4])))) + (((Q[5] - Q[5]) + ((Q[6] - Q[6]) + (Q[7] - Q[7]))) + ((Q[8] - Q[8]) + ((Q_D_e[0] - Q_D_e[0]) + (Q_D_e[1] - Q_D_e[1]))))) + ((((Q_D_e[2] - Q_D_e[2]) + (Q_D_e[3] - Q_D_e[3])) + ((Q_D_e[4] - Q_D_e[4]) + ((Q_D_e[5] - Q_D_e[5]) + (Q_D_e[6] - Q_D_e[6])))) + (((Q_D_e[7] - Q_D_e[7]) + ((Q_D_e[8] - Q_D_e[8]) + (Q_D_e[9] - Q_D_e[9]))) + ((Q_D_e[10] - Q_D_e[10]) + ((Q_D_e[11] - Q_D_e[11]) + (Q_D_e[12] - Q_D_e[12])))))) + (((((Q_D_e[13] - Q_D_e[13]) + (Q_D_e[14] - Q_D_e[14])) + ((Q_D_e[15] - Q_D_e[15]) + ((Q_D_e[16] - Q_D_e[16]) + (Q_D_e[17] - Q_D_e[17])))) + (((Q_D_e[18] - Q_D_e[18]) + ((Q_D_e[19] - Q_D_e[19]) + (Q_D_e[20] - Q_D_e[20]))) + ((Q_D_e[21] - Q_D_e[21]) + ((Q_D_e[22] - Q_D_e[22]) + (Q_D_e[23] - Q_D_e[23]))))) + ((((Q_D_e[24] - Q_D_e[24]) + ((Q_D_e[25] - Q_D_e[25]) + (Q_D_e[26] - Q_D_e[26]))) + ((Q_D_phi[0] - Q_D_phi[0]) + ((Q_D_phi[1] - Q_D_phi[1]) + (Q_D_phi[2] - Q_D_phi[2])))) + (((Q_D_phi[3] - Q_D_phi[3]) + ((Q_D_phi[4] - Q_D_phi[4]) + (Q_D_phi[5] - Q_D_phi[5]))) + ((Q_D_phi[6] - Q_D_phi[6]) + ((Q_D_phi[7] - Q_D_phi[7]) + (Q_D_phi[8] - Q_D_phi[8])))))));
-#else
-    if (status)
-        finite += ((((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + ((Q[3] - Q[3]) + (Q[4] - Q[4])))) + (((Q[5] - Q[5]) + ((Q[6] - Q[6]) + (Q[7] - Q[7]))) + ((Q[8] - Q[8]) + ((Q_D_e[0] - Q_D_e[0]) + (Q_D_e[1] - Q_D_e[1]))))) + ((((Q_D_e[2] - Q_D_e[2]) + (Q_D_e[3] - Q_D_e[3])) + ((Q_D_e[4] - Q_D_e[4]) + ((Q_D_e[5] - Q_D_e[5]) + (Q_D_e[6] - Q_D_e[6])))) + (((Q_D_e[7] - Q_D_e[7]) + ((Q_D_e[8] - Q_D_e[8]) + (Q_D_e[9] - Q_D_e[9]))) + ((Q_D_e[10] - Q_D_e[10]) + ((Q_D_e[11] - Q_D_e[11]) + (Q_D_e[12] - Q_D_e[12])))))) + (((((Q_D_e[13] - Q_D_e[13]) + (Q_D_e[14] - Q_D_e[14])) + ((Q_D_e[15] - Q_D_e[15]) + ((Q_D_e[16] - Q_D_e[16]) + (Q_D_e[17] - Q_D_e[17])))) + (((Q_D_e[18] - Q_D_e[18]) + ((Q_D_e[19] - Q_D_e[19]) + (Q_D_e[20] - Q_D_e[20]))) + ((Q_D_e[21] - Q_D_e[21]) + ((Q_D_e[22] - Q_D_e[22]) + (Q_D_e[23] - Q_D_e[23]))))) + ((((Q_D_e[24] - Q_D_e[24]) + ((Q_D_e[25] - Q_D_e[25]) + (Q_D_e[26] - Q_D_e[26]))) + ((Q_D_phi[0] - Q_D_phi[0]) + ((Q_D_phi[1] - Q_D_phi[1]) + (Q_D_phi[2] - Q_D_phi[2])))) + (((Q_D_phi[3] - Q_D_phi[3]) + ((Q_D_phi[4] - Q_D_phi[4]) + (Q_D_phi[5] - Q_D_phi[5]))) + ((Q_D_phi[6] - Q_D_phi[6]) + ((Q_D_phi[7] - Q_D_phi[7]) + (Q_D_phi[8] - Q_D_phi[8])))))));
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const double s_ = (((((Q[0] + Q[1]) + (Q[2] + (Q[3] + Q[4]))) + ((Q[5] + (Q[6] + Q[7])) + (Q[8] + (Q_D_e[0] + Q_D_e[1])))) + (((Q_D_e[2] + Q_D_e[3]) + (Q_D_e[4] + (Q_D_e[5] + Q_D_e[6]))) + ((Q_D_e[7] + (Q_D_e[8] + Q_D_e[9])) + (Q_D_e[10] + (Q_D_e[11] + Q_D_e[12]))))) + ((((Q_D_e[13] + Q_D_e[14]) + (Q_D_e[15] + (Q_D_e[16] + Q_D_e[17]))) + ((Q_D_e[18] + (Q_D_e[19] + Q_D_e[20])) + (Q_D_e[21] + (Q_D_e[22] + Q_D_e[23])))) + (((Q_D_e[24] + (Q_D_e[25] + Q_D_e[26])) + (Q_D_phi[0] + (Q_D_phi[1] + Q_D_phi[2]))) + ((Q_D_phi[3] + (Q_D_phi[4] + Q_D_phi[5])) + (Q_D_phi[6] + (Q_D_phi[7] + Q_D_phi[8]))))));
+        if (!(s_ - s_ == 0.0))
+            finite += ((((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + ((Q[3] - Q[3]) + (Q[4] - Q[4])))) + (((Q[5] - Q[5]) + ((Q[6] - Q[6]) + (Q[7] - Q[7]))) + ((Q[8] - Q[8]) + ((Q_D_e[0] - Q_D_e[0]) + (Q_D_e[1] - Q_D_e[1]))))) + ((((Q_D_e[2] - Q_D_e[2]) + (Q_D_e[3] - Q_D_e[3])) + ((Q_D_e[4] - Q_D_e[4]) + ((Q_D_e[5] - Q_D_e[5]) + (Q_D_e[6] - Q_D_e[6])))) + (((Q_D_e[7] - Q_D_e[7]) + ((Q_D_e[8] - Q_D_e[8]) + (Q_D_e[9] - Q_D_e[9]))) + ((Q_D_e[10] - Q_D_e[10]) + ((Q_D_e[11] - Q_D_e[11]) + (Q_D_e[12] - Q_D_e[12])))))) + (((((Q_D_e[13] - Q_D_e[13]) + (Q_D_e[14] - Q_D_e[14])) + ((Q_D_e[15] - Q_D_e[15]) + ((Q_D_e[16] - Q_D_e[16]) + (Q_D_e[17] - Q_D_e[17])))) + (((Q_D_e[18] - Q_D_e[18]) + ((Q_D_e[19] - Q_D_e[19]) + (Q_D_e[20] - Q_D_e[20]))) + ((Q_D_e[21] - Q_D_e[21]) + ((Q_D_e[22] - Q_D_e[22]) + (Q_D_e[23] - Q_D_e[23]))))) + ((((Q_D_e[24] - Q_D_e[24]) + ((Q_D_e[25] - Q_D_e[25]) + (Q_D_e[26] - Q_D_e[26]))) + ((Q_D_phi[0] - Q_D_phi[0]) + ((Q_D_phi[1] - Q_D_phi[1]) + (Q_D_phi[2] - Q_D_phi[2])))) + (((Q_D_phi[3] - Q_D_phi[3]) + ((Q_D_phi[4] - Q_D_phi[4]) + (Q_D_phi[5] - Q_D_phi[5]))) + ((Q_D_phi[6] - Q_D_phi[6]) + ((Q_D_phi[7] - Q_D_phi[7]) + (Q_D_phi[8] - Q_D_phi[8])))))));
+    }
 #endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -648,36 +1008,209 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_with_jacobians_ba
 }
 
 
+
+#if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
+/* rigidsym_c_rotation_from_natural_invariants_with_jacobians_f32 where the range test found an odd input (extreme or not finite): the
+ * input bits of the status, the rescue where there is one, else the ordinary evaluation
+ * with its outputs' test. Cold and out of line, reached by a tail call, so that the fast
+ * path of rigidsym_c_rotation_from_natural_invariants_with_jacobians_f32 saves no register and makes no call. */
+static RIGIDSYM_C_COLD int rigidsym_c_rotation_from_natural_invariants_with_jacobians_f32_odd(
+    const float e[3],
+    float phi,
+    float Q[9],
+    float Q_D_e[27],
+    float Q_D_phi[9])
+{
+    const float *args[2];
+    const int sizes[2] = {3, 1};
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0, odd_ = 0;
+    float finite = 0.0f;
+    args[0] = e;
+    args[1] = &phi;
+    for (j = 0; j < 2; ++j)
+        odd_ |= rigidsym_c_extreme_f(args[j], sizes[j]);
+    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
+        status = 0;
+    for (j = 0; j < 2; ++j)
+        if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
+            status = RIGIDSYM_C_NONFINITE_INPUT;
+    const float e_0 = e[0];
+    const float e_1 = e[1];
+    const float e_2 = e[2];
+    {
+        const float x0 = (e_0*e_0);
+        const float x1 = 1.0f - x0;
+        const float x2 = (0.5f)*phi;
+        const float x3 = sinf(x2);
+        const float x4 = (x3*x3);
+        const float x5 = 2.0f*x4;
+        const float x6 = 1.0f - x5;
+        const float x7 = e_1*x5;
+        const float x8 = e_0*x7;
+        const float x9 = cosf(x2);
+        const float x10 = 2.0f*x3*x9;
+        const float x11 = e_2*x10;
+        const float x12 = e_0*x5;
+        const float x13 = e_2*x12;
+        const float x14 = e_1*x10;
+        const float x15 = (e_1*e_1);
+        const float x16 = 1.0f - x15;
+        const float x17 = e_0*x10;
+        const float x18 = (e_2*e_2);
+        const float x19 = 1.0f - x18;
+        const float x20 = 4.0f*x4;
+        const float x21 = -x10;
+        const float x22 = e_2*x5;
+        const float x23 = e_0*x14;
+        const float x24 = e_2*x6;
+        const float x25 = e_1*x6;
+        const float x26 = e_0*x11;
+        const float x27 = e_0*x6;
+        Q[0] = x0 + x1*x6;
+        Q[1] = -x11 + x8;
+        Q[2] = x13 + x14;
+        Q[3] = x11 + x8;
+        Q[4] = x15 + x16*x6;
+        Q[5] = 2.0f*e_1*e_2*x4 - x17;
+        Q[6] = x13 - x14;
+        Q[7] = e_2*x7 + x17;
+        Q[8] = x18 + x19*x6;
+        Q_D_e[0] = e_0*x20;
+        Q_D_e[1] = 0.0f;
+        Q_D_e[2] = 0.0f;
+        Q_D_e[3] = x7;
+        Q_D_e[4] = x12;
+        Q_D_e[5] = x21;
+        Q_D_e[6] = x22;
+        Q_D_e[7] = x10;
+        Q_D_e[8] = x12;
+        Q_D_e[9] = x7;
+        Q_D_e[10] = x12;
+        Q_D_e[11] = x10;
+        Q_D_e[12] = 0.0f;
+        Q_D_e[13] = e_1*x20;
+        Q_D_e[14] = 0.0f;
+        Q_D_e[15] = x21;
+        Q_D_e[16] = x22;
+        Q_D_e[17] = x7;
+        Q_D_e[18] = x22;
+        Q_D_e[19] = x21;
+        Q_D_e[20] = x12;
+        Q_D_e[21] = x10;
+        Q_D_e[22] = x22;
+        Q_D_e[23] = x7;
+        Q_D_e[24] = 0.0f;
+        Q_D_e[25] = 0.0f;
+        Q_D_e[26] = e_2*x20;
+        Q_D_phi[0] = -x1*x10;
+        Q_D_phi[1] = x23 - x24;
+        Q_D_phi[2] = x25 + x26;
+        Q_D_phi[3] = x23 + x24;
+        Q_D_phi[4] = -x10*x16;
+        Q_D_phi[5] = 2.0f*e_1*e_2*x3*x9 - x27;
+        Q_D_phi[6] = -x25 + x26;
+        Q_D_phi[7] = e_1*x11 + x27;
+        Q_D_phi[8] = -x10*x19;
+    }
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const float s_ = (((((Q[0] + Q[1]) + (Q[2] + (Q[3] + Q[4]))) + ((Q[5] + (Q[6] + Q[7])) + (Q[8] + (Q_D_e[0] + Q_D_e[1])))) + (((Q_D_e[2] + Q_D_e[3]) + (Q_D_e[4] + (Q_D_e[5] + Q_D_e[6]))) + ((Q_D_e[7] + (Q_D_e[8] + Q_D_e[9])) + (Q_D_e[10] + (Q_D_e[11] + Q_D_e[12]))))) + ((((Q_D_e[13] + Q_D_e[14]) + (Q_D_e[15] + (Q_D_e[16] + Q_D_e[17]))) + ((Q_D_e[18] + (Q_D_e[19] + Q_D_e[20])) + (Q_D_e[21] + (Q_D_e[22] + Q_D_e[23])))) + (((Q_D_e[24] + (Q_D_e[25] + Q_D_e[26])) + (Q_D_phi[0] + (Q_D_phi[1] + Q_D_phi[2]))) + ((Q_D_phi[3] + (Q_D_phi[4] + Q_D_phi[5])) + (Q_D_phi[6] + (Q_D_phi[7] + Q_D_phi[8]))))));
+        if (!(s_ - s_ == 0.0f))
+            finite += ((((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + ((Q[3] - Q[3]) + (Q[4] - Q[4])))) + (((Q[5] - Q[5]) + ((Q[6] - Q[6]) + (Q[7] - Q[7]))) + ((Q[8] - Q[8]) + ((Q_D_e[0] - Q_D_e[0]) + (Q_D_e[1] - Q_D_e[1]))))) + ((((Q_D_e[2] - Q_D_e[2]) + (Q_D_e[3] - Q_D_e[3])) + ((Q_D_e[4] - Q_D_e[4]) + ((Q_D_e[5] - Q_D_e[5]) + (Q_D_e[6] - Q_D_e[6])))) + (((Q_D_e[7] - Q_D_e[7]) + ((Q_D_e[8] - Q_D_e[8]) + (Q_D_e[9] - Q_D_e[9]))) + ((Q_D_e[10] - Q_D_e[10]) + ((Q_D_e[11] - Q_D_e[11]) + (Q_D_e[12] - Q_D_e[12])))))) + (((((Q_D_e[13] - Q_D_e[13]) + (Q_D_e[14] - Q_D_e[14])) + ((Q_D_e[15] - Q_D_e[15]) + ((Q_D_e[16] - Q_D_e[16]) + (Q_D_e[17] - Q_D_e[17])))) + (((Q_D_e[18] - Q_D_e[18]) + ((Q_D_e[19] - Q_D_e[19]) + (Q_D_e[20] - Q_D_e[20]))) + ((Q_D_e[21] - Q_D_e[21]) + ((Q_D_e[22] - Q_D_e[22]) + (Q_D_e[23] - Q_D_e[23]))))) + ((((Q_D_e[24] - Q_D_e[24]) + ((Q_D_e[25] - Q_D_e[25]) + (Q_D_e[26] - Q_D_e[26]))) + ((Q_D_phi[0] - Q_D_phi[0]) + ((Q_D_phi[1] - Q_D_phi[1]) + (Q_D_phi[2] - Q_D_phi[2])))) + (((Q_D_phi[3] - Q_D_phi[3]) + ((Q_D_phi[4] - Q_D_phi[4]) + (Q_D_phi[5] - Q_D_phi[5]))) + ((Q_D_phi[6] - Q_D_phi[6]) + ((Q_D_phi[7] - Q_D_phi[7]) + (Q_D_phi[8] - Q_D_phi[8])))))));
+    }
+    if (finite != finite)
+        status |= RIGIDSYM_C_NONFINITE_RESULT;
+    if (singular) {
+        status |= RIGIDSYM_C_SINGULAR;
+        Q[0] = NAN;
+        Q[1] = NAN;
+        Q[2] = NAN;
+        Q[3] = NAN;
+        Q[4] = NAN;
+        Q[5] = NAN;
+        Q[6] = NAN;
+        Q[7] = NAN;
+        Q[8] = NAN;
+        Q_D_e[0] = NAN;
+        Q_D_e[1] = NAN;
+        Q_D_e[2] = NAN;
+        Q_D_e[3] = NAN;
+        Q_D_e[4] = NAN;
+        Q_D_e[5] = NAN;
+        Q_D_e[6] = NAN;
+        Q_D_e[7] = NAN;
+        Q_D_e[8] = NAN;
+        Q_D_e[9] = NAN;
+        Q_D_e[10] = NAN;
+        Q_D_e[11] = NAN;
+        Q_D_e[12] = NAN;
+        Q_D_e[13] = NAN;
+        Q_D_e[14] = NAN;
+        Q_D_e[15] = NAN;
+        Q_D_e[16] = NAN;
+        Q_D_e[17] = NAN;
+        Q_D_e[18] = NAN;
+        Q_D_e[19] = NAN;
+        Q_D_e[20] = NAN;
+        Q_D_e[21] = NAN;
+        Q_D_e[22] = NAN;
+        Q_D_e[23] = NAN;
+        Q_D_e[24] = NAN;
+        Q_D_e[25] = NAN;
+        Q_D_e[26] = NAN;
+        Q_D_phi[0] = NAN;
+        Q_D_phi[1] = NAN;
+        Q_D_phi[2] = NAN;
+        Q_D_phi[3] = NAN;
+        Q_D_phi[4] = NAN;
+        Q_D_phi[5] = NAN;
+        Q_D_phi[6] = NAN;
+        Q_D_phi[7] = NAN;
+        Q_D_phi[8] = NAN;
+    }
+    return status;
+}
+#endif
+
 RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_with_jacobians_f32(
     const float e[3],
     float phi,
     float Q[9],    float Q_D_e[27],    float Q_D_phi[9])
 {
-    uint32_t odd = 0;
     int status = 0, singular = 0;
     float finite = 0.0f;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    {   /* the range test of every input component, as one loop (it vectorises) */
-        const float in_[4] = {
-            e[0], e[1], e[2], phi
-        };
-        int j_;
-        for (j_ = 0; j_ < 4; ++j_)
-            RIGIDSYM_C_ODD_F(odd, in_[j_]);
+    uint32_t odd = 0;
+#if RIGIDSYM_C_SSE2
+    {   /* the range test of every input component, 4 per SSE2 register */
+        __m128i mx_ = _mm_setzero_si128(), mn_ = _mm_set1_epi16(0x7fff);
+        rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&e[0], *&e[1], *&e[2], *&phi)), &mx_, &mn_);
+        if (RIGIDSYM_C_Q_ODD_F(mx_, mn_))
+            return rigidsym_c_rotation_from_natural_invariants_with_jacobians_f32_odd(e, phi, Q, Q_D_e, Q_D_phi);
     }
-    if (odd >> 31) {
-        const float *args[2];
-        const int sizes[2] = {3, 1};
-        int j;
-        args[0] = e;
-        args[1] = &phi;
-        status = RIGIDSYM_C_EXTREME_INPUT;
-        for (j = 0; j < 2; ++j)
-            if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
-                status = RIGIDSYM_C_NONFINITE_INPUT;
+#elif RIGIDSYM_C_VECTOR
+    {   /* the range test of every input component, 4 per vector register */
+        rigidsym_c_vf oddv_ = {0, 0, 0, 0};
+        {
+            const rigidsym_c_vf v_ = {rigidsym_c_bits_f(&e[0]), rigidsym_c_bits_f(&e[1]), rigidsym_c_bits_f(&e[2]), rigidsym_c_bits_f(&phi)};
+            oddv_ |= rigidsym_c_odd_vf(v_);
+        }
+        odd = oddv_[0] | oddv_[1] | oddv_[2] | oddv_[3];
     }
 #else
-    (void)odd;
+    {   /* the range test of every input component, one at a time (an argument's
+         * components by a loop: compact code where there are no 16-byte vectors) */
+        int j_;
+        for (j_ = 0; j_ < 3; ++j_)
+            RIGIDSYM_C_ODD_F(odd, e[j_]);
+        RIGIDSYM_C_ODD_F(odd, phi);
+        (void)j_;
+    }
+#endif
+    if (odd >> 31)
+        return rigidsym_c_rotation_from_natural_invariants_with_jacobians_f32_odd(e, phi, Q, Q_D_e, Q_D_phi);
 #endif
     const float e_0 = e[0];
     const float e_1 = e[1];
@@ -759,13 +1292,16 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_with_jacobians_f3
     }
     /* no division or root, and every output bounded by 2^66 for inputs of
      * ordinary magnitude (|x| < 2^31): only an extreme or non-finite input can make an
-     * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN
-     * otherwise; the guards of rigidsym_c_impl.h keep the compiler from folding it) */
+     * output non-finite, so only then (rigidsym_c_rotation_from_natural_invariants_with_jacobians_f32_odd) are the outputs tested */
 #if defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    finite += ((((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + ((Q[3] - Q[3]) + (Q[4] - Q[4])))) + (((Q[5] - Q[5]) + ((Q[6] - Q[6]) + (Q[7] - Q[7]))) + ((Q[8] - Q[8]) + ((Q_D_e[0] - Q_D_e[0]) + (Q_D_e[1] - Q_D_e[1]))))) + ((((Q_D_e[2] - Q_D_e[2]) + (Q_D_e[3] - Q_D_e[3])) + ((Q_D_e[4] - Q_D_e[4]) + ((Q_D_e[5] - Q_D_e[5]) + (Q_D_e[6] - Q_D_e[6])))) + (((Q_D_e[7] - Q_D_e[7]) + ((Q_D_e[8] - Q_D_e[8]) + (Q_D_e[9] - Q_D_e[9]))) + ((Q_D_e[10] - Q_D_e[10]) + ((Q_D_e[11] - Q_D_e[11]) + (Q_D_e[12] - Q_D_e[12])))))) + (((((Q_D_e[13] - Q_D_e[13]) + (Q_D_e[14] - Q_D_e[14])) + ((Q_D_e[15] - Q_D_e[15]) + ((Q_D_e[16] - Q_D_e[16]) + (Q_D_e[17] - Q_D_e[17])))) + (((Q_D_e[18] - Q_D_e[18]) + ((Q_D_e[19] - Q_D_e[19]) + (Q_D_e[20] - Q_D_e[20]))) + ((Q_D_e[21] - Q_D_e[21]) + ((Q_D_e[22] - Q_D_e[22]) + (Q_D_e[23] - Q_D_e[23]))))) + ((((Q_D_e[24] - Q_D_e[24]) + ((Q_D_e[25] - Q_D_e[25]) + (Q_D_e[26] - Q_D_e[26]))) + ((Q_D_phi[0] - Q_D_phi[0]) + ((Q_D_phi[1] - Q_D_phi[1]) + (Q_D_phi[2] - Q_D_phi[2])))) + (((Q_D_phi[3] - Q_D_phi[3]) + ((Q_D_phi[4] - Q_D_phi[4]) + (Q_D_phi[5] - Q_D_phi[5]))) + ((Q_D_phi[6] - Q_D_phi[6]) + ((Q_D_phi[7] - Q_D_phi[7]) + (Q_D_phi[8] - Q_D_phi[8])))))));
-#else
-    if (status)
-        finite += ((((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + ((Q[3] - Q[3]) + (Q[4] - Q[4])))) + (((Q[5] - Q[5]) + ((Q[6] - Q[6]) + (Q[7] - Q[7]))) + ((Q[8] - Q[8]) + ((Q_D_e[0] - Q_D_e[0]) + (Q_D_e[1] - Q_D_e[1]))))) + ((((Q_D_e[2] - Q_D_e[2]) + (Q_D_e[3] - Q_D_e[3])) + ((Q_D_e[4] - Q_D_e[4]) + ((Q_D_e[5] - Q_D_e[5]) + (Q_D_e[6] - Q_D_e[6])))) + (((Q_D_e[7] - Q_D_e[7]) + ((Q_D_e[8] - Q_D_e[8]) + (Q_D_e[9] - Q_D_e[9]))) + ((Q_D_e[10] - Q_D_e[10]) + ((Q_D_e[11] - Q_D_e[11]) + (Q_D_e[12] - Q_D_e[12])))))) + (((((Q_D_e[13] - Q_D_e[13]) + (Q_D_e[14] - Q_D_e[14])) + ((Q_D_e[15] - Q_D_e[15]) + ((Q_D_e[16] - Q_D_e[16]) + (Q_D_e[17] - Q_D_e[17])))) + (((Q_D_e[18] - Q_D_e[18]) + ((Q_D_e[19] - Q_D_e[19]) + (Q_D_e[20] - Q_D_e[20]))) + ((Q_D_e[21] - Q_D_e[21]) + ((Q_D_e[22] - Q_D_e[22]) + (Q_D_e[23] - Q_D_e[23]))))) + ((((Q_D_e[24] - Q_D_e[24]) + ((Q_D_e[25] - Q_D_e[25]) + (Q_D_e[26] - Q_D_e[26]))) + ((Q_D_phi[0] - Q_D_phi[0]) + ((Q_D_phi[1] - Q_D_phi[1]) + (Q_D_phi[2] - Q_D_phi[2])))) + (((Q_D_phi[3] - Q_D_phi[3]) + ((Q_D_phi[4] - Q_D_phi[4]) + (Q_D_phi[5] - Q_D_phi[5]))) + ((Q_D_phi[6] - Q_D_phi[6]) + ((Q_D_phi[7] - Q_D_phi[7]) + (Q_D_phi[8] - Q_D_phi[8])))))));
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const float s_ = (((((Q[0] + Q[1]) + (Q[2] + (Q[3] + Q[4]))) + ((Q[5] + (Q[6] + Q[7])) + (Q[8] + (Q_D_e[0] + Q_D_e[1])))) + (((Q_D_e[2] + Q_D_e[3]) + (Q_D_e[4] + (Q_D_e[5] + Q_D_e[6]))) + ((Q_D_e[7] + (Q_D_e[8] + Q_D_e[9])) + (Q_D_e[10] + (Q_D_e[11] + Q_D_e[12]))))) + ((((Q_D_e[13] + Q_D_e[14]) + (Q_D_e[15] + (Q_D_e[16] + Q_D_e[17]))) + ((Q_D_e[18] + (Q_D_e[19] + Q_D_e[20])) + (Q_D_e[21] + (Q_D_e[22] + Q_D_e[23])))) + (((Q_D_e[24] + (Q_D_e[25] + Q_D_e[26])) + (Q_D_phi[0] + (Q_D_phi[1] + Q_D_phi[2]))) + ((Q_D_phi[3] + (Q_D_phi[4] + Q_D_phi[5])) + (Q_D_phi[6] + (Q_D_phi[7] + Q_D_phi[8]))))));
+        if (!(s_ - s_ == 0.0f))
+            finite += ((((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + ((Q[3] - Q[3]) + (Q[4] - Q[4])))) + (((Q[5] - Q[5]) + ((Q[6] - Q[6]) + (Q[7] - Q[7]))) + ((Q[8] - Q[8]) + ((Q_D_e[0] - Q_D_e[0]) + (Q_D_e[1] - Q_D_e[1]))))) + ((((Q_D_e[2] - Q_D_e[2]) + (Q_D_e[3] - Q_D_e[3])) + ((Q_D_e[4] - Q_D_e[4]) + ((Q_D_e[5] - Q_D_e[5]) + (Q_D_e[6] - Q_D_e[6])))) + (((Q_D_e[7] - Q_D_e[7]) + ((Q_D_e[8] - Q_D_e[8]) + (Q_D_e[9] - Q_D_e[9]))) + ((Q_D_e[10] - Q_D_e[10]) + ((Q_D_e[11] - Q_D_e[11]) + (Q_D_e[12] - Q_D_e[12])))))) + (((((Q_D_e[13] - Q_D_e[13]) + (Q_D_e[14] - Q_D_e[14])) + ((Q_D_e[15] - Q_D_e[15]) + ((Q_D_e[16] - Q_D_e[16]) + (Q_D_e[17] - Q_D_e[17])))) + (((Q_D_e[18] - Q_D_e[18]) + ((Q_D_e[19] - Q_D_e[19]) + (Q_D_e[20] - Q_D_e[20]))) + ((Q_D_e[21] - Q_D_e[21]) + ((Q_D_e[22] - Q_D_e[22]) + (Q_D_e[23] - Q_D_e[23]))))) + ((((Q_D_e[24] - Q_D_e[24]) + ((Q_D_e[25] - Q_D_e[25]) + (Q_D_e[26] - Q_D_e[26]))) + ((Q_D_phi[0] - Q_D_phi[0]) + ((Q_D_phi[1] - Q_D_phi[1]) + (Q_D_phi[2] - Q_D_phi[2])))) + (((Q_D_phi[3] - Q_D_phi[3]) + ((Q_D_phi[4] - Q_D_phi[4]) + (Q_D_phi[5] - Q_D_phi[5]))) + ((Q_D_phi[6] - Q_D_phi[6]) + ((Q_D_phi[7] - Q_D_phi[7]) + (Q_D_phi[8] - Q_D_phi[8])))))));
+    }
 #endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;

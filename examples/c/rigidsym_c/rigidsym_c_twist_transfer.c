@@ -111,49 +111,140 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_rescue(
 }
 #endif
 
+
+#if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
+/* rigidsym_c_twist_transfer where the range test found an odd input (extreme or not finite): the
+ * input bits of the status, the rescue where there is one, else the ordinary evaluation
+ * with its outputs' test. Cold and out of line, reached by a tail call, so that the fast
+ * path of rigidsym_c_twist_transfer saves no register and makes no call. */
+static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_odd(
+    const double t_A[6],
+    const double a[3],
+    const double p[3],
+    double t_P[6])
+{
+    const double *args[3];
+    const int sizes[3] = {6, 3, 3};
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0, odd_ = 0;
+    double finite = 0.0;
+    args[0] = t_A;
+    args[1] = a;
+    args[2] = p;
+    for (j = 0; j < 3; ++j)
+        odd_ |= rigidsym_c_extreme_d(args[j], sizes[j]);
+    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
+        status = 0;
+    for (j = 0; j < 3; ++j)
+        if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
+            status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_WIDE
+    if (status == RIGIDSYM_C_EXTREME_INPUT)
+        return rigidsym_c_twist_transfer_wide(t_A, a, p, t_P);
+#endif
+#if RIGIDSYM_C_RESCALE_D
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
+        const int r_ = rigidsym_c_twist_transfer_rescue(t_A, a, p, t_P);
+        if (r_ >= 0)
+            return r_;
+    }
+#endif
+    const double t_A_0 = t_A[0];
+    const double t_A_1 = t_A[1];
+    const double t_A_2 = t_A[2];
+    const double t_A_3 = t_A[3];
+    const double t_A_4 = t_A[4];
+    const double t_A_5 = t_A[5];
+    const double a_0 = a[0];
+    const double a_1 = a[1];
+    const double a_2 = a[2];
+    const double p_0 = p[0];
+    const double p_1 = p[1];
+    const double p_2 = p[2];
+    {
+        const double x0 = a_2 - p_2;
+        const double x1 = a_1 - p_1;
+        const double x2 = a_0 - p_0;
+        t_P[0] = t_A_0;
+        t_P[1] = t_A_1;
+        t_P[2] = t_A_2;
+        t_P[3] = -t_A_1*x0 + t_A_2*x1 + t_A_3;
+        t_P[4] = t_A_0*x0 - t_A_2*x2 + t_A_4;
+        t_P[5] = -t_A_0*x1 + t_A_1*x2 + t_A_5;
+    }
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const double s_ = ((t_P[0] + (t_P[1] + t_P[2])) + (t_P[3] + (t_P[4] + t_P[5])));
+        if (!(s_ - s_ == 0.0))
+            finite += (((t_P[0] - t_P[0]) + ((t_P[1] - t_P[1]) + (t_P[2] - t_P[2]))) + ((t_P[3] - t_P[3]) + ((t_P[4] - t_P[4]) + (t_P[5] - t_P[5]))));
+    }
+    if (finite != finite)
+        status |= RIGIDSYM_C_NONFINITE_RESULT;
+    if (singular) {
+        status |= RIGIDSYM_C_SINGULAR;
+        t_P[0] = NAN;
+        t_P[1] = NAN;
+        t_P[2] = NAN;
+        t_P[3] = NAN;
+        t_P[4] = NAN;
+        t_P[5] = NAN;
+    }
+    return status;
+}
+#endif
+
 RIGIDSYM_C_API int rigidsym_c_twist_transfer(
     const double t_A[6],
     const double a[3],
     const double p[3],
     double t_P[6])
 {
-    uint64_t odd = 0;
     int status = 0, singular = 0;
     double finite = 0.0;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    {   /* the range test of every input component, as one loop (it vectorises) */
-        const double in_[12] = {
-            t_A[0], t_A[1], t_A[2], t_A[3], t_A[4], t_A[5], a[0], a[1], a[2], p[0], p[1], p[2]
-        };
-        int j_;
-        for (j_ = 0; j_ < 12; ++j_)
-            RIGIDSYM_C_ODD_D(odd, in_[j_]);
+    uint64_t odd = 0;
+#if RIGIDSYM_C_SSE2
+    {   /* the range test of every input component, 2 per SSE2 register */
+        __m128i mx_ = _mm_setzero_si128(), mn_ = _mm_set1_epi16(0x7fff);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadh_pd(_mm_load_sd(t_A), t_A + 1)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadh_pd(_mm_load_sd(t_A + 2), t_A + 2 + 1)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadh_pd(_mm_load_sd(t_A + 4), t_A + 4 + 1)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadh_pd(_mm_load_sd(a), a + 1)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&a[2], *&p[0])), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadh_pd(_mm_load_sd(p + 1), p + 1 + 1)), &mx_, &mn_);
+        if (RIGIDSYM_C_Q_ODD_D(mx_, mn_))
+            return rigidsym_c_twist_transfer_odd(t_A, a, p, t_P);
     }
-    if (odd >> 63) {
-        const double *args[3];
-        const int sizes[3] = {6, 3, 3};
-        int j;
-        args[0] = t_A;
-        args[1] = a;
-        args[2] = p;
-        status = RIGIDSYM_C_EXTREME_INPUT;
-        for (j = 0; j < 3; ++j)
-            if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
-                status = RIGIDSYM_C_NONFINITE_INPUT;
-#if RIGIDSYM_C_WIDE
-        if (status == RIGIDSYM_C_EXTREME_INPUT)
-            return rigidsym_c_twist_transfer_wide(t_A, a, p, t_P);
-#endif
-#if RIGIDSYM_C_RESCALE_D
-        if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
-            const int r_ = rigidsym_c_twist_transfer_rescue(t_A, a, p, t_P);
-            if (r_ >= 0)
-                return r_;
+#elif RIGIDSYM_C_VECTOR
+    {   /* the range test of every input component, 2 per vector register */
+        rigidsym_c_vd oddv_ = {0, 0};
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(t_A));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(t_A + 2));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(t_A + 4));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(a));
+        {
+            const rigidsym_c_vd v_ = {rigidsym_c_bits_d(&a[2]), rigidsym_c_bits_d(&p[0])};
+            oddv_ |= rigidsym_c_odd_vd(v_);
         }
-#endif
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(p + 1));
+        odd = oddv_[0] | oddv_[1];
     }
 #else
-    (void)odd;
+    {   /* the range test of every input component, one at a time (an argument's
+         * components by a loop: compact code where there are no 16-byte vectors) */
+        int j_;
+        for (j_ = 0; j_ < 6; ++j_)
+            RIGIDSYM_C_ODD_D(odd, t_A[j_]);
+        for (j_ = 0; j_ < 3; ++j_)
+            RIGIDSYM_C_ODD_D(odd, a[j_]);
+        for (j_ = 0; j_ < 3; ++j_)
+            RIGIDSYM_C_ODD_D(odd, p[j_]);
+        (void)j_;
+    }
+#endif
+    if (odd >> 63)
+        return rigidsym_c_twist_transfer_odd(t_A, a, p, t_P);
 #endif
     const double t_A_0 = t_A[0];
     const double t_A_1 = t_A[1];
@@ -180,13 +271,16 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer(
     }
     /* no division or root, and every output bounded by 2^205 for inputs of
      * ordinary magnitude (|x| < 2^101): only an extreme or non-finite input can make an
-     * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN
-     * otherwise; the guards of rigidsym_c_impl.h keep the compiler from folding it) */
+     * output non-finite, so only then (rigidsym_c_twist_transfer_odd) are the outputs tested */
 #if defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    finite += (((t_P[0] - t_P[0]) + ((t_P[1] - t_P[1]) + (t_P[2] - t_P[2]))) + ((t_P[3] - t_P[3]) + ((t_P[4] - t_P[4]) + (t_P[5] - t_P[5]))));
-#else
-    if (status)
-        finite += (((t_P[0] - t_P[0]) + ((t_P[1] - t_P[1]) + (t_P[2] - t_P[2]))) + ((t_P[3] - t_P[3]) + ((t_P[4] - t_P[4]) + (t_P[5] - t_P[5]))));
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const double s_ = ((t_P[0] + (t_P[1] + t_P[2])) + (t_P[3] + (t_P[4] + t_P[5])));
+        if (!(s_ - s_ == 0.0))
+            finite += (((t_P[0] - t_P[0]) + ((t_P[1] - t_P[1]) + (t_P[2] - t_P[2]))) + ((t_P[3] - t_P[3]) + ((t_P[4] - t_P[4]) + (t_P[5] - t_P[5]))));
+    }
 #endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -276,45 +370,133 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_f32_rescue(
 }
 #endif
 
+
+#if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
+/* rigidsym_c_twist_transfer_f32 where the range test found an odd input (extreme or not finite): the
+ * input bits of the status, the rescue where there is one, else the ordinary evaluation
+ * with its outputs' test. Cold and out of line, reached by a tail call, so that the fast
+ * path of rigidsym_c_twist_transfer_f32 saves no register and makes no call. */
+static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_f32_odd(
+    const float t_A[6],
+    const float a[3],
+    const float p[3],
+    float t_P[6])
+{
+    const float *args[3];
+    const int sizes[3] = {6, 3, 3};
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0, odd_ = 0;
+    float finite = 0.0f;
+    args[0] = t_A;
+    args[1] = a;
+    args[2] = p;
+    for (j = 0; j < 3; ++j)
+        odd_ |= rigidsym_c_extreme_f(args[j], sizes[j]);
+    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
+        status = 0;
+    for (j = 0; j < 3; ++j)
+        if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
+            status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_RESCALE_F
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
+        const int r_ = rigidsym_c_twist_transfer_f32_rescue(t_A, a, p, t_P);
+        if (r_ >= 0)
+            return r_;
+    }
+#endif
+    const float t_A_0 = t_A[0];
+    const float t_A_1 = t_A[1];
+    const float t_A_2 = t_A[2];
+    const float t_A_3 = t_A[3];
+    const float t_A_4 = t_A[4];
+    const float t_A_5 = t_A[5];
+    const float a_0 = a[0];
+    const float a_1 = a[1];
+    const float a_2 = a[2];
+    const float p_0 = p[0];
+    const float p_1 = p[1];
+    const float p_2 = p[2];
+    {
+        const float x0 = a_2 - p_2;
+        const float x1 = a_1 - p_1;
+        const float x2 = a_0 - p_0;
+        t_P[0] = t_A_0;
+        t_P[1] = t_A_1;
+        t_P[2] = t_A_2;
+        t_P[3] = -t_A_1*x0 + t_A_2*x1 + t_A_3;
+        t_P[4] = t_A_0*x0 - t_A_2*x2 + t_A_4;
+        t_P[5] = -t_A_0*x1 + t_A_1*x2 + t_A_5;
+    }
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const float s_ = ((t_P[0] + (t_P[1] + t_P[2])) + (t_P[3] + (t_P[4] + t_P[5])));
+        if (!(s_ - s_ == 0.0f))
+            finite += (((t_P[0] - t_P[0]) + ((t_P[1] - t_P[1]) + (t_P[2] - t_P[2]))) + ((t_P[3] - t_P[3]) + ((t_P[4] - t_P[4]) + (t_P[5] - t_P[5]))));
+    }
+    if (finite != finite)
+        status |= RIGIDSYM_C_NONFINITE_RESULT;
+    if (singular) {
+        status |= RIGIDSYM_C_SINGULAR;
+        t_P[0] = NAN;
+        t_P[1] = NAN;
+        t_P[2] = NAN;
+        t_P[3] = NAN;
+        t_P[4] = NAN;
+        t_P[5] = NAN;
+    }
+    return status;
+}
+#endif
+
 RIGIDSYM_C_API int rigidsym_c_twist_transfer_f32(
     const float t_A[6],
     const float a[3],
     const float p[3],
     float t_P[6])
 {
-    uint32_t odd = 0;
     int status = 0, singular = 0;
     float finite = 0.0f;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    {   /* the range test of every input component, as one loop (it vectorises) */
-        const float in_[12] = {
-            t_A[0], t_A[1], t_A[2], t_A[3], t_A[4], t_A[5], a[0], a[1], a[2], p[0], p[1], p[2]
-        };
-        int j_;
-        for (j_ = 0; j_ < 12; ++j_)
-            RIGIDSYM_C_ODD_F(odd, in_[j_]);
+    uint32_t odd = 0;
+#if RIGIDSYM_C_SSE2
+    {   /* the range test of every input component, 4 per SSE2 register */
+        __m128i mx_ = _mm_setzero_si128(), mn_ = _mm_set1_epi16(0x7fff);
+        rigidsym_c_q_f(_mm_castps_si128(_mm_loadu_ps(t_A)), &mx_, &mn_);
+        rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&t_A[4], *&t_A[5], *&a[0], *&a[1])), &mx_, &mn_);
+        rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&a[2], *&p[0], *&p[1], *&p[2])), &mx_, &mn_);
+        if (RIGIDSYM_C_Q_ODD_F(mx_, mn_))
+            return rigidsym_c_twist_transfer_f32_odd(t_A, a, p, t_P);
     }
-    if (odd >> 31) {
-        const float *args[3];
-        const int sizes[3] = {6, 3, 3};
-        int j;
-        args[0] = t_A;
-        args[1] = a;
-        args[2] = p;
-        status = RIGIDSYM_C_EXTREME_INPUT;
-        for (j = 0; j < 3; ++j)
-            if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
-                status = RIGIDSYM_C_NONFINITE_INPUT;
-#if RIGIDSYM_C_RESCALE_F
-        if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
-            const int r_ = rigidsym_c_twist_transfer_f32_rescue(t_A, a, p, t_P);
-            if (r_ >= 0)
-                return r_;
+#elif RIGIDSYM_C_VECTOR
+    {   /* the range test of every input component, 4 per vector register */
+        rigidsym_c_vf oddv_ = {0, 0, 0, 0};
+        oddv_ |= rigidsym_c_odd_vf(rigidsym_c_load_vf(t_A));
+        {
+            const rigidsym_c_vf v_ = {rigidsym_c_bits_f(&t_A[4]), rigidsym_c_bits_f(&t_A[5]), rigidsym_c_bits_f(&a[0]), rigidsym_c_bits_f(&a[1])};
+            oddv_ |= rigidsym_c_odd_vf(v_);
         }
-#endif
+        {
+            const rigidsym_c_vf v_ = {rigidsym_c_bits_f(&a[2]), rigidsym_c_bits_f(&p[0]), rigidsym_c_bits_f(&p[1]), rigidsym_c_bits_f(&p[2])};
+            oddv_ |= rigidsym_c_odd_vf(v_);
+        }
+        odd = oddv_[0] | oddv_[1] | oddv_[2] | oddv_[3];
     }
 #else
-    (void)odd;
+    {   /* the range test of every input component, one at a time (an argument's
+         * components by a loop: compact code where there are no 16-byte vectors) */
+        int j_;
+        for (j_ = 0; j_ < 6; ++j_)
+            RIGIDSYM_C_ODD_F(odd, t_A[j_]);
+        for (j_ = 0; j_ < 3; ++j_)
+            RIGIDSYM_C_ODD_F(odd, a[j_]);
+        for (j_ = 0; j_ < 3; ++j_)
+            RIGIDSYM_C_ODD_F(odd, p[j_]);
+        (void)j_;
+    }
+#endif
+    if (odd >> 31)
+        return rigidsym_c_twist_transfer_f32_odd(t_A, a, p, t_P);
 #endif
     const float t_A_0 = t_A[0];
     const float t_A_1 = t_A[1];
@@ -341,13 +523,16 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_f32(
     }
     /* no division or root, and every output bounded by 2^65 for inputs of
      * ordinary magnitude (|x| < 2^31): only an extreme or non-finite input can make an
-     * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN
-     * otherwise; the guards of rigidsym_c_impl.h keep the compiler from folding it) */
+     * output non-finite, so only then (rigidsym_c_twist_transfer_f32_odd) are the outputs tested */
 #if defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    finite += (((t_P[0] - t_P[0]) + ((t_P[1] - t_P[1]) + (t_P[2] - t_P[2]))) + ((t_P[3] - t_P[3]) + ((t_P[4] - t_P[4]) + (t_P[5] - t_P[5]))));
-#else
-    if (status)
-        finite += (((t_P[0] - t_P[0]) + ((t_P[1] - t_P[1]) + (t_P[2] - t_P[2]))) + ((t_P[3] - t_P[3]) + ((t_P[4] - t_P[4]) + (t_P[5] - t_P[5]))));
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const float s_ = ((t_P[0] + (t_P[1] + t_P[2])) + (t_P[3] + (t_P[4] + t_P[5])));
+        if (!(s_ - s_ == 0.0f))
+            finite += (((t_P[0] - t_P[0]) + ((t_P[1] - t_P[1]) + (t_P[2] - t_P[2]))) + ((t_P[3] - t_P[3]) + ((t_P[4] - t_P[4]) + (t_P[5] - t_P[5]))));
+    }
 #endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -658,49 +843,293 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_with_jacobians_rescue(
 }
 #endif
 
+
+#if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
+/* rigidsym_c_twist_transfer_with_jacobians where the range test found an odd input (extreme or not finite): the
+ * input bits of the status, the rescue where there is one, else the ordinary evaluation
+ * with its outputs' test. Cold and out of line, reached by a tail call, so that the fast
+ * path of rigidsym_c_twist_transfer_with_jacobians saves no register and makes no call. */
+static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_with_jacobians_odd(
+    const double t_A[6],
+    const double a[3],
+    const double p[3],
+    double t_P[6],
+    double t_P_D_t_A[36],
+    double t_P_D_a[18],
+    double t_P_D_p[18])
+{
+    const double *args[3];
+    const int sizes[3] = {6, 3, 3};
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0, odd_ = 0;
+    double finite = 0.0;
+    args[0] = t_A;
+    args[1] = a;
+    args[2] = p;
+    for (j = 0; j < 3; ++j)
+        odd_ |= rigidsym_c_extreme_d(args[j], sizes[j]);
+    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
+        status = 0;
+    for (j = 0; j < 3; ++j)
+        if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
+            status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_WIDE
+    if (status == RIGIDSYM_C_EXTREME_INPUT)
+        return rigidsym_c_twist_transfer_with_jacobians_wide(t_A, a, p, t_P, t_P_D_t_A, t_P_D_a, t_P_D_p);
+#endif
+#if RIGIDSYM_C_RESCALE_D
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
+        const int r_ = rigidsym_c_twist_transfer_with_jacobians_rescue(t_A, a, p, t_P, t_P_D_t_A, t_P_D_a, t_P_D_p);
+        if (r_ >= 0)
+            return r_;
+    }
+#endif
+    const double t_A_0 = t_A[0];
+    const double t_A_1 = t_A[1];
+    const double t_A_2 = t_A[2];
+    const double t_A_3 = t_A[3];
+    const double t_A_4 = t_A[4];
+    const double t_A_5 = t_A[5];
+    const double a_0 = a[0];
+    const double a_1 = a[1];
+    const double a_2 = a[2];
+    const double p_0 = p[0];
+    const double p_1 = p[1];
+    const double p_2 = p[2];
+    {
+        const double x0 = a_2 - p_2;
+        const double x1 = -x0;
+        const double x2 = a_1 - p_1;
+        const double x3 = a_0 - p_0;
+        const double x4 = -x3;
+        const double x5 = -x2;
+        const double x6 = -t_A_1;
+        const double x7 = -t_A_2;
+        const double x8 = -t_A_0;
+        t_P[0] = t_A_0;
+        t_P[1] = t_A_1;
+        t_P[2] = t_A_2;
+        t_P[3] = t_A_1*x1 + t_A_2*x2 + t_A_3;
+        t_P[4] = t_A_0*x0 + t_A_2*x4 + t_A_4;
+        t_P[5] = t_A_0*x5 + t_A_1*x3 + t_A_5;
+        t_P_D_t_A[0] = 1.0;
+        t_P_D_t_A[1] = 0.0;
+        t_P_D_t_A[2] = 0.0;
+        t_P_D_t_A[3] = 0.0;
+        t_P_D_t_A[4] = 0.0;
+        t_P_D_t_A[5] = 0.0;
+        t_P_D_t_A[6] = 0.0;
+        t_P_D_t_A[7] = 1.0;
+        t_P_D_t_A[8] = 0.0;
+        t_P_D_t_A[9] = 0.0;
+        t_P_D_t_A[10] = 0.0;
+        t_P_D_t_A[11] = 0.0;
+        t_P_D_t_A[12] = 0.0;
+        t_P_D_t_A[13] = 0.0;
+        t_P_D_t_A[14] = 1.0;
+        t_P_D_t_A[15] = 0.0;
+        t_P_D_t_A[16] = 0.0;
+        t_P_D_t_A[17] = 0.0;
+        t_P_D_t_A[18] = 0.0;
+        t_P_D_t_A[19] = x1;
+        t_P_D_t_A[20] = x2;
+        t_P_D_t_A[21] = 1.0;
+        t_P_D_t_A[22] = 0.0;
+        t_P_D_t_A[23] = 0.0;
+        t_P_D_t_A[24] = x0;
+        t_P_D_t_A[25] = 0.0;
+        t_P_D_t_A[26] = x4;
+        t_P_D_t_A[27] = 0.0;
+        t_P_D_t_A[28] = 1.0;
+        t_P_D_t_A[29] = 0.0;
+        t_P_D_t_A[30] = x5;
+        t_P_D_t_A[31] = x3;
+        t_P_D_t_A[32] = 0.0;
+        t_P_D_t_A[33] = 0.0;
+        t_P_D_t_A[34] = 0.0;
+        t_P_D_t_A[35] = 1.0;
+        t_P_D_a[0] = 0.0;
+        t_P_D_a[1] = 0.0;
+        t_P_D_a[2] = 0.0;
+        t_P_D_a[3] = 0.0;
+        t_P_D_a[4] = 0.0;
+        t_P_D_a[5] = 0.0;
+        t_P_D_a[6] = 0.0;
+        t_P_D_a[7] = 0.0;
+        t_P_D_a[8] = 0.0;
+        t_P_D_a[9] = 0.0;
+        t_P_D_a[10] = t_A_2;
+        t_P_D_a[11] = x6;
+        t_P_D_a[12] = x7;
+        t_P_D_a[13] = 0.0;
+        t_P_D_a[14] = t_A_0;
+        t_P_D_a[15] = t_A_1;
+        t_P_D_a[16] = x8;
+        t_P_D_a[17] = 0.0;
+        t_P_D_p[0] = 0.0;
+        t_P_D_p[1] = 0.0;
+        t_P_D_p[2] = 0.0;
+        t_P_D_p[3] = 0.0;
+        t_P_D_p[4] = 0.0;
+        t_P_D_p[5] = 0.0;
+        t_P_D_p[6] = 0.0;
+        t_P_D_p[7] = 0.0;
+        t_P_D_p[8] = 0.0;
+        t_P_D_p[9] = 0.0;
+        t_P_D_p[10] = x7;
+        t_P_D_p[11] = t_A_1;
+        t_P_D_p[12] = t_A_2;
+        t_P_D_p[13] = 0.0;
+        t_P_D_p[14] = x8;
+        t_P_D_p[15] = x6;
+        t_P_D_p[16] = t_A_0;
+        t_P_D_p[17] = 0.0;
+    }
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const double s_ = ((((((t_P[0] + t_P[1]) + (t_P[2] + t_P[3])) + ((t_P[4] + t_P[5]) + (t_P_D_t_A[0] + (t_P_D_t_A[1] + t_P_D_t_A[2])))) + (((t_P_D_t_A[3] + t_P_D_t_A[4]) + (t_P_D_t_A[5] + (t_P_D_t_A[6] + t_P_D_t_A[7]))) + ((t_P_D_t_A[8] + t_P_D_t_A[9]) + (t_P_D_t_A[10] + (t_P_D_t_A[11] + t_P_D_t_A[12]))))) + ((((t_P_D_t_A[13] + t_P_D_t_A[14]) + (t_P_D_t_A[15] + (t_P_D_t_A[16] + t_P_D_t_A[17]))) + ((t_P_D_t_A[18] + t_P_D_t_A[19]) + (t_P_D_t_A[20] + (t_P_D_t_A[21] + t_P_D_t_A[22])))) + (((t_P_D_t_A[23] + t_P_D_t_A[24]) + (t_P_D_t_A[25] + (t_P_D_t_A[26] + t_P_D_t_A[27]))) + ((t_P_D_t_A[28] + t_P_D_t_A[29]) + (t_P_D_t_A[30] + (t_P_D_t_A[31] + t_P_D_t_A[32])))))) + (((((t_P_D_t_A[33] + t_P_D_t_A[34]) + (t_P_D_t_A[35] + t_P_D_a[0])) + ((t_P_D_a[1] + t_P_D_a[2]) + (t_P_D_a[3] + (t_P_D_a[4] + t_P_D_a[5])))) + (((t_P_D_a[6] + t_P_D_a[7]) + (t_P_D_a[8] + (t_P_D_a[9] + t_P_D_a[10]))) + ((t_P_D_a[11] + t_P_D_a[12]) + (t_P_D_a[13] + (t_P_D_a[14] + t_P_D_a[15]))))) + ((((t_P_D_a[16] + t_P_D_a[17]) + (t_P_D_p[0] + (t_P_D_p[1] + t_P_D_p[2]))) + ((t_P_D_p[3] + t_P_D_p[4]) + (t_P_D_p[5] + (t_P_D_p[6] + t_P_D_p[7])))) + (((t_P_D_p[8] + t_P_D_p[9]) + (t_P_D_p[10] + (t_P_D_p[11] + t_P_D_p[12]))) + ((t_P_D_p[13] + t_P_D_p[14]) + (t_P_D_p[15] + (t_P_D_p[16] + t_P_D_p[17])))))));
+        if (!(s_ - s_ == 0.0))
+            finite += (((((((t_P[0] - t_P[0]) + (t_P[1] - t_P[1])) + ((t_P[2] - t_P[2]) + (t_P[3] - t_P[3]))) + (((t_P[4] - t_P[4]) + (t_P[5] - t_P[5])) + ((t_P_D_t_A[0] - t_P_D_t_A[0]) + ((t_P_D_t_A[1] - t_P_D_t_A[1]) + (t_P_D_t_A[2] - t_P_D_t_A[2]))))) + ((((t_P_D_t_A[3] - t_P_D_t_A[3]) + (t_P_D_t_A[4] - t_P_D_t_A[4])) + ((t_P_D_t_A[5] - t_P_D_t_A[5]) + ((t_P_D_t_A[6] - t_P_D_t_A[6]) + (t_P_D_t_A[7] - t_P_D_t_A[7])))) + (((t_P_D_t_A[8] - t_P_D_t_A[8]) + (t_P_D_t_A[9] - t_P_D_t_A[9])) + ((t_P_D_t_A[10] - t_P_D_t_A[10]) + ((t_P_D_t_A[11] - t_P_D_t_A[11]) + (t_P_D_t_A[12] - t_P_D_t_A[12])))))) + (((((t_P_D_t_A[13] - t_P_D_t_A[13]) + (t_P_D_t_A[14] - t_P_D_t_A[14])) + ((t_P_D_t_A[15] - t_P_D_t_A[15]) + ((t_P_D_t_A[16] - t_P_D_t_A[16]) + (t_P_D_t_A[17] - t_P_D_t_A[17])))) + (((t_P_D_t_A[18] - t_P_D_t_A[18]) + (t_P_D_t_A[19] - t_P_D_t_A[19])) + ((t_P_D_t_A[20] - t_P_D_t_A[20]) + ((t_P_D_t_A[21] - t_P_D_t_A[21]) + (t_P_D_t_A[22] - t_P_D_t_A[22]))))) + ((((t_P_D_t_A[23] - t_P_D_t_A[23]) + (t_P_D_t_A[24] - t_P_D_t_A[24])) + ((t_P_D_t_A[25] - t_P_D_t_A[25]) + ((t_P_D_t_A[26] - t_P_D_t_A[26]) + (t_P_D_t_A[27] - t_P_D_t_A[27])))) + (((t_P_D_t_A[28] - t_P_D_t_A[28]) + (t_P_D_t_A[29] - t_P_D_t_A[29])) + ((t_P_D_t_A[30] - t_P_D_t_A[30]) + ((t_P_D_t_A[31] - t_P_D_t_A[31]) + (t_P_D_t_A[32] - t_P_D_t_A[32]))))))) + ((((((t_P_D_t_A[33] - t_P_D_t_A[33]) + (t_P_D_t_A[34] - t_P_D_t_A[34])) + ((t_P_D_t_A[35] - t_P_D_t_A[35]) + (t_P_D_a[0] - t_P_D_a[0]))) + (((t_P_D_a[1] - t_P_D_a[1]) + (t_P_D_a[2] - t_P_D_a[2])) + ((t_P_D_a[3] - t_P_D_a[3]) + ((t_P_D_a[4] - t_P_D_a[4]) + (t_P_D_a[5] - t_P_D_a[5]))))) + ((((t_P_D_a[6] - t_P_D_a[6]) + (t_P_D_a[7] - t_P_D_a[7])) + ((t_P_D_a[8] - t_P_D_a[8]) + ((t_P_D_a[9] - t_P_D_a[9]) + (t_P_D_a[10] - t_P_D_a[10])))) + (((t_P_D_a[11] - t_P_D_a[11]) + (t_P_D_a[12] - t_P_D_a[12])) + ((t_P_D_a[13] - t_P_D_a[13]) + ((t_P_D_a[14] - t_P_D_a[14]) + (t_P_D_a[15] - t_P_D_a[15])))))) + (((((t_P_D_a[16] - t_P_D_a[16]) + (t_P_D_a[17] - t_P_D_a[17])) + ((t_P_D_p[0] - t_P_D_p[0]) + ((t_P_D_p[1] - t_P_D_p[1]) + (t_P_D_p[2] - t_P_D_p[2])))) + (((t_P_D_p[3] - t_P_D_p[3]) + (t_P_D_p[4] - t_P_D_p[4])) + ((t_P_D_p[5] - t_P_D_p[5]) + ((t_P_D_p[6] - t_P_D_p[6]) + (t_P_D_p[7] - t_P_D_p[7]))))) + ((((t_P_D_p[8] - t_P_D_p[8]) + (t_P_D_p[9] - t_P_D_p[9])) + ((t_P_D_p[10] - t_P_D_p[10]) + ((t_P_D_p[11] - t_P_D_p[11]) + (t_P_D_p[12] - t_P_D_p[12])))) + (((t_P_D_p[13] - t_P_D_p[13]) + (t_P_D_p[14] - t_P_D_p[14])) + ((t_P_D_p[15] - t_P_D_p[15]) + ((t_P_D_p[16] - t_P_D_p[16]) + (t_P_D_p[17] - t_P_D_p[17]))))))));
+    }
+    if (finite != finite)
+        status |= RIGIDSYM_C_NONFINITE_RESULT;
+    if (singular) {
+        status |= RIGIDSYM_C_SINGULAR;
+        t_P[0] = NAN;
+        t_P[1] = NAN;
+        t_P[2] = NAN;
+        t_P[3] = NAN;
+        t_P[4] = NAN;
+        t_P[5] = NAN;
+        t_P_D_t_A[0] = NAN;
+        t_P_D_t_A[1] = NAN;
+        t_P_D_t_A[2] = NAN;
+        t_P_D_t_A[3] = NAN;
+        t_P_D_t_A[4] = NAN;
+        t_P_D_t_A[5] = NAN;
+        t_P_D_t_A[6] = NAN;
+        t_P_D_t_A[7] = NAN;
+        t_P_D_t_A[8] = NAN;
+        t_P_D_t_A[9] = NAN;
+        t_P_D_t_A[10] = NAN;
+        t_P_D_t_A[11] = NAN;
+        t_P_D_t_A[12] = NAN;
+        t_P_D_t_A[13] = NAN;
+        t_P_D_t_A[14] = NAN;
+        t_P_D_t_A[15] = NAN;
+        t_P_D_t_A[16] = NAN;
+        t_P_D_t_A[17] = NAN;
+        t_P_D_t_A[18] = NAN;
+        t_P_D_t_A[19] = NAN;
+        t_P_D_t_A[20] = NAN;
+        t_P_D_t_A[21] = NAN;
+        t_P_D_t_A[22] = NAN;
+        t_P_D_t_A[23] = NAN;
+        t_P_D_t_A[24] = NAN;
+        t_P_D_t_A[25] = NAN;
+        t_P_D_t_A[26] = NAN;
+        t_P_D_t_A[27] = NAN;
+        t_P_D_t_A[28] = NAN;
+        t_P_D_t_A[29] = NAN;
+        t_P_D_t_A[30] = NAN;
+        t_P_D_t_A[31] = NAN;
+        t_P_D_t_A[32] = NAN;
+        t_P_D_t_A[33] = NAN;
+        t_P_D_t_A[34] = NAN;
+        t_P_D_t_A[35] = NAN;
+        t_P_D_a[0] = NAN;
+        t_P_D_a[1] = NAN;
+        t_P_D_a[2] = NAN;
+        t_P_D_a[3] = NAN;
+        t_P_D_a[4] = NAN;
+        t_P_D_a[5] = NAN;
+        t_P_D_a[6] = NAN;
+        t_P_D_a[7] = NAN;
+        t_P_D_a[8] = NAN;
+        t_P_D_a[9] = NAN;
+        t_P_D_a[10] = NAN;
+        t_P_D_a[11] = NAN;
+        t_P_D_a[12] = NAN;
+        t_P_D_a[13] = NAN;
+        t_P_D_a[14] = NAN;
+        t_P_D_a[15] = NAN;
+        t_P_D_a[16] = NAN;
+        t_P_D_a[17] = NAN;
+        t_P_D_p[0] = NAN;
+        t_P_D_p[1] = NAN;
+        t_P_D_p[2] = NAN;
+        t_P_D_p[3] = NAN;
+        t_P_D_p[4] = NAN;
+        t_P_D_p[5] = NAN;
+        t_P_D_p[6] = NAN;
+        t_P_D_p[7] = NAN;
+        t_P_D_p[8] = NAN;
+        t_P_D_p[9] = NAN;
+        t_P_D_p[10] = NAN;
+        t_P_D_p[11] = NAN;
+        t_P_D_p[12] = NAN;
+        t_P_D_p[13] = NAN;
+        t_P_D_p[14] = NAN;
+        t_P_D_p[15] = NAN;
+        t_P_D_p[16] = NAN;
+        t_P_D_p[17] = NAN;
+    }
+    return status;
+}
+#endif
+
 RIGIDSYM_C_API int rigidsym_c_twist_transfer_with_jacobians(
     const double t_A[6],
     const double a[3],
     const double p[3],
     double t_P[6],    double t_P_D_t_A[36],    double t_P_D_a[18],    double t_P_D_p[18])
 {
-    uint64_t odd = 0;
     int status = 0, singular = 0;
     double finite = 0.0;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    {   /* the range test of every input component, as one loop (it vectorises) */
-        const double in_[12] = {
-            t_A[0], t_A[1], t_A[2], t_A[3], t_A[4], t_A[5], a[0], a[1], a[2], p[0], p[1], p[2]
-        };
-        int j_;
-        for (j_ = 0; j_ < 12; ++j_)
-            RIGIDSYM_C_ODD_D(odd, in_[j_]);
+    uint64_t odd = 0;
+#if RIGIDSYM_C_SSE2
+    {   /* the range test of every input component, 2 per SSE2 register */
+        __m128i mx_ = _mm_setzero_si128(), mn_ = _mm_set1_epi16(0x7fff);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadh_pd(_mm_load_sd(t_A), t_A + 1)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadh_pd(_mm_load_sd(t_A + 2), t_A + 2 + 1)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadh_pd(_mm_load_sd(t_A + 4), t_A + 4 + 1)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadh_pd(_mm_load_sd(a), a + 1)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&a[2], *&p[0])), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadh_pd(_mm_load_sd(p + 1), p + 1 + 1)), &mx_, &mn_);
+        if (RIGIDSYM_C_Q_ODD_D(mx_, mn_))
+            return rigidsym_c_twist_transfer_with_jacobians_odd(t_A, a, p, t_P, t_P_D_t_A, t_P_D_a, t_P_D_p);
     }
-    if (odd >> 63) {
-        const double *args[3];
-        const int sizes[3] = {6, 3, 3};
-        int j;
-        args[0] = t_A;
-        args[1] = a;
-        args[2] = p;
-        status = RIGIDSYM_C_EXTREME_INPUT;
-        for (j = 0; j < 3; ++j)
-            if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
-                status = RIGIDSYM_C_NONFINITE_INPUT;
-#if RIGIDSYM_C_WIDE
-        if (status == RIGIDSYM_C_EXTREME_INPUT)
-            return rigidsym_c_twist_transfer_with_jacobians_wide(t_A, a, p, t_P, t_P_D_t_A, t_P_D_a, t_P_D_p);
-#endif
-#if RIGIDSYM_C_RESCALE_D
-        if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
-            const int r_ = rigidsym_c_twist_transfer_with_jacobians_rescue(t_A, a, p, t_P, t_P_D_t_A, t_P_D_a, t_P_D_p);
-            if (r_ >= 0)
-                return r_;
+#elif RIGIDSYM_C_VECTOR
+    {   /* the range test of every input component, 2 per vector register */
+        rigidsym_c_vd oddv_ = {0, 0};
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(t_A));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(t_A + 2));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(t_A + 4));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(a));
+        {
+            const rigidsym_c_vd v_ = {rigidsym_c_bits_d(&a[2]), rigidsym_c_bits_d(&p[0])};
+            oddv_ |= rigidsym_c_odd_vd(v_);
         }
-#endif
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(p + 1));
+        odd = oddv_[0] | oddv_[1];
     }
 #else
-    (void)odd;
+    {   /* the range test of every input component, one at a time (an argument's
+         * components by a loop: compact code where there are no 16-byte vectors) */
+        int j_;
+        for (j_ = 0; j_ < 6; ++j_)
+            RIGIDSYM_C_ODD_D(odd, t_A[j_]);
+        for (j_ = 0; j_ < 3; ++j_)
+            RIGIDSYM_C_ODD_D(odd, a[j_]);
+        for (j_ = 0; j_ < 3; ++j_)
+            RIGIDSYM_C_ODD_D(odd, p[j_]);
+        (void)j_;
+    }
+#endif
+    if (odd >> 63)
+        return rigidsym_c_twist_transfer_with_jacobians_odd(t_A, a, p, t_P, t_P_D_t_A, t_P_D_a, t_P_D_p);
 #endif
     const double t_A_0 = t_A[0];
     const double t_A_1 = t_A[1];
@@ -805,13 +1234,16 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_with_jacobians(
     }
     /* no division or root, and every output bounded by 2^205 for inputs of
      * ordinary magnitude (|x| < 2^101): only an extreme or non-finite input can make an
-     * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN
-     * otherwise; the guards of rigidsym_c_impl.h keep the compiler from folding it) */
+     * output non-finite, so only then (rigidsym_c_twist_transfer_with_jacobians_odd) are the outputs tested */
 #if defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    finite += (((((((t_P[0] - t_P[0]) + (t_P[1] - t_P[1])) + ((t_P[2] - t_P[2]) + (t_P[3] - t_P[3]))) + (((t_P[4] - t_P[4]) + (t_P[5] - t_P[5])) + ((t_P_D_t_A[0] - t_P_D_t_A[0]) + ((t_P_D_t_A[1] - t_P_D_t_A[1]) + (t_P_D_t_A[2] - t_P_D_t_A[2]))))) + ((((t_P_D_t_A[3] - t_P_D_t_A[3]) + (t_P_D_t_A[4] - t_P_D_t_A[4])) + ((t_P_D_t_A[5] - t_P_D_t_A[5]) + ((t_P_D_t_A[6] - t_P_D_t_A[6]) + (t_P_D_t_A[7] - t_P_D_t_A[7])))) + (((t_P_D_t_A[8] - t_P_D_t_A[8]) + (t_P_D_t_A[9] - t_P_D_t_A[9])) + ((t_P_D_t_A[10] - t_P_D_t_A[10]) + ((t_P_D_t_A[11] - t_P_D_t_A[11]) + (t_P_D_t_A[12] - t_P_D_t_A[12])))))) + (((((t_P_D_t_A[13] - t_P_D_t_A[13]) + (t_P_D_t_A[14] - t_P_D_t_A[14])) + ((t_P_D_t_A[15] - t_P_D_t_A[15]) + ((t_P_D_t_A[16] - t_P_D_t_A[16]) + (t_P_D_t_A[17] - t_P_D_t_A[17])))) + (((t_P_D_t_A[18] - t_P_D_t_A[18]) + (t_P_D_t_A[19] - t_P_D_t_A[19])) + ((t_P_D_t_A[20] - t_P_D_t_A[20]) + ((t_P_D_t_A[21] - t_P_D_t_A[21]) + (t_P_D_t_A[22] - t_P_D_t_A[22]))))) + ((((t_P_D_t_A[23] - t_P_D_t_A[23]) + (t_P_D_t_A[24] - t_P_D_t_A[24])) + ((t_P_D_t_A[25] - t_P_D_t_A[25]) + ((t_P_D_t_A[26] - t_P_D_t_A[26]) + (t_P_D_t_A[27] - t_P_D_t_A[27])))) + (((t_P_D_t_A[28] - t_P_D_t_A[28]) + (t_P_D_t_A[29] - t_P_D_t_A[29])) + ((t_P_D_t_A[30] - t_P_D_t_A[30]) + ((t_P_D_t_A[31] - t_P_D_t_A[31]) + (t_P_D_t_A[32] - t_P_D_t_A[32]))))))) + ((((((t_P_D_t_A[33] - t_P_D_t_A[33]) + (t_P_D_t_A[34] - t_P_D_t_A[34])) + ((t_P_D_t_A[35] - t_P_D_t_A[35]) + (t_P_D_a[0] - t_P_D_a[0]))) + (((t_P_D_a[1] - t_P_D_a[1]) + (t_P_D_a[2] - t_P_D_a[2])) + ((t_P_D_a[3] - t_P_D_a[3]) + ((t_P_D_a[4] - t_P_D_a[4]) + (t_P_D_a[5] - t_P_D_a[5]))))) + ((((t_P_D_a[6] - t_P_D_a[6]) + (t_P_D_a[7] - t_P_D_a[7])) + ((t_P_D_a[8] - t_P_D_a[8]) + ((t_P_D_a[9] - t_P_D_a[9]) + (t_P_D_a[10] - t_P_D_a[10])))) + (((t_P_D_a[11] - t_P_D_a[11]) + (t_P_D_a[12] - t_P_D_a[12])) + ((t_P_D_a[13] - t_P_D_a[13]) + ((t_P_D_a[14] - t_P_D_a[14]) + (t_P_D_a[15] - t_P_D_a[15])))))) + (((((t_P_D_a[16] - t_P_D_a[16]) + (t_P_D_a[17] - t_P_D_a[17])) + ((t_P_D_p[0] - t_P_D_p[0]) + ((t_P_D_p[1] - t_P_D_p[1]) + (t_P_D_p[2] - t_P_D_p[2])))) + (((t_P_D_p[3] - t_P_D_p[3]) + (t_P_D_p[4] - t_P_D_p[4])) + ((t_P_D_p[5] - t_P_D_p[5]) + ((t_P_D_p[6] - t_P_D_p[6]) + (t_P_D_p[7] - t_P_D_p[7]))))) + ((((t_P_D_p[8] - t_P_D_p[8]) + (t_P_D_p[9] - t_P_D_p[9])) + ((t_P_D_p[10] - t_P_D_p[10]) + ((t_P_D_p[11] - t_P_D_p[11]) + (t_P_D_p[12] - t_P_D_p[12])))) + (((t_P_D_p[13] - t_P_D_p[13]) + (t_P_D_p[14] - t_P_D_p[14])) + ((t_P_D_p[15] - t_P_D_p[15]) + ((t_P_D_p[16] - t_P_D_p[16]) + (t_P_D_p[17] - t_P_D_p[17]))))))));
-#else
-    if (status)
-        finite += (((((((t_P[0] - t_P[0]) + (t_P[1] - t_P[1])) + ((t_P[2] - t_P[2]) + (t_P[3] - t_P[3]))) + (((t_P[4] - t_P[4]) + (t_P[5] - t_P[5])) + ((t_P_D_t_A[0] - t_P_D_t_A[0]) + ((t_P_D_t_A[1] - t_P_D_t_A[1]) + (t_P_D_t_A[2] - t_P_D_t_A[2]))))) + ((((t_P_D_t_A[3] - t_P_D_t_A[3]) + (t_P_D_t_A[4] - t_P_D_t_A[4])) + ((t_P_D_t_A[5] - t_P_D_t_A[5]) + ((t_P_D_t_A[6] - t_P_D_t_A[6]) + (t_P_D_t_A[7] - t_P_D_t_A[7])))) + (((t_P_D_t_A[8] - t_P_D_t_A[8]) + (t_P_D_t_A[9] - t_P_D_t_A[9])) + ((t_P_D_t_A[10] - t_P_D_t_A[10]) + ((t_P_D_t_A[11] - t_P_D_t_A[11]) + (t_P_D_t_A[12] - t_P_D_t_A[12])))))) + (((((t_P_D_t_A[13] - t_P_D_t_A[13]) + (t_P_D_t_A[14] - t_P_D_t_A[14])) + ((t_P_D_t_A[15] - t_P_D_t_A[15]) + ((t_P_D_t_A[16] - t_P_D_t_A[16]) + (t_P_D_t_A[17] - t_P_D_t_A[17])))) + (((t_P_D_t_A[18] - t_P_D_t_A[18]) + (t_P_D_t_A[19] - t_P_D_t_A[19])) + ((t_P_D_t_A[20] - t_P_D_t_A[20]) + ((t_P_D_t_A[21] - t_P_D_t_A[21]) + (t_P_D_t_A[22] - t_P_D_t_A[22]))))) + ((((t_P_D_t_A[23] - t_P_D_t_A[23]) + (t_P_D_t_A[24] - t_P_D_t_A[24])) + ((t_P_D_t_A[25] - t_P_D_t_A[25]) + ((t_P_D_t_A[26] - t_P_D_t_A[26]) + (t_P_D_t_A[27] - t_P_D_t_A[27])))) + (((t_P_D_t_A[28] - t_P_D_t_A[28]) + (t_P_D_t_A[29] - t_P_D_t_A[29])) + ((t_P_D_t_A[30] - t_P_D_t_A[30]) + ((t_P_D_t_A[31] - t_P_D_t_A[31]) + (t_P_D_t_A[32] - t_P_D_t_A[32]))))))) + ((((((t_P_D_t_A[33] - t_P_D_t_A[33]) + (t_P_D_t_A[34] - t_P_D_t_A[34])) + ((t_P_D_t_A[35] - t_P_D_t_A[35]) + (t_P_D_a[0] - t_P_D_a[0]))) + (((t_P_D_a[1] - t_P_D_a[1]) + (t_P_D_a[2] - t_P_D_a[2])) + ((t_P_D_a[3] - t_P_D_a[3]) + ((t_P_D_a[4] - t_P_D_a[4]) + (t_P_D_a[5] - t_P_D_a[5]))))) + ((((t_P_D_a[6] - t_P_D_a[6]) + (t_P_D_a[7] - t_P_D_a[7])) + ((t_P_D_a[8] - t_P_D_a[8]) + ((t_P_D_a[9] - t_P_D_a[9]) + (t_P_D_a[10] - t_P_D_a[10])))) + (((t_P_D_a[11] - t_P_D_a[11]) + (t_P_D_a[12] - t_P_D_a[12])) + ((t_P_D_a[13] - t_P_D_a[13]) + ((t_P_D_a[14] - t_P_D_a[14]) + (t_P_D_a[15] - t_P_D_a[15])))))) + (((((t_P_D_a[16] - t_P_D_a[16]) + (t_P_D_a[17] - t_P_D_a[17])) + ((t_P_D_p[0] - t_P_D_p[0]) + ((t_P_D_p[1] - t_P_D_p[1]) + (t_P_D_p[2] - t_P_D_p[2])))) + (((t_P_D_p[3] - t_P_D_p[3]) + (t_P_D_p[4] - t_P_D_p[4])) + ((t_P_D_p[5] - t_P_D_p[5]) + ((t_P_D_p[6] - t_P_D_p[6]) + (t_P_D_p[7] - t_P_D_p[7]))))) + ((((t_P_D_p[8] - t_P_D_p[8]) + (t_P_D_p[9] - t_P_D_p[9])) + ((t_P_D_p[10] - t_P_D_p[10]) + ((t_P_D_p[11] - t_P_D_p[11]) + (t_P_D_p[12] - t_P_D_p[12])))) + (((t_P_D_p[13] - t_P_D_p[13]) + (t_P_D_p[14] - t_P_D_p[14])) + ((t_P_D_p[15] - t_P_D_p[15]) + ((t_P_D_p[16] - t_P_D_p[16]) + (t_P_D_p[17] - t_P_D_p[17]))))))));
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const double s_ = ((((((t_P[0] + t_P[1]) + (t_P[2] + t_P[3])) + ((t_P[4] + t_P[5]) + (t_P_D_t_A[0] + (t_P_D_t_A[1] + t_P_D_t_A[2])))) + (((t_P_D_t_A[3] + t_P_D_t_A[4]) + (t_P_D_t_A[5] + (t_P_D_t_A[6] + t_P_D_t_A[7]))) + ((t_P_D_t_A[8] + t_P_D_t_A[9]) + (t_P_D_t_A[10] + (t_P_D_t_A[11] + t_P_D_t_A[12]))))) + ((((t_P_D_t_A[13] + t_P_D_t_A[14]) + (t_P_D_t_A[15] + (t_P_D_t_A[16] + t_P_D_t_A[17]))) + ((t_P_D_t_A[18] + t_P_D_t_A[19]) + (t_P_D_t_A[20] + (t_P_D_t_A[21] + t_P_D_t_A[22])))) + (((t_P_D_t_A[23] + t_P_D_t_A[24]) + (t_P_D_t_A[25] + (t_P_D_t_A[26] + t_P_D_t_A[27]))) + ((t_P_D_t_A[28] + t_P_D_t_A[29]) + (t_P_D_t_A[30] + (t_P_D_t_A[31] + t_P_D_t_A[32])))))) + (((((t_P_D_t_A[33] + t_P_D_t_A[34]) + (t_P_D_t_A[35] + t_P_D_a[0])) + ((t_P_D_a[1] + t_P_D_a[2]) + (t_P_D_a[3] + (t_P_D_a[4] + t_P_D_a[5])))) + (((t_P_D_a[6] + t_P_D_a[7]) + (t_P_D_a[8] + (t_P_D_a[9] + t_P_D_a[10]))) + ((t_P_D_a[11] + t_P_D_a[12]) + (t_P_D_a[13] + (t_P_D_a[14] + t_P_D_a[15]))))) + ((((t_P_D_a[16] + t_P_D_a[17]) + (t_P_D_p[0] + (t_P_D_p[1] + t_P_D_p[2]))) + ((t_P_D_p[3] + t_P_D_p[4]) + (t_P_D_p[5] + (t_P_D_p[6] + t_P_D_p[7])))) + (((t_P_D_p[8] + t_P_D_p[9]) + (t_P_D_p[10] + (t_P_D_p[11] + t_P_D_p[12]))) + ((t_P_D_p[13] + t_P_D_p[14]) + (t_P_D_p[15] + (t_P_D_p[16] + t_P_D_p[17])))))));
+        if (!(s_ - s_ == 0.0))
+            finite += (((((((t_P[0] - t_P[0]) + (t_P[1] - t_P[1])) + ((t_P[2] - t_P[2]) + (t_P[3] - t_P[3]))) + (((t_P[4] - t_P[4]) + (t_P[5] - t_P[5])) + ((t_P_D_t_A[0] - t_P_D_t_A[0]) + ((t_P_D_t_A[1] - t_P_D_t_A[1]) + (t_P_D_t_A[2] - t_P_D_t_A[2]))))) + ((((t_P_D_t_A[3] - t_P_D_t_A[3]) + (t_P_D_t_A[4] - t_P_D_t_A[4])) + ((t_P_D_t_A[5] - t_P_D_t_A[5]) + ((t_P_D_t_A[6] - t_P_D_t_A[6]) + (t_P_D_t_A[7] - t_P_D_t_A[7])))) + (((t_P_D_t_A[8] - t_P_D_t_A[8]) + (t_P_D_t_A[9] - t_P_D_t_A[9])) + ((t_P_D_t_A[10] - t_P_D_t_A[10]) + ((t_P_D_t_A[11] - t_P_D_t_A[11]) + (t_P_D_t_A[12] - t_P_D_t_A[12])))))) + (((((t_P_D_t_A[13] - t_P_D_t_A[13]) + (t_P_D_t_A[14] - t_P_D_t_A[14])) + ((t_P_D_t_A[15] - t_P_D_t_A[15]) + ((t_P_D_t_A[16] - t_P_D_t_A[16]) + (t_P_D_t_A[17] - t_P_D_t_A[17])))) + (((t_P_D_t_A[18] - t_P_D_t_A[18]) + (t_P_D_t_A[19] - t_P_D_t_A[19])) + ((t_P_D_t_A[20] - t_P_D_t_A[20]) + ((t_P_D_t_A[21] - t_P_D_t_A[21]) + (t_P_D_t_A[22] - t_P_D_t_A[22]))))) + ((((t_P_D_t_A[23] - t_P_D_t_A[23]) + (t_P_D_t_A[24] - t_P_D_t_A[24])) + ((t_P_D_t_A[25] - t_P_D_t_A[25]) + ((t_P_D_t_A[26] - t_P_D_t_A[26]) + (t_P_D_t_A[27] - t_P_D_t_A[27])))) + (((t_P_D_t_A[28] - t_P_D_t_A[28]) + (t_P_D_t_A[29] - t_P_D_t_A[29])) + ((t_P_D_t_A[30] - t_P_D_t_A[30]) + ((t_P_D_t_A[31] - t_P_D_t_A[31]) + (t_P_D_t_A[32] - t_P_D_t_A[32]))))))) + ((((((t_P_D_t_A[33] - t_P_D_t_A[33]) + (t_P_D_t_A[34] - t_P_D_t_A[34])) + ((t_P_D_t_A[35] - t_P_D_t_A[35]) + (t_P_D_a[0] - t_P_D_a[0]))) + (((t_P_D_a[1] - t_P_D_a[1]) + (t_P_D_a[2] - t_P_D_a[2])) + ((t_P_D_a[3] - t_P_D_a[3]) + ((t_P_D_a[4] - t_P_D_a[4]) + (t_P_D_a[5] - t_P_D_a[5]))))) + ((((t_P_D_a[6] - t_P_D_a[6]) + (t_P_D_a[7] - t_P_D_a[7])) + ((t_P_D_a[8] - t_P_D_a[8]) + ((t_P_D_a[9] - t_P_D_a[9]) + (t_P_D_a[10] - t_P_D_a[10])))) + (((t_P_D_a[11] - t_P_D_a[11]) + (t_P_D_a[12] - t_P_D_a[12])) + ((t_P_D_a[13] - t_P_D_a[13]) + ((t_P_D_a[14] - t_P_D_a[14]) + (t_P_D_a[15] - t_P_D_a[15])))))) + (((((t_P_D_a[16] - t_P_D_a[16]) + (t_P_D_a[17] - t_P_D_a[17])) + ((t_P_D_p[0] - t_P_D_p[0]) + ((t_P_D_p[1] - t_P_D_p[1]) + (t_P_D_p[2] - t_P_D_p[2])))) + (((t_P_D_p[3] - t_P_D_p[3]) + (t_P_D_p[4] - t_P_D_p[4])) + ((t_P_D_p[5] - t_P_D_p[5]) + ((t_P_D_p[6] - t_P_D_p[6]) + (t_P_D_p[7] - t_P_D_p[7]))))) + ((((t_P_D_p[8] - t_P_D_p[8]) + (t_P_D_p[9] - t_P_D_p[9])) + ((t_P_D_p[10] - t_P_D_p[10]) + ((t_P_D_p[11] - t_P_D_p[11]) + (t_P_D_p[12] - t_P_D_p[12])))) + (((t_P_D_p[13] - t_P_D_p[13]) + (t_P_D_p[14] - t_P_D_p[14])) + ((t_P_D_p[15] - t_P_D_p[15]) + ((t_P_D_p[16] - t_P_D_p[16]) + (t_P_D_p[17] - t_P_D_p[17]))))))));
+    }
 #endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -994,45 +1426,286 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_with_jacobians_f32_rescue(
 }
 #endif
 
+
+#if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
+/* rigidsym_c_twist_transfer_with_jacobians_f32 where the range test found an odd input (extreme or not finite): the
+ * input bits of the status, the rescue where there is one, else the ordinary evaluation
+ * with its outputs' test. Cold and out of line, reached by a tail call, so that the fast
+ * path of rigidsym_c_twist_transfer_with_jacobians_f32 saves no register and makes no call. */
+static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_with_jacobians_f32_odd(
+    const float t_A[6],
+    const float a[3],
+    const float p[3],
+    float t_P[6],
+    float t_P_D_t_A[36],
+    float t_P_D_a[18],
+    float t_P_D_p[18])
+{
+    const float *args[3];
+    const int sizes[3] = {6, 3, 3};
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0, odd_ = 0;
+    float finite = 0.0f;
+    args[0] = t_A;
+    args[1] = a;
+    args[2] = p;
+    for (j = 0; j < 3; ++j)
+        odd_ |= rigidsym_c_extreme_f(args[j], sizes[j]);
+    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
+        status = 0;
+    for (j = 0; j < 3; ++j)
+        if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
+            status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_RESCALE_F
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
+        const int r_ = rigidsym_c_twist_transfer_with_jacobians_f32_rescue(t_A, a, p, t_P, t_P_D_t_A, t_P_D_a, t_P_D_p);
+        if (r_ >= 0)
+            return r_;
+    }
+#endif
+    const float t_A_0 = t_A[0];
+    const float t_A_1 = t_A[1];
+    const float t_A_2 = t_A[2];
+    const float t_A_3 = t_A[3];
+    const float t_A_4 = t_A[4];
+    const float t_A_5 = t_A[5];
+    const float a_0 = a[0];
+    const float a_1 = a[1];
+    const float a_2 = a[2];
+    const float p_0 = p[0];
+    const float p_1 = p[1];
+    const float p_2 = p[2];
+    {
+        const float x0 = a_2 - p_2;
+        const float x1 = -x0;
+        const float x2 = a_1 - p_1;
+        const float x3 = a_0 - p_0;
+        const float x4 = -x3;
+        const float x5 = -x2;
+        const float x6 = -t_A_1;
+        const float x7 = -t_A_2;
+        const float x8 = -t_A_0;
+        t_P[0] = t_A_0;
+        t_P[1] = t_A_1;
+        t_P[2] = t_A_2;
+        t_P[3] = t_A_1*x1 + t_A_2*x2 + t_A_3;
+        t_P[4] = t_A_0*x0 + t_A_2*x4 + t_A_4;
+        t_P[5] = t_A_0*x5 + t_A_1*x3 + t_A_5;
+        t_P_D_t_A[0] = 1.0f;
+        t_P_D_t_A[1] = 0.0f;
+        t_P_D_t_A[2] = 0.0f;
+        t_P_D_t_A[3] = 0.0f;
+        t_P_D_t_A[4] = 0.0f;
+        t_P_D_t_A[5] = 0.0f;
+        t_P_D_t_A[6] = 0.0f;
+        t_P_D_t_A[7] = 1.0f;
+        t_P_D_t_A[8] = 0.0f;
+        t_P_D_t_A[9] = 0.0f;
+        t_P_D_t_A[10] = 0.0f;
+        t_P_D_t_A[11] = 0.0f;
+        t_P_D_t_A[12] = 0.0f;
+        t_P_D_t_A[13] = 0.0f;
+        t_P_D_t_A[14] = 1.0f;
+        t_P_D_t_A[15] = 0.0f;
+        t_P_D_t_A[16] = 0.0f;
+        t_P_D_t_A[17] = 0.0f;
+        t_P_D_t_A[18] = 0.0f;
+        t_P_D_t_A[19] = x1;
+        t_P_D_t_A[20] = x2;
+        t_P_D_t_A[21] = 1.0f;
+        t_P_D_t_A[22] = 0.0f;
+        t_P_D_t_A[23] = 0.0f;
+        t_P_D_t_A[24] = x0;
+        t_P_D_t_A[25] = 0.0f;
+        t_P_D_t_A[26] = x4;
+        t_P_D_t_A[27] = 0.0f;
+        t_P_D_t_A[28] = 1.0f;
+        t_P_D_t_A[29] = 0.0f;
+        t_P_D_t_A[30] = x5;
+        t_P_D_t_A[31] = x3;
+        t_P_D_t_A[32] = 0.0f;
+        t_P_D_t_A[33] = 0.0f;
+        t_P_D_t_A[34] = 0.0f;
+        t_P_D_t_A[35] = 1.0f;
+        t_P_D_a[0] = 0.0f;
+        t_P_D_a[1] = 0.0f;
+        t_P_D_a[2] = 0.0f;
+        t_P_D_a[3] = 0.0f;
+        t_P_D_a[4] = 0.0f;
+        t_P_D_a[5] = 0.0f;
+        t_P_D_a[6] = 0.0f;
+        t_P_D_a[7] = 0.0f;
+        t_P_D_a[8] = 0.0f;
+        t_P_D_a[9] = 0.0f;
+        t_P_D_a[10] = t_A_2;
+        t_P_D_a[11] = x6;
+        t_P_D_a[12] = x7;
+        t_P_D_a[13] = 0.0f;
+        t_P_D_a[14] = t_A_0;
+        t_P_D_a[15] = t_A_1;
+        t_P_D_a[16] = x8;
+        t_P_D_a[17] = 0.0f;
+        t_P_D_p[0] = 0.0f;
+        t_P_D_p[1] = 0.0f;
+        t_P_D_p[2] = 0.0f;
+        t_P_D_p[3] = 0.0f;
+        t_P_D_p[4] = 0.0f;
+        t_P_D_p[5] = 0.0f;
+        t_P_D_p[6] = 0.0f;
+        t_P_D_p[7] = 0.0f;
+        t_P_D_p[8] = 0.0f;
+        t_P_D_p[9] = 0.0f;
+        t_P_D_p[10] = x7;
+        t_P_D_p[11] = t_A_1;
+        t_P_D_p[12] = t_A_2;
+        t_P_D_p[13] = 0.0f;
+        t_P_D_p[14] = x8;
+        t_P_D_p[15] = x6;
+        t_P_D_p[16] = t_A_0;
+        t_P_D_p[17] = 0.0f;
+    }
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const float s_ = ((((((t_P[0] + t_P[1]) + (t_P[2] + t_P[3])) + ((t_P[4] + t_P[5]) + (t_P_D_t_A[0] + (t_P_D_t_A[1] + t_P_D_t_A[2])))) + (((t_P_D_t_A[3] + t_P_D_t_A[4]) + (t_P_D_t_A[5] + (t_P_D_t_A[6] + t_P_D_t_A[7]))) + ((t_P_D_t_A[8] + t_P_D_t_A[9]) + (t_P_D_t_A[10] + (t_P_D_t_A[11] + t_P_D_t_A[12]))))) + ((((t_P_D_t_A[13] + t_P_D_t_A[14]) + (t_P_D_t_A[15] + (t_P_D_t_A[16] + t_P_D_t_A[17]))) + ((t_P_D_t_A[18] + t_P_D_t_A[19]) + (t_P_D_t_A[20] + (t_P_D_t_A[21] + t_P_D_t_A[22])))) + (((t_P_D_t_A[23] + t_P_D_t_A[24]) + (t_P_D_t_A[25] + (t_P_D_t_A[26] + t_P_D_t_A[27]))) + ((t_P_D_t_A[28] + t_P_D_t_A[29]) + (t_P_D_t_A[30] + (t_P_D_t_A[31] + t_P_D_t_A[32])))))) + (((((t_P_D_t_A[33] + t_P_D_t_A[34]) + (t_P_D_t_A[35] + t_P_D_a[0])) + ((t_P_D_a[1] + t_P_D_a[2]) + (t_P_D_a[3] + (t_P_D_a[4] + t_P_D_a[5])))) + (((t_P_D_a[6] + t_P_D_a[7]) + (t_P_D_a[8] + (t_P_D_a[9] + t_P_D_a[10]))) + ((t_P_D_a[11] + t_P_D_a[12]) + (t_P_D_a[13] + (t_P_D_a[14] + t_P_D_a[15]))))) + ((((t_P_D_a[16] + t_P_D_a[17]) + (t_P_D_p[0] + (t_P_D_p[1] + t_P_D_p[2]))) + ((t_P_D_p[3] + t_P_D_p[4]) + (t_P_D_p[5] + (t_P_D_p[6] + t_P_D_p[7])))) + (((t_P_D_p[8] + t_P_D_p[9]) + (t_P_D_p[10] + (t_P_D_p[11] + t_P_D_p[12]))) + ((t_P_D_p[13] + t_P_D_p[14]) + (t_P_D_p[15] + (t_P_D_p[16] + t_P_D_p[17])))))));
+        if (!(s_ - s_ == 0.0f))
+            finite += (((((((t_P[0] - t_P[0]) + (t_P[1] - t_P[1])) + ((t_P[2] - t_P[2]) + (t_P[3] - t_P[3]))) + (((t_P[4] - t_P[4]) + (t_P[5] - t_P[5])) + ((t_P_D_t_A[0] - t_P_D_t_A[0]) + ((t_P_D_t_A[1] - t_P_D_t_A[1]) + (t_P_D_t_A[2] - t_P_D_t_A[2]))))) + ((((t_P_D_t_A[3] - t_P_D_t_A[3]) + (t_P_D_t_A[4] - t_P_D_t_A[4])) + ((t_P_D_t_A[5] - t_P_D_t_A[5]) + ((t_P_D_t_A[6] - t_P_D_t_A[6]) + (t_P_D_t_A[7] - t_P_D_t_A[7])))) + (((t_P_D_t_A[8] - t_P_D_t_A[8]) + (t_P_D_t_A[9] - t_P_D_t_A[9])) + ((t_P_D_t_A[10] - t_P_D_t_A[10]) + ((t_P_D_t_A[11] - t_P_D_t_A[11]) + (t_P_D_t_A[12] - t_P_D_t_A[12])))))) + (((((t_P_D_t_A[13] - t_P_D_t_A[13]) + (t_P_D_t_A[14] - t_P_D_t_A[14])) + ((t_P_D_t_A[15] - t_P_D_t_A[15]) + ((t_P_D_t_A[16] - t_P_D_t_A[16]) + (t_P_D_t_A[17] - t_P_D_t_A[17])))) + (((t_P_D_t_A[18] - t_P_D_t_A[18]) + (t_P_D_t_A[19] - t_P_D_t_A[19])) + ((t_P_D_t_A[20] - t_P_D_t_A[20]) + ((t_P_D_t_A[21] - t_P_D_t_A[21]) + (t_P_D_t_A[22] - t_P_D_t_A[22]))))) + ((((t_P_D_t_A[23] - t_P_D_t_A[23]) + (t_P_D_t_A[24] - t_P_D_t_A[24])) + ((t_P_D_t_A[25] - t_P_D_t_A[25]) + ((t_P_D_t_A[26] - t_P_D_t_A[26]) + (t_P_D_t_A[27] - t_P_D_t_A[27])))) + (((t_P_D_t_A[28] - t_P_D_t_A[28]) + (t_P_D_t_A[29] - t_P_D_t_A[29])) + ((t_P_D_t_A[30] - t_P_D_t_A[30]) + ((t_P_D_t_A[31] - t_P_D_t_A[31]) + (t_P_D_t_A[32] - t_P_D_t_A[32]))))))) + ((((((t_P_D_t_A[33] - t_P_D_t_A[33]) + (t_P_D_t_A[34] - t_P_D_t_A[34])) + ((t_P_D_t_A[35] - t_P_D_t_A[35]) + (t_P_D_a[0] - t_P_D_a[0]))) + (((t_P_D_a[1] - t_P_D_a[1]) + (t_P_D_a[2] - t_P_D_a[2])) + ((t_P_D_a[3] - t_P_D_a[3]) + ((t_P_D_a[4] - t_P_D_a[4]) + (t_P_D_a[5] - t_P_D_a[5]))))) + ((((t_P_D_a[6] - t_P_D_a[6]) + (t_P_D_a[7] - t_P_D_a[7])) + ((t_P_D_a[8] - t_P_D_a[8]) + ((t_P_D_a[9] - t_P_D_a[9]) + (t_P_D_a[10] - t_P_D_a[10])))) + (((t_P_D_a[11] - t_P_D_a[11]) + (t_P_D_a[12] - t_P_D_a[12])) + ((t_P_D_a[13] - t_P_D_a[13]) + ((t_P_D_a[14] - t_P_D_a[14]) + (t_P_D_a[15] - t_P_D_a[15])))))) + (((((t_P_D_a[16] - t_P_D_a[16]) + (t_P_D_a[17] - t_P_D_a[17])) + ((t_P_D_p[0] - t_P_D_p[0]) + ((t_P_D_p[1] - t_P_D_p[1]) + (t_P_D_p[2] - t_P_D_p[2])))) + (((t_P_D_p[3] - t_P_D_p[3]) + (t_P_D_p[4] - t_P_D_p[4])) + ((t_P_D_p[5] - t_P_D_p[5]) + ((t_P_D_p[6] - t_P_D_p[6]) + (t_P_D_p[7] - t_P_D_p[7]))))) + ((((t_P_D_p[8] - t_P_D_p[8]) + (t_P_D_p[9] - t_P_D_p[9])) + ((t_P_D_p[10] - t_P_D_p[10]) + ((t_P_D_p[11] - t_P_D_p[11]) + (t_P_D_p[12] - t_P_D_p[12])))) + (((t_P_D_p[13] - t_P_D_p[13]) + (t_P_D_p[14] - t_P_D_p[14])) + ((t_P_D_p[15] - t_P_D_p[15]) + ((t_P_D_p[16] - t_P_D_p[16]) + (t_P_D_p[17] - t_P_D_p[17]))))))));
+    }
+    if (finite != finite)
+        status |= RIGIDSYM_C_NONFINITE_RESULT;
+    if (singular) {
+        status |= RIGIDSYM_C_SINGULAR;
+        t_P[0] = NAN;
+        t_P[1] = NAN;
+        t_P[2] = NAN;
+        t_P[3] = NAN;
+        t_P[4] = NAN;
+        t_P[5] = NAN;
+        t_P_D_t_A[0] = NAN;
+        t_P_D_t_A[1] = NAN;
+        t_P_D_t_A[2] = NAN;
+        t_P_D_t_A[3] = NAN;
+        t_P_D_t_A[4] = NAN;
+        t_P_D_t_A[5] = NAN;
+        t_P_D_t_A[6] = NAN;
+        t_P_D_t_A[7] = NAN;
+        t_P_D_t_A[8] = NAN;
+        t_P_D_t_A[9] = NAN;
+        t_P_D_t_A[10] = NAN;
+        t_P_D_t_A[11] = NAN;
+        t_P_D_t_A[12] = NAN;
+        t_P_D_t_A[13] = NAN;
+        t_P_D_t_A[14] = NAN;
+        t_P_D_t_A[15] = NAN;
+        t_P_D_t_A[16] = NAN;
+        t_P_D_t_A[17] = NAN;
+        t_P_D_t_A[18] = NAN;
+        t_P_D_t_A[19] = NAN;
+        t_P_D_t_A[20] = NAN;
+        t_P_D_t_A[21] = NAN;
+        t_P_D_t_A[22] = NAN;
+        t_P_D_t_A[23] = NAN;
+        t_P_D_t_A[24] = NAN;
+        t_P_D_t_A[25] = NAN;
+        t_P_D_t_A[26] = NAN;
+        t_P_D_t_A[27] = NAN;
+        t_P_D_t_A[28] = NAN;
+        t_P_D_t_A[29] = NAN;
+        t_P_D_t_A[30] = NAN;
+        t_P_D_t_A[31] = NAN;
+        t_P_D_t_A[32] = NAN;
+        t_P_D_t_A[33] = NAN;
+        t_P_D_t_A[34] = NAN;
+        t_P_D_t_A[35] = NAN;
+        t_P_D_a[0] = NAN;
+        t_P_D_a[1] = NAN;
+        t_P_D_a[2] = NAN;
+        t_P_D_a[3] = NAN;
+        t_P_D_a[4] = NAN;
+        t_P_D_a[5] = NAN;
+        t_P_D_a[6] = NAN;
+        t_P_D_a[7] = NAN;
+        t_P_D_a[8] = NAN;
+        t_P_D_a[9] = NAN;
+        t_P_D_a[10] = NAN;
+        t_P_D_a[11] = NAN;
+        t_P_D_a[12] = NAN;
+        t_P_D_a[13] = NAN;
+        t_P_D_a[14] = NAN;
+        t_P_D_a[15] = NAN;
+        t_P_D_a[16] = NAN;
+        t_P_D_a[17] = NAN;
+        t_P_D_p[0] = NAN;
+        t_P_D_p[1] = NAN;
+        t_P_D_p[2] = NAN;
+        t_P_D_p[3] = NAN;
+        t_P_D_p[4] = NAN;
+        t_P_D_p[5] = NAN;
+        t_P_D_p[6] = NAN;
+        t_P_D_p[7] = NAN;
+        t_P_D_p[8] = NAN;
+        t_P_D_p[9] = NAN;
+        t_P_D_p[10] = NAN;
+        t_P_D_p[11] = NAN;
+        t_P_D_p[12] = NAN;
+        t_P_D_p[13] = NAN;
+        t_P_D_p[14] = NAN;
+        t_P_D_p[15] = NAN;
+        t_P_D_p[16] = NAN;
+        t_P_D_p[17] = NAN;
+    }
+    return status;
+}
+#endif
+
 RIGIDSYM_C_API int rigidsym_c_twist_transfer_with_jacobians_f32(
     const float t_A[6],
     const float a[3],
     const float p[3],
     float t_P[6],    float t_P_D_t_A[36],    float t_P_D_a[18],    float t_P_D_p[18])
 {
-    uint32_t odd = 0;
     int status = 0, singular = 0;
     float finite = 0.0f;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    {   /* the range test of every input component, as one loop (it vectorises) */
-        const float in_[12] = {
-            t_A[0], t_A[1], t_A[2], t_A[3], t_A[4], t_A[5], a[0], a[1], a[2], p[0], p[1], p[2]
-        };
-        int j_;
-        for (j_ = 0; j_ < 12; ++j_)
-            RIGIDSYM_C_ODD_F(odd, in_[j_]);
+    uint32_t odd = 0;
+#if RIGIDSYM_C_SSE2
+    {   /* the range test of every input component, 4 per SSE2 register */
+        __m128i mx_ = _mm_setzero_si128(), mn_ = _mm_set1_epi16(0x7fff);
+        rigidsym_c_q_f(_mm_castps_si128(_mm_loadu_ps(t_A)), &mx_, &mn_);
+        rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&t_A[4], *&t_A[5], *&a[0], *&a[1])), &mx_, &mn_);
+        rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&a[2], *&p[0], *&p[1], *&p[2])), &mx_, &mn_);
+        if (RIGIDSYM_C_Q_ODD_F(mx_, mn_))
+            return rigidsym_c_twist_transfer_with_jacobians_f32_odd(t_A, a, p, t_P, t_P_D_t_A, t_P_D_a, t_P_D_p);
     }
-    if (odd >> 31) {
-        const float *args[3];
-        const int sizes[3] = {6, 3, 3};
-        int j;
-        args[0] = t_A;
-        args[1] = a;
-        args[2] = p;
-        status = RIGIDSYM_C_EXTREME_INPUT;
-        for (j = 0; j < 3; ++j)
-            if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
-                status = RIGIDSYM_C_NONFINITE_INPUT;
-#if RIGIDSYM_C_RESCALE_F
-        if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
-            const int r_ = rigidsym_c_twist_transfer_with_jacobians_f32_rescue(t_A, a, p, t_P, t_P_D_t_A, t_P_D_a, t_P_D_p);
-            if (r_ >= 0)
-                return r_;
+#elif RIGIDSYM_C_VECTOR
+    {   /* the range test of every input component, 4 per vector register */
+        rigidsym_c_vf oddv_ = {0, 0, 0, 0};
+        oddv_ |= rigidsym_c_odd_vf(rigidsym_c_load_vf(t_A));
+        {
+            const rigidsym_c_vf v_ = {rigidsym_c_bits_f(&t_A[4]), rigidsym_c_bits_f(&t_A[5]), rigidsym_c_bits_f(&a[0]), rigidsym_c_bits_f(&a[1])};
+            oddv_ |= rigidsym_c_odd_vf(v_);
         }
-#endif
+        {
+            const rigidsym_c_vf v_ = {rigidsym_c_bits_f(&a[2]), rigidsym_c_bits_f(&p[0]), rigidsym_c_bits_f(&p[1]), rigidsym_c_bits_f(&p[2])};
+            oddv_ |= rigidsym_c_odd_vf(v_);
+        }
+        odd = oddv_[0] | oddv_[1] | oddv_[2] | oddv_[3];
     }
 #else
-    (void)odd;
+    {   /* the range test of every input component, one at a time (an argument's
+         * components by a loop: compact code where there are no 16-byte vectors) */
+        int j_;
+        for (j_ = 0; j_ < 6; ++j_)
+            RIGIDSYM_C_ODD_F(odd, t_A[j_]);
+        for (j_ = 0; j_ < 3; ++j_)
+            RIGIDSYM_C_ODD_F(odd, a[j_]);
+        for (j_ = 0; j_ < 3; ++j_)
+            RIGIDSYM_C_ODD_F(odd, p[j_]);
+        (void)j_;
+    }
+#endif
+    if (odd >> 31)
+        return rigidsym_c_twist_transfer_with_jacobians_f32_odd(t_A, a, p, t_P, t_P_D_t_A, t_P_D_a, t_P_D_p);
 #endif
     const float t_A_0 = t_A[0];
     const float t_A_1 = t_A[1];
@@ -1137,13 +1810,16 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_with_jacobians_f32(
     }
     /* no division or root, and every output bounded by 2^65 for inputs of
      * ordinary magnitude (|x| < 2^31): only an extreme or non-finite input can make an
-     * output non-finite, so only then are the outputs tested (x - x is 0 for finite x, NaN
-     * otherwise; the guards of rigidsym_c_impl.h keep the compiler from folding it) */
+     * output non-finite, so only then (rigidsym_c_twist_transfer_with_jacobians_f32_odd) are the outputs tested */
 #if defined(RIGIDSYM_C_TRUSTED_INPUTS)
-    finite += (((((((t_P[0] - t_P[0]) + (t_P[1] - t_P[1])) + ((t_P[2] - t_P[2]) + (t_P[3] - t_P[3]))) + (((t_P[4] - t_P[4]) + (t_P[5] - t_P[5])) + ((t_P_D_t_A[0] - t_P_D_t_A[0]) + ((t_P_D_t_A[1] - t_P_D_t_A[1]) + (t_P_D_t_A[2] - t_P_D_t_A[2]))))) + ((((t_P_D_t_A[3] - t_P_D_t_A[3]) + (t_P_D_t_A[4] - t_P_D_t_A[4])) + ((t_P_D_t_A[5] - t_P_D_t_A[5]) + ((t_P_D_t_A[6] - t_P_D_t_A[6]) + (t_P_D_t_A[7] - t_P_D_t_A[7])))) + (((t_P_D_t_A[8] - t_P_D_t_A[8]) + (t_P_D_t_A[9] - t_P_D_t_A[9])) + ((t_P_D_t_A[10] - t_P_D_t_A[10]) + ((t_P_D_t_A[11] - t_P_D_t_A[11]) + (t_P_D_t_A[12] - t_P_D_t_A[12])))))) + (((((t_P_D_t_A[13] - t_P_D_t_A[13]) + (t_P_D_t_A[14] - t_P_D_t_A[14])) + ((t_P_D_t_A[15] - t_P_D_t_A[15]) + ((t_P_D_t_A[16] - t_P_D_t_A[16]) + (t_P_D_t_A[17] - t_P_D_t_A[17])))) + (((t_P_D_t_A[18] - t_P_D_t_A[18]) + (t_P_D_t_A[19] - t_P_D_t_A[19])) + ((t_P_D_t_A[20] - t_P_D_t_A[20]) + ((t_P_D_t_A[21] - t_P_D_t_A[21]) + (t_P_D_t_A[22] - t_P_D_t_A[22]))))) + ((((t_P_D_t_A[23] - t_P_D_t_A[23]) + (t_P_D_t_A[24] - t_P_D_t_A[24])) + ((t_P_D_t_A[25] - t_P_D_t_A[25]) + ((t_P_D_t_A[26] - t_P_D_t_A[26]) + (t_P_D_t_A[27] - t_P_D_t_A[27])))) + (((t_P_D_t_A[28] - t_P_D_t_A[28]) + (t_P_D_t_A[29] - t_P_D_t_A[29])) + ((t_P_D_t_A[30] - t_P_D_t_A[30]) + ((t_P_D_t_A[31] - t_P_D_t_A[31]) + (t_P_D_t_A[32] - t_P_D_t_A[32]))))))) + ((((((t_P_D_t_A[33] - t_P_D_t_A[33]) + (t_P_D_t_A[34] - t_P_D_t_A[34])) + ((t_P_D_t_A[35] - t_P_D_t_A[35]) + (t_P_D_a[0] - t_P_D_a[0]))) + (((t_P_D_a[1] - t_P_D_a[1]) + (t_P_D_a[2] - t_P_D_a[2])) + ((t_P_D_a[3] - t_P_D_a[3]) + ((t_P_D_a[4] - t_P_D_a[4]) + (t_P_D_a[5] - t_P_D_a[5]))))) + ((((t_P_D_a[6] - t_P_D_a[6]) + (t_P_D_a[7] - t_P_D_a[7])) + ((t_P_D_a[8] - t_P_D_a[8]) + ((t_P_D_a[9] - t_P_D_a[9]) + (t_P_D_a[10] - t_P_D_a[10])))) + (((t_P_D_a[11] - t_P_D_a[11]) + (t_P_D_a[12] - t_P_D_a[12])) + ((t_P_D_a[13] - t_P_D_a[13]) + ((t_P_D_a[14] - t_P_D_a[14]) + (t_P_D_a[15] - t_P_D_a[15])))))) + (((((t_P_D_a[16] - t_P_D_a[16]) + (t_P_D_a[17] - t_P_D_a[17])) + ((t_P_D_p[0] - t_P_D_p[0]) + ((t_P_D_p[1] - t_P_D_p[1]) + (t_P_D_p[2] - t_P_D_p[2])))) + (((t_P_D_p[3] - t_P_D_p[3]) + (t_P_D_p[4] - t_P_D_p[4])) + ((t_P_D_p[5] - t_P_D_p[5]) + ((t_P_D_p[6] - t_P_D_p[6]) + (t_P_D_p[7] - t_P_D_p[7]))))) + ((((t_P_D_p[8] - t_P_D_p[8]) + (t_P_D_p[9] - t_P_D_p[9])) + ((t_P_D_p[10] - t_P_D_p[10]) + ((t_P_D_p[11] - t_P_D_p[11]) + (t_P_D_p[12] - t_P_D_p[12])))) + (((t_P_D_p[13] - t_P_D_p[13]) + (t_P_D_p[14] - t_P_D_p[14])) + ((t_P_D_p[15] - t_P_D_p[15]) + ((t_P_D_p[16] - t_P_D_p[16]) + (t_P_D_p[17] - t_P_D_p[17]))))))));
-#else
-    if (status)
-        finite += (((((((t_P[0] - t_P[0]) + (t_P[1] - t_P[1])) + ((t_P[2] - t_P[2]) + (t_P[3] - t_P[3]))) + (((t_P[4] - t_P[4]) + (t_P[5] - t_P[5])) + ((t_P_D_t_A[0] - t_P_D_t_A[0]) + ((t_P_D_t_A[1] - t_P_D_t_A[1]) + (t_P_D_t_A[2] - t_P_D_t_A[2]))))) + ((((t_P_D_t_A[3] - t_P_D_t_A[3]) + (t_P_D_t_A[4] - t_P_D_t_A[4])) + ((t_P_D_t_A[5] - t_P_D_t_A[5]) + ((t_P_D_t_A[6] - t_P_D_t_A[6]) + (t_P_D_t_A[7] - t_P_D_t_A[7])))) + (((t_P_D_t_A[8] - t_P_D_t_A[8]) + (t_P_D_t_A[9] - t_P_D_t_A[9])) + ((t_P_D_t_A[10] - t_P_D_t_A[10]) + ((t_P_D_t_A[11] - t_P_D_t_A[11]) + (t_P_D_t_A[12] - t_P_D_t_A[12])))))) + (((((t_P_D_t_A[13] - t_P_D_t_A[13]) + (t_P_D_t_A[14] - t_P_D_t_A[14])) + ((t_P_D_t_A[15] - t_P_D_t_A[15]) + ((t_P_D_t_A[16] - t_P_D_t_A[16]) + (t_P_D_t_A[17] - t_P_D_t_A[17])))) + (((t_P_D_t_A[18] - t_P_D_t_A[18]) + (t_P_D_t_A[19] - t_P_D_t_A[19])) + ((t_P_D_t_A[20] - t_P_D_t_A[20]) + ((t_P_D_t_A[21] - t_P_D_t_A[21]) + (t_P_D_t_A[22] - t_P_D_t_A[22]))))) + ((((t_P_D_t_A[23] - t_P_D_t_A[23]) + (t_P_D_t_A[24] - t_P_D_t_A[24])) + ((t_P_D_t_A[25] - t_P_D_t_A[25]) + ((t_P_D_t_A[26] - t_P_D_t_A[26]) + (t_P_D_t_A[27] - t_P_D_t_A[27])))) + (((t_P_D_t_A[28] - t_P_D_t_A[28]) + (t_P_D_t_A[29] - t_P_D_t_A[29])) + ((t_P_D_t_A[30] - t_P_D_t_A[30]) + ((t_P_D_t_A[31] - t_P_D_t_A[31]) + (t_P_D_t_A[32] - t_P_D_t_A[32]))))))) + ((((((t_P_D_t_A[33] - t_P_D_t_A[33]) + (t_P_D_t_A[34] - t_P_D_t_A[34])) + ((t_P_D_t_A[35] - t_P_D_t_A[35]) + (t_P_D_a[0] - t_P_D_a[0]))) + (((t_P_D_a[1] - t_P_D_a[1]) + (t_P_D_a[2] - t_P_D_a[2])) + ((t_P_D_a[3] - t_P_D_a[3]) + ((t_P_D_a[4] - t_P_D_a[4]) + (t_P_D_a[5] - t_P_D_a[5]))))) + ((((t_P_D_a[6] - t_P_D_a[6]) + (t_P_D_a[7] - t_P_D_a[7])) + ((t_P_D_a[8] - t_P_D_a[8]) + ((t_P_D_a[9] - t_P_D_a[9]) + (t_P_D_a[10] - t_P_D_a[10])))) + (((t_P_D_a[11] - t_P_D_a[11]) + (t_P_D_a[12] - t_P_D_a[12])) + ((t_P_D_a[13] - t_P_D_a[13]) + ((t_P_D_a[14] - t_P_D_a[14]) + (t_P_D_a[15] - t_P_D_a[15])))))) + (((((t_P_D_a[16] - t_P_D_a[16]) + (t_P_D_a[17] - t_P_D_a[17])) + ((t_P_D_p[0] - t_P_D_p[0]) + ((t_P_D_p[1] - t_P_D_p[1]) + (t_P_D_p[2] - t_P_D_p[2])))) + (((t_P_D_p[3] - t_P_D_p[3]) + (t_P_D_p[4] - t_P_D_p[4])) + ((t_P_D_p[5] - t_P_D_p[5]) + ((t_P_D_p[6] - t_P_D_p[6]) + (t_P_D_p[7] - t_P_D_p[7]))))) + ((((t_P_D_p[8] - t_P_D_p[8]) + (t_P_D_p[9] - t_P_D_p[9])) + ((t_P_D_p[10] - t_P_D_p[10]) + ((t_P_D_p[11] - t_P_D_p[11]) + (t_P_D_p[12] - t_P_D_p[12])))) + (((t_P_D_p[13] - t_P_D_p[13]) + (t_P_D_p[14] - t_P_D_p[14])) + ((t_P_D_p[15] - t_P_D_p[15]) + ((t_P_D_p[16] - t_P_D_p[16]) + (t_P_D_p[17] - t_P_D_p[17]))))))));
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const float s_ = ((((((t_P[0] + t_P[1]) + (t_P[2] + t_P[3])) + ((t_P[4] + t_P[5]) + (t_P_D_t_A[0] + (t_P_D_t_A[1] + t_P_D_t_A[2])))) + (((t_P_D_t_A[3] + t_P_D_t_A[4]) + (t_P_D_t_A[5] + (t_P_D_t_A[6] + t_P_D_t_A[7]))) + ((t_P_D_t_A[8] + t_P_D_t_A[9]) + (t_P_D_t_A[10] + (t_P_D_t_A[11] + t_P_D_t_A[12]))))) + ((((t_P_D_t_A[13] + t_P_D_t_A[14]) + (t_P_D_t_A[15] + (t_P_D_t_A[16] + t_P_D_t_A[17]))) + ((t_P_D_t_A[18] + t_P_D_t_A[19]) + (t_P_D_t_A[20] + (t_P_D_t_A[21] + t_P_D_t_A[22])))) + (((t_P_D_t_A[23] + t_P_D_t_A[24]) + (t_P_D_t_A[25] + (t_P_D_t_A[26] + t_P_D_t_A[27]))) + ((t_P_D_t_A[28] + t_P_D_t_A[29]) + (t_P_D_t_A[30] + (t_P_D_t_A[31] + t_P_D_t_A[32])))))) + (((((t_P_D_t_A[33] + t_P_D_t_A[34]) + (t_P_D_t_A[35] + t_P_D_a[0])) + ((t_P_D_a[1] + t_P_D_a[2]) + (t_P_D_a[3] + (t_P_D_a[4] + t_P_D_a[5])))) + (((t_P_D_a[6] + t_P_D_a[7]) + (t_P_D_a[8] + (t_P_D_a[9] + t_P_D_a[10]))) + ((t_P_D_a[11] + t_P_D_a[12]) + (t_P_D_a[13] + (t_P_D_a[14] + t_P_D_a[15]))))) + ((((t_P_D_a[16] + t_P_D_a[17]) + (t_P_D_p[0] + (t_P_D_p[1] + t_P_D_p[2]))) + ((t_P_D_p[3] + t_P_D_p[4]) + (t_P_D_p[5] + (t_P_D_p[6] + t_P_D_p[7])))) + (((t_P_D_p[8] + t_P_D_p[9]) + (t_P_D_p[10] + (t_P_D_p[11] + t_P_D_p[12]))) + ((t_P_D_p[13] + t_P_D_p[14]) + (t_P_D_p[15] + (t_P_D_p[16] + t_P_D_p[17])))))));
+        if (!(s_ - s_ == 0.0f))
+            finite += (((((((t_P[0] - t_P[0]) + (t_P[1] - t_P[1])) + ((t_P[2] - t_P[2]) + (t_P[3] - t_P[3]))) + (((t_P[4] - t_P[4]) + (t_P[5] - t_P[5])) + ((t_P_D_t_A[0] - t_P_D_t_A[0]) + ((t_P_D_t_A[1] - t_P_D_t_A[1]) + (t_P_D_t_A[2] - t_P_D_t_A[2]))))) + ((((t_P_D_t_A[3] - t_P_D_t_A[3]) + (t_P_D_t_A[4] - t_P_D_t_A[4])) + ((t_P_D_t_A[5] - t_P_D_t_A[5]) + ((t_P_D_t_A[6] - t_P_D_t_A[6]) + (t_P_D_t_A[7] - t_P_D_t_A[7])))) + (((t_P_D_t_A[8] - t_P_D_t_A[8]) + (t_P_D_t_A[9] - t_P_D_t_A[9])) + ((t_P_D_t_A[10] - t_P_D_t_A[10]) + ((t_P_D_t_A[11] - t_P_D_t_A[11]) + (t_P_D_t_A[12] - t_P_D_t_A[12])))))) + (((((t_P_D_t_A[13] - t_P_D_t_A[13]) + (t_P_D_t_A[14] - t_P_D_t_A[14])) + ((t_P_D_t_A[15] - t_P_D_t_A[15]) + ((t_P_D_t_A[16] - t_P_D_t_A[16]) + (t_P_D_t_A[17] - t_P_D_t_A[17])))) + (((t_P_D_t_A[18] - t_P_D_t_A[18]) + (t_P_D_t_A[19] - t_P_D_t_A[19])) + ((t_P_D_t_A[20] - t_P_D_t_A[20]) + ((t_P_D_t_A[21] - t_P_D_t_A[21]) + (t_P_D_t_A[22] - t_P_D_t_A[22]))))) + ((((t_P_D_t_A[23] - t_P_D_t_A[23]) + (t_P_D_t_A[24] - t_P_D_t_A[24])) + ((t_P_D_t_A[25] - t_P_D_t_A[25]) + ((t_P_D_t_A[26] - t_P_D_t_A[26]) + (t_P_D_t_A[27] - t_P_D_t_A[27])))) + (((t_P_D_t_A[28] - t_P_D_t_A[28]) + (t_P_D_t_A[29] - t_P_D_t_A[29])) + ((t_P_D_t_A[30] - t_P_D_t_A[30]) + ((t_P_D_t_A[31] - t_P_D_t_A[31]) + (t_P_D_t_A[32] - t_P_D_t_A[32]))))))) + ((((((t_P_D_t_A[33] - t_P_D_t_A[33]) + (t_P_D_t_A[34] - t_P_D_t_A[34])) + ((t_P_D_t_A[35] - t_P_D_t_A[35]) + (t_P_D_a[0] - t_P_D_a[0]))) + (((t_P_D_a[1] - t_P_D_a[1]) + (t_P_D_a[2] - t_P_D_a[2])) + ((t_P_D_a[3] - t_P_D_a[3]) + ((t_P_D_a[4] - t_P_D_a[4]) + (t_P_D_a[5] - t_P_D_a[5]))))) + ((((t_P_D_a[6] - t_P_D_a[6]) + (t_P_D_a[7] - t_P_D_a[7])) + ((t_P_D_a[8] - t_P_D_a[8]) + ((t_P_D_a[9] - t_P_D_a[9]) + (t_P_D_a[10] - t_P_D_a[10])))) + (((t_P_D_a[11] - t_P_D_a[11]) + (t_P_D_a[12] - t_P_D_a[12])) + ((t_P_D_a[13] - t_P_D_a[13]) + ((t_P_D_a[14] - t_P_D_a[14]) + (t_P_D_a[15] - t_P_D_a[15])))))) + (((((t_P_D_a[16] - t_P_D_a[16]) + (t_P_D_a[17] - t_P_D_a[17])) + ((t_P_D_p[0] - t_P_D_p[0]) + ((t_P_D_p[1] - t_P_D_p[1]) + (t_P_D_p[2] - t_P_D_p[2])))) + (((t_P_D_p[3] - t_P_D_p[3]) + (t_P_D_p[4] - t_P_D_p[4])) + ((t_P_D_p[5] - t_P_D_p[5]) + ((t_P_D_p[6] - t_P_D_p[6]) + (t_P_D_p[7] - t_P_D_p[7]))))) + ((((t_P_D_p[8] - t_P_D_p[8]) + (t_P_D_p[9] - t_P_D_p[9])) + ((t_P_D_p[10] - t_P_D_p[10]) + ((t_P_D_p[11] - t_P_D_p[11]) + (t_P_D_p[12] - t_P_D_p[12])))) + (((t_P_D_p[13] - t_P_D_p[13]) + (t_P_D_p[14] - t_P_D_p[14])) + ((t_P_D_p[15] - t_P_D_p[15]) + ((t_P_D_p[16] - t_P_D_p[16]) + (t_P_D_p[17] - t_P_D_p[17]))))))));
+    }
 #endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;

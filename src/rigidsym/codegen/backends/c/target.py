@@ -172,12 +172,25 @@ def _bounded(kc, ctype: str) -> int | None:
     return math.ceil(worst) if worst <= limit else None
 
 
-def _padded(items: list[str], ctype: str) -> list[str]:
-    """The input components of the range test, padded with zeros (ordinary) to a multiple
-    of 4, so that GCC's -O2 vectoriser (no epilogue loops) takes the loop: measured 412 -> 307
-    instructions per call on newton_euler_wrench's 19 components (benchmarks/c_scalar.py)."""
-    zero = "0.0f" if ctype == "float" else "0.0"
-    return items + [zero] * (-len(items) % 4)
+def _scan_groups(k: Kernel, ctype: str) -> list[dict]:
+    """The input components of the range test in groups of one SIMD register (2 doubles or 4
+    floats, 16 bytes: SSE2, NEON): ``{"load": ptr}`` where the group is contiguous in one
+    argument (one unaligned load), else ``{"elems": [ptr, ...]}`` (components gathered, the
+    last group padded with zeros, which are ordinary). Straight-line groups from the
+    arguments themselves: the former copy into a local array and its loop cost more than the
+    test (measured 95 of 154 instructions on twist_transfer, benchmarks/c_scalar.py)."""
+    lanes = 4 if ctype == "float" else 2
+    comps = [(a.name, j, bool(a.shape)) for a in k.args for j in range(a.size)]
+    groups = []
+    for i in range(0, len(comps), lanes):
+        g = comps[i:i + lanes]
+        if len(g) == lanes and g[0][2] and all(n == g[0][0] and j == g[0][1] + d
+                                               for d, (n, j, _) in enumerate(g)):
+            groups.append({"load": f"{g[0][0]} + {g[0][1]}" if g[0][1] else g[0][0]})
+        else:
+            groups.append({"elems": [f"&{n}[{j}]" if sh else f"&{n}" for n, j, sh in g],
+                           "pad": lanes - len(g)})
+    return groups
 
 
 def _check_names(k: Kernel, temps: set[str]) -> None:
@@ -219,9 +232,11 @@ def _function(kc, ctype: str, rescale: list) -> dict:
                       "kind": a.kind, "layout": _layout(a.shape)} for a in k.args],
             "outs": [{"name": o.name, "size": o.size, "shape": list(o.shape), "doc": o.doc,
                       "layout": _layout(o.shape)} for o in k.outputs],
-            "scan": _padded([f"{a.name}[{j}]" if a.shape else a.name
-                             for a in k.args for j in range(a.size)], ctype),
+            "scan": [f"{a.name}[{j}]" if a.shape else a.name
+                     for a in k.args for j in range(a.size)],
+            "groups": _scan_groups(k, ctype),
             "slots": slots, "out_check": _balanced([f"({s} - {s})" for s in slots]),
+            "out_sum": _balanced(slots),
             "bounded": None if any(v["finite"] for v in variants) else _bounded(kc, ctype),
             "wide": _wide(kc, k) if ctype == "double" else None,
             "rescale": rescale, "rescaled": {n for st in rescale for n in st["args"]}}
