@@ -316,6 +316,107 @@ def test_sse2_range_test_misses_no_odd_component(tmp_path):
     assert out.strip() == "0"
 
 
+_VECTOR_CHECK = r"""
+#include "rigidsym_c_impl.h"
+#include <math.h>
+#include <stdio.h>
+static uint64_t s_ = 88172645463325252ULL;
+static uint64_t rnd(void) { s_ ^= s_ << 13; s_ ^= s_ >> 7; s_ ^= s_ << 17; return s_; }
+/* the definition: odd = not zero and |x| outside [lo, hi), or not finite */
+static int odd_d(double x) { double a = fabs(x); return x != 0 && !(a >= 0x1p-100 && a < 0x1p101); }
+static int odd_f(float x) { float a = fabsf(x); return x != 0 && !(a >= 0x1p-30f && a < 0x1p31f); }
+int main(void)
+{
+#if RIGIDSYM_C_VECTOR
+    static const uint64_t ed[] = {0, 1, 922, 923, 924, 1123, 1124, 1125, 2046, 2047};
+    static const uint32_t ef[] = {0, 1, 96, 97, 98, 157, 158, 159, 254, 255};
+    long i, bad = 0;
+    for (i = 0; i < 2000000; ++i) {
+        uint64_t b = rnd(), acc = 0;
+        uint32_t c = (uint32_t)rnd(), accf = 0;
+        double x;
+        float xf;
+        rigidsym_c_vd vd = {0, 0};
+        rigidsym_c_vf vf = {0, 0, 0, 0};
+        if (i % 2) {
+            b = (b & 0x800fffffffffffffULL) | (ed[rnd() % 10] << 52);
+            c = (c & 0x807fffffU) | (ef[rnd() % 10] << 23);
+        }
+        memcpy(&x, &b, 8);
+        memcpy(&xf, &c, 4);
+        RIGIDSYM_C_ODD_D(acc, x);
+        RIGIDSYM_C_ODD_F(accf, xf);
+        vd[1] = b;
+        vf[2] = c;
+        vd = rigidsym_c_odd_vd(vd);
+        vf = rigidsym_c_odd_vf(vf);
+        bad += (int)(acc >> 63) != odd_d(x) || (int)(vd[1] >> 63) != odd_d(x) || vd[0] >> 63;
+        bad += (int)(accf >> 31) != odd_f(xf) || (int)(vf[2] >> 31) != odd_f(xf) || vf[0] >> 31;
+    }
+    printf("%ld\n", bad);
+#else
+    printf("skip\n");
+#endif
+    return 0;
+}
+"""
+
+
+@needs_gcc
+def test_the_vector_and_scalar_range_tests_are_the_definition(tmp_path):
+    """The generic vector range test (Arm with NEON) and the scalar one (Cortex-M, other
+    compilers), built here with -DRIGIDSYM_C_NO_SSE2, call a component odd exactly when it
+    is not zero and its magnitude lies outside [2^-100, 2^101) (float: [2^-30, 2^31)) or
+    it is not finite: 2e6 random bit patterns per type, half with exponents at the ends."""
+    src = tmp_path / "check.c"
+    src.write_text(_VECTOR_CHECK)
+    exe = tmp_path / "check"
+    subprocess.run([GCC, *STRICT, "-O2", "-DRIGIDSYM_C_NO_SSE2", "-I", str(KERNELS_DIR),
+                    str(src), "-o", str(exe), "-lm"], check=True)
+    out = subprocess.run([str(exe)], check=True, capture_output=True, text=True).stdout
+    if out.strip() == "skip":
+        pytest.skip("no generic vector range test with this compiler")
+    assert out.strip() == "0"
+
+
+#: the three input range tests: x86-64's SSE2 one (the default here), the generic vector
+#: one that Arm with NEON takes, and the scalar loop of Cortex-M and other compilers
+RANGE_TESTS = {"sse2": [], "vector": ["-DRIGIDSYM_C_NO_SSE2"], "scalar": ["-DRIGIDSYM_C_NO_VECTOR"]}
+
+
+@needs_gcc
+def test_the_three_range_tests_give_the_same_status_and_values(tmp_path):
+    """Each input range test (the SSE2 one run here, and the two that Arm and Cortex-M
+    take, built here by their macros) gives every call the same status and the same bits:
+    the generic vector and scalar tests would otherwise run nowhere in the tests. Random
+    components with exponents spread over the whole floating line (zeros, subnormals, the
+    ends of the range, infinities and NaNs), double and float."""
+    libs = {}
+    for name, flags in RANGE_TESTS.items():
+        so = tmp_path / f"lib_{name}.so"
+        subprocess.run([GCC, *STRICT, "-O2", *flags, "-shared", "-fPIC",
+                        *map(str, sources()), "-o", str(so), "-lm"], check=True)
+        libs[name] = ctypes.CDLL(str(so))
+    rng = np.random.default_rng(53)
+    special = [0.0, -0.0, np.inf, -np.inf, np.nan, 5e-324, 2.0**-100, 2.0**101, 1e-30, 3e9]
+    for dtype, suffix, emax in ((np.float64, "", 1023), (np.float32, "_f32", 127)):
+        for _ in range(400):
+            x = rng.standard_normal(18) * 2.0 ** rng.integers(-emax - 20, emax + 1, 18)
+            pick = rng.random(18) < 0.15
+            x[pick] = rng.choice(special, pick.sum())
+            with np.errstate(over="ignore"):
+                x = x.astype(dtype)
+            t, a, p, v, w = x[:6], x[6:9], x[9:12], x[12:15], x[15:18]
+            got = {}
+            for name, lib in libs.items():
+                s1, (o1,) = call(lib, f"rigidsym_c_twist_transfer{suffix}", t, a, p,
+                                 ("out", 6), dtype=dtype)
+                s2, (o2,) = call(lib, f"rigidsym_c_body_energy{suffix}", 1.5, v,
+                                 np.eye(3, dtype=dtype), w, ("out", 1), dtype=dtype)
+                got[name] = (s1, o1.tobytes(), s2, o2.tobytes())
+            assert got["vector"] == got["sse2"] == got["scalar"], (dtype, x)
+
+
 WIDE = np.finfo(np.longdouble).maxexp > np.finfo(np.float64).maxexp
 
 

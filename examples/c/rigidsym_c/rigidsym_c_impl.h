@@ -187,7 +187,9 @@ static inline rigidsym_c_vf rigidsym_c_odd_vf(rigidsym_c_vf b)
  * (measured: quaternion_rotation 21 -> 13.6 ns, kinetic energy 22 -> 13 ns, for 3-7 more
  * instructions). Floats keep the 16-byte load: four loads cost 6-28 more instructions and
  * were slower on the wrench and the kinetic energy. */
-#if RIGIDSYM_C_VECTOR && defined(__SSE2__)
+/* -DRIGIDSYM_C_NO_SSE2 takes the generic vector test instead (Arm's path), so that x86-64
+ * runs it in the tests (tests/test_c_target.py: the three tests agree bit for bit). */
+#if RIGIDSYM_C_VECTOR && defined(__SSE2__) && !defined(RIGIDSYM_C_NO_SSE2)
 #define RIGIDSYM_C_SSE2 1
 #include <emmintrin.h>
 
