@@ -26,8 +26,8 @@ from rigidsym.codegen.regimes import _random_arg
 EXP = {np.float64: 8, np.float32: 8}
 
 
-def _score(name, point, dtype, backends) -> float:
-    rows = A.judge(name, "search", [point], dtype, backends)
+def _score(name, point, dtype, backends, runner=None) -> float:
+    rows = A.judge(name, "search", [point], dtype, backends, runner=runner)
     if any(r.spurious for r in rows):
         return math.inf
     return max(r.rule_ratio for r in rows)
@@ -46,16 +46,17 @@ def _start(k, rng, dtype) -> list:
 
 
 def search(name: str, dtype=np.float64, backends=("numpy",), seed: int = 0,
-           n_start: int = 24, steps: int = 60) -> tuple[float, list]:
+           n_start: int = 24, steps: int = 60, runner=None) -> tuple[float, list]:
     """``(worst rule ratio, its point)`` found for ``name``: exponent-uniform starts, then
-    hill climbing on the measured ratio (see the module)."""
+    hill climbing on the measured ratio (see the module); ``runner`` as
+    :func:`accuracy.judge`'s (the PyTorch and JAX kernels, tests/test_search_every_kernel.py)."""
     k = R.kernel_of(name)
     rng = np.random.default_rng(seed)
     free = [i for i, a in enumerate(k.args) if a.kind == "any" and a.name != "m"]
     best, best_p = -1.0, None
     for _ in range(n_start):
         p = _start(k, rng, dtype)
-        s = _score(name, p, dtype, backends)
+        s = _score(name, p, dtype, backends, runner)
         if s > best:
             best, best_p = s, p
     if not free or not math.isfinite(best):
@@ -70,7 +71,7 @@ def search(name: str, dtype=np.float64, backends=("numpy",), seed: int = 0,
         else:
             x *= 1 + rng.choice([-1, 1]) * 2.0 ** -rng.integers(1, 53)
         p[i][j] = P.q(x)
-        s = _score(name, p, dtype, backends)
+        s = _score(name, p, dtype, backends, runner)
         if s > best:
             best, best_p = s, p
             if not math.isfinite(s):
