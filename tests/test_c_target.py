@@ -251,16 +251,23 @@ def test_inputs_at_the_ends_of_the_range_are_ordinary(lib, dtype, lo, hi):
     assert status in (OK, EXTREME_INPUT)     # rescued (0) or flagged, never silent
 
 
-_SSE2_CHECK = r"""
-#include "rigidsym_c_impl.h"
+#: the two bit-pattern checks' common start: the header, a xorshift generator, and the
+#: exponents at the ends of the range (double: 2^-100 = 923 - 1023, 2^101 = 1124 - 1023)
+_CHECK_PRELUDE = r"""#include "rigidsym_c_impl.h"
 #include <stdio.h>
 static uint64_t s_ = 88172645463325252ULL;
 static uint64_t rnd(void) { s_ ^= s_ << 13; s_ ^= s_ >> 7; s_ ^= s_ << 17; return s_; }
+#define RIGIDSYM_CHECK_ENDS \
+    static const uint64_t ed[] = {0, 1, 922, 923, 924, 1123, 1124, 1125, 2046, 2047}; \
+    static const uint32_t ef[] = {0, 1, 96, 97, 98, 157, 158, 159, 254, 255};
+"""
+
+
+_SSE2_CHECK = _CHECK_PRELUDE + r"""
 int main(void)
 {
 #if RIGIDSYM_C_SSE2
-    static const uint64_t ed[] = {0, 1, 922, 923, 924, 1123, 1124, 1125, 2046, 2047};
-    static const uint32_t ef[] = {0, 1, 96, 97, 98, 157, 158, 159, 254, 255};
+    RIGIDSYM_CHECK_ENDS
     long i, fn = 0;
     for (i = 0; i < 2000000; ++i) {
         uint64_t b = rnd(), acc = 0;
@@ -316,20 +323,15 @@ def test_sse2_range_test_misses_no_odd_component(tmp_path):
     assert out.strip() == "0"
 
 
-_VECTOR_CHECK = r"""
-#include "rigidsym_c_impl.h"
+_VECTOR_CHECK = _CHECK_PRELUDE + r"""
 #include <math.h>
-#include <stdio.h>
-static uint64_t s_ = 88172645463325252ULL;
-static uint64_t rnd(void) { s_ ^= s_ << 13; s_ ^= s_ >> 7; s_ ^= s_ << 17; return s_; }
 /* the definition: odd = not zero and |x| outside [lo, hi), or not finite */
 static int odd_d(double x) { double a = fabs(x); return x != 0 && !(a >= 0x1p-100 && a < 0x1p101); }
 static int odd_f(float x) { float a = fabsf(x); return x != 0 && !(a >= 0x1p-30f && a < 0x1p31f); }
 int main(void)
 {
 #if RIGIDSYM_C_VECTOR
-    static const uint64_t ed[] = {0, 1, 922, 923, 924, 1123, 1124, 1125, 2046, 2047};
-    static const uint32_t ef[] = {0, 1, 96, 97, 98, 157, 158, 159, 254, 255};
+    RIGIDSYM_CHECK_ENDS
     long i, bad = 0;
     for (i = 0; i < 2000000; ++i) {
         uint64_t b = rnd(), acc = 0;
