@@ -250,3 +250,36 @@ def test_report_and_generate_for_a_user_module(tmp_path, capsys):
     capsys.readouterr()
     code, _, err = _run(["generate", "--module", str(path), "--out", str(foreign)], capsys)
     assert code == 2 and (foreign / "notes.txt").exists() and "not empty" in err
+
+
+def test_a_user_file_named_like_a_package_does_not_shadow_it(tmp_path, monkeypatch):
+    """The user's folder is first on ``sys.path`` only while the module executes (its sibling
+    imports work then and later), never ahead of the installed packages afterwards: loading
+    examples/modern_robotics.py once made ``import modern_robotics`` in the same process
+    return the example (the peers' table then failed on every row)."""
+    import importlib
+    import sys
+
+    monkeypatch.setattr(sys, "path", list(sys.path))
+    (tmp_path / "colorsys.py").write_text("SHADOW = True\n")   # a stdlib module's name
+    (tmp_path / "mysibling.py").write_text("VALUE = 7\n")
+    (tmp_path / "mylate.py").write_text("VALUE = 8\n")
+    path = _module(tmp_path, "shadowing", '''
+        import mysibling
+
+        def late():
+            import mylate
+            return mylate.VALUE
+
+        @equation("shadow:one", "1 = 1 with a sibling import")
+        def one():
+            return Statement([Rel(sp.Integer(mysibling.VALUE - 6), 1)])
+    ''')
+    for m in ("colorsys", "mysibling", "mylate"):
+        monkeypatch.delitem(sys.modules, m, raising=False)
+    um = usermodules.load(str(path))
+    assert REGISTRY["shadow:one"].build() is not None
+    assert sys.path[-1] == str(tmp_path) and str(tmp_path) not in sys.path[:-1]
+    monkeypatch.delitem(sys.modules, "colorsys", raising=False)
+    assert not hasattr(importlib.import_module("colorsys"), "SHADOW")
+    assert sys.modules[um.name].late() == 8

@@ -17,6 +17,7 @@ module-level ``KERNELS`` list of :class:`rigidsym.codegen.spec.Kernel`.
 
 from __future__ import annotations
 
+import contextlib
 import hashlib
 import importlib
 import os
@@ -75,17 +76,33 @@ def _is_path(spec: str) -> bool:
     return spec.endswith(".py") or os.sep in spec or "/" in spec or not _DOTTED.match(spec)
 
 
+@contextlib.contextmanager
+def _first_on_path(folder: str):
+    """``folder`` first on ``sys.path`` while the user's module executes (its sibling imports
+    work), then last: a user file named like an installed package (examples/modern_robotics.py)
+    must not shadow the package for the rest of the process. A folder already on the path
+    stays where it is."""
+    if folder in sys.path:
+        yield
+        return
+    sys.path.insert(0, folder)
+    try:
+        yield
+    finally:
+        with contextlib.suppress(ValueError):
+            sys.path.remove(folder)
+        sys.path.append(folder)  # a later lazy sibling import still finds it
+
+
 def _import_file(path: Path) -> tuple[str, object]:
     """Execute ``path`` as a fresh module under a name unique to its resolved path."""
     digest = hashlib.sha256(str(path).encode()).hexdigest()[:10]
     stem = re.sub(r"\W", "_", path.stem)
     name = f"_rigidsym_user_{stem}_{digest}"
-    folder = str(path.parent)
-    if folder not in sys.path:  # sibling imports of the user module work
-        sys.path.insert(0, folder)
     forget_module(name)
     try:
-        mod = load_module(name, path)
+        with _first_on_path(str(path.parent)):
+            mod = load_module(name, path)
     except NotAModule:
         raise BadInput(f"module {path}: not a Python source file") from None
     except BaseException:
@@ -95,13 +112,11 @@ def _import_file(path: Path) -> tuple[str, object]:
 
 
 def _import_dotted(dotted: str) -> tuple[str, object]:
-    cwd = os.getcwd()
-    if cwd not in sys.path:
-        sys.path.insert(0, cwd)
     forget_module(dotted)
     old = sys.modules.get(dotted)
     try:
-        mod = importlib.reload(old) if old is not None else importlib.import_module(dotted)
+        with _first_on_path(os.getcwd()):
+            mod = importlib.reload(old) if old is not None else importlib.import_module(dotted)
     except BaseException:
         forget_module(dotted)
         raise
