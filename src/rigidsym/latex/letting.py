@@ -209,7 +209,8 @@ def _read(rd: _Reader, latex: str, lets: list[Let], lend: dict, table) -> Readin
             raise BadInput(f"--let '{x.text}': {x.key} does not occur in the LaTeX nor in a "
                            f"model (the LaTeX's glyphs: "
                            f"{', '.join(sorted(parsed.glyphs)) or 'none'})")
-    notes, free = _glyph_values(rd, lend, values)
+    notes, free = _glyph_values(rd, lend, values,
+                                [e for chain in parsed.chains for e in chain])
     if table is not None and rd.by_notation & rd.used:
         notes.insert(0, f"--notation {table.name} ({table.title}): " + "; ".join(
             rd.declared[k].text for k in sorted(rd.by_notation & rd.used)))

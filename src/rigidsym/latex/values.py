@@ -14,6 +14,7 @@ from rigidsym.checking.deciding.errors import BadInput
 from rigidsym.latex.declgraph import glyph_keys, model_order
 from rigidsym.latex.glyphrows import _Reader, _symbol
 from rigidsym.latex.lets import Let, kind_of
+from rigidsym.latex.periodic import periodic_angles
 from rigidsym.latex.shapes import LatexError, _shape
 from rigidsym.latex.table import Glyph
 
@@ -83,9 +84,11 @@ def _function_model(rd: _Reader, x: Let, values: dict) -> None:
     values[_symbol(g)] = rhs
 
 
-def _glyph_values(rd: _Reader, lend: dict, values: dict) -> tuple[list[str], list[str]]:
+def _glyph_values(rd: _Reader, lend: dict, values: dict,
+                  printed=()) -> tuple[list[str], list[str]]:
     """Each used glyph's value into ``values`` (a declared kind, a lent model, a glyph-table
-    row or definition, a free matrix of named entries); the notes and the free glyphs."""
+    row or definition, a free matrix of named entries, an angle by its uses in ``printed``
+    and the models: :mod:`rigidsym.latex.periodic`); the notes and the free glyphs."""
     notes, free, seen, free_, lent_ = [], [], set(), [], []
     scalars = {(rd.over.get(k) or rd.glyphs[k]).name for k in rd.used
                if not (rd.over.get(k) or rd.glyphs[k]).shape}
@@ -122,6 +125,11 @@ def _glyph_values(rd: _Reader, lend: dict, values: dict) -> tuple[list[str], lis
             values[sym] = _fresh((lambda n, s=g.shape: _sym.vector(n, n=s[0])) if
                                  g.shape[1] == 1 else
                                  (lambda n, s=g.shape: _sym.matrix(n, *s)), g.name, scalars)
+    angles = _periodic_angles(rd, free, values, printed, scalars)
+    free_ = [f for f, k in zip(free_, free, strict=True) if k not in angles]
+    notes += [f"{k}: an angle (no --let declares it): it occurs only in {', '.join(fs)}, at "
+              f"integer multiples, so the relation has period 2π in {k} and deciding it for "
+              f"{k} in (-π, π) decides it for every real {k}" for k, fs in angles.items()]
     if free_:
         notes.append("free, no --let declares them (shapes by the book's convention: bold "
                      "lower-case a 3-vector, bold capital 3×3, else a scalar): "
@@ -129,6 +137,20 @@ def _glyph_values(rd: _Reader, lend: dict, values: dict) -> tuple[list[str], lis
     if lent_:
         notes.append("lent by --module: " + ", ".join(lent_))
     return notes, free
+
+
+def _periodic_angles(rd: _Reader, free: list[str], values: dict, printed,
+                     scalars: set[str]) -> dict[str, list[str]]:
+    """The free scalar glyphs that are angles by their uses (:mod:`rigidsym.latex.periodic`),
+    each with the trigonometric functions it occurs in; their angle atoms into ``values``."""
+    syms = {_symbol(rd.over.get(k) or rd.glyphs[k]): k for k in free
+            if not (rd.over.get(k) or rd.glyphs[k]).shape}
+    found = periodic_angles([*printed, *values.values()], syms)
+    out = {}
+    for sym, fs in found.items():
+        values[sym] = _fresh(_sym.angle, sym.name, scalars)
+        out[syms[sym]] = fs
+    return out
 
 
 def _fresh(factory, name: str, scalars: set[str]):

@@ -148,7 +148,8 @@ def _linear_angles(arg) -> tuple[dict, Fraction]:
         elif _is_angle_atom(rest):
             coeffs[rest] = coeffs.get(rest, Fraction(0)) + Fraction(int(c.p), int(c.q))
         else:
-            raise Unsupported(f"trig of non-angle argument {arg}")
+            raise Unsupported(f"trig of non-angle argument {arg} (an angle is a symbol "
+                              f"declared so: --let 'NAME: angle', angle() in a module)")
     if (2 * cpi).denominator != 1:
         raise Unsupported(f"trig argument with pi multiple {cpi}")
     return coeffs, cpi

@@ -1,0 +1,74 @@
+"""A free scalar that occurs only in sin, cos, tan, ... at integer multiples is an angle
+(:mod:`rigidsym.latex.periodic`, wave 6): the relation has period 2π in it, so deciding it on
+the zero test's (-π, π) decides it for every real value. Before, ``\\sin 2\\theta =
+2\\sin\\theta\\cos\\theta`` was undecided ("trig of non-angle argument θ") unless the reader
+declared ``--let '\\theta: angle'``. Where (-π, π) would be an assumption (a half angle, a
+bare occurrence) the symbol stays free and the reason names the fix."""
+
+from __future__ import annotations
+
+import pytest
+from test_check_latex import _cli, _forget_latex_ids  # noqa: F401  (autouse fixture, CLI helper)
+
+import rigidsym
+
+ROT = (r"R = \cos\theta \mathbf{1} + \sin\theta [\mathbf{n}]_\times "
+       r"+ (1-\cos\theta)\mathbf{n}\mathbf{n}^T")
+
+
+@pytest.mark.parametrize("latex, lets, verdict", [
+    (r"\sin 2\theta = 2\sin\theta\cos\theta", [], "verified"),
+    (r"\sin 2\theta = 3\sin\theta\cos\theta", [], "does-not-hold"),
+    (r"\cos(\alpha + \beta) = \cos\alpha\cos\beta - \sin\alpha\sin\beta", [], "verified"),
+    (r"\cos(\alpha - \beta) = \cos\alpha\cos\beta - \sin\alpha\sin\beta", [],
+     "does-not-hold"),
+    (r"\tan(\theta + \pi) = \tan\theta", [], "verified"),
+    # through a model: theta occurs in R's model only, inside cos and sin
+    (r"\operatorname{tr}(R) = 1 + 2\cos\theta", [ROT, r"\mathbf{n}: unit vector"],
+     "verified"),
+    (r"\operatorname{tr}(R) = 2\cos\theta", [ROT, r"\mathbf{n}: unit vector"],
+     "does-not-hold"),
+])
+def test_the_verdict_is_that_of_a_declared_angle(latex, lets, verdict):
+    """Inferred or declared, the same verdict: nothing assumed beyond the LaTeX."""
+    got = rigidsym.check_latex(latex, let=lets)
+    declared = rigidsym.check_latex(latex, let=[*lets, r"\theta: angle"]
+                                    if r"\theta" in latex or lets else
+                                    [*lets, r"\alpha: angle; \beta: angle"])
+    assert got.verdict == declared.verdict == verdict, got.detail
+
+
+@pytest.mark.parametrize("latex", [
+    # false for theta in (pi, 3 pi): true on (-pi, pi), so an inferred angle would verify it
+    r"\cos\frac{\theta}{2} = \sqrt{\frac{1 + \cos\theta}{2}}",
+    r"\theta\sin\theta = \theta\cos\theta",  # a bare occurrence
+])
+def test_where_the_range_would_be_an_assumption_the_symbol_stays_free(latex, capsys):
+    code, out, _ = _cli(capsys, "--latex", latex)
+    out = " ".join(out.split())
+    assert code == 3 and "an angle (no --let declares it)" not in out, out
+    assert "trig of non-angle argument θ (an angle is a symbol declared so: --let 'NAME: " \
+           "angle'" in out, out
+
+
+def test_the_reading_is_printed(capsys):
+    code, out, _ = _cli(capsys, "--latex", r"\sin 2\theta = 2\sin\theta\cos\theta")
+    out = " ".join(out.split())
+    assert code == 0
+    assert "read as: sin(2 θ) = 2 cos θ sin θ" in out, out
+    assert r"\theta: an angle (no --let declares it): it occurs only in cos, sin" in out, out
+
+
+@pytest.mark.parametrize("latex, verdict", [
+    (r"\sin 2\theta = 2\sin\theta\cos\theta", "verified"),
+    (r"a\sin 2\theta\cos\phi = 2a\sin\theta\cos\theta\cos\phi", "verified"),
+    (r"\sin^2 2\theta = \frac{1 - \cos 4\theta}{2}", "verified"),
+    (r"\cos 2\theta = 1 - 2\sin\theta", "does-not-hold"),   # the square left out
+])
+def test_a_multiple_angle_is_the_functions_argument(latex, verdict):
+    """``\\sin 2\\theta`` is sin(2θ), as with parentheses (before: sin(2) θ, printed as
+    ``θ sin 2`` and decided so: the first case was does-not-hold)."""
+    got = rigidsym.check_latex(latex)   # theta, phi: angles by their uses (above)
+    paren = rigidsym.check_latex(latex.replace(r"2\theta", r"(2\theta)")
+                                 .replace(r"4\theta", r"(4\theta)"))
+    assert got.verdict == paren.verdict == verdict, got.detail
