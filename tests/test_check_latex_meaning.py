@@ -304,3 +304,34 @@ def test_a_readers_bracket_stays_a_bracket_in_every_view():
 def test_a_scalar_product_prints_as_written(capsys, latex, shown):
     code, out, _ = _cli(capsys, "--latex", latex, "--let", AB)
     assert code == 0 and f"read as: {shown}" in out
+
+
+@pytest.mark.parametrize("latex, let, verdict", [
+    (r"\mathbf{a}\times(\mathbf{b}\times\mathbf{c}) = \mathbf{b}(\mathbf{a}\cdot\mathbf{c})"
+     r" - \mathbf{c}(\mathbf{a}\cdot\mathbf{b})", [], "verified"),
+    (r"\mathbf{a}\times(\mathbf{b}\times\mathbf{c}) = \mathbf{c}(\mathbf{a}\cdot\mathbf{b})"
+     r" - \mathbf{b}(\mathbf{a}\cdot\mathbf{c})", [], "does-not-hold"),
+    (r"\mathbf{a}\times(\mathbf{b}\times\mathbf{c}) = \mathbf{b}(\mathbf{a}\cdot\mathbf{c})"
+     r" - \mathbf{c}(\mathbf{a}\cdot\mathbf{b})", [r"\mathbf{b}: vector"], "verified"),
+    (r"R\mathbf{v} = \cos\theta\mathbf{v} + \sin\theta(\mathbf{n}\times\mathbf{v})"
+     r" + (1-\cos\theta)\mathbf{n}(\mathbf{n}\cdot\mathbf{v})",
+     [r"R = \cos\theta \mathbf{1} + \sin\theta [\mathbf{n}]_\times"
+      r" + (1-\cos\theta)\mathbf{n}\mathbf{n}^T", r"\mathbf{n}: unit vector; \theta: angle"],
+     "verified"),
+    # a vector with a model keeps the application (row 2)
+    (r"\mathbf{p}(\theta) = \cos\theta\,\mathbf{a}",
+     [r"\mathbf{p} = \cos\theta\,\mathbf{a}", r"\theta: angle"], "verified"),
+])
+def test_a_vector_without_a_model_times_a_parenthesised_scalar_is_a_product(latex, let,
+                                                                           verdict):
+    """``\\mathbf{b}(\\mathbf{a}\\cdot\\mathbf{c})``: the application could only be refused (no
+    model), so the product is the one reading that types (printed). Before: exit 2, "b has
+    no model", on the vector triple product and Rodrigues' formula as the books print them."""
+    r = rigidsym.check_latex(latex, let=let)
+    assert r.verdict == verdict, r.detail
+
+
+def test_a_matrix_without_a_model_applied_is_still_refused(capsys):
+    code, out, err = _cli(capsys, "--latex", r"R(\theta) = e^{[\hat\omega]\theta}",
+                          "--let", r"\hat\omega: unit vector; \theta: angle; R: rotation")
+    assert code == 2 and "R has no model" in " ".join((out + err).split())

@@ -155,3 +155,15 @@ def test_a_renamed_vector_entry_never_prints_as_the_scalar():
     assert book_text("K__1") == "(K)₁" != book_text("K_1") == "K₁"
     assert book_latex("K__1") == r"\left(\mathbf{K}\right)_{1}"
     assert _atom_text("K__1") != _atom_text("K_1")
+
+
+def test_a_cross_product_of_a_cross_product_keeps_its_parentheses():
+    """× is not associative: (a × b) × c and a × (b × c) printed alike ("a × b × c") in the
+    ``read as:`` line and the members until wave 6's fourth session, so a does-not-hold
+    showed two equal-looking sides."""
+    from rigidsym.algebra.operators import Cross
+
+    a, b, c = (sp.MatrixSymbol(n, 3, 1) for n in "abc")
+    left, right = notation.text(Cross(Cross(a, b), c)), notation.text(Cross(a, Cross(b, c)))
+    assert left == "(a × b) × c" and right == "a × (b × c)"
+    assert notation.text(Cross(Cross(a, b), Cross(b, c))) == "(a × b) × (b × c)"

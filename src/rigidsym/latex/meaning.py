@@ -122,6 +122,15 @@ class MeaningRules:
         if self.reader and _shape(fv) is not None and _shape(x) is not None \
                 and getattr(self.overrides.get(f.key), "kind", None) == "model":
             return self._choose(f, fv, x, arg, sup)
+        if self.reader and _shape(x) is None and x is not _TIME and self._modelless_vector(f, fv):
+            from rigidsym.printing import notation
+
+            a = notation.text(x)  # n (n . v), b (a . c): the books' scalar multiple
+            self._note(f"{f.key}({a}): the product {f.key} {a}, not {f.key} applied to {a} "
+                       f"({f.key} is a vector without a model, so no function of {a})")
+            if sup is not None:
+                arg = self.power([arg, sup])
+            return self.mul([f, arg])
         if self.reader and _shape(fv) is not None and _shape(x) is None and x is not _TIME:
             from rigidsym.printing import notation
 
@@ -133,6 +142,19 @@ class MeaningRules:
         if sup is not None:  # a(b + c)^2: the power binds to the parenthesis
             arg = self.power([arg, sup])
         return self.mul([f, arg])
+
+    def _modelless_vector(self, f, fv) -> bool:
+        r"""``f`` is a vector (n x 1, n > 1) that no model, module or book defines: a free
+        glyph or one a ``--let`` gives a kind only. Applied to a scalar it could only be
+        refused (no model says how it depends on it; ``guards.applications``), so the one
+        reading that types is the product (``\mathbf{n}(\mathbf{n}\cdot\mathbf{v})`` in
+        Rodrigues' formula, ``\mathbf{b}(\mathbf{a}\cdot\mathbf{c})``), said under
+        ``read as:``. A matrix keeps the refusal (``R(\theta)`` without a model: the
+        books mean an application)."""
+        shape = _shape(fv)
+        g = self.overrides.get(getattr(f, "key", None)) or self.glyphs.get(getattr(f, "key", None))
+        return shape is not None and shape[1] == 1 and shape[0] > 1 and g is not None \
+            and g.kind in ("let", "free") and g.name not in self.model_rhs
 
     def _choose(self, f, fv, x, arg, sup):
         """``X(\\mathbf{y})``, ``X`` a model without parameters, ``\\mathbf{y}`` no scalar:

@@ -230,8 +230,11 @@ class BookStrPrinter(_BookNotation, StrPrinter):
     def _print_Cross(self, expr):
         # the derivations' Cross(u, v) matrix expression (sympy's own _print_Cross is for
         # sympy.vector and would read attributes this class does not have)
-        u, v = expr.args
-        return f"{self._factor(u)} × {self._factor(v)}"
+        # a cross product operand of its own in parentheses: × is not associative, and
+        # (a × b) × c and a × (b × c) both printed "a × b × c" before (wave 6)
+        u, v = (f"({self._print(x)})" if isinstance(x, type(expr)) else self._factor(x)
+                for x in expr.args)
+        return f"{u} × {v}"
 
     def _print_BlockMatrix(self, expr):
         b = expr.blocks
