@@ -167,3 +167,11 @@ def test_a_cross_product_of_a_cross_product_keeps_its_parentheses():
     left, right = notation.text(Cross(Cross(a, b), c)), notation.text(Cross(a, Cross(b, c)))
     assert left == "(a × b) × c" and right == "a × (b × c)"
     assert notation.text(Cross(Cross(a, b), Cross(b, c))) == "(a × b) × (b × c)"
+
+
+def test_a_power_of_a_sine_is_printed_as_the_books_do():
+    """(sin θ)² printed "sin θ²" until wave 6's fourth session, which reads as sin(θ²)."""
+    t = sp.Symbol("theta")
+    assert notation.text(sp.sin(t) ** 2) == "sin² θ"
+    assert notation.text(sp.sin(t ** 2)) == "sin(θ²)"
+    assert notation.text(1 - sp.cos(t) ** 3) == "1 - cos³ θ"

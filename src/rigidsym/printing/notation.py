@@ -208,6 +208,9 @@ class BookStrPrinter(_BookNotation, StrPrinter):
         if e == sp.S.Half:
             return f"√({self._print(b)})" if precedence(b) < PRECEDENCE["Atom"] else \
                 f"√{self._print(b)}"
+        if e.is_Integer and e > 0 and isinstance(b, sp.sin | sp.cos | sp.tan) \
+                and b.args[0].is_Atom:  # the book's sin² θ: "sin θ²" read as sin(θ²)
+            return f"{b.func.__name__}{str(e).translate(_SUPERSCRIPT)} {self._print(b.args[0])}"
         if e.is_Integer and e > 0:
             return self.parenthesize(b, PRECEDENCE["Pow"], strict=True) + \
                 str(e).translate(_SUPERSCRIPT)
