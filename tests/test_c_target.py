@@ -1087,3 +1087,29 @@ def test_homogeneity_degree_is_exact(terms, wrap):
         assert abs(sp.N(scaled - want, 60)) <= 1e-50 * (1 + abs(sp.N(want, 60)))
     with pytest.raises(ValueError):
         degree(sp.sin(x) + f, {x, y})
+
+
+@pytest.mark.parametrize("formula, recorded", [
+    (lambda v, r: v / (r**2 - 1), "r + 1 = 0 or r - 1 = 0"),
+    (lambda v, r: v / (v - r), "r - v = 0"),
+    (lambda v, r: v / (r**2 + v**2) ** 0.5, "r**2 + v**2 = 0"),
+    (lambda v, r: v / (1 + r**2), ""),                     # positive for real r: no set
+    (lambda v, r: (r**2 - 1) / (r - 1), ""),               # cancelled: r + 1
+])
+def test_a_vanishing_divisor_of_the_arguments_is_recorded(formula, recorded):
+    """Not only a bare argument (``v / r``): any divisor that can vanish for real arguments
+    is recorded (before, ``v / (r**2 - 1)`` went into kernels.json and the C header with an
+    empty singular set); one of constant sign is not."""
+    import warnings as W
+
+    from rigidsym.codegen.spec import Arg, Kernel, Out
+    from rigidsym.codegen.validate import DivisionWarning, validate
+
+    k = Kernel(name="k", summary="s", formula="f", ids=("x",), sources=(),
+               args=(Arg("v", (), "any", "v"), Arg("r", (), "any", "r")),
+               outputs=(Out("y", (), "y"),), build=lambda v, r: {"y": formula(v, r)})
+    with W.catch_warnings(record=True) as got:
+        W.simplefilter("always")
+        out = validate(k, "m")
+    assert out.singular == recorded
+    assert bool([w for w in got if issubclass(w.category, DivisionWarning)]) == bool(recorded)

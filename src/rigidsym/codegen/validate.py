@@ -54,6 +54,37 @@ def _build(kernel: Kernel, module: str, what: str, fn, syms: dict):
                        f"{_where(exc)}") from None
 
 
+def _vanishing_divisors(e, allowed: set) -> list:
+    """The factors of ``e``'s divisors that can be zero for real arguments: every base of a
+    negative power (``v / r``, ``v / (r**2 - 1)``, ``1 / sqrt(x)``), factored over the
+    rationals; a factor of constant sign (``1 + r**2``: sympy proves it positive for real
+    ``r``) is none. A symbol factor whose numerator vanishes with it (``sin r / r``: may be
+    removable, left to the generator's removable rewrite) is none either; another factor
+    is kept (a removable ``(r**2 - 1) / (r - 1)`` is cancelled before this)."""
+    e = sp.cancel(sp.together(e))
+    bases = [node.base for node in sp.preorder_traversal(e)
+             if isinstance(node, sp.Pow) and node.exp.is_negative
+             and node.base.free_symbols and node.base.free_symbols <= allowed]
+    if not bases:
+        return []
+    num, _ = sp.fraction(e)
+    out: list = []
+    for b in bases:
+        try:
+            factors = [f for f, _ in sp.factor_list(b)[1]]
+        except (sp.PolynomialError, NotImplementedError):
+            factors = [b]
+        for f in factors:
+            while isinstance(f, sp.Pow) and f.exp.is_positive:  # sqrt(x) vanishes with x
+                f = f.base
+            if not f.free_symbols or f in out or f.is_positive or f.is_negative:
+                continue
+            if isinstance(f, sp.Symbol) and sp.sympify(num).subs(f, 0).is_zero is True:
+                continue
+            out.append(f)
+    return sorted(out, key=str)
+
+
 def validate(kernel: Kernel, module: str) -> Kernel:
     """``kernel`` checked; returned with its singular set filled in where a division by an
     argument that can vanish was found and none was declared (with a
@@ -95,28 +126,17 @@ def validate(kernel: Kernel, module: str) -> Kernel:
         return kernel
     dens: list = []
     for e in outs:
-        e = sp.sympify(e)
-        # an argument (a scalar symbol) in a denominator; a quotient whose numerator
-        # vanishes with it (sin r / r) may be removable, and is left to the generator's
-        # removable rewrite
-        cands = {node.base for node in sp.preorder_traversal(e)
-                 if isinstance(node, sp.Pow) and node.exp.is_negative
-                 and isinstance(node.base, sp.Symbol) and node.base in allowed}
-        if not cands:
-            continue
-        num, den = sp.fraction(sp.together(e))
-        for s in sorted(cands, key=str):
-            if s in dens or not den.has(s):
-                continue
-            if sp.sympify(num).subs(s, 0).is_zero is not True:
-                dens.append(s)
+        for f in _vanishing_divisors(sp.sympify(e), allowed):
+            if f not in dens:
+                dens.append(f)
     if not dens:
         return kernel
     where = " or ".join(f"{d} = 0" for d in dens)
     owner = next((a.name for a in kernel.args
                   for s in ([syms[a.name]] if a.shape == () else list(syms[a.name]))
                   if s in dens[0].free_symbols), "")
-    warnings.warn(f"{head}: divides by the argument {dens[0]}, which can be 0, and declares "
+    what = f"the argument {dens[0]}" if isinstance(dens[0], sp.Symbol) else str(dens[0])
+    warnings.warn(f"{head}: divides by {what}, which can be 0, and declares "
                   f"no singular "
                   f"set: recorded as {where!r} (declare Kernel(singular=...) to say it in "
                   f"your words)", DivisionWarning, stacklevel=2)
