@@ -167,6 +167,12 @@ def test_a_cross_product_of_a_cross_product_keeps_its_parentheses():
     left, right = notation.text(Cross(Cross(a, b), c)), notation.text(Cross(a, Cross(b, c)))
     assert left == "(a × b) × c" and right == "a × (b × c)"
     assert notation.text(Cross(Cross(a, b), Cross(b, c))) == "(a × b) × (b × c)"
+    # R (a × b) and (R a) × b, (a × b)ᵀ and a × bᵀ: each printed "R a × b", "a × bᵀ" before
+    R = sp.MatrixSymbol("R", 3, 3)
+    assert notation.text(R * Cross(a, b)) == "R (a × b)"
+    assert notation.text(Cross(R * a, R * b)) == "(R a) × (R b)"
+    assert notation.text(Cross(a, b).T * R) == "(a × b)ᵀ R"
+    assert notation.text(Cross(a + b, c)) == "(a + b) × c"
 
 
 def test_a_power_of_a_sine_is_printed_as_the_books_do():

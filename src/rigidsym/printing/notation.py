@@ -54,6 +54,11 @@ def _dot_operands(x):
     return None
 
 
+def _is_cross(x) -> bool:
+    """``x`` is the derivations' cross product (× binds like a product, and is no atom)."""
+    return type(x).__name__ == "Cross" and isinstance(x, sp.MatrixExpr)
+
+
 class _BookNotation:
     """What the text and LaTeX printers share: a dot product written ``a^T b`` (in a trace
     or an element ``[0, 0]``) prints as ``a·b``, an entry of a book matrix symbol with its
@@ -133,6 +138,8 @@ class BookStrPrinter(_BookNotation, StrPrinter):
         return "O" if r == c or 1 in (r, c) else f"O{r}{c}".translate(_SUBSCRIPT_DIGITS)
 
     def _print_Transpose(self, expr):
+        if _is_cross(expr.arg):  # (a × b)ᵀ, not a × bᵀ
+            return f"({self._print(expr.arg)})ᵀ"
         return self.parenthesize(expr.arg, PRECEDENCE["Pow"], strict=True) + "ᵀ"
 
     def _dot(self, a, b) -> str:
@@ -154,6 +161,8 @@ class BookStrPrinter(_BookNotation, StrPrinter):
         return "π"
 
     def _factor(self, x) -> str:
+        if _is_cross(x):  # R (a × b), not R a × b
+            return f"({self._print(x)})"
         return self.parenthesize(x, PRECEDENCE["Mul"], strict=True)
 
     def _print_Mul(self, expr):
@@ -235,8 +244,8 @@ class BookStrPrinter(_BookNotation, StrPrinter):
         # sympy.vector and would read attributes this class does not have)
         # a cross product operand of its own in parentheses: × is not associative, and
         # (a × b) × c and a × (b × c) both printed "a × b × c" before (wave 6)
-        u, v = (f"({self._print(x)})" if isinstance(x, type(expr)) else self._factor(x)
-                for x in expr.args)
+        u, v = (self._factor(x) if _is_cross(x) else self.parenthesize(
+            x, PRECEDENCE["Mul"], strict=False) for x in expr.args)  # (R a) × (R b)
         return f"{u} × {v}"
 
     def _print_BlockMatrix(self, expr):
