@@ -1038,12 +1038,23 @@ def check_rescued(lib_, name, dtype, scale, seed):
     double without long double): never NaN; where the exact result is a normal number of
     the type, status 0 (no EXTREME_INPUT left) and within 8 u of the sum of the terms'
     magnitudes (mpmath) of the exact value; where it overflows, NONFINITE_RESULT."""
+    xs = rescued_inputs(name, dtype, scale, seed)
+    fn = f"rigidsym_c_{name}" + ("_f32" if dtype == np.float32 else "")
+    status, (got,) = call(lib_, fn, *xs, ("out", OUT_SIZE[name]), dtype=dtype)
+    judge_rescued(name, dtype, xs, status, got)
+
+
+def rescued_inputs(name: str, dtype, scale: float, seed: int) -> list:
+    """The arguments of check_rescued's call: RESCUED's draw in the type (scalars as
+    Python floats holding a value of the type)."""
     rng = np.random.default_rng(seed)
     xs = [np.asarray(x, dtype) if not isinstance(x, float) else float(dtype(x))
           for x in RESCUED[name](rng, scale)]
-    xs = [x.item() if isinstance(x, np.ndarray) and x.ndim == 0 else x for x in xs]
-    fn = f"rigidsym_c_{name}" + ("_f32" if dtype == np.float32 else "")
-    status, (got,) = call(lib_, fn, *xs, ("out", OUT_SIZE[name]), dtype=dtype)
+    return [x.item() if isinstance(x, np.ndarray) and x.ndim == 0 else x for x in xs]
+
+
+def judge_rescued(name: str, dtype, xs: list, status: int, got: np.ndarray) -> None:
+    """check_rescued's verdict on one call's status and outputs."""
     ref, mag = _reference(name, xs)
     fi = np.finfo(dtype)
     assert not np.isnan(got).any(), (status, got)

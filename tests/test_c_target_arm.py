@@ -1,0 +1,173 @@
+"""The C target on Arm (issue 53), run under emulation (qemu-user): the NEON range test and
+the rescue where ``long double`` is ``double``, which the x86-64 tests only compile or
+imitate (``-DRIGIDSYM_C_NO_SSE2``, ``-DRIGIDSYM_C_NO_WIDE``).
+
+Two targets, each a Debian cross compiler with static linking and its qemu-user:
+- armhf (ARMv7-A, NEON, hard float): ``long double`` is ``double`` there, so the double
+  functions rescue extreme inputs by power-of-two rescaling, as on Cortex-M and Windows;
+- aarch64: NEON in 64-bit lanes, ``long double`` is IEEE quad (the wide rescue).
+
+On each: the example control loop matches the NumPy kernels to 1e-12; the vector range
+test calls a component odd exactly when the definition does (2e6 bit patterns per type);
+the scalar and batch functions of three kernels at inputs scaled to the ends of the range
+meet check_rescued's bound against mpmath. All ``slow``; each skips with its reason where
+the cross compiler or qemu is missing (``.ci/run`` installs them: Debian's qemu-user,
+gcc-arm-linux-gnueabihf, gcc-aarch64-linux-gnu).
+"""
+
+from __future__ import annotations
+
+import shutil
+import subprocess
+from pathlib import Path
+
+import numpy as np
+import pytest
+from test_c_target import (
+    _VECTOR_CHECK,
+    DOUBLE_SCALES,
+    EXAMPLE,
+    FLOAT_SCALES,
+    KERNELS_DIR,
+    OUT_SIZE,
+    RESCUED,
+    STRICT,
+    assert_matches,
+    expected,
+    judge_rescued,
+    rescued_inputs,
+    run_example,
+    sources,
+)
+
+pytestmark = pytest.mark.slow
+
+#: target: (compiler, its flags, qemu-user binary, long double is double there)
+TARGETS = {
+    "armhf": ("arm-linux-gnueabihf-gcc",
+              ["-march=armv7-a", "-mfpu=neon", "-mfloat-abi=hard"], "qemu-arm", True),
+    "aarch64": ("aarch64-linux-gnu-gcc", [], "qemu-aarch64", False),
+}
+
+
+@pytest.fixture(params=sorted(TARGETS))
+def target(request):
+    cc, flags, qemu, narrow = TARGETS[request.param]
+    missing = [t for t in (cc, qemu) if shutil.which(t) is None]
+    if missing:
+        pytest.skip(f"{' and '.join(missing)} not installed (Debian: qemu-user, "
+                    "gcc-arm-linux-gnueabihf, gcc-aarch64-linux-gnu)")
+    return request.param, [cc, *STRICT, "-O2", "-static", *flags], qemu, narrow
+
+
+def _build(cmd: list[str], srcs: list[Path], exe: Path) -> Path:
+    subprocess.run([*cmd, "-I", str(KERNELS_DIR), *map(str, srcs), "-o", str(exe), "-lm"],
+                   check=True, capture_output=True, text=True)
+    return exe
+
+
+def test_example_matches_numpy_on_arm(tmp_path, target):
+    name, cmd, qemu, _ = target
+    exe = _build(cmd, [EXAMPLE / "main.c", *sources()], tmp_path / f"loop_{name}")
+    wrapper = tmp_path / "run.sh"      # run_example runs one path: qemu in front of it
+    wrapper.write_text(f"#!/bin/sh\nexec {qemu} {exe}\n")
+    wrapper.chmod(0o755)
+    assert_matches(run_example(wrapper), expected())
+
+
+def test_neon_range_test_is_the_definition(tmp_path, target):
+    """On Arm the generic vector range test is the one the kernels take (no macro needed):
+    it must be compiled in (not "skip") and agree with the definition everywhere."""
+    name, cmd, qemu, _ = target
+    src = tmp_path / "check.c"
+    src.write_text(_VECTOR_CHECK)
+    exe = _build(cmd, [src], tmp_path / f"check_{name}")
+    out = subprocess.run([qemu, str(exe)], check=True, capture_output=True,
+                         text=True).stdout.strip()
+    assert out == "0", out
+
+
+_DRIVER = r"""
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "rigidsym_c.h"
+/* stdin: lines "KERNEL TYPE MODE n x1 ... xn" (TYPE d or f, MODE s for the scalar
+ * function or b for the batch one at count 1; x as C99 hex floats);
+ * stdout: "status o1 ... om" (hex). The arguments are the kernel's, flattened in order. */
+#define CALLS(T, S) \
+static int call_##T(const char *k, int batch, const T *x, T *o) { \
+    int st = 0; \
+    if (!strcmp(k, "twist_transfer")) \
+        return batch ? rigidsym_c_twist_transfer##S##_batch(1, x, x + 6, x + 9, o, &st) \
+                     : rigidsym_c_twist_transfer##S(x, x + 6, x + 9, o); \
+    if (!strcmp(k, "body_energy")) \
+        return batch ? rigidsym_c_body_energy##S##_batch(1, x, x + 1, x + 4, x + 13, o, &st) \
+                     : rigidsym_c_body_energy##S(x[0], x + 1, x + 4, x + 13, o); \
+    if (!strcmp(k, "planar_arm_tip")) \
+        return batch ? rigidsym_c_planar_arm_tip##S##_batch(1, x, x + 1, x + 2, x + 3, o, &st) \
+                     : rigidsym_c_planar_arm_tip##S(x[0], x[1], x[2], x[3], o); \
+    return -1; \
+}
+CALLS(double, )
+CALLS(float, _f32)
+int main(void)
+{
+    char k[64], t[4], m[4];
+    int n, i;
+    while (scanf("%63s %3s %3s %d", k, t, m, &n) == 4) {
+        double xd[32], od[8];
+        float xf[32], of[8];
+        char buf[64];
+        int st;
+        for (i = 0; i < n; ++i) {
+            if (scanf("%63s", buf) != 1)
+                return 2;
+            xd[i] = strtod(buf, NULL);
+            xf[i] = (float)xd[i];
+        }
+        st = t[0] == 'd' ? call_double(k, m[0] == 'b', xd, od)
+                         : call_float(k, m[0] == 'b', xf, of);
+        printf("%d", st);
+        for (i = 0; i < 8; ++i)
+            printf(" %a", t[0] == 'd' ? od[i] : (double)of[i]);
+        printf("\n");
+    }
+    return 0;
+}
+"""
+
+
+def test_extreme_inputs_are_right_on_arm(tmp_path, target):
+    """check_rescued (test_c_target.py) on the target, for the scalar and the batch
+    function: where long double is double (armhf) the double functions rescale, as the
+    x86-64 build imitates with -DRIGIDSYM_C_NO_WIDE; on aarch64 they re-run in quad."""
+    name, cmd, qemu, narrow = target
+    src = tmp_path / "driver.c"
+    src.write_text(_DRIVER)
+    exe = _build(cmd, [src, *sources()], tmp_path / f"driver_{name}")
+    if narrow:       # the premise of this target: no wider type than double
+        probe = tmp_path / "ld.c"
+        probe.write_text('#include <float.h>\n#include <stdio.h>\n'
+                         'int main(void) { printf("%d\\n", LDBL_MANT_DIG); return 0; }\n')
+        ld = _build(cmd, [probe], tmp_path / "ld")
+        assert subprocess.run([qemu, str(ld)], check=True, capture_output=True,
+                              text=True).stdout.strip() == "53"
+    cases, lines = [], []
+    for dtype, scales in ((np.float64, DOUBLE_SCALES), (np.float32, FLOAT_SCALES)):
+        for kernel in sorted(RESCUED):
+            for scale in scales:
+                for seed in range(6):
+                    xs = rescued_inputs(kernel, dtype, scale, seed)
+                    flat = np.concatenate([np.ravel(x) for x in xs]).astype(np.float64)
+                    for mode in "sb":
+                        cases.append((kernel, dtype, xs))
+                        lines.append(f"{kernel} {'d' if dtype == np.float64 else 'f'} {mode} "
+                                     f"{flat.size} " + " ".join(float(v).hex() for v in flat))
+    out = subprocess.run([qemu, str(exe)], input="\n".join(lines) + "\n", check=True,
+                         capture_output=True, text=True).stdout.splitlines()
+    assert len(out) == len(cases)
+    for (kernel, dtype, xs), line in zip(cases, out, strict=True):
+        status, *vals = line.split()
+        got = np.array([float.fromhex(v) for v in vals[:OUT_SIZE[kernel]]], dtype)
+        judge_rescued(kernel, dtype, xs, int(status), got)
