@@ -1,8 +1,9 @@
-"""A free scalar that occurs only in sin, cos, tan, ... at integer multiples is an angle
-(:mod:`rigidsym.latex.periodic`, wave 6): the relation has period 2π in it, so deciding it on
-the zero test's (-π, π) decides it for every real value. Before, ``\\sin 2\\theta =
-2\\sin\\theta\\cos\\theta`` was undecided ("trig of non-angle argument θ") unless the reader
-declared ``--let '\\theta: angle'``. Where (-π, π) would be an assumption (a half angle, a
+"""A free scalar that occurs only in sin, cos, tan, ... at rational multiples is d times an
+angle (:mod:`rigidsym.latex.periodic`, wave 6): the relation has period 2πd in it, so
+deciding it for the angle on the zero test's (-π, π) decides it for every real value.
+Before, ``\\sin 2\\theta = 2\\sin\\theta\\cos\\theta`` was undecided ("trig of non-angle
+argument θ") unless the reader declared ``--let '\\theta: angle'``, and a half angle stayed
+undecided even then or was decided on (-π, π) only. Where (-π, π) would be an assumption (a
 bare occurrence) the symbol stays free and the reason names the fix."""
 
 from __future__ import annotations
@@ -38,9 +39,37 @@ def test_the_verdict_is_that_of_a_declared_angle(latex, lets, verdict):
     assert got.verdict == declared.verdict == verdict, got.detail
 
 
+@pytest.mark.parametrize("latex, verdict", [
+    (r"\tan\frac{\theta}{2} = \frac{\sin\theta}{1 + \cos\theta}", "verified"),
+    (r"2\sin\frac{\theta}{2}\cos\frac{\theta}{2} = \sin\theta", "verified"),
+    (r"\sin\frac{2\theta}{3} = 2\sin\frac{\theta}{3}\cos\frac{\theta}{3}", "verified"),
+    # true on (-pi, pi) only: decided over theta = 2 psi, a whole period (-2 pi, 2 pi)
+    (r"\cos\frac{\theta}{2} = \sqrt{\frac{1 + \cos\theta}{2}}", "does-not-hold"),
+    (r"\sin\frac{\theta}{3} = \sin\theta", "does-not-hold"),
+])
+def test_a_fractional_multiple_is_decided_over_a_whole_period(latex, verdict):
+    """theta at multiples of 1/d is d psi, psi an angle: a true identity verifies, and a
+    relation that fails anywhere fails with an exact counterexample at which mpmath (50
+    digits, from the counterexample's theta alone) finds the two sides apart."""
+    import mpmath as mp
+    import sympy as sp
+
+    got = rigidsym.check_latex(latex)
+    assert got.verdict == verdict, got.detail
+    if verdict == "verified":
+        return
+    theta = next(s for s in got.counterexample["symbols"] if s["latex"] == r"\theta")
+    mp.mp.dps = 50
+    t = mp.mpf(str(sp.N(sp.sympify(theta["exact"]), 60)))
+    sides = {
+        r"\cos\frac{\theta}{2} = \sqrt{\frac{1 + \cos\theta}{2}}":
+            (mp.cos(t / 2), mp.sqrt((1 + mp.cos(t)) / 2)),
+        r"\sin\frac{\theta}{3} = \sin\theta": (mp.sin(t / 3), mp.sin(t)),
+    }[latex]
+    assert abs(sides[0] - sides[1]) > mp.mpf("1e-30"), (theta, sides)
+
+
 @pytest.mark.parametrize("latex", [
-    # false for theta in (pi, 3 pi): true on (-pi, pi), so an inferred angle would verify it
-    r"\cos\frac{\theta}{2} = \sqrt{\frac{1 + \cos\theta}{2}}",
     r"\theta\sin\theta = \theta\cos\theta",  # a bare occurrence
 ])
 def test_where_the_range_would_be_an_assumption_the_symbol_stays_free(latex, capsys):

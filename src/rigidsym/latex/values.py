@@ -129,7 +129,11 @@ def _glyph_values(rd: _Reader, lend: dict, values: dict,
     free_ = [f for f, k in zip(free_, free, strict=True) if k not in angles]
     notes += [f"{k}: an angle (no --let declares it): it occurs only in {', '.join(fs)}, at "
               f"integer multiples, so the relation has period 2π in {k} and deciding it for "
-              f"{k} in (-π, π) decides it for every real {k}" for k, fs in angles.items()]
+              f"{k} in (-π, π) decides it for every real {k}" if d == 1 else
+              f"{k} = {d}\\psi_{{{k}}}, \\psi_{{{k}}} an angle (no --let declares {k}): it "
+              f"occurs only in {', '.join(fs)}, at multiples of 1/{d}, so the relation has "
+              f"period {2 * d}π in {k} and deciding it for \\psi_{{{k}}} in (-π, π), {k} in "
+              f"(-{d}π, {d}π), decides it for every real {k}" for k, (fs, d) in angles.items()]
     if free_:
         notes.append("free, no --let declares them (shapes by the book's convention: bold "
                      "lower-case a 3-vector, bold capital 3×3, else a scalar): "
@@ -140,16 +144,19 @@ def _glyph_values(rd: _Reader, lend: dict, values: dict,
 
 
 def _periodic_angles(rd: _Reader, free: list[str], values: dict, printed,
-                     scalars: set[str]) -> dict[str, list[str]]:
+                     scalars: set[str]) -> dict[str, tuple[list[str], int]]:
     """The free scalar glyphs that are angles by their uses (:mod:`rigidsym.latex.periodic`),
-    each with the trigonometric functions it occurs in; their angle atoms into ``values``."""
+    each with the trigonometric functions it occurs in and its multiple d of an angle; d
+    times their angle atoms into ``values``."""
     syms = {_symbol(rd.over.get(k) or rd.glyphs[k]): k for k in free
             if not (rd.over.get(k) or rd.glyphs[k]).shape}
     found = periodic_angles([*printed, *values.values()], syms)
     out = {}
-    for sym, fs in found.items():
-        values[sym] = _fresh(_sym.angle, sym.name, scalars)
-        out[syms[sym]] = fs
+    for sym, (fs, d) in found.items():
+        # d > 1: the angle is a quantity of its own (ψ_θ), printed beside θ = d ψ_θ
+        values[sym] = _fresh(_sym.angle, sym.name, scalars) if d == 1 else \
+            d * _fresh(_sym.angle, f"psi_{sym.name}", scalars)
+        out[syms[sym]] = (fs, d)
     return out
 
 
