@@ -97,7 +97,7 @@ def test_an_undecided_verdict_prints_its_reason(capsys):
     code, out, _ = _cli(capsys, "--latex", NESTED, "--let", "x: vector")
     assert code == 3
     assert "Undecided: printed: irrational root at the sample point" in out
-    code, out, _ = _cli(capsys, "--latex", r"\sin x = 2\sin(x/2)\cos(x/2)")
+    code, out, _ = _cli(capsys, "--latex", r"x\sin x = 2x\sin(x/2)\cos(x/2)")
     assert code == 3 and "Undecided: printed: trig" in out
 
 
@@ -254,11 +254,38 @@ def test_a_shape_mismatch_of_declared_symbols_is_still_a_slip():
     (r"P^T R^T R P = P^T P", "craig", [], "verified"),      # capital P a vector in Craig
     (r"\mathbf{C}^T\mathbf{C} = \mathbf{1}", "barfoot", [], "verified"),
     (r"\mathbf{u}^T\mathbf{u} = 1", "sola", [], "verified"),
+    # the elementary rotations: about different axes they do not commute (read as free
+    # scalars before, these verified); about one axis they compose by adding the angles
+    (r"R_{x,\alpha}R_{z,\beta} = R_{z,\beta}R_{x,\alpha}", "spong", [], "does-not-hold"),
+    (r"R_{z,\theta}R_{z,\phi} = R_{z,\phi}R_{z,\theta}", "spong", [], "verified"),
+    (r"R_{k,\theta}^T R_{k,\theta} = I", "spong", [], "verified"),
+    (r"R_X(\alpha)R_Z(\beta) = R_Z(\beta)R_X(\alpha)", "craig", [], "does-not-hold"),
+    (r"R_Z(\alpha)R_Z(\beta) = R_Z(\alpha + \beta)", "craig", [], "verified"),
+    (r"R_Y(\alpha)R_Y(\beta) = R_Y(\alpha - \beta)", "craig", [], "does-not-hold"),
+    (r"\mathbf{R}_z(\varphi)^T = \mathbf{R}_z(-\varphi)", "siciliano", [], "verified"),
+    (r"\mathbf{R}_x(\varphi)\mathbf{R}_y(\psi) = \mathbf{R}_y(\psi)\mathbf{R}_x(\varphi)",
+     "siciliano", [], "does-not-hold"),
+    (r"R_x(\theta)^T R_x(\theta) = I", "corke", [], "verified"),
 ])
 def test_a_books_notation_fixes_what_its_symbols_are(latex, name, let, verdict):
     r = rigidsym.check_latex(latex, let=let, notation=name)
     assert r.verdict == verdict, r.detail
     assert any(n.startswith(f"--notation {name}") for n in r.model)  # the lines it rests on
+
+
+@pytest.mark.parametrize("latex, name, key", [
+    (r"R_x(\alpha)R_z(\beta) = R_z(\beta)R_x(\alpha)", "spong", "R_{x}"),  # Craig's spelling
+    (r"R_{a}R_{b} = R_{b}R_{a}", "lynch-park", "R_{a}"),
+    (r"T_{e}T_{f} = T_{f}T_{e}", "craig", "T_{e}"),
+])
+def test_a_subscripted_matrix_letter_the_notation_does_not_declare_is_refused(latex, name,
+                                                                               key):
+    """R a rotation in the book, R_{x} undeclared: refused, naming it and the fix, never a
+    free scalar (as scalars both sides commute: these verified before)."""
+    with pytest.raises(rigidsym.BadInput) as exc:
+        rigidsym.check_latex(latex, notation=name)
+    said = str(exc.value)
+    assert f"{key}: --notation {name} declares" in said and f"--let '{key}: " in said, said
 
 
 def test_every_notation_table_loads_and_names_its_book():

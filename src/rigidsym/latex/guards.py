@@ -21,6 +21,7 @@ import re
 import sympy as sp
 
 from rigidsym.checking.deciding.errors import BadInput
+from rigidsym.latex.lets import kind_of
 
 __all__: list[str] = []
 
@@ -109,6 +110,33 @@ def book_meanings(free: list[str]) -> None:
                 f"{m.group(1)} in Murray-Li-Sastry: say which, with --let '{key}: unit "
                 f"vector' (or another KIND), --notation lynch-park or --notation "
                 f"murray-li-sastry")
+
+
+_SUBSCRIPTED = re.compile(r"^(\\mathbf\{[A-Za-z]\}|\\boldsymbol\{\\?[A-Za-z]+\}|[A-Z])_")
+
+
+def notation_bases(free: list[str], glyphs: dict, table) -> None:
+    """A free glyph with a subscript whose letter the notation ``table`` declares a matrix
+    (Spong's ``R`` a rotation, so ``R_{x}`` or ``R_{0,1}``): bad input naming it, never a
+    free scalar by Angeles' convention, which that book does not follow (an undeclared
+    ``R_x(\\alpha) R_z(\\beta)`` read as scalars would commute)."""
+    if table is None:
+        return
+    for key in free:
+        m = _SUBSCRIPTED.match(key)
+        g = glyphs.get(key)
+        if not m or g is None or g.shape:
+            continue
+        base = table.let_for(m.group(1))
+        if base is None or not base.kind:
+            continue
+        shape = kind_of(base.kind, base.text)[0]
+        if len(shape) == 2 and shape[1] > 1:
+            raise BadInput(
+                f"--latex: {key}: --notation {table.name} declares {m.group(1)} "
+                f"'{base.kind}' but not {key}, which would be a free scalar: say what it "
+                f"is, with --let '{key}: {base.kind}' (or another KIND) or a model "
+                f"(--let '{key} = ...')")
 
 
 def _through(model, models: dict) -> set[str]:

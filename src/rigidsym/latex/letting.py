@@ -24,6 +24,7 @@ from rigidsym.checking.deciding.errors import BadInput
 from rigidsym.checking.deciding.registry import Rel, Statement
 from rigidsym.latex import guards
 from rigidsym.latex.bookrules import SETS
+from rigidsym.latex.declgraph import glyph_keys
 from rigidsym.latex.glyphrows import _Reader
 from rigidsym.latex.lending import lent
 from rigidsym.latex.lets import KIND_WORDS, Let, read_lets
@@ -184,13 +185,29 @@ def read_one(latex: str, lets: list[Let], book: str | None = None,
     """
     lend = lend or {}
     lets = list(lets) + declared_lets(latex, lets)  # ", R \\in SO(3)": a --let (issue 40)
+    functions = _notation_functions(latex, lets, table)
+    lets += functions
     rd = _Reader(lets, book, lend, table)
+    rd.by_notation |= {x.key for x in functions}
     rd.choices = dict(choices or {})
     try:
         return _read(rd, latex, lets, lend, table)
     except (LatexError, BadInput) as exc:
         exc.choice_points = {k: rd.choices.get(k, alternatives(k)[0]) for k in rd.choice_points}
         raise
+
+
+def _notation_functions(latex: str, lets: list[Let], table) -> list[Let]:
+    """The functions of the notation ``table`` (``R_X(\\theta) = ...``) whose NAME the LaTeX
+    mentions and no ``--let`` declares: read as that ``--let`` would be."""
+    if table is None or not table.functions:
+        return []
+    try:
+        used = glyph_keys(latex)
+    except LatexError:
+        return []  # the parse proper says why
+    own = {x.key for x in lets}
+    return [x for x in table.functions if x.key in used and x.key not in own]
 
 
 def _read(rd: _Reader, latex: str, lets: list[Let], lend: dict, table) -> Reading:
@@ -219,6 +236,7 @@ def _read(rd: _Reader, latex: str, lets: list[Let], lend: dict, table) -> Readin
     guards.applications(parsed.applied, models, glyphs)
     guards.time_derivatives(free, rd.used, rd.declared)
     guards.book_meanings(free)
+    guards.notation_bases(free, glyphs, table)
     model = _resolve(values, explicit)
     _EXPLICIT_CACHE.clear()
     printed, kind = _relations(parsed)

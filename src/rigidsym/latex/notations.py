@@ -7,9 +7,10 @@ notation, e.g. Murray-Li-Sastry's ``\\hat\\omega = [\\omega]_\\times``); ``#`` s
 comment. In a NAME and its LaTeX, ``{i}`` stands for a joint index (digits: ``c_{12}`` with
 ``c_{i} = \\cos(\\theta_{i})`` is ``\\cos(\\theta_{1} + \\theta_{2})``, the sum of the indexed
 angles as Siciliano, Spong and Craig abbreviate) and ``{x}`` for a Greek letter
-(``c_{\\theta}``). A ``--let`` of the same symbol wins over the table; a line whose symbol
-the LaTeX does not use is ignored (unlike a ``--let``). Every line used is printed under
-``read as:``.
+(``c_{\\theta}``, Spong's ``R_{z,\\theta}`` from ``R_{z,{x}}``). A line ``NAME(params) =
+LATEX`` is a function (Craig's ``R_X(\\theta)``), lent where the LaTeX mentions NAME. A
+``--let`` of the same symbol wins over the table; a line whose symbol the LaTeX does not use
+is ignored (unlike a ``--let``). Every line used is printed under ``read as:``.
 """
 
 from __future__ import annotations
@@ -29,6 +30,7 @@ NOTATIONS = ("lynch-park", "murray-li-sastry", "siciliano", "spong", "craig", "f
              "barfoot", "sola", "corke")
 
 _INDEX, _GREEK = r"(\d+)", r"(\\[A-Za-z]+)"
+_STAND_IN = r"\iota"  # the name's Greek letter of a pattern such as R_{z,{x}}
 
 
 @dataclass(frozen=True)
@@ -40,12 +42,15 @@ class Notation:
         title: the book, edition and sections it follows (the file's first comment line).
         lets: the table's literal lines (no ``{i}`` or ``{x}``), as :class:`Let`.
         patterns: ``(regex of a glyph key, placeholder, Let)`` of the lines with one.
+        functions: the ``NAME(params) = LATEX`` lines (Craig's ``R_X(\\theta)``), each a
+            ``--let`` function wherever the LaTeX mentions NAME and no ``--let`` declares it.
     """
 
     name: str
     title: str
     lets: tuple[Let, ...]
     patterns: tuple[tuple[re.Pattern, str, Let], ...]
+    functions: tuple[Let, ...] = ()
 
     def let_for(self, key: str) -> Let | None:
         """The declaration of the glyph ``key`` under this notation, or ``None``."""
@@ -89,20 +94,28 @@ def notation(name: str) -> Notation:
         .read_text("utf-8")
     lines = text.splitlines()
     title = lines[0].lstrip("# ").strip() if lines else key
-    lets, patterns = [], []
+    lets, patterns, functions = [], [], []
     for n, line in enumerate(lines, 1):
         line = line.split(" #")[0].strip() if not line.startswith("#") else ""
         if not line:
             continue
+        # a Greek letter after a comma of a subscript (Spong's R_{z,{x}}): the name is read
+        # with a stand-in letter, which the pattern then matches as any Greek letter
+        inner = ",{x}}" in line.split("=")[0]
         try:
-            (x,) = read_lets([line])
+            (x,) = read_lets([line.replace(",{x}}", "," + _STAND_IN + "}", 1) if inner
+                              else line])
         except (BadInput, ValueError) as exc:
             raise BadInput(f"notation {key}, line {n}: {exc}") from None
-        hole = "{i}" if "_{i}" in x.key else "{x}" if "_{x}" in x.key else ""
+        if x.params:  # R_X(\theta) = ...: a function, taken where the LaTeX applies it
+            functions.append(x)
+            continue
+        hole = "{i}" if "_{i}" in x.key else "{x}" if "_{x}" in x.key or inner else ""
         if hole:
-            rx = re.escape(x.key).replace(re.escape(hole), "{" + (
-                _INDEX if hole == "{i}" else _GREEK) + "}")
+            rx = re.escape(x.key).replace(re.escape(_STAND_IN if inner else hole), (
+                "{" + _INDEX + "}" if hole == "{i}" else _GREEK if inner else
+                "{" + _GREEK + "}"))
             patterns.append((re.compile(rx), hole, x))
         else:
             lets.append(x)
-    return Notation(key, title, tuple(lets), tuple(patterns))
+    return Notation(key, title, tuple(lets), tuple(patterns), tuple(functions))
