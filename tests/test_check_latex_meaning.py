@@ -288,6 +288,33 @@ def test_a_subscripted_matrix_letter_the_notation_does_not_declare_is_refused(la
     assert f"{key}: --notation {name} declares" in said and f"--let '{key}: " in said, said
 
 
+@pytest.mark.parametrize("latex", [
+    r"f(\mathbf{a} + \mathbf{b}) = f(\mathbf{a}) + f(\mathbf{b})",  # verified before: linear
+    r"f(x + y) = f(x) + f(y)",
+    r"g_1(2\theta) = 2 g_1(\theta)",
+    r"h(\mathbf{R}\mathbf{a}) = \mathbf{R} h(\mathbf{a})",
+])
+def test_an_undefined_function_letter_is_never_a_product(latex):
+    """f, g, h before a parenthesis with nothing defining them: refused, naming both
+    readings' --let, never the product (which makes every such f linear)."""
+    from rigidsym.latex.shapes import LatexError
+
+    with pytest.raises(LatexError) as exc:
+        rigidsym.check_latex(latex)
+    said = str(exc.value)
+    assert "(x) = ...' (a function)" in said and ": scalar' (the product)" in said, said
+
+
+@pytest.mark.parametrize("latex, let, verdict", [
+    (r"f(x + y) = f(x) + f(y)", [r"f(x) = x^2"], "does-not-hold"),
+    (r"f(x + y) = f(y + x)", [r"f(x) = \sin x"], "verified"),
+    (r"f(x + y) = fx + fy", [r"f: scalar"], "verified"),
+    (r"m(a + b) = ma + mb", [], "verified"),          # any other letter: the product
+])
+def test_a_declared_function_letter_reads_as_declared(latex, let, verdict):
+    assert rigidsym.check_latex(latex, let=let).verdict == verdict
+
+
 def test_every_notation_table_loads_and_names_its_book():
     from rigidsym.latex.notations import NOTATIONS, notation
 

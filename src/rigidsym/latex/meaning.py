@@ -75,6 +75,7 @@ def as_written(h):
     return BracketCpm(*h.args) if type(h) is Cpm else h
 
 
+_FUNCTION_LETTER = re.compile(r"[fgh](?:_|'|$)")  # f, f_1, g', h_{ij}: a function's letter
 _TIME = sp.Symbol("t", real=True)  # the plain letter t (rigidsym.latex.parser)
 _SIZE = re.compile(r"(\d)(?:\\times\s*(\d))?")
 
@@ -139,9 +140,27 @@ class MeaningRules:
             self._note(f"{f.key}({a}): {f.key} applied to {a}, not a product ({f.key} is no "
                        f"scalar): {f.key} itself, depending on {a} as its model says")
             return self.power([fv, sup]) if sup is not None else fv
+        if self.reader and self._function_letter(f):
+            from rigidsym.printing import notation
+
+            raise LatexError(
+                f"{f.key}({notation.text(x)}): {f.key} is a function in the books (f, g, h) "
+                f"but nothing defines it here; read as the product {f.key} "
+                f"({notation.text(x)}) the verdict would rest on a guess: say which, with "
+                f"--let '{f.key}(x) = ...' (a function) or --let '{f.key}: scalar' (the "
+                f"product)", "apply")
         if sup is not None:  # a(b + c)^2: the power binds to the parenthesis
             arg = self.power([arg, sup])
         return self.mul([f, arg])
+
+    def _function_letter(self, f) -> bool:
+        """``f`` is a free glyph (no ``--let``, model, module, book row or notation line)
+        written with the letter f, g or h: ``f(\\mathbf{a} + \\mathbf{b})`` is a function
+        there, which the product reading would make linear (it verified ``f(a + b) = f(a) +
+        f(b)`` before the fifth session of wave 6)."""
+        key = getattr(f, "key", None)
+        g = self.overrides.get(key) or self.glyphs.get(key)
+        return g is not None and g.kind == "free" and _FUNCTION_LETTER.match(key) is not None
 
     def _modelless_vector(self, f, fv) -> bool:
         r"""``f`` is a vector (n x 1, n > 1) that no model, module or book defines: a free
