@@ -181,3 +181,15 @@ def test_a_power_of_a_sine_is_printed_as_the_books_do():
     assert notation.text(sp.sin(t) ** 2) == "sin² θ"
     assert notation.text(sp.sin(t ** 2)) == "sin(θ²)"
     assert notation.text(1 - sp.cos(t) ** 3) == "1 - cos³ θ"
+
+
+def test_a_square_root_covers_its_whole_radicand():
+    """‖R a‖ printed "√aᵀ Rᵀ R a" until wave 6's fifth session: the root seemed to cover aᵀ
+    only. A radicand that is one group keeps its own parentheses, never doubled."""
+    a, R = sp.MatrixSymbol("a", 3, 1), sp.MatrixSymbol("R", 3, 3)  # as the reader reads it
+    assert notation.text(sp.sqrt(sp.Trace(a.T * R.T * R * a))) == "√(aᵀ Rᵀ R a)"
+    assert notation.text(sp.sqrt(sp.Trace(a.T * a))) == "√(a·a)"
+    x, y = sp.symbols("x y")
+    assert notation.text(sp.sqrt(x)) == "√x"
+    assert notation.text(sp.sqrt(x + y)) == "√(x + y)"
+    assert notation.text(sp.sqrt(x * y)) == "√(x y)"

@@ -59,6 +59,18 @@ def _is_cross(x) -> bool:
     return type(x).__name__ == "Cross" and isinstance(x, sp.MatrixExpr)
 
 
+
+def _one_group(text: str) -> bool:
+    """``text`` is one parenthesised group (``(a·a)``, not ``(a) (b)``)."""
+    if not (text.startswith("(") and text.endswith(")")):
+        return False
+    depth = 0
+    for i, ch in enumerate(text):
+        depth += (ch == "(") - (ch == ")")
+        if depth == 0 and i < len(text) - 1:
+            return False
+    return True
+
 class _BookNotation:
     """What the text and LaTeX printers share: a dot product written ``a^T b`` (in a trace
     or an element ``[0, 0]``) prints as ``a·b``, an entry of a book matrix symbol with its
@@ -215,8 +227,11 @@ class BookStrPrinter(_BookNotation, StrPrinter):
     def _print_Pow(self, expr, rational=False):
         b, e = expr.base, expr.exp
         if e == sp.S.Half:
-            return f"√({self._print(b)})" if precedence(b) < PRECEDENCE["Atom"] else \
-                f"√{self._print(b)}"
+            # √ binds to an atom only: √(aᵀ Rᵀ R a), never √aᵀ Rᵀ R a
+            atom = b.is_Atom or isinstance(b, sp.MatrixSymbol)
+            text = self._print(b)
+            return f"√{text}" if atom and precedence(b) >= PRECEDENCE["Atom"] \
+                or _one_group(text) else f"√({text})"
         if e.is_Integer and e > 0 and isinstance(b, sp.sin | sp.cos | sp.tan) \
                 and b.args[0].is_Atom:  # the book's sin² θ: "sin θ²" read as sin(θ²)
             return f"{b.func.__name__}{str(e).translate(_SUPERSCRIPT)} {self._print(b.args[0])}"
