@@ -230,6 +230,27 @@ def test_a_written_zero_size_that_cannot_be_added_is_bad_input(capsys):
     assert code == 2 and "a sum of a 3x3 matrix and a 3x1 matrix" in err, err
 
 
+@pytest.mark.parametrize("latex, said", [
+    # A^{-1} A is 1 for A a scalar by the convention: the sides differed (1 = the identity)
+    # and it was does-not-hold, though A had cancelled from the relation
+    (r"A^{-1}A = I", "--let 'A: KIND' (for a 3×3 matrix"),
+    (r"I = A^{-1}A", "--let 'A: KIND' (for a 3×3 matrix"),
+    # the determinant of a scalar by the convention: undecided before
+    (r"\det R = 1", "det of a scalar: expected a square matrix"),
+])
+def test_a_shape_the_convention_gave_is_never_decided_on(latex, said, capsys):
+    code, _, err = _cli(capsys, "--latex", latex)
+    assert code == 2 and said in err, err
+
+
+@pytest.mark.parametrize("latex, let", [
+    (r"A^{-1}A = I", "A: matrix"),
+    (r"\det R = 1", "R: rotation"),
+])
+def test_declared_they_are_decided(latex, let):
+    assert rigidsym.check_latex(latex, let=[let]).verdict == "verified"
+
+
 def test_a_shape_mismatch_of_declared_symbols_is_still_a_slip():
     r = rigidsym.check_latex(r"\omega = R", let=[r"R: rotation; \omega: vector"])
     assert r.verdict == "does-not-hold"

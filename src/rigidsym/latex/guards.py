@@ -46,6 +46,14 @@ def _names(x) -> set[str]:
         if isinstance(x, sp.Basic) else set()
 
 
+def _same_shape(a, b) -> bool:
+    """Two shapes alike, a scalar written (), None or (1, 1)."""
+    def norm(x):
+        x = tuple(x or ())
+        return () if x == (1, 1) else x
+    return norm(a) == norm(b)
+
+
 def conventional_shapes(printed, free: list[str], glyphs: dict) -> None:
     """A relation whose sides differ in shape, with a free glyph in it: bad input."""
     from rigidsym.checking.deciding.explicit import UnknownShape, shape_of
@@ -58,11 +66,16 @@ def conventional_shapes(printed, free: list[str], glyphs: dict) -> None:
         if sl == sr:
             continue
         names = _names(rel.lhs) | _names(rel.rhs)
-        keys = [k for k in free if glyphs[k].name in names]
+        # a free glyph may have cancelled as the sides were built (A^{-1} A is 1 for a
+        # scalar A): then every free glyph of the statement is a suspect
+        keys = [k for k in free if glyphs[k].name in names] or \
+            [k for k in free if not glyphs[k].shape]
         if not keys:
             continue  # every shape declared: a slip, decided (does-not-hold, shape reason)
         k = keys[0]
-        other = sr if glyphs[k].name in _names(rel.lhs) else sl
+        name = glyphs[k].name
+        other = sr if name in _names(rel.lhs) else sl if name in _names(rel.rhs) else \
+            sr if _same_shape(sl, glyphs[k].shape) else sl
         raise BadInput(
             f"--latex: the two sides differ in shape ({_words(sl)} = {_words(sr)}), and "
             f"{', '.join(keys)} {'has' if len(keys) == 1 else 'have'} the shape of the "

@@ -199,7 +199,9 @@ class _Build(GlyphRules, MeaningRules, VocabRules, BookRules, lark.Transformer):
             return sp.atan(x)
         if fn == "arccos":
             return sp.acos(x)
-        if fn == "det":
+        if fn == "det":  # of a scalar: undecided before, read as Det(R) of a scalar R
+            if _shape(x) is None or _shape(x)[0] != _shape(x)[1]:
+                raise LatexError(f"det of {_words(x)}: expected a square matrix", "shapes")
             return Det(x)
         if fn == "tr":
             if _shape(x) is None or _shape(x)[0] != _shape(x)[1]:
