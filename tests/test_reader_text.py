@@ -193,3 +193,4 @@ def test_a_square_root_covers_its_whole_radicand():
     assert notation.text(sp.sqrt(x)) == "√x"
     assert notation.text(sp.sqrt(x + y)) == "√(x + y)"
     assert notation.text(sp.sqrt(x * y)) == "√(x y)"
+    assert notation.text(sp.Abs(x)) == "|x|" and notation.text(sp.Abs(x - y)) == "|x - y|"

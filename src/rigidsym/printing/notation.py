@@ -224,6 +224,9 @@ class BookStrPrinter(_BookNotation, StrPrinter):
             return f"{expr.func.__name__} {self._print(expr.args[0])}"  # the book's cos φ
         return super()._print_Function(expr)
 
+    def _print_Abs(self, expr):
+        return f"|{self._print(expr.args[0])}|"  # as the books write it, not Abs(x)
+
     def _print_Pow(self, expr, rational=False):
         b, e = expr.base, expr.exp
         if e == sp.S.Half:
