@@ -114,6 +114,31 @@ def test_d_dt_of_symbols_declared_functions_of_time():
         _read(r"\frac{d}{dt}\cos\theta = 0")
 
 
+_AB = r"\mathbf{a}(t): vector; \mathbf{b}(t): vector"
+
+
+@pytest.mark.parametrize("latex, let, verdict", [
+    # refused before the fifth session of wave 6 ("d/dt of a scalar made of matrices",
+    # "d/dt of a 3x1 matrix built by Cross: write it as products and sums")
+    (r"\frac{d}{dt}(\mathbf{a}\cdot\mathbf{b}) = \dot{\mathbf{a}}\cdot\mathbf{b} + "
+     r"\mathbf{a}\cdot\dot{\mathbf{b}}", _AB, "verified"),
+    (r"\frac{d}{dt}(\mathbf{a}\cdot\mathbf{b}) = \dot{\mathbf{a}}\cdot\mathbf{b}", _AB,
+     "does-not-hold"),
+    (r"\frac{d}{dt}(\mathbf{a}\times\mathbf{b}) = \dot{\mathbf{a}}\times\mathbf{b} + "
+     r"\mathbf{a}\times\dot{\mathbf{b}}", _AB, "verified"),
+    # the order of a cross product matters: b-dot x a is minus a x b-dot
+    (r"\frac{d}{dt}(\mathbf{a}\times\mathbf{b}) = \dot{\mathbf{a}}\times\mathbf{b} + "
+     r"\dot{\mathbf{b}}\times\mathbf{a}", _AB, "does-not-hold"),
+    (r"\frac{d}{dt}\|\mathbf{a}\|^2 = 2\mathbf{a}\cdot\dot{\mathbf{a}}",
+     r"\mathbf{a}(t): vector", "verified"),
+    (r"\frac{d}{dt}(\theta\,\mathbf{a}\cdot\mathbf{c}) = \dot\theta\,\mathbf{a}\cdot"
+     r"\mathbf{c} + \theta\,\dot{\mathbf{a}}\cdot\mathbf{c}",
+     r"\mathbf{a}(t): vector; \theta(t): scalar", "verified"),   # c constant
+])
+def test_d_dt_of_dot_and_cross_products_by_the_product_rule(latex, let, verdict):
+    assert _v(latex, [let]) == verdict
+
+
 def test_a_derivative_goes_through_the_models_of_its_variable():
     """A model of a function of time is one too, and a model in v depends on v (issue 52,
     item 5 (d): found by the metamorphic variant that writes Y for theta): before, d/dt

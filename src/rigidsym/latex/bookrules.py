@@ -32,7 +32,7 @@ import sympy as sp
 
 from rigidsym.algebra import motions
 from rigidsym.algebra.lie import LieOp
-from rigidsym.algebra.operators import Cpm
+from rigidsym.algebra.operators import Cpm, Cross
 from rigidsym.latex.shapes import (
     LatexError,
     _as_block,
@@ -278,6 +278,18 @@ class BookRules:
             if x.name in self._moving:  # a model of a function of time: its value's d/dt
                 return self._ddt(self._moving[x.name], timed)
             return self.velocity(timed[x.name], x) if x.name in timed else sp.ZeroMatrix(*s)
+        if s is None and sp.sympify(x).atoms(sp.Trace):
+            # a·b and aᵀ M b are 1×1 traces: d/dt of each trace is the trace of the d/dt of
+            # its argument (product rule inside), the scalar around them by the chain rule
+            traces = sorted(sp.sympify(x).atoms(sp.Trace), key=sp.default_sort_key)
+            stand = {t: sp.Dummy(f"tr{i}") for i, t in enumerate(traces)}
+            y = sp.sympify(x).xreplace(stand)
+            out = self._ddt(y, timed)
+            for t, d in stand.items():
+                dt = self._ddt(t.arg, timed)
+                if not isinstance(dt, sp.ZeroMatrix) and dt != 0:
+                    out += sp.diff(y, d) * sp.Trace(dt)
+            return out.xreplace({d: t for t, d in stand.items()})
         if s is None:
             syms = [a for a in sp.sympify(x).free_symbols if a.name in timed]
             if any(isinstance(a, sp.MatrixSymbol) for a in sp.sympify(x).free_symbols
@@ -304,6 +316,12 @@ class BookRules:
             return -x * self._ddt(x.arg, timed) * x
         if isinstance(x, sp.MatrixBase):
             return x.applyfunc(lambda e: self._ddt(e, timed))
+        if isinstance(x, Cross):  # the product rule: ȧ × b + a × ḃ
+            a, b = x.args
+            da, db = self._ddt(a, timed), self._ddt(b, timed)
+            terms = [t for t, d in ((Cross(da, b), da), (Cross(a, db), db))
+                     if not isinstance(d, sp.ZeroMatrix)]
+            return sp.MatAdd(*terms) if terms else sp.ZeroMatrix(*s)
         if isinstance(x, sp.ZeroMatrix | sp.Identity):
             return sp.ZeroMatrix(*s)
         raise LatexError(f"d/dt of {_words(x)} built by {type(x).__name__}: write it as "
