@@ -194,3 +194,15 @@ def test_a_square_root_covers_its_whole_radicand():
     assert notation.text(sp.sqrt(x + y)) == "√(x + y)"
     assert notation.text(sp.sqrt(x * y)) == "√(x y)"
     assert notation.text(sp.Abs(x)) == "|x|" and notation.text(sp.Abs(x - y)) == "|x - y|"
+
+
+def test_vec_and_underline_print_as_accents():
+    """\\vec{a} printed "veca" and \\underline{a} "underlinea" until wave 6's fifth session."""
+    from rigidsym.latex.shapes import _name_from_key
+    from rigidsym.printing.names import book_latex, book_text
+
+    assert book_text(_name_from_key(r"\vec{a}")) == "a\u20d7"
+    assert book_text(_name_from_key(r"\underline{a}")) == "a\u0332"
+    assert book_text(_name_from_key(r"\vec{\omega}")) == "ω\u20d7"
+    assert book_latex(_name_from_key(r"\vec{a}")) == r"\vec{a}"
+    assert book_text("avec") != book_text("a")   # never the plain letter

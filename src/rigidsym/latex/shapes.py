@@ -79,7 +79,8 @@ def _name_from_key(key: str) -> str:
     if m:
         return re.sub(r"[{}]", "", m.group(1)) + " " + _name_from_key(m.group(2))
     s = re.sub(r"\\(mathbf|boldsymbol|mathcal)\{([^}]*)\}", r"\2", key)
-    s = re.sub(r"\\(dot|ddot|tilde|hat|bar)\{([^}]*)\}", lambda m: m.group(2) + m.group(1), s)
+    s = re.sub(r"\\(dot|ddot|tilde|hat|bar|vec|underline)\{([^}]*)\}",
+               lambda m: m.group(2) + m.group(1), s)  # \vec{a}: avec, printed a⃗
     s = s.replace("\\", "").replace("{", "").replace("}", "")
     return s
 
