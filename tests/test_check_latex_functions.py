@@ -473,3 +473,23 @@ def test_an_ad_hoc_check_expects_nothing_and_angles_print_as_numbers(capsys):
                              let=[r"\mathbf{a}: unit vector; \psi: angle"], repairs=False)
     for name, value in r.counterexample["point"].items():  # evaluated: "-pi/2", not
         assert sp.sstr(sp.sympify(value)) == value, (name, value)  # "2*atan(-1)"
+
+
+@pytest.mark.parametrize("latex, let, verdict", [
+    (r"f'(x) = 2x", r"f(x) = x^2", "verified"),
+    (r"f'(x) = 3x", r"f(x) = x^2", "does-not-hold"),                    # a slip
+    (r"f''(\theta) = -f(\theta)", r"f(x) = \sin x", "verified"),
+    (r"f''(\theta) = f(\theta)", r"f(x) = \sin x", "does-not-hold"),
+    (r"\mathbf{p}'(s) = \mathbf{a}", r"\mathbf{p}(s) = \mathbf{b} + s\mathbf{a}", "verified"),
+])
+def test_a_prime_is_the_derivative_of_a_let_function(latex, let, verdict):
+    """Lagrange's f'(x) of a --let function f (refused before: "f' is a function ... nothing
+    defines it"), the derivative taken of the function's body and said under read as."""
+    r = rigidsym.check_latex(latex, let=[let])
+    assert r.verdict == verdict, r.detail
+    assert any("derivative" in n and "--let function" in n for n in r.model), r.model
+
+
+def test_a_prime_of_a_function_of_two_parameters_is_refused():
+    with pytest.raises(LatexError, match="derivative of a function of one"):
+        rigidsym.check_latex(r"f'(x) = y", let=[r"f(x, y) = x y"])

@@ -154,14 +154,14 @@ def test_other_parentheses_stay_products(latex, let):
 
 
 @pytest.mark.parametrize("latex, words", [
-    (r"R(\theta) = e^{[\hat\omega]\theta}", "R has the shape of the convention (R a scalar)"),
+    (r"R(\theta) = e^{[\hat\omega]\theta}", "R is a function in the books"),  # R free
     (r"R(\phi) = e^{[\hat\omega]\theta}", "the model of R does not depend on φ"),
     (r"R(\theta) = e^{[\hat\omega]\theta}", "R has no model"),      # R: rotation alone
     (r"R(\theta) R(\phi) = e^{[\hat\omega]\theta}", "R applied to 2 different arguments"),
 ])
 def test_an_application_the_reading_cannot_settle_is_bad_input(capsys, latex, words):
     let = [OMEGA] + ([r"\phi: angle"] if r"\phi" in latex else []) + \
-        ([] if "shape" in words else ["R: rotation"] if "no model" in words else [R_MODEL])
+        ([] if "books" in words else ["R: rotation"] if "no model" in words else [R_MODEL])
     code, _, err = _cli(capsys, "--latex", latex, *sum((["--let", x] for x in let), []))
     assert code == 2 and words in err, err
     assert "--let 'R" in err
@@ -295,7 +295,7 @@ def test_a_books_notation_fixes_what_its_symbols_are(latex, name, let, verdict):
 
 
 @pytest.mark.parametrize("latex, name, key", [
-    (r"R_x(\alpha)R_z(\beta) = R_z(\beta)R_x(\alpha)", "spong", "R_{x}"),  # Craig's spelling
+    (r"R_{x}R_{z} = R_{z}R_{x}", "spong", "R_{x}"),                  # Craig's spelling
     (r"R_{a}R_{b} = R_{b}R_{a}", "lynch-park", "R_{a}"),
     (r"T_{e}T_{f} = T_{f}T_{e}", "craig", "T_{e}"),
 ])
@@ -314,10 +314,13 @@ def test_a_subscripted_matrix_letter_the_notation_does_not_declare_is_refused(la
     r"f(x + y) = f(x) + f(y)",
     r"g_1(2\theta) = 2 g_1(\theta)",
     r"h(\mathbf{R}\mathbf{a}) = \mathbf{R} h(\mathbf{a})",
+    r"R_x(\alpha)R_z(\beta) = R_z(\beta)R_x(\alpha)",  # verified before: scalars commute
+    r"Q(\theta + \phi) = Q(\theta)Q(\phi)",
 ])
 def test_an_undefined_function_letter_is_never_a_product(latex):
-    """f, g, h before a parenthesis with nothing defining them: refused, naming both
-    readings' --let, never the product (which makes every such f linear)."""
+    """f, g, h or a plain capital (the books' R_x(α), Q(t)) before a parenthesis with nothing
+    defining them: refused, naming both readings' --let, never the product (which makes
+    every such f linear, every such R_x a commuting scalar)."""
     from rigidsym.latex.shapes import LatexError
 
     with pytest.raises(LatexError) as exc:
@@ -331,6 +334,8 @@ def test_an_undefined_function_letter_is_never_a_product(latex):
     (r"f(x + y) = f(y + x)", [r"f(x) = \sin x"], "verified"),
     (r"f(x + y) = fx + fy", [r"f: scalar"], "verified"),
     (r"m(a + b) = ma + mb", [], "verified"),          # any other letter: the product
+    (r"R_x(\alpha)R_z(\beta) = R_z(\beta)R_x(\alpha)", [r"R_x: scalar", r"R_z: scalar"],
+     "verified"),                                     # declared scalars: the product
 ])
 def test_a_declared_function_letter_reads_as_declared(latex, let, verdict):
     assert rigidsym.check_latex(latex, let=let).verdict == verdict
@@ -410,3 +415,20 @@ def test_a_matrix_without_a_model_applied_is_still_refused(capsys):
     code, out, err = _cli(capsys, "--latex", r"R(\theta) = e^{[\hat\omega]\theta}",
                           "--let", r"\hat\omega: unit vector; \theta: angle; R: rotation")
     assert code == 2 and "R has no model" in " ".join((out + err).split())
+
+
+@pytest.mark.parametrize("hat, wide", [(r"\hat", r"\widehat"), (r"\tilde", r"\widetilde")])
+def test_a_wide_accent_is_its_narrow_accent(hat, wide):
+    r"""``\widehat``, ``\widetilde`` only draw wider (unknown macros before): the same glyph as
+    ``\hat``, ``\tilde``, so a model given for one serves the other and a free one is
+    refused alike."""
+    let = [rf"{hat}{{\mathbf{{a}}}} = [\mathbf{{a}}]_\times"]
+    r = rigidsym.check_latex(rf"{wide}{{\mathbf{{a}}}}\mathbf{{a}} = \mathbf{{0}}", let=let)
+    assert r.verdict == "verified", r.detail                  # a × a = 0, through the model
+    slip = rigidsym.check_latex(rf"{wide}{{\mathbf{{a}}}}^T = {hat}{{\mathbf{{a}}}}", let=let)
+    assert slip.verdict == "does-not-hold", slip.detail      # skew, not symmetric
+    if hat == r"\hat":  # Lynch-Park's unit vector or Murray-Li-Sastry's skew matrix
+        with pytest.raises(rigidsym.BadInput, match="murray-li-sastry"):
+            rigidsym.check_latex(rf"2{wide}{{\omega}} = {wide}{{\omega}} + {hat}{{\omega}}")
+        assert rigidsym.check_latex(rf"{wide}{{\omega}}^T = -{wide}{{\omega}}",
+                                    notation="murray-li-sastry").verdict == "verified"

@@ -21,6 +21,13 @@ __all__: list[str] = []
 
 
 _TIME = sp.Symbol("t", real=True)  # the plain letter t: time, the argument of p(t)
+#: the wide accents, which TeX only draws wider over several letters: the same glyph
+_WIDE = {"\\widehat": "\\hat", "\\widetilde": "\\tilde"}
+
+
+def wide(accent: str) -> str:
+    """``\\widehat`` as ``\\hat``, ``\\widetilde`` as ``\\tilde``; any other accent as given."""
+    return _WIDE.get(accent, accent)
 
 
 class GlyphRules:
@@ -78,7 +85,7 @@ class GlyphRules:
         return self._resolve(items[0], items[1:], None)
 
     def accented(self, items):
-        accent, inner = str(items[0]), items[1]
+        accent, inner = wide(str(items[0])), items[1]
         if not isinstance(inner, _GlyphKey):
             raise LatexError(f"{accent} over an expression: expected a glyph", "accent")
         base, rest = inner.base, list(inner.rest) + list(items[2:])

@@ -75,8 +75,11 @@ def as_written(h):
     return BracketCpm(*h.args) if type(h) is Cpm else h
 
 
-_FUNCTION_LETTER = re.compile(r"[fgh](?:_|'|$)")  # f, f_1, g', h_{ij}: a function's letter
+# f, f_1, g', h_{ij}: a function's letter; a plain capital (R_x, Q, T_{01}; not I, the
+# identity) is the books' matrix function R_x(\alpha), which read as scalars would commute
+_FUNCTION_LETTER = re.compile(r"(?:[fgh]|[A-HJ-Z])(?:_|'|$)")
 _TIME = sp.Symbol("t", real=True)  # the plain letter t (rigidsym.latex.parser)
+_PRIMED = re.compile(r"(.+?)('+)$")  # f', f'': Lagrange's derivative of a function f
 _SIZE = re.compile(r"(\d)(?:\\times\s*(\d))?")
 
 
@@ -113,11 +116,42 @@ class MeaningRules:
                    f"{key}({', '.join(params)}) at {said}")
         return v
 
+    def _derivative(self, key, n, arg):
+        """``f'(x)``, ``f''(x)``: the n-th derivative of the ``--let`` function ``f`` of one
+        scalar parameter, at ``arg`` (Lagrange's notation, as the books write it)."""
+        from rigidsym.printing import notation
+
+        s, written = sp.Dummy("s", real=True), key + "'" * n
+        try:
+            v, params = self.functions[key]([s])
+        except LatexError as exc:
+            if "parameter" not in str(exc):
+                raise
+            raise LatexError(f"{written}(...): a prime is the derivative of a function of one "
+                             f"parameter; {key} has more: write the derivative as its own "
+                             f"--let function", "function") from None
+        from rigidsym.algebra import motions
+
+        self.glyphs.pop(written, None)  # not a symbol of its own: f, the function, is used
+        if key in self.overrides:
+            self.glyphs[key] = self.overrides[key]
+        a = notation.text(arg)
+        self._note(f"{written}({a}): derivative {n} of the --let function "
+                   f"{key}({params[0]}), at {params[0]} = {a}")
+        for _ in range(n):
+            v = motions.diff(v, s)
+        return v.subs(s, arg)
+
     def apply(self, items):
         """``glyph ( expr )`` with an optional power after the parenthesis."""
         f, arg, sup = items[0], items[1], (items[2] if len(items) > 2 else None)
         if getattr(f, "key", None) in self.functions:  # a --let function (issue 52)
             v = self._expand(f.key, [_as_scalar(self._val(arg))])
+            return self.power([v, sup]) if sup is not None else v
+        primed = _PRIMED.match(getattr(f, "key", None) or "")
+        if primed and primed.group(1) in self.functions:  # f'(x) of a --let f(x) = ...
+            v = self._derivative(primed.group(1), len(primed.group(2)),
+                                 _as_scalar(self._val(arg)))
             return self.power([v, sup]) if sup is not None else v
         fv, x = self._val(f), _as_scalar(self._val(arg))
         if self.reader and _shape(fv) is not None and _shape(x) is not None \
@@ -144,8 +178,8 @@ class MeaningRules:
             from rigidsym.printing import notation
 
             raise LatexError(
-                f"{f.key}({notation.text(x)}): {f.key} is a function in the books (f, g, h) "
-                f"but nothing defines it here; read as the product {f.key} "
+                f"{f.key}({notation.text(x)}): {f.key} is a function in the books (f, g, h, "
+                f"R_x(α), Q(t)) but nothing defines it here; read as the product {f.key} "
                 f"({notation.text(x)}) the verdict would rest on a guess: say which, with "
                 f"--let '{f.key}(x) = ...' (a function) or --let '{f.key}: scalar' (the "
                 f"product)", "apply")
