@@ -280,6 +280,11 @@ def test_a_shape_mismatch_of_declared_symbols_is_still_a_slip():
     (r"R_{x,\alpha}R_{z,\beta} = R_{z,\beta}R_{x,\alpha}", "spong", [], "does-not-hold"),
     (r"R_{z,\theta}R_{z,\phi} = R_{z,\phi}R_{z,\theta}", "spong", [], "verified"),
     (r"R_{k,\theta}^T R_{k,\theta} = I", "spong", [], "verified"),
+    # an angle of several letters in the subscript (a parse error before)
+    (r"R_{z,\theta}R_{z,\phi} = R_{z,\theta+\phi}", "spong", [], "verified"),
+    (r"R_{z,\theta}R_{z,\phi} = R_{z,\theta-\phi}", "spong", [], "does-not-hold"),
+    (r"R_{x,-\theta} = R_{x,\theta}^T", "spong", [], "verified"),
+    (r"R_{x,-\theta} = R_{x,\theta}", "spong", [], "does-not-hold"),
     (r"R_X(\alpha)R_Z(\beta) = R_Z(\beta)R_X(\alpha)", "craig", [], "does-not-hold"),
     (r"R_Z(\alpha)R_Z(\beta) = R_Z(\alpha + \beta)", "craig", [], "verified"),
     (r"R_Y(\alpha)R_Y(\beta) = R_Y(\alpha - \beta)", "craig", [], "does-not-hold"),

@@ -206,3 +206,15 @@ def test_vec_and_underline_print_as_accents():
     assert book_text(_name_from_key(r"\vec{\omega}")) == "ω\u20d7"
     assert book_latex(_name_from_key(r"\vec{a}")) == r"\vec{a}"
     assert book_text("avec") != book_text("a")   # never the plain letter
+
+
+def test_greek_letters_inside_a_subscript_print_as_letters():
+    """Spong's R_{z,\\theta+\\phi} printed "R_z,theta+phi" until wave 6's fifth session; a
+    Latin subscript stays as written."""
+    from rigidsym.latex.shapes import _name_from_key
+    from rigidsym.printing.names import book_text
+
+    assert book_text(_name_from_key(r"R_{z,\theta}")) == "R_z,θ"
+    assert book_text(_name_from_key(r"R_{z,\theta+\phi}")) == "R_z,θ+φ"
+    assert book_text(_name_from_key(r"v_{max}")) == "v_max"      # no Greek word in it
+    assert book_text(_name_from_key(r"x_{i+1}")) == "x_i+1"

@@ -31,6 +31,9 @@ NOTATIONS = ("lynch-park", "murray-li-sastry", "siciliano", "spong", "craig", "f
 
 _INDEX, _GREEK = r"(\d+)", r"(\\[A-Za-z]+)"
 _STAND_IN = r"\iota"  # the name's Greek letter of a pattern such as R_{z,{x}}
+# the angle of R_{z,{x}}: a Greek letter or a sum of them, with signs, digits and a slash
+# (R_{z,\theta+\phi}, R_{z,-\theta}, R_{z,\pi/2}), put in the model in parentheses
+_ANGLE = r"((?:[-+]?(?:\\[A-Za-z]+ ?|\d+)(?:/\d+)?)+)"
 
 
 @dataclass(frozen=True)
@@ -113,7 +116,7 @@ def notation(name: str) -> Notation:
         hole = "{i}" if "_{i}" in x.key else "{x}" if "_{x}" in x.key or inner else ""
         if hole:
             rx = re.escape(x.key).replace(re.escape(_STAND_IN if inner else hole), (
-                "{" + _INDEX + "}" if hole == "{i}" else _GREEK if inner else
+                "{" + _INDEX + "}" if hole == "{i}" else _ANGLE if inner else
                 "{" + _GREEK + "}"))
             patterns.append((re.compile(rx), hole, x))
         else:

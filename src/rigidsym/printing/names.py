@@ -127,8 +127,8 @@ def book_text(name: str) -> str:
             out += _SUB_TEXT[s]
         elif s.isdigit():
             out += s.translate(_SUBSCRIPT_DIGITS)
-        else:   # a Greek subscript in its letter (Craig's c_θ), as the base is
-            out += "_" + _GREEK.get(s, s)
+        else:   # a Greek subscript in its letter (Craig's c_θ, Spong's R_z,θ+φ), as the base is
+            out += "_" + re.sub(r"[A-Za-z]+", lambda m: _GREEK.get(m.group(0), m.group(0)), s)
     return out
 
 
