@@ -493,3 +493,58 @@ def test_a_prime_is_the_derivative_of_a_let_function(latex, let, verdict):
 def test_a_prime_of_a_function_of_two_parameters_is_refused():
     with pytest.raises(LatexError, match="derivative of a function of one"):
         rigidsym.check_latex(r"f'(x) = y", let=[r"f(x, y) = x y"])
+
+
+_RZ = (r"R_z(\theta) = \begin{bmatrix}\cos\theta & -\sin\theta & 0\\ \sin\theta & \cos\theta & 0"
+       r"\\ 0 & 0 & 1\end{bmatrix}")
+_EXP = [r"\hat\omega: unit vector; \theta: angle", r"R = e^{[\hat\omega]\theta}"]
+
+
+@pytest.mark.parametrize("latex, let, verdict", [
+    # \left( \right), \bigl( \bigr) are parentheses drawn taller: an application, as ( )
+    (r"R_z\left(0\right)\mathbf{a} = \mathbf{0}", [_RZ], "does-not-hold"),   # verified before
+    (r"R_z\left(\alpha\right)R_z\bigl(\beta\bigr) = R_z\left(\alpha+\beta\right)", [_RZ],
+     "verified"),
+    (r"R\left(\theta\right)\hat\omega = \hat\omega", _EXP, "verified"),
+    # a power before the argument: the power of the value
+    (r"R_z^T(0)\mathbf{a} = \mathbf{0}", [_RZ], "does-not-hold"),              # verified before
+    (r"\frac{1}{2}R_z^{T}(2\alpha)\mathbf{a} = R_z^{T}(\alpha)\mathbf{a}", [_RZ, r"\alpha: angle"],
+     "does-not-hold"),                                                        # verified before
+    (r"R_z^{-1}(\alpha) = R_z(-\alpha)", [_RZ], "verified"),
+    (r"R_z^2(\alpha) = R_z(2\alpha)", [_RZ], "verified"),
+    (r"R^T(\theta)\hat\omega = \hat\omega", _EXP, "verified"),
+    (r"S^T(\mathbf{a})\mathbf{b} = \mathbf{b}\times\mathbf{a}",
+     [r"S(\mathbf{x}) = [\mathbf{x}]_\times"], "verified"),
+    # no application there: the product of the power, as before
+    (r"a^2(b + c) = a^2 b + a^2 c", [r"a: scalar"], "verified"),
+    (r"R^T(\mathbf{a} - \mathbf{b}) = R^T\mathbf{a} - R^T\mathbf{b}", [r"R: rotation"],
+     "verified"),
+    (r"(a + b)^2(c + d) = (a + b)^2 c + (a + b)^2 d", [], "verified"),
+])
+def test_an_application_reads_alike_however_it_is_typeset(latex, let, verdict):
+    """The outside trial of wave 6's sixth session: \\left( and a power before the argument
+    were read as products of a free scalar (two false equations verified, six true ones
+    does-not-hold); the truth of each is the textbook's (R_z(0) = I, R_zᵀ(α) = R_z(-α))."""
+    r = rigidsym.check_latex(latex, let=let)
+    assert r.verdict == verdict, r.detail
+
+
+def test_an_application_with_left_and_right_decides_as_with_plain_parentheses():
+    plain = r"R_z(\alpha)^T R_z(\beta) = R_z(\beta - \alpha)"
+    sized = plain.replace("(", r"\left(").replace(")", r"\right)")
+    assert rigidsym.check_latex(sized, let=[_RZ]).verdict == \
+        rigidsym.check_latex(plain, let=[_RZ]).verdict == "verified"
+
+
+def test_the_subscripts_of_one_vector_read_alike_and_disagreeing_readings_are_refused():
+    """q_1^2 + ... + q_4^2 = qᵀq: four index choice points were cut to three, and the eight
+    readings decided (all does-not-hold) never held the one meant (all four entries). The
+    subscripts of one letter now read together: names (does-not-hold) or entries (verified)
+    disagree, so it is refused naming them."""
+    with pytest.raises((BadInput, LatexError)) as exc:
+        rigidsym.check_latex(r"q_1^2 + q_2^2 + q_3^2 + q_4^2 = q^Tq", let=[r"q: 4-vector"])
+    assert "q_{4}" in str(exc.value) and "entry 4 of q" in str(exc.value), str(exc.value)
+    r = rigidsym.check_latex(r"q_1^2 + q_2^2 + q_3^2 + q_4^2 = q^Tq",
+                             let=[r"q: 4-vector", r"q_1 = q_{1:1}", r"q_2 = q_{2:2}",
+                                  r"q_3 = q_{3:3}", r"q_4 = q_{4:4}"])
+    assert r.verdict == "verified", r.detail

@@ -171,3 +171,16 @@ def test_the_command_line_reads_modern_robotics_and_exits_by_verdict(capsys):
     assert code == 0 and "Verdict: verified" in out and "read as: exp(" in out
     code = main(["check", "--latex", r"y = \operatorname{foo}(x)"])
     assert code == 2 and "'foo'" in capsys.readouterr().err
+
+
+@pytest.mark.parametrize("latex, verdict", [
+    (r"\det([\mathbf{a}]_\times) = 0", "verified"),
+    (r"\det(\mathbf{1} + [\mathbf{a}]_\times) = 1 + \|\mathbf{a}\|^2", "verified"),
+    (r"\det(\mathbf{1} + [\mathbf{a}]_\times) = 1 + 2\|\mathbf{a}\|^2", "does-not-hold"),
+    (r"\det(\mathbf{a}^\wedge) = 0", "verified"),
+])
+def test_a_determinant_of_a_cross_product_matrix_is_decided(latex, verdict):
+    """Undecided before wave 6's sixth session ("TypeError while checking: unhashable type:
+    'MutableDenseMatrix'": the operator kept the explicit vector's mutable matrix); det(1 +
+    [a]x) = 1 + |a|^2 by expanding the 3x3 determinant by hand."""
+    assert rigidsym.check_latex(latex).verdict == verdict

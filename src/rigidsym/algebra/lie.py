@@ -103,8 +103,8 @@ class LieOp(sp.MatrixExpr):
     ordered = False  #: whether the last argument is the order flag
     operands = 1  #: how many matrix operands
 
-    def __new__(cls, *args):
-        return sp.Basic.__new__(cls, *args)
+    def __new__(cls, *args):  # sympified: a mutable Matrix argument is unhashable
+        return sp.Basic.__new__(cls, *map(sp.sympify, args))
 
     @property
     def lin(self) -> int:

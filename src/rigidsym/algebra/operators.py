@@ -72,7 +72,7 @@ class Cross(sp.MatrixExpr):
     """
 
     def __new__(cls, u, v):
-        return sp.Basic.__new__(cls, u, v)
+        return sp.Basic.__new__(cls, sp.sympify(u), sp.sympify(v))
 
     @property
     def shape(self):
@@ -160,8 +160,8 @@ class Cpm(sp.MatrixExpr):
     (Eq. (2.38)), kept lazy: prints ``CPM(v)``; ``doit()`` gives the explicit
     skew-symmetric matrix once ``v`` is explicit."""
 
-    def __new__(cls, v):
-        return sp.Basic.__new__(cls, v)
+    def __new__(cls, v):  # sympified: a mutable Matrix argument is unhashable
+        return sp.Basic.__new__(cls, sp.sympify(v))
 
     @property
     def shape(self):
@@ -191,7 +191,7 @@ class Vect(sp.MatrixExpr):
     a12]`` once ``A`` is explicit."""
 
     def __new__(cls, A):
-        return sp.Basic.__new__(cls, A)
+        return sp.Basic.__new__(cls, sp.sympify(A))
 
     @property
     def shape(self):
@@ -228,7 +228,7 @@ class Diff(sp.MatrixExpr):
     """
 
     def __new__(cls, X, v):
-        return sp.Basic.__new__(cls, X, sp.sympify(v))
+        return sp.Basic.__new__(cls, sp.sympify(X), sp.sympify(v))
 
     @property
     def shape(self):

@@ -113,10 +113,18 @@ def read_statement(latex: str, lets: list[Let], book: str | None = None,
         if not first.choices:
             return first
         error, points = None, first.choices
-    keys = sorted(points)[:_MAX_POINTS]
+    groups: dict[str, list[str]] = {}  # q_{1} of q, q_{2} of q: one notation, chosen together
+    for k in sorted(points):
+        groups.setdefault(_group(k), []).append(k)
+    if len(groups) > _MAX_POINTS:
+        raise BadInput(
+            f"--latex: {len(groups)} constructs each read two ways ({', '.join(groups)}): "
+            f"{2 ** len(groups)} readings, more than the {2 ** _MAX_POINTS} decided, and a "
+            f"verdict on some of them would be a guess: settle some with a --let (a kind "
+            f"for a vector's letter, a model or a function)")
     kept, dropped = [], []
-    for combo in itertools.product(*(alternatives(k) for k in keys)):
-        choices = dict(zip(keys, combo, strict=True))
+    for combo in itertools.product(*(alternatives(g[0]) for g in groups.values())):
+        choices = {k: c for g, c in zip(groups.values(), combo, strict=True) for k in g}
         try:
             r = first if first is not None and choices == first.choices else read_one(
                 latex, lets, book, lend, table, choices)
@@ -138,8 +146,16 @@ def read_statement(latex: str, lets: list[Let], book: str | None = None,
     return kept[0]
 
 
-#: choice points enumerated (2**3 readings at most); any more are read by the default
+#: choice points enumerated (2**3 readings at most); more are refused, never decided on some
+#: readings (q_1^2 + ... + q_4^2 = q^T q was decided on 8 of its 16 before the sixth session
+#: of wave 6, none of them the one meant)
 _MAX_POINTS = 3
+
+
+def _group(key: str) -> str:
+    """The choice points read alike: the subscripts of one vector's letter (``q_{1} of q``,
+    ``q_{2} of q``: all entries of q or all names, never some of each), else the point."""
+    return "entries of " + key.split(" of ", 1)[1] if " of " in key else key
 
 
 def _said(choices: dict) -> str:

@@ -256,6 +256,12 @@ def multiple_angles(t):
     return t
 
 
+# \left( ... \right), \bigl( ... \bigr): parentheses TeX only draws taller, read as ( ... ) so
+# that R_z\left(\alpha\right) is the application R_z(\alpha) (a product of a free scalar
+# R_z before the sixth session of wave 6: R_z\left(0\right)a = 0 verified)
+_SIZED_PAREN = re.compile(r"(?:\\left|\\[bB]igg?l)\s*\(|(?:\\right|\\[bB]igg?r)\s*\)")
+
+
 def tree(latex: str):
     """lark's parse tree of the LaTeX (its unbraced arguments braced, :func:`braced`), or a
     ``LatexError`` that quotes the offending token with its boundaries, puts carets under it
@@ -263,7 +269,7 @@ def tree(latex: str):
     (a Greek letter) at position 9``."""
     from rigidsym.latex.shapes import LatexError
 
-    text = braced(latex)
+    text = _SIZED_PAREN.sub(lambda m: m.group(0)[-1], braced(latex))
     _AlignedLayout.text = text
     try:
         return multiple_angles(parser().parse(text))

@@ -187,6 +187,37 @@ class MeaningRules:
             arg = self.power([arg, sup])
         return self.mul([f, arg])
 
+    def apply_pre(self, items):
+        r"""``X^S(y)``, the power written before the argument (``R_z^T(\alpha)``,
+        Siciliano's ``\boldsymbol{R}_z^T(\varphi)``, ``R^{-1}(\theta)``): where ``X(y)``
+        is an application (a ``--let`` function, a symbol that is no scalar applied to a
+        scalar, a function letter), the power of its value, as ``X(y)^S``; otherwise the
+        product ``X^S y`` (``a^2(b + c)``, ``R^T(\mathbf{a} - \mathbf{b})``). Before the
+        sixth session of wave 6 it was always the product, so ``R_z^T(0)\mathbf{a} =
+        \mathbf{0}`` verified."""
+        f, sup, arg = items
+        fv, x = self._val(f), _as_scalar(self._val(arg))
+        key = getattr(f, "key", None)  # None: no glyph, ((a + b)^2 (c + d)), a product
+        applied = key in self.functions or (
+            key is not None and
+            self.reader and _shape(x) is None and x is not _TIME and (
+                self._function_letter(f)
+                or (_shape(fv) is not None and not self._modelless_vector(f, fv)
+                    and self._may_depend(f, x))))
+        if applied:
+            return self.apply([f, arg, sup])
+        return self.mul([self.power([f, sup]), arg])
+
+    def _may_depend(self, f, x) -> bool:
+        r"""Whether ``f`` applied to ``x`` could be read: ``f`` has no model (refused as an
+        application, :func:`rigidsym.latex.guards.applications`) or a model that depends on
+        ``x``. A model that does not is a factor (MLS' ``\hat\omega^2(1 - \cos\theta)``)."""
+        from rigidsym.latex.guards import _names, _through
+
+        g = self.overrides.get(f.key) or self.glyphs.get(f.key)
+        model = self.model_rhs.get(g.name) if g is not None else None
+        return model is None or bool(_names(x) & _through(model, self.model_rhs))
+
     def _function_letter(self, f) -> bool:
         """``f`` is a free glyph (no ``--let``, model, module, book row or notation line)
         written with the letter f, g or h: ``f(\\mathbf{a} + \\mathbf{b})`` is a function
