@@ -184,3 +184,23 @@ def test_a_determinant_of_a_cross_product_matrix_is_decided(latex, verdict):
     'MutableDenseMatrix'": the operator kept the explicit vector's mutable matrix); det(1 +
     [a]x) = 1 + |a|^2 by expanding the 3x3 determinant by hand."""
     assert rigidsym.check_latex(latex).verdict == verdict
+
+
+@pytest.mark.parametrize("latex, verdict", [
+    (r"\mathbf{a}\times(\mathbf{b}\times\mathbf{c}) = \mathbf{b}(\mathbf{a}\cdot\mathbf{c}) - "
+     r"\mathbf{c}(\mathbf{a}\cdot\mathbf{b})", "verified"),
+    (r"(\mathbf{a}\times\mathbf{b})\times\mathbf{c} = \mathbf{b}(\mathbf{a}\cdot\mathbf{c}) - "
+     r"\mathbf{c}(\mathbf{a}\cdot\mathbf{b})", "does-not-hold"),
+    (r"\mathbf{a}\times\mathbf{b}\times\mathbf{c} = \mathbf{b}(\mathbf{a}\cdot\mathbf{c}) - "
+     r"\mathbf{c}(\mathbf{a}\cdot\mathbf{b})", None),          # does-not-hold before, unsaid
+    (r"\mathbf{a}\times[\mathbf{b}]_\times\mathbf{c} = \mathbf{a}\times(\mathbf{b}\times"
+     r"\mathbf{c})", "verified"),                              # a hat's \times is no product
+])
+def test_two_cross_products_without_parentheses_are_refused(latex, verdict):
+    """a x b x c has two groupings that differ (the triple product's expansion holds for one
+    only); it was read from the left without a word."""
+    if verdict is None:
+        with pytest.raises(LatexError, match="not associative"):
+            rigidsym.check_latex(latex)
+    else:
+        assert rigidsym.check_latex(latex).verdict == verdict

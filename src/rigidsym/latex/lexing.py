@@ -262,6 +262,35 @@ def multiple_angles(t):
 _SIZED_PAREN = re.compile(r"(?:\\left|\\[bB]igg?l)\s*\(|(?:\\right|\\[bB]igg?r)\s*\)")
 
 
+_CHAIN_TOKENS = re.compile(r"\\[{}]|\\\\|\\left\s*\S|\\right\s*\S|\\[a-zA-Z]+"
+                           r"|[-+=&,|(){}\[\]]")
+
+
+def cross_chains(text: str) -> str | None:
+    """The first ``a \\times b \\times c``: two cross products in one term with no
+    parentheses between them, or ``None``. The cross product is not associative and the
+    books mean either grouping (a x (b x c) in the triple product), so such a chain has no
+    one reading; lark's grammar would read it from the left, unsaid (an outside trial of
+    wave 6's sixth session: a x b x c = b(a.c) - c(a.b) came out does-not-hold)."""
+    depth, count, start = 0, {0: 0}, {0: 0}
+    for m in _CHAIN_TOKENS.finditer(text):
+        tok = m.group(0)
+        if tok == "\\times" and not re.match(r"\s*\^", text[m.end():]) \
+                and not text[:m.start()].rstrip().endswith("_"):  # not v\times^*, [a]_\times
+            count[depth] = count.get(depth, 0) + 1
+            if count[depth] == 2:
+                return text[start.get(depth, 0):m.end()].strip() + " ..."
+        elif tok in "([{" or tok in ("\\{",) or tok.startswith("\\left"):
+            depth += 1
+            count[depth], start[depth] = 0, m.end()
+        elif tok in ")]}" or tok in ("\\}",) or tok.startswith("\\right"):
+            depth = max(depth - 1, 0)
+            count[depth], start[depth] = count.get(depth, 0), start.get(depth, 0)
+        elif tok in "-+=&,|" or tok == "\\\\":
+            count[depth], start[depth] = 0, m.end()
+    return None
+
+
 def tree(latex: str):
     """lark's parse tree of the LaTeX (its unbraced arguments braced, :func:`braced`), or a
     ``LatexError`` that quotes the offending token with its boundaries, puts carets under it
@@ -270,6 +299,11 @@ def tree(latex: str):
     from rigidsym.latex.shapes import LatexError
 
     text = _SIZED_PAREN.sub(lambda m: m.group(0)[-1], braced(latex))
+    chain = cross_chains(text)
+    if chain:
+        raise LatexError(f"{chain}: two cross products with no parentheses between them; the "
+                         f"cross product is not associative, so write (a \\times b) \\times c "
+                         f"or a \\times (b \\times c)", "cross chain")
     _AlignedLayout.text = text
     try:
         return multiple_angles(parser().parse(text))
