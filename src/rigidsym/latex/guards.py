@@ -18,9 +18,9 @@ from __future__ import annotations
 
 import re
 
-import sympy as sp
-
 from rigidsym.checking.deciding.errors import BadInput
+from rigidsym.latex.depends import names as _names
+from rigidsym.latex.depends import through as _through
 from rigidsym.latex.lets import kind_of
 
 __all__: list[str] = []
@@ -41,9 +41,6 @@ def _kinds_for(shape) -> str:
             (1, 1): "scalar, angle"}.get(tuple(shape), f"{shape[0]}x{shape[1]} matrix")
 
 
-def _names(x) -> set[str]:
-    return {s.name for s in x.atoms(sp.Symbol, sp.MatrixSymbol)} \
-        if isinstance(x, sp.Basic) else set()
 
 
 def _same_shape(a, b) -> bool:
@@ -150,19 +147,6 @@ def notation_bases(free: list[str], glyphs: dict, table) -> None:
                 f"'{base.kind}' but not {key}, which would be a free scalar: say what it "
                 f"is, with --let '{key}: {base.kind}' (or another KIND) or a model "
                 f"(--let '{key} = ...')")
-
-
-def _through(model, models: dict) -> set[str]:
-    """The names a model mentions, through the models of the names it mentions (issue 52:
-    ``R_3`` written with ``c_\\psi``, ``c_\\psi = \\cos\\psi``, depends on ψ)."""
-    seen: set[str] = set()
-    todo = [model]
-    while todo:
-        for n in _names(todo.pop()) - seen:
-            seen.add(n)
-            if n in models:
-                todo.append(models[n])
-    return seen
 
 
 def applications(applied: dict, models: dict, glyphs: dict) -> None:

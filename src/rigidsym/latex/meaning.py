@@ -212,11 +212,11 @@ class MeaningRules:
         r"""Whether ``f`` applied to ``x`` could be read: ``f`` has no model (refused as an
         application, :func:`rigidsym.latex.guards.applications`) or a model that depends on
         ``x``. A model that does not is a factor (MLS' ``\hat\omega^2(1 - \cos\theta)``)."""
-        from rigidsym.latex.guards import _names, _through
+        from rigidsym.latex.depends import names, through
 
         g = self.overrides.get(f.key) or self.glyphs.get(f.key)
         model = self.model_rhs.get(g.name) if g is not None else None
-        return model is None or bool(_names(x) & _through(model, self.model_rhs))
+        return model is None or bool(names(x) & through(model, self.model_rhs))
 
     def _function_letter(self, f) -> bool:
         """``f`` is a free glyph (no ``--let``, model, module, book row or notation line)
