@@ -41,8 +41,6 @@ def _kinds_for(shape) -> str:
             (1, 1): "scalar, angle"}.get(tuple(shape), f"{shape[0]}x{shape[1]} matrix")
 
 
-
-
 def _same_shape(a, b) -> bool:
     """Two shapes alike, a scalar written (), None or (1, 1)."""
     def norm(x):

@@ -272,7 +272,7 @@ def cross_chains(text: str) -> str | None:
     books mean either grouping (a x (b x c) in the triple product), so such a chain has no
     one reading; lark's grammar would read it from the left, unsaid (an outside trial of
     wave 6's sixth session: a x b x c = b(a.c) - c(a.b) came out does-not-hold)."""
-    depth, count, start = 0, {0: 0}, {0: 0}
+    depth, count, start = 0, {}, {}
     for m in _CHAIN_TOKENS.finditer(text):
         tok = m.group(0)
         if tok == "\\times" and not re.match(r"\s*\^", text[m.end():]) \
@@ -284,8 +284,7 @@ def cross_chains(text: str) -> str | None:
             depth += 1
             count[depth], start[depth] = 0, m.end()
         elif tok in ")]}" or tok in ("\\}",) or tok.startswith("\\right"):
-            depth = max(depth - 1, 0)
-            count[depth], start[depth] = count.get(depth, 0), start.get(depth, 0)
+            depth = max(depth - 1, 0)  # the group is one operand of the term it closes into
         elif tok in "-+=&,|" or tok == "\\\\":
             count[depth], start[depth] = 0, m.end()
     return None

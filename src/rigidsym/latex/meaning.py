@@ -119,6 +119,7 @@ class MeaningRules:
     def _derivative(self, key, n, arg):
         """``f'(x)``, ``f''(x)``: the n-th derivative of the ``--let`` function ``f`` of one
         scalar parameter, at ``arg`` (Lagrange's notation, as the books write it)."""
+        from rigidsym.algebra import motions
         from rigidsym.printing import notation
 
         s, written = sp.Dummy("s", real=True), key + "'" * n
@@ -130,8 +131,6 @@ class MeaningRules:
             raise LatexError(f"{written}(...): a prime is the derivative of a function of one "
                              f"parameter; {key} has more: write the derivative as its own "
                              f"--let function", "function") from None
-        from rigidsym.algebra import motions
-
         self.glyphs.pop(written, None)  # not a symbol of its own: f, the function, is used
         if key in self.overrides:
             self.glyphs[key] = self.overrides[key]
