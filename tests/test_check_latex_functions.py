@@ -548,3 +548,24 @@ def test_the_subscripts_of_one_vector_read_alike_and_disagreeing_readings_are_re
                              let=[r"q: 4-vector", r"q_1 = q_{1:1}", r"q_2 = q_{2:2}",
                                   r"q_3 = q_{3:3}", r"q_4 = q_{4:4}"])
     assert r.verdict == "verified", r.detail
+
+
+_MARKLEY = (r"A(\mathbf{q}) = (\mathbf{q}_{4:4}^2 - \|\mathbf{q}_{1:3}\|^2)I_3 + 2\mathbf{q}_{1:3}"
+            r"\mathbf{q}_{1:3}^T - 2\mathbf{q}_{4:4}[\mathbf{q}_{1:3}]_\times")
+
+
+@pytest.mark.parametrize("latex, let, verdict", [
+    (r"A(\mathbf{q}) = A(-\mathbf{q})", [_MARKLEY, r"\mathbf{q}: 4-vector"], "verified"),
+    (r"A\left(\begin{bmatrix}\mathbf{e}\sin\frac{\theta}{2}\\ \cos\frac{\theta}{2}\end{bmatrix}"
+     r"\right) = I_3 - \sin\theta[\mathbf{e}]_\times + (1-\cos\theta)[\mathbf{e}]_\times^2",
+     [_MARKLEY, r"\mathbf{e}: unit vector; \theta: angle"], "verified"),
+    (r"A\left(\begin{bmatrix}\mathbf{e}\sin\frac{\theta}{2}\\ \cos\frac{\theta}{2}\end{bmatrix}"
+     r"\right) = I_3 + \sin\theta[\mathbf{e}]_\times + (1-\cos\theta)[\mathbf{e}]_\times^2",
+     [_MARKLEY, r"\mathbf{e}: unit vector; \theta: angle"], "does-not-hold"),   # the sign
+])
+def test_a_slice_of_a_parameter_at_an_argument_that_is_no_symbol(latex, let, verdict):
+    """Markley-Crassidis' attitude matrix A(q) from q_{1:3}, q_{4:4}: at -q or at a bmatrix the
+    entries stayed unevaluated ((-q)[3, 0]) and the check was undecided; A(q) = A(-q) (the
+    double cover) and A at the quaternion of (e, θ) being Rodrigues' passive rotation are
+    textbook facts (Markley & Crassidis 2014, ch. 2)."""
+    assert rigidsym.check_latex(latex, let=let).verdict == verdict

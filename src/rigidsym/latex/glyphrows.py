@@ -8,6 +8,7 @@ from __future__ import annotations
 import re
 
 import sympy as sp
+from sympy.matrices.expressions.matexpr import MatrixElement
 
 from rigidsym.checking.deciding.errors import BadInput
 from rigidsym.latex.bookrules import TIMED
@@ -176,7 +177,12 @@ class _Reader:
                 self.glyphs[k] = g
                 self.in_models.add(k)
         self.model_readings(x, p.readings)
-        return p.chains[0][1].xreplace(subs), x.params
+        v = p.chains[0][1].xreplace(subs)
+        # an entry of a parameter (q_{4:4}) at an argument that is no symbol (-q, a bmatrix):
+        # xreplace leaves (-q)[3, 0] unevaluated, which no later stage reads; index it now
+        return v.replace(lambda e: isinstance(e, MatrixElement)
+                         and not isinstance(e.parent, sp.MatrixSymbol),
+                         lambda e: e.parent[e.i, e.j]), x.params
 
     def model_readings(self, x: Let, readings: list[str]) -> None:
         """The readings of a ``--let`` model, printed with the others (issue 52: before, a
