@@ -171,3 +171,25 @@ def test_extreme_inputs_are_right_on_arm(tmp_path, target):
         status, *vals = line.split()
         got = np.array([float.fromhex(v) for v in vals[:OUT_SIZE[kernel]]], dtype)
         judge_rescued(kernel, dtype, xs, int(status), got)
+
+
+def test_float_example_matches_numpy_on_cortex_m4f(tmp_path):
+    """The float-only control loop built for a Cortex-M4F (Thumb-2, single-precision FPU,
+    newlib: the objects the firmware links) and run under qemu-arm's user mode, whose
+    Cortex-A core executes the same Thumb-2 and VFP instructions: every output within 8 u
+    (float32) of the NumPy kernels' float64 value, as on the host. The x86-64 tests only
+    check that these objects reference no double helper; this runs them."""
+    cc, qemu = "arm-none-eabi-gcc", "qemu-arm"
+    missing = [t for t in (cc, qemu) if shutil.which(t) is None]
+    if missing:
+        pytest.skip(f"{' and '.join(missing)} not installed (Debian: gcc-arm-none-eabi, "
+                    "qemu-user)")
+    shim = Path(__file__).parent / "data" / "m4f_qemu_shim.c"
+    exe = _build([cc, *STRICT, "-O2", "-mcpu=cortex-m4", "-mthumb", "-mfloat-abi=hard",
+                  "-mfpu=fpv4-sp-d16", "-nostartfiles", "--specs=nosys.specs",
+                  "-DRIGIDSYM_EXAMPLE_PRINT"],
+                 [EXAMPLE / "main_f32.c", *sources(), shim], tmp_path / "loop_m4f")
+    wrapper = tmp_path / "run.sh"
+    wrapper.write_text(f"#!/bin/sh\nexec {qemu} {exe}\n")
+    wrapper.chmod(0o755)
+    assert_matches(run_example(wrapper), expected(), tol=8 * 2.0**-24)
