@@ -334,8 +334,8 @@ int main(void)
     RIGIDSYM_CHECK_ENDS
     long i, bad = 0;
     for (i = 0; i < 2000000; ++i) {
-        uint64_t b = rnd(), acc = 0;
-        uint32_t c = (uint32_t)rnd(), accf = 0;
+        uint64_t b = rnd(), acc = 0, accz = 0;
+        uint32_t c = (uint32_t)rnd(), accf = 0, acczf = 0;
         double x;
         float xf;
         rigidsym_c_vd vd = {0, 0};
@@ -348,12 +348,15 @@ int main(void)
         memcpy(&xf, &c, 4);
         RIGIDSYM_C_ODD_D(acc, x);
         RIGIDSYM_C_ODD_F(accf, xf);
+        RIGIDSYM_C_ODDNZ_D(accz, x);
+        RIGIDSYM_C_ODDNZ_F(acczf, xf);
         vd[1] = b;
         vf[2] = c;
         vd = rigidsym_c_odd_vd(vd);
         vf = rigidsym_c_odd_vf(vf);
         bad += (int)(acc >> 63) != odd_d(x) || (int)(vd[1] >> 63) != odd_d(x) || vd[0] >> 63;
         bad += (int)(accf >> 31) != odd_f(xf) || (int)(vf[2] >> 31) != odd_f(xf) || vf[0] >> 31;
+        bad += (accz != 0) != odd_d(x) || (acczf != 0) != odd_f(xf);
     }
     printf("%ld\n", bad);
 #else
@@ -366,8 +369,9 @@ int main(void)
 
 @needs_gcc
 def test_the_vector_and_scalar_range_tests_are_the_definition(tmp_path):
-    """The generic vector range test (Arm with NEON) and the scalar one (Cortex-M, other
-    compilers), built here with -DRIGIDSYM_C_NO_SSE2, call a component odd exactly when it
+    """The generic vector range test (Arm with NEON) and the scalar ones (Cortex-M, other
+    compilers: RIGIDSYM_C_ODD_* and the fast path's RIGIDSYM_C_ODDNZ_*), built here with
+    -DRIGIDSYM_C_NO_SSE2, call a component odd exactly when it
     is not zero and its magnitude lies outside [2^-100, 2^101) (float: [2^-30, 2^31)) or
     it is not finite: 2e6 random bit patterns per type, half with exponents at the ends."""
     src = tmp_path / "check.c"

@@ -233,14 +233,16 @@ RIGIDSYM_C_API int rigidsym_c_body_energy(
     {   /* the range test of every input component, one at a time (an argument's
          * components by a loop: compact code where there are no 16-byte vectors) */
         int j_;
-        RIGIDSYM_C_ODD_D(odd, m);
+        RIGIDSYM_C_ODDNZ_D(odd, m);
         for (j_ = 0; j_ < 3; ++j_)
-            RIGIDSYM_C_ODD_D(odd, v[j_]);
+            RIGIDSYM_C_ODDNZ_D(odd, v[j_]);
         for (j_ = 0; j_ < 9; ++j_)
-            RIGIDSYM_C_ODD_D(odd, inertia[j_]);
+            RIGIDSYM_C_ODDNZ_D(odd, inertia[j_]);
         for (j_ = 0; j_ < 3; ++j_)
-            RIGIDSYM_C_ODD_D(odd, omega[j_]);
+            RIGIDSYM_C_ODDNZ_D(odd, omega[j_]);
         (void)j_;
+        if (odd)   /* nonzero, not its sign bit, flags an odd component here */
+            return rigidsym_c_body_energy_odd(m, v, inertia, omega, T);
     }
 #endif
     if (odd >> 63)
@@ -474,14 +476,16 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_f32(
     {   /* the range test of every input component, one at a time (an argument's
          * components by a loop: compact code where there are no 16-byte vectors) */
         int j_;
-        RIGIDSYM_C_ODD_F(odd, m);
+        RIGIDSYM_C_ODDNZ_F(odd, m);
         for (j_ = 0; j_ < 3; ++j_)
-            RIGIDSYM_C_ODD_F(odd, v[j_]);
+            RIGIDSYM_C_ODDNZ_F(odd, v[j_]);
         for (j_ = 0; j_ < 9; ++j_)
-            RIGIDSYM_C_ODD_F(odd, inertia[j_]);
+            RIGIDSYM_C_ODDNZ_F(odd, inertia[j_]);
         for (j_ = 0; j_ < 3; ++j_)
-            RIGIDSYM_C_ODD_F(odd, omega[j_]);
+            RIGIDSYM_C_ODDNZ_F(odd, omega[j_]);
         (void)j_;
+        if (odd)   /* nonzero, not its sign bit, flags an odd component here */
+            return rigidsym_c_body_energy_f32_odd(m, v, inertia, omega, T);
     }
 #endif
     if (odd >> 31)
@@ -907,14 +911,16 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians(
     {   /* the range test of every input component, one at a time (an argument's
          * components by a loop: compact code where there are no 16-byte vectors) */
         int j_;
-        RIGIDSYM_C_ODD_D(odd, m);
+        RIGIDSYM_C_ODDNZ_D(odd, m);
         for (j_ = 0; j_ < 3; ++j_)
-            RIGIDSYM_C_ODD_D(odd, v[j_]);
+            RIGIDSYM_C_ODDNZ_D(odd, v[j_]);
         for (j_ = 0; j_ < 9; ++j_)
-            RIGIDSYM_C_ODD_D(odd, inertia[j_]);
+            RIGIDSYM_C_ODDNZ_D(odd, inertia[j_]);
         for (j_ = 0; j_ < 3; ++j_)
-            RIGIDSYM_C_ODD_D(odd, omega[j_]);
+            RIGIDSYM_C_ODDNZ_D(odd, omega[j_]);
         (void)j_;
+        if (odd)   /* nonzero, not its sign bit, flags an odd component here */
+            return rigidsym_c_body_energy_with_jacobians_odd(m, v, inertia, omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
     }
 #endif
     if (odd >> 63)
@@ -1291,14 +1297,16 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians_f32(
     {   /* the range test of every input component, one at a time (an argument's
          * components by a loop: compact code where there are no 16-byte vectors) */
         int j_;
-        RIGIDSYM_C_ODD_F(odd, m);
+        RIGIDSYM_C_ODDNZ_F(odd, m);
         for (j_ = 0; j_ < 3; ++j_)
-            RIGIDSYM_C_ODD_F(odd, v[j_]);
+            RIGIDSYM_C_ODDNZ_F(odd, v[j_]);
         for (j_ = 0; j_ < 9; ++j_)
-            RIGIDSYM_C_ODD_F(odd, inertia[j_]);
+            RIGIDSYM_C_ODDNZ_F(odd, inertia[j_]);
         for (j_ = 0; j_ < 3; ++j_)
-            RIGIDSYM_C_ODD_F(odd, omega[j_]);
+            RIGIDSYM_C_ODDNZ_F(odd, omega[j_]);
         (void)j_;
+        if (odd)   /* nonzero, not its sign bit, flags an odd component here */
+            return rigidsym_c_body_energy_with_jacobians_f32_odd(m, v, inertia, omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
     }
 #endif
     if (odd >> 31)

@@ -299,15 +299,17 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench(
          * components by a loop: compact code where there are no 16-byte vectors) */
         int j_;
         for (j_ = 0; j_ < 9; ++j_)
-            RIGIDSYM_C_ODD_D(odd, I_C[j_]);
-        RIGIDSYM_C_ODD_D(odd, m);
+            RIGIDSYM_C_ODDNZ_D(odd, I_C[j_]);
+        RIGIDSYM_C_ODDNZ_D(odd, m);
         for (j_ = 0; j_ < 3; ++j_)
-            RIGIDSYM_C_ODD_D(odd, omega[j_]);
+            RIGIDSYM_C_ODDNZ_D(odd, omega[j_]);
         for (j_ = 0; j_ < 3; ++j_)
-            RIGIDSYM_C_ODD_D(odd, omega_dot[j_]);
+            RIGIDSYM_C_ODDNZ_D(odd, omega_dot[j_]);
         for (j_ = 0; j_ < 3; ++j_)
-            RIGIDSYM_C_ODD_D(odd, c_ddot[j_]);
+            RIGIDSYM_C_ODDNZ_D(odd, c_ddot[j_]);
         (void)j_;
+        if (odd)   /* nonzero, not its sign bit, flags an odd component here */
+            return rigidsym_c_newton_euler_wrench_odd(I_C, m, omega, omega_dot, c_ddot, w);
     }
 #endif
     if (odd >> 63)
@@ -610,15 +612,17 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_f32(
          * components by a loop: compact code where there are no 16-byte vectors) */
         int j_;
         for (j_ = 0; j_ < 9; ++j_)
-            RIGIDSYM_C_ODD_F(odd, I_C[j_]);
-        RIGIDSYM_C_ODD_F(odd, m);
+            RIGIDSYM_C_ODDNZ_F(odd, I_C[j_]);
+        RIGIDSYM_C_ODDNZ_F(odd, m);
         for (j_ = 0; j_ < 3; ++j_)
-            RIGIDSYM_C_ODD_F(odd, omega[j_]);
+            RIGIDSYM_C_ODDNZ_F(odd, omega[j_]);
         for (j_ = 0; j_ < 3; ++j_)
-            RIGIDSYM_C_ODD_F(odd, omega_dot[j_]);
+            RIGIDSYM_C_ODDNZ_F(odd, omega_dot[j_]);
         for (j_ = 0; j_ < 3; ++j_)
-            RIGIDSYM_C_ODD_F(odd, c_ddot[j_]);
+            RIGIDSYM_C_ODDNZ_F(odd, c_ddot[j_]);
         (void)j_;
+        if (odd)   /* nonzero, not its sign bit, flags an odd component here */
+            return rigidsym_c_newton_euler_wrench_f32_odd(I_C, m, omega, omega_dot, c_ddot, w);
     }
 #endif
     if (odd >> 31)
@@ -1536,15 +1540,17 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians(
          * components by a loop: compact code where there are no 16-byte vectors) */
         int j_;
         for (j_ = 0; j_ < 9; ++j_)
-            RIGIDSYM_C_ODD_D(odd, I_C[j_]);
-        RIGIDSYM_C_ODD_D(odd, m);
+            RIGIDSYM_C_ODDNZ_D(odd, I_C[j_]);
+        RIGIDSYM_C_ODDNZ_D(odd, m);
         for (j_ = 0; j_ < 3; ++j_)
-            RIGIDSYM_C_ODD_D(odd, omega[j_]);
+            RIGIDSYM_C_ODDNZ_D(odd, omega[j_]);
         for (j_ = 0; j_ < 3; ++j_)
-            RIGIDSYM_C_ODD_D(odd, omega_dot[j_]);
+            RIGIDSYM_C_ODDNZ_D(odd, omega_dot[j_]);
         for (j_ = 0; j_ < 3; ++j_)
-            RIGIDSYM_C_ODD_D(odd, c_ddot[j_]);
+            RIGIDSYM_C_ODDNZ_D(odd, c_ddot[j_]);
         (void)j_;
+        if (odd)   /* nonzero, not its sign bit, flags an odd component here */
+            return rigidsym_c_newton_euler_wrench_with_jacobians_odd(I_C, m, omega, omega_dot, c_ddot, w, w_D_I_C, w_D_m, w_D_omega, w_D_omega_dot, w_D_c_ddot);
     }
 #endif
     if (odd >> 63)
@@ -2389,15 +2395,17 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians_f32(
          * components by a loop: compact code where there are no 16-byte vectors) */
         int j_;
         for (j_ = 0; j_ < 9; ++j_)
-            RIGIDSYM_C_ODD_F(odd, I_C[j_]);
-        RIGIDSYM_C_ODD_F(odd, m);
+            RIGIDSYM_C_ODDNZ_F(odd, I_C[j_]);
+        RIGIDSYM_C_ODDNZ_F(odd, m);
         for (j_ = 0; j_ < 3; ++j_)
-            RIGIDSYM_C_ODD_F(odd, omega[j_]);
+            RIGIDSYM_C_ODDNZ_F(odd, omega[j_]);
         for (j_ = 0; j_ < 3; ++j_)
-            RIGIDSYM_C_ODD_F(odd, omega_dot[j_]);
+            RIGIDSYM_C_ODDNZ_F(odd, omega_dot[j_]);
         for (j_ = 0; j_ < 3; ++j_)
-            RIGIDSYM_C_ODD_F(odd, c_ddot[j_]);
+            RIGIDSYM_C_ODDNZ_F(odd, c_ddot[j_]);
         (void)j_;
+        if (odd)   /* nonzero, not its sign bit, flags an odd component here */
+            return rigidsym_c_newton_euler_wrench_with_jacobians_f32_odd(I_C, m, omega, omega_dot, c_ddot, w, w_D_I_C, w_D_m, w_D_omega, w_D_omega_dot, w_D_c_ddot);
     }
 #endif
     if (odd >> 31)

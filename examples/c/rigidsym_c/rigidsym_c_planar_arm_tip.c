@@ -192,11 +192,13 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip(
     {   /* the range test of every input component, one at a time (an argument's
          * components by a loop: compact code where there are no 16-byte vectors) */
         int j_;
-        RIGIDSYM_C_ODD_D(odd, q1);
-        RIGIDSYM_C_ODD_D(odd, q2);
-        RIGIDSYM_C_ODD_D(odd, l1);
-        RIGIDSYM_C_ODD_D(odd, l2);
+        RIGIDSYM_C_ODDNZ_D(odd, q1);
+        RIGIDSYM_C_ODDNZ_D(odd, q2);
+        RIGIDSYM_C_ODDNZ_D(odd, l1);
+        RIGIDSYM_C_ODDNZ_D(odd, l2);
         (void)j_;
+        if (odd)   /* nonzero, not its sign bit, flags an odd component here */
+            return rigidsym_c_planar_arm_tip_odd(q1, q2, l1, l2, p);
     }
 #endif
     if (odd >> 63)
@@ -394,11 +396,13 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_f32(
     {   /* the range test of every input component, one at a time (an argument's
          * components by a loop: compact code where there are no 16-byte vectors) */
         int j_;
-        RIGIDSYM_C_ODD_F(odd, q1);
-        RIGIDSYM_C_ODD_F(odd, q2);
-        RIGIDSYM_C_ODD_F(odd, l1);
-        RIGIDSYM_C_ODD_F(odd, l2);
+        RIGIDSYM_C_ODDNZ_F(odd, q1);
+        RIGIDSYM_C_ODDNZ_F(odd, q2);
+        RIGIDSYM_C_ODDNZ_F(odd, l1);
+        RIGIDSYM_C_ODDNZ_F(odd, l2);
         (void)j_;
+        if (odd)   /* nonzero, not its sign bit, flags an odd component here */
+            return rigidsym_c_planar_arm_tip_f32_odd(q1, q2, l1, l2, p);
     }
 #endif
     if (odd >> 31)
@@ -706,11 +710,13 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians(
     {   /* the range test of every input component, one at a time (an argument's
          * components by a loop: compact code where there are no 16-byte vectors) */
         int j_;
-        RIGIDSYM_C_ODD_D(odd, q1);
-        RIGIDSYM_C_ODD_D(odd, q2);
-        RIGIDSYM_C_ODD_D(odd, l1);
-        RIGIDSYM_C_ODD_D(odd, l2);
+        RIGIDSYM_C_ODDNZ_D(odd, q1);
+        RIGIDSYM_C_ODDNZ_D(odd, q2);
+        RIGIDSYM_C_ODDNZ_D(odd, l1);
+        RIGIDSYM_C_ODDNZ_D(odd, l2);
         (void)j_;
+        if (odd)   /* nonzero, not its sign bit, flags an odd component here */
+            return rigidsym_c_planar_arm_tip_with_jacobians_odd(q1, q2, l1, l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
     }
 #endif
     if (odd >> 63)
@@ -976,11 +982,13 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians_f32(
     {   /* the range test of every input component, one at a time (an argument's
          * components by a loop: compact code where there are no 16-byte vectors) */
         int j_;
-        RIGIDSYM_C_ODD_F(odd, q1);
-        RIGIDSYM_C_ODD_F(odd, q2);
-        RIGIDSYM_C_ODD_F(odd, l1);
-        RIGIDSYM_C_ODD_F(odd, l2);
+        RIGIDSYM_C_ODDNZ_F(odd, q1);
+        RIGIDSYM_C_ODDNZ_F(odd, q2);
+        RIGIDSYM_C_ODDNZ_F(odd, l1);
+        RIGIDSYM_C_ODDNZ_F(odd, l2);
         (void)j_;
+        if (odd)   /* nonzero, not its sign bit, flags an odd component here */
+            return rigidsym_c_planar_arm_tip_with_jacobians_f32_odd(q1, q2, l1, l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
     }
 #endif
     if (odd >> 31)

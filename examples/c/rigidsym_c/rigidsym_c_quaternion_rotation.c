@@ -164,8 +164,10 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation(
          * components by a loop: compact code where there are no 16-byte vectors) */
         int j_;
         for (j_ = 0; j_ < 4; ++j_)
-            RIGIDSYM_C_ODD_D(odd, q[j_]);
+            RIGIDSYM_C_ODDNZ_D(odd, q[j_]);
         (void)j_;
+        if (odd)   /* nonzero, not its sign bit, flags an odd component here */
+            return rigidsym_c_quaternion_rotation_odd(q, Q);
     }
 #endif
     if (odd >> 63)
@@ -342,8 +344,10 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_f32(
          * components by a loop: compact code where there are no 16-byte vectors) */
         int j_;
         for (j_ = 0; j_ < 4; ++j_)
-            RIGIDSYM_C_ODD_F(odd, q[j_]);
+            RIGIDSYM_C_ODDNZ_F(odd, q[j_]);
         (void)j_;
+        if (odd)   /* nonzero, not its sign bit, flags an odd component here */
+            return rigidsym_c_quaternion_rotation_f32_odd(q, Q);
     }
 #endif
     if (odd >> 31)
@@ -736,8 +740,10 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_with_jacobians(
          * components by a loop: compact code where there are no 16-byte vectors) */
         int j_;
         for (j_ = 0; j_ < 4; ++j_)
-            RIGIDSYM_C_ODD_D(odd, q[j_]);
+            RIGIDSYM_C_ODDNZ_D(odd, q[j_]);
         (void)j_;
+        if (odd)   /* nonzero, not its sign bit, flags an odd component here */
+            return rigidsym_c_quaternion_rotation_with_jacobians_odd(q, Q, Q_D_q);
     }
 #endif
     if (odd >> 63)
@@ -1073,8 +1079,10 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_with_jacobians_f32(
          * components by a loop: compact code where there are no 16-byte vectors) */
         int j_;
         for (j_ = 0; j_ < 4; ++j_)
-            RIGIDSYM_C_ODD_F(odd, q[j_]);
+            RIGIDSYM_C_ODDNZ_F(odd, q[j_]);
         (void)j_;
+        if (odd)   /* nonzero, not its sign bit, flags an odd component here */
+            return rigidsym_c_quaternion_rotation_with_jacobians_f32_odd(q, Q, Q_D_q);
     }
 #endif
     if (odd >> 31)

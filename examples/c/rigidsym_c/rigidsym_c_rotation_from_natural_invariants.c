@@ -187,9 +187,11 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants(
          * components by a loop: compact code where there are no 16-byte vectors) */
         int j_;
         for (j_ = 0; j_ < 3; ++j_)
-            RIGIDSYM_C_ODD_D(odd, e[j_]);
-        RIGIDSYM_C_ODD_D(odd, phi);
+            RIGIDSYM_C_ODDNZ_D(odd, e[j_]);
+        RIGIDSYM_C_ODDNZ_D(odd, phi);
         (void)j_;
+        if (odd)   /* nonzero, not its sign bit, flags an odd component here */
+            return rigidsym_c_rotation_from_natural_invariants_odd(e, phi, Q);
     }
 #endif
     if (odd >> 63)
@@ -388,9 +390,11 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_f32(
          * components by a loop: compact code where there are no 16-byte vectors) */
         int j_;
         for (j_ = 0; j_ < 3; ++j_)
-            RIGIDSYM_C_ODD_F(odd, e[j_]);
-        RIGIDSYM_C_ODD_F(odd, phi);
+            RIGIDSYM_C_ODDNZ_F(odd, e[j_]);
+        RIGIDSYM_C_ODDNZ_F(odd, phi);
         (void)j_;
+        if (odd)   /* nonzero, not its sign bit, flags an odd component here */
+            return rigidsym_c_rotation_from_natural_invariants_f32_odd(e, phi, Q);
     }
 #endif
     if (odd >> 31)
@@ -829,9 +833,11 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_with_jacobians(
          * components by a loop: compact code where there are no 16-byte vectors) */
         int j_;
         for (j_ = 0; j_ < 3; ++j_)
-            RIGIDSYM_C_ODD_D(odd, e[j_]);
-        RIGIDSYM_C_ODD_D(odd, phi);
+            RIGIDSYM_C_ODDNZ_D(odd, e[j_]);
+        RIGIDSYM_C_ODDNZ_D(odd, phi);
         (void)j_;
+        if (odd)   /* nonzero, not its sign bit, flags an odd component here */
+            return rigidsym_c_rotation_from_natural_invariants_with_jacobians_odd(e, phi, Q, Q_D_e, Q_D_phi);
     }
 #endif
     if (odd >> 63)
@@ -1204,9 +1210,11 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_with_jacobians_f3
          * components by a loop: compact code where there are no 16-byte vectors) */
         int j_;
         for (j_ = 0; j_ < 3; ++j_)
-            RIGIDSYM_C_ODD_F(odd, e[j_]);
-        RIGIDSYM_C_ODD_F(odd, phi);
+            RIGIDSYM_C_ODDNZ_F(odd, e[j_]);
+        RIGIDSYM_C_ODDNZ_F(odd, phi);
         (void)j_;
+        if (odd)   /* nonzero, not its sign bit, flags an odd component here */
+            return rigidsym_c_rotation_from_natural_invariants_with_jacobians_f32_odd(e, phi, Q, Q_D_e, Q_D_phi);
     }
 #endif
     if (odd >> 31)

@@ -235,12 +235,14 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer(
          * components by a loop: compact code where there are no 16-byte vectors) */
         int j_;
         for (j_ = 0; j_ < 6; ++j_)
-            RIGIDSYM_C_ODD_D(odd, t_A[j_]);
+            RIGIDSYM_C_ODDNZ_D(odd, t_A[j_]);
         for (j_ = 0; j_ < 3; ++j_)
-            RIGIDSYM_C_ODD_D(odd, a[j_]);
+            RIGIDSYM_C_ODDNZ_D(odd, a[j_]);
         for (j_ = 0; j_ < 3; ++j_)
-            RIGIDSYM_C_ODD_D(odd, p[j_]);
+            RIGIDSYM_C_ODDNZ_D(odd, p[j_]);
         (void)j_;
+        if (odd)   /* nonzero, not its sign bit, flags an odd component here */
+            return rigidsym_c_twist_transfer_odd(t_A, a, p, t_P);
     }
 #endif
     if (odd >> 63)
@@ -487,12 +489,14 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_f32(
          * components by a loop: compact code where there are no 16-byte vectors) */
         int j_;
         for (j_ = 0; j_ < 6; ++j_)
-            RIGIDSYM_C_ODD_F(odd, t_A[j_]);
+            RIGIDSYM_C_ODDNZ_F(odd, t_A[j_]);
         for (j_ = 0; j_ < 3; ++j_)
-            RIGIDSYM_C_ODD_F(odd, a[j_]);
+            RIGIDSYM_C_ODDNZ_F(odd, a[j_]);
         for (j_ = 0; j_ < 3; ++j_)
-            RIGIDSYM_C_ODD_F(odd, p[j_]);
+            RIGIDSYM_C_ODDNZ_F(odd, p[j_]);
         (void)j_;
+        if (odd)   /* nonzero, not its sign bit, flags an odd component here */
+            return rigidsym_c_twist_transfer_f32_odd(t_A, a, p, t_P);
     }
 #endif
     if (odd >> 31)
@@ -1120,12 +1124,14 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_with_jacobians(
          * components by a loop: compact code where there are no 16-byte vectors) */
         int j_;
         for (j_ = 0; j_ < 6; ++j_)
-            RIGIDSYM_C_ODD_D(odd, t_A[j_]);
+            RIGIDSYM_C_ODDNZ_D(odd, t_A[j_]);
         for (j_ = 0; j_ < 3; ++j_)
-            RIGIDSYM_C_ODD_D(odd, a[j_]);
+            RIGIDSYM_C_ODDNZ_D(odd, a[j_]);
         for (j_ = 0; j_ < 3; ++j_)
-            RIGIDSYM_C_ODD_D(odd, p[j_]);
+            RIGIDSYM_C_ODDNZ_D(odd, p[j_]);
         (void)j_;
+        if (odd)   /* nonzero, not its sign bit, flags an odd component here */
+            return rigidsym_c_twist_transfer_with_jacobians_odd(t_A, a, p, t_P, t_P_D_t_A, t_P_D_a, t_P_D_p);
     }
 #endif
     if (odd >> 63)
@@ -1696,12 +1702,14 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_with_jacobians_f32(
          * components by a loop: compact code where there are no 16-byte vectors) */
         int j_;
         for (j_ = 0; j_ < 6; ++j_)
-            RIGIDSYM_C_ODD_F(odd, t_A[j_]);
+            RIGIDSYM_C_ODDNZ_F(odd, t_A[j_]);
         for (j_ = 0; j_ < 3; ++j_)
-            RIGIDSYM_C_ODD_F(odd, a[j_]);
+            RIGIDSYM_C_ODDNZ_F(odd, a[j_]);
         for (j_ = 0; j_ < 3; ++j_)
-            RIGIDSYM_C_ODD_F(odd, p[j_]);
+            RIGIDSYM_C_ODDNZ_F(odd, p[j_]);
         (void)j_;
+        if (odd)   /* nonzero, not its sign bit, flags an odd component here */
+            return rigidsym_c_twist_transfer_with_jacobians_f32_odd(t_A, a, p, t_P, t_P_D_t_A, t_P_D_a, t_P_D_p);
     }
 #endif
     if (odd >> 31)
