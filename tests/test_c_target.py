@@ -990,6 +990,17 @@ def _reference(name: str, xs: list) -> tuple[np.ndarray, np.ndarray]:
         terms = [(l1 * mp.cos(q1), l2 * mp.cos(q1 + q2)), (l1 * mp.sin(q1), l2 * mp.sin(q1 + q2))]
         return (np.array([float(a + b) for a, b in terms]),
                 np.array([float(abs(a) + abs(b)) for a, b in terms]))
+    if name == "newton_euler_wrench":  # [I wd + w x (I w); m cdd] (Newton-Euler, (3.134))
+        inertia, (m,), w, wd, cdd = f
+        h = [[inertia[3 * k + j] * w[j] for j in range(3)] for k in range(3)]  # I w, termwise
+        terms = []
+        for i in range(3):
+            j, k = (i + 1) % 3, (i + 2) % 3
+            terms.append([inertia[3 * i + c] * wd[c] for c in range(3)]
+                         + [w[j] * t for t in h[k]] + [-w[k] * t for t in h[j]])
+        terms += [[m * cdd[i]] for i in range(3)]
+        return (np.array([float(sum(t)) for t in terms]),
+                np.array([float(sum(map(abs, t))) for t in terms]))
     t, a, p = f                       # twist_transfer: [omega; v + (a - p) x omega]
     w, v = t[:3], t[3:]
     r = [a[i] - p[i] for i in range(3)]
@@ -1035,6 +1046,117 @@ def test_extreme_double_inputs_are_rescaled_without_long_double(lib_narrow, name
     """The double functions where long double is double (Cortex-M, Windows) at 1e-300 ...
     1e300: right by power-of-two rescaling (check_rescued)."""
     check_rescued(lib_narrow, name, np.float64, scale, seed)
+
+
+# -- an extreme input that no rescue takes: the exception flags decide (item 3) --
+
+#: per kernel: its arguments with the ones it is not homogeneous in scaled (the wrench's
+#: angular velocity, the arm's joint angles), the others of ordinary size
+FLAGGED = {
+    "newton_euler_wrench": lambda r, s: [
+        (np.diag(r.uniform(0.01, 0.1, 3)) + 0.002 * r.normal(size=(3, 3))).ravel(),
+        float(r.uniform(0.5, 2)), r.normal(size=3) * s, r.normal(size=3), r.normal(size=3)],
+    # torque-free: n = omega x I omega alone, so an underflow there is the whole output and
+    # a status 0 that hid one would break the bound (the wrench above hides it in I wd)
+    "newton_euler_wrench_free": lambda r, s: [
+        (np.diag(r.uniform(0.01, 0.1, 3)) + 0.002 * r.normal(size=(3, 3))).ravel(),
+        float(r.uniform(0.5, 2)), r.normal(size=3) * s, np.zeros(3), np.zeros(3)],
+    "planar_arm_tip": lambda r, s: [float(r.normal() * s), float(r.normal() * s),
+                                    float(r.uniform(0.2, 1)), float(r.uniform(0.2, 1))],
+}
+OUT_SIZE["newton_euler_wrench"] = 6
+KERNEL_OF = {"newton_euler_wrench_free": "newton_euler_wrench"}
+
+
+def flagged_inputs(name: str, dtype, scale: float, seed: int) -> list:
+    """FLAGGED's draw in the type (scalars as Python floats holding a value of the type)."""
+    rng = np.random.default_rng(seed)
+    xs = [np.asarray(x, dtype) if not isinstance(x, float) else float(dtype(x))
+          for x in FLAGGED[name](rng, scale)]
+    return [x.item() if isinstance(x, np.ndarray) and x.ndim == 0 else x for x in xs]
+
+
+def judge_flagged(name: str, dtype, xs: list, status: int, got: np.ndarray,
+                  must_pass: bool) -> None:
+    """An extreme input that no rescue takes: never NaN; status 0 or EXTREME_INPUT; with
+    status 0, within 8 u of the sum of the terms' magnitudes (mpmath) of the exact value,
+    the bound of an ordinary sample. ``must_pass``: every product of the formula is a normal
+    number of the type here, so nothing can underflow and the status must be 0."""
+    ref, mag = _reference(name, xs)
+    eps = float(np.finfo(dtype).eps)
+    assert not np.isnan(got).any(), (status, got)
+    assert status in (OK, EXTREME_INPUT), status
+    if must_pass:
+        assert status == OK, (xs, status)
+    if status == OK:
+        assert np.all(np.abs(got - ref) <= 8 * eps / 2 * mag), (got, ref, mag)
+
+
+@settings(max_examples=40, deadline=None)
+@given(st.sampled_from(sorted(FLAGGED)), st.sampled_from([1e-12, 1e-15, 1e-20, 1e-30, 1e-41]),
+       st.integers(0, 2**32 - 1))
+def test_extreme_float_inputs_no_rescue_takes_are_right_or_flagged(lib, name, scale, seed):
+    """The issue's case: an angular rate of 1e-12 rad/s in float, where the wrench is not
+    homogeneous in omega, so no rescaling takes it. Where no operation underflows (1e-12:
+    omega x I omega ~ 1e-26, far above float's 1.2e-38) status 0 and the ordinary bound;
+    smaller (products below float's normal range), EXTREME_INPUT or, if status 0, still
+    within the bound: the flags never pass a sample that lost accuracy."""
+    kernel = KERNEL_OF.get(name, name)
+    xs = flagged_inputs(name, np.float32, scale, seed)
+    status, (got,) = call(lib, f"rigidsym_c_{kernel}_f32", *xs, ("out", OUT_SIZE[kernel]),
+                          dtype=np.float32)
+    judge_flagged(kernel, np.float32, xs, status, got, must_pass=scale == 1e-12)
+
+
+@pytest.mark.slow   # its own build of the example's sources (-DRIGIDSYM_C_NO_WIDE)
+@settings(max_examples=30, deadline=None)
+@given(st.sampled_from(sorted(FLAGGED)), st.sampled_from([1e-120, 1e-160, 1e-200, 1e-310]),
+       st.integers(0, 2**32 - 1))
+def test_extreme_double_inputs_no_rescue_takes_without_long_double(lib_narrow, name, scale,
+                                                                   seed):
+    """The same for the double functions where long double is double (armhf, Cortex-M,
+    Windows): omega at 1e-120 passes (products ~1e-240), 1e-160 and below may underflow."""
+    kernel = KERNEL_OF.get(name, name)
+    xs = flagged_inputs(name, np.float64, scale, seed)
+    status, (got,) = call(lib_narrow, f"rigidsym_c_{kernel}", *xs, ("out", OUT_SIZE[kernel]))
+    judge_flagged(kernel, np.float64, xs, status, got, must_pass=scale == 1e-120)
+
+
+_FLAGS_KEPT = r"""#include <fenv.h>
+#include <stdio.h>
+#include "rigidsym_c.h"
+int main(void)
+{
+    const float I[9] = {0.02f, 0.001f, 0, 0.001f, 0.03f, 0.002f, 0, 0.002f, 0.025f};
+    const float wd[3] = {0.1f, 0.5f, -0.2f}, cdd[3] = {0, 0, -9.81f};
+    const float w[3] = {1e-12f, -2e-12f, 3e-12f}, tiny[3] = {1e-30f, -2e-30f, 3e-30f};
+    float out[6];
+    int s1, s2, kept, raised;
+    feclearexcept(FE_ALL_EXCEPT);
+    feraiseexcept(FE_DIVBYZERO);   /* the caller's own flag, raised before the call */
+    s1 = rigidsym_c_newton_euler_wrench_f32(I, 1.5f, w, wd, cdd, out);
+    kept = fetestexcept(FE_DIVBYZERO) != 0 && fetestexcept(FE_UNDERFLOW) == 0;
+    s2 = rigidsym_c_newton_euler_wrench_f32(I, 1.5f, tiny, wd, cdd, out);
+    raised = fetestexcept(FE_UNDERFLOW) != 0 && fetestexcept(FE_DIVBYZERO) != 0;
+    printf("%d %d %d %d\n", s1, s2, kept, raised);
+    return 0;
+}
+"""
+
+
+@needs_gcc
+def test_the_flags_step_keeps_the_callers_flags(tmp_path):
+    """The flags step clears the exception flags for its evaluation and gives the caller
+    back its own with those raised since: a divide-by-zero raised before the call stays
+    raised, an underflow of the call (omega at 1e-30 in float) shows after it; the status
+    is 0 at 1e-12 and EXTREME_INPUT (8) at 1e-30."""
+    src = tmp_path / "kept.c"
+    src.write_text(_FLAGS_KEPT)
+    exe = tmp_path / "kept"
+    subprocess.run([GCC, *STRICT, "-O2", "-I", str(KERNELS_DIR), str(src),
+                    *map(str, sources()), "-o", str(exe), "-lm"], check=True)
+    out = subprocess.run([str(exe)], check=True, capture_output=True, text=True).stdout
+    assert out.split() == ["0", "8", "1", "1"]
 
 
 def check_rescued(lib_, name, dtype, scale, seed):

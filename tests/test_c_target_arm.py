@@ -27,13 +27,17 @@ from test_c_target import (
     _VECTOR_CHECK,
     DOUBLE_SCALES,
     EXAMPLE,
+    FLAGGED,
     FLOAT_SCALES,
+    KERNEL_OF,
     KERNELS_DIR,
     OUT_SIZE,
     RESCUED,
     STRICT,
     assert_matches,
     expected,
+    flagged_inputs,
+    judge_flagged,
     judge_rescued,
     rescued_inputs,
     run_example,
@@ -88,13 +92,15 @@ def test_neon_range_test_is_the_definition(tmp_path, target):
 
 
 _DRIVER = r"""
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "rigidsym_c.h"
 /* stdin: lines "KERNEL TYPE MODE n x1 ... xn" (TYPE d or f, MODE s for the scalar
- * function or b for the batch one at count 1; x as C99 hex floats);
- * stdout: "status o1 ... om" (hex). The arguments are the kernel's, flattened in order. */
+ * function or b for the batch one at count 1; x in decimal, 17 digits: strtod rounds it
+ * back exactly); stdout: "status o1 ... om", each output's double bits in hex. The
+ * arguments are the kernel's, flattened in order. */
 #define CALLS(T, S) \
 static int call_##T(const char *k, int batch, const T *x, T *o) { \
     int st = 0; \
@@ -107,6 +113,10 @@ static int call_##T(const char *k, int batch, const T *x, T *o) { \
     if (!strcmp(k, "planar_arm_tip")) \
         return batch ? rigidsym_c_planar_arm_tip##S##_batch(1, x, x + 1, x + 2, x + 3, o, &st) \
                      : rigidsym_c_planar_arm_tip##S(x[0], x[1], x[2], x[3], o); \
+    if (!strcmp(k, "newton_euler_wrench")) \
+        return batch ? rigidsym_c_newton_euler_wrench##S##_batch(1, x, x + 9, x + 10, x + 13, \
+                                                                 x + 16, o, &st) \
+                     : rigidsym_c_newton_euler_wrench##S(x, x[9], x + 10, x + 13, x + 16, o); \
     return -1; \
 }
 CALLS(double, )
@@ -129,8 +139,12 @@ int main(void)
         st = t[0] == 'd' ? call_double(k, m[0] == 'b', xd, od)
                          : call_float(k, m[0] == 'b', xf, of);
         printf("%d", st);
-        for (i = 0; i < 8; ++i)
-            printf(" %a", t[0] == 'd' ? od[i] : (double)of[i]);
+        for (i = 0; i < 8; ++i) {   /* the bits, as two 32-bit halves: newlib has no %a */
+            const double v = t[0] == 'd' ? od[i] : (double)of[i];
+            uint64_t b;
+            memcpy(&b, &v, 8);
+            printf(" %08lx%08lx", (unsigned long)(b >> 32), (unsigned long)(b & 0xffffffffU));
+        }
         printf("\n");
     }
     return 0;
@@ -163,14 +177,86 @@ def test_extreme_inputs_are_right_on_arm(tmp_path, target):
                     for mode in "sb":
                         cases.append((kernel, dtype, xs))
                         lines.append(f"{kernel} {'d' if dtype == np.float64 else 'f'} {mode} "
-                                     f"{flat.size} " + " ".join(float(v).hex() for v in flat))
+                                     f"{flat.size} " + " ".join(repr(float(v)) for v in flat))
     out = subprocess.run([qemu, str(exe)], input="\n".join(lines) + "\n", check=True,
                          capture_output=True, text=True).stdout.splitlines()
     assert len(out) == len(cases)
     for (kernel, dtype, xs), line in zip(cases, out, strict=True):
         status, *vals = line.split()
-        got = np.array([float.fromhex(v) for v in vals[:OUT_SIZE[kernel]]], dtype)
+        got = _from_bits(vals[:OUT_SIZE[kernel]], dtype)
         judge_rescued(kernel, dtype, xs, int(status), got)
+
+
+def _from_bits(words: list[str], dtype) -> np.ndarray:
+    """_DRIVER's outputs (each a double's bits in hex) as an array of the type."""
+    return np.array([int(w, 16) for w in words], dtype=np.uint64).view(np.float64).astype(dtype)
+
+
+def _run_driver(qemu: str, exe: Path, cases: list) -> list[tuple[int, np.ndarray]]:
+    """(status, outputs) of _DRIVER's calls, one per (kernel, dtype, xs, mode) case."""
+    lines = []
+    for kernel, dtype, xs, mode in cases:
+        flat = np.concatenate([np.ravel(x) for x in xs]).astype(np.float64)
+        lines.append(f"{kernel} {'d' if dtype == np.float64 else 'f'} {mode} {flat.size} "
+                     + " ".join(repr(float(v)) for v in flat))
+    out = subprocess.run([qemu, str(exe)], input="\n".join(lines) + "\n", check=True,
+                         capture_output=True, text=True).stdout.splitlines()
+    assert len(out) == len(cases)
+    got = []
+    for (kernel, dtype, _, _), line in zip(cases, out, strict=True):
+        status, *vals = line.split()
+        got.append((int(status), _from_bits(vals[:OUT_SIZE[kernel]], dtype)))
+    return got
+
+
+def _flagged_cases(dtypes) -> list:
+    """(kernel, dtype, xs, mode, must_pass) over FLAGGED at the scales of the x86-64 tests."""
+    scales = {np.float32: [1e-12, 1e-20, 1e-30, 1e-41], np.float64: [1e-120, 1e-160, 1e-310]}
+    return [(KERNEL_OF.get(name, name), dtype, flagged_inputs(name, dtype, scale, seed), mode,
+             scale in (1e-12, 1e-120))
+            for dtype in dtypes for name in sorted(FLAGGED) for scale in scales[dtype]
+            for seed in range(4) for mode in "sb"]
+
+
+def test_extreme_inputs_no_rescue_takes_on_arm(tmp_path, target):
+    """judge_flagged (test_c_target.py) on the target, scalar and batch: the exception
+    flags step reads the FPSCR (armhf) or FPSR (aarch64), so an angular rate of 1e-12 rad/s
+    in float passes with status 0 there too, and an underflow keeps EXTREME_INPUT. On
+    aarch64 the double functions re-run in quad first; on armhf they reach the flags."""
+    name, cmd, qemu, _ = target
+    src = tmp_path / "driver.c"
+    src.write_text(_DRIVER)
+    exe = _build(cmd, [src, *sources()], tmp_path / f"driver_{name}")
+    cases = _flagged_cases((np.float32, np.float64))
+    for (kernel, dtype, xs, _, must), (status, got) in zip(
+            cases, _run_driver(qemu, exe, [c[:4] for c in cases]), strict=True):
+        judge_flagged(kernel, dtype, xs, status, got, must_pass=must)
+
+
+def test_extreme_float_inputs_no_rescue_takes_on_cortex_m4f(tmp_path):
+    """The same on the Cortex-M4F build (its float functions read the FPSCR around the
+    evaluation; its double functions are soft-float, whose helpers raise no flag, so they
+    keep EXTREME_INPUT: only the soundness half of judge_flagged is asked of them)."""
+    cc, qemu = "arm-none-eabi-gcc", "qemu-arm"
+    missing = [t for t in (cc, qemu) if shutil.which(t) is None]
+    if missing:
+        pytest.skip(f"{' and '.join(missing)} not installed (Debian: gcc-arm-none-eabi, "
+                    "qemu-user)")
+    src = tmp_path / "driver.c"
+    src.write_text(_DRIVER)
+    shim = Path(__file__).parent / "data" / "m4f_qemu_shim.c"
+    exe = _build([cc, *STRICT, "-O2", *M4F_FLAGS, "-nostartfiles", "--specs=nosys.specs"],
+                 [src, *sources(), shim], tmp_path / "driver_m4f")
+    cases = _flagged_cases((np.float32, np.float64))
+    for (kernel, dtype, xs, _, must), (status, got) in zip(
+            cases, _run_driver(qemu, exe, [c[:4] for c in cases]), strict=True):
+        judge_flagged(kernel, dtype, xs, status, got, must_pass=must and dtype == np.float32)
+        if dtype == np.float64 and any(abs(float(v)) < 2.0**-100 and v != 0
+                                       for x in xs for v in np.ravel(x)):
+            assert status == 8, status   # soft double: no flag to read, so it stays flagged
+
+
+M4F_FLAGS = ["-mcpu=cortex-m4", "-mthumb", "-mfloat-abi=hard", "-mfpu=fpv4-sp-d16"]
 
 
 def test_float_example_matches_numpy_on_cortex_m4f(tmp_path):
@@ -185,8 +271,7 @@ def test_float_example_matches_numpy_on_cortex_m4f(tmp_path):
         pytest.skip(f"{' and '.join(missing)} not installed (Debian: gcc-arm-none-eabi, "
                     "qemu-user)")
     shim = Path(__file__).parent / "data" / "m4f_qemu_shim.c"
-    exe = _build([cc, *STRICT, "-O2", "-mcpu=cortex-m4", "-mthumb", "-mfloat-abi=hard",
-                  "-mfpu=fpv4-sp-d16", "-nostartfiles", "--specs=nosys.specs",
+    exe = _build([cc, *STRICT, "-O2", *M4F_FLAGS, "-nostartfiles", "--specs=nosys.specs",
                   "-DRIGIDSYM_EXAMPLE_PRINT"],
                  [EXAMPLE / "main_f32.c", *sources(), shim], tmp_path / "loop_m4f")
     wrapper = tmp_path / "run.sh"

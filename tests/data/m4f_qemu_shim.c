@@ -1,5 +1,5 @@
 /* The Linux system calls newlib needs, for a Cortex-M4F program run under qemu-arm's user
- * mode (tests/test_c_target_arm.py): the bare-metal build's _write, _exit and _sbrk as Linux
+ * mode (tests/test_c_target_arm.py): the bare-metal build's _read, _write, _exit and _sbrk as Linux
  * calls (svc 0, the number in r7), and a _start that qemu enters with no C runtime set up
  * beyond what the ELF loader does (.data loaded, .bss zeroed). SPDX-License-Identifier: MIT */
 #include <errno.h>
@@ -8,6 +8,7 @@
 
 int main(void);
 int _write(int fd, const void *buf, int len);
+int _read(int fd, void *buf, int len);
 void _exit(int status);
 void *_sbrk(int inc);
 int _fstat(int fd, struct stat *st);
@@ -24,6 +25,7 @@ static int sys3(int n, int a, int b, int c)
 }
 
 int _write(int fd, const void *buf, int len) { return sys3(4, fd, (int)buf, len); }
+int _read(int fd, void *buf, int len) { return sys3(3, fd, (int)buf, len); }
 void _exit(int status) { sys3(1, status, 0, 0); for (;;) ; }
 static char heap[1 << 16];
 static char *brk_ = heap;

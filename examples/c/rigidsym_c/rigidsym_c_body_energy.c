@@ -116,43 +116,16 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_rescue(
 
 
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
-/* rigidsym_c_body_energy where the range test found an odd input (extreme or not finite): the
- * input bits of the status, the rescue where there is one, else the ordinary evaluation
- * with its outputs' test. Cold and out of line, reached by a tail call, so that the fast
- * path of rigidsym_c_body_energy saves no register and makes no call. */
-static RIGIDSYM_C_COLD int rigidsym_c_body_energy_odd(
+/* rigidsym_c_body_energy evaluated as written, with its outputs' test: the slow path's evaluation */
+static RIGIDSYM_C_COLD int rigidsym_c_body_energy_plain(
     double m,
     const double v[3],
     const double inertia[9],
     const double omega[3],
     double *T)
 {
-    const double *args[4];
-    const int sizes[4] = {1, 3, 9, 3};
-    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0, odd_ = 0;
+    int status = 0, singular = 0;
     double finite = 0.0;
-    args[0] = &m;
-    args[1] = v;
-    args[2] = inertia;
-    args[3] = omega;
-    for (j = 0; j < 4; ++j)
-        odd_ |= rigidsym_c_extreme_d(args[j], sizes[j]);
-    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
-        status = 0;
-    for (j = 0; j < 4; ++j)
-        if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
-            status = RIGIDSYM_C_NONFINITE_INPUT;
-#if RIGIDSYM_C_WIDE
-    if (status == RIGIDSYM_C_EXTREME_INPUT)
-        return rigidsym_c_body_energy_wide(m, v, inertia, omega, T);
-#endif
-#if RIGIDSYM_C_RESCALE_D
-    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
-        const int r_ = rigidsym_c_body_energy_rescue(m, v, inertia, omega, T);
-        if (r_ >= 0)
-            return r_;
-    }
-#endif
     const double v_0 = v[0];
     const double v_1 = v[1];
     const double v_2 = v[2];
@@ -181,6 +154,64 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_odd(
         T[0] = NAN;
     }
     return status;
+}
+#if RIGIDSYM_C_FLAGS_D
+/* called through a volatile pointer: an opaque call, so that none of the evaluation's
+ * operations moves across the reads of the exception flags around it */
+static int (*const volatile rigidsym_c_body_energy_plain_p)(
+    double m,
+    const double v[3],
+    const double inertia[9],
+    const double omega[3],
+    double *T)
+= rigidsym_c_body_energy_plain;
+#endif
+
+/* rigidsym_c_body_energy where the range test found an odd input (extreme or not finite): the
+ * input bits of the status, the rescue where there is one, else the ordinary evaluation
+ * with its outputs' test (for an extreme input, read with the exception flags where the
+ * target has them: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
+ * that the fast path of rigidsym_c_body_energy saves no register and makes no call. */
+static RIGIDSYM_C_COLD int rigidsym_c_body_energy_odd(
+    double m,
+    const double v[3],
+    const double inertia[9],
+    const double omega[3],
+    double *T)
+{
+    const double *args[4];
+    const int sizes[4] = {1, 3, 9, 3};
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, odd_ = 0;
+    args[0] = &m;
+    args[1] = v;
+    args[2] = inertia;
+    args[3] = omega;
+    for (j = 0; j < 4; ++j)
+        odd_ |= rigidsym_c_extreme_d(args[j], sizes[j]);
+    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
+        status = 0;
+    for (j = 0; j < 4; ++j)
+        if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
+            status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_WIDE
+    if (status == RIGIDSYM_C_EXTREME_INPUT)
+        return rigidsym_c_body_energy_wide(m, v, inertia, omega, T);
+#endif
+#if RIGIDSYM_C_RESCALE_D
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
+        const int r_ = rigidsym_c_body_energy_rescue(m, v, inertia, omega, T);
+        if (r_ >= 0)
+            return r_;
+    }
+#endif
+#if RIGIDSYM_C_FLAGS_D
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
+        const unsigned saved_ = rigidsym_c_fp_begin();
+        const int r_ = (*rigidsym_c_body_energy_plain_p)(m, v, inertia, omega, T);
+        return rigidsym_c_fp_end(saved_) ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
+    }
+#endif
+    return status | rigidsym_c_body_energy_plain(m, v, inertia, omega, T);
 }
 #endif
 
@@ -371,39 +402,16 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_f32_rescue(
 
 
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
-/* rigidsym_c_body_energy_f32 where the range test found an odd input (extreme or not finite): the
- * input bits of the status, the rescue where there is one, else the ordinary evaluation
- * with its outputs' test. Cold and out of line, reached by a tail call, so that the fast
- * path of rigidsym_c_body_energy_f32 saves no register and makes no call. */
-static RIGIDSYM_C_COLD int rigidsym_c_body_energy_f32_odd(
+/* rigidsym_c_body_energy_f32 evaluated as written, with its outputs' test: the slow path's evaluation */
+static RIGIDSYM_C_COLD int rigidsym_c_body_energy_f32_plain(
     float m,
     const float v[3],
     const float inertia[9],
     const float omega[3],
     float *T)
 {
-    const float *args[4];
-    const int sizes[4] = {1, 3, 9, 3};
-    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0, odd_ = 0;
+    int status = 0, singular = 0;
     float finite = 0.0f;
-    args[0] = &m;
-    args[1] = v;
-    args[2] = inertia;
-    args[3] = omega;
-    for (j = 0; j < 4; ++j)
-        odd_ |= rigidsym_c_extreme_f(args[j], sizes[j]);
-    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
-        status = 0;
-    for (j = 0; j < 4; ++j)
-        if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
-            status = RIGIDSYM_C_NONFINITE_INPUT;
-#if RIGIDSYM_C_RESCALE_F
-    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
-        const int r_ = rigidsym_c_body_energy_f32_rescue(m, v, inertia, omega, T);
-        if (r_ >= 0)
-            return r_;
-    }
-#endif
     const float v_0 = v[0];
     const float v_1 = v[1];
     const float v_2 = v[2];
@@ -432,6 +440,60 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_f32_odd(
         T[0] = NAN;
     }
     return status;
+}
+#if RIGIDSYM_C_FLAGS_F
+/* called through a volatile pointer: an opaque call, so that none of the evaluation's
+ * operations moves across the reads of the exception flags around it */
+static int (*const volatile rigidsym_c_body_energy_f32_plain_p)(
+    float m,
+    const float v[3],
+    const float inertia[9],
+    const float omega[3],
+    float *T)
+= rigidsym_c_body_energy_f32_plain;
+#endif
+
+/* rigidsym_c_body_energy_f32 where the range test found an odd input (extreme or not finite): the
+ * input bits of the status, the rescue where there is one, else the ordinary evaluation
+ * with its outputs' test (for an extreme input, read with the exception flags where the
+ * target has them: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
+ * that the fast path of rigidsym_c_body_energy_f32 saves no register and makes no call. */
+static RIGIDSYM_C_COLD int rigidsym_c_body_energy_f32_odd(
+    float m,
+    const float v[3],
+    const float inertia[9],
+    const float omega[3],
+    float *T)
+{
+    const float *args[4];
+    const int sizes[4] = {1, 3, 9, 3};
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, odd_ = 0;
+    args[0] = &m;
+    args[1] = v;
+    args[2] = inertia;
+    args[3] = omega;
+    for (j = 0; j < 4; ++j)
+        odd_ |= rigidsym_c_extreme_f(args[j], sizes[j]);
+    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
+        status = 0;
+    for (j = 0; j < 4; ++j)
+        if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
+            status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_RESCALE_F
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
+        const int r_ = rigidsym_c_body_energy_f32_rescue(m, v, inertia, omega, T);
+        if (r_ >= 0)
+            return r_;
+    }
+#endif
+#if RIGIDSYM_C_FLAGS_F
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
+        const unsigned saved_ = rigidsym_c_fp_begin();
+        const int r_ = (*rigidsym_c_body_energy_f32_plain_p)(m, v, inertia, omega, T);
+        return rigidsym_c_fp_end(saved_) ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
+    }
+#endif
+    return status | rigidsym_c_body_energy_f32_plain(m, v, inertia, omega, T);
 }
 #endif
 
@@ -734,11 +796,8 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_with_jacobians_rescue(
 
 
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
-/* rigidsym_c_body_energy_with_jacobians where the range test found an odd input (extreme or not finite): the
- * input bits of the status, the rescue where there is one, else the ordinary evaluation
- * with its outputs' test. Cold and out of line, reached by a tail call, so that the fast
- * path of rigidsym_c_body_energy_with_jacobians saves no register and makes no call. */
-static RIGIDSYM_C_COLD int rigidsym_c_body_energy_with_jacobians_odd(
+/* rigidsym_c_body_energy_with_jacobians evaluated as written, with its outputs' test: the slow path's evaluation */
+static RIGIDSYM_C_COLD int rigidsym_c_body_energy_with_jacobians_plain(
     double m,
     const double v[3],
     const double inertia[9],
@@ -749,32 +808,8 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_with_jacobians_odd(
     double T_D_inertia[9],
     double T_D_omega[3])
 {
-    const double *args[4];
-    const int sizes[4] = {1, 3, 9, 3};
-    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0, odd_ = 0;
+    int status = 0, singular = 0;
     double finite = 0.0;
-    args[0] = &m;
-    args[1] = v;
-    args[2] = inertia;
-    args[3] = omega;
-    for (j = 0; j < 4; ++j)
-        odd_ |= rigidsym_c_extreme_d(args[j], sizes[j]);
-    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
-        status = 0;
-    for (j = 0; j < 4; ++j)
-        if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
-            status = RIGIDSYM_C_NONFINITE_INPUT;
-#if RIGIDSYM_C_WIDE
-    if (status == RIGIDSYM_C_EXTREME_INPUT)
-        return rigidsym_c_body_energy_with_jacobians_wide(m, v, inertia, omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
-#endif
-#if RIGIDSYM_C_RESCALE_D
-    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
-        const int r_ = rigidsym_c_body_energy_with_jacobians_rescue(m, v, inertia, omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
-        if (r_ >= 0)
-            return r_;
-    }
-#endif
     const double v_0 = v[0];
     const double v_1 = v[1];
     const double v_2 = v[2];
@@ -858,6 +893,72 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_with_jacobians_odd(
         T_D_omega[2] = NAN;
     }
     return status;
+}
+#if RIGIDSYM_C_FLAGS_D
+/* called through a volatile pointer: an opaque call, so that none of the evaluation's
+ * operations moves across the reads of the exception flags around it */
+static int (*const volatile rigidsym_c_body_energy_with_jacobians_plain_p)(
+    double m,
+    const double v[3],
+    const double inertia[9],
+    const double omega[3],
+    double *T,
+    double *T_D_m,
+    double T_D_v[3],
+    double T_D_inertia[9],
+    double T_D_omega[3])
+= rigidsym_c_body_energy_with_jacobians_plain;
+#endif
+
+/* rigidsym_c_body_energy_with_jacobians where the range test found an odd input (extreme or not finite): the
+ * input bits of the status, the rescue where there is one, else the ordinary evaluation
+ * with its outputs' test (for an extreme input, read with the exception flags where the
+ * target has them: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
+ * that the fast path of rigidsym_c_body_energy_with_jacobians saves no register and makes no call. */
+static RIGIDSYM_C_COLD int rigidsym_c_body_energy_with_jacobians_odd(
+    double m,
+    const double v[3],
+    const double inertia[9],
+    const double omega[3],
+    double *T,
+    double *T_D_m,
+    double T_D_v[3],
+    double T_D_inertia[9],
+    double T_D_omega[3])
+{
+    const double *args[4];
+    const int sizes[4] = {1, 3, 9, 3};
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, odd_ = 0;
+    args[0] = &m;
+    args[1] = v;
+    args[2] = inertia;
+    args[3] = omega;
+    for (j = 0; j < 4; ++j)
+        odd_ |= rigidsym_c_extreme_d(args[j], sizes[j]);
+    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
+        status = 0;
+    for (j = 0; j < 4; ++j)
+        if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
+            status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_WIDE
+    if (status == RIGIDSYM_C_EXTREME_INPUT)
+        return rigidsym_c_body_energy_with_jacobians_wide(m, v, inertia, omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
+#endif
+#if RIGIDSYM_C_RESCALE_D
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
+        const int r_ = rigidsym_c_body_energy_with_jacobians_rescue(m, v, inertia, omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
+        if (r_ >= 0)
+            return r_;
+    }
+#endif
+#if RIGIDSYM_C_FLAGS_D
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
+        const unsigned saved_ = rigidsym_c_fp_begin();
+        const int r_ = (*rigidsym_c_body_energy_with_jacobians_plain_p)(m, v, inertia, omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
+        return rigidsym_c_fp_end(saved_) ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
+    }
+#endif
+    return status | rigidsym_c_body_energy_with_jacobians_plain(m, v, inertia, omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
 }
 #endif
 
@@ -1132,11 +1233,8 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_with_jacobians_f32_rescue(
 
 
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
-/* rigidsym_c_body_energy_with_jacobians_f32 where the range test found an odd input (extreme or not finite): the
- * input bits of the status, the rescue where there is one, else the ordinary evaluation
- * with its outputs' test. Cold and out of line, reached by a tail call, so that the fast
- * path of rigidsym_c_body_energy_with_jacobians_f32 saves no register and makes no call. */
-static RIGIDSYM_C_COLD int rigidsym_c_body_energy_with_jacobians_f32_odd(
+/* rigidsym_c_body_energy_with_jacobians_f32 evaluated as written, with its outputs' test: the slow path's evaluation */
+static RIGIDSYM_C_COLD int rigidsym_c_body_energy_with_jacobians_f32_plain(
     float m,
     const float v[3],
     const float inertia[9],
@@ -1147,28 +1245,8 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_with_jacobians_f32_odd(
     float T_D_inertia[9],
     float T_D_omega[3])
 {
-    const float *args[4];
-    const int sizes[4] = {1, 3, 9, 3};
-    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0, odd_ = 0;
+    int status = 0, singular = 0;
     float finite = 0.0f;
-    args[0] = &m;
-    args[1] = v;
-    args[2] = inertia;
-    args[3] = omega;
-    for (j = 0; j < 4; ++j)
-        odd_ |= rigidsym_c_extreme_f(args[j], sizes[j]);
-    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
-        status = 0;
-    for (j = 0; j < 4; ++j)
-        if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
-            status = RIGIDSYM_C_NONFINITE_INPUT;
-#if RIGIDSYM_C_RESCALE_F
-    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
-        const int r_ = rigidsym_c_body_energy_with_jacobians_f32_rescue(m, v, inertia, omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
-        if (r_ >= 0)
-            return r_;
-    }
-#endif
     const float v_0 = v[0];
     const float v_1 = v[1];
     const float v_2 = v[2];
@@ -1252,6 +1330,68 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_with_jacobians_f32_odd(
         T_D_omega[2] = NAN;
     }
     return status;
+}
+#if RIGIDSYM_C_FLAGS_F
+/* called through a volatile pointer: an opaque call, so that none of the evaluation's
+ * operations moves across the reads of the exception flags around it */
+static int (*const volatile rigidsym_c_body_energy_with_jacobians_f32_plain_p)(
+    float m,
+    const float v[3],
+    const float inertia[9],
+    const float omega[3],
+    float *T,
+    float *T_D_m,
+    float T_D_v[3],
+    float T_D_inertia[9],
+    float T_D_omega[3])
+= rigidsym_c_body_energy_with_jacobians_f32_plain;
+#endif
+
+/* rigidsym_c_body_energy_with_jacobians_f32 where the range test found an odd input (extreme or not finite): the
+ * input bits of the status, the rescue where there is one, else the ordinary evaluation
+ * with its outputs' test (for an extreme input, read with the exception flags where the
+ * target has them: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
+ * that the fast path of rigidsym_c_body_energy_with_jacobians_f32 saves no register and makes no call. */
+static RIGIDSYM_C_COLD int rigidsym_c_body_energy_with_jacobians_f32_odd(
+    float m,
+    const float v[3],
+    const float inertia[9],
+    const float omega[3],
+    float *T,
+    float *T_D_m,
+    float T_D_v[3],
+    float T_D_inertia[9],
+    float T_D_omega[3])
+{
+    const float *args[4];
+    const int sizes[4] = {1, 3, 9, 3};
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, odd_ = 0;
+    args[0] = &m;
+    args[1] = v;
+    args[2] = inertia;
+    args[3] = omega;
+    for (j = 0; j < 4; ++j)
+        odd_ |= rigidsym_c_extreme_f(args[j], sizes[j]);
+    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
+        status = 0;
+    for (j = 0; j < 4; ++j)
+        if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
+            status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_RESCALE_F
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
+        const int r_ = rigidsym_c_body_energy_with_jacobians_f32_rescue(m, v, inertia, omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
+        if (r_ >= 0)
+            return r_;
+    }
+#endif
+#if RIGIDSYM_C_FLAGS_F
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
+        const unsigned saved_ = rigidsym_c_fp_begin();
+        const int r_ = (*rigidsym_c_body_energy_with_jacobians_f32_plain_p)(m, v, inertia, omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
+        return rigidsym_c_fp_end(saved_) ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
+    }
+#endif
+    return status | rigidsym_c_body_energy_with_jacobians_f32_plain(m, v, inertia, omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
 }
 #endif
 

@@ -10,8 +10,9 @@
 
 /* Status of every scalar function: 0, or the OR of these bits (docs/c-api.md). The
  * outputs are always written. */
-/* finite inputs of ordinary magnitude, not on the singular set: the outputs are the
- * kernel's values within its stated bound */
+/* finite inputs, not on the singular set, evaluated without underflow or overflow (of
+ * ordinary magnitude, rescued, or an evaluation that raised no exception flag): the
+ * outputs are the kernel's values within its stated bound */
 #define RIGIDSYM_C_OK 0
 /* the inputs lie on the kernel's singular set (a divisor is exactly zero, or a branch
  * condition has no value): every output is NaN */
@@ -25,8 +26,10 @@
 /* a nonzero input component has magnitude outside [2^-100, 2^101) (double; float:
  * [2^-30, 2^31)) that neither a wider type (the double functions re-run the sample in
  * long double where that is wider, RIGIDSYM_C_WIDE) nor power-of-two rescaling (of the
- * arguments the kernel is homogeneous in) could take: intermediates may have
- * underflowed or overflowed, so the outputs are not guaranteed to the stated bound */
+ * arguments the kernel is homogeneous in) could take, and whose evaluation raised
+ * underflow, overflow, invalid or divide-by-zero (or ran where those flags cannot be
+ * read, RIGIDSYM_C_FLAGS_*): intermediates may have underflowed or overflowed, so the
+ * outputs are not guaranteed to the stated bound */
 #define RIGIDSYM_C_EXTREME_INPUT 8
 
 #include <stddef.h>   /* size_t, of the _batch functions */

@@ -79,6 +79,103 @@
 #define RIGIDSYM_C_RESCALE_D 0
 #endif
 
+/* The last step for an extreme input that neither rescue takes (a kernel not homogeneous in
+ * the argument: the wrench's omega, a rotation's angle): the evaluation as written, between
+ * two reads of the hardware's floating-point exception flags. The range test's reason to
+ * flag such an input is that a product may underflow or overflow; when no operation raised
+ * underflow, overflow, invalid or divide-by-zero (nor, on Arm, input-denormal: a subnormal
+ * flushed to zero), every operation was rounded as in the normal range, so the sample is
+ * computed as well as an ordinary one and its status is 0 (an angular rate of 1e-12 rad/s in
+ * float). A flag raised (or x86-64's DAZ set, which reads subnormal operands as zero without
+ * a flag) keeps RIGIDSYM_C_EXTREME_INPUT. Only where the flags are the hardware's for the
+ * type, read by GCC or clang's inline assembly (x86-64 SSE, aarch64, 32-bit Arm with a VFP
+ * for the type; not soft-float, whose helpers raise no flag); the evaluation is called
+ * through a volatile pointer, so that none of its operations moves across the reads. The
+ * caller's flags are kept, with those the evaluation raised. -DRIGIDSYM_C_NO_FP_FLAGS turns
+ * it off (the status stays RIGIDSYM_C_EXTREME_INPUT, as before). */
+#define RIGIDSYM_C_FLAGS_D 0
+#define RIGIDSYM_C_FLAGS_F 0
+#if !defined(RIGIDSYM_C_NO_FP_FLAGS) && !defined(RIGIDSYM_C_TRUSTED_INPUTS) && \
+    defined(__GNUC__)
+#if defined(__x86_64__) && defined(__SSE2_MATH__)
+#undef RIGIDSYM_C_FLAGS_D
+#undef RIGIDSYM_C_FLAGS_F
+#define RIGIDSYM_C_FLAGS_D 1
+#define RIGIDSYM_C_FLAGS_F 1
+#define RIGIDSYM_C_FP_ALL 0x3fU     /* MXCSR: IE DE ZE OE UE PE */
+#define RIGIDSYM_C_FP_RISKY 0x1dU   /* IE ZE OE UE */
+#define RIGIDSYM_C_FP_UNSURE 0x40U  /* DAZ */
+static inline unsigned rigidsym_c_fp_get(void)
+{
+    unsigned m;
+    __asm__ volatile("stmxcsr %0" : "=m"(m) : : "memory");
+    return m;
+}
+static inline void rigidsym_c_fp_put(unsigned m)
+{
+    __asm__ volatile("ldmxcsr %0" : : "m"(m) : "memory");
+}
+#elif defined(__aarch64__)
+#undef RIGIDSYM_C_FLAGS_D
+#undef RIGIDSYM_C_FLAGS_F
+#define RIGIDSYM_C_FLAGS_D 1
+#define RIGIDSYM_C_FLAGS_F 1
+#define RIGIDSYM_C_FP_ALL 0x9fU     /* FPSR: IOC DZC OFC UFC IXC IDC */
+#define RIGIDSYM_C_FP_RISKY 0x8fU   /* IOC DZC OFC UFC IDC */
+#define RIGIDSYM_C_FP_UNSURE 0U
+static inline unsigned rigidsym_c_fp_get(void)
+{
+    uint64_t r;
+    __asm__ volatile("mrs %0, fpsr" : "=r"(r) : : "memory");
+    return (unsigned)r;
+}
+static inline void rigidsym_c_fp_put(unsigned m)
+{
+    const uint64_t r = m;
+    __asm__ volatile("msr fpsr, %0" : : "r"(r) : "memory");
+}
+#elif defined(__arm__) && defined(__ARM_FP) && !defined(__SOFTFP__)
+#if __ARM_FP & 8
+#undef RIGIDSYM_C_FLAGS_D
+#define RIGIDSYM_C_FLAGS_D 1
+#endif
+#if __ARM_FP & 4
+#undef RIGIDSYM_C_FLAGS_F
+#define RIGIDSYM_C_FLAGS_F 1
+#endif
+#define RIGIDSYM_C_FP_ALL 0x9fU     /* FPSCR: IOC DZC OFC UFC IXC IDC */
+#define RIGIDSYM_C_FP_RISKY 0x8fU
+#define RIGIDSYM_C_FP_UNSURE 0U
+static inline unsigned rigidsym_c_fp_get(void)
+{
+    unsigned r;
+    __asm__ volatile("vmrs %0, fpscr" : "=r"(r) : : "memory");
+    return r;
+}
+static inline void rigidsym_c_fp_put(unsigned m)
+{
+    __asm__ volatile("vmsr fpscr, %0" : : "r"(m) : "memory");
+}
+#endif
+#endif
+#if RIGIDSYM_C_FLAGS_D || RIGIDSYM_C_FLAGS_F
+/* the flags cleared; returns the caller's, for rigidsym_c_fp_end */
+static inline unsigned rigidsym_c_fp_begin(void)
+{
+    const unsigned saved = rigidsym_c_fp_get();
+    rigidsym_c_fp_put(saved & ~RIGIDSYM_C_FP_ALL);
+    return saved;
+}
+/* nonzero when what ran since rigidsym_c_fp_begin raised a risky flag, or ran where one can
+ * be missed; the caller's flags put back, with those raised since */
+static inline int rigidsym_c_fp_end(unsigned saved)
+{
+    const unsigned now = rigidsym_c_fp_get();
+    rigidsym_c_fp_put(now | (saved & RIGIDSYM_C_FP_ALL));
+    return (now & RIGIDSYM_C_FP_RISKY) != 0 || (saved & RIGIDSYM_C_FP_UNSURE) != 0;
+}
+#endif
+
 #include "rigidsym_c_common.h"
 
 /* The input bits of the status: RIGIDSYM_C_NONFINITE_INPUT when a component is infinite or

@@ -151,11 +151,8 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_rescue(
 
 
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
-/* rigidsym_c_newton_euler_wrench where the range test found an odd input (extreme or not finite): the
- * input bits of the status, the rescue where there is one, else the ordinary evaluation
- * with its outputs' test. Cold and out of line, reached by a tail call, so that the fast
- * path of rigidsym_c_newton_euler_wrench saves no register and makes no call. */
-static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_odd(
+/* rigidsym_c_newton_euler_wrench evaluated as written, with its outputs' test: the slow path's evaluation */
+static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_plain(
     const double I_C[9],
     double m,
     const double omega[3],
@@ -163,33 +160,8 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_odd(
     const double c_ddot[3],
     double w[6])
 {
-    const double *args[5];
-    const int sizes[5] = {9, 1, 3, 3, 3};
-    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0, odd_ = 0;
+    int status = 0, singular = 0;
     double finite = 0.0;
-    args[0] = I_C;
-    args[1] = &m;
-    args[2] = omega;
-    args[3] = omega_dot;
-    args[4] = c_ddot;
-    for (j = 0; j < 5; ++j)
-        odd_ |= rigidsym_c_extreme_d(args[j], sizes[j]);
-    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
-        status = 0;
-    for (j = 0; j < 5; ++j)
-        if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
-            status = RIGIDSYM_C_NONFINITE_INPUT;
-#if RIGIDSYM_C_WIDE
-    if (status == RIGIDSYM_C_EXTREME_INPUT)
-        return rigidsym_c_newton_euler_wrench_wide(I_C, m, omega, omega_dot, c_ddot, w);
-#endif
-#if RIGIDSYM_C_RESCALE_D
-    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
-        const int r_ = rigidsym_c_newton_euler_wrench_rescue(I_C, m, omega, omega_dot, c_ddot, w);
-        if (r_ >= 0)
-            return r_;
-    }
-#endif
     const double I_C_00 = I_C[0];
     const double I_C_01 = I_C[1];
     const double I_C_02 = I_C[2];
@@ -239,6 +211,67 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_odd(
         w[5] = NAN;
     }
     return status;
+}
+#if RIGIDSYM_C_FLAGS_D
+/* called through a volatile pointer: an opaque call, so that none of the evaluation's
+ * operations moves across the reads of the exception flags around it */
+static int (*const volatile rigidsym_c_newton_euler_wrench_plain_p)(
+    const double I_C[9],
+    double m,
+    const double omega[3],
+    const double omega_dot[3],
+    const double c_ddot[3],
+    double w[6])
+= rigidsym_c_newton_euler_wrench_plain;
+#endif
+
+/* rigidsym_c_newton_euler_wrench where the range test found an odd input (extreme or not finite): the
+ * input bits of the status, the rescue where there is one, else the ordinary evaluation
+ * with its outputs' test (for an extreme input, read with the exception flags where the
+ * target has them: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
+ * that the fast path of rigidsym_c_newton_euler_wrench saves no register and makes no call. */
+static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_odd(
+    const double I_C[9],
+    double m,
+    const double omega[3],
+    const double omega_dot[3],
+    const double c_ddot[3],
+    double w[6])
+{
+    const double *args[5];
+    const int sizes[5] = {9, 1, 3, 3, 3};
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, odd_ = 0;
+    args[0] = I_C;
+    args[1] = &m;
+    args[2] = omega;
+    args[3] = omega_dot;
+    args[4] = c_ddot;
+    for (j = 0; j < 5; ++j)
+        odd_ |= rigidsym_c_extreme_d(args[j], sizes[j]);
+    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
+        status = 0;
+    for (j = 0; j < 5; ++j)
+        if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
+            status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_WIDE
+    if (status == RIGIDSYM_C_EXTREME_INPUT)
+        return rigidsym_c_newton_euler_wrench_wide(I_C, m, omega, omega_dot, c_ddot, w);
+#endif
+#if RIGIDSYM_C_RESCALE_D
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
+        const int r_ = rigidsym_c_newton_euler_wrench_rescue(I_C, m, omega, omega_dot, c_ddot, w);
+        if (r_ >= 0)
+            return r_;
+    }
+#endif
+#if RIGIDSYM_C_FLAGS_D
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
+        const unsigned saved_ = rigidsym_c_fp_begin();
+        const int r_ = (*rigidsym_c_newton_euler_wrench_plain_p)(I_C, m, omega, omega_dot, c_ddot, w);
+        return rigidsym_c_fp_end(saved_) ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
+    }
+#endif
+    return status | rigidsym_c_newton_euler_wrench_plain(I_C, m, omega, omega_dot, c_ddot, w);
 }
 #endif
 
@@ -478,11 +511,8 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_f32_rescue(
 
 
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
-/* rigidsym_c_newton_euler_wrench_f32 where the range test found an odd input (extreme or not finite): the
- * input bits of the status, the rescue where there is one, else the ordinary evaluation
- * with its outputs' test. Cold and out of line, reached by a tail call, so that the fast
- * path of rigidsym_c_newton_euler_wrench_f32 saves no register and makes no call. */
-static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_f32_odd(
+/* rigidsym_c_newton_euler_wrench_f32 evaluated as written, with its outputs' test: the slow path's evaluation */
+static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_f32_plain(
     const float I_C[9],
     float m,
     const float omega[3],
@@ -490,29 +520,8 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_f32_odd(
     const float c_ddot[3],
     float w[6])
 {
-    const float *args[5];
-    const int sizes[5] = {9, 1, 3, 3, 3};
-    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0, odd_ = 0;
+    int status = 0, singular = 0;
     float finite = 0.0f;
-    args[0] = I_C;
-    args[1] = &m;
-    args[2] = omega;
-    args[3] = omega_dot;
-    args[4] = c_ddot;
-    for (j = 0; j < 5; ++j)
-        odd_ |= rigidsym_c_extreme_f(args[j], sizes[j]);
-    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
-        status = 0;
-    for (j = 0; j < 5; ++j)
-        if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
-            status = RIGIDSYM_C_NONFINITE_INPUT;
-#if RIGIDSYM_C_RESCALE_F
-    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
-        const int r_ = rigidsym_c_newton_euler_wrench_f32_rescue(I_C, m, omega, omega_dot, c_ddot, w);
-        if (r_ >= 0)
-            return r_;
-    }
-#endif
     const float I_C_00 = I_C[0];
     const float I_C_01 = I_C[1];
     const float I_C_02 = I_C[2];
@@ -562,6 +571,63 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_f32_odd(
         w[5] = NAN;
     }
     return status;
+}
+#if RIGIDSYM_C_FLAGS_F
+/* called through a volatile pointer: an opaque call, so that none of the evaluation's
+ * operations moves across the reads of the exception flags around it */
+static int (*const volatile rigidsym_c_newton_euler_wrench_f32_plain_p)(
+    const float I_C[9],
+    float m,
+    const float omega[3],
+    const float omega_dot[3],
+    const float c_ddot[3],
+    float w[6])
+= rigidsym_c_newton_euler_wrench_f32_plain;
+#endif
+
+/* rigidsym_c_newton_euler_wrench_f32 where the range test found an odd input (extreme or not finite): the
+ * input bits of the status, the rescue where there is one, else the ordinary evaluation
+ * with its outputs' test (for an extreme input, read with the exception flags where the
+ * target has them: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
+ * that the fast path of rigidsym_c_newton_euler_wrench_f32 saves no register and makes no call. */
+static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_f32_odd(
+    const float I_C[9],
+    float m,
+    const float omega[3],
+    const float omega_dot[3],
+    const float c_ddot[3],
+    float w[6])
+{
+    const float *args[5];
+    const int sizes[5] = {9, 1, 3, 3, 3};
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, odd_ = 0;
+    args[0] = I_C;
+    args[1] = &m;
+    args[2] = omega;
+    args[3] = omega_dot;
+    args[4] = c_ddot;
+    for (j = 0; j < 5; ++j)
+        odd_ |= rigidsym_c_extreme_f(args[j], sizes[j]);
+    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
+        status = 0;
+    for (j = 0; j < 5; ++j)
+        if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
+            status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_RESCALE_F
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
+        const int r_ = rigidsym_c_newton_euler_wrench_f32_rescue(I_C, m, omega, omega_dot, c_ddot, w);
+        if (r_ >= 0)
+            return r_;
+    }
+#endif
+#if RIGIDSYM_C_FLAGS_F
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
+        const unsigned saved_ = rigidsym_c_fp_begin();
+        const int r_ = (*rigidsym_c_newton_euler_wrench_f32_plain_p)(I_C, m, omega, omega_dot, c_ddot, w);
+        return rigidsym_c_fp_end(saved_) ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
+    }
+#endif
+    return status | rigidsym_c_newton_euler_wrench_f32_plain(I_C, m, omega, omega_dot, c_ddot, w);
 }
 #endif
 
@@ -1138,11 +1204,8 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_with_jacobians_rescue(
 
 
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
-/* rigidsym_c_newton_euler_wrench_with_jacobians where the range test found an odd input (extreme or not finite): the
- * input bits of the status, the rescue where there is one, else the ordinary evaluation
- * with its outputs' test. Cold and out of line, reached by a tail call, so that the fast
- * path of rigidsym_c_newton_euler_wrench_with_jacobians saves no register and makes no call. */
-static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_with_jacobians_odd(
+/* rigidsym_c_newton_euler_wrench_with_jacobians evaluated as written, with its outputs' test: the slow path's evaluation */
+static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_with_jacobians_plain(
     const double I_C[9],
     double m,
     const double omega[3],
@@ -1155,33 +1218,8 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_with_jacobians_odd(
     double w_D_omega_dot[18],
     double w_D_c_ddot[18])
 {
-    const double *args[5];
-    const int sizes[5] = {9, 1, 3, 3, 3};
-    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0, odd_ = 0;
+    int status = 0, singular = 0;
     double finite = 0.0;
-    args[0] = I_C;
-    args[1] = &m;
-    args[2] = omega;
-    args[3] = omega_dot;
-    args[4] = c_ddot;
-    for (j = 0; j < 5; ++j)
-        odd_ |= rigidsym_c_extreme_d(args[j], sizes[j]);
-    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
-        status = 0;
-    for (j = 0; j < 5; ++j)
-        if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
-            status = RIGIDSYM_C_NONFINITE_INPUT;
-#if RIGIDSYM_C_WIDE
-    if (status == RIGIDSYM_C_EXTREME_INPUT)
-        return rigidsym_c_newton_euler_wrench_with_jacobians_wide(I_C, m, omega, omega_dot, c_ddot, w, w_D_I_C, w_D_m, w_D_omega, w_D_omega_dot, w_D_c_ddot);
-#endif
-#if RIGIDSYM_C_RESCALE_D
-    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
-        const int r_ = rigidsym_c_newton_euler_wrench_with_jacobians_rescue(I_C, m, omega, omega_dot, c_ddot, w, w_D_I_C, w_D_m, w_D_omega, w_D_omega_dot, w_D_c_ddot);
-        if (r_ >= 0)
-            return r_;
-    }
-#endif
     const double I_C_00 = I_C[0];
     const double I_C_01 = I_C[1];
     const double I_C_02 = I_C[2];
@@ -1480,6 +1518,77 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_with_jacobians_odd(
         w_D_c_ddot[17] = NAN;
     }
     return status;
+}
+#if RIGIDSYM_C_FLAGS_D
+/* called through a volatile pointer: an opaque call, so that none of the evaluation's
+ * operations moves across the reads of the exception flags around it */
+static int (*const volatile rigidsym_c_newton_euler_wrench_with_jacobians_plain_p)(
+    const double I_C[9],
+    double m,
+    const double omega[3],
+    const double omega_dot[3],
+    const double c_ddot[3],
+    double w[6],
+    double w_D_I_C[54],
+    double w_D_m[6],
+    double w_D_omega[18],
+    double w_D_omega_dot[18],
+    double w_D_c_ddot[18])
+= rigidsym_c_newton_euler_wrench_with_jacobians_plain;
+#endif
+
+/* rigidsym_c_newton_euler_wrench_with_jacobians where the range test found an odd input (extreme or not finite): the
+ * input bits of the status, the rescue where there is one, else the ordinary evaluation
+ * with its outputs' test (for an extreme input, read with the exception flags where the
+ * target has them: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
+ * that the fast path of rigidsym_c_newton_euler_wrench_with_jacobians saves no register and makes no call. */
+static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_with_jacobians_odd(
+    const double I_C[9],
+    double m,
+    const double omega[3],
+    const double omega_dot[3],
+    const double c_ddot[3],
+    double w[6],
+    double w_D_I_C[54],
+    double w_D_m[6],
+    double w_D_omega[18],
+    double w_D_omega_dot[18],
+    double w_D_c_ddot[18])
+{
+    const double *args[5];
+    const int sizes[5] = {9, 1, 3, 3, 3};
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, odd_ = 0;
+    args[0] = I_C;
+    args[1] = &m;
+    args[2] = omega;
+    args[3] = omega_dot;
+    args[4] = c_ddot;
+    for (j = 0; j < 5; ++j)
+        odd_ |= rigidsym_c_extreme_d(args[j], sizes[j]);
+    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
+        status = 0;
+    for (j = 0; j < 5; ++j)
+        if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
+            status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_WIDE
+    if (status == RIGIDSYM_C_EXTREME_INPUT)
+        return rigidsym_c_newton_euler_wrench_with_jacobians_wide(I_C, m, omega, omega_dot, c_ddot, w, w_D_I_C, w_D_m, w_D_omega, w_D_omega_dot, w_D_c_ddot);
+#endif
+#if RIGIDSYM_C_RESCALE_D
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
+        const int r_ = rigidsym_c_newton_euler_wrench_with_jacobians_rescue(I_C, m, omega, omega_dot, c_ddot, w, w_D_I_C, w_D_m, w_D_omega, w_D_omega_dot, w_D_c_ddot);
+        if (r_ >= 0)
+            return r_;
+    }
+#endif
+#if RIGIDSYM_C_FLAGS_D
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
+        const unsigned saved_ = rigidsym_c_fp_begin();
+        const int r_ = (*rigidsym_c_newton_euler_wrench_with_jacobians_plain_p)(I_C, m, omega, omega_dot, c_ddot, w, w_D_I_C, w_D_m, w_D_omega, w_D_omega_dot, w_D_c_ddot);
+        return rigidsym_c_fp_end(saved_) ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
+    }
+#endif
+    return status | rigidsym_c_newton_euler_wrench_with_jacobians_plain(I_C, m, omega, omega_dot, c_ddot, w, w_D_I_C, w_D_m, w_D_omega, w_D_omega_dot, w_D_c_ddot);
 }
 #endif
 
@@ -2007,11 +2116,8 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_with_jacobians_f32_res
 
 
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
-/* rigidsym_c_newton_euler_wrench_with_jacobians_f32 where the range test found an odd input (extreme or not finite): the
- * input bits of the status, the rescue where there is one, else the ordinary evaluation
- * with its outputs' test. Cold and out of line, reached by a tail call, so that the fast
- * path of rigidsym_c_newton_euler_wrench_with_jacobians_f32 saves no register and makes no call. */
-static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_with_jacobians_f32_odd(
+/* rigidsym_c_newton_euler_wrench_with_jacobians_f32 evaluated as written, with its outputs' test: the slow path's evaluation */
+static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_with_jacobians_f32_plain(
     const float I_C[9],
     float m,
     const float omega[3],
@@ -2024,29 +2130,8 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_with_jacobians_f32_odd
     float w_D_omega_dot[18],
     float w_D_c_ddot[18])
 {
-    const float *args[5];
-    const int sizes[5] = {9, 1, 3, 3, 3};
-    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0, odd_ = 0;
+    int status = 0, singular = 0;
     float finite = 0.0f;
-    args[0] = I_C;
-    args[1] = &m;
-    args[2] = omega;
-    args[3] = omega_dot;
-    args[4] = c_ddot;
-    for (j = 0; j < 5; ++j)
-        odd_ |= rigidsym_c_extreme_f(args[j], sizes[j]);
-    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
-        status = 0;
-    for (j = 0; j < 5; ++j)
-        if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
-            status = RIGIDSYM_C_NONFINITE_INPUT;
-#if RIGIDSYM_C_RESCALE_F
-    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
-        const int r_ = rigidsym_c_newton_euler_wrench_with_jacobians_f32_rescue(I_C, m, omega, omega_dot, c_ddot, w, w_D_I_C, w_D_m, w_D_omega, w_D_omega_dot, w_D_c_ddot);
-        if (r_ >= 0)
-            return r_;
-    }
-#endif
     const float I_C_00 = I_C[0];
     const float I_C_01 = I_C[1];
     const float I_C_02 = I_C[2];
@@ -2345,6 +2430,73 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_with_jacobians_f32_odd
         w_D_c_ddot[17] = NAN;
     }
     return status;
+}
+#if RIGIDSYM_C_FLAGS_F
+/* called through a volatile pointer: an opaque call, so that none of the evaluation's
+ * operations moves across the reads of the exception flags around it */
+static int (*const volatile rigidsym_c_newton_euler_wrench_with_jacobians_f32_plain_p)(
+    const float I_C[9],
+    float m,
+    const float omega[3],
+    const float omega_dot[3],
+    const float c_ddot[3],
+    float w[6],
+    float w_D_I_C[54],
+    float w_D_m[6],
+    float w_D_omega[18],
+    float w_D_omega_dot[18],
+    float w_D_c_ddot[18])
+= rigidsym_c_newton_euler_wrench_with_jacobians_f32_plain;
+#endif
+
+/* rigidsym_c_newton_euler_wrench_with_jacobians_f32 where the range test found an odd input (extreme or not finite): the
+ * input bits of the status, the rescue where there is one, else the ordinary evaluation
+ * with its outputs' test (for an extreme input, read with the exception flags where the
+ * target has them: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
+ * that the fast path of rigidsym_c_newton_euler_wrench_with_jacobians_f32 saves no register and makes no call. */
+static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_with_jacobians_f32_odd(
+    const float I_C[9],
+    float m,
+    const float omega[3],
+    const float omega_dot[3],
+    const float c_ddot[3],
+    float w[6],
+    float w_D_I_C[54],
+    float w_D_m[6],
+    float w_D_omega[18],
+    float w_D_omega_dot[18],
+    float w_D_c_ddot[18])
+{
+    const float *args[5];
+    const int sizes[5] = {9, 1, 3, 3, 3};
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, odd_ = 0;
+    args[0] = I_C;
+    args[1] = &m;
+    args[2] = omega;
+    args[3] = omega_dot;
+    args[4] = c_ddot;
+    for (j = 0; j < 5; ++j)
+        odd_ |= rigidsym_c_extreme_f(args[j], sizes[j]);
+    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
+        status = 0;
+    for (j = 0; j < 5; ++j)
+        if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
+            status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_RESCALE_F
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
+        const int r_ = rigidsym_c_newton_euler_wrench_with_jacobians_f32_rescue(I_C, m, omega, omega_dot, c_ddot, w, w_D_I_C, w_D_m, w_D_omega, w_D_omega_dot, w_D_c_ddot);
+        if (r_ >= 0)
+            return r_;
+    }
+#endif
+#if RIGIDSYM_C_FLAGS_F
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
+        const unsigned saved_ = rigidsym_c_fp_begin();
+        const int r_ = (*rigidsym_c_newton_euler_wrench_with_jacobians_f32_plain_p)(I_C, m, omega, omega_dot, c_ddot, w, w_D_I_C, w_D_m, w_D_omega, w_D_omega_dot, w_D_c_ddot);
+        return rigidsym_c_fp_end(saved_) ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
+    }
+#endif
+    return status | rigidsym_c_newton_euler_wrench_with_jacobians_f32_plain(I_C, m, omega, omega_dot, c_ddot, w, w_D_I_C, w_D_m, w_D_omega, w_D_omega_dot, w_D_c_ddot);
 }
 #endif
 

@@ -95,10 +95,55 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_rescue(
 
 
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
+/* rigidsym_c_planar_arm_tip evaluated as written, with its outputs' test: the slow path's evaluation */
+static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_plain(
+    double q1,
+    double q2,
+    double l1,
+    double l2,
+    double p[2])
+{
+    int status = 0, singular = 0;
+    double finite = 0.0;
+    {
+        const double x0 = q1 + q2;
+        p[0] = l1*cos(q1) + l2*cos(x0);
+        p[1] = l1*sin(q1) + l2*sin(x0);
+    }
+    {   /* the outputs' sum is finite only where every output is, so the exact test
+         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
+         * compiler from folding it) runs only where the sum is not: a non-finite output,
+         * or finite ones whose sum overflows */
+        const double s_ = (p[0] + p[1]);
+        if (!(s_ - s_ == 0.0))
+            finite += ((p[0] - p[0]) + (p[1] - p[1]));
+    }
+    if (finite != finite)
+        status |= RIGIDSYM_C_NONFINITE_RESULT;
+    if (singular) {
+        status |= RIGIDSYM_C_SINGULAR;
+        p[0] = NAN;
+        p[1] = NAN;
+    }
+    return status;
+}
+#if RIGIDSYM_C_FLAGS_D
+/* called through a volatile pointer: an opaque call, so that none of the evaluation's
+ * operations moves across the reads of the exception flags around it */
+static int (*const volatile rigidsym_c_planar_arm_tip_plain_p)(
+    double q1,
+    double q2,
+    double l1,
+    double l2,
+    double p[2])
+= rigidsym_c_planar_arm_tip_plain;
+#endif
+
 /* rigidsym_c_planar_arm_tip where the range test found an odd input (extreme or not finite): the
  * input bits of the status, the rescue where there is one, else the ordinary evaluation
- * with its outputs' test. Cold and out of line, reached by a tail call, so that the fast
- * path of rigidsym_c_planar_arm_tip saves no register and makes no call. */
+ * with its outputs' test (for an extreme input, read with the exception flags where the
+ * target has them: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
+ * that the fast path of rigidsym_c_planar_arm_tip saves no register and makes no call. */
 static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_odd(
     double q1,
     double q2,
@@ -108,8 +153,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_odd(
 {
     const double *args[4];
     const int sizes[4] = {1, 1, 1, 1};
-    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0, odd_ = 0;
-    double finite = 0.0;
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, odd_ = 0;
     args[0] = &q1;
     args[1] = &q2;
     args[2] = &l1;
@@ -132,27 +176,14 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_odd(
             return r_;
     }
 #endif
-    {
-        const double x0 = q1 + q2;
-        p[0] = l1*cos(q1) + l2*cos(x0);
-        p[1] = l1*sin(q1) + l2*sin(x0);
+#if RIGIDSYM_C_FLAGS_D
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
+        const unsigned saved_ = rigidsym_c_fp_begin();
+        const int r_ = (*rigidsym_c_planar_arm_tip_plain_p)(q1, q2, l1, l2, p);
+        return rigidsym_c_fp_end(saved_) ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
     }
-    {   /* the outputs' sum is finite only where every output is, so the exact test
-         * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
-         * compiler from folding it) runs only where the sum is not: a non-finite output,
-         * or finite ones whose sum overflows */
-        const double s_ = (p[0] + p[1]);
-        if (!(s_ - s_ == 0.0))
-            finite += ((p[0] - p[0]) + (p[1] - p[1]));
-    }
-    if (finite != finite)
-        status |= RIGIDSYM_C_NONFINITE_RESULT;
-    if (singular) {
-        status |= RIGIDSYM_C_SINGULAR;
-        p[0] = NAN;
-        p[1] = NAN;
-    }
-    return status;
+#endif
+    return status | rigidsym_c_planar_arm_tip_plain(q1, q2, l1, l2, p);
 }
 #endif
 
@@ -308,39 +339,16 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_f32_rescue(
 
 
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
-/* rigidsym_c_planar_arm_tip_f32 where the range test found an odd input (extreme or not finite): the
- * input bits of the status, the rescue where there is one, else the ordinary evaluation
- * with its outputs' test. Cold and out of line, reached by a tail call, so that the fast
- * path of rigidsym_c_planar_arm_tip_f32 saves no register and makes no call. */
-static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_f32_odd(
+/* rigidsym_c_planar_arm_tip_f32 evaluated as written, with its outputs' test: the slow path's evaluation */
+static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_f32_plain(
     float q1,
     float q2,
     float l1,
     float l2,
     float p[2])
 {
-    const float *args[4];
-    const int sizes[4] = {1, 1, 1, 1};
-    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0, odd_ = 0;
+    int status = 0, singular = 0;
     float finite = 0.0f;
-    args[0] = &q1;
-    args[1] = &q2;
-    args[2] = &l1;
-    args[3] = &l2;
-    for (j = 0; j < 4; ++j)
-        odd_ |= rigidsym_c_extreme_f(args[j], sizes[j]);
-    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
-        status = 0;
-    for (j = 0; j < 4; ++j)
-        if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
-            status = RIGIDSYM_C_NONFINITE_INPUT;
-#if RIGIDSYM_C_RESCALE_F
-    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
-        const int r_ = rigidsym_c_planar_arm_tip_f32_rescue(q1, q2, l1, l2, p);
-        if (r_ >= 0)
-            return r_;
-    }
-#endif
     {
         const float x0 = q1 + q2;
         p[0] = l1*cosf(q1) + l2*cosf(x0);
@@ -362,6 +370,60 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_f32_odd(
         p[1] = NAN;
     }
     return status;
+}
+#if RIGIDSYM_C_FLAGS_F
+/* called through a volatile pointer: an opaque call, so that none of the evaluation's
+ * operations moves across the reads of the exception flags around it */
+static int (*const volatile rigidsym_c_planar_arm_tip_f32_plain_p)(
+    float q1,
+    float q2,
+    float l1,
+    float l2,
+    float p[2])
+= rigidsym_c_planar_arm_tip_f32_plain;
+#endif
+
+/* rigidsym_c_planar_arm_tip_f32 where the range test found an odd input (extreme or not finite): the
+ * input bits of the status, the rescue where there is one, else the ordinary evaluation
+ * with its outputs' test (for an extreme input, read with the exception flags where the
+ * target has them: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
+ * that the fast path of rigidsym_c_planar_arm_tip_f32 saves no register and makes no call. */
+static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_f32_odd(
+    float q1,
+    float q2,
+    float l1,
+    float l2,
+    float p[2])
+{
+    const float *args[4];
+    const int sizes[4] = {1, 1, 1, 1};
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, odd_ = 0;
+    args[0] = &q1;
+    args[1] = &q2;
+    args[2] = &l1;
+    args[3] = &l2;
+    for (j = 0; j < 4; ++j)
+        odd_ |= rigidsym_c_extreme_f(args[j], sizes[j]);
+    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
+        status = 0;
+    for (j = 0; j < 4; ++j)
+        if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
+            status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_RESCALE_F
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
+        const int r_ = rigidsym_c_planar_arm_tip_f32_rescue(q1, q2, l1, l2, p);
+        if (r_ >= 0)
+            return r_;
+    }
+#endif
+#if RIGIDSYM_C_FLAGS_F
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
+        const unsigned saved_ = rigidsym_c_fp_begin();
+        const int r_ = (*rigidsym_c_planar_arm_tip_f32_plain_p)(q1, q2, l1, l2, p);
+        return rigidsym_c_fp_end(saved_) ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
+    }
+#endif
+    return status | rigidsym_c_planar_arm_tip_f32_plain(q1, q2, l1, l2, p);
 }
 #endif
 
@@ -585,11 +647,8 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_with_jacobians_rescue(
 
 
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
-/* rigidsym_c_planar_arm_tip_with_jacobians where the range test found an odd input (extreme or not finite): the
- * input bits of the status, the rescue where there is one, else the ordinary evaluation
- * with its outputs' test. Cold and out of line, reached by a tail call, so that the fast
- * path of rigidsym_c_planar_arm_tip_with_jacobians saves no register and makes no call. */
-static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_with_jacobians_odd(
+/* rigidsym_c_planar_arm_tip_with_jacobians evaluated as written, with its outputs' test: the slow path's evaluation */
+static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_with_jacobians_plain(
     double q1,
     double q2,
     double l1,
@@ -600,32 +659,8 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_with_jacobians_odd(
     double p_D_l1[2],
     double p_D_l2[2])
 {
-    const double *args[4];
-    const int sizes[4] = {1, 1, 1, 1};
-    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0, odd_ = 0;
+    int status = 0, singular = 0;
     double finite = 0.0;
-    args[0] = &q1;
-    args[1] = &q2;
-    args[2] = &l1;
-    args[3] = &l2;
-    for (j = 0; j < 4; ++j)
-        odd_ |= rigidsym_c_extreme_d(args[j], sizes[j]);
-    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
-        status = 0;
-    for (j = 0; j < 4; ++j)
-        if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
-            status = RIGIDSYM_C_NONFINITE_INPUT;
-#if RIGIDSYM_C_WIDE
-    if (status == RIGIDSYM_C_EXTREME_INPUT)
-        return rigidsym_c_planar_arm_tip_with_jacobians_wide(q1, q2, l1, l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
-#endif
-#if RIGIDSYM_C_RESCALE_D
-    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
-        const int r_ = rigidsym_c_planar_arm_tip_with_jacobians_rescue(q1, q2, l1, l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
-        if (r_ >= 0)
-            return r_;
-    }
-#endif
     {
         const double x0 = cos(q1);
         const double x1 = q1 + q2;
@@ -671,6 +706,72 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_with_jacobians_odd(
         p_D_l2[1] = NAN;
     }
     return status;
+}
+#if RIGIDSYM_C_FLAGS_D
+/* called through a volatile pointer: an opaque call, so that none of the evaluation's
+ * operations moves across the reads of the exception flags around it */
+static int (*const volatile rigidsym_c_planar_arm_tip_with_jacobians_plain_p)(
+    double q1,
+    double q2,
+    double l1,
+    double l2,
+    double p[2],
+    double p_D_q1[2],
+    double p_D_q2[2],
+    double p_D_l1[2],
+    double p_D_l2[2])
+= rigidsym_c_planar_arm_tip_with_jacobians_plain;
+#endif
+
+/* rigidsym_c_planar_arm_tip_with_jacobians where the range test found an odd input (extreme or not finite): the
+ * input bits of the status, the rescue where there is one, else the ordinary evaluation
+ * with its outputs' test (for an extreme input, read with the exception flags where the
+ * target has them: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
+ * that the fast path of rigidsym_c_planar_arm_tip_with_jacobians saves no register and makes no call. */
+static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_with_jacobians_odd(
+    double q1,
+    double q2,
+    double l1,
+    double l2,
+    double p[2],
+    double p_D_q1[2],
+    double p_D_q2[2],
+    double p_D_l1[2],
+    double p_D_l2[2])
+{
+    const double *args[4];
+    const int sizes[4] = {1, 1, 1, 1};
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, odd_ = 0;
+    args[0] = &q1;
+    args[1] = &q2;
+    args[2] = &l1;
+    args[3] = &l2;
+    for (j = 0; j < 4; ++j)
+        odd_ |= rigidsym_c_extreme_d(args[j], sizes[j]);
+    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
+        status = 0;
+    for (j = 0; j < 4; ++j)
+        if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
+            status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_WIDE
+    if (status == RIGIDSYM_C_EXTREME_INPUT)
+        return rigidsym_c_planar_arm_tip_with_jacobians_wide(q1, q2, l1, l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
+#endif
+#if RIGIDSYM_C_RESCALE_D
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
+        const int r_ = rigidsym_c_planar_arm_tip_with_jacobians_rescue(q1, q2, l1, l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
+        if (r_ >= 0)
+            return r_;
+    }
+#endif
+#if RIGIDSYM_C_FLAGS_D
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
+        const unsigned saved_ = rigidsym_c_fp_begin();
+        const int r_ = (*rigidsym_c_planar_arm_tip_with_jacobians_plain_p)(q1, q2, l1, l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
+        return rigidsym_c_fp_end(saved_) ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
+    }
+#endif
+    return status | rigidsym_c_planar_arm_tip_with_jacobians_plain(q1, q2, l1, l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
 }
 #endif
 
@@ -866,11 +967,8 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_with_jacobians_f32_rescue(
 
 
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
-/* rigidsym_c_planar_arm_tip_with_jacobians_f32 where the range test found an odd input (extreme or not finite): the
- * input bits of the status, the rescue where there is one, else the ordinary evaluation
- * with its outputs' test. Cold and out of line, reached by a tail call, so that the fast
- * path of rigidsym_c_planar_arm_tip_with_jacobians_f32 saves no register and makes no call. */
-static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_with_jacobians_f32_odd(
+/* rigidsym_c_planar_arm_tip_with_jacobians_f32 evaluated as written, with its outputs' test: the slow path's evaluation */
+static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_with_jacobians_f32_plain(
     float q1,
     float q2,
     float l1,
@@ -881,28 +979,8 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_with_jacobians_f32_odd(
     float p_D_l1[2],
     float p_D_l2[2])
 {
-    const float *args[4];
-    const int sizes[4] = {1, 1, 1, 1};
-    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0, odd_ = 0;
+    int status = 0, singular = 0;
     float finite = 0.0f;
-    args[0] = &q1;
-    args[1] = &q2;
-    args[2] = &l1;
-    args[3] = &l2;
-    for (j = 0; j < 4; ++j)
-        odd_ |= rigidsym_c_extreme_f(args[j], sizes[j]);
-    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
-        status = 0;
-    for (j = 0; j < 4; ++j)
-        if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
-            status = RIGIDSYM_C_NONFINITE_INPUT;
-#if RIGIDSYM_C_RESCALE_F
-    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
-        const int r_ = rigidsym_c_planar_arm_tip_with_jacobians_f32_rescue(q1, q2, l1, l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
-        if (r_ >= 0)
-            return r_;
-    }
-#endif
     {
         const float x0 = cosf(q1);
         const float x1 = q1 + q2;
@@ -948,6 +1026,68 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_with_jacobians_f32_odd(
         p_D_l2[1] = NAN;
     }
     return status;
+}
+#if RIGIDSYM_C_FLAGS_F
+/* called through a volatile pointer: an opaque call, so that none of the evaluation's
+ * operations moves across the reads of the exception flags around it */
+static int (*const volatile rigidsym_c_planar_arm_tip_with_jacobians_f32_plain_p)(
+    float q1,
+    float q2,
+    float l1,
+    float l2,
+    float p[2],
+    float p_D_q1[2],
+    float p_D_q2[2],
+    float p_D_l1[2],
+    float p_D_l2[2])
+= rigidsym_c_planar_arm_tip_with_jacobians_f32_plain;
+#endif
+
+/* rigidsym_c_planar_arm_tip_with_jacobians_f32 where the range test found an odd input (extreme or not finite): the
+ * input bits of the status, the rescue where there is one, else the ordinary evaluation
+ * with its outputs' test (for an extreme input, read with the exception flags where the
+ * target has them: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
+ * that the fast path of rigidsym_c_planar_arm_tip_with_jacobians_f32 saves no register and makes no call. */
+static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_with_jacobians_f32_odd(
+    float q1,
+    float q2,
+    float l1,
+    float l2,
+    float p[2],
+    float p_D_q1[2],
+    float p_D_q2[2],
+    float p_D_l1[2],
+    float p_D_l2[2])
+{
+    const float *args[4];
+    const int sizes[4] = {1, 1, 1, 1};
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, odd_ = 0;
+    args[0] = &q1;
+    args[1] = &q2;
+    args[2] = &l1;
+    args[3] = &l2;
+    for (j = 0; j < 4; ++j)
+        odd_ |= rigidsym_c_extreme_f(args[j], sizes[j]);
+    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
+        status = 0;
+    for (j = 0; j < 4; ++j)
+        if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
+            status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_RESCALE_F
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
+        const int r_ = rigidsym_c_planar_arm_tip_with_jacobians_f32_rescue(q1, q2, l1, l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
+        if (r_ >= 0)
+            return r_;
+    }
+#endif
+#if RIGIDSYM_C_FLAGS_F
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
+        const unsigned saved_ = rigidsym_c_fp_begin();
+        const int r_ = (*rigidsym_c_planar_arm_tip_with_jacobians_f32_plain_p)(q1, q2, l1, l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
+        return rigidsym_c_fp_end(saved_) ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
+    }
+#endif
+    return status | rigidsym_c_planar_arm_tip_with_jacobians_f32_plain(q1, q2, l1, l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
 }
 #endif
 

@@ -63,30 +63,13 @@ static int rigidsym_c_quaternion_rotation_wide(
 
 
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
-/* rigidsym_c_quaternion_rotation where the range test found an odd input (extreme or not finite): the
- * input bits of the status, the rescue where there is one, else the ordinary evaluation
- * with its outputs' test. Cold and out of line, reached by a tail call, so that the fast
- * path of rigidsym_c_quaternion_rotation saves no register and makes no call. */
-static RIGIDSYM_C_COLD int rigidsym_c_quaternion_rotation_odd(
+/* rigidsym_c_quaternion_rotation evaluated as written, with its outputs' test: the slow path's evaluation */
+static RIGIDSYM_C_COLD int rigidsym_c_quaternion_rotation_plain(
     const double q[4],
     double Q[9])
 {
-    const double *args[1];
-    const int sizes[1] = {4};
-    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0, odd_ = 0;
+    int status = 0, singular = 0;
     double finite = 0.0;
-    args[0] = q;
-    for (j = 0; j < 1; ++j)
-        odd_ |= rigidsym_c_extreme_d(args[j], sizes[j]);
-    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
-        status = 0;
-    for (j = 0; j < 1; ++j)
-        if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
-            status = RIGIDSYM_C_NONFINITE_INPUT;
-#if RIGIDSYM_C_WIDE
-    if (status == RIGIDSYM_C_EXTREME_INPUT)
-        return rigidsym_c_quaternion_rotation_wide(q, Q);
-#endif
     const double q_0 = q[0];
     const double q_1 = q[1];
     const double q_2 = q[2];
@@ -133,6 +116,48 @@ static RIGIDSYM_C_COLD int rigidsym_c_quaternion_rotation_odd(
         Q[8] = NAN;
     }
     return status;
+}
+#if RIGIDSYM_C_FLAGS_D
+/* called through a volatile pointer: an opaque call, so that none of the evaluation's
+ * operations moves across the reads of the exception flags around it */
+static int (*const volatile rigidsym_c_quaternion_rotation_plain_p)(
+    const double q[4],
+    double Q[9])
+= rigidsym_c_quaternion_rotation_plain;
+#endif
+
+/* rigidsym_c_quaternion_rotation where the range test found an odd input (extreme or not finite): the
+ * input bits of the status, the rescue where there is one, else the ordinary evaluation
+ * with its outputs' test (for an extreme input, read with the exception flags where the
+ * target has them: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
+ * that the fast path of rigidsym_c_quaternion_rotation saves no register and makes no call. */
+static RIGIDSYM_C_COLD int rigidsym_c_quaternion_rotation_odd(
+    const double q[4],
+    double Q[9])
+{
+    const double *args[1];
+    const int sizes[1] = {4};
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, odd_ = 0;
+    args[0] = q;
+    for (j = 0; j < 1; ++j)
+        odd_ |= rigidsym_c_extreme_d(args[j], sizes[j]);
+    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
+        status = 0;
+    for (j = 0; j < 1; ++j)
+        if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
+            status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_WIDE
+    if (status == RIGIDSYM_C_EXTREME_INPUT)
+        return rigidsym_c_quaternion_rotation_wide(q, Q);
+#endif
+#if RIGIDSYM_C_FLAGS_D
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
+        const unsigned saved_ = rigidsym_c_fp_begin();
+        const int r_ = (*rigidsym_c_quaternion_rotation_plain_p)(q, Q);
+        return rigidsym_c_fp_end(saved_) ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
+    }
+#endif
+    return status | rigidsym_c_quaternion_rotation_plain(q, Q);
 }
 #endif
 
@@ -249,26 +274,13 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_batch(
 
 
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
-/* rigidsym_c_quaternion_rotation_f32 where the range test found an odd input (extreme or not finite): the
- * input bits of the status, the rescue where there is one, else the ordinary evaluation
- * with its outputs' test. Cold and out of line, reached by a tail call, so that the fast
- * path of rigidsym_c_quaternion_rotation_f32 saves no register and makes no call. */
-static RIGIDSYM_C_COLD int rigidsym_c_quaternion_rotation_f32_odd(
+/* rigidsym_c_quaternion_rotation_f32 evaluated as written, with its outputs' test: the slow path's evaluation */
+static RIGIDSYM_C_COLD int rigidsym_c_quaternion_rotation_f32_plain(
     const float q[4],
     float Q[9])
 {
-    const float *args[1];
-    const int sizes[1] = {4};
-    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0, odd_ = 0;
+    int status = 0, singular = 0;
     float finite = 0.0f;
-    args[0] = q;
-    for (j = 0; j < 1; ++j)
-        odd_ |= rigidsym_c_extreme_f(args[j], sizes[j]);
-    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
-        status = 0;
-    for (j = 0; j < 1; ++j)
-        if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
-            status = RIGIDSYM_C_NONFINITE_INPUT;
     const float q_0 = q[0];
     const float q_1 = q[1];
     const float q_2 = q[2];
@@ -315,6 +327,44 @@ static RIGIDSYM_C_COLD int rigidsym_c_quaternion_rotation_f32_odd(
         Q[8] = NAN;
     }
     return status;
+}
+#if RIGIDSYM_C_FLAGS_F
+/* called through a volatile pointer: an opaque call, so that none of the evaluation's
+ * operations moves across the reads of the exception flags around it */
+static int (*const volatile rigidsym_c_quaternion_rotation_f32_plain_p)(
+    const float q[4],
+    float Q[9])
+= rigidsym_c_quaternion_rotation_f32_plain;
+#endif
+
+/* rigidsym_c_quaternion_rotation_f32 where the range test found an odd input (extreme or not finite): the
+ * input bits of the status, the rescue where there is one, else the ordinary evaluation
+ * with its outputs' test (for an extreme input, read with the exception flags where the
+ * target has them: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
+ * that the fast path of rigidsym_c_quaternion_rotation_f32 saves no register and makes no call. */
+static RIGIDSYM_C_COLD int rigidsym_c_quaternion_rotation_f32_odd(
+    const float q[4],
+    float Q[9])
+{
+    const float *args[1];
+    const int sizes[1] = {4};
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, odd_ = 0;
+    args[0] = q;
+    for (j = 0; j < 1; ++j)
+        odd_ |= rigidsym_c_extreme_f(args[j], sizes[j]);
+    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
+        status = 0;
+    for (j = 0; j < 1; ++j)
+        if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
+            status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_FLAGS_F
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
+        const unsigned saved_ = rigidsym_c_fp_begin();
+        const int r_ = (*rigidsym_c_quaternion_rotation_f32_plain_p)(q, Q);
+        return rigidsym_c_fp_end(saved_) ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
+    }
+#endif
+    return status | rigidsym_c_quaternion_rotation_f32_plain(q, Q);
 }
 #endif
 
@@ -560,31 +610,14 @@ static int rigidsym_c_quaternion_rotation_with_jacobians_wide(
 
 
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
-/* rigidsym_c_quaternion_rotation_with_jacobians where the range test found an odd input (extreme or not finite): the
- * input bits of the status, the rescue where there is one, else the ordinary evaluation
- * with its outputs' test. Cold and out of line, reached by a tail call, so that the fast
- * path of rigidsym_c_quaternion_rotation_with_jacobians saves no register and makes no call. */
-static RIGIDSYM_C_COLD int rigidsym_c_quaternion_rotation_with_jacobians_odd(
+/* rigidsym_c_quaternion_rotation_with_jacobians evaluated as written, with its outputs' test: the slow path's evaluation */
+static RIGIDSYM_C_COLD int rigidsym_c_quaternion_rotation_with_jacobians_plain(
     const double q[4],
     double Q[9],
     double Q_D_q[36])
 {
-    const double *args[1];
-    const int sizes[1] = {4};
-    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0, odd_ = 0;
+    int status = 0, singular = 0;
     double finite = 0.0;
-    args[0] = q;
-    for (j = 0; j < 1; ++j)
-        odd_ |= rigidsym_c_extreme_d(args[j], sizes[j]);
-    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
-        status = 0;
-    for (j = 0; j < 1; ++j)
-        if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
-            status = RIGIDSYM_C_NONFINITE_INPUT;
-#if RIGIDSYM_C_WIDE
-    if (status == RIGIDSYM_C_EXTREME_INPUT)
-        return rigidsym_c_quaternion_rotation_with_jacobians_wide(q, Q, Q_D_q);
-#endif
     const double q_0 = q[0];
     const double q_1 = q[1];
     const double q_2 = q[2];
@@ -709,6 +742,50 @@ static RIGIDSYM_C_COLD int rigidsym_c_quaternion_rotation_with_jacobians_odd(
         Q_D_q[35] = NAN;
     }
     return status;
+}
+#if RIGIDSYM_C_FLAGS_D
+/* called through a volatile pointer: an opaque call, so that none of the evaluation's
+ * operations moves across the reads of the exception flags around it */
+static int (*const volatile rigidsym_c_quaternion_rotation_with_jacobians_plain_p)(
+    const double q[4],
+    double Q[9],
+    double Q_D_q[36])
+= rigidsym_c_quaternion_rotation_with_jacobians_plain;
+#endif
+
+/* rigidsym_c_quaternion_rotation_with_jacobians where the range test found an odd input (extreme or not finite): the
+ * input bits of the status, the rescue where there is one, else the ordinary evaluation
+ * with its outputs' test (for an extreme input, read with the exception flags where the
+ * target has them: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
+ * that the fast path of rigidsym_c_quaternion_rotation_with_jacobians saves no register and makes no call. */
+static RIGIDSYM_C_COLD int rigidsym_c_quaternion_rotation_with_jacobians_odd(
+    const double q[4],
+    double Q[9],
+    double Q_D_q[36])
+{
+    const double *args[1];
+    const int sizes[1] = {4};
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, odd_ = 0;
+    args[0] = q;
+    for (j = 0; j < 1; ++j)
+        odd_ |= rigidsym_c_extreme_d(args[j], sizes[j]);
+    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
+        status = 0;
+    for (j = 0; j < 1; ++j)
+        if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
+            status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_WIDE
+    if (status == RIGIDSYM_C_EXTREME_INPUT)
+        return rigidsym_c_quaternion_rotation_with_jacobians_wide(q, Q, Q_D_q);
+#endif
+#if RIGIDSYM_C_FLAGS_D
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
+        const unsigned saved_ = rigidsym_c_fp_begin();
+        const int r_ = (*rigidsym_c_quaternion_rotation_with_jacobians_plain_p)(q, Q, Q_D_q);
+        return rigidsym_c_fp_end(saved_) ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
+    }
+#endif
+    return status | rigidsym_c_quaternion_rotation_with_jacobians_plain(q, Q, Q_D_q);
 }
 #endif
 
@@ -905,27 +982,14 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_with_jacobians_batch(
 
 
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
-/* rigidsym_c_quaternion_rotation_with_jacobians_f32 where the range test found an odd input (extreme or not finite): the
- * input bits of the status, the rescue where there is one, else the ordinary evaluation
- * with its outputs' test. Cold and out of line, reached by a tail call, so that the fast
- * path of rigidsym_c_quaternion_rotation_with_jacobians_f32 saves no register and makes no call. */
-static RIGIDSYM_C_COLD int rigidsym_c_quaternion_rotation_with_jacobians_f32_odd(
+/* rigidsym_c_quaternion_rotation_with_jacobians_f32 evaluated as written, with its outputs' test: the slow path's evaluation */
+static RIGIDSYM_C_COLD int rigidsym_c_quaternion_rotation_with_jacobians_f32_plain(
     const float q[4],
     float Q[9],
     float Q_D_q[36])
 {
-    const float *args[1];
-    const int sizes[1] = {4};
-    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0, odd_ = 0;
+    int status = 0, singular = 0;
     float finite = 0.0f;
-    args[0] = q;
-    for (j = 0; j < 1; ++j)
-        odd_ |= rigidsym_c_extreme_f(args[j], sizes[j]);
-    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
-        status = 0;
-    for (j = 0; j < 1; ++j)
-        if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
-            status = RIGIDSYM_C_NONFINITE_INPUT;
     const float q_0 = q[0];
     const float q_1 = q[1];
     const float q_2 = q[2];
@@ -1050,6 +1114,46 @@ static RIGIDSYM_C_COLD int rigidsym_c_quaternion_rotation_with_jacobians_f32_odd
         Q_D_q[35] = NAN;
     }
     return status;
+}
+#if RIGIDSYM_C_FLAGS_F
+/* called through a volatile pointer: an opaque call, so that none of the evaluation's
+ * operations moves across the reads of the exception flags around it */
+static int (*const volatile rigidsym_c_quaternion_rotation_with_jacobians_f32_plain_p)(
+    const float q[4],
+    float Q[9],
+    float Q_D_q[36])
+= rigidsym_c_quaternion_rotation_with_jacobians_f32_plain;
+#endif
+
+/* rigidsym_c_quaternion_rotation_with_jacobians_f32 where the range test found an odd input (extreme or not finite): the
+ * input bits of the status, the rescue where there is one, else the ordinary evaluation
+ * with its outputs' test (for an extreme input, read with the exception flags where the
+ * target has them: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
+ * that the fast path of rigidsym_c_quaternion_rotation_with_jacobians_f32 saves no register and makes no call. */
+static RIGIDSYM_C_COLD int rigidsym_c_quaternion_rotation_with_jacobians_f32_odd(
+    const float q[4],
+    float Q[9],
+    float Q_D_q[36])
+{
+    const float *args[1];
+    const int sizes[1] = {4};
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, odd_ = 0;
+    args[0] = q;
+    for (j = 0; j < 1; ++j)
+        odd_ |= rigidsym_c_extreme_f(args[j], sizes[j]);
+    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
+        status = 0;
+    for (j = 0; j < 1; ++j)
+        if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
+            status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_FLAGS_F
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
+        const unsigned saved_ = rigidsym_c_fp_begin();
+        const int r_ = (*rigidsym_c_quaternion_rotation_with_jacobians_f32_plain_p)(q, Q, Q_D_q);
+        return rigidsym_c_fp_end(saved_) ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
+    }
+#endif
+    return status | rigidsym_c_quaternion_rotation_with_jacobians_f32_plain(q, Q, Q_D_q);
 }
 #endif
 

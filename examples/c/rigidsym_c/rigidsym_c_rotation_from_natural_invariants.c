@@ -73,32 +73,14 @@ static int rigidsym_c_rotation_from_natural_invariants_wide(
 
 
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
-/* rigidsym_c_rotation_from_natural_invariants where the range test found an odd input (extreme or not finite): the
- * input bits of the status, the rescue where there is one, else the ordinary evaluation
- * with its outputs' test. Cold and out of line, reached by a tail call, so that the fast
- * path of rigidsym_c_rotation_from_natural_invariants saves no register and makes no call. */
-static RIGIDSYM_C_COLD int rigidsym_c_rotation_from_natural_invariants_odd(
+/* rigidsym_c_rotation_from_natural_invariants evaluated as written, with its outputs' test: the slow path's evaluation */
+static RIGIDSYM_C_COLD int rigidsym_c_rotation_from_natural_invariants_plain(
     const double e[3],
     double phi,
     double Q[9])
 {
-    const double *args[2];
-    const int sizes[2] = {3, 1};
-    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0, odd_ = 0;
+    int status = 0, singular = 0;
     double finite = 0.0;
-    args[0] = e;
-    args[1] = &phi;
-    for (j = 0; j < 2; ++j)
-        odd_ |= rigidsym_c_extreme_d(args[j], sizes[j]);
-    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
-        status = 0;
-    for (j = 0; j < 2; ++j)
-        if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
-            status = RIGIDSYM_C_NONFINITE_INPUT;
-#if RIGIDSYM_C_WIDE
-    if (status == RIGIDSYM_C_EXTREME_INPUT)
-        return rigidsym_c_rotation_from_natural_invariants_wide(e, phi, Q);
-#endif
     const double e_0 = e[0];
     const double e_1 = e[1];
     const double e_2 = e[2];
@@ -152,6 +134,51 @@ static RIGIDSYM_C_COLD int rigidsym_c_rotation_from_natural_invariants_odd(
         Q[8] = NAN;
     }
     return status;
+}
+#if RIGIDSYM_C_FLAGS_D
+/* called through a volatile pointer: an opaque call, so that none of the evaluation's
+ * operations moves across the reads of the exception flags around it */
+static int (*const volatile rigidsym_c_rotation_from_natural_invariants_plain_p)(
+    const double e[3],
+    double phi,
+    double Q[9])
+= rigidsym_c_rotation_from_natural_invariants_plain;
+#endif
+
+/* rigidsym_c_rotation_from_natural_invariants where the range test found an odd input (extreme or not finite): the
+ * input bits of the status, the rescue where there is one, else the ordinary evaluation
+ * with its outputs' test (for an extreme input, read with the exception flags where the
+ * target has them: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
+ * that the fast path of rigidsym_c_rotation_from_natural_invariants saves no register and makes no call. */
+static RIGIDSYM_C_COLD int rigidsym_c_rotation_from_natural_invariants_odd(
+    const double e[3],
+    double phi,
+    double Q[9])
+{
+    const double *args[2];
+    const int sizes[2] = {3, 1};
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, odd_ = 0;
+    args[0] = e;
+    args[1] = &phi;
+    for (j = 0; j < 2; ++j)
+        odd_ |= rigidsym_c_extreme_d(args[j], sizes[j]);
+    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
+        status = 0;
+    for (j = 0; j < 2; ++j)
+        if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
+            status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_WIDE
+    if (status == RIGIDSYM_C_EXTREME_INPUT)
+        return rigidsym_c_rotation_from_natural_invariants_wide(e, phi, Q);
+#endif
+#if RIGIDSYM_C_FLAGS_D
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
+        const unsigned saved_ = rigidsym_c_fp_begin();
+        const int r_ = (*rigidsym_c_rotation_from_natural_invariants_plain_p)(e, phi, Q);
+        return rigidsym_c_fp_end(saved_) ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
+    }
+#endif
+    return status | rigidsym_c_rotation_from_natural_invariants_plain(e, phi, Q);
 }
 #endif
 
@@ -282,28 +309,14 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_batch(
 
 
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
-/* rigidsym_c_rotation_from_natural_invariants_f32 where the range test found an odd input (extreme or not finite): the
- * input bits of the status, the rescue where there is one, else the ordinary evaluation
- * with its outputs' test. Cold and out of line, reached by a tail call, so that the fast
- * path of rigidsym_c_rotation_from_natural_invariants_f32 saves no register and makes no call. */
-static RIGIDSYM_C_COLD int rigidsym_c_rotation_from_natural_invariants_f32_odd(
+/* rigidsym_c_rotation_from_natural_invariants_f32 evaluated as written, with its outputs' test: the slow path's evaluation */
+static RIGIDSYM_C_COLD int rigidsym_c_rotation_from_natural_invariants_f32_plain(
     const float e[3],
     float phi,
     float Q[9])
 {
-    const float *args[2];
-    const int sizes[2] = {3, 1};
-    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0, odd_ = 0;
+    int status = 0, singular = 0;
     float finite = 0.0f;
-    args[0] = e;
-    args[1] = &phi;
-    for (j = 0; j < 2; ++j)
-        odd_ |= rigidsym_c_extreme_f(args[j], sizes[j]);
-    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
-        status = 0;
-    for (j = 0; j < 2; ++j)
-        if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
-            status = RIGIDSYM_C_NONFINITE_INPUT;
     const float e_0 = e[0];
     const float e_1 = e[1];
     const float e_2 = e[2];
@@ -357,6 +370,47 @@ static RIGIDSYM_C_COLD int rigidsym_c_rotation_from_natural_invariants_f32_odd(
         Q[8] = NAN;
     }
     return status;
+}
+#if RIGIDSYM_C_FLAGS_F
+/* called through a volatile pointer: an opaque call, so that none of the evaluation's
+ * operations moves across the reads of the exception flags around it */
+static int (*const volatile rigidsym_c_rotation_from_natural_invariants_f32_plain_p)(
+    const float e[3],
+    float phi,
+    float Q[9])
+= rigidsym_c_rotation_from_natural_invariants_f32_plain;
+#endif
+
+/* rigidsym_c_rotation_from_natural_invariants_f32 where the range test found an odd input (extreme or not finite): the
+ * input bits of the status, the rescue where there is one, else the ordinary evaluation
+ * with its outputs' test (for an extreme input, read with the exception flags where the
+ * target has them: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
+ * that the fast path of rigidsym_c_rotation_from_natural_invariants_f32 saves no register and makes no call. */
+static RIGIDSYM_C_COLD int rigidsym_c_rotation_from_natural_invariants_f32_odd(
+    const float e[3],
+    float phi,
+    float Q[9])
+{
+    const float *args[2];
+    const int sizes[2] = {3, 1};
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, odd_ = 0;
+    args[0] = e;
+    args[1] = &phi;
+    for (j = 0; j < 2; ++j)
+        odd_ |= rigidsym_c_extreme_f(args[j], sizes[j]);
+    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
+        status = 0;
+    for (j = 0; j < 2; ++j)
+        if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
+            status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_FLAGS_F
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
+        const unsigned saved_ = rigidsym_c_fp_begin();
+        const int r_ = (*rigidsym_c_rotation_from_natural_invariants_f32_plain_p)(e, phi, Q);
+        return rigidsym_c_fp_end(saved_) ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
+    }
+#endif
+    return status | rigidsym_c_rotation_from_natural_invariants_f32_plain(e, phi, Q);
 }
 #endif
 
@@ -633,34 +687,16 @@ static int rigidsym_c_rotation_from_natural_invariants_with_jacobians_wide(
 
 
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
-/* rigidsym_c_rotation_from_natural_invariants_with_jacobians where the range test found an odd input (extreme or not finite): the
- * input bits of the status, the rescue where there is one, else the ordinary evaluation
- * with its outputs' test. Cold and out of line, reached by a tail call, so that the fast
- * path of rigidsym_c_rotation_from_natural_invariants_with_jacobians saves no register and makes no call. */
-static RIGIDSYM_C_COLD int rigidsym_c_rotation_from_natural_invariants_with_jacobians_odd(
+/* rigidsym_c_rotation_from_natural_invariants_with_jacobians evaluated as written, with its outputs' test: the slow path's evaluation */
+static RIGIDSYM_C_COLD int rigidsym_c_rotation_from_natural_invariants_with_jacobians_plain(
     const double e[3],
     double phi,
     double Q[9],
     double Q_D_e[27],
     double Q_D_phi[9])
 {
-    const double *args[2];
-    const int sizes[2] = {3, 1};
-    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0, odd_ = 0;
+    int status = 0, singular = 0;
     double finite = 0.0;
-    args[0] = e;
-    args[1] = &phi;
-    for (j = 0; j < 2; ++j)
-        odd_ |= rigidsym_c_extreme_d(args[j], sizes[j]);
-    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
-        status = 0;
-    for (j = 0; j < 2; ++j)
-        if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
-            status = RIGIDSYM_C_NONFINITE_INPUT;
-#if RIGIDSYM_C_WIDE
-    if (status == RIGIDSYM_C_EXTREME_INPUT)
-        return rigidsym_c_rotation_from_natural_invariants_with_jacobians_wide(e, phi, Q, Q_D_e, Q_D_phi);
-#endif
     const double e_0 = e[0];
     const double e_1 = e[1];
     const double e_2 = e[2];
@@ -798,6 +834,55 @@ static RIGIDSYM_C_COLD int rigidsym_c_rotation_from_natural_invariants_with_jaco
         Q_D_phi[8] = NAN;
     }
     return status;
+}
+#if RIGIDSYM_C_FLAGS_D
+/* called through a volatile pointer: an opaque call, so that none of the evaluation's
+ * operations moves across the reads of the exception flags around it */
+static int (*const volatile rigidsym_c_rotation_from_natural_invariants_with_jacobians_plain_p)(
+    const double e[3],
+    double phi,
+    double Q[9],
+    double Q_D_e[27],
+    double Q_D_phi[9])
+= rigidsym_c_rotation_from_natural_invariants_with_jacobians_plain;
+#endif
+
+/* rigidsym_c_rotation_from_natural_invariants_with_jacobians where the range test found an odd input (extreme or not finite): the
+ * input bits of the status, the rescue where there is one, else the ordinary evaluation
+ * with its outputs' test (for an extreme input, read with the exception flags where the
+ * target has them: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
+ * that the fast path of rigidsym_c_rotation_from_natural_invariants_with_jacobians saves no register and makes no call. */
+static RIGIDSYM_C_COLD int rigidsym_c_rotation_from_natural_invariants_with_jacobians_odd(
+    const double e[3],
+    double phi,
+    double Q[9],
+    double Q_D_e[27],
+    double Q_D_phi[9])
+{
+    const double *args[2];
+    const int sizes[2] = {3, 1};
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, odd_ = 0;
+    args[0] = e;
+    args[1] = &phi;
+    for (j = 0; j < 2; ++j)
+        odd_ |= rigidsym_c_extreme_d(args[j], sizes[j]);
+    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
+        status = 0;
+    for (j = 0; j < 2; ++j)
+        if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
+            status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_WIDE
+    if (status == RIGIDSYM_C_EXTREME_INPUT)
+        return rigidsym_c_rotation_from_natural_invariants_with_jacobians_wide(e, phi, Q, Q_D_e, Q_D_phi);
+#endif
+#if RIGIDSYM_C_FLAGS_D
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
+        const unsigned saved_ = rigidsym_c_fp_begin();
+        const int r_ = (*rigidsym_c_rotation_from_natural_invariants_with_jacobians_plain_p)(e, phi, Q, Q_D_e, Q_D_phi);
+        return rigidsym_c_fp_end(saved_) ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
+    }
+#endif
+    return status | rigidsym_c_rotation_from_natural_invariants_with_jacobians_plain(e, phi, Q, Q_D_e, Q_D_phi);
 }
 #endif
 
@@ -1016,30 +1101,16 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_with_jacobians_ba
 
 
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
-/* rigidsym_c_rotation_from_natural_invariants_with_jacobians_f32 where the range test found an odd input (extreme or not finite): the
- * input bits of the status, the rescue where there is one, else the ordinary evaluation
- * with its outputs' test. Cold and out of line, reached by a tail call, so that the fast
- * path of rigidsym_c_rotation_from_natural_invariants_with_jacobians_f32 saves no register and makes no call. */
-static RIGIDSYM_C_COLD int rigidsym_c_rotation_from_natural_invariants_with_jacobians_f32_odd(
+/* rigidsym_c_rotation_from_natural_invariants_with_jacobians_f32 evaluated as written, with its outputs' test: the slow path's evaluation */
+static RIGIDSYM_C_COLD int rigidsym_c_rotation_from_natural_invariants_with_jacobians_f32_plain(
     const float e[3],
     float phi,
     float Q[9],
     float Q_D_e[27],
     float Q_D_phi[9])
 {
-    const float *args[2];
-    const int sizes[2] = {3, 1};
-    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0, odd_ = 0;
+    int status = 0, singular = 0;
     float finite = 0.0f;
-    args[0] = e;
-    args[1] = &phi;
-    for (j = 0; j < 2; ++j)
-        odd_ |= rigidsym_c_extreme_f(args[j], sizes[j]);
-    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
-        status = 0;
-    for (j = 0; j < 2; ++j)
-        if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
-            status = RIGIDSYM_C_NONFINITE_INPUT;
     const float e_0 = e[0];
     const float e_1 = e[1];
     const float e_2 = e[2];
@@ -1177,6 +1248,51 @@ static RIGIDSYM_C_COLD int rigidsym_c_rotation_from_natural_invariants_with_jaco
         Q_D_phi[8] = NAN;
     }
     return status;
+}
+#if RIGIDSYM_C_FLAGS_F
+/* called through a volatile pointer: an opaque call, so that none of the evaluation's
+ * operations moves across the reads of the exception flags around it */
+static int (*const volatile rigidsym_c_rotation_from_natural_invariants_with_jacobians_f32_plain_p)(
+    const float e[3],
+    float phi,
+    float Q[9],
+    float Q_D_e[27],
+    float Q_D_phi[9])
+= rigidsym_c_rotation_from_natural_invariants_with_jacobians_f32_plain;
+#endif
+
+/* rigidsym_c_rotation_from_natural_invariants_with_jacobians_f32 where the range test found an odd input (extreme or not finite): the
+ * input bits of the status, the rescue where there is one, else the ordinary evaluation
+ * with its outputs' test (for an extreme input, read with the exception flags where the
+ * target has them: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
+ * that the fast path of rigidsym_c_rotation_from_natural_invariants_with_jacobians_f32 saves no register and makes no call. */
+static RIGIDSYM_C_COLD int rigidsym_c_rotation_from_natural_invariants_with_jacobians_f32_odd(
+    const float e[3],
+    float phi,
+    float Q[9],
+    float Q_D_e[27],
+    float Q_D_phi[9])
+{
+    const float *args[2];
+    const int sizes[2] = {3, 1};
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, odd_ = 0;
+    args[0] = e;
+    args[1] = &phi;
+    for (j = 0; j < 2; ++j)
+        odd_ |= rigidsym_c_extreme_f(args[j], sizes[j]);
+    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
+        status = 0;
+    for (j = 0; j < 2; ++j)
+        if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
+            status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_FLAGS_F
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
+        const unsigned saved_ = rigidsym_c_fp_begin();
+        const int r_ = (*rigidsym_c_rotation_from_natural_invariants_with_jacobians_f32_plain_p)(e, phi, Q, Q_D_e, Q_D_phi);
+        return rigidsym_c_fp_end(saved_) ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
+    }
+#endif
+    return status | rigidsym_c_rotation_from_natural_invariants_with_jacobians_f32_plain(e, phi, Q, Q_D_e, Q_D_phi);
 }
 #endif
 

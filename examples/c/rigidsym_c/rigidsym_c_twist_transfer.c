@@ -113,41 +113,15 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_rescue(
 
 
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
-/* rigidsym_c_twist_transfer where the range test found an odd input (extreme or not finite): the
- * input bits of the status, the rescue where there is one, else the ordinary evaluation
- * with its outputs' test. Cold and out of line, reached by a tail call, so that the fast
- * path of rigidsym_c_twist_transfer saves no register and makes no call. */
-static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_odd(
+/* rigidsym_c_twist_transfer evaluated as written, with its outputs' test: the slow path's evaluation */
+static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_plain(
     const double t_A[6],
     const double a[3],
     const double p[3],
     double t_P[6])
 {
-    const double *args[3];
-    const int sizes[3] = {6, 3, 3};
-    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0, odd_ = 0;
+    int status = 0, singular = 0;
     double finite = 0.0;
-    args[0] = t_A;
-    args[1] = a;
-    args[2] = p;
-    for (j = 0; j < 3; ++j)
-        odd_ |= rigidsym_c_extreme_d(args[j], sizes[j]);
-    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
-        status = 0;
-    for (j = 0; j < 3; ++j)
-        if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
-            status = RIGIDSYM_C_NONFINITE_INPUT;
-#if RIGIDSYM_C_WIDE
-    if (status == RIGIDSYM_C_EXTREME_INPUT)
-        return rigidsym_c_twist_transfer_wide(t_A, a, p, t_P);
-#endif
-#if RIGIDSYM_C_RESCALE_D
-    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
-        const int r_ = rigidsym_c_twist_transfer_rescue(t_A, a, p, t_P);
-        if (r_ >= 0)
-            return r_;
-    }
-#endif
     const double t_A_0 = t_A[0];
     const double t_A_1 = t_A[1];
     const double t_A_2 = t_A[2];
@@ -191,6 +165,61 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_odd(
         t_P[5] = NAN;
     }
     return status;
+}
+#if RIGIDSYM_C_FLAGS_D
+/* called through a volatile pointer: an opaque call, so that none of the evaluation's
+ * operations moves across the reads of the exception flags around it */
+static int (*const volatile rigidsym_c_twist_transfer_plain_p)(
+    const double t_A[6],
+    const double a[3],
+    const double p[3],
+    double t_P[6])
+= rigidsym_c_twist_transfer_plain;
+#endif
+
+/* rigidsym_c_twist_transfer where the range test found an odd input (extreme or not finite): the
+ * input bits of the status, the rescue where there is one, else the ordinary evaluation
+ * with its outputs' test (for an extreme input, read with the exception flags where the
+ * target has them: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
+ * that the fast path of rigidsym_c_twist_transfer saves no register and makes no call. */
+static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_odd(
+    const double t_A[6],
+    const double a[3],
+    const double p[3],
+    double t_P[6])
+{
+    const double *args[3];
+    const int sizes[3] = {6, 3, 3};
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, odd_ = 0;
+    args[0] = t_A;
+    args[1] = a;
+    args[2] = p;
+    for (j = 0; j < 3; ++j)
+        odd_ |= rigidsym_c_extreme_d(args[j], sizes[j]);
+    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
+        status = 0;
+    for (j = 0; j < 3; ++j)
+        if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
+            status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_WIDE
+    if (status == RIGIDSYM_C_EXTREME_INPUT)
+        return rigidsym_c_twist_transfer_wide(t_A, a, p, t_P);
+#endif
+#if RIGIDSYM_C_RESCALE_D
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
+        const int r_ = rigidsym_c_twist_transfer_rescue(t_A, a, p, t_P);
+        if (r_ >= 0)
+            return r_;
+    }
+#endif
+#if RIGIDSYM_C_FLAGS_D
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
+        const unsigned saved_ = rigidsym_c_fp_begin();
+        const int r_ = (*rigidsym_c_twist_transfer_plain_p)(t_A, a, p, t_P);
+        return rigidsym_c_fp_end(saved_) ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
+    }
+#endif
+    return status | rigidsym_c_twist_transfer_plain(t_A, a, p, t_P);
 }
 #endif
 
@@ -374,37 +403,15 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_f32_rescue(
 
 
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
-/* rigidsym_c_twist_transfer_f32 where the range test found an odd input (extreme or not finite): the
- * input bits of the status, the rescue where there is one, else the ordinary evaluation
- * with its outputs' test. Cold and out of line, reached by a tail call, so that the fast
- * path of rigidsym_c_twist_transfer_f32 saves no register and makes no call. */
-static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_f32_odd(
+/* rigidsym_c_twist_transfer_f32 evaluated as written, with its outputs' test: the slow path's evaluation */
+static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_f32_plain(
     const float t_A[6],
     const float a[3],
     const float p[3],
     float t_P[6])
 {
-    const float *args[3];
-    const int sizes[3] = {6, 3, 3};
-    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0, odd_ = 0;
+    int status = 0, singular = 0;
     float finite = 0.0f;
-    args[0] = t_A;
-    args[1] = a;
-    args[2] = p;
-    for (j = 0; j < 3; ++j)
-        odd_ |= rigidsym_c_extreme_f(args[j], sizes[j]);
-    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
-        status = 0;
-    for (j = 0; j < 3; ++j)
-        if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
-            status = RIGIDSYM_C_NONFINITE_INPUT;
-#if RIGIDSYM_C_RESCALE_F
-    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
-        const int r_ = rigidsym_c_twist_transfer_f32_rescue(t_A, a, p, t_P);
-        if (r_ >= 0)
-            return r_;
-    }
-#endif
     const float t_A_0 = t_A[0];
     const float t_A_1 = t_A[1];
     const float t_A_2 = t_A[2];
@@ -448,6 +455,57 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_f32_odd(
         t_P[5] = NAN;
     }
     return status;
+}
+#if RIGIDSYM_C_FLAGS_F
+/* called through a volatile pointer: an opaque call, so that none of the evaluation's
+ * operations moves across the reads of the exception flags around it */
+static int (*const volatile rigidsym_c_twist_transfer_f32_plain_p)(
+    const float t_A[6],
+    const float a[3],
+    const float p[3],
+    float t_P[6])
+= rigidsym_c_twist_transfer_f32_plain;
+#endif
+
+/* rigidsym_c_twist_transfer_f32 where the range test found an odd input (extreme or not finite): the
+ * input bits of the status, the rescue where there is one, else the ordinary evaluation
+ * with its outputs' test (for an extreme input, read with the exception flags where the
+ * target has them: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
+ * that the fast path of rigidsym_c_twist_transfer_f32 saves no register and makes no call. */
+static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_f32_odd(
+    const float t_A[6],
+    const float a[3],
+    const float p[3],
+    float t_P[6])
+{
+    const float *args[3];
+    const int sizes[3] = {6, 3, 3};
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, odd_ = 0;
+    args[0] = t_A;
+    args[1] = a;
+    args[2] = p;
+    for (j = 0; j < 3; ++j)
+        odd_ |= rigidsym_c_extreme_f(args[j], sizes[j]);
+    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
+        status = 0;
+    for (j = 0; j < 3; ++j)
+        if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
+            status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_RESCALE_F
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
+        const int r_ = rigidsym_c_twist_transfer_f32_rescue(t_A, a, p, t_P);
+        if (r_ >= 0)
+            return r_;
+    }
+#endif
+#if RIGIDSYM_C_FLAGS_F
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
+        const unsigned saved_ = rigidsym_c_fp_begin();
+        const int r_ = (*rigidsym_c_twist_transfer_f32_plain_p)(t_A, a, p, t_P);
+        return rigidsym_c_fp_end(saved_) ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
+    }
+#endif
+    return status | rigidsym_c_twist_transfer_f32_plain(t_A, a, p, t_P);
 }
 #endif
 
@@ -849,11 +907,8 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_with_jacobians_rescue(
 
 
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
-/* rigidsym_c_twist_transfer_with_jacobians where the range test found an odd input (extreme or not finite): the
- * input bits of the status, the rescue where there is one, else the ordinary evaluation
- * with its outputs' test. Cold and out of line, reached by a tail call, so that the fast
- * path of rigidsym_c_twist_transfer_with_jacobians saves no register and makes no call. */
-static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_with_jacobians_odd(
+/* rigidsym_c_twist_transfer_with_jacobians evaluated as written, with its outputs' test: the slow path's evaluation */
+static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_with_jacobians_plain(
     const double t_A[6],
     const double a[3],
     const double p[3],
@@ -862,31 +917,8 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_with_jacobians_odd(
     double t_P_D_a[18],
     double t_P_D_p[18])
 {
-    const double *args[3];
-    const int sizes[3] = {6, 3, 3};
-    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0, odd_ = 0;
+    int status = 0, singular = 0;
     double finite = 0.0;
-    args[0] = t_A;
-    args[1] = a;
-    args[2] = p;
-    for (j = 0; j < 3; ++j)
-        odd_ |= rigidsym_c_extreme_d(args[j], sizes[j]);
-    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
-        status = 0;
-    for (j = 0; j < 3; ++j)
-        if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
-            status = RIGIDSYM_C_NONFINITE_INPUT;
-#if RIGIDSYM_C_WIDE
-    if (status == RIGIDSYM_C_EXTREME_INPUT)
-        return rigidsym_c_twist_transfer_with_jacobians_wide(t_A, a, p, t_P, t_P_D_t_A, t_P_D_a, t_P_D_p);
-#endif
-#if RIGIDSYM_C_RESCALE_D
-    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
-        const int r_ = rigidsym_c_twist_transfer_with_jacobians_rescue(t_A, a, p, t_P, t_P_D_t_A, t_P_D_a, t_P_D_p);
-        if (r_ >= 0)
-            return r_;
-    }
-#endif
     const double t_A_0 = t_A[0];
     const double t_A_1 = t_A[1];
     const double t_A_2 = t_A[2];
@@ -1080,6 +1112,67 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_with_jacobians_odd(
         t_P_D_p[17] = NAN;
     }
     return status;
+}
+#if RIGIDSYM_C_FLAGS_D
+/* called through a volatile pointer: an opaque call, so that none of the evaluation's
+ * operations moves across the reads of the exception flags around it */
+static int (*const volatile rigidsym_c_twist_transfer_with_jacobians_plain_p)(
+    const double t_A[6],
+    const double a[3],
+    const double p[3],
+    double t_P[6],
+    double t_P_D_t_A[36],
+    double t_P_D_a[18],
+    double t_P_D_p[18])
+= rigidsym_c_twist_transfer_with_jacobians_plain;
+#endif
+
+/* rigidsym_c_twist_transfer_with_jacobians where the range test found an odd input (extreme or not finite): the
+ * input bits of the status, the rescue where there is one, else the ordinary evaluation
+ * with its outputs' test (for an extreme input, read with the exception flags where the
+ * target has them: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
+ * that the fast path of rigidsym_c_twist_transfer_with_jacobians saves no register and makes no call. */
+static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_with_jacobians_odd(
+    const double t_A[6],
+    const double a[3],
+    const double p[3],
+    double t_P[6],
+    double t_P_D_t_A[36],
+    double t_P_D_a[18],
+    double t_P_D_p[18])
+{
+    const double *args[3];
+    const int sizes[3] = {6, 3, 3};
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, odd_ = 0;
+    args[0] = t_A;
+    args[1] = a;
+    args[2] = p;
+    for (j = 0; j < 3; ++j)
+        odd_ |= rigidsym_c_extreme_d(args[j], sizes[j]);
+    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
+        status = 0;
+    for (j = 0; j < 3; ++j)
+        if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
+            status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_WIDE
+    if (status == RIGIDSYM_C_EXTREME_INPUT)
+        return rigidsym_c_twist_transfer_with_jacobians_wide(t_A, a, p, t_P, t_P_D_t_A, t_P_D_a, t_P_D_p);
+#endif
+#if RIGIDSYM_C_RESCALE_D
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
+        const int r_ = rigidsym_c_twist_transfer_with_jacobians_rescue(t_A, a, p, t_P, t_P_D_t_A, t_P_D_a, t_P_D_p);
+        if (r_ >= 0)
+            return r_;
+    }
+#endif
+#if RIGIDSYM_C_FLAGS_D
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
+        const unsigned saved_ = rigidsym_c_fp_begin();
+        const int r_ = (*rigidsym_c_twist_transfer_with_jacobians_plain_p)(t_A, a, p, t_P, t_P_D_t_A, t_P_D_a, t_P_D_p);
+        return rigidsym_c_fp_end(saved_) ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
+    }
+#endif
+    return status | rigidsym_c_twist_transfer_with_jacobians_plain(t_A, a, p, t_P, t_P_D_t_A, t_P_D_a, t_P_D_p);
 }
 #endif
 
@@ -1434,11 +1527,8 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_with_jacobians_f32_rescue(
 
 
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
-/* rigidsym_c_twist_transfer_with_jacobians_f32 where the range test found an odd input (extreme or not finite): the
- * input bits of the status, the rescue where there is one, else the ordinary evaluation
- * with its outputs' test. Cold and out of line, reached by a tail call, so that the fast
- * path of rigidsym_c_twist_transfer_with_jacobians_f32 saves no register and makes no call. */
-static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_with_jacobians_f32_odd(
+/* rigidsym_c_twist_transfer_with_jacobians_f32 evaluated as written, with its outputs' test: the slow path's evaluation */
+static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_with_jacobians_f32_plain(
     const float t_A[6],
     const float a[3],
     const float p[3],
@@ -1447,27 +1537,8 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_with_jacobians_f32_odd(
     float t_P_D_a[18],
     float t_P_D_p[18])
 {
-    const float *args[3];
-    const int sizes[3] = {6, 3, 3};
-    int j, status = RIGIDSYM_C_EXTREME_INPUT, singular = 0, odd_ = 0;
+    int status = 0, singular = 0;
     float finite = 0.0f;
-    args[0] = t_A;
-    args[1] = a;
-    args[2] = p;
-    for (j = 0; j < 3; ++j)
-        odd_ |= rigidsym_c_extreme_f(args[j], sizes[j]);
-    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
-        status = 0;
-    for (j = 0; j < 3; ++j)
-        if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
-            status = RIGIDSYM_C_NONFINITE_INPUT;
-#if RIGIDSYM_C_RESCALE_F
-    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
-        const int r_ = rigidsym_c_twist_transfer_with_jacobians_f32_rescue(t_A, a, p, t_P, t_P_D_t_A, t_P_D_a, t_P_D_p);
-        if (r_ >= 0)
-            return r_;
-    }
-#endif
     const float t_A_0 = t_A[0];
     const float t_A_1 = t_A[1];
     const float t_A_2 = t_A[2];
@@ -1661,6 +1732,63 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_with_jacobians_f32_odd(
         t_P_D_p[17] = NAN;
     }
     return status;
+}
+#if RIGIDSYM_C_FLAGS_F
+/* called through a volatile pointer: an opaque call, so that none of the evaluation's
+ * operations moves across the reads of the exception flags around it */
+static int (*const volatile rigidsym_c_twist_transfer_with_jacobians_f32_plain_p)(
+    const float t_A[6],
+    const float a[3],
+    const float p[3],
+    float t_P[6],
+    float t_P_D_t_A[36],
+    float t_P_D_a[18],
+    float t_P_D_p[18])
+= rigidsym_c_twist_transfer_with_jacobians_f32_plain;
+#endif
+
+/* rigidsym_c_twist_transfer_with_jacobians_f32 where the range test found an odd input (extreme or not finite): the
+ * input bits of the status, the rescue where there is one, else the ordinary evaluation
+ * with its outputs' test (for an extreme input, read with the exception flags where the
+ * target has them: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
+ * that the fast path of rigidsym_c_twist_transfer_with_jacobians_f32 saves no register and makes no call. */
+static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_with_jacobians_f32_odd(
+    const float t_A[6],
+    const float a[3],
+    const float p[3],
+    float t_P[6],
+    float t_P_D_t_A[36],
+    float t_P_D_a[18],
+    float t_P_D_p[18])
+{
+    const float *args[3];
+    const int sizes[3] = {6, 3, 3};
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, odd_ = 0;
+    args[0] = t_A;
+    args[1] = a;
+    args[2] = p;
+    for (j = 0; j < 3; ++j)
+        odd_ |= rigidsym_c_extreme_f(args[j], sizes[j]);
+    if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
+        status = 0;
+    for (j = 0; j < 3; ++j)
+        if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
+            status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_RESCALE_F
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
+        const int r_ = rigidsym_c_twist_transfer_with_jacobians_f32_rescue(t_A, a, p, t_P, t_P_D_t_A, t_P_D_a, t_P_D_p);
+        if (r_ >= 0)
+            return r_;
+    }
+#endif
+#if RIGIDSYM_C_FLAGS_F
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
+        const unsigned saved_ = rigidsym_c_fp_begin();
+        const int r_ = (*rigidsym_c_twist_transfer_with_jacobians_f32_plain_p)(t_A, a, p, t_P, t_P_D_t_A, t_P_D_a, t_P_D_p);
+        return rigidsym_c_fp_end(saved_) ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
+    }
+#endif
+    return status | rigidsym_c_twist_transfer_with_jacobians_f32_plain(t_A, a, p, t_P, t_P_D_t_A, t_P_D_a, t_P_D_p);
 }
 #endif
 

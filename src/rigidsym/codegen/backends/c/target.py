@@ -47,8 +47,9 @@ LIBRARY = "rigidsym_c"
 PREFIX = "rigidsym_c_"
 #: the status bits of every scalar function: (macro suffix, value, meaning)
 STATUS = (
-    ("OK", 0, "finite inputs of ordinary magnitude, not on the singular set: the outputs "
-              "are the kernel's values within its stated bound"),
+    ("OK", 0, "finite inputs, not on the singular set, evaluated without underflow or "
+              "overflow (of ordinary magnitude, rescued, or an evaluation that raised no "
+              "exception flag): the outputs are the kernel's values within its stated bound"),
     ("SINGULAR", 1, "the inputs lie on the kernel's singular set (a divisor is exactly "
                     "zero, or a branch condition has no value): every output is NaN"),
     ("NONFINITE_INPUT", 2, "an input component is NaN or infinite: the outputs that depend "
@@ -60,9 +61,11 @@ STATUS = (
                          "(double; float: [2^-30, 2^31)) that neither a wider type (the "
                          "double functions re-run the sample in long double where that is "
                          "wider, RIGIDSYM_C_WIDE) nor power-of-two rescaling (of the "
-                         "arguments the kernel is homogeneous in) could take: intermediates "
-                         "may have underflowed or overflowed, so the outputs are not "
-                         "guaranteed to the stated bound"),
+                         "arguments the kernel is homogeneous in) could take, and whose "
+                         "evaluation raised underflow, overflow, invalid or divide-by-zero "
+                         "(or ran where those flags cannot be read, RIGIDSYM_C_FLAGS_*): "
+                         "intermediates may have underflowed or overflowed, so the outputs "
+                         "are not guaranteed to the stated bound"),
 )
 _C_KEYWORDS = set("""auto break case char const continue default do double else enum extern
 float for goto if inline int long register restrict return short signed sizeof static struct
