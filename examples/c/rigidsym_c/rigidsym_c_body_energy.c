@@ -262,13 +262,16 @@ RIGIDSYM_C_API int rigidsym_c_body_energy(
     }
 #else
     {   /* the range test of every input component, one at a time (an argument's
-         * components by a loop: compact code where there are no 16-byte vectors) */
+         * components by a loop, unrolled where the compiler takes RIGIDSYM_C_UNROLL) */
         int j_;
         RIGIDSYM_C_ODDNZ_D(odd, m);
+        RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 3; ++j_)
             RIGIDSYM_C_ODDNZ_D(odd, v[j_]);
+        RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 9; ++j_)
             RIGIDSYM_C_ODDNZ_D(odd, inertia[j_]);
+        RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 3; ++j_)
             RIGIDSYM_C_ODDNZ_D(odd, omega[j_]);
         (void)j_;
@@ -536,13 +539,16 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_f32(
     }
 #else
     {   /* the range test of every input component, one at a time (an argument's
-         * components by a loop: compact code where there are no 16-byte vectors) */
+         * components by a loop, unrolled where the compiler takes RIGIDSYM_C_UNROLL) */
         int j_;
         RIGIDSYM_C_ODDNZ_F(odd, m);
+        RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 3; ++j_)
             RIGIDSYM_C_ODDNZ_F(odd, v[j_]);
+        RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 9; ++j_)
             RIGIDSYM_C_ODDNZ_F(odd, inertia[j_]);
+        RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 3; ++j_)
             RIGIDSYM_C_ODDNZ_F(odd, omega[j_]);
         (void)j_;
@@ -1010,13 +1016,16 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians(
     }
 #else
     {   /* the range test of every input component, one at a time (an argument's
-         * components by a loop: compact code where there are no 16-byte vectors) */
+         * components by a loop, unrolled where the compiler takes RIGIDSYM_C_UNROLL) */
         int j_;
         RIGIDSYM_C_ODDNZ_D(odd, m);
+        RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 3; ++j_)
             RIGIDSYM_C_ODDNZ_D(odd, v[j_]);
+        RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 9; ++j_)
             RIGIDSYM_C_ODDNZ_D(odd, inertia[j_]);
+        RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 3; ++j_)
             RIGIDSYM_C_ODDNZ_D(odd, omega[j_]);
         (void)j_;
@@ -1435,13 +1444,16 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians_f32(
     }
 #else
     {   /* the range test of every input component, one at a time (an argument's
-         * components by a loop: compact code where there are no 16-byte vectors) */
+         * components by a loop, unrolled where the compiler takes RIGIDSYM_C_UNROLL) */
         int j_;
         RIGIDSYM_C_ODDNZ_F(odd, m);
+        RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 3; ++j_)
             RIGIDSYM_C_ODDNZ_F(odd, v[j_]);
+        RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 9; ++j_)
             RIGIDSYM_C_ODDNZ_F(odd, inertia[j_]);
+        RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 3; ++j_)
             RIGIDSYM_C_ODDNZ_F(odd, omega[j_]);
         (void)j_;

@@ -329,15 +329,19 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench(
     }
 #else
     {   /* the range test of every input component, one at a time (an argument's
-         * components by a loop: compact code where there are no 16-byte vectors) */
+         * components by a loop, unrolled where the compiler takes RIGIDSYM_C_UNROLL) */
         int j_;
+        RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 9; ++j_)
             RIGIDSYM_C_ODDNZ_D(odd, I_C[j_]);
         RIGIDSYM_C_ODDNZ_D(odd, m);
+        RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 3; ++j_)
             RIGIDSYM_C_ODDNZ_D(odd, omega[j_]);
+        RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 3; ++j_)
             RIGIDSYM_C_ODDNZ_D(odd, omega_dot[j_]);
+        RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 3; ++j_)
             RIGIDSYM_C_ODDNZ_D(odd, c_ddot[j_]);
         (void)j_;
@@ -675,15 +679,19 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_f32(
     }
 #else
     {   /* the range test of every input component, one at a time (an argument's
-         * components by a loop: compact code where there are no 16-byte vectors) */
+         * components by a loop, unrolled where the compiler takes RIGIDSYM_C_UNROLL) */
         int j_;
+        RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 9; ++j_)
             RIGIDSYM_C_ODDNZ_F(odd, I_C[j_]);
         RIGIDSYM_C_ODDNZ_F(odd, m);
+        RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 3; ++j_)
             RIGIDSYM_C_ODDNZ_F(odd, omega[j_]);
+        RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 3; ++j_)
             RIGIDSYM_C_ODDNZ_F(odd, omega_dot[j_]);
+        RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 3; ++j_)
             RIGIDSYM_C_ODDNZ_F(odd, c_ddot[j_]);
         (void)j_;
@@ -1646,15 +1654,19 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians(
     }
 #else
     {   /* the range test of every input component, one at a time (an argument's
-         * components by a loop: compact code where there are no 16-byte vectors) */
+         * components by a loop, unrolled where the compiler takes RIGIDSYM_C_UNROLL) */
         int j_;
+        RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 9; ++j_)
             RIGIDSYM_C_ODDNZ_D(odd, I_C[j_]);
         RIGIDSYM_C_ODDNZ_D(odd, m);
+        RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 3; ++j_)
             RIGIDSYM_C_ODDNZ_D(odd, omega[j_]);
+        RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 3; ++j_)
             RIGIDSYM_C_ODDNZ_D(odd, omega_dot[j_]);
+        RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 3; ++j_)
             RIGIDSYM_C_ODDNZ_D(odd, c_ddot[j_]);
         (void)j_;
@@ -2544,15 +2556,19 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians_f32(
     }
 #else
     {   /* the range test of every input component, one at a time (an argument's
-         * components by a loop: compact code where there are no 16-byte vectors) */
+         * components by a loop, unrolled where the compiler takes RIGIDSYM_C_UNROLL) */
         int j_;
+        RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 9; ++j_)
             RIGIDSYM_C_ODDNZ_F(odd, I_C[j_]);
         RIGIDSYM_C_ODDNZ_F(odd, m);
+        RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 3; ++j_)
             RIGIDSYM_C_ODDNZ_F(odd, omega[j_]);
+        RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 3; ++j_)
             RIGIDSYM_C_ODDNZ_F(odd, omega_dot[j_]);
+        RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 3; ++j_)
             RIGIDSYM_C_ODDNZ_F(odd, c_ddot[j_]);
         (void)j_;

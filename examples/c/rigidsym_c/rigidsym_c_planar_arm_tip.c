@@ -221,7 +221,7 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip(
     }
 #else
     {   /* the range test of every input component, one at a time (an argument's
-         * components by a loop: compact code where there are no 16-byte vectors) */
+         * components by a loop, unrolled where the compiler takes RIGIDSYM_C_UNROLL) */
         int j_;
         RIGIDSYM_C_ODDNZ_D(odd, q1);
         RIGIDSYM_C_ODDNZ_D(odd, q2);
@@ -456,7 +456,7 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_f32(
     }
 #else
     {   /* the range test of every input component, one at a time (an argument's
-         * components by a loop: compact code where there are no 16-byte vectors) */
+         * components by a loop, unrolled where the compiler takes RIGIDSYM_C_UNROLL) */
         int j_;
         RIGIDSYM_C_ODDNZ_F(odd, q1);
         RIGIDSYM_C_ODDNZ_F(odd, q2);
@@ -809,7 +809,7 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians(
     }
 #else
     {   /* the range test of every input component, one at a time (an argument's
-         * components by a loop: compact code where there are no 16-byte vectors) */
+         * components by a loop, unrolled where the compiler takes RIGIDSYM_C_UNROLL) */
         int j_;
         RIGIDSYM_C_ODDNZ_D(odd, q1);
         RIGIDSYM_C_ODDNZ_D(odd, q2);
@@ -1120,7 +1120,7 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians_f32(
     }
 #else
     {   /* the range test of every input component, one at a time (an argument's
-         * components by a loop: compact code where there are no 16-byte vectors) */
+         * components by a loop, unrolled where the compiler takes RIGIDSYM_C_UNROLL) */
         int j_;
         RIGIDSYM_C_ODDNZ_F(odd, q1);
         RIGIDSYM_C_ODDNZ_F(odd, q2);

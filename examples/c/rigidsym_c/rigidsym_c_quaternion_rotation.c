@@ -186,8 +186,9 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation(
     }
 #else
     {   /* the range test of every input component, one at a time (an argument's
-         * components by a loop: compact code where there are no 16-byte vectors) */
+         * components by a loop, unrolled where the compiler takes RIGIDSYM_C_UNROLL) */
         int j_;
+        RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 4; ++j_)
             RIGIDSYM_C_ODDNZ_D(odd, q[j_]);
         (void)j_;
@@ -391,8 +392,9 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_f32(
     }
 #else
     {   /* the range test of every input component, one at a time (an argument's
-         * components by a loop: compact code where there are no 16-byte vectors) */
+         * components by a loop, unrolled where the compiler takes RIGIDSYM_C_UNROLL) */
         int j_;
+        RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 4; ++j_)
             RIGIDSYM_C_ODDNZ_F(odd, q[j_]);
         (void)j_;
@@ -814,8 +816,9 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_with_jacobians(
     }
 #else
     {   /* the range test of every input component, one at a time (an argument's
-         * components by a loop: compact code where there are no 16-byte vectors) */
+         * components by a loop, unrolled where the compiler takes RIGIDSYM_C_UNROLL) */
         int j_;
+        RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 4; ++j_)
             RIGIDSYM_C_ODDNZ_D(odd, q[j_]);
         (void)j_;
@@ -1180,8 +1183,9 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_with_jacobians_f32(
     }
 #else
     {   /* the range test of every input component, one at a time (an argument's
-         * components by a loop: compact code where there are no 16-byte vectors) */
+         * components by a loop, unrolled where the compiler takes RIGIDSYM_C_UNROLL) */
         int j_;
+        RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 4; ++j_)
             RIGIDSYM_C_ODDNZ_F(odd, q[j_]);
         (void)j_;

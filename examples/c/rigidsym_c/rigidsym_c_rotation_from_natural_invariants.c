@@ -211,8 +211,9 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants(
     }
 #else
     {   /* the range test of every input component, one at a time (an argument's
-         * components by a loop: compact code where there are no 16-byte vectors) */
+         * components by a loop, unrolled where the compiler takes RIGIDSYM_C_UNROLL) */
         int j_;
+        RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 3; ++j_)
             RIGIDSYM_C_ODDNZ_D(odd, e[j_]);
         RIGIDSYM_C_ODDNZ_D(odd, phi);
@@ -441,8 +442,9 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_f32(
     }
 #else
     {   /* the range test of every input component, one at a time (an argument's
-         * components by a loop: compact code where there are no 16-byte vectors) */
+         * components by a loop, unrolled where the compiler takes RIGIDSYM_C_UNROLL) */
         int j_;
+        RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 3; ++j_)
             RIGIDSYM_C_ODDNZ_F(odd, e[j_]);
         RIGIDSYM_C_ODDNZ_F(odd, phi);
@@ -915,8 +917,9 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_with_jacobians(
     }
 #else
     {   /* the range test of every input component, one at a time (an argument's
-         * components by a loop: compact code where there are no 16-byte vectors) */
+         * components by a loop, unrolled where the compiler takes RIGIDSYM_C_UNROLL) */
         int j_;
+        RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 3; ++j_)
             RIGIDSYM_C_ODDNZ_D(odd, e[j_]);
         RIGIDSYM_C_ODDNZ_D(odd, phi);
@@ -1323,8 +1326,9 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_with_jacobians_f3
     }
 #else
     {   /* the range test of every input component, one at a time (an argument's
-         * components by a loop: compact code where there are no 16-byte vectors) */
+         * components by a loop, unrolled where the compiler takes RIGIDSYM_C_UNROLL) */
         int j_;
+        RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 3; ++j_)
             RIGIDSYM_C_ODDNZ_F(odd, e[j_]);
         RIGIDSYM_C_ODDNZ_F(odd, phi);

@@ -261,12 +261,15 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer(
     }
 #else
     {   /* the range test of every input component, one at a time (an argument's
-         * components by a loop: compact code where there are no 16-byte vectors) */
+         * components by a loop, unrolled where the compiler takes RIGIDSYM_C_UNROLL) */
         int j_;
+        RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 6; ++j_)
             RIGIDSYM_C_ODDNZ_D(odd, t_A[j_]);
+        RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 3; ++j_)
             RIGIDSYM_C_ODDNZ_D(odd, a[j_]);
+        RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 3; ++j_)
             RIGIDSYM_C_ODDNZ_D(odd, p[j_]);
         (void)j_;
@@ -544,12 +547,15 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_f32(
     }
 #else
     {   /* the range test of every input component, one at a time (an argument's
-         * components by a loop: compact code where there are no 16-byte vectors) */
+         * components by a loop, unrolled where the compiler takes RIGIDSYM_C_UNROLL) */
         int j_;
+        RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 6; ++j_)
             RIGIDSYM_C_ODDNZ_F(odd, t_A[j_]);
+        RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 3; ++j_)
             RIGIDSYM_C_ODDNZ_F(odd, a[j_]);
+        RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 3; ++j_)
             RIGIDSYM_C_ODDNZ_F(odd, p[j_]);
         (void)j_;
@@ -1214,12 +1220,15 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_with_jacobians(
     }
 #else
     {   /* the range test of every input component, one at a time (an argument's
-         * components by a loop: compact code where there are no 16-byte vectors) */
+         * components by a loop, unrolled where the compiler takes RIGIDSYM_C_UNROLL) */
         int j_;
+        RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 6; ++j_)
             RIGIDSYM_C_ODDNZ_D(odd, t_A[j_]);
+        RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 3; ++j_)
             RIGIDSYM_C_ODDNZ_D(odd, a[j_]);
+        RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 3; ++j_)
             RIGIDSYM_C_ODDNZ_D(odd, p[j_]);
         (void)j_;
@@ -1827,12 +1836,15 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_with_jacobians_f32(
     }
 #else
     {   /* the range test of every input component, one at a time (an argument's
-         * components by a loop: compact code where there are no 16-byte vectors) */
+         * components by a loop, unrolled where the compiler takes RIGIDSYM_C_UNROLL) */
         int j_;
+        RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 6; ++j_)
             RIGIDSYM_C_ODDNZ_F(odd, t_A[j_]);
+        RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 3; ++j_)
             RIGIDSYM_C_ODDNZ_F(odd, a[j_]);
+        RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 3; ++j_)
             RIGIDSYM_C_ODDNZ_F(odd, p[j_]);
         (void)j_;
