@@ -204,3 +204,30 @@ def test_two_cross_products_without_parentheses_are_refused(latex, verdict):
             rigidsym.check_latex(latex)
     else:
         assert rigidsym.check_latex(latex).verdict == verdict
+
+
+@pytest.mark.parametrize("latex, verdict", [
+    (r"\left[\mathbf{a}\right]_\times \mathbf{b} = \mathbf{a}\times\mathbf{b}", "verified"),
+    (r"\left[\mathbf{a}\right]_\times \mathbf{b} = \mathbf{b}\times\mathbf{a}", "does-not-hold"),
+    (r"\bigl[\mathbf{a}\bigr]_\times^T = -\left[\mathbf{a}\right]_\times", "verified"),
+    (r"\left[\mathbf{a} + \mathbf{c}\right]_\times \mathbf{b} = \mathbf{a}\times\mathbf{b} - "
+     r"\mathbf{c}\times\mathbf{b}", "does-not-hold"),                  # the sign of c x b
+])
+def test_a_sized_bracket_before_times_is_the_cross_product_matrix(latex, verdict):
+    r"""An outside trial of 16 books (wave 6): ``\left[\mathbf{a}\right]_\times`` was a syntax
+    error, while ``\left(`` already read as ``(``; TeX only draws the brackets taller, so it
+    is ``[\mathbf{a}]_\times`` (a x b = -b x a; the matrix is skew; it is linear in a)."""
+    assert rigidsym.check_latex(latex).verdict == verdict
+    plain = latex.replace(r"\left[", "[").replace(r"\right]", "]")
+    plain = plain.replace(r"\bigl[", "[").replace(r"\bigr]", "]")
+    assert rigidsym.check_latex(plain).verdict == verdict
+
+
+@pytest.mark.parametrize("latex, words", [
+    (r"\left[a\right]_\times \mathbf{b} = \mathbf{a}\times\mathbf{b}", "CPM of a scalar"),
+    (r"\left\{\mathbf{a}\right\}_\times \mathbf{b} = \mathbf{a}\times\mathbf{b}",
+     "square brackets"),
+])
+def test_a_sized_bracket_before_times_of_no_3_vector_is_refused(latex, words):
+    with pytest.raises(LatexError, match=words):
+        rigidsym.check_latex(latex)
