@@ -231,3 +231,27 @@ def test_a_sized_bracket_before_times_is_the_cross_product_matrix(latex, verdict
 def test_a_sized_bracket_before_times_of_no_3_vector_is_refused(latex, words):
     with pytest.raises(LatexError, match=words):
         rigidsym.check_latex(latex)
+
+
+@pytest.mark.parametrize("latex, let, verdict", [
+    (r"R^{-T} = R", "R: rotation", "verified"),                   # R^{-1} = R^T
+    (r"R^{-\top} = R^T", "R: rotation", "does-not-hold"),
+    (r"A^{-T} = (A^{-1})^T", "A: matrix", "verified"),
+    (r"A^{-T} = A^{-1}", "A: matrix", "does-not-hold"),           # no symmetric matrix
+    (r"(AB)^{-T} = A^{-T}B^{-T}", "A: matrix; B: matrix", "verified"),
+    (r"(AB)^{-T} = B^{-T}A^{-T}", "A: matrix; B: matrix", "does-not-hold"),
+])
+def test_the_inverse_transpose_of_a_square_matrix(latex, let, verdict):
+    r"""An outside trial of 16 books (wave 6): ``A^{-T}`` was refused unless A was a spatial
+    transform (Featherstone's dual); of any square matrix it is (A^{-1})^T = (A^T)^{-1}, so
+    (AB)^{-T} = (B^{-1}A^{-1})^T = A^{-T}B^{-T}, and a rotation's is the rotation."""
+    assert rigidsym.check_latex(latex, let=[let]).verdict == verdict
+
+
+@pytest.mark.parametrize("latex, let", [
+    (r"\mathbf{a}^{-T} = \mathbf{a}", r"\mathbf{a}: vector"),
+    (r"a^{-T} = a", "a: scalar"),
+])
+def test_the_inverse_transpose_of_no_square_matrix_is_refused(latex, let):
+    with pytest.raises(LatexError, match="expected a square matrix"):
+        rigidsym.check_latex(latex, let=[let])

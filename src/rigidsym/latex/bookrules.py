@@ -10,7 +10,9 @@ LaTeX                                                       reading
                                                             refused (no exterior product)
 ``\\xi^\\curlywedge`` (Barfoot)                               ``ad`` of a 6-vector
 ``{}^B X_A^{*}``, ``{}^B X_A^{-T}`` (Featherstone)            the inverse transpose of a
-                                                            ``spatial transform`` (only)
+                                                            ``spatial transform`` (``X^*``
+                                                            only); ``A^{-T}`` of another
+                                                            square matrix: ``(A^{-1})^T``
 ``v \\times m``, ``v \\times^* f``, ``v\\times`` (RBDA 2.9)    crm, crf of a 6-vector; of a
                                                             3-vector before a matrix: CPM
 ``{}^A_B R``, ``{}^A\\mathbf{R}_B`` (Craig, Corke)             frame indices, part of the name
@@ -109,6 +111,8 @@ class BookRules:
                 raise LatexError(f"^\\curlywedge of {_words(x)}: expected a 6-vector",
                                  "shapes")
             return motions.ad(x)
+        if sup == "-T" and not self._spatial(x):
+            return self._inverse_transpose(x)
         if sup in ("*", "-T"):
             spelt = "^{*}" if sup == "*" else "^{-T}"
             if not self._spatial(x):
@@ -119,6 +123,17 @@ class BookRules:
                        f"(Featherstone (2.25))")
             return PluckerDual(x)
         return None
+
+    def _inverse_transpose(self, x):
+        """``X^{-T}`` of a square matrix other than a spatial transform: ``(X^{-1})^T``, the
+        inverse of the transpose (the same matrix: TeX's and every book's reading); of a
+        scalar or a non-square matrix refused, never a power of a scalar."""
+        s = _shape(x)
+        if s is None or s[0] != s[1] or s == (1, 1):
+            raise LatexError(f"^{{-T}} of {_words(x)}: expected a square matrix (its inverse "
+                             f"transpose, (X^{{-1}})^T)", "shapes")
+        self._note("X^{-T}: the inverse transpose (X^{-1})^T")
+        return (x.inv() if isinstance(x, sp.MatrixBase) else x.inverse()).T
 
     def _spatial(self, x) -> bool:
         if not isinstance(x, sp.MatrixSymbol) or _shape(x) != (6, 6):
