@@ -256,6 +256,52 @@ def multiple_angles(t):
     return t
 
 
+_PRODUCTS = {"dot": "\\cdot", "cross": "\\times"}
+
+
+def mixed_products(t):
+    """A ``\\cdot`` and a ``\\times`` in one term with no parentheses between them
+    (Goldstein's and Kane's ``a \\cdot b \\times c``, the triple product): the grammar
+    groups them from the left, as ``(a \\cdot b) \\times c``, which TeX does not say. Such
+    a chain of two becomes ``dot_cross`` (``cross_dot`` for ``a \\times b \\cdot c``) with
+    its three operands, which the transformer reads by the shapes
+    (:meth:`rigidsym.latex.bookrules.BookRules.dot_cross`); a longer chain mixing them is
+    refused (its groupings are not enumerated). Then the marks of the parentheses
+    (``paren``) are dropped: the tree is the grammar's as before. In place; returns ``t``."""
+    from rigidsym.latex.shapes import LatexError
+
+    seen: set[int] = set()
+    for sub in list(t.iter_subtrees_topdown()):
+        if sub.data not in _PRODUCTS or id(sub) in seen:
+            continue
+        spine, node = [], sub
+        while isinstance(node, lark.Tree) and node.data in _PRODUCTS:
+            seen.add(id(node))
+            spine.append(node)
+            node = node.children[0]
+        ops = [n.data for n in reversed(spine)]
+        if len(set(ops)) < 2:
+            continue
+        if len(ops) > 2:
+            raise LatexError(
+                f"a chain of {len(ops)} products mixing \\cdot and \\times with no "
+                f"parentheses ({' '.join(_PRODUCTS[o] for o in ops)}): its groupings are not "
+                f"enumerated, and a verdict on one would be a guess; write parentheses, "
+                f"e.g. a \\cdot (b \\times c)", "shapes")
+        inner = spine[1]
+        sub.data = f"{inner.data}_{sub.data}"  # dot_cross: a \\cdot b \\times c
+        sub.children = [*inner.children, sub.children[1]]
+    for sub in list(t.iter_subtrees()):
+        sub.children = [_unparen(c) for c in sub.children]
+    return _unparen(t)
+
+
+def _unparen(c):
+    while isinstance(c, lark.Tree) and c.data == "paren":
+        c = c.children[0]
+    return c
+
+
 _GLYPH_TREES = {"glyph", "accented", "accented_bare"}
 
 
@@ -339,7 +385,7 @@ def tree(latex: str):
                          f"or a \\times (b \\times c)", "cross chain")
     _AlignedLayout.text = text
     try:
-        return multiple_angles(subscripts_first(parser().parse(text)))
+        return multiple_angles(subscripts_first(mixed_products(parser().parse(text))))
     except _Glued as exc:
         token, construct = quoted(text, exc.pos)
         raise LatexError(f"unknown macro {token} at position {exc.pos}:\n"
