@@ -437,3 +437,40 @@ def test_a_wide_accent_is_its_narrow_accent(hat, wide):
             rigidsym.check_latex(rf"2{wide}{{\omega}} = {wide}{{\omega}} + {hat}{{\omega}}")
         assert rigidsym.check_latex(rf"{wide}{{\omega}}^T = -{wide}{{\omega}}",
                                     notation="murray-li-sastry").verdict == "verified"
+
+
+_RZ_MODEL = (r"R_z(\theta) = \begin{bmatrix}\cos\theta & -\sin\theta & 0\\ \sin\theta & "
+             r"\cos\theta & 0\\ 0 & 0 & 1\end{bmatrix}")
+
+
+def _subscript_first(latex: str) -> str:
+    """``X^a_b`` written ``X_b^a`` (TeX's same symbol)."""
+    import re
+
+    return re.sub(r"(\^(?:\{[^{}]*\}|[A-Za-z0-9]))(_(?:\{[^{}]*\}|[A-Za-z0-9]))", r"\2\1", latex)
+
+
+@pytest.mark.parametrize("latex, let, notation, verdict", [
+    (r"R^T_{z,\theta} R_{z,\theta} = \mathbf{1}", [], "spong", "verified"),
+    (r"R^T_{z,\theta} = R_{z,-\theta}", [], "spong", "verified"),
+    (r"R^T_{z,\theta} = R_{z,\theta}", [], "spong", "does-not-hold"),  # no symmetric R
+    (r"R^T_z(\alpha) = R_z(-\alpha)", [_RZ_MODEL], None, "verified"),
+    (r"x^2_1 = x_1 x_2", [], None, "does-not-hold"),
+])
+def test_a_superscript_before_a_subscript_reads_as_after_it(latex, let, notation, verdict):
+    r"""An outside trial of 16 books (wave 6): Spong's ``R^T_{k,\theta}`` was a syntax error;
+    in TeX ``X^a_b`` and ``X_b^a`` are one symbol, so the order never changes the verdict
+    (R_{z,θ} is a rotation: R^T R = 1 and R_{z,θ}^T = R_{z,-θ}, not R_{z,θ})."""
+    r = rigidsym.check_latex(latex, let=let, notation=notation)
+    first = rigidsym.check_latex(_subscript_first(latex), let=let, notation=notation)
+    assert _subscript_first(latex) != latex
+    assert r.verdict == first.verdict == verdict, r.detail
+
+
+@pytest.mark.parametrize("latex", [r"(a + b)^2_1 = a", r"x_1^2_3 = a"])
+def test_a_subscript_after_a_superscript_of_no_bare_symbol_is_refused(latex):
+    """TeX puts it on a group (or calls it a double subscript): refused, never guessed."""
+    from rigidsym.latex.shapes import LatexError
+
+    with pytest.raises(LatexError, match="write the subscript first"):
+        rigidsym.check_latex(latex)

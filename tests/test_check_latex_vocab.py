@@ -204,3 +204,113 @@ def test_two_cross_products_without_parentheses_are_refused(latex, verdict):
             rigidsym.check_latex(latex)
     else:
         assert rigidsym.check_latex(latex).verdict == verdict
+
+
+@pytest.mark.parametrize("latex, verdict", [
+    (r"\left[\mathbf{a}\right]_\times \mathbf{b} = \mathbf{a}\times\mathbf{b}", "verified"),
+    (r"\left[\mathbf{a}\right]_\times \mathbf{b} = \mathbf{b}\times\mathbf{a}", "does-not-hold"),
+    (r"\bigl[\mathbf{a}\bigr]_\times^T = -\left[\mathbf{a}\right]_\times", "verified"),
+    (r"\left[\mathbf{a} + \mathbf{c}\right]_\times \mathbf{b} = \mathbf{a}\times\mathbf{b} - "
+     r"\mathbf{c}\times\mathbf{b}", "does-not-hold"),                  # the sign of c x b
+])
+def test_a_sized_bracket_before_times_is_the_cross_product_matrix(latex, verdict):
+    r"""An outside trial of 16 books (wave 6): ``\left[\mathbf{a}\right]_\times`` was a syntax
+    error, while ``\left(`` already read as ``(``; TeX only draws the brackets taller, so it
+    is ``[\mathbf{a}]_\times`` (a x b = -b x a; the matrix is skew; it is linear in a)."""
+    assert rigidsym.check_latex(latex).verdict == verdict
+    plain = latex.replace(r"\left[", "[").replace(r"\right]", "]")
+    plain = plain.replace(r"\bigl[", "[").replace(r"\bigr]", "]")
+    assert rigidsym.check_latex(plain).verdict == verdict
+
+
+@pytest.mark.parametrize("latex, words", [
+    (r"\left[a\right]_\times \mathbf{b} = \mathbf{a}\times\mathbf{b}", "CPM of a scalar"),
+    (r"\left\{\mathbf{a}\right\}_\times \mathbf{b} = \mathbf{a}\times\mathbf{b}",
+     "square brackets"),
+])
+def test_a_sized_bracket_before_times_of_no_3_vector_is_refused(latex, words):
+    with pytest.raises(LatexError, match=words):
+        rigidsym.check_latex(latex)
+
+
+@pytest.mark.parametrize("latex, let, verdict", [
+    (r"R^{-T} = R", "R: rotation", "verified"),                   # R^{-1} = R^T
+    (r"R^{-\top} = R^T", "R: rotation", "does-not-hold"),
+    (r"A^{-T} = (A^{-1})^T", "A: matrix", "verified"),
+    (r"A^{-T} = A^{-1}", "A: matrix", "does-not-hold"),           # no symmetric matrix
+    (r"(AB)^{-T} = A^{-T}B^{-T}", "A: matrix; B: matrix", "verified"),
+    (r"(AB)^{-T} = B^{-T}A^{-T}", "A: matrix; B: matrix", "does-not-hold"),
+])
+def test_the_inverse_transpose_of_a_square_matrix(latex, let, verdict):
+    r"""An outside trial of 16 books (wave 6): ``A^{-T}`` was refused unless A was a spatial
+    transform (Featherstone's dual); of any square matrix it is (A^{-1})^T = (A^T)^{-1}, so
+    (AB)^{-T} = (B^{-1}A^{-1})^T = A^{-T}B^{-T}, and a rotation's is the rotation."""
+    assert rigidsym.check_latex(latex, let=[let]).verdict == verdict
+
+
+@pytest.mark.parametrize("latex, let", [
+    (r"\mathbf{a}^{-T} = \mathbf{a}", r"\mathbf{a}: vector"),
+    (r"a^{-T} = a", "a: scalar"),
+])
+def test_the_inverse_transpose_of_no_square_matrix_is_refused(latex, let):
+    with pytest.raises(LatexError, match="expected a square matrix"):
+        rigidsym.check_latex(latex, let=[let])
+
+
+_TRIPLE = r"\mathbf{a}\cdot(\mathbf{b}\times\mathbf{c})"
+
+
+@pytest.mark.parametrize("latex, let, verdict", [
+    (r"\mathbf{a}\cdot\mathbf{b}\times\mathbf{c} = " + _TRIPLE, [], "verified"),
+    (r"\mathbf{a}\cdot\mathbf{b}\times\mathbf{c} = \mathbf{b}\cdot\mathbf{a}\times\mathbf{c}",
+     [], "does-not-hold"),                                     # a swap changes the sign
+    (r"\mathbf{a}\cdot\mathbf{b}\times\mathbf{c} = -\mathbf{b}\cdot\mathbf{a}\times\mathbf{c}",
+     [], "verified"),
+    (r"\mathbf{a}\cdot\mathbf{a}\times\mathbf{c} = 0", [], "verified"),
+    (r"\mathbf{a}\times\mathbf{b}\cdot\mathbf{c} = " + _TRIPLE, [], "verified"),  # as before
+    (r"R\mathbf{a}\cdot R\mathbf{b}\times R\mathbf{c} = \mathbf{a}\cdot\mathbf{b}\times"
+     r"\mathbf{c}", ["R: rotation"], "verified"),               # det R = 1
+    pytest.param(r"Q\mathbf{a}\cdot Q\mathbf{b}\times Q\mathbf{c} = \mathbf{a}\cdot\mathbf{b}"
+                 r"\times\mathbf{c}", ["Q: matrix"], "does-not-hold",   # det Q times it
+                 marks=pytest.mark.slow),
+    # a scalar's \cdot: both groupings fit and are one value, (s b) x c = s (b x c)
+    (r"s\cdot\mathbf{b}\times\mathbf{c} = \mathbf{b}\times(s\mathbf{c})", ["s: scalar"],
+     "verified"),
+    (r"\mathbf{a}\times\mathbf{b}\cdot s = s\,\mathbf{b}\times\mathbf{a}", ["s: scalar"],
+     "does-not-hold"),
+])
+def test_a_dot_and_a_cross_without_parentheses_read_by_the_shapes(latex, let, verdict):
+    r"""An outside trial of 16 books (wave 6): Goldstein's and Kane's triple product
+    ``\mathbf{a}\cdot\mathbf{b}\times\mathbf{c}`` was read (a · b) × c and refused; of
+    3-vectors only a · (b × c) is typed, so it is the reading. The triple product is cyclic
+    and changes sign under a swap; Ra · (Rb × Rc) = det(R) a · (b × c)."""
+    assert rigidsym.check_latex(latex, let=let).verdict == verdict
+
+
+@pytest.mark.slow
+def test_a_dot_and_a_cross_read_alike_in_every_cyclic_order():
+    """a · b × c = b · c × a = c · a × b = a × b · c = ... (the six spellings of one
+    determinant), and each with a swapped pair is does-not-hold."""
+    v = [r"\mathbf{a}", r"\mathbf{b}", r"\mathbf{c}"]
+    for k in range(3):
+        x, y, z = v[k:] + v[:k]
+        for form in (rf"{x}\cdot{y}\times{z}", rf"{x}\times{y}\cdot{z}"):
+            assert rigidsym.check_latex(f"{form} = {_TRIPLE}").verdict == "verified", form
+            swapped = form.replace(x, "#").replace(y, x).replace("#", y)
+            assert rigidsym.check_latex(f"{swapped} = {_TRIPLE}").verdict == "does-not-hold"
+
+
+@pytest.mark.parametrize("latex, let, words", [
+    (r"R\cdot\mathbf{b}\times\mathbf{c} = \mathbf{0}", [r"R: rotation"],
+     "neither grouping fits"),
+    (r"\mathbf{a}\cdot\mathbf{b}\times\mathbf{c}\cdot\mathbf{d} = 0", [], "write parentheses"),
+    (r"(\mathbf{a}\cdot\mathbf{b})\times\mathbf{c} = \mathbf{0}", [],        # as written
+     r"\\times between a scalar"),
+    (r"\left(\mathbf{a}\cdot\mathbf{b}\right)\times\mathbf{c} = \mathbf{0}", [],
+     r"\\times between a scalar"),
+])
+def test_a_dot_and_a_cross_no_grouping_types_or_parenthesised_are_refused(latex, let, words):
+    """A matrix \\cdot a vector is no product the reader reads, in either grouping; a
+    longer chain is not enumerated; parentheses written are kept, never regrouped."""
+    with pytest.raises(LatexError, match=words):
+        rigidsym.check_latex(latex, let=let)

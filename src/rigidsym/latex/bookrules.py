@@ -10,7 +10,9 @@ LaTeX                                                       reading
                                                             refused (no exterior product)
 ``\\xi^\\curlywedge`` (Barfoot)                               ``ad`` of a 6-vector
 ``{}^B X_A^{*}``, ``{}^B X_A^{-T}`` (Featherstone)            the inverse transpose of a
-                                                            ``spatial transform`` (only)
+                                                            ``spatial transform`` (``X^*``
+                                                            only); ``A^{-T}`` of another
+                                                            square matrix: ``(A^{-1})^T``
 ``v \\times m``, ``v \\times^* f``, ``v\\times`` (RBDA 2.9)    crm, crf of a 6-vector; of a
                                                             3-vector before a matrix: CPM
 ``{}^A_B R``, ``{}^A\\mathbf{R}_B`` (Craig, Corke)             frame indices, part of the name
@@ -109,6 +111,8 @@ class BookRules:
                 raise LatexError(f"^\\curlywedge of {_words(x)}: expected a 6-vector",
                                  "shapes")
             return motions.ad(x)
+        if sup == "-T" and not self._spatial(x):
+            return self._inverse_transpose(x)
         if sup in ("*", "-T"):
             spelt = "^{*}" if sup == "*" else "^{-T}"
             if not self._spatial(x):
@@ -119,6 +123,17 @@ class BookRules:
                        f"(Featherstone (2.25))")
             return PluckerDual(x)
         return None
+
+    def _inverse_transpose(self, x):
+        """``X^{-T}`` of a square matrix other than a spatial transform: ``(X^{-1})^T``, the
+        inverse of the transpose (the same matrix: TeX's and every book's reading); of a
+        scalar or a non-square matrix refused, never a power of a scalar."""
+        s = _shape(x)
+        if s is None or s[0] != s[1] or s == (1, 1):
+            raise LatexError(f"^{{-T}} of {_words(x)}: expected a square matrix (its inverse "
+                             f"transpose, (X^{{-1}})^T)", "shapes")
+        self._note("X^{-T}: the inverse transpose (X^{-1})^T")
+        return (x.inv() if isinstance(x, sp.MatrixBase) else x.inverse()).T
 
     def _spatial(self, x) -> bool:
         if not isinstance(x, sp.MatrixSymbol) or _shape(x) != (6, 6):
@@ -139,6 +154,71 @@ class BookRules:
         raise LatexError(f"\\times between {_words(a)} and {_words(b)}: expected two "
                          f"3-vectors (the cross product), two 6-vectors (Featherstone's "
                          f"spatial cross product) or a vector before a matrix", "shapes")
+
+    # ---- a \\cdot and a \\times with no parentheses (rigidsym.latex.lexing.mixed_products)
+    def dot_cross(self, items):
+        """``x \\cdot y \\times z`` (Goldstein's, Kane's triple product), by the shapes."""
+        return self._mixed(items, "dot")
+
+    def cross_dot(self, items):
+        """``x \\times y \\cdot z``, by the shapes."""
+        return self._mixed(items, "cross")
+
+    def _mixed(self, items, first: str):
+        """Both groupings of ``x op y op' z`` are read; those whose shapes fit are kept.
+
+        One: it is the reading (``a \\cdot (b \\times c)`` of 3-vectors: ``(a \\cdot b)``
+        is a scalar, and a scalar has no cross product). Two: only where the ``\\cdot`` has a
+        scalar operand (``s \\cdot b \\times c``, ``a \\times b \\cdot s``), the ``\\cdot``
+        then a scalar multiple, and every ``\\times`` the reader reads (the cross product,
+        ``CPM(a) M``, Featherstone's ``crm(v) m``) is linear in each factor, so
+        ``(s b) \\times c = s (b \\times c)``: one value, either reading. Two otherwise
+        (no such case with the shapes of the rules today) and none are refused, naming
+        both groupings."""
+        from rigidsym.printing import notation
+
+        x, y, z = (self._val(i) for i in items)
+        f, g = (self.dot, self.cross) if first == "dot" else (self.cross, self.dot)
+        op = {"dot": "·", "cross": "×"}
+        o1, o2 = (op[first], op["cross" if first == "dot" else "dot"])
+        tx, ty, tz = (notation.text(v) for v in (x, y, z))
+        said = {"left": f"({tx} {o1} {ty}) {o2} {tz}", "right": f"{tx} {o1} ({ty} {o2} {tz})"}
+        got: dict = {}
+        for side in ("left", "right"):
+            n = len(self.readings)
+            try:
+                v = g([f([x, y]), z]) if side == "left" else f([x, g([y, z])])
+                got[side] = (v, self.readings[n:])
+            except LatexError as exc:
+                got[side] = str(exc).split(": expected")[0]
+            del self.readings[n:]
+        ok = [s for s in ("left", "right") if isinstance(got[s], tuple)]
+        chain = f"{tx} {o1} {ty} {o2} {tz}"
+        if not ok:
+            raise LatexError(f"{chain} (no parentheses): neither grouping fits the shapes: "
+                             f"{said['left']}: {got['left']}; {said['right']}: "
+                             f"{got['right']} (\\cdot takes two vectors of one size or a "
+                             f"scalar, \\times two 3-vectors or 6-vectors)", "shapes")
+        if len(ok) == 2:
+            scalar = x if first == "dot" else z
+            if _shape(scalar) is not None:
+                raise LatexError(f"{chain} (no parentheses): both groupings fit the shapes "
+                                 f"and may differ, {said['left']} and {said['right']}; write "
+                                 f"parentheses", "shapes")
+            side = "right" if first == "dot" else "left"
+            other = "right" if side == "left" else "left"
+            why = (f"{said[other]} is the same value ({notation.text(scalar)} a scalar, × "
+                   f"linear in each factor)")
+        else:
+            side = ok[0]
+            other = "right" if side == "left" else "left"
+            why = f"the one grouping whose shapes fit ({said[other]}: {got[other]})"
+        why = "; " + why if len(ok) == 2 else ", " + why
+        v, notes = got[side]
+        for note in notes:
+            self._note(note)
+        self._note(f"{chain}: read as {said[side]}{why}")
+        return v
 
     def cross_dual(self, items):
         a, b = (self._val(i) for i in _content(items))

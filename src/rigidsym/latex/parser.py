@@ -221,6 +221,11 @@ class _Build(GlyphRules, MeaningRules, VocabRules, BookRules, lark.Transformer):
     def cpm(self, items):
         from rigidsym.algebra.operators import Cpm
 
+        if len(items) == 3:  # \left[ a \right]_\times, \bigl[ a \bigr]_\times: TeX's [a]_\times
+            if "[" not in str(items[0]) or "]" not in str(items[2]):
+                raise LatexError(f"{items[0]} ... {items[2]}_\\times: expected the square "
+                                 f"brackets of [a]_\\times (the cross-product matrix)",
+                                 "syntax")
         x = _value(items[-1] if not isinstance(items[0], lark.Token) else items[1])
         if _shape(x) != (3, 1):
             raise LatexError(f"CPM of {_words(x)}: expected a 3-vector", "shapes")
