@@ -314,3 +314,33 @@ def test_a_dot_and_a_cross_no_grouping_types_or_parenthesised_are_refused(latex,
     longer chain is not enumerated; parentheses written are kept, never regrouped."""
     with pytest.raises(LatexError, match=words):
         rigidsym.check_latex(latex, let=let)
+
+
+@pytest.mark.parametrize("latex, let", [
+    (r"\mathbf{a}\cdot\mathbf{b}\cdot\mathbf{c} = (\mathbf{a}\cdot\mathbf{b})\mathbf{c}", []),
+    (r"\mathbf{a}\cdot\mathbf{b}\cdot\mathbf{c} = \mathbf{a}(\mathbf{b}\cdot\mathbf{c})", []),
+    (r"\mathbf{a}\cdot\mathbf{b}\cdot\mathbf{c}\cdot 2 = \mathbf{0}", []),
+    (r"x\cdot\mathbf{u}\cdot\mathbf{v}\cdot\mathbf{w} = \mathbf{0}", ["x: scalar"]),
+])
+def test_a_chain_of_dots_with_three_vectors_is_refused(latex, let):
+    """Found while reading the triple product's change: a \\cdot b \\cdot c of 3-vectors
+    was read as the grammar groups it, (a · b) c, and so verified against it, when
+    a (b · c) is as typed and another vector: a guess. Both sides of the guess are refused,
+    naming the two groupings."""
+    with pytest.raises(LatexError, match=r"groupings differ"):
+        rigidsym.check_latex(latex, let=let)
+
+
+@pytest.mark.parametrize("latex, let, verdict", [
+    (r"2\cdot\mathbf{a}\cdot\mathbf{b} = 2(\mathbf{a}\cdot\mathbf{b})", [], "verified"),
+    (r"\mathbf{a}\cdot s\cdot\mathbf{b} = s\,\mathbf{b}\cdot\mathbf{a}", ["s: scalar"],
+     "verified"),
+    (r"\mathbf{a}\cdot\mathbf{b}\cdot 3 = 4\,\mathbf{a}\cdot\mathbf{b}", [], "does-not-hold"),
+    (r"\alpha\cdot\beta\cdot\gamma = \gamma\beta\alpha", [], "verified"),
+    (r"(\mathbf{a}\cdot\mathbf{b})\cdot\mathbf{c} = \mathbf{c}(\mathbf{b}\cdot\mathbf{a})", [],
+     "verified"),                                    # the parentheses written decide
+])
+def test_a_chain_of_dots_with_at_most_two_vectors_is_one_value(latex, let, verdict):
+    """With at most two vectors every grouping is the scalars' product times their dot
+    product: read, and decided as the algebra says."""
+    assert rigidsym.check_latex(latex, let=let).verdict == verdict

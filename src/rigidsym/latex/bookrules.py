@@ -164,6 +164,25 @@ class BookRules:
         """``x \\times y \\cdot z``, by the shapes."""
         return self._mixed(items, "cross")
 
+    def dot_chain(self, items):
+        """``x \\cdot y \\cdot z ...`` with no parentheses. The grammar grouped it from the
+        left; its groupings give one value where at most two operands are vectors (the others
+        scalars: every grouping is the scalars' product times the one dot product), and
+        differ with three (``(a \\cdot b) c`` against ``a (b \\cdot c)``), which is refused
+        naming both rather than read as one of them (issue 52's outside trial)."""
+        from rigidsym.printing import notation
+
+        vals = [self._val(i) for i in items]
+        if sum(_shape(v) is not None for v in vals) >= 3:
+            t = [notation.text(v) for v in vals]
+            raise LatexError(f"{' · '.join(t)} (no parentheses): with three vectors its "
+                             f"groupings differ, ({t[0]} · {t[1]}) {t[2]} against {t[0]} "
+                             f"({t[1]} · {t[2]}); write parentheses", "shapes")
+        out = vals[0]
+        for v in vals[1:]:
+            out = self.dot([out, v])
+        return out
+
     def _mixed(self, items, first: str):
         """Both groupings of ``x op y op' z`` are read; those whose shapes fit are kept.
 

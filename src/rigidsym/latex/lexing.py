@@ -280,6 +280,10 @@ def mixed_products(t):
             spine.append(node)
             node = node.children[0]
         ops = [n.data for n in reversed(spine)]
+        if ops == ["dot"] * len(ops) and len(ops) > 1:   # a \cdot b \cdot c: by the shapes
+            sub.data = "dot_chain"                      # (BookRules.dot_chain)
+            sub.children = [node, *(n.children[1] for n in reversed(spine))]
+            continue
         if len(set(ops)) < 2:
             continue
         if len(ops) > 2:
