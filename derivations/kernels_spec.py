@@ -204,7 +204,7 @@ KERNELS += [
         build=_isa, singular="omega = 0 (pure translation)", singular_arg="omega"),
     Kernel(
         name="wrench_axis", summary="Axis of a wrench: point, pitch and Plücker array.",
-        formula="p0'' = f x (n_A - a x f)... per (3.109)-(3.111), kappa through p0'' along f",
+        formula="p0'' = f x (n_A - f x a) / (f.f) per (3.109)-(3.111), kappa through p0'' along f",
         ids=("3.109", "3.110", "3.111"),
         sources=(_S7 + "wrench_axis_point", _S7 + "wrench_pitch",
                  _S22 + "plucker_from_points"),

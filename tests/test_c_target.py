@@ -12,6 +12,7 @@ the installed library (find_package, pkg-config), the Cortex-M4F float-only chec
 from __future__ import annotations
 
 import ctypes
+import platform
 import re
 import shutil
 import subprocess
@@ -532,7 +533,18 @@ MATRIX = {
     "-O3 -march=native -ffp-contract=fast": None,
     "-DRIGIDSYM_C_TRUSTED_INPUTS": None,      # no input range test: still right
     "-DRIGIDSYM_C_NO_WIDE": None,             # no long double rescue: still right
+    # found by an outside trial: gcc's single-precision constants (no macro shows them; an
+    # array of negative size named for the fix stops the build), clang's NaNs and
+    # infinities not honoured (no macro either; the sources' precise pragma keeps them)
+    "-fsingle-precision-constant": "-fsingle-precision-constant",
+    "-fno-honor-nans": None,
+    "-fno-honor-nans -fno-honor-infinities -U__FINITE_MATH_ONLY__": None,
 }
+#: flags one compiler does not have: (compiler, flag) -> why the cell is skipped
+NOT_A_FLAG = {("gcc", "-fno-honor-nans"): "gcc has no -fno-honor-nans (its -ffinite-math-only "
+                                          "defines __FINITE_MATH_ONLY__)",
+              ("clang", "-fsingle-precision-constant"): "clang does not support it (a warning, "
+                                                        "an error under -Werror)"}
 COMPILERS = [c for c in ("gcc", "clang") if shutil.which(c)]
 
 
@@ -551,6 +563,9 @@ def test_flag_matrix_plain_build_right_or_error(tmp_path, cc, flags):
     turned off by the sources' pragma, so it must build and be right)."""
     if shutil.which(cc) is None:
         pytest.skip(f"{cc} is not installed")
+    for (c, flag), why in NOT_A_FLAG.items():
+        if c == cc and flag in flags.split():
+            pytest.skip(why)
     want_error = MATRIX[flags]
     if cc == "clang" and want_error == "-fassociative-math":
         want_error = None            # clang: no macro; the pragma keeps the code right
@@ -560,6 +575,10 @@ def test_flag_matrix_plain_build_right_or_error(tmp_path, cc, flags):
                              text=True)
         if want_error is None:
             assert res.returncode == 0, res.stderr
+        elif want_error == "-fsingle-precision-constant":   # the array's name says it
+            assert res.returncode != 0, res.stderr
+            assert "error_fsingle_precision_constant_add_fno_single_precision_constant" in \
+                res.stderr, res.stderr
         else:
             named = "-ffast-math" if want_error == "-Ofast" else want_error
             assert res.returncode != 0 and "#error" in res.stderr or "error:" in res.stderr
@@ -581,14 +600,23 @@ def _cmake(tmp_path: Path, cc: str, flags: str) -> Path:
 @pytest.mark.slow
 @pytest.mark.skipif(shutil.which("cmake") is None, reason="cmake is not installed")
 @pytest.mark.parametrize("flags", ["", "-Ofast", "-fassociative-math -fno-signed-zeros "
-                                   "-fno-trapping-math", "-ffinite-math-only"])
+                                   "-fno-trapping-math", "-ffinite-math-only",
+                                   "-fsingle-precision-constant"])
 @pytest.mark.parametrize("cc", ["gcc", "clang"])
 def test_cmake_build_is_right_under_the_application_flags(tmp_path, cc, flags):
     """The CMake target compiles the kernels with its own flags after the project's: an
-    application built with -Ofast links right kernels (and its own main.c stays fast)."""
+    application built with -Ofast links right kernels (and its own main.c stays fast);
+    one built with gcc's -fsingle-precision-constant too (the target undoes it)."""
     if shutil.which(cc) is None:
         pytest.skip(f"{cc} is not installed")
-    assert_matches(run_example(_cmake(tmp_path, cc, flags)), expected())
+    for (c, flag), why in NOT_A_FLAG.items():
+        if c == cc and flag in flags.split():
+            pytest.skip(why)
+    exe = _cmake(tmp_path, cc, flags)
+    if "-fsingle-precision-constant" in flags:
+        return   # built: the sources' guard proves their constants double; the example's
+        #          own main.c then holds float inputs, so NumPy's values are not its answer
+    assert_matches(run_example(exe), expected())
 
 
 @pytest.mark.slow
@@ -615,12 +643,14 @@ def test_installed_library_by_find_package_and_pkg_config(tmp_path):
     assert_matches(run_example(app / "b" / "app"), expected())
     pcdir = next(prefix.rglob("rigidsym_c.pc")).parent
     env = {"PKG_CONFIG_PATH": str(pcdir), "PATH": "/usr/bin:/bin"}
-    flags = subprocess.run(["pkg-config", "--cflags", "--libs", "--static", "rigidsym_c"],
-                           env=env, check=True, capture_output=True, text=True).stdout.split()
-    exe = tmp_path / "pc_app"
-    subprocess.run([GCC or "cc", *STRICT, str(EXAMPLE / "main.c"), *flags, "-o", str(exe)],
-                   check=True)
-    assert_matches(run_example(exe), expected())
+    for static in ([], ["--static"]):   # the README's line has no --static (an outside
+        flags = subprocess.run(["pkg-config", "--cflags", "--libs", *static, "rigidsym_c"],
+                               env=env, check=True, capture_output=True,
+                               text=True).stdout.split()    # trial: -lm was private)
+        exe = tmp_path / f"pc_app{len(static)}"
+        subprocess.run([GCC or "cc", *STRICT, str(EXAMPLE / "main.c"), *flags, "-o",
+                        str(exe)], check=True)
+        assert_matches(run_example(exe), expected())
 
 
 @pytest.mark.slow
@@ -1157,6 +1187,45 @@ def test_the_flags_step_keeps_the_callers_flags(tmp_path):
                     *map(str, sources()), "-o", str(exe), "-lm"], check=True)
     out = subprocess.run([str(exe)], check=True, capture_output=True, text=True).stdout
     assert out.split() == ["0", "8", "1", "1"]
+
+
+_FLUSH = r"""#include <stdio.h>
+#include <xmmintrin.h>
+#include "rigidsym_c.h"
+/* subnormal float twists: the power-of-two rescue takes them (status 0, the exact values:
+ * linear, a = p = 0), unless the caller runs with DAZ/FTZ set (an application linked with
+ * -Ofast), where the scaling would read them as zero */
+int main(void)
+{
+    const float t[6] = {1e-40f, 2e-40f, -3e-40f, 4e-40f, 5e-40f, -6e-40f}, z[3] = {0, 0, 0};
+    float o[6];
+    int s, k;
+    for (k = 0; k < 2; ++k) {
+        if (k)
+            _mm_setcsr(_mm_getcsr() | 0x8040);   /* FTZ | DAZ */
+        s = rigidsym_c_twist_transfer_f32(t, z, z, o);
+        printf("%d %d\n", s, o[0] == t[0] && o[2] == t[2] && o[5] == t[5]);
+    }
+    return 0;
+}
+"""
+
+
+@needs_gcc
+@pytest.mark.skipif(platform.machine() not in ("x86_64", "AMD64"), reason="MXCSR is x86-64's")
+def test_a_flush_to_zero_caller_gets_extreme_input_never_zeros(tmp_path):
+    """Found by an outside trial: with DAZ set (gcc links crtfastmath.o into any -Ofast
+    program) the float rescue scaled subnormal inputs to zero and returned zeros with status
+    0. Now a flush mode keeps EXTREME_INPUT (8); without one the rescue is exact."""
+    src = tmp_path / "flush.c"
+    src.write_text(_FLUSH)
+    exe = tmp_path / "flush"
+    subprocess.run([GCC, *STRICT, "-O2", "-I", str(KERNELS_DIR), str(src),
+                    *map(str, sources()), "-o", str(exe), "-lm"], check=True)
+    out = subprocess.run([str(exe)], check=True, capture_output=True, text=True).stdout
+    assert out.split("\n")[0] == "0 1"       # rescued, exact
+    status, exact = map(int, out.split("\n")[1].split())
+    assert status & EXTREME_INPUT or exact, out
 
 
 def check_rescued(lib_, name, dtype, scale, seed):

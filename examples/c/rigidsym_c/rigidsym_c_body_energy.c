@@ -75,6 +75,12 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_rescue(
      * when every component is then of ordinary magnitude (else the flag stays) */
     int still_ = 0;
     int rs_e0 = 0;
+#if RIGIDSYM_C_FLAGS_D
+    /* a flush-to-zero mode (DAZ, FTZ, Arm's FZ: an application linked with -Ofast sets them)
+     * reads a subnormal input as zero in the scaling itself: the sample keeps its flag */
+    if (rigidsym_c_fp_flushing())
+        return -1;
+#endif
     double rs_m;
     double rs_v[3];
     double rs_inertia[9];
@@ -364,6 +370,12 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_f32_rescue(
      * when every component is then of ordinary magnitude (else the flag stays) */
     int still_ = 0;
     int rs_e0 = 0;
+#if RIGIDSYM_C_FLAGS_F
+    /* a flush-to-zero mode (DAZ, FTZ, Arm's FZ: an application linked with -Ofast sets them)
+     * reads a subnormal input as zero in the scaling itself: the sample keeps its flag */
+    if (rigidsym_c_fp_flushing())
+        return -1;
+#endif
     float rs_m;
     float rs_v[3];
     float rs_inertia[9];
@@ -745,6 +757,12 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_with_jacobians_rescue(
      * when every component is then of ordinary magnitude (else the flag stays) */
     int still_ = 0;
     int rs_e0 = 0;
+#if RIGIDSYM_C_FLAGS_D
+    /* a flush-to-zero mode (DAZ, FTZ, Arm's FZ: an application linked with -Ofast sets them)
+     * reads a subnormal input as zero in the scaling itself: the sample keeps its flag */
+    if (rigidsym_c_fp_flushing())
+        return -1;
+#endif
     double rs_m;
     double rs_v[3];
     double rs_inertia[9];
@@ -1185,6 +1203,12 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_with_jacobians_f32_rescue(
      * when every component is then of ordinary magnitude (else the flag stays) */
     int still_ = 0;
     int rs_e0 = 0;
+#if RIGIDSYM_C_FLAGS_F
+    /* a flush-to-zero mode (DAZ, FTZ, Arm's FZ: an application linked with -Ofast sets them)
+     * reads a subnormal input as zero in the scaling itself: the sample keeps its flag */
+    if (rigidsym_c_fp_flushing())
+        return -1;
+#endif
     float rs_m;
     float rs_v[3];
     float rs_inertia[9];

@@ -27,12 +27,25 @@
 #if defined(_M_FP_FAST)
 #error "rigidsym_c: compiled with /fp:fast (_M_FP_FAST is defined). Compile these sources with /fp:precise."
 #endif
+/* gcc's -fsingle-precision-constant (common in Cortex-M builds) makes every unsuffixed
+ * constant a float, the double functions' 0.1 then 0.1f: wrong results with status 0 (found
+ * by an outside trial). No macro says so, but the size of a constant does: the build stops
+ * on this array of negative size, whose name says the fix. */
+typedef char rigidsym_c_error_fsingle_precision_constant_add_fno_single_precision_constant[
+    sizeof(1.5) == sizeof(double) ? 1 : -1];
 /* clang defines no macro for -fassociative-math (nor for -ffp-contract=fast): the code turns
  * reassociation and contraction off itself, for the rest of each source file (measured:
  * clang 14 at -O2 -fassociative-math -fno-signed-zeros -fno-trapping-math folds
  * (a + b) - a - b to 0 without the pragma, keeps it with it). GCC: contraction off through
  * its optimize pragma; GCC's -fassociative-math is caught above. */
 #if defined(__clang__)
+#if __clang_major__ >= 11
+/* -fno-honor-nans / -fno-honor-infinities alone define no macro (only both together give
+ * __FINITE_MATH_ONLY__), and clang then folds x - x == 0 and f != f: a NaN input would
+ * return status 0 (found by an outside trial). Precise semantics for the rest of the file
+ * honour NaNs and infinities again; contraction, which precise turns on, is off below. */
+#pragma float_control(precise, on)
+#endif
 #if __clang_major__ >= 12
 #pragma clang fp reassociate(off)
 #endif
@@ -105,6 +118,7 @@
 #define RIGIDSYM_C_FP_ALL 0x3fU     /* MXCSR: IE DE ZE OE UE PE */
 #define RIGIDSYM_C_FP_RISKY 0x1dU   /* IE ZE OE UE */
 #define RIGIDSYM_C_FP_UNSURE 0x40U  /* DAZ */
+#define RIGIDSYM_C_FP_FLUSH 0x8040U /* FTZ DAZ */
 static inline unsigned rigidsym_c_fp_get(void)
 {
     unsigned m;
@@ -134,6 +148,12 @@ static inline void rigidsym_c_fp_put(unsigned m)
     const uint64_t r = m;
     __asm__ volatile("msr fpsr, %0" : : "r"(r) : "memory");
 }
+static inline int rigidsym_c_fp_flushing(void)
+{   /* FPCR.FZ */
+    uint64_t r;
+    __asm__ volatile("mrs %0, fpcr" : "=r"(r) : : "memory");
+    return (r >> 24) & 1U;
+}
 #elif defined(__arm__) && defined(__ARM_FP) && !defined(__SOFTFP__)
 #if __ARM_FP & 8
 #undef RIGIDSYM_C_FLAGS_D
@@ -146,6 +166,7 @@ static inline void rigidsym_c_fp_put(unsigned m)
 #define RIGIDSYM_C_FP_ALL 0x9fU     /* FPSCR: IOC DZC OFC UFC IXC IDC */
 #define RIGIDSYM_C_FP_RISKY 0x8fU
 #define RIGIDSYM_C_FP_UNSURE 0U
+#define RIGIDSYM_C_FP_FLUSH (1U << 24) /* FZ */
 static inline unsigned rigidsym_c_fp_get(void)
 {
     unsigned r;
@@ -157,6 +178,12 @@ static inline void rigidsym_c_fp_put(unsigned m)
     __asm__ volatile("vmsr fpscr, %0" : : "r"(m) : "memory");
 }
 #endif
+#endif
+#if (RIGIDSYM_C_FLAGS_D || RIGIDSYM_C_FLAGS_F) && defined(RIGIDSYM_C_FP_FLUSH)
+static inline int rigidsym_c_fp_flushing(void)
+{
+    return (rigidsym_c_fp_get() & RIGIDSYM_C_FP_FLUSH) != 0;
+}
 #endif
 #if RIGIDSYM_C_FLAGS_D || RIGIDSYM_C_FLAGS_F
 /* the flags cleared; returns the caller's, for rigidsym_c_fp_end */

@@ -96,6 +96,12 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_rescue(
     int rs_e0 = 0;
     int rs_e1 = 0;
     int rs_e2 = 0;
+#if RIGIDSYM_C_FLAGS_D
+    /* a flush-to-zero mode (DAZ, FTZ, Arm's FZ: an application linked with -Ofast sets them)
+     * reads a subnormal input as zero in the scaling itself: the sample keeps its flag */
+    if (rigidsym_c_fp_flushing())
+        return -1;
+#endif
     double rs_I_C[9];
     double rs_m;
     double rs_c_ddot[3];
@@ -460,6 +466,12 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_f32_rescue(
     int rs_e0 = 0;
     int rs_e1 = 0;
     int rs_e2 = 0;
+#if RIGIDSYM_C_FLAGS_F
+    /* a flush-to-zero mode (DAZ, FTZ, Arm's FZ: an application linked with -Ofast sets them)
+     * reads a subnormal input as zero in the scaling itself: the sample keeps its flag */
+    if (rigidsym_c_fp_flushing())
+        return -1;
+#endif
     float rs_I_C[9];
     float rs_m;
     float rs_c_ddot[3];
@@ -1133,6 +1145,12 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_with_jacobians_rescue(
     int rs_e0 = 0;
     int rs_e1 = 0;
     int rs_e2 = 0;
+#if RIGIDSYM_C_FLAGS_D
+    /* a flush-to-zero mode (DAZ, FTZ, Arm's FZ: an application linked with -Ofast sets them)
+     * reads a subnormal input as zero in the scaling itself: the sample keeps its flag */
+    if (rigidsym_c_fp_flushing())
+        return -1;
+#endif
     double rs_I_C[9];
     double rs_m;
     double rs_c_ddot[3];
@@ -2049,6 +2067,12 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_with_jacobians_f32_res
     int rs_e0 = 0;
     int rs_e1 = 0;
     int rs_e2 = 0;
+#if RIGIDSYM_C_FLAGS_F
+    /* a flush-to-zero mode (DAZ, FTZ, Arm's FZ: an application linked with -Ofast sets them)
+     * reads a subnormal input as zero in the scaling itself: the sample keeps its flag */
+    if (rigidsym_c_fp_flushing())
+        return -1;
+#endif
     float rs_I_C[9];
     float rs_m;
     float rs_c_ddot[3];

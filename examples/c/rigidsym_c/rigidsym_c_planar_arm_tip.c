@@ -65,6 +65,12 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_rescue(
      * when every component is then of ordinary magnitude (else the flag stays) */
     int still_ = 0;
     int rs_e0 = 0;
+#if RIGIDSYM_C_FLAGS_D
+    /* a flush-to-zero mode (DAZ, FTZ, Arm's FZ: an application linked with -Ofast sets them)
+     * reads a subnormal input as zero in the scaling itself: the sample keeps its flag */
+    if (rigidsym_c_fp_flushing())
+        return -1;
+#endif
     double rs_l1;
     double rs_l2;
     {
@@ -309,6 +315,12 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_f32_rescue(
      * when every component is then of ordinary magnitude (else the flag stays) */
     int still_ = 0;
     int rs_e0 = 0;
+#if RIGIDSYM_C_FLAGS_F
+    /* a flush-to-zero mode (DAZ, FTZ, Arm's FZ: an application linked with -Ofast sets them)
+     * reads a subnormal input as zero in the scaling itself: the sample keeps its flag */
+    if (rigidsym_c_fp_flushing())
+        return -1;
+#endif
     float rs_l1;
     float rs_l2;
     {
@@ -613,6 +625,12 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_with_jacobians_rescue(
      * when every component is then of ordinary magnitude (else the flag stays) */
     int still_ = 0;
     int rs_e0 = 0;
+#if RIGIDSYM_C_FLAGS_D
+    /* a flush-to-zero mode (DAZ, FTZ, Arm's FZ: an application linked with -Ofast sets them)
+     * reads a subnormal input as zero in the scaling itself: the sample keeps its flag */
+    if (rigidsym_c_fp_flushing())
+        return -1;
+#endif
     double rs_l1;
     double rs_l2;
     {
@@ -933,6 +951,12 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_with_jacobians_f32_rescue(
      * when every component is then of ordinary magnitude (else the flag stays) */
     int still_ = 0;
     int rs_e0 = 0;
+#if RIGIDSYM_C_FLAGS_F
+    /* a flush-to-zero mode (DAZ, FTZ, Arm's FZ: an application linked with -Ofast sets them)
+     * reads a subnormal input as zero in the scaling itself: the sample keeps its flag */
+    if (rigidsym_c_fp_flushing())
+        return -1;
+#endif
     float rs_l1;
     float rs_l2;
     {

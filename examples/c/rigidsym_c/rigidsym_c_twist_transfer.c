@@ -81,6 +81,12 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_rescue(
      * when every component is then of ordinary magnitude (else the flag stays) */
     int still_ = 0;
     int rs_e0 = 0;
+#if RIGIDSYM_C_FLAGS_D
+    /* a flush-to-zero mode (DAZ, FTZ, Arm's FZ: an application linked with -Ofast sets them)
+     * reads a subnormal input as zero in the scaling itself: the sample keeps its flag */
+    if (rigidsym_c_fp_flushing())
+        return -1;
+#endif
     double rs_t_A[6];
     {
         double m_ = 0.0;
@@ -374,6 +380,12 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_f32_rescue(
      * when every component is then of ordinary magnitude (else the flag stays) */
     int still_ = 0;
     int rs_e0 = 0;
+#if RIGIDSYM_C_FLAGS_F
+    /* a flush-to-zero mode (DAZ, FTZ, Arm's FZ: an application linked with -Ofast sets them)
+     * reads a subnormal input as zero in the scaling itself: the sample keeps its flag */
+    if (rigidsym_c_fp_flushing())
+        return -1;
+#endif
     float rs_t_A[6];
     {
         float m_ = 0.0f;
@@ -869,6 +881,12 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_with_jacobians_rescue(
      * when every component is then of ordinary magnitude (else the flag stays) */
     int still_ = 0;
     int rs_e0 = 0;
+#if RIGIDSYM_C_FLAGS_D
+    /* a flush-to-zero mode (DAZ, FTZ, Arm's FZ: an application linked with -Ofast sets them)
+     * reads a subnormal input as zero in the scaling itself: the sample keeps its flag */
+    if (rigidsym_c_fp_flushing())
+        return -1;
+#endif
     double rs_t_A[6];
     {
         double m_ = 0.0;
@@ -1492,6 +1510,12 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_with_jacobians_f32_rescue(
      * when every component is then of ordinary magnitude (else the flag stays) */
     int still_ = 0;
     int rs_e0 = 0;
+#if RIGIDSYM_C_FLAGS_F
+    /* a flush-to-zero mode (DAZ, FTZ, Arm's FZ: an application linked with -Ofast sets them)
+     * reads a subnormal input as zero in the scaling itself: the sample keeps its flag */
+    if (rigidsym_c_fp_flushing())
+        return -1;
+#endif
     float rs_t_A[6];
     {
         float m_ = 0.0f;
