@@ -819,6 +819,33 @@ def test_generator_errors_are_one_line_exit_2_nothing_written(tmp_path, capsys, 
     assert not out.exists()
 
 
+@needs_gcc
+def test_a_root_of_a_sign_changing_radicand_generates_and_flags_where_negative(tmp_path):
+    """An outside trial's module, 2 sqrt(r^2 - h^2) of arguments of any sign, crashed the
+    generator (a complex mpmath reference at a sampled point). It generates, and the C
+    returns the chord where the radicand is positive and NONFINITE_RESULT where not."""
+    from rigidsym.cli import main
+
+    mod = tmp_path / "chord_mod.py"
+    mod.write_text(_HEAD + '''
+def chord(r, h):
+    return 2 * sp.sqrt(r**2 - h**2)
+KERNELS = [Kernel(name="chord", summary="s", formula="c = 2 sqrt(r^2 - h^2)", ids=("x",),
+    sources=(chord,), args=(Arg("r", (), "any", "radius"), Arg("h", (), "any", "distance")),
+    outputs=(Out("c", (), "chord"),), build=lambda r, h: {"c": chord(r, h)})]
+''')
+    out = tmp_path / "c"
+    assert main(["generate", "--target", "c", "--module", str(mod), "--out", str(out)]) == 0
+    so = tmp_path / "libchord.so"
+    subprocess.run([GCC, *STRICT, "-O2", "-shared", "-fPIC", *map(str, sorted(out.glob("*.c"))),
+                    "-o", str(so), "-lm"], check=True)
+    lib_ = ctypes.CDLL(str(so))
+    status, (c,) = call(lib_, "rigidsym_c_chord", 5.0, 3.0, ("out", 1))
+    assert status == OK and c[0] == 8.0               # 2 sqrt(25 - 9)
+    status, (c,) = call(lib_, "rigidsym_c_chord", 1.0, 2.0, ("out", 1))
+    assert status & NONFINITE_RESULT and np.isnan(c[0])
+
+
 def test_division_by_a_vanishing_argument_warns_and_records_the_set(tmp_path, capsys):
     import json
 
