@@ -36,6 +36,17 @@ def _euler_rates(angles, omega, seq, frame):
     return {"eta_dot": adj * omega / det}
 
 
+def _angles_arg(seq: str) -> Arg:
+    """The angles, said as the C headers need it (an outside trial found "ZYX" alone
+    ambiguous): intrinsic, Q the product of the three elementary rotations in order."""
+    q = " ".join(f"R{axis.lower()}(angles[{i}])" for i, axis in enumerate(seq))
+    return Arg("angles", (3,), "any", f"intrinsic {seq} Euler angles [rad]: Q = {q}")
+
+
+def _omega_arg(frame: str) -> Arg:
+    return Arg("omega", (3,), "any", f"angular velocity [rad/s] in {frame}-frame coordinates")
+
+
 for _seq in EULER_SEQUENCES:
     for _frame in ("fixed", "body"):
         _tag = f"{_seq.lower()}_{_frame}"
@@ -44,7 +55,7 @@ for _seq in EULER_SEQUENCES:
             summary=f"Euler-angle rate matrix W ({_seq}, omega in the {_frame} frame).",
             formula="omega = W eta_dot", ids=("ex3.10",),
             sources=(_EX10 + "euler_rate_matrix",),
-            args=(Arg("angles", (3,), "any", "Euler angles [rad]"),),
+            args=(_angles_arg(_seq),),
             outputs=(Out("W", (3, 3), ""),),
             build=lambda angles, _s=_seq, _f=_frame: {"W": _euler_W(angles, _s, _f)}))
         INTERNAL_KERNELS.append(Kernel(
@@ -52,7 +63,7 @@ for _seq in EULER_SEQUENCES:
             summary=f"Euler-angle rates from omega ({_seq}, {_frame} frame).",
             formula="eta_dot = W^-1 omega = adj(W) omega / det(W)", ids=("ex3.10",),
             sources=(_EX10 + "euler_rate_matrix",),
-            args=(Arg("angles", (3,), "any", "Euler angles [rad]"), OMEGA),
+            args=(_angles_arg(_seq), _omega_arg(_frame)),
             outputs=(Out("eta_dot", (3,), "[rad/s]"),),
             build=lambda angles, omega, _s=_seq, _f=_frame: _euler_rates(angles, omega, _s, _f),
             singular="det W = 0 (gimbal lock)", singular_arg="angles",
