@@ -1750,7 +1750,7 @@ def wrench_axis(
 ) -> tuple[NDArray[np.floating], NDArray[np.floating], NDArray[np.floating]]:
     r"""Axis of a wrench: point, pitch and Plücker array.
 
-        p0'' = f x (n_A - a x f)... per (3.109)-(3.111), kappa through p0'' along f
+        p0'' = f x (n_A - f x a) / (f.f) per (3.109)-(3.111), kappa through p0'' along f
 
     Book: Eq. (3.109), (3.110), (3.111); composed of rigidsym.derivations.sec3_7.wrench_axis_point, rigidsym.derivations.sec3_7.wrench_pitch, rigidsym.derivations.sec3_2_2.plucker_from_points.
 

@@ -16,7 +16,7 @@
 #     rule; equal to the declared formula by the zero test (exact-cancel)
 """Axis of a wrench: point, pitch and Plücker array.
 
-p0'' = f x (n_A - a x f)... per (3.109)-(3.111), kappa through p0'' along f
+p0'' = f x (n_A - f x a) / (f.f) per (3.109)-(3.111), kappa through p0'' along f
 
 Low-level generated PyTorch program: each function
 takes one array per scalar input component (``COLUMNS``, broadcast to one batch shape) and

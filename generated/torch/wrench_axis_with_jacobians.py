@@ -24,7 +24,7 @@
 #     (exact-cancel)
 """Axis of a wrench: point, pitch and Plücker array, with the Jacobians of its outputs.
 
-p0'' = f x (n_A - a x f)... per (3.109)-(3.111), kappa through p0'' along f; and d(output)/d(input) by sympy on the declared formula
+p0'' = f x (n_A - f x a) / (f.f) per (3.109)-(3.111), kappa through p0'' along f; and d(output)/d(input) by sympy on the declared formula
 
 Low-level generated PyTorch program: each function
 takes one array per scalar input component (``COLUMNS``, broadcast to one batch shape) and
