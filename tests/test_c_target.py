@@ -888,8 +888,9 @@ def test_single_header_builds_in_c_and_cpp_and_guards_only_the_implementation(tm
     out = tmp_path / "k"
     assert main(["generate", "--target", "c", *EXAMPLE_ARGS, "--single-header", "--out",
                  str(out)]) == 0
-    impl = tmp_path / "impl.c"
-    impl.write_text('#define RIGIDSYM_C_IMPLEMENTATION\n#include "rigidsym_c_single.h"\n')
+    impl = tmp_path / "impl.c"       # included twice, as an outside trial did: once defines
+    impl.write_text('#define RIGIDSYM_C_IMPLEMENTATION\n#include "rigidsym_c_single.h"\n'
+                    '#include "rigidsym_c_single.h"\n')
     bad = subprocess.run([GCC, *STRICT, "-Ofast", "-I", str(out), "-c", str(impl), "-o",
                           str(tmp_path / "bad.o")], capture_output=True, text=True)
     assert bad.returncode != 0 and "-ffast-math" in bad.stderr

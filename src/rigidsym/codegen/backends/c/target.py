@@ -316,7 +316,10 @@ def _single_header(files: dict[str, str], groups: list[dict], allhash: str, ver:
            f"with\n * `rigidsym generate --target c --single-header`.\n"
            f" * SPDX-License-Identifier: MIT (see LICENSE beside this file)\n */\n")
     return (top + "".join(body(files[h]) for h in heads) +
-            "\n#if defined(RIGIDSYM_C_IMPLEMENTATION)\n" +
+            # the definitions once per file, however often it includes the header (an
+            # outside trial included it twice: redefinitions)
+            "\n#if defined(RIGIDSYM_C_IMPLEMENTATION) && !defined(RIGIDSYM_C_IMPLEMENTED)\n"
+            "#define RIGIDSYM_C_IMPLEMENTED\n" +
             "".join(body(files[c]) for c in srcs) +
             "\n#endif /* RIGIDSYM_C_IMPLEMENTATION */\n")
 
