@@ -216,15 +216,6 @@ def _points(kernel, seed: int = 30, n_random: int = 6, small=SMALL):
     return out
 
 
-def _real(v) -> float:
-    """A reference value as a float; NaN where it is not real (a root of a negative
-    radicand: outside the formula's real domain, as the kernels' NaN there), so that a
-    reader's ``sqrt(r**2 - h**2)`` is measured where it is real rather than crashing."""
-    if isinstance(v, mpmath.mpc):
-        return float(v.real) if v.imag == 0 else math.nan
-    return float(v)
-
-
 class _Meter:
     """The declared outputs at the measurement points (mpmath) and a form's error there:
     per point and output, normwise relative (absolute where the output is exactly 0), in
@@ -250,9 +241,9 @@ class _Meter:
         refs = []
         with mpmath.workdps(40):
             for p in keep:
-                try:
-                    refs.append([_real(v) for v in f(*[x for a in p for x in a])])
-                except (ZeroDivisionError, ValueError, OverflowError):
+                try:   # TypeError: float() of a complex value, a root of a negative
+                    refs.append([float(v) for v in f(*[x for a in p for x in a])])
+                except (ZeroDivisionError, ValueError, OverflowError, TypeError):  # radicand
                     refs.append([math.nan] * len(flat))
         self.ref = np.array(refs, dtype=float).reshape(len(keep), len(flat))
         self.ok = np.isfinite(self.ref).all(axis=1)

@@ -10,6 +10,8 @@ from importlib import resources
 
 import lark
 
+from rigidsym.latex.rewrites import mixed_products, multiple_angles, subscripts_first
+
 __all__ = ["Relation", "Parsed", "parser", "tree", "braced", "quoted"]
 
 
@@ -218,131 +220,6 @@ def caret(text: str, pos: int, width: int = 1) -> str:
     return f"  {text}\n  {' ' * pos}{'^' * max(width, 1)}"
 
 
-_TRIG = {"\\sin", "\\cos", "\\tan", "\\cot", "\\sec", "\\csc"}
-_SYMBOL_RULES = {"glyph", "accented", "accented_bare", "arrow"}
-
-
-def _number_arg(t) -> bool:
-    r"""``t`` is ``\sin 2`` (or ``\sin^2 2``): a trigonometric function of a bare number."""
-    return isinstance(t, lark.Tree) and t.data in ("func", "func_power") \
-        and str(t.children[0]).replace(" ", "") in _TRIG \
-        and isinstance(t.children[-1], lark.Tree) and t.children[-1].data == "number"
-
-
-def multiple_angles(t):
-    r"""``\sin 2\theta`` is sin(2θ), as every book means it, not sin(2) θ (the grammar's
-    operator argument is one primary; before wave 6's fourth session the reader printed
-    ``θ sin 2`` and decided that): a product whose left factor ends in a trigonometric
-    function of a bare number and whose right factor is a symbol becomes the function of
-    their product (``a \sin 2\theta \cos\phi`` is a sin(2θ) cos φ). In place; returns
-    ``t``."""
-    for sub in list(t.iter_subtrees()):  # bottom-up: inner products first
-        if sub.data != "mul" or len(sub.children) != 2:
-            continue
-        left, right = sub.children
-        if not (isinstance(right, lark.Tree) and right.data in _SYMBOL_RULES):
-            continue
-        if _number_arg(left):
-            f, rest = left, None
-        elif isinstance(left, lark.Tree) and left.data == "mul" and _number_arg(left.children[1]):
-            f, rest = left.children[1], left.children[0]
-        else:
-            continue
-        f.children[-1] = lark.Tree("mul", [f.children[-1], right])
-        if rest is None:
-            sub.data, sub.children = f.data, f.children
-        else:
-            sub.children = [rest, f]
-    return t
-
-
-_PRODUCTS = {"dot": "\\cdot", "cross": "\\times"}
-
-
-def mixed_products(t):
-    """A ``\\cdot`` and a ``\\times`` in one term with no parentheses between them
-    (Goldstein's and Kane's ``a \\cdot b \\times c``, the triple product): the grammar
-    groups them from the left, as ``(a \\cdot b) \\times c``, which TeX does not say. Such
-    a chain of two becomes ``dot_cross`` (``cross_dot`` for ``a \\times b \\cdot c``) with
-    its three operands, which the transformer reads by the shapes
-    (:meth:`rigidsym.latex.bookrules.BookRules.dot_cross`); a longer chain mixing them is
-    refused (its groupings are not enumerated). Then the marks of the parentheses
-    (``paren``) are dropped: the tree is the grammar's as before. In place; returns ``t``."""
-    from rigidsym.latex.shapes import LatexError
-
-    seen: set[int] = set()
-    for sub in list(t.iter_subtrees_topdown()):
-        if sub.data not in _PRODUCTS or id(sub) in seen:
-            continue
-        spine, node = [], sub
-        while isinstance(node, lark.Tree) and node.data in _PRODUCTS:
-            seen.add(id(node))
-            spine.append(node)
-            node = node.children[0]
-        ops = [n.data for n in reversed(spine)]
-        if ops == ["dot"] * len(ops) and len(ops) > 1:   # a \cdot b \cdot c: by the shapes
-            sub.data = "dot_chain"                      # (BookRules.dot_chain)
-            sub.children = [node, *(n.children[1] for n in reversed(spine))]
-            continue
-        if len(set(ops)) < 2:
-            continue
-        if len(ops) > 2:
-            raise LatexError(
-                f"a chain of {len(ops)} products mixing \\cdot and \\times with no "
-                f"parentheses ({' '.join(_PRODUCTS[o] for o in ops)}): its groupings are not "
-                f"enumerated, and a verdict on one would be a guess; write parentheses, "
-                f"e.g. a \\cdot (b \\times c)", "shapes")
-        inner = spine[1]
-        sub.data = f"{inner.data}_{sub.data}"  # dot_cross: a \\cdot b \\times c
-        sub.children = [*inner.children, sub.children[1]]
-    for sub in list(t.iter_subtrees()):
-        sub.children = [_unparen(c) for c in sub.children]
-    return _unparen(t)
-
-
-def _unparen(c):
-    while isinstance(c, lark.Tree) and c.data == "paren":
-        c = c.children[0]
-    return c
-
-
-_GLYPH_TREES = {"glyph", "accented", "accented_bare"}
-
-
-def subscripts_first(t):
-    """TeX's ``X^a_b`` is ``X_b^a``: a subscript written after a superscript belongs to the
-    symbol (Spong's ``R^T_{k,\\theta}`` is ``R_{k,\\theta}^T``; a syntax error before the
-    outside trial of 16 books). The grammar reads it as ``power_sub`` (``apply_pre_sub``
-    before an argument); here its subscript moves into the glyph, giving the tree of the
-    subscript-first spelling. Of no glyph (``(a + b)^2_1``, ``\\overrightarrow{AB}^T_1``)
-    or of a glyph with a subscript already (``x_1^2_3``, TeX's double subscript) it is
-    refused, never read as a guess. In place; returns ``t``."""
-    from rigidsym.latex.shapes import LatexError
-
-    for sub in list(t.iter_subtrees()):
-        if sub.data not in ("power_sub", "apply_pre_sub"):
-            continue
-        x, sup, script, *rest = sub.children
-        if not (isinstance(x, lark.Tree) and x.data in _GLYPH_TREES) or any(
-                isinstance(c, lark.Tree) and c.data == "subscript" for c in x.children):
-            raise LatexError("X^a_b with X no symbol of its own (a group, a power, a symbol "
-                             "with a subscript already): TeX puts the subscript on X; write "
-                             "the subscript first, X_b^a, or braces: {X^a}_b is not read",
-                             "syntax")
-        at = 1 if x.data == "glyph" and not isinstance(x.children[0], lark.Tree) else 0
-        at += 1 if x.data == "glyph" else 2  # after the base (the accent's glyph or letter)
-        if at < len(x.children) and isinstance(x.children[at], lark.Token) \
-                and x.children[at].type == "PRIMES":
-            at += 1  # R'^T_z: after the primes, as R'_z^T
-        x.children.insert(at, script)
-        sub.data = "power" if sub.data == "power_sub" else "apply_pre"
-        sub.children = [x, sup, *rest]
-    return t
-
-
-# \left( ... \right), \bigl( ... \bigr): parentheses TeX only draws taller, read as ( ... ) so
-# that R_z\left(\alpha\right) is the application R_z(\alpha) (a product of a free scalar
-# R_z before the sixth session of wave 6: R_z\left(0\right)a = 0 verified)
 _SIZED_PAREN = re.compile(r"(?:\\left|\\[bB]igg?l)\s*\(|(?:\\right|\\[bB]igg?r)\s*\)")
 
 
