@@ -539,6 +539,7 @@ MATRIX = {
     "-fsingle-precision-constant": "-fsingle-precision-constant",
     "-fno-honor-nans": None,
     "-fno-honor-nans -fno-honor-infinities -U__FINITE_MATH_ONLY__": None,
+    "-Wdouble-promotion": None,   # clang warned in the long double rescue and at NAN (trial)
 }
 #: flags one compiler does not have: (compiler, flag) -> why the cell is skipped
 NOT_A_FLAG = {("gcc", "-fno-honor-nans"): "gcc has no -fno-honor-nans (its -ffinite-math-only "

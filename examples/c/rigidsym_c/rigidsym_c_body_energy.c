@@ -9,6 +9,10 @@
 #include "rigidsym_c_body_energy.h"
 
 #if RIGIDSYM_C_WIDE
+#if defined(__clang__)
+#pragma clang diagnostic push   /* the promotions to long double are the point here */
+#pragma clang diagnostic ignored "-Wdouble-promotion"
+#endif
 /* rigidsym_c_body_energy in long double, rounded once to double: the rescue of a sample with an
  * extreme input (RIGIDSYM_C_WIDE, rigidsym_c_impl.h) */
 static int rigidsym_c_body_energy_wide(
@@ -48,10 +52,13 @@ static int rigidsym_c_body_energy_wide(
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        T[0] = NAN;
+        T[0] = (double)NAN;
     }
     return status;
 }
+#if defined(__clang__)
+#pragma clang diagnostic pop
+#endif
 #endif
 
 
@@ -157,7 +164,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_plain(
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        T[0] = NAN;
+        T[0] = (double)NAN;
     }
     return status;
 }
@@ -318,7 +325,7 @@ RIGIDSYM_C_API int rigidsym_c_body_energy(
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        T[0] = NAN;
+        T[0] = (double)NAN;
     }
     return status;
 }
@@ -633,6 +640,10 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_f32_batch(
 }
 
 #if RIGIDSYM_C_WIDE
+#if defined(__clang__)
+#pragma clang diagnostic push   /* the promotions to long double are the point here */
+#pragma clang diagnostic ignored "-Wdouble-promotion"
+#endif
 /* rigidsym_c_body_energy_with_jacobians in long double, rounded once to double: the rescue of a sample with an
  * extreme input (RIGIDSYM_C_WIDE, rigidsym_c_impl.h) */
 static int rigidsym_c_body_energy_with_jacobians_wide(
@@ -710,26 +721,29 @@ static int rigidsym_c_body_energy_with_jacobians_wide(
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        T[0] = NAN;
-        T_D_m[0] = NAN;
-        T_D_v[0] = NAN;
-        T_D_v[1] = NAN;
-        T_D_v[2] = NAN;
-        T_D_inertia[0] = NAN;
-        T_D_inertia[1] = NAN;
-        T_D_inertia[2] = NAN;
-        T_D_inertia[3] = NAN;
-        T_D_inertia[4] = NAN;
-        T_D_inertia[5] = NAN;
-        T_D_inertia[6] = NAN;
-        T_D_inertia[7] = NAN;
-        T_D_inertia[8] = NAN;
-        T_D_omega[0] = NAN;
-        T_D_omega[1] = NAN;
-        T_D_omega[2] = NAN;
+        T[0] = (double)NAN;
+        T_D_m[0] = (double)NAN;
+        T_D_v[0] = (double)NAN;
+        T_D_v[1] = (double)NAN;
+        T_D_v[2] = (double)NAN;
+        T_D_inertia[0] = (double)NAN;
+        T_D_inertia[1] = (double)NAN;
+        T_D_inertia[2] = (double)NAN;
+        T_D_inertia[3] = (double)NAN;
+        T_D_inertia[4] = (double)NAN;
+        T_D_inertia[5] = (double)NAN;
+        T_D_inertia[6] = (double)NAN;
+        T_D_inertia[7] = (double)NAN;
+        T_D_inertia[8] = (double)NAN;
+        T_D_omega[0] = (double)NAN;
+        T_D_omega[1] = (double)NAN;
+        T_D_omega[2] = (double)NAN;
     }
     return status;
 }
+#if defined(__clang__)
+#pragma clang diagnostic pop
+#endif
 #endif
 
 
@@ -898,23 +912,23 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_with_jacobians_plain(
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        T[0] = NAN;
-        T_D_m[0] = NAN;
-        T_D_v[0] = NAN;
-        T_D_v[1] = NAN;
-        T_D_v[2] = NAN;
-        T_D_inertia[0] = NAN;
-        T_D_inertia[1] = NAN;
-        T_D_inertia[2] = NAN;
-        T_D_inertia[3] = NAN;
-        T_D_inertia[4] = NAN;
-        T_D_inertia[5] = NAN;
-        T_D_inertia[6] = NAN;
-        T_D_inertia[7] = NAN;
-        T_D_inertia[8] = NAN;
-        T_D_omega[0] = NAN;
-        T_D_omega[1] = NAN;
-        T_D_omega[2] = NAN;
+        T[0] = (double)NAN;
+        T_D_m[0] = (double)NAN;
+        T_D_v[0] = (double)NAN;
+        T_D_v[1] = (double)NAN;
+        T_D_v[2] = (double)NAN;
+        T_D_inertia[0] = (double)NAN;
+        T_D_inertia[1] = (double)NAN;
+        T_D_inertia[2] = (double)NAN;
+        T_D_inertia[3] = (double)NAN;
+        T_D_inertia[4] = (double)NAN;
+        T_D_inertia[5] = (double)NAN;
+        T_D_inertia[6] = (double)NAN;
+        T_D_inertia[7] = (double)NAN;
+        T_D_inertia[8] = (double)NAN;
+        T_D_omega[0] = (double)NAN;
+        T_D_omega[1] = (double)NAN;
+        T_D_omega[2] = (double)NAN;
     }
     return status;
 }
@@ -1123,23 +1137,23 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians(
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        T[0] = NAN;
-        T_D_m[0] = NAN;
-        T_D_v[0] = NAN;
-        T_D_v[1] = NAN;
-        T_D_v[2] = NAN;
-        T_D_inertia[0] = NAN;
-        T_D_inertia[1] = NAN;
-        T_D_inertia[2] = NAN;
-        T_D_inertia[3] = NAN;
-        T_D_inertia[4] = NAN;
-        T_D_inertia[5] = NAN;
-        T_D_inertia[6] = NAN;
-        T_D_inertia[7] = NAN;
-        T_D_inertia[8] = NAN;
-        T_D_omega[0] = NAN;
-        T_D_omega[1] = NAN;
-        T_D_omega[2] = NAN;
+        T[0] = (double)NAN;
+        T_D_m[0] = (double)NAN;
+        T_D_v[0] = (double)NAN;
+        T_D_v[1] = (double)NAN;
+        T_D_v[2] = (double)NAN;
+        T_D_inertia[0] = (double)NAN;
+        T_D_inertia[1] = (double)NAN;
+        T_D_inertia[2] = (double)NAN;
+        T_D_inertia[3] = (double)NAN;
+        T_D_inertia[4] = (double)NAN;
+        T_D_inertia[5] = (double)NAN;
+        T_D_inertia[6] = (double)NAN;
+        T_D_inertia[7] = (double)NAN;
+        T_D_inertia[8] = (double)NAN;
+        T_D_omega[0] = (double)NAN;
+        T_D_omega[1] = (double)NAN;
+        T_D_omega[2] = (double)NAN;
     }
     return status;
 }

@@ -9,6 +9,10 @@
 #include "rigidsym_c_planar_arm_tip.h"
 
 #if RIGIDSYM_C_WIDE
+#if defined(__clang__)
+#pragma clang diagnostic push   /* the promotions to long double are the point here */
+#pragma clang diagnostic ignored "-Wdouble-promotion"
+#endif
 /* rigidsym_c_planar_arm_tip in long double, rounded once to double: the rescue of a sample with an
  * extreme input (RIGIDSYM_C_WIDE, rigidsym_c_impl.h) */
 static int rigidsym_c_planar_arm_tip_wide(
@@ -38,11 +42,14 @@ static int rigidsym_c_planar_arm_tip_wide(
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        p[0] = NAN;
-        p[1] = NAN;
+        p[0] = (double)NAN;
+        p[1] = (double)NAN;
     }
     return status;
 }
+#if defined(__clang__)
+#pragma clang diagnostic pop
+#endif
 #endif
 
 
@@ -128,8 +135,8 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_plain(
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        p[0] = NAN;
-        p[1] = NAN;
+        p[0] = (double)NAN;
+        p[1] = (double)NAN;
     }
     return status;
 }
@@ -263,8 +270,8 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip(
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        p[0] = NAN;
-        p[1] = NAN;
+        p[0] = (double)NAN;
+        p[1] = (double)NAN;
     }
     return status;
 }
@@ -537,6 +544,10 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_f32_batch(
 }
 
 #if RIGIDSYM_C_WIDE
+#if defined(__clang__)
+#pragma clang diagnostic push   /* the promotions to long double are the point here */
+#pragma clang diagnostic ignored "-Wdouble-promotion"
+#endif
 /* rigidsym_c_planar_arm_tip_with_jacobians in long double, rounded once to double: the rescue of a sample with an
  * extreme input (RIGIDSYM_C_WIDE, rigidsym_c_impl.h) */
 static int rigidsym_c_planar_arm_tip_with_jacobians_wide(
@@ -586,19 +597,22 @@ static int rigidsym_c_planar_arm_tip_with_jacobians_wide(
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        p[0] = NAN;
-        p[1] = NAN;
-        p_D_q1[0] = NAN;
-        p_D_q1[1] = NAN;
-        p_D_q2[0] = NAN;
-        p_D_q2[1] = NAN;
-        p_D_l1[0] = NAN;
-        p_D_l1[1] = NAN;
-        p_D_l2[0] = NAN;
-        p_D_l2[1] = NAN;
+        p[0] = (double)NAN;
+        p[1] = (double)NAN;
+        p_D_q1[0] = (double)NAN;
+        p_D_q1[1] = (double)NAN;
+        p_D_q2[0] = (double)NAN;
+        p_D_q2[1] = (double)NAN;
+        p_D_l1[0] = (double)NAN;
+        p_D_l1[1] = (double)NAN;
+        p_D_l2[0] = (double)NAN;
+        p_D_l2[1] = (double)NAN;
     }
     return status;
 }
+#if defined(__clang__)
+#pragma clang diagnostic pop
+#endif
 #endif
 
 
@@ -712,16 +726,16 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_with_jacobians_plain(
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        p[0] = NAN;
-        p[1] = NAN;
-        p_D_q1[0] = NAN;
-        p_D_q1[1] = NAN;
-        p_D_q2[0] = NAN;
-        p_D_q2[1] = NAN;
-        p_D_l1[0] = NAN;
-        p_D_l1[1] = NAN;
-        p_D_l2[0] = NAN;
-        p_D_l2[1] = NAN;
+        p[0] = (double)NAN;
+        p[1] = (double)NAN;
+        p_D_q1[0] = (double)NAN;
+        p_D_q1[1] = (double)NAN;
+        p_D_q2[0] = (double)NAN;
+        p_D_q2[1] = (double)NAN;
+        p_D_l1[0] = (double)NAN;
+        p_D_l1[1] = (double)NAN;
+        p_D_l2[0] = (double)NAN;
+        p_D_l2[1] = (double)NAN;
     }
     return status;
 }
@@ -879,16 +893,16 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians(
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        p[0] = NAN;
-        p[1] = NAN;
-        p_D_q1[0] = NAN;
-        p_D_q1[1] = NAN;
-        p_D_q2[0] = NAN;
-        p_D_q2[1] = NAN;
-        p_D_l1[0] = NAN;
-        p_D_l1[1] = NAN;
-        p_D_l2[0] = NAN;
-        p_D_l2[1] = NAN;
+        p[0] = (double)NAN;
+        p[1] = (double)NAN;
+        p_D_q1[0] = (double)NAN;
+        p_D_q1[1] = (double)NAN;
+        p_D_q2[0] = (double)NAN;
+        p_D_q2[1] = (double)NAN;
+        p_D_l1[0] = (double)NAN;
+        p_D_l1[1] = (double)NAN;
+        p_D_l2[0] = (double)NAN;
+        p_D_l2[1] = (double)NAN;
     }
     return status;
 }

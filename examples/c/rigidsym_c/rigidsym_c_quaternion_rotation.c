@@ -9,6 +9,10 @@
 #include "rigidsym_c_quaternion_rotation.h"
 
 #if RIGIDSYM_C_WIDE
+#if defined(__clang__)
+#pragma clang diagnostic push   /* the promotions to long double are the point here */
+#pragma clang diagnostic ignored "-Wdouble-promotion"
+#endif
 /* rigidsym_c_quaternion_rotation in long double, rounded once to double: the rescue of a sample with an
  * extreme input (RIGIDSYM_C_WIDE, rigidsym_c_impl.h) */
 static int rigidsym_c_quaternion_rotation_wide(
@@ -46,18 +50,21 @@ static int rigidsym_c_quaternion_rotation_wide(
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        Q[0] = NAN;
-        Q[1] = NAN;
-        Q[2] = NAN;
-        Q[3] = NAN;
-        Q[4] = NAN;
-        Q[5] = NAN;
-        Q[6] = NAN;
-        Q[7] = NAN;
-        Q[8] = NAN;
+        Q[0] = (double)NAN;
+        Q[1] = (double)NAN;
+        Q[2] = (double)NAN;
+        Q[3] = (double)NAN;
+        Q[4] = (double)NAN;
+        Q[5] = (double)NAN;
+        Q[6] = (double)NAN;
+        Q[7] = (double)NAN;
+        Q[8] = (double)NAN;
     }
     return status;
 }
+#if defined(__clang__)
+#pragma clang diagnostic pop
+#endif
 #endif
 
 
@@ -105,15 +112,15 @@ static RIGIDSYM_C_COLD int rigidsym_c_quaternion_rotation_plain(
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        Q[0] = NAN;
-        Q[1] = NAN;
-        Q[2] = NAN;
-        Q[3] = NAN;
-        Q[4] = NAN;
-        Q[5] = NAN;
-        Q[6] = NAN;
-        Q[7] = NAN;
-        Q[8] = NAN;
+        Q[0] = (double)NAN;
+        Q[1] = (double)NAN;
+        Q[2] = (double)NAN;
+        Q[3] = (double)NAN;
+        Q[4] = (double)NAN;
+        Q[5] = (double)NAN;
+        Q[6] = (double)NAN;
+        Q[7] = (double)NAN;
+        Q[8] = (double)NAN;
     }
     return status;
 }
@@ -239,15 +246,15 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation(
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        Q[0] = NAN;
-        Q[1] = NAN;
-        Q[2] = NAN;
-        Q[3] = NAN;
-        Q[4] = NAN;
-        Q[5] = NAN;
-        Q[6] = NAN;
-        Q[7] = NAN;
-        Q[8] = NAN;
+        Q[0] = (double)NAN;
+        Q[1] = (double)NAN;
+        Q[2] = (double)NAN;
+        Q[3] = (double)NAN;
+        Q[4] = (double)NAN;
+        Q[5] = (double)NAN;
+        Q[6] = (double)NAN;
+        Q[7] = (double)NAN;
+        Q[8] = (double)NAN;
     }
     return status;
 }
@@ -479,6 +486,10 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_f32_batch(
 }
 
 #if RIGIDSYM_C_WIDE
+#if defined(__clang__)
+#pragma clang diagnostic push   /* the promotions to long double are the point here */
+#pragma clang diagnostic ignored "-Wdouble-promotion"
+#endif
 /* rigidsym_c_quaternion_rotation_with_jacobians in long double, rounded once to double: the rescue of a sample with an
  * extreme input (RIGIDSYM_C_WIDE, rigidsym_c_impl.h) */
 static int rigidsym_c_quaternion_rotation_with_jacobians_wide(
@@ -559,54 +570,57 @@ static int rigidsym_c_quaternion_rotation_with_jacobians_wide(
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        Q[0] = NAN;
-        Q[1] = NAN;
-        Q[2] = NAN;
-        Q[3] = NAN;
-        Q[4] = NAN;
-        Q[5] = NAN;
-        Q[6] = NAN;
-        Q[7] = NAN;
-        Q[8] = NAN;
-        Q_D_q[0] = NAN;
-        Q_D_q[1] = NAN;
-        Q_D_q[2] = NAN;
-        Q_D_q[3] = NAN;
-        Q_D_q[4] = NAN;
-        Q_D_q[5] = NAN;
-        Q_D_q[6] = NAN;
-        Q_D_q[7] = NAN;
-        Q_D_q[8] = NAN;
-        Q_D_q[9] = NAN;
-        Q_D_q[10] = NAN;
-        Q_D_q[11] = NAN;
-        Q_D_q[12] = NAN;
-        Q_D_q[13] = NAN;
-        Q_D_q[14] = NAN;
-        Q_D_q[15] = NAN;
-        Q_D_q[16] = NAN;
-        Q_D_q[17] = NAN;
-        Q_D_q[18] = NAN;
-        Q_D_q[19] = NAN;
-        Q_D_q[20] = NAN;
-        Q_D_q[21] = NAN;
-        Q_D_q[22] = NAN;
-        Q_D_q[23] = NAN;
-        Q_D_q[24] = NAN;
-        Q_D_q[25] = NAN;
-        Q_D_q[26] = NAN;
-        Q_D_q[27] = NAN;
-        Q_D_q[28] = NAN;
-        Q_D_q[29] = NAN;
-        Q_D_q[30] = NAN;
-        Q_D_q[31] = NAN;
-        Q_D_q[32] = NAN;
-        Q_D_q[33] = NAN;
-        Q_D_q[34] = NAN;
-        Q_D_q[35] = NAN;
+        Q[0] = (double)NAN;
+        Q[1] = (double)NAN;
+        Q[2] = (double)NAN;
+        Q[3] = (double)NAN;
+        Q[4] = (double)NAN;
+        Q[5] = (double)NAN;
+        Q[6] = (double)NAN;
+        Q[7] = (double)NAN;
+        Q[8] = (double)NAN;
+        Q_D_q[0] = (double)NAN;
+        Q_D_q[1] = (double)NAN;
+        Q_D_q[2] = (double)NAN;
+        Q_D_q[3] = (double)NAN;
+        Q_D_q[4] = (double)NAN;
+        Q_D_q[5] = (double)NAN;
+        Q_D_q[6] = (double)NAN;
+        Q_D_q[7] = (double)NAN;
+        Q_D_q[8] = (double)NAN;
+        Q_D_q[9] = (double)NAN;
+        Q_D_q[10] = (double)NAN;
+        Q_D_q[11] = (double)NAN;
+        Q_D_q[12] = (double)NAN;
+        Q_D_q[13] = (double)NAN;
+        Q_D_q[14] = (double)NAN;
+        Q_D_q[15] = (double)NAN;
+        Q_D_q[16] = (double)NAN;
+        Q_D_q[17] = (double)NAN;
+        Q_D_q[18] = (double)NAN;
+        Q_D_q[19] = (double)NAN;
+        Q_D_q[20] = (double)NAN;
+        Q_D_q[21] = (double)NAN;
+        Q_D_q[22] = (double)NAN;
+        Q_D_q[23] = (double)NAN;
+        Q_D_q[24] = (double)NAN;
+        Q_D_q[25] = (double)NAN;
+        Q_D_q[26] = (double)NAN;
+        Q_D_q[27] = (double)NAN;
+        Q_D_q[28] = (double)NAN;
+        Q_D_q[29] = (double)NAN;
+        Q_D_q[30] = (double)NAN;
+        Q_D_q[31] = (double)NAN;
+        Q_D_q[32] = (double)NAN;
+        Q_D_q[33] = (double)NAN;
+        Q_D_q[34] = (double)NAN;
+        Q_D_q[35] = (double)NAN;
     }
     return status;
 }
+#if defined(__clang__)
+#pragma clang diagnostic pop
+#endif
 #endif
 
 
@@ -697,51 +711,51 @@ static RIGIDSYM_C_COLD int rigidsym_c_quaternion_rotation_with_jacobians_plain(
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        Q[0] = NAN;
-        Q[1] = NAN;
-        Q[2] = NAN;
-        Q[3] = NAN;
-        Q[4] = NAN;
-        Q[5] = NAN;
-        Q[6] = NAN;
-        Q[7] = NAN;
-        Q[8] = NAN;
-        Q_D_q[0] = NAN;
-        Q_D_q[1] = NAN;
-        Q_D_q[2] = NAN;
-        Q_D_q[3] = NAN;
-        Q_D_q[4] = NAN;
-        Q_D_q[5] = NAN;
-        Q_D_q[6] = NAN;
-        Q_D_q[7] = NAN;
-        Q_D_q[8] = NAN;
-        Q_D_q[9] = NAN;
-        Q_D_q[10] = NAN;
-        Q_D_q[11] = NAN;
-        Q_D_q[12] = NAN;
-        Q_D_q[13] = NAN;
-        Q_D_q[14] = NAN;
-        Q_D_q[15] = NAN;
-        Q_D_q[16] = NAN;
-        Q_D_q[17] = NAN;
-        Q_D_q[18] = NAN;
-        Q_D_q[19] = NAN;
-        Q_D_q[20] = NAN;
-        Q_D_q[21] = NAN;
-        Q_D_q[22] = NAN;
-        Q_D_q[23] = NAN;
-        Q_D_q[24] = NAN;
-        Q_D_q[25] = NAN;
-        Q_D_q[26] = NAN;
-        Q_D_q[27] = NAN;
-        Q_D_q[28] = NAN;
-        Q_D_q[29] = NAN;
-        Q_D_q[30] = NAN;
-        Q_D_q[31] = NAN;
-        Q_D_q[32] = NAN;
-        Q_D_q[33] = NAN;
-        Q_D_q[34] = NAN;
-        Q_D_q[35] = NAN;
+        Q[0] = (double)NAN;
+        Q[1] = (double)NAN;
+        Q[2] = (double)NAN;
+        Q[3] = (double)NAN;
+        Q[4] = (double)NAN;
+        Q[5] = (double)NAN;
+        Q[6] = (double)NAN;
+        Q[7] = (double)NAN;
+        Q[8] = (double)NAN;
+        Q_D_q[0] = (double)NAN;
+        Q_D_q[1] = (double)NAN;
+        Q_D_q[2] = (double)NAN;
+        Q_D_q[3] = (double)NAN;
+        Q_D_q[4] = (double)NAN;
+        Q_D_q[5] = (double)NAN;
+        Q_D_q[6] = (double)NAN;
+        Q_D_q[7] = (double)NAN;
+        Q_D_q[8] = (double)NAN;
+        Q_D_q[9] = (double)NAN;
+        Q_D_q[10] = (double)NAN;
+        Q_D_q[11] = (double)NAN;
+        Q_D_q[12] = (double)NAN;
+        Q_D_q[13] = (double)NAN;
+        Q_D_q[14] = (double)NAN;
+        Q_D_q[15] = (double)NAN;
+        Q_D_q[16] = (double)NAN;
+        Q_D_q[17] = (double)NAN;
+        Q_D_q[18] = (double)NAN;
+        Q_D_q[19] = (double)NAN;
+        Q_D_q[20] = (double)NAN;
+        Q_D_q[21] = (double)NAN;
+        Q_D_q[22] = (double)NAN;
+        Q_D_q[23] = (double)NAN;
+        Q_D_q[24] = (double)NAN;
+        Q_D_q[25] = (double)NAN;
+        Q_D_q[26] = (double)NAN;
+        Q_D_q[27] = (double)NAN;
+        Q_D_q[28] = (double)NAN;
+        Q_D_q[29] = (double)NAN;
+        Q_D_q[30] = (double)NAN;
+        Q_D_q[31] = (double)NAN;
+        Q_D_q[32] = (double)NAN;
+        Q_D_q[33] = (double)NAN;
+        Q_D_q[34] = (double)NAN;
+        Q_D_q[35] = (double)NAN;
     }
     return status;
 }
@@ -911,51 +925,51 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_with_jacobians(
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        Q[0] = NAN;
-        Q[1] = NAN;
-        Q[2] = NAN;
-        Q[3] = NAN;
-        Q[4] = NAN;
-        Q[5] = NAN;
-        Q[6] = NAN;
-        Q[7] = NAN;
-        Q[8] = NAN;
-        Q_D_q[0] = NAN;
-        Q_D_q[1] = NAN;
-        Q_D_q[2] = NAN;
-        Q_D_q[3] = NAN;
-        Q_D_q[4] = NAN;
-        Q_D_q[5] = NAN;
-        Q_D_q[6] = NAN;
-        Q_D_q[7] = NAN;
-        Q_D_q[8] = NAN;
-        Q_D_q[9] = NAN;
-        Q_D_q[10] = NAN;
-        Q_D_q[11] = NAN;
-        Q_D_q[12] = NAN;
-        Q_D_q[13] = NAN;
-        Q_D_q[14] = NAN;
-        Q_D_q[15] = NAN;
-        Q_D_q[16] = NAN;
-        Q_D_q[17] = NAN;
-        Q_D_q[18] = NAN;
-        Q_D_q[19] = NAN;
-        Q_D_q[20] = NAN;
-        Q_D_q[21] = NAN;
-        Q_D_q[22] = NAN;
-        Q_D_q[23] = NAN;
-        Q_D_q[24] = NAN;
-        Q_D_q[25] = NAN;
-        Q_D_q[26] = NAN;
-        Q_D_q[27] = NAN;
-        Q_D_q[28] = NAN;
-        Q_D_q[29] = NAN;
-        Q_D_q[30] = NAN;
-        Q_D_q[31] = NAN;
-        Q_D_q[32] = NAN;
-        Q_D_q[33] = NAN;
-        Q_D_q[34] = NAN;
-        Q_D_q[35] = NAN;
+        Q[0] = (double)NAN;
+        Q[1] = (double)NAN;
+        Q[2] = (double)NAN;
+        Q[3] = (double)NAN;
+        Q[4] = (double)NAN;
+        Q[5] = (double)NAN;
+        Q[6] = (double)NAN;
+        Q[7] = (double)NAN;
+        Q[8] = (double)NAN;
+        Q_D_q[0] = (double)NAN;
+        Q_D_q[1] = (double)NAN;
+        Q_D_q[2] = (double)NAN;
+        Q_D_q[3] = (double)NAN;
+        Q_D_q[4] = (double)NAN;
+        Q_D_q[5] = (double)NAN;
+        Q_D_q[6] = (double)NAN;
+        Q_D_q[7] = (double)NAN;
+        Q_D_q[8] = (double)NAN;
+        Q_D_q[9] = (double)NAN;
+        Q_D_q[10] = (double)NAN;
+        Q_D_q[11] = (double)NAN;
+        Q_D_q[12] = (double)NAN;
+        Q_D_q[13] = (double)NAN;
+        Q_D_q[14] = (double)NAN;
+        Q_D_q[15] = (double)NAN;
+        Q_D_q[16] = (double)NAN;
+        Q_D_q[17] = (double)NAN;
+        Q_D_q[18] = (double)NAN;
+        Q_D_q[19] = (double)NAN;
+        Q_D_q[20] = (double)NAN;
+        Q_D_q[21] = (double)NAN;
+        Q_D_q[22] = (double)NAN;
+        Q_D_q[23] = (double)NAN;
+        Q_D_q[24] = (double)NAN;
+        Q_D_q[25] = (double)NAN;
+        Q_D_q[26] = (double)NAN;
+        Q_D_q[27] = (double)NAN;
+        Q_D_q[28] = (double)NAN;
+        Q_D_q[29] = (double)NAN;
+        Q_D_q[30] = (double)NAN;
+        Q_D_q[31] = (double)NAN;
+        Q_D_q[32] = (double)NAN;
+        Q_D_q[33] = (double)NAN;
+        Q_D_q[34] = (double)NAN;
+        Q_D_q[35] = (double)NAN;
     }
     return status;
 }

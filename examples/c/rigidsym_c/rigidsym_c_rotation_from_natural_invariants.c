@@ -9,6 +9,10 @@
 #include "rigidsym_c_rotation_from_natural_invariants.h"
 
 #if RIGIDSYM_C_WIDE
+#if defined(__clang__)
+#pragma clang diagnostic push   /* the promotions to long double are the point here */
+#pragma clang diagnostic ignored "-Wdouble-promotion"
+#endif
 /* rigidsym_c_rotation_from_natural_invariants in long double, rounded once to double: the rescue of a sample with an
  * extreme input (RIGIDSYM_C_WIDE, rigidsym_c_impl.h) */
 static int rigidsym_c_rotation_from_natural_invariants_wide(
@@ -56,18 +60,21 @@ static int rigidsym_c_rotation_from_natural_invariants_wide(
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        Q[0] = NAN;
-        Q[1] = NAN;
-        Q[2] = NAN;
-        Q[3] = NAN;
-        Q[4] = NAN;
-        Q[5] = NAN;
-        Q[6] = NAN;
-        Q[7] = NAN;
-        Q[8] = NAN;
+        Q[0] = (double)NAN;
+        Q[1] = (double)NAN;
+        Q[2] = (double)NAN;
+        Q[3] = (double)NAN;
+        Q[4] = (double)NAN;
+        Q[5] = (double)NAN;
+        Q[6] = (double)NAN;
+        Q[7] = (double)NAN;
+        Q[8] = (double)NAN;
     }
     return status;
 }
+#if defined(__clang__)
+#pragma clang diagnostic pop
+#endif
 #endif
 
 
@@ -123,15 +130,15 @@ static RIGIDSYM_C_COLD int rigidsym_c_rotation_from_natural_invariants_plain(
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        Q[0] = NAN;
-        Q[1] = NAN;
-        Q[2] = NAN;
-        Q[3] = NAN;
-        Q[4] = NAN;
-        Q[5] = NAN;
-        Q[6] = NAN;
-        Q[7] = NAN;
-        Q[8] = NAN;
+        Q[0] = (double)NAN;
+        Q[1] = (double)NAN;
+        Q[2] = (double)NAN;
+        Q[3] = (double)NAN;
+        Q[4] = (double)NAN;
+        Q[5] = (double)NAN;
+        Q[6] = (double)NAN;
+        Q[7] = (double)NAN;
+        Q[8] = (double)NAN;
     }
     return status;
 }
@@ -272,15 +279,15 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants(
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        Q[0] = NAN;
-        Q[1] = NAN;
-        Q[2] = NAN;
-        Q[3] = NAN;
-        Q[4] = NAN;
-        Q[5] = NAN;
-        Q[6] = NAN;
-        Q[7] = NAN;
-        Q[8] = NAN;
+        Q[0] = (double)NAN;
+        Q[1] = (double)NAN;
+        Q[2] = (double)NAN;
+        Q[3] = (double)NAN;
+        Q[4] = (double)NAN;
+        Q[5] = (double)NAN;
+        Q[6] = (double)NAN;
+        Q[7] = (double)NAN;
+        Q[8] = (double)NAN;
     }
     return status;
 }
@@ -539,6 +546,10 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_f32_batch(
 }
 
 #if RIGIDSYM_C_WIDE
+#if defined(__clang__)
+#pragma clang diagnostic push   /* the promotions to long double are the point here */
+#pragma clang diagnostic ignored "-Wdouble-promotion"
+#endif
 /* rigidsym_c_rotation_from_natural_invariants_with_jacobians in long double, rounded once to double: the rescue of a sample with an
  * extreme input (RIGIDSYM_C_WIDE, rigidsym_c_impl.h) */
 static int rigidsym_c_rotation_from_natural_invariants_with_jacobians_wide(
@@ -636,54 +647,57 @@ static int rigidsym_c_rotation_from_natural_invariants_with_jacobians_wide(
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        Q[0] = NAN;
-        Q[1] = NAN;
-        Q[2] = NAN;
-        Q[3] = NAN;
-        Q[4] = NAN;
-        Q[5] = NAN;
-        Q[6] = NAN;
-        Q[7] = NAN;
-        Q[8] = NAN;
-        Q_D_e[0] = NAN;
-        Q_D_e[1] = NAN;
-        Q_D_e[2] = NAN;
-        Q_D_e[3] = NAN;
-        Q_D_e[4] = NAN;
-        Q_D_e[5] = NAN;
-        Q_D_e[6] = NAN;
-        Q_D_e[7] = NAN;
-        Q_D_e[8] = NAN;
-        Q_D_e[9] = NAN;
-        Q_D_e[10] = NAN;
-        Q_D_e[11] = NAN;
-        Q_D_e[12] = NAN;
-        Q_D_e[13] = NAN;
-        Q_D_e[14] = NAN;
-        Q_D_e[15] = NAN;
-        Q_D_e[16] = NAN;
-        Q_D_e[17] = NAN;
-        Q_D_e[18] = NAN;
-        Q_D_e[19] = NAN;
-        Q_D_e[20] = NAN;
-        Q_D_e[21] = NAN;
-        Q_D_e[22] = NAN;
-        Q_D_e[23] = NAN;
-        Q_D_e[24] = NAN;
-        Q_D_e[25] = NAN;
-        Q_D_e[26] = NAN;
-        Q_D_phi[0] = NAN;
-        Q_D_phi[1] = NAN;
-        Q_D_phi[2] = NAN;
-        Q_D_phi[3] = NAN;
-        Q_D_phi[4] = NAN;
-        Q_D_phi[5] = NAN;
-        Q_D_phi[6] = NAN;
-        Q_D_phi[7] = NAN;
-        Q_D_phi[8] = NAN;
+        Q[0] = (double)NAN;
+        Q[1] = (double)NAN;
+        Q[2] = (double)NAN;
+        Q[3] = (double)NAN;
+        Q[4] = (double)NAN;
+        Q[5] = (double)NAN;
+        Q[6] = (double)NAN;
+        Q[7] = (double)NAN;
+        Q[8] = (double)NAN;
+        Q_D_e[0] = (double)NAN;
+        Q_D_e[1] = (double)NAN;
+        Q_D_e[2] = (double)NAN;
+        Q_D_e[3] = (double)NAN;
+        Q_D_e[4] = (double)NAN;
+        Q_D_e[5] = (double)NAN;
+        Q_D_e[6] = (double)NAN;
+        Q_D_e[7] = (double)NAN;
+        Q_D_e[8] = (double)NAN;
+        Q_D_e[9] = (double)NAN;
+        Q_D_e[10] = (double)NAN;
+        Q_D_e[11] = (double)NAN;
+        Q_D_e[12] = (double)NAN;
+        Q_D_e[13] = (double)NAN;
+        Q_D_e[14] = (double)NAN;
+        Q_D_e[15] = (double)NAN;
+        Q_D_e[16] = (double)NAN;
+        Q_D_e[17] = (double)NAN;
+        Q_D_e[18] = (double)NAN;
+        Q_D_e[19] = (double)NAN;
+        Q_D_e[20] = (double)NAN;
+        Q_D_e[21] = (double)NAN;
+        Q_D_e[22] = (double)NAN;
+        Q_D_e[23] = (double)NAN;
+        Q_D_e[24] = (double)NAN;
+        Q_D_e[25] = (double)NAN;
+        Q_D_e[26] = (double)NAN;
+        Q_D_phi[0] = (double)NAN;
+        Q_D_phi[1] = (double)NAN;
+        Q_D_phi[2] = (double)NAN;
+        Q_D_phi[3] = (double)NAN;
+        Q_D_phi[4] = (double)NAN;
+        Q_D_phi[5] = (double)NAN;
+        Q_D_phi[6] = (double)NAN;
+        Q_D_phi[7] = (double)NAN;
+        Q_D_phi[8] = (double)NAN;
     }
     return status;
 }
+#if defined(__clang__)
+#pragma clang diagnostic pop
+#endif
 #endif
 
 
@@ -789,51 +803,51 @@ static RIGIDSYM_C_COLD int rigidsym_c_rotation_from_natural_invariants_with_jaco
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        Q[0] = NAN;
-        Q[1] = NAN;
-        Q[2] = NAN;
-        Q[3] = NAN;
-        Q[4] = NAN;
-        Q[5] = NAN;
-        Q[6] = NAN;
-        Q[7] = NAN;
-        Q[8] = NAN;
-        Q_D_e[0] = NAN;
-        Q_D_e[1] = NAN;
-        Q_D_e[2] = NAN;
-        Q_D_e[3] = NAN;
-        Q_D_e[4] = NAN;
-        Q_D_e[5] = NAN;
-        Q_D_e[6] = NAN;
-        Q_D_e[7] = NAN;
-        Q_D_e[8] = NAN;
-        Q_D_e[9] = NAN;
-        Q_D_e[10] = NAN;
-        Q_D_e[11] = NAN;
-        Q_D_e[12] = NAN;
-        Q_D_e[13] = NAN;
-        Q_D_e[14] = NAN;
-        Q_D_e[15] = NAN;
-        Q_D_e[16] = NAN;
-        Q_D_e[17] = NAN;
-        Q_D_e[18] = NAN;
-        Q_D_e[19] = NAN;
-        Q_D_e[20] = NAN;
-        Q_D_e[21] = NAN;
-        Q_D_e[22] = NAN;
-        Q_D_e[23] = NAN;
-        Q_D_e[24] = NAN;
-        Q_D_e[25] = NAN;
-        Q_D_e[26] = NAN;
-        Q_D_phi[0] = NAN;
-        Q_D_phi[1] = NAN;
-        Q_D_phi[2] = NAN;
-        Q_D_phi[3] = NAN;
-        Q_D_phi[4] = NAN;
-        Q_D_phi[5] = NAN;
-        Q_D_phi[6] = NAN;
-        Q_D_phi[7] = NAN;
-        Q_D_phi[8] = NAN;
+        Q[0] = (double)NAN;
+        Q[1] = (double)NAN;
+        Q[2] = (double)NAN;
+        Q[3] = (double)NAN;
+        Q[4] = (double)NAN;
+        Q[5] = (double)NAN;
+        Q[6] = (double)NAN;
+        Q[7] = (double)NAN;
+        Q[8] = (double)NAN;
+        Q_D_e[0] = (double)NAN;
+        Q_D_e[1] = (double)NAN;
+        Q_D_e[2] = (double)NAN;
+        Q_D_e[3] = (double)NAN;
+        Q_D_e[4] = (double)NAN;
+        Q_D_e[5] = (double)NAN;
+        Q_D_e[6] = (double)NAN;
+        Q_D_e[7] = (double)NAN;
+        Q_D_e[8] = (double)NAN;
+        Q_D_e[9] = (double)NAN;
+        Q_D_e[10] = (double)NAN;
+        Q_D_e[11] = (double)NAN;
+        Q_D_e[12] = (double)NAN;
+        Q_D_e[13] = (double)NAN;
+        Q_D_e[14] = (double)NAN;
+        Q_D_e[15] = (double)NAN;
+        Q_D_e[16] = (double)NAN;
+        Q_D_e[17] = (double)NAN;
+        Q_D_e[18] = (double)NAN;
+        Q_D_e[19] = (double)NAN;
+        Q_D_e[20] = (double)NAN;
+        Q_D_e[21] = (double)NAN;
+        Q_D_e[22] = (double)NAN;
+        Q_D_e[23] = (double)NAN;
+        Q_D_e[24] = (double)NAN;
+        Q_D_e[25] = (double)NAN;
+        Q_D_e[26] = (double)NAN;
+        Q_D_phi[0] = (double)NAN;
+        Q_D_phi[1] = (double)NAN;
+        Q_D_phi[2] = (double)NAN;
+        Q_D_phi[3] = (double)NAN;
+        Q_D_phi[4] = (double)NAN;
+        Q_D_phi[5] = (double)NAN;
+        Q_D_phi[6] = (double)NAN;
+        Q_D_phi[7] = (double)NAN;
+        Q_D_phi[8] = (double)NAN;
     }
     return status;
 }
@@ -1026,51 +1040,51 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_with_jacobians(
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        Q[0] = NAN;
-        Q[1] = NAN;
-        Q[2] = NAN;
-        Q[3] = NAN;
-        Q[4] = NAN;
-        Q[5] = NAN;
-        Q[6] = NAN;
-        Q[7] = NAN;
-        Q[8] = NAN;
-        Q_D_e[0] = NAN;
-        Q_D_e[1] = NAN;
-        Q_D_e[2] = NAN;
-        Q_D_e[3] = NAN;
-        Q_D_e[4] = NAN;
-        Q_D_e[5] = NAN;
-        Q_D_e[6] = NAN;
-        Q_D_e[7] = NAN;
-        Q_D_e[8] = NAN;
-        Q_D_e[9] = NAN;
-        Q_D_e[10] = NAN;
-        Q_D_e[11] = NAN;
-        Q_D_e[12] = NAN;
-        Q_D_e[13] = NAN;
-        Q_D_e[14] = NAN;
-        Q_D_e[15] = NAN;
-        Q_D_e[16] = NAN;
-        Q_D_e[17] = NAN;
-        Q_D_e[18] = NAN;
-        Q_D_e[19] = NAN;
-        Q_D_e[20] = NAN;
-        Q_D_e[21] = NAN;
-        Q_D_e[22] = NAN;
-        Q_D_e[23] = NAN;
-        Q_D_e[24] = NAN;
-        Q_D_e[25] = NAN;
-        Q_D_e[26] = NAN;
-        Q_D_phi[0] = NAN;
-        Q_D_phi[1] = NAN;
-        Q_D_phi[2] = NAN;
-        Q_D_phi[3] = NAN;
-        Q_D_phi[4] = NAN;
-        Q_D_phi[5] = NAN;
-        Q_D_phi[6] = NAN;
-        Q_D_phi[7] = NAN;
-        Q_D_phi[8] = NAN;
+        Q[0] = (double)NAN;
+        Q[1] = (double)NAN;
+        Q[2] = (double)NAN;
+        Q[3] = (double)NAN;
+        Q[4] = (double)NAN;
+        Q[5] = (double)NAN;
+        Q[6] = (double)NAN;
+        Q[7] = (double)NAN;
+        Q[8] = (double)NAN;
+        Q_D_e[0] = (double)NAN;
+        Q_D_e[1] = (double)NAN;
+        Q_D_e[2] = (double)NAN;
+        Q_D_e[3] = (double)NAN;
+        Q_D_e[4] = (double)NAN;
+        Q_D_e[5] = (double)NAN;
+        Q_D_e[6] = (double)NAN;
+        Q_D_e[7] = (double)NAN;
+        Q_D_e[8] = (double)NAN;
+        Q_D_e[9] = (double)NAN;
+        Q_D_e[10] = (double)NAN;
+        Q_D_e[11] = (double)NAN;
+        Q_D_e[12] = (double)NAN;
+        Q_D_e[13] = (double)NAN;
+        Q_D_e[14] = (double)NAN;
+        Q_D_e[15] = (double)NAN;
+        Q_D_e[16] = (double)NAN;
+        Q_D_e[17] = (double)NAN;
+        Q_D_e[18] = (double)NAN;
+        Q_D_e[19] = (double)NAN;
+        Q_D_e[20] = (double)NAN;
+        Q_D_e[21] = (double)NAN;
+        Q_D_e[22] = (double)NAN;
+        Q_D_e[23] = (double)NAN;
+        Q_D_e[24] = (double)NAN;
+        Q_D_e[25] = (double)NAN;
+        Q_D_e[26] = (double)NAN;
+        Q_D_phi[0] = (double)NAN;
+        Q_D_phi[1] = (double)NAN;
+        Q_D_phi[2] = (double)NAN;
+        Q_D_phi[3] = (double)NAN;
+        Q_D_phi[4] = (double)NAN;
+        Q_D_phi[5] = (double)NAN;
+        Q_D_phi[6] = (double)NAN;
+        Q_D_phi[7] = (double)NAN;
+        Q_D_phi[8] = (double)NAN;
     }
     return status;
 }

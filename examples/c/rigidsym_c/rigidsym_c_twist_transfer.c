@@ -9,6 +9,10 @@
 #include "rigidsym_c_twist_transfer.h"
 
 #if RIGIDSYM_C_WIDE
+#if defined(__clang__)
+#pragma clang diagnostic push   /* the promotions to long double are the point here */
+#pragma clang diagnostic ignored "-Wdouble-promotion"
+#endif
 /* rigidsym_c_twist_transfer in long double, rounded once to double: the rescue of a sample with an
  * extreme input (RIGIDSYM_C_WIDE, rigidsym_c_impl.h) */
 static int rigidsym_c_twist_transfer_wide(
@@ -50,15 +54,18 @@ static int rigidsym_c_twist_transfer_wide(
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        t_P[0] = NAN;
-        t_P[1] = NAN;
-        t_P[2] = NAN;
-        t_P[3] = NAN;
-        t_P[4] = NAN;
-        t_P[5] = NAN;
+        t_P[0] = (double)NAN;
+        t_P[1] = (double)NAN;
+        t_P[2] = (double)NAN;
+        t_P[3] = (double)NAN;
+        t_P[4] = (double)NAN;
+        t_P[5] = (double)NAN;
     }
     return status;
 }
+#if defined(__clang__)
+#pragma clang diagnostic pop
+#endif
 #endif
 
 
@@ -163,12 +170,12 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_plain(
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        t_P[0] = NAN;
-        t_P[1] = NAN;
-        t_P[2] = NAN;
-        t_P[3] = NAN;
-        t_P[4] = NAN;
-        t_P[5] = NAN;
+        t_P[0] = (double)NAN;
+        t_P[1] = (double)NAN;
+        t_P[2] = (double)NAN;
+        t_P[3] = (double)NAN;
+        t_P[4] = (double)NAN;
+        t_P[5] = (double)NAN;
     }
     return status;
 }
@@ -326,12 +333,12 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer(
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        t_P[0] = NAN;
-        t_P[1] = NAN;
-        t_P[2] = NAN;
-        t_P[3] = NAN;
-        t_P[4] = NAN;
-        t_P[5] = NAN;
+        t_P[0] = (double)NAN;
+        t_P[1] = (double)NAN;
+        t_P[2] = (double)NAN;
+        t_P[3] = (double)NAN;
+        t_P[4] = (double)NAN;
+        t_P[5] = (double)NAN;
     }
     return status;
 }
@@ -653,6 +660,10 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_f32_batch(
 }
 
 #if RIGIDSYM_C_WIDE
+#if defined(__clang__)
+#pragma clang diagnostic push   /* the promotions to long double are the point here */
+#pragma clang diagnostic ignored "-Wdouble-promotion"
+#endif
 /* rigidsym_c_twist_transfer_with_jacobians in long double, rounded once to double: the rescue of a sample with an
  * extreme input (RIGIDSYM_C_WIDE, rigidsym_c_impl.h) */
 static int rigidsym_c_twist_transfer_with_jacobians_wide(
@@ -775,87 +786,90 @@ static int rigidsym_c_twist_transfer_with_jacobians_wide(
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        t_P[0] = NAN;
-        t_P[1] = NAN;
-        t_P[2] = NAN;
-        t_P[3] = NAN;
-        t_P[4] = NAN;
-        t_P[5] = NAN;
-        t_P_D_t_A[0] = NAN;
-        t_P_D_t_A[1] = NAN;
-        t_P_D_t_A[2] = NAN;
-        t_P_D_t_A[3] = NAN;
-        t_P_D_t_A[4] = NAN;
-        t_P_D_t_A[5] = NAN;
-        t_P_D_t_A[6] = NAN;
-        t_P_D_t_A[7] = NAN;
-        t_P_D_t_A[8] = NAN;
-        t_P_D_t_A[9] = NAN;
-        t_P_D_t_A[10] = NAN;
-        t_P_D_t_A[11] = NAN;
-        t_P_D_t_A[12] = NAN;
-        t_P_D_t_A[13] = NAN;
-        t_P_D_t_A[14] = NAN;
-        t_P_D_t_A[15] = NAN;
-        t_P_D_t_A[16] = NAN;
-        t_P_D_t_A[17] = NAN;
-        t_P_D_t_A[18] = NAN;
-        t_P_D_t_A[19] = NAN;
-        t_P_D_t_A[20] = NAN;
-        t_P_D_t_A[21] = NAN;
-        t_P_D_t_A[22] = NAN;
-        t_P_D_t_A[23] = NAN;
-        t_P_D_t_A[24] = NAN;
-        t_P_D_t_A[25] = NAN;
-        t_P_D_t_A[26] = NAN;
-        t_P_D_t_A[27] = NAN;
-        t_P_D_t_A[28] = NAN;
-        t_P_D_t_A[29] = NAN;
-        t_P_D_t_A[30] = NAN;
-        t_P_D_t_A[31] = NAN;
-        t_P_D_t_A[32] = NAN;
-        t_P_D_t_A[33] = NAN;
-        t_P_D_t_A[34] = NAN;
-        t_P_D_t_A[35] = NAN;
-        t_P_D_a[0] = NAN;
-        t_P_D_a[1] = NAN;
-        t_P_D_a[2] = NAN;
-        t_P_D_a[3] = NAN;
-        t_P_D_a[4] = NAN;
-        t_P_D_a[5] = NAN;
-        t_P_D_a[6] = NAN;
-        t_P_D_a[7] = NAN;
-        t_P_D_a[8] = NAN;
-        t_P_D_a[9] = NAN;
-        t_P_D_a[10] = NAN;
-        t_P_D_a[11] = NAN;
-        t_P_D_a[12] = NAN;
-        t_P_D_a[13] = NAN;
-        t_P_D_a[14] = NAN;
-        t_P_D_a[15] = NAN;
-        t_P_D_a[16] = NAN;
-        t_P_D_a[17] = NAN;
-        t_P_D_p[0] = NAN;
-        t_P_D_p[1] = NAN;
-        t_P_D_p[2] = NAN;
-        t_P_D_p[3] = NAN;
-        t_P_D_p[4] = NAN;
-        t_P_D_p[5] = NAN;
-        t_P_D_p[6] = NAN;
-        t_P_D_p[7] = NAN;
-        t_P_D_p[8] = NAN;
-        t_P_D_p[9] = NAN;
-        t_P_D_p[10] = NAN;
-        t_P_D_p[11] = NAN;
-        t_P_D_p[12] = NAN;
-        t_P_D_p[13] = NAN;
-        t_P_D_p[14] = NAN;
-        t_P_D_p[15] = NAN;
-        t_P_D_p[16] = NAN;
-        t_P_D_p[17] = NAN;
+        t_P[0] = (double)NAN;
+        t_P[1] = (double)NAN;
+        t_P[2] = (double)NAN;
+        t_P[3] = (double)NAN;
+        t_P[4] = (double)NAN;
+        t_P[5] = (double)NAN;
+        t_P_D_t_A[0] = (double)NAN;
+        t_P_D_t_A[1] = (double)NAN;
+        t_P_D_t_A[2] = (double)NAN;
+        t_P_D_t_A[3] = (double)NAN;
+        t_P_D_t_A[4] = (double)NAN;
+        t_P_D_t_A[5] = (double)NAN;
+        t_P_D_t_A[6] = (double)NAN;
+        t_P_D_t_A[7] = (double)NAN;
+        t_P_D_t_A[8] = (double)NAN;
+        t_P_D_t_A[9] = (double)NAN;
+        t_P_D_t_A[10] = (double)NAN;
+        t_P_D_t_A[11] = (double)NAN;
+        t_P_D_t_A[12] = (double)NAN;
+        t_P_D_t_A[13] = (double)NAN;
+        t_P_D_t_A[14] = (double)NAN;
+        t_P_D_t_A[15] = (double)NAN;
+        t_P_D_t_A[16] = (double)NAN;
+        t_P_D_t_A[17] = (double)NAN;
+        t_P_D_t_A[18] = (double)NAN;
+        t_P_D_t_A[19] = (double)NAN;
+        t_P_D_t_A[20] = (double)NAN;
+        t_P_D_t_A[21] = (double)NAN;
+        t_P_D_t_A[22] = (double)NAN;
+        t_P_D_t_A[23] = (double)NAN;
+        t_P_D_t_A[24] = (double)NAN;
+        t_P_D_t_A[25] = (double)NAN;
+        t_P_D_t_A[26] = (double)NAN;
+        t_P_D_t_A[27] = (double)NAN;
+        t_P_D_t_A[28] = (double)NAN;
+        t_P_D_t_A[29] = (double)NAN;
+        t_P_D_t_A[30] = (double)NAN;
+        t_P_D_t_A[31] = (double)NAN;
+        t_P_D_t_A[32] = (double)NAN;
+        t_P_D_t_A[33] = (double)NAN;
+        t_P_D_t_A[34] = (double)NAN;
+        t_P_D_t_A[35] = (double)NAN;
+        t_P_D_a[0] = (double)NAN;
+        t_P_D_a[1] = (double)NAN;
+        t_P_D_a[2] = (double)NAN;
+        t_P_D_a[3] = (double)NAN;
+        t_P_D_a[4] = (double)NAN;
+        t_P_D_a[5] = (double)NAN;
+        t_P_D_a[6] = (double)NAN;
+        t_P_D_a[7] = (double)NAN;
+        t_P_D_a[8] = (double)NAN;
+        t_P_D_a[9] = (double)NAN;
+        t_P_D_a[10] = (double)NAN;
+        t_P_D_a[11] = (double)NAN;
+        t_P_D_a[12] = (double)NAN;
+        t_P_D_a[13] = (double)NAN;
+        t_P_D_a[14] = (double)NAN;
+        t_P_D_a[15] = (double)NAN;
+        t_P_D_a[16] = (double)NAN;
+        t_P_D_a[17] = (double)NAN;
+        t_P_D_p[0] = (double)NAN;
+        t_P_D_p[1] = (double)NAN;
+        t_P_D_p[2] = (double)NAN;
+        t_P_D_p[3] = (double)NAN;
+        t_P_D_p[4] = (double)NAN;
+        t_P_D_p[5] = (double)NAN;
+        t_P_D_p[6] = (double)NAN;
+        t_P_D_p[7] = (double)NAN;
+        t_P_D_p[8] = (double)NAN;
+        t_P_D_p[9] = (double)NAN;
+        t_P_D_p[10] = (double)NAN;
+        t_P_D_p[11] = (double)NAN;
+        t_P_D_p[12] = (double)NAN;
+        t_P_D_p[13] = (double)NAN;
+        t_P_D_p[14] = (double)NAN;
+        t_P_D_p[15] = (double)NAN;
+        t_P_D_p[16] = (double)NAN;
+        t_P_D_p[17] = (double)NAN;
     }
     return status;
 }
+#if defined(__clang__)
+#pragma clang diagnostic pop
+#endif
 #endif
 
 
@@ -1056,84 +1070,84 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_with_jacobians_plain(
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        t_P[0] = NAN;
-        t_P[1] = NAN;
-        t_P[2] = NAN;
-        t_P[3] = NAN;
-        t_P[4] = NAN;
-        t_P[5] = NAN;
-        t_P_D_t_A[0] = NAN;
-        t_P_D_t_A[1] = NAN;
-        t_P_D_t_A[2] = NAN;
-        t_P_D_t_A[3] = NAN;
-        t_P_D_t_A[4] = NAN;
-        t_P_D_t_A[5] = NAN;
-        t_P_D_t_A[6] = NAN;
-        t_P_D_t_A[7] = NAN;
-        t_P_D_t_A[8] = NAN;
-        t_P_D_t_A[9] = NAN;
-        t_P_D_t_A[10] = NAN;
-        t_P_D_t_A[11] = NAN;
-        t_P_D_t_A[12] = NAN;
-        t_P_D_t_A[13] = NAN;
-        t_P_D_t_A[14] = NAN;
-        t_P_D_t_A[15] = NAN;
-        t_P_D_t_A[16] = NAN;
-        t_P_D_t_A[17] = NAN;
-        t_P_D_t_A[18] = NAN;
-        t_P_D_t_A[19] = NAN;
-        t_P_D_t_A[20] = NAN;
-        t_P_D_t_A[21] = NAN;
-        t_P_D_t_A[22] = NAN;
-        t_P_D_t_A[23] = NAN;
-        t_P_D_t_A[24] = NAN;
-        t_P_D_t_A[25] = NAN;
-        t_P_D_t_A[26] = NAN;
-        t_P_D_t_A[27] = NAN;
-        t_P_D_t_A[28] = NAN;
-        t_P_D_t_A[29] = NAN;
-        t_P_D_t_A[30] = NAN;
-        t_P_D_t_A[31] = NAN;
-        t_P_D_t_A[32] = NAN;
-        t_P_D_t_A[33] = NAN;
-        t_P_D_t_A[34] = NAN;
-        t_P_D_t_A[35] = NAN;
-        t_P_D_a[0] = NAN;
-        t_P_D_a[1] = NAN;
-        t_P_D_a[2] = NAN;
-        t_P_D_a[3] = NAN;
-        t_P_D_a[4] = NAN;
-        t_P_D_a[5] = NAN;
-        t_P_D_a[6] = NAN;
-        t_P_D_a[7] = NAN;
-        t_P_D_a[8] = NAN;
-        t_P_D_a[9] = NAN;
-        t_P_D_a[10] = NAN;
-        t_P_D_a[11] = NAN;
-        t_P_D_a[12] = NAN;
-        t_P_D_a[13] = NAN;
-        t_P_D_a[14] = NAN;
-        t_P_D_a[15] = NAN;
-        t_P_D_a[16] = NAN;
-        t_P_D_a[17] = NAN;
-        t_P_D_p[0] = NAN;
-        t_P_D_p[1] = NAN;
-        t_P_D_p[2] = NAN;
-        t_P_D_p[3] = NAN;
-        t_P_D_p[4] = NAN;
-        t_P_D_p[5] = NAN;
-        t_P_D_p[6] = NAN;
-        t_P_D_p[7] = NAN;
-        t_P_D_p[8] = NAN;
-        t_P_D_p[9] = NAN;
-        t_P_D_p[10] = NAN;
-        t_P_D_p[11] = NAN;
-        t_P_D_p[12] = NAN;
-        t_P_D_p[13] = NAN;
-        t_P_D_p[14] = NAN;
-        t_P_D_p[15] = NAN;
-        t_P_D_p[16] = NAN;
-        t_P_D_p[17] = NAN;
+        t_P[0] = (double)NAN;
+        t_P[1] = (double)NAN;
+        t_P[2] = (double)NAN;
+        t_P[3] = (double)NAN;
+        t_P[4] = (double)NAN;
+        t_P[5] = (double)NAN;
+        t_P_D_t_A[0] = (double)NAN;
+        t_P_D_t_A[1] = (double)NAN;
+        t_P_D_t_A[2] = (double)NAN;
+        t_P_D_t_A[3] = (double)NAN;
+        t_P_D_t_A[4] = (double)NAN;
+        t_P_D_t_A[5] = (double)NAN;
+        t_P_D_t_A[6] = (double)NAN;
+        t_P_D_t_A[7] = (double)NAN;
+        t_P_D_t_A[8] = (double)NAN;
+        t_P_D_t_A[9] = (double)NAN;
+        t_P_D_t_A[10] = (double)NAN;
+        t_P_D_t_A[11] = (double)NAN;
+        t_P_D_t_A[12] = (double)NAN;
+        t_P_D_t_A[13] = (double)NAN;
+        t_P_D_t_A[14] = (double)NAN;
+        t_P_D_t_A[15] = (double)NAN;
+        t_P_D_t_A[16] = (double)NAN;
+        t_P_D_t_A[17] = (double)NAN;
+        t_P_D_t_A[18] = (double)NAN;
+        t_P_D_t_A[19] = (double)NAN;
+        t_P_D_t_A[20] = (double)NAN;
+        t_P_D_t_A[21] = (double)NAN;
+        t_P_D_t_A[22] = (double)NAN;
+        t_P_D_t_A[23] = (double)NAN;
+        t_P_D_t_A[24] = (double)NAN;
+        t_P_D_t_A[25] = (double)NAN;
+        t_P_D_t_A[26] = (double)NAN;
+        t_P_D_t_A[27] = (double)NAN;
+        t_P_D_t_A[28] = (double)NAN;
+        t_P_D_t_A[29] = (double)NAN;
+        t_P_D_t_A[30] = (double)NAN;
+        t_P_D_t_A[31] = (double)NAN;
+        t_P_D_t_A[32] = (double)NAN;
+        t_P_D_t_A[33] = (double)NAN;
+        t_P_D_t_A[34] = (double)NAN;
+        t_P_D_t_A[35] = (double)NAN;
+        t_P_D_a[0] = (double)NAN;
+        t_P_D_a[1] = (double)NAN;
+        t_P_D_a[2] = (double)NAN;
+        t_P_D_a[3] = (double)NAN;
+        t_P_D_a[4] = (double)NAN;
+        t_P_D_a[5] = (double)NAN;
+        t_P_D_a[6] = (double)NAN;
+        t_P_D_a[7] = (double)NAN;
+        t_P_D_a[8] = (double)NAN;
+        t_P_D_a[9] = (double)NAN;
+        t_P_D_a[10] = (double)NAN;
+        t_P_D_a[11] = (double)NAN;
+        t_P_D_a[12] = (double)NAN;
+        t_P_D_a[13] = (double)NAN;
+        t_P_D_a[14] = (double)NAN;
+        t_P_D_a[15] = (double)NAN;
+        t_P_D_a[16] = (double)NAN;
+        t_P_D_a[17] = (double)NAN;
+        t_P_D_p[0] = (double)NAN;
+        t_P_D_p[1] = (double)NAN;
+        t_P_D_p[2] = (double)NAN;
+        t_P_D_p[3] = (double)NAN;
+        t_P_D_p[4] = (double)NAN;
+        t_P_D_p[5] = (double)NAN;
+        t_P_D_p[6] = (double)NAN;
+        t_P_D_p[7] = (double)NAN;
+        t_P_D_p[8] = (double)NAN;
+        t_P_D_p[9] = (double)NAN;
+        t_P_D_p[10] = (double)NAN;
+        t_P_D_p[11] = (double)NAN;
+        t_P_D_p[12] = (double)NAN;
+        t_P_D_p[13] = (double)NAN;
+        t_P_D_p[14] = (double)NAN;
+        t_P_D_p[15] = (double)NAN;
+        t_P_D_p[16] = (double)NAN;
+        t_P_D_p[17] = (double)NAN;
     }
     return status;
 }
@@ -1375,84 +1389,84 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_with_jacobians(
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        t_P[0] = NAN;
-        t_P[1] = NAN;
-        t_P[2] = NAN;
-        t_P[3] = NAN;
-        t_P[4] = NAN;
-        t_P[5] = NAN;
-        t_P_D_t_A[0] = NAN;
-        t_P_D_t_A[1] = NAN;
-        t_P_D_t_A[2] = NAN;
-        t_P_D_t_A[3] = NAN;
-        t_P_D_t_A[4] = NAN;
-        t_P_D_t_A[5] = NAN;
-        t_P_D_t_A[6] = NAN;
-        t_P_D_t_A[7] = NAN;
-        t_P_D_t_A[8] = NAN;
-        t_P_D_t_A[9] = NAN;
-        t_P_D_t_A[10] = NAN;
-        t_P_D_t_A[11] = NAN;
-        t_P_D_t_A[12] = NAN;
-        t_P_D_t_A[13] = NAN;
-        t_P_D_t_A[14] = NAN;
-        t_P_D_t_A[15] = NAN;
-        t_P_D_t_A[16] = NAN;
-        t_P_D_t_A[17] = NAN;
-        t_P_D_t_A[18] = NAN;
-        t_P_D_t_A[19] = NAN;
-        t_P_D_t_A[20] = NAN;
-        t_P_D_t_A[21] = NAN;
-        t_P_D_t_A[22] = NAN;
-        t_P_D_t_A[23] = NAN;
-        t_P_D_t_A[24] = NAN;
-        t_P_D_t_A[25] = NAN;
-        t_P_D_t_A[26] = NAN;
-        t_P_D_t_A[27] = NAN;
-        t_P_D_t_A[28] = NAN;
-        t_P_D_t_A[29] = NAN;
-        t_P_D_t_A[30] = NAN;
-        t_P_D_t_A[31] = NAN;
-        t_P_D_t_A[32] = NAN;
-        t_P_D_t_A[33] = NAN;
-        t_P_D_t_A[34] = NAN;
-        t_P_D_t_A[35] = NAN;
-        t_P_D_a[0] = NAN;
-        t_P_D_a[1] = NAN;
-        t_P_D_a[2] = NAN;
-        t_P_D_a[3] = NAN;
-        t_P_D_a[4] = NAN;
-        t_P_D_a[5] = NAN;
-        t_P_D_a[6] = NAN;
-        t_P_D_a[7] = NAN;
-        t_P_D_a[8] = NAN;
-        t_P_D_a[9] = NAN;
-        t_P_D_a[10] = NAN;
-        t_P_D_a[11] = NAN;
-        t_P_D_a[12] = NAN;
-        t_P_D_a[13] = NAN;
-        t_P_D_a[14] = NAN;
-        t_P_D_a[15] = NAN;
-        t_P_D_a[16] = NAN;
-        t_P_D_a[17] = NAN;
-        t_P_D_p[0] = NAN;
-        t_P_D_p[1] = NAN;
-        t_P_D_p[2] = NAN;
-        t_P_D_p[3] = NAN;
-        t_P_D_p[4] = NAN;
-        t_P_D_p[5] = NAN;
-        t_P_D_p[6] = NAN;
-        t_P_D_p[7] = NAN;
-        t_P_D_p[8] = NAN;
-        t_P_D_p[9] = NAN;
-        t_P_D_p[10] = NAN;
-        t_P_D_p[11] = NAN;
-        t_P_D_p[12] = NAN;
-        t_P_D_p[13] = NAN;
-        t_P_D_p[14] = NAN;
-        t_P_D_p[15] = NAN;
-        t_P_D_p[16] = NAN;
-        t_P_D_p[17] = NAN;
+        t_P[0] = (double)NAN;
+        t_P[1] = (double)NAN;
+        t_P[2] = (double)NAN;
+        t_P[3] = (double)NAN;
+        t_P[4] = (double)NAN;
+        t_P[5] = (double)NAN;
+        t_P_D_t_A[0] = (double)NAN;
+        t_P_D_t_A[1] = (double)NAN;
+        t_P_D_t_A[2] = (double)NAN;
+        t_P_D_t_A[3] = (double)NAN;
+        t_P_D_t_A[4] = (double)NAN;
+        t_P_D_t_A[5] = (double)NAN;
+        t_P_D_t_A[6] = (double)NAN;
+        t_P_D_t_A[7] = (double)NAN;
+        t_P_D_t_A[8] = (double)NAN;
+        t_P_D_t_A[9] = (double)NAN;
+        t_P_D_t_A[10] = (double)NAN;
+        t_P_D_t_A[11] = (double)NAN;
+        t_P_D_t_A[12] = (double)NAN;
+        t_P_D_t_A[13] = (double)NAN;
+        t_P_D_t_A[14] = (double)NAN;
+        t_P_D_t_A[15] = (double)NAN;
+        t_P_D_t_A[16] = (double)NAN;
+        t_P_D_t_A[17] = (double)NAN;
+        t_P_D_t_A[18] = (double)NAN;
+        t_P_D_t_A[19] = (double)NAN;
+        t_P_D_t_A[20] = (double)NAN;
+        t_P_D_t_A[21] = (double)NAN;
+        t_P_D_t_A[22] = (double)NAN;
+        t_P_D_t_A[23] = (double)NAN;
+        t_P_D_t_A[24] = (double)NAN;
+        t_P_D_t_A[25] = (double)NAN;
+        t_P_D_t_A[26] = (double)NAN;
+        t_P_D_t_A[27] = (double)NAN;
+        t_P_D_t_A[28] = (double)NAN;
+        t_P_D_t_A[29] = (double)NAN;
+        t_P_D_t_A[30] = (double)NAN;
+        t_P_D_t_A[31] = (double)NAN;
+        t_P_D_t_A[32] = (double)NAN;
+        t_P_D_t_A[33] = (double)NAN;
+        t_P_D_t_A[34] = (double)NAN;
+        t_P_D_t_A[35] = (double)NAN;
+        t_P_D_a[0] = (double)NAN;
+        t_P_D_a[1] = (double)NAN;
+        t_P_D_a[2] = (double)NAN;
+        t_P_D_a[3] = (double)NAN;
+        t_P_D_a[4] = (double)NAN;
+        t_P_D_a[5] = (double)NAN;
+        t_P_D_a[6] = (double)NAN;
+        t_P_D_a[7] = (double)NAN;
+        t_P_D_a[8] = (double)NAN;
+        t_P_D_a[9] = (double)NAN;
+        t_P_D_a[10] = (double)NAN;
+        t_P_D_a[11] = (double)NAN;
+        t_P_D_a[12] = (double)NAN;
+        t_P_D_a[13] = (double)NAN;
+        t_P_D_a[14] = (double)NAN;
+        t_P_D_a[15] = (double)NAN;
+        t_P_D_a[16] = (double)NAN;
+        t_P_D_a[17] = (double)NAN;
+        t_P_D_p[0] = (double)NAN;
+        t_P_D_p[1] = (double)NAN;
+        t_P_D_p[2] = (double)NAN;
+        t_P_D_p[3] = (double)NAN;
+        t_P_D_p[4] = (double)NAN;
+        t_P_D_p[5] = (double)NAN;
+        t_P_D_p[6] = (double)NAN;
+        t_P_D_p[7] = (double)NAN;
+        t_P_D_p[8] = (double)NAN;
+        t_P_D_p[9] = (double)NAN;
+        t_P_D_p[10] = (double)NAN;
+        t_P_D_p[11] = (double)NAN;
+        t_P_D_p[12] = (double)NAN;
+        t_P_D_p[13] = (double)NAN;
+        t_P_D_p[14] = (double)NAN;
+        t_P_D_p[15] = (double)NAN;
+        t_P_D_p[16] = (double)NAN;
+        t_P_D_p[17] = (double)NAN;
     }
     return status;
 }
