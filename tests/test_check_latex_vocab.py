@@ -326,9 +326,11 @@ def test_a_chain_of_dots_with_three_vectors_is_refused(latex, let):
     """Found while reading the triple product's change: a \\cdot b \\cdot c of 3-vectors
     was read as the grammar groups it, (a · b) c, and so verified against it, when
     a (b · c) is as typed and another vector: a guess. Both sides of the guess are refused,
-    naming the two groupings."""
-    with pytest.raises(LatexError, match=r"groupings differ"):
+    naming the two groupings, and asking for parentheses, not for a --let (none would
+    change the groupings)."""
+    with pytest.raises(LatexError, match=r"groupings differ") as info:
         rigidsym.check_latex(latex, let=let)
+    assert "write parentheses" in str(info.value) and "--let" not in str(info.value)
 
 
 @pytest.mark.parametrize("latex, let, verdict", [

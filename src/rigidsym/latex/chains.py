@@ -5,6 +5,8 @@ which TeX does not say; :func:`rigidsym.latex.rewrites.mixed_products` marks suc
 these functions, called by :class:`rigidsym.latex.bookrules.BookRules` with the reader
 ``r`` (its ``_val``, ``dot``, ``cross``, ``readings`` and ``_note``), read every grouping,
 keep the ones whose shapes fit, and refuse where those differ: never one of them by hope.
+Such a refusal is of construct ``grouping``: its fix is parentheses, so the reader neither
+retries other shapes nor suggests a ``--let``.
 """
 
 from __future__ import annotations
@@ -25,7 +27,7 @@ def dot_chain(r, items):
         t = [notation.text(v) for v in vals]
         raise LatexError(f"{' · '.join(t)} (no parentheses): with three vectors its "
                          f"groupings differ, ({t[0]} · {t[1]}) {t[2]} against {t[0]} "
-                         f"({t[1]} · {t[2]}); write parentheses", "shapes")
+                         f"({t[1]} · {t[2]}); write parentheses", "grouping")
     out = vals[0]
     for v in vals[1:]:
         out = r.dot([out, v])
@@ -72,7 +74,7 @@ def mixed(r, items, first: str):
         if _shape(scalar) is not None:
             raise LatexError(f"{chain} (no parentheses): both groupings fit the shapes "
                              f"and may differ, {said['left']} and {said['right']}; write "
-                             f"parentheses", "shapes")
+                             f"parentheses", "grouping")
         side = "right" if first == "dot" else "left"
         other = "right" if side == "left" else "left"
         why = (f"{said[other]} is the same value ({notation.text(scalar)} a scalar, × "

@@ -49,7 +49,7 @@ def multiple_angles(t):
     return t
 
 
-_PRODUCTS = {"dot": "\\cdot", "cross": "\\times"}
+_PRODUCTS = {"dot": "·", "cross": "×"}   # the product rules, and their signs in messages
 
 
 def mixed_products(t):
@@ -81,10 +81,10 @@ def mixed_products(t):
             continue
         if len(ops) > 2:
             raise LatexError(
-                f"a chain of {len(ops)} products mixing \\cdot and \\times with no "
-                f"parentheses ({' '.join(_PRODUCTS[o] for o in ops)}): its groupings are not "
-                f"enumerated, and a verdict on one would be a guess; write parentheses, "
-                f"e.g. a \\cdot (b \\times c)", "shapes")
+                f"a chain of {len(ops)} products mixing · and × with no parentheses "
+                f"({' '.join(_PRODUCTS[o] for o in ops)}): its groupings are not enumerated, and "
+                f"a verdict on one would be a guess; write parentheses, e.g. a · (b × c)",
+                "grouping")
         inner = spine[1]
         sub.data = f"{inner.data}_{sub.data}"  # dot_cross: a \\cdot b \\times c
         sub.children = [*inner.children, sub.children[1]]
