@@ -220,6 +220,9 @@ def caret(text: str, pos: int, width: int = 1) -> str:
     return f"  {text}\n  {' ' * pos}{'^' * max(width, 1)}"
 
 
+# \left( ... \right), \bigl( ... \bigr): parentheses TeX only draws taller, read as ( ... ) so
+# that R_z\left(\alpha\right) is the application R_z(\alpha) (a product of a free scalar
+# R_z before the sixth session of wave 6: R_z\left(0\right)a = 0 verified)
 _SIZED_PAREN = re.compile(r"(?:\\left|\\[bB]igg?l)\s*\(|(?:\\right|\\[bB]igg?r)\s*\)")
 
 

@@ -131,8 +131,3 @@ def subscripts_first(t):
         sub.data = "power" if sub.data == "power_sub" else "apply_pre"
         sub.children = [x, sup, *rest]
     return t
-
-
-# \left( ... \right), \bigl( ... \bigr): parentheses TeX only draws taller, read as ( ... ) so
-# that R_z\left(\alpha\right) is the application R_z(\alpha) (a product of a free scalar
-# R_z before the sixth session of wave 6: R_z\left(0\right)a = 0 verified)
