@@ -1,6 +1,6 @@
 """Build the package's C kernels into the extension module ``rigidsym.kernels._ckernels``.
 
-Everything else is in pyproject.toml. The compiling is :mod:`rigidsym.kernels._build`'s (the
+Everything else is in pyproject.toml. The compiling is :mod:`rigidsym.kernels.cbuild.driver`'s (the
 same driver and flags as a run-time build), loaded by path: rigidsym is not importable while
 it is being built. Its objects are compiled in parallel, one per source and build path (the
 x86-64-v2 baseline and x86-64-v3 on x86-64, chosen at import by the module's dispatcher).
@@ -25,7 +25,7 @@ STATS = "_ckernels.build.json"
 
 def _driver():
     spec = importlib.util.spec_from_file_location(
-        "_rigidsym_build", HERE / "src" / "rigidsym" / "kernels" / "_build.py")
+        "_rigidsym_build", HERE / "src" / "rigidsym" / "kernels" / "cbuild" / "driver.py")
     mod = importlib.util.module_from_spec(spec)
     sys.modules[spec.name] = mod          # dataclasses look their module up by name
     spec.loader.exec_module(mod)

@@ -44,7 +44,7 @@ import _accuracy_points as P
 import _accuracy_ref as R
 import numpy as np
 
-from rigidsym.codegen import rule
+from rigidsym.codegen.accuracy import rule
 
 #: neighbours of the point in the cloud (the point itself is the first of N + 1)
 N = 32

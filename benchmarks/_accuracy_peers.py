@@ -1,5 +1,5 @@
 """The peers of the accuracy harness (issue 37 item 1, issue 48 item 2): what a user would
-call instead, from the package's table (:mod:`rigidsym.codegen.peers`: pytransform3d,
+call instead, from the package's table (:mod:`rigidsym.codegen.accuracy.peers`: pytransform3d,
 Pinocchio, PyPose, jaxlie, spatialmath-python, Modern Robotics' library, each wrapped to the
 kernel's conventions), evaluated at the harness's points. Test-only oracles: the
 ``[oracles]`` extra; a peer whose library is missing is left out (the harness then compares
@@ -15,7 +15,7 @@ from collections.abc import Callable
 
 import numpy as np
 
-from rigidsym.codegen import peers as table
+from rigidsym.codegen.accuracy import peers as table
 
 
 def peers(name: str) -> list[tuple[str, Callable]]:
@@ -66,11 +66,12 @@ def evaluate(name: str, arrays: list[np.ndarray], n_out: int) -> dict[str, np.nd
 
 
 def textbook(name: str, arrays: list[np.ndarray], dtype) -> np.ndarray:
-    """The textbook formula (the declaration, naively; :func:`rigidsym.codegen.rule.textbook`)
+    """The textbook formula (the declaration, naively;
+    :func:`rigidsym.codegen.accuracy.rule.textbook`)
     at the rows of ``arrays`` in ``dtype`` arithmetic: ``(n, outputs)`` float64."""
     import _accuracy_ref as R
 
-    from rigidsym.codegen import rule
+    from rigidsym.codegen.accuracy import rule
 
     n = arrays[0].shape[0]
     return rule.textbook(R.kernel_of(name), [c for a in arrays for c in a.reshape(n, -1).T],

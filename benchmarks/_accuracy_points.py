@@ -1,7 +1,7 @@
-"""The regimes of the accuracy harness: :mod:`rigidsym.codegen.regimes` (issue 37 item 2:
+"""The regimes of the accuracy harness: :mod:`rigidsym.codegen.accuracy.regimes` (issue 37 item 2:
 the code generator chooses its forms over the same regimes)."""
 
-from rigidsym.codegen.regimes import (  # noqa: F401
+from rigidsym.codegen.accuracy.regimes import (  # noqa: F401
     STEPS,
     STEPS32,
     q,

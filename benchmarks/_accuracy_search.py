@@ -20,7 +20,7 @@ import _accuracy_ref as R
 import accuracy as A
 import numpy as np
 
-from rigidsym.codegen.regimes import _random_arg
+from rigidsym.codegen.accuracy.regimes import _random_arg
 
 #: the exponent range of the random start points (float32: a smaller one)
 EXP = {np.float64: 8, np.float32: 8}

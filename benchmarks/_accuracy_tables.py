@@ -87,9 +87,9 @@ def summary_table(data: dict) -> str:
 
 
 def peer_table(data: dict) -> str:
-    """docs/accuracy.md's peer column: the package's table (:mod:`rigidsym.codegen.peers`),
+    """docs/accuracy.md's peer column: the package's table (:mod:`rigidsym.codegen.accuracy.peers`),
     not the data (``data`` unused: every table here takes it)."""
-    from rigidsym.codegen import peers
+    from rigidsym.codegen.accuracy import peers
 
     return peers.markdown()
 

@@ -52,7 +52,7 @@ def _euler(name: str) -> str:
 def thresholds() -> dict[str, str]:
     """``{kernel name: threshold}`` for every kernel with a singular set (Jacobian kernels
     and Euler-angle variants included)."""
-    from rigidsym.kernels import _state
+    from rigidsym.kernels.runtime import state as _state
 
     out = {}
     for name, m in _state.meta().items():

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from rigidsym._io import write_atomic
+from rigidsym.core.files import write_atomic
 
 
 def write_section(path: Path, block: str, begin: str, end: str) -> None:

@@ -13,7 +13,8 @@ Per output ``o`` of a sample: ``err = ||computed - ref|| / ||ref||`` and the con
 number ``kappa = sum_i ||J_oi|| ||x_i|| / ||ref||`` (``J_oi``: the derivative along the
 tangent space of argument ``i``; a relative perturbation ``u`` of every argument moves the
 output by at most ``u kappa``). Verdict **accurate** by issue 37's rule
-(:mod:`rigidsym.codegen.rule`): ``err <= 8 u (kappa + 1)`` (the absolute floor judges outputs
+(:mod:`rigidsym.codegen.accuracy.rule`): ``err <= 8 u (kappa + 1)`` (the absolute floor judges
+outputs
 that are exactly zero) **and** ``err <= max(2 e_ref, 4 u)``, ``e_ref`` the smallest error of
 the textbook formula (the declaration, naively, in the same type) and of each peer that has
 the operation (``_accuracy_peers``; float64), the second half measured against the truth at
@@ -57,7 +58,7 @@ from _accuracy_seeds import DATA, DEFAULT_SEEDS, merged, seeds_for  # noqa: E402
 from _accuracy_tables import kernel_table, markdown, rule_table, synced  # noqa: E402,F401
 
 from rigidsym import kernels as K  # noqa: E402
-from rigidsym.codegen import rule  # noqa: E402
+from rigidsym.codegen.accuracy import rule  # noqa: E402
 
 KAPPA_SINGULAR = 1e12
 
@@ -313,7 +314,7 @@ def main(argv=None) -> int:
         print(rule_table(json.loads(Path(a.rule_table).read_text(encoding="utf-8"))), end="")
         return 0
     if a.docs:
-        from rigidsym._io import write_atomic
+        from rigidsym.core.files import write_atomic
 
         tables = synced(DATA.parents[1], json.loads(Path(a.docs).read_text("utf-8")))
         for rel, text in tables.items():
@@ -348,7 +349,7 @@ def main(argv=None) -> int:
     if a.data:
         from _accuracy_thresholds import thresholds
 
-        from rigidsym._io import write_atomic
+        from rigidsym.core.files import write_atomic
 
         write_atomic(Path(a.data), json.dumps(merged(old, summary(rows, thresholds())),
                                               indent=1, sort_keys=True) + "\n")

@@ -26,7 +26,7 @@ ROOT = Path(__file__).resolve().parents[1]
 if str(ROOT / "src") not in sys.path:
     sys.path.insert(0, str(ROOT / "src"))
 
-from rigidsym.kernels import _build  # noqa: E402
+from rigidsym.kernels.cbuild import driver as _build  # noqa: E402
 
 BEGIN, END = "<!-- build -->", "<!-- /build -->"
 

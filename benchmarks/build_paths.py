@@ -35,8 +35,9 @@ ROOT = Path(__file__).resolve().parents[1]
 if str(ROOT / "src") not in sys.path:
     sys.path.insert(0, str(ROOT / "src"))
 
-from rigidsym._draw import draw  # noqa: E402
-from rigidsym.kernels import _build, _ext  # noqa: E402
+from rigidsym.core.draws import draw  # noqa: E402
+from rigidsym.kernels.cbuild import driver as _build  # noqa: E402
+from rigidsym.kernels.cbuild import extension as _ext  # noqa: E402
 
 BENCH = {"K1": "rotation_from_euler_rodrigues", "K2": "rotation_from_natural_invariants",
          "K3": "screw_axis_point", "K4": "instant_screw_point_pitch", "K5": "N_matrix",

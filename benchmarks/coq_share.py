@@ -1,6 +1,8 @@
 """How many of the chapter's verified identities Coq proves (issue 49): each verified id's
-certificate exported (:func:`rigidsym.checking.certificates.certificate`), written as a Coq
-file (:func:`rigidsym.checking.coq.coq_file`) and checked by ``coqc`` with a time limit per
+certificate exported (:func:`rigidsym.checking.certifying.certificates.certificate`), written as a
+Coq
+file (:func:`rigidsym.checking.certifying.coq.coq_file`) and checked by ``coqc`` with a time limit
+per
 id. One JSON line per id (``id``, ``outcome`` = proved / failed / timeout / no-file,
 ``seconds`` of coqc wall time, ``why``) is appended to ``--out`` as it is measured, so a run
 cut short keeps what it measured; a summary is printed at the end.
@@ -25,9 +27,9 @@ from pathlib import Path
 
 
 def _measure(eq_id: str, timeout: float) -> dict:
-    from rigidsym.checking.certificates import certificate
-    from rigidsym.checking.coq import NoProof, prove
-    from rigidsym.checking.deciding.registry import REGISTRY
+    from rigidsym.checking.certifying.certificates import certificate
+    from rigidsym.checking.certifying.coq import NoProof, prove
+    from rigidsym.registry.declarations import REGISTRY
 
     cert = certificate(eq_id, REGISTRY[eq_id].expected)
     kinds = [r["evidence"]["type"] for r in cert["relations"]]
@@ -53,7 +55,7 @@ def main() -> None:
     ap.add_argument("--out", default="coq_share.jsonl")
     ap.add_argument("--again", action="store_true")
     args = ap.parse_args()
-    from rigidsym.checking.deciding.registry import REGISTRY, book_ids, load_all
+    from rigidsym.registry.declarations import REGISTRY, book_ids, load_all
 
     load_all()
     ids = args.ids or [i for i in book_ids() if REGISTRY[i].expected == "verified"]

@@ -32,7 +32,7 @@ import run as R  # noqa: E402  (the benchmark helpers of benchmarks/run.py)
 
 from rigidsym import kernels as K  # noqa: E402
 from rigidsym.codegen.jacobians import jacobian_name, with_jacobians  # noqa: E402
-from rigidsym.kernels import _state
+from rigidsym.kernels.runtime import state as _state
 
 #: the kernels issue 12 asks for (euler_rate_matrix: one of its 24 sequence/frame kernels)
 KERNELS = ["rotation_from_natural_invariants", "rotation_from_euler_rodrigues",

@@ -47,7 +47,7 @@ MARK = ("<!-- kernel-api -->", "<!-- /kernel-api -->")
 
 
 def _inputs(meta: dict, n: int, rng) -> list[np.ndarray]:
-    from rigidsym._draw import draw
+    from rigidsym.core.draws import draw
 
     out = []
     for a in meta["args"]:
@@ -73,7 +73,7 @@ def _time(f, budget: float = 0.02) -> float:
 
 def measure(rounds: int, batch: bool = True) -> dict:
     from rigidsym import kernels as K
-    from rigidsym.kernels import _state
+    from rigidsym.kernels.runtime import state as _state
 
     assert K.use_backend("c") == "c", "C backend unavailable"
     meta = {k: m for k, m in _state.meta().items() if m["public"]}
@@ -99,10 +99,11 @@ def measure(rounds: int, batch: bool = True) -> dict:
 
 def measure_ab(old_dir: Path, rounds: int, threads: int = 1) -> dict:
     """C batch at N = 1e6, old and new generated C loaded in this one process (both built
-    by this checkout's driver, rigidsym.kernels._build, same flags; the old folder needs the
+    by this checkout's driver, rigidsym.kernels.cbuild.driver, same flags; the old folder needs the
     extension's own C, c/rigidsym_module.c, of this version's generator) and timed
     alternately: fair on a loaded machine."""
-    from rigidsym.kernels import _ext, _state
+    from rigidsym.kernels.cbuild import extension as _ext
+    from rigidsym.kernels.runtime import state as _state
 
     mods = {"old": _ext.load(old_dir).module, "new": _state.builtin().c_lib().module}
     meta = {k: m for k, m in _state.meta().items() if m["public"]}
@@ -173,7 +174,7 @@ def measure_fast(rounds: int, old_dir: Path | None = None, n1_old: Path | None =
     ``n1_old``: another generated directory (a previous commit's), whose kernels
     (``kernels.load``, its own compiled module) are timed at N = 1 in the same rounds."""
     from rigidsym import kernels as K
-    from rigidsym.kernels import _state
+    from rigidsym.kernels.runtime import state as _state
 
     assert K.use_backend("c") == "c", "C backend unavailable"
     meta = _state.meta()
@@ -225,7 +226,7 @@ def measure_f32(rounds: int, n: int = 1_000_000, old_dir: Path | None = None) ->
     error in ulp against the float64 kernel at the same float32 inputs (whose own error is
     ~1e-15, tests/test_kernels.py)."""
     from rigidsym import kernels as K
-    from rigidsym.kernels import _state
+    from rigidsym.kernels.runtime import state as _state
 
     meta = _state.meta()
     rng = np.random.default_rng(9)
@@ -240,7 +241,7 @@ def measure_f32(rounds: int, n: int = 1_000_000, old_dir: Path | None = None) ->
         b64 = K.batch_function(name, "c", threads=1)
         old = None
         if old_dir is not None:    # the other build's float32 (float64 arithmetic inside)
-            from rigidsym.kernels import _ext
+            from rigidsym.kernels.cbuild import extension as _ext
 
             mod = _ext.load(old_dir).module
             k = mod.kernels.index(name)
@@ -300,7 +301,7 @@ def n1_lines(d: dict, old_label: str = "") -> list[str]:
 def measure_n1(rounds: int, n1_old: Path | None) -> dict:
     """The N = 1 rows of :func:`measure_fast` alone (and the reference rows)."""
     from rigidsym import kernels as K
-    from rigidsym.kernels import _state
+    from rigidsym.kernels.runtime import state as _state
 
     assert K.use_backend("c") == "c", "C backend unavailable"
     calls: dict = {}
@@ -445,7 +446,7 @@ def main(argv=None) -> int:
 def _replace_n1(path: Path, lines: list[str], note: str) -> None:
     """Replace the N = 1 table of the issue-20 section of ``path`` (up to the next table
     heading) by ``lines``, headed by ``note``; print it."""
-    from rigidsym._io import write_atomic
+    from rigidsym.core.files import write_atomic
 
     body = path.read_text(encoding="utf-8")
     a = body.index(N1_HEAD, body.index(FAST_MARK[0]))

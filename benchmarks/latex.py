@@ -21,9 +21,9 @@ ACCEPTANCE = ["check", "--latex", r"\mathbf{Q}^T\mathbf{Q} = \mathbf{1}", "--let
 
 
 def main() -> None:
-    from rigidsym.checking.deciding.registry import REGISTRY, load_all
     from rigidsym.latex import LatexError, parse_latex
-    from rigidsym.latex.parser import parser
+    from rigidsym.latex.transformer.chapter import parser
+    from rigidsym.registry.declarations import REGISTRY, load_all
 
     load_all()
     eqs = list(REGISTRY.values())

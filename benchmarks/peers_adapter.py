@@ -5,7 +5,7 @@
 
 ``setup(ctx)`` builds ``generated/c`` into the extension module the package ships (``pip
 install .``: x86-64-v2 and x86-64-v3 objects, the module's dispatcher picks one at import),
-with :mod:`rigidsym.kernels._build` (the same driver, flags, OpenMP and libmvec probes),
+with :mod:`rigidsym.kernels.cbuild.driver` (the same driver, flags, OpenMP and libmvec probes),
 into ``ctx["build_dir"]``, cached by the sources' hash: the default build is what a user of
 the wheel runs. ``peers_adapter_native.py`` is the second column: the ``-march=native``
 build (``rigidsym build-c --native``). The harness's ``cflags`` are not used: the point is
@@ -43,7 +43,7 @@ VARIANT = ""
 
 
 def _driver():
-    """rigidsym.kernels._build, loaded by path (standard library only: the harness's
+    """rigidsym.kernels.cbuild.driver, loaded by path (standard library only: the harness's
     environment need not have rigidsym's dependencies)."""
     path = ROOT / "src" / "rigidsym" / "kernels" / "_build.py"
     spec = importlib.util.spec_from_file_location("_rigidsym_build", path)

@@ -49,7 +49,7 @@ print("@@", wall, sum(r.ru_utime + r.ru_stime for r in ru), code)
 _PER_ID = """
 import json
 from rigidsym.checking.checker import check
-from rigidsym.checking.deciding.registry import load_all, select
+from rigidsym.registry.declarations import load_all, select
 load_all()
 out = {}
 for i in select(None, None):

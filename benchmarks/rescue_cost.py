@@ -3,9 +3,9 @@ generated, against the same file with the block's range test over its inputs rem
 rescue's only work on a block that raised no floating-point exception flag), side by side.
 
 Both variants are compiled from ``generated/c`` with the kernels' flags
-(``rigidsym.kernels._build.KERNEL_FLAGS``) and ``-march=x86-64-v3`` (or the compiler's
+(``rigidsym.kernels.cbuild.driver.KERNEL_FLAGS``) and ``-march=x86-64-v3`` (or the compiler's
 default off x86) into one driver, which times them in interleaved rounds on the same inputs
-(random valid samples from ``rigidsym._draw``, one thread, thread CPU time per call of N
+(random valid samples from ``rigidsym.core.draws``, one thread, thread CPU time per call of N
 samples); the ratio of the medians is the range test's cost. The variants' outputs are
 compared bit for bit (ordinary data: the range test flags nothing).
 
@@ -27,8 +27,9 @@ from pathlib import Path
 
 import numpy as np
 
-from rigidsym import _draw
-from rigidsym.kernels import _build, _state
+from rigidsym.core import draws as _draw
+from rigidsym.kernels.cbuild import driver as _build
+from rigidsym.kernels.runtime import state as _state
 
 ROOT = Path(__file__).resolve().parents[1]
 GEN = ROOT / "generated" / "c"

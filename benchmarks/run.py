@@ -34,10 +34,10 @@ os.environ.setdefault("OMP_NUM_THREADS", "1")
 from rigidsym.derivations.kernels_spec import KERNELS  # noqa: E402
 
 from rigidsym import kernels as K  # noqa: E402
-from rigidsym._draw import draw  # noqa: E402
 from rigidsym.codegen.generator import _flatten  # noqa: E402
 from rigidsym.codegen.spec import flat_symbols, input_symbols  # noqa: E402
-from rigidsym.kernels import _state  # noqa: E402
+from rigidsym.core.draws import draw  # noqa: E402
+from rigidsym.kernels.runtime import state as _state  # noqa: E402
 
 PEERS = ROOT.parent / "shared" / "peers-bench" / "peerbench" / "kernels.py"
 #: benchmark id -> our kernel (K4 without the Plücker array, as the peers compute it)
@@ -194,7 +194,7 @@ def col_sympy_c(name: str, build: Path):
 def _cflags() -> list[str]:
     """The kernels' flags and the dispatched path in use (``-march=x86-64-v3`` on an AVX2
     machine): the baselines are compiled as the package's own C runs."""
-    from rigidsym.kernels import _build
+    from rigidsym.kernels.cbuild import driver as _build
 
     path = K.build_info()["path"]
     march = [] if path == "baseline" else [f"-march={path}"]

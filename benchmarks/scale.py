@@ -31,8 +31,9 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 from run import BENCH, SPECS, inputs  # noqa: E402
 
 from rigidsym import kernels as K  # noqa: E402
-from rigidsym._draw import draw  # noqa: E402
-from rigidsym.kernels import _scale, _state  # noqa: E402
+from rigidsym.core.draws import draw  # noqa: E402
+from rigidsym.kernels.runtime import scale as _scale  # noqa: E402
+from rigidsym.kernels.runtime import state as _state  # noqa: E402
 
 RESULTS = ROOT / "benchmarks" / "RESULTS.md"
 PEERS = ROOT.parent / "shared" / "peers-bench"
@@ -93,7 +94,7 @@ uint64_t floor_io(int64_t n, int threads, int nin, const char **in, const int64_
 def _floor_lib(build: Path):
     import cffi
 
-    from rigidsym.kernels import _build
+    from rigidsym.kernels.cbuild import driver as _build
 
     path = K.build_info()["path"]
     march = [] if path == "baseline" else [f"-march={path}"]

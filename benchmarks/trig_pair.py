@@ -17,7 +17,7 @@ import subprocess
 import tempfile
 from pathlib import Path
 
-from rigidsym.kernels._build import KERNEL_FLAGS
+from rigidsym.kernels.cbuild.driver import KERNEL_FLAGS
 
 ROOT = Path(__file__).resolve().parents[1]
 FLAGS = list(KERNEL_FLAGS)   # the kernels' flags

@@ -34,8 +34,8 @@ import _accuracy_ref as R  # noqa: E402
 from accuracy_speed import inputs, timer  # noqa: E402
 
 from rigidsym import kernels as K  # noqa: E402
-from rigidsym._config import generated_dir  # noqa: E402
-from rigidsym.kernels import _build  # noqa: E402
+from rigidsym.core.config import generated_dir  # noqa: E402
+from rigidsym.kernels.cbuild import driver as _build  # noqa: E402
 
 TRIG = ["rotation_from_natural_invariants", "screw_axis_point", "N_matrix",
         "euler_angle_rates_zxz_body", "rotation_from_rotation_vector"]

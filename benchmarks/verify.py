@@ -11,7 +11,7 @@ Measured, each in a fresh process (so imports count, as for a reader), ``--jobs 
 - ``report`` cold and warm: ``rigidsym report --out DIR`` (the chapter's three files and the
   exercises), on a cache of its own;
   each with its ratio to the text path (cold to cold, warm to warm), and for this tree the
-  work counted (:mod:`rigidsym._work`: declarations built, ids decided, transcriptions
+  work counted (:mod:`rigidsym.core.work`: declarations built, ids decided, transcriptions
   checked, exercises solved);
 - ``example``: ``rigidsym verify --module examples/rotation_identities.py``, cold;
 - ``build``: CPU seconds of building the declarations (``registry._build``) per section,
@@ -62,7 +62,7 @@ print("@@", wall, sum(r.ru_utime + r.ru_stime for r in ru), code)
 _BUILD = """
 import collections, json, sys, time
 sys.path.insert(0, {tree!r})
-from rigidsym.checking.deciding.registry import REGISTRY, load_all, select, section_of
+from rigidsym.registry.declarations import REGISTRY, load_all, select, section_of
 load_all()
 per = collections.Counter()
 for i in select(None, None):

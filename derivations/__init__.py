@@ -1,7 +1,7 @@
 """The mathematics of Angeles' chapter 3, one module per book section, in book order.
 
 Importing this package registers every declaration in
-:data:`rigidsym.checking.deciding.registry.REGISTRY`: each ``sec3_*`` module (found by name,
+:data:`rigidsym.registry.declarations.REGISTRY`: each ``sec3_*`` module (found by name,
 so that adding a section touches no other file).
 """
 

@@ -1,7 +1,8 @@
 """The kernels of the Lie-group maps (issue 38): each composes the formula functions of
 :mod:`rigidsym.derivations.lie_maps` (verified by ``derivations/lie_groups.py``); their
 removable singularities at ``w = 0`` become certified series branches in the generator
-(:mod:`rigidsym.codegen.removable`). The logarithms reuse the natural invariants' branches
+(:mod:`rigidsym.codegen.removable.singularities`). The logarithms reuse the natural invariants'
+branches
 near ``phi = pi`` (the axis from the symmetric part of ``Q``).
 
 They join the book's ``KERNELS`` (``derivations/kernels_spec.py``); their names are pinned in

@@ -14,7 +14,7 @@ the 6 x 6 Jacobian of SE(3) in the same order (Barfoot's ``[[J, Q], [0, J]]`` fo
 ``[rho; phi]`` becomes ``[[J, 0], [Q, J]]``); Euler-Rodrigues parameters scalar last,
 ``eta = [r; r0]``, as ``rotation_from_euler_rodrigues``. Every quotient in ``theta`` below is
 a removable singularity at ``w = 0`` (the kernels replace it by its certified series,
-:mod:`rigidsym.codegen.removable`).
+:mod:`rigidsym.codegen.removable.singularities`).
 
 Long: one subject, the closed forms of the maps of SO(3) and SE(3), each with its sources and
 the derivation of the rewritten forms the kernels use (Q of the SE(3) Jacobian and J_l(w) v

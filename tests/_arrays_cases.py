@@ -8,8 +8,8 @@ from __future__ import annotations
 import numpy as np
 
 from rigidsym import kernels as K
-from rigidsym._draw import draw
-from rigidsym.kernels import _state
+from rigidsym.core.draws import draw
+from rigidsym.kernels.runtime import state as _state
 
 
 def sample(name: str, n: int, seed: int = 0) -> list[np.ndarray]:

@@ -252,14 +252,15 @@ def holds_without_constraints(eq_id: str) -> bool:
     from sympy.core.function import AppliedUndef
 
     from rigidsym.algebra.symbols import constraint_of
-    from rigidsym.checking.deciding.explicit import _entries, explicit
-    from rigidsym.checking.deciding.registry import REGISTRY
+    from rigidsym.checking.deciding.explicit import entries_of, explicit
+    from rigidsym.registry.declarations import REGISTRY
     from rigidsym.zero.decide import decide_zero
 
     st = REGISTRY[eq_id].build()
     diffs = []
     for r in st.printed + st.claims:
-        for a, b in zip(_entries(explicit(r.lhs, st.model)), _entries(explicit(r.rhs, st.model)),
+        for a, b in zip(entries_of(explicit(r.lhs, st.model)), entries_of(explicit(r.rhs,
+        st.model)),
                         strict=True):
             d = sp.sympify(a - b)
             free = {x: sp.Symbol(x.name, real=True) for x in d.free_symbols

@@ -13,7 +13,7 @@ import pytest
 from _procguard import _no_process_outlives_its_test, become_subreaper  # noqa: F401
 
 from rigidsym import kernels as K
-from rigidsym.checking.deciding.registry import load_all
+from rigidsym.registry.declarations import load_all
 
 _CREATED: list[str] = []
 
@@ -25,7 +25,7 @@ def pytest_configure(config):
     # wheel test's build reuses (objects keyed by their sources' bytes, flags and compiler,
     # and checksummed: a reused object is the object a compile would give)
     if "RIGIDSYM_TESTS_OBJECTS" not in os.environ:
-        from rigidsym.kernels import _objects
+        from rigidsym.kernels.cbuild import objects as _objects
 
         os.environ["RIGIDSYM_TESTS_OBJECTS"] = str(_objects.root() or "0")
     if "RIGIDSYM_CACHE" not in os.environ:

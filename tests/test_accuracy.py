@@ -125,7 +125,7 @@ def test_accurate_over_the_regimes_float64(name):
 
 
 #: float32 kernels whose C precision plan was past the rule at the harness's regimes on old
-#: main (rule ratio): the planner (rigidsym.codegen.float32) measured none of them; it
+#: main (rule ratio): the planner (rigidsym.codegen.accuracy.float32) measured none of them; it
 #: measures them now, drawn with seeds of its own (not these)
 F32_PLANNED = {"euler_angle_rates_yzy_body": 1.73, "euler_angle_rates_xzx_fixed": 2.32,
                "euler_angle_rates_yxy_fixed": 2.35, "euler_angle_rates_xyz_fixed": 1.84,

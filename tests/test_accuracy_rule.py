@@ -1,7 +1,7 @@
 """The second yardstick of issue 37 (item 1) and the generator's choice of forms by it
 (item 2): a kernel's error within ``8 u (kappa + 1)`` of the ball truth **and** within
 ``max(2 e_ref, 4 u)``, ``e_ref`` the smallest error of the textbook formula and of each peer
-(``rigidsym.codegen.rule``).
+(``rigidsym.codegen.accuracy.rule``).
 
 Each test names the defect of the main branch before it that it catches.
 """
@@ -16,7 +16,8 @@ import pytest
 import sympy as sp
 
 from rigidsym import kernels as K
-from rigidsym.codegen import accurate, rule
+from rigidsym.codegen.accuracy import rewrites as accurate
+from rigidsym.codegen.accuracy import rule
 from rigidsym.codegen.generator import _flatten
 from rigidsym.codegen.spec import flat_symbols, input_symbols
 
@@ -197,12 +198,12 @@ def test_generator_chooses_plucker_form_by_the_rule():
     (issue 30's) fails the rule against the textbook at nearly coincident points and is
     refused; the compensated one is kept. Old main: no regimes in the generator, no rule."""
     k, syms, sflat, conds, flat, ctx = _forms("plucker_from_points")
-    meter = accurate._Meter(k, flat, sflat, conds, None)
+    meter = accurate.Meter(k, flat, sflat, conds, None)
     textbook = meter.errors(flat)
     plain = meter.errors(accurate._expand_plain(flat, ctx)[0])
     comp = meter.errors(accurate._expand_numerators(flat, ctx)[0])
-    assert accurate._worst(plain, textbook) > 1e3
-    assert accurate._worst(comp, textbook) <= 1
+    assert accurate.worst(plain, textbook) > 1e3
+    assert accurate.worst(comp, textbook) <= 1
     _, chosen = accurate.improve(k, "main", flat, syms, sflat, conds)
     assert [c.name for c in chosen] == ["expanded numerator"]
     assert chosen[0].after * accurate.GAIN <= chosen[0].before
@@ -249,11 +250,11 @@ def test_screw_axis_point_from_the_axis():
 
 
 def test_sumprod_is_a_dot_product_in_twice_the_precision():
-    """``SumProd`` (Dot2, ``rigidsym.codegen.compensated``) within 1 u of the exact sum of
+    """``SumProd`` (Dot2, ``rigidsym.codegen.accuracy.compensated``) within 1 u of the exact sum of
     products however much it cancels (here by 1e8: the plain sum is 1e7 u off)."""
     from fractions import Fraction as F
 
-    from rigidsym.codegen.compensated import sumprod
+    from rigidsym.codegen.accuracy.compensated import sumprod
 
     rng = np.random.default_rng(37)
     a, b = rng.standard_normal((2, 3, 200))

@@ -5,7 +5,7 @@ from __future__ import annotations
 import pytest
 
 import rigidsym
-from rigidsym.checking.deciding.registry import REGISTRY, VERDICTS, BadInput, load_all
+from rigidsym.registry.declarations import REGISTRY, VERDICTS, BadInput, load_all
 
 load_all()
 

@@ -97,7 +97,7 @@ def _ball(text: str) -> tuple[Fraction, Fraction]:
 @pytest.fixture(scope="module")
 def r396e():
     from rigidsym.checking.checker import check
-    from rigidsym.checking.deciding.registry import load_all
+    from rigidsym.registry.declarations import load_all
 
     load_all()
     return check("3.96e")

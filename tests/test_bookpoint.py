@@ -18,9 +18,9 @@ import sympy as sp
 from rigidsym.algebra.primitives import cpm
 from rigidsym.checking.checker import check
 from rigidsym.checking.deciding.explicit import explicit
-from rigidsym.checking.deciding.registry import REGISTRY, load_all
-from rigidsym.checking.deciding.usermodules import load as load_module
 from rigidsym.printing import notation
+from rigidsym.registry.declarations import REGISTRY, load_all
+from rigidsym.registry.usermodules import load as load_module
 from rigidsym.report.record import counterexample_record, result_record
 
 ROOT = Path(__file__).resolve().parents[1]

@@ -20,7 +20,8 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from rigidsym import kernels as K
-from rigidsym.kernels import _build, _ext
+from rigidsym.kernels.cbuild import driver as _build
+from rigidsym.kernels.cbuild import extension as _ext
 
 REPO = Path(__file__).resolve().parents[1]
 HAVE_CC = _build.compiler() is not None
@@ -311,7 +312,7 @@ def test_native_build_is_used_when_present(user_dir, tmp_path):
 
 def test_loading_a_user_directory_never_loads_the_package_kernels(user_dir, tmp_path,
                                                                     monkeypatch):
-    from rigidsym.kernels import _state
+    from rigidsym.kernels.runtime import state as _state
 
     calls = []
     real = _ext.load
@@ -394,7 +395,7 @@ def test_other_flags_or_sources_miss_the_object_cache(user_dir, tmp_path, monkey
 
 
 def test_object_cache_off_and_its_folder():
-    from rigidsym.kernels import _objects
+    from rigidsym.kernels.cbuild import objects as _objects
 
     old = dict(os.environ)
     try:
@@ -411,7 +412,7 @@ def test_object_cache_off_and_its_folder():
 def test_the_avx512_path_compiles_only_the_kernels_calling_sin_or_cos(tmp_path):
     """x86-64-v4 buys 8-wide sin/cos and nothing else (benchmarks/RESULTS.md):
     the other kernels' v4 entries alias their x86-64-v3 functions at link time."""
-    from rigidsym.kernels import _paths
+    from rigidsym.kernels.cbuild import paths as _paths
 
     (tmp_path / "trig.c").write_text("double f(double x) { return sin(x) + 1.0; }\n")
     (tmp_path / "plain.c").write_text("/* sin( in a comment: not a call? it is text */\n"
@@ -448,7 +449,7 @@ def test_an_editable_install_compiles_the_paths_its_cpu_runs(flags, want, monkey
     """Issue 54: an editable install (setup.py, ``editable_mode``) compiles only the paths
     this CPU runs, down to one that compiles every kernel: what it imports is then the same
     path a full build's dispatcher picks on this CPU."""
-    from rigidsym.kernels import _paths
+    from rigidsym.kernels.cbuild import paths as _paths
 
     monkeypatch.delenv("RIGIDSYM_PATHS", raising=False)
     info = f"processor\t: 0\nflags\t\t: {flags}\n"

@@ -746,13 +746,13 @@ SAFE = ["-O2", "-O3", "-std=c99", "-ffp-contract=off", "-ffp-contract=fast", "-m
 
 @settings(max_examples=60, deadline=None)
 @given(st.lists(st.sampled_from(SAFE), max_size=4), st.sampled_from(sorted(
-    __import__("rigidsym.kernels._build", fromlist=["UNSAFE_FLAGS"]).UNSAFE_FLAGS)),
+    __import__("rigidsym.kernels.cbuild.driver", fromlist=["UNSAFE_FLAGS"]).UNSAFE_FLAGS)),
     st.lists(st.sampled_from(SAFE), max_size=3), st.booleans())
 def test_package_build_refuses_unsafe_flags(before, bad, after, undo):
     """An unsafe flag is refused, naming it, unless a later flag undoes it."""
     import os
 
-    from rigidsym.kernels import _build
+    from rigidsym.kernels.cbuild import driver as _build
 
     fix = [_build.UNSAFE_FLAGS[bad]] if undo else []
     old = os.environ.get("RIGIDSYM_CFLAGS")

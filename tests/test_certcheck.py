@@ -32,8 +32,8 @@ QUICK = ["3.13", "3.16", "3.18", "3.133a", "3.76a", "3.99", "3.3", "3.96e"]
 
 @pytest.fixture(scope="module")
 def quick_certs(tmp_path_factory):
-    from rigidsym.checking.certificates import certificate, certificate_file
-    from rigidsym.checking.deciding.registry import REGISTRY, load_all
+    from rigidsym.checking.certifying.certificates import certificate, certificate_file
+    from rigidsym.registry.declarations import REGISTRY, load_all
 
     load_all()
     out = tmp_path_factory.mktemp("certs")
@@ -118,8 +118,8 @@ def test_tamperings_rejected_on_quick_share(quick_certs, name):
 def test_forged_identity_of_every_printed_member_that_fails():
     """The chapter's printed members that do not hold, claimed as identities: rejected.
     (All of them: the does-not-hold ids of the chapter.)"""
-    from rigidsym.checking.certificates import certificate
-    from rigidsym.checking.deciding.registry import REGISTRY, book_ids, load_all
+    from rigidsym.checking.certifying.certificates import certificate
+    from rigidsym.registry.declarations import REGISTRY, book_ids, load_all
 
     load_all()
     failing = [i for i in book_ids() if REGISTRY[i].expected == "does-not-hold"]

@@ -72,7 +72,7 @@ def test_check_latex_certificate(tmp_path, capsys):
 
 def test_recheck_reports_a_failure(tmp_path, capsys):
     """A certificate changed on disk after writing: the re-check names it."""
-    from rigidsym.checking.certificates import certify_line, recheck_folder
+    from rigidsym.checking.certifying.certificates import certify_line, recheck_folder
 
     main(["verify", "3.13", "--quiet", "--certificates", str(tmp_path)])
     capsys.readouterr()
@@ -101,9 +101,9 @@ def test_whole_chapter_certified_and_tampering_rejected(tmp_path):
     """All 181 ids exported; certcheck passes every one; every tampering that applies to a
     certificate is rejected, and a weakened kind passes only where rigidsym's own zero test,
     with the constrained atoms made free, agrees that the identity needs no constraint."""
-    from rigidsym.checking.certificates import certificate
+    from rigidsym.checking.certifying.certificates import certificate
     from rigidsym.checking.checker import check
-    from rigidsym.checking.deciding.registry import book_ids, load_all
+    from rigidsym.registry.declarations import book_ids, load_all
 
     load_all()
     counts: dict = {}
@@ -146,9 +146,9 @@ def test_coq_proves_cofactor_certificates(eq_id):
     divisors <> 0 -> lhs = rhs; and rejects a changed statement (3.13) or cofactor (3.51)."""
     import shutil
 
-    from rigidsym.checking.certificates import certificate
-    from rigidsym.checking.coq import coq_file, prove
-    from rigidsym.checking.deciding.registry import REGISTRY, load_all
+    from rigidsym.checking.certifying.certificates import certificate
+    from rigidsym.checking.certifying.coq import coq_file, prove
+    from rigidsym.registry.declarations import REGISTRY, load_all
 
     if shutil.which("coqc") is None:
         pytest.skip("coqc not installed (apt-get install coq)")
@@ -172,10 +172,10 @@ def test_coq_normal_forms_refuse_a_false_entry():
     abbreviations as Definitions (the file a few kB, not 1.8 MB inlined), and refuses the
     statement with 1/7 added to an entry: its cleared numerator does not reduce to 0
     modulo the unit vector's and the angle's hypotheses."""
-    from rigidsym.checking import coqnf
-    from rigidsym.checking.certificates import certificate
-    from rigidsym.checking.coq import _coq_expr, _divisors
-    from rigidsym.checking.deciding.registry import REGISTRY, load_all
+    from rigidsym.checking.certifying import coq_normal_form as coqnf
+    from rigidsym.checking.certifying.certificates import certificate
+    from rigidsym.checking.certifying.coq import _coq_expr, _divisors
+    from rigidsym.registry.declarations import REGISTRY, load_all
 
     load_all()
     cert = certificate("3.14", REGISTRY["3.14"].expected)
@@ -192,8 +192,8 @@ HASH_IDS = ["3.59", "3.96e"]
 
 _EXPORT = """
 import hashlib, json, sys
-from rigidsym.checking.certificates import certificate
-from rigidsym.checking.deciding.registry import REGISTRY, book_ids, load_all
+from rigidsym.checking.certifying.certificates import certificate
+from rigidsym.registry.declarations import REGISTRY, book_ids, load_all
 load_all()
 for i in sys.argv[1:] or book_ids():
     text = json.dumps(certificate(i, REGISTRY[i].expected), indent=1)
@@ -234,8 +234,8 @@ def test_reports_say_how_each_verdict_is_certified(tmp_path, capsys):
     """rigidsym report --certificates: the Markdown and the HTML entry of each id name its
     certificate, each relation's evidence (cofactors; counterexample) and certcheck's
     re-check; a certificate certcheck rejects is shown as rejected, not as certified."""
-    from rigidsym.checking.deciding.registry import load_all
     from rigidsym.checking.runner import run_checks
+    from rigidsym.registry.declarations import load_all
     from rigidsym.report.html import to_html
     from rigidsym.report.markdown import to_markdown
     from rigidsym.report.user import certified
@@ -266,8 +266,8 @@ def test_rotation_chain_reduces_exactly_the_ideal(coeffs, where, off):
     constant leaves a non-zero remainder."""
     import flint
 
-    from rigidsym.checking import cofrot
-    from rigidsym.checking.cofrot import _dpoly
+    from rigidsym.checking.certifying import rotation_triangular_set as cofrot
+    from rigidsym.checking.certifying.rotation_triangular_set import dpoly
 
     class R:  # the ring of cofactors._Ring: names, index, var, one, zero, gens
         names = [f"Q_{r}{c}" + "'" * k for k in range(2) for r in (1, 2, 3) for c in (1, 2, 3)]
@@ -281,13 +281,13 @@ def test_rotation_chain_reduces_exactly_the_ideal(coeffs, where, off):
     nxt = {i: i + 9 for i in range(9)}
     names = R.names[:9]
     H = cofrot.hypotheses(R, names, False)
-    hyps = [H[i // 2] if i % 2 == 0 else _dpoly(H[i // 2], R, nxt) for i in range(14)]
+    hyps = [H[i // 2] if i % 2 == 0 else dpoly(H[i // 2], R, nxt) for i in range(14)]
     f = sum((c * (R.gens[(i + where) % 18] + off) * h
              for i, (c, h) in enumerate(zip(coeffs, hyps, strict=True))), R.zero)
     for extra, zero in ((R.zero, True), (R.one * off, False)):
         mus: dict = {}
         N, mult = cofrot.pseudo_reduce(f + extra, R, cofrot.rotation_chain(R, names, H),
-                                       names, 1, lambda p: _dpoly(p, R, nxt), mus, R.one, "Q")
+                                       names, 1, lambda p: dpoly(p, R, nxt), mus, R.one, "Q")
         assert N.is_zero() == zero
         if zero:
             back = sum((mus.get(("Q", i // 2, i % 2), R.zero) * h
@@ -304,7 +304,8 @@ def test_linear_ansatz_finds_combinations_and_nothing_else(terms, off):
     back exactly; f + a non-zero constant (not in the ideal: it is off SO(3)) gets none."""
     import flint
 
-    from rigidsym.checking import cofansatz, cofrot
+    from rigidsym.checking.certifying import cofactor_ansatz as cofansatz
+    from rigidsym.checking.certifying import rotation_triangular_set as cofrot
 
     class R:
         names = [f"Q_{r}{c}" for r in (1, 2, 3) for c in (1, 2, 3)]

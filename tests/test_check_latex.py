@@ -11,9 +11,9 @@ import pytest
 import sympy as sp
 
 import rigidsym
-from rigidsym.checking.deciding import registry
 from rigidsym.cli import main
 from rigidsym.latex.lets import split_lets
+from rigidsym.registry import declarations as registry
 
 Q_ROT = r"\mathbf{Q}: rotation"
 RODRIGUES_LETS = [r"\mathbf{e}: unit vector; \phi: angle; \mathbf{E} = \mathrm{CPM}(\mathbf{e})",
@@ -177,7 +177,7 @@ def module(tmp_path):
     path = tmp_path / "mine_latex.py"
     path.write_text(MODULE)
     yield str(path)
-    from rigidsym.checking.deciding import usermodules
+    from rigidsym.registry import usermodules
 
     for name in [n for n, um in usermodules.LOADED.items() if um.path == path]:
         registry.forget_module(name)

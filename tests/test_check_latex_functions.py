@@ -10,7 +10,7 @@ import sympy as sp
 from test_check_latex import _cli, _forget_latex_ids  # noqa: F401  (autouse fixture, CLI helper)
 
 import rigidsym
-from rigidsym.checking.deciding.errors import BadInput
+from rigidsym.core.errors import BadInput
 from rigidsym.latex import LatexError
 
 # Shuster's Gibbs-vector attitude matrix (Shuster 1993, (195)): R(g) the *passive* rotation,

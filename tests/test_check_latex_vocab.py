@@ -10,9 +10,9 @@ import sympy as sp
 import rigidsym
 from rigidsym.algebra.lie import AdT, AdV, Expm, Hat, Logm
 from rigidsym.algebra.operators import Cpm, Diff
-from rigidsym.checking.deciding import registry
 from rigidsym.latex import LatexError, parse_latex
 from rigidsym.latex.table import Glyph
+from rigidsym.registry import declarations as registry
 
 W = r"\hat\omega: unit vector; \theta: angle"
 W_PI = r"\hat\omega: unit vector; \theta: angle in [0, pi]"

@@ -8,9 +8,9 @@ import json
 import pytest
 import sympy as sp
 
-from rigidsym.checking.deciding import registry
-from rigidsym.checking.deciding.registry import REGISTRY, Rel, load_all
 from rigidsym.cli import main
+from rigidsym.registry import declarations as registry
+from rigidsym.registry.declarations import REGISTRY, Rel, load_all
 
 load_all()
 

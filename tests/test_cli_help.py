@@ -11,9 +11,9 @@ import sys
 
 import pytest
 
-from rigidsym.checking.worked import EXERCISE_IDS, exercise_module
 from rigidsym.cli import build_parser, main
-from rigidsym.cli._common import HelpFormatter
+from rigidsym.cli.common import HelpFormatter
+from rigidsym.course.worked import EXERCISE_IDS, exercise_module
 
 
 def _subparsers(p: argparse.ArgumentParser) -> dict[str, argparse.ArgumentParser]:
@@ -72,7 +72,7 @@ def test_command_helps_read_alike():
 
 
 def test_exercise_without_an_id_lists_all_without_solving(monkeypatch, capsys):
-    import rigidsym.checking.worked as worked
+    import rigidsym.course.worked as worked
 
     def no_solving(*a, **k):
         raise AssertionError("listing must not solve")
@@ -109,7 +109,7 @@ def test_verify_plain_and_json_on_stdout_are_whole(capsys, monkeypatch):
     monkeypatch.setattr("sys.stdout.isatty", lambda: False, raising=False)
     assert main(["verify", "3.1", "thm3.2.1", "--jobs", "1", "--format", "plain"]) == 0
     out = capsys.readouterr().out
-    from rigidsym.checking.deciding.registry import REGISTRY
+    from rigidsym.registry.declarations import REGISTRY
     for i in ("3.1", "thm3.2.1"):
         assert REGISTRY[i].title.split()[-1] in out
     assert "…" not in out

@@ -1,6 +1,9 @@
-"""Hand-written code stays small enough to read: no module in ``src/`` or ``derivations/``
-over 400 lines and no function over 60 lines (its docstring aside), unless its docstring
-gives the reason in a paragraph that starts with ``Long:``.
+"""Hand-written code is cut by meaning, not by length: a module is one concept however long,
+so the gate is only a backstop against a module or function that has grown past reading: no
+module in ``src/`` or ``derivations/`` over 800 lines and no function over 80 lines (its
+docstring aside), unless its docstring gives the reason in a paragraph that starts with
+``Long:``. Splitting a module to meet the gate is not the fix: split it where its concepts
+part (docs/layout.md).
 
 ``generated/`` is written by the generator and is not checked.
 """
@@ -11,8 +14,8 @@ import ast
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
-MODULE_LINES = 400
-FUNCTION_LINES = 60
+MODULE_LINES = 800
+FUNCTION_LINES = 80
 REASON = "Long:"
 
 
@@ -34,19 +37,19 @@ def _has_reason(node) -> bool:
     return any(line.strip().startswith(REASON) for line in doc.splitlines())
 
 
-def test_modules_are_at_most_400_lines():
+def test_modules_are_at_most_800_lines():
     long = []
     for p in _sources():
         text = p.read_text(encoding="utf-8")
         n = len(text.splitlines())
         if n > MODULE_LINES and not _has_reason(ast.parse(text)):
             long.append(f"{p.relative_to(ROOT)}: {n} lines")
-    assert not long, (f"modules over {MODULE_LINES} lines (split them along their seams, or "
-                      f"say why in a '{REASON}' paragraph of the module docstring):\n"
+    assert not long, (f"modules over {MODULE_LINES} lines (split them where their concepts "
+                      f"part, or say why in a '{REASON}' paragraph of the module docstring):\n"
                       + "\n".join(long))
 
 
-def test_functions_are_at_most_60_lines():
+def test_functions_are_at_most_80_lines():
     long = []
     for p in _sources():
         for node in ast.walk(ast.parse(p.read_text(encoding="utf-8"))):

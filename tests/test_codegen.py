@@ -50,7 +50,7 @@ def test_cos_forms_near_pi():
     import mpmath
     import numpy as np
 
-    from rigidsym.codegen.cos_form import _decided
+    from rigidsym.codegen.accuracy.cos_form import _decided
     from rigidsym.codegen.optimise import COS_FORMS
 
     u = 2.0**-53

@@ -1,4 +1,4 @@
-"""The accuracy rewrites of the code generator (issue 30, rigidsym.codegen.accurate): kept
+"""The accuracy rewrites of the code generator (issue 30, rigidsym.codegen.accuracy.rewrites): kept
 only when measured more accurate, and only when the zero test decides them equal to the
 declared formula."""
 
@@ -8,7 +8,8 @@ import pytest
 import sympy as sp
 from rigidsym.derivations.kernels_spec import KERNELS
 
-from rigidsym.codegen import accurate, tan_half
+from rigidsym.codegen.accuracy import rewrites as accurate
+from rigidsym.codegen.accuracy import tan_half
 from rigidsym.codegen.generator import _flatten
 from rigidsym.codegen.spec import flat_symbols, input_symbols
 
@@ -67,12 +68,12 @@ def test_powers_by_pow_not_under_a_quotient():
 
     f = sp.symbols("f0:3", real=True)
     T = sum(x**2 for x in f)
-    out, parts = accurate._exact_powers([f[0] * T**sp.Rational(-3, 2), f[1] / T**2,
+    out, parts = accurate.exact_powers([f[0] * T**sp.Rational(-3, 2), f[1] / T**2,
                                          f[2] / T], {"angles": []})
     assert out[0] == f[0] * sp.Pow(T, sp.Float(-1.5)) and out[1] == f[1] * sp.Pow(T, -2.0)
     assert out[2] == f[2] / T
     # sin(|f|)/|f|^3 of the same norm: a removable quotient, left alone
-    assert accurate._exact_powers([f[0] * T**sp.Rational(-3, 2),
+    assert accurate.exact_powers([f[0] * T**sp.Rational(-3, 2),
                                    sp.sin(sp.sqrt(T)) / T**sp.Rational(3, 2)],
                                   {"angles": []}) is None
     assert "pow(" in KernelCPrinter().doprint(out[0])
@@ -82,7 +83,7 @@ def test_powers_by_pow_not_under_a_quotient():
     # the zero test reads the float exponent as the rational it is
     assert accurate._decide(parts, {}) == "exact-cancel"
     # an angle kernel: the half-angle rewrite comes after the measurement
-    assert accurate._exact_powers(out, {"angles": [sp.Symbol("phi")]}) is None
+    assert accurate.exact_powers(out, {"angles": [sp.Symbol("phi")]}) is None
 
 
 def test_fractions_in_cos_phi_merged_and_decided():
@@ -93,14 +94,14 @@ def test_fractions_in_cos_phi_merged_and_decided():
     phi = sp.Symbol("phi", real=True)
     w, e = sp.symbols("w e", real=True)
     f = sp.diff(w * (1 - e**2) * sp.sin(phi) / (2 - 2 * sp.cos(phi)), phi)
-    out, parts = accurate._angle_fractions([f, w * sp.cos(phi) + e], {"angles": [phi]})
+    out, parts = accurate.angle_fractions([f, w * sp.cos(phi) + e], {"angles": [phi]})
     assert sp.count_ops(out[0]) < sp.count_ops(f) and not out[0].has(sp.sin(phi))
     assert sp.simplify(out[0] * (2 - 2 * sp.cos(phi)) + w * (1 - e**2)) == 0
     assert out[1] == w * sp.cos(phi) + e and len(parts) == 1
     k = BY["N_tilde_dot"]
     sub = {phi: accurate._constrained(k, input_symbols(k))[input_symbols(k)["phi"]]}
     assert accurate._decide(parts, sub) in ("exact-cancel", "random-exact")
-    assert accurate._angle_fractions([w * sp.cos(phi) + e], {"angles": [phi]}) is None
+    assert accurate.angle_fractions([w * sp.cos(phi) + e], {"angles": [phi]}) is None
 
 
 def _ctx(name: str) -> tuple:
@@ -119,7 +120,7 @@ def test_tan_half_polynomial_exact_off_the_sphere_and_decided():
     the unit sphere too (the harness's unit vectors a few ulps off read the declared
     formula): checked exactly at a rational point with ``|e| != 1``, ``t = 1/2``."""
     k, syms, flat, ctx = _ctx("L_tilde_dot")
-    out, parts = accurate._tan_half_polynomial(flat, ctx)
+    out, parts = accurate.tan_half_polynomial(flat, ctx)
     phi, e = syms["phi"], list(syms["e"])
     assert len(parts) == 9 and not any(x.has(sp.cos(phi), sp.sin(phi)) for x in out)
     # tan(phi/2) = 1/2: sin phi = 4/5, cos phi = 3/5 (sin(phi/2) : cos(phi/2) = 1 : 2)
@@ -139,4 +140,4 @@ def test_tan_half_polynomial_exact_off_the_sphere_and_decided():
     # cheap to refuse: a divisor 1 - cos phi (N_tilde_dot), no unit vector or angle, and
     # L_tilde, whose half-angle program is t e already
     for name in ("N_tilde_dot", "L_tilde", "rotation_from_natural_invariants"):
-        assert accurate._tan_half_polynomial(*_ctx(name)[2:]) is None, name
+        assert accurate.tan_half_polynomial(*_ctx(name)[2:]) is None, name

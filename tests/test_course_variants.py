@@ -12,11 +12,11 @@ from pathlib import Path
 import pytest
 import sympy as sp
 
-from rigidsym.checking.worked import EXERCISE_IDS, solution_record, to_json_value
-from rigidsym.checking.worked.grading import grade
-from rigidsym.checking.worked.slips import slip_list
-from rigidsym.report import exam as _exam
-from rigidsym.report.gradebook import solution_of
+from rigidsym.course import exam as _exam
+from rigidsym.course.gradebook import solution_of
+from rigidsym.course.grading import grade
+from rigidsym.course.slips import slip_list
+from rigidsym.course.worked import EXERCISE_IDS, solution_record, to_json_value
 
 #: slow to solve on a draw (3.10 solves twelve sequences, 3.12 two parts with radicals)
 SLOW = {"ex3.10", "ex3.12"}
@@ -70,10 +70,10 @@ def test_a_variant_of_each_other_exercise_is_graded(ex_id):
 def _graded(ex_id):
     spec = {"problem": [{"exercise": ex_id, "variants": 1}]}
     taken: dict = {}
-    (s, _), = _exam._drawn(spec, 5, taken)
-    (t, _), = _exam._drawn(spec, 6, taken)
+    (s, _), = _exam.drawn_exercises(spec, 5, taken)
+    (t, _), = _exam.drawn_exercises(spec, 6, taken)
     assert s.status == "solved" and s.checked
-    assert _exam._key(s) != _exam._key(t)            # two students, two variants
+    assert _exam.variant_key(s) != _exam.variant_key(t)            # two students, two variants
     asked = _exam.asked(s)
     assert asked
     rec = dict(solution_record(s), asked=asked)

@@ -169,7 +169,7 @@ def test_every_public_callable_has_args_and_returns(modname):
 
 #: the modules whose docstrings hold examples (``>>>``): the reference shows them, so they run
 DOCTEST_MODULES = ("rigidsym.api", "rigidsym.declare", "rigidsym.exercises", "rigidsym.kernels",
-                   "rigidsym.kernels._jacobian", "rigidsym.algebra.primitives")
+                   "rigidsym.kernels.runtime.jacobians", "rigidsym.algebra.primitives")
 
 
 @pytest.mark.parametrize("modname", DOCTEST_MODULES)

@@ -1,12 +1,12 @@
-"""``rigidsym._draw``: the one place tests and benchmarks draw valid kernel inputs."""
+"""``rigidsym.core.draws``: the one place tests and benchmarks draw valid kernel inputs."""
 
 from __future__ import annotations
 
 import numpy as np
 import pytest
 
-from rigidsym import _kinds
-from rigidsym._draw import draw
+from rigidsym.core import kinds as _kinds
+from rigidsym.core.draws import draw
 
 
 @pytest.mark.parametrize("kind, own", [("unit", (3,)), ("rotation", (3, 3)),

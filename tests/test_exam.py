@@ -12,8 +12,8 @@ import pytest
 import sympy as sp
 
 import rigidsym.exercises as ex
-from rigidsym.checking.worked import to_json_value
 from rigidsym.cli import main
+from rigidsym.course.worked import to_json_value
 
 SPEC = {"title": "Quiz", "seed": 7, "problem": [
     {"exercise": "3.19", "data": {"d": ["0.1", 0, 0], "Q": [[0, -1, 0], [1, 0, 0], [0, 0, 1]]}},
@@ -92,7 +92,7 @@ def test_deterministic_for_a_spec_and_seed(written, tmp_path):
     again = ex.exam(SPEC, tmp_path / "a")
     for k in paths:
         assert again[k].read_bytes() == paths[k].read_bytes()
-    from rigidsym.report.exam import _problems, read_spec
+    from rigidsym.course.exam import _problems, read_spec
     drawn = [[s.data for s in _problems(read_spec(SPEC), seed)] for seed in (7, 8)]
     assert drawn[0][0] == drawn[1][0] and drawn[0][1:] != drawn[1][1:]   # given; drawn
 

@@ -12,7 +12,7 @@ import pytest
 import sympy as sp
 
 import rigidsym.exercises as ex
-from rigidsym.checking.worked import EXERCISE_IDS, exercise_module
+from rigidsym.course.worked import EXERCISE_IDS, exercise_module
 from tests.test_exam import _leaks
 
 DRAWN = [i for i in EXERCISE_IDS if hasattr(exercise_module(i), "random_data")]

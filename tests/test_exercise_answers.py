@@ -56,9 +56,9 @@ def test_ex3_12_cut_through_the_top_face_gives_both_parts():
 
 
 def test_not_solved_has_its_own_status_and_exit_code():
-    from rigidsym.checking.worked import IllPosed, Solution
-    from rigidsym.checking.worked.worked_render import render_text
     from rigidsym.cli.exercise import EXIT_ILL_POSED, EXIT_NOT_SOLVED, _exit_code
+    from rigidsym.course.worked import IllPosed, Solution
+    from rigidsym.course.worked.render import render_text
 
     s = Solution("ex3.7", "t", "st", "cit")
     try:
@@ -80,7 +80,7 @@ def test_cli_3_7_on_the_issue_data_exits_0():
 def test_ex3_10_evaluation_step_at_given_angles():
     """The evaluation step alone (the full solve decides the twelve sequences' symbolic
     checks first, 3-4 s of CPU: under -m slow below and in the property test)."""
-    from rigidsym.checking.worked import IllPosed, Solution, exercise_module
+    from rigidsym.course.worked import IllPosed, Solution, exercise_module
 
     m = exercise_module("ex3.10")
     W = m.euler_rate_matrix("ZXZ")
@@ -115,7 +115,7 @@ def test_ex3_12_principal_check_decides_and_can_fail(monkeypatch):
     minimal polynomial): the formula holds, and a formula with a slip does not pass."""
     import importlib
 
-    from rigidsym.checking.worked import exercise_module
+    from rigidsym.course.worked import exercise_module
 
     prism = importlib.import_module(exercise_module("ex3.12").__package__ + "._prism")
     assert prism._formula_holds()

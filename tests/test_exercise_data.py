@@ -16,8 +16,8 @@ import pytest
 import sympy as sp
 
 import rigidsym.exercises as ex
-from rigidsym.checking.worked import render_text
-from rigidsym.checking.worked.worked_data import read_value
+from rigidsym.course.worked import render_text
+from rigidsym.course.worked.data import read_value
 
 R = sp.Rational
 

@@ -108,7 +108,7 @@ def _property(max_examples: int):
 def short_budget(monkeypatch):
     """An exact solve is refused after 3 CPU s (the default is 20), so that a drawn
     datum's answer, or refusal, comes within SECONDS of wall time on a loaded machine."""
-    import rigidsym.checking.worked as worked
+    import rigidsym.course.worked as worked
     monkeypatch.setattr(worked, "SOLVE_BUDGET", 3.0)
 
 
@@ -162,7 +162,7 @@ def test_integers_past_sympys_reach_are_refused_not_a_defect():
 
 
 def test_a_defect_exits_3_not_an_answer_code(monkeypatch):
-    import rigidsym.checking.worked as worked
+    import rigidsym.course.worked as worked
 
     def broken(*a, **k):
         raise ZeroDivisionError("a planted defect")

@@ -15,8 +15,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 import rigidsym.exercises as ex
-from rigidsym.checking.worked import to_json_value
 from rigidsym.cli import main
+from rigidsym.course.worked import to_json_value
 
 
 def _floats(m) -> list:

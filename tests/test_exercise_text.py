@@ -7,8 +7,8 @@ import re
 import pytest
 
 import rigidsym.exercises as ex
-from rigidsym.checking.worked import render_text
 from rigidsym.cli import main
+from rigidsym.course.worked import render_text
 
 #: an exercise's internal prefix, a private name, a sympy Dummy
 INTERNAL = re.compile(r"ex3|ex₃|(?<![\w\])])_[A-Za-z]|Dummy")
@@ -44,7 +44,7 @@ def _readable(ex_id):
 def test_a_long_expression_wraps_and_keeps_its_value():
     import sympy as sp
 
-    from rigidsym.checking.worked import Solution
+    from rigidsym.course.worked import Solution
     x = sp.Symbol("ex35_e_1")
     long = sum(sp.Symbol(f"a_{k}") * x**k for k in range(40))
     s = Solution("ex3.5", "t", "st", "cit")

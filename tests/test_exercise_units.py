@@ -6,8 +6,8 @@ import pytest
 import sympy as sp
 
 import rigidsym.exercises as ex
-from rigidsym.checking.worked.worked_units import factor, split_unit
 from rigidsym.cli import main
+from rigidsym.course.worked.units import factor, split_unit
 
 
 @pytest.mark.parametrize(("text", "unit"), [

@@ -12,8 +12,8 @@ import pytest
 import sympy as sp
 from rigidsym.derivations.exercises import EXERCISE_IDS, normalise_id, solve
 
-from rigidsym.checking.worked import parameters, render_markdown, render_text, to_json_value
 from rigidsym.cli import main
+from rigidsym.course.worked import parameters, render_markdown, render_text, to_json_value
 
 
 @pytest.mark.parametrize("ex_id", EXERCISE_IDS)

@@ -15,7 +15,8 @@ import pytest
 from test_kernels import AVAILABLE, PUBLIC, inputs
 
 from rigidsym import kernels as K
-from rigidsym.kernels import _scale, _state
+from rigidsym.kernels.runtime import scale as _scale
+from rigidsym.kernels.runtime import state as _state
 
 pytestmark = pytest.mark.skipif(K.use_backend("c") != "c", reason="no C backend")
 

@@ -2,8 +2,8 @@
 the error against the 50-digit reference evaluated at the *same* float32 inputs.
 
 The C kernels compute in float32 arithmetic, in float64 only for the subexpressions their
-precision plan keeps there (issue 20; rigidsym.codegen.float32, named in each generated
-header). Since issue 37 (item 6) plan and test read the same rule, rigidsym.codegen.rule's:
+precision plan keeps there (issue 20; rigidsym.codegen.accuracy.float32, named in each generated
+header). Since issue 37 (item 6) plan and test read the same rule, rigidsym.codegen.accuracy.rule's:
 per output, the normwise relative error within ``max(2 e_ref, 4 u)``, ``e_ref`` the textbook
 formula's error (the declaration, naively, in float32 arithmetic) at the same inputs,
 ``u = 2**-24``, at random and adversarial points alike (the rule's condition half is
@@ -29,9 +29,9 @@ from test_kernels import (
 )
 
 from rigidsym import kernels as K
-from rigidsym.codegen import float32 as F32
-from rigidsym.codegen import rule
-from rigidsym.kernels import _scale
+from rigidsym.codegen.accuracy import float32 as F32
+from rigidsym.codegen.accuracy import rule
+from rigidsym.kernels.runtime import scale as _scale
 
 ULP32 = float(np.finfo(np.float32).eps)         # 2**-23
 N_ADV = len(ADV_PHI)
@@ -85,7 +85,7 @@ def _run32(name, arrays, backend):
 
 def _rule_ratio(name, arrays, got, ref):
     """Per sample, the worst ratio over the outputs of the error to what the rule allows
-    (rigidsym.codegen.float32.BUDGET: the rule with the textbook formula in float32)."""
+    (rigidsym.codegen.accuracy.float32.BUDGET: the rule with the textbook formula in float32)."""
     kernel = AVAILABLE[name]
     n = arrays[0].shape[0]
     tb = rule.textbook(kernel, [c for a in arrays for c in a.reshape(n, -1).T], np.float32)
@@ -160,7 +160,7 @@ def test_the_plans_range_is_the_c_kernels():
     rescue (rigidsym_any_extreme_f32): its range must be theirs, or a plan is chosen for
     points C never computes in float (old main: norm(omega) down to 1e-18, re-run in long
     double by C) while missing the ones it does."""
-    from rigidsym.kernels._rescue import RANGE32
+    from rigidsym.kernels.runtime.rescue import RANGE32
 
     assert F32.RANGE32 == RANGE32
     k = next(k for k in _kernels() if k.name == "instant_screw_axis_with_jacobians")

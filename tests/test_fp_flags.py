@@ -17,7 +17,7 @@ from pathlib import Path
 
 import pytest
 
-from rigidsym.kernels import _build
+from rigidsym.kernels.cbuild import driver as _build
 
 pytestmark = [pytest.mark.slow,
               pytest.mark.skipif(_build.compiler() is None, reason="no C compiler")]

@@ -33,12 +33,12 @@ import sympy as sp
 from rigidsym.derivations.kernels_spec import KERNELS
 from test_kernels import inputs, rel_err
 
-from rigidsym import _kinds
 from rigidsym import kernels as K
 from rigidsym.codegen.generator import _flatten
 from rigidsym.codegen.jacobians import derivative_name, has_jacobian, jacobian_name, with_jacobians
 from rigidsym.codegen.spec import flat_symbols, input_symbols
-from rigidsym.kernels import _state
+from rigidsym.core import kinds as _kinds
+from rigidsym.kernels.runtime import state as _state
 
 TOL = 1e-13
 N_RANDOM = 200
@@ -195,7 +195,7 @@ def _mp(x):
 
 def _curve(kind: str, x: np.ndarray, rng):
     """A curve c(t) on the constraint set through c(0) = x (exact), and c'(0), in mpmath:
-    the tangent space and curve of the kind's row in the kind table (rigidsym._kinds)."""
+    the tangent space and curve of the kind's row in the kind table (rigidsym.core.kinds)."""
     k = _kinds.for_spec(kind, x.shape)
     X = [mpmath.mpf(float(v)) for v in x.reshape(-1)]
     D = k.project(X, [mpmath.mpf(float(v)) for v in rng.standard_normal(x.size)])
@@ -330,7 +330,7 @@ def test_derivative_names_follow_symforce():
 def test_docstring_examples_run():
     import doctest
 
-    import rigidsym.kernels._jacobian as mod
+    import rigidsym.kernels.runtime.jacobians as mod
 
     res = doctest.testmod(mod, optionflags=doctest.NORMALIZE_WHITESPACE)
     assert res.attempted >= 2 and res.failed == 0

@@ -22,7 +22,7 @@ from rigidsym.derivations.kernels_spec import KERNELS
 from rigidsym import kernels as K
 from rigidsym.codegen.generator import _flatten
 from rigidsym.codegen.spec import flat_symbols, input_symbols
-from rigidsym.kernels import _state
+from rigidsym.kernels.runtime import state as _state
 
 TOL = 1e-13
 # the kernels generated/ holds (test_generated_fresh.py checks it matches the spec)
@@ -32,7 +32,8 @@ PUBLIC = sorted(n for n, k in AVAILABLE.items() if k.public)
 EULER = sorted(n for n, k in AVAILABLE.items() if not k.public)
 ADV_PHI = [1e-12, 1e-8, 1e-4, np.pi - 1e-8]
 #: kernels whose generated formula rests on an identity that holds on SO(3) only (issue 30,
-#: rigidsym.codegen.accurate: 1 - cos phi from the skew part of Q), name -> column of phi in
+#: rigidsym.codegen.accuracy.rewrites: 1 - cos phi from the skew part of Q), name -> column of phi
+# in
 #: the flat output. The reference here is the declared formula at the *rounded* Q, off SO(3):
 #: that differs from the problem's answer by the rounding of Q over sin^2(phi) (the loss the
 #: rewrite removed), so its rows get that bound here; tests/test_accuracy.py judges the kernel

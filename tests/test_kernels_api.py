@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 from rigidsym import kernels as K
-from rigidsym.kernels import _state
+from rigidsym.kernels.runtime import state as _state
 
 E = np.array([0.0, 0.6, 0.8])
 
@@ -111,7 +111,7 @@ def test_fallback_warns_once(monkeypatch):
     monkeypatch.setitem(_state.STATE, "backend", None)
     monkeypatch.setitem(_state.STATE, "warned", False)
     monkeypatch.setattr(_state.builtin(), "_clib", None)
-    monkeypatch.setattr("rigidsym.kernels._ext.load", boom)
+    monkeypatch.setattr("rigidsym.kernels.cbuild.extension.load", boom)
     with pytest.warns(RuntimeWarning, match="C backend unavailable"):
         assert K.use_backend("c") == "numpy"
     with warnings.catch_warnings():

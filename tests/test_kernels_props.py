@@ -28,8 +28,8 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from rigidsym import kernels as K
-from rigidsym._draw import draw
-from rigidsym.kernels import _state
+from rigidsym.core.draws import draw
+from rigidsym.kernels.runtime import state as _state
 
 SEQS = ("ZXZ", "XYX", "YZY", "ZYZ", "XZX", "YXY", "XYZ", "YZX", "ZXY", "XZY", "ZYX", "YXZ")
 

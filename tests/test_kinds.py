@@ -1,4 +1,4 @@
-"""The constraint-kind table (rigidsym._kinds): every row is consistent, and adding a kind is
+"""The constraint-kind table (rigidsym.core.kinds): every row is consistent, and adding a kind is
 one entry.
 
 The toy kind below (a point of the unit circle, spec name ``"unit"`` with shape ``(2,)``) is
@@ -15,8 +15,8 @@ import numpy as np
 import pytest
 import sympy as sp
 
-from rigidsym import _kinds
 from rigidsym.algebra.symbols import TIME, constrained_group, unit_vector
+from rigidsym.core import kinds as _kinds
 from rigidsym.zero.decide import decide_zero
 
 
@@ -148,7 +148,8 @@ def test_a_toy_kind_is_one_entry_for_kernels(toy, tmp_path):
     from rigidsym.codegen.api_spec import docstring
     from rigidsym.codegen.generator import generate, write
     from rigidsym.codegen.spec import Arg, Kernel, Out
-    from rigidsym.kernels import _core, _jacobian
+    from rigidsym.kernels.runtime import jacobians as _jacobian
+    from rigidsym.kernels.runtime import space as _core
 
     arg = Arg("x", (2,), "unit", "a point of the circle")
     kernel = Kernel("circle_slope", "Slope of the ray to a circle point.", "x2 / x1",

@@ -11,11 +11,11 @@ import sympy as sp
 
 from rigidsym.algebra.operators import Cpm, Vect
 from rigidsym.checking.deciding.explicit import explicit
-from rigidsym.checking.deciding.registry import REGISTRY, load_all
 from rigidsym.declare import cpm, mat, trace, vec, vect
 from rigidsym.printing import notation
 from rigidsym.printing.ascii import to_ascii
 from rigidsym.printing.labels import label_text, latex_spans, latex_text
+from rigidsym.registry.declarations import REGISTRY, load_all
 
 load_all()
 

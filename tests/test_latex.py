@@ -7,9 +7,9 @@ import dataclasses
 import pytest
 import sympy as sp
 
-from rigidsym.checking.deciding.registry import REGISTRY, Rel, load_all
 from rigidsym.latex import LatexError, parse_latex
 from rigidsym.latex.transcription import check_transcription
+from rigidsym.registry.declarations import REGISTRY, Rel, load_all
 
 
 def test_rodrigues_parses_to_book_operators():

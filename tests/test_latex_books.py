@@ -10,9 +10,9 @@ import sympy as sp
 
 import rigidsym
 from rigidsym.algebra.operators import Cpm
-from rigidsym.checking.deciding import registry
 from rigidsym.latex import LatexError, parse_latex
 from rigidsym.latex.lexing import braced, quoted
+from rigidsym.registry import declarations as registry
 
 
 @pytest.fixture(autouse=True)

@@ -38,7 +38,7 @@ IDS = sorted(k for k, h in json.loads((Path(__file__).resolve().parent / "data" 
 @cache
 def _entry(k: str) -> tuple:
     """(latex, section, structure) of the chapter id ``k``."""
-    from rigidsym.checking.deciding.registry import REGISTRY, load_all
+    from rigidsym.registry.declarations import REGISTRY, load_all
 
     load_all()
     eq = REGISTRY[k]

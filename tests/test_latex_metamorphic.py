@@ -35,8 +35,8 @@ sys.path.insert(0, str(HERE))
 import corpus  # noqa: E402
 
 import rigidsym  # noqa: E402
-from rigidsym.checking.deciding import registry  # noqa: E402
 from rigidsym.latex.notations import NOTATIONS  # noqa: E402
+from rigidsym.registry import declarations as registry  # noqa: E402
 
 ENTRIES = {e["id"]: e for e in corpus.entries()}
 QUICK = ["lynch-park-06", "spong-07", "barfoot-03", "sola-03", "craig-01", "corke-11"]

@@ -21,7 +21,7 @@ import pytest
 ROOT = Path(__file__).resolve().parents[1]
 #: what the book's modules may import of rigidsym (what a user module can, plus the
 #: worked-exercise framework); their own package aside
-BOOK_MAY_IMPORT = ("rigidsym.declare", "rigidsym.codegen.spec", "rigidsym.checking.worked")
+BOOK_MAY_IMPORT = ("rigidsym.declare", "rigidsym.codegen.spec", "rigidsym.course.worked")
 
 
 def _tree(dst: Path) -> Path:

@@ -14,7 +14,7 @@ import pytest
 import sympy as sp
 
 from rigidsym.checking.checker import check
-from rigidsym.checking.deciding import usermodules
+from rigidsym.registry import usermodules
 
 pytestmark = pytest.mark.xdist_group("lie_groups")
 

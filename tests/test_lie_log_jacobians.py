@@ -112,7 +112,7 @@ def test_log_jacobian_at_a_half_turn(backend):
     and 6.5e10 u at 1e-15, and NaN at 1e-40."""
     from flint import fmpq
 
-    from rigidsym.codegen.regimes import q, rotation, unit
+    from rigidsym.codegen.accuracy.regimes import q, rotation, unit
 
     rng = np.random.default_rng(7)
     fn = _tangent_reference("rotation_vector_from_rotation")

@@ -11,9 +11,10 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from rigidsym.checking.deciding import registry, usermodules
-from rigidsym.checking.deciding.registry import REGISTRY
 from rigidsym.cli import main
+from rigidsym.registry import declarations as registry
+from rigidsym.registry import usermodules
+from rigidsym.registry.declarations import REGISTRY
 
 EXAMPLE = Path(__file__).resolve().parents[1] / "examples" / "modern_robotics.py"
 
@@ -104,9 +105,9 @@ def _mutants_of_the_example():
     mutation test of issue 21, over the rigid-motion words)."""
     import random
 
-    from rigidsym.checking.deciding.explicit import _seed, shape_of
-    from rigidsym.checking.deciding.registry import Rel
+    from rigidsym.checking.deciding.explicit import seed_of, shape_of
     from rigidsym.checking.repairing import mutate
+    from rigidsym.registry.declarations import Rel
 
     usermodules.load(EXAMPLE)
     out = []
@@ -128,7 +129,7 @@ def _mutants_of_the_example():
                         continue
                     if shape_of(lhs) == shape_of(rhs):
                         out.append((f"{eq_id}: {mutate.describe(e)}",
-                                    Rel(lhs, rhs, rel.label), st.model, _seed(eq_id) + k))
+                                    Rel(lhs, rhs, rel.label), st.model, seed_of(eq_id) + k))
                         break
     return out
 

@@ -25,11 +25,11 @@ from pathlib import Path
 import pytest
 
 from rigidsym.checking.checker import decide_rel
-from rigidsym.checking.deciding import usermodules
 from rigidsym.checking.deciding.evidence import numeric_backing
-from rigidsym.checking.deciding.explicit import _seed, shape_of
-from rigidsym.checking.deciding.registry import REGISTRY, Rel, load_all
+from rigidsym.checking.deciding.explicit import seed_of, shape_of
 from rigidsym.checking.repairing import mutate
+from rigidsym.registry import usermodules
+from rigidsym.registry.declarations import REGISTRY, Rel, load_all
 from rigidsym.zero.decide import Unsupported
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -78,7 +78,7 @@ def _mutants(eq_id: str, k: int) -> list[tuple[str, Rel, dict, int]]:
                 continue
             if shape_of(lhs) == shape_of(rhs):
                 out.append((mutate.describe(e), Rel(lhs, rhs, rel.label), st.model,
-                            _seed(eq_id) + k))
+                            seed_of(eq_id) + k))
                 break
     return out
 

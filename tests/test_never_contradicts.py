@@ -32,7 +32,7 @@ from rigidsym import (
 from rigidsym.algebra.operators import Diff
 from rigidsym.checking.checker import check
 from rigidsym.checking.deciding.explicit import UnknownShape, shape_of
-from rigidsym.checking.deciding.registry import REGISTRY, BadInput
+from rigidsym.registry.declarations import REGISTRY, BadInput
 
 w, theta = unit_vector("nc_w"), angle("nc_theta")
 a_ = vector("nc_a")

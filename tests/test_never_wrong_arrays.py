@@ -343,8 +343,8 @@ def test_propagates_inf_is_decided_from_the_program():
     The generated programs: the quaternion product propagates, the screw axis (which
     divides) does not; both checked end to end by test_traced_jax_nan_policy_and_overflow and
     test_compiled_torch_nan_policy."""
-    from rigidsym._config import generated_dir
-    from rigidsym.kernels._arrays_eval import propagates_inf
+    from rigidsym.core.config import generated_dir
+    from rigidsym.kernels.arrays.evaluation import propagates_inf
 
     def prog(body: str) -> str:
         return f"import torch\n\n\ndef _main(a, b):\n    x0 = {body}\n    return (x0,), ()\n"

@@ -13,14 +13,14 @@ import pytest
 
 nbformat = pytest.importorskip("nbformat")
 
-from rigidsym.checking.worked import EXERCISE_IDS, exercise_module, parameters  # noqa: E402
 from rigidsym.cli import main  # noqa: E402
-from rigidsym.report.notebooks import (  # noqa: E402
+from rigidsym.course.notebooks import (  # noqa: E402
     check_files,
     file_name,
     notebook_files,
     notebook_text,
 )
+from rigidsym.course.worked import EXERCISE_IDS, exercise_module, parameters  # noqa: E402
 
 FOLDER = Path(__file__).resolve().parents[1] / "generated" / "notebooks"
 #: a fixed sample that runs in the default suite (fast to solve, each with a figure)
@@ -116,7 +116,7 @@ def test_a_variants_try_other_data_cell_is_a_second_valid_variant():
     import re
 
     import rigidsym.exercises as ex
-    from rigidsym.report.notebooks import notebook_text
+    from rigidsym.course.notebooks import notebook_text
 
     for ex_id in ("ex3.4", "ex3.19"):
         variant = {"n_1": ["0", "0", "5"]} if ex_id == "ex3.4" else {"d": ["0.1", "0", "0"]}

@@ -6,7 +6,7 @@ against NumPy's exact emulation), their float64 results are the same bits.
 Old main's C failed this on moving_frame_acceleration (18 % of random points),
 plucker_transfer and twist_transfer: GCC's SLP vectorizer fused products into
 vfmaddsub/vfmsubadd in the lanes loops despite -ffp-contract=off
-(rigidsym.kernels._build.KERNEL_FLAGS). PyTorch and JAX (eager) compute the same program
+(rigidsym.kernels.cbuild.driver.KERNEL_FLAGS). PyTorch and JAX (eager) compute the same program
 column by column: the same bits too.
 """
 

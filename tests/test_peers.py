@@ -1,4 +1,5 @@
-"""The peers' table (:mod:`rigidsym.codegen.peers`, issue 48 item 2): every adapter computes
+"""The peers' table (:mod:`rigidsym.codegen.accuracy.peers`, issue 48 item 2): every adapter
+computes
 its kernel's outputs, and the conventions the adapters rest on (right or left Jacobians,
 ``[v; w]`` or ``[w; v]``, the logarithm's domain) hold numerically, not by belief.
 
@@ -18,8 +19,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from rigidsym.codegen import peer_adapters as PA
-from rigidsym.codegen import peers as T
+from rigidsym.codegen.accuracy import peer_adapters as PA
+from rigidsym.codegen.accuracy import peers as T
 
 ROOT = Path(__file__).resolve().parents[1]
 KERNELS = {k["name"]: k for k in json.loads((ROOT / "generated" / "kernels.json")

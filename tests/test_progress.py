@@ -17,10 +17,10 @@ from pathlib import Path
 
 import pytest
 
-from rigidsym import _progress
-from rigidsym._progress import Reporter, format_seconds
 from rigidsym.checking import runner
-from rigidsym.checking.worked import EXERCISE_IDS
+from rigidsym.core import progress as _progress
+from rigidsym.core.progress import Reporter, format_seconds
+from rigidsym.course.worked import EXERCISE_IDS
 
 ROOT = Path(__file__).resolve().parents[1]
 #: the first output must come within this many seconds (about 3 s on the 2-core machine

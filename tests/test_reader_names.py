@@ -147,7 +147,7 @@ def test_committed_report_has_no_internal_name(name, code):
 
 def _show_all(ids, modules=None) -> dict[str, str]:
     from rigidsym.checking.checker import check
-    from rigidsym.checking.deciding.registry import REGISTRY
+    from rigidsym.registry.declarations import REGISTRY
     from rigidsym.report.show import explain
     out = {}
     for eq_id in ids:
@@ -158,8 +158,8 @@ def _show_all(ids, modules=None) -> dict[str, str]:
 
 
 def test_reader_module_show_and_report_have_no_internal_name(tmp_path, code):
-    from rigidsym.checking.deciding.usermodules import select_with_modules
     from rigidsym.cli import main
+    from rigidsym.registry.usermodules import select_with_modules
     ids = select_with_modules(None, None, [str(EXAMPLE)])
     assert len(ids) >= 20
     found = []
@@ -177,7 +177,7 @@ def test_reader_module_show_and_report_have_no_internal_name(tmp_path, code):
 
 @pytest.mark.slow
 def test_show_of_every_book_id_has_no_internal_name(code):
-    from rigidsym.checking.deciding.registry import REGISTRY, is_user_id, load_all
+    from rigidsym.registry.declarations import REGISTRY, is_user_id, load_all
     load_all()
     ids = [i for i in REGISTRY if not is_user_id(i)]
     found = []

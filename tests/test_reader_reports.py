@@ -9,7 +9,7 @@ import sympy as sp
 from rigidsym import Rel, Statement, acos, angle, equation, mat, trace, unit_vector
 from rigidsym import rotation_from_natural_invariants as rodrigues
 from rigidsym.checking.checker import check
-from rigidsym.checking.deciding.registry import REGISTRY, load_all
+from rigidsym.registry.declarations import REGISTRY, load_all
 from rigidsym.report.record import RESIDUAL_FLOOR, result_record
 from rigidsym.report.show import explain
 

@@ -14,12 +14,12 @@ from pathlib import Path
 import pytest
 import sympy as sp
 
-from rigidsym.checking.deciding import registry
-from rigidsym.checking.deciding.registry import REGISTRY, load_all
 from rigidsym.cli import main
 from rigidsym.printing import notation
 from rigidsym.printing.labels import label_latex, label_text
 from rigidsym.printing.names import book_latex, book_text
+from rigidsym.registry import declarations as registry
+from rigidsym.registry.declarations import REGISTRY, load_all
 
 REPORT = Path(__file__).resolve().parents[1] / "generated" / "report"
 #: a LaTeX subscript on a subscript: I_{C}_{21} is a TeX error ("double subscript")
@@ -198,23 +198,23 @@ def test_a_square_root_covers_its_whole_radicand():
 
 def test_vec_and_underline_print_as_accents():
     """\\vec{a} printed "veca" and \\underline{a} "underlinea" until wave 6's fifth session."""
-    from rigidsym.latex.shapes import _name_from_key
+    from rigidsym.latex.shapes import name_from_key
     from rigidsym.printing.names import book_latex, book_text
 
-    assert book_text(_name_from_key(r"\vec{a}")) == "a\u20d7"
-    assert book_text(_name_from_key(r"\underline{a}")) == "a\u0332"
-    assert book_text(_name_from_key(r"\vec{\omega}")) == "ω\u20d7"
-    assert book_latex(_name_from_key(r"\vec{a}")) == r"\vec{a}"
+    assert book_text(name_from_key(r"\vec{a}")) == "a\u20d7"
+    assert book_text(name_from_key(r"\underline{a}")) == "a\u0332"
+    assert book_text(name_from_key(r"\vec{\omega}")) == "ω\u20d7"
+    assert book_latex(name_from_key(r"\vec{a}")) == r"\vec{a}"
     assert book_text("avec") != book_text("a")   # never the plain letter
 
 
 def test_greek_letters_inside_a_subscript_print_as_letters():
     """Spong's R_{z,\\theta+\\phi} printed "R_z,theta+phi" until wave 6's fifth session; a
     Latin subscript stays as written."""
-    from rigidsym.latex.shapes import _name_from_key
+    from rigidsym.latex.shapes import name_from_key
     from rigidsym.printing.names import book_text
 
-    assert book_text(_name_from_key(r"R_{z,\theta}")) == "R_z,θ"
-    assert book_text(_name_from_key(r"R_{z,\theta+\phi}")) == "R_z,θ+φ"
-    assert book_text(_name_from_key(r"v_{max}")) == "v_max"      # no Greek word in it
-    assert book_text(_name_from_key(r"x_{i+1}")) == "x_i+1"
+    assert book_text(name_from_key(r"R_{z,\theta}")) == "R_z,θ"
+    assert book_text(name_from_key(r"R_{z,\theta+\phi}")) == "R_z,θ+φ"
+    assert book_text(name_from_key(r"v_{max}")) == "v_max"      # no Greek word in it
+    assert book_text(name_from_key(r"x_{i+1}")) == "x_i+1"

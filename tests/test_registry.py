@@ -6,8 +6,8 @@ import os
 
 import pytest
 
-from rigidsym.checking.deciding.registry import REGISTRY, load_all
 from rigidsym.checking.runner import run_checks
+from rigidsym.registry.declarations import REGISTRY, load_all
 
 load_all()
 IDS = sorted(REGISTRY)
@@ -55,7 +55,7 @@ def test_committed_chapter_report_is_fresh(results):
     (the report is deterministic: no timings, tiny residuals bounded)."""
     from pathlib import Path
 
-    from rigidsym.checking.deciding.registry import select
+    from rigidsym.registry.declarations import select
     from rigidsym.report.markdown import to_markdown
     from rigidsym.report.record import to_json
 

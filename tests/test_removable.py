@@ -15,14 +15,14 @@ import numpy as np
 import pytest
 import sympy as sp
 
-from rigidsym.codegen.removable import QuotientBase, rewrite
-from rigidsym.codegen.removable_cert import (
+from rigidsym.codegen.removable.series import (
     WIDE_SERIES,
     NotRemovable,
     S,
     certify,
     series_of,
 )
+from rigidsym.codegen.removable.singularities import QuotientBase, rewrite
 
 U = 2.0**-53
 NORMS = [0.0, 1e-12, 1e-8, 1e-4, 1e-2, 1.0]
@@ -226,7 +226,7 @@ def test_a_quotient_call_pickles():
     # time (found by `rigidsym generate --module` of the Lie kernels: PicklingError)
     import pickle
 
-    from rigidsym.codegen.removable import quotient
+    from rigidsym.codegen.removable.singularities import quotient
 
     t = sp.Symbol("t")
     e = 2 * quotient(sp.sin(S) / S)(t) + quotient((1 - sp.cos(S)) / S**2)(t + 1)

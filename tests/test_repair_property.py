@@ -12,9 +12,9 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from rigidsym.checking.checker import decide_rel
-from rigidsym.checking.deciding import usermodules
-from rigidsym.checking.deciding.registry import REGISTRY, Rel
 from rigidsym.checking.repairing import mutate, repair
+from rigidsym.registry import usermodules
+from rigidsym.registry.declarations import REGISTRY, Rel
 
 ROOT = Path(__file__).resolve().parents[1]
 SLIPS = ROOT / "tests" / "data" / "repair_slips.py"

@@ -18,8 +18,9 @@ from pathlib import Path
 import pytest
 
 from rigidsym.checking.checker import check
-from rigidsym.checking.deciding import registry, usermodules
-from rigidsym.checking.deciding.registry import REGISTRY
+from rigidsym.registry import declarations as registry
+from rigidsym.registry import usermodules
+from rigidsym.registry.declarations import REGISTRY
 
 ROOT = Path(__file__).resolve().parents[1]
 SLIPS = ROOT / "tests" / "data" / "repair_slips.py"
@@ -247,7 +248,7 @@ def test_show_html_markdown_and_json_carry_the_repairs(example):
 
 
 def test_repairs_are_the_same_across_hash_seeds(example):
-    code = ("import json, sys; from rigidsym.checking.deciding.usermodules import load; "
+    code = ("import json, sys; from rigidsym.registry.usermodules import load; "
             "from rigidsym.checking.checker import check; "
             f"load({str(EXAMPLE)!r}); "
             "r = [check(i) for i in ('rot:rodrigues-sign', 'rot:euler-rodrigues-norm')]; "

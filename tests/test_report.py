@@ -13,8 +13,8 @@ import pytest
 
 from rigidsym import cli
 from rigidsym.checking.checker import check
-from rigidsym.checking.deciding.registry import load_all
 from rigidsym.cli import report as cli_report
+from rigidsym.registry.declarations import load_all
 
 load_all()
 ROOT = Path(__file__).resolve().parents[1]
@@ -60,9 +60,9 @@ def test_report_command_says_where_and_writes_0644(tmp_path, monkeypatch, capsys
 
 
 def test_exercise_figure_and_pages_are_0644_and_deterministic(tmp_path, monkeypatch):
-    from rigidsym.checking import worked
     from rigidsym.cli.exercise import write_report
-    from rigidsym.report import exercises
+    from rigidsym.course import exercise_report as exercises
+    from rigidsym.course import worked
     # a cache of its own: the second render must read the solutions this test wrote
     monkeypatch.setenv("RIGIDSYM_CACHE", str(tmp_path / "cache"))
     old = os.umask(0o022)
@@ -99,7 +99,7 @@ def test_html_is_self_contained(few):
 def test_html_independent_of_hash_seed(few, tmp_path):
     from rigidsym.report.html import to_html
     code = ("import sys; from rigidsym.checking.checker import check; "
-            "from rigidsym.checking.deciding.registry import load_all; "
+            "from rigidsym.registry.declarations import load_all; "
             "from rigidsym.report.html import to_html; load_all(); "
             f"sys.stdout.write(to_html([check(i) for i in {IDS!r}]))")
     env = dict(os.environ, PYTHONHASHSEED="4242")

@@ -7,8 +7,8 @@ import unicodedata
 
 import pytest
 
-from rigidsym.checking.deciding.registry import REGISTRY, load_all
 from rigidsym.printing.mathml import bold_char, latex_to_mathml
+from rigidsym.registry.declarations import REGISTRY, load_all
 
 load_all()
 

@@ -9,7 +9,7 @@ import pytest
 import sympy as sp
 
 from rigidsym.checking.checker import check
-from rigidsym.checking.deciding.registry import REGISTRY, load_all
+from rigidsym.registry.declarations import REGISTRY, load_all
 from rigidsym.report.record import SCHEMA, result_record, to_json
 
 load_all()

@@ -12,7 +12,7 @@ from pathlib import Path
 import pytest
 
 from rigidsym.checking.checker import check
-from rigidsym.checking.deciding.registry import load_all
+from rigidsym.registry.declarations import load_all
 from rigidsym.report.html import to_html
 from rigidsym.report.markdown import to_markdown
 

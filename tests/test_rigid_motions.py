@@ -20,7 +20,6 @@ from rigidsym import (  # noqa: E402  (after the skip)
     BadInput,
     Rel,
     Statement,
-    _kinds,  # noqa: E402
     acos,
     ad,
     ad_dual,
@@ -44,7 +43,8 @@ from rigidsym import (  # noqa: E402  (after the skip)
     wrench,
 )
 from rigidsym.checking.checker import check  # noqa: E402
-from rigidsym.checking.deciding.registry import REGISTRY  # noqa: E402
+from rigidsym.core import kinds as _kinds  # noqa: E402  (after the skip)
+from rigidsym.registry.declarations import REGISTRY  # noqa: E402
 
 w, th = unit_vector("rm_w"), angle("rm_th")
 v = vector("rm_v")

@@ -97,7 +97,7 @@ def _runner(backend: str):
     def jax_run(name, arrays, dtype, b):
         import jax
 
-        from rigidsym.codegen.peers import x64
+        from rigidsym.codegen.accuracy.peers import x64
         from rigidsym.kernels import jax as rj
 
         with x64():     # float64 allowed; float32 inputs stay float32

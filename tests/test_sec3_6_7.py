@@ -9,7 +9,7 @@ from rigidsym.derivations import sec3_6, sec3_7, sec3_7_reciprocity
 
 from rigidsym.algebra.primitives import cpm, rotation_from_quaternion
 from rigidsym.checking.checker import decide_rel
-from rigidsym.checking.deciding.registry import Rel
+from rigidsym.registry.declarations import Rel
 
 ints = st.integers(-9, 9)
 vec3 = st.tuples(ints, ints, ints).map(lambda v: sp.Matrix(v))

@@ -14,7 +14,10 @@ import numpy as np
 import pytest
 
 import rigidsym.kernels as K
-from rigidsym.kernels import _build, _ext, _scale, _state
+from rigidsym.kernels.cbuild import driver as _build
+from rigidsym.kernels.cbuild import extension as _ext
+from rigidsym.kernels.runtime import scale as _scale
+from rigidsym.kernels.runtime import state as _state
 
 HAVE_CC = bool(shutil.which("gcc") or shutil.which("cc"))
 
@@ -33,7 +36,7 @@ def test_lazy_build_runs_once_under_a_thread_pool(monkeypatch):
     # functions' direct calls of C as well)
     import rigidsym.generated.api as api
 
-    from rigidsym.kernels import _entries
+    from rigidsym.kernels.runtime import entries as _entries
 
     _entries.unbind(space, api)
     monkeypatch.setattr(space, "_clib", None)

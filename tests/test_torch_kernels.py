@@ -407,7 +407,7 @@ def test_the_cpu_route_is_the_torch_program_bit_for_bit(dtype):
     lower at N = 1e3). Its values, singular masks, saved temps and input cotangents are
     those of the PyTorch programs bit for bit, on every kernel that has the programs,
     a masked sample in the batch included (its NaN where PyTorch has one)."""
-    from rigidsym.kernels import _torch_host
+    from rigidsym.kernels.arrays import torch_host as _torch_host
 
     space = rk._space()
     rng = np.random.default_rng(11)

@@ -29,7 +29,7 @@ import test_jacobians as TJ
 from test_kernels import rel_err
 
 from rigidsym import kernels as K
-from rigidsym.kernels import _state
+from rigidsym.kernels.runtime import state as _state
 from tests._arrays_cases import euler_probe, sample, singular_probes
 
 #: skipped without its extra in the README's test command; .ci/run installs it

@@ -13,8 +13,8 @@ from pathlib import Path
 
 import pytest
 
-from rigidsym._config import generated_dir
-from rigidsym.kernels import _build
+from rigidsym.core.config import generated_dir
+from rigidsym.kernels.cbuild import driver as _build
 
 pytestmark = [pytest.mark.slow, pytest.mark.skipif(   # two compiles: about 1.5 s
     _build.compiler() is None or not sys.platform.startswith("linux")

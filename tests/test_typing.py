@@ -18,7 +18,7 @@ from pathlib import Path
 import pytest
 
 from rigidsym import kernels as K
-from rigidsym.kernels import _state
+from rigidsym.kernels.runtime import state as _state
 
 #: skipped without its extra in the README's test command; .ci/run installs it
 pytestmark = pytest.mark.extra

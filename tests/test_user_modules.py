@@ -7,9 +7,10 @@ import textwrap
 
 import pytest
 
-from rigidsym.checking.deciding import registry, usermodules
-from rigidsym.checking.deciding.registry import REGISTRY, BadInput, load_all
 from rigidsym.cli import main
+from rigidsym.registry import declarations as registry
+from rigidsym.registry import usermodules
+from rigidsym.registry.declarations import REGISTRY, BadInput, load_all
 
 load_all()  # the book first: its unit vector e and angle phi exist in this process
 

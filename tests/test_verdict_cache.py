@@ -11,8 +11,8 @@ import pytest
 
 import rigidsym
 from rigidsym.checking import verdict_cache
-from rigidsym.checking.deciding.registry import REGISTRY
 from rigidsym.cli import main
+from rigidsym.registry.declarations import REGISTRY
 
 HELPER = '''
 """A helper module of a user module: its scale factor enters one model."""
@@ -131,7 +131,7 @@ def test_a_corrupt_entry_is_ignored_with_a_warning_and_recomputed(project, garba
 def test_a_foreign_entry_with_a_valid_checksum_is_not_trusted(project):
     src, helper = project
     _run(src, helper)
-    from rigidsym import _cache
+    from rigidsym.core import cache as _cache
 
     # the entry of one id copied under another id's key, checksum and all
     good = verdict_cache._path(verdict_cache.key_of("cacheb:double")).read_bytes()
@@ -170,7 +170,7 @@ def test_a_helper_edited_after_its_import_is_checked_and_not_stored(project):
 
 def test_no_cache_neither_reads_nor_writes(project, capsys):
     src, helper = project
-    from rigidsym import _cache
+    from rigidsym.core import cache as _cache
 
     assert main(["verify", "--module", str(src / "standalone.py"), "--no-cache",
                  "--quiet"]) == 0
@@ -200,7 +200,7 @@ def test_report_files_are_the_same_with_and_without_the_cache(project, tmp_path)
 
 def test_cache_info_and_clear(project, capsys):
     src, helper = project
-    from rigidsym import _cache
+    from rigidsym.core import cache as _cache
 
     _run(src, helper)
     kernels = _cache.folder("kernels")

@@ -141,7 +141,7 @@ np.savez("outputs.npz", Q=k.rodrigues_rotation(d["e"], d["phi"]),
     got = np.load(cwd / "outputs.npz")
     import importlib.util
 
-    from rigidsym.checking.deciding.registry import REGISTRY
+    from rigidsym.registry.declarations import REGISTRY
 
     # the example's formulas, in this process: its ids may be registered already by another
     # test's load of the same file, so they are set aside while it executes again here

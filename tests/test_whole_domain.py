@@ -6,7 +6,7 @@ no regime of the harness looked.
    completely there (relative error 2.5e-2 at ``2 pi - 1e-9``; ``NonFiniteResultError``
    at ``2 pi - 1e-10``, where the exact result has norm 8.9e10). The generator now prints
    a quotient whose denominator vanishes at ``2 pi`` in half angles
-   (:func:`rigidsym.codegen.removable.half_angle`): ``1/t^2 - cot(t/2)/(2 t)``.
+   (:func:`rigidsym.codegen.removable.singularities.half_angle`): ``1/t^2 - cot(t/2)/(2 t)``.
 2. The SE(3) inverse Jacobian against pytransform3d's ``left_jacobian_SE3_inv`` at
    ``|w|`` in {3, pi, 4.5}: within the rule's ``max(2 e_ref, 4 u)`` of the peer.
 3. ``rotation_from_euler_rodrigues`` normalises: any non-zero eta gives a rotation, which

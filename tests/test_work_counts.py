@@ -1,5 +1,5 @@
 """Counted, not timed (issue 39): the work a command does, from the counts it writes
-(:mod:`rigidsym._work`): a warm ``verify --json`` builds no declaration, a cold one builds
+(:mod:`rigidsym.core.work`): a warm ``verify --json`` builds no declaration, a cold one builds
 each once, a change to one module rebuilds that module's ids only.
 
 Each command runs in a fresh process (as a user runs it twice), on a cache of its own. On
@@ -115,8 +115,8 @@ def test_json_after_text_builds_only_for_the_transcriptions(modules):
 def test_an_exercise_on_the_book_s_data_is_solved_once_then_read_back(tmp_path, monkeypatch):
     """The report's exercises are read back, not solved again (main: solved every time a
     process asks)."""
-    from rigidsym import _work
-    from rigidsym.checking import worked
+    from rigidsym.core import work as _work
+    from rigidsym.course import worked
 
     monkeypatch.setenv("RIGIDSYM_CACHE", str(tmp_path))
     monkeypatch.setattr(worked, "_CACHE", type(worked._CACHE)())  # as a fresh process

@@ -5,6 +5,6 @@ the framework (steps, checks, rendering) is :mod:`derivations.exercises.worked` 
 ``rigidsym exercise`` command is :mod:`derivations.exercises.cli`.
 """
 
-from rigidsym.checking.worked import EXERCISE_IDS, Solution, normalise_id, solve
+from rigidsym.course.worked import EXERCISE_IDS, Solution, normalise_id, solve
 
 __all__ = ["EXERCISE_IDS", "Solution", "normalise_id", "solve"]

@@ -12,7 +12,7 @@ import functools
 
 import sympy as sp
 
-from rigidsym.checking.worked import Check, is_zero
+from rigidsym.course.worked import Check, is_zero
 
 x, y, z = sp.symbols("x y z", real=True)
 A_SIDE = sp.Rational(1, 40)   # 25 mm in m

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import sympy as sp
 
-from rigidsym.checking.worked import is_zero
+from rigidsym.course.worked import is_zero
 from rigidsym.declare import trace, vect
 
 from ..sec3_2_1 import screw_axis_point

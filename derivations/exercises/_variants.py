@@ -5,8 +5,8 @@ Exercise 3.6 gets numeric variants (the gripper point P drawn at random). The pr
 statements drawn from the exercise's identity, equivalent forms of it, and one-edit slips
 of it (a sign, a factor or exponent, the order of a product or a transpose), as the repair
 search edits a printed equation. Every statement is decided here by the sound zero test
-(:func:`rigidsym.checking.worked.identity_check`, and a refutation by an exact
-counterexample, :func:`~rigidsym.checking.worked.nonidentity_check`), never assumed: a
+(:func:`rigidsym.course.worked.identity_check`, and a refutation by an exact
+counterexample, :func:`~rigidsym.course.worked.nonidentity_check`), never assumed: a
 statement neither proved nor refuted is never drawn.
 
 The answers: ``holds``, one truth per statement (1 true, 0 false; "true"/"false" typed),
@@ -21,7 +21,7 @@ from functools import cache
 
 import sympy as sp
 
-from rigidsym.checking.worked import (
+from rigidsym.course.worked import (
     Solution,
     exercise_module,
     identity_check,
@@ -244,7 +244,7 @@ def draw(ex_id: str, rng) -> tuple[str, dict] | Solution:
 
 
 def _step(ex_id: str, k: int):
-    from rigidsym.checking.worked import Step
+    from rigidsym.course.worked import Step
 
     text, expr, why = statements(ex_id)[k]
     holds = decided(ex_id, k)[0]

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import sympy as sp
 
-from rigidsym.checking.worked import Solution, identity_check, nonidentity_check
+from rigidsym.course.worked import Solution, identity_check, nonidentity_check
 from rigidsym.declare import scalar, vector
 
 ID = "ex3.3"
@@ -34,7 +34,7 @@ def quadric(lines, p):
 def _origin_check(s: Solution) -> None:
     """Three skew lines with independent directions; moving the origin by c turns h into
     f(c) and keeps M: both signs of h occur with one det M, so h > 0 does not fix it."""
-    from rigidsym.checking.worked import truth_check
+    from rigidsym.course.worked import truth_check
 
     p = sp.Matrix(sp.symbols("x y z", real=True))
     lines = [(sp.zeros(3, 1), sp.Matrix([1, 0, 0])), (sp.Matrix([0, 0, 1]), sp.Matrix([0, 1, 0])),

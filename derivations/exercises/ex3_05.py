@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import sympy as sp
 
-from rigidsym.checking.worked import Param, Solution, exact_check, identity_check, is_zero
+from rigidsym.course.worked import Param, Solution, exact_check, identity_check, is_zero
 from rigidsym.declare import unit_vector, vector
 
 ID = "ex3.5"

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import sympy as sp
 
-from rigidsym.checking.worked import Param, Solution, exact_check, is_zero
+from rigidsym.course.worked import Param, Solution, exact_check, is_zero
 
 from ._screw import screw_of_displacement
 

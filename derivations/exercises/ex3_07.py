@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import sympy as sp
 
-from rigidsym.checking.worked import Param, Solution, exact_check, is_zero, truth_check
+from rigidsym.course.worked import Param, Solution, exact_check, is_zero, truth_check
 
 ID = "ex3.7"
 TITLE = "Calibrating an axis from two moment measurements"

@@ -6,7 +6,7 @@ import random
 
 import sympy as sp
 
-from rigidsym.checking.worked import Solution, identity_check, truth_check
+from rigidsym.course.worked import Solution, identity_check, truth_check
 from rigidsym.declare import cpm, scalar, vector
 
 ID = "ex3.8"

@@ -10,7 +10,7 @@ import functools
 
 import sympy as sp
 
-from rigidsym.checking.worked import Param, Solution, identity_check, truth_check
+from rigidsym.course.worked import Param, Solution, identity_check, truth_check
 from rigidsym.declare import TIME, angle, cpm, rotation_from_natural_invariants, vect
 
 ID = "ex3.10"
@@ -220,7 +220,7 @@ def _algebraic(x) -> bool:
 
 def _evaluated(s: Solution, W, d, at: dict, omega) -> None:
     """W, det W and, with omega, eta_dot = W^-1 omega at the given angles (exact)."""
-    from rigidsym.checking.worked import exact_check, is_zero
+    from rigidsym.course.worked import exact_check, is_zero
 
     sub = {ETA[k]: at[n] for k, n in enumerate(("theta", "phi", "psi")) if n in at}
     free = [n for n in ("theta", "phi", "psi") if n not in at]

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import sympy as sp
 
-from rigidsym.checking.worked import Param, Solution, exact_check
+from rigidsym.course.worked import Param, Solution, exact_check
 
 from ._prism import (
     A_SIDE,

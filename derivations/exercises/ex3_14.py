@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import sympy as sp
 
-from rigidsym.checking.worked import Param, Solution, exact_check, is_zero, truth_check
+from rigidsym.course.worked import Param, Solution, exact_check, is_zero, truth_check
 
 from ._fit import accepting_tol, exact_rotation, is_local_minimum, sorted_eigh
 

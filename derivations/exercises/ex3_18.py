@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import sympy as sp
 
-from rigidsym.checking.worked import Solution, identity_check
+from rigidsym.course.worked import Solution, identity_check
 from rigidsym.declare import TIME
 
 from .ex3_17 import motion

@@ -10,7 +10,7 @@ from __future__ import annotations
 import numpy as np
 import sympy as sp
 
-from rigidsym.checking.worked import Param, Solution, exact_check, identity_check, is_zero
+from rigidsym.course.worked import Param, Solution, exact_check, identity_check, is_zero
 from rigidsym.declare import block, rotation, vector
 
 from ..sec3_4_2 import twist_transfer_matrix

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import sympy as sp
 
-from rigidsym.checking.worked import Solution, identity_check, nonidentity_check
+from rigidsym.course.worked import Solution, identity_check, nonidentity_check
 from rigidsym.declare import TIME, cpm, trace, vector
 
 ID = "ex3.21"

@@ -33,8 +33,8 @@ _DECLARE = (
     "expm", "logm", "diff", "acos", "atan2", "ORDERS", "norm3",
 )
 _WHERE = {**{n: "rigidsym.api" for n in _API}, **{n: "rigidsym.declare" for n in _DECLARE},
-          "load_module": "rigidsym.checking.deciding.usermodules",
-          "BadInput": "rigidsym.checking.deciding.registry"}
+          "load_module": "rigidsym.registry.usermodules",
+          "BadInput": "rigidsym.registry.declarations"}
 _RENAMED = {"load_module": "load"}
 
 __all__ = [*_API, "load_module", "BadInput", *_DECLARE]

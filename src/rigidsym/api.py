@@ -18,7 +18,8 @@ import time
 from collections.abc import Iterable, Sequence
 from types import ModuleType
 
-from rigidsym.checking.deciding.registry import BadInput, select
+from rigidsym.latex.letting import said_choices
+from rigidsym.registry.declarations import BadInput, select
 from rigidsym.report.results import Result, Results
 
 __all__ = ["check", "check_latex", "verify", "Result", "Results"]
@@ -28,7 +29,7 @@ ModuleSpec = str | os.PathLike | ModuleType
 
 def _load(modules) -> list[str]:
     """Load user modules (paths, dotted names or module objects); their import names."""
-    from rigidsym.checking.deciding import usermodules
+    from rigidsym.registry import usermodules
 
     if isinstance(modules, str | os.PathLike | ModuleType):
         modules = [modules]
@@ -40,7 +41,7 @@ def _load(modules) -> list[str]:
 
 
 def _repair_args(repairs, repair_budget) -> None:
-    from rigidsym.checking.deciding.registry import check_budget
+    from rigidsym.registry.declarations import check_budget
 
     if not isinstance(repairs, bool):
         raise ValueError(f"repairs: expected True or False, got {repairs!r}")
@@ -145,7 +146,7 @@ def check_latex(latex: str, let: Sequence[str] | dict[str, str] | str | None = N
         >>> r.verdict                                              # doctest: +SKIP
         'verified'
     """
-    return _check_latex(latex, let, book, modules, repairs, repair_budget, notation,
+    return check_latex_run(latex, let, book, modules, repairs, repair_budget, notation,
                         repair_seconds)[0]
 
 
@@ -159,7 +160,7 @@ def _seconds(x) -> float | None:
     return float(x)
 
 
-def _check_latex(latex, let, book, modules, repairs=True, repair_budget=None, notation=None,
+def check_latex_run(latex, let, book, modules, repairs=True, repair_budget=None, notation=None,
                  repair_seconds=REPAIR_SECONDS):
     """:func:`check_latex` and the :class:`rigidsym.latex.letting.Reading` (for the CLI)."""
     from rigidsym.checking.checker import check as _check
@@ -179,19 +180,19 @@ def _check_latex(latex, let, book, modules, repairs=True, repair_budget=None, no
 def _readings_agree(reading, first, others) -> None:
     """Issue 52, item 2: the verdict of every reading that type-checks, or bad input naming
     the choice, each reading's verdict and the ``--let`` that settles it."""
-    from rigidsym.checking.deciding.errors import BadInput
-    from rigidsym.latex.letting import _said
+    from rigidsym.core.errors import BadInput
 
     verdicts = [first.verdict] + [o.verdict for o in others]
     readings = [reading, *reading.others]
     if len(set(verdicts)) == 1:
         reading.notes.append(f"{len(readings)} readings type-check "
-                             f"({' | '.join(_said(x.choices) for x in readings)}): all "
+                             f"({' | '.join(said_choices(x.choices) for x in readings)}): all "
                              f"{verdicts[0]}")
         return
     keys = sorted({k for x in readings for k, c in x.choices.items()
                    if c != reading.choices.get(k)})
-    said = "; ".join(f"{_said(x.choices)}: {v}" for x, v in zip(readings, verdicts, strict=True))
+    said = "; ".join(f"{said_choices(x.choices)}: {v}" for x, v in zip(readings, verdicts,
+    strict=True))
     raise BadInput(f"--latex: {' and '.join(_choice_words(k) for k in keys)}, and the readings "
                    f"disagree ({said}): say which, {'; '.join(_settles(k) for k in keys)}")
 

@@ -72,8 +72,8 @@ from rigidsym.algebra.symbols import (
     vector,
     wrench,
 )
-from rigidsym.checking.deciding import registry as _registry
-from rigidsym.checking.deciding.registry import Rel, Statement, equation
+from rigidsym.registry import declarations as _registry
+from rigidsym.registry.declarations import Rel, Statement, equation
 
 __all__ = [
     "equation", "Statement", "Rel",

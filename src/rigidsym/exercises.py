@@ -16,8 +16,9 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from rigidsym.checking import worked as _worked
-from rigidsym.checking.worked import (
+from rigidsym.course import worked as _worked
+from rigidsym.course.grading import Graded
+from rigidsym.course.worked import (
     IllPosed,
     Param,
     Parameters,
@@ -25,9 +26,8 @@ from rigidsym.checking.worked import (
     exercise_module,
     normalise_id,
 )
-from rigidsym.checking.worked import parameters as _parameters
-from rigidsym.checking.worked import solve as _solve
-from rigidsym.checking.worked.grading import Graded
+from rigidsym.course.worked import parameters as _parameters
+from rigidsym.course.worked import solve as _solve
 
 __all__ = ["solve", "parameters", "figure", "write_notebook", "grade", "exam",
            "EXERCISE_IDS", "Solution", "Parameters", "Param", "IllPosed", "Graded"]
@@ -126,8 +126,8 @@ def write_notebook(exercise: str, path: str | Path, **data) -> Path:
         ValueError, TypeError: as :func:`solve`, for the exercise id and the data.
         OSError: the file cannot be written.
     """
-    from rigidsym._io import write_atomic
-    from rigidsym.report.notebooks import notebook_text
+    from rigidsym.core.files import write_atomic
+    from rigidsym.course.notebooks import notebook_text
 
     ex_id = normalise_id(exercise)
     return write_atomic(Path(path), notebook_text(ex_id, data or None))
@@ -161,7 +161,7 @@ def grade(solution: Solution, answers: dict) -> list[Graded]:
         TypeError: ``solution`` is not a :class:`Solution`, or ``answers`` not a dict.
         ValueError: the solution is ill-posed, or an answer name it does not have.
     """
-    from rigidsym.checking.worked.grading import grade as _grade
+    from rigidsym.course.grading import grade as _grade
 
     if not isinstance(solution, Solution):
         raise TypeError(f"solution: expected a Solution from rigidsym.exercises.solve, got "
@@ -180,7 +180,7 @@ def exam(spec, out_dir: str | Path, seed: int | None = None) -> dict[str, Path]:
     from the seed, for every exercise: readable exact numbers (Cayley rotations of small
     rationals, Pythagorean unit vectors, small integers, short decimals), or, for the
     proofs, true-or-false statements decided by the zero test. A class from a roster:
-    ``rigidsym exam SPEC --students ROSTER`` (:mod:`rigidsym.report.course`). See
+    ``rigidsym exam SPEC --students ROSTER`` (:mod:`rigidsym.course.roster`). See
     ``docs/exams.md``.
 
     Args:
@@ -201,6 +201,6 @@ def exam(spec, out_dir: str | Path, seed: int | None = None) -> dict[str, Path]:
         TypeError: bad data (as :func:`solve`).
         OSError: the folder cannot be written.
     """
-    from rigidsym.report.exam import exam as _exam
+    from rigidsym.course.exam import exam as _exam
 
     return _exam(spec, out_dir, seed)

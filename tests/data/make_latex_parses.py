@@ -17,8 +17,8 @@ def structures() -> dict[str, str | None]:
     """id -> hash of the parse (``None``: it does not parse)."""
     import sympy as sp
 
-    from rigidsym.checking.deciding.registry import REGISTRY, load_all
     from rigidsym.latex import LatexError, parse_latex
+    from rigidsym.registry.declarations import REGISTRY, load_all
 
     load_all()
     out = {}

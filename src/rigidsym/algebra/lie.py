@@ -23,14 +23,14 @@ import sympy as sp
 from sympy.printing.precedence import PRECEDENCE
 
 from rigidsym.algebra.lie_vectors import (
-    _axial,
-    _cpm,
-    _transform,
     exp_of_vector,
+    explicit_axial,
+    explicit_cpm,
+    explicit_transform,
     log_explicit,
     log_se3_explicit,
 )
-from rigidsym.algebra.operators import _explicit
+from rigidsym.algebra.operators import explicit
 
 __all__ = ["ORDERS", "LieOp", "Hat", "Vee", "Transform", "TransformInverse", "AdT", "AdV",
            "AdDual", "Expm", "Logm", "exp_explicit", "log_explicit", "is_unit", "split_angle"]
@@ -53,22 +53,22 @@ def _join(w, v, lin: int) -> sp.Matrix:
 def _hat(x, lin: int) -> sp.Matrix:
     x = sp.Matrix(x)
     if x.shape == (3, 1):
-        return _cpm(x)
+        return explicit_cpm(x)
     w, v = _split(x, lin)
-    return sp.Matrix.vstack(sp.Matrix.hstack(_cpm(w), v), sp.zeros(1, 4))
+    return sp.Matrix.vstack(sp.Matrix.hstack(explicit_cpm(w), v), sp.zeros(1, 4))
 
 
 def _vee(X, lin: int) -> sp.Matrix:
     X = sp.Matrix(X)
     if X.shape == (3, 3):
-        return _axial(X)
-    return _join(_axial(X[:3, :3]), X[:3, 3], lin)
+        return explicit_axial(X)
+    return _join(explicit_axial(X[:3, :3]), X[:3, 3], lin)
 
 
 def _transform_inverse(T) -> sp.Matrix:
     T = sp.Matrix(T)
     R, p = T[:3, :3], T[:3, 3]
-    return _transform(R.T, -R.T * p)
+    return explicit_transform(R.T, -R.T * p)
 
 
 def _blocks(a, b, c, d, lin: int) -> sp.Matrix:
@@ -81,12 +81,12 @@ def _blocks(a, b, c, d, lin: int) -> sp.Matrix:
 def _Ad(T, lin: int) -> sp.Matrix:
     T = sp.Matrix(T)
     R, p = T[:3, :3], T[:3, 3]
-    return _blocks(R, sp.zeros(3), _cpm(p) * R, R, lin)
+    return _blocks(R, sp.zeros(3), explicit_cpm(p) * R, R, lin)
 
 
 def _ad(V, lin: int) -> sp.Matrix:
     w, v = _split(V, lin)
-    return _blocks(_cpm(w), sp.zeros(3), _cpm(v), _cpm(w), lin)
+    return _blocks(explicit_cpm(w), sp.zeros(3), explicit_cpm(v), explicit_cpm(w), lin)
 
 
 def _ad_dual(V, lin: int) -> sp.Matrix:
@@ -130,7 +130,7 @@ class LieOp(sp.MatrixExpr):
         return self.value(*mats)[i, j]
 
     def doit(self, **hints):
-        ops = [_explicit(a, **hints) for a in self.args[:self.operands]]
+        ops = [explicit(a, **hints) for a in self.args[:self.operands]]
         if all(isinstance(a, sp.MatrixBase) for a in ops):
             return sp.ImmutableMatrix(self.value(*ops))
         return type(self)(*ops, *self.args[self.operands:])
@@ -191,7 +191,7 @@ class Transform(LieOp):
         return (4, 4)
 
     def value(self, R, p):
-        return _transform(R, p)
+        return explicit_transform(R, p)
 
 
 class TransformInverse(LieOp):
@@ -295,8 +295,8 @@ class Logm(LieOp):
 
 # --------------------------------------------------------------------- the exponential
 def _angle_atoms(X) -> list:
-    from rigidsym import _kinds
     from rigidsym.algebra.symbols import constraint_of
+    from rigidsym.core import kinds as _kinds
 
     atoms = [a for a in sp.Matrix(X).free_symbols | set(sp.Matrix(X).atoms(sp.Function))
              if (c := constraint_of(a)) is not None and _kinds.get(c.kind).half_angle]
@@ -353,21 +353,21 @@ def exp_explicit(X, lin: int = 0, theta=None, unit: bool = False) -> sp.Matrix:
     An axis not known to be unit (a free rotation vector ``w``, a kernel's unconstrained
     input) takes the closed forms in the norm ``theta = sqrt(w^T w)``
     (:func:`rigidsym.algebra.lie_vectors.exp_of_vector`, issue 38), singular as printed at
-    ``w = 0`` only: a removable singularity (:mod:`rigidsym.codegen.removable`).
+    ``w = 0`` only: a removable singularity (:mod:`rigidsym.codegen.removable.singularities`).
     """
     if theta is None:
         theta, K = split_angle(X)
     else:
         K = sp.Matrix(X)
-    w = _axial(K[:3, :3])
+    w = explicit_axial(K[:3, :3])
     if not (unit or is_unit(w)):
         if K.shape == (4, 4) and all(e == 0 for e in w) and is_unit(K[:3, 3]):
-            return _transform(sp.eye(3), K[:3, 3] * theta)
+            return explicit_transform(sp.eye(3), K[:3, 3] * theta)
         return exp_of_vector(K * theta)
-    W = _cpm(w)
+    W = explicit_cpm(w)
     R = sp.eye(3) + sp.sin(theta) * W + (1 - sp.cos(theta)) * W * W
     if K.shape == (3, 3):
         return R
     G = sp.eye(3) * theta + (1 - sp.cos(theta)) * W + (theta - sp.sin(theta)) * W * W
-    return _transform(R, G * K[:3, 3])
+    return explicit_transform(R, G * K[:3, 3])
 

@@ -6,7 +6,8 @@ These are the forms of Solà, Deray & Atchuthan, "A micro Lie theory for state e
 robotics" (2018), App. B (SO(3)) and D (SE(3)), and Barfoot, *State Estimation for
 Robotics* (2017), Sec. 7.1; they equal Modern Robotics' (3.51), (3.88) with ``w = theta
 omega``. As printed they are singular at ``w = 0``, a removable singularity the code
-generator replaces by its series (:mod:`rigidsym.codegen.removable`); the zero test reads
+generator replaces by its series (:mod:`rigidsym.codegen.removable.singularities`); the zero test
+reads
 ``theta`` through the polar parametrisation ``w = theta e``
 (:mod:`rigidsym.checking.deciding.branches`).
 """
@@ -20,16 +21,16 @@ __all__ = ["norm3", "exp_of_vector", "log_explicit", "log_se3_explicit"]
 
 # the explicit formulas rigidsym.algebra.lie builds on: kept here, below it, so that the
 # import goes one way
-def _cpm(w) -> sp.Matrix:
+def explicit_cpm(w) -> sp.Matrix:
     return sp.Matrix([[0, -w[2], w[1]], [w[2], 0, -w[0]], [-w[1], w[0], 0]])
 
 
-def _axial(A) -> sp.Matrix:
+def explicit_axial(A) -> sp.Matrix:
     h = sp.Rational(1, 2)
     return sp.Matrix([h * (A[2, 1] - A[1, 2]), h * (A[0, 2] - A[2, 0]), h * (A[1, 0] - A[0, 1])])
 
 
-def _transform(R, p) -> sp.Matrix:
+def explicit_transform(R, p) -> sp.Matrix:
     return sp.Matrix.vstack(sp.Matrix.hstack(sp.Matrix(R), sp.Matrix(p)),
                             sp.Matrix([[0, 0, 0, 1]]))
 
@@ -77,13 +78,13 @@ def exp_of_vector(X) -> sp.Matrix:
     theta [omega]``; Solà App. D; Barfoot Sec. 7.1.4). Removable singularity at ``w = 0``.
     """
     X = sp.Matrix(X)
-    w = _axial(X[:3, :3])
-    W, th = _cpm(w), norm3(w)
+    w = explicit_axial(X[:3, :3])
+    W, th = explicit_cpm(w), norm3(w)
     R = sp.eye(3) + sp.sin(th) / th * W + (1 - sp.cos(th)) / th**2 * W * W
     if X.shape == (3, 3):
         return R
     J = sp.eye(3) + (1 - sp.cos(th)) / th**2 * W + (th - sp.sin(th)) / th**3 * W * W
-    return _transform(R, J * X[:3, 3])
+    return explicit_transform(R, J * X[:3, 3])
 
 
 def log_se3_explicit(T) -> sp.Matrix:

@@ -148,7 +148,7 @@ def is_symbolic(x) -> bool:
         bool(x.atoms(sp.MatrixSymbol))
 
 
-def _explicit(a, **hints):
+def explicit(a, **hints):
     a = a.doit(**hints) if isinstance(a, sp.Basic) else a
     if isinstance(a, sp.MatrixExpr) and not a.atoms(sp.MatrixSymbol):
         a = a.as_explicit()
@@ -173,7 +173,7 @@ class Cpm(sp.MatrixExpr):
                           [-v[1, 0], v[0, 0], 0]])[i, j]
 
     def doit(self, **hints):
-        v = _explicit(self.args[0], **hints)
+        v = explicit(self.args[0], **hints)
         if isinstance(v, sp.MatrixBase):
             return sp.ImmutableMatrix(3, 3, lambda i, j: Cpm(v)._entry(i, j))
         return Cpm(v)
@@ -203,7 +203,7 @@ class Vect(sp.MatrixExpr):
         return sp.Rational(1, 2) * (A[m, k] - A[k, m])
 
     def doit(self, **hints):
-        A = _explicit(self.args[0], **hints)
+        A = explicit(self.args[0], **hints)
         if isinstance(A, sp.MatrixBase):
             return sp.ImmutableMatrix(3, 1, lambda i, j: Vect(A)._entry(i, j))
         return Vect(A)
@@ -240,7 +240,7 @@ class Diff(sp.MatrixExpr):
         return DiffEntry(self.args[0], self.args[1], i, j)
 
     def doit(self, **hints):
-        X = _explicit(self.args[0], **hints)
+        X = explicit(self.args[0], **hints)
         if isinstance(X, sp.MatrixBase):
             return sp.ImmutableMatrix(X).diff(self.args[1])
         return Diff(X, self.args[1])
@@ -266,7 +266,7 @@ class DiffEntry(sp.Function):
         return None
 
     def doit(self, **hints):
-        X = _explicit(self.args[0], **hints)
+        X = explicit(self.args[0], **hints)
         return DiffEntry(X, *self.args[1:]) if isinstance(X, sp.MatrixBase) else self
 
     def _sympystr(self, printer):

@@ -31,7 +31,7 @@ from functools import cache
 import sympy as sp
 from sympy.core.function import AppliedUndef
 
-from rigidsym import _kinds
+from rigidsym.core import kinds as _kinds
 
 __all__ = [
     "TIME",
@@ -62,7 +62,7 @@ class Constraint:
     """A constraint on a group of atoms; every atom of the group carries it.
 
     Attributes:
-        kind: the name of a kind of :data:`rigidsym._kinds.KINDS` (``"unit"``,
+        kind: the name of a kind of :data:`rigidsym.core.kinds.KINDS` (``"unit"``,
             ``"unit4"``, ``"angle"``, ``"rotation"``).
         name: the group's book name (``"e"``, ``"phi"``, ``"Q"``).
         names: the names of the atoms (symbol or function names), row-major for matrices.
@@ -141,7 +141,7 @@ def _components(name: str, n: int) -> list[str]:
 
 def constrained_group(kind: str, name: str, t: sp.Symbol | None = None):
     """The atoms of one group of the constraint ``kind`` (a row of
-    :data:`rigidsym._kinds.KINDS`), shaped as the kind says.
+    :data:`rigidsym.core.kinds.KINDS`), shaped as the kind says.
 
     Args:
         kind: a kind name (``"unit"``, ``"unit4"``, ``"rotation"``, ``"angle"``, or one

@@ -25,32 +25,32 @@ import time
 from dataclasses import dataclass
 from fractions import Fraction
 
-from rigidsym import _work
 from rigidsym.checking.deciding.balls import round_up
-from rigidsym.checking.deciding.bookpoint import describe_point
 from rigidsym.checking.deciding.branches import cases
+from rigidsym.checking.deciding.counterexample import describe_point
 from rigidsym.checking.deciding.evidence import (
     NUMERIC_DIGITS,
     NUMERIC_POINTS,
-    _counterexample,
     counterexample_ball,
+    exact_counterexample,
     numeric_backing,
 )
 from rigidsym.checking.deciding.explicit import (
-    _EXPLICIT_CACHE,
+    EXPLICIT_CACHE,
     UnknownShape,
-    _entries,
-    _fmt,
-    _rel_str,
-    _seed,
+    entries_of,
+    expanded_text,
     explicit,
+    rel_str,
+    seed_of,
     shape_of,
 )
 from rigidsym.checking.deciding.records import member_record, model_words, printed_latex
-from rigidsym.checking.deciding.registry import REGISTRY, Equation, Rel, Statement
 from rigidsym.checking.outcome import Outcome
 from rigidsym.checking.repairing.correction import RepairSettings, correct
+from rigidsym.core import work as _work
 from rigidsym.printing.names import book_text
+from rigidsym.registry.declarations import REGISTRY, Equation, Rel, Statement
 from rigidsym.zero.decide import Unsupported, decide_zero, make_plan
 
 __all__ = ["Outcome", "check", "explicit", "shape_of", "NUMERIC_DIGITS", "NUMERIC_POINTS"]
@@ -95,13 +95,13 @@ def decide_rel(rel: Rel, model: dict, seed: int, st: Statement | None = None) ->
         def describe(plan, pt, split=None):
             return describe_point(rel, model, rels, plan, pt, st.parametrisation, split)
     if ls != rs:
-        plan = make_plan(_entries(lhs) + _entries(rhs))
+        plan = make_plan(entries_of(lhs) + entries_of(rhs))
         rng = random.Random(seed)
         ce = None
         for _ in range(100):
             pt = {p: Fraction(rng.randint(-3, 3), rng.randint(1, 3)) for p in plan.params}
             try:
-                ce, cplan, cpt = _counterexample(lhs, rhs, pt, seed)
+                ce, cplan, cpt = exact_counterexample(lhs, rhs, pt, seed)
                 if describe is not None:
                     ce.update(describe(cplan, cpt))
                 break
@@ -131,11 +131,11 @@ def decide_rel(rel: Rel, model: dict, seed: int, st: Statement | None = None) ->
 def _decide_case(rel, blhs, brhs, lhs, rhs, seed, describe) -> _RelOutcome:
     """Decide ``lhs = rhs`` (branches resolved); the ball at a counterexample evaluates
     ``blhs - brhs`` (the same relation, ``acos``/``atan2`` as such)."""
-    diff = [a - b for a, b in zip(_entries(lhs), _entries(rhs), strict=True)]
+    diff = [a - b for a, b in zip(entries_of(lhs), entries_of(rhs), strict=True)]
     zr = decide_zero(diff, seed=seed)
     if zr.zero is False:
-        extra = [] if blhs is lhs and brhs is rhs else _entries(blhs) + _entries(brhs)
-        ce, plan, pt = _counterexample(lhs, rhs, zr.witness, seed, extra)
+        extra = [] if blhs is lhs and brhs is rhs else entries_of(blhs) + entries_of(brhs)
+        ce, plan, pt = exact_counterexample(lhs, rhs, zr.witness, seed, extra)
         if describe is not None:
             ce.update(describe(plan, pt))
         try:
@@ -160,8 +160,8 @@ def _combine(outs: list[_RelOutcome]) -> tuple[bool | None, str, str]:
 
 def _derived_str(st: Statement) -> str:
     if st.derived is not None:
-        return _fmt(st.derived)
-    return "; ".join(_fmt(explicit(r.lhs, st.model)) for r in st.printed)
+        return expanded_text(st.derived)
+    return "; ".join(expanded_text(explicit(r.lhs, st.model)) for r in st.printed)
 
 
 def check(eq: Equation | str, *, repairs: bool = True,
@@ -198,7 +198,7 @@ def check(eq: Equation | str, *, repairs: bool = True,
             method="undecided", printed_latex=eq.latex, printed="", derived="",
             corrected=None, counterexample=None, cause=None,
             numeric={"points": 0, "digits": NUMERIC_DIGITS, "max_residual": None,
-                     "seed": _seed(eq.id), "enclosure": None, "certified": False},
+                     "seed": seed_of(eq.id), "enclosure": None, "certified": False},
             seconds=round(time.perf_counter() - t0, 3), section=eq.section,
             detail=f"{type(exc).__name__} while checking: {str(exc)[:200]}",
             singular=eq.singular)
@@ -213,9 +213,9 @@ def _check(eq: Equation, t0: float, settings: RepairSettings,
     demote any verdict to undecided), each step reading what the previous ones decided; the
     steps stay in that one reading order.
     """
-    seed = _seed(eq.id)
+    seed = seed_of(eq.id)
     st = eq.build()
-    _EXPLICIT_CACHE.clear()
+    EXPLICIT_CACHE.clear()
     verdict, method, detail = "undecided", "undecided", ""
     members: list[dict] = []
     ce = None
@@ -233,7 +233,7 @@ def _check(eq: Equation, t0: float, settings: RepairSettings,
                 detail = f"shape mismatch in definition of {name}"
             elif name not in st.defines:
                 ok = False
-                detail = f"lhs {_fmt(r.lhs)} is not a symbol this definition introduces"
+                detail = f"lhs {expanded_text(r.lhs)} is not a symbol this definition introduces"
         outs = [decide_rel(r, st.model, seed) for r in st.claims]
         members = [member_record(r, "printed", None) for r in st.printed]
         members += [member_record(r, "claim", o) for r, o in zip(st.claims, outs, strict=True)]
@@ -259,7 +259,7 @@ def _check(eq: Equation, t0: float, settings: RepairSettings,
             ce, failing = bad.counterexample, bad.label or None
             if ce is not None:
                 ce["member"] = bad.label
-            fix = correct(eq, st, outs, seed, settings, decide_rel, _combine, _rel_str)
+            fix = correct(eq, st, outs, seed, settings, decide_rel, _combine, rel_str)
             members += fix.members
             backing = fix.backing
             correction, repairs, searches = fix.kind, fix.repairs, fix.searches
@@ -276,9 +276,9 @@ def _check(eq: Equation, t0: float, settings: RepairSettings,
         id=eq.id, title=eq.title, kind=eq.kind, verdict=verdict, expected=eq.expected,
         method=method if verdict != "undecided" else "undecided",
         printed_latex=eq.latex or printed_latex(members),
-        printed=(_rel_str(st.printed) or "") if expanded else None,
+        printed=(rel_str(st.printed) or "") if expanded else None,
         derived=_derived_str(st) if expanded else None,
-        corrected=(_rel_str(st.corrected) or fixed_str) if expanded else None,
+        corrected=(rel_str(st.corrected) or fixed_str) if expanded else None,
         counterexample=ce,
         cause=eq.cause if verdict == "does-not-hold" else None, numeric=numeric,
         seconds=round(time.perf_counter() - t0, 3), section=eq.section,

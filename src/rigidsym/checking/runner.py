@@ -10,10 +10,10 @@ from contextlib import nullcontext
 from dataclasses import dataclass
 from functools import partial
 
-from rigidsym import _work
-from rigidsym._progress import Reporter, load_durations, save_durations
 from rigidsym.checking import verdict_cache
 from rigidsym.checking.repairing.correction import RepairSettings
+from rigidsym.core import work as _work
+from rigidsym.core.progress import Reporter, load_durations, save_durations
 
 __all__ = ["run_checks", "verdict_words", "Extra"]
 
@@ -65,7 +65,7 @@ def _check_group(ids: list[str], settings: RepairSettings | None = None,
                  extra_ids: frozenset = frozenset()):
     """Check a group of ids in one worker, each result sent on the queue as it is known
     (so that progress stays per id), the ``extra`` result of each of ``extra_ids`` after
-    it; returns the work the worker counted (:mod:`rigidsym._work`)."""
+    it; returns the work the worker counted (:mod:`rigidsym.core.work`)."""
     before = _work.snapshot()
     for i in ids:
         r = _check_one(i, settings, expanded)
@@ -86,7 +86,7 @@ def _extra_group(ids: list[str], extra: Extra):
 def _group_of(eq_id: str) -> str:
     """The ids that share the declarations' cached models (a book section, or a user
     module): checked in one worker, so that each model is derived once, not per worker."""
-    from rigidsym.checking.deciding.registry import REGISTRY, is_user_id, section_of
+    from rigidsym.registry.declarations import REGISTRY, is_user_id, section_of
     if is_user_id(eq_id):
         return REGISTRY[eq_id].module
     return section_of(eq_id)
@@ -164,11 +164,11 @@ def run_checks(ids: list[str], jobs: int = 1, progress: bool = True, cache: bool
     Args:
         ids: the ids to check.
         jobs: worker processes (1: in this process).
-        progress: show progress on stderr (:mod:`rigidsym._progress`).
+        progress: show progress on stderr (:mod:`rigidsym.core.progress`).
         cache: read results from the verdict cache where their key matches
             (:mod:`rigidsym.checking.verdict_cache`; ``Outcome.cached`` is then true);
             compute and store the others.
-        reporter: the command's :class:`~rigidsym._progress.Reporter` (its phases), else
+        reporter: the command's :class:`~rigidsym.core.progress.Reporter` (its phases), else
             one of its own.
         repairs, repair_budget: those of :func:`rigidsym.checking.checker.check` (they
             join the cache key).
@@ -297,7 +297,7 @@ def _parallel(est: _Estimate, jobs: int, ph, results: dict, group,
 def _summary(results) -> str:
     from collections import Counter
 
-    from rigidsym.checking.deciding.registry import VERDICTS
+    from rigidsym.registry.declarations import VERDICTS
 
     c = Counter(r.verdict for r in results)
     off = sum(r.verdict != r.expected for r in results)

@@ -1,11 +1,11 @@
 """The verdict cache: a checked result is stored once and read back while nothing it depends
-on has changed (``<cache>/verdicts/``, see :mod:`rigidsym._cache` for where and how).
+on has changed (``<cache>/verdicts/``, see :mod:`rigidsym.core.cache` for where and how).
 
 **The key** of an id is a SHA-256 over everything its verdict depends on:
 
 - the source of the ``rigidsym`` package (every file, by content) but the book's ``.py``
   modules, which count per id: for a book id its declaring module and the book modules it
-  imports, transitively (:mod:`rigidsym._sources`);
+  imports, transitively (:mod:`rigidsym.core.sources`);
 - for a user id, the declaring module's file and every *local* module it imports,
   transitively (an ``import`` in its source, resolved through ``sys.modules``; local means
   outside the standard library and site-packages), by content;
@@ -43,10 +43,12 @@ from dataclasses import fields
 from functools import cache
 from pathlib import Path
 
-from rigidsym import _cache, _config, _sources
-from rigidsym._io import write_atomic_bytes
-from rigidsym.checking.deciding import usermodules
-from rigidsym.checking.deciding.registry import REGISTRY, Equation, is_user_id
+from rigidsym.core import cache as _cache
+from rigidsym.core import config as _config
+from rigidsym.core import sources as _sources
+from rigidsym.core.files import write_atomic_bytes
+from rigidsym.registry import usermodules
+from rigidsym.registry.declarations import REGISTRY, Equation, is_user_id
 
 __all__ = ["lookup", "store", "key_of", "transcription_key", "VerdictCacheWarning", "FORMAT"]
 

@@ -12,7 +12,6 @@ import argparse
 import os
 import sys
 
-from rigidsym import _work
 from rigidsym.cli import (
     cache,
     check,
@@ -25,7 +24,8 @@ from rigidsym.cli import (
     show,
     verify,
 )
-from rigidsym.cli._common import HelpFormatter, add_ascii, ascii_output
+from rigidsym.cli.common import HelpFormatter, add_ascii, ascii_output
+from rigidsym.core import work as _work
 
 __all__ = ["main", "build_parser"]
 
@@ -105,7 +105,7 @@ def main(argv: list[str] | None = None) -> int:
     for name, sp_ in parser._subparsers._group_actions[0].choices.items():
         sp_.error = _error(f"rigidsym {name} --help lists its options")
     args = parser.parse_args(argv)
-    from rigidsym.checking.deciding.registry import BadInput
+    from rigidsym.registry.declarations import BadInput
     if getattr(args, "ascii_all", False):   # rigidsym --ascii COMMAND: as COMMAND --ascii
         args.ascii = True
     with ascii_output(getattr(args, "ascii", False)):

@@ -1,6 +1,6 @@
 """``rigidsym cache info | clear``: where the user cache is, what it holds, and emptying it.
 
-The cache (:mod:`rigidsym._cache`) holds compiled kernels (``kernels/``), checked results
+The cache (:mod:`rigidsym.core.cache`) holds compiled kernels (``kernels/``), checked results
 (``verdicts/``, :mod:`rigidsym.checking.verdict_cache`) and the LaTeX grammar's analysis
 (``latex/``). Clearing never changes a verdict:
 what is gone is computed again on the next run.
@@ -8,7 +8,7 @@ what is gone is computed again on the next run.
 
 from __future__ import annotations
 
-from rigidsym import _cache
+from rigidsym.core import cache as _cache
 
 __all__ = ["add_arguments", "run", "HELP"]
 

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import sys
 
-from rigidsym.cli._common import MODULE_HELP, add_repair_arguments, repair_options
+from rigidsym.cli.common import MODULE_HELP, add_repair_arguments, repair_options
 
 __all__ = ["add_arguments", "run", "HELP", "EXAMPLES", "EXIT"]
 
@@ -65,17 +65,17 @@ def run(args) -> int:
     """``rigidsym check --latex``: read the LaTeX, decide it, explain it as ``show`` does."""
     import json
 
-    from rigidsym.checking.deciding.registry import BadInput
     from rigidsym.latex import LatexError
+    from rigidsym.registry.declarations import BadInput
 
     try:
-        from rigidsym._progress import Reporter
-        from rigidsym.api import _check_latex
+        from rigidsym.api import check_latex_run
+        from rigidsym.core.progress import Reporter
 
         opts = repair_options(args)
         with Reporter("rigidsym check", keep=False) as rep, \
                 rep.phase("reading and checking the LaTeX") as ph:  # no silent second
-            r, reading = _check_latex(args.latex, args.let, args.book, args.module or (),
+            r, reading = check_latex_run(args.latex, args.let, args.book, args.module or (),
                                       opts["repairs"], opts["repair_budget"], args.notation,
                                       args.repair_seconds)
             ph.finish(f"{r.id} {r.verdict}")  # an ad-hoc check expects nothing (issue 52)
@@ -119,8 +119,8 @@ def _certify(r, path: str) -> None:
     import json
     from pathlib import Path
 
-    from rigidsym._io import write_atomic
-    from rigidsym.checking.certificates import Unprintable, certificate, recheck_folder
+    from rigidsym.checking.certifying.certificates import Unprintable, certificate, recheck_folder
+    from rigidsym.core.files import write_atomic
 
     if r.verdict == "undecided":
         print("certificate: none (the verdict is undecided)", file=sys.stderr)

@@ -34,7 +34,7 @@ def run(args) -> int:
 
     try:
         if getattr(args, "students", None):
-            from rigidsym.report.course import class_exam
+            from rigidsym.course.roster import class_exam
             paths = class_exam(args.spec, args.students, args.out, seed=args.seed)
         else:
             paths = exam(args.spec, args.out, seed=args.seed)

@@ -4,7 +4,7 @@
 ``--set n_1=0,0,5`` and ``--data FILE.json`` give other data (checked as
 :func:`rigidsym.exercises.solve` checks them), ``--parameters`` lists them,
 ``--notebook PATH`` writes the exercise's notebook. The report hook (``exercises.md``,
-``exercises.html`` and the figures) is :mod:`rigidsym.report.exercises`.
+``exercises.html`` and the figures) is :mod:`rigidsym.course.exercise_report`.
 """
 
 from __future__ import annotations
@@ -14,7 +14,7 @@ import sys
 import textwrap
 from pathlib import Path
 
-from rigidsym._io import write_atomic
+from rigidsym.core.files import write_atomic
 
 __all__ = ["add_arguments", "run", "to_json", "parse_value"]  # and, lazily, write_report, svg_text
 
@@ -23,7 +23,7 @@ __all__ = ["add_arguments", "run", "to_json", "parse_value"]  # and, lazily, wri
 def __getattr__(name: str):
     # the report hook, re-exported; imported when asked for (`rigidsym --help` stays light)
     if name in ("svg_text", "write_report"):
-        from rigidsym.report import exercises
+        from rigidsym.course import exercise_report as exercises
         return getattr(exercises, name)
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
@@ -71,9 +71,9 @@ def add_arguments(p) -> None:
 def to_json(ids, data: dict | None = None) -> str:
     """The schema-2 JSON key for the exercises ``ids`` (``data`` for a single id):
     ``{"schema": 2, "python_flint": ..., "exercises": [record, ...]}``, a record per
-    :func:`rigidsym.checking.worked.solution_record` (the data solved on, the answers,
+    :func:`rigidsym.course.worked.solution_record` (the data solved on, the answers,
     the statements in words, the checks; ``reason`` when ill-posed)."""
-    from rigidsym.checking.worked import solution_record, solve
+    from rigidsym.course.worked import solution_record, solve
     from rigidsym.report.record import document_header
 
     items = [solution_record(solve(i, **(data or {}))) for i in ids]
@@ -83,14 +83,14 @@ def to_json(ids, data: dict | None = None) -> str:
 
 def parse_value(ex_id: str, name: str, text: str):
     """The text of ``--set NAME=VALUE`` as the value :func:`solve` takes (the one reader,
-    :func:`rigidsym.checking.worked.worked_numbers.split_text`, which :func:`solve` also
+    :func:`rigidsym.course.worked.numbers.split_text`, which :func:`solve` also
     applies to a string): a list of entry strings for a vector (``0,0,5``), a list of rows
     for a matrix (``1,0,0;0,2,0;0,0,3`` or ``[[1,0,0],[0,2,0],[0,0,3]]``), the text itself
     for a scalar or a choice (an unknown name is left to :func:`solve`, which lists the
     exercise's parameters)."""
-    from rigidsym.checking.worked import parameters
-    from rigidsym.checking.worked.worked_numbers import split_text
-    from rigidsym.checking.worked.worked_units import split_unit
+    from rigidsym.course.worked import parameters
+    from rigidsym.course.worked.numbers import split_text
+    from rigidsym.course.worked.units import split_unit
 
     if split_unit(text)[1] is not None:
         return text.strip()   # a unit for every entry: solve() splits and converts
@@ -135,7 +135,7 @@ def _notebook(ex_id: str, path: str, data: dict) -> None:
                              "\"rigidsym[notebooks]\"") from None
         from importlib.resources import files
 
-        from rigidsym.report.notebooks import file_name
+        from rigidsym.course.notebooks import file_name
         packaged = files("rigidsym.generated") / "notebooks" / file_name(ex_id)
         print(f"wrote {write_atomic(path, packaged.read_text(encoding='utf-8'))}")
 
@@ -165,7 +165,7 @@ def run(args) -> int:
 
 
 def _run(args) -> int:
-    from rigidsym.checking.worked import EXERCISE_IDS, normalise_id, parameters, render_text
+    from rigidsym.course.worked import EXERCISE_IDS, normalise_id, parameters, render_text
 
     if args.all and args.id:
         print("rigidsym: error: give one exercise id (e.g. 3.10) or --all, not both",
@@ -225,7 +225,7 @@ def answers_text(s) -> str:
 
     import sympy as sp
 
-    from rigidsym.checking.worked.worked_render import display
+    from rigidsym.course.worked.render import display
 
     if s.status != "solved":
         return textwrap.fill(s.reason, 100, initial_indent="    ", subsequent_indent="      ")
@@ -267,7 +267,7 @@ def _exit_code(s) -> int:
 
 def _next_step(args) -> str:
     """What to run after a bad exercise id or bad data."""
-    from rigidsym.checking.worked import normalise_id
+    from rigidsym.course.worked import normalise_id
 
     try:
         ex = normalise_id(args.id) if args.id else None
@@ -281,7 +281,7 @@ def _next_step(args) -> str:
 def _list() -> int:
     """``rigidsym exercise`` with no id: the exercises and their titles, read from the
     modules' ``TITLE`` constants (nothing is solved)."""
-    from rigidsym.checking.worked import EXERCISE_IDS, exercise_module
+    from rigidsym.course.worked import EXERCISE_IDS, exercise_module
 
     print("The chapter's 21 exercises (rigidsym exercise 3.10 solves one; --all solves all):")
     for i in EXERCISE_IDS:
@@ -291,9 +291,9 @@ def _list() -> int:
 
 def _solve_one(ex_id: str, data: dict):
     """Solve one exercise with a spinner on stderr (a solution can take seconds)."""
-    from rigidsym._progress import Reporter
-    from rigidsym.checking.worked import parameters, solve
-    from rigidsym.checking.worked.worked_data import read_data
+    from rigidsym.core.progress import Reporter
+    from rigidsym.course.worked import parameters, solve
+    from rigidsym.course.worked.data import read_data
 
     # bad data is one error line, before any progress line
     rest = {k: v for k, v in data.items() if k != "tol"}
@@ -312,8 +312,8 @@ def _solve_one(ex_id: str, data: dict):
 def _run_all(ids, fmt: str, json_path: str | None) -> int:
     """Solve every exercise with progress on stderr; a line per exercise (or the JSON
     document) on stdout."""
-    from rigidsym._progress import Reporter
-    from rigidsym.checking.worked import solve
+    from rigidsym.core.progress import Reporter
+    from rigidsym.course.worked import solve
 
     n_ok = 0
     with Reporter("rigidsym exercise --all") as rep, \

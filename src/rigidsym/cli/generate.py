@@ -56,7 +56,7 @@ def cmd_generate(args) -> int:
         print(f"error: no generated/ folder here ({out}): run from the repository root",
               file=sys.stderr)
         return 2
-    from rigidsym._progress import Reporter
+    from rigidsym.core.progress import Reporter
     with Reporter("rigidsym generate") as rep, \
             rep.phase("deriving, optimising and printing the kernels") as ph:
         res = generate()
@@ -75,7 +75,7 @@ def cmd_generate(args) -> int:
         return 0
     touched = write(res, out)
     if books:
-        from rigidsym.report.notebooks import NOTEBOOK_DIR, write_files
+        from rigidsym.course.notebooks import NOTEBOOK_DIR, write_files
         touched += [f"{NOTEBOOK_DIR}/{n}" for n in write_files(books, out / NOTEBOOK_DIR)]
     for t in touched:
         print(f"wrote {t}")
@@ -87,7 +87,7 @@ def cmd_generate(args) -> int:
 def _notebooks() -> dict[str, str]:
     """The exercise notebooks (``{}`` with a note when nbformat is not installed)."""
     try:
-        from rigidsym.report.notebooks import notebook_files
+        from rigidsym.course.notebooks import notebook_files
         return notebook_files()
     except ModuleNotFoundError as exc:
         if exc.name != "nbformat":
@@ -101,7 +101,7 @@ def _check_notebooks(books: dict[str, str], out: Path) -> bool:
     """Print the stale notebook files; True when any differs."""
     if not books:
         return False
-    from rigidsym.report.notebooks import NOTEBOOK_DIR, check_files
+    from rigidsym.course.notebooks import NOTEBOOK_DIR, check_files
     stale = check_files(books, out / NOTEBOOK_DIR)
     for name in stale:
         print(f"stale notebook file: generated/{NOTEBOOK_DIR}/{name}")
@@ -129,7 +129,8 @@ def _build_args(p) -> None:
 def cmd_build_c(args) -> int:
     """Compile generated C kernels into the user cache (the package's own kernels only when
     their module is stale, or with --native), with a notice and a progress bar."""
-    from rigidsym.kernels import _build, _ext
+    from rigidsym.kernels.cbuild import driver as _build
+    from rigidsym.kernels.cbuild import extension as _ext
 
     if args.info:
         import json

@@ -17,7 +17,7 @@ import json
 import sys
 from pathlib import Path
 
-from rigidsym._io import write_atomic
+from rigidsym.core.files import write_atomic
 
 __all__ = ["grade_command", "read_answers", "add_arguments", "run", "HELP", "EXAMPLES"]
 
@@ -39,7 +39,7 @@ def add_arguments(p) -> None:
 def run(args) -> int:
     """Grade the class: 0 every answer right, 1 any wrong or missing, 2 bad input, 3 a
     defect. Writes DIR/grades.csv and DIR/gradebook.csv and prints a line per student."""
-    from rigidsym.report.gradebook import grade_class
+    from rigidsym.course.gradebook import grade_class
 
     try:
         done = grade_class(args.dir, args.answers)
@@ -57,8 +57,8 @@ def run(args) -> int:
 
 def read_answers(path: str | Path) -> dict[str, dict]:
     """Students' answers, ``{student: {answer name: value}}``: as
-    :func:`rigidsym.report.answers.read_answers` (imported when asked for)."""
-    from rigidsym.report.answers import read_answers as read
+    :func:`rigidsym.course.answers.read_answers` (imported when asked for)."""
+    from rigidsym.course.answers import read_answers as read
 
     return read(path)
 

@@ -5,9 +5,9 @@ from __future__ import annotations
 import os
 from pathlib import Path
 
-from rigidsym._io import write_atomic
-from rigidsym.checking.deciding.registry import select
-from rigidsym.cli._common import JOBS, MODULE_HELP
+from rigidsym.cli.common import JOBS, MODULE_HELP
+from rigidsym.core.files import write_atomic
+from rigidsym.registry.declarations import select
 
 __all__ = ["add_arguments", "run", "default_report_dir"]
 
@@ -75,7 +75,7 @@ def _chapter_files(results, full: bool, certified: dict | None = None
 
 def _solve_exercises(rep) -> None:
     """Solve every exercise (the report hook then reads the solutions from the cache)."""
-    from rigidsym.checking.worked import EXERCISE_IDS, solve
+    from rigidsym.course.worked import EXERCISE_IDS, solve
 
     with rep.phase(f"solving {len(EXERCISE_IDS)} exercises", total=len(EXERCISE_IDS)) as ph:
         ok = 0
@@ -97,8 +97,8 @@ def run(args) -> int:
         return write_user_report(args.module, Path(args.out) if args.out else Path.cwd(),
                                  args.jobs, cache=not args.no_cache,
                                  certificates=args.certificates)
-    from rigidsym._progress import Reporter
     from rigidsym.cli.exercise import write_report as write_exercises
+    from rigidsym.core.progress import Reporter
     from rigidsym.report.record import transcription_extra
 
     out = Path(args.out) if args.out else default_report_dir()
@@ -123,7 +123,7 @@ def run(args) -> int:
                 ph.label(f"rendering {name}")
                 written.append(write_atomic(out / name, make()))
                 ph.advance(1, label=f"wrote {name}")
-        from rigidsym.report.exercises import rendered
+        from rigidsym.course.exercise_report import rendered
 
         if rendered() is None:  # else nothing they depend on changed (issue 39)
             _solve_exercises(rep)

@@ -6,9 +6,9 @@ import inspect
 import os
 import sys
 
-from rigidsym.checking.deciding.registry import REGISTRY
-from rigidsym.checking.deciding.usermodules import select_with_modules
-from rigidsym.cli._common import MODULE_HELP, add_repair_arguments, repair_options
+from rigidsym.cli.common import MODULE_HELP, add_repair_arguments, repair_options
+from rigidsym.registry.declarations import REGISTRY
+from rigidsym.registry.usermodules import select_with_modules
 
 __all__ = ["add_arguments", "run"]
 
@@ -72,9 +72,9 @@ def run(args) -> int:
     corrected form, singular set) in book notation; ``--latex`` or ``--json`` instead."""
     import json
 
-    from rigidsym._progress import Reporter
     from rigidsym.checking.checker import check
     from rigidsym.checking.runner import verdict_words
+    from rigidsym.core.progress import Reporter
     from rigidsym.printing import notation
     from rigidsym.report.record import result_record
     from rigidsym.report.show import explain, output_width
@@ -112,7 +112,7 @@ def run(args) -> int:
 def _certificates(results, directory, to_stderr: bool = False) -> None:
     """Write the shown verdicts' certificates and say, per id, whether each is certified and
     re-checked by certcheck (on stderr with ``--json``, so stdout stays the records)."""
-    from rigidsym.checking.certificates import certificate_field, write_certificates
+    from rigidsym.checking.certifying.certificates import certificate_field, write_certificates
 
     done = write_certificates(results, directory, recheck=True)
     for r in results:

@@ -5,9 +5,7 @@ from __future__ import annotations
 import sys
 import time
 
-from rigidsym._io import write_atomic
-from rigidsym.checking.deciding.usermodules import select_with_modules
-from rigidsym.cli._common import (
+from rigidsym.cli.common import (
     FORMATS,
     JOBS,
     MODULE_HELP,
@@ -16,7 +14,9 @@ from rigidsym.cli._common import (
     output_format,
     repair_options,
 )
+from rigidsym.core.files import write_atomic
 from rigidsym.printing.labels import label_text
+from rigidsym.registry.usermodules import select_with_modules
 
 __all__ = ["add_arguments", "run"]
 
@@ -118,7 +118,7 @@ def _document(results, certified) -> str:
         return text
     import json
 
-    from rigidsym.checking.certificates import certificate_field
+    from rigidsym.checking.certifying.certificates import certificate_field
 
     doc = json.loads(text)
     for row in doc["equations"]:
@@ -128,8 +128,8 @@ def _document(results, certified) -> str:
 
 def run(args) -> int:
     """``rigidsym verify``: decide equations, print a table, optionally write JSON."""
-    from rigidsym.checking.deciding.registry import is_user_id
     from rigidsym.checking.runner import run_checks  # sympy: after the parser
+    from rigidsym.registry.declarations import is_user_id
     from rigidsym.report.record import cause_line, summary, transcription_extra
 
     ids = select_with_modules(args.ids, args.section, args.module)
@@ -144,7 +144,7 @@ def run(args) -> int:
     wall = time.perf_counter() - t0
     certified = None
     if args.certificates:
-        from rigidsym.checking.certificates import certify_line, write_certificates
+        from rigidsym.checking.certifying.certificates import certify_line, write_certificates
 
         certified = write_certificates(results, args.certificates, recheck=True)
         print(certify_line(certified, args.certificates), file=sys.stderr)

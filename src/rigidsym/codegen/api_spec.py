@@ -12,7 +12,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from rigidsym import _kinds
+from rigidsym.core import kinds as _kinds
 
 __all__ = ["Keyword", "COMMON_KEYWORDS", "render_api", "docstring", "accuracy_line"]
 

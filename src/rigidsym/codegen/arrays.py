@@ -16,7 +16,7 @@ from typing import Any
 
 import sympy as sp
 
-from rigidsym.codegen.compensated import ARRAY_SOURCE
+from rigidsym.codegen.accuracy.compensated import ARRAY_SOURCE
 from rigidsym.codegen.jacobians import has_jacobian
 from rigidsym.codegen.printers import KernelJaxPrinter, torch_printer
 from rigidsym.codegen.vjp import cotangent_names, jvp_program, tangent_names, vjp_program
@@ -104,7 +104,7 @@ def _saved(program, vjp, hoisted: dict) -> list[str]:
 def _compensated(exprs: list) -> list:
     """The compensated nodes (``DiffProd``, ``SumProd``) of ``exprs``, in order of first
     appearance."""
-    from rigidsym.codegen.compensated import DiffProd, SumProd
+    from rigidsym.codegen.accuracy.compensated import DiffProd, SumProd
 
     seen: dict = {}
     for e in exprs:
@@ -188,7 +188,7 @@ def render_array_kernels(env, kc: Any, header) -> dict[str, str]:
         kc: a :class:`rigidsym.codegen.generator.KernelCode`.
         header: ``header(template) -> [lines]``, the generator's file header.
     """
-    from rigidsym.codegen.compensated import uses_diffprod
+    from rigidsym.codegen.accuracy.compensated import uses_diffprod
 
     t = "array_kernel.py.j2"
     columns = [str(s) for _, syms in kc.inputs for s in syms]

@@ -1,7 +1,7 @@
 """The C program pieces of a kernel (split from :mod:`rigidsym.codegen.generator`):
 printed straight-line programs, the finiteness checks of divisions and roots, the split of
 a trig-calling kernel into a SIMD sin/cos loop and a per-sample loop, and the float32 sample
-programs under their precision plans (:mod:`rigidsym.codegen.float32`).
+programs under their precision plans (:mod:`rigidsym.codegen.accuracy.float32`).
 """
 
 from __future__ import annotations
@@ -15,10 +15,10 @@ from rigidsym.codegen.printers import KernelCFloatPrinter, KernelCPrinter
 from rigidsym.codegen.spec import Kernel
 
 # used by the generator only (``kc``: its KernelCode)
-__all__ = ["TRIG_BLOCK", "_program_lines", "_risky", "_risky_names", "_finite_check",
-           "_trig_split", "_trig_plan", "_f32_code"]
+__all__ = ["TRIG_BLOCK", "program_lines", "_risky", "risky_names", "finite_check",
+           "trig_split", "trig_plan", "f32_code"]
 
-def _program_lines(p: Program, printer) -> dict:
+def program_lines(p: Program, printer) -> dict:
     return {
         "temps": [(str(s), printer.doprint(v)) for s, v in p.temps],
         "outputs": [printer.doprint(v) for v in p.outputs],
@@ -48,7 +48,7 @@ def _risky_bases(p: Program, printer) -> list[str]:
     return out
 
 
-def _risky_names(p: Program, printer) -> list[str]:
+def risky_names(p: Program, printer) -> list[str]:
     """Temporaries / outputs that divide or take a root, and their divisors and radicands,
     printed (NumPy finiteness check)."""
     names = [str(s) for s, v in p.temps if _risky(v)]
@@ -56,22 +56,22 @@ def _risky_names(p: Program, printer) -> list[str]:
     return names + [b for b in _risky_bases(p, printer) if b not in names]
 
 
-def _finite_check(p: Program, k: Kernel, printer=None) -> str:
+def finite_check(p: Program, k: Kernel, printer=None) -> str:
     """C expression that is NaN iff a division/root temporary or output, or a divisor or
     radicand, is non-finite (divisors and radicands printed by ``printer``)."""
     names = [str(s) for s, v in p.temps if _risky(v)]
     slots = [f"out_{o.name}[{j}]" for o in k.outputs for j in range(o.size)]
     names += [slot for slot, v in zip(slots, p.outputs, strict=True) if _risky(v)]
     names += [b for b in _risky_bases(p, printer or KernelCPrinter()) if b not in names]
-    return _balanced([f"({n} - {n})" for n in names]) if names else ""
+    return balanced([f"({n} - {n})" for n in names]) if names else ""
 
 
-def _balanced(terms: list[str]) -> str:
+def balanced(terms: list[str]) -> str:
     """``a + b + ...`` as a balanced tree of additions (C does not reassociate doubles)."""
     if len(terms) == 1:
         return terms[0]
     h = len(terms) // 2
-    return f"({_balanced(terms[:h])} + {_balanced(terms[h:])})"
+    return f"({balanced(terms[:h])} + {balanced(terms[h:])})"
 
 
 #: samples per block of the blocked batch loop (trig values precomputed on the stack)
@@ -79,7 +79,7 @@ TRIG_BLOCK = 64
 _TRIG = (sp.sin, sp.cos)
 
 
-def _trig_split(kc: Any) -> dict | None:
+def trig_split(kc: Any) -> dict | None:
     """Split a trig-calling kernel into a SIMD trig loop and a per-sample loop.
 
     For a kernel without branches whose ``sin``/``cos`` arguments do not themselves depend
@@ -126,9 +126,9 @@ def _trig_split(kc: Any) -> dict | None:
             "program": Program(kept, outputs, dens, p.ops)}
 
 
-def _trig_plan(kc: Any, printer) -> dict | None:
-    """The printed trig split of :func:`_trig_split` (``None``: the kernel is not blocked)."""
-    split = _trig_split(kc)
+def trig_plan(kc: Any, printer) -> dict | None:
+    """The printed trig split of :func:`trig_split` (``None``: the kernel is not blocked)."""
+    split = trig_split(kc)
     if split is None:
         return None
     prog, pre, calls = split["program"], split["pre"], split["calls"]
@@ -148,8 +148,8 @@ def _trig_plan(kc: Any, printer) -> dict | None:
         "far_args": list(dict.fromkeys(printer.doprint(c.args[0]) for c in calls.values())),
         "pre_used": {str(s) for s in used_pre},
         "used": {str(s) for s in used},
-        "variant": {"name": "main", "cond": None, "finite": _finite_check(prog, kc.kernel),
-                    **_program_lines(prog, printer)},
+        "variant": {"name": "main", "cond": None, "finite": finite_check(prog, kc.kernel),
+                    **program_lines(prog, printer)},
     }
 
 
@@ -163,10 +163,10 @@ def _f32_variant(p: Program, plan: dict, k: Kernel, cond=None) -> dict:
                       for s, v in p.temps],
             "outputs": [fp.print_in(v, plan[f"out:{j}"]) for j, v in enumerate(p.outputs)],
             "dens": [fp.print_in(d, "d") for d in p.dens],
-            "finite": _finite_check(p, k, fp)}
+            "finite": finite_check(p, k, fp)}
 
 
-def _f32_code(kc: Any) -> dict:
+def f32_code(kc: Any) -> dict:
     """The float32 sample function(s) of ``kc`` and the nodes its plan keeps in double."""
     k, plans = kc.kernel, kc.plan32
     slots = [f"{o.name}[{j}]" for o in k.outputs for j in range(o.size)]
@@ -175,7 +175,7 @@ def _f32_code(kc: Any) -> dict:
         return [slots[int(n[4:])] if n.startswith("out:") else n
                 for n, t in plan.items() if t == "d"]
     if plans["trig"] is not None:
-        split = _trig_split(kc)
+        split = trig_split(kc)
         plan = plans["trig"]["plan"]
         v = _f32_variant(split["program"], plan, k)
         return {"trig_variant": v, "variants": None, "errors": [plans["trig"]["error"]],

@@ -14,8 +14,8 @@ import time
 from pathlib import Path
 from typing import Protocol
 
-from rigidsym._config import generated_dir
-from rigidsym._io import write_atomic
+from rigidsym.core.config import generated_dir
+from rigidsym.core.files import write_atomic
 
 __all__ = ["write", "check", "check_or_write", "Generation"]
 
@@ -28,11 +28,11 @@ class Generation(Protocol):
 
 #: file names under generated/ owned by the generator (anything else there is an orphan,
 #: except the report folder, which belongs to ``rigidsym report``, and the notebooks, which
-#: ``rigidsym generate`` writes through :mod:`rigidsym.report.notebooks`).
+#: ``rigidsym generate`` writes through :mod:`rigidsym.course.notebooks`).
 _FOREIGN = ("report/", "notebooks/")
 
 
-def _on_disk(out: Path) -> dict[str, Path]:
+def files_on_disk(out: Path) -> dict[str, Path]:
     found = {}
     if out.exists():
         for p in sorted(out.rglob("*")):
@@ -47,7 +47,7 @@ def write(result: Generation, out: Path | None = None) -> list[str]:
     """Write changed files atomically, delete orphans; returns the paths touched."""
     out = Path(out) if out is not None else generated_dir()
     touched = []
-    disk = _on_disk(out)
+    disk = files_on_disk(out)
     for rel, text in result.files.items():
         p = out / rel
         if rel in disk and p.read_text(encoding="utf-8") == text:
@@ -64,7 +64,7 @@ def write(result: Generation, out: Path | None = None) -> list[str]:
 def check(result: Generation, out: Path | None = None) -> str:
     """Unified diff between ``result`` and the disk ("" when byte-identical, no orphans)."""
     out = Path(out) if out is not None else generated_dir()
-    disk = _on_disk(out)
+    disk = files_on_disk(out)
     chunks = []
     for rel in sorted(set(disk) | set(result.files)):
         old = disk[rel].read_text(encoding="utf-8") if rel in disk else None

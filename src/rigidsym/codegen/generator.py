@@ -22,32 +22,32 @@ import jinja2
 import sympy as sp
 
 import rigidsym
-from rigidsym import _kinds
-from rigidsym._config import KERNEL_SPEC as BOOK_ORIGIN
-from rigidsym._config import generated_dir
 from rigidsym.codegen import inputs
-from rigidsym.codegen.accurate import Chosen, improve
+from rigidsym.codegen.accuracy.compensated import NUMPY_SOURCE, uses_diffprod
+from rigidsym.codegen.accuracy.cos_form import choose as choose_cos
+from rigidsym.codegen.accuracy.float32 import plan_kernel
+from rigidsym.codegen.accuracy.rewrites import Chosen, improve
 from rigidsym.codegen.api_spec import render_api
 from rigidsym.codegen.arrays import render_array_kernels
-from rigidsym.codegen.compensated import NUMPY_SOURCE, uses_diffprod
-from rigidsym.codegen.cos_form import choose as choose_cos
 from rigidsym.codegen.cprogram import TRIG_BLOCK as TRIG_BLOCK
 from rigidsym.codegen.cprogram import (
-    _f32_code,
-    _finite_check,
-    _program_lines,
-    _risky_names,
-    _trig_plan,
-    _trig_split,
+    f32_code,
+    finite_check,
+    program_lines,
+    risky_names,
+    trig_plan,
+    trig_split,
 )
 from rigidsym.codegen.files import check, write
-from rigidsym.codegen.float32 import plan_kernel
 from rigidsym.codegen.optimise import Program, compile_program, math_hash
 from rigidsym.codegen.printers import KernelCPrinter, KernelNumPyPrinter
-from rigidsym.codegen.removable import rewrite as removable
+from rigidsym.codegen.removable.singularities import rewrite as removable
 from rigidsym.codegen.spec import Kernel, flat_symbols, input_symbols
 from rigidsym.codegen.spec import flatten_outputs as _flatten
 from rigidsym.codegen.vjp import jacobian_program
+from rigidsym.core import kinds as _kinds
+from rigidsym.core.config import KERNEL_SPEC as BOOK_ORIGIN
+from rigidsym.core.config import generated_dir
 
 __all__ = ["generate", "write", "check", "GenerationResult", "default_out_dir", "TEMPLATES"]
 
@@ -62,7 +62,7 @@ _C_PYTHON_CHECK = 3
 
 
 def default_out_dir() -> Path:
-    """``generated/`` of the checkout (:func:`rigidsym._config.generated_dir`)."""
+    """``generated/`` of the checkout (:func:`rigidsym.core.config.generated_dir`)."""
     return generated_dir()
 
 
@@ -136,7 +136,7 @@ def compile_kernel(kernel: Kernel, plan32: bool = True) -> KernelCode:
     kc = KernelCode(kernel, variants, math_hash(parts), ops, flat_symbols(kernel), chosen)
     if not plan32:
         return kc
-    kc.plan32 = plan_kernel(kernel, variants, _trig_split(kc)) if of is None else \
+    kc.plan32 = plan_kernel(kernel, variants, trig_split(kc)) if of is None else \
         _double_plan(kc)
     return kc
 
@@ -144,14 +144,14 @@ def compile_kernel(kernel: Kernel, plan32: bool = True) -> KernelCode:
 def _double_plan(kc: KernelCode) -> dict:
     """The float32 plan of a Jacobian kernel differentiated over its program: every node in
     double, the outputs rounded to float once (error <= u/2 per entry: 1/8 of the rule's 4 u
-    floor). The plan search (:func:`rigidsym.codegen.float32.plan_kernel`) runs the program
+    floor). The plan search (:func:`rigidsym.codegen.accuracy.float32.plan_kernel`) runs the program
     twice per node, so its time grows as the square of the nodes: 180 s for the 1760 of
     ``exponential_coordinates_left_jacobian_inverse_with_jacobians``."""
     def plan(prog, trig=()) -> dict:
         nodes = [*trig, *(str(s) for s, _ in prog.temps),
                  *(f"out:{j}" for j in range(len(prog.outputs)))]
         return {"plan": dict.fromkeys(nodes, "d"), "error": 0.125}
-    split = _trig_split(kc)
+    split = trig_split(kc)
     if split is not None:
         return {"trig": plan(split["program"], list(split["calls"])), "variants": None}
     return {"trig": None, "variants": [plan(v.program) for v in kc.variants]}
@@ -252,7 +252,7 @@ def _render_kernel(env, kc: KernelCode, origin: str = BOOK_ORIGIN) -> dict[str, 
         header=_header(kc, t, origin), ops=kc.ops, hash=kc.hash, chunk=NUMPY_CHUNK,
         helpers=NUMPY_SOURCE.strip("\n") if uses_diffprod(kc) else "",
         variants=[{"name": v.name, "cond": None if v.cond is None else npp.doprint(v.cond),
-                   "risky": _risky_names(v.program, npp), **_program_lines(v.program, npp)}
+                   "risky": risky_names(v.program, npp), **program_lines(v.program, npp)}
                   for v in kc.variants], **common)
     used = set()
     for v in kc.variants:
@@ -260,16 +260,16 @@ def _render_kernel(env, kc: KernelCode, origin: str = BOOK_ORIGIN) -> dict[str, 
                   *([v.cond] if v.cond is not None else [])]:
             used |= {str(s) for s in sp.sympify(e).free_symbols}
     cvars = [{"name": v.name, "cond": None if v.cond is None else cp.doprint(v.cond),
-              "finite": _finite_check(v.program, k), **_program_lines(v.program, cp)}
+              "finite": finite_check(v.program, k), **program_lines(v.program, cp)}
              for v in kc.variants]
     # nothing a sample could flag (no division, no finiteness test, no branch): the batch
     # loop needs no count
     never_singular = len(cvars) == 1 and not divides and not cvars[0]["finite"]
     for t, path in (("c_kernel.h.j2", f"c/{k.name}.h"), ("c_kernel.c.j2", f"c/{k.name}.c")):
         files[path] = env.get_template(t).render(header=_header(kc, t, origin), variants=cvars,
-                                                 used=used, trig=_trig_plan(kc, cp),
+                                                 used=used, trig=trig_plan(kc, cp),
                                                  never_singular=never_singular,
-                                                 f32=_f32_code(kc), **common)
+                                                 f32=f32_code(kc), **common)
     # PyTorch and JAX: the same programs (issue 31)
     files.update(render_array_kernels(env, kc, lambda t: _header(kc, t, origin)))
     return files

@@ -30,7 +30,7 @@ from pathlib import Path
 
 import sympy as sp
 
-from rigidsym._config import KERNEL_SPEC
+from rigidsym.core.config import KERNEL_SPEC
 
 __all__ = ["MANIFEST", "ENTRY_MODULES", "input_files", "manifest", "compare"]
 
@@ -172,7 +172,7 @@ def compare(out: Path) -> list[str]:
     Raises:
         FileNotFoundError: ``out`` has no ``inputs.json``.
     """
-    from rigidsym.codegen.files import _on_disk
+    from rigidsym.codegen.files import files_on_disk
 
     rec = json.loads((out / MANIFEST).read_text(encoding="utf-8"))
     now = manifest()
@@ -184,7 +184,7 @@ def compare(out: Path) -> list[str]:
     lines += [f"input added: {k}" for k in sorted(new.keys() - old.keys())]
     lines += [f"input removed: {k}" for k in sorted(old.keys() - new.keys())]
     recorded = rec.get("outputs", {})
-    disk = {rel: p for rel, p in _on_disk(out).items() if rel != MANIFEST}
+    disk = {rel: p for rel, p in files_on_disk(out).items() if rel != MANIFEST}
     for rel in sorted(recorded.keys() | disk.keys()):
         if rel not in disk:
             lines.append(f"missing file: generated/{rel}")

@@ -8,7 +8,7 @@ Extensions (``_print_<Class>`` methods, no string surgery):
   PyTorch (from sympy's ``TorchPrinter``) and JAX (sympy's ``JaxPrinter``): floats only
   (``2.0``, so a float32 tensor stays float32), ``where`` for ``Piecewise``;
 * :class:`KernelCFloatPrinter` prints the float32 kernels: each symbol has a C type (a
-  precision plan, :mod:`rigidsym.codegen.float32`) and each expression a context, float or
+  precision plan, :mod:`rigidsym.codegen.accuracy.float32`) and each expression a context, float or
   double: float literals (``2.0f``) and ``sqrtf`` in float context, float symbols cast to
   double in double context.
 """
@@ -36,11 +36,11 @@ class _PowMixin:
         return self._print(expr.expansion())
 
     _one = "1"
-    #: the compensated a b - c d of :mod:`rigidsym.codegen.compensated`, as the printed
+    #: the compensated a b - c d of :mod:`rigidsym.codegen.accuracy.compensated`, as the printed
     #: module names it (a helper the templates define)
     _diffprod = "_diffprod"
 
-    #: the compensated sum of products (:class:`rigidsym.codegen.compensated.SumProd`)
+    #: the compensated sum of products (:class:`rigidsym.codegen.accuracy.compensated.SumProd`)
     _sumprod = "_sumprod"
     #: ``{compensated node: temp name}``: nodes a program computes once as a named temp
     #: (:func:`rigidsym.codegen.arrays.hoist_compensated`), printed as that name

@@ -15,7 +15,7 @@ from dataclasses import dataclass, field
 
 import sympy as sp
 
-from rigidsym import _kinds
+from rigidsym.core import kinds as _kinds
 
 __all__ = ["Arg", "Out", "Branch", "Kernel", "input_symbols", "Grouped"]
 
@@ -28,7 +28,7 @@ class Arg:
         name: the argument name (book letters in ASCII, e.g. ``a_dot``).
         shape: per-sample shape, ``()`` for a scalar, ``(3,)``, ``(3, 3)``, ``(4,)``.
         kind: the constraint the kernels validate at run time (``check=True``), a spec
-            name of the kind table (:mod:`rigidsym._kinds`) that fits ``shape``:
+            name of the kind table (:mod:`rigidsym.core.kinds`) that fits ``shape``:
             ``"any"`` (no constraint, the default), ``"unit"`` (a unit vector, shape
             ``(3,)`` or ``(4,)``: ``| ||x|| - 1 | <= 1e-8``), ``"rotation"`` (shape
             ``(3, 3)``, proper orthogonal: ``max |Q^T Q - 1| <= 1e-8``, ``det Q > 0``),
@@ -202,7 +202,8 @@ def flatten_outputs(kernel: Kernel, values: dict) -> list[sp.Expr]:
 
 
 class Grouped(sp.UnevaluatedExpr):
-    """A sub-expression the removable-singularity pass (:mod:`rigidsym.codegen.removable`)
+    """A sub-expression the removable-singularity pass
+    (:mod:`rigidsym.codegen.removable.singularities`)
     rewrites alone and never distributes into the monomials around it (issue 48: the SE(3)
     inverse Jacobian's 3 x 3 matrix products, which distributed into monomials of degree 9 in
     ``w`` lost up to 470 times the rule at large ``|w|``); that pass removes the marks from

@@ -13,8 +13,8 @@ import sys
 import time
 from pathlib import Path
 
-from rigidsym.checking.deciding.registry import BadInput
 from rigidsym.codegen.spec import Kernel
+from rigidsym.registry.declarations import BadInput
 
 __all__ = ["user_kernels", "load_user_kernels", "generate_user", "cmd_generate_user"]
 
@@ -56,7 +56,7 @@ def load_user_kernels(modules) -> tuple[list[Kernel], str]:
         BadInput: for a module that cannot be loaded, one without ``KERNELS``, or two
             kernels of one name.
     """
-    from rigidsym.checking.deciding.usermodules import load_many
+    from rigidsym.registry.usermodules import load_many
 
     ums = load_many(modules)
     kernels, titles = [], []
@@ -123,7 +123,8 @@ def cmd_generate_user(args) -> int:
 def _compile(out: Path) -> int:
     """Compile the C of ``out`` into the cache now, so that ``kernels.load(out)`` in another
     process only loads it; without a compiler, say so (the kernels then run on NumPy)."""
-    from rigidsym.kernels import _build, _ext
+    from rigidsym.kernels.cbuild import driver as _build
+    from rigidsym.kernels.cbuild import extension as _ext
 
     try:
         path = _ext.ensure(out, why="rigidsym generate")

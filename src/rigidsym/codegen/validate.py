@@ -5,7 +5,7 @@ division by an argument that can vanish.
 :func:`validate` builds each kernel once on its explicit symbols (as the generator will) and
 turns what would otherwise surface deep in the generator as a long traceback (a Python
 ``NameError`` in a formula, a symbol that is not an argument, an output of the wrong shape)
-into :class:`~rigidsym.checking.deciding.registry.BadInput`; the CLI prints it and exits 2
+into :class:`~rigidsym.registry.declarations.BadInput`; the CLI prints it and exits 2
 before anything is written. A kernel that declares no singular set but divides by
 something that can be zero (``v / r``) gets a warning and the set ``r = 0`` in its
 declaration, so that ``kernels.json`` and the C headers record it.
@@ -19,8 +19,8 @@ import warnings
 
 import sympy as sp
 
-from rigidsym.checking.deciding.registry import BadInput
 from rigidsym.codegen.spec import Kernel, flatten_outputs, input_symbols
+from rigidsym.registry.declarations import BadInput
 
 __all__ = ["validate", "validate_all", "DivisionWarning", "one_line_warnings"]
 

@@ -228,10 +228,10 @@ def _local(expr, s) -> sp.Expr:
     """``d expr / d s``; a root in it made a removable quotient where it is one (a value's
     ``cos(sqrt(x3))``, even in ``sqrt(x3)``, has the derivative ``-sin(sqrt(x3)) / (2
     sqrt(x3))``: singular at ``x3 = 0`` as printed, ``-rq_sinc(x3) / 2`` after
-    :func:`rigidsym.codegen.removable.rewrite`)."""
+    :func:`rigidsym.codegen.removable.singularities.rewrite`)."""
     d = sp.diff(expr, s)
     if any(isinstance(p, sp.Pow) and not p.exp.is_Integer for p in sp.preorder_traversal(d)):
-        from rigidsym.codegen.removable import rewrite
+        from rigidsym.codegen.removable.singularities import rewrite
 
         d = rewrite([d])[0]
     return d

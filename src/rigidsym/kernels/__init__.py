@@ -45,19 +45,20 @@ from pathlib import Path
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from rigidsym._config import generated_dir
-from rigidsym._io import load_module
+from rigidsym.core.config import generated_dir
+from rigidsym.core.files import load_module
 from rigidsym.generated.api import *  # noqa: F403 - the generated kernels (true signatures)
 from rigidsym.generated.api import __all__ as _KERNELS
-from rigidsym.kernels import _names, _state
-from rigidsym.kernels._core import KernelSpace
-from rigidsym.kernels._errors import NonFiniteResultError, SingularConfigurationError
-from rigidsym.kernels._inputs import ORTHO_TOL as ORTHO_TOL  # the tolerances of check=True
-from rigidsym.kernels._inputs import UNIT_TOL as UNIT_TOL
-from rigidsym.kernels._jacobian import jacobian
-from rigidsym.kernels._scale import check_threads
-from rigidsym.kernels._scale import get_num_threads as get_num_threads
-from rigidsym.kernels._scale import set_num_threads as set_num_threads
+from rigidsym.kernels.runtime import names as _names
+from rigidsym.kernels.runtime import state as _state
+from rigidsym.kernels.runtime.errors import NonFiniteResultError, SingularConfigurationError
+from rigidsym.kernels.runtime.inputs import ORTHO_TOL as ORTHO_TOL  # the tolerances of check=True
+from rigidsym.kernels.runtime.inputs import UNIT_TOL as UNIT_TOL
+from rigidsym.kernels.runtime.jacobians import jacobian
+from rigidsym.kernels.runtime.scale import check_threads
+from rigidsym.kernels.runtime.scale import get_num_threads as get_num_threads
+from rigidsym.kernels.runtime.scale import set_num_threads as set_num_threads
+from rigidsym.kernels.runtime.space import KernelSpace
 
 __all__ = ["SingularConfigurationError", "NonFiniteResultError", "use_backend", "backend",
            "swap_blocks", "load", "batch_function", "euler_rate_matrix", "euler_angle_rates",
@@ -185,14 +186,15 @@ def build_info(directory: str | Path | None = None) -> dict:
 
     Raises:
         TypeError: ``directory`` is not a str, a path-like or None.
-        rigidsym.kernels._ext.NoCompiledKernels: nothing compiled matches and no compiler
+        rigidsym.kernels.cbuild.extension.NoCompiledKernels: nothing compiled matches and no
+        compiler
             can build it (the NumPy backend runs then).
 
     Example:
         >>> build_info()["path"] in build_info()["paths"]
         True
     """
-    from rigidsym.kernels import _ext
+    from rigidsym.kernels.cbuild import extension as _ext
 
     space = _state.builtin() if _names.directory(directory) is None else \
         load(directory)._SPACE
@@ -372,7 +374,7 @@ def swap_blocks(x: ArrayLike, matrix: bool = False) -> NDArray[np.floating]:
         >>> swap_blocks([1, 2, 3, 4, 5, 6]).tolist()
         [4.0, 5.0, 6.0, 1.0, 2.0, 3.0]
     """
-    from rigidsym.kernels._inputs import as_array
+    from rigidsym.kernels.runtime.inputs import as_array
 
     shape = (6, 6) if _names.flag(matrix, "matrix") else (6,)
     a = as_array(x, {"name": "x", "tshape": shape})

@@ -49,8 +49,9 @@ except ImportError as _exc:  # pragma: no cover - exercised where JAX is absent
     raise ImportError("rigidsym.kernels.jax needs JAX: pip install 'rigidsym[jax]'") from _exc
 import numpy as np
 
-from rigidsym.kernels import _arrays, _arrays_api
-from rigidsym.kernels._errors import NonFiniteResultError, SingularConfigurationError
+from rigidsym.kernels.arrays import api as _arrays_api
+from rigidsym.kernels.arrays import shared as _arrays
+from rigidsym.kernels.runtime.errors import NonFiniteResultError, SingularConfigurationError
 
 __all__ = ["load", "euler_rate_matrix", "euler_angle_rates", "SingularConfigurationError",
            "NonFiniteResultError"]

@@ -30,7 +30,7 @@ safe-``where`` idiom at their branches. A sample masked by ``on_singular="nan"``
 gradient: its inputs are replaced by a regular point before a differentiated evaluation.
 Eager calls on CPU tensors (batch <= 32768, outside torch.func) run the same programs on
 NumPy views of the tensors, PyTorch's own functions routed, bit for bit the same results at
-~1/3 the fixed cost per operation (:mod:`rigidsym.kernels._torch_host`, issue 38).
+~1/3 the fixed cost per operation (:mod:`rigidsym.kernels.arrays.torch_host`, issue 38).
 
 Example:
     >>> import torch
@@ -53,11 +53,13 @@ except ImportError as _exc:  # pragma: no cover - exercised where PyTorch is abs
                       "'rigidsym[torch]'") from _exc
 import numpy as np
 
-from rigidsym.kernels import _arrays, _arrays_api, _torch_host
-from rigidsym.kernels._errors import NonFiniteResultError, SingularConfigurationError
-from rigidsym.kernels._torch_compiled import compiled_saving as _compiled_saving
-from rigidsym.kernels._torch_compiled import fixed_arity as _fixed_arity
-from rigidsym.kernels._torch_compiled import in_graph as _in_graph
+from rigidsym.kernels.arrays import api as _arrays_api
+from rigidsym.kernels.arrays import shared as _arrays
+from rigidsym.kernels.arrays import torch_host as _torch_host
+from rigidsym.kernels.arrays.torch_compiled import compiled_saving as _compiled_saving
+from rigidsym.kernels.arrays.torch_compiled import fixed_arity as _fixed_arity
+from rigidsym.kernels.arrays.torch_compiled import in_graph as _in_graph
+from rigidsym.kernels.runtime.errors import NonFiniteResultError, SingularConfigurationError
 
 __all__ = ["load", "euler_rate_matrix", "euler_angle_rates", "SingularConfigurationError",
            "NonFiniteResultError"]

@@ -14,7 +14,7 @@ import heapq
 
 import lark
 
-from rigidsym.checking.deciding.errors import BadInput
+from rigidsym.core.errors import BadInput
 
 __all__: list[str] = []
 
@@ -29,7 +29,7 @@ def glyph_keys(latex: str) -> set[str]:
         LatexError: LaTeX that does not parse.
     """
     from rigidsym.latex.lexing import tree
-    from rigidsym.latex.parser import _Build
+    from rigidsym.latex.transformer.chapter import LatexTransformer
 
     keys: set[str] = set()
     todo = [tree(f"0 = {latex}")]  # the grammar reads relations
@@ -38,7 +38,7 @@ def glyph_keys(latex: str) -> set[str]:
         if not isinstance(t, lark.Tree):
             continue
         if t.data in _GLYPH_RULES:
-            build = _Build(None, {}, False, True)
+            build = LatexTransformer(None, {}, False, True)
             try:
                 build.transform(t)
             except lark.exceptions.VisitError:

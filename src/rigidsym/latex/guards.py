@@ -1,5 +1,5 @@
 """What a reading may not guess (issue 40, item 1): checks of a reader's LaTeX after it is
-read, each a :class:`~rigidsym.checking.deciding.errors.BadInput` (exit 2) that names the
+read, each a :class:`~rigidsym.core.errors.BadInput` (exit 2) that names the
 symbol and the ``--let`` that settles it, never a does-not-hold resting on a convention.
 
 - a relation whose two sides differ in shape while a symbol in it has the shape of the
@@ -18,7 +18,7 @@ from __future__ import annotations
 
 import re
 
-from rigidsym.checking.deciding.errors import BadInput
+from rigidsym.core.errors import BadInput
 from rigidsym.latex.depends import names as _names
 from rigidsym.latex.depends import through as _through
 from rigidsym.latex.lets import kind_of
@@ -86,7 +86,8 @@ def time_derivatives(free: list[str], used: set[str], declared: dict) -> None:
         if m and m.group(2) in used:
             x = m.group(2)
             if x in declared and declared[x].name.replace(" ", "").endswith("(t)"):
-                continue  # X(t): \dot X is its derivative (rigidsym.latex.bookrules)
+                # X(t): \dot X is its derivative (rigidsym.latex.transformer.book_notations)
+                continue
             how = "declared" if x in declared else "free"
             raise BadInput(
                 f"--latex: {key} is the time derivative of {x} ({how}), but nothing says how "

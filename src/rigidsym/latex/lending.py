@@ -19,7 +19,7 @@ def lent(modules) -> dict:
 
     Args:
         modules: paths, dotted names or module objects
-            (:func:`rigidsym.checking.deciding.usermodules.load`).
+            (:func:`rigidsym.registry.usermodules.load`).
 
     Returns:
         ``{name: (symbol, model value or None)}``.
@@ -30,7 +30,7 @@ def lent(modules) -> dict:
     import sys
     from types import ModuleType
 
-    from rigidsym.checking.deciding import usermodules
+    from rigidsym.registry import usermodules
 
     out: dict = {}
     for m in modules or ():

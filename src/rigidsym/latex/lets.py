@@ -1,7 +1,7 @@
 """The declarations of ``rigidsym check --latex`` (issue 29, item 4): ``--let NAME: KIND``
 and ``--let NAME = LATEX``, read and checked (:func:`read_lets`).
 
-A KIND is a constrained kind of :mod:`rigidsym._kinds` (unit vector, unit 4-vector,
+A KIND is a constrained kind of :mod:`rigidsym.core.kinds` (unit vector, unit 4-vector,
 rotation, angle; imposed exactly by the zero test), a free shape, or a word of the
 vocabulary of rigid motions (twist, wrench, transform, so(3), se(3)): :data:`KIND_WORDS`. A NAME is
 compared after parsing (``\\mathbf Q`` is ``\\mathbf{Q}``).
@@ -16,7 +16,7 @@ import sympy as sp
 
 from rigidsym.algebra import symbols as _sym
 from rigidsym.algebra.motions import Ad, hat, transform
-from rigidsym.checking.deciding.errors import BadInput
+from rigidsym.core.errors import BadInput
 from rigidsym.latex.reader import parse_latex
 from rigidsym.latex.shapes import LatexError
 

@@ -2,7 +2,7 @@
 made into a declaration the checker decides like any other.
 
 A ``--let`` (``let=`` in Python) says what a symbol is: ``NAME: KIND`` (a constrained kind of
-:mod:`rigidsym._kinds`, imposed exactly by the zero test, or a free shape; :data:`KIND_WORDS`)
+:mod:`rigidsym.core.kinds`, imposed exactly by the zero test, or a free shape; :data:`KIND_WORDS`)
 or ``NAME = LATEX``, a first-principles model in the same notation. A name is compared after
 parsing (``\\mathbf Q`` is ``\\mathbf{Q}``). With a book section the glyph table names the
 glyphs; otherwise a symbol no ``--let`` declares is free, its shape by the book's convention
@@ -20,18 +20,18 @@ from dataclasses import dataclass, field
 
 import sympy as sp
 
-from rigidsym.checking.deciding.errors import BadInput
-from rigidsym.checking.deciding.registry import Rel, Statement
+from rigidsym.core.errors import BadInput
 from rigidsym.latex import guards
-from rigidsym.latex.bookrules import SETS
 from rigidsym.latex.declgraph import glyph_keys
-from rigidsym.latex.glyphrows import _Reader
 from rigidsym.latex.lending import lent
 from rigidsym.latex.lets import KIND_WORDS, Let, read_lets
-from rigidsym.latex.meaning import alternatives, said
+from rigidsym.latex.reader_glyphs import GlyphReader
 from rigidsym.latex.shapes import LatexError
-from rigidsym.latex.values import _glyph_values, _read_models, _resolve, _words
+from rigidsym.latex.transformer.book_notations import SETS
+from rigidsym.latex.transformer.meanings import alternatives, said
+from rigidsym.latex.values import glyph_values, read_models, resolve_models, value_shape_words
 from rigidsym.printing import notation
+from rigidsym.registry.declarations import Rel, Statement
 
 __all__ = ["Reading", "read_statement", "read_one", "latex_id", "check_book", "declare_latex",
            "KIND_WORDS", "Let", "read_lets"]
@@ -142,7 +142,7 @@ def read_statement(latex: str, lets: list[Let], book: str | None = None,
         return first
     kept[0].others, kept[0].dropped = kept[1:], dropped
     for choices, why in dropped:
-        kept[0].notes.append(f"not read as {_said(choices)}: {why}")
+        kept[0].notes.append(f"not read as {said_choices(choices)}: {why}")
     return kept[0]
 
 
@@ -158,7 +158,7 @@ def _group(key: str) -> str:
     return "entries of " + key.split(" of ", 1)[1] if " of " in key else key
 
 
-def _said(choices: dict) -> str:
+def said_choices(choices: dict) -> str:
     return "; ".join(said(k, c) for k, c in sorted(choices.items()))
 
 
@@ -172,7 +172,8 @@ def _shape_slip(r: Reading) -> str:
         except UnknownShape:
             continue
         if sl != sr:
-            return f"the two sides differ in shape ({_words(sl)} = {_words(sr)})"
+            return (f"the two sides differ in shape ({value_shape_words(sl)} = "
+                    f"{value_shape_words(sr)})")
     return ""
 
 
@@ -203,7 +204,7 @@ def read_one(latex: str, lets: list[Let], book: str | None = None,
     lets = list(lets) + declared_lets(latex, lets)  # ", R \\in SO(3)": a --let (issue 40)
     functions = _notation_functions(latex, lets, table)
     lets += functions
-    rd = _Reader(lets, book, lend, table)
+    rd = GlyphReader(lets, book, lend, table)
     rd.by_notation |= {x.key for x in functions}
     rd.choices = dict(choices or {})
     try:
@@ -226,12 +227,12 @@ def _notation_functions(latex: str, lets: list[Let], table) -> list[Let]:
     return [x for x in table.functions if x.key in used and x.key not in own]
 
 
-def _read(rd: _Reader, latex: str, lets: list[Let], lend: dict, table) -> Reading:
+def _read(rd: GlyphReader, latex: str, lets: list[Let], lend: dict, table) -> Reading:
     """:func:`read_one`'s body."""
-    from rigidsym.checking.deciding.explicit import _EXPLICIT_CACHE, explicit
+    from rigidsym.checking.deciding.explicit import EXPLICIT_CACHE, explicit
 
     values: dict = {}  # book symbol -> value in book symbols (resolved below)
-    occurs = _read_models(rd, lets, values)
+    occurs = read_models(rd, lets, values)
     models = {sym.name: v for sym, v in values.items()}  # the --let models, for R(\theta)
     parsed = rd.parse(latex, "the LaTeX")
     values.update(rd.models)
@@ -242,7 +243,7 @@ def _read(rd: _Reader, latex: str, lets: list[Let], lend: dict, table) -> Readin
             raise BadInput(f"--let '{x.text}': {x.key} does not occur in the LaTeX nor in a "
                            f"model (the LaTeX's glyphs: "
                            f"{', '.join(sorted(parsed.glyphs)) or 'none'})")
-    notes, free = _glyph_values(rd, lend, values,
+    notes, free = glyph_values(rd, lend, values,
                                 [e for chain in parsed.chains for e in chain])
     if table is not None and rd.by_notation & rd.used:
         notes.insert(0, f"--notation {table.name} ({table.title}): " + "; ".join(
@@ -253,8 +254,8 @@ def _read(rd: _Reader, latex: str, lets: list[Let], lend: dict, table) -> Readin
     guards.time_derivatives(free, rd.used, rd.declared)
     guards.book_meanings(free)
     guards.notation_bases(free, glyphs, table)
-    model = _resolve(values, explicit)
-    _EXPLICIT_CACHE.clear()
+    model = resolve_models(values, explicit)
+    EXPLICIT_CACHE.clear()
     printed, kind = _relations(parsed)
     guards.conventional_shapes(printed, free, glyphs)
     defines = tuple(r.lhs.name for r in printed) if kind == "definition" else ()
@@ -295,14 +296,14 @@ def declare_latex(latex: str, let=None, *, book: str | None = None, modules=(),
 
     Returns:
         ``(equation, reading)``: the registered
-        :class:`~rigidsym.checking.deciding.registry.Equation` and the :class:`Reading`.
+        :class:`~rigidsym.registry.declarations.Equation` and the :class:`Reading`.
 
     Raises:
         LatexError: LaTeX that cannot be read.
         BadInput: a bad declaration, section or module (see :func:`read_lets`,
             :func:`read_statement`).
     """
-    from rigidsym.checking.deciding.registry import REGISTRY, equation
+    from rigidsym.registry.declarations import REGISTRY, equation
 
     if not isinstance(latex, str) or not latex.strip():
         raise BadInput(f"latex: expected a non-empty LaTeX string, got {latex!r}")

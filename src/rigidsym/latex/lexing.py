@@ -45,7 +45,7 @@ class Parsed:
             column separator was lost, an ignored condition).
         glyphs: the glyph-table rows used, by LaTeX key.
         applied: the non-scalar symbols read as applied to a parenthesised scalar
-            (``R(\\theta)``), by LaTeX key: the arguments (``rigidsym.latex.meaning``).
+            (``R(\\theta)``), by LaTeX key: the arguments (``rigidsym.latex.transformer.meanings``).
         choice_points: the symbols ``X`` of ``X(y)`` that no rule reads (a model applied to
             no scalar: a product or an application; issue 52), by key: the argument.
     """
@@ -118,7 +118,7 @@ def parser() -> lark.Lark:
     """The lark LALR(1) parser of ``grammar.lark`` (built once per process; its LALR
     analysis kept in the user cache, ``<cache root>/latex/``, by lark's own ``cache=``: keyed
     by the grammar's and lark's hash, a stale or unreadable file is rebuilt and rewritten)."""
-    from rigidsym import _cache
+    from rigidsym.core import cache as _cache
 
     text = resources.files("rigidsym.latex").joinpath("grammar.lark").read_text("utf-8")
     where = _cache.folder("latex")

@@ -20,7 +20,7 @@ from dataclasses import dataclass
 from functools import cache
 from importlib import resources
 
-from rigidsym.checking.deciding.errors import BadInput
+from rigidsym.core.errors import BadInput
 from rigidsym.latex.lets import Let, read_lets
 
 __all__ = ["NOTATIONS", "Notation", "notation"]

@@ -1,5 +1,5 @@
 """Read a LaTeX statement: :func:`parse_latex` (lark's parse, then the transformer of
-:mod:`rigidsym.latex.parser`), with errors that say where and what was expected."""
+:mod:`rigidsym.latex.transformer.chapter`), with errors that say where and what was expected."""
 
 from __future__ import annotations
 
@@ -7,8 +7,8 @@ import lark
 import sympy as sp
 
 from rigidsym.latex.lexing import Parsed, Relation, tree
-from rigidsym.latex.parser import _Build, _value
-from rigidsym.latex.shapes import LatexError, _as_scalar, _shape, loose
+from rigidsym.latex.shapes import LatexError, as_scalar, loose, matrix_shape
+from rigidsym.latex.transformer.chapter import LatexTransformer, value_of
 
 __all__ = ["parse_latex"]
 
@@ -30,7 +30,8 @@ def parse_latex(latex: str, section: str | None = "*", overrides: dict | None = 
             conversion's slip in (3.77b-d), (3.97a-c)) as a block row.
         reader: a reader's LaTeX (``rigidsym check --latex``): ``[x]`` of one 3- or
             6-vector symbol or product is its hat, a plain ``I`` no override declares is the
-            identity, an identity is sized by its neighbours (``rigidsym.latex.vocab``).
+            identity, an identity is sized by its neighbours
+            (``rigidsym.latex.transformer.rigid_motions``).
         functions: the ``--let`` functions by LaTeX key (issue 52): ``expand(args)`` gives
             ``(value, parameter names)``, the body with the arguments substituted.
         choices: how to read each choice point by key (``{"R": "apply"}``; issue 52): ``X(y)``
@@ -50,7 +51,7 @@ def parse_latex(latex: str, section: str | None = "*", overrides: dict | None = 
     tree = _tree(latex)
     if reader:
         _no_double_brackets(tree, latex)
-    build = _Build(section, overrides or {}, block_rows, reader)
+    build = LatexTransformer(section, overrides or {}, block_rows, reader)
     build.braces = []
     build.functions = functions or {}
     build.choices = choices or {}
@@ -67,8 +68,8 @@ def parse_latex(latex: str, section: str | None = "*", overrides: dict | None = 
                  applied=build.applied, choice_points=build.choice_points)
     for st in stmts:
         _, exprs, ops = st
-        exprs = [_as_scalar(_value(e)) for e in exprs]
-        sized = next((_shape(e) for e in exprs if _shape(e)
+        exprs = [as_scalar(value_of(e)) for e in exprs]
+        sized = next((matrix_shape(e) for e in exprs if matrix_shape(e)
                       and type(e) is not sp.ZeroMatrix), None)
         exprs = [sp.ZeroMatrix(*sized) if type(e) is sp.ZeroMatrix and sized else e
                  for e in exprs]  # "= \mathbf{0}": the zero of the other side's shape
@@ -78,16 +79,16 @@ def parse_latex(latex: str, section: str | None = "*", overrides: dict | None = 
             exprs = [sp.ZeroMatrix(*sized) if e is sp.S.Zero else e for e in exprs]
             out.readings.append(f"0: the {sized[0]}×{sized[1]} zero (the shape of the "
                                 f"other side)")
-        sized = next((_shape(e) for e in exprs if _shape(e) and not loose(e)),
+        sized = next((matrix_shape(e) for e in exprs if matrix_shape(e) and not loose(e)),
                      sized) if reader else sized
         if reader and sized and sized[0] == sized[1]:  # "= I": the identity of that size
             exprs = [sp.Identity(sized[0]) if type(e) is sp.Identity else e
-                     for e in exprs]  # (not an I_3: rigidsym.latex.meaning)
+                     for e in exprs]  # (not an I_3: rigidsym.latex.transformer.meanings)
         out.chains.append(exprs)
         out.ops.append(ops)
     for label, body in build.braces:  # an underbrace whose label is a symbol: a member
         if isinstance(label, sp.Symbol | sp.MatrixSymbol):
-            out.chains.append([label, _as_scalar(body)])
+            out.chains.append([label, as_scalar(body)])
             out.ops.append(["="])
             out.readings.append(f"underbrace: {label} is a member of its own")
     for c, exprs in enumerate(out.chains):

@@ -2,7 +2,7 @@
 grammar cannot tell a reading by itself, these passes give the tree the shape TeX means
 (a multiple angle's argument, a superscript written before a subscript) or mark what the
 transformer must read by the shapes (a chain of products without parentheses:
-:mod:`rigidsym.latex.chains`). Each works in place and returns the tree;
+:mod:`rigidsym.latex.transformer.products`). Each works in place and returns the tree;
 :func:`rigidsym.latex.lexing.tree` runs them in order."""
 
 from __future__ import annotations
@@ -58,7 +58,8 @@ def mixed_products(t):
     groups them from the left, as ``(a \\cdot b) \\times c``, which TeX does not say. Such
     a chain of two becomes ``dot_cross`` (``cross_dot`` for ``a \\times b \\cdot c``) with
     its three operands, which the transformer reads by the shapes
-    (:meth:`rigidsym.latex.bookrules.BookRules.dot_cross`); a longer chain mixing them is
+    (:meth:`rigidsym.latex.transformer.book_notations.BookRules.dot_cross`); a longer chain mixing
+    them is
     refused (its groupings are not enumerated). Then the marks of the parentheses
     (``paren``) are dropped: the tree is the grammar's as before. In place; returns ``t``."""
     from rigidsym.latex.shapes import LatexError

@@ -1,5 +1,6 @@
 """Shapes and errors of the LaTeX reader: the shape rules of juxtaposition and sums, block
-sizing, default glyphs and :class:`LatexError` (used by :mod:`rigidsym.latex.parser`)."""
+sizing, default glyphs and :class:`LatexError` (used by
+:mod:`rigidsym.latex.transformer.chapter`)."""
 
 from __future__ import annotations
 
@@ -44,40 +45,40 @@ def loose(x) -> bool:
     return type(x) in (sp.Identity, sp.ZeroMatrix)
 
 
-def _shape(x) -> tuple[int, int] | None:
+def matrix_shape(x) -> tuple[int, int] | None:
     """``(rows, cols)`` of a matrix expression, ``None`` for a scalar."""
     if isinstance(x, sp.MatrixBase | sp.MatrixExpr):
         return int(x.shape[0]), int(x.shape[1])
     return None
 
 
-def _as_scalar(x):
+def as_scalar(x):
     """A 1 x 1 matrix as its entry (the book's ``e^T d`` is a scalar)."""
-    s = _shape(x)
+    s = matrix_shape(x)
     if s == (1, 1):  # lazily: indexing a symbolic product builds a sum (slow)
         return x[0, 0] if isinstance(x, sp.MatrixBase) else sp.Trace(x)
     return x
 
 
-def _words(x) -> str:
-    s = _shape(x)
+def shape_words(x) -> str:
+    s = matrix_shape(x)
     return "a scalar" if s is None else f"a {s[0]}x{s[1]} matrix"
 
 
-def _default_glyph(key: str, base) -> Glyph:
+def default_glyph(key: str, base) -> Glyph:
     """A glyph the table does not list: bold lower-case a 3-vector, bold capital a 3x3
     matrix, anything else a scalar; named after its LaTeX."""
     shape: tuple = ()
     if base and base[0] == "bold":
         letter = base[1].lstrip("\\")
         shape = (3, 3) if letter[0].isupper() else (3, 1)
-    return Glyph(key, "*", _name_from_key(key), shape, "free", "(not in the glyph table)", "")
+    return Glyph(key, "*", name_from_key(key), shape, "free", "(not in the glyph table)", "")
 
 
-def _name_from_key(key: str) -> str:
+def name_from_key(key: str) -> str:
     m = re.match(r"\{\}((?:[\^_]\{[^{}]*\})+)(.+)$", key)  # {}^{A}_{B}R: ^A_B R (issue 40)
     if m:
-        return re.sub(r"[{}]", "", m.group(1)) + " " + _name_from_key(m.group(2))
+        return re.sub(r"[{}]", "", m.group(1)) + " " + name_from_key(m.group(2))
     s = re.sub(r"\\(mathbf|boldsymbol|mathcal)\{([^}]*)\}", r"\2", key)
     s = re.sub(r"\\(dot|ddot|tilde|hat|bar|vec|underline)\{([^}]*)\}",
                lambda m: m.group(2) + m.group(1), s)  # \vec{a}: avec, printed a⃗
@@ -85,41 +86,41 @@ def _name_from_key(key: str) -> str:
     return s
 
 
-def _fit(a, b, op):
-    a, b = _as_scalar(a), _as_scalar(b)
-    if _shape(a) != _shape(b):
-        if _shape(a) is None and a == 0:
-            return sp.ZeroMatrix(*_shape(b)), b
-        if _shape(b) is None and b == 0:
-            return a, sp.ZeroMatrix(*_shape(a))
+def fit(a, b, op):
+    a, b = as_scalar(a), as_scalar(b)
+    if matrix_shape(a) != matrix_shape(b):
+        if matrix_shape(a) is None and a == 0:
+            return sp.ZeroMatrix(*matrix_shape(b)), b
+        if matrix_shape(b) is None and b == 0:
+            return a, sp.ZeroMatrix(*matrix_shape(a))
         word = "sum" if op == "add" else "difference"
-        raise LatexError(f"a {word} of {_words(a)} and {_words(b)}: shapes do not fit",
+        raise LatexError(f"a {word} of {shape_words(a)} and {shape_words(b)}: shapes do not fit",
                          "shapes")
     return a, b
 
 
-def _product(a, b):
-    sa, sb = _shape(a), _shape(b)
+def shaped_product(a, b):
+    sa, sb = matrix_shape(a), matrix_shape(b)
     if sa is None or sb is None:
         return a * b
     if sa[1] == sb[0]:
         r = a * b
         return r
     if sa == (1, 1):
-        return _as_scalar(a) * b
+        return as_scalar(a) * b
     if sb == (1, 1):
-        return a * _as_scalar(b)
-    raise LatexError(f"juxtaposition of {_words(a)} and {_words(b)}: no product fits "
+        return a * as_scalar(b)
+    raise LatexError(f"juxtaposition of {shape_words(a)} and {shape_words(b)}: no product fits "
                      f"(declare the shapes, e.g. with the glyph table)", "shapes")
 
 
-def _as_block(c):
-    if _shape(c) is None:
+def as_block(c):
+    if matrix_shape(c) is None:
         return sp.ImmutableMatrix([[c]])
     return c
 
 
-def _fit_blocks(cells: list[list]) -> list[list]:
+def fit_blocks(cells: list[list]) -> list[list]:
     """Size the zero and identity blocks (``\\mathbf{O}``, ``\\mathbf{0}``, ``\\mathbf{1}``)
     from the other blocks of their row and column: the book writes them unsized."""
 
@@ -128,15 +129,15 @@ def _fit_blocks(cells: list[list]) -> list[list]:
         return next((n for n, c in sizes if not loose(c)),
                     next((n for n, c in sizes if isinstance(c, sp.Identity)), None))
 
-    heights = [first((_shape(c)[0], c) for c in row) for row in cells]
+    heights = [first((matrix_shape(c)[0], c) for c in row) for row in cells]
     ncol = max(len(r) for r in cells)
-    widths = [first((_shape(r[j])[1], r[j]) for r in cells if j < len(r))
+    widths = [first((matrix_shape(r[j])[1], r[j]) for r in cells if j < len(r))
               for j in range(ncol)]
     out = []
     for i, row in enumerate(cells):
         new = []
         for j, c in enumerate(row):
-            if loose(c) and heights[i] and widths[j] and _shape(c) != (heights[i], widths[j]):
+            if loose(c) and heights[i] and widths[j] and matrix_shape(c) != (heights[i], widths[j]):
                 if isinstance(c, sp.Identity) and heights[i] != widths[j]:
                     raise LatexError("an identity block that is not square", "shapes")
                 c = (sp.ZeroMatrix(heights[i], widths[j]) if isinstance(c, sp.ZeroMatrix)
@@ -150,10 +151,10 @@ def _caret(text: str, pos: int) -> str:
     return f"  {text}\n  {' ' * pos}^"
 
 
-def _size_identity(a, b, product: int):
+def size_identity(a, b, product: int):
     """A reader's unsized identity (``I``, ``\\mathbf{1}``) sized by its neighbour: in a
     sum as the other term, in a product as the other factor's inner dimension."""
-    sa, sb = _shape(a), _shape(b)
+    sa, sb = matrix_shape(a), matrix_shape(b)
     if sa is None or sb is None or sa == sb:
         return a, b
     if type(a) is sp.Identity and (product or sb[0] == sb[1]):  # not an I_3 (latex.meaning)

@@ -44,7 +44,7 @@ class Glyph:
     definition: str = ""
 
 
-def _shape(text: str) -> tuple:
+def glyph_shape(text: str) -> tuple:
     text = text.strip()
     if text in ("", "scalar"):
         return ()
@@ -64,7 +64,7 @@ def glyph_table() -> tuple[Glyph, ...]:
     """
     text = resources.files("rigidsym.latex").joinpath("glyphs.csv").read_text("utf-8")
     rows = csv.DictReader(line for line in text.splitlines() if not line.startswith("#"))
-    return tuple(Glyph(r["latex"], r["section"], r["name"], _shape(r["shape"]), r["kind"],
+    return tuple(Glyph(r["latex"], r["section"], r["name"], glyph_shape(r["shape"]), r["kind"],
                        r["meaning"], r.get("definition") or "") for r in rows)
 
 

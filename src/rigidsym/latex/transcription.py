@@ -55,11 +55,11 @@ def _override(spec: dict, section: str) -> dict:
     out = {}
     for key, value in spec.items():
         name, _, shape = value.partition(":")
-        from rigidsym.latex.table import _shape
+        from rigidsym.latex.table import glyph_shape
 
         kind = "row" if shape.endswith("row") else "instance"
         shape = shape.removesuffix("row").strip()
-        out[key] = Glyph(key, section, name, _shape(shape or "scalar"), kind,
+        out[key] = Glyph(key, section, name, glyph_shape(shape or "scalar"), kind,
                          "per-id note")
     return out
 
@@ -127,8 +127,8 @@ def check_transcription(eq, statement) -> dict:
     """Check one declaration's printed form against its LaTeX.
 
     Args:
-        eq: a registered declaration (:class:`rigidsym.checking.deciding.registry.Equation`).
-        statement: its built :class:`~rigidsym.checking.deciding.registry.Statement`.
+        eq: a registered declaration (:class:`rigidsym.registry.declarations.Equation`).
+        statement: its built :class:`~rigidsym.registry.declarations.Statement`.
 
     Returns:
         The ``transcription`` record: ``{"status": "machine-checked" | "differs" | "not
@@ -136,7 +136,7 @@ def check_transcription(eq, statement) -> dict:
         with, for ``differs``, ``member`` and ``counterexample``; for ``not parsed``,
         ``construct`` and ``why``.
     """
-    from rigidsym import _work
+    from rigidsym.core import work as _work
 
     _work.count("transcribe", eq.id)
     note = notes().get(eq.id, {})
@@ -215,21 +215,21 @@ def _key(eq_id: str, deps: dict | None = None):
     """``(id, disk key)`` of ``eq_id``'s record, found without building the declaration
     (:func:`rigidsym.checking.verdict_cache.transcription_key`); a declaration that is
     never cached is keyed by its object, so that a replaced one is checked again."""
-    from rigidsym.checking.deciding.registry import REGISTRY
     from rigidsym.checking.verdict_cache import transcription_key
+    from rigidsym.registry.declarations import REGISTRY
 
     key = transcription_key(eq_id, deps)
     return (eq_id, key) if key else (eq_id, REGISTRY[eq_id])  # held: no id reused
 
 
 def _path(key: str):
-    from rigidsym import _cache
+    from rigidsym.core import cache as _cache
 
     return _cache.folder("verdicts") / key[:2] / f"transcription-{key}.json"
 
 
 def _wanted(eq_id: str) -> bool:
-    from rigidsym.checking.deciding.registry import REGISTRY
+    from rigidsym.registry.declarations import REGISTRY
 
     eq = REGISTRY.get(eq_id)  # check --latex: the LaTeX is the printed form itself,
     return eq is not None and bool(eq.latex) and not eq_id.startswith("latex:")  # nothing
@@ -239,7 +239,7 @@ def _wanted(eq_id: str) -> bool:
 def cached_transcriptions(ids: list[str], deps: dict | None = None) -> list[str]:
     """Read the stored records of ``ids`` into this process (no declaration is built);
     return the ids that have a record to compute (none stored)."""
-    from rigidsym import _cache
+    from rigidsym.core import cache as _cache
 
     todo, deps = [], {} if deps is None else deps
     for i in ids:
@@ -276,8 +276,8 @@ def transcription_for(eq_id: str) -> dict | None:
         registered or gives no LaTeX. LaTeX that cannot be read gives a ``not parsed``
         record, not an exception.
     """
-    from rigidsym import _cache
-    from rigidsym.checking.deciding.registry import REGISTRY
+    from rigidsym.core import cache as _cache
+    from rigidsym.registry.declarations import REGISTRY
 
     if not _wanted(eq_id):
         return None

@@ -10,18 +10,18 @@ from __future__ import annotations
 import sympy as sp
 
 from rigidsym.algebra import symbols as _sym
-from rigidsym.checking.deciding.errors import BadInput
+from rigidsym.core.errors import BadInput
 from rigidsym.latex.declgraph import glyph_keys, model_order
-from rigidsym.latex.glyphrows import _Reader, _symbol
 from rigidsym.latex.lets import Let, kind_of
 from rigidsym.latex.periodic import periodic_angles
-from rigidsym.latex.shapes import LatexError, _shape
+from rigidsym.latex.reader_glyphs import GlyphReader, glyph_symbol
+from rigidsym.latex.shapes import LatexError, matrix_shape
 from rigidsym.latex.table import Glyph
 
 __all__: list[str] = []
 
 
-def _words(shape) -> str:
+def value_shape_words(shape) -> str:
     if not shape:
         return "scalar"
     return f"{shape[0]}-vector" if shape[1] == 1 else f"{shape[0]}×{shape[1]} matrix"
@@ -31,7 +31,7 @@ def _is_function(x: Let) -> bool:
     return bool(x.params) and x.params != ("t",)  # X(t) = ...: a model in time
 
 
-def _read_models(rd: _Reader, lets: list[Let], values: dict) -> set[str]:
+def read_models(rd: GlyphReader, lets: list[Let], values: dict) -> set[str]:
     """The ``NAME = LATEX`` models into ``values`` and the ``NAME(params) = LATEX``
     functions into the reader, each after the models it mentions (issue 52: any order of
     the ``--let``s reads the same); the glyphs they use."""
@@ -57,14 +57,14 @@ def _read_models(rd: _Reader, lets: list[Let], values: dict) -> set[str]:
         occurs |= set(p.glyphs) - {x.key}  # its own NAME is no occurrence
         rd.model_readings(x, p.readings)
         rhs = p.chains[0][1]
-        g = Glyph(x.key, "*", rd._name(x.key), _shape(rhs) or (), "model", "--let model")
+        g = Glyph(x.key, "*", rd._name(x.key), matrix_shape(rhs) or (), "model", "--let model")
         rd.over[x.key] = g
         rd.model_rhs[g.name] = rhs
-        values[_symbol(g)] = rhs
+        values[glyph_symbol(g)] = rhs
     return occurs
 
 
-def _function_model(rd: _Reader, x: Let, values: dict) -> None:
+def _function_model(rd: GlyphReader, x: Let, values: dict) -> None:
     """A function of scalar parameters (``R(\\theta) = e^{[\\hat\\omega]\\theta}``) is
     also the model of its NAME, as before issue 52 (``R`` alone is ``R(θ)``); one of a
     vector or matrix is a function only (``S`` alone is refused)."""
@@ -78,13 +78,13 @@ def _function_model(rd: _Reader, x: Let, values: dict) -> None:
     rd.used.update(p.glyphs)
     rd.glyphs.update(p.glyphs)
     rhs = p.chains[0][1]
-    g = Glyph(x.key, "*", rd._name(x.key), _shape(rhs) or (), "model", "--let model")
+    g = Glyph(x.key, "*", rd._name(x.key), matrix_shape(rhs) or (), "model", "--let model")
     rd.over[x.key] = g
     rd.model_rhs[g.name] = rhs
-    values[_symbol(g)] = rhs
+    values[glyph_symbol(g)] = rhs
 
 
-def _glyph_values(rd: _Reader, lend: dict, values: dict,
+def glyph_values(rd: GlyphReader, lend: dict, values: dict,
                   printed=()) -> tuple[list[str], list[str]]:
     """Each used glyph's value into ``values`` (a declared kind, a lent model, a glyph-table
     row or definition, a free matrix of named entries, an angle by its uses in ``printed``
@@ -96,7 +96,7 @@ def _glyph_values(rd: _Reader, lend: dict, values: dict,
         key = min(rd.used - seen)
         seen.add(key)
         g = rd.over.get(key) or rd.glyphs.get(key)
-        sym = _symbol(g)
+        sym = glyph_symbol(g)
         if key in rd.declared:
             x = rd.declared[key]
             value = _fresh(kind_of(x.kind, x.text)[1], g.name, scalars) if x.kind else None
@@ -107,14 +107,14 @@ def _glyph_values(rd: _Reader, lend: dict, values: dict,
             value = lend[g.name][1]
             if value is not None:
                 values[sym] = value
-            lent_.append(f"{key} ({_words(g.shape)}"
+            lent_.append(f"{key} ({value_shape_words(g.shape)}"
                          f"{', its model' if value is not None else ', free'})")
         elif g.kind == "free":
             free.append(key)
-            free_.append(f"{key} ({_words(g.shape)})")
+            free_.append(f"{key} ({value_shape_words(g.shape)})")
         else:  # a glyph-table row of --book
-            notes.append(f"{key}: {g.meaning} ({g.name}, {_words(g.shape)}; glyph table, "
-                         f"{g.section})")
+            notes.append(f"{key}: {g.meaning} ({g.name}, {value_shape_words(g.shape)}; "
+                         f"glyph table, {g.section})")
             if g.kind == "angle":
                 values[sym] = _sym.angle(g.name)
             elif g.definition:
@@ -143,12 +143,12 @@ def _glyph_values(rd: _Reader, lend: dict, values: dict,
     return notes, free
 
 
-def _periodic_angles(rd: _Reader, free: list[str], values: dict, printed,
+def _periodic_angles(rd: GlyphReader, free: list[str], values: dict, printed,
                      scalars: set[str]) -> dict[str, tuple[list[str], int]]:
     """The free scalar glyphs that are angles by their uses (:mod:`rigidsym.latex.periodic`),
     each with the trigonometric functions it occurs in and its multiple d of an angle; d
     times their angle atoms into ``values``."""
-    syms = {_symbol(rd.over.get(k) or rd.glyphs[k]): k for k in free
+    syms = {glyph_symbol(rd.over.get(k) or rd.glyphs[k]): k for k in free
             if not (rd.over.get(k) or rd.glyphs[k]).shape}
     found = periodic_angles([*printed, *values.values()], syms)
     out = {}
@@ -172,7 +172,7 @@ def _fresh(factory, name: str, scalars: set[str]):
     return value
 
 
-def _resolve(values: dict, explicit) -> dict:
+def resolve_models(values: dict, explicit) -> dict:
     """Models in book symbols made explicit, each after those it refers to."""
     done: dict = {}
     todo = dict(values)

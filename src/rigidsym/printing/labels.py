@@ -17,21 +17,21 @@ from __future__ import annotations
 import re
 import unicodedata
 
-from rigidsym.printing.names import _GREEK, book_latex, book_text
+from rigidsym.printing.names import GREEK, book_latex, book_text
 
 __all__ = ["label_text", "label_latex", "latex_text", "latex_spans"]
 
 _COMBINING = {"dot": "\u0307", "ddot": "\u0308", "tilde": "\u0303", "hat": "\u0302",
               "bar": "\u0304"}
 _SUP = str.maketrans("0123456789-", "⁰¹²³⁴⁵⁶⁷⁸⁹⁻")
-_STEM = r"(?:[A-Za-z]|" + "|".join(sorted(_GREEK, key=len, reverse=True)) + ")"
+_STEM = r"(?:[A-Za-z]|" + "|".join(sorted(GREEK, key=len, reverse=True)) + ")"
 #: a token that is mathematics however it is read (never an English word)
 _MATH_TOKEN = re.compile(
     rf"^(?:{_STEM}(?:dot|ddot|tilde)"                    # adot, Ntilde, omegadot
     rf"|{_STEM}\d{{1,2}}(?:dot)?"                         # r0, p2, u0dot
     rf"|(?:{_STEM}|{_STEM}(?:dot|ddot|tilde)|{_STEM}\d{{1,2}})"
     rf"(?:_(?:dot|ddot|tilde|hat|bar|par|perp|\d{{1,2}}|[A-Za-z]{{1,2}}))+"  # a_dot, I_C
-    rf"|{'|'.join(_GREEK)})'*$")
+    rf"|{'|'.join(GREEK)})'*$")
 _TOKEN = re.compile(r"(?<![A-Za-z0-9_])[A-Za-z][A-Za-z0-9_]*'*")  # not inside "3x4"
 
 
@@ -205,7 +205,7 @@ def latex_text(tex: str) -> str:
     s = _TEX_STYLE.sub(lambda m: m.group(1), tex)
     for cmd, ch in _TEX_SYMBOLS.items():
         s = s.replace(cmd, ch)
-    s = re.sub(r"\\([A-Za-z]+)", lambda m: _GREEK.get(m.group(1), m.group(1)), s)
+    s = re.sub(r"\\([A-Za-z]+)", lambda m: GREEK.get(m.group(1), m.group(1)), s)
     while True:  # \dot{x} -> x + combining dot, innermost first
         m = re.search(r"(dot|ddot|tilde|hat|bar)\{([^{}]*)\}", s)
         if not m:

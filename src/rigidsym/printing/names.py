@@ -10,7 +10,7 @@ import re
 
 __all__ = ["book_text", "book_group", "book_latex"]
 
-_GREEK = {
+GREEK = {
     "alpha": "α", "beta": "β", "gamma": "γ", "delta": "δ", "epsilon": "ε", "zeta": "ζ",
     "eta": "η", "theta": "θ", "iota": "ι", "kappa": "κ", "lambda": "λ", "lam": "λ",
     "mu": "μ", "nu": "ν", "xi": "ξ", "pi": "π", "rho": "ρ", "sigma": "σ", "tau": "τ",
@@ -30,8 +30,8 @@ _SUB_LATEX = {"par": r"\parallel", "perp": r"\perp", "inf": r"\infty"}
 #: name parts that are primes in the book (issue 28: ``e_2prime`` is e'', ``V_alt`` is the
 #: other V, V'): the count of primes each adds
 _PRIME_TAGS = {"prime": 1, "alt": 1, **{f"{k}prime": k for k in range(2, 4)}}
-_SUBSCRIPT_DIGITS = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
-_SUPERSCRIPT = str.maketrans("0123456789-", "⁰¹²³⁴⁵⁶⁷⁸⁹⁻")
+SUBSCRIPT_DIGITS = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
+SUPERSCRIPT = str.maketrans("0123456789-", "⁰¹²³⁴⁵⁶⁷⁸⁹⁻")
 #: names the chapter's declarations give to tell apart two uses of one book letter, or
 #: a model's free atoms, printed as the book prints them (issue 28 item 3): the wrench's
 #: pitch is p'' (3.109) in both its forms, the A and b of (3.11) and of (3.66) are both A
@@ -83,7 +83,7 @@ def _parse(name: str) -> tuple[str, list[str], list[str], str]:
         stripped = False
         for acc in _ACCENTS:
             stem = base[:-len(acc)]
-            if base.endswith(acc) and (stem in _GREEK or len(stem) == 1
+            if base.endswith(acc) and (stem in GREEK or len(stem) == 1
                                        or re.fullmatch(r"[A-Za-z]+\d{1,2}|[A-Za-z]+(tilde|dot)",
                                                        stem)):
                 base, accents = stem, [acc] + accents
@@ -112,23 +112,23 @@ def book_text(name: str) -> str:
     if name in _BOOK_COMPOUNDS:
         return _BOOK_COMPOUNDS[name][0]
     if m := _RENAMED_ENTRY.fullmatch(name):
-        return f"({book_text(m.group(1))}){m.group(2).translate(_SUBSCRIPT_DIGITS)}"
+        return f"({book_text(m.group(1))}){m.group(2).translate(SUBSCRIPT_DIGITS)}"
     base, accents, subs, primes = _parse(_BOOK_NAMES.get(name, name))
-    out = _GREEK.get(base, base)
+    out = GREEK.get(base, base)
     if len(out) == 1:
         out += "".join(_COMBINING[a] for a in accents)
     else:
         out += "".join("_" + a for a in accents)
     out += primes
     if _entry_of_subscripted(subs):  # I_C_21: the entry (2, 1) of I_C, (I_C)₂₁, not I_C₂₁
-        return f"({book_text(name.rsplit('_', 1)[0])})" + subs[-1].translate(_SUBSCRIPT_DIGITS)
+        return f"({book_text(name.rsplit('_', 1)[0])})" + subs[-1].translate(SUBSCRIPT_DIGITS)
     for s in subs:
         if s in _SUB_TEXT:
             out += _SUB_TEXT[s]
         elif s.isdigit():
-            out += s.translate(_SUBSCRIPT_DIGITS)
+            out += s.translate(SUBSCRIPT_DIGITS)
         else:   # a Greek subscript in its letter (Craig's c_θ, Spong's R_z,θ+φ), as the base is
-            out += "_" + re.sub(r"[A-Za-z]+", lambda m: _GREEK.get(m.group(0), m.group(0)), s)
+            out += "_" + re.sub(r"[A-Za-z]+", lambda m: GREEK.get(m.group(0), m.group(0)), s)
     return out
 
 
@@ -167,7 +167,7 @@ def book_latex(name: str, bold: bool = False) -> str:
     if m := _RENAMED_ENTRY.fullmatch(name):  # an entry of a vector: the vector in bold
         return rf"\left({book_latex(m.group(1), bold=True)}\right)_{{{m.group(2)}}}"
     base, accents, subs, primes = _parse(_BOOK_NAMES.get(name, name))
-    if base in _GREEK:
+    if base in GREEK:
         core = "\\" + ("lambda" if base == "lam" else base)
         core = rf"\boldsymbol{{{core}}}" if bold else core
     elif len(base) == 1:

@@ -17,8 +17,8 @@ from sympy.printing.precedence import PRECEDENCE, precedence
 from sympy.printing.str import StrPrinter
 
 from rigidsym.printing.names import (
-    _SUBSCRIPT_DIGITS,
-    _SUPERSCRIPT,
+    SUBSCRIPT_DIGITS,
+    SUPERSCRIPT,
     book_group,
     book_latex,
     book_text,
@@ -147,7 +147,7 @@ class BookStrPrinter(_BookNotation, StrPrinter):
 
     def _print_ZeroMatrix(self, expr):
         r, c = expr.shape  # the book's O₃₄, O₄₃ (3.80b, 3.92) beside its square O
-        return "O" if r == c or 1 in (r, c) else f"O{r}{c}".translate(_SUBSCRIPT_DIGITS)
+        return "O" if r == c or 1 in (r, c) else f"O{r}{c}".translate(SUBSCRIPT_DIGITS)
 
     def _print_Transpose(self, expr):
         if _is_cross(expr.arg):  # (a × b)ᵀ, not a × bᵀ
@@ -164,10 +164,10 @@ class BookStrPrinter(_BookNotation, StrPrinter):
 
     def _entry(self, name: str, sub: str) -> str:
         head = f"({book_text(name)})" if has_subscript(name) else book_text(name)
-        return head + sub.translate(_SUBSCRIPT_DIGITS)  # (M_A)₁₂: one subscript per letter
+        return head + sub.translate(SUBSCRIPT_DIGITS)  # (M_A)₁₂: one subscript per letter
 
     def _block(self, parent: str, sub: str) -> str:
-        return f"[{parent}]{sub.translate(_SUBSCRIPT_DIGITS)}"
+        return f"[{parent}]{sub.translate(SUBSCRIPT_DIGITS)}"
 
     def _print_Pi(self, expr):
         return "π"
@@ -237,10 +237,10 @@ class BookStrPrinter(_BookNotation, StrPrinter):
                 or _one_group(text) else f"√({text})"
         if e.is_Integer and e > 0 and isinstance(b, sp.sin | sp.cos | sp.tan) \
                 and b.args[0].is_Atom:  # the book's sin² θ: "sin θ²" read as sin(θ²)
-            return f"{b.func.__name__}{str(e).translate(_SUPERSCRIPT)} {self._print(b.args[0])}"
+            return f"{b.func.__name__}{str(e).translate(SUPERSCRIPT)} {self._print(b.args[0])}"
         if e.is_Integer and e > 0:
             return self.parenthesize(b, PRECEDENCE["Pow"], strict=True) + \
-                str(e).translate(_SUPERSCRIPT)
+                str(e).translate(SUPERSCRIPT)
         if e == -1:
             return "1/" + self.parenthesize(b, PRECEDENCE["Mul"])
         if e.is_Rational and e.is_negative:
@@ -251,7 +251,7 @@ class BookStrPrinter(_BookNotation, StrPrinter):
         e = expr.exp
         if e.is_Integer:
             return self.parenthesize(expr.base, PRECEDENCE["Pow"], strict=True) + \
-                str(e).translate(_SUPERSCRIPT)
+                str(e).translate(SUPERSCRIPT)
         return super()._print_MatPow(expr)
 
     def _print_Inverse(self, expr):

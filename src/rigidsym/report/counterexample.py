@@ -15,10 +15,10 @@ import html
 import sympy as sp
 from markupsafe import Markup
 
-from rigidsym.checking.deciding.pointvalues import decimal_text
-from rigidsym.checking.deciding.registry import is_user_id
+from rigidsym.checking.deciding.point_values import decimal_text
 from rigidsym.printing import notation
 from rigidsym.printing.labels import label_text
+from rigidsym.registry.declarations import is_user_id
 
 __all__ = ["sides_of", "text_lines", "markdown_lines", "html_view", "GLOSSARY_HINT",
            "whose_symbols"]

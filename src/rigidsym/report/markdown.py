@@ -105,7 +105,7 @@ def certificate_words(field: dict | None) -> str:
     """A verdict's certification in one sentence (``""`` without one): its file, each
     relation's evidence (cofactors, re-computation, counterexample, shapes, statement) and
     whether certcheck re-checked it; ``field`` as
-    :func:`rigidsym.checking.certificates.certificate_field` gives it."""
+    :func:`rigidsym.checking.certifying.certificates.certificate_field` gives it."""
     if field is None:
         return ""
     if field["file"] is None:

@@ -15,8 +15,8 @@ from collections import Counter
 import sympy as sp
 
 from rigidsym.checking.checker import Outcome
-from rigidsym.checking.deciding.registry import USER_CAUSE_DEFAULT, VERDICTS, is_user_id
 from rigidsym.printing import notation
+from rigidsym.registry.declarations import USER_CAUSE_DEFAULT, VERDICTS, is_user_id
 from rigidsym.report.repairs import repair_fields
 
 __all__ = ["summary", "cause_counts", "result_record", "to_json", "cause_words",
@@ -151,7 +151,7 @@ def _atom_text(name: str) -> str:
 def counterexample_record(ce: dict | None) -> dict | None:
     """The counterexample with book names, decimals, the residual and its largest entry;
     ``symbols`` (the book symbols of the failing member there, exact and decimal) and
-    ``chosen`` (how the point was chosen) as :mod:`rigidsym.checking.deciding.bookpoint` gave
+    ``chosen`` (how the point was chosen) as :mod:`rigidsym.checking.deciding.counterexample` gave
     them."""
     if not ce:
         return None
@@ -159,7 +159,7 @@ def counterexample_record(ce: dict | None) -> dict | None:
              for k, v in ce["point"].items()]
     out = {"member": ce.get("member", ""), "point": point, "lhs": ce["lhs"], "rhs": ce["rhs"],
            # the book's symbols there and how the point was chosen
-           # (rigidsym.checking.deciding.bookpoint)
+           # (rigidsym.checking.deciding.counterexample)
            "symbols": ce.get("symbols", []), "chosen": ce.get("chosen")}
     res = ce.get("residual")
     if res is not None:

@@ -13,8 +13,8 @@ from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, fields
 from typing import overload
 
-from rigidsym.checking.deciding.registry import VERDICTS
 from rigidsym.checking.outcome import Outcome
+from rigidsym.registry.declarations import VERDICTS
 
 __all__ = ["Result", "Results"]
 
@@ -91,7 +91,7 @@ class Result(Outcome):
             shown = mathml_or_text(latex, latex, display=True, tag="pre")
             rows.append(f"<div><i>{label}</i>{shown}</div>")
         if self.counterexample:
-            # in the book's symbols when described (rigidsym.checking.deciding.bookpoint)
+            # in the book's symbols when described (rigidsym.checking.deciding.counterexample)
             syms = self.counterexample.get("symbols") or []
             pt = "; ".join(f"{x['symbol']} = {x['text']}" for x in syms) or \
                 ", ".join(f"{k} = {v}" for k, v in self.counterexample["point"].items())

@@ -17,10 +17,10 @@ import sys
 import sympy as sp
 
 from rigidsym.checking.checker import Outcome
-from rigidsym.checking.deciding.registry import Rel, is_user_id
 from rigidsym.latex.transcription import transcription_words
 from rigidsym.printing import notation
 from rigidsym.printing.labels import label_text
+from rigidsym.registry.declarations import Rel, is_user_id
 from rigidsym.report.counterexample import GLOSSARY_HINT, sides_of, text_lines, whose_symbols
 from rigidsym.report.counterexample import wrap_at_spaces as _hard_wrap
 from rigidsym.report.markdown import undecided_reasons

@@ -4,11 +4,11 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from rigidsym._io import write_atomic
-from rigidsym._progress import Reporter
-from rigidsym.checking.deciding.registry import select
-from rigidsym.checking.deciding.usermodules import load_many
 from rigidsym.checking.runner import run_checks
+from rigidsym.core.files import write_atomic
+from rigidsym.core.progress import Reporter
+from rigidsym.registry.declarations import select
+from rigidsym.registry.usermodules import load_many
 from rigidsym.report.html import to_html
 from rigidsym.report.markdown import to_markdown
 from rigidsym.report.record import to_json, transcription_extra
@@ -22,7 +22,11 @@ def certified(results, directory) -> dict:
     (``rigidsym report --certificates DIR``)."""
     import sys
 
-    from rigidsym.checking.certificates import certificate_field, certify_line, write_certificates
+    from rigidsym.checking.certifying.certificates import (
+        certificate_field,
+        certify_line,
+        write_certificates,
+    )
 
     done = write_certificates(results, directory, recheck=True)
     print(certify_line(done, directory), file=sys.stderr)

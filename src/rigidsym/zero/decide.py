@@ -38,7 +38,7 @@ from fractions import Fraction
 import flint
 import sympy as sp
 
-from rigidsym.zero.exact import _size, degree_bound, evaluate, to_rational
+from rigidsym.zero.exact import degree_bound, evaluate, to_rational, tree_size
 from rigidsym.zero.plan import Plan, Unsupported, make_plan
 from rigidsym.zero.program import Program, TooLarge, parametrised, run_exact, run_rational
 from rigidsym.zero.roots import decide_roots, has_roots
@@ -207,7 +207,7 @@ def decide_zero(entries, seed: int = 0, probes: int = 2, plan: Plan | None = Non
         if hit is not None:
             return ZeroResult(False, "counterexample", "non-zero at an exact rational point",
                               hit[0], hit[1], plan)
-        if all(_size(e, CANCEL_NODE_LIMIT) <= CANCEL_NODE_LIMIT for e in entries):
+        if all(tree_size(e, CANCEL_NODE_LIMIT) <= CANCEL_NODE_LIMIT for e in entries):
             nonzero = _cancel_within_budget(prog, plan)
         else:
             nonzero = None

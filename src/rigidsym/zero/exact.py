@@ -9,7 +9,7 @@ from fractions import Fraction
 import sympy as sp
 from sympy.core.function import AppliedUndef
 
-from rigidsym.zero.plan import _TRIG, Plan, Unsupported, _linear_angles, _walk
+from rigidsym.zero.plan import TRIG, Plan, Unsupported, linear_angles, walk_tree
 
 
 # --------------------------------------------------------------------------- evaluation
@@ -37,11 +37,11 @@ def _power(x, ev, one, lift):
             return (one / bv) ** (-n)
         return bv**n
     if n.is_Rational and lift is Fraction:
-        return _rational_root(ev(b), int(n.p), int(n.q))
+        return rational_root(ev(b), int(n.p), int(n.q))
     bv = ev(b) if n.is_Rational else None
     if isinstance(bv, sp.Rational):  # a counterexample's values (sympy numbers): ‖ω̂‖ = 2
         try:
-            r = _rational_root(Fraction(int(bv.p), int(bv.q)), int(n.p), int(n.q))
+            r = rational_root(Fraction(int(bv.p), int(bv.q)), int(n.p), int(n.q))
         except Unsupported:  # an irrational norm shown in closed form (√21/4), exact
             return bv**n if bv >= 0 or n.q % 2 else _unsupported(x)
         return sp.Rational(r.numerator, r.denominator)
@@ -55,7 +55,7 @@ def _unsupported(x):
 def _trig(x, plan: Plan, point: dict, one):
     """A trigonometric function of a rational combination of angles (plus a multiple of
     pi/2) at the point: exact, through the half-angle tangents of the plan."""
-    coeffs, cpi = _linear_angles(x.args[0])
+    coeffs, cpi = linear_angles(x.args[0])
     re, im = one, 0 * one
     for a, c in coeffs.items():
         tau, M = plan.angles[a]
@@ -130,14 +130,14 @@ def evaluate(expr, plan: Plan, point: dict, lift=Fraction, bare_value=None):
             return _power(x, ev, one, lift)
         if isinstance(x, sp.Abs):
             return abs(ev(x.args[0]))
-        if isinstance(x, _TRIG):
+        if isinstance(x, TRIG):
             return _trig(x, plan, point, one)
         raise Unsupported(f"node {type(x).__name__}: {x}")
 
     return ev(sp.sympify(expr))
 
 
-def _rational_root(v: Fraction, p: int, q: int) -> Fraction:
+def rational_root(v: Fraction, p: int, q: int) -> Fraction:
     if v < 0 and q % 2 == 0:
         raise Unsupported("even root of a negative number")
     sgn = -1 if v < 0 else 1
@@ -171,7 +171,7 @@ def to_rational(expr, plan: Plan):
         elif x in plan.rules:
             r = plan.rules[x]
             r = r if r == x else tr(r)
-        elif isinstance(x, _TRIG):
+        elif isinstance(x, TRIG):
             r = evaluate(x, plan, {tau: tau for tau, _ in plan.angles.values()},
                          lift=lambda v: v)
         elif x.args:
@@ -209,8 +209,8 @@ def degree_bound(expr, plan: Plan) -> int:
             n, d = db(x.args[0])
             k = int(x.args[1])
             r = (k * n, k * d) if k >= 0 else (-k * d, -k * n)
-        elif isinstance(x, _TRIG):
-            coeffs, _ = _linear_angles(x.args[0])
+        elif isinstance(x, TRIG):
+            coeffs, _ = linear_angles(x.args[0])
             deg = sum(2 * abs(int(c * plan.angles[a][1])) for a, c in coeffs.items())
             r = (deg, deg)
         else:  # |f| too: not a rational function, so Schwartz-Zippel says nothing of it
@@ -221,7 +221,7 @@ def degree_bound(expr, plan: Plan) -> int:
     return db(sp.sympify(expr))[0]
 
 
-def _size(expr, limit: int) -> int:
+def tree_size(expr, limit: int) -> int:
     """Node count of ``expr``, counting stops past ``limit``."""
     n = 0
 
@@ -230,5 +230,5 @@ def _size(expr, limit: int) -> int:
         n += 1
         return n <= limit
 
-    _walk(expr, visit)
+    walk_tree(expr, visit)
     return n

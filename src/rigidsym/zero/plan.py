@@ -14,10 +14,10 @@ from math import gcd
 import sympy as sp
 from sympy.core.function import AppliedUndef
 
-from rigidsym import _kinds
 from rigidsym.algebra.symbols import TIME, constrained_atom, constraint_of
+from rigidsym.core import kinds as _kinds
 
-_TRIG = (sp.cos, sp.sin, sp.tan, sp.cot, sp.sec, sp.csc)
+TRIG = (sp.cos, sp.sin, sp.tan, sp.cot, sp.sec, sp.csc)
 
 
 class Unsupported(Exception):
@@ -95,7 +95,7 @@ def _group_rules(kind: str, name: str, names: tuple[str, ...], timed: bool, orde
 @cache
 def _generic_rules(kind: str, timed: bool, order: int) -> list[dict]:
     """Per entry of the group, ``{derivative order: expr}`` under the name :data:`_GENERIC`
-    (the parametrisation of the kind's row in :mod:`rigidsym._kinds`)."""
+    (the parametrisation of the kind's row in :mod:`rigidsym.core.kinds`)."""
     name = _GENERIC
     t = TIME
     k = _kinds.get(kind)
@@ -134,7 +134,7 @@ class Plan:
     params: list = field(default_factory=list)
 
 
-def _linear_angles(arg) -> tuple[dict, Fraction]:
+def linear_angles(arg) -> tuple[dict, Fraction]:
     """Write a trig argument as sum c_j * angle_j + c * pi with rational c_j, c."""
     arg = sp.expand(arg)
     coeffs: dict = {}
@@ -155,7 +155,7 @@ def _linear_angles(arg) -> tuple[dict, Fraction]:
     return coeffs, cpi
 
 
-def _walk(expr, visit):
+def walk_tree(expr, visit):
     seen = set()
     stack = [expr]
     while stack:
@@ -194,9 +194,9 @@ def make_plan(exprs) -> Plan:
             plan.rules[sp.pi] = sp.Symbol("pi__var", real=True)
             params.add(plan.rules[sp.pi])
             return False
-        if isinstance(x, _TRIG):
+        if isinstance(x, TRIG):
             try:
-                coeffs, _ = _linear_angles(x.args[0])
+                coeffs, _ = linear_angles(x.args[0])
             except Unsupported:  # sin(acos(c)): the balls evaluate it; the exact
                 return True      # translation refuses it (rigidsym.zero.program)
             for a, c in coeffs.items():
@@ -215,7 +215,7 @@ def make_plan(exprs) -> Plan:
             groups[c] = max(groups.get(c, 0), k)
 
     for e in exprs:
-        _walk(sp.sympify(e), visit)
+        walk_tree(sp.sympify(e), visit)
     _assemble(plan, params, denoms, groups, free)
     return plan
 

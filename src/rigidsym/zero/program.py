@@ -31,7 +31,7 @@ import flint
 import sympy as sp
 from sympy.core.function import AppliedUndef
 
-from rigidsym.zero.plan import _TRIG, Plan, Unsupported, _linear_angles
+from rigidsym.zero.plan import TRIG, Plan, Unsupported, linear_angles
 from rigidsym.zero.signs import definite_abs, definite_sqrt
 
 __all__ = ["Program", "TooLarge", "parametrised", "unparametrised", "run_exact", "run_rational",
@@ -132,7 +132,7 @@ def _cis(b: _Builder, tau: int, k: int) -> tuple[int, int]:
 
 
 def _trig(b: _Builder, x, plan: Plan, param) -> int:
-    coeffs, cpi = _linear_angles(x.args[0])
+    coeffs, cpi = linear_angles(x.args[0])
     re, im = b.const(1), b.const(0)
     for a, c in coeffs.items():
         tau, M = plan.angles[a]
@@ -208,7 +208,7 @@ def parametrised(exprs, plan: Plan) -> Program:
             return node(rule)
         if isinstance(x, _ARITH):
             return _arith(b, x, node)
-        if isinstance(x, _TRIG):
+        if isinstance(x, TRIG):
             return _trig(b, x, plan, param)
         raise Unsupported(f"node {type(x).__name__}: {x}")
 
@@ -284,9 +284,9 @@ def run_exact(prog: Program, point: list) -> list:
 
 def _root(v, p: int, q: int):
     """``v^(p/q)`` when it is rational (as :func:`rigidsym.exact._rational_root`)."""
-    from rigidsym.zero.exact import _rational_root
+    from rigidsym.zero.exact import rational_root
 
-    r = _rational_root(Fraction(int(v.p), int(v.q)), p, q)
+    r = rational_root(Fraction(int(v.p), int(v.q)), p, q)
     return flint.fmpq(r.numerator, r.denominator)
 
 

@@ -25,8 +25,8 @@ def run(entry: dict) -> dict:
     ``\\hat\\omega`` a skew matrix, Siciliano's and Spong's ``c_\\vartheta``, ``s_{12}``);
     the table's lines win over the notation's, as a ``--let`` does."""
     import rigidsym
-    from rigidsym.checking.deciding import registry
     from rigidsym.latex.notations import NOTATIONS
+    from rigidsym.registry import declarations as registry
 
     lets = corpus.lets_of(entry)
     book = entry["book"]["key"]

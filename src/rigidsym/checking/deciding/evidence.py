@@ -18,8 +18,8 @@ from rigidsym.checking.deciding.balls import (
     backing,
     ball_at,
 )
-from rigidsym.checking.deciding.explicit import _entries, explicit, shape_of
-from rigidsym.checking.deciding.registry import Rel
+from rigidsym.checking.deciding.explicit import entries_of, explicit, shape_of
+from rigidsym.registry.declarations import Rel
 from rigidsym.zero.decide import Unsupported, evaluate, make_plan
 
 __all__ = ["NUMERIC_DIGITS", "NUMERIC_POINTS", "numeric_backing", "counterexample_ball"]
@@ -35,13 +35,13 @@ def numeric_backing(rels: list[Rel], model: dict, seed: int,
     Raises:
         Unsupported: for a node with no numeric meaning.
     """
-    lhs = [e for r in rels for e in _entries(explicit(r.lhs, model))]
-    rhs = [e for r in rels for e in _entries(explicit(r.rhs, model))]
+    lhs = [e for r in rels for e in entries_of(explicit(r.lhs, model))]
+    rhs = [e for r in rels for e in entries_of(explicit(r.rhs, model))]
     return backing(lhs, rhs, make_plan(lhs + rhs), seed, points)
 
 
 # --------------------------------------------------------------------------- counterexample
-def _small_witness(entries, plan, seed):
+def small_witness(entries, plan, seed):
     """Look for a counterexample point with small rationals (readable), exactly checked."""
     rng = random.Random(seed)
     small = [Fraction(n, d) for n in range(-3, 4) for d in (1, 2, 3)]
@@ -100,13 +100,13 @@ def _exact_value(x, plan, pt):
     return one(x)
 
 
-def _counterexample(lhs, rhs, witness, seed, extra=()) -> tuple[dict, object, dict]:
+def exact_counterexample(lhs, rhs, witness, seed, extra=()) -> tuple[dict, object, dict]:
     """The readable counterexample record, with the plan and the exact parameter point
     (``extra``: expressions whose atoms the plan must also give values, the ball's)."""
-    plan = make_plan(_entries(lhs) + _entries(rhs) + list(extra))
-    diff = [a - b for a, b in zip(_entries(lhs), _entries(rhs), strict=True)] \
+    plan = make_plan(entries_of(lhs) + entries_of(rhs) + list(extra))
+    diff = [a - b for a, b in zip(entries_of(lhs), entries_of(rhs), strict=True)] \
         if shape_of(lhs) == shape_of(rhs) else []
-    pt = _small_witness(diff, plan, seed) if diff else None
+    pt = small_witness(diff, plan, seed) if diff else None
     if pt is None:  # keep the proven witness; parameters it does not mention get 1/2
         pt = in_range(plan, {p: witness.get(p, Fraction(1, 2)) for p in plan.params})
     point = {}
@@ -132,4 +132,4 @@ def _counterexample(lhs, rhs, witness, seed, extra=()) -> tuple[dict, object, di
 def counterexample_ball(lhs, rhs, plan, pt) -> tuple[bool, str, int]:
     """``lhs - rhs`` in ball arithmetic at the counterexample
     (:func:`rigidsym.checking.deciding.balls.ball_at`): ``(excludes_zero, ball text, digits)``."""
-    return ball_at(_entries(lhs), _entries(rhs), plan, pt)
+    return ball_at(entries_of(lhs), entries_of(rhs), plan, pt)

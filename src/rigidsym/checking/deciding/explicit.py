@@ -16,7 +16,7 @@ from sympy.polys.matrices.exceptions import DMNonInvertibleMatrixError
 
 from rigidsym.algebra.lie import LieOp
 from rigidsym.algebra.operators import Diff, DiffEntry
-from rigidsym.checking.deciding.registry import Rel
+from rigidsym.registry.declarations import Rel
 
 
 # --------------------------------------------------------------------------- helpers
@@ -30,25 +30,25 @@ def explicit(x, model: dict | None = None):
     """
     model = model or {}
     key = (id(x), id(model))
-    hit = _EXPLICIT_CACHE.get(key)
+    hit = EXPLICIT_CACHE.get(key)
     if hit is not None and hit[0] is x:
         return hit[1]
     if isinstance(x, sp.MatrixBase | sp.MatrixExpr):
         y = sp.Matrix(_mx(x, model))
     else:
-        y = _sc(sp.sympify(x), model)
-    _EXPLICIT_CACHE[key] = (x, y)
+        y = explicit_scalar(sp.sympify(x), model)
+    EXPLICIT_CACHE[key] = (x, y)
     return y
 
 
 #: explicit() results within one check (keyed by object identity; cleared per check)
-_EXPLICIT_CACHE: dict = {}
+EXPLICIT_CACHE: dict = {}
 
 
 _MATRIX_TERMS = (sp.Trace, sp.Determinant, MatrixElement, DiffEntry)
 
 
-def _sc(s, model):
+def explicit_scalar(s, model):
     """Explicit scalar: matrix-valued sub-terms evaluated, model substituted."""
     if model and s.has(*_MATRIX_TERMS):
         # evaluated on the model before substituting it: a model's value is often a mutable
@@ -103,7 +103,7 @@ def _mx(x, model) -> sp.ImmutableMatrix:
             if isinstance(a, sp.MatrixBase | sp.MatrixExpr):
                 mats.append(_mx(a, model))
             else:
-                coeff = coeff * _sc(a, model)
+                coeff = coeff * explicit_scalar(a, model)
         acc = mats[0]
         for m in mats[1:]:
             acc = matmul(acc, m)
@@ -121,7 +121,7 @@ def _mx(x, model) -> sp.ImmutableMatrix:
     if isinstance(x, sp.Inverse):
         return _inverse(_mx(x.arg, model))
     if isinstance(x, Diff):
-        return im(sp.Matrix(_mx(x.args[0], model)).diff(_sc(x.args[1], model)))
+        return im(sp.Matrix(_mx(x.args[0], model)).diff(explicit_scalar(x.args[1], model)))
     if isinstance(x, LieOp):  # hat, vee, transform, Ad, ad, expm (rigidsym.algebra.lie)
         return im(x.value(*[_mx(a, model) for a in x.args[:x.operands]]))
     if isinstance(x, sp.BlockMatrix):
@@ -238,21 +238,21 @@ def shape_of(x) -> tuple[int, int]:
     return (1, 1)
 
 
-def _entries(x) -> list:
+def entries_of(x) -> list:
     return list(x) if isinstance(x, sp.MatrixBase) else [x]
 
 
-def _fmt(x) -> str:
+def expanded_text(x) -> str:
     # the terms in sympy's own (deterministic) order: sorting them for print took more time
     # than deciding; these expanded strings appear in the full reports only
     return sp.sstr(x, order="none")
 
 
-def _rel_str(rels: list[Rel] | None) -> str | None:
+def rel_str(rels: list[Rel] | None) -> str | None:
     if not rels:
         return None
-    return "; ".join(f"{_fmt(r.lhs)} = {_fmt(r.rhs)}" for r in rels)
+    return "; ".join(f"{expanded_text(r.lhs)} = {expanded_text(r.rhs)}" for r in rels)
 
 
-def _seed(eq_id: str) -> int:
+def seed_of(eq_id: str) -> int:
     return zlib.crc32(eq_id.encode())

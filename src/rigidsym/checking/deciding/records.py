@@ -9,9 +9,9 @@ from __future__ import annotations
 import sympy as sp
 from sympy.core.function import AppliedUndef
 
-from rigidsym import _kinds
 from rigidsym.algebra.symbols import TIME, constraint_of
-from rigidsym.checking.deciding.explicit import _entries
+from rigidsym.checking.deciding.explicit import entries_of
+from rigidsym.core import kinds as _kinds
 from rigidsym.printing import notation
 
 __all__ = ["member_record", "model_words", "printed_latex", "MEMBER_TEXT_LIMIT",
@@ -29,7 +29,7 @@ def member_record(rel, role: str, out) -> dict:
     """A member of a statement as plain data.
 
     Args:
-        rel: the relation (:class:`rigidsym.checking.deciding.registry.Rel`).
+        rel: the relation (:class:`rigidsym.registry.declarations.Rel`).
         role: ``printed``, ``claim`` or ``corrected``.
         out: its decision (``zero``, ``method``, ``detail`` attributes), or ``None`` for a
             member that a definition introduces.
@@ -118,7 +118,7 @@ def _leaf_atoms(exprs) -> set:
 
 def _model_words(exprs) -> list[str]:
     groups, free, timed_any = {}, set(), False
-    for a in _leaf_atoms(e for x in exprs for e in _entries(x)):
+    for a in _leaf_atoms(e for x in exprs for e in entries_of(x)):
         if a == TIME:
             continue
         timed = isinstance(a, AppliedUndef)

@@ -23,10 +23,10 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 
 from rigidsym.checking.deciding.records import member_record
-from rigidsym.checking.deciding.registry import Rel
 from rigidsym.checking.repairing import deadline as deadline_
 from rigidsym.checking.repairing import records as records_
 from rigidsym.checking.repairing import repair
+from rigidsym.registry.declarations import Rel
 
 __all__ = ["Correction", "RepairSettings", "correct", "budget_of", "CORRECTIONS"]
 

@@ -32,7 +32,7 @@ from sympy.matrices.expressions.matexpr import MatrixElement
 from sympy.matrices.expressions.slice import MatrixSlice
 
 from rigidsym.algebra.operators import Cpm, Cross, Det, Vect
-from rigidsym.checking.deciding.explicit import _entries, _sc, explicit
+from rigidsym.checking.deciding.explicit import entries_of, explicit, explicit_scalar
 from rigidsym.checking.repairing.treeops import RawBlocks
 from rigidsym.zero.decide import Unsupported, evaluate
 
@@ -115,9 +115,9 @@ class PointValues:
         """A node through the model and the exact evaluator (the slow path)."""
         if isinstance(x, sp.MatrixExpr | sp.MatrixBase):
             m = explicit(x, self.model)
-            return flint.nmod_mat(m.rows, m.cols, [self._exact(e) for e in _entries(m)],
+            return flint.nmod_mat(m.rows, m.cols, [self._exact(e) for e in entries_of(m)],
                                   PRIME)
-        return self._exact(_sc(x, self.model))
+        return self._exact(explicit_scalar(x, self.model))
 
     # ------------------------------------------------------------------ structure
     def _value(self, x):  # noqa: C901  one case per node class, as sympy's printers

@@ -324,7 +324,7 @@ def _global_edits(rel, pl: Pools, kinds) -> list[Edit]:
 
 
 def single_edits(rel, pl: Pools, kinds=KINDS) -> list[Edit]:
-    """Every single edit of ``rel`` (a :class:`~rigidsym.checking.deciding.registry.Rel`) of the
+    """Every single edit of ``rel`` (a :class:`~rigidsym.registry.declarations.Rel`) of the
     given kinds, sorted by kind (:data:`KINDS` order) and then position in the tree."""
     kinds = set(kinds)
     out = []

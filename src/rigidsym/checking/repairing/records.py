@@ -5,10 +5,10 @@ from __future__ import annotations
 
 import re
 
-from rigidsym.checking.deciding.registry import Rel
 from rigidsym.checking.repairing import mutate
 from rigidsym.checking.repairing.repair import FULL_TESTS, KEEP, Found, Search
 from rigidsym.printing import notation
+from rigidsym.registry.declarations import Rel
 
 __all__ = ["repair_record", "search_record"]
 

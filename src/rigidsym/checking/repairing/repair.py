@@ -34,8 +34,7 @@ import sympy as sp
 from sympy.matrices.expressions.matexpr import MatrixElement
 from sympy.polys.matrices import DomainMatrix
 
-from rigidsym.checking.deciding.explicit import _entries, explicit, shape_of
-from rigidsym.checking.deciding.registry import Rel
+from rigidsym.checking.deciding.explicit import entries_of, explicit, shape_of
 from rigidsym.checking.repairing import candidates, mutate
 from rigidsym.checking.repairing import treeops as T
 from rigidsym.checking.repairing.deadline import Late
@@ -47,6 +46,7 @@ from rigidsym.checking.repairing.fasteval import (
     differs,
     points_for,
 )
+from rigidsym.registry.declarations import Rel
 from rigidsym.zero.decide import Unsupported, make_plan
 
 __all__ = ["REPAIR_BUDGET", "KEEP", "FULL_TESTS", "Search", "Found", "Decision", "Shared",
@@ -146,7 +146,7 @@ def book_difference(lhs, rhs) -> list | None:
         a, b = explicit(lhs, {}), explicit(rhs, {})
     except (ValueError, NotImplementedError):
         return None
-    diffs = [x - y for x, y in zip(_entries(a), _entries(b), strict=True)]
+    diffs = [x - y for x, y in zip(entries_of(a), entries_of(b), strict=True)]
     return _rational(diffs) or [sp.expand(x) for x in diffs]
 
 
@@ -204,9 +204,9 @@ def trivial(g: GenericValues, lhs, rhs) -> bool:
 def _plan(rels, model, pl: mutate.Pools):
     exprs = []
     for k in list(model) + [a for group in pl.symbols.values() for a in group]:
-        exprs += _entries(explicit(k, model))  # a bare angle a factor brings in, too
+        exprs += entries_of(explicit(k, model))  # a bare angle a factor brings in, too
     for r in rels:
-        exprs += _entries(explicit(r.lhs, model)) + _entries(explicit(r.rhs, model))
+        exprs += entries_of(explicit(r.lhs, model)) + entries_of(explicit(r.rhs, model))
     return make_plan(exprs)
 
 

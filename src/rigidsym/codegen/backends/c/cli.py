@@ -6,8 +6,8 @@ import importlib
 import time
 from pathlib import Path
 
-from rigidsym._config import KERNEL_SPEC
-from rigidsym.checking.deciding.registry import BadInput
+from rigidsym.core.config import KERNEL_SPEC
+from rigidsym.registry.declarations import BadInput
 
 __all__ = ["cmd_generate_c", "select_kernels", "MARKER"]
 

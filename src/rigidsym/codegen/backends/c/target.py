@@ -31,7 +31,7 @@ import sympy as sp
 import rigidsym
 from rigidsym.codegen.backends.c.homogeneous import rescale_steps
 from rigidsym.codegen.backends.c.printer import DoublePrinter, FloatOnlyPrinter, WidePrinter
-from rigidsym.codegen.cprogram import _balanced, _finite_check, _program_lines
+from rigidsym.codegen.cprogram import balanced, finite_check, program_lines
 from rigidsym.codegen.spec import Kernel
 
 __all__ = ["generate_c", "float_bounds", "TEMPLATES", "LIBRARY", "PREFIX", "STATUS",
@@ -110,9 +110,9 @@ def _program(kc, printer, ctype: str) -> dict:
     zero = "0.0f" if ctype == "float" else "0.0"
     out = []
     for v in kc.variants:
-        lines = _program_lines(v.program, printer)
+        lines = program_lines(v.program, printer)
         out.append({"cond": None if v.cond is None else printer.doprint(v.cond),
-                    "finite": _finite_check(v.program, kc.kernel, printer), "zero": zero,
+                    "finite": finite_check(v.program, kc.kernel, printer), "zero": zero,
                     **lines})
     return out
 
@@ -238,8 +238,8 @@ def _function(kc, ctype: str, rescale: list) -> dict:
             "scan": [f"{a.name}[{j}]" if a.shape else a.name
                      for a in k.args for j in range(a.size)],
             "groups": _scan_groups(k, ctype),
-            "slots": slots, "out_check": _balanced([f"({s} - {s})" for s in slots]),
-            "out_sum": _balanced(slots),
+            "slots": slots, "out_check": balanced([f"({s} - {s})" for s in slots]),
+            "out_sum": balanced(slots),
             "bounded": None if any(v["finite"] for v in variants) else _bounded(kc, ctype),
             "wide": _wide(kc, k) if ctype == "double" else None,
             "rescale": rescale, "rescaled": {n for st in rescale for n in st["args"]}}

@@ -1,0 +1,334 @@
+"""Certificates of verdicts (issue 49): each decided id written as a statement and its
+evidence, in the format of ``docs/certificates.md``, for the independent checker
+``certcheck/`` (standard library only; it never imports rigidsym or sympy).
+
+The statement is the id's relations with the model substituted (the same entries the zero
+test decides), printed in a small grammar (``+ - * /``, integer powers, integers, names,
+``cos``/``sin`` of rational combinations of declared angles and ``pi``) with every shared
+subexpression written once as a ``let`` (:mod:`rigidsym.checking.certifying.statement`); the atoms
+are
+declared with their kinds, whose hypotheses the checker generates itself. The evidence by verdict:
+
+- verified: every printed member and claim an ``identity`` (the checker re-computes it
+  with its own parametrisations);
+- does-not-hold: the first failing member with a ``shape`` mismatch or an exact
+  ``counterexample`` point (atoms, jets, ``tan(phi / 2M)``), and the corrected form, when
+  there is one, as identities;
+- definition: the printed form as a ``statement``, the claims as identities.
+
+An id whose entries leave the grammar (``acos``, ``atan2``, square roots, floats) gets no
+certificate; :func:`write_certificates` says which and why.
+"""
+
+from __future__ import annotations
+
+import json
+import re
+from fractions import Fraction
+from pathlib import Path
+
+import sympy as sp
+
+from rigidsym.checking.certifying.statement import StatementPrinter, Unprintable, relation_record
+from rigidsym.checking.deciding.evidence import small_witness
+from rigidsym.checking.deciding.explicit import EXPLICIT_CACHE, entries_of, explicit, shape_of
+from rigidsym.core.files import write_atomic
+from rigidsym.registry.declarations import REGISTRY
+from rigidsym.zero.decide import Unsupported, decide_zero, evaluate, make_plan
+
+__all__ = ["FORMAT", "VERSION", "Unprintable", "certificate", "write_certificates",
+           "certificate_file", "recheck_folder", "certify_line", "certificate_field"]
+
+FORMAT = "rigidsym-certificate"
+VERSION = 1
+
+
+def certificate_file(eq_id: str) -> str:
+    """The file name of an id's certificate (``3.16.json``; user ids keep their text,
+    characters outside ``[A-Za-z0-9._-]`` become ``_``)."""
+    return re.sub(r"[^A-Za-z0-9._-]", "_", eq_id) + ".json"
+
+
+# ----------------------------------------------------------------------------- evidence
+def _point(pr: StatementPrinter, lhs, rhs, seed: int) -> dict:
+    """An exact counterexample of ``lhs = rhs``: values of every atom and jet, and
+    ``tan(phi / 2M)`` of every angle."""
+    diff = [a - b for a, b in zip(entries_of(lhs), entries_of(rhs), strict=True)]
+    zr = decide_zero(diff, seed=seed)
+    if zr.zero is not False:
+        raise Unprintable(f"no counterexample found ({zr.method}: {zr.detail})")
+    plan = make_plan(entries_of(lhs) + entries_of(rhs))
+    pt = small_witness(diff, plan, seed) or \
+        {p: zr.witness.get(p, Fraction(1, 2)) for p in plan.params}
+    return {"type": "counterexample", **_atom_point(pr, plan, pt)}
+
+
+def _atom_point(pr: StatementPrinter, plan, pt: dict) -> dict:
+    """``{"point", "angles"}``: the atoms' and jets' values at the parameter point ``pt``."""
+    point, angles = {}, {}
+    for atom, rule in plan.rules.items():
+        if atom in plan.bare or atom is sp.pi:
+            continue
+        base = atom.expr if isinstance(atom, sp.Derivative) else atom
+        k = 0 if base is atom else sum(int(n) for _, n in atom.variable_count)
+        v = evaluate(rule, plan, pt) if rule != atom else pt[atom]
+        point[pr.atom(base) + "'" * k] = str(Fraction(str(v)))
+    for a, (tau, M) in plan.angles.items():
+        angles[pr.atom(a)] = {"M": int(M), "tan": str(pt[tau])}
+    return {"point": dict(sorted(point.items())), "angles": dict(sorted(angles.items()))}
+
+
+def _candidate_points(pr: StatementPrinter, sides: list, seed: int, n: int = 6) -> list:
+    """Exact points of the constraint set for the atoms of ``sides`` (small rationals; the
+    angles' M those of all the sides, as the checker's)."""
+    import random
+
+    plan = make_plan([e for s in sides for e in entries_of(s)])
+    rng = random.Random(seed)
+    small = [Fraction(k, d) for k in range(-3, 4) for d in (1, 2, 3)]
+    out = []
+    for _ in range(4 * n):
+        pt = {p: rng.choice(small) for p in plan.params}
+        try:
+            out.append(_atom_point(pr, plan, pt))
+        except ZeroDivisionError:
+            continue
+        if len(out) == n:
+            break
+    return out
+
+
+def _angle_M(sides) -> dict:
+    """Angle atom -> the lcm of the denominators of its coefficients in the cos/sin
+    arguments of ``sides`` (the checker's ``M``)."""
+    from math import lcm
+
+    out: dict = {}
+    for s in sides:
+        for e in entries_of(s):
+            for f in sp.sympify(e).atoms(sp.cos, sp.sin):
+                for term in sp.Add.make_args(sp.expand(f.args[0])):
+                    c, rest = term.as_coeff_Mul()
+                    if rest is not sp.pi and c.is_Rational:
+                        out[rest] = lcm(out.get(rest, 1), int(c.q))
+    return out
+
+
+def _fails(r, model: dict, seed: int) -> bool:
+    """Whether the relation ``r`` fails: a shape mismatch, or a counterexample."""
+    if shape_of(r.lhs) != shape_of(r.rhs):
+        return True
+    lhs, rhs = explicit(r.lhs, model), explicit(r.rhs, model)
+    diff = [a - b for a, b in zip(entries_of(lhs), entries_of(rhs), strict=True)]
+    return decide_zero(diff, seed=seed).zero is False
+
+
+def certificate(eq_id: str, verdict: str, members: list[dict] | None = None,
+                seed: int | None = None, cofactors: bool = True) -> dict:
+    """The certificate of an id's verdict (a plain dict; ``json.dumps`` writes it).
+
+    Args:
+        eq_id: a registered id (book or user).
+        verdict: its computed verdict: ``verified``, ``does-not-hold`` or ``definition``.
+        members: the result's member records (``Outcome.members``): a does-not-hold
+            certifies its first member whose status is ``fails``; ``None``: the first member
+            the zero test finds failing.
+        seed: the seed of the counterexample search (default: the id's).
+        cofactors: give an identity cofactor evidence where
+            :func:`rigidsym.checking.certifying.cofactors.cofactor_evidence` finds it (else, and
+            when
+            ``False``, a re-computation certificate).
+
+    Raises:
+        Unprintable: the statement leaves the grammar, an atom has a kind the checker does
+            not know, or no counterexample was found.
+        ValueError: an undecided verdict (nothing to certify).
+    """
+    from rigidsym.checking.deciding.explicit import seed_of
+
+    if verdict not in ("verified", "does-not-hold", "definition"):
+        raise ValueError(f"verdict: expected verified, does-not-hold or definition, got "
+                         f"{verdict!r}")
+    eq = REGISTRY[eq_id]
+    st = eq.build()
+    EXPLICIT_CACHE.clear()
+    seed = seed_of(eq_id) if seed is None else seed
+    pr = StatementPrinter()
+    pairs = []  # (label, role, lhs, rhs, evidence or None for a counterexample)
+    asserted = st.printed + st.claims
+    if verdict == "verified":
+        pairs = [(r, "printed" if i < len(st.printed) else "claim", "identity")
+                 for i, r in enumerate(asserted)]
+    elif verdict == "definition":
+        pairs = [(r, "printed", "statement") for r in st.printed]
+        pairs += [(r, "claim", "identity") for r in st.claims]
+    else:
+        if members is None:
+            bad = next((i for i, r in enumerate(asserted) if _fails(r, st.model, seed)), None)
+        else:
+            status = [m.get("status") for m in members][:len(asserted)]
+            bad = next((i for i, s in enumerate(status) if s == "fails"), None)
+        if bad is None:
+            raise Unprintable("no failing member on record")
+        pairs = [(asserted[bad], "printed" if bad < len(st.printed) else "claim", "fails")]
+        pairs += [(r, "corrected", "identity") for r in st.corrected or []]
+    sides = []
+    for r, role, ev in pairs:
+        lhs, rhs = explicit(r.lhs, st.model), explicit(r.rhs, st.model)
+        if isinstance(lhs, sp.MatrixBase) != isinstance(rhs, sp.MatrixBase) and \
+                shape_of(lhs) == shape_of(rhs):  # a 1 x 1 matrix against a scalar
+            lhs, rhs = (x[0, 0] if isinstance(x, sp.MatrixBase) else x for x in (lhs, rhs))
+        if ev == "fails":
+            ev = {"type": "shape"} if shape_of(r.lhs) != shape_of(r.rhs) else None
+        else:
+            ev = {"type": ev}
+        sides.append((r, role, lhs, rhs, ev))
+    for _, _, lhs, rhs, _ in sides:
+        for e in entries_of(lhs) + entries_of(rhs):
+            pr.count(sp.sympify(e))
+    rels = []
+    for r, role, lhs, rhs, ev in sides:
+        if ev is None:
+            try:
+                ev = _point(pr, lhs, rhs, seed)
+            except Unsupported as exc:
+                raise Unprintable(str(exc)) from None
+        rels.append(relation_record(pr, r.label, role, lhs, rhs, ev))
+    # the groups in a fixed order (their first naming follows sympy's traversal, which
+    # differs across PYTHONHASHSEED): the same statement gives the same bytes
+    atoms = sorted(pr.groups.values(), key=lambda g: g["group"])
+    if cofactors:
+        _add_cofactors(pr, rels, sides, atoms, seed)
+    return {"format": FORMAT, "version": VERSION, "id": eq_id, "title": eq.title,
+            "verdict": verdict, "book_latex": eq.latex or "", "atoms": atoms,
+            "book_names": dict(sorted(pr.book.items())), "let": pr.lets, "relations": rels}
+
+
+def _add_cofactors(pr: StatementPrinter, rels: list, sides: list, atoms: list, seed: int) -> None:
+    """Replace identity evidence by cofactors where they are found (in place)."""
+    from rigidsym.checking.certifying.cofactors import NoCofactors, cofactor_evidence
+
+    every = [x for s in sides for x in s[2:4]]
+    M = {pr.atom(a): m for a, m in _angle_M(every).items()}
+    points = None
+    for rel, (_, _, lhs, rhs, _) in zip(rels, sides, strict=True):
+        if rel["evidence"]["type"] != "identity":
+            continue
+        try:
+            points = points or _candidate_points(pr, every, seed)
+            rel["evidence"] = cofactor_evidence(lhs, rhs, atoms, pr.atom, M, points)
+        except (NoCofactors, Unsupported) as exc:
+            rel["evidence"] = {"type": "identity", "why_not_cofactors": str(exc)}
+
+
+def write_certificates(results, directory, recheck: bool = False) -> dict:
+    """Write one certificate per decided result into ``directory`` (created), and a
+    ``SKIPPED.txt`` naming the ids without one and why.
+
+    Args:
+        results: outcomes of :func:`rigidsym.checking.runner.run_checks` (``id``,
+            ``verdict``, ``members``).
+        directory: the folder.
+        recheck: run the independent checker on the folder afterwards
+            (:func:`recheck_folder`).
+
+    Returns:
+        ``{"written": [ids], "skipped": {id: why}, "rechecked": {id: passed} or None,
+        "checker": its location or None, "failures": {id: the checker's reason},
+        "evidence": {id: [evidence type per relation]}}``; undecided ids are skipped.
+    """
+    out = Path(directory)
+    out.mkdir(parents=True, exist_ok=True)
+    written, skipped, files, evidence = [], {}, {}, {}
+    for r in results:
+        if r.verdict == "undecided":
+            skipped[r.id] = "undecided: nothing to certify"
+            continue
+        try:
+            cert = certificate(r.id, r.verdict, r.members)
+        except (Unprintable, ValueError) as exc:
+            skipped[r.id] = str(exc)
+            continue
+        write_atomic(out / certificate_file(r.id), json.dumps(cert, indent=1) + "\n")
+        written.append(r.id)
+        files[certificate_file(r.id)] = r.id
+        evidence[r.id] = [rel["evidence"]["type"] for rel in cert["relations"]]
+    write_atomic(out / "SKIPPED.txt",
+                 "".join(f"{i}: {why}\n" for i, why in skipped.items()) or "none\n")
+    summary = {"written": written, "skipped": skipped, "rechecked": None, "checker": None,
+               "failures": {}, "evidence": evidence}
+    if recheck and written:
+        summary.update(recheck_folder(out, files))
+    return summary
+
+
+def _checker_path() -> str | None:
+    """Where ``certcheck`` is: the checkout's ``certcheck/src`` beside ``src/``, or ``""``
+    when it is installed; ``None`` when it is nowhere."""
+    import importlib.util
+
+    here = Path(__file__).resolve().parents[4] / "certcheck" / "src"
+    if (here / "certcheck" / "__main__.py").is_file():
+        return str(here)
+    return "" if importlib.util.find_spec("certcheck") is not None else None
+
+
+def recheck_folder(directory, files: dict) -> dict:
+    """Run the independent checker (``python -m certcheck``, a separate process that
+    imports no rigidsym) on ``directory``.
+
+    Args:
+        directory: the folder of certificates.
+        files: certificate file name -> id.
+
+    Returns:
+        ``{"rechecked": {id: passed}, "checker": where it was found, "failures": {id:
+        reason}}``; ``rechecked`` is ``None`` when certcheck is not found.
+    """
+    import os
+    import subprocess
+    import sys
+
+    where = _checker_path()
+    if where is None:
+        return {"rechecked": None, "checker": None, "failures": {}}
+    env = dict(os.environ)
+    if where:
+        env["PYTHONPATH"] = where + os.pathsep + env.get("PYTHONPATH", "")
+    proc = subprocess.run([sys.executable, "-m", "certcheck", "--quiet", str(directory)],
+                          capture_output=True, text=True, env=env, check=False)
+    failures = {}
+    for line in proc.stdout.splitlines():
+        if line.startswith("FAILED "):
+            name, _, why = line[len("FAILED "):].partition(": ")
+            if name in files:
+                failures[files[name]] = why
+    passed = {i: i not in failures for i in files.values()}
+    if proc.returncode not in (0, 1):
+        failures["(certcheck)"] = proc.stderr.strip()[-300:]
+    return {"rechecked": passed, "checker": where or "installed certcheck",
+            "failures": failures}
+
+
+def certificate_field(summary: dict, eq_id: str) -> dict:
+    """The ``certificate`` member of an id's JSON record (``verify --certificates --json``):
+    ``{"file", "evidence", "rechecked"}``, or ``{"file": None, "why"}``."""
+    if eq_id in summary["skipped"]:
+        return {"file": None, "why": summary["skipped"][eq_id]}
+    rechecked = summary["rechecked"]
+    return {"file": certificate_file(eq_id), "evidence": summary["evidence"].get(eq_id, []),
+            "rechecked": None if rechecked is None else rechecked.get(eq_id)}
+
+
+def certify_line(summary: dict, directory) -> str:
+    """One line on what was written and re-checked (``rigidsym verify --certificates``)."""
+    s = f"certificates: {len(summary['written'])} written to {directory}"
+    if summary["skipped"]:
+        s += f", {len(summary['skipped'])} ids without one (SKIPPED.txt)"
+    if summary["rechecked"] is None:
+        return s + "; certcheck not found, not re-checked (pip install ./certcheck)"
+    ok = sum(summary["rechecked"].values())
+    s += f"; certcheck re-checked {ok} of {len(summary['rechecked'])}"
+    for i, why in summary["failures"].items():
+        s += f"\n  certcheck FAILED ({i}): {why}"
+    return s

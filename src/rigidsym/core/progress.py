@@ -1,0 +1,212 @@
+"""Progress of the long commands, on stderr: never quiet for more than a second.
+
+On a terminal, one ``rich`` live display refreshed four times a second: a spinner, what is
+being done (``checking 3.77a``), a bar with a count when the amount of work is known, the
+elapsed time and an estimate of the time left; when a phase ends, one line stays
+(``✓ checked 181 ids in 40.1 s: ...``). When stderr is not a terminal (a pipe, a log, CI),
+one line at the start and one at the end of each phase, nothing in between, so that a log
+reads as the list of phases with their durations.
+
+The estimate is the caller's (:meth:`Phase.estimate`): the parallel checker predicts each
+id's time from its previous runs (:func:`load_durations`), which moves far less than a
+rate measured over the last few ids. Imports nothing of rigidsym but :mod:`rigidsym.core.cache`.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import sys
+import time
+from contextlib import contextmanager
+
+__all__ = ["Reporter", "Phase", "load_durations", "save_durations", "format_seconds"]
+
+#: refreshes per second of the live display (the issue's floor is one)
+REFRESH = 4
+#: the share of a new estimate taken at once (the rest follows over the next updates)
+SMOOTHING = 1 / 3
+
+
+def format_seconds(s: float) -> str:
+    """``"0.4 s"``, ``"12 s"``, ``"2 min 05 s"``."""
+    if s < 10:
+        return f"{s:.1f} s"
+    if s < 60:
+        return f"{s:.0f} s"
+    m, r = divmod(int(round(s)), 60)
+    return f"{m} min {r:02d} s"
+
+
+class Phase:
+    """One phase of a command: what it does, how far it is, what it found."""
+
+    def __init__(self, reporter: Reporter, what: str, total: int | None):
+        self.reporter, self.what, self.total = reporter, what, total
+        self.done = 0
+        self.summary = ""
+        self.t0 = time.perf_counter()
+        self._eta: float | None = None
+        self._eta_at = self.t0
+        self._task = None
+
+    def label(self, text: str) -> None:
+        """What is being done now (``checking 3.77a``), shown on a terminal."""
+        if self._task is not None:
+            self.reporter.bar.update(self._task, description=text)
+
+    def advance(self, n: int = 1, label: str | None = None) -> None:
+        """``n`` more items done; ``label`` what was found (``3.57 does-not-hold``)."""
+        self.done += n
+        if self._task is not None:
+            kw = {"description": label} if label else {}
+            self.reporter.bar.update(self._task, advance=n, **kw)
+
+    def estimate(self, seconds_left: float | None) -> None:
+        """The caller's estimate of the time left (``None``: unknown), smoothed: the shown
+        value moves a third of the way from where the last one has counted down to, so one
+        surprising id does not make it jump."""
+        now = time.perf_counter()
+        if seconds_left is not None and self._eta is not None:
+            counted = max(self._eta - (now - self._eta_at), 0.0)
+            seconds_left = counted + SMOOTHING * (seconds_left - counted)
+        self._eta, self._eta_at = seconds_left, now
+        if self._task is not None:
+            text = "" if seconds_left is None else f"≈ {format_seconds(seconds_left)} left"
+            self.reporter.bar.update(self._task, eta=text)
+
+    def finish(self, summary: str) -> None:
+        """What the phase found, printed with its end line (``121 verified, ...``)."""
+        self.summary = summary
+
+
+class Reporter:
+    """The progress of one command (``rigidsym report``): a sequence of phases.
+
+    Args:
+        command: the command's name, the head of each piped line (``rigidsym report``).
+        enabled: ``False`` prints nothing (``--quiet``).
+        stream: where to write (default ``sys.stderr``); a terminal gets the live display.
+        keep: on a terminal, leave one line per finished phase (``False``: the display
+            vanishes, for a command whose own output follows at once, ``show``).
+    """
+
+    def __init__(self, command: str, enabled: bool = True, stream=None, keep: bool = True):
+        self.command, self.enabled, self.keep = command, enabled, keep
+        self.stream = stream
+        self.bar = None
+        self.live = False
+
+    def _stream(self):
+        return self.stream if self.stream is not None else sys.stderr
+
+    def __enter__(self) -> Reporter:
+        s = self._stream()
+        self.live = self.enabled and hasattr(s, "isatty") and s.isatty() and \
+            os.environ.get("TERM") != "dumb"
+        if self.live:
+            from rich.console import Console
+            from rich.progress import (
+                BarColumn,
+                Progress,
+                SpinnerColumn,
+                TextColumn,
+                TimeElapsedColumn,
+            )
+            self.bar = Progress(SpinnerColumn(), TextColumn("{task.description}"), BarColumn(),
+                                _count_column(), TimeElapsedColumn(),
+                                TextColumn("{task.fields[eta]}"),
+                                console=Console(file=s), transient=True,
+                                refresh_per_second=REFRESH,
+                                # stdout into the display only when it is the terminal too
+                                # (piped stdout must reach the pipe untouched)
+                                redirect_stdout=sys.stdout.isatty(), redirect_stderr=True)
+            self.bar.__enter__()
+        return self
+
+    def __exit__(self, *exc) -> None:
+        if self.bar is not None:
+            self.bar.__exit__(*exc)
+            self.bar = None
+
+    def say(self, text: str) -> None:
+        """One line that stays (above the live display on a terminal)."""
+        if not self.enabled:
+            return
+        if self.bar is not None:
+            self.bar.console.print(text, highlight=False, markup=False)
+        else:
+            print(text, file=self._stream(), flush=True)
+
+    @contextmanager
+    def phase(self, what: str, total: int | None = None, doing: str | None = None):
+        """A phase: ``what`` names it (``checking 181 ids``), ``total`` counts its items
+        (``None``: unknown, a spinner), ``doing`` is the first label (default ``what``).
+
+        Yields:
+            The :class:`Phase`, to advance, label and estimate.
+        """
+        ph = Phase(self, what, total)
+        if self.bar is not None:
+            ph._task = self.bar.add_task(doing or what, total=total, eta="")
+        elif self.enabled:
+            print(f"{self.command}: {what} ...", file=self._stream(), flush=True)
+        failed = True
+        try:
+            yield ph
+            failed = False
+        finally:
+            took = format_seconds(time.perf_counter() - ph.t0)
+            if self.bar is not None:
+                self.bar.remove_task(ph._task)
+            tail = f": {ph.summary}" if ph.summary else ""
+            if self.bar is not None:
+                if self.keep:
+                    self.say(f"✓ {what}: {took}{tail}")
+            elif self.enabled:
+                ended = "stopped after" if failed else "done in"
+                print(f"{self.command}: {what}: {ended} {took}{tail}", file=self._stream(),
+                      flush=True)
+
+
+def _count_column():
+    """``12/181`` when the phase has a count, nothing when it has not (no ``0/?``)."""
+    from rich.progress import ProgressColumn
+    from rich.text import Text
+
+    class Count(ProgressColumn):
+        def render(self, task):
+            if task.total is None:
+                return Text("")
+            return Text(f"{int(task.completed)}/{int(task.total)}", style="progress.download")
+
+    return Count()
+
+
+# --------------------------------------------------------------------------- durations
+def _durations_file(kind: str):
+    from rigidsym.core import cache as _cache
+    return _cache.root() / "timings" / f"{kind}.json"
+
+
+def load_durations(kind: str) -> dict[str, float]:
+    """Seconds per id of earlier runs (``{}`` when none, or unreadable: only an estimate
+    depends on it)."""
+    try:
+        data = json.loads(_durations_file(kind).read_text(encoding="utf-8"))
+        return {str(k): float(v) for k, v in data.items()}
+    except (OSError, ValueError, TypeError, AttributeError):
+        return {}
+
+
+def save_durations(kind: str, seconds: dict[str, float]) -> None:
+    """Merge ``seconds`` into the stored durations (atomic write; a failure to write is
+    ignored: the next estimate is only less good)."""
+    from rigidsym.core.files import write_atomic
+
+    merged = load_durations(kind)
+    merged.update({k: round(float(v), 3) for k, v in seconds.items()})
+    try:
+        write_atomic(_durations_file(kind), json.dumps(merged, indent=0, sort_keys=True))
+    except OSError:
+        pass

@@ -1,0 +1,176 @@
+"""Grading a class from its exam folder (issue 51 item 1): every student's answers against
+the student's own key, a per-student, per-question CSV and a gradebook an LMS imports.
+
+``grade_class(DIR, answers)`` reads ``DIR/key.json`` (written by
+:func:`rigidsym.course.roster.class_exam`) and the answers (the filled ``answers.csv``: a
+row per student, a column ``P<k>.<answer>`` per box; or a folder of ``<student>.json``
+files ``{"P1.w_2": ...}``), read by the reader of ``--set``. It writes::
+
+    DIR/grades.csv     a row per student and answer box: the problem, exercise, the box's
+                       label, its weight, points and maximum, status (right, wrong,
+                       missing, not graded), the slip named and the detail
+    DIR/gradebook.csv  a row per student: id, email, the points of each problem and the
+                       total (Moodle's grade import: map "ID number" or "Email address")
+
+A box scores 1 when right, the spec's ``slip_credit`` (default 0) when wrong by a named
+slip, 0 when wrong otherwise or missing (blank or absent); a problem's points are its
+``weight`` times the mean score of its boxes (partial credit).
+"""
+
+from __future__ import annotations
+
+import csv
+import io
+import json
+from pathlib import Path
+
+import sympy as sp
+
+from rigidsym.core.files import write_atomic
+from rigidsym.course.worked import Solution, parameters, solve
+
+__all__ = ["grade_class", "solution_of"]
+
+
+def solution_of(rec: dict) -> Solution:
+    """A key record's solution, rebuilt from its exact data and answers (no re-solve);
+    a record of measured data (``tol`` set) is solved again, as the grader's slips read
+    its steps."""
+    if rec.get("tol") is not None:
+        import dataclasses
+
+        s = solve(rec["id"], tol=rec["tol"], **rec["data"])     # cached: copied, not changed
+        return dataclasses.replace(s, answers={k: v for k, v in s.answers.items()
+                                               if k in rec.get("asked", s.answers)})
+    shapes = {p.name: p.shape for p in parameters(rec["id"])}
+    data = {k: _value(v, shapes.get(k, ())) for k, v in rec["data"].items()}
+    asked = rec.get("asked", list(rec["answers"]))
+    answers = {k: _value(v, ()) for k, v in rec["answers"].items() if k in asked}
+    return Solution(rec["id"], "", "", "", answers=answers, data=data, status="solved",
+                    checks=[])
+
+
+def _value(v, shape):
+    if shape is None:                     # a choice (3.10's sequence): kept as text
+        return v
+    if isinstance(v, list):
+        m = sp.Matrix([[sp.sympify(x) for x in r] if isinstance(r, list) else
+                       [sp.sympify(r)] for r in v])
+        return m
+    return sp.sympify(v)
+
+
+def _answers(path: str | Path, key: dict) -> dict[str, dict]:
+    """Students' answers by name: ``{student: {"P1.w_2": value}}``; a folder's files are
+    named by the student's name or its handout's stem. Unknown students or columns are an
+    error naming them."""
+    from rigidsym.course.answers import read_answers
+
+    raw = read_answers(path)
+    by_stem = {Path(r["handout"]).stem: r["student"] for r in key["students"]}
+    names = {r["student"] for r in key["students"]}
+    out: dict[str, dict] = {}
+    for who, ans in raw.items():
+        name = who if who in names else by_stem.get(who)
+        if name is None:
+            raise ValueError(f"answers: {who!r} is not a student of this exam (key.json "
+                             f"lists {len(names)}: {', '.join(sorted(names)[:5])}...)")
+        flat = {}
+        for k, v in ans.items():
+            if isinstance(v, dict):           # {"P1": {"w_2": ...}}
+                flat.update({f"{k}.{a}": x for a, x in v.items()})
+            else:
+                flat[k] = v
+        out[name] = flat
+    return out
+
+
+def grade_class(out_dir: str | Path, answers: str | Path) -> dict:
+    """Grade every student of the exam in ``out_dir`` on ``answers``; write the CSVs.
+
+    Args:
+        out_dir: the folder :func:`rigidsym.course.roster.class_exam` wrote.
+        answers: the filled answers CSV, or a folder of one JSON file per student.
+
+    Returns:
+        ``{"grades": path, "gradebook": path, "table": str (a line per student),
+        "all_right": bool (every box of every student right)}``.
+
+    Raises:
+        ValueError: no ``key.json`` in ``out_dir``, unreadable answers, a student not in
+            the key, or a column ``P<k>.<name>`` that is no box of the exam.
+    """
+    folder = Path(out_dir)
+    try:
+        key = json.loads((folder / "key.json").read_text(encoding="utf-8"))
+    except (OSError, ValueError) as exc:
+        raise ValueError(f"DIR: cannot read {folder / 'key.json'} (write it with rigidsym "
+                         f"exam SPEC --students ROSTER --out DIR): {exc}") from None
+    if "students" not in key:
+        raise ValueError(f"DIR: {folder / 'key.json'} is the key of a single exam; grade it "
+                         f"with rigidsym exercise ID --grade")
+    given = _answers(answers, key)
+    boxes = {f"P{p['problem']}.{a}" for r in key["students"] for p in r["problems"]
+             for a in p["asked"]}
+    for who, ans in given.items():
+        bad = sorted(set(ans) - boxes)
+        if bad:
+            raise ValueError(f"answers: {who}: {bad[0]!r} is no answer box of this exam "
+                             f"(columns are P<problem>.<answer>, as in answers.csv)")
+    credit = float(key.get("slip_credit", 0))
+    from rigidsym.course.forked import forked_map
+
+    n_problems = max(len(r["problems"]) for r in key["students"])
+    done = forked_map(lambda i: _student(key["students"][i], given, credit),
+                      len(key["students"]))
+    rows = [row for d in done for row in d[0]]
+    book = [d[1] for d in done]
+    lines = [d[2] for d in done]
+    all_right = all(d[3] for d in done)
+    grades = _csv([["student", "id", "version", "problem", "exercise", "answer", "label",
+                    "max_points", "points", "status", "slip", "detail"], *rows])
+    gradebook = _csv([["ID number", "Email address", "Full name",
+                       *[f"Problem {k}" for k in range(1, n_problems + 1)], "Total"], *book])
+    return {"grades": write_atomic(folder / "grades.csv", grades),
+            "gradebook": write_atomic(folder / "gradebook.csv", gradebook),
+            "table": f"{key['title']}: {len(key['students'])} students\n" + "\n".join(lines),
+            "all_right": all_right}
+
+
+def _student(r: dict, given: dict, credit: float) -> tuple:
+    """One student graded: (rows of grades.csv, the gradebook's row, the summary line,
+    every box right)."""
+    from rigidsym.course.grading import grade
+
+    ans = given.get(r["student"], {})
+    rows, per_problem, wrong, all_right = [], [], [], True
+    for p in r["problems"]:
+        k = p["problem"]
+        mine = {a: ans.get(f"P{k}.{a}") for a in p["asked"]}
+        graded = [g for g in grade(solution_of(p), mine) if g.correct is not None]
+        share = p["weight"] / max(len(graded), 1)
+        total = 0.0
+        for g in graded:
+            score = 1.0 if g.correct else credit if g.slip else 0.0
+            total += share * score
+            status = "right" if g.correct else "missing" if g.missing else "wrong"
+            all_right &= status == "right"
+            if status != "right":
+                wrong.append(f"P{k}.{g.name}: " + ((g.slip or status) if status == "wrong"
+                                                   else "missing"))
+            rows.append([r["student"], r["id"], r["version"], k, p["id"][2:], g.name,
+                         p["labels"].get(g.name, g.name), f"{share:.6g}",
+                         f"{share * score:.6g}", status, g.slip or "", g.detail])
+        per_problem.append(total)
+    book = [r["id"], r["email"], r["student"], *[f"{x:.4g}" for x in per_problem],
+            f"{sum(per_problem):.4g}"]
+    out_of = sum(p["weight"] for p in r["problems"])
+    line = (f"  {r['student']:24s} {sum(per_problem):6.3g} / {out_of:<4g} "
+            f"{'; '.join(wrong) or 'all right'}")
+    return rows, book, line, all_right
+
+
+def _csv(rows: list) -> str:
+    buf = io.StringIO()
+    csv.writer(buf, lineterminator="\n").writerows(rows)
+    return buf.getvalue()

@@ -1,0 +1,359 @@
+"""Grading a student's answers against a worked solution, naming the slip of a wrong one.
+
+In the spirit of the repair search (:mod:`rigidsym.checking.repairing`): a wrong answer
+is compared with small edits of the right one, and the first edit that explains it names
+the slip: ``"transpose"`` (a matrix transposed), ``"sign"`` (the sign of the whole answer,
+of one component, or of one term where the exercise lists its terms), ``"degrees"`` (an
+angle in degrees for radians), ``"unit"`` (a factor that is a power of ten: mm, cm, g,
+mm^2 for m, m, kg, m^2), ``"swap"`` (two components, rows or columns exchanged) and
+``"reference point"`` (the same quantity about another point of the body, where the
+exercise declares one: its module's ``slips(solution)``). Else ``"not a known slip"``.
+
+Numbers are compared in floating point within a stated tolerance: a grade is a judgement
+on a student's decimals, not a proof; the expected values themselves are exact.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+import sympy as sp
+
+from rigidsym.course.grading_units import unit_off, unit_slip
+from rigidsym.course.worked.numbers import read_text, split_text
+from rigidsym.course.worked.units import answer_unit
+
+__all__ = ["grade", "Graded", "RTOL", "SLIPS", "is_blank", "answer_shape", "gradeable"]
+
+#: relative tolerance: an answer is right within 0.1 % of its largest entry
+RTOL = 1e-3
+#: the slip words, in the order they are tried
+SLIPS = ("transpose", "sign", "degrees", "unit", "swap", "frame", "reference point")
+_TRUTH = {"true": 1.0, "t": 1.0, "yes": 1.0, "y": 1.0, "holds": 1.0,
+          "false": 0.0, "f": 0.0, "no": 0.0, "n": 0.0, "fails": 0.0}
+_UNIT_POWERS = (-15, -9, -6, -4, -3, -2, 2, 3, 4, 6, 9, 15)
+
+
+@dataclass
+class Graded:
+    """One graded answer.
+
+    Attributes:
+        name: the answer's name, as ``rigidsym exercise ID --json`` prints it.
+        correct: within the tolerance (None when it could not be graded).
+        slip: the slip word (one of :data:`SLIPS`), or None (right, or not a known slip).
+        expected: the right answer, as the JSON key writes it.
+        detail: one sentence (the tolerance, the slip's edit, or why not graded).
+        missing: no answer given (absent or blank); then ``correct`` is False.
+    """
+
+    name: str
+    correct: bool | None
+    slip: str | None
+    expected: object
+    detail: str
+    missing: bool = False
+
+    def as_dict(self) -> dict:
+        """``{"name", "correct", "missing", "slip", "expected", "detail"}``."""
+        return {"name": self.name, "correct": self.correct, "missing": self.missing,
+                "slip": self.slip, "expected": self.expected, "detail": self.detail}
+
+
+def is_blank(v) -> bool:
+    """A blank answer: absent, ``None``, an empty or all-space string, an empty list."""
+    return v is None or (isinstance(v, str) and not v.strip()) or \
+        (isinstance(v, list | tuple) and not v)
+
+
+def answer_shape(right) -> tuple:
+    """The shape an answer is typed in, for :func:`~.worked_numbers.split_text` (the
+    reader of ``--set``): ``()`` a number, ``(n,)`` a column, ``(r, c)`` a matrix."""
+    if isinstance(right, sp.MatrixBase):
+        return (right.rows,) if right.cols == 1 else (right.rows, right.cols)
+    return ()
+
+
+def _as_array(v, where: str, shape: tuple = ()) -> np.ndarray:
+    """A student's value (number, exact string, nested lists) as a float array; a string
+    for a vector or matrix answer is split as ``--set`` splits it (``0,0,1;1,0,0;0,1,0``)."""
+    if isinstance(v, str) and shape and ("," in v or ";" in v):
+        rows = ";" in v and len(shape) == 1           # a column typed as rows: 1;2;3
+        return _as_array(split_text((shape[0], 1) if rows else shape, v), where)
+    if isinstance(v, str) and v.strip().lower() in _TRUTH:
+        return np.array(_TRUTH[v.strip().lower()])
+    if isinstance(v, bool):
+        return np.array(float(v))
+    if isinstance(v, str):
+        try:
+            return np.array(float(v))      # a decimal: no bounds on a student's slip
+        except ValueError:
+            return np.array(float(read_text(v, where)[0]))
+    if isinstance(v, int | float):
+        return np.array(float(v))
+    if isinstance(v, list | tuple):
+        return np.array([_as_array(x, where) for x in v], dtype=float)
+    raise TypeError(f"{where}: expected a number, an exact string such as 'sqrt(3)/2' or "
+                    f"nested lists of them, got {type(v).__name__}")
+
+
+def _expected(v) -> np.ndarray:
+    if isinstance(v, sp.MatrixBase):
+        return np.array(sp.N(v, 17).tolist(), dtype=float)
+    if v in (sp.true, sp.false):
+        return np.array(float(bool(v)))
+    return np.array(float(sp.N(v, 17)))
+
+
+def _close(a: np.ndarray, b: np.ndarray, scale: float) -> bool:
+    return a.shape == b.shape and bool(np.all(np.abs(a - b) <= RTOL * scale + 1e-12))
+
+
+def _candidates(e: np.ndarray, name: str, extra: list):
+    """(slip, what the edit is, edited answer), in the order of :data:`SLIPS`."""
+    if e.ndim == 2 and e.shape[0] == e.shape[1] > 1 and not np.allclose(e, e.T):
+        yield "transpose", f"{name} transposed", e.T
+    yield "sign", f"-{name}", -e
+    flat = e.reshape(-1)
+    for i in range(flat.size):
+        if flat[i] != 0 and flat.size > 1:
+            f = flat.copy()
+            f[i] = -f[i]
+            yield "sign", f"the sign of entry {i} of {name}", f.reshape(e.shape)
+    for word, detail, value in extra:
+        if word == "sign":
+            yield word, detail, value
+    yield "degrees", f"{name} in degrees for radians", e * 180 / math.pi
+    yield "degrees", f"{name} in radians for degrees", e * math.pi / 180
+    for k in _UNIT_POWERS:
+        yield "unit", f"{name} x 10^{k} (a unit prefix: mm, cm, g, mm^2 for m, m, kg, m^2)", \
+            e * 10.0**k
+    if e.ndim == 2 and min(e.shape) > 1:
+        for i in range(e.shape[0]):
+            for j in range(i + 1, e.shape[0]):
+                f = e.copy()
+                f[[i, j]] = f[[j, i]]
+                yield "swap", f"rows {i} and {j} of {name} exchanged", f
+                g = e.copy()
+                g[:, [i, j]] = g[:, [j, i]]
+                yield "swap", f"columns {i} and {j} of {name} exchanged", g
+    for i in range(flat.size):
+        for j in range(i + 1, flat.size):
+            if flat[i] != flat[j]:
+                f = flat.copy()
+                f[[i, j]] = f[[j, i]]
+                yield "swap", f"entries {i} and {j} of {name} exchanged", f.reshape(e.shape)
+    for word, detail, value in extra:
+        if word != "sign":
+            yield word, detail, value
+
+
+def grade(solution, answers: dict, slips: dict | None = None,
+          replay: bool = True) -> list[Graded]:
+    """Grade ``answers`` (name -> value) against ``solution``'s answers.
+
+    Args:
+        solution: a solved :class:`~rigidsym.course.worked.Solution`.
+        answers: answer name -> a number, an exact string (``"sqrt(3)/2"``) or nested
+            lists of them (a vector as 3 numbers or as a column).
+        slips: answer name -> ``[(slip word, detail, sympy value), ...]``: the
+            exercise's own slips (a term's sign, another reference point); default: its
+            module's ``slips(solution)``.
+        replay: also replay the solution with a slip injected along the way
+            (:mod:`.slips`: ``Q`` for ``Q^T``, mm for m, a sign, frames swapped) when no
+            slip of the final answer explains a wrong one.
+
+    Returns:
+        One :class:`Graded` per answer the solution asks for (its numeric answers, in the
+        solution's order; an answer in words only when given): an answer absent or blank
+        (:func:`is_blank`) is ``missing``, and wrong.
+
+    Raises:
+        ValueError: the solution is not solved (an ill-posed exercise has no answers), or
+            an answer name the solution does not have (the message lists them).
+    """
+    if solution.status != "solved":
+        raise ValueError(f"{solution.id} on these data is {solution.status}: there are no "
+                         f"answers to grade against ({solution.reason})")
+    known = [k for k, v in solution.answers.items() if not isinstance(v, str)]
+    unknown = [k for k in answers if k not in solution.answers]
+    if unknown:
+        raise ValueError(f"answers: {solution.id} has no answer {unknown[0]!r}; its answers "
+                         f"are: {', '.join(known)}")
+    from rigidsym.course.worked import exercise_module
+    from rigidsym.course.worked.render import to_json_value
+
+    module = exercise_module(solution.id)
+    if slips is None:
+        own = getattr(module, "slips", None)
+        slips = own(solution) if own else {}
+    replayed = _Replays(solution) if replay else None
+    out = []
+    for name, right in solution.answers.items():
+        given = answers.get(name)
+        if isinstance(right, str) or not gradeable(right):
+            if name in answers:
+                out.append(Graded(name, None, None, to_json_value(right),
+                                  "an answer in words or a set: not graded by machine"))
+            continue
+        if is_blank(given):
+            out.append(Graded(name, False, None, to_json_value(right),
+                              "missing: no answer given", missing=True))
+            continue
+        if _symbols(right):
+            out.append(_grade_expression(name, given, right))
+            continue
+        out.append(_grade_one(name, given, right, to_json_value(right),
+                              (slips or {}).get(name, []), replayed,
+                              answer_unit(module, name)))
+    return out
+
+
+def gradeable(right) -> bool:
+    """A number, a truth, an expression or a matrix of them (not a set, not words)."""
+    if isinstance(right, sp.MatrixBase):
+        return all(isinstance(x, sp.Expr) for x in right)
+    return right in (sp.true, sp.false) or isinstance(right, sp.Expr)
+
+
+def _symbols(right) -> list:
+    """The free symbols of an answer that is an expression (3.10's W in the angles)."""
+    if right in (sp.true, sp.false):
+        return []
+    return sorted(right.free_symbols, key=str)
+
+
+#: the points at which an expression answer is compared (angles in radians, generic)
+_POINTS = ((0.3, -0.7, 1.1, 0.45), (1.3, 0.4, -0.9, -1.2), (-0.8, 1.7, 0.25, 0.6))
+_FUNCTIONS = {"sin": sp.sin, "cos": sp.cos, "tan": sp.tan, "sqrt": sp.sqrt, "pi": sp.pi,
+              "sec": sp.sec, "csc": sp.csc, "cot": sp.cot}
+
+
+def _parse_expression(text: str, names: dict, where: str) -> sp.Expr:
+    """A student's expression in the answer's own symbols and a few functions: checked
+    character by character and name by name before sympy reads it (nothing else runs)."""
+    import re
+
+    t = text.strip().replace("^", "**")
+    if len(t) > 400 or not re.fullmatch(r"[\w\s+\-*/().]*", t):
+        raise ValueError(f"{where}: {text!r} is not an expression (allowed: numbers, "
+                         f"{', '.join(sorted(names))}, {', '.join(sorted(_FUNCTIONS))}, "
+                         f"+ - * / ^ and brackets)")
+    for n in re.findall(r"[A-Za-z_]\w*", t):
+        if n not in names and n not in _FUNCTIONS:
+            raise ValueError(f"{where}: {n!r} is neither a symbol of the answer "
+                             f"({', '.join(sorted(names))}) nor a known function")
+    if "__" in t:
+        raise ValueError(f"{where}: {text!r} is not an expression")
+    return sp.sympify(t, locals={**_FUNCTIONS, **names})
+
+
+def _grade_expression(name, given, right) -> Graded:
+    """An answer that is an expression (or a matrix of them) in symbols: the student's
+    expression equals it at three generic points within the tolerance; the slips of the
+    final answer are tried as for numbers, at every point alike."""
+    syms = _symbols(right)
+    names = {str(s): s for s in syms}
+    shown = to_json_value_light(right)
+    shape = answer_shape(right)
+    try:
+        g = _expressions(given, shape, names, name)
+        G = np.array([_at(g, syms, pt) for pt in _POINTS])
+    except (ValueError, TypeError, ZeroDivisionError, sp.SympifyError) as exc:
+        return Graded(name, False, None, shown, f"not read: {exc}")
+    E = np.array([_at(right, syms, pt) for pt in _POINTS])
+    if G.size == E.size and G.shape != E.shape:
+        G = G.reshape(E.shape)
+    scale = max(float(np.max(np.abs(E))), 1e-300)
+    tol = (f"equal at {len(_POINTS)} generic values of {', '.join(names)}, within "
+           f"{RTOL:g} x {scale:.3g}")
+    if _close(G, E, scale):
+        return Graded(name, True, None, shown, tol)
+    per_point = [list(_candidates(E[k], name, [])) for k in range(len(_POINTS))]
+    for i, (word, detail, _) in enumerate(per_point[0]):
+        if all(i < len(c) and c[i][:2] == (word, detail)
+               and _close(G[k], c[i][2], max(scale, float(np.max(np.abs(c[i][2])))))
+               for k, c in enumerate(per_point)):
+            return Graded(name, False, word, shown, f"matches {detail}")
+    return Graded(name, False, None, shown, f"not {tol}, and not a known slip")
+
+
+def _expressions(v, shape, names, where):
+    if isinstance(v, str) and shape and ("," in v or ";" in v):
+        rows = ";" in v and len(shape) == 1
+        v = split_text((shape[0], 1) if rows else shape, v)
+    if isinstance(v, list | tuple):
+        return sp.Matrix([_expressions(x, (), names, where) if not isinstance(x, list | tuple)
+                          else [_expressions(y, (), names, where) for y in x] for x in v])
+    if isinstance(v, bool):
+        raise TypeError(f"{where}: expected an expression, got a truth")
+    if isinstance(v, int | float):
+        return sp.Float(v) if isinstance(v, float) else sp.Integer(v)
+    if isinstance(v, str):
+        return _parse_expression(v, names, where)
+    raise TypeError(f"{where}: expected an expression or nested lists of them, got "
+                    f"{type(v).__name__}")
+
+
+def _at(expr, syms, point) -> np.ndarray:
+    vals = {s: point[k % len(point)] for k, s in enumerate(syms)}
+    e = expr.subs(vals) if syms else expr
+    out = np.array(sp.N(e, 17).tolist() if isinstance(e, sp.MatrixBase) else sp.N(e, 17),
+                   dtype=float)
+    return out
+
+
+def to_json_value_light(v):
+    """The expected answer as the key writes it (``str`` of sympy values)."""
+    from rigidsym.course.worked.render import to_json_value
+    return to_json_value(v)
+
+
+class _Replays:
+    """The replays of a solution with a slip along the way, computed once, when first
+    needed (each is an exact solve)."""
+
+    def __init__(self, solution):
+        self.solution, self.done = solution, None
+
+    def __iter__(self):
+        if self.done is None:
+            from rigidsym.course.slips import replays
+            self.done = list(replays(self.solution))
+        return iter(self.done)
+
+
+def _grade_one(name, given, right, shown, extra, replayed=None, unit=None) -> Graded:
+    e = _expected(right)
+    try:
+        given, f, written = unit_off(given, unit, name)
+        g = _as_array(given, name, answer_shape(right)) * f
+    except (ValueError, TypeError) as exc:
+        return Graded(name, False, None, shown, f"not read: {exc}")
+    if g.size == e.size and g.shape != e.shape:
+        g = g.reshape(e.shape)        # a vector as 3 numbers, or as a column
+    scale = max(float(np.max(np.abs(e))) if e.size else 0.0, 1e-300)
+    tol = f"within {RTOL:g} x {scale:.3g} (0.1 % of the largest entry)"
+    if written and written != unit:
+        tol = f"read in {written}, converted to {unit}: {tol}"
+    if _close(g, e, scale):
+        return Graded(name, True, None, shown, tol)
+    extra_f = [(w, d, _expected(v)) for w, d, v in extra]
+    for word, detail, value in _candidates(e, name, extra_f):
+        if _close(g, value, max(scale, float(np.max(np.abs(value))))):
+            return Graded(name, False, word, shown,
+                          f"matches {detail}" + unit_slip(word, value, e, unit, written))
+    for word, detail, answers in replayed or ():
+        value = answers.get(name)
+        if value is None or isinstance(value, str):
+            continue
+        try:
+            v = _expected(value)
+        except TypeError:
+            continue
+        if v.shape == g.shape and _close(g, v, max(scale, float(np.max(np.abs(v))))):
+            return Graded(name, False, word, shown, f"matches the solution with {detail}")
+    return Graded(name, False, None, shown, f"not within the tolerance ({tol}), and not a "
+                  f"known slip")

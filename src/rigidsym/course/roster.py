@@ -1,0 +1,289 @@
+"""A class from a roster: one exam per student, one key, a Moodle export (issue 51 item 1).
+
+``class_exam(spec, roster, out_dir)`` draws, for every student of the roster, the spec's
+problems from the student's own seed (``student_seed``: the spec's seed and the name),
+every drawn problem different from every other student's (a repeat is drawn again), and
+writes::
+
+    DIR/handouts/<student>.html   name, seed and version printed on every page
+    DIR/key.json                  schema 2: per student, the seed, version and each
+                                  problem's data, answers and checks
+    DIR/key.html                  the worked, checked solutions, student by student
+    DIR/answers.csv               the answers template: a row per student, a column
+                                  ``P<k>.<answer>`` per box (fill it, grade it)
+    DIR/moodle.xml                Moodle XML: a Cloze question per student and problem,
+                                  the answers as NUMERICAL parts within 0.1 %
+
+The same spec, roster and seed write the same bytes.
+"""
+
+from __future__ import annotations
+
+import csv
+import hashlib
+import html
+import io
+import json
+import re
+from pathlib import Path
+
+import sympy as sp
+
+from rigidsym.core.files import write_atomic
+from rigidsym.course import exam as _exam
+from rigidsym.course.exam_text import box_label, task
+from rigidsym.course.worked import exercise_module, render_html, solution_record
+
+__all__ = ["class_exam", "read_roster", "student_seed", "version_of"]
+
+
+def read_roster(path: str | Path) -> list[dict]:
+    """The students of a roster CSV: a ``name`` (or ``student``) column, and optional
+    ``id`` and ``email`` columns (kept for the gradebook an LMS imports).
+
+    Returns:
+        ``[{"name", "id", "email"}, ...]`` in the roster's order.
+
+    Raises:
+        ValueError: the file is unreadable, has no ``name``/``student`` column, a row
+            without a name, or a name twice (the message names the roster and the row).
+    """
+    p = Path(path)
+    try:
+        with p.open(newline="", encoding="utf-8-sig") as fh:
+            rows = list(csv.DictReader(fh))
+    except (OSError, csv.Error, UnicodeDecodeError) as exc:
+        raise ValueError(f"--students: cannot read {p}: {exc}") from None
+    cols = {c.strip().lower(): c for c in (rows[0].keys() if rows else []) if c}
+    name_col = cols.get("name") or cols.get("student")
+    if not rows or name_col is None:
+        raise ValueError(f"--students: {p} needs a header row with a 'name' (or 'student') "
+                         f"column and a row per student")
+    out, seen = [], set()
+    for i, r in enumerate(rows, 2):
+        name = (r.get(name_col) or "").strip()
+        if not name:
+            raise ValueError(f"--students: {p} row {i} has no name")
+        if name in seen:
+            raise ValueError(f"--students: {p} row {i}: {name!r} is in the roster twice")
+        seen.add(name)
+        out.append({"name": name, "id": (r.get(cols.get("id", ""), "") or "").strip(),
+                    "email": (r.get(cols.get("email", ""), "") or "").strip()})
+    return out
+
+
+def student_seed(seed: int, name: str) -> int:
+    """The seed of one student's exam: 8 hex digits of SHA-256 of the class seed and the
+    name (``rigidsym exam SPEC --seed`` with it draws the same problems, repeats aside)."""
+    return int(hashlib.sha256(f"{seed}:{name}".encode()).hexdigest()[:8], 16)
+
+
+def version_of(sols: list) -> str:
+    """A short version of an exam: 6 letters (no digit, so no number on the sheet reads
+    as an answer) of a hash of its problems' exercises and data, so a returned sheet is
+    matched to its key."""
+    text = "|".join(f"{s.id}:{_exam.variant_key(s)}" for s in sols)
+    h = int(hashlib.sha256(text.encode()).hexdigest(), 16)
+    return "".join("ABCDEFGHJKLMNPQRSTUVWXYZ"[(h >> (5 * i)) % 24] for i in range(6))
+
+
+def _slug(name: str) -> str:
+    return re.sub(r"[^A-Za-z0-9]+", "_", name).strip("_") or "student"
+
+
+def _head(title: str, st: dict, seed: int, version: str) -> str:
+    who = html.escape(st["name"]) + (f" ({html.escape(st['id'])})" if st["id"] else "")
+    return (f"<p class=\"student\"><b>Student:</b> {who} &nbsp; <b>Seed:</b> {seed} &nbsp; "
+            f"<b>Version:</b> {version}</p>\n")
+
+
+def class_exam(spec, roster: str | Path, out_dir: str | Path,
+               seed: int | None = None) -> dict[str, Path]:
+    """One exam per student of ``roster``, one key, an answers template and a Moodle XML
+    export, in ``out_dir`` (see the module docstring).
+
+    Args:
+        spec: a TOML file path or a dict, as :func:`rigidsym.course.exam.exam` takes.
+        roster: a CSV with a ``name`` (or ``student``) column; ``id``, ``email`` optional.
+        out_dir: the folder to write (made if missing).
+        seed: the class seed (default: the spec's ``seed``, else 0).
+
+    Returns:
+        ``{"handouts": folder, "key_json", "key_html", "answers", "moodle"}``.
+
+    Raises:
+        ValueError: a bad spec or roster, or no new well-posed variant in 50 draws.
+    """
+    import matplotlib
+    matplotlib.use("Agg", force=False)
+    from rigidsym.report.record import document_header
+
+    spec = _exam.read_spec(spec)
+    seed = int(spec.get("seed", 0) if seed is None else seed)
+    title = str(spec.get("title", "Rigid-body mechanics: exercises"))
+    weights = [float(p.get("weight", 1)) for p in spec["problem"]]
+    students = read_roster(roster)
+    out = Path(out_dir)
+    slugs = _unique_slugs(students)
+    seeds = [student_seed(seed, st["name"]) for st in students]
+    slots = _slots(spec)
+
+    def make(i: int, taken: dict | None = None) -> dict:
+        """Student i's exam: drawn (against ``taken``: the draws of the students before
+        i), its handout written; its key record and section, and its drawn data keys."""
+        st, own = students[i], seeds[i]
+        drawn = _exam.drawn_exercises(spec, own, taken)
+        sols = [s for s, _ in drawn]
+        version = version_of(sols)
+        head = _head(title, st, own, version)
+        write_atomic(out / "handouts" / f"{slugs[i]}.html",
+                     _exam.handout_text(f"{title}: {st['name']}", sols, head, columns=True))
+        problems = [dict(solution_record(s), problem=n, spec_problem=k,
+                         weight=weights[k - 1], asked=_exam.asked(s),
+                         labels={a: box_label(s.id, a) for a in _exam.asked(s)})
+                    for n, (s, k) in enumerate(drawn, 1)]
+        return {"record": {"student": st["name"], "id": st["id"], "email": st["email"],
+                           "seed": own, "version": version,
+                           "handout": f"handouts/{slugs[i]}.html", "problems": problems},
+                "section": _key_section(head, sols),
+                "drawn": [(slot, _exam.variant_key(s)) for slot, s in zip(slots, sols, strict=True)
+                          if slot is not None]}
+
+    made = _draw_all(make, len(students))
+    records = [m["record"] for m in made]
+    keys_html = [m["section"] for m in made]
+    columns = {f"P{p['problem']}.{a}": None for r in records for p in r["problems"]
+               for a in p["asked"]}
+    key = {**document_header(), "title": title, "seed": seed,
+           "slip_credit": float(spec.get("slip_credit", 0)), "students": records}
+    return {
+        "handouts": out / "handouts",
+        "key_json": write_atomic(out / "key.json", json.dumps(key, indent=2,
+                                                              ensure_ascii=False) + "\n"),
+        "key_html": write_atomic(out / "key.html", _exam.handout_page(f"{title}: answer key",
+                                                               "\n".join(keys_html))),
+        "answers": write_atomic(out / "answers.csv", _template(students, list(columns))),
+        "moodle": write_atomic(out / "moodle.xml", moodle_xml(title, key)),
+    }
+
+
+def _unique_slugs(students: list[dict]) -> list[str]:
+    """One file name per student, in roster order, each distinct (``"Amy Ames"`` and
+    ``"Amy-Ames"``: two files)."""
+    slugs: list[str] = []
+    for st in students:
+        slug = _slug(st["name"])
+        while slug in slugs:
+            slug += "_"
+        slugs.append(slug)
+    return slugs
+
+
+def _draw_all(make, n: int) -> list[dict]:
+    """``make(i)`` of every student i < n, drawn at once (forked workers: the solves and
+    figures); then, in roster order, a student whose draw repeats an earlier student's is
+    drawn again here against the draws before it (``make(i, taken)``): the same exams as
+    drawing one student after another."""
+    from rigidsym.course.forked import forked_map
+
+    made = forked_map(make, n)
+    taken: dict = {}
+    for i, m in enumerate(made):
+        if any(key in taken.get(slot, ()) for slot, key in m["drawn"]):
+            made[i] = make(i, taken)
+        else:
+            for slot, key in m["drawn"]:
+                taken.setdefault(slot, set()).add(key)
+    return made
+
+
+def _slots(spec: dict) -> list:
+    """The draw slot ``(spec problem, variant)`` of each problem of an exam, in order;
+    ``None`` for a problem on given data (the same for every student)."""
+    out = []
+    for k, p in enumerate(spec["problem"], 1):
+        out += [(k, v) for v in range(int(p["variants"]))] if "variants" in p else [None]
+    return out
+
+
+def _key_section(head: str, sols: list) -> str:
+    parts = [f"<section class=\"problem\">{head}"]
+    for k, s in enumerate(sols, 1):
+        parts.append(f"<h2>Problem {k}</h2>{_exam.data_table(s)}{render_html(s)}")
+    return "".join(parts) + "</section>"
+
+
+def _template(students: list, columns: list) -> str:
+    buf = io.StringIO()
+    w = csv.writer(buf, lineterminator="\n")
+    w.writerow(["student", *columns])
+    for st in students:
+        w.writerow([st["name"]] + [""] * len(columns))
+    return buf.getvalue()
+
+
+def moodle_xml(title: str, key: dict) -> str:
+    """Moodle XML (``<quiz>``): a category per student, a Cloze (embedded answers)
+    question per problem, each entry of each answer a ``NUMERICAL`` part right within
+    0.1 % of the answer's largest entry (the grader's tolerance)."""
+    from rigidsym.course.grading import RTOL
+
+    out = ['<?xml version="1.0" encoding="UTF-8"?>', "<quiz>"]
+    for st in key["students"]:
+        out.append(f"<question type=\"category\"><category><text>$course$/{_x(title)}/"
+                   f"{_x(st['student'])}</text></category></question>")
+        for p in st["problems"]:
+            mod = exercise_module(p["id"])
+            body = [f"<p>{html.escape(task(p['id'], getattr(mod, 'STATEMENT', '')))}</p>",
+                    "<ul>"]
+            body += [f"<li>{html.escape(k)} = {html.escape(_shown(v))}</li>"
+                     for k, v in p["data"].items()]
+            body.append("</ul>")
+            for a in p["asked"]:
+                vals = _floats(p["answers"][a])
+                if vals is None:            # an expression in symbols: read on paper
+                    body.append(f"<p>{html.escape(p['labels'][a])}: (an expression, "
+                                f"graded on paper or by rigidsym grade)</p>")
+                    continue
+                scale = max([abs(v) for v in vals] + [1e-300])
+                parts = " ".join(f"{{1:NUMERICAL:={v!r}:{RTOL * scale:.3g}}}" for v in vals)
+                body.append(f"<p>{html.escape(p['labels'][a])}: {parts}</p>")
+            name = f"{st['student']}: problem {p['problem']} (Exercise {p['id'][2:]})"
+            out.append(f"<question type=\"cloze\"><name><text>{_x(name)}</text></name>"
+                       f"<questiontext format=\"html\"><text><![CDATA[{''.join(body)}]]>"
+                       f"</text></questiontext><generalfeedback><text></text>"
+                       f"</generalfeedback><defaultgrade>{p['weight']:g}</defaultgrade>"
+                       f"<idnumber>{_x(st['student'])}-P{p['problem']}</idnumber></question>")
+    out.append("</quiz>")
+    return "\n".join(out) + "\n"
+
+
+def _floats(v) -> list[float] | None:
+    """An answer of the key as floats (a truth as 1 or 0), or None for an expression."""
+    out = []
+    for x in _flat(v):
+        e = sp.sympify(x)
+        if e in (sp.true, sp.false):
+            out.append(float(bool(e)))
+        elif getattr(e, "is_number", False):
+            out.append(float(sp.N(e, 17)))
+        else:
+            return None
+    return out
+
+
+def _shown(v) -> str:
+    """A datum as the handout shows it: ``[1, -1/20, 0]``."""
+    if isinstance(v, list):
+        return "[" + ", ".join(_shown(x) for x in v) + "]"
+    return str(v)
+
+
+def _x(text: str) -> str:
+    return html.escape(str(text), quote=True)
+
+
+def _flat(v) -> list:
+    if isinstance(v, list):
+        return [x for r in v for x in _flat(r)]
+    return [v]

@@ -1,0 +1,1 @@
+"""rigidsym.kernels.runtime."""

@@ -1,0 +1,113 @@
+"""The checks of a kernel call's inputs (:meth:`rigidsym.kernels.runtime.space.KernelSpace.call`):
+the common keywords, each argument made an array of the right trailing shape (errors name
+the argument), finite and within its kind's constraint (unit vector, rotation: the row of
+:mod:`rigidsym.core.kinds`), and the batch shapes broadcast.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+
+from rigidsym.core import kinds as _kinds
+from rigidsym.kernels.runtime.scale import check_threads
+
+__all__ = ["UNIT_TOL", "ORTHO_TOL", "check_keywords", "as_array", "validate", "batch_shape"]
+
+#: tolerance on | ||e|| - 1 | for unit-vector arguments (e, eta), from the kind table.
+UNIT_TOL = _kinds.get("unit").tol
+#: tolerance on max |Q^T Q - 1| for rotation arguments (and det Q > 0), from the kind table.
+ORTHO_TOL = _kinds.get("rotation").tol
+
+_DTYPE_WORDS = {"b": "bool", "c": "complex", "O": "Python objects", "U": "str", "S": "bytes",
+                "M": "datetime", "m": "timedelta", "V": "structured"}
+
+
+def check_keywords(check: bool, on_singular: str, threads: int | None) -> None:
+    """Validate the common keywords (``out`` is checked against the batch shape later).
+
+    Raises:
+        TypeError: ``check`` not a bool, ``threads`` not an int.
+        ValueError: ``on_singular`` not "raise"/"nan", ``threads`` < 1.
+    """
+    if on_singular != "raise" and on_singular != "nan":
+        raise ValueError(f"on_singular: expected 'raise' or 'nan', got {on_singular!r}")
+    if check is not True and check is not False:
+        raise TypeError(f"check: expected True or False, got {check!r}")
+    if threads is not None:
+        check_threads(threads, "threads")
+
+
+def as_array(x: Any, spec: dict, dtype=np.float64) -> np.ndarray:
+    """``x`` as a float64 array with the trailing shape of ``spec``; errors name the argument.
+
+    Raises:
+        TypeError: str, bytes, arbitrary objects, complex or bool values.
+        ValueError: a ragged nested sequence, a wrong trailing shape.
+    """
+    name = spec["name"]
+    if type(x) is not np.ndarray:
+        if isinstance(x, str | bytes):
+            raise TypeError(f"{name}: expected an array-like of real numbers, "
+                            f"got {type(x).__name__} {x!r:.40}")
+        try:
+            x = np.asarray(x)
+        except ValueError as exc:      # NumPy's message for a ragged nested sequence
+            raise ValueError(f"{name}: expected a rectangular array-like of real numbers "
+                             f"(a ragged nested sequence?): {exc}") from None
+        except Exception as exc:  # noqa: BLE001 - any failure to convert is a type error
+            raise TypeError(f"{name}: expected an array-like of real numbers, "
+                            f"got {type(x).__name__} ({exc})") from None
+    if x.dtype != dtype:
+        kind = x.dtype.kind
+        if kind not in "fiu":
+            what = _DTYPE_WORDS.get(kind, str(x.dtype))
+            raise TypeError(f"{name}: expected real numbers (float or int), got {what} "
+                            f"values (dtype {x.dtype})")
+        x = x.astype(dtype)
+    shape = spec["tshape"]
+    k = len(shape)
+    if x.ndim < k or x.shape[x.ndim - k:] != shape:
+        raise ValueError(f"{name}: expected shape (..., {', '.join(map(str, shape))})"
+                         f"{'' if k else ' (a scalar per sample)'}, got {x.shape}")
+    return x
+
+
+def validate(a: np.ndarray, spec: dict, given=None) -> None:
+    """Finiteness, and the constraint of ``spec["kind"]`` (unit vector, rotation: the check
+    and tolerance of its row in :mod:`rigidsym.core.kinds`), with the tolerance of the dtype
+    ``given`` (the argument's own: float32 values in a float64 call keep the float32 one).
+
+    Raises:
+        ValueError: naming the argument and what was expected.
+    """
+    name, kind = spec["name"], spec["kind"]
+    prec = given if given is not None and given.kind == "f" and given.itemsize < 8 else a.dtype
+    if not np.isfinite(a).all():
+        raise ValueError(f"{name}: non-finite values (NaN or inf); expected finite values")
+    k = _kinds.for_spec(kind, spec["tshape"])
+    if k is not None and k.check is not None:
+        msg = k.check(a, name, k.tolerance(prec))
+        if msg:
+            raise ValueError(msg)
+
+
+def batch_shape(arrs: list[np.ndarray], specs: list[dict]) -> tuple[int, ...]:
+    """The broadcast batch shape; the error names the first argument that does not fit."""
+    shapes = [a.shape[:a.ndim - len(s["tshape"])] for a, s in zip(arrs, specs, strict=True)]
+    try:
+        return np.broadcast_shapes(*shapes)
+    except ValueError:
+        acc: tuple = ()
+        for i, b in enumerate(shapes):
+            try:
+                acc = np.broadcast_shapes(acc, b)
+            except ValueError:
+                # name every argument with a batch so far: which one is wrong is the caller's
+                names = [s["name"] for s, c in zip(specs[:i + 1], shapes, strict=False) if c]
+                raise ValueError(f"{', '.join(names)}: batch shapes do not broadcast ("
+                                 + ", ".join(f"{s['name']} {c}" for s, c in
+                                             zip(specs[:i + 1], shapes, strict=False) if c)
+                                 + ")") from None
+        raise

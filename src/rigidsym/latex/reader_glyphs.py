@@ -1,0 +1,216 @@
+"""The glyph rows of a reader's LaTeX (issue 29 item 4, issue 40): :class:`GlyphReader` parses
+the LaTeX and the models of ``--let`` with one set of glyph overrides: the declarations'
+kinds, the models' shapes, the rows of ``--book``, a module's symbols, the lines of
+``--notation`` (used by :mod:`rigidsym.latex.letting`)."""
+
+from __future__ import annotations
+
+import re
+
+import sympy as sp
+from sympy.matrices.expressions.matexpr import MatrixElement
+
+from rigidsym.core.errors import BadInput
+from rigidsym.latex.lets import KIND_WORDS, Let, kind_of
+from rigidsym.latex.reader import parse_latex
+from rigidsym.latex.shapes import LatexError, matrix_shape, name_from_key
+from rigidsym.latex.table import Glyph, glyph_table, lookup
+from rigidsym.latex.transformer.book_notations import TIMED
+
+__all__: list[str] = []
+
+def _in(section: str, book: str) -> bool:
+    return book == "3" or section == book or section.startswith(book + ".")
+
+
+def _book_rows(key: str, book: str) -> list[Glyph]:
+    """The rows of a glyph within a section's sub-sections (when none is on its chain)."""
+    rows = [g for g in glyph_table() if g.latex == key and g.section != "*"
+            and _in(g.section, book)]
+    distinct = {(g.name, g.shape, g.kind, g.definition): g for g in rows}
+    return list(distinct.values())
+
+
+class GlyphReader:
+    """Parses the LaTeX and the models with one set of glyph overrides."""
+
+    def __init__(self, lets: list[Let], book: str | None, lend: dict, notation=None):
+        self.book, self.lend, self.notation = book, lend, notation
+        self.over: dict[str, Glyph] = {}
+        self.declared: dict[str, Let] = {x.key: x for x in lets}
+        self.notes: list[str] = []
+        self.used: set[str] = set()
+        self.glyphs: dict[str, Glyph] = {}
+        self.models: dict = {}  # the notation's models of the glyphs used
+        self.model_rhs: dict = {}  # every model's value by its symbol's name (for d/dt)
+        self.by_notation: set[str] = set()  # the glyphs the notation declares
+        self.in_models: set[str] = set()  # the glyphs of the notation's models used
+        self.functions: dict[str, Let] = {}  # the --let functions by key (issue 52)
+        self.expanders: dict = {}  # key -> expand(args) for the parser
+        self.choices: dict[str, str] = {}  # X(y): "product" or "apply" (issue 52, item 2)
+        self.choice_points: dict[str, str] = {}  # the X(y) met, by key: the argument
+        for x in lets + [x for x in (notation.lets if notation else ())
+                         if x.kind and x.key not in self.declared]:
+            if x.kind:
+                self.declared.setdefault(x.key, x)
+                if self.declared[x.key] is not x:
+                    continue
+                shape, _, words = kind_of(x.kind, x.text)
+                if re.search(r"\(\s*t\s*\)\s*$", x.name):  # NAME(t): a function of time
+                    words += TIMED
+                self.over[x.key] = Glyph(x.key, "*", self._name(x.key), shape, "let", words)
+                if x not in lets:
+                    self.by_notation.add(x.key)
+
+    def _name(self, key: str) -> str:
+        if self.book:
+            g = lookup(key, self.book)
+            if g is not None:
+                return g.name
+        return name_from_key(key)
+
+    def _extra(self, glyphs: dict) -> dict[str, Glyph]:
+        """Rows the first reading could not know: a book row of a sub-section, a module's
+        symbol of that name."""
+        new = {}
+        for key, g in glyphs.items():
+            if key in self.over:
+                continue
+            x = self.notation.let_for(key) if self.notation and g.kind == "free" \
+                and key not in self.declared else None
+            if x is not None:  # a line of --notation: a kind, or a model in the book's notation
+                new[key] = self._notation_glyph(x)
+                continue
+            if self.book and g.kind == "free":  # no row on the section's chain
+                rows = _book_rows(key, self.book)
+                if len(rows) > 1:
+                    where = "; ".join(f"{r.name}, {r.meaning} ({r.section})" for r in rows)
+                    raise BadInput(f"--book {self.book}: {key} is ambiguous there ({where}): "
+                                   f"say which with --let '{key}: KIND' or a --book of one "
+                                   f"sub-section")
+                if rows:
+                    new[key] = rows[0]
+                    continue
+            name = g.name
+            if name in self.lend and g.kind == "free":
+                sym, _ = self.lend[name]
+                shape = tuple(sym.shape) if isinstance(sym, sp.MatrixSymbol) else ()
+                new[key] = Glyph(key, "*", name, shape, "module", "lent by --module")
+        return new
+
+    def _notation_glyph(self, x: Let) -> Glyph:
+        self.declared[x.key] = x
+        self.by_notation.add(x.key)
+        if x.kind:
+            shape, _, words = kind_of(x.kind, x.text)
+            return Glyph(x.key, "*", self._name(x.key), shape, "let", words)
+        p = self.parse(f"{x.name} = {x.latex}", f"--notation {self.notation.name}: '{x.text}'")
+        rhs = p.chains[0][1]
+        self.in_models |= set(p.glyphs) - {x.key}
+        g = Glyph(x.key, "*", self._name(x.key), matrix_shape(rhs) or (), "model", "--notation")
+        self.models[glyph_symbol(g)] = rhs
+        self.model_rhs[g.name] = rhs
+        return g
+
+    def parse(self, text: str, what: str, over: dict | None = None, record: bool = True):
+        """``text`` parsed with the overrides (``over`` on top of them: a function's
+        parameters), the ``--let`` functions and the rows the first reading could not know;
+        its glyphs recorded as used unless ``record`` is false."""
+        for _ in range(4):
+            try:
+                p = parse_latex(text, self.book, {**self.over, **(over or {})}, reader=True,
+                                functions=self.expanders, choices=self.choices,
+                                models=self.model_rhs)
+            except LatexError as exc:
+                self.choice_points.update(getattr(exc, "choice_points", {}))
+                extra = self._extra(exc.glyphs) if exc.construct == "shapes" else {}
+                extra = {k: g for k, g in extra.items() if k not in (over or {})}
+                if extra:
+                    self.over.update(extra)
+                    continue
+                raise self._hint(exc, what) from None
+            extra = {k: g for k, g in self._extra(p.glyphs).items() if k not in (over or {})}
+            if not extra:
+                self.choice_points.update(p.choice_points)
+                if record:
+                    self.used.update(p.glyphs)
+                    self.glyphs.update(p.glyphs)
+                return p
+            self.over.update(extra)
+        raise LatexError(f"{what}: the glyphs' shapes do not settle", "shapes")
+
+    # ---- --let functions (issue 52): S(\mathbf{a}) = [\mathbf{a}]_\times
+    def add_function(self, x: Let) -> None:
+        """Declare the ``--let`` function ``x`` (``NAME(params) = LATEX``): each application
+        substitutes its arguments (:meth:`expand`)."""
+        self.functions[x.key] = x
+        self.expanders[x.key] = lambda args, x=x: self.expand(x, args)
+        self.over.setdefault(x.key, Glyph(x.key, "*", self._name(x.key), (), "function",
+                                          f"--let function of {', '.join(x.params)}"))
+
+    def expand(self, x: Let, args: list):
+        """``x`` applied to ``args``: its body read with each parameter of the argument's
+        shape, the arguments substituted; ``(value, parameters)``."""
+        from rigidsym.printing import notation
+
+        call = f"{x.key}({', '.join(notation.text(a) for a in args)})"
+        if len(args) != len(x.params):
+            raise LatexError(f"{call}: {x.key} is a function of {len(x.params)} parameter"
+                             f"{'s' if len(x.params) != 1 else ''} (--let '{x.text}'), "
+                             f"applied to {len(args)}", "function")
+        over, subs = {}, {}
+        for pk, a in zip(x.param_keys, args, strict=True):
+            shape = tuple(matrix_shape(a) or ())
+            d = self.declared.get(pk)
+            if d is not None and d.kind and tuple(kind_of(d.kind, d.text)[0]) != shape:
+                raise LatexError(f"{call}: the parameter {pk} of {x.key} is declared "
+                                 f"'{d.text}', the argument {notation.text(a)} is "
+                                 f"{_shape_words(shape)}", "shapes")
+            g = Glyph(pk, "*", f"{self._name(x.key)}⟨{self._name(pk)}⟩", shape, "param",
+                      f"parameter of {x.key}")
+            over[pk] = g
+            subs[glyph_symbol(g)] = a
+        p = self.parse(f"{x.name} = {x.latex}", f"--let '{x.text}'", over, record=False)
+        for k, g in p.glyphs.items():
+            if k not in over and k != x.key:
+                self.used.add(k)
+                self.glyphs[k] = g
+                self.in_models.add(k)
+        self.model_readings(x, p.readings)
+        v = p.chains[0][1].xreplace(subs)
+        # an entry of a parameter (q_{4:4}) at an argument that is no symbol (-q, a bmatrix):
+        # xreplace leaves (-q)[3, 0] unevaluated, which no later stage reads; index it now
+        return v.replace(lambda e: isinstance(e, MatrixElement)
+                         and not isinstance(e.parent, sp.MatrixSymbol),
+                         lambda e: e.parent[e.i, e.j]), x.params
+
+    def model_readings(self, x: Let, readings: list[str]) -> None:
+        """The readings of a ``--let`` model, printed with the others (issue 52: before, a
+        bracket read inside a model was never said)."""
+        for r in readings:
+            note = f"in --let '{x.text}': {r}"
+            if note not in self.notes:
+                self.notes.append(note)
+
+    def _hint(self, exc: LatexError, what: str) -> LatexError:
+        msg = str(exc)
+        if what != "the LaTeX":
+            msg = f"{what}: {msg}"
+        free = [k for k, g in exc.glyphs.items() if g.kind == "free" and k not in self.over]
+        if exc.construct == "shapes" and free:
+            msg = (f"{msg.split(' (declare the shapes')[0]}; its meaning depends on the shape "
+                   f"of {', '.join(free)}, which no --let declares: add e.g. --let "
+                   f"'{free[0]}: KIND' (KIND one of {', '.join(KIND_WORDS)})")
+        out = LatexError(msg, exc.construct)
+        out.glyphs = exc.glyphs
+        return out
+
+
+def _shape_words(shape) -> str:
+    if not shape:
+        return "a scalar"
+    return f"a {shape[0]}-vector" if shape[1] == 1 else f"a {shape[0]}×{shape[1]} matrix"
+
+
+def glyph_symbol(g: Glyph):
+    return sp.MatrixSymbol(g.name, *g.shape) if g.shape else sp.Symbol(g.name, real=True)

@@ -1,0 +1,400 @@
+"""The notations of the field's books in a reader's LaTeX (issue 40, item 3): transformer
+rules of ``grammar.lark`` for constructs the chapter does not print, each read onto a word
+of :mod:`rigidsym.declare` (never re-implemented here).
+
+==========================================================  ====================================
+LaTeX                                                       reading
+==========================================================  ====================================
+``X^\\top``, ``X^\\mathsf{T}``, ``X^{T}``, ``X^\\intercal``   the transpose
+``x^\\wedge``, ``X^\\vee`` (MLS, Barfoot, Solà)                ``hat``, ``vee``; ``a \\wedge b`` is
+                                                            refused (no exterior product)
+``\\xi^\\curlywedge`` (Barfoot)                               ``ad`` of a 6-vector
+``{}^B X_A^{*}``, ``{}^B X_A^{-T}`` (Featherstone)            the inverse transpose of a
+                                                            ``spatial transform`` (``X^*``
+                                                            only); ``A^{-T}`` of another
+                                                            square matrix: ``(A^{-1})^T``
+``v \\times m``, ``v \\times^* f``, ``v\\times`` (RBDA 2.9)    crm, crf of a 6-vector; of a
+                                                            3-vector before a matrix: CPM
+``{}^A_B R``, ``{}^A\\mathbf{R}_B`` (Craig, Corke)             frame indices, part of the name
+``\\left\\| x \\right\\|``, ``\\lVert x \\rVert``                  the norm of a vector expression
+``\\left| x \\right|``                                         abs of a scalar, norm of a vector
+``\\operatorname{diag}(a, b, c)``                             the diagonal (block) matrix
+``\\cot``, ``\\sec``, ``\\csc``                                 cos/sin, 1/cos, 1/sin
+``, R \\in SO(3)``, ``\\quad \\forall \\theta``                  a declaration (checked against
+                                                            the ``--let`` kinds; noted)
+==========================================================  ====================================
+"""
+
+from __future__ import annotations
+
+import re
+
+import lark
+import sympy as sp
+
+from rigidsym.algebra import motions
+from rigidsym.algebra.lie import LieOp
+from rigidsym.algebra.operators import Cpm, Cross
+from rigidsym.latex.shapes import (
+    LatexError,
+    as_block,
+    as_scalar,
+    fit_blocks,
+    matrix_shape,
+    shape_words,
+)
+from rigidsym.latex.table import Glyph
+from rigidsym.latex.transformer import products as chains
+
+__all__: list[str] = []
+
+#: how a --let NAME(t): KIND marks its glyph a function of time (read by d/dt and \\dot)
+TIMED = ", a function of time t"
+_TRANSPOSE = {"T", "\\top", "\\intercal", "\\mathsf{T}", "\\mathrm{T}"}
+SETS = {"SO(3)": ((3, 3), "rotation"), "SE(3)": ((4, 4), "transform"),
+        "so(3)": ((3, 3), "so(3)"), "se(3)": ((4, 4), "se(3)")}
+
+
+def sup_word(sup: str) -> str:
+    """A superscript in one spelling: ``T`` (every transpose), ``-T``, ``wedge``, ``vee``,
+    ``curlywedge``, ``*``, or the integer as written."""
+    s = "".join(sup.split())
+    if s in _TRANSPOSE:
+        return "T"
+    if s.startswith("-") and s[1:] in _TRANSPOSE:
+        return "-T"
+    if s in ("*", "\\ast"):
+        return "*"
+    if s in ("\\wedge", "\\vee", "\\curlywedge"):
+        return s[1:]
+    return s
+
+
+def index_key(token: str) -> str:
+    """The canonical spelling of a left index (``{}^A_B`` -> ``{}^{A}_{B}``)."""
+    parts = dict(re.findall(r"([\^_])\s*(\{[^{}]*\}|[A-Za-z0-9])", token))
+    out = "{}"
+    for mark in ("^", "_"):
+        if mark in parts:
+            out += mark + "{" + parts[mark].strip("{}").strip() + "}"
+    return out
+
+
+def free_symbols_of(v) -> set:
+    """The symbols and matrix symbols of a model's value."""
+    if not isinstance(v, sp.Basic):
+        return set()
+    return set(v.atoms(sp.MatrixSymbol)) | set(v.atoms(sp.Symbol))
+
+
+class BookRules:
+    """Transformer rules of the books' constructs (a mixin of the parser's ``_Build``: it
+    provides ``_val``, ``_note``, ``glyphs``, ``overrides``, ``readings`` and ``made``)."""
+
+    # ---- superscripts
+    def book_power(self, x, sup: str):
+        """``x^sup`` for the superscripts of the books; ``None`` for a power the chapter's
+        rule reads (an integer, ``T``)."""
+        if sup == "wedge":
+            if matrix_shape(x) not in ((3, 1), (6, 1)):
+                raise LatexError(f"^\\wedge of {shape_words(x)}: expected a 3-vector (its so(3) "
+                                 f"matrix) or a 6-vector (its se(3) matrix)", "shapes")
+            self._note("x^\\wedge: the hat, so(3) of a 3-vector, se(3) of a 6-vector [w; v] "
+                       "(MLS (2.4), Barfoot (7.7))")
+            return motions.hat(x)
+        if sup == "vee":
+            if matrix_shape(x) not in ((3, 3), (4, 4)):
+                raise LatexError(f"^\\vee of {shape_words(x)}: expected a 3x3 (so(3)) or 4x4 "
+                                 f"(se(3)) matrix", "shapes")
+            return motions.vee(x)
+        if sup == "curlywedge":
+            if matrix_shape(x) != (6, 1):
+                raise LatexError(f"^\\curlywedge of {shape_words(x)}: expected a 6-vector",
+                                 "shapes")
+            return motions.ad(x)
+        if sup == "-T" and not self._spatial(x):
+            return self._inverse_transpose(x)
+        if sup in ("*", "-T"):
+            spelt = "^{*}" if sup == "*" else "^{-T}"
+            if not self._spatial(x):
+                raise LatexError(f"X{spelt} is Featherstone's dual of a spatial transform: "
+                                 f"{shape_words(x)}{self._named(x)} is not one (declare it with "
+                                 f"--let 'X: spatial transform')", "shapes")
+            self._note(f"X{spelt}: the dual (inverse transpose) of a spatial transform "
+                       f"(Featherstone (2.25))")
+            return PluckerDual(x)
+        return None
+
+    def _inverse_transpose(self, x):
+        """``X^{-T}`` of a square matrix other than a spatial transform: ``(X^{-1})^T``, the
+        inverse of the transpose (the same matrix: TeX's and every book's reading); of a
+        scalar or a non-square matrix refused, never a power of a scalar."""
+        s = matrix_shape(x)
+        if s is None or s[0] != s[1] or s == (1, 1):
+            raise LatexError(f"^{{-T}} of {shape_words(x)}: expected a square matrix (its inverse "
+                             f"transpose, (X^{{-1}})^T)", "shapes")
+        self._note("X^{-T}: the inverse transpose (X^{-1})^T")
+        return (x.inv() if isinstance(x, sp.MatrixBase) else x.inverse()).T
+
+    def _spatial(self, x) -> bool:
+        if not isinstance(x, sp.MatrixSymbol) or matrix_shape(x) != (6, 6):
+            return False
+        g = next((g for g in self.glyphs.values() if g.name == x.name), None)
+        return g is not None and "spatial transform" in (g.meaning or "")
+
+    # ---- Featherstone's spatial cross products
+    def cross(self, items):
+        a, b = (self._val(i) for i in items)
+        sa, sb = matrix_shape(a), matrix_shape(b)
+        if sa == (3, 1) and sb == (3, 1):
+            from rigidsym.algebra.operators import Cross
+
+            return Cross(a, b)
+        if sa in ((3, 1), (6, 1)) and sb is not None and sb[0] == sa[0]:
+            return self._cross_matrix(a, dual=False) * b
+        raise LatexError(f"\\times between {shape_words(a)} and {shape_words(b)}: expected two "
+                         f"3-vectors (the cross product), two 6-vectors (Featherstone's "
+                         f"spatial cross product) or a vector before a matrix", "shapes")
+
+    def dot_cross(self, items):
+        """``x \\cdot y \\times z`` (Goldstein's, Kane's triple product), by the shapes
+        (rigidsym.latex.transformer.products, as the two below)."""
+        return chains.mixed(self, items, "dot")
+
+    def cross_dot(self, items):
+        return chains.mixed(self, items, "cross")
+
+    def dot_chain(self, items):
+        return chains.dot_chain(self, items)
+
+    def cross_dual(self, items):
+        a, b = (self._val(i) for i in _content(items))
+        if matrix_shape(a) != (6, 1) or matrix_shape(b) is None or matrix_shape(b)[0] != 6:
+            raise LatexError(f"\\times^* between {shape_words(a)} and {shape_words(b)}: "
+                             f"expected two 6-vectors (Featherstone's v \\times^* f)", "shapes")
+        return self._cross_matrix(a, dual=True) * b
+
+    def cross_op(self, items):
+        a, tok = self._val(items[0]), str(items[1])
+        return self._cross_matrix(a, dual="*" in tok)
+
+    def _cross_matrix(self, a, dual: bool):
+        s = matrix_shape(a)
+        if s == (3, 1) and not dual:
+            self._note("r\\times: the cross-product matrix CPM(r)")
+            return Cpm(a)
+        if s == (6, 1):
+            self._note("v\\times, v\\times^*: Featherstone's spatial cross products crm(v), "
+                       "crf(v) = -crm(v)^T (RBDA (2.31)-(2.33))")
+            return -motions.ad(a).T if dual else motions.ad(a)
+        op = "\\times^*" if dual else "\\times"
+        raise LatexError(f"{op} as an operator of {shape_words(a)}: expected a 6-vector (or a "
+                         f"3-vector for \\times)", "shapes")
+
+    def wedge(self, items):
+        raise LatexError("a \\wedge b: the exterior product is not read; write a^\\wedge b "
+                         "for the hat of a times b, or a \\times b", "unknown macro \\wedge")
+
+    # ---- norms, bars, diag
+    def norm(self, items):
+        x = self._val(_content(items)[0])
+        if matrix_shape(x) is None or matrix_shape(x)[1] != 1:
+            raise LatexError(f"\\|...\\| of {shape_words(x)}: expected a vector", "shapes")
+        return sp.sqrt(as_scalar(x.T * x))
+
+    def abs_bars(self, items):
+        x = as_scalar(self._val(_content(items)[0]))
+        if matrix_shape(x) is None:
+            return sp.Abs(x)
+        if matrix_shape(x)[1] == 1:
+            self._note("|x| of a vector: its magnitude (Craig's |P|)")
+            return sp.sqrt(as_scalar(x.T * x))
+        raise LatexError(f"|...| of {shape_words(x)}: write \\det(...) for a determinant",
+                         "shapes")
+
+    def diag(self, items):
+        xs = [self._val(i) for i in _content(items)]
+        rows = [[x if i == j else 0 for j in range(len(xs))] for i, x in enumerate(xs)]
+        if all(matrix_shape(x) is None for x in xs):
+            return sp.ImmutableMatrix(rows)
+        return self.matrix(rows)
+
+    # ---- matrices (the chapter's, and a reader's [R d; 0 1] whose 0 is a block)
+    def matrix(self, items):
+        rows = [r for r in items if isinstance(r, list)]
+        if self.reader and len(rows) > 1 and len({len(r) for r in rows}) == 1 \
+                and all(matrix_shape(c) is None for r in rows for c in r):
+            # a reader's matrix of scalars is one matrix, printed as one (Craig's R_K(theta),
+            # read as 9 blocks of 1 x 1, was printed block by block; the chapter's parses
+            # stay as recorded, tests/test_latex_parses.py)
+            return sp.ImmutableMatrix([[self._val(c) for c in r] for r in rows])
+        if self.reader and any(matrix_shape(c) for r in rows for c in r):  # [R d; 0 1]: 0 a block
+            rows = [[sp.ZeroMatrix(1, 1) if c == 0 else c for c in r] for r in rows]
+        cells = fit_blocks([[as_block(c) for c in row] for row in rows])
+        try:
+            return sp.BlockMatrix(cells) if any(len(r) > 1 for r in cells) or len(cells) > 1 \
+                else cells[0][0]
+        except ValueError as exc:
+            raise LatexError(f"a matrix whose blocks do not fit: {exc}", "shapes") from exc
+
+    def row(self, items):
+        return [self._val(i) for i in items if not isinstance(i, lark.Token)]
+
+    # ---- d/dt of the symbols declared functions of time (--let 'X(t): KIND')
+    def timed(self, key: str) -> bool:
+        g = self.overrides.get(key)
+        return g is not None and (g.meaning or "").endswith(TIMED)
+
+    def velocity(self, key: str, value):
+        """``\\dot X`` of a symbol declared a function of time: a rotation's ``X [w_X]``, a
+        transform's ``X [V_X]`` (w_X, V_X free: the body velocity), else a free symbol of
+        X's shape (``\\dot\\theta``)."""
+        g = self.overrides[key]
+        self.glyphs[key] = g
+        dkey = f"\\dot{{{key}}}"
+        if g.shape in ((3, 3), (4, 4)) and g.meaning.startswith(("rotation", "homogeneous")):
+            n = 3 if g.shape == (3, 3) else 6
+            w = sp.MatrixSymbol(f"{g.name}_w", n, 1)
+            self.glyphs[f"{key}_{{w}}"] = Glyph(f"{key}_{{w}}", "*", w.name, (n, 1), "free",
+                                                 "body velocity", "")
+            self._note(f"{dkey} = {g.name} [{w.name}]: the time derivative of a "
+                       f"{g.meaning.split(',')[0]} ({w.name} its body velocity, free)")
+            return value * motions.hat(w)
+        if dkey not in self.glyphs:
+            self._note(f"{dkey}: the time derivative of {key} (a function of time, free)")
+        d = sp.Symbol(f"{g.name}dot", real=True) if not g.shape else \
+            sp.MatrixSymbol(f"{g.name}dot", *g.shape)
+        self.glyphs[dkey] = Glyph(dkey, "*", d.name, g.shape, "free",
+                                  f"the time derivative of {key}", "")
+        return d
+
+    def models_of(self, names: set[str]) -> dict:
+        """The models read so far whose values mention a symbol named in ``names``,
+        directly or through another model, by name: their values (issue 52: ``Y = Z``,
+        ``Z = (\\theta)`` depends on ``\\theta`` as ``\\theta`` does)."""
+        out: dict = {}
+        grew = True
+        while grew:
+            grew = False
+            for name, v in getattr(self, "model_rhs", {}).items():
+                if name not in out and name not in names and any(
+                        a.name in names or a.name in out for a in free_symbols_of(v)):
+                    out[name] = v
+                    grew = True
+        return out
+
+    def time_derivative(self, x):
+        """d/dt of an expression: the product rule over its matrix operations, the chain
+        rule for scalars, each timed symbol's :meth:`velocity`; a symbol not declared a
+        function of time is constant."""
+        timed = {g.name: k for k, g in self.overrides.items() if self.timed(k)}
+        if not timed:
+            raise LatexError("d/dt: no symbol is declared a function of time; declare one "
+                             "with --let 'X(t): KIND' (\\dot{X} is then its derivative)",
+                             "unknown macro d/dt")
+        self._note("d/dt: the product and chain rules over the symbols declared functions "
+                   "of time")
+        self._moving = self.models_of(set(timed))  # models of functions of time
+        return self._ddt(x, timed)
+
+    def _ddt(self, x, timed):
+        """d/dt of ``x``; a model whose value mentions a function of time (``--let 'Y =
+        \\theta'``, ``\\theta(t)``) by its value's d/dt (issue 52)."""
+        s = matrix_shape(x)
+        if isinstance(x, sp.MatrixSymbol):
+            if x.name in self._moving:  # a model of a function of time: its value's d/dt
+                return self._ddt(self._moving[x.name], timed)
+            return self.velocity(timed[x.name], x) if x.name in timed else sp.ZeroMatrix(*s)
+        if s is None and sp.sympify(x).atoms(sp.Trace):
+            # a·b and aᵀ M b are 1×1 traces: d/dt of each trace is the trace of the d/dt of
+            # its argument (product rule inside), the scalar around them by the chain rule
+            traces = sorted(sp.sympify(x).atoms(sp.Trace), key=sp.default_sort_key)
+            stand = {t: sp.Dummy(f"tr{i}") for i, t in enumerate(traces)}
+            y = sp.sympify(x).xreplace(stand)
+            out = self._ddt(y, timed)
+            for t, d in stand.items():
+                dt = self._ddt(t.arg, timed)
+                if not isinstance(dt, sp.ZeroMatrix) and dt != 0:
+                    out += sp.diff(y, d) * sp.Trace(dt)
+            return out.xreplace({d: t for t, d in stand.items()})
+        if s is None:
+            syms = [a for a in sp.sympify(x).free_symbols if a.name in timed]
+            if any(isinstance(a, sp.MatrixSymbol) for a in sp.sympify(x).free_symbols
+                   if a.name in timed) or sp.sympify(x).atoms(sp.MatrixExpr):
+                raise LatexError("d/dt of a scalar made of matrices: write the product out",
+                                 "shapes")
+            moving = [a for a in sp.sympify(x).free_symbols if a.name in self._moving]
+            return sum((sp.diff(x, a) * self.velocity(timed[a.name], a) for a in syms),
+                       sp.Integer(0)) + sum(  # the chain rule through a scalar model
+                (sp.diff(x, a) * self._ddt(self._moving[a.name], timed) for a in moving),
+                sp.Integer(0))
+        if isinstance(x, sp.MatAdd):
+            return sp.MatAdd(*[self._ddt(a, timed) for a in x.args])
+        if isinstance(x, sp.MatMul):
+            terms = []
+            for i, a in enumerate(x.args):
+                da = self._ddt(a, timed)
+                if da != 0 and not isinstance(da, sp.ZeroMatrix):
+                    terms.append(sp.MatMul(*x.args[:i], da, *x.args[i + 1:]))
+            return sp.MatAdd(*terms) if terms else sp.ZeroMatrix(*s)
+        if isinstance(x, sp.Transpose):
+            return self._ddt(x.arg, timed).T
+        if isinstance(x, sp.Inverse):
+            return -x * self._ddt(x.arg, timed) * x
+        if isinstance(x, sp.MatrixBase):
+            return x.applyfunc(lambda e: self._ddt(e, timed))
+        if isinstance(x, Cross):  # the product rule: ȧ × b + a × ḃ
+            a, b = x.args
+            da, db = self._ddt(a, timed), self._ddt(b, timed)
+            terms = [t for t, d in ((Cross(da, b), da), (Cross(a, db), db))
+                     if not isinstance(d, sp.ZeroMatrix)]
+            return sp.MatAdd(*terms) if terms else sp.ZeroMatrix(*s)
+        if isinstance(x, sp.ZeroMatrix | sp.Identity):
+            return sp.ZeroMatrix(*s)
+        raise LatexError(f"d/dt of {shape_words(x)} built by {type(x).__name__}: write it as "
+                         f"products and sums of the symbols", "shapes")
+
+    # ---- a trailing declaration
+    def declared(self, token: str):
+        """``R \\in SO(3)``, ``\\forall \\theta``: a note; a set whose shape contradicts the
+        symbol's is an error."""
+        token = re.sub(r"\\q?quad\b", " ", token)
+        text = " ".join(token.split())
+        self._note(f"declaration: {text}")
+        m = re.search(r"\\in\s*(SO\(3\)|SE\(3\)|so\(3\)|se\(3\))", token)
+        if not m:
+            return
+        shape, kind = SETS[m.group(1)]
+        names = re.sub(r"\\forall\b|\\in\b.*$", "", token).strip(" ,")
+        names = re.sub(r"\\(boldsymbol|bm)\s*\{([A-Za-z])\}", r"\\mathbf{\2}", names)
+        for k, g in self.glyphs.items():
+            if k == names and g.shape != shape:
+                has = f"{g.shape[0]}x{g.shape[1]}" if g.shape else "a scalar"
+                raise LatexError(f"{text}: {k} is {has}; a {kind} is {shape[0]}x{shape[1]} "
+                                 f"(--let '{k}: {kind}')", "shapes")
+
+
+class PluckerDual(LieOp):
+    """``X^*`` of a spatial transform ``X = [E 0; B E]`` (E a rotation; Featherstone
+    (2.25)): ``X^{-T} = [E, -E Bᵀ E; 0, E]``, the inverse by the blocks, exact for the kind
+    and no 6x6 inversion for the engine; printed as the reader wrote it, ``X*``."""
+    label, tex = "dual", r"\mathrm{dual}"
+
+    @classmethod
+    def shape_of(cls, shapes):
+        if tuple(shapes) != ((6, 6),):
+            raise ValueError(f"X^*: an operand of shape {shapes} is no spatial transform")
+        return (6, 6)
+
+    def value(self, X):
+        E, B = sp.Matrix(X)[:3, :3], sp.Matrix(X)[3:, :3]
+        inv = sp.zeros(6, 6)
+        inv[:3, :3], inv[3:, 3:], inv[3:, :3] = E.T, E.T, -E.T * B * E.T
+        return inv.T
+
+    def _sympystr(self, printer):
+        return f"{printer._print(self.args[0])}*"
+
+
+def _content(items):
+    return [i for i in items if not isinstance(i, lark.Token)]

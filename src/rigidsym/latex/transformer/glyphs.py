@@ -1,0 +1,208 @@
+"""The glyph rules of the LaTeX reader (a mixin of :mod:`rigidsym.latex.transformer.chapter`'s
+``_Build``): a glyph's key (``\\mathbf{Q}``, ``\\dot{\\mathbf{p}}_{1}``, ``{}^B X_A``), its
+sympy symbol named by the glyph table (:mod:`rigidsym.latex.table`) or by a reader's
+declarations, the sized zeros and identities, ``t`` as time, and ranges of entries
+(``\\mathbf{q}_{1:3}``).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import lark
+import sympy as sp
+
+from rigidsym.latex.shapes import LatexError, default_glyph, shape_words
+from rigidsym.latex.table import lookup
+from rigidsym.latex.transformer.book_notations import index_key
+from rigidsym.latex.transformer.meanings import alternatives
+
+__all__: list[str] = []
+
+
+TIME = sp.Symbol("t", real=True)  # the plain letter t: time, the argument of p(t)
+#: the wide accents, which TeX only draws wider over several letters: the same glyph
+_WIDE = {"\\widehat": "\\hat", "\\widetilde": "\\tilde"}
+
+
+def wide(accent: str) -> str:
+    """``\\widehat`` as ``\\hat``, ``\\widetilde`` as ``\\tilde``; any other accent as given."""
+    return _WIDE.get(accent, accent)
+
+
+class GlyphRules:
+    """Transformer rules of the glyphs (a mixin of the parser's ``_Build``: it provides
+    ``section``, ``overrides``, ``glyphs``, ``readings``, and the rules it calls:
+    ``_sized`` and ``sized_zero`` of :class:`~rigidsym.latex.transformer.meanings.MeaningRules`,
+    ``timed`` and ``velocity`` of :class:`~rigidsym.latex.transformer.book_notations.BookRules`)."""
+
+    def base(self, items):
+        if len(items) == 2:
+            bold, letter = items
+            return ("bold", str(letter))
+        return ("plain", str(items[0]))
+
+    def zero(self, _):
+        return ("zero", "0")
+
+    def one(self, _):
+        return ("one", "1")
+
+    def subscript(self, items):
+        parts = [str(i) for i in items]  # a space after a Greek letter before a letter
+        return ("sub", "".join(p + " " if p.startswith("\\") and p[-1].isalpha() and
+                               k + 1 < len(parts) and parts[k + 1][:1].isalpha() else p
+                               for k, p in enumerate(parts)))
+
+    def times(self, _):
+        return "\\times "
+
+    def slash(self, _):
+        return "/"
+
+    def calsub(self, items):
+        return "\\mathcal{" + str(items[0]) + "}" + (str(items[1]) if len(items) > 1 else "")
+
+    def _key(self, base, rest, accent=None, pre="") -> str:
+        kind, letter = base
+        core = {"bold": f"\\mathbf{{{letter}}}" if not letter.startswith("\\")
+                else f"\\boldsymbol{{{letter}}}",
+                "plain": letter, "zero": "\\mathbf{0}", "one": "\\mathbf{1}",
+                "cal": f"\\mathcal{{{letter}}}"}[kind]
+        if accent:
+            core = f"{accent}{{{core}}}"
+        core = pre + core
+        for r in rest:
+            if isinstance(r, tuple):
+                core += "_{" + r[1] + "}"
+            else:
+                core += str(r)
+        return core
+
+    def glyph(self, items):
+        if isinstance(items[0], lark.Token) and items[0].type == "LEFT_INDEX":
+            return self._resolve(items[1], items[2:], None, pre=index_key(str(items[0])))
+        return self._resolve(items[0], items[1:], None)
+
+    def accented(self, items):
+        accent, inner = wide(str(items[0])), items[1]
+        if not isinstance(inner, GlyphKey):
+            raise LatexError(f"{accent} over an expression: expected a glyph", "accent")
+        base, rest = inner.base, list(inner.rest) + list(items[2:])
+        if accent == "\\dot" and not items[2:] and self.timed(inner.key):  # d/dt of X(t)
+            return self.velocity(inner.key, inner.value)
+        self.glyphs.pop(inner.key, None)  # only the accented glyph is a symbol here
+        return self._resolve(base, rest, (inner.accent or "") + accent if inner.accent
+                             else accent, inner)
+
+    def arrow(self, items):
+        key = f"\\overrightarrow{{{items[0]}}}"
+        return self._symbol(key, None)
+
+    def _resolve(self, base, rest, accent, inner=None, pre=""):
+        if inner is not None:  # an accent over a glyph that has its own sub/primes
+            key = f"{accent}{{{inner.key}}}" + "".join(
+                "_{" + r[1] + "}" if isinstance(r, tuple) else str(r)
+                for r in rest[len(inner.rest):])
+        else:
+            key = self._key(base, rest, accent, pre)
+        kind = base[0]
+        if rest and isinstance(rest[-1], tuple) and ":" in rest[-1][1] and inner is None:
+            return self._slice(key, base, rest, accent, pre)
+        sized = self._sized(key, base, rest, accent)  # I, I_3, \mathbf{1}_3 (latex.meaning)
+        if sized is not None:
+            return GlyphKey(key, base, rest, accent, sized)
+        if kind == "zero":
+            z = None if accent else self.sized_zero(key, rest)
+            return GlyphKey(key, base, rest, accent, z if z is not None
+                             else sp.ZeroMatrix(3, 1))
+        if kind == "one":
+            n = 3
+            for r in rest:
+                if isinstance(r, tuple) and "times" in r[1]:
+                    n = int(r[1].split("\\times")[0])
+            return GlyphKey(key, base, rest, accent, sp.Identity(n))
+        if kind == "bold" and base[1] == "O" and not accent:
+            rows = cols = 3
+            for r in rest:
+                if isinstance(r, tuple) and r[1].isdigit() and len(r[1]) == 2:
+                    rows, cols = int(r[1][0]), int(r[1][1])
+            return GlyphKey(key, base, rest, accent, sp.ZeroMatrix(rows, cols))
+        if kind == "plain" and base[1] == "t" and not rest and not accent:
+            return GlyphKey(key, base, rest, accent, TIME)
+        if accent in ("\\vec", "\\underline") and kind == "plain":  # vector fonts
+            base = ("bold", base[1])
+        entry = self._entry(key, base, rest, accent, inner, pre)
+        if entry is not None:
+            return entry
+        return GlyphKey(key, base, rest, accent, self._symbol(key, base))
+
+    def _entry(self, key, base, rest, accent, inner, pre):
+        """``a_1``, ``\\mathbf{q}_4`` where nothing declares it but a ``--let`` declares the
+        vector ``\\mathbf{a}`` (``\\mathbf{q}``): a symbol of its own or entry 1 (4) of
+        the vector, a choice point (issue 52, item 2; ``self.choices``, a symbol of its own
+        unless told). ``None`` where it is no choice: the symbol, by the rules."""
+        if not getattr(self, "reader", False) or accent or inner is not None or pre \
+                or len(rest) != 1 or not isinstance(rest[0], tuple) \
+                or not rest[0][1].isdigit() or key in self.overrides:
+            return None
+        k = int(rest[0][1])
+        for vbase in dict.fromkeys([("bold", base[1]), base]):
+            vkey = self._key(vbase, [], None)
+            g = self.overrides.get(vkey)
+            shape = getattr(g, "shape", ())
+            if len(shape) == 2 and shape[1] == 1 and 1 <= k <= shape[0] > 1:
+                point = f"{key} of {vkey}"
+                self.choice_points.setdefault(point, alternatives(point))
+                if self.choices.get(point) != "entry":
+                    self.readings.append(f"{key}: a symbol of its own (a choice: or entry {k} "
+                                         f"of {vkey})")
+                    return None
+                self.readings.append(f"{key}: read as entry {k} of {vkey} (a choice: or a "
+                                     f"symbol of its own)")
+                return GlyphKey(key, base, rest, accent, self._symbol(vkey, vbase)[k - 1, 0])
+        return None
+
+    def _slice(self, key, base, rest, accent, pre):
+        """``\\mathbf{q}_{1:3}``: entries 1 to 3 (counted from 1, both included) of the
+        vector ``\\mathbf{q}`` (issue 52, item 4); of a scalar or matrix refused."""
+        lo, hi = (int(n) for n in rest[-1][1].replace(" ", "").split(":"))
+        vkey = self._key(base, rest[:-1], accent, pre)
+        v = self._symbol(vkey, base)
+        shape = getattr(v, "shape", None)
+        if not shape or shape[1] != 1 or shape[0] == 1:
+            raise LatexError(f"{key}: a range of entries of {vkey}, which is no vector "
+                             f"({shape_words(v)}); declare it, e.g. --let '{vkey}: 4-vector'",
+                             "shapes")
+        if not 1 <= lo <= hi <= shape[0]:
+            raise LatexError(f"{key}: entries {lo} to {hi} of {vkey}, a {shape[0]}-vector",
+                             "shapes")
+        if lo == hi:  # q_{4:4}: one entry, a scalar
+            self.readings.append(f"{key}: entry {lo} of {vkey}")
+            return GlyphKey(key, base, rest, accent, v[lo - 1, 0])
+        self.readings.append(f"{key}: entries {lo} to {hi} of {vkey}")
+        return GlyphKey(key, base, rest, accent,
+                         sp.ImmutableMatrix([[v[i, 0]] for i in range(lo - 1, hi)]))
+
+    def _symbol(self, key, base):
+        g = self.overrides.get(key)
+        if g is None and self.section is not None:  # None: no glyph table (a reader's LaTeX)
+            g = lookup(key, self.section)
+        if g is None:
+            g = default_glyph(key, base)
+        self.glyphs[key] = g
+        if g.shape == ():
+            return sp.Symbol(g.name, real=True)
+        if g.kind == "row":  # a per-id note: the text's vector stands for its row
+            self.readings.append(f"{key} read as the row {g.name}^T (per-id note)")
+            return sp.MatrixSymbol(g.name, *g.shape).T
+        return sp.MatrixSymbol(g.name, *g.shape)
+
+
+@dataclass(frozen=True)
+class GlyphKey:
+    key: str
+    base: tuple
+    rest: list
+    accent: str | None
+    value: object

@@ -1,0 +1,199 @@
+"""The vocabulary of rigid motions in a reader's LaTeX (issue 29 on issue 28's words): the
+spellings of Lynch & Park, *Modern Robotics* (MR) and Murray, Li & Sastry (MLS), each read
+onto a word of :mod:`rigidsym.declare` (never re-implemented here).
+
+=================================================  ==========================================
+LaTeX                                              word
+=================================================  ==========================================
+``e^{X}``, ``\\exp(X)`` (X 3x3 or 4x4)              ``expm`` (MR (3.51), (3.88))
+``\\log R`` (R 3x3)                                  ``logm``, principal branch (MR (3.53))
+``\\arccos x``, ``\\cos^{-1} x``                      ``acos``, principal branch ``[0, pi]``
+``\\operatorname{atan2}(y, x)``                      ``atan2``, principal branch ``(-pi, pi]``
+``\\sqrt{x}``                                        ``sqrt``
+``[\\omega]`` (a 3-vector), ``[\\mathcal{V}]`` (6)    ``hat``: so(3), se(3) (MR (3.30), (3.85))
+``\\mathrm{Ad}_{T}``, ``\\mathrm{ad}_{V}``            ``Ad``, ``ad`` (MR (3.83), (8.38))
+``\\frac{dX}{d\\theta}``, ``\\frac{d}{d\\theta} X``    ``diff(X, theta)``
+=================================================  ==========================================
+
+The bracket is read as ``hat`` only in a reader's LaTeX (``parse_latex(..., reader=True)``),
+and only when it holds one symbol or one product of shape 3 x 1 or 6 x 1; a bracket holding
+a sum, a scalar or a matrix groups. ``e`` is the exponential only as a plain italic ``e``
+directly followed by ``^``.
+"""
+
+from __future__ import annotations
+
+import lark
+import sympy as sp
+
+from rigidsym.algebra import motions
+from rigidsym.latex.shapes import LatexError, as_scalar, matrix_shape, shape_words
+from rigidsym.latex.transformer.book_notations import free_symbols_of as _free_atoms
+from rigidsym.latex.transformer.meanings import alternatives, as_written
+
+__all__: list[str] = []
+
+
+def _content(items):
+    """The non-token items of a rule (the operands)."""
+    return [i for i in items if not isinstance(i, lark.Token)]
+
+
+class VocabRules:
+    """Transformer rules of the ``vocab`` productions of ``grammar.lark`` (a mixin of the
+    parser's ``_Build``: it provides ``_resolve``, ``_val``, ``glyphs``, ``readings``,
+    ``made``, ``func`` and ``power``)."""
+
+    def _operand(self, x):
+        if isinstance(x, tuple):  # a bare base (e^x, \mathrm{Ad}_T): a glyph of its own
+            x = self._resolve(x, [], None)
+        return self._val(x)
+
+    def _named(self, x) -> str:
+        """The glyphs an operand is made of, by their LaTeX (for a message)."""
+        names = {s.name for s in x.atoms(sp.Symbol, sp.MatrixSymbol)} \
+            if isinstance(x, sp.Basic) else set()
+        keys = sorted(k for k, g in self.glyphs.items() if g.name in names)
+        return f" ({', '.join(keys)})" if keys else ""
+
+    def _note(self, text: str):
+        if text not in self.readings:
+            self.readings.append(text)
+
+    # ---- the exponential and the logarithm
+    def exp_e(self, items):
+        return self._exp(self._operand(_content(items)[0]), "e^{...}")
+
+    def _exp(self, x, how):
+        s = matrix_shape(x)
+        if s is None:
+            raise LatexError(f"{how} of a scalar{self._named(x)}: the scalar exponential is "
+                             f"not decided exactly by the engine; {how} is read as the "
+                             f"matrix exponential of a 3x3 (so(3)) or 4x4 (se(3)) exponent",
+                             "shapes")
+        if s not in ((3, 3), (4, 4)):
+            raise LatexError(f"{how} of {shape_words(x)}{self._named(x)}: expected a 3x3 (so(3)) "
+                             f"or 4x4 (se(3)) exponent, e.g. [\\hat\\omega]\\theta with "
+                             f"--let '\\hat\\omega: unit vector'", "shapes")
+        self._note(f"{how}: the matrix exponential expm (MR (3.51), (3.88))")
+        try:
+            return motions.expm(x)
+        except ValueError as exc:
+            raise LatexError(f"{how}: {exc}", "shapes") from None
+
+    def matfunc(self, items):
+        name, x = str(items[0]), self._val(items[1])
+        if name == "\\exp":
+            return self._exp(x, "\\exp")
+        if matrix_shape(x) != (3, 3):
+            raise LatexError(f"\\log of {shape_words(x)}{self._named(x)}: expected a 3x3 "
+                             f"rotation (the log of se(3) and the scalar log are not words "
+                             f"of the vocabulary)", "shapes")
+        self._note("\\log: the principal logarithm logm, theta in [0, pi], singular at "
+                   "theta = 0 and pi (MR (3.53)-(3.54))")
+        return motions.logm(x)
+
+    # ---- scalar functions
+    def func_power(self, items):
+        name, sup, x = str(items[0]), items[1], items[2]
+        if sup == "-1":
+            fn = name.lstrip("\\")
+            if fn == "cos":
+                return self.func(["\\arccos", x])
+            if fn == "tan":
+                return self.func(["\\arctan", x])
+            raise LatexError(f"{name}^{{-1}}: the inverse {fn} is not in the vocabulary; "
+                             f"write \\arccos or \\operatorname{{atan2}}(y, x)",
+                             f"unknown macro {name}^{{-1}}")
+        if sup == "T":
+            raise LatexError(f"{name}^T: expected a power of the function", "shapes")
+        return self.power([self.func([name, x]), sup])
+
+    def sqrt(self, items):
+        x = as_scalar(self._val(items[0]))
+        if matrix_shape(x) is not None:
+            raise LatexError(f"\\sqrt of {shape_words(x)}{self._named(x)}: expected a scalar",
+                             "shapes")
+        return sp.sqrt(x)
+
+    def atan2(self, items):
+        y, x = (as_scalar(self._val(i)) for i in _content(items))
+        if matrix_shape(y) is not None or matrix_shape(x) is not None:
+            raise LatexError("atan2(y, x): expected two scalars", "shapes")
+        return sp.atan2(y, x)
+
+    # ---- Ad, ad and the hat
+    def adjoint(self, items):
+        word, x = str(items[0]), self._operand(_content(items)[0])
+        big = "Ad" in word
+        want = (4, 4) if big else (6, 1)
+        if matrix_shape(x) != want:
+            what = "a 4x4 transform" if big else "a twist (6-vector)"
+            raise LatexError(f"{word}_{{...}} of {shape_words(x)}{self._named(x)}: expected "
+                             f"{what} (declare it, e.g. --let 'T: transform' or "
+                             f"--let '\\mathcal{{V}}: twist')", "shapes")
+        return motions.Ad(x) if big else motions.ad(x)
+
+    def hat_bracket(self, x):
+        """``[x]``: the hat of one symbol or one product of shape 3 x 1 or 6 x 1, else
+        ``x`` (the bracket groups). The hat of a product is a choice point (issue 52, item
+        2): the other reading, a bracket that groups the product ``[R\\mathbf{a}]``, is
+        read too (``self.choices``) and kept where it type-checks. A bracket around one
+        symbol groups nothing: it is the hat, by the rule."""
+        from rigidsym.printing import notation
+
+        v = self._val(x)
+        if matrix_shape(v) not in ((3, 1), (6, 1)):
+            return v
+        how = self.made.get(v)
+        if not (isinstance(v, sp.MatrixSymbol) or (how and how[0] == "mul")):
+            return v
+        key = f"[{notation.text(v)}]"
+        if not isinstance(v, sp.MatrixSymbol):  # [R a]: a choice; [a] groups nothing
+            self.choice_points.setdefault(key, alternatives(key))
+        if self.choices.get(key) == "group":
+            self._note(f"{key}: read as a bracket that groups the vector (a choice: or its "
+                       f"so(3) (se(3)) matrix hat)")
+            return v
+        self._note("[x] of a 3-vector (6-vector) read as its so(3) (se(3)) matrix hat(x) "
+                   "(MR (3.30), (3.85)); a bracket holding a sum, a scalar or a matrix "
+                   "groups; write ( ) to group a vector, [x]_\\times for the hat")
+        return as_written(motions.hat(v))  # printed [x] as written (latex.meaning)
+
+    # ---- derivatives
+    def deriv_op(self, items):
+        var, x = _content(items)
+        return self._diff(self._val(x), var)
+
+    def deriv_frac(self, items):
+        x, var = _content(items)
+        return self._diff(self._val(x), var)
+
+    def _diff(self, x, var):
+        v = self._val(var)
+        if not isinstance(v, sp.Symbol):
+            raise LatexError(f"a derivative with respect to {shape_words(v)}{self._named(v)}: "
+                             f"expected a scalar variable (d\\theta)", "shapes")
+        if v.name == "t":  # of the symbols declared functions of time, X(t) (bookrules)
+            return self.time_derivative(self._val(x))
+        self._note("d/dv: the vocabulary's derivative diff(X, v) (\\dot{X} stays the time "
+                   "derivative)")
+        x = as_scalar(x)
+        through = self.models_of({v.name})  # a model in v: its value (issue 52)
+        for _ in range(len(through)):
+            at = {a: through[a.name] for a in _free_atoms(x) if a.name in through}
+            if not at:
+                break
+            x = x.xreplace(at)
+        return motions.diff(x, v)
+
+    # ---- glyphs
+    def calbase(self, items):
+        return ("cal", str(items[0]))
+
+    def bare(self, items):
+        return ("plain", str(items[0]))
+
+    def accented_bare(self, items):
+        inner = self._resolve(items[1], [], None)
+        return self.accented([items[0], inner, *items[2:]])
