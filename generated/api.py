@@ -75,7 +75,7 @@ class _Unbound:
 
 
 #: the kernels' entry points, set by rigidsym.kernels.load(): the compiled module's (the
-#: common cases validated and computed in C), or the Python path's (rigidsym.kernels._entries)
+#: common cases validated and computed in C), or the Python path's (rigidsym.kernels.runtime.entries)
 _F: Any = _Unbound()
 
 OutArrays = NDArray[np.float64] | tuple[NDArray[np.float64], ...] | None

@@ -11,10 +11,10 @@
  *     phi in the half-angle program reads sin(phi/2) apart from cos phi (each rounded); as the
  *     polynomial in t = tan(phi/2) it is, each coefficient homogenised in the unit vector, it
  *     reads t alone; worst ratio to the rule max(2 e_best, 4 u) (e_best: the most accurate of
- *     the textbook formula and the forms tried, per point; rigidsym.codegen.rule) at 78 points
- *     of the regimes (rigidsym.codegen.regimes, exact, rounded to float64) a singular flag ->
- *     0.58, never worse than the textbook formula by that rule; equal to the declared formula
- *     by the zero test (exact-cancel)
+ *     the textbook formula and the forms tried, per point; rigidsym.codegen.accuracy.rule) at
+ *     78 points of the regimes (rigidsym.codegen.accuracy.regimes, exact, rounded to float64)
+ *     a singular flag -> 0.58, never worse than the textbook formula by that rule; equal to
+ *     the declared formula by the zero test (exact-cancel)
  */
 #include "L_tilde_dot.h"
 

@@ -10,17 +10,17 @@
  * accuracy rewrite (main): derivatives of the rewritten values: the Jacobian of the declared
  *     grouping inherits its cancellation; the derivatives of the rewritten values do not;
  *     worst ratio to the rule max(2 e_best, 4 u) (e_best: the most accurate of the textbook
- *     formula and the forms tried, per point; rigidsym.codegen.rule) at 60 points of the
- *     regimes (rigidsym.codegen.regimes, exact, rounded to float64) a singular flag -> 0.85,
- *     never worse than the textbook formula by that rule; equal to the declared formula by the
- *     zero test (exact-cancel)
+ *     formula and the forms tried, per point; rigidsym.codegen.accuracy.rule) at 60 points of
+ *     the regimes (rigidsym.codegen.accuracy.regimes, exact, rounded to float64) a singular
+ *     flag -> 0.85, never worse than the textbook formula by that rule; equal to the declared
+ *     formula by the zero test (exact-cancel)
  *
  * Time derivative of L_tilde along omega, with the Jacobians of its outputs.
  * d/dt L_tilde(e(t), phi(t)) with e_dot, phi_dot from omega (the corrected form where the printed one does not hold); and d(output)/d(input) by sympy on the declared formula
  * Singular set: 1 + cos(phi) = 0 (phi = pi)
  *
  * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
- * measured at generation, rigidsym.codegen.float32; worst error 0.997 of what
+ * measured at generation, rigidsym.codegen.accuracy.float32; worst error 0.997 of what
  * the rule of issue 37 allows, max(2 e_textbook, 4 u), per output, normwise, at its
  * points where the kernel computed in double is within it). In double:
  *   trig_0, trig_1, x3, x5, x8, x9, x10, x11, x12, x13, x15, x18, x19, x20, x21, x23, x24, x25, x26, x27, x36, x37, x40, x42, x47, x50, x51, x57, x59, x60, x62, x65, x66, x72, x73, x74, x83, x84, x85, x91, x92, x93, x98, x101

@@ -12,16 +12,17 @@
  *     phi / (2 - 2 cos phi) - 2 sin^2 phi / (2 - 2 cos phi)^2); merged into one reduced
  *     fraction (-1 / (2 - 2 cos phi)) they do not; worst ratio to the rule max(2 e_best, 4 u)
  *     (e_best: the most accurate of the textbook formula and the forms tried, per point;
- *     rigidsym.codegen.rule) at 68 points of the regimes (rigidsym.codegen.regimes, exact,
- *     rounded to float64) 1.5 -> 0.5, never worse than the textbook formula by that rule;
- *     equal to the declared formula by the zero test (exact-cancel)
+ *     rigidsym.codegen.accuracy.rule) at 68 points of the regimes
+ *     (rigidsym.codegen.accuracy.regimes, exact, rounded to float64) 1.5 -> 0.5, never worse
+ *     than the textbook formula by that rule; equal to the declared formula by the zero test
+ *     (exact-cancel)
  *
  * Left inverse of the rate matrix of the linear invariants [u; u0]: omega = L_tilde rate, with the Jacobians of its outputs.
  * L_tilde(e, phi), 3x4; and d(output)/d(input) by sympy on the declared formula
  * Singular set: 1 + cos(phi) = 0 (phi = pi)
  *
  * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
- * measured at generation, rigidsym.codegen.float32; worst error 1.0 of what
+ * measured at generation, rigidsym.codegen.accuracy.float32; worst error 1.0 of what
  * the rule of issue 37 allows, max(2 e_textbook, 4 u), per output, normwise, at its
  * points where the kernel computed in double is within it). In double:
  *   trig_0, trig_1, x1, x2, x10

@@ -13,7 +13,7 @@
  * Singular set: phi = 0 (mod 2 pi): the axis is undefined
  *
  * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
- * measured at generation, rigidsym.codegen.float32; worst error 0.566 of what
+ * measured at generation, rigidsym.codegen.accuracy.float32; worst error 0.566 of what
  * the rule of issue 37 allows, max(2 e_textbook, 4 u), per output, normwise, at its
  * points where the kernel computed in double is within it). In double:
  *   none

@@ -12,7 +12,7 @@
  * N_tilde(e, phi), 3x4; and d(output)/d(input) by sympy on the declared formula
  *
  * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
- * measured at generation, rigidsym.codegen.float32; worst error 0.788 of what
+ * measured at generation, rigidsym.codegen.accuracy.float32; worst error 0.788 of what
  * the rule of issue 37 allows, max(2 e_textbook, 4 u), per output, normwise, at its
  * points where the kernel computed in double is within it). In double:
  *   trig_0, x1

@@ -10,18 +10,19 @@
  * accuracy rewrite (main): compensated sums of products (pitch): a dot product (or a cross
  *     product's component plus a term) that cancels loses u sum |a_i b_i| / |s| relative when
  *     summed plainly; compensated (Dot2 of Ogita, Rump and Oishi,
- *     rigidsym.codegen.compensated.SumProd) it keeps about 1 u; worst ratio to the rule max(2
- *     e_best, 4 u) (e_best: the most accurate of the textbook formula and the forms tried, per
- *     point; rigidsym.codegen.rule) at 42 points of the regimes (rigidsym.codegen.regimes,
- *     exact, rounded to float64) 46 -> 0.55, never worse than the textbook formula by that
- *     rule; equal to the declared formula by the zero test (exact-cancel)
+ *     rigidsym.codegen.accuracy.compensated.SumProd) it keeps about 1 u; worst ratio to the
+ *     rule max(2 e_best, 4 u) (e_best: the most accurate of the textbook formula and the forms
+ *     tried, per point; rigidsym.codegen.accuracy.rule) at 42 points of the regimes
+ *     (rigidsym.codegen.accuracy.regimes, exact, rounded to float64) 46 -> 0.55, never worse
+ *     than the textbook formula by that rule; equal to the declared formula by the zero test
+ *     (exact-cancel)
  *
  * Instant screw axis of a twist: point, pitch and Plücker array.
  * p0' = omega x (a_dot - omega x a)/||omega||^2, pitch' = a_dot.omega/||omega||^2, kappa = [e'; p0' x e']
  * Singular set: omega = 0 (pure translation)
  *
  * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
- * measured at generation, rigidsym.codegen.float32; worst error 0.607 of what
+ * measured at generation, rigidsym.codegen.accuracy.float32; worst error 0.607 of what
  * the rule of issue 37 allows, max(2 e_textbook, 4 u), per output, normwise, at its
  * points where the kernel computed in double is within it). In double:
  *   none

@@ -10,34 +10,36 @@
  * accuracy rewrite (main): compensated sums of products (p0): a dot product (or a cross
  *     product's component plus a term) that cancels loses u sum |a_i b_i| / |s| relative when
  *     summed plainly; compensated (Dot2 of Ogita, Rump and Oishi,
- *     rigidsym.codegen.compensated.SumProd) it keeps about 1 u; worst ratio to the rule max(2
- *     e_best, 4 u) (e_best: the most accurate of the textbook formula and the forms tried, per
- *     point; rigidsym.codegen.rule) at 42 points of the regimes (rigidsym.codegen.regimes,
- *     exact, rounded to float64) 1.2 -> 0.52, never worse than the textbook formula by that
- *     rule; equal to the declared formula by the zero test (exact-cancel)
+ *     rigidsym.codegen.accuracy.compensated.SumProd) it keeps about 1 u; worst ratio to the
+ *     rule max(2 e_best, 4 u) (e_best: the most accurate of the textbook formula and the forms
+ *     tried, per point; rigidsym.codegen.accuracy.rule) at 42 points of the regimes
+ *     (rigidsym.codegen.accuracy.regimes, exact, rounded to float64) 1.2 -> 0.52, never worse
+ *     than the textbook formula by that rule; equal to the declared formula by the zero test
+ *     (exact-cancel)
  * accuracy rewrite (main): compensated sums of products (pitch): a dot product (or a cross
  *     product's component plus a term) that cancels loses u sum |a_i b_i| / |s| relative when
  *     summed plainly; compensated (Dot2 of Ogita, Rump and Oishi,
- *     rigidsym.codegen.compensated.SumProd) it keeps about 1 u; worst ratio to the rule max(2
- *     e_best, 4 u) (e_best: the most accurate of the textbook formula and the forms tried, per
- *     point; rigidsym.codegen.rule) at 42 points of the regimes (rigidsym.codegen.regimes,
- *     exact, rounded to float64) 46 -> 0.55, never worse than the textbook formula by that
- *     rule; equal to the declared formula by the zero test (exact-cancel)
+ *     rigidsym.codegen.accuracy.compensated.SumProd) it keeps about 1 u; worst ratio to the
+ *     rule max(2 e_best, 4 u) (e_best: the most accurate of the textbook formula and the forms
+ *     tried, per point; rigidsym.codegen.accuracy.rule) at 42 points of the regimes
+ *     (rigidsym.codegen.accuracy.regimes, exact, rounded to float64) 46 -> 0.55, never worse
+ *     than the textbook formula by that rule; equal to the declared formula by the zero test
+ *     (exact-cancel)
  * accuracy rewrite (main): powers by pow (plucker_D_omega): a rational power printed as roots
  *     and a quotient (1/(x sqrt x), 1/(x x)) rounds three or four times, pow once: the
  *     Jacobian of a norm's quotient (f x n / ||f||^2 differentiated) sums several of them;
  *     worst ratio to the rule max(2 e_best, 4 u) (e_best: the most accurate of the textbook
- *     formula and the forms tried, per point; rigidsym.codegen.rule) at 42 points of the
- *     regimes (rigidsym.codegen.regimes, exact, rounded to float64) 1.2 -> 0.92, never worse
- *     than the textbook formula by that rule; equal to the declared formula by the zero test
- *     (exact-cancel)
+ *     formula and the forms tried, per point; rigidsym.codegen.accuracy.rule) at 42 points of
+ *     the regimes (rigidsym.codegen.accuracy.regimes, exact, rounded to float64) 1.2 -> 0.92,
+ *     never worse than the textbook formula by that rule; equal to the declared formula by the
+ *     zero test (exact-cancel)
  *
  * Instant screw axis of a twist: point, pitch and Plücker array, with the Jacobians of its outputs.
  * p0' = omega x (a_dot - omega x a)/||omega||^2, pitch' = a_dot.omega/||omega||^2, kappa = [e'; p0' x e']; and d(output)/d(input) by sympy on the declared formula
  * Singular set: omega = 0 (pure translation)
  *
  * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
- * measured at generation, rigidsym.codegen.float32; worst error 0.736 of what
+ * measured at generation, rigidsym.codegen.accuracy.float32; worst error 0.736 of what
  * the rule of issue 37 allows, max(2 e_textbook, 4 u), per output, normwise, at its
  * points where the kernel computed in double is within it). In double:
  *   x0, x1, x2, x3, x4, x5, x6, x7, x9, x12, x13, x16, x18, x29, x33, x40, x51, x61, x62

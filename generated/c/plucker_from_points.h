@@ -10,19 +10,19 @@
  * accuracy rewrite (main): expanded numerator: the declared grouping subtracts nearly equal
  *     products (p1 x (p2 - p1) with |p1| >> |p2 - p1|); expanded, the cancelling terms cancel
  *     symbolically, and the difference of two products left is compensated (Kahan's algorithm,
- *     rigidsym.codegen.compensated: p1 x p2 of nearly coincident points cancels too); worst
- *     ratio to the rule max(2 e_best, 4 u) (e_best: the most accurate of the textbook formula
- *     and the forms tried, per point; rigidsym.codegen.rule) at 28 points of the regimes
- *     (rigidsym.codegen.regimes, exact, rounded to float64) 8.4e+04 -> 0.48, never worse than
- *     the textbook formula by that rule; equal to the declared formula by the zero test
- *     (exact-cancel)
+ *     rigidsym.codegen.accuracy.compensated: p1 x p2 of nearly coincident points cancels too);
+ *     worst ratio to the rule max(2 e_best, 4 u) (e_best: the most accurate of the textbook
+ *     formula and the forms tried, per point; rigidsym.codegen.accuracy.rule) at 28 points of
+ *     the regimes (rigidsym.codegen.accuracy.regimes, exact, rounded to float64) 8.4e+04 ->
+ *     0.48, never worse than the textbook formula by that rule; equal to the declared formula
+ *     by the zero test (exact-cancel)
  *
  * Plücker array of the line through two points.
  * kappa = [e; p1 x e], e = (p2 - p1)/||p2 - p1||
  * Singular set: p1 = p2
  *
  * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
- * measured at generation, rigidsym.codegen.float32; worst error 0.51 of what
+ * measured at generation, rigidsym.codegen.accuracy.float32; worst error 0.51 of what
  * the rule of issue 37 allows, max(2 e_textbook, 4 u), per output, normwise, at its
  * points where the kernel computed in double is within it). In double:
  *   none

@@ -10,10 +10,10 @@
  * accuracy rewrite (main): derivatives of the rewritten values: the Jacobian of the declared
  *     grouping inherits its cancellation; the derivatives of the rewritten values do not;
  *     worst ratio to the rule max(2 e_best, 4 u) (e_best: the most accurate of the textbook
- *     formula and the forms tried, per point; rigidsym.codegen.rule) at 28 points of the
- *     regimes (rigidsym.codegen.regimes, exact, rounded to float64) 2.3e+05 -> 0.54, never
- *     worse than the textbook formula by that rule; equal to the declared formula by the zero
- *     test (exact-cancel)
+ *     formula and the forms tried, per point; rigidsym.codegen.accuracy.rule) at 28 points of
+ *     the regimes (rigidsym.codegen.accuracy.regimes, exact, rounded to float64) 2.3e+05 ->
+ *     0.54, never worse than the textbook formula by that rule; equal to the declared formula
+ *     by the zero test (exact-cancel)
  */
 #include "plucker_from_points_with_jacobians.h"
 

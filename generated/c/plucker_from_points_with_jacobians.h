@@ -10,17 +10,17 @@
  * accuracy rewrite (main): derivatives of the rewritten values: the Jacobian of the declared
  *     grouping inherits its cancellation; the derivatives of the rewritten values do not;
  *     worst ratio to the rule max(2 e_best, 4 u) (e_best: the most accurate of the textbook
- *     formula and the forms tried, per point; rigidsym.codegen.rule) at 28 points of the
- *     regimes (rigidsym.codegen.regimes, exact, rounded to float64) 2.3e+05 -> 0.54, never
- *     worse than the textbook formula by that rule; equal to the declared formula by the zero
- *     test (exact-cancel)
+ *     formula and the forms tried, per point; rigidsym.codegen.accuracy.rule) at 28 points of
+ *     the regimes (rigidsym.codegen.accuracy.regimes, exact, rounded to float64) 2.3e+05 ->
+ *     0.54, never worse than the textbook formula by that rule; equal to the declared formula
+ *     by the zero test (exact-cancel)
  *
  * Plücker array of the line through two points, with the Jacobians of its outputs.
  * kappa = [e; p1 x e], e = (p2 - p1)/||p2 - p1||; and d(output)/d(input) by sympy on the declared formula
  * Singular set: p1 = p2
  *
  * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
- * measured at generation, rigidsym.codegen.float32; worst error 0.748 of what
+ * measured at generation, rigidsym.codegen.accuracy.float32; worst error 0.748 of what
  * the rule of issue 37 allows, max(2 e_textbook, 4 u), per output, normwise, at its
  * points where the kernel computed in double is within it). In double:
  *   none

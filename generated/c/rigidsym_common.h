@@ -20,7 +20,7 @@
 #endif
 #endif
 
-/* CPU dispatch (rigidsym.kernels._build): the batch functions are compiled once per build
+/* CPU dispatch (rigidsym.kernels.cbuild.driver): the batch functions are compiled once per build
  * path (x86-64-v2, x86-64-v3, or -march=native on request), each time with
  * -DRIGIDSYM_ISA_SUFFIX=_<path>, so that their exported names carry the path and the objects
  * of several paths link into one extension module; rigidsym_dispatch.h picks one path's
@@ -204,7 +204,7 @@ static inline double rigidsym_cos(double x)
 #endif
 
 /* The float32 code (sample functions and lanes loops) without FMA contraction: the float32
- * precision plans (rigidsym.codegen.float32) are measured on a simulation that rounds every
+ * precision plans (rigidsym.codegen.accuracy.float32) are measured on a simulation that rounds every
  * product, and a contracted `a b + c` moved seven plans past issue 37's rule at 1000 points
  * (tests/test_float32.py). GCC: an optimize pragma around them, which keeps them so under a
  * RIGIDSYM_CFLAGS with -ffp-contract=fast (the default flags have -ffp-contract=off for all
@@ -322,7 +322,7 @@ static inline int rigidsym_any_nonfinite_f32(const float *RIGIDSYM_RESTRICT p, i
 /* Nonzero when one of the len doubles at p is non-finite or nonzero of magnitude outside
  * [2^-100, 2^101) (issue 37): there a kernel's intermediates (products of up to ten inputs)
  * could overflow or underflow, so the sample is flagged and re-run in a wider type (the
- * rescue of rigidsym.kernels._core). Branch- and compare-free integer arithmetic on the bits
+ * rescue of rigidsym.kernels.runtime.space). Branch- and compare-free integer arithmetic on the bits
  * (a = |x|'s bits, d = a - 2^-100's bits): d and d - range have different signs exactly
  * inside the range; a + (2^63 - 1) has its sign bit set exactly when x != 0. Every step is
  * a 64-bit add, sub, xor or and, so the OR reduction vectorises as the test above does. */
@@ -354,7 +354,7 @@ static inline int rigidsym_any_extreme_f32(const float *RIGIDSYM_RESTRICT p, int
     return (int)(acc >> 31);
 }
 
-/* a b - c d compensated (Kahan's algorithm, rigidsym.codegen.compensated): within 2 u of the
+/* a b - c d compensated (Kahan's algorithm, rigidsym.codegen.accuracy.compensated): within 2 u of the
  * exact value however much the products cancel. w is used by both fma calls, so FMA
  * contraction (-ffp-contract=fast) cannot fuse it away; fma is an instruction on x86-64-v3
  * and -v4 and C99's correctly rounded libm function elsewhere. */
@@ -367,7 +367,7 @@ static inline double rigidsym_diffprod(double a, double b, double c, double d)
 }
 
 /* a1 b1 + ... + an bn compensated (Dot2 of Ogita, Rump and Oishi, 2005; SumProd of
- * rigidsym.codegen.compensated): as if summed in twice the precision, then rounded. Each
+ * rigidsym.codegen.accuracy.compensated): as if summed in twice the precision, then rounded. Each
  * product h is used by an fma call, so FMA contraction cannot fuse it into the TwoSum. */
 #define RIGIDSYM_DOT2_STEP(a, b) do { \
         const double h_ = (a) * (b); \

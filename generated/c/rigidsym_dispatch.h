@@ -4,7 +4,7 @@
  * CPU dispatch of the extension module (included by rigidsym_module.c only).
  *
  * As in NumPy's dispatcher, each kernel source is compiled once per build path with that
- * path's flags (rigidsym.kernels._build: -march=x86-64-v2, x86-64-v3 and x86-64-v4 by
+ * path's flags (rigidsym.kernels.cbuild.driver: -march=x86-64-v2, x86-64-v3 and x86-64-v4 by
  * default, -march=native on request, no -march off x86-64), the exported names suffixed by the path
  * (RIGIDSYM_ISA_NAME); the objects of every path link into one module, and this header picks
  * one path's table of function pointers when the module is imported, from the CPU's

@@ -31,7 +31,7 @@
 /* below this many samples the GIL is kept (releasing it costs more than such a call) */
 #define RIGIDSYM_GIL_SAMPLES 256
 
-/* an argument's check (rigidsym._kinds.Kind.c_check); RIGIDSYM_PYTHON: a constraint with no
+/* an argument's check (rigidsym.core.kinds.Kind.c_check); RIGIDSYM_PYTHON: a constraint with no
  * C routine, checked calls take the Python path */
 enum { RIGIDSYM_ANY = 0, RIGIDSYM_UNIT = 1, RIGIDSYM_ROTATION = 2, RIGIDSYM_PYTHON = 3 };
 
@@ -1657,7 +1657,7 @@ static void rigidsym_scatter(PyArrayObject *y, const rigidsym_slot *s, int f32, 
     }
 }
 
-/* The checks of rigidsym.kernels._core.validate on a C-contiguous buffer: finite values,
+/* The checks of rigidsym.kernels.runtime.space.validate on a C-contiguous buffer: finite values,
  * then | ||x|| - 1 | <= tol for unit vectors, max |Q^T Q - 1| <= tol and det Q > 0 for
  * rotations. 1 when valid. In double arithmetic for float32 values too; the finiteness test
  * on the bits (integer arithmetic: it vectorises without reassociating anything). */

@@ -3,7 +3,7 @@
  * sympy 1.14.0, rigidsym 0.2.0
  * The CPython extension module _ckernels of these kernels (rigidsym.kernels loads it).
  *
- * Built by rigidsym.kernels._build (at `pip install` for the package's kernels, into the
+ * Built by rigidsym.kernels.cbuild.driver (at `pip install` for the package's kernels, into the
  * user cache for others): this file once, with the baseline path's flags, the kernels and
  * rigidsym_table.c once per build path. The build defines RIGIDSYM_SOURCES (the SHA-256 of
  * the c/ folder it was built from, kept in the binary so that the loader can tell a stale
@@ -19,7 +19,7 @@
 #include "rigidsym_dispatch.h"
 
 #if !defined(RIGIDSYM_SOURCES) || !defined(RIGIDSYM_BUILD)
-#error "build with rigidsym.kernels._build: it defines RIGIDSYM_SOURCES and RIGIDSYM_BUILD"
+#error "build with rigidsym.kernels.cbuild.driver: it defines RIGIDSYM_SOURCES and RIGIDSYM_BUILD"
 #endif
 
 #if defined(__GNUC__)

@@ -12,9 +12,10 @@
  *     a'))/2 (plus exact terms in e.e - 1, compensated, for a unit vector a few ulps off)
  *     reads the axis and the angle from the inputs; worst ratio to the rule max(2 e_best, 4 u)
  *     (e_best: the most accurate of the textbook formula and the forms tried, per point;
- *     rigidsym.codegen.rule) at 55 points of the regimes (rigidsym.codegen.regimes, exact,
- *     rounded to float64) a singular flag -> 0.89, never worse than the textbook formula by
- *     that rule; equal to the declared formula by the zero test (exact-cancel)
+ *     rigidsym.codegen.accuracy.rule) at 55 points of the regimes
+ *     (rigidsym.codegen.accuracy.regimes, exact, rounded to float64) a singular flag -> 0.89,
+ *     never worse than the textbook formula by that rule; equal to the declared formula by the
+ *     zero test (exact-cancel)
  */
 #include "screw_axis_point.h"
 

@@ -12,16 +12,17 @@
  *     a'))/2 (plus exact terms in e.e - 1, compensated, for a unit vector a few ulps off)
  *     reads the axis and the angle from the inputs; worst ratio to the rule max(2 e_best, 4 u)
  *     (e_best: the most accurate of the textbook formula and the forms tried, per point;
- *     rigidsym.codegen.rule) at 55 points of the regimes (rigidsym.codegen.regimes, exact,
- *     rounded to float64) a singular flag -> 0.89, never worse than the textbook formula by
- *     that rule; equal to the declared formula by the zero test (exact-cancel)
+ *     rigidsym.codegen.accuracy.rule) at 55 points of the regimes
+ *     (rigidsym.codegen.accuracy.regimes, exact, rounded to float64) a singular flag -> 0.89,
+ *     never worse than the textbook formula by that rule; equal to the declared formula by the
+ *     zero test (exact-cancel)
  *
  * Point of the screw axis closest to the origin.
  * p0 = (Q - 1)^T (Q a - a') / (2 (1 - cos phi)), Q from (e, phi) by (2.49)
  * Singular set: phi = 0 (pure translation)
  *
  * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
- * measured at generation, rigidsym.codegen.float32; worst error 0.941 of what
+ * measured at generation, rigidsym.codegen.accuracy.float32; worst error 0.941 of what
  * the rule of issue 37 allows, max(2 e_textbook, 4 u), per output, normwise, at its
  * points where the kernel computed in double is within it). In double:
  *   trig_0, trig_1, x0, x1, x3, x6, x7, x9, x10, x16, p0[0], p0[1]

@@ -10,18 +10,19 @@
  * accuracy rewrite (main): cos phi as (c - s) (c + s): the bare cos phi left by the half-angle
  *     rewrite, as (c - s) (c + s) (s, c: sin, cos of phi/2) rather than 1 - 2 s^2: the form of
  *     the measured least error among 1 - 2 s^2, 1 - 2 s^2 or 2 c^2 - 1, (c - s) (c + s)
- *     (rigidsym.codegen.cos_form); worst ratio to the rule max(2 e_best, 4 u) (e_best: the
- *     most accurate of the textbook formula and the forms tried, per point;
- *     rigidsym.codegen.rule) at 348 points of the regimes (rigidsym.codegen.regimes, exact,
- *     rounded to float64) 3.2 -> 2.7, never worse than the textbook formula by that rule;
- *     equal to the declared formula by the zero test (exact-cancel)
+ *     (rigidsym.codegen.accuracy.cos_form); worst ratio to the rule max(2 e_best, 4 u)
+ *     (e_best: the most accurate of the textbook formula and the forms tried, per point;
+ *     rigidsym.codegen.accuracy.rule) at 348 points of the regimes
+ *     (rigidsym.codegen.accuracy.regimes, exact, rounded to float64) 3.2 -> 2.7, never worse
+ *     than the textbook formula by that rule; equal to the declared formula by the zero test
+ *     (exact-cancel)
  *
  * Point of the screw axis closest to the origin, with the Jacobians of its outputs.
  * p0 = (Q - 1)^T (Q a - a') / (2 (1 - cos phi)), Q from (e, phi) by (2.49); and d(output)/d(input) by sympy on the declared formula
  * Singular set: phi = 0 (pure translation)
  *
  * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
- * measured at generation, rigidsym.codegen.float32; worst error 0.966 of what
+ * measured at generation, rigidsym.codegen.accuracy.float32; worst error 0.966 of what
  * the rule of issue 37 allows, max(2 e_textbook, 4 u), per output, normwise, at its
  * points where the kernel computed in double is within it). In double:
  *   trig_0, trig_1, x1, x2, x4, x5, x6, x7, x9, x10, x12, x13, x14, x15, x16, x18, x19, x20, x21, x22, x23, x24, x25, x26, x28, x29, x30, x31, x33, x34, x36, x37, x38, x39, x54, x59, x65, x69, x72, x73, x74, x75, x76, x78, x79, x81, x82, x83, x86, x87, p0_D_phi[1]

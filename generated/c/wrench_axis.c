@@ -10,11 +10,12 @@
  * accuracy rewrite (main): compensated sums of products (pitch): a dot product (or a cross
  *     product's component plus a term) that cancels loses u sum |a_i b_i| / |s| relative when
  *     summed plainly; compensated (Dot2 of Ogita, Rump and Oishi,
- *     rigidsym.codegen.compensated.SumProd) it keeps about 1 u; worst ratio to the rule max(2
- *     e_best, 4 u) (e_best: the most accurate of the textbook formula and the forms tried, per
- *     point; rigidsym.codegen.rule) at 38 points of the regimes (rigidsym.codegen.regimes,
- *     exact, rounded to float64) 1.1 -> 0.47, never worse than the textbook formula by that
- *     rule; equal to the declared formula by the zero test (exact-cancel)
+ *     rigidsym.codegen.accuracy.compensated.SumProd) it keeps about 1 u; worst ratio to the
+ *     rule max(2 e_best, 4 u) (e_best: the most accurate of the textbook formula and the forms
+ *     tried, per point; rigidsym.codegen.accuracy.rule) at 38 points of the regimes
+ *     (rigidsym.codegen.accuracy.regimes, exact, rounded to float64) 1.1 -> 0.47, never worse
+ *     than the textbook formula by that rule; equal to the declared formula by the zero test
+ *     (exact-cancel)
  */
 #include "wrench_axis.h"
 

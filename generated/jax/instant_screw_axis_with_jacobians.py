@@ -9,27 +9,29 @@
 # accuracy rewrite (main): compensated sums of products (p0): a dot product (or a cross
 #     product's component plus a term) that cancels loses u sum |a_i b_i| / |s| relative when
 #     summed plainly; compensated (Dot2 of Ogita, Rump and Oishi,
-#     rigidsym.codegen.compensated.SumProd) it keeps about 1 u; worst ratio to the rule max(2
-#     e_best, 4 u) (e_best: the most accurate of the textbook formula and the forms tried, per
-#     point; rigidsym.codegen.rule) at 42 points of the regimes (rigidsym.codegen.regimes,
-#     exact, rounded to float64) 1.2 -> 0.52, never worse than the textbook formula by that
-#     rule; equal to the declared formula by the zero test (exact-cancel)
+#     rigidsym.codegen.accuracy.compensated.SumProd) it keeps about 1 u; worst ratio to the
+#     rule max(2 e_best, 4 u) (e_best: the most accurate of the textbook formula and the forms
+#     tried, per point; rigidsym.codegen.accuracy.rule) at 42 points of the regimes
+#     (rigidsym.codegen.accuracy.regimes, exact, rounded to float64) 1.2 -> 0.52, never worse
+#     than the textbook formula by that rule; equal to the declared formula by the zero test
+#     (exact-cancel)
 # accuracy rewrite (main): compensated sums of products (pitch): a dot product (or a cross
 #     product's component plus a term) that cancels loses u sum |a_i b_i| / |s| relative when
 #     summed plainly; compensated (Dot2 of Ogita, Rump and Oishi,
-#     rigidsym.codegen.compensated.SumProd) it keeps about 1 u; worst ratio to the rule max(2
-#     e_best, 4 u) (e_best: the most accurate of the textbook formula and the forms tried, per
-#     point; rigidsym.codegen.rule) at 42 points of the regimes (rigidsym.codegen.regimes,
-#     exact, rounded to float64) 46 -> 0.55, never worse than the textbook formula by that
-#     rule; equal to the declared formula by the zero test (exact-cancel)
+#     rigidsym.codegen.accuracy.compensated.SumProd) it keeps about 1 u; worst ratio to the
+#     rule max(2 e_best, 4 u) (e_best: the most accurate of the textbook formula and the forms
+#     tried, per point; rigidsym.codegen.accuracy.rule) at 42 points of the regimes
+#     (rigidsym.codegen.accuracy.regimes, exact, rounded to float64) 46 -> 0.55, never worse
+#     than the textbook formula by that rule; equal to the declared formula by the zero test
+#     (exact-cancel)
 # accuracy rewrite (main): powers by pow (plucker_D_omega): a rational power printed as roots
 #     and a quotient (1/(x sqrt x), 1/(x x)) rounds three or four times, pow once: the
 #     Jacobian of a norm's quotient (f x n / ||f||^2 differentiated) sums several of them;
 #     worst ratio to the rule max(2 e_best, 4 u) (e_best: the most accurate of the textbook
-#     formula and the forms tried, per point; rigidsym.codegen.rule) at 42 points of the
-#     regimes (rigidsym.codegen.regimes, exact, rounded to float64) 1.2 -> 0.92, never worse
-#     than the textbook formula by that rule; equal to the declared formula by the zero test
-#     (exact-cancel)
+#     formula and the forms tried, per point; rigidsym.codegen.accuracy.rule) at 42 points of
+#     the regimes (rigidsym.codegen.accuracy.regimes, exact, rounded to float64) 1.2 -> 0.92,
+#     never worse than the textbook formula by that rule; equal to the declared formula by the
+#     zero test (exact-cancel)
 """Instant screw axis of a twist: point, pitch and Plücker array, with the Jacobians of its outputs.
 
 p0' = omega x (a_dot - omega x a)/||omega||^2, pitch' = a_dot.omega/||omega||^2, kappa = [e'; p0' x e']; and d(output)/d(input) by sympy on the declared formula
@@ -60,7 +62,8 @@ def _two_prod(a, b, k):
 
 
 def _diffprod(a, b, c, d):
-    """a b - c d compensated (Kahan's algorithm, its fma emulated; rigidsym.codegen.compensated)."""
+    """a b - c d compensated (Kahan's algorithm, its fma emulated;
+    rigidsym.codegen.accuracy.compensated)."""
     k = 4097.0 if a.dtype == jax.numpy.float32 else 134217729.0
     p, q = _two_prod(a, b, k)
     w, r = _two_prod(c, d, k)

@@ -9,10 +9,10 @@
 # accuracy rewrite (main): derivatives of the rewritten values: the Jacobian of the declared
 #     grouping inherits its cancellation; the derivatives of the rewritten values do not;
 #     worst ratio to the rule max(2 e_best, 4 u) (e_best: the most accurate of the textbook
-#     formula and the forms tried, per point; rigidsym.codegen.rule) at 28 points of the
-#     regimes (rigidsym.codegen.regimes, exact, rounded to float64) 2.3e+05 -> 0.54, never
-#     worse than the textbook formula by that rule; equal to the declared formula by the zero
-#     test (exact-cancel)
+#     formula and the forms tried, per point; rigidsym.codegen.accuracy.rule) at 28 points of
+#     the regimes (rigidsym.codegen.accuracy.regimes, exact, rounded to float64) 2.3e+05 ->
+#     0.54, never worse than the textbook formula by that rule; equal to the declared formula
+#     by the zero test (exact-cancel)
 """Plücker array of the line through two points, with the Jacobians of its outputs.
 
 kappa = [e; p1 x e], e = (p2 - p1)/||p2 - p1||; and d(output)/d(input) by sympy on the declared formula
@@ -43,7 +43,8 @@ def _two_prod(a, b, k):
 
 
 def _diffprod(a, b, c, d):
-    """a b - c d compensated (Kahan's algorithm, its fma emulated; rigidsym.codegen.compensated)."""
+    """a b - c d compensated (Kahan's algorithm, its fma emulated;
+    rigidsym.codegen.accuracy.compensated)."""
     k = 4097.0 if a.dtype == jax.numpy.float32 else 134217729.0
     p, q = _two_prod(a, b, k)
     w, r = _two_prod(c, d, k)

@@ -9,11 +9,12 @@
 # accuracy rewrite (main): cos phi as (c - s) (c + s): the bare cos phi left by the half-angle
 #     rewrite, as (c - s) (c + s) (s, c: sin, cos of phi/2) rather than 1 - 2 s^2: the form of
 #     the measured least error among 1 - 2 s^2, 1 - 2 s^2 or 2 c^2 - 1, (c - s) (c + s)
-#     (rigidsym.codegen.cos_form); worst ratio to the rule max(2 e_best, 4 u) (e_best: the
-#     most accurate of the textbook formula and the forms tried, per point;
-#     rigidsym.codegen.rule) at 348 points of the regimes (rigidsym.codegen.regimes, exact,
-#     rounded to float64) 3.2 -> 2.7, never worse than the textbook formula by that rule;
-#     equal to the declared formula by the zero test (exact-cancel)
+#     (rigidsym.codegen.accuracy.cos_form); worst ratio to the rule max(2 e_best, 4 u)
+#     (e_best: the most accurate of the textbook formula and the forms tried, per point;
+#     rigidsym.codegen.accuracy.rule) at 348 points of the regimes
+#     (rigidsym.codegen.accuracy.regimes, exact, rounded to float64) 3.2 -> 2.7, never worse
+#     than the textbook formula by that rule; equal to the declared formula by the zero test
+#     (exact-cancel)
 """Point of the screw axis closest to the origin, with the Jacobians of its outputs.
 
 p0 = (Q - 1)^T (Q a - a') / (2 (1 - cos phi)), Q from (e, phi) by (2.49); and d(output)/d(input) by sympy on the declared formula

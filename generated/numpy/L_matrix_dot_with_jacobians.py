@@ -9,11 +9,12 @@
 # accuracy rewrite (main): cos phi as 1 - 2 s^2 or 2 c^2 - 1: the bare cos phi left by the
 #     half-angle rewrite, as 1 - 2 s^2 or 2 c^2 - 1 (s, c: sin, cos of phi/2) rather than 1 -
 #     2 s^2: the form of the measured least error among 1 - 2 s^2, 1 - 2 s^2 or 2 c^2 - 1, (c
-#     - s) (c + s) (rigidsym.codegen.cos_form); worst ratio to the rule max(2 e_best, 4 u)
-#     (e_best: the most accurate of the textbook formula and the forms tried, per point;
-#     rigidsym.codegen.rule) at 408 points of the regimes (rigidsym.codegen.regimes, exact,
-#     rounded to float64) 1 -> 0.79, never worse than the textbook formula by that rule; equal
-#     to the declared formula by the zero test (exact-cancel)
+#     - s) (c + s) (rigidsym.codegen.accuracy.cos_form); worst ratio to the rule max(2 e_best,
+#     4 u) (e_best: the most accurate of the textbook formula and the forms tried, per point;
+#     rigidsym.codegen.accuracy.rule) at 408 points of the regimes
+#     (rigidsym.codegen.accuracy.regimes, exact, rounded to float64) 1 -> 0.79, never worse
+#     than the textbook formula by that rule; equal to the declared formula by the zero test
+#     (exact-cancel)
 """Time derivative of L_matrix along omega, with the Jacobians of its outputs.
 
 d/dt L_matrix(e(t), phi(t)) with e_dot, phi_dot from omega (the corrected form where the printed one does not hold); and d(output)/d(input) by sympy on the declared formula

@@ -11,9 +11,10 @@
 #     phi / (2 - 2 cos phi) - 2 sin^2 phi / (2 - 2 cos phi)^2); merged into one reduced
 #     fraction (-1 / (2 - 2 cos phi)) they do not; worst ratio to the rule max(2 e_best, 4 u)
 #     (e_best: the most accurate of the textbook formula and the forms tried, per point;
-#     rigidsym.codegen.rule) at 68 points of the regimes (rigidsym.codegen.regimes, exact,
-#     rounded to float64) 1.5 -> 0.5, never worse than the textbook formula by that rule;
-#     equal to the declared formula by the zero test (exact-cancel)
+#     rigidsym.codegen.accuracy.rule) at 68 points of the regimes
+#     (rigidsym.codegen.accuracy.regimes, exact, rounded to float64) 1.5 -> 0.5, never worse
+#     than the textbook formula by that rule; equal to the declared formula by the zero test
+#     (exact-cancel)
 """Left inverse of the rate matrix of the linear invariants [u; u0]: omega = L_tilde rate, with the Jacobians of its outputs.
 
 L_tilde(e, phi), 3x4; and d(output)/d(input) by sympy on the declared formula

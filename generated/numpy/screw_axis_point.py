@@ -11,9 +11,10 @@
 #     a'))/2 (plus exact terms in e.e - 1, compensated, for a unit vector a few ulps off)
 #     reads the axis and the angle from the inputs; worst ratio to the rule max(2 e_best, 4 u)
 #     (e_best: the most accurate of the textbook formula and the forms tried, per point;
-#     rigidsym.codegen.rule) at 55 points of the regimes (rigidsym.codegen.regimes, exact,
-#     rounded to float64) a singular flag -> 0.89, never worse than the textbook formula by
-#     that rule; equal to the declared formula by the zero test (exact-cancel)
+#     rigidsym.codegen.accuracy.rule) at 55 points of the regimes
+#     (rigidsym.codegen.accuracy.regimes, exact, rounded to float64) a singular flag -> 0.89,
+#     never worse than the textbook formula by that rule; equal to the declared formula by the
+#     zero test (exact-cancel)
 """Point of the screw axis closest to the origin.
 
 p0 = (Q - 1)^T (Q a - a') / (2 (1 - cos phi)), Q from (e, phi) by (2.49)
@@ -44,7 +45,8 @@ def _two_prod(a, b, k):
 
 
 def _diffprod(a, b, c, d):
-    """a b - c d compensated (Kahan's algorithm, its fma emulated; rigidsym.codegen.compensated)."""
+    """a b - c d compensated (Kahan's algorithm, its fma emulated;
+    rigidsym.codegen.accuracy.compensated)."""
     k = 2.0 ** ((numpy.finfo(a.dtype).nmant + 2) // 2) + 1.0 if isinstance(a, numpy.ndarray) and a.dtype.kind == 'f' else 134217729.0
     p, q = _two_prod(a, b, k)
     w, r = _two_prod(c, d, k)

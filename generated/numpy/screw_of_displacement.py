@@ -10,19 +10,21 @@
 # accuracy rewrite (near_pi_1): compensated sums of products (p0): a dot product (or a cross
 #     product's component plus a term) that cancels loses u sum |a_i b_i| / |s| relative when
 #     summed plainly; compensated (Dot2 of Ogita, Rump and Oishi,
-#     rigidsym.codegen.compensated.SumProd) it keeps about 1 u; worst ratio to the rule max(2
-#     e_best, 4 u) (e_best: the most accurate of the textbook formula and the forms tried, per
-#     point; rigidsym.codegen.rule) at 9 points of the regimes (rigidsym.codegen.regimes,
-#     exact, rounded to float64) 1.5 -> 0.47, never worse than the textbook formula by that
-#     rule; equal to the declared formula by the zero test (exact-cancel)
+#     rigidsym.codegen.accuracy.compensated.SumProd) it keeps about 1 u; worst ratio to the
+#     rule max(2 e_best, 4 u) (e_best: the most accurate of the textbook formula and the forms
+#     tried, per point; rigidsym.codegen.accuracy.rule) at 9 points of the regimes
+#     (rigidsym.codegen.accuracy.regimes, exact, rounded to float64) 1.5 -> 0.47, never worse
+#     than the textbook formula by that rule; equal to the declared formula by the zero test
+#     (exact-cancel)
 # accuracy rewrite (main): the axis point from the skew part of Q: (Q - 1)^T (Q a - a') reads
 #     the diagonal of Q, whose rounding is relative u/phi of it as phi -> 0; cot(phi/2)/2 e x
 #     c + (c - e (e.c))/2 from vect(Q) and tr Q reads the axis from the skew part (valid where
 #     1 + tr Q does not cancel); worst ratio to the rule max(2 e_best, 4 u) (e_best: the most
-#     accurate of the textbook formula and the forms tried, per point; rigidsym.codegen.rule)
-#     at 17 points of the regimes (rigidsym.codegen.regimes, exact, rounded to float64) a
-#     singular flag -> 0.82, never worse than the textbook formula by that rule; equal to the
-#     declared formula by the zero test (exact-cancel)
+#     accurate of the textbook formula and the forms tried, per point;
+#     rigidsym.codegen.accuracy.rule) at 17 points of the regimes
+#     (rigidsym.codegen.accuracy.regimes, exact, rounded to float64) a singular flag -> 0.82,
+#     never worse than the textbook formula by that rule; equal to the declared formula by the
+#     zero test (exact-cancel)
 """Screw of a finite displacement: axis, angle, axis point, pitch, Plücker array.
 
 (e, phi) from Q as natural_invariants_from_rotation; p0 = (Q - 1)^T (Q a - a') / ((1 - Q_00) + (1 - Q_11) + (1 - Q_22)); pitch = e^T (a' - a) / phi; kappa = [e; p0 x e]
@@ -53,7 +55,8 @@ def _two_prod(a, b, k):
 
 
 def _diffprod(a, b, c, d):
-    """a b - c d compensated (Kahan's algorithm, its fma emulated; rigidsym.codegen.compensated)."""
+    """a b - c d compensated (Kahan's algorithm, its fma emulated;
+    rigidsym.codegen.accuracy.compensated)."""
     k = 2.0 ** ((numpy.finfo(a.dtype).nmant + 2) // 2) + 1.0 if isinstance(a, numpy.ndarray) and a.dtype.kind == 'f' else 134217729.0
     p, q = _two_prod(a, b, k)
     w, r = _two_prod(c, d, k)

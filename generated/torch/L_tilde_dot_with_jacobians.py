@@ -9,10 +9,10 @@
 # accuracy rewrite (main): derivatives of the rewritten values: the Jacobian of the declared
 #     grouping inherits its cancellation; the derivatives of the rewritten values do not;
 #     worst ratio to the rule max(2 e_best, 4 u) (e_best: the most accurate of the textbook
-#     formula and the forms tried, per point; rigidsym.codegen.rule) at 60 points of the
-#     regimes (rigidsym.codegen.regimes, exact, rounded to float64) a singular flag -> 0.85,
-#     never worse than the textbook formula by that rule; equal to the declared formula by the
-#     zero test (exact-cancel)
+#     formula and the forms tried, per point; rigidsym.codegen.accuracy.rule) at 60 points of
+#     the regimes (rigidsym.codegen.accuracy.regimes, exact, rounded to float64) a singular
+#     flag -> 0.85, never worse than the textbook formula by that rule; equal to the declared
+#     formula by the zero test (exact-cancel)
 """Time derivative of L_tilde along omega, with the Jacobians of its outputs.
 
 d/dt L_tilde(e(t), phi(t)) with e_dot, phi_dot from omega (the corrected form where the printed one does not hold); and d(output)/d(input) by sympy on the declared formula

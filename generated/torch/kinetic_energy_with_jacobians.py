@@ -9,11 +9,12 @@
 # accuracy rewrite (main): compensated sums of products (T): a dot product (or a cross
 #     product's component plus a term) that cancels loses u sum |a_i b_i| / |s| relative when
 #     summed plainly; compensated (Dot2 of Ogita, Rump and Oishi,
-#     rigidsym.codegen.compensated.SumProd) it keeps about 1 u; worst ratio to the rule max(2
-#     e_best, 4 u) (e_best: the most accurate of the textbook formula and the forms tried, per
-#     point; rigidsym.codegen.rule) at 38 points of the regimes (rigidsym.codegen.regimes,
-#     exact, rounded to float64) 1.4 -> 0.41, never worse than the textbook formula by that
-#     rule; equal to the declared formula by the zero test (exact-cancel)
+#     rigidsym.codegen.accuracy.compensated.SumProd) it keeps about 1 u; worst ratio to the
+#     rule max(2 e_best, 4 u) (e_best: the most accurate of the textbook formula and the forms
+#     tried, per point; rigidsym.codegen.accuracy.rule) at 38 points of the regimes
+#     (rigidsym.codegen.accuracy.regimes, exact, rounded to float64) 1.4 -> 0.41, never worse
+#     than the textbook formula by that rule; equal to the declared formula by the zero test
+#     (exact-cancel)
 """Kinetic energy of a rigid body, with the Jacobians of its outputs.
 
 T = 1/2 m c_dot.c_dot + 1/2 omega^T I_C omega; and d(output)/d(input) by sympy on the declared formula
@@ -44,7 +45,8 @@ def _two_prod(a, b, k):
 
 
 def _diffprod(a, b, c, d):
-    """a b - c d compensated (Kahan's algorithm, its fma emulated; rigidsym.codegen.compensated)."""
+    """a b - c d compensated (Kahan's algorithm, its fma emulated;
+    rigidsym.codegen.accuracy.compensated)."""
     k = 4097.0 if a.dtype == torch.float32 else 134217729.0
     p, q = _two_prod(a, b, k)
     w, r = _two_prod(c, d, k)

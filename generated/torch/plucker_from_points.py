@@ -9,12 +9,12 @@
 # accuracy rewrite (main): expanded numerator: the declared grouping subtracts nearly equal
 #     products (p1 x (p2 - p1) with |p1| >> |p2 - p1|); expanded, the cancelling terms cancel
 #     symbolically, and the difference of two products left is compensated (Kahan's algorithm,
-#     rigidsym.codegen.compensated: p1 x p2 of nearly coincident points cancels too); worst
-#     ratio to the rule max(2 e_best, 4 u) (e_best: the most accurate of the textbook formula
-#     and the forms tried, per point; rigidsym.codegen.rule) at 28 points of the regimes
-#     (rigidsym.codegen.regimes, exact, rounded to float64) 8.4e+04 -> 0.48, never worse than
-#     the textbook formula by that rule; equal to the declared formula by the zero test
-#     (exact-cancel)
+#     rigidsym.codegen.accuracy.compensated: p1 x p2 of nearly coincident points cancels too);
+#     worst ratio to the rule max(2 e_best, 4 u) (e_best: the most accurate of the textbook
+#     formula and the forms tried, per point; rigidsym.codegen.accuracy.rule) at 28 points of
+#     the regimes (rigidsym.codegen.accuracy.regimes, exact, rounded to float64) 8.4e+04 ->
+#     0.48, never worse than the textbook formula by that rule; equal to the declared formula
+#     by the zero test (exact-cancel)
 """Plücker array of the line through two points.
 
 kappa = [e; p1 x e], e = (p2 - p1)/||p2 - p1||
@@ -45,7 +45,8 @@ def _two_prod(a, b, k):
 
 
 def _diffprod(a, b, c, d):
-    """a b - c d compensated (Kahan's algorithm, its fma emulated; rigidsym.codegen.compensated)."""
+    """a b - c d compensated (Kahan's algorithm, its fma emulated;
+    rigidsym.codegen.accuracy.compensated)."""
     k = 4097.0 if a.dtype == torch.float32 else 134217729.0
     p, q = _two_prod(a, b, k)
     w, r = _two_prod(c, d, k)
