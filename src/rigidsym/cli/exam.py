@@ -30,11 +30,11 @@ def add_arguments(p) -> None:
 
 def run(args) -> int:
     """Write the handout and the key; 0 written, 2 a bad spec or data, 3 a defect."""
-    from rigidsym.exercises import exam
+    from rigidsym.course import exam
 
     try:
         if getattr(args, "students", None):
-            from rigidsym.course.roster import class_exam
+            from rigidsym.course import class_exam
             paths = class_exam(args.spec, args.students, args.out, seed=args.seed)
         else:
             paths = exam(args.spec, args.out, seed=args.seed)

@@ -73,7 +73,8 @@ def to_json(ids, data: dict | None = None) -> str:
     ``{"schema": 2, "python_flint": ..., "exercises": [record, ...]}``, a record per
     :func:`rigidsym.course.worked.solution_record` (the data solved on, the answers,
     the statements in words, the checks; ``reason`` when ill-posed)."""
-    from rigidsym.course.worked import solution_record, solve
+    from rigidsym.course import solution_record
+    from rigidsym.course import solve_exercise as solve
     from rigidsym.report.record import document_header
 
     items = [solution_record(solve(i, **(data or {}))) for i in ids]
@@ -88,9 +89,8 @@ def parse_value(ex_id: str, name: str, text: str):
     for a matrix (``1,0,0;0,2,0;0,0,3`` or ``[[1,0,0],[0,2,0],[0,0,3]]``), the text itself
     for a scalar or a choice (an unknown name is left to :func:`solve`, which lists the
     exercise's parameters)."""
-    from rigidsym.course.worked import parameters
-    from rigidsym.course.worked.numbers import split_text
-    from rigidsym.course.worked.units import split_unit
+    from rigidsym.course import exercise_parameters as parameters
+    from rigidsym.course import split_text, split_unit
 
     if split_unit(text)[1] is not None:
         return text.strip()   # a unit for every entry: solve() splits and converts
@@ -125,7 +125,7 @@ def _data(args, ex_id: str) -> dict:
 def _notebook(ex_id: str, path: str, data: dict) -> None:
     """Write the notebook: built with the data (nbformat), or copied from the package."""
     try:
-        from rigidsym.exercises import write_notebook
+        from rigidsym.course import write_notebook
         print(f"wrote {write_notebook(ex_id, path, **data)}")
     except ModuleNotFoundError as exc:
         if exc.name != "nbformat":
@@ -135,7 +135,7 @@ def _notebook(ex_id: str, path: str, data: dict) -> None:
                              "\"rigidsym[notebooks]\"") from None
         from importlib.resources import files
 
-        from rigidsym.course.notebooks import file_name
+        from rigidsym.course import file_name
         packaged = files("rigidsym.generated") / "notebooks" / file_name(ex_id)
         print(f"wrote {write_atomic(path, packaged.read_text(encoding='utf-8'))}")
 
@@ -165,7 +165,8 @@ def run(args) -> int:
 
 
 def _run(args) -> int:
-    from rigidsym.course.worked import EXERCISE_IDS, normalise_id, parameters, render_text
+    from rigidsym.course import EXERCISE_IDS, normalise_id, render_text
+    from rigidsym.course import exercise_parameters as parameters
 
     if args.all and args.id:
         print("rigidsym: error: give one exercise id (e.g. 3.10) or --all, not both",
@@ -225,7 +226,7 @@ def answers_text(s) -> str:
 
     import sympy as sp
 
-    from rigidsym.course.worked.render import display
+    from rigidsym.course import display
 
     if s.status != "solved":
         return textwrap.fill(s.reason, 100, initial_indent="    ", subsequent_indent="      ")
@@ -267,7 +268,7 @@ def _exit_code(s) -> int:
 
 def _next_step(args) -> str:
     """What to run after a bad exercise id or bad data."""
-    from rigidsym.course.worked import normalise_id
+    from rigidsym.course import normalise_id
 
     try:
         ex = normalise_id(args.id) if args.id else None
@@ -281,7 +282,7 @@ def _next_step(args) -> str:
 def _list() -> int:
     """``rigidsym exercise`` with no id: the exercises and their titles, read from the
     modules' ``TITLE`` constants (nothing is solved)."""
-    from rigidsym.course.worked import EXERCISE_IDS, exercise_module
+    from rigidsym.course import EXERCISE_IDS, exercise_module
 
     print("The chapter's 21 exercises (rigidsym exercise 3.10 solves one; --all solves all):")
     for i in EXERCISE_IDS:
@@ -292,8 +293,9 @@ def _list() -> int:
 def _solve_one(ex_id: str, data: dict):
     """Solve one exercise with a spinner on stderr (a solution can take seconds)."""
     from rigidsym.core.progress import Reporter
-    from rigidsym.course.worked import parameters, solve
-    from rigidsym.course.worked.data import read_data
+    from rigidsym.course import exercise_parameters as parameters
+    from rigidsym.course import read_data
+    from rigidsym.course import solve_exercise as solve
 
     # bad data is one error line, before any progress line
     rest = {k: v for k, v in data.items() if k != "tol"}
@@ -313,7 +315,7 @@ def _run_all(ids, fmt: str, json_path: str | None) -> int:
     """Solve every exercise with progress on stderr; a line per exercise (or the JSON
     document) on stdout."""
     from rigidsym.core.progress import Reporter
-    from rigidsym.course.worked import solve
+    from rigidsym.course import solve_exercise as solve
 
     n_ok = 0
     with Reporter("rigidsym exercise --all") as rep, \

@@ -75,7 +75,7 @@ def cmd_generate(args) -> int:
         return 0
     touched = write(res, out)
     if books:
-        from rigidsym.course.notebooks import NOTEBOOK_DIR, write_files
+        from rigidsym.course import NOTEBOOK_DIR, write_files
         touched += [f"{NOTEBOOK_DIR}/{n}" for n in write_files(books, out / NOTEBOOK_DIR)]
     for t in touched:
         print(f"wrote {t}")
@@ -87,7 +87,7 @@ def cmd_generate(args) -> int:
 def _notebooks() -> dict[str, str]:
     """The exercise notebooks (``{}`` with a note when nbformat is not installed)."""
     try:
-        from rigidsym.course.notebooks import notebook_files
+        from rigidsym.course import notebook_files
         return notebook_files()
     except ModuleNotFoundError as exc:
         if exc.name != "nbformat":
@@ -101,7 +101,7 @@ def _check_notebooks(books: dict[str, str], out: Path) -> bool:
     """Print the stale notebook files; True when any differs."""
     if not books:
         return False
-    from rigidsym.course.notebooks import NOTEBOOK_DIR, check_files
+    from rigidsym.course import NOTEBOOK_DIR, check_files
     stale = check_files(books, out / NOTEBOOK_DIR)
     for name in stale:
         print(f"stale notebook file: generated/{NOTEBOOK_DIR}/{name}")

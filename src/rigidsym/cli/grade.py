@@ -39,7 +39,7 @@ def add_arguments(p) -> None:
 def run(args) -> int:
     """Grade the class: 0 every answer right, 1 any wrong or missing, 2 bad input, 3 a
     defect. Writes DIR/grades.csv and DIR/gradebook.csv and prints a line per student."""
-    from rigidsym.course.gradebook import grade_class
+    from rigidsym.course import grade_class
 
     try:
         done = grade_class(args.dir, args.answers)
@@ -58,7 +58,7 @@ def run(args) -> int:
 def read_answers(path: str | Path) -> dict[str, dict]:
     """Students' answers, ``{student: {answer name: value}}``: as
     :func:`rigidsym.course.answers.read_answers` (imported when asked for)."""
-    from rigidsym.course.answers import read_answers as read
+    from rigidsym.course import read_answers as read
 
     return read(path)
 
@@ -67,7 +67,7 @@ def grade_command(solution, path: str, json_target: str | None) -> int:
     """Grade the answers at ``path`` against ``solution``; print (or write) the result.
     Returns 0 when every answer is right, 1 when any is wrong or missing (a script or a CI
     job can tell), after printing the grades either way."""
-    from rigidsym.exercises import grade
+    from rigidsym.course import grade
 
     students = read_answers(path)
     graded = {who: [g.as_dict() for g in grade(solution, ans)] for who, ans in

@@ -75,7 +75,8 @@ def _chapter_files(results, full: bool, certified: dict | None = None
 
 def _solve_exercises(rep) -> None:
     """Solve every exercise (the report hook then reads the solutions from the cache)."""
-    from rigidsym.course.worked import EXERCISE_IDS, solve
+    from rigidsym.course import EXERCISE_IDS
+    from rigidsym.course import solve_exercise as solve
 
     with rep.phase(f"solving {len(EXERCISE_IDS)} exercises", total=len(EXERCISE_IDS)) as ph:
         ok = 0
@@ -123,7 +124,7 @@ def run(args) -> int:
                 ph.label(f"rendering {name}")
                 written.append(write_atomic(out / name, make()))
                 ph.advance(1, label=f"wrote {name}")
-        from rigidsym.course.exercise_report import rendered
+        from rigidsym.course import rendered
 
         if rendered() is None:  # else nothing they depend on changed (issue 39)
             _solve_exercises(rep)
