@@ -14,8 +14,7 @@ number ``kappa = sum_i ||J_oi|| ||x_i|| / ||ref||`` (``J_oi``: the derivative al
 tangent space of argument ``i``; a relative perturbation ``u`` of every argument moves the
 output by at most ``u kappa``). Verdict **accurate** by issue 37's rule
 (:mod:`rigidsym.codegen.accuracy.rule`): ``err <= 8 u (kappa + 1)`` (the absolute floor judges
-outputs
-that are exactly zero) **and** ``err <= max(2 e_ref, 4 u)``, ``e_ref`` the smallest error of
+outputs that are exactly zero) **and** ``err <= max(2 e_ref, 4 u)``, ``e_ref`` the smallest error of
 the textbook formula (the declaration, naively, in the same type) and of each peer that has
 the operation (``_accuracy_peers``; float64), the second half measured against the truth at
 the input the kernel got (the unconstrained arguments as rounded); where it fails at the

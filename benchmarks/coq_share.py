@@ -1,7 +1,7 @@
 """How many of the chapter's verified identities Coq proves (issue 49): each verified id's
 certificate exported (:func:`rigidsym.checking.certifying.certificates.certificate`), written as a
-Coq
-file (:func:`rigidsym.checking.certifying.coq.coq_file`) and checked by ``coqc`` with a time limit
+Coq file (:func:`rigidsym.checking.certifying.coq.coq_file`) and checked by ``coqc`` with a time
+limit
 per
 id. One JSON line per id (``id``, ``outcome`` = proved / failed / timeout / no-file,
 ``seconds`` of coqc wall time, ``why``) is appended to ``--out`` as it is measured, so a run

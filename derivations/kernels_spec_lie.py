@@ -2,8 +2,7 @@
 :mod:`rigidsym.derivations.lie_maps` (verified by ``derivations/lie_groups.py``); their
 removable singularities at ``w = 0`` become certified series branches in the generator
 (:mod:`rigidsym.codegen.removable.singularities`). The logarithms reuse the natural invariants'
-branches
-near ``phi = pi`` (the axis from the symmetric part of ``Q``).
+branches near ``phi = pi`` (the axis from the symmetric part of ``Q``).
 
 They join the book's ``KERNELS`` (``derivations/kernels_spec.py``); their names are pinned in
 ``tests/test_public_api.py``.

@@ -51,7 +51,8 @@ _PUBLIC = r"rigidsym(\.(declare|kernels|cli|codegen\.spec|api))?"
 nitpick_ignore_regex = [
     (r"py:.*", r"(?!rigidsym\b)[\w.]+"),                    # numpy, sympy, the stdlib, ...
     (r"py:.*", r"rigidsym\.(algebra|checking|zero|printing|report|generated|derivations"
-               r"|_\w+|codegen\.(?!spec\b)\w+|kernels\._\w+)(\.\w+)*"),
+               r"|core|registry|course|_\w+|codegen\.(?!spec\b)\w+"
+               r"|kernels\.(_\w+|cbuild|runtime|arrays))(\.\w+)*"),
     (r"py:.*", r"(ArrayLike|NDArray|OnSingular|OutArrays|Outcome|ModuleSpec|Path)"),
 ]
 

@@ -1,6 +1,5 @@
 """The peers' table (:mod:`rigidsym.codegen.accuracy.peers`, issue 48 item 2): every adapter
-computes
-its kernel's outputs, and the conventions the adapters rest on (right or left Jacobians,
+computes its kernel's outputs, and the conventions the adapters rest on (right or left Jacobians,
 ``[v; w]`` or ``[w; v]``, the logarithm's domain) hold numerically, not by belief.
 
 Before it the peers were a list in the harness (benchmarks/_accuracy_peers.py) with no

@@ -13,8 +13,8 @@ Example:
     'ill-posed'
 """
 
+from rigidsym.course.exercises import EXERCISE_IDS as _EXERCISE_IDS
 from rigidsym.course.exercises import (
-    EXERCISE_IDS,
     Graded,
     IllPosed,
     Param,
@@ -27,6 +27,9 @@ from rigidsym.course.exercises import (
     solve,
     write_notebook,
 )
+
+#: The ids of the chapter's exercises in order, ``"ex3.1"`` to ``"ex3.21"``.
+EXERCISE_IDS = _EXERCISE_IDS
 
 __all__ = ["solve", "parameters", "figure", "write_notebook", "grade", "exam",
            "EXERCISE_IDS", "Solution", "Parameters", "Param", "IllPosed", "Graded"]

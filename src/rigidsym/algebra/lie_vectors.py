@@ -7,8 +7,7 @@ robotics" (2018), App. B (SO(3)) and D (SE(3)), and Barfoot, *State Estimation f
 Robotics* (2017), Sec. 7.1; they equal Modern Robotics' (3.51), (3.88) with ``w = theta
 omega``. As printed they are singular at ``w = 0``, a removable singularity the code
 generator replaces by its series (:mod:`rigidsym.codegen.removable.singularities`); the zero test
-reads
-``theta`` through the polar parametrisation ``w = theta e``
+reads ``theta`` through the polar parametrisation ``w = theta e``
 (:mod:`rigidsym.checking.deciding.branches`).
 """
 

@@ -186,9 +186,8 @@ def build_info(directory: str | Path | None = None) -> dict:
 
     Raises:
         TypeError: ``directory`` is not a str, a path-like or None.
-        rigidsym.kernels.cbuild.extension.NoCompiledKernels: nothing compiled matches and no
-        compiler
-            can build it (the NumPy backend runs then).
+        rigidsym.kernels.cbuild.extension.NoCompiledKernels: nothing compiled matches and
+            no compiler can build it (the NumPy backend runs then).
 
     Example:
         >>> build_info()["path"] in build_info()["paths"]

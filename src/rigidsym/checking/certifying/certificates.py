@@ -6,8 +6,8 @@ The statement is the id's relations with the model substituted (the same entries
 test decides), printed in a small grammar (``+ - * /``, integer powers, integers, names,
 ``cos``/``sin`` of rational combinations of declared angles and ``pi``) with every shared
 subexpression written once as a ``let`` (:mod:`rigidsym.checking.certifying.statement`); the atoms
-are
-declared with their kinds, whose hypotheses the checker generates itself. The evidence by verdict:
+are declared with their kinds, whose hypotheses the checker generates itself. The evidence by
+verdict:
 
 - verified: every printed member and claim an ``identity`` (the checker re-computes it
   with its own parametrisations);
@@ -136,8 +136,7 @@ def certificate(eq_id: str, verdict: str, members: list[dict] | None = None,
         seed: the seed of the counterexample search (default: the id's).
         cofactors: give an identity cofactor evidence where
             :func:`rigidsym.checking.certifying.cofactors.cofactor_evidence` finds it (else, and
-            when
-            ``False``, a re-computation certificate).
+            when ``False``, a re-computation certificate).
 
     Raises:
         Unprintable: the statement leaves the grammar, an atom has a kind the checker does

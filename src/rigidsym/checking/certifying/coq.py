@@ -6,8 +6,7 @@ the hypotheses set to zero.
 
 A certificate whose atoms are unit vectors, angles and free atoms only is written instead
 by :mod:`rigidsym.checking.certifying.coq_normal_form`: its abbreviations as ``Definition``s, each
-rewritten to
-its normal form modulo the hypotheses, the entry cleared of its divisors and closed by
+rewritten to its normal form modulo the hypotheses, the entry cleared of its divisors and closed by
 ``field`` (3.14 and 3.15: past 240 s inlined, 3-6 s so); where that export does not apply
 (a rotation, a motion) or refuses (a numerator that does not reduce to 0), the cofactor
 proof above.
@@ -152,8 +151,7 @@ def _poly(p) -> str:
 def coq_file(cert: dict, normal_forms: bool = True) -> str:
     """The Coq file proving every cofactor-certified relation of ``cert``: by normal forms
     where :mod:`rigidsym.checking.certifying.coq_normal_form` applies (unless ``normal_forms`` is
-    false), else by
-    the certificate's cofactors.
+    false), else by the certificate's cofactors.
 
     Raises:
         NoProof: no relation of ``cert`` has cofactor evidence Coq can take.

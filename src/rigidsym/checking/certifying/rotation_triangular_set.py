@@ -262,8 +262,7 @@ def rem_square(N, i: int, s):
 def derived(R, names: list[str], transform: bool, K: int, d) -> list:
     """More members of a rotation's ideal with their cofactors written out, for the linear
     ansatz (:mod:`rigidsym.checking.certifying.cofactor_ansatz`): ``F = Q - C(Q) = -(det Q - 1) Q +
-    C(Q) H``
-    and ``E = Q Q^T - 1 = F Q^T + (det Q - 1) 1`` (``H = Q^T Q - 1``; from ``C(Q) Q^T =
+    C(Q) H`` and ``E = Q Q^T - 1 = F Q^T + (det Q - 1) 1`` (``H = Q^T Q - 1``; from ``C(Q) Q^T =
     det Q``), entry by entry, and their time derivatives up to ``K``: a list of ``(G,
     {(hypothesis index, j): coefficient})`` with ``G = sum coefficient * h^(j)``."""
     H = hypotheses(R, names, transform)

@@ -27,8 +27,7 @@ within it); else, from all double, each node is made float in the order of its o
 named in the generated header.
 
 The budget is the rule of issue 37 (:mod:`rigidsym.codegen.accuracy.rule`), per output and point:
-the
-error (normwise relative) within ``max(2 e_ref, 4 u)``, ``e_ref`` the error of the textbook
+the error (normwise relative) within ``max(2 e_ref, 4 u)``, ``e_ref`` the error of the textbook
 formula (the declaration evaluated naively, in float32 arithmetic, at the same inputs),
 ``u = 2**-24``; its condition half (``8 u (kappa + 1)``) is the harness's, which has the
 condition number. So a node stays in double only where float would make the kernel worse

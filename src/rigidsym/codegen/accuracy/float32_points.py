@@ -1,8 +1,7 @@
 """The points a float32 precision plan is measured on (:mod:`rigidsym.codegen.accuracy.float32`):
 random and adversarial points by argument kind, the accuracy harness's regimes
 (:mod:`rigidsym.codegen.accuracy.regimes`), as float32 inputs and as the inputs the harness takes
-the
-truth at (issue 37)."""
+the truth at (issue 37)."""
 
 from __future__ import annotations
 

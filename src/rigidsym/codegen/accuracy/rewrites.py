@@ -179,8 +179,7 @@ RULES = (
             "|p1| >> |p2 - p1|); expanded, the cancelling terms cancel symbolically, and "
             "the difference of two products left is compensated (Kahan's algorithm, "
             "rigidsym.codegen.accuracy.compensated: p1 x p2 of nearly coincident points "
-            "cancels too)",
-            _expand_numerators),
+            "cancels too)", _expand_numerators),
     Rewrite("compensated sums of products",
             "a dot product (or a cross product's component plus a term) that cancels loses "
             "u sum |a_i b_i| / |s| relative when summed plainly; compensated (Dot2 of Ogita, "

@@ -3,8 +3,7 @@
 For a kernel ``f`` with a generated ``f_with_jacobians`` (see
 :mod:`rigidsym.codegen.jacobians`), ``jacobian("f")`` is the module-level function
 ``rigidsym.kernels.runtime.jacobians.f_jacobian``: same arguments as ``f`` (positional or keyword,
-plus
-``check``, ``on_singular`` and ``threads``; no ``out``), returning ``(values, jac)`` where
+plus ``check``, ``on_singular`` and ``threads``; no ``out``), returning ``(values, jac)`` where
 ``values`` is what ``f`` returns and ``jac[output][input]`` has shape ``batch + output_shape +
 input_shape``, entry ``[..., i, j]`` = ``d output[i] / d input[j]`` (JAX convention), one
 Jacobian per sample of the broadcast batch (never summed over a broadcast input).

@@ -3,8 +3,7 @@ books, issue 52): ``a \\cdot b \\times c`` (Goldstein's and Kane's triple produc
 chain of ``\\cdot`` (``a \\cdot b \\cdot c``). The grammar groups a chain from the left,
 which TeX does not say; :func:`rigidsym.latex.rewrites.mixed_products` marks such chains and
 these functions, called by :class:`rigidsym.latex.transformer.book_notations.BookRules` with the
-reader
-``r`` (its ``_val``, ``dot``, ``cross``, ``readings`` and ``_note``), read every grouping,
+reader ``r`` (its ``_val``, ``dot``, ``cross``, ``readings`` and ``_note``), read every grouping,
 keep the ones whose shapes fit, and refuse where those differ: never one of them by hope.
 Such a refusal is of construct ``grouping``: its fix is parentheses, so the reader neither
 retries other shapes nor suggests a ``--let``.
