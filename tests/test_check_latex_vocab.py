@@ -8,8 +8,8 @@ import pytest
 import sympy as sp
 
 import rigidsym
-from rigidsym.algebra.lie import AdT, AdV, Expm, Hat, Logm
 from rigidsym.algebra.operators import Cpm, Diff
+from rigidsym.algebra.rigid_motions import AdT, AdV, Expm, Hat, Logm
 from rigidsym.latex import LatexError, parse_latex
 from rigidsym.latex.table import Glyph
 from rigidsym.registry import declarations as registry

@@ -15,7 +15,7 @@ from dataclasses import dataclass
 import sympy as sp
 
 from rigidsym.algebra import symbols as _sym
-from rigidsym.algebra.motions import Ad, hat, transform
+from rigidsym.algebra.rigid_motions import Ad, hat, transform
 from rigidsym.core.errors import BadInput
 from rigidsym.latex.reader import parse_latex
 from rigidsym.latex.shapes import LatexError

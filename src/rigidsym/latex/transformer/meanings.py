@@ -119,7 +119,7 @@ class MeaningRules:
     def _derivative(self, key, n, arg):
         """``f'(x)``, ``f''(x)``: the n-th derivative of the ``--let`` function ``f`` of one
         scalar parameter, at ``arg`` (Lagrange's notation, as the books write it)."""
-        from rigidsym.algebra import motions
+        from rigidsym.algebra import rigid_motions
         from rigidsym.printing import notation
 
         s, written = sp.Dummy("s", real=True), key + "'" * n
@@ -138,7 +138,7 @@ class MeaningRules:
         self._note(f"{written}({a}): derivative {n} of the --let function "
                    f"{key}({params[0]}), at {params[0]} = {a}")
         for _ in range(n):
-            v = motions.diff(v, s)
+            v = rigid_motions.diff(v, s)
         return v.subs(s, arg)
 
     def apply(self, items):
