@@ -24,7 +24,7 @@ LOG_TRACE = r"\theta = \arccos\left(\frac{\operatorname{tr} R - 1}{2}\right)"
 @pytest.fixture(autouse=True)
 def _forget_latex_ids():
     yield
-    registry.forget_module("rigidsym.latex.letting")
+    registry.forget_module("rigidsym.latex.statement")
 
 
 def _verdict(latex, let):

@@ -98,8 +98,8 @@ def _printed_from_latex(eq, st):
     (a constrained atom such as ``theta = angle("theta")`` stands for itself)."""
     import sys
 
-    from rigidsym.latex.lending import module_symbols
-    from rigidsym.latex.letting import read_statement
+    from rigidsym.latex.lets import module_symbols
+    from rigidsym.latex.statement import read_statement
 
     mod = sys.modules.get(eq.module)
     lend = module_symbols(vars(mod)) if mod is not None else {}

@@ -6,7 +6,7 @@ under ``read as:``; docs/check-latex.md lists every rule.
   ``--let``, a model or a module) before a parenthesised scalar is that symbol applied to
   it: the symbol itself, which depends on the argument as its model says. Any other
   ``x(...)`` is a product (``a(b + c)``, ``A(\\mathbf{x} + \\mathbf{y})``). A symbol applied
-  to two different arguments is refused (:mod:`rigidsym.latex.letting`).
+  to two different arguments is refused (:mod:`rigidsym.latex.statement`).
 - ``[x]`` of a 3-vector (Lynch-Park's bracket): the cross-product matrix, printed ``[x]`` as
   written, never as the chapter's ``CPM(x)`` (:class:`BracketCpm`).
 - ``I_3``, ``\\mathbf{I}_{3}``, ``\\mathbf{I}_{3\\times 3}``, ``\\mathbf{1}_3``: the identity of
@@ -246,7 +246,7 @@ class MeaningRules:
         a product ``X y`` or ``X`` applied to ``y``; no rule settles it (issue 52, item 2).
         The reading follows ``self.choices[key]`` (``"product"`` unless told): the reader
         reads the statement once per choice and keeps those that type-check
-        (:mod:`rigidsym.latex.letting`), the checker decides each."""
+        (:mod:`rigidsym.latex.statement`), the checker decides each."""
         from rigidsym.printing import notation
 
         how = self.choices.get(f.key, "product")
