@@ -1,6 +1,7 @@
 """The notations of the field's books in a reader's LaTeX (issue 40, item 3): transformer
 rules of ``grammar.lark`` for constructs the chapter does not print, each read onto a word
-of :mod:`rigidsym.declare` (never re-implemented here).
+of :mod:`rigidsym.declare` (never re-implemented here): :class:`BookRules`, a mixin of the
+LaTeX transformer :class:`rigidsym.latex.transformer.chapter.LatexTransformer`.
 
 ==========================================================  ====================================
 LaTeX                                                       reading
@@ -88,8 +89,8 @@ def free_symbols_of(v) -> set:
 
 
 class BookRules:
-    """Transformer rules of the books' constructs (a mixin of the parser's ``_Build``: it
-    provides ``_val``, ``_note``, ``glyphs``, ``overrides``, ``readings`` and ``made``)."""
+    """Transformer rules of the books' constructs (a mixin of ``LatexTransformer``,
+    which provides ``_val``, ``_note``, ``glyphs``, ``overrides``, ``readings`` and ``made``)."""
 
     # ---- superscripts
     def book_power(self, x, sup: str):

@@ -1,6 +1,7 @@
 """Reading rules that choose between meanings in a reader's LaTeX (issue 40, item 1): a
-symbol before a parenthesised argument, a sized identity or zero. Each choice is written
-under ``read as:``; docs/check-latex.md lists every rule.
+symbol before a parenthesised argument, a sized identity or zero (:class:`MeaningRules`, a
+mixin of the LaTeX transformer :class:`rigidsym.latex.transformer.chapter.LatexTransformer`).
+Each choice is written under ``read as:``; docs/check-latex.md lists every rule.
 
 - ``R(\\theta)``, ``T(t)``, ``J(\\theta)``: a symbol that is not a scalar (declared by a
   ``--let``, a model or a module) before a parenthesised scalar is that symbol applied to
@@ -84,7 +85,7 @@ _SIZE = re.compile(r"(\d)(?:\\times\s*(\d))?")
 
 
 class MeaningRules:
-    """Transformer rules of a reader's choices (a mixin of the parser's ``_Build``, which
+    """Transformer rules of a reader's choices (a mixin of ``LatexTransformer``, which
     provides ``mul``, ``power``, ``_val``, ``reader``, ``overrides``, ``section``, ``glyphs``,
     ``_note``)."""
 

@@ -1,6 +1,7 @@
 """The vocabulary of rigid motions in a reader's LaTeX (issue 29 on issue 28's words): the
 spellings of Lynch & Park, *Modern Robotics* (MR) and Murray, Li & Sastry (MLS), each read
-onto a word of :mod:`rigidsym.declare` (never re-implemented here).
+onto a word of :mod:`rigidsym.declare` (never re-implemented here): :class:`VocabRules`, a
+mixin of the LaTeX transformer :class:`rigidsym.latex.transformer.chapter.LatexTransformer`.
 
 =================================================  ==========================================
 LaTeX                                              word
@@ -40,8 +41,8 @@ def _content(items):
 
 
 class VocabRules:
-    """Transformer rules of the ``vocab`` productions of ``grammar.lark`` (a mixin of the
-    parser's ``_Build``: it provides ``_resolve``, ``_val``, ``glyphs``, ``readings``,
+    """Transformer rules of the ``vocab`` productions of ``grammar.lark`` (a mixin of
+    ``LatexTransformer``, which provides ``_resolve``, ``_val``, ``glyphs``, ``readings``,
     ``made``, ``func`` and ``power``)."""
 
     def _operand(self, x):
@@ -158,7 +159,7 @@ class VocabRules:
         self._note("[x] of a 3-vector (6-vector) read as its so(3) (se(3)) matrix hat(x) "
                    "(MR (3.30), (3.85)); a bracket holding a sum, a scalar or a matrix "
                    "groups; write ( ) to group a vector, [x]_\\times for the hat")
-        return as_written(rigid_motions.hat(v))  # printed [x] as written (latex.meaning)
+        return as_written(rigid_motions.hat(v))  # printed [x] as written (transformer.meanings)
 
     # ---- derivatives
     def deriv_op(self, items):
@@ -174,7 +175,7 @@ class VocabRules:
         if not isinstance(v, sp.Symbol):
             raise LatexError(f"a derivative with respect to {shape_words(v)}{self._named(v)}: "
                              f"expected a scalar variable (d\\theta)", "shapes")
-        if v.name == "t":  # of the symbols declared functions of time, X(t) (bookrules)
+        if v.name == "t":  # of the symbols declared functions of time, X(t) (book_notations)
             return self.time_derivative(self._val(x))
         self._note("d/dv: the vocabulary's derivative diff(X, v) (\\dot{X} stays the time "
                    "derivative)")
