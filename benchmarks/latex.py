@@ -56,7 +56,7 @@ def check_command() -> None:
     assert "Verdict: verified" in out, out
     walls = [_wall(cmd) for _ in range(RUNS)]
     imports = [_wall([sys.executable, "-c", "import rigidsym.api, rigidsym.checking.checker, "
-                      "rigidsym.latex.letting, rigidsym.report.show"]) for _ in range(RUNS)]
+                      "rigidsym.latex.statement, rigidsym.report.show"]) for _ in range(RUNS)]
     t0 = time.perf_counter()
     r = rigidsym.check_latex(ACCEPTANCE[2], [ACCEPTANCE[4]])
     t1 = time.perf_counter()

@@ -79,7 +79,7 @@ for e in corpus.entries():
     except ValueError:
         v, words = "bad-input", []
     finally:
-        registry.forget_module("rigidsym.latex.letting")
+        registry.forget_module("rigidsym.latex.statement")
     out[e["id"]] = [round(time.perf_counter() - t0, 2), v, words]
 print("@@", json.dumps(out))
 """

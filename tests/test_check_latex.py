@@ -25,7 +25,7 @@ RODRIGUES = r"\mathbf{Q} = \mathbf{1} + \sin\phi\,\mathbf{E} + (1 - \cos\phi)\ma
 @pytest.fixture(autouse=True)
 def _forget_latex_ids():
     yield
-    registry.forget_module("rigidsym.latex.letting")
+    registry.forget_module("rigidsym.latex.statement")
 
 
 def _cli(capsys, *args) -> tuple[int, str, str]:

@@ -8,8 +8,8 @@ import pytest
 import sympy as sp
 
 import rigidsym
-from rigidsym.algebra.lie import AdT, AdV, Expm, Hat, Logm
 from rigidsym.algebra.operators import Cpm, Diff
+from rigidsym.algebra.rigid_motions import AdT, AdV, Expm, Hat, Logm
 from rigidsym.latex import LatexError, parse_latex
 from rigidsym.latex.table import Glyph
 from rigidsym.registry import declarations as registry
@@ -24,7 +24,7 @@ LOG_TRACE = r"\theta = \arccos\left(\frac{\operatorname{tr} R - 1}{2}\right)"
 @pytest.fixture(autouse=True)
 def _forget_latex_ids():
     yield
-    registry.forget_module("rigidsym.latex.letting")
+    registry.forget_module("rigidsym.latex.statement")
 
 
 def _verdict(latex, let):

@@ -18,7 +18,7 @@ from rigidsym.registry import declarations as registry
 @pytest.fixture(autouse=True)
 def _forget_latex_ids():
     yield
-    registry.forget_module("rigidsym.latex.letting")
+    registry.forget_module("rigidsym.latex.statement")
 
 
 def _read(latex):

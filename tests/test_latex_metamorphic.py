@@ -49,7 +49,7 @@ def verdict(latex: str, lets: list[str], notation: str | None) -> str:
     except ValueError:
         return "bad-input"
     finally:
-        registry.forget_module("rigidsym.latex.letting")
+        registry.forget_module("rigidsym.latex.statement")
 
 
 def _case(i: str):

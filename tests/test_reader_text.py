@@ -130,7 +130,7 @@ def test_the_exercises_page_sets_letter_subscripts_too():
 @pytest.fixture
 def _forget_latex_ids():
     yield
-    registry.forget_module("rigidsym.latex.letting")
+    registry.forget_module("rigidsym.latex.statement")
 
 
 def test_a_scalar_K_1_and_the_unit_vector_K_print_apart(capsys, _forget_latex_ids):
@@ -150,7 +150,7 @@ def test_a_scalar_K_1_and_the_unit_vector_K_print_apart(capsys, _forget_latex_id
 
 
 def test_a_renamed_vector_entry_never_prints_as_the_scalar():
-    # letting._fresh names the entries of \mathbf{K} K__1.. beside a scalar K_1
+    # latex.values._fresh names the entries of \mathbf{K} K__1.. beside a scalar K_1
     from rigidsym.report.record import _atom_text
     assert book_text("K__1") == "(K)₁" != book_text("K_1") == "K₁"
     assert book_latex("K__1") == r"\left(\mathbf{K}\right)_{1}"

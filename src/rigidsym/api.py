@@ -18,7 +18,7 @@ import time
 from collections.abc import Iterable, Sequence
 from types import ModuleType
 
-from rigidsym.latex.letting import said_choices
+from rigidsym.latex.statement import said_choices
 from rigidsym.registry.declarations import BadInput, select
 from rigidsym.report.results import Result, Results
 
@@ -162,9 +162,9 @@ def _seconds(x) -> float | None:
 
 def check_latex_run(latex, let, book, modules, repairs=True, repair_budget=None, notation=None,
                  repair_seconds=REPAIR_SECONDS):
-    """:func:`check_latex` and the :class:`rigidsym.latex.letting.Reading` (for the CLI)."""
+    """:func:`check_latex` and the :class:`rigidsym.latex.statement.Reading` (for the CLI)."""
     from rigidsym.checking.checker import check as _check
-    from rigidsym.latex.letting import declare_latex
+    from rigidsym.latex.statement import declare_latex
 
     _repair_args(repairs, repair_budget)
     eq, reading = declare_latex(latex, let, book=book, modules=modules, notation=notation)

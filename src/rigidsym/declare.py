@@ -30,22 +30,9 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from rigidsym.algebra import lie as _lie
 from rigidsym.algebra import operators as _operators
+from rigidsym.algebra import rigid_motions as _rigid_motions
 from rigidsym.algebra import symbols as _symbols
-from rigidsym.algebra.lie_vectors import norm3
-from rigidsym.algebra.motions import (
-    Ad,
-    ad,
-    ad_dual,
-    diff,
-    expm,
-    hat,
-    logm,
-    transform,
-    transform_inverse,
-    vee,
-)
 from rigidsym.algebra.operators import MS, Blocks, Cross, Det, mat, vec
 from rigidsym.algebra.primitives import (
     as_vector,
@@ -59,6 +46,19 @@ from rigidsym.algebra.primitives import (
     rotation_from_quaternion,
     trace,
     vect,
+)
+from rigidsym.algebra.rigid_motions import (
+    Ad,
+    ad,
+    ad_dual,
+    diff,
+    expm,
+    hat,
+    logm,
+    norm3,
+    transform,
+    transform_inverse,
+    vee,
 )
 from rigidsym.algebra.symbols import (
     angle,
@@ -84,7 +84,7 @@ __all__ = [
     "rotation_from_natural_invariants", "rotation_from_euler_rodrigues",
     "rotation_from_quaternion", "linear_invariants", "euler_rodrigues_parameters",
     "as_vector", "block", "eye3", "cancel_matrix",
-    # the vocabulary of rigid motions (issue 28; rigidsym.algebra.lie)
+    # the vocabulary of rigid motions (issue 28; rigidsym.algebra.rigid_motions)
     "twist", "wrench", "hat", "vee", "transform", "transform_inverse", "Ad", "ad", "ad_dual",
     "expm", "logm", "diff", "acos", "atan2", "ORDERS",
     # issue 38: the angle of a rotation vector, read through w = theta e by the zero test
@@ -98,8 +98,8 @@ def _printed_from_latex(eq, st):
     (a constrained atom such as ``theta = angle("theta")`` stands for itself)."""
     import sys
 
-    from rigidsym.latex.lending import module_symbols
-    from rigidsym.latex.letting import read_statement
+    from rigidsym.latex.lets import module_symbols
+    from rigidsym.latex.statement import read_statement
 
     mod = sys.modules.get(eq.module)
     lend = module_symbols(vars(mod)) if mod is not None else {}
@@ -124,7 +124,7 @@ O3 = _operators.O3
 #: The orders of twists and wrenches by name (``"angeles"``, ``"modern-robotics"``,
 #: ``"featherstone"``: the angular part first, 0; ``"pinocchio"``, ``"ros"``: the linear
 #: part first, 1), as the words of rigid motions take them (``order=``).
-ORDERS = _lie.ORDERS
+ORDERS = _rigid_motions.ORDERS
 
 
 def acos(x):

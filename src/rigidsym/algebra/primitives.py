@@ -13,7 +13,9 @@ from rigidsym.algebra.operators import Cpm, Vect, is_symbolic
 __all__ = [
     "as_vector",
     "cpm",
+    "cpm_explicit",
     "vect",
+    "vect_explicit",
     "trace",
     "eye3",
     "zeros3",
@@ -68,8 +70,24 @@ def cpm(v) -> sp.Matrix | Cpm:
         if tuple(v.shape) != (3, 1):
             raise ValueError(f"v: expected a 3-vector, got shape {tuple(v.shape)}")
         return Cpm(v)
-    x, y, z = as_vector(v)
-    return sp.Matrix([[0, -z, y], [z, 0, -x], [-y, x, 0]])
+    return cpm_explicit(as_vector(v))
+
+
+def cpm_explicit(v) -> sp.Matrix:
+    """The cross-product matrix of an explicit 3-vector, always a plain ``sympy.Matrix``
+    (never the lazy ``Cpm``): ``[[0, -v3, v2], [v3, 0, -v1], [-v2, v1, 0]]``.
+
+    Book: Sec. 2.3, Eq. (2.38). :func:`cpm` is the book's operator (lazy on a book
+    symbol) and returns this for explicit entries; the explicit formulas of rigid motions
+    (:mod:`rigidsym.algebra.rigid_motions`) call this one, their operands being explicit.
+
+    Args:
+        v: 3 entries, indexable ``v[0]``, ``v[1]``, ``v[2]`` (a 3 x 1 ``sympy.Matrix``).
+
+    Returns:
+        3 x 3 skew-symmetric ``sympy.Matrix``.
+    """
+    return sp.Matrix([[0, -v[2], v[1]], [v[2], 0, -v[0]], [-v[1], v[0], 0]])
 
 
 def vect(A) -> sp.Matrix | Vect:
@@ -94,6 +112,23 @@ def vect(A) -> sp.Matrix | Vect:
     A = sp.Matrix(A)
     if A.shape != (3, 3):
         raise ValueError(f"A: expected a 3 x 3 matrix, got shape {A.shape}")
+    return vect_explicit(A)
+
+
+def vect_explicit(A) -> sp.Matrix:
+    """The axial vector of an explicit 3 x 3 matrix, always a plain ``sympy.Matrix``
+    (never the lazy ``Vect``): ``1/2 [a32 - a23, a13 - a31, a21 - a12]``.
+
+    Book: Sec. 2.3.3. :func:`vect` is the book's operator (lazy on a book symbol, its
+    shape checked) and returns this for explicit entries; the explicit formulas of rigid
+    motions (:mod:`rigidsym.algebra.rigid_motions`) call this one.
+
+    Args:
+        A: an explicit 3 x 3 matrix (indexable ``A[i, j]``).
+
+    Returns:
+        3 x 1 ``sympy.Matrix``.
+    """
     half = sp.Rational(1, 2)
     return sp.Matrix([half * (A[2, 1] - A[1, 2]), half * (A[0, 2] - A[2, 0]),
                       half * (A[1, 0] - A[0, 1])])

@@ -229,7 +229,7 @@ def angle(name: str, t: sp.Symbol | None = None, range: str = "(-pi, pi)"):  # n
 
 def twist(name: str, t: sp.Symbol | None = None) -> sp.Matrix:
     """A free twist, a 6 x 1 vector ``name_1 ... name_6``: ``[omega; v]`` for the words of
-    :mod:`rigidsym.algebra.lie` with an angular-first order (the default), ``[v; omega]``
+    :mod:`rigidsym.algebra.rigid_motions` with an angular-first order (the default), ``[v; omega]``
     with ``order="pinocchio"`` (the order is the word's, never the vector's).
 
     Args:

@@ -362,7 +362,7 @@ def _check_half_turn(a: np.ndarray, name: str, tol: float) -> str | None:
 register(Kind("angle_pi", (), "angle_0_pi", "angle in [0, pi], half-angle tangent",
               ", angle in [0, pi]", half_angle=True, check=_check_half_turn, tol=1e-12))
 # twists and wrenches: free 6-vectors, angular part first unless a word says otherwise
-# (rigidsym.algebra.lie.ORDERS); rows for the kernels' specs and docstrings
+# (rigidsym.algebra.rigid_motions.ORDERS); rows for the kernels' specs and docstrings
 register(Kind("twist", (6,), "twist", "twist [omega; v] (6-vector), free", ", twist"))
 register(Kind("wrench", (6,), "wrench", "wrench [n; f] (6-vector), free", ", wrench"))
 # the homogeneous transforms of SE(3) (issue 38's log of SE(3)): its argument is a transform

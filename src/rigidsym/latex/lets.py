@@ -1,10 +1,15 @@
 """The declarations of ``rigidsym check --latex`` (issue 29, item 4): ``--let NAME: KIND``
-and ``--let NAME = LATEX``, read and checked (:func:`read_lets`).
+and ``--let NAME = LATEX``, read and checked (:func:`read_lets`), and the other sources of
+what a reader's symbols are: a trailing ``, R \\in SO(3)`` of the LaTeX
+(:func:`declared_lets`) and the symbols and models a reader's modules lend (:func:`lent`,
+also to a module's own ``equation(..., latex=...)``).
 
-A KIND is a constrained kind of :mod:`rigidsym.core.kinds` (unit vector, unit 4-vector,
-rotation, angle; imposed exactly by the zero test), a free shape, or a word of the
-vocabulary of rigid motions (twist, wrench, transform, so(3), se(3)): :data:`KIND_WORDS`. A NAME is
-compared after parsing (``\\mathbf Q`` is ``\\mathbf{Q}``).
+A ``--let`` (``let=`` in Python) says what a symbol is. A KIND is a constrained kind of
+:mod:`rigidsym.core.kinds` (unit vector, unit 4-vector, rotation, angle; imposed exactly by
+the zero test), a free shape, or a word of the vocabulary of rigid motions (twist, wrench,
+transform, so(3), se(3)): :data:`KIND_WORDS`. ``NAME = LATEX`` is a first-principles model in
+the same notation. A NAME is compared after parsing (``\\mathbf Q`` is ``\\mathbf{Q}``).
+:mod:`rigidsym.latex.statement` reads the LaTeX itself with these.
 """
 
 from __future__ import annotations
@@ -15,10 +20,11 @@ from dataclasses import dataclass
 import sympy as sp
 
 from rigidsym.algebra import symbols as _sym
-from rigidsym.algebra.motions import Ad, hat, transform
+from rigidsym.algebra.rigid_motions import Ad, hat, transform
 from rigidsym.core.errors import BadInput
 from rigidsym.latex.reader import parse_latex
 from rigidsym.latex.shapes import LatexError
+from rigidsym.latex.transformer.book_notations import SETS
 
 __all__ = ["KIND_WORDS", "Let", "kind_of", "split_lets", "read_lets"]
 
@@ -255,3 +261,69 @@ def _one_let(d: str) -> Let:
     raise BadInput(f"--let '{d}': expected 'NAME: KIND' (e.g. '\\mathbf{{Q}}: "
                    f"rotation') or 'NAME = LATEX' (e.g. '\\mathbf{{E}} = "
                    f"\\mathrm{{CPM}}(\\mathbf{{e}})')")
+
+
+# --------------------------------------------------------------------- from the LaTeX
+_DECL = re.compile(r"(?:(?:,|\\q?quad)\s*)+(?:\\forall\s*)?([^=,]*?)\s*\\in\s*"
+                   r"(SO\(3\)|SE\(3\)|so\(3\)|se\(3\))\s*[.,]?\s*$")
+
+
+def declared_lets(latex: str, lets: list) -> list:
+    """The ``--let`` a trailing ``, R \\in SO(3)`` (``SE(3)``, ``so(3)``, ``se(3)``) states,
+    when no ``--let`` declares that symbol already (one that does is checked against it by
+    the parse)."""
+    m = _DECL.search(latex)
+    if not m or not m.group(1).strip():
+        return []
+    new = read_lets([f"{m.group(1).strip()}: {SETS[m.group(2)][1]}"])
+    return [x for x in new if x.key not in {y.key for y in lets}]
+
+
+# --------------------------------------------------------------------- lent by modules
+def lent(modules) -> dict:
+    """The symbols and models user modules lend, by name.
+
+    A module's models are its module-level dicts whose keys are all book symbols (``MODEL``
+    first, then in module order; the first value of a name wins); its symbols are those
+    keys and its module-level symbols (a constrained atom such as ``angle("theta")`` lends
+    itself as its model).
+
+    Args:
+        modules: paths, dotted names or module objects
+            (:func:`rigidsym.registry.usermodules.load`).
+
+    Returns:
+        ``{name: (symbol, model value or None)}``.
+
+    Raises:
+        BadInput: a module that cannot be loaded.
+    """
+    import sys
+    from types import ModuleType
+
+    from rigidsym.registry import usermodules
+
+    out: dict = {}
+    for m in modules or ():
+        um = usermodules.adopt(m) if isinstance(m, ModuleType) else usermodules.load(m)
+        for name, v in module_symbols(vars(sys.modules[um.name])).items():
+            out.setdefault(name, v)
+    return out
+
+
+def module_symbols(names: dict) -> dict:
+    """What one module's namespace lends (see :func:`lent`): ``{name: (symbol, value)}``."""
+    out: dict = {}
+    dicts = [v for v in names.values() if isinstance(v, dict) and v and all(
+        isinstance(k, sp.Symbol | sp.MatrixSymbol) for k in v)]
+    if isinstance(names.get("MODEL"), dict) and names["MODEL"] in dicts:
+        dicts.remove(names["MODEL"])
+        dicts.insert(0, names["MODEL"])
+    for d in dicts:
+        for sym, value in d.items():
+            out.setdefault(sym.name, (sym, value))
+    for v in names.values():
+        if isinstance(v, sp.MatrixSymbol) or (isinstance(v, sp.Symbol)
+                                              and not isinstance(v, sp.Dummy)):
+            out.setdefault(v.name, (v, v if _sym.constraint_of(v) is not None else None))
+    return out

@@ -55,7 +55,7 @@ class Parsed:
     relations: list = field(default_factory=list)
     readings: list = field(default_factory=list)
     glyphs: dict = field(default_factory=dict)
-    applied: dict = field(default_factory=dict)  # R(\theta): key -> arguments (latex.meaning)
+    applied: dict = field(default_factory=dict)  # R(\theta): key -> arguments (meanings)
     choice_points: dict = field(default_factory=dict)  # X(y) product or application (issue 52)
 
     def pairs(self):

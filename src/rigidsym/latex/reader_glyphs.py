@@ -1,7 +1,7 @@
 """The glyph rows of a reader's LaTeX (issue 29 item 4, issue 40): :class:`GlyphReader` parses
 the LaTeX and the models of ``--let`` with one set of glyph overrides: the declarations'
 kinds, the models' shapes, the rows of ``--book``, a module's symbols, the lines of
-``--notation`` (used by :mod:`rigidsym.latex.letting`)."""
+``--notation`` (used by :mod:`rigidsym.latex.statement`)."""
 
 from __future__ import annotations
 

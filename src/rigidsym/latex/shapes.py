@@ -157,7 +157,7 @@ def size_identity(a, b, product: int):
     sa, sb = matrix_shape(a), matrix_shape(b)
     if sa is None or sb is None or sa == sb:
         return a, b
-    if type(a) is sp.Identity and (product or sb[0] == sb[1]):  # not an I_3 (latex.meaning)
+    if type(a) is sp.Identity and (product or sb[0] == sb[1]):  # not an I_3 (transformer.meanings)
         a = sp.Identity(sb[0])
     elif type(b) is sp.Identity and (product or sa[0] == sa[1]):
         b = sp.Identity(sa[1])

@@ -2,7 +2,7 @@
 and functions, each after those it mentions; each used glyph's value (a declared kind, a
 module's model, a glyph-table row or definition, a free matrix of named entries); and the
 models made explicit in dependency order, a cycle refused. Used by
-:mod:`rigidsym.latex.letting`, which reads the LaTeX itself.
+:mod:`rigidsym.latex.statement`, which reads the LaTeX itself.
 """
 
 from __future__ import annotations

@@ -43,7 +43,7 @@ def run(entry: dict) -> dict:
         out = {"verdict": "crash", "message": f"{type(exc).__name__}: {exc}"[:300],
                "counterexample": False}
     finally:
-        registry.forget_module("rigidsym.latex.letting")
+        registry.forget_module("rigidsym.latex.statement")
     out["exit"] = EXIT.get(out["verdict"], 4)
     out["seconds"] = round(time.perf_counter() - t0, 2)
     return out

@@ -14,8 +14,8 @@ from sympy.matrices.kind import MatrixKind
 from sympy.polys.matrices import DomainMatrix
 from sympy.polys.matrices.exceptions import DMNonInvertibleMatrixError
 
-from rigidsym.algebra.lie import LieOp
 from rigidsym.algebra.operators import Diff, DiffEntry
+from rigidsym.algebra.rigid_motions import LieOp
 from rigidsym.registry.declarations import Rel
 
 
@@ -122,7 +122,7 @@ def _mx(x, model) -> sp.ImmutableMatrix:
         return _inverse(_mx(x.arg, model))
     if isinstance(x, Diff):
         return im(sp.Matrix(_mx(x.args[0], model)).diff(explicit_scalar(x.args[1], model)))
-    if isinstance(x, LieOp):  # hat, vee, transform, Ad, ad, expm (rigidsym.algebra.lie)
+    if isinstance(x, LieOp):  # hat, vee, transform, Ad, ad, expm (rigidsym.algebra.rigid_motions)
         return im(x.value(*[_mx(a, model) for a in x.args[:x.operands]]))
     if isinstance(x, sp.BlockMatrix):
         blocks = x.blocks

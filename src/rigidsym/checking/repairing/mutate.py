@@ -41,7 +41,7 @@ from dataclasses import dataclass, field
 import sympy as sp
 from sympy.core.function import AppliedUndef
 
-from rigidsym.algebra.lie import LieOp
+from rigidsym.algebra.rigid_motions import LieOp
 from rigidsym.algebra.symbols import TIME, constraint_of
 from rigidsym.checking.repairing import treeops as T
 from rigidsym.checking.repairing.edit_words import describe

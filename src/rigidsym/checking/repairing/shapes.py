@@ -15,8 +15,8 @@ from sympy.core.function import AppliedUndef
 from sympy.matrices.expressions.matexpr import MatrixElement
 from sympy.matrices.expressions.slice import MatrixSlice
 
-from rigidsym.algebra.lie import LieOp
 from rigidsym.algebra.operators import Cpm, Cross, Det, Diff, Vect
+from rigidsym.algebra.rigid_motions import LieOp
 
 __all__ = ["ShapeError", "RawBlocks", "is_matrix", "children", "node_at", "positions", "shape"]
 
@@ -203,7 +203,7 @@ def _operator_shape(x, kids: list):
         if kids[0] is None:
             raise ShapeError("a matrix derivative of a scalar")
         return kids[0]
-    # a word of rigidsym.algebra.lie (hat, vee, transform, Ad, ad, expm)
+    # a word of rigidsym.algebra.rigid_motions (hat, vee, transform, Ad, ad, expm)
     if any(k is None for k in kids):
         raise ShapeError(f"a scalar inside {x.label}")
     try:

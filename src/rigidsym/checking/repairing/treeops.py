@@ -25,8 +25,8 @@ import sympy as sp
 from sympy.matrices.expressions.matexpr import MatrixElement
 from sympy.matrices.expressions.slice import MatrixSlice
 
-from rigidsym.algebra.lie import LieOp
 from rigidsym.algebra.operators import Diff
+from rigidsym.algebra.rigid_motions import LieOp
 from rigidsym.checking.repairing.marks import Marked, MarkedScalar, mark
 from rigidsym.checking.repairing.shapes import (
     RawBlocks,

@@ -1,6 +1,7 @@
 """The notations of the field's books in a reader's LaTeX (issue 40, item 3): transformer
 rules of ``grammar.lark`` for constructs the chapter does not print, each read onto a word
-of :mod:`rigidsym.declare` (never re-implemented here).
+of :mod:`rigidsym.declare` (never re-implemented here): :class:`BookRules`, a mixin of the
+LaTeX transformer :class:`rigidsym.latex.transformer.chapter.LatexTransformer`.
 
 ==========================================================  ====================================
 LaTeX                                                       reading
@@ -32,9 +33,9 @@ import re
 import lark
 import sympy as sp
 
-from rigidsym.algebra import motions
-from rigidsym.algebra.lie import LieOp
+from rigidsym.algebra import rigid_motions
 from rigidsym.algebra.operators import Cpm, Cross
+from rigidsym.algebra.rigid_motions import LieOp
 from rigidsym.latex.shapes import (
     LatexError,
     as_block,
@@ -88,8 +89,8 @@ def free_symbols_of(v) -> set:
 
 
 class BookRules:
-    """Transformer rules of the books' constructs (a mixin of the parser's ``_Build``: it
-    provides ``_val``, ``_note``, ``glyphs``, ``overrides``, ``readings`` and ``made``)."""
+    """Transformer rules of the books' constructs (a mixin of ``LatexTransformer``,
+    which provides ``_val``, ``_note``, ``glyphs``, ``overrides``, ``readings`` and ``made``)."""
 
     # ---- superscripts
     def book_power(self, x, sup: str):
@@ -101,17 +102,17 @@ class BookRules:
                                  f"matrix) or a 6-vector (its se(3) matrix)", "shapes")
             self._note("x^\\wedge: the hat, so(3) of a 3-vector, se(3) of a 6-vector [w; v] "
                        "(MLS (2.4), Barfoot (7.7))")
-            return motions.hat(x)
+            return rigid_motions.hat(x)
         if sup == "vee":
             if matrix_shape(x) not in ((3, 3), (4, 4)):
                 raise LatexError(f"^\\vee of {shape_words(x)}: expected a 3x3 (so(3)) or 4x4 "
                                  f"(se(3)) matrix", "shapes")
-            return motions.vee(x)
+            return rigid_motions.vee(x)
         if sup == "curlywedge":
             if matrix_shape(x) != (6, 1):
                 raise LatexError(f"^\\curlywedge of {shape_words(x)}: expected a 6-vector",
                                  "shapes")
-            return motions.ad(x)
+            return rigid_motions.ad(x)
         if sup == "-T" and not self._spatial(x):
             return self._inverse_transpose(x)
         if sup in ("*", "-T"):
@@ -186,7 +187,7 @@ class BookRules:
         if s == (6, 1):
             self._note("v\\times, v\\times^*: Featherstone's spatial cross products crm(v), "
                        "crf(v) = -crm(v)^T (RBDA (2.31)-(2.33))")
-            return -motions.ad(a).T if dual else motions.ad(a)
+            return -rigid_motions.ad(a).T if dual else rigid_motions.ad(a)
         op = "\\times^*" if dual else "\\times"
         raise LatexError(f"{op} as an operator of {shape_words(a)}: expected a 6-vector (or a "
                          f"3-vector for \\times)", "shapes")
@@ -259,7 +260,7 @@ class BookRules:
                                                  "body velocity", "")
             self._note(f"{dkey} = {g.name} [{w.name}]: the time derivative of a "
                        f"{g.meaning.split(',')[0]} ({w.name} its body velocity, free)")
-            return value * motions.hat(w)
+            return value * rigid_motions.hat(w)
         if dkey not in self.glyphs:
             self._note(f"{dkey}: the time derivative of {key} (a function of time, free)")
         d = sp.Symbol(f"{g.name}dot", real=True) if not g.shape else \

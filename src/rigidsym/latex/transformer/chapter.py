@@ -1,10 +1,13 @@
-"""Read the chapter's LaTeX into the declaration vocabulary's atoms and operators.
+"""Read the chapter's LaTeX into the declaration vocabulary's atoms and operators: the
+LaTeX transformer :class:`LatexTransformer` (its rule families and their modules:
+:mod:`rigidsym.latex.transformer`) and the chapter's own rules.
 
-:func:`parse_latex` parses a LaTeX string with the lark grammar ``grammar.lark`` (LALR(1))
-and builds, relation by relation, sympy objects of :mod:`rigidsym.declare`'s vocabulary:
-book matrices (``MatrixSymbol``) and scalars (real ``Symbol``) named by the glyph table
-(:mod:`rigidsym.latex.table`), ``Cross``, ``Det``, ``Cpm``, ``Vect``, ``Trace``, block
-matrices, transposes, inverses and powers. Juxtaposition is a matrix product or a scalar
+:func:`rigidsym.latex.reader.parse_latex` parses a LaTeX string with the lark grammar
+``grammar.lark`` (LALR(1)) and this transformer builds, relation by relation, sympy
+objects of :mod:`rigidsym.declare`'s vocabulary: book matrices (``MatrixSymbol``) and
+scalars (real ``Symbol``) named by the glyph table (:mod:`rigidsym.latex.table`),
+``Cross``, ``Det``, ``Cpm``, ``Vect``, ``Trace``, block matrices, transposes, inverses and
+powers. Juxtaposition is a matrix product or a scalar
 product according to the shapes; a shape that does not fit is an error, never a guess.
 
 Book: J. Angeles, *Fundamentals of Robotic Mechanical Systems*, Chap. 3 (its notation,
@@ -42,8 +45,9 @@ __all__ = ["LatexError", "Relation", "Parsed", "parser"]
 
 class LatexTransformer(GlyphRules, MeaningRules, VocabRules, BookRules, lark.Transformer):
     """Tree -> sympy, in the declaration vocabulary (module docstring); ``reader``: a
-    reader's LaTeX, ``[x]`` of a vector its hat, ``I`` the identity (``latex/vocab.py``); the
-    glyphs' rules are :class:`~rigidsym.latex.transformer.glyphs.GlyphRules`."""
+    reader's LaTeX, ``[x]`` of a vector its hat (:mod:`rigidsym.latex.transformer.rigid_motions`),
+    ``I`` the identity (:mod:`rigidsym.latex.transformer.meanings`); the glyphs' rules are
+    :class:`~rigidsym.latex.transformer.glyphs.GlyphRules`."""
 
     def __init__(self, section: str, overrides: dict, block_rows: bool, reader: bool = False):
         super().__init__()

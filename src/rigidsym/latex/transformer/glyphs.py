@@ -1,8 +1,8 @@
-"""The glyph rules of the LaTeX reader (a mixin of :mod:`rigidsym.latex.transformer.chapter`'s
-``_Build``): a glyph's key (``\\mathbf{Q}``, ``\\dot{\\mathbf{p}}_{1}``, ``{}^B X_A``), its
-sympy symbol named by the glyph table (:mod:`rigidsym.latex.table`) or by a reader's
-declarations, the sized zeros and identities, ``t`` as time, and ranges of entries
-(``\\mathbf{q}_{1:3}``).
+"""The glyph rules of the LaTeX transformer (:class:`GlyphRules`, a mixin of
+:class:`rigidsym.latex.transformer.chapter.LatexTransformer`): a glyph's key
+(``\\mathbf{Q}``, ``\\dot{\\mathbf{p}}_{1}``, ``{}^B X_A``), its sympy symbol named by the
+glyph table (:mod:`rigidsym.latex.table`) or by a reader's declarations, the sized zeros
+and identities, ``t`` as time, and ranges of entries (``\\mathbf{q}_{1:3}``).
 """
 
 from __future__ import annotations
@@ -31,7 +31,7 @@ def wide(accent: str) -> str:
 
 
 class GlyphRules:
-    """Transformer rules of the glyphs (a mixin of the parser's ``_Build``: it provides
+    """Transformer rules of the glyphs (a mixin of ``LatexTransformer``, which provides
     ``section``, ``overrides``, ``glyphs``, ``readings``, and the rules it calls:
     ``_sized`` and ``sized_zero`` of :class:`~rigidsym.latex.transformer.meanings.MeaningRules`,
     ``timed`` and ``velocity`` of :class:`~rigidsym.latex.transformer.book_notations.BookRules`)."""
@@ -109,7 +109,7 @@ class GlyphRules:
         kind = base[0]
         if rest and isinstance(rest[-1], tuple) and ":" in rest[-1][1] and inner is None:
             return self._slice(key, base, rest, accent, pre)
-        sized = self._sized(key, base, rest, accent)  # I, I_3, \mathbf{1}_3 (latex.meaning)
+        sized = self._sized(key, base, rest, accent)  # I, I_3, \mathbf{1}_3 (transformer.meanings)
         if sized is not None:
             return GlyphKey(key, base, rest, accent, sized)
         if kind == "zero":

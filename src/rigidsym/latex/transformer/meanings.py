@@ -1,12 +1,13 @@
 """Reading rules that choose between meanings in a reader's LaTeX (issue 40, item 1): a
-symbol before a parenthesised argument, a sized identity or zero. Each choice is written
-under ``read as:``; docs/check-latex.md lists every rule.
+symbol before a parenthesised argument, a sized identity or zero (:class:`MeaningRules`, a
+mixin of the LaTeX transformer :class:`rigidsym.latex.transformer.chapter.LatexTransformer`).
+Each choice is written under ``read as:``; docs/check-latex.md lists every rule.
 
 - ``R(\\theta)``, ``T(t)``, ``J(\\theta)``: a symbol that is not a scalar (declared by a
   ``--let``, a model or a module) before a parenthesised scalar is that symbol applied to
   it: the symbol itself, which depends on the argument as its model says. Any other
   ``x(...)`` is a product (``a(b + c)``, ``A(\\mathbf{x} + \\mathbf{y})``). A symbol applied
-  to two different arguments is refused (:mod:`rigidsym.latex.letting`).
+  to two different arguments is refused (:mod:`rigidsym.latex.statement`).
 - ``[x]`` of a 3-vector (Lynch-Park's bracket): the cross-product matrix, printed ``[x]`` as
   written, never as the chapter's ``CPM(x)`` (:class:`BracketCpm`).
 - ``I_3``, ``\\mathbf{I}_{3}``, ``\\mathbf{I}_{3\\times 3}``, ``\\mathbf{1}_3``: the identity of
@@ -84,7 +85,7 @@ _SIZE = re.compile(r"(\d)(?:\\times\s*(\d))?")
 
 
 class MeaningRules:
-    """Transformer rules of a reader's choices (a mixin of the parser's ``_Build``, which
+    """Transformer rules of a reader's choices (a mixin of ``LatexTransformer``, which
     provides ``mul``, ``power``, ``_val``, ``reader``, ``overrides``, ``section``, ``glyphs``,
     ``_note``)."""
 
@@ -119,7 +120,7 @@ class MeaningRules:
     def _derivative(self, key, n, arg):
         """``f'(x)``, ``f''(x)``: the n-th derivative of the ``--let`` function ``f`` of one
         scalar parameter, at ``arg`` (Lagrange's notation, as the books write it)."""
-        from rigidsym.algebra import motions
+        from rigidsym.algebra import rigid_motions
         from rigidsym.printing import notation
 
         s, written = sp.Dummy("s", real=True), key + "'" * n
@@ -138,7 +139,7 @@ class MeaningRules:
         self._note(f"{written}({a}): derivative {n} of the --let function "
                    f"{key}({params[0]}), at {params[0]} = {a}")
         for _ in range(n):
-            v = motions.diff(v, s)
+            v = rigid_motions.diff(v, s)
         return v.subs(s, arg)
 
     def apply(self, items):
@@ -246,7 +247,7 @@ class MeaningRules:
         a product ``X y`` or ``X`` applied to ``y``; no rule settles it (issue 52, item 2).
         The reading follows ``self.choices[key]`` (``"product"`` unless told): the reader
         reads the statement once per choice and keeps those that type-check
-        (:mod:`rigidsym.latex.letting`), the checker decides each."""
+        (:mod:`rigidsym.latex.statement`), the checker decides each."""
         from rigidsym.printing import notation
 
         how = self.choices.get(f.key, "product")

@@ -1,6 +1,7 @@
 """The vocabulary of rigid motions in a reader's LaTeX (issue 29 on issue 28's words): the
 spellings of Lynch & Park, *Modern Robotics* (MR) and Murray, Li & Sastry (MLS), each read
-onto a word of :mod:`rigidsym.declare` (never re-implemented here).
+onto a word of :mod:`rigidsym.declare` (never re-implemented here): :class:`VocabRules`, a
+mixin of the LaTeX transformer :class:`rigidsym.latex.transformer.chapter.LatexTransformer`.
 
 =================================================  ==========================================
 LaTeX                                              word
@@ -26,7 +27,7 @@ from __future__ import annotations
 import lark
 import sympy as sp
 
-from rigidsym.algebra import motions
+from rigidsym.algebra import rigid_motions
 from rigidsym.latex.shapes import LatexError, as_scalar, matrix_shape, shape_words
 from rigidsym.latex.transformer.book_notations import free_symbols_of as _free_atoms
 from rigidsym.latex.transformer.meanings import alternatives, as_written
@@ -40,8 +41,8 @@ def _content(items):
 
 
 class VocabRules:
-    """Transformer rules of the ``vocab`` productions of ``grammar.lark`` (a mixin of the
-    parser's ``_Build``: it provides ``_resolve``, ``_val``, ``glyphs``, ``readings``,
+    """Transformer rules of the ``vocab`` productions of ``grammar.lark`` (a mixin of
+    ``LatexTransformer``, which provides ``_resolve``, ``_val``, ``glyphs``, ``readings``,
     ``made``, ``func`` and ``power``)."""
 
     def _operand(self, x):
@@ -77,7 +78,7 @@ class VocabRules:
                              f"--let '\\hat\\omega: unit vector'", "shapes")
         self._note(f"{how}: the matrix exponential expm (MR (3.51), (3.88))")
         try:
-            return motions.expm(x)
+            return rigid_motions.expm(x)
         except ValueError as exc:
             raise LatexError(f"{how}: {exc}", "shapes") from None
 
@@ -91,7 +92,7 @@ class VocabRules:
                              f"of the vocabulary)", "shapes")
         self._note("\\log: the principal logarithm logm, theta in [0, pi], singular at "
                    "theta = 0 and pi (MR (3.53)-(3.54))")
-        return motions.logm(x)
+        return rigid_motions.logm(x)
 
     # ---- scalar functions
     def func_power(self, items):
@@ -132,7 +133,7 @@ class VocabRules:
             raise LatexError(f"{word}_{{...}} of {shape_words(x)}{self._named(x)}: expected "
                              f"{what} (declare it, e.g. --let 'T: transform' or "
                              f"--let '\\mathcal{{V}}: twist')", "shapes")
-        return motions.Ad(x) if big else motions.ad(x)
+        return rigid_motions.Ad(x) if big else rigid_motions.ad(x)
 
     def hat_bracket(self, x):
         """``[x]``: the hat of one symbol or one product of shape 3 x 1 or 6 x 1, else
@@ -158,7 +159,7 @@ class VocabRules:
         self._note("[x] of a 3-vector (6-vector) read as its so(3) (se(3)) matrix hat(x) "
                    "(MR (3.30), (3.85)); a bracket holding a sum, a scalar or a matrix "
                    "groups; write ( ) to group a vector, [x]_\\times for the hat")
-        return as_written(motions.hat(v))  # printed [x] as written (latex.meaning)
+        return as_written(rigid_motions.hat(v))  # printed [x] as written (transformer.meanings)
 
     # ---- derivatives
     def deriv_op(self, items):
@@ -174,7 +175,7 @@ class VocabRules:
         if not isinstance(v, sp.Symbol):
             raise LatexError(f"a derivative with respect to {shape_words(v)}{self._named(v)}: "
                              f"expected a scalar variable (d\\theta)", "shapes")
-        if v.name == "t":  # of the symbols declared functions of time, X(t) (bookrules)
+        if v.name == "t":  # of the symbols declared functions of time, X(t) (book_notations)
             return self.time_derivative(self._val(x))
         self._note("d/dv: the vocabulary's derivative diff(X, v) (\\dot{X} stays the time "
                    "derivative)")
@@ -185,7 +186,7 @@ class VocabRules:
             if not at:
                 break
             x = x.xreplace(at)
-        return motions.diff(x, v)
+        return rigid_motions.diff(x, v)
 
     # ---- glyphs
     def calbase(self, items):

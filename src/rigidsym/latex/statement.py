@@ -1,13 +1,12 @@
-"""LaTeX in, verdict out (issue 29, item 4): a reader's LaTeX and its ``--let`` declarations
-made into a declaration the checker decides like any other.
+"""A reader's LaTeX statement made into a declaration (issue 29, item 4): the LaTeX and its
+``--let`` declarations read into a :class:`Statement` the checker decides like any other
+(LaTeX in, verdict out: ``rigidsym check --latex``, :func:`rigidsym.check_latex`).
 
-A ``--let`` (``let=`` in Python) says what a symbol is: ``NAME: KIND`` (a constrained kind of
-:mod:`rigidsym.core.kinds`, imposed exactly by the zero test, or a free shape; :data:`KIND_WORDS`)
-or ``NAME = LATEX``, a first-principles model in the same notation. A name is compared after
-parsing (``\\mathbf Q`` is ``\\mathbf{Q}``). With a book section the glyph table names the
-glyphs; otherwise a symbol no ``--let`` declares is free, its shape by the book's convention
-(bold lower-case a 3-vector, bold capital a 3 x 3 matrix, anything else a scalar), and the
-reading says so.
+The ``--let`` declarations themselves (``NAME: KIND``, ``NAME = LATEX``) and what a reader's
+modules lend are read by :mod:`rigidsym.latex.lets`; here they name the statement's glyphs.
+With a book section the glyph table names the glyphs; otherwise a symbol no ``--let``
+declares is free, its shape by the book's convention (bold lower-case a 3-vector, bold
+capital a 3 x 3 matrix, anything else a scalar), and the reading says so.
 """
 
 from __future__ import annotations
@@ -23,18 +22,17 @@ import sympy as sp
 from rigidsym.core.errors import BadInput
 from rigidsym.latex import guards
 from rigidsym.latex.declgraph import glyph_keys
-from rigidsym.latex.lending import lent
-from rigidsym.latex.lets import KIND_WORDS, Let, read_lets
+from rigidsym.latex.lets import Let, declared_lets, lent, read_lets
 from rigidsym.latex.reader_glyphs import GlyphReader
 from rigidsym.latex.shapes import LatexError
-from rigidsym.latex.transformer.book_notations import SETS
 from rigidsym.latex.transformer.meanings import alternatives, said
 from rigidsym.latex.values import glyph_values, read_models, resolve_models, value_shape_words
 from rigidsym.printing import notation
 from rigidsym.registry.declarations import Rel, Statement
 
-__all__ = ["Reading", "read_statement", "read_one", "latex_id", "check_book", "declare_latex",
-           "KIND_WORDS", "Let", "read_lets"]
+__all__ = ["Reading", "read_statement", "read_one", "said_choices", "latex_id", "check_book",
+           "declare_latex"]
+
 
 @dataclass
 class Reading:
@@ -59,21 +57,6 @@ class Reading:
     dropped: list = field(default_factory=list)  # (choices, why) of those that do not
     eq: object = None  # its registered Equation (declare_latex)
 
-
-
-_DECL = re.compile(r"(?:(?:,|\\q?quad)\s*)+(?:\\forall\s*)?([^=,]*?)\s*\\in\s*"
-                   r"(SO\(3\)|SE\(3\)|so\(3\)|se\(3\))\s*[.,]?\s*$")
-
-
-def declared_lets(latex: str, lets: list) -> list:
-    """The ``--let`` a trailing ``, R \\in SO(3)`` (``SE(3)``, ``so(3)``, ``se(3)``) states,
-    when no ``--let`` declares that symbol already (one that does is checked against it by
-    the parse)."""
-    m = _DECL.search(latex)
-    if not m or not m.group(1).strip():
-        return []
-    new = read_lets([f"{m.group(1).strip()}: {SETS[m.group(2)][1]}"])
-    return [x for x in new if x.key not in {y.key for y in lets}]
 
 
 def latex_id(latex: str, lets: list[Let], book: str | None, modules,
@@ -159,6 +142,8 @@ def _group(key: str) -> str:
 
 
 def said_choices(choices: dict) -> str:
+    """The choices taken at a reading's choice points, in words (``"R(x) read as a product;
+    ..."``), sorted by point, for its notes and the CLI."""
     return "; ".join(said(k, c) for k, c in sorted(choices.items()))
 
 
