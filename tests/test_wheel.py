@@ -289,5 +289,6 @@ def test_wheel_ships_the_latex_reader(wheel):
     """Issue 29: the grammar, the glyph table and the per-id notes are package data."""
     with zipfile.ZipFile(wheel) as z:
         names = set(z.namelist())
-    for f in ("grammar.lark", "glyphs.csv", "notes.json", "transformer/chapter.py", "transcription.py"):
+    for f in ("grammar.lark", "glyphs.csv", "notes.json", "transformer/chapter.py",
+              "transcription.py"):
         assert f"rigidsym/latex/{f}" in names, f
