@@ -15,7 +15,7 @@ import numpy as np
 import pytest
 
 from rigidsym import kernels as K
-from rigidsym.kernels.arrays import shared as _arrays
+from rigidsym.kernels.arrays import inputs as _arrays
 from rigidsym.kernels.runtime import state as _state
 
 Q1 = K.rotation_from_natural_invariants(np.array([0.0, 0.6, 0.8]), 0.7)

@@ -49,8 +49,8 @@ except ImportError as _exc:  # pragma: no cover - exercised where JAX is absent
     raise ImportError("rigidsym.kernels.jax needs JAX: pip install 'rigidsym[jax]'") from _exc
 import numpy as np
 
-from rigidsym.kernels.arrays import api as _arrays_api
-from rigidsym.kernels.arrays import shared as _arrays
+from rigidsym.kernels.arrays import evaluation as _evaluation
+from rigidsym.kernels.arrays import namespace as _arrays_namespace
 from rigidsym.kernels.runtime.errors import NonFiniteResultError, SingularConfigurationError
 
 __all__ = ["load", "euler_rate_matrix", "euler_angle_rates", "SingularConfigurationError",
@@ -85,7 +85,7 @@ def _dtype(values, arrays):
     return jnp.result_type(*found) if found else jnp.result_type(float)
 
 
-def _make(space: _arrays.Space, name: str):
+def _make(space: _evaluation.Space, name: str):
     """``f(*xs) -> (*outputs, singular)``: a ``jax.custom_jvp`` whose JVP is the generated
     Jacobian kernel, or the plain expression (no Jacobian kernel)."""
     if not space.progs.has_jacobian(name):
@@ -114,7 +114,7 @@ def _make(space: _arrays.Space, name: str):
     return f
 
 
-_LIBRARY = _arrays.Library(
+_LIBRARY = _evaluation.Library(
     backend="jax", xp=jnp, tracer="jax.jit / jax.vmap / jax.grad", traced=_traced,
     stop_gradient=jax.lax.stop_gradient, detach=lambda x: x,
     is_array=lambda v: isinstance(v, jax.Array),
@@ -125,8 +125,8 @@ _LIBRARY = _arrays.Library(
     float32=np.dtype(jnp.float32), finfo=jnp.finfo, cast=lambda x, dtype: x.astype(dtype),
     float_dtype=_float_dtype, finite_inside=lambda: True)
 
-# load, the Euler-angle kernels, the lazy kernels: the same for both back-ends (_arrays_api)
+# load, the Euler-angle kernels, the lazy kernels: the same for both back-ends (arrays.namespace)
 load, euler_rate_matrix, euler_angle_rates, __getattr__, __dir__, _space = \
-    _arrays_api.module_api(globals(), lambda d: _arrays.Space(_LIBRARY, d), "JAX", "array",
-                           "JAX")
+    _arrays_namespace.module_api(globals(), lambda d: _evaluation.Space(_LIBRARY, d),
+                                 "JAX", "array", "JAX")
 __all__ += _space().progs.kernel_names()

@@ -53,8 +53,8 @@ except ImportError as _exc:  # pragma: no cover - exercised where PyTorch is abs
                       "'rigidsym[torch]'") from _exc
 import numpy as np
 
-from rigidsym.kernels.arrays import api as _arrays_api
-from rigidsym.kernels.arrays import shared as _arrays
+from rigidsym.kernels.arrays import evaluation as _evaluation
+from rigidsym.kernels.arrays import namespace as _arrays_namespace
 from rigidsym.kernels.arrays import torch_host as _torch_host
 from rigidsym.kernels.arrays.torch_compiled import compiled_saving as _compiled_saving
 from rigidsym.kernels.arrays.torch_compiled import fixed_arity as _fixed_arity
@@ -148,7 +148,7 @@ def _differentiable(xs) -> bool:
         torch._C._functorch.is_functorch_wrapped_tensor(x) for x in xs)
 
 
-def _function(space: _arrays.Space, name: str, forward_mode: bool):
+def _function(space: _evaluation.Space, name: str, forward_mode: bool):
     """The ``torch.autograd.Function`` of kernel ``name``: backward (and, ``forward_mode``,
     jvp) through the generated Jacobian kernel. Dynamo cannot trace a custom ``jvp``
     ("Unsupported custom jvp"), so compiled code gets the class without it (no forward
@@ -156,7 +156,7 @@ def _function(space: _arrays.Space, name: str, forward_mode: bool):
     args = space.progs.meta[name]["args"]
 
     def setup_context(ctx, inputs, output):
-        # the singular mask too: the Jacobian takes safe inputs there (_arrays.evaluate)
+        # the singular mask too: the Jacobian takes safe inputs there (_evaluation.evaluate)
         ctx.save_for_backward(*inputs, output[-1])
         if forward_mode:
             ctx.save_for_forward(*inputs, output[-1])
@@ -184,7 +184,7 @@ def _function(space: _arrays.Space, name: str, forward_mode: bool):
     return type(title, (torch.autograd.Function,), body)
 
 
-def _make(space: _arrays.Space, name: str):
+def _make(space: _evaluation.Space, name: str):
     """The kernel's function: a ``torch.autograd.Function`` whose derivative is the
     generated Jacobian kernel, or autograd through the expression (no Jacobian kernel;
     safe inputs in the singular samples when differentiated)."""
@@ -213,7 +213,7 @@ def _make(space: _arrays.Space, name: str):
     return apply
 
 
-def _saving(space: _arrays.Space, name: str):
+def _saving(space: _evaluation.Space, name: str):
     """The ``torch.autograd.Function`` of eager autograd outside torch.func (issue 38: the
     backward reuses the forward's common subexpressions): its forward saves the temps the
     generated VJP would compute again, and its backward takes them, unless a sample is
@@ -320,7 +320,7 @@ def _rescued(res: list, rows, xs: list) -> list:
     return list(_Rescued.apply(rows, len(res), *res, *xs))
 
 
-_LIBRARY = _arrays.Library(
+_LIBRARY = _evaluation.Library(
     backend="torch", xp=torch, tracer="torch.compile / torch.func", traced=_traced,
     stop_gradient=torch.detach, detach=torch.detach,
     is_array=lambda v: isinstance(v, torch.Tensor),
@@ -333,8 +333,8 @@ _LIBRARY = _arrays.Library(
     constant=getattr(torch.compiler, "assume_constant_result", lambda fn: fn),
     finite_inside=torch.compiler.is_compiling, views=_torch_host.views)
 
-# load, the Euler-angle kernels, the lazy kernels: the same for both back-ends (_arrays_api)
+# load, the Euler-angle kernels, the lazy kernels: the same for both back-ends (arrays.namespace)
 load, euler_rate_matrix, euler_angle_rates, __getattr__, __dir__, _space = \
-    _arrays_api.module_api(globals(), lambda d: _arrays.Space(_LIBRARY, d), "PyTorch",
-                           "tensor", "autograd")
+    _arrays_namespace.module_api(globals(), lambda d: _evaluation.Space(_LIBRARY, d),
+                                 "PyTorch", "tensor", "autograd")
 __all__ += _space().progs.kernel_names()

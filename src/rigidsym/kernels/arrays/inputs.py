@@ -1,5 +1,5 @@
-"""The input rules of the array back-ends (issue 31; split from ``_arrays``, issue 38): the
-keyword modes of eager and traced calls, the eager validation of constrained inputs, the
+"""The input rules of the array back-ends (issue 31): the keyword modes of eager and traced
+calls, the conversion of the arguments, the eager validation of constrained inputs, the
 broadcast batch shape, and the regular point substituted in singular samples. No import of
 PyTorch or JAX.
 """
@@ -20,6 +20,7 @@ _MODES = ("raise", "nan")
 
 
 def raise_error(exc_type: type, message: str):
+    """Raise ``exc_type(message)``: how :func:`modes` refuses by default."""
     raise exc_type(message)
 
 
@@ -165,7 +166,7 @@ _BAD_KINDS = "bcOUSMmV"  # NumPy kinds that are no real numbers
 
 def convert(lib, values: tuple, args: list[dict]) -> tuple[list, Any, float]:
     """The library arrays of ``values`` on one device, in the dtype the kernel computes in
-    (``lib``: the back-end's :class:`rigidsym.kernels.arrays.shared.Library`).
+    (``lib``: the back-end's :class:`rigidsym.kernels.arrays.evaluation.Library`).
 
     Returns:
         ``(arrays, dtype, eps)``: ``dtype`` is the inputs' promoted dtype (the library's

@@ -126,8 +126,8 @@ def rescue(lib, progs, name: str, xs: list, res: list, rows, batch: tuple, bits:
     """Re-run the ``rows`` samples (a device mask from :func:`flag_rows`) in long double.
 
     Args:
-        lib: the back-end's :class:`~rigidsym.kernels.arrays.shared.Library`.
-        progs: the :class:`~rigidsym.kernels.arrays.shared.ArraySpace` (its NumPy kernel).
+        lib: the back-end's :class:`~rigidsym.kernels.arrays.evaluation.Library`.
+        progs: the :class:`~rigidsym.kernels.arrays.evaluation.ArraySpace` (its NumPy kernel).
         xs: the broadcast inputs (``batch + shape``), in the working dtype.
         res: the outputs (``batch + shape``), in the working dtype.
 

@@ -6,8 +6,13 @@ from __future__ import annotations
 
 import torch
 
-from rigidsym.kernels.arrays import shared as _arrays
-from rigidsym.kernels.arrays.evaluation import columns, shape_outputs, singular_mask
+from rigidsym.kernels.arrays.evaluation import (
+    Space,
+    columns,
+    cotangents,
+    shape_outputs,
+    singular_mask,
+)
 from rigidsym.kernels.arrays.rescue import finite_columns
 from rigidsym.kernels.runtime.jacobians import full_batch
 
@@ -23,7 +28,7 @@ def fixed_arity(values, n: int):
     return scope["forward"]
 
 
-def compiled_saving(space: _arrays.Space, name: str):
+def compiled_saving(space: Space, name: str):
     """The ``torch.autograd.Function`` of a traced call (torch.compile) of a kernel with
     ``SAVED`` programs (issue 38, the first compile: fewer operations for Dynamo to trace
     and inductor to compile): the forward returns, as non-differentiable outputs after the
@@ -72,7 +77,7 @@ def compiled_saving(space: _arrays.Space, name: str):
         # the flagged samples' outputs are NaN whatever the inputs: their inputs'
         # cotangents zero, set after the VJP, which may be NaN there (0 * inf)
         cols = columns(xs, meta["args"])
-        flat = vjp(*cols, *temps, *_arrays.cotangents(list(grads[:nout]), meta["outputs"]))
+        flat = vjp(*cols, *temps, *cotangents(list(grads[:nout]), meta["outputs"]))
         flat = [torch.where(sing, 0.0, full_batch(xp, v, cols[0])) for v in flat]
         return tuple(shape_outputs(xp, flat, meta["args"], cols[0]))
 

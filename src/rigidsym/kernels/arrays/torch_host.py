@@ -139,7 +139,7 @@ def _tensors(res: list) -> list:
 
 
 def views(tensors: list):
-    """NumPy views of eager CPU tensors (the screen of :mod:`._arrays_rescue`), or None
+    """NumPy views of eager CPU tensors (the screen of :mod:`.rescue`), or None
     where one is not (a GPU, a tensor subclass, a negative view, a traced tensor)."""
     out = []
     for x in tensors:

@@ -142,7 +142,7 @@ class KernelSpace:
         thread below ``MIN_PARALLEL`` samples); outputs are the same for every count.
         float32: float32 arrays in and out, float64 arithmetic inside. Samples the kernel
         cannot compute in its type (an input of extreme magnitude, an intermediate that
-        overflows or underflows) are re-run in a wider one (:mod:`._rescue`, issue 37).
+        overflows or underflows) are re-run in a wider one (:mod:`.rescue`, issue 37).
         """
         b = backend_name or self.backend()
         t = resolve_threads(threads, b)

@@ -1,8 +1,9 @@
 """The kernels' global state, in one module the facade and its helpers all import.
 
 - the backend choice (``"c"`` or ``"numpy"``) and its one-time fallback warning;
-- the package's own kernel space (registered by :mod:`rigidsym.kernels` when it loads the
-  generated ``api`` module), through which :mod:`._jacobian` and :mod:`._dask` call kernels;
+- the package's own kernel space (registered by :mod:`.namespace` when it loads the
+  generated ``api`` module), through which :mod:`.jacobians` and :mod:`.dask_arrays` call
+  kernels;
 - the lock around the lazy C load and the backend switch (kernels may first be called from
   several threads at once: a thread pool, a Dask worker).
 
@@ -42,7 +43,7 @@ def warn_once(exc: Exception) -> None:
 
 
 def register_builtin(space: Any) -> None:
-    """Record the package's kernel space (called once by :mod:`rigidsym.kernels`)."""
+    """Record the package's kernel space (called once by :mod:`.namespace`)."""
     STATE["builtin"] = space
 
 

@@ -1,6 +1,6 @@
-"""A back-end module's public face (issue 31; split from ``_arrays``, issue 38): the
-kernels' functions with their real signatures and docstrings, the namespace of a generated
-directory, and the module-level functions of ``rigidsym.kernels.torch`` and ``.jax``
+"""The namespace of an array back-end module (issue 31), its public face: the kernels'
+functions with their real signatures and docstrings, the namespace of a generated directory
+(``load``), and the module-level functions of ``rigidsym.kernels.torch`` and ``.jax``
 (:func:`module_api`). No import of either library.
 """
 
@@ -10,8 +10,8 @@ import types
 from collections.abc import Callable
 from pathlib import Path
 
+from rigidsym.kernels.arrays.evaluation import SUFFIX, ArraySpace
 from rigidsym.kernels.arrays.inputs import shape_text
-from rigidsym.kernels.arrays.shared import SUFFIX, ArraySpace
 from rigidsym.kernels.runtime import names as _names
 from rigidsym.kernels.runtime import state as _state
 

@@ -1,0 +1,71 @@
+"""The Euler-angle rates of Exercise 3.10 on the package's kernels: the rate matrix ``W``
+(``omega = W eta_dot``) and the angle rates (``eta_dot = W^-1 omega``) of any of the twelve
+intrinsic sequences, in the fixed or the body frame, each the generated kernel of that
+sequence and frame. Re-exported by :mod:`rigidsym.kernels`.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from rigidsym.kernels.runtime import state as _state
+from rigidsym.kernels.runtime.namespace import public
+
+__all__ = ["euler_rate_matrix", "euler_angle_rates"]
+
+
+@public
+def euler_rate_matrix(angles: ArrayLike, sequence: str, frame: str = "fixed", *,
+                      out: NDArray[np.float64] | None = None, check: bool = True,
+                      threads: int | None = None) -> NDArray[np.floating]:
+    """Euler-angle rate matrix ``W`` with ``omega = W eta_dot`` (Exercise 3.10).
+
+    Args:
+        angles: array-like (..., 3), the intrinsic Euler angles [rad] of ``sequence``.
+        sequence: one of the twelve intrinsic sequences ("ZXZ", "ZYX", ...).
+        frame: "fixed" (omega in the fixed frame) or "body".
+        out, check, threads: see :mod:`rigidsym.kernels`.
+
+    Returns:
+        ndarray (..., 3, 3) [1].
+
+    Raises:
+        TypeError, ValueError: bad input, naming the argument (also a bad ``sequence`` or
+            ``frame``).
+
+    Example:
+        >>> euler_rate_matrix([0.1, 0.2, 0.3], "ZYX").shape
+        (3, 3)
+    """
+    return _state.call(_state.euler_name("euler_rate_matrix", sequence, frame), (angles,),
+                       out=out, check=check, threads=threads)
+
+
+@public
+def euler_angle_rates(angles: ArrayLike, omega: ArrayLike, sequence: str,
+                      frame: str = "fixed", *, out: NDArray[np.float64] | None = None,
+                      check: bool = True, on_singular: str | None = None,
+                      threads: int | None = None) -> NDArray[np.floating]:
+    """Euler-angle rates ``eta_dot = W^-1 omega`` (Exercise 3.10).
+
+    Args:
+        angles: array-like (..., 3) [rad].
+        omega: array-like (..., 3) [rad/s], in the frame given by ``frame``.
+        sequence: one of the twelve intrinsic sequences.
+        frame: "fixed" or "body".
+        out, check, on_singular, threads: see :mod:`rigidsym.kernels`.
+
+    Returns:
+        ndarray (..., 3) [rad/s].
+
+    Raises:
+        TypeError, ValueError: bad input, naming the argument.
+        SingularConfigurationError: at gimbal lock (det W = 0), unless on_singular="nan".
+
+    Example:
+        >>> euler_angle_rates([0.1, 0.2, 0.3], [0.0, 0.0, 1.0], "ZYX").shape
+        (3,)
+    """
+    return _state.call(_state.euler_name("euler_angle_rates", sequence, frame), (angles, omega),
+                       out=out, check=check, on_singular=on_singular, threads=threads)
