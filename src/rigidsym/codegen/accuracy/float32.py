@@ -44,7 +44,7 @@ import numpy as np
 
 from rigidsym.codegen.accuracy import rule
 from rigidsym.codegen.accuracy.compensated import diffprod, sumprod
-from rigidsym.codegen.accuracy.float32_points import (  # noqa: F401  (the planner's points, re-exported)
+from rigidsym.codegen.accuracy.points import (  # noqa: F401  (the planner's points, re-exported)
     N_RANDOM,
     RANGE32,
     REGIME_SEEDS,

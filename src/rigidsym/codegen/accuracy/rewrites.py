@@ -41,7 +41,7 @@ from rigidsym.codegen.accuracy.compensated import (
 )
 from rigidsym.codegen.accuracy.compensated import expand_numerators as _expand_numerators
 from rigidsym.codegen.accuracy.compensated import expand_plain as _expand_plain
-from rigidsym.codegen.accuracy.regimes import regimes
+from rigidsym.codegen.accuracy.points import GENERATOR_STEPS, exact_points
 from rigidsym.codegen.accuracy.rewrite_rules import (
     angle_fractions,
     axis_point_from_axis,
@@ -201,37 +201,14 @@ RULES = (
 
 
 # --------------------------------------------------------------------------- measurement
-#: the approach steps of the generator's regimes (a subsample of the harness's, for time)
-SMALL = [10.0**-k for k in (1, 3, 5, 7, 9, 11, 13, 15, 20, 100)]
-
-
-def _points(kernel, seed: int = 30, n_random: int = 6, small=SMALL):
-    """Exact points (mpmath, 40 digits) per argument over the regimes of
-    :mod:`rigidsym.codegen.accuracy.regimes` in float64 (the harness's, on fewer steps). The
-    unconstrained arguments are taken as float64 holds them (the reference then judges the
-    formula, not the rounding of the input, which every form suffers alike); constrained
-    ones stay exact (on their manifold, where the rewrites are equal to the declaration).
-    Not the ends of the floating range: an intermediate that overflows there is the
-    runtime's rescue (``rigidsym.kernels.runtime.rescue``, by scaling), not a form's to avoid."""
-    out = []
-    for pts in regimes(kernel, np.float64, n_random=n_random, seed=seed, small=small,
-                       extremes=False).values():
-        for p in pts:
-            out.append([[mpmath.mpf(float(x)) if arg.kind == "any" else
-                         mpmath.mpf(int(x.p)) / int(x.q) for x in a]
-                        for arg, a in zip(kernel.args, p, strict=True)])
-    return out
-
-
 class Meter:
     """The declared outputs at the measurement points (mpmath) and a form's error there:
     per point and output, normwise relative (absolute where the output is exactly 0), in
     float64, as :mod:`rigidsym.codegen.accuracy.rule` reads it."""
 
     def __init__(self, kernel, flat, syms_flat, conds, cond, n_random: int = 6,
-                 seeds=(30,), small=SMALL):
-        with mpmath.workdps(40):
-            pts = [p for s in seeds for p in _points(kernel, s, n_random, small)]
+                 seeds=(30,), small=GENERATOR_STEPS):
+        pts = exact_points(kernel, seeds, n_random, small)
         self.syms = syms_flat
         offs = np.cumsum([0] + [o.size for o in kernel.outputs])
         self.groups = [slice(a, b) for a, b in zip(offs[:-1], offs[1:], strict=True)]
