@@ -4,7 +4,7 @@
 
 - The code generator's choice of forms (:mod:`rigidsym.codegen.accuracy.rewrites`,
   :mod:`rigidsym.codegen.accuracy.cos_form`, measured by
-  :class:`rigidsym.codegen.accuracy.rewrites.Meter`): :func:`exact_points`, in mpmath, the
+  :class:`rigidsym.codegen.accuracy.error.Meter`): :func:`exact_points`, in mpmath, the
   regimes in float64 on fewer steps (:data:`GENERATOR_STEPS`).
 - The float32 precision plan (:mod:`rigidsym.codegen.accuracy.float32`): random and
   adversarial points by argument kind (:func:`sample_inputs`), then the regimes in float32
