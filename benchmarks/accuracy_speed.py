@@ -151,6 +151,7 @@ def double_nodes(name: str) -> list[str]:
     """Per node the plan keeps in double: the rule's worst ratio (rigidsym.codegen.accuracy.float32)
     of the plan with that node made float too (> 1: float there breaks the rule)."""
     from rigidsym.codegen.accuracy import float32 as F
+    from rigidsym.codegen.accuracy.error import normwise
     from rigidsym.codegen.generator import _trig_split, compile_kernel
     from rigidsym.codegen.spec import flat_symbols
 
@@ -176,9 +177,9 @@ def double_nodes(name: str) -> list[str]:
         ref = spec.run(sub, None)
         ok = np.isfinite(ref).all(axis=1)
         sub, ref = {c: v[ok] for c, v in sub.items()}, ref[ok]
-        allowed = F.BUDGET(F._errors(tb[m][ok], ref, groups))
+        allowed = F.BUDGET(normwise(tb[m][ok], ref, groups))
         for node in [n for n, t in plan.items() if t == "d"]:
-            err = F._errors(spec.run(sub, plan | {node: "f"}), ref, groups)
+            err = normwise(spec.run(sub, plan | {node: "f"}), ref, groups)
             with np.errstate(all="ignore"):
                 r = np.where(err == 0, 0.0, err / allowed)
             i = int(np.argmax(np.where(np.isfinite(r), r, np.inf).max(axis=1)))

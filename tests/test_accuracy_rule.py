@@ -16,8 +16,8 @@ import pytest
 import sympy as sp
 
 from rigidsym import kernels as K
+from rigidsym.codegen.accuracy import error, rule
 from rigidsym.codegen.accuracy import rewrites as accurate
-from rigidsym.codegen.accuracy import rule
 from rigidsym.codegen.generator import _flatten
 from rigidsym.codegen.spec import flat_symbols, input_symbols
 
@@ -198,12 +198,12 @@ def test_generator_chooses_plucker_form_by_the_rule():
     (issue 30's) fails the rule against the textbook at nearly coincident points and is
     refused; the compensated one is kept. Old main: no regimes in the generator, no rule."""
     k, syms, sflat, conds, flat, ctx = _forms("plucker_from_points")
-    meter = accurate.Meter(k, flat, sflat, conds, None)
+    meter = error.Meter(k, flat, sflat, conds, None)
     textbook = meter.errors(flat)
     plain = meter.errors(accurate._expand_plain(flat, ctx)[0])
     comp = meter.errors(accurate._expand_numerators(flat, ctx)[0])
-    assert accurate.worst(plain, textbook) > 1e3
-    assert accurate.worst(comp, textbook) <= 1
+    assert error.worst(plain, textbook) > 1e3
+    assert error.worst(comp, textbook) <= 1
     _, chosen = accurate.improve(k, "main", flat, syms, sflat, conds)
     assert [c.name for c in chosen] == ["expanded numerator"]
     assert chosen[0].after * accurate.GAIN <= chosen[0].before

@@ -31,6 +31,7 @@ from test_kernels import (
 from rigidsym import kernels as K
 from rigidsym.codegen.accuracy import float32 as F32
 from rigidsym.codegen.accuracy import rule
+from rigidsym.codegen.accuracy.error import normwise
 from rigidsym.kernels.runtime import scale as _scale
 
 ULP32 = float(np.finfo(np.float32).eps)         # 2**-23
@@ -91,8 +92,8 @@ def _rule_ratio(name, arrays, got, ref):
     tb = rule.textbook(kernel, [c for a in arrays for c in a.reshape(n, -1).T], np.float32)
     offs = np.cumsum([0] + [o.size for o in kernel.outputs])
     groups = [slice(a, b) for a, b in zip(offs[:-1], offs[1:], strict=True)]
-    err = F32._errors(got.astype(np.float64), ref, groups)
-    allowed = F32.BUDGET(F32._errors(tb, ref, groups))
+    err = normwise(got.astype(np.float64), ref, groups)
+    allowed = F32.BUDGET(normwise(tb, ref, groups))
     # ON_SO3 kernels: the rounding of a float32 Q over sin^2(phi) (the model error of an input
     # that is not exactly a rotation), as in test_kernels
     if name in ON_SO3:

@@ -8,20 +8,22 @@ half-angle values. No one form of that is best everywhere: ``1 - 2 s^2`` is off 
 best alone but can lose where the kernel combines ``cos phi`` with ``s`` and ``c``
 elsewhere (``L_tilde_dot``: 1.39 -> 1.61 times the rule at the harness's points), and
 ``(c - s)(c + s)`` has no branch. So each build of a kernel (each branch and the main one) is
-measured in each of :data:`rigidsym.codegen.optimise.COS_FORMS` as :mod:`.accurate`
-measures its rewrites: float64, at exact points over the regimes of :mod:`.regimes` (seeds
-:data:`SEEDS`, none of the harness's), against the declared formula in mpmath; the worst
-ratio to the rule's reference half (``max(2 e_ref, 4 u)``, ``e_ref`` the textbook formula
-evaluated plainly) decides, the default form kept unless another is :data:`MARGIN` better.
-Each form is an identity (the zero test decides ``form - cos phi`` on the angle's
-constraint), so only the rounding changes.
+measured in each of :data:`rigidsym.codegen.optimise.COS_FORMS` as :mod:`.rewrites`
+measures its rewrites (:class:`rigidsym.codegen.accuracy.error.Meter`): float64, at exact
+points over the regimes of :mod:`.regimes` (seeds :data:`SEEDS`, none of the harness's),
+against the declared formula in mpmath; the worst ratio to the rule's reference half
+(:func:`rigidsym.codegen.accuracy.error.worst`: ``max(2 e_ref, 4 u)``, ``e_ref`` the
+textbook formula evaluated plainly) decides, the default form kept unless another is
+:data:`MARGIN` better. Each form is an identity (the zero test decides ``form - cos phi`` on
+the angle's constraint), so only the rounding changes.
 """
 
 from __future__ import annotations
 
 import sympy as sp
 
-from rigidsym.codegen.accuracy import rewrites as _acc
+from rigidsym.codegen.accuracy.error import Meter, worst
+from rigidsym.codegen.accuracy.rewrites import Chosen
 from rigidsym.codegen.optimise import COS_FORMS, DEFAULT_COS, rewrite
 
 __all__ = ["SEEDS", "MARGIN", "choose"]
@@ -53,19 +55,19 @@ def choose(kernel, variant: str, declared, flat, angles, syms_flat, conds, cond=
     and the header line where it is not the default."""
     if not angles or not any(e.has(sp.cos(a)) for e in flat for a in angles):
         return DEFAULT_COS, []
-    meter = _acc.Meter(kernel, declared, syms_flat, conds, cond, n_random=8, seeds=SEEDS,
-                        small=None)
+    meter = Meter(kernel, declared, syms_flat, conds, cond, n_random=8, seeds=SEEDS,
+                  small=None)
     if not meter.ok.any():
         return DEFAULT_COS, []
     textbook = meter.errors(declared)
-    worst = {f: _acc.worst(meter.errors([rewrite(sp.sympify(e), angles, f) for e in flat]),
-                            textbook) for f in COS_FORMS}
-    best = min(worst, key=lambda f: (worst[f], f != DEFAULT_COS))
-    if best == DEFAULT_COS or worst[best] > MARGIN * worst[DEFAULT_COS]:
+    ratio = {f: worst(meter.errors([rewrite(sp.sympify(e), angles, f) for e in flat]),
+                      textbook) for f in COS_FORMS}
+    best = min(ratio, key=lambda f: (ratio[f], f != DEFAULT_COS))
+    if best == DEFAULT_COS or ratio[best] > MARGIN * ratio[DEFAULT_COS]:
         return DEFAULT_COS, []
-    return best, [_acc.Chosen(
+    return best, [Chosen(
         variant, f"cos phi as {best}",
         f"the bare cos phi left by the half-angle rewrite, as {best} (s, c: sin, cos of "
         f"phi/2) rather than {DEFAULT_COS}: the form of the measured least error among "
         f"{', '.join(COS_FORMS)} (rigidsym.codegen.accuracy.cos_form)",
-        worst[DEFAULT_COS], worst[best], int(meter.ok.sum()), _decided(best))]
+        ratio[DEFAULT_COS], ratio[best], int(meter.ok.sum()), _decided(best))]

@@ -12,10 +12,11 @@ argument (``sqrtf``). Its error is measured as the harness measures it
 (``benchmarks/accuracy.py``, the rule's reference half): against the program in float64 at the
 input the kernel got, the unconstrained arguments as rounded to float32 and the constrained
 ones (unit vectors, angles, rotations, transforms) unrounded, on their manifold (float64's
-own error there is below 1e-8 ulp of float32); normwise relative per output, at
-:data:`N_RANDOM` random points, the adversarial ones of the argument kinds (phi near 0 and
-pi, omega near 0, gimbal lock) and the harness's regimes (:mod:`rigidsym.codegen.accuracy.regimes`,
-drawn with seeds of their own, :data:`REGIME_SEEDS`): :func:`plan_inputs`. A point with an
+own error there is below 1e-8 ulp of float32); normwise relative per output
+(:func:`rigidsym.codegen.accuracy.error.normwise`), at :data:`N_RANDOM` random points, the
+adversarial ones of the argument kinds (phi near 0 and pi, omega near 0, gimbal lock) and
+the harness's regimes (:mod:`rigidsym.codegen.accuracy.regimes`, drawn with seeds of their
+own, :data:`REGIME_SEEDS`): :func:`rigidsym.codegen.accuracy.points.plan_inputs`. A point with an
 input the C kernels' range test flags (nonzero magnitude outside :data:`RANGE32`) is left
 out: C re-runs it in a wider type (the rescue of issue 37), so the plan never computes it.
 
@@ -37,13 +38,12 @@ tests/test_float32.py asserts the same against the 50-digit reference.
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
 
 from rigidsym.codegen.accuracy import rule
 from rigidsym.codegen.accuracy.compensated import diffprod, sumprod
-from rigidsym.codegen.accuracy.float32_points import (  # noqa: F401  (the planner's points, re-exported)
+from rigidsym.codegen.accuracy.error import budget, normwise, round_up, worst
+from rigidsym.codegen.accuracy.points import (  # noqa: F401  (the planner's points, re-exported)
     N_RANDOM,
     RANGE32,
     REGIME_SEEDS,
@@ -66,7 +66,7 @@ def BUDGET(e_ref):
     ``e_ref`` the textbook formula's error in float32 there: ``max(2 e_ref, 4 u)``. The
     planner has no condition number: the rule's condition half, ``8 u (kappa + 1)``, is
     judged by the harness (``benchmarks/accuracy.py``, float32 on C and NumPy)."""
-    return np.maximum(rule.REF_FACTOR * np.asarray(e_ref), rule.FLOOR * U32)
+    return budget(e_ref, U32)
 #: the share of :data:`BUDGET` a plan may use at its own points: they are a sample and the
 #: harness and the tests judge at others, where a plan that used its whole budget here
 #: went past it (at 1: screw_axis_point 4.3 u against 4 u at one of the harness's random
@@ -164,29 +164,6 @@ class ProgramSpec:
         env64[name] = v.astype(_F64)
 
 
-def _errors(got: np.ndarray, ref: np.ndarray, groups) -> np.ndarray:
-    """``(samples, outputs)``: the normwise relative error of each output (absolute where it
-    is exactly 0; inf where not finite)."""
-    out = np.zeros((len(ref), len(groups)))
-    for j, sl in enumerate(groups):
-        norm = np.linalg.norm(ref[:, sl], axis=1)
-        with np.errstate(all="ignore"):
-            d = np.linalg.norm(got[:, sl] - ref[:, sl], axis=1)
-            e = np.where(norm > 0, d / np.where(norm > 0, norm, 1.0), d)
-        out[:, j] = np.where(np.isfinite(e), e, np.inf)
-    return out
-
-
-def _worst(err: np.ndarray, allowed: np.ndarray) -> float:
-    """The worst ratio to the budget, rounded up to 1e-3 (so that float64 noise never flips
-    a decision between machines)."""
-    if not err.size:
-        return 0.0
-    with np.errstate(all="ignore"):
-        r = np.where(err == 0, 0.0, err / allowed)
-    return _ceil(float(np.max(np.where(np.isfinite(r), r, np.inf))))
-
-
 def choose(prog: ProgramSpec, cols: dict, groups=None, textbook=None,
            exact: dict | None = None) -> tuple[dict, float]:
     """The plan of ``prog`` at the points ``cols`` (rows where the reference is finite),
@@ -204,7 +181,7 @@ def choose(prog: ProgramSpec, cols: dict, groups=None, textbook=None,
     if not len(ref):
         return dict.fromkeys(nodes, "d"), 0.0
     groups = groups or [slice(0, ref.shape[1])]
-    e_ref = (_errors(textbook[keep], ref, groups) if textbook is not None
+    e_ref = (normwise(textbook[keep], ref, groups) if textbook is not None
              else np.zeros((len(ref), len(groups))))
     allowed = BUDGET(e_ref)
     # the kernel in double, rounded once: where it already uses much of the budget (the
@@ -212,7 +189,7 @@ def choose(prog: ProgramSpec, cols: dict, groups=None, textbook=None,
     # arithmetic) a plan may add 1 - TARGET of it, but not past the rule where double is
     # within it
     with np.errstate(all="ignore"):
-        r0 = _errors(prog.run(cols, dict.fromkeys(nodes, "d")), ref, groups) / allowed
+        r0 = normwise(prog.run(cols, dict.fromkeys(nodes, "d")), ref, groups) / allowed
     r0 = np.where(np.isfinite(r0), r0, np.inf)
     room = r0 + 1 - TARGET
     limit = allowed * np.where(r0 <= 1, np.clip(room, TARGET, 1), room)
@@ -221,7 +198,7 @@ def choose(prog: ProgramSpec, cols: dict, groups=None, textbook=None,
         c = cols if rows is None else {k: v[rows] for k, v in cols.items()}
         out, state = prog.evaluate(c, plan, state, start)
         with np.errstate(all="ignore"):
-            e = _errors(out, ref if rows is None else ref[rows], groups)
+            e = normwise(out, ref if rows is None else ref[rows], groups)
             lim = limit if rows is None else limit[rows]
             return np.where(e == 0, 0.0, e / lim).max(axis=1), state
 
@@ -229,11 +206,12 @@ def choose(prog: ProgramSpec, cols: dict, groups=None, textbook=None,
         # the worst ratio to the rule where the kernel in double is within it (elsewhere
         # the rounding of a constrained input decides, which no plan changes)
         ok = r0.max(axis=1) <= 1
-        return _worst(_errors(prog.run(cols, plan), ref, groups)[ok], allowed[ok])
+        return worst(normwise(prog.run(cols, plan), ref, groups)[ok], e_ref[ok], U32,
+                     every_point=True, rounded=True)
 
     plan = dict.fromkeys(nodes, "f")
     r = ratios(plan)[0]
-    if _ceil(r.max()) <= 1:
+    if round_up(r.max()) <= 1:
         return plan, score(plan)
     plan = _search(nodes, ratios, r)
     return plan, score(plan)
@@ -253,25 +231,19 @@ def _search(nodes: list, ratios, r: np.ndarray) -> dict:
     index = {n: i for i, n in enumerate(nodes)}
     while True:
         _, s0 = ratios(base, rows)
-        alone = {n: _ceil(ratios(base | {n: "f"}, rows, s0, index[n])[0].max())
+        alone = {n: round_up(ratios(base | {n: "f"}, rows, s0, index[n])[0].max())
                  for n in nodes}
         plan, state = base, s0
         for n in sorted(nodes, key=lambda n: (alone[n], index[n])):
             trial = plan | {n: "f"}
             rt, st = ratios(trial, rows, state, index[n])
-            if _ceil(rt.max()) <= 1:
+            if round_up(rt.max()) <= 1:
                 plan, state = trial, st
         r = ratios(plan)[0]
-        if _ceil(r.max()) <= 1:
+        if round_up(r.max()) <= 1:
             break
         rows |= r > 1
     return plan
-
-
-def _ceil(x: float) -> float:
-    """``x`` rounded up to 1e-3 (so that float64 noise never flips a decision between
-    machines)."""
-    return math.ceil(x * 1000) / 1000 if math.isfinite(x) else math.inf
 
 
 def trig_spec(calls: dict, pre: list) -> dict:

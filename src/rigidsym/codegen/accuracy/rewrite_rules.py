@@ -1,7 +1,7 @@
-"""The candidate rewrites' proposals of :mod:`.accurate` (issue 30, 37): each
+"""The candidate rewrites' proposals of :mod:`.rewrites` (issue 30, 37): each
 ``propose(flat, ctx) -> (new flat, [(old, new) parts]) | None``; the parts are what the zero
 test decides equal. Kept apart from the measuring and choosing, which is
-:mod:`.accurate`'s."""
+:mod:`.rewrites`'s."""
 
 from __future__ import annotations
 

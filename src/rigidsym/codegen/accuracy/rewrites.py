@@ -11,7 +11,9 @@ expressions"; Herbie itself is a Racket tool, so the selection here is ours):
    Euler-Rodrigues parameters, a unit vector normalised, all in 40-digit mpmath), rounded to
    float64, over random points and the approaches to every cancellation the inputs' kinds
    have (angles to 0 and pi, rotations to 1 and to a half turn, vectors scaled 1e-6..1e6);
-   the reference is the declared outputs at the exact point in mpmath;
+   the reference is the declared outputs at the exact point in mpmath (the points:
+   :func:`rigidsym.codegen.accuracy.points.exact_points`; the error:
+   :class:`rigidsym.codegen.accuracy.error.Meter`);
 3. the candidate is kept when its worst error is at least 4 times smaller, and only after
    the zero test (:func:`rigidsym.zero.decide.decide_zero`, the constraints of the inputs'
    kinds imposed exactly) decides the replaced parts equal to the declared ones.
@@ -23,25 +25,17 @@ headers of the generated files (:class:`Chosen`).
 
 from __future__ import annotations
 
-import math
 from collections.abc import Callable
 from dataclasses import dataclass
 
-import mpmath
 import numpy as np
 import sympy as sp
 
 from rigidsym.algebra.symbols import constrained_group
-from rigidsym.codegen.accuracy import rule as _rule
-from rigidsym.codegen.accuracy.compensated import (
-    compensated_sums,
-    diffprod,
-    expand_diffprod,
-    sumprod,
-)
+from rigidsym.codegen.accuracy.compensated import compensated_sums, expand_diffprod
 from rigidsym.codegen.accuracy.compensated import expand_numerators as _expand_numerators
 from rigidsym.codegen.accuracy.compensated import expand_plain as _expand_plain
-from rigidsym.codegen.accuracy.regimes import regimes
+from rigidsym.codegen.accuracy.error import Meter, worst
 from rigidsym.codegen.accuracy.rewrite_rules import (
     angle_fractions,
     axis_point_from_axis,
@@ -50,14 +44,12 @@ from rigidsym.codegen.accuracy.rewrite_rules import (
     skew_one_minus_cos,
 )
 from rigidsym.codegen.accuracy.tan_half import TAN_HALF_TEXT, tan_half_polynomial
-from rigidsym.codegen.printers import KernelNumPyPrinter
 
 __all__ = ["Chosen", "Rewrite", "RULES", "improve"]
 
 #: the candidate's worst ratio to the rule (against the best form at each point) must be
 #: this many times smaller than the current form's to be kept
 GAIN = 2.0
-U64 = 2.0**-53
 
 
 @dataclass(frozen=True)
@@ -199,99 +191,7 @@ RULES = (
 )
 
 
-# --------------------------------------------------------------------------- measurement
-#: the approach steps of the generator's regimes (a subsample of the harness's, for time)
-SMALL = [10.0**-k for k in (1, 3, 5, 7, 9, 11, 13, 15, 20, 100)]
-
-
-def _points(kernel, seed: int = 30, n_random: int = 6, small=SMALL):
-    """Exact points (mpmath, 40 digits) per argument over the regimes of
-    :mod:`rigidsym.codegen.accuracy.regimes` in float64 (the harness's, on fewer steps). The
-    unconstrained arguments are taken as float64 holds them (the reference then judges the
-    formula, not the rounding of the input, which every form suffers alike); constrained
-    ones stay exact (on their manifold, where the rewrites are equal to the declaration).
-    Not the ends of the floating range: an intermediate that overflows there is the
-    runtime's rescue (``rigidsym.kernels.runtime.rescue``, by scaling), not a form's to avoid."""
-    out = []
-    for pts in regimes(kernel, np.float64, n_random=n_random, seed=seed, small=small,
-                       extremes=False).values():
-        for p in pts:
-            out.append([[mpmath.mpf(float(x)) if arg.kind == "any" else
-                         mpmath.mpf(int(x.p)) / int(x.q) for x in a]
-                        for arg, a in zip(kernel.args, p, strict=True)])
-    return out
-
-
-class Meter:
-    """The declared outputs at the measurement points (mpmath) and a form's error there:
-    per point and output, normwise relative (absolute where the output is exactly 0), in
-    float64, as :mod:`rigidsym.codegen.accuracy.rule` reads it."""
-
-    def __init__(self, kernel, flat, syms_flat, conds, cond, n_random: int = 6,
-                 seeds=(30,), small=SMALL):
-        with mpmath.workdps(40):
-            pts = [p for s in seeds for p in _points(kernel, s, n_random, small)]
-        self.syms = syms_flat
-        offs = np.cumsum([0] + [o.size for o in kernel.outputs])
-        self.groups = [slice(a, b) for a, b in zip(offs[:-1], offs[1:], strict=True)]
-        keep = []
-        for p in pts:
-            row = [float(x) for a in p for x in a]
-            ok = cond is None or bool(cond(*row))
-            ok = ok and not any(bool(c(*row)) for c in conds)
-            if ok:
-                keep.append(p)
-        self.exact = keep
-        self.rounded = np.array([[float(x) for a in p for x in a] for p in keep], dtype=float)
-        f = sp.lambdify(syms_flat, flat, modules="mpmath", cse=True)
-        refs = []
-        with mpmath.workdps(40):
-            for p in keep:
-                try:   # TypeError: float() of a complex value, a root of a negative
-                    refs.append([float(v) for v in f(*[x for a in p for x in a])])
-                except (ZeroDivisionError, ValueError, OverflowError, TypeError):  # radicand
-                    refs.append([math.nan] * len(flat))
-        self.ref = np.array(refs, dtype=float).reshape(len(keep), len(flat))
-        self.ok = np.isfinite(self.ref).all(axis=1)
-
-    def errors(self, flat, textbook: bool = False) -> np.ndarray:
-        """``(points, outputs)``: the error of ``flat`` at the points with a finite
-        reference (inf where it is not finite or not below 1). A form is evaluated as the
-        kernels print it (:class:`~rigidsym.codegen.printers.KernelNumPyPrinter`: a
-        rational power as roots and a quotient); ``textbook``: as the harness evaluates the
-        declaration (sympy's NumPy printer: ``pow``)."""
-        n = int(self.ok.sum())
-        if not n:
-            return np.zeros((0, len(self.groups)))
-        mods = [{"DiffProd": diffprod, "SumProd": sumprod, "_diffprod": diffprod,
-                 "_sumprod": sumprod}, "numpy"]
-        f = sp.lambdify(self.syms, flat, modules=mods, cse=True,
-                        printer=None if textbook else KernelNumPyPrinter)
-        with np.errstate(all="ignore"):
-            got = np.array([np.broadcast_to(np.asarray(v, dtype=float), (len(self.exact),))
-                            for v in f(*self.rounded.T)]).T[self.ok]
-        r = self.ref[self.ok]
-        out = np.zeros((n, len(self.groups)))
-        for j, sl in enumerate(self.groups):
-            norm = np.linalg.norm(r[:, sl], axis=1)
-            with np.errstate(all="ignore"):
-                d = np.linalg.norm(got[:, sl] - r[:, sl], axis=1)
-                e = np.where(norm > 0, d / np.where(norm > 0, norm, 1.0), d)
-            # a relative error of 1 or more is no answer (a zero, a wrong sign): as a flag
-            out[:, j] = np.where(np.isfinite(e) & (e < 1), e, np.inf)
-        return out
-
-
-def worst(err: np.ndarray, e_ref: np.ndarray) -> float:
-    """The worst :func:`rigidsym.codegen.accuracy.rule.ratio` of ``err`` against ``e_ref`` (no
-    condition number in the generator: the reference half of the rule), over the points
-    where some form is finite."""
-    some = np.isfinite(e_ref)
-    if not some.any():
-        return 0.0
-    return max(_rule.ratio(float(x), U64, None, float(y)) for x, y in
-               zip(err[some], e_ref[some], strict=True))
-
+# --------------------------------------------------------------------------- choice
 
 def _constrained(kernel, syms_by_arg, kinds=("unit", "rotation", "angle")) -> dict:
     """Kernel input symbols -> the zero test's constrained atoms of the same kinds (of the

@@ -1,5 +1,5 @@
 """The accuracy rule of the kernels (issue 37 item 1): one function, for the harness
-(``benchmarks/accuracy.py``), the code generator's choice of forms (:mod:`.accurate`) and the
+(``benchmarks/accuracy.py``), the code generator's choice of forms (:mod:`.rewrites`) and the
 float32 precision plan (:mod:`.float32`).
 
 An output's error ``err`` is normwise relative (``||computed - truth|| / ||truth||``, one

@@ -1,18 +1,60 @@
-"""The points a float32 precision plan is measured on (:mod:`rigidsym.codegen.accuracy.float32`):
-random and adversarial points by argument kind, the accuracy harness's regimes
-(:mod:`rigidsym.codegen.accuracy.regimes`), as float32 inputs and as the inputs the harness takes
-the truth at (issue 37)."""
+"""The points a form is measured on, over the regimes of
+:mod:`rigidsym.codegen.accuracy.regimes` (the harness's, issue 37): one builder of them
+(:func:`regime_points`), and the two ways they are taken.
+
+- The code generator's choice of forms (:mod:`rigidsym.codegen.accuracy.rewrites`,
+  :mod:`rigidsym.codegen.accuracy.cos_form`, measured by
+  :class:`rigidsym.codegen.accuracy.error.Meter`): :func:`exact_points`, in mpmath, the
+  regimes in float64 on fewer steps (:data:`GENERATOR_STEPS`).
+- The float32 precision plan (:mod:`rigidsym.codegen.accuracy.float32`): random and
+  adversarial points by argument kind (:func:`sample_inputs`), then the regimes in float32
+  (:func:`regime_inputs`), as float32 inputs and as the inputs the harness takes the truth
+  at (:func:`plan_inputs`).
+"""
 
 from __future__ import annotations
 
+import mpmath
 import numpy as np
 
+from rigidsym.codegen.accuracy.regimes import regimes
 from rigidsym.core.draws import rotations, units
 
-__all__ = ["N_RANDOM", "REGIME_SEEDS", "RANGE32", "sample_inputs", "regime_inputs",
-           "plan_inputs"]
+__all__ = ["GENERATOR_STEPS", "regime_points", "exact_points", "N_RANDOM", "REGIME_SEEDS",
+           "RANGE32", "sample_inputs", "regime_inputs", "plan_inputs"]
 
-#: random points per kernel (then the adversarial ones)
+#: the approach steps of the generator's regimes (a subsample of the harness's, for time)
+GENERATOR_STEPS = [10.0**-k for k in (1, 3, 5, 7, 9, 11, 13, 15, 20, 100)]
+
+
+def regime_points(kernel, dtype, seeds, n_random: int = 8, small=None) -> list:
+    """The points of :func:`rigidsym.codegen.accuracy.regimes.regimes` for ``kernel`` in
+    ``dtype``, drawn with each of ``seeds`` in turn (``n_random`` random ones each, the
+    approach steps ``small``, the type's own where None), regime after regime: exact, one
+    ``list[fmpq]`` per argument. Not the ends of the floating range: an intermediate that
+    overflows there is the runtime's rescue (``rigidsym.kernels.runtime.rescue``, by
+    scaling), not a form's to avoid."""
+    return [p for seed in seeds
+            for ps in regimes(kernel, dtype, n_random=n_random, seed=seed, small=small,
+                              extremes=False).values()
+            for p in ps]
+
+
+def exact_points(kernel, seeds=(30,), n_random: int = 6, small=GENERATOR_STEPS) -> list:
+    """The generator's points (:func:`regime_points` in float64), per argument a list of
+    mpmath numbers (40 digits). The unconstrained arguments are taken as float64 holds them
+    (the reference then judges the formula, not the rounding of the input, which every form
+    suffers alike); constrained ones stay exact (on their manifold, where the rewrites are
+    equal to the declaration)."""
+    with mpmath.workdps(40):
+        return [[[mpmath.mpf(float(x)) if arg.kind == "any" else
+                  mpmath.mpf(int(x.p)) / int(x.q) for x in a]
+                 for arg, a in zip(kernel.args, p, strict=True)]
+                for p in regime_points(kernel, np.float64, seeds, n_random, small)]
+
+
+# --------------------------------------------------------------------------- float32 plan
+#: random points per kernel of the float32 plan (then the adversarial ones)
 N_RANDOM = 1000
 #: the seeds of the harness's regimes the plan is measured on: not the harness's own (0-3)
 #: nor tests/test_bounds_fresh.py's (37), so that the harness judges each plan on points it
@@ -101,15 +143,12 @@ def regime_inputs(kernel, seeds=REGIME_SEEDS) -> tuple[dict, dict]:
     float32, without the ends of the range: the rescue's) drawn with each of ``seeds``: per
     flat input symbol the float32 values a caller hands the kernel, and the inputs of the
     truth (:func:`_columns`)."""
-    from rigidsym.codegen.accuracy.regimes import regimes
-
     # the regimes depend on the arguments (and an Euler sequence on the name): a kernel
     # and its _with_jacobians share them (exact rationals: half the planner's time)
     key = (tuple((a.name, a.kind, a.shape) for a in kernel.args), tuple(seeds),
            kernel.name if any(a.name == "angles" for a in kernel.args) else "")
     if key not in _REGIME_VALUES:
-        pts = [p for seed in seeds
-               for ps in regimes(kernel, _F32, seed=seed, extremes=False).values() for p in ps]
+        pts = regime_points(kernel, _F32, seeds)
         _REGIME_VALUES[key] = [
             np.array([[float(x) for x in p[i]] for p in pts], dtype=_F64).reshape(len(pts), -1)
             for i in range(len(kernel.args))]
