@@ -52,7 +52,7 @@ from rigidsym.codegen.accuracy.float32_points import (  # noqa: F401  (the plann
     regime_inputs,
     sample_inputs,
 )
-from rigidsym.codegen.printers import KernelNumPyPrinter
+from rigidsym.codegen.backends.numpy.printer import KernelNumPyPrinter
 
 __all__ = ["BUDGET", "U32", "N_RANDOM", "REGIME_SEEDS", "RANGE32", "sample_inputs",
            "regime_inputs", "plan_inputs", "choose", "ProgramSpec", "trig_spec", "plan_kernel"]

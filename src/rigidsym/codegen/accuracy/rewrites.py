@@ -50,7 +50,7 @@ from rigidsym.codegen.accuracy.rewrite_rules import (
     skew_one_minus_cos,
 )
 from rigidsym.codegen.accuracy.tan_half import TAN_HALF_TEXT, tan_half_polynomial
-from rigidsym.codegen.printers import KernelNumPyPrinter
+from rigidsym.codegen.backends.numpy.printer import KernelNumPyPrinter
 
 __all__ = ["Chosen", "Rewrite", "RULES", "improve"]
 
@@ -258,7 +258,7 @@ class Meter:
     def errors(self, flat, textbook: bool = False) -> np.ndarray:
         """``(points, outputs)``: the error of ``flat`` at the points with a finite
         reference (inf where it is not finite or not below 1). A form is evaluated as the
-        kernels print it (:class:`~rigidsym.codegen.printers.KernelNumPyPrinter`: a
+        kernels print it (:class:`~rigidsym.codegen.backends.numpy.printer.KernelNumPyPrinter`: a
         rational power as roots and a quotient); ``textbook``: as the harness evaluates the
         declaration (sympy's NumPy printer: ``pow``)."""
         n = int(self.ok.sum())

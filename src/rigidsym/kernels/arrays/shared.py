@@ -1,7 +1,8 @@
 """What the PyTorch and JAX kernels share (issue 31): no import of either library.
 
 Both back-ends evaluate the same generated programs (``generated/torch``, ``generated/jax``:
-:mod:`rigidsym.codegen.arrays`) on array modules with the same names for what is needed
+:mod:`rigidsym.codegen.backends.arrays.programs`) on array modules with the same names for what is
+needed
 here (``where``, ``stack``, ``isfinite``, ``broadcast_to``, ``einsum``, ``linalg.det``):
 ``xp`` below is ``torch`` or ``jax.numpy``. This module holds the directory of programs,
 the keyword rules of traced and eager calls, validation of constrained inputs, the
@@ -48,7 +49,7 @@ from rigidsym.kernels.runtime.jacobians import full_batch as _full
 __all__ = ["ArraySpace", "Library", "Space", "modes", "validate", "evaluate", "contract",
            "raise_flagged", "SUFFIX", "make_all", "broadcast_batch", "convert"]
 
-#: suffix of the generated kernels with Jacobians (rigidsym.codegen.jacobians.SUFFIX)
+#: suffix of the generated kernels with Jacobians (rigidsym.codegen.derivatives.jacobians.SUFFIX)
 SUFFIX = "_with_jacobians"
 
 
@@ -120,7 +121,7 @@ class ArraySpace:
     def vjp(self, name: str, mode: str = "vjp"):
         """The generated reverse-mode (``"vjp"``: ``f(*columns, *output cotangents) -> input
         cotangents``) or forward-mode (``"jvp"``: ``f(*columns, *input tangents) -> output
-        tangents``) program of kernel ``name`` (``rigidsym.codegen.vjp``), or None;
+        tangents``) program of kernel ``name`` (``rigidsym.codegen.derivatives.vjp``), or None;
         ``"saved"``: ``(forward, vjp)`` where the forward also returns the temps the VJP
         reads and the VJP takes them after the columns, or None."""
         self.variants(name)
