@@ -93,7 +93,7 @@ def kernel_of(name: str):
     """The declared :class:`~rigidsym.codegen.spec.Kernel` ``name`` (Jacobian kernels too)."""
     from rigidsym.derivations.kernels_spec import KERNELS
 
-    from rigidsym.codegen.jacobians import jacobian_kernels
+    from rigidsym.codegen.derivatives.jacobians import jacobian_kernels
 
     by = {k.name: k for k in KERNELS}
     if name not in by:

@@ -152,7 +152,8 @@ def double_nodes(name: str) -> list[str]:
     of the plan with that node made float too (> 1: float there breaks the rule)."""
     from rigidsym.codegen.accuracy import float32 as F
     from rigidsym.codegen.accuracy.error import normwise
-    from rigidsym.codegen.generator import _trig_split, compile_kernel
+    from rigidsym.codegen.generator import compile_kernel
+    from rigidsym.codegen.optimise import trig_split as _trig_split
     from rigidsym.codegen.spec import flat_symbols
 
     k = R.kernel_of(name)

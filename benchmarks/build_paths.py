@@ -63,7 +63,8 @@ def inputs(meta: dict, n: int, rng) -> list[np.ndarray]:
 def subset(dst: Path) -> Path:
     """A generated directory holding K1-K6 only: their C copied from ``generated/c``, the
     module, table and index rendered for them by the generator's templates."""
-    from rigidsym.codegen.generator import _env, _render_extension
+    from rigidsym.codegen.backends import environment
+    from rigidsym.codegen.backends.extension.target import TEMPLATES, render_module
 
     gdir = _ext.generated_dir()
     data = json.loads((gdir / "kernels.json").read_text())
@@ -73,8 +74,8 @@ def subset(dst: Path) -> Path:
         for ext in (".c", ".h"):
             shutil.copy(gdir / "c" / (m["name"] + ext), dst / "c")
     shutil.copy(gdir / "c" / "rigidsym_common.h", dst / "c")
-    env, ver = _env(), data["generator"]
-    files = _render_extension(env, metas, ver)
+    env, ver = environment(TEMPLATES), data["generator"]
+    files = render_module(env, metas, ver)
     files["c/rigidsym_kernels.h"] = env.get_template("c_kernels_index.h.j2").render(
         kernels=metas, template="c_kernels_index.h.j2", **ver)
     for rel, text in files.items():

@@ -95,7 +95,7 @@ def worst(run, name: str, seeds=(0,), n_random: int = 8):
 
 def register(kernels) -> None:
     """Let the harness's reference see user kernels (and their twins) by name."""
-    from rigidsym.codegen.jacobians import jacobian_kernels
+    from rigidsym.codegen.derivatives.jacobians import jacobian_kernels
 
     book = getattr(R, "_book_kernel_of", R.kernel_of)
     R._book_kernel_of = book
@@ -144,7 +144,7 @@ def main(argv=None) -> int:
     ap.add_argument("--random", type=int, default=8)
     ap.add_argument("--write", action="store_true")
     a = ap.parse_args(argv)
-    from rigidsym.codegen.backends.c.cli import select_kernels
+    from rigidsym.codegen.usergen import select_kernels
 
     kernels, where = select_kernels([a.module] if a.module else None, a.kernel or None)
     if a.module:

@@ -31,7 +31,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 import run as R  # noqa: E402  (the benchmark helpers of benchmarks/run.py)
 
 from rigidsym import kernels as K  # noqa: E402
-from rigidsym.codegen.jacobians import jacobian_name, with_jacobians  # noqa: E402
+from rigidsym.codegen.derivatives.jacobians import jacobian_name, with_jacobians  # noqa: E402
 from rigidsym.kernels.runtime import state as _state
 
 #: the kernels issue 12 asks for (euler_rate_matrix: one of its 24 sequence/frame kernels)

@@ -366,7 +366,7 @@ def _other_sections(path: Path) -> str:
 
 
 def _numpy_chunk() -> int:
-    from rigidsym.codegen.generator import NUMPY_CHUNK
+    from rigidsym.codegen.backends.numpy.target import NUMPY_CHUNK
     return NUMPY_CHUNK
 
 

@@ -227,7 +227,7 @@ LIE_KERNELS = [
            notes="check=True validates T: its last row [0, 0, 0, 1], its R a rotation.",
            # its Jacobian (6 x 16, five branches) by sympy on the expanded formula compiled
            # in 516 s to 5331 operations; by forward mode over each branch's optimised
-           # program (codegen.vjp.jacobian_program) in seconds
+           # program (codegen.derivatives.vjp.jacobian_program) in seconds
            branch_jacobian=True, jacobian_from="program"),
     Kernel(name="euler_rodrigues_from_rotation",
            summary="The Euler-Rodrigues parameters eta = [r; r0] of Q, r0 >= 0.",

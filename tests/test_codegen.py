@@ -4,9 +4,10 @@ from __future__ import annotations
 
 import sympy as sp
 
+from rigidsym.codegen.backends.extension.printer import c_code
+from rigidsym.codegen.backends.numpy.printer import numpy_code
 from rigidsym.codegen.generator import generate
 from rigidsym.codegen.optimise import compile_program, math_hash, rewrite
-from rigidsym.codegen.printers import c_code, numpy_code
 from rigidsym.codegen.spec import Arg, Kernel, Out
 
 x, y, phi = sp.symbols("x y phi", real=True)

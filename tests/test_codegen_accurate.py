@@ -64,7 +64,8 @@ def test_powers_by_pow_not_under_a_quotient():
     kernels' printing (wrench_axis' Jacobian 6.7 u where the textbook is 2 u). The rule
     writes the exponent as its float (printed ``pow``); a norm under a function keeps its
     rational powers, which the removable quotients read."""
-    from rigidsym.codegen.printers import KernelCPrinter, KernelNumPyPrinter
+    from rigidsym.codegen.backends.extension.printer import KernelCPrinter
+    from rigidsym.codegen.backends.numpy.printer import KernelNumPyPrinter
 
     f = sp.symbols("f0:3", real=True)
     T = sum(x**2 for x in f)

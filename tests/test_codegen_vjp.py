@@ -1,5 +1,5 @@
 """The generated vector-Jacobian and Jacobian-vector products (issue 38, item 4), without
-the array extras: the reverse- and forward-mode programs of ``rigidsym.codegen.vjp``,
+the array extras: the reverse- and forward-mode programs of ``rigidsym.codegen.derivatives.vjp``,
 evaluated with NumPy, against the contraction of the generated Jacobian kernel
 (``rigidsym.kernels.jacobian``, sympy's derivative of the declared formula), and their cost
 against the forward program's (reverse mode over the program, not a Jacobian per entry)."""
@@ -14,7 +14,12 @@ import sympy as sp
 
 from rigidsym import kernels as K
 from rigidsym.codegen import generator as G
-from rigidsym.codegen.vjp import cotangent_names, jvp_program, tangent_names, vjp_program
+from rigidsym.codegen.derivatives.vjp import (
+    cotangent_names,
+    jvp_program,
+    tangent_names,
+    vjp_program,
+)
 from tests._arrays_cases import sample
 
 #: a rational kernel with a singular set, a trig one with an angle (half-angle rewrite), and
@@ -66,7 +71,7 @@ def test_vjp_and_jvp_are_the_generated_jacobian_contracted(name):
 
 @pytest.mark.slow
 def test_every_product_program_defines_a_temp_before_reading_it():
-    from rigidsym.codegen.jacobians import has_jacobian
+    from rigidsym.codegen.derivatives.jacobians import has_jacobian
     for kernel in importlib.import_module(G.BOOK_ORIGIN).KERNELS:
         if not has_jacobian(kernel):
             continue

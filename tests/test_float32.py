@@ -175,7 +175,7 @@ def test_the_plans_range_is_the_c_kernels():
 def _kernels():
     from rigidsym.derivations.kernels_spec import KERNELS
 
-    from rigidsym.codegen.jacobians import jacobian_kernels
+    from rigidsym.codegen.derivatives.jacobians import jacobian_kernels
 
     return list(KERNELS) + jacobian_kernels([k for k in KERNELS if k.public])
 

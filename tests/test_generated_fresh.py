@@ -70,7 +70,7 @@ def test_compare_sees_an_edit_an_orphan_a_missing_file_and_a_changed_input(tmp_p
     assert "missing file: generated/api.py" in lines
     # an input edited after the generation: its digest differs from the recorded one
     rec = json.loads((out / inputs.MANIFEST).read_text())
-    some = "rigidsym/codegen/backends/c/templates/c_fast.h.j2"
+    some = "rigidsym/codegen/backends/extension/templates/c_fast.h.j2"
     assert some in rec["inputs"]
     rec["inputs"][some] = "0" * 64
     (out / inputs.MANIFEST).write_text(json.dumps(rec))
@@ -84,7 +84,7 @@ def test_the_inputs_hold_the_declarations_templates_and_lazy_imports():
                  "rigidsym/derivations/kernels_spec.py", "rigidsym/derivations/sec3_2.py",
                  "rigidsym/derivations/kernels_accuracy.json",
                  # imported inside generate(), not at the top of the module
-                 "rigidsym/codegen/jacobians.py"):
+                 "rigidsym/codegen/derivatives/jacobians.py"):
         assert must in labels, must
     assert not any(lab.startswith("rigidsym/generated") for lab in labels)
     # every template the generator's loader can render is an input (issue 53: they live in

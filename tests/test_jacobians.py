@@ -34,8 +34,13 @@ from rigidsym.derivations.kernels_spec import KERNELS
 from test_kernels import inputs, rel_err
 
 from rigidsym import kernels as K
+from rigidsym.codegen.derivatives.jacobians import (
+    derivative_name,
+    has_jacobian,
+    jacobian_name,
+    with_jacobians,
+)
 from rigidsym.codegen.generator import _flatten
-from rigidsym.codegen.jacobians import derivative_name, has_jacobian, jacobian_name, with_jacobians
 from rigidsym.codegen.spec import flat_symbols, input_symbols
 from rigidsym.core import kinds as _kinds
 from rigidsym.kernels.runtime import state as _state

@@ -145,7 +145,7 @@ def test_a_toy_kind_is_one_entry_for_the_zero_test_and_the_reports(toy):
 
 def test_a_toy_kind_is_one_entry_for_kernels(toy, tmp_path):
     from rigidsym import kernels as K
-    from rigidsym.codegen.api_spec import docstring
+    from rigidsym.codegen.backends.numpy.api_spec import docstring
     from rigidsym.codegen.generator import generate, write
     from rigidsym.codegen.spec import Arg, Kernel, Out
     from rigidsym.kernels.runtime import jacobians as _jacobian

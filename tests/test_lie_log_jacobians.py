@@ -1,7 +1,7 @@
 """The Jacobian kernels of the branched Lie maps (issue 38 item 2: "each map gets its
 Jacobian kernel"): ``rotation_vector_from_rotation_with_jacobians`` and
 ``euler_rodrigues_from_rotation_with_jacobians``, each branch differentiated with its value
-(``Kernel.branch_jacobian``, :mod:`rigidsym.codegen.jacobians`).
+(``Kernel.branch_jacobian``, :mod:`rigidsym.codegen.derivatives.jacobians`).
 
 A rotation moves along its manifold, ``Q -> Q Exp(t b)``: there every branch's derivative is
 the declared map's, ``d Log = J_r(w)^-1 b`` and ``d eta = eta (x) [b/2; 0]`` (Solà et al.

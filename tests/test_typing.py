@@ -77,8 +77,8 @@ def test_mypy_sees_true_signatures(tmp_path):
 
 def test_signatures_are_real():
     """Positional and keyword calls agree; the signature lists the arguments, then the
-    common keywords (defined once, in rigidsym.codegen.api_spec)."""
-    from rigidsym.codegen.api_spec import COMMON_KEYWORDS
+    common keywords (defined once, in rigidsym.codegen.backends.numpy.api_spec)."""
+    from rigidsym.codegen.backends.numpy.api_spec import COMMON_KEYWORDS
 
     common = [k.name for k in COMMON_KEYWORDS]
     for name in K.KERNEL_NAMES:

@@ -68,15 +68,15 @@ def test_the_wheel_has_one_top_level_package(wheel):
 
 
 def test_wheel_ships_every_template(wheel):
-    """Issue 53: the generator's templates moved to codegen/backends/<language>/templates/;
+    """Issue 53: the generator's templates moved to codegen/backends/<target>/templates/;
     the wheel carries every one of the checkout's (``generate`` and ``--target c`` from an
     installed package need them), the report's too."""
     with zipfile.ZipFile(wheel) as z:
         names = set(z.namelist())
     src = REPO / "src"
     templates = {p.relative_to(src).as_posix() for p in (src / "rigidsym").rglob("*.j2")}
-    assert any("/backends/python/templates/" in t for t in templates)
-    assert any("/backends/c/templates/c_" in t for t in templates)
+    assert any("/backends/numpy/templates/" in t for t in templates)
+    assert any("/backends/extension/templates/c_" in t for t in templates)
     assert templates <= names, sorted(templates - names)
 
 

@@ -39,7 +39,7 @@ def cmd_generate(args) -> int:
     from rigidsym.codegen.generator import check, default_out_dir, generate, write
 
     if getattr(args, "target", "package") == "c":
-        from rigidsym.codegen.backends.c.cli import cmd_generate_c
+        from rigidsym.codegen.usergen import cmd_generate_c
         return cmd_generate_c(args)
     for opt, given in (("--kernel", getattr(args, "kernel", None)),
                        ("--single-header", getattr(args, "single_header", False))):

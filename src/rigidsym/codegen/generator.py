@@ -1,10 +1,13 @@
-"""Render the kernels of ``derivations/kernels_spec.py`` into ``generated/`` (NumPy and C).
+"""Render the kernels of ``derivations/kernels_spec.py`` into ``generated/``.
 
-Pipeline per kernel: build the explicit sympy outputs from the formula functions (main
+Pipeline: per kernel, build the explicit sympy outputs from the formula functions (main
 build and per-sample branches), hash them (before any rewrite or printing), rewrite and CSE
-them (:mod:`.optimise`), print them (:mod:`.printers`) into role-named Jinja2 templates.
-:func:`generate` returns ``{relative path: text}``; :func:`write` writes it atomically and
-removes orphans; :func:`check` compares it with the disk and returns a unified diff (both in
+them (:mod:`.optimise`): :func:`compile_kernel`; then every registered package target
+(:mod:`rigidsym.codegen.backends`: NumPy, the extension's C, PyTorch, JAX) prints the
+compiled kernels into its templates, and the generator merges their files with
+``kernels.json``. :func:`generate` returns ``{relative path: text}``; :func:`write` writes it
+atomically and removes orphans; :func:`check` compares it with the disk and returns a unified diff
+(both in
 :mod:`rigidsym.codegen.files`, re-exported here).
 """
 
@@ -12,53 +15,33 @@ from __future__ import annotations
 
 import importlib
 import json
-import math
 import os
 import textwrap
 from dataclasses import dataclass, field
 from pathlib import Path
 
-import jinja2
 import sympy as sp
 
 import rigidsym
 from rigidsym.codegen import inputs
-from rigidsym.codegen.accuracy.compensated import NUMPY_SOURCE, uses_diffprod
 from rigidsym.codegen.accuracy.cos_form import choose as choose_cos
 from rigidsym.codegen.accuracy.float32 import plan_kernel
 from rigidsym.codegen.accuracy.rewrites import Chosen, improve
-from rigidsym.codegen.api_spec import render_api
-from rigidsym.codegen.arrays import render_array_kernels
-from rigidsym.codegen.cprogram import TRIG_BLOCK as TRIG_BLOCK
-from rigidsym.codegen.cprogram import (
-    f32_code,
-    finite_check,
-    program_lines,
-    risky_names,
-    trig_plan,
-    trig_split,
-)
+from rigidsym.codegen.backends import RenderContext, targets
+from rigidsym.codegen.derivatives.vjp import jacobian_program
 from rigidsym.codegen.files import check, write
-from rigidsym.codegen.optimise import Program, compile_program, math_hash
-from rigidsym.codegen.printers import KernelCPrinter, KernelNumPyPrinter
+from rigidsym.codegen.optimise import Program, compile_program, math_hash, trig_split
 from rigidsym.codegen.removable.singularities import rewrite as removable
 from rigidsym.codegen.spec import Kernel, flat_symbols, input_symbols
 from rigidsym.codegen.spec import flatten_outputs as _flatten
-from rigidsym.codegen.vjp import jacobian_program
 from rigidsym.core import kinds as _kinds
 from rigidsym.core.config import KERNEL_SPEC as BOOK_ORIGIN
 from rigidsym.core.config import generated_dir
 
 __all__ = ["generate", "write", "check", "GenerationResult", "default_out_dir", "TEMPLATES"]
 
-#: where the package's own templates are, one folder per language (issue 53): the C of the
-#: extension module (``c_*.j2``, beside the C target's) and the Python package's files
-#: (NumPy, PyTorch and JAX kernels, ``api.py``, ``__init__.py``); names are unique across them
-TEMPLATES = tuple(Path(__file__).parent / "backends" / lang / "templates"
-                  for lang in ("c", "python"))
-#: the ``kind`` of an entry point's argument whose constraint only the Python path checks
-#: (``RIGIDSYM_PYTHON`` in ``c_fast.h.j2``)
-_C_PYTHON_CHECK = 3
+#: the template folders of the package targets (file names unique across them)
+TEMPLATES = tuple(dict.fromkeys(t.template_dir for t in targets(package=True)))
 
 
 def default_out_dir() -> Path:
@@ -191,16 +174,6 @@ def compile_many(kernels: list[Kernel], plan32: bool = True) -> list[KernelCode]
                         plan32)
 
 
-def _env() -> jinja2.Environment:
-    return jinja2.Environment(
-        loader=jinja2.FileSystemLoader([str(t) for t in TEMPLATES]), keep_trailing_newline=True,
-        trim_blocks=True, lstrip_blocks=True, undefined=jinja2.StrictUndefined,
-        autoescape=False)
-
-
-#: where the book's kernels are composed (a user module's kernels name that module)
-
-
 def _header(kc: KernelCode, template: str, origin: str = BOOK_ORIGIN) -> list[str]:
     k = kc.kernel
     lines = [
@@ -233,55 +206,13 @@ def _meta(kc: KernelCode) -> dict:
     }
 
 
-#: samples per block of the generated NumPy kernels: the temporaries of one block (tens of
-#: arrays of 8 bytes a sample) stay in L2, so large batches are not memory-bound; measured in
-#: benchmarks/RESULTS.md
-NUMPY_CHUNK = 16384
-
-
-def _render_kernel(env, kc: KernelCode, origin: str = BOOK_ORIGIN) -> dict[str, str]:
-    k = kc.kernel
-    npp, cp = KernelNumPyPrinter(), KernelCPrinter()
-    # kernels without a division (or sqrt, atan2 of possibly zero arguments) give finite
-    # outputs for finite inputs: no finiteness check in the generated code
-    divides = any(v.program.dens for v in kc.variants)
-    common = {"k": k, "meta": _meta(kc), "inputs": kc.inputs, "divides": divides}
-    files = {}
-    t = "numpy_kernel.py.j2"
-    files[f"numpy/{k.name}.py"] = env.get_template(t).render(
-        header=_header(kc, t, origin), ops=kc.ops, hash=kc.hash, chunk=NUMPY_CHUNK,
-        helpers=NUMPY_SOURCE.strip("\n") if uses_diffprod(kc) else "",
-        variants=[{"name": v.name, "cond": None if v.cond is None else npp.doprint(v.cond),
-                   "risky": risky_names(v.program, npp), **program_lines(v.program, npp)}
-                  for v in kc.variants], **common)
-    used = set()
-    for v in kc.variants:
-        for e in [*(x for _, x in v.program.temps), *v.program.outputs, *v.program.dens,
-                  *([v.cond] if v.cond is not None else [])]:
-            used |= {str(s) for s in sp.sympify(e).free_symbols}
-    cvars = [{"name": v.name, "cond": None if v.cond is None else cp.doprint(v.cond),
-              "finite": finite_check(v.program, k), **program_lines(v.program, cp)}
-             for v in kc.variants]
-    # nothing a sample could flag (no division, no finiteness test, no branch): the batch
-    # loop needs no count
-    never_singular = len(cvars) == 1 and not divides and not cvars[0]["finite"]
-    for t, path in (("c_kernel.h.j2", f"c/{k.name}.h"), ("c_kernel.c.j2", f"c/{k.name}.c")):
-        files[path] = env.get_template(t).render(header=_header(kc, t, origin), variants=cvars,
-                                                 used=used, trig=trig_plan(kc, cp),
-                                                 never_singular=never_singular,
-                                                 f32=f32_code(kc), **common)
-    # PyTorch and JAX: the same programs (issue 31)
-    files.update(render_array_kernels(env, kc, lambda t: _header(kc, t, origin)))
-    return files
-
-
 def _with_jacobian_kernels(todo: list[Kernel]) -> list[Kernel]:
     """``todo`` and, for each smooth kernel, its ``<name>_with_jacobians`` (sorted by name).
 
     The Jacobian kernels are ordinary (non-public) kernels with extra outputs, so they go
     through the same rewrite, CSE, templates and checks as the values.
     """
-    from rigidsym.codegen.jacobians import jacobian_kernels
+    from rigidsym.codegen.derivatives.jacobians import jacobian_kernels
 
     return sorted(todo + jacobian_kernels(todo), key=lambda k: k.name)
 
@@ -295,28 +226,25 @@ def generate(kernels=None, origin: str = BOOK_ORIGIN) -> GenerationResult:
     kernels_are_book = kernels is None
     if kernels is None:  # by name: the generator imports no book
         kernels = importlib.import_module(BOOK_ORIGIN).KERNELS
-    env = _env()
-    files: dict[str, str] = {}
-    done: list[KernelCode] = []
     todo = sorted(kernels, key=lambda k: k.name)
-    for kc in _compile_all(_with_jacobian_kernels(todo)):
-        done.append(kc)
-        files.update(_render_kernel(env, kc, origin))
+    done = _compile_all(_with_jacobian_kernels(todo))
     metas = [_meta(kc) for kc in done]
     if kernels_are_book:
         acc = _accuracy_data()
         for m in metas:
             m["accuracy"] = acc.get(m["name"])
     ver = {"sympy": sp.__version__, "rigidsym": rigidsym.__version__}
+    ctx = RenderContext(done, metas, ver, origin,
+                        header=lambda kc, t: _header(kc, t, origin), meta=_meta)
+    files: dict[str, str] = {}
+    for target in targets(package=True):
+        got = target.render(ctx)
+        clash = sorted(files.keys() & got.keys())
+        if clash:
+            raise ValueError(f"target {target.name} writes {clash[0]}, written by another")
+        files.update(got)
     files["kernels.json"] = json.dumps({"generator": ver, "kernels": metas},
                                        indent=1, sort_keys=True) + "\n"
-    files["api.py"] = render_api(env, metas, ver)
-    for t, path in (("package_init.py.j2", "__init__.py"),
-                    ("numpy_index.py.j2", "numpy/__init__.py"),
-                    ("c_common.h.j2", "c/rigidsym_common.h"),
-                    ("c_kernels_index.h.j2", "c/rigidsym_kernels.h")):
-        files[path] = env.get_template(t).render(kernels=metas, template=t, **ver)
-    files.update(_render_extension(env, metas, ver))
     if kernels_are_book:
         # what the default test run compares instead of generating again (issue 54)
         files[inputs.MANIFEST] = inputs.render(files)
@@ -333,34 +261,3 @@ def _accuracy_data() -> dict:
 
     path = files(BOOK_ORIGIN.rsplit(".", 1)[0]).joinpath(ACCURACY_DATA)
     return json.loads(path.read_text(encoding="utf-8")) if path.is_file() else {}
-
-
-def _render_extension(env, metas: list[dict], ver: dict) -> dict[str, str]:
-    """The extension module's own C: the module (``c_module.c.j2``), the per-path table of
-    batch functions (``c_table.c.j2``), the CPU dispatcher (``c_dispatch.h.j2``) and the
-    per-call entry points (``c_fast.h.j2``)."""
-    def size(shape) -> int:
-        return int(math.prod(shape))
-    def c_check(a: dict) -> int:  # the kind table's C validation routine (0 for outputs)
-        k = _kinds.for_spec(a["kind"], a["shape"]) if "kind" in a else None
-        if k is None:
-            return 0
-        # a checked kind with no C routine of its own: checked calls take the Python path
-        return k.c_check if k.c_check or k.check is None else _C_PYTHON_CHECK
-
-    def slot(a: dict) -> dict:
-        return {"nd": len(a["shape"]), "dims": list(a["shape"]), "size": size(a["shape"]),
-                "kind": c_check(a)}
-    ck = [{"name": m["name"], "ins": [size(a["shape"]) for a in m["args"]],
-           "outs": [size(o["shape"]) for o in m["outputs"]],
-           "narrays": len(m["args"]) + len(m["outputs"]),
-           "nin": len(m["args"]), "nout": len(m["outputs"]),
-           "args": [slot(a) for a in m["args"]],
-           "outs_meta": [slot(o) for o in m["outputs"]]} for m in metas]
-    files = {}
-    for t, path in (("c_module.c.j2", "c/rigidsym_module.c"),
-                    ("c_table.c.j2", "c/rigidsym_table.c"),
-                    ("c_dispatch.h.j2", "c/rigidsym_dispatch.h"),
-                    ("c_fast.h.j2", "c/rigidsym_fast.h")):
-        files[path] = env.get_template(t).render(kernels=ck, template=t, **ver)
-    return files

@@ -37,7 +37,8 @@ __all__ = ["MANIFEST", "ENTRY_MODULES", "input_files", "manifest", "compare"]
 #: the manifest's name under generated/
 MANIFEST = "inputs.json"
 #: where the generation starts: the generator, the Jacobian kernels, the book's kernel list
-ENTRY_MODULES = ("rigidsym.codegen.generator", "rigidsym.codegen.jacobians", KERNEL_SPEC)
+ENTRY_MODULES = ("rigidsym.codegen.generator", "rigidsym.codegen.derivatives.jacobians",
+                 KERNEL_SPEC)
 #: the output and the manifest's own module's outputs: never inputs
 _NOT_INPUTS = ("rigidsym.generated",)
 _DATA_SUFFIXES = (".j2", ".json", ".lark", ".csv", ".txt", ".c", ".h")

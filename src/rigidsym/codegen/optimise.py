@@ -11,6 +11,9 @@
 2. ``sympy.cse`` over all outputs (and denominators) of a kernel at once, so
    sub-expressions are shared across outputs.
 3. Operation count of the result (``sympy.count_ops`` of the CSE'd program).
+4. The split of a trig-calling program into its sine and cosine calls, computed by a SIMD
+   loop ahead of the rest (:func:`trig_split`; used by the C extension's blocked batch loop
+   and by the float32 precision plans).
 
 Everything is deterministic: no sets are iterated without sorting.
 """
@@ -19,11 +22,13 @@ from __future__ import annotations
 
 import hashlib
 from dataclasses import dataclass
+from typing import Any
 
 import sympy as sp
 from sympy.codegen.rewriting import ReplaceOptim, optimize
 
-__all__ = ["COS_FORMS", "half_angle_optims", "Program", "compile_program", "math_hash"]
+__all__ = ["COS_FORMS", "half_angle_optims", "Program", "compile_program", "math_hash",
+           "divides_or_roots", "trig_split"]
 
 #: the forms of a bare ``cos phi`` from ``s = sin(phi/2)``, ``c = cos(phi/2)`` (each rounded,
 #: relative error about u/2). ``1 - 2 s^2`` is off by about 3 u absolute near pi, where
@@ -125,3 +130,60 @@ def math_hash(parts) -> str:
         h.update(sp.srepr(p).encode())
         h.update(b"\0")
     return h.hexdigest()[:16]
+
+
+def divides_or_roots(e) -> bool:
+    """Whether ``e`` itself divides or takes a root (may be non-finite for finite inputs)."""
+    return any(isinstance(p, sp.Pow) and not (p.exp.is_Integer and p.exp > 0)
+               for p in sp.preorder_traversal(e))
+
+
+#: the calls a trig split moves into the SIMD loop
+_TRIG = (sp.sin, sp.cos)
+
+
+def trig_split(kc: Any) -> dict | None:
+    """Split a trig-calling kernel into a SIMD trig loop and a per-sample loop.
+
+    For a kernel without branches whose ``sin``/``cos`` arguments do not themselves depend
+    on a trig call, returns the prelude (the temporaries the arguments need, in order, and
+    the ``sin``/``cos`` calls by parameter name ``trig_<k>``) and the per-sample program with
+    each call replaced by its parameter; ``None`` when the kernel is not blocked.
+    """
+    if len(kc.variants) != 1:
+        return None
+    p = kc.variants[0].program
+    exprs = [v for _, v in p.temps] + list(p.outputs) + list(p.dens)
+    calls: list = []
+    for e in exprs:
+        for node in sp.preorder_traversal(sp.sympify(e)):
+            if isinstance(node, _TRIG) and node not in calls:
+                calls.append(node)
+    if not calls:
+        return None
+    defs = dict(p.temps)
+    need: set = set()
+    todo = [s for c in calls for s in c.args[0].free_symbols]
+    while todo:
+        s = todo.pop()
+        if s in defs and s not in need:
+            need.add(s)
+            todo.extend(defs[s].free_symbols)
+    pre = [(s, v) for s, v in p.temps if s in need]
+    if any(v.has(*_TRIG) for _, v in pre):
+        return None
+    names = {c: sp.Symbol(f"trig_{k}") for k, c in enumerate(calls)}
+    temps = [(s, v.xreplace(names)) for s, v in p.temps]
+    outputs = [sp.sympify(v).xreplace(names) for v in p.outputs]
+    dens = [sp.sympify(v).xreplace(names) for v in p.dens]
+    # drop the temporaries that only fed the trig arguments (keep divisions and roots: the
+    # finiteness check stays the same)
+    live = set().union(*(sp.sympify(v).free_symbols for v in outputs + dens))
+    kept = []
+    for s, v in reversed(temps):
+        if s in live or divides_or_roots(v):
+            kept.append((s, v))
+            live |= v.free_symbols
+    kept.reverse()
+    return {"calls": {str(names[c]): c for c in calls}, "pre": pre,
+            "program": Program(kept, outputs, dens, p.ops)}

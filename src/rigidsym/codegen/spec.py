@@ -116,7 +116,8 @@ class Kernel:
         public: exported as-is from :mod:`rigidsym.kernels` (False for building blocks
             that a hand-written wrapper dispatches to, e.g. the Euler-angle sequences).
         jacobian: also generate ``<name>_with_jacobians`` (values and derivatives w.r.t.
-            every input, :mod:`rigidsym.codegen.jacobians`) when the kernel has no branches.
+            every input, :mod:`rigidsym.codegen.derivatives.jacobians`) when the kernel has no
+            branches.
         branch_jacobian: with branches too, each differentiated with its value (the same
             selection per sample): for branches that agree on the inputs' manifold, whose
             derivatives then agree along it (the Lie logs).

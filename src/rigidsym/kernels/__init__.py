@@ -9,7 +9,8 @@ compiled when the package is built, into an extension module with one path per C
 (x86-64-v2, x86-64-v3) chosen at import (:func:`build_info`). A user's kernels and a stale
 editable build are compiled into the user cache, with a notice (``rigidsym build-c``).
 
-Common keyword arguments of every kernel (``rigidsym.codegen.api_spec.COMMON_KEYWORDS``):
+Common keyword arguments of every kernel
+(``rigidsym.codegen.backends.numpy.api_spec.COMMON_KEYWORDS``):
 
 * ``out``: preallocated output array (a tuple for several outputs), shape batch + output.
 * ``check``: validate finiteness, unit vectors and rotations (default True); ``False``

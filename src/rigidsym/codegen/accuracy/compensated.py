@@ -26,6 +26,9 @@ from __future__ import annotations
 import numpy as np
 import sympy as sp
 
+from rigidsym.codegen.backends.printing import ARRAY_SOURCE as ARRAY_SOURCE
+from rigidsym.codegen.backends.printing import NUMPY_SOURCE as NUMPY_SOURCE
+
 __all__ = ["DiffProd", "SumProd", "diffprod", "sumprod", "expand_diffprod", "compensated_sums",
            "expand_numerators", "expand_plain", "NUMPY_SOURCE", "ARRAY_SOURCE"]
 
@@ -78,60 +81,6 @@ def expand_diffprod(expr):
                                                        range(0, len(x.args), 2)]))
     return expr.replace(lambda x: isinstance(x, DiffProd),
                         lambda x: x.args[0] * x.args[1] - x.args[2] * x.args[3])
-
-
-#: the helper of the generated NumPy kernels (``module`` is ``numpy``); the same text for
-#: PyTorch and JAX (:data:`ARRAY_SOURCE`) with their array module
-_SOURCE = '''
-
-def _split(x, k):
-    # Veltkamp: x = hi + lo exactly, hi of at most p - ceil(p/2) bits
-    t = k * x
-    hi = t - (t - x)
-    return hi, x - hi
-
-
-def _two_prod(a, b, k):
-    # Dekker: a b = p + e exactly (barring underflow)
-    p = a * b
-    ah, al = _split(a, k)
-    bh, bl = _split(b, k)
-    return p, ((ah * bh - p) + ah * bl + al * bh) + al * bl
-
-
-def _diffprod(a, b, c, d):
-    """a b - c d compensated (Kahan's algorithm, its fma emulated;
-    rigidsym.codegen.accuracy.compensated)."""
-    k = {splitter}
-    p, q = _two_prod(a, b, k)
-    w, r = _two_prod(c, d, k)
-    s = p - w
-    bb = s - p
-    t = (p - (s - bb)) + (-w - bb)     # p - w = s + t exactly (Knuth's TwoSum)
-    return (s + (t + q)) - r
-
-
-def _sumprod(*args):
-    """a1 b1 + ... + an bn compensated (Dot2 of Ogita, Rump and Oishi)."""
-    a = args[0]
-    k = {splitter}
-    p, s = _two_prod(args[0], args[1], k)
-    for i in range(2, len(args), 2):
-        h, r = _two_prod(args[i], args[i + 1], k)
-        t = p + h
-        z = t - p
-        s = s + (((p - (t - z)) + (h - z)) + r)     # Knuth's TwoSum error, then the product's
-        p = t
-    return p + s
-'''
-
-#: NumPy: the splitter from the dtype (float32, float64, long double)
-NUMPY_SOURCE = _SOURCE.replace(
-    "{splitter}", "2.0 ** ((numpy.finfo(a.dtype).nmant + 2) // 2) + 1.0 "
-    "if isinstance(a, numpy.ndarray) and a.dtype.kind == 'f' else 134217729.0")
-#: PyTorch and JAX (``{module}`` replaced by the array module's name)
-ARRAY_SOURCE = _SOURCE.replace(
-    "{splitter}", "4097.0 if a.dtype == {module}.float32 else 134217729.0")
 
 
 def _load(name: str):
@@ -275,11 +224,3 @@ def compensated_sums(flat, ctx):
 
     out = [walk(e) for e in flat]
     return (out, parts) if parts else None
-
-
-def uses_diffprod(kc) -> bool:
-    """Whether a program of ``kc`` has a compensated difference of products (its printed
-    module then carries the helper of this module); ``kc`` a
-    :class:`rigidsym.codegen.generator.KernelCode`."""
-    return any(sp.sympify(e).has(DiffProd, SumProd) for v in kc.variants
-               for e in [*(x for _, x in v.program.temps), *v.program.outputs])

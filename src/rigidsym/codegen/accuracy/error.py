@@ -23,7 +23,7 @@ import sympy as sp
 from rigidsym.codegen.accuracy import rule
 from rigidsym.codegen.accuracy.compensated import diffprod, sumprod
 from rigidsym.codegen.accuracy.points import GENERATOR_STEPS, exact_points
-from rigidsym.codegen.printers import KernelNumPyPrinter
+from rigidsym.codegen.backends.numpy.printer import KernelNumPyPrinter
 
 __all__ = ["U64", "normwise", "budget", "worst", "round_up", "Meter"]
 
@@ -138,7 +138,7 @@ class Meter:
         """``(points, outputs)``: the error of ``flat`` at the points with a finite
         reference (inf where it is not finite or not below 1: :func:`normwise`). A form is
         evaluated as the kernels print it
-        (:class:`~rigidsym.codegen.printers.KernelNumPyPrinter`: a rational power as roots
+        (:class:`~rigidsym.codegen.backends.numpy.printer.KernelNumPyPrinter`: a rational power as roots
         and a quotient); ``textbook``: as the harness evaluates the declaration (sympy's
         NumPy printer: ``pow``)."""
         n = int(self.ok.sum())

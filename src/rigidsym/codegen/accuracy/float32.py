@@ -51,7 +51,7 @@ from rigidsym.codegen.accuracy.points import (  # noqa: F401  (the planner's poi
     regime_inputs,
     sample_inputs,
 )
-from rigidsym.codegen.printers import KernelNumPyPrinter
+from rigidsym.codegen.backends.numpy.printer import KernelNumPyPrinter
 
 __all__ = ["BUDGET", "U32", "N_RANDOM", "REGIME_SEEDS", "RANGE32", "sample_inputs",
            "regime_inputs", "plan_inputs", "choose", "ProgramSpec", "trig_spec", "plan_kernel"]

@@ -2,7 +2,7 @@
 both back-ends: no import of either library.
 
 Both back-ends evaluate the same generated programs (``generated/torch``, ``generated/jax``:
-:mod:`rigidsym.codegen.arrays`) on array modules with the same names for what is needed
+:mod:`rigidsym.codegen.backends.arrays.programs`) on array modules with the same names for what is needed
 here (``where``, ``stack``, ``isfinite``, ``broadcast_to``, ``einsum``, ``linalg.det``):
 ``xp`` below is ``torch`` or ``jax.numpy``. This module holds the directory of programs
 (:class:`ArraySpace`), their evaluation (one column per scalar input component, the branch
@@ -44,7 +44,7 @@ __all__ = ["SUFFIX", "columns", "shape_outputs", "evaluate", "singular_mask", "n
            "rounds_to_inf", "propagates_inf", "ArraySpace", "make_all", "cotangents", "Library",
            "Space"]
 
-#: suffix of the generated kernels with Jacobians (rigidsym.codegen.jacobians.SUFFIX)
+#: suffix of the generated kernels with Jacobians (rigidsym.codegen.derivatives.jacobians.SUFFIX)
 SUFFIX = "_with_jacobians"
 
 
@@ -281,7 +281,7 @@ class ArraySpace:
     def vjp(self, name: str, mode: str = "vjp"):
         """The generated reverse-mode (``"vjp"``: ``f(*columns, *output cotangents) -> input
         cotangents``) or forward-mode (``"jvp"``: ``f(*columns, *input tangents) -> output
-        tangents``) program of kernel ``name`` (``rigidsym.codegen.vjp``), or None;
+        tangents``) program of kernel ``name`` (``rigidsym.codegen.derivatives.vjp``), or None;
         ``"saved"``: ``(forward, vjp)`` where the forward also returns the temps the VJP
         reads and the VJP takes them after the columns, or None."""
         self.variants(name)

@@ -1,7 +1,7 @@
 """Jacobians of the generated kernels: ``rigidsym.kernels.jacobian(name)``.
 
 For a kernel ``f`` with a generated ``f_with_jacobians`` (see
-:mod:`rigidsym.codegen.jacobians`), ``jacobian("f")`` is the module-level function
+:mod:`rigidsym.codegen.derivatives.jacobians`), ``jacobian("f")`` is the module-level function
 ``rigidsym.kernels.runtime.jacobians.f_jacobian``: same arguments as ``f`` (positional or keyword,
 plus ``check``, ``on_singular`` and ``threads``; no ``out``), returning ``(values, jac)`` where
 ``values`` is what ``f`` returns and ``jac[output][input]`` has shape ``batch + output_shape +
@@ -24,7 +24,7 @@ from rigidsym.kernels.runtime import state as _state
 
 __all__ = ["jacobian", "euler_rate_matrix_jacobian"]
 
-#: suffix of the generated kernels with Jacobians (rigidsym.codegen.jacobians.SUFFIX)
+#: suffix of the generated kernels with Jacobians (rigidsym.codegen.derivatives.jacobians.SUFFIX)
 _SUFFIX = "_with_jacobians"
 _FN = "_jacobian"
 _EULER = ("euler_rate_matrix",)

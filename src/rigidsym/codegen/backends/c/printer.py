@@ -1,5 +1,5 @@
 """Printers of the C-only target: the kernels' programs as C99 on ``double`` (the package's
-:class:`~rigidsym.codegen.printers.KernelCPrinter`) or on ``float`` only.
+:class:`~rigidsym.codegen.backends.extension.printer.KernelCPrinter`) or on ``float`` only.
 
 :class:`FloatOnlyPrinter` prints a program in float arithmetic throughout: float literals
 (``2.0f``, rationals rounded once to float), the C99 float functions (``sinf``, ``cosf``,
@@ -14,7 +14,7 @@ import numpy as np
 import sympy as sp
 from sympy.codegen.ast import float32, float80, real
 
-from rigidsym.codegen.printers import KernelCPrinter
+from rigidsym.codegen.backends.extension.printer import KernelCPrinter
 
 __all__ = ["DoublePrinter", "FloatOnlyPrinter", "WidePrinter"]
 

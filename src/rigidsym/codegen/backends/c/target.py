@@ -11,8 +11,9 @@ declaration hash) and the licence line. docs/c-api.md is the user's guide.
 The programs are the ones the package's kernels run (:func:`rigidsym.codegen.generator.
 compile_kernel`: the same rewrites and CSE), printed by :mod:`.printer` into the templates of
 this folder's ``templates/``; nothing here changes what ``rigidsym generate`` writes into
-``generated/``. The ``c_*.j2`` beside them are the package's extension-module C, rendered by
-:mod:`rigidsym.codegen.generator` (issue 53: one place for every C template).
+``generated/``. Its printers extend the extension target's
+(:mod:`rigidsym.codegen.backends.extension`: one place for the C printers); its command is
+:func:`rigidsym.codegen.usergen.cmd_generate_c`.
 """
 
 from __future__ import annotations
@@ -29,13 +30,15 @@ import jinja2
 import sympy as sp
 
 import rigidsym
+from rigidsym.codegen.backends import RenderContext, Target
 from rigidsym.codegen.backends.c.homogeneous import rescale_steps
 from rigidsym.codegen.backends.c.printer import DoublePrinter, FloatOnlyPrinter, WidePrinter
-from rigidsym.codegen.cprogram import balanced, finite_check, program_lines
+from rigidsym.codegen.backends.extension.program import balanced, finite_check
+from rigidsym.codegen.backends.printing import program_lines
 from rigidsym.codegen.spec import Kernel
 
 __all__ = ["generate_c", "float_bounds", "TEMPLATES", "LIBRARY", "PREFIX", "STATUS",
-           "FLOAT_BOUNDS"]
+           "FLOAT_BOUNDS", "TARGET", "render"]
 
 TEMPLATES = Path(__file__).parent / "templates"
 #: the float functions' measured accuracy bounds of the book's kernels
@@ -280,7 +283,7 @@ def _kernel_entry(kc, bounds: dict) -> dict:
 
 def _groups(codes, origin, bounds: dict) -> list[dict]:
     """Kernels with their Jacobian twins (``<name>_with_jacobians``) in one file pair."""
-    from rigidsym.codegen.jacobians import SUFFIX
+    from rigidsym.codegen.derivatives.jacobians import SUFFIX
 
     by = {kc.kernel.name: kc for kc in codes}
     groups = []
@@ -372,3 +375,14 @@ def generate_c(codes, origin: str | dict[str, str], single_header: bool = False,
     if single_header:
         files[f"{LIBRARY}_single.h"] = _single_header(files, groups, allhash, ver, origin)
     return dict(sorted(files.items()))
+
+
+def render(ctx: RenderContext) -> dict[str, str]:
+    """The C target's files of a generation (:func:`generate_c` of ``ctx.kernels``; the
+    options ``single_header`` and ``bounds`` from ``ctx.options``)."""
+    return generate_c(ctx.kernels, ctx.origin, single_header=ctx.options.get("single_header",
+                                                                              False),
+                      bounds=ctx.options.get("bounds"))
+
+
+TARGET = Target("c", TEMPLATES, DoublePrinter, render, package=False)

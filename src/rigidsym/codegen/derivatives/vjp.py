@@ -166,7 +166,7 @@ def jacobian_program(program: Program, args: list[list[sp.Symbol]],
     expanded formula took 516 s to generate). ``args``: each argument's flat symbols;
     ``sizes``: each (named) output's number of entries. Outputs ``program.outputs`` then, for
     each output ``o`` and argument ``a``, ``d o[i] / d a[j]`` (``i`` major), as
-    :func:`rigidsym.codegen.jacobians.with_jacobians` lays them out.
+    :func:`rigidsym.codegen.derivatives.jacobians.with_jacobians` lays them out.
 
     Each temp carries its gradient, sparse in the inputs (sympy differentiates each small
     temp alone); every entry that is not a number or a symbol is a temp ``dx<k>_<j>``;

@@ -1,9 +1,11 @@
-"""The PyTorch and JAX programs of a kernel (issue 31): the optimised program, printed.
+"""What the PyTorch and JAX targets share (issue 31): a kernel's optimised program, printed
+into ``array_kernel.py.j2`` (this package's ``templates/``) by the target's printer.
 
-Each back-end file holds the kernel's straight-line program(s) exactly as the NumPy and C
+Each target's file holds the kernel's straight-line program(s) exactly as the NumPy and C
 kernels print them (the same :class:`~rigidsym.codegen.optimise.Program` objects of the
-compiled kernel, rewrites included), printed by the visitor printers of
-:mod:`rigidsym.codegen.printers`: one function per variant taking one array per scalar
+compiled kernel, rewrites included), printed by the target's visitor printer
+(:mod:`rigidsym.codegen.backends.torch.printer`, :mod:`rigidsym.codegen.backends.jax.printer`): one
+function per variant taking one array per scalar
 input component and returning ``(outputs, denominators)``, and one condition function per
 branch. Validation, broadcasting, branch selection (with the safe-``where`` idiom) and the
 derivatives live in the runtime (:mod:`rigidsym.kernels.torch`, :mod:`rigidsym.kernels.jax`),
@@ -12,19 +14,25 @@ so that the generated files stay small and cheap to print.
 
 from __future__ import annotations
 
+from pathlib import Path
 from typing import Any
 
 import sympy as sp
 
-from rigidsym.codegen.accuracy.compensated import ARRAY_SOURCE
-from rigidsym.codegen.jacobians import has_jacobian
-from rigidsym.codegen.printers import KernelJaxPrinter, torch_printer
-from rigidsym.codegen.vjp import cotangent_names, jvp_program, tangent_names, vjp_program
+from rigidsym.codegen.backends.printing import ARRAY_SOURCE, is_compensated, uses_diffprod
+from rigidsym.codegen.derivatives.jacobians import has_jacobian
+from rigidsym.codegen.derivatives.vjp import (
+    cotangent_names,
+    jvp_program,
+    tangent_names,
+    vjp_program,
+)
 
-__all__ = ["BACKENDS", "render_array_kernels", "hoist_compensated"]
+__all__ = ["TEMPLATES", "render_array_kernel", "hoist_compensated", "JAX_TRIG_SOURCE",
+           "JAX_KEEP_SOURCE"]
 
-#: back-end -> (folder, module the printed code names)
-BACKENDS = {"torch": "torch", "jax": "jax.numpy"}
+#: the template both targets print into
+TEMPLATES = Path(__file__).parent / "templates"
 
 #: the JAX programs' sine and cosine (KernelJaxPrinter prints ``_sin``, ``_cos``): XLA on the
 #: CPU fuses an elementwise sine into every consumer, so each output of a program and each
@@ -67,10 +75,6 @@ def _keep(x):
 '''
 
 
-def _printer(backend: str):
-    return torch_printer() if backend == "torch" else KernelJaxPrinter()
-
-
 def _variant(v: Any, printer) -> dict:
     p = v.program
     return {"name": v.name,
@@ -104,19 +108,17 @@ def _saved(program, vjp, hoisted: dict) -> list[str]:
 def _compensated(exprs: list) -> list:
     """The compensated nodes (``DiffProd``, ``SumProd``) of ``exprs``, in order of first
     appearance."""
-    from rigidsym.codegen.accuracy.compensated import DiffProd, SumProd
-
     seen: dict = {}
     for e in exprs:
         for n in sp.preorder_traversal(sp.sympify(e)):
-            if isinstance(n, (DiffProd, SumProd)):
+            if is_compensated(n):
                 seen.setdefault(n, None)
     return list(seen)
 
 
 def hoist_compensated(program) -> dict:
     """``{node: name}``: each compensated sum of the forward ``program`` named ``xc<i>``.
-    The printers print a named node as its name (``printers._PowMixin.named``) and
+    The printers print a named node as its name (``KernelPrinterMixin.named``) and
     :func:`_lines` computes it once, just before its first reader; the expressions stay
     as they are, so every other term prints in the same order, and values and gradients
     stay bit for bit. Why (issue 38, the first compile of ``instant_screw_axis``): the VJP
@@ -180,51 +182,62 @@ def _kept_tangents(program, lines: list, backend: str) -> list:
     return [(s, f"_keep({e})" if s in keep else e) for s, e in lines]
 
 
-def render_array_kernels(env, kc: Any, header) -> dict[str, str]:
-    """``{"torch/<name>.py": text, "jax/<name>.py": text}`` for the compiled kernel ``kc``.
+def _derivatives(kc: Any, memo: dict) -> tuple:
+    """The reverse- and forward-mode programs of ``kc`` and its hoisted compensated sums
+    (``(None, None, {})`` without a generated Jacobian), computed once per kernel for both
+    targets (``memo``: the generation's shared cache)."""
+    key = ("array derivatives", kc.kernel.name)
+    if key not in memo:
+        vjp = jvp = None
+        hoisted: dict = {}
+        # the backward of a kernel with a generated Jacobian (one formula, no branches):
+        # reverse mode over its optimised program (issue 38)
+        if has_jacobian(kc.kernel) and len(kc.variants) == 1:
+            ins = [s for _, syms in kc.inputs for s in syms]
+            vjp = vjp_program(kc.variants[0].program, ins)
+            jvp = jvp_program(kc.variants[0].program, ins)
+            hoisted = hoist_compensated(kc.variants[0].program)
+        memo[key] = (vjp, jvp, hoisted)
+    return memo[key]
+
+
+def render_array_kernel(env, kc: Any, header, backend: str, module: str, printer,
+                        memo: dict) -> dict[str, str]:
+    """``{"<backend>/<name>.py": text}``: the compiled kernel ``kc`` for one array target.
 
     Args:
-        env: the generator's Jinja2 environment.
+        env: a Jinja2 environment over :data:`TEMPLATES`.
         kc: a :class:`rigidsym.codegen.generator.KernelCode`.
-        header: ``header(template) -> [lines]``, the generator's file header.
+        header: ``header(kc, template) -> [lines]``, the generator's file header.
+        backend: the target's name and folder (``"torch"``, ``"jax"``).
+        module: the array module the printed code names (``"torch"``, ``"jax.numpy"``).
+        printer: the target's printer of kernel programs (a new one).
+        memo: the generation's cache shared by the targets (the derivatives' programs).
     """
-    from rigidsym.codegen.accuracy.compensated import uses_diffprod
-
     t = "array_kernel.py.j2"
     columns = [str(s) for _, syms in kc.inputs for s in syms]
-    # the backward of a kernel with a generated Jacobian (one formula, no branches): reverse
-    # mode over its optimised program (issue 38)
-    vjp = jvp = None
-    hoisted: dict = {}
-    if has_jacobian(kc.kernel) and len(kc.variants) == 1:
-        ins = [s for _, syms in kc.inputs for s in syms]
-        vjp = vjp_program(kc.variants[0].program, ins)
-        jvp = jvp_program(kc.variants[0].program, ins)
-        hoisted = hoist_compensated(kc.variants[0].program)
-    files = {}
-    for backend, module in BACKENDS.items():
-        pr = _printer(backend)
-        pr.named = hoisted
-        # branches first, in order, then main (the order of the NumPy kernel's selection)
-        variants = [_variant(v, pr) for v in kc.variants]
-        back = None if vjp is None else {
-            "args": columns + cotangent_names(len(kc.variants[0].program.outputs)),
-            "temps": _lines(pr, vjp.temps, vjp.outputs),
-            "saved": _saved(kc.variants[0].program, vjp, hoisted),
-            "outputs": [pr.doprint(e) for e in vjp.outputs], "ops": vjp.ops,
-            "targs": columns + tangent_names(len(columns)),
-            "ttemps": _kept_tangents(kc.variants[0].program, _lines(pr, jvp.temps,
-                                                                    jvp.outputs), backend),
-            "toutputs": [pr.doprint(e) for e in jvp.outputs], "tops": jvp.ops}
-        helpers = [ARRAY_SOURCE.strip("\n").replace("{module}", module)] if \
-            uses_diffprod(kc) else []
-        if backend == "jax" and _calls_trig(variants, back):
-            helpers.append(JAX_TRIG_SOURCE.strip("\n"))
-        kept = back is not None and any(e.startswith("_keep(") for _, e in back["ttemps"])
-        if backend == "jax" and (hoisted or kept):
-            helpers.append(JAX_KEEP_SOURCE.strip("\n"))
-        files[f"{backend}/{kc.kernel.name}.py"] = env.get_template(t).render(
-            header=header(t), backend=backend, module=module, k=kc.kernel, ops=kc.ops,
-            hash=kc.hash, columns=columns, variants=variants, vjp=back,
-            divides=bool(kc.variants[0].program.dens), helpers="\n\n\n".join(helpers))
-    return files
+    vjp, jvp, hoisted = _derivatives(kc, memo)
+    pr = printer
+    pr.named = hoisted
+    # branches first, in order, then main (the order of the NumPy kernel's selection)
+    variants = [_variant(v, pr) for v in kc.variants]
+    back = None if vjp is None else {
+        "args": columns + cotangent_names(len(kc.variants[0].program.outputs)),
+        "temps": _lines(pr, vjp.temps, vjp.outputs),
+        "saved": _saved(kc.variants[0].program, vjp, hoisted),
+        "outputs": [pr.doprint(e) for e in vjp.outputs], "ops": vjp.ops,
+        "targs": columns + tangent_names(len(columns)),
+        "ttemps": _kept_tangents(kc.variants[0].program, _lines(pr, jvp.temps,
+                                                                jvp.outputs), backend),
+        "toutputs": [pr.doprint(e) for e in jvp.outputs], "tops": jvp.ops}
+    helpers = [ARRAY_SOURCE.strip("\n").replace("{module}", module)] if \
+        uses_diffprod(kc) else []
+    if backend == "jax" and _calls_trig(variants, back):
+        helpers.append(JAX_TRIG_SOURCE.strip("\n"))
+    kept = back is not None and any(e.startswith("_keep(") for _, e in back["ttemps"])
+    if backend == "jax" and (hoisted or kept):
+        helpers.append(JAX_KEEP_SOURCE.strip("\n"))
+    return {f"{backend}/{kc.kernel.name}.py": env.get_template(t).render(
+        header=header(kc, t), backend=backend, module=module, k=kc.kernel, ops=kc.ops,
+        hash=kc.hash, columns=columns, variants=variants, vjp=back,
+        divides=bool(kc.variants[0].program.dens), helpers="\n\n\n".join(helpers))}

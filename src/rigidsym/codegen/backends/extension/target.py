@@ -1,0 +1,101 @@
+"""The extension target: the C of the Python package's extension module (``generated/c/``):
+per kernel a header and a source (``c_kernel.h.j2``, ``c_kernel.c.j2``: the batch loops in
+double and float32), the shared declarations (``c_common.h.j2``), the index of the kernels
+(``c_kernels_index.h.j2``), the module (``c_module.c.j2``), the per-path table of batch
+functions (``c_table.c.j2``), the CPU dispatcher (``c_dispatch.h.j2``) and the per-call entry
+points (``c_fast.h.j2``).
+"""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import sympy as sp
+
+from rigidsym.codegen.backends import RenderContext, Target, environment
+from rigidsym.codegen.backends.extension.printer import KernelCPrinter
+from rigidsym.codegen.backends.extension.program import f32_code, finite_check, trig_plan
+from rigidsym.codegen.backends.printing import program_lines
+from rigidsym.core import kinds as _kinds
+
+__all__ = ["TARGET", "render", "render_module"]
+
+TEMPLATES = Path(__file__).parent / "templates"
+#: the ``kind`` of an entry point's argument whose constraint only the Python path checks
+#: (``RIGIDSYM_PYTHON`` in ``c_fast.h.j2``)
+_C_PYTHON_CHECK = 3
+
+
+def _kernel(env, kc, ctx: RenderContext) -> dict[str, str]:
+    """``c/<kernel>.h`` and ``c/<kernel>.c``."""
+    k = kc.kernel
+    cp = KernelCPrinter()
+    divides = any(v.program.dens for v in kc.variants)
+    used = set()
+    for v in kc.variants:
+        for e in [*(x for _, x in v.program.temps), *v.program.outputs, *v.program.dens,
+                  *([v.cond] if v.cond is not None else [])]:
+            used |= {str(s) for s in sp.sympify(e).free_symbols}
+    cvars = [{"name": v.name, "cond": None if v.cond is None else cp.doprint(v.cond),
+              "finite": finite_check(v.program, k), **program_lines(v.program, cp)}
+             for v in kc.variants]
+    # nothing a sample could flag (no division, no finiteness test, no branch): the batch
+    # loop needs no count
+    never_singular = len(cvars) == 1 and not divides and not cvars[0]["finite"]
+    common = {"k": k, "meta": ctx.meta(kc), "inputs": kc.inputs, "divides": divides}
+    files = {}
+    for t, path in (("c_kernel.h.j2", f"c/{k.name}.h"), ("c_kernel.c.j2", f"c/{k.name}.c")):
+        files[path] = env.get_template(t).render(header=ctx.header(kc, t), variants=cvars,
+                                                 used=used, trig=trig_plan(kc, cp),
+                                                 never_singular=never_singular,
+                                                 f32=f32_code(kc), **common)
+    return files
+
+
+def render_module(env, metas: list[dict], ver: dict) -> dict[str, str]:
+    """The extension module's own C: the module (``c_module.c.j2``), the per-path table of
+    batch functions (``c_table.c.j2``), the CPU dispatcher (``c_dispatch.h.j2``) and the
+    per-call entry points (``c_fast.h.j2``)."""
+    def size(shape) -> int:
+        return int(math.prod(shape))
+    def c_check(a: dict) -> int:  # the kind table's C validation routine (0 for outputs)
+        k = _kinds.for_spec(a["kind"], a["shape"]) if "kind" in a else None
+        if k is None:
+            return 0
+        # a checked kind with no C routine of its own: checked calls take the Python path
+        return k.c_check if k.c_check or k.check is None else _C_PYTHON_CHECK
+
+    def slot(a: dict) -> dict:
+        return {"nd": len(a["shape"]), "dims": list(a["shape"]), "size": size(a["shape"]),
+                "kind": c_check(a)}
+    ck = [{"name": m["name"], "ins": [size(a["shape"]) for a in m["args"]],
+           "outs": [size(o["shape"]) for o in m["outputs"]],
+           "narrays": len(m["args"]) + len(m["outputs"]),
+           "nin": len(m["args"]), "nout": len(m["outputs"]),
+           "args": [slot(a) for a in m["args"]],
+           "outs_meta": [slot(o) for o in m["outputs"]]} for m in metas]
+    files = {}
+    for t, path in (("c_module.c.j2", "c/rigidsym_module.c"),
+                    ("c_table.c.j2", "c/rigidsym_table.c"),
+                    ("c_dispatch.h.j2", "c/rigidsym_dispatch.h"),
+                    ("c_fast.h.j2", "c/rigidsym_fast.h")):
+        files[path] = env.get_template(t).render(kernels=ck, template=t, **ver)
+    return files
+
+
+def render(ctx: RenderContext) -> dict[str, str]:
+    """The extension target's files of a generation (``{relative path: text}``)."""
+    env = environment(TEMPLATES)
+    files: dict[str, str] = {}
+    for kc in ctx.kernels:
+        files.update(_kernel(env, kc, ctx))
+    for t, path in (("c_common.h.j2", "c/rigidsym_common.h"),
+                    ("c_kernels_index.h.j2", "c/rigidsym_kernels.h")):
+        files[path] = env.get_template(t).render(kernels=ctx.metas, template=t,
+                                                 **ctx.versions)
+    files.update(render_module(env, ctx.metas, ctx.versions))
+    return files
+
+
+TARGET = Target("extension", TEMPLATES, KernelCPrinter, render)
