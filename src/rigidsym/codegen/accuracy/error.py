@@ -139,8 +139,8 @@ class Meter:
         reference (inf where it is not finite or not below 1: :func:`normwise`). A form is
         evaluated as the kernels print it
         (:class:`~rigidsym.codegen.backends.numpy.printer.KernelNumPyPrinter`: a rational
-        power as roots and a quotient); ``textbook``: as the harness evaluates the declaration (sympy's
-        NumPy printer: ``pow``)."""
+        power as roots and a quotient); ``textbook``: as the harness evaluates the declaration
+        (sympy's NumPy printer: ``pow``)."""
         n = int(self.ok.sum())
         if not n:
             return np.zeros((0, len(self.groups)))
