@@ -1,9 +1,9 @@
 """What the PyTorch and JAX kernels share (issue 31): no import of either library.
 
 Both back-ends evaluate the same generated programs (``generated/torch``, ``generated/jax``:
-:mod:`rigidsym.codegen.backends.arrays.programs`) on array modules with the same names for what is
-needed
-here (``where``, ``stack``, ``isfinite``, ``broadcast_to``, ``einsum``, ``linalg.det``):
+:mod:`rigidsym.codegen.backends.arrays.programs`) on array modules with the same names for
+what is needed here (``where``, ``stack``, ``isfinite``, ``broadcast_to``, ``einsum``,
+``linalg.det``):
 ``xp`` below is ``torch`` or ``jax.numpy``. This module holds the directory of programs,
 the keyword rules of traced and eager calls, validation of constrained inputs, the
 selection of a branch kernel's variant with the safe-``where`` idiom, and the call path both
