@@ -80,7 +80,7 @@ def test_compare_sees_an_edit_an_orphan_a_missing_file_and_a_changed_input(tmp_p
 def test_the_inputs_hold_the_declarations_templates_and_lazy_imports():
     labels = set(inputs.manifest()["inputs"])
     for must in ("rigidsym/codegen/generator.py",
-                 "rigidsym/codegen/backends/c/templates/c_fast.h.j2",
+                 "rigidsym/codegen/backends/extension/templates/c_fast.h.j2",
                  "rigidsym/derivations/kernels_spec.py", "rigidsym/derivations/sec3_2.py",
                  "rigidsym/derivations/kernels_accuracy.json",
                  # imported inside generate(), not at the top of the module

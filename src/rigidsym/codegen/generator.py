@@ -5,10 +5,9 @@ build and per-sample branches), hash them (before any rewrite or printing), rewr
 them (:mod:`.optimise`): :func:`compile_kernel`; then every registered package target
 (:mod:`rigidsym.codegen.backends`: NumPy, the extension's C, PyTorch, JAX) prints the
 compiled kernels into its templates, and the generator merges their files with
-``kernels.json``. :func:`generate` returns ``{relative path: text}``; :func:`write` writes it
-atomically and removes orphans; :func:`check` compares it with the disk and returns a unified diff
-(both in
-:mod:`rigidsym.codegen.files`, re-exported here).
+``kernels.json``. :func:`generate` returns ``{relative path: text}``; :func:`write` writes
+it atomically and removes orphans; :func:`check` compares it with the disk and returns a
+unified diff (both in :mod:`rigidsym.codegen.files`, re-exported here).
 """
 
 from __future__ import annotations
@@ -40,7 +39,7 @@ from rigidsym.core.config import generated_dir
 
 __all__ = ["generate", "write", "check", "GenerationResult", "default_out_dir", "TEMPLATES"]
 
-#: the template folders of the package targets (file names unique across them)
+#: the template folders of the built-in package targets (file names unique across them)
 TEMPLATES = tuple(dict.fromkeys(t.template_dir for t in targets(package=True)))
 
 

@@ -132,10 +132,10 @@ def _differentiated(kernel: Kernel, value_build):
 def _by_program(kernel: Kernel, value_build):
     """As :func:`_differentiated`, the chain rule over the declared formula's common
     subexpressions (``sympy.cse``, each small temp differentiated by sympy alone:
-    :func:`rigidsym.codegen.derivatives.vjp.jacobian_program`) instead of ``sympy.diff`` of the
-    expanded
-    tree; the same derivative, a graph of shared subexpressions (for the references: the
-    generator differentiates its own optimised program, ``Kernel.jacobian_from``)."""
+    :func:`rigidsym.codegen.derivatives.vjp.jacobian_program`) instead of ``sympy.diff`` of
+    the expanded tree; the same derivative, a graph of shared subexpressions (for the
+    references: the generator differentiates its own optimised program,
+    ``Kernel.jacobian_from``)."""
     from rigidsym.codegen.derivatives.vjp import jacobian_program
     from rigidsym.codegen.optimise import Program
     from rigidsym.codegen.spec import flatten_outputs

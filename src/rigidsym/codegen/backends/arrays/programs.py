@@ -4,9 +4,9 @@ into ``array_kernel.py.j2`` (this package's ``templates/``) by the target's prin
 Each target's file holds the kernel's straight-line program(s) exactly as the NumPy and C
 kernels print them (the same :class:`~rigidsym.codegen.optimise.Program` objects of the
 compiled kernel, rewrites included), printed by the target's visitor printer
-(:mod:`rigidsym.codegen.backends.torch.printer`, :mod:`rigidsym.codegen.backends.jax.printer`): one
-function per variant taking one array per scalar
-input component and returning ``(outputs, denominators)``, and one condition function per
+(:mod:`rigidsym.codegen.backends.torch.printer`,
+:mod:`rigidsym.codegen.backends.jax.printer`): one function per variant taking one array per
+scalar input component and returning ``(outputs, denominators)``, and one condition function per
 branch. Validation, broadcasting, branch selection (with the safe-``where`` idiom) and the
 derivatives live in the runtime (:mod:`rigidsym.kernels.torch`, :mod:`rigidsym.kernels.jax`),
 so that the generated files stay small and cheap to print.

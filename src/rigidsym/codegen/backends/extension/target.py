@@ -19,8 +19,9 @@ from rigidsym.codegen.backends.extension.program import f32_code, finite_check, 
 from rigidsym.codegen.backends.printing import program_lines
 from rigidsym.core import kinds as _kinds
 
-__all__ = ["TARGET", "render", "render_module"]
+__all__ = ["TARGET", "TEMPLATES", "render", "render_module"]
 
+#: the target's templates
 TEMPLATES = Path(__file__).parent / "templates"
 #: the ``kind`` of an entry point's argument whose constraint only the Python path checks
 #: (``RIGIDSYM_PYTHON`` in ``c_fast.h.j2``)

@@ -17,8 +17,7 @@ def render(ctx: RenderContext) -> dict[str, str]:
     files: dict[str, str] = {}
     for kc in ctx.kernels:
         files.update(render_array_kernel(env, kc, ctx.header, "jax", "jax.numpy",
-        KernelJaxPrinter(),
-                                         ctx.memo))
+                                         KernelJaxPrinter(), ctx.memo))
     return files
 
 

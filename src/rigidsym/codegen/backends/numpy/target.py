@@ -17,13 +17,14 @@ from rigidsym.codegen.backends.printing import (
     uses_diffprod,
 )
 
-__all__ = ["TARGET", "NUMPY_CHUNK", "render"]
+__all__ = ["TARGET", "TEMPLATES", "NUMPY_CHUNK", "render"]
 
 #: samples per block of the generated NumPy kernels: the temporaries of one block (tens of
 #: arrays of 8 bytes a sample) stay in L2, so large batches are not memory-bound; measured in
 #: benchmarks/RESULTS.md
 NUMPY_CHUNK = 16384
 
+#: the target's templates
 TEMPLATES = Path(__file__).parent / "templates"
 
 
