@@ -157,7 +157,12 @@ def test_the_course_front_door_lists_what_it_serves():
         assert getattr(course, name) is not None, name
     import rigidsym.exercises as ex
 
-    assert all(getattr(ex, n) is getattr(course, n) for n in ex.__all__)
+    served = {where.partition(":")[2] or name: name for name, where in course.FRONT_DOOR.items()
+              if where.startswith("exercises")}
+    assert all(getattr(ex, n) is getattr(course, served[n]) for n in ex.__all__)
+    # a front-door name never shadows a submodule of the package
+    assert not [n for n in course.__all__ if (Path(course.__file__).parent / f"{n}.py").exists()
+                or (Path(course.__file__).parent / n).is_dir()]
 
 
 def _packages() -> list[str]:

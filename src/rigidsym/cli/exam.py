@@ -30,7 +30,7 @@ def add_arguments(p) -> None:
 
 def run(args) -> int:
     """Write the handout and the key; 0 written, 2 a bad spec or data, 3 a defect."""
-    from rigidsym.course import exam
+    from rigidsym.course import write_exam as exam
 
     try:
         if getattr(args, "students", None):

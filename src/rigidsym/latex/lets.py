@@ -9,7 +9,7 @@ A ``--let`` (``let=`` in Python) says what a symbol is. A KIND is a constrained 
 the zero test), a free shape, or a word of the vocabulary of rigid motions (twist, wrench,
 transform, so(3), se(3)): :data:`KIND_WORDS`. ``NAME = LATEX`` is a first-principles model in
 the same notation. A NAME is compared after parsing (``\\mathbf Q`` is ``\\mathbf{Q}``).
-:mod:`rigidsym.latex.statement` reads the LaTeX itself with these.
+``rigidsym.latex.statement`` reads the LaTeX itself with these.
 """
 
 from __future__ import annotations

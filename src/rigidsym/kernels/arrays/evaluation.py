@@ -5,8 +5,8 @@ Both back-ends evaluate the same generated programs (``generated/torch``, ``gene
 :mod:`rigidsym.codegen.backends.arrays.programs`) on array modules with the same names for
 what is needed here (``where``, ``stack``, ``isfinite``, ``broadcast_to``, ``einsum``,
 ``linalg.det``): ``xp`` below is ``torch`` or ``jax.numpy``. This module holds the directory
-of programs (:class:`ArraySpace`), their evaluation (one column per scalar input component, the branch
-kernels' variant selected with the safe-``where`` idiom, the singular mask from the
+of programs (:class:`ArraySpace`), their evaluation (one column per scalar input component,
+the branch kernels' variant selected with the safe-``where`` idiom, the singular mask from the
 denominators, the flat outputs shaped back, the overflow masks), and the checked call both
 back-ends share (:class:`Space`: conversion, modes, validation and broadcasting by the input
 rules of :mod:`rigidsym.kernels.arrays.inputs`, evaluation, the rescue of
