@@ -17,6 +17,7 @@ from hypothesis import strategies as st
 from rigidsym.algebra.primitives import rotation_from_natural_invariants
 from rigidsym.algebra.symbols import angle, rotation, unit_vector, vector
 from rigidsym.checking.deciding import balls
+from rigidsym.core.settings import ENGINE
 from rigidsym.zero import make_plan
 from rigidsym.zero.program import unparametrised
 
@@ -59,9 +60,9 @@ def test_a_true_identity_is_enclosed_and_certified():
     lhs = list(Q.T * Q)
     rhs = list(sp.eye(3))
     b = balls.backing(lhs, rhs, make_plan(lhs + rhs), seed=5)
-    assert b.points == balls.NUMERIC_POINTS and b.excluded is None
-    assert b.enclosure <= balls.CERTIFIED_BOUND and b.certified
-    assert b.digits == balls.NUMERIC_DIGITS
+    assert b.points == ENGINE.numeric_points and b.excluded is None
+    assert b.enclosure <= ENGINE.certified_bound and b.certified
+    assert b.digits == ENGINE.numeric_digits
 
 
 def test_a_false_identity_has_a_ball_that_excludes_zero():
@@ -76,7 +77,7 @@ def test_precision_rises_where_a_ball_is_too_wide():
     x = sp.Symbol("bx", real=True)
     lhs = [x + big * (sp.cos(phi) ** 2 + sp.sin(phi) ** 2) - big]
     b = balls.backing(lhs, [x], make_plan(lhs + [x]), seed=3)
-    assert b.digits > balls.NUMERIC_DIGITS and b.raised == balls.NUMERIC_POINTS
+    assert b.digits > ENGINE.numeric_digits and b.raised == ENGINE.numeric_points
     assert b.certified
 
 

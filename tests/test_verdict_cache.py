@@ -12,6 +12,7 @@ import pytest
 import rigidsym
 from rigidsym.checking import verdict_cache
 from rigidsym.cli import main
+from rigidsym.core.settings import ENGINE
 from rigidsym.registry.declarations import REGISTRY
 
 HELPER = '''
@@ -220,10 +221,9 @@ def test_cache_info_and_clear(project, capsys):
 def test_the_key_changes_with_the_engine_settings(project, monkeypatch):
     src, helper = project
     _run(src, helper)
-    from rigidsym.checking.deciding import balls
 
     before = verdict_cache.key_of("cacheb:double")
-    monkeypatch.setattr(balls, "NUMERIC_POINTS", 11)
+    monkeypatch.setattr(ENGINE, "numeric_points", 11)
     assert verdict_cache.key_of("cacheb:double") not in (None, before)
 
 

@@ -10,6 +10,7 @@ from hypothesis import strategies as st
 
 from rigidsym.algebra.primitives import cpm, rotation_from_natural_invariants, vect
 from rigidsym.algebra.symbols import TIME, angle, rotation, unit_vector, vector
+from rigidsym.core.settings import ENGINE
 from rigidsym.zero.decide import decide_zero, evaluate, make_plan
 
 e = unit_vector("ze")
@@ -80,8 +81,7 @@ def test_time_derivatives_stay_on_the_constraint_set():
 
 
 def test_large_expressions_take_the_schwartz_zippel_path(monkeypatch):
-    import rigidsym.zero.decide as z
-    monkeypatch.setattr(z, "CANCEL_NODE_LIMIT", 5)
+    monkeypatch.setattr(ENGINE, "cancel_node_limit", 5)
     r = decide_zero(list(Q.T * Q - sp.eye(3)))
     assert r.zero is True and r.method == "random-exact"
     assert "P(false zero) <=" in r.detail

@@ -12,8 +12,8 @@ verify makes it ``undecided`` (:mod:`rigidsym.checking.repairing.correction`, wh
 repair search of :mod:`rigidsym.checking.repairing.repair`).
 
 Every verdict is backed by a ball-arithmetic evaluation (python-flint ``arb``) of the
-*unparametrised* expressions at ``NUMERIC_POINTS`` seeded points that satisfy the
-constraints exactly, from ``NUMERIC_DIGITS`` digits up
+*unparametrised* expressions at ``ENGINE.numeric_points`` seeded points that satisfy the
+constraints exactly, from ``ENGINE.numeric_digits`` digits up
 (:mod:`rigidsym.checking.deciding.balls`). The balls back a verdict and never make one: a
 disagreement turns it ``undecided``.
 """
@@ -29,8 +29,6 @@ from rigidsym.checking.deciding.balls import round_up
 from rigidsym.checking.deciding.branches import cases
 from rigidsym.checking.deciding.counterexample import describe_point
 from rigidsym.checking.deciding.evidence import (
-    NUMERIC_DIGITS,
-    NUMERIC_POINTS,
     counterexample_ball,
     exact_counterexample,
     numeric_backing,
@@ -49,17 +47,13 @@ from rigidsym.checking.deciding.records import member_record, model_words, print
 from rigidsym.checking.outcome import Outcome
 from rigidsym.checking.repairing.correction import RepairSettings, correct
 from rigidsym.core import work as _work
+from rigidsym.core.settings import ENGINE
 from rigidsym.printing.names import book_text
 from rigidsym.registry.declarations import REGISTRY, Equation, Rel, Statement
 from rigidsym.zero.decide import Unsupported, decide_zero, make_plan
 
-__all__ = ["Outcome", "check", "explicit", "shape_of", "NUMERIC_DIGITS", "NUMERIC_POINTS"]
+__all__ = ["Outcome", "check", "explicit", "shape_of"]
 
-#: certified bound of the relative residual below which the numeric check agrees with
-#: "holds" (a wider ball at the highest precision turns the verdict undecided).
-AGREE_TOL = Fraction(1, 10 ** (NUMERIC_DIGITS - 15))
-#: relative residual (midpoints) above which the numeric check agrees with "does not hold".
-DIFFER_TOL = 1e-12
 
 
 # --------------------------------------------------------------------------- decide
@@ -141,7 +135,7 @@ def _decide_case(rel, blhs, brhs, lhs, rhs, seed, describe) -> _RelOutcome:
         try:
             ball = counterexample_ball(blhs, brhs, plan, pt)
         except Unsupported as exc:
-            ball = (False, f"no ball: {exc}", NUMERIC_DIGITS)
+            ball = (False, f"no ball: {exc}", ENGINE.numeric_digits)
         return _RelOutcome(False, "counterexample", zr.detail, ce, rel.label, ball)
     return _RelOutcome(zr.zero, zr.method, zr.detail, None, rel.label)
 
@@ -174,7 +168,7 @@ def check(eq: Equation | str, *, repairs: bool = True,
         repairs: search the repairs of a member that does not hold
             (:mod:`rigidsym.checking.repairing.repair`).
         repair_budget: candidates per failing member; ``None``: the declaration's
-            ``repair_budget``, else :data:`rigidsym.checking.repairing.repair.REPAIR_BUDGET`.
+            ``repair_budget``, else ``ENGINE.repair_budget``.
         expanded: print the expanded strings (``printed``, ``derived``, ``corrected``:
             the full reports and the API); ``False`` leaves them ``None`` (a tenth of a
             chapter's checking time, for ``rigidsym verify``, which never shows them).
@@ -197,7 +191,7 @@ def check(eq: Equation | str, *, repairs: bool = True,
             id=eq.id, title=eq.title, kind=eq.kind, verdict="undecided", expected=eq.expected,
             method="undecided", printed_latex=eq.latex, printed="", derived="",
             corrected=None, counterexample=None, cause=None,
-            numeric={"points": 0, "digits": NUMERIC_DIGITS, "max_residual": None,
+            numeric={"points": 0, "digits": ENGINE.numeric_digits, "max_residual": None,
                      "seed": seed_of(eq.id), "enclosure": None, "certified": False},
             seconds=round(time.perf_counter() - t0, 3), section=eq.section,
             detail=f"{type(exc).__name__} while checking: {str(exc)[:200]}",
@@ -297,7 +291,7 @@ def _numeric(verdict: str, detail: str, rels: list[Rel], decisive: bool, model: 
     for a does-not-hold, ``bad_rel`` (the failing printed member) at the same points and
     ``bad.ball`` (its ball at the counterexample) back the failure.
     """
-    numeric = {"points": 0, "digits": NUMERIC_DIGITS, "max_residual": None, "seed": seed,
+    numeric = {"points": 0, "digits": ENGINE.numeric_digits, "max_residual": None, "seed": seed,
                "enclosure": None, "certified": False}
     try:
         certified = False
@@ -305,14 +299,14 @@ def _numeric(verdict: str, detail: str, rels: list[Rel], decisive: bool, model: 
             b = numeric_backing(rels, model, seed)
             numeric.update(points=b.points, digits=b.digits, max_residual=b.max_residual,
                            enclosure=None if b.enclosure is None else round_up(b.enclosure))
-            certified = b.certified and b.points >= NUMERIC_POINTS
+            certified = b.certified and b.points >= ENGINE.numeric_points
             if verdict in ("verified", "definition", "does-not-hold") and decisive:
-                if b.points < NUMERIC_POINTS:
+                if b.points < ENGINE.numeric_points:
                     verdict, detail = "undecided", f"numeric check reached only {b.points} points"
                 elif b.excluded is not None:
                     verdict = "undecided"
                     detail = f"numeric check disagrees: the residual ball {b.excluded} excludes 0"
-                elif b.enclosure > AGREE_TOL:
+                elif b.enclosure > ENGINE.agree_tol:
                     verdict = "undecided"
                     detail = (f"numeric check too wide: residual enclosed within "
                               f"{round_up(b.enclosure):.1e} at {b.digits} digits")
@@ -344,7 +338,7 @@ def _printed_numeric(verdict, detail, numeric, bad_rel, bad, model, seed):
     excludes, ball, digits = bad.ball
     numeric.update(printed_residual=pb.max_residual, printed_enclosure=ball,
                    digits=max(numeric["digits"], pb.digits, digits))
-    if verdict == "does-not-hold" and pb.max_residual < DIFFER_TOL:
+    if verdict == "does-not-hold" and pb.max_residual < ENGINE.differ_tol:
         verdict, detail = "undecided", "numeric check finds the printed form holding"
     elif verdict == "does-not-hold" and not excludes:
         verdict = "undecided"

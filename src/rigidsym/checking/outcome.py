@@ -48,7 +48,7 @@ class Outcome:
     #: read from the verdict cache (a run field, like ``seconds``: not in written reports)
     cached: bool = False
     #: for a does-not-hold, the verified repairs of its failing members (schema-2 records,
-    #: :func:`rigidsym.checking.repairing.records.repair_record`), at most ``repair.KEEP``
+    #: :func:`rigidsym.checking.repairing.records.repair_record`), at most ``ENGINE.keep``
     #: per member
     repairs: list[dict] = field(default_factory=list)
     #: what the repair search tried per failing member, and in words what it found

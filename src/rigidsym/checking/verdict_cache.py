@@ -47,6 +47,7 @@ from rigidsym.core import cache as _cache
 from rigidsym.core import config as _config
 from rigidsym.core import sources as _sources
 from rigidsym.core.files import write_atomic_bytes
+from rigidsym.core.settings import ENGINE
 from rigidsym.registry import usermodules
 from rigidsym.registry.declarations import REGISTRY, Equation, is_user_id
 
@@ -68,19 +69,16 @@ _environment = _sources.environment
 
 
 def _settings() -> str:
-    """The engine's settings as they are now (a test or a user may have changed them)."""
-    from rigidsym.checking import checker
-    from rigidsym.checking.deciding import balls
-    from rigidsym.checking.repairing import fasteval, repair
+    """The engine's settings as they are now (a test or a user may have changed them): every
+    field of :data:`rigidsym.core.settings.ENGINE`, and the constants of the algorithms that
+    stay in their modules (the Schwartz-Zippel sample set, the fast filter's modulus)."""
+    from rigidsym.checking.repairing import fasteval
     from rigidsym.zero import decide
 
-    names = {decide: ("SAMPLE_SET_SIZE", "CANCEL_NODE_LIMIT", "CANCEL_TERMS_LIMIT",
-                      "CANCEL_PRODUCT_LIMIT", "CANCEL_SECONDS", "SZ_POINTS"),
-             balls: ("NUMERIC_DIGITS", "NUMERIC_POINTS", "MAX_DIGITS", "CERTIFIED_BOUND"),
-             checker: ("AGREE_TOL", "DIFFER_TOL"),
-             repair: ("REPAIR_BUDGET", "KEEP", "FULL_TESTS"), fasteval: ("PRIME",)}
-    return json.dumps({f"{m.__name__}.{n}": str(getattr(m, n, None))
-                       for m, ns in names.items() for n in ns}, sort_keys=True)
+    values = {f.name: str(getattr(ENGINE, f.name)) for f in fields(ENGINE)}
+    values |= {"zero.decide.SAMPLE_SET_SIZE": str(decide.SAMPLE_SET_SIZE),
+               "repairing.fasteval.PRIME": str(fasteval.PRIME)}
+    return json.dumps(values, sort_keys=True)
 
 
 @cache

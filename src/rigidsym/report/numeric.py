@@ -4,7 +4,7 @@ show``, the Markdown and the HTML reports print (from the record's ``numeric`` f
 
 from __future__ import annotations
 
-from rigidsym.checking.deciding.balls import NUMERIC_DIGITS, NUMERIC_POINTS
+from rigidsym.core.settings import ENGINE
 from rigidsym.report.record import RESIDUAL_FLOOR
 
 __all__ = ["numeric_sentence"]
@@ -48,11 +48,11 @@ def numeric_sentence(n: dict, usual_stated: bool = False) -> str:
         parts.append(f"{whose} enclosed in [−r, r] at {n['points']} points, "
                      f"r ≤ {_bound(n['enclosure'])}")
     how = [] if usual_stated else [f"seed {n['seed']}"]
-    if not usual_stated or n["digits"] != NUMERIC_DIGITS:
+    if not usual_stated or n["digits"] != ENGINE.numeric_digits:
         raised = " (precision raised where a ball was too wide)" \
-            if n["digits"] > NUMERIC_DIGITS else ""
+            if n["digits"] > ENGINE.numeric_digits else ""
         how.append(f"{n['digits']} digits{raised}")
-    if usual_stated and n["points"] != NUMERIC_POINTS:
+    if usual_stated and n["points"] != ENGINE.numeric_points:
         how.append(f"{n['points']} points")
     verdict = "certified" if n.get("certified") else "not certified"
     head = "Numeric backing (ball arithmetic" + (f", {', '.join(how)}" if how else "") + ")"

@@ -17,7 +17,7 @@ Method (never ``simplify()``, never floating point):
 3. **Exact cancellation** (``exact-cancel``): compute the rational function as a fraction
    of FLINT polynomials (python-flint ``fmpq_mpoly``, common factors removed by FLINT's
    multivariate gcd); zero iff the numerator is 0. Attempted within a work budget on the
-   sizes of the polynomials (:data:`CANCEL_TERMS_LIMIT`), not on time.
+   sizes of the polynomials (``ENGINE.cancel_terms_limit``), not on time.
 4. **Schwartz-Zippel** (``random-exact``): for expressions past that budget, a bound
    ``d`` on the total degree of the numerator is computed from the expression tree, and the
    expression is evaluated exactly at ``n`` independent points drawn uniformly from a set
@@ -38,6 +38,7 @@ from fractions import Fraction
 import flint
 import sympy as sp
 
+from rigidsym.core.settings import ENGINE
 from rigidsym.zero.exact import degree_bound, evaluate, to_rational, tree_size
 from rigidsym.zero.plan import Plan, Unsupported, make_plan
 from rigidsym.zero.program import Program, TooLarge, parametrised, run_exact, run_rational
@@ -58,19 +59,7 @@ __all__ = [
 #: |S| of the Schwartz-Zippel sample set: k / 2^16 for integers |k| <= 2^31.
 SAMPLE_SET_SIZE = 2**32 + 1
 _DEN = 2**16
-#: Node-count limit above which exact cancellation is not attempted.
-CANCEL_NODE_LIMIT = 2500
-#: The work budget of exact cancellation, on the data (so the method recorded does not
-#: depend on the machine): no intermediate numerator or denominator may exceed this many
-#: terms, and no product this many pairs of terms (FLINT then decides in about a second at
-#: most); past it, Schwartz-Zippel decides. Measured on the chapter (python-flint 0.9):
-#: at most 44,924 terms and 3.3e7 pairs, every family cancels, 5.9 s in all.
-CANCEL_TERMS_LIMIT = 200_000
-CANCEL_PRODUCT_LIMIT = 2 * 10**8
-#: Safety net only (CPU seconds; not reached on the chapter): then Schwartz-Zippel decides.
-CANCEL_SECONDS = 5.0
-#: Points evaluated by the Schwartz-Zippel path.
-SZ_POINTS = 12
+# the budgets of exact cancellation and the Schwartz-Zippel points: rigidsym.core.settings
 
 
 
@@ -119,13 +108,13 @@ def _cancel_within_budget(prog: Program, plan: Plan) -> list[int] | None:
     old = signal.signal(signal.SIGVTALRM, on_alarm) if timed else None
     try:
         if timed:
-            signal.setitimer(signal.ITIMER_VIRTUAL, CANCEL_SECONDS)
+            signal.setitimer(signal.ITIMER_VIRTUAL, ENGINE.cancel_seconds)
         if not plan.params:  # constants: their exact values decide
             return [i for i, v in enumerate(run_exact(prog, [])) if v != 0]
         # positional names: two parameters may print alike
         ctx = flint.fmpq_mpoly_ctx.get([f"x{i}" for i in range(len(plan.params))],
                                        "degrevlex")
-        out = run_rational(prog, ctx, CANCEL_TERMS_LIMIT, CANCEL_PRODUCT_LIMIT)
+        out = run_rational(prog, ctx, ENGINE.cancel_terms_limit, ENGINE.cancel_product_limit)
         return [i for i, (num, _) in enumerate(out) if not num.is_zero()]
     except (_OutOfTime, TooLarge):
         return None
@@ -207,7 +196,7 @@ def decide_zero(entries, seed: int = 0, probes: int = 2, plan: Plan | None = Non
         if hit is not None:
             return ZeroResult(False, "counterexample", "non-zero at an exact rational point",
                               hit[0], hit[1], plan)
-        if all(tree_size(e, CANCEL_NODE_LIMIT) <= CANCEL_NODE_LIMIT for e in entries):
+        if all(tree_size(e, ENGINE.cancel_node_limit) <= ENGINE.cancel_node_limit for e in entries):
             nonzero = _cancel_within_budget(prog, plan)
         else:
             nonzero = None
@@ -223,11 +212,11 @@ def decide_zero(entries, seed: int = 0, probes: int = 2, plan: Plan | None = Non
                               f"numerators cancel to 0 over Q({len(plan.params)} parameters)",
                               plan=plan)
         d = max(degree_bound(e, plan) for e in entries)  # raises for |x| and roots
-        hit = probe(SZ_POINTS)
+        hit = probe(ENGINE.sz_points)
         if hit is not None:
             return ZeroResult(False, "counterexample", "non-zero at an exact rational point",
                               hit[0], hit[1], plan)
-        n = SZ_POINTS + probes
+        n = ENGINE.sz_points + probes
         prob = sp.Rational(d, SAMPLE_SET_SIZE) ** n
         return ZeroResult(True, "random-exact",
                           f"Schwartz-Zippel: degree <= {d}, |S| = 2^32+1, {n} points, "

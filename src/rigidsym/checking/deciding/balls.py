@@ -7,12 +7,12 @@ arithmetic (python-flint ``arb``) at seeded points that satisfy the constraints 
 Every operation returns a ball that is guaranteed to contain the true value, so
 
 - a verified relation gets a certified enclosure: every entry's relative residual at every
-  point lies in ``[-r, r]`` (:data:`CERTIFIED_BOUND` is the bound a record calls certified);
+  point lies in ``[-r, r]`` (``ENGINE.certified_bound`` is the bound a record calls certified);
 - a does-not-hold gets "0 is not in the residual's ball at the counterexample", a proof of
   the failure independent of the exact one.
 
 Where a ball is too wide to say either, the working precision doubles (from
-:data:`NUMERIC_DIGITS` up to :data:`MAX_DIGITS`) and the record gives the precision used.
+``ENGINE.numeric_digits`` up to ``ENGINE.max_digits``) and the record gives the precision used.
 The expressions are translated once into a program with shared subexpressions
 (:func:`rigidsym.zero.program.unparametrised`); nothing prints or compiles source code.
 """
@@ -30,6 +30,7 @@ from flint import arb, fmpq
 from sympy.core.function import AppliedUndef
 
 from rigidsym.algebra.symbols import constraint_of
+from rigidsym.core.settings import ENGINE
 from rigidsym.zero.decide import Unsupported, evaluate
 from rigidsym.zero.program import (
     ABS,
@@ -47,17 +48,9 @@ from rigidsym.zero.program import (
     unparametrised,
 )
 
-__all__ = ["NUMERIC_DIGITS", "NUMERIC_POINTS", "MAX_DIGITS", "CERTIFIED_BOUND", "Backing",
-           "run_balls", "backing", "ball_at", "bits_of", "flint_version"]
+__all__ = ["Backing", "run_balls", "backing", "ball_at", "bits_of", "flint_version"]
 
-#: starting precision, decimal digits
-NUMERIC_DIGITS = 50
-#: constraint-satisfying points per backing
-NUMERIC_POINTS = 10
-#: the precision never rises above this many digits (then the ball stays undecided)
-MAX_DIGITS = 800
-#: a backing is certified when every relative residual is enclosed in [-r, r], r <= this
-CERTIFIED_BOUND = Fraction(1, 10**40)
+# the precision, points and certified bound of a backing: rigidsym.core.settings
 
 
 def flint_version() -> str:
@@ -219,7 +212,7 @@ class Backing:
     Attributes:
         points: points evaluated (the singular ones skipped).
         digits: the highest working precision used, decimal digits (above
-            :data:`NUMERIC_DIGITS` where a ball was too wide at first).
+            ``ENGINE.numeric_digits`` where a ball was too wide at first).
         max_residual: the largest relative residual at the balls' midpoints (an estimate).
         enclosure: a certified bound: every entry's relative residual at every point lies
             in ``[-enclosure, enclosure]`` (exact rational; ``None`` with no point).
@@ -229,7 +222,7 @@ class Backing:
     """
 
     points: int = 0
-    digits: int = NUMERIC_DIGITS
+    digits: int = field(default_factory=lambda: ENGINE.numeric_digits)
     max_residual: float = 0.0
     enclosure: Fraction | None = None
     excluded: str | None = None
@@ -238,18 +231,18 @@ class Backing:
 
     @property
     def certified(self) -> bool:
-        """Enclosed within :data:`CERTIFIED_BOUND` at every one of the points."""
+        """Enclosed within ``ENGINE.certified_bound`` at every one of the points."""
         return (self.excluded is None and self.enclosure is not None
-                and self.enclosure <= CERTIFIED_BOUND)
+                and self.enclosure <= ENGINE.certified_bound)
 
 
 def _at_point(prog: Program, n_left: int, values: list) -> tuple:
     """Residual balls at one point, the precision raised until they decide.
 
     Returns ``(rel_upper, rel_mid, excluded_text, digits)``; ``rel_upper`` is ``None`` when
-    the point is singular (a ball stays non-finite at :data:`MAX_DIGITS`).
+    the point is singular (a ball stays non-finite at ``ENGINE.max_digits``).
     """
-    digits = NUMERIC_DIGITS
+    digits = ENGINE.numeric_digits
     while True:
         with flint.ctx.workprec(bits_of(digits)):
             balls = run_balls(prog, values)
@@ -259,17 +252,18 @@ def _at_point(prog: Program, n_left: int, values: list) -> tuple:
                 scale = max([Fraction(1)] + [lower(b) for b in balls])
                 rel_upper = max((upper(r) for r in res), default=Fraction(0)) / scale
                 out = next((r for r in res if lower(r) > 0), None)
-                if out is not None or rel_upper <= CERTIFIED_BOUND or digits >= MAX_DIGITS:
+                if out is not None or rel_upper <= ENGINE.certified_bound \
+                        or digits >= ENGINE.max_digits:
                     mid = max([Fraction(1)] + [abs(_exact(b.mid())) for b in balls])
                     rel_mid = max((abs(_exact(r.mid())) for r in res), default=Fraction(0))
                     text = out.str(10, radius=True) if out is not None else None
                     return rel_upper, float(rel_mid / mid), text, digits
-        if digits >= MAX_DIGITS:
+        if digits >= ENGINE.max_digits:
             return None, None, None, digits
-        digits = min(2 * digits, MAX_DIGITS)
+        digits = min(2 * digits, ENGINE.max_digits)
 
 
-def backing(lhs: list, rhs: list, plan, seed: int, points: int = NUMERIC_POINTS) -> Backing:
+def backing(lhs: list, rhs: list, plan, seed: int, points: int | None = None) -> Backing:
     """Evaluate ``lhs[i] - rhs[i]`` (explicit scalar expressions) in ball arithmetic at
     ``points`` seeded constraint-satisfying points of ``plan``.
 
@@ -278,7 +272,8 @@ def backing(lhs: list, rhs: list, plan, seed: int, points: int = NUMERIC_POINTS)
         plan: the zero test's plan of those entries (:func:`rigidsym.zero.make_plan`):
             it gives the constrained groups' exact rational points.
         seed: the id's seed; the same seed gives the same points.
-        points: how many points (up to ``20 * points`` draws; singular ones are skipped).
+        points: how many points (up to ``20 * points`` draws; singular ones are skipped);
+            default ``ENGINE.numeric_points``.
 
     Raises:
         Unsupported: for a node with no numeric meaning (an unknown function).
@@ -290,6 +285,7 @@ def backing(lhs: list, rhs: list, plan, seed: int, points: int = NUMERIC_POINTS)
     draw = point_maker(plan)
     out = Backing()
     tries = 0
+    points = ENGINE.numeric_points if points is None else points
     while out.points < points and tries < 20 * points:
         tries += 1
         try:
@@ -306,7 +302,7 @@ def backing(lhs: list, rhs: list, plan, seed: int, points: int = NUMERIC_POINTS)
             continue
         out.points += 1
         out.digits = max(out.digits, digits)
-        out.raised += digits > NUMERIC_DIGITS
+        out.raised += digits > ENGINE.numeric_digits
         out.residuals.append(rel_mid)
         out.max_residual = max(out.max_residual, rel_mid)
         out.enclosure = rel_upper if out.enclosure is None else max(out.enclosure, rel_upper)
@@ -320,7 +316,7 @@ def ball_at(lhs: list, rhs: list, plan, pt: dict) -> tuple[bool, str, int]:
 
     Atoms take the point's exact values; a bare angle takes ``2M atan(tau)``, consistent
     with its cosine and sine. The precision rises until a ball excludes 0 or reaches
-    :data:`MAX_DIGITS`.
+    ``ENGINE.max_digits``.
 
     Returns:
         ``(excludes_zero, ball, digits)``: whether some entry's residual ball excludes 0
@@ -339,7 +335,7 @@ def ball_at(lhs: list, rhs: list, plan, pt: dict) -> tuple[bool, str, int]:
     for a, s in plan.bare.items():
         if a not in plan.angles:
             exact[a] = pt[s]
-    digits = NUMERIC_DIGITS
+    digits = ENGINE.numeric_digits
     while True:
         with flint.ctx.workprec(bits_of(digits)):
             values = []
@@ -355,8 +351,8 @@ def ball_at(lhs: list, rhs: list, plan, pt: dict) -> tuple[bool, str, int]:
                     raise Unsupported(f"no value for atom {a} at the counterexample")
             balls = [b for b in run_balls(prog, values) if b.is_finite()]
             best = max(balls, key=lower, default=None)
-            if best is not None and (lower(best) > 0 or digits >= MAX_DIGITS):
+            if best is not None and (lower(best) > 0 or digits >= ENGINE.max_digits):
                 return lower(best) > 0, best.str(10, radius=True), digits
-            if best is None and digits >= MAX_DIGITS:
+            if best is None and digits >= ENGINE.max_digits:
                 return False, "[non-finite]", digits
-        digits = min(2 * digits, MAX_DIGITS)
+        digits = min(2 * digits, ENGINE.max_digits)

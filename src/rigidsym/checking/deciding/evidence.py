@@ -12,8 +12,6 @@ import sympy as sp
 
 from rigidsym.algebra.symbols import constraint_of
 from rigidsym.checking.deciding.balls import (
-    NUMERIC_DIGITS,
-    NUMERIC_POINTS,
     Backing,
     backing,
     ball_at,
@@ -22,15 +20,15 @@ from rigidsym.checking.deciding.explicit import entries_of, explicit, shape_of
 from rigidsym.registry.declarations import Rel
 from rigidsym.zero.decide import Unsupported, evaluate, make_plan
 
-__all__ = ["NUMERIC_DIGITS", "NUMERIC_POINTS", "numeric_backing", "counterexample_ball"]
+__all__ = ["numeric_backing", "counterexample_ball"]
 
 
 # --------------------------------------------------------------------------- numeric
 def numeric_backing(rels: list[Rel], model: dict, seed: int,
-                    points: int = NUMERIC_POINTS) -> Backing:
+                    points: int | None = None) -> Backing:
     """Ball-arithmetic backing of ``lhs - rhs`` for every relation (same shapes), at
-    ``points`` seeded constraint-satisfying points
-    (:func:`rigidsym.checking.deciding.balls.backing`).
+    ``points`` seeded constraint-satisfying points (default ``ENGINE.numeric_points``,
+    :mod:`rigidsym.core.settings`; :func:`rigidsym.checking.deciding.balls.backing`).
 
     Raises:
         Unsupported: for a node with no numeric meaning.

@@ -13,7 +13,7 @@ hold, whether or not a correction is known. A correction is additional evidence:
 
 The repair search runs for every does-not-hold (``repairs=False`` turns it off); its
 budget is the run's when given, else the declaration's, else
-:data:`rigidsym.checking.repairing.repair.REPAIR_BUDGET`.
+``ENGINE.repair_budget``.
 """
 
 from __future__ import annotations
@@ -26,6 +26,7 @@ from rigidsym.checking.deciding.records import member_record
 from rigidsym.checking.repairing import deadline as deadline_
 from rigidsym.checking.repairing import records as records_
 from rigidsym.checking.repairing import repair
+from rigidsym.core.settings import ENGINE
 from rigidsym.registry.declarations import Rel
 
 __all__ = ["Correction", "RepairSettings", "correct", "budget_of", "CORRECTIONS"]
@@ -51,7 +52,7 @@ def budget_of(eq, settings: RepairSettings) -> int:
     if settings.budget is not None:
         return settings.budget
     own = getattr(eq, "repair_budget", None)
-    return repair.REPAIR_BUDGET if own is None else own
+    return ENGINE.repair_budget if own is None else own
 
 
 @dataclass
@@ -100,7 +101,7 @@ def _search(eq, st, rels, outs, seed, settings, decide) -> tuple[list, list, dic
             for rel in failing:
                 s = repair.search_member(rel, sh, budget, deadline, limit)
                 searches.append(records_.search_record(s, budget))
-                for f in s.found[:repair.KEEP]:
+                for f in s.found[:ENGINE.keep]:
                     partners = _declared_partner(rel.label, len(st.printed),
                                                  st.corrected or [])
                     equal = deadline is None or time.monotonic() < deadline

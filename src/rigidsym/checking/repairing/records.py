@@ -6,7 +6,8 @@ from __future__ import annotations
 import re
 
 from rigidsym.checking.repairing import mutate
-from rigidsym.checking.repairing.repair import FULL_TESTS, KEEP, Found, Search
+from rigidsym.checking.repairing.repair import Found, Search
+from rigidsym.core.settings import ENGINE
 from rigidsym.printing import notation
 from rigidsym.registry.declarations import Rel
 
@@ -57,7 +58,7 @@ def search_record(s: Search, budget: int) -> dict:
     if n:
         kind = "one-edit" if s.depth == 1 else "two-edit"
         words = (f"{n} {kind} repair{'s' if n > 1 else ''} found in {s.candidates} "
-                 f"candidates" + (f" ({KEEP} kept)" if n > KEEP else ""))
+                 f"candidates" + (f" ({ENGINE.keep} kept)" if n > ENGINE.keep else ""))
     elif s.complete:
         words = (f"no repair within 2 edits ({s.candidates} candidates: every single edit "
                  f"and pair of the vocabulary"
@@ -66,7 +67,7 @@ def search_record(s: Search, budget: int) -> dict:
     else:
         words = f"none in the first {s.candidates} candidates"
         if s.stopped == "full tests":
-            words += f" ({FULL_TESTS} full zero tests spent)"
+            words += f" ({ENGINE.full_tests} full zero tests spent)"
         if s.stopped == "time":
             words = (f"search stopped after {s.limit:g} s, {s.candidates} candidates tried "
                      f"(--repair-seconds)")

@@ -14,12 +14,12 @@ tried, single edits first, then pairs. Each candidate is
 4. decided by the full sound zero test (the checker's ``decide_rel``): only a candidate
    decided to hold is a repair, with its method and failure bound.
 
-The search is bounded by a count of candidates (:data:`REPAIR_BUDGET` per member), so its
+The search is bounded by a count of candidates (``ENGINE.repair_budget`` per member), so its
 results do not depend on the machine, and, where the run sets one (``--repair-seconds``,
 issue 52), by a time limit (:mod:`.deadline`), after which it says it stopped and how many
 candidates it tried. It reports every single-edit repair,
 else every two-edit one, sorted by edit kind and then position in the tree, keeps
-:data:`KEEP` and says how many were found; a repaired equation found twice by the same kind
+``ENGINE.keep`` and says how many were found; a repaired equation found twice by the same kind
 of edit (``-Eᵀ = E`` and ``Eᵀ = -E``) counts once (found by two kinds, it is two
 explanations of the slip, and both are reported).
 """
@@ -46,20 +46,15 @@ from rigidsym.checking.repairing.fasteval import (
     differs,
     points_for,
 )
+from rigidsym.core.settings import ENGINE
 from rigidsym.registry.declarations import Rel
 from rigidsym.zero.decide import Unsupported, make_plan
 
-__all__ = ["REPAIR_BUDGET", "KEEP", "FULL_TESTS", "Search", "Found", "Decision", "Shared",
+__all__ = ["Search", "Found", "Decision", "Shared",
            "share",
            "search_member", "book_difference", "same_relation", "trivial"]
 
-#: candidates tried per failing member unless the run or the declaration says otherwise
-REPAIR_BUDGET = 5000
-#: repairs kept per member (the count found is reported too)
-KEEP = 5
-#: full zero tests per member at most (survivors of the fast filter are rare; a member the
-#: filter cannot evaluate would otherwise send every candidate to the full test)
-FULL_TESTS = 40
+# the search's budget, what it keeps and its full tests: rigidsym.core.settings
 
 
 @dataclass
@@ -232,14 +227,15 @@ def share(failing: list[Rel], rels: list[Rel], model: dict, decide: Callable,
     return Shared(rels, model, pl, pts, decide, seed)
 
 
-def search_member(rel: Rel, sh: Shared, budget: int = REPAIR_BUDGET,
+def search_member(rel: Rel, sh: Shared, budget: int | None = None,
                   deadline: float | None = None, limit: float = 0.0) -> Search:
     """Search the repairs of one failing member.
 
     Args:
         rel: the member that does not hold.
         sh: from :func:`share`.
-        budget: the most candidates to try.
+        budget: the most candidates to try (default
+            ``ENGINE.repair_budget``).
         deadline: ``time.monotonic()`` after which the search stops (``None``: none).
         limit: the time limit in seconds, for the words (:func:`search_record`).
 
@@ -247,6 +243,7 @@ def search_member(rel: Rel, sh: Shared, budget: int = REPAIR_BUDGET,
         A :class:`Search`; ``found`` holds the verified repairs in report order.
     """
     s = Search(member=rel.label, limit=limit)
+    budget = ENGINE.repair_budget if budget is None else budget
     ctx = _Ctx(rel, sh, budget, s, T.sides(rel), deadline=deadline)
     if ctx.late():
         return s
@@ -338,7 +335,7 @@ def _verify(ctx: _Ctx, survivors) -> bool:
     for edits in survivors:
         if ctx.late():
             return False
-        if ctx.search.full_tests >= FULL_TESTS:
+        if ctx.search.full_tests >= ENGINE.full_tests:
             ctx.search.stopped = "full tests"
             return False
         try:
