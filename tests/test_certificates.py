@@ -133,7 +133,7 @@ def test_whole_chapter_certified_and_tampering_rejected(tmp_path):
 #: identities issue 49 asks Coq to check: A^T A, its inverse and the inverse's coefficients
 #: (3.13-3.16), a Rodrigues-form rotation (3.1: relative position rotated by
 #: Q = e e^T + cos(phi)(1 - e e^T) + sin(phi) E), Steiner's 3.133a and 3.147 (these by
-#: normal forms, checking/coqnf.py), a rotation along a motion (3.99: the rotation's
+#: normal forms, checking/normal_forms.py), a rotation along a motion (3.99: the rotation's
 #: hypotheses and their derivatives) and a static one (3.51), by the certificate's cofactors;
 #: 3.35, half angles: cos(phi) and sin(phi) rewritten in cos(phi/2), sin(phi/2).
 COQ_IDS = ["3.13", "3.14", "3.15", "3.16", "3.1", "3.133a", "3.147", "3.99", "3.51", "3.35"]
@@ -172,18 +172,18 @@ def test_coq_normal_forms_refuse_a_false_entry():
     abbreviations as Definitions (the file a few kB, not 1.8 MB inlined), and refuses the
     statement with 1/7 added to an entry: its cleared numerator does not reduce to 0
     modulo the unit vector's and the angle's hypotheses."""
-    from rigidsym.checking.certifying import coq_normal_form as coqnf
+    from rigidsym.checking.certifying import coq_normal_form as normal_forms
     from rigidsym.checking.certifying.certificates import certificate
     from rigidsym.checking.certifying.coq import _coq_expr, _divisors
     from rigidsym.registry.declarations import REGISTRY, load_all
 
     load_all()
     cert = certificate("3.14", REGISTRY["3.14"].expected)
-    text = coqnf.reduced_file(cert, _coq_expr, _divisors)
+    text = normal_forms.reduced_file(cert, _coq_expr, _divisors)
     assert text.count("Lemma r0_e") == 9 and len(text) < 60_000
     assert "Definition v_let24 :=" in text
-    with pytest.raises(coqnf.NotReducible, match="does not reduce to 0"):
-        coqnf.reduced_file(certtamper.changed_coefficient(cert), _coq_expr, _divisors)
+    with pytest.raises(normal_forms.NotReducible, match="does not reduce to 0"):
+        normal_forms.reduced_file(certtamper.changed_coefficient(cert), _coq_expr, _divisors)
 
 
 #: ids whose export depended on PYTHONHASHSEED before the atoms, points and book names were
@@ -259,14 +259,14 @@ def test_reports_say_how_each_verdict_is_certified(tmp_path, capsys):
 @given(st.lists(st.integers(-3, 3), min_size=14, max_size=14), st.integers(0, 13),
        st.integers(1, 3))
 def test_rotation_chain_reduces_exactly_the_ideal(coeffs, where, off):
-    """cofrot's triangular set of a rotation along a motion (jets to order 1): a
+    """The triangular set of a rotation along a motion (jets to order 1): a
     combination sum a_i h_i of the checker's 14 hypotheses (7 constraints, their first
     derivatives; a_i small polynomials in the entries and jets) reduces to zero, with
     cofactors that give it back exactly (mult f = sum mu_i h_i); adding a non-zero
     constant leaves a non-zero remainder."""
     import flint
 
-    from rigidsym.checking.certifying import rotation_triangular_set as cofrot
+    from rigidsym.checking.certifying import rotation_triangular_set as triangular
     from rigidsym.checking.certifying.rotation_triangular_set import dpoly
 
     class R:  # the ring of cofactors._Ring: names, index, var, one, zero, gens
@@ -280,13 +280,13 @@ def test_rotation_chain_reduces_exactly_the_ideal(coeffs, where, off):
 
     nxt = {i: i + 9 for i in range(9)}
     names = R.names[:9]
-    H = cofrot.hypotheses(R, names, False)
+    H = triangular.hypotheses(R, names, False)
     hyps = [H[i // 2] if i % 2 == 0 else dpoly(H[i // 2], R, nxt) for i in range(14)]
     f = sum((c * (R.gens[(i + where) % 18] + off) * h
              for i, (c, h) in enumerate(zip(coeffs, hyps, strict=True))), R.zero)
     for extra, zero in ((R.zero, True), (R.one * off, False)):
         mus: dict = {}
-        N, mult = cofrot.pseudo_reduce(f + extra, R, cofrot.rotation_chain(R, names, H),
+        N, mult = triangular.pseudo_reduce(f + extra, R, triangular.rotation_chain(R, names, H),
                                        names, 1, lambda p: dpoly(p, R, nxt), mus, R.one, "Q")
         assert N.is_zero() == zero
         if zero:
@@ -299,14 +299,13 @@ def test_rotation_chain_reduces_exactly_the_ideal(coeffs, where, off):
 @given(st.lists(st.tuples(st.integers(0, 6), st.integers(0, 8), st.integers(-3, 3)),
                 min_size=1, max_size=5), st.integers(1, 4))
 def test_linear_ansatz_finds_combinations_and_nothing_else(terms, off):
-    """cofansatz.linear_combination: for f = sum c * q_v * h_i over a rotation's 7
+    """ansatz.linear_combination: for f = sum c * q_v * h_i over a rotation's 7
     hypotheses and the derived members Q - C(Q), Q Q^T - 1, the cofactors it returns give f
     back exactly; f + a non-zero constant (not in the ideal: it is off SO(3)) gets none."""
     import flint
 
-    from rigidsym.checking.certifying import cofactor_ansatz as cofansatz
-    from rigidsym.checking.certifying import rotation_triangular_set as cofrot
-
+    from rigidsym.checking.certifying import cofactor_ansatz as ansatz
+    from rigidsym.checking.certifying import rotation_triangular_set as triangular
     class R:
         names = [f"Q_{r}{c}" for r in (1, 2, 3) for c in (1, 2, 3)]
         index = {n: i for i, n in enumerate(names)}
@@ -316,11 +315,11 @@ def test_linear_ansatz_finds_combinations_and_nothing_else(terms, off):
         zero = one - one
         var = staticmethod(lambda n: R.gens[R.index[n]])
 
-    H = cofrot.hypotheses(R, R.names, False)
-    extra = cofrot.derived(R, R.names, False, 0, lambda p: p)
+    H = triangular.hypotheses(R, R.names, False)
+    extra = triangular.derived(R, R.names, False, 0, lambda p: p)
     gens = H + [G for G, _ in extra]
     f = sum((c * R.gens[v] * H[i] for i, v, c in terms), R.zero)
-    mus = cofansatz.linear_combination(f, gens, 1, 4000)
+    mus = ansatz.linear_combination(f, gens, 1, 4000)
     assert mus is not None and f == sum((m * g for m, g in zip(mus, gens, strict=True)),
                                         R.zero)
-    assert cofansatz.linear_combination(f + off, gens, 1, 4000) is None
+    assert ansatz.linear_combination(f + off, gens, 1, 4000) is None

@@ -58,8 +58,8 @@ def mixed_products(t):
     groups them from the left, as ``(a \\cdot b) \\times c``, which TeX does not say. Such
     a chain of two becomes ``dot_cross`` (``cross_dot`` for ``a \\times b \\cdot c``) with
     its three operands, which the transformer reads by the shapes
-    (:meth:`rigidsym.latex.transformer.book_notations.BookRules.dot_cross`); a longer chain mixing
-    them is refused (its groupings are not enumerated). Then the marks of the parentheses
+    (:meth:`rigidsym.latex.transformer.book_notations.BookNotationRules.dot_cross`); a longer
+    chain mixing them is refused (its groupings are not enumerated). Then the marks of the parentheses
     (``paren``) are dropped: the tree is the grammar's as before. In place; returns ``t``."""
     from rigidsym.latex.shapes import LatexError
 
@@ -74,7 +74,7 @@ def mixed_products(t):
             node = node.children[0]
         ops = [n.data for n in reversed(spine)]
         if ops == ["dot"] * len(ops) and len(ops) > 1:   # a \cdot b \cdot c: by the shapes
-            sub.data = "dot_chain"                      # (BookRules.dot_chain)
+            sub.data = "dot_chain"                      # (BookNotationRules.dot_chain)
             sub.children = [node, *(n.children[1] for n in reversed(spine))]
             continue
         if len(set(ops)) < 2:

@@ -99,7 +99,8 @@ def linear_combination(f, hyps: list, rounds: int = 2, limit: int = 1500):
 def hypothesis_polys(R, atoms: list, keys: list, M: dict, d, rotation_hyps) -> list:
     """The checker's hypotheses named by ``keys`` (``(group, k)`` of a unit vector,
     ``(group, h, k)`` of a rotation or transform, ``("angle", a)``) as polynomials of the
-    ring ``R`` (``d`` its time derivative, ``rotation_hyps`` :func:`cofrot.hypotheses`)."""
+    ring ``R`` (``d`` its time derivative, ``rotation_hyps``
+    :func:`.rotation_triangular_set.hypotheses`)."""
     groups = {g["group"]: g for g in atoms}
     out = []
     for key in keys:

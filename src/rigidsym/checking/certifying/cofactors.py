@@ -29,8 +29,8 @@ import flint
 import sympy as sp
 from sympy.core.function import AppliedUndef
 
-from rigidsym.checking.certifying import cofactor_ansatz as cofansatz
-from rigidsym.checking.certifying import rotation_triangular_set as cofrot
+from rigidsym.checking.certifying import cofactor_ansatz as ansatz
+from rigidsym.checking.certifying import rotation_triangular_set as triangular
 from rigidsym.checking.deciding.explicit import entries_of
 
 __all__ = ["NoCofactors", "cofactor_evidence", "TERMS_LIMIT", "CHARS_LIMIT"]
@@ -140,14 +140,14 @@ def _reduce_group(N, R: _Ring, g: dict, order: int, nxt: dict, mus: dict, mult):
     h = sum((R.var(n) ** 2 for n in x), -R.one)
     gs = [h]
     for _ in range(order):
-        gs.append(cofrot.dpoly(gs[-1], R, nxt))
+        gs.append(triangular.dpoly(gs[-1], R, nxt))
     last = x[-1]
     for k in range(order, 0, -1):
         i = R.index[last + "'" * k]
         gk = gs[k]
         c = gk.derivative(i)
         d = gk - c * R.gens[i]
-        m, r = cofrot.prem_linear(N, i, c, d)
+        m, r = triangular.prem_linear(N, i, c, d)
         q, rest = divmod(c**m * N - r, gk)
         if not rest.is_zero():
             raise NoCofactors("a pseudo-division left a remainder")
@@ -157,7 +157,7 @@ def _reduce_group(N, R: _Ring, g: dict, order: int, nxt: dict, mus: dict, mult):
         mus[(g["group"], k)] = q
         N = r
     s = R.one - sum((R.var(n) ** 2 for n in x[:-1]), R.zero)
-    r = cofrot.rem_square(N, R.index[last], s)
+    r = triangular.rem_square(N, R.index[last], s)
     q, rest = divmod(N - r, h)
     if not rest.is_zero():
         raise NoCofactors("a division by the unit constraint left a remainder")
@@ -305,7 +305,7 @@ def _unit_of(R: _Ring, atom_name, M: dict):
             k = Fraction(int(c.p), int(c.q)) * M[a]
             if k.denominator != 1:
                 raise NoCofactors("an angle coefficient off its M")
-            w = cofrot.cpow((R.var(f"cos({a}/{M[a]})"), R.var(f"sin({a}/{M[a]})")), int(k), R)
+            w = triangular.cpow((R.var(f"cos({a}/{M[a]})"), R.var(f"sin({a}/{M[a]})")), int(k), R)
             z = (z[0] * w[0] - z[1] * w[1], z[0] * w[1] + z[1] * w[0])
         return z
 
@@ -314,18 +314,18 @@ def _unit_of(R: _Ring, atom_name, M: dict):
 
 def _ansatz(ln, rn, R: _Ring, atoms: list, order: dict, nxt_i: dict, hyps: list,
             M: dict):
-    """``(D, {hypothesis: cofactor})`` by :func:`cofansatz.linear_combination` (no
+    """``(D, {hypothesis: cofactor})`` by :func:`cofactor_ansatz.linear_combination` (no
     multiplier: ``D`` is the entry's denominator) for a relation on a rotation or transform;
     ``None`` otherwise or when the ansatz finds none."""
     if not any(g["kind"] in _CHAINS and g["group"] in order for g in atoms):
         return None
     N, Q = _reduce((ln[0] * rn[1] - rn[0] * ln[1], ln[1] * rn[1]))
-    d = lambda p: cofrot.dpoly(p, R, nxt_i)  # noqa: E731
-    polys = cofansatz.hypothesis_polys(R, atoms, hyps, M, d, cofrot.hypotheses)
+    d = lambda p: triangular.dpoly(p, R, nxt_i)  # noqa: E731
+    polys = ansatz.hypothesis_polys(R, atoms, hyps, M, d, triangular.hypotheses)
     extra = [(g["group"], G, cof) for g in atoms if g["kind"] in _CHAINS and g["group"] in order
-             for G, cof in cofrot.derived(R, g["names"], g["kind"] == "transform",
+             for G, cof in triangular.derived(R, g["names"], g["kind"] == "transform",
                                           order[g["group"]], d)]
-    mus = cofansatz.linear_combination(N, polys + [G for _, G, _ in extra], 1, 4000)
+    mus = ansatz.linear_combination(N, polys + [G for _, G, _ in extra], 1, 4000)
     if mus is None:
         return None
     out = dict(zip(hyps, mus[:len(hyps)], strict=True))
@@ -346,19 +346,19 @@ def _entry_cofactors(ln, rn, R: _Ring, atoms: list, order: dict, nxt_i: dict,
         if g["kind"] in _UNITS and g["group"] in order:
             N, mult = _reduce_group(N, R, g, order[g["group"]], nxt_i, mus, mult)
         elif g["kind"] in _CHAINS and g["group"] in order:
-            H = cofrot.hypotheses(R, g["names"], g["kind"] == "transform")
-            chain = (cofrot.transform_chain if g["kind"] == "transform" else
-                     cofrot.rotation_chain)(R, g["names"], H)
+            H = triangular.hypotheses(R, g["names"], g["kind"] == "transform")
+            chain = (triangular.transform_chain if g["kind"] == "transform" else
+                     triangular.rotation_chain)(R, g["names"], H)
             try:
-                N, mult = cofrot.pseudo_reduce(N, R, chain, g["names"], order[g["group"]],
-                                               lambda p: cofrot.dpoly(p, R, nxt_i), mus, mult,
+                N, mult = triangular.pseudo_reduce(N, R, chain, g["names"], order[g["group"]],
+                                               lambda p: triangular.dpoly(p, R, nxt_i), mus, mult,
                                                g["group"], (TERMS_LIMIT, deadline))
-            except cofrot.ChainRemainder as exc:
+            except triangular.ChainRemainder as exc:
                 raise NoCofactors(str(exc)) from None
     for a_ in angle_names:
         C, S = R.var(f"cos({a_}/{M[a_]})"), R.var(f"sin({a_}/{M[a_]})")
         h = C**2 + S**2 - R.one
-        r = cofrot.rem_square(N, R.index[f"sin({a_}/{M[a_]})"], R.one - C**2)
+        r = triangular.rem_square(N, R.index[f"sin({a_}/{M[a_]})"], R.one - C**2)
         q, rest = divmod(N - r, h)
         if not rest.is_zero():
             raise NoCofactors("a division by cos^2 + sin^2 - 1 left a remainder")

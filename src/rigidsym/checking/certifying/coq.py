@@ -28,7 +28,7 @@ from pathlib import Path
 
 import sympy as sp
 
-from rigidsym.checking.certifying import coq_normal_form as coqnf
+from rigidsym.checking.certifying import coq_normal_form
 
 __all__ = ["NoProof", "coq_file", "prove"]
 
@@ -161,7 +161,7 @@ def coq_file(cert: dict, normal_forms: bool = True) -> str:
             "Require Import Reals Lra Field.\nOpen Scope R_scope.\n")
     if normal_forms and any(r["evidence"]["type"] == "cofactors" for r in cert["relations"]):
         try:  # unit vectors and angles: normal forms, the statement as small as the JSON
-            return head + coqnf.reduced_file(cert, _coq_expr, _divisors)
+            return head + coq_normal_form.reduced_file(cert, _coq_expr, _divisors)
         except (ValueError, KeyError, TypeError, SyntaxError, ZeroDivisionError):
             pass  # the certificate's cofactors below (a NoProof is a ValueError)
     lets: dict = {}

@@ -12,11 +12,11 @@ declaration vocabulary, one class, :class:`rigidsym.latex.transformer.chapter.La
   LaTeX (``MeaningRules``): a symbol applied to an argument or a product, ``[x]`` as a
   cross-product matrix, a sized identity or zero;
 - :mod:`~rigidsym.latex.transformer.rigid_motions`: the vocabulary of rigid motions as
-  Modern Robotics and Murray-Li-Sastry write it (``VocabRules``: ``e^X``, ``\\log``,
+  Modern Robotics and Murray-Li-Sastry write it (``RigidMotionRules``: ``e^X``, ``\\log``,
   ``[x]``, ``\\mathrm{Ad}``, ``\\frac{dX}{d\\theta}`` ...);
 - :mod:`~rigidsym.latex.transformer.book_notations`: the other books' notations
-  (``BookRules``: ``^\\wedge``, ``^\\vee``, Featherstone's ``\\times^*``, frame indices,
+  (``BookNotationRules``: ``^\\wedge``, ``^\\vee``, Featherstone's ``\\times^*``, frame indices,
   norms, ``\\operatorname{diag}``, trailing declarations);
 - :mod:`~rigidsym.latex.transformer.products`: products written without parentheses,
-  read by their shapes (functions ``BookRules`` calls).
+  read by their shapes (functions ``BookNotationRules`` calls).
 """

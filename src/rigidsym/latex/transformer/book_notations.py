@@ -1,6 +1,6 @@
 """The notations of the field's books in a reader's LaTeX (issue 40, item 3): transformer
 rules of ``grammar.lark`` for constructs the chapter does not print, each read onto a word
-of :mod:`rigidsym.declare` (never re-implemented here): :class:`BookRules`, a mixin of the
+of :mod:`rigidsym.declare` (never re-implemented here): :class:`BookNotationRules`, a mixin of the
 LaTeX transformer :class:`rigidsym.latex.transformer.chapter.LatexTransformer`.
 
 ==========================================================  ====================================
@@ -45,7 +45,7 @@ from rigidsym.latex.shapes import (
     shape_words,
 )
 from rigidsym.latex.table import Glyph
-from rigidsym.latex.transformer import products as chains
+from rigidsym.latex.transformer import products
 
 __all__: list[str] = []
 
@@ -88,7 +88,7 @@ def free_symbols_of(v) -> set:
     return set(v.atoms(sp.MatrixSymbol)) | set(v.atoms(sp.Symbol))
 
 
-class BookRules:
+class BookNotationRules:
     """Transformer rules of the books' constructs (a mixin of ``LatexTransformer``,
     which provides ``_val``, ``_note``, ``glyphs``, ``overrides``, ``readings`` and ``made``)."""
 
@@ -160,13 +160,13 @@ class BookRules:
     def dot_cross(self, items):
         """``x \\cdot y \\times z`` (Goldstein's, Kane's triple product), by the shapes
         (rigidsym.latex.transformer.products, as the two below)."""
-        return chains.mixed(self, items, "dot")
+        return products.mixed(self, items, "dot")
 
     def cross_dot(self, items):
-        return chains.mixed(self, items, "cross")
+        return products.mixed(self, items, "cross")
 
     def dot_chain(self, items):
-        return chains.dot_chain(self, items)
+        return products.dot_chain(self, items)
 
     def cross_dual(self, items):
         a, b = (self._val(i) for i in _content(items))

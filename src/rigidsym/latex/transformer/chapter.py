@@ -35,15 +35,16 @@ from rigidsym.latex.shapes import (
     size_identity,
 )
 from rigidsym.latex.table import Glyph, lookup
-from rigidsym.latex.transformer.book_notations import BookRules, sup_word
+from rigidsym.latex.transformer.book_notations import BookNotationRules, sup_word
 from rigidsym.latex.transformer.glyphs import TIME, GlyphKey, GlyphRules
 from rigidsym.latex.transformer.meanings import MeaningRules
-from rigidsym.latex.transformer.rigid_motions import VocabRules
+from rigidsym.latex.transformer.rigid_motions import RigidMotionRules
 
 __all__ = ["LatexError", "Relation", "Parsed", "parser"]
 
 
-class LatexTransformer(GlyphRules, MeaningRules, VocabRules, BookRules, lark.Transformer):
+class LatexTransformer(GlyphRules, MeaningRules, RigidMotionRules, BookNotationRules,
+                       lark.Transformer):
     """Tree -> sympy, in the declaration vocabulary (module docstring); ``reader``: a
     reader's LaTeX, ``[x]`` of a vector its hat (:mod:`rigidsym.latex.transformer.rigid_motions`),
     ``I`` the identity (:mod:`rigidsym.latex.transformer.meanings`); the glyphs' rules are

@@ -34,7 +34,8 @@ class GlyphRules:
     """Transformer rules of the glyphs (a mixin of ``LatexTransformer``, which provides
     ``section``, ``overrides``, ``glyphs``, ``readings``, and the rules it calls:
     ``_sized`` and ``sized_zero`` of :class:`~rigidsym.latex.transformer.meanings.MeaningRules`,
-    ``timed`` and ``velocity`` of :class:`~rigidsym.latex.transformer.book_notations.BookRules`)."""
+    ``timed`` and ``velocity`` of
+    :class:`~rigidsym.latex.transformer.book_notations.BookNotationRules`)."""
 
     def base(self, items):
         if len(items) == 2:

@@ -4,7 +4,7 @@ chain of ``\\cdot`` (``a \\cdot b \\cdot c``). The grammar groups a chain from t
 which TeX does not say; :func:`rigidsym.latex.rewrites.mixed_products` marks such chains and
 these functions, a part of the LaTeX transformer
 (:class:`rigidsym.latex.transformer.chapter.LatexTransformer`) called by its
-:class:`~rigidsym.latex.transformer.book_notations.BookRules` with the transformer ``r``
+:class:`~rigidsym.latex.transformer.book_notations.BookNotationRules` with the transformer ``r``
 (its ``_val``, ``dot``, ``cross``, ``readings`` and ``_note``), read every grouping, keep
 the ones whose shapes fit, and refuse where those differ: never one of them by hope. Such a
 refusal is of construct ``grouping``: its fix is parentheses, so the reader neither retries

@@ -1,6 +1,6 @@
 """The vocabulary of rigid motions in a reader's LaTeX (issue 29 on issue 28's words): the
 spellings of Lynch & Park, *Modern Robotics* (MR) and Murray, Li & Sastry (MLS), each read
-onto a word of :mod:`rigidsym.declare` (never re-implemented here): :class:`VocabRules`, a
+onto a word of :mod:`rigidsym.declare` (never re-implemented here): :class:`RigidMotionRules`, a
 mixin of the LaTeX transformer :class:`rigidsym.latex.transformer.chapter.LatexTransformer`.
 
 =================================================  ==========================================
@@ -40,7 +40,7 @@ def _content(items):
     return [i for i in items if not isinstance(i, lark.Token)]
 
 
-class VocabRules:
+class RigidMotionRules:
     """Transformer rules of the ``vocab`` productions of ``grammar.lark`` (a mixin of
     ``LatexTransformer``, which provides ``_resolve``, ``_val``, ``glyphs``, ``readings``,
     ``made``, ``func`` and ``power``)."""
