@@ -59,8 +59,9 @@ def mixed_products(t):
     a chain of two becomes ``dot_cross`` (``cross_dot`` for ``a \\times b \\cdot c``) with
     its three operands, which the transformer reads by the shapes
     (:meth:`rigidsym.latex.transformer.book_notations.BookNotationRules.dot_cross`); a longer
-    chain mixing them is refused (its groupings are not enumerated). Then the marks of the parentheses
-    (``paren``) are dropped: the tree is the grammar's as before. In place; returns ``t``."""
+    chain mixing them is refused (its groupings are not enumerated). Then the marks of the
+    parentheses (``paren``) are dropped: the tree is the grammar's as before. In place;
+    returns ``t``."""
     from rigidsym.latex.shapes import LatexError
 
     seen: set[int] = set()
