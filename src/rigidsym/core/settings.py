@@ -2,7 +2,7 @@
 precision and points, the checker's agreement tolerances and the repair search's budget.
 
 Each verdict depends on these values, so the verdict cache keys every stored result on all
-of them (:func:`rigidsym.checking.verdict_cache.cache_key`): a test or a user who changes one
+of them (:func:`rigidsym.checking.verdict_cache.key_of`): a test or a user who changes one
 (``ENGINE.numeric_points = 11``) gets results computed under it, never one stored under
 another. The engine reads :data:`ENGINE` at each use, not at import.
 

@@ -117,7 +117,7 @@ class _Builder:
 # --------------------------------------------------------------------------- exact
 def _cis(b: _Builder, tau: int, k: int) -> tuple[int, int]:
     """Slots of (cos(2k atan tau), sin(2k atan tau)): ((1 + i tau)^2 / (1 + tau^2))^k, as
-    :func:`rigidsym.exact._cis` computes them."""
+    :mod:`rigidsym.zero.exact` computes them."""
     one = b.const(1)
     t2 = b.mul(tau, tau)
     d = b.add(one, t2)
@@ -183,7 +183,7 @@ def parametrised(exprs, plan: Plan) -> Program:
 
     Raises:
         Unsupported: for an atom without a rule or a node the exact evaluator cannot treat
-            (the same cases as :func:`rigidsym.exact.evaluate`).
+            (the same cases as :func:`rigidsym.zero.exact.evaluate`).
     """
     b = _Builder()
     for p in plan.params:
@@ -283,7 +283,7 @@ def run_exact(prog: Program, point: list) -> list:
 
 
 def _root(v, p: int, q: int):
-    """``v^(p/q)`` when it is rational (as :func:`rigidsym.exact._rational_root`)."""
+    """``v^(p/q)`` when it is rational (as :func:`rigidsym.zero.exact.rational_root`)."""
     from rigidsym.zero.exact import rational_root
 
     r = rational_root(Fraction(int(v.p), int(v.q)), p, q)
