@@ -242,7 +242,7 @@ def _jvp(e_0, e_1, e_2, phi, omega_0, omega_1, omega_2, _t0, _t1, _t2, _t3, _t4,
     )
 
 
-#: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.vjp), None without a
+#: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.derivatives.vjp), None without a
 #: generated Jacobian
 VJP, JVP = _vjp, _jvp
 #: whether ``_main`` divides (without a denominator no sample is singular: the runtime

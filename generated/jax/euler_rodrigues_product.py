@@ -66,7 +66,7 @@ def _jvp(eta1_0, eta1_1, eta1_2, eta1_3, eta2_0, eta2_1, eta2_2, eta2_3, _t0, _t
     )
 
 
-#: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.vjp), None without a
+#: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.derivatives.vjp), None without a
 #: generated Jacobian
 VJP, JVP = _vjp, _jvp
 #: whether ``_main`` divides (without a denominator no sample is singular: the runtime

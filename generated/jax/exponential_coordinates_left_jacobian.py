@@ -333,7 +333,7 @@ def _jvp(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5, _t0, _t1, _t2, _t3, _t4, _t5):
     )
 
 
-#: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.vjp), None without a
+#: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.derivatives.vjp), None without a
 #: generated Jacobian
 VJP, JVP = _vjp, _jvp
 #: whether ``_main`` divides (without a denominator no sample is singular: the runtime

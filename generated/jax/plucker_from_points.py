@@ -168,7 +168,7 @@ def _jvp(p1_0, p1_1, p1_2, p2_0, p2_1, p2_2, _t0, _t1, _t2, _t3, _t4, _t5):
     )
 
 
-#: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.vjp), None without a
+#: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.derivatives.vjp), None without a
 #: generated Jacobian
 VJP, JVP = _vjp, _jvp
 #: whether ``_main`` divides (without a denominator no sample is singular: the runtime

@@ -101,7 +101,7 @@ def _jvp(a_ddot_0, a_ddot_1, a_ddot_2, omega_0, omega_1, omega_2, omega_dot_0, o
     )
 
 
-#: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.vjp), None without a
+#: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.derivatives.vjp), None without a
 #: generated Jacobian
 VJP, JVP = _vjp, _jvp
 #: whether ``_main`` divides (without a denominator no sample is singular: the runtime

@@ -273,7 +273,7 @@ def _jvp(e_0, e_1, e_2, phi, a_0, a_1, a_2, a_prime_0, a_prime_1, a_prime_2, _t0
     )
 
 
-#: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.vjp), None without a
+#: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.derivatives.vjp), None without a
 #: generated Jacobian
 VJP, JVP = _vjp, _jvp
 #: whether ``_main`` divides (without a denominator no sample is singular: the runtime

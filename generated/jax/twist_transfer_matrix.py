@@ -137,7 +137,7 @@ def _jvp(a_0, a_1, a_2, p_0, p_1, p_2, _t0, _t1, _t2, _t3, _t4, _t5):
     )
 
 
-#: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.vjp), None without a
+#: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.derivatives.vjp), None without a
 #: generated Jacobian
 VJP, JVP = _vjp, _jvp
 #: whether ``_main`` divides (without a denominator no sample is singular: the runtime

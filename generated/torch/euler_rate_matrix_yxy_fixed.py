@@ -121,7 +121,7 @@ def _vjp_saved(angles_0, angles_1, angles_2, x0, x1, x2, _g0, _g1, _g2, _g3, _g4
 SAVED = (_main_saved, _vjp_saved)
 
 
-#: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.vjp), None without a
+#: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.derivatives.vjp), None without a
 #: generated Jacobian
 VJP, JVP = _vjp, _jvp
 #: whether ``_main`` divides (without a denominator no sample is singular: the runtime

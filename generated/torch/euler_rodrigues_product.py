@@ -95,7 +95,7 @@ def _vjp_saved(eta1_0, eta1_1, eta1_2, eta1_3, eta2_0, eta2_1, eta2_2, eta2_3, _
 SAVED = (_main_saved, _vjp_saved)
 
 
-#: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.vjp), None without a
+#: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.derivatives.vjp), None without a
 #: generated Jacobian
 VJP, JVP = _vjp, _jvp
 #: whether ``_main`` divides (without a denominator no sample is singular: the runtime

@@ -304,7 +304,7 @@ def _vjp_saved(o_ddot_0, o_ddot_1, o_ddot_2, Q_00, Q_01, Q_02, Q_10, Q_11, Q_12,
 SAVED = (_main_saved, _vjp_saved)
 
 
-#: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.vjp), None without a
+#: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.derivatives.vjp), None without a
 #: generated Jacobian
 VJP, JVP = _vjp, _jvp
 #: whether ``_main`` divides (without a denominator no sample is singular: the runtime

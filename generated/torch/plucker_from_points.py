@@ -208,7 +208,7 @@ def _vjp_saved(p1_0, p1_1, p1_2, p2_0, p2_1, p2_2, x0, x1, x2, x3, x4, xc0, xc1,
 SAVED = (_main_saved, _vjp_saved)
 
 
-#: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.vjp), None without a
+#: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.derivatives.vjp), None without a
 #: generated Jacobian
 VJP, JVP = _vjp, _jvp
 #: whether ``_main`` divides (without a denominator no sample is singular: the runtime

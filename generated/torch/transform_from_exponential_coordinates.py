@@ -238,7 +238,7 @@ def _vjp_saved(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5, x0, x1, x2, x3, x6, x8, x12, 
 SAVED = (_main_saved, _vjp_saved)
 
 
-#: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.vjp), None without a
+#: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.derivatives.vjp), None without a
 #: generated Jacobian
 VJP, JVP = _vjp, _jvp
 #: whether ``_main`` divides (without a denominator no sample is singular: the runtime

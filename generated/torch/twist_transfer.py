@@ -130,7 +130,7 @@ def _vjp_saved(t_A_0, t_A_1, t_A_2, t_A_3, t_A_4, t_A_5, a_0, a_1, a_2, p_0, p_1
 SAVED = (_main_saved, _vjp_saved)
 
 
-#: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.vjp), None without a
+#: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.derivatives.vjp), None without a
 #: generated Jacobian
 VJP, JVP = _vjp, _jvp
 #: whether ``_main`` divides (without a denominator no sample is singular: the runtime

@@ -202,7 +202,7 @@ def _vjp_saved(a_0, a_1, a_2, p_0, p_1, p_2, _g0, _g1, _g2, _g3, _g4, _g5, _g6, 
 SAVED = (_main_saved, _vjp_saved)
 
 
-#: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.vjp), None without a
+#: the vector-Jacobian and Jacobian-vector products (rigidsym.codegen.derivatives.vjp), None without a
 #: generated Jacobian
 VJP, JVP = _vjp, _jvp
 #: whether ``_main`` divides (without a denominator no sample is singular: the runtime
