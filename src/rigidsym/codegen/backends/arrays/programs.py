@@ -19,6 +19,7 @@ from typing import Any
 
 import sympy as sp
 
+from rigidsym.codegen.backends import environment
 from rigidsym.codegen.backends.printing import ARRAY_SOURCE, is_compensated, uses_diffprod
 from rigidsym.codegen.derivatives.jacobians import has_jacobian
 from rigidsym.codegen.derivatives.vjp import (
@@ -28,8 +29,8 @@ from rigidsym.codegen.derivatives.vjp import (
     vjp_program,
 )
 
-__all__ = ["TEMPLATES", "render_array_kernel", "hoist_compensated", "JAX_TRIG_SOURCE",
-           "JAX_KEEP_SOURCE"]
+__all__ = ["TEMPLATES", "render_array_kernel", "render_array_target", "hoist_compensated",
+           "JAX_TRIG_SOURCE", "JAX_KEEP_SOURCE"]
 
 #: the template both targets print into
 TEMPLATES = Path(__file__).parent / "templates"
@@ -241,3 +242,16 @@ def render_array_kernel(env, kc: Any, header, backend: str, module: str, printer
         header=header(kc, t), backend=backend, module=module, k=kc.kernel, ops=kc.ops,
         hash=kc.hash, columns=columns, variants=variants, vjp=back,
         divides=bool(kc.variants[0].program.dens), helpers="\n\n\n".join(helpers))}
+
+
+def render_array_target(ctx, backend: str, module: str, printer) -> dict[str, str]:
+    """An array target's files of a generation (``{"<backend>/<kernel>.py": text}``): every
+    compiled kernel of ``ctx`` (a :class:`rigidsym.codegen.backends.RenderContext`) printed
+    by a new ``printer()`` into :data:`TEMPLATES`; ``backend`` and ``module`` as in
+    :func:`render_array_kernel`."""
+    env = environment(TEMPLATES)
+    files: dict[str, str] = {}
+    for kc in ctx.kernels:
+        files.update(render_array_kernel(env, kc, ctx.header, backend, module, printer(),
+                                         ctx.memo))
+    return files

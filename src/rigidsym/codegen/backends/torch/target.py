@@ -1,11 +1,12 @@
-"""The PyTorch target: each kernel's programs as a PyTorch module (``torch/<kernel>.py``), printed
-into the template the array targets share (:mod:`rigidsym.codegen.backends.arrays.programs`).
+"""The PyTorch target: each kernel's programs as a PyTorch module (``torch/<kernel>.py``),
+printed into the template the array targets share
+(:mod:`rigidsym.codegen.backends.arrays.programs`).
 """
 
 from __future__ import annotations
 
-from rigidsym.codegen.backends import RenderContext, Target, environment
-from rigidsym.codegen.backends.arrays.programs import TEMPLATES, render_array_kernel
+from rigidsym.codegen.backends import RenderContext, Target
+from rigidsym.codegen.backends.arrays.programs import TEMPLATES, render_array_target
 from rigidsym.codegen.backends.torch.printer import torch_printer
 
 __all__ = ["TARGET", "render"]
@@ -13,12 +14,7 @@ __all__ = ["TARGET", "render"]
 
 def render(ctx: RenderContext) -> dict[str, str]:
     """The PyTorch target's files of a generation (``{relative path: text}``)."""
-    env = environment(TEMPLATES)
-    files: dict[str, str] = {}
-    for kc in ctx.kernels:
-        files.update(render_array_kernel(env, kc, ctx.header, "torch", "torch", torch_printer(),
-                                         ctx.memo))
-    return files
+    return render_array_target(ctx, "torch", "torch", torch_printer)
 
 
 TARGET = Target("torch", TEMPLATES, torch_printer, render)
