@@ -149,6 +149,9 @@ def is_symbolic(x) -> bool:
 
 
 def explicit(a, **hints):
+    """The explicit form of ``a``: sympy's ``doit`` of an expression (with ``hints``), and an
+    explicit matrix for a matrix expression that no longer holds a matrix symbol; anything
+    else as it is."""
     a = a.doit(**hints) if isinstance(a, sp.Basic) else a
     if isinstance(a, sp.MatrixExpr) and not a.atoms(sp.MatrixSymbol):
         a = a.as_explicit()

@@ -33,6 +33,8 @@ _FOREIGN = ("report/", "notebooks/")
 
 
 def files_on_disk(out: Path) -> dict[str, Path]:
+    """``{relative path: file}`` of the generator's files under ``out`` (none if it does not
+    exist): caches, hidden files and the folders other commands own (``_FOREIGN``) aside."""
     found = {}
     if out.exists():
         for p in sorted(out.rglob("*")):

@@ -39,6 +39,8 @@ def _definitions(section: str) -> dict:
 
 @cache
 def definitions(section: str) -> dict:
+    """The notational atoms of ``section`` with a definition in the glyph table: ``{name: the
+    parsed definition}``, the most specific section's row winning (cached)."""
     return _definitions(section)
 
 

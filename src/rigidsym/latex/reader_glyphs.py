@@ -213,4 +213,5 @@ def _shape_words(shape) -> str:
 
 
 def glyph_symbol(g: Glyph):
+    """The sympy symbol of glyph ``g``: a matrix symbol of its shape, or a real scalar symbol."""
     return sp.MatrixSymbol(g.name, *g.shape) if g.shape else sp.Symbol(g.name, real=True)

@@ -61,6 +61,7 @@ def as_scalar(x):
 
 
 def shape_words(x) -> str:
+    """The shape of ``x`` in words for a message: ``a scalar`` or ``a 3x3 matrix``."""
     s = matrix_shape(x)
     return "a scalar" if s is None else f"a {s[0]}x{s[1]} matrix"
 
@@ -76,6 +77,8 @@ def default_glyph(key: str, base) -> Glyph:
 
 
 def name_from_key(key: str) -> str:
+    """The plain name of a glyph key (``\\mathbf{Q}`` -> ``Q``, ``\\dot{a}`` -> ``adot``,
+    ``{}^{A}_{B}R`` -> ``^A_B R``): fonts and braces dropped, an accent written after the letter."""
     m = re.match(r"\{\}((?:[\^_]\{[^{}]*\})+)(.+)$", key)  # {}^{A}_{B}R: ^A_B R (issue 40)
     if m:
         return re.sub(r"[{}]", "", m.group(1)) + " " + name_from_key(m.group(2))
@@ -87,6 +90,11 @@ def name_from_key(key: str) -> str:
 
 
 def fit(a, b, op):
+    """The operands of a sum or difference (``op``: ``"add"`` or another word), scalars read
+    as such, with an exact scalar 0 made the zero matrix of the other side's shape.
+
+    Raises:
+        LatexError: the shapes do not fit (construct ``shapes``)."""
     a, b = as_scalar(a), as_scalar(b)
     if matrix_shape(a) != matrix_shape(b):
         if matrix_shape(a) is None and a == 0:
@@ -100,6 +108,11 @@ def fit(a, b, op):
 
 
 def shaped_product(a, b):
+    """The product of a juxtaposition ``a b`` read by the shapes: the matrix product where it
+    fits, a 1x1 matrix taken as a scalar otherwise.
+
+    Raises:
+        LatexError: no product fits (construct ``shapes``)."""
     sa, sb = matrix_shape(a), matrix_shape(b)
     if sa is None or sb is None:
         return a * b
@@ -115,6 +128,7 @@ def shaped_product(a, b):
 
 
 def as_block(c):
+    """``c`` as a matrix: a scalar as a 1x1 matrix, a matrix as it is."""
     if matrix_shape(c) is None:
         return sp.ImmutableMatrix([[c]])
     return c

@@ -45,6 +45,8 @@ class Glyph:
 
 
 def glyph_shape(text: str) -> tuple:
+    """The shape of a glyph table's shape cell: ``()`` for a scalar (empty or ``scalar``),
+    ``(r, c)`` for ``rxc`` and ``(n, 1)`` for ``n``."""
     text = text.strip()
     if text in ("", "scalar"):
         return ()

@@ -22,6 +22,7 @@ __all__: list[str] = []
 
 
 def value_shape_words(shape) -> str:
+    """A shape in a ``--let``'s words: ``scalar``, ``3-vector`` or ``3×3 matrix``."""
     if not shape:
         return "scalar"
     return f"{shape[0]}-vector" if shape[1] == 1 else f"{shape[0]}×{shape[1]} matrix"

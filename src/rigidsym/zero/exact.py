@@ -138,6 +138,10 @@ def evaluate(expr, plan: Plan, point: dict, lift=Fraction, bare_value=None):
 
 
 def rational_root(v: Fraction, p: int, q: int) -> Fraction:
+    """``v ** (p/q)`` exactly, for a rational ``v`` whose ``q``-th root is rational.
+
+    Raises:
+        Unsupported: an even root of a negative number, or an irrational root."""
     if v < 0 and q % 2 == 0:
         raise Unsupported("even root of a negative number")
     sgn = -1 if v < 0 else 1

@@ -156,6 +156,8 @@ def linear_angles(arg) -> tuple[dict, Fraction]:
 
 
 def walk_tree(expr, visit):
+    """Visit each distinct node of ``expr`` once, depth first; a node's arguments are visited
+    only where ``visit(node)`` returns true."""
     seen = set()
     stack = [expr]
     while stack:

@@ -167,6 +167,8 @@ def _side(x) -> list:
 
 
 def relation_record(pr: StatementPrinter, label: str, role: str, lhs, rhs, evidence: dict) -> dict:
+    """A relation of a certificate as a record: its ``label``, ``role``, both sides as rows of
+    entries printed in the statement's grammar by ``pr``, and its ``evidence``."""
     return {"label": label, "role": role,
             "lhs": [[pr.text(e) for e in row] for row in _side(lhs)],
             "rhs": [[pr.text(e) for e in row] for row in _side(rhs)],

@@ -239,20 +239,25 @@ def shape_of(x) -> tuple[int, int]:
 
 
 def entries_of(x) -> list:
+    """The entries of ``x`` in row-major order: a matrix's entries, or ``[x]`` for a scalar."""
     return list(x) if isinstance(x, sp.MatrixBase) else [x]
 
 
 def expanded_text(x) -> str:
+    """``x`` as text, its terms in sympy's own deterministic order (for the full reports)."""
     # the terms in sympy's own (deterministic) order: sorting them for print took more time
     # than deciding; these expanded strings appear in the full reports only
     return sp.sstr(x, order="none")
 
 
 def rel_str(rels: list[Rel] | None) -> str | None:
+    """The relations ``rels`` as ``lhs = rhs`` texts joined by ``; ``; None for none."""
     if not rels:
         return None
     return "; ".join(f"{expanded_text(r.lhs)} = {expanded_text(r.rhs)}" for r in rels)
 
 
 def seed_of(eq_id: str) -> int:
+    """The seed of the random points drawn for equation ``eq_id`` (its CRC-32): the same id
+    draws the same points in every run and process."""
     return zlib.crc32(eq_id.encode())

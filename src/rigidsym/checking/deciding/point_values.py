@@ -113,6 +113,7 @@ def point_atoms(plan) -> list:
 
 
 def plain_name(a) -> str:
+    """The name of plan atom ``a``'s base symbol (a function's name for an applied function)."""
     base, _ = atom_base(a)
     return base.func.__name__ if isinstance(base, AppliedUndef) else base.name
 

@@ -284,6 +284,11 @@ class _Pending:
 
 
 def value_of(x):
+    """The value a transformer's node stands for: a glyph's value, a brace's body, ``x``
+    itself otherwise.
+
+    Raises:
+        LatexError: a sum whose shapes did not fit, left pending until now (``shapes``)."""
     if isinstance(x, GlyphKey):
         return x.value
     if isinstance(x, _Brace):

@@ -202,6 +202,10 @@ class GlyphRules:
 
 @dataclass(frozen=True)
 class GlyphKey:
+    """A glyph as the transformer read it: its ``key`` (the LaTeX, normalised), the ``base``
+    and the ``rest`` of its parts, its ``accent`` (``dot``, ``hat``...) if any, and the
+    ``value`` it stands for."""
+
     key: str
     base: tuple
     rest: list
