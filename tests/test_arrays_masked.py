@@ -23,8 +23,9 @@ A = np.array([0.1, -0.2, 0.3])
 
 
 def test_the_safe_point_is_regular_for_every_kernel():
-    """The point substituted in singular samples (``_arrays.safe_point``) must itself be
-    regular, values and Jacobians finite, for every generated kernel (Euler ones too)."""
+    """The point substituted in singular samples (``kernels.arrays.inputs.safe_point``) must
+    itself be regular, values and Jacobians finite, for every generated kernel (Euler ones
+    too)."""
     meta = _state.meta()
     for name, m in meta.items():
         flat, xs, k = _arrays.safe_point(m["args"]), [], 0

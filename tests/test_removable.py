@@ -1,6 +1,7 @@
 """Removable singularities (issue 38 item 1): the series and certificates of
-codegen.removable_cert, the rewrite of codegen.removable, and the generated Lie-group kernels
-at |w| in {0, 1e-12, 1e-8, 1e-4, 1e-2, 1} against a 50-digit mpmath reference.
+codegen.removable.series, the rewrite of codegen.removable.singularities, and the generated
+Lie-group kernels at |w| in {0, 1e-12, 1e-8, 1e-4, 1e-2, 1} against a 50-digit mpmath
+reference.
 
 On the main of before issue 38 there was no such pass: a reader's exponential map returned
 NaN (or raised) at w = 0 and its Jacobian was 3.7e-9 off at |w| = 1e-8.

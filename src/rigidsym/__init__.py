@@ -8,9 +8,12 @@ equations (user modules).
 The public API (README, "Python API"): :func:`check`, :func:`check_latex`, :func:`verify`,
 :class:`Result`, :class:`Results`, :func:`load_module` and the declaration vocabulary of
 :mod:`rigidsym.declare` (``equation``, ``Statement``, ``Rel``, constrained atoms, operators).
-Public modules: ``rigidsym``, ``rigidsym.declare``, ``rigidsym.kernels``,
-``rigidsym.codegen.spec`` (kernel declarations) and ``rigidsym.cli``; everything else is
-private. Names load lazily, so ``import rigidsym`` stays cheap.
+Public modules: ``rigidsym``, ``rigidsym.declare``, ``rigidsym.kernels`` (with
+``rigidsym.kernels.torch`` and ``rigidsym.kernels.jax``), ``rigidsym.exercises``,
+``rigidsym.codegen.spec`` (kernel declarations), ``rigidsym.cli``, and of the LaTeX reader
+``rigidsym.latex``, ``rigidsym.latex.transcription`` and ``rigidsym.latex.lets``
+(``tests/test_public_api.py`` lists their names); everything else is private. Names load
+lazily, so ``import rigidsym`` stays cheap.
 """
 
 from __future__ import annotations

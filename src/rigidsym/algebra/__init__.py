@@ -1,4 +1,5 @@
-"""The algebra layer: constrained atoms, chapter-2 primitives and the book's operators.
+"""The algebra layer: constrained atoms (symbols), chapter-2 primitives (primitives), the
+book's operators (operators) and the vocabulary of rigid motions (rigid_motions).
 
 Imports nothing of rigidsym above it. Public names reach users through
 :mod:`rigidsym.declare`.

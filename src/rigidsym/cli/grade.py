@@ -1,4 +1,7 @@
-"""``rigidsym exercise ID [--data DATA.json] --grade ANSWERS [--json]``: grade answers.
+"""Grading on the command line: ``rigidsym grade DIR ANSWERS`` (a class, each student
+against their own exam: :func:`run`) and ``rigidsym exercise ID [--data DATA.json] --grade
+ANSWERS [--json]`` (one exercise's answers: :func:`grade_command`, which the exercise
+command calls).
 
 ``ANSWERS`` is one student's JSON file ``{answer name: value}``; a folder of such files
 (one per student, named by the file's stem); or a CSV file with a ``student`` column and

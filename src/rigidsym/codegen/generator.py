@@ -59,13 +59,25 @@ class Variant:
 
 @dataclass
 class KernelCode:
+    """One kernel compiled for printing, what every code-generation target renders from.
+
+    Attributes:
+        kernel: its declaration (:class:`rigidsym.codegen.spec.Kernel`).
+        variants: its straight-line programs, the branches first, then the main one.
+        hash: the digest of its mathematics, written in its files.
+        ops: the operation count of its programs, summed over the variants.
+        inputs: ``[(argument, [the argument's scalar symbols])]`` in argument order.
+        rewrites: the accuracy rewrites kept (:mod:`rigidsym.codegen.accuracy.rewrites`).
+        plan32: the float32 precision plans (:mod:`rigidsym.codegen.accuracy.float32`).
+    """
+
     kernel: Kernel
     variants: list[Variant]
     hash: str
     ops: int
     inputs: list = field(default_factory=list)   # [(arg, [symbols])]
-    rewrites: list = field(default_factory=list)  # accuracy rewrites kept (codegen.accurate)
-    plan32: dict = field(default_factory=dict)   # float32 precision plans (codegen.float32)
+    rewrites: list = field(default_factory=list)  # accuracy rewrites kept (accuracy.rewrites)
+    plan32: dict = field(default_factory=dict)   # float32 precision plans (accuracy.float32)
 
 
 @dataclass

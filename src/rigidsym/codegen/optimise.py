@@ -4,7 +4,7 @@
    :class:`sympy.codegen.rewriting.ReplaceOptim`): a sum ``k (1 - cos phi)`` hidden in an
    ``Add`` becomes ``2 k sin^2(phi/2)``, ``k (1 + cos phi)`` becomes ``2 k cos^2(phi/2)``;
    then ``sin phi -> 2 sin(phi/2) cos(phi/2)`` and ``cos phi`` by one of :data:`COS_FORMS`
-   (chosen per kernel by measured error, :mod:`.cos_form`). This removes the cancellation
+   (chosen per kernel by measured error, :mod:`.accuracy.cos_form`). This removes the cancellation
    of ``1 - cos phi`` near 0 (and of ``1 + cos phi`` near pi), turns removable ratios such
    as ``sin phi / (1 - cos phi)`` into ``cot(phi/2)`` by sympy's automatic power
    collection, and leaves two transcendental calls per angle.

@@ -69,7 +69,7 @@ def is_blank(v) -> bool:
 
 
 def answer_shape(right) -> tuple:
-    """The shape an answer is typed in, for :func:`~.worked_numbers.split_text` (the
+    """The shape an answer is typed in, for :func:`~.worked.numbers.split_text` (the
     reader of ``--set``): ``()`` a number, ``(n,)`` a column, ``(r, c)`` a matrix."""
     if isinstance(right, sp.MatrixBase):
         return (right.rows,) if right.cols == 1 else (right.rows, right.cols)

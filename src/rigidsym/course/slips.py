@@ -4,7 +4,7 @@ injected into its data, as STACK's potential-response trees name a student's mis
 A slip in a step is a slip in what that step reads: ``Q`` used for ``Q^T`` is the solution
 on ``Q^T``; an offset typed in mm is the solution on the offset times 1000; a frame
 swapped is the solution on the two frames' readings exchanged. Each candidate is derived
-from the exercise's declared parameters (:class:`~.worked_data.Param`: shape and unit),
+from the exercise's declared parameters (:class:`~.worked.params.Param`: shape and unit),
 so every exercise with data gets them; an exercise module may add its own steps' slips
 with ``step_slips(solution) -> [(word, detail, data), ...]``. The replay is the exact
 solution on the slipped data (:func:`rigidsym.course.worked.solve`, cached), and only

@@ -1,4 +1,6 @@
-"""The zero test: parametrisation plan, exact evaluation and the sound decision.
+"""The zero test: parametrisation plan (plan), straight-line programs (program), exact
+evaluation (exact), the sound decision (decide), roots and signs (roots, signs), and
+``sympy.cancel`` through FLINT for the derivations (cancel).
 
 :func:`decide_zero` is the entry point; see :mod:`rigidsym.zero.decide`.
 """

@@ -16,7 +16,7 @@ How the quotients are found, in any declaration's program (the book's, the Lie-g
 a reader's through ``rigidsym generate --module``): each root ``sqrt(T)`` of a polynomial
 ``T`` in the inputs (and its powers ``T^(k/2)``) becomes a symbol ``s``, ``T`` itself
 ``s^2``; the output is distributed into monomials and, for a norm of symbols ``T = x0^2 +
-x1^2 + ...``, ``x0^2`` becomes ``s^2 - x1^2 - ...`` (:mod:`.removable_terms`, in a sparse
+x1^2 + ...``, ``x0^2`` becomes ``s^2 - x1^2 - ...`` (:mod:`.terms`, in a sparse
 polynomial form, not by ``sympy.expand``); the terms are grouped by their factor free of
 ``s`` and the ``s``-parts summed (so ``w cos s / s^2 - w sin s / s^3`` of a derivative is one
 quotient ``(s cos s - sin s) / s^3``); each group's ``s``-part is then a quotient when it is

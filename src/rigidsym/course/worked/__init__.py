@@ -3,11 +3,12 @@
 A solution is data (:class:`Solution`): the statement with its citation, the given data,
 named steps (a sympy expression and one sentence of why), the answers (exact, floats
 beside them when rendered) and machine checks that do not reuse the solution path
-(:mod:`.worked_checks`). The given data are declared parameters (:mod:`.worked_params`, read
-by :mod:`.worked_data`), so a solution re-runs on a student's data; :mod:`.worked_render`
-renders solutions (text, Markdown, HTML, LaTeX). Deciding truth is never done here by
-``simplify()``: identities go to :func:`rigidsym.zero.decide.decide_zero`; closed algebraic
-numbers to their minimal polynomial.
+(:mod:`.checks`). The given data are declared parameters (:mod:`.params`, read
+by :mod:`.data`, numbers read exactly by :mod:`.numbers`, units by :mod:`.units`), so a
+solution re-runs on a student's data; :mod:`.render` renders solutions (text, Markdown,
+HTML, LaTeX) and :mod:`.solution_store` keeps solved ones on disk. Deciding truth is never
+done here by ``simplify()``: identities go to :func:`rigidsym.zero.decide.decide_zero`;
+closed algebraic numbers to their minimal polynomial.
 """
 
 from __future__ import annotations

@@ -1,7 +1,7 @@
 """The given data of a worked exercise: declared parameters, read exactly or as measurements.
 
 An exercise declares its numeric data as :class:`Param` rows (name, the book's value,
-shape, one-line meaning, unit; :mod:`.worked_params`, re-exported here). A student's value
+shape, one-line meaning, unit; :mod:`.params`, re-exported here). A student's value
 is read by :func:`read_value`:
 
 - exact: an ``int``, a :class:`fractions.Fraction`, a :class:`decimal.Decimal`, a decimal
@@ -55,7 +55,7 @@ class Data:
 # --------------------------------------------------------------------------- reading
 def _scalar(v, where: str, measured: bool = True, notes: list | None = None
             ) -> tuple[sp.Expr, bool]:
-    """One real number: ``(exact value, is it a measurement)``; see :mod:`.worked_numbers`
+    """One real number: ``(exact value, is it a measurement)``; see :mod:`.numbers`
     for text, transcendental values and the bounds. ``measured``: whether the exercise's
     data are measurements (a float is then its binary fraction, else its shortest
     decimal)."""
@@ -153,7 +153,7 @@ def read_value(p: Param, v, measured: bool = True, notes: list | None = None
     Returns:
         A sympy number, a ``sympy.ImmutableMatrix`` (vectors as columns) or a str; and
         whether the value is a measurement (a float of a measured exercise, or a value
-        rounded to 30 certified digits: see :mod:`.worked_numbers`).
+        rounded to 30 certified digits: see :mod:`.numbers`).
 
     Raises:
         TypeError: wrong type (the message names the parameter).

@@ -1,7 +1,7 @@
 """The declared data of a worked exercise: its parameters (:class:`Param`, one datum each;
 :class:`Parameters`, the exercise's table) and :class:`IllPosed`, the exception that ends a
 solution whose data admit no answer. Reading a student's values against them is
-:mod:`.worked_data`'s.
+:mod:`.data`'s.
 """
 
 from __future__ import annotations

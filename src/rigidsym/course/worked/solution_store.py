@@ -17,7 +17,7 @@ FORMAT = 2
 
 def path(ex_id: str, module: str, d) -> Path:
     """Where the solution of ``ex_id`` on ``d`` is kept in the user cache (issue 39): keyed
-    by the data (:meth:`~.worked_data.Data.key`), the exercise's module and the book
+    by the data (:meth:`~.data.Data.key`), the exercise's module and the book
     modules it imports, the rest of the package and the libraries' versions, so that a
     changed declaration re-solves the exercises that use it only."""
     import hashlib

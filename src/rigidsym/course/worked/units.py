@@ -5,7 +5,7 @@ entries are converted to the parameter's documented (SI) unit by an exact factor
 gives the conversion as a float, and the factor kept is the rational, or rational multiple
 of pi, it rounds (``mm`` -> 1/1000, ``deg`` -> pi/180, ``in`` -> 127/5000), checked to 15
 digits. The entries stay text, ``(100)*(1/1000)``, so the one number reader
-(:mod:`.worked_numbers`) reads them exactly. A bare number keeps the documented unit; one
+(:mod:`.numbers`) reads them exactly. A bare number keeps the documented unit; one
 implausible for it (a length above :data:`PLAUSIBLE` m: a 150 m prism) is read as given
 and warned of, naming the unit assumed.
 """
