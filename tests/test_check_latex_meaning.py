@@ -10,6 +10,7 @@ import sympy as sp
 from test_check_latex import _cli, _forget_latex_ids  # noqa: F401  (autouse fixture, CLI helper)
 
 import rigidsym
+from rigidsym.latex import LatexError
 
 AB = "a: vector; b: vector"
 
@@ -171,12 +172,22 @@ def test_an_application_the_reading_cannot_settle_is_bad_input(capsys, latex, wo
     (r"\mathbf{R}^T\mathbf{R} = \mathbf{I}_3", "verified"),   # on main: a free matrix I_3
     (r"R^T R = I_{3\times 3}", "verified"),
     (r"R^T R = I_n", "verified"),
-    (r"R^T R = I_4", "does-not-hold"),     # a written size is never resized to fit
+    (r"R^T R = I_4", "shapes"),     # a written size is never resized to fit: bad input
     (r"R - R = 0_{3\times 3}", "verified"),
 ])
 def test_an_identity_or_zero_with_a_size_subscript(latex, verdict):
     key = r"\mathbf{R}" if "mathbf{R}" in latex else "R"
-    assert rigidsym.check_latex(latex, let=[f"{key}: rotation"]).verdict == verdict
+    _verdict_or_shapes(latex, [f"{key}: rotation"], verdict)
+
+
+def _verdict_or_shapes(latex, let, verdict):
+    """The verdict, or ``"shapes"``: sides of different shapes are bad input naming both
+    (issue 62; before, does-not-hold)."""
+    if verdict == "shapes":
+        with pytest.raises(LatexError, match="differ in shape"):
+            rigidsym.check_latex(latex, let=let)
+    else:
+        assert rigidsym.check_latex(latex, let=let).verdict == verdict
 
 
 def test_a_letter_subscript_of_i_stays_a_name():
@@ -209,8 +220,8 @@ def test_a_symbol_whose_meaning_differs_between_books_is_named(capsys, latex, wo
 
 @pytest.mark.parametrize("latex, verdict", [
     # on main: verified, the 3x3 zero resized to the 3-vector its neighbours have
-    (r"\mathbf{R}\omega - \mathbf{R}\omega = \mathbf{0}_{3\times 3}", "does-not-hold"),
-    (r"\mathbf{R}\omega - \mathbf{R}\omega = 0_{3\times 3}", "does-not-hold"),
+    (r"\mathbf{R}\omega - \mathbf{R}\omega = \mathbf{0}_{3\times 3}", "shapes"),
+    (r"\mathbf{R}\omega - \mathbf{R}\omega = 0_{3\times 3}", "shapes"),
     (r"\omega - \omega = \mathbf{0}_{3}", "verified"),
     (r"\mathbf{R} - \mathbf{R} = \mathbf{0}_{3\times 3}", "verified"),
     # a plain 0 for the zero vector, as the books write it (on main: a shape mismatch)
@@ -220,7 +231,7 @@ def test_a_symbol_whose_meaning_differs_between_books_is_named(capsys, latex, wo
 def test_a_zero_whose_size_is_written_or_fixed_by_its_operands_is_never_resized(
         latex, verdict):
     let = [x for x in (r"\mathbf{R}: rotation", r"\omega: vector") if x.split(":")[0] in latex]
-    assert rigidsym.check_latex(latex, let=let).verdict == verdict
+    _verdict_or_shapes(latex, let, verdict)
 
 
 def test_a_written_zero_size_that_cannot_be_added_is_bad_input(capsys):
@@ -251,9 +262,10 @@ def test_declared_they_are_decided(latex, let):
     assert rigidsym.check_latex(latex, let=[let]).verdict == "verified"
 
 
-def test_a_shape_mismatch_of_declared_symbols_is_still_a_slip():
-    r = rigidsym.check_latex(r"\omega = R", let=[r"R: rotation; \omega: vector"])
-    assert r.verdict == "does-not-hold"
+def test_a_shape_mismatch_of_declared_symbols_is_bad_input_naming_both_shapes():
+    # before issue 62: does-not-hold, a verdict on no equation
+    with pytest.raises(LatexError, match="a 3-vector = a 3×3 matrix"):
+        rigidsym.check_latex(r"\omega = R", let=[r"R: rotation; \omega: vector"])
 
 
 # ------------------------------------------------------- item 1: per-book notations

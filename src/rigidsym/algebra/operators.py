@@ -124,6 +124,9 @@ class Det(sp.Function):
     def eval(cls, M):
         return None
 
+    def _eval_is_commutative(self):
+        return True  # a scalar, though its argument is a matrix: det(M) M is a scaling
+
     def doit(self, **hints):
         M = self.args[0]
         M = M.doit(**hints) if isinstance(M, sp.Basic) else M

@@ -84,9 +84,11 @@ def run(args) -> int:
         return 2
     except BadInput:
         raise  # the command's one-line error, exit 2
-    except Exception as exc:  # noqa: BLE001 -- a model sympy refuses (a shape, a power):
-        # the check itself turns its own errors into undecided, so this is the reading's
-        print(f"rigidsym: error: cannot read the input: {type(exc).__name__}: {exc}",
+    except Exception:  # noqa: BLE001 -- a model sympy refuses (a shape, a power): the
+        # check turns its own errors into undecided, so this is the reading's; its text is
+        # internal and never reaches the message
+        print(f"rigidsym: error: --latex: an internal error while reading and checking "
+              f"{args.latex!r} (never a verdict); say it another way or report it",
               file=sys.stderr)
         return 2
     if args.certificate:

@@ -6,11 +6,12 @@ from __future__ import annotations
 import lark
 import sympy as sp
 
+from rigidsym.core.errors import BadInput
 from rigidsym.latex.lexing import Parsed, Relation, tree
 from rigidsym.latex.shapes import LatexError, as_scalar, loose, matrix_shape
 from rigidsym.latex.transformer.chapter import LatexTransformer, value_of
 
-__all__ = ["parse_latex"]
+__all__ = ["parse_latex", "construct_text"]
 
 
 def parse_latex(latex: str, section: str | None = "*", overrides: dict | None = None,
@@ -63,7 +64,12 @@ def parse_latex(latex: str, section: str | None = "*", overrides: dict | None = 
             exc.orig_exc.glyphs = dict(build.glyphs)  # those read before it: for hints
             exc.orig_exc.choice_points = dict(build.choice_points)  # issue 52
             raise exc.orig_exc from None
-        raise LatexError(f"cannot read {latex!r}: {exc.orig_exc}", "shapes") from None
+        if isinstance(exc.orig_exc, BadInput):
+            raise exc.orig_exc from None
+        # an internal error (sympy's, say) is named by the construct, never by its text
+        raise LatexError(f"cannot read {latex!r}: an internal error at the construct "
+                         f"{construct_text(exc.obj)!r} ({exc.rule}); say it another way or "
+                         f"report it", "internal") from None
     out = Parsed(readings=build.readings, glyphs=build.glyphs,
                  applied=build.applied, choice_points=build.choice_points)
     for st in stmts:
@@ -95,6 +101,16 @@ def parse_latex(latex: str, section: str | None = "*", overrides: dict | None = 
         for k in range(len(exprs) - 1):
             out.relations.append(Relation(exprs[k], exprs[k + 1], out.ops[c][k], c, k))
     return out
+
+
+def construct_text(t) -> str:
+    """The LaTeX tokens of a parse subtree joined by spaces (``\\det ( M ) M``): a
+    construct named in a message (the parser keeps no positions)."""
+    if isinstance(t, lark.Token):
+        return str(t)
+    if not isinstance(t, lark.Tree):
+        return str(t)
+    return " ".join(str(v) for v in t.scan_values(lambda v: isinstance(v, lark.Token)))
 
 
 def _tree(latex: str):

@@ -170,6 +170,8 @@ class GlyphReader:
                       f"parameter of {x.key}")
             over[pk] = g
             subs[glyph_symbol(g)] = a
+        self._no_shadowed_model(x, args, call)
+        rebound = self._rebind(x, over, call)
         p = self.parse(f"{x.name} = {x.latex}", f"--let '{x.text}'", over, record=False)
         for k, g in p.glyphs.items():
             if k not in over and k != x.key:
@@ -177,12 +179,91 @@ class GlyphReader:
                 self.glyphs[k] = g
                 self.in_models.add(k)
         self.model_readings(x, p.readings)
-        v = p.chains[0][1].xreplace(subs)
+        v = _replace_all(p.chains[0][1], rebound).xreplace(subs)
+        for sym, rhs in rebound:
+            self.notes.append(f"{call}: in the body of {x.key}, {sym.name.split('⟨')[1][:-1]}"
+                              f" re-bound at the argument: {sym.name.split('⟨')[1][:-1]} = "
+                              f"{notation.text(_replace_all(rhs, rebound).xreplace(subs))}")
         # an entry of a parameter (q_{4:4}) at an argument that is no symbol (-q, a bmatrix):
         # xreplace leaves (-q)[3, 0] unevaluated, which no later stage reads; index it now
         return v.replace(lambda e: isinstance(e, MatrixElement)
                          and not isinstance(e.parent, sp.MatrixSymbol),
                          lambda e: e.parent[e.i, e.j]), x.params
+
+    def _mentions(self, key: str) -> set[str]:
+        """The glyph keys the ``--let`` model or function ``key`` mentions, through the
+        models it mentions (transitively), its own parameters left out."""
+        from rigidsym.latex.declgraph import glyph_keys
+
+        cache = self.__dict__.setdefault("_mention_cache", {})
+        if key not in cache:
+            cache[key] = set()  # a cycle is the declaration graph's to name
+            x = self.declared[key]
+            try:
+                direct = glyph_keys(x.latex) - set(x.param_keys)
+            except LatexError:
+                direct = set()
+            out = set(direct)
+            for k in direct:
+                if k != key and self._is_model(k):
+                    out |= self._mentions(k)
+            cache[key] = out
+        return cache[key]
+
+    def _is_model(self, key: str) -> bool:
+        """``key`` is a ``--let NAME = LATEX`` model (no parameters, not a function)."""
+        d = self.declared.get(key)
+        return d is not None and bool(d.latex) and not d.params
+
+    def _rebind(self, x: Let, over: dict, call: str) -> list:
+        """Scope as the books mean it: every ``--let`` model the body of ``x`` mentions that
+        is built (through any models) on a parameter of ``x`` is read again with the
+        parameters bound (``n = |u|`` in ``F(u) = n^2 I_3``: at ``F(2u)``, ``n`` is
+        ``|2u|``). Each such model is put in ``over`` as a glyph local to the application;
+        returns ``[(local symbol, value)]`` in dependency order (a value mentions only
+        parameters, globals and earlier local symbols)."""
+        from rigidsym.latex.declgraph import model_order
+
+        params = set(x.param_keys)
+        used = {k for k in self._mentions(x.key) if self._is_model(k) and k not in params}
+        built = [k for k in used if self._mentions(k) & params]
+        if not built:
+            return []
+        lets = [self.declared[k] for k in built]
+        order = model_order(lets, {k: self._mentions(k) for k in built})
+        out = []
+        for m in order:
+            p = self.parse(f"{m.name} = {m.latex}", f"--let '{m.text}' (in {call})", over,
+                           record=False)
+            rhs = p.chains[0][1]
+            g = Glyph(m.key, "*", f"{self._name(x.key)}⟨{self._name(m.key)}⟩",
+                      matrix_shape(rhs) or (), "param", f"{m.key} at the argument of {x.key}")
+            over[m.key] = g
+            out.append((glyph_symbol(g), rhs))
+        return out
+
+    def _no_shadowed_model(self, x: Let, args: list, call: str) -> None:
+        """A parameter that is also a ``--let`` model's NAME (``g = \\tan\\frac{\\theta}{2}
+        \\mathbf{e}`` and ``R(\\mathbf{g}) = ...`` written in θ and e) applied at another
+        argument: the body's θ, e can be the global ones or those of the argument (two
+        readings): refused naming both declarations."""
+        from rigidsym.printing import notation
+
+        for pk, a in zip(x.param_keys, args, strict=True):
+            if not self._is_model(pk):
+                continue
+            own = self.over.get(pk)
+            if own is not None and a == glyph_symbol(own):
+                continue  # at the model itself: one reading
+            shared = self._mentions(pk) & self._mentions(x.key)
+            if shared:
+                m = self.declared[pk]
+                raise BadInput(
+                    f"{call}: the parameter {pk} of --let '{x.text}' is also the model "
+                    f"--let '{m.text}', and the body uses {', '.join(sorted(shared))}, which "
+                    f"{pk} is built on: at the argument {notation.text(a)} they can be the "
+                    f"global ones or those of the argument (two readings): rename the "
+                    f"parameter, or write the body in {pk} itself")
 
     def model_readings(self, x: Let, readings: list[str]) -> None:
         """The readings of a ``--let`` model, printed with the others (issue 52: before, a
@@ -204,6 +285,13 @@ class GlyphReader:
         out = LatexError(msg, exc.construct)
         out.glyphs = exc.glyphs
         return out
+
+
+def _replace_all(v, rebound: list):
+    """``v`` with every re-bound model's local symbol replaced by its value."""
+    for sym, rhs in reversed(rebound):
+        v = v.xreplace({sym: rhs})
+    return v
 
 
 def _shape_words(shape) -> str:

@@ -94,7 +94,7 @@ def read_statement(latex: str, lets: list[Let], book: str | None = None,
         first, error, points = None, exc, exc.choice_points
     else:
         if not first.choices:
-            return first
+            return _typed(first)
         error, points = None, first.choices
     groups: dict[str, list[str]] = {}  # q_{1} of q, q_{2} of q: one notation, chosen together
     for k in sorted(points):
@@ -119,10 +119,10 @@ def read_statement(latex: str, lets: list[Let], book: str | None = None,
             dropped.append((choices, why))
             continue
         kept.append(r)
-    if not kept:  # no reading type-checks: the first one, decided (or refused) as before
+    if not kept:  # no reading type-checks: the first one's error, or its shapes refused
         if first is None:
             raise error
-        return first
+        return _typed(first)
     kept[0].others, kept[0].dropped = kept[1:], dropped
     for choices, why in dropped:
         kept[0].notes.append(f"not read as {said_choices(choices)}: {why}")
@@ -147,6 +147,23 @@ def said_choices(choices: dict) -> str:
     return "; ".join(said(k, c) for k, c in sorted(choices.items()))
 
 
+def _words(shape) -> str:
+    """A side's shape in words (a 1x1 side is a scalar)."""
+    return "a scalar" if tuple(shape) in ((1, 1), ()) else f"a {value_shape_words(shape)}"
+
+
+def _typed(r: Reading) -> Reading:
+    """``r`` when its sides have one shape; else bad input naming both shapes (issue 62:
+    shapes are types; a scalar equal to a vector is no equation to decide, and before it
+    was does-not-hold)."""
+    why = _shape_slip(r)
+    if why:
+        raise LatexError(f"{why} in '{r.text}': an equation's sides have one shape, "
+                         f"so this is no verdict to give; say what each symbol is with a "
+                         f"--let if a shape is not the one meant", "shapes")
+    return r
+
+
 def _shape_slip(r: Reading) -> str:
     """Why a reading does not type-check (sides of different shapes), or ``""``."""
     from rigidsym.checking.deciding.explicit import UnknownShape, shape_of
@@ -157,8 +174,7 @@ def _shape_slip(r: Reading) -> str:
         except UnknownShape:
             continue
         if sl != sr:
-            return (f"the two sides differ in shape ({value_shape_words(sl)} = "
-                    f"{value_shape_words(sr)})")
+            return (f"the two sides differ in shape ({_words(sl)} = {_words(sr)})")
     return ""
 
 
