@@ -172,6 +172,12 @@ def check_latex_run(latex, let, book, modules, repairs=True, repair_budget=None,
                          repair_seconds=_seconds(repair_seconds)))
     if reading.others:  # several readings type-check: a verdict only when all agree
         _readings_agree(reading, r, [_check(o.eq, repairs=False) for o in reading.others])
+    from rigidsym.latex.crosscheck import cross_check
+
+    # issue 62: a verdict needs the second, independent semantics to agree
+    second = cross_check(latex, let, r.verdict, notation=notation, book=book, modules=modules)
+    if second:
+        reading.notes.append(second)
     r.expected = r.verdict
     r.model = list(r.model) + reading.notes
     return r, reading

@@ -1,0 +1,122 @@
+"""The rule of issue 62: a verdict of ``check --latex`` needs the second semantics
+(:mod:`rigidsym.numeval`) to agree. ``verified`` needs its residual to vanish at every
+point (relative to the terms' size, :data:`VANISHES`); ``does-not-hold`` needs it to fail
+somewhere (:data:`FAILS`). A disagreement is bad input naming the relation, its two sides
+and the point, never a verdict; a construct the second semantics lacks is refused naming
+it (:data:`REFUSE_UNCOVERED`).
+
+This module is the boundary: it hands the second semantics lark's parse trees of the
+statement and of every ``--let`` (NAME, parameters, model) and the KIND words, nothing of
+the reader's meanings.
+"""
+
+from __future__ import annotations
+
+import re
+
+from rigidsym.core.errors import BadInput
+from rigidsym.latex.lets import Let, declared_lets, read_lets
+from rigidsym.latex.lexing import tree
+from rigidsym.latex.shapes import LatexError
+from rigidsym.numeval import Decl, NotCovered, residuals
+from rigidsym.numeval.evaluator import text_of
+
+__all__ = ["VANISHES", "FAILS", "POINTS", "REFUSE_UNCOVERED", "Disagreement", "cross_check"]
+
+#: a residual at most this (relative to the terms) vanishes: the 50-digit evaluation's
+#: rounding and the order-4 differences' truncation (h = 1e-10: 1e-40) are far below it
+VANISHES = 1e-20
+#: a residual at least this fails (a rounded point moves a true equation's residual by
+#: about 1e-50, never by this)
+FAILS = 1e-12
+#: the random points of each check
+POINTS = 6
+#: a construct the second semantics lacks: refused (True) or the verdict given with a note
+#: that it rests on the symbolic path alone (False)
+REFUSE_UNCOVERED = False
+
+
+class Disagreement(BadInput):
+    """The two semantics disagree on a verdict: no verdict is given."""
+
+
+def _side(t):
+    """The right side of ``NAME = LATEX`` (or the left of ``NAME = 0``) in lark's tree."""
+    chain = t.children[0]
+    return [c for c in chain.children if not isinstance(c, str)]
+
+
+def decls_of(lets: list[Let]) -> list[Decl]:
+    """The ``--let``s as plain data: their NAME, parameters and model as parse trees."""
+    out = []
+    for x in lets:
+        written = x.name
+        timed = bool(re.search(r"\(\s*t\s*\)\s*$", written)) and not x.params
+        if timed:  # X(t): KIND, a function of time
+            written = re.sub(r"\(\s*t\s*\)\s*$", "", written)
+        name = _side(tree(f"{written} = 0"))[0]
+        params = tuple(_side(tree(f"{p} = 0"))[0] for p in x.params)
+        body = _side(tree(f"{written} = {x.latex}"))[1] if x.latex else None
+        if x.latex and x.params == ("t",):  # X(t) = ...: a model in time
+            params, timed = (), True
+        out.append(Decl(name, params, x.kind, body, x.text, timed))
+    return out
+
+
+def cross_check(latex: str, let, verdict: str, *, notation=None, book=None,
+                modules=()) -> str:
+    """The second semantics' word on ``verdict``: a note for the reading.
+
+    Args:
+        latex: the statement's LaTeX.
+        let: its ``--let`` declarations as given (:func:`~rigidsym.latex.lets.read_lets`).
+        verdict: the symbolic path's verdict.
+        notation, book, modules: a book's notation, a glyph table's section or modules
+            lending symbols: meanings the second semantics does not know (not applied).
+
+    Returns:
+        A note: what the second semantics found (or why it did not apply).
+
+    Raises:
+        Disagreement: the two semantics disagree (the relation, its sides, the point).
+        BadInput: a construct the second semantics lacks, with :data:`REFUSE_UNCOVERED`.
+    """
+    if verdict not in ("verified", "does-not-hold"):
+        return ""
+    if notation or book or modules:
+        return ("second semantics: not applied (the meanings of --notation, --book and "
+                "--module are the reader's)")
+    try:
+        lets = read_lets(let)
+        lets += declared_lets(latex, lets)
+        found = residuals(tree(latex), decls_of(lets), POINTS)
+    except NotCovered as exc:
+        if REFUSE_UNCOVERED:
+            raise BadInput(f"--latex: the second semantics does not evaluate {exc}, and a "
+                           f"verdict of the symbolic path alone is not given") from None
+        return f"second semantics: not covered ({exc}); the verdict rests on the symbolic path"
+    except (LatexError, ValueError, ArithmeticError):
+        return "second semantics: not covered (its evaluation failed at a point)"
+    worst = max(found, key=lambda r: r.relative)
+    if verdict == "verified" and worst.relative > VANISHES:
+        raise Disagreement(_words(worst, latex, "verified, but the second semantics (mpmath, "
+                                                 "50 digits) finds the sides differ"))
+    if verdict == "does-not-hold" and worst.relative < FAILS:
+        raise Disagreement(_words(worst, latex, "does-not-hold, but the second semantics "
+                                                 "(mpmath, 50 digits) finds the sides equal "
+                                                 f"at {POINTS} random points"))
+    return (f"second semantics (mpmath, 50 digits, {POINTS} random points): "
+            f"{'the sides agree' if verdict == 'verified' else 'the sides differ'} "
+            f"(largest relative residual {float(worst.relative):.1e})")
+
+
+def _words(r, latex: str, what: str) -> str:
+    import mpmath as mp
+
+    sides = [c for c in tree(latex).iter_subtrees_topdown() if c.data == "chain"]
+    texts = [text_of(s) for ch in sides for s in ch.children if not isinstance(s, str)]
+    point = "; ".join(f"{k} = {mp.nstr(v, 6)}" for k, v in list(r.point.items())[:6])
+    return (f"--latex: the symbolic path says {what} (relation {r.relation}: "
+            f"{' = '.join(texts) or latex}; relative residual {float(r.relative):.1e}"
+            f"{'; at ' + point if point else ''}): the two semantics disagree, so no "
+            f"verdict; say the equation another way or report it")

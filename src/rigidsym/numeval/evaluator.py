@@ -1,0 +1,613 @@
+"""The second semantics' tree walk (issue 62): a relation's parse tree evaluated at random
+points of the declared kinds, with mpmath at :data:`DIGITS` digits.
+
+Scope: a glyph is looked up in the environment of its evaluation: a function's parameters
+(bound to the arguments), then the ``--let`` models, each evaluated *in the environment
+asking for it* (so, in a function's body, every model built on a parameter is re-bound to
+the argument, and the others are the global ones), then the declared kinds and the free
+symbols of the book's convention (bold lower-case a 3-vector, bold capital a 3 x 3 matrix,
+anything else a scalar), each drawn once per point by :mod:`~rigidsym.numeval.sampler`.
+Derivatives ``\\frac{d}{d\\theta}`` are central differences of order 4 at this precision.
+Any construct not listed here raises :class:`NotCovered` naming it.
+"""
+
+from __future__ import annotations
+
+import random
+from dataclasses import dataclass
+
+import lark
+import mpmath as mp
+
+from rigidsym.numeval import values as V
+from rigidsym.numeval.sampler import sample
+from rigidsym.numeval.values import NotCovered
+
+__all__ = ["DIGITS", "Decl", "NotCovered", "Residual", "residuals", "glyph_key", "text_of"]
+
+#: working precision (decimal digits)
+DIGITS = 50
+
+_TRANSPOSE = {"T", "\\top", "\\intercal", "\\mathsf{T}", "\\mathrm{T}"}
+_FUNCS = {"\\sin": mp.sin, "\\cos": mp.cos, "\\tan": mp.tan, "\\arctan": mp.atan,
+          "\\arccos": mp.acos, "\\cot": mp.cot, "\\sec": mp.sec, "\\csc": mp.csc}
+_OPS = {"tr": V.trace, "Tr": V.trace, "trace": V.trace, "det": V.det, "vect": V.vect}
+
+
+@dataclass(frozen=True)
+class Decl:
+    """One ``--let`` as plain data: its NAME's parse tree (the glyph), its parameters' glyph
+    trees, and a KIND (words) or a model's parse tree (the right side of ``NAME = LATEX``)."""
+
+    name: object
+    params: tuple = ()
+    kind: str = ""
+    body: object = None
+    text: str = ""
+    timed: bool = False
+
+
+@dataclass
+class Residual:
+    """One relation at one point: the two sides, their difference's size relative to the
+    terms' and the point (the sampled symbols by glyph)."""
+
+    relation: int
+    lhs: object
+    rhs: object
+    relative: object
+    point: dict
+
+
+def text_of(t) -> str:
+    """A subtree's LaTeX tokens joined by spaces (a construct named in a message)."""
+    if isinstance(t, lark.Token):
+        return str(t)
+    return " ".join(str(v) for v in t.scan_values(lambda v: isinstance(v, lark.Token)))
+
+
+def glyph_key(t) -> str:
+    """A glyph's identity: its subtree's rules and tokens (``\\mathbf Q`` and ``\\mathbf{Q}``
+    parse alike)."""
+    if isinstance(t, lark.Token):
+        return str(t).strip()
+    return f"{t.data}(" + ",".join(glyph_key(c) for c in t.children) + ")"
+
+
+def _base_letter(t) -> tuple[str, bool, bool]:
+    """``(letter, bold, plain)`` of a glyph (plain: no accent, subscript nor index)."""
+    if t.data != "glyph":
+        return "", False, False
+    base = t.children[0]
+    if not isinstance(base, lark.Tree) or base.data != "base":
+        return "", False, False
+    toks = [str(c) for c in base.children]
+    bold = len(toks) == 2
+    return toks[-1], bold, len(t.children) == 1
+
+
+class Env:
+    """An environment: bindings (a function's parameters), a parent, the declarations and
+    the point's sampled values (shared by every environment of one point)."""
+
+    def __init__(self, decls: dict, point: dict, rng: random.Random, binds=None,
+                 parent: Env | None = None, depth: int = 0):
+        self.decls, self.point, self.rng = decls, point, rng
+        self.binds, self.parent, self.depth = dict(binds or {}), parent, depth
+        self.memo: dict = {}
+        self.names = point.setdefault("", {})  # glyph key -> its LaTeX, for messages
+
+    def lookup(self, key: str, tree):
+        if key in self.binds:
+            return self.binds[key]
+        d = self.decls.get(key)
+        if d is not None and d.body is not None and not d.params:
+            if key not in self.memo:
+                if self.depth > 40:
+                    raise NotCovered(f"the models around {text_of(tree)} (nested too deep)")
+                self.memo[key] = Evaluator(self).value(d.body)
+            return self.memo[key]
+        if d is not None and d.params:
+            raise NotCovered(f"the --let function {text_of(tree)} without its arguments")
+        if key not in self.point:
+            self.point[key] = self._draw(key, tree, d)
+            self.names[key] = text_of(tree)
+        return self.point[key]
+
+    def _draw(self, key: str, tree, d):
+        if d is not None and d.kind:
+            if d.timed:
+                raise NotCovered(f"{text_of(tree)}, a function of time")
+            return sample(d.kind, self.rng)
+        letter, bold, plain = _base_letter(tree)
+        if not letter or not plain and not _subscripted_name(tree):
+            raise NotCovered(f"the undeclared glyph {text_of(tree)}")
+        if bold and letter.islower():
+            return sample("vector", self.rng)
+        if bold and letter.isupper():
+            return sample("matrix", self.rng)
+        return sample("scalar", self.rng)
+
+
+def _subscripted_name(tree) -> bool:
+    """A plain glyph with a subscript that is part of its name (``x_1``, ``\\theta_{2}``)."""
+    return (tree.data == "glyph" and len(tree.children) == 2
+            and isinstance(tree.children[1], lark.Tree) and tree.children[1].data == "subscript"
+            and all(isinstance(c, lark.Token) and c.type == "SUBATOM"
+                    for c in tree.children[1].children))
+
+
+class Evaluator:
+    """Evaluates parse subtrees in one :class:`Env`."""
+
+    def __init__(self, env: Env):
+        self.env = env
+
+    def value(self, t):
+        if isinstance(t, lark.Token):
+            raise NotCovered(f"the token {t}")
+        rule = getattr(self, "r_" + t.data, None)
+        if rule is None:
+            raise NotCovered(f"the construct {text_of(t)!r} ({t.data})")
+        return rule(t)
+
+    def _kids(self, t):
+        return [c for c in t.children if isinstance(c, lark.Tree)]
+
+    # ---- sums and products
+    def r_add(self, t):
+        a, b = self._kids(t)
+        return V.add(self.value(a), self.value(b))
+
+    def r_sub(self, t):
+        a, b = self._kids(t)
+        return V.add(self.value(a), V.neg(self.value(b)))
+
+    def r_neg(self, t):
+        return V.neg(self.value(self._kids(t)[0]))
+
+    def r_mul(self, t):
+        a, b = self._kids(t)
+        return V.mul(self.value(a), self.value(b))
+
+    def r_div(self, t):
+        a, b = self._kids(t)
+        return self._divide(self.value(a), self.value(b), t)
+
+    def r_frac(self, t):
+        return self.r_div(t)
+
+    def _divide(self, a, b, t):
+        b = V.scalar(b)
+        if V.is_matrix(b) or isinstance(b, V.Eye | V.Zero):
+            raise NotCovered(f"a division by a matrix in {text_of(t)!r}")
+        if b == 0:
+            raise NotCovered(f"a division by 0 in {text_of(t)!r}")
+        return V.mul(a, 1 / b)
+
+    def r_cross(self, t):
+        a, b = self._kids(t)
+        return V.cross(self.value(a), self.value(b))
+
+    def r_dot(self, t):
+        a, b = self._kids(t)
+        return V.dot(self.value(a), self.value(b))
+
+    # ---- groups
+    def r_paren(self, t):
+        return self.value(self._kids(t)[0])
+
+    def r_sized(self, t):
+        inner = self.value(self._kids(t)[0])
+        if "[" in str(t.children[0]):
+            return self._bracket(inner)
+        return inner
+
+    def r_bracket(self, t):
+        return self._bracket(self.value(self._kids(t)[0]))
+
+    def _bracket(self, v):
+        """``[x]``: the hat of a 3- or 6-vector (the books' cross-product matrix), else a
+        bracket that groups."""
+        v = V.scalar(v)
+        if V.is_matrix(v) and v.cols == 1 and v.rows in (3, 6):
+            return V.hat(v)
+        return v
+
+    # ---- powers
+    def r_power(self, t):
+        base, sup = t.children[0], t.children[1]
+        if glyph_key(t) in self.env.decls:  # a starred NAME declared of its own
+            return self.env.lookup(glyph_key(t), t)
+        return self._raise(self.value(base), sup, t)
+
+    def _raise(self, v, sup, t):
+        s = str(sup.children[0]).replace(" ", "")
+        if s in _TRANSPOSE:
+            return V.transpose(v)
+        if s in ("-T", "-\\top", "-\\mathsf{T}", "-\\mathrm{T}"):
+            return V.transpose(V.inverse(v))
+        if s in ("*", "\\ast"):  # Featherstone's X^* = X^{-T} of a spatial transform
+            if not V.is_matrix(v) or (v.rows, v.cols) != (6, 6):
+                raise NotCovered(f"the star of a value that is no 6x6 transform in "
+                                 f"{text_of(t)!r}")
+            return V.transpose(V.inverse(v))
+        if s == "\\wedge":
+            return V.hat(v)
+        if s == "\\vee":
+            return V.vee(v)
+        try:
+            n = int(s)
+        except ValueError:
+            raise NotCovered(f"the power {s} in {text_of(t)!r}") from None
+        if n == -1:
+            return V.inverse(v)
+        return V.power(v, n)
+
+    # ---- primaries
+    def r_number(self, t):
+        return mp.mpf(str(t.children[0]))
+
+    def r_pi(self, t):
+        return +mp.pi
+
+    def r_glyph(self, t):
+        kids = t.children
+        if len(kids) == 1 and isinstance(kids[0], lark.Tree) and kids[0].data in ("zero",
+                                                                                 "one"):
+            return V.Zero() if kids[0].data == "zero" else V.Eye()
+        key = glyph_key(t)
+        if key in self.env.decls or key in self.env.binds or self._bound_in_parents(key):
+            return self.env.lookup(key, t)
+        special = self._special(t)
+        if special is not None:
+            return special
+        entries = self._entries(t)
+        if entries is not None:
+            return entries
+        return self.env.lookup(key, t)
+
+    def r_accented(self, t):
+        return self._declared_only(t)
+
+    r_accented_bare = r_arrow = r_accented
+
+    def r_base(self, t):  # Ad_T: a bare base
+        return self.r_glyph(lark.Tree("glyph", [t]))
+
+    r_calbase = r_base
+
+    def _declared_only(self, t):
+        key = glyph_key(t)
+        if key in self.env.decls or key in self.env.binds:
+            return self.env.lookup(key, t)
+        raise NotCovered(f"the undeclared glyph {text_of(t)} (an accent's meaning is the "
+                         f"reader's)")
+
+    def _bound_in_parents(self, key: str) -> bool:
+        return False  # a body sees its own parameters and the globals only (lexical scope)
+
+    def _special(self, t):
+        """A plain ``I`` (the identity, sized by its neighbours), ``I_3``, ``I_{3\\times 3}``,
+        ``I_n``."""
+        letter, bold, plain = _base_letter(t)
+        if letter == "O" and bold and plain:
+            return V.Zero()  # the books' bold O: a zero block
+        if letter != "I" or bold:
+            return None
+        if plain:
+            return V.Eye()
+        sub = t.children[1]
+        if not isinstance(sub, lark.Tree) or sub.data != "subscript":
+            return None
+        toks = [str(c) for c in sub.children if isinstance(c, lark.Token)]
+        if toks == ["n"]:
+            return V.Eye()
+        if toks and toks[0].isdigit() and all(x == toks[0] for x in toks) and (
+                len(toks) == 1 or (len(toks) == 2 and any(
+                    isinstance(c, lark.Tree) and c.data == "times" for c in sub.children))):
+            return V.Eye(int(toks[0]))
+        return None
+
+    def _entries(self, t):
+        """``q_{1:3}``: entries 1 to 3 of the vector q (1-based, inclusive)."""
+        if t.data != "glyph" or len(t.children) != 2:
+            return None
+        sub = t.children[1]
+        if not isinstance(sub, lark.Tree) or sub.data != "subscript" or len(sub.children) != 1:
+            return None
+        tok = sub.children[0]
+        if not (isinstance(tok, lark.Token) and tok.type == "SUBRANGE"):
+            if isinstance(tok, lark.Token) and tok.type == "SUBATOM":
+                base = lark.Tree("glyph", [t.children[0]])
+                if glyph_key(base) in self.env.decls:
+                    raise NotCovered(f"{text_of(t)}: a subscript of the declared "
+                                     f"{text_of(base)} (a name or an entry)")
+            return None
+        lo, hi = (int(x) for x in str(tok).replace(" ", "").split(":"))
+        base = lark.Tree("glyph", [t.children[0]])
+        v = self.value(base)
+        if not V.is_matrix(v) or v.cols != 1 or not 1 <= lo <= hi <= v.rows:
+            raise NotCovered(f"the entries {text_of(t)}")
+        if lo == hi:
+            return v[lo - 1]
+        return mp.matrix([v[i] for i in range(lo - 1, hi)])
+
+    def r_norm(self, t):
+        return V.norm(self.value(self._kids(t)[0]))
+
+    def r_abs_bars(self, t):
+        return V.norm(self.value(self._kids(t)[0]))
+
+    def r_sqrt(self, t):
+        v = V.scalar(self.value(self._kids(t)[0]))
+        if V.is_matrix(v) or isinstance(v, V.Eye | V.Zero):
+            raise NotCovered(f"the square root of a matrix in {text_of(t)!r}")
+        return mp.sqrt(v)
+
+    def r_func(self, t):
+        name = str(t.children[0])
+        v = self.value(self._kids(t)[0])
+        return self._func(name, v, t)
+
+    def _func(self, name, v, t):
+        if name in _FUNCS:
+            v = V.scalar(v)
+            if V.is_matrix(v) or isinstance(v, V.Eye | V.Zero):
+                raise NotCovered(f"{name} of a matrix in {text_of(t)!r}")
+            return _FUNCS[name](v)
+        word = name.split("{")[-1].rstrip("}").lstrip("\\")
+        if word in _OPS:
+            return _OPS[word](v)
+        raise NotCovered(f"the operator {name}")
+
+    def r_func_power(self, t):
+        name, sup = str(t.children[0]), t.children[1]
+        v = self._func(name, self.value(t.children[2]), t)
+        s = str(sup.children[0]).replace(" ", "")
+        if not s.isdigit():
+            raise NotCovered(f"the power {s} of {name}")
+        return V.power(v, int(s))
+
+    def r_cpm(self, t):
+        return V.hat(self.value(self._kids(t)[0]))
+
+    def r_exp_e(self, t):
+        return V.expm(self.value(self._kids(t)[0]))
+
+    def r_matfunc(self, t):
+        v = self.value(self._kids(t)[0])
+        return V.expm(v) if "exp" in str(t.children[0]) else V.logm(v)
+
+    def r_atan2(self, t):
+        y, x = (V.scalar(self.value(k)) for k in self._kids(t))
+        return mp.atan2(y, x)
+
+    def r_adjoint(self, t):
+        v = self.value(self._kids(t)[0])
+        return V.small_adjoint(v) if "ad" in str(t.children[0]) and "Ad" not in str(
+            t.children[0]) else V.adjoint(v)
+
+    def r_diag(self, t):
+        vals = [V.scalar(self.value(k)) for k in self._kids(t)]
+        if any(V.is_matrix(v) for v in vals):
+            raise NotCovered("diag of a vector or matrix")
+        return mp.diag(vals)
+
+    def r_sized_number(self, t):
+        n = str(t.children[0])
+        toks = [str(c) for c in t.children[1].children if isinstance(c, lark.Token)]
+        if n != "0" or not toks or not all(x.isdigit() for x in toks):
+            raise NotCovered(f"the sized number {text_of(t)}")
+        rows = int(toks[0])
+        cols = int(toks[1]) if len(toks) > 1 else 1
+        return mp.zeros(rows, cols)
+
+    # ---- matrices written out
+    def r_matrix(self, t):
+        rows = [[self.value(e) for e in self._kids(r)] for r in self._kids(t)]
+        return _assemble(rows, t)
+
+    # ---- applications
+    def r_apply(self, t):
+        f, arg = t.children[0], t.children[1]
+        sup = t.children[2] if len(t.children) > 2 else None
+        v = self._call(f, [arg], t)
+        return self._raise(v, sup, t) if sup is not None else v
+
+    def r_apply_many(self, t):
+        kids = self._kids(t)
+        sup = kids[-1] if kids[-1].data == "sup" else None
+        args = kids[1:-1] if sup is not None else kids[1:]
+        v = self._call(kids[0], args, t, many=True)
+        return self._raise(v, sup, t) if sup is not None else v
+
+    def r_apply_pre(self, t):
+        post, sup, arg = t.children[0], t.children[1], t.children[2]
+        d = self.env.decls.get(glyph_key(post)) if isinstance(post, lark.Tree) else None
+        if d is not None and d.params:
+            return self._raise(self._call(post, [arg], t), sup, t)
+        return V.mul(self._raise(self.value(post), sup, t), self.value(arg))
+
+    def _call(self, f, args, t, many: bool = False):
+        key = glyph_key(f)
+        d = self.env.decls.get(key)
+        if d is not None and d.body is not None and not d.params and not many:
+            # R(\theta) of a model R: the model itself, as the books write its variable
+            if isinstance(args[0], lark.Tree) and args[0].data == "glyph":
+                arg = self.value(args[0])
+                if not V.is_matrix(V.scalar(arg)) and not isinstance(arg, V.Eye | V.Zero):
+                    return self.value(f)
+        if d is None or not d.params:
+            if many:
+                raise NotCovered(f"{text_of(f)} applied to several arguments")
+            if d is not None and d.timed:
+                raise NotCovered(f"{text_of(t)}, a function of time")
+            return V.mul(self.value(f), self.value(args[0]))  # a product, as written
+        if len(args) != len(d.params):
+            raise NotCovered(f"{text_of(t)}: {len(args)} arguments of a function of "
+                             f"{len(d.params)}")
+        binds = {glyph_key(p): self.value(a) for p, a in zip(d.params, args, strict=True)}
+        # lexical scope, a fresh environment per application: the globals and the
+        # parameters; every model is evaluated again in it, so those built on a parameter
+        # see the argument
+        env = Env(self.env.decls, self.env.point, self.env.rng, binds, None,
+                  self.env.depth + 1)
+        if env.depth > 40:
+            raise NotCovered(f"{text_of(t)}: applications nested too deep")
+        return Evaluator(env).value(d.body)
+
+    # ---- derivatives
+    def r_deriv_frac(self, t):
+        kids = self._kids(t)
+        return self._derivative(kids[0], kids[1], t)
+
+    def r_deriv_op(self, t):
+        kids = self._kids(t)
+        return self._derivative(kids[1], kids[0], t)
+
+    def _derivative(self, expr, var, t):
+        key = glyph_key(var)
+        d = self.env.decls.get(key)
+        if any(x.timed for x in self.env.decls.values()):
+            raise NotCovered(f"a derivative beside symbols declared functions of time "
+                             f"({text_of(t)!r})")
+        if d is not None and (d.body is not None or d.params):
+            raise NotCovered(f"a derivative by the model {text_of(var)}")
+        x0 = V.scalar(self.value(var))
+        if V.is_matrix(x0):
+            raise NotCovered(f"a derivative by the vector {text_of(var)}")
+        h = mp.mpf(10) ** (-DIGITS // 5)
+
+        def at(x):
+            env = Env(self.env.decls, self.env.point, self.env.rng,
+                      {**self.env.binds, key: x}, None, self.env.depth + 1)
+            return _explicit(Evaluator(env).value(expr))
+
+        f = [at(x0 + k * h) for k in (-2, -1, 1, 2)]
+        return _combine(f, [1, -8, 8, -1], 12 * h)
+
+
+def _explicit(v):
+    if isinstance(v, V.Eye | V.Zero):
+        raise NotCovered("the derivative of an unsized identity or zero")
+    return v
+
+
+def _combine(vals, coeffs, den):
+    out = None
+    for v, c in zip(vals, coeffs, strict=True):
+        term = v * c
+        out = term if out is None else out + term
+    return out / den
+
+
+def _assemble(rows, t):
+    """A bmatrix of scalars, or of blocks (a scalar 0 a zero block of its row's height and
+    column's width)."""
+    if all(not V.is_matrix(V.scalar(e)) and not isinstance(e, V.Eye | V.Zero)
+           for r in rows for e in r):
+        if len({len(r) for r in rows}) != 1:
+            raise NotCovered(f"rows of different lengths in {text_of(t)!r}")
+        return mp.matrix([[V.scalar(e) for e in r] for r in rows])
+    ncol = len(rows[0])
+    if any(len(r) != ncol for r in rows):
+        raise NotCovered(f"block rows of different lengths in {text_of(t)!r}")
+    heights = [next((V.shape(e)[0] for e in r if V.shape(e)), None) for r in rows]
+    widths = [next((V.shape(r[j])[1] for r in rows if V.shape(r[j])), None)
+              for j in range(ncol)]
+    unsized = 3 if any(isinstance(e, V.Eye | V.Zero) for r in rows for e in r) else 1
+    heights = [h if h is not None else unsized for h in heights]
+    widths = [w if w is not None else unsized for w in widths]
+    out = mp.zeros(sum(heights), sum(widths))
+    r0 = 0
+    for i, r in enumerate(rows):
+        c0 = 0
+        for j, e in enumerate(r):
+            blk = _block(e, heights[i], widths[j], t)
+            for a in range(heights[i]):
+                for b in range(widths[j]):
+                    out[r0 + a, c0 + b] = blk[a, b] if V.is_matrix(blk) else blk
+            c0 += widths[j]
+        r0 += heights[i]
+    return out
+
+
+def _block(e, h, w, t):
+    if isinstance(e, V.Zero) or (not V.is_matrix(e) and not isinstance(e, V.Eye) and e == 0):
+        return mp.zeros(h, w)
+    if isinstance(e, V.Eye):
+        if h != w:
+            raise NotCovered(f"an identity block of {h}x{w} in {text_of(t)!r}")
+        return mp.eye(h)
+    if V.is_matrix(e) and (e.rows, e.cols) == (h, w):
+        return e
+    if not V.is_matrix(e) and h == w == 1:
+        return e
+    raise NotCovered(f"blocks that do not fit in {text_of(t)!r}")
+
+
+def _size(v):
+    if V.is_matrix(v):
+        return max((abs(x) for x in v), default=mp.mpf(0))
+    if isinstance(v, V.Eye):
+        return mp.mpf(1)
+    if isinstance(v, V.Zero):
+        return mp.mpf(0)
+    return abs(v)
+
+
+def _difference(a, b, where: str):
+    """``(|a - b|, size of the terms)``, an unsized identity or zero taking the other
+    side's shape."""
+    a2, b2 = V.sized(a, b), V.sized(b, a)
+    a2, b2 = V.sized(a2, b2), V.sized(b2, a2)
+    if V.is_matrix(a2) != V.is_matrix(b2):
+        s = b2 if V.is_matrix(a2) else a2
+        if s != 0:
+            raise NotCovered(f"{where}: a scalar and a matrix")
+        m = a2 if V.is_matrix(a2) else b2
+        return _size(m), _size(m)
+    if V.is_matrix(a2) and (a2.rows, a2.cols) != (b2.rows, b2.cols):
+        raise NotCovered(f"{where}: sides of {a2.rows}x{a2.cols} and {b2.rows}x{b2.cols}")
+    return _size(a2 - b2), max(_size(a2), _size(b2), mp.mpf(1))
+
+
+def residuals(tree, decls: list[Decl], points: int = 6, seed: int = 62) -> list[Residual]:
+    """Each relation of ``tree`` (a parse of the statement) at ``points`` random points.
+
+    Args:
+        tree: lark's parse tree of the LaTeX (``start`` of ``chain`` s).
+        decls: the ``--let`` declarations as :class:`Decl` (glyph trees, kinds, models).
+        points: how many points.
+        seed: the sampler's seed (a check is reproducible).
+
+    Returns:
+        One :class:`Residual` per relation and point (``relative``: the largest entry of
+        the difference over the largest of the terms, at least 1).
+
+    Raises:
+        NotCovered: a construct, a kind or shapes this semantics does not evaluate.
+    """
+    table = {glyph_key(d.name): d for d in decls}
+    chains = [c for c in tree.children if isinstance(c, lark.Tree) and c.data == "chain"]
+    if not chains:
+        raise NotCovered("a statement with no relation")
+    out = []
+    rng = random.Random(seed)
+    with mp.workdps(DIGITS):
+        for _ in range(points):
+            point: dict = {}
+            env = Env(table, point, rng)
+            ev = Evaluator(env)
+            n = 0
+            for chain in chains:
+                sides = [c for c in chain.children if isinstance(c, lark.Tree)]
+                vals = [ev.value(s) for s in sides]
+                for k in range(1, len(vals)):
+                    n += 1
+                    diff, size = _difference(vals[0], vals[k], f"relation {n}")
+                    names = point.get("", {})
+                    out.append(Residual(n, vals[0], vals[k], diff / size,
+                                        {names.get(g, g): v for g, v in point.items() if g}))
+    return out

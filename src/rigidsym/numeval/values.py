@@ -1,0 +1,268 @@
+"""Matrix algebra and the chapter's operators on mpmath values (the second semantics, issue
+62): a value is an mpmath number (a scalar), an :class:`mpmath.matrix` (a vector is n x 1),
+or an identity or zero whose size its neighbours give (:class:`Eye`, :class:`Zero`).
+Shapes are types: a sum or product whose shapes do not fit raises :class:`NotCovered`."""
+
+from __future__ import annotations
+
+import mpmath as mp
+
+__all__ = ["NotCovered", "Eye", "Zero", "shape", "add", "neg", "mul", "cross", "dot",
+           "transpose", "inverse", "power", "hat", "vee", "trace", "det", "vect", "norm",
+           "expm", "logm", "adjoint", "small_adjoint", "sized", "scalar"]
+
+
+class NotCovered(ValueError):
+    """A construct the second semantics does not evaluate (named), or shapes that do not
+    fit: the check is refused, never decided by the symbolic path alone."""
+
+
+class Eye:
+    """An identity whose size the other operand gives (``\\mathbf{1}``, a plain ``I``)."""
+
+    def __init__(self, n: int | None = None):
+        self.n = n
+
+
+class Zero:
+    """A zero whose shape the other operand gives (``\\mathbf{0}``)."""
+
+
+def is_matrix(v) -> bool:
+    return isinstance(v, mp.matrix)
+
+
+def shape(v):
+    """``(rows, cols)`` of a matrix, ``()`` of a scalar, ``None`` of an unsized one."""
+    if is_matrix(v):
+        return (v.rows, v.cols)
+    if isinstance(v, Eye):
+        return (v.n, v.n) if v.n else None
+    if isinstance(v, Zero):
+        return None
+    return ()
+
+
+def sized(v, like):
+    """``v`` made an explicit matrix of the shape of ``like`` (an unsized identity or zero),
+    a 1 x 1 matrix made a scalar."""
+    if isinstance(v, Eye):
+        n = v.n or (like.rows if is_matrix(like) else None)
+        if n is None:
+            return mp.mpf(1)
+        return mp.eye(n)
+    if isinstance(v, Zero):
+        return mp.zeros(like.rows, like.cols) if is_matrix(like) else mp.mpf(0)
+    return scalar(v)
+
+
+def scalar(v):
+    """A 1 x 1 matrix as its entry; anything else as it is."""
+    if is_matrix(v) and v.rows == 1 and v.cols == 1:
+        return v[0, 0]
+    return v
+
+
+def _pair(a, b):
+    a, b = sized(a, b), sized(b, a)
+    return sized(a, b), sized(b, a)
+
+
+def add(a, b):
+    """``a + b``; a scalar 0 is the zero of the other side's shape."""
+    if isinstance(a, Zero):
+        return b
+    if isinstance(b, Zero):
+        return a
+    a, b = _pair(a, b)
+    if is_matrix(a) != is_matrix(b):
+        s, m = (a, b) if is_matrix(b) else (b, a)
+        if s == 0:
+            return m
+        raise NotCovered(f"a sum of a scalar and a {m.rows}x{m.cols} matrix")
+    if is_matrix(a) and (a.rows, a.cols) != (b.rows, b.cols):
+        raise NotCovered(f"a sum of a {a.rows}x{a.cols} and a {b.rows}x{b.cols} matrix")
+    return a + b
+
+
+def neg(a):
+    if isinstance(a, Zero):
+        return a
+    if isinstance(a, Eye):
+        return mp.mpf(-1) if not a.n else -mp.eye(a.n)
+    return -a
+
+
+def mul(a, b):
+    """The product of a juxtaposition: the matrix product where it fits, a scalar (or a
+    1 x 1 matrix) times anything; an identity or zero takes the other's size."""
+    if isinstance(a, Zero) or isinstance(b, Zero):
+        return Zero()
+    if isinstance(a, Eye) and not a.n:
+        return b
+    if isinstance(b, Eye) and not b.n:
+        return a
+    a, b = sized(a, b), sized(b, a)
+    if not is_matrix(a) or not is_matrix(b):
+        return a * b
+    if a.cols == b.rows:
+        return scalar(a * b)
+    raise NotCovered(f"a product of a {a.rows}x{a.cols} and a {b.rows}x{b.cols} matrix")
+
+
+def _vec3(v, what: str):
+    v = scalar(v)
+    if not is_matrix(v) or v.cols != 1 or v.rows != 3:
+        raise NotCovered(f"{what} of a value that is no 3-vector")
+    return v
+
+
+def cross(a, b):
+    a, b = _vec3(a, "a cross product"), _vec3(b, "a cross product")
+    return mp.matrix([a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2],
+                      a[0] * b[1] - a[1] * b[0]])
+
+
+def dot(a, b):
+    """``a \\cdot b``: the scalar product of two vectors, a product otherwise."""
+    if is_matrix(a) and is_matrix(b) and a.cols == b.cols == 1:
+        if a.rows != b.rows:
+            raise NotCovered(f"a scalar product of a {a.rows}- and a {b.rows}-vector")
+        return mp.fsum(a[i] * b[i] for i in range(a.rows))
+    if is_matrix(a) and is_matrix(b):
+        raise NotCovered("a dot between matrices")
+    return mul(a, b)
+
+
+def transpose(a):
+    if is_matrix(a):
+        return scalar(a.T) if a.rows == a.cols == 1 else a.T
+    return a
+
+
+def inverse(a):
+    if isinstance(a, Eye):
+        return a
+    if is_matrix(a):
+        if a.rows != a.cols:
+            raise NotCovered(f"the inverse of a {a.rows}x{a.cols} matrix")
+        return mp.inverse(a)
+    if a == 0:
+        raise NotCovered("the inverse of 0")
+    return 1 / a
+
+
+def power(a, n: int):
+    if not is_matrix(a):
+        if isinstance(a, Eye | Zero):
+            return a
+        return a ** n
+    if a.rows != a.cols:
+        raise NotCovered(f"a power of a {a.rows}x{a.cols} matrix")
+    if n < 0:
+        return power(inverse(a), -n)
+    out = mp.eye(a.rows)
+    for _ in range(n):
+        out = out * a
+    return out
+
+
+def hat(v):
+    """The cross-product matrix of a 3-vector; the 4 x 4 se(3) matrix of a 6-vector
+    ``[ω; v]``."""
+    v = scalar(v)
+    if is_matrix(v) and v.cols == 1 and v.rows == 3:
+        return mp.matrix([[0, -v[2], v[1]], [v[2], 0, -v[0]], [-v[1], v[0], 0]])
+    if is_matrix(v) and v.cols == 1 and v.rows == 6:
+        W = hat(mp.matrix([v[0], v[1], v[2]]))
+        out = mp.zeros(4, 4)
+        for i in range(3):
+            for j in range(3):
+                out[i, j] = W[i, j]
+            out[i, 3] = v[i + 3]
+        return out
+    raise NotCovered("a hat (cross-product matrix) of a value that is no 3- or 6-vector")
+
+
+def vee(A):
+    """The inverse of :func:`hat` (of a 3 x 3 or a 4 x 4 matrix)."""
+    if is_matrix(A) and A.rows == A.cols == 3:
+        return mp.matrix([A[2, 1], A[0, 2], A[1, 0]])
+    if is_matrix(A) and A.rows == A.cols == 4:
+        return mp.matrix([A[2, 1], A[0, 2], A[1, 0], A[0, 3], A[1, 3], A[2, 3]])
+    raise NotCovered("a vee of a value that is no 3x3 or 4x4 matrix")
+
+
+def _square(A, what: str):
+    if not is_matrix(A) or A.rows != A.cols:
+        raise NotCovered(f"{what} of a value that is no square matrix")
+    return A
+
+
+def trace(A):
+    A = _square(A, "a trace")
+    return mp.fsum(A[i, i] for i in range(A.rows))
+
+
+def det(A):
+    return mp.det(_square(A, "a determinant"))
+
+
+def vect(A):
+    """The book's vect(A) (Angeles (2.40)): the axial vector of A's skew part."""
+    A = _square(A, "vect")
+    if A.rows != 3:
+        raise NotCovered("vect of a matrix that is no 3x3")
+    return mp.matrix([A[2, 1] - A[1, 2], A[0, 2] - A[2, 0], A[1, 0] - A[0, 1]]) / 2
+
+
+def norm(a):
+    """The Euclidean norm of a vector, the absolute value of a scalar."""
+    if is_matrix(a):
+        if a.cols != 1:
+            raise NotCovered("a norm of a matrix")
+        return mp.sqrt(mp.fsum(abs(a[i]) ** 2 for i in range(a.rows)))
+    return abs(a)
+
+
+def expm(a):
+    if is_matrix(a):
+        return mp.expm(_square(a, "an exponential"))
+    return mp.exp(a)
+
+
+def logm(a):
+    if is_matrix(a):
+        out = mp.logm(_square(a, "a logarithm"))
+        return out.apply(lambda z: z.real if abs(z.imag) < mp.mpf(10) ** (-mp.mp.dps + 5)
+                         else z)
+    return mp.log(a)
+
+
+def adjoint(T):
+    """Ad of a 4 x 4 homogeneous transform ``[R p; 0 1]`` on twists ``[ω; v]``:
+    ``[R 0; [p]R R]`` (Modern Robotics (3.83))."""
+    if not is_matrix(T) or (T.rows, T.cols) != (4, 4):
+        raise NotCovered("Ad of a value that is no 4x4 transform")
+    R = mp.matrix([[T[i, j] for j in range(3)] for i in range(3)])
+    pR = hat(mp.matrix([T[0, 3], T[1, 3], T[2, 3]])) * R
+    out = mp.zeros(6, 6)
+    for i in range(3):
+        for j in range(3):
+            out[i, j] = out[i + 3, j + 3] = R[i, j]
+            out[i + 3, j] = pR[i, j]
+    return out
+
+
+def small_adjoint(V):
+    """ad of a twist ``[ω; v]``: ``[[ω] 0; [v] [ω]]`` (Modern Robotics (8.38))."""
+    V = scalar(V)
+    if not is_matrix(V) or (V.rows, V.cols) != (6, 1):
+        raise NotCovered("ad of a value that is no twist")
+    W, U = hat(mp.matrix([V[0], V[1], V[2]])), hat(mp.matrix([V[3], V[4], V[5]]))
+    out = mp.zeros(6, 6)
+    for i in range(3):
+        for j in range(3):
+            out[i, j] = out[i + 3, j + 3] = W[i, j]
+            out[i + 3, j] = U[i, j]
+    return out
