@@ -63,6 +63,32 @@ def decls_of(lets: list[Let]) -> list[Decl]:
     return out
 
 
+def notation_lets(latex: str, lets: list[Let], name: str) -> list[Let]:
+    """The lines of the notation ``name`` that declare a glyph the LaTeX or a model
+    mentions and no ``--let`` declares (its functions too), as plain declarations: the
+    second semantics reads their NAME, KIND and LaTeX as it reads a ``--let``."""
+    from rigidsym.latex.declgraph import glyph_keys
+    from rigidsym.latex.notations import notation
+
+    table = notation(name)
+    own = {x.key for x in lets}
+    out: list[Let] = []
+    todo = [latex] + [x.latex for x in lets if x.latex]
+    seen: set[str] = set()
+    while todo:
+        for key in glyph_keys(todo.pop()) - seen:
+            seen.add(key)
+            if key in own:
+                continue
+            x = next((f for f in table.functions if f.key == key), None) or table.let_for(key)
+            if x is not None and x.key not in own:
+                own.add(x.key)
+                out.append(x)
+                if x.latex:
+                    todo.append(x.latex)
+    return out
+
+
 def cross_check(latex: str, let, verdict: str, *, notation=None, book=None,
                 modules=()) -> str:
     """The second semantics' word on ``verdict``: a note for the reading.
@@ -83,19 +109,23 @@ def cross_check(latex: str, let, verdict: str, *, notation=None, book=None,
     """
     if verdict not in ("verified", "does-not-hold"):
         return ""
-    if notation or book or modules:
-        return ("second semantics: not applied (the meanings of --notation, --book and "
-                "--module are the reader's)")
+    if book or modules:
+        return ("second semantics: not applied (the meanings of --book and --module are the "
+                "reader's)")
     try:
         lets = read_lets(let)
         lets += declared_lets(latex, lets)
-        found = residuals(tree(latex), decls_of(lets), POINTS)
+        if notation:
+            lets += notation_lets(latex, lets, notation)
+        found = residuals(tree(latex), decls_of(lets), POINTS, free=not notation)
     except NotCovered as exc:
         if REFUSE_UNCOVERED:
             raise BadInput(f"--latex: the second semantics does not evaluate {exc}, and a "
                            f"verdict of the symbolic path alone is not given") from None
         return f"second semantics: not covered ({exc}); the verdict rests on the symbolic path"
-    except (LatexError, ValueError, ArithmeticError):
+    except (LatexError, BadInput):
+        return "second semantics: not covered (a declaration it cannot read)"
+    except Exception:  # noqa: BLE001 -- mpmath's own failure at a point (a singular matrix)
         return "second semantics: not covered (its evaluation failed at a point)"
     worst = max(found, key=lambda r: r.relative)
     if verdict == "verified" and worst.relative > VANISHES:

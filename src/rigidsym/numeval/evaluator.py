@@ -91,8 +91,10 @@ class Env:
     the point's sampled values (shared by every environment of one point)."""
 
     def __init__(self, decls: dict, point: dict, rng: random.Random, binds=None,
-                 parent: Env | None = None, depth: int = 0):
+                 parent: Env | None = None, depth: int = 0, free: bool | None = None):
         self.decls, self.point, self.rng = decls, point, rng
+        self.free = point.setdefault(" free", True) if free is None else free
+        point[" free"] = self.free
         self.binds, self.parent, self.depth = dict(binds or {}), parent, depth
         self.memo: dict = {}
         self.names = point.setdefault("", {})  # glyph key -> its LaTeX, for messages
@@ -120,6 +122,9 @@ class Env:
                 raise NotCovered(f"{text_of(tree)}, a function of time")
             return sample(d.kind, self.rng)
         letter, bold, plain = _base_letter(tree)
+        if not self.free:
+            raise NotCovered(f"the glyph {text_of(tree)}, which no declaration names (a "
+                             f"notation's meaning)")
         if not letter or not plain and not _subscripted_name(tree):
             raise NotCovered(f"the undeclared glyph {text_of(tree)}")
         if bold and letter.islower():
@@ -187,7 +192,21 @@ class Evaluator:
 
     def r_cross(self, t):
         a, b = self._kids(t)
-        return V.cross(self.value(a), self.value(b))
+        a, b = self.value(a), self.value(b)
+        if V.shape(V.scalar(a)) == (6, 1):  # Featherstone's spatial cross product (2.31)
+            return V.mul(V.spatial_cross(a), b)
+        return V.cross(a, b)
+
+    def r_cross_dual(self, t):
+        a, b = self._kids(t)
+        return V.mul(V.spatial_cross(self.value(a), dual=True), self.value(b))
+
+    def r_cross_op(self, t):
+        a = self.value(self._kids(t)[0])
+        dual = "*" in str(t.children[-1]) or "ast" in str(t.children[-1])
+        if V.shape(V.scalar(a)) == (3, 1) and not dual:
+            return V.hat(a)
+        return V.spatial_cross(a, dual=dual)
 
     def r_dot(self, t):
         a, b = self._kids(t)
@@ -290,10 +309,19 @@ class Evaluator:
     def _special(self, t):
         """A plain ``I`` (the identity, sized by its neighbours), ``I_3``, ``I_{3\\times 3}``,
         ``I_n``."""
+        kids = t.children
+        if kids and isinstance(kids[0], lark.Tree) and kids[0].data in ("zero", "one") \
+                and len(kids) == 2 and isinstance(kids[1], lark.Tree):
+            dims = _dims(kids[1])  # \mathbf{1}_{3\times 3}, \mathbf{0}_{1\times 3}
+            if dims is None:
+                return None
+            if kids[0].data == "zero":
+                return mp.zeros(*dims)
+            return mp.eye(dims[0]) if dims[0] == dims[1] else None
         letter, bold, plain = _base_letter(t)
         if letter == "O" and bold and plain:
             return V.Zero()  # the books' bold O: a zero block
-        if letter != "I" or bold:
+        if letter != "I":
             return None
         if plain:
             return V.Eye()
@@ -303,11 +331,8 @@ class Evaluator:
         toks = [str(c) for c in sub.children if isinstance(c, lark.Token)]
         if toks == ["n"]:
             return V.Eye()
-        if toks and toks[0].isdigit() and all(x == toks[0] for x in toks) and (
-                len(toks) == 1 or (len(toks) == 2 and any(
-                    isinstance(c, lark.Tree) and c.data == "times" for c in sub.children))):
-            return V.Eye(int(toks[0]))
-        return None
+        dims = _dims(sub)
+        return V.Eye(dims[0]) if dims and dims[0] == dims[1] else None
 
     def _entries(self, t):
         """``q_{1:3}``: entries 1 to 3 of the vector q (1-based, inclusive)."""
@@ -488,6 +513,20 @@ class Evaluator:
         return _combine(f, [1, -8, 8, -1], 12 * h)
 
 
+def _dims(sub) -> tuple[int, int] | None:
+    """The size a subscript writes: ``_3`` (3 x 3 or a 3-vector's 3 x 1 where a zero),
+    ``_{3\\times 3}``, ``_{1\\times 3}``; ``None`` for anything else."""
+    if not isinstance(sub, lark.Tree) or sub.data != "subscript":
+        return None
+    toks = [str(c) for c in sub.children if isinstance(c, lark.Token)]
+    times = [c for c in sub.children if isinstance(c, lark.Tree) and c.data == "times"]
+    if len(toks) == 1 and toks[0].isdigit() and not times:
+        return (int(toks[0]), int(toks[0]))
+    if len(toks) == 2 and all(x.isdigit() for x in toks) and len(times) == 1:
+        return (int(toks[0]), int(toks[1]))
+    return None
+
+
 def _explicit(v):
     if isinstance(v, V.Eye | V.Zero):
         raise NotCovered("the derivative of an unsized identity or zero")
@@ -539,7 +578,7 @@ def _block(e, h, w, t):
     if isinstance(e, V.Eye):
         if h != w:
             raise NotCovered(f"an identity block of {h}x{w} in {text_of(t)!r}")
-        return mp.eye(h)
+        return e.c * mp.eye(h)
     if V.is_matrix(e) and (e.rows, e.cols) == (h, w):
         return e
     if not V.is_matrix(e) and h == w == 1:
@@ -551,7 +590,7 @@ def _size(v):
     if V.is_matrix(v):
         return max((abs(x) for x in v), default=mp.mpf(0))
     if isinstance(v, V.Eye):
-        return mp.mpf(1)
+        return abs(v.c)
     if isinstance(v, V.Zero):
         return mp.mpf(0)
     return abs(v)
@@ -560,6 +599,8 @@ def _size(v):
 def _difference(a, b, where: str):
     """``(|a - b|, size of the terms)``, an unsized identity or zero taking the other
     side's shape."""
+    if isinstance(a, V.Eye) and isinstance(b, V.Eye) and not a.n and not b.n:
+        return abs(a.c - b.c), max(abs(a.c), abs(b.c), mp.mpf(1))
     a2, b2 = V.sized(a, b), V.sized(b, a)
     a2, b2 = V.sized(a2, b2), V.sized(b2, a2)
     if V.is_matrix(a2) != V.is_matrix(b2):
@@ -573,7 +614,8 @@ def _difference(a, b, where: str):
     return _size(a2 - b2), max(_size(a2), _size(b2), mp.mpf(1))
 
 
-def residuals(tree, decls: list[Decl], points: int = 6, seed: int = 62) -> list[Residual]:
+def residuals(tree, decls: list[Decl], points: int = 6, seed: int = 62,
+              free: bool = True) -> list[Residual]:
     """Each relation of ``tree`` (a parse of the statement) at ``points`` random points.
 
     Args:
@@ -581,6 +623,8 @@ def residuals(tree, decls: list[Decl], points: int = 6, seed: int = 62) -> list[
         decls: the ``--let`` declarations as :class:`Decl` (glyph trees, kinds, models).
         points: how many points.
         seed: the sampler's seed (a check is reproducible).
+        free: an undeclared glyph is free with the book's conventional shape; ``False``
+            (a book's notation gives meanings): it is not covered.
 
     Returns:
         One :class:`Residual` per relation and point (``relative``: the largest entry of
@@ -598,7 +642,7 @@ def residuals(tree, decls: list[Decl], points: int = 6, seed: int = 62) -> list[
     with mp.workdps(DIGITS):
         for _ in range(points):
             point: dict = {}
-            env = Env(table, point, rng)
+            env = Env(table, point, rng, free=free)
             ev = Evaluator(env)
             n = 0
             for chain in chains:
@@ -609,5 +653,6 @@ def residuals(tree, decls: list[Decl], points: int = 6, seed: int = 62) -> list[
                     diff, size = _difference(vals[0], vals[k], f"relation {n}")
                     names = point.get("", {})
                     out.append(Residual(n, vals[0], vals[k], diff / size,
-                                        {names.get(g, g): v for g, v in point.items() if g}))
+                                        {names.get(g, g): v for g, v in point.items()
+                                         if g.strip()}))
     return out

@@ -9,7 +9,7 @@ import mpmath as mp
 
 __all__ = ["NotCovered", "Eye", "Zero", "shape", "add", "neg", "mul", "cross", "dot",
            "transpose", "inverse", "power", "hat", "vee", "trace", "det", "vect", "norm",
-           "expm", "logm", "adjoint", "small_adjoint", "sized", "scalar"]
+           "expm", "logm", "adjoint", "small_adjoint", "spatial_cross", "sized", "scalar"]
 
 
 class NotCovered(ValueError):
@@ -18,10 +18,11 @@ class NotCovered(ValueError):
 
 
 class Eye:
-    """An identity whose size the other operand gives (``\\mathbf{1}``, a plain ``I``)."""
+    """``c`` times an identity whose size the other operand gives (``\\mathbf{1}``, a plain
+    ``I``, ``I\\theta``)."""
 
-    def __init__(self, n: int | None = None):
-        self.n = n
+    def __init__(self, n: int | None = None, c=1):
+        self.n, self.c = n, c
 
 
 class Zero:
@@ -49,8 +50,8 @@ def sized(v, like):
     if isinstance(v, Eye):
         n = v.n or (like.rows if is_matrix(like) else None)
         if n is None:
-            return mp.mpf(1)
-        return mp.eye(n)
+            return v if isinstance(like, Eye | Zero) or not v.n else v.c * mp.eye(v.n)
+        return v.c * mp.eye(n)
     if isinstance(v, Zero):
         return mp.zeros(like.rows, like.cols) if is_matrix(like) else mp.mpf(0)
     return scalar(v)
@@ -74,7 +75,11 @@ def add(a, b):
         return b
     if isinstance(b, Zero):
         return a
+    if isinstance(a, Eye) and isinstance(b, Eye) and not a.n and not b.n:
+        return Eye(None, a.c + b.c)
     a, b = _pair(a, b)
+    if isinstance(a, Eye) or isinstance(b, Eye):
+        raise NotCovered("a sum of an identity and a scalar")
     if is_matrix(a) != is_matrix(b):
         s, m = (a, b) if is_matrix(b) else (b, a)
         if s == 0:
@@ -89,7 +94,7 @@ def neg(a):
     if isinstance(a, Zero):
         return a
     if isinstance(a, Eye):
-        return mp.mpf(-1) if not a.n else -mp.eye(a.n)
+        return Eye(a.n, -a.c)
     return -a
 
 
@@ -98,10 +103,14 @@ def mul(a, b):
     1 x 1 matrix) times anything; an identity or zero takes the other's size."""
     if isinstance(a, Zero) or isinstance(b, Zero):
         return Zero()
+    if isinstance(a, Eye) and isinstance(b, Eye) and not a.n and not b.n:
+        return Eye(None, a.c * b.c)
     if isinstance(a, Eye) and not a.n:
-        return b
+        return Eye(None, a.c * b) if not is_matrix(b) and not isinstance(b, Eye) else \
+            mul(a.c, b)
     if isinstance(b, Eye) and not b.n:
-        return a
+        return Eye(None, b.c * a) if not is_matrix(a) and not isinstance(a, Eye) else \
+            mul(a, b.c)
     a, b = sized(a, b), sized(b, a)
     if not is_matrix(a) or not is_matrix(b):
         return a * b
@@ -142,7 +151,9 @@ def transpose(a):
 
 def inverse(a):
     if isinstance(a, Eye):
-        return a
+        if a.c == 0:
+            raise NotCovered("the inverse of 0")
+        return Eye(a.n, 1 / a.c)
     if is_matrix(a):
         if a.rows != a.cols:
             raise NotCovered(f"the inverse of a {a.rows}x{a.cols} matrix")
@@ -154,8 +165,10 @@ def inverse(a):
 
 def power(a, n: int):
     if not is_matrix(a):
-        if isinstance(a, Eye | Zero):
+        if isinstance(a, Zero):
             return a
+        if isinstance(a, Eye):
+            return Eye(a.n, a.c ** n)
         return a ** n
     if a.rows != a.cols:
         raise NotCovered(f"a power of a {a.rows}x{a.cols} matrix")
@@ -266,3 +279,13 @@ def small_adjoint(V):
             out[i, j] = out[i + 3, j + 3] = W[i, j]
             out[i + 3, j] = U[i, j]
     return out
+
+
+def spatial_cross(v, dual: bool = False):
+    """Featherstone's ``v\\times`` of a spatial motion vector ``[ω; v]``: ``[[ω] 0; [v]
+    [ω]]`` (RBDA (2.31)); ``v\\times^*`` is ``-(v\\times)^T`` (2.32)."""
+    V = scalar(v)
+    if not is_matrix(V) or (V.rows, V.cols) != (6, 1):
+        raise NotCovered("a spatial cross product of a value that is no 6-vector")
+    M = small_adjoint(V)
+    return -M.T if dual else M
