@@ -195,6 +195,8 @@ class Evaluator:
         a, b = self.value(a), self.value(b)
         if V.shape(V.scalar(a)) == (6, 1):  # Featherstone's spatial cross product (2.31)
             return V.mul(V.spatial_cross(a), b)
+        if V.shape(V.scalar(a)) == (3, 1) and V.shape(b) == (3, 3):  # r\times E: (r×) E
+            return V.mul(V.hat(a), b)
         return V.cross(a, b)
 
     def r_cross_dual(self, t):
