@@ -19,6 +19,7 @@ from dataclasses import dataclass
 import lark
 import mpmath as mp
 
+from rigidsym.numeval import motion
 from rigidsym.numeval import values as V
 from rigidsym.numeval.sampler import sample
 from rigidsym.numeval.values import NotCovered
@@ -28,6 +29,9 @@ __all__ = ["DIGITS", "Decl", "NotCovered", "Residual", "residuals", "glyph_key",
 #: working precision (decimal digits)
 DIGITS = 50
 
+#: the time t of the symbols declared functions of time
+_TIME_TREE = lark.Tree("glyph", [lark.Tree("base", [lark.Token("LETTER", "t")])])
+TIME = "glyph(base(t))"
 _TRANSPOSE = {"T", "\\top", "\\intercal", "\\mathsf{T}", "\\mathrm{T}"}
 _FUNCS = {"\\sin": mp.sin, "\\cos": mp.cos, "\\tan": mp.tan, "\\arctan": mp.atan,
           "\\arccos": mp.acos, "\\cot": mp.cot, "\\sec": mp.sec, "\\csc": mp.csc}
@@ -111,6 +115,11 @@ class Env:
             return self.memo[key]
         if d is not None and d.params:
             raise NotCovered(f"the --let function {text_of(tree)} without its arguments")
+        if d is not None and d.timed and d.kind:  # X(t): KIND, its motion at this t
+            if key not in self.point:
+                self.point[key] = motion.curve(d.kind, self.rng)
+                self.names[key] = text_of(tree)
+            return motion.at(self.point[key], V.scalar(self.lookup(TIME, _TIME_TREE)))
         if key not in self.point:
             self.point[key] = self._draw(key, tree, d)
             self.names[key] = text_of(tree)
@@ -118,9 +127,9 @@ class Env:
 
     def _draw(self, key: str, tree, d):
         if d is not None and d.kind:
-            if d.timed:
-                raise NotCovered(f"{text_of(tree)}, a function of time")
             return sample(d.kind, self.rng)
+        if key == TIME:  # the time of the functions of time, whatever the notation
+            return sample("scalar", self.rng)
         letter, bold, plain = _base_letter(tree)
         if not self.free:
             raise NotCovered(f"the glyph {text_of(tree)}, which no declaration names (a "
@@ -302,6 +311,18 @@ class Evaluator:
         key = glyph_key(t)
         if key in self.env.decls or key in self.env.binds:
             return self.env.lookup(key, t)
+        accent = str(t.children[0])
+        if accent in ("\\dot", "\\ddot") and len(t.children) == 2:
+            inner = t.children[1]
+            if inner.data == "bare":
+                inner = lark.Tree("glyph", [lark.Tree("base", list(inner.children))])
+            d = self.env.decls.get(glyph_key(inner))
+            if d is not None and d.timed:  # the rate of a function of time
+                v = self._derivative(inner, _TIME_TREE, t)
+                if accent == "\\dot":
+                    return v
+                return self._derivative(lark.Tree("accented", [lark.Token("ACCENT", "\\dot"),
+                                                               inner]), _TIME_TREE, t)
         raise NotCovered(f"the undeclared glyph {text_of(t)} (an accent's meaning is the "
                          f"reader's)")
 
@@ -346,10 +367,12 @@ class Evaluator:
         tok = sub.children[0]
         if not (isinstance(tok, lark.Token) and tok.type == "SUBRANGE"):
             if isinstance(tok, lark.Token) and tok.type == "SUBATOM":
-                base = lark.Tree("glyph", [t.children[0]])
-                if glyph_key(base) in self.env.decls:
-                    raise NotCovered(f"{text_of(t)}: a subscript of the declared "
-                                     f"{text_of(base)} (a name or an entry)")
+                letter = _base_letter(t)[0]
+                for d in self.env.decls.values():  # q_4 beside a declared q or \mathbf{q}
+                    if isinstance(d.name, lark.Tree) and _base_letter(d.name)[0] == letter \
+                            and _base_letter(d.name)[2]:
+                        raise NotCovered(f"{text_of(t)}: a subscript of the declared "
+                                         f"{text_of(d.name)} (a name or an entry)")
             return None
         lo, hi = (int(x) for x in str(tok).replace(" ", "").split(":"))
         base = lark.Tree("glyph", [t.children[0]])
@@ -439,8 +462,21 @@ class Evaluator:
     def r_apply(self, t):
         f, arg = t.children[0], t.children[1]
         sup = t.children[2] if len(t.children) > 2 else None
+        if sup is not None and not self._applies(f, arg):  # c(a + b)^2: c times the power
+            return V.mul(self.value(f), self._raise(self.value(arg), sup, t))
         v = self._call(f, [arg], t)
         return self._raise(v, sup, t) if sup is not None else v
+
+    def _applies(self, f, arg) -> bool:
+        """``f(arg)`` is an application: a --let function, or a model (or a function of
+        time) at a scalar glyph."""
+        d = self.env.decls.get(glyph_key(f))
+        if d is None:
+            return False
+        if d.params:
+            return True
+        return (d.body is not None or d.timed) and isinstance(arg, lark.Tree) \
+            and arg.data == "glyph" and not V.is_matrix(V.scalar(self.value(arg)))
 
     def r_apply_many(self, t):
         kids = self._kids(t)
@@ -451,8 +487,7 @@ class Evaluator:
 
     def r_apply_pre(self, t):
         post, sup, arg = t.children[0], t.children[1], t.children[2]
-        d = self.env.decls.get(glyph_key(post)) if isinstance(post, lark.Tree) else None
-        if d is not None and d.params:
+        if isinstance(post, lark.Tree) and self._applies(post, arg):  # R^T(\theta)
             return self._raise(self._call(post, [arg], t), sup, t)
         return V.mul(self._raise(self.value(post), sup, t), self.value(arg))
 
@@ -468,8 +503,8 @@ class Evaluator:
         if d is None or not d.params:
             if many:
                 raise NotCovered(f"{text_of(f)} applied to several arguments")
-            if d is not None and d.timed:
-                raise NotCovered(f"{text_of(t)}, a function of time")
+            if d is not None and d.timed and glyph_key(args[0]) == TIME:
+                return self.value(f)  # X(t) of a function of time: X at t
             return V.mul(self.value(f), self.value(args[0]))  # a product, as written
         if len(args) != len(d.params):
             raise NotCovered(f"{text_of(t)}: {len(args)} arguments of a function of "
@@ -496,9 +531,6 @@ class Evaluator:
     def _derivative(self, expr, var, t):
         key = glyph_key(var)
         d = self.env.decls.get(key)
-        if any(x.timed for x in self.env.decls.values()):
-            raise NotCovered(f"a derivative beside symbols declared functions of time "
-                             f"({text_of(t)!r})")
         if d is not None and (d.body is not None or d.params):
             raise NotCovered(f"a derivative by the model {text_of(var)}")
         x0 = V.scalar(self.value(var))
