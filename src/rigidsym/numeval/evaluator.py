@@ -35,6 +35,7 @@ TIME = "glyph(base(t))"
 _TRANSPOSE = {"T", "\\top", "\\intercal", "\\mathsf{T}", "\\mathrm{T}"}
 _FUNCS = {"\\sin": mp.sin, "\\cos": mp.cos, "\\tan": mp.tan, "\\arctan": mp.atan,
           "\\arccos": mp.acos, "\\cot": mp.cot, "\\sec": mp.sec, "\\csc": mp.csc}
+_INVERSES = {"\\sin": mp.asin, "\\cos": mp.acos, "\\tan": mp.atan}
 _OPS = {"tr": V.trace, "Tr": V.trace, "trace": V.trace, "det": V.det, "vect": V.vect}
 
 
@@ -74,7 +75,8 @@ def glyph_key(t) -> str:
     """A glyph's identity: its subtree's rules and tokens (``\\mathbf Q`` and ``\\mathbf{Q}``
     parse alike)."""
     if isinstance(t, lark.Token):
-        return str(t).strip()
+        return {"\\widehat": "\\hat", "\\widetilde": "\\tilde"}.get(str(t).strip(),
+                                                                   str(t).strip())
     return f"{t.data}(" + ",".join(glyph_key(c) for c in t.children) + ")"
 
 
@@ -208,6 +210,31 @@ class Evaluator:
             return V.mul(V.hat(a), b)
         return V.cross(a, b)
 
+    def r_dot_cross(self, t):
+        """``a \\cdot b \\times c``: the triple product a·(b×c) (a scalar a: a (b×c))."""
+        a, b, c = (self.value(k) for k in self._kids(t))
+        return V.dot(a, V.cross(b, c))
+
+    def r_cross_dot(self, t):
+        """``a \\times b \\cdot c``: (a×b)·c (a scalar c: (a×b) c)."""
+        a, b, c = (self.value(k) for k in self._kids(t))
+        return V.dot(V.cross(a, b), c)
+
+    def r_dot_chain(self, t):
+        """``a \\cdot s \\cdot b``: the scalars' product times the scalar product of the
+        (at most two) vectors."""
+        vals = [V.scalar(self.value(k)) for k in self._kids(t)]
+        vecs = [v for v in vals if V.is_matrix(v)]
+        if len(vecs) > 2 or any(v.cols != 1 for v in vecs):
+            raise NotCovered(f"a chain of dots {text_of(t)!r}")
+        out = mp.mpf(1)
+        for v in vals:
+            if not V.is_matrix(v):
+                out = out * v
+        if len(vecs) == 2:
+            return out * V.dot(vecs[0], vecs[1])
+        return V.mul(out, vecs[0]) if vecs else out
+
     def r_cross_dual(self, t):
         a, b = self._kids(t)
         return V.mul(V.spatial_cross(self.value(a), dual=True), self.value(b))
@@ -339,7 +366,8 @@ class Evaluator:
             if dims is None:
                 return None
             if kids[0].data == "zero":
-                return mp.zeros(*dims)
+                single = len([c for c in kids[1].children if isinstance(c, lark.Token)]) == 1
+                return V.Zero() if single else mp.zeros(*dims)
             return mp.eye(dims[0]) if dims[0] == dims[1] else None
         letter, bold, plain = _base_letter(t)
         if letter == "O" and bold and plain:
@@ -413,8 +441,16 @@ class Evaluator:
 
     def r_func_power(self, t):
         name, sup = str(t.children[0]), t.children[1]
-        v = self._func(name, self.value(t.children[2]), t)
+        if str(sup.children[0]).replace(" ", "") == "-1" and name in _INVERSES:
+            v = None
+        else:
+            v = self._func(name, self.value(t.children[2]), t)
         s = str(sup.children[0]).replace(" ", "")
+        if s == "-1" and name in _INVERSES:  # \cos^{-1} x: arccos x
+            x = V.scalar(self.value(t.children[2]))
+            if V.is_matrix(x) or isinstance(x, V.Eye | V.Zero):
+                raise NotCovered(f"{name}^{{-1}} of a matrix")
+            return _INVERSES[name](x)
         if not s.isdigit():
             raise NotCovered(f"the power {s} of {name}")
         return V.power(v, int(s))
@@ -494,6 +530,10 @@ class Evaluator:
     def _call(self, f, args, t, many: bool = False):
         key = glyph_key(f)
         d = self.env.decls.get(key)
+        if d is None and not many:
+            primed = self._primed(f, args[0], t)  # f'(x) of a --let function f(x)
+            if primed is not None:
+                return primed
         if d is not None and d.body is not None and not d.params and not many:
             # R(\theta) of a model R: the model itself, as the books write its variable
             if isinstance(args[0], lark.Tree) and args[0].data == "glyph":
@@ -509,7 +549,11 @@ class Evaluator:
         if len(args) != len(d.params):
             raise NotCovered(f"{text_of(t)}: {len(args)} arguments of a function of "
                              f"{len(d.params)}")
-        binds = {glyph_key(p): self.value(a) for p, a in zip(d.params, args, strict=True)}
+        return self._apply_values(d, [self.value(a) for a in args], t)
+
+    def _apply_values(self, d, vals, t):
+        """The function ``d`` at the argument values ``vals``."""
+        binds = {glyph_key(p): v for p, v in zip(d.params, vals, strict=True)}
         # lexical scope, a fresh environment per application: the globals and the
         # parameters; every model is evaluated again in it, so those built on a parameter
         # see the argument
@@ -518,6 +562,29 @@ class Evaluator:
         if env.depth > 40:
             raise NotCovered(f"{text_of(t)}: applications nested too deep")
         return Evaluator(env).value(d.body)
+
+    def _primed(self, f, arg, t):
+        """Lagrange's ``f'(x)``, ``f''(x)`` of a --let function of one parameter: its
+        derivative at the argument, by central differences of order 4."""
+        if not isinstance(f, lark.Tree) or f.data != "glyph":
+            return None
+        primes = [c for c in f.children if isinstance(c, lark.Token) and c.type == "PRIMES"]
+        if len(primes) != 1:
+            return None
+        bare = lark.Tree("glyph", [c for c in f.children if c is not primes[0]])
+        d = self.env.decls.get(glyph_key(bare))
+        if d is None or len(d.params) != 1:
+            return None
+        n = len(str(primes[0]))
+        x0 = V.scalar(self.value(arg))
+        if V.is_matrix(x0) or n > 2:
+            raise NotCovered(f"the derivative {text_of(t)!r}")
+        h = mp.mpf(10) ** (-DIGITS // 5)
+        if n == 1:
+            f_ = [_explicit(self._apply_values(d, [x0 + k * h], t)) for k in (-2, -1, 1, 2)]
+            return _combine(f_, [1, -8, 8, -1], 12 * h)
+        f_ = [_explicit(self._apply_values(d, [x0 + k * h], t)) for k in (-2, -1, 0, 1, 2)]
+        return _combine(f_, [-1, 16, -30, 16, -1], 12 * h * h)
 
     # ---- derivatives
     def r_deriv_frac(self, t):
@@ -642,7 +709,7 @@ def _difference(a, b, where: str):
         if s != 0:
             raise NotCovered(f"{where}: a scalar and a matrix")
         m = a2 if V.is_matrix(a2) else b2
-        return _size(m), _size(m)
+        return _size(m), max(_size(m), mp.mpf(1))
     if V.is_matrix(a2) and (a2.rows, a2.cols) != (b2.rows, b2.cols):
         raise NotCovered(f"{where}: sides of {a2.rows}x{a2.cols} and {b2.rows}x{b2.cols}")
     return _size(a2 - b2), max(_size(a2), _size(b2), mp.mpf(1))
