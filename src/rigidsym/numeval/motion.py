@@ -10,7 +10,7 @@ import random
 import mpmath as mp
 
 from rigidsym.numeval.sampler import kind_words, sample
-from rigidsym.numeval.values import NotCovered, hat
+from rigidsym.numeval.values import NotCovered, rodrigues
 
 __all__ = ["curve", "at"]
 
@@ -45,8 +45,8 @@ def at(c: tuple, t):
         v = c[1] + c[2] * t + c[3] * t * t
         return v / mp.norm(v)
     if c[0] == "rotation":
-        return c[1] * mp.expm(hat(c[2] * t + c[3] * t * t))
-    R = c[1] * mp.expm(hat(c[2] * t + c[3] * t * t))
+        return c[1] * rodrigues(c[2] * t + c[3] * t * t)
+    R = c[1] * rodrigues(c[2] * t + c[3] * t * t)
     p = c[4] + c[5] * t
     T = mp.eye(4)
     for i in range(3):
