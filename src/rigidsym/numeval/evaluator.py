@@ -13,6 +13,7 @@ Any construct not listed here raises :class:`NotCovered` naming it.
 
 from __future__ import annotations
 
+import itertools
 import random
 from dataclasses import dataclass
 
@@ -62,6 +63,8 @@ class Residual:
     rhs: object
     relative: object
     point: dict
+    reading: int = 0
+    unused: bool = False
 
 
 def text_of(t) -> str:
@@ -77,6 +80,11 @@ def glyph_key(t) -> str:
     if isinstance(t, lark.Token):
         return {"\\widehat": "\\hat", "\\widetilde": "\\tilde"}.get(str(t).strip(),
                                                                    str(t).strip())
+    if t.data == "accented" and len(t.children) == 2 and isinstance(t.children[1], lark.Tree) \
+            and len(t.children[1].children) == 1 and t.children[1].children[0].data == "base" \
+            and len(t.children[1].children[0].children) == 1:  # \hat{\omega} is \hat\omega
+        return glyph_key(lark.Tree("accented_bare", [
+            t.children[0], lark.Tree("bare", t.children[1].children[0].children)]))
     return f"{t.data}(" + ",".join(glyph_key(c) for c in t.children) + ")"
 
 
@@ -109,6 +117,8 @@ class Env:
         if key in self.binds:
             return self.binds[key]
         d = self.decls.get(key)
+        if d is not None:
+            self.point.setdefault(" used", set()).add(key)
         if d is not None and d.body is not None and not d.params:
             if key not in self.memo:
                 if self.depth > 40:
@@ -255,21 +265,31 @@ class Evaluator:
         return self.value(self._kids(t)[0])
 
     def r_sized(self, t):
-        inner = self.value(self._kids(t)[0])
+        inner = self._kids(t)[0]
         if "[" in str(t.children[0]):
             return self._bracket(inner)
-        return inner
+        return self.value(inner)
 
     def r_bracket(self, t):
-        return self._bracket(self.value(self._kids(t)[0]))
+        return self._bracket(self._kids(t)[0])
 
-    def _bracket(self, v):
-        """``[x]``: the hat of a 3- or 6-vector (the books' cross-product matrix), else a
-        bracket that groups."""
-        v = V.scalar(v)
+    def _bracket(self, inner):
+        """``[x]``: the hat of a 3- or 6-vector (the books' cross-product matrix); around
+        more than one symbol (``[R\\mathbf{a}]``) a choice with a bracket that groups (the
+        readings whose sides have one shape are kept)."""
+        v = V.scalar(self.value(inner))
         if V.is_matrix(v) and v.cols == 1 and v.rows in (3, 6):
-            return V.hat(v)
+            if inner.data in ("glyph", "accented", "accented_bare"):
+                return V.hat(v)
+            return V.hat(v) if self._choose(f"bracket {text_of(inner)}",
+                                            ("hat", "group")) == "hat" else v
         return v
+
+    def _choose(self, key: str, options: tuple[str, ...]) -> str:
+        """The reading taken at the choice point ``key`` (its first option unless the
+        enumeration of :func:`residuals` says otherwise); the point recorded as met."""
+        self.env.point.setdefault(" met", {})[key] = options
+        return self.env.point.get(" choices", {}).get(key, options[0])
 
     # ---- powers
     def r_power(self, t):
@@ -398,9 +418,14 @@ class Evaluator:
                 letter = _base_letter(t)[0]
                 for d in self.env.decls.values():  # q_4 beside a declared q or \mathbf{q}
                     if isinstance(d.name, lark.Tree) and _base_letter(d.name)[0] == letter \
-                            and _base_letter(d.name)[2]:
-                        raise NotCovered(f"{text_of(t)}: a subscript of the declared "
-                                         f"{text_of(d.name)} (a name or an entry)")
+                            and _base_letter(d.name)[2] and str(tok).isdigit():
+                        if self._choose(f"entries of {letter}", ("name", "entry")) == "name":
+                            return None
+                        v = self.value(d.name)
+                        k = int(str(tok))
+                        if not V.is_matrix(v) or v.cols != 1 or not 1 <= k <= v.rows:
+                            raise NotCovered(f"{text_of(t)}: entry {k} of {text_of(d.name)}")
+                        return v[k - 1]
             return None
         lo, hi = (int(x) for x in str(tok).replace(" ", "").split(":"))
         base = lark.Tree("glyph", [t.children[0]])
@@ -492,7 +517,7 @@ class Evaluator:
     # ---- matrices written out
     def r_matrix(self, t):
         rows = [[self.value(e) for e in self._kids(r)] for r in self._kids(t)]
-        return _assemble(rows, t)
+        return V.assemble(rows, text_of(t))
 
     # ---- applications
     def r_apply(self, t):
@@ -540,6 +565,8 @@ class Evaluator:
                 arg = self.value(args[0])
                 if not V.is_matrix(V.scalar(arg)) and not isinstance(arg, V.Eye | V.Zero):
                     return self.value(f)
+            if self._choose(f"apply {key}", ("product", "apply")) == "apply":
+                return self.value(f)  # X(\mathbf{y}): X itself, applied
         if d is None or not d.params:
             if many:
                 raise NotCovered(f"{text_of(f)} applied to several arguments")
@@ -553,6 +580,7 @@ class Evaluator:
 
     def _apply_values(self, d, vals, t):
         """The function ``d`` at the argument values ``vals``."""
+        self.env.point.setdefault(" used", set()).add(glyph_key(d.name))
         binds = {glyph_key(p): v for p, v in zip(d.params, vals, strict=True)}
         # lexical scope, a fresh environment per application: the globals and the
         # parameters; every model is evaluated again in it, so those built on a parameter
@@ -642,51 +670,6 @@ def _combine(vals, coeffs, den):
     return out / den
 
 
-def _assemble(rows, t):
-    """A bmatrix of scalars, or of blocks (a scalar 0 a zero block of its row's height and
-    column's width)."""
-    if all(not V.is_matrix(V.scalar(e)) and not isinstance(e, V.Eye | V.Zero)
-           for r in rows for e in r):
-        if len({len(r) for r in rows}) != 1:
-            raise NotCovered(f"rows of different lengths in {text_of(t)!r}")
-        return mp.matrix([[V.scalar(e) for e in r] for r in rows])
-    ncol = len(rows[0])
-    if any(len(r) != ncol for r in rows):
-        raise NotCovered(f"block rows of different lengths in {text_of(t)!r}")
-    heights = [next((V.shape(e)[0] for e in r if V.shape(e)), None) for r in rows]
-    widths = [next((V.shape(r[j])[1] for r in rows if V.shape(r[j])), None)
-              for j in range(ncol)]
-    unsized = 3 if any(isinstance(e, V.Eye | V.Zero) for r in rows for e in r) else 1
-    heights = [h if h is not None else unsized for h in heights]
-    widths = [w if w is not None else unsized for w in widths]
-    out = mp.zeros(sum(heights), sum(widths))
-    r0 = 0
-    for i, r in enumerate(rows):
-        c0 = 0
-        for j, e in enumerate(r):
-            blk = _block(e, heights[i], widths[j], t)
-            for a in range(heights[i]):
-                for b in range(widths[j]):
-                    out[r0 + a, c0 + b] = blk[a, b] if V.is_matrix(blk) else blk
-            c0 += widths[j]
-        r0 += heights[i]
-    return out
-
-
-def _block(e, h, w, t):
-    if isinstance(e, V.Zero) or (not V.is_matrix(e) and not isinstance(e, V.Eye) and e == 0):
-        return mp.zeros(h, w)
-    if isinstance(e, V.Eye):
-        if h != w:
-            raise NotCovered(f"an identity block of {h}x{w} in {text_of(t)!r}")
-        return e.c * mp.eye(h)
-    if V.is_matrix(e) and (e.rows, e.cols) == (h, w):
-        return e
-    if not V.is_matrix(e) and h == w == 1:
-        return e
-    raise NotCovered(f"blocks that do not fit in {text_of(t)!r}")
-
-
 def _size(v):
     if V.is_matrix(v):
         return max((abs(x) for x in v), default=mp.mpf(0))
@@ -716,7 +699,7 @@ def _difference(a, b, where: str):
 
 
 def residuals(tree, decls: list[Decl], points: int = 6, seed: int = 62,
-              free: bool = True) -> list[Residual]:
+              free: bool = True, spread: float = 1) -> list[Residual]:
     """Each relation of ``tree`` (a parse of the statement) at ``points`` random points.
 
     Args:
@@ -726,6 +709,7 @@ def residuals(tree, decls: list[Decl], points: int = 6, seed: int = 62,
         seed: the sampler's seed (a check is reproducible).
         free: an undeclared glyph is free with the book's conventional shape; ``False``
             (a book's notation gives meanings): it is not covered.
+        spread: unconstrained reals (free scalars, vectors' entries) in (-2s, 2s).
 
     Returns:
         One :class:`Residual` per relation and point (``relative``: the largest entry of
@@ -738,22 +722,67 @@ def residuals(tree, decls: list[Decl], points: int = 6, seed: int = 62,
     chains = [c for c in tree.children if isinstance(c, lark.Tree) and c.data == "chain"]
     if not chains:
         raise NotCovered("a statement with no relation")
+    first_error = None
+    try:
+        out, met = _at_points(chains, table, points, seed, free, {}, spread)
+    except NotCovered as exc:
+        out, met, first_error = [], getattr(exc, "met", {}), exc
+    if not met:
+        if first_error is not None:
+            raise first_error
+        return out
+    # choice points: every reading whose evaluation succeeds (sides of one shape) is kept,
+    # each with its own reading number; the rule asks all of them to agree
+    keys = sorted(met)[:3]
+    kept, errors = [], []
+    for combo in itertools.product(*(met[k] for k in keys)):
+        try:
+            rs, _ = _at_points(chains, table, points, seed, free,
+                               dict(zip(keys, combo, strict=True)), spread)
+        except NotCovered as exc:
+            errors.append(exc)
+            continue
+        if rs and any(getattr(r, "unused", False) for r in rs):
+            continue  # a declaration this reading never uses: the reader refuses it
+        kept.append(rs)
+    if not kept:
+        raise first_error or errors[0]
+    for n, rs in enumerate(kept):
+        for r in rs:
+            r.reading = n
+    return [r for rs in kept for r in rs]
+
+
+def _at_points(chains, table, points, seed, free, choices, spread=1):
+    """:func:`residuals` for one reading of its choice points; ``(residuals, met)``, the
+    choice points met (a :class:`NotCovered` carries them as ``met``)."""
     out = []
+    met: dict = {}
     rng = random.Random(seed)
+    rng.spread = spread
     with mp.workdps(DIGITS):
         for _ in range(points):
-            point: dict = {}
+            point: dict = {" choices": choices, " met": met}
             env = Env(table, point, rng, free=free)
             ev = Evaluator(env)
             n = 0
             for chain in chains:
                 sides = [c for c in chain.children if isinstance(c, lark.Tree)]
-                vals = [ev.value(s) for s in sides]
+                try:
+                    vals = [ev.value(s) for s in sides]
+                    _difference(vals[0], vals[-1], "relation")  # one shape, or not covered
+                except NotCovered as exc:
+                    exc.met = met
+                    raise
                 for k in range(1, len(vals)):
                     n += 1
                     diff, size = _difference(vals[0], vals[k], f"relation {n}")
                     names = point.get("", {})
-                    out.append(Residual(n, vals[0], vals[k], diff / size,
-                                        {names.get(g, g): v for g, v in point.items()
-                                         if g.strip()}))
-    return out
+                    r = Residual(n, vals[0], vals[k], diff / size,
+                                 {names.get(g, g): v for g, v in point.items()
+                                  if g and not g.startswith(" ")})
+                    out.append(r)
+            unused = bool(set(table) - point.get(" used", set()))
+            for r in out[-n:]:  # this point's relations, once every chain is read
+                r.unused = unused
+    return out, met

@@ -22,7 +22,10 @@ def kind_words(text: str) -> str:
     return t.replace("angle on [0, pi]", "angle in [0, pi]")
 
 
-def _real(rng: random.Random, lo: float = -2.0, hi: float = 2.0):
+def _real(rng: random.Random, lo: float | None = None, hi: float | None = None):
+    if lo is None:  # an unconstrained real: in (-2, 2), or wider where the rng says so
+        spread = getattr(rng, "spread", 1)
+        lo, hi = -2.0 * spread, 2.0 * spread
     # 64 random bits past the float: a point of the working precision, not of a double's
     return mp.mpf(lo) + (mp.mpf(hi) - mp.mpf(lo)) * mp.mpf(rng.getrandbits(120)) / mp.mpf(2) ** 120
 

@@ -10,7 +10,7 @@ import mpmath as mp
 __all__ = ["NotCovered", "Eye", "Zero", "shape", "add", "neg", "mul", "cross", "dot",
            "transpose", "inverse", "power", "hat", "vee", "trace", "det", "vect", "norm",
            "expm", "rodrigues", "logm", "adjoint", "small_adjoint", "spatial_cross", "sized",
-           "scalar"]
+           "scalar", "assemble"]
 
 
 class NotCovered(ValueError):
@@ -305,3 +305,48 @@ def spatial_cross(v, dual: bool = False):
         raise NotCovered("a spatial cross product of a value that is no 6-vector")
     M = small_adjoint(V)
     return -M.T if dual else M
+
+
+def assemble(rows, where: str):
+    """A bmatrix of scalars, or of blocks (a scalar 0 a zero block of its row's height and
+    column's width)."""
+    if all(not is_matrix(scalar(e)) and not isinstance(e, Eye | Zero)
+           for r in rows for e in r):
+        if len({len(r) for r in rows}) != 1:
+            raise NotCovered(f"rows of different lengths in {where!r}")
+        return mp.matrix([[scalar(e) for e in r] for r in rows])
+    ncol = len(rows[0])
+    if any(len(r) != ncol for r in rows):
+        raise NotCovered(f"block rows of different lengths in {where!r}")
+    heights = [next((shape(e)[0] for e in r if shape(e)), None) for r in rows]
+    widths = [next((shape(r[j])[1] for r in rows if shape(r[j])), None)
+              for j in range(ncol)]
+    unsized = 3 if any(isinstance(e, Eye | Zero) for r in rows for e in r) else 1
+    heights = [h if h is not None else unsized for h in heights]
+    widths = [w if w is not None else unsized for w in widths]
+    out = mp.zeros(sum(heights), sum(widths))
+    r0 = 0
+    for i, r in enumerate(rows):
+        c0 = 0
+        for j, e in enumerate(r):
+            blk = _block(e, heights[i], widths[j], where)
+            for a in range(heights[i]):
+                for b in range(widths[j]):
+                    out[r0 + a, c0 + b] = blk[a, b] if is_matrix(blk) else blk
+            c0 += widths[j]
+        r0 += heights[i]
+    return out
+
+
+def _block(e, h, w, where: str):
+    if isinstance(e, Zero) or (not is_matrix(e) and not isinstance(e, Eye) and e == 0):
+        return mp.zeros(h, w)
+    if isinstance(e, Eye):
+        if h != w:
+            raise NotCovered(f"an identity block of {h}x{w} in {where!r}")
+        return e.c * mp.eye(h)
+    if is_matrix(e) and (e.rows, e.cols) == (h, w):
+        return e
+    if not is_matrix(e) and h == w == 1:
+        return e
+    raise NotCovered(f"blocks that do not fit in {where!r}")
