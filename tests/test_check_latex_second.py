@@ -192,3 +192,30 @@ def test_the_corpus_decides_as_before_and_the_second_semantics_covers_it():
             covered += "second semantics (mpmath" in note
             assert "second semantics (mpmath" in note, (e["id"], note)
     assert covered == decided > 250, (covered, decided)
+
+
+def test_a_construct_it_lacks_is_refused_naming_it_never_decided(monkeypatch, capsys):
+    from test_check_latex import _cli
+
+    from rigidsym.numeval.evaluator import Evaluator
+
+    monkeypatch.delattr(Evaluator, "r_cpm")  # as if it had no cross-product matrix
+    latex, let = r"[\mathbf{a}]_\times\mathbf{b} = \mathbf{a}\times\mathbf{b}", [
+        r"\mathbf{a}: vector; \mathbf{b}: vector"]
+    with pytest.raises(BadInput, match=r"does not evaluate .*\(cpm\)"):
+        rigidsym.check_latex(latex, let=let, repairs=False)
+    code, out, err = _cli(capsys, "--latex", latex, "--let", let[0])
+    assert code == 2 and "cpm" in err and "Verdict" not in out, (out, err)
+
+
+def test_a_disagreement_at_the_command_line_is_exit_2_and_no_verdict(monkeypatch, capsys):
+    from test_check_latex import _cli
+
+    from rigidsym.latex.reader_glyphs import GlyphReader
+
+    monkeypatch.setattr(GlyphReader, "_rebind", lambda self, x, over, call: [])
+    code, out, err = _cli(capsys, "--latex", r"F(2\mathbf{u}) = F(\mathbf{u})",
+                          *[a for x in U for a in ("--let", x)])
+    assert code == 2 and "two semantics disagree" in err and "Verdict" not in out, (out, err)
+    errors = [x for x in err.splitlines() if x.startswith("rigidsym: error")]
+    assert "Traceback" not in err and len(errors) == 1, err
