@@ -219,3 +219,43 @@ def test_a_disagreement_at_the_command_line_is_exit_2_and_no_verdict(monkeypatch
     assert code == 2 and "two semantics disagree" in err and "Verdict" not in out, (out, err)
     errors = [x for x in err.splitlines() if x.startswith("rigidsym: error")]
     assert "Traceback" not in err and len(errors) == 1, err
+
+
+# ------------------------------- property: the two semantics agree on random expressions
+def _vector_expressions():
+    from hypothesis import strategies as st
+
+    atoms = st.sampled_from([r"\mathbf{a}", r"\mathbf{b}", r"R\mathbf{a}", r"R^T\mathbf{b}"])
+
+    def extend(inner):
+        return st.one_of(
+            st.tuples(inner, inner).map(lambda p: rf"({p[0]} \times {p[1]})"),
+            st.tuples(inner, inner).map(lambda p: rf"({p[0]} + {p[1]})"),
+            inner.map(lambda e: rf"R{e}"),
+            inner.map(lambda e: rf"s{e}"),
+            st.tuples(inner, inner).map(lambda p: rf"[{p[0]}]_\times {p[1]}"))
+    return st.recursive(atoms, extend, max_leaves=4)
+
+
+def _lets(latex: str) -> list[str]:
+    kinds = {r"\mathbf{a}": "vector", r"\mathbf{b}": "vector", "R": "rotation", "s": "scalar"}
+    return [f"{k}: {v}" for k, v in kinds.items() if k in latex.replace(r"\times", "")]
+
+
+@pytest.mark.slow
+def test_the_two_semantics_agree_on_random_vector_identities():
+    """R(x × y) = Rx × Ry and x × y = -(y × x) for random x, y (true), and x × y = y × x
+    (false unless parallel): every verdict given, none refused as a disagreement."""
+    from hypothesis import given, settings
+
+    @settings(max_examples=10, deadline=None, derandomize=True)
+    @given(_vector_expressions(), _vector_expressions())
+    def check(x, y):
+        for latex, holds in ((rf"R({x} \times {y}) = R{x} \times R{y}", True),
+                             (rf"{x} \times {y} = -({y} \times {x})", True)):
+            r = rigidsym.check_latex(latex, let=_lets(latex), repairs=False)
+            assert r.verdict in ("verified", "does-not-hold"), (latex, r.detail)
+            assert r.verdict == "verified" or not holds, (latex, r.detail)
+            assert "second semantics (mpmath" in _second(r)
+
+    check()
