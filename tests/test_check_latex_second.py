@@ -259,3 +259,39 @@ def test_the_two_semantics_agree_on_random_vector_identities():
             assert "second semantics (mpmath" in _second(r)
 
     check()
+
+
+# ------------------------- a does-not-hold fails at the symbolic path's own counterexample
+def _checked_at(monkeypatch, point: dict):
+    """The symbolic path mutated to give ``point`` (atom -> exact) as its counterexample."""
+    import rigidsym.checking.checker as checker
+
+    real = checker.check
+
+    def moved(*args, **kwargs):
+        out = real(*args, **kwargs)
+        if out.counterexample:
+            out.counterexample = dict(out.counterexample, point=point)
+        return out
+
+    monkeypatch.setattr(checker, "check", moved)
+
+
+def test_a_counterexample_at_which_the_equation_holds_is_refused(monkeypatch):
+    # each fails at random points (the old rule passed them) but holds at the point given:
+    # a counterexample where the sides are equal is the symbolic path's error
+    _checked_at(monkeypatch, {"x": "0"})
+    _refused(r"\sin(2x) = 2\sin x", [])
+    _checked_at(monkeypatch, {"Q_11": "1", "Q_12": "0", "Q_13": "0", "Q_21": "0", "Q_22": "1",
+                              "Q_23": "0", "Q_31": "0", "Q_32": "0", "Q_33": "1",
+                              "a_1": "1", "a_2": "2", "a_3": "3"})
+    _refused(r"\mathbf{Q}\mathbf{a} = \mathbf{a}", [r"\mathbf{Q}: rotation",
+                                                    r"\mathbf{a}: vector"])
+
+
+def test_a_does_not_hold_is_checked_at_its_own_counterexample():
+    r = rigidsym.check_latex(r"\mathbf{Q}\mathbf{a} = \mathbf{a} + x\mathbf{b}",
+                             let=[r"\mathbf{Q}: rotation", r"\mathbf{a}: vector"],
+                             repairs=False)
+    assert r.verdict == "does-not-hold"
+    assert "fails at the symbolic path's counterexample too" in _second(r), r.model

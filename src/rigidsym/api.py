@@ -172,10 +172,14 @@ def check_latex_run(latex, let, book, modules, repairs=True, repair_budget=None,
                          repair_seconds=_seconds(repair_seconds)))
     if reading.others:  # several readings type-check: a verdict only when all agree
         _readings_agree(reading, r, [_check(o.eq, repairs=False) for o in reading.others])
-    from rigidsym.latex.crosscheck import cross_check
+    from rigidsym.latex.crosscheck import cross_check, given_point
 
-    # issue 62: a verdict needs the second, independent semantics to agree
-    second = cross_check(latex, let, r.verdict, notation=notation, book=book, modules=modules)
+    # issue 62: a verdict needs the second, independent semantics to agree (a does-not-hold
+    # at the symbolic path's own counterexample, handed over as plain data)
+    at = given_point(r.counterexample, reading.eq.build()) if r.verdict == "does-not-hold" \
+        else None
+    second = cross_check(latex, let, r.verdict, notation=notation, book=book, modules=modules,
+                         at=at)
     if second:
         reading.notes.append(second)
     r.expected = r.verdict

@@ -19,9 +19,11 @@ from rigidsym.latex.lets import Let, declared_lets, read_lets
 from rigidsym.latex.lexing import tree
 from rigidsym.latex.shapes import LatexError
 from rigidsym.numeval import Decl, NotCovered, residuals
+from rigidsym.numeval.atpoint import residuals_at
 from rigidsym.numeval.evaluator import text_of
 
-__all__ = ["VANISHES", "FAILS", "POINTS", "REFUSE_UNCOVERED", "Disagreement", "cross_check"]
+__all__ = ["VANISHES", "FAILS", "AT_POINT", "POINTS", "REFUSE_UNCOVERED", "Disagreement",
+           "cross_check", "given_point"]
 
 #: a residual at most this (relative to the terms) vanishes: the 50-digit evaluation's
 #: rounding and the order-4 differences' truncation (h = 1e-10: 1e-40) are far below it
@@ -29,6 +31,10 @@ VANISHES = 1e-20
 #: a residual at least this fails (a rounded point moves a true equation's residual by
 #: about 1e-50, never by this)
 FAILS = 1e-12
+#: at the symbolic path's counterexample (its exact values rounded to 60 digits, evaluated
+#: at 50), an equation that holds there has a relative residual of about 1e-48: one that
+#: fails must exceed this bound, else the two semantics disagree
+AT_POINT = 1e-30
 #: the random points of each check (24 more, wider, before a does-not-hold is disagreed)
 POINTS = 4
 #: a construct the second semantics lacks: refused (True; it covers every verdict of the
@@ -90,7 +96,7 @@ def notation_lets(latex: str, lets: list[Let], name: str) -> list[Let]:
 
 
 def cross_check(latex: str, let, verdict: str, *, notation=None, book=None,
-                modules=()) -> str:
+                modules=(), at=None) -> str:
     """The second semantics' word on ``verdict``: a note for the reading.
 
     Args:
@@ -99,6 +105,8 @@ def cross_check(latex: str, let, verdict: str, *, notation=None, book=None,
         verdict: the symbolic path's verdict.
         notation, book, modules: a book's notation, a glyph table's section or modules
             lending symbols: meanings the second semantics does not know (not applied).
+        at: the symbolic path's counterexample as plain data (:func:`given_point`), or
+            ``None``: a does-not-hold must fail there too.
 
     Returns:
         A note: what the second semantics found (or why it did not apply).
@@ -138,6 +146,7 @@ def cross_check(latex: str, let, verdict: str, *, notation=None, book=None,
             found = residuals(tree(latex), decls_of(lets), 24, seed=63, spread=4)
         except Exception:  # noqa: BLE001 -- a point it cannot evaluate: the first points'
             pass
+    said = _at_counterexample(latex, lets, at) if verdict == "does-not-hold" and at else ""
     for n in {r.reading for r in found}:  # each reading that type-checks fails somewhere
         mine = max((r for r in found if r.reading == n), key=lambda r: r.relative)
         if verdict == "does-not-hold" and mine.relative < FAILS:
@@ -146,7 +155,68 @@ def cross_check(latex: str, let, verdict: str, *, notation=None, book=None,
                                                     f" at {POINTS} random points"))
     return (f"second semantics (mpmath, 50 digits, {POINTS} random points): "
             f"{'the sides agree' if verdict == 'verified' else 'the sides differ'} "
-            f"(largest relative residual {float(worst.relative):.1e})")
+            f"(largest relative residual {float(worst.relative):.1e}){said}")
+
+
+def given_point(counterexample: dict | None, statement) -> list | None:
+    """The symbolic path's counterexample as plain data for the second semantics:
+    ``[(LaTeX of a book symbol, value)]``, a value a decimal string (60 digits) or rows of
+    them; each book symbol of the statement's model whose value the point fixes, and each
+    atom of the point that no model value holds (a free scalar, by its name). ``None``
+    when there is no point."""
+    import sympy as sp
+
+    from rigidsym.printing import notation as nt
+
+    if not counterexample or not counterexample.get("point"):
+        return None
+    pt = {k: sp.sympify(v) for k, v in counterexample["point"].items()}
+    out, held = [], set()
+
+    def plain(v):
+        v = sp.N(v, 60)
+        if v.free_symbols or not (v.is_real or v.is_Matrix):
+            raise ValueError("not a real number")
+        return [[str(sp.N(x, 60)) for x in v.row(i)] for i in range(v.rows)] \
+            if v.is_Matrix else str(v)
+
+    for s, v in statement.model.items():
+        atoms = {a for a in getattr(v, "free_symbols", ()) if a.name in pt}
+        held |= {a.name for a in atoms}
+        try:
+            out.append((nt.latex(s), plain(sp.sympify(v).subs({a: pt[a.name] for a in atoms}))))
+        except (ValueError, TypeError, AttributeError, sp.SympifyError):
+            continue  # a model the point does not fix: its glyph is drawn, and said so
+    for name, v in pt.items():
+        if name not in held and all(nt.latex(s) != nt.latex(sp.Symbol(name))
+                                    for s in statement.model):
+            out.append((nt.latex(sp.Symbol(name)), str(sp.N(v, 60))))
+    return out
+
+
+def _at_counterexample(latex: str, lets, at) -> str:
+    """A does-not-hold at the symbolic path's counterexample ``at``: each reading's
+    residual must exceed :data:`AT_POINT` there (else :class:`Disagreement`, naming the
+    side whose values differ where the point gives them). A point the second semantics
+    cannot map (a glyph it does not give) falls back to the random points, said."""
+    try:
+        given = [(_side(tree(f"{k} = 0"))[0], v) for k, v in at]
+        found, drawn = residuals_at(tree(latex), decls_of(lets), given)
+    except Exception:  # noqa: BLE001 -- a point it cannot read or evaluate: fall back, said
+        return ("; the symbolic path's counterexample could not be mapped onto it: checked at "
+                "random points only")
+    if drawn:
+        return (f"; the symbolic path's counterexample does not give {', '.join(drawn[:4])}: "
+                f"checked at random points only")
+    for n in {r.reading for r in found}:
+        mine = max((r for r in found if r.reading == n), key=lambda r: r.relative)
+        if mine.relative <= AT_POINT:
+            raise Disagreement(_words(mine, latex, "does-not-hold, but at its counterexample "
+                                                    "the second semantics (mpmath, 50 digits) "
+                                                    "finds the sides equal"))
+    worst = min(found, key=lambda r: r.relative)
+    return (f"; it fails at the symbolic path's counterexample too (relative residual "
+            f"{float(worst.relative):.1e})")
 
 
 def _words(r, latex: str, what: str) -> str:

@@ -699,7 +699,7 @@ def _difference(a, b, where: str):
 
 
 def residuals(tree, decls: list[Decl], points: int = 6, seed: int = 62,
-              free: bool = True, spread: float = 1) -> list[Residual]:
+              free: bool = True, spread: float = 1, fixed=None) -> list[Residual]:
     """Each relation of ``tree`` (a parse of the statement) at ``points`` random points.
 
     Args:
@@ -710,6 +710,7 @@ def residuals(tree, decls: list[Decl], points: int = 6, seed: int = 62,
         free: an undeclared glyph is free with the book's conventional shape; ``False``
             (a book's notation gives meanings): it is not covered.
         spread: unconstrained reals (free scalars, vectors' entries) in (-2s, 2s).
+        fixed: glyph key -> its value at every point (a given point); others are drawn.
 
     Returns:
         One :class:`Residual` per relation and point (``relative``: the largest entry of
@@ -724,7 +725,7 @@ def residuals(tree, decls: list[Decl], points: int = 6, seed: int = 62,
         raise NotCovered("a statement with no relation")
     first_error = None
     try:
-        out, met = _at_points(chains, table, points, seed, free, {}, spread)
+        out, met = _at_points(chains, table, points, seed, free, {}, spread, fixed)
     except NotCovered as exc:
         out, met, first_error = [], getattr(exc, "met", {}), exc
     if not met:
@@ -738,7 +739,7 @@ def residuals(tree, decls: list[Decl], points: int = 6, seed: int = 62,
     for combo in itertools.product(*(met[k] for k in keys)):
         try:
             rs, _ = _at_points(chains, table, points, seed, free,
-                               dict(zip(keys, combo, strict=True)), spread)
+                               dict(zip(keys, combo, strict=True)), spread, fixed)
         except NotCovered as exc:
             errors.append(exc)
             continue
@@ -753,7 +754,7 @@ def residuals(tree, decls: list[Decl], points: int = 6, seed: int = 62,
     return [r for rs in kept for r in rs]
 
 
-def _at_points(chains, table, points, seed, free, choices, spread=1):
+def _at_points(chains, table, points, seed, free, choices, spread=1, fixed=None):
     """:func:`residuals` for one reading of its choice points; ``(residuals, met)``, the
     choice points met (a :class:`NotCovered` carries them as ``met``)."""
     out = []
@@ -762,7 +763,7 @@ def _at_points(chains, table, points, seed, free, choices, spread=1):
     rng.spread = spread
     with mp.workdps(DIGITS):
         for _ in range(points):
-            point: dict = {" choices": choices, " met": met}
+            point: dict = {" choices": choices, " met": met, **(fixed or {})}
             env = Env(table, point, rng, free=free)
             ev = Evaluator(env)
             n = 0
