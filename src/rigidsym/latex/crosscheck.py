@@ -194,14 +194,39 @@ def given_point(counterexample: dict | None, statement) -> list | None:
     return out
 
 
+def _bare(text: str) -> str:
+    """A glyph's LaTeX without its font (the book's printer writes ``R`` as ``\\mathbf{R}``,
+    ``\\hat\\omega`` as ``\\hat{\\boldsymbol{\\omega}}``), braces and spaces."""
+    return re.sub(r"\\(mathbf|boldsymbol|bm|mathrm|mathit|mathsf|operatorname)|[{}\s\\]", "",
+                  text)
+
+
+def _written_glyphs(t, decls) -> dict:
+    """The glyphs as the user wrote them (the statement's and the declarations' names), by
+    :func:`_bare` text; two that read alike are left out (the printed name is then parsed
+    as it stands)."""
+    out: dict = {}
+    trees = [d.name for d in decls if not d.timed] + [
+        x for x in t.iter_subtrees() if x.data in ("glyph", "accented")]
+    for x in trees:
+        k = _bare(text_of(x))
+        if k in out and out[k] is not None and text_of(out[k]) != text_of(x):
+            out[k] = None
+        elif k not in out:
+            out[k] = x
+    return out
+
+
 def _at_counterexample(latex: str, lets, at) -> str:
     """A does-not-hold at the symbolic path's counterexample ``at``: each reading's
     residual must exceed :data:`AT_POINT` there (else :class:`Disagreement`, naming the
     side whose values differ where the point gives them). A point the second semantics
     cannot map (a glyph it does not give) falls back to the random points, said."""
     try:
-        given = [(_side(tree(f"{k} = 0"))[0], v) for k, v in at]
-        found, drawn = residuals_at(tree(latex), decls_of(lets), given)
+        decls, t = decls_of(lets), tree(latex)
+        written = _written_glyphs(t, decls)
+        given = [(written.get(_bare(k)) or _side(tree(f"{k} = 0"))[0], v) for k, v in at]
+        found, drawn = residuals_at(t, decls, given)
     except Exception:  # noqa: BLE001 -- a point it cannot read or evaluate: fall back, said
         return ("; the symbolic path's counterexample could not be mapped onto it: checked at "
                 "random points only")
