@@ -295,3 +295,12 @@ def test_a_does_not_hold_is_checked_at_its_own_counterexample():
                              repairs=False)
     assert r.verdict == "does-not-hold"
     assert "fails at the symbolic path's counterexample too" in _second(r), r.model
+
+
+def test_a_disagreement_names_the_smallest_subtree_whose_values_differ(monkeypatch):
+    from rigidsym.latex.reader_glyphs import GlyphReader
+
+    monkeypatch.setattr(GlyphReader, "_rebind", lambda self, x, over, call: [])
+    with pytest.raises(BadInput, match=r"smallest subtree whose two values differ there: "
+                                       r"F\(2\\mathbf\{u\}\)"):
+        rigidsym.check_latex(r"F(2\mathbf{u}) = 4F(\mathbf{u})", let=U, repairs=False)

@@ -16,10 +16,10 @@ import re
 
 from rigidsym.core.errors import BadInput
 from rigidsym.latex.lets import Let, declared_lets, read_lets
-from rigidsym.latex.lexing import tree
+from rigidsym.latex.lexing import parsed_text, tree
 from rigidsym.latex.shapes import LatexError
 from rigidsym.numeval import Decl, NotCovered, residuals
-from rigidsym.numeval.atpoint import residuals_at
+from rigidsym.numeval.atpoint import residuals_at, subtree_values
 from rigidsym.numeval.evaluator import text_of
 
 __all__ = ["VANISHES", "FAILS", "AT_POINT", "POINTS", "REFUSE_UNCOVERED", "Disagreement",
@@ -146,7 +146,8 @@ def cross_check(latex: str, let, verdict: str, *, notation=None, book=None,
             found = residuals(tree(latex), decls_of(lets), 24, seed=63, spread=4)
         except Exception:  # noqa: BLE001 -- a point it cannot evaluate: the first points'
             pass
-    said = _at_counterexample(latex, lets, at) if verdict == "does-not-hold" and at else ""
+    said = _at_counterexample(latex, lets, at, let, _point_of(at)) \
+        if verdict == "does-not-hold" and at else ""
     for n in {r.reading for r in found}:  # each reading that type-checks fails somewhere
         mine = max((r for r in found if r.reading == n), key=lambda r: r.relative)
         if verdict == "does-not-hold" and mine.relative < FAILS:
@@ -170,6 +171,8 @@ def given_point(counterexample: dict | None, statement) -> list | None:
 
     if not counterexample or not counterexample.get("point"):
         return None
+    found = GivenPoint()
+    found.atoms = dict(counterexample["point"])
     pt = {k: sp.sympify(v) for k, v in counterexample["point"].items()}
     out, held = [], set()
 
@@ -191,7 +194,8 @@ def given_point(counterexample: dict | None, statement) -> list | None:
         if name not in held and all(nt.latex(s) != nt.latex(sp.Symbol(name))
                                     for s in statement.model):
             out.append((nt.latex(sp.Symbol(name)), str(sp.N(v, 60))))
-    return out
+    found.extend(out)
+    return found
 
 
 def _bare(text: str) -> str:
@@ -217,7 +221,7 @@ def _written_glyphs(t, decls) -> dict:
     return out
 
 
-def _at_counterexample(latex: str, lets, at) -> str:
+def _at_counterexample(latex: str, lets, at, lets_text=(), pt=None) -> str:
     """A does-not-hold at the symbolic path's counterexample ``at``: each reading's
     residual must exceed :data:`AT_POINT` there (else :class:`Disagreement`, naming the
     side whose values differ where the point gives them). A point the second semantics
@@ -236,9 +240,10 @@ def _at_counterexample(latex: str, lets, at) -> str:
     for n in {r.reading for r in found}:
         mine = max((r for r in found if r.reading == n), key=lambda r: r.relative)
         if mine.relative <= AT_POINT:
+            where = _where_they_differ(t, parsed_text(latex), decls, given, lets_text, pt)
             raise Disagreement(_words(mine, latex, "does-not-hold, but at its counterexample "
                                                     "the second semantics (mpmath, 50 digits) "
-                                                    "finds the sides equal"))
+                                                    "finds the sides equal") + where)
     worst = min(found, key=lambda r: r.relative)
     return (f"; it fails at the symbolic path's counterexample too (relative residual "
             f"{float(worst.relative):.1e})")
@@ -254,3 +259,59 @@ def _words(r, latex: str, what: str) -> str:
             f"{' = '.join(texts) or latex}; relative residual {float(r.relative):.1e}"
             f"{'; at ' + point if point else ''}): the two semantics disagree, so no "
             f"verdict; say the equation another way or report it")
+
+
+def _point_of(at) -> dict:
+    """The counterexample's atoms (name -> exact), carried beside the plain point."""
+    return getattr(at, "atoms", {}) or {}
+
+
+class GivenPoint(list):
+    """:func:`given_point`'s plain point, with the symbolic path's atoms (name -> exact
+    string) kept for locating a disagreement on the symbolic side."""
+
+    atoms: dict = {}
+
+
+def _where_they_differ(t, text: str, decls, given, let, pt: dict, limit: int = 40) -> str:
+    """The smallest parse subtree (by its source text) whose two values differ at the
+    point: this semantics' value and the symbolic reader's (the subtree read alone with the
+    same ``--let``s, its model substituted and evaluated at the point's atoms). "" when no
+    subtree of at most ``limit`` is found to differ (the point then is not a counterexample
+    in either)."""
+    import mpmath as mp
+    import sympy as sp
+
+    from rigidsym.checking.deciding.explicit import explicit
+    from rigidsym.latex.statement import declare_latex
+
+    spans = {text[x.meta.start_pos:x.meta.end_pos].strip(): x for x in t.iter_subtrees()
+             if x.data not in ("start", "chain") and not x.meta.empty}
+    spans = dict(sorted(spans.items(), key=lambda kv: len(kv[0]))[:limit])
+    subs = list(spans.values())
+    mine = subtree_values(decls, given, subs)
+    for (src, _x), v in zip(spans.items(), mine, strict=True):
+        if v is None:
+            continue
+        try:
+            eq, _ = declare_latex(f"{src} = {src}", let)
+            st = eq.build()
+            e = sp.sympify(explicit(st.printed[0].lhs, st.model))
+            atoms = {a: sp.sympify(pt[a.name]) for a in e.free_symbols if a.name in pt}
+            if len(atoms) < len(e.free_symbols):
+                continue
+            e = sp.N(e.subs(atoms), 60)
+            theirs = [e] if not e.is_Matrix else list(e)
+            ours = [v] if not hasattr(v, "rows") else [v[i, j] for i in range(v.rows)
+                                                         for j in range(v.cols)]
+            if len(ours) != len(theirs):
+                return f"; the subtree {src} differs in shape between the two"
+            with mp.workdps(50):
+                gap = max(abs(mp.mpf(str(a)) - b) for a, b in zip(theirs, ours, strict=True))
+                size = max([mp.mpf(1)] + [abs(b) for b in ours])
+        except Exception:  # noqa: BLE001 -- a fragment the reader does not read alone
+            continue
+        if gap / size > AT_POINT:
+            return (f"; the smallest subtree whose two values differ there: {src} "
+                    f"(relative gap {float(gap / size):.1e})")
+    return ""

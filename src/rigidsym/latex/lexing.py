@@ -128,7 +128,7 @@ def parser() -> lark.Lark:
     except OSError:  # a read-only home: build it every time
         kept = {}
     return lark.Lark(text, parser="lalr", lexer="contextual", postlex=_AlignedLayout(),
-                     propagate_positions=False, maybe_placeholders=False, **kept)
+                     propagate_positions=True, maybe_placeholders=False, **kept)
 
 
 # ---- the input as TeX reads it, and errors that quote it (issue 40, items 3 and 5)
@@ -254,6 +254,12 @@ def cross_chains(text: str) -> str | None:
     return None
 
 
+def parsed_text(latex: str) -> str:
+    """The text :func:`tree` parses (unbraced arguments braced, sized parentheses plain):
+    a subtree's ``meta.start_pos``/``end_pos`` index it (its source span)."""
+    return _SIZED_PAREN.sub(lambda m: m.group(0)[-1], braced(latex))
+
+
 def tree(latex: str):
     """lark's parse tree of the LaTeX (its unbraced arguments braced, :func:`braced`), or a
     ``LatexError`` that quotes the offending token with its boundaries, puts carets under it
@@ -261,7 +267,7 @@ def tree(latex: str):
     (a Greek letter) at position 9``."""
     from rigidsym.latex.shapes import LatexError
 
-    text = _SIZED_PAREN.sub(lambda m: m.group(0)[-1], braced(latex))
+    text = parsed_text(latex)
     chain = cross_chains(text)
     if chain:
         raise LatexError(f"{chain}: two cross products with no parentheses between them; the "

@@ -9,7 +9,7 @@ import mpmath as mp
 
 from rigidsym.numeval.evaluator import DIGITS, Residual, glyph_key, residuals
 
-__all__ = ["value_of", "residuals_at"]
+__all__ = ["value_of", "residuals_at", "subtree_values"]
 
 
 def value_of(v):
@@ -43,3 +43,26 @@ def residuals_at(tree, decls, given: list) -> tuple[list[Residual], list[str]]:
     found = residuals(tree, decls, 1, fixed=fixed)
     drawn = sorted({k for r in found for k in r.point if k not in fixed})
     return found, drawn
+
+
+def subtree_values(decls, given: list, subtrees: list) -> list:
+    """Each parse subtree's value at the point ``given`` (as :func:`residuals_at`), in this
+    semantics' first reading; ``None`` for one it cannot evaluate alone. The values a
+    disagreement is located by."""
+    import random
+
+    from rigidsym.numeval.evaluator import Env, Evaluator
+
+    with mp.workdps(DIGITS + 10):
+        fixed = {glyph_key(t): value_of(v) for t, v in given}
+    table = {glyph_key(d.name): d for d in decls}
+    rng = random.Random(62)
+    out = []
+    with mp.workdps(DIGITS):
+        ev = Evaluator(Env(table, {" choices": {}, " met": {}, **fixed}, rng))
+        for s in subtrees:
+            try:
+                out.append(ev.value(s))
+            except Exception:  # noqa: BLE001 -- a fragment without its context
+                out.append(None)
+    return out
