@@ -175,7 +175,7 @@ def test_the_corpus_decides_as_before_and_the_second_semantics_covers_it():
     from rigidsym.latex.notations import NOTATIONS
     from rigidsym.registry import declarations as registry
 
-    covered = decided = 0
+    covered = decided = at_point = refuted = 0
     for e in corpus.entries():
         book = e["book"]["key"]
         try:
@@ -191,7 +191,12 @@ def test_the_corpus_decides_as_before_and_the_second_semantics_covers_it():
             note = _second(r)
             covered += "second semantics (mpmath" in note
             assert "second semantics (mpmath" in note, (e["id"], note)
+            if r.verdict == "does-not-hold":  # at its own counterexample, or said why not
+                at_point += "counterexample too" in note
+                assert "counterexample too" in note or "random points only" in note, note
+                refuted += 1
     assert covered == decided > 250, (covered, decided)
+    assert at_point >= 2 * refuted // 3, (at_point, refuted)
 
 
 def test_a_construct_it_lacks_is_refused_naming_it_never_decided(monkeypatch, capsys):
