@@ -17,6 +17,10 @@ CITATION = "Angeles, Sec. 3.9, Exercise 3.1"
 #: the documented unit of each answer with one (graded answers may be written in any
 #: compatible unit, issue 50); the others are pure numbers or mixed
 ANSWER_UNITS = {"phi": "rad"}
+#: what the answers are (the grader judges a student's answer by its class): the axis and
+#: angle of Q with the Plücker array of its axis, one sign for all three ((e, phi, [e; n])
+#: is (-e, -phi, -[e; n])) and phi + 2 pi k
+ANSWER_CLASSES = ({"kind": "axis-angle", "axis": "e", "angle": "phi", "linked": ("plucker",)},)
 FIGURE_NAME = "cube"
 _V = sp.ImmutableMatrix
 # Assumed geometry (Fig. 3.9 is not in the text): unit cube, A at O, B on X, D on Y, E on Z,

@@ -17,6 +17,12 @@ CITATION = "Angeles, Sec. 3.9, Exercise 3.6"
 #: the documented unit of each answer with one (graded answers may be written in any
 #: compatible unit, issue 50); the others are pure numbers or mixed
 ANSWER_UNITS = {"phi": "rad", "axis_point_p0": "m"}
+#: what the answers are: the axis and angle of Q with the axis's Plücker array, one sign
+#: for all three, phi + 2 pi k; "a point p_0 of the axis": any point of it
+ANSWER_CLASSES = (
+    {"kind": "axis-angle", "axis": "e", "angle": "phi", "linked": ("axis_plucker",)},
+    {"kind": "point of line", "point": "axis_point_p0", "direction": "e"},
+)
 FIGURE_NAME = "grasp"
 _V = sp.ImmutableMatrix
 PARAMETERS = (
