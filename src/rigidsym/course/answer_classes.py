@@ -141,7 +141,7 @@ def judge(decl: dict, given: dict, key: dict, rtol: float) -> dict[str, Verdict]
         turns = int(round(float((g - k - w).reshape(-1)[0]) / period))
         word = "pi" if period == math.pi else "2 pi"
         note = f"equivalent {name} + {word} k (k = {turns})" if ok and turns else "right"
-        return {name: Verdict(ok, note, k + turns * period)}
+        return {name: Verdict(ok, note, k + turns * period if ok else k)}
     # up to scale
     kk = float(np.vdot(k, k))
     lam = float(np.vdot(g, k)) / kk if kk else 0.0
@@ -164,8 +164,9 @@ def _sign_group(decl: dict, given: dict, key: dict, rtol: float) -> dict[str, Ve
             if n == angle:
                 w = _wrap(g - s * k, 2 * math.pi)
                 turns = int(round(float((g - s * k - w).reshape(-1)[0]) / (2 * math.pi)))
-                out[n] = (_near(w, np.zeros_like(w), _scale(k), rtol), turns,
-                          s * k + 2 * math.pi * turns)
+                ok = _near(w, np.zeros_like(w), _scale(k), rtol)
+                # a wrong angle's slips are looked for against the key's own value
+                out[n] = (ok, turns if ok else 0, s * k + 2 * math.pi * turns if ok else s * k)
             else:
                 out[n] = (_near(g, s * k, _scale(k), rtol), 0, s * k)
         count = sum(v[0] for v in out.values())
