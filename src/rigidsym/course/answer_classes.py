@@ -54,6 +54,20 @@ class Verdict:
     right: bool
     note: str
     target: np.ndarray
+    period: float | None = None
+    along: np.ndarray | None = None
+
+    def matches(self, given: np.ndarray, value: np.ndarray, scale: float, rtol: float) -> bool:
+        """``given`` is ``value`` within the tolerance, modulo the class's freedom that a
+        slip keeps: an angle's period; for a point of a line, a shift along the line (a
+        slip that scales the point scales the line through the key's point with it)."""
+        if self.period is not None:
+            w = _wrap(given - value, self.period)
+            return _near(w, np.zeros_like(w), scale, rtol)
+        if self.along is not None:
+            off = (given - value).reshape(-1)
+            return off.size == 3 and _near(np.cross(off, self.along), np.zeros(3), scale, rtol)
+        return _near(given, value, scale, rtol)
 
 
 def declared(module) -> list[dict]:
@@ -122,16 +136,20 @@ def judge(decl: dict, given: dict, key: dict, rtol: float) -> dict[str, Verdict]
                    rtol)
         moved = ok and not _near(g, k, _scale(k), rtol)
         return {name: Verdict(ok, "equivalent: another point of the axis" if moved
-                              else "right", k)}
+                              else "right", k, along=d)}
     if kind == "columns up to sign":
-        signs = []
-        for j in range(k.shape[1]):
-            s = 1.0 if _near(g[:, j], k[:, j], _scale(k), rtol) else \
-                -1.0 if _near(g[:, j], -k[:, j], _scale(k), rtol) else 0.0
-            signs.append(s)
-        ok = all(signs)
+        # each column's sign by its projection on the key's: a slip that scales or
+        # reorders the matrix is then looked for against the same member
+        signs = np.array([-1.0 if float(g[:, j] @ k[:, j]) < 0 else 1.0
+                          for j in range(k.shape[1])])
+        target = k * signs
+        ok = _near(g, target, _scale(k), rtol)
+        if not ok:               # the axes written as rows: the slip is looked for there
+            rows = np.array([-1.0 if float(g[j, :] @ k[:, j]) < 0 else 1.0
+                             for j in range(k.shape[1])])
+            if _near(g.T, k * rows, _scale(k), rtol):
+                target = k * rows
         flipped = [j for j, s in enumerate(signs) if s < 0]
-        target = k * np.array([s or 1.0 for s in signs])
         note = f"equivalent: columns {flipped} negated" if ok and flipped else "right"
         return {name: Verdict(ok, note, target)}
     if kind == "angle":
@@ -141,7 +159,7 @@ def judge(decl: dict, given: dict, key: dict, rtol: float) -> dict[str, Verdict]
         turns = int(round(float((g - k - w).reshape(-1)[0]) / period))
         word = "pi" if period == math.pi else "2 pi"
         note = f"equivalent {name} + {word} k (k = {turns})" if ok and turns else "right"
-        return {name: Verdict(ok, note, k + turns * period if ok else k)}
+        return {name: Verdict(ok, note, k + turns * period if ok else k, period=period)}
     # up to scale
     kk = float(np.vdot(k, k))
     lam = float(np.vdot(g, k)) / kk if kk else 0.0
@@ -185,5 +203,5 @@ def _sign_group(decl: dict, given: dict, key: dict, rtol: float) -> dict[str, Ve
         if ok and turns:
             note = (note + "," if note != "right" else "equivalent") + \
                 f" {n} + 2 pi k (k = {turns})"
-        verdicts[n] = Verdict(ok, note, target)
+        verdicts[n] = Verdict(ok, note, target, period=2 * math.pi if n == angle else None)
     return verdicts

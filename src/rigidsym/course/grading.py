@@ -114,7 +114,23 @@ def _as_array(v, where: str, shape: tuple = ()) -> np.ndarray:
                     f"nested lists of them, got {type(v).__name__}")
 
 
+#: the key's values as floats, by the identity of the sympy value (an exact key's nested
+#: radicals take long to evaluate, and a class is graded box by box, student by student)
+_FLOATS: dict[int, tuple] = {}
+
+
 def _expected(v) -> np.ndarray:
+    hit = _FLOATS.get(id(v))
+    if hit is not None and hit[0] is v:
+        return hit[1].copy()
+    out = _expected_now(v)
+    if len(_FLOATS) > 4096:
+        _FLOATS.clear()
+    _FLOATS[id(v)] = (v, out)
+    return out.copy()
+
+
+def _expected_now(v) -> np.ndarray:
     if isinstance(v, sp.MatrixBase):
         return np.array(sp.N(v, 17).tolist(), dtype=float)
     if v in (sp.true, sp.false):
@@ -123,6 +139,10 @@ def _expected(v) -> np.ndarray:
 
 
 def _close(a: np.ndarray, b: np.ndarray, scale: float) -> bool:
+    return _close_plain(a, b, scale)
+
+
+def _close_plain(a: np.ndarray, b: np.ndarray, scale: float) -> bool:
     return a.shape == b.shape and bool(np.all(np.abs(a - b) <= RTOL * scale + 1e-12))
 
 
@@ -169,6 +189,22 @@ def _candidates(e: np.ndarray, name: str, extra: list):
             yield word, detail, value
 
 
+def _shown(v):
+    """The key's value as the JSON key writes it (kept, as :func:`_expected`'s floats)."""
+    from rigidsym.course.worked.render import to_json_value
+
+    hit = _SHOWN.get(id(v))
+    if hit is not None and hit[0] is v:
+        return hit[1]
+    if len(_SHOWN) > 4096:
+        _SHOWN.clear()
+    _SHOWN[id(v)] = (v, to_json_value(v))
+    return _SHOWN[id(v)][1]
+
+
+_SHOWN: dict[int, tuple] = {}
+
+
 def grade(solution, answers: dict, slips: dict | None = None,
           replay: bool = True) -> list[Graded]:
     """Grade ``answers`` (name -> value) against ``solution``'s answers.
@@ -202,7 +238,6 @@ def grade(solution, answers: dict, slips: dict | None = None,
         raise ValueError(f"answers: {solution.id} has no answer {unknown[0]!r}; its answers "
                          f"are: {', '.join(known)}")
     from rigidsym.course.worked import exercise_module
-    from rigidsym.course.worked.render import to_json_value
 
     module = exercise_module(solution.id)
     if slips is None:
@@ -217,17 +252,17 @@ def grade(solution, answers: dict, slips: dict | None = None,
         given = answers.get(name)
         if isinstance(right, str) or not gradeable(right):
             if name in answers:
-                out.append(Graded(name, None, None, to_json_value(right),
+                out.append(Graded(name, None, None, _shown(right),
                                   "an answer in words or a set: not graded by machine"))
             continue
         if is_blank(given):
-            out.append(Graded(name, False, None, to_json_value(right),
+            out.append(Graded(name, False, None, _shown(right),
                               "missing: no answer given", missing=True))
             continue
         if _symbols(right):
             out.append(_grade_expression(name, given, right))
             continue
-        shown = to_json_value(right)
+        shown = _shown(right)
         got = read[name]
         if isinstance(got, Graded):
             out.append(got)
@@ -236,16 +271,14 @@ def grade(solution, answers: dict, slips: dict | None = None,
         if v is not None and v.right:
             out.append(Graded(name, True, None, shown, got[2], note=v.note))
             continue
-        target = v.target if v is not None else None
         out.append(_grade_one(name, got, right, shown, (slips or {}).get(name, []),
-                              replayed, units[name], target))
+                              replayed, units[name], v))
     return out
 
 
 def _read_all(solution, answers: dict, units: dict) -> dict:
     """Each numeric box's answer read: ``name -> (array of the key's shape, key array,
     tolerance text, unit written)``, or a :class:`Graded` (not read, ambiguous)."""
-    from rigidsym.course.worked.render import to_json_value
 
     out: dict = {}
     for name, right in solution.answers.items():
@@ -253,7 +286,7 @@ def _read_all(solution, answers: dict, units: dict) -> dict:
         if isinstance(right, str) or not gradeable(right) or is_blank(given) or \
                 _symbols(right):
             continue
-        shown = to_json_value(right)
+        shown = _shown(right)
         e = _expected(right)
         try:
             given = read_decimal_comma(given, answer_shape(right), name)
@@ -410,12 +443,18 @@ class _Replays:
 
 
 def _grade_one(name, got, right, shown, extra, replayed=None, unit=None,
-               target=None) -> Graded:
-    """A read answer (``got``: :func:`_read_all`'s tuple) against the key (or the
-    declared class's member ``target``): right, a named slip, rounded, or wrong."""
+               verdict=None) -> Graded:
+    """A read answer (``got``: :func:`_read_all`'s tuple) against the key (or, for a
+    declared class, ``verdict``'s member, compared modulo the class's freedom): right, a
+    named slip, rounded, or wrong."""
     g, e, tol, written = got
-    if target is not None:
-        e = target
+    if verdict is not None:
+        e = verdict.target
+
+    def _close(a, b, sc):
+        return verdict.matches(a, b, sc, RTOL) if verdict is not None else \
+            _close_plain(a, b, sc)
+
     scale = max(float(np.max(np.abs(e))) if e.size else 0.0, 1e-300)
     if _close(g, e, scale):
         return Graded(name, True, None, shown, tol,
