@@ -41,7 +41,9 @@ def add_arguments(p) -> None:
 
 def run(args) -> int:
     """Grade the class: 0 every answer right, 1 any wrong or missing, 2 bad input, 3 a
-    defect. Writes DIR/grades.csv and DIR/gradebook.csv and prints a line per student."""
+    defect, 10 + n (at most 99) when n answer files or rows were not graded (each
+    reported on its own line; the rest of the class is graded). Writes DIR/grades.csv,
+    DIR/gradebook.csv and DIR/item_analysis.csv and prints a line per student."""
     from rigidsym.course import grade_class
 
     try:
@@ -54,7 +56,13 @@ def run(args) -> int:
               file=sys.stderr)
         return 3
     print(done["table"])
-    print(f"wrote {done['grades']}\nwrote {done['gradebook']}")
+    print(f"wrote {done['grades']}\nwrote {done['gradebook']}\nwrote {done['items']}")
+    for line in done["problems"]:
+        print(f"rigidsym: {line}", file=sys.stderr)
+    if done["problems"]:
+        print(f"rigidsym: {len(done['problems'])} answer file(s) or row(s) not graded "
+              f"(listed above); the rest of the class is graded", file=sys.stderr)
+        return min(10 + len(done["problems"]), 99)
     return 0 if done["all_right"] else 1
 
 
