@@ -5,7 +5,9 @@ problems from the student's own seed (``student_seed``: the spec's seed and the 
 every drawn problem different from every other student's (a repeat is drawn again), and
 writes::
 
-    DIR/handouts/<student>.html   name, seed and version printed on every page
+    DIR/handouts/<id>.html        name, seed and version printed on every page; named by
+                                  the student id (by the name, in any script, without one)
+    DIR/keys/<id>.html            that student's worked, checked solutions
     DIR/key.json                  schema 2: per student, the seed, version and each
                                   problem's data, answers and checks
     DIR/key.html                  the worked, checked solutions, student by student
@@ -38,37 +40,53 @@ __all__ = ["class_exam", "read_roster", "student_seed", "version_of"]
 
 
 def read_roster(path: str | Path) -> list[dict]:
-    """The students of a roster CSV: a ``name`` (or ``student``) column, and optional
-    ``id`` and ``email`` columns (kept for the gradebook an LMS imports).
+    """The students of a roster CSV: a ``name`` (or ``student``) column, or Moodle's
+    participant export (``First name``, ``Surname`` or ``Last name``); optional ``id``
+    (``ID number``) and ``email`` (``Email address``) columns, kept for the gradebook an
+    LMS imports. UTF-8 with or without a BOM, ``,``, ``;`` or tab separated (as
+    :func:`rigidsym.course.answers.read_table` reads it). Two students of one name are
+    fine when their ids differ (their answers are then matched by id only).
 
     Returns:
         ``[{"name", "id", "email"}, ...]`` in the roster's order.
 
     Raises:
-        ValueError: the file is unreadable, has no ``name``/``student`` column, a row
-            without a name, or a name twice (the message names the roster and the row).
+        ValueError: the file is unreadable, has no name columns, a row without a name, a
+            name twice without distinct ids, or an id twice (the message names the roster
+            and the row).
     """
+    from rigidsym.course.answers import read_table
+
     p = Path(path)
-    try:
-        with p.open(newline="", encoding="utf-8-sig") as fh:
-            rows = list(csv.DictReader(fh))
-    except (OSError, csv.Error, UnicodeDecodeError) as exc:
-        raise ValueError(f"--students: cannot read {p}: {exc}") from None
+    rows = read_table(p, "--students")
     cols = {c.strip().lower(): c for c in (rows[0].keys() if rows else []) if c}
-    name_col = cols.get("name") or cols.get("student")
-    if not rows or name_col is None:
+    name_col = cols.get("name") or cols.get("student") or cols.get("full name")
+    first = cols.get("first name")
+    last = cols.get("surname") or cols.get("last name")
+    if not rows or (name_col is None and not (first and last)):
         raise ValueError(f"--students: {p} needs a header row with a 'name' (or 'student') "
-                         f"column and a row per student")
-    out, seen = [], set()
+                         f"column, or Moodle's 'First name' and 'Surname', and a row per "
+                         f"student")
+    id_col = cols.get("id") or cols.get("id number") or cols.get("student id")
+    email_col = cols.get("email") or cols.get("email address")
+    out, seen, ids = [], {}, set()
     for i, r in enumerate(rows, 2):
-        name = (r.get(name_col) or "").strip()
+        name = (r.get(name_col) or "").strip() if name_col else \
+            f"{(r.get(first) or '').strip()} {(r.get(last) or '').strip()}".strip()
+        ident = (r.get(id_col, "") or "").strip() if id_col else ""
         if not name:
             raise ValueError(f"--students: {p} row {i} has no name")
-        if name in seen:
-            raise ValueError(f"--students: {p} row {i}: {name!r} is in the roster twice")
-        seen.add(name)
-        out.append({"name": name, "id": (r.get(cols.get("id", ""), "") or "").strip(),
-                    "email": (r.get(cols.get("email", ""), "") or "").strip()})
+        if name in seen and (not ident or not seen[name] or ident in ids):
+            raise ValueError(f"--students: {p} row {i}: {name!r} is in the roster twice "
+                             f"(two students of one name need distinct ids)")
+        if ident and ident in ids:
+            raise ValueError(f"--students: {p} row {i}: the id {ident!r} is in the roster "
+                             f"twice")
+        seen[name] = ident
+        if ident:
+            ids.add(ident)
+        out.append({"name": name, "id": ident,
+                    "email": (r.get(email_col, "") or "").strip() if email_col else ""})
     return out
 
 
@@ -87,8 +105,13 @@ def version_of(sols: list) -> str:
     return "".join("ABCDEFGHJKLMNPQRSTUVWXYZ"[(h >> (5 * i)) % 24] for i in range(6))
 
 
-def _slug(name: str) -> str:
-    return re.sub(r"[^A-Za-z0-9]+", "_", name).strip("_") or "student"
+def _slug(st: dict) -> str:
+    """A student's file name: the student id when the roster gives one, else the name
+    with its letters kept in any script (``山田_太郎``, ``José_Núñez``, NFC)."""
+    import unicodedata
+
+    text = st["id"] or unicodedata.normalize("NFC", st["name"])
+    return re.sub(r"[^\w]+", "_", text).strip("_") or "student"
 
 
 def _head(title: str, st: dict, seed: int, version: str) -> str:
@@ -109,7 +132,8 @@ def class_exam(spec, roster: str | Path, out_dir: str | Path,
         seed: the class seed (default: the spec's ``seed``, else 0).
 
     Returns:
-        ``{"handouts": folder, "key_json", "key_html", "answers", "moodle"}``.
+        ``{"handouts": folder, "keys": folder, "key_json", "key_html", "answers",
+        "moodle"}``.
 
     Raises:
         ValueError: a bad spec or roster, or no new well-posed variant in 50 draws.
@@ -138,6 +162,9 @@ def class_exam(spec, roster: str | Path, out_dir: str | Path,
         head = _head(title, st, own, version)
         write_atomic(out / "handouts" / f"{slugs[i]}.html",
                      _exam.handout_text(f"{title}: {st['name']}", sols, head, columns=True))
+        section = _key_section(head, sols)
+        write_atomic(out / "keys" / f"{slugs[i]}.html",
+                     _exam.handout_page(f"{title}: answer key of {st['name']}", section))
         problems = [dict(solution_record(s), problem=n, spec_problem=k,
                          weight=weights[k - 1], asked=_exam.asked(s),
                          labels={a: box_label(s.id, a) for a in _exam.asked(s)})
@@ -145,7 +172,7 @@ def class_exam(spec, roster: str | Path, out_dir: str | Path,
         return {"record": {"student": st["name"], "id": st["id"], "email": st["email"],
                            "seed": own, "version": version,
                            "handout": f"handouts/{slugs[i]}.html", "problems": problems},
-                "section": _key_section(head, sols),
+                "section": section,
                 "drawn": [(slot, _exam.variant_key(s)) for slot, s in zip(slots, sols, strict=True)
                           if slot is not None]}
 
@@ -157,7 +184,7 @@ def class_exam(spec, roster: str | Path, out_dir: str | Path,
     key = {**document_header(), "title": title, "seed": seed,
            "slip_credit": float(spec.get("slip_credit", 0)), "students": records}
     return {
-        "handouts": out / "handouts",
+        "handouts": out / "handouts", "keys": out / "keys",
         "key_json": write_atomic(out / "key.json", json.dumps(key, indent=2,
                                                               ensure_ascii=False) + "\n"),
         "key_html": write_atomic(out / "key.html", _exam.handout_page(f"{title}: answer key",
@@ -172,7 +199,7 @@ def _unique_slugs(students: list[dict]) -> list[str]:
     ``"Amy-Ames"``: two files)."""
     slugs: list[str] = []
     for st in students:
-        slug = _slug(st["name"])
+        slug = _slug(st)
         while slug in slugs:
             slug += "_"
         slugs.append(slug)
