@@ -192,7 +192,12 @@ def _property(ex_id, examples):
     run()
 
 
-@pytest.mark.parametrize("ex_id", IDS)
+#: exercises whose exact solve takes seconds on a cold cache (their boxes: truths and
+#: expressions in symbols): their question tests run under ``slow`` only
+SLOW_SOLVES = {"ex3.3", "ex3.10"}
+
+
+@pytest.mark.parametrize("ex_id", [i for i in IDS if i not in SLOW_SOLVES])
 def test_question_tests(ex_id):
     """A member or two of each exercise's class, its slips and a blank (default run)."""
     _property(ex_id, 1 if ex_id not in SIGN_GROUPS | COLUMN_SIGNS else 3)
