@@ -184,3 +184,38 @@ def test_names_that_fold_alike_are_reported_not_guessed(tmp_path):
                                    ("x", {"id": "1"})], students)
     assert set(got) == {0, 1, 2} and got[2][0] == "LI WEI" and got[0][0] == "x"
     assert len(problems) == 1 and "not guessed" in problems[0]
+
+
+def _measured_31(rng, theta, axis, shift, side=2.0, places=6, bend=0.0):
+    """3.1's vertices turned by Rodrigues' (axis, theta) and shifted, written to
+    ``places`` decimals (one displaced vertex moved by ``bend`` m off the rigid motion)."""
+    R = _rot(np.asarray(axis) / np.linalg.norm(axis), theta)
+    P = {"A": np.zeros(3), "B": side * np.eye(3)[0], "D": side * np.eye(3)[1],
+         "E": side * np.eye(3)[2]}
+    data = {k: [int(round(x)) for x in v] for k, v in P.items()}   # exact: the cube
+    for k, v in P.items():
+        w = R @ v + shift + (bend * np.array([0, 0, 1.0]) if k == "E" else 0)
+        data[f"{k}_prime"] = [f"{x:.{places}f}" for x in w]
+    return R, data
+
+
+def test_31_on_data_given_to_six_decimals_is_solved_with_its_residual(capsys):
+    from rigidsym import exercises as ex
+
+    rng = np.random.default_rng(3)
+    for _ in range(3):
+        axis, theta = rng.normal(size=3), float(rng.uniform(0.3, 2.8))
+        R, data = _measured_31(rng, theta, axis, rng.normal(size=3))
+        s = ex.solve("3.1", **data)
+        assert s.status == "solved", s.reason
+        Q = np.array(sp.N(s.answers["Q"], 17).tolist(), dtype=float)
+        assert np.allclose(Q, R, atol=1e-5)
+        assert 0 < float(s.answers["residual"]) < 1e-5
+        e = np.array(sp.N(s.answers["e"], 17).tolist(), dtype=float).reshape(3)
+        assert np.allclose(_rot(e, float(sp.N(s.answers["phi"]))), R, atol=1e-5)
+    _, bent = _measured_31(rng, 1.0, [1, 0, 0], np.zeros(3), bend=1e-3)
+    assert ex.solve("3.1", **bent).status == "ill-posed"          # 1 mm off: not rigid
+    assert ex.solve("3.1", tol="0.01", **bent).status == "solved"   # within a stated tol
+    args = [f"--set={k}={','.join(map(str, v))}" for k, v in bent.items()]
+    assert main(["exercise", "3.1", "--tol", "0.01", *args]) == 0
+    assert "residual" in capsys.readouterr().out

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import sympy as sp
 
-from rigidsym.course.worked import Param, Solution, exact_check, is_zero
+from rigidsym.course.worked import Param, Solution, exact_check, is_zero, truth_check
 
 from ._screw import rotation_defect, screw_of_displacement
 
@@ -22,6 +22,9 @@ ANSWER_UNITS = {"phi": "rad"}
 #: is (-e, -phi, -[e; n])) and phi + 2 pi k
 ANSWER_CLASSES = ({"kind": "axis-angle", "axis": "e", "angle": "phi", "linked": ("plucker",)},)
 FIGURE_NAME = "cube"
+#: the vertices may be measurements (decimals, or floats): the rotation is then the
+#: nearest one to the edges' (orthogonal Procrustes), its misfit printed and within tol
+MEASURED = True
 _V = sp.ImmutableMatrix
 # Assumed geometry (Fig. 3.9 is not in the text): unit cube, A at O, B on X, D on Y, E on Z,
 # turned 120 deg about [1, 1, 1] and shifted.
@@ -54,8 +57,9 @@ def cube_vertices(A, B, D, E) -> dict:
 def solve(A=PARAMETERS[0].default, B=PARAMETERS[1].default, D=PARAMETERS[2].default,
           E=PARAMETERS[3].default, A_prime=PARAMETERS[4].default,
           B_prime=PARAMETERS[5].default, D_prime=PARAMETERS[6].default,
-          E_prime=PARAMETERS[7].default) -> Solution:
-    """Worked solution of Exercise 3.1 (vertices before and after, in metres)."""
+          E_prime=PARAMETERS[7].default, tol=None) -> Solution:
+    """Worked solution of Exercise 3.1 (vertices before and after, in metres; ``tol``:
+    measured vertices, the rotation the least-squares one within ``tol`` metres)."""
     P = {k: sp.Matrix(v) for k, v in zip("ABDE", (A, B, D, E), strict=True)}
     Pp = {k: sp.Matrix(v) for k, v in zip("ABDE", (A_prime, B_prime, D_prime, E_prime),
                                            strict=True)}
@@ -77,17 +81,49 @@ def solve(A=PARAMETERS[0].default, B=PARAMETERS[1].default, D=PARAMETERS[2].defa
     Q = s.step("rotation", (edges1 * edges0.inv()).applyfunc(sp.radsimp),
                "Edge vectors rotate: [b'-a', d'-a', e'-a'] = Q [b-a, d-a, e-a].")
     defect = rotation_defect(Q)
-    if defect:
+    residual = None
+    if defect and tol is not None:
+        Q, residual = _nearest_rotation(s, edges0, edges1, tol)
+    elif defect:
         s.fail(f"The displaced vertices are not a rigid motion of the given ones ({defect}), "
-               f"so there is no rotation Q.")
+               f"so there is no rotation Q (measured vertices: give --tol, or decimals).")
     screw = screw_of_displacement(Q, P["A"], Pp["A"])
     if screw is None:
         s.fail("The displacement is a pure translation (Q = 1): every point moves by the "
                "same vector, so no line of minimum displacement is singled out.")
-    return _finish(s, Q, P, Pp, *screw)
+    return _finish(s, Q, P, Pp, *screw, residual=residual)
 
 
-def _finish(s: Solution, Q, P, Pp, phi, e, p0, pl) -> Solution:
+def _nearest_rotation(s: Solution, edges0, edges1, tol):
+    """The rotation nearest to the measured edges (orthogonal Procrustes, Kabsch): Q
+    maximising tr(Q^T M), M = sum of x'_k x_k^T over the edges, rounded to an exactly
+    orthogonal rational matrix; the misfit of each edge within 2 tol (an edge is the
+    difference of two measured vertices)."""
+    import numpy as np
+
+    from ._fit import exact_rotation, nearest_rotation
+
+    M = s.step("correlation", edges1 * edges0.T,
+               "Least squares: Q maximises tr(Q^T M), M = sum x'_k x_k^T over the edges "
+               "(orthogonal Procrustes).")
+    Q = s.step("rotation (least squares)",
+               exact_rotation(nearest_rotation(np.array(M.tolist(), dtype=float))),
+               "Kabsch: Q = U diag(1, 1, det(U V^T)) V^T from M = U S V^T, rounded to an "
+               "exactly orthogonal rational matrix by the Cayley transform.")
+    misfit = [sp.sqrt(sum(x**2 for x in Q * edges0[:, k] - edges1[:, k])) for k in range(3)]
+    worst = max(misfit, key=lambda m: float(sp.N(m, 30)))
+    res = s.step("residual", sp.Float(sp.N(sp.sqrt(sum(m**2 for m in misfit)), 20), 4),
+                 "sqrt(sum ||Q x_k - x'_k||^2) over the three edges, m, to 4 digits.")
+    if bool(worst > 2 * tol):
+        s.fail(f"The displaced vertices are not a rigid motion of the given ones within "
+               f"tol = {float(tol):.3g} m: an edge misses its image by {float(worst):.3g} m "
+               f"under the nearest rotation (residual {float(res):.3g} m).")
+    s.check(truth_check(f"each edge within 2 tol = {float(2 * tol):.3g} m of its image "
+                        f"under Q", True, "exact comparison of closed numbers"))
+    return Q, res
+
+
+def _finish(s: Solution, Q, P, Pp, phi, e, p0, pl, residual=None) -> Solution:
     s.step("angle", phi, "cos(phi) = (tr Q - 1)/2.")
     s.step("axis", e, "e = vect(Q)/sin(phi) (a column of Q + 1 for a half turn).")
     s.step("point of L closest to O", p0,
@@ -106,9 +142,14 @@ def _finish(s: Solution, Q, P, Pp, phi, e, p0, pl) -> Solution:
     for name, h in hits:
         s.answers[f"intersection_{_PLANES[name]}"] = h
     c = Pp["A"] - Q * P["A"]
-    s.check(exact_check("Q proper orthogonal, maps every given edge of the cube",
-                        [Q.T * Q - sp.eye(3), Q.det() - 1]
-                        + [Q * (P[k] - P["A"]) - (Pp[k] - Pp["A"]) for k in P]))
+    if residual is not None:
+        s.answers["residual"] = residual
+        s.check(exact_check("Q proper orthogonal (exact rationals)",
+                            [Q.T * Q - sp.eye(3), Q.det() - 1]))
+    else:
+        s.check(exact_check("Q proper orthogonal, maps every given edge of the cube",
+                            [Q.T * Q - sp.eye(3), Q.det() - 1]
+                            + [Q * (P[k] - P["A"]) - (Pp[k] - Pp["A"]) for k in P]))
     s.check(exact_check("Plücker constraints e.e = 1, e.n = 0; points of L move along e with "
                         "the minimum magnitude |e.c|",
                         [pl[:3, :].dot(pl[:3, :]) - 1, pl[:3, :].dot(pl[3:, :])]
