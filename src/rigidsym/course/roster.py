@@ -26,6 +26,7 @@ import hashlib
 import html
 import io
 import json
+import math
 import re
 from pathlib import Path
 
@@ -252,7 +253,11 @@ def _template(students: list, columns: list) -> str:
 def moodle_xml(title: str, key: dict) -> str:
     """Moodle XML (``<quiz>``): a category per student, a Cloze (embedded answers)
     question per problem, each entry of each answer a ``NUMERICAL`` part right within
-    0.1 % of the answer's largest entry (the grader's tolerance)."""
+    0.1 % of the answer's largest entry (the grader's tolerance). Moodle marks a Cloze
+    question by its parts' integer weights (it ignores ``<defaultgrade>``): each box's
+    entries share lcm(the problem's entry counts) marks, so every box weighs the same, as
+    in the gradebook; Moodle still scores entry by entry (a box graded jointly, an
+    equivalent form or a slip's credit is rigidsym's: import ``gradebook.csv``)."""
     from rigidsym.course.grading import RTOL
 
     out = ['<?xml version="1.0" encoding="UTF-8"?>', "<quiz>"]
@@ -266,6 +271,8 @@ def moodle_xml(title: str, key: dict) -> str:
             body += [f"<li>{html.escape(k)} = {html.escape(_shown(v))}</li>"
                      for k, v in p["data"].items()]
             body.append("</ul>")
+            counts = {a: len(v) for a in p["asked"] if (v := _floats(p["answers"][a]))}
+            whole = math.lcm(*counts.values()) if counts else 1
             for a in p["asked"]:
                 vals = _floats(p["answers"][a])
                 if vals is None:            # an expression in symbols: read on paper
@@ -273,7 +280,10 @@ def moodle_xml(title: str, key: dict) -> str:
                                 f"graded on paper or by rigidsym grade)</p>")
                     continue
                 scale = max([abs(v) for v in vals] + [1e-300])
-                parts = " ".join(f"{{1:NUMERICAL:={v!r}:{RTOL * scale:.3g}}}" for v in vals)
+                # each box weighs the same (the gradebook's mean of boxes): its entries
+                # share lcm(entry counts) integer marks, as Moodle reads a part's weight
+                w = whole // len(vals)
+                parts = " ".join(f"{{{w}:NUMERICAL:={v!r}:{RTOL * scale:.3g}}}" for v in vals)
                 body.append(f"<p>{html.escape(p['labels'][a])}: {parts}</p>")
             name = f"{st['student']}: problem {p['problem']} (Exercise {p['id'][2:]})"
             out.append(f"<question type=\"cloze\"><name><text>{_x(name)}</text></name>"
