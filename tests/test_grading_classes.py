@@ -222,3 +222,46 @@ def test_31_the_issues_equivalent_pairs_are_right():
         assert any("equivalent (-e, -phi)" in g.note for g in graded)
     half = grade(s, dict(base, e=(-e).tolist()))           # -e alone: the inverse turn
     assert next(g for g in half if g.name == "e").slip == "sign"
+
+
+def test_numbers_as_people_write_them():
+    """A decimal comma is read, ``1,234`` is left to the instructor, thousands separators
+    are refused, and a rounded answer is named with its figures."""
+    s, key = key_of("ex3.1")
+    phi = float(key["phi"][0])
+    by = {g.name: g for g in grade(s, {"phi": f"{phi:.6f}".replace(".", ",")},
+                                   replay=False)}
+    assert by["phi"].correct is True
+    for text in ("1,234", "-2,094"):
+        g = next(g for g in grade(s, {"phi": text}, replay=False) if g.name == "phi")
+        assert g.correct is None and g.note == "ambiguous" and "instructor" in g.detail
+    for text in ("1,234,567", "12 345.6"):
+        g = next(g for g in grade(s, {"phi": text}, replay=False) if g.name == "phi")
+        assert g.correct is False and "thousands separators" in g.detail
+    for figures in (1, 2):
+        shown = float(f"{phi:.{figures - 1}e}")
+        g = next(g for g in grade(s, {"phi": shown}, replay=False) if g.name == "phi")
+        assert g.correct is False and g.note == f"rounded {figures} s.f."
+
+
+@given(key=st.lists(st.floats(-5, 5), min_size=4, max_size=4).filter(
+           lambda v: max(map(abs, v)) > 0.5),
+       factor=st.floats(0.1, 10), sign=st.sampled_from((1.0, -1.0)))
+@settings(max_examples=15, deadline=None, derandomize=True, database=None)
+def test_the_sign_and_scale_classes(key, factor, sign):
+    """A unit quaternion's class (+-q) and a Plücker array up to scale: members built
+    here by the group action are right, the key's other edits are not."""
+    from rigidsym.course.answer_classes import judge
+
+    k = np.array(key)
+    q = {"q": k}
+    assert judge({"kind": "sign", "names": ("q",)}, {"q": sign * k}, q, RTOL)["q"].right
+    assert not judge({"kind": "sign", "names": ("q",)}, {"q": 2 * k}, q, RTOL)["q"].right
+    any_scale = {"kind": "up to scale", "name": "q", "sign": "any"}
+    positive = {"kind": "up to scale", "name": "q", "sign": "positive"}
+    assert judge(any_scale, {"q": sign * factor * k}, q, RTOL)["q"].right
+    assert judge(positive, {"q": sign * factor * k}, q, RTOL)["q"].right == (sign > 0)
+    swapped = k[[1, 0, 2, 3]]
+    if not np.allclose(np.cross(swapped[:3], k[:3]), 0, atol=1e-3) or \
+            abs(k[0] - k[1]) > 1e-2 * max(map(abs, key)):
+        assert not judge(any_scale, {"q": swapped}, q, RTOL)["q"].right

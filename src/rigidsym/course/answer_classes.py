@@ -61,8 +61,13 @@ class Verdict:
         """``given`` is ``value`` within the tolerance, modulo the class's freedom that a
         slip keeps: an angle's period; for a point of a line, a shift along the line (a
         slip that scales the point scales the line through the key's point with it)."""
-        if self.period is not None:
-            w = _wrap(given - value, self.period)
+        t = self.target.reshape(-1)
+        i = int(np.argmax(np.abs(t)))
+        f = abs(float(value.reshape(-1)[i] / t[i])) if t.size and t[i] else 1.0
+        if self.period is not None and f > 0.5:
+            # modulo the period scaled as the slip scaled the angle (degrees: 360); a
+            # slip that shrinks the angle (a power of ten down) is compared as it is
+            w = _wrap(given - value, f * self.period)
             return _near(w, np.zeros_like(w), scale, rtol)
         if self.along is not None:
             off = (given - value).reshape(-1)
