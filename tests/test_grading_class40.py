@@ -219,3 +219,44 @@ def test_31_on_data_given_to_six_decimals_is_solved_with_its_residual(capsys):
     args = [f"--set={k}={','.join(map(str, v))}" for k, v in bent.items()]
     assert main(["exercise", "3.1", "--tol", "0.01", *args]) == 0
     assert "residual" in capsys.readouterr().out
+
+
+def test_moodles_cloze_scoring_of_a_one_number_box_is_the_gradebooks():
+    """Moodle's Cloze scoring simulated from its documented syntax ({w:NUMERICAL:=right:tol
+    ~%n%other:tol}: the first answer within its tol gives its percentage of w) on the
+    export of 3.5's distance d, against rigidsym's grade of the same response with the
+    policy's slip credit: equal for a right, a negated, a degrees-free wrong and a blank."""
+    import re
+
+    from rigidsym import exercises as ex
+    from rigidsym.course.exam import asked
+    from rigidsym.course.exam_text import box_label
+    from rigidsym.course.grading import grade
+    from rigidsym.course.roster import moodle_xml
+    from rigidsym.course.worked import solution_record
+
+    s = ex.solve("3.5")
+    rec = dict(solution_record(s), problem=1, weight=1, asked=asked(s),
+               labels={a: box_label(s.id, a) for a in asked(s)})
+    key = {"slip_credit": 0.5, "students": [{"student": "Amy", "problems": [rec]}]}
+    text = moodle_xml("q", key)
+    part = re.search(r"\{(\d+):NUMERICAL:=([^}]*)\}", text.split("distance d")[-1]).group(2)
+    answers = [(100.0, *a.split(":")) for a in [part.split("~")[0]]] + \
+        [(float(m), v, t) for m, v, t in re.findall(r"~%(\d+)%([^:~]+):([^~]+)", part)]
+
+    def moodle(response):
+        for pct, value, tol in answers:
+            if abs(response - float(value)) <= float(tol):
+                return pct / 100
+        return 0.0
+
+    d = float(sp.N(s.answers["d"]))
+    compared = 0
+    for response in (d, -d, d * 1.7, d + 0.5):
+        g = next(g for g in grade(s, {"d": response}) if g.name == "d")
+        ours = 1.0 if g.correct else 0.5 if g.slip in ("sign",) else 0.0
+        if g.slip not in (None, "sign"):
+            continue                       # a slip Moodle's export does not list
+        assert moodle(response) == ours, (response, g.detail)
+        compared += 1
+    assert compared >= 3

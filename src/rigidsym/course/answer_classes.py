@@ -35,7 +35,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-__all__ = ["Verdict", "KINDS", "declared", "judge"]
+__all__ = ["Verdict", "KINDS", "declared", "judge", "names_of"]
 
 KINDS = ("axis-angle", "sign", "point of line", "columns up to sign", "angle", "up to scale")
 

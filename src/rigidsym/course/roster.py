@@ -258,6 +258,7 @@ def moodle_xml(title: str, key: dict) -> str:
     entries share lcm(the problem's entry counts) marks, so every box weighs the same, as
     in the gradebook; Moodle still scores entry by entry (a box graded jointly, an
     equivalent form or a slip's credit is rigidsym's: import ``gradebook.csv``)."""
+    from rigidsym.course.answer_classes import declared, names_of
     from rigidsym.course.grading import RTOL
 
     out = ['<?xml version="1.0" encoding="UTF-8"?>', "<quiz>"]
@@ -272,6 +273,9 @@ def moodle_xml(title: str, key: dict) -> str:
                      for k, v in p["data"].items()]
             body.append("</ul>")
             counts = {a: len(v) for a in p["asked"] if (v := _floats(p["answers"][a]))}
+            # a box whose class is declared (an angle whose sign goes with its axis) is
+            # right or wrong with its other pieces: no per-number credit in Moodle
+            classed = {n for d in declared(mod) for n in names_of(d)}
             whole = math.lcm(*counts.values()) if counts else 1
             for a in p["asked"]:
                 vals = _floats(p["answers"][a])
@@ -283,7 +287,11 @@ def moodle_xml(title: str, key: dict) -> str:
                 # each box weighs the same (the gradebook's mean of boxes): its entries
                 # share lcm(entry counts) integer marks, as Moodle reads a part's weight
                 w = whole // len(vals)
-                parts = " ".join(f"{{{w}:NUMERICAL:={v!r}:{RTOL * scale:.3g}}}" for v in vals)
+                tol = f"{RTOL * scale:.3g}"
+                truth = str(p["answers"][a]) in ("True", "False")
+                extra = "" if a in classed or truth else \
+                    _slip_answers(vals, tol, key.get("slip_credit", 0), a)
+                parts = " ".join(f"{{{w}:NUMERICAL:={v!r}:{tol}{extra}}}" for v in vals)
                 body.append(f"<p>{html.escape(p['labels'][a])}: {parts}</p>")
             name = f"{st['student']}: problem {p['problem']} (Exercise {p['id'][2:]})"
             out.append(f"<question type=\"cloze\"><name><text>{_x(name)}</text></name>"
@@ -293,6 +301,19 @@ def moodle_xml(title: str, key: dict) -> str:
                        f"<idnumber>{_x(st['student'])}-P{p['problem']}</idnumber></question>")
     out.append("</quiz>")
     return "\n".join(out) + "\n"
+
+
+def _slip_answers(vals: list[float], tol: str, credit: float, name: str) -> str:
+    """Moodle's partial credit (``~%n%value:tol``) for the slips of a one-number box that
+    the policy credits (``slip_credit``): its sign, and for an angle degrees for radians;
+    where a box is one number, Moodle's part is the box, and scores as the gradebook."""
+    pct = round(100 * float(credit))
+    if len(vals) != 1 or pct <= 0 or not vals[0]:
+        return ""
+    v = vals[0]
+    out = [-v] + ([v * 180 / math.pi] if "phi" in name or "rad" in name else [])
+    return "".join(f"~%{pct}%{x!r}:{tol}" for x in out
+                   if abs(x - v) > 2 * float(tol))
 
 
 def _floats(v) -> list[float] | None:
