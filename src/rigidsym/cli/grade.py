@@ -11,7 +11,9 @@ student: how many right, the slips named). ``--json`` prints (or writes to PATH)
 ``{"answers": [{"name", "correct", "slip", "expected", "detail"}]}`` for one student and
 ``{"students": [{"student", "answers": [...]}]}`` for a class. Every answer the
 exercise asks is graded: one left out or blank is missing (and wrong). Exit 0 when every
-answer of every student is right, 1 when any is wrong or missing, 2 bad input.
+answer of every student is right, 1 when any is wrong or missing, 2 bad input; ``rigidsym
+grade`` exits 10 + n when n answer files were not graded (each reported on its own line:
+unreadable, of no student of the roster, of two; the rest of the class is graded).
 """
 
 from __future__ import annotations
@@ -27,7 +29,7 @@ __all__ = ["grade_command", "read_answers", "add_arguments", "run", "HELP", "EXA
 HELP = "grade a class: each student's answers against their own exam"
 EXAMPLES = """\
   rigidsym grade class/ class/answers.csv    grades.csv and gradebook.csv in class/
-  rigidsym grade class/ answers/             a folder of <student>.json answer files
+  rigidsym grade class/ answers/             a folder of <id or name>.json answer files
   (class/ as rigidsym exam SPEC --students roster.csv --out class/ wrote it)"""
 
 
