@@ -260,3 +260,26 @@ def test_moodles_cloze_scoring_of_a_one_number_box_is_the_gradebooks():
         assert moodle(response) == ours, (response, g.detail)
         compared += 1
     assert compared >= 3
+
+
+@pytest.mark.parametrize("sep", [",", ";", "\t"])
+def test_rosters_and_answer_tables_as_spreadsheets_save_them(tmp_path, sep):
+    from rigidsym.course.answers import read_answers
+    from rigidsym.course.roster import read_roster
+
+    (tmp_path / "moodle.csv").write_text(
+        sep.join(["First name", "Surname", "ID number", "Email address"]) + "\n" +
+        sep.join(["Zoë", "Müller", "7", "z@x.org"]) + "\n" +
+        sep.join(["Amy", "Ames", "8", ""]) + "\n" + sep.join(["Amy", "Ames", "9", ""]) + "\n",
+        encoding="utf-8-sig")
+    got = read_roster(tmp_path / "moodle.csv")
+    assert [(r["name"], r["id"]) for r in got] == [("Zoë Müller", "7"), ("Amy Ames", "8"),
+                                                  ("Amy Ames", "9")]
+    (tmp_path / "plain.csv").write_text(f"id{sep}name\n1{sep}Li Wei\n", encoding="utf-8-sig")
+    assert read_roster(tmp_path / "plain.csv") == [{"name": "Li Wei", "id": "1", "email": ""}]
+    (tmp_path / "twice.csv").write_text(f"name{sep}id\nA{sep}1\nA{sep}1\n")
+    with pytest.raises(ValueError, match="twice"):
+        read_roster(tmp_path / "twice.csv")
+    (tmp_path / "a.csv").write_text(f"student{sep}P1.phi\nZoë Müller{sep}\"2,0944\"\n",
+                                    encoding="utf-8-sig")
+    assert read_answers(tmp_path / "a.csv") == {"Zoë Müller": {"P1.phi": "2,0944"}}
