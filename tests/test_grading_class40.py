@@ -29,6 +29,7 @@ from rigidsym.cli import main
 SPEC = """title = "Screws"
 seed = 7
 slip_credit = 0.5
+rounding_credit = 0.75
 [[problem]]
 exercise = "3.1"
 variants = 1
@@ -151,6 +152,9 @@ def _grade_and_compare(tmp_path, key, expected, capsys):
         else:                                   # every slip named, never full credit
             assert r["status"] == "wrong" and r["slip"], where
             assert float(r["points"]) < float(r["max_points"]), where
+            credit = 0.75 if r["slip"] == "rounded" else 0.5    # the spec's policy
+            assert float(r["points"]) == pytest.approx(credit * float(r["max_points"]),
+                                                       rel=1e-4), where
     notes = list(csv.DictReader((tmp_path / "c" / "item_analysis.csv").open()))
     assert sum(int(n["count"]) for n in notes) == len(rows)
     return rows
@@ -159,7 +163,8 @@ def _grade_and_compare(tmp_path, key, expected, capsys):
 def test_a_class_of_four_graded_to_the_end(tmp_path, capsys):
     key, expected = _class(tmp_path, 4, seed=1)
     rows = _grade_and_compare(tmp_path, key, expected, capsys)
-    assert (tmp_path / "c" / "handouts" / "s3003.html").exists()        # by id
+    handout = (tmp_path / "c" / "handouts" / "s3003.html").read_text(encoding="utf-8")
+    assert "unit cube" not in handout and "0.1 %" in handout   # a cube of side 2; the tol
     assert (tmp_path / "c" / "keys" / "s3003.html").exists()
     assert "山田 太郎" in (tmp_path / "c" / "keys" / "s3003.html").read_text(encoding="utf-8")
     assert len({r["student"] for r in rows}) == 3         # two students named Amy Ames

@@ -12,7 +12,9 @@ files ``{"P1.w_2": ...}``), read by the reader of ``--set``. It writes::
     DIR/gradebook.csv  a row per student: id, email, the points of each problem and the
                        total (Moodle's grade import: map "ID number" or "Email address")
 
-A box scores 1 when right, the spec's ``slip_credit`` (default 0) when wrong by a named
+A box scores 1 when right, the spec's ``rounding_credit`` when rounded to fewer
+significant figures than the tolerance asks (default: ``slip_credit``), the spec's
+``slip_credit`` (default 0) when wrong by a named
 slip, 0 when wrong otherwise or missing (blank or absent); a problem's points are its
 ``weight`` times the mean score of its boxes (partial credit).
 """
@@ -115,7 +117,8 @@ def grade_class(out_dir: str | Path, answers: str | Path) -> dict:
         raise ValueError(f"DIR: {folder / 'key.json'} is the key of a single exam; grade it "
                          f"with rigidsym exercise ID --grade")
     given, problems = _answers(answers, key)
-    credit = float(key.get("slip_credit", 0))
+    credit = (float(key.get("slip_credit", 0)),
+              float(key.get("rounding_credit", key.get("slip_credit", 0))))
     from rigidsym.course.forked import forked_map
 
     n_problems = max(len(r["problems"]) for r in key["students"])
@@ -147,7 +150,7 @@ def _items(rows: list) -> str:
                      [int(x) for x in kv[0][0].split(".")], kv[0][1], -kv[1]))]])
 
 
-def _student(r: dict, ans: dict, credit: float) -> tuple:
+def _student(r: dict, ans: dict, credit: tuple[float, float]) -> tuple:
     """One student graded: (rows of grades.csv, the gradebook's row, the summary line,
     every box right)."""
     from rigidsym.course.grading import grade
@@ -161,7 +164,8 @@ def _student(r: dict, ans: dict, credit: float) -> tuple:
         share = p["weight"] / max(len(graded), 1)
         total = 0.0
         for g in graded:
-            score = 1.0 if g.correct else credit if g.slip else 0.0
+            score = 1.0 if g.correct else credit[1] if g.slip == "rounded" else \
+                credit[0] if g.slip else 0.0
             total += share * score
             status = "right" if g.correct else "missing" if g.missing else \
                 "ambiguous" if g.correct is None else "wrong"

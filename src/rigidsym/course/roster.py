@@ -183,7 +183,9 @@ def class_exam(spec, roster: str | Path, out_dir: str | Path,
     columns = {f"P{p['problem']}.{a}": None for r in records for p in r["problems"]
                for a in p["asked"]}
     key = {**document_header(), "title": title, "seed": seed,
-           "slip_credit": float(spec.get("slip_credit", 0)), "students": records}
+           "slip_credit": float(spec.get("slip_credit", 0)),
+           "rounding_credit": float(spec.get("rounding_credit", spec.get("slip_credit", 0))),
+           "students": records}
     return {
         "handouts": out / "handouts", "keys": out / "keys",
         "key_json": write_atomic(out / "key.json", json.dumps(key, indent=2,
