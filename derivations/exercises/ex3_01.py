@@ -4,8 +4,9 @@ from __future__ import annotations
 
 import sympy as sp
 
-from rigidsym.course.worked import Param, Solution, exact_check, is_zero, truth_check
+from rigidsym.course.worked import Param, Solution, exact_check, is_zero
 
+from ._fit import fitted_rotation
 from ._screw import rotation_defect, screw_of_displacement
 
 ID = "ex3.1"
@@ -83,7 +84,7 @@ def solve(A=PARAMETERS[0].default, B=PARAMETERS[1].default, D=PARAMETERS[2].defa
     defect = rotation_defect(Q)
     residual = None
     if defect and tol is not None:
-        Q, residual = _nearest_rotation(s, edges0, edges1, tol)
+        Q, residual = fitted_rotation(s, edges0, edges1, tol, "edge")
     elif defect:
         s.fail(f"The displaced vertices are not a rigid motion of the given ones ({defect}), "
                f"so there is no rotation Q (measured vertices: give --tol, or decimals).")
@@ -92,35 +93,6 @@ def solve(A=PARAMETERS[0].default, B=PARAMETERS[1].default, D=PARAMETERS[2].defa
         s.fail("The displacement is a pure translation (Q = 1): every point moves by the "
                "same vector, so no line of minimum displacement is singled out.")
     return _finish(s, Q, P, Pp, *screw, residual=residual)
-
-
-def _nearest_rotation(s: Solution, edges0, edges1, tol):
-    """The rotation nearest to the measured edges (orthogonal Procrustes, Kabsch): Q
-    maximising tr(Q^T M), M = sum of x'_k x_k^T over the edges, rounded to an exactly
-    orthogonal rational matrix; the misfit of each edge within 2 tol (an edge is the
-    difference of two measured vertices)."""
-    import numpy as np
-
-    from ._fit import exact_rotation, nearest_rotation
-
-    M = s.step("correlation", edges1 * edges0.T,
-               "Least squares: Q maximises tr(Q^T M), M = sum x'_k x_k^T over the edges "
-               "(orthogonal Procrustes).")
-    Q = s.step("rotation (least squares)",
-               exact_rotation(nearest_rotation(np.array(M.tolist(), dtype=float))),
-               "Kabsch: Q = U diag(1, 1, det(U V^T)) V^T from M = U S V^T, rounded to an "
-               "exactly orthogonal rational matrix by the Cayley transform.")
-    misfit = [sp.sqrt(sum(x**2 for x in Q * edges0[:, k] - edges1[:, k])) for k in range(3)]
-    worst = max(misfit, key=lambda m: float(sp.N(m, 30)))
-    res = s.step("residual", sp.Float(sp.N(sp.sqrt(sum(m**2 for m in misfit)), 20), 4),
-                 "sqrt(sum ||Q x_k - x'_k||^2) over the three edges, m, to 4 digits.")
-    if bool(worst > 2 * tol):
-        s.fail(f"The displaced vertices are not a rigid motion of the given ones within "
-               f"tol = {float(tol):.3g} m: an edge misses its image by {float(worst):.3g} m "
-               f"under the nearest rotation (residual {float(res):.3g} m).")
-    s.check(truth_check(f"each edge within 2 tol = {float(2 * tol):.3g} m of its image "
-                        f"under Q", True, "exact comparison of closed numbers"))
-    return Q, res
 
 
 def _finish(s: Solution, Q, P, Pp, phi, e, p0, pl, residual=None) -> Solution:
