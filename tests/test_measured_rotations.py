@@ -1,9 +1,10 @@
 """Measured data in every exercise whose data carry a rotation or a rigid motion (3.1, 3.4,
-3.14, 3.19): random rigid data, exact, then written to 6 decimals, are solved with the
+3.6, 3.14, 3.19): random rigid data, exact, then written to 6 decimals, are solved with the
 residual printed and answers within the tolerance of the exact data's; the same data moved
 off the rigid motion by more than the tolerance are refused in one sentence that names
-the tolerance. 3.6 builds its rotation from two directions (always exactly a rotation):
-its decimals are exact data, and its answers follow the directions continuously.
+the tolerance. 3.6 builds its rotation from two measured directions (the grasp frame,
+rounded to an exact rotation, its residual printed): data that decide the frame only within
+the tolerance (a diagonal parallel to the face normal) are refused.
 
 The rotations are drawn here by Cayley's formula with small rationals (no code shared with
 the exercises' least-squares fit), so the exact data and their exact answers exist."""
@@ -42,7 +43,9 @@ def _written(M) -> list:
 
 
 def _f(x) -> np.ndarray:
-    return np.array(sp.N(sp.Matrix(x), 17).tolist(), dtype=float)
+    if not isinstance(x, sp.MatrixBase):
+        return np.array([float(sp.N(x, 17))])
+    return np.array(sp.N(x, 17).tolist(), dtype=float)
 
 
 def _case_31(rng):
@@ -54,7 +57,8 @@ def _case_31(rng):
     after = {f"{k}_prime": R * v + c for k, v in cube.items()}
     exact = dict(cube, **after)
     measured = dict(cube, **{k: _written(v) for k, v in after.items()})
-    off = dict(measured, E_prime=_written(after["E_prime"] + sp.Matrix([0, 0, sp.Rational(1, 10**3)])))
+    bent = after["E_prime"] + sp.Matrix([0, 0, sp.Rational(1, 10**3)])   # 1 mm off
+    off = dict(measured, E_prime=_written(bent))
     return exact, measured, off, ("Q", "phi", "e")
 
 
@@ -72,7 +76,8 @@ def _case_04(rng):
 
 def _case_14(rng):
     R = _rotation(rng)
-    moments = sorted(int(x) for x in rng.choice(np.arange(4, 12), size=3, replace=False))
+    moments = sorted(                   # 6..11: the triangle inequality holds
+        int(x) for x in rng.choice(np.arange(6, 12), size=3, replace=False))
     IA = sp.diag(*moments)
     IB = R * IA * R.T
     exact = dict(I_A=IA, I_B=IB)
@@ -89,7 +94,21 @@ def _case_19(rng):
     return exact, measured, off, ("n_2", "f_2")
 
 
-CASES = {"ex3.1": _case_31, "ex3.4": _case_04, "ex3.14": _case_14, "ex3.19": _case_19}
+def _case_06(rng):
+    normal = sp.Matrix([int(x) for x in rng.integers(1, 4, size=3)])
+    unit = normal / normal.norm()
+    cc = _rotation(rng) * sp.Matrix([-1, 1, 1])
+    while not (unit.cross(cc)[2]):                 # j'' needs a Z component
+        cc = _rotation(rng) * sp.Matrix([-1, 1, 1])
+    exact = dict(face_normal=normal, CC_prime=cc)
+    measured = dict(face_normal=_written(unit), CC_prime=_written(cc))
+    across = sp.Matrix([1, -1, 0]) / 10**6        # CC' 1e-6 off the normal's line
+    off = dict(measured, CC_prime=_written(unit * 2 + across))
+    return exact, measured, off, ("Q", "phi", "e")
+
+
+CASES = {"ex3.1": _case_31, "ex3.4": _case_04, "ex3.6": _case_06, "ex3.14": _case_14,
+         "ex3.19": _case_19}
 
 
 def _agree(ex_id, exact, measured, names, tol):
@@ -112,8 +131,7 @@ def _one(ex_id, seed):
     res = [st for st in s.steps if st.name == "residual"]
     assert res and 0 <= float(res[0].expr) < 10 * tol
     assert "residual" in render_text(s)                 # printed, not only stored
-    R = _f([st for st in s.steps if "rotation" in st.name and "least squares" in st.name
-            or st.name == "nearest rotation"][0].expr)
+    R = _f([st for st in s.steps if "rotation" in st.name][-1].expr)   # the one used
     assert np.allclose(R.T @ R, np.eye(3), atol=1e-15) and np.linalg.det(R) > 0
     if ex_id == "ex3.1" and float(sp.N(exact.answers["phi"])) * float(
             sp.N(s.answers["phi"])) < 0:
@@ -121,7 +139,9 @@ def _one(ex_id, seed):
     _agree(ex_id, exact, s, names, 10 * tol)
     refused = ex.solve(ex_id, **off_data)
     assert refused.status == "ill-posed"
-    assert "within tol = 3e-06" in refused.reason and "would accept them" in refused.reason
+    assert "within tol = 3e-06" in refused.reason
+    if ex_id != "ex3.6":     # 3.6 is refused for a degeneracy: a larger tol would not help
+        assert "would accept them" in refused.reason
 
 
 @pytest.mark.parametrize("ex_id", sorted(CASES))
@@ -134,21 +154,3 @@ def test_rigid_data_to_six_decimals_are_solved_and_off_data_refused(ex_id):
 @pytest.mark.parametrize("seed", range(2, 12))
 def test_rigid_data_to_six_decimals_many_draws(ex_id, seed):
     _one(ex_id, seed)
-
-
-def test_36_directions_to_six_decimals_are_exact_data_close_to_the_exact_answers():
-    """3.6's rotation is built from the face normal and the diagonal CC' (always a
-    rotation): decimals are exact data, no fit and no tol; the answers move by about the
-    rounding (the frame depends smoothly on the directions)."""
-    rng = np.random.default_rng(6)
-    normal = sp.Matrix([int(x) for x in rng.integers(1, 5, size=3)])
-    R = _rotation(rng)
-    unit = normal / normal.norm()
-    cc = R * sp.Matrix([-1, 1, 1])
-    exact = ex.solve("ex3.6", face_normal=normal, CC_prime=cc)
-    s = ex.solve("ex3.6", face_normal=_written(unit), CC_prime=_written(cc))
-    assert exact.status == s.status == "solved" and s.tol is None
-    for name in ("Q", "phi", "e"):
-        assert np.max(np.abs(_f(exact.answers[name]) - _f(s.answers[name]))) < 1e-5
-    with pytest.raises(TypeError, match="not measurements"):
-        ex.solve("ex3.6", face_normal=_written(unit), tol="0.001")
