@@ -279,5 +279,5 @@ def test_parameters_table(ex_id):
         assert p.name.isidentifier() and p.meaning
         if p.shape is not None:      # the book's value reads back as itself
             assert read_value(p, p.default)[0] == p.default
-    assert params.measured == (ex_id in ("ex3.1", "ex3.4", "ex3.14", "ex3.19"))
+    assert params.measured == (ex_id in ("ex3.1", "ex3.4", "ex3.6", "ex3.14", "ex3.19"))
     assert "<table>" in params._repr_html_() and params.names[0] in str(params)

@@ -1,4 +1,4 @@
-"""Least-squares rotations for measured data (Exercises 3.1, 3.4, 3.14, 3.19), made exact.
+"""Least-squares rotations for measured data (Exercises 3.1, 3.4, 3.6, 3.14, 3.19), made exact.
 
 The nearest rotation is found in floating point (orthogonal Procrustes: Kabsch's SVD
 solution) and then rounded to an *exactly* proper-orthogonal rational matrix through the
