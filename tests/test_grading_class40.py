@@ -116,7 +116,7 @@ def _class(tmp_path, n, seed):
     key = json.loads((tmp_path / "c" / "key.json").read_text(encoding="utf-8"))
     folder = tmp_path / "answers"
     folder.mkdir()
-    expected, used = {}, set()
+    expected, used, behaviours = {}, set(), {}
     for r in key["students"]:
         p = r["problems"][0]
         k = {a: _fl(p["answers"][a]) for a in p["asked"]}
@@ -130,9 +130,10 @@ def _class(tmp_path, n, seed):
         (folder / f"{stem}.json").write_text(json.dumps({"P1": ans}, ensure_ascii=False),
                                              encoding="utf-8")
         expected[r["id"]] = expect
+        behaviours[r["id"]] = (behaviour, ans)
     (folder / "broken.json").write_text("{not json")
     (folder / "Nobody Here.json").write_text(json.dumps({"P1": {}}))
-    return key, expected
+    return key, expected, behaviours
 
 
 def _grade_and_compare(tmp_path, key, expected, capsys):
@@ -160,9 +161,68 @@ def _grade_and_compare(tmp_path, key, expected, capsys):
     return rows
 
 
+def _cloze(xml_text: str, ident: str) -> list[list[list[tuple[float, float, float, int]]]]:
+    """The Cloze parts of a student's problem 1, from Moodle's documented syntax
+    ``{w:NUMERICAL:=value:tol~%n%value:tol}``: per box (a paragraph), per entry, the
+    answers in order as (fraction, value, tol, w)."""
+    import re
+
+    q = xml_text.split(f"<idnumber>{ident}-P1</idnumber>")[0].rsplit("<question ", 1)[1]
+    boxes = []
+    for para in q.split("<p>"):
+        parts = re.findall(r"\{(\d+):NUMERICAL:([^}]*)\}", para)
+        if parts:
+            boxes.append([[(100.0 if a.startswith("=") else float(a[1:].split("%")[1]),
+                            *map(float, a.lstrip("=").split("%")[-1].split(":")), int(w))
+                           for a in re.split(r"~(?=%)", spec)] for w, spec in parts])
+    return boxes
+
+
+def _moodle_fraction(boxes, responses: list) -> float:
+    """Moodle's Cloze mark of one question as a fraction: each part scores its weight
+    times the first answer within tol (0 for a blank or none); a comma decimal is read as
+    Moodle reads it in a comma locale."""
+    got = total = 0.0
+    for box, response in zip(boxes, responses, strict=True):
+        flat = list(np.ravel(np.array(response, dtype=object))) if response != "" else []
+        for k, answers in enumerate(box):
+            total += answers[0][3]
+            if k >= len(flat) or flat[k] in ("", None):
+                continue
+            x = float(str(flat[k]).replace(",", "."))
+            got += answers[0][3] * next((f / 100 for f, v, tol, _ in answers
+                                         if abs(x - v) <= tol), 0.0)
+    return got / total
+
+
+def _moodle_against_gradebook(tmp_path, key, rows, behaviours, expected) -> int:
+    """Each student's Moodle mark (simulated from moodle.xml) against the gradebook's:
+    equal for every student who answered every box as the key writes it or left it
+    blank; returns how many students' grades differ (equivalent forms, slips, rounding:
+    Moodle scores entry by entry, the gradebook box by box)."""
+    xml_text = (tmp_path / "c" / "moodle.xml").read_text(encoding="utf-8")
+    differ = 0
+    for r in key["students"]:
+        p = r["problems"][0]
+        mine = [x for x in rows if x["id"] == r["id"]]
+        book = sum(float(x["points"]) for x in mine) / sum(float(x["max_points"]) for x in mine)
+        moodle = _moodle_fraction(_cloze(xml_text, r["id"]),
+                                  [behaviours[r["id"]][1].get(a, "") for a in p["asked"]])
+        behaviour = behaviours[r["id"]][0]
+        as_written = behaviour in ("right", "blank") or behaviour == "rounded" and all(
+            v == "right" for v in expected[r["id"]].values())   # rounding changed nothing
+        if as_written:
+            assert moodle == pytest.approx(book, abs=1e-9), (r["student"], moodle, book)
+        else:                                   # a slip or an equivalent form in a box
+            assert moodle < 1, (r["student"], behaviour)   # never full credit in Moodle
+        differ += not moodle == pytest.approx(book, abs=1e-9)
+    return differ
+
+
 def test_a_class_of_four_graded_to_the_end(tmp_path, capsys):
-    key, expected = _class(tmp_path, 4, seed=1)
+    key, expected, behaviours = _class(tmp_path, 4, seed=1)
     rows = _grade_and_compare(tmp_path, key, expected, capsys)
+    _moodle_against_gradebook(tmp_path, key, rows, behaviours, expected)
     handout = (tmp_path / "c" / "handouts" / "s3003.html").read_text(encoding="utf-8")
     assert "unit cube" not in handout and "0.1 %" in handout   # a cube of side 2; the tol
     assert (tmp_path / "c" / "keys" / "s3003.html").exists()
@@ -173,8 +233,13 @@ def test_a_class_of_four_graded_to_the_end(tmp_path, capsys):
 
 @pytest.mark.slow
 def test_a_class_of_forty_graded_to_the_end(tmp_path, capsys):
-    key, expected = _class(tmp_path, 40, seed=2)
-    _grade_and_compare(tmp_path, key, expected, capsys)
+    key, expected, behaviours = _class(tmp_path, 40, seed=2)
+    rows = _grade_and_compare(tmp_path, key, expected, capsys)
+    differ = _moodle_against_gradebook(tmp_path, key, rows, behaviours, expected)
+    as_written = sum(b in ("right", "blank") for b, _ in behaviours.values())
+    print(f"Moodle's Cloze mark differs from the gradebook's for {differ} of 40 students "
+          f"({as_written} answered every box as written or blank)")
+    assert differ <= 40 - as_written
 
 
 def test_names_that_fold_alike_are_reported_not_guessed(tmp_path):

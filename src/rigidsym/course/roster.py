@@ -265,8 +265,10 @@ def moodle_xml(title: str, key: dict) -> str:
 
     out = ['<?xml version="1.0" encoding="UTF-8"?>', "<quiz>"]
     for st in key["students"]:
+        # by id as well: two students of one name get two categories, unique idnumbers
+        who = f"{st['student']} ({st['id']})" if st.get("id") else st["student"]
         out.append(f"<question type=\"category\"><category><text>$course$/{_x(title)}/"
-                   f"{_x(st['student'])}</text></category></question>")
+                   f"{_x(who)}</text></category></question>")
         for p in st["problems"]:
             mod = exercise_module(p["id"])
             body = [f"<p>{html.escape(task(p['id'], getattr(mod, 'STATEMENT', '')))}</p>",
@@ -300,7 +302,8 @@ def moodle_xml(title: str, key: dict) -> str:
                        f"<questiontext format=\"html\"><text><![CDATA[{''.join(body)}]]>"
                        f"</text></questiontext><generalfeedback><text></text>"
                        f"</generalfeedback><defaultgrade>{p['weight']:g}</defaultgrade>"
-                       f"<idnumber>{_x(st['student'])}-P{p['problem']}</idnumber></question>")
+                       f"<idnumber>{_x(st.get('id') or st['student'])}-P{p['problem']}</idnumber>"
+                       f"</question>")
     out.append("</quiz>")
     return "\n".join(out) + "\n"
 
