@@ -253,13 +253,15 @@ def _template(students: list, columns: list) -> str:
 
 
 def moodle_xml(title: str, key: dict) -> str:
-    """Moodle XML (``<quiz>``): a category per student, a Cloze (embedded answers)
+    """Moodle XML (``<quiz>``): a category per student (name and id; the questions'
+    ``idnumber`` ``<id>-P<k>``), a Cloze (embedded answers)
     question per problem, each entry of each answer a ``NUMERICAL`` part right within
     0.1 % of the answer's largest entry (the grader's tolerance). Moodle marks a Cloze
     question by its parts' integer weights (it ignores ``<defaultgrade>``): each box's
     entries share lcm(the problem's entry counts) marks, so every box weighs the same, as
     in the gradebook; Moodle still scores entry by entry (a box graded jointly, an
-    equivalent form or a slip's credit is rigidsym's: import ``gradebook.csv``)."""
+    equivalent form or a slip's credit is rigidsym's: import ``gradebook.csv``; which
+    boxes Moodle scores as the gradebook: docs/exams.md)."""
     from rigidsym.course.answer_classes import declared, names_of
     from rigidsym.course.grading import RTOL
 
