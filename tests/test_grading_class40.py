@@ -172,7 +172,7 @@ def _cloze(xml_text: str, ident: str) -> list[list[list[tuple[float, float, floa
     for para in q.split("<p>"):
         parts = re.findall(r"\{(\d+):NUMERICAL:([^}]*)\}", para)
         if parts:
-            boxes.append([[(100.0 if a.startswith("=") else float(a[1:].split("%")[1]),
+            boxes.append([[(100.0 if a.startswith("=") else float(a.split("%")[1]),
                             *map(float, a.lstrip("=").split("%")[-1].split(":")), int(w))
                            for a in re.split(r"~(?=%)", spec)] for w, spec in parts])
     return boxes
@@ -295,7 +295,8 @@ def test_moodles_cloze_scoring_of_a_one_number_box_is_the_gradebooks():
     """Moodle's Cloze scoring simulated from its documented syntax ({w:NUMERICAL:=right:tol
     ~%n%other:tol}: the first answer within its tol gives its percentage of w) on the
     export of 3.5's distance d, against rigidsym's grade of the same response with the
-    policy's slip credit: equal for a right, a negated, a degrees-free wrong and a blank."""
+    policy's slip and rounding credits: equal for a right, a negated, a degrees-free
+    wrong and a rounded answer."""
     import re
 
     from rigidsym import exercises as ex
@@ -308,7 +309,8 @@ def test_moodles_cloze_scoring_of_a_one_number_box_is_the_gradebooks():
     s = ex.solve("3.5")
     rec = dict(solution_record(s), problem=1, weight=1, asked=asked(s),
                labels={a: box_label(s.id, a) for a in asked(s)})
-    key = {"slip_credit": 0.5, "students": [{"student": "Amy", "problems": [rec]}]}
+    key = {"slip_credit": 0.5, "rounding_credit": 0.75,
+           "students": [{"student": "Amy", "problems": [rec]}]}
     text = moodle_xml("q", key)
     part = re.search(r"\{(\d+):NUMERICAL:=([^}]*)\}", text.split("distance d")[-1]).group(2)
     answers = [(100.0, *a.split(":")) for a in [part.split("~")[0]]] + \
@@ -322,14 +324,15 @@ def test_moodles_cloze_scoring_of_a_one_number_box_is_the_gradebooks():
 
     d = float(sp.N(s.answers["d"]))
     compared = 0
-    for response in (d, -d, d * 1.7, d + 0.5):
+    rounded = [float(f"{d:.{n - 1}e}") for n in (1, 2)]      # written here, not read
+    for response in (d, -d, d * 1.7, d + 0.5, *rounded, -rounded[1]):
         g = next(g for g in grade(s, {"d": response}) if g.name == "d")
-        ours = 1.0 if g.correct else 0.5 if g.slip in ("sign",) else 0.0
-        if g.slip not in (None, "sign"):
+        ours = 1.0 if g.correct else {"sign": 0.5, "rounded": 0.75}.get(g.slip, 0.0)
+        if g.slip not in (None, "sign", "rounded"):
             continue                       # a slip Moodle's export does not list
         assert moodle(response) == ours, (response, g.detail)
         compared += 1
-    assert compared >= 3
+    assert compared >= 5
 
 
 @pytest.mark.parametrize("sep", [",", ";", "\t"])

@@ -296,7 +296,8 @@ def moodle_xml(title: str, key: dict) -> str:
                 tol = f"{RTOL * scale:.3g}"
                 truth = str(p["answers"][a]) in ("True", "False")
                 extra = "" if a in classed or truth else \
-                    _slip_answers(vals, tol, key.get("slip_credit", 0), a)
+                    _slip_answers(vals, tol, key.get("slip_credit", 0), a,
+                                  key.get("rounding_credit", key.get("slip_credit", 0)))
                 parts = " ".join(f"{{{w}:NUMERICAL:={v!r}:{tol}{extra}}}" for v in vals)
                 body.append(f"<p>{html.escape(p['labels'][a])}: {parts}</p>")
             name = f"{st['student']}: problem {p['problem']} (Exercise {p['id'][2:]})"
@@ -310,17 +311,27 @@ def moodle_xml(title: str, key: dict) -> str:
     return "\n".join(out) + "\n"
 
 
-def _slip_answers(vals: list[float], tol: str, credit: float, name: str) -> str:
+def _slip_answers(vals: list[float], tol: str, credit: float, name: str,
+                  rounding: float = 0.0) -> str:
     """Moodle's partial credit (``~%n%value:tol``) for the slips of a one-number box that
     the policy credits (``slip_credit``): its sign, and for an angle degrees for radians;
-    where a box is one number, Moodle's part is the box, and scores as the gradebook."""
-    pct = round(100 * float(credit))
-    if len(vals) != 1 or pct <= 0 or not vals[0]:
+    then the key rounded to 1, 2 or 3 significant figures (``rounding_credit``, as
+    :func:`rigidsym.course.grading.rounded_figures` names it: within 1e-9 relative). Where
+    a box is one number, Moodle's part is the box, and scores as the gradebook."""
+    if len(vals) != 1 or not vals[0]:
         return ""
-    v = vals[0]
-    out = [-v] + ([v * 180 / math.pi] if "phi" in name or "rad" in name else [])
-    return "".join(f"~%{pct}%{x!r}:{tol}" for x in out
-                   if abs(x - v) > 2 * float(tol))
+    v, out = vals[0], []
+    pct = round(100 * float(credit))
+    if pct > 0:
+        slips = [-v] + ([v * 180 / math.pi] if "phi" in name or "rad" in name else [])
+        out += [f"~%{pct}%{x!r}:{tol}" for x in slips if abs(x - v) > 2 * float(tol)]
+    pct = round(100 * float(rounding))
+    if pct > 0:
+        for n in range(1, 4):
+            r = float(f"{v:.{n - 1}e}")
+            if abs(r - v) > float(tol):   # a rounding inside the tolerance is right
+                out.append(f"~%{pct}%{r!r}:{max(1e-9 * abs(r), 1e-12):.3g}")
+    return "".join(out)
 
 
 def _floats(v) -> list[float] | None:
