@@ -81,6 +81,19 @@ def test_moodle_xml_has_a_cloze_question_per_student_and_problem(made):
     p = key["students"][0]["problems"][0]
     entries = sum(len(np.ravel(p["answers"][a])) for a in p["asked"])
     assert first.count(":NUMERICAL:=") == entries
+    # Moodle's Cloze scoring, from its documented syntax {weight:NUMERICAL:=value:tol}: the
+    # question's mark is the sum of its parts' weights, a part scores its weight when the
+    # response is within tol. Every box weighs the same (the gradebook's mean of boxes),
+    # so a right box and a blank box score as the gradebook scores them.
+    for q in qs:
+        text = q.getElementsByTagName("questiontext")[0].toxml()
+        boxes = [re.findall(r"\{(\d+):NUMERICAL:=([^:]+):([^}]+)\}", para)
+                 for para in text.split("<p>") if ":NUMERICAL:" in para]
+        marks = [sum(int(w) for w, _, _ in b) for b in boxes]
+        assert len(set(marks)) == 1, marks
+        for blank in range(len(boxes)):        # one box blank, the others right
+            got = sum(int(w) for k, b in enumerate(boxes) if k != blank for w, _, _ in b)
+            assert got / sum(marks) == pytest.approx((len(boxes) - 1) / len(boxes))
 
 
 def _floats(x) -> list:
@@ -166,10 +179,11 @@ def test_bad_rosters_and_answers(made, tmp_path, capsys):
     assert main(["exam", str(d / "quiz.toml"), "--students", str(tmp_path / "r.csv"),
                  "--out", str(tmp_path / "o")]) == 2
     assert "twice" in capsys.readouterr().err
+    # a row of no student, or with a box the exam lacks: reported, the class graded
     _write(tmp_path / "a.csv", [["student", "P1.w_2"], ["Zed", "1"]])
-    assert main(["grade", str(d / "out"), str(tmp_path / "a.csv")]) == 2
-    assert "'Zed' is not a student" in capsys.readouterr().err
+    assert main(["grade", str(d / "out"), str(tmp_path / "a.csv")]) == 11
+    assert "Zed: not graded: no student id or name" in capsys.readouterr().err
     _write(tmp_path / "a.csv", [["student", "P9.x"], ["Amy Ames", "1"]])
-    assert main(["grade", str(d / "out"), str(tmp_path / "a.csv")]) == 2
+    assert main(["grade", str(d / "out"), str(tmp_path / "a.csv")]) == 11
     assert re.search(r"'P9.x' is no answer box", capsys.readouterr().err)
     assert main(["grade", str(tmp_path), str(tmp_path / "a.csv")]) == 2

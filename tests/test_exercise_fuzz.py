@@ -154,11 +154,20 @@ def test_the_issue_cases(ex_id, sets, rc, words):
     assert ("certified" in out) == ("cos(30)" in sets[0] or "pi," in sets[0])
 
 
-def test_integers_past_sympys_reach_are_refused_not_a_defect():
+def test_integers_past_sympys_reach_are_refused_not_a_defect(monkeypatch):
     """Found by the exhaustive property: transcendental entries of 3.6's face normal made
-    sympy factor integers past a float's range (OverflowError): refused (2), not exit 3."""
+    sympy factor integers past a float's range (OverflowError): refused (2), not exit 3.
+    3.6's directions are now measurements (rounded to 30 certified digits, the grasp frame
+    fitted in floating point): solved; the overflow is planted to keep the refusal tested."""
     got, out, err, seconds = _run("ex3.6", ["face_normal=pi,pi,cos(30°)"])
-    assert got == 2 and "integers too large" in err and seconds < SECONDS, (got, err)
+    assert got == 0 and "certified" in out and "residual" in out and seconds < SECONDS, err
+    from rigidsym.course.worked import exercise_module
+
+    def overflowing(**kw):
+        raise OverflowError("int too large to convert to float")
+    monkeypatch.setattr(exercise_module("ex3.7"), "solve", overflowing)
+    got, out, err, seconds = _run("ex3.7", ["a=7,0,0", "b=0,7,7"])    # not cached
+    assert got == 2 and "integers too large" in err, (got, err)
 
 
 def test_a_defect_exits_3_not_an_answer_code(monkeypatch):

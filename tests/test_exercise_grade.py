@@ -124,7 +124,8 @@ def test_cli_one_student_and_a_class(tmp_path, capsys):
     assert main(["exercise", "3.19", "--grade", str(tmp_path / "bob.json"), "--json"]) == 1
     doc = json.loads(capsys.readouterr().out)
     by = {a["name"]: a for a in doc["answers"]}
-    assert set(by["n_2"]) == {"name", "correct", "missing", "slip", "expected", "detail"}
+    assert set(by["n_2"]) == {"name", "correct", "missing", "slip", "expected", "detail",
+                             "note"}
     assert by["n_2"]["slip"] == "sign" and by["f_2"]["correct"] is True
     assert main(["exercise", "3.19", "--grade", str(tmp_path)]) == 1
     out = capsys.readouterr().out

@@ -36,6 +36,7 @@ def test_decimals_of_an_exact_length_stay_exact():
     ("ex3.4", dict(READ_3, f_2="-1.333,1.333,0.767")),             # beyond its digits
     ("ex3.14", dict(I_B="1,0,0;0,2,0;0,0,4")),
     ("ex3.19", dict(Q="1,0.1,0;0,1,0;0,0,1", tol="0.01")),
+    ("ex3.1", dict(B_prime="0,3.9,0")),                           # an edge 0.9 m long
 ])
 def test_a_refusal_names_a_tolerance_that_accepts(ex_id, data):
     s = ex.solve(ex_id, **data)

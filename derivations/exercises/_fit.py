@@ -1,4 +1,4 @@
-"""Least-squares rotations for measured data (Exercises 3.4, 3.14, 3.19), made exact.
+"""Least-squares rotations for measured data (Exercises 3.1, 3.4, 3.6, 3.14, 3.19), made exact.
 
 The nearest rotation is found in floating point (orthogonal Procrustes: Kabsch's SVD
 solution) and then rounded to an *exactly* proper-orthogonal rational matrix through the
@@ -18,6 +18,7 @@ from fractions import Fraction
 import numpy as np
 import sympy as sp
 
+from rigidsym.course.worked import Solution, truth_check
 from rigidsym.declare import cpm
 
 _FLIPS = [sp.diag(1, 1, 1), sp.diag(1, -1, -1), sp.diag(-1, 1, -1), sp.diag(-1, -1, 1)]
@@ -82,6 +83,53 @@ def exact_rotation(Qf: np.ndarray, max_den: int = 10**6) -> sp.Matrix:
             best = (F, s)
     F, s = best
     return F.T * cayley([_rational(v, max_den) for v in s])
+
+
+def fitted_rotation(s: Solution, before, after, tol, what: str = "edge"):
+    """The rotation of measured vectors, its residual printed, refused beyond ``2 tol``.
+
+    ``after[:, k] ~ Q before[:, k]`` for each column ``k`` (e.g. a body's edge vectors
+    before and after a rigid motion, each the difference of two measured points, hence
+    the bound ``2 tol``). Adds the steps "correlation", "rotation (least squares)" and
+    "residual" to ``s``, and a check that each vector is within ``2 tol`` of its image.
+
+    Args:
+        s: the solution being written.
+        before, after: (3, n) sympy matrices of exact (rational) entries, in the data's
+            length unit.
+        tol: positive rational, the tolerance of one measured coordinate, same unit.
+        what: the vectors' name in the refusal ("edge").
+
+    Returns:
+        ``(Q, residual)``: ``Q`` an exactly proper-orthogonal rational 3x3 matrix (Kabsch's
+        solution of the orthogonal Procrustes problem, rounded by :func:`exact_rotation`),
+        ``residual = sqrt(sum_k ||Q before_k - after_k||^2)`` as a 4-digit Float.
+
+    Raises:
+        the solution's ill-posed outcome (:meth:`Solution.fail`) when a vector misses its
+        image by more than ``2 tol``: the data are not a rigid motion within ``tol``; the
+        sentence gives the miss, the residual and a tolerance that would accept them.
+    """
+    M = s.step("correlation", after * before.T,
+               f"Least squares: Q maximises tr(Q^T M), M = sum x'_k x_k^T over the {what}s "
+               "(orthogonal Procrustes).")
+    Q = s.step("rotation (least squares)",
+               exact_rotation(nearest_rotation(np.array(M.tolist(), dtype=float))),
+               "Kabsch: Q = U diag(1, 1, det(U V^T)) V^T from M = U S V^T, rounded to an "
+               "exactly orthogonal rational matrix by the Cayley transform.")
+    misfit = [sp.sqrt(sum(x**2 for x in Q * before[:, k] - after[:, k]))
+              for k in range(before.cols)]
+    worst = max(misfit, key=lambda m: float(sp.N(m, 30)))
+    res = s.step("residual", sp.Float(sp.N(sp.sqrt(sum(m**2 for m in misfit)), 20), 4),
+                 f"sqrt(sum ||Q x_k - x'_k||^2) over the {before.cols} {what}s, to 4 digits.")
+    if bool(worst > 2 * tol):
+        s.fail(f"The data are not a rigid motion within tol = {float(tol):.3g}: "
+               f"a{'n' if what[0] in 'aeiou' else ''} {what} misses its image by "
+               f"{float(worst):.3g} under the nearest rotation (residual {float(res):.3g})"
+               f"{accepting_tol(sp.N(worst, 20) / 2)}.")
+    s.check(truth_check(f"each {what} within 2 tol = {float(2 * tol):.3g} of its image "
+                        f"under Q", True, "exact comparison of closed numbers"))
+    return Q, res
 
 
 def squared_residual(Q, pairs) -> sp.Expr:

@@ -6,6 +6,7 @@ import sympy as sp
 
 from rigidsym.course.worked import Param, Solution, exact_check, is_zero
 
+from ._fit import fitted_rotation
 from ._screw import rotation_defect, screw_of_displacement
 
 ID = "ex3.1"
@@ -17,7 +18,14 @@ CITATION = "Angeles, Sec. 3.9, Exercise 3.1"
 #: the documented unit of each answer with one (graded answers may be written in any
 #: compatible unit, issue 50); the others are pure numbers or mixed
 ANSWER_UNITS = {"phi": "rad"}
+#: what the answers are (the grader judges a student's answer by its class): the axis and
+#: angle of Q with the Plücker array of its axis, one sign for all three ((e, phi, [e; n])
+#: is (-e, -phi, -[e; n])) and phi + 2 pi k
+ANSWER_CLASSES = ({"kind": "axis-angle", "axis": "e", "angle": "phi", "linked": ("plucker",)},)
 FIGURE_NAME = "cube"
+#: the vertices may be measurements (decimals, or floats): the rotation is then the
+#: nearest one to the edges' (orthogonal Procrustes), its misfit printed and within tol
+MEASURED = True
 _V = sp.ImmutableMatrix
 # Assumed geometry (Fig. 3.9 is not in the text): unit cube, A at O, B on X, D on Y, E on Z,
 # turned 120 deg about [1, 1, 1] and shifted.
@@ -50,8 +58,9 @@ def cube_vertices(A, B, D, E) -> dict:
 def solve(A=PARAMETERS[0].default, B=PARAMETERS[1].default, D=PARAMETERS[2].default,
           E=PARAMETERS[3].default, A_prime=PARAMETERS[4].default,
           B_prime=PARAMETERS[5].default, D_prime=PARAMETERS[6].default,
-          E_prime=PARAMETERS[7].default) -> Solution:
-    """Worked solution of Exercise 3.1 (vertices before and after, in metres)."""
+          E_prime=PARAMETERS[7].default, tol=None) -> Solution:
+    """Worked solution of Exercise 3.1 (vertices before and after, in metres; ``tol``:
+    measured vertices, the rotation the least-squares one within ``tol`` metres)."""
     P = {k: sp.Matrix(v) for k, v in zip("ABDE", (A, B, D, E), strict=True)}
     Pp = {k: sp.Matrix(v) for k, v in zip("ABDE", (A_prime, B_prime, D_prime, E_prime),
                                            strict=True)}
@@ -73,17 +82,20 @@ def solve(A=PARAMETERS[0].default, B=PARAMETERS[1].default, D=PARAMETERS[2].defa
     Q = s.step("rotation", (edges1 * edges0.inv()).applyfunc(sp.radsimp),
                "Edge vectors rotate: [b'-a', d'-a', e'-a'] = Q [b-a, d-a, e-a].")
     defect = rotation_defect(Q)
-    if defect:
+    residual = None
+    if defect and tol is not None:
+        Q, residual = fitted_rotation(s, edges0, edges1, tol, "edge")
+    elif defect:
         s.fail(f"The displaced vertices are not a rigid motion of the given ones ({defect}), "
-               f"so there is no rotation Q.")
+               f"so there is no rotation Q (measured vertices: give --tol, or decimals).")
     screw = screw_of_displacement(Q, P["A"], Pp["A"])
     if screw is None:
         s.fail("The displacement is a pure translation (Q = 1): every point moves by the "
                "same vector, so no line of minimum displacement is singled out.")
-    return _finish(s, Q, P, Pp, *screw)
+    return _finish(s, Q, P, Pp, *screw, residual=residual)
 
 
-def _finish(s: Solution, Q, P, Pp, phi, e, p0, pl) -> Solution:
+def _finish(s: Solution, Q, P, Pp, phi, e, p0, pl, residual=None) -> Solution:
     s.step("angle", phi, "cos(phi) = (tr Q - 1)/2.")
     s.step("axis", e, "e = vect(Q)/sin(phi) (a column of Q + 1 for a half turn).")
     s.step("point of L closest to O", p0,
@@ -102,9 +114,14 @@ def _finish(s: Solution, Q, P, Pp, phi, e, p0, pl) -> Solution:
     for name, h in hits:
         s.answers[f"intersection_{_PLANES[name]}"] = h
     c = Pp["A"] - Q * P["A"]
-    s.check(exact_check("Q proper orthogonal, maps every given edge of the cube",
-                        [Q.T * Q - sp.eye(3), Q.det() - 1]
-                        + [Q * (P[k] - P["A"]) - (Pp[k] - Pp["A"]) for k in P]))
+    if residual is not None:
+        s.answers["residual"] = residual
+        s.check(exact_check("Q proper orthogonal (exact rationals)",
+                            [Q.T * Q - sp.eye(3), Q.det() - 1]))
+    else:
+        s.check(exact_check("Q proper orthogonal, maps every given edge of the cube",
+                            [Q.T * Q - sp.eye(3), Q.det() - 1]
+                            + [Q * (P[k] - P["A"]) - (Pp[k] - Pp["A"]) for k in P]))
     s.check(exact_check("Plücker constraints e.e = 1, e.n = 0; points of L move along e with "
                         "the minimum magnitude |e.c|",
                         [pl[:3, :].dot(pl[:3, :]) - 1, pl[:3, :].dot(pl[3:, :])]

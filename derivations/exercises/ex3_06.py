@@ -6,6 +6,7 @@ import sympy as sp
 
 from rigidsym.course.worked import Param, Solution, exact_check, is_zero
 
+from ._fit import exact_rotation
 from ._screw import screw_of_displacement
 
 ID = "ex3.6"
@@ -17,7 +18,18 @@ CITATION = "Angeles, Sec. 3.9, Exercise 3.6"
 #: the documented unit of each answer with one (graded answers may be written in any
 #: compatible unit, issue 50); the others are pure numbers or mixed
 ANSWER_UNITS = {"phi": "rad", "axis_point_p0": "m"}
+#: what the answers are: the axis and angle of Q with the axis's Plücker array, one sign
+#: for all three, phi + 2 pi k; "a point p_0 of the axis": any point of it
+ANSWER_CLASSES = (
+    {"kind": "axis-angle", "axis": "e", "angle": "phi", "linked": ("axis_plucker",)},
+    {"kind": "point of line", "point": "axis_point_p0", "direction": "e"},
+)
 FIGURE_NAME = "grasp"
+#: the two directions may be measurements (decimals, or floats): the grasp frame is then
+#: built in floating point, rounded to an exact rotation (its residual printed), and a
+#: degeneracy (a sign, a parallel pair) is judged within tol; C' and p stay exact
+MEASURED = True
+READINGS = ("face_normal", "CC_prime")
 _V = sp.ImmutableMatrix
 PARAMETERS = (
     Param("face_normal", _V([1, 1, 1]), (3,), "normal of the triangular faces DEF, D'E'F' "
@@ -34,8 +46,9 @@ VARIANTS = (
 
 
 def solve(face_normal=PARAMETERS[0].default, CC_prime=PARAMETERS[1].default,
-          C_prime=PARAMETERS[2].default, p=PARAMETERS[3].default) -> Solution:
-    """Worked solution of Exercise 3.6 (vectors in F, lengths in metres)."""
+          C_prime=PARAMETERS[2].default, p=PARAMETERS[3].default, tol=None) -> Solution:
+    """Worked solution of Exercise 3.6 (vectors in F, lengths in metres; ``tol``: the face
+    normal and CC' are measured directions, the grasp frame rounded to an exact rotation)."""
     d_faces, CCp, Cp, p = (sp.Matrix(v) for v in (face_normal, CC_prime, C_prime, p))
     s = Solution(
         ID, TITLE, STATEMENT, CITATION,
@@ -47,6 +60,34 @@ def solve(face_normal=PARAMETERS[0].default, CC_prime=PARAMETERS[1].default,
                      "Grasp: X'' normal to the finger planes (= faces), i'' with positive "
                      "components; j'' normal to i'' and to CC' with positive Z component; "
                      "k'' = i'' x j''. The method applies to any other reading of the figure."])
+    if tol is None:
+        Q, checks, res = *_grasp_frame(s, d_faces, CCp), None
+    else:
+        Q, checks, res = _measured_frame(s, d_faces, CCp, tol)
+    screw = screw_of_displacement(Q, p, Cp)
+    if screw is None:
+        s.fail("The gripper does not turn (Q = 1): the motion is a translation and no screw "
+               "axis is singled out.")
+    phi, e, p0, pl = screw
+    s.step("(a) angle", phi, "cos(phi) = (tr Q - 1)/2.")
+    s.step("(a) axis", e, "e = vect(Q)/sin(phi).")
+    s.step("(b) point of the screw axis", p0,
+           "P goes to C': a = p, a' = C' in Eq. (3.18); the minimum-displacement points are "
+           "the screw axis {p0 + lambda e}.")
+    s.answers = {"Q": Q, "phi": phi, "e": e, "axis_point_p0": p0, "axis_plucker": pl}
+    if res is not None:
+        s.answers["residual"] = res
+    c = Cp - Q * p
+    s.check(checks)
+    s.check(exact_check("Q e = e, e.e = 1; cos(phi) matches tr Q",
+                        [Q * e - e, e.dot(e) - 1, 1 + 2 * sp.cos(phi) - Q.trace()]))
+    s.check(exact_check("axis points move along e by the minimum |e.c|",
+                        [((Q - sp.eye(3)) * x + c).cross(e) for x in (p0, p0 + e)]))
+    return s
+
+
+def _grasp_frame(s: Solution, d_faces, CCp):
+    """The grasp frame [i'', j'', k''] from exact directions, and its exact check."""
     signs = {sp.sign(x) for x in d_faces}
     if signs not in ({1}, {-1}):
         s.fail("The face normal has a zero component or components of both signs, so no "
@@ -67,25 +108,49 @@ def solve(face_normal=PARAMETERS[0].default, CC_prime=PARAMETERS[1].default,
     k2 = s.step("k''", i2.cross(j2).applyfunc(sp.radsimp), "Right-handed frame.")
     Q = s.step("rotation", sp.Matrix.hstack(i2, j2, k2),
                "F' starts parallel to F, so Q's columns are i'', j'', k'' in F.")
-    screw = screw_of_displacement(Q, p, Cp)
-    if screw is None:
-        s.fail("The gripper does not turn (Q = 1): the motion is a translation and no screw "
-               "axis is singled out.")
-    phi, e, p0, pl = screw
-    s.step("(a) angle", phi, "cos(phi) = (tr Q - 1)/2.")
-    s.step("(a) axis", e, "e = vect(Q)/sin(phi).")
-    s.step("(b) point of the screw axis", p0,
-           "P goes to C': a = p, a' = C' in Eq. (3.18); the minimum-displacement points are "
-           "the screw axis {p0 + lambda e}.")
-    s.answers = {"Q": Q, "phi": phi, "e": e, "axis_point_p0": p0, "axis_plucker": pl}
-    c = Cp - Q * p
-    s.check(exact_check("Q proper orthogonal; j'' normal to CC' and to i''",
-                        [Q.T * Q - sp.eye(3), Q.det() - 1, j2.dot(CCp), i2.dot(j2)]))
-    s.check(exact_check("Q e = e, e.e = 1; cos(phi) matches tr Q",
-                        [Q * e - e, e.dot(e) - 1, 1 + 2 * sp.cos(phi) - Q.trace()]))
-    s.check(exact_check("axis points move along e by the minimum |e.c|",
-                        [((Q - sp.eye(3)) * x + c).cross(e) for x in (p0, p0 + e)]))
-    return s
+    return Q, exact_check("Q proper orthogonal; j'' normal to CC' and to i''",
+                          [Q.T * Q - sp.eye(3), Q.det() - 1, j2.dot(CCp), i2.dot(j2)])
+
+
+def _measured_frame(s: Solution, d_faces, CCp, tol):
+    """The grasp frame from measured directions: built in floating point (30 digits),
+    rounded to an exactly proper-orthogonal rational matrix (Cayley transform), its
+    distance to the float frame printed as the residual; a sign or a parallel pair that
+    the readings decide only within ``tol`` (per coordinate) is refused."""
+    import numpy as np
+
+    from rigidsym.course.worked import truth_check
+
+    small = [x for x in d_faces if bool(abs(x) <= tol)]
+    signs = {sp.sign(x) for x in d_faces}
+    if small or signs not in ({1}, {-1}):
+        s.fail(f"The face normal has a component within tol = {float(tol):.3g} of zero or "
+               f"components of both signs, so the readings do not give a normal i'' with all "
+               f"three components positive, as the grasp requires.")
+    d = np.array(sp.N(d_faces, 30).tolist(), dtype=float).ravel() * float(signs.pop())
+    c = np.array(sp.N(CCp, 30).tolist(), dtype=float).ravel()
+    i2 = d / np.linalg.norm(d)
+    j = np.cross(i2, c)
+    if np.linalg.norm(j) <= 2 * float(tol):
+        s.fail(f"The diagonal CC' is parallel to the face normal within tol = {float(tol):.3g} "
+               f"(|i'' x CC'| = {np.linalg.norm(j):.3g}), so the readings do not fix j'', "
+               f"normal to both.")
+    if abs(j[2]) <= 2 * float(tol):
+        s.fail(f"j'' has a Z component within tol = {float(tol):.3g} of zero, so the readings "
+               f"do not decide its sense (the grasp's rule: Z component positive).")
+    j2 = j / np.linalg.norm(j) * np.sign(j[2])
+    F = np.column_stack([i2, j2, np.cross(i2, j2)])
+    Q = s.step("rotation (measured directions)", exact_rotation(F),
+               "i'' = normal/|normal|, j'' = i'' x CC' normalised (Z component positive), "
+               "k'' = i'' x j'' in floating point, rounded to an exactly orthogonal rational "
+               "matrix by the Cayley transform.")
+    res = float(np.linalg.norm(np.array(sp.N(Q, 30).tolist(), dtype=float) - F))
+    shown = s.step("residual", sp.Float(res, 4), "||Q - [i'', j'', k'']||_F, the rounding of "
+                   "the measured frame to an exact rotation, to 4 digits.")
+    return Q, truth_check(f"Q proper orthogonal (exact rationals), within tol = "
+                          f"{float(tol):.3g} of the frame of the readings",
+                          Q.T * Q == sp.eye(3) and Q.det() == 1 and res <= float(tol),
+                          "exact rationals; residual in floating point"), shown
 
 
 def figure(s: Solution):

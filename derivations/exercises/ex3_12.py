@@ -25,6 +25,12 @@ STATEMENT = ("\"cutting it into two parts, which are separated by a plane that c
              "parts.\"")
 CITATION = "Angeles, Sec. 3.9, Exercise 3.12"
 FIGURE_NAME = "cut"
+#: what the answers are: principal axes are lines (each column up to its sign), so the
+#: angle of the first one from Y is defined modulo pi
+ANSWER_CLASSES = tuple(
+    d for tag in ("wedge", "upper") for d in (
+        {"kind": "columns up to sign", "name": f"{tag}_principal_axes"},
+        {"kind": "angle", "name": f"{tag}_axis_angle_from_y_rad", "period": "pi"}))
 PARAMETERS = (Param("a", A_SIDE, (), "side of the regular hexagonal bases", "m"),
               Param("h", HEIGHT, (), "height of the prism (below a sqrt(3) the cut leaves "
                     "through the top face)", "m"))

@@ -72,8 +72,9 @@ def _rotation(s: Solution, Q, tol):
     s.step("nearest rotation", R,
            "The measured Q is orthogonal within tol; it is replaced by its orthogonal polar "
            "factor (the rotation nearest in the Frobenius norm), made exact.")
-    s.step("distance to the measured Q", sp.Float(sp.sqrt(((R - Q).T * (R - Q)).trace())
-                                                  .evalf(20), 4), "||R - Q||_F, to 4 digits.")
+    s.step("residual", sp.Float(sp.sqrt(((R - Q).T * (R - Q)).trace()).evalf(20), 4),
+           "||R - Q||_F, the distance from the measured Q to the rotation used, to 4 "
+           "digits.")
     return R
 
 

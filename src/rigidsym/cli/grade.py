@@ -11,7 +11,9 @@ student: how many right, the slips named). ``--json`` prints (or writes to PATH)
 ``{"answers": [{"name", "correct", "slip", "expected", "detail"}]}`` for one student and
 ``{"students": [{"student", "answers": [...]}]}`` for a class. Every answer the
 exercise asks is graded: one left out or blank is missing (and wrong). Exit 0 when every
-answer of every student is right, 1 when any is wrong or missing, 2 bad input.
+answer of every student is right, 1 when any is wrong or missing, 2 bad input; ``rigidsym
+grade`` exits 10 + n when n answer files were not graded (each reported on its own line:
+unreadable, of no student of the roster, of two; the rest of the class is graded).
 """
 
 from __future__ import annotations
@@ -27,7 +29,7 @@ __all__ = ["grade_command", "read_answers", "add_arguments", "run", "HELP", "EXA
 HELP = "grade a class: each student's answers against their own exam"
 EXAMPLES = """\
   rigidsym grade class/ class/answers.csv    grades.csv and gradebook.csv in class/
-  rigidsym grade class/ answers/             a folder of <student>.json answer files
+  rigidsym grade class/ answers/             a folder of <id or name>.json answer files
   (class/ as rigidsym exam SPEC --students roster.csv --out class/ wrote it)"""
 
 
@@ -41,7 +43,9 @@ def add_arguments(p) -> None:
 
 def run(args) -> int:
     """Grade the class: 0 every answer right, 1 any wrong or missing, 2 bad input, 3 a
-    defect. Writes DIR/grades.csv and DIR/gradebook.csv and prints a line per student."""
+    defect, 10 + n (at most 99) when n answer files or rows were not graded (each
+    reported on its own line; the rest of the class is graded). Writes DIR/grades.csv,
+    DIR/gradebook.csv and DIR/item_analysis.csv and prints a line per student."""
     from rigidsym.course import grade_class
 
     try:
@@ -54,7 +58,13 @@ def run(args) -> int:
               file=sys.stderr)
         return 3
     print(done["table"])
-    print(f"wrote {done['grades']}\nwrote {done['gradebook']}")
+    print(f"wrote {done['grades']}\nwrote {done['gradebook']}\nwrote {done['items']}")
+    for line in done["problems"]:
+        print(f"rigidsym: {line}", file=sys.stderr)
+    if done["problems"]:
+        print(f"rigidsym: {len(done['problems'])} answer file(s) or row(s) not graded "
+              f"(listed above); the rest of the class is graded", file=sys.stderr)
+        return min(10 + len(done["problems"]), 99)
     return 0 if done["all_right"] else 1
 
 

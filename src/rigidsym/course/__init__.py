@@ -11,11 +11,14 @@ The package, by concept:
   data, numbers and units a student writes; rendering; the solution store);
 * ``exercises``: solve, draw, grade, write a notebook, set an exam (the public functions,
   re-exported by :mod:`rigidsym.exercises`);
-* ``grading``, ``grading_units``, ``slips``: one student's answers against a worked
-  solution, units converted, the slip of a wrong answer named;
+* ``grading``, ``grading_units``, ``slips``, ``answer_classes``: one student's answers
+  against a worked solution, units converted, each answer judged by its class (what it
+  means: an axis and angle, a point of a line, principal axes), the slip of a wrong
+  answer named;
 * ``exam``, ``exam_text``, ``roster``: exam sets (a handout and a key from a spec; what a
   handout says; a class from a roster, one exam per student);
-* ``answers``, ``gradebook``: students' answer files read, a class graded, the LMS export;
+* ``answers``, ``matching``, ``gradebook``: students' answer files read and matched to the
+  roster (by id, then by folded name), a class graded, the LMS export;
 * ``notebooks``, ``exercise_report``: a notebook per exercise, the exercises in the report;
 * ``forked``: a class's work mapped over forked worker processes.
 """

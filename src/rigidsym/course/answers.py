@@ -8,10 +8,11 @@ blank, and the grader counts it missing.
 from __future__ import annotations
 
 import csv
+import io
 import json
 from pathlib import Path
 
-__all__ = ["read_answers"]
+__all__ = ["read_answers", "read_class_answers", "read_table"]
 
 
 def read_answers(path: str | Path) -> dict[str, dict]:
@@ -43,20 +44,71 @@ def _json_answers(f: Path) -> dict:
     return doc
 
 
-def _csv_answers(f: Path) -> dict[str, dict]:
+def read_table(f: Path, what: str = "--grade") -> list[dict]:
+    """The rows of a CSV as spreadsheets save it: UTF-8 with or without a BOM (Excel), the
+    separator ``,``, ``;`` or a tab found by :class:`csv.Sniffer` (a European Excel writes
+    ``;``); header names stripped.
+
+    Raises:
+        ValueError: an unreadable file (the message names it).
+    """
     try:
-        with f.open(newline="", encoding="utf-8") as fh:
-            rows = list(csv.DictReader(fh))
-    except (OSError, csv.Error, UnicodeDecodeError) as exc:
-        raise ValueError(f"--grade: cannot read {f}: {exc}") from None
-    if not rows or "student" not in rows[0]:
-        raise ValueError(f"--grade: {f} needs a header row with a 'student' column and one "
-                         f"column per answer name")
+        text = f.read_text(encoding="utf-8-sig")
+    except (OSError, UnicodeDecodeError) as exc:
+        raise ValueError(f"{what}: cannot read {f}: {exc}") from None
+    head = "\n".join(text.splitlines()[:5])
+    try:
+        dialect = csv.Sniffer().sniff(head, delimiters=",;\t")
+    except csv.Error:
+        dialect = csv.excel
+    try:
+        rows = list(csv.DictReader(io.StringIO(text, newline=""), dialect=dialect))
+    except csv.Error as exc:
+        raise ValueError(f"{what}: cannot read {f}: {exc}") from None
+    return [{(k or "").strip(): v for k, v in r.items() if k is not None} for r in rows]
+
+
+def _csv_answers(f: Path) -> dict[str, dict]:
+    rows = read_table(f)
+    cols = {k.lower(): k for k in (rows[0] if rows else {})}
+    who_col = cols.get("student") or cols.get("name") or cols.get("id")
+    if not rows or who_col is None:
+        raise ValueError(f"--grade: {f} needs a header row with a 'student' (or 'id') column "
+                         f"and one column per answer name")
     out = {}
+    id_col = cols.get("id") if who_col != cols.get("id") else None
     for r in rows:
-        who = r.pop("student")
-        out[who] = {k: _cell(v) for k, v in r.items() if k and v not in ("", None)}
+        who = (r.pop(who_col) or "").strip()
+        ident = (r.pop(id_col) or "").strip() if id_col else ""
+        answers = {k: _cell(v) for k, v in r.items() if k and v not in ("", None)}
+        if ident:
+            answers["id"] = ident
+        out[who or ident] = answers
     return out
+
+
+def read_class_answers(path: str | Path) -> tuple[list[tuple[str, dict]], list[str]]:
+    """A class's answers, each file on its own: ``([(label, answers), ...], problems)``;
+    ``label`` is a JSON file's stem or a CSV row's student; a file that cannot be read
+    is a line of ``problems`` (the rest of the class is still read).
+
+    Raises:
+        ValueError: a path that is neither a folder of JSON files nor a readable CSV or
+            JSON file (nothing of the class can be read).
+    """
+    p = Path(path)
+    if p.is_dir():
+        files = sorted(p.glob("*.json"))
+        if not files:
+            raise ValueError(f"--grade: no *.json answer files in the folder {p}")
+        out, problems = [], []
+        for f in files:
+            try:
+                out.append((f.stem, _json_answers(f)))
+            except ValueError as exc:
+                problems.append(f"{f.name}: not graded: {exc}")
+        return out, problems
+    return list(read_answers(p).items()), []
 
 
 def _cell(text: str):

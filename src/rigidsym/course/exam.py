@@ -216,7 +216,10 @@ def handout_text(title: str, sols: list, head: str = "", columns: bool = False) 
             f"<p>{html.escape(task(s.id, s.statement))} <small>(after "
             f"{html.escape(s.citation)})</small></p>{data_table(s)}{fig}"
             f"<h3>Your answers</h3>{_boxes(s, k, columns)}</section>")
-    return handout_page(title, head + "\n".join(parts))
+    from rigidsym.course.exam_text import ANSWER_FORMAT
+
+    how = f"<p class=\"how\"><small>{html.escape(ANSWER_FORMAT)}</small></p>\n"
+    return handout_page(title, head + how + "\n".join(parts))
 
 
 def _boxes(s, k: int, columns: bool) -> str:

@@ -9,7 +9,7 @@ for a list, its order; the answer's column name in the class's answers CSV follo
 
 from __future__ import annotations
 
-__all__ = ["task", "box_label", "TASKS", "BOXES", "ASKED"]
+__all__ = ["ANSWER_FORMAT", "task", "box_label", "TASKS", "BOXES", "ASKED"]
 
 #: exercise -> the answers a handout asks (default: every answer that is a value); 3.10's
 #: table of all twelve sequences stays in the key
@@ -17,7 +17,8 @@ ASKED = {"ex3.10": ("W", "W_body", "det_W", "W_inverse")}
 
 #: exercise -> the task, stated on "the data below" (no number of the book's)
 TASKS = {
-    "ex3.1": "A unit cube ABCDEFGH is displaced rigidly: its vertices A, B, D, E move to A', "
+    "ex3.1": "A cube ABCDEFGH (its edges AB, AD, AE as the data give them) is displaced "
+             "rigidly: its vertices A, B, D, E move to A', "
              "B', D', E' (data below). Find the rotation Q undergone by the cube, its angle "
              "phi and unit axis e, the Plücker coordinates of the line L of the points "
              "displaced least, and the intersections of L with the coordinate planes.",
@@ -119,6 +120,19 @@ TRUE_OR_FALSE = {"holds": "true or false, for (i), (ii), (iii) in order (3: true
                  "why": "the number of the reason, for (i), (ii), (iii) in order (3: 1 to 4)"}
 
 _PARTS = {"lower": "the lower part", "upper": "the upper part"}
+
+
+#: what every handout says about writing an answer (the grader's reading and tolerance)
+ANSWER_FORMAT = (
+    "How to write an answer: a number with a decimal point (1.25) or exact (sqrt(3)/2, "
+    "2*pi/3); a vector as its entries separated by commas (1, 0, 2); a matrix row by row, "
+    "rows separated by ';' (1, 0, 0; 0, 1, 0; 0, 0, 1); true or false as true or false. "
+    "Units: as each box says (m, rad, kg m^2); another unit is read when written after the "
+    "number ('25 mm', '30 deg'). An answer is right within 0.1 % of the largest entry of "
+    "the right answer: give at least 4 significant figures. An axis and angle may be given "
+    "as (e, phi) or (-e, -phi), an angle plus any whole number of turns, with the Plücker "
+    "array of the same sign as e; a point of an axis may be any point of it; principal "
+    "axes each with either sign.")
 
 
 def task(ex_id: str, statement: str) -> str:

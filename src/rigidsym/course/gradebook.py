@@ -12,7 +12,9 @@ files ``{"P1.w_2": ...}``), read by the reader of ``--set``. It writes::
     DIR/gradebook.csv  a row per student: id, email, the points of each problem and the
                        total (Moodle's grade import: map "ID number" or "Email address")
 
-A box scores 1 when right, the spec's ``slip_credit`` (default 0) when wrong by a named
+A box scores 1 when right, the spec's ``rounding_credit`` when rounded to fewer
+significant figures than the tolerance asks (default: ``slip_credit``), the spec's
+``slip_credit`` (default 0) when wrong by a named
 slip, 0 when wrong otherwise or missing (blank or absent); a problem's points are its
 ``weight`` times the mean score of its boxes (partial credit).
 """
@@ -60,29 +62,34 @@ def _value(v, shape):
     return sp.sympify(v)
 
 
-def _answers(path: str | Path, key: dict) -> dict[str, dict]:
-    """Students' answers by name: ``{student: {"P1.w_2": value}}``; a folder's files are
-    named by the student's name or its handout's stem. Unknown students or columns are an
-    error naming them."""
-    from rigidsym.course.answers import read_answers
+def _answers(path: str | Path, key: dict) -> tuple[dict[int, dict], list[str]]:
+    """Students' answers by roster index, ``{i: {"P1.w_2": value}}``, and the report's
+    lines: each answer set matched by student id, then by name (:mod:`.matching`); a file
+    that cannot be read, matches no student or holds a box the exam does not have is a
+    line of the report, and the class is still graded."""
+    from rigidsym.course.answers import read_class_answers
+    from rigidsym.course.matching import match_answers
 
-    raw = read_answers(path)
-    by_stem = {Path(r["handout"]).stem: r["student"] for r in key["students"]}
-    names = {r["student"] for r in key["students"]}
-    out: dict[str, dict] = {}
-    for who, ans in raw.items():
-        name = who if who in names else by_stem.get(who)
-        if name is None:
-            raise ValueError(f"answers: {who!r} is not a student of this exam (key.json "
-                             f"lists {len(names)}: {', '.join(sorted(names)[:5])}...)")
+    labelled, problems = read_class_answers(path)
+    matched, unmatched = match_answers(labelled, key["students"])
+    problems += unmatched
+    boxes = {f"P{p['problem']}.{a}" for r in key["students"] for p in r["problems"]
+             for a in p["asked"]}
+    out: dict[int, dict] = {}
+    for i, (label, ans) in sorted(matched.items()):
         flat = {}
         for k, v in ans.items():
             if isinstance(v, dict):           # {"P1": {"w_2": ...}}
                 flat.update({f"{k}.{a}": x for a, x in v.items()})
-            else:
+            elif k not in ("student", "name"):
                 flat[k] = v
-        out[name] = flat
-    return out
+        bad = sorted(set(flat) - boxes)
+        if bad:
+            problems.append(f"{label}: not graded: {bad[0]!r} is no answer box of this exam "
+                            f"(boxes are P<problem>.<answer>, as in answers.csv)")
+            continue
+        out[i] = flat
+    return out, problems
 
 
 def grade_class(out_dir: str | Path, answers: str | Path) -> dict:
@@ -109,58 +116,67 @@ def grade_class(out_dir: str | Path, answers: str | Path) -> dict:
     if "students" not in key:
         raise ValueError(f"DIR: {folder / 'key.json'} is the key of a single exam; grade it "
                          f"with rigidsym exercise ID --grade")
-    given = _answers(answers, key)
-    boxes = {f"P{p['problem']}.{a}" for r in key["students"] for p in r["problems"]
-             for a in p["asked"]}
-    for who, ans in given.items():
-        bad = sorted(set(ans) - boxes)
-        if bad:
-            raise ValueError(f"answers: {who}: {bad[0]!r} is no answer box of this exam "
-                             f"(columns are P<problem>.<answer>, as in answers.csv)")
-    credit = float(key.get("slip_credit", 0))
+    given, problems = _answers(answers, key)
+    credit = (float(key.get("slip_credit", 0)),
+              float(key.get("rounding_credit", key.get("slip_credit", 0))))
     from rigidsym.course.forked import forked_map
 
     n_problems = max(len(r["problems"]) for r in key["students"])
-    done = forked_map(lambda i: _student(key["students"][i], given, credit),
+    done = forked_map(lambda i: _student(key["students"][i], given.get(i, {}), credit),
                       len(key["students"]))
     rows = [row for d in done for row in d[0]]
     book = [d[1] for d in done]
     lines = [d[2] for d in done]
     all_right = all(d[3] for d in done)
     grades = _csv([["student", "id", "version", "problem", "exercise", "answer", "label",
-                    "max_points", "points", "status", "slip", "detail"], *rows])
+                    "max_points", "points", "status", "slip", "detail", "note"], *rows])
     gradebook = _csv([["ID number", "Email address", "Full name",
                        *[f"Problem {k}" for k in range(1, n_problems + 1)], "Total"], *book])
     return {"grades": write_atomic(folder / "grades.csv", grades),
             "gradebook": write_atomic(folder / "gradebook.csv", gradebook),
+            "items": write_atomic(folder / "item_analysis.csv", _items(rows)),
             "table": f"{key['title']}: {len(key['students'])} students\n" + "\n".join(lines),
-            "all_right": all_right}
+            "all_right": all_right, "problems": problems}
 
 
-def _student(r: dict, given: dict, credit: float) -> tuple:
+def _items(rows: list) -> str:
+    """Item analysis: how many boxes of each exercise got each answer note."""
+    counts: dict[tuple, int] = {}
+    for r in rows:
+        ex_id, note = r[4], r[-1].split(": ", 1)[-1]
+        counts[(ex_id, r[5], note)] = counts.get((ex_id, r[5], note), 0) + 1
+    return _csv([["exercise", "answer", "note", "count"],
+                 *[[*k, n] for k, n in sorted(counts.items(), key=lambda kv: (
+                     [int(x) for x in kv[0][0].split(".")], kv[0][1], -kv[1]))]])
+
+
+def _student(r: dict, ans: dict, credit: tuple[float, float]) -> tuple:
     """One student graded: (rows of grades.csv, the gradebook's row, the summary line,
     every box right)."""
     from rigidsym.course.grading import grade
 
-    ans = given.get(r["student"], {})
     rows, per_problem, wrong, all_right = [], [], [], True
     for p in r["problems"]:
         k = p["problem"]
         mine = {a: ans.get(f"P{k}.{a}") for a in p["asked"]}
-        graded = [g for g in grade(solution_of(p), mine) if g.correct is not None]
+        graded = [g for g in grade(solution_of(p), mine)
+                  if g.correct is not None or g.note == "ambiguous"]
         share = p["weight"] / max(len(graded), 1)
         total = 0.0
         for g in graded:
-            score = 1.0 if g.correct else credit if g.slip else 0.0
+            score = 1.0 if g.correct else credit[1] if g.slip == "rounded" else \
+                credit[0] if g.slip else 0.0
             total += share * score
-            status = "right" if g.correct else "missing" if g.missing else "wrong"
+            status = "right" if g.correct else "missing" if g.missing else \
+                "ambiguous" if g.correct is None else "wrong"
             all_right &= status == "right"
             if status != "right":
                 wrong.append(f"P{k}.{g.name}: " + ((g.slip or status) if status == "wrong"
-                                                   else "missing"))
+                                                   else status))
             rows.append([r["student"], r["id"], r["version"], k, p["id"][2:], g.name,
                          p["labels"].get(g.name, g.name), f"{share:.6g}",
-                         f"{share * score:.6g}", status, g.slip or "", g.detail])
+                         f"{share * score:.6g}", status, g.slip or "", g.detail,
+                         f"{p['id'][2:]}/{g.name}: {g.note}"])
         per_problem.append(total)
     book = [r["id"], r["email"], r["student"], *[f"{x:.4g}" for x in per_problem],
             f"{sum(per_problem):.4g}"]

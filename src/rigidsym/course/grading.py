@@ -25,12 +25,14 @@ from rigidsym.course.grading_units import unit_off, unit_slip
 from rigidsym.course.worked.numbers import read_text, split_text
 from rigidsym.course.worked.units import answer_unit
 
-__all__ = ["grade", "Graded", "RTOL", "SLIPS", "is_blank", "answer_shape", "gradeable"]
+__all__ = ["grade", "Graded", "RTOL", "SLIPS", "is_blank", "answer_shape", "gradeable",
+           "rounded_figures", "read_decimal_comma", "AmbiguousNumber"]
 
 #: relative tolerance: an answer is right within 0.1 % of its largest entry
 RTOL = 1e-3
 #: the slip words, in the order they are tried
-SLIPS = ("transpose", "sign", "degrees", "unit", "swap", "frame", "reference point")
+SLIPS = ("transpose", "sign", "degrees", "unit", "swap", "order", "frame", "reference point",
+         "rounded")
 _TRUTH = {"true": 1.0, "t": 1.0, "yes": 1.0, "y": 1.0, "holds": 1.0,
           "false": 0.0, "f": 0.0, "no": 0.0, "n": 0.0, "fails": 0.0}
 _UNIT_POWERS = (-15, -9, -6, -4, -3, -2, 2, 3, 4, 6, 9, 15)
@@ -47,6 +49,10 @@ class Graded:
         expected: the right answer, as the JSON key writes it.
         detail: one sentence (the tolerance, the slip's edit, or why not graded).
         missing: no answer given (absent or blank); then ``correct`` is False.
+        note: the answer note (STACK's word): ``right``, ``equivalent (-e, -phi)``,
+            ``sign``, ``transpose``, ``units mm→m``, ``rounded 2 s.f.``, ``order [f; n]``,
+            ``blank``, ``not read``, ``ambiguous``, ``wrong``; the gradebook writes it
+            as ``<exercise>/<answer>: <note>`` and counts each per exercise.
     """
 
     name: str
@@ -55,11 +61,20 @@ class Graded:
     expected: object
     detail: str
     missing: bool = False
+    note: str = ""
+
+    def __post_init__(self):
+        if not self.note:
+            self.note = ("blank" if self.missing else "right" if self.correct else
+                         "not graded" if self.correct is None else
+                         "not read" if self.detail.startswith("not read") else
+                         self.slip or "wrong")
 
     def as_dict(self) -> dict:
-        """``{"name", "correct", "missing", "slip", "expected", "detail"}``."""
+        """``{"name", "correct", "missing", "slip", "expected", "detail", "note"}``."""
         return {"name": self.name, "correct": self.correct, "missing": self.missing,
-                "slip": self.slip, "expected": self.expected, "detail": self.detail}
+                "slip": self.slip, "expected": self.expected, "detail": self.detail,
+                "note": self.note}
 
 
 def is_blank(v) -> bool:
@@ -99,7 +114,23 @@ def _as_array(v, where: str, shape: tuple = ()) -> np.ndarray:
                     f"nested lists of them, got {type(v).__name__}")
 
 
+#: the key's values as floats, by the identity of the sympy value (an exact key's nested
+#: radicals take long to evaluate, and a class is graded box by box, student by student)
+_FLOATS: dict[int, tuple] = {}
+
+
 def _expected(v) -> np.ndarray:
+    hit = _FLOATS.get(id(v))
+    if hit is not None and hit[0] is v:
+        return hit[1].copy()
+    out = _expected_now(v)
+    if len(_FLOATS) > 4096:
+        _FLOATS.clear()
+    _FLOATS[id(v)] = (v, out)
+    return out.copy()
+
+
+def _expected_now(v) -> np.ndarray:
     if isinstance(v, sp.MatrixBase):
         return np.array(sp.N(v, 17).tolist(), dtype=float)
     if v in (sp.true, sp.false):
@@ -108,6 +139,10 @@ def _expected(v) -> np.ndarray:
 
 
 def _close(a: np.ndarray, b: np.ndarray, scale: float) -> bool:
+    return _close_plain(a, b, scale)
+
+
+def _close_plain(a: np.ndarray, b: np.ndarray, scale: float) -> bool:
     return a.shape == b.shape and bool(np.all(np.abs(a - b) <= RTOL * scale + 1e-12))
 
 
@@ -145,9 +180,29 @@ def _candidates(e: np.ndarray, name: str, extra: list):
                 f = flat.copy()
                 f[[i, j]] = f[[j, i]]
                 yield "swap", f"entries {i} and {j} of {name} exchanged", f.reshape(e.shape)
+    if e.shape in ((6, 1), (6,)):
+        halves = "[f; n] for [n; f]" if name.startswith("w") else "[n; e] for [e; n]"
+        yield "order", f"the halves of {name} exchanged (order {halves})", \
+            np.concatenate([e[3:], e[:3]])
     for word, detail, value in extra:
         if word != "sign":
             yield word, detail, value
+
+
+def _shown(v):
+    """The key's value as the JSON key writes it (kept, as :func:`_expected`'s floats)."""
+    from rigidsym.course.worked.render import to_json_value
+
+    hit = _SHOWN.get(id(v))
+    if hit is not None and hit[0] is v:
+        return hit[1]
+    if len(_SHOWN) > 4096:
+        _SHOWN.clear()
+    _SHOWN[id(v)] = (v, to_json_value(v))
+    return _SHOWN[id(v)][1]
+
+
+_SHOWN: dict[int, tuple] = {}
 
 
 def grade(solution, answers: dict, slips: dict | None = None,
@@ -183,31 +238,93 @@ def grade(solution, answers: dict, slips: dict | None = None,
         raise ValueError(f"answers: {solution.id} has no answer {unknown[0]!r}; its answers "
                          f"are: {', '.join(known)}")
     from rigidsym.course.worked import exercise_module
-    from rigidsym.course.worked.render import to_json_value
 
     module = exercise_module(solution.id)
     if slips is None:
         own = getattr(module, "slips", None)
         slips = own(solution) if own else {}
     replayed = _Replays(solution) if replay else None
+    units = {name: answer_unit(module, name) for name in solution.answers}
+    read = _read_all(solution, answers, units)
+    verdicts = _classes(module, solution, read)
     out = []
     for name, right in solution.answers.items():
         given = answers.get(name)
         if isinstance(right, str) or not gradeable(right):
             if name in answers:
-                out.append(Graded(name, None, None, to_json_value(right),
+                out.append(Graded(name, None, None, _shown(right),
                                   "an answer in words or a set: not graded by machine"))
             continue
         if is_blank(given):
-            out.append(Graded(name, False, None, to_json_value(right),
+            out.append(Graded(name, False, None, _shown(right),
                               "missing: no answer given", missing=True))
             continue
         if _symbols(right):
             out.append(_grade_expression(name, given, right))
             continue
-        out.append(_grade_one(name, given, right, to_json_value(right),
-                              (slips or {}).get(name, []), replayed,
-                              answer_unit(module, name)))
+        shown = _shown(right)
+        got = read[name]
+        if isinstance(got, Graded):
+            out.append(got)
+            continue
+        v = verdicts.get(name)
+        if v is not None and v.right:
+            out.append(Graded(name, True, None, shown, got[2], note=v.note))
+            continue
+        out.append(_grade_one(name, got, right, shown, (slips or {}).get(name, []),
+                              replayed, units[name], v))
+    return out
+
+
+def _read_all(solution, answers: dict, units: dict) -> dict:
+    """Each numeric box's answer read: ``name -> (array of the key's shape, key array,
+    tolerance text, unit written)``, or a :class:`Graded` (not read, ambiguous)."""
+
+    out: dict = {}
+    for name, right in solution.answers.items():
+        given = answers.get(name)
+        if isinstance(right, str) or not gradeable(right) or is_blank(given) or \
+                _symbols(right):
+            continue
+        shown = _shown(right)
+        e = _expected(right)
+        try:
+            given = read_decimal_comma(given, answer_shape(right), name)
+            given, f, written = unit_off(given, units[name], name)
+            g = _as_array(given, name, answer_shape(right)) * f
+        except AmbiguousNumber as exc:
+            out[name] = Graded(name, None, None, shown, f"ambiguous: {exc}",
+                               note="ambiguous")
+            continue
+        except (ValueError, TypeError) as exc:
+            out[name] = Graded(name, False, None, shown, f"not read: {exc}")
+            continue
+        if g.size == e.size and g.shape != e.shape:
+            g = g.reshape(e.shape)        # a vector as 3 numbers, or as a column
+        scale = max(float(np.max(np.abs(e))) if e.size else 0.0, 1e-300)
+        tol = f"within {RTOL:g} x {scale:.3g} (0.1 % of the largest entry)"
+        if written and written != units[name]:
+            tol = f"read in {written}, converted to {units[name]}: {tol}"
+        out[name] = (g, e, tol, written)
+    return out
+
+
+def _classes(module, solution, read: dict) -> dict:
+    """The declared answers' verdicts (:mod:`.answer_classes`): ``name -> Verdict`` for
+    each answered piece of a declared class; the pieces of one class judged jointly."""
+    from rigidsym.course.answer_classes import declared, judge, names_of
+
+    out = {}
+    for decl in declared(module):
+        names = names_of(decl)
+        if not all(n in solution.answers for n in names):
+            continue
+        key = {n: _expected(solution.answers[n]) for n in names}
+        if decl["kind"] == "point of line":
+            key[decl["direction"]] = _expected(solution.answers[decl["direction"]])
+        given = {n: read[n][0] for n in names
+                 if isinstance(read.get(n), tuple) and read[n][0].shape == key[n].shape}
+        out.update(judge(decl, given, key, RTOL))
     return out
 
 
@@ -325,26 +442,30 @@ class _Replays:
         return iter(self.done)
 
 
-def _grade_one(name, given, right, shown, extra, replayed=None, unit=None) -> Graded:
-    e = _expected(right)
-    try:
-        given, f, written = unit_off(given, unit, name)
-        g = _as_array(given, name, answer_shape(right)) * f
-    except (ValueError, TypeError) as exc:
-        return Graded(name, False, None, shown, f"not read: {exc}")
-    if g.size == e.size and g.shape != e.shape:
-        g = g.reshape(e.shape)        # a vector as 3 numbers, or as a column
+def _grade_one(name, got, right, shown, extra, replayed=None, unit=None,
+               verdict=None) -> Graded:
+    """A read answer (``got``: :func:`_read_all`'s tuple) against the key (or, for a
+    declared class, ``verdict``'s member, compared modulo the class's freedom): right, a
+    named slip, rounded, or wrong."""
+    g, e, tol, written = got
+    if verdict is not None:
+        e = verdict.target
+
+    def _close(a, b, sc):
+        return verdict.matches(a, b, sc, RTOL) if verdict is not None else \
+            _close_plain(a, b, sc)
+
     scale = max(float(np.max(np.abs(e))) if e.size else 0.0, 1e-300)
-    tol = f"within {RTOL:g} x {scale:.3g} (0.1 % of the largest entry)"
-    if written and written != unit:
-        tol = f"read in {written}, converted to {unit}: {tol}"
     if _close(g, e, scale):
-        return Graded(name, True, None, shown, tol)
+        return Graded(name, True, None, shown, tol,
+                      note=f"units {written}→{unit}" if written and written != unit
+                      else "right")
     extra_f = [(w, d, _expected(v)) for w, d, v in extra]
     for word, detail, value in _candidates(e, name, extra_f):
         if _close(g, value, max(scale, float(np.max(np.abs(value))))):
-            return Graded(name, False, word, shown,
-                          f"matches {detail}" + unit_slip(word, value, e, unit, written))
+            more = unit_slip(word, value, e, unit, written)
+            return Graded(name, False, word, shown, f"matches {detail}" + more,
+                          note=_slip_note(word, detail, value, e, unit, written))
     for word, detail, answers in replayed or ():
         value = answers.get(name)
         if value is None or isinstance(value, str):
@@ -354,6 +475,72 @@ def _grade_one(name, given, right, shown, extra, replayed=None, unit=None) -> Gr
         except TypeError:
             continue
         if v.shape == g.shape and _close(g, v, max(scale, float(np.max(np.abs(v))))):
-            return Graded(name, False, word, shown, f"matches the solution with {detail}")
+            return Graded(name, False, word, shown, f"matches the solution with {detail}",
+                          note=f"{word} (along the way)")
+    figures = rounded_figures(g, e)
+    if figures:
+        return Graded(name, False, "rounded", shown,
+                      f"rounded to {figures} significant figures (the tolerance: {tol})",
+                      note=f"rounded {figures} s.f.")
     return Graded(name, False, None, shown, f"not within the tolerance ({tol}), and not a "
                   f"known slip")
+
+
+def _slip_note(word, detail, value, e, unit, written) -> str:
+    """The answer note of a slip: the word, with the units or the order named."""
+    if word == "unit" and not written:
+        from rigidsym.course.worked.units import slipped_unit
+
+        k = int(np.argmax(np.abs(e)))
+        u = slipped_unit(float(value.reshape(-1)[k] / e.reshape(-1)[k]), unit)
+        return f"units {u}→{unit}" if u else "unit"
+    if word == "order":
+        return "order " + detail.split("(order ")[-1].split(" for ")[0]
+    return word
+
+
+def rounded_figures(given: np.ndarray, right: np.ndarray, most: int = 3) -> int:
+    """The number of significant figures N (1 to ``most``) to which every entry of
+    ``given`` is ``right`` rounded (and at least one entry differs by more than the
+    tolerance), or 0: an answer rounded to fewer figures than the grader's tolerance
+    asks is named so, not "wrong"."""
+    if given.shape != right.shape or not given.size:
+        return 0
+    for n in range(1, most + 1):
+        r = np.array([float(f"{x:.{n - 1}e}") for x in right.reshape(-1)])
+        if np.allclose(given.reshape(-1), r, rtol=1e-9, atol=1e-12):
+            return n
+    return 0
+
+
+class AmbiguousNumber(ValueError):
+    """A number that reads two ways (``1,234``: one and 234 thousandths, or 1234)."""
+
+
+_COMMA_DECIMAL = __import__("re").compile(r"^\s*[-+]?\d+,\d+\s*$")
+_THOUSANDS = __import__("re").compile(r"^\s*[-+]?\d{1,3}([, ]\d{3})+(\.\d+)?\s*$")
+
+
+def read_decimal_comma(given, shape: tuple, where: str):
+    """A scalar answer written with a decimal comma (``1,23096``) read as a decimal point;
+    vectors keep the comma as the separator of entries. ``1,234`` (three digits after one
+    comma) reads two ways and is left ungraded (:class:`AmbiguousNumber`); thousands
+    separators (``1,234,567``, ``12 345.6``) are refused.
+
+    Raises:
+        AmbiguousNumber: ``1,234``.
+        ValueError: a number with thousands separators.
+    """
+    if shape or not isinstance(given, str):
+        return given
+    t = given.strip()
+    if _THOUSANDS.match(t) and (t.count(",") + t.count(" ") > 1 or "." in t or " " in t):
+        raise ValueError(f"{where}: {given!r} has thousands separators; write the number "
+                         f"without them (1234567.5)")
+    if _COMMA_DECIMAL.match(t):
+        if len(t.split(",")[1].strip()) == 3:
+            raise AmbiguousNumber(f"{where}: {given!r} is one and a fraction with a decimal "
+                                  f"comma, or a whole number with a thousands separator: "
+                                  f"left to the instructor")
+        return t.replace(",", ".")
+    return given

@@ -5,7 +5,9 @@ problems from the student's own seed (``student_seed``: the spec's seed and the 
 every drawn problem different from every other student's (a repeat is drawn again), and
 writes::
 
-    DIR/handouts/<student>.html   name, seed and version printed on every page
+    DIR/handouts/<id>.html        name, seed and version printed on every page; named by
+                                  the student id (by the name, in any script, without one)
+    DIR/keys/<id>.html            that student's worked, checked solutions
     DIR/key.json                  schema 2: per student, the seed, version and each
                                   problem's data, answers and checks
     DIR/key.html                  the worked, checked solutions, student by student
@@ -24,6 +26,7 @@ import hashlib
 import html
 import io
 import json
+import math
 import re
 from pathlib import Path
 
@@ -38,37 +41,53 @@ __all__ = ["class_exam", "read_roster", "student_seed", "version_of"]
 
 
 def read_roster(path: str | Path) -> list[dict]:
-    """The students of a roster CSV: a ``name`` (or ``student``) column, and optional
-    ``id`` and ``email`` columns (kept for the gradebook an LMS imports).
+    """The students of a roster CSV: a ``name`` (or ``student``) column, or Moodle's
+    participant export (``First name``, ``Surname`` or ``Last name``); optional ``id``
+    (``ID number``) and ``email`` (``Email address``) columns, kept for the gradebook an
+    LMS imports. UTF-8 with or without a BOM, ``,``, ``;`` or tab separated (as
+    :func:`rigidsym.course.answers.read_table` reads it). Two students of one name are
+    fine when their ids differ (their answers are then matched by id only).
 
     Returns:
         ``[{"name", "id", "email"}, ...]`` in the roster's order.
 
     Raises:
-        ValueError: the file is unreadable, has no ``name``/``student`` column, a row
-            without a name, or a name twice (the message names the roster and the row).
+        ValueError: the file is unreadable, has no name columns, a row without a name, a
+            name twice without distinct ids, or an id twice (the message names the roster
+            and the row).
     """
+    from rigidsym.course.answers import read_table
+
     p = Path(path)
-    try:
-        with p.open(newline="", encoding="utf-8-sig") as fh:
-            rows = list(csv.DictReader(fh))
-    except (OSError, csv.Error, UnicodeDecodeError) as exc:
-        raise ValueError(f"--students: cannot read {p}: {exc}") from None
+    rows = read_table(p, "--students")
     cols = {c.strip().lower(): c for c in (rows[0].keys() if rows else []) if c}
-    name_col = cols.get("name") or cols.get("student")
-    if not rows or name_col is None:
+    name_col = cols.get("name") or cols.get("student") or cols.get("full name")
+    first = cols.get("first name")
+    last = cols.get("surname") or cols.get("last name")
+    if not rows or (name_col is None and not (first and last)):
         raise ValueError(f"--students: {p} needs a header row with a 'name' (or 'student') "
-                         f"column and a row per student")
-    out, seen = [], set()
+                         f"column, or Moodle's 'First name' and 'Surname', and a row per "
+                         f"student")
+    id_col = cols.get("id") or cols.get("id number") or cols.get("student id")
+    email_col = cols.get("email") or cols.get("email address")
+    out, seen, ids = [], {}, set()
     for i, r in enumerate(rows, 2):
-        name = (r.get(name_col) or "").strip()
+        name = (r.get(name_col) or "").strip() if name_col else \
+            f"{(r.get(first) or '').strip()} {(r.get(last) or '').strip()}".strip()
+        ident = (r.get(id_col, "") or "").strip() if id_col else ""
         if not name:
             raise ValueError(f"--students: {p} row {i} has no name")
-        if name in seen:
-            raise ValueError(f"--students: {p} row {i}: {name!r} is in the roster twice")
-        seen.add(name)
-        out.append({"name": name, "id": (r.get(cols.get("id", ""), "") or "").strip(),
-                    "email": (r.get(cols.get("email", ""), "") or "").strip()})
+        if name in seen and (not ident or not seen[name] or ident in ids):
+            raise ValueError(f"--students: {p} row {i}: {name!r} is in the roster twice "
+                             f"(two students of one name need distinct ids)")
+        if ident and ident in ids:
+            raise ValueError(f"--students: {p} row {i}: the id {ident!r} is in the roster "
+                             f"twice")
+        seen[name] = ident
+        if ident:
+            ids.add(ident)
+        out.append({"name": name, "id": ident,
+                    "email": (r.get(email_col, "") or "").strip() if email_col else ""})
     return out
 
 
@@ -87,8 +106,13 @@ def version_of(sols: list) -> str:
     return "".join("ABCDEFGHJKLMNPQRSTUVWXYZ"[(h >> (5 * i)) % 24] for i in range(6))
 
 
-def _slug(name: str) -> str:
-    return re.sub(r"[^A-Za-z0-9]+", "_", name).strip("_") or "student"
+def _slug(st: dict) -> str:
+    """A student's file name: the student id when the roster gives one, else the name
+    with its letters kept in any script (``山田_太郎``, ``José_Núñez``, NFC)."""
+    import unicodedata
+
+    text = st["id"] or unicodedata.normalize("NFC", st["name"])
+    return re.sub(r"[^\w]+", "_", text).strip("_") or "student"
 
 
 def _head(title: str, st: dict, seed: int, version: str) -> str:
@@ -109,7 +133,8 @@ def class_exam(spec, roster: str | Path, out_dir: str | Path,
         seed: the class seed (default: the spec's ``seed``, else 0).
 
     Returns:
-        ``{"handouts": folder, "key_json", "key_html", "answers", "moodle"}``.
+        ``{"handouts": folder, "keys": folder, "key_json", "key_html", "answers",
+        "moodle"}``.
 
     Raises:
         ValueError: a bad spec or roster, or no new well-posed variant in 50 draws.
@@ -138,6 +163,9 @@ def class_exam(spec, roster: str | Path, out_dir: str | Path,
         head = _head(title, st, own, version)
         write_atomic(out / "handouts" / f"{slugs[i]}.html",
                      _exam.handout_text(f"{title}: {st['name']}", sols, head, columns=True))
+        section = _key_section(head, sols)
+        write_atomic(out / "keys" / f"{slugs[i]}.html",
+                     _exam.handout_page(f"{title}: answer key of {st['name']}", section))
         problems = [dict(solution_record(s), problem=n, spec_problem=k,
                          weight=weights[k - 1], asked=_exam.asked(s),
                          labels={a: box_label(s.id, a) for a in _exam.asked(s)})
@@ -145,7 +173,7 @@ def class_exam(spec, roster: str | Path, out_dir: str | Path,
         return {"record": {"student": st["name"], "id": st["id"], "email": st["email"],
                            "seed": own, "version": version,
                            "handout": f"handouts/{slugs[i]}.html", "problems": problems},
-                "section": _key_section(head, sols),
+                "section": section,
                 "drawn": [(slot, _exam.variant_key(s)) for slot, s in zip(slots, sols, strict=True)
                           if slot is not None]}
 
@@ -155,9 +183,11 @@ def class_exam(spec, roster: str | Path, out_dir: str | Path,
     columns = {f"P{p['problem']}.{a}": None for r in records for p in r["problems"]
                for a in p["asked"]}
     key = {**document_header(), "title": title, "seed": seed,
-           "slip_credit": float(spec.get("slip_credit", 0)), "students": records}
+           "slip_credit": float(spec.get("slip_credit", 0)),
+           "rounding_credit": float(spec.get("rounding_credit", spec.get("slip_credit", 0))),
+           "students": records}
     return {
-        "handouts": out / "handouts",
+        "handouts": out / "handouts", "keys": out / "keys",
         "key_json": write_atomic(out / "key.json", json.dumps(key, indent=2,
                                                               ensure_ascii=False) + "\n"),
         "key_html": write_atomic(out / "key.html", _exam.handout_page(f"{title}: answer key",
@@ -172,7 +202,7 @@ def _unique_slugs(students: list[dict]) -> list[str]:
     ``"Amy-Ames"``: two files)."""
     slugs: list[str] = []
     for st in students:
-        slug = _slug(st["name"])
+        slug = _slug(st)
         while slug in slugs:
             slug += "_"
         slugs.append(slug)
@@ -223,15 +253,24 @@ def _template(students: list, columns: list) -> str:
 
 
 def moodle_xml(title: str, key: dict) -> str:
-    """Moodle XML (``<quiz>``): a category per student, a Cloze (embedded answers)
+    """Moodle XML (``<quiz>``): a category per student (name and id; the questions'
+    ``idnumber`` ``<id>-P<k>``), a Cloze (embedded answers)
     question per problem, each entry of each answer a ``NUMERICAL`` part right within
-    0.1 % of the answer's largest entry (the grader's tolerance)."""
+    0.1 % of the answer's largest entry (the grader's tolerance). Moodle marks a Cloze
+    question by its parts' integer weights (it ignores ``<defaultgrade>``): each box's
+    entries share lcm(the problem's entry counts) marks, so every box weighs the same, as
+    in the gradebook; Moodle still scores entry by entry (a box graded jointly, an
+    equivalent form or a slip's credit is rigidsym's: import ``gradebook.csv``; which
+    boxes Moodle scores as the gradebook: docs/exams.md)."""
+    from rigidsym.course.answer_classes import declared, names_of
     from rigidsym.course.grading import RTOL
 
     out = ['<?xml version="1.0" encoding="UTF-8"?>', "<quiz>"]
     for st in key["students"]:
+        # by id as well: two students of one name get two categories, unique idnumbers
+        who = f"{st['student']} ({st['id']})" if st.get("id") else st["student"]
         out.append(f"<question type=\"category\"><category><text>$course$/{_x(title)}/"
-                   f"{_x(st['student'])}</text></category></question>")
+                   f"{_x(who)}</text></category></question>")
         for p in st["problems"]:
             mod = exercise_module(p["id"])
             body = [f"<p>{html.escape(task(p['id'], getattr(mod, 'STATEMENT', '')))}</p>",
@@ -239,6 +278,11 @@ def moodle_xml(title: str, key: dict) -> str:
             body += [f"<li>{html.escape(k)} = {html.escape(_shown(v))}</li>"
                      for k, v in p["data"].items()]
             body.append("</ul>")
+            counts = {a: len(v) for a in p["asked"] if (v := _floats(p["answers"][a]))}
+            # a box whose class is declared (an angle whose sign goes with its axis) is
+            # right or wrong with its other pieces: no per-number credit in Moodle
+            classed = {n for d in declared(mod) for n in names_of(d)}
+            whole = math.lcm(*counts.values()) if counts else 1
             for a in p["asked"]:
                 vals = _floats(p["answers"][a])
                 if vals is None:            # an expression in symbols: read on paper
@@ -246,16 +290,48 @@ def moodle_xml(title: str, key: dict) -> str:
                                 f"graded on paper or by rigidsym grade)</p>")
                     continue
                 scale = max([abs(v) for v in vals] + [1e-300])
-                parts = " ".join(f"{{1:NUMERICAL:={v!r}:{RTOL * scale:.3g}}}" for v in vals)
+                # each box weighs the same (the gradebook's mean of boxes): its entries
+                # share lcm(entry counts) integer marks, as Moodle reads a part's weight
+                w = whole // len(vals)
+                tol = f"{RTOL * scale:.3g}"
+                truth = str(p["answers"][a]) in ("True", "False")
+                extra = "" if a in classed or truth else \
+                    _slip_answers(vals, tol, key.get("slip_credit", 0), a,
+                                  key.get("rounding_credit", key.get("slip_credit", 0)))
+                parts = " ".join(f"{{{w}:NUMERICAL:={v!r}:{tol}{extra}}}" for v in vals)
                 body.append(f"<p>{html.escape(p['labels'][a])}: {parts}</p>")
             name = f"{st['student']}: problem {p['problem']} (Exercise {p['id'][2:]})"
             out.append(f"<question type=\"cloze\"><name><text>{_x(name)}</text></name>"
                        f"<questiontext format=\"html\"><text><![CDATA[{''.join(body)}]]>"
                        f"</text></questiontext><generalfeedback><text></text>"
                        f"</generalfeedback><defaultgrade>{p['weight']:g}</defaultgrade>"
-                       f"<idnumber>{_x(st['student'])}-P{p['problem']}</idnumber></question>")
+                       f"<idnumber>{_x(st.get('id') or st['student'])}-P{p['problem']}</idnumber>"
+                       f"</question>")
     out.append("</quiz>")
     return "\n".join(out) + "\n"
+
+
+def _slip_answers(vals: list[float], tol: str, credit: float, name: str,
+                  rounding: float = 0.0) -> str:
+    """Moodle's partial credit (``~%n%value:tol``) for the slips of a one-number box that
+    the policy credits (``slip_credit``): its sign, and for an angle degrees for radians;
+    then the key rounded to 1, 2 or 3 significant figures (``rounding_credit``, as
+    :func:`rigidsym.course.grading.rounded_figures` names it: within 1e-9 relative). Where
+    a box is one number, Moodle's part is the box, and scores as the gradebook."""
+    if len(vals) != 1 or not vals[0]:
+        return ""
+    v, out = vals[0], []
+    pct = round(100 * float(credit))
+    if pct > 0:
+        slips = [-v] + ([v * 180 / math.pi] if "phi" in name or "rad" in name else [])
+        out += [f"~%{pct}%{x!r}:{tol}" for x in slips if abs(x - v) > 2 * float(tol)]
+    pct = round(100 * float(rounding))
+    if pct > 0:
+        for n in range(1, 4):
+            r = float(f"{v:.{n - 1}e}")
+            if abs(r - v) > float(tol):   # a rounding inside the tolerance is right
+                out.append(f"~%{pct}%{r!r}:{max(1e-9 * abs(r), 1e-12):.3g}")
+    return "".join(out)
 
 
 def _floats(v) -> list[float] | None:

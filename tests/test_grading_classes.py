@@ -1,0 +1,267 @@
+"""Each exercise's question tests: every member of the key's class is right, every one-edit
+slip is wrong and named, a blank is a blank (issue 64).
+
+The members are generated here by the group action each answer's meaning allows, written
+in this file (an axis and angle (e, phi) ~ (-e, -phi) and phi + 2 pi k with the Plücker
+array's sign following e; any point of an axis; principal axes each up to sign; a line's
+angle modulo pi), never by the grader's :mod:`rigidsym.course.answer_classes`. The key's
+numbers come from the exact solution through sympy's ``N``; the edits and the membership
+test below are plain NumPy. The default run draws a few members per exercise; the
+exhaustive run (``-m slow``) many.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+import sympy as sp
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from rigidsym import exercises as ex
+from rigidsym.course.grading import grade
+
+IDS = [f"ex3.{k}" for k in range(1, 22)]
+RTOL = 1e-3          # the course's documented tolerance: 0.1 % of the largest entry
+
+#: the group actions of each exercise's answers, as the problem states them
+SIGN_GROUPS = {"ex3.1": ("e", "phi", ("plucker",)), "ex3.6": ("e", "phi", ("axis_plucker",))}
+POINTS_ON_AXIS = {"ex3.6": ("axis_point_p0", "e")}
+COLUMN_SIGNS = {"ex3.12": ("wedge_principal_axes", "upper_principal_axes")}
+ANGLES_MOD_PI = {"ex3.12": ("wedge_axis_angle_from_y_rad", "upper_axis_angle_from_y_rad")}
+
+
+def _key(ex_id):
+    """The numeric boxes of an exercise on the book's data: name -> (float array, truth?)."""
+    s = ex.solve(ex_id)
+    out = {}
+    for k, v in s.answers.items():
+        if isinstance(v, str) or getattr(v, "free_symbols", None):
+            continue
+        if v in (sp.true, sp.false):
+            out[k] = (np.array(float(bool(v))), True)
+        elif isinstance(v, sp.MatrixBase):
+            out[k] = (np.array(sp.N(v, 17).tolist(), dtype=float), False)
+        elif isinstance(v, sp.Expr):
+            out[k] = (np.array(float(sp.N(v, 17))), False)
+    return s, out
+
+
+_CACHE: dict = {}
+
+
+def key_of(ex_id):
+    if ex_id not in _CACHE:
+        _CACHE[ex_id] = _key(ex_id)
+    return _CACHE[ex_id]
+
+
+@st.composite
+def members(draw, ex_id):
+    """A member of the key's class: the key under the group actions of ``ex_id``."""
+    _, key = key_of(ex_id)
+    out = {k: v.copy() for k, (v, _) in key.items()}
+    if ex_id in SIGN_GROUPS:
+        axis, angle, linked = SIGN_GROUPS[ex_id]
+        s = draw(st.sampled_from((1.0, -1.0)))
+        turns = draw(st.integers(-2, 2))
+        for n in (axis, *linked):
+            out[n] = s * out[n]
+        out[angle] = s * out[angle] + 2 * math.pi * turns
+    if ex_id in POINTS_ON_AXIS:
+        point, direction = POINTS_ON_AXIS[ex_id]
+        t = draw(st.floats(-3, 3))
+        d = key[direction][0].reshape(-1)
+        out[point] = out[point] + t * (d / np.linalg.norm(d)).reshape(out[point].shape)
+    for name in COLUMN_SIGNS.get(ex_id, ()):
+        signs = np.array(draw(st.lists(st.sampled_from((1.0, -1.0)), min_size=3, max_size=3)))
+        out[name] = out[name] * signs
+    for name in ANGLES_MOD_PI.get(ex_id, ()):
+        out[name] = out[name] + math.pi * draw(st.integers(-2, 2))
+    noise = draw(st.floats(-0.2, 0.2))          # a student's last decimals: in tolerance
+    for k, (v, truth) in key.items():
+        if not truth:
+            out[k] = out[k] + noise * RTOL * max(float(np.max(np.abs(v))), 1e-300) * \
+                np.sign(np.arange(v.size).reshape(v.shape) % 2 - 0.5)
+    return out
+
+
+def in_class(ex_id, name, value, member) -> bool:
+    """Whether ``value`` for box ``name`` (the other boxes as in ``member``) is a member of
+    the key's class: the test's own judgement, from the group actions above."""
+    _, key = key_of(ex_id)
+    k = key[name][0]
+    scale = max(float(np.max(np.abs(k))), 1e-300)
+
+    def near(a, b, sc=scale):
+        return a.shape == b.shape and bool(np.all(np.abs(a - b) <= RTOL * sc + 1e-12))
+
+    if ex_id in SIGN_GROUPS and name in (SIGN_GROUPS[ex_id][0], SIGN_GROUPS[ex_id][1],
+                                         *SIGN_GROUPS[ex_id][2]):
+        axis, angle, _ = SIGN_GROUPS[ex_id]
+        # the sign the member's axis chose decides the others' (checked on the axis)
+        s = 1.0 if near(member[axis], key[axis][0], 1.0) else -1.0
+        if name == angle:
+            w = (value - s * k + math.pi) % (2 * math.pi) - math.pi
+            return near(w, np.zeros_like(w))
+        return near(value, s * k)
+    if ex_id in POINTS_ON_AXIS and name == POINTS_ON_AXIS[ex_id][0]:
+        d = key[POINTS_ON_AXIS[ex_id][1]][0].reshape(-1)
+        return near(np.cross((value - k).reshape(-1), d / np.linalg.norm(d)), np.zeros(3))
+    if name in COLUMN_SIGNS.get(ex_id, ()):
+        return all(near(value[:, j], k[:, j]) or near(value[:, j], -k[:, j])
+                   for j in range(k.shape[1]))
+    if name in ANGLES_MOD_PI.get(ex_id, ()):
+        w = (value - k + math.pi / 2) % math.pi - math.pi / 2
+        return near(w, np.zeros_like(w))
+    return near(value, k)
+
+
+def one_edit_slips(name, v):
+    """The one-edit slips of a value: (word, edited value)."""
+    out = []
+    if np.any(v != 0):
+        out.append(("sign", -v))
+        out.append(("unit", v * 1000.0))
+    if v.ndim == 2 and v.shape[0] == v.shape[1] > 1 and not np.allclose(v, v.T, atol=1e-6):
+        out.append(("transpose", v.T))
+    if v.ndim == 0 and ("phi" in name or "rad" in name or "angle" in name) and v != 0:
+        out.append(("degrees", v * 180 / math.pi))
+    flat = v.reshape(-1)
+    if flat.size == 6 and not np.allclose(flat[:3], flat[3:], atol=1e-6):
+        out.append(("order", np.concatenate([flat[3:], flat[:3]]).reshape(v.shape)))
+    if flat.size > 1 and (v.ndim == 1 or (v.ndim == 2 and 1 in v.shape)):
+        i = int(np.argmax(np.abs(flat)))
+        j = int(np.argmax(np.abs(flat - flat[i])))
+        if abs(flat[i] - flat[j]) > 0.01 * abs(flat[i]):
+            f = flat.copy()
+            f[[i, j]] = f[[j, i]]
+            out.append(("swap", f.reshape(v.shape)))
+    return out
+
+
+def _answers(member, key):
+    return {k: (bool(v > 0.5) if key[k][1] else v.tolist()) for k, v in member.items()}
+
+
+def _check(ex_id, member, blank):
+    s, key = key_of(ex_id)
+    answers = _answers(member, key)
+    graded = {g.name: g for g in grade(s, answers, replay=False)}
+    for k in key:
+        assert graded[k].correct is True, (ex_id, k, answers[k], graded[k].detail)
+    for k, (v, truth) in key.items():
+        if truth:
+            flipped = grade(s, {k: not bool(v > 0.5)}, replay=False)
+            assert next(g for g in flipped if g.name == k).correct is False
+            continue
+        edits = one_edit_slips(k, member[k])
+        if k in POINTS_ON_AXIS.get(ex_id, ())[:1]:
+            # a slip that scales a point scales the axis with it (named for any point);
+            # an exchange of entries is named on the key's own point
+            edits = [(w, x) for w, x in edits if w in ("sign", "unit")] + \
+                [(w, x) for w, x in one_edit_slips(k, key[k][0]) if w not in ("sign", "unit")]
+        for word, value in edits:
+            if in_class(ex_id, k, value, member):
+                continue                # an edit that lands in the class: right, not a slip
+            # the box with the rest of its sign group (judged jointly), the others left out
+            group = SIGN_GROUPS.get(ex_id, ("", "", ()))
+            ctx = {n: answers[n] for n in (group[0], group[1], *group[2]) if n in answers}
+            g = next(g for g in grade(s, {**ctx, k: value.tolist()}, replay=False)
+                     if g.name == k)
+            assert g.correct is False, (ex_id, k, word, g.detail)
+            assert g.slip is not None and g.note not in ("wrong", "right"), \
+                (ex_id, k, word, g.detail)
+    if blank in key:
+        g = next(g for g in grade(s, {blank: ""}, replay=False) if g.name == blank)
+        assert g.correct is False and g.missing and g.note == "blank"
+
+
+def _property(ex_id, examples):
+    _, key = key_of(ex_id)
+    names = sorted(key) or ["-"]
+
+    @given(member=members(ex_id), blank=st.sampled_from(names))
+    @settings(max_examples=examples, deadline=None, derandomize=True, database=None,
+              suppress_health_check=list(HealthCheck))
+    def run(member, blank):
+        _check(ex_id, member, blank)
+
+    run()
+
+
+#: exercises whose exact solve takes seconds on a cold cache (their boxes: truths and
+#: expressions in symbols): their question tests run under ``slow`` only
+SLOW_SOLVES = {"ex3.3", "ex3.10"}
+
+
+@pytest.mark.parametrize("ex_id", [i for i in IDS if i not in SLOW_SOLVES])
+def test_question_tests(ex_id):
+    """A member or two of each exercise's class, its slips and a blank (default run)."""
+    _property(ex_id, 1 if ex_id not in SIGN_GROUPS | COLUMN_SIGNS else 3)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("ex_id", IDS)
+def test_question_tests_exhaustive(ex_id):
+    _property(ex_id, 40)
+
+
+def test_31_the_issues_equivalent_pairs_are_right():
+    """3.1: (-e, -phi) with the Plücker array negated to match, and (-e, 2 pi - phi)."""
+    s, key = key_of("ex3.1")
+    e, phi, pl = key["e"][0], float(key["phi"][0]), key["plucker"][0]
+    base = _answers({k: v for k, (v, _) in key.items()}, key)
+    for form in ({"e": -e, "phi": -phi, "plucker": -pl},
+                 {"e": -e, "phi": 2 * math.pi - phi, "plucker": -pl}):
+        graded = grade(s, dict(base, **{k: np.asarray(v).tolist() for k, v in
+                                           form.items()}))
+        assert all(g.correct for g in graded if g.name in form)
+        assert any("equivalent (-e, -phi)" in g.note for g in graded)
+    half = grade(s, dict(base, e=(-e).tolist()))           # -e alone: the inverse turn
+    assert next(g for g in half if g.name == "e").slip == "sign"
+
+
+def test_numbers_as_people_write_them():
+    """A decimal comma is read, ``1,234`` is left to the instructor, thousands separators
+    are refused, and a rounded answer is named with its figures."""
+    s, key = key_of("ex3.1")
+    phi = float(key["phi"][0])
+    by = {g.name: g for g in grade(s, {"phi": f"{phi:.6f}".replace(".", ",")},
+                                   replay=False)}
+    assert by["phi"].correct is True
+    for text in ("1,234", "-2,094"):
+        g = next(g for g in grade(s, {"phi": text}, replay=False) if g.name == "phi")
+        assert g.correct is None and g.note == "ambiguous" and "instructor" in g.detail
+    for text in ("1,234,567", "12 345.6"):
+        g = next(g for g in grade(s, {"phi": text}, replay=False) if g.name == "phi")
+        assert g.correct is False and "thousands separators" in g.detail
+    for figures in (1, 2):
+        shown = float(f"{phi:.{figures - 1}e}")
+        g = next(g for g in grade(s, {"phi": shown}, replay=False) if g.name == "phi")
+        assert g.correct is False and g.note == f"rounded {figures} s.f."
+
+
+@given(key=st.lists(st.floats(-5, 5), min_size=4, max_size=4).filter(
+           lambda v: max(map(abs, v)) > 0.5),
+       factor=st.floats(0.1, 10), sign=st.sampled_from((1.0, -1.0)))
+@settings(max_examples=15, deadline=None, derandomize=True, database=None)
+def test_the_sign_and_scale_classes(key, factor, sign):
+    """A unit quaternion's class (+-q) and a Plücker array up to scale: members built
+    here by the group action are right, the key's other edits are not."""
+    from rigidsym.course.answer_classes import judge
+
+    k = np.array(key)
+    q = {"q": k}
+    assert judge({"kind": "sign", "names": ("q",)}, {"q": sign * k}, q, RTOL)["q"].right
+    assert not judge({"kind": "sign", "names": ("q",)}, {"q": 2 * k}, q, RTOL)["q"].right
+    any_scale = {"kind": "up to scale", "name": "q", "sign": "any"}
+    positive = {"kind": "up to scale", "name": "q", "sign": "positive"}
+    assert judge(any_scale, {"q": sign * factor * k}, q, RTOL)["q"].right
+    assert judge(positive, {"q": sign * factor * k}, q, RTOL)["q"].right == (sign > 0)
+    swapped = k[[1, 0, 2, 3]]
+    if not np.allclose(np.cross(swapped[:3], k[:3]), 0, atol=1e-3) or \
+            abs(k[0] - k[1]) > 1e-2 * max(map(abs, key)):
+        assert not judge(any_scale, {"q": swapped}, q, RTOL)["q"].right
