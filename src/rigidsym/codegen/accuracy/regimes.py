@@ -88,7 +88,10 @@ def _rotations_near(rng, small) -> list[tuple[str, list[fmpq]]]:
     return out
 
 
-def _random_arg(arg, rng, name: str) -> list[fmpq]:
+def random_arg(arg, rng, name: str) -> list[fmpq]:
+    """A random exact value of kernel argument ``arg`` (of kernel ``name``) on its manifold
+    (unit vectors, rotations, angles) or, unconstrained, standard normal: the regimes'
+    ordinary points and the search's constrained starts."""
     n = arg.size
     if arg.kind == "unit":
         return unit(rng, n)
@@ -214,7 +217,7 @@ def regimes(kernel, dtype, n_random: int = 8, seed: int = 0, small=None,
     names = [a.name for a in args]
 
     def base():
-        return [_random_arg(a, rng, kernel.name) for a in args]
+        return [random_arg(a, rng, kernel.name) for a in args]
 
     out: dict[str, list] = {"random": [base() for _ in range(n_random)]}
 

@@ -4,7 +4,7 @@ knows nothing of the regimes someone listed or derived.
 Per kernel and float type, seeded: ``n_start`` random points on the floating line
 (exponent-uniform: every unconstrained component ``+-2^e``, ``e`` uniform in ``[-E, E]``
 times a random significand; constrained arguments drawn on their manifold as the harness
-does), each judged by the harness's own rule (``benchmarks/accuracy.judge``: the ratio to
+does), each judged by the harness's own rule (the judge, :func:`.judge.judge`: the ratio to
 ``8 u (kappa + 1)`` and to ``max(2 e_ref, 4 u)``, a spurious flag counting as infinite);
 then hill climbing from the worst: one unconstrained component at a time multiplied by
 ``1 +- 2^-j`` (``j`` uniform in 1 .. 52) or its sign flipped, a step kept when the measured
@@ -15,12 +15,12 @@ from __future__ import annotations
 
 import math
 
-import _accuracy_points as P
-import _accuracy_ref as R
-import accuracy as A
 import numpy as np
 
-from rigidsym.codegen.accuracy.regimes import _random_arg
+from rigidsym.codegen.accuracy import regimes as P
+from rigidsym.codegen.accuracy.harness import judge as A
+from rigidsym.codegen.accuracy.harness import reference as R
+from rigidsym.codegen.accuracy.regimes import random_arg
 
 #: the exponent range of the random start points (float32: a smaller one)
 EXP = {np.float64: 8, np.float32: 8}
@@ -41,7 +41,7 @@ def _start(k, rng, dtype) -> list:
             v = rng.choice([-1.0, 1.0], a.size) * 2.0 ** rng.uniform(-e, e, a.size)
             p.append([P.q(x) for x in v])
         else:
-            p.append(_random_arg(a, rng, k.name))
+            p.append(random_arg(a, rng, k.name))
     return p
 
 
@@ -49,7 +49,7 @@ def search(name: str, dtype=np.float64, backends=("numpy",), seed: int = 0,
            n_start: int = 24, steps: int = 60, runner=None) -> tuple[float, list]:
     """``(worst rule ratio, its point)`` found for ``name``: exponent-uniform starts, then
     hill climbing on the measured ratio (see the module); ``runner`` as
-    :func:`accuracy.judge`'s (the PyTorch and JAX kernels, tests/test_search_every_kernel.py)."""
+    :func:`.judge.judge`'s (the PyTorch and JAX kernels, tests/test_search_every_kernel.py)."""
     k = R.kernel_of(name)
     rng = np.random.default_rng(seed)
     free = [i for i, a in enumerate(k.args) if a.kind == "any" and a.name != "m"]
