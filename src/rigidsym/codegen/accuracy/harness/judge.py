@@ -89,10 +89,12 @@ def run_kernel(name: str, arrays, dtype, backend: str) -> np.ndarray:
 
 
 def judge(name: str, regime: str, points, dtype, backends, refs=None,
-          runner=None) -> list[Row]:
+          runner=None, reference_half: bool = True) -> list[Row]:
     """Rows (one per backend) of one regime; ``refs`` caches the references per point;
     ``runner(name, arrays, dtype, backend) -> (n, outputs)`` replaces the package's kernels
-    (a test hands it a program that loses, to see the harness fail)."""
+    (a test hands it a program that loses, to see the harness fail; ``rigidsym audit`` a
+    user's function); ``reference_half=False`` judges the condition half alone (no
+    yardsticks evaluated: the audit compares with the kernel itself)."""
     k = R.kernel_of(name)
     u = float(np.finfo(dtype).eps) / 2
     sizes = [o.size for o in k.outputs]
@@ -103,8 +105,8 @@ def judge(name: str, regime: str, points, dtype, backends, refs=None,
     big = float(np.finfo(dtype).max)
     # the yardsticks (issue 37): the textbook formula in the same type, and each peer
     # (float64 only)
-    yard = {"textbook": O.textbook(name, arrays, dtype)}
-    if np.dtype(dtype) == np.float64:
+    yard = {"textbook": O.textbook(name, arrays, dtype)} if reference_half else {}
+    if reference_half and np.dtype(dtype) == np.float64:
         yard.update(O.evaluate(name, arrays, int(offs[-1])))
     for s, p in enumerate(points):
         flat_rounded = [float(x) for a in arrays for x in a[s].ravel()]
@@ -170,12 +172,12 @@ def _judge_outputs(row, b, c, s, arrays, dtype, ref, scale, norms, offs, at_inpu
         n2 = float(np.linalg.norm(r2)) or 1.0
         err2 = diff(c[sl], r2, at_input, sl, bound) / n2
         refs_o = {lab: diff(v[s, sl], r2, at_input, sl, bound) / n2
-                  for lab, v in yard.items()}
+                  for lab, v in yard.items()} or {"": np.inf}
         src = min(refs_o, key=refs_o.get)
         e_ref = refs_o[src]
         # the condition half as an absolute bound where the truth is 0
         kap_rule = bound / (8 * u * norm) - 1
-        half = rule.ratio(err2, u, None, e_ref)
+        half = rule.ratio(err2, u, None, e_ref) if yard else 0.0
         if half > 1:
             # a screen: past it, the medians over a cloud of neighbouring inputs
             # decide (one input's error is luck where kappa u dominates it;
