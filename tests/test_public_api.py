@@ -43,7 +43,8 @@ KERNELS = [
     "rotation_vector_right_jacobian_inverse", "transform_from_exponential_coordinates",
 ]
 PUBLIC = {
-    "rigidsym": ["BadInput", "Result", "Results", "check", "check_latex", "load_module", "verify",
+    "rigidsym": ["BadInput", "Result", "Results", "audit", "check", "check_latex", "load_module",
+                 "verify",
                  *DECLARE],
     "rigidsym.declare": DECLARE,
     "rigidsym.kernels": [

@@ -9,7 +9,3 @@ book (``rigidsym audit``, :func:`rigidsym.audit`).
 - ``audit``: :func:`audit` and its :class:`AuditReport`.
 - ``report``: the report as text, JSON, Markdown and a pytest regression file.
 """
-
-from rigidsym.auditing.audit import AuditReport, audit
-
-__all__ = ["audit", "AuditReport"]
