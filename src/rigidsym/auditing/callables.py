@@ -125,12 +125,15 @@ def as_numpy_callable(func: Callable) -> Callable:
             return func(*[torch.as_tensor(np.asarray(a)) for a in args])
         try:
             return func(*args)
-        except (TypeError, AttributeError):
+        except (TypeError, AttributeError) as first:
             try:
                 import torch
             except ImportError:
-                raise
-            out = func(*[torch.as_tensor(np.asarray(a)) for a in args])
+                raise first from None
+            try:
+                out = func(*[torch.as_tensor(np.asarray(a)) for a in args])
+            except Exception:  # noqa: BLE001  (not a PyTorch function: NumPy's error)
+                raise first from None
             state["torch"] = True
             return out
 

@@ -252,7 +252,7 @@ def find(func: Callable, tgt: Target, points: list[dict], truth: dict,
             matches.append(m)
     match = min(matches, key=lambda m: len(m.generators)) if matches else None
     found = Found(match, len(members), best_r if match is None else _residual(
-        func, match, points, truth[match.kernel(tgt)]), best, errors, [], matches)
+        func, match, points, truth[match.kernel(tgt)]), match or best, errors, [], matches)
     if match is not None or best is not None:
         found.broken = invariants(func, tgt, match or best, points)
     return found
