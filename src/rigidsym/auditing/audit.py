@@ -20,12 +20,12 @@ from rigidsym.auditing import conventions as C
 from rigidsym.auditing import worst as W
 from rigidsym.auditing.callables import as_numpy_callable, parameter_names
 from rigidsym.auditing.targets import Target, target
-from rigidsym.auditing.worst import EXTREMES
+from rigidsym.auditing.worst import extreme
 from rigidsym.codegen.accuracy.harness import judge as J
 from rigidsym.codegen.accuracy.harness import reference as R
 from rigidsym.core.errors import BadInput
 
-__all__ = ["audit", "AuditReport", "Finding", "WorstInput", "EXTREMES"]
+__all__ = ["audit", "AuditReport", "Finding", "WorstInput"]
 
 
 
@@ -148,7 +148,7 @@ def _findings(found: C.Found, tgt, beh: dict, worst: list, batch: str) -> list[F
         out.append(Finding("error", "convention", f"computes {tgt.dual}, not {tgt.name}"))
     for dt, rows in beh.items():
         for b in rows.values():
-            sev = "note" if b.regime in EXTREMES else "error"
+            sev = "note" if extreme(b.regime) else "error"
             ex = b.examples[0].flag if b.examples else ""
             if b.nan or b.raised:
                 out.append(Finding(sev, "flag", f"{dt}, {b.regime}: {b.nan} NaN/inf and "

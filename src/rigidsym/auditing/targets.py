@@ -62,6 +62,8 @@ class Target:
         dual: the kernel a twist map is confused with on wrenches (and back), or "".
         kind: ``"twist"``, ``"wrench"``, ``"rotation"`` (a rotation output: QᵀQ = 1 and det
             = 1 checked) or ``""``.
+        antipodal: the output is a rotation vector whose sign at a half turn the input's
+            rounding decides (``-w`` accepted where ``pi - |w|`` is within 16 u pi).
     """
 
     name: str
@@ -71,6 +73,7 @@ class Target:
     generators: tuple[str, ...]
     dual: str = ""
     kind: str = ""
+    antipodal: bool = False
 
 
 _T = ("t", "twist", "t_a", "xi", "v", "vel", "velocity", "motion", "screw")
@@ -122,7 +125,7 @@ TARGETS: dict[str, Target] = {t.name: t for t in (
            _one("w", _ROTVEC), ("right",)),
     Target("rotation_vector_from_rotation", "rotation_vector_from_rotation",
            "(sola:log-so3): the logarithm of SO(3), w = phi e with phi in [0, pi], from Q",
-           _one("Q", _ROT), ("transpose_in",)),
+           _one("Q", _ROT), ("transpose_in",), antipodal=True),
     Target("rotation_from_natural_invariants", "rotation_from_natural_invariants",
            "(2.49): Q = e e^T + cos(phi) (1 - e e^T) + sin(phi) E, from axis e and angle phi",
            (Form("f(e, phi)", (("e", "axis", "n", "u", "k"), ("phi", "theta", "angle", "a")),
