@@ -29,11 +29,17 @@ ROOT = Path(__file__).resolve().parents[1]
 
 #: (function, operation, the finding's kind, where): each bug must be found there
 BUGS = [
-    (X.wrench_ad_transpose, "wrench_transfer", "invariant", "power"),
-    (X.left_jacobian_wrong_taylor, "rotation_vector_left_jacobian", "inaccurate", "-> 0"),
-    (X.log_arccos, "rotation_vector_from_rotation", "silent wrong", "phi->pi"),
+    (X.wrench_ad_transpose, "wrench_transfer", "convention", "Ad_T^T where the book's Ad_T^-T"),
+    (X.left_jacobian_wrong_taylor, "rotation_vector_left_jacobian", "inaccurate",
+     "-> 0: error"),
+    (X.log_arccos, "rotation_vector_from_rotation", "silent wrong", "arccos"),
     (X.exp_no_epsilon, "rotation_from_rotation_vector", "flag", "w[0:3] = 0"),
 ]
+#: the name each finding gives the bug
+NAMED = {"wrench_ad_transpose": "power <t, w> not invariant",
+         "left_jacobian_wrong_taylor": "small-angle branch (Taylor series) of the wrong sign",
+         "log_arccos": "arccos((tr Q - 1)/2)",
+         "exp_no_epsilon": "no guard or epsilon at 0"}
 CORRECT = [(X.wrench_ad_inverse_transpose, "wrench_transfer"),
            (X.left_jacobian, "rotation_vector_left_jacobian"),
            (X.log_atan2, "rotation_vector_from_rotation"),
@@ -48,6 +54,7 @@ def test_each_recreated_bug_is_found_and_named(func, op, kind, where):
     assert not rep.ok and rep.convention is not None
     errors = [f for f in rep.findings if f.severity == "error"]
     assert any(f.kind == kind and where in f.text for f in errors), report.text(rep)
+    assert any(NAMED[func.__name__] in f.text for f in errors), report.text(rep)
     # a reproducer: the user's own arguments at the worst input, exact
     assert rep.worst and func.__name__ + "(np.array([float.fromhex(" in report.text(rep)
 

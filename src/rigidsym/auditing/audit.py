@@ -129,6 +129,21 @@ def _peers(tgt, member, w: WorstInput, x_arrays, truth) -> dict:
     return out
 
 
+def _likely(regime: str, flag: bool) -> str:
+    """What usually causes a finding on ``regime`` (the bugs of the peers' trackers)."""
+    r = regime.replace(" ", "")
+    if flag and ("=0" in r or "->0" in r or r == "Q=1"):
+        return (" - likely a division by the norm (angle) with no guard or epsilon at 0 "
+                "(SymForce #226)")
+    if "->0" in r or "scale" in r:
+        return (" - likely a small-angle branch (Taylor series) of the wrong sign or order, "
+                "or a cancellation such as 1 - cos(phi) (manif #223, gtsam #746)")
+    if "pi" in r:
+        return (" - likely an angle from arccos((tr Q - 1)/2) or an axis from the skew part "
+                "near a half turn (pytransform3d #189, gtsam PR #2723)")
+    return ""
+
+
 def _findings(found: C.Found, tgt, beh: dict, worst: list, batch: str) -> list[Finding]:
     out = []
     if found.member is None:
@@ -153,13 +168,13 @@ def _findings(found: C.Found, tgt, beh: dict, worst: list, batch: str) -> list[F
             if b.nan or b.raised:
                 out.append(Finding(sev, "flag", f"{dt}, {b.regime}: {b.nan} NaN/inf and "
                                    f"{b.raised} exceptions of {b.n} inputs where the truth is "
-                                   f"finite ({ex})"))
+                                   f"finite ({ex})" + _likely(b.regime, True)))
             if np.isfinite(b.worst_ratio) and b.worst_ratio > 1:
                 u = 2.0**-53 if dt == "float64" else 2.0**-24
                 kind = "silent wrong" if b.worst_ratio * 8 * u > 1e-3 else "inaccurate"
                 out.append(Finding(sev, kind, f"{dt}, {b.regime}: error {b.worst_ratio:.3g} "
                                    f"x the bound 8 u (kappa + 1) (rigidsym's kernel: "
-                                   f"{b.kernel_worst_ratio:.2g} x)"))
+                                   f"{b.kernel_worst_ratio:.2g} x)" + _likely(b.regime, False)))
     if "differs" in batch:
         out.append(Finding("note", "batch", batch))
     return out
