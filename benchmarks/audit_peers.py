@@ -84,8 +84,9 @@ def main(argv=None) -> int:
         finding = "; ".join(errs) or "none"
         if notes:
             finding += f"; notes: {'; '.join(notes)}"
+        where, finding = where.replace("|", "\\|"), finding.replace("|", "\\|")
         print(f"| {lib} | `{call}` | `{op}` | {conv} ({rep.tried}) | {where} | "
-              f"{w.kernel_err_u if w else 0:.3g} | {finding.replace('|', '/')} | {dt:.1f} |")
+              f"{w.kernel_err_u if w else 0:.3g} | {finding} | {dt:.1f} |")
     return 0
 
 
