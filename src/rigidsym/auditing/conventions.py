@@ -36,6 +36,18 @@ def _swap6(v: np.ndarray) -> np.ndarray:
     return np.concatenate([v[3:6], v[0:3]])
 
 
+def _swap66(v) -> np.ndarray:
+    M = np.asarray(v, dtype=np.float64).reshape(6, 6)
+    P = np.roll(np.eye(6), 3, axis=0)
+    return (P @ M @ P).ravel()
+
+
+def _last(v, scale: float) -> np.ndarray:
+    v = np.array(v, dtype=np.float64)
+    v[-1] *= scale
+    return v
+
+
 def _inv_T(T: np.ndarray) -> np.ndarray:
     T = np.asarray(T, dtype=np.float64).reshape(4, 4)
     R, d = T[:3, :3], T[:3, 3]
@@ -98,8 +110,19 @@ GENERATORS: dict[str, Generator] = {g.name: g for g in (
         x, phi=np.asarray(x["phi"]) * (180.0 / np.pi))),
     Generator("scalar_first", "the quaternion scalar first: [r0; r] (wxyz) for the book's "
               "[r; r0] (xyzw)", args=lambda x: _with(x, eta=np.roll(x["eta"], 1))),
-    Generator("right", "the right Jacobian: J_r(w) = J_l(-w) for J_l(w)",
-              args=lambda x: _with(x, w=-np.asarray(x["w"]))),
+    Generator("other_side", "the other-sided Jacobian: J(-w) (right for left, left for "
+              "right)", args=lambda x: _with(x, w=-np.asarray(x["w"]))),
+    Generator("blocks_matrix_out", "linear block first: the 6 x 6 matrix on [v; w] for the "
+              "book's on [w; v]", out=lambda v: _swap66(v)),
+    Generator("scalar_first_out", "the quaternion returned scalar first: [r0; r] (wxyz) for "
+              "the book's [r; r0]", out=lambda v: np.roll(v, -1),
+              out_inv=lambda v: np.roll(v, 1)),
+    Generator("negated_out", "the quaternion of the other sign: -q for q (r0 <= 0)",
+              out=lambda v: -np.asarray(v)),
+    Generator("degrees_out", "the angle returned in degrees", out=lambda v: _last(
+        v, np.pi / 180.0), out_inv=lambda v: _last(v, 180.0 / np.pi)),
+    Generator("angle_first_out", "the angle returned first: (phi, e) for (e, phi)",
+              out=lambda v: np.roll(v, -1), out_inv=lambda v: np.roll(v, 1)),
 )}
 
 
@@ -212,13 +235,16 @@ def _members(tgt: Target, names: tuple[str, ...] | None) -> list[Member]:
             for c in itertools.combinations(gens, r)]
 
 
-def _residual(func, member, points, truth) -> float:
+def _residual(func, member, points, truth, either_sign: bool = False) -> float:
     worst = 0.0
     for x, t in zip(points, truth, strict=True):
         got = call_member(func, member, x)
         if got.shape != t.shape:
             return np.inf
-        d = float(np.linalg.norm(got - t)) / max(float(np.linalg.norm(t)), 1e-300)
+        gap = float(np.linalg.norm(got - t))
+        if either_sign:      # q and -q: the same rotation (the book's r0 >= 0 a choice)
+            gap = min(gap, float(np.linalg.norm(got + t)))
+        d = gap / max(float(np.linalg.norm(t)), 1e-300)
         worst = max(worst, d if np.isfinite(d) else np.inf)
     return worst
 
@@ -242,7 +268,8 @@ def find(func: Callable, tgt: Target, points: list[dict], truth: dict,
     for m in members:
         try:
             with np.errstate(all="ignore"):
-                r = _residual(func, m, points, truth[m.kernel(tgt)])
+                r = _residual(func, m, points, truth[m.kernel(tgt)],
+                              tgt.antipodal == "quaternion")
         except Exception as e:      # noqa: BLE001  (the user's function failed: say so)
             errors.setdefault(m.form.label, f"{type(e).__name__}: {e}")
             continue
@@ -252,7 +279,8 @@ def find(func: Callable, tgt: Target, points: list[dict], truth: dict,
             matches.append(m)
     match = min(matches, key=lambda m: len(m.generators)) if matches else None
     found = Found(match, len(members), best_r if match is None else _residual(
-        func, match, points, truth[match.kernel(tgt)]), match or best, errors, [], matches)
+        func, match, points, truth[match.kernel(tgt)], tgt.antipodal == "quaternion"),
+        match or best, errors, [], matches)
     if match is not None or best is not None:
         found.broken = invariants(func, tgt, match or best, points)
     return found
@@ -274,6 +302,8 @@ def invariants(func: Callable, tgt: Target, member: Member, points: list[dict]) 
             broken.append(f"Q^T Q = 1 broken: |Q^T Q - 1| = {worst_o:.3g}")
         if not worst_d <= 1e-10:
             broken.append(f"det Q = 1 broken: |det Q - 1| = {worst_d:.3g}")
+    if tgt.kind in ("twist_matrix", "wrench_matrix"):
+        broken += _power_matrix(func, tgt, member, points)
     if tgt.kind in ("twist", "wrench"):
         # the user's map with the transform as given (no inverse, no dual), paired with the
         # book's map of the other kind of the same transform: <t_P, w_P> = <t_A, w_A>
@@ -297,3 +327,23 @@ def invariants(func: Callable, tgt: Target, member: Member, points: list[dict]) 
                           f"mapped by the book's transfer of the same transform, "
                           f"|<t_P, w_P> - <t_A, w_A>| / (|t| |w|) = {worst:.3g}")
     return broken
+
+
+def _power_matrix(func: Callable, tgt: Target, member: Member, points: list[dict]) -> list:
+    """``U^T V = 1`` (the power kept) of the user's matrix under ``member`` without the
+    inverse or dual, with the book's matrix of the other kind of the same transform."""
+    from rigidsym.codegen.accuracy.harness.judge import run_kernel
+
+    same = Member(member.form, tuple(g for g in member.generators
+                                     if g not in ("inverse", "dual")))
+    worst = 0.0
+    for x in points:
+        M = call_member(func, same, x).reshape(6, 6)
+        D = run_kernel(tgt.dual, [x["a"][None], x["p"][None]], np.float64,
+                       "numpy")[0].reshape(6, 6)
+        worst = max(worst, float(np.abs(M.T @ D - np.eye(6)).max()))
+    if worst <= 1e-10:
+        return []
+    kind = "twists" if tgt.kind == "wrench_matrix" else "wrenches"
+    return [f"power <t, w> not invariant under the frame change: with {kind} mapped by the "
+            f"book's matrix of the same transform, |U^T V - 1| = {worst:.3g}"]

@@ -62,8 +62,10 @@ class Target:
         dual: the kernel a twist map is confused with on wrenches (and back), or "".
         kind: ``"twist"``, ``"wrench"``, ``"rotation"`` (a rotation output: QᵀQ = 1 and det
             = 1 checked) or ``""``.
-        antipodal: the output is a rotation vector whose sign at a half turn the input's
-            rounding decides (``-w`` accepted where ``pi - |w|`` is within 16 u pi).
+        antipodal: an output whose sign at a half turn the input's rounding decides:
+            ``"rotation_vector"`` (``-w`` accepted where ``pi - |w|`` is within 16 u pi),
+            ``"quaternion"`` (``-eta`` anywhere: the same rotation), ``"axis"``
+            (``[-e; phi]`` where ``pi - phi`` is within 16 u pi), or "".
     """
 
     name: str
@@ -73,7 +75,7 @@ class Target:
     generators: tuple[str, ...]
     dual: str = ""
     kind: str = ""
-    antipodal: bool = False
+    antipodal: str = ""
 
 
 _T = ("t", "twist", "t_a", "xi", "v", "vel", "velocity", "motion", "screw")
@@ -122,10 +124,37 @@ TARGETS: dict[str, Target] = {t.name: t for t in (
     Target("rotation_vector_left_jacobian", "rotation_vector_left_jacobian",
            "(sola:jl-w): J_l(w) = 1 + (1 - cos phi)/phi^2 W + (phi - sin phi)/phi^3 W^2, the "
            "left Jacobian of SO(3)",
-           _one("w", _ROTVEC), ("right",)),
+           _one("w", _ROTVEC), ("other_side",)),
+    *(Target(n, n, f"(sola:jl-jr, sola:jl-inverse): {what} of SO(3) at w", _one("w", _ROTVEC),
+             ("other_side",)) for n, what in (
+        ("rotation_vector_right_jacobian", "J_r(w) = J_l(-w), the right Jacobian"),
+        ("rotation_vector_left_jacobian_inverse", "J_l(w)^-1, the left Jacobian's inverse"),
+        ("rotation_vector_right_jacobian_inverse", "J_r(w)^-1, the right Jacobian's "
+         "inverse"))),
+    Target("euler_rodrigues_from_rotation", "euler_rodrigues_from_rotation",
+           "(sola:quat-of-rotation): the Euler-Rodrigues parameters eta = [r; r0] of Q "
+           "(a unit quaternion, scalar last, r0 >= 0)",
+           _one("Q", _ROT), ("transpose_in", "scalar_first_out", "negated_out"),
+           antipodal="quaternion"),
+    Target("natural_invariants_from_rotation", "natural_invariants_from_rotation",
+           "(2.49), (3.95): the natural invariants (e, phi) of Q, phi in [0, pi]",
+           _one("Q", _ROT), ("transpose_in", "degrees_out", "angle_first_out"),
+           antipodal="axis"),
+    *(Target(n, n, f"({eq}): the {what} of T = [[1, a - p], [0, 1]]",
+             (Form("f(a, p)", _PTS, lambda x: [x["a"], x["p"]]),
+              Form("f(T), T = [[1, a - p], [0, 1]]", (_TR,),
+                   lambda x: [homogeneous(np.eye(3), x["a"] - x["p"])]),
+              Form("f(R, d), R = 1, d = a - p", (_ROT, ("d", "p", "t", "trans")),
+                   lambda x: [np.eye(3), x["a"] - x["p"]])),
+             ("blocks_matrix_out", "inverse", "dual"), dual=d, kind=kind)
+      for n, eq, what, d, kind in (
+          ("twist_transfer_matrix", "3.83", "twist-transfer matrix U = Ad_T",
+           "wrench_transfer_matrix", "twist_matrix"),
+          ("wrench_transfer_matrix", "3.119", "wrench-transfer matrix V = Ad_T^-T",
+           "twist_transfer_matrix", "wrench_matrix"))),
     Target("rotation_vector_from_rotation", "rotation_vector_from_rotation",
            "(sola:log-so3): the logarithm of SO(3), w = phi e with phi in [0, pi], from Q",
-           _one("Q", _ROT), ("transpose_in",), antipodal=True),
+           _one("Q", _ROT), ("transpose_in",), antipodal="rotation_vector"),
     Target("rotation_from_natural_invariants", "rotation_from_natural_invariants",
            "(2.49): Q = e e^T + cos(phi) (1 - e e^T) + sin(phi) E, from axis e and angle phi",
            (Form("f(e, phi)", (("e", "axis", "n", "u", "k"), ("phi", "theta", "angle", "a")),

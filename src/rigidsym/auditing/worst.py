@@ -126,7 +126,7 @@ class Behaviour:
 
 
 def judge_point(name: str, regime: str, point, dtype, runner: Runner,
-                antipodal: bool = False) -> Judged:
+                antipodal: str = "") -> Judged:
     """The user's function and the kernel judged at one exact ``point`` (``antipodal``: the
     target's :attr:`~.targets.Target.antipodal`)."""
     before = len(runner.raised)
@@ -138,23 +138,38 @@ def judge_point(name: str, regime: str, point, dtype, runner: Runner,
         flag, ratio = (f"raises {raised[0]}" if raised else "NaN"), math.inf
     elif user.flagged_expected:
         flag, ratio = _at_undefined(name, point, dtype, runner, before)
-    elif ratio > 1 and antipodal:
-        ratio = min(ratio, _antipodal(name, point, dtype, runner, user.kappa))
-    return Judged(regime, point, ratio, user.err, user.kappa, kern.worst_ratio, kern.err,
-                  flag)
+    err = user.err
+    if not flag and ratio > 1 and antipodal:
+        other = _antipodal(name, point, dtype, runner, user.kappa, antipodal)
+        if other < ratio:       # the other sign's truth: its error is the one reported
+            u = float(np.finfo(dtype).eps) / 2
+            ratio, err = other, other * 8 * u * (user.kappa + 1)
+    return Judged(regime, point, ratio, err, user.kappa, kern.worst_ratio, kern.err, flag)
 
 
-def _antipodal(name, point, dtype, runner, kappa) -> float:
-    """The ratio of ``-truth`` to the user's rotation vector where the truth is within 16 u
-    pi of a half turn: there the rounding of Q decides the sign of e (vect(Q) is rounding
-    noise), and both logarithms are the truth of a rotation within the input's rounding."""
+def _antipodal(name, point, dtype, runner, kappa, kind: str) -> float:
+    """The ratio of the other sign's truth to the user's output where the truth is within
+    16 u of a half turn: there the rounding of Q decides the sign (of w, of the axis e;
+    vect(Q) is rounding noise), and both are the truth of a rotation within the input's
+    rounding; a quaternion's sign anywhere (q and -q are the same rotation). ``kind``:
+    :attr:`~.targets.Target.antipodal`."""
     truth, _ = truth_at(name, point, dtype)
     u = float(np.finfo(dtype).eps) / 2
-    if truth is None or np.linalg.norm(truth) < math.pi * (1 - 16 * u):
+    if truth is None:
+        return math.inf
+    other = -truth
+    if kind == "rotation_vector":
+        near = np.linalg.norm(truth) >= math.pi * (1 - 16 * u)
+    elif kind == "quaternion":      # q and -q are the same rotation everywhere
+        near = True
+    else:                       # the axis and angle: [-e; phi]
+        near = truth[3] >= math.pi * (1 - 16 * u)
+        other = np.concatenate([-truth[:3], truth[3:]])
+    if not near:
         return math.inf
     arrays = J.round_points([point], dtype, R.kernel_of(name))
     mine = runner(name, arrays, dtype, "user")[0]
-    d = float(np.linalg.norm(mine + truth)) / float(np.linalg.norm(truth))
+    d = float(np.linalg.norm(mine - other)) / float(np.linalg.norm(truth))
     return d / (8 * u * (kappa + 1))
 
 
