@@ -93,3 +93,13 @@ def passive_rotation_from_degrees(aa):
     E = cpm(e)
     Q = np.eye(3) + np.sin(phi) * E + (1 - np.cos(phi)) * E @ E
     return Q.T
+
+
+# the aircraft's Euler-angle rates: roll, pitch, yaw (phi, theta, psi) first to last, body
+# rates (p, q, r); the rates returned in the same order
+def rpy_rates(rpy, pqr):
+    phi, th, _ = rpy
+    p, q, r = pqr
+    return np.array([p + np.sin(phi) * np.tan(th) * q + np.cos(phi) * np.tan(th) * r,
+                     np.cos(phi) * q - np.sin(phi) * r,
+                     (np.sin(phi) * q + np.cos(phi) * r) / np.cos(th)])

@@ -332,3 +332,20 @@ def test_float32_is_swept_too():
     rep = audit(X.exp_rodrigues, "rotation_from_rotation_vector",
                 dtypes=("float64", "float32"))
     assert rep.ok and [w.dtype for w in rep.worst] == ["float64", "float32"]
+
+
+def test_the_euler_sequence_and_frame_are_found():
+    """The aircraft's roll-pitch-yaw rates (body frame, angles in the order roll, pitch,
+    yaw) are the extrinsic XYZ sequence, i.e. the intrinsic ZYX read backwards; a
+    sequence and frame chosen among the 24 is named as such."""
+    found, tgt, _ = _find(X.rpy_rates, "euler_angle_rates")
+    assert found.member.variant == "euler_angle_rates_zyx_body"
+    assert found.member.generators == ("extrinsic",) and found.tried == 2 * 24 * 2
+    assert "extrinsic XYZ" in found.member.says(tgt)
+    from rigidsym import kernels as K
+
+    for seq, frame in (("XZX", "fixed"), ("YXZ", "body")):
+        found, tgt, _ = _find(lambda a, w, s=seq, f=frame: K.euler_angle_rates(a, w, s, f),
+                              "euler_angle_rates")
+        assert found.member.variant == f"euler_angle_rates_{seq.lower()}_{frame}"
+        assert found.member.generators == ()

@@ -86,8 +86,9 @@ class AuditReport:
 def _truth(tgt: Target, points: list[dict]) -> dict:
     k = R.kernel_of(tgt.kernel)
     arrays = [np.stack([p[a.name] for p in points]) for a in k.args]
-    return {name: list(J.run_kernel(name, arrays, np.float64, "numpy"))
-            for name in {tgt.kernel, tgt.dual} - {""}}
+    names = {tgt.kernel, tgt.dual, *tgt.family} - {""}
+    with np.errstate(all="ignore"):
+        return {name: list(J.run_kernel(name, arrays, np.float64, "numpy")) for name in names}
 
 
 def _find(func, tgt, names, seed) -> C.Found:

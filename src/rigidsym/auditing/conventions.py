@@ -42,6 +42,12 @@ def _swap66(v) -> np.ndarray:
     return (P @ M @ P).ravel()
 
 
+def _rev(v) -> np.ndarray:
+    """Euler-angle rates reversed (3,), or a rate matrix's columns reversed (3 x 3)."""
+    v = np.asarray(v, dtype=np.float64)
+    return v[::-1].copy() if v.size == 3 else v.reshape(3, 3)[:, ::-1].ravel()
+
+
 def _last(v, scale: float) -> np.ndarray:
     v = np.array(v, dtype=np.float64)
     v[-1] *= scale
@@ -121,6 +127,10 @@ GENERATORS: dict[str, Generator] = {g.name: g for g in (
               out=lambda v: -np.asarray(v)),
     Generator("degrees_out", "the angle returned in degrees", out=lambda v: _last(
         v, np.pi / 180.0), out_inv=lambda v: _last(v, 180.0 / np.pi)),
+    Generator("extrinsic", "the extrinsic sequence: angles (and their rates) in the "
+              "reverse order, i.e. the intrinsic sequence read backwards",
+              args=lambda x: _with(x, angles=np.asarray(x["angles"])[::-1]),
+              out=lambda v: _rev(v)),
     Generator("angle_first_out", "the angle returned first: (phi, e) for (e, phi)",
               out=lambda v: np.roll(v, -1), out_inv=lambda v: np.roll(v, 1)),
 )}
@@ -132,14 +142,27 @@ class Member:
 
     form: Form
     generators: tuple[str, ...]
+    #: the member of the target's family of kernels (an Euler sequence and frame), or ""
+    variant: str = ""
 
     def says(self, tgt: Target) -> str:
         """The member in words."""
-        gens = "; ".join(GENERATORS[g].says for g in self.generators) or "the book's own"
+        gens = "; ".join(GENERATORS[g].says for g in self.generators
+                         if not (self.variant and g == "extrinsic")) or "the book's own"
+        if self.variant:
+            seq, frame = self.variant.split("_")[-2:]
+            seq = (f"the extrinsic {seq[::-1].upper()} sequence (the intrinsic "
+                   f"{seq.upper()} with the angles in reverse order)"
+                   if "extrinsic" in self.generators else
+                   f"the intrinsic {seq.upper()} sequence")
+            gens = f"{seq}, angular velocity in the {frame} frame" + (
+                "" if gens == "the book's own" else f"; {gens}")
         return f"{self.form.label}, convention: {gens}"
 
     def kernel(self, tgt: Target) -> str:
         """The kernel whose declaration is this member's truth."""
+        if self.variant:
+            return self.variant
         return tgt.dual if "dual" in self.generators else tgt.kernel
 
     def user_args(self, x: dict) -> list:
@@ -231,8 +254,8 @@ def _members(tgt: Target, names: tuple[str, ...] | None) -> list[Member]:
                 n.lower() in ok for n, ok in zip(names, f.names, strict=True))
         forms.sort(key=lambda f: not fits(f))
     gens = tgt.generators
-    return [Member(f, c) for f in forms for r in range(len(gens) + 1)
-            for c in itertools.combinations(gens, r)]
+    return [Member(f, c, v) for f in forms for v in (tgt.family or ("",))
+            for r in range(len(gens) + 1) for c in itertools.combinations(gens, r)]
 
 
 def _residual(func, member, points, truth, either_sign: bool = False) -> float:

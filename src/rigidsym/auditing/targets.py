@@ -66,6 +66,8 @@ class Target:
             ``"rotation_vector"`` (``-w`` accepted where ``pi - |w|`` is within 16 u pi),
             ``"quaternion"`` (``-eta`` anywhere: the same rotation), ``"axis"``
             (``[-e; phi]`` where ``pi - phi`` is within 16 u pi), or "".
+        family: kernels of the same arguments each member may be (the 12 Euler sequences
+            in the fixed and the body frame), or () for :attr:`kernel` alone.
     """
 
     name: str
@@ -76,6 +78,7 @@ class Target:
     dual: str = ""
     kind: str = ""
     antipodal: str = ""
+    family: tuple[str, ...] = ()
 
 
 _T = ("t", "twist", "t_a", "xi", "v", "vel", "velocity", "motion", "screw")
@@ -107,6 +110,15 @@ def _one(name: str, names: tuple[str, ...]) -> tuple[Form, ...]:
 _ROTVEC = ("w", "omega", "rotvec", "r", "v", "phi", "theta", "axis_angle", "aa", "log", "x")
 _QUAT = ("q", "quat", "quaternion", "eta", "x")
 
+_ANG = ("angles", "euler", "rpy", "ypr", "eul", "a", "x", "q")
+
+
+def _EULER(prefix: str) -> tuple[str, ...]:   # noqa: N802  (a family's constructor)
+    seqs = ("xyx", "xyz", "xzx", "xzy", "yxy", "yxz", "yzx", "yzy", "zxy", "zxz", "zyx",
+            "zyz")
+    return tuple(f"{prefix}_{s}_{f}" for s in seqs for f in ("fixed", "body"))
+
+
 TARGETS: dict[str, Target] = {t.name: t for t in (
     Target("twist_transfer", "twist_transfer",
            "(3.83): t_P = [omega; v_A + (a - p) x omega], the twist at P of the body's twist "
@@ -131,6 +143,18 @@ TARGETS: dict[str, Target] = {t.name: t for t in (
         ("rotation_vector_left_jacobian_inverse", "J_l(w)^-1, the left Jacobian's inverse"),
         ("rotation_vector_right_jacobian_inverse", "J_r(w)^-1, the right Jacobian's "
          "inverse"))),
+    Target("euler_angle_rates", "euler_angle_rates_zyx_body",
+           "(Exercise 3.10): eta_dot = W(angles)^-1 omega, the Euler-angle rates of the "
+           "angular velocity, for each of the 12 sequences and either frame",
+           (Form("f(angles, omega)", (_ANG, ("omega", "w", "pqr", "rates", "v")),
+                 lambda x: [x["angles"], x["omega"]]),
+            Form("f(omega, angles)", (("omega", "w", "pqr", "rates", "v"), _ANG),
+                 lambda x: [x["omega"], x["angles"]])),
+           ("extrinsic",), family=_EULER("euler_angle_rates")),
+    Target("euler_rate_matrix", "euler_rate_matrix_zyx_body",
+           "(Exercise 3.10): W(angles), omega = W eta_dot, for each of the 12 sequences and "
+           "either frame", (Form("f(angles)", (_ANG,), lambda x: [x["angles"]]),),
+           ("extrinsic",), family=_EULER("euler_rate_matrix")),
     Target("euler_rodrigues_from_rotation", "euler_rodrigues_from_rotation",
            "(sola:quat-of-rotation): the Euler-Rodrigues parameters eta = [r; r0] of Q "
            "(a unit quaternion, scalar last, r0 >= 0)",
