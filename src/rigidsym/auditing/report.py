@@ -54,6 +54,13 @@ def text(rep: AuditReport) -> str:
         lines.append(f"  convention: none of {rep.tried} members matches; nearest: "
                      f"{rep.nearest} (residual {rep.residual:.3g})")
     lines += _worst_lines(rep)
+    for dt, rows in rep.behaviour.items():
+        lines.append(f"  per regime, {dt} (inputs: worst err / bound, yours | rigidsym's; "
+                     f"flags where the truth is finite; flags where it is not):")
+        for b in rows:
+            lines.append(f"    {b['regime']}: {b['n']}: {b['worst_ratio']:.3g} | "
+                         f"{b['kernel_worst_ratio']:.3g}; {b['nan']} NaN/inf, {b['raised']} "
+                         f"raised; {b['expected']} expected")
     if rep.batch:
         lines.append(f"  batch: {rep.batch}")
     for f in rep.findings:
