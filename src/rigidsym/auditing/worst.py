@@ -139,6 +139,10 @@ def judge_point(name: str, regime: str, point, dtype, runner: Runner,
     elif user.flagged_expected:
         flag, ratio = _at_undefined(name, point, dtype, runner, before)
     err = user.err
+    if not flag and user.beyond and antipodal:
+        # at the half turn itself the sign is the input's rounding's (kappa infinite, not
+        # judged by the rule), but the magnitude and the axis are not: w or -w, within 16 u
+        ratio, err = _at_half_turn(name, point, dtype, runner, antipodal)
     if not flag and ratio > 1 and antipodal:
         other = _antipodal(name, point, dtype, runner, user.kappa, antipodal)
         if other < ratio:       # the other sign's truth: its error is the one reported
@@ -171,6 +175,24 @@ def _antipodal(name, point, dtype, runner, kappa, kind: str) -> float:
     mine = runner(name, arrays, dtype, "user")[0]
     d = float(np.linalg.norm(mine - other)) / float(np.linalg.norm(truth))
     return d / (8 * u * (kappa + 1))
+
+
+def _at_half_turn(name, point, dtype, runner, kind: str) -> tuple[float, float]:
+    """``(ratio, err)`` of the user's output at a point the rule does not judge (the input's
+    rounding reaches the sign's discontinuity): the distance to the nearer of the truth and
+    its other sign, over 16 u."""
+    truth, _ = truth_at(name, point, dtype)
+    if truth is None or not np.linalg.norm(truth):
+        return 0.0, 0.0
+    other = (np.concatenate([-truth[:3], truth[3:]]) if kind == "axis" else -truth)
+    arrays = J.round_points([point], dtype, R.kernel_of(name))
+    mine = runner(name, arrays, dtype, "user")[0]
+    if not np.isfinite(mine).all():
+        return 0.0, 0.0
+    u = float(np.finfo(dtype).eps) / 2
+    d = min(float(np.linalg.norm(mine - truth)), float(np.linalg.norm(mine - other)))
+    d /= float(np.linalg.norm(truth))
+    return d / (16 * u), d
 
 
 def _at_undefined(name, point, dtype, runner, before) -> tuple[str, float]:
