@@ -50,7 +50,8 @@ PUBLIC = {
     "rigidsym.kernels": [
         "NonFiniteResultError", "SingularConfigurationError", "accuracy", "backend",
         "batch_function", "build_info",
-        "euler_angle_rates", "euler_rate_matrix", "get_num_threads", "jacobian", "load",
+        "euler_angle_rates", "euler_angles_from_rotation", "euler_rate_matrix",
+        "get_num_threads", "jacobian", "load",
         "set_num_threads", "swap_blocks", "use_backend", *KERNELS],
     # issue 48: Grouped marks a group the removable-singularity pass never distributes
     "rigidsym.codegen.spec": ["Arg", "Branch", "Grouped", "Kernel", "Out", "input_symbols"],

@@ -109,9 +109,10 @@ def _worst_input(tgt, member, j: W.Judged, dtype) -> WorstInput:
          zip(R.kernel_of(tgt.kernel).args, rounded, strict=True)}
     args = [np.asarray(a, dtype=dtype) for a in member.user_args(x)]
     u = float(np.finfo(dtype).eps) / 2
+    sl = tgt.user_slice(R.kernel_of(name))
     w = WorstInput(np.dtype(dtype).name, j.regime, j.ratio, j.err / u, j.kappa,
                    j.kernel_err / u, j.flag, [a.tolist() for a in args],
-                   None if truth is None else member.user_out(truth).tolist(), None)
+                   None if truth is None else member.user_out(truth[sl]).tolist(), None)
     return w
 
 
@@ -139,6 +140,9 @@ def _likely(regime: str, flag: bool) -> str:
     if "->0" in r or "scale" in r:
         return (" - likely a small-angle branch (Taylor series) of the wrong sign or order, "
                 "or a cancellation such as 1 - cos(phi) (manif #223, gtsam #746)")
+    if "gimbal" in r:
+        return (" - likely asin or acos of an entry rounded past +-1 with no clamp, or "
+                "atan2(0, 0) at the gimbal lock with no branch for it (SymForce #226)")
     if "pi" in r:
         return (" - likely an angle from arccos((tr Q - 1)/2) or an axis from the skew part "
                 "near a half turn (pytransform3d #189, gtsam PR #2723)")
@@ -241,7 +245,8 @@ def _audit(func, as_, names, seed, dtypes, search, n_start, steps, spec) -> Audi
                 w = _worst_input(tgt, m, j, dt)
                 if dt == np.float64:
                     truth, rounded = W.truth_at(m.kernel(tgt), j.point, dt)
-                    w.peers = _peers(tgt, m, w, [r[None] for r in rounded], truth)
+                    w.peers = {} if tgt.outputs else _peers(tgt, m, w, [r[None] for r in
+                                                                       rounded], truth)
                     try:
                         w.got = m.user_out(W.call_member(call, m, {
                             a.name: r for a, r in zip(R.kernel_of(tgt.kernel).args, rounded,

@@ -129,8 +129,12 @@ GENERATORS: dict[str, Generator] = {g.name: g for g in (
         v, np.pi / 180.0), out_inv=lambda v: _last(v, 180.0 / np.pi)),
     Generator("extrinsic", "the extrinsic sequence: angles (and their rates) in the "
               "reverse order, i.e. the intrinsic sequence read backwards",
-              args=lambda x: _with(x, angles=np.asarray(x["angles"])[::-1]),
+              args=lambda x: _with(x, angles=np.asarray(x["angles"])[::-1])
+              if "angles" in x else x,
               out=lambda v: _rev(v)),
+    Generator("degrees_all_out", "the angles returned in degrees",
+              out=lambda v: np.asarray(v) * (np.pi / 180.0),
+              out_inv=lambda v: np.asarray(v) * (180.0 / np.pi)),
     Generator("angle_first_out", "the angle returned first: (phi, e) for (e, phi)",
               out=lambda v: np.roll(v, -1), out_inv=lambda v: np.roll(v, 1)),
 )}
@@ -151,11 +155,13 @@ class Member:
                          if not (self.variant and g == "extrinsic")) or "the book's own"
         if self.variant:
             seq, frame = self.variant.split("_")[-2:]
+            if frame not in ("fixed", "body"):      # the Euler angles of a rotation
+                seq, frame = frame, ""
             seq = (f"the extrinsic {seq[::-1].upper()} sequence (the intrinsic "
                    f"{seq.upper()} with the angles in reverse order)"
                    if "extrinsic" in self.generators else
                    f"the intrinsic {seq.upper()} sequence")
-            gens = f"{seq}, angular velocity in the {frame} frame" + (
+            gens = seq + (f", angular velocity in the {frame} frame" if frame else "") + (
                 "" if gens == "the book's own" else f"; {gens}")
         return f"{self.form.label}, convention: {gens}"
 
@@ -258,15 +264,20 @@ def _members(tgt: Target, names: tuple[str, ...] | None) -> list[Member]:
             for r in range(len(gens) + 1) for c in itertools.combinations(gens, r)]
 
 
-def _residual(func, member, points, truth, either_sign: bool = False) -> float:
+def _residual(func, member, points, truth, tgt: Target) -> float:
+    from rigidsym.codegen.accuracy.harness.reference import kernel_of
+
+    kernel = kernel_of(member.kernel(tgt))
     worst = 0.0
-    for x, t in zip(points, truth, strict=True):
+    for x, full in zip(points, truth, strict=True):
         got = call_member(func, member, x)
+        # the user's columns; q and -q the same rotation (the book's r0 >= 0 a choice);
+        # either branch of the Euler angles
+        cands = tgt.candidates(kernel, np.asarray(full))
+        t = cands[0]
         if got.shape != t.shape:
             return np.inf
-        gap = float(np.linalg.norm(got - t))
-        if either_sign:      # q and -q: the same rotation (the book's r0 >= 0 a choice)
-            gap = min(gap, float(np.linalg.norm(got + t)))
+        gap = min(float(np.linalg.norm(got - c)) for c in cands)
         d = gap / max(float(np.linalg.norm(t)), 1e-300)
         worst = max(worst, d if np.isfinite(d) else np.inf)
     return worst
@@ -291,8 +302,7 @@ def find(func: Callable, tgt: Target, points: list[dict], truth: dict,
     for m in members:
         try:
             with np.errstate(all="ignore"):
-                r = _residual(func, m, points, truth[m.kernel(tgt)],
-                              tgt.antipodal == "quaternion")
+                r = _residual(func, m, points, truth[m.kernel(tgt)], tgt)
         except Exception as e:      # noqa: BLE001  (the user's function failed: say so)
             errors.setdefault(m.form.label, f"{type(e).__name__}: {e}")
             continue
@@ -302,7 +312,7 @@ def find(func: Callable, tgt: Target, points: list[dict], truth: dict,
             matches.append(m)
     match = min(matches, key=lambda m: len(m.generators)) if matches else None
     found = Found(match, len(members), best_r if match is None else _residual(
-        func, match, points, truth[match.kernel(tgt)], tgt.antipodal == "quaternion"),
+        func, match, points, truth[match.kernel(tgt)], tgt),
         match or best, errors, [], matches)
     if match is not None or best is not None:
         found.broken = invariants(func, tgt, match or best, points)

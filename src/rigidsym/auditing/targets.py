@@ -65,9 +65,13 @@ class Target:
         antipodal: an output whose sign at a half turn the input's rounding decides:
             ``"rotation_vector"`` (``-w`` accepted where ``pi - |w|`` is within 16 u pi),
             ``"quaternion"`` (``-eta`` anywhere: the same rotation), ``"axis"``
-            (``[-e; phi]`` where ``pi - phi`` is within 16 u pi), or "".
+            (``[-e; phi]`` where ``pi - phi`` is within 16 u pi), ``"euler"`` (the other
+            branch anywhere; at and near the gimbal lock any member of the family: the
+            rotation of the angles judged), or "".
         family: kernels of the same arguments each member may be (the 12 Euler sequences
             in the fixed and the body frame), or () for :attr:`kernel` alone.
+        outputs: the kernel's outputs the user's function returns (the Euler angles, not
+            the other branch nor the flag), or () for all of them.
     """
 
     name: str
@@ -79,6 +83,30 @@ class Target:
     kind: str = ""
     antipodal: str = ""
     family: tuple[str, ...] = ()
+    outputs: tuple[str, ...] = ()
+
+    def user_slice(self, kernel) -> slice:
+        """The columns of ``kernel``'s flat output (a :class:`~rigidsym.codegen.spec.Kernel`)
+        that the user's function returns (:attr:`outputs`; all where empty)."""
+        offs, start, stop = 0, None, 0
+        for o in kernel.outputs:
+            if not self.outputs or o.name in self.outputs:
+                start = offs if start is None else start
+                stop = offs + o.size
+            offs += o.size
+        return slice(start or 0, stop)
+
+    def candidates(self, kernel, t: np.ndarray) -> list[np.ndarray]:
+        """The truths a user's output may equal, from ``kernel``'s flat truth ``t``: the
+        user's columns; ``-q`` too for a quaternion (the same rotation); the other branch
+        too for Euler angles (``"euler"``)."""
+        sl = self.user_slice(kernel)
+        out = [t[sl]]
+        if self.antipodal == "quaternion":
+            out.append(-t[sl])
+        if self.antipodal == "euler":
+            out.append(t[sl.stop:sl.stop + (sl.stop - sl.start)])
+        return out
 
 
 _T = ("t", "twist", "t_a", "xi", "v", "vel", "velocity", "motion", "screw")
@@ -113,10 +141,14 @@ _QUAT = ("q", "quat", "quaternion", "eta", "x")
 _ANG = ("angles", "euler", "rpy", "ypr", "eul", "a", "x", "q")
 
 
-def _EULER(prefix: str) -> tuple[str, ...]:   # noqa: N802  (a family's constructor)
-    seqs = ("xyx", "xyz", "xzx", "xzy", "yxy", "yxz", "yzx", "yzy", "zxy", "zxz", "zyx",
-            "zyz")
-    return tuple(f"{prefix}_{s}_{f}" for s in seqs for f in ("fixed", "body"))
+_SEQS = ("xyx", "xyz", "xzx", "xzy", "yxy", "yxz", "yzx", "yzy", "zxy", "zxz", "zyx", "zyz")
+
+
+def _EULER(prefix: str, frames=("fixed", "body")) -> tuple[str, ...]:   # noqa: N802
+    # a family's constructor: one kernel per sequence (and frame, where there is one)
+    if not frames:
+        return tuple(f"{prefix}_{s}" for s in _SEQS)
+    return tuple(f"{prefix}_{s}_{f}" for s in _SEQS for f in frames)
 
 
 TARGETS: dict[str, Target] = {t.name: t for t in (
@@ -155,6 +187,13 @@ TARGETS: dict[str, Target] = {t.name: t for t in (
            "(Exercise 3.10): W(angles), omega = W eta_dot, for each of the 12 sequences and "
            "either frame", (Form("f(angles)", (_ANG,), lambda x: [x["angles"]]),),
            ("extrinsic",), family=_EULER("euler_rate_matrix")),
+    Target("euler_angles_from_rotation", "euler_angles_from_rotation_zyx",
+           "(Exercise 3.10, inverted; derivations/euler_angles.py): the intrinsic Euler angles "
+           "[a; b; c] of Q = R_i(a) R_j(b) R_k(c), either branch, for each of the 12 "
+           "sequences; at the gimbal lock any member of the family (Q(angles) = Q)",
+           _one("Q", _ROT), ("extrinsic", "transpose_in", "degrees_all_out"),
+           antipodal="euler", family=_EULER("euler_angles_from_rotation", ()),
+           outputs=("angles",)),
     Target("euler_rodrigues_from_rotation", "euler_rodrigues_from_rotation",
            "(sola:quat-of-rotation): the Euler-Rodrigues parameters eta = [r; r0] of Q "
            "(a unit quaternion, scalar last, r0 >= 0)",

@@ -43,9 +43,12 @@ class Runner:
     row by row (an exception is a NaN row, recorded in :attr:`raised`), ``"kernel"``
     rigidsym's NumPy kernel."""
 
-    def __init__(self, func: Callable, member: Member, tgt_kernel):
+    def __init__(self, func: Callable, member: Member, tgt_kernel, tgt: Target | None = None):
         self.func, self.member, self.args = func, member, tgt_kernel.args
         self.raised: list[str] = []
+        #: a function that returns some of the kernel's outputs (the Euler angles alone):
+        #: the others are the kernel's, at the same input (judged beside the user's)
+        self.tgt = tgt if tgt is not None and tgt.outputs else None
 
     def __call__(self, name, arrays, dtype, backend) -> np.ndarray:
         if backend == "kernel":
@@ -61,6 +64,13 @@ class Runner:
             except Exception as e:  # noqa: BLE001  (the user's function raised: a flag)
                 self.raised.append(f"{type(e).__name__}: {e}")
                 rows.append(None)
+        if self.tgt is not None:
+            full = J.run_kernel(name, arrays, dtype, "numpy")
+            sl = self.tgt.user_slice(R.kernel_of(name))
+            for s, r in enumerate(rows):
+                ok = r is not None and r.size == sl.stop - sl.start
+                full[s, sl] = r if ok else np.nan
+            return full
         size = max((r.size for r in rows if r is not None), default=1)
         return np.stack([r if r is not None and r.size == size else np.full(size, np.nan)
                          for r in rows])
@@ -143,7 +153,11 @@ def judge_point(name: str, regime: str, point, dtype, runner: Runner,
         # at the half turn itself the sign is the input's rounding's (kappa infinite, not
         # judged by the rule), but the magnitude and the axis are not: w or -w, within 16 u
         ratio, err = _at_half_turn(name, point, dtype, runner, antipodal)
-    if not flag and ratio > 1 and antipodal:
+    if antipodal == "euler":
+        if not flag and (ratio > 1 or user.beyond):
+            ratio, err = _euler_family(name, point, dtype, runner, ratio, err,
+                                       bool(user.beyond))
+    elif not flag and ratio > 1 and antipodal:
         other = _antipodal(name, point, dtype, runner, user.kappa, antipodal)
         if other < ratio:       # the other sign's truth: its error is the one reported
             u = float(np.finfo(dtype).eps) / 2
@@ -175,6 +189,47 @@ def _antipodal(name, point, dtype, runner, kappa, kind: str) -> float:
     mine = runner(name, arrays, dtype, "user")[0]
     d = float(np.linalg.norm(mine - other)) / float(np.linalg.norm(truth))
     return d / (8 * u * (kappa + 1))
+
+
+def euler_rotation(seq: str, angles) -> np.ndarray:
+    """``Q = R_i(a) R_j(b) R_k(c)`` of the intrinsic ``seq`` (``"zyx"``) in float64: the
+    rotation of a user's Euler angles (written here, apart from the kernels it judges)."""
+    Q = np.eye(3)
+    for ax, t in zip(seq.lower(), angles, strict=True):
+        i = "xyz".index(ax)
+        j, k = (i + 1) % 3, (i + 2) % 3
+        R = np.eye(3)
+        R[j, j], R[j, k], R[k, j], R[k, k] = math.cos(t), -math.sin(t), math.sin(t), math.cos(t)
+        Q = Q @ R
+    return Q
+
+
+def _euler_family(name, point, dtype, runner, ratio, err, beyond) -> tuple[float, float]:
+    """``(ratio, err)`` of Euler angles the rule calls wrong (or does not judge: ``beyond``,
+    the input's rounding reaches the gimbal lock, ``kappa u >= 1/8``): the other branch's
+    truth is as true; at the lock (the kernel's flag) or beyond, every member of the family
+    is, and the rotation of the user's angles is judged against the truth's, over 16 u."""
+    truth, _ = truth_at(name, point, dtype)
+    if truth is None:
+        return ratio, err
+    arrays = J.round_points([point], dtype, R.kernel_of(name))
+    mine = runner(name, arrays, dtype, "user")[0]
+    if not np.isfinite(mine[:3]).all():
+        return math.inf, math.inf
+    u = float(np.finfo(dtype).eps) / 2
+    cands = []
+    if not beyond:
+        cands.append((ratio, err))
+        d = float(np.linalg.norm(mine[:3] - truth[3:6])) / max(
+            float(np.linalg.norm(truth[3:6])), 1e-300)
+        if err > 0:                  # the other branch (the same bound)
+            cands.append((ratio * d / err, d))
+    if truth[6] == 1 or beyond:
+        seq = name.rsplit("_", 1)[-1]
+        dq = float(np.linalg.norm(euler_rotation(seq, mine[:3]) - euler_rotation(
+            seq, truth[:3]))) / math.sqrt(3)
+        cands.append((dq / (16 * u), dq))
+    return min(cands)
 
 
 def _at_half_turn(name, point, dtype, runner, kind: str) -> tuple[float, float]:
@@ -220,7 +275,7 @@ def sweep(tgt: Target, member: Member, func: Callable, dtype, seed: int = 0,
     search, in ``dtype``."""
     name = member.kernel(tgt)
     k = R.kernel_of(name)
-    runner = Runner(func, member, R.kernel_of(tgt.kernel))
+    runner = Runner(func, member, R.kernel_of(tgt.kernel), tgt)
     beh: dict[str, Behaviour] = {}
     worst: Judged | None = None
     regs = audit_regimes(k, dtype, seed)
