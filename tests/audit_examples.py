@@ -103,3 +103,20 @@ def rpy_rates(rpy, pqr):
     return np.array([p + np.sin(phi) * np.tan(th) * q + np.cos(phi) * np.tan(th) * r,
                      np.cos(phi) * q - np.sin(phi) * r,
                      (np.sin(phi) * q + np.cos(phi) * r) / np.cos(th)])
+
+
+# SymForce #226 ("generated ToYawPitchRoll is unsafe"): yaw-pitch-roll (intrinsic ZYX) of a
+# rotation by asin with no clamp (NaN where the entry is rounded past 1) and no branch at
+# the gimbal lock (atan2(0, 0) = 0 for yaw and roll: a rotation other than R's)
+def ypr_asin_no_clamp(R):
+    return np.array([np.arctan2(R[1, 0], R[0, 0]), np.arcsin(-R[2, 0]),
+                     np.arctan2(R[2, 1], R[2, 2])])
+
+
+def ypr_atan2(R):
+    # pitch by atan2 against the hypotenuse (no clamp needed); at the lock (cos(pitch) = 0:
+    # R[0, 0] = R[1, 0] = 0 exactly) roll = 0 and yaw from R = Rz(yaw) Ry(pitch)'s column 1
+    pitch = np.arctan2(-R[2, 0], np.hypot(R[0, 0], R[1, 0]))
+    if R[0, 0] == 0 and R[1, 0] == 0:
+        return np.array([np.arctan2(-R[0, 1], R[1, 1]), pitch, 0.0])
+    return np.array([np.arctan2(R[1, 0], R[0, 0]), pitch, np.arctan2(R[2, 1], R[2, 2])])

@@ -34,16 +34,19 @@ BUGS = [
      "-> 0: error"),
     (X.log_arccos, "rotation_vector_from_rotation", "silent wrong", "arccos"),
     (X.exp_no_epsilon, "rotation_from_rotation_vector", "flag", "w[0:3] = 0"),
+    (X.ypr_asin_no_clamp, "euler_angles_from_rotation", "flag", "gimbal lock"),
 ]
 #: the name each finding gives the bug
 NAMED = {"wrench_ad_transpose": "power <t, w> not invariant",
          "left_jacobian_wrong_taylor": "small-angle branch (Taylor series) of the wrong sign",
          "log_arccos": "arccos((tr Q - 1)/2)",
-         "exp_no_epsilon": "no guard or epsilon at 0"}
+         "exp_no_epsilon": "no guard or epsilon at 0",
+         "ypr_asin_no_clamp": "SymForce #226"}
 CORRECT = [(X.wrench_ad_inverse_transpose, "wrench_transfer"),
            (X.left_jacobian, "rotation_vector_left_jacobian"),
            (X.log_atan2, "rotation_vector_from_rotation"),
-           (X.exp_rodrigues, "rotation_from_rotation_vector")]
+           (X.exp_rodrigues, "rotation_from_rotation_vector"),
+           (X.ypr_atan2, "euler_angles_from_rotation")]
 
 
 @pytest.mark.parametrize("func, op, kind, where", BUGS, ids=[b[0].__name__ for b in BUGS])
