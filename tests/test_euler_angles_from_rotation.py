@@ -12,10 +12,10 @@ import numpy as np
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
-
-from rigidsym import kernels as K
 from rigidsym.derivations import euler_angles as E
 from rigidsym.derivations.exercises.ex3_10 import PROPER_EULER, SEQUENCES
+
+from rigidsym import kernels as K
 
 Rotation = pytest.importorskip("scipy.spatial.transform").Rotation
 
