@@ -13,8 +13,8 @@
  *     when summed plainly; compensated (Dot2 of Ogita, Rump and Oishi,
  *     rigidsym.codegen.accuracy.compensated.SumProd) it keeps about 1 u; worst ratio to the
  *     rule max(2 e_best, 4 u) (e_best: the most accurate of the textbook formula and the forms
- *     tried, per point; rigidsym.codegen.accuracy.rule) at 56 points of the regimes
- *     (rigidsym.codegen.accuracy.regimes, exact, rounded to float64) a singular flag -> 0.33,
+ *     tried, per point; rigidsym.codegen.accuracy.rule) at 96 points of the regimes
+ *     (rigidsym.codegen.accuracy.regimes, exact, rounded to float64) a singular flag -> 0.38,
  *     never worse than the textbook formula by that rule; equal to the declared formula by the
  *     zero test (exact-cancel)
  *
@@ -25,7 +25,7 @@
  * measured at generation, rigidsym.codegen.accuracy.float32; worst error 0.499 of what
  * the rule of issue 37 allows, max(2 e_textbook, 4 u), per output, normwise, at its
  * points where the kernel computed in double is within it). In double:
- *   branch 1: x0, x1, angles[0], angles[1], angles[2], angles_other[0], angles_other[1], angles_other[2], gimbal_lock[0]
+ *   branch 1: none
  *   branch 2: none
  */
 #ifndef RIGIDSYM_EULER_ANGLES_FROM_ROTATION_XYZ_H
@@ -96,15 +96,15 @@ static inline int rigidsym_euler_angles_from_rotation_xyz_sample_f32(
     const float Q_22 = in_Q[8];
     int singular = 0;
     if (fabs(((double)Q_12)) <= 0.0 && fabs(((double)Q_22)) <= 0.0) {
-        const double x0 = atan2(((double)Q_21), ((double)Q_11));
-        const double x1 = atan2(((double)Q_02), 0.0);
+        const float x0 = atan2(Q_21, Q_11);
+        const float x1 = atan2(Q_02, 0.0f);
         out_angles[0] = x0;
         out_angles[1] = x1;
-        out_angles[2] = 0.0;
+        out_angles[2] = 0.0f;
         out_angles_other[0] = x0;
         out_angles_other[1] = x1;
-        out_angles_other[2] = 0.0;
-        out_gimbal_lock[0] = 1.0;
+        out_angles_other[2] = 0.0f;
+        out_gimbal_lock[0] = 1.0f;
     } else {
         const float x0 = sqrtf((Q_12*Q_12) + (Q_22*Q_22));
         out_angles[0] = atan2(-Q_12, Q_22);
