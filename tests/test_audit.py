@@ -352,3 +352,23 @@ def test_the_euler_sequence_and_frame_are_found():
                               "euler_angle_rates")
         assert found.member.variant == f"euler_angle_rates_{seq.lower()}_{frame}"
         assert found.member.generators == ()
+
+
+def _scipy_euler(seq):
+    Rotation = pytest.importorskip("scipy.spatial.transform").Rotation
+
+    def f(R):
+        import warnings
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", UserWarning)    # "Gimbal lock detected"
+            return Rotation.from_matrix(R).as_euler(seq)
+    return f
+
+
+@pytest.mark.parametrize("seq, variant, gens", [
+    ("ZXZ", "euler_angles_from_rotation_zxz", []),
+    # SciPy's lower case: extrinsic, the intrinsic sequence read backwards
+    ("xyz", "euler_angles_from_rotation_zyx", ["extrinsic"])])
+def test_scipy_euler_angles_convention_is_found(seq, variant, gens):
+    found, tgt, _ = _find(_scipy_euler(seq), "euler_angles_from_rotation")
+    assert found.member.variant == variant and list(found.member.generators) == gens

@@ -101,9 +101,10 @@ def euler_angles_from_rotation(Q: ArrayLike, sequence: str, *, branch: str = "pr
             ``branch``).
 
     Example:
-        >>> angles, lock = euler_angles_from_rotation(np.eye(3), "ZYX")
-        >>> angles.tolist(), bool(lock)
-        ([0.0, 0.0, 0.0], False)
+        >>> Q = [[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]]   # a quarter turn about z
+        >>> angles, lock = euler_angles_from_rotation(Q, "ZYX")
+        >>> round(float(angles[0]), 12), bool(lock)        # yaw pi/2, pitch and roll 0
+        (1.570796326795, False)
     """
     if branch not in ("principal", "other"):
         raise ValueError(f"branch: expected 'principal' or 'other', got {branch!r}")
