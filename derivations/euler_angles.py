@@ -21,7 +21,7 @@ ill-conditioned, near the lock, the method of Shoemake's *Euler angle conversion
 Gems IV, 1994, and of Bernardes & Viollet, PLoS ONE 17(11), 2022). The principal branch has
 ``rho >= 0``: ``b`` in ``[-pi/2, pi/2]`` (Tait-Bryan) or ``[0, pi]`` (proper Euler); the
 other has ``rho <= 0``: ``(a + pi, pi - b, c + pi)`` (Tait-Bryan) or ``(a + pi, -b, c +
-pi)``, angles in ``(-pi, pi]``. At the lock (``rho = 0``: ``A_s = A_c = 0``) only ``a + c``
+pi)``, angles in ``[-pi, pi]``. At the lock (``rho = 0``: ``A_s = A_c = 0``) only ``a + c``
 (or ``a - c``) is defined: :func:`euler_angles_at_gimbal_lock` returns the member with
 ``c = 0`` (SciPy's choice), ``a`` from column ``j`` of ``Q = R_i(a) R_j(b)``.
 

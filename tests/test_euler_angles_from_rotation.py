@@ -128,3 +128,24 @@ def test_bad_sequence_and_branch_are_named():
         K.euler_angles_from_rotation(np.eye(3), "ZZY")
     with pytest.raises(ValueError, match="branch"):
         K.euler_angles_from_rotation(np.eye(3), "ZYX", branch="second")
+
+
+@pytest.mark.extra
+def test_jax_gives_the_numpy_angles_and_flag():
+    jax = pytest.importorskip("jax", reason="JAX is not installed (the [jax] extra)")
+    from rigidsym.kernels import jax as rj
+
+    old = jax.config.jax_enable_x64
+    jax.config.update("jax_enable_x64", True)
+    try:
+        rng = np.random.default_rng(3)
+        Q = np.concatenate([_Q("ZYX", _principal("ZYX", rng, 5)),
+                            _lock_matrix("ZYX", 0.3, -1.2, True)[None]])
+        for branch in ("principal", "other"):
+            want, wlock = K.euler_angles_from_rotation(Q, "ZYX", branch=branch)
+            got, lock = rj.euler_angles_from_rotation(jax.numpy.asarray(Q), "ZYX",
+                                                      branch=branch)
+            assert np.abs(np.asarray(got) - want).max() <= 1e-14
+            assert (np.asarray(lock) == wlock).all() and wlock[-1] and not wlock[:-1].any()
+    finally:
+        jax.config.update("jax_enable_x64", old)

@@ -72,7 +72,7 @@ PUBLIC = {
 
 #: issue 31: the differentiable back-ends, importable where their extra is installed
 ARRAY_BACKENDS = ["NonFiniteResultError", "SingularConfigurationError", "euler_angle_rates",
-                  "euler_rate_matrix", "load", *KERNELS]
+                  "euler_angles_from_rotation", "euler_rate_matrix", "load", *KERNELS]
 EXTRA_PUBLIC = {"rigidsym.kernels.torch": ("torch", ARRAY_BACKENDS),
                 "rigidsym.kernels.jax": ("jax", ARRAY_BACKENDS)}
 

@@ -90,7 +90,7 @@ def euler_angles_from_rotation(Q: ArrayLike, sequence: str, *, branch: str = "pr
         sequence: one of the twelve intrinsic sequences ("ZYX", "ZXZ", ...).
         branch: ``"principal"`` (``b`` in [-pi/2, pi/2] Tait-Bryan, [0, pi] proper Euler)
             or ``"other"`` (``(a + pi, pi - b, c + pi)`` Tait-Bryan, ``(a + pi, -b, c +
-            pi)`` proper Euler, each in (-pi, pi]); the same at the lock.
+            pi)`` proper Euler, each in [-pi, pi]); the same at the lock.
         check, threads: see :mod:`rigidsym.kernels`.
 
     Returns:
