@@ -372,3 +372,22 @@ def _scipy_euler(seq):
 def test_scipy_euler_angles_convention_is_found(seq, variant, gens):
     found, tgt, _ = _find(_scipy_euler(seq), "euler_angles_from_rotation")
     assert found.member.variant == variant and list(found.member.generators) == gens
+
+
+def test_euler_angles_other_branch_passes_and_degrees_extrinsic_are_named():
+    """The other branch is as true as the principal one (no finding); roll-pitch-yaw in
+    degrees is the extrinsic XYZ sequence with the angles in degrees."""
+    from rigidsym import kernels as K
+
+    def other(R):
+        return K.euler_angles_from_rotation(R, "ZYX", branch="other")[0]
+
+    def rpy_degrees(R):
+        return np.degrees(K.euler_angles_from_rotation(R, "ZYX")[0][..., ::-1])
+
+    rep = audit(other, "euler_angles_from_rotation")
+    assert rep.ok and rep.generators == [], report.text(rep)
+    rep = audit(rpy_degrees, "euler_angles_from_rotation")
+    assert rep.ok and sorted(rep.generators) == ["degrees_all_out", "extrinsic"], \
+        report.text(rep)
+    assert "extrinsic XYZ" in rep.convention and "degrees" in rep.convention
